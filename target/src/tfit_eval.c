@@ -1,0 +1,65 @@
+/*
+ * tfit_eval.c — the public evaluation entry points.
+ *
+ * Every call runs the same instruction sequence for a given model: the input
+ * projection is branch-free, the family loops depend only on the model's
+ * sizes, and the final pass masks every output with the input's validity
+ * (a NaN/Inf input leaves +0.0f everywhere).  Branches below test only
+ * pointers and the model's family, never the input value.
+ */
+#include "tfit_internal.h"
+
+static int is_forward(uint32_t family)
+{
+    return family == TFIT_FAMILY_NODAL || family == TFIT_FAMILY_MODAL ||
+           family == TFIT_FAMILY_ZHOU2017;
+}
+
+static tfit_status evaluate(const tfit_model *m, const float in[3], float *out)
+{
+    float g[3];
+    uint32_t bad;
+    const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+
+    switch (m->family) {
+    case TFIT_FAMILY_MODAL:
+        tfit_eval_modal(m, g, out);
+        break;
+    case TFIT_FAMILY_ZHOU2017:
+        tfit_eval_zhou2017(m, g, out);
+        break;
+    default: /* nodal and contact share one layout */
+        tfit_eval_nodal(m, g, out);
+        break;
+    }
+
+    const uint32_t keep = ~bad;
+    const uint32_t n = 3u * m->n_out;
+    for (uint32_t o = 0u; o < n; ++o) {
+        out[o] = tfit_float(tfit_bits(out[o]) & keep);
+    }
+    /* -1 for bad input, else 1 when projected, else 0 — without a branch. */
+    return (tfit_status)((int)(clamped & keep & 1u) - (int)(bad & 1u));
+}
+
+tfit_status tfit_displacements(const tfit_model *m, const float force[3], float *out)
+{
+    if (m == 0 || force == 0 || out == 0) {
+        return TFIT_ERR_ARG;
+    }
+    if (!is_forward(m->family)) {
+        return TFIT_ERR_FAMILY;
+    }
+    return evaluate(m, force, out);
+}
+
+tfit_status tfit_contact_force(const tfit_model *m, const float disp[3], float force[3])
+{
+    if (m == 0 || disp == 0 || force == 0) {
+        return TFIT_ERR_ARG;
+    }
+    if (m->family != TFIT_FAMILY_CONTACT) {
+        return TFIT_ERR_FAMILY;
+    }
+    return evaluate(m, disp, force);
+}

@@ -1,0 +1,31 @@
+/*
+ * tfit_golden.c — runs a model's golden vectors (NAME_golden.h) and counts
+ * mismatching words, so that the bit-for-bit contract can be verified on the
+ * device itself, not only on the host.
+ */
+#include "tfit_internal.h"
+
+uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
+{
+    if (gv == 0 || gv->model == 0 || gv->in == 0 || gv->status == 0 || gv->out == 0 ||
+        scratch == 0) {
+        return UINT32_MAX;
+    }
+    const tfit_model *m = gv->model;
+    const uint32_t n = 3u * m->n_out;
+    uint32_t mismatches = 0u;
+
+    for (uint32_t v = 0u; v < gv->n_vec; ++v) {
+        float x[3];
+        for (uint32_t i = 0u; i < 3u; ++i) {
+            x[i] = tfit_float(gv->in[3u * v + i]);
+        }
+        tfit_status s = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force(m, x, scratch)
+                                                         : tfit_displacements(m, x, scratch);
+        mismatches += (uint32_t)((int32_t)s != gv->status[v]);
+        for (uint32_t o = 0u; o < n; ++o) {
+            mismatches += (uint32_t)(tfit_bits(scratch[o]) != gv->out[v * n + o]);
+        }
+    }
+    return mismatches;
+}

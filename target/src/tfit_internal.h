@@ -1,0 +1,114 @@
+/*
+ * tfit_internal.h — helpers shared by the target sources (not installed).
+ *
+ * Everything here is freestanding C11.  Selections are done with bit masks
+ * rather than branches so that the instruction stream of an evaluation does
+ * not depend on the input value (docs/header-format.md, "Fixed cost").
+ */
+#ifndef TFIT_INTERNAL_H
+#define TFIT_INTERNAL_H
+
+#include <float.h>
+#include <stdint.h>
+
+#include "tfit.h"
+
+/* Bit-exactness needs float expressions evaluated in float (no x87 excess
+ * precision); see GUIDE §4 and docs/header-format.md.  16 (ISO/IEC TS
+ * 18661-3: only _Float16 is widened, to float) is as good as 0 for us. */
+#if !defined(FLT_EVAL_METHOD) || (FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != 16)
+#error "tfit requires FLT_EVAL_METHOD == 0 (float arithmetic evaluated in float)"
+#endif
+
+/* Number of monomials of total degree <= p in 3 variables: C(p+3, 3). */
+#define TFIT_TERMS(p) ((((p) + 1u) * ((p) + 2u) * ((p) + 3u)) / 6u)
+#define TFIT_MAX_TERMS TFIT_TERMS((uint32_t)TFIT_MAX_DEGREE)
+#define TFIT_ZHOU_MAX_ROWS (2u * TFIT_ZHOU_MAX_ORDER + 1u)
+/* Largest n_out accepted: keeps every size computation inside uint32_t. */
+#define TFIT_MAX_OUT (1u << 20)
+
+typedef union tfit_fu {
+    float f;
+    uint32_t u;
+} tfit_fu;
+
+static inline uint32_t tfit_bits(float x)
+{
+    tfit_fu v;
+    v.f = x;
+    return v.u;
+}
+
+static inline float tfit_float(uint32_t u)
+{
+    tfit_fu v;
+    v.u = u;
+    return v.f;
+}
+
+/* All ones when the condition holds, else zero. */
+static inline uint32_t tfit_mask(int cond)
+{
+    return 0u - (uint32_t)(cond != 0);
+}
+
+/* mask ? a : b, bitwise. */
+static inline float tfit_select(uint32_t mask, float a, float b)
+{
+    return tfit_float((tfit_bits(a) & mask) | (tfit_bits(b) & ~mask));
+}
+
+static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
+{
+    return a ^ ((a ^ b) & tfit_mask(a < b));
+}
+
+/* Horner, coefficients c[0..n] in ascending powers: ((c_n x + c_{n-1}) x + ...) + c_0. */
+static inline float tfit_horner(const float *c, uint32_t n, float x)
+{
+    float h = c[n];
+    for (uint32_t i = n; i > 0u; --i) {
+        h = h * x + c[i - 1u];
+    }
+    return h;
+}
+
+/* Dot product of a coefficient row with the basis, phi[0] == 1:
+ * c0 + c1 phi1 + ... summed left to right. */
+static inline float tfit_row(const float *c, const float *phi, uint32_t n)
+{
+    float acc = c[0];
+    for (uint32_t t = 1u; t < n; ++t) {
+        acc = acc + c[t] * phi[t];
+    }
+    return acc;
+}
+
+/* Dot product c0 v0 + c1 v1 + ... summed left to right. */
+static inline float tfit_dot(const float *c, const float *v, uint32_t n)
+{
+    float acc = c[0] * v[0];
+    for (uint32_t k = 1u; k < n; ++k) {
+        acc = acc + c[k] * v[k];
+    }
+    return acc;
+}
+
+/* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
+ * mask when the input was projected; *bad is all ones when the input held a
+ * NaN or Inf (g is then computed from a zero input). */
+uint32_t tfit_input_map(const float *map, const float x[3], float g[3], uint32_t *bad);
+
+/* Monomial basis of total degree p in g, graded order (tfit_basis.c). */
+void tfit_basis(uint32_t p, const float g[3], float *phi);
+
+/* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_families.c). */
+void tfit_eval_nodal(const tfit_model *m, const float g[3], float *out);
+void tfit_eval_modal(const tfit_model *m, const float g[3], float *out);
+void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
+
+/* Expected coef[] length for the model's family, dims and n_out, or 0 when
+ * they are invalid or beyond this build's capacity (tfit_layout.c). */
+uint32_t tfit_expected_coefs(const tfit_model *m);
+
+#endif /* TFIT_INTERNAL_H */

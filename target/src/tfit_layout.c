@@ -1,0 +1,64 @@
+/*
+ * tfit_layout.c — the size of a model's coefficient table as implied by its
+ * family, dims and n_out (docs/header-format.md §3).  Used by
+ * tfit_model_check() before it reads any table.
+ */
+#include "tfit_internal.h"
+
+static uint32_t nodal_coefs(const tfit_model *m)
+{
+    uint32_t p = m->dims[0];
+    if (p > TFIT_MAX_DEGREE) {
+        return 0u;
+    }
+    return TFIT_INPUT_MAP_FLOATS + 3u * m->n_out * TFIT_TERMS(p);
+}
+
+static uint32_t modal_coefs(const tfit_model *m)
+{
+    uint32_t p = m->dims[0];
+    uint32_t r = m->dims[1];
+    if (p > TFIT_MAX_DEGREE || r == 0u || r > TFIT_MAX_RANK) {
+        return 0u;
+    }
+    return TFIT_INPUT_MAP_FLOATS + r * TFIT_TERMS(p) + 3u * m->n_out * r;
+}
+
+static uint32_t zhou2017_coefs(const tfit_model *m)
+{
+    const uint32_t *dm = m->dims;
+    uint32_t n = TFIT_INPUT_MAP_FLOATS + 2u * m->n_out;
+    for (uint32_t a = 0u; a < 3u; ++a) {
+        if (dm[a] > TFIT_MAX_DEGREE) {
+            return 0u;
+        }
+        n += dm[a] + 2u;
+    }
+    for (uint32_t i = 0u; i < 9u; ++i) {
+        const uint32_t *o = dm + 3u + 3u * i;
+        if (o[0] > TFIT_ZHOU_MAX_ORDER || o[1] > TFIT_ZHOU_MAX_ORDER || o[2] > TFIT_MAX_DEGREE) {
+            return 0u;
+        }
+        n += (o[0] + o[1] + 1u) * (o[2] + 1u);
+    }
+    return n;
+}
+
+uint32_t tfit_expected_coefs(const tfit_model *m)
+{
+    if (m->n_out == 0u || m->n_out > TFIT_MAX_OUT) {
+        return 0u;
+    }
+    switch (m->family) {
+    case TFIT_FAMILY_NODAL:
+        return m->n_dims == TFIT_NODAL_DIMS ? nodal_coefs(m) : 0u;
+    case TFIT_FAMILY_CONTACT:
+        return (m->n_dims == TFIT_CONTACT_DIMS && m->n_out == 1u) ? nodal_coefs(m) : 0u;
+    case TFIT_FAMILY_MODAL:
+        return m->n_dims == TFIT_MODAL_DIMS ? modal_coefs(m) : 0u;
+    case TFIT_FAMILY_ZHOU2017:
+        return m->n_dims == TFIT_ZHOU2017_DIMS ? zhou2017_coefs(m) : 0u;
+    default:
+        return 0u;
+    }
+}
