@@ -1,0 +1,25 @@
+# host.mk — the tissuefit tool.  Every host/*.c except main.c goes into a
+# static library that the tool and the host tests link; adding a file needs
+# no change here.
+
+HOST_SRC := $(filter-out host/main.c,$(wildcard host/*.c))
+HOST_HDR := $(wildcard host/*.h) target/include/tfit.h
+HOST_CFLAGS := $(HOST_STRICT) -fopenmp -Ihost -Itarget/include -I/usr/include/suitesparse \
+               -DTFIT_TOOL_VERSION='"$(VERSION)"'
+HOST_LIBS := -fopenmp -lcholmod -llapacke -lopenblas -lcyaml -lz -lm
+
+# $(call host_lib,NAME,FLAGS)  ->  $(B)/NAME/libtissuefit-host.a
+define host_lib
+$(B)/$(1)/host/%.o: host/%.c $(HOST_HDR) | deps-build
+	@mkdir -p $$(@D)
+	$(CC) $(HOST_CFLAGS) $(2) -c $$< -o $$@
+$(B)/$(1)/libtissuefit-host.a: $(HOST_SRC:host/%.c=$(B)/$(1)/host/%.o)
+	rm -f $$@ && ar rcs $$@ $$^
+endef
+
+$(eval $(call host_lib,native,-O2 -g))
+$(eval $(call host_lib,asan,-O1 -g $(SANITIZE)))
+
+$(B)/bin/tissuefit: $(B)/native/host/main.o $(B)/native/libtissuefit-host.a
+	@mkdir -p $(@D)
+	$(CC) $^ $(HOST_LIBS) -o $@

@@ -1,0 +1,82 @@
+/*
+ * model.h — a fitted model held in memory by the host, in exactly the table
+ * layout the target evaluates (docs/header-format.md §3), plus the metadata
+ * the generated header reports.
+ */
+#ifndef TF_MODEL_H
+#define TF_MODEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "tfit.h"
+
+#define TF_NAME_MAX 64
+
+typedef struct tf_model {
+    char name[TF_NAME_MAX]; /* C identifier suffix, lower case: "block48_forward" */
+    tfit_family family;
+    uint32_t n_out;
+    uint32_t n_dims;
+    uint32_t dims[TFIT_ZHOU2017_DIMS];
+    uint32_t n_coef;
+    float *coef;        /* owned; first TFIT_INPUT_MAP_FLOATS are x0, W */
+    uint32_t *node_ids; /* owned; n_out scene node numbers */
+
+    /* Metadata reported in the header.  NAN means "not measured". */
+    double envelope_radius;  /* ball radius in input units, 0 when the envelope is an ellipsoid */
+    double heldout_max;      /* held-out max abs error, output units (mm or N) */
+    double heldout_rms;      /* held-out RMS error, output units */
+    double heldout_rel_max;  /* held-out max relative error (contact models) */
+    uint32_t heldout_cases;  /* number of held-out load cases behind the numbers */
+} tf_model;
+
+/* Floating-point operation counts of one evaluation (docs/header-format.md §6). */
+typedef struct tf_opcount {
+    uint64_t add; /* additions and subtractions */
+    uint64_t mul;
+    uint64_t div;
+} tf_opcount;
+
+/* Terms of the total-degree-p basis in 3 variables. */
+uint32_t tf_terms(uint32_t p);
+
+/* coef[] length for a family, its dims and n_out; 0 if invalid. */
+uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims, uint32_t n_dims);
+
+/* Allocates a model with zeroed tables and identity input map, metadata NAN.
+ * Returns NULL (and a message in err) when the shape is invalid. */
+tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, const uint32_t *dims,
+                       uint32_t n_dims, char *err, size_t errlen);
+void tf_model_free(tf_model *m);
+tf_model *tf_model_clone(const tf_model *m);
+
+/* Input map: ball of radius r around centre (W = I / r). */
+void tf_model_set_ball(tf_model *m, const double centre[3], double radius);
+/* Input map: general ellipsoid |W (x - x0)| <= 1. */
+void tf_model_set_map(tf_model *m, const double x0[3], const double w[9]);
+
+/* The family tables after the input map. */
+float *tf_model_tables(tf_model *m);
+
+/* CRC-32 (zlib) in the target's serialisation. */
+uint32_t tf_model_crc32(const tf_model *m);
+
+/* Checks what tfit_model_check() will check on the device (sizes, finite
+ * coefficients, no reachable overflow), with a message naming the table and
+ * index at fault.  Returns 0 when the model is emittable. */
+int tf_model_validate(const tf_model *m, char *err, size_t errlen);
+
+/* Operation count of one evaluation, from the family's formulas. */
+tf_opcount tf_model_ops(const tf_model *m);
+
+/* Bytes of the model's const tables (coef, dims, node ids), without the
+ * descriptor struct whose size depends on the target's pointer width. */
+uint32_t tf_model_table_bytes(const tf_model *m);
+
+/* "nodal", "modal", "zhou2017", "contact", or NULL. */
+const char *tf_family_name(tfit_family f);
+/* Family from its name; 0 when unknown. */
+tfit_family tf_family_from_name(const char *name);
+
+#endif /* TF_MODEL_H */

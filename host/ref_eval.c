@@ -1,0 +1,247 @@
+/*
+ * ref_eval.c — reference evaluator (see ref_eval.h): float arithmetic
+ * emulated in double with a rounding after every operation, written from the
+ * specification in docs/header-format.md rather than from target/src.
+ */
+#include "ref_eval.h"
+
+#include <math.h>
+
+#define TFIT_TERMS_MAX ((TFIT_MAX_DEGREE + 1) * (TFIT_MAX_DEGREE + 2) * (TFIT_MAX_DEGREE + 3) / 6)
+
+/* Operation helpers: exact double result of two floats, rounded once to
+ * float (round-to-nearest-even), counted. */
+typedef struct arith {
+    tf_opcount n;
+} arith;
+
+static float f_add(arith *c, float a, float b)
+{
+    c->n.add++;
+    return (float)((double)a + (double)b);
+}
+
+static float f_sub(arith *c, float a, float b)
+{
+    c->n.add++;
+    return (float)((double)a - (double)b);
+}
+
+static float f_mul(arith *c, float a, float b)
+{
+    c->n.mul++;
+    return (float)((double)a * (double)b);
+}
+
+static float f_div(arith *c, float a, float b)
+{
+    c->n.div++;
+    return (float)((double)a / (double)b);
+}
+
+static float largest_magnitude(const float v[3])
+{
+    float m = fabsf(v[0]);
+    for (int i = 1; i < 3; ++i) {
+        if (fabsf(v[i]) > m) {
+            m = fabsf(v[i]);
+        }
+    }
+    return m;
+}
+
+static void input_map(arith *c, const tf_model *m, const float in[3], float g[3], int *clamped,
+                      int *bad)
+{
+    const float *x0 = m->coef, *w = m->coef + 3;
+    float x[3];
+
+    /* §4 steps 1-2 */
+    *bad = !(isfinite(in[0]) && isfinite(in[1]) && isfinite(in[2]));
+    for (int i = 0; i < 3; ++i) {
+        x[i] = *bad ? 0.0f : in[i];
+    }
+    /* step 3 */
+    float big = largest_magnitude(x);
+    float divisor = big > 0x1p64f ? big : 1.0f;
+    float factor = big > 0x1p64f ? 0x1p64f : 1.0f;
+    for (int i = 0; i < 3; ++i) {
+        x[i] = f_mul(c, f_div(c, x[i], divisor), factor);
+    }
+    /* steps 4-5 */
+    float d[3];
+    for (int i = 0; i < 3; ++i) {
+        d[i] = f_sub(c, x[i], x0[i]);
+    }
+    for (int r = 0; r < 3; ++r) {
+        float s = f_add(c, f_mul(c, w[3 * r], d[0]), f_mul(c, w[3 * r + 1], d[1]));
+        g[r] = f_add(c, s, f_mul(c, w[3 * r + 2], d[2]));
+    }
+    /* step 6 */
+    float gmax = largest_magnitude(g);
+    int far = gmax > 1.0f;
+    for (int i = 0; i < 3; ++i) {
+        g[i] = f_div(c, g[i], far ? gmax : 1.0f);
+    }
+    /* steps 7-9 */
+    float s2 = f_add(c, f_add(c, f_mul(c, g[0], g[0]), f_mul(c, g[1], g[1])), f_mul(c, g[2], g[2]));
+    int outside = s2 > 1.0f;
+    float s = outside ? s2 : 1.0f;
+    float y = f_sub(c, 1.16796875f, f_mul(c, 0.2109375f, s));
+    for (int it = 0; it < 3; ++it) {
+        float t = f_sub(c, 3.0f, f_mul(c, f_mul(c, s, y), y));
+        y = f_mul(c, f_mul(c, 0.5f, y), t);
+    }
+    float scale = outside ? y : 1.0f;
+    for (int i = 0; i < 3; ++i) {
+        g[i] = f_mul(c, g[i], scale);
+    }
+    *clamped = far || outside;
+}
+
+/* Index of g0^a g1^b g2^c in the documented order: all monomials of lower
+ * degree, then within degree d those with a larger exponent of g0, then
+ * those with the same a and a larger b. */
+static uint32_t monomial_index(int a, int b, int c)
+{
+    int d = a + b + c;
+    return (uint32_t)(d * (d + 1) * (d + 2) / 6 + (d - a) * (d - a + 1) / 2 + (d - a - b));
+}
+
+/* Monomials of total degree <= p, each computed as g_v * (its parent), v the
+ * first variable with a positive exponent. */
+static void monomials(arith *c, uint32_t p, const float g[3], float *phi)
+{
+    phi[0] = 1.0f;
+    for (int deg = 1; deg <= (int)p; ++deg) {
+        for (int a = deg; a >= 0; --a) {
+            for (int b = deg - a; b >= 0; --b) {
+                int e[3] = {a, b, deg - a - b};
+                int v = a > 0 ? 0 : (b > 0 ? 1 : 2);
+                uint32_t self = monomial_index(e[0], e[1], e[2]);
+                e[v] -= 1;
+                phi[self] = f_mul(c, g[v], phi[monomial_index(e[0], e[1], e[2])]);
+            }
+        }
+    }
+}
+
+/* c0 + c1 x + ... + cn x^n by Horner from the top. */
+static float horner(arith *c, const float *coef, uint32_t n, float x)
+{
+    float h = coef[n];
+    for (int i = (int)n - 1; i >= 0; --i) {
+        h = f_add(c, f_mul(c, h, x), coef[i]);
+    }
+    return h;
+}
+
+static void eval_polynomial_rows(arith *c, const float *rows, uint32_t n_rows, uint32_t n_terms,
+                                 const float *phi, float *out)
+{
+    for (uint32_t o = 0; o < n_rows; ++o) {
+        const float *row = rows + (size_t)o * n_terms;
+        float acc = row[0];
+        for (uint32_t t = 1; t < n_terms; ++t) {
+            acc = f_add(c, acc, f_mul(c, row[t], phi[t]));
+        }
+        out[o] = acc;
+    }
+}
+
+static void eval_modal(arith *c, const tf_model *m, const float *phi, float *out)
+{
+    uint32_t t = tf_terms(m->dims[0]), r = m->dims[1];
+    const float *amp = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const float *modes = amp + (size_t)r * t;
+    float a[TFIT_MAX_RANK];
+    eval_polynomial_rows(c, amp, r, t, phi, a);
+    for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+        const float *u = modes + (size_t)o * r;
+        float acc = f_mul(c, u[0], a[0]);
+        for (uint32_t k = 1; k < r; ++k) {
+            acc = f_add(c, acc, f_mul(c, u[k], a[k]));
+        }
+        out[o] = acc;
+    }
+}
+
+/* zhou2017: p coefficients for every (axis, component) pair first, then the
+ * nodes; the per-output sum order is S_x, + S_y, + S_z (§5.3). */
+static void eval_zhou2017(arith *c, const tf_model *m, const float g[3], float *out)
+{
+    const uint32_t *dm = m->dims;
+    const float *q = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const float *xy = m->coef + m->n_coef - 2 * m->n_out;
+    float t[3];
+    float p[9][2 * TFIT_ZHOU_MAX_ORDER + 1];
+
+    for (int a = 0; a < 3; ++a) {
+        float d = horner(c, q, dm[a], g[a]);
+        q += dm[a] + 1;
+        t[a] = f_mul(c, d, *q++);
+    }
+    for (int pair = 0; pair < 9; ++pair) {
+        uint32_t ax = dm[3 + 3 * pair], by = dm[4 + 3 * pair], k = dm[5 + 3 * pair];
+        for (uint32_t i = 0; i <= ax + by; ++i, q += k + 1) {
+            p[pair][i] = horner(c, q, k, t[pair / 3]);
+        }
+    }
+    for (int pair = 0; pair < 9; ++pair) {
+        uint32_t ax = dm[3 + 3 * pair], by = dm[4 + 3 * pair];
+        int comp = pair % 3;
+        for (uint32_t j = 0; j < m->n_out; ++j) {
+            float s = horner(c, p[pair], ax, xy[2 * j]);
+            if (by > 0) {
+                float y = xy[2 * j + 1];
+                s = f_add(c, s, f_mul(c, horner(c, p[pair] + ax + 1, by - 1, y), y));
+            }
+            float *dst = &out[3 * j + comp];
+            *dst = pair < 3 ? s : f_add(c, *dst, s);
+        }
+    }
+}
+
+void tf_ref_input(const tf_model *m, const float in[3], float g[3], int *clamped, int *bad,
+                  tf_opcount *ops)
+{
+    arith c = {{0, 0, 0}};
+    input_map(&c, m, in, g, clamped, bad);
+    if (ops != NULL) {
+        ops->add += c.n.add;
+        ops->mul += c.n.mul;
+        ops->div += c.n.div;
+    }
+}
+
+tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
+{
+    arith c = {{0, 0, 0}};
+    float g[3];
+    int clamped, bad;
+    input_map(&c, m, in, g, &clamped, &bad);
+
+    if (m->family == TFIT_FAMILY_ZHOU2017) {
+        eval_zhou2017(&c, m, g, out);
+    } else {
+        float phi[TFIT_TERMS_MAX];
+        monomials(&c, m->dims[0], g, phi);
+        if (m->family == TFIT_FAMILY_MODAL) {
+            eval_modal(&c, m, phi, out);
+        } else {
+            eval_polynomial_rows(&c, m->coef + TFIT_INPUT_MAP_FLOATS, 3 * m->n_out,
+                                 tf_terms(m->dims[0]), phi, out);
+        }
+    }
+    if (bad) {
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+            out[o] = 0.0f;
+        }
+    }
+    if (ops != NULL) {
+        ops->add += c.n.add;
+        ops->mul += c.n.mul;
+        ops->div += c.n.div;
+    }
+    return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
+}
