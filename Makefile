@@ -1,0 +1,99 @@
+# tissuefit — the only entry point.  `make help` lists the targets.
+#
+# Every target that needs Debian packages checks for them first (deps-*):
+# as root it installs what is missing with apt-get, otherwise it prints the
+# exact apt-get line and stops.
+
+SHELL := /bin/bash
+.DEFAULT_GOAL := all
+.DELETE_ON_ERROR:
+.SUFFIXES:
+
+VERSION := 0.1.0
+PREFIX ?= /usr/local
+B := build
+
+CC := gcc
+CLANG := clang
+ARM := arm-none-eabi-
+RV := riscv64-unknown-elf-
+
+# GUIDE §4: strict C11, no contraction of a*b+c into an FMA, warnings are errors.
+STRICT := -std=c11 -ffp-contract=off -Wall -Wextra -Werror
+HOST_STRICT := $(STRICT) -Wshadow -Wstrict-prototypes -Wmissing-prototypes -D_XOPEN_SOURCE=700
+TARGET_STRICT := $(STRICT) -Wdouble-promotion -Wconversion -Wpedantic -Wshadow \
+                 -Wstrict-prototypes -Wmissing-prototypes -ffreestanding
+SANITIZE := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+
+M4F_FLAGS := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+RV64_FLAGS := -march=rv64imafdc -mabi=lp64d -mcmodel=medany
+
+# ---------------------------------------------------------------------------
+# Debian packages
+DEBS_BUILD := gcc make binutils pkg-config zlib1g-dev liblapacke-dev libopenblas-dev \
+              libsuitesparse-dev libcyaml-dev
+DEBS_CHECK := $(DEBS_BUILD) libcmocka-dev clang valgrind gcc-arm-none-eabi \
+              libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
+DEBS_DEMO := $(DEBS_BUILD)
+
+# $(call ensure_debs,PACKAGES)
+define ensure_debs
+@if ! command -v dpkg-query >/dev/null 2>&1; then \
+  echo "note: not a Debian system; make sure these (or their equivalents) are installed: $(1)"; \
+  exit 0; \
+fi; \
+missing=""; \
+for p in $(1); do \
+  dpkg-query -W -f='$${db:Status-Status}\n' $$p 2>/dev/null | grep -qx installed || missing="$$missing $$p"; \
+done; \
+if [ -n "$$missing" ]; then \
+  if [ "$$(id -u)" = 0 ]; then \
+    echo "installing Debian packages:$$missing"; \
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+      --no-install-recommends $$missing >/dev/null || exit 1; \
+  else \
+    echo "error: missing Debian packages. Install them with:"; \
+    echo "  sudo apt-get install -y --no-install-recommends$$missing"; \
+    exit 1; \
+  fi; \
+fi
+endef
+
+.PHONY: deps-build deps-check deps-demo
+deps-build: ; $(call ensure_debs,$(DEBS_BUILD))
+deps-check: ; $(call ensure_debs,$(DEBS_CHECK))
+deps-demo: ; $(call ensure_debs,$(DEBS_DEMO))
+
+include target/target.mk
+include host/host.mk
+include tests/tests.mk
+
+# ---------------------------------------------------------------------------
+.PHONY: all demo check install clean help
+
+all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
+
+# Until the fitting pipeline exists: a header from a built-in host model,
+# evaluated by the target library in a native program.
+demo: $(B)/bin/tissuefit $(B)/demo/demo_native | deps-demo
+	@echo "== demo: header emitted from a built-in model, evaluated by the target library =="
+	$(B)/demo/demo_native
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
+	install -m 755 $(B)/bin/tissuefit $(DESTDIR)$(PREFIX)/bin/tissuefit
+	install -m 644 $(B)/lib/libtfit.a $(DESTDIR)$(PREFIX)/lib/libtfit.a
+	install -m 644 target/include/tfit.h $(DESTDIR)$(PREFIX)/include/tfit.h
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' target/tfit.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
+	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
+
+clean:
+	rm -rf $(B)
+
+help:
+	@echo "make            build/bin/tissuefit and build/lib/libtfit.a"
+	@echo "make demo       the main job, end to end"
+	@echo "make check      every test (installs missing Debian packages when root)"
+	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file"
+	@echo "make clean      remove build/"

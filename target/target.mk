@@ -1,0 +1,44 @@
+# target.mk — the freestanding evaluator, built for several machines.
+#
+# Each build compiles target/src/*.c with the target flags, combines the
+# objects into one relocatable object (ld -r: the archive then has no
+# references between members, so `nm -u` lists only what the library needs
+# from outside — nothing) and archives it.  -ffunction-sections keeps unused
+# functions removable by the firmware's --gc-sections.
+
+TARGET_SRC := $(wildcard target/src/*.c)
+TARGET_HDR := $(wildcard target/src/*.h) target/include/tfit.h
+TARGET_CFLAGS := $(TARGET_STRICT) -Itarget/include -ffunction-sections -fdata-sections
+
+# $(call tfit_lib,NAME,CC,FLAGS,BINUTILS-PREFIX,DEPS)  ->  $(B)/NAME/libtfit.a
+define tfit_lib
+$(B)/$(1)/obj/%.o: target/src/%.c $(TARGET_HDR) | deps-$(5)
+	@mkdir -p $$(@D)
+	$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
+$(B)/$(1)/libtfit.a: $(TARGET_SRC:target/src/%.c=$(B)/$(1)/obj/%.o)
+	$(4)ld -r $$^ -o $(B)/$(1)/libtfit.o
+	rm -f $$@ && $(4)ar rcs $$@ $(B)/$(1)/libtfit.o
+endef
+
+# The native library that `make` ships.
+$(eval $(call tfit_lib,native,$(CC),-O2 -g,,build))
+$(B)/lib/libtfit.a: $(B)/native/libtfit.a
+	@mkdir -p $(@D)
+	cp $< $@
+
+# Cross builds (freestanding proof; the firmware issue adds images).
+$(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m4f-O0,$(ARM)gcc,$(M4F_FLAGS) -O0,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m4f-Os,$(ARM)gcc,$(M4F_FLAGS) -Os,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m4f-O3,$(ARM)gcc,$(M4F_FLAGS) -O3,$(ARM),check))
+$(eval $(call tfit_lib,riscv64,$(RV)gcc,$(RV64_FLAGS) -O2,$(RV),check))
+$(eval $(call tfit_lib,riscv64-O0,$(RV)gcc,$(RV64_FLAGS) -O0,$(RV),check))
+
+# The bit-exact compiler matrix (acceptance: gcc -O0/-O2/-O3 -march=native, clang -O2).
+$(eval $(call tfit_lib,bitexact-gcc-O0,$(CC),-O0,,check))
+$(eval $(call tfit_lib,bitexact-gcc-O2,$(CC),-O2,,check))
+$(eval $(call tfit_lib,bitexact-gcc-O3-native,$(CC),-O3 -march=native,,check))
+$(eval $(call tfit_lib,bitexact-clang-O2,$(CLANG),-O2,,check))
+
+# Under the sanitizers, for the host unit tests that call the target.
+$(eval $(call tfit_lib,asan,$(CC),-O1 -g $(SANITIZE),,check))

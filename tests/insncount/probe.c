@@ -1,0 +1,55 @@
+/*
+ * probe.c — evaluates every golden vector of every model of families.h once,
+ * under callgrind, dumping the instruction count of each evaluation
+ * (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare them: the count must
+ * not depend on the input.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <valgrind/callgrind.h>
+
+#define TFIT_FAMILIES_IMPLEMENTATION
+#include "families_golden.h"
+
+/* Negative control: a function whose cost depends on its input, so run.sh
+ * can show that the measurement tells the difference. */
+static __attribute__((noinline)) float control_branchy(float x)
+{
+    float acc = 0.0f;
+    for (int i = 0; i < 50 && acc < x; ++i) {
+        acc += 1.0f;
+    }
+    return acc;
+}
+
+int main(void)
+{
+    static const tfit_golden *const sets[] = TFIT_FAMILIES_GOLDEN_SETS;
+    for (size_t s = 0; s < sizeof sets / sizeof sets[0]; ++s) {
+        const tfit_model *m = sets[s]->model;
+        float *out = malloc(3 * m->n_out * sizeof *out);
+        for (uint32_t v = 0; v < sets[s]->n_vec; ++v) {
+            float x[3];
+            char label[64];
+            memcpy(x, sets[s]->in + 3 * v, sizeof x);
+            CALLGRIND_ZERO_STATS;
+            tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force(m, x, out)
+                                                              : tfit_displacements(m, x, out);
+            snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", s, m->family, v,
+                     (int)st);
+            CALLGRIND_DUMP_STATS_AT(label);
+        }
+        free(out);
+    }
+    for (int v = 0; v < 3; ++v) {
+        char label[64];
+        volatile float sink;
+        CALLGRIND_ZERO_STATS;
+        sink = control_branchy((float)(10 * v));
+        (void)sink;
+        snprintf(label, sizeof label, "set=99 family=0 vec=%d status=0", v);
+        CALLGRIND_DUMP_STATS_AT(label);
+    }
+    return 0;
+}

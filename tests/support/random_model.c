@@ -1,0 +1,145 @@
+/*
+ * random_model.c — see random_model.h.
+ */
+#include "random_model.h"
+
+#include <math.h>
+#include <stdio.h>
+
+static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
+{
+    return lo + tf_rng_below(r, hi - lo + 1);
+}
+
+static uint32_t random_n_out(tf_rng *r, int small)
+{
+    uint32_t u = tf_rng_below(r, 100);
+    if (small || u < 70) {
+        return pick(r, 1, 8);
+    }
+    return u < 95 ? pick(r, 9, 64) : pick(r, 65, 400);
+}
+
+/* A coefficient: random sign and mantissa, exponent in [elo, ehi]. */
+static float random_coef(tf_rng *r, int elo, int ehi)
+{
+    if (tf_rng_below(r, 20) == 0) {
+        return 0.0f;
+    }
+    double m = tf_rng_range(r, 1.0, 2.0);
+    int e = elo + (int)tf_rng_below(r, (uint32_t)(ehi - elo + 1));
+    return (float)(ldexp(m, e) * (tf_rng_below(r, 2) ? -1.0 : 1.0));
+}
+
+static void random_map(tf_rng *r, tf_model *m)
+{
+    double scale = pow(10.0, tf_rng_range(r, -3.0, 3.0));
+    double x0[3] = {0, 0, 0};
+    uint32_t kind = tf_rng_below(r, 10);
+    if (kind < 4) {
+        tf_model_set_ball(m, x0, scale);
+        return;
+    }
+    for (int i = 0; i < 3; ++i) {
+        x0[i] = tf_rng_range(r, -2.0, 2.0) * scale;
+    }
+    if (kind < 7) {
+        tf_model_set_ball(m, x0, scale);
+        return;
+    }
+    double w[9];
+    for (int i = 0; i < 9; ++i) {
+        w[i] = (i % 4 == 0 ? 1.0 : 0.0) + tf_rng_range(r, -0.45, 0.45);
+        w[i] /= scale * pow(10.0, tf_rng_range(r, -1.0, 1.0));
+    }
+    tf_model_set_map(m, x0, w);
+}
+
+static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_dims, int small)
+{
+    uint32_t pmax = small ? 4 : TFIT_MAX_DEGREE;
+    switch (f) {
+    case TFIT_FAMILY_MODAL:
+        dims[0] = pick(r, 0, pmax);
+        dims[1] = tf_rng_below(r, 10) == 0 ? TFIT_MAX_RANK : pick(r, 1, small ? 4 : 16);
+        *n_dims = 2;
+        break;
+    case TFIT_FAMILY_ZHOU2017:
+        for (int a = 0; a < 3; ++a) {
+            dims[a] = pick(r, 0, small ? 3 : TFIT_MAX_DEGREE);
+        }
+        for (int i = 3; i < TFIT_ZHOU2017_DIMS; ++i) {
+            dims[i] = pick(r, 0, small ? 3 : ((i % 3) == 2 ? TFIT_MAX_DEGREE : TFIT_ZHOU_MAX_ORDER));
+        }
+        *n_dims = TFIT_ZHOU2017_DIMS;
+        break;
+    default:
+        dims[0] = pick(r, 0, pmax);
+        *n_dims = 1;
+        break;
+    }
+}
+
+static void fill_tables(tf_rng *r, tf_model *m)
+{
+    /* binade spread: well scaled, moderately, or wildly ill-scaled */
+    uint32_t spread = tf_rng_below(r, 3);
+    int elo = spread == 0 ? -4 : (spread == 1 ? -40 : -149);
+    int ehi = spread == 0 ? 4 : (spread == 1 ? 30 : 90);
+    float *c = tf_model_tables(m);
+    uint32_t n = m->n_coef - TFIT_INPUT_MAP_FLOATS;
+    uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
+    for (uint32_t i = 0; i < n - n_xy; ++i) {
+        c[i] = random_coef(r, elo, ehi);
+    }
+    for (uint32_t i = n - n_xy; i < n; ++i) {
+        uint32_t k = tf_rng_below(r, 12);
+        c[i] = k == 0 ? 1.0f : (k == 1 ? -1.0f : (k == 2 ? 0.0f : (float)tf_rng_range(r, -1, 1)));
+    }
+    for (uint32_t j = 0; j < m->n_out; ++j) {
+        m->node_ids[j] = (uint32_t)(tf_rng_next(r) >> 40);
+    }
+}
+
+/* Halve every non-coordinate table entry until the model validates. */
+static int make_emittable(tf_model *m)
+{
+    char err[256];
+    float *c = tf_model_tables(m);
+    uint32_t n = m->n_coef - TFIT_INPUT_MAP_FLOATS;
+    uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
+    for (int tries = 0; tries < 400; ++tries) {
+        if (tf_model_validate(m, err, sizeof err) == 0) {
+            return 0;
+        }
+        for (uint32_t i = 0; i < n - n_xy; ++i) {
+            c[i] = ldexpf(c[i], -2);
+        }
+    }
+    return -1;
+}
+
+tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small)
+{
+    static const tfit_family families[] = {TFIT_FAMILY_NODAL, TFIT_FAMILY_NODAL,
+                                           TFIT_FAMILY_MODAL, TFIT_FAMILY_ZHOU2017,
+                                           TFIT_FAMILY_CONTACT};
+    tfit_family f = family ? family : families[tf_rng_below(r, 5)];
+    uint32_t dims[TFIT_ZHOU2017_DIMS], n_dims;
+    char err[256];
+    random_dims(r, f, dims, &n_dims, small);
+    uint32_t n_out = f == TFIT_FAMILY_CONTACT ? 1 : random_n_out(r, small);
+    tf_model *m = tf_model_new(name, f, n_out, dims, n_dims, err, sizeof err);
+    if (m == NULL) {
+        fprintf(stderr, "random model: %s\n", err);
+        return NULL;
+    }
+    random_map(r, m);
+    fill_tables(r, m);
+    if (make_emittable(m) != 0) {
+        fprintf(stderr, "random model %s: cannot scale into range\n", name);
+        tf_model_free(m);
+        return NULL;
+    }
+    return m;
+}

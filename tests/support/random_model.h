@@ -1,0 +1,17 @@
+/*
+ * random_model.h — random models for the bit-exact and property tests:
+ * every family, sizes up to the build's capacity, ellipsoidal envelopes with
+ * offsets, and coefficients spread over many binades (down to subnormals),
+ * scaled by powers of two until the model is emittable.
+ */
+#ifndef TF_RANDOM_MODEL_H
+#define TF_RANDOM_MODEL_H
+
+#include "model.h"
+#include "rng.h"
+
+/* family 0 picks one at random.  small != 0 keeps tables short (for
+ * emitted headers).  Returns NULL only when out of memory. */
+tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small);
+
+#endif /* TF_RANDOM_MODEL_H */

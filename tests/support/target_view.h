@@ -1,0 +1,14 @@
+/*
+ * target_view.h — a tfit_model descriptor pointing into a host tf_model's
+ * tables, so host tests can call the target library on host-built models.
+ */
+#ifndef TF_TARGET_VIEW_H
+#define TF_TARGET_VIEW_H
+
+#include "model.h"
+#include "tfit.h"
+
+/* Fills *t to describe m (tables shared, not copied), CRC included. */
+void tf_target_view(const tf_model *m, tfit_model *t);
+
+#endif /* TF_TARGET_VIEW_H */

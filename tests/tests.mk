@@ -1,0 +1,135 @@
+# tests.mk — everything `make check` runs.
+#
+#   check-unit         cmocka host unit tests (tests/unit/test_*.c)
+#   check-sanitize     the same tests under AddressSanitizer + UBSan
+#   check-freestanding target library for Cortex-M4F and RV64: no undefined
+#                      symbols, no mutable statics, no recursion
+#   check-bitexact     1000 random models x 4 compiler configurations
+#   check-golden       golden vectors of generated headers x 4 configurations
+#   check-header       a generated header included from two translation units
+#   check-insncount    callgrind: same instruction count for every input
+#   check-cli          the command line: help, exit statuses, nothing half-written
+
+TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -Itests/support -Itests/bitexact
+SUPPORT_SRC := $(wildcard tests/support/*.c)
+UNIT_SRC := $(wildcard tests/unit/test_*.c)
+UNIT_NAMES := $(UNIT_SRC:tests/unit/%.c=%)
+BITEXACT_CONFIGS := gcc-O0 gcc-O2 gcc-O3-native clang-O2
+T := $(B)/tests
+
+# Link line of a host test: $(call host_test_link,VARIANT)
+host_test_link = $(SUPPORT_SRC) $(B)/$(1)/libtissuefit-host.a $(B)/$(1)/libtfit.a -lcmocka $(HOST_LIBS)
+
+$(T)/unit/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+$(T)/asan/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/asan/libtissuefit-host.a $(B)/asan/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
+
+.PHONY: check check-unit check-sanitize check-freestanding check-bitexact check-golden \
+        check-header check-insncount check-cli
+
+check: | deps-check
+	@$(MAKE) --no-print-directory check-unit check-sanitize check-freestanding check-bitexact \
+	  check-golden check-header check-insncount check-cli
+	@echo "== make check: all passed =="
+
+check-unit: $(UNIT_NAMES:%=$(T)/unit/%)
+	@echo "== host unit tests =="
+	@set -e; for t in $^; do $$t; done
+
+check-sanitize: $(UNIT_NAMES:%=$(T)/asan/%)
+	@echo "== host unit tests under ASan + UBSan =="
+	@set -e; for t in $^; do \
+	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $$t; done
+
+# --- freestanding -----------------------------------------------------------
+$(T)/callgraph: tests/freestanding/callgraph.c | deps-check
+	@mkdir -p $(@D)
+	$(CC) $(HOST_STRICT) -O1 $< -o $@
+
+# The checker must reject a known-bad image, or its "no recursion" means nothing.
+$(T)/recursive.elf: tests/freestanding/recursive.c | deps-check
+	@mkdir -p $(@D)
+	$(ARM)gcc $(M4F_FLAGS) -O0 -nostdlib -Wl,-e,pong $< -o $@
+
+check-freestanding: $(T)/callgraph $(T)/recursive.elf \
+    $(foreach b,cortex-m4f cortex-m4f-O0 cortex-m4f-Os cortex-m4f-O3 riscv64 riscv64-O0,$(B)/$(b)/libtfit.a)
+	@echo "== freestanding target library =="
+	@if $(ARM)objdump -d $(T)/recursive.elf | $(T)/callgraph >/dev/null; then \
+	  echo "callgraph checker accepted a recursive image"; exit 1; fi
+	@set -e; export CALLGRAPH=$(T)/callgraph; \
+	for b in cortex-m4f cortex-m4f-O0 cortex-m4f-Os cortex-m4f-O3; do \
+	  FLAGS="$(M4F_FLAGS)" tests/freestanding/check.sh $$b $(ARM) $(B)/$$b arm; done; \
+	for b in riscv64 riscv64-O0; do \
+	  FLAGS="$(RV64_FLAGS)" tests/freestanding/check.sh $$b $(RV) $(B)/$$b; done
+
+# --- bit-exact: random models -------------------------------------------------
+$(T)/gen_random: tests/bitexact/gen_random.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+
+$(T)/random.bundle: $(T)/gen_random
+	$< bundle 1000 20261122 $@
+
+$(T)/run_bundle-%: tests/bitexact/run_bundle.c $(B)/bitexact-%/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/bitexact $^ -o $@
+
+check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%)
+	@echo "== bit-exact: random models, every family, four compiler configurations =="
+	@set -e; for c in $(BITEXACT_CONFIGS); do $(T)/run_bundle-$$c $$c $(T)/random.bundle; done
+
+# --- generated headers --------------------------------------------------------
+$(T)/gen/families.h: $(T)/gen_random
+	@mkdir -p $(@D)
+	$< header 7 $@
+$(T)/gen/demo.h: $(B)/bin/tissuefit
+	@mkdir -p $(@D)
+	$< -q demo-model -o $@
+
+# $(call golden_runner,HEADER-BASE)
+define golden_runner
+$(T)/golden-$(1)-%: tests/header/run_golden.c $(T)/gen/$(1).h $(B)/bitexact-%/libtfit.a
+	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(shell echo $(1) | tr a-z A-Z)_GOLDEN_SETS \
+	  -DTFIT_$(shell echo $(1) | tr a-z A-Z)_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
+endef
+$(eval $(call golden_runner,families))
+$(eval $(call golden_runner,demo))
+
+check-golden: $(foreach h,families demo,$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%))
+	@echo "== golden vectors of generated headers =="
+	@set -e; for h in families demo; do for c in $(BITEXACT_CONFIGS); do \
+	  $(T)/golden-$$h-$$c $$h/$$c; done; done
+
+$(T)/two_tu: tests/header/tu_main.c tests/header/tu_other.c $(T)/gen/families.h $(B)/native/libtfit.a
+	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
+
+check-header: $(T)/two_tu
+	@echo "== generated header in two translation units =="
+	@$(T)/two_tu
+	@n=$$(nm $(T)/two_tu | grep -c ' tfit_nodal_a_coef$$'); \
+	if [ "$$n" != 1 ]; then echo "tfit_nodal_a_coef defined $$n times"; exit 1; fi; \
+	echo "tables defined once: ok"
+
+# --- fixed instruction count ------------------------------------------------
+$(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
+	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
+
+check-insncount: $(T)/probe
+	@echo "== instructions per evaluation (callgrind), every golden input =="
+	@tests/insncount/run.sh $(T)/probe $(T)/insncount
+
+# --- demo program -------------------------------------------------------------
+$(B)/demo/demo.h: $(B)/bin/tissuefit
+	@mkdir -p $(@D)
+	$< demo-model -o $@
+
+$(B)/demo/demo_native: target/examples/demo_native.c $(B)/demo/demo.h $(B)/lib/libtfit.a
+	$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(B)/demo $< $(B)/lib/libtfit.a -o $@
+
+check-cli: $(B)/bin/tissuefit
+	@echo "== command line =="
+	@tests/cli/cli.sh $(B)/bin/tissuefit
