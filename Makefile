@@ -13,6 +13,12 @@ VERSION := 0.1.0
 PREFIX ?= /usr/local
 B := build
 
+# Quiet by default: one line per built file; `make V=1` shows the commands.
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+# $(call say,WHAT) prints "  WHAT target" unless V=1.
+say = $(if $(filter 1,$(V)),,@printf '  %-6s %s\n' '$(1)' '$@')
+
 CC := gcc
 CLANG := clang
 ARM := arm-none-eabi-
@@ -59,17 +65,25 @@ if [ -n "$$missing" ]; then \
 fi
 endef
 
-.PHONY: deps-build deps-check deps-demo
+DEBS_BENCH := $(DEBS_BUILD)
+
+.PHONY: deps-build deps-check deps-demo deps-bench
 deps-build: ; $(call ensure_debs,$(DEBS_BUILD))
 deps-check: ; $(call ensure_debs,$(DEBS_CHECK))
 deps-demo: ; $(call ensure_debs,$(DEBS_DEMO))
+deps-bench: ; $(call ensure_debs,$(DEBS_BENCH))
 
+# Fragments: each area adds its rules, and appends to CHECKS (run by
+# `make check`), BENCHES (run by `make bench`) and the DEBS_* lists.
+CHECKS :=
+BENCHES :=
 include target/target.mk
 include host/host.mk
 include tests/tests.mk
+include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildcard */*.mk)))
 
 # ---------------------------------------------------------------------------
-.PHONY: all demo check install clean help
+.PHONY: all demo check bench install clean help
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 
@@ -78,6 +92,13 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 demo: $(B)/bin/tissuefit $(B)/demo/demo_native | deps-demo
 	@echo "== demo: header emitted from a built-in model, evaluated by the target library =="
 	$(B)/demo/demo_native
+
+check: | deps-check
+	@$(MAKE) --no-print-directory $(CHECKS)
+	@echo "== make check: all passed =="
+
+bench: | deps-bench
+	@$(MAKE) --no-print-directory $(BENCHES)
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
@@ -95,5 +116,6 @@ help:
 	@echo "make            build/bin/tissuefit and build/lib/libtfit.a"
 	@echo "make demo       the main job, end to end"
 	@echo "make check      every test (installs missing Debian packages when root)"
+	@echo "make bench      speed and size measurements (medians, ratios, instruction counts)"
 	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file"
 	@echo "make clean      remove build/"

@@ -12,9 +12,11 @@ HOST_LIBS := -fopenmp -lcholmod -llapacke -lopenblas -lcyaml -lz -lm
 define host_lib
 $(B)/$(1)/host/%.o: host/%.c $(HOST_HDR) | deps-build
 	@mkdir -p $$(@D)
-	$(CC) $(HOST_CFLAGS) $(2) -c $$< -o $$@
+	$$(call say,CC)
+	$(Q)$(CC) $(HOST_CFLAGS) $(2) -c $$< -o $$@
 $(B)/$(1)/libtissuefit-host.a: $(HOST_SRC:host/%.c=$(B)/$(1)/host/%.o)
-	rm -f $$@ && ar rcs $$@ $$^
+	$$(call say,AR)
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
 endef
 
 $(eval $(call host_lib,native,-O2 -g))
@@ -22,4 +24,5 @@ $(eval $(call host_lib,asan,-O1 -g $(SANITIZE)))
 
 $(B)/bin/tissuefit: $(B)/native/host/main.o $(B)/native/libtissuefit-host.a
 	@mkdir -p $(@D)
-	$(CC) $^ $(HOST_LIBS) -o $@
+	$(call say,LINK)
+	$(Q)$(CC) $^ $(HOST_LIBS) -o $@

@@ -14,17 +14,19 @@ TARGET_CFLAGS := $(TARGET_STRICT) -Itarget/include -ffunction-sections -fdata-se
 define tfit_lib
 $(B)/$(1)/obj/%.o: target/src/%.c $(TARGET_HDR) | deps-$(5)
 	@mkdir -p $$(@D)
-	$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
+	$$(call say,CC)
+	$(Q)$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
 $(B)/$(1)/libtfit.a: $(TARGET_SRC:target/src/%.c=$(B)/$(1)/obj/%.o)
-	$(4)ld -r $$^ -o $(B)/$(1)/libtfit.o
-	rm -f $$@ && $(4)ar rcs $$@ $(B)/$(1)/libtfit.o
+	$$(call say,AR)
+	$(Q)$(4)ld -r $$^ -o $(B)/$(1)/libtfit.o
+	$(Q)rm -f $$@ && $(4)ar rcs $$@ $(B)/$(1)/libtfit.o
 endef
 
 # The native library that `make` ships.
 $(eval $(call tfit_lib,native,$(CC),-O2 -g,,build))
 $(B)/lib/libtfit.a: $(B)/native/libtfit.a
 	@mkdir -p $(@D)
-	cp $< $@
+	$(Q)cp $< $@
 
 # Cross builds (freestanding proof; the firmware issue adds images).
 $(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2,$(ARM),check))

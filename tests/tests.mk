@@ -22,18 +22,17 @@ host_test_link = $(SUPPORT_SRC) $(B)/$(1)/libtissuefit-host.a $(B)/$(1)/libtfit.
 
 $(T)/unit/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
 $(T)/asan/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/asan/libtissuefit-host.a $(B)/asan/libtfit.a | deps-check
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
 
-.PHONY: check check-unit check-sanitize check-freestanding check-bitexact check-golden \
+.PHONY: check-unit check-sanitize check-freestanding check-bitexact check-golden \
         check-header check-insncount check-cli
-
-check: | deps-check
-	@$(MAKE) --no-print-directory check-unit check-sanitize check-freestanding check-bitexact \
-	  check-golden check-header check-insncount check-cli
-	@echo "== make check: all passed =="
+CHECKS += check-unit check-sanitize check-freestanding check-bitexact check-golden \
+          check-header check-insncount check-cli
 
 check-unit: $(UNIT_NAMES:%=$(T)/unit/%)
 	@echo "== host unit tests =="
@@ -47,12 +46,14 @@ check-sanitize: $(UNIT_NAMES:%=$(T)/asan/%)
 # --- freestanding -----------------------------------------------------------
 $(T)/callgraph: tests/freestanding/callgraph.c | deps-check
 	@mkdir -p $(@D)
-	$(CC) $(HOST_STRICT) -O1 $< -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 $< -o $@
 
 # The checker must reject a known-bad image, or its "no recursion" means nothing.
 $(T)/recursive.elf: tests/freestanding/recursive.c | deps-check
 	@mkdir -p $(@D)
-	$(ARM)gcc $(M4F_FLAGS) -O0 -nostdlib -Wl,-e,pong $< -o $@
+	$(call say,BUILD)
+	$(Q)$(ARM)gcc $(M4F_FLAGS) -O0 -nostdlib -Wl,-e,pong $< -o $@
 
 check-freestanding: $(T)/callgraph $(T)/recursive.elf \
     $(foreach b,cortex-m4f cortex-m4f-O0 cortex-m4f-Os cortex-m4f-O3 riscv64 riscv64-O0,$(B)/$(b)/libtfit.a)
@@ -68,14 +69,17 @@ check-freestanding: $(T)/callgraph $(T)/recursive.elf \
 # --- bit-exact: random models -------------------------------------------------
 $(T)/gen_random: tests/bitexact/gen_random.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
 
 $(T)/random.bundle: $(T)/gen_random
-	$< bundle 1000 20261122 $@
+	$(call say,GEN)
+	$(Q)$< bundle 1000 20261122 $@
 
 $(T)/run_bundle-%: tests/bitexact/run_bundle.c $(B)/bitexact-%/libtfit.a | deps-check
 	@mkdir -p $(@D)
-	$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/bitexact $^ -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/bitexact $^ -o $@
 
 check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%)
 	@echo "== bit-exact: random models, every family, four compiler configurations =="
@@ -84,15 +88,18 @@ check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%)
 # --- generated headers --------------------------------------------------------
 $(T)/gen/families.h: $(T)/gen_random
 	@mkdir -p $(@D)
-	$< header 7 $@
+	$(call say,GEN)
+	$(Q)$< header 7 $@
 $(T)/gen/demo.h: $(B)/bin/tissuefit
 	@mkdir -p $(@D)
-	$< -q demo-model -o $@
+	$(call say,GEN)
+	$(Q)$< -q demo-model -o $@
 
 # $(call golden_runner,HEADER-BASE)
 define golden_runner
 $(T)/golden-$(1)-%: tests/header/run_golden.c $(T)/gen/$(1).h $(B)/bitexact-%/libtfit.a
-	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
 	  -DGOLDEN_SETS=TFIT_$(shell echo $(1) | tr a-z A-Z)_GOLDEN_SETS \
 	  -DTFIT_$(shell echo $(1) | tr a-z A-Z)_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
 endef
@@ -105,7 +112,8 @@ check-golden: $(foreach h,families demo,$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%)
 	  $(T)/golden-$$h-$$c $$h/$$c; done; done
 
 $(T)/two_tu: tests/header/tu_main.c tests/header/tu_other.c $(T)/gen/families.h $(B)/native/libtfit.a
-	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
 
 check-header: $(T)/two_tu
 	@echo "== generated header in two translation units =="
@@ -116,7 +124,8 @@ check-header: $(T)/two_tu
 
 # --- fixed instruction count ------------------------------------------------
 $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
-	$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
 
 check-insncount: $(T)/probe
 	@echo "== instructions per evaluation (callgrind), every golden input =="
@@ -125,10 +134,12 @@ check-insncount: $(T)/probe
 # --- demo program -------------------------------------------------------------
 $(B)/demo/demo.h: $(B)/bin/tissuefit
 	@mkdir -p $(@D)
-	$< demo-model -o $@
+	$(call say,GEN)
+	$(Q)$< demo-model -o $@
 
 $(B)/demo/demo_native: target/examples/demo_native.c $(B)/demo/demo.h $(B)/lib/libtfit.a
-	$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(B)/demo $< $(B)/lib/libtfit.a -o $@
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(B)/demo $< $(B)/lib/libtfit.a -o $@
 
 check-cli: $(B)/bin/tissuefit
 	@echo "== command line =="
