@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "blas_pin.h"
 #include "cli.h"
 #include "log.h"
 #include "tfit.h"
@@ -49,6 +50,7 @@ int tf_wants_help(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    tf_blas_pin(argv);
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; ++i) {
         if (strcmp(argv[i], "-q") == 0 || strcmp(argv[i], "--quiet") == 0) {
@@ -57,7 +59,8 @@ int main(int argc, char **argv)
             usage(stdout);
             return TF_EXIT_OK;
         } else if (strcmp(argv[i], "--version") == 0) {
-            printf("tissuefit %s (tfit API %d)\n", TFIT_TOOL_VERSION, TFIT_API_VERSION);
+            printf("tissuefit %s (tfit API %d, OpenBLAS kernels %s)\n", TFIT_TOOL_VERSION,
+                   TFIT_API_VERSION, tf_blas_coretype());
             return TF_EXIT_OK;
         } else {
             tf_error("unknown option '%s' (try 'tissuefit --help')", argv[i]);
