@@ -11,6 +11,14 @@
 
 #include "lsq.h"
 
+/* A forward-difference Jacobian is good to about sqrt(eps) ~ 1.5e-8
+ * relative (lm_fdjac.c), so two columns that are equal in exact arithmetic
+ * differ at that level: the rank decision must not look finer than this.
+ * 1e-6 leaves a factor of ~50 above the differencing noise and still
+ * resolves scaled condition numbers up to 1e6 (the NIST problems reach
+ * 6e4, Bennett5). */
+#define FD_RANK_TOL 1e-6
+
 void tf_fit_default_options(tf_fit_options *o, size_t n_par)
 {
     memset(o, 0, sizeof *o);
@@ -278,7 +286,8 @@ static int fit_nonlinear(const tf_fit_model *model, const tf_fit_data *data,
         res->iterations = lr.iterations;
         res->evals = lr.evals;
         res->jac_evals = lr.jac_evals;
-        rc = nonlinear_statistics(jac, active, res, o->rank_tol, err, errlen);
+        double tol = model->jacobian != NULL ? o->rank_tol : fmax(o->rank_tol, FD_RANK_TOL);
+        rc = nonlinear_statistics(jac, active, res, tol, err, errlen);
     }
     free(jac);
     free(active);
