@@ -35,6 +35,14 @@
 #define ACCEPT_RATIO 1e-4 /* Moré: accept any step that gains this fraction */
 #define SANE_LOW 0.25     /* reduction-ratio window in which the linear model */
 #define SANE_HIGH 2.0     /* is trusted for the relative-reduction stop */
+/* Rounding floor of the relative reduction 1 - (|r_t| / |r|)^2: each norm
+ * carries up to m rounding errors (a chain of hypot), so below 4 m eps an
+ * actual reduction says nothing.  There the step the linear model chose is
+ * taken, since the sum of squares cannot refute it, and the region halves
+ * so that the iteration still ends; Gauss-Newton steps that shrink by at
+ * least half per step, as they do near a minimum, still fit. */
+#define NOISE_FACTOR 4.0
+#define NOISE_SHRINK 0.5
 
 const char *tf_stop_name(tf_stop s)
 {
@@ -376,38 +384,42 @@ static void update_radius(lm *s, double ratio, double actred, double dirder, dou
     }
 }
 
-/* Stop tests after a trial (Moré's, with two guards).  The relative-
+/* Stop tests after a trial (Moré's, with guards).  The relative-
  * reduction test needs the step's reduction ratio to be sane (the linear
  * model was right about it) and the Gauss–Newton reduction from this point
  * to be below ftol too: a trust region squeezed small makes any step's
- * predicted reduction small, and that is no sign of a minimum.  A collapse
- * of the trust region after non-finite trials is reported as such.
+ * predicted reduction small, and that is no sign of a minimum.  After a
+ * step below the rounding floor of the sum of squares (unresolved) only the
+ * size of the region can end the fit: the parameters may still be moving.
+ * A collapse of the region after non-finite trials is reported as such.
  * Returns TF_STOP_DIRECT to go on. */
-static tf_stop stop_test(const lm *s, double actred, double prered, double ratio)
+static tf_stop stop_test(const lm *s, double actred, double prered, double ratio, int unresolved)
 {
     const tf_lm_options *o = s->opt;
     double pnorm = scaled_norm(s, s->p);
     int sane = ratio >= SANE_LOW && ratio <= SANE_HIGH;
-    tf_stop collapsed = s->wall ? TF_STOP_NONFINITE : TF_STOP_STEP;
+    int reduction_says = !unresolved;
     if (s->rnorm == 0) {
         return TF_STOP_ZERO_RESIDUAL;
     }
-    if (fabs(actred) <= o->ftol && prered <= o->ftol && sane && s->gn_prered <= o->ftol) {
+    if (reduction_says && fabs(actred) <= o->ftol && prered <= o->ftol && sane &&
+        s->gn_prered <= o->ftol) {
         return TF_STOP_REDUCTION;
     }
     if (s->delta <= o->xtol * pnorm) {
-        return collapsed;
+        return s->wall ? TF_STOP_NONFINITE : TF_STOP_STEP;
     }
     if (s->evals >= o->max_evals) {
         return TF_STOP_MAX_EVALS;
     }
-    collapsed = s->wall ? TF_STOP_NONFINITE : TF_STOP_PRECISION;
-    if (fabs(actred) <= DBL_EPSILON && prered <= DBL_EPSILON && 0.5 * ratio <= 1) {
-        return collapsed;
+    tf_stop floor = s->wall ? TF_STOP_NONFINITE : TF_STOP_PRECISION;
+    if (reduction_says && fabs(actred) <= DBL_EPSILON && prered <= DBL_EPSILON &&
+        0.5 * ratio <= 1) {
+        return floor;
     }
     /* No step inside the region can change r beyond rounding. */
     if (s->delta <= DBL_EPSILON * fmax(pnorm, s->rnorm)) {
-        return collapsed;
+        return floor;
     }
     return TF_STOP_DIRECT;
 }
@@ -440,8 +452,13 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
     double prered, dirder;
     predicted(s, projected, &prered, &dirder);
     double ratio = prered != 0 ? actred / prered : 0;
+    double noise = NOISE_FACTOR * (double)s->m * DBL_EPSILON;
+    int unresolved = finite && fabs(actred) <= noise && prered <= noise;
     update_radius(s, ratio, actred, dirder, rtnorm);
-    if (ratio >= ACCEPT_RATIO) {
+    if (unresolved) {
+        s->delta = NOISE_SHRINK * fmin(s->delta, s->pnorm_scaled);
+    }
+    if (ratio >= ACCEPT_RATIO || unresolved) {
         memcpy(s->p, s->pt, s->n * sizeof *s->p);
         memcpy(s->r, s->rt, s->m * sizeof *s->r);
         s->rnorm = rtnorm;
@@ -449,7 +466,7 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
         s->wall = 0;
         *accepted = 1;
     }
-    return stop_test(s, actred, prered, ratio);
+    return stop_test(s, actred, prered, ratio, unresolved);
 }
 
 static tf_stop iterate(lm *s)

@@ -17,6 +17,8 @@
 #include "assert_close.h"
 #include "fit.h"
 #include "lm.h"
+#include "lsq.h"
+#include "rng.h"
 
 /* A one-parameter problem with a trace of the points it was evaluated at. */
 typedef struct trace {
@@ -445,6 +447,68 @@ static void start_outside_the_box_is_clamped(void **state)
     tf_fit_result_free(&r);
 }
 
+/* ------------------------------------------------------------------------ */
+/* Large residuals: y = 3 exp(-0.1 x) + 1 plus noise of size 0.5.  Near the
+ * minimum the sum of squares stops resolving steps long before the
+ * parameters are as good as double precision allows; the fit must still
+ * end at the Gauss-Newton fixed point: a further Gauss-Newton step from the
+ * returned point (by QR, lsq.c) must be negligible. */
+
+#define NL 50
+typedef struct noisy {
+    double x[NL], y[NL];
+} noisy;
+
+static int noisy_residual(void *ctx, const double *p, double *r)
+{
+    const noisy *d = ctx;
+    for (int i = 0; i < NL; ++i) {
+        r[i] = p[0] * exp(-p[1] * d->x[i]) + p[2] - d->y[i];
+    }
+    return 0;
+}
+
+static int noisy_jacobian(void *ctx, const double *p, double *j)
+{
+    const noisy *d = ctx;
+    for (int i = 0; i < NL; ++i) {
+        double e = exp(-p[1] * d->x[i]);
+        j[i] = e;
+        j[i + NL] = -p[0] * d->x[i] * e;
+        j[i + 2 * NL] = 1;
+    }
+    return 0;
+}
+
+static void large_residual_fit_ends_at_the_gauss_newton_point(void **state)
+{
+    (void)state;
+    noisy d;
+    tf_rng g = {7};
+    for (int i = 0; i < NL; ++i) {
+        d.x[i] = i;
+        d.y[i] = 3 * exp(-0.1 * i) + 1 + tf_rng_range(&g, -0.5, 0.5);
+    }
+    double p[3] = {1, 0.5, 0}, jac[3 * NL], r[NL], step[3];
+    tf_lm_problem pb = {NL, 3, noisy_residual, noisy_jacobian, &d, NULL, NULL};
+    tf_lm_options o;
+    tf_lm_default_options(&o, 3);
+    o.ftol = o.xtol = 1e-15;
+    tf_lm_result res = {.jac = jac};
+    char err[128];
+    assert_int_equal(tf_lm_solve(&pb, &o, p, &res, err, sizeof err), 0);
+    assert_true(tf_stop_converged(res.stop));
+    assert_true(res.rss > 1); /* the residuals are large */
+    noisy_residual(&d, p, r);
+    tf_lsq *f = tf_lsq_factor(NL, 3, jac, NL, NULL, 0, err, sizeof err);
+    assert_non_null(f);
+    assert_int_equal(tf_lsq_solve(f, 1, r, NL, step, 3, NULL, err, sizeof err), 0);
+    tf_lsq_free(f);
+    for (int j = 0; j < 3; ++j) {
+        assert_close(step[j], 0, 1e-12 * fabs(p[j]));
+    }
+}
+
 /* The forward-difference Jacobian agrees with the analytic one to about
  * half the digits of double precision.  A run with a budget of one
  * evaluation returns the differenced Jacobian at the point it stops at. */
@@ -482,6 +546,7 @@ int main(void)
         cmocka_unit_test(bounds_hold_and_are_reported),
         cmocka_unit_test(inactive_bounds_change_nothing),
         cmocka_unit_test(start_outside_the_box_is_clamped),
+        cmocka_unit_test(large_residual_fit_ends_at_the_gauss_newton_point),
         cmocka_unit_test(finite_differences_match_the_jacobian),
     };
     return cmocka_run_group_tests_name("lm", tests, NULL, NULL);
