@@ -21,6 +21,7 @@
  */
 #include "lm.h"
 
+#include <cblas.h>
 #include <float.h>
 #include <lapacke.h>
 #include <limits.h>
@@ -36,7 +37,7 @@
 #define SANE_LOW 0.25     /* reduction-ratio window in which the linear model */
 #define SANE_HIGH 2.0     /* is trusted for the relative-reduction stop */
 /* Rounding floor of the relative reduction 1 - (|r_t| / |r|)^2: each norm
- * carries up to m rounding errors (a chain of hypot), so below 4 m eps an
+ * carries up to m rounding errors (a sum of m squares), so below 4 m eps an
  * actual reduction says nothing.  There the step the linear model chose is
  * taken, since the sum of squares cannot refute it, and the region halves
  * so that the iteration still ends; Gauss-Newton steps that shrink by at
@@ -82,7 +83,8 @@ typedef struct lm {
     size_t m, n, nf;       /* nf: free parameters this iteration */
     double *p, *r, *jac;   /* current point, residuals, Jacobian (m x n) */
     double *pt, *rt;       /* trial point and residuals */
-    double *qr, *qtf, *tau, *diag, *grad, *step, *js, *fdiag, *fstep, *typ, *work;
+    double *qr, *qtf, *tau, *diag, *grad, *step, *js, *fdiag, *fstep, *typ, *cnorm, *dv;
+    double *work;
     lapack_int *piv;
     size_t *free_idx;
     signed char *active;
@@ -92,13 +94,10 @@ typedef struct lm {
     int wall;         /* a trial since the last accepted step was non-finite */
 } lm;
 
+/* Euclidean norm, scaled against overflow (BLAS dnrm2). */
 static double norm2(const double *v, size_t n)
 {
-    double s = 0;
-    for (size_t i = 0; i < n; ++i) {
-        s = hypot(s, v[i]);
-    }
-    return s;
+    return n > 0 ? cblas_dnrm2((int)n, v, 1) : 0;
 }
 
 static int all_finite(const double *v, size_t n)
@@ -126,13 +125,13 @@ static double clamp(const lm *s, size_t j, double v)
     return fmin(fmax(v, lower(s, j)), upper(s, j));
 }
 
+/* ||D v||. */
 static double scaled_norm(const lm *s, const double *v)
 {
-    double a = 0;
     for (size_t j = 0; j < s->n; ++j) {
-        a = hypot(a, s->diag[j] * v[j]);
+        s->dv[j] = s->diag[j] * v[j];
     }
-    return a;
+    return norm2(s->dv, s->n);
 }
 
 static int evaluate(lm *s, const double *p, double *r)
@@ -155,7 +154,7 @@ static void lm_free(lm *s)
 static int lm_alloc(lm *s)
 {
     const size_t m = s->m, n = s->n;
-    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n +
+    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n + n + n +
                    tf_lmstep_work_size(n);
     s->p = malloc(total * sizeof *s->p);
     s->piv = malloc(n * sizeof *s->piv);
@@ -180,6 +179,8 @@ static int lm_alloc(lm *s)
     s->fdiag = q, q += n;
     s->fstep = q, q += n;
     s->typ = q, q += n;
+    s->cnorm = q, q += n;
+    s->dv = q, q += n;
     s->work = q;
     return 0;
 }
@@ -223,19 +224,17 @@ static tf_stop jacobian(lm *s)
     return all_finite(s->jac, s->m * s->n) ? TF_STOP_DIRECT : TF_STOP_BAD_JACOBIAN;
 }
 
-/* Gradient g = J^T r, and the active set: a parameter on a bound whose
- * descent direction -g points out of the box is held there this iteration. */
+/* Gradient g = J^T r, column norms of J, and the active set: a parameter
+ * on a bound whose descent direction -g points out of the box is held
+ * there this iteration. */
 static void active_set(lm *s)
 {
+    cblas_dgemv(CblasColMajor, CblasTrans, (int)s->m, (int)s->n, 1.0, s->jac, (int)s->m, s->r, 1,
+                0.0, s->grad, 1);
     s->nf = 0;
     for (size_t j = 0; j < s->n; ++j) {
-        const double *col = s->jac + j * s->m;
-        double g = 0;
-        for (size_t i = 0; i < s->m; ++i) {
-            g += col[i] * s->r[i];
-        }
-        s->grad[j] = g;
-        double lo = lower(s, j), hi = upper(s, j);
+        double g = s->grad[j], lo = lower(s, j), hi = upper(s, j);
+        s->cnorm[j] = norm2(s->jac + j * s->m, s->m);
         s->active[j] = 0;
         if (lo == hi || (s->p[j] <= lo && g > 0)) {
             s->active[j] = -1;
@@ -253,7 +252,7 @@ static void active_set(lm *s)
 static void update_scaling(lm *s, int first)
 {
     for (size_t j = 0; j < s->n; ++j) {
-        double c = norm2(s->jac + j * s->m, s->m);
+        double c = s->cnorm[j];
         if (first) {
             s->diag[j] = c > 0 ? c : 1.0;
         } else if (c > s->diag[j]) {
@@ -301,7 +300,7 @@ static double gradient_cosine(const lm *s)
     double g = 0;
     for (size_t c = 0; c < s->nf; ++c) {
         size_t j = s->free_idx[c];
-        double cn = norm2(s->jac + j * s->m, s->m);
+        double cn = s->cnorm[j];
         if (cn > 0) {
             g = fmax(g, fabs(s->grad[j]) / (cn * s->rnorm));
         }
@@ -339,16 +338,9 @@ static int trial_step(lm *s, size_t rank)
 static void predicted(lm *s, int projected, double *prered, double *dirder)
 {
     const double rn2 = s->rnorm * s->rnorm;
+    cblas_dgemv(CblasColMajor, CblasNoTrans, (int)s->m, (int)s->n, 1.0, s->jac, (int)s->m,
+                s->step, 1, 0.0, s->js, 1);
     double jsn;
-    for (size_t i = 0; i < s->m; ++i) {
-        s->js[i] = 0;
-    }
-    for (size_t j = 0; j < s->n; ++j) {
-        const double *col = s->jac + j * s->m;
-        for (size_t i = 0; s->step[j] != 0 && i < s->m; ++i) {
-            s->js[i] += col[i] * s->step[j];
-        }
-    }
     jsn = norm2(s->js, s->m);
     if (!projected) {
         /* The LM step satisfies -step.g = ||J step||^2 + lambda ||D step||^2,
@@ -358,10 +350,7 @@ static void predicted(lm *s, int projected, double *prered, double *dirder)
         *dirder = -(t1 * t1 + t2 * t2);
         return;
     }
-    double sg = 0;
-    for (size_t j = 0; j < s->n; ++j) {
-        sg += s->step[j] * s->grad[j];
-    }
+    double sg = cblas_ddot((int)s->n, s->step, 1, s->grad, 1);
     *prered = -(2 * sg + jsn * jsn) / rn2;
     *dirder = sg / rn2;
 }

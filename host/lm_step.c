@@ -18,6 +18,7 @@
  */
 #include "lm_step.h"
 
+#include <cblas.h>
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -26,26 +27,22 @@
 
 size_t tf_lmstep_work_size(size_t n)
 {
-    return 2 * n * n + 5 * n;
+    return 2 * n * n + 6 * n;
 }
 
 static double norm2(const double *v, size_t n)
 {
-    double s = 0;
-    for (size_t i = 0; i < n; ++i) {
-        s = hypot(s, v[i]);
-    }
-    return s;
+    return cblas_dnrm2((int)n, v, 1);
 }
 
 /* ||D p|| for p in parameter order. */
 static double scaled_norm(const tf_lmstep *s, const double *p)
 {
-    double v = 0;
+    double *dp = s->work + tf_lmstep_work_size(s->n) - 3 * s->n;
     for (size_t j = 0; j < s->n; ++j) {
-        v = hypot(v, s->diag[j] * p[j]);
+        dp[j] = s->diag[j] * p[j];
     }
-    return v;
+    return norm2(dp, s->n);
 }
 
 /* step = -P z. */
@@ -118,15 +115,15 @@ static double newton_denominator(const tf_lmstep *s, const double *t, size_t ldt
 /* ||D^-1 J^T r|| = ||D^-1 P R^T (Q^T r)||: the scaled gradient. */
 static double scaled_gradient(const tf_lmstep *s)
 {
-    double g = 0;
+    double *g = s->work + tf_lmstep_work_size(s->n) - 3 * s->n;
     for (size_t j = 0; j < s->n; ++j) {
         double sum = 0;
         for (size_t i = 0; i <= j && i < s->k; ++i) {
             sum += s->r[i + j * s->ldr] * s->qtf[i];
         }
-        g = hypot(g, sum / s->diag[s->piv[j] - 1]);
+        g[j] = sum / s->diag[s->piv[j] - 1];
     }
-    return g;
+    return norm2(g, s->n);
 }
 
 double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *step)

@@ -7,6 +7,7 @@
  */
 #include "lsq.h"
 
+#include <cblas.h>
 #include <lapacke.h>
 #include <limits.h>
 #include <math.h>
@@ -54,7 +55,7 @@ static int load_scaled(tf_lsq *f, const double *a, size_t lda, const double *w, 
         f->sqrt_w[i] = sqrt(w[i]);
     }
     for (size_t j = 0; j < f->n; ++j) {
-        double *col = f->qr + j * f->m, norm = 0;
+        double *col = f->qr + j * f->m, norm;
         for (size_t i = 0; i < f->m; ++i) {
             double v = a[i + j * lda];
             if (!isfinite(v)) {
@@ -63,9 +64,7 @@ static int load_scaled(tf_lsq *f, const double *a, size_t lda, const double *w, 
             }
             col[i] = w != NULL ? v * f->sqrt_w[i] : v;
         }
-        for (size_t i = 0; i < f->m; ++i) {
-            norm = hypot(norm, col[i]); /* no overflow for huge entries */
-        }
+        norm = cblas_dnrm2((int)f->m, col, 1); /* scaled: no overflow */
         f->scale[j] = norm > 0 ? norm : 1.0;
         for (size_t i = 0; i < f->m; ++i) {
             col[i] /= f->scale[j];
