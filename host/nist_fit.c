@@ -55,6 +55,22 @@ const tf_nist_model *tf_nist_match(const tf_nist *d, const char *path, char *err
     return m;
 }
 
+int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_model **model,
+                 char *err, size_t errlen)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s.dat", dir, name);
+    if (tf_nist_read(path, d, err, errlen) != 0) {
+        return -1;
+    }
+    *model = tf_nist_match(d, path, err, errlen);
+    if (*model == NULL) {
+        tf_nist_free(d);
+        return -1;
+    }
+    return 0;
+}
+
 void tf_nist_options(tf_fit_options *o, size_t n_par)
 {
     tf_fit_default_options(o, n_par);

@@ -39,6 +39,10 @@ double tf_lre(double estimate, double certified);
  * when the file's parameter or predictor count disagrees with it. */
 const tf_nist_model *tf_nist_match(const tf_nist *d, const char *path, char *err, size_t errlen);
 
+/* Reads DIR/NAME.dat and matches its model: 0, or -1 with a message. */
+int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_model **model,
+                 char *err, size_t errlen);
+
 /* Tolerances of the certification runs (docs/lm.md): ftol = xtol = 1e-15,
  * gtol = 0, 10000 evaluations. */
 void tf_nist_options(tf_fit_options *o, size_t n_par);

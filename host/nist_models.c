@@ -340,3 +340,15 @@ const tf_nist_model *tf_nist_models(size_t *count)
     *count = sizeof models / sizeof models[0];
     return models;
 }
+
+const char *const *tf_nist_suite(size_t *count)
+{
+    static const char *const names[] = {
+        "Misra1a", "Chwirut2", "Chwirut1", "Lanczos3", "Gauss1",   "Gauss2",  "DanWood",
+        "Misra1b", "Kirby2",   "Hahn1",    "Nelson",   "MGH17",    "Lanczos1", "Lanczos2",
+        "Gauss3",  "Misra1c",  "Misra1d",  "Roszman1", "ENSO",     "MGH09",   "Thurber",
+        "BoxBOD",  "Rat42",    "MGH10",    "Eckerle4", "Rat43",    "Bennett5",
+    };
+    *count = sizeof names / sizeof names[0];
+    return names;
+}

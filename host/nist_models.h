@@ -26,4 +26,8 @@ const tf_nist_model *tf_nist_model_find(const char *text);
 /* All models (for tests): *count receives their number. */
 const tf_nist_model *tf_nist_models(size_t *count);
 
+/* The 27 problem names of the suite in NIST's order (lower, average, then
+ * higher difficulty); *count receives 27. */
+const char *const *tf_nist_suite(size_t *count);
+
 #endif /* TF_NIST_MODELS_H */
