@@ -15,7 +15,7 @@
 static void help(FILE *out)
 {
     fprintf(out,
-            "usage: tissuefit lm-strd FILE.dat --start 1|2 [--finite-diff]\n\n"
+            "usage: tissuefit lm-strd FILE.dat --start 1|2 [--finite-diff | --central-diff]\n\n"
             "Fits a NIST StRD nonlinear least-squares problem (the .dat files of\n"
             "../shared/reference/nist-strd) from its first or second starting point\n"
             "and prints CSV on stdout:\n\n"
@@ -27,7 +27,8 @@ static void help(FILE *out)
             "formula in the file.  Tolerances: ftol = xtol = 1e-15 (docs/lm.md).\n\n"
             "Options:\n"
             "  --start N       starting point 1 or 2 (required)\n"
-            "  --finite-diff   forward-difference Jacobian instead of the analytic one\n\n"
+            "  --finite-diff   forward-difference Jacobian instead of the analytic one\n"
+            "  --central-diff  central-difference Jacobian instead of the analytic one\n\n"
             "Exit status: 0 converged, 1 the solver did not converge (the CSV is still\n"
             "printed), 2 bad usage or a file that cannot be read (message with file:line).\n",
             TF_LRE_CAP);
@@ -52,16 +53,18 @@ static int run(int argc, char **argv)
 {
     static const struct option opts[] = {{"start", required_argument, NULL, 's'},
                                          {"finite-diff", no_argument, NULL, 'f'},
+                                         {"central-diff", no_argument, NULL, 'c'},
                                          {0}};
-    int start = 0, finite_diff = 0, c;
+    int start = 0, finite_diff = 0, central = 0, c;
     optind = 1;
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (c == 's' && (start = parse_start(optarg)) == 0) {
             tf_error("lm-strd: --start '%s' must be 1 or 2", optarg);
             return TF_EXIT_USAGE;
-        } else if (c == 'f') {
+        } else if (c == 'f' || c == 'c') {
             finite_diff = 1;
+            central |= c == 'c';
         } else if (c != 's') {
             tf_error("lm-strd: bad option '%s' (see tissuefit lm-strd --help)", argv[optind - 1]);
             return TF_EXIT_USAGE;
@@ -86,6 +89,7 @@ static int run(int argc, char **argv)
     }
     tf_fit_options o;
     tf_nist_options(&o, d.n_par);
+    o.lm.central_diff = central;
     tf_nist_score s;
     if (tf_nist_fit(&d, model, start, &o, finite_diff, &s, err, sizeof err) != 0) {
         tf_error("lm-strd: %s: %s", path, err);

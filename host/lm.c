@@ -75,6 +75,7 @@ void tf_lm_default_options(tf_lm_options *o, size_t n)
     o->gtol = 0;
     o->max_evals = 200 * (n + 1);
     o->factor = 1;
+    o->central_diff = 0;
 }
 
 typedef struct lm {
@@ -214,9 +215,9 @@ static tf_stop jacobian(lm *s)
             return TF_STOP_CALLBACK;
         }
     } else {
-        tf_fdjac fd = {s->pb->residual, s->pb->ctx, s->m,          s->n,
-                       s->pb->lower,    s->pb->upper, s->typ};
-        int rc = tf_fdjac_forward(&fd, s->p, s->r, s->jac, s->pt, s->rt, &s->evals);
+        tf_fdjac fd = {s->pb->residual, s->pb->ctx,   s->m,  s->n, s->pb->lower,
+                       s->pb->upper,    s->typ, s->opt->central_diff};
+        int rc = tf_fdjac_eval(&fd, s->p, s->r, s->jac, s->pt, s->rt, s->js, &s->evals);
         if (rc != 0) {
             return rc < 0 ? TF_STOP_CALLBACK : TF_STOP_BAD_JACOBIAN;
         }

@@ -52,7 +52,7 @@ typedef int (*tf_lm_jacobian_fn)(void *ctx, const double *p, double *jac);
 typedef struct tf_lm_problem {
     size_t m, n;                 /* residuals, parameters (1 <= n) */
     tf_lm_residual_fn residual;
-    tf_lm_jacobian_fn jacobian;  /* NULL: forward differences */
+    tf_lm_jacobian_fn jacobian;  /* NULL: differences (tf_lm_options.central_diff) */
     void *ctx;
     const double *lower, *upper; /* NULL or n bounds each (+-INFINITY allowed) */
 } tf_lm_problem;
@@ -63,9 +63,12 @@ typedef struct tf_lm_options {
     double gtol;      /* cosine between r and the columns of J */
     size_t max_evals; /* residual evaluations, finite differences included */
     double factor;    /* initial trust region: factor * ||D p0|| (or factor) */
+    int central_diff; /* without a Jacobian: central differences (2n evaluations,
+                         ~10 digits) instead of forward ones (n, ~8 digits) */
 } tf_lm_options;
 
-/* ftol = xtol = 1e-10, gtol = 0, max_evals = 200 (n + 1), factor = 1. */
+/* ftol = xtol = 1e-10, gtol = 0, max_evals = 200 (n + 1), factor = 1,
+ * forward differences. */
 void tf_lm_default_options(tf_lm_options *o, size_t n);
 
 typedef struct tf_lm_result {

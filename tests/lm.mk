@@ -27,6 +27,7 @@ lm-table: $(LM_T)/strd_table
 	@$<
 	@echo
 	@$< --finite-diff --summary
+	@$< --central-diff --summary
 	@for f in 0.01 0.1 10 100; do $< --factor $$f --summary; done
 
 $(LM_T)/bench_gsl: tests/lm/bench_gsl.c $(B)/native/libtissuefit-host.a | deps-bench

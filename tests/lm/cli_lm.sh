@@ -52,6 +52,8 @@ six_digits "Nelson" 4
 [ -s "$tmp/err" ] && bad "-q still wrote to stderr"
 expect 0 "Roszman1 start 1 (arctan)" -- "$tool" lm-strd "$dir/Roszman1.dat" --start=1
 six_digits "Roszman1" 5
+expect 0 "Thurber start 2, central differences" -- "$tool" lm-strd "$dir/Thurber.dat" --start 2 --central-diff
+six_digits "Thurber" 8
 expect 0 "BoxBOD start 1 (MINPACK's failure)" -- "$tool" lm-strd "$dir/BoxBOD.dat" --start 1
 six_digits "BoxBOD" 3
 

@@ -4,10 +4,11 @@
  * correct digits (LRE) of the parameters, the RSS and the standard errors,
  * as Markdown on stdout.
  *
- *   strd_table [--factor F] [--finite-diff] [--summary]
+ *   strd_table [--factor F] [--finite-diff | --central-diff] [--summary]
  *
  * --factor changes the initial trust region (the study in docs/lm.md),
  * --finite-diff uses forward differences instead of the analytic Jacobian,
+ * --central-diff central ones,
  * --summary prints only the closing lines.  Run from the repository root
  * (the data are read from ../shared/reference/nist-strd).
  */
@@ -70,16 +71,19 @@ static void one_run(const tf_nist *d, const tf_nist_model *model, int start,
 int main(int argc, char **argv)
 {
     double factor = 0;
-    int fd = 0, rows = 1;
+    int fd = 0, central = 0, rows = 1;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--factor") == 0 && i + 1 < argc) {
             factor = atof(argv[++i]);
         } else if (strcmp(argv[i], "--finite-diff") == 0) {
             fd = 1;
+        } else if (strcmp(argv[i], "--central-diff") == 0) {
+            fd = central = 1;
         } else if (strcmp(argv[i], "--summary") == 0) {
             rows = 0;
         } else {
-            fprintf(stderr, "usage: strd_table [--factor F] [--finite-diff] [--summary]\n");
+            fprintf(stderr, "usage: strd_table [--factor F] [--finite-diff | --central-diff] "
+                            "[--summary]\n");
             return 2;
         }
     }
@@ -106,6 +110,7 @@ int main(int argc, char **argv)
         tf_fit_options o;
         tf_nist_options(&o, d.n_par);
         o.lm.factor = factor;
+        o.lm.central_diff = central;
         for (int start = 1; start <= 2; ++start) {
             one_run(&d, model, start, &o, fd, rows, &t);
         }
@@ -115,7 +120,8 @@ int main(int argc, char **argv)
            "over all %zu parameters, mean of the per-run minimum %.2f, minimum %.2f.  Standard "
            "errors: minimum LRE %.2f.  Totals: %zu iterations, %zu f evaluations, %zu J "
            "evaluations.\n",
-           t.runs, fd ? "forward-difference" : "analytic", factor, t.below6,
+           t.runs, central ? "central-difference" : fd ? "forward-difference" : "analytic", factor,
+           t.below6,
            t.sum_lre / (double)t.n_lre, t.n_lre, t.sum_min / t.runs, t.min_lre, t.min_se,
            t.iterations, t.evals, t.jac_evals);
     return 0;
