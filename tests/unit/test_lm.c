@@ -69,6 +69,22 @@ static tf_lm_options options(double factor)
     return o;
 }
 
+/* Solves a one-parameter problem of m residuals from *b with a first trust
+ * region `factor` and ftol (0: the default). */
+static tf_lm_result solve1(size_t m, tf_lm_residual_fn r, tf_lm_jacobian_fn j, trace *t,
+                           double factor, double ftol, double *b)
+{
+    tf_lm_problem pb = {m, 1, r, j, t, NULL, NULL};
+    tf_lm_options o = options(factor);
+    if (ftol > 0) {
+        o.ftol = ftol;
+    }
+    tf_lm_result res = {0};
+    char err[128];
+    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    return res;
+}
+
 static void nan_trial_is_rejected(void **state)
 {
     (void)state;
@@ -76,11 +92,7 @@ static void nan_trial_is_rejected(void **state)
      * first trial be the full step): sqrt(-2) is NaN. */
     trace t = {.target = 0.25};
     double b = 4;
-    tf_lm_problem pb = {1, 1, sqrt_residual, sqrt_jacobian, &t, NULL, NULL};
-    tf_lm_options o = options(100);
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, &b, &res, err, sizeof err), 0);
+    tf_lm_result res = solve1(1, sqrt_residual, sqrt_jacobian, &t, 100, 0, &b);
     assert_true(t.nonfinite >= 1);
     assert_close(t.b[1], -2.0, 1e-12);
     assert_true(tf_stop_converged(res.stop));
@@ -103,23 +115,18 @@ static void nonfinite_wall_is_not_convergence(void **state)
     (void)state;
     trace t = {0};
     double b = 1;
-    tf_lm_problem pb = {1, 1, wall_residual, NULL, &t, NULL, NULL};
     /* A small first region (factor 0.01) so that the fit walks up to the
      * wall in many accepted steps, and a loose ftol: near the wall the
      * non-finite trials squeeze the trust region, every accepted step is
      * then small, with a small predicted and actual reduction and a perfect
      * ratio (r is linear).  Only the Gauss-Newton reduction (here 1: r is
      * parallel to J) shows that this is no minimum. */
-    tf_lm_options o = options(0.01);
-    o.ftol = 1e-3;
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, &b, &res, err, sizeof err), 0);
+    tf_lm_result res = solve1(1, wall_residual, NULL, &t, 0.01, 1e-3, &b);
     assert_int_equal(res.stop, TF_STOP_NONFINITE);
     assert_false(tf_stop_converged(res.stop));
     assert_true(t.nonfinite >= 2 && res.iterations >= 5);
     assert_true(b >= 0 && b < 1e-6); /* the best finite point, at the edge */
-    assert_true(res.evals < o.max_evals);
+    assert_true(res.evals < options(1).max_evals); /* stopped by itself */
 }
 
 static void nonfinite_start_is_reported(void **state)
@@ -127,11 +134,7 @@ static void nonfinite_start_is_reported(void **state)
     (void)state;
     trace t = {0};
     double b = -1;
-    tf_lm_problem pb = {1, 1, wall_residual, NULL, &t, NULL, NULL};
-    tf_lm_options o = options(1);
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, &b, &res, err, sizeof err), 0);
+    tf_lm_result res = solve1(1, wall_residual, NULL, &t, 1, 0, &b);
     assert_int_equal(res.stop, TF_STOP_BAD_START);
     assert_true(isnan(res.rss));
     assert_int_equal(res.evals, 1);
@@ -180,11 +183,7 @@ static void step_across_valley_is_not_convergence(void **state)
     const double b0 = mirror_point();
     trace t = {0};
     double b = b0;
-    tf_lm_problem pb = {1, 1, sin_residual, sin_jacobian, &t, NULL, NULL};
-    tf_lm_options o = options(100);
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, &b, &res, err, sizeof err), 0);
+    tf_lm_result res = solve1(1, sin_residual, sin_jacobian, &t, 100, 0, &b);
     /* The set-up: the first trial is the mirror point, with no gain. */
     assert_close(t.b[1], -b0, 1e-12);
     assert_true(fabs(t.cost[1] - t.cost[0]) <= 1e-14);
@@ -204,12 +203,7 @@ static void flat_valley_needs_a_sane_ratio(void **state)
     const double b0 = mirror_point();
     trace t = {.k = 1e4};
     double b = b0;
-    tf_lm_problem pb = {2, 1, sin_residual, sin_jacobian, &t, NULL, NULL};
-    tf_lm_options o = options(100);
-    o.ftol = 1e-6;
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, &b, &res, err, sizeof err), 0);
+    tf_lm_result res = solve1(2, sin_residual, sin_jacobian, &t, 100, 1e-6, &b);
     assert_close(t.b[1], -b0, 1e-12);
     assert_true(fabs(t.cost[1] - t.cost[0]) <= 1e-6);
     assert_int_equal(res.stop, TF_STOP_REDUCTION);
@@ -232,17 +226,27 @@ static int rosenbrock(void *ctx, const double *b, double *r)
     return 0;
 }
 
+/* Rosenbrock from (-1.2, 1) by forward differences, with a budget. */
+static tf_lm_result solve_rosenbrock(trace *t, size_t max_evals, double *b)
+{
+    tf_lm_problem pb = {2, 2, rosenbrock, NULL, t, NULL, NULL};
+    tf_lm_options o;
+    tf_lm_default_options(&o, 2);
+    o.max_evals = max_evals;
+    tf_lm_result res = {0};
+    char err[128];
+    b[0] = -1.2;
+    b[1] = 1;
+    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    return res;
+}
+
 static void rosenbrock_converges(void **state)
 {
     (void)state;
     trace t = {0};
-    double b[2] = {-1.2, 1};
-    tf_lm_problem pb = {2, 2, rosenbrock, NULL, &t, NULL, NULL};
-    tf_lm_options o;
-    tf_lm_default_options(&o, 2);
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    double b[2];
+    tf_lm_result res = solve_rosenbrock(&t, 1000, b);
     assert_true(tf_stop_converged(res.stop));
     assert_close(b[0], 1, 1e-9);
     assert_close(b[1], 1, 1e-9);
@@ -253,14 +257,8 @@ static void evaluation_budget_is_kept(void **state)
 {
     (void)state;
     trace t = {0};
-    double b[2] = {-1.2, 1};
-    tf_lm_problem pb = {2, 2, rosenbrock, NULL, &t, NULL, NULL};
-    tf_lm_options o;
-    tf_lm_default_options(&o, 2);
-    o.max_evals = 7;
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    double b[2];
+    tf_lm_result res = solve_rosenbrock(&t, 7, b);
     assert_int_equal(res.stop, TF_STOP_MAX_EVALS);
     assert_false(tf_stop_converged(res.stop));
     /* The budget is checked after each trial; one Jacobian by differences
@@ -272,13 +270,8 @@ static void failing_callback_stops_the_fit(void **state)
 {
     (void)state;
     trace t = {.fail_after = 4};
-    double b[2] = {-1.2, 1};
-    tf_lm_problem pb = {2, 2, rosenbrock, NULL, &t, NULL, NULL};
-    tf_lm_options o;
-    tf_lm_default_options(&o, 2);
-    tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    double b[2];
+    tf_lm_result res = solve_rosenbrock(&t, 1000, b);
     assert_int_equal(res.stop, TF_STOP_CALLBACK);
     assert_true(isfinite(b[0]) && isfinite(b[1]));
 }

@@ -116,6 +116,29 @@ static void all_54_runs_reach_six_digits(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* Calls fn for each of the 27 problems, loaded. */
+static void each_problem(void (*fn)(const char *name, const tf_nist *d, const tf_nist_model *m))
+{
+    const char *const *problems = suite();
+    for (int k = 0; k < 27; ++k) {
+        tf_nist d;
+        const tf_nist_model *m;
+        load(problems[k], &d, &m);
+        fn(problems[k], &d, m);
+        tf_nist_free(&d);
+    }
+}
+
+static void check_resolution(const char *name, const tf_nist *d, const tf_nist_model *m)
+{
+    double rel = tf_nist_rss_resolution(d, m) / d->certified_rss;
+    if (strcmp(name, "Lanczos1") == 0) {
+        assert_true(rel > 1e-3);
+    } else {
+        assert_true(rel < 1e-7);
+    }
+}
+
 /* The resolution bound is what lets Lanczos1's RSS through, and only it. */
 static void rss_resolution_matters_only_at_the_rounding_floor(void **state)
 {
@@ -123,19 +146,7 @@ static void rss_resolution_matters_only_at_the_rounding_floor(void **state)
     if (!have_data()) {
         skip();
     }
-    const char *const *problems = suite();
-    for (int k = 0; k < 27; ++k) {
-        tf_nist d;
-        const tf_nist_model *model;
-        load(problems[k], &d, &model);
-        double rel = tf_nist_rss_resolution(&d, model) / d.certified_rss;
-        if (strcmp(problems[k], "Lanczos1") == 0) {
-            assert_true(rel > 1e-3);
-        } else {
-            assert_true(rel < 1e-7);
-        }
-        tf_nist_free(&d);
-    }
+    each_problem(check_resolution);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -152,32 +163,32 @@ static double central(const tf_nist_model *m, const double *b, const double *x, 
     return (m->f(bp, x, NULL) - m->f(bm, x, NULL)) / (bp[j] - bm[j]);
 }
 
+/* At both starts and the certified values, for every observation. */
+static void check_derivatives(const char *name, const tf_nist *d, const tf_nist_model *m)
+{
+    (void)name;
+    const double *points[3] = {d->start[0], d->start[1], d->certified};
+    for (int p = 0; p < 3; ++p) {
+        for (size_t i = 0; i < d->n_obs; ++i) {
+            const double *x = d->x + i * d->n_x;
+            double g[TF_NIST_MAX_PAR], f = m->f(points[p], x, g);
+            assert_close(f, m->f(points[p], x, NULL), 0);
+            for (size_t j = 0; j < d->n_par; ++j) {
+                double bj = points[p][j] != 0 ? fabs(points[p][j]) : 1.0;
+                double tol = 1e-6 * (fabs(g[j]) + fabs(f) / bj) + 1e-300;
+                assert_close(g[j], central(m, points[p], x, j), tol);
+            }
+        }
+    }
+}
+
 static void model_derivatives_match_differences(void **state)
 {
     (void)state;
     if (!have_data()) {
         skip();
     }
-    const char *const *problems = suite();
-    for (int k = 0; k < 27; ++k) {
-        tf_nist d;
-        const tf_nist_model *m;
-        load(problems[k], &d, &m);
-        const double *points[3] = {d.start[0], d.start[1], d.certified};
-        for (int p = 0; p < 3; ++p) {
-            for (size_t i = 0; i < d.n_obs; ++i) {
-                const double *x = d.x + i * d.n_x;
-                double g[TF_NIST_MAX_PAR], f = m->f(points[p], x, g);
-                assert_close(f, m->f(points[p], x, NULL), 0);
-                for (size_t j = 0; j < d.n_par; ++j) {
-                    double bj = points[p][j] != 0 ? fabs(points[p][j]) : 1.0;
-                    double tol = 1e-6 * (fabs(g[j]) + fabs(f) / bj) + 1e-300;
-                    assert_close(g[j], central(m, points[p], x, j), tol);
-                }
-            }
-        }
-        tf_nist_free(&d);
-    }
+    each_problem(check_derivatives);
 }
 
 /* ------------------------------------------------------------------------ */
