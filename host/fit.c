@@ -240,6 +240,20 @@ static int nonlinear_statistics(const double *jac, const signed char *active, tf
     return rc;
 }
 
+/* ||W^1/2 y||, the size of the data the residuals are differences from. */
+static double weighted_norm(const double *y, const double *sqrt_w, size_t m)
+{
+    double s = 0, scale = 0;
+    for (size_t i = 0; i < m; ++i) {
+        scale = fmax(scale, fabs(sqrt_w != NULL ? sqrt_w[i] * y[i] : y[i]));
+    }
+    for (size_t i = 0; scale > 0 && i < m; ++i) {
+        double v = (sqrt_w != NULL ? sqrt_w[i] * y[i] : y[i]) / scale;
+        s += v * v;
+    }
+    return scale * sqrt(s);
+}
+
 static int fit_nonlinear(const tf_fit_model *model, const tf_fit_data *data,
                          const tf_fit_options *o, tf_fit_result *res, char *err, size_t errlen)
 {
@@ -272,7 +286,7 @@ static int fit_nonlinear(const tf_fit_model *model, const tf_fit_data *data,
         c.sqrt_w[i] = sqrt(data->weight[i]);
     }
     tf_lm_problem pb = {m, n, nl_residual, model->jacobian != NULL ? nl_jacobian : NULL, &c,
-                        o->lower, o->upper};
+                        o->lower, o->upper, weighted_norm(data->y, c.sqrt_w, m)};
     tf_lm_result lr = {.jac = jac, .active = active};
     memcpy(res->par, o->start, n * sizeof *res->par);
     int rc = tf_lm_solve(&pb, &o->lm, res->par, &lr, err, errlen);

@@ -36,13 +36,11 @@
 #define ACCEPT_RATIO 1e-4 /* Moré: accept any step that gains this fraction */
 #define SANE_LOW 0.25     /* reduction-ratio window in which the linear model */
 #define SANE_HIGH 2.0     /* is trusted for the relative-reduction stop */
-/* Rounding floor of the relative reduction 1 - (|r_t| / |r|)^2: each norm
- * carries up to m rounding errors (a sum of m squares), so below 4 m eps an
- * actual reduction says nothing.  There the step the linear model chose is
- * taken, since the sum of squares cannot refute it, and the region halves
- * so that the iteration still ends; Gauss-Newton steps that shrink by at
- * least half per step, as they do near a minimum, still fit. */
-#define NOISE_FACTOR 4.0
+/* Rounding floor of the relative reduction 1 - (|r_t| / |r|)^2 (see
+ * noise_floor()).  Below it the step the linear model chose is taken, since
+ * the sum of squares cannot refute it, and the region halves so that the
+ * iteration still ends; Gauss-Newton steps that shrink by at least half per
+ * step, as they do near a minimum, still fit. */
 #define NOISE_SHRINK 0.5
 
 const char *tf_stop_name(tf_stop s)
@@ -414,6 +412,20 @@ static tf_stop stop_test(const lm *s, double actred, double prered, double ratio
     return TF_STOP_DIRECT;
 }
 
+/* The relative reduction of ||r||^2 below which a change is rounding:
+ * each norm carries up to m rounding errors (a sum of m squares), 4 m eps
+ * in the ratio of two; and each residual r_i = f_i - y_i carries about
+ * eps |y_i| from the subtraction and as much from evaluating f_i, which
+ * moves ||r||^2 by up to 2 (2 eps ||y||) ||r||: relative 4 eps ||y|| / ||r||.
+ * The second dominates for small residuals (Lanczos3: 2e-11 against
+ * 2e-14). */
+static double noise_floor(const lm *s)
+{
+    double sum = 4 * (double)s->m * DBL_EPSILON;
+    double diff = 4 * DBL_EPSILON * s->pb->data_norm / s->rnorm;
+    return fmax(sum, diff);
+}
+
 /* One trial from the current factor.  Returns a stop reason or DIRECT;
  * *accepted tells whether the point moved. */
 static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
@@ -442,7 +454,7 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
     double prered, dirder;
     predicted(s, projected, &prered, &dirder);
     double ratio = prered != 0 ? actred / prered : 0;
-    double noise = NOISE_FACTOR * (double)s->m * DBL_EPSILON;
+    double noise = noise_floor(s);
     int unresolved = finite && fabs(actred) <= noise && prered <= noise;
     update_radius(s, ratio, actred, dirder, rtnorm);
     if (unresolved) {

@@ -55,6 +55,9 @@ typedef struct tf_lm_problem {
     tf_lm_jacobian_fn jacobian;  /* NULL: differences (tf_lm_options.central_diff) */
     void *ctx;
     const double *lower, *upper; /* NULL or n bounds each (+-INFINITY allowed) */
+    double data_norm;            /* ||y|| when r = f(p) - y (0: unknown): the
+                                    rounding of that difference sets the floor
+                                    below which ||r||^2 cannot resolve a step */
 } tf_lm_problem;
 
 typedef struct tf_lm_options {

@@ -74,7 +74,7 @@ static tf_lm_options options(double factor)
 static tf_lm_result solve1(size_t m, tf_lm_residual_fn r, tf_lm_jacobian_fn j, trace *t,
                            double factor, double ftol, double *b)
 {
-    tf_lm_problem pb = {m, 1, r, j, t, NULL, NULL};
+    tf_lm_problem pb = {m, 1, r, j, t, NULL, NULL, 0};
     tf_lm_options o = options(factor);
     if (ftol > 0) {
         o.ftol = ftol;
@@ -229,7 +229,7 @@ static int rosenbrock(void *ctx, const double *b, double *r)
 /* Rosenbrock from (-1.2, 1) by forward differences, with a budget. */
 static tf_lm_result solve_rosenbrock(trace *t, size_t max_evals, double *b)
 {
-    tf_lm_problem pb = {2, 2, rosenbrock, NULL, t, NULL, NULL};
+    tf_lm_problem pb = {2, 2, rosenbrock, NULL, t, NULL, NULL, 0};
     tf_lm_options o;
     tf_lm_default_options(&o, 2);
     o.max_evals = max_evals;
@@ -281,7 +281,7 @@ static void bad_problems_are_refused(void **state)
     (void)state;
     trace t = {0};
     double b[2] = {0, 0}, lo[2] = {0, 1}, hi[2] = {1, 0}, nan_lo[2] = {NAN, 0};
-    tf_lm_problem pb = {2, 2, rosenbrock, NULL, &t, lo, hi};
+    tf_lm_problem pb = {2, 2, rosenbrock, NULL, &t, lo, hi, 0};
     tf_lm_options o;
     tf_lm_default_options(&o, 2);
     tf_lm_result res = {0};
@@ -483,7 +483,7 @@ static void large_residual_fit_ends_at_the_gauss_newton_point(void **state)
         d.y[i] = 3 * exp(-0.1 * i) + 1 + tf_rng_range(&g, -0.5, 0.5);
     }
     double p[3] = {1, 0.5, 0}, jac[3 * NL], r[NL], step[3];
-    tf_lm_problem pb = {NL, 3, noisy_residual, noisy_jacobian, &d, NULL, NULL};
+    tf_lm_problem pb = {NL, 3, noisy_residual, noisy_jacobian, &d, NULL, NULL, 0};
     tf_lm_options o;
     tf_lm_default_options(&o, 3);
     o.ftol = o.xtol = 1e-15;
@@ -500,6 +500,96 @@ static void large_residual_fit_ends_at_the_gauss_newton_point(void **state)
     for (int j = 0; j < 3; ++j) {
         assert_close(step[j], 0, 1e-12 * fabs(p[j]));
     }
+}
+
+/* Small residuals on an ill-conditioned model, Lanczos's three decaying
+ * exponentials (rates 1, 3, 5 on x in [0, 1.15]) with data rounded to 4
+ * decimals: residuals ~3e-5 on data of size 2.5.  The model adds a
+ * deterministic jitter of 8 eps |y_i| (a function of the bits of p), as the
+ * rounding of a model evaluation would, so that ||r||^2 is only known to
+ * ~1e-10 relative: far above the rounding of the sum itself (5e-15), and
+ * reached while the parameters are still ~1e-7 from the Gauss-Newton point.
+ * tf_fit passes ||y|| to the solver, which then knows this floor and still
+ * ends at the Gauss-Newton point. */
+#define NZ 24
+typedef struct lanczos {
+    double x[NZ], y[NZ];
+} lanczos;
+
+static double jitter(const double *p, int i)
+{
+    uint64_t h = (uint64_t)(i + 1) * 0x9e3779b97f4a7c15ull;
+    for (int j = 0; j < 6; ++j) {
+        uint64_t bits;
+        memcpy(&bits, &p[j], sizeof bits);
+        h = (h ^ bits) * 0xbf58476d1ce4e5b9ull;
+        h ^= h >> 31;
+    }
+    tf_rng g = {h};
+    return tf_rng_range(&g, -1, 1);
+}
+
+static double lanczos_model(const double *p, double x)
+{
+    return p[0] * exp(-p[1] * x) + p[2] * exp(-p[3] * x) + p[4] * exp(-p[5] * x);
+}
+
+static int lanczos_value(void *ctx, const double *p, double *f)
+{
+    const lanczos *d = ctx;
+    for (int i = 0; i < NZ; ++i) {
+        f[i] = lanczos_model(p, d->x[i]) + 8 * DBL_EPSILON * d->y[i] * jitter(p, i);
+    }
+    return 0;
+}
+
+static int lanczos_jacobian(void *ctx, const double *p, double *j)
+{
+    const lanczos *d = ctx;
+    for (int i = 0; i < NZ; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            double e = exp(-p[2 * k + 1] * d->x[i]);
+            j[i + 2 * k * NZ] = e;
+            j[i + (2 * k + 1) * NZ] = -p[2 * k] * d->x[i] * e;
+        }
+    }
+    return 0;
+}
+
+static void small_residual_fit_ends_at_the_gauss_newton_point(void **state)
+{
+    (void)state;
+    lanczos d;
+    const double truth[6] = {0.0951, 1, 0.8607, 3, 1.5576, 5};
+    for (int i = 0; i < NZ; ++i) {
+        d.x[i] = 0.05 * i;
+        d.y[i] = round(1e4 * lanczos_model(truth, d.x[i])) * 1e-4;
+    }
+    const double start[6] = {1.2, 0.3, 5.6, 5.5, 6.5, 7.6};
+    tf_fit_model model = {6, NULL, lanczos_value, lanczos_jacobian, &d};
+    tf_fit_data data = {NZ, 1, d.y, 0, NULL};
+    tf_fit_options o;
+    tf_fit_default_options(&o, 6);
+    o.start = start;
+    o.lm.ftol = o.lm.xtol = 1e-15;
+    tf_fit_result res;
+    char err[128];
+    assert_int_equal(tf_fit(&model, &data, &o, &res, err, sizeof err), 0);
+    assert_true(tf_stop_converged(res.stop));
+    assert_true(res.rss[0] < 1e-7); /* the residuals are small */
+    double jac[6 * NZ], r[NZ], step[6];
+    for (int i = 0; i < NZ; ++i) {
+        r[i] = lanczos_model(res.par, d.x[i]) - d.y[i]; /* without the jitter */
+    }
+    lanczos_jacobian(&d, res.par, jac);
+    tf_lsq *f = tf_lsq_factor(NZ, 6, jac, NZ, NULL, 0, err, sizeof err);
+    assert_non_null(f);
+    assert_int_equal(tf_lsq_solve(f, 1, r, NZ, step, 6, NULL, err, sizeof err), 0);
+    tf_lsq_free(f);
+    for (int j = 0; j < 6; ++j) {
+        assert_close(step[j], 0, 1e-10 * fabs(res.par[j]));
+    }
+    tf_fit_result_free(&res);
 }
 
 /* Difference Jacobians against the analytic one: forward differences to
@@ -524,7 +614,7 @@ static double difference_error(int central)
     decay d = {0};
     decay_data(&d);
     double p[2] = {p_star[0], p_star[1]}, fd[2 * NB], an[2 * NB], worst = 0;
-    tf_lm_problem pb = {NB, 2, decay_offset, NULL, &d, NULL, NULL};
+    tf_lm_problem pb = {NB, 2, decay_offset, NULL, &d, NULL, NULL, 0};
     tf_lm_options o;
     tf_lm_default_options(&o, 2);
     o.central_diff = central;
@@ -566,6 +656,7 @@ int main(void)
         cmocka_unit_test(inactive_bounds_change_nothing),
         cmocka_unit_test(start_outside_the_box_is_clamped),
         cmocka_unit_test(large_residual_fit_ends_at_the_gauss_newton_point),
+        cmocka_unit_test(small_residual_fit_ends_at_the_gauss_newton_point),
         cmocka_unit_test(finite_differences_match_the_jacobian),
     };
     return cmocka_run_group_tests_name("lm", tests, NULL, NULL);
