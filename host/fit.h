@@ -41,7 +41,8 @@ typedef struct tf_fit_data {
 typedef struct tf_fit_options {
     const double *start;         /* nonlinear: n_par starting values (required) */
     const double *lower, *upper; /* nonlinear: NULL or n_par bounds (+-INFINITY ok) */
-    double rank_tol;             /* relative, on the column-scaled R diagonal */
+    double rank_tol;             /* relative, on the column-scaled R diagonal;
+                                    at least 1e-6 with a differenced Jacobian */
     tf_lm_options lm;            /* nonlinear: tolerances and budget */
 } tf_fit_options;
 

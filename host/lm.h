@@ -11,7 +11,9 @@
  *
  * Guards: a trial point with any non-finite residual is rejected and the
  * trust region shrinks; the relative-reduction stop needs a reduction ratio
- * that shows the linear model was right (see tf_stop).
+ * that shows the linear model was right and a Gauss–Newton reduction that
+ * shows a stationary point (see tf_stop); below the rounding floor of
+ * ||r||^2 the model's step is taken and the region halves.
  */
 #ifndef TF_LM_H
 #define TF_LM_H
@@ -22,15 +24,18 @@
 typedef enum tf_stop {
     TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_fit) */
     TF_STOP_REDUCTION,      /* actual and predicted relative reduction <= ftol,
-                               with a sane ratio (0.25..2) between them */
+                               with a sane ratio (0.25..2) between them, and
+                               the Gauss–Newton step's predicted one <= ftol */
     TF_STOP_STEP,           /* trust region <= xtol * ||D p|| */
-    TF_STOP_GRADIENT,       /* cosine between r and every column of J <= gtol */
+    TF_STOP_GRADIENT,       /* cosine between r and every free column of J
+                               <= gtol, or every parameter held by a bound */
     TF_STOP_ZERO_RESIDUAL,  /* r = 0 exactly */
     TF_STOP_PRECISION,      /* no change double precision can resolve: the
                                tolerances asked more than the arithmetic gives */
     TF_STOP_MAX_EVALS,      /* evaluation budget spent (not converged) */
-    TF_STOP_NONFINITE,      /* every step tried from the best point so far gave
-                               a non-finite residual (not converged) */
+    TF_STOP_NONFINITE,      /* the trust region collapsed after non-finite
+                               trials: the edge of the model's domain, not a
+                               minimum (not converged) */
     TF_STOP_BAD_START,      /* non-finite residual at the starting point */
     TF_STOP_BAD_JACOBIAN,   /* non-finite Jacobian entry (analytic or differenced) */
     TF_STOP_CALLBACK,       /* a callback returned non-zero */

@@ -25,9 +25,26 @@
 
 #define MAX_SOLVES 10 /* Moré's cap; the bracket makes more unnecessary */
 
+/* Workspace: the augmented 2n x n matrix, its n Householder scalars, the
+ * 2n right-hand side, then three vectors of n (scratch, w, z). */
 size_t tf_lmstep_work_size(size_t n)
 {
     return 2 * n * n + 6 * n;
+}
+
+static double *scratch(const tf_lmstep *s)
+{
+    return s->work + 2 * s->n * s->n + 3 * s->n;
+}
+
+static double *w_vector(const tf_lmstep *s)
+{
+    return scratch(s) + s->n;
+}
+
+static double *z_vector(const tf_lmstep *s)
+{
+    return scratch(s) + 2 * s->n;
 }
 
 static double norm2(const double *v, size_t n)
@@ -38,7 +55,7 @@ static double norm2(const double *v, size_t n)
 /* ||D p|| for p in parameter order. */
 static double scaled_norm(const tf_lmstep *s, const double *p)
 {
-    double *dp = s->work + tf_lmstep_work_size(s->n) - 3 * s->n;
+    double *dp = scratch(s);
     for (size_t j = 0; j < s->n; ++j) {
         dp[j] = s->diag[j] * p[j];
     }
@@ -95,13 +112,15 @@ static int damped(const tf_lmstep *s, double lambda, double *z)
     return info;
 }
 
-/* ||T^-T P^T D (D p) / ||D p|| ||^2 for the triangle T (R or S): the
- * derivative of phi is minus this times ||D p|| / ... (Moré eq. 5.6),
- * which makes the Newton correction (phi / delta) / this. */
+/* ||T^-T P^T D (D p) / ||D p|| ||^2 for the triangle T (R at lambda = 0,
+ * S otherwise), with T^T T = P^T (J^T J + lambda D^2) P: phi'(lambda) is
+ * -||D p|| times this, and Moré's correction (phi / delta) / this is the
+ * Newton step on 1/||D p|| - 1/delta, which is nearly linear in lambda
+ * (Moré 1978, §5). */
 static double newton_denominator(const tf_lmstep *s, const double *t, size_t ldt,
                                  const double *step, double dxnorm, int *info)
 {
-    double *w = s->work + tf_lmstep_work_size(s->n) - 2 * s->n;
+    double *w = w_vector(s);
     for (size_t j = 0; j < s->n; ++j) {
         size_t p = (size_t)s->piv[j] - 1;
         w[j] = s->diag[p] * (s->diag[p] * step[p]) / dxnorm;
@@ -115,7 +134,7 @@ static double newton_denominator(const tf_lmstep *s, const double *t, size_t ldt
 /* ||D^-1 J^T r|| = ||D^-1 P R^T (Q^T r)||: the scaled gradient. */
 static double scaled_gradient(const tf_lmstep *s)
 {
-    double *g = s->work + tf_lmstep_work_size(s->n) - 3 * s->n;
+    double *g = scratch(s);
     for (size_t j = 0; j < s->n; ++j) {
         double sum = 0;
         for (size_t i = 0; i <= j && i < s->k; ++i) {
@@ -129,7 +148,7 @@ static double scaled_gradient(const tf_lmstep *s)
 double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *step)
 {
     const size_t n = s->n;
-    double *z = s->work + tf_lmstep_work_size(n) - n;
+    double *z = z_vector(s);
     int info = gauss_newton(s, z);
     if (info != 0) {
         return -1;

@@ -137,10 +137,13 @@ static int number(const char *tok, double *v)
 }
 
 /* Splits line i into at most max whitespace-separated tokens (copied to
- * buf); returns the count, or max + 1 when there are more. */
+ * buf); returns the count, or max + 1 when there are more or the line does
+ * not fit in buf (a cut line must not parse as a shorter number). */
 static size_t tokens(const reader *rd, size_t i, char *buf, size_t buflen, char **tok, size_t max)
 {
-    snprintf(buf, buflen, "%s", rd->line[i]);
+    if ((size_t)snprintf(buf, buflen, "%s", rd->line[i]) >= buflen) {
+        return max + 1;
+    }
     size_t n = 0;
     for (char *save = NULL, *t = strtok_r(buf, " \t", &save); t != NULL;
          t = strtok_r(NULL, " \t", &save)) {
