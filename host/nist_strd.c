@@ -253,7 +253,7 @@ static int read_parameters(reader *rd, tf_nist *d, size_t n_par)
                     d->n_par, n_par, TF_NIST_MAX_PAR);
     }
     for (size_t j = 0; j < n_par; ++j) {
-        char buf[512], *t[8], want[16];
+        char buf[512], *t[8], want[32];
         size_t nt = tokens(rd, a + j, buf, sizeof buf, t, 7);
         snprintf(want, sizeof want, "b%zu", j + 1);
         double v[4];
