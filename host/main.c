@@ -12,6 +12,7 @@
 
 static const tf_command *const commands[] = {
     &tf_cmd_demo_model,
+    &tf_cmd_lm_strd,
 };
 #define N_COMMANDS (sizeof commands / sizeof commands[0])
 

@@ -1,0 +1,40 @@
+# lm.mk — Levenberg–Marquardt and the fitting interface (issue 4).
+#
+#   check-lm   the `tissuefit lm-strd` command line (good, CRLF and LF files,
+#              missing and damaged files, bad --start); the 54 NIST StRD runs
+#              themselves are the unit test tests/unit/test_lm_nist.c
+#   bench-lm   the 54 runs with tissuefit and with GSL multifit_nlinear, side
+#              by side (GSL is needed only here: DEBS_BENCH)
+#   lm-table   the NIST table and studies of docs/lm.md, as Markdown
+
+LM_T := $(B)/tests/lm
+DEBS_BENCH += libgsl-dev
+
+.PHONY: check-lm bench-lm lm-table
+CHECKS += check-lm
+BENCHES += bench-lm
+
+check-lm: $(B)/bin/tissuefit
+	@echo "== lm-strd command line =="
+	@tests/lm/cli_lm.sh $(B)/bin/tissuefit
+
+$(LM_T)/strd_table: tests/lm/strd_table.c $(B)/native/libtissuefit-host.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
+
+lm-table: $(LM_T)/strd_table
+	@$<
+	@echo
+	@$< --finite-diff --summary
+	@$< --central-diff --summary
+	@for f in 0.01 0.1 10 100; do $< --factor $$f --summary; done
+
+$(LM_T)/bench_gsl: tests/lm/bench_gsl.c $(B)/native/libtissuefit-host.a | deps-bench
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
+
+bench-lm: $(LM_T)/bench_gsl
+	@echo "== LM: tissuefit against GSL multifit_nlinear, NIST StRD (54 runs) =="
+	@$<
