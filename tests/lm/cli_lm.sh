@@ -9,23 +9,7 @@ if [ ! -d "$dir" ]; then
     echo "skipped: $dir is absent (the NIST StRD files live beside the repository)"
     exit 0
 fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
-
-# expect STATUS DESCRIPTION -- COMMAND...
-expect() {
-    want=$1 what=$2
-    shift 3
-    "$@" >"$tmp/out" 2>"$tmp/err"
-    got=$?
-    if [ "$got" != "$want" ]; then
-        bad "$what: exit $got, expected $want"; cat "$tmp/err"
-    else
-        echo "ok:   $what (exit $got)"
-    fi
-}
+. "$(dirname "$0")/../cli/expect.sh"
 # Every lre column of the CSV in $tmp/out is at least 6, and there are N rows.
 six_digits() {
     rows=$(awk -F, 'NR > 1' "$tmp/out" | wc -l)
@@ -77,5 +61,4 @@ expect 2 "truncated file" -- "$tool" lm-strd "$tmp/short.dat" --start 2
 grep -q "short.dat:7: bad line range" "$tmp/err" || bad "truncation not named: $(cat "$tmp/err")"
 [ -s "$tmp/out" ] && bad "a failed read printed CSV"
 
-echo "lm-strd: $fails failure(s)"
-[ "$fails" = 0 ]
+finish lm-strd
