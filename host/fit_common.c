@@ -1,0 +1,84 @@
+/*
+ * fit_common.c — see fit_common.h.
+ */
+#include "fit_common.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "basis.h"
+#include "lsq.h"
+
+/* Relative rank tolerance on the column-scaled R diagonal: terms the data
+ * cannot separate from the others get coefficient 0 (lsq.h). */
+#define FIT_RANK_TOL 1e-10
+
+void tf_fit_normalise(const tf_model *m, const double x[3], double g[3])
+{
+    const float *x0 = m->coef, *w = m->coef + 3;
+    double d[3];
+    for (int i = 0; i < 3; ++i) {
+        d[i] = x[i] - (double)x0[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+        g[i] = (double)w[3 * i] * d[0] + (double)w[3 * i + 1] * d[1] + (double)w[3 * i + 2] * d[2];
+    }
+}
+
+double *tf_fit_design(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n,
+                      uint32_t p)
+{
+    uint32_t t = tf_terms(p);
+    double *a = malloc(n * t * sizeof *a);
+    double *phi = malloc(t * sizeof *phi);
+    if (a == NULL || phi == NULL) {
+        free(a);
+        free(phi);
+        return NULL;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        double g[3];
+        tf_fit_normalise(m, x[tf_fit_case(idx, i)], g);
+        tf_basis(p, g, phi);
+        for (uint32_t k = 0; k < t; ++k) {
+            a[i + k * n] = phi[k];
+        }
+    }
+    free(phi);
+    return a;
+}
+
+double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
+{
+    size_t rows = 3 * (size_t)d->n_out;
+    double *y = malloc(m * rows * sizeof *y);
+    if (y == NULL) {
+        return NULL;
+    }
+    for (size_t i = 0; i < m; ++i) {
+        const double *col = d->u + rows * tf_fit_case(idx, i);
+        for (size_t o = 0; o < rows; ++o) {
+            y[i + o * m] = col[o];
+        }
+    }
+    return y;
+}
+
+int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
+               char *err, size_t errlen)
+{
+    tf_lsq *f = tf_lsq_factor(m, n, a, m, NULL, FIT_RANK_TOL, err, errlen);
+    if (f == NULL) {
+        return -1;
+    }
+    int rc = tf_lsq_solve(f, k, y, m, x, n, NULL, err, errlen);
+    tf_lsq_free(f);
+    return rc;
+}
+
+void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d)
+{
+    memcpy(model->node_ids, d->node_ids, d->n_out * sizeof *d->node_ids);
+    tf_model_set_ball(model, d->centre, d->radius);
+}

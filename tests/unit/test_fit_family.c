@@ -1,0 +1,169 @@
+/*
+ * test_fit_family.c — the family fitters on synthetic cases with known
+ * structure: the right order/rank reproduces the data to float precision,
+ * a too-small one does not, cross-validation tells them apart, and the
+ * contact inverse inverts a linear and a nonlinear tissue law.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "fit_family.h"
+#include "loadcases.h"
+#include "rng.h"
+
+#define NC 120
+#define NOUT 12
+
+static double force[NC][3], contact[NC][3], rest[NOUT][3], u[NC][3 * NOUT];
+static uint32_t ids[NOUT];
+static const double centre[3] = {0.1, -0.2, 0.0}, radius = 2.0;
+
+/* u = sum_k mode_k(o) * a_k(g), with three modes and quadratic amplitudes:
+ * rank 3, total degree 2 in the force. */
+static void make_data(void)
+{
+    double ho[1][3];
+    tf_loadcases(centre, radius, NC, 1, 3, force, ho);
+    tf_rng r = {12};
+    double mode[3][3 * NOUT];
+    for (int k = 0; k < 3; ++k) {
+        for (int o = 0; o < 3 * NOUT; ++o) {
+            mode[k][o] = tf_rng_range(&r, -1, 1);
+        }
+    }
+    for (int j = 0; j < NOUT; ++j) {
+        ids[j] = (uint32_t)(100 + j);
+        rest[j][0] = j;
+    }
+    for (int i = 0; i < NC; ++i) {
+        double g[3];
+        for (int k = 0; k < 3; ++k) {
+            g[k] = (force[i][k] - centre[k]) / radius;
+        }
+        double a[3] = {2.0 * g[0] + 0.5 * g[1] * g[2], -1.5 * g[1] + 0.3 * g[0] * g[0],
+                       0.7 * g[2] - 0.2 + 0.4 * g[1] * g[1]};
+        for (int o = 0; o < 3 * NOUT; ++o) {
+            u[i][o] = mode[0][o] * a[0] + mode[1][o] * a[1] + mode[2][o] * a[2];
+        }
+        /* contact site: a stiffening law, delta = C f + 0.05 |f|^2 e_z */
+        double f2 = force[i][0] * force[i][0] + force[i][1] * force[i][1] + force[i][2] * force[i][2];
+        contact[i][0] = 2.8 * force[i][0] + 0.1 * force[i][1];
+        contact[i][1] = 0.1 * force[i][0] + 2.8 * force[i][1];
+        contact[i][2] = 11.0 * force[i][2] + 0.05 * f2;
+    }
+}
+
+static tf_fitdata data(void)
+{
+    tf_fitdata d = {.n_cases = NC, .force = (const double(*)[3])force, .u = &u[0][0],
+                    .contact = (const double(*)[3])contact, .n_out = NOUT, .node_ids = ids,
+                    .rest = (const double(*)[3])rest, .radius = radius};
+    memcpy(d.centre, centre, sizeof centre);
+    return d;
+}
+
+static void nodal_orders(void **state)
+{
+    (void)state;
+    make_data();
+    tf_fitdata d = data();
+    char err[256];
+    double max1, max2, rms1, rms2;
+    uint32_t p1 = 1, p2 = 2;
+    tf_model *m1 = tf_fit_nodal(&d, NULL, NC, &p1, "n1", err, sizeof err);
+    tf_model *m2 = tf_fit_nodal(&d, NULL, NC, &p2, "n2", err, sizeof err);
+    assert_non_null(m1);
+    assert_non_null(m2);
+    tf_model_errors(m1, &d, NULL, NC, &max1, &rms1, NULL);
+    tf_model_errors(m2, &d, NULL, NC, &max2, &rms2, NULL);
+    assert_true(max1 > 0.05);   /* a quadratic field is not linear */
+    assert_true(max2 < 2e-6);   /* float32 evaluation of the exact model */
+    assert_memory_equal(m2->node_ids, ids, sizeof ids);
+
+    double cv1, cv2, cv3;
+    uint32_t p3 = 3;
+    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p3, 5, 1, &cv3, NULL, err, sizeof err), 0);
+    assert_true(cv2 < 1e-3 * cv1);
+    assert_true(cv3 < 1e-3 * cv1);
+    tf_model_free(m1);
+    tf_model_free(m2);
+}
+
+static void modal_rank(void **state)
+{
+    (void)state;
+    make_data();
+    tf_fitdata d = data();
+    char err[256];
+    const uint32_t r2[2] = {2, 2}, r3[2] = {2, 3};
+    tf_model *m2 = tf_fit_modal(&d, NULL, NC, r2, "m2", err, sizeof err);
+    tf_model *m3 = tf_fit_modal(&d, NULL, NC, r3, "m3", err, sizeof err);
+    assert_non_null(m2);
+    assert_non_null(m3);
+    double max2, max3;
+    tf_model_errors(m2, &d, NULL, NC, &max2, NULL, NULL);
+    tf_model_errors(m3, &d, NULL, NC, &max3, NULL, NULL);
+    assert_true(max2 > 0.01); /* the third mode is missing */
+    assert_true(max3 < 2e-6);
+    const uint32_t too_many[2] = {1, NC + 1};
+    assert_null(tf_fit_modal(&d, NULL, NC, too_many, "x", err, sizeof err));
+    assert_non_null(strstr(err, "more modes"));
+    tf_model_free(m2);
+    tf_model_free(m3);
+}
+
+static void contact_inverse(void **state)
+{
+    (void)state;
+    make_data();
+    tf_fitdata d = data();
+    char err[256];
+    uint32_t p1 = 1, p3 = 3;
+    tf_model *lin = tf_fit_contact(&d, NULL, NC, &p1, "c1", err, sizeof err);
+    tf_model *cub = tf_fit_contact(&d, NULL, NC, &p3, "c3", err, sizeof err);
+    assert_non_null(lin);
+    assert_non_null(cub);
+    double rel1, rel3;
+    tf_model_errors(lin, &d, NULL, NC, NULL, NULL, &rel1);
+    tf_model_errors(cub, &d, NULL, NC, NULL, NULL, &rel3);
+    assert_true(rel3 < 0.2 * rel1); /* the nonlinearity needs the cubic */
+    assert_true(rel3 < 1e-2);
+
+    /* Linear tissue: the degree-1 inverse is exact to float precision. */
+    for (int i = 0; i < NC; ++i) {
+        contact[i][2] = 11.0 * force[i][2];
+    }
+    tf_model *exact = tf_fit_contact(&d, NULL, NC, &p1, "e", err, sizeof err);
+    double rel;
+    tf_model_errors(exact, &d, NULL, NC, NULL, NULL, &rel);
+    assert_true(rel < 1e-5);
+
+    /* A site that does not move along z has no impedance model. */
+    for (int i = 0; i < NC; ++i) {
+        contact[i][2] = 0;
+    }
+    assert_null(tf_fit_contact(&d, NULL, NC, &p1, "s", err, sizeof err));
+    assert_non_null(strstr(err, "singular"));
+    tf_model_free(lin);
+    tf_model_free(cub);
+    tf_model_free(exact);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(nodal_orders),
+        cmocka_unit_test(modal_rank),
+        cmocka_unit_test(contact_inverse),
+    };
+    return cmocka_run_group_tests_name("fit_family", tests, NULL, NULL);
+}
