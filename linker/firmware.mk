@@ -1,0 +1,85 @@
+# firmware.mk — firmware images for Cortex-M (issue 6).
+#
+#   make firmware    cross-builds libtfit and the haptic-loop example for
+#                    STM32F407 (Cortex-M4F) and STM32H743 (Cortex-M7) with
+#                    every shipped header; prints flash/RAM per image and
+#                    the worst-case stack of each public function
+#   check-qemu       golden vectors of every shipped header on the QEMU
+#                    boards mps2-an386 (M4F) and mps2-an500 (M7): bit-exact
+#                    or the check fails; the startup FPU check must reject
+#                    a flush-to-zero / default-NaN FPU
+#
+# "Shipped headers": coeffs/*.h (without *_golden.h) plus the test headers
+# below, so that real headers are picked up as they land.
+
+FW := $(B)/firmware
+FW_SHIPPED := $(filter-out %_golden.h,$(wildcard coeffs/*.h))
+FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h
+fw_name = $(basename $(notdir $(1)))
+fw_upper = $(shell echo $(1) | tr a-z A-Z)
+
+FW_CFLAGS := $(STRICT) -ffreestanding -O2 -g -ffunction-sections -fdata-sections \
+             -Itarget/include -Ilinker -Itarget/examples
+FW_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-undefined -Llinker
+FW_STARTUP := linker/startup.c linker/startup.h
+FW_SEMIHOST := linker/semihost.c linker/semihost.h
+
+# Per core: compiler flags, library, QEMU board.
+FW_FLAGS_m4f := $(M4F_FLAGS)
+FW_FLAGS_m7 := $(M7_FLAGS)
+FW_LIB_m4f := $(B)/cortex-m4f/libtfit.a
+FW_LIB_m7 := $(B)/cortex-m7/libtfit.a
+FW_QEMU_m4f := mps2-an386
+FW_QEMU_m7 := mps2-an500
+FW_CORES := m4f m7
+
+DEBS_CHECK += qemu-system-arm
+
+# The block48-shaped test header (tests/firmware/gen_haptic.c).
+$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+$(T)/gen/haptic.h: $(T)/gen_haptic
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< $@
+
+# --- golden vectors under QEMU --------------------------------------------------
+# $(call fw_golden,HEADER,CORE)
+define fw_golden
+$(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(FW_STARTUP) \
+    $(FW_SEMIHOST) $(FW_LIB_$(2)) linker/$(FW_QEMU_$(2)).ld linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) -I$(dir $(1)) \
+	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))"' \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld \
+	  -Wl,-Map=$$(@:.elf=.map) -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_golden,$(h),$(c)))))
+FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
+
+# The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
+$(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
+    tests/firmware/fpscr_reject.c $(FW_STARTUP) $(FW_SEMIHOST) | deps-check
+	@mkdir -p $(@D)
+	$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) $(if $(filter fpdscr,$*),-DPOKE_FPDSCR) \
+	  $(filter %.c,$^) $(FW_LDFLAGS) -T mps2-an386.ld -o $@
+
+.PHONY: check-qemu
+CHECKS += check-qemu
+check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
+	@echo "== golden vectors on Cortex-M4F (mps2-an386) and Cortex-M7 (mps2-an500) under QEMU =="
+	@set -e; for c in $(FW_CORES); do \
+	  case $$c in m4f) m=$(FW_QEMU_m4f);; m7) m=$(FW_QEMU_m7);; esac; \
+	  for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/golden-$$h.elf; done; done
+	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
+	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
+	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
+	  >/dev/null && echo "startup rejects FPDSCR.DN = 1: ok"
