@@ -14,7 +14,8 @@
 
 FW := $(B)/firmware
 FW_SHIPPED := $(filter-out %_golden.h,$(wildcard coeffs/*.h))
-FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h
+FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h \
+              $(T)/gen/shapes.h
 fw_name = $(basename $(notdir $(1)))
 fw_upper = $(shell echo $(1) | tr a-z A-Z)
 
@@ -44,6 +45,10 @@ $(T)/gen/haptic.h: $(T)/gen_haptic
 	@mkdir -p $(@D)
 	$(call say,GEN)
 	$(Q)$< $@
+$(T)/gen/shapes.h: $(T)/gen_haptic
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< shapes $@
 
 # --- golden vectors under QEMU --------------------------------------------------
 # $(call fw_golden,HEADER,CORE)
@@ -83,3 +88,66 @@ check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reje
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
 	  >/dev/null && echo "startup rejects FPDSCR.DN = 1: ok"
+
+# --- cycle model: static loop mixes and traced instruction mixes -------------
+# check-cycles proves, on both cores, that host/cycles.c describes the
+# compiled evaluator: (1) the loop bodies of the evaluation functions in the
+# linked library have exactly the instruction mixes the model assumes
+# (objdump), and (2) for every golden set of every header, every input
+# executed the same instructions under QEMU, and exactly the mix the model
+# predicts from the model's shape (so the header's cycle estimates are sums
+# over the real instruction stream).
+FW_TOOL_SRC := tests/firmware/insn_class.c
+FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map tfit_basis \
+                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017
+
+$(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
+    host/cycles.h $(B)/native/libtissuefit-host.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(FW_TOOL_SRC) $(call host_test_link,native) -o $@
+$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+
+# The library alone, linked (addresses resolved) for the static check.
+$(FW)/%/libtfit.elf: $(B)/cortex-%/libtfit.a
+	@mkdir -p $(@D)
+	$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_FLAGS_$*) -nostdlib -nostartfiles -Wl,--no-undefined -Wl,-e,tfit_displacements \
+	  -Wl,-u,tfit_contact_force $< -o $@
+$(FW)/m4f/libtfit.elf: $(B)/cortex-m4f/libtfit.a
+$(FW)/m7/libtfit.elf: $(B)/cortex-m7/libtfit.a
+
+# Traced mixes of one golden image: $(FW)/CORE/trace-NAME.txt
+$(FW)/%.dis: $(FW)/%.elf
+	$(Q)$(ARM)objdump -d --no-show-raw-insn $< >$@
+define fw_trace
+$(FW)/$(2)/trace-$(call fw_name,$(1)).txt: $(FW)/$(2)/golden-$(call fw_name,$(1)).elf \
+    $(FW)/$(2)/golden-$(call fw_name,$(1)).dis $(T)/trace_mix
+	$$(call say,TRACE)
+	$(Q)timeout 300 qemu-system-arm -M $(FW_QEMU_$(2)) -display none -monitor none -serial none \
+	  -semihosting-config enable=on,target=native -kernel $$< \
+	  -d in_asm,exec,nochain -D $$(@:.txt=.log) >/dev/null 2>&1
+	$(Q)$(T)/trace_mix $$(word 2,$$^) $$(@:.txt=.log) >$$@.tmp || { cat $$@.tmp; rm -f $$@.tmp; exit 1; }
+	$(Q)rm -f $$(@:.txt=.log) && mv $$@.tmp $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_trace,$(h),$(c)))))
+FW_TRACES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
+
+.PHONY: check-cycles
+CHECKS += check-cycles
+check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
+    $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf $(FW)/$(c)/libtfit.dis)
+	@echo "== cycle model: loop mixes (objdump) and executed mixes (QEMU trace) =="
+	@set -e; for c in $(FW_CORES); do \
+	  $(T)/insn_mix $(FW_EVAL_FUNCS) <$(FW)/$$c/libtfit.dis | grep ' loop ' | sort >$(FW)/$$c/loops.txt; \
+	  $(T)/check_cycle_model loops $$c | sort >$(FW)/$$c/loops-model.txt; \
+	  if ! diff $(FW)/$$c/loops-model.txt $(FW)/$$c/loops.txt >$(FW)/$$c/loops.diff; then \
+	    echo "$$c: compiled loops differ from host/cycles.c (< model, > objdump):"; \
+	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
+	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cycles.c"; done
+	@set -e; for c in $(FW_CORES); do for h in $(FW_HEADERS); do \
+	  n=$$(basename $$h .h); \
+	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt; done; done
