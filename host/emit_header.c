@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "emit_budget.h"
 #include "golden.h"
 #include "ref_eval.h"
 
@@ -143,6 +144,7 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
         fprintf(f, " *       %llu add, %llu mul, %llu div per evaluation; %u table bytes\n",
                 (unsigned long long)ops.add, (unsigned long long)ops.mul,
                 (unsigned long long)ops.div, tf_model_table_bytes(m));
+        tf_emit_budget_banner(f, m);
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
@@ -181,6 +183,11 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
     fprintf(f, "#define TFIT_%s_OPS_DIV %llu\n", p, (unsigned long long)ops.div);
     fprintf(f, "#define TFIT_%s_OPS %llu\n", p, (unsigned long long)(ops.add + ops.mul + ops.div));
     fprintf(f, "#define TFIT_%s_TABLE_BYTES %u\n", p, tf_model_table_bytes(m));
+    {
+        char prefix[TF_NAME_MAX + 16];
+        snprintf(prefix, sizeof prefix, "TFIT_%s", p);
+        tf_emit_budget_macros(f, m, prefix);
+    }
     if (!isnan(m->heldout_max)) {
         const char *u = output_unit(m);
         fprintf(f, "#define TFIT_%s_HELDOUT_CASES %u\n", p, m->heldout_cases);

@@ -185,6 +185,14 @@ int main(int argc, char **argv)
         tf_cycles_mix(m, core, &predicted);
         tf_cycles c = tf_cycles_estimate(m, core);
         int same = memcmp(&traced, &predicted, sizeof traced) == 0;
+        /* The header's own number (emit_budget.c) must be what ran. */
+        const char *insns = macro(name, "INSNS_ARMV7EM");
+        if (core == TF_CORE_M4F &&
+            (insns == NULL || strtoull(insns, NULL, 10) != tf_insn_mix_count(&traced))) {
+            printf("%s: header says %s instructions per call, the M4F executed %llu\n", name,
+                   insns ? insns : "nothing", (unsigned long long)tf_insn_mix_count(&traced));
+            fail = 1;
+        }
         int fixed = strcmp(verdict, "identical") == 0;
         printf("%-22s %-9s %-14.14s n_out %4u: %3u inputs %s, %6llu instructions traced, model "
                "%s; %s %.0f cycles (%.0f..%.0f) = %.2f us at %.0f MHz\n",
