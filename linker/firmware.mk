@@ -151,3 +151,87 @@ check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
 	@set -e; for c in $(FW_CORES); do for h in $(FW_HEADERS); do \
 	  n=$$(basename $$h .h); \
 	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt; done; done
+
+# --- haptic-loop example: STM32 images, QEMU and native runs ------------------
+FW_EXAMPLE := target/examples/haptic_loop.c target/examples/haptic_loop.h target/examples/board.h
+FW_SCRIPT := target/examples/haptic_script.c target/examples/haptic_script.h
+FW_STM32_LD_m4f := stm32f407.ld
+FW_STM32_LD_m7 := stm32h743.ld
+FW_CORE_DEF_m4f := -DHAPTIC_CORE_M4F
+FW_CORE_DEF_m7 := -DHAPTIC_CORE_M7
+
+$(FW)/cfg/%/haptic_config.h: tests/firmware/haptic_config.sh
+	@mkdir -p $(@D)
+	$(Q)$< $(filter %.h,$^) >$@.tmp && mv $@.tmp $@
+
+# $(call fw_haptic,HEADER,CORE): the STM32 image and the QEMU image
+define fw_haptic
+$(FW)/cfg/$(call fw_name,$(1))/haptic_config.h: $(1)
+$(FW)/$(2)/haptic-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) target/examples/board_stm32.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(FW_STARTUP) $(FW_LIB_$(2)) \
+    linker/$(FW_STM32_LD_$(2)) linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) -fstack-usage \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) -dumpdir $$(@:.elf=)- \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_STM32_LD_$(2)) \
+	  -Wl,-Map=$$(@:.elf=.map) -o $$@
+$(FW)/$(2)/haptic-qemu-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) $(FW_SCRIPT) target/examples/board_qemu.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(FW_STARTUP) $(FW_SEMIHOST) $(FW_LIB_$(2)) \
+    linker/$(FW_QEMU_$(2)).ld linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
+FW_HAPTIC_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
+FW_HAPTIC_QEMU := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-qemu-$(call fw_name,$(h)).elf))
+
+# Native build of the same loop (the fitting issue's `make demo` runs it over
+# its header): $(FW)/native/haptic-NAME
+define fw_haptic_native
+$(FW)/native/haptic-$(call fw_name,$(1)): $(FW_EXAMPLE) $(FW_SCRIPT) target/examples/board_native.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(B)/lib/libtfit.a
+	@mkdir -p $$(@D)
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -Itarget/examples \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) $$(filter %.c,$$^) $(B)/lib/libtfit.a -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(eval $(call fw_haptic_native,$(h))))
+
+# Worst-case stack of the public functions: -fstack-usage frames of the
+# library build along its call graph (tests/freestanding/callgraph.c).
+FW_PUBLIC := tfit_model_check tfit_model_crc32 tfit_displacements tfit_contact_force tfit_golden_run
+
+.PHONY: firmware check-firmware
+firmware: $(FW_HAPTIC_IMAGES) $(T)/callgraph $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf) | deps-check
+	@echo "== firmware images: haptic loop x shipped headers, STM32F407 (M4F) and STM32H743 (M7) =="
+	@linker/size_table.sh $(FW_HAPTIC_IMAGES)
+	@echo
+	@echo "== worst-case stack of each public function (bytes; -fstack-usage along the call graph) =="
+	@linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj
+
+CHECKS += check-firmware
+check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic $(FW)/cfg/haptic/haptic_config.h \
+    $(T)/callgraph $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf)
+	@echo "== haptic-loop firmware: links for M4F and M7 with every header, no heap =="
+	@set -e; for f in $(FW_HAPTIC_IMAGES); do \
+	  if grep -qE '\b(_sbrk|malloc|free|calloc|realloc)\b' $${f%.elf}.map; then \
+	    echo "$$f: the map file mentions a heap function"; exit 1; fi; done; \
+	  echo "$(words $(FW_HAPTIC_IMAGES)) images linked with --no-undefined; no _sbrk/malloc in any map"
+	@set -e; for c in $(FW_CORES); do \
+	  case $$c in m4f) m=$(FW_QEMU_m4f);; m7) m=$(FW_QEMU_m7);; esac; \
+	  for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	    printf '%-9s %-11s ' $$h $$m; \
+	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/haptic-qemu-$$h.elf; done; done
+	@$(FW)/native/haptic-haptic
+	@if $(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -DHAPTIC_CORE_M4F -DHAPTIC_SERVO_HZ=10000u \
+	    -I$(FW)/cfg/haptic -I$(T)/gen -fsyntax-only target/examples/haptic_loop.c 2>$(FW)/budget.err; then \
+	  echo "the servo budget check accepted haptic.h at 10 kHz on the M4F"; exit 1; fi; \
+	  grep -q "exceed the servo budget" $(FW)/budget.err && \
+	  echo "servo budget: haptic.h fits 1 kHz on both cores; 10 kHz on the M4F is refused at compile time"
+	@linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj >/dev/null

@@ -5,8 +5,9 @@
  * Order at reset, before any other code runs:
  *   1. enable the FPU (CPACR CP10/CP11 full access) — first, because any
  *      float instruction before that faults (NOCP usage fault);
- *   2. copy .fast_text (the evaluator, to ITCM where the script says so) and
- *      .data from their load addresses, zero .bss, paint the unused stack;
+ *   2. copy .fast_text (the evaluator, to ITCM where the script says so),
+ *      .fast_rodata (the model tables, to CCM/DTCM) and .data from their
+ *      load addresses, zero .bss, paint the unused stack;
  *   3. check that the FPU exists and that FPSCR and FPDSCR hold the IEEE
  *      defaults the bit-exact contract needs (GUIDE §4);
  *   4. main(), then board_exit(status).
@@ -16,6 +17,7 @@
 #include "startup.h"
 
 extern uint32_t __fast_text_start[], __fast_text_end[], __fast_text_load[];
+extern uint32_t __fast_rodata_start[], __fast_rodata_end[], __fast_rodata_load[];
 extern uint32_t __data_start[], __data_end[], __data_load[];
 extern uint32_t __bss_start[], __bss_end[];
 extern uint32_t __stack_limit[], __stack_top[];
@@ -87,6 +89,7 @@ void Reset_Handler(void)
     __asm__ volatile("dsb\n\tisb" ::: "memory");
 #endif
     copy_words(__fast_text_start, __fast_text_load, __fast_text_end);
+    copy_words(__fast_rodata_start, __fast_rodata_load, __fast_rodata_end);
     copy_words(__data_start, __data_load, __data_end);
     fill_words(__bss_start, __bss_end, 0u);
     /* Leave 64 bytes under the current frame alone. */

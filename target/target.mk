@@ -32,8 +32,9 @@ $(B)/lib/libtfit.a: $(B)/native/libtfit.a
 # link (linker/firmware.mk).  The STM32H743 has a double-precision FPU; the
 # library is float-only, so fpv5-d16 and fpv5-sp-d16 give the same code.
 M7_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
-$(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2,$(ARM),check))
-$(eval $(call tfit_lib,cortex-m7,$(ARM)gcc,$(M7_FLAGS) -O2,$(ARM),check))
+# -fstack-usage: the frame of every function, for `make firmware`'s stack table.
+$(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2 -fstack-usage,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m7,$(ARM)gcc,$(M7_FLAGS) -O2 -fstack-usage,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O0,$(ARM)gcc,$(M4F_FLAGS) -O0,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-Os,$(ARM)gcc,$(M4F_FLAGS) -Os,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O3,$(ARM)gcc,$(M4F_FLAGS) -O3,$(ARM),check))
