@@ -4,10 +4,14 @@
 #                    STM32F407 (Cortex-M4F) and STM32H743 (Cortex-M7) with
 #                    every shipped header; prints flash/RAM per image and
 #                    the worst-case stack of each public function
-#   check-qemu       golden vectors of every shipped header on the QEMU
-#                    boards mps2-an386 (M4F) and mps2-an500 (M7): bit-exact
-#                    or the check fails; the startup FPU check must reject
-#                    a flush-to-zero / default-NaN FPU
+#   check-qemu       golden vectors (float and Q31) of every shipped header on
+#                    the QEMU boards mps2-an386 (M4F) and mps2-an500 (M7), and
+#                    the Q31 ones on mps2-an385 (M3) and microbit (M0, Armv6-M
+#                    like the M0+): bit-exact or the check fails; the startup
+#                    FPU check must reject a flush-to-zero / default-NaN FPU
+#   check-q31        the Q31 libraries for M3 and M0+ need nothing from
+#                    outside (nm -u: no soft float, no libgcc) and have no
+#                    mutable state
 #
 # "Shipped headers": coeffs/*.h (without *_golden.h) plus the test headers
 # below, so that real headers are picked up as they land.
@@ -25,14 +29,27 @@ FW_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-undefined -Llin
 FW_STARTUP := linker/startup.c linker/startup.h
 FW_SEMIHOST := linker/semihost.c linker/semihost.h
 
-# Per core: compiler flags, library, QEMU board.
+# Per core: compiler flags, library, QEMU board and its linker script.
+# m3 and m0 have no FPU: they run the Q31 evaluator only.
 FW_FLAGS_m4f := $(M4F_FLAGS)
 FW_FLAGS_m7 := $(M7_FLAGS)
+FW_FLAGS_m3 := $(M3_FLAGS)
+FW_FLAGS_m0 := $(M0P_FLAGS)
 FW_LIB_m4f := $(B)/cortex-m4f/libtfit.a
 FW_LIB_m7 := $(B)/cortex-m7/libtfit.a
+FW_LIB_m3 := $(B)/cortex-m3/libtfit_q31.a
+FW_LIB_m0 := $(B)/cortex-m0plus/libtfit_q31.a
 FW_QEMU_m4f := mps2-an386
 FW_QEMU_m7 := mps2-an500
+FW_QEMU_m3 := mps2-an385
+FW_QEMU_m0 := microbit
+FW_LD_m4f := mps2-an386.ld
+FW_LD_m7 := mps2-an500.ld
+FW_LD_m3 := mps2-an386.ld
+FW_LD_m0 := microbit.ld
+FW_SCRATCH_m0 := -DSCRATCH_WORDS=1536u
 FW_CORES := m4f m7
+FW_Q31_CORES := m3 m0
 
 DEBS_CHECK += qemu-system-arm
 
@@ -54,19 +71,20 @@ $(T)/gen/shapes.h: $(T)/gen_haptic
 # $(call fw_golden,HEADER,CORE)
 define fw_golden
 $(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(FW_STARTUP) \
-    $(FW_SEMIHOST) $(FW_LIB_$(2)) linker/$(FW_QEMU_$(2)).ld linker/sections.ld | deps-check
+    $(FW_SEMIHOST) $(FW_LIB_$(2)) linker/$(FW_LD_$(2)) linker/sections.ld | deps-check
 	@mkdir -p $$(@D)
 	$$(call say,LINK)
-	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) -I$(dir $(1)) \
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_SCRATCH_$(2)) -I$(dir $(1)) \
 	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
 	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))"' \
-	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_LD_$(2)) \
 	  -Wl,-Map=$$(@:.elf=.map) -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_golden,$(h),$(c)))))
-FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_golden,$(h),$(c)))))
+FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
 
 # The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
 $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
@@ -79,15 +97,31 @@ $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: 
 .PHONY: check-qemu
 CHECKS += check-qemu
 check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
-	@echo "== golden vectors on Cortex-M4F (mps2-an386) and Cortex-M7 (mps2-an500) under QEMU =="
-	@set -e; for c in $(FW_CORES); do \
-	  case $$c in m4f) m=$(FW_QEMU_m4f);; m7) m=$(FW_QEMU_m7);; esac; \
-	  for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
-	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/golden-$$h.elf; done; done
+	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit) =="
+	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	    tests/firmware/qemu_run.sh $(FW_QEMU_$(c)) $(FW)/$(c)/golden-$$h.elf; done;)
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
 	  >/dev/null && echo "startup rejects FPDSCR.DN = 1: ok"
+
+# --- Q31 libraries for cores without an FPU --------------------------------------
+.PHONY: check-q31
+CHECKS += check-q31
+check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
+	@echo "== Q31 evaluator for Cortex-M3 and Cortex-M0+: freestanding, no soft float =="
+	@set -e; for c in cortex-m3:"$(M3_FLAGS)" cortex-m0plus:"$(M0P_FLAGS)"; do \
+	  lib=$(B)/$${c%%:*}/libtfit_q31.a; \
+	  und=$$($(ARM)nm -u $$lib | awk 'NF == 2 { print $$2 }'); \
+	  if [ -n "$$und" ]; then echo "$$lib needs: $$und"; exit 1; fi; \
+	  state=$$($(ARM)size -A $$lib | awk '$$1 ~ /^\.(data|bss)/ && $$2 > 0'); \
+	  if [ -n "$$state" ]; then echo "$$lib has mutable state: $$state"; exit 1; fi; \
+	  $(ARM)gcc $${c#*:} -nostdlib -nostartfiles -Wl,--no-undefined -Wl,-e,tfit_displacements_q31 \
+	    -Wl,-u,tfit_contact_force_q31 -Wl,-u,tfit_model_check_q31 -Wl,-u,tfit_golden_run_q31 \
+	    $$lib -o $(B)/$${c%%:*}/q31-image.elf; \
+	  echo "$${c%%:*}: libtfit_q31.a needs no symbol from outside (no __aeabi_* soft float or" \
+	    "division), no .data/.bss, links with -nostdlib; .text $$($(ARM)size -A $$lib | \
+	    awk '$$1 ~ /^\.text/ { t += $$2 } END { print t }') bytes"; done
 
 # --- cycle model: static loop mixes and traced instruction mixes -------------
 # check-cycles proves, on both cores, that host/cycles.c describes the
@@ -129,12 +163,12 @@ $(FW)/$(2)/trace-$(call fw_name,$(1)).txt: $(FW)/$(2)/golden-$(call fw_name,$(1)
 	$$(call say,TRACE)
 	$(Q)timeout 300 qemu-system-arm -M $(FW_QEMU_$(2)) -display none -monitor none -serial none \
 	  -semihosting-config enable=on,target=native -kernel $$< \
-	  -d in_asm,exec,nochain -D $$(@:.txt=.log) >/dev/null 2>&1
+	  -d in_asm,exec,nochain -D $$(@:.txt=.log) >/dev/null 2>&1 || { echo "$$<: run failed"; exit 1; }
 	$(Q)$(T)/trace_mix $$(word 2,$$^) $$(@:.txt=.log) >$$@.tmp || { cat $$@.tmp; rm -f $$@.tmp; exit 1; }
 	$(Q)rm -f $$(@:.txt=.log) && mv $$@.tmp $$@
 endef
-$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_trace,$(h),$(c)))))
-FW_TRACES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_trace,$(h),$(c)))))
+FW_TRACES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
 
 .PHONY: check-cycles
 CHECKS += check-cycles
@@ -148,9 +182,9 @@ check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
 	    echo "$$c: compiled loops differ from host/cycles.c (< model, > objdump):"; \
 	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
 	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cycles.c"; done
-	@set -e; for c in $(FW_CORES); do for h in $(FW_HEADERS); do \
+	@set -e; for c in $(FW_CORES) $(FW_Q31_CORES); do for h in $(FW_HEADERS); do \
 	  n=$$(basename $$h .h); \
-	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt; done; done
+	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt | sed "s|^|$$c |"; done; done
 
 # --- haptic-loop example: STM32 images, QEMU and native runs ------------------
 FW_EXAMPLE := target/examples/haptic_loop.c target/examples/haptic_loop.h target/examples/board.h

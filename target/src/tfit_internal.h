@@ -106,6 +106,9 @@ void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float
 void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
 
+/* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
+uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
+
 /* Expected coef[] length for the model's family, dims and n_out, or 0 when
  * they are invalid or beyond this build's capacity (tfit_layout.c). */
 uint32_t tfit_expected_coefs(const tfit_model *m);

@@ -156,12 +156,13 @@ typedef struct set_stats {
     unsigned calls;
     int differ;
     tf_insn_mix first;
+    const char *entry;
 } set_stats;
 
 static set_stats sets[MAX_SETS];
 static int n_sets = -1;
 
-static void finish_call(const tf_insn_mix *mix)
+static void finish_call(const tf_insn_mix *mix, const char *entry)
 {
     if (n_sets < 0 || n_sets >= MAX_SETS) {
         return;
@@ -169,6 +170,7 @@ static void finish_call(const tf_insn_mix *mix)
     set_stats *s = &sets[n_sets];
     if (s->calls == 0) {
         s->first = *mix;
+        s->entry = entry;
     } else if (memcmp(&s->first, mix, sizeof *mix) != 0) {
         s->differ = 1;
     }
@@ -190,6 +192,7 @@ int main(int argc, char **argv)
     char line[512];
     tb *filling = NULL;
     int in_call = 0;
+    const char *entry = "?";
     tf_insn_mix mix;
     while (fgets(line, sizeof line, f) != NULL) {
         unsigned long a, pc;
@@ -219,7 +222,7 @@ int main(int argc, char **argv)
         }
         if (entry_of_check) {
             if (in_call) {
-                finish_call(&mix);
+                finish_call(&mix, entry);
                 in_call = 0;
             }
             ++n_sets;
@@ -227,12 +230,13 @@ int main(int argc, char **argv)
         }
         if (is_entry(pc)) {
             if (in_call) {
-                finish_call(&mix);
+                finish_call(&mix, entry);
             }
             in_call = 1;
+            entry = fn;
             memset(&mix, 0, sizeof mix);
         } else if (in_call && starts_with(fn, "tfit_golden_run")) {
-            finish_call(&mix);
+            finish_call(&mix, entry);
             in_call = 0;
         }
         if (!in_call) {
@@ -258,7 +262,8 @@ int main(int argc, char **argv)
     for (int s = 0; s <= n_sets && s < MAX_SETS; ++s) {
         char buf[512];
         tf_insn_mix_format(&sets[s].first, buf, sizeof buf);
-        printf("set %d: %u calls, %s, %llu instructions, mix: %s\n", s, sets[s].calls,
+        printf("set %d (%s): %u calls, %s, %llu instructions, mix: %s\n", s,
+               sets[s].entry ? sets[s].entry : "none", sets[s].calls,
                sets[s].differ ? "DIFFERENT" : "identical",
                (unsigned long long)tf_insn_mix_count(&sets[s].first), buf);
         fail |= sets[s].differ;
