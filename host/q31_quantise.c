@@ -160,28 +160,21 @@ void tf_q31_free(tf_q31 *q)
     }
 }
 
-static uLong crc_u32(uLong crc, uint32_t w)
-{
-    const unsigned char b[4] = {(unsigned char)w, (unsigned char)(w >> 8), (unsigned char)(w >> 16),
-                                (unsigned char)(w >> 24)};
-    return crc32(crc, b, 4);
-}
-
 uint32_t tf_q31_crc32(const tf_q31 *q)
 {
-    uLong crc = crc32(0L, Z_NULL, 0);
+    uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
     const uint32_t head[5] = {TFIT_Q31_API_VERSION, (uint32_t)q->family, q->n_out, q->degree,
                               q->n_words};
     for (int i = 0; i < 5; ++i) {
-        crc = crc_u32(crc, head[i]);
+        crc = tf_crc32_u32(crc, head[i]);
     }
     for (uint32_t i = 0; i < q->n_words; ++i) {
-        crc = crc_u32(crc, (uint32_t)q->q[i]);
+        crc = tf_crc32_u32(crc, (uint32_t)q->q[i]);
     }
     for (uint32_t i = 0; i < q->n_out; ++i) {
-        crc = crc_u32(crc, q->node_ids[i]);
+        crc = tf_crc32_u32(crc, q->node_ids[i]);
     }
-    return (uint32_t)crc;
+    return crc;
 }
 
 int32_t tf_q31_from_value(double v, int e)

@@ -77,29 +77,16 @@ static int project(const tf_q31 *q, const int32_t in[3], int32_t g[3])
     return 1;
 }
 
-/* Index of g0^a g1^b g2^c in the basis order (header-format.md §5.1). */
-static uint32_t monomial_index(int a, int b, int c)
-{
-    int d = a + b + c;
-    return (uint32_t)(d * (d + 1) * (d + 2) / 6 + (d - a) * (d - a + 1) / 2 + (d - a - b));
-}
-
 /* §4: phi_0 = 2^30; phi = round(g_v phi_parent / 2^30), v the first
- * variable with a positive exponent. */
-static void basis(int p, const int32_t g[3], int32_t *phi)
+ * variable with a positive exponent (tf_basis_recurrence). */
+static void basis(uint32_t p, const int32_t g[3], int32_t *phi)
 {
+    uint8_t var[TFIT_Q31_MAX_DEGREE_TERMS];
+    uint32_t parent[TFIT_Q31_MAX_DEGREE_TERMS];
+    tf_basis_recurrence(p, var, parent);
     phi[0] = 1 << 30;
-    for (int deg = 1; deg <= p; ++deg) {
-        for (int a = deg; a >= 0; --a) {
-            for (int b = deg - a; b >= 0; --b) {
-                int e[3] = {a, b, deg - a - b};
-                int v = a > 0 ? 0 : (b > 0 ? 1 : 2);
-                uint32_t self = monomial_index(e[0], e[1], e[2]);
-                e[v] -= 1;
-                phi[self] = (int32_t)round_shift(
-                    (__int128)g[v] * phi[monomial_index(e[0], e[1], e[2])], 30);
-            }
-        }
+    for (uint32_t k = 1; k < tf_terms(p); ++k) {
+        phi[k] = (int32_t)round_shift((__int128)g[var[k]] * phi[parent[k]], 30);
     }
 }
 
@@ -108,7 +95,7 @@ tfit_status tf_q31_ref_eval(const tf_q31 *q, const int32_t in[3], int32_t *out, 
     int32_t g[3], phi[TFIT_Q31_MAX_DEGREE_TERMS];
     const uint32_t t = tf_terms(q->degree);
     int clamped = project(q, in, g);
-    basis((int)q->degree, g, phi);
+    basis(q->degree, g, phi);
     const int32_t *row = q->q + TFIT_Q31_MAP_WORDS;
     for (uint32_t o = 0; o < 3 * q->n_out; ++o, row += t + 1) {
         __int128 acc = 0;
