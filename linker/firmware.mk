@@ -145,14 +145,21 @@ $(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissue
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
 
-# The library alone, linked (addresses resolved) for the static check.
+# The libraries alone, linked (addresses resolved), for the static check and
+# the stack table: every function of the one merged object is kept.
 $(FW)/%/libtfit.elf: $(B)/cortex-%/libtfit.a
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(ARM)gcc $(FW_FLAGS_$*) -nostdlib -nostartfiles -Wl,--no-undefined -Wl,-e,tfit_displacements \
-	  -Wl,-u,tfit_contact_force $< -o $@
-$(FW)/m4f/libtfit.elf: $(B)/cortex-m4f/libtfit.a
-$(FW)/m7/libtfit.elf: $(B)/cortex-m7/libtfit.a
+	  $< -o $@
+define fw_q31_elf
+$(FW)/$(1)/libtfit_q31.elf: $(FW_LIB_$(1))
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_FLAGS_$(1)) -nostdlib -nostartfiles -Wl,--no-undefined \
+	  -Wl,-e,tfit_displacements_q31 $$< -o $$@
+endef
+$(foreach c,$(FW_Q31_CORES),$(eval $(call fw_q31_elf,$(c))))
 
 # Traced mixes of one golden image: $(FW)/CORE/trace-NAME.txt
 $(FW)/%.dis: $(FW)/%.elf
@@ -206,8 +213,8 @@ $(FW)/$(2)/haptic-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) target/examples/board_
     linker/$(FW_STM32_LD_$(2)) linker/sections.ld | deps-check
 	@mkdir -p $$(@D)
 	$$(call say,LINK)
-	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) -fstack-usage \
-	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) -dumpdir $$(@:.elf=)- \
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
 	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_STM32_LD_$(2)) \
 	  -Wl,-Map=$$(@:.elf=.map) -o $$@
 $(FW)/$(2)/haptic-qemu-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) $(FW_SCRIPT) target/examples/board_qemu.c \
@@ -238,19 +245,27 @@ $(foreach h,$(FW_HEADERS),$(eval $(call fw_haptic_native,$(h))))
 # Worst-case stack of the public functions: -fstack-usage frames of the
 # library build along its call graph (tests/freestanding/callgraph.c).
 FW_PUBLIC := tfit_model_check tfit_model_crc32 tfit_displacements tfit_contact_force tfit_golden_run
+FW_PUBLIC_Q31 := tfit_model_check_q31 tfit_model_crc32_q31 tfit_displacements_q31 \
+                 tfit_contact_force_q31 tfit_golden_run_q31
+FW_STACK_LIBS := $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf) \
+                 $(foreach c,$(FW_Q31_CORES),$(FW)/$(c)/libtfit_q31.elf)
+fw_stack_tables = linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj && \
+	linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC_Q31)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj \
+	  m3:$(FW)/m3/libtfit_q31.elf:$(B)/cortex-m3/obj m0+:$(FW)/m0/libtfit_q31.elf:$(B)/cortex-m0plus/obj
 
 .PHONY: firmware check-firmware
-firmware: $(FW_HAPTIC_IMAGES) $(T)/callgraph $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf) | deps-check
+firmware: $(FW_HAPTIC_IMAGES) $(T)/callgraph $(FW_STACK_LIBS) | deps-check
 	@echo "== firmware images: haptic loop x shipped headers, STM32F407 (M4F) and STM32H743 (M7) =="
 	@linker/size_table.sh $(FW_HAPTIC_IMAGES)
 	@echo
 	@echo "== worst-case stack of each public function (bytes; -fstack-usage along the call graph) =="
-	@linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
-	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj
+	@$(fw_stack_tables)
 
 CHECKS += check-firmware
 check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic $(FW)/cfg/haptic/haptic_config.h \
-    $(T)/callgraph $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf)
+    $(T)/callgraph $(FW_STACK_LIBS)
 	@echo "== haptic-loop firmware: links for M4F and M7 with every header, no heap =="
 	@set -e; for f in $(FW_HAPTIC_IMAGES); do \
 	  if grep -qE '\b(_sbrk|malloc|free|calloc|realloc)\b' $${f%.elf}.map; then \
@@ -267,5 +282,5 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "the servo budget check accepted haptic.h at 10 kHz on the M4F"; exit 1; fi; \
 	  grep -q "exceed the servo budget" $(FW)/budget.err && \
 	  echo "servo budget: haptic.h fits 1 kHz on both cores; 10 kHz on the M4F is refused at compile time"
-	@linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
-	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj >/dev/null
+	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
+

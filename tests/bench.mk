@@ -2,7 +2,7 @@
 # instructions per call, firmware estimates); numbers are printed, never
 # asserted (GUIDE §7).  Headers: linker/firmware.mk's FW_HEADERS.
 BENCH_CALLS ?= 100000
-DEBS_BENCH += valgrind gcc-arm-none-eabi
+DEBS_BENCH += valgrind
 
 # $(call bench_binary,HEADER)
 define bench_binary
