@@ -105,6 +105,7 @@ install: all
 	install -m 755 $(B)/bin/tissuefit $(DESTDIR)$(PREFIX)/bin/tissuefit
 	install -m 644 $(B)/lib/libtfit.a $(DESTDIR)$(PREFIX)/lib/libtfit.a
 	install -m 644 target/include/tfit.h $(DESTDIR)$(PREFIX)/include/tfit.h
+	install -m 644 target/include/tfit_q31.h $(DESTDIR)$(PREFIX)/include/tfit_q31.h
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' target/tfit.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
 	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc

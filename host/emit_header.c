@@ -13,6 +13,8 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "emit_budget.h"
+#include "emit_q31.h"
 #include "golden.h"
 #include "ref_eval.h"
 
@@ -143,6 +145,8 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
         fprintf(f, " *       %llu add, %llu mul, %llu div per evaluation; %u table bytes\n",
                 (unsigned long long)ops.add, (unsigned long long)ops.mul,
                 (unsigned long long)ops.div, tf_model_table_bytes(m));
+        tf_emit_budget_banner(f, m);
+        tf_emit_q31_banner(f, m);
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
@@ -181,6 +185,12 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
     fprintf(f, "#define TFIT_%s_OPS_DIV %llu\n", p, (unsigned long long)ops.div);
     fprintf(f, "#define TFIT_%s_OPS %llu\n", p, (unsigned long long)(ops.add + ops.mul + ops.div));
     fprintf(f, "#define TFIT_%s_TABLE_BYTES %u\n", p, tf_model_table_bytes(m));
+    {
+        char prefix[TF_NAME_MAX + 16];
+        snprintf(prefix, sizeof prefix, "TFIT_%s", p);
+        tf_emit_budget_macros(f, m, prefix);
+        tf_emit_q31_macros(f, m, prefix);
+    }
     if (!isnan(m->heldout_max)) {
         const char *u = output_unit(m);
         fprintf(f, "#define TFIT_%s_HELDOUT_CASES %u\n", p, m->heldout_cases);
@@ -278,6 +288,7 @@ static void write_definition(FILE *f, const tf_model *m, uint32_t crc)
             "    tfit_%s_dims, tfit_%s_coef, tfit_%s_nodes,\n    0x%08xu\n};\n",
             m->name, TFIT_API_VERSION, (unsigned)m->family, m->n_out, m->n_dims, m->n_coef,
             m->name, m->name, m->name, crc);
+    tf_emit_q31_definition(f, m);
 }
 
 static void write_header(FILE *f, const char *base, tf_model *const *models, size_t n,
@@ -286,7 +297,8 @@ static void write_header(FILE *f, const char *base, tf_model *const *models, siz
     char g[TF_NAME_MAX + 8];
     upper(base, g, sizeof g);
     write_banner(f, base, models, n, info);
-    fprintf(f, "#ifndef TFIT_%s_H\n#define TFIT_%s_H\n\n#include \"tfit.h\"\n\n", g, g);
+    fprintf(f, "#ifndef TFIT_%s_H\n#define TFIT_%s_H\n\n#include \"tfit.h\"\n#include \"tfit_q31.h\"\n\n",
+            g, g);
     fprintf(f,
             "#if TFIT_API_VERSION != %d\n#error \"%s.h was generated for tfit API version %d: "
             "regenerate it with tissuefit\"\n#endif\n",
@@ -342,7 +354,7 @@ static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
             m->name, m->name, n_vec, m->name, m->name, m->name);
     free(out);
     free(out_bits);
-    return 0;
+    return tf_emit_q31_golden(f, m, seed);
 }
 
 static int write_golden(FILE *f, const char *base, tf_model *const *models, size_t n,
@@ -368,7 +380,9 @@ static int write_golden(FILE *f, const char *base, tf_model *const *models, size
     for (size_t i = 0; i < n; ++i) {
         fprintf(f, "%s&tfit_%s_golden", i ? ", " : "", models[i]->name);
     }
-    fprintf(f, "}\n\n#endif /* TFIT_%s_GOLDEN_H */\n", g);
+    fprintf(f, "}\n");
+    tf_emit_q31_sets(f, g, models, n);
+    fprintf(f, "\n#endif /* TFIT_%s_GOLDEN_H */\n", g);
     return 0;
 }
 

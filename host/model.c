@@ -179,33 +179,58 @@ float *tf_model_tables(tf_model *m)
     return m->coef + TFIT_INPUT_MAP_FLOATS;
 }
 
-static uLong crc_u32(uLong crc, uint32_t w)
+uint32_t tf_crc32_u32(uint32_t crc, uint32_t w)
 {
     const unsigned char b[4] = {(unsigned char)w, (unsigned char)(w >> 8), (unsigned char)(w >> 16),
                                 (unsigned char)(w >> 24)};
-    return crc32(crc, b, 4);
+    return (uint32_t)crc32(crc, b, 4);
+}
+
+/* Index of g0^a g1^b g2^c in the basis order: all monomials of lower
+ * degree, then within degree d those with a larger exponent of g0, then
+ * those with the same a and a larger b. */
+static uint32_t monomial_index(int a, int b, int c)
+{
+    int d = a + b + c;
+    return (uint32_t)(d * (d + 1) * (d + 2) / 6 + (d - a) * (d - a + 1) / 2 + (d - a - b));
+}
+
+void tf_basis_recurrence(uint32_t p, uint8_t *var, uint32_t *parent)
+{
+    for (int deg = 1; deg <= (int)p; ++deg) {
+        for (int a = deg; a >= 0; --a) {
+            for (int b = deg - a; b >= 0; --b) {
+                int e[3] = {a, b, deg - a - b};
+                int v = a > 0 ? 0 : (b > 0 ? 1 : 2); /* first positive exponent */
+                uint32_t self = monomial_index(e[0], e[1], e[2]);
+                e[v] -= 1;
+                var[self] = (uint8_t)v;
+                parent[self] = monomial_index(e[0], e[1], e[2]);
+            }
+        }
+    }
 }
 
 uint32_t tf_model_crc32(const tf_model *m)
 {
-    uLong crc = crc32(0L, Z_NULL, 0);
-    crc = crc_u32(crc, TFIT_API_VERSION);
-    crc = crc_u32(crc, (uint32_t)m->family);
-    crc = crc_u32(crc, m->n_out);
-    crc = crc_u32(crc, m->n_dims);
-    crc = crc_u32(crc, m->n_coef);
+    uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
+    crc = tf_crc32_u32(crc, TFIT_API_VERSION);
+    crc = tf_crc32_u32(crc, (uint32_t)m->family);
+    crc = tf_crc32_u32(crc, m->n_out);
+    crc = tf_crc32_u32(crc, m->n_dims);
+    crc = tf_crc32_u32(crc, m->n_coef);
     for (uint32_t i = 0; i < m->n_dims; ++i) {
-        crc = crc_u32(crc, m->dims[i]);
+        crc = tf_crc32_u32(crc, m->dims[i]);
     }
     for (uint32_t i = 0; i < m->n_coef; ++i) {
         uint32_t bits;
         memcpy(&bits, &m->coef[i], sizeof bits);
-        crc = crc_u32(crc, bits);
+        crc = tf_crc32_u32(crc, bits);
     }
     for (uint32_t i = 0; i < m->n_out; ++i) {
-        crc = crc_u32(crc, m->node_ids[i]);
+        crc = tf_crc32_u32(crc, m->node_ids[i]);
     }
-    return (uint32_t)crc;
+    return crc;
 }
 
 /* Sum of |c_k| tau^k, the bound of a polynomial for |x| <= tau. */

@@ -99,30 +99,16 @@ static void input_map(arith *c, const tf_model *m, const float in[3], float g[3]
     *clamped = far || outside;
 }
 
-/* Index of g0^a g1^b g2^c in the documented order: all monomials of lower
- * degree, then within degree d those with a larger exponent of g0, then
- * those with the same a and a larger b. */
-static uint32_t monomial_index(int a, int b, int c)
-{
-    int d = a + b + c;
-    return (uint32_t)(d * (d + 1) * (d + 2) / 6 + (d - a) * (d - a + 1) / 2 + (d - a - b));
-}
-
 /* Monomials of total degree <= p, each computed as g_v * (its parent), v the
- * first variable with a positive exponent. */
+ * first variable with a positive exponent (tf_basis_recurrence). */
 static void monomials(arith *c, uint32_t p, const float g[3], float *phi)
 {
+    uint8_t var[TFIT_TERMS_MAX];
+    uint32_t parent[TFIT_TERMS_MAX];
+    tf_basis_recurrence(p, var, parent);
     phi[0] = 1.0f;
-    for (int deg = 1; deg <= (int)p; ++deg) {
-        for (int a = deg; a >= 0; --a) {
-            for (int b = deg - a; b >= 0; --b) {
-                int e[3] = {a, b, deg - a - b};
-                int v = a > 0 ? 0 : (b > 0 ? 1 : 2);
-                uint32_t self = monomial_index(e[0], e[1], e[2]);
-                e[v] -= 1;
-                phi[self] = f_mul(c, g[v], phi[monomial_index(e[0], e[1], e[2])]);
-            }
-        }
+    for (uint32_t k = 1; k < tf_terms(p); ++k) {
+        phi[k] = f_mul(c, g[var[k]], phi[parent[k]]);
     }
 }
 

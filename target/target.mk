@@ -7,19 +7,22 @@
 # functions removable by the firmware's --gc-sections.
 
 TARGET_SRC := $(wildcard target/src/*.c)
-TARGET_HDR := $(wildcard target/src/*.h) target/include/tfit.h
+TARGET_HDR := $(wildcard target/src/*.h target/include/*.h)
+# The fixed-point evaluator alone, for cores without an FPU (tfit_q31.h).
+TARGET_Q31_SRC := $(wildcard target/src/tfit_q31_*.c) target/src/tfit_crc_word.c
 TARGET_CFLAGS := $(TARGET_STRICT) -Itarget/include -ffunction-sections -fdata-sections
 
-# $(call tfit_lib,NAME,CC,FLAGS,BINUTILS-PREFIX,DEPS)  ->  $(B)/NAME/libtfit.a
+# $(call tfit_lib,NAME,CC,FLAGS,BINUTILS-PREFIX,DEPS[,LIB,SOURCES])
+#   ->  $(B)/NAME/LIB.a (default libtfit.a from every source)
 define tfit_lib
 $(B)/$(1)/obj/%.o: target/src/%.c $(TARGET_HDR) | deps-$(5)
 	@mkdir -p $$(@D)
 	$$(call say,CC)
 	$(Q)$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
-$(B)/$(1)/libtfit.a: $(TARGET_SRC:target/src/%.c=$(B)/$(1)/obj/%.o)
+$(B)/$(1)/$(or $(6),libtfit).a: $(patsubst target/src/%.c,$(B)/$(1)/obj/%.o,$(or $(7),$(TARGET_SRC)))
 	$$(call say,AR)
-	$(Q)$(4)ld -r $$^ -o $(B)/$(1)/libtfit.o
-	$(Q)rm -f $$@ && $(4)ar rcs $$@ $(B)/$(1)/libtfit.o
+	$(Q)$(4)ld -r $$^ -o $(B)/$(1)/$(or $(6),libtfit).o
+	$(Q)rm -f $$@ && $(4)ar rcs $$@ $(B)/$(1)/$(or $(6),libtfit).o
 endef
 
 # The native library that `make` ships.
@@ -28,13 +31,26 @@ $(B)/lib/libtfit.a: $(B)/native/libtfit.a
 	@mkdir -p $(@D)
 	$(Q)cp $< $@
 
-# Cross builds (freestanding proof; the firmware issue adds images).
-$(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2,$(ARM),check))
+# Cross builds: the freestanding proof, and the libraries the firmware images
+# link (linker/firmware.mk).  The STM32H743 has a double-precision FPU; the
+# library is float-only, so fpv5-d16 and fpv5-sp-d16 give the same code.
+M7_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
+# -fstack-usage: the frame of every function, for `make firmware`'s stack table.
+$(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2 -fstack-usage,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m7,$(ARM)gcc,$(M7_FLAGS) -O2 -fstack-usage,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O0,$(ARM)gcc,$(M4F_FLAGS) -O0,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-Os,$(ARM)gcc,$(M4F_FLAGS) -Os,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O3,$(ARM)gcc,$(M4F_FLAGS) -O3,$(ARM),check))
 $(eval $(call tfit_lib,riscv64,$(RV)gcc,$(RV64_FLAGS) -O2,$(RV),check))
 $(eval $(call tfit_lib,riscv64-O0,$(RV)gcc,$(RV64_FLAGS) -O0,$(RV),check))
+
+# Cores without an FPU: the Q31 evaluator only (soft-float ABI, but no float
+# code: check-q31 proves with nm -u that nothing, soft float included, is
+# pulled in).
+M3_FLAGS := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+M0P_FLAGS := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
+$(eval $(call tfit_lib,cortex-m3,$(ARM)gcc,$(M3_FLAGS) -O2 -fstack-usage,$(ARM),check,libtfit_q31,$(TARGET_Q31_SRC)))
+$(eval $(call tfit_lib,cortex-m0plus,$(ARM)gcc,$(M0P_FLAGS) -O2 -fstack-usage,$(ARM),check,libtfit_q31,$(TARGET_Q31_SRC)))
 
 # The bit-exact compiler matrix (acceptance: gcc -O0/-O2/-O3 -march=native, clang -O2).
 $(eval $(call tfit_lib,bitexact-gcc-O0,$(CC),-O0,,check))

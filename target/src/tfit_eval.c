@@ -3,8 +3,8 @@
  *
  * Every call runs the same instruction sequence for a given model: the input
  * projection is branch-free, the family loops depend only on the model's
- * sizes, and the final pass masks every output with the input's validity
- * (a NaN/Inf input leaves +0.0f everywhere).  Branches below test only
+ * sizes, and every output is masked with the input's validity as it is
+ * stored (a NaN/Inf input leaves +0.0f everywhere).  Branches below test only
  * pointers and the model's family, never the input value.
  */
 #include "tfit_internal.h"
@@ -20,23 +20,21 @@ static tfit_status evaluate(const tfit_model *m, const float in[3], float *out)
     float g[3];
     uint32_t bad;
     const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+    const uint32_t keep = ~bad;
 
     switch (m->family) {
     case TFIT_FAMILY_MODAL:
-        tfit_eval_modal(m, g, out);
+        tfit_eval_modal(m, g, keep, out);
         break;
     case TFIT_FAMILY_ZHOU2017:
         tfit_eval_zhou2017(m, g, out);
+        for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
+            out[o] = tfit_masked(out[o], keep);
+        }
         break;
     default: /* nodal and contact share one layout */
-        tfit_eval_nodal(m, g, out);
+        tfit_eval_nodal(m, g, keep, out);
         break;
-    }
-
-    const uint32_t keep = ~bad;
-    const uint32_t n = 3u * m->n_out;
-    for (uint32_t o = 0u; o < n; ++o) {
-        out[o] = tfit_float(tfit_bits(out[o]) & keep);
     }
     /* -1 for bad input, else 1 when projected, else 0 — without a branch. */
     return (tfit_status)((int)(clamped & keep & 1u) - (int)(bad & 1u));

@@ -58,6 +58,12 @@ static inline float tfit_select(uint32_t mask, float a, float b)
     return tfit_float((tfit_bits(a) & mask) | (tfit_bits(b) & ~mask));
 }
 
+/* x with its bits and-ed with keep: x itself, or +0.0f when keep is 0. */
+static inline float tfit_masked(float x, uint32_t keep)
+{
+    return tfit_float(tfit_bits(x) & keep);
+}
+
 static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
 {
     return a ^ ((a ^ b) & tfit_mask(a < b));
@@ -84,16 +90,6 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
     return acc;
 }
 
-/* Dot product c0 v0 + c1 v1 + ... summed left to right. */
-static inline float tfit_dot(const float *c, const float *v, uint32_t n)
-{
-    float acc = c[0] * v[0];
-    for (uint32_t k = 1u; k < n; ++k) {
-        acc = acc + c[k] * v[k];
-    }
-    return acc;
-}
-
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
  * mask when the input was projected; *bad is all ones when the input held a
  * NaN or Inf (g is then computed from a zero input). */
@@ -102,10 +98,16 @@ uint32_t tfit_input_map(const float *map, const float x[3], float g[3], uint32_t
 /* Monomial basis of total degree p in g, graded order (tfit_basis.c). */
 void tfit_basis(uint32_t p, const float g[3], float *phi);
 
-/* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_families.c). */
-void tfit_eval_nodal(const tfit_model *m, const float g[3], float *out);
-void tfit_eval_modal(const tfit_model *m, const float g[3], float *out);
+/* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_nodal.c,
+ * tfit_modal.c, tfit_zhou2017.c).  Nodal and modal store every output and-ed
+ * with keep (all ones, or zero for a NaN/Inf input: header-format.md §5.5);
+ * zhou2017 accumulates into out, so tfit_eval.c masks after it. */
+void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
+void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
+
+/* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
+uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
 
 /* Expected coef[] length for the model's family, dims and n_out, or 0 when
  * they are invalid or beyond this build's capacity (tfit_layout.c). */

@@ -4,25 +4,38 @@
  * coef = input map (12) | A[r][T] | U[3 n_out][r]
  *   a_k    = A[k][0] + A[k][1] phi1 + ... (left to right)
  *   out[o] = U[o][0] a_0 + U[o][1] a_1 + ... (left to right)
+ * The modes are evaluated one output point (three rows) per iteration,
+ * sharing each amplitude; the output mask is applied as each word is stored.
  */
 #include "tfit_internal.h"
 
-void tfit_eval_modal(const tfit_model *m, const float g[3], float *out)
+void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out)
 {
     float phi[TFIT_MAX_TERMS];
     float a[TFIT_MAX_RANK];
     const uint32_t p = m->dims[0];
     const uint32_t r = m->dims[1];
     const uint32_t n_terms = TFIT_TERMS(p);
-    const uint32_t n_rows = 3u * m->n_out;
     const float *amp = m->coef + TFIT_INPUT_MAP_FLOATS;
-    const float *modes = amp + r * n_terms;
+    const float *u = amp + r * n_terms;
 
     tfit_basis(p, g, phi);
     for (uint32_t k = 0u; k < r; ++k) {
         a[k] = tfit_row(amp + k * n_terms, phi, n_terms);
     }
-    for (uint32_t o = 0u; o < n_rows; ++o) {
-        out[o] = tfit_dot(modes + o * r, a, r);
+    for (uint32_t j = 0u; j < m->n_out; ++j) {
+        const float *uy = u + r;
+        const float *uz = uy + r;
+        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
+        for (uint32_t k = 1u; k < r; ++k) {
+            x = x + u[k] * a[k];
+            y = y + uy[k] * a[k];
+            z = z + uz[k] * a[k];
+        }
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        u += 3u * r;
+        out += 3;
     }
 }

@@ -1,8 +1,9 @@
 /*
  * probe.c — evaluates every golden vector of every model of families.h once,
- * under callgrind, dumping the instruction count of each evaluation
- * (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare them: the count must
- * not depend on the input.
+ * float and Q31 forms, under callgrind, dumping the instruction count of
+ * each evaluation (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare
+ * them: the count must not depend on the input.  Q31 sets are numbered
+ * from 20 and their family ids shifted by 4 (5 nodal, 8 contact).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +39,22 @@ int main(void)
                                                               : tfit_displacements(m, x, out);
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", s, m->family, v,
                      (int)st);
+            CALLGRIND_DUMP_STATS_AT(label);
+        }
+        free(out);
+    }
+    static const tfit_golden_q31 *const q31[] = TFIT_FAMILIES_GOLDEN_Q31_SETS;
+    for (size_t s = 0; q31[s] != NULL; ++s) {
+        const tfit_model_q31 *m = q31[s]->model;
+        int32_t *out = malloc(3 * m->n_out * sizeof *out);
+        for (uint32_t v = 0; v < q31[s]->n_vec; ++v) {
+            char label[64];
+            const int32_t *x = q31[s]->in + 3 * v;
+            CALLGRIND_ZERO_STATS;
+            tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
+                                                              : tfit_displacements_q31(m, x, out);
+            snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", 20 + s,
+                     m->family + 4, v, (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
         }
         free(out);

@@ -10,6 +10,7 @@ rm -rf "$out"
 mkdir -p "$out"
 valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" \
     --toggle-collect=tfit_displacements --toggle-collect=tfit_contact_force \
+    --toggle-collect=tfit_displacements_q31 --toggle-collect=tfit_contact_force_q31 \
     --toggle-collect=control_branchy \
     "$probe" >"$out/probe.log" 2>&1 || { cat "$out/probe.log"; exit 1; }
 # Every dump file: "desc: Trigger: Client Request: set=S family=F vec=V status=X" and "totals: N".
@@ -27,14 +28,14 @@ awk '
     if (st[2] < 0) bad[key] = ir[2]; else if (st[2] == 1) clamp[key] = ir[2]; else ok[key] = ir[2]
 }
 END {
-    split("control nodal modal zhou2017 contact", name, " ")
-    printf "%-4s %-9s %7s %12s %12s %12s %s\n", "set", "family", "inputs", "in-envelope", "clamped", "NaN/Inf", "verdict"
+    split("control nodal modal zhou2017 contact nodal-q31 - - contact-q31", name, " ")
+    printf "%-4s %-11s %7s %12s %12s %12s %s\n", "set", "family", "inputs", "in-envelope", "clamped", "NaN/Inf", "verdict"
     fail = 0
     for (k = 0; k < 64; k++) {
         if (!(k in n)) continue
         v = (lo[k] == hi[k]) ? "identical" : "DIFFERENT"
         if (lo[k] != hi[k]) fail = 1
-        printf "%-4d %-9s %7d %12s %12s %12s %s\n", k, name[fam[k] + 1], n[k], ok[k], clamp[k], bad[k], v
+        printf "%-4d %-11s %7d %12s %12s %12s %s\n", k, name[fam[k] + 1], n[k], ok[k], clamp[k], bad[k], v
     }
     # The control costs more for larger inputs: the measurement must see it.
     if (!(99 in n) || lo[99] == hi[99]) { print "control: input-dependent function NOT detected"; fail = 1 }

@@ -15,3 +15,15 @@ void tf_target_view(const tf_model *m, tfit_model *t)
     t->node_ids = m->node_ids;
     t->crc32 = tf_model_crc32(m);
 }
+
+void tf_target_view_q31(const tf_q31 *q, tfit_model_q31 *t)
+{
+    t->api_version = TFIT_Q31_API_VERSION;
+    t->family = (uint32_t)q->family;
+    t->n_out = q->n_out;
+    t->degree = q->degree;
+    t->n_words = q->n_words;
+    t->q = q->q;
+    t->node_ids = q->node_ids;
+    t->crc32 = tf_q31_crc32(q);
+}

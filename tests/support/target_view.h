@@ -6,9 +6,14 @@
 #define TF_TARGET_VIEW_H
 
 #include "model.h"
+#include "q31.h"
 #include "tfit.h"
+#include "tfit_q31.h"
 
 /* Fills *t to describe m (tables shared, not copied), CRC included. */
 void tf_target_view(const tf_model *m, tfit_model *t);
+
+/* The same for a Q31 form. */
+void tf_target_view_q31(const tf_q31 *q, tfit_model_q31 *t);
 
 #endif /* TF_TARGET_VIEW_H */

@@ -1,0 +1,286 @@
+# firmware.mk — firmware images for Cortex-M (issue 6).
+#
+#   make firmware    cross-builds libtfit and the haptic-loop example for
+#                    STM32F407 (Cortex-M4F) and STM32H743 (Cortex-M7) with
+#                    every shipped header; prints flash/RAM per image and
+#                    the worst-case stack of each public function
+#   check-qemu       golden vectors (float and Q31) of every shipped header on
+#                    the QEMU boards mps2-an386 (M4F) and mps2-an500 (M7), and
+#                    the Q31 ones on mps2-an385 (M3) and microbit (M0, Armv6-M
+#                    like the M0+): bit-exact or the check fails; the startup
+#                    FPU check must reject a flush-to-zero / default-NaN FPU
+#   check-q31        the Q31 libraries for M3 and M0+ need nothing from
+#                    outside (nm -u: no soft float, no libgcc) and have no
+#                    mutable state
+#
+# "Shipped headers": coeffs/*.h (without *_golden.h) plus the test headers
+# below, so that real headers are picked up as they land.
+
+FW := $(B)/firmware
+FW_SHIPPED := $(filter-out %_golden.h,$(wildcard coeffs/*.h))
+FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h \
+              $(T)/gen/shapes.h
+fw_name = $(basename $(notdir $(1)))
+fw_upper = $(shell echo $(1) | tr a-z A-Z)
+
+FW_CFLAGS := $(STRICT) -ffreestanding -O2 -g -ffunction-sections -fdata-sections \
+             -Itarget/include -Ilinker -Itarget/examples
+FW_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-undefined -Llinker
+FW_STARTUP := linker/startup.c linker/startup.h
+FW_SEMIHOST := linker/semihost.c linker/semihost.h
+
+# Per core: compiler flags, library, QEMU board and its linker script.
+# m3 and m0 have no FPU: they run the Q31 evaluator only.
+FW_FLAGS_m4f := $(M4F_FLAGS)
+FW_FLAGS_m7 := $(M7_FLAGS)
+FW_FLAGS_m3 := $(M3_FLAGS)
+FW_FLAGS_m0 := $(M0P_FLAGS)
+FW_LIB_m4f := $(B)/cortex-m4f/libtfit.a
+FW_LIB_m7 := $(B)/cortex-m7/libtfit.a
+FW_LIB_m3 := $(B)/cortex-m3/libtfit_q31.a
+FW_LIB_m0 := $(B)/cortex-m0plus/libtfit_q31.a
+FW_QEMU_m4f := mps2-an386
+FW_QEMU_m7 := mps2-an500
+FW_QEMU_m3 := mps2-an385
+FW_QEMU_m0 := microbit
+FW_LD_m4f := mps2-an386.ld
+FW_LD_m7 := mps2-an500.ld
+FW_LD_m3 := mps2-an386.ld
+FW_LD_m0 := microbit.ld
+FW_SCRATCH_m0 := -DSCRATCH_WORDS=1536u
+FW_CORES := m4f m7
+FW_Q31_CORES := m3 m0
+
+DEBS_CHECK += qemu-system-arm
+
+# The block48-shaped test header (tests/firmware/gen_haptic.c).
+$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+$(T)/gen/haptic.h: $(T)/gen_haptic
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< $@
+$(T)/gen/shapes.h: $(T)/gen_haptic
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< shapes $@
+
+# --- golden vectors under QEMU --------------------------------------------------
+# $(call fw_golden,HEADER,CORE)
+define fw_golden
+$(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(FW_STARTUP) \
+    $(FW_SEMIHOST) $(FW_LIB_$(2)) linker/$(FW_LD_$(2)) linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_SCRATCH_$(2)) -I$(dir $(1)) \
+	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
+	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))"' \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_LD_$(2)) \
+	  -Wl,-Map=$$(@:.elf=.map) -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_golden,$(h),$(c)))))
+FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
+
+# The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
+$(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
+    tests/firmware/fpscr_reject.c $(FW_STARTUP) $(FW_SEMIHOST) | deps-check
+	@mkdir -p $(@D)
+	$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) $(if $(filter fpdscr,$*),-DPOKE_FPDSCR) \
+	  $(filter %.c,$^) $(FW_LDFLAGS) -T mps2-an386.ld -o $@
+
+.PHONY: check-qemu
+CHECKS += check-qemu
+check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
+	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit) =="
+	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	    tests/firmware/qemu_run.sh $(FW_QEMU_$(c)) $(FW)/$(c)/golden-$$h.elf; done;)
+	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
+	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
+	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
+	  >/dev/null && echo "startup rejects FPDSCR.DN = 1: ok"
+
+# --- Q31 libraries for cores without an FPU --------------------------------------
+.PHONY: check-q31
+CHECKS += check-q31
+check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
+	@echo "== Q31 evaluator for Cortex-M3 and Cortex-M0+: freestanding, no soft float =="
+	@set -e; for c in cortex-m3:"$(M3_FLAGS)" cortex-m0plus:"$(M0P_FLAGS)"; do \
+	  lib=$(B)/$${c%%:*}/libtfit_q31.a; \
+	  und=$$($(ARM)nm -u $$lib | awk 'NF == 2 { print $$2 }'); \
+	  if [ -n "$$und" ]; then echo "$$lib needs: $$und"; exit 1; fi; \
+	  state=$$($(ARM)size -A $$lib | awk '$$1 ~ /^\.(data|bss)/ && $$2 > 0'); \
+	  if [ -n "$$state" ]; then echo "$$lib has mutable state: $$state"; exit 1; fi; \
+	  $(ARM)gcc $${c#*:} -nostdlib -nostartfiles -Wl,--no-undefined -Wl,-e,tfit_displacements_q31 \
+	    -Wl,-u,tfit_contact_force_q31 -Wl,-u,tfit_model_check_q31 -Wl,-u,tfit_golden_run_q31 \
+	    $$lib -o $(B)/$${c%%:*}/q31-image.elf; \
+	  echo "$${c%%:*}: libtfit_q31.a needs no symbol from outside (no __aeabi_* soft float or" \
+	    "division), no .data/.bss, links with -nostdlib; .text $$($(ARM)size -A $$lib | \
+	    awk '$$1 ~ /^\.text/ { t += $$2 } END { print t }') bytes"; done
+
+# --- cycle model: static loop mixes and traced instruction mixes -------------
+# check-cycles proves, on both cores, that host/cycles.c describes the
+# compiled evaluator: (1) the loop bodies of the evaluation functions in the
+# linked library have exactly the instruction mixes the model assumes
+# (objdump), and (2) for every golden set of every header, every input
+# executed the same instructions under QEMU, and exactly the mix the model
+# predicts from the model's shape (so the header's cycle estimates are sums
+# over the real instruction stream).
+FW_TOOL_SRC := tests/firmware/insn_class.c
+FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map tfit_basis \
+                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017
+
+$(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
+    host/cycles.h $(B)/native/libtissuefit-host.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(FW_TOOL_SRC) $(call host_test_link,native) -o $@
+$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+
+# The libraries alone, linked (addresses resolved), for the static check and
+# the stack table: every function of the one merged object is kept.
+$(FW)/%/libtfit.elf: $(B)/cortex-%/libtfit.a
+	@mkdir -p $(@D)
+	$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_FLAGS_$*) -nostdlib -nostartfiles -Wl,--no-undefined -Wl,-e,tfit_displacements \
+	  $< -o $@
+define fw_q31_elf
+$(FW)/$(1)/libtfit_q31.elf: $(FW_LIB_$(1))
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_FLAGS_$(1)) -nostdlib -nostartfiles -Wl,--no-undefined \
+	  -Wl,-e,tfit_displacements_q31 $$< -o $$@
+endef
+$(foreach c,$(FW_Q31_CORES),$(eval $(call fw_q31_elf,$(c))))
+
+# Traced mixes of one golden image: $(FW)/CORE/trace-NAME.txt
+$(FW)/%.dis: $(FW)/%.elf
+	$(Q)$(ARM)objdump -d --no-show-raw-insn $< >$@
+define fw_trace
+$(FW)/$(2)/trace-$(call fw_name,$(1)).txt: $(FW)/$(2)/golden-$(call fw_name,$(1)).elf \
+    $(FW)/$(2)/golden-$(call fw_name,$(1)).dis $(T)/trace_mix
+	$$(call say,TRACE)
+	$(Q)timeout 300 qemu-system-arm -M $(FW_QEMU_$(2)) -display none -monitor none -serial none \
+	  -semihosting-config enable=on,target=native -kernel $$< \
+	  -d in_asm,exec,nochain -D $$(@:.txt=.log) >/dev/null 2>&1 || { echo "$$<: run failed"; exit 1; }
+	$(Q)$(T)/trace_mix $$(word 2,$$^) $$(@:.txt=.log) >$$@.tmp || { cat $$@.tmp; rm -f $$@.tmp; exit 1; }
+	$(Q)rm -f $$(@:.txt=.log) && mv $$@.tmp $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_trace,$(h),$(c)))))
+FW_TRACES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
+
+.PHONY: check-cycles
+CHECKS += check-cycles
+check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
+    $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf $(FW)/$(c)/libtfit.dis)
+	@echo "== cycle model: loop mixes (objdump) and executed mixes (QEMU trace) =="
+	@set -e; for c in $(FW_CORES); do \
+	  $(T)/insn_mix $(FW_EVAL_FUNCS) <$(FW)/$$c/libtfit.dis | grep ' loop ' | sort >$(FW)/$$c/loops.txt; \
+	  $(T)/check_cycle_model loops $$c | sort >$(FW)/$$c/loops-model.txt; \
+	  if ! diff $(FW)/$$c/loops-model.txt $(FW)/$$c/loops.txt >$(FW)/$$c/loops.diff; then \
+	    echo "$$c: compiled loops differ from host/cycles.c (< model, > objdump):"; \
+	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
+	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cycles.c"; done
+	@set -e; for c in $(FW_CORES) $(FW_Q31_CORES); do for h in $(FW_HEADERS); do \
+	  n=$$(basename $$h .h); \
+	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt | sed "s|^|$$c |"; done; done
+
+# --- haptic-loop example: STM32 images, QEMU and native runs ------------------
+FW_EXAMPLE := target/examples/haptic_loop.c target/examples/haptic_loop.h target/examples/board.h
+FW_SCRIPT := target/examples/haptic_script.c target/examples/haptic_script.h
+FW_STM32_LD_m4f := stm32f407.ld
+FW_STM32_LD_m7 := stm32h743.ld
+FW_CORE_DEF_m4f := -DHAPTIC_CORE_M4F
+FW_CORE_DEF_m7 := -DHAPTIC_CORE_M7
+
+$(FW)/cfg/%/haptic_config.h: tests/firmware/haptic_config.sh
+	@mkdir -p $(@D)
+	$(Q)$< $(filter %.h,$^) >$@.tmp && mv $@.tmp $@
+
+# $(call fw_haptic,HEADER,CORE): the STM32 image and the QEMU image
+define fw_haptic
+$(FW)/cfg/$(call fw_name,$(1))/haptic_config.h: $(1)
+$(FW)/$(2)/haptic-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) target/examples/board_stm32.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(FW_STARTUP) $(FW_LIB_$(2)) \
+    linker/$(FW_STM32_LD_$(2)) linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_STM32_LD_$(2)) \
+	  -Wl,-Map=$$(@:.elf=.map) -o $$@
+$(FW)/$(2)/haptic-qemu-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) $(FW_SCRIPT) target/examples/board_qemu.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(FW_STARTUP) $(FW_SEMIHOST) $(FW_LIB_$(2)) \
+    linker/$(FW_QEMU_$(2)).ld linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_CORE_DEF_$(2)) \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
+	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
+FW_HAPTIC_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
+FW_HAPTIC_QEMU := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-qemu-$(call fw_name,$(h)).elf))
+
+# Native build of the same loop (the fitting issue's `make demo` runs it over
+# its header): $(FW)/native/haptic-NAME
+define fw_haptic_native
+$(FW)/native/haptic-$(call fw_name,$(1)): $(FW_EXAMPLE) $(FW_SCRIPT) target/examples/board_native.c \
+    $(FW)/cfg/$(call fw_name,$(1))/haptic_config.h $(B)/lib/libtfit.a
+	@mkdir -p $$(@D)
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -Itarget/examples \
+	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) $$(filter %.c,$$^) $(B)/lib/libtfit.a -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(eval $(call fw_haptic_native,$(h))))
+
+# Worst-case stack of the public functions: -fstack-usage frames of the
+# library build along its call graph (tests/freestanding/callgraph.c).
+FW_PUBLIC := tfit_model_check tfit_model_crc32 tfit_displacements tfit_contact_force tfit_golden_run
+FW_PUBLIC_Q31 := tfit_model_check_q31 tfit_model_crc32_q31 tfit_displacements_q31 \
+                 tfit_contact_force_q31 tfit_golden_run_q31
+FW_STACK_LIBS := $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf) \
+                 $(foreach c,$(FW_Q31_CORES),$(FW)/$(c)/libtfit_q31.elf)
+fw_stack_tables = linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj && \
+	linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC_Q31)" \
+	  m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj m7:$(FW)/m7/libtfit.elf:$(B)/cortex-m7/obj \
+	  m3:$(FW)/m3/libtfit_q31.elf:$(B)/cortex-m3/obj m0+:$(FW)/m0/libtfit_q31.elf:$(B)/cortex-m0plus/obj
+
+.PHONY: firmware check-firmware
+firmware: $(FW_HAPTIC_IMAGES) $(T)/callgraph $(FW_STACK_LIBS) | deps-check
+	@echo "== firmware images: haptic loop x shipped headers, STM32F407 (M4F) and STM32H743 (M7) =="
+	@linker/size_table.sh $(FW_HAPTIC_IMAGES)
+	@echo
+	@echo "== worst-case stack of each public function (bytes; -fstack-usage along the call graph) =="
+	@$(fw_stack_tables)
+
+CHECKS += check-firmware
+check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic $(FW)/cfg/haptic/haptic_config.h \
+    $(T)/callgraph $(FW_STACK_LIBS)
+	@echo "== haptic-loop firmware: links for M4F and M7 with every header, no heap =="
+	@set -e; for f in $(FW_HAPTIC_IMAGES); do \
+	  if grep -qE '\b(_sbrk|malloc|free|calloc|realloc)\b' $${f%.elf}.map; then \
+	    echo "$$f: the map file mentions a heap function"; exit 1; fi; done; \
+	  echo "$(words $(FW_HAPTIC_IMAGES)) images linked with --no-undefined; no _sbrk/malloc in any map"
+	@set -e; for c in $(FW_CORES); do \
+	  case $$c in m4f) m=$(FW_QEMU_m4f);; m7) m=$(FW_QEMU_m7);; esac; \
+	  for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	    printf '%-9s %-11s ' $$h $$m; \
+	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/haptic-qemu-$$h.elf; done; done
+	@$(FW)/native/haptic-haptic
+	@if $(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -DHAPTIC_CORE_M4F -DHAPTIC_SERVO_HZ=10000u \
+	    -I$(FW)/cfg/haptic -I$(T)/gen -fsyntax-only target/examples/haptic_loop.c 2>$(FW)/budget.err; then \
+	  echo "the servo budget check accepted haptic.h at 10 kHz on the M4F"; exit 1; fi; \
+	  grep -q "exceed the servo budget" $(FW)/budget.err && \
+	  echo "servo budget: haptic.h fits 1 kHz on both cores; 10 kHz on the M4F is refused at compile time"
+	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
+
