@@ -5,6 +5,9 @@
 # exact apt-get line and stops.
 
 SHELL := /bin/bash
+# A failing command inside a pipe fails the recipe (a checker piped into sed
+# must not have its verdict swallowed).
+.SHELLFLAGS := -o pipefail -c
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SUFFIXES:

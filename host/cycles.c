@@ -138,10 +138,10 @@ static const block blocks[N_BLOCKS] = {
     [EVAL_ZHOU] = {"evaluate", 0, 0, SAME("alu=21 load=5 ldm_pc=1 stm=1 words=10 branch=6")},
     [MASK_WORD] = {"evaluate", 1, 1, SAME("alu=3 load=1 store=1 branch=1")},
     [INPUT_PATH] = {"tfit_input_map", 0, 0,
-                    {"alu=86 load=1 store=1 ldm=1 ldm_pc=1 stm=1 words=14 fload=13 fstore=5 "
-                     "fadd=15 fmul=31 fdiv=6 fother=5 fmov=14",
-                     "alu=87 load=1 store=1 ldm=1 ldm_pc=1 stm=1 words=14 fload=13 fstore=5 "
-                     "fadd=15 fmul=31 fdiv=6 fother=5 fmov=14"}},
+                    {"alu=81 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=8 fload=12 fstore=3 "
+                     "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14",
+                     "alu=82 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=12 fload=12 fstore=3 "
+                     "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14"}},
     [BASIS_P0] = {"tfit_basis", 0, 0, SAME("alu=3 store=1 branch=3")},
     [BASIS_P1] = {"tfit_basis", 0, 0, SAME("alu=2 load=3 store=4 branch=2")},
     [BASIS_PATH] = {"tfit_basis", 0, 0, SAME("alu=8 store=1 ldm_pc=1 stm=1 words=14 branch=2")},

@@ -6,6 +6,7 @@
 #include "ref_eval.h"
 
 #include <math.h>
+#include <string.h>
 
 #define TFIT_TERMS_MAX ((TFIT_MAX_DEGREE + 1) * (TFIT_MAX_DEGREE + 2) * (TFIT_MAX_DEGREE + 3) / 6)
 
@@ -33,12 +34,6 @@ static float f_mul(arith *c, float a, float b)
     return (float)((double)a * (double)b);
 }
 
-static float f_div(arith *c, float a, float b)
-{
-    c->n.div++;
-    return (float)((double)a / (double)b);
-}
-
 static float largest_magnitude(const float v[3])
 {
     float m = fabsf(v[0]);
@@ -48,6 +43,27 @@ static float largest_magnitude(const float v[3])
         }
     }
     return m;
+}
+
+static uint32_t bits_of(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static float float_of(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+/* 2^(target - e) for |v| in [2^e, 2^(e+1)): moves |v| into [2^target, 2^(target+1)). */
+static float power_of_two_to(int target, float v)
+{
+    int e = (int)((bits_of(fabsf(v)) >> 23) & 0xff) - 127;
+    return ldexpf(1.0f, target - e);
 }
 
 static void input_map(arith *c, const tf_model *m, const float in[3], float g[3], int *clamped,
@@ -63,10 +79,9 @@ static void input_map(arith *c, const tf_model *m, const float in[3], float g[3]
     }
     /* step 3 */
     float big = largest_magnitude(x);
-    float divisor = big > 0x1p64f ? big : 1.0f;
-    float factor = big > 0x1p64f ? 0x1p64f : 1.0f;
+    float factor = big > 0x1p64f ? power_of_two_to(64, big) : 1.0f;
     for (int i = 0; i < 3; ++i) {
-        x[i] = f_mul(c, f_div(c, x[i], divisor), factor);
+        x[i] = f_mul(c, x[i], factor);
     }
     /* steps 4-5 */
     float d[3];
@@ -80,14 +95,15 @@ static void input_map(arith *c, const tf_model *m, const float in[3], float g[3]
     /* step 6 */
     float gmax = largest_magnitude(g);
     int far = gmax > 1.0f;
+    float unit = far ? power_of_two_to(0, gmax) : 1.0f;
     for (int i = 0; i < 3; ++i) {
-        g[i] = f_div(c, g[i], far ? gmax : 1.0f);
+        g[i] = f_mul(c, g[i], unit);
     }
     /* steps 7-9 */
     float s2 = f_add(c, f_add(c, f_mul(c, g[0], g[0]), f_mul(c, g[1], g[1])), f_mul(c, g[2], g[2]));
-    int outside = s2 > 1.0f;
+    int outside = far || s2 > 1.0f;
     float s = outside ? s2 : 1.0f;
-    float y = f_sub(c, 1.16796875f, f_mul(c, 0.2109375f, s));
+    float y = float_of(0x5f3759dfu - (bits_of(s) >> 1));
     for (int it = 0; it < 3; ++it) {
         float t = f_sub(c, 3.0f, f_mul(c, f_mul(c, s, y), y));
         y = f_mul(c, f_mul(c, 0.5f, y), t);
@@ -96,7 +112,7 @@ static void input_map(arith *c, const tf_model *m, const float in[3], float g[3]
     for (int i = 0; i < 3; ++i) {
         g[i] = f_mul(c, g[i], scale);
     }
-    *clamped = far || outside;
+    *clamped = outside;
 }
 
 /* Monomials of total degree <= p, each computed as g_v * (its parent), v the

@@ -277,10 +277,10 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	    printf '%-9s %-11s ' $$h $$m; \
 	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/haptic-qemu-$$h.elf; done; done
 	@$(FW)/native/haptic-haptic
-	@if $(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -DHAPTIC_CORE_M4F -DHAPTIC_SERVO_HZ=10000u \
+	@if $(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -DHAPTIC_CORE_M4F -DHAPTIC_SERVO_HZ=20000u \
 	    -I$(FW)/cfg/haptic -I$(T)/gen -fsyntax-only target/examples/haptic_loop.c 2>$(FW)/budget.err; then \
-	  echo "the servo budget check accepted haptic.h at 10 kHz on the M4F"; exit 1; fi; \
+	  echo "the servo budget check accepted haptic.h at 20 kHz on the M4F"; exit 1; fi; \
 	  grep -q "exceed the servo budget" $(FW)/budget.err && \
-	  echo "servo budget: haptic.h fits 1 kHz on both cores; 10 kHz on the M4F is refused at compile time"
+	  echo "servo budget: haptic.h fits 1 kHz on both cores; 20 kHz on the M4F is refused at compile time"
 	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
 

@@ -13,7 +13,7 @@
 
 #define BOUND_LIMIT 0x1p100f
 #define X0_LIMIT 0x1p64f
-#define W_LIMIT 0x1p60f
+#define W_LIMIT 0x1p56f
 
 static float fabs_(float x)
 {
