@@ -1,0 +1,119 @@
+#!/bin/sh
+# run_reference.sh DECK_TOOL WORK DATA
+#
+# The CalculiX reference study of block48 (docs/calculix-reference.md): one
+# CalculiX run at a time, each with three load steps (fx, fy, fz).
+#
+# Settings come from the environment (tests/calculix.mk sets them):
+#   LEVELS       "name:divisions:layers ..." coarse to fine, nu = 0.49, C3D20R
+#   NUS          Poisson ratios of the sweep, run at SWEEP_LEVEL
+#   LOCK_LEVEL   level of the element comparison: C3D20 (full integration)
+#                against C3D20R at nu = 0.49 and 0.499, and fz applied as
+#                a *DLOAD pressure against the consistent nodal loads
+#   LAYER_RUNS   "level:layers ..." extra runs of a level with other layer
+#                counts (through-thickness convergence)
+#
+# Decks, CalculiX output and logs stay in WORK (build/calculix).  DATA
+# (tests/calculix/data) is written only after every run succeeded:
+#   block48_<case>_<level>.csv, block48_nu<nu>_<case>.csv, block48_reference.csv,
+#   block48_runs.csv       run,element,nu,divisions,layers,elements,nodes,dofs,
+#                          threads,seconds,max_rss_mb
+#   block48_reactions.csv  run,case,fx,fy,fz,rx,ry,rz
+#   block48_node61.csv     run,element,nu,divisions,layers,case,ux,uy,uz
+# A run whose deck is unchanged and whose output is present is not repeated
+# (delete WORK to force it).  CCX_THREADS (default 1) threads per run.
+set -eu
+[ $# -eq 3 ] || { echo "usage: $0 DECK_TOOL WORK DATA (settings in the environment)" >&2; exit 2; }
+deck_tool=$1 work=$2 data=$3
+levels=$LEVELS nus=$NUS sweep_level=$SWEEP_LEVEL lock_level=$LOCK_LEVEL layer_runs=$LAYER_RUNS
+here=$(cd "$(dirname "$0")" && pwd)
+threads=${CCX_THREADS:-1}
+mkdir -p "$work/out"
+out=$work/out
+echo "run,element,nu,divisions,layers,elements,nodes,dofs,threads,seconds,max_rss_mb" > "$out/runs.csv"
+echo "run,case,fx,fy,fz,rx,ry,rz" > "$out/reactions.csv"
+echo "run,element,nu,divisions,layers,case,ux,uy,uz" > "$out/node61.csv"
+
+# level_field NAME FIELD: divisions (2) or layers (3) of a level
+level_field() {
+    for l in $levels; do
+        [ "${l%%:*}" = "$1" ] && { echo "$l" | cut -d: -f"$2"; return; }
+    done
+    echo "run_reference: level $1 is not in LEVELS" >&2; exit 2
+}
+
+# solve RUN DIVISIONS LAYERS NU ELEMENT [DECK OPTIONS...]
+solve() {
+    run=$1 n=$2 layers=$3 nu=$4 element=$5
+    shift 5
+    "$deck_tool" --divisions "$n" --layers "$layers" --nu "$nu" --element "$element" "$@" \
+        > "$work/$run.inp.new"
+    if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
+        rm "$work/$run.inp.new"
+        echo "calculix: $run: deck unchanged, reusing its results" >&2
+    else
+        mv "$work/$run.inp.new" "$work/$run.inp"
+        rm -f "$work/$run.dat" "$work/$run.time"
+        echo "calculix: $run: ${n}x${n}x$layers $element, nu = $nu ..." >&2
+        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M" -o "$run.time.new" \
+            ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
+        grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
+        mv "$work/$run.time.new" "$work/$run.time"
+    fi
+    record "$run" "$n" "$layers" "$nu" "$element"
+}
+
+# record RUN N LAYERS NU ELEMENT: CSV per step, reactions, node 61, run line
+record() {
+    set -- "$@" $(awk '$1 == "**" && $2 == "SIZE" { print $3, $4, $5 }' "$work/$1.inp") $(cat "$work/$1.time")
+    echo "$1,$5,$4,$2,$3,$6,$7,$8,$threads,$9,$(awk -v kb="${10}" 'BEGIN { printf "%.0f", kb / 1024 }')" >> "$out/runs.csv"
+    echo "calculix: $1: $9 s, $(awk -v kb="${10}" 'BEGIN { printf "%.0f", kb / 1024 }') MB" >&2
+    awk -f "$here/dat_reactions.awk" "$work/$1.inp" "$work/$1.dat" | sed "s/^/$1,/" >> "$out/reactions.csv"
+    step=0
+    for c in $(awk '$1 == "**" && $2 == "STEP" { print $4 }' "$work/$1.inp"); do
+        step=$((step + 1))
+        awk -v step=$step -f "$here/dat_to_csv.awk" "$work/$1.inp" "$work/$1.dat" > "$out/$1_$c.csv"
+        awk -F, -v p="$1,$5,$4,$2,$3,$c" '$1 == 61 { print p "," $5 "," $6 "," $7 }' "$out/$1_$c.csv" >> "$out/node61.csv"
+    done
+}
+
+nu_ref=0.49
+for l in $levels; do
+    name=${l%%:*}
+    solve "$name" "$(level_field "$name" 2)" "$(level_field "$name" 3)" $nu_ref C3D20R
+done
+for nu in $nus; do
+    [ "$nu" = $nu_ref ] && continue
+    solve "${sweep_level}_nu$nu" "$(level_field "$sweep_level" 2)" "$(level_field "$sweep_level" 3)" "$nu" C3D20R
+done
+n=$(level_field "$lock_level" 2) layers=$(level_field "$lock_level" 3)
+[ "$lock_level" = "$sweep_level" ] || solve "${lock_level}_nu0.499" "$n" "$layers" 0.499 C3D20R
+for nu in $nu_ref 0.499; do
+    solve "${lock_level}_C3D20_nu$nu" "$n" "$layers" "$nu" C3D20
+done
+solve "${lock_level}_pressure" "$n" "$layers" $nu_ref C3D20R --cases fz --pressure
+# The pressure run checks the consistent nodal loads: same field expected.
+awk -F, 'FNR == 1 { f++; next } f == 1 { for (k = 5; k <= 7; k++) u[$1, k] = $k; next }
+         { for (k = 5; k <= 7; k++) { d = $k - u[$1, k]; if (d < 0) d = -d; if (d > m) m = d } }
+         END { printf "calculix: fz as *DLOAD pressure vs consistent nodal loads: max |du| = %.3g mm over the 121 nodes\n", m }' \
+    "$out/${lock_level}_fz.csv" "$out/${lock_level}_pressure_fz.csv" >&2
+for r in $layer_runs; do
+    l=${r%%:*} layers=${r#*:}
+    solve "${l}_layers$layers" "$(level_field "$l" 2)" "$layers" $nu_ref C3D20R
+done
+
+# Everything ran: publish.
+mkdir -p "$data"
+for c in fx fy fz; do
+    for l in $levels; do cp "$out/${l%%:*}_$c.csv" "$data/block48_${c}_${l%%:*}.csv"; done
+    for nu in $nus; do
+        run=${sweep_level}_nu$nu
+        [ "$nu" = $nu_ref ] && run=$sweep_level
+        cp "$out/${run}_$c.csv" "$data/block48_nu${nu}_$c.csv"
+    done
+done
+finest=$(for l in $levels; do echo "${l%%:*}"; done | tail -n 1)
+{ echo "case,level,file"; for c in fx fy fz; do echo "$c,$finest,block48_${c}_$finest.csv"; done; } \
+    > "$data/block48_reference.csv"
+for t in runs reactions node61; do cp "$out/$t.csv" "$data/block48_$t.csv"; done
+echo "calculix: data written to $data" >&2
