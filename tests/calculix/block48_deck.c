@@ -20,7 +20,10 @@
  * 8-node face: -A t / 12 at the corners, +A t / 3 at the midsides
  * (A = face area; the shape functions' integrals over a rectangle).  For fz
  * the pressure form (*DLOAD P2 on the top faces) can be asked for instead,
- * as an independent check of those nodal loads.
+ * as an independent check of those nodal loads.  --point puts the whole force
+ * on node 61 instead, as the seed (Zhou 2017) did: a point load has no
+ * converged answer (the displacement under it grows without bound as the
+ * mesh refines), which the study shows beside the patch load.
  *
  * Comment lines the extraction reads (CalculiX ignores lines starting **):
  *   ** SIZE elements nodes free_dofs
@@ -46,7 +49,7 @@ typedef struct {
     int layers;       /* elements through the thickness */
     double nu;
     const char *element;
-    int pressure;     /* fz as *DLOAD pressure instead of nodal loads */
+    enum { LOAD_PATCH, LOAD_PRESSURE, LOAD_POINT } load;
     int cases[MAX_CASES];
     int ncases;
 } deck;
@@ -54,6 +57,8 @@ typedef struct {
 static const char *const case_name[MAX_CASES] = {"fx", "fy", "fz"};
 /* Unit force of each case: +x, +y and -z (pressing into the block). */
 static const double case_force[MAX_CASES][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+static const char *const load_form[] = {"consistent nodal loads", "pressure (fz)",
+                                        "point load at node 61"};
 
 static int lattice(const deck *d) { return 2 * d->n + 1; }
 
@@ -92,7 +97,7 @@ static void write_header(const deck *d)
     printf("** block48 (GUIDE 5) written by tests/calculix/block48_deck\n");
     printf("** %d x %d x %d %s elements, nu = %.15g, E = %.15g MPa, load as %s\n", d->n, d->n,
            d->layers, d->element, d->nu, YOUNG,
-           d->pressure ? "pressure (fz)" : "consistent nodal loads");
+           load_form[d->load]);
     printf("** SIZE %ld %ld %ld\n", elements, nodes, 3 * (nodes - fixed));
     for (int s = 0; s < d->ncases; ++s) {
         const double *f = case_force[d->cases[s]];
@@ -198,7 +203,8 @@ static void write_sets(const deck *d)
 }
 
 /* Consistent nodal weights (area each node carries) of a uniform traction
- * on the patch, on the top layer's lattice: w[i + K j]. */
+ * on the patch, on the top layer's lattice: w[i + K j].  A point load puts
+ * the patch's whole area on node 61. */
 static double *patch_weights(const deck *d)
 {
     int s = lattice(d);
@@ -206,6 +212,10 @@ static double *patch_weights(const deck *d)
     if (w == NULL) {
         fprintf(stderr, "block48_deck: out of memory\n");
         exit(1);
+    }
+    if (d->load == LOAD_POINT) {
+        w[d->n + s * d->n] = PATCH * PATCH;
+        return w;
     }
     double h = SIDE / d->n, area = h * h;
     int lo = 9 * d->n / 20, hi = 11 * d->n / 20;
@@ -228,7 +238,7 @@ static void write_step(const deck *d, int step, const double *w)
 {
     int c = d->cases[step];
     printf("** load case %s\n*STEP\n*STATIC\n", case_name[c]);
-    if (d->pressure) {
+    if (d->load == LOAD_PRESSURE) {
         printf("*DLOAD, OP=NEW\nPATCH,P2,%.15g\n", 1.0 / (PATCH * PATCH));
     } else {
         int s = lattice(d);
@@ -253,13 +263,14 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: block48_deck --divisions N --layers L [--nu V] [--element C3D20R|C3D20]\n"
-            "                    [--cases fx,fy,fz] [--pressure]   > deck.inp\n"
+            "                    [--cases fx,fy,fz] [--pressure | --point]   > deck.inp\n"
             "  --divisions N  elements per side in plane, a multiple of 20 (h = 48/N mm)\n"
             "  --layers L     elements through the 6 mm thickness\n"
             "  --nu V         Poisson's ratio, 0 <= V < 0.5 (default 0.49)\n"
             "  --element T    C3D20R (default, 2x2x2 points) or C3D20 (3x3x3 points)\n"
             "  --cases LIST   load cases in step order (default fx,fy,fz)\n"
-            "  --pressure     apply fz as *DLOAD pressure P2 (cases must be fz only)\n");
+            "  --pressure     apply fz as *DLOAD pressure P2 (cases must be fz only)\n"
+            "  --point        the whole force on node 61 instead of the patch\n");
 }
 
 static int parse_cases(deck *d, const char *list)
@@ -289,7 +300,8 @@ static int parse_args(deck *d, int argc, char **argv)
         {"divisions", required_argument, NULL, 'n'}, {"layers", required_argument, NULL, 'l'},
         {"nu", required_argument, NULL, 'v'},        {"element", required_argument, NULL, 'e'},
         {"cases", required_argument, NULL, 'c'},     {"pressure", no_argument, NULL, 'p'},
-        {"help", no_argument, NULL, 'h'},            {NULL, 0, NULL, 0}};
+        {"point", no_argument, NULL, 'P'},       {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0}};
     *d = (deck){.n = 0, .layers = 0, .nu = 0.49, .element = "C3D20R"};
     parse_cases(d, "fx,fy,fz");
     char *end;
@@ -300,7 +312,8 @@ static int parse_args(deck *d, int argc, char **argv)
         case 'v': d->nu = strtod(optarg, &end); if (*end) return -1; break;
         case 'e': d->element = optarg; break;
         case 'c': if (parse_cases(d, optarg) != 0) return -1; break;
-        case 'p': d->pressure = 1; break;
+        case 'p': if (d->load != LOAD_PATCH) return -1; d->load = LOAD_PRESSURE; break;
+        case 'P': if (d->load != LOAD_PATCH) return -1; d->load = LOAD_POINT; break;
         case 'h': usage(stdout); exit(0);
         default: return -1;
         }
@@ -308,7 +321,7 @@ static int parse_args(deck *d, int argc, char **argv)
     if (optind != argc || d->n <= 0 || d->n % 20 != 0 || d->n > 400 || d->layers <= 0 ||
         d->layers > 100 || !(d->nu >= 0 && d->nu < 0.5) ||
         (strcmp(d->element, "C3D20R") != 0 && strcmp(d->element, "C3D20") != 0) ||
-        (d->pressure && (d->ncases != 1 || d->cases[0] != 2))) {
+        (d->load == LOAD_PRESSURE && (d->ncases != 1 || d->cases[0] != 2))) {
         return -1;
     }
     return 0;
