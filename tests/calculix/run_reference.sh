@@ -10,29 +10,34 @@
 #   LOCK_LEVEL   level of the element comparison: C3D20 (full integration)
 #                against C3D20R at nu = 0.49 and 0.499, and fz applied as
 #                a *DLOAD pressure against the consistent nodal loads
-#   LAYER_RUNS   "level:layers ..." extra runs of a level with other layer
-#                counts (through-thickness convergence)
+#   MESH_RUNS    "level:layers:nu ..." extra C3D20R runs on a level's in-plane
+#                mesh with another layer count or Poisson ratio: through-
+#                thickness convergence, and whether nu = 0.499 depends on h
+#   POINT_LEVELS levels run again with the force on node 61 alone (as the
+#                seed did), to show that a point load does not converge
 #
 # Decks, CalculiX output and logs stay in WORK (build/calculix).  DATA
 # (tests/calculix/data) is written only after every run succeeded:
 #   block48_<case>_<level>.csv, block48_nu<nu>_<case>.csv, block48_reference.csv,
-#   block48_runs.csv       run,element,nu,divisions,layers,elements,nodes,dofs,
-#                          threads,seconds,max_rss_mb
+#   block48_runs.csv       run,element,nu,divisions,layers,load,elements,nodes,
+#                          dofs,threads,seconds,max_rss_mb  (load: patch,
+#                          pressure or point)
 #   block48_reactions.csv  run,case,fx,fy,fz,rx,ry,rz
-#   block48_node61.csv     run,element,nu,divisions,layers,case,ux,uy,uz
+#   block48_node61.csv     run,element,nu,divisions,layers,load,case,ux,uy,uz
 # A run whose deck is unchanged and whose output is present is not repeated
 # (delete WORK to force it).  CCX_THREADS (default 1) threads per run.
 set -eu
 [ $# -eq 3 ] || { echo "usage: $0 DECK_TOOL WORK DATA (settings in the environment)" >&2; exit 2; }
 deck_tool=$1 work=$2 data=$3
-levels=$LEVELS nus=$NUS sweep_level=$SWEEP_LEVEL lock_level=$LOCK_LEVEL layer_runs=$LAYER_RUNS
+levels=$LEVELS nus=$NUS sweep_level=$SWEEP_LEVEL lock_level=$LOCK_LEVEL mesh_runs=$MESH_RUNS
+point_levels=$POINT_LEVELS
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
 mkdir -p "$work/out"
 out=$work/out
-echo "run,element,nu,divisions,layers,elements,nodes,dofs,threads,seconds,max_rss_mb" > "$out/runs.csv"
+echo "run,element,nu,divisions,layers,load,elements,nodes,dofs,threads,seconds,max_rss_mb" > "$out/runs.csv"
 echo "run,case,fx,fy,fz,rx,ry,rz" > "$out/reactions.csv"
-echo "run,element,nu,divisions,layers,case,ux,uy,uz" > "$out/node61.csv"
+echo "run,element,nu,divisions,layers,load,case,ux,uy,uz" > "$out/node61.csv"
 
 # level_field NAME FIELD: divisions (2) or layers (3) of a level
 level_field() {
@@ -44,8 +49,9 @@ level_field() {
 
 # solve RUN DIVISIONS LAYERS NU ELEMENT [DECK OPTIONS...]
 solve() {
-    run=$1 n=$2 layers=$3 nu=$4 element=$5
+    run=$1 n=$2 layers=$3 nu=$4 element=$5 load=patch
     shift 5
+    case " $* " in *" --pressure "*) load=pressure ;; *" --point "*) load=point ;; esac
     "$deck_tool" --divisions "$n" --layers "$layers" --nu "$nu" --element "$element" "$@" \
         > "$work/$run.inp.new"
     if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
@@ -55,25 +61,29 @@ solve() {
         mv "$work/$run.inp.new" "$work/$run.inp"
         rm -f "$work/$run.dat" "$work/$run.time"
         echo "calculix: $run: ${n}x${n}x$layers $element, nu = $nu ..." >&2
-        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M" -o "$run.time.new" \
+        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M $threads" -o "$run.time.new" \
             ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
         grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
         mv "$work/$run.time.new" "$work/$run.time"
     fi
-    record "$run" "$n" "$layers" "$nu" "$element"
+    record "$run" "$n" "$layers" "$nu" "$element" "$load"
 }
 
-# record RUN N LAYERS NU ELEMENT: CSV per step, reactions, node 61, run line
+# record RUN N LAYERS NU ELEMENT LOAD: CSV per step, reactions, node 61, run line
 record() {
-    set -- "$@" $(awk '$1 == "**" && $2 == "SIZE" { print $3, $4, $5 }' "$work/$1.inp") $(cat "$work/$1.time")
-    echo "$1,$5,$4,$2,$3,$6,$7,$8,$threads,$9,$(awk -v kb="${10}" 'BEGIN { printf "%.0f", kb / 1024 }')" >> "$out/runs.csv"
-    echo "calculix: $1: $9 s, $(awk -v kb="${10}" 'BEGIN { printf "%.0f", kb / 1024 }') MB" >&2
-    awk -f "$here/dat_reactions.awk" "$work/$1.inp" "$work/$1.dat" | sed "s/^/$1,/" >> "$out/reactions.csv"
+    run=$1 n=$2 layers=$3 nu=$4 element=$5 load=$6
+    size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5 }' "$work/$run.inp")
+    read -r seconds kb used_threads < "$work/$run.time"
+    mb=$(awk -v kb="$kb" 'BEGIN { printf "%.0f", kb / 1024 }')
+    echo "$run,$element,$nu,$n,$layers,$load,$size,$used_threads,$seconds,$mb" >> "$out/runs.csv"
+    echo "calculix: $run: $seconds s, $mb MB" >&2
+    awk -f "$here/dat_reactions.awk" "$work/$run.inp" "$work/$run.dat" | sed "s/^/$run,/" >> "$out/reactions.csv"
     step=0
-    for c in $(awk '$1 == "**" && $2 == "STEP" { print $4 }' "$work/$1.inp"); do
+    for c in $(awk '$1 == "**" && $2 == "STEP" { print $4 }' "$work/$run.inp"); do
         step=$((step + 1))
-        awk -v step=$step -f "$here/dat_to_csv.awk" "$work/$1.inp" "$work/$1.dat" > "$out/$1_$c.csv"
-        awk -F, -v p="$1,$5,$4,$2,$3,$c" '$1 == 61 { print p "," $5 "," $6 "," $7 }' "$out/$1_$c.csv" >> "$out/node61.csv"
+        awk -v step=$step -f "$here/dat_to_csv.awk" "$work/$run.inp" "$work/$run.dat" > "$out/${run}_$c.csv"
+        awk -F, -v p="$run,$element,$nu,$n,$layers,$load,$c" '$1 == 61 { print p "," $5 "," $6 "," $7 }' \
+            "$out/${run}_$c.csv" >> "$out/node61.csv"
     done
 }
 
@@ -97,9 +107,14 @@ awk -F, 'FNR == 1 { f++; next } f == 1 { for (k = 5; k <= 7; k++) u[$1, k] = $k;
          { for (k = 5; k <= 7; k++) { d = $k - u[$1, k]; if (d < 0) d = -d; if (d > m) m = d } }
          END { printf "calculix: fz as *DLOAD pressure vs consistent nodal loads: max |du| = %.3g mm over the 121 nodes\n", m }' \
     "$out/${lock_level}_fz.csv" "$out/${lock_level}_pressure_fz.csv" >&2
-for r in $layer_runs; do
-    l=${r%%:*} layers=${r#*:}
-    solve "${l}_layers$layers" "$(level_field "$l" 2)" "$layers" $nu_ref C3D20R
+for r in $mesh_runs; do
+    l=$(echo "$r" | cut -d: -f1) layers=$(echo "$r" | cut -d: -f2) nu=$(echo "$r" | cut -d: -f3)
+    name=${l}_layers$layers
+    [ "$nu" = $nu_ref ] || name=${name}_nu$nu
+    solve "$name" "$(level_field "$l" 2)" "$layers" "$nu" C3D20R
+done
+for l in $point_levels; do
+    solve "${l}_point" "$(level_field "$l" 2)" "$(level_field "$l" 3)" $nu_ref C3D20R --point
 done
 
 # Everything ran: publish.
