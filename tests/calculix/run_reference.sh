@@ -77,7 +77,9 @@ record() {
     mb=$(awk -v kb="$kb" 'BEGIN { printf "%.0f", kb / 1024 }')
     echo "$run,$element,$nu,$n,$layers,$load,$size,$used_threads,$seconds,$mb" >> "$out/runs.csv"
     echo "calculix: $run: $seconds s, $mb MB" >&2
-    awk -f "$here/dat_reactions.awk" "$work/$run.inp" "$work/$run.dat" | sed "s/^/$run,/" >> "$out/reactions.csv"
+    # (no pipe: a failed extraction must stop the study under set -e)
+    awk -f "$here/dat_reactions.awk" "$work/$run.inp" "$work/$run.dat" > "$out/$run.reactions"
+    sed "s/^/$run,/" "$out/$run.reactions" >> "$out/reactions.csv"
     step=0
     for c in $(awk '$1 == "**" && $2 == "STEP" { print $4 }' "$work/$run.inp"); do
         step=$((step + 1))
