@@ -7,6 +7,7 @@
 #   make calculix-report      from the committed data: docs/calculix-*.png,
 #                             build/calculix/tables.md and vtk/*.vtk (ParaView)
 #   check-calculix-data       (make check) validates the committed data
+#   check-calculix-deck       (make check) the deck writer's counts, loads, usage
 
 DEBS_CALCULIX := calculix-ccx time
 DEBS_CALCULIX_PLOT := gnuplot-nox
@@ -39,8 +40,9 @@ CX_LEVEL_NAMES := $(foreach l,$(CALCULIX_LEVELS),$(firstword $(subst :, ,$(l))))
 CX_CHECK_ARGS := $(call cx_list,$(CX_LEVEL_NAMES)) $(call cx_list,$(CALCULIX_NUS)) \
                  $(CALCULIX_SWEEP_LEVEL) $(CALCULIX_RMS_BOUND) $(CALCULIX_N61_BOUND)
 
-.PHONY: deps-calculix deps-calculix-plot calculix-reference calculix-report check-calculix-data
-CHECKS += check-calculix-data
+.PHONY: deps-calculix deps-calculix-plot calculix-reference calculix-report check-calculix-data \
+        check-calculix-deck
+CHECKS += check-calculix-data check-calculix-deck
 
 deps-calculix: ; $(call ensure_debs,$(DEBS_CALCULIX))
 deps-calculix-plot: ; $(call ensure_debs,$(DEBS_CALCULIX_PLOT))
@@ -78,3 +80,7 @@ calculix-report: | deps-calculix-plot
 check-calculix-data: $(CX)/check_data
 	@echo "== CalculiX reference data for block48 =="
 	@tests/calculix/check_data.sh $< $(CX_DATA) $(CX)/mutant $(CX_CHECK_ARGS)
+
+check-calculix-deck: $(CX)/block48_deck
+	@echo "== CalculiX deck writer for block48 =="
+	@tests/calculix/check_deck.sh $<
