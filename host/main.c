@@ -11,6 +11,8 @@
 
 static const tf_command *const commands[] = {
     &tf_cmd_demo_model,
+    &tf_cmd_solve,
+    &tf_cmd_verify,
 };
 #define N_COMMANDS (sizeof commands / sizeof commands[0])
 
