@@ -3,11 +3,17 @@
  */
 #include "cholmod_solve.h"
 
+#include <cblas.h>
 #include <cholmod.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* OpenBLAS splits its level-3 work by its thread count, and the factor's
+ * bits follow the split: a fixed count keeps the result independent of
+ * OMP_NUM_THREADS (which OpenBLAS would otherwise follow). */
+#define TF_BLAS_THREADS 2
 
 struct tf_chol {
     cholmod_common cm;
@@ -63,6 +69,7 @@ tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t e
     c->cm.print = 0; /* errors come back through the status */
     c->n = a->n;
     cholmod_sparse s = wrap(a);
+    openblas_set_num_threads(TF_BLAS_THREADS);
     double t0 = omp_get_wtime();
     c->l = cholmod_analyze(&s, &c->cm);
     double t1 = omp_get_wtime();
@@ -94,6 +101,7 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
 {
     cholmod_dense d;
     memset(&d, 0, sizeof d);
+    openblas_set_num_threads(TF_BLAS_THREADS);
     d.nrow = c->n;
     d.ncol = ncol;
     d.nzmax = c->n * ncol;

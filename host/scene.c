@@ -84,7 +84,7 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         CYAML_OK) {
         int line;
         char path[128], msg[256];
-        sd_explain(text, len, &log, &line, path, sizeof path, msg, sizeof msg);
+        sd_explain(text, len, &log, "", &line, path, sizeof path, msg, sizeof msg);
         snprintf(err, errlen, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", msg);
         return NULL;
     }

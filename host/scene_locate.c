@@ -152,7 +152,10 @@ int sd_locate(const char *text, size_t len, const char *path)
 
 /* Path of the value a backtrace points at: its lines run innermost first,
  * "  in mapping field 'KEY' (line: ...)" or "  in sequence entry 'N' ...";
- * a bare "  in mapping (...)" has no name. */
+ * a bare "  in mapping (...)" has no name.  libcyaml counts an entry once
+ * it has started reading it, so N is one more than the entry's index (a
+ * surplus entry, reported before it is counted, is dropped from the path
+ * by the caller). */
 static void backtrace_path(const char *log, char *path, size_t pathlen)
 {
     char comps[SD_PATH_MAX][64];
@@ -163,8 +166,10 @@ static void backtrace_path(const char *log, char *path, size_t pathlen)
         const char *eol = p + strcspn(p, "\n"), *f = strstr(p, "field '"), *e = strstr(p, "entry '");
         const char *q = f && f < eol ? f + 7 : e && e < eol ? e + 7 : NULL;
         const char *end = q ? strchr(q, '\'') : NULL;
-        if (end != NULL && end < eol) {
+        if (end != NULL && end < eol && q == f + 7) {
             snprintf(comps[n++], sizeof comps[0], "%.*s", (int)(end - q), q);
+        } else if (end != NULL && end < eol) {
+            snprintf(comps[n++], sizeof comps[0], "%ld", strtol(q, NULL, 10) - 1);
         }
     }
     size_t used = 0;
@@ -229,23 +234,33 @@ static const char *type_name(const char *t)
     return "a single value";
 }
 
-/* Names the allowed values of an enumeration or flags at path. */
-static void allowed(const char *path, char *out, size_t outlen)
+/* "Invalid FLOAT value: abc", "Invalid ENUM value: w+", "Invalid uint64_t
+ * value: 'x'": the offending text, unquoted. */
+static int invalid_value(const char *log, char *arg, size_t len)
 {
-    const cyaml_schema_value_t *v = sd_schema_at(path);
-    out[0] = '\0';
-    if (v != NULL) {
-        sd_names(v, out, outlen);
+    const char *p = strstr(log, "Invalid ");
+    const char *v = p ? strstr(p, " value: ") : NULL;
+    if (v == NULL || strchr(p, '\n') < v) {
+        return 0;
     }
+    v += 8;
+    size_t k = strcspn(v, "\n");
+    if (k >= 2 && v[0] == '\'' && v[k - 1] == '\'') {
+        v++;
+        k -= 2;
+    }
+    snprintf(arg, len, "%.*s", (int)k, v);
+    return 1;
 }
 
-void sd_explain(const char *text, size_t len, const sd_log *log, int *line, char *path,
-                size_t pathlen, char *msg, size_t msglen)
+void sd_explain(const char *text, size_t len, const sd_log *log, const char *base, int *line,
+                char *path, size_t pathlen, char *msg, size_t msglen)
 {
     const char *t = log->text;
-    char arg[160], names[256];
+    char arg[160], names[256], rel[128];
     *line = backtrace_line(t);
-    backtrace_path(t, path, pathlen);
+    backtrace_path(t, rel, sizeof rel);
+    snprintf(path, pathlen, "%s%s%s", base, base[0] && rel[0] ? "." : "", rel);
     if (after(t, "Unexpected key: ", arg, sizeof arg)) {
         const cyaml_schema_value_t *v = path[0] ? sd_schema_at(path) : &sd_scene_schema;
         names[0] = '\0';
@@ -256,29 +271,34 @@ void sd_explain(const char *text, size_t len, const sd_log *log, int *line, char
         snprintf(path + used, pathlen - used, "%s%s", used ? "." : "", arg);
         int exact = locate_mode(text, len, path, 0);
         *line = exact ? exact : *line;
-        snprintf(msg, msglen, "unknown key (known keys here: %s)", names);
+        snprintf(msg, msglen, "unknown key '%s' (known keys here: %s)", arg, names);
     } else if (after(t, "Missing required mapping field: ", arg, sizeof arg)) {
         path_parent(path);
         snprintf(msg, msglen, "required key '%s' is missing", arg);
     } else if (after(t, "Mapping field already seen: ", arg, sizeof arg)) {
         snprintf(msg, msglen, "key given twice");
-    } else if (after(t, "Invalid FLOAT value: ", arg, sizeof arg)) {
-        snprintf(msg, msglen, "'%s' is not a number", arg);
-    } else if (after(t, "Invalid BOOL value: ", arg, sizeof arg)) {
-        snprintf(msg, msglen, "'%s' is not true or false", arg);
-    } else if (after(t, "Invalid UINT value: ", arg, sizeof arg) ||
-               after(t, "Invalid INT value: ", arg, sizeof arg) ||
-               after(t, "Unknown flag: ", arg, sizeof arg)) {
-        allowed(path, names, sizeof names);
-        if (names[0] != '\0') {
-            snprintf(msg, msglen, "%s is not one of: %s", arg, names);
-        } else {
-            snprintf(msg, msglen, "%s is not a non-negative whole number", arg);
+    } else if (invalid_value(t, arg, sizeof arg) || after(t, "Unknown flag: ", arg, sizeof arg)) {
+        const cyaml_schema_value_t *v = sd_schema_at(path);
+        names[0] = '\0';
+        if (v != NULL) {
+            sd_names(v, names, sizeof names);
         }
-    } else if (after(t, "Insufficient entries ", arg, sizeof arg) ||
-               after(t, "Excessive entries ", arg, sizeof arg)) {
+        if (names[0] != '\0') {
+            snprintf(msg, msglen, "'%s' is not one of: %s", arg, names);
+        } else {
+            snprintf(msg, msglen, "'%s' is not %s", arg,
+                     v == NULL                  ? "valid here"
+                     : v->type == CYAML_FLOAT   ? "a number"
+                     : v->type == CYAML_BOOL    ? "true or false"
+                     : v->type == CYAML_STRING  ? "a valid string"
+                                                : "a non-negative whole number");
+        }
+    } else if (after(t, "Insufficient entries ", arg, sizeof arg)) {
         path_parent(path);
-        snprintf(msg, msglen, "wrong number of entries %s", arg);
+        snprintf(msg, msglen, "too few entries %s", arg);
+    } else if (after(t, "Excessive entries ", arg, sizeof arg)) {
+        path_parent(path);
+        snprintf(msg, msglen, "too many entries %s", arg);
     } else if (after(t, "Expecting ", arg, sizeof arg)) {
         char want[32] = "", *got = strstr(arg, "got event: ");
         sscanf(arg, "%31[A-Z_]", want);

@@ -21,8 +21,9 @@
 int sd_locate(const char *text, size_t len, const char *path);
 
 /* Rewords a failed load: writes the innermost line to *line, the path of
- * the offending value to path ("" at the top), and a message to msg. */
-void sd_explain(const char *text, size_t len, const sd_log *log, int *line, char *path,
-                size_t pathlen, char *msg, size_t msglen);
+ * the offending value to path ("" at the top), and a message to msg.  The
+ * text holds the value at path base ("" for a whole scene). */
+void sd_explain(const char *text, size_t len, const sd_log *log, const char *base, int *line,
+                char *path, size_t pathlen, char *msg, size_t msglen);
 
 #endif /* TF_SCENE_LOCATE_H */

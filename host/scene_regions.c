@@ -106,9 +106,12 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
 int sd_resolve_outputs(const sd_outputs *d, const tf_scene *s, tf_outputs *o, char *msg, size_t msglen)
 {
     o->kind = (tf_output_kind)d->select;
+    int has_nodes = d->nodes != NULL || d->nodes_count > 0;
+    if (o->kind == TF_OUT_NODES && d->nodes_count == 0) {
+        return outputs_fail(msg, msglen, "select: nodes needs a non-empty nodes list");
+    }
     if ((d->face != NULL) != (o->kind == TF_OUT_FACE) ||
-        (d->box != NULL) != (o->kind == TF_OUT_BOX) ||
-        (d->nodes != NULL) != (o->kind == TF_OUT_NODES)) {
+        (d->box != NULL) != (o->kind == TF_OUT_BOX) || has_nodes != (o->kind == TF_OUT_NODES)) {
         return outputs_fail(msg, msglen,
                             "select: face takes face, box takes box, nodes takes nodes; all "
                             "and contact take nothing else");

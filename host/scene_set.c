@@ -41,8 +41,8 @@ static void write_count(uint8_t *base, const cyaml_schema_field_t *f, unsigned c
 }
 
 /* Loads value text with schema v (as a top-level pointer value). */
-static void *load_value(const cyaml_schema_value_t *v, const char *text, unsigned *count,
-                        char *err, size_t errlen)
+static void *load_value(const cyaml_schema_value_t *v, const char *path, const char *text,
+                        unsigned *count, char *err, size_t errlen)
 {
     cyaml_schema_value_t top = *v;
     top.flags = (enum cyaml_flag)(top.flags | CYAML_FLAG_POINTER);
@@ -60,7 +60,7 @@ static void *load_value(const cyaml_schema_value_t *v, const char *text, unsigne
     if (rc != CYAML_OK) {
         int line;
         char where[128], msg[256];
-        sd_explain(buf, strlen(buf), &log, &line, where, sizeof where, msg, sizeof msg);
+        sd_explain(buf, strlen(buf), &log, path, &line, where, sizeof where, msg, sizeof msg);
         snprintf(err, errlen, "%s", log.len ? msg : cyaml_strerror(rc));
         return NULL;
     }
@@ -71,12 +71,12 @@ static void *load_value(const cyaml_schema_value_t *v, const char *text, unsigne
 }
 
 /* Replaces the value of field f in the mapping at base. */
-static int assign(uint8_t *base, const cyaml_schema_field_t *f, const char *text, char *err,
-                  size_t errlen)
+static int assign(uint8_t *base, const cyaml_schema_field_t *f, const char *path,
+                  const char *text, char *err, size_t errlen)
 {
     const cyaml_schema_value_t *v = &f->value;
     unsigned count;
-    void *out = load_value(v, text, &count, err, errlen);
+    void *out = load_value(v, path, text, &count, err, errlen);
     if (out == NULL) {
         return -1;
     }
@@ -157,7 +157,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             return -1;
         }
         if (k == n - 1) {
-            return assign(base, f, eq + 1, err, errlen);
+            return assign(base, f, path, eq + 1, err, errlen);
         }
         if (f->value.type == CYAML_SEQUENCE) {
             char *end;
@@ -171,7 +171,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             if (++k == n - 1) {
                 cyaml_schema_field_t whole = {.key = f->key, .data_offset = 0,
                                               .value = *f->value.sequence.entry};
-                return assign(e, &whole, eq + 1, err, errlen);
+                return assign(e, &whole, path, eq + 1, err, errlen);
             }
             base = e;
             v = f->value.sequence.entry;
