@@ -516,6 +516,9 @@ int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, tf_csc *k, tf_as
     memset(k, 0, sizeof *k);
     tf_shape_stats_reset(&info->st);
     info->points = tf_cells_count(&sh->cells) * tf_cells_points(&sh->cells);
+    /* The threads here are OpenMP's: BLAS and LAPACK calls inside them run
+     * on one thread each instead of spawning and spinning more. */
+    openblas_set_num_threads(1);
     worker *wks = workers_new(nn, nt);
     if (wks == NULL) {
         snprintf(err, errlen, "out of memory");

@@ -4,6 +4,7 @@
  */
 #include "error_norm.h"
 
+#include <cblas.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -83,6 +84,7 @@ int tf_error_norms(const tf_shape *sh, const tf_scene *s, const double *u, unsig
         return -1;
     }
     int failed = 0;
+    openblas_set_num_threads(1); /* LAPACK inside OpenMP threads: one thread each */
 #pragma omp parallel reduction(| : failed)
     {
         tf_shape_work w;

@@ -3,6 +3,7 @@
  */
 #include "rpim.h"
 
+#include <float.h>
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -95,10 +96,12 @@ int tf_rpim_factor(const tf_rpim *p, tf_rpim_work *w, const double *xyz, const u
                             w->ipiv) != 0) {
         return -1;
     }
-    return LAPACKE_dgecon_work(LAPACK_COL_MAJOR, '1', (lapack_int)k, g, (lapack_int)k, anorm,
-                               rcond, w->work, w->iwork) == 0
-               ? 0
-               : -1;
+    if (LAPACKE_dgecon_work(LAPACK_COL_MAJOR, '1', (lapack_int)k, g, (lapack_int)k, anorm, rcond,
+                            w->work, w->iwork) != 0) {
+        return -1;
+    }
+    /* A pivot that is zero only through rounding leaves nothing to trust. */
+    return *rcond > DBL_EPSILON ? 0 : -1;
 }
 
 /* Right-hand sides of one point: R(x), p(x), and when deriv their x, y, z

@@ -49,7 +49,8 @@ void tf_rpim_work_free(tf_rpim_work *w);
 /* Builds and factorises the system for the n support nodes idx[] (xyz holds
  * all nodes), centred at centre, scaled by the support radius s (mm).
  * Writes the reciprocal condition estimate (1-norm) to *rcond.  Returns 0,
- * or -1 when the system is singular or n exceeds the workspace. */
+ * or -1 when the system is singular (rcond at or below the machine
+ * epsilon) or n exceeds the workspace. */
 int tf_rpim_factor(const tf_rpim *p, tf_rpim_work *w, const double *xyz, const uint32_t *idx,
                    size_t n, const double centre[3], double s, double *rcond);
 

@@ -132,7 +132,8 @@ int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], si
     }
     w->n = n;
     if (n == 0) {
-        snprintf(w->err, sizeof w->err, "no node within the support at (%g, %g, %g) mm", at[0],
+        snprintf(w->err, sizeof w->err,
+                 "no node within the support around (%g, %g, %g) mm: raise solver.support", at[0],
                  at[1], at[2]);
         return -1;
     }
@@ -170,7 +171,7 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
                        &rcond) != 0) {
         snprintf(w->err, sizeof w->err,
                  "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular "
-                 "(support too small or nodes coplanar?)",
+                 "(too few nodes or all in one plane: raise solver.support)",
                  w->n, at[0], at[1], at[2]);
         w->cell = SIZE_MAX;
         return -1;
