@@ -337,10 +337,32 @@ static void add_point(const tf_lame *l, double w, const double *d, const uint32_
     }
 }
 
-/* Point-centred supports (the seed): one local system per Gauss point. */
-static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, worker *wk, size_t cell,
-                              size_t dim, double *kc)
+/* B-bar (Hughes 1980): the volumetric part lambda (div u)(div v) with div
+ * averaged over the cell, lambda / V s s^T with s_(a,i) = sum_g w_g
+ * d phi_i / d x_a over the cell's m nodes (s[a m + i], local order). */
+static void add_volumetric(double lambda, double vol, const double *sv, size_t m, double *kc)
 {
+    size_t dim = 3 * m;
+    for (size_t lb = 0; lb < m; ++lb) {
+        for (size_t la = lb; la < m; ++la) {
+            for (size_t b = 0; b < 3; ++b) {
+                double f = lambda / vol * sv[b * m + lb];
+                double *col = kc + dim * (3 * lb + b) + 3 * la;
+                for (size_t a = 0; a < 3; ++a) {
+                    col[a] += f * sv[a * m + la];
+                }
+            }
+        }
+    }
+}
+
+/* Point-centred supports (the seed): one local system per Gauss point. */
+static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, int bbar, worker *wk,
+                              size_t cell, size_t m, double *kc)
+{
+    tf_lame shear = {bbar ? 0 : l->lambda, l->mu};
+    double vol = 0, *sv = wk->y; /* 3 m sums, when bbar */
+    memset(sv, 0, 3 * m * sizeof *sv);
     for (size_t p = 0; p < tf_cells_points(&sh->cells); ++p) {
         double x[3], w, t0 = omp_get_wtime();
         tf_cells_point(&sh->cells, cell, p, x, &w);
@@ -349,7 +371,17 @@ static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, worker *wk, 
         if (rc != 0) {
             return -1;
         }
-        add_point(l, w, wk->sw.dphi, wk->sw.idx, wk->sw.n, wk->map, dim, kc);
+        add_point(&shear, w, wk->sw.dphi, wk->sw.idx, wk->sw.n, wk->map, 3 * m, kc);
+        vol += w;
+        for (size_t i = 0; i < wk->sw.n; ++i) {
+            size_t li = (size_t)wk->map[wk->sw.idx[i]];
+            for (size_t a = 0; a < 3; ++a) {
+                sv[a * m + li] += w * wk->sw.dphi[a * wk->sw.n + i];
+            }
+        }
+    }
+    if (bbar) {
+        add_volumetric(l->lambda, vol, sv, m, kc);
     }
     return 0;
 }
@@ -359,8 +391,8 @@ static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, worker *wk, 
  * sums M^ab_ij = sum_g w_g d_a phi_i d_b phi_j come from one C = Y^T Y
  * (BLAS dsyrk), and the Lame form gives
  * K_(3i+a)(3j+b) = lambda M^ab_ij + mu M^ba_ij + mu delta_ab sum_c M^cc_ij. */
-static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, worker *wk, size_t cell,
-                            size_t dim, double *kc)
+static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, worker *wk,
+                            size_t cell, size_t dim, double *kc)
 {
     size_t np = tf_cells_points(&sh->cells);
     double t0 = omp_get_wtime();
@@ -383,6 +415,16 @@ static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, worker *wk, si
     }
     cblas_dsyrk(CblasColMajor, CblasLower, CblasTrans, (int)n3, (int)np, 1.0, y, (int)np, 0.0, c,
                 (int)n3);
+    double lambda = bbar ? 0 : l->lambda, vol = 0, *sv = y; /* y is free again */
+    if (bbar) {
+        memset(sv, 0, n3 * sizeof *sv);
+        for (size_t p = 0; p < np; ++p) {
+            vol += wk->w[p];
+            for (size_t q = 0; q < n3; ++q) {
+                sv[q] += wk->w[p] * wk->sw.dphi[3 * p * n + q];
+            }
+        }
+    }
 #define M(a, i, b, j) c[((a) * n + (i)) >= ((b) * n + (j)) ? ((a) * n + (i)) + n3 * ((b) * n + (j)) \
                                                            : ((b) * n + (j)) + n3 * ((a) * n + (i))]
     for (size_t j = 0; j < n; ++j) {
@@ -393,19 +435,22 @@ static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, worker *wk, si
             for (size_t b = 0; b < 3; ++b) {
                 double *col = kc + dim * (3 * lj + b) + 3 * li;
                 for (size_t a = 0; a < 3; ++a) {
-                    col[a] += l->lambda * M(a, i, b, j) + l->mu * M(b, i, a, j) + (a == b ? tr : 0);
+                    col[a] += lambda * M(a, i, b, j) + l->mu * M(b, i, a, j) + (a == b ? tr : 0);
                 }
             }
         }
     }
 #undef M
+    if (bbar) {
+        add_volumetric(l->lambda, vol, sv, n, kc); /* cell mode: local order = support order */
+    }
     return 0;
 }
 
 /* Dense stiffness of one cell over its node set (column major, 3m x 3m,
  * lower block triangle filled): the sum over its Gauss points of
  * w B^T D B (seed eq 19). */
-static int cell_matrix(const tf_shape *sh, const tf_lame *l, worker *wk, size_t cell,
+static int cell_matrix(const tf_shape *sh, const tf_lame *l, int bbar, worker *wk, size_t cell,
                        const uint32_t *set, size_t m, double *kc)
 {
     size_t dim = 3 * m;
@@ -413,8 +458,8 @@ static int cell_matrix(const tf_shape *sh, const tf_lame *l, worker *wk, size_t 
     for (size_t r = 0; r < m; ++r) {
         wk->map[set[r]] = (int)r;
     }
-    int rc = sh->centre == TF_SUPPORT_CELL ? cell_matrix_cell(sh, l, wk, cell, dim, kc)
-                                           : cell_matrix_points(sh, l, wk, cell, dim, kc);
+    int rc = sh->centre == TF_SUPPORT_CELL ? cell_matrix_cell(sh, l, bbar, wk, cell, dim, kc)
+                                           : cell_matrix_points(sh, l, bbar, wk, cell, m, kc);
     for (size_t r = 0; r < m; ++r) {
         wk->map[set[r]] = -1;
     }
@@ -451,8 +496,8 @@ static void scatter(tf_csc *k, const sets *bp, const uint32_t *set, size_t m, co
     }
 }
 
-static int assemble_values(const tf_shape *sh, const tf_lame *l, worker *wks, const sets *cs,
-                           const sets *bp, tf_csc *k, char *err, size_t errlen)
+static int assemble_values(const tf_shape *sh, const tf_lame *l, int bbar, worker *wks,
+                           const sets *cs, const sets *bp, tf_csc *k, char *err, size_t errlen)
 {
     size_t ncell = cs->count, maxm = 0;
     for (size_t c = 0; c < ncell; ++c) {
@@ -483,7 +528,8 @@ static int assemble_values(const tf_shape *sh, const tf_lame *l, worker *wks, co
         for (size_t c = start; c < end; ++c) {
             worker *wk = &wks[omp_get_thread_num()];
             double t0 = omp_get_wtime();
-            int rc = cell_matrix(sh, l, wk, c, cs->nodes + cs->ptr[c], cs->ptr[c + 1] - cs->ptr[c],
+            int rc = cell_matrix(sh, l, bbar, wk, c, cs->nodes + cs->ptr[c],
+                                 cs->ptr[c + 1] - cs->ptr[c],
                                  buf + (c - start) * 9 * maxm * maxm);
             wk->t_all += omp_get_wtime() - t0;
             if (rc != 0) {
@@ -507,8 +553,8 @@ static int assemble_values(const tf_shape *sh, const tf_lame *l, worker *wks, co
     return 0;
 }
 
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, tf_csc *k, tf_assembly_info *info,
-                          char *err, size_t errlen)
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+                          tf_assembly_info *info, char *err, size_t errlen)
 {
     int nt = omp_get_max_threads();
     size_t nn = sh->cloud->n;
@@ -543,7 +589,7 @@ int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, tf_csc *k, tf_as
             wks[t].t_shape = wks[t].t_all = 0;
             tf_shape_stats_reset(&wks[t].sw.st); /* count the value pass only */
         }
-        rc = assemble_values(sh, l, wks, &cs, &bp, k, err, errlen);
+        rc = assemble_values(sh, l, bbar, wks, &cs, &bp, k, err, errlen);
     }
     info->t_values = omp_get_wtime() - t1;
     double ts = 0, ta = 0;

@@ -40,9 +40,11 @@ typedef struct tf_assembly_info {
     tf_shape_stats st;
 } tf_assembly_info;
 
-/* Assembles K for the shape functions sh and the material l.  Returns 0,
- * or -1 with a message in err (a singular local system, out of memory). */
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, tf_csc *k, tf_assembly_info *info,
-                          char *err, size_t errlen);
+/* Assembles K for the shape functions sh and the material l; with bbar
+ * the volumetric strain is averaged over each background cell (B-bar).
+ * Returns 0, or -1 with a message in err (a singular local system, out of
+ * memory). */
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+                          tf_assembly_info *info, char *err, size_t errlen);
 
 #endif /* TF_ASSEMBLE_H */

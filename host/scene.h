@@ -97,6 +97,7 @@ typedef struct tf_outputs {
 
 typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
 typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
+typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
 
 typedef struct tf_solver_opts {
     double support;   /* alpha_s: support radius in nodal spacings (per axis) */
@@ -105,6 +106,7 @@ typedef struct tf_solver_opts {
     double d_c;       /* mm */
     double q;
     int polynomial;   /* 0: none (seed eq 12); 1: linear augmentation (seed eq 11) */
+    tf_volumetric volumetric; /* volumetric strain at each Gauss point, or averaged per cell (B-bar) */
     unsigned cells[3];/* background cells per axis */
     unsigned gauss;   /* Gauss-Legendre points per axis per cell */
     tf_bc_method bc;

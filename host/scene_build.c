@@ -288,6 +288,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .d_c = 2.0,
         .q = 1.03,
         .polynomial = 1,
+        .volumetric = TF_VOLUMETRIC_CELL,
         .gauss = 3,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
@@ -314,6 +315,7 @@ static int solver(const sd_solver *d, tf_scene *s, sd_issue *is)
         o->q = d->rbf->q ? *d->rbf->q : o->q;
     }
     o->polynomial = d->polynomial ? *d->polynomial : o->polynomial;
+    o->volumetric = d->volumetric ? (tf_volumetric)*d->volumetric : o->volumetric;
     for (int a = 0; d->cells && a < 3; ++a) {
         o->cells[a] = d->cells[a];
     }

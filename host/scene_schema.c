@@ -33,6 +33,8 @@ static const cyaml_strval_t selects[] = {
 };
 static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", TF_SUPPORT_CELL}};
 static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
+static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
+                                             {"cell", TF_VOLUMETRIC_CELL}};
 static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_REF_CANTILEVER},
                                             {"linear", TF_REF_LINEAR}};
@@ -133,6 +135,8 @@ static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_MAPPING_PTR("rbf", OPT, sd_solver, rbf, rbf_fields),
     CYAML_FIELD_ENUM_PTR("polynomial", STRICT_OPT, sd_solver, polynomial, polynomials,
                          N(polynomials)),
+    CYAML_FIELD_ENUM_PTR("volumetric", STRICT_OPT, sd_solver, volumetric, volumetrics,
+                         N(volumetrics)),
     CYAML_FIELD_SEQUENCE_FIXED("cells", OPT_PTR, sd_solver, cells, &count, 3),
     CYAML_FIELD_UINT_PTR("gauss", OPT, sd_solver, gauss),
     CYAML_FIELD_ENUM_PTR("bc", STRICT_OPT, sd_solver, bc, bcs, N(bcs)),

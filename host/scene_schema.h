@@ -93,6 +93,7 @@ typedef struct sd_solver {
     int *centre;     /* tf_support_centre */
     sd_rbf *rbf;
     int *polynomial; /* 0 none, 1 linear */
+    int *volumetric; /* tf_volumetric */
     unsigned *cells; /* 3 */
     unsigned *gauss;
     int *bc;         /* tf_bc_method */

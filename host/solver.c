@@ -223,10 +223,11 @@ static void announce(const tf_solver *s)
     const tf_scene *sc = s->sc;
     const tf_cells *c = &s->sh.cells;
     tf_info("solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points, support %g x spacing "
-            "(%s-centred), %s, BCs by %s",
+            "(%s-centred), %s, volumetric strain %s, BCs by %s",
             sc->cloud.n, 3 * sc->cloud.n, tf_cells_count(c), c->gauss, sc->solver.support,
             sc->solver.centre == TF_SUPPORT_CELL ? "cell" : "point",
             sc->solver.polynomial ? "RBF + linear polynomial" : "RBF only",
+            sc->solver.volumetric == TF_VOLUMETRIC_CELL ? "averaged per cell" : "at every point",
             sc->solver.bc == TF_BC_PENALTY ? "penalty" : "elimination");
 }
 
@@ -248,7 +249,8 @@ tf_solver *tf_solver_new(const tf_scene *scene, char *err, size_t errlen)
     announce(s);
     tf_assembly_info ai;
     tf_lame l = tf_lame_from(scene->young, scene->poisson);
-    if (tf_assemble_stiffness(&s->sh, &l, &s->k, &ai, err, errlen) != 0) {
+    if (tf_assemble_stiffness(&s->sh, &l, scene->solver.volumetric == TF_VOLUMETRIC_CELL, &s->k,
+                              &ai, err, errlen) != 0) {
         tf_solver_free(s);
         return NULL;
     }

@@ -12,6 +12,7 @@
 #include "error_norm.h"
 #include "scene.h"
 #include "solver.h"
+#include "solver_report.h"
 
 /* The overrides that turn the base scene into level k. */
 static void level_sets(const tf_scene *b, tf_vary vary, unsigned k, char sets[4][160], size_t *n)
@@ -84,6 +85,7 @@ int tf_verify_level(const char *scene_path, const char *const *sets, size_t n_se
     int rc = sv && u ? tf_solver_solve(sv, -1, NULL, 1, u, err, errlen) : -1;
     if (rc == 0) {
         row->seconds = omp_get_wtime() - t0;
+        tf_solver_report(sv, s);
         rc = tf_error_norms(tf_solver_shape(sv), s, u, TF_VERIFY_ERROR_ORDER, &row->error_l2,
                             &row->error_energy, err, errlen);
     } else if (u == NULL) {
