@@ -14,23 +14,9 @@
 
 #include <stddef.h>
 
+#include "csc.h"
 #include "elasticity.h"
 #include "shape.h"
-
-/* Symmetric sparse matrix, lower triangle, rows ascending in each column. */
-typedef struct tf_csc {
-    size_t n;   /* rows = columns */
-    size_t nnz;
-    int *p;     /* n + 1 column starts */
-    int *i;     /* row indices */
-    double *x;  /* values */
-} tf_csc;
-
-void tf_csc_free(tf_csc *a);
-
-/* y = A x for the symmetric A (both triangles from the stored one); x and y
- * hold ncol columns of length n (column major). */
-void tf_csc_symv(const tf_csc *a, const double *x, double *y, size_t ncol);
 
 typedef struct tf_assembly_info {
     double t_pattern;      /* s, wall: supports of every cell and the sparsity pattern */

@@ -58,6 +58,8 @@ static void block48_as_the_guide_defines_it(void **state)
         assert_int_equal(s->outputs.nodes[k], k); /* the top layer, in node order */
     }
     assert_int_equal(s->solver.polynomial, 1);
+    assert_int_equal(s->solver.volumetric, TF_VOLUMETRIC_CELL);
+    assert_int_equal(s->solver.centre, TF_SUPPORT_CELL);
     assert_true(s->solver.alpha_c == 1.0 && s->solver.d_c == 2.0 && s->solver.q == 1.03);
     tf_scene_free(s);
 }
@@ -68,7 +70,8 @@ static void overrides_change_every_kind_of_value(void **state)
     char err[512];
     const char *sets[] = {"geometry.grid=21,21,5", "contact.0.node=221", "solver.rbf.q=0.5",
                           "fixed.0.components=x,z", "solver.bc=penalty", "name=b21",
-                          "fixed.4.face=z-", "outputs={select: contact}"};
+                          "fixed.4.face=z-", "outputs={select: contact}",
+                          "solver.volumetric=full"};
     tf_scene *s = tf_scene_load(BLOCK48, sets, sizeof sets / sizeof sets[0], err, sizeof err);
     assert_non_null(s);
     assert_int_equal(s->cloud.n, 21 * 21 * 5);
@@ -77,6 +80,7 @@ static void overrides_change_every_kind_of_value(void **state)
     assert_true(s->solver.q == 0.5);
     assert_int_equal(s->fixed[0].components, TF_COMP_X | TF_COMP_Z);
     assert_int_equal(s->solver.bc, TF_BC_PENALTY);
+    assert_int_equal(s->solver.volumetric, TF_VOLUMETRIC_FULL);
     assert_string_equal(s->name, "b21");
     assert_int_equal(s->n_fixed, 5); /* appended */
     assert_int_equal(s->fixed[4].n_nodes, 21 * 21);
