@@ -277,6 +277,8 @@ tf_solver *tf_solver_new(const tf_scene *scene, char *err, size_t errlen)
     }
     s->info.free_dofs = s->n_free;
     s->info.t_loads = omp_get_wtime() - t0;
+    tf_info("solver: factorising %zu unknowns (CHOLMOD)",
+            scene->solver.bc == TF_BC_PENALTY ? s->k.n : s->n_free);
     if (factorise(s, err, errlen) != 0) {
         tf_solver_free(s);
         return NULL;
