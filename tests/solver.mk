@@ -22,7 +22,7 @@ BENCHES += bench-solver
 
 deps-validation: ; $(call ensure_debs,$(DEBS_VALIDATION))
 
-$(T)/solver/%: tests/solver/%.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+$(T)/solver/%: tests/solver/%.c $(B)/native/libtissuefit-host.a | deps-build
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
