@@ -23,6 +23,8 @@ typedef struct tf_command {
 /* Defined in the cmd_*.c files. */
 extern const tf_command tf_cmd_demo_model;
 extern const tf_command tf_cmd_lm_strd;
+extern const tf_command tf_cmd_solve;
+extern const tf_command tf_cmd_verify;
 
 /* True when argv holds --help or -h (checked before any other parsing). */
 int tf_wants_help(int argc, char **argv);

@@ -13,6 +13,8 @@
 static const tf_command *const commands[] = {
     &tf_cmd_demo_model,
     &tf_cmd_lm_strd,
+    &tf_cmd_solve,
+    &tf_cmd_verify,
 };
 #define N_COMMANDS (sizeof commands / sizeof commands[0])
 

@@ -1,0 +1,22 @@
+/*
+ * cmd_args.h — option values shared by the solver commands.
+ */
+#ifndef TF_CMD_ARGS_H
+#define TF_CMD_ARGS_H
+
+#include <stddef.h>
+
+/* "FX,FY,FZ" -> v; 0, or -1 when not three finite numbers. */
+int tf_parse_vec3(const char *s, double v[3]);
+
+/* A growing list of --set assignments (pointers into argv). */
+typedef struct tf_sets {
+    const char **item;
+    size_t n, cap;
+} tf_sets;
+
+/* Appends; 0, or -1 when out of memory. */
+int tf_sets_add(tf_sets *s, const char *assignment);
+void tf_sets_free(tf_sets *s);
+
+#endif /* TF_CMD_ARGS_H */

@@ -1,0 +1,161 @@
+/*
+ * scene_schema.h — the scene file as libcyaml loads it: one C struct per
+ * YAML mapping, a pointer for every optional value (NULL when absent, so
+ * defaults are applied in one place, scene.c), and the schema that maps
+ * keys to members.  docs/scene-format.md documents each key.
+ *
+ * Extending the format: add the member here and its field to the mapping's
+ * field table in scene_schema.c; `--set` and error locations follow from
+ * the schema by themselves.  The fitting issue adds a `fit:` mapping to
+ * sd_scene and to the top-level table.
+ */
+#ifndef TF_SCENE_SCHEMA_H
+#define TF_SCENE_SCHEMA_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include <cyaml/cyaml.h>
+
+typedef struct sd_box {
+    double min[3];
+    double max[3];
+} sd_box;
+
+typedef struct sd_geometry {
+    sd_box *box;       /* required today; `surface:` will be the alternative */
+    unsigned grid[3];
+    double *jitter;
+    uint64_t *seed;
+} sd_geometry;
+
+typedef struct sd_material {
+    double young;   /* key E */
+    double poisson; /* key nu */
+} sd_material;
+
+typedef struct sd_plane {
+    int axis; /* 0 x, 1 y, 2 z */
+    double at;
+} sd_plane;
+
+typedef struct sd_fixed {
+    int *face;        /* tf_face */
+    sd_plane *plane;
+    sd_box *box;
+    unsigned *components; /* TF_COMP_* flags */
+    double *displacement; /* 3 */
+    bool *exact;
+} sd_fixed;
+
+typedef struct sd_patch {
+    int face;
+    int *shape;      /* tf_patch_shape: face, rect or circle */
+    double *centre;  /* 2 */
+    double *size;    /* 2 */
+    double *radius;
+} sd_patch;
+
+typedef struct sd_load {
+    uint32_t *node;
+    sd_patch *patch;
+    double *force;   /* 3 */
+    bool *exact;
+} sd_load;
+
+typedef struct sd_contact {
+    char *name;
+    uint32_t node;
+    sd_patch *patch;
+} sd_contact;
+
+typedef struct sd_envelope {
+    double *radius;
+    double *centre;  /* 3 */
+} sd_envelope;
+
+typedef struct sd_outputs {
+    int select;      /* tf_output_kind */
+    int *face;
+    sd_box *box;
+    uint32_t *nodes;
+    unsigned nodes_count;
+} sd_outputs;
+
+typedef struct sd_rbf {
+    double *alpha_c;
+    double *d_c;
+    double *q;
+} sd_rbf;
+
+typedef struct sd_solver {
+    double *support;
+    int *centre;     /* tf_support_centre */
+    sd_rbf *rbf;
+    int *polynomial; /* 0 none, 1 linear */
+    int *volumetric; /* tf_volumetric */
+    unsigned *cells; /* 3 */
+    unsigned *gauss;
+    int *bc;         /* tf_bc_method */
+    double *penalty;
+    double *rcond_warn;
+} sd_solver;
+
+typedef struct sd_reference {
+    int kind;        /* tf_reference_kind */
+    double *load;
+    double *offset;   /* 3 */
+    double *gradient; /* 9 */
+} sd_reference;
+
+typedef struct sd_scene {
+    char *name;
+    sd_geometry geometry;
+    sd_material material;
+    sd_fixed *fixed;
+    unsigned fixed_count;
+    sd_load *loads;
+    unsigned loads_count;
+    sd_contact *contact;
+    unsigned contact_count;
+    sd_envelope *envelope;
+    sd_outputs outputs;
+    sd_solver *solver;
+    sd_reference *reference;
+} sd_scene;
+
+/* Top-level schema (a pointer to sd_scene). */
+extern const cyaml_schema_value_t sd_scene_schema;
+
+/* libcyaml's error messages and backtraces, collected for rewording. */
+typedef struct sd_log {
+    char text[4096];
+    size_t len;
+} sd_log;
+
+/* Configuration for loading and freeing scene documents; errors go to log
+ * (which may be NULL to drop them). */
+cyaml_config_t sd_config(sd_log *log);
+
+/* A path names a value in a document: keys and sequence indices joined by
+ * dots, as in "material.nu" or "fixed.2.face" (the --set syntax). */
+#define SD_PATH_MAX 16
+
+/* Splits a path into at most SD_PATH_MAX components (in buf, which it
+ * modifies).  Returns the count, or -1 when empty or too deep. */
+int sd_path_split(char *buf, char **comp);
+
+/* The mapping field called key, or NULL. */
+const cyaml_schema_field_t *sd_field(const cyaml_schema_value_t *mapping, const char *key);
+
+/* The schema of the value at path (NULL when the path names nothing).
+ * Sequence indices are not checked against a document. */
+const cyaml_schema_value_t *sd_schema_at(const char *path);
+
+/* "E, nu": the keys of a mapping, or the names of an enumeration. */
+void sd_names(const cyaml_schema_value_t *v, char *out, size_t outlen);
+
+/* Frees a document loaded with sd_scene_schema. */
+void sd_scene_free(sd_scene *doc);
+
+#endif /* TF_SCENE_SCHEMA_H */

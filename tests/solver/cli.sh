@@ -1,0 +1,95 @@
+#!/bin/sh
+# cli.sh TISSUEFIT — `tissuefit solve` and `tissuefit verify` on the command
+# line: help, outputs, exit statuses, nothing written on bad input.  Prints
+# failures and a summary; VERBOSE=1 also prints what passed.
+set -u
+tool=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+B=coeffs/block48.yaml
+
+# expect STATUS DESCRIPTION -- COMMAND...
+expect() {
+    want=$1 what=$2
+    shift 3
+    "$@" >"$tmp/out" 2>"$tmp/err"
+    got=$?
+    if [ "$got" != "$want" ]; then
+        echo "FAIL: $what: exit $got, expected $want"; cat "$tmp/err"; fails=$((fails + 1))
+    elif [ -n "${VERBOSE:-}" ]; then
+        echo "ok:   $what (exit $got)"
+    fi
+}
+check() { # check DESCRIPTION COMMAND... (a shell test)
+    what=$1
+    shift
+    if ! "$@"; then echo "FAIL: $what"; fails=$((fails + 1)); fi
+}
+mkdir -p "$tmp/w"
+nothing_written() {
+    if [ -n "$(ls -A "$tmp/w")" ]; then
+        echo "FAIL: $1: files were written: $(ls -A "$tmp/w")"; fails=$((fails + 1))
+    fi
+}
+
+expect 0 "solve --help" -- "$tool" solve --help
+check "solve --help names --set" grep -q -- "--set KEY=VALUE" "$tmp/out"
+expect 0 "verify --help" -- "$tool" verify --help
+check "verify --help names the table" grep -q "level,nodes,dofs,error_l2,error_energy,rate" "$tmp/out"
+check "--help lists solve" sh -c "'$tool' --help | grep -q '^  solve'"
+
+expect 0 "solve block48, CSV on stdout" -- "$tool" -q solve $B --force 0,0,-1
+check "CSV header" sh -c "head -1 '$tmp/out' | grep -qx 'node,x,y,z,ux,uy,uz'"
+check "363 nodes" test "$(wc -l <"$tmp/out")" = 364
+check "node 61 at the top centre, pushed down" \
+    awk -F, '$1 == 61 { ok = ($2 == 24 && $3 == 24 && $4 == 6 && $7 < -1) } END { exit !ok }' "$tmp/out"
+check "-q is quiet" test ! -s "$tmp/err"
+expect 0 "solve to files" -- "$tool" solve $B --force 1,0,0 -o "$tmp/w/u.csv" --vtk "$tmp/w/u.vtu"
+check "progress on stderr" grep -q "factorisation" "$tmp/err"
+check "VTU holds every node" grep -q 'NumberOfPoints="363" NumberOfCells="200"' "$tmp/w/u.vtu"
+check "VTU holds displacements" grep -q 'Name="displacement"' "$tmp/w/u.vtu"
+check "no temporary files" sh -c "! ls '$tmp/w' | grep -q tmp"
+rm -f "$tmp/w"/*
+expect 0 "solve with overrides" -- "$tool" -q solve $B --set geometry.grid=5,5,2 --set contact.0.node=13 --force 0,0,-1 -o "$tmp/w/s.csv"
+check "overrides reach the grid" test "$(wc -l <"$tmp/w/s.csv")" = 51
+rm -f "$tmp/w"/*
+expect 0 "solve the cantilever (scene loads only)" -- "$tool" -q solve coeffs/cantilever.yaml -o "$tmp/w/c.csv"
+rm -f "$tmp/w"/*
+
+expect 2 "solve without a scene" -- "$tool" solve
+expect 2 "solve with two scenes" -- "$tool" solve $B $B
+expect 2 "solve, bad force" -- "$tool" solve $B --force 1,2 -o "$tmp/w/a.csv"
+expect 2 "solve, force not a number" -- "$tool" solve $B --force 1,x,0 -o "$tmp/w/a.csv"
+expect 2 "solve, unknown contact" -- "$tool" solve $B --force 0,0,1 --contact nowhere -o "$tmp/w/a.csv"
+expect 2 "solve, force without a contact site" -- "$tool" solve coeffs/cantilever.yaml --force 0,0,1 -o "$tmp/w/a.csv"
+expect 2 "solve, unknown option" -- "$tool" solve $B --bogus -o "$tmp/w/a.csv"
+expect 2 "solve, missing scene file" -- "$tool" solve "$tmp/none.yaml" -o "$tmp/w/a.csv"
+check "names the missing file" grep -q "$tmp/none.yaml" "$tmp/err"
+sed 's/  nu: 0.49/  nu: 0.5/' $B >"$tmp/nu.yaml"
+expect 2 "solve, nu = 0.5" -- "$tool" solve "$tmp/nu.yaml" --force 0,0,-1 -o "$tmp/w/a.csv" --vtk "$tmp/w/a.vtu"
+check "names file, line and field" grep -q "nu.yaml:9: material.nu" "$tmp/err"
+expect 2 "solve, bad --set" -- "$tool" solve $B --set solver.gauss=0 -o "$tmp/w/a.csv"
+check "names the override" grep -q "\-\-set solver.gauss=0: solver.gauss" "$tmp/err"
+nothing_written "bad input"
+expect 1 "solve into a missing directory" -- "$tool" -q solve $B --force 0,0,-1 -o "$tmp/missing/a.csv"
+check "names the output" grep -q "$tmp/missing/a.csv" "$tmp/err"
+expect 1 "solve, a body that is not held" -- "$tool" -q solve $B --set 'fixed=[{face: x-, components: [x]}]' --force 0,0,-1 -o "$tmp/w/a.csv"
+check "says why" grep -q "not positive definite" "$tmp/err"
+expect 1 "solve, a support without nodes" -- "$tool" -q solve $B --set solver.support=0.5 --force 0,0,-1 -o "$tmp/w/a.csv"
+check "says where and what to change" grep -q "around (2.4, 2.4, 1.5) mm: raise solver.support" "$tmp/err"
+nothing_written "failed solves"
+
+expect 0 "verify cantilever, two levels" -- "$tool" -q verify cantilever --levels 2 --csv "$tmp/w/v.csv"
+check "table on stdout" test "$(wc -l <"$tmp/out")" = 3
+check "table in the file" cmp -s "$tmp/out" "$tmp/w/v.csv"
+check "a rate on the second row" awk -F, 'NR == 3 { exit !($6 > 1) }' "$tmp/out"
+rm -f "$tmp/w"/*
+expect 2 "verify, unknown study" -- "$tool" verify beam
+expect 2 "verify, bad --levels" -- "$tool" verify patch --levels 0
+expect 2 "verify, bad --vary" -- "$tool" verify patch --vary time
+expect 2 "verify, scene without reference" -- "$tool" verify patch --scene $B --csv "$tmp/w/v.csv"
+nothing_written "bad verify"
+
+echo "solver cli: $fails failure(s)"
+[ "$fails" = 0 ]
