@@ -82,3 +82,14 @@ void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d)
     memcpy(model->node_ids, d->node_ids, d->n_out * sizeof *d->node_ids);
     tf_model_set_ball(model, d->centre, d->radius);
 }
+
+/* host.mk compiles this without SLP vectorization: GCC 12.2 at -O2 would
+ * round only v[i][2] (tests/unit/test_toolchain.c). */
+void tf_round_to_float(double (*v)[3], size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            v[i][k] = (double)(float)v[i][k];
+        }
+    }
+}

@@ -37,6 +37,9 @@ double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m);
 int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
                char *err, size_t errlen);
 
+/* Rounds every component to the nearest float (the firmware's input). */
+void tf_round_to_float(double (*v)[3], size_t n);
+
 /* Copies node ids and sets the ball map of the data's force envelope. */
 void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d);
 

@@ -7,7 +7,7 @@
 # functions removable by the firmware's --gc-sections.
 
 TARGET_SRC := $(wildcard target/src/*.c)
-TARGET_HDR := $(wildcard target/src/*.h target/include/*.h)
+TARGET_HDR := $(wildcard target/src/*.h target/include/*.h) target/target.mk
 # The fixed-point evaluator alone, for cores without an FPU (tfit_q31.h).
 TARGET_Q31_SRC := $(wildcard target/src/tfit_q31_*.c) target/src/tfit_crc_word.c
 TARGET_CFLAGS := $(TARGET_STRICT) -Itarget/include -ffunction-sections -fdata-sections
