@@ -124,6 +124,18 @@ typedef struct tf_reference {
     double gradient[9];  /* LINEAR: row-major du_i/dx_j */
 } tf_reference;
 
+/* How `tissuefit fit` samples and fits the scene (docs/fitting.md). */
+typedef struct tf_scene_fit {
+    int family;             /* forward family to emit (tfit_family: 1 nodal, 2 modal, 3 zhou2017) */
+    int contact;            /* contact site index (-1 when the scene has none) */
+    unsigned train;         /* training load cases */
+    unsigned heldout;       /* held-out load cases, never fitted */
+    uint64_t seed;          /* load-case design and folds */
+    unsigned folds;         /* k of the k-fold cross-validation */
+    unsigned max_degree;    /* polynomial degrees searched */
+    unsigned max_rank;      /* modal ranks searched */
+} tf_scene_fit;
+
 typedef struct tf_scene {
     char name[TF_SCENE_NAME_MAX];
     char source[512];   /* file the scene came from */
@@ -149,8 +161,7 @@ typedef struct tf_scene {
     tf_outputs outputs;
     tf_solver_opts solver;
     tf_reference reference;
-    /* The fitting issue adds its `fit:` section here (family, max orders,
-     * training / held-out load cases, seed, folds). */
+    tf_scene_fit fit;
 } tf_scene;
 
 /* Reads a scene file, applies the overrides ("key=value", e.g.

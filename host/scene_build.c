@@ -381,6 +381,48 @@ static int reference(const sd_reference *d, tf_scene *s, sd_issue *is)
     return 0;
 }
 
+/* The fit: section.  Limits keep every design matrix of a fold
+ * non-trivial and the searches inside the target's capacity (tfit.h). */
+static int fit(const sd_fit *d, tf_scene *s, sd_issue *is)
+{
+    tf_scene_fit *f = &s->fit;
+    *f = (tf_scene_fit){.family = 1, .contact = s->n_contacts > 0 ? 0 : -1, .train = 100,
+                        .heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
+                        .max_rank = 12};
+    if (d == NULL) {
+        return 0;
+    }
+    f->family = d->family ? *d->family : f->family;
+    f->train = d->train ? *d->train : f->train;
+    f->heldout = d->heldout ? *d->heldout : f->heldout;
+    f->seed = d->seed ? *d->seed : f->seed;
+    f->folds = d->folds ? *d->folds : f->folds;
+    f->max_degree = d->max_degree ? *d->max_degree : f->max_degree;
+    f->max_rank = d->max_rank ? *d->max_rank : f->max_rank;
+    if (d->contact) {
+        f->contact = tf_scene_contact(s, d->contact);
+        if (f->contact < 0) {
+            return fail(is, "fit.contact", "names no contact site of the scene");
+        }
+    }
+    if (f->train < 6 || f->train > 100000) {
+        return fail(is, "fit.train", "6 to 100000 training load cases");
+    }
+    if (f->heldout < 1 || f->heldout > 100000) {
+        return fail(is, "fit.heldout", "1 to 100000 held-out load cases");
+    }
+    if (f->folds < 2 || f->folds > 20 || f->folds > f->train) {
+        return fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
+    }
+    if (f->max_degree > 8) {
+        return fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
+    }
+    if (f->max_rank < 1 || f->max_rank > 24) {
+        return fail(is, "fit.max_rank", "1 to 24 modes");
+    }
+    return 0;
+}
+
 int sd_build(const sd_scene *doc, tf_scene *s, sd_issue *is)
 {
     if (doc->name) {
@@ -389,7 +431,8 @@ int sd_build(const sd_scene *doc, tf_scene *s, sd_issue *is)
     if (geometry(&doc->geometry, s, is) != 0 || material(&doc->material, s, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
-        envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0) {
+        envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
+        fit(doc->fit, s, is) != 0) {
         return -1;
     }
     if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {

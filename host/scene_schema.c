@@ -36,6 +36,8 @@ static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
 static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
                                              {"cell", TF_VOLUMETRIC_CELL}};
 static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
+/* tfit_family values (tfit.h) of the forward families */
+static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_REF_CANTILEVER},
                                             {"linear", TF_REF_LINEAR}};
 
@@ -153,6 +155,18 @@ static const cyaml_schema_field_t reference_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t fit_fields[] = {
+    CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
+    CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_UINT_PTR("train", OPT, sd_fit, train),
+    CYAML_FIELD_UINT_PTR("heldout", OPT, sd_fit, heldout),
+    CYAML_FIELD_UINT_PTR("seed", OPT, sd_fit, seed),
+    CYAML_FIELD_UINT_PTR("folds", OPT, sd_fit, folds),
+    CYAML_FIELD_UINT_PTR("max_degree", OPT, sd_fit, max_degree),
+    CYAML_FIELD_UINT_PTR("max_rank", OPT, sd_fit, max_rank),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_STRING_PTR("name", OPT, sd_scene, name, 1, TF_SCENE_NAME_MAX - 1),
     CYAML_FIELD_MAPPING("geometry", CYAML_FLAG_DEFAULT, sd_scene, geometry, geometry_fields),
@@ -166,7 +180,7 @@ static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_MAPPING("outputs", CYAML_FLAG_DEFAULT, sd_scene, outputs, outputs_fields),
     CYAML_FIELD_MAPPING_PTR("solver", OPT, sd_scene, solver, solver_fields),
     CYAML_FIELD_MAPPING_PTR("reference", OPT, sd_scene, reference, reference_fields),
-    /* fit: (the fitting issue) */
+    CYAML_FIELD_MAPPING_PTR("fit", OPT, sd_scene, fit, fit_fields),
     CYAML_FIELD_END,
 };
 

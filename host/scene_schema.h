@@ -6,8 +6,7 @@
  *
  * Extending the format: add the member here and its field to the mapping's
  * field table in scene_schema.c; `--set` and error locations follow from
- * the schema by themselves.  The fitting issue adds a `fit:` mapping to
- * sd_scene and to the top-level table.
+ * the schema by themselves.
  */
 #ifndef TF_SCENE_SCHEMA_H
 #define TF_SCENE_SCHEMA_H
@@ -108,6 +107,13 @@ typedef struct sd_reference {
     double *gradient; /* 9 */
 } sd_reference;
 
+typedef struct sd_fit {
+    int *family;       /* tfit_family of the forward model to emit */
+    char *contact;     /* contact site name */
+    unsigned *train, *heldout, *folds, *max_degree, *max_rank;
+    uint64_t *seed;
+} sd_fit;
+
 typedef struct sd_scene {
     char *name;
     sd_geometry geometry;
@@ -122,6 +128,7 @@ typedef struct sd_scene {
     sd_outputs outputs;
     sd_solver *solver;
     sd_reference *reference;
+    sd_fit *fit;
 } sd_scene;
 
 /* Top-level schema (a pointer to sd_scene). */
