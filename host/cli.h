@@ -22,6 +22,8 @@ typedef struct tf_command {
 
 /* Defined in the cmd_*.c files. */
 extern const tf_command tf_cmd_demo_model;
+extern const tf_command tf_cmd_fit;
+extern const tf_command tf_cmd_replay;
 extern const tf_command tf_cmd_lm_strd;
 extern const tf_command tf_cmd_solve;
 extern const tf_command tf_cmd_verify;

@@ -155,10 +155,12 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->heldout_rms, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm");
         }
     }
+    char guard[TF_NAME_MAX + 8];
+    upper(base, guard, sizeof guard);
     fprintf(f, " *\n * Include this header wherever the models are used.  In exactly one .c\n"
                " * file define TFIT_%s_IMPLEMENTATION before including it: that file holds\n"
                " * the tables, every other file sees extern declarations only.\n */\n",
-            base);
+            guard);
 }
 
 static void write_macros(FILE *f, const tf_model *m, uint32_t crc)

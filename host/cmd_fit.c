@@ -1,0 +1,265 @@
+/*
+ * cmd_fit.c — `tissuefit fit`: the product's main job.  A scene goes in; the
+ * solver is built once, load cases are solved, every applicable model family
+ * is fitted with cross-validated orders, and the chosen forward model and
+ * the contact inverse are emitted as one generated header with golden
+ * vectors (and, on request, a report with plots).  docs/fitting.md.
+ */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "cli.h"
+#include "cmd_args.h"
+#include "emit_header.h"
+#include "fit_pipeline.h"
+#include "fit_report.h"
+#include "log.h"
+#include "plot.h"
+#include "scene.h"
+#include "solver.h"
+
+static void help(FILE *out)
+{
+    fprintf(out,
+            "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
+            "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n\n"
+            "Solves the scene's load cases (one factorisation), fits every model family\n"
+            "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
+            "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
+            "(the forward model NAME_forward and the contact inverse NAME_contact) and\n"
+            "FILE_golden.h.  The scene's fit: section sets the load cases and searches\n"
+            "(docs/scene-format.md); --set overrides any of it, e.g. --set fit.train=200.\n\n"
+            "Options:\n"
+            "  -o, --out FILE.h    header to write (a lower-case C identifier + .h)\n"
+            "  --family F          forward family to emit: nodal, modal or zhou2017\n"
+            "                      (default: the scene's fit.family, else nodal)\n"
+            "  --contact NAME      contact site (default: fit.contact, else the first)\n"
+            "  --set KEY=VALUE     override a scene value (repeatable)\n"
+            "  --report DIR        also write DIR/NAME.md with PNG plots (needs gnuplot)\n"
+            "  --direct            solve every training case instead of superposing the\n"
+            "                      unit responses of a linear scene\n\n"
+            "Exit status: 0 ok, 1 a solve or fit failed, 2 bad usage or a scene that\n"
+            "cannot be fitted (nothing is written then).\n");
+}
+
+typedef struct fit_args {
+    const char *scene, *out, *family, *contact, *report;
+    int direct;
+    tf_sets sets;
+} fit_args;
+
+static int parse(int argc, char **argv, fit_args *a)
+{
+    static const struct option opts[] = {
+        {"out", required_argument, NULL, 'o'},    {"family", required_argument, NULL, 'f'},
+        {"contact", required_argument, NULL, 'c'}, {"set", required_argument, NULL, 's'},
+        {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
+        {0}};
+    int c;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "o:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            a->out = optarg;
+            break;
+        case 'f':
+            a->family = optarg;
+            break;
+        case 'c':
+            a->contact = optarg;
+            break;
+        case 's':
+            if (tf_sets_add(&a->sets, optarg) != 0) {
+                tf_error("fit: out of memory");
+                return -1;
+            }
+            break;
+        case 'r':
+            a->report = optarg;
+            break;
+        case 'd':
+            a->direct = 1;
+            break;
+        default:
+            tf_error("fit: bad option '%s' (see tissuefit fit --help)", argv[optind - 1]);
+            return -1;
+        }
+    }
+    if (optind + 1 != argc || a->out == NULL) {
+        tf_error("fit: expected one scene file and -o FILE.h (see tissuefit fit --help)");
+        return -1;
+    }
+    a->scene = argv[optind];
+    return 0;
+}
+
+/* The plan from the scene's fit: section and the options. */
+static int make_plan(const fit_args *a, const tf_scene *s, tf_fit_plan *p)
+{
+    tf_fit_plan_defaults(p);
+    p->family = (tfit_family)s->fit.family;
+    p->contact = s->fit.contact;
+    p->n_train = s->fit.train;
+    p->n_heldout = s->fit.heldout;
+    p->seed = s->fit.seed;
+    p->folds = s->fit.folds;
+    p->max_degree = s->fit.max_degree;
+    p->max_rank = s->fit.max_rank;
+    p->direct = a->direct;
+    if (a->family) {
+        p->family = tf_family_from_name(a->family);
+        if (p->family != TFIT_FAMILY_NODAL && p->family != TFIT_FAMILY_MODAL &&
+            p->family != TFIT_FAMILY_ZHOU2017) {
+            tf_error("fit: --family '%s': the forward families are nodal, modal and zhou2017",
+                     a->family);
+            return -1;
+        }
+    }
+    if (s->n_contacts == 0) {
+        tf_error("fit: %s has no contact site: a fit needs the site where the haptic force "
+                 "acts (add an entry under contact:, docs/scene-format.md)",
+                 a->scene);
+        return -1;
+    }
+    if (a->contact) {
+        p->contact = tf_scene_contact(s, a->contact);
+        if (p->contact < 0) {
+            tf_error("fit: %s has no contact site '%s'", a->scene, a->contact);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* CRC-32 of the scene file's bytes, for the header's banner. */
+static int file_crc32(const char *path, uint32_t *crc)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        return -1;
+    }
+    unsigned char buf[8192];
+    uLong c = crc32(0L, Z_NULL, 0);
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) {
+        c = crc32(c, buf, (uInt)n);
+    }
+    int bad = ferror(f);
+    fclose(f);
+    *crc = (uint32_t)c;
+    return bad ? -1 : 0;
+}
+
+/* Banner notes: what was fitted and how, with the overrides (they change the
+ * result, so they belong with it). */
+static void notes(const fit_args *a, const tf_scene *s, const tf_fit_plan *p,
+                  const tf_fit_outcome *o, char *buf, size_t n)
+{
+    int k = snprintf(buf, n,
+                     "Fitted by `tissuefit fit`: %zu training and %zu held-out load cases at "
+                     "contact site '%s',\n%s; orders by %u-fold cross-validation (seed %llu).",
+                     p->n_train, p->n_heldout, s->contacts[p->contact].name,
+                     o->cases.superposed ? "training cases superposed from unit solves"
+                                         : "every training case solved directly",
+                     p->folds, (unsigned long long)p->seed);
+    for (size_t i = 0; i < a->sets.n && k > 0 && (size_t)k < n; ++i) {
+        k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
+                      a->sets.item[i]);
+    }
+}
+
+static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_fit_outcome *o)
+{
+    char base[TF_NAME_MAX - 8], err[512], note[1024];
+    const char *slash = strrchr(a->out, '/');
+    if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
+        tf_error("fit: %s: the header name is too long for its model names", a->out);
+        return TF_EXIT_USAGE;
+    }
+    base[strcspn(base, ".")] = '\0';
+    tf_model *fwd = o->fam[p->family].model, *con = o->fam[TFIT_FAMILY_CONTACT].model;
+    snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
+    snprintf(con->name, sizeof con->name, "%s_contact", base);
+    con->node_ids[0] = s->contacts[p->contact].node + 1;
+    uint32_t crc = 0;
+    if (file_crc32(a->scene, &crc) != 0) {
+        tf_error("fit: %s: cannot read it again for its checksum", a->scene);
+        return TF_EXIT_FAIL;
+    }
+    notes(a, s, p, o, note, sizeof note);
+    const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
+                               .notes = note, .golden_seed = p->seed};
+    tf_model *models[2] = {fwd, con};
+    if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
+        tf_error("fit: %s", err);
+        return TF_EXIT_USAGE;
+    }
+    tf_info("fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
+            tf_family_name(p->family));
+    return TF_EXIT_OK;
+}
+
+static int run(int argc, char **argv)
+{
+    fit_args a = {0};
+    char err[1024];
+    int rc = TF_EXIT_USAGE;
+    tf_scene *s = NULL;
+    tf_solver *solver = NULL;
+    tf_fit_outcome o;
+    int have_outcome = 0;
+    tf_fit_plan plan;
+    if (parse(argc, argv, &a) != 0) {
+        goto done;
+    }
+    s = tf_scene_load(a.scene, a.sets.item, a.sets.n, err, sizeof err);
+    if (s == NULL) {
+        tf_error("%s", err);
+        goto done;
+    }
+    if (make_plan(&a, s, &plan) != 0) {
+        goto done;
+    }
+    if (a.report && !tf_plot_available()) {
+        tf_error("fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+        goto done;
+    }
+    rc = TF_EXIT_FAIL;
+    solver = tf_solver_new(s, err, sizeof err);
+    if (solver == NULL) {
+        tf_error("fit: %s", err);
+        goto done;
+    }
+    int fitted = tf_fit_run(s, solver, &plan, &o, err, sizeof err);
+    if (fitted != 0) {
+        tf_error("fit: %s: %s", a.scene, err);
+        rc = fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
+        goto done;
+    }
+    have_outcome = 1;
+    rc = emit(&a, s, &plan, &o);
+    if (rc == TF_EXIT_OK && a.report &&
+        tf_fit_report(a.report, a.out, s, solver, &plan, &o, err, sizeof err) != 0) {
+        tf_error("fit: report: %s", err);
+        rc = TF_EXIT_FAIL;
+    }
+done:
+    if (have_outcome) {
+        tf_fit_outcome_free(&o);
+    }
+    tf_solver_free(solver);
+    tf_scene_free(s);
+    tf_sets_free(&a.sets);
+    return rc;
+}
+
+const tf_command tf_cmd_fit = {
+    .name = "fit",
+    .summary = "fit a scene's models and write the generated header (the main job)",
+    .run = run,
+    .help = help,
+};
