@@ -43,7 +43,7 @@ DEBS_BUILD := gcc make binutils pkg-config zlib1g-dev liblapacke-dev libopenblas
               libsuitesparse-dev libcyaml-dev
 DEBS_CHECK := $(DEBS_BUILD) libcmocka-dev clang valgrind gcc-arm-none-eabi \
               libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
-DEBS_DEMO := $(DEBS_BUILD)
+DEBS_DEMO := $(DEBS_BUILD) gnuplot-nox
 
 # $(call ensure_debs,PACKAGES)
 define ensure_debs
@@ -89,12 +89,6 @@ include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildc
 .PHONY: all demo check bench install clean help
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
-
-# Until the fitting pipeline exists: a header from a built-in host model,
-# evaluated by the target library in a native program.
-demo: $(B)/bin/tissuefit $(B)/demo/demo_native | deps-demo
-	@echo "== demo: header emitted from a built-in model, evaluated by the target library =="
-	$(B)/demo/demo_native
 
 check: | deps-check
 	@$(MAKE) --no-print-directory $(CHECKS)

@@ -130,17 +130,3 @@ $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
 check-insncount: $(T)/probe
 	@echo "== instructions per evaluation (callgrind), every golden input =="
 	@tests/insncount/run.sh $(T)/probe $(T)/insncount
-
-# --- demo program -------------------------------------------------------------
-$(B)/demo/demo.h: $(B)/bin/tissuefit
-	@mkdir -p $(@D)
-	$(call say,GEN)
-	$(Q)$< demo-model -o $@
-
-$(B)/demo/demo_native: target/examples/demo_native.c $(B)/demo/demo.h $(B)/lib/libtfit.a
-	$(call say,BUILD)
-	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(B)/demo $< $(B)/lib/libtfit.a -o $@
-
-check-cli: $(B)/bin/tissuefit
-	@echo "== command line =="
-	@tests/cli/cli.sh $(B)/bin/tissuefit
