@@ -1,0 +1,51 @@
+# coeffs.mk — the shipped headers: coeffs/NAME.h (+ NAME_golden.h) fitted
+# from coeffs/NAME.yaml, with their reports in docs/reports/.
+#
+#   make coeffs    regenerate every shipped header and report
+#   check-coeffs   regenerate each shipped header with 1 and with 2 threads;
+#                  both must be byte-identical to the committed files
+#   check-fit      the held-out errors recomputed from the compiled header
+#                  and fresh solves; `tissuefit fit` refusing bad scenes
+
+SHIPPED_SCENES := coeffs/block48.yaml
+SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
+REPORTS := docs/reports
+
+.PHONY: coeffs check-coeffs check-fit
+CHECKS += check-coeffs check-fit
+
+coeffs: $(B)/bin/tissuefit | deps-demo
+	@mkdir -p $(REPORTS)
+	@set -e; for s in $(SHIPPED_SCENES); do \
+	  echo "== $$s -> $${s%.yaml}.h"; \
+	  $(B)/bin/tissuefit fit $$s -o $${s%.yaml}.h --report $(REPORTS); done
+
+check-coeffs: $(B)/bin/tissuefit
+	@echo "== shipped headers: regenerated (1 and 2 threads) = committed, byte for byte =="
+	@set -e; for s in $(SHIPPED_SCENES); do \
+	  h=$${s%.yaml}.h; n=$$(basename $$h .h); \
+	  for t in 1 2; do mkdir -p $(B)/coeffs/t$$t; \
+	    OMP_NUM_THREADS=$$t $(B)/bin/tissuefit -q fit $$s -o $(B)/coeffs/t$$t/$$n.h; \
+	    for f in $$n.h $${n}_golden.h; do \
+	      if ! cmp -s $(B)/coeffs/t$$t/$$f coeffs/$$f; then \
+	        echo "coeffs/$$f differs from its regeneration with $$t thread(s): run make coeffs"; \
+	        diff $(B)/coeffs/t$$t/$$f coeffs/$$f | head -5; exit 1; fi; done; done; \
+	  echo "$$h: identical to its regeneration with 1 and 2 threads"; done
+
+# The held-out check, one binary per shipped header.
+$(T)/heldout-%: tests/fit/heldout_check.c coeffs/%.h $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)u=$$(echo $* | tr a-z A-Z); $(CC) $(TEST_CFLAGS) -Icoeffs -DHEADER='"$*.h"' \
+	  -DFORWARD=tfit_$*_forward -DCONTACT=tfit_$*_contact -DPFX=TFIT_$$u \
+	  -DTFIT_$${u}_IMPLEMENTATION $< $(call host_test_link,native) -o $@
+
+# Bounds: 1 um for the linear forward model, 1e-4 relative for the contact
+# inverse (issue acceptance).
+check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit
+	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
+	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
+	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 1e-4; done
+	@echo "== tissuefit fit: scenes it must refuse =="
+	@tests/fit/cli_fit.sh $(B)/bin/tissuefit

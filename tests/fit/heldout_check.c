@@ -1,0 +1,115 @@
+/*
+ * heldout_check.c — recomputes a shipped header's held-out errors
+ * independently of the fitting pipeline: the header is compiled here with
+ * the target library and evaluated by tfit_displacements() /
+ * tfit_contact_force() (not the host's reference evaluator), at the
+ * held-out forces redesigned from the scene's seed and solved afresh.
+ *
+ *   heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL
+ *
+ * Compiled with -DHEADER='"NAME.h"' -DFORWARD=tfit_NAME_forward
+ * -DCONTACT=tfit_NAME_contact -DPFX=TFIT_NAME (and the IMPLEMENTATION
+ * macro).  Fails when the recomputed errors differ from the header's
+ * metadata or exceed the bounds given.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "loadcases.h"
+#include "scene.h"
+#include "solver.h"
+
+#include HEADER
+
+#define CAT(a, b) a##b
+#define MACRO(p, s) CAT(p, s)
+
+/* The header's %.6g numbers, compared at that precision. */
+static int same(double recomputed, double header)
+{
+    return fabs(recomputed - header) <= 1e-5 * fabs(header) + 1e-30;
+}
+
+int main(int argc, char **argv)
+{
+    char err[1024];
+    if (argc != 4) {
+        fprintf(stderr, "usage: heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL\n");
+        return 2;
+    }
+    tf_scene *s = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_solver *solver = s ? tf_solver_new(s, err, sizeof err) : NULL;
+    if (solver == NULL) {
+        fprintf(stderr, "heldout_check: %s\n", err);
+        return 1;
+    }
+    const size_t n = s->fit.heldout, n_train = s->fit.train, dofs = 3 * tf_solver_node_count(solver);
+    double(*train)[3] = malloc(n_train * sizeof *train), (*held)[3] = malloc(n * sizeof *held);
+    double *u = malloc(n * dofs * sizeof *u);
+    tf_loadcases(s->envelope_centre, s->envelope_radius, n_train, n, s->fit.seed, train, held);
+    for (size_t i = 0; i < n; ++i) { /* the firmware's input is a float */
+        for (int k = 0; k < 3; ++k) {
+            held[i][k] = (double)(float)held[i][k];
+        }
+    }
+    if (tf_solver_solve(solver, s->fit.contact, &held[0][0], n, u, err, sizeof err) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", err);
+        return 1;
+    }
+    const tfit_model *fwd = &FORWARD, *con = &CONTACT;
+    const uint32_t contact_node = con->node_ids[0] - 1;
+    float *out = malloc(3 * fwd->n_out * sizeof *out);
+    double fwd_max = 0, fsum2 = 0, con_max = 0, csum2 = 0, crel = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double *ui = u + i * dofs;
+        const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
+        if (tfit_displacements(fwd, f, out) < 0) {
+            return 1;
+        }
+        for (uint32_t j = 0; j < fwd->n_out; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                double e = (double)out[3 * j + (uint32_t)k] - ui[3 * (fwd->node_ids[j] - 1) + (uint32_t)k];
+                fwd_max = fmax(fwd_max, fabs(e));
+                fsum2 += e * e;
+            }
+        }
+        const float d[3] = {(float)ui[3 * contact_node], (float)ui[3 * contact_node + 1],
+                            (float)ui[3 * contact_node + 2]};
+        float fc[3];
+        if (tfit_contact_force(con, d, fc) < 0) {
+            return 1;
+        }
+        double e2 = 0, t2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            double e = (double)fc[k] - held[i][k];
+            con_max = fmax(con_max, fabs(e));
+            csum2 += e * e;
+            e2 += e * e;
+            t2 += held[i][k] * held[i][k];
+        }
+        crel = fmax(crel, sqrt(e2 / t2));
+    }
+    double frms = sqrt(fsum2 / (3.0 * fwd->n_out * (double)n)), crms = sqrt(csum2 / (3.0 * (double)n));
+    printf("held-out, recomputed from the compiled header: forward max %.3g mm rms %.3g mm "
+           "(bound %s); contact max %.3g N, rms %.3g N, relative %.3g (bound %s)\n",
+           fwd_max, frms, argv[2], con_max, crms, crel, argv[3]);
+    int ok = same(fwd_max, MACRO(PFX, _FORWARD_HELDOUT_MAX_MM)) &&
+             same(frms, MACRO(PFX, _FORWARD_HELDOUT_RMS_MM)) &&
+             same(con_max, MACRO(PFX, _CONTACT_HELDOUT_MAX_N)) &&
+             same(crel, MACRO(PFX, _CONTACT_HELDOUT_REL_MAX));
+    if (!ok) {
+        printf("the header's held-out metadata does not match the recomputation\n");
+    }
+    if (fwd_max > atof(argv[2]) || crel > atof(argv[3])) {
+        printf("held-out error beyond its bound\n");
+        ok = 0;
+    }
+    free(train);
+    free(held);
+    free(u);
+    free(out);
+    tf_solver_free(solver);
+    tf_scene_free(s);
+    return ok ? 0 : 1;
+}
