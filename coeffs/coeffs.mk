@@ -49,3 +49,14 @@ check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit
 	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 1e-4; done
 	@echo "== tissuefit fit: scenes it must refuse =="
 	@tests/fit/cli_fit.sh $(B)/bin/tissuefit
+	@echo "== tissuefit sweep and budget-driven choice =="
+	@tests/fit/cli_sweep.sh $(B)/bin/tissuefit
+
+# The speed-for-accuracy sweep of each shipped scene (docs/tradeoff.md); the
+# native times are this machine's.
+.PHONY: tradeoff
+tradeoff: $(B)/bin/tissuefit | deps-demo
+	@mkdir -p $(REPORTS)
+	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
+	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
+	    --png $(REPORTS)/$${n}_sweep.png; done

@@ -24,6 +24,7 @@ typedef struct tf_command {
 extern const tf_command tf_cmd_demo_model;
 extern const tf_command tf_cmd_fit;
 extern const tf_command tf_cmd_replay;
+extern const tf_command tf_cmd_sweep;
 extern const tf_command tf_cmd_lm_strd;
 extern const tf_command tf_cmd_solve;
 extern const tf_command tf_cmd_verify;

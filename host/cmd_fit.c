@@ -6,6 +6,7 @@
  * vectors (and, on request, a report with plots).  docs/fitting.md.
  */
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,13 +20,15 @@
 #include "log.h"
 #include "plot.h"
 #include "scene.h"
+#include "select.h"
 #include "solver.h"
 
 static void help(FILE *out)
 {
     fprintf(out,
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
-            "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n\n"
+            "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
+            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n\n"
             "Solves the scene's load cases (one factorisation), fits every model family\n"
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
@@ -40,7 +43,16 @@ static void help(FILE *out)
             "  --set KEY=VALUE     override a scene value (repeatable)\n"
             "  --report DIR        also write DIR/NAME.md with PNG plots (needs gnuplot)\n"
             "  --direct            solve every training case instead of superposing the\n"
-            "                      unit responses of a linear scene\n\n"
+            "                      unit responses of a linear scene\n"
+            "  --budget-us X       emit the most accurate forward model whose estimated\n"
+            "                      time plus the contact inverse's fits X microseconds\n"
+            "  --max-error-mm E    emit the cheapest forward model within E mm held-out\n"
+            "                      (with --budget-us: the cheapest within both)\n"
+            "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
+            "                      These three choose among every candidate of\n"
+            "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
+            "                      none qualifies, the message gives the best on each\n"
+            "                      axis and nothing is written.\n\n"
             "Exit status: 0 ok, 1 a solve or fit failed, 2 bad usage or a scene that\n"
             "cannot be fitted (nothing is written then).\n");
 }
@@ -48,8 +60,22 @@ static void help(FILE *out)
 typedef struct fit_args {
     const char *scene, *out, *family, *contact, *report;
     int direct;
+    double budget_us, max_error_mm; /* NAN when not given */
+    tf_mcu mcu;
     tf_sets sets;
 } fit_args;
+
+/* A positive finite number, or -1 with a message. */
+static int positive(const char *opt, const char *text, double *v)
+{
+    char *end;
+    *v = strtod(text, &end);
+    if (*end != '\0' || !(*v > 0) || !isfinite(*v)) {
+        tf_error("fit: %s '%s' is not a positive number", opt, text);
+        return -1;
+    }
+    return 0;
+}
 
 static int parse(int argc, char **argv, fit_args *a)
 {
@@ -57,7 +83,9 @@ static int parse(int argc, char **argv, fit_args *a)
         {"out", required_argument, NULL, 'o'},    {"family", required_argument, NULL, 'f'},
         {"contact", required_argument, NULL, 'c'}, {"set", required_argument, NULL, 's'},
         {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
-        {0}};
+        {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
+        {"mcu", required_argument, NULL, 'm'},     {0}};
+    char err[256];
     int c;
     optind = 1;
     opterr = 0;
@@ -83,6 +111,22 @@ static int parse(int argc, char **argv, fit_args *a)
             break;
         case 'd':
             a->direct = 1;
+            break;
+        case 'b':
+            if (positive("--budget-us", optarg, &a->budget_us) != 0) {
+                return -1;
+            }
+            break;
+        case 'e':
+            if (positive("--max-error-mm", optarg, &a->max_error_mm) != 0) {
+                return -1;
+            }
+            break;
+        case 'm':
+            if (tf_mcu_parse(optarg, &a->mcu, err, sizeof err) != 0) {
+                tf_error("fit: %s", err);
+                return -1;
+            }
             break;
         default:
             tf_error("fit: bad option '%s' (see tissuefit fit --help)", argv[optind - 1]);
@@ -172,7 +216,8 @@ static void notes(const fit_args *a, const tf_scene *s, const tf_fit_plan *p,
     }
 }
 
-static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_fit_outcome *o)
+static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_fit_outcome *o,
+                tf_model *fwd, tf_model *con, const char *choice)
 {
     char base[TF_NAME_MAX - 8], err[512], note[1024];
     const char *slash = strrchr(a->out, '/');
@@ -181,7 +226,6 @@ static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_f
         return TF_EXIT_USAGE;
     }
     base[strcspn(base, ".")] = '\0';
-    tf_model *fwd = o->fam[p->family].model, *con = o->fam[TFIT_FAMILY_CONTACT].model;
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
     con->node_ids[0] = s->contacts[p->contact].node + 1;
@@ -191,6 +235,10 @@ static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_f
         return TF_EXIT_FAIL;
     }
     notes(a, s, p, o, note, sizeof note);
+    if (choice != NULL) {
+        size_t k = strlen(note);
+        snprintf(note + k, sizeof note - k, "\n%s", choice);
+    }
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
                                .notes = note, .golden_seed = p->seed};
     tf_model *models[2] = {fwd, con};
@@ -199,13 +247,52 @@ static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_f
         return TF_EXIT_USAGE;
     }
     tf_info("fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
-            tf_family_name(p->family));
+            tf_family_name(fwd->family));
     return TF_EXIT_OK;
+}
+
+/* --budget-us / --max-error-mm: the sweep's candidates, then the choice. */
+static int emit_selected(const fit_args *a, const tf_scene *s, tf_solver *solver,
+                         const tf_fit_plan *p, tf_fit_outcome *o)
+{
+    char err[1024], choice[512];
+    tf_sweep sw;
+    tf_selection sel;
+    tf_info("fit: measuring every candidate for the choice (tissuefit sweep)");
+    if (tf_sweep_run(s, solver, p, 1u << TF_SET_SCENE, &sw, err, sizeof err) != 0) {
+        tf_error("fit: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    /* the contact inverse: within 1e-4 of the envelope radius (the bound) */
+    if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope_radius, &sel,
+                  err, sizeof err) != 0) {
+        tf_error("fit: %s: %s; nothing written", a->scene, err);
+        tf_sweep_free(&sw);
+        return TF_EXIT_USAGE;
+    }
+    char limits[128] = "";
+    if (!isnan(a->budget_us)) {
+        snprintf(limits, sizeof limits, "a budget of %.4g us", a->budget_us);
+    }
+    if (!isnan(a->max_error_mm)) {
+        size_t k = strlen(limits);
+        snprintf(limits + k, sizeof limits - k, "%sa held-out error <= %.3g mm", k ? " and " : "",
+                 a->max_error_mm);
+    }
+    snprintf(choice, sizeof choice,
+             "Chosen among every candidate for %s on %s: %s (%.2f us) and the contact inverse "
+             "%s (%.2f us).",
+             limits, a->mcu.name, sel.forward->label, tf_candidate_us(sel.forward, &a->mcu),
+             sel.contact->label, tf_candidate_us(sel.contact, &a->mcu));
+    tf_info("fit: %s", choice);
+    int rc = emit(a, s, p, o, sel.forward->model, sel.contact->model, choice);
+    tf_sweep_free(&sw);
+    return rc;
 }
 
 static int run(int argc, char **argv)
 {
-    fit_args a = {0};
+    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
     char err[1024];
     int rc = TF_EXIT_USAGE;
     tf_scene *s = NULL;
@@ -213,6 +300,7 @@ static int run(int argc, char **argv)
     tf_fit_outcome o;
     int have_outcome = 0;
     tf_fit_plan plan;
+    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
     if (parse(argc, argv, &a) != 0) {
         goto done;
     }
@@ -241,7 +329,12 @@ static int run(int argc, char **argv)
         goto done;
     }
     have_outcome = 1;
-    rc = emit(&a, s, &plan, &o);
+    if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
+        rc = emit(&a, s, &plan, &o, o.fam[plan.family].model, o.fam[TFIT_FAMILY_CONTACT].model,
+                  NULL);
+    } else {
+        rc = emit_selected(&a, s, solver, &plan, &o);
+    }
     if (rc == TF_EXIT_OK && a.report &&
         tf_fit_report(a.report, a.out, s, solver, &plan, &o, err, sizeof err) != 0) {
         tf_error("fit: report: %s", err);

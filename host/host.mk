@@ -27,7 +27,8 @@ endef
 $(eval $(call host_lib,native,-O2 -g))
 $(eval $(call host_lib,asan,-O1 -g $(SANITIZE)))
 
-$(B)/bin/tissuefit: $(B)/native/host/main.o $(B)/native/libtissuefit-host.a
+# The tool links the native target library to time it (tissuefit sweep).
+$(B)/bin/tissuefit: $(B)/native/host/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(CC) $^ $(HOST_LIBS) -o $@

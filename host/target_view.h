@@ -1,6 +1,8 @@
 /*
  * target_view.h — a tfit_model descriptor pointing into a host tf_model's
- * tables, so host tests can call the target library on host-built models.
+ * tables, so the host can run the target library on host-built models:
+ * the tests compare it with the reference evaluator, and `tissuefit sweep`
+ * times it.  Expected bits never come from here (docs/architecture.md).
  */
 #ifndef TF_TARGET_VIEW_H
 #define TF_TARGET_VIEW_H

@@ -1,0 +1,47 @@
+#!/bin/sh
+# cli_sweep.sh TISSUEFIT — `tissuefit sweep` measures every candidate, and
+# `tissuefit fit --budget-us/--max-error-mm` chooses among them; a budget or
+# an error nothing meets is refused with the best achievable stated and
+# nothing written.
+set -u
+tool=$1
+. "$(dirname "$0")/../cli/expect.sh"
+mkdir -p "$tmp/w"
+
+expect 0 "sweep, scene outputs" -- "$tool" -q sweep coeffs/block48.yaml --outputs scene \
+    --csv "$tmp/s.csv" --md "$tmp/s.md"
+head -1 "$tmp/s.csv" | grep -q '^outputs,n_out,model,family,precision' || bad "sweep CSV header"
+for m in "nodal p=1,nodal,float32" "nodal p=1,nodal,Q31" "nodal p=1,nodal,float64" \
+         "modal p=1 r=3,modal,float32" "zhou2017 (CV orders),zhou2017,float32" \
+         "contact p=1,contact,float32"; do
+    grep -q ",$m," "$tmp/s.csv" || bad "sweep lacks '$m'"
+done
+# every forward float32 candidate has a time and an error; the front is marked
+awk -F, 'NR > 1 && $5 == "float32" && ($12 == "nan" || $13 == "nan") { exit 1 }' "$tmp/s.csv" ||
+    bad "a float32 candidate without time or error"
+awk -F, 'NR > 1 && $16 == 1 { n++ } END { exit !(n >= 2) }' "$tmp/s.csv" || bad "no Pareto front"
+# the exact linear model is on the front and within 1 um
+awk -F, '$3 == "nodal p=1" && $5 == "float32" && $16 == 1 && $13 < 0.001 { ok = 1 } END { exit !ok }' \
+    "$tmp/s.csv" || bad "nodal p=1 float32 not on the front within 1 um"
+
+chosen() { sed -n 's/.*Chosen among every candidate.*: \(.*\) (.*us) and the contact.*/\1/p' "$1"; }
+expect 0 "budget 60 us on the M4F" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --budget-us 60
+[ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "60 us chose '$(chosen "$tmp/w/b.h")', not nodal p=1"
+expect 0 "budget 40 us on the M4F" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --budget-us 40
+[ "$(chosen "$tmp/w/b.h")" = "modal p=1 r=1" ] || bad "40 us chose '$(chosen "$tmp/w/b.h")'"
+expect 0 "error 10 um, cheapest" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --max-error-mm 0.01
+[ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "10 um chose '$(chosen "$tmp/w/b.h")'"
+expect 0 "budget 15 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" \
+    --budget-us 15 --mcu cortex-m7@480
+[ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "M7 15 us chose '$(chosen "$tmp/w/b.h")'"
+rm -f "$tmp"/w/*
+
+expect 2 "a budget nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 20
+grep -q "Fastest: nodal p=0" "$tmp/err" && grep -q "Most accurate: nodal p=1" "$tmp/err" ||
+    bad "the refusal does not state the best on each axis: $(cat "$tmp/err")"
+expect 2 "an error nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --max-error-mm 1e-12
+expect 2 "an unknown core" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 100 \
+    --mcu cortex-m3@72
+expect 2 "a budget that is not a number" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us fast
+[ -z "$(ls -A "$tmp/w")" ] || bad "a refused fit wrote $(ls -A "$tmp/w")"
+finish sweep
