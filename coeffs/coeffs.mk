@@ -43,10 +43,12 @@ $(T)/heldout-%: tests/fit/heldout_check.c coeffs/%.h $(B)/native/libtissuefit-ho
 
 # Bounds: 1 um for the linear forward model, 1e-4 relative for the contact
 # inverse (issue acceptance).
-check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit
+check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
 	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 1e-4; done
+	@echo "== material extremes: the stated bound holds at fresh forces =="
+	@$(T)/extremes coeffs/block48.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="
 	@tests/fit/cli_fit.sh $(B)/bin/tissuefit
 	@echo "== tissuefit sweep and budget-driven choice =="
@@ -60,3 +62,9 @@ tradeoff: $(B)/bin/tissuefit | deps-demo
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
 	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
 	    --png $(REPORTS)/$${n}_sweep.png; done
+
+# Material extremes through the whole pipeline (issue 7 item 3).
+$(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@

@@ -8,6 +8,8 @@
 #include <string.h>
 
 #include "basis.h"
+#include <lapacke.h>
+#include <math.h>
 #include "lsq.h"
 
 /* Relative rank tolerance on the column-scaled R diagonal: terms the data
@@ -72,6 +74,14 @@ int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, d
     if (f == NULL) {
         return -1;
     }
+    if (tf_lsq_rank(f) < n) {
+        snprintf(err, errlen,
+                 TF_FIT_UNDETERMINED ": %zu cases determine only %zu of %zu coefficients "
+                 "(repeated or collinear load cases, or too few for this order)",
+                 m, tf_lsq_rank(f), n);
+        tf_lsq_free(f);
+        return -1;
+    }
     int rc = tf_lsq_solve(f, k, y, m, x, n, NULL, err, errlen);
     tf_lsq_free(f);
     return rc;
@@ -92,4 +102,38 @@ void tf_round_to_float(double (*v)[3], size_t n)
             v[i][k] = (double)(float)v[i][k];
         }
     }
+}
+
+#define SPAN_MIN 1e-3 /* RMS extent, as a fraction of the envelope radius */
+
+int tf_fit_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
+                 size_t errlen)
+{
+    double mom[9] = {0}, eig[3];
+    for (size_t i = 0; i < n; ++i) {
+        double g[3];
+        if (m != NULL) {
+            tf_fit_normalise(m, x[tf_fit_case(idx, i)], g);
+        } else {
+            memcpy(g, x[tf_fit_case(idx, i)], sizeof g);
+        }
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < 3; ++b) {
+                mom[3 * a + b] += g[a] * g[b] / (double)n;
+            }
+        }
+    }
+    if (LAPACKE_dsyev(LAPACK_ROW_MAJOR, 'V', 'U', 3, mom, 3, eig) != 0) {
+        snprintf(err, errlen, "the spread of the load cases could not be computed");
+        return -1;
+    }
+    if (!(eig[0] >= SPAN_MIN * SPAN_MIN)) { /* ascending: eig[0] is the smallest */
+        snprintf(err, errlen,
+                 TF_FIT_UNDETERMINED ": the %zu load cases barely move along (%.3f, %.3f, %.3f) "
+                 "of the normalised envelope (RMS extent %.2g of its radius): the fit would "
+                 "extrapolate there",
+                 n, mom[0], mom[3], mom[6], sqrt(fmax(eig[0], 0)));
+        return -1;
+    }
+    return 0;
 }

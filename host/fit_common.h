@@ -33,9 +33,25 @@ static inline size_t tf_fit_case(const size_t *idx, size_t i)
 /* The m x 3 n_out matrix of the selected cases' displacements (row = case). */
 double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m);
 
-/* Least squares for k right-hand sides (lsq.h): x (n x k) = argmin |A x - y|. */
+/* Messages of fits the data cannot determine begin with this (so that
+ * cross-validation can tell "this order is not supported by the cases" from
+ * a failure). */
+#define TF_FIT_UNDETERMINED "undetermined"
+
+/* Least squares for k right-hand sides (lsq.h): x (n x k) = argmin |A x - y|.
+ * A design of rank below n is refused (repeated or collinear load cases, or
+ * too few cases for the order): -1 and a TF_FIT_UNDETERMINED message, never
+ * a basic solution with coefficients silently set to zero. */
 int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
                char *err, size_t errlen);
+
+/* Whether the selected inputs, normalised by the model's input map, cover
+ * the envelope: their second-moment matrix (1/n) sum g g^T must have no
+ * direction with RMS extent below 1e-3 (of the envelope radius).  Else -1 and
+ * a TF_FIT_UNDETERMINED message naming the direction: a fit would be
+ * determined by the cases but extrapolate wildly across the envelope. */
+int tf_fit_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
+                 size_t errlen);
 
 /* Rounds every component to the nearest float (the firmware's input). */
 void tf_round_to_float(double (*v)[3], size_t n);

@@ -76,7 +76,19 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
 {
     const uint32_t p = orders[0];
     double delta0[3], c[9], k[9], w[9], x0[3];
-    if (linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
+    double(*g)[3] = malloc(m * sizeof *g);
+    if (g == NULL) {
+        snprintf(err, errlen, "contact: out of memory");
+        return NULL;
+    }
+    for (size_t i = 0; i < m; ++i) { /* forces normalised to the envelope */
+        for (int a = 0; a < 3; ++a) {
+            g[i][a] = (d->force[tf_fit_case(idx, i)][a] - d->centre[a]) / d->radius;
+        }
+    }
+    int spans = tf_fit_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
+    free(g);
+    if (spans != 0 || linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
         return NULL;
     }
     if (inverse3(c, k) < 1e-12) {
@@ -100,6 +112,10 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     tf_model_set_map(model, x0, w);
     model->node_ids[0] = 0; /* set by the caller: the contact node */
+    if (tf_fit_spans(model, d->contact, idx, m, err, errlen) != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
     const uint32_t t = tf_terms(p);
     double *a = tf_fit_design(model, d->contact, idx, m, p);
     double *y = malloc(m * 3 * sizeof *y), x[3 * TFIT_MAX_TERMS_HOST];

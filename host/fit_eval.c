@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cv.h"
 #include "fit_common.h"
@@ -69,6 +70,11 @@ int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsi
         size_t n_train = tf_cv_select(fold, n, f, 0, train);
         size_t n_test = tf_cv_select(fold, n, f, 1, test);
         tf_model *m = fit(d, train, n_train, orders, "cv", err, errlen);
+        if (m == NULL && strncmp(err, TF_FIT_UNDETERMINED, strlen(TF_FIT_UNDETERMINED)) == 0) {
+            sum2 = emax = INFINITY; /* the folds cannot determine this order */
+            count = 1;
+            break;
+        }
         if (m == NULL) {
             rc = -1;
             break;

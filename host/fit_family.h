@@ -44,8 +44,9 @@ void tf_model_errors(const tf_model *model, const tf_fitdata *d, const size_t *i
                      double *max, double *rms, double *rel_max);
 
 /* k-fold cross-validated RMS error of fitter at the given orders (and the
- * largest validation error in *max when not NULL).  Returns -1 with a
- * message when a fold cannot be fitted. */
+ * largest validation error in *max when not NULL): infinite when the folds'
+ * cases cannot determine the order (fit_common.h, TF_FIT_UNDETERMINED).
+ * Returns -1 with a message when a fold fails otherwise. */
 int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsigned folds,
                 uint64_t seed, double *rms, double *max, char *err, size_t errlen);
 

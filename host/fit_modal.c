@@ -26,6 +26,10 @@ tf_model *tf_fit_modal(const tf_fitdata *d, const size_t *idx, size_t m, const u
         return NULL;
     }
     tf_fit_forward_setup(model, d);
+    if (p > 0 && tf_fit_spans(model, d->force, idx, m, err, errlen) != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
     const uint32_t t = tf_terms(p);
     double *y = tf_fit_gather_u(d, idx, m); /* m x rows: row = case */
     double *data = malloc(rows * m * sizeof *data);

@@ -18,6 +18,10 @@ tf_model *tf_fit_nodal(const tf_fitdata *d, const size_t *idx, size_t m, const u
         return NULL;
     }
     tf_fit_forward_setup(model, d);
+    if (p > 0 && tf_fit_spans(model, d->force, idx, m, err, errlen) != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
     const uint32_t t = tf_terms(p);
     const size_t rows = 3 * (size_t)d->n_out;
     double *a = tf_fit_design(model, d->force, idx, m, p);

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "fit_common.h"
 #include "fit_family.h"
 #include "log.h"
 #include "ref_eval.h"
@@ -65,6 +66,13 @@ static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *
         hi = p;
     }
     *best = cheapest_within(cv, lo, hi);
+    if (!isfinite(cv[*best])) {
+        snprintf(err, errlen,
+                 "%s: no degree is determined by the %zu training cases (repeated or collinear "
+                 "load cases?)",
+                 TF_FIT_UNDETERMINED, d->n_cases);
+        return -1;
+    }
     return 0;
 }
 
@@ -248,6 +256,26 @@ static int run_family(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *p
     return 0;
 }
 
+/* Small-strain elasticity stops describing tissue when displacements
+ * approach the body's size; the model still reproduces the solve, which is
+ * what its error measures, so this is a warning, not a refusal. */
+static void warn_large(const tf_scene *s, const tf_fitdata *d)
+{
+    double biggest = 0, body = INFINITY;
+    for (size_t i = 0; i < 3 * (size_t)d->n_out * d->n_cases; ++i) {
+        biggest = fmax(biggest, fabs(d->u[i]));
+    }
+    for (int a = 0; a < 3; ++a) {
+        body = fmin(body, s->box_max[a] - s->box_min[a]);
+    }
+    if (biggest > 0.1 * body) {
+        tf_info("fit: warning: displacements reach %.3g mm on a body %.3g mm thick: linear "
+                "(small-strain) elasticity does not describe tissue there; the models reproduce "
+                "the linear solve",
+                biggest, body);
+    }
+}
+
 int tf_fit_run(const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *o, char *err, size_t errlen)
 {
@@ -258,6 +286,7 @@ int tf_fit_run(const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan,
         return -1;
     }
     o->seconds_cases = seconds() - t0;
+    warn_large(s, &o->cases.train);
     if (plan->family == TFIT_FAMILY_ZHOU2017 &&
         tf_zhou_applicable(&o->cases.train, err, errlen) != 0) {
         tf_fit_outcome_free(o);

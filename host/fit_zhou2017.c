@@ -260,6 +260,17 @@ static double rms_of(double sum2, size_t count)
     return count > 0 ? sqrt(sum2 / (double)count) : INFINITY;
 }
 
+/* A fold whose cases cannot determine the orders makes the orders'
+ * CV error infinite (fit_common.h); anything else is a failure. */
+static int undetermined(int rc, const char *err, double *out)
+{
+    if (rc != 0 && strncmp(err, TF_FIT_UNDETERMINED, strlen(TF_FIT_UNDETERMINED)) == 0) {
+        *out = INFINITY;
+        return 1;
+    }
+    return 0;
+}
+
 /* CV over load cases of the contact law of axis a at order lambda. */
 static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned *fold,
                      unsigned folds, size_t *tr, size_t *te, double *out, char *err,
@@ -271,7 +282,11 @@ static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned
         size_t nt = tf_cv_select(fold, d->n_cases, f, 0, tr);
         size_t nv = tf_cv_select(fold, d->n_cases, f, 1, te);
         double r[TFIT_MAX_DEGREE + 1], pw[TFIT_MAX_DEGREE + 1];
-        if (contact_law(d, a, tr, nt, lambda, r, err, errlen) != 0) {
+        int rc = contact_law(d, a, tr, nt, lambda, r, err, errlen);
+        if (undetermined(rc, err, out)) {
+            return 0;
+        }
+        if (rc != 0) {
             return -1;
         }
         for (size_t i = 0; i < nv; ++i) {
@@ -307,6 +322,10 @@ static int cv_surface(const tf_fitdata *d, int c, const double *xy, uint32_t A, 
             break;
         }
         rc = surfaces(d, c, NULL, m, xy, tr, nt, A, B, p, err, errlen);
+        if (undetermined(rc, err, out)) {
+            free(p);
+            return 0;
+        }
         double *s = rc == 0 ? surface_design(xy, te, nv, A, B) : NULL;
         for (size_t i = 0; s && i < m; ++i) {
             const double *u = d->u + 3 * (size_t)d->n_out * i;
@@ -350,6 +369,11 @@ static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t
             memcpy(ptr + i * rows, p + tr[i] * rows, rows * sizeof *p);
         }
         rc = beta_fit(t, nt, ptr, (uint32_t)rows, k, beta, err, errlen);
+        if (undetermined(rc, err, &sum2)) {
+            rc = 0;
+            count = 1;
+            break;
+        }
         for (size_t i = 0; rc == 0 && i < nv; ++i) {
             double pw[BETA_MAX + 1], coef[2 * TFIT_ZHOU_MAX_ORDER + 1];
             tf_powers(k, d->contact[te[i]][a] * scale, pw);

@@ -158,10 +158,52 @@ static void contact_inverse(void **state)
     tf_model_free(exact);
 }
 
+/* Issue 7 item 4: 100 cases that are 5 forces repeated, and forces that
+ * are nearly collinear.  The fitters refuse what the cases cannot
+ * determine, and cross-validation marks such orders unsupported. */
+static void near_singular_cases(void **state)
+{
+    (void)state;
+    make_data();
+    tf_fitdata d = data();
+    char err[256];
+    for (int i = 5; i < NC; ++i) { /* repeat the first five cases */
+        memcpy(force[i], force[i % 5], sizeof force[i]);
+        memcpy(u[i], u[i % 5], sizeof u[i]);
+        memcpy(contact[i], contact[i % 5], sizeof contact[i]);
+    }
+    uint32_t p1 = 1, p2 = 2;
+    tf_model *m1 = tf_fit_nodal(&d, NULL, NC, &p1, "d1", err, sizeof err);
+    assert_non_null(m1); /* 4 coefficients, 5 distinct forces */
+    tf_model_free(m1);
+    assert_null(tf_fit_nodal(&d, NULL, NC, &p2, "d2", err, sizeof err));
+    assert_non_null(strstr(err, "undetermined"));
+    assert_non_null(strstr(err, "of 10 coefficients"));
+    double cv1, cv2;
+    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err), 0);
+    assert_true(isfinite(cv1));
+    assert_true(isinf(cv2));
+
+    /* every force within 1e-12 of the x axis: fy and fz are not determined */
+    make_data();
+    tf_rng r = {77};
+    for (int i = 0; i < NC; ++i) {
+        force[i][0] = tf_rng_range(&r, -2, 2);
+        force[i][1] = 1e-12 * tf_rng_range(&r, -1, 1);
+        force[i][2] = 1e-12 * tf_rng_range(&r, -1, 1);
+    }
+    assert_null(tf_fit_nodal(&d, NULL, NC, &p1, "c1", err, sizeof err));
+    assert_non_null(strstr(err, "undetermined"));
+    assert_null(tf_fit_contact(&d, NULL, NC, &p1, "c2", err, sizeof err));
+    assert_non_null(strstr(err, "undetermined"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(nodal_orders),
+        cmocka_unit_test(near_singular_cases),
         cmocka_unit_test(modal_rank),
         cmocka_unit_test(contact_inverse),
     };

@@ -179,7 +179,10 @@ static void each_bad_scene_has_its_own_message(void **state)
     expect_error(13, "  select: all\n", (const char *[]){"t.yaml:", "outputs", "take nothing else", NULL});
     expect_error(1, "name: t\nsolver: {gauss: 40}\n", (const char *[]){"t.yaml:2:", "solver.gauss", NULL});
     expect_error(1, "name: t\nsolver: {rbf: {q: 1}}\n", (const char *[]){"t.yaml:2:", "solver.rbf.q", "whole", NULL});
-    expect_error(1, "name: t\nfit: {family: nodal}\n", (const char *[]){"t.yaml:2:", "fit", "unknown key", NULL});
+    expect_error(1, "name: t\nfitting: {family: nodal}\n", (const char *[]){"t.yaml:2:", "fitting", "unknown key", NULL});
+    expect_error(1, "name: t\nfit: {family: cubic}\n", (const char *[]){"t.yaml:2:", "fit.family", NULL});
+    expect_error(1, "name: t\nfit: {folds: 1}\n", (const char *[]){"t.yaml:2:", "fit.folds", NULL});
+    expect_error(1, "name: t\nfit: {contact: nowhere}\n", (const char *[]){"t.yaml:2:", "fit.contact", NULL});
     expect_error(3, "  box: {min: [0, 0, 0], max: [10, 10, 2]\n", (const char *[]){"t.yaml:", NULL});
 }
 
