@@ -59,7 +59,7 @@ extern const tfit_model_q31 tfit_block48_forward_q31;
 #define TFIT_BLOCK48_FORWARD_HELDOUT_CASES 50
 #define TFIT_BLOCK48_FORWARD_HELDOUT_MAX_MM 1.16479e-07
 #define TFIT_BLOCK48_FORWARD_HELDOUT_RMS_MM 5.67964e-09
-#define TFIT_BLOCK48_FORWARD_CRC32 0xd87a3de2u
+#define TFIT_BLOCK48_FORWARD_CRC32 0x9f8101adu
 extern const tfit_model tfit_block48_forward;
 
 /* tfit_block48_contact */
@@ -69,7 +69,7 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_N_OUT 1u
 #define TFIT_BLOCK48_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_BLOCK48_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_BLOCK48_CONTACT_ENVELOPE_CENTER {-8.30670918e-17, 1.42291013e-17, -2.35922399e-17}
+#define TFIT_BLOCK48_CONTACT_ENVELOPE_CENTER {-1.04262832e-17, 2.41645877e-17, -4.30211409e-17}
 #define TFIT_BLOCK48_CONTACT_OPS_ADD 23
 #define TFIT_BLOCK48_CONTACT_OPS_MUL 45
 #define TFIT_BLOCK48_CONTACT_OPS_DIV 0
@@ -84,13 +84,13 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CONTACT_Q31_ADDED_ERROR_N 4.0422e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.65254e-08 */
-#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x5221d6e2u
+#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x4d2462bdu
 extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_CASES 50
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_RMS_N 1.12419e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_REL_MAX 7.52712e-08
-#define TFIT_BLOCK48_CONTACT_CRC32 0x55bf903bu
+#define TFIT_BLOCK48_CONTACT_CRC32 0x8f2d9bedu
 extern const tfit_model tfit_block48_contact;
 
 #ifdef TFIT_BLOCK48_IMPLEMENTATION
@@ -196,59 +196,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 12 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 13 x */
-    -0x1.4p-62f, 0x1.6c089cp-9f, 0x1.60bf1ep-8f, -0x1.5138a6p-6f,
+    0x1.666666p-63f, 0x1.6c089cp-9f, 0x1.60bf1ep-8f, -0x1.5138a6p-6f,
     /* node 13 y */
-    0x1.ccccccp-64f, 0x1.60bf1ep-8f, 0x1.6c089cp-9f, -0x1.5138a6p-6f,
+    -0x1.666666p-63f, 0x1.60bf1ep-8f, 0x1.6c089cp-9f, -0x1.5138a6p-6f,
     /* node 13 z */
-    0x1.99999ap-63f, -0x1.bbca98p-8f, -0x1.bbca98p-8f, 0x1.168eeap-6f,
+    0x1.99999ap-67f, -0x1.bbca98p-8f, -0x1.bbca98p-8f, 0x1.168eeap-6f,
     /* node 14 x */
-    0x1.4cccccp-62f, 0x1.74afa8p-9f, 0x1.06ad22p-7f, -0x1.61539cp-5f,
+    0x1.cp-61f, 0x1.74afa8p-9f, 0x1.06ad22p-7f, -0x1.61539cp-5f,
     /* node 14 y */
-    0x1.666666p-62f, 0x1.66b35p-9f, 0x1.cdee5ap-9f, -0x1.68e29cp-5f,
+    0x1.4cccccp-62f, 0x1.66b35p-9f, 0x1.cdee5ap-9f, -0x1.68e29cp-5f,
     /* node 14 z */
-    -0x1.666666p-60f, 0x1.2a9902p-9f, 0x1.0aff8cp-9f, 0x1.09a444p-4f,
+    -0x1.99999ap-62f, 0x1.2a9902p-9f, 0x1.0aff8cp-9f, 0x1.09a444p-4f,
     /* node 15 x */
-    0x1.d9999ap-61f, 0x1.c0d326p-8f, 0x1.82e33p-7f, -0x1.58cf28p-5f,
+    0x1.e66666p-62f, 0x1.c0d326p-8f, 0x1.82e33p-7f, -0x1.58cf28p-5f,
     /* node 15 y */
-    0x1.99999ap-61f, 0x1.082688p-8f, 0x1.547674p-8f, -0x1.369cdep-4f,
+    0x1.19999ap-61f, 0x1.082688p-8f, 0x1.547674p-8f, -0x1.369cdep-4f,
     /* node 15 z */
-    -0x1.4cccccp-59f, 0x1.b05deap-8f, 0x1.41d6acp-7f, 0x1.0fb266p-3f,
+    -0x1.e66666p-59f, 0x1.b05deap-8f, 0x1.41d6acp-7f, 0x1.0fb266p-3f,
     /* node 16 x */
-    0x1.333334p-62f, 0x1.c555bp-8f, 0x1.ddd5b4p-8f, -0x1.ca8ed4p-6f,
+    0x1.99999ap-64f, 0x1.c555bp-8f, 0x1.ddd5b4p-8f, -0x1.ca8ed4p-6f,
     /* node 16 y */
-    0x1.19999ap-59f, -0x1.b30fa4p-13f, 0x1.67da6ep-7f, -0x1.9d976p-4f,
+    0x1.333334p-60f, -0x1.b30fa4p-13f, 0x1.67da6ep-7f, -0x1.9d976p-4f,
     /* node 16 z */
-    -0x1.b33334p-59f, 0x1.eaa3bp-8f, 0x1.234ad8p-6f, 0x1.7fb594p-3f,
+    -0x1p-58f, 0x1.eaa3bp-8f, 0x1.234ad8p-6f, 0x1.7fb594p-3f,
     /* node 17 x */
-    -0x1.1dd6ep-60f, 0x1.4cb602p-7f, -0x1.3b97c4p-49f, 0x1.f4c47p-50f,
+    -0x1.ea69f4p-65f, 0x1.4cb602p-7f, -0x1.2743fcp-49f, -0x1.493684p-49f,
     /* node 17 y */
-    0x1.99999ap-60f, -0x1.20df1ep-49f, 0x1.c466c8p-8f, -0x1.dae472p-4f,
+    0x1.99999ap-61f, -0x1.c26f4cp-50f, 0x1.c466c8p-8f, -0x1.dae472p-4f,
     /* node 17 z */
-    -0x1.333334p-59f, 0x1.c01bp-50f, 0x1.7c4e2ep-6f, 0x1.b2b3dp-3f,
+    -0x1.ccccccp-59f, 0x1.6af3cp-51f, 0x1.7c4e2ep-6f, 0x1.b2b3dp-3f,
     /* node 18 x */
-    -0x1.cp-61f, 0x1.c555bp-8f, -0x1.ddd5b4p-8f, 0x1.ca8ed4p-6f,
+    -0x1.f33334p-61f, 0x1.c555bp-8f, -0x1.ddd5b4p-8f, 0x1.ca8ed4p-6f,
     /* node 18 y */
-    -0x1.99999ap-64f, 0x1.b30fa4p-13f, 0x1.67da6ep-7f, -0x1.9d976p-4f,
+    0x1.19999ap-59f, 0x1.b30fa4p-13f, 0x1.67da6ep-7f, -0x1.9d976p-4f,
     /* node 18 z */
-    -0x1.99999ap-59f, -0x1.eaa3bp-8f, 0x1.234ad8p-6f, 0x1.7fb594p-3f,
+    -0x1.f33334p-59f, -0x1.eaa3bp-8f, 0x1.234ad8p-6f, 0x1.7fb594p-3f,
     /* node 19 x */
-    -0x1.59999ap-60f, 0x1.c0d326p-8f, -0x1.82e33p-7f, 0x1.58cf28p-5f,
+    -0x1.8p-61f, 0x1.c0d326p-8f, -0x1.82e33p-7f, 0x1.58cf28p-5f,
     /* node 19 y */
-    0x1.a66666p-60f, -0x1.082688p-8f, 0x1.547674p-8f, -0x1.369cdep-4f,
+    0x1.b33334p-61f, -0x1.082688p-8f, 0x1.547674p-8f, -0x1.369cdep-4f,
     /* node 19 z */
-    -0x1.666666p-60f, -0x1.b05deap-8f, 0x1.41d6acp-7f, 0x1.0fb266p-3f,
+    -0x1.19999ap-60f, -0x1.b05deap-8f, 0x1.41d6acp-7f, 0x1.0fb266p-3f,
     /* node 20 x */
-    -0x1.e66666p-62f, 0x1.74afa8p-9f, -0x1.06ad22p-7f, 0x1.61539cp-5f,
+    -0x1.59999ap-61f, 0x1.74afa8p-9f, -0x1.06ad22p-7f, 0x1.61539cp-5f,
     /* node 20 y */
-    0x1.79999ap-60f, -0x1.66b35p-9f, 0x1.cdee5ap-9f, -0x1.68e29cp-5f,
+    0x1.cp-61f, -0x1.66b35p-9f, 0x1.cdee5ap-9f, -0x1.68e29cp-5f,
     /* node 20 z */
     -0x1.8p-61f, -0x1.2a9902p-9f, 0x1.0aff8cp-9f, 0x1.09a444p-4f,
     /* node 21 x */
-    -0x1.133334p-61f, 0x1.6c089cp-9f, -0x1.60bf1ep-8f, 0x1.5138a6p-6f,
+    -0x1.733334p-62f, 0x1.6c089cp-9f, -0x1.60bf1ep-8f, 0x1.5138a6p-6f,
     /* node 21 y */
-    0x1p-61f, -0x1.60bf1ep-8f, 0x1.6c089cp-9f, -0x1.5138a6p-6f,
+    0x1.533334p-61f, -0x1.60bf1ep-8f, 0x1.6c089cp-9f, -0x1.5138a6p-6f,
     /* node 21 z */
-    -0x1.2cccccp-61f, 0x1.bbca98p-8f, -0x1.bbca98p-8f, 0x1.168eeap-6f,
+    -0x1.a66666p-62f, 0x1.bbca98p-8f, -0x1.bbca98p-8f, 0x1.168eeap-6f,
     /* node 22 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 22 y */
@@ -262,59 +262,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 23 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 24 x */
-    0x1p-62f, 0x1.cdee5ap-9f, 0x1.66b35p-9f, -0x1.68e29cp-5f,
+    0x1.99999ap-65f, 0x1.cdee5ap-9f, 0x1.66b35p-9f, -0x1.68e29cp-5f,
     /* node 24 y */
-    -0x1.ccccccp-63f, 0x1.06ad22p-7f, 0x1.74afa8p-9f, -0x1.61539cp-5f,
+    -0x1.333334p-62f, 0x1.06ad22p-7f, 0x1.74afa8p-9f, -0x1.61539cp-5f,
     /* node 24 z */
-    -0x1.8p-61f, 0x1.0aff8cp-9f, 0x1.2a9902p-9f, 0x1.09a444p-4f,
+    -0x1.733334p-60f, 0x1.0aff8cp-9f, 0x1.2a9902p-9f, 0x1.09a444p-4f,
     /* node 25 x */
-    0x1.666666p-62f, 0x1.72188ep-7f, 0x1.6b12d2p-7f, -0x1.6401f6p-4f,
+    -0x1p-61f, 0x1.72188ep-7f, 0x1.6b12d2p-7f, -0x1.6401f6p-4f,
     /* node 25 y */
-    0x1.666666p-62f, 0x1.6b12d2p-7f, 0x1.72188ep-7f, -0x1.6401f6p-4f,
+    0x1.e66666p-61f, 0x1.6b12d2p-7f, 0x1.72188ep-7f, -0x1.6401f6p-4f,
     /* node 25 z */
-    -0x1.b33334p-59f, 0x1.614e5cp-6f, 0x1.614e5cp-6f, 0x1.7dbb9p-3f,
+    -0x1.4cccccp-58f, 0x1.614e5cp-6f, 0x1.614e5cp-6f, 0x1.7dbb9p-3f,
     /* node 26 x */
-    -0x1p-62f, 0x1.885a42p-6f, 0x1.8eacdep-7f, -0x1.62cddap-4f,
+    -0x1.99999ap-63f, 0x1.885a42p-6f, 0x1.8eacdep-7f, -0x1.62cddap-4f,
     /* node 26 y */
-    0x1.8p-60f, 0x1.955f02p-8f, 0x1.9acc82p-6f, -0x1.31c68ep-3f,
+    0x1.59999ap-59f, 0x1.955f02p-8f, 0x1.9acc82p-6f, -0x1.31c68ep-3f,
     /* node 26 z */
-    -0x1.19999ap-57f, 0x1.1a1694p-5f, 0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
+    -0x1.8p-58f, 0x1.1a1694p-5f, 0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
     /* node 27 x */
-    -0x1.ccccccp-60f, 0x1.35c526p-5f, 0x1.be8db4p-7f, -0x1.b9174ap-5f,
+    -0x1.99999ap-59f, 0x1.35c526p-5f, 0x1.be8db4p-7f, -0x1.b9174ap-5f,
     /* node 27 y */
     0x1p-58f, 0x1.28c66ep-7f, 0x1.5022d6p-5f, -0x1.95fea4p-3f,
     /* node 27 z */
-    -0x1.666666p-58f, 0x1.802d18p-6f, 0x1.1a274p-4f, 0x1.f112cep-2f,
+    -0x1.8p-57f, 0x1.802d18p-6f, 0x1.1a274p-4f, 0x1.f112cep-2f,
     /* node 28 x */
-    -0x1.00d9acp-59f, 0x1.28fc14p-5f, 0x1.a3a408p-51f, 0x1.380844p-47f,
+    -0x1.bb5098p-60f, 0x1.28fc14p-5f, 0x1.0e322p-50f, 0x1.29d46ep-48f,
     /* node 28 y */
-    0x1.19999ap-58f, -0x1.4f4e14p-49f, 0x1.eb5b5ap-5f, -0x1.b51494p-3f,
+    0x1p-60f, -0x1.894f0ap-50f, 0x1.eb5b5ap-5f, -0x1.b51494p-3f,
     /* node 28 z */
-    -0x1.8p-58f, 0x1.78e9fap-48f, 0x1.3359d6p-4f, 0x1.133c1p-1f,
+    -0x1p-58f, 0x1.c25136p-49f, 0x1.3359d6p-4f, 0x1.133c1p-1f,
     /* node 29 x */
-    -0x1.666666p-60f, 0x1.35c526p-5f, -0x1.be8db4p-7f, 0x1.b9174ap-5f,
+    -0x1.09999ap-58f, 0x1.35c526p-5f, -0x1.be8db4p-7f, 0x1.b9174ap-5f,
     /* node 29 y */
-    0x1p-58f, -0x1.28c66ep-7f, 0x1.5022d6p-5f, -0x1.95fea4p-3f,
+    0x1.0cccccp-58f, -0x1.28c66ep-7f, 0x1.5022d6p-5f, -0x1.95fea4p-3f,
     /* node 29 z */
-    -0x1.666666p-58f, -0x1.802d18p-6f, 0x1.1a274p-4f, 0x1.f112cep-2f,
+    -0x1.666666p-59f, -0x1.802d18p-6f, 0x1.1a274p-4f, 0x1.f112cep-2f,
     /* node 30 x */
-    -0x1.d33334p-59f, 0x1.885a42p-6f, -0x1.8eacdep-7f, 0x1.62cddap-4f,
+    -0x1.066666p-59f, 0x1.885a42p-6f, -0x1.8eacdep-7f, 0x1.62cddap-4f,
     /* node 30 y */
-    0x1.0cccccp-59f, -0x1.955f02p-8f, 0x1.9acc82p-6f, -0x1.31c68ep-3f,
+    0x1.0cccccp-58f, -0x1.955f02p-8f, 0x1.9acc82p-6f, -0x1.31c68ep-3f,
     /* node 30 z */
-    -0x1.8p-59f, -0x1.1a1694p-5f, 0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
+    -0x1p-58f, -0x1.1a1694p-5f, 0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
     /* node 31 x */
-    -0x1.6p-59f, 0x1.72188ep-7f, -0x1.6b12d2p-7f, 0x1.6401f6p-4f,
+    -0x1.99999ap-59f, 0x1.72188ep-7f, -0x1.6b12d2p-7f, 0x1.6401f6p-4f,
     /* node 31 y */
-    0x1.0cccccp-60f, -0x1.6b12d2p-7f, 0x1.72188ep-7f, -0x1.6401f6p-4f,
+    0x1.d9999ap-60f, -0x1.6b12d2p-7f, 0x1.72188ep-7f, -0x1.6401f6p-4f,
     /* node 31 z */
-    -0x1.59999ap-59f, -0x1.614e5cp-6f, 0x1.614e5cp-6f, 0x1.7dbb9p-3f,
+    -0x1.99999ap-63f, -0x1.614e5cp-6f, 0x1.614e5cp-6f, 0x1.7dbb9p-3f,
     /* node 32 x */
-    -0x1.2p-60f, 0x1.cdee5ap-9f, -0x1.66b35p-9f, 0x1.68e29cp-5f,
+    -0x1.733334p-61f, 0x1.cdee5ap-9f, -0x1.66b35p-9f, 0x1.68e29cp-5f,
     /* node 32 y */
-    0x1.333334p-60f, -0x1.06ad22p-7f, 0x1.74afa8p-9f, -0x1.61539cp-5f,
+    0x1.533334p-60f, -0x1.06ad22p-7f, 0x1.74afa8p-9f, -0x1.61539cp-5f,
     /* node 32 z */
-    0x1.99999ap-63f, -0x1.0aff8cp-9f, 0x1.2a9902p-9f, 0x1.09a444p-4f,
+    -0x1p-60f, -0x1.0aff8cp-9f, 0x1.2a9902p-9f, 0x1.09a444p-4f,
     /* node 33 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 33 y */
@@ -328,59 +328,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 34 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 35 x */
-    0x1.19999ap-60f, 0x1.547674p-8f, 0x1.082688p-8f, -0x1.369cdep-4f,
+    0x1.b33334p-61f, 0x1.547674p-8f, 0x1.082688p-8f, -0x1.369cdep-4f,
     /* node 35 y */
-    -0x1.333334p-62f, 0x1.82e33p-7f, 0x1.c0d326p-8f, -0x1.58cf28p-5f,
+    0x1.99999ap-64f, 0x1.82e33p-7f, 0x1.c0d326p-8f, -0x1.58cf28p-5f,
     /* node 35 z */
-    -0x1.733334p-59f, 0x1.41d6acp-7f, 0x1.b05deap-8f, 0x1.0fb266p-3f,
+    -0x1.266666p-59f, 0x1.41d6acp-7f, 0x1.b05deap-8f, 0x1.0fb266p-3f,
     /* node 36 x */
-    0x1.8p-60f, 0x1.9acc82p-6f, 0x1.955f02p-8f, -0x1.31c68ep-3f,
+    0x1.99999ap-60f, 0x1.9acc82p-6f, 0x1.955f02p-8f, -0x1.31c68ep-3f,
     /* node 36 y */
-    -0x1.333334p-61f, 0x1.8eacdep-7f, 0x1.885a42p-6f, -0x1.62cddap-4f,
+    0x1.ccccccp-60f, 0x1.8eacdep-7f, 0x1.885a42p-6f, -0x1.62cddap-4f,
     /* node 36 z */
-    -0x1.a66666p-58f, 0x1.80cff4p-5f, 0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
+    -0x1.8p-57f, 0x1.80cff4p-5f, 0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
     /* node 37 x */
-    -0x1.99999ap-61f, 0x1.f0eeb6p-5f, 0x1.5708a4p-6f, -0x1.2ac44ap-3f,
+    -0x1.e66666p-60f, 0x1.f0eeb6p-5f, 0x1.5708a4p-6f, -0x1.2ac44ap-3f,
     /* node 37 y */
-    0x1.733334p-59f, 0x1.5708a4p-6f, 0x1.f0eeb6p-5f, -0x1.2ac44ap-3f,
+    0x1.333334p-60f, 0x1.5708a4p-6f, 0x1.f0eeb6p-5f, -0x1.2ac44ap-3f,
     /* node 37 z */
-    -0x1.0cccccp-56f, 0x1.11b0c8p-4f, 0x1.11b0c8p-4f, 0x1.4fe184p-1f,
+    -0x1.333334p-57f, 0x1.11b0c8p-4f, 0x1.11b0c8p-4f, 0x1.4fe184p-1f,
     /* node 38 x */
-    -0x1.666666p-59f, 0x1.6087ecp-4f, 0x1.bb9882p-7f, -0x1.aebe86p-4f,
+    -0x1.0cccccp-58f, 0x1.6087ecp-4f, 0x1.bb9882p-7f, -0x1.aebe86p-4f,
     /* node 38 y */
-    0x1.d9999ap-58f, 0x1.92b03ep-7f, 0x1.d19994p-4f, -0x1.a074aep-3f,
+    0x1.8p-58f, 0x1.92b03ep-7f, 0x1.d19994p-4f, -0x1.a074aep-3f,
     /* node 38 z */
-    -0x1.19999ap-56f, 0x1.e5b42ap-5f, 0x1.b10e9cp-4f, 0x1.d2c046p-1f,
+    -0x1.666666p-57f, 0x1.e5b42ap-5f, 0x1.b10e9cp-4f, 0x1.d2c046p-1f,
     /* node 39 x */
-    -0x1.957a8ap-58f, 0x1.d6fb22p-4f, -0x1.b8c662p-48f, 0x1.2637c4p-47f,
+    -0x1.270874p-57f, 0x1.d6fb22p-4f, -0x1.b71b94p-48f, -0x1.4b0bd2p-49f,
     /* node 39 y */
-    0x1.99999ap-60f, -0x1.e0d6f8p-48f, 0x1.183686p-3f, -0x1.e491ep-3f,
+    0x1.0cccccp-57f, -0x1.b8c056p-48f, 0x1.183686p-3f, -0x1.e491ep-3f,
     /* node 39 z */
-    -0x1.ccccccp-57f, 0x1.f4decp-47f, 0x1.0c15fep-3f, 0x1.09cb32p+0f,
+    -0x1.333334p-57f, 0x1.73dac4p-47f, 0x1.0c15fep-3f, 0x1.09cb32p+0f,
     /* node 40 x */
-    -0x1.09999ap-57f, 0x1.6087ecp-4f, -0x1.bb9882p-7f, 0x1.aebe86p-4f,
+    -0x1.366666p-57f, 0x1.6087ecp-4f, -0x1.bb9882p-7f, 0x1.aebe86p-4f,
     /* node 40 y */
-    0x1p-58f, -0x1.92b03ep-7f, 0x1.d19994p-4f, -0x1.a074aep-3f,
+    0x1.666666p-58f, -0x1.92b03ep-7f, 0x1.d19994p-4f, -0x1.a074aep-3f,
     /* node 40 z */
-    -0x1.333334p-58f, -0x1.e5b42ap-5f, 0x1.b10e9cp-4f, 0x1.d2c046p-1f,
+    -0x1.b33334p-57f, -0x1.e5b42ap-5f, 0x1.b10e9cp-4f, 0x1.d2c046p-1f,
     /* node 41 x */
-    -0x1.2cccccp-58f, 0x1.f0eeb6p-5f, -0x1.5708a4p-6f, 0x1.2ac44ap-3f,
+    -0x1.b33334p-58f, 0x1.f0eeb6p-5f, -0x1.5708a4p-6f, 0x1.2ac44ap-3f,
     /* node 41 y */
-    0x1.f33334p-59f, -0x1.5708a4p-6f, 0x1.f0eeb6p-5f, -0x1.2ac44ap-3f,
+    0x1.acccccp-58f, -0x1.5708a4p-6f, 0x1.f0eeb6p-5f, -0x1.2ac44ap-3f,
     /* node 41 z */
-    -0x1.99999ap-61f, -0x1.11b0c8p-4f, 0x1.11b0c8p-4f, 0x1.4fe184p-1f,
+    -0x1.ccccccp-58f, -0x1.11b0c8p-4f, 0x1.11b0c8p-4f, 0x1.4fe184p-1f,
     /* node 42 x */
-    -0x1.c66666p-58f, 0x1.9acc82p-6f, -0x1.955f02p-8f, 0x1.31c68ep-3f,
+    -0x1.533334p-58f, 0x1.9acc82p-6f, -0x1.955f02p-8f, 0x1.31c68ep-3f,
     /* node 42 y */
-    0x1.333334p-59f, -0x1.8eacdep-7f, 0x1.885a42p-6f, -0x1.62cddap-4f,
+    0x1.6p-59f, -0x1.8eacdep-7f, 0x1.885a42p-6f, -0x1.62cddap-4f,
     /* node 42 z */
-    -0x1p-59f, -0x1.80cff4p-5f, 0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
+    -0x1.4cccccp-59f, -0x1.80cff4p-5f, 0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
     /* node 43 x */
-    -0x1.f33334p-60f, 0x1.547674p-8f, -0x1.082688p-8f, 0x1.369cdep-4f,
+    -0x1.8p-60f, 0x1.547674p-8f, -0x1.082688p-8f, 0x1.369cdep-4f,
     /* node 43 y */
-    0x1.ep-60f, -0x1.82e33p-7f, 0x1.c0d326p-8f, -0x1.58cf28p-5f,
+    0x1.19999ap-60f, -0x1.82e33p-7f, 0x1.c0d326p-8f, -0x1.58cf28p-5f,
     /* node 43 z */
-    -0x1.666666p-60f, -0x1.41d6acp-7f, 0x1.b05deap-8f, 0x1.0fb266p-3f,
+    -0x1.99999ap-60f, -0x1.41d6acp-7f, 0x1.b05deap-8f, 0x1.0fb266p-3f,
     /* node 44 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 44 y */
@@ -394,59 +394,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 45 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 46 x */
-    -0x1.99999ap-62f, 0x1.67da6ep-7f, -0x1.b30fa4p-13f, -0x1.9d976p-4f,
+    0x1.99999ap-63f, 0x1.67da6ep-7f, -0x1.b30fa4p-13f, -0x1.9d976p-4f,
     /* node 46 y */
-    0x1.99999ap-65f, 0x1.ddd5b4p-8f, 0x1.c555bp-8f, -0x1.ca8ed4p-6f,
+    -0x1.333334p-62f, 0x1.ddd5b4p-8f, 0x1.c555bp-8f, -0x1.ca8ed4p-6f,
     /* node 46 z */
-    -0x1.99999ap-59f, 0x1.234ad8p-6f, 0x1.eaa3bp-8f, 0x1.7fb594p-3f,
+    -0x1.8p-58f, 0x1.234ad8p-6f, 0x1.eaa3bp-8f, 0x1.7fb594p-3f,
     /* node 47 x */
-    0x1.333334p-59f, 0x1.5022d6p-5f, 0x1.28c66ep-7f, -0x1.95fea4p-3f,
+    -0x1.99999ap-63f, 0x1.5022d6p-5f, 0x1.28c66ep-7f, -0x1.95fea4p-3f,
     /* node 47 y */
-    0x1p-60f, 0x1.be8db4p-7f, 0x1.35c526p-5f, -0x1.b9174ap-5f,
+    0x1.99999ap-62f, 0x1.be8db4p-7f, 0x1.35c526p-5f, -0x1.b9174ap-5f,
     /* node 47 z */
-    -0x1.4p-56f, 0x1.1a274p-4f, 0x1.802d18p-6f, 0x1.f112cep-2f,
+    -0x1.0cccccp-57f, 0x1.1a274p-4f, 0x1.802d18p-6f, 0x1.f112cep-2f,
     /* node 48 x */
-    -0x1.333334p-58f, 0x1.d19994p-4f, 0x1.92b03ep-7f, -0x1.a074aep-3f,
+    -0x1.99999ap-61f, 0x1.d19994p-4f, 0x1.92b03ep-7f, -0x1.a074aep-3f,
     /* node 48 y */
-    0x1.2cccccp-58f, 0x1.bb9882p-7f, 0x1.6087ecp-4f, -0x1.aebe86p-4f,
+    0x1.99999ap-63f, 0x1.bb9882p-7f, 0x1.6087ecp-4f, -0x1.aebe86p-4f,
     /* node 48 z */
-    -0x1.e66666p-57f, 0x1.b10e9cp-4f, 0x1.e5b42ap-5f, 0x1.d2c046p-1f,
+    -0x1.59999ap-56f, 0x1.b10e9cp-4f, 0x1.e5b42ap-5f, 0x1.d2c046p-1f,
     /* node 49 x */
-    -0x1.59999ap-57f, 0x1.9dc994p-3f, 0x1.ee1a44p-5f, -0x1.0ca8e4p-3f,
+    -0x1.f33334p-58f, 0x1.9dc994p-3f, 0x1.ee1a44p-5f, -0x1.0ca8e4p-3f,
     /* node 49 y */
-    0x1.266666p-59f, 0x1.ee1a44p-5f, 0x1.9dc994p-3f, -0x1.0ca8e4p-3f,
+    0x1.8cccccp-58f, 0x1.ee1a44p-5f, 0x1.9dc994p-3f, -0x1.0ca8e4p-3f,
     /* node 49 z */
-    -0x1.e66666p-56f, 0x1.2cf22p-4f, 0x1.2cf22p-4f, 0x1.4854c2p+0f,
+    -0x1.333334p-56f, 0x1.2cf22p-4f, 0x1.2cf22p-4f, 0x1.4854c2p+0f,
     /* node 50 x */
-    -0x1.0e43f6p-56f, 0x1.d32d4p-3f, 0x1.cee592p-48f, -0x1.be3154p-50f,
+    -0x1.16a772p-56f, 0x1.d32d4p-3f, 0x1.cd540ap-48f, -0x1.6dbf8cp-47f,
     /* node 50 y */
-    0x1.933334p-58f, 0x1.321c0cp-49f, 0x1.8b4e16p-2f, -0x1.42e93ap-3f,
+    0x1.666666p-61f, 0x1.16765ep-49f, 0x1.8b4e16p-2f, -0x1.42e93ap-3f,
     /* node 50 z */
-    -0x1.b33334p-57f, 0x1.74e7b8p-47f, 0x1.86212p-4f, 0x1.79e3aap+0f,
+    -0x1.4p-56f, 0x1.082ecp-47f, 0x1.86212p-4f, 0x1.79e3aap+0f,
     /* node 51 x */
-    -0x1.6e6666p-56f, 0x1.9dc994p-3f, -0x1.ee1a44p-5f, 0x1.0ca8e4p-3f,
+    -0x1.766666p-56f, 0x1.9dc994p-3f, -0x1.ee1a44p-5f, 0x1.0ca8e4p-3f,
     /* node 51 y */
-    -0x1.8p-60f, -0x1.ee1a44p-5f, 0x1.9dc994p-3f, -0x1.0ca8e4p-3f,
+    0x1.466666p-57f, -0x1.ee1a44p-5f, 0x1.9dc994p-3f, -0x1.0ca8e4p-3f,
     /* node 51 z */
-    -0x1.8p-57f, -0x1.2cf22p-4f, 0x1.2cf22p-4f, 0x1.4854c2p+0f,
+    -0x1.ccccccp-57f, -0x1.2cf22p-4f, 0x1.2cf22p-4f, 0x1.4854c2p+0f,
     /* node 52 x */
-    -0x1.666666p-58f, 0x1.d19994p-4f, -0x1.92b03ep-7f, 0x1.a074aep-3f,
+    -0x1.8p-57f, 0x1.d19994p-4f, -0x1.92b03ep-7f, 0x1.a074aep-3f,
     /* node 52 y */
-    0x1.066666p-58f, -0x1.bb9882p-7f, 0x1.6087ecp-4f, -0x1.aebe86p-4f,
+    0x1.59999ap-59f, -0x1.bb9882p-7f, 0x1.6087ecp-4f, -0x1.aebe86p-4f,
     /* node 52 z */
-    0x1.99999ap-61f, -0x1.b10e9cp-4f, 0x1.e5b42ap-5f, 0x1.d2c046p-1f,
+    -0x1.99999ap-57f, -0x1.b10e9cp-4f, 0x1.e5b42ap-5f, 0x1.d2c046p-1f,
     /* node 53 x */
-    -0x1.99999ap-60f, 0x1.5022d6p-5f, -0x1.28c66ep-7f, 0x1.95fea4p-3f,
+    -0x1.8p-58f, 0x1.5022d6p-5f, -0x1.28c66ep-7f, 0x1.95fea4p-3f,
     /* node 53 y */
     0x1p-60f, -0x1.be8db4p-7f, 0x1.35c526p-5f, -0x1.b9174ap-5f,
     /* node 53 z */
-    -0x1.99999ap-59f, -0x1.1a274p-4f, 0x1.802d18p-6f, 0x1.f112cep-2f,
+    0x1.99999ap-61f, -0x1.1a274p-4f, 0x1.802d18p-6f, 0x1.f112cep-2f,
     /* node 54 x */
-    -0x1.b33334p-59f, 0x1.67da6ep-7f, 0x1.b30fa4p-13f, 0x1.9d976p-4f,
+    -0x1.666666p-61f, 0x1.67da6ep-7f, 0x1.b30fa4p-13f, 0x1.9d976p-4f,
     /* node 54 y */
-    0x1.8p-60f, -0x1.ddd5b4p-8f, 0x1.c555bp-8f, -0x1.ca8ed4p-6f,
+    0x1.8cccccp-61f, -0x1.ddd5b4p-8f, 0x1.c555bp-8f, -0x1.ca8ed4p-6f,
     /* node 54 z */
-    -0x1.266666p-59f, -0x1.234ad8p-6f, 0x1.eaa3bp-8f, 0x1.7fb594p-3f,
+    -0x1.19999ap-60f, -0x1.234ad8p-6f, 0x1.eaa3bp-8f, 0x1.7fb594p-3f,
     /* node 55 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 55 y */
@@ -460,59 +460,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 56 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 57 x */
-    0x1.8p-60f, 0x1.c466c8p-8f, -0x1.4aa5f6p-49f, -0x1.dae472p-4f,
+    0x1p-60f, 0x1.c466c8p-8f, -0x1.05e1f4p-49f, -0x1.dae472p-4f,
     /* node 57 y */
-    0x1.36ec1p-64f, 0x1.517d36p-50f, 0x1.4cb602p-7f, 0x1.acfea6p-49f,
+    0x1.0f707p-62f, 0x1.3bc93cp-50f, 0x1.4cb602p-7f, 0x1.6af384p-49f,
     /* node 57 z */
-    -0x1.8p-59f, 0x1.7c4e2ep-6f, 0x1.b3404p-49f, 0x1.b2b3dp-3f,
+    -0x1.b33334p-59f, 0x1.7c4e2ep-6f, 0x1.33e17ep-49f, 0x1.b2b3dp-3f,
     /* node 58 x */
-    -0x1.19999ap-58f, 0x1.eb5b5ap-5f, 0x1.8b2268p-49f, -0x1.b51494p-3f,
+    0x1p-60f, 0x1.eb5b5ap-5f, 0x1.05a684p-48f, -0x1.b51494p-3f,
     /* node 58 y */
-    -0x1.94e96ep-62f, -0x1.9bf166p-52f, 0x1.28fc14p-5f, 0x1.bfe606p-48f,
+    0x1.b1f402p-61f, -0x1.5aeab2p-51f, 0x1.28fc14p-5f, 0x1.20eafep-48f,
     /* node 58 z */
-    -0x1p-56f, 0x1.3359d6p-4f, 0x1.e631fap-50f, 0x1.133c1p-1f,
+    -0x1.666666p-57f, 0x1.3359d6p-4f, -0x1.dd324p-52f, 0x1.133c1p-1f,
     /* node 59 x */
-    -0x1.4cccccp-57f, 0x1.183686p-3f, 0x1.f89eb2p-50f, -0x1.e491ep-3f,
+    -0x1.8cccccp-58f, 0x1.183686p-3f, 0x1.898cdep-49f, -0x1.e491ep-3f,
     /* node 59 y */
-    -0x1.60aed2p-61f, 0x1.22ee66p-48f, 0x1.d6fb22p-4f, 0x1.0ec99ep-47f,
+    0x1.bfbc34p-60f, 0x1.14c6a2p-48f, 0x1.d6fb22p-4f, 0x1.85852ep-48f,
     /* node 59 z */
-    -0x1.333334p-56f, 0x1.0c15fep-3f, 0x1.1afe88p-47f, 0x1.09cb32p+0f,
+    -0x1.4cccccp-56f, 0x1.0c15fep-3f, 0x1.0986cp-48f, 0x1.09cb32p+0f,
     /* node 60 x */
-    -0x1.466666p-57f, 0x1.8b4e16p-2f, 0x1.bf525p-48f, -0x1.42e93ap-3f,
+    -0x1.2e6666p-56f, 0x1.8b4e16p-2f, 0x1.d66a04p-48f, -0x1.42e93ap-3f,
     /* node 60 y */
-    0x1.09778p-58f, 0x1.7f144ep-48f, 0x1.d32d4p-3f, 0x1.9d6b66p-50f,
+    0x1.89b818p-58f, 0x1.650922p-48f, 0x1.d32d4p-3f, -0x1.150916p-48f,
     /* node 60 z */
-    -0x1.e66666p-57f, 0x1.86212p-4f, -0x1.411a06p-49f, 0x1.79e3aap+0f,
+    -0x1.666666p-55f, 0x1.86212p-4f, -0x1.20a8cp-47f, 0x1.79e3aap+0f,
     /* node 61 x */
-    -0x1.657894p-55f, 0x1.8fa32ap-1f, -0x1.8b1a8p-48f, 0x1.635cb6p-46f,
+    -0x1.2eca48p-55f, 0x1.8fa32ap-1f, -0x1.aaef6ep-48f, 0x1.7143cap-46f,
     /* node 61 y */
-    0x1.6f099p-56f, -0x1.463c98p-48f, 0x1.8fa32ap-1f, -0x1.648e7ep-49f,
+    0x1.609a9ep-56f, -0x1.6f279p-48f, 0x1.8fa32ap-1f, -0x1.7045fap-47f,
     /* node 61 z */
-    -0x1.4cccccp-56f, 0x1.02df68p-46f, -0x1.4ae69ep-49f, 0x1.0b5e78p+1f,
+    -0x1.a66666p-55f, 0x1.ffe57ep-47f, -0x1.1fdcbp-47f, 0x1.0b5e78p+1f,
     /* node 62 x */
-    -0x1.f4ccccp-56f, 0x1.8b4e16p-2f, -0x1.b86be2p-50f, 0x1.42e93ap-3f,
+    -0x1.34ccccp-55f, 0x1.8b4e16p-2f, -0x1.0e8a52p-49f, 0x1.42e93ap-3f,
     /* node 62 y */
-    0x1.7e7a6p-60f, -0x1.9e7c8cp-50f, 0x1.d32d4p-3f, -0x1.8b383ap-49f,
+    0x1.f02f26p-60f, -0x1.a4ca4p-49f, 0x1.d32d4p-3f, -0x1.7848bap-47f,
     /* node 62 z */
-    -0x1.266666p-56f, -0x1.86212p-4f, -0x1.0cef8p-50f, 0x1.79e3aap+0f,
+    0x1p-57f, -0x1.86212p-4f, -0x1.66d942p-48f, 0x1.79e3aap+0f,
     /* node 63 x */
-    -0x1.4cccccp-57f, 0x1.183686p-3f, 0x1.bcdc1cp-50f, 0x1.e491ep-3f,
+    -0x1.d33334p-57f, 0x1.183686p-3f, 0x1.c7db66p-51f, 0x1.e491ep-3f,
     /* node 63 y */
-    0x1.46d0cap-60f, 0x1.541d98p-48f, 0x1.d6fb22p-4f, -0x1.6ba482p-49f,
+    -0x1.50a758p-61f, 0x1.260e2ep-48f, 0x1.d6fb22p-4f, -0x1.000736p-47f,
     /* node 63 z */
-    -0x1.333334p-59f, -0x1.0c15fep-3f, -0x1.b7f8bap-48f, 0x1.09cb32p+0f,
+    0x1.333334p-58f, -0x1.0c15fep-3f, -0x1.3d167p-47f, 0x1.09cb32p+0f,
     /* node 64 x */
-    -0x1.ccccccp-60f, 0x1.eb5b5ap-5f, -0x1.a72f1cp-49f, 0x1.b51494p-3f,
+    -0x1.2p-57f, 0x1.eb5b5ap-5f, -0x1.f11942p-49f, 0x1.b51494p-3f,
     /* node 64 y */
-    0x1.ec908cp-63f, -0x1.8e024p-51f, 0x1.28fc14p-5f, -0x1.68e066p-47f,
+    0x1.44163p-60f, -0x1.0bae14p-50f, 0x1.28fc14p-5f, -0x1.68d5bcp-47f,
     /* node 64 z */
-    0x1.333334p-60f, -0x1.3359d6p-4f, -0x1.234d58p-48f, 0x1.133c1p-1f,
+    -0x1.99999ap-59f, -0x1.3359d6p-4f, -0x1.746932p-48f, 0x1.133c1p-1f,
     /* node 65 x */
-    -0x1.99999ap-62f, 0x1.c466c8p-8f, -0x1.b6c324p-51f, 0x1.dae472p-4f,
+    -0x1.59999ap-59f, 0x1.c466c8p-8f, -0x1.2c7bf6p-50f, 0x1.dae472p-4f,
     /* node 65 y */
-    0x1.88e44cp-63f, 0x1.0835d4p-49f, 0x1.4cb602p-7f, -0x1.220cd2p-48f,
+    0x1.e12a56p-64f, 0x1.c75ce4p-50f, 0x1.4cb602p-7f, -0x1.fb3f22p-49f,
     /* node 65 z */
-    0x1.99999ap-60f, -0x1.7c4e2ep-6f, -0x1.248be8p-49f, 0x1.b2b3dp-3f,
+    -0x1.19999ap-59f, -0x1.7c4e2ep-6f, -0x1.6494dcp-49f, 0x1.b2b3dp-3f,
     /* node 66 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 66 y */
@@ -526,59 +526,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 67 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 68 x */
-    0x1.99999ap-62f, 0x1.67da6ep-7f, 0x1.b30fa4p-13f, -0x1.9d976p-4f,
+    0x1.19999ap-60f, 0x1.67da6ep-7f, 0x1.b30fa4p-13f, -0x1.9d976p-4f,
     /* node 68 y */
-    0x1.666666p-63f, -0x1.ddd5b4p-8f, 0x1.c555bp-8f, 0x1.ca8ed4p-6f,
+    0x1.8p-62f, -0x1.ddd5b4p-8f, 0x1.c555bp-8f, 0x1.ca8ed4p-6f,
     /* node 68 z */
-    -0x1.59999ap-59f, 0x1.234ad8p-6f, -0x1.eaa3bp-8f, 0x1.7fb594p-3f,
+    -0x1.cp-59f, 0x1.234ad8p-6f, -0x1.eaa3bp-8f, 0x1.7fb594p-3f,
     /* node 69 x */
-    0x1.99999ap-63f, 0x1.5022d6p-5f, -0x1.28c66ep-7f, -0x1.95fea4p-3f,
+    0x1p-59f, 0x1.5022d6p-5f, -0x1.28c66ep-7f, -0x1.95fea4p-3f,
     /* node 69 y */
-    0x1p-61f, -0x1.be8db4p-7f, 0x1.35c526p-5f, 0x1.b9174ap-5f,
+    0x1.e66666p-60f, -0x1.be8db4p-7f, 0x1.35c526p-5f, 0x1.b9174ap-5f,
     /* node 69 z */
-    0x1.333334p-59f, 0x1.1a274p-4f, -0x1.802d18p-6f, 0x1.f112cep-2f,
+    -0x1.59999ap-57f, 0x1.1a274p-4f, -0x1.802d18p-6f, 0x1.f112cep-2f,
     /* node 70 x */
-    -0x1.8p-58f, 0x1.d19994p-4f, -0x1.92b03ep-7f, -0x1.a074aep-3f,
+    -0x1.99999ap-60f, 0x1.d19994p-4f, -0x1.92b03ep-7f, -0x1.a074aep-3f,
     /* node 70 y */
-    0x1.8p-60f, -0x1.bb9882p-7f, 0x1.6087ecp-4f, 0x1.aebe86p-4f,
+    -0x1.333334p-61f, -0x1.bb9882p-7f, 0x1.6087ecp-4f, 0x1.aebe86p-4f,
     /* node 70 z */
-    -0x1p-56f, 0x1.b10e9cp-4f, -0x1.e5b42ap-5f, 0x1.d2c046p-1f,
+    -0x1.19999ap-56f, 0x1.b10e9cp-4f, -0x1.e5b42ap-5f, 0x1.d2c046p-1f,
     /* node 71 x */
-    -0x1.833334p-57f, 0x1.9dc994p-3f, -0x1.ee1a44p-5f, -0x1.0ca8e4p-3f,
+    -0x1.bcccccp-57f, 0x1.9dc994p-3f, -0x1.ee1a44p-5f, -0x1.0ca8e4p-3f,
     /* node 71 y */
-    0x1.a66666p-58f, -0x1.ee1a44p-5f, 0x1.9dc994p-3f, 0x1.0ca8e4p-3f,
+    -0x1.ccccccp-60f, -0x1.ee1a44p-5f, 0x1.9dc994p-3f, 0x1.0ca8e4p-3f,
     /* node 71 z */
-    -0x1.19999ap-55f, 0x1.2cf22p-4f, -0x1.2cf22p-4f, 0x1.4854c2p+0f,
+    -0x1.d9999ap-56f, 0x1.2cf22p-4f, -0x1.2cf22p-4f, 0x1.4854c2p+0f,
     /* node 72 x */
-    -0x1.a59662p-57f, 0x1.d32d4p-3f, 0x1.a65274p-48f, -0x1.34d448p-47f,
+    -0x1.0e4c6ap-56f, 0x1.d32d4p-3f, 0x1.640a7cp-48f, -0x1.adc83ap-48f,
     /* node 72 y */
-    0x1.333334p-62f, 0x1.7d87f4p-48f, 0x1.8b4e16p-2f, 0x1.42e93ap-3f,
+    -0x1.666666p-61f, 0x1.64a60ap-48f, 0x1.8b4e16p-2f, 0x1.42e93ap-3f,
     /* node 72 z */
-    -0x1p-55f, 0x1.bf82d4p-47f, -0x1.86212p-4f, 0x1.79e3aap+0f,
+    -0x1p-55f, 0x1.dc3576p-47f, -0x1.86212p-4f, 0x1.79e3aap+0f,
     /* node 73 x */
-    -0x1.733334p-57f, 0x1.9dc994p-3f, 0x1.ee1a44p-5f, 0x1.0ca8e4p-3f,
+    -0x1.e66666p-59f, 0x1.9dc994p-3f, 0x1.ee1a44p-5f, 0x1.0ca8e4p-3f,
     /* node 73 y */
-    -0x1.ecccccp-58f, 0x1.ee1a44p-5f, 0x1.9dc994p-3f, 0x1.0ca8e4p-3f,
+    -0x1.b33334p-58f, 0x1.ee1a44p-5f, 0x1.9dc994p-3f, 0x1.0ca8e4p-3f,
     /* node 73 z */
-    -0x1.4cccccp-56f, -0x1.2cf22p-4f, -0x1.2cf22p-4f, 0x1.4854c2p+0f,
+    -0x1.733334p-56f, -0x1.2cf22p-4f, -0x1.2cf22p-4f, 0x1.4854c2p+0f,
     /* node 74 x */
-    -0x1.e66666p-57f, 0x1.d19994p-4f, 0x1.92b03ep-7f, 0x1.a074aep-3f,
+    -0x1.b33334p-58f, 0x1.d19994p-4f, 0x1.92b03ep-7f, 0x1.a074aep-3f,
     /* node 74 y */
-    -0x1.99999ap-64f, 0x1.bb9882p-7f, 0x1.6087ecp-4f, 0x1.aebe86p-4f,
+    -0x1.b33334p-60f, 0x1.bb9882p-7f, 0x1.6087ecp-4f, 0x1.aebe86p-4f,
     /* node 74 z */
-    -0x1.99999ap-59f, -0x1.b10e9cp-4f, -0x1.e5b42ap-5f, 0x1.d2c046p-1f,
+    -0x0p+0f, -0x1.b10e9cp-4f, -0x1.e5b42ap-5f, 0x1.d2c046p-1f,
     /* node 75 x */
     -0x1.333334p-58f, 0x1.5022d6p-5f, 0x1.28c66ep-7f, 0x1.95fea4p-3f,
     /* node 75 y */
-    -0x1.19999ap-60f, 0x1.be8db4p-7f, 0x1.35c526p-5f, 0x1.b9174ap-5f,
+    -0x1.333334p-61f, 0x1.be8db4p-7f, 0x1.35c526p-5f, 0x1.b9174ap-5f,
     /* node 75 z */
-    -0x1.ccccccp-59f, -0x1.1a274p-4f, -0x1.802d18p-6f, 0x1.f112cep-2f,
+    0x1.666666p-58f, -0x1.1a274p-4f, -0x1.802d18p-6f, 0x1.f112cep-2f,
     /* node 76 x */
-    -0x1.b33334p-60f, 0x1.67da6ep-7f, -0x1.b30fa4p-13f, 0x1.9d976p-4f,
+    -0x1p-60f, 0x1.67da6ep-7f, -0x1.b30fa4p-13f, 0x1.9d976p-4f,
     /* node 76 y */
-    -0x1.59999ap-61f, 0x1.ddd5b4p-8f, 0x1.c555bp-8f, 0x1.ca8ed4p-6f,
+    -0x1.4cccccp-61f, 0x1.ddd5b4p-8f, 0x1.c555bp-8f, 0x1.ca8ed4p-6f,
     /* node 76 z */
-    -0x1.333334p-59f, -0x1.234ad8p-6f, -0x1.eaa3bp-8f, 0x1.7fb594p-3f,
+    -0x1.666666p-60f, -0x1.234ad8p-6f, -0x1.eaa3bp-8f, 0x1.7fb594p-3f,
     /* node 77 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 77 y */
@@ -592,59 +592,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 78 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 79 x */
-    0x1.19999ap-61f, 0x1.547674p-8f, -0x1.082688p-8f, -0x1.369cdep-4f,
+    -0x1.333334p-63f, 0x1.547674p-8f, -0x1.082688p-8f, -0x1.369cdep-4f,
     /* node 79 y */
-    0x1.d9999ap-61f, -0x1.82e33p-7f, 0x1.c0d326p-8f, 0x1.58cf28p-5f,
+    0x1.99999ap-61f, -0x1.82e33p-7f, 0x1.c0d326p-8f, 0x1.58cf28p-5f,
     /* node 79 z */
-    -0x1.a66666p-59f, 0x1.41d6acp-7f, -0x1.b05deap-8f, 0x1.0fb266p-3f,
+    -0x1.99999ap-59f, 0x1.41d6acp-7f, -0x1.b05deap-8f, 0x1.0fb266p-3f,
     /* node 80 x */
-    -0x1.333334p-61f, 0x1.9acc82p-6f, -0x1.955f02p-8f, -0x1.31c68ep-3f,
+    -0x0p+0f, 0x1.9acc82p-6f, -0x1.955f02p-8f, -0x1.31c68ep-3f,
     /* node 80 y */
-    0x1.333334p-62f, -0x1.8eacdep-7f, 0x1.885a42p-6f, 0x1.62cddap-4f,
+    -0x1.333334p-62f, -0x1.8eacdep-7f, 0x1.885a42p-6f, 0x1.62cddap-4f,
     /* node 80 z */
-    -0x1p-57f, 0x1.80cff4p-5f, -0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
+    -0x1.e66666p-58f, 0x1.80cff4p-5f, -0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
     /* node 81 x */
-    -0x1.8cccccp-59f, 0x1.f0eeb6p-5f, -0x1.5708a4p-6f, -0x1.2ac44ap-3f,
+    -0x1.133334p-58f, 0x1.f0eeb6p-5f, -0x1.5708a4p-6f, -0x1.2ac44ap-3f,
     /* node 81 y */
-    0x1.99999ap-61f, -0x1.5708a4p-6f, 0x1.f0eeb6p-5f, 0x1.2ac44ap-3f,
+    -0x1.333334p-60f, -0x1.5708a4p-6f, 0x1.f0eeb6p-5f, 0x1.2ac44ap-3f,
     /* node 81 z */
-    -0x1.533334p-56f, 0x1.11b0c8p-4f, -0x1.11b0c8p-4f, 0x1.4fe184p-1f,
+    -0x1.666666p-58f, 0x1.11b0c8p-4f, -0x1.11b0c8p-4f, 0x1.4fe184p-1f,
     /* node 82 x */
-    -0x1.266666p-58f, 0x1.6087ecp-4f, -0x1.bb9882p-7f, -0x1.aebe86p-4f,
+    -0x1.e66666p-60f, 0x1.6087ecp-4f, -0x1.bb9882p-7f, -0x1.aebe86p-4f,
     /* node 82 y */
-    -0x1.666666p-60f, -0x1.92b03ep-7f, 0x1.d19994p-4f, 0x1.a074aep-3f,
+    -0x1.266666p-58f, -0x1.92b03ep-7f, 0x1.d19994p-4f, 0x1.a074aep-3f,
     /* node 82 z */
-    -0x1.666666p-58f, 0x1.e5b42ap-5f, -0x1.b10e9cp-4f, 0x1.d2c046p-1f,
+    -0x1.99999ap-57f, 0x1.e5b42ap-5f, -0x1.b10e9cp-4f, 0x1.d2c046p-1f,
     /* node 83 x */
-    -0x1.99ac2cp-57f, 0x1.d6fb22p-4f, -0x1.926358p-50f, -0x1.3819b6p-47f,
+    -0x1.232164p-57f, 0x1.d6fb22p-4f, -0x1.2ba1bep-49f, -0x1.2800dep-47f,
     /* node 83 y */
-    0x1.99999ap-62f, 0x1.5ba2b8p-49f, 0x1.183686p-3f, 0x1.e491ep-3f,
+    0x1.333334p-60f, 0x1.4c7c26p-49f, 0x1.183686p-3f, 0x1.e491ep-3f,
     /* node 83 z */
-    -0x1.4p-56f, 0x1.e7799cp-53f, -0x1.0c15fep-3f, 0x1.09cb32p+0f,
+    -0x1.ccccccp-56f, 0x1.a124p-50f, -0x1.0c15fep-3f, 0x1.09cb32p+0f,
     /* node 84 x */
-    -0x1.066666p-57f, 0x1.6087ecp-4f, 0x1.bb9882p-7f, 0x1.aebe86p-4f,
+    -0x1.2p-57f, 0x1.6087ecp-4f, 0x1.bb9882p-7f, 0x1.aebe86p-4f,
     /* node 84 y */
-    -0x1.99999ap-59f, 0x1.92b03ep-7f, 0x1.d19994p-4f, 0x1.a074aep-3f,
+    -0x1.0cccccp-58f, 0x1.92b03ep-7f, 0x1.d19994p-4f, 0x1.a074aep-3f,
     /* node 84 z */
-    -0x1.333334p-57f, -0x1.e5b42ap-5f, -0x1.b10e9cp-4f, 0x1.d2c046p-1f,
+    -0x1.99999ap-59f, -0x1.e5b42ap-5f, -0x1.b10e9cp-4f, 0x1.d2c046p-1f,
     /* node 85 x */
-    -0x1.b33334p-58f, 0x1.f0eeb6p-5f, 0x1.5708a4p-6f, 0x1.2ac44ap-3f,
+    -0x1.79999ap-58f, 0x1.f0eeb6p-5f, 0x1.5708a4p-6f, 0x1.2ac44ap-3f,
     /* node 85 y */
-    -0x1.b33334p-59f, 0x1.5708a4p-6f, 0x1.f0eeb6p-5f, 0x1.2ac44ap-3f,
+    -0x1.d9999ap-59f, 0x1.5708a4p-6f, 0x1.f0eeb6p-5f, 0x1.2ac44ap-3f,
     /* node 85 z */
-    0x1.333334p-58f, -0x1.11b0c8p-4f, -0x1.11b0c8p-4f, 0x1.4fe184p-1f,
+    -0x1.666666p-59f, -0x1.11b0c8p-4f, -0x1.11b0c8p-4f, 0x1.4fe184p-1f,
     /* node 86 x */
-    -0x1.4cccccp-59f, 0x1.9acc82p-6f, 0x1.955f02p-8f, 0x1.31c68ep-3f,
+    -0x1.266666p-59f, 0x1.9acc82p-6f, 0x1.955f02p-8f, 0x1.31c68ep-3f,
     /* node 86 y */
-    -0x1.e66666p-60f, 0x1.8eacdep-7f, 0x1.885a42p-6f, 0x1.62cddap-4f,
+    -0x1p-61f, 0x1.8eacdep-7f, 0x1.885a42p-6f, 0x1.62cddap-4f,
     /* node 86 z */
-    -0x1.99999ap-60f, -0x1.80cff4p-5f, -0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
+    0x1.e66666p-59f, -0x1.80cff4p-5f, -0x1.1a1694p-5f, 0x1.6bb4c6p-2f,
     /* node 87 x */
-    -0x1.666666p-60f, 0x1.547674p-8f, 0x1.082688p-8f, 0x1.369cdep-4f,
+    -0x1.733334p-60f, 0x1.547674p-8f, 0x1.082688p-8f, 0x1.369cdep-4f,
     /* node 87 y */
-    -0x1.cp-60f, 0x1.82e33p-7f, 0x1.c0d326p-8f, 0x1.58cf28p-5f,
+    -0x1.79999ap-60f, 0x1.82e33p-7f, 0x1.c0d326p-8f, 0x1.58cf28p-5f,
     /* node 87 z */
-    -0x1.333334p-60f, -0x1.41d6acp-7f, -0x1.b05deap-8f, 0x1.0fb266p-3f,
+    -0x1.99999ap-61f, -0x1.41d6acp-7f, -0x1.b05deap-8f, 0x1.0fb266p-3f,
     /* node 88 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 88 y */
@@ -658,59 +658,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 89 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 90 x */
-    0x1.666666p-62f, 0x1.cdee5ap-9f, -0x1.66b35p-9f, -0x1.68e29cp-5f,
+    -0x0p+0f, 0x1.cdee5ap-9f, -0x1.66b35p-9f, -0x1.68e29cp-5f,
     /* node 90 y */
-    0x1.ccccccp-63f, -0x1.06ad22p-7f, 0x1.74afa8p-9f, 0x1.61539cp-5f,
+    -0x1.99999ap-62f, -0x1.06ad22p-7f, 0x1.74afa8p-9f, 0x1.61539cp-5f,
     /* node 90 z */
-    -0x1.b33334p-61f, 0x1.0aff8cp-9f, -0x1.2a9902p-9f, 0x1.09a444p-4f,
+    -0x1.4cccccp-60f, 0x1.0aff8cp-9f, -0x1.2a9902p-9f, 0x1.09a444p-4f,
     /* node 91 x */
-    -0x1.666666p-62f, 0x1.72188ep-7f, -0x1.6b12d2p-7f, -0x1.6401f6p-4f,
+    0x1.666666p-61f, 0x1.72188ep-7f, -0x1.6b12d2p-7f, -0x1.6401f6p-4f,
     /* node 91 y */
-    -0x1.666666p-62f, -0x1.6b12d2p-7f, 0x1.72188ep-7f, 0x1.6401f6p-4f,
+    -0x1p-61f, -0x1.6b12d2p-7f, 0x1.72188ep-7f, 0x1.6401f6p-4f,
     /* node 91 z */
-    -0x1.266666p-58f, 0x1.614e5cp-6f, -0x1.614e5cp-6f, 0x1.7dbb9p-3f,
+    -0x1.19999ap-58f, 0x1.614e5cp-6f, -0x1.614e5cp-6f, 0x1.7dbb9p-3f,
     /* node 92 x */
-    -0x1.333334p-62f, 0x1.885a42p-6f, -0x1.8eacdep-7f, -0x1.62cddap-4f,
+    0x1.ccccccp-62f, 0x1.885a42p-6f, -0x1.8eacdep-7f, -0x1.62cddap-4f,
     /* node 92 y */
     -0x1.666666p-61f, -0x1.955f02p-8f, 0x1.9acc82p-6f, 0x1.31c68ep-3f,
     /* node 92 z */
-    -0x1.a66666p-58f, 0x1.1a1694p-5f, -0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
+    -0x1.59999ap-57f, 0x1.1a1694p-5f, -0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
     /* node 93 x */
-    -0x1.79999ap-59f, 0x1.35c526p-5f, -0x1.be8db4p-7f, -0x1.b9174ap-5f,
+    -0x1.6p-59f, 0x1.35c526p-5f, -0x1.be8db4p-7f, -0x1.b9174ap-5f,
     /* node 93 y */
-    -0x1.ccccccp-60f, -0x1.28c66ep-7f, 0x1.5022d6p-5f, 0x1.95fea4p-3f,
+    -0x1p-60f, -0x1.28c66ep-7f, 0x1.5022d6p-5f, 0x1.95fea4p-3f,
     /* node 93 z */
-    -0x1.333334p-56f, 0x1.802d18p-6f, -0x1.1a274p-4f, 0x1.f112cep-2f,
+    -0x1.8p-58f, 0x1.802d18p-6f, -0x1.1a274p-4f, 0x1.f112cep-2f,
     /* node 94 x */
-    -0x1.2c7aa6p-59f, 0x1.28fc14p-5f, 0x1.524c64p-53f, -0x1.393618p-47f,
+    -0x1.008cc2p-60f, 0x1.28fc14p-5f, -0x1.955e2ep-52f, -0x1.2eebaep-47f,
     /* node 94 y */
-    0x1.99999ap-63f, 0x1.c341dap-50f, 0x1.eb5b5ap-5f, 0x1.b51494p-3f,
+    -0x1.8p-59f, 0x1.bcc9aep-50f, 0x1.eb5b5ap-5f, 0x1.b51494p-3f,
     /* node 94 z */
-    -0x1.99999ap-59f, -0x1.1ce064p-50f, -0x1.3359d6p-4f, 0x1.133c1p-1f,
+    -0x1.4p-57f, -0x1.944ff6p-53f, -0x1.3359d6p-4f, 0x1.133c1p-1f,
     /* node 95 x */
-    -0x1.533334p-59f, 0x1.35c526p-5f, 0x1.be8db4p-7f, 0x1.b9174ap-5f,
+    -0x1.a33334p-58f, 0x1.35c526p-5f, 0x1.be8db4p-7f, 0x1.b9174ap-5f,
     /* node 95 y */
-    -0x1.ccccccp-60f, 0x1.28c66ep-7f, 0x1.5022d6p-5f, 0x1.95fea4p-3f,
+    -0x1.266666p-58f, 0x1.28c66ep-7f, 0x1.5022d6p-5f, 0x1.95fea4p-3f,
     /* node 95 z */
-    -0x1.4cccccp-58f, -0x1.802d18p-6f, -0x1.1a274p-4f, 0x1.f112cep-2f,
+    -0x1.99999ap-59f, -0x1.802d18p-6f, -0x1.1a274p-4f, 0x1.f112cep-2f,
     /* node 96 x */
-    -0x1.cp-60f, 0x1.885a42p-6f, 0x1.8eacdep-7f, 0x1.62cddap-4f,
+    -0x1.066666p-59f, 0x1.885a42p-6f, 0x1.8eacdep-7f, 0x1.62cddap-4f,
     /* node 96 y */
-    -0x1.ccccccp-60f, 0x1.955f02p-8f, 0x1.9acc82p-6f, 0x1.31c68ep-3f,
+    -0x1.e66666p-60f, 0x1.955f02p-8f, 0x1.9acc82p-6f, 0x1.31c68ep-3f,
     /* node 96 z */
-    -0x1.e66666p-58f, -0x1.1a1694p-5f, -0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
+    -0x1.99999ap-60f, -0x1.1a1694p-5f, -0x1.80cff4p-5f, 0x1.6bb4c6p-2f,
     /* node 97 x */
-    -0x1.79999ap-59f, 0x1.72188ep-7f, 0x1.6b12d2p-7f, 0x1.6401f6p-4f,
+    -0x1.19999ap-59f, 0x1.72188ep-7f, 0x1.6b12d2p-7f, 0x1.6401f6p-4f,
     /* node 97 y */
-    -0x1.59999ap-60f, 0x1.6b12d2p-7f, 0x1.72188ep-7f, 0x1.6401f6p-4f,
+    -0x1.733334p-60f, 0x1.6b12d2p-7f, 0x1.72188ep-7f, 0x1.6401f6p-4f,
     /* node 97 z */
     -0x1.99999ap-63f, -0x1.614e5cp-6f, -0x1.614e5cp-6f, 0x1.7dbb9p-3f,
     /* node 98 x */
-    -0x1.6cccccp-60f, 0x1.cdee5ap-9f, 0x1.66b35p-9f, 0x1.68e29cp-5f,
+    -0x1.666666p-63f, 0x1.cdee5ap-9f, 0x1.66b35p-9f, 0x1.68e29cp-5f,
     /* node 98 y */
-    -0x1.733334p-61f, 0x1.06ad22p-7f, 0x1.74afa8p-9f, 0x1.61539cp-5f,
+    -0x1.f33334p-61f, 0x1.06ad22p-7f, 0x1.74afa8p-9f, 0x1.61539cp-5f,
     /* node 98 z */
-    -0x1.666666p-61f, -0x1.0aff8cp-9f, -0x1.2a9902p-9f, 0x1.09a444p-4f,
+    -0x1.333334p-63f, -0x1.0aff8cp-9f, -0x1.2a9902p-9f, 0x1.09a444p-4f,
     /* node 99 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 99 y */
@@ -724,59 +724,59 @@ static const float tfit_block48_forward_coef[1464] = {
     /* node 100 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 101 x */
-    0x1.333334p-62f, 0x1.6c089cp-9f, -0x1.60bf1ep-8f, -0x1.5138a6p-6f,
+    -0x1.4cccccp-63f, 0x1.6c089cp-9f, -0x1.60bf1ep-8f, -0x1.5138a6p-6f,
     /* node 101 y */
-    0x1.99999ap-65f, -0x1.60bf1ep-8f, 0x1.6c089cp-9f, 0x1.5138a6p-6f,
+    0x1.8p-62f, -0x1.60bf1ep-8f, 0x1.6c089cp-9f, 0x1.5138a6p-6f,
     /* node 101 z */
-    0x1.ap-61f, -0x1.bbca98p-8f, 0x1.bbca98p-8f, 0x1.168eeap-6f,
+    0x1.733334p-62f, -0x1.bbca98p-8f, 0x1.bbca98p-8f, 0x1.168eeap-6f,
     /* node 102 x */
-    0x1.0cccccp-61f, 0x1.74afa8p-9f, -0x1.06ad22p-7f, -0x1.61539cp-5f,
+    0x1.666666p-62f, 0x1.74afa8p-9f, -0x1.06ad22p-7f, -0x1.61539cp-5f,
     /* node 102 y */
-    -0x1.19999ap-61f, -0x1.66b35p-9f, 0x1.cdee5ap-9f, 0x1.68e29cp-5f,
+    -0x1.99999ap-61f, -0x1.66b35p-9f, 0x1.cdee5ap-9f, 0x1.68e29cp-5f,
     /* node 102 z */
-    -0x1.4p-60f, 0x1.2a9902p-9f, -0x1.0aff8cp-9f, 0x1.09a444p-4f,
+    -0x1.99999ap-61f, 0x1.2a9902p-9f, -0x1.0aff8cp-9f, 0x1.09a444p-4f,
     /* node 103 x */
-    -0x1p-63f, 0x1.c0d326p-8f, -0x1.82e33p-7f, -0x1.58cf28p-5f,
+    -0x1p-61f, 0x1.c0d326p-8f, -0x1.82e33p-7f, -0x1.58cf28p-5f,
     /* node 103 y */
-    -0x1.333334p-63f, -0x1.082688p-8f, 0x1.547674p-8f, 0x1.369cdep-4f,
+    -0x1.666666p-61f, -0x1.082688p-8f, 0x1.547674p-8f, 0x1.369cdep-4f,
     /* node 103 z */
-    -0x1.666666p-59f, 0x1.b05deap-8f, -0x1.41d6acp-7f, 0x1.0fb266p-3f,
+    -0x1.ccccccp-60f, 0x1.b05deap-8f, -0x1.41d6acp-7f, 0x1.0fb266p-3f,
     /* node 104 x */
-    -0x1p-61f, 0x1.c555bp-8f, -0x1.ddd5b4p-8f, -0x1.ca8ed4p-6f,
+    -0x1.99999ap-64f, 0x1.c555bp-8f, -0x1.ddd5b4p-8f, -0x1.ca8ed4p-6f,
     /* node 104 y */
-    -0x1.333334p-60f, 0x1.b30fa4p-13f, 0x1.67da6ep-7f, 0x1.9d976p-4f,
+    -0x1p-61f, 0x1.b30fa4p-13f, 0x1.67da6ep-7f, 0x1.9d976p-4f,
     /* node 104 z */
-    -0x1.ccccccp-59f, 0x1.eaa3bp-8f, -0x1.234ad8p-6f, 0x1.7fb594p-3f,
+    -0x1.b33334p-59f, 0x1.eaa3bp-8f, -0x1.234ad8p-6f, 0x1.7fb594p-3f,
     /* node 105 x */
-    -0x1.422ee8p-61f, 0x1.4cb602p-7f, 0x1.9f45p-50f, -0x1.10ea02p-47f,
+    -0x1.12784cp-60f, 0x1.4cb602p-7f, 0x1.526706p-50f, -0x1.f0000ep-48f,
     /* node 105 y */
-    0x1.99999ap-62f, -0x1.3d1ebcp-50f, 0x1.c466c8p-8f, 0x1.dae472p-4f,
+    -0x1.59999ap-59f, -0x1.e4f58cp-51f, 0x1.c466c8p-8f, 0x1.dae472p-4f,
     /* node 105 z */
-    -0x1.666666p-59f, -0x1.9820aep-50f, -0x1.7c4e2ep-6f, 0x1.b2b3dp-3f,
+    -0x1.266666p-58f, -0x1.e7b23cp-51f, -0x1.7c4e2ep-6f, 0x1.b2b3dp-3f,
     /* node 106 x */
-    -0x1.e66666p-61f, 0x1.c555bp-8f, 0x1.ddd5b4p-8f, 0x1.ca8ed4p-6f,
+    -0x1.266666p-61f, 0x1.c555bp-8f, 0x1.ddd5b4p-8f, 0x1.ca8ed4p-6f,
     /* node 106 y */
-    -0x1.99999ap-60f, -0x1.b30fa4p-13f, 0x1.67da6ep-7f, 0x1.9d976p-4f,
+    -0x1.666666p-60f, -0x1.b30fa4p-13f, 0x1.67da6ep-7f, 0x1.9d976p-4f,
     /* node 106 z */
-    -0x1.8cccccp-59f, -0x1.eaa3bp-8f, -0x1.234ad8p-6f, 0x1.7fb594p-3f,
+    -0x1.f33334p-59f, -0x1.eaa3bp-8f, -0x1.234ad8p-6f, 0x1.7fb594p-3f,
     /* node 107 x */
-    -0x1.99999ap-62f, 0x1.c0d326p-8f, 0x1.82e33p-7f, 0x1.58cf28p-5f,
+    -0x1.99999ap-63f, 0x1.c0d326p-8f, 0x1.82e33p-7f, 0x1.58cf28p-5f,
     /* node 107 y */
-    -0x1.266666p-60f, 0x1.082688p-8f, 0x1.547674p-8f, 0x1.369cdep-4f,
+    -0x1.ccccccp-61f, 0x1.082688p-8f, 0x1.547674p-8f, 0x1.369cdep-4f,
     /* node 107 z */
-    -0x1.266666p-59f, -0x1.b05deap-8f, -0x1.41d6acp-7f, 0x1.0fb266p-3f,
+    -0x1.e66666p-60f, -0x1.b05deap-8f, -0x1.41d6acp-7f, 0x1.0fb266p-3f,
     /* node 108 x */
-    -0x1.333334p-63f, 0x1.74afa8p-9f, 0x1.06ad22p-7f, 0x1.61539cp-5f,
+    -0x1.4cccccp-62f, 0x1.74afa8p-9f, 0x1.06ad22p-7f, 0x1.61539cp-5f,
     /* node 108 y */
-    -0x1.cp-61f, 0x1.66b35p-9f, 0x1.cdee5ap-9f, 0x1.68e29cp-5f,
+    -0x1.99999ap-62f, 0x1.66b35p-9f, 0x1.cdee5ap-9f, 0x1.68e29cp-5f,
     /* node 108 z */
-    0x1.99999ap-63f, -0x1.2a9902p-9f, -0x1.0aff8cp-9f, 0x1.09a444p-4f,
+    -0x1p-60f, -0x1.2a9902p-9f, -0x1.0aff8cp-9f, 0x1.09a444p-4f,
     /* node 109 x */
-    -0x1.a66666p-62f, 0x1.6c089cp-9f, 0x1.60bf1ep-8f, 0x1.5138a6p-6f,
+    -0x1.4p-62f, 0x1.6c089cp-9f, 0x1.60bf1ep-8f, 0x1.5138a6p-6f,
     /* node 109 y */
-    -0x1p-63f, 0x1.60bf1ep-8f, 0x1.6c089cp-9f, 0x1.5138a6p-6f,
+    -0x1.f9999ap-61f, 0x1.60bf1ep-8f, 0x1.6c089cp-9f, 0x1.5138a6p-6f,
     /* node 109 z */
-    -0x1.266666p-62f, 0x1.bbca98p-8f, 0x1.bbca98p-8f, 0x1.168eeap-6f,
+    -0x1.cp-62f, 0x1.bbca98p-8f, 0x1.bbca98p-8f, 0x1.168eeap-6f,
     /* node 110 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 110 y */
@@ -853,7 +853,7 @@ static const float tfit_block48_forward_coef[1464] = {
 const tfit_model tfit_block48_forward = {
     2u, 1u, 121u, 1u, 1464u,
     tfit_block48_forward_dims, tfit_block48_forward_coef, tfit_block48_forward_nodes,
-    0xd87a3de2u
+    0x9f8101adu
 };
 static const int32_t tfit_block48_forward_q31_coef[1828] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1603,22 +1603,22 @@ static const uint32_t tfit_block48_contact_nodes[1] = {
 };
 static const float tfit_block48_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    -0x1.7f145p-54f, 0x1.067b08p-56f, -0x1.b33334p-56f,
+    -0x1.80a976p-57f, 0x1.bdc20ap-56f, -0x1.8cccccp-55f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.47fa34p+0f, 0x1.446a2ap-47f, -0x1.b473c2p-47f, 0x1.0b8e8ep-47f,
-    0x1.47fa34p+0f, 0x1.b67796p-50f, -0x1.3d8d7ep-47f, 0x1.95e6cp-50f,
+    0x1.47fa34p+0f, 0x1.5e427p-47f, -0x1.c60a96p-47f, 0x1.31acfp-47f,
+    0x1.47fa34p+0f, 0x1.c2ff86p-48f, -0x1.3a003ap-47f, 0x1.6107b8p-48f,
     0x1.ea3a94p-2f,
     /* node 61 x force */
-    -0x1.b94d2p-54f, 0x1p+0f, -0x1.dc177ep-56f, -0x1.755a92p-52f,
+    -0x1.5303ecp-54f, 0x1p+0f, 0x1.2cb6bcp-57f, -0x1.7c5516p-52f,
     /* node 61 y force */
-    0x1.9f35c8p-58f, 0x1.afbd04p-53f, 0x1p+0f, 0x1.20345p-55f,
+    0x1.40042cp-56f, -0x1.8c5996p-56f, 0x1p+0f, 0x1.d41886p-57f,
     /* node 61 z force */
-    0x1.666666p-58f, 0x1.67a4p-53f, -0x1.0ff174p-59f, 0x1p+0f,
+    0x1.99999ap-59f, 0x1.7b0beep-54f, 0x1.a2cd64p-56f, 0x1p+0f,
 };
 const tfit_model tfit_block48_contact = {
     2u, 4u, 1u, 1u, 24u,
     tfit_block48_contact_dims, tfit_block48_contact_coef, tfit_block48_contact_nodes,
-    0x55bf903bu
+    0x8f2d9bedu
 };
 static const int32_t tfit_block48_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1630,14 +1630,14 @@ static const int32_t tfit_block48_contact_q31_coef[28] = {
     /* node 61 x: shift, then 4 coefficients */
     33, 0, 536870912, 0, 0,
     /* node 61 y: shift, then 4 coefficients */
-    33, 0, 0, 536870912, 0,
+    34, 0, 0, 1073741824, 0,
     /* node 61 z: shift, then 4 coefficients */
-    33, 0, 0, 0, 536870912,
+    34, 0, 0, 0, 1073741824,
 };
 const tfit_model_q31 tfit_block48_contact_q31 = {
     1u, 4u, 1u, 1u, 28u,
     tfit_block48_contact_q31_coef, tfit_block48_contact_nodes,
-    0x5221d6e2u
+    0x4d2462bdu
 };
 
 #endif /* TFIT_BLOCK48_IMPLEMENTATION */

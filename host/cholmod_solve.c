@@ -12,8 +12,11 @@
 
 /* OpenBLAS splits its level-3 work by its thread count, and the factor's
  * bits follow the split: a fixed count keeps the result independent of
- * OMP_NUM_THREADS (which OpenBLAS would otherwise follow). */
-#define TF_BLAS_THREADS 2
+ * OMP_NUM_THREADS (which OpenBLAS would otherwise follow).  One thread, the
+ * same as the tool pins for all of OpenBLAS (blas_pin.c), so the bits do not
+ * depend on the machine's core count either; on 41x41x9 the factorisation
+ * took 11.6 s with one thread and 12.0 s with two (pinned Haswell kernels). */
+#define TF_BLAS_THREADS 1
 
 struct tf_chol {
     cholmod_common cm;
