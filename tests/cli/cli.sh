@@ -4,10 +4,6 @@
 set -u
 tool=$1
 . "$(dirname "$0")/expect.sh"
-nothing_written() {
-    [ -z "$(ls -A "$tmp/w" 2>/dev/null)" ] || bad "$1: files were written: $(ls -A "$tmp/w")"
-}
-mkdir -p "$tmp/w"
 
 expect 0 "global --help" -- "$tool" --help
 grep -q "demo-model" "$tmp/out" || bad "--help does not list demo-model"

@@ -4,9 +4,14 @@
 #   expect STATUS DESCRIPTION -- COMMAND...
 #                      run COMMAND (stdout -> $tmp/out, stderr -> $tmp/err)
 #                      and count a failure unless it exits with STATUS
+#   check DESCRIPTION COMMAND...
+#                      count a failure unless COMMAND succeeds
+#   nothing_written DESCRIPTION
+#                      count a failure if $tmp/w (created here) holds a file
 #   finish NAME        print the tally and exit non-zero on any failure
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$tmp/w"
 fails=0
 
 bad() {
@@ -25,6 +30,16 @@ expect() {
     else
         echo "ok:   $what (exit $got)"
     fi
+}
+
+check() {
+    what=$1
+    shift
+    "$@" || bad "$what"
+}
+
+nothing_written() {
+    [ -z "$(ls -A "$tmp/w")" ] || bad "$1: files were written: $(ls -A "$tmp/w")"
 }
 
 finish() {

@@ -5,10 +5,6 @@
 set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
-mkdir -p "$tmp/w"
-nothing_written() {
-    [ -z "$(ls -A "$tmp/w")" ] || bad "$1: files were written: $(ls -A "$tmp/w")"
-}
 says() {
     grep -q "$2" "$tmp/err" || bad "$1: message lacks '$2': $(cat "$tmp/err")"
 }

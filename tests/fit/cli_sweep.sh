@@ -6,7 +6,6 @@
 set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
-mkdir -p "$tmp/w"
 
 expect 0 "sweep, scene outputs" -- "$tool" -q sweep coeffs/block48.yaml --outputs scene \
     --csv "$tmp/s.csv" --md "$tmp/s.md"

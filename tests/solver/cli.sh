@@ -1,37 +1,10 @@
 #!/bin/sh
 # cli.sh TISSUEFIT — `tissuefit solve` and `tissuefit verify` on the command
-# line: help, outputs, exit statuses, nothing written on bad input.  Prints
-# failures and a summary; VERBOSE=1 also prints what passed.
+# line: help, outputs, exit statuses, nothing written on bad input.
 set -u
 tool=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
+. "$(dirname "$0")/../cli/expect.sh"
 B=coeffs/block48.yaml
-
-# expect STATUS DESCRIPTION -- COMMAND...
-expect() {
-    want=$1 what=$2
-    shift 3
-    "$@" >"$tmp/out" 2>"$tmp/err"
-    got=$?
-    if [ "$got" != "$want" ]; then
-        echo "FAIL: $what: exit $got, expected $want"; cat "$tmp/err"; fails=$((fails + 1))
-    elif [ -n "${VERBOSE:-}" ]; then
-        echo "ok:   $what (exit $got)"
-    fi
-}
-check() { # check DESCRIPTION COMMAND... (a shell test)
-    what=$1
-    shift
-    if ! "$@"; then echo "FAIL: $what"; fails=$((fails + 1)); fi
-}
-mkdir -p "$tmp/w"
-nothing_written() {
-    if [ -n "$(ls -A "$tmp/w")" ]; then
-        echo "FAIL: $1: files were written: $(ls -A "$tmp/w")"; fails=$((fails + 1))
-    fi
-}
 
 expect 0 "solve --help" -- "$tool" solve --help
 check "solve --help names --set" grep -q -- "--set KEY=VALUE" "$tmp/out"
@@ -91,5 +64,4 @@ expect 2 "verify, bad --vary" -- "$tool" verify patch --vary time
 expect 2 "verify, scene without reference" -- "$tool" verify patch --scene $B --csv "$tmp/w/v.csv"
 nothing_written "bad verify"
 
-echo "solver cli: $fails failure(s)"
-[ "$fails" = 0 ]
+finish "solver cli"
