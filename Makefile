@@ -90,9 +90,15 @@ include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildc
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 
+# Each check prints a "== ... ==" heading; one that prints none ran nothing
+# (a rule lost its recipe), which must fail rather than pass silently.
 check: | deps-check
-	@$(MAKE) --no-print-directory $(CHECKS)
-	@echo "== make check: all passed =="
+	@mkdir -p $(B)/check
+	@set -e; for c in $(CHECKS); do \
+	  $(MAKE) --no-print-directory $$c 2>&1 | tee $(B)/check/$$c.log; \
+	  grep -q '^== ' $(B)/check/$$c.log || { echo "$$c ran nothing: its rule has no recipe"; exit 1; }; \
+	done
+	@echo "== make check: all passed ($(words $(CHECKS)) checks) =="
 
 bench: | deps-bench
 	@$(MAKE) --no-print-directory $(BENCHES)

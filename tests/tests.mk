@@ -130,3 +130,7 @@ $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
 check-insncount: $(T)/probe
 	@echo "== instructions per evaluation (callgrind), every golden input =="
 	@tests/insncount/run.sh $(T)/probe $(T)/insncount
+
+check-cli: $(B)/bin/tissuefit
+	@echo "== command line =="
+	@tests/cli/cli.sh $(B)/bin/tissuefit
