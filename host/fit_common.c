@@ -93,6 +93,22 @@ void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d)
     tf_model_set_ball(model, d->centre, d->radius);
 }
 
+tf_model *tf_fit_forward_model(const char *name, tfit_family family, const uint32_t *dims,
+                               uint32_t n_dims, uint32_t p, const tf_fitdata *d,
+                               const size_t *idx, size_t m, char *err, size_t errlen)
+{
+    tf_model *model = tf_model_new(name, family, d->n_out, dims, n_dims, err, errlen);
+    if (model == NULL) {
+        return NULL;
+    }
+    tf_fit_forward_setup(model, d);
+    if (p > 0 && tf_fit_spans(model, d->force, idx, m, err, errlen) != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
+    return model;
+}
+
 /* host.mk compiles this without SLP vectorization: GCC 12.2 at -O2 would
  * round only v[i][2] (tests/unit/test_toolchain.c). */
 void tf_round_to_float(double (*v)[3], size_t n)

@@ -59,4 +59,11 @@ void tf_round_to_float(double (*v)[3], size_t n);
 /* Copies node ids and sets the ball map of the data's force envelope. */
 void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d);
 
+/* A forward model of the given shape set up for d (tf_fit_forward_setup),
+ * refusing load cases that do not cover the envelope when its degree p > 0
+ * (tf_fit_spans).  NULL with a message on failure. */
+tf_model *tf_fit_forward_model(const char *name, tfit_family family, const uint32_t *dims,
+                               uint32_t n_dims, uint32_t p, const tf_fitdata *d,
+                               const size_t *idx, size_t m, char *err, size_t errlen);
+
 #endif /* TF_FIT_COMMON_H */

@@ -21,13 +21,9 @@ tf_model *tf_fit_modal(const tf_fitdata *d, const size_t *idx, size_t m, const u
                  rows);
         return NULL;
     }
-    tf_model *model = tf_model_new(name, TFIT_FAMILY_MODAL, d->n_out, orders, 2, err, errlen);
+    tf_model *model = tf_fit_forward_model(name, TFIT_FAMILY_MODAL, orders, 2, p, d, idx, m, err,
+                                           errlen);
     if (model == NULL) {
-        return NULL;
-    }
-    tf_fit_forward_setup(model, d);
-    if (p > 0 && tf_fit_spans(model, d->force, idx, m, err, errlen) != 0) {
-        tf_model_free(model);
         return NULL;
     }
     const uint32_t t = tf_terms(p);
