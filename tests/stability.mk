@@ -13,6 +13,9 @@
 #                              and form, same invariants
 #   check-stability-sanitize   the extremes and 20000 random inputs again,
 #                              runner and library under ASan + UBSan
+#   check-stability-models     the same invariants on STAB_MODELS random
+#                              models of every family (tests/support), beyond
+#                              the shipped headers
 #   stability-basis-order8     the issue's statement verbatim (< 1 digit up
 #                              to order 8): fails today, so not in make check
 #   stability-plot             docs/stability_basis.png and the tables
@@ -25,10 +28,13 @@ STAB_INV_SRC := tests/stability/invariants_float.c tests/stability/invariants_q3
                 tests/stability/inputs_extreme.c tests/stability/inputs_random.c \
                 tests/stability/report.c tests/stability/run_invariants.c
 STAB_INV_HDR := tests/stability/invariants.h tests/stability/inputs.h host/rng.h
+STAB_CHECK_SRC := $(filter-out tests/stability/run_invariants.c,$(STAB_INV_SRC))
 STAB_BASIS_SRC := tests/stability/basis_study.c tests/stability/basis_forms.c
 STAB_RANDOM_N := 1000000
 STAB_SANITIZE_N := 20000
 STAB_SEED := 20260707
+STAB_MODELS := 200
+STAB_MODELS_N := 2000
 STAB_ACCEPT_ORDER := 4
 STAB_NAMES := $(foreach h,$(FW_HEADERS),$(call fw_name,$(h)))
 
@@ -50,11 +56,11 @@ $(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))
 $(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE))))
 
 .PHONY: check-stability check-stability-basis check-stability-extremes check-stability-random \
-        check-stability-sanitize stability-basis-order8 stability-plot \
+        check-stability-sanitize check-stability-models stability-basis-order8 stability-plot \
         $(STAB_NAMES:%=stability-extremes-%) $(STAB_NAMES:%=stability-random-%)
 CHECKS += check-stability
 check-stability: check-stability-basis check-stability-extremes check-stability-random \
-                 check-stability-sanitize
+                 check-stability-sanitize check-stability-models
 
 # One target per header, so that make -j2 runs two at a time.
 $(STAB_NAMES:%=stability-extremes-%): stability-extremes-%: $(STAB_T)/native/run_invariants-%
@@ -75,6 +81,16 @@ check-stability-sanitize: $(STAB_NAMES:%=$(STAB_T)/asan/run_invariants-%)
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    $(STAB_T)/asan/run_invariants-$$n -l $$n random $(STAB_SANITIZE_N) $(STAB_SEED) >/dev/null; \
 	  echo "$$n: no report"; done
+
+$(STAB_T)/random_models: tests/stability/random_models.c $(STAB_CHECK_SRC) $(STAB_INV_HDR) \
+    $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 -Itests/stability $< $(STAB_CHECK_SRC) $(call host_test_link,native) -o $@
+
+check-stability-models: $(STAB_T)/random_models
+	@echo "== stability: $(STAB_MODELS) random models, extremes and $(STAB_MODELS_N) random inputs each =="
+	@$< $(STAB_MODELS) $(STAB_SEED) $(STAB_MODELS_N)
 
 # --- item 1: basis conditioning --------------------------------------------
 $(STAB_T)/basis_study: $(STAB_BASIS_SRC) tests/stability/basis_forms.h \

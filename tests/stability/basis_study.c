@@ -41,6 +41,7 @@
 #include <string.h>
 
 #include "basis_forms.h"
+#include "blas_pin.h"
 #include "lsq.h"
 
 #define MAX_ORDER STAB_MAX_ORDER
@@ -256,6 +257,7 @@ static int usage(void)
 
 int main(int argc, char **argv)
 {
+    tf_blas_pin(argv); /* the fits and condition numbers: same bits everywhere */
     const char *data = NULL;
     int accept = MAX_ORDER;
     for (int a = 1; a < argc; a += 2) {

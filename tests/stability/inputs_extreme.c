@@ -29,15 +29,8 @@ static float from_bits(uint32_t u)
 static int directions(double v[][3])
 {
     int n = 0;
-    for (int a = -1; a <= 1; ++a) {
-        for (int b = -1; b <= 1; ++b) {
-            for (int c = -1; c <= 1; ++c) {
-                if (a != 0 || b != 0 || c != 0) {
-                    v[n][0] = a, v[n][1] = b, v[n][2] = c;
-                    n++;
-                }
-            }
-        }
+    for (; n < 26; ++n) {
+        stab_cube_direction(n, v[n]);
     }
     tf_rng r = {DIRECTION_SEED};
     for (int k = 0; k < N_RANDOM_DIRECTIONS; ++k) {
@@ -88,18 +81,9 @@ static uint64_t float_directions(stab_float *c)
     const int nd = directions(v);
     uint64_t n = 0;
     for (int k = 0; k < nd; ++k) {
-        const double r = stab_float_reach(c, v[k]);
         for (int f = 0; f < N_FACTORS; ++f) {
-            double t = reach_factors[f] / r;
-            /* 1e30 x beyond may not fit in a float: stop at FLT_MAX / 2. */
-            double big = fmax(fmax(fabs(v[k][0]), fabs(v[k][1])), fabs(v[k][2])) * t;
-            if (big > FLT_MAX / 2) {
-                t *= FLT_MAX / 2 / big;
-            }
             float x[3];
-            for (int j = 0; j < 3; ++j) {
-                x[j] = (float)(c->x0[j] + t * v[k][j]);
-            }
+            stab_float_along(c, v[k], reach_factors[f], x);
             n += (uint64_t)stab_float_check(c, x);
         }
     }
@@ -192,12 +176,9 @@ static uint64_t q31_directions(stab_q31 *c)
     const int nd = directions(v);
     uint64_t n = 0;
     for (int k = 0; k < nd; ++k) {
-        const double r = stab_q31_reach(c, v[k]);
         for (int f = 0; f < N_FACTORS; ++f) {
             int32_t x[3];
-            for (int j = 0; j < 3; ++j) {
-                x[j] = stab_q31_word(2 * c->x0h[j] + reach_factors[f] / r * v[k][j]);
-            }
+            stab_q31_along(c, v[k], reach_factors[f], x);
             n += (uint64_t)stab_q31_check(c, x);
         }
     }

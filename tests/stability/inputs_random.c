@@ -85,10 +85,7 @@ static void random_float_input(const stab_float *c, tf_rng *r, float x[3])
         }
     } else {
         stab_direction(r, v);
-        const double t = envelope_multiple(r) / stab_float_reach(c, v);
-        for (int j = 0; j < 3; ++j) {
-            x[j] = (float)(c->x0[j] + t * v[j]);
-        }
+        stab_float_along(c, v, envelope_multiple(r), x);
     }
     for (int j = 0; j < 3; ++j) {
         if (tf_rng_below(r, NONFINITE_RATE) == 0) {
@@ -128,10 +125,7 @@ static void random_q31_input(const stab_q31 *c, tf_rng *r, int32_t x[3])
         break;
     case 2: { /* around the envelope */
         stab_direction(r, v);
-        const double t = envelope_multiple(r) / stab_q31_reach(c, v);
-        for (int j = 0; j < 3; ++j) {
-            x[j] = stab_q31_word(2 * c->x0h[j] + t * v[j]);
-        }
+        stab_q31_along(c, v, envelope_multiple(r), x);
         break;
     }
     default: /* saturated components (a sensor reading beyond the range) */

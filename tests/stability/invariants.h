@@ -9,7 +9,7 @@
  *          from x0 and W in double, with a margin for float rounding); a
  *          clamped result equals the result at the boundary point in the
  *          same direction, x0 + (x - x0) / |W (x - x0)|, within a tolerance
- *          in ulps of the output magnitude.
+ *          in ulps of the output magnitude (below).
  *   Q31    every int32 input is valid: TFIT_OK inside, TFIT_CLAMPED
  *          outside (predicted from the integer table, with a margin for
  *          the rounding of gh); every output word within its row's bound
@@ -33,25 +33,29 @@
 #include "tfit_q31.h"
 
 /* Clamped against boundary, float: |y - y_b|_inf <= STAB_FLOAT_TOL_ULPS
- * ulps (FLT_EPSILON) of the model's output magnitude on its envelope (the
- * largest |output| at 26 boundary points). */
+ * ulps (FLT_EPSILON) of the output magnitude (the larger of |y_b|_inf and
+ * the largest |output| at 26 boundary points), or, for an ill-conditioned
+ * model, STAB_FLOAT_TOL_SENSITIVITY times the largest change that one ulp
+ * of one component of the boundary input causes there. */
 #define STAB_FLOAT_TOL_ULPS 64.0
+#define STAB_FLOAT_TOL_SENSITIVITY 8.0
 
 typedef struct stab_stats {
     uint64_t n;        /* inputs checked */
     uint64_t ok, clamped, bad_input;
     uint64_t failures; /* invariant violations */
+    uint64_t sensitive; /* float clamps within the sensitivity allowance only */
     double worst;      /* largest deviation: ulps (float) or LSB (Q31) */
     uint32_t worst_in[3]; /* its input (float bits or int32 words) */
 } stab_stats;
 
-/* A float32 model under test; y and y_b are work arrays of 3 n_out. */
+/* A float32 model under test; y, y_b, y_n are work arrays of 3 n_out. */
 typedef struct stab_float {
     const tfit_model *m;
     const char *label;
     double x0[3], w[9]; /* the input map, from coef[0..11] */
-    double scale;       /* output magnitude the ulps are counted in */
-    float *y, *y_b;
+    double scale;       /* output magnitude on the envelope (see above) */
+    float *y, *y_b, *y_n;
     stab_stats st;
 } stab_float;
 
@@ -81,8 +85,9 @@ void stab_q31_free(stab_q31 *c);
 tfit_status stab_float_eval(const stab_float *c, const float x[3], float *y);
 tfit_status stab_q31_eval(const stab_q31 *c, const int32_t x[3], int32_t *y);
 
-/* Largest |y - y_ref| over the outputs: in ulps (FLT_EPSILON) of c->scale
- * for float (NaN when an output is NaN), in output words for Q31. */
+/* Largest |y - y_ref| over the outputs: float in ulps (FLT_EPSILON) of
+ * the larger of c->scale and |y_ref|_inf (NaN when an output is NaN), Q31
+ * in output words. */
 double stab_float_deviation(const stab_float *c, const float *y, const float *y_ref);
 double stab_q31_deviation(const stab_q31 *c, const int32_t *y, const int32_t *y_ref);
 
@@ -90,11 +95,16 @@ double stab_q31_deviation(const stab_q31 *c, const int32_t *y, const int32_t *y_
 int stab_float_check(stab_float *c, const float x[3]);
 int stab_q31_check(stab_q31 *c, const int32_t x[3]);
 
-/* |g| of the offset v from the envelope's centre (float: input units;
- * Q31: input words), so that centre + t v / reach lies at t times the
- * envelope's extent in that direction (t = 1: on the boundary). */
-double stab_float_reach(const stab_float *c, const double v[3]);
-double stab_q31_reach(const stab_q31 *c, const double v[3]);
+/* The input at t times the envelope's extent from its centre in the
+ * direction v (float: input units; Q31: input words; t = 1: on the
+ * boundary).  Float stops where a component would pass FLT_MAX / 2; Q31
+ * saturates each word (stab_q31_word). */
+void stab_float_along(const stab_float *c, const double v[3], double t, float x[3]);
+void stab_q31_along(const stab_q31 *c, const double v[3], double t, int32_t x[3]);
+
+/* Direction i = 0..25 of the 26 from a cube's centre to its faces, edges
+ * and corners (components -1, 0, 1). */
+void stab_cube_direction(int i, double v[3]);
 
 /* The input word nearest to the real value v (words of the int32 input),
  * saturated at the int32 limits: the conversion q31-format.md §2 asks the

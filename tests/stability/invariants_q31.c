@@ -46,11 +46,19 @@ static void map(const stab_q31 *c, const double v[3], double g[3])
     }
 }
 
-double stab_q31_reach(const stab_q31 *c, const double v[3])
+static double reach(const stab_q31 *c, const double v[3])
 {
     double g[3];
     map(c, v, g);
     return sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+}
+
+void stab_q31_along(const stab_q31 *c, const double v[3], double t, int32_t x[3])
+{
+    const double s = t / reach(c, v);
+    for (int j = 0; j < 3; ++j) {
+        x[j] = stab_q31_word(2 * c->x0h[j] + s * v[j]);
+    }
 }
 
 /* The range proof's bound on each output word (q31-format.md §6):
@@ -151,7 +159,7 @@ static int check_boundary(stab_q31 *c, const int32_t x[3], const double v[3], do
     }
     if (!(dev <= c->tol)) {
         char what[160];
-        snprintf(what, sizeof what, "clamped result %.0f LSB from the boundary result (tolerance %.0f)",
+        snprintf(what, sizeof what, "clamped result %.0f LSB from the boundary result (tolerance %.3g)",
                  dev, c->tol);
         return fail(c, x, what);
     }
@@ -171,7 +179,7 @@ int stab_q31_check(stab_q31 *c, const int32_t x[3])
     }
     double v[3];
     offset(c, x, v);
-    const double r = stab_q31_reach(c, v);
+    const double r = reach(c, v);
     /* gh rounds to the nearest unit of Q(30 - H): |g| moves by at most
      * sqrt(3)/2 units; two units of margin. */
     const double margin = 2 / c->unit;

@@ -21,5 +21,8 @@ void stab_print(int q31, const char *label, const stab_stats *st, double tol, do
             printf(" at bits {%08x %08x %08x}", st->worst_in[0], st->worst_in[1], st->worst_in[2]);
         }
     }
+    if (st->sensitive > 0) {
+        printf("; %llu within the sensitivity allowance", (unsigned long long)st->sensitive);
+    }
     printf("; %.2f s%s\n", seconds, st->failures ? "  FAILED" : "");
 }
