@@ -19,16 +19,18 @@
 #   stability-basis-order8     the issue's statement verbatim (< 1 digit up
 #                              to order 8): fails today, so not in make check
 #   stability-plot             docs/stability_basis.png and the tables
+#   bench-stability            (make bench) native ns per evaluation by kind
+#                              of input: inside, subnormal, far, NaN
 #
 # Headers: linker/firmware.mk's FW_HEADERS (coeffs/*.h without *_golden.h,
 # plus the generated test headers), so real headers are covered as they land.
 
 STAB_T := $(T)/stability
-STAB_INV_SRC := tests/stability/invariants_float.c tests/stability/invariants_q31.c \
-                tests/stability/inputs_extreme.c tests/stability/inputs_random.c \
-                tests/stability/report.c tests/stability/run_invariants.c
+# The checks and inputs every stability program links (each has its own main).
+STAB_CHECK_SRC := tests/stability/invariants_float.c tests/stability/invariants_q31.c \
+                  tests/stability/inputs_extreme.c tests/stability/inputs_random.c \
+                  tests/stability/report.c
 STAB_INV_HDR := tests/stability/invariants.h tests/stability/inputs.h host/rng.h
-STAB_CHECK_SRC := $(filter-out tests/stability/run_invariants.c,$(STAB_INV_SRC))
 STAB_BASIS_SRC := tests/stability/basis_study.c tests/stability/basis_forms.c
 STAB_RANDOM_N := 1000000
 STAB_SANITIZE_N := 20000
@@ -38,11 +40,11 @@ STAB_MODELS_N := 2000
 STAB_ACCEPT_ORDER := 4
 STAB_NAMES := $(foreach h,$(FW_HEADERS),$(call fw_name,$(h)))
 
-# $(call stab_runner,HEADER,VARIANT,EXTRA-FLAGS): run_invariants for one
-# header, linked with build/VARIANT/libtfit.a.
+# $(call stab_runner,HEADER,VARIANT,FLAGS[,PROGRAM,MAIN]): run_invariants (or
+# PROGRAM from MAIN) for one header, linked with build/VARIANT/libtfit.a.
 define stab_runner
-$(STAB_T)/$(2)/run_invariants-$(call fw_name,$(1)): $(STAB_INV_SRC) $(STAB_INV_HDR) $(1) \
-    $(B)/$(2)/libtfit.a | deps-check
+$(STAB_T)/$(2)/$(or $(4),run_invariants)-$(call fw_name,$(1)): $(or $(5),tests/stability/run_invariants.c) \
+    $(STAB_CHECK_SRC) $(STAB_INV_HDR) $(1) $(B)/$(2)/libtfit.a | deps-check
 	@mkdir -p $$(@D)
 	$$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) $(3) -Itarget/include -Ihost -Itests/stability -I$(dir $(1)) \
@@ -50,9 +52,10 @@ $(STAB_T)/$(2)/run_invariants-$(call fw_name,$(1)): $(STAB_INV_SRC) $(STAB_INV_H
 	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
 	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
 	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
-	  $(STAB_INV_SRC) $(B)/$(2)/libtfit.a -lm -o $$@
+	  $(or $(5),tests/stability/run_invariants.c) $(STAB_CHECK_SRC) $(B)/$(2)/libtfit.a -lm -o $$@
 endef
 $(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))
+$(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),native,-O2,bench_inputs,tests/stability/bench_inputs.c)))
 $(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE))))
 
 .PHONY: check-stability check-stability-basis check-stability-extremes check-stability-random \
@@ -91,6 +94,12 @@ $(STAB_T)/random_models: tests/stability/random_models.c $(STAB_CHECK_SRC) $(STA
 check-stability-models: $(STAB_T)/random_models
 	@echo "== stability: $(STAB_MODELS) random models, extremes and $(STAB_MODELS_N) random inputs each =="
 	@$< $(STAB_MODELS) $(STAB_SEED) $(STAB_MODELS_N)
+
+.PHONY: bench-stability
+BENCHES += bench-stability
+bench-stability: $(STAB_NAMES:%=$(STAB_T)/native/bench_inputs-%)
+	@echo "== native ns per evaluation by kind of input (median of batches of 64 calls) =="
+	@set -e; for n in $(STAB_NAMES); do $(STAB_T)/native/bench_inputs-$$n | sed "s|^|$$n |"; done
 
 # --- item 1: basis conditioning --------------------------------------------
 $(STAB_T)/basis_study: $(STAB_BASIS_SRC) tests/stability/basis_forms.h \
