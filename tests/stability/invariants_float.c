@@ -199,16 +199,16 @@ static double where(const stab_float *c, const float x[3], double *margin)
     return sqrt(s);
 }
 
-/* The clamped result against the result at x0 + (x - x0) / r: within
+/* The clamped result against the result at x0 + (x - x0) / |W (x - x0)|: within
  * STAB_FLOAT_TOL_ULPS, or else within STAB_FLOAT_TOL_SENSITIVITY times what
  * one ulp of the boundary input itself changes (an ill-conditioned model:
  * the two inputs' roundings put their projections a few such steps apart). */
-static int check_boundary(stab_float *c, const float x[3], double r)
+static int check_boundary(stab_float *c, const float x[3])
 {
+    const double d[3] = {(double)x[0] - c->x0[0], (double)x[1] - c->x0[1],
+                         (double)x[2] - c->x0[2]};
     float xb[3];
-    for (int j = 0; j < 3; ++j) {
-        xb[j] = (float)(c->x0[j] + ((double)x[j] - c->x0[j]) / r);
-    }
+    stab_float_along(c, d, 1.0, xb);
     stab_float_eval(c, xb, c->y_b);
     const double dev = stab_float_deviation(c, c->y, c->y_b);
     if (dev > c->st.worst) {
@@ -259,7 +259,7 @@ int stab_float_check(stab_float *c, const float x[3])
         if (r < 1 - margin) {
             n += fail(c, x, "TFIT_CLAMPED inside the envelope");
         }
-        n += check_boundary(c, x, r);
+        n += check_boundary(c, x);
     } else {
         n += fail(c, x, "finite input gave an error status");
     }

@@ -145,12 +145,12 @@ double stab_q31_deviation(const stab_q31 *c, const int32_t *y, const int32_t *y_
     return (double)dev;
 }
 
-static int check_boundary(stab_q31 *c, const int32_t x[3], const double v[3], double r)
+/* The clamped result against the result at the boundary word in the
+ * direction v of the input's offset from the centre. */
+static int check_boundary(stab_q31 *c, const int32_t x[3], const double v[3])
 {
     int32_t xb[3];
-    for (int j = 0; j < 3; ++j) {
-        xb[j] = stab_q31_word(2 * c->x0h[j] + v[j] / r);
-    }
+    stab_q31_along(c, v, 1.0, xb);
     stab_q31_eval(c, xb, c->y_b);
     const double dev = stab_q31_deviation(c, c->y, c->y_b);
     if (dev > c->st.worst) {
@@ -193,7 +193,7 @@ int stab_q31_check(stab_q31 *c, const int32_t x[3])
         if (r < 1 - margin) {
             n += fail(c, x, "TFIT_CLAMPED inside the envelope");
         }
-        n += check_boundary(c, x, v, r);
+        n += check_boundary(c, x, v);
     } else {
         n += fail(c, x, "an int32 input gave an error status");
     }
