@@ -3,33 +3,31 @@
  */
 #include "basis.h"
 
-void tf_basis(uint32_t p, const double g[3], double *phi)
+#include "model.h"
+
+void tf_chebyshev(uint32_t n, double x, double *out)
 {
-    uint32_t t = 0;
-    for (uint32_t d = 0; d <= p; ++d) {
-        for (int a = (int)d; a >= 0; --a) {
-            for (int b = (int)d - a; b >= 0; --b) {
-                int c = (int)d - a - b;
-                double v = 1;
-                for (int k = 0; k < a; ++k) {
-                    v *= g[0];
-                }
-                for (int k = 0; k < b; ++k) {
-                    v *= g[1];
-                }
-                for (int k = 0; k < c; ++k) {
-                    v *= g[2];
-                }
-                phi[t++] = v;
-            }
-        }
+    out[0] = 1;
+    if (n >= 1) {
+        out[1] = x;
+    }
+    for (uint32_t k = 2; k <= n; ++k) {
+        out[k] = 2 * x * out[k - 1] - out[k - 2];
     }
 }
 
-void tf_powers(uint32_t n, double x, double *out)
+void tf_basis(uint32_t p, const double g[3], double *phi)
 {
-    out[0] = 1;
-    for (uint32_t k = 1; k <= n; ++k) {
-        out[k] = out[k - 1] * x;
+    double t[3][TFIT_MAX_DEGREE + 1];
+    for (int v = 0; v < 3; ++v) {
+        tf_chebyshev(p, g[v], t[v]);
+    }
+    uint32_t k = 0;
+    for (uint32_t d = 0; d <= p; ++d) {
+        for (int a = (int)d; a >= 0; --a) {
+            for (int b = (int)d - a; b >= 0; --b) {
+                phi[k++] = t[0][a] * (t[1][b] * t[2][(int)d - a - b]);
+            }
+        }
     }
 }

@@ -69,7 +69,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
         for (size_t i = 0; i < m; ++i) {
             size_t n = tf_fit_case(idx, i);
             double pw[TFIT_MAX_DEGREE + 1];
-            tf_powers(lambda, d->force[n][a] / d->radius, pw);
+            tf_chebyshev(lambda, d->force[n][a] / d->radius, pw);
             for (uint32_t k = 0; k <= lambda; ++k) {
                 design[i + k * m] = pw[k];
             }
@@ -91,8 +91,8 @@ static double *surface_design(const double *xy, const size_t *pts, size_t np, ui
     for (size_t q = 0; s && q < np; ++q) {
         const double *p = xy + 2 * tf_fit_case(pts, q);
         double px[TFIT_ZHOU_MAX_ORDER + 1], py[TFIT_ZHOU_MAX_ORDER + 1];
-        tf_powers(A, p[0], px);
-        tf_powers(B, p[1], py);
+        tf_chebyshev(A, p[0], px);
+        tf_chebyshev(B, p[1], py);
         for (uint32_t k = 0; k <= A; ++k) {
             s[q + k * np] = px[k];
         }
@@ -134,7 +134,7 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
     if (design && y) {
         for (size_t i = 0; i < m; ++i) {
             double pw[BETA_MAX + 1];
-            tf_powers(k, t[i], pw);
+            tf_chebyshev(k, t[i], pw);
             for (uint32_t j = 0; j <= k; ++j) {
                 design[i + j * m] = pw[j];
             }
@@ -149,14 +149,32 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
     return rc;
 }
 
-/* 1 / max |d_a| over the cases: t = d_a s_a lies in [-1, 1]. */
-static double contact_scale(const tf_fitdata *d, int a)
+/* s_a = 1 / sum_k |r_k| of the stored (float) contact law of axis a at
+ * order lambda, shrunk by 2^-16 and rounded towards zero.  |T_k(g)| <= 1 for
+ * |g| <= 1 (every input after the projection, header-format.md §4), so
+ * |d_a| <= sum |r_k| and t_a = d_a s_a lies in [-1, 1], where the Chebyshev
+ * series in t are bounded by their coefficient sums; the margin covers the
+ * rounding of Clenshaw's recurrence (a few n^2 ulps of sum |r_k|, 2^-17.6
+ * relative for n = 8).  A maximum over the training cases (API version 2)
+ * would not do: the fitted law extrapolates past the largest training
+ * displacement wherever the cases do not reach |g_a| = 1. */
+static int contact_scale(const tf_fitdata *d, int a, uint32_t lambda, double *scale, char *err,
+                         size_t errlen)
 {
-    double big = 0;
-    for (size_t i = 0; i < d->n_cases; ++i) {
-        big = fmax(big, fabs(d->contact[i][a]));
+    double r[TFIT_MAX_DEGREE + 1], sum = 0;
+    if (contact_law(d, a, NULL, d->n_cases, lambda, r, err, errlen) != 0) {
+        return -1;
     }
-    return (double)(float)(big > 0 ? 1.0 / big : 1.0); /* as stored in the model */
+    for (uint32_t k = 0; k <= lambda; ++k) {
+        sum += fabs((double)(float)r[k]);
+    }
+    const double want = sum > 0 ? (1 - 0x1p-16) / sum : 1.0;
+    float s = (float)want;
+    if ((double)s > want) {
+        s = nextafterf(s, 0.0f);
+    }
+    *scale = (double)s; /* as stored in the model */
+    return 0;
 }
 
 static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o, const double *xy,
@@ -167,9 +185,12 @@ static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
     const size_t m = d->n_cases;
     double *p = malloc(rows * m * sizeof *p), *t = malloc(m * sizeof *t);
     double *beta = malloc((k + 1) * rows * sizeof *beta);
-    const double scale = contact_scale(d, a);
+    double scale = 1;
     int rc = -1;
     if (p && t && beta) {
+        rc = contact_scale(d, a, o->lambda[a], &scale, err, errlen);
+    }
+    if (rc == 0) {
         rc = surfaces(d, c, NULL, m, xy, NULL, d->n_out, A, B, p, err, errlen);
     }
     if (rc == 0) {
@@ -222,7 +243,11 @@ tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders 
         for (uint32_t k = 0; rc == 0 && k <= o->lambda[a]; ++k) {
             *c++ = (float)r[k];
         }
-        *c++ = (float)contact_scale(axis[a], a);
+        double scale = 1;
+        if (rc == 0) {
+            rc = contact_scale(axis[a], a, o->lambda[a], &scale, err, errlen);
+        }
+        *c++ = (float)scale;
     }
     for (int pair = 0; rc == 0 && pair < 9; ++pair) {
         rc = fill_pair(axis[pair / 3], pair / 3, pair % 3, o, xy, c, err, errlen);
@@ -290,7 +315,7 @@ static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned
             return -1;
         }
         for (size_t i = 0; i < nv; ++i) {
-            tf_powers(lambda, d->force[te[i]][a] / d->radius, pw);
+            tf_chebyshev(lambda, d->force[te[i]][a] / d->radius, pw);
             double v = 0;
             for (uint32_t k = 0; k <= lambda; ++k) {
                 v += r[k] * pw[k];
@@ -347,20 +372,21 @@ static int cv_surface(const tf_fitdata *d, int c, const double *xy, uint32_t A, 
 }
 
 /* CV over load cases of the beta polynomials of order k for one pair. */
-static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t A, uint32_t B,
-                   uint32_t k, const unsigned *fold, unsigned folds, size_t *tr, size_t *te,
+static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t lambda,
+                   uint32_t A, uint32_t B, uint32_t k, const unsigned *fold, unsigned folds, size_t *tr, size_t *te,
                    double *out, char *err, size_t errlen)
 {
     const size_t m = d->n_cases, rows = A + B + 1;
     double *p = malloc(rows * m * sizeof *p), *ptr = malloc(rows * m * sizeof *ptr);
     double *t = malloc(m * sizeof *t), *beta = malloc((k + 1) * rows * sizeof *beta);
     double *s = surface_design(xy, NULL, d->n_out, A, B);
-    const double scale = contact_scale(d, a);
+    double scale = 1;
     double sum2 = 0;
     size_t count = 0;
-    int rc = (p && ptr && t && beta && s) ? surfaces(d, c, NULL, m, xy, NULL, d->n_out, A, B, p,
-                                                     err, errlen)
-                                          : -1;
+    int rc = (p && ptr && t && beta && s) ? contact_scale(d, a, lambda, &scale, err, errlen) : -1;
+    if (rc == 0) {
+        rc = surfaces(d, c, NULL, m, xy, NULL, d->n_out, A, B, p, err, errlen);
+    }
     for (unsigned f = 0; rc == 0 && f < folds; ++f) {
         size_t nt = tf_cv_select(fold, m, f, 0, tr);
         size_t nv = tf_cv_select(fold, m, f, 1, te);
@@ -376,7 +402,7 @@ static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t
         }
         for (size_t i = 0; rc == 0 && i < nv; ++i) {
             double pw[BETA_MAX + 1], coef[2 * TFIT_ZHOU_MAX_ORDER + 1];
-            tf_powers(k, d->contact[te[i]][a] * scale, pw);
+            tf_chebyshev(k, d->contact[te[i]][a] * scale, pw);
             for (size_t r = 0; r < rows; ++r) {
                 coef[r] = 0;
                 for (uint32_t j = 0; j <= k; ++j) {
@@ -462,7 +488,7 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
             for (uint32_t k = 0; rc == 0 && k <= BETA_MAX; ++k) {
                 c->beta_rms[pair][k] = INFINITY;
                 if (k <= ktop) {
-                    rc = cv_beta(d, a, comp, xy, ba, bb, k, cfold, folds, tr, te,
+                    rc = cv_beta(d, a, comp, xy, o->lambda[a], ba, bb, k, cfold, folds, tr, te,
                                  &c->beta_rms[pair][k], err, errlen);
                 }
             }

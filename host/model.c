@@ -186,31 +186,6 @@ uint32_t tf_crc32_u32(uint32_t crc, uint32_t w)
     return (uint32_t)crc32(crc, b, 4);
 }
 
-/* Index of g0^a g1^b g2^c in the basis order: all monomials of lower
- * degree, then within degree d those with a larger exponent of g0, then
- * those with the same a and a larger b. */
-static uint32_t monomial_index(int a, int b, int c)
-{
-    int d = a + b + c;
-    return (uint32_t)(d * (d + 1) * (d + 2) / 6 + (d - a) * (d - a + 1) / 2 + (d - a - b));
-}
-
-void tf_basis_recurrence(uint32_t p, uint8_t *var, uint32_t *parent)
-{
-    for (int deg = 1; deg <= (int)p; ++deg) {
-        for (int a = deg; a >= 0; --a) {
-            for (int b = deg - a; b >= 0; --b) {
-                int e[3] = {a, b, deg - a - b};
-                int v = a > 0 ? 0 : (b > 0 ? 1 : 2); /* first positive exponent */
-                uint32_t self = monomial_index(e[0], e[1], e[2]);
-                e[v] -= 1;
-                var[self] = (uint8_t)v;
-                parent[self] = monomial_index(e[0], e[1], e[2]);
-            }
-        }
-    }
-}
-
 uint32_t tf_model_crc32(const tf_model *m)
 {
     uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
@@ -296,7 +271,9 @@ static int validate_ranges(const tf_model *m, char *err, size_t errlen)
                            errlen)) {
                 return 1;
             }
-            tau[a] = t > 1 ? t : 1;
+            /* Chebyshev series in |t| <= tau: |T_k|, |U_k| <= (2 tau)^k
+             * (header-format.md §8) */
+            tau[a] = 2 * (t > 1 ? t : 1);
         }
         for (int pair = 0; pair < 9; ++pair) {
             uint32_t rows = zhou_rows(m->dims, pair), k = m->dims[5 + 3 * pair];
@@ -351,29 +328,57 @@ static tf_opcount input_ops(void)
     return (tf_opcount){.add = 14, .mul = 33, .div = 0};
 }
 
+/* Float operations of the Chebyshev basis of degree p (§5.1, §6): per
+ * variable h = g + g and p - 1 recurrence steps (mul, sub) when p >= 2;
+ * p (p - 1) / 2 inner products T_b T_c with b, c >= 1, b + c <= p (one per
+ * pair, shared by every a) and T(p - 1) - p outer products T_a (..) with
+ * a >= 1, b + c >= 1 (a factor T_0 = 1 is exact and not multiplied). */
+static void basis_ops(uint32_t p, tf_opcount *ops)
+{
+    if (p >= 2) {
+        ops->add += 3 * (1 + (uint64_t)(p - 1));
+        ops->mul += 3 * (uint64_t)(p - 1) + (uint64_t)p * (p - 1) / 2 + tf_terms(p - 1) - p;
+    }
+}
+
+/* Clenshaw (§5.4): sum_{k=1..n} c_k T_k takes n mul and 2n - 1 add for n >= 2
+ * (1 mul for n = 1); the full series one add more for n >= 1. */
+static uint64_t tail_add(uint32_t n)
+{
+    return n >= 2 ? 2 * (uint64_t)n - 1 : 0;
+}
+
+static uint64_t series_add(uint32_t n)
+{
+    return n == 0 ? 0 : tail_add(n) + 1;
+}
+
 tf_opcount tf_model_ops(const tf_model *m)
 {
     tf_opcount ops = input_ops();
     const uint64_t rows = 3ull * m->n_out;
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint64_t t = tf_terms(m->dims[0]);
-        ops.mul += (t - 1) + rows * (t - 1);
+        basis_ops(m->dims[0], &ops);
+        ops.mul += rows * (t - 1);
         ops.add += rows * (t - 1);
     } else if (m->family == TFIT_FAMILY_MODAL) {
         uint64_t t = tf_terms(m->dims[0]), r = m->dims[1];
-        ops.mul += (t - 1) + r * (t - 1) + rows * r;
+        basis_ops(m->dims[0], &ops);
+        ops.mul += r * (t - 1) + rows * r;
         ops.add += r * (t - 1) + rows * (r - 1);
     } else {
         for (int a = 0; a < 3; ++a) {
-            ops.mul += m->dims[a] + 1;
-            ops.add += m->dims[a];
+            ops.mul += m->dims[a] + 1; /* the series, then t_a = d_a s_a */
+            ops.add += series_add(m->dims[a]);
         }
         for (int pair = 0; pair < 9; ++pair) {
             const uint32_t *o = m->dims + 3 + 3 * pair;
-            uint64_t per_node = o[0] + o[1]; /* Horner in X and in Y */
-            ops.mul += (uint64_t)zhou_rows(m->dims, pair) * o[2] + m->n_out * per_node;
-            ops.add += (uint64_t)zhou_rows(m->dims, pair) * o[2] +
-                       m->n_out * (per_node + (pair >= 3 ? 1 : 0));
+            const uint64_t rows_p = zhou_rows(m->dims, pair);
+            ops.mul += rows_p * o[2] + m->n_out * ((uint64_t)o[0] + o[1]);
+            ops.add += rows_p * series_add(o[2]) +
+                       m->n_out * (series_add(o[0]) + (o[1] > 0 ? tail_add(o[1]) + 1 : 0) +
+                                   (pair >= 3 ? 1 : 0));
         }
     }
     return ops;

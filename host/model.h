@@ -66,11 +66,6 @@ uint32_t tf_model_crc32(const tf_model *m);
  * (start from 0, no final xor: zlib's convention). */
 uint32_t tf_crc32_u32(uint32_t crc, uint32_t w);
 
-/* The basis recurrence (header-format.md §5.1): monomial k (1 <= k < T(p))
- * is g[var[k]] times monomial parent[k].  var and parent hold T(p) entries
- * (entry 0, the constant 1, is left unset). */
-void tf_basis_recurrence(uint32_t p, uint8_t *var, uint32_t *parent);
-
 /* Checks what tfit_model_check() will check on the device (sizes, finite
  * coefficients, no reachable overflow), with a message naming the table and
  * index at fault.  Returns 0 when the model is emittable. */

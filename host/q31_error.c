@@ -12,12 +12,14 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "basis.h"
 #include "golden.h"
 #include "ref_eval.h"
 #include "rng.h"
 
 /* The exact model at x: g = W (x - x0), projected when |g| > 1, rows
- * summed over the monomials g0^a g1^b g2^c in the basis order. */
+ * summed over the Chebyshev terms T_a(g0) T_b(g1) T_c(g2) in the basis
+ * order (tf_basis). */
 static void exact_eval(const tf_model *m, const double x[3], double *out)
 {
     double g[3], n2 = 0;
@@ -36,14 +38,7 @@ static void exact_eval(const tf_model *m, const double x[3], double *out)
     const int p = (int)m->dims[0];
     const uint32_t t = tf_terms((uint32_t)p);
     double phi[TFIT_Q31_MAX_DEGREE_TERMS];
-    uint32_t k = 0;
-    for (int d = 0; d <= p; ++d) {
-        for (int a = d; a >= 0; --a) {
-            for (int b = d - a; b >= 0; --b) {
-                phi[k++] = pow(g[0], a) * pow(g[1], b) * pow(g[2], d - a - b);
-            }
-        }
-    }
+    tf_basis((uint32_t)p, g, phi);
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
     for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
         double s = 0;

@@ -77,16 +77,27 @@ static int project(const tf_q31 *q, const int32_t in[3], int32_t g[3])
     return 1;
 }
 
-/* §4: phi_0 = 2^30; phi = round(g_v phi_parent / 2^30), v the first
- * variable with a positive exponent (tf_basis_recurrence). */
+/* §4: T_0 = 2^30, T_1 = g, T_k = round(g T_{k-1} / 2^29) - T_{k-2} per
+ * variable; phi = round(T_a round(T_b T_c / 2^30) / 2^30), graded order,
+ * a product with the factor T_0 = 2^30 being exact. */
 static void basis(uint32_t p, const int32_t g[3], int32_t *phi)
 {
-    uint8_t var[TFIT_Q31_MAX_DEGREE_TERMS];
-    uint32_t parent[TFIT_Q31_MAX_DEGREE_TERMS];
-    tf_basis_recurrence(p, var, parent);
-    phi[0] = 1 << 30;
-    for (uint32_t k = 1; k < tf_terms(p); ++k) {
-        phi[k] = (int32_t)round_shift((__int128)g[var[k]] * phi[parent[k]], 30);
+    int64_t t[3][TFIT_MAX_DEGREE + 1];
+    for (int v = 0; v < 3; ++v) {
+        t[v][0] = (int64_t)1 << 30;
+        t[v][1] = g[v];
+        for (uint32_t k = 2; k <= p; ++k) {
+            t[v][k] = round_shift((__int128)g[v] * t[v][k - 1], 29) - t[v][k - 2];
+        }
+    }
+    uint32_t k = 0;
+    for (int d = 0; d <= (int)p; ++d) {
+        for (int a = d; a >= 0; --a) {
+            for (int b = d - a; b >= 0; --b) {
+                int64_t inner = round_shift((__int128)t[1][b] * t[2][d - a - b], 30);
+                phi[k++] = (int32_t)round_shift((__int128)t[0][a] * inner, 30);
+            }
+        }
     }
 }
 

@@ -115,27 +115,82 @@ static void input_map(arith *c, const tf_model *m, const float in[3], float g[3]
     *clamped = outside;
 }
 
-/* Monomials of total degree <= p, each computed as g_v * (its parent), v the
- * first variable with a positive exponent (tf_basis_recurrence). */
-static void monomials(arith *c, uint32_t p, const float g[3], float *phi)
+/* T_0..T_p of one variable (§5.1): t_0 = 1, t_1 = g, t_k = (h t_{k-1}) - t_{k-2},
+ * h = g + g. */
+static void chebyshev(arith *c, uint32_t p, float g, float *t)
 {
-    uint8_t var[TFIT_TERMS_MAX];
-    uint32_t parent[TFIT_TERMS_MAX];
-    tf_basis_recurrence(p, var, parent);
-    phi[0] = 1.0f;
-    for (uint32_t k = 1; k < tf_terms(p); ++k) {
-        phi[k] = f_mul(c, g[var[k]], phi[parent[k]]);
+    t[0] = 1.0f;
+    if (p == 0) {
+        return;
+    }
+    t[1] = g;
+    if (p >= 2) {
+        float h = f_add(c, g, g);
+        for (uint32_t k = 2; k <= p; ++k) {
+            t[k] = f_sub(c, f_mul(c, h, t[k - 1]), t[k - 2]);
+        }
     }
 }
 
-/* c0 + c1 x + ... + cn x^n by Horner from the top. */
-static float horner(arith *c, const float *coef, uint32_t n, float x)
+/* A product in which one factor is T_0 = 1 is exact: it is not performed
+ * (and not counted, §6). */
+static float f_mul_basis(arith *c, uint32_t ea, float a, uint32_t eb, float b)
 {
-    float h = coef[n];
-    for (int i = (int)n - 1; i >= 0; --i) {
-        h = f_add(c, f_mul(c, h, x), coef[i]);
+    if (ea == 0) {
+        return b;
     }
-    return h;
+    if (eb == 0) {
+        return a;
+    }
+    return f_mul(c, a, b);
+}
+
+/* phi = T_a(g0) (T_b(g1) T_c(g2)) for a + b + c <= p in graded order; the
+ * inner product of each (b, c) is computed once and shared by every a. */
+static void chebyshev_basis(arith *c, uint32_t p, const float g[3], float *phi)
+{
+    float t[3][TFIT_MAX_DEGREE + 1];
+    float inner[TFIT_MAX_DEGREE + 1][TFIT_MAX_DEGREE + 1];
+    for (int v = 0; v < 3; ++v) {
+        chebyshev(c, p, g[v], t[v]);
+    }
+    for (uint32_t b = 0; b <= p; ++b) {
+        for (uint32_t e = 0; b + e <= p; ++e) {
+            inner[b][e] = f_mul_basis(c, b, t[1][b], e, t[2][e]);
+        }
+    }
+    uint32_t k = 0;
+    for (uint32_t d = 0; d <= p; ++d) {
+        for (uint32_t a = d + 1; a-- > 0;) {
+            for (uint32_t b = d - a + 1; b-- > 0;) {
+                uint32_t e = d - a - b;
+                phi[k++] = f_mul_basis(c, a, t[0][a], b + e, inner[b][e]);
+            }
+        }
+    }
+}
+
+/* sum_{k=1..n} coef_k T_k(x), n >= 1, by Clenshaw (§5.4). */
+static float clenshaw_tail(arith *c, const float *coef, uint32_t n, float x)
+{
+    if (n == 1) {
+        return f_mul(c, x, coef[1]);
+    }
+    float h = f_add(c, x, x);
+    float b2 = coef[n];
+    float b1 = f_add(c, f_mul(c, h, b2), coef[n - 1]);
+    for (uint32_t k = n - 2; k >= 1; --k) {
+        float b = f_add(c, f_sub(c, f_mul(c, h, b1), b2), coef[k]);
+        b2 = b1;
+        b1 = b;
+    }
+    return f_sub(c, f_mul(c, x, b1), b2);
+}
+
+/* sum_{k=0..n} coef_k T_k(x) (§5.4). */
+static float clenshaw(arith *c, const float *coef, uint32_t n, float x)
+{
+    return n == 0 ? coef[0] : f_add(c, clenshaw_tail(c, coef, n, x), coef[0]);
 }
 
 static void eval_polynomial_rows(arith *c, const float *rows, uint32_t n_rows, uint32_t n_terms,
@@ -179,24 +234,23 @@ static void eval_zhou2017(arith *c, const tf_model *m, const float g[3], float *
     float p[9][2 * TFIT_ZHOU_MAX_ORDER + 1];
 
     for (int a = 0; a < 3; ++a) {
-        float d = horner(c, q, dm[a], g[a]);
+        float d = clenshaw(c, q, dm[a], g[a]);
         q += dm[a] + 1;
         t[a] = f_mul(c, d, *q++);
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = dm[3 + 3 * pair], by = dm[4 + 3 * pair], k = dm[5 + 3 * pair];
         for (uint32_t i = 0; i <= ax + by; ++i, q += k + 1) {
-            p[pair][i] = horner(c, q, k, t[pair / 3]);
+            p[pair][i] = clenshaw(c, q, k, t[pair / 3]);
         }
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = dm[3 + 3 * pair], by = dm[4 + 3 * pair];
         int comp = pair % 3;
         for (uint32_t j = 0; j < m->n_out; ++j) {
-            float s = horner(c, p[pair], ax, xy[2 * j]);
+            float s = clenshaw(c, p[pair], ax, xy[2 * j]);
             if (by > 0) {
-                float y = xy[2 * j + 1];
-                s = f_add(c, s, f_mul(c, horner(c, p[pair] + ax + 1, by - 1, y), y));
+                s = f_add(c, s, clenshaw_tail(c, p[pair] + ax, by, xy[2 * j + 1]));
             }
             float *dst = &out[3 * j + comp];
             *dst = pair < 3 ? s : f_add(c, *dst, s);
@@ -227,7 +281,7 @@ tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opc
         eval_zhou2017(&c, m, g, out);
     } else {
         float phi[TFIT_TERMS_MAX];
-        monomials(&c, m->dims[0], g, phi);
+        chebyshev_basis(&c, m->dims[0], g, phi);
         if (m->family == TFIT_FAMILY_MODAL) {
             eval_modal(&c, m, phi, out);
         } else {

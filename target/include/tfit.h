@@ -44,7 +44,7 @@ extern "C" {
 
 /* Version of the model layout and evaluation order.  A generated header
  * refuses to compile against a different version. */
-#define TFIT_API_VERSION 2
+#define TFIT_API_VERSION 3
 
 /* Build-time capacity.  Evaluation keeps its work arrays on the stack, sized
  * by these limits; tfit_model_check() rejects models that exceed them. */

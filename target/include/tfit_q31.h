@@ -40,7 +40,7 @@ extern "C" {
 #endif
 
 /* Version of the Q31 table layout and integer operation order. */
-#define TFIT_Q31_API_VERSION 1
+#define TFIT_Q31_API_VERSION 2
 
 /* Words of a Q31 input map at the start of q[]: x0 (3), W (9), H (1). */
 #define TFIT_Q31_MAP_WORDS 13

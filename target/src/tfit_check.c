@@ -3,8 +3,12 @@
  * proof that evaluation cannot overflow.
  *
  * The overflow proof: after the envelope projection every |g_i| <= 1 (to a
- * few ulps), so every monomial is <= 1 and every output is bounded by sums of
- * absolute coefficients.  The check computes those bounds (in float; any
+ * few ulps), so every Chebyshev term |T_a T_b T_c| is <= 1 and every output
+ * is bounded by sums of absolute coefficients.  zhou2017's surface
+ * coefficients are Chebyshev series in t_a, |t_a| <= tau (tau >= 1): there
+ * |T_k(t)| <= T_k(tau) <= (2 tau)^k and Clenshaw's b_k are sums of
+ * c_j U_{j-k}(t), |U_m(t)| <= (2 tau)^m, so sum |c_k| (2 tau)^k bounds the
+ * result and every intermediate.  The check computes those bounds (in float; any
  * overflow or NaN in them fails the check) and requires them below 2^100,
  * far enough under FLT_MAX (2^128) that rounding cannot matter.  With no Inf
  * reachable, no NaN is reachable either (no 0*Inf, Inf-Inf; divisors >= 1).
@@ -34,7 +38,7 @@ static float abs_sum(const float *c, uint32_t n)
     return s;
 }
 
-/* Bound of sum_k c_k x^k for |x| <= tau, tau >= 1. */
+/* sum_k |c_k| tau^k (Horner on the magnitudes), tau >= 1. */
 static float abs_poly(const float *c, uint32_t n, float tau)
 {
     float s = fabs_(c[n]);
@@ -117,7 +121,7 @@ static int zhou2017_ok(const tfit_model *m)
         if (!within(d, BOUND_LIMIT) || !within(t, BOUND_LIMIT)) {
             return 0;
         }
-        tau[a] = t > 1.0f ? t : 1.0f;
+        tau[a] = 2.0f * (t > 1.0f ? t : 1.0f); /* (2 tau)^k bounds T_k and U_k */
     }
     for (uint32_t a = 0u; a < 3u; ++a) {
         for (uint32_t comp = 0u; comp < 3u; ++comp) {

@@ -20,7 +20,7 @@
 #error "tfit requires FLT_EVAL_METHOD == 0 (float arithmetic evaluated in float)"
 #endif
 
-/* Number of monomials of total degree <= p in 3 variables: C(p+3, 3). */
+/* Number of basis terms of total degree <= p in 3 variables: C(p+3, 3). */
 #define TFIT_TERMS(p) ((((p) + 1u) * ((p) + 2u) * ((p) + 3u)) / 6u)
 #define TFIT_MAX_TERMS TFIT_TERMS((uint32_t)TFIT_MAX_DEGREE)
 #define TFIT_ZHOU_MAX_ROWS (2u * TFIT_ZHOU_MAX_ORDER + 1u)
@@ -69,14 +69,38 @@ static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
     return a ^ ((a ^ b) & tfit_mask(a < b));
 }
 
-/* Horner, coefficients c[0..n] in ascending powers: ((c_n x + c_{n-1}) x + ...) + c_0. */
-static inline float tfit_horner(const float *c, uint32_t n, float x)
+/* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x),
+ * n >= 1, by Clenshaw's recurrence (docs/header-format.md §5.4):
+ *   n = 1:  x c_1
+ *   n >= 2: h = x + x; b_n = c_n; b_{n-1} = (h b_n) + c_{n-1};
+ *           b_k = ((h b_{k+1}) - b_{k+2}) + c_k, k = n-2 .. 1;
+ *           result (x b_1) - b_2.
+ * The zero b_{n+1}, b_{n+2} are not added or subtracted (that would be
+ * exact anyway).  The branches depend on n only, never on x. */
+static inline float tfit_cheb_tail(const float *c, uint32_t n, float x)
 {
-    float h = c[n];
-    for (uint32_t i = n; i > 0u; --i) {
-        h = h * x + c[i - 1u];
+    if (n == 1u) {
+        return x * c[1];
     }
-    return h;
+    const float h = x + x;
+    float b2 = c[n];
+    float b1 = h * b2 + c[n - 1u];
+    for (uint32_t k = n - 1u; k > 1u; --k) {
+        const float b = (h * b1 - b2) + c[k - 1u];
+        b2 = b1;
+        b1 = b;
+    }
+    return x * b1 - b2;
+}
+
+/* Chebyshev series sum_{k=0..n} c_k T_k(x): c_0 for n = 0, else
+ * tail + c_0.  For n = 1 this is (x c_1) + c_0, the API-2 Horner bits. */
+static inline float tfit_cheb(const float *c, uint32_t n, float x)
+{
+    if (n == 0u) {
+        return c[0];
+    }
+    return tfit_cheb_tail(c, n, x) + c[0];
 }
 
 /* Dot product of a coefficient row with the basis, phi[0] == 1:
@@ -95,7 +119,7 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
  * NaN or Inf (g is then computed from a zero input). */
 uint32_t tfit_input_map(const float *map, const float x[3], float g[3], uint32_t *bad);
 
-/* Monomial basis of total degree p in g, graded order (tfit_basis.c). */
+/* Chebyshev basis of total degree p in g, graded order (tfit_basis.c). */
 void tfit_basis(uint32_t p, const float g[3], float *phi);
 
 /* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_nodal.c,

@@ -4,28 +4,66 @@
  *
  * q = input map (13 words) | per output row o (node-major, as the float
  * nodal layout): s_o, c_o[0], ..., c_o[T-1].
- *   phi (Q30): phi_0 = 2^30, phi_k = round(g_v phi_parent / 2^30), the
- *              float basis's recurrence and order (header-format.md §5.1)
+ *   phi (Q30): the Chebyshev terms T_a(g0) T_b(g1) T_c(g2) of the float
+ *              basis (header-format.md §5.1), each product rounded to Q30
  *   acc      = sum_t c_o[t] phi_t, exact in 64 bits
  *   out[o]   = round(acc / 2^s_o) = floor((hi(acc) + 2^(s_o - 33)) / 2^(s_o - 32)),
  *              33 <= s_o <= 62: only the high word of acc matters.
  */
 #include "tfit_q31_internal.h"
 
+/* round(a b / 2^30), the product of two Q30 words in Q30. */
+static int32_t q30_mul(int32_t a, int32_t b)
+{
+    return (int32_t)q_shr64_lo(q_smul(a, b) + (1u << 29), 30u);
+}
+
+/* t[k] = T_k(g) in Q30, k = 0..p: t[0] = 2^30, t[1] = g,
+ * t[k] = round(g t[k-1] / 2^29) - t[k-2] (q31-format.md §4).  The rounded
+ * product 2 g t can reach 2^31 and wraps in 32 bits; the difference is
+ * |T_k| <= 2^30 + 2^14 and comes out exact, because uint32_t arithmetic is
+ * modulo 2^32. */
+static void chebyshev_q30(uint32_t p, int32_t g, int32_t *t)
+{
+    t[0] = TFIT_Q31_ONE;
+    t[1] = g;
+    for (uint32_t k = 2u; k <= p; ++k) {
+        const uint32_t h = q_shr64_lo(q_smul(g, t[k - 1u]) + (1u << 28), 29u);
+        t[k] = (int32_t)(h - (uint32_t)t[k - 2u]);
+    }
+}
+
+/* phi = round(T_a(g0) round(T_b(g1) T_c(g2) / 2^30) / 2^30), the float
+ * basis's order (tfit_basis.c: the inner products by b + c, then one
+ * product per term).  Products by T_0 = 2^30 are exact. */
 void tfit_q31_basis(uint32_t p, const int32_t g[3], int32_t *phi)
 {
-    uint32_t prev = 0u, n_prev = 1u, k = 1u;
+    int32_t t0[TFIT_Q31_MAX_DEGREE + 1u], t1[TFIT_Q31_MAX_DEGREE + 1u], t2[TFIT_Q31_MAX_DEGREE + 1u];
+    int32_t q[((TFIT_Q31_MAX_DEGREE + 1u) * (TFIT_Q31_MAX_DEGREE + 2u)) / 2u];
+    uint32_t k = 0u;
+
     phi[0] = TFIT_Q31_ONE;
-    for (uint32_t d = 1u; d <= p; ++d) {
-        for (uint32_t i = 0u; i < n_prev; ++i) {
-            phi[k++] = (int32_t)q_shr64_lo(q_smul(g[0], phi[prev + i]) + (1u << 29), 30u);
+    if (p == 0u) {
+        return;
+    }
+    chebyshev_q30(p, g[0], t0);
+    chebyshev_q30(p, g[1], t1);
+    chebyshev_q30(p, g[2], t2);
+    for (uint32_t e = 0u; e <= p; ++e) {
+        for (uint32_t b = e + 1u; b-- > 0u;) {
+            q[k++] = q30_mul(t1[b], t2[e - b]);
         }
-        for (uint32_t i = n_prev - d; i < n_prev; ++i) {
-            phi[k++] = (int32_t)q_shr64_lo(q_smul(g[1], phi[prev + i]) + (1u << 29), 30u);
+    }
+    k = 0u;
+    for (uint32_t d = 0u; d <= p; ++d) {
+        uint32_t base = 0u;
+        for (uint32_t e = 0u; e <= d; ++e) {
+            const int32_t ta = t0[d - e];
+            for (uint32_t j = 0u; j <= e; ++j) {
+                phi[k++] = q30_mul(ta, q[base + j]);
+            }
+            base += e + 1u;
         }
-        phi[k++] = (int32_t)q_shr64_lo(q_smul(g[2], phi[prev + n_prev - 1u]) + (1u << 29), 30u);
-        prev += n_prev;
-        n_prev += d + 1u;
     }
 }
 

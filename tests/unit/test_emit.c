@@ -105,7 +105,7 @@ static void header_content_and_exact_literals(void **state)
     char *h = slurp(path, NULL);
     assert_non_null(h);
     assert_non_null(strstr(h, "#ifndef TFIT_ALPHA_H"));
-    assert_non_null(strstr(h, "#if TFIT_API_VERSION != 2\n#error"));
+    assert_non_null(strstr(h, "#if TFIT_API_VERSION != 3\n#error"));
     assert_non_null(strstr(h, "scene: scene.yaml (crc32 0xdeadbeef)"));
     assert_non_null(strstr(h, "#ifdef TFIT_ALPHA_IMPLEMENTATION"));
     assert_non_null(strstr(h, "extern const tfit_model tfit_alpha_contact;"));

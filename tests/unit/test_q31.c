@@ -152,7 +152,7 @@ static void check_rejects_damage(void **state)
     tf_target_view_q31(q, &t);
     assert_int_equal(tfit_model_check_q31(&t), TFIT_OK);
     assert_int_equal(tfit_model_check_q31(NULL), TFIT_ERR_ARG);
-    t.api_version = 2;
+    t.api_version = 1; /* the monomial Q31 basis of API 2 */
     assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_VERSION);
     tf_target_view_q31(q, &t);
     t.family = TFIT_FAMILY_MODAL;

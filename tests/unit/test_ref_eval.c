@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "random_model.h"
+#include "basis.h"
 #include "ref_eval.h"
 #include "target_view.h"
 
@@ -51,14 +52,18 @@ static void basis_order_is_graded_lexicographic(void **state)
     for (uint32_t o = 0; o < n_terms; ++o) {
         c[o * n_terms + o] = 1.0f;
     }
-    const float g[3] = {0.5f, -0.25f, 0.125f}; /* exact powers: no rounding */
+    const float g[3] = {0.5f, -0.25f, 0.125f}; /* T_k of these need <= 12 bits: no rounding */
     float out[36];
     assert_int_equal(tf_ref_eval(m, g, out, NULL), TFIT_OK);
+    double t0[5], t1[5], t2[5];
+    tf_chebyshev(p, 0.5, t0);
+    tf_chebyshev(p, -0.25, t1);
+    tf_chebyshev(p, 0.125, t2);
     uint32_t t = 0;
     for (int d = 0; d <= (int)p; ++d) {
         for (int a = d; a >= 0; --a) {
             for (int b = d - a; b >= 0; --b, ++t) {
-                double want = pow(0.5, a) * pow(-0.25, b) * pow(0.125, d - a - b);
+                double want = t0[a] * t1[b] * t2[d - a - b];
                 assert_true((double)out[t] == want);
             }
         }
