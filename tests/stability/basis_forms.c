@@ -6,6 +6,8 @@
 #include <float.h>
 #include <math.h>
 
+#include "../../target/src/tfit_internal.h" /* tfit_cheb: the target's own Clenshaw */
+
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "the float32 evaluation needs float arithmetic evaluated in float"
 #endif
@@ -68,8 +70,12 @@ double stab_coordinate(stab_basis s, double x_normalised)
 }
 
 /* Horner and Clenshaw for one type; T is float, double or long double, and
- * C's rules round every operation to T (FLT_EVAL_METHOD 0, no contraction). */
-#define DEFINE_EVAL(NAME, T)                                   \
+ * C's rules round every operation to T (FLT_EVAL_METHOD 0, no contraction).
+ * Clenshaw follows docs/header-format.md §5.4's order (b_k = ((2x b_{k+1})
+ * - b_{k+2}) + c_k, result ((x b_1) - b_2) + c_0) so that the double
+ * column measures the same algorithm; float32 does not use it but the
+ * target's tfit_cheb itself (stab_eval_float). */
+#define DEFINE_HORNER(NAME, T)                                 \
     static T NAME##_horner(const T *c, int k, T x)             \
     {                                                          \
         T h = c[k];                                            \
@@ -77,25 +83,42 @@ double stab_coordinate(stab_basis s, double x_normalised)
             h = h * x + c[i];                                  \
         }                                                      \
         return h;                                              \
-    }                                                          \
+    }
+#define DEFINE_CLENSHAW(NAME, T)                               \
     static T NAME##_clenshaw(const T *c, int k, T x)           \
     {                                                          \
         T b1 = 0, b2 = 0;                                      \
         for (int j = k; j >= 1; --j) {                         \
-            const T t = c[j] + (x + x) * b1 - b2;              \
+            const T t = ((x + x) * b1 - b2) + c[j];            \
             b2 = b1;                                           \
             b1 = t;                                            \
         }                                                      \
-        return c[0] + x * b1 - b2;                             \
+        return (x * b1 - b2) + c[0];                           \
     }
 
-DEFINE_EVAL(f, float)
-DEFINE_EVAL(d, double)
-DEFINE_EVAL(ld, long double)
+DEFINE_HORNER(f, float)
+DEFINE_HORNER(d, double)
+DEFINE_HORNER(ld, long double)
+DEFINE_CLENSHAW(d, double)
+DEFINE_CLENSHAW(ld, long double)
 
 float stab_eval_float(stab_basis s, const float *c, int k, float t)
 {
-    return s == STAB_CHEBYSHEV ? f_clenshaw(c, k, t) : f_horner(c, k, t);
+    return s == STAB_CHEBYSHEV ? tfit_cheb(c, (uint32_t)k, t) : f_horner(c, k, t);
+}
+
+float stab_eval_float_nodal(const float *c, int k, float t)
+{
+    /* A nodal row whose only nonzero coefficients are those of T_j(g0),
+     * term index j(j+1)(j+2)/6 (a = j, b = c = 0). */
+    float row[TFIT_MAX_TERMS] = {0};
+    float phi[TFIT_MAX_TERMS];
+    const float g[3] = {t, 0.0f, 0.0f};
+    for (int j = 0; j <= k; ++j) {
+        row[j * (j + 1) * (j + 2) / 6] = c[j];
+    }
+    tfit_basis((uint32_t)k, g, phi);
+    return tfit_row(row, phi, TFIT_TERMS((uint32_t)k));
 }
 
 double stab_eval_double(stab_basis s, const double *c, int k, double t)

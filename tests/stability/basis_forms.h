@@ -4,7 +4,7 @@
  *
  *   raw         P = sum a_j x^j, x in millimetres, [0, 48] (seed 000's form)
  *   normalised  P = sum b_j X^j, X = (x - 24) / 24 in [-1, 1] (tissuefit's)
- *   Chebyshev   P = sum c_j T_j(X) (for comparison; the target has none)
+ *   Chebyshev   P = sum c_j T_j(X), the target's basis since API version 3
  *
  * The polynomial is defined by its normalised coefficients b (doubles); the
  * others are exact conversions carried out in long double (64-bit
@@ -29,8 +29,15 @@ double stab_coordinate(stab_basis s, double x_normalised);
 
 /* Evaluation of order-k coefficients c in basis s at coordinate t, every
  * operation rounded to the type: Horner for the monomial bases (as the
- * target's tfit_horner), Clenshaw's recurrence for Chebyshev. */
+ * target's API-2 tfit_horner), Clenshaw's recurrence for Chebyshev.  In
+ * float the Chebyshev series is evaluated by the target's own code
+ * (tfit_cheb, target/src/tfit_internal.h: zhou2017's form). */
 float stab_eval_float(stab_basis s, const float *c, int k, float t);
+
+/* The same Chebyshev series in the target's nodal form: tfit_basis() at
+ * g = (t, 0, 0), then the row sum (tfit_row) over every term of degree
+ * <= k, the coefficients of T_j(g0) at their places and zeros elsewhere. */
+float stab_eval_float_nodal(const float *c, int k, float t);
 double stab_eval_double(stab_basis s, const double *c, int k, double t);
 long double stab_eval_long(stab_basis s, const long double *c, int k, long double t);
 

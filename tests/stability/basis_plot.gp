@@ -2,7 +2,8 @@
 #   gnuplot -e "data='basis.dat'; out='stability_basis.png'" tests/stability/basis_plot.gp
 # Columns of the data file: basis_study --data (order, log10 condition
 # numbers raw / raw with unit columns / normalised, then digits lost:
-# float32 raw / normalised / Chebyshev, float64 raw / normalised / Chebyshev).
+# float32 raw / normalised / Chebyshev, float64 raw / normalised / Chebyshev,
+# float32 Chebyshev in the target's nodal form).
 set terminal pngcairo size 1200,480 font ",11"
 set output out
 set multiplot layout 1,2
@@ -16,8 +17,9 @@ set title "Digits lost evaluating the same polynomial (worst of 3 profiles)"
 set ylabel "decimal digits lost = log10(max error / max |P| / unit roundoff)"
 set yrange [-1:5]
 plot data using 1:5 with linespoints lw 2 pt 7 lc rgb "#c0392b" title "float32, raw mm (seed)", \
-     data using 1:6 with linespoints lw 2 pt 5 lc rgb "#2471a3" title "float32, normalised X (tissuefit)", \
-     data using 1:7 with linespoints lw 2 pt 9 lc rgb "#229954" title "float32, Chebyshev in X", \
+     data using 1:6 with linespoints lw 2 pt 5 lc rgb "#2471a3" title "float32, normalised X monomials (API 2)", \
+     data using 1:7 with linespoints lw 2 pt 9 lc rgb "#229954" title "float32, Chebyshev in X (target, API 3: Clenshaw)", \
+     data using 1:11 with linespoints lw 2 pt 11 lc rgb "#7d3c98" title "float32, Chebyshev (target, nodal form)", \
      data using 1:8 with linespoints lw 1 dt 2 pt 6 lc rgb "#c0392b" title "float64, raw mm", \
      data using 1:9 with linespoints lw 1 dt 2 pt 4 lc rgb "#2471a3" title "float64, normalised X", \
      data using 1:10 with linespoints lw 1 dt 2 pt 8 lc rgb "#229954" title "float64, Chebyshev in X", \
