@@ -341,11 +341,12 @@ static void basis_ops(uint32_t p, tf_opcount *ops)
     }
 }
 
-/* Clenshaw (§5.4): sum_{k=1..n} c_k T_k takes n mul and 2n - 1 add for n >= 2
- * (1 mul for n = 1); the full series one add more for n >= 1. */
+/* Clenshaw (§5.4): sum_{k=1..n} c_k T_k, n >= 1, takes n mul and 2n add
+ * (h, then n - 1 steps of a product, a difference and a sum, then x b_1 - b_2);
+ * the full series one add more (+ c_0), and none for n = 0. */
 static uint64_t tail_add(uint32_t n)
 {
-    return n >= 2 ? 2 * (uint64_t)n - 1 : 0;
+    return 2 * (uint64_t)n;
 }
 
 static uint64_t series_add(uint32_t n)

@@ -170,16 +170,14 @@ static void chebyshev_basis(arith *c, uint32_t p, const float g[3], float *phi)
     }
 }
 
-/* sum_{k=1..n} coef_k T_k(x), n >= 1, by Clenshaw (§5.4). */
+/* sum_{k=1..n} coef_k T_k(x), n >= 1, by Clenshaw (§5.4): h = x + x,
+ * b_{n+1} = +0, b_n = coef_n, b_k = ((h b_{k+1}) - b_{k+2}) + coef_k for
+ * k = n-1 .. 1, result (x b_1) - b_2. */
 static float clenshaw_tail(arith *c, const float *coef, uint32_t n, float x)
 {
-    if (n == 1) {
-        return f_mul(c, x, coef[1]);
-    }
     float h = f_add(c, x, x);
-    float b2 = coef[n];
-    float b1 = f_add(c, f_mul(c, h, b2), coef[n - 1]);
-    for (uint32_t k = n - 2; k >= 1; --k) {
+    float b1 = coef[n], b2 = 0.0f;
+    for (uint32_t k = n - 1; k >= 1; --k) {
         float b = f_add(c, f_sub(c, f_mul(c, h, b1), b2), coef[k]);
         b2 = b1;
         b1 = b;

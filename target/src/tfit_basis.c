@@ -10,10 +10,11 @@
  * normalised monomials lose up to 1.6 decimal digits in float32 at orders
  * 5-8, T_k (|T_k| <= 1 on [-1, 1]) less than 0.4.
  *
- * Implementation: the three T tables, then the inner products
- * q = T_b(g1) T_c(g2) for b + c = e <= p, stored by e and decreasing b.  For
- * a fixed (d, a) the terms b = e..0 (e = d - a) are then the contiguous run
- * q[e(e+1)/2 .. e(e+1)/2 + e], so each term costs one multiplication here.
+ * Implementation: the three T tables; then, degree by degree, the terms
+ * with a >= 1 as T_a(g0) times the a = 0 group of degree e = d - a (which
+ * holds exactly the inner products T_b(g1) T_c(g2), b + c = e, b = e..0, in
+ * the order needed), and last the a = 0 group of degree d itself.  Each
+ * term costs one multiplication.
  * Products with a factor T_0 = 1 are exact, so performing them (as the loops
  * do) gives the bits of the definition.  p = 1 — every linear-elastic nodal
  * model — is written out: {1, g0, g1, g2}, identical to API 2.
@@ -23,41 +24,38 @@
 #define DEG1 ((uint32_t)TFIT_MAX_DEGREE + 1u)
 #define PAIRS ((DEG1 * (DEG1 + 1u)) / 2u)
 
-/* t[k] = T_k(g), k = 0..p (p >= 1). */
-static void chebyshev(uint32_t p, float g, float *t)
+/* p >= 2.  A named, external function rather than a static helper: the
+ * cycle model (host/cycles.c, check-cycles) reads its loops from objdump by
+ * name, and keeping its stack frame out of tfit_basis keeps the p = 1 path
+ * as short as in API 2. */
+void tfit_basis_chebyshev(uint32_t p, const float g[3], float *phi)
 {
-    const float h = g + g;
-    t[0] = 1.0f;
-    t[1] = g;
-    for (uint32_t k = 2u; k <= p; ++k) {
-        t[k] = h * t[k - 1u] - t[k - 2u];
-    }
-}
+    float t[3][DEG1];
+    uint32_t k = 1u;
 
-/* p >= 2. */
-static void basis_any_degree(uint32_t p, const float g[3], float *phi)
-{
-    float t0[DEG1], t1[DEG1], t2[DEG1];
-    float q[PAIRS];
-    uint32_t k = 0u;
-
-    chebyshev(p, g[0], t0);
-    chebyshev(p, g[1], t1);
-    chebyshev(p, g[2], t2);
-    for (uint32_t e = 0u; e <= p; ++e) {
-        for (uint32_t b = e + 1u; b-- > 0u;) {
-            q[k++] = t1[b] * t2[e - b];
+    for (uint32_t v = 0u; v < 3u; ++v) {
+        const float h = g[v] + g[v];
+        float *tv = t[v];
+        tv[0] = 1.0f;
+        tv[1] = g[v];
+        for (uint32_t i = 2u; i <= p; ++i) {
+            tv[i] = h * tv[i - 1u] - tv[i - 2u];
         }
     }
-    k = 0u;
-    for (uint32_t d = 0u; d <= p; ++d) {
-        uint32_t base = 0u; /* e (e + 1) / 2 for e = d - a, a = d .. 0 */
-        for (uint32_t e = 0u; e <= d; ++e) {
-            const float ta = t0[d - e];
+    for (uint32_t d = 1u; d <= p; ++d) {
+        /* a = d .. 1: T_a(g0) times the a = 0 group of degree e = d - a,
+         * which holds the inner products T_b(g1) T_c(g2), b + c = e */
+        uint32_t from = 0u; /* index of (0, e, 0), e(e+1)(e+2)/6 + e(e+1)/2 */
+        for (uint32_t e = 0u; e < d; ++e) {
+            const float ta = t[0][d - e];
             for (uint32_t j = 0u; j <= e; ++j) {
-                phi[k++] = ta * q[base + j];
+                phi[k++] = ta * phi[from + j];
             }
-            base += e + 1u;
+            from += (e + 1u) * (e + 2u) / 2u + e + 1u;
+        }
+        /* a = 0: the inner products of degree d, b = d .. 0 */
+        for (uint32_t b = d + 1u; b-- > 0u;) {
+            phi[k++] = t[1][b] * t[2][d - b];
         }
     }
 }
@@ -67,7 +65,7 @@ void tfit_basis(uint32_t p, const float g[3], float *phi)
     phi[0] = 1.0f;
     if (p != 1u) {
         if (p != 0u) {
-            basis_any_degree(p, g, phi);
+            tfit_basis_chebyshev(p, g, phi);
         }
         return;
     }

@@ -71,22 +71,19 @@ static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
 
 /* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x),
  * n >= 1, by Clenshaw's recurrence (docs/header-format.md §5.4):
- *   n = 1:  x c_1
- *   n >= 2: h = x + x; b_n = c_n; b_{n-1} = (h b_n) + c_{n-1};
- *           b_k = ((h b_{k+1}) - b_{k+2}) + c_k, k = n-2 .. 1;
- *           result (x b_1) - b_2.
- * The zero b_{n+1}, b_{n+2} are not added or subtracted (that would be
- * exact anyway).  The branches depend on n only, never on x. */
+ *   h = x + x; b_{n+1} = +0; b_n = c_n;
+ *   b_k = ((h b_{k+1}) - b_{k+2}) + c_k, k = n-1 .. 1;
+ *   result (x b_1) - b_2.
+ * One instruction path for every n >= 1 (only the loop count varies), and
+ * no branch on x.  Subtracting b_{n+1} = +0 is exact (v - (+0) = v for
+ * every v, -0 included), so n = 1 gives x c_1 bit for bit. */
 static inline float tfit_cheb_tail(const float *c, uint32_t n, float x)
 {
-    if (n == 1u) {
-        return x * c[1];
-    }
     const float h = x + x;
-    float b2 = c[n];
-    float b1 = h * b2 + c[n - 1u];
-    for (uint32_t k = n - 1u; k > 1u; --k) {
-        const float b = (h * b1 - b2) + c[k - 1u];
+    float b1 = c[n];
+    float b2 = 0.0f;
+    for (uint32_t k = n - 1u; k > 0u; --k) {
+        const float b = (h * b1 - b2) + c[k];
         b2 = b1;
         b1 = b;
     }
@@ -121,6 +118,8 @@ uint32_t tfit_input_map(const float *map, const float x[3], float g[3], uint32_t
 
 /* Chebyshev basis of total degree p in g, graded order (tfit_basis.c). */
 void tfit_basis(uint32_t p, const float g[3], float *phi);
+/* Its p >= 2 part (tfit_basis.c). */
+void tfit_basis_chebyshev(uint32_t p, const float g[3], float *phi);
 
 /* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_nodal.c,
  * tfit_modal.c, tfit_zhou2017.c).  Nodal and modal store every output and-ed
