@@ -90,9 +90,13 @@ typedef enum block_id {
     BASIS_P0,       /* tfit_basis(0, ...) */
     BASIS_P1,       /* tfit_basis(1, ...): written out */
     BASIS_PATH,     /* tfit_basis(p >= 2) outside its loops */
-    BASIS_DEGREE,   /* loop 1: one degree d = 1..p (p >= 2) */
-    BASIS_G0,       /* loop 2: g0 times the degree d-1 block, d(d+1)/2 times */
-    BASIS_G1,       /* loop 3: g1 times its last d entries */
+    BASIS_VAR,      /* loop 1: T_0, T_1 and h of one variable (3 times) */
+    BASIS_VAR_STEP, /* loop 2: one Chebyshev recurrence step T_k, k = 2..p */
+    BASIS_PAIR_E,   /* loop 3: one inner degree e = b + c = 0..p */
+    BASIS_PAIR,     /* loop 4: one inner product T_b(g1) T_c(g2) */
+    BASIS_DEGREE,   /* loop 5: one degree d = 0..p */
+    BASIS_A,        /* loop 6: one exponent a of g0 within degree d */
+    BASIS_TERM,     /* loop 7: one term T_a (T_b T_c) */
     NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 */
     NODAL_NODE_P1,  /* loop 3: one output point, p = 1 */
     NODAL_PATH,     /* outside loops, p != 1 */
@@ -108,15 +112,18 @@ typedef enum block_id {
     MODAL_MODE,     /* loop 4: one mode of the three rows */
     ZHOU_PATH,
     ZHOU_AXIS,      /* loop 1: contact displacement of one force axis */
-    ZHOU_AXIS_STEP, /* loop 2: one Horner step of it */
-    ZHOU_LAMBDA0_SKIP, /* ... minus the Horner set-up that lambda_a = 0 skips */
+    ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a - 1 of them) */
+    ZHOU_LAMBDA0_SKIP, /* ... minus the Clenshaw code that lambda_a = 0 skips */
+    ZHOU_LAMBDA_SKIP,  /* ... minus the lambda_a = 0 return that lambda_a >= 1 skips */
     ZHOU_SURF_AXIS, /* loop 3: one force axis of the surfaces */
     ZHOU_PAIR,      /* loop 4: one (axis, component) pair */
     ZHOU_ROW,       /* loop 5: one surface coefficient p_i(t) */
-    ZHOU_ROW_STEP,  /* loop 6: one Horner step of it */
+    ZHOU_ROW_K0_SKIP, /* ... minus the Clenshaw code that k = 0 skips */
+    ZHOU_ROW_K_SKIP,  /* ... minus the k = 0 return that k >= 1 skips */
+    ZHOU_ROW_STEP,  /* loop 6: one Clenshaw step of it (k - 1 of them) */
     ZHOU_NODE,      /* loop 7: one output point of one surface, path below */
-    ZHOU_X_STEP,    /* loop 8: one Horner step in X */
-    ZHOU_Y_STEP,    /* loop 9: one Horner step in Y */
+    ZHOU_X_STEP,    /* loop 8: one Clenshaw step in X (A - 1 of them) */
+    ZHOU_Y_STEP,    /* loop 9: one Clenshaw step in Y (B - 1 of them) */
     N_BLOCKS
 } block_id;
 
@@ -145,11 +152,15 @@ static const block blocks[N_BLOCKS] = {
     [BASIS_P0] = {"tfit_basis", 0, 0, SAME("alu=3 store=1 branch=3")},
     [BASIS_P1] = {"tfit_basis", 0, 0, SAME("alu=2 load=3 store=4 branch=2")},
     [BASIS_PATH] = {"tfit_basis", 0, 0, SAME("alu=8 store=1 ldm_pc=1 stm=1 words=14 branch=2")},
-    [BASIS_DEGREE] = {"tfit_basis", 1, 1,
-                      {"alu=21 fload=2 fstore=1 fmul=1 branch=3",
-                       "alu=20 fload=2 fstore=1 fmul=1 branch=3"}},
-    [BASIS_G0] = {"tfit_basis", 2, 2, SAME("alu=1 fload=1 fldm=1 fstm=1 fwords=2 fmul=1 branch=1")},
-    [BASIS_G1] = {"tfit_basis", 3, 2, SAME("alu=1 fload=1 fldm=1 fstm=1 fwords=2 fmul=1 branch=1")},
+    [BASIS_VAR] = {"tfit_basis", 1, 1,
+                   SAME("alu=4 store=1 fstore=1 fldm=1 fwords=1 fadd=1 fother=1 branch=1")},
+    [BASIS_VAR_STEP] = {"tfit_basis", 2, 2,
+                        SAME("alu=1 fstm=1 fwords=1 fadd=1 fmul=1 fother=2 branch=1")},
+    [BASIS_PAIR_E] = {"tfit_basis", 3, 1, SAME("alu=10 branch=1")},
+    [BASIS_PAIR] = {"tfit_basis", 4, 2, SAME("alu=1 fldm=2 fstm=1 fwords=3 fmul=1 branch=1")},
+    [BASIS_DEGREE] = {"tfit_basis", 5, 1, SAME("alu=6 branch=1")},
+    [BASIS_A] = {"tfit_basis", 6, 2, SAME("alu=10 fldm=1 fwords=1 branch=1")},
+    [BASIS_TERM] = {"tfit_basis", 7, 3, SAME("alu=1 fldm=1 fstm=1 fwords=2 fmul=1 branch=1")},
     [NODAL_PATH_P1] = {"tfit_eval_nodal", 0, 0,
                        SAME("alu=12 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=3")},
     [NODAL_NODE_P1] = {"tfit_eval_nodal", 3, 1,
@@ -172,34 +183,37 @@ static const block blocks[N_BLOCKS] = {
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
                    {"alu=18 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20",
                     "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20"}},
-    [ZHOU_LAMBDA0_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1")},
+    [ZHOU_LAMBDA0_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
+    [ZHOU_LAMBDA_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
     [ZHOU_AXIS] = {"tfit_eval_zhou2017", 1, 1,
-                   SAME("alu=6 load=1 fload=1 fldm=2 fstm=1 fwords=3 fmul=1 branch=2")},
+                   SAME("alu=7 load=1 fload=2 fldm=2 fstm=1 fwords=3 fadd=3 fmul=2 fother=1 "
+                        "branch=4")},
     [ZHOU_AXIS_STEP] = {"tfit_eval_zhou2017", 2, 2,
-                        SAME("alu=1 fldm=1 fwords=1 fadd=1 fmul=1 branch=1")},
-    [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1,
-                        {"alu=7 load=2 store=3 branch=1", "alu=6 load=2 store=3 branch=1"}},
+                        SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1, SAME("alu=6 load=2 store=3 branch=1")},
     [ZHOU_PAIR] = {"tfit_eval_zhou2017", 4, 2,
-                   SAME("alu=21 mul=1 load=10 store=3 ldm=1 words=2 fload=2 branch=3")},
-    [ZHOU_ROW] = {"tfit_eval_zhou2017", 5, 3, SAME("alu=3 fload=1 fstm=1 fwords=1 branch=2")},
+                   SAME("alu=20 mul=1 load=11 store=4 ldm=1 words=2 fload=2 branch=3")},
+    [ZHOU_ROW] = {"tfit_eval_zhou2017", 5, 3,
+                  SAME("alu=6 fload=2 fstm=1 fwords=1 fadd=3 fmul=1 fother=1 branch=4")},
+    [ZHOU_ROW_K0_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
+    [ZHOU_ROW_K_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
     [ZHOU_ROW_STEP] = {"tfit_eval_zhou2017", 6, 4,
-                       SAME("alu=1 fldm=1 fwords=1 fadd=1 fmul=1 branch=1")},
+                       SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
     [ZHOU_NODE] = {"tfit_eval_zhou2017", 7, 3,
-                   SAME("alu=7 fload=4 fstore=1 fadd=2 fmul=1 fother=1 branch=5")},
+                   SAME("alu=9 fload=5 fstore=1 fadd=7 fmul=2 fother=2 branch=8")},
     [ZHOU_X_STEP] = {"tfit_eval_zhou2017", 8, 4,
-                     SAME("alu=1 fldm=1 fwords=1 fadd=1 fmul=1 branch=1")},
+                     SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
     [ZHOU_Y_STEP] = {"tfit_eval_zhou2017", 9, 4,
-                     SAME("alu=1 fldm=1 fwords=1 fadd=1 fmul=1 branch=1")},
+                     SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
 };
 
 /* Parts of the zhou2017 output-point loop (ZHOU_NODE) that run only for
- * some surfaces: the Y polynomial (B > 0), its Horner set-up (B > 1), the
- * X Horner set-up (A > 0), and the superposition (force axes y, z). */
-static const char *const zhou_node_always = "alu=4 fload=1 fstore=1 fother=1 branch=4";
-static const char *const zhou_node_y = "alu=1 fload=2 fadd=1 fmul=1 branch=1";
-static const char *const zhou_node_y_setup = "alu=1";
-static const char *const zhou_node_x_setup = "alu=1";
-static const char *const zhou_node_sum = "fload=1 fadd=1";
+ * some surfaces: the X series beyond c_0 (A > 0), the Y series (B > 0) and
+ * the superposition (force axes y, z). */
+static const char *const zhou_node_always = "alu=9 fload=5 fstore=1 fadd=7 fmul=2 fother=2 branch=8";
+static const char *const zhou_node_x = "";
+static const char *const zhou_node_y = "";
+static const char *const zhou_node_sum = "";
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
 {
@@ -233,12 +247,15 @@ static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
         add_block(t, core, p == 0 ? BASIS_P0 : BASIS_P1, 1);
         return;
     }
+    const uint64_t pairs = (uint64_t)(p + 1) * (p + 2) / 2;
     add_block(t, core, BASIS_PATH, 1);
-    for (uint32_t d = 1; d <= p; ++d) {
-        add_block(t, core, BASIS_DEGREE, 1);
-        add_block(t, core, BASIS_G0, d * (d + 1) / 2);
-        add_block(t, core, BASIS_G1, d);
-    }
+    add_block(t, core, BASIS_VAR, 3);
+    add_block(t, core, BASIS_VAR_STEP, 3ull * (p - 1));
+    add_block(t, core, BASIS_PAIR_E, p + 1);
+    add_block(t, core, BASIS_PAIR, pairs);
+    add_block(t, core, BASIS_DEGREE, p + 1);
+    add_block(t, core, BASIS_A, pairs);
+    add_block(t, core, BASIS_TERM, tf_terms(p));
 }
 
 static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
@@ -277,6 +294,11 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+static uint64_t steps(uint32_t n) /* Clenshaw steps of a series of order n */
+{
+    return n > 0 ? n - 1 : 0;
+}
+
 static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     const uint32_t *d = m->dims;
@@ -285,24 +307,22 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     add_block(t, core, ZHOU_PATH, 1);
     for (int a = 0; a < 3; ++a) {
         add_block(t, core, ZHOU_AXIS, 1);
-        add_block(t, core, ZHOU_AXIS_STEP, d[a]);
-        if (d[a] == 0) {
-            sub_block(t, core, ZHOU_LAMBDA0_SKIP, 1);
-        }
+        add_block(t, core, ZHOU_AXIS_STEP, steps(d[a]));
+        sub_block(t, core, d[a] == 0 ? ZHOU_LAMBDA0_SKIP : ZHOU_LAMBDA_SKIP, 1);
         add_block(t, core, ZHOU_SURF_AXIS, 1);
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = d[3 + 3 * pair], by = d[4 + 3 * pair], k = d[5 + 3 * pair];
-        uint64_t n = m->n_out;
+        uint64_t n = m->n_out, rows = ax + by + 1;
         add_block(t, core, ZHOU_PAIR, 1);
-        add_block(t, core, ZHOU_ROW, ax + by + 1);
-        add_block(t, core, ZHOU_ROW_STEP, (uint64_t)(ax + by + 1) * k);
+        add_block(t, core, ZHOU_ROW, rows);
+        sub_block(t, core, k == 0 ? ZHOU_ROW_K0_SKIP : ZHOU_ROW_K_SKIP, rows);
+        add_block(t, core, ZHOU_ROW_STEP, rows * steps(k));
         add_mix(t, zhou_node_always, n);
-        add_mix(t, zhou_node_x_setup, ax > 0 ? n : 0);
-        add_block(t, core, ZHOU_X_STEP, n * ax);
+        add_mix(t, zhou_node_x, ax > 0 ? n : 0);
+        add_block(t, core, ZHOU_X_STEP, n * steps(ax));
         add_mix(t, zhou_node_y, by > 0 ? n : 0);
-        add_mix(t, zhou_node_y_setup, by > 1 ? n : 0);
-        add_block(t, core, ZHOU_Y_STEP, by > 0 ? n * (by - 1) : 0);
+        add_block(t, core, ZHOU_Y_STEP, n * steps(by));
         add_mix(t, zhou_node_sum, pair >= 3 ? n : 0);
     }
 }
