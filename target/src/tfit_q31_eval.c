@@ -23,7 +23,7 @@ static int32_t q30_mul(int32_t a, int32_t b)
  * product 2 g t can reach 2^31 and wraps in 32 bits; the difference is
  * |T_k| <= 2^30 + 2^14 and comes out exact, because uint32_t arithmetic is
  * modulo 2^32. */
-static void chebyshev_q30(uint32_t p, int32_t g, int32_t *t)
+static inline void chebyshev_q30(uint32_t p, int32_t g, int32_t *t)
 {
     t[0] = TFIT_Q31_ONE;
     t[1] = g;
@@ -42,10 +42,9 @@ void tfit_q31_basis(uint32_t p, const int32_t g[3], int32_t *phi)
     int32_t q[((TFIT_Q31_MAX_DEGREE + 1u) * (TFIT_Q31_MAX_DEGREE + 2u)) / 2u];
     uint32_t k = 0u;
 
-    phi[0] = TFIT_Q31_ONE;
-    if (p == 0u) {
-        return;
-    }
+    /* No early return for p = 0 (the loops then give phi[0] = 2^30 from
+     * exact products by 2^30): GCC would split the function into a
+     * ".part" clone that the stack table (linker/firmware.mk) cannot see. */
     chebyshev_q30(p, g[0], t0);
     chebyshev_q30(p, g[1], t1);
     chebyshev_q30(p, g[2], t2);
