@@ -81,7 +81,8 @@ uint64_t tf_insn_mix_count(const tf_insn_mix *mix)
  */
 typedef enum block_id {
     ENTRY_FORWARD,  /* tfit_displacements: argument and family checks, tail call */
-    ENTRY_CONTACT,  /* tfit_contact_force: the same */
+    ENTRY_CONTACT,  /* tfit_contact_force, p != 1: the same */
+    CONTACT_P1,     /* tfit_contact_force, p = 1: the whole call but the input map */
     EVAL_NODAL,     /* evaluate(): input map call, family switch, status */
     EVAL_MODAL,
     EVAL_ZHOU,
@@ -97,7 +98,7 @@ typedef enum block_id {
     BASIS_DEGREE,   /* loop 5: one degree d = 0..p */
     BASIS_A,        /* loop 6: one exponent a of g0 within degree d */
     BASIS_TERM,     /* loop 7: one term T_a (T_b T_c) */
-    NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 */
+    NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 (no basis call) */
     NODAL_NODE_P1,  /* loop 3: one output point, p = 1 */
     NODAL_PATH,     /* outside loops, p != 1 */
     NODAL_NODE,     /* loop 1: one output point, any p */
@@ -139,7 +140,13 @@ static const block blocks[N_BLOCKS] = {
     [ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
                        {"alu=2 load=1 ldm=1 stm=1 words=4 branch=5", "alu=4 load=1 branch=4"}},
     [ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
-                       {"alu=1 load=1 ldm=1 stm=1 words=4 branch=5", "alu=3 load=1 branch=4"}},
+                       {"alu=9 load=3 ldm=1 stm=1 words=6 branch=6",
+                        "alu=8 load=3 ldm=1 stm=1 words=6 branch=5"}},
+    [CONTACT_P1] = {"tfit_contact_force", 0, 0,
+                    {"alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
+                     "branch=6",
+                     "alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
+                     "branch=5"}},
     [EVAL_NODAL] = {"evaluate", 0, 0, SAME("alu=18 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
     [EVAL_MODAL] = {"evaluate", 0, 0, SAME("alu=17 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
     [EVAL_ZHOU] = {"evaluate", 0, 0, SAME("alu=21 load=5 ldm_pc=1 stm=1 words=10 branch=6")},
@@ -162,7 +169,7 @@ static const block blocks[N_BLOCKS] = {
     [BASIS_A] = {"tfit_basis", 6, 2, SAME("alu=10 fldm=1 fwords=1 branch=1")},
     [BASIS_TERM] = {"tfit_basis", 7, 3, SAME("alu=1 fldm=1 fstm=1 fwords=2 fmul=1 branch=1")},
     [NODAL_PATH_P1] = {"tfit_eval_nodal", 0, 0,
-                       SAME("alu=12 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=3")},
+                       SAME("alu=10 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=2")},
     [NODAL_NODE_P1] = {"tfit_eval_nodal", 3, 1,
                        SAME("alu=7 store=3 fload=12 fadd=9 fmul=9 fmov=3 branch=1")},
     [NODAL_PATH] = {"tfit_eval_nodal", 0, 0,
@@ -262,12 +269,12 @@ static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], terms = tf_terms(p);
     add_block(t, core, EVAL_NODAL, 1);
-    basis_mix(t, core, p);
-    if (p == 1) {
+    if (p == 1) { /* the basis is g itself: no tfit_basis call */
         add_block(t, core, NODAL_PATH_P1, 1);
         add_block(t, core, NODAL_NODE_P1, m->n_out);
         return;
     }
+    basis_mix(t, core, p);
     add_block(t, core, NODAL_PATH, 1);
     add_block(t, core, NODAL_NODE, m->n_out);
     add_block(t, core, NODAL_TERM, (uint64_t)m->n_out * (terms - 1));
@@ -330,8 +337,12 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
-    add_block(mix, core, m->family == TFIT_FAMILY_CONTACT ? ENTRY_CONTACT : ENTRY_FORWARD, 1);
     add_block(mix, core, INPUT_PATH, 1);
+    if (m->family == TFIT_FAMILY_CONTACT && m->dims[0] == 1) {
+        add_block(mix, core, CONTACT_P1, 1); /* the fast path, tfit_eval.c */
+        return;
+    }
+    add_block(mix, core, m->family == TFIT_FAMILY_CONTACT ? ENTRY_CONTACT : ENTRY_FORWARD, 1);
     switch (m->family) {
     case TFIT_FAMILY_MODAL:
         modal_mix(mix, core, m);

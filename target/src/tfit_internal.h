@@ -111,6 +111,36 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
     return acc;
 }
 
+/* Degree-1 rows (nodal and contact p = 1, header-format.md §5.2): per output
+ * point, out = ((C0 + C1 g0) + C2 g1) + C3 g2 for its three rows.  The basis
+ * {1, g0, g1, g2} is g itself (phi_k = g_v * 1.0f is exact), so g is used
+ * directly.  One output point per iteration: the three rows of a node share
+ * each g_v and keep three independent sums in flight.  The output mask
+ * (header-format.md §5.5) is applied as each word is stored.  Inline: the
+ * contact fast path (tfit_eval.c) calls it with n_out = 1, where the loop
+ * disappears. */
+static inline void tfit_rows_degree1(const float *c, const float g[3], uint32_t n_out,
+                                     uint32_t keep, float *out)
+{
+    const float g0 = g[0], g1 = g[1], g2 = g[2];
+    for (uint32_t j = 0u; j < n_out; ++j) {
+        float x = c[0] + c[1] * g0;
+        float y = c[4] + c[5] * g0;
+        float z = c[8] + c[9] * g0;
+        x = x + c[2] * g1;
+        y = y + c[6] * g1;
+        z = z + c[10] * g1;
+        x = x + c[3] * g2;
+        y = y + c[7] * g2;
+        z = z + c[11] * g2;
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        c += 12;
+        out += 3;
+    }
+}
+
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
  * mask when the input was projected; *bad is all ones when the input held a
  * NaN or Inf (g is then computed from a zero input). */

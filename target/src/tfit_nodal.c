@@ -11,33 +11,11 @@
  * output point per iteration, so the three rows of a node share each basis
  * value and keep three independent sums in flight; for p = 1 (the exact
  * degree for linear elasticity) the basis stays in registers and the row is
- * written out.  The output mask (header-format.md §5.5) is applied as each
- * word is stored instead of in a second pass over the outputs.
+ * written out (tfit_rows_degree1, tfit_internal.h).  The output mask
+ * (header-format.md §5.5) is applied as each word is stored instead of in a
+ * second pass over the outputs.
  */
 #include "tfit_internal.h"
-
-/* p = 1: out = ((C0 + C1 g0) + C2 g1) + C3 g2 per row; phi = {1, g0, g1, g2}. */
-static void nodes_degree1(const float *c, const float *phi, uint32_t n_out, uint32_t keep,
-                          float *out)
-{
-    const float g0 = phi[1], g1 = phi[2], g2 = phi[3];
-    for (uint32_t j = 0u; j < n_out; ++j) {
-        float x = c[0] + c[1] * g0;
-        float y = c[4] + c[5] * g0;
-        float z = c[8] + c[9] * g0;
-        x = x + c[2] * g1;
-        y = y + c[6] * g1;
-        z = z + c[10] * g1;
-        x = x + c[3] * g2;
-        y = y + c[7] * g2;
-        z = z + c[11] * g2;
-        out[0] = tfit_masked(x, keep);
-        out[1] = tfit_masked(y, keep);
-        out[2] = tfit_masked(z, keep);
-        c += 12;
-        out += 3;
-    }
-}
 
 /* Any p: the three rows of a node side by side, each summed left to right. */
 static void nodes_any_degree(const float *c, const float *phi, uint32_t n_terms, uint32_t n_out,
@@ -67,10 +45,10 @@ void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float
     const uint32_t p = m->dims[0];
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
 
-    tfit_basis(p, g, phi);
     if (p == 1u) {
-        nodes_degree1(c, phi, m->n_out, keep, out);
-    } else {
-        nodes_any_degree(c, phi, TFIT_TERMS(p), m->n_out, keep, out);
+        tfit_rows_degree1(c, g, m->n_out, keep, out);
+        return;
     }
+    tfit_basis(p, g, phi);
+    nodes_any_degree(c, phi, TFIT_TERMS(p), m->n_out, keep, out);
 }
