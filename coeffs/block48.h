@@ -7,12 +7,12 @@
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_forward: nodal p=1, 121 output points, force [N] -> displacement [mm]
- *       1103 add, 1125 mul, 0 div per evaluation; 6344 table bytes
+ *       1103 add, 1122 mul, 0 div per evaluation; 6344 table bytes
  *       5552 instructions; Cortex-M4F <= 7846 cycles (46.70 us at 168 MHz), Cortex-M7 ~5362 (11.17 us at 480 MHz)
  *       Q31 form tfit_block48_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 3.04e-08 mm (float32 path: 1.68e-07)
  *       held-out error over 50 cases: max 1.16e-07 mm, rms 5.68e-09 mm
  *   tfit_block48_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
- *       23 add, 45 mul, 0 div per evaluation; 104 table bytes
+ *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       241 instructions; Cortex-M4F <= 325 cycles (1.93 us at 168 MHz), Cortex-M7 ~216 (0.45 us at 480 MHz)
  *       Q31 form tfit_block48_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.04e-08 N (float32 path: 6.65e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 1.12e-08 N
@@ -27,8 +27,8 @@
 #include "tfit.h"
 #include "tfit_q31.h"
 
-#if TFIT_API_VERSION != 2
-#error "block48.h was generated for tfit API version 2: regenerate it with tissuefit"
+#if TFIT_API_VERSION != 3
+#error "block48.h was generated for tfit API version 3: regenerate it with tissuefit"
 #endif
 
 /* tfit_block48_forward */
@@ -41,9 +41,9 @@
 #define TFIT_BLOCK48_FORWARD_ENVELOPE_RADIUS 1 /* N, ball around the centre */
 #define TFIT_BLOCK48_FORWARD_ENVELOPE_CENTER {0, 0, 0}
 #define TFIT_BLOCK48_FORWARD_OPS_ADD 1103
-#define TFIT_BLOCK48_FORWARD_OPS_MUL 1125
+#define TFIT_BLOCK48_FORWARD_OPS_MUL 1122
 #define TFIT_BLOCK48_FORWARD_OPS_DIV 0
-#define TFIT_BLOCK48_FORWARD_OPS 2228
+#define TFIT_BLOCK48_FORWARD_OPS 2225
 #define TFIT_BLOCK48_FORWARD_TABLE_BYTES 6344
 #define TFIT_BLOCK48_FORWARD_INSNS_ARMV7EM 5552 /* per call, gcc -O2 (docs/firmware.md) */
 #define TFIT_BLOCK48_FORWARD_CYCLES_M4F 7846u /* upper bound, zero-wait-state tables */
@@ -54,12 +54,12 @@
 #define TFIT_BLOCK48_FORWARD_Q31_IN_EXP 1 /* input word x = value * 2^(31 - 1), N */
 #define TFIT_BLOCK48_FORWARD_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), mm */
 #define TFIT_BLOCK48_FORWARD_Q31_ADDED_ERROR_MM 3.04358e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 1.68053e-07 */
-#define TFIT_BLOCK48_FORWARD_Q31_CRC32 0xf45425cau
+#define TFIT_BLOCK48_FORWARD_Q31_CRC32 0x10352687u
 extern const tfit_model_q31 tfit_block48_forward_q31;
 #define TFIT_BLOCK48_FORWARD_HELDOUT_CASES 50
 #define TFIT_BLOCK48_FORWARD_HELDOUT_MAX_MM 1.16479e-07
 #define TFIT_BLOCK48_FORWARD_HELDOUT_RMS_MM 5.67964e-09
-#define TFIT_BLOCK48_FORWARD_CRC32 0x9f8101adu
+#define TFIT_BLOCK48_FORWARD_CRC32 0x522e69fcu
 extern const tfit_model tfit_block48_forward;
 
 /* tfit_block48_contact */
@@ -71,9 +71,9 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_OUTPUT "contact force [N]"
 #define TFIT_BLOCK48_CONTACT_ENVELOPE_CENTER {-1.04262832e-17, 2.41645877e-17, -4.30211409e-17}
 #define TFIT_BLOCK48_CONTACT_OPS_ADD 23
-#define TFIT_BLOCK48_CONTACT_OPS_MUL 45
+#define TFIT_BLOCK48_CONTACT_OPS_MUL 42
 #define TFIT_BLOCK48_CONTACT_OPS_DIV 0
-#define TFIT_BLOCK48_CONTACT_OPS 68
+#define TFIT_BLOCK48_CONTACT_OPS 65
 #define TFIT_BLOCK48_CONTACT_TABLE_BYTES 104
 #define TFIT_BLOCK48_CONTACT_INSNS_ARMV7EM 241 /* per call, gcc -O2 (docs/firmware.md) */
 #define TFIT_BLOCK48_CONTACT_CYCLES_M4F 325u /* upper bound, zero-wait-state tables */
@@ -84,13 +84,13 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CONTACT_Q31_ADDED_ERROR_N 4.0422e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.65254e-08 */
-#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x4d2462bdu
+#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x0ce71a33u
 extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_CASES 50
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_RMS_N 1.12419e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_REL_MAX 7.52712e-08
-#define TFIT_BLOCK48_CONTACT_CRC32 0x8f2d9bedu
+#define TFIT_BLOCK48_CONTACT_CRC32 0xfb2b6178u
 extern const tfit_model tfit_block48_contact;
 
 #ifdef TFIT_BLOCK48_IMPLEMENTATION
@@ -851,9 +851,9 @@ static const float tfit_block48_forward_coef[1464] = {
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
 };
 const tfit_model tfit_block48_forward = {
-    2u, 1u, 121u, 1u, 1464u,
+    3u, 1u, 121u, 1u, 1464u,
     tfit_block48_forward_dims, tfit_block48_forward_coef, tfit_block48_forward_nodes,
-    0x9f8101adu
+    0x522e69fcu
 };
 static const int32_t tfit_block48_forward_q31_coef[1828] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1590,9 +1590,9 @@ static const int32_t tfit_block48_forward_q31_coef[1828] = {
     62, 0, 0, 0, 0,
 };
 const tfit_model_q31 tfit_block48_forward_q31 = {
-    1u, 1u, 121u, 1u, 1828u,
+    2u, 1u, 121u, 1u, 1828u,
     tfit_block48_forward_q31_coef, tfit_block48_forward_nodes,
-    0xf45425cau
+    0x10352687u
 };
 
 static const uint32_t tfit_block48_contact_dims[1] = {
@@ -1616,9 +1616,9 @@ static const float tfit_block48_contact_coef[24] = {
     0x1.99999ap-59f, 0x1.7b0beep-54f, 0x1.a2cd64p-56f, 0x1p+0f,
 };
 const tfit_model tfit_block48_contact = {
-    2u, 4u, 1u, 1u, 24u,
+    3u, 4u, 1u, 1u, 24u,
     tfit_block48_contact_dims, tfit_block48_contact_coef, tfit_block48_contact_nodes,
-    0x8f2d9bedu
+    0xfb2b6178u
 };
 static const int32_t tfit_block48_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1635,9 +1635,9 @@ static const int32_t tfit_block48_contact_q31_coef[28] = {
     34, 0, 0, 0, 1073741824,
 };
 const tfit_model_q31 tfit_block48_contact_q31 = {
-    1u, 4u, 1u, 1u, 28u,
+    2u, 4u, 1u, 1u, 28u,
     tfit_block48_contact_q31_coef, tfit_block48_contact_nodes,
-    0x4d2462bdu
+    0x0ce71a33u
 };
 
 #endif /* TFIT_BLOCK48_IMPLEMENTATION */

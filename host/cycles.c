@@ -88,16 +88,13 @@ typedef enum block_id {
     EVAL_ZHOU,
     MASK_WORD,      /* evaluate() loop 1: the output mask after zhou2017 */
     INPUT_PATH,     /* tfit_input_map(): straight-line code */
-    BASIS_P0,       /* tfit_basis(0, ...) */
-    BASIS_P1,       /* tfit_basis(1, ...): written out */
-    BASIS_PATH,     /* tfit_basis(p >= 2) outside its loops */
-    BASIS_VAR,      /* loop 1: T_0, T_1 and h of one variable (3 times) */
-    BASIS_VAR_STEP, /* loop 2: one Chebyshev recurrence step T_k, k = 2..p */
-    BASIS_PAIR_E,   /* loop 3: one inner degree e = b + c = 0..p */
-    BASIS_PAIR,     /* loop 4: one inner product T_b(g1) T_c(g2) */
-    BASIS_DEGREE,   /* loop 5: one degree d = 0..p */
-    BASIS_A,        /* loop 6: one exponent a of g0 within degree d */
-    BASIS_TERM,     /* loop 7: one term T_a (T_b T_c) */
+    BASIS_PATH,     /* tfit_basis() outside its loops, p >= 2 */
+    BASIS_PATH_LOW, /* tfit_basis() outside its loops, p <= 1 (no T recurrence) */
+    BASIS_T_STEP,   /* loop 1: one recurrence step T_i of the three variables, i = 2..p */
+    BASIS_T_ENTRY,  /* ... minus what its first pass skips (M4F: entered mid-body) */
+    BASIS_DEGREE,   /* loop 2: one degree d = 0..p */
+    BASIS_E,        /* loop 3: one inner degree e = b + c = 0..d */
+    BASIS_TERM,     /* loop 4: one term T_a(g0) (T_b(g1) T_c(g2)) */
     NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 (no basis call) */
     NODAL_NODE_P1,  /* loop 3: one output point, p = 1 */
     NODAL_PATH,     /* outside loops, p != 1 */
@@ -113,18 +110,23 @@ typedef enum block_id {
     MODAL_MODE,     /* loop 4: one mode of the three rows */
     ZHOU_PATH,
     ZHOU_AXIS,      /* loop 1: contact displacement of one force axis */
-    ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a - 1 of them) */
-    ZHOU_LAMBDA0_SKIP, /* ... minus the Clenshaw code that lambda_a = 0 skips */
-    ZHOU_LAMBDA_SKIP,  /* ... minus the lambda_a = 0 return that lambda_a >= 1 skips */
+    ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a of them) */
+    ZHOU_AXIS_SETUP, /* ... the loop set-up in loop 1's body, which lambda_a = 0 skips */
+    ZHOU_AXIS_STUB, /* ... the out-of-line code lambda_a = 0 runs instead */
     ZHOU_SURF_AXIS, /* loop 3: one force axis of the surfaces */
     ZHOU_PAIR,      /* loop 4: one (axis, component) pair */
     ZHOU_ROW,       /* loop 5: one surface coefficient p_i(t) */
-    ZHOU_ROW_K0_SKIP, /* ... minus the Clenshaw code that k = 0 skips */
-    ZHOU_ROW_K_SKIP,  /* ... minus the k = 0 return that k >= 1 skips */
-    ZHOU_ROW_STEP,  /* loop 6: one Clenshaw step of it (k - 1 of them) */
-    ZHOU_NODE,      /* loop 7: one output point of one surface, path below */
-    ZHOU_X_STEP,    /* loop 8: one Clenshaw step in X (A - 1 of them) */
-    ZHOU_Y_STEP,    /* loop 9: one Clenshaw step in Y (B - 1 of them) */
+    ZHOU_ROW_STEP,  /* loop 6: one Clenshaw step of it (k of them) */
+    ZHOU_ROW_SETUP, /* ... its set-up in loop 5's body, which k = 0 skips */
+    ZHOU_ROW_STUB,  /* ... the out-of-line code k = 0 runs instead */
+    ZHOU_NODE,      /* loop 7: one output point of one surface, every part */
+    ZHOU_X_STEP,    /* loop 8: one Clenshaw step in X (A of them) */
+    ZHOU_X_SETUP,   /* ... its set-up in loop 7's body, which A = 0 skips */
+    ZHOU_X_STUB,    /* ... the out-of-line code A = 0 runs instead */
+    ZHOU_Y_STEP,    /* loop 9: one Clenshaw step in Y (B of them) */
+    ZHOU_Y_PART,    /* ... the Y tail in loop 7's body outside loop 9 (B = 0 skips it) */
+    ZHOU_SUM,       /* ... the superposition in loop 7's body (force axis x skips it) */
+    STEP_ENTRY,     /* a Clenshaw loop is entered past its first instruction */
     N_BLOCKS
 } block_id;
 
@@ -156,18 +158,18 @@ static const block blocks[N_BLOCKS] = {
                      "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14",
                      "alu=82 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=12 fload=12 fstore=3 "
                      "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14"}},
-    [BASIS_P0] = {"tfit_basis", 0, 0, SAME("alu=3 store=1 branch=3")},
-    [BASIS_P1] = {"tfit_basis", 0, 0, SAME("alu=2 load=3 store=4 branch=2")},
-    [BASIS_PATH] = {"tfit_basis", 0, 0, SAME("alu=8 store=1 ldm_pc=1 stm=1 words=14 branch=2")},
-    [BASIS_VAR] = {"tfit_basis", 1, 1,
-                   SAME("alu=4 store=1 fstore=1 fldm=1 fwords=1 fadd=1 fother=1 branch=1")},
-    [BASIS_VAR_STEP] = {"tfit_basis", 2, 2,
-                        SAME("alu=1 fstm=1 fwords=1 fadd=1 fmul=1 fother=2 branch=1")},
-    [BASIS_PAIR_E] = {"tfit_basis", 3, 1, SAME("alu=10 branch=1")},
-    [BASIS_PAIR] = {"tfit_basis", 4, 2, SAME("alu=1 fldm=2 fstm=1 fwords=3 fmul=1 branch=1")},
-    [BASIS_DEGREE] = {"tfit_basis", 5, 1, SAME("alu=6 branch=1")},
-    [BASIS_A] = {"tfit_basis", 6, 2, SAME("alu=10 fldm=1 fwords=1 branch=1")},
-    [BASIS_TERM] = {"tfit_basis", 7, 3, SAME("alu=1 fldm=1 fstm=1 fwords=2 fmul=1 branch=1")},
+    [BASIS_PATH] = {"tfit_basis", 0, 0, /* the M4F enters loop 1 with a branch */
+                    {"alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=2",
+                     "alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=1"}},
+    [BASIS_PATH_LOW] = {"tfit_basis", 0, 0,
+                        SAME("alu=10 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=1 "
+                             "branch=2")},
+    [BASIS_T_STEP] = {"tfit_basis", 1, 1,
+                      SAME("alu=1 fstm=3 fwords=3 fadd=3 fmul=3 fother=6 branch=1")},
+    [BASIS_T_ENTRY] = {"tfit_basis", 0, 0, {"fother=2", ""}},
+    [BASIS_DEGREE] = {"tfit_basis", 2, 1, SAME("alu=6 branch=1")},
+    [BASIS_E] = {"tfit_basis", 3, 2, SAME("alu=8 fldm=1 fwords=1 branch=1")},
+    [BASIS_TERM] = {"tfit_basis", 4, 3, SAME("alu=1 fldm=2 fstm=1 fwords=3 fmul=2 branch=1")},
     [NODAL_PATH_P1] = {"tfit_eval_nodal", 0, 0,
                        SAME("alu=10 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=2")},
     [NODAL_NODE_P1] = {"tfit_eval_nodal", 3, 1,
@@ -188,39 +190,37 @@ static const block blocks[N_BLOCKS] = {
     [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
     [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
-                   {"alu=18 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20",
-                    "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20"}},
-    [ZHOU_LAMBDA0_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
-    [ZHOU_LAMBDA_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
+                   {"alu=16 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2",
+                    "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2"}},
     [ZHOU_AXIS] = {"tfit_eval_zhou2017", 1, 1,
-                   SAME("alu=7 load=1 fload=2 fldm=2 fstm=1 fwords=3 fadd=3 fmul=2 fother=1 "
-                        "branch=4")},
+                   SAME("alu=6 load=1 fload=1 fldm=2 fstm=1 fwords=3 fadd=3 fmul=2 fother=2 "
+                        "branch=3")},
     [ZHOU_AXIS_STEP] = {"tfit_eval_zhou2017", 2, 2,
                         SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
-    [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1, SAME("alu=6 load=2 store=3 branch=1")},
+    [ZHOU_AXIS_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=3 fother=2 branch=1")},
+    [ZHOU_AXIS_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fload=1 fother=1 branch=1")},
+    [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1, SAME("alu=8 load=2 store=2 branch=1")},
     [ZHOU_PAIR] = {"tfit_eval_zhou2017", 4, 2,
-                   SAME("alu=20 mul=1 load=11 store=4 ldm=1 words=2 fload=2 branch=3")},
+                   SAME("alu=25 mla=1 load=9 store=3 ldm=1 words=2 fload=2 fadd=1 branch=3")},
     [ZHOU_ROW] = {"tfit_eval_zhou2017", 5, 3,
-                  SAME("alu=6 fload=2 fstm=1 fwords=1 fadd=3 fmul=1 fother=1 branch=4")},
-    [ZHOU_ROW_K0_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
-    [ZHOU_ROW_K_SKIP] = {"tfit_eval_zhou2017", 0, 0, SAME("")},
+                  SAME("alu=4 fload=1 fstm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=3")},
     [ZHOU_ROW_STEP] = {"tfit_eval_zhou2017", 6, 4,
                        SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_ROW_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
+    [ZHOU_ROW_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=2 branch=1")},
     [ZHOU_NODE] = {"tfit_eval_zhou2017", 7, 3,
-                   SAME("alu=9 fload=5 fstore=1 fadd=7 fmul=2 fother=2 branch=8")},
+                   SAME("alu=7 fload=3 fstore=1 fadd=7 fmul=2 fother=4 branch=6")},
     [ZHOU_X_STEP] = {"tfit_eval_zhou2017", 8, 4,
                      SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_X_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
+    [ZHOU_X_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=2 branch=1")},
     [ZHOU_Y_STEP] = {"tfit_eval_zhou2017", 9, 4,
                      SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_Y_PART] = {"tfit_eval_zhou2017", 0, 0,
+                     SAME("alu=1 fload=1 fadd=3 fmul=1 fother=2 branch=1")},
+    [ZHOU_SUM] = {"tfit_eval_zhou2017", 0, 0, SAME("fload=1 fadd=1")},
+    [STEP_ENTRY] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=1")},
 };
-
-/* Parts of the zhou2017 output-point loop (ZHOU_NODE) that run only for
- * some surfaces: the X series beyond c_0 (A > 0), the Y series (B > 0) and
- * the superposition (force axes y, z). */
-static const char *const zhou_node_always = "alu=9 fload=5 fstore=1 fadd=7 fmul=2 fother=2 branch=8";
-static const char *const zhou_node_x = "";
-static const char *const zhou_node_y = "";
-static const char *const zhou_node_sum = "";
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
 {
@@ -251,17 +251,14 @@ static void sub_block(tf_insn_mix *total, tf_core core, block_id b, uint64_t tim
 static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
 {
     if (p <= 1) {
-        add_block(t, core, p == 0 ? BASIS_P0 : BASIS_P1, 1);
-        return;
+        add_block(t, core, BASIS_PATH_LOW, 1);
+    } else {
+        add_block(t, core, BASIS_PATH, 1);
+        add_block(t, core, BASIS_T_STEP, p - 1);
+        sub_block(t, core, BASIS_T_ENTRY, 1);
     }
-    const uint64_t pairs = (uint64_t)(p + 1) * (p + 2) / 2;
-    add_block(t, core, BASIS_PATH, 1);
-    add_block(t, core, BASIS_VAR, 3);
-    add_block(t, core, BASIS_VAR_STEP, 3ull * (p - 1));
-    add_block(t, core, BASIS_PAIR_E, p + 1);
-    add_block(t, core, BASIS_PAIR, pairs);
     add_block(t, core, BASIS_DEGREE, p + 1);
-    add_block(t, core, BASIS_A, pairs);
+    add_block(t, core, BASIS_E, (uint64_t)(p + 1) * (p + 2) / 2);
     add_block(t, core, BASIS_TERM, tf_terms(p));
 }
 
@@ -301,36 +298,51 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
-static uint64_t steps(uint32_t n) /* Clenshaw steps of a series of order n */
+/* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
+ * body holds the set-up of its step loop; n >= 1 runs n steps, entering the
+ * loop past its first instruction (a register move); n = 0 branches past
+ * the set-up and the loop to an out-of-line stub and back. */
+static void clenshaw_mix(tf_insn_mix *t, tf_core core, uint32_t n, uint64_t times, block_id step,
+                         block_id setup, block_id stub)
 {
-    return n > 0 ? n - 1 : 0;
+    if (n == 0) {
+        sub_block(t, core, setup, times);
+        add_block(t, core, stub, times);
+        return;
+    }
+    add_block(t, core, step, times * n);
+    sub_block(t, core, STEP_ENTRY, times);
 }
 
 static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     const uint32_t *d = m->dims;
+    const uint64_t n = m->n_out;
     add_block(t, core, EVAL_ZHOU, 1);
-    add_block(t, core, MASK_WORD, 3ull * m->n_out);
+    add_block(t, core, MASK_WORD, 3 * n);
     add_block(t, core, ZHOU_PATH, 1);
     for (int a = 0; a < 3; ++a) {
         add_block(t, core, ZHOU_AXIS, 1);
-        add_block(t, core, ZHOU_AXIS_STEP, steps(d[a]));
-        sub_block(t, core, d[a] == 0 ? ZHOU_LAMBDA0_SKIP : ZHOU_LAMBDA_SKIP, 1);
+        clenshaw_mix(t, core, d[a], 1, ZHOU_AXIS_STEP, ZHOU_AXIS_SETUP, ZHOU_AXIS_STUB);
         add_block(t, core, ZHOU_SURF_AXIS, 1);
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = d[3 + 3 * pair], by = d[4 + 3 * pair], k = d[5 + 3 * pair];
-        uint64_t n = m->n_out, rows = ax + by + 1;
+        uint64_t rows = (uint64_t)ax + by + 1;
         add_block(t, core, ZHOU_PAIR, 1);
         add_block(t, core, ZHOU_ROW, rows);
-        sub_block(t, core, k == 0 ? ZHOU_ROW_K0_SKIP : ZHOU_ROW_K_SKIP, rows);
-        add_block(t, core, ZHOU_ROW_STEP, rows * steps(k));
-        add_mix(t, zhou_node_always, n);
-        add_mix(t, zhou_node_x, ax > 0 ? n : 0);
-        add_block(t, core, ZHOU_X_STEP, n * steps(ax));
-        add_mix(t, zhou_node_y, by > 0 ? n : 0);
-        add_block(t, core, ZHOU_Y_STEP, n * steps(by));
-        add_mix(t, zhou_node_sum, pair >= 3 ? n : 0);
+        clenshaw_mix(t, core, k, rows, ZHOU_ROW_STEP, ZHOU_ROW_SETUP, ZHOU_ROW_STUB);
+        add_block(t, core, ZHOU_NODE, n);
+        clenshaw_mix(t, core, ax, n, ZHOU_X_STEP, ZHOU_X_SETUP, ZHOU_X_STUB);
+        if (by == 0) {
+            sub_block(t, core, ZHOU_Y_PART, n);
+        } else {
+            add_block(t, core, ZHOU_Y_STEP, n * by);
+            sub_block(t, core, STEP_ENTRY, n);
+        }
+        if (pair < 3) {
+            sub_block(t, core, ZHOU_SUM, n);
+        }
     }
 }
 

@@ -341,17 +341,17 @@ static void basis_ops(uint32_t p, tf_opcount *ops)
     }
 }
 
-/* Clenshaw (§5.4): sum_{k=1..n} c_k T_k, n >= 1, takes n mul and 2n add
- * (h, then n - 1 steps of a product, a difference and a sum, then x b_1 - b_2);
- * the full series one add more (+ c_0), and none for n = 0. */
+/* Clenshaw (§5.4): the tail sum_{k=1..n} c_k T_k takes n + 1 mul and
+ * 2n + 2 add (h, n steps of a product, a difference and a sum, then
+ * (x b_1) - b_2), n = 0 included; the full series one add more (+ c_0). */
 static uint64_t tail_add(uint32_t n)
 {
-    return 2 * (uint64_t)n;
+    return 2 * (uint64_t)n + 2;
 }
 
 static uint64_t series_add(uint32_t n)
 {
-    return n == 0 ? 0 : tail_add(n) + 1;
+    return tail_add(n) + 1;
 }
 
 tf_opcount tf_model_ops(const tf_model *m)
@@ -370,13 +370,14 @@ tf_opcount tf_model_ops(const tf_model *m)
         ops.add += r * (t - 1) + rows * (r - 1);
     } else {
         for (int a = 0; a < 3; ++a) {
-            ops.mul += m->dims[a] + 1; /* the series, then t_a = d_a s_a */
+            ops.mul += m->dims[a] + 2; /* the series, then t_a = d_a s_a */
             ops.add += series_add(m->dims[a]);
         }
         for (int pair = 0; pair < 9; ++pair) {
             const uint32_t *o = m->dims + 3 + 3 * pair;
             const uint64_t rows_p = zhou_rows(m->dims, pair);
-            ops.mul += rows_p * o[2] + m->n_out * ((uint64_t)o[0] + o[1]);
+            ops.mul += rows_p * (o[2] + 1ull) +
+                       m->n_out * ((o[0] + 1ull) + (o[1] > 0 ? o[1] + 1ull : 0));
             ops.add += rows_p * series_add(o[2]) +
                        m->n_out * (series_add(o[0]) + (o[1] > 0 ? tail_add(o[1]) + 1 : 0) +
                                    (pair >= 3 ? 1 : 0));

@@ -170,14 +170,14 @@ static void chebyshev_basis(arith *c, uint32_t p, const float g[3], float *phi)
     }
 }
 
-/* sum_{k=1..n} coef_k T_k(x), n >= 1, by Clenshaw (§5.4): h = x + x,
- * b_{n+1} = +0, b_n = coef_n, b_k = ((h b_{k+1}) - b_{k+2}) + coef_k for
- * k = n-1 .. 1, result (x b_1) - b_2. */
+/* sum_{k=1..n} coef_k T_k(x), n >= 0, by Clenshaw (§5.4): h = x + x,
+ * b_{n+1} = b_{n+2} = +0, b_k = ((h b_{k+1}) - b_{k+2}) + coef_k for
+ * k = n .. 1, result (x b_1) - b_2. */
 static float clenshaw_tail(arith *c, const float *coef, uint32_t n, float x)
 {
     float h = f_add(c, x, x);
-    float b1 = coef[n], b2 = 0.0f;
-    for (uint32_t k = n - 1; k >= 1; --k) {
+    float b1 = 0.0f, b2 = 0.0f;
+    for (uint32_t k = n; k >= 1; --k) {
         float b = f_add(c, f_sub(c, f_mul(c, h, b1), b2), coef[k]);
         b2 = b1;
         b1 = b;
@@ -185,10 +185,10 @@ static float clenshaw_tail(arith *c, const float *coef, uint32_t n, float x)
     return f_sub(c, f_mul(c, x, b1), b2);
 }
 
-/* sum_{k=0..n} coef_k T_k(x) (§5.4). */
+/* sum_{k=0..n} coef_k T_k(x) (§5.4): tail + coef_0, n = 0 included. */
 static float clenshaw(arith *c, const float *coef, uint32_t n, float x)
 {
-    return n == 0 ? coef[0] : f_add(c, clenshaw_tail(c, coef, n, x), coef[0]);
+    return f_add(c, clenshaw_tail(c, coef, n, x), coef[0]);
 }
 
 static void eval_polynomial_rows(arith *c, const float *rows, uint32_t n_rows, uint32_t n_terms,

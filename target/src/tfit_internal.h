@@ -69,20 +69,20 @@ static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
     return a ^ ((a ^ b) & tfit_mask(a < b));
 }
 
-/* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x),
- * n >= 1, by Clenshaw's recurrence (docs/header-format.md §5.4):
- *   h = x + x; b_{n+1} = +0; b_n = c_n;
- *   b_k = ((h b_{k+1}) - b_{k+2}) + c_k, k = n-1 .. 1;
+/* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x), by
+ * Clenshaw's recurrence (docs/header-format.md §5.4):
+ *   h = x + x; b_{n+1} = b_{n+2} = +0;
+ *   b_k = ((h b_{k+1}) - b_{k+2}) + c_k, k = n .. 1;
  *   result (x b_1) - b_2.
- * One instruction path for every n >= 1 (only the loop count varies), and
- * no branch on x.  Subtracting b_{n+1} = +0 is exact (v - (+0) = v for
- * every v, -0 included), so n = 1 gives x c_1 bit for bit. */
+ * n steps, and the same instruction path for every n, 0 included (then the
+ * result is x * 0 - 0, a zero): the zhou2017 orders may be 0, and a branch
+ * on them would give the cycle model one more path to describe. */
 static inline float tfit_cheb_tail(const float *c, uint32_t n, float x)
 {
     const float h = x + x;
-    float b1 = c[n];
+    float b1 = 0.0f;
     float b2 = 0.0f;
-    for (uint32_t k = n - 1u; k > 0u; --k) {
+    for (uint32_t k = n; k > 0u; --k) {
         const float b = (h * b1 - b2) + c[k];
         b2 = b1;
         b1 = b;
@@ -90,13 +90,10 @@ static inline float tfit_cheb_tail(const float *c, uint32_t n, float x)
     return x * b1 - b2;
 }
 
-/* Chebyshev series sum_{k=0..n} c_k T_k(x): c_0 for n = 0, else
- * tail + c_0.  For n = 1 this is (x c_1) + c_0, the API-2 Horner bits. */
+/* Chebyshev series sum_{k=0..n} c_k T_k(x): tail + c_0 (c_0 exactly, up to
+ * the sign of a zero c_0, when n = 0). */
 static inline float tfit_cheb(const float *c, uint32_t n, float x)
 {
-    if (n == 0u) {
-        return c[0];
-    }
     return tfit_cheb_tail(c, n, x) + c[0];
 }
 
@@ -148,8 +145,6 @@ uint32_t tfit_input_map(const float *map, const float x[3], float g[3], uint32_t
 
 /* Chebyshev basis of total degree p in g, graded order (tfit_basis.c). */
 void tfit_basis(uint32_t p, const float g[3], float *phi);
-/* Its p >= 2 part (tfit_basis.c). */
-void tfit_basis_chebyshev(uint32_t p, const float g[3], float *phi);
 
 /* Family evaluators: g on the unit ball -> out[3 n_out] (tfit_nodal.c,
  * tfit_modal.c, tfit_zhou2017.c).  Nodal and modal store every output and-ed
