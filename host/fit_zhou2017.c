@@ -3,6 +3,7 @@
  */
 #include "fit_zhou2017.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -158,22 +159,35 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
  * relative for n = 8).  A maximum over the training cases (API version 2)
  * would not do: the fitted law extrapolates past the largest training
  * displacement wherever the cases do not reach |g_a| = 1. */
-static int contact_scale(const tf_fitdata *d, int a, uint32_t lambda, double *scale, char *err,
-                         size_t errlen)
+float tf_zhou_scale(const float *r, uint32_t lambda)
 {
-    double r[TFIT_MAX_DEGREE + 1], sum = 0;
-    if (contact_law(d, a, NULL, d->n_cases, lambda, r, err, errlen) != 0) {
-        return -1;
-    }
+    double sum = 0;
     for (uint32_t k = 0; k <= lambda; ++k) {
-        sum += fabs((double)(float)r[k]);
+        sum += fabs((double)r[k]);
     }
-    const double want = sum > 0 ? (1 - 0x1p-16) / sum : 1.0;
+    double want = sum > 0 ? (1 - 0x1p-16) / sum : 1.0;
+    if (want > FLT_MAX) { /* a law of subnormal size: any smaller scale is safe */
+        want = FLT_MAX;
+    }
     float s = (float)want;
     if ((double)s > want) {
         s = nextafterf(s, 0.0f);
     }
-    *scale = (double)s; /* as stored in the model */
+    return s;
+}
+
+static int contact_scale(const tf_fitdata *d, int a, uint32_t lambda, double *scale, char *err,
+                         size_t errlen)
+{
+    double r[TFIT_MAX_DEGREE + 1];
+    if (contact_law(d, a, NULL, d->n_cases, lambda, r, err, errlen) != 0) {
+        return -1;
+    }
+    float rf[TFIT_MAX_DEGREE + 1];
+    for (uint32_t k = 0; k <= lambda; ++k) {
+        rf[k] = (float)r[k]; /* as stored in the model */
+    }
+    *scale = (double)tf_zhou_scale(rf, lambda);
     return 0;
 }
 

@@ -27,6 +27,11 @@ typedef struct tf_zhou_orders {
     uint32_t a[9], b[9], k[9];       /* per (force axis, component), row-major */
 } tf_zhou_orders;
 
+/* s_a for the stored contact law r[0..lambda] of one axis: (1 - 2^-16) /
+ * sum |r_k|, rounded towards zero, so that t_a = d_a s_a lies in [-1, 1]
+ * for every input (docs/header-format.md §5.4). */
+float tf_zhou_scale(const float *r, uint32_t lambda);
+
 /* Cross-validation curves behind the chosen orders (for the report). */
 typedef struct tf_zhou_cv {
     double lambda_rms[3][TFIT_MAX_DEGREE + 1];                         /* mm */

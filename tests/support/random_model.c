@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "fit_zhou2017.h"
+
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {
     return lo + tf_rng_below(r, hi - lo + 1);
@@ -101,7 +103,21 @@ static void fill_tables(tf_rng *r, tf_model *m)
     }
 }
 
-/* Halve every non-coordinate table entry until the model validates. */
+/* zhou2017: the scales s_a by the fitter's rule (tf_zhou_scale), so t_a
+ * stays in [-1, 1] as in every fitted model; a random s_a would put the
+ * Chebyshev series in t outside the interval they are made for. */
+static void zhou_scales(tf_model *m)
+{
+    float *c = tf_model_tables(m);
+    for (int a = 0; a < 3; ++a) {
+        const uint32_t lambda = m->dims[a];
+        c[lambda + 1] = tf_zhou_scale(c, lambda);
+        c += lambda + 2;
+    }
+}
+
+/* Halve every non-coordinate table entry until the model validates (the
+ * zhou2017 scales are kept by the rule: halving a law doubles its scale). */
 static int make_emittable(tf_model *m)
 {
     char err[256];
@@ -114,6 +130,9 @@ static int make_emittable(tf_model *m)
         }
         for (uint32_t i = 0; i < n - n_xy; ++i) {
             c[i] = ldexpf(c[i], -2);
+        }
+        if (m->family == TFIT_FAMILY_ZHOU2017) {
+            zhou_scales(m);
         }
     }
     return -1;
@@ -136,6 +155,9 @@ tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int s
     }
     random_map(r, m);
     fill_tables(r, m);
+    if (f == TFIT_FAMILY_ZHOU2017) {
+        zhou_scales(m);
+    }
     if (make_emittable(m) != 0) {
         fprintf(stderr, "random model %s: cannot scale into range\n", name);
         tf_model_free(m);
