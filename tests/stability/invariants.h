@@ -34,28 +34,40 @@
 
 /* Clamped against boundary, float: |y - y_b|_inf <= STAB_FLOAT_TOL_ULPS
  * ulps (FLT_EPSILON) of the output magnitude (the larger of |y_b|_inf and
- * the largest |output| at 26 boundary points), or, for an ill-conditioned
- * model, STAB_FLOAT_TOL_SENSITIVITY times the largest change that one ulp
- * of one component of the boundary input causes there. */
+ * the largest |output| at 26 boundary points) plus, for a model steep at
+ * its boundary, the projection allowance: the bound on how far apart the
+ * two inputs' projected points g can lie (the rounding of W (x - x0), of
+ * the boundary input itself and of g / |g|, invariants_float.c) times the
+ * model's slope in g there, measured by one-sided differences in g with
+ * step STAB_FLOAT_G_STEP, and times STAB_FLOAT_SLOPE_SAFETY for the
+ * curvature over that step.  Both are first-order error bounds; nothing in
+ * them is fitted to the observed deviations. */
 #define STAB_FLOAT_TOL_ULPS 64.0
-#define STAB_FLOAT_TOL_SENSITIVITY 8.0
+#define STAB_FLOAT_G_STEP 0x1p-12
+#define STAB_FLOAT_SLOPE_SAFETY 2.0
 
 typedef struct stab_stats {
     uint64_t n;        /* inputs checked */
     uint64_t ok, clamped, bad_input;
     uint64_t failures; /* invariant violations */
-    uint64_t sensitive; /* float clamps within the sensitivity allowance only */
+    uint64_t sensitive; /* float clamps beyond STAB_FLOAT_TOL_ULPS, within the projection allowance */
     double worst;      /* largest deviation: ulps (float) or LSB (Q31) */
+    double worst_ratio; /* float, beyond STAB_FLOAT_TOL_ULPS: largest deviation / (that + allowance) */
     uint32_t worst_in[3]; /* its input (float bits or int32 words) */
 } stab_stats;
 
-/* A float32 model under test; y, y_b, y_n are work arrays of 3 n_out. */
+/* A float32 model under test; y, y_b, y_n, y_g are work arrays of 3 n_out.
+ * in_g is m with the identity input map (x0 = 0, W = I): evaluated at g,
+ * it gives the model's result at the projected point g, which is how the
+ * slope in g is measured. */
 typedef struct stab_float {
     const tfit_model *m;
     const char *label;
     double x0[3], w[9]; /* the input map, from coef[0..11] */
     double scale;       /* output magnitude on the envelope (see above) */
-    float *y, *y_b, *y_n;
+    float *y, *y_b, *y_n, *y_g;
+    tfit_model in_g;
+    float *coef_g;      /* in_g's coefficients */
     stab_stats st;
 } stab_float;
 

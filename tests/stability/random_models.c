@@ -9,9 +9,9 @@
  *   random_models MODELS SEED N
  *
  * Prints one line per family: models, inputs, the worst clamp deviations
- * (float: ulps, against STAB_FLOAT_TOL_ULPS; Q31: as a fraction of each
- * model's tolerance) and how many float clamps needed the allowance for
- * ill-conditioned models (invariants.h).  Exits 1 on any violated
+ * (float: ulps, and as a fraction of each input's tolerance; Q31: as a
+ * fraction of each model's tolerance) and how many float clamps needed the
+ * projection allowance for models steep at their boundary (invariants.h).  Exits 1 on any violated
  * invariant; the failing model is named by its index (same SEED
  * reproduces it).
  */
@@ -31,7 +31,8 @@ typedef struct tally {
     uint64_t inputs, violations;
     double float_worst;            /* ulps */
     double q31_ratio;              /* worst deviation / tolerance */
-    uint64_t sensitive;            /* float clamps within the sensitivity allowance */
+    uint64_t sensitive;            /* float clamps within the projection allowance */
+    double float_ratio;            /* of those, the worst deviation / its tolerance */
 } tally;
 
 static uint64_t float_form(const tf_model *m, const char *label, uint64_t n, uint64_t seed,
@@ -48,6 +49,7 @@ static uint64_t float_form(const tf_model *m, const char *label, uint64_t n, uin
     t->inputs += c.st.n;
     t->float_worst = c.st.worst > t->float_worst ? c.st.worst : t->float_worst;
     t->sensitive += c.st.sensitive;
+    t->float_ratio = c.st.worst_ratio > t->float_ratio ? c.st.worst_ratio : t->float_ratio;
     stab_float_free(&c);
     return bad;
 }
@@ -109,11 +111,11 @@ int main(int argc, char **argv)
     }
     for (int f = 0; f < N_FAMILIES; ++f) {
         printf("random %-8s %3u models (%3u with Q31) %8llu inputs: worst clamp %.3g ulps "
-               "(float; %llu beyond %g within the sensitivity allowance), %.2f of the "
-               "tolerance (Q31); %llu violations\n",
+               "(float; %llu beyond %g, within the projection allowance, worst %.2f of it), "
+               "%.2f of the tolerance (Q31); %llu violations\n",
                names[f], t[f].models, t[f].q31_models, (unsigned long long)t[f].inputs,
                t[f].float_worst, (unsigned long long)t[f].sensitive, STAB_FLOAT_TOL_ULPS,
-               t[f].q31_ratio, (unsigned long long)t[f].violations);
+               t[f].float_ratio, t[f].q31_ratio, (unsigned long long)t[f].violations);
     }
     return bad == 0 ? 0 : 1;
 }

@@ -22,7 +22,8 @@ void stab_print(int q31, const char *label, const stab_stats *st, double tol, do
         }
     }
     if (st->sensitive > 0) {
-        printf("; %llu within the sensitivity allowance", (unsigned long long)st->sensitive);
+        printf("; %llu within the projection allowance (worst %.2f of its tolerance)",
+               (unsigned long long)st->sensitive, st->worst_ratio);
     }
     printf("; %.2f s%s\n", seconds, st->failures ? "  FAILED" : "");
 }
