@@ -212,6 +212,64 @@ static void added_error_is_small(void **state)
     }
 }
 
+/* Degree-d term T_d(g0) T_0 T_0 of tfit_q31_basis's graded order: the
+ * first of degree d, index C(d + 2, 3). */
+static uint32_t first_of_degree(uint32_t d)
+{
+    return d * (d + 1u) * (d + 2u) / 6u;
+}
+
+/* q30 Chebyshev recurrence (q31-format.md §4): for |g| up to 2^30 + 2^4
+ * (the projection's worst), |T_k| <= 2^30 + 2^11 and |T_k - 2^30
+ * T_k(g / 2^30)| < 14 units, k <= 8 — the bound the rows' overflow proof
+ * uses — and |phi| <= 2^30 + 2^13 for any three such components.  Every g
+ * within 2^16 of +-1 (where T_k is steepest), then a stride through the
+ * rest. */
+static void chebyshev_q30_within_its_bound(void **state)
+{
+    (void)state;
+    const int32_t edge = TFIT_Q31_ONE + 16;
+    const uint32_t p = TFIT_Q31_MAX_DEGREE;
+    int32_t phi[165];
+    double worst_err = 0;
+    int64_t worst_t = 0;
+    for (int64_t i = -(int64_t)edge; i <= edge; i += (llabs(i) >= TFIT_Q31_ONE - 65536 ? 1 : 997)) {
+        const int32_t g[3] = {(int32_t)i, 0, 0};
+        tfit_q31_basis(p, g, phi);
+        const long double x = (long double)i / TFIT_Q31_ONE;
+        long double tm = 1, t = x; /* T_{k-1}, T_k in long double */
+        for (uint32_t k = 1; k <= p; ++k) {
+            if (k > 1) {
+                const long double tn = 2 * x * t - tm;
+                tm = t, t = tn;
+            }
+            const int64_t q = phi[first_of_degree(k)];
+            worst_t = llabs(q) > worst_t ? llabs(q) : worst_t;
+            const double err = (double)fabsl((long double)q - t * TFIT_Q31_ONE);
+            worst_err = err > worst_err ? err : worst_err;
+        }
+    }
+    tf_rng r = {30};
+    int64_t worst_phi = 0;
+    for (int i = 0; i < 20000; ++i) {
+        int32_t g[3];
+        for (int j = 0; j < 3; ++j) {
+            g[j] = (int32_t)(edge - (int64_t)tf_rng_below(&r, i % 2 ? 2u * (uint32_t)edge + 1u : 64u));
+            g[j] = tf_rng_below(&r, 2) ? g[j] : -g[j];
+        }
+        tfit_q31_basis(p, g, phi);
+        for (uint32_t k = 0; k < 165; ++k) {
+            worst_phi = llabs(phi[k]) > worst_phi ? llabs(phi[k]) : worst_phi;
+        }
+    }
+    printf("q31 Chebyshev, |g| <= 2^30 + 16: max |T_k| = 2^30 + %lld, max error %.2f units; "
+           "max |phi| = 2^30 + %lld\n",
+           (long long)(worst_t - TFIT_Q31_ONE), worst_err, (long long)(worst_phi - TFIT_Q31_ONE));
+    assert_true(worst_t <= TFIT_Q31_ONE + (1 << 11));
+    assert_true(worst_err < 14);
+    assert_true(worst_phi <= TFIT_Q31_ONE + (1 << 13));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -219,6 +277,7 @@ int main(void)
         cmocka_unit_test(target_matches_reference),
         cmocka_unit_test(check_rejects_damage),
         cmocka_unit_test(added_error_is_small),
+        cmocka_unit_test(chebyshev_q30_within_its_bound),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
