@@ -85,8 +85,9 @@ typedef struct stab_q31 {
 
 /* Sets up c for m (allocates the work arrays); 0, or -1 out of memory.
  * Measures the float scale on the envelope boundary; derives the Q31
- * tolerance 2 + p B (2^(H - 29) + 2^-28) LSB, B the largest row bound, p
- * the degree (p B bounds an output's change per unit change of g). */
+ * tolerance 2 + p^2 B (2^(H - 29) + 2^-28) LSB, B the largest row bound,
+ * p the degree (p^2 B bounds a Chebyshev row's change per unit change of
+ * g, by Markov's inequality). */
 int stab_float_init(stab_float *c, const tfit_model *m, const char *label);
 int stab_q31_init(stab_q31 *c, const tfit_model_q31 *m, const char *label);
 void stab_float_free(stab_float *c);

@@ -81,9 +81,12 @@ static void row_bounds(stab_q31 *c)
      * 2^(H-29) + 2^-28 apart on the unit sphere: each near-boundary gh
      * rounds by sqrt(3)/2 units of Q(30-H), the boundary word itself by
      * less than a fifth of one, and the projection and the basis round
-     * by a few units of Q30.  A polynomial of degree p whose row bound is
-     * B moves by at most p B per unit of g; each output rounds once. */
-    c->tol = 2 + c->m->degree * largest * (ldexp(1, c->h - 29) + 0x1p-28);
+     * by a few units of Q30.  A Chebyshev row of degree p whose bound is
+     * B moves by at most p^2 B per unit of g (Markov: |T_k'| <= k^2 on
+     * [-1, 1], and a term T_a T_b T_c moves by a^2 + b^2 + c^2 <= p^2
+     * times the largest component's move); each output rounds once. */
+    const double p = c->m->degree;
+    c->tol = 2 + p * p * largest * (ldexp(1, c->h - 29) + 0x1p-28);
 }
 
 int stab_q31_init(stab_q31 *c, const tfit_model_q31 *m, const char *label)
