@@ -23,33 +23,41 @@ static int finite_bits(float x)
     return (bits(x) & 0x7f800000u) != 0x7f800000u;
 }
 
+static tfit_status eval_entry(const tfit_model *m, const float x[3], float *y)
+{
+    if (m->family == TFIT_FAMILY_CONTACT) {
+        return tfit_contact_force(m, x, y);
+    }
+    return tfit_displacements(m, x, y);
+}
+
 tfit_status stab_float_eval(const stab_float *c, const float x[3], float *y)
 {
-    if (c->m->family == TFIT_FAMILY_CONTACT) {
-        return tfit_contact_force(c->m, x, y);
-    }
-    return tfit_displacements(c->m, x, y);
+    return eval_entry(c->m, x, y);
 }
 
 /* The model's result at the projected point g itself (c->in_g). */
 static void stab_float_eval_g(const stab_float *c, const float g[3], float *y)
 {
-    if (c->m->family == TFIT_FAMILY_CONTACT) {
-        tfit_contact_force(&c->in_g, g, y);
-    } else {
-        tfit_displacements(&c->in_g, g, y);
+    eval_entry(&c->in_g, g, y);
+}
+
+/* g = W v in double; returns |W v|. */
+static double apply_w(const stab_float *c, const double v[3], double g[3])
+{
+    double s = 0;
+    for (int i = 0; i < 3; ++i) {
+        g[i] = c->w[3 * i] * v[0] + c->w[3 * i + 1] * v[1] + c->w[3 * i + 2] * v[2];
+        s += g[i] * g[i];
     }
+    return sqrt(s);
 }
 
 /* |W v|: the input offset v / |W v| reaches the boundary. */
 static double reach(const stab_float *c, const double v[3])
 {
-    double s = 0;
-    for (int i = 0; i < 3; ++i) {
-        double gi = c->w[3 * i] * v[0] + c->w[3 * i + 1] * v[1] + c->w[3 * i + 2] * v[2];
-        s += gi * gi;
-    }
-    return sqrt(s);
+    double g[3];
+    return apply_w(c, v, g);
 }
 
 /* max(a, b) that keeps a NaN from either side (fmax would drop it). */
@@ -167,9 +175,12 @@ static double slope_in_g(stab_float *c, const double u[3])
  *             over 5e7 random points outside the ball. */
 #define NORMALISE_U 6.0
 
-/* The clamped path's bound, component by component, as a 2-norm (sigma =
- * 1 for the boundary input, which the target never scales). */
-static double map_error(const stab_float *c, const double x[3], double sigma)
+/* One path's bound before normalising, component by component, as a
+ * 2-norm: `roundings` units on sum_j |W_ij| (|x_j sigma| + |x0_j|) (3 for
+ * the clamped input; 4 for the boundary input, whose own rounding to float
+ * is one more), and the scaling's direction change (sigma = 1 for the
+ * boundary input, which the target never scales). */
+static double map_error(const stab_float *c, const double x[3], double sigma, double roundings)
 {
     double e2 = 0;
     for (int i = 0; i < 3; ++i) {
@@ -178,7 +189,7 @@ static double map_error(const stab_float *c, const double x[3], double sigma)
             a += fabs(c->w[3 * i + j]) * (fabs(x[j] * sigma) + fabs(c->x0[j]) + 0x1p-150);
             b += c->w[3 * i + j] * c->x0[j];
         }
-        const double e = 3 * U * a + fabs(sigma - 1) * fabs(b);
+        const double e = roundings * U * a + fabs(sigma - 1) * fabs(b);
         e2 += e * e;
     }
     return sqrt(e2);
@@ -196,22 +207,14 @@ static double input_scale(const float x[3])
 static double projection_gap(const stab_float *c, const float x[3], const float xb[3])
 {
     const double sigma = input_scale(x);
-    double xs[3], xbd[3], g2 = 0, xb_round2 = 0;
+    double xs[3], xbd[3], d[3];
     for (int j = 0; j < 3; ++j) {
         xs[j] = (double)x[j];
         xbd[j] = (double)xb[j];
+        d[j] = xs[j] * sigma - c->x0[j];
     }
-    for (int i = 0; i < 3; ++i) {
-        double g = 0, r = 0;
-        for (int j = 0; j < 3; ++j) {
-            g += c->w[3 * i + j] * (xs[j] * sigma - c->x0[j]);
-            r += fabs(c->w[3 * i + j]) * U * fabs(xbd[j]);
-        }
-        g2 += g * g;
-        xb_round2 += r * r;
-    }
-    const double clamped = map_error(c, xs, sigma) / sqrt(g2);
-    const double boundary = sqrt(xb_round2) + map_error(c, xbd, 1.0);
+    const double clamped = map_error(c, xs, sigma, 3) / reach(c, d);
+    const double boundary = map_error(c, xbd, 1.0, 4);
     return clamped + boundary + 2 * NORMALISE_U * U;
 }
 
@@ -219,16 +222,12 @@ static double projection_gap(const stab_float *c, const float x[3], const float 
  * this input: the gap in g times the slope in g (invariants.h). */
 static double projection_allowance(stab_float *c, const float x[3], const float xb[3])
 {
-    double u[3], n2 = 0;
+    const double d[3] = {(double)x[0] - c->x0[0], (double)x[1] - c->x0[1],
+                         (double)x[2] - c->x0[2]};
+    double u[3];
+    const double n = apply_w(c, d, u);
     for (int i = 0; i < 3; ++i) {
-        u[i] = 0;
-        for (int j = 0; j < 3; ++j) {
-            u[i] += c->w[3 * i + j] * ((double)x[j] - c->x0[j]);
-        }
-        n2 += u[i] * u[i];
-    }
-    for (int i = 0; i < 3; ++i) {
-        u[i] /= sqrt(n2);
+        u[i] /= n;
     }
     return STAB_FLOAT_SLOPE_SAFETY * slope_in_g(c, u) * projection_gap(c, x, xb);
 }
