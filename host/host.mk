@@ -1,9 +1,10 @@
-# host.mk — the tissuefit tool.  Every host/*.c except main.c goes into a
-# static library that the tool and the host tests link; adding a file needs
-# no change here.
+# host.mk — the tissuefit tool.  Every host/**/*.c except cli/main.c goes
+# into a static library that the tool and the host tests link; adding a file
+# (or a folder) needs no change here.  Includes are written from host/
+# ("solvers/solver.h"), so each one names the layer it reaches into.
 
-HOST_SRC := $(filter-out host/main.c,$(wildcard host/*.c))
-HOST_HDR := $(wildcard host/*.h) target/include/tfit.h host/host.mk
+HOST_SRC := $(filter-out host/cli/main.c,$(shell find host -name '*.c' | LC_ALL=C sort))
+HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/tfit_q31.h host/host.mk
 # -fno-tree-slp-vectorize: GCC 12.2's SLP vectorizer at -O2 drops the
 # rounding in `f[i][k] = (double)(float)f[i][k]` for k = 0, 1 of rows of
 # three (only k = 2 is rounded; -O1, clang and this flag are right).  The
@@ -28,7 +29,7 @@ $(eval $(call host_lib,native,-O2 -g))
 $(eval $(call host_lib,asan,-O1 -g $(SANITIZE)))
 
 # The tool links the native target library to time it (tissuefit sweep).
-$(B)/bin/tissuefit: $(B)/native/host/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a
+$(B)/bin/tissuefit: $(B)/native/host/cli/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(CC) $^ $(HOST_LIBS) -o $@

@@ -124,7 +124,7 @@ check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
 	    awk '$$1 ~ /^\.text/ { t += $$2 } END { print t }') bytes"; done
 
 # --- cycle model: static loop mixes and traced instruction mixes -------------
-# check-cycles proves, on both cores, that host/cycles.c describes the
+# check-cycles proves, on both cores, that host/cost/cycles.c describes the
 # compiled evaluator: (1) the loop bodies of the evaluation functions in the
 # linked library have exactly the instruction mixes the model assumes
 # (objdump), and (2) for every golden set of every header, every input
@@ -136,7 +136,7 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
-    host/cycles.h $(B)/native/libtissuefit-host.a | deps-check
+    host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(FW_TOOL_SRC) $(call host_test_link,native) -o $@
@@ -186,9 +186,9 @@ check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
 	  $(T)/insn_mix $(FW_EVAL_FUNCS) <$(FW)/$$c/libtfit.dis | grep ' loop ' | sort >$(FW)/$$c/loops.txt; \
 	  $(T)/check_cycle_model loops $$c | sort >$(FW)/$$c/loops-model.txt; \
 	  if ! diff $(FW)/$$c/loops-model.txt $(FW)/$$c/loops.txt >$(FW)/$$c/loops.diff; then \
-	    echo "$$c: compiled loops differ from host/cycles.c (< model, > objdump):"; \
+	    echo "$$c: compiled loops differ from host/cost/cycles.c (< model, > objdump):"; \
 	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
-	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cycles.c"; done
+	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cost/cycles.c"; done
 	@set -e; for c in $(FW_CORES) $(FW_Q31_CORES); do for h in $(FW_HEADERS); do \
 	  n=$$(basename $$h .h); \
 	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt | sed "s|^|$$c |"; done; done

@@ -30,7 +30,7 @@ STAB_T := $(T)/stability
 STAB_CHECK_SRC := tests/stability/invariants_float.c tests/stability/invariants_q31.c \
                   tests/stability/inputs_extreme.c tests/stability/inputs_random.c \
                   tests/stability/report.c
-STAB_INV_HDR := tests/stability/invariants.h tests/stability/inputs.h host/rng.h
+STAB_INV_HDR := tests/stability/invariants.h tests/stability/inputs.h host/base/rng.h
 STAB_BASIS_SRC := tests/stability/basis_study.c tests/stability/basis_forms.c
 STAB_RANDOM_N := 1000000
 STAB_SANITIZE_N := 20000

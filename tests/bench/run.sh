@@ -5,7 +5,7 @@
 # the speed-up over the seed's 0.1509 s per evaluation (Zhou et al. 2017),
 # and the header's own firmware figures: Arm instructions per call (checked
 # against QEMU by make check-cycles) and the estimated microseconds on a
-# Cortex-M4F at 168 MHz and a Cortex-M7 at 480 MHz (host/cycles.c).
+# Cortex-M4F at 168 MHz and a Cortex-M7 at 480 MHz (host/cost/cycles.c).
 set -eu
 bin=$1 header=$2 calls=${3:-100000}
 tmp=$(mktemp -d)

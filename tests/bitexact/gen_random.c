@@ -12,10 +12,10 @@
 #include <string.h>
 
 #include "bundle.h"
-#include "emit_header.h"
-#include "golden.h"
+#include "emit/emit_header.h"
+#include "model/golden.h"
 #include "random_model.h"
-#include "ref_eval.h"
+#include "model/ref_eval.h"
 
 static void put(FILE *f, uint32_t w)
 {

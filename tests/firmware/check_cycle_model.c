@@ -1,5 +1,5 @@
 /*
- * check_cycle_model.c — compares the cycle model (host/cycles.c) with what
+ * check_cycle_model.c — compares the cycle model (host/cost/cycles.c) with what
  * the device executed: for every golden set of a header, the instruction
  * mix traced under QEMU (trace_mix output) must equal, class by class, the
  * mix the model predicts from the model's family, orders and n_out, and
@@ -26,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cycles.h"
+#include "cost/cycles.h"
 
 #define MAX_MODELS 64
 #define MAX_MACROS 4096

@@ -2,7 +2,7 @@
 # cost_of_revision.sh REVISION [HEADER] — Cortex-M4F cost of the evaluator
 # as it was at a git revision: builds that revision's target library (-O2,
 # as target.mk does), runs HEADER's golden vectors on mps2-an386 under a
-# QEMU trace, and prints the instructions and cycles (host/cycles.c cost
+# QEMU trace, and prints the instructions and cycles (host/cost/cycles.c cost
 # table) of each golden set.  Used for the before/after table of
 # docs/firmware.md; run from the top of the repository after `make
 # check-cycles` (it needs build/tests/trace_mix and check_cycle_model).

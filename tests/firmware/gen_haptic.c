@@ -26,8 +26,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "emit_header.h"
-#include "rng.h"
+#include "emit/emit_header.h"
+#include "base/rng.h"
 
 #define GRID 11
 #define SPACING 4.8        /* mm */

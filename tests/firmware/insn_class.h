@@ -1,6 +1,6 @@
 /*
  * insn_class.h — classifies Arm Thumb-2 instructions from objdump's text
- * into the cost classes of host/cycles.h; shared by insn_mix.c (static
+ * into the cost classes of host/cost/cycles.h; shared by insn_mix.c (static
  * mixes of loops) and trace_mix.c (mixes executed under QEMU).
  */
 #ifndef TF_INSN_CLASS_H
@@ -8,7 +8,7 @@
 
 #include <stddef.h>
 
-#include "cycles.h"
+#include "cost/cycles.h"
 
 /* Class of one instruction ("vmul.f32", "s15, s15, s14"); *words is the
  * number of registers of a multiple transfer, else 0. */

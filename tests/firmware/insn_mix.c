@@ -10,21 +10,21 @@
  * shared epilogue, not a loop.
  * For each region it prints the instructions that belong to it and to no
  * loop nested inside, by cost class of the Cortex-M technical reference
- * manuals (host/cycles.h, docs/firmware.md):
+ * manuals (host/cost/cycles.h, docs/firmware.md):
  *
  *   FUNCTION loop K depth D: class=count ...     (one per loop, by address)
  *   FUNCTION outside: class=count ...
  *
  * Multi-register transfers count one instruction plus one word per register
  * (ldm_words / fldm_words ...).  tests/firmware/check_cycle_model.sh
- * compares these lines with the mixes host/cycles.c assumes.
+ * compares these lines with the mixes host/cost/cycles.c assumes.
  * usage: insn_mix [FUNCTION...]   (default: every function)
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cycles.h"
+#include "cost/cycles.h"
 #include "insn_class.h"
 
 #define MAX_INSN 4096

@@ -8,7 +8,7 @@
  * QEMU_LOG comes from qemu-system-arm -d in_asm,exec,nochain -D QEMU_LOG
  * (in_asm lists the instructions of every translated block, exec logs every
  * execution of a block, nochain makes QEMU log each one).  Every instruction
- * of every executed block is classified as in insn_mix.c (host/cycles.h).
+ * of every executed block is classified as in insn_mix.c (host/cost/cycles.h).
  *
  * An evaluation starts when a block at the entry of tfit_displacements,
  * tfit_contact_force (or their _q31 forms) executes and ends when control is
@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cycles.h"
+#include "cost/cycles.h"
 #include "insn_class.h"
 
 /* Code lives in the first 4 MB (mps2 SSRAM1) or, copied to fast memory, in

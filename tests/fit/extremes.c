@@ -15,10 +15,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fit_common.h"
-#include "fit_pipeline.h"
-#include "loadcases.h"
-#include "ref_eval.h"
+#include "fitting/fit_common.h"
+#include "fitting/pipeline.h"
+#include "fitting/loadcases.h"
+#include "model/ref_eval.h"
 
 #define FRESH 200
 

@@ -16,9 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "loadcases.h"
-#include "scene.h"
-#include "solver.h"
+#include "fitting/loadcases.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
 
 #include HEADER
 

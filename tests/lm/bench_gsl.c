@@ -9,7 +9,7 @@
  * dominated by the few runs that take thousands of evaluations).
  *
  * Both get the same model functions and analytic Jacobians
- * (host/nist_models.c), the same starting points and the same BLAS
+ * (host/numerics/nist_models.c), the same starting points and the same BLAS
  * (OpenBLAS serves GSL's CBLAS calls).  GSL runs with the tolerances of its
  * manual's example (xtol = gtol = 1e-8, ftol = 0) and with tight ones
  * (xtol = gtol = ftol = 1e-15, like ours); the side-by-side columns use the
@@ -26,7 +26,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "nist_fit.h"
+#include "numerics/nist_fit.h"
 
 #define DIR "../shared/reference/nist-strd"
 #define MAX_RUNS 64

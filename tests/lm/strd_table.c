@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "nist_fit.h"
+#include "numerics/nist_fit.h"
 
 #define DIR "../shared/reference/nist-strd"
 

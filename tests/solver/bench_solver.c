@@ -14,10 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "log.h"
-#include "scene.h"
-#include "solver.h"
-#include "solver_report.h"
+#include "base/log.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
+#include "solvers/solver_report.h"
 
 #define MAX_REPS 15
 #define PHASES 7

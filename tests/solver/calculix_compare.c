@@ -27,9 +27,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "log.h"
-#include "scene.h"
-#include "solver.h"
+#include "base/log.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
 
 #define TOP 121
 #define MAX_LEVELS 6

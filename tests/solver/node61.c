@@ -12,9 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "log.h"
-#include "scene.h"
-#include "solver.h"
+#include "base/log.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
 
 int main(int argc, char **argv)
 {

@@ -13,7 +13,7 @@
  *
  *  1. P = the least-squares polynomial of order k through the profile at
  *     the 11 nodes x = 0, 4.8, ..., 48 (QR in double in the normalised
- *     basis, host/lsq.c).  P is defined by these double coefficients.
+ *     basis, host/numerics/lsq.c).  P is defined by these double coefficients.
  *  2. The same P in the other bases, converted exactly (basis_forms.c).
  *  3. Every coefficient set rounded to float and to double and evaluated in
  *     that precision at the 513 points X = j/256, x = 24 + 24 X.  Both
@@ -47,8 +47,8 @@
 #include <string.h>
 
 #include "basis_forms.h"
-#include "blas_pin.h"
-#include "lsq.h"
+#include "base/blas_pin.h"
+#include "numerics/lsq.h"
 
 #define MAX_ORDER STAB_MAX_ORDER
 #define GRID 11
@@ -98,7 +98,7 @@ typedef struct measure {
 } measure;
 
 /* 2-norm condition number of the GRID x (k+1) design matrix of x^j (raw)
- * or X^j (normalised), optionally with unit-norm columns (as host/lsq.c
+ * or X^j (normalised), optionally with unit-norm columns (as host/numerics/lsq.c
  * factors it). */
 static double condition(int k, stab_basis s, int scaled)
 {

@@ -22,7 +22,7 @@
 #include <stdint.h>
 
 #include "invariants.h"
-#include "rng.h"
+#include "base/rng.h"
 
 uint64_t stab_extremes_float(stab_float *c);
 uint64_t stab_extremes_q31(stab_q31 *c);

@@ -18,11 +18,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "blas_pin.h"
+#include "base/blas_pin.h"
 #include "inputs.h"
-#include "q31.h"
+#include "model/q31.h"
 #include "random_model.h"
-#include "target_view.h"
+#include "model/target_view.h"
 
 #define N_FAMILIES 4
 

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "fit_zhou2017.h"
+#include "fitting/families/zhou2017.h"
 
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {

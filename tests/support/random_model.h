@@ -7,8 +7,8 @@
 #ifndef TF_RANDOM_MODEL_H
 #define TF_RANDOM_MODEL_H
 
-#include "model.h"
-#include "rng.h"
+#include "model/model.h"
+#include "base/rng.h"
 
 /* family 0 picks one at random.  small != 0 keeps tables short (for
  * emitted headers).  Returns NULL only when out of memory. */

@@ -14,7 +14,7 @@
 #include <cmocka.h>
 
 #include "random_model.h"
-#include "target_view.h"
+#include "model/target_view.h"
 
 /* Flips each bit of words[0..n) in turn; returns how many flips passed the check. */
 static unsigned flip_all(tfit_model *t, uint32_t *words, uint32_t n, unsigned *tried)

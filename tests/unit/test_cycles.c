@@ -1,5 +1,5 @@
 /*
- * test_cycles.c — the cycle model (host/cycles.c) and its header macros.
+ * test_cycles.c — the cycle model (host/cost/cycles.c) and its header macros.
  *
  * The model's agreement with the compiled code is proved on the device by
  * make check-cycles (objdump loop mixes, QEMU traces).  These tests pin the
@@ -19,8 +19,8 @@
 
 #include <cmocka.h>
 
-#include "cycles.h"
-#include "emit_header.h"
+#include "cost/cycles.h"
+#include "emit/emit_header.h"
 
 static tf_model *shape(tfit_family f, uint32_t n_out, uint32_t p, uint32_t r)
 {

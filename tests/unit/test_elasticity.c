@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "elasticity.h"
+#include "materials/elasticity.h"
 
 /* B of one node (6 x 3, seed eq 4 ordering xx, yy, zz, yz, xz, xy). */
 static void bmatrix(const double g[3], double b[18])

@@ -16,7 +16,7 @@
 
 #include <cmocka.h>
 
-#include "emit_header.h"
+#include "emit/emit_header.h"
 #include "random_model.h"
 
 static char dir[256];

@@ -14,9 +14,9 @@
 
 #include <cmocka.h>
 
-#include "fit_family.h"
-#include "loadcases.h"
-#include "rng.h"
+#include "fitting/families/family.h"
+#include "fitting/loadcases.h"
+#include "base/rng.h"
 
 #define NC 120
 #define NOUT 12

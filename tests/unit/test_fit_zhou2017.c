@@ -15,9 +15,9 @@
 
 #include <cmocka.h>
 
-#include "fit_family.h"
-#include "fit_zhou2017.h"
-#include "loadcases.h"
+#include "fitting/families/family.h"
+#include "fitting/families/zhou2017.h"
+#include "fitting/loadcases.h"
 
 #define G 11
 #define NOUT (G * G)

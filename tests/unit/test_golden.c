@@ -13,9 +13,9 @@
 
 #include <cmocka.h>
 
-#include "golden.h"
+#include "model/golden.h"
 #include "random_model.h"
-#include "ref_eval.h"
+#include "model/ref_eval.h"
 
 static void covers_every_input_class(void **state)
 {

@@ -15,10 +15,10 @@
 #include <cmocka.h>
 
 #include "assert_close.h"
-#include "fit.h"
-#include "lm.h"
-#include "lsq.h"
-#include "rng.h"
+#include "numerics/lsfit.h"
+#include "numerics/lm.h"
+#include "numerics/lsq.h"
+#include "base/rng.h"
 
 /* A one-parameter problem with a trace of the points it was evaluated at. */
 typedef struct trace {

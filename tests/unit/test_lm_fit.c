@@ -15,7 +15,7 @@
 #include <cmocka.h>
 
 #include "assert_close.h"
-#include "fit.h"
+#include "numerics/lsfit.h"
 
 #define M 21
 

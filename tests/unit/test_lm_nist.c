@@ -21,7 +21,7 @@
 #include <cmocka.h>
 
 #include "assert_close.h"
-#include "nist_fit.h"
+#include "numerics/nist_fit.h"
 
 #define DIR "../shared/reference/nist-strd"
 

@@ -12,8 +12,8 @@
 
 #include <cmocka.h>
 
-#include "loadcases.h"
-#include "rng.h"
+#include "fitting/loadcases.h"
+#include "base/rng.h"
 
 #define NT 100
 #define NH 50

@@ -12,7 +12,7 @@
 #include <cmocka.h>
 
 #include "random_model.h"
-#include "target_view.h"
+#include "model/target_view.h"
 
 static void sizes_follow_the_layout(void **state)
 {

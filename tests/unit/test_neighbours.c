@@ -9,8 +9,8 @@
 
 #include <cmocka.h>
 
-#include "neighbours.h"
-#include "rng.h"
+#include "meshfree/neighbours.h"
+#include "base/rng.h"
 
 static void queries_match_brute_force(void **state)
 {

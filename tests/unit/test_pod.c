@@ -12,8 +12,8 @@
 
 #include <cmocka.h>
 
-#include "pod.h"
-#include "rng.h"
+#include "numerics/pod.h"
+#include "base/rng.h"
 
 #define M 60
 #define N 25

@@ -1,6 +1,6 @@
 /*
  * test_q31.c — the Q31 path: target code (target/src/tfit_q31_*.c) against
- * the host's independent integer reference (host/q31_ref.c) on random
+ * the host's independent integer reference (host/model/q31_ref.c) on random
  * models and inputs, the Armv6-M multiply decomposition against native
  * 64-bit products, the model check's rejections, and the error the
  * quantisation adds.
@@ -20,9 +20,9 @@
 #define TFIT_Q31_PORTABLE_MUL /* the Armv6-M helpers, on this machine */
 #include "../../target/src/tfit_q31_internal.h"
 
-#include "q31.h"
+#include "model/q31.h"
 #include "random_model.h"
-#include "target_view.h"
+#include "model/target_view.h"
 
 static int32_t random_word(tf_rng *r)
 {

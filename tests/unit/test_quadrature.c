@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "quadrature.h"
+#include "meshfree/quadrature.h"
 
 static void gauss_legendre_is_exact_to_degree_2n_minus_1(void **state)
 {

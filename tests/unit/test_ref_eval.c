@@ -16,9 +16,9 @@
 #include <cmocka.h>
 
 #include "random_model.h"
-#include "basis.h"
-#include "ref_eval.h"
-#include "target_view.h"
+#include "model/basis.h"
+#include "model/ref_eval.h"
+#include "model/target_view.h"
 
 static void op_counts_match_formulas(void **state)
 {

@@ -12,8 +12,8 @@
 
 #include <cmocka.h>
 
-#include "rng.h"
-#include "rpim.h"
+#include "base/rng.h"
+#include "meshfree/rpim.h"
 
 #define N 30
 

@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
 

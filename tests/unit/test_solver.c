@@ -16,9 +16,9 @@
 
 #include <cmocka.h>
 
-#include "log.h"
-#include "scene.h"
-#include "solver.h"
+#include "base/log.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
 

@@ -14,7 +14,7 @@
 #include <cmocka.h>
 
 #include "random_model.h"
-#include "target_view.h"
+#include "model/target_view.h"
 #include "tfit.h"
 
 static uint32_t bits(float x)

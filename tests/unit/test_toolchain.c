@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "fit_common.h"
+#include "fitting/fit_common.h"
 
 static void every_element_is_rounded(void **state)
 {

@@ -14,12 +14,12 @@
 
 #include <cmocka.h>
 
-#include "error_norm.h"
-#include "log.h"
-#include "reference.h"
-#include "scene.h"
-#include "solver.h"
-#include "verify.h"
+#include "verify/error_norm.h"
+#include "base/log.h"
+#include "verify/reference.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
+#include "verify/verify.h"
 
 static void cantilever_converges(void **state)
 {

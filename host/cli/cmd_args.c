@@ -1,0 +1,43 @@
+/*
+ * cmd_args.c — option values shared by the solver commands (cmd_args.h).
+ */
+#include "cli/cmd_args.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+int tf_parse_vec3(const char *s, double v[3])
+{
+    const char *p = s;
+    for (int k = 0; k < 3; ++k) {
+        char *end;
+        v[k] = strtod(p, &end);
+        if (end == p || !isfinite(v[k]) || *end != (k < 2 ? ',' : '\0')) {
+            return -1;
+        }
+        p = end + 1;
+    }
+    return 0;
+}
+
+int tf_sets_add(tf_sets *s, const char *assignment)
+{
+    if (s->n == s->cap) {
+        size_t cap = s->cap ? 2 * s->cap : 8;
+        const char **grown = realloc(s->item, cap * sizeof *grown);
+        if (grown == NULL) {
+            return -1;
+        }
+        s->item = grown;
+        s->cap = cap;
+    }
+    s->item[s->n++] = assignment;
+    return 0;
+}
+
+void tf_sets_free(tf_sets *s)
+{
+    free(s->item);
+    s->item = NULL;
+    s->n = s->cap = 0;
+}

@@ -1,0 +1,358 @@
+/*
+ * cmd_fit.c — `tissuefit fit`: the product's main job.  A scene goes in; the
+ * solver is built once, load cases are solved, every applicable model family
+ * is fitted with cross-validated orders, and the chosen forward model and
+ * the contact inverse are emitted as one generated header with golden
+ * vectors (and, on request, a report with plots).  docs/fitting.md.
+ */
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "cli/cli.h"
+#include "cli/cmd_args.h"
+#include "emit/emit_header.h"
+#include "fitting/pipeline.h"
+#include "report/fit_report.h"
+#include "base/log.h"
+#include "base/plot.h"
+#include "scene/scene.h"
+#include "cost/select.h"
+#include "solvers/solver.h"
+
+static void help(FILE *out)
+{
+    fprintf(out,
+            "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
+            "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
+            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n\n"
+            "Solves the scene's load cases (one factorisation), fits every model family\n"
+            "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
+            "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
+            "(the forward model NAME_forward and the contact inverse NAME_contact) and\n"
+            "FILE_golden.h.  The scene's fit: section sets the load cases and searches\n"
+            "(docs/scene-format.md); --set overrides any of it, e.g. --set fit.train=200.\n\n"
+            "Options:\n"
+            "  -o, --out FILE.h    header to write (a lower-case C identifier + .h)\n"
+            "  --family F          forward family to emit: nodal, modal or zhou2017\n"
+            "                      (default: the scene's fit.family, else nodal)\n"
+            "  --contact NAME      contact site (default: fit.contact, else the first)\n"
+            "  --set KEY=VALUE     override a scene value (repeatable)\n"
+            "  --report DIR        also write DIR/NAME.md with PNG plots (needs gnuplot)\n"
+            "  --direct            solve every training case instead of superposing the\n"
+            "                      unit responses of a linear scene\n"
+            "  --budget-us X       emit the most accurate forward model whose estimated\n"
+            "                      time plus the contact inverse's fits X microseconds\n"
+            "  --max-error-mm E    emit the cheapest forward model within E mm held-out\n"
+            "                      (with --budget-us: the cheapest within both)\n"
+            "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
+            "                      These three choose among every candidate of\n"
+            "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
+            "                      none qualifies, the message gives the best on each\n"
+            "                      axis and nothing is written.\n\n"
+            "Exit status: 0 ok, 1 a solve or fit failed, 2 bad usage or a scene that\n"
+            "cannot be fitted (nothing is written then).\n");
+}
+
+typedef struct fit_args {
+    const char *scene, *out, *family, *contact, *report;
+    int direct;
+    double budget_us, max_error_mm; /* NAN when not given */
+    tf_mcu mcu;
+    tf_sets sets;
+} fit_args;
+
+/* A positive finite number, or -1 with a message. */
+static int positive(const char *opt, const char *text, double *v)
+{
+    char *end;
+    *v = strtod(text, &end);
+    if (*end != '\0' || !(*v > 0) || !isfinite(*v)) {
+        tf_error("fit: %s '%s' is not a positive number", opt, text);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse(int argc, char **argv, fit_args *a)
+{
+    static const struct option opts[] = {
+        {"out", required_argument, NULL, 'o'},    {"family", required_argument, NULL, 'f'},
+        {"contact", required_argument, NULL, 'c'}, {"set", required_argument, NULL, 's'},
+        {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
+        {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
+        {"mcu", required_argument, NULL, 'm'},     {0}};
+    char err[256];
+    int c;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "o:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            a->out = optarg;
+            break;
+        case 'f':
+            a->family = optarg;
+            break;
+        case 'c':
+            a->contact = optarg;
+            break;
+        case 's':
+            if (tf_sets_add(&a->sets, optarg) != 0) {
+                tf_error("fit: out of memory");
+                return -1;
+            }
+            break;
+        case 'r':
+            a->report = optarg;
+            break;
+        case 'd':
+            a->direct = 1;
+            break;
+        case 'b':
+            if (positive("--budget-us", optarg, &a->budget_us) != 0) {
+                return -1;
+            }
+            break;
+        case 'e':
+            if (positive("--max-error-mm", optarg, &a->max_error_mm) != 0) {
+                return -1;
+            }
+            break;
+        case 'm':
+            if (tf_mcu_parse(optarg, &a->mcu, err, sizeof err) != 0) {
+                tf_error("fit: %s", err);
+                return -1;
+            }
+            break;
+        default:
+            tf_error("fit: bad option '%s' (see tissuefit fit --help)", argv[optind - 1]);
+            return -1;
+        }
+    }
+    if (optind + 1 != argc || a->out == NULL) {
+        tf_error("fit: expected one scene file and -o FILE.h (see tissuefit fit --help)");
+        return -1;
+    }
+    a->scene = argv[optind];
+    return 0;
+}
+
+/* The plan from the scene's fit: section and the options. */
+static int make_plan(const fit_args *a, const tf_scene *s, tf_fit_plan *p)
+{
+    tf_fit_plan_defaults(p);
+    p->family = (tfit_family)s->fit.family;
+    p->contact = s->fit.contact;
+    p->n_train = s->fit.train;
+    p->n_heldout = s->fit.heldout;
+    p->seed = s->fit.seed;
+    p->folds = s->fit.folds;
+    p->max_degree = s->fit.max_degree;
+    p->max_rank = s->fit.max_rank;
+    p->direct = a->direct;
+    if (a->family) {
+        p->family = tf_family_from_name(a->family);
+        if (p->family != TFIT_FAMILY_NODAL && p->family != TFIT_FAMILY_MODAL &&
+            p->family != TFIT_FAMILY_ZHOU2017) {
+            tf_error("fit: --family '%s': the forward families are nodal, modal and zhou2017",
+                     a->family);
+            return -1;
+        }
+    }
+    if (s->n_contacts == 0) {
+        tf_error("fit: %s has no contact site: a fit needs the site where the haptic force "
+                 "acts (add an entry under contact:, docs/scene-format.md)",
+                 a->scene);
+        return -1;
+    }
+    if (a->contact) {
+        p->contact = tf_scene_contact(s, a->contact);
+        if (p->contact < 0) {
+            tf_error("fit: %s has no contact site '%s'", a->scene, a->contact);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* CRC-32 of the scene file's bytes, for the header's banner. */
+static int file_crc32(const char *path, uint32_t *crc)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        return -1;
+    }
+    unsigned char buf[8192];
+    uLong c = crc32(0L, Z_NULL, 0);
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) {
+        c = crc32(c, buf, (uInt)n);
+    }
+    int bad = ferror(f);
+    fclose(f);
+    *crc = (uint32_t)c;
+    return bad ? -1 : 0;
+}
+
+/* Banner notes: what was fitted and how, with the overrides (they change the
+ * result, so they belong with it). */
+static void notes(const fit_args *a, const tf_scene *s, const tf_fit_plan *p,
+                  const tf_fit_outcome *o, char *buf, size_t n)
+{
+    int k = snprintf(buf, n,
+                     "Fitted by `tissuefit fit`: %zu training and %zu held-out load cases at "
+                     "contact site '%s',\n%s; orders by %u-fold cross-validation (seed %llu).",
+                     p->n_train, p->n_heldout, s->contacts[p->contact].name,
+                     o->cases.superposed ? "training cases superposed from unit solves"
+                                         : "every training case solved directly",
+                     p->folds, (unsigned long long)p->seed);
+    for (size_t i = 0; i < a->sets.n && k > 0 && (size_t)k < n; ++i) {
+        k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
+                      a->sets.item[i]);
+    }
+}
+
+static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_fit_outcome *o,
+                tf_model *fwd, tf_model *con, const char *choice)
+{
+    char base[TF_NAME_MAX - 8], err[512], note[1024];
+    const char *slash = strrchr(a->out, '/');
+    if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
+        tf_error("fit: %s: the header name is too long for its model names", a->out);
+        return TF_EXIT_USAGE;
+    }
+    base[strcspn(base, ".")] = '\0';
+    snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
+    snprintf(con->name, sizeof con->name, "%s_contact", base);
+    con->node_ids[0] = s->contacts[p->contact].node + 1;
+    uint32_t crc = 0;
+    if (file_crc32(a->scene, &crc) != 0) {
+        tf_error("fit: %s: cannot read it again for its checksum", a->scene);
+        return TF_EXIT_FAIL;
+    }
+    notes(a, s, p, o, note, sizeof note);
+    if (choice != NULL) {
+        size_t k = strlen(note);
+        snprintf(note + k, sizeof note - k, "\n%s", choice);
+    }
+    const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
+                               .notes = note, .golden_seed = p->seed};
+    tf_model *models[2] = {fwd, con};
+    if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
+        tf_error("fit: %s", err);
+        return TF_EXIT_USAGE;
+    }
+    tf_info("fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
+            tf_family_name(fwd->family));
+    return TF_EXIT_OK;
+}
+
+/* --budget-us / --max-error-mm: the sweep's candidates, then the choice. */
+static int emit_selected(const fit_args *a, const tf_scene *s, tf_solver *solver,
+                         const tf_fit_plan *p, tf_fit_outcome *o)
+{
+    char err[1024], choice[512];
+    tf_sweep sw;
+    tf_selection sel;
+    tf_info("fit: measuring every candidate for the choice (tissuefit sweep)");
+    if (tf_sweep_run(s, solver, p, 1u << TF_SET_SCENE, &sw, err, sizeof err) != 0) {
+        tf_error("fit: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    /* the contact inverse: within 1e-4 of the envelope radius (the bound) */
+    if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope_radius, &sel,
+                  err, sizeof err) != 0) {
+        tf_error("fit: %s: %s; nothing written", a->scene, err);
+        tf_sweep_free(&sw);
+        return TF_EXIT_USAGE;
+    }
+    char limits[128] = "";
+    if (!isnan(a->budget_us)) {
+        snprintf(limits, sizeof limits, "a budget of %.4g us", a->budget_us);
+    }
+    if (!isnan(a->max_error_mm)) {
+        size_t k = strlen(limits);
+        snprintf(limits + k, sizeof limits - k, "%sa held-out error <= %.3g mm", k ? " and " : "",
+                 a->max_error_mm);
+    }
+    snprintf(choice, sizeof choice,
+             "Chosen among every candidate for %s on %s: %s (%.2f us) and the contact inverse "
+             "%s (%.2f us).",
+             limits, a->mcu.name, sel.forward->label, tf_candidate_us(sel.forward, &a->mcu),
+             sel.contact->label, tf_candidate_us(sel.contact, &a->mcu));
+    tf_info("fit: %s", choice);
+    int rc = emit(a, s, p, o, sel.forward->model, sel.contact->model, choice);
+    tf_sweep_free(&sw);
+    return rc;
+}
+
+static int run(int argc, char **argv)
+{
+    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
+    char err[1024];
+    int rc = TF_EXIT_USAGE;
+    tf_scene *s = NULL;
+    tf_solver *solver = NULL;
+    tf_fit_outcome o;
+    int have_outcome = 0;
+    tf_fit_plan plan;
+    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
+    if (parse(argc, argv, &a) != 0) {
+        goto done;
+    }
+    s = tf_scene_load(a.scene, a.sets.item, a.sets.n, err, sizeof err);
+    if (s == NULL) {
+        tf_error("%s", err);
+        goto done;
+    }
+    if (make_plan(&a, s, &plan) != 0) {
+        goto done;
+    }
+    if (a.report && !tf_plot_available()) {
+        tf_error("fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+        goto done;
+    }
+    rc = TF_EXIT_FAIL;
+    solver = tf_solver_new(s, err, sizeof err);
+    if (solver == NULL) {
+        tf_error("fit: %s", err);
+        goto done;
+    }
+    int fitted = tf_fit_run(s, solver, &plan, &o, err, sizeof err);
+    if (fitted != 0) {
+        tf_error("fit: %s: %s", a.scene, err);
+        rc = fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
+        goto done;
+    }
+    have_outcome = 1;
+    if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
+        rc = emit(&a, s, &plan, &o, o.fam[plan.family].model, o.fam[TFIT_FAMILY_CONTACT].model,
+                  NULL);
+    } else {
+        rc = emit_selected(&a, s, solver, &plan, &o);
+    }
+    if (rc == TF_EXIT_OK && a.report &&
+        tf_fit_report(a.report, a.out, s, solver, &plan, &o, err, sizeof err) != 0) {
+        tf_error("fit: report: %s", err);
+        rc = TF_EXIT_FAIL;
+    }
+done:
+    if (have_outcome) {
+        tf_fit_outcome_free(&o);
+    }
+    tf_solver_free(solver);
+    tf_scene_free(s);
+    tf_sets_free(&a.sets);
+    return rc;
+}
+
+const tf_command tf_cmd_fit = {
+    .name = "fit",
+    .summary = "fit a scene's models and write the generated header (the main job)",
+    .run = run,
+    .help = help,
+};

@@ -1,0 +1,321 @@
+/*
+ * cmd_replay.c — `tissuefit replay`: checks a run of the haptic loop against
+ * the full solve.  The native haptic loop (target/examples, HAPTIC_CSV)
+ * logs every tick's force, status and output displacements; this command
+ * solves every tick's force (one factorisation, all ticks as right-hand
+ * sides) and reports the largest deviation, and draws the deformed output
+ * surface at the tick of deepest indentation.
+ *
+ * A tick whose force left the envelope is compared with the solve at the
+ * force the firmware actually used: its projection onto the envelope.  A
+ * rejected tick (NaN/Inf force) must have all-zero outputs.
+ */
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/cmd_args.h"
+#include "base/log.h"
+#include "base/plot.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
+
+#define META_COLUMNS 8 /* tick, fx, fy, fz, status, contact fx, fy, fz */
+
+typedef struct ticks {
+    size_t n, cols;
+    double *v; /* n x cols, row-major */
+} ticks;
+
+static void help(FILE *out)
+{
+    fprintf(out, "usage: tissuefit replay SCENE --ticks FILE.csv [--png FILE.png]\n"
+                 "                        [--contact NAME] [--set KEY=VALUE]...\n\n"
+                 "Solves the force of every tick logged by the native haptic loop\n"
+                 "(HAPTIC_CSV=FILE.csv) and prints the largest deviation of the logged\n"
+                 "output displacements from the solve (mm).  Forces beyond the envelope\n"
+                 "are compared at their projection onto it; rejected ticks must show zeros.\n\n"
+                 "Options:\n"
+                 "  --ticks FILE.csv   the haptic loop's log\n"
+                 "  --png FILE.png     the deformed output surface at the deepest tick\n"
+                 "  --contact NAME     contact site (default: the scene's fit.contact)\n"
+                 "  --set KEY=VALUE    override a scene value (repeatable)\n");
+}
+
+/* Reads the CSV (header line, then numbers).  Returns 0, or -1 naming the
+ * file and line. */
+static int read_ticks(const char *path, ticks *t)
+{
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        tf_error("replay: %s: cannot open it", path);
+        return -1;
+    }
+    char *line = NULL;
+    size_t cap = 0, lineno = 0, n_alloc = 0;
+    ssize_t len;
+    t->n = t->cols = 0;
+    t->v = NULL;
+    int rc = 0;
+    while (rc == 0 && (len = getline(&line, &cap, f)) > 0) {
+        if (++lineno == 1) {
+            t->cols = 1;
+            for (char *p = line; *p; ++p) {
+                t->cols += *p == ',';
+            }
+            continue;
+        }
+        if (t->n == n_alloc) {
+            n_alloc = n_alloc ? 2 * n_alloc : 1024;
+            double *grown = realloc(t->v, n_alloc * t->cols * sizeof *grown);
+            if (grown == NULL) {
+                tf_error("replay: out of memory");
+                rc = -1;
+                break;
+            }
+            t->v = grown;
+        }
+        char *p = line;
+        for (size_t c = 0; c < t->cols; ++c) {
+            char *end;
+            t->v[t->n * t->cols + c] = strtod(p, &end);
+            if (end == p || (c + 1 < t->cols && *end != ',')) {
+                tf_error("replay: %s:%zu: column %zu is not a number", path, lineno, c + 1);
+                rc = -1;
+                break;
+            }
+            p = end + 1;
+        }
+        t->n++;
+    }
+    free(line);
+    fclose(f);
+    if (rc == 0 && (t->n == 0 || t->cols < META_COLUMNS + 3)) {
+        tf_error("replay: %s: no ticks, or not the haptic loop's CSV", path);
+        rc = -1;
+    }
+    return rc;
+}
+
+/* The force the firmware evaluated: the input, projected onto the ball. */
+static void effective_force(const tf_scene *s, const double *in, double f[3])
+{
+    double d[3], n2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        d[k] = in[k] - s->envelope_centre[k];
+        n2 += d[k] * d[k];
+    }
+    double scale = sqrt(n2) > s->envelope_radius ? s->envelope_radius / sqrt(n2) : 1.0;
+    for (int k = 0; k < 3; ++k) {
+        f[k] = s->envelope_centre[k] + scale * d[k];
+    }
+}
+
+/* Output points in rows of equal rest y, ascending x: gnuplot draws the
+ * blocks as a surface. */
+static const double *sort_xyz;
+static int by_row(const void *a, const void *b)
+{
+    const double *p = sort_xyz + 3 * (size_t)*(const uint32_t *)a;
+    const double *q = sort_xyz + 3 * (size_t)*(const uint32_t *)b;
+    if (p[1] != q[1]) {
+        return p[1] < q[1] ? -1 : 1;
+    }
+    return (p[0] > q[0]) - (p[0] < q[0]);
+}
+
+static int draw(const char *png, const tf_scene *s, const tf_solver *solver, const double *u,
+                size_t tick, const double f[3])
+{
+    tf_plot p;
+    char err[512];
+    const double *xyz = tf_solver_coords(solver);
+    const size_t n = s->outputs.n_nodes;
+    uint32_t *order = malloc(n * sizeof *order);
+    if (order == NULL) {
+        tf_error("replay: out of memory");
+        return -1;
+    }
+    memcpy(order, s->outputs.nodes, n * sizeof *order);
+    sort_xyz = xyz;
+    qsort(order, n, sizeof *order, by_row);
+    double lo = 0, hi = 0;
+    for (size_t j = 0; j < n; ++j) {
+        lo = fmin(lo, u[3 * (size_t)order[j] + 2]);
+        hi = fmax(hi, u[3 * (size_t)order[j] + 2]);
+    }
+    if (tf_plot_open(&p, png, 1000, 750, err, sizeof err) != 0) {
+        tf_error("replay: %s", err);
+        free(order);
+        return -1;
+    }
+    fprintf(p.gp, "set cbrange [%g:%g]\n", lo, hi > lo ? hi : lo + 1e-9);
+    fprintf(p.gp,
+            "set title 'deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N "
+            "(the solve; displacements to scale, mm)'\n"
+            "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset zlabel 'z (mm)' rotate\n"
+            "set view 55,35\nset ticslevel 0\nset cblabel 'u_z (mm)'\n"
+            "set palette rgb 33,13,10\nset pm3d depthorder border lc 'black' lw 0.5\n"
+            "splot '-' using 1:2:3:4 with pm3d title 'deformed', "
+            "'-' using 1:2:3 with lines lc 'gray' title 'rest'\n",
+            tick, f[0], f[1], f[2]);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (size_t j = 0; j < n; ++j) {
+            const double *x = xyz + 3 * (size_t)order[j], *d = u + 3 * (size_t)order[j];
+            if (j > 0 && x[1] != xyz[3 * (size_t)order[j - 1] + 1]) {
+                fputc('\n', p.gp);
+            }
+            if (pass == 0) {
+                fprintf(p.gp, "%g %g %g %g\n", x[0] + d[0], x[1] + d[1], x[2] + d[2], d[2]);
+            } else {
+                fprintf(p.gp, "%g %g %g\n", x[0], x[1], x[2]);
+            }
+        }
+        fprintf(p.gp, "e\n");
+    }
+    free(order);
+    if (tf_plot_close(&p, err, sizeof err) != 0) {
+        tf_error("replay: %s", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
+static int compare(const tf_scene *s, tf_solver *solver, int contact, const ticks *t,
+                   const char *png)
+{
+    const size_t n_out = s->outputs.n_nodes, dofs = 3 * tf_solver_node_count(solver);
+    double *forces = malloc(t->n * 3 * sizeof *forces), *u = malloc(t->n * dofs * sizeof *u);
+    char err[512];
+    if (forces == NULL || u == NULL) {
+        free(forces);
+        free(u);
+        tf_error("replay: out of memory for %zu ticks", t->n);
+        return TF_EXIT_FAIL;
+    }
+    for (size_t i = 0; i < t->n; ++i) {
+        const double *row = t->v + i * t->cols;
+        if (row[4] < 0) {
+            forces[3 * i] = forces[3 * i + 1] = forces[3 * i + 2] = 0;
+        } else {
+            effective_force(s, row + 1, forces + 3 * i);
+        }
+    }
+    if (tf_solver_solve(solver, contact, forces, t->n, u, err, sizeof err) != 0) {
+        tf_error("replay: %s", err);
+        free(forces);
+        free(u);
+        return TF_EXIT_FAIL;
+    }
+    double worst = 0, deepest = -1;
+    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0;
+    for (size_t i = 0; i < t->n; ++i) {
+        const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *ui = u + i * dofs;
+        for (size_t j = 0; j < n_out; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                double logged = out[3 * j + (size_t)k];
+                if (row[4] < 0) {
+                    bad_zero += logged != 0;
+                    continue;
+                }
+                double e = fabs(logged - ui[3 * (size_t)s->outputs.nodes[j] + (size_t)k]);
+                if (e > worst) {
+                    worst = e;
+                    worst_tick = i;
+                }
+                if (k == 2 && -logged > deepest) {
+                    deepest = -logged;
+                    deep_tick = i;
+                }
+            }
+        }
+        rejected += row[4] < 0;
+    }
+    printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
+           "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
+           t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
+    int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
+    if (png != NULL && rc == TF_EXIT_OK) {
+        rc = draw(png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
+                 ? TF_EXIT_OK
+                 : TF_EXIT_FAIL;
+        if (rc == TF_EXIT_OK) {
+            printf("replay: wrote %s (deformed surface at tick %zu)\n", png, deep_tick);
+        }
+    }
+    free(forces);
+    free(u);
+    return rc;
+}
+
+static int run(int argc, char **argv)
+{
+    static const struct option opts[] = {{"ticks", required_argument, NULL, 't'},
+                                         {"png", required_argument, NULL, 'p'},
+                                         {"contact", required_argument, NULL, 'c'},
+                                         {"set", required_argument, NULL, 's'},
+                                         {0}};
+    const char *csv = NULL, *png = NULL, *contact_name = NULL;
+    tf_sets sets = {0};
+    char err[1024];
+    int c, rc = TF_EXIT_USAGE;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+        if (c == 't') {
+            csv = optarg;
+        } else if (c == 'p') {
+            png = optarg;
+        } else if (c == 'c') {
+            contact_name = optarg;
+        } else if (c == 's' && tf_sets_add(&sets, optarg) == 0) {
+            continue;
+        } else {
+            tf_error("replay: bad option '%s' (see tissuefit replay --help)", argv[optind - 1]);
+            tf_sets_free(&sets);
+            return TF_EXIT_USAGE;
+        }
+    }
+    if (optind + 1 != argc || csv == NULL) {
+        tf_error("replay: expected one scene file and --ticks FILE.csv");
+        tf_sets_free(&sets);
+        return TF_EXIT_USAGE;
+    }
+    ticks t = {0};
+    tf_scene *s = tf_scene_load(argv[optind], sets.item, sets.n, err, sizeof err);
+    tf_solver *solver = NULL;
+    if (s == NULL) {
+        tf_error("%s", err);
+    } else if (read_ticks(csv, &t) != 0) {
+        /* reported */
+    } else if (t.cols != META_COLUMNS + 3 * s->outputs.n_nodes) {
+        tf_error("replay: %s has %zu output points, the scene's outputs %zu", csv,
+                 (t.cols - META_COLUMNS) / 3, s->outputs.n_nodes);
+    } else {
+        int k = contact_name ? tf_scene_contact(s, contact_name) : s->fit.contact;
+        if (k < 0) {
+            tf_error("replay: %s has no such contact site", argv[optind]);
+        } else if ((solver = tf_solver_new(s, err, sizeof err)) == NULL) {
+            tf_error("replay: %s", err);
+            rc = TF_EXIT_FAIL;
+        } else {
+            rc = compare(s, solver, k, &t, png);
+        }
+    }
+    tf_solver_free(solver);
+    tf_scene_free(s);
+    free(t.v);
+    tf_sets_free(&sets);
+    return rc;
+}
+
+const tf_command tf_cmd_replay = {
+    .name = "replay",
+    .summary = "check a haptic-loop run against true solves; draw the deformed surface",
+    .run = run,
+    .help = help,
+};

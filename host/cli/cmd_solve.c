@@ -1,0 +1,196 @@
+/*
+ * cmd_solve.c — `tissuefit solve`: one load case of a scene, every node's
+ * displacement to CSV (and VTU for ParaView).
+ */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/atomic_file.h"
+#include "cli/cli.h"
+#include "cli/cmd_args.h"
+#include "report/displacement_out.h"
+#include "base/log.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
+#include "solvers/solver_report.h"
+
+static void help(FILE *out)
+{
+    fprintf(out,
+            "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
+            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n\n"
+            "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
+            "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
+            "The scene's loads always act; --force adds a force (N) at a contact site,\n"
+            "spread as the site's patch says.\n\n"
+            "Options:\n"
+            "  --force FX,FY,FZ   force at the contact site, N\n"
+            "  --contact NAME     which contact site (default: the first)\n"
+            "  --set KEY=VALUE    override a scene value, e.g. geometry.grid=41,41,9\n"
+            "                     (repeatable; see docs/scene-format.md)\n"
+            "  -o, --out FILE     CSV file (default: standard output)\n"
+            "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n\n"
+            "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
+            "Exit status: 0 ok, 1 the solve failed, 2 bad usage or a bad scene (nothing\n"
+            "written then).\n");
+}
+
+typedef struct solve_args {
+    const char *scene, *out, *vtk, *contact;
+    double force[3];
+    int has_force;
+    tf_sets sets;
+} solve_args;
+
+static int parse(int argc, char **argv, solve_args *a)
+{
+    static const struct option opts[] = {{"force", required_argument, NULL, 'f'},
+                                         {"contact", required_argument, NULL, 'c'},
+                                         {"set", required_argument, NULL, 's'},
+                                         {"out", required_argument, NULL, 'o'},
+                                         {"vtk", required_argument, NULL, 'v'},
+                                         {0}};
+    int c;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "o:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f':
+            if (tf_parse_vec3(optarg, a->force) != 0) {
+                tf_error("solve: --force '%s' is not three numbers FX,FY,FZ (N)", optarg);
+                return -1;
+            }
+            a->has_force = 1;
+            break;
+        case 'c':
+            a->contact = optarg;
+            break;
+        case 's':
+            if (tf_sets_add(&a->sets, optarg) != 0) {
+                tf_error("solve: out of memory");
+                return -1;
+            }
+            break;
+        case 'o':
+            a->out = optarg;
+            break;
+        case 'v':
+            a->vtk = optarg;
+            break;
+        default:
+            tf_error("solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
+            return -1;
+        }
+    }
+    if (optind + 1 != argc) {
+        tf_error("solve: expected one scene file (see tissuefit solve --help)");
+        return -1;
+    }
+    a->scene = argv[optind];
+    return 0;
+}
+
+/* The contact site the force goes to, or -1 when there is no force. */
+static int pick_contact(const solve_args *a, const tf_scene *s)
+{
+    if (!a->has_force) {
+        if (a->contact) {
+            tf_error("solve: --contact without --force");
+            return -2;
+        }
+        return -1;
+    }
+    if (s->n_contacts == 0) {
+        tf_error("solve: %s has no contact site for --force", a->scene);
+        return -2;
+    }
+    int k = a->contact ? tf_scene_contact(s, a->contact) : 0;
+    if (k < 0) {
+        tf_error("solve: %s has no contact site '%s'", a->scene, a->contact);
+        return -2;
+    }
+    return k;
+}
+
+/* Both files go to temporaries first, so a failure leaves neither. */
+static int write_outputs(const solve_args *a, const tf_scene *s, const double *u)
+{
+    char err[512];
+    tf_afile csv, vtu;
+    if (a->out && tf_afile_open(&csv, a->out, err, sizeof err) != 0) {
+        tf_error("solve: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    if (a->vtk && tf_afile_open(&vtu, a->vtk, err, sizeof err) != 0) {
+        if (a->out) {
+            tf_afile_abort(&csv);
+        }
+        tf_error("solve: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
+    if (a->vtk) {
+        tf_vtu_displacements(vtu.fp, &s->cloud, u);
+    }
+    int rc = 0;
+    if (a->out) {
+        rc = tf_afile_commit(&csv, err, sizeof err);
+    }
+    if (a->vtk) {
+        if (rc == 0) {
+            rc = tf_afile_commit(&vtu, err, sizeof err);
+        } else {
+            tf_afile_abort(&vtu);
+        }
+    }
+    if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
+        tf_error("solve: %s", rc ? err : "cannot write to standard output");
+        return TF_EXIT_FAIL;
+    }
+    return TF_EXIT_OK;
+}
+
+static int run(int argc, char **argv)
+{
+    solve_args a = {0};
+    char err[1024];
+    if (parse(argc, argv, &a) != 0) {
+        tf_sets_free(&a.sets);
+        return TF_EXIT_USAGE;
+    }
+    tf_scene *s = tf_scene_load(a.scene, a.sets.item, a.sets.n, err, sizeof err);
+    tf_sets_free(&a.sets);
+    if (s == NULL) {
+        tf_error("%s", err);
+        return TF_EXIT_USAGE;
+    }
+    int contact = pick_contact(&a, s);
+    if (contact < -1) {
+        tf_scene_free(s);
+        return TF_EXIT_USAGE;
+    }
+    int rc = TF_EXIT_FAIL;
+    tf_solver *sv = tf_solver_new(s, err, sizeof err);
+    double *u = malloc(3 * s->cloud.n * sizeof *u);
+    if (sv == NULL || u == NULL) {
+        tf_error("solve: %s: %s", a.scene, sv ? "out of memory" : err);
+    } else if (tf_solver_solve(sv, contact, a.force, 1, u, err, sizeof err) != 0) {
+        tf_error("solve: %s: %s", a.scene, err);
+    } else {
+        tf_solver_report(sv, s);
+        rc = write_outputs(&a, s, u);
+    }
+    free(u);
+    tf_solver_free(sv);
+    tf_scene_free(s);
+    return rc;
+}
+
+const tf_command tf_cmd_solve = {
+    .name = "solve",
+    .summary = "solve a scene for one force and write nodal displacements (CSV, VTU)",
+    .run = run,
+    .help = help,
+};

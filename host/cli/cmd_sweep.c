@@ -1,0 +1,122 @@
+/*
+ * cmd_sweep.c — `tissuefit sweep`: every candidate model of a scene, its
+ * cost and its held-out error, the Pareto front marked (sweep.h,
+ * docs/tradeoff.md).
+ */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/cmd_args.h"
+#include "base/log.h"
+#include "base/plot.h"
+#include "cost/sweep.h"
+
+static void help(FILE *out)
+{
+    fprintf(out,
+            "usage: tissuefit sweep SCENE [--csv FILE] [--md FILE] [--png FILE]\n"
+            "                       [--outputs scene|all] [--set KEY=VALUE]...\n\n"
+            "Fits every candidate model of the scene to the same load cases (the fit:\n"
+            "section) and measures each the same way: coefficients, table bytes, float\n"
+            "operations, estimated microseconds on a 168 MHz Cortex-M4F and a 480 MHz\n"
+            "Cortex-M7, native nanoseconds per call of the real evaluator (median), and\n"
+            "the held-out error against true solves.  Candidates: nodal p = 0..max and\n"
+            "modal p = 1, 2 with r = 1..max_rank (float32; nodal also Q31 and float64),\n"
+            "zhou2017 at its cross-validated orders, the contact inverse p = 1..max.\n"
+            "--outputs all (default) repeats the forward candidates for the contact\n"
+            "site alone and for every node, to show what each output costs.\n\n"
+            "Options:\n"
+            "  --csv FILE    the table as CSV (default: standard output)\n"
+            "  --md FILE     the table as Markdown\n"
+            "  --png FILE    log-log plot of error against time, with the seed's point\n"
+            "  --outputs S   scene: the scene's outputs only; all: also contact-only and\n"
+            "                every node (default)\n"
+            "  --set K=V     override a scene value (repeatable)\n");
+}
+
+static int run(int argc, char **argv)
+{
+    static const struct option opts[] = {{"csv", required_argument, NULL, 'c'},
+                                         {"md", required_argument, NULL, 'm'},
+                                         {"png", required_argument, NULL, 'p'},
+                                         {"outputs", required_argument, NULL, 'o'},
+                                         {"set", required_argument, NULL, 's'},
+                                         {0}};
+    const char *csv = NULL, *md = NULL, *png = NULL;
+    unsigned sets = TF_SWEEP_ALL_SETS;
+    tf_sets overrides = {0};
+    char err[1024];
+    int c, rc = TF_EXIT_USAGE;
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+        if (c == 'c') {
+            csv = optarg;
+        } else if (c == 'm') {
+            md = optarg;
+        } else if (c == 'p') {
+            png = optarg;
+        } else if (c == 'o' && (strcmp(optarg, "scene") == 0 || strcmp(optarg, "all") == 0)) {
+            sets = strcmp(optarg, "scene") == 0 ? 1u << TF_SET_SCENE : TF_SWEEP_ALL_SETS;
+        } else if (c == 's' && tf_sets_add(&overrides, optarg) == 0) {
+            continue;
+        } else {
+            tf_error("sweep: bad option '%s' (see tissuefit sweep --help)", argv[optind - 1]);
+            tf_sets_free(&overrides);
+            return TF_EXIT_USAGE;
+        }
+    }
+    if (optind + 1 != argc) {
+        tf_error("sweep: expected one scene file (see tissuefit sweep --help)");
+        tf_sets_free(&overrides);
+        return TF_EXIT_USAGE;
+    }
+    tf_scene *s = tf_scene_load(argv[optind], overrides.item, overrides.n, err, sizeof err);
+    tf_solver *solver = NULL;
+    tf_sweep sw = {0};
+    tf_fit_plan plan;
+    if (s == NULL) {
+        tf_error("%s", err);
+    } else if (s->n_contacts == 0) {
+        tf_error("sweep: %s has no contact site to apply forces at", argv[optind]);
+    } else if (png != NULL && !tf_plot_available()) {
+        tf_error("sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+    } else {
+        tf_fit_plan_defaults(&plan);
+        plan.contact = s->fit.contact;
+        plan.n_train = s->fit.train;
+        plan.n_heldout = s->fit.heldout;
+        plan.seed = s->fit.seed;
+        plan.folds = s->fit.folds;
+        plan.max_degree = s->fit.max_degree;
+        plan.max_rank = s->fit.max_rank;
+        rc = TF_EXIT_FAIL;
+        solver = tf_solver_new(s, err, sizeof err);
+        if (solver == NULL || tf_sweep_run(s, solver, &plan, sets, &sw, err, sizeof err) != 0) {
+            tf_error("sweep: %s", err);
+        } else if ((csv && tf_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
+                   (!csv && tf_sweep_csv(&sw, "/dev/stdout", err, sizeof err) != 0) ||
+                   (md && tf_sweep_markdown(&sw, s, md, err, sizeof err) != 0) ||
+                   (png && tf_sweep_plot(&sw, png, err, sizeof err) != 0)) {
+            tf_error("sweep: %s", err);
+        } else {
+            tf_info("sweep: %zu candidates measured", sw.n);
+            rc = TF_EXIT_OK;
+        }
+    }
+    tf_sweep_free(&sw);
+    tf_solver_free(solver);
+    tf_scene_free(s);
+    tf_sets_free(&overrides);
+    return rc;
+}
+
+const tf_command tf_cmd_sweep = {
+    .name = "sweep",
+    .summary = "every candidate model's cost and held-out error, Pareto front marked",
+    .run = run,
+    .help = help,
+};

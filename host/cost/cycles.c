@@ -1,0 +1,468 @@
+/*
+ * cycles.c — see cycles.h.
+ */
+#include "cost/cycles.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const class_names[TF_INSN_CLASSES] = {
+    "alu", "mul", "mla", "div", "load", "store", "ldm", "ldm_pc", "stm", "words",
+    "fload", "fstore", "fldm", "fstm", "fwords", "fadd", "fmul", "fdiv", "fmac", "fother",
+    "fmov", "branch"};
+
+void tf_insn_mix_format(const tf_insn_mix *mix, char *buf, size_t n)
+{
+    size_t k = 0;
+    buf[0] = '\0';
+    for (int c = 0; c < TF_INSN_CLASSES && k < n; ++c) {
+        if (mix->n[c] != 0) {
+            k += (size_t)snprintf(buf + k, n - k, "%s%s=%u", k ? " " : "", class_names[c],
+                                  mix->n[c]);
+        }
+    }
+}
+
+int tf_insn_mix_parse(const char *text, tf_insn_mix *mix)
+{
+    memset(mix, 0, sizeof *mix);
+    const char *p = text;
+    while (*p != '\0') {
+        while (*p == ' ' || *p == '\n' || *p == '\t') {
+            ++p;
+        }
+        if (*p == '\0') {
+            break;
+        }
+        size_t len = strcspn(p, "=");
+        int c = 0;
+        while (c < TF_INSN_CLASSES &&
+               !(strlen(class_names[c]) == len && strncmp(p, class_names[c], len) == 0)) {
+            ++c;
+        }
+        if (c == TF_INSN_CLASSES || p[len] != '=') {
+            return -1;
+        }
+        char *end;
+        unsigned long v = strtoul(p + len + 1, &end, 10);
+        if (end == p + len + 1) {
+            return -1;
+        }
+        mix->n[c] = (unsigned)v;
+        p = end;
+    }
+    return 0;
+}
+
+uint64_t tf_insn_mix_count(const tf_insn_mix *mix)
+{
+    uint64_t n = 0;
+    for (int c = 0; c < TF_INSN_CLASSES; ++c) {
+        if (c != TF_INSN_WORDS && c != TF_INSN_FWORDS) {
+            n += mix->n[c];
+        }
+    }
+    return n;
+}
+
+/* ------------------------------------------------------------------------
+ * The compiled evaluator, block by block.
+ *
+ * Each block is a piece of tfit_displacements()/tfit_contact_force() as
+ * arm-none-eabi-gcc 12.2 -O2 compiles it (target/target.mk): a loop body
+ * ("loop K" of FUNCTION, K counted by address as tests/firmware/insn_mix.c
+ * numbers them; its own instructions, without nested loops) or a path
+ * through code outside loops (loop 0).  The estimate adds blocks times the
+ * number of times each runs, which depends only on the model's family,
+ * orders and n_out.  Loop blocks are checked against objdump of the
+ * compiled library; the whole sum is checked against the instructions QEMU
+ * executes per call (tests/firmware, make check-cycles).
+ */
+typedef enum block_id {
+    ENTRY_FORWARD,  /* tfit_displacements: argument and family checks, tail call */
+    ENTRY_CONTACT,  /* tfit_contact_force, p != 1: the same */
+    CONTACT_P1,     /* tfit_contact_force, p = 1: the whole call but the input map */
+    EVAL_NODAL,     /* evaluate(): input map call, family switch, status */
+    EVAL_MODAL,
+    EVAL_ZHOU,
+    MASK_WORD,      /* evaluate() loop 1: the output mask after zhou2017 */
+    INPUT_PATH,     /* tfit_input_map(): straight-line code */
+    BASIS_PATH,     /* tfit_basis() outside its loops, p >= 2 */
+    BASIS_PATH_LOW, /* tfit_basis() outside its loops, p <= 1 (no T recurrence) */
+    BASIS_T_STEP,   /* loop 1: one recurrence step T_i of the three variables, i = 2..p */
+    BASIS_T_ENTRY,  /* ... minus what its first pass skips (M4F: entered mid-body) */
+    BASIS_DEGREE,   /* loop 2: one degree d = 0..p */
+    BASIS_E,        /* loop 3: one inner degree e = b + c = 0..d */
+    BASIS_TERM,     /* loop 4: one term T_a(g0) (T_b(g1) T_c(g2)) */
+    NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 (no basis call) */
+    NODAL_NODE_P1,  /* loop 3: one output point, p = 1 */
+    NODAL_PATH,     /* outside loops, p != 1 */
+    NODAL_NODE,     /* loop 1: one output point, any p */
+    NODAL_P0_SKIP,  /* ... minus the inner-loop set-up that p = 0 skips */
+    NODAL_TERM,     /* loop 2: one basis term of the three rows */
+    MODAL_PATH,
+    MODAL_AMP,      /* loop 1: one amplitude a_k */
+    MODAL_AMP_P0_SKIP,
+    MODAL_AMP_TERM, /* loop 2: one term of it */
+    MODAL_NODE,     /* loop 3: one output point */
+    MODAL_R1_SKIP,  /* ... minus the inner-loop set-up that r = 1 skips */
+    MODAL_MODE,     /* loop 4: one mode of the three rows */
+    ZHOU_PATH,
+    ZHOU_AXIS,      /* loop 1: contact displacement of one force axis */
+    ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a of them) */
+    ZHOU_AXIS_SETUP, /* ... the loop set-up in loop 1's body, which lambda_a = 0 skips */
+    ZHOU_AXIS_STUB, /* ... the out-of-line code lambda_a = 0 runs instead */
+    ZHOU_SURF_AXIS, /* loop 3: one force axis of the surfaces */
+    ZHOU_PAIR,      /* loop 4: one (axis, component) pair */
+    ZHOU_ROW,       /* loop 5: one surface coefficient p_i(t) */
+    ZHOU_ROW_STEP,  /* loop 6: one Clenshaw step of it (k of them) */
+    ZHOU_ROW_SETUP, /* ... its set-up in loop 5's body, which k = 0 skips */
+    ZHOU_ROW_STUB,  /* ... the out-of-line code k = 0 runs instead */
+    ZHOU_NODE,      /* loop 7: one output point of one surface, every part */
+    ZHOU_X_STEP,    /* loop 8: one Clenshaw step in X (A of them) */
+    ZHOU_X_SETUP,   /* ... its set-up in loop 7's body, which A = 0 skips */
+    ZHOU_X_STUB,    /* ... the out-of-line code A = 0 runs instead */
+    ZHOU_Y_STEP,    /* loop 9: one Clenshaw step in Y (B of them) */
+    ZHOU_Y_PART,    /* ... the Y tail in loop 7's body outside loop 9 (B = 0 skips it) */
+    ZHOU_SUM,       /* ... the superposition in loop 7's body (force axis x skips it) */
+    STEP_ENTRY,     /* a Clenshaw loop is entered past its first instruction */
+    N_BLOCKS
+} block_id;
+
+typedef struct block {
+    const char *function;
+    int loop, depth;           /* 0: a path outside loops */
+    const char *mix[TF_CORES]; /* M4F build, M7 build */
+} block;
+
+#define SAME(s) {s, s}
+
+static const block blocks[N_BLOCKS] = {
+    [ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
+                       {"alu=2 load=1 ldm=1 stm=1 words=4 branch=5", "alu=4 load=1 branch=4"}},
+    [ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
+                       {"alu=9 load=3 ldm=1 stm=1 words=6 branch=6",
+                        "alu=8 load=3 ldm=1 stm=1 words=6 branch=5"}},
+    [CONTACT_P1] = {"tfit_contact_force", 0, 0,
+                    {"alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
+                     "branch=6",
+                     "alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
+                     "branch=5"}},
+    [EVAL_NODAL] = {"evaluate", 0, 0, SAME("alu=18 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
+    [EVAL_MODAL] = {"evaluate", 0, 0, SAME("alu=17 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
+    [EVAL_ZHOU] = {"evaluate", 0, 0, SAME("alu=21 load=5 ldm_pc=1 stm=1 words=10 branch=6")},
+    [MASK_WORD] = {"evaluate", 1, 1, SAME("alu=3 load=1 store=1 branch=1")},
+    [INPUT_PATH] = {"tfit_input_map", 0, 0,
+                    {"alu=81 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=8 fload=12 fstore=3 "
+                     "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14",
+                     "alu=82 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=12 fload=12 fstore=3 "
+                     "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14"}},
+    [BASIS_PATH] = {"tfit_basis", 0, 0, /* the M4F enters loop 1 with a branch */
+                    {"alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=2",
+                     "alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=1"}},
+    [BASIS_PATH_LOW] = {"tfit_basis", 0, 0,
+                        SAME("alu=10 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=1 "
+                             "branch=2")},
+    [BASIS_T_STEP] = {"tfit_basis", 1, 1,
+                      SAME("alu=1 fstm=3 fwords=3 fadd=3 fmul=3 fother=6 branch=1")},
+    [BASIS_T_ENTRY] = {"tfit_basis", 0, 0, {"fother=2", ""}},
+    [BASIS_DEGREE] = {"tfit_basis", 2, 1, SAME("alu=6 branch=1")},
+    [BASIS_E] = {"tfit_basis", 3, 2, SAME("alu=8 fldm=1 fwords=1 branch=1")},
+    [BASIS_TERM] = {"tfit_basis", 4, 3, SAME("alu=1 fldm=2 fstm=1 fwords=3 fmul=2 branch=1")},
+    [NODAL_PATH_P1] = {"tfit_eval_nodal", 0, 0,
+                       SAME("alu=10 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=2")},
+    [NODAL_NODE_P1] = {"tfit_eval_nodal", 3, 1,
+                       SAME("alu=7 store=3 fload=12 fadd=9 fmul=9 fmov=3 branch=1")},
+    [NODAL_PATH] = {"tfit_eval_nodal", 0, 0,
+                    SAME("alu=22 mul=2 mla=1 load=5 store=1 ldm_pc=1 stm=1 words=18 branch=3")},
+    [NODAL_NODE] = {"tfit_eval_nodal", 1, 1, SAME("alu=15 load=1 store=3 fload=3 fmov=3 branch=2")},
+    [NODAL_P0_SKIP] = {"tfit_eval_nodal", 0, 0, SAME("alu=5")},
+    [NODAL_TERM] = {"tfit_eval_nodal", 2, 2, SAME("alu=2 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    [MODAL_PATH] = {"tfit_eval_modal", 0, 0,
+                    SAME("alu=26 mul=2 mla=2 load=5 store=1 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 branch=3")},
+    [MODAL_AMP] = {"tfit_eval_modal", 1, 1, SAME("alu=6 fload=1 fstm=1 fwords=1 branch=2")},
+    [MODAL_AMP_P0_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=3")},
+    [MODAL_AMP_TERM] = {"tfit_eval_modal", 2, 2,
+                        SAME("alu=2 fldm=2 fwords=2 fadd=1 fmul=1 branch=1")},
+    [MODAL_NODE] = {"tfit_eval_modal", 3, 1,
+                    SAME("alu=17 store=3 fload=3 fmul=3 fmov=3 branch=2")},
+    [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
+    [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
+                   {"alu=16 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2",
+                    "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2"}},
+    [ZHOU_AXIS] = {"tfit_eval_zhou2017", 1, 1,
+                   SAME("alu=6 load=1 fload=1 fldm=2 fstm=1 fwords=3 fadd=3 fmul=2 fother=2 "
+                        "branch=3")},
+    [ZHOU_AXIS_STEP] = {"tfit_eval_zhou2017", 2, 2,
+                        SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_AXIS_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=3 fother=2 branch=1")},
+    [ZHOU_AXIS_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fload=1 fother=1 branch=1")},
+    [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1, SAME("alu=8 load=2 store=2 branch=1")},
+    [ZHOU_PAIR] = {"tfit_eval_zhou2017", 4, 2,
+                   SAME("alu=25 mla=1 load=9 store=3 ldm=1 words=2 fload=2 fadd=1 branch=3")},
+    [ZHOU_ROW] = {"tfit_eval_zhou2017", 5, 3,
+                  SAME("alu=4 fload=1 fstm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=3")},
+    [ZHOU_ROW_STEP] = {"tfit_eval_zhou2017", 6, 4,
+                       SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_ROW_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
+    [ZHOU_ROW_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=2 branch=1")},
+    [ZHOU_NODE] = {"tfit_eval_zhou2017", 7, 3,
+                   SAME("alu=7 fload=3 fstore=1 fadd=7 fmul=2 fother=4 branch=6")},
+    [ZHOU_X_STEP] = {"tfit_eval_zhou2017", 8, 4,
+                     SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_X_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
+    [ZHOU_X_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=2 branch=1")},
+    [ZHOU_Y_STEP] = {"tfit_eval_zhou2017", 9, 4,
+                     SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
+    [ZHOU_Y_PART] = {"tfit_eval_zhou2017", 0, 0,
+                     SAME("alu=1 fload=1 fadd=3 fmul=1 fother=2 branch=1")},
+    [ZHOU_SUM] = {"tfit_eval_zhou2017", 0, 0, SAME("fload=1 fadd=1")},
+    [STEP_ENTRY] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=1")},
+};
+
+static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
+{
+    tf_insn_mix m;
+    if (tf_insn_mix_parse(text, &m) != 0) {
+        fprintf(stderr, "cycles.c: bad mix '%s'\n", text);
+        abort();
+    }
+    for (int c = 0; c < TF_INSN_CLASSES; ++c) {
+        total->n[c] += (unsigned)(m.n[c] * times);
+    }
+}
+
+static void add_block(tf_insn_mix *total, tf_core core, block_id b, uint64_t times)
+{
+    add_mix(total, blocks[b].mix[core], times);
+}
+
+static void sub_block(tf_insn_mix *total, tf_core core, block_id b, uint64_t times)
+{
+    tf_insn_mix m;
+    tf_insn_mix_parse(blocks[b].mix[core], &m);
+    for (int c = 0; c < TF_INSN_CLASSES; ++c) {
+        total->n[c] -= (unsigned)(m.n[c] * times);
+    }
+}
+
+static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
+{
+    if (p <= 1) {
+        add_block(t, core, BASIS_PATH_LOW, 1);
+    } else {
+        add_block(t, core, BASIS_PATH, 1);
+        add_block(t, core, BASIS_T_STEP, p - 1);
+        sub_block(t, core, BASIS_T_ENTRY, 1);
+    }
+    add_block(t, core, BASIS_DEGREE, p + 1);
+    add_block(t, core, BASIS_E, (uint64_t)(p + 1) * (p + 2) / 2);
+    add_block(t, core, BASIS_TERM, tf_terms(p));
+}
+
+static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    uint32_t p = m->dims[0], terms = tf_terms(p);
+    add_block(t, core, EVAL_NODAL, 1);
+    if (p == 1) { /* the basis is g itself: no tfit_basis call */
+        add_block(t, core, NODAL_PATH_P1, 1);
+        add_block(t, core, NODAL_NODE_P1, m->n_out);
+        return;
+    }
+    basis_mix(t, core, p);
+    add_block(t, core, NODAL_PATH, 1);
+    add_block(t, core, NODAL_NODE, m->n_out);
+    add_block(t, core, NODAL_TERM, (uint64_t)m->n_out * (terms - 1));
+    if (p == 0) {
+        sub_block(t, core, NODAL_P0_SKIP, m->n_out);
+    }
+}
+
+static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    uint32_t p = m->dims[0], r = m->dims[1], terms = tf_terms(p);
+    add_block(t, core, EVAL_MODAL, 1);
+    basis_mix(t, core, p);
+    add_block(t, core, MODAL_PATH, 1);
+    add_block(t, core, MODAL_AMP, r);
+    add_block(t, core, MODAL_AMP_TERM, (uint64_t)r * (terms - 1));
+    if (p == 0) {
+        sub_block(t, core, MODAL_AMP_P0_SKIP, r);
+    }
+    add_block(t, core, MODAL_NODE, m->n_out);
+    add_block(t, core, MODAL_MODE, (uint64_t)m->n_out * (r - 1));
+    if (r == 1) {
+        sub_block(t, core, MODAL_R1_SKIP, m->n_out);
+    }
+}
+
+/* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
+ * body holds the set-up of its step loop; n >= 1 runs n steps, entering the
+ * loop past its first instruction (a register move); n = 0 branches past
+ * the set-up and the loop to an out-of-line stub and back. */
+static void clenshaw_mix(tf_insn_mix *t, tf_core core, uint32_t n, uint64_t times, block_id step,
+                         block_id setup, block_id stub)
+{
+    if (n == 0) {
+        sub_block(t, core, setup, times);
+        add_block(t, core, stub, times);
+        return;
+    }
+    add_block(t, core, step, times * n);
+    sub_block(t, core, STEP_ENTRY, times);
+}
+
+static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const uint32_t *d = m->dims;
+    const uint64_t n = m->n_out;
+    add_block(t, core, EVAL_ZHOU, 1);
+    add_block(t, core, MASK_WORD, 3 * n);
+    add_block(t, core, ZHOU_PATH, 1);
+    for (int a = 0; a < 3; ++a) {
+        add_block(t, core, ZHOU_AXIS, 1);
+        clenshaw_mix(t, core, d[a], 1, ZHOU_AXIS_STEP, ZHOU_AXIS_SETUP, ZHOU_AXIS_STUB);
+        add_block(t, core, ZHOU_SURF_AXIS, 1);
+    }
+    for (int pair = 0; pair < 9; ++pair) {
+        uint32_t ax = d[3 + 3 * pair], by = d[4 + 3 * pair], k = d[5 + 3 * pair];
+        uint64_t rows = (uint64_t)ax + by + 1;
+        add_block(t, core, ZHOU_PAIR, 1);
+        add_block(t, core, ZHOU_ROW, rows);
+        clenshaw_mix(t, core, k, rows, ZHOU_ROW_STEP, ZHOU_ROW_SETUP, ZHOU_ROW_STUB);
+        add_block(t, core, ZHOU_NODE, n);
+        clenshaw_mix(t, core, ax, n, ZHOU_X_STEP, ZHOU_X_SETUP, ZHOU_X_STUB);
+        if (by == 0) {
+            sub_block(t, core, ZHOU_Y_PART, n);
+        } else {
+            add_block(t, core, ZHOU_Y_STEP, n * by);
+            sub_block(t, core, STEP_ENTRY, n);
+        }
+        if (pair < 3) {
+            sub_block(t, core, ZHOU_SUM, n);
+        }
+    }
+}
+
+void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
+{
+    memset(mix, 0, sizeof *mix);
+    add_block(mix, core, INPUT_PATH, 1);
+    if (m->family == TFIT_FAMILY_CONTACT && m->dims[0] == 1) {
+        add_block(mix, core, CONTACT_P1, 1); /* the fast path, tfit_eval.c */
+        return;
+    }
+    add_block(mix, core, m->family == TFIT_FAMILY_CONTACT ? ENTRY_CONTACT : ENTRY_FORWARD, 1);
+    switch (m->family) {
+    case TFIT_FAMILY_MODAL:
+        modal_mix(mix, core, m);
+        break;
+    case TFIT_FAMILY_ZHOU2017:
+        zhou_mix(mix, core, m);
+        break;
+    default:
+        nodal_mix(mix, core, m);
+        break;
+    }
+}
+
+size_t tf_cycles_loop_table(tf_core core, char *buf, size_t n)
+{
+    size_t k = 0;
+    for (int b = 0; b < N_BLOCKS; ++b) {
+        if (blocks[b].loop > 0) {
+            int w = snprintf(buf + (k < n ? k : n), k < n ? n - k : 0, "%s loop %d depth %d: %s\n",
+                             blocks[b].function, blocks[b].loop, blocks[b].depth,
+                             blocks[b].mix[core]);
+            k += (size_t)w;
+        }
+    }
+    return k;
+}
+
+/* ------------------------------------------------------------------------
+ * Cycles per instruction class.
+ *
+ * Cortex-M4 (Arm DDI 0439B, table 3-1 and table 7-1), zero wait states:
+ * data processing, MUL and the 32x32->64 multiplies 1; MLA 2; SDIV/UDIV
+ * 2..12; LDR/STR 2, or 1 when pipelined behind another load/store; LDM/STM/
+ * PUSH/POP/LDRD 1+N; a branch 1+P, P = 1..3 (pipeline refill), 1 when not
+ * taken; POP {pc} 1+N+P; VLDR/VSTR 2; VLDM/VSTM 1+N; VADD, VSUB, VMUL, VCMP,
+ * VMOV 1; VDIV 14; VMLA/VFMA 3.  "high" takes the slow end of every range
+ * (every branch taken with P = 3, no load pipelining): an upper bound for
+ * the instruction stream; "low" the fast end.
+ *
+ * Cortex-M7 (Arm DDI 0489): an in-order dual-issue pipeline with a 64-bit
+ * load/store path, branch prediction and one single-precision FPU pipeline;
+ * the manual lists no cycle counts.  The model: a data-processing
+ * instruction issues beside another (1/2), a load, store or FPU instruction
+ * takes one issue slot (1), multiple transfers move two words per cycle,
+ * VDIV.F32 14, predicted branches 1 (high: a mispredict every fourth
+ * branch, 8-cycle refill).  Expect +-30 %.
+ */
+typedef struct cost_table {
+    double c[TF_INSN_CLASSES];
+} cost_table;
+
+enum { ALU, MUL, MLA, DIV, LOAD, STORE, LDM, LDM_PC, STM, WORDS, FLOAD, FSTORE, FLDM, FSTM,
+       FWORDS, FADD, FMUL, FDIV, FMAC, FOTHER, FMOV, BRANCH };
+
+static const cost_table costs[TF_CORES][2] = {
+    [TF_CORE_M4F] = {
+        /* high */ {{[ALU] = 1, [MUL] = 1, [MLA] = 2, [DIV] = 12, [LOAD] = 2, [STORE] = 2,
+                     [LDM] = 1, [LDM_PC] = 4, [STM] = 1, [WORDS] = 1, [FLOAD] = 2, [FSTORE] = 2,
+                     [FLDM] = 1, [FSTM] = 1, [FWORDS] = 1, [FADD] = 1, [FMUL] = 1, [FDIV] = 14,
+                     [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 4}},
+        /* low */ {{[ALU] = 1, [MUL] = 1, [MLA] = 2, [DIV] = 2, [LOAD] = 1, [STORE] = 1,
+                    [LDM] = 1, [LDM_PC] = 2, [STM] = 1, [WORDS] = 1, [FLOAD] = 1, [FSTORE] = 1,
+                    [FLDM] = 1, [FSTM] = 1, [FWORDS] = 1, [FADD] = 1, [FMUL] = 1, [FDIV] = 14,
+                    [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 1}},
+    },
+    [TF_CORE_M7] = {
+        /* high */ {{[ALU] = 0.5, [MUL] = 1, [MLA] = 1, [DIV] = 12, [LOAD] = 1, [STORE] = 1,
+                     [LDM] = 1, [LDM_PC] = 3, [STM] = 1, [WORDS] = 0.5, [FLOAD] = 1,
+                     [FSTORE] = 1, [FLDM] = 1, [FSTM] = 1, [FWORDS] = 0.5, [FADD] = 1,
+                     [FMUL] = 1, [FDIV] = 14, [FMAC] = 1, [FOTHER] = 1, [FMOV] = 1,
+                     [BRANCH] = 3}},
+        /* low */ {{[ALU] = 0.5, [MUL] = 0.5, [MLA] = 1, [DIV] = 2, [LOAD] = 0.5, [STORE] = 0.5,
+                    [LDM] = 1, [LDM_PC] = 1, [STM] = 1, [WORDS] = 0.5, [FLOAD] = 0.5,
+                    [FSTORE] = 0.5, [FLDM] = 1, [FSTM] = 1, [FWORDS] = 0.5, [FADD] = 1,
+                    [FMUL] = 1, [FDIV] = 14, [FMAC] = 1, [FOTHER] = 1, [FMOV] = 1,
+                    [BRANCH] = 1}},
+    },
+};
+
+static double cost_of(const tf_insn_mix *mix, const cost_table *t)
+{
+    double c = 0;
+    for (int k = 0; k < TF_INSN_CLASSES; ++k) {
+        c += mix->n[k] * t->c[k];
+    }
+    return c;
+}
+
+double tf_core_mhz(tf_core core)
+{
+    return core == TF_CORE_M7 ? 480.0 : 168.0;
+}
+
+const char *tf_core_name(tf_core core)
+{
+    return core == TF_CORE_M7 ? "M7" : "M4F";
+}
+
+tf_cycles tf_cycles_of_mix(const tf_insn_mix *mix, tf_core core)
+{
+    tf_cycles r = {tf_insn_mix_count(mix), cost_of(mix, &costs[core][0]),
+                   cost_of(mix, &costs[core][1])};
+    return r;
+}
+
+tf_cycles tf_cycles_estimate(const tf_model *m, tf_core core)
+{
+    tf_insn_mix mix;
+    tf_cycles_mix(m, core, &mix);
+    return tf_cycles_of_mix(&mix, core);
+}

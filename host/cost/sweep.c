@@ -1,0 +1,437 @@
+/*
+ * sweep.c — see sweep.h.  Candidates per output set:
+ *   nodal p = 0 .. max_degree            float32, Q31, float64
+ *   modal p = 1, 2 and r = 1 .. max_rank float32
+ *   zhou2017 at its cross-validated orders (where it applies), float32
+ *   contact inverse p = 1 .. max_degree  float32, Q31, float64 (once)
+ * float64 is the same fit evaluated with double coefficients and
+ * arithmetic: what the fit achieves before float32 rounding.  There is no
+ * float64 target evaluator, so it has no time.
+ */
+#include "cost/sweep.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "model/basis.h"
+#include "cost/cycles.h"
+#include "fitting/fit_common.h"
+#include "fitting/families/family.h"
+#include "base/log.h"
+#include "model/q31.h"
+#include "model/target_view.h"
+
+#define TIMING_REPEATS 15
+
+const char *tf_precision_name(tf_precision p)
+{
+    return p == TF_PREC_F32 ? "float32" : (p == TF_PREC_F64 ? "float64" : "Q31");
+}
+
+const char *tf_output_set_name(tf_output_set s)
+{
+    return s == TF_SET_SCENE ? "scene" : (s == TF_SET_CONTACT ? "contact only" : "all nodes");
+}
+
+static double now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return 1e9 * (double)ts.tv_sec + (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Median over repeats of the time per call; inputs cycle through the
+ * held-out cases.  Batches are sized to about 0.2 ms. */
+typedef struct timing_job {
+    const tfit_model *f32;
+    const tfit_model_q31 *q31;
+    float (*in)[3];
+    int32_t (*qin)[3];
+    size_t n_in;
+    void *out;
+} timing_job;
+
+static void call(const timing_job *j, size_t i)
+{
+    size_t k = i % j->n_in;
+    if (j->f32 != NULL) {
+        if (j->f32->family == TFIT_FAMILY_CONTACT) {
+            tfit_contact_force(j->f32, j->in[k], j->out);
+        } else {
+            tfit_displacements(j->f32, j->in[k], j->out);
+        }
+    } else if (j->q31->family == TFIT_FAMILY_CONTACT) {
+        tfit_contact_force_q31(j->q31, j->qin[k], j->out);
+    } else {
+        tfit_displacements_q31(j->q31, j->qin[k], j->out);
+    }
+}
+
+static double time_calls(const timing_job *j)
+{
+    size_t batch = 1;
+    for (;;) { /* size the batch */
+        double t0 = now_ns();
+        for (size_t i = 0; i < batch; ++i) {
+            call(j, i);
+        }
+        if (now_ns() - t0 > 2e5 || batch > (1u << 24)) {
+            break;
+        }
+        batch *= 2;
+    }
+    double per_call[TIMING_REPEATS];
+    for (int r = 0; r < TIMING_REPEATS; ++r) {
+        double t0 = now_ns();
+        for (size_t i = 0; i < batch; ++i) {
+            call(j, i);
+        }
+        per_call[r] = (now_ns() - t0) / (double)batch;
+    }
+    qsort(per_call, TIMING_REPEATS, sizeof per_call[0], cmp_double);
+    return per_call[TIMING_REPEATS / 2];
+}
+
+static int grow(tf_sweep *sw)
+{
+    if (sw->n < sw->cap) {
+        return 0;
+    }
+    size_t cap = sw->cap ? 2 * sw->cap : 64;
+    tf_candidate *c = realloc(sw->c, cap * sizeof *c);
+    if (c == NULL) {
+        return -1;
+    }
+    sw->c = c;
+    sw->cap = cap;
+    return 0;
+}
+
+/* Inputs of the held-out cases as the firmware gets them. */
+static const double *case_input(const tf_fitdata *d, int contact, size_t i)
+{
+    return contact ? d->contact[i] : d->force[i];
+}
+
+static void fill_common(tf_candidate *c, const tf_model *m, const char *label, tf_precision prec,
+                        tf_output_set set)
+{
+    memset(c, 0, sizeof *c);
+    snprintf(c->label, sizeof c->label, "%s", label);
+    c->family = m->family;
+    c->orders[0] = m->dims[0];
+    c->orders[1] = m->family == TFIT_FAMILY_MODAL ? m->dims[1] : 0;
+    c->precision = prec;
+    c->set = set;
+    c->n_out = m->n_out;
+    c->us_m4f = c->us_m4f_low = c->us_m7 = c->ns_native = NAN;
+}
+
+static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set set,
+                   const tf_fitdata *held)
+{
+    if (grow(sw) != 0) {
+        return -1;
+    }
+    tf_candidate *c = &sw->c[sw->n++];
+    fill_common(c, m, label, TF_PREC_F32, set);
+    c->model = m;
+    c->n_coef = m->n_coef;
+    c->table_bytes = tf_model_table_bytes(m);
+    tf_opcount ops = tf_model_ops(m);
+    c->ops = ops.add + ops.mul + ops.div;
+    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    c->us_m4f = m4.cycles / tf_core_mhz(TF_CORE_M4F);
+    c->us_m4f_low = m4.cycles_low / tf_core_mhz(TF_CORE_M4F);
+    c->us_m7 = m7.cycles / tf_core_mhz(TF_CORE_M7);
+    tf_model_errors(m, held, NULL, held->n_cases, &c->heldout_max, &c->heldout_rms,
+                    &m->heldout_rel_max);
+    m->heldout_max = c->heldout_max; /* the header reports them if it is chosen */
+    m->heldout_rms = c->heldout_rms;
+    m->heldout_cases = (uint32_t)held->n_cases;
+
+    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    tfit_model view;
+    tf_target_view(m, &view);
+    timing_job j = {.f32 = &view, .n_in = held->n_cases};
+    j.in = malloc(held->n_cases * sizeof *j.in);
+    j.out = malloc(3 * m->n_out * sizeof(float));
+    if (j.in == NULL || j.out == NULL) {
+        free(j.in);
+        free(j.out);
+        return -1;
+    }
+    for (size_t i = 0; i < held->n_cases; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            j.in[i][k] = (float)case_input(held, contact, i)[k];
+        }
+    }
+    c->ns_native = time_calls(&j);
+    free(j.in);
+    free(j.out);
+    return 0;
+}
+
+/* The Q31 form of a float32 candidate (nodal and contact families). */
+static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
+                   const tf_fitdata *held)
+{
+    char err[256];
+    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    if (q == NULL) {
+        return 0; /* no Q31 form: not a candidate */
+    }
+    if (grow(sw) != 0) {
+        tf_q31_free(q);
+        return -1;
+    }
+    tf_candidate *c = &sw->c[sw->n++];
+    fill_common(c, m, label, TF_PREC_Q31, set);
+    c->n_coef = q->n_words;
+    c->table_bytes = 4 * (q->n_words + m->n_out);
+    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    const size_t rows = 3 * (size_t)m->n_out;
+    int32_t *out = malloc(rows * sizeof *out);
+    int32_t(*qin)[3] = malloc(held->n_cases * sizeof *qin);
+    if (out == NULL || qin == NULL) {
+        free(out);
+        free(qin);
+        tf_q31_free(q);
+        return -1;
+    }
+    double emax = 0, sum2 = 0;
+    for (size_t i = 0; i < held->n_cases; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            qin[i][k] = tf_q31_from_value(case_input(held, contact, i)[k], q->in_exp);
+        }
+        tf_q31_ref_eval(q, qin[i], out, NULL);
+        const double *truth = contact ? held->force[i] : held->u + rows * i;
+        for (size_t o = 0; o < rows; ++o) {
+            double e = tf_q31_to_value(out[o], q->out_exp) - truth[o];
+            emax = fmax(emax, fabs(e));
+            sum2 += e * e;
+        }
+    }
+    c->heldout_max = emax;
+    c->heldout_rms = sqrt(sum2 / ((double)held->n_cases * (double)rows));
+    tfit_model_q31 view;
+    tf_target_view_q31(q, &view);
+    timing_job j = {.q31 = &view, .qin = qin, .n_in = held->n_cases, .out = out};
+    c->ns_native = time_calls(&j);
+    free(out);
+    free(qin);
+    tf_q31_free(q);
+    return 0;
+}
+
+/* The float64 evaluation of a nodal or contact fit: the same least squares,
+ * coefficients and arithmetic kept in double. */
+static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
+                   const tf_fitdata *train, const tf_fitdata *held)
+{
+    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    const uint32_t p = m->dims[0], t = tf_terms(p);
+    const size_t rows = 3 * (size_t)m->n_out, n = train->n_cases;
+    char err[256];
+    double *a = tf_fit_design(m, contact ? train->contact : train->force, NULL, n, p);
+    double *y = contact ? malloc(n * 3 * sizeof *y) : tf_fit_gather_u(train, NULL, n);
+    double *x = malloc(t * rows * sizeof *x), *phi = malloc(t * sizeof *phi);
+    int rc = (a && y && x && phi && grow(sw) == 0) ? 0 : -1;
+    if (rc == 0 && contact) {
+        for (size_t i = 0; i < n; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                y[i + (size_t)k * n] = train->force[i][k];
+            }
+        }
+    }
+    if (rc == 0) {
+        rc = tf_fit_lsq(a, n, t, y, rows, x, err, sizeof err);
+    }
+    if (rc == 0) {
+        tf_candidate *c = &sw->c[sw->n++];
+        fill_common(c, m, label, TF_PREC_F64, set);
+        c->n_coef = m->n_coef;
+        c->table_bytes = 8 * m->n_coef + 4 * (m->n_dims + m->n_out);
+        double emax = 0, sum2 = 0;
+        for (size_t i = 0; i < held->n_cases; ++i) {
+            double g[3];
+            tf_fit_normalise(m, case_input(held, contact, i), g);
+            tf_basis(p, g, phi);
+            const double *truth = contact ? held->force[i] : held->u + rows * i;
+            for (size_t o = 0; o < rows; ++o) {
+                double v = 0;
+                for (uint32_t k = 0; k < t; ++k) {
+                    v += x[k + o * t] * phi[k];
+                }
+                emax = fmax(emax, fabs(v - truth[o]));
+                sum2 += (v - truth[o]) * (v - truth[o]);
+            }
+        }
+        c->heldout_max = emax;
+        c->heldout_rms = sqrt(sum2 / ((double)held->n_cases * (double)rows));
+    }
+    free(a);
+    free(y);
+    free(x);
+    free(phi);
+    return rc;
+}
+
+/* A float32 candidate fitted on every training case, with its Q31 and
+ * float64 forms where they exist.  Takes ownership of m. */
+static int measure(tf_sweep *sw, tf_model *m, tf_output_set set, const tf_cases *cases)
+{
+    char label[96];
+    const tf_fitdata *held = &cases->heldout;
+    if (m->family == TFIT_FAMILY_MODAL) {
+        snprintf(label, sizeof label, "modal p=%u r=%u", m->dims[0], m->dims[1]);
+    } else if (m->family == TFIT_FAMILY_ZHOU2017) {
+        snprintf(label, sizeof label, "zhou2017 (CV orders)");
+    } else {
+        snprintf(label, sizeof label, "%s p=%u", tf_family_name(m->family), m->dims[0]);
+    }
+    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
+        if (add_q31(sw, m, label, set, held) != 0 ||
+            add_f64(sw, m, label, set, &cases->train, held) != 0) {
+            tf_model_free(m);
+            return -1;
+        }
+    }
+    if (add_f32(sw, m, label, set, held) != 0) {
+        tf_model_free(m);
+        return -1;
+    }
+    return 0;
+}
+
+/* The scene with another output selection (the solver does not read it). */
+static int outputs_of(const tf_scene *s, const tf_solver *solver, tf_output_set set, int contact,
+                      tf_scene *copy, uint32_t **nodes)
+{
+    *copy = *s;
+    *nodes = NULL;
+    if (set == TF_SET_SCENE) {
+        return 0;
+    }
+    size_t n = set == TF_SET_CONTACT ? 1 : tf_solver_node_count(solver);
+    *nodes = malloc(n * sizeof **nodes);
+    if (*nodes == NULL) {
+        return -1;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        (*nodes)[i] = set == TF_SET_CONTACT ? s->contacts[contact].node : (uint32_t)i;
+    }
+    copy->outputs = (tf_outputs){.kind = set == TF_SET_CONTACT ? TF_OUT_CONTACT : TF_OUT_ALL,
+                                 .nodes = *nodes, .n_nodes = n};
+    return 0;
+}
+
+static int sweep_set(tf_sweep *sw, const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan,
+                     tf_output_set set, char *err, size_t errlen)
+{
+    tf_scene copy;
+    uint32_t *nodes;
+    tf_cases cases;
+    if (outputs_of(s, solver, set, plan->contact, &copy, &nodes) != 0 ||
+        tf_cases_build(&copy, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
+                       0, &cases, err, errlen) != 0) {
+        free(nodes);
+        return -1;
+    }
+    const tf_fitdata *d = &cases.train;
+    const size_t n = d->n_cases;
+    int rc = 0;
+    tf_info("sweep: %s (%u output points)", tf_output_set_name(set), d->n_out);
+    for (uint32_t p = 0; rc == 0 && p <= plan->max_degree; ++p) {
+        if (tf_terms(p) > n) {
+            continue;
+        }
+        tf_model *m = tf_fit_nodal(d, NULL, n, &p, "nodal", err, errlen);
+        rc = m ? measure(sw, m, set, &cases) : -1;
+    }
+    for (uint32_t p = 1; rc == 0 && p <= 2 && p <= plan->max_degree; ++p) {
+        for (uint32_t r = 1; rc == 0 && r <= plan->max_rank && r <= 3 * d->n_out && r <= n; ++r) {
+            const uint32_t orders[2] = {p, r};
+            tf_model *m = tf_fit_modal(d, NULL, n, orders, "modal", err, errlen);
+            rc = m ? measure(sw, m, set, &cases) : -1;
+        }
+    }
+    char why[320];
+    if (rc == 0 && set != TF_SET_CONTACT && tf_zhou_applicable(d, why, sizeof why) == 0) {
+        const tf_fitdata *axis[3] = {&cases.axis[0], &cases.axis[1], &cases.axis[2]};
+        tf_zhou_orders o;
+        rc = tf_zhou_select(axis, plan->folds, plan->seed, &o, NULL, err, errlen);
+        tf_model *m = rc == 0 ? tf_fit_zhou2017(axis, &o, "zhou2017", err, errlen) : NULL;
+        rc = m ? measure(sw, m, set, &cases) : -1;
+    }
+    if (rc == 0 && set == TF_SET_SCENE) { /* the contact inverse does not depend on the set */
+        for (uint32_t p = 1; rc == 0 && p <= plan->max_degree; ++p) {
+            tf_model *m = tf_fit_contact(d, NULL, n, &p, "contact", err, errlen);
+            if (m != NULL) {
+                m->node_ids[0] = s->contacts[plan->contact].node + 1;
+            }
+            rc = m ? measure(sw, m, set, &cases) : -1;
+        }
+    }
+    tf_cases_free(&cases);
+    free(nodes);
+    return rc;
+}
+
+/* On the front: no other candidate of the same set and kind is at least as
+ * fast and as accurate, and better in one. */
+static void mark_pareto(tf_sweep *sw)
+{
+    for (size_t i = 0; i < sw->n; ++i) {
+        tf_candidate *a = &sw->c[i];
+        a->pareto = isfinite(a->ns_native);
+        for (size_t k = 0; a->pareto && k < sw->n; ++k) {
+            const tf_candidate *b = &sw->c[k];
+            int same_kind = (a->family == TFIT_FAMILY_CONTACT) == (b->family == TFIT_FAMILY_CONTACT);
+            if (k == i || b->set != a->set || !same_kind || !isfinite(b->ns_native)) {
+                continue;
+            }
+            if (b->ns_native <= a->ns_native && b->heldout_max <= a->heldout_max &&
+                (b->ns_native < a->ns_native || b->heldout_max < a->heldout_max)) {
+                a->pareto = 0;
+            }
+        }
+    }
+}
+
+int tf_sweep_run(const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
+                 tf_sweep *sw, char *err, size_t errlen)
+{
+    memset(sw, 0, sizeof *sw);
+    sw->n_train = plan->n_train;
+    sw->n_heldout = plan->n_heldout;
+    for (int set = 0; set < TF_SET_COUNT; ++set) {
+        if ((sets & (1u << set)) && sweep_set(sw, s, solver, plan, (tf_output_set)set, err,
+                                              errlen) != 0) {
+            tf_sweep_free(sw);
+            return -1;
+        }
+    }
+    mark_pareto(sw);
+    return 0;
+}
+
+void tf_sweep_free(tf_sweep *sw)
+{
+    for (size_t i = 0; i < sw->n; ++i) {
+        if (sw->c[i].precision == TF_PREC_F32) {
+            tf_model_free(sw->c[i].model);
+        }
+    }
+    free(sw->c);
+    memset(sw, 0, sizeof *sw);
+}

@@ -1,0 +1,32 @@
+/*
+ * emit_budget.c — see emit_budget.h.  Cycle macros are integers (rounded
+ * up) so that firmware can _Static_assert them against its servo budget.
+ */
+#include "emit/emit_budget.h"
+
+#include <math.h>
+
+#include "cost/cycles.h"
+
+void tf_emit_budget_banner(FILE *f, const tf_model *m)
+{
+    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    fprintf(f,
+            " *       %llu instructions; Cortex-M4F <= %.0f cycles (%.2f us at 168 MHz), "
+            "Cortex-M7 ~%.0f (%.2f us at 480 MHz)\n",
+            (unsigned long long)m4.instructions, ceil(m4.cycles), m4.cycles / 168.0,
+            ceil(m7.cycles), m7.cycles / 480.0);
+}
+
+void tf_emit_budget_macros(FILE *f, const tf_model *m, const char *p)
+{
+    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    fprintf(f, "#define %s_INSNS_ARMV7EM %llu /* per call, gcc -O2 (docs/firmware.md) */\n", p,
+            (unsigned long long)m4.instructions);
+    fprintf(f, "#define %s_CYCLES_M4F %.0fu /* upper bound, zero-wait-state tables */\n", p,
+            ceil(m4.cycles));
+    fprintf(f, "#define %s_CYCLES_M4F_MIN %.0fu\n", p, ceil(m4.cycles_low));
+    fprintf(f, "#define %s_US_M4F_168MHZ %.2f\n", p, m4.cycles / tf_core_mhz(TF_CORE_M4F));
+    fprintf(f, "#define %s_CYCLES_M7 %.0fu /* estimate, +-30 %% */\n", p, ceil(m7.cycles));
+    fprintf(f, "#define %s_US_M7_480MHZ %.2f\n", p, m7.cycles / tf_core_mhz(TF_CORE_M7));
+}

@@ -1,0 +1,26 @@
+/*
+ * emit_budget.h — the firmware budget of a model in its generated header:
+ * instructions, estimated cycles and microseconds per evaluation on
+ * Cortex-M4F and Cortex-M7 (host/cost/cycles.c, docs/firmware.md).  Called by
+ * emit_header.c for every model.
+ */
+#ifndef TF_EMIT_BUDGET_H
+#define TF_EMIT_BUDGET_H
+
+#include <stdio.h>
+
+#include "model/model.h"
+
+/* Banner line(s) for the model's header comment. */
+void tf_emit_budget_banner(FILE *f, const tf_model *m);
+
+/* The macros, prefix = "TFIT_" + upper-case model name:
+ *   PREFIX_INSNS_ARMV7EM       instructions per call (arm-none-eabi-gcc -O2)
+ *   PREFIX_CYCLES_M4F          upper bound, zero-wait-state memory
+ *   PREFIX_CYCLES_M4F_MIN      the same stream at the fast end of each range
+ *   PREFIX_US_M4F_168MHZ       PREFIX_CYCLES_M4F at 168 MHz
+ *   PREFIX_CYCLES_M7           dual-issue model, +-30 %
+ *   PREFIX_US_M7_480MHZ */
+void tf_emit_budget_macros(FILE *f, const tf_model *m, const char *prefix);
+
+#endif /* TF_EMIT_BUDGET_H */

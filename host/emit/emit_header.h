@@ -1,0 +1,32 @@
+/*
+ * emit_header.h — writes models as one generated C header (NAME.h) and their
+ * golden vectors (NAME_golden.h), both atomically, in the format of
+ * docs/header-format.md.
+ */
+#ifndef TF_EMIT_HEADER_H
+#define TF_EMIT_HEADER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "model/model.h"
+
+typedef struct tf_emit_info {
+    const char *source;     /* scene file path, or a description of a built-in model */
+    int has_source_crc;     /* source_crc32 is the CRC-32 of the scene file's bytes */
+    uint32_t source_crc32;
+    const char *notes;      /* extra banner text, '\n'-separated lines, or NULL */
+    uint64_t golden_seed;   /* seed of the golden input design */
+} tf_emit_info;
+
+/* Validates every model, then writes path and its _golden.h sibling.  The
+ * file's base name (without .h) must be a C identifier in lower case; it
+ * names the include guard and the IMPLEMENTATION macro.  Returns 0, or -1
+ * with a message in err and nothing written. */
+int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
+                   const tf_emit_info *info, char *err, size_t errlen);
+
+/* The golden path for a header path: "dir/name.h" -> "dir/name_golden.h". */
+int tf_golden_path(const char *header_path, char *out, size_t outlen);
+
+#endif /* TF_EMIT_HEADER_H */

@@ -1,0 +1,168 @@
+/*
+ * emit_q31.c — see emit_q31.h.  The quantisation is a pure function of the
+ * model, so each part re-derives it rather than threading state through
+ * the emitter.
+ */
+#include "emit/emit_q31.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "model/q31.h"
+
+#define ERROR_SEED 0x51u /* fixed: the same header every time */
+
+static const char *unit(const tf_model *m)
+{
+    return m->family == TFIT_FAMILY_CONTACT ? "N" : "MM";
+}
+
+static const char *in_unit(const tf_model *m)
+{
+    return m->family == TFIT_FAMILY_CONTACT ? "mm" : "N";
+}
+
+static tf_q31 *measured(const tf_model *m, char *err, size_t errlen)
+{
+    tf_q31 *q = tf_q31_quantise(m, err, errlen);
+    if (q != NULL) {
+        tf_q31_measure(q, m, ERROR_SEED, TF_Q31_ERROR_CASES);
+    }
+    return q;
+}
+
+void tf_emit_q31_banner(FILE *f, const tf_model *m)
+{
+    char err[256];
+    tf_q31 *q = measured(m, err, sizeof err);
+    if (q == NULL) {
+        fprintf(f, " *       %s\n", err);
+        return;
+    }
+    fprintf(f,
+            " *       Q31 form tfit_%s_q31: input 2^%d %s, output 2^%d %s full scale; adds "
+            "%.3g %s (float32 path: %.3g)\n",
+            m->name, q->in_exp, in_unit(m), q->out_exp, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm",
+            q->added_error, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm", q->float_error);
+    tf_q31_free(q);
+}
+
+void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
+{
+    char err[256];
+    tf_q31 *q = measured(m, err, sizeof err);
+    if (q == NULL) {
+        return;
+    }
+    fprintf(f, "#define %s_Q31_IN_EXP %d /* input word x = value * 2^(31 - %d), %s */\n", p,
+            q->in_exp, q->in_exp, in_unit(m));
+    fprintf(f, "#define %s_Q31_OUT_EXP %d /* output value = word * 2^(%d - 31), %s */\n", p,
+            q->out_exp, q->out_exp, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm");
+    fprintf(f,
+            "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u envelope points; "
+            "float32: %.6g */\n",
+            p, unit(m), q->added_error, q->error_cases, q->float_error);
+    fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
+    fprintf(f, "extern const tfit_model_q31 tfit_%s_q31;\n", m->name);
+    tf_q31_free(q);
+}
+
+static void write_i32(FILE *f, const int32_t *v, size_t n, const char *comment)
+{
+    if (comment != NULL) {
+        fprintf(f, "    /* %s */\n", comment);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const char *sep = i % 6 == 0 ? "    " : " ";
+        if (v[i] == INT32_MIN) {
+            fprintf(f, "%s(-2147483647 - 1),", sep);
+        } else {
+            fprintf(f, "%s%d,", sep, v[i]);
+        }
+        if (i % 6 == 5 || i + 1 == n) {
+            fprintf(f, "\n");
+        }
+    }
+}
+
+void tf_emit_q31_definition(FILE *f, const tf_model *m)
+{
+    char err[256], note[96];
+    static const char comp[] = "xyz";
+    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    if (q == NULL) {
+        return;
+    }
+    const uint32_t t = tf_terms(q->degree);
+    fprintf(f, "static const int32_t tfit_%s_q31_coef[%u] = {\n", m->name, q->n_words);
+    write_i32(f, q->q, 3, "Q31 input map: centre (Q30 of 2^IN_EXP)");
+    write_i32(f, q->q + 3, 9, "W (row-major), then the projection's headroom H");
+    write_i32(f, q->q + 12, 1, NULL);
+    for (uint32_t o = 0; o < 3 * q->n_out; ++o) {
+        snprintf(note, sizeof note, "node %u %c: shift, then %u coefficients", m->node_ids[o / 3],
+                 comp[o % 3], t);
+        write_i32(f, q->q + TFIT_Q31_MAP_WORDS + o * (t + 1), t + 1, note);
+    }
+    fprintf(f, "};\n");
+    fprintf(f,
+            "const tfit_model_q31 tfit_%s_q31 = {\n    %uu, %uu, %uu, %uu, %uu,\n"
+            "    tfit_%s_q31_coef, tfit_%s_nodes,\n    0x%08xu\n};\n",
+            m->name, TFIT_Q31_API_VERSION, (unsigned)q->family, q->n_out, q->degree, q->n_words,
+            m->name, m->name, tf_q31_crc32(q));
+    tf_q31_free(q);
+}
+
+int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
+{
+    char err[256];
+    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    if (q == NULL) {
+        return 0;
+    }
+    int32_t in[TF_Q31_GOLDEN_MAX][3], status[TF_Q31_GOLDEN_MAX];
+    const size_t n_vec = tf_q31_golden_inputs(q, m, seed, in), n_out = 3 * (size_t)q->n_out;
+    int32_t *out = malloc(n_vec * n_out * sizeof *out);
+    if (out == NULL) {
+        tf_q31_free(q);
+        return -1;
+    }
+    for (size_t v = 0; v < n_vec; ++v) {
+        status[v] = (int32_t)tf_q31_ref_eval(q, in[v], out + v * n_out, NULL);
+    }
+    char upper[TF_NAME_MAX];
+    size_t k = 0;
+    for (; m->name[k] != '\0' && k + 1 < sizeof upper; ++k) {
+        upper[k] = (char)toupper((unsigned char)m->name[k]);
+    }
+    upper[k] = '\0';
+    fprintf(f, "\n#define TFIT_%s_Q31_GOLDEN_N %zu\n", upper, n_vec);
+    fprintf(f, "static const int32_t tfit_%s_q31_golden_in[%zu] = {\n", m->name, 3 * n_vec);
+    write_i32(f, &in[0][0], 3 * n_vec, NULL);
+    fprintf(f, "};\nstatic const int32_t tfit_%s_q31_golden_status[%zu] = {\n", m->name, n_vec);
+    write_i32(f, status, n_vec, NULL);
+    fprintf(f, "};\nstatic const int32_t tfit_%s_q31_golden_out[%zu] = {\n", m->name,
+            n_vec * n_out);
+    write_i32(f, out, n_vec * n_out, NULL);
+    fprintf(f,
+            "};\nstatic const tfit_golden_q31 tfit_%s_q31_golden = {\n    &tfit_%s_q31, %zuu, "
+            "tfit_%s_q31_golden_in, tfit_%s_q31_golden_status, tfit_%s_q31_golden_out\n};\n",
+            m->name, m->name, n_vec, m->name, m->name, m->name);
+    free(out);
+    tf_q31_free(q);
+    return 0;
+}
+
+void tf_emit_q31_sets(FILE *f, const char *base_upper, tf_model *const *models, size_t n)
+{
+    char err[256];
+    fprintf(f, "#define TFIT_%s_GOLDEN_Q31_SETS {", base_upper);
+    for (size_t i = 0; i < n; ++i) {
+        tf_q31 *q = tf_q31_quantise(models[i], err, sizeof err);
+        if (q != NULL) {
+            fprintf(f, "&tfit_%s_q31_golden, ", models[i]->name);
+        }
+        tf_q31_free(q);
+    }
+    fprintf(f, "0}\n");
+}

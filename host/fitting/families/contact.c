@@ -1,0 +1,148 @@
+/*
+ * contact.c — the contact inverse (haptic impedance): force at the
+ * contact site as a polynomial of the contact site's displacement.
+ *
+ * The input map uses the contact stiffness: a linear fit delta = delta0 + C f
+ * gives K = C^-1, and g = K (delta - delta_c) / R with delta_c the
+ * displacement at the envelope centre, so g is the normalised force for a
+ * linear tissue and the envelope in displacement is exactly the image of the
+ * force ball.  The polynomial then only has to carry the nonlinearity.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "fitting/fit_common.h"
+#include "fitting/families/family.h"
+
+/* Inverse of a 3x3 row-major matrix; returns its reciprocal condition
+ * estimate |det| / (||c||^3) (0 when singular). */
+static double inverse3(const double c[9], double k[9])
+{
+    double co[9] = {c[4] * c[8] - c[5] * c[7], c[5] * c[6] - c[3] * c[8], c[3] * c[7] - c[4] * c[6],
+                    c[2] * c[7] - c[1] * c[8], c[0] * c[8] - c[2] * c[6], c[1] * c[6] - c[0] * c[7],
+                    c[1] * c[5] - c[2] * c[4], c[2] * c[3] - c[0] * c[5], c[0] * c[4] - c[1] * c[3]};
+    double det = c[0] * co[0] + c[1] * co[1] + c[2] * co[2];
+    double norm = 0;
+    for (int i = 0; i < 9; ++i) {
+        norm = fmax(norm, fabs(c[i]));
+    }
+    if (det == 0 || norm == 0) {
+        return 0;
+    }
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            k[3 * i + j] = co[3 * j + i] / det; /* adjugate is the transposed cofactor matrix */
+        }
+    }
+    return fabs(det) / (norm * norm * norm);
+}
+
+/* delta = delta0 + C f over the selected cases. */
+static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, double delta0[3],
+                             double c[9], char *err, size_t errlen)
+{
+    double *a = malloc(m * 4 * sizeof *a), *y = malloc(m * 3 * sizeof *y), x[12];
+    if (a == NULL || y == NULL) {
+        free(a);
+        free(y);
+        snprintf(err, errlen, "contact: out of memory");
+        return -1;
+    }
+    for (size_t i = 0; i < m; ++i) {
+        size_t n = tf_fit_case(idx, i);
+        a[i] = 1;
+        for (int k = 0; k < 3; ++k) {
+            a[i + (size_t)(k + 1) * m] = d->force[n][k];
+            y[i + (size_t)k * m] = d->contact[n][k];
+        }
+    }
+    int rc = tf_fit_lsq(a, m, 4, y, 3, x, err, errlen);
+    free(a);
+    free(y);
+    if (rc == 0) {
+        for (int i = 0; i < 3; ++i) {
+            delta0[i] = x[4 * i];
+            for (int k = 0; k < 3; ++k) {
+                c[3 * i + k] = x[4 * i + 1 + k];
+            }
+        }
+    }
+    return rc;
+}
+
+tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
+                         const char *name, char *err, size_t errlen)
+{
+    const uint32_t p = orders[0];
+    double delta0[3], c[9], k[9], w[9], x0[3];
+    double(*g)[3] = malloc(m * sizeof *g);
+    if (g == NULL) {
+        snprintf(err, errlen, "contact: out of memory");
+        return NULL;
+    }
+    for (size_t i = 0; i < m; ++i) { /* forces normalised to the envelope */
+        for (int a = 0; a < 3; ++a) {
+            g[i][a] = (d->force[tf_fit_case(idx, i)][a] - d->centre[a]) / d->radius;
+        }
+    }
+    int spans = tf_fit_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
+    free(g);
+    if (spans != 0 || linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
+        return NULL;
+    }
+    if (inverse3(c, k) < 1e-12) {
+        snprintf(err, errlen,
+                 "contact: the contact site's compliance is singular (the site does not move "
+                 "under some force direction): no impedance model");
+        return NULL;
+    }
+    tf_model *model = tf_model_new(name, TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
+    if (model == NULL) {
+        return NULL;
+    }
+    for (int i = 0; i < 3; ++i) {
+        x0[i] = delta0[i];
+        for (int j = 0; j < 3; ++j) {
+            x0[i] += c[3 * i + j] * d->centre[j];
+        }
+    }
+    for (int i = 0; i < 9; ++i) {
+        w[i] = k[i] / d->radius;
+    }
+    tf_model_set_map(model, x0, w);
+    model->node_ids[0] = 0; /* set by the caller: the contact node */
+    if (tf_fit_spans(model, d->contact, idx, m, err, errlen) != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
+    const uint32_t t = tf_terms(p);
+    double *a = tf_fit_design(model, d->contact, idx, m, p);
+    double *y = malloc(m * 3 * sizeof *y), x[3 * TFIT_MAX_TERMS_HOST];
+    int rc = -1;
+    if (a != NULL && y != NULL) {
+        for (size_t i = 0; i < m; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                y[i + (size_t)j * m] = d->force[tf_fit_case(idx, i)][j];
+            }
+        }
+        rc = tf_fit_lsq(a, m, t, y, 3, x, err, errlen);
+    } else {
+        snprintf(err, errlen, "contact: out of memory");
+    }
+    if (rc == 0) {
+        float *coef = tf_model_tables(model);
+        for (int j = 0; j < 3; ++j) {
+            for (uint32_t q = 0; q < t; ++q) {
+                coef[(uint32_t)j * t + q] = (float)x[q + (uint32_t)j * t];
+            }
+        }
+    }
+    free(a);
+    free(y);
+    if (rc != 0) {
+        tf_model_free(model);
+        return NULL;
+    }
+    return model;
+}

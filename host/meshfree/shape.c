@@ -1,0 +1,238 @@
+/*
+ * shape.c — supports and RPIM shape functions at a point (shape.h).
+ */
+#include "meshfree/shape.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int tf_shape_init(tf_shape *sh, const tf_scene *s)
+{
+    const tf_solver_opts *o = &s->solver;
+    sh->cloud = &s->cloud;
+    sh->rpim.shape = o->alpha_c * o->d_c;
+    sh->rpim.q = o->q;
+    sh->rpim.poly = o->polynomial;
+    sh->centre = o->centre;
+    sh->rcond_warn = o->rcond_warn;
+    sh->scale = 0;
+    for (int a = 0; a < 3; ++a) {
+        sh->radius[a] = o->support * s->cloud.spacing[a];
+        sh->scale = fmax(sh->scale, sh->radius[a]);
+    }
+    if (tf_cells_init(&sh->cells, s->box_min, s->box_max, o->cells, o->gauss) != 0) {
+        return -1;
+    }
+    return tf_nbr_build(&sh->nbr, s->cloud.xyz, s->cloud.n, sh->radius);
+}
+
+void tf_shape_free(tf_shape *sh)
+{
+    tf_nbr_free(&sh->nbr);
+}
+
+void tf_shape_stats_reset(tf_shape_stats *st)
+{
+    st->systems = st->ill = 0;
+    st->min_rcond = INFINITY;
+    st->worst_at[0] = st->worst_at[1] = st->worst_at[2] = 0;
+    st->min_nodes = SIZE_MAX;
+    st->max_nodes = 0;
+}
+
+void tf_shape_work_init(tf_shape_work *w)
+{
+    w->rw.cap = w->rw.rhs_cap = 0;
+    w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = NULL;
+    w->rw.ipiv = w->rw.iwork = NULL;
+    w->idx = NULL;
+    w->phi = w->dphi = NULL;
+    w->n = w->cap = w->pcap = 0;
+    w->cell = SIZE_MAX;
+    w->err[0] = '\0';
+    tf_shape_stats_reset(&w->st);
+}
+
+void tf_shape_work_free(tf_shape_work *w)
+{
+    tf_rpim_work_free(&w->rw);
+    free(w->idx);
+    free(w->phi);
+    free(w->dphi);
+    tf_shape_work_init(w);
+}
+
+/* Room for supports of need nodes and np points. */
+static int grow(tf_shape_work *w, size_t need, size_t np)
+{
+    size_t cap = need > w->cap ? need + need / 2 + 16 : w->cap;
+    size_t pcap = np > w->pcap ? np : w->pcap;
+    if (cap != w->cap) {
+        tf_rpim_work_free(&w->rw);
+        free(w->idx);
+        w->idx = malloc(cap * sizeof *w->idx);
+        w->cell = SIZE_MAX;
+        if (w->idx == NULL || tf_rpim_work_init(&w->rw, cap) != 0) {
+            w->cap = w->pcap = 0;
+            snprintf(w->err, sizeof w->err, "out of memory for a support of %zu nodes", need);
+            return -1;
+        }
+    }
+    if (cap != w->cap || pcap != w->pcap) {
+        free(w->phi);
+        free(w->dphi);
+        w->phi = malloc(cap * pcap * sizeof *w->phi);
+        w->dphi = malloc(3 * cap * pcap * sizeof *w->dphi);
+        if (w->phi == NULL || w->dphi == NULL) {
+            w->cap = w->pcap = 0;
+            snprintf(w->err, sizeof w->err, "out of memory for shape functions");
+            return -1;
+        }
+    }
+    w->cap = cap;
+    w->pcap = pcap;
+    return 0;
+}
+
+size_t tf_shape_cell(const tf_shape *sh, const double x[3])
+{
+    const tf_cells *c = &sh->cells;
+    size_t ijk[3];
+    for (int a = 0; a < 3; ++a) {
+        double t = floor((x[a] - c->lo[a]) / c->size[a]);
+        ijk[a] = t < 0 ? 0 : t >= c->n[a] ? c->n[a] - 1 : (size_t)t;
+    }
+    return ijk[0] + c->n[0] * (ijk[1] + (size_t)c->n[1] * ijk[2]);
+}
+
+/* Support centre for x: x itself, or the centre of its cell. */
+static void support_centre(const tf_shape *sh, const double x[3], size_t cell, double at[3])
+{
+    if (sh->centre == TF_SUPPORT_CELL) {
+        double half[3];
+        tf_cells_box(&sh->cells, cell, at, half);
+    } else {
+        at[0] = x[0];
+        at[1] = x[1];
+        at[2] = x[2];
+    }
+}
+
+int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
+{
+    double at[3];
+    support_centre(sh, x, cell, at);
+    size_t n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+    if (n > w->cap) {
+        if (grow(w, n, w->pcap ? w->pcap : 1) != 0) {
+            return -1;
+        }
+        n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+    }
+    w->n = n;
+    if (n == 0) {
+        snprintf(w->err, sizeof w->err,
+                 "no node within the support around (%g, %g, %g) mm: raise solver.support", at[0],
+                 at[1], at[2]);
+        return -1;
+    }
+    return 0;
+}
+
+static void record(const tf_shape *sh, tf_shape_stats *st, double rcond, const double at[3],
+                   size_t n)
+{
+    st->systems++;
+    st->ill += rcond < sh->rcond_warn;
+    if (rcond < st->min_rcond) {
+        st->min_rcond = rcond;
+        st->worst_at[0] = at[0];
+        st->worst_at[1] = at[1];
+        st->worst_at[2] = at[2];
+    }
+    st->min_nodes = n < st->min_nodes ? n : st->min_nodes;
+    st->max_nodes = n > st->max_nodes ? n : st->max_nodes;
+}
+
+/* Factorises the support around x (cell mode: of the cell) unless the
+ * cell's system is already factorised. */
+static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
+{
+    if (sh->centre == TF_SUPPORT_CELL && w->cell == cell) {
+        return 0;
+    }
+    double at[3], rcond;
+    support_centre(sh, x, cell, at);
+    if (tf_shape_support(sh, w, x, cell) != 0) {
+        return -1;
+    }
+    if (tf_rpim_factor(&sh->rpim, &w->rw, sh->cloud->xyz, w->idx, w->n, at, sh->scale,
+                       &rcond) != 0) {
+        snprintf(w->err, sizeof w->err,
+                 "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular to "
+                 "machine precision: too few nodes or all in one plane (raise "
+                 "solver.support), or a multiquadric too flat for the spacing (lower "
+                 "solver.rbf.d_c)",
+                 w->n, at[0], at[1], at[2]);
+        w->cell = SIZE_MAX;
+        return -1;
+    }
+    record(sh, &w->st, rcond, at, w->n);
+    w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
+    return 0;
+}
+
+static int evaluate(tf_shape_work *w, const double *x, size_t np, int deriv)
+{
+    if (np > w->pcap && grow(w, w->n, np) != 0) {
+        return -1;
+    }
+    if (tf_rpim_eval(&w->rw, x, np, w->phi, deriv ? w->dphi : NULL) != 0) {
+        snprintf(w->err, sizeof w->err, "out of memory for shape functions");
+        return -1;
+    }
+    return 0;
+}
+
+int tf_shape_at(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell, int deriv)
+{
+    if (prepare(sh, w, x, cell) != 0) {
+        return -1;
+    }
+    return evaluate(w, x, 1, deriv);
+}
+
+int tf_shape_cell_points(const tf_shape *sh, tf_shape_work *w, size_t cell, const double *x,
+                         size_t np, int deriv)
+{
+    if (sh->centre != TF_SUPPORT_CELL || prepare(sh, w, x, cell) != 0) {
+        return -1;
+    }
+    return evaluate(w, x, np, deriv);
+}
+
+void tf_shape_stats_merge(tf_shape_stats *into, const tf_shape_stats *from)
+{
+    into->systems += from->systems;
+    into->ill += from->ill;
+    int worse = from->min_rcond < into->min_rcond;
+    if (from->min_rcond == into->min_rcond) {
+        /* Ties go to the lexicographically smallest place: the report does
+         * not depend on which thread met it first. */
+        for (int a = 0; a < 3; ++a) {
+            if (from->worst_at[a] != into->worst_at[a]) {
+                worse = from->worst_at[a] < into->worst_at[a];
+                break;
+            }
+        }
+    }
+    if (worse) {
+        into->min_rcond = from->min_rcond;
+        for (int a = 0; a < 3; ++a) {
+            into->worst_at[a] = from->worst_at[a];
+        }
+    }
+    into->min_nodes = from->min_nodes < into->min_nodes ? from->min_nodes : into->min_nodes;
+    into->max_nodes = from->max_nodes > into->max_nodes ? from->max_nodes : into->max_nodes;
+}

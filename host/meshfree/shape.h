@@ -1,0 +1,86 @@
+/*
+ * shape.h — the trial functions of the Galerkin method at a point: which
+ * nodes support it and their RPIM shape functions (seed §2.2-2.3).
+ *
+ * Two choices of support domain, both an ellipsoid of semi-axes
+ * alpha_s x nodal spacing per axis:
+ *   point: centred at the evaluation point itself (the seed: "a support
+ *          domain of a certain size is centered there"); one local system
+ *          per point;
+ *   cell:  centred at the centre of the background cell holding the point;
+ *          every point of a cell shares one node set and one factorised
+ *          local system, which makes assembly several times faster.
+ */
+#ifndef TF_SHAPE_H
+#define TF_SHAPE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "meshfree/neighbours.h"
+#include "meshfree/quadrature.h"
+#include "meshfree/rpim.h"
+#include "scene/scene.h"
+
+typedef struct tf_shape {
+    const tf_cloud *cloud;
+    tf_rpim rpim;
+    tf_nbr nbr;
+    double radius[3];  /* support semi-axes, mm */
+    double scale;      /* largest semi-axis: distances are divided by it */
+    tf_cells cells;
+    tf_support_centre centre;
+    double rcond_warn;
+} tf_shape;
+
+/* Conditioning and size of the local systems met by one worker. */
+typedef struct tf_shape_stats {
+    size_t systems;     /* local systems factorised */
+    size_t ill;         /* of which with rcond < rcond_warn */
+    double min_rcond;
+    double worst_at[3]; /* where min_rcond occurred */
+    size_t min_nodes, max_nodes;
+} tf_shape_stats;
+
+typedef struct tf_shape_work {
+    tf_rpim_work rw;
+    uint32_t *idx;   /* support nodes, ascending */
+    size_t n, cap;   /* support size, node capacity */
+    size_t pcap;     /* point capacity of phi, dphi */
+    double *phi;     /* phi[p n + i] at point p */
+    double *dphi;    /* dphi[(3 p + a) n + i] */
+    size_t cell;     /* cell whose system is factorised (cell mode), or SIZE_MAX */
+    tf_shape_stats st;
+    char err[256];
+} tf_shape_work;
+
+/* From a scene's cloud and solver options.  Returns 0, or -1 (out of memory). */
+int tf_shape_init(tf_shape *sh, const tf_scene *s);
+void tf_shape_free(tf_shape *sh);
+
+void tf_shape_work_init(tf_shape_work *w);
+void tf_shape_work_free(tf_shape_work *w);
+
+/* Shape functions (and gradients when deriv) at x, which lies in background
+ * cell `cell` (tf_shape_cell).  Fills w->idx, w->n, w->phi, w->dphi (point
+ * 0).  Returns 0, or -1 with a message in w->err (singular or empty
+ * support, out of memory). */
+int tf_shape_at(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell, int deriv);
+
+/* Cell-centred supports only: the np points x[3p ..] of one cell share its
+ * support; one solve gives all their shape functions (points 0 .. np-1 in
+ * w->phi, w->dphi). */
+int tf_shape_cell_points(const tf_shape *sh, tf_shape_work *w, size_t cell, const double *x,
+                         size_t np, int deriv);
+
+/* The nodes of the support used at x in cell (no shape functions). */
+int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell);
+
+/* Background cell holding x (clamped to the box). */
+size_t tf_shape_cell(const tf_shape *sh, const double x[3]);
+
+/* Merges worker statistics (order-independent: sums, min, max). */
+void tf_shape_stats_merge(tf_shape_stats *into, const tf_shape_stats *from);
+void tf_shape_stats_reset(tf_shape_stats *st);
+
+#endif /* TF_SHAPE_H */

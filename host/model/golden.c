@@ -1,0 +1,141 @@
+/*
+ * golden.c — golden input vectors (see golden.h).  Points are built in the
+ * normalised space u (unit ball) and mapped back to raw inputs with the
+ * inverse of the model's W, so they exercise every model's own envelope.
+ */
+#include "model/golden.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "base/rng.h"
+
+/* Inverse of the model's W (3x3, from its float entries) by cofactors. */
+static void w_inverse(const tf_model *m, double inv[9])
+{
+    double w[9];
+    for (int i = 0; i < 9; ++i) {
+        w[i] = (double)m->coef[3 + i];
+    }
+    double c0 = w[4] * w[8] - w[5] * w[7];
+    double c1 = w[5] * w[6] - w[3] * w[8];
+    double c2 = w[3] * w[7] - w[4] * w[6];
+    double det = w[0] * c0 + w[1] * c1 + w[2] * c2;
+    inv[0] = c0 / det;
+    inv[1] = (w[2] * w[7] - w[1] * w[8]) / det;
+    inv[2] = (w[1] * w[5] - w[2] * w[4]) / det;
+    inv[3] = c1 / det;
+    inv[4] = (w[0] * w[8] - w[2] * w[6]) / det;
+    inv[5] = (w[2] * w[3] - w[0] * w[5]) / det;
+    inv[6] = c2 / det;
+    inv[7] = (w[1] * w[6] - w[0] * w[7]) / det;
+    inv[8] = (w[0] * w[4] - w[1] * w[3]) / det;
+}
+
+typedef struct builder {
+    float (*in)[3];
+    size_t n;
+    double inv[9];
+    const float *x0;
+} builder;
+
+static void put(builder *b, float x, float y, float z)
+{
+    if (b->n < TF_GOLDEN_MAX) {
+        b->in[b->n][0] = x;
+        b->in[b->n][1] = y;
+        b->in[b->n][2] = z;
+        b->n++;
+    }
+}
+
+/* Raw input x0 + W^-1 (scale u). */
+static void put_u(builder *b, const double u[3], double scale)
+{
+    float x[3];
+    for (int i = 0; i < 3; ++i) {
+        double v = (double)b->x0[i];
+        for (int k = 0; k < 3; ++k) {
+            v += b->inv[3 * i + k] * u[k] * scale;
+        }
+        x[i] = (float)v;
+    }
+    put(b, x[0], x[1], x[2]);
+}
+
+static void random_unit(tf_rng *r, double u[3])
+{
+    double n2;
+    do {
+        for (int i = 0; i < 3; ++i) {
+            u[i] = tf_rng_range(r, -1.0, 1.0);
+        }
+        n2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    } while (n2 > 1.0 || n2 < 1e-6);
+    double n = sqrt(n2);
+    for (int i = 0; i < 3; ++i) {
+        u[i] /= n;
+    }
+}
+
+static float float_from_bits(uint32_t bits)
+{
+    float f;
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3])
+{
+    builder b = {.in = in, .n = 0, .x0 = m->coef};
+    tf_rng r = {seed};
+    double u[3];
+    w_inverse(m, b.inv);
+
+    put(&b, 0.0f, 0.0f, 0.0f);
+    put(&b, m->coef[0], m->coef[1], m->coef[2]); /* envelope centre */
+    for (int k = 0; k < 24; ++k) {               /* inside, radius uniform in [0, 1) */
+        random_unit(&r, u);
+        put_u(&b, u, tf_rng_uniform(&r));
+    }
+    for (int axis = 0; axis < 3; ++axis) { /* on the boundary: +-axes ... */
+        for (int sign = -1; sign <= 1; sign += 2) {
+            double e[3] = {0, 0, 0};
+            e[axis] = sign;
+            put_u(&b, e, 1.0);
+        }
+    }
+    for (int corner = 0; corner < 8; ++corner) { /* ... cube diagonals ... */
+        double s = 1.0 / sqrt(3.0);
+        double d[3] = {(corner & 1) ? s : -s, (corner & 2) ? s : -s, (corner & 4) ? s : -s};
+        put_u(&b, d, 1.0);
+    }
+    for (int k = 0; k < 4; ++k) { /* ... random directions */
+        random_unit(&r, u);
+        put_u(&b, u, 1.0);
+    }
+    for (int k = 0; k < 4; ++k) { /* beyond: 10x and 1e30x */
+        random_unit(&r, u);
+        put_u(&b, u, 10.0);
+        put_u(&b, u, 1e30);
+    }
+    put(&b, FLT_MAX, -FLT_MAX, FLT_MAX / 3);
+    put(&b, -FLT_MAX, 0.0f, 0.0f);
+    put(&b, 1e38f, 1e-38f, -1e38f);
+    /* subnormal-sized and signed zeros */
+    put(&b, 1e-40f, -1e-42f, float_from_bits(1u));
+    put(&b, FLT_MIN, -FLT_MIN, 0.0f);
+    put(&b, float_from_bits(0x80000001u), 0.0f, 0.0f);
+    put(&b, -0.0f, -0.0f, -0.0f);
+    /* NaN and Inf, alone and mixed with finite values */
+    put(&b, NAN, 0.0f, 0.0f);
+    put(&b, 0.0f, -NAN, 1.0f);
+    put(&b, 0.25f, 0.5f, float_from_bits(0x7f800001u)); /* signalling NaN */
+    put(&b, float_from_bits(0x7fc12345u), 0.0f, 0.0f);  /* NaN with payload */
+    put(&b, INFINITY, 0.0f, 0.0f);
+    put(&b, 0.0f, -INFINITY, 0.0f);
+    put(&b, INFINITY, -INFINITY, NAN);
+    put(&b, 0.5f, 0.5f, INFINITY);
+    return b.n;
+}

@@ -1,0 +1,392 @@
+/*
+ * model.c — host-side model tables: allocation, input map, CRC, validation
+ * and operation counts.  The sizes and bounds here are written from
+ * docs/header-format.md, independently of target/src, so that the tests
+ * compare two implementations of one specification.
+ */
+#include "model/model.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+/* One bit of margin under the target's limits (2^100, 2^64, 2^56): the
+ * target sums in float, the host in double. */
+#define BOUND_LIMIT 0x1p99
+#define X0_LIMIT 0x1p63
+#define W_LIMIT 0x1p55
+
+static const char *const family_names[] = {NULL, "nodal", "modal", "zhou2017", "contact"};
+
+const char *tf_family_name(tfit_family f)
+{
+    return (f >= TFIT_FAMILY_NODAL && f <= TFIT_FAMILY_CONTACT) ? family_names[f] : NULL;
+}
+
+tfit_family tf_family_from_name(const char *name)
+{
+    for (int f = TFIT_FAMILY_NODAL; f <= TFIT_FAMILY_CONTACT; ++f) {
+        if (strcmp(name, family_names[f]) == 0) {
+            return (tfit_family)f;
+        }
+    }
+    return (tfit_family)0;
+}
+
+uint32_t tf_terms(uint32_t p)
+{
+    return (p + 1) * (p + 2) * (p + 3) / 6;
+}
+
+static uint32_t zhou_rows(const uint32_t *dims, int pair)
+{
+    return dims[3 + 3 * pair] + dims[4 + 3 * pair] + 1;
+}
+
+uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims, uint32_t n_dims)
+{
+    if (n_out == 0 || n_out > (1u << 20)) {
+        return 0;
+    }
+    uint64_t n = TFIT_INPUT_MAP_FLOATS;
+    switch (family) {
+    case TFIT_FAMILY_CONTACT: /* same layout as nodal, one output point */
+    case TFIT_FAMILY_NODAL:
+        if (n_dims != 1 || dims[0] > TFIT_MAX_DEGREE || (family == TFIT_FAMILY_CONTACT && n_out != 1)) {
+            return 0;
+        }
+        n += 3ull * n_out * tf_terms(dims[0]);
+        break;
+    case TFIT_FAMILY_MODAL:
+        if (n_dims != 2 || dims[0] > TFIT_MAX_DEGREE || dims[1] == 0 || dims[1] > TFIT_MAX_RANK) {
+            return 0;
+        }
+        n += (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
+        break;
+    case TFIT_FAMILY_ZHOU2017:
+        if (n_dims != TFIT_ZHOU2017_DIMS) {
+            return 0;
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (dims[a] > TFIT_MAX_DEGREE) {
+                return 0;
+            }
+            n += dims[a] + 2;
+        }
+        for (int pair = 0; pair < 9; ++pair) {
+            const uint32_t *o = dims + 3 + 3 * pair;
+            if (o[0] > TFIT_ZHOU_MAX_ORDER || o[1] > TFIT_ZHOU_MAX_ORDER || o[2] > TFIT_MAX_DEGREE) {
+                return 0;
+            }
+            n += (uint64_t)zhou_rows(dims, pair) * (o[2] + 1);
+        }
+        n += 2ull * n_out;
+        break;
+    default:
+        return 0;
+    }
+    return n > UINT32_MAX ? 0 : (uint32_t)n;
+}
+
+tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, const uint32_t *dims,
+                       uint32_t n_dims, char *err, size_t errlen)
+{
+    uint32_t n_coef = tf_model_ncoef(family, n_out, dims, n_dims);
+    if (n_coef == 0) {
+        snprintf(err, errlen, "model '%s': invalid shape for family %s (n_out %u, %u dims)", name,
+                 tf_family_name(family) ? tf_family_name(family) : "?", n_out, n_dims);
+        return NULL;
+    }
+    if (strlen(name) >= TF_NAME_MAX) {
+        snprintf(err, errlen, "model name '%s' longer than %d characters", name, TF_NAME_MAX - 1);
+        return NULL;
+    }
+    tf_model *m = calloc(1, sizeof *m);
+    float *coef = calloc(n_coef, sizeof *coef);
+    uint32_t *ids = calloc(n_out, sizeof *ids);
+    if (m == NULL || coef == NULL || ids == NULL) {
+        free(m);
+        free(coef);
+        free(ids);
+        snprintf(err, errlen, "out of memory for model '%s' (%u coefficients)", name, n_coef);
+        return NULL;
+    }
+    snprintf(m->name, sizeof m->name, "%s", name);
+    m->family = family;
+    m->n_out = n_out;
+    m->n_dims = n_dims;
+    memcpy(m->dims, dims, n_dims * sizeof *dims);
+    m->n_coef = n_coef;
+    m->coef = coef;
+    m->node_ids = ids;
+    m->envelope_radius = 0.0;
+    m->heldout_max = m->heldout_rms = m->heldout_rel_max = NAN;
+    const double zero[3] = {0, 0, 0};
+    tf_model_set_ball(m, zero, 1.0);
+    return m;
+}
+
+void tf_model_free(tf_model *m)
+{
+    if (m != NULL) {
+        free(m->coef);
+        free(m->node_ids);
+        free(m);
+    }
+}
+
+tf_model *tf_model_clone(const tf_model *m)
+{
+    tf_model *c = malloc(sizeof *c);
+    float *coef = malloc(m->n_coef * sizeof *coef);
+    uint32_t *ids = malloc(m->n_out * sizeof *ids);
+    if (c == NULL || coef == NULL || ids == NULL) {
+        free(c);
+        free(coef);
+        free(ids);
+        return NULL;
+    }
+    *c = *m;
+    memcpy(coef, m->coef, m->n_coef * sizeof *coef);
+    memcpy(ids, m->node_ids, m->n_out * sizeof *ids);
+    c->coef = coef;
+    c->node_ids = ids;
+    return c;
+}
+
+void tf_model_set_map(tf_model *m, const double x0[3], const double w[9])
+{
+    for (int i = 0; i < 3; ++i) {
+        m->coef[i] = (float)x0[i];
+    }
+    for (int i = 0; i < 9; ++i) {
+        m->coef[3 + i] = (float)w[i];
+    }
+    m->envelope_radius = 0.0;
+}
+
+void tf_model_set_ball(tf_model *m, const double centre[3], double radius)
+{
+    const double w[9] = {1 / radius, 0, 0, 0, 1 / radius, 0, 0, 0, 1 / radius};
+    tf_model_set_map(m, centre, w);
+    m->envelope_radius = radius;
+}
+
+float *tf_model_tables(tf_model *m)
+{
+    return m->coef + TFIT_INPUT_MAP_FLOATS;
+}
+
+uint32_t tf_crc32_u32(uint32_t crc, uint32_t w)
+{
+    const unsigned char b[4] = {(unsigned char)w, (unsigned char)(w >> 8), (unsigned char)(w >> 16),
+                                (unsigned char)(w >> 24)};
+    return (uint32_t)crc32(crc, b, 4);
+}
+
+uint32_t tf_model_crc32(const tf_model *m)
+{
+    uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
+    crc = tf_crc32_u32(crc, TFIT_API_VERSION);
+    crc = tf_crc32_u32(crc, (uint32_t)m->family);
+    crc = tf_crc32_u32(crc, m->n_out);
+    crc = tf_crc32_u32(crc, m->n_dims);
+    crc = tf_crc32_u32(crc, m->n_coef);
+    for (uint32_t i = 0; i < m->n_dims; ++i) {
+        crc = tf_crc32_u32(crc, m->dims[i]);
+    }
+    for (uint32_t i = 0; i < m->n_coef; ++i) {
+        uint32_t bits;
+        memcpy(&bits, &m->coef[i], sizeof bits);
+        crc = tf_crc32_u32(crc, bits);
+    }
+    for (uint32_t i = 0; i < m->n_out; ++i) {
+        crc = tf_crc32_u32(crc, m->node_ids[i]);
+    }
+    return crc;
+}
+
+/* Sum of |c_k| tau^k, the bound of a polynomial for |x| <= tau. */
+static double abs_poly(const float *c, uint32_t order, double tau)
+{
+    double s = 0, pw = 1;
+    for (uint32_t k = 0; k <= order; ++k, pw *= tau) {
+        s += fabs((double)c[k]) * pw;
+    }
+    return s;
+}
+
+static int bound_fail(double b, const char *what, const tf_model *m, uint32_t index, char *err,
+                      size_t errlen)
+{
+    if (b <= BOUND_LIMIT) {
+        return 0;
+    }
+    snprintf(err, errlen,
+             "model '%s': %s %u can reach %g, beyond the float-safe bound 2^99 (non-finite or "
+             "ill-scaled coefficients)",
+             m->name, what, index, b);
+    return 1;
+}
+
+static int validate_ranges(const tf_model *m, char *err, size_t errlen)
+{
+    const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
+    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
+        uint32_t t = tf_terms(m->dims[0]);
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+            if (bound_fail(abs_poly(c + o * t, t - 1, 1.0), "output", m, o, err, errlen)) {
+                return 1;
+            }
+        }
+    } else if (m->family == TFIT_FAMILY_MODAL) {
+        uint32_t t = tf_terms(m->dims[0]), r = m->dims[1];
+        double amax[TFIT_MAX_RANK];
+        for (uint32_t k = 0; k < r; ++k) {
+            amax[k] = abs_poly(c + k * t, t - 1, 1.0);
+            if (bound_fail(amax[k], "mode amplitude", m, k, err, errlen)) {
+                return 1;
+            }
+        }
+        const float *u = c + r * t;
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+            double b = 0;
+            for (uint32_t k = 0; k < r; ++k) {
+                b += fabs((double)u[o * r + k]) * amax[k];
+            }
+            if (bound_fail(b, "output", m, o, err, errlen)) {
+                return 1;
+            }
+        }
+    } else {
+        double tau[3], comp[3] = {0, 0, 0};
+        for (int a = 0; a < 3; ++a) {
+            double d = abs_poly(c, m->dims[a], 1.0);
+            c += m->dims[a] + 1;
+            double t = d * fabs((double)*c++);
+            if (bound_fail(d, "contact displacement of axis", m, (uint32_t)a, err, errlen) ||
+                bound_fail(t, "normalised contact displacement of axis", m, (uint32_t)a, err,
+                           errlen)) {
+                return 1;
+            }
+            /* Chebyshev series in |t| <= tau: |T_k|, |U_k| <= (2 tau)^k
+             * (header-format.md §8) */
+            tau[a] = 2 * (t > 1 ? t : 1);
+        }
+        for (int pair = 0; pair < 9; ++pair) {
+            uint32_t rows = zhou_rows(m->dims, pair), k = m->dims[5 + 3 * pair];
+            for (uint32_t i = 0; i < rows; ++i, c += k + 1) {
+                comp[pair % 3] += abs_poly(c, k, tau[pair / 3]);
+            }
+        }
+        for (uint32_t j = 0; j < 2 * m->n_out; ++j) {
+            if (!(fabs((double)c[j]) <= 1.0)) {
+                snprintf(err, errlen,
+                         "model '%s': normalised node coordinate %u is %g, outside [-1, 1]",
+                         m->name, j, (double)c[j]);
+                return 1;
+            }
+        }
+        for (uint32_t k = 0; k < 3; ++k) {
+            if (bound_fail(comp[k], "displacement component", m, k, err, errlen)) {
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+int tf_model_validate(const tf_model *m, char *err, size_t errlen)
+{
+    if (tf_model_ncoef(m->family, m->n_out, m->dims, m->n_dims) != m->n_coef) {
+        snprintf(err, errlen, "model '%s': table size %u does not match its family and orders",
+                 m->name, m->n_coef);
+        return 1;
+    }
+    for (int i = 0; i < TFIT_INPUT_MAP_FLOATS; ++i) {
+        double v = fabs((double)m->coef[i]);
+        if (!(v <= (i < 3 ? X0_LIMIT : W_LIMIT))) {
+            snprintf(err, errlen, "model '%s': input map entry %d is %g (envelope degenerate?)",
+                     m->name, i, (double)m->coef[i]);
+            return 1;
+        }
+    }
+    for (uint32_t i = 0; i < m->n_coef; ++i) {
+        if (!isfinite(m->coef[i])) {
+            snprintf(err, errlen, "model '%s': coefficient %u is not finite", m->name, i);
+            return 1;
+        }
+    }
+    return validate_ranges(m, err, errlen);
+}
+
+/* Input projection (docs/header-format.md §4): 33 mul, 14 add, no division. */
+static tf_opcount input_ops(void)
+{
+    return (tf_opcount){.add = 14, .mul = 33, .div = 0};
+}
+
+/* Float operations of the Chebyshev basis of degree p (§5.1, §6): per
+ * variable h = g + g and p - 1 recurrence steps (mul, sub) when p >= 2;
+ * p (p - 1) / 2 inner products T_b T_c with b, c >= 1, b + c <= p (one per
+ * pair, shared by every a) and T(p - 1) - p outer products T_a (..) with
+ * a >= 1, b + c >= 1 (a factor T_0 = 1 is exact and not multiplied). */
+static void basis_ops(uint32_t p, tf_opcount *ops)
+{
+    if (p >= 2) {
+        ops->add += 3 * (1 + (uint64_t)(p - 1));
+        ops->mul += 3 * (uint64_t)(p - 1) + (uint64_t)p * (p - 1) / 2 + tf_terms(p - 1) - p;
+    }
+}
+
+/* Clenshaw (§5.4): the tail sum_{k=1..n} c_k T_k takes n + 1 mul and
+ * 2n + 2 add (h, n steps of a product, a difference and a sum, then
+ * (x b_1) - b_2), n = 0 included; the full series one add more (+ c_0). */
+static uint64_t tail_add(uint32_t n)
+{
+    return 2 * (uint64_t)n + 2;
+}
+
+static uint64_t series_add(uint32_t n)
+{
+    return tail_add(n) + 1;
+}
+
+tf_opcount tf_model_ops(const tf_model *m)
+{
+    tf_opcount ops = input_ops();
+    const uint64_t rows = 3ull * m->n_out;
+    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
+        uint64_t t = tf_terms(m->dims[0]);
+        basis_ops(m->dims[0], &ops);
+        ops.mul += rows * (t - 1);
+        ops.add += rows * (t - 1);
+    } else if (m->family == TFIT_FAMILY_MODAL) {
+        uint64_t t = tf_terms(m->dims[0]), r = m->dims[1];
+        basis_ops(m->dims[0], &ops);
+        ops.mul += r * (t - 1) + rows * r;
+        ops.add += r * (t - 1) + rows * (r - 1);
+    } else {
+        for (int a = 0; a < 3; ++a) {
+            ops.mul += m->dims[a] + 2; /* the series, then t_a = d_a s_a */
+            ops.add += series_add(m->dims[a]);
+        }
+        for (int pair = 0; pair < 9; ++pair) {
+            const uint32_t *o = m->dims + 3 + 3 * pair;
+            const uint64_t rows_p = zhou_rows(m->dims, pair);
+            ops.mul += rows_p * (o[2] + 1ull) +
+                       m->n_out * ((o[0] + 1ull) + (o[1] > 0 ? o[1] + 1ull : 0));
+            ops.add += rows_p * series_add(o[2]) +
+                       m->n_out * (series_add(o[0]) + (o[1] > 0 ? tail_add(o[1]) + 1 : 0) +
+                                   (pair >= 3 ? 1 : 0));
+        }
+    }
+    return ops;
+}
+
+uint32_t tf_model_table_bytes(const tf_model *m)
+{
+    return 4 * (m->n_coef + m->n_dims + m->n_out);
+}

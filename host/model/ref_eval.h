@@ -1,0 +1,24 @@
+/*
+ * ref_eval.h — the host's reference evaluator for golden vectors.
+ *
+ * It implements docs/header-format.md §4–5 independently of target/src:
+ * every arithmetic operation is carried out in double and rounded to float
+ * immediately (GUIDE §4: double has more than 2*24+2 bits, so this equals
+ * IEEE binary32 arithmetic exactly for +, -, *, /).  Expected output bits for
+ * the golden vectors come from here, never from the target code.
+ */
+#ifndef TF_REF_EVAL_H
+#define TF_REF_EVAL_H
+
+#include "model/model.h"
+
+/* Evaluates m at the raw input in[3] (N or mm) into out[3 m->n_out].
+ * Returns the tfit_status the target must return.  When ops is not NULL the
+ * operations performed are added to it. */
+tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops);
+
+/* The input projection alone: g on the unit ball; sets *clamped and *bad. */
+void tf_ref_input(const tf_model *m, const float in[3], float g[3], int *clamped, int *bad,
+                  tf_opcount *ops);
+
+#endif /* TF_REF_EVAL_H */

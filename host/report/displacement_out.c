@@ -1,0 +1,73 @@
+/*
+ * displacement_out.c — CSV and VTU writers (displacement_out.h).
+ */
+#include "report/displacement_out.h"
+
+void tf_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
+                          const double *u)
+{
+    fprintf(fp, "node,x,y,z,ux,uy,uz\n");
+    size_t count = idx ? n : c->n;
+    for (size_t k = 0; k < count; ++k) {
+        size_t i = idx ? idx[k] : k;
+        const double *x = c->xyz + 3 * i, *ui = u + 3 * i;
+        fprintf(fp, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", i + 1, x[0], x[1], x[2], ui[0],
+                ui[1], ui[2]);
+    }
+}
+
+/* VTK_HEXAHEDRON corners of grid cell (i, j, k): bottom face then top. */
+static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[8])
+{
+    static const unsigned d[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    for (int q = 0; q < 8; ++q) {
+        v[q] = tf_cloud_index(c, i + d[q][0], j + d[q][1], k + d[q][2]);
+    }
+}
+
+void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+{
+    size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
+    fprintf(fp,
+            "<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n"
+            "<PointData Vectors=\"displacement\">\n"
+            "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
+            "format=\"ascii\">\n",
+            c->n, nc);
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%.17g %.17g %.17g\n", u[3 * i], u[3 * i + 1], u[3 * i + 2]);
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt32\" Name=\"node\" format=\"ascii\">\n");
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%zu\n", i + 1);
+    }
+    fprintf(fp, "</DataArray>\n</PointData>\n<Points>\n"
+                "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%.17g %.17g %.17g\n", c->xyz[3 * i], c->xyz[3 * i + 1], c->xyz[3 * i + 2]);
+    }
+    fprintf(fp, "</DataArray>\n</Points>\n<Cells>\n"
+                "<DataArray type=\"UInt64\" Name=\"connectivity\" format=\"ascii\">\n");
+    for (unsigned k = 0; k + 1 < c->grid[2]; ++k) {
+        for (unsigned j = 0; j + 1 < c->grid[1]; ++j) {
+            for (unsigned i = 0; i + 1 < c->grid[0]; ++i) {
+                size_t v[8];
+                hex(c, i, j, k, v);
+                fprintf(fp, "%zu %zu %zu %zu %zu %zu %zu %zu\n", v[0], v[1], v[2], v[3], v[4],
+                        v[5], v[6], v[7]);
+            }
+        }
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt64\" Name=\"offsets\" format=\"ascii\">\n");
+    for (size_t q = 1; q <= nc; ++q) {
+        fprintf(fp, "%zu\n", 8 * q);
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    for (size_t q = 0; q < nc; ++q) {
+        fprintf(fp, "12\n");
+    }
+    fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+}

@@ -1,0 +1,23 @@
+/*
+ * displacement_out.h — nodal displacements to files: CSV (the format the
+ * project compares with CalculiX: header node,x,y,z,ux,uy,uz, mm, %.17g)
+ * and VTK XML unstructured grids for ParaView (hexahedra of the node grid,
+ * point data "displacement" and "node").
+ */
+#ifndef TF_DISPLACEMENT_OUT_H
+#define TF_DISPLACEMENT_OUT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "problem/nodes.h"
+
+/* Rows for the n nodes idx[] (all nodes when idx is NULL, n ignored). */
+void tf_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
+                          const double *u);
+
+/* The whole cloud as a VTU file. */
+void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u);
+
+#endif /* TF_DISPLACEMENT_OUT_H */

@@ -1,0 +1,443 @@
+/*
+ * scene_build.c — defaults, checks and resolution of a scene document
+ * (scene_build.h).  Every check names the path of the value at fault.
+ */
+#include "scene/scene_build.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/scene_regions.h"
+
+static int fail(sd_issue *is, const char *path, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static int fail(sd_issue *is, const char *path, const char *fmt, ...)
+{
+    va_list ap;
+    snprintf(is->path, sizeof is->path, "%s", path);
+    va_start(ap, fmt);
+    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+/* "prefix.k.key" into buf. */
+static const char *at(char *buf, size_t len, const char *prefix, size_t k, const char *key)
+{
+    if (key != NULL) {
+        snprintf(buf, len, "%s.%zu.%s", prefix, k, key);
+    } else {
+        snprintf(buf, len, "%s.%zu", prefix, k);
+    }
+    return buf;
+}
+
+static int finite_all(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n; ++k) {
+        if (!isfinite(v[k])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int check_box(const sd_box *b, const char *path, sd_issue *is)
+{
+    if (!finite_all(b->min, 3) || !finite_all(b->max, 3)) {
+        return fail(is, path, "coordinates must be finite numbers");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!(b->min[a] < b->max[a])) {
+            return fail(is, path, "min must be below max along %c (%g >= %g)", "xyz"[a],
+                        b->min[a], b->max[a]);
+        }
+    }
+    return 0;
+}
+
+static int geometry(const sd_geometry *g, tf_scene *s, sd_issue *is)
+{
+    if (check_box(g->box, "geometry.box", is) != 0) {
+        return -1;
+    }
+    double nodes = 1;
+    for (int a = 0; a < 3; ++a) {
+        s->box_min[a] = g->box->min[a];
+        s->box_max[a] = g->box->max[a];
+        s->grid[a] = g->grid[a];
+        if (g->grid[a] < 2) {
+            return fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
+                        g->grid[a], "xyz"[a]);
+        }
+        nodes *= g->grid[a];
+    }
+    if (nodes > 2e6) {
+        return fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
+                    nodes);
+    }
+    s->jitter = g->jitter ? *g->jitter : 0;
+    s->seed = g->seed ? *g->seed : 1;
+    if (!(s->jitter >= 0 && s->jitter <= 0.4)) {
+        return fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
+    }
+    if (tf_cloud_box(&s->cloud, s->box_min, s->box_max, s->grid, s->jitter, s->seed) != 0) {
+        return fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
+    }
+    return 0;
+}
+
+static int material(const sd_material *m, tf_scene *s, sd_issue *is)
+{
+    s->young = m->young;
+    s->poisson = m->poisson;
+    if (!(isfinite(m->young) && m->young > 0)) {
+        return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
+                    m->young);
+    }
+    if (!(m->poisson > -1 && m->poisson < 0.5)) {
+        return fail(is, "material.nu",
+                    "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
+                    "this displacement formulation cannot represent (got %g)",
+                    m->poisson);
+    }
+    return 0;
+}
+
+static int fixed_one(const sd_fixed *d, size_t k, tf_scene *s, tf_fixed *f, sd_issue *is)
+{
+    char p[128];
+    int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL);
+    if (kinds != 1) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+                    "give exactly one of face, plane or box (got %d)", kinds);
+    }
+    if (d->face) {
+        f->where.kind = TF_REGION_FACE;
+        f->where.face = (tf_face)*d->face;
+    } else if (d->plane) {
+        f->where.kind = TF_REGION_PLANE;
+        f->where.axis = d->plane->axis;
+        f->where.at = d->plane->at;
+        if (!isfinite(d->plane->at)) {
+            return fail(is, at(p, sizeof p, "fixed", k, "plane"), "'at' must be finite");
+        }
+    } else {
+        f->where.kind = TF_REGION_BOX;
+        if (check_box(d->box, at(p, sizeof p, "fixed", k, "box"), is) != 0) {
+            return -1;
+        }
+        memcpy(f->where.min, d->box->min, sizeof f->where.min);
+        memcpy(f->where.max, d->box->max, sizeof f->where.max);
+    }
+    f->components = d->components ? *d->components : TF_COMP_ALL;
+    if (f->components == 0) {
+        return fail(is, at(p, sizeof p, "fixed", k, "components"), "names no component");
+    }
+    f->exact = d->exact && *d->exact;
+    if (f->exact && d->displacement) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+                    "give displacement or exact: true, not both");
+    }
+    if (f->exact && s->reference.kind == TF_REF_NONE) {
+        return fail(is, at(p, sizeof p, "fixed", k, "exact"),
+                    "exact: true needs a reference section");
+    }
+    for (int a = 0; a < 3; ++a) {
+        f->value[a] = d->displacement ? d->displacement[a] : 0;
+    }
+    if (!finite_all(f->value, 3)) {
+        return fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
+    }
+    if (sd_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
+    }
+    if (f->n_nodes == 0) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
+    }
+    return 0;
+}
+
+static int fixed(const sd_scene *doc, tf_scene *s, sd_issue *is)
+{
+    s->fixed = calloc(doc->fixed_count, sizeof *s->fixed);
+    if (s->fixed == NULL) {
+        return fail(is, "fixed", "out of memory");
+    }
+    s->n_fixed = doc->fixed_count;
+    for (size_t k = 0; k < doc->fixed_count; ++k) {
+        if (fixed_one(&doc->fixed[k], k, s, &s->fixed[k], is) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int node_index(uint32_t number, const tf_scene *s, const char *path, uint32_t *index,
+                      sd_issue *is)
+{
+    if (number < 1 || number > s->cloud.n) {
+        return fail(is, path, "node %u does not exist (nodes are numbered 1 to %zu)", number,
+                    s->cloud.n);
+    }
+    *index = number - 1;
+    return 0;
+}
+
+static int loads(const sd_scene *doc, tf_scene *s, sd_issue *is)
+{
+    char p[128];
+    s->loads = calloc(doc->loads_count + 1, sizeof *s->loads);
+    if (s->loads == NULL) {
+        return fail(is, "loads", "out of memory");
+    }
+    s->n_loads = doc->loads_count;
+    for (size_t k = 0; k < doc->loads_count; ++k) {
+        const sd_load *d = &doc->loads[k];
+        tf_load *l = &s->loads[k];
+        l->exact = d->exact && *d->exact;
+        if ((d->node != NULL) == (d->patch != NULL)) {
+            return fail(is, at(p, sizeof p, "loads", k, NULL), "give exactly one of node or patch");
+        }
+        if (l->exact == (d->force != NULL)) {
+            return fail(is, at(p, sizeof p, "loads", k, NULL),
+                        "give exactly one of force or exact: true");
+        }
+        if (l->exact && (s->reference.kind == TF_REF_NONE || d->node != NULL)) {
+            return fail(is, at(p, sizeof p, "loads", k, "exact"),
+                        "exact: true needs a reference section and a patch");
+        }
+        if (d->force) {
+            memcpy(l->force, d->force, sizeof l->force);
+            if (!finite_all(l->force, 3)) {
+                return fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
+            }
+        }
+        if (d->node) {
+            l->patch.shape = TF_PATCH_POINT;
+            if (node_index(*d->node, s, at(p, sizeof p, "loads", k, "node"), &l->patch.node, is)) {
+                return -1;
+            }
+        } else if (sd_resolve_patch(d->patch, &s->cloud, &l->patch, is->msg, sizeof is->msg) != 0) {
+            snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "loads", k, "patch"));
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int contacts(const sd_scene *doc, tf_scene *s, sd_issue *is)
+{
+    char p[128];
+    s->contacts = calloc(doc->contact_count + 1, sizeof *s->contacts);
+    if (s->contacts == NULL) {
+        return fail(is, "contact", "out of memory");
+    }
+    s->n_contacts = doc->contact_count;
+    for (size_t k = 0; k < doc->contact_count; ++k) {
+        const sd_contact *d = &doc->contact[k];
+        tf_contact *c = &s->contacts[k];
+        if (d->name) {
+            snprintf(c->name, sizeof c->name, "%s", d->name);
+        } else {
+            snprintf(c->name, sizeof c->name, "contact%zu", k + 1);
+        }
+        for (size_t j = 0; j < k; ++j) {
+            if (strcmp(s->contacts[j].name, c->name) == 0) {
+                return fail(is, at(p, sizeof p, "contact", k, "name"),
+                            "'%s' names contact %zu already", c->name, j);
+            }
+        }
+        if (node_index(d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
+            return -1;
+        }
+        c->patch.shape = TF_PATCH_POINT;
+        c->patch.node = c->node;
+        if (d->patch && sd_resolve_patch(d->patch, &s->cloud, &c->patch, is->msg, sizeof is->msg) != 0) {
+            snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "contact", k, "patch"));
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int envelope(const sd_envelope *e, tf_scene *s, sd_issue *is)
+{
+    s->envelope_radius = e && e->radius ? *e->radius : 1.0;
+    for (int a = 0; a < 3; ++a) {
+        s->envelope_centre[a] = e && e->centre ? e->centre[a] : 0;
+    }
+    if (!(isfinite(s->envelope_radius) && s->envelope_radius > 0)) {
+        return fail(is, "envelope.radius", "must be a positive number of newtons");
+    }
+    if (!finite_all(s->envelope_centre, 3)) {
+        return fail(is, "envelope.centre", "must be finite (N)");
+    }
+    return 0;
+}
+
+tf_solver_opts sd_solver_defaults(const unsigned grid[3])
+{
+    tf_solver_opts o = {
+        .support = 2.0,
+        .centre = TF_SUPPORT_CELL,
+        .alpha_c = 1.0,
+        .d_c = 2.0,
+        .q = 1.03,
+        .polynomial = 1,
+        .volumetric = TF_VOLUMETRIC_CELL,
+        .gauss = 3,
+        .bc = TF_BC_ELIMINATION,
+        .penalty = 1e7,
+        .rcond_warn = 1e-12,
+    };
+    for (int a = 0; a < 3; ++a) {
+        o.cells[a] = grid[a] - 1;
+    }
+    return o;
+}
+
+static int solver(const sd_solver *d, tf_scene *s, sd_issue *is)
+{
+    tf_solver_opts *o = &s->solver;
+    *o = sd_solver_defaults(s->grid);
+    if (d == NULL) {
+        return 0;
+    }
+    o->support = d->support ? *d->support : o->support;
+    o->centre = d->centre ? (tf_support_centre)*d->centre : o->centre;
+    if (d->rbf) {
+        o->alpha_c = d->rbf->alpha_c ? *d->rbf->alpha_c : o->alpha_c;
+        o->d_c = d->rbf->d_c ? *d->rbf->d_c : o->d_c;
+        o->q = d->rbf->q ? *d->rbf->q : o->q;
+    }
+    o->polynomial = d->polynomial ? *d->polynomial : o->polynomial;
+    o->volumetric = d->volumetric ? (tf_volumetric)*d->volumetric : o->volumetric;
+    for (int a = 0; d->cells && a < 3; ++a) {
+        o->cells[a] = d->cells[a];
+    }
+    o->gauss = d->gauss ? *d->gauss : o->gauss;
+    o->bc = d->bc ? (tf_bc_method)*d->bc : o->bc;
+    o->penalty = d->penalty ? *d->penalty : o->penalty;
+    o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
+    if (!(isfinite(o->support) && o->support > 0)) {
+        return fail(is, "solver.support", "must be a positive number of nodal spacings");
+    }
+    if (!(isfinite(o->alpha_c) && o->alpha_c > 0)) {
+        return fail(is, "solver.rbf.alpha_c", "must be positive");
+    }
+    if (!(isfinite(o->d_c) && o->d_c > 0)) {
+        return fail(is, "solver.rbf.d_c", "must be a positive length (mm)");
+    }
+    if (!(isfinite(o->q) && o->q > 0) || o->q == floor(o->q)) {
+        return fail(is, "solver.rbf.q",
+                    "must be positive and not a whole number (an integer q makes the "
+                    "multiquadric a polynomial and the local systems singular)");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (o->cells[a] < 1 || o->cells[a] > 4096) {
+            return fail(is, "solver.cells", "1 to 4096 background cells per axis");
+        }
+    }
+    if (o->gauss < 1 || o->gauss > 12) {
+        return fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
+    }
+    if (!(isfinite(o->penalty) && o->penalty > 0)) {
+        return fail(is, "solver.penalty", "must be a positive factor");
+    }
+    if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
+        return fail(is, "solver.rcond_warn", "must lie in (0, 1)");
+    }
+    return 0;
+}
+
+static int reference(const sd_reference *d, tf_scene *s, sd_issue *is)
+{
+    tf_reference *r = &s->reference;
+    r->kind = d ? (tf_reference_kind)d->kind : TF_REF_NONE;
+    if (d == NULL) {
+        return 0;
+    }
+    if (r->kind == TF_REF_CANTILEVER) {
+        if (d->load == NULL || !isfinite(*d->load) || d->offset || d->gradient) {
+            return fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
+        }
+        r->load = *d->load;
+        return 0;
+    }
+    if (d->gradient == NULL || d->load) {
+        return fail(is, "reference", "linear takes a gradient (9 numbers), an optional offset");
+    }
+    memcpy(r->gradient, d->gradient, sizeof r->gradient);
+    for (int a = 0; a < 3; ++a) {
+        r->offset[a] = d->offset ? d->offset[a] : 0;
+    }
+    if (!finite_all(r->gradient, 9) || !finite_all(r->offset, 3)) {
+        return fail(is, "reference", "values must be finite");
+    }
+    return 0;
+}
+
+/* The fit: section.  Limits keep every design matrix of a fold
+ * non-trivial and the searches inside the target's capacity (tfit.h). */
+static int fit(const sd_fit *d, tf_scene *s, sd_issue *is)
+{
+    tf_scene_fit *f = &s->fit;
+    *f = (tf_scene_fit){.family = 1, .contact = s->n_contacts > 0 ? 0 : -1, .train = 100,
+                        .heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
+                        .max_rank = 12};
+    if (d == NULL) {
+        return 0;
+    }
+    f->family = d->family ? *d->family : f->family;
+    f->train = d->train ? *d->train : f->train;
+    f->heldout = d->heldout ? *d->heldout : f->heldout;
+    f->seed = d->seed ? *d->seed : f->seed;
+    f->folds = d->folds ? *d->folds : f->folds;
+    f->max_degree = d->max_degree ? *d->max_degree : f->max_degree;
+    f->max_rank = d->max_rank ? *d->max_rank : f->max_rank;
+    if (d->contact) {
+        f->contact = tf_scene_contact(s, d->contact);
+        if (f->contact < 0) {
+            return fail(is, "fit.contact", "names no contact site of the scene");
+        }
+    }
+    if (f->train < 6 || f->train > 100000) {
+        return fail(is, "fit.train", "6 to 100000 training load cases");
+    }
+    if (f->heldout < 1 || f->heldout > 100000) {
+        return fail(is, "fit.heldout", "1 to 100000 held-out load cases");
+    }
+    if (f->folds < 2 || f->folds > 20 || f->folds > f->train) {
+        return fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
+    }
+    if (f->max_degree > 8) {
+        return fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
+    }
+    if (f->max_rank < 1 || f->max_rank > 24) {
+        return fail(is, "fit.max_rank", "1 to 24 modes");
+    }
+    return 0;
+}
+
+int sd_build(const sd_scene *doc, tf_scene *s, sd_issue *is)
+{
+    if (doc->name) {
+        snprintf(s->name, sizeof s->name, "%s", doc->name);
+    }
+    if (geometry(&doc->geometry, s, is) != 0 || material(&doc->material, s, is) != 0 ||
+        reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
+        loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
+        envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
+        fit(doc->fit, s, is) != 0) {
+        return -1;
+    }
+    if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {
+        snprintf(is->path, sizeof is->path, "outputs");
+        return -1;
+    }
+    return 0;
+}

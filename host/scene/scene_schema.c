@@ -1,0 +1,282 @@
+/*
+ * scene_schema.c — libcyaml schema of scene files (scene_schema.h).
+ * Enumerations are strict: only their names are accepted, not numbers.
+ */
+#include "scene/scene_schema.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/scene.h"
+
+#define OPT CYAML_FLAG_OPTIONAL
+#define OPT_PTR (CYAML_FLAG_OPTIONAL | CYAML_FLAG_POINTER)
+#define STRICT_OPT (CYAML_FLAG_OPTIONAL | CYAML_FLAG_STRICT)
+
+static const cyaml_schema_value_t real = {CYAML_VALUE_FLOAT(CYAML_FLAG_DEFAULT, double)};
+static const cyaml_schema_value_t count = {CYAML_VALUE_UINT(CYAML_FLAG_DEFAULT, unsigned)};
+static const cyaml_schema_value_t node_number = {CYAML_VALUE_UINT(CYAML_FLAG_DEFAULT, uint32_t)};
+
+static const cyaml_strval_t faces[] = {
+    {"x-", TF_FACE_XMIN}, {"x+", TF_FACE_XMAX}, {"y-", TF_FACE_YMIN},
+    {"y+", TF_FACE_YMAX}, {"z-", TF_FACE_ZMIN}, {"z+", TF_FACE_ZMAX},
+};
+static const cyaml_strval_t axes[] = {{"x", 0}, {"y", 1}, {"z", 2}};
+static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, {"z", TF_COMP_Z}};
+static const cyaml_strval_t shapes[] = {
+    {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
+static const cyaml_strval_t selects[] = {
+    {"all", TF_OUT_ALL},     {"face", TF_OUT_FACE},       {"box", TF_OUT_BOX},
+    {"nodes", TF_OUT_NODES}, {"contact", TF_OUT_CONTACT},
+};
+static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", TF_SUPPORT_CELL}};
+static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
+static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
+                                             {"cell", TF_VOLUMETRIC_CELL}};
+static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
+/* tfit_family values (tfit.h) of the forward families */
+static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
+static const cyaml_strval_t references[] = {{"cantilever", TF_REF_CANTILEVER},
+                                            {"linear", TF_REF_LINEAR}};
+
+#define N(a) CYAML_ARRAY_LEN(a)
+
+static const cyaml_schema_field_t box_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("min", CYAML_FLAG_DEFAULT, sd_box, min, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("max", CYAML_FLAG_DEFAULT, sd_box, max, &real, 3),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t geometry_fields[] = {
+    CYAML_FIELD_MAPPING_PTR("box", CYAML_FLAG_DEFAULT, sd_geometry, box, box_fields),
+    CYAML_FIELD_SEQUENCE_FIXED("grid", CYAML_FLAG_DEFAULT, sd_geometry, grid, &count, 3),
+    CYAML_FIELD_FLOAT_PTR("jitter", OPT, sd_geometry, jitter),
+    CYAML_FIELD_UINT_PTR("seed", OPT, sd_geometry, seed),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t material_fields[] = {
+    CYAML_FIELD_FLOAT("E", CYAML_FLAG_DEFAULT, sd_material, young),
+    CYAML_FIELD_FLOAT("nu", CYAML_FLAG_DEFAULT, sd_material, poisson),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t plane_fields[] = {
+    CYAML_FIELD_ENUM("axis", CYAML_FLAG_STRICT, sd_plane, axis, axes, N(axes)),
+    CYAML_FIELD_FLOAT("at", CYAML_FLAG_DEFAULT, sd_plane, at),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t fixed_fields[] = {
+    CYAML_FIELD_ENUM_PTR("face", STRICT_OPT, sd_fixed, face, faces, N(faces)),
+    CYAML_FIELD_MAPPING_PTR("plane", OPT, sd_fixed, plane, plane_fields),
+    CYAML_FIELD_MAPPING_PTR("box", OPT, sd_fixed, box, box_fields),
+    CYAML_FIELD_FLAGS_PTR("components", STRICT_OPT, sd_fixed, components, components,
+                          N(components)),
+    CYAML_FIELD_SEQUENCE_FIXED("displacement", OPT_PTR, sd_fixed, displacement, &real, 3),
+    CYAML_FIELD_BOOL_PTR("exact", OPT, sd_fixed, exact),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t fixed_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_fixed, fixed_fields)};
+
+static const cyaml_schema_field_t patch_fields[] = {
+    CYAML_FIELD_ENUM("face", CYAML_FLAG_STRICT, sd_patch, face, faces, N(faces)),
+    CYAML_FIELD_ENUM_PTR("shape", STRICT_OPT, sd_patch, shape, shapes, N(shapes)),
+    CYAML_FIELD_SEQUENCE_FIXED("centre", OPT_PTR, sd_patch, centre, &real, 2),
+    CYAML_FIELD_SEQUENCE_FIXED("size", OPT_PTR, sd_patch, size, &real, 2),
+    CYAML_FIELD_FLOAT_PTR("radius", OPT, sd_patch, radius),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t load_fields[] = {
+    CYAML_FIELD_UINT_PTR("node", OPT, sd_load, node),
+    CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_load, patch, patch_fields),
+    CYAML_FIELD_SEQUENCE_FIXED("force", OPT_PTR, sd_load, force, &real, 3),
+    CYAML_FIELD_BOOL_PTR("exact", OPT, sd_load, exact),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t load_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_load, load_fields)};
+
+static const cyaml_schema_field_t contact_fields[] = {
+    CYAML_FIELD_STRING_PTR("name", OPT, sd_contact, name, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_UINT("node", CYAML_FLAG_DEFAULT, sd_contact, node),
+    CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_contact, patch, patch_fields),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t contact_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_contact, contact_fields)};
+
+static const cyaml_schema_field_t envelope_fields[] = {
+    CYAML_FIELD_FLOAT_PTR("radius", OPT, sd_envelope, radius),
+    CYAML_FIELD_SEQUENCE_FIXED("centre", OPT_PTR, sd_envelope, centre, &real, 3),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t outputs_fields[] = {
+    CYAML_FIELD_ENUM("select", CYAML_FLAG_STRICT, sd_outputs, select, selects, N(selects)),
+    CYAML_FIELD_ENUM_PTR("face", STRICT_OPT, sd_outputs, face, faces, N(faces)),
+    CYAML_FIELD_MAPPING_PTR("box", OPT, sd_outputs, box, box_fields),
+    CYAML_FIELD_SEQUENCE("nodes", OPT_PTR, sd_outputs, nodes, &node_number, 0, CYAML_UNLIMITED),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t rbf_fields[] = {
+    CYAML_FIELD_FLOAT_PTR("alpha_c", OPT, sd_rbf, alpha_c),
+    CYAML_FIELD_FLOAT_PTR("d_c", OPT, sd_rbf, d_c),
+    CYAML_FIELD_FLOAT_PTR("q", OPT, sd_rbf, q),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t solver_fields[] = {
+    CYAML_FIELD_FLOAT_PTR("support", OPT, sd_solver, support),
+    CYAML_FIELD_ENUM_PTR("centre", STRICT_OPT, sd_solver, centre, centres, N(centres)),
+    CYAML_FIELD_MAPPING_PTR("rbf", OPT, sd_solver, rbf, rbf_fields),
+    CYAML_FIELD_ENUM_PTR("polynomial", STRICT_OPT, sd_solver, polynomial, polynomials,
+                         N(polynomials)),
+    CYAML_FIELD_ENUM_PTR("volumetric", STRICT_OPT, sd_solver, volumetric, volumetrics,
+                         N(volumetrics)),
+    CYAML_FIELD_SEQUENCE_FIXED("cells", OPT_PTR, sd_solver, cells, &count, 3),
+    CYAML_FIELD_UINT_PTR("gauss", OPT, sd_solver, gauss),
+    CYAML_FIELD_ENUM_PTR("bc", STRICT_OPT, sd_solver, bc, bcs, N(bcs)),
+    CYAML_FIELD_FLOAT_PTR("penalty", OPT, sd_solver, penalty),
+    CYAML_FIELD_FLOAT_PTR("rcond_warn", OPT, sd_solver, rcond_warn),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t reference_fields[] = {
+    CYAML_FIELD_ENUM("kind", CYAML_FLAG_STRICT, sd_reference, kind, references, N(references)),
+    CYAML_FIELD_FLOAT_PTR("load", OPT, sd_reference, load),
+    CYAML_FIELD_SEQUENCE_FIXED("offset", OPT_PTR, sd_reference, offset, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("gradient", OPT_PTR, sd_reference, gradient, &real, 9),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t fit_fields[] = {
+    CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
+    CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_UINT_PTR("train", OPT, sd_fit, train),
+    CYAML_FIELD_UINT_PTR("heldout", OPT, sd_fit, heldout),
+    CYAML_FIELD_UINT_PTR("seed", OPT, sd_fit, seed),
+    CYAML_FIELD_UINT_PTR("folds", OPT, sd_fit, folds),
+    CYAML_FIELD_UINT_PTR("max_degree", OPT, sd_fit, max_degree),
+    CYAML_FIELD_UINT_PTR("max_rank", OPT, sd_fit, max_rank),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t scene_fields[] = {
+    CYAML_FIELD_STRING_PTR("name", OPT, sd_scene, name, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_MAPPING("geometry", CYAML_FLAG_DEFAULT, sd_scene, geometry, geometry_fields),
+    CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_scene, material, material_fields),
+    CYAML_FIELD_SEQUENCE("fixed", CYAML_FLAG_POINTER, sd_scene, fixed, &fixed_entry, 1,
+                         CYAML_UNLIMITED),
+    CYAML_FIELD_SEQUENCE("loads", OPT_PTR, sd_scene, loads, &load_entry, 0, CYAML_UNLIMITED),
+    CYAML_FIELD_SEQUENCE("contact", OPT_PTR, sd_scene, contact, &contact_entry, 0,
+                         CYAML_UNLIMITED),
+    CYAML_FIELD_MAPPING_PTR("envelope", OPT, sd_scene, envelope, envelope_fields),
+    CYAML_FIELD_MAPPING("outputs", CYAML_FLAG_DEFAULT, sd_scene, outputs, outputs_fields),
+    CYAML_FIELD_MAPPING_PTR("solver", OPT, sd_scene, solver, solver_fields),
+    CYAML_FIELD_MAPPING_PTR("reference", OPT, sd_scene, reference, reference_fields),
+    CYAML_FIELD_MAPPING_PTR("fit", OPT, sd_scene, fit, fit_fields),
+    CYAML_FIELD_END,
+};
+
+const cyaml_schema_value_t sd_scene_schema = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_POINTER, sd_scene, scene_fields)};
+
+static void collect(cyaml_log_t level, void *ctx, const char *fmt, va_list args)
+{
+    sd_log *log = ctx;
+    if (log == NULL || level < CYAML_LOG_ERROR || log->len + 1 >= sizeof log->text) {
+        return;
+    }
+    int n = vsnprintf(log->text + log->len, sizeof log->text - log->len, fmt, args);
+    if (n > 0) {
+        log->len += (size_t)n;
+        if (log->len >= sizeof log->text) {
+            log->len = sizeof log->text - 1;
+        }
+    }
+}
+
+cyaml_config_t sd_config(sd_log *log)
+{
+    cyaml_config_t c = {
+        .log_fn = collect,
+        .log_ctx = log,
+        .mem_fn = cyaml_mem,
+        .log_level = CYAML_LOG_ERROR,
+        .flags = CYAML_CFG_NO_ALIAS,
+    };
+    return c;
+}
+
+void sd_scene_free(sd_scene *doc)
+{
+    cyaml_config_t c = sd_config(NULL);
+    cyaml_free(&c, &sd_scene_schema, doc, 0);
+}
+
+int sd_path_split(char *buf, char **comp)
+{
+    int n = 0;
+    char *save = NULL;
+    for (char *tok = strtok_r(buf, ".", &save); tok != NULL; tok = strtok_r(NULL, ".", &save)) {
+        if (n == SD_PATH_MAX) {
+            return -1;
+        }
+        comp[n++] = tok;
+    }
+    return n > 0 ? n : -1;
+}
+
+const cyaml_schema_field_t *sd_field(const cyaml_schema_value_t *mapping, const char *key)
+{
+    if (mapping->type != CYAML_MAPPING) {
+        return NULL;
+    }
+    for (const cyaml_schema_field_t *f = mapping->mapping.fields; f->key != NULL; ++f) {
+        if (strcmp(f->key, key) == 0) {
+            return f;
+        }
+    }
+    return NULL;
+}
+
+const cyaml_schema_value_t *sd_schema_at(const char *path)
+{
+    char buf[256], *comp[SD_PATH_MAX];
+    snprintf(buf, sizeof buf, "%s", path);
+    int n = sd_path_split(buf, comp);
+    const cyaml_schema_value_t *v = &sd_scene_schema;
+    for (int k = 0; k < n && v != NULL; ++k) {
+        if (v->type == CYAML_SEQUENCE || v->type == CYAML_SEQUENCE_FIXED) {
+            char *end;
+            strtoul(comp[k], &end, 10);
+            v = *end == '\0' && comp[k][0] != '\0' ? v->sequence.entry : NULL;
+        } else {
+            const cyaml_schema_field_t *f = sd_field(v, comp[k]);
+            v = f ? &f->value : NULL;
+        }
+    }
+    return n > 0 ? v : NULL;
+}
+
+void sd_names(const cyaml_schema_value_t *v, char *out, size_t outlen)
+{
+    size_t len = 0;
+    out[0] = '\0';
+    if (v->type == CYAML_MAPPING) {
+        for (const cyaml_schema_field_t *f = v->mapping.fields; f->key && len < outlen; ++f) {
+            len += (size_t)snprintf(out + len, outlen - len, "%s%s", len ? ", " : "", f->key);
+        }
+    } else if (v->type == CYAML_ENUM || v->type == CYAML_FLAGS) {
+        for (uint32_t k = 0; k < v->enumeration.count && len < outlen; ++k) {
+            len += (size_t)snprintf(out + len, outlen - len, "%s%s", len ? ", " : "",
+                                    v->enumeration.strings[k].str);
+        }
+    }
+}

@@ -1,0 +1,218 @@
+/*
+ * assemble.c — sparse stiffness assembly (assemble.h; seed eqs 19-22).
+ */
+#include "solvers/assemble.h"
+
+#include <cblas.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "solvers/cell_stiffness.h"
+#include "solvers/sparsity.h"
+
+/* Cells computed in parallel before they are added to K in cell order.  A
+ * constant, so the result does not depend on the thread count. */
+#define BATCH 32
+
+static int cmp_u32(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The nodes any support of the cell touches, ascending.  mark (node ->
+ * stamp) and list are the thread's scratch. */
+static int cell_set(const tf_shape *sh, tf_shape_work *sw, uint32_t *mark, uint32_t *list,
+                    size_t cell, uint32_t **out, size_t *len)
+{
+    size_t n = 0, np = sh->centre == TF_SUPPORT_CELL ? 1 : tf_cells_points(&sh->cells);
+    uint32_t stamp = (uint32_t)cell + 1;
+    for (size_t p = 0; p < np; ++p) {
+        double x[3], w;
+        tf_cells_point(&sh->cells, cell, p, x, &w);
+        if (tf_shape_support(sh, sw, x, cell) != 0) {
+            return -1;
+        }
+        for (size_t k = 0; k < sw->n; ++k) {
+            uint32_t a = sw->idx[k];
+            if (mark[a] != stamp) {
+                mark[a] = stamp;
+                list[n++] = a;
+            }
+        }
+    }
+    qsort(list, n, sizeof *list, cmp_u32);
+    *out = malloc((n + 1) * sizeof **out);
+    if (*out == NULL) {
+        snprintf(sw->err, sizeof sw->err, "out of memory");
+        return -1;
+    }
+    memcpy(*out, list, n * sizeof **out);
+    *len = n;
+    return 0;
+}
+
+/* Records the lowest failing cell's message, whatever the schedule. */
+static void note_failure(size_t c, const char *why, size_t *failed, char *msg, size_t msglen)
+{
+#pragma omp critical(tf_assemble_fail)
+    if (c < *failed) {
+        *failed = c;
+        snprintf(msg, msglen, "%s", why);
+    }
+}
+
+static int build_cell_sets(const tf_shape *sh, tf_nodesets *cs, char *err, size_t errlen)
+{
+    size_t ncell = tf_cells_count(&sh->cells), nn = sh->cloud->n, failed = SIZE_MAX;
+    uint32_t **lists = calloc(ncell, sizeof *lists);
+    size_t *len = calloc(ncell, sizeof *len);
+    char msg[256] = "out of memory";
+    if (!lists || !len) {
+        free(lists);
+        free(len);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+#pragma omp parallel
+    {
+        tf_shape_work sw;
+        tf_shape_work_init(&sw);
+        uint32_t *mark = calloc(nn, sizeof *mark), *list = malloc((nn + 1) * sizeof *list);
+#pragma omp for schedule(dynamic, 4)
+        for (size_t c = 0; c < ncell; ++c) {
+            if (!mark || !list) {
+                note_failure(c, "out of memory", &failed, msg, sizeof msg);
+            } else if (cell_set(sh, &sw, mark, list, c, &lists[c], &len[c]) != 0) {
+                note_failure(c, sw.err, &failed, msg, sizeof msg);
+            }
+        }
+        tf_shape_work_free(&sw);
+        free(mark);
+        free(list);
+    }
+    int rc = tf_nodesets_pack(cs, lists, len, ncell);
+    free(lists);
+    free(len);
+    if (failed != SIZE_MAX || rc != 0) {
+        snprintf(err, errlen, "%s", msg);
+        return -1;
+    }
+    return 0;
+}
+
+/* Adds a cell's dense matrix into K. */
+static void scatter(tf_csc *k, const tf_nodesets *bp, const uint32_t *set, size_t m,
+                    const double *kc)
+{
+    size_t dim = 3 * m;
+    for (size_t lb = 0; lb < m; ++lb) {
+        size_t b = set[lb], q = bp->ptr[b];
+        for (size_t la = lb; la < m; ++la) {
+            uint32_t a = set[la];
+            while (bp->nodes[q] != a) {
+                q++;
+            }
+            size_t pos = q - bp->ptr[b];
+            for (size_t j = 0; j < 3; ++j) {
+                const double *src = kc + dim * (3 * lb + j) + 3 * la;
+                for (size_t i = a == b ? j : 0; i < 3; ++i) {
+                    k->x[tf_sparsity_entry(k, a, b, pos, i, j)] += src[i];
+                }
+            }
+        }
+    }
+}
+
+typedef struct value_pass {
+    const tf_shape *sh;
+    const tf_lame *l;
+    int bbar;
+    const tf_nodesets *cs, *bp;
+    tf_csc *k;
+    double t_shape, t_all;
+    tf_shape_stats st;
+} value_pass;
+
+static int assemble_values(value_pass *v, char *err, size_t errlen)
+{
+    const tf_nodesets *cs = v->cs;
+    size_t ncell = cs->count, maxm = 0, failed = SIZE_MAX;
+    for (size_t c = 0; c < ncell; ++c) {
+        size_t m = cs->ptr[c + 1] - cs->ptr[c];
+        maxm = m > maxm ? m : maxm;
+    }
+    double *buf = malloc((size_t)BATCH * 9 * maxm * maxm * sizeof *buf);
+    char msg[256] = "out of memory";
+    int nt = omp_get_max_threads();
+    tf_cell_work *cw = calloc((size_t)nt, sizeof *cw);
+    int ok = buf != NULL && cw != NULL;
+    for (int t = 0; ok && t < nt; ++t) {
+        ok = tf_cell_work_init(&cw[t], v->sh, v->sh->cloud->n, maxm) == 0;
+    }
+    for (size_t start = 0; ok && start < ncell && failed == SIZE_MAX; start += BATCH) {
+        size_t end = start + BATCH < ncell ? start + BATCH : ncell;
+#pragma omp parallel for schedule(dynamic, 1)
+        for (size_t c = start; c < end; ++c) {
+            tf_cell_work *w = &cw[omp_get_thread_num()];
+            double t0 = omp_get_wtime();
+            if (tf_cell_stiffness(v->sh, v->l, v->bbar, w, c, cs->nodes + cs->ptr[c],
+                                  cs->ptr[c + 1] - cs->ptr[c],
+                                  buf + (c - start) * 9 * maxm * maxm) != 0) {
+                note_failure(c, w->sw.err, &failed, msg, sizeof msg);
+            }
+#pragma omp atomic
+            v->t_all += omp_get_wtime() - t0;
+        }
+        for (size_t c = start; c < end && failed == SIZE_MAX; ++c) {
+            scatter(v->k, v->bp, cs->nodes + cs->ptr[c], cs->ptr[c + 1] - cs->ptr[c],
+                    buf + (c - start) * 9 * maxm * maxm);
+        }
+    }
+    for (int t = 0; cw != NULL && t < nt; ++t) {
+        v->t_shape += cw[t].t_shape;
+        tf_shape_stats_merge(&v->st, &cw[t].sw.st);
+        tf_cell_work_free(&cw[t]);
+    }
+    free(cw);
+    free(buf);
+    if (!ok || failed != SIZE_MAX) {
+        snprintf(err, errlen, "%s", ok ? msg : "out of memory for the cell matrices");
+        return -1;
+    }
+    return 0;
+}
+
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+                          tf_assembly_info *info, char *err, size_t errlen)
+{
+    tf_nodesets cs = {0}, bp = {0};
+    memset(k, 0, sizeof *k);
+    info->points = tf_cells_count(&sh->cells) * tf_cells_points(&sh->cells);
+    /* The threads here are OpenMP's: BLAS and LAPACK calls inside them run
+     * on one thread each instead of spawning and spinning more. */
+    openblas_set_num_threads(1);
+    double t0 = omp_get_wtime();
+    int rc = build_cell_sets(sh, &cs, err, errlen);
+    if (rc == 0) {
+        rc = tf_sparsity(&cs, sh->cloud->n, &bp, k, err, errlen);
+    }
+    double t1 = omp_get_wtime();
+    info->t_pattern = t1 - t0;
+    value_pass v = {sh, l, bbar, &cs, &bp, k, 0, 0, {0}};
+    tf_shape_stats_reset(&v.st);
+    if (rc == 0) {
+        rc = assemble_values(&v, err, errlen);
+    }
+    info->t_values = omp_get_wtime() - t1;
+    info->shape_fraction = v.t_all > 0 ? v.t_shape / v.t_all : 0;
+    info->st = v.st;
+    tf_nodesets_free(&cs);
+    tf_nodesets_free(&bp);
+    if (rc != 0) {
+        tf_csc_free(k);
+    }
+    return rc;
+}

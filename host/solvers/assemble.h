@@ -1,0 +1,36 @@
+/*
+ * assemble.h — the global stiffness matrix K (seed eqs 19-22) as a sparse
+ * symmetric matrix, lower triangle in compressed columns, 3 DOFs per node
+ * (DOF 3 i + a is component a of node i).
+ *
+ * Each background cell gathers the contributions of its Gauss points into a
+ * dense matrix over the nodes its supports touch; cells are computed in
+ * parallel (OpenMP) in fixed batches and added to K one after another in
+ * cell order, so every entry is summed in the same order whatever the
+ * thread count: the same scene gives the same bits.
+ */
+#ifndef TF_ASSEMBLE_H
+#define TF_ASSEMBLE_H
+
+#include <stddef.h>
+
+#include "numerics/csc.h"
+#include "materials/elasticity.h"
+#include "meshfree/shape.h"
+
+typedef struct tf_assembly_info {
+    double t_pattern;      /* s, wall: supports of every cell and the sparsity pattern */
+    double t_values;       /* s, wall: shape functions and stiffness values */
+    double shape_fraction; /* part of t_values the threads spent in shape functions */
+    size_t points;         /* Gauss points */
+    tf_shape_stats st;
+} tf_assembly_info;
+
+/* Assembles K for the shape functions sh and the material l; with bbar
+ * the volumetric strain is averaged over each background cell (B-bar).
+ * Returns 0, or -1 with a message in err (a singular local system, out of
+ * memory). */
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+                          tf_assembly_info *info, char *err, size_t errlen);
+
+#endif /* TF_ASSEMBLE_H */

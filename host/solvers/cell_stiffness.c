@@ -1,0 +1,194 @@
+/*
+ * cell_stiffness.c — one background cell's stiffness (cell_stiffness.h;
+ * seed eq 19).
+ */
+#include "solvers/cell_stiffness.h"
+
+#include <cblas.h>
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap)
+{
+    size_t np = tf_cells_points(&sh->cells);
+    memset(w, 0, sizeof *w);
+    tf_shape_work_init(&w->sw);
+    w->cap = cap;
+    w->map = malloc(n_nodes * sizeof *w->map);
+    w->x = malloc(3 * np * sizeof *w->x);
+    w->w = malloc(np * sizeof *w->w);
+    w->y = malloc(3 * (np + 1) * cap * sizeof *w->y);
+    w->c = malloc(9 * cap * cap * sizeof *w->c);
+    if (!w->map || !w->x || !w->w || !w->y || !w->c) {
+        tf_cell_work_free(w);
+        return -1;
+    }
+    for (size_t i = 0; i < n_nodes; ++i) {
+        w->map[i] = -1;
+    }
+    return 0;
+}
+
+void tf_cell_work_free(tf_cell_work *w)
+{
+    tf_shape_work_free(&w->sw);
+    free(w->map);
+    free(w->x);
+    free(w->w);
+    free(w->y);
+    free(w->c);
+    w->map = NULL;
+    w->x = w->w = w->y = w->c = NULL;
+}
+
+/* Adds w B^T D B of one point (gradients d[a n + i] of the support nodes
+ * idx[0..n), local indices through map) to the cell matrix (seed eq 19). */
+static void add_point(const tf_lame *l, double w, const double *d, const uint32_t *idx, size_t n,
+                      const int *map, size_t dim, double *kc)
+{
+    for (size_t ib = 0; ib < n; ++ib) {
+        size_t lb = (size_t)map[idx[ib]];
+        const double gb[3] = {d[ib], d[n + ib], d[2 * n + ib]};
+        for (size_t ia = ib; ia < n; ++ia) {
+            size_t la = (size_t)map[idx[ia]];
+            const double ga[3] = {d[ia], d[n + ia], d[2 * n + ia]};
+            double k9[9] = {0};
+            tf_stiffness_block(l, w, ga, gb, k9);
+            for (int j = 0; j < 3; ++j) {
+                double *col = kc + dim * (3 * lb + (size_t)j) + 3 * la;
+                col[0] += k9[j];
+                col[1] += k9[3 + j];
+                col[2] += k9[6 + j];
+            }
+        }
+    }
+}
+
+/* B-bar (Hughes 1980): the volumetric part lambda (div u)(div v) with div
+ * averaged over the cell, lambda / V s s^T with s_(a,i) = sum_g w_g
+ * d phi_i / d x_a over the cell's m nodes (s[a m + i], local order). */
+static void add_volumetric(double lambda, double vol, const double *sv, size_t m, double *kc)
+{
+    size_t dim = 3 * m;
+    for (size_t lb = 0; lb < m; ++lb) {
+        for (size_t la = lb; la < m; ++la) {
+            for (size_t b = 0; b < 3; ++b) {
+                double f = lambda / vol * sv[b * m + lb];
+                double *col = kc + dim * (3 * lb + b) + 3 * la;
+                for (size_t a = 0; a < 3; ++a) {
+                    col[a] += f * sv[a * m + la];
+                }
+            }
+        }
+    }
+}
+
+/* Point-centred supports (the seed): one local system per Gauss point. */
+static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
+                              size_t cell, size_t m, double *kc)
+{
+    tf_lame shear = {bbar ? 0 : l->lambda, l->mu};
+    double vol = 0, *sv = wk->y; /* 3 m sums, when bbar */
+    memset(sv, 0, 3 * m * sizeof *sv);
+    for (size_t p = 0; p < tf_cells_points(&sh->cells); ++p) {
+        double x[3], w, t0 = omp_get_wtime();
+        tf_cells_point(&sh->cells, cell, p, x, &w);
+        int rc = tf_shape_at(sh, &wk->sw, x, cell, 1);
+        wk->t_shape += omp_get_wtime() - t0;
+        if (rc != 0) {
+            return -1;
+        }
+        add_point(&shear, w, wk->sw.dphi, wk->sw.idx, wk->sw.n, wk->map, 3 * m, kc);
+        vol += w;
+        for (size_t i = 0; i < wk->sw.n; ++i) {
+            size_t li = (size_t)wk->map[wk->sw.idx[i]];
+            for (size_t a = 0; a < 3; ++a) {
+                sv[a * m + li] += w * wk->sw.dphi[a * wk->sw.n + i];
+            }
+        }
+    }
+    if (bbar) {
+        add_volumetric(l->lambda, vol, sv, m, kc);
+    }
+    return 0;
+}
+
+/* Cell-centred supports: every Gauss point of the cell has the same n
+ * nodes, so with Y[g, a n + i] = sqrt(w_g) d phi_i / d x_a at point g, all
+ * sums M^ab_ij = sum_g w_g d_a phi_i d_b phi_j come from one C = Y^T Y
+ * (BLAS dsyrk), and the Lame form gives
+ * K_(3i+a)(3j+b) = lambda M^ab_ij + mu M^ba_ij + mu delta_ab sum_c M^cc_ij. */
+static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
+                            size_t cell, size_t dim, double *kc)
+{
+    size_t np = tf_cells_points(&sh->cells);
+    double t0 = omp_get_wtime();
+    for (size_t p = 0; p < np; ++p) {
+        tf_cells_point(&sh->cells, cell, p, wk->x + 3 * p, wk->w + p);
+    }
+    int rc = tf_shape_cell_points(sh, &wk->sw, cell, wk->x, np, 1);
+    wk->t_shape += omp_get_wtime() - t0;
+    if (rc != 0) {
+        return -1;
+    }
+    size_t n = wk->sw.n, n3 = 3 * n;
+    double *y = wk->y, *c = wk->c;
+    for (size_t p = 0; p < np; ++p) {
+        double sw = sqrt(wk->w[p]);
+        const double *d = wk->sw.dphi + 3 * p * n;
+        for (size_t q = 0; q < n3; ++q) {
+            y[p + np * q] = sw * d[q];
+        }
+    }
+    cblas_dsyrk(CblasColMajor, CblasLower, CblasTrans, (int)n3, (int)np, 1.0, y, (int)np, 0.0, c,
+                (int)n3);
+    double lambda = bbar ? 0 : l->lambda, vol = 0, *sv = y; /* y is free again */
+    if (bbar) {
+        memset(sv, 0, n3 * sizeof *sv);
+        for (size_t p = 0; p < np; ++p) {
+            vol += wk->w[p];
+            for (size_t q = 0; q < n3; ++q) {
+                sv[q] += wk->w[p] * wk->sw.dphi[3 * p * n + q];
+            }
+        }
+    }
+#define M(a, i, b, j) c[((a) * n + (i)) >= ((b) * n + (j)) ? ((a) * n + (i)) + n3 * ((b) * n + (j)) \
+                                                           : ((b) * n + (j)) + n3 * ((a) * n + (i))]
+    for (size_t j = 0; j < n; ++j) {
+        size_t lj = (size_t)wk->map[wk->sw.idx[j]];
+        for (size_t i = j; i < n; ++i) {
+            size_t li = (size_t)wk->map[wk->sw.idx[i]];
+            double tr = l->mu * (M(0, i, 0, j) + M(1, i, 1, j) + M(2, i, 2, j));
+            for (size_t b = 0; b < 3; ++b) {
+                double *col = kc + dim * (3 * lj + b) + 3 * li;
+                for (size_t a = 0; a < 3; ++a) {
+                    col[a] += lambda * M(a, i, b, j) + l->mu * M(b, i, a, j) + (a == b ? tr : 0);
+                }
+            }
+        }
+    }
+#undef M
+    if (bbar) {
+        add_volumetric(l->lambda, vol, sv, n, kc); /* cell mode: local order = support order */
+    }
+    return 0;
+}
+
+int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
+                      size_t cell, const uint32_t *set, size_t m, double *kc)
+{
+    size_t dim = 3 * m;
+    memset(kc, 0, dim * dim * sizeof *kc);
+    for (size_t r = 0; r < m; ++r) {
+        wk->map[set[r]] = (int)r;
+    }
+    int rc = sh->centre == TF_SUPPORT_CELL ? cell_matrix_cell(sh, l, bbar, wk, cell, dim, kc)
+                                           : cell_matrix_points(sh, l, bbar, wk, cell, m, kc);
+    for (size_t r = 0; r < m; ++r) {
+        wk->map[set[r]] = -1;
+    }
+    return rc;
+}
+

@@ -1,0 +1,43 @@
+/*
+ * cell_stiffness.h — the stiffness of one background cell: the sum over its
+ * Gauss points of w B^T D B (seed eq 19) as a dense matrix over the nodes
+ * its supports touch.
+ *
+ * With cell-centred supports all points share one node set, and the sums
+ * M^ab_ij = sum_g w_g d_a phi_i d_b phi_j come from one BLAS dsyrk; with
+ * point-centred supports (the seed) each point adds its own blocks.  With
+ * B-bar (Hughes 1980) the volumetric part lambda (div u)(div v) uses the
+ * divergence averaged over the cell, which removes volumetric locking as
+ * nu approaches 0.5.
+ */
+#ifndef TF_CELL_STIFFNESS_H
+#define TF_CELL_STIFFNESS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "materials/elasticity.h"
+#include "meshfree/shape.h"
+
+/* One thread's scratch. */
+typedef struct tf_cell_work {
+    tf_shape_work sw;
+    int *map;       /* node -> local index in the current cell, or -1 (all -1 between calls) */
+    double *x, *w;  /* Gauss points of a cell and their weights */
+    double *y, *c;  /* scaled gradients and Y^T Y */
+    size_t cap;     /* nodes per cell the buffers hold */
+    double t_shape; /* seconds spent in shape functions */
+} tf_cell_work;
+
+/* Scratch for n_nodes nodes and cells of up to cap nodes.  Returns 0, or
+ * -1 when out of memory. */
+int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap);
+void tf_cell_work_free(tf_cell_work *w);
+
+/* kc (3m x 3m, column major, zeroed here; the lower block triangle is
+ * filled) for cell `cell` whose supports touch the m nodes set[] (ascending).
+ * Returns 0, or -1 with a message in wk->sw.err. */
+int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
+                      size_t cell, const uint32_t *set, size_t m, double *kc);
+
+#endif /* TF_CELL_STIFFNESS_H */

@@ -1,0 +1,135 @@
+/*
+ * cholmod_solve.c — CHOLMOD factorisation and solves (cholmod_solve.h).
+ */
+#include "solvers/cholmod_solve.h"
+
+#include <cblas.h>
+#include <cholmod.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* OpenBLAS splits its level-3 work by its thread count, and the factor's
+ * bits follow the split: a fixed count keeps the result independent of
+ * OMP_NUM_THREADS (which OpenBLAS would otherwise follow).  One thread, the
+ * same as the tool pins for all of OpenBLAS (blas_pin.c), so the bits do not
+ * depend on the machine's core count either; on 41x41x9 the factorisation
+ * took 11.6 s with one thread and 12.0 s with two (pinned Haswell kernels). */
+#define TF_BLAS_THREADS 1
+
+struct tf_chol {
+    cholmod_common cm;
+    cholmod_factor *l;
+    size_t n;
+};
+
+static const char *ordering_name(int ord)
+{
+    switch (ord) {
+    case CHOLMOD_NATURAL:
+        return "natural";
+    case CHOLMOD_AMD:
+        return "AMD";
+    case CHOLMOD_METIS:
+        return "METIS";
+    case CHOLMOD_NESDIS:
+        return "NESDIS";
+    case CHOLMOD_COLAMD:
+        return "COLAMD";
+    default:
+        return "other";
+    }
+}
+
+/* A cholmod_sparse header over our arrays (no copy). */
+static cholmod_sparse wrap(const tf_csc *a)
+{
+    cholmod_sparse s;
+    memset(&s, 0, sizeof s);
+    s.nrow = s.ncol = a->n;
+    s.nzmax = a->nnz;
+    s.p = a->p;
+    s.i = a->i;
+    s.x = a->x;
+    s.stype = -1;
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+}
+
+tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t errlen)
+{
+    tf_chol *c = calloc(1, sizeof *c);
+    if (c == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    cholmod_start(&c->cm);
+    c->cm.print = 0; /* errors come back through the status */
+    c->n = a->n;
+    cholmod_sparse s = wrap(a);
+    openblas_set_num_threads(TF_BLAS_THREADS);
+    double t0 = omp_get_wtime();
+    c->l = cholmod_analyze(&s, &c->cm);
+    double t1 = omp_get_wtime();
+    if (c->l != NULL) {
+        cholmod_factorize(&s, c->l, &c->cm);
+    }
+    info->t_analyse = t1 - t0;
+    info->t_factor = omp_get_wtime() - t1;
+    if (c->l == NULL || c->cm.status != CHOLMOD_OK) {
+        if (c->cm.status == CHOLMOD_NOT_POSDEF) {
+            snprintf(err, errlen,
+                     "the stiffness matrix is not positive definite (pivot %zu of %zu): "
+                     "is the body held by its fixed regions?",
+                     (size_t)c->l->minor, a->n);
+        } else {
+            snprintf(err, errlen, "CHOLMOD failed (status %d)%s", c->cm.status,
+                     c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        }
+        tf_chol_free(c);
+        return NULL;
+    }
+    info->nnz_l = c->cm.lnz;
+    info->flops = c->cm.fl;
+    info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    return c;
+}
+
+int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen)
+{
+    cholmod_dense d;
+    memset(&d, 0, sizeof d);
+    openblas_set_num_threads(TF_BLAS_THREADS);
+    d.nrow = c->n;
+    d.ncol = ncol;
+    d.nzmax = c->n * ncol;
+    d.d = c->n;
+    d.x = (void *)b;
+    d.xtype = CHOLMOD_REAL;
+    d.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *r = cholmod_solve(CHOLMOD_A, c->l, &d, &c->cm);
+    if (r == NULL) {
+        snprintf(err, errlen, "CHOLMOD solve failed (status %d)", c->cm.status);
+        return -1;
+    }
+    memcpy(x, r->x, c->n * ncol * sizeof *x);
+    cholmod_free_dense(&r, &c->cm);
+    return 0;
+}
+
+void tf_chol_free(tf_chol *c)
+{
+    if (c == NULL) {
+        return;
+    }
+    if (c->l != NULL) {
+        cholmod_free_factor(&c->l, &c->cm);
+    }
+    cholmod_finish(&c->cm);
+    free(c);
+}
