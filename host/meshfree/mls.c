@@ -147,10 +147,10 @@ static int point(tf_mls_work *w, const double *xyz, const double *radius, const 
 
 int tf_mls_eval(tf_mls_work *w, const double *xyz, const double *radius, const uint32_t *idx,
                 size_t n, double s, const double *x, size_t np, double *phi, double *dphi,
-                double *rcond, size_t *bad)
+                double *rcond, size_t *at)
 {
     *rcond = INFINITY;
-    *bad = 0;
+    *at = 0;
     if (n > w->cap) {
         return -1;
     }
@@ -158,9 +158,12 @@ int tf_mls_eval(tf_mls_work *w, const double *xyz, const double *radius, const u
         double rc;
         int rc_point = point(w, xyz, radius, idx, n, s, x + 3 * p, phi + p * n,
                              dphi ? dphi + 3 * p * n : NULL, &rc);
-        *rcond = fmin(*rcond, rc);
+        if (rc < *rcond) {
+            *rcond = rc;
+            *at = p;
+        }
         if (rc_point != 0) {
-            *bad = p;
+            *at = p;
             return -1;
         }
     }

@@ -57,12 +57,13 @@ void tf_mls_work_free(tf_mls_work *w);
  * d phi_i / d x_a (per mm), the layout of tf_rpim_eval.  Nodes whose
  * domain does not reach a point get 0 there.  s (mm) scales the basis.
  * *rcond receives the smallest reciprocal condition estimate (1-norm) of
- * the points' moment matrices.  Returns 0, or -1 when n > cap or a moment
- * matrix is singular (rcond <= machine epsilon: fewer than four weighted
- * nodes, or all of them in one plane), with that point's index in *bad. */
+ * the points' moment matrices and *at the index of that point.  Returns 0,
+ * or -1 when n > cap or a moment matrix is singular (rcond <= machine
+ * epsilon: fewer than four weighted nodes, or all of them in one plane),
+ * with that point's index in *at. */
 int tf_mls_eval(tf_mls_work *w, const double *xyz, const double *radius, const uint32_t *idx,
                 size_t n, double s, const double *x, size_t np, double *phi, double *dphi,
-                double *rcond, size_t *bad);
+                double *rcond, size_t *at);
 
 /* Radii of influence of the n nodes: radius[3i + a] = scale x the local
  * nodal spacing of node i along axis a, which is the largest |x_j,a - x_i,a|
