@@ -1,8 +1,8 @@
 /*
  * kelvin.c — seed 001's nonlinear Kelvin viscoelastic law (§2, eqs 9-13),
  * small strain as published.  The seed's text is garbled here; the forms
- * below are the standard ones (Fung, Biomechanics, §7.6 "Kelvin model";
- * Simo & Hughes, Computational Inelasticity, §10.3), derived again in
+ * below are the standard ones (Fung, Biomechanics, ch. 2, the "Kelvin model";
+ * Simo & Hughes, Computational Inelasticity, ch. 10), derived again in
  * docs/solver.md.
  *
  * Fig. 2: a spring k1 in parallel with a Maxwell arm (spring k2 in series

@@ -4,8 +4,9 @@
  * g(t) = E(t)/E_0 = g_inf + (1 - g_inf) exp(-t/tau), g_inf = k1/(k1 + k2),
  * acting on the neo-Hookean second Piola-Kirchhoff stress S0 of the
  * instantaneous moduli (E_0 = k1 + k2, nu) in the reference configuration
- * (the finite-strain form of Simo & Hughes, Computational Inelasticity,
- * §10.3.2, with one relaxation term):
+ * (a convolution model like those of Simo & Hughes, Computational
+ * Inelasticity, ch. 10, with one relaxation term; unlike theirs it relaxes
+ * the whole S, the volumetric part too, as the small-strain law does):
  *
  *   S(t) = g_inf S0(t) + (1 - g_inf) h(t),  h(t) = int_0^t exp(-(t-s)/tau) dS0/ds ds,
  *   h_n+1 = exp(-x) h_n + phi1(x) (S0_n+1 - S0_n),  x = dt/tau,

@@ -9,7 +9,7 @@
  *
  * With dJ/dC = J/2 C^-1, dI1/dC = I and dC^-1/dC = -I_C^-1, where
  * (I_C^-1)_ijkl = (C^-1_ik C^-1_jl + C^-1_il C^-1_jk)/2 (standard results,
- * e.g. Holzapfel, Nonlinear Solid Mechanics, §6.2), S = 2 dW/dC and
+ * e.g. Holzapfel, Nonlinear Solid Mechanics, ch. 6), S = 2 dW/dC and
  * C = 4 d^2W/dC dC are
  *
  *   S = mu J^(-2/3) (I - I1/3 C^-1) + K J (J - 1) C^-1,

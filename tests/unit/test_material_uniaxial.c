@@ -192,7 +192,7 @@ static double relaxation(const tf_material *m, double t)
 
 /* Creep compliance of the same solid: N(eps(t)) = sigma0 J(t) under a
  * stress step, J(t) = 1/k1 - k2/(k1 (k1 + k2)) exp(-t/tau_c),
- * tau_c = eta (k1 + k2)/(k1 k2) (Fung, Biomechanics, §7.6). */
+ * tau_c = eta (k1 + k2)/(k1 k2) (Fung, Biomechanics, ch. 2). */
 static double creep(const tf_material *m, double t)
 {
     double tc = m->eta * (m->k1 + m->k2) / (m->k1 * m->k2);
