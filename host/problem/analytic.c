@@ -7,7 +7,7 @@
 
 static void cantilever(const tf_problem *p, const double at[3], double u[3], double g[9])
 {
-    const tf_isotropic *m = &p->material.as.linear;
+    const tf_material *m = &p->material;
     double lo[3], hi[3];
     tf_problem_bounds(p, lo, hi);
     double e = m->young / (1 - m->poisson * m->poisson);
@@ -47,7 +47,7 @@ void tf_analytic_eval(const tf_problem *p, const double x[3], double u[3], doubl
 void tf_analytic_traction(const tf_problem *p, tf_face face, const double x[3], double t[3])
 {
     double u[3], g[9], sigma[9];
-    tf_lame l = tf_lame_from(p->material.as.linear.young, p->material.as.linear.poisson);
+    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
     tf_analytic_eval(p, x, u, g);
     tf_stress(&l, g, sigma);
     int a = tf_face_axis(face);

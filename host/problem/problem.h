@@ -164,7 +164,7 @@ typedef struct tf_problem {
     char source[512];   /* where it came from (a scene file), for messages */
     tf_geometry geometry;
     tf_cloud cloud;     /* the nodes */
-    tf_material material;
+    tf_material material; /* a law and its parameters (materials/material.h) */
     tf_fixed *fixed;
     size_t n_fixed;
     tf_load *loads;

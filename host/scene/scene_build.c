@@ -96,8 +96,7 @@ static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
 
 static int material(const sd_material *m, tf_problem *s, sd_issue *is)
 {
-    s->material.kind = TF_MATERIAL_LINEAR_ELASTIC;
-    s->material.as.linear = (tf_isotropic){.young = m->young, .poisson = m->poisson};
+    s->material = (tf_material){.law = TF_LAW_LINEAR, .young = m->young, .poisson = m->poisson};
     if (!(isfinite(m->young) && m->young > 0)) {
         return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
                     m->young);

@@ -109,7 +109,7 @@ int tf_error_norms(const tf_solver *s, const double *u, unsigned order, double *
         return tf_fail(s->ctx, "bad quadrature order %u", order);
     }
     double d[36];
-    tf_dmatrix(p->material.as.linear.young, p->material.as.linear.poisson, d);
+    tf_dmatrix(p->material.young, p->material.poisson, d);
     size_t nc = tf_cells_count(&q);
     sums *per = calloc(nc, sizeof *per);
     if (per == NULL) {

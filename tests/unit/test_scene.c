@@ -29,9 +29,8 @@ static void block48_as_the_guide_defines_it(void **state)
     assert_non_null(s);
     assert_string_equal(s->problem.name, "block48");
     assert_int_equal(s->problem.cloud.n, 363);
-    assert_int_equal(s->problem.material.kind, TF_MATERIAL_LINEAR_ELASTIC);
-    assert_true(s->problem.material.as.linear.young == 0.32 &&
-                s->problem.material.as.linear.poisson == 0.49);
+    assert_int_equal(s->problem.material.law, TF_LAW_LINEAR);
+    assert_true(s->problem.material.young == 0.32 && s->problem.material.poisson == 0.49);
     /* node 61 is the top centre; N = i + 11 j + 1 on the top layer */
     const double *c = node_xyz(s, 61);
     assert_true(c[0] == 24 && c[1] == 24 && c[2] == 6);

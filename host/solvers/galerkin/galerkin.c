@@ -143,7 +143,7 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     g->shape_ok = 1;
     announce(g, p, ctx);
     tf_assembly_info ai;
-    tf_lame l = tf_lame_from(p->material.as.linear.young, p->material.as.linear.poisson);
+    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
     if (tf_assemble_stiffness(&g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
                               tf_ctx_threads(ctx), &g->k, &ai, ctx->err, sizeof ctx->err) != 0) {
         return -1;
@@ -161,9 +161,9 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
 
 static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
 {
-    if (p->material.kind != TF_MATERIAL_LINEAR_ELASTIC) {
+    if (p->material.law != TF_LAW_LINEAR) {
         tf_fail(ctx, "%s: the rpim-galerkin solver solves linear elastic materials, not %s",
-                p->name, tf_material_name(p->material.kind));
+                p->name, tf_law_name(p->material.law));
         return NULL;
     }
     galerkin *g = calloc(1, sizeof *g);
