@@ -360,21 +360,21 @@ static double best_a(const decay *d, double b)
 }
 
 static void fit_decay(decay *d, const double *lo, const double *hi, const double *start,
-                      int analytic, tf_fit_result *r)
+                      int analytic, tf_lsfit_result *r)
 {
     d->lower = lo;
     d->upper = hi;
     d->outside = 0;
-    tf_fit_model m = {2, NULL, decay_value, analytic ? decay_jacobian : NULL, d};
-    tf_fit_data data = {NB, 1, d->y, 0, NULL};
-    tf_fit_options o;
-    tf_fit_default_options(&o, 2);
+    tf_lsfit_model m = {2, NULL, decay_value, analytic ? decay_jacobian : NULL, d};
+    tf_lsfit_data data = {NB, 1, d->y, 0, NULL};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, 2);
     o.start = start;
     o.lower = lo;
     o.upper = hi;
     o.lm.ftol = o.lm.xtol = 1e-14;
     char err[256];
-    assert_int_equal(tf_fit(&m, &data, &o, r, err, sizeof err), 0);
+    assert_int_equal(tf_lsfit(&m, &data, &o, r, err, sizeof err), 0);
     assert_true(tf_stop_converged(r->stop));
     assert_int_equal(d->outside, 0);
 }
@@ -387,7 +387,7 @@ static void bounds_hold_and_are_reported(void **state)
     const double start[2] = {1, 0.1}, lo[2] = {-INFINITY, 0}, hi[2] = {INFINITY, 0.3};
     const double lo7[2] = {0, 0.7}, hi7[2] = {10, 5};
     for (int analytic = 0; analytic < 2; ++analytic) {
-        tf_fit_result r;
+        tf_lsfit_result r;
         fit_decay(&d, lo, hi, start, analytic, &r);
         assert_true(r.par[1] == 0.3);
         assert_int_equal(r.state[1], TF_PAR_UPPER);
@@ -396,14 +396,14 @@ static void bounds_hold_and_are_reported(void **state)
         assert_true(isfinite(r.se[0]) && r.se[0] > 0);
         assert_close(r.par[0], best_a(&d, 0.3), 1e-9);
         assert_int_equal(r.rank, 1);
-        tf_fit_result_free(&r);
+        tf_lsfit_result_free(&r);
 
         const double start7[2] = {1, 1};
         fit_decay(&d, lo7, hi7, start7, analytic, &r);
         assert_true(r.par[1] == 0.7);
         assert_int_equal(r.state[1], TF_PAR_LOWER);
         assert_close(r.par[0], best_a(&d, 0.7), 1e-9);
-        tf_fit_result_free(&r);
+        tf_lsfit_result_free(&r);
     }
 }
 
@@ -413,7 +413,7 @@ static void inactive_bounds_change_nothing(void **state)
     decay d;
     decay_data(&d);
     const double start[2] = {1, 0.1}, lo[2] = {0, 0}, hi[2] = {10, 3};
-    tf_fit_result free_fit, boxed;
+    tf_lsfit_result free_fit, boxed;
     fit_decay(&d, NULL, NULL, start, 1, &free_fit);
     fit_decay(&d, lo, hi, start, 1, &boxed);
     assert_int_equal(boxed.state[0], TF_PAR_FREE);
@@ -423,8 +423,8 @@ static void inactive_bounds_change_nothing(void **state)
         assert_close(boxed.se[j], free_fit.se[j], 1e-8);
     }
     assert_close(free_fit.par[1], 0.5, 0.05);
-    tf_fit_result_free(&free_fit);
-    tf_fit_result_free(&boxed);
+    tf_lsfit_result_free(&free_fit);
+    tf_lsfit_result_free(&boxed);
 }
 
 static void start_outside_the_box_is_clamped(void **state)
@@ -433,11 +433,11 @@ static void start_outside_the_box_is_clamped(void **state)
     decay d;
     decay_data(&d);
     const double start[2] = {50, -3}, lo[2] = {0, 0}, hi[2] = {10, 0.3};
-    tf_fit_result r;
+    tf_lsfit_result r;
     fit_decay(&d, lo, hi, start, 1, &r);
     assert_true(r.par[1] == 0.3);
     assert_close(r.par[0], best_a(&d, 0.3), 1e-9);
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -509,7 +509,7 @@ static void large_residual_fit_ends_at_the_gauss_newton_point(void **state)
  * rounding of a model evaluation would, so that ||r||^2 is only known to
  * ~1e-10 relative: far above the rounding of the sum itself (5e-15), and
  * reached while the parameters are still ~1e-7 from the Gauss-Newton point.
- * tf_fit passes ||y|| to the solver, which then knows this floor and still
+ * tf_lsfit passes ||y|| to the solver, which then knows this floor and still
  * ends at the Gauss-Newton point. */
 #define NZ 24
 typedef struct lanczos {
@@ -566,15 +566,15 @@ static void small_residual_fit_ends_at_the_gauss_newton_point(void **state)
         d.y[i] = round(1e4 * lanczos_model(truth, d.x[i])) * 1e-4;
     }
     const double start[6] = {1.2, 0.3, 5.6, 5.5, 6.5, 7.6};
-    tf_fit_model model = {6, NULL, lanczos_value, lanczos_jacobian, &d};
-    tf_fit_data data = {NZ, 1, d.y, 0, NULL};
-    tf_fit_options o;
-    tf_fit_default_options(&o, 6);
+    tf_lsfit_model model = {6, NULL, lanczos_value, lanczos_jacobian, &d};
+    tf_lsfit_data data = {NZ, 1, d.y, 0, NULL};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, 6);
     o.start = start;
     o.lm.ftol = o.lm.xtol = 1e-15;
-    tf_fit_result res;
+    tf_lsfit_result res;
     char err[128];
-    assert_int_equal(tf_fit(&model, &data, &o, &res, err, sizeof err), 0);
+    assert_int_equal(tf_lsfit(&model, &data, &o, &res, err, sizeof err), 0);
     assert_true(tf_stop_converged(res.stop));
     assert_true(res.rss[0] < 1e-7); /* the residuals are small */
     double jac[6 * NZ], r[NZ], step[6];
@@ -589,7 +589,7 @@ static void small_residual_fit_ends_at_the_gauss_newton_point(void **state)
     for (int j = 0; j < 6; ++j) {
         assert_close(step[j], 0, 1e-10 * fabs(res.par[j]));
     }
-    tf_fit_result_free(&res);
+    tf_lsfit_result_free(&res);
 }
 
 /* Difference Jacobians against the analytic one: forward differences to

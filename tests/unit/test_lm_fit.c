@@ -61,13 +61,13 @@ static double noise(int i, int k)
 }
 
 static int fit_linear(poly *p, size_t n, size_t k, const double *y, const double *w,
-                      tf_fit_result *r, char *err, size_t errlen)
+                      tf_lsfit_result *r, char *err, size_t errlen)
 {
-    tf_fit_model model = {.n_par = n, .design = poly_design, .ctx = p};
-    tf_fit_data data = {M, k, y, M, w};
-    tf_fit_options o;
-    tf_fit_default_options(&o, n);
-    return tf_fit(&model, &data, &o, r, err, errlen);
+    tf_lsfit_model model = {.n_par = n, .design = poly_design, .ctx = p};
+    tf_lsfit_data data = {M, k, y, M, w};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, n);
+    return tf_lsfit(&model, &data, &o, r, err, errlen);
 }
 
 static void many_columns_in_one_factorisation(void **state)
@@ -89,7 +89,7 @@ static void many_columns_in_one_factorisation(void **state)
             y[i + k * M] = v;
         }
     }
-    tf_fit_result r;
+    tf_lsfit_result r;
     char err[128];
     assert_int_equal(fit_linear(&p, N, K, y, NULL, &r, err, sizeof err), 0);
     assert_int_equal(r.stop, TF_STOP_DIRECT);
@@ -100,14 +100,14 @@ static void many_columns_in_one_factorisation(void **state)
         }
         assert_true(r.rss[k] < 1e-24);
         /* Each column alone gives the same answer. */
-        tf_fit_result one;
+        tf_lsfit_result one;
         assert_int_equal(fit_linear(&p, N, 1, y + k * M, NULL, &one, err, sizeof err), 0);
         for (int j = 0; j < N; ++j) {
             assert_close(one.par[j], r.par[j + k * N], 1e-13);
         }
-        tf_fit_result_free(&one);
+        tf_lsfit_result_free(&one);
     }
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
 }
 
 /* Straight line: the textbook covariance, var(slope) = s^2 / Sxx and
@@ -128,16 +128,16 @@ static void line_covariance_is_the_textbook_one(void **state)
     for (int i = 0; i < M; ++i) {
         sxx += (p.t[i] - mean) * (p.t[i] - mean);
     }
-    tf_fit_result r;
+    tf_lsfit_result r;
     char err[128];
     assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), 0);
     double s2 = r.rss[0] / (M - 2);
     assert_close(r.sigma2[0], s2, 1e-18);
     assert_close(r.se[1], sqrt(s2 / sxx), 1e-12);
     assert_close(r.se[0], sqrt(s2 * (1.0 / M + mean * mean / sxx)), 1e-12);
-    assert_close(tf_fit_cov(&r, 0, 0, 1), -s2 * mean / sxx, 1e-12);
+    assert_close(tf_lsfit_cov(&r, 0, 0, 1), -s2 * mean / sxx, 1e-12);
     assert_close(r.par[1], -0.25, 1e-3);
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
 }
 
 /* Weight 2 on a row is the same fit as that row given twice: fit A
@@ -157,7 +157,7 @@ static void weights_act_as_repeated_rows(void **state)
     }
     memcpy(y2, y, sizeof y);
     y2[20] = y[5];
-    tf_fit_result a, b;
+    tf_lsfit_result a, b;
     char err[128];
     assert_int_equal(fit_linear(&p, 3, 1, y, w, &a, err, sizeof err), 0);
     assert_int_equal(fit_linear(&q, 3, 1, y2, NULL, &b, err, sizeof err), 0);
@@ -166,8 +166,8 @@ static void weights_act_as_repeated_rows(void **state)
     }
     assert_close(a.rss[0], b.rss[0], 1e-15);
     assert_true(a.rss[0] > 1e-6); /* the data are not on the model */
-    tf_fit_result_free(&a);
-    tf_fit_result_free(&b);
+    tf_lsfit_result_free(&a);
+    tf_lsfit_result_free(&b);
 }
 
 /* Columns 1, t, 2t: the third is the second twice over.  The fit is the fit
@@ -182,7 +182,7 @@ static void rank_deficient_linear_fit(void **state)
     for (int i = 0; i < M; ++i) {
         y[i] = 0.5 + 3 * p.t[i] + noise(i, 2);
     }
-    tf_fit_result full, reduced;
+    tf_lsfit_result full, reduced;
     char err[128];
     assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &reduced, err, sizeof err), 0);
     p.dup = 1;
@@ -204,8 +204,8 @@ static void rank_deficient_linear_fit(void **state)
     for (int j = 0; j < 3; ++j) {
         assert_true(full.cov[dep + j * 3] == 0 && full.cov[j + dep * 3] == 0);
     }
-    tf_fit_result_free(&full);
-    tf_fit_result_free(&reduced);
+    tf_lsfit_result_free(&full);
+    tf_lsfit_result_free(&reduced);
 }
 
 /* A column in tiny units is not mistaken for a dependent one. */
@@ -219,12 +219,12 @@ static void rank_decision_ignores_units(void **state)
     for (int i = 0; i < M; ++i) {
         y[i] = 1 + 2 * p.t[i];
     }
-    tf_fit_result r;
+    tf_lsfit_result r;
     char err[128];
     assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), 0);
     assert_int_equal(r.rank, 2);
     assert_close(r.par[1], 2e12, 1e-1);
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
 }
 
 static void bad_linear_input_is_refused(void **state)
@@ -236,7 +236,7 @@ static void bad_linear_input_is_refused(void **state)
     for (int i = 0; i < M; ++i) {
         w[i] = 1;
     }
-    tf_fit_result r;
+    tf_lsfit_result r;
     char err[128];
     p.poison = 1;
     assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), -1);
@@ -249,12 +249,12 @@ static void bad_linear_input_is_refused(void **state)
     y[7] = INFINITY;
     assert_int_equal(fit_linear(&p, 2, 1, y, w, &r, err, sizeof err), -1);
     assert_non_null(strstr(err, "data value (7"));
-    tf_fit_model both = {.n_par = 2, .design = poly_design, .value = NULL, .ctx = &p};
-    tf_fit_data data = {M, 1, y, 0, NULL};
-    tf_fit_options o;
-    tf_fit_default_options(&o, 2);
+    tf_lsfit_model both = {.n_par = 2, .design = poly_design, .value = NULL, .ctx = &p};
+    tf_lsfit_data data = {M, 1, y, 0, NULL};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, 2);
     both.n_par = 0;
-    assert_int_equal(tf_fit(&both, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&both, &data, &o, &r, err, sizeof err), -1);
 }
 
 /* More parameters than observations: the rank is at most the number of
@@ -268,17 +268,17 @@ static void underdetermined_fit(void **state)
     for (int i = 0; i < M; ++i) {
         y[i] = sin(3 * p.t[i]);
     }
-    tf_fit_model model = {.n_par = 5, .design = poly_design, .ctx = &p};
-    tf_fit_data data = {3, 1, y, M, NULL};
-    tf_fit_options o;
-    tf_fit_default_options(&o, 5);
-    tf_fit_result r;
+    tf_lsfit_model model = {.n_par = 5, .design = poly_design, .ctx = &p};
+    tf_lsfit_data data = {3, 1, y, M, NULL};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, 5);
+    tf_lsfit_result r;
     char err[128];
-    assert_int_equal(tf_fit(&model, &data, &o, &r, err, sizeof err), 0);
+    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), 0);
     assert_int_equal(r.rank, 3);
     assert_true(r.rss[0] < 1e-28);
     assert_true(isnan(r.sigma2[0]));
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -315,18 +315,18 @@ static int expo_jacobian(void *ctx, const double *p, double *j)
     return 0;
 }
 
-static void fit_expo(expo *e, int joint, int analytic, tf_fit_result *r)
+static void fit_expo(expo *e, int joint, int analytic, tf_lsfit_result *r)
 {
     e->joint = joint;
     const double start3[3] = {0.1, 0.2, 0}, start2[2] = {0.3, 0};
-    tf_fit_model model = {joint ? 3 : 2, NULL, expo_value, analytic ? expo_jacobian : NULL, e};
-    tf_fit_data data = {M, 1, e->y, 0, NULL};
-    tf_fit_options o;
-    tf_fit_default_options(&o, model.n_par);
+    tf_lsfit_model model = {joint ? 3 : 2, NULL, expo_value, analytic ? expo_jacobian : NULL, e};
+    tf_lsfit_data data = {M, 1, e->y, 0, NULL};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, model.n_par);
     o.start = joint ? start3 : start2;
     o.lm.ftol = o.lm.xtol = 1e-14;
     char err[128];
-    assert_int_equal(tf_fit(&model, &data, &o, r, err, sizeof err), 0);
+    assert_int_equal(tf_lsfit(&model, &data, &o, r, err, sizeof err), 0);
     assert_true(tf_stop_converged(r->stop));
 }
 
@@ -339,7 +339,7 @@ static void rank_deficient_jacobian_has_meaningful_covariance(void **state)
         e.y[i] = 2 * e.x[i] + 1 + noise(i, 3);
     }
     for (int analytic = 0; analytic < 2; ++analytic) {
-        tf_fit_result joint, reduced;
+        tf_lsfit_result joint, reduced;
         fit_expo(&e, 0, analytic, &reduced);
         fit_expo(&e, 1, analytic, &joint);
         assert_int_equal(joint.rank, 2);
@@ -356,11 +356,11 @@ static void rank_deficient_jacobian_has_meaningful_covariance(void **state)
         assert_close(joint.rss[0], reduced.rss[0], 1e-14);
         assert_close(joint.se[kept], reduced.se[0], 1e-6 * reduced.se[0]);
         assert_close(joint.se[2], reduced.se[1], 1e-6 * reduced.se[1]);
-        assert_close(tf_fit_cov(&joint, 0, kept, 2), tf_fit_cov(&reduced, 0, 0, 1),
-                     1e-6 * fabs(tf_fit_cov(&reduced, 0, 0, 1)));
+        assert_close(tf_lsfit_cov(&joint, 0, kept, 2), tf_lsfit_cov(&reduced, 0, 0, 1),
+                     1e-6 * fabs(tf_lsfit_cov(&reduced, 0, 0, 1)));
         assert_close(exp(reduced.par[0]), 2, 0.01);
-        tf_fit_result_free(&joint);
-        tf_fit_result_free(&reduced);
+        tf_lsfit_result_free(&joint);
+        tf_lsfit_result_free(&reduced);
     }
 }
 
@@ -380,23 +380,23 @@ static void nonlinear_misuse_is_refused(void **state)
     for (int i = 0; i < M; ++i) {
         w[i] = 1;
     }
-    tf_fit_model model = {2, NULL, failing_value, NULL, &e};
-    tf_fit_data data = {M, 1, e.y, 0, w};
-    tf_fit_options o;
-    tf_fit_default_options(&o, 2);
-    tf_fit_result r;
+    tf_lsfit_model model = {2, NULL, failing_value, NULL, &e};
+    tf_lsfit_data data = {M, 1, e.y, 0, w};
+    tf_lsfit_options o;
+    tf_lsfit_default_options(&o, 2);
+    tf_lsfit_result r;
     char err[128];
-    assert_int_equal(tf_fit(&model, &data, &o, &r, err, sizeof err), -1); /* no start */
+    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1); /* no start */
     o.start = start;
-    assert_int_equal(tf_fit(&model, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
     assert_non_null(strstr(err, "callback failed"));
     model.value = expo_value;
     w[2] = NAN;
-    assert_int_equal(tf_fit(&model, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
     assert_non_null(strstr(err, "observation 2"));
     w[2] = 1;
     data.n_rhs = 2;
-    assert_int_equal(tf_fit(&model, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
 }
 
 int main(void)

@@ -71,7 +71,7 @@ static void all_54_runs_reach_six_digits(void **state)
         load(problems[k], &d, &model);
         double resolution = tf_nist_rss_resolution(&d, model);
         for (int start = 1; start <= 2; ++start) {
-            tf_fit_options o;
+            tf_lsfit_options o;
             tf_nist_options(&o, d.n_par);
             tf_nist_score s;
             char err[256];
