@@ -20,7 +20,7 @@
 #include "base/log.h"
 #include "base/plot.h"
 #include "scene/scene.h"
-#include "cost/select.h"
+#include "tradeoff/select.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
@@ -324,7 +324,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         rc = emit_selected(ctx, &a, p, solver, &plan, &o);
     }
     if (rc == TF_EXIT_OK && a.report &&
-        tf_fit_report(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
+        tf_report_fit(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
         tf_error(ctx, "fit: report: %s", err);
         rc = TF_EXIT_FAIL;
     }

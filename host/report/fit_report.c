@@ -236,7 +236,7 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
     }
 }
 
-int tf_fit_report(const char *dir, const char *header, const tf_problem *s,
+int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
                   const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *o,
                   char *err, size_t errlen)
 {

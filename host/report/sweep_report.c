@@ -3,13 +3,14 @@
  * plot of held-out error against native time per evaluation, with the
  * seed's own point (0.1509 s per evaluation, 0.5 mm maximum error).
  */
+#include "report/sweep_report.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "base/atomic_file.h"
 #include "base/plot.h"
-#include "cost/sweep.h"
 
 #define SEED_NS 0.1509e9 /* seed 000 §5.1.2: 0.1509 s per evaluation (Matlab) */
 #define SEED_MM 0.5      /* its reported maximum deviation */
@@ -19,7 +20,7 @@ static const char *unit(const tf_candidate *c)
     return c->family == TFIT_FAMILY_CONTACT ? "N" : "mm";
 }
 
-int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
 {
     tf_afile f;
     if (tf_afile_open(&f, path, err, errlen) != 0) {
@@ -51,8 +52,8 @@ static void number(FILE *f, double v, const char *fmt)
     }
 }
 
-int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
-                      size_t errlen)
+int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
+                             size_t errlen)
 {
     tf_afile f;
     if (tf_afile_open(&f, path, err, errlen) != 0) {
@@ -91,7 +92,7 @@ int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path,
     return tf_afile_commit(&f, err, errlen);
 }
 
-int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen)
 {
     static const char *const colour[] = {"", "#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
     static const int point[] = {7, 5, 9};

@@ -60,11 +60,4 @@ void tf_sweep_free(tf_sweep *sw);
 const char *tf_precision_name(tf_precision p);
 const char *tf_output_set_name(tf_output_set s);
 
-/* CSV, Markdown table and log-log PNG (error against native time, with the
- * seed's own point).  Each returns 0, or -1 with a message. */
-int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen);
-int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
-                      size_t errlen);
-int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen);
-
 #endif /* TF_SWEEP_H */

@@ -8,7 +8,7 @@
  * arithmetic: what the fit achieves before float32 rounding.  There is no
  * float64 target evaluator, so it has no time.
  */
-#include "cost/sweep.h"
+#include "tradeoff/sweep.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -10,7 +10,7 @@
 #include <stddef.h>
 
 #include "cost/cycles.h"
-#include "cost/sweep.h"
+#include "tradeoff/sweep.h"
 
 typedef struct tf_mcu {
     tf_core core;

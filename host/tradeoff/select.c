@@ -1,7 +1,7 @@
 /*
  * select.c — see select.h.
  */
-#include "cost/select.h"
+#include "tradeoff/select.h"
 
 #include <math.h>
 #include <stdio.h>
