@@ -17,7 +17,7 @@
 
 #include "fitting/fit_common.h"
 #include "fitting/pipeline.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "model/ref_eval.h"
 #include "scene/scene.h"
 
@@ -53,7 +53,7 @@ static int check(const char *path, const material *mat)
     const size_t dofs = 3 * tf_solver_node_count(solver);
     double train[6][3], fresh[FRESH][3], *u = malloc(FRESH * dofs * sizeof *u);
     float *out = malloc(3 * fwd->n_out * sizeof *out);
-    tf_loadcases(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
+    tf_force_samples(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
     tf_round_to_float(fresh, FRESH);
     int bad = tf_solver_solve(solver, 0, (const double(*)[3])fresh, FRESH, NULL, u) != 0;
     double fmax_err = 0, big = 0, crel = 0;

@@ -15,7 +15,7 @@
 #include <cmocka.h>
 
 #include "fitting/families/family.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "base/rng.h"
 
 #define NC 120
@@ -30,7 +30,7 @@ static const double centre[3] = {0.1, -0.2, 0.0}, radius = 2.0;
 static void make_data(void)
 {
     double ho[1][3];
-    tf_loadcases(centre, radius, NC, 1, 3, force, ho);
+    tf_force_samples(centre, radius, NC, 1, 3, force, ho);
     tf_rng r = {12};
     double mode[3][3 * NOUT];
     for (int k = 0; k < 3; ++k) {

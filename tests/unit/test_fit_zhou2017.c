@@ -17,7 +17,7 @@
 
 #include "fitting/families/family.h"
 #include "fitting/families/zhou2017.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 
 #define G 11
 #define NOUT (G * G)
@@ -75,7 +75,7 @@ static void build(tf_fitdata axis[3], tf_fitdata *combined)
     }
     const double zero[3] = {0, 0, 0};
     double ho[1][3];
-    tf_loadcases(zero, 1.0, NC, 1, 9, cf, ho);
+    tf_force_samples(zero, 1.0, NC, 1, 9, cf, ho);
     for (int i = 0; i < NC; ++i) {
         response(cf[i], cu[i], ccontact[i]);
     }

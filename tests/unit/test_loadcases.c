@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "base/rng.h"
 
 #define NT 100
@@ -23,7 +23,7 @@ static void inside_and_axes(void **state)
     (void)state;
     const double c[3] = {0.5, -1.0, 2.0}, r = 3.0;
     double tr[NT][3], ho[NH][3];
-    tf_loadcases(c, r, NT, NH, 42, tr, ho);
+    tf_force_samples(c, r, NT, NH, 42, tr, ho);
     for (int i = 0; i < NT + NH; ++i) {
         const double *p = i < NT ? tr[i] : ho[i - NT];
         double d = sqrt(pow(p[0] - c[0], 2) + pow(p[1] - c[1], 2) + pow(p[2] - c[2], 2));
@@ -45,14 +45,14 @@ static void space_filling_and_deterministic(void **state)
     (void)state;
     const double c[3] = {0, 0, 0};
     double a[NT][3], b[NT][3], ho[NH][3];
-    tf_loadcases(c, 1.0, NT, NH, 7, a, ho);
-    tf_loadcases(c, 1.0, NT, NH, 7, b, ho);
+    tf_force_samples(c, 1.0, NT, NH, 7, a, ho);
+    tf_force_samples(c, 1.0, NT, NH, 7, b, ho);
     assert_memory_equal(a, b, sizeof a);
-    tf_loadcases(c, 1.0, NT, NH, 8, b, ho);
+    tf_force_samples(c, 1.0, NT, NH, 8, b, ho);
     assert_true(memcmp(a[10], b[10], sizeof a[10]) != 0);
 
     /* Low discrepancy keeps points apart: compare with i.i.d. uniform sets. */
-    double d_design = tf_loadcases_min_distance((const double(*)[3])a, NT);
+    double d_design = tf_force_samples_min_distance((const double(*)[3])a, NT);
     tf_rng r = {1};
     double worse = 0;
     for (int trial = 0; trial < 20; ++trial) {
@@ -63,7 +63,7 @@ static void space_filling_and_deterministic(void **state)
                 memcpy(rnd[n++], u, sizeof u);
             }
         }
-        worse += tf_loadcases_min_distance((const double(*)[3])rnd, NT) < d_design;
+        worse += tf_force_samples_min_distance((const double(*)[3])rnd, NT) < d_design;
     }
     assert_true(worse >= 18); /* the design beats random sets almost always */
 }

@@ -1,11 +1,11 @@
 /*
- * loads.h — nodal force vectors (seed eq 25): F_I = integral over the patch
+ * load_vector.h — nodal force vectors (seed eq 25): F_I = integral over the patch
  * of Phi_I t, with Gauss points on the patch (quadrature.h) and the same
  * shape functions as the stiffness; a point force goes to its node (RPIM
  * shape functions interpolate: Phi_I(x_J) = delta_IJ).
  */
-#ifndef TF_LOADS_H
-#define TF_LOADS_H
+#ifndef TF_LOAD_VECTOR_H
+#define TF_LOAD_VECTOR_H
 
 #include <stddef.h>
 
@@ -23,4 +23,4 @@ int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, do
 int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
                   char *err, size_t errlen);
 
-#endif /* TF_LOADS_H */
+#endif /* TF_LOAD_VECTOR_H */

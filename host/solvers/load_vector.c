@@ -1,8 +1,8 @@
 /*
- * loads.c — nodal force vectors of patch tractions and point forces
- * (loads.h; seed eq 25).
+ * load_vector.c — nodal force vectors of patch tractions and point forces
+ * (load_vector.h; seed eq 25).
  */
-#include "solvers/loads.h"
+#include "solvers/load_vector.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /*
- * loadcases.c — see loadcases.h.
+ * force_samples.c — see force_samples.h.
  */
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 
 #include <math.h>
 
@@ -31,8 +31,8 @@ static int inside(const double u[3])
     return u[0] * u[0] + u[1] * u[1] + u[2] * u[2] <= 1.0;
 }
 
-void tf_loadcases(const double centre[3], double radius, size_t n_train, size_t n_heldout,
-                  uint64_t seed, double (*train)[3], double (*heldout)[3])
+void tf_force_samples(const double centre[3], double radius, size_t n_train, size_t n_heldout,
+                      uint64_t seed, double (*train)[3], double (*heldout)[3])
 {
     size_t n = 0;
     for (int axis = 0; axis < 3 && n < n_train; ++axis) {
@@ -61,7 +61,7 @@ void tf_loadcases(const double centre[3], double radius, size_t n_train, size_t 
     }
 }
 
-double tf_loadcases_min_distance(const double (*p)[3], size_t n)
+double tf_force_samples_min_distance(const double (*p)[3], size_t n)
 {
     double best = INFINITY;
     for (size_t i = 0; i < n; ++i) {
