@@ -23,4 +23,8 @@ void tf_force_samples(const double centre[3], double radius, size_t n_train, siz
 /* Smallest distance between two points of a set (for tests and reports). */
 double tf_force_samples_min_distance(const double (*p)[3], size_t n);
 
+/* Rounds every component to the nearest float: forces as the firmware
+ * receives them. */
+void tf_forces_to_float(double (*v)[3], size_t n);
+
 #endif /* TF_FORCE_SAMPLES_H */

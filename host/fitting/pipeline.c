@@ -9,7 +9,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "base/log.h"
 #include "model/ref_eval.h"
@@ -42,8 +42,9 @@ static uint32_t cheapest_within(const double *v, uint32_t lo, uint32_t hi)
 
 /* Degrees p in [lo, max] by CV; a degree with more terms than a training
  * fold has cases is not tried (its CV error is infinite). */
-static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *plan, uint32_t lo,
-                         uint32_t extra, double *cv, uint32_t *best, char *err, size_t errlen)
+static int select_degree(const tf_fitdata *d, tf_family_fitter fit, const tf_fit_plan *plan,
+                         uint32_t lo, uint32_t extra, double *cv, uint32_t *best, char *err,
+                         size_t errlen)
 {
     size_t fold_cases = d->n_cases - (d->n_cases + plan->folds - 1) / plan->folds;
     uint32_t hi = lo;
@@ -53,7 +54,8 @@ static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *
             continue;
         }
         uint32_t orders[2] = {p, extra};
-        if (tf_cv_error(d, fit, orders, plan->folds, plan->seed, &cv[p], NULL, err, errlen) != 0) {
+        if (tf_family_cv_error(d, fit, orders, plan->folds, plan->seed, &cv[p], NULL, err,
+                               errlen) != 0) {
             return -1;
         }
         hi = p;
@@ -63,7 +65,7 @@ static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *
         snprintf(err, errlen,
                  "%s: no degree is determined by the %zu training cases (repeated or collinear "
                  "load cases?)",
-                 TF_FIT_UNDETERMINED, d->n_cases);
+                 TF_FAMILY_UNDETERMINED, d->n_cases);
         return -1;
     }
     return 0;
@@ -71,8 +73,8 @@ static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *
 
 static void heldout(tf_family_fit *f, const tf_fitdata *d)
 {
-    tf_model_errors(f->model, d, NULL, d->n_cases, &f->heldout_max, &f->heldout_rms,
-                    &f->heldout_rel_max);
+    tf_family_errors(f->model, d, NULL, d->n_cases, &f->heldout_max, &f->heldout_rms,
+                     &f->heldout_rel_max);
     f->model->heldout_max = f->heldout_max;
     f->model->heldout_rms = f->heldout_rms;
     f->model->heldout_rel_max = f->heldout_rel_max;
@@ -178,16 +180,16 @@ static int fit_modal(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size
         if (r > rmax) {
             continue;
         }
-        if (tf_cv_error(d, tf_fit_modal, orders, plan->folds, plan->seed, &f->cv_rank[r], NULL,
-                        err, errlen) != 0) {
+        if (tf_family_cv_error(d, tf_fit_modal, orders, plan->folds, plan->seed, &f->cv_rank[r],
+                               NULL, err, errlen) != 0) {
             return -1;
         }
         tf_model *m = tf_fit_modal(d, NULL, d->n_cases, orders, "modal", err, errlen);
         if (m == NULL) {
             return -1;
         }
-        tf_model_errors(m, &o->cases.heldout, NULL, o->cases.heldout.n_cases, &o->rank_max[r],
-                        NULL, NULL);
+        tf_family_errors(m, &o->cases.heldout, NULL, o->cases.heldout.n_cases, &o->rank_max[r],
+                         NULL, NULL);
         if (o->rank_10um == 0 && o->rank_max[r] <= 0.010) {
             o->rank_10um = r;
         }

@@ -18,7 +18,7 @@
 
 #include "model/basis.h"
 #include "cost/cycles.h"
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "base/log.h"
 #include "model/q31.h"
@@ -153,8 +153,8 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     c->us_m4f = m4.cycles / tf_core_mhz(TF_CORE_M4F);
     c->us_m4f_low = m4.cycles_low / tf_core_mhz(TF_CORE_M4F);
     c->us_m7 = m7.cycles / tf_core_mhz(TF_CORE_M7);
-    tf_model_errors(m, held, NULL, held->n_cases, &c->heldout_max, &c->heldout_rms,
-                    &m->heldout_rel_max);
+    tf_family_errors(m, held, NULL, held->n_cases, &c->heldout_max, &c->heldout_rms,
+                     &m->heldout_rel_max);
     m->heldout_max = c->heldout_max; /* the header reports them if it is chosen */
     m->heldout_rms = c->heldout_rms;
     m->heldout_cases = (uint32_t)held->n_cases;
@@ -242,8 +242,8 @@ static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output
     const uint32_t p = m->dims[0], t = tf_terms(p);
     const size_t rows = 3 * (size_t)m->n_out, n = train->n_cases;
     char err[256];
-    double *a = tf_fit_design(m, contact ? train->contact : train->force, NULL, n, p);
-    double *y = contact ? malloc(n * 3 * sizeof *y) : tf_fit_gather_u(train, NULL, n);
+    double *a = tf_family_design(m, contact ? train->contact : train->force, NULL, n, p);
+    double *y = contact ? malloc(n * 3 * sizeof *y) : tf_family_gather_u(train, NULL, n);
     double *x = malloc(t * rows * sizeof *x), *phi = malloc(t * sizeof *phi);
     int rc = (a && y && x && phi && grow(sw) == 0) ? 0 : -1;
     if (rc == 0 && contact) {
@@ -254,7 +254,7 @@ static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output
         }
     }
     if (rc == 0) {
-        rc = tf_fit_lsq(a, n, t, y, rows, x, err, sizeof err);
+        rc = tf_family_lsq(a, n, t, y, rows, x, err, sizeof err);
     }
     if (rc == 0) {
         tf_candidate *c = &sw->c[sw->n++];
@@ -264,7 +264,7 @@ static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output
         double emax = 0, sum2 = 0;
         for (size_t i = 0; i < held->n_cases; ++i) {
             double g[3];
-            tf_fit_normalise(m, case_input(held, contact, i), g);
+            tf_family_normalise(m, case_input(held, contact, i), g);
             tf_basis(p, g, phi);
             const double *truth = contact ? held->force[i] : held->u + rows * i;
             for (size_t o = 0; o < rows; ++o) {

@@ -15,7 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fitting/fit_common.h"
 #include "fitting/pipeline.h"
 #include "fitting/force_samples.h"
 #include "model/ref_eval.h"
@@ -54,7 +53,7 @@ static int check(const char *path, const material *mat)
     double train[6][3], fresh[FRESH][3], *u = malloc(FRESH * dofs * sizeof *u);
     float *out = malloc(3 * fwd->n_out * sizeof *out);
     tf_force_samples(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
-    tf_round_to_float(fresh, FRESH);
+    tf_forces_to_float(fresh, FRESH);
     int bad = tf_solver_solve(solver, 0, (const double(*)[3])fresh, FRESH, NULL, u) != 0;
     double fmax_err = 0, big = 0, crel = 0;
     for (size_t i = 0; !bad && i < FRESH; ++i) {

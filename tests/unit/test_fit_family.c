@@ -81,17 +81,20 @@ static void nodal_orders(void **state)
     tf_model *m2 = tf_fit_nodal(&d, NULL, NC, &p2, "n2", err, sizeof err);
     assert_non_null(m1);
     assert_non_null(m2);
-    tf_model_errors(m1, &d, NULL, NC, &max1, &rms1, NULL);
-    tf_model_errors(m2, &d, NULL, NC, &max2, &rms2, NULL);
+    tf_family_errors(m1, &d, NULL, NC, &max1, &rms1, NULL);
+    tf_family_errors(m2, &d, NULL, NC, &max2, &rms2, NULL);
     assert_true(max1 > 0.05);   /* a quadratic field is not linear */
     assert_true(max2 < 2e-6);   /* float32 evaluation of the exact model */
     assert_memory_equal(m2->node_ids, ids, sizeof ids);
 
     double cv1, cv2, cv3;
     uint32_t p3 = 3;
-    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err), 0);
-    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err), 0);
-    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p3, 5, 1, &cv3, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err),
+                     0);
+    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err),
+                     0);
+    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p3, 5, 1, &cv3, NULL, err, sizeof err),
+                     0);
     assert_true(cv2 < 1e-3 * cv1);
     assert_true(cv3 < 1e-3 * cv1);
     tf_model_free(m1);
@@ -110,8 +113,8 @@ static void modal_rank(void **state)
     assert_non_null(m2);
     assert_non_null(m3);
     double max2, max3;
-    tf_model_errors(m2, &d, NULL, NC, &max2, NULL, NULL);
-    tf_model_errors(m3, &d, NULL, NC, &max3, NULL, NULL);
+    tf_family_errors(m2, &d, NULL, NC, &max2, NULL, NULL);
+    tf_family_errors(m3, &d, NULL, NC, &max3, NULL, NULL);
     assert_true(max2 > 0.01); /* the third mode is missing */
     assert_true(max3 < 2e-6);
     const uint32_t too_many[2] = {1, NC + 1};
@@ -133,8 +136,8 @@ static void contact_inverse(void **state)
     assert_non_null(lin);
     assert_non_null(cub);
     double rel1, rel3;
-    tf_model_errors(lin, &d, NULL, NC, NULL, NULL, &rel1);
-    tf_model_errors(cub, &d, NULL, NC, NULL, NULL, &rel3);
+    tf_family_errors(lin, &d, NULL, NC, NULL, NULL, &rel1);
+    tf_family_errors(cub, &d, NULL, NC, NULL, NULL, &rel3);
     assert_true(rel3 < 0.2 * rel1); /* the nonlinearity needs the cubic */
     assert_true(rel3 < 1e-2);
 
@@ -144,7 +147,7 @@ static void contact_inverse(void **state)
     }
     tf_model *exact = tf_fit_contact(&d, NULL, NC, &p1, "e", err, sizeof err);
     double rel;
-    tf_model_errors(exact, &d, NULL, NC, NULL, NULL, &rel);
+    tf_family_errors(exact, &d, NULL, NC, NULL, NULL, &rel);
     assert_true(rel < 1e-5);
 
     /* A site that does not move along z has no impedance model. */
@@ -180,8 +183,10 @@ static void near_singular_cases(void **state)
     assert_non_null(strstr(err, "undetermined"));
     assert_non_null(strstr(err, "of 10 coefficients"));
     double cv1, cv2;
-    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err), 0);
-    assert_int_equal(tf_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err),
+                     0);
+    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err),
+                     0);
     assert_true(isfinite(cv1));
     assert_true(isinf(cv2));
 

@@ -106,7 +106,7 @@ static void recovers_a_separable_field(void **state)
     tf_model *m = tf_fit_zhou2017(ax, &o, "z", err, sizeof err);
     assert_non_null(m);
     double max;
-    tf_model_errors(m, &combined, NULL, NC, &max, NULL, NULL); /* superposed forces */
+    tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL); /* superposed forces */
     assert_true(max < 1e-5);
     tf_model_free(m);
 }
@@ -123,7 +123,7 @@ static void cannot_hold_a_cross_term(void **state)
     assert_int_equal(tf_zhou_select(ax, 5, 1, &o, NULL, err, sizeof err), 0);
     tf_model *m = tf_fit_zhou2017(ax, &o, "z", err, sizeof err);
     double max;
-    tf_model_errors(m, &combined, NULL, NC, &max, NULL, NULL);
+    tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL);
     assert_true(max > 0.1); /* separable surfaces miss x*y */
     tf_model_free(m);
 }

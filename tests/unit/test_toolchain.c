@@ -1,7 +1,7 @@
 /*
  * test_toolchain.c — the host library, as host.mk compiles it (-O2), rounds
  * doubles to float where the code says so.  GCC 12.2's SLP vectorizer
- * compiles tf_round_to_float()'s loop to round only the last element of each
+ * compiles tf_forces_to_float()'s loop to round only the last element of each
  * row; host.mk turns that pass off, and this test fails if the workaround is
  * lost.
  */
@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/force_samples.h"
 
 static void every_element_is_rounded(void **state)
 {
@@ -23,7 +23,7 @@ static void every_element_is_rounded(void **state)
             rows[i][k] = 0.1 + 0.01 * (3 * i + k); /* none is a float */
         }
     }
-    tf_round_to_float(rows, 4);
+    tf_forces_to_float(rows, 4);
     for (int i = 0; i < 4; ++i) {
         for (int k = 0; k < 3; ++k) {
             assert_true(rows[i][k] == (double)(float)(0.1 + 0.01 * (3 * i + k)));

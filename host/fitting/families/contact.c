@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 
 /* Inverse of a 3x3 row-major matrix; returns its reciprocal condition
@@ -50,14 +50,14 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
         return -1;
     }
     for (size_t i = 0; i < m; ++i) {
-        size_t n = tf_fit_case(idx, i);
+        size_t n = tf_family_case(idx, i);
         a[i] = 1;
         for (int k = 0; k < 3; ++k) {
             a[i + (size_t)(k + 1) * m] = d->force[n][k];
             y[i + (size_t)k * m] = d->contact[n][k];
         }
     }
-    int rc = tf_fit_lsq(a, m, 4, y, 3, x, err, errlen);
+    int rc = tf_family_lsq(a, m, 4, y, 3, x, err, errlen);
     free(a);
     free(y);
     if (rc == 0) {
@@ -83,10 +83,10 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     for (size_t i = 0; i < m; ++i) { /* forces normalised to the envelope */
         for (int a = 0; a < 3; ++a) {
-            g[i][a] = (d->force[tf_fit_case(idx, i)][a] - d->centre[a]) / d->radius;
+            g[i][a] = (d->force[tf_family_case(idx, i)][a] - d->centre[a]) / d->radius;
         }
     }
-    int spans = tf_fit_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
+    int spans = tf_family_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
     free(g);
     if (spans != 0 || linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
         return NULL;
@@ -112,21 +112,21 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     tf_model_set_map(model, x0, w);
     model->node_ids[0] = 0; /* set by the caller: the contact node */
-    if (tf_fit_spans(model, d->contact, idx, m, err, errlen) != 0) {
+    if (tf_family_spans(model, d->contact, idx, m, err, errlen) != 0) {
         tf_model_free(model);
         return NULL;
     }
     const uint32_t t = tf_terms(p);
-    double *a = tf_fit_design(model, d->contact, idx, m, p);
-    double *y = malloc(m * 3 * sizeof *y), x[3 * TFIT_MAX_TERMS_HOST];
+    double *a = tf_family_design(model, d->contact, idx, m, p);
+    double *y = malloc(m * 3 * sizeof *y), x[3 * TF_FAMILY_MAX_TERMS];
     int rc = -1;
     if (a != NULL && y != NULL) {
         for (size_t i = 0; i < m; ++i) {
             for (int j = 0; j < 3; ++j) {
-                y[i + (size_t)j * m] = d->force[tf_fit_case(idx, i)][j];
+                y[i + (size_t)j * m] = d->force[tf_family_case(idx, i)][j];
             }
         }
-        rc = tf_fit_lsq(a, m, t, y, 3, x, err, errlen);
+        rc = tf_family_lsq(a, m, t, y, 3, x, err, errlen);
     } else {
         snprintf(err, errlen, "contact: out of memory");
     }

@@ -16,9 +16,9 @@
 
 /* Orders of a candidate: nodal/contact {p}; modal {p, r}; zhou2017 uses
  * fit_zhou2017.h.  Returns NULL with a message on failure. */
-typedef tf_model *(*tf_fitter)(const tf_fitdata *d, const size_t *idx, size_t m,
-                               const uint32_t *orders, const char *name, char *err,
-                               size_t errlen);
+typedef tf_model *(*tf_family_fitter)(const tf_fitdata *d, const size_t *idx, size_t m,
+                                      const uint32_t *orders, const char *name, char *err,
+                                      size_t errlen);
 
 /* Nodal: every output component a polynomial of total degree p in the
  * normalised force g = (f - centre) / radius. */
@@ -40,14 +40,15 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
  * the target does (reference evaluator, float32 input): forward models
  * against d->u in mm; contact models against d->force in N (rel_max: the
  * largest |error| / |force|).  Any of the outputs may be NULL. */
-void tf_model_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
-                     double *max, double *rms, double *rel_max);
+void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
+                      double *max, double *rms, double *rel_max);
 
 /* k-fold cross-validated RMS error of fitter at the given orders (and the
  * largest validation error in *max when not NULL): infinite when the folds'
- * cases cannot determine the order (fit_common.h, TF_FIT_UNDETERMINED).
+ * cases cannot determine the order (common.h, TF_FAMILY_UNDETERMINED).
  * Returns -1 with a message when a fold fails otherwise. */
-int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsigned folds,
-                uint64_t seed, double *rms, double *max, char *err, size_t errlen);
+int tf_family_cv_error(const tf_fitdata *d, tf_family_fitter fit, const uint32_t *orders,
+                       unsigned folds, uint64_t seed, double *rms, double *max, char *err,
+                       size_t errlen);
 
 #endif /* TF_FIT_FAMILY_H */

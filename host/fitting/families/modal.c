@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "numerics/pod.h"
 
@@ -21,16 +21,16 @@ tf_model *tf_fit_modal(const tf_fitdata *d, const size_t *idx, size_t m, const u
                  rows);
         return NULL;
     }
-    tf_model *model = tf_fit_forward_model(name, TFIT_FAMILY_MODAL, orders, 2, p, d, idx, m, err,
-                                           errlen);
+    tf_model *model =
+        tf_family_forward_model(name, TFIT_FAMILY_MODAL, orders, 2, p, d, idx, m, err, errlen);
     if (model == NULL) {
         return NULL;
     }
     const uint32_t t = tf_terms(p);
-    double *y = tf_fit_gather_u(d, idx, m); /* m x rows: row = case */
+    double *y = tf_family_gather_u(d, idx, m); /* m x rows: row = case */
     double *data = malloc(rows * m * sizeof *data);
     double *amp = malloc(m * r * sizeof *amp);
-    double *a = tf_fit_design(model, d->force, idx, m, p);
+    double *a = tf_family_design(model, d->force, idx, m, p);
     double *x = malloc(t * r * sizeof *x);
     tf_pod pod = {0};
     int rc = -1;
@@ -54,7 +54,7 @@ tf_model *tf_fit_modal(const tf_fitdata *d, const size_t *idx, size_t m, const u
                 amp[i + k * m] = s;
             }
         }
-        rc = tf_fit_lsq(a, m, t, amp, r, x, err, errlen);
+        rc = tf_family_lsq(a, m, t, amp, r, x, err, errlen);
     }
     if (rc == 0) {
         float *c = tf_model_tables(model);

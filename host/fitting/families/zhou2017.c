@@ -10,8 +10,8 @@
 #include <string.h>
 
 #include "model/basis.h"
-#include "fitting/cv.h"
-#include "fitting/fit_common.h"
+#include "fitting/cv_folds.h"
+#include "fitting/families/common.h"
 
 #define BETA_MAX 4 /* k searched in 0..4: the seed needed 1 */
 
@@ -68,7 +68,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
     int rc = -1;
     if (design && y) {
         for (size_t i = 0; i < m; ++i) {
-            size_t n = tf_fit_case(idx, i);
+            size_t n = tf_family_case(idx, i);
             double pw[TFIT_MAX_DEGREE + 1];
             tf_chebyshev(lambda, d->force[n][a] / d->radius, pw);
             for (uint32_t k = 0; k <= lambda; ++k) {
@@ -76,7 +76,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
             }
             y[i] = d->contact[n][a];
         }
-        rc = tf_fit_lsq(design, m, lambda + 1, y, 1, r, err, errlen);
+        rc = tf_family_lsq(design, m, lambda + 1, y, 1, r, err, errlen);
     }
     free(design);
     free(y);
@@ -90,7 +90,7 @@ static double *surface_design(const double *xy, const size_t *pts, size_t np, ui
     size_t cols = A + B + 1;
     double *s = malloc(np * cols * sizeof *s);
     for (size_t q = 0; s && q < np; ++q) {
-        const double *p = xy + 2 * tf_fit_case(pts, q);
+        const double *p = xy + 2 * tf_family_case(pts, q);
         double px[TFIT_ZHOU_MAX_ORDER + 1], py[TFIT_ZHOU_MAX_ORDER + 1];
         tf_chebyshev(A, p[0], px);
         tf_chebyshev(B, p[1], py);
@@ -114,12 +114,12 @@ static int surfaces(const tf_fitdata *d, int c, const size_t *cases, size_t m, c
     int rc = -1;
     if (s && y) {
         for (size_t i = 0; i < m; ++i) {
-            const double *u = d->u + 3 * (size_t)d->n_out * tf_fit_case(cases, i);
+            const double *u = d->u + 3 * (size_t)d->n_out * tf_family_case(cases, i);
             for (size_t q = 0; q < np; ++q) {
-                y[q + i * np] = u[3 * tf_fit_case(pts, q) + (size_t)c];
+                y[q + i * np] = u[3 * tf_family_case(pts, q) + (size_t)c];
             }
         }
-        rc = tf_fit_lsq(s, np, A + B + 1, y, m, p, err, errlen);
+        rc = tf_family_lsq(s, np, A + B + 1, y, m, p, err, errlen);
     }
     free(s);
     free(y);
@@ -143,7 +143,7 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
                 y[i + r * m] = p[r + i * rows];
             }
         }
-        rc = tf_fit_lsq(design, m, k + 1, y, rows, beta, err, errlen);
+        rc = tf_family_lsq(design, m, k + 1, y, rows, beta, err, errlen);
     }
     free(design);
     free(y);
@@ -247,7 +247,7 @@ tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders 
         free(xy);
         return NULL;
     }
-    tf_fit_forward_setup(model, d0);
+    tf_family_forward_setup(model, d0);
     plane_coordinates(d0, xy);
     float *c = tf_model_tables(model);
     int rc = 0;
@@ -300,10 +300,10 @@ static double rms_of(double sum2, size_t count)
 }
 
 /* A fold whose cases cannot determine the orders makes the orders'
- * CV error infinite (fit_common.h); anything else is a failure. */
+ * CV error infinite (common.h); anything else is a failure. */
 static int undetermined(int rc, const char *err, double *out)
 {
-    if (rc != 0 && strncmp(err, TF_FIT_UNDETERMINED, strlen(TF_FIT_UNDETERMINED)) == 0) {
+    if (rc != 0 && strncmp(err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
         *out = INFINITY;
         return 1;
     }

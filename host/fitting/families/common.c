@@ -1,7 +1,7 @@
 /*
- * fit_common.c — see fit_common.h.
+ * common.c — see common.h.
  */
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +16,7 @@
  * cannot separate from the others get coefficient 0 (lsq.h). */
 #define FIT_RANK_TOL 1e-10
 
-void tf_fit_normalise(const tf_model *m, const double x[3], double g[3])
+void tf_family_normalise(const tf_model *m, const double x[3], double g[3])
 {
     const float *x0 = m->coef, *w = m->coef + 3;
     double d[3];
@@ -28,8 +28,8 @@ void tf_fit_normalise(const tf_model *m, const double x[3], double g[3])
     }
 }
 
-double *tf_fit_design(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n,
-                      uint32_t p)
+double *tf_family_design(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n,
+                         uint32_t p)
 {
     uint32_t t = tf_terms(p);
     double *a = malloc(n * t * sizeof *a);
@@ -41,7 +41,7 @@ double *tf_fit_design(const tf_model *m, const double (*x)[3], const size_t *idx
     }
     for (size_t i = 0; i < n; ++i) {
         double g[3];
-        tf_fit_normalise(m, x[tf_fit_case(idx, i)], g);
+        tf_family_normalise(m, x[tf_family_case(idx, i)], g);
         tf_basis(p, g, phi);
         for (uint32_t k = 0; k < t; ++k) {
             a[i + k * n] = phi[k];
@@ -51,7 +51,7 @@ double *tf_fit_design(const tf_model *m, const double (*x)[3], const size_t *idx
     return a;
 }
 
-double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
+double *tf_family_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
 {
     size_t rows = 3 * (size_t)d->n_out;
     double *y = malloc(m * rows * sizeof *y);
@@ -59,7 +59,7 @@ double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
         return NULL;
     }
     for (size_t i = 0; i < m; ++i) {
-        const double *col = d->u + rows * tf_fit_case(idx, i);
+        const double *col = d->u + rows * tf_family_case(idx, i);
         for (size_t o = 0; o < rows; ++o) {
             y[i + o * m] = col[o];
         }
@@ -67,8 +67,8 @@ double *tf_fit_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
     return y;
 }
 
-int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
-               char *err, size_t errlen)
+int tf_family_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
+                  char *err, size_t errlen)
 {
     tf_lsq *f = tf_lsq_factor(m, n, a, m, NULL, FIT_RANK_TOL, err, errlen);
     if (f == NULL) {
@@ -76,7 +76,8 @@ int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, d
     }
     if (tf_lsq_rank(f) < n) {
         snprintf(err, errlen,
-                 TF_FIT_UNDETERMINED ": %zu cases determine only %zu of %zu coefficients "
+                 TF_FAMILY_UNDETERMINED
+                 ": %zu cases determine only %zu of %zu coefficients "
                  "(repeated or collinear load cases, or too few for this order)",
                  m, tf_lsq_rank(f), n);
         tf_lsq_free(f);
@@ -87,51 +88,40 @@ int tf_fit_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, d
     return rc;
 }
 
-void tf_fit_forward_setup(tf_model *model, const tf_fitdata *d)
+void tf_family_forward_setup(tf_model *model, const tf_fitdata *d)
 {
     memcpy(model->node_ids, d->node_ids, d->n_out * sizeof *d->node_ids);
     tf_model_set_ball(model, d->centre, d->radius);
 }
 
-tf_model *tf_fit_forward_model(const char *name, tfit_family family, const uint32_t *dims,
-                               uint32_t n_dims, uint32_t p, const tf_fitdata *d,
-                               const size_t *idx, size_t m, char *err, size_t errlen)
+tf_model *tf_family_forward_model(const char *name, tfit_family family, const uint32_t *dims,
+                                  uint32_t n_dims, uint32_t p, const tf_fitdata *d,
+                                  const size_t *idx, size_t m, char *err, size_t errlen)
 {
     tf_model *model = tf_model_new(name, family, d->n_out, dims, n_dims, err, errlen);
     if (model == NULL) {
         return NULL;
     }
-    tf_fit_forward_setup(model, d);
-    if (p > 0 && tf_fit_spans(model, d->force, idx, m, err, errlen) != 0) {
+    tf_family_forward_setup(model, d);
+    if (p > 0 && tf_family_spans(model, d->force, idx, m, err, errlen) != 0) {
         tf_model_free(model);
         return NULL;
     }
     return model;
 }
 
-/* host.mk compiles this without SLP vectorization: GCC 12.2 at -O2 would
- * round only v[i][2] (tests/unit/test_toolchain.c). */
-void tf_round_to_float(double (*v)[3], size_t n)
-{
-    for (size_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) {
-            v[i][k] = (double)(float)v[i][k];
-        }
-    }
-}
-
 #define SPAN_MIN 1e-3 /* RMS extent, as a fraction of the envelope radius */
 
-int tf_fit_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
-                 size_t errlen)
+int tf_family_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
+                    size_t errlen)
 {
     double mom[9] = {0}, eig[3];
     for (size_t i = 0; i < n; ++i) {
         double g[3];
         if (m != NULL) {
-            tf_fit_normalise(m, x[tf_fit_case(idx, i)], g);
+            tf_family_normalise(m, x[tf_family_case(idx, i)], g);
         } else {
-            memcpy(g, x[tf_fit_case(idx, i)], sizeof g);
+            memcpy(g, x[tf_family_case(idx, i)], sizeof g);
         }
         for (int a = 0; a < 3; ++a) {
             for (int b = 0; b < 3; ++b) {
@@ -145,7 +135,8 @@ int tf_fit_spans(const tf_model *m, const double (*x)[3], const size_t *idx, siz
     }
     if (!(eig[0] >= SPAN_MIN * SPAN_MIN)) { /* ascending: eig[0] is the smallest */
         snprintf(err, errlen,
-                 TF_FIT_UNDETERMINED ": the %zu load cases barely move along (%.3f, %.3f, %.3f) "
+                 TF_FAMILY_UNDETERMINED
+                 ": the %zu load cases barely move along (%.3f, %.3f, %.3f) "
                  "of the normalised envelope (RMS extent %.2g of its radius): the fit would "
                  "extrapolate there",
                  n, mom[0], mom[3], mom[6], sqrt(fmax(eig[0], 0)));

@@ -1,7 +1,7 @@
 /*
- * cv.c — see cv.h.
+ * cv_folds.c — see cv_folds.h.
  */
-#include "fitting/cv.h"
+#include "fitting/cv_folds.h"
 
 #include <stdlib.h>
 

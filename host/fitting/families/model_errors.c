@@ -1,5 +1,5 @@
 /*
- * crossval.c — errors of a fitted model on solved cases, and k-fold
+ * model_errors.c — errors of a fitted model on solved cases, and k-fold
  * cross-validation.  Errors are those of the float32 target (the reference
  * evaluator reproduces its bits) fed with the float32-rounded input.
  */
@@ -8,20 +8,20 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fitting/cv.h"
-#include "fitting/fit_common.h"
+#include "fitting/cv_folds.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "model/ref_eval.h"
 
-void tf_model_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
-                     double *max, double *rms, double *rel_max)
+void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
+                      double *max, double *rms, double *rel_max)
 {
     const int contact = model->family == TFIT_FAMILY_CONTACT;
     const size_t rows = 3 * (size_t)model->n_out;
     float *out = malloc(rows * sizeof *out);
     double emax = 0, sum2 = 0, rmax = 0;
     for (size_t i = 0; i < m; ++i) {
-        size_t n = tf_fit_case(idx, i);
+        size_t n = tf_family_case(idx, i);
         const double *x = contact ? d->contact[n] : d->force[n];
         const float in[3] = {(float)x[0], (float)x[1], (float)x[2]};
         tf_ref_eval(model, in, out, NULL);
@@ -50,8 +50,9 @@ void tf_model_errors(const tf_model *model, const tf_fitdata *d, const size_t *i
     }
 }
 
-int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsigned folds,
-                uint64_t seed, double *rms, double *max, char *err, size_t errlen)
+int tf_family_cv_error(const tf_fitdata *d, tf_family_fitter fit, const uint32_t *orders,
+                       unsigned folds, uint64_t seed, double *rms, double *max, char *err,
+                       size_t errlen)
 {
     const size_t n = d->n_cases;
     unsigned *fold = malloc(n * sizeof *fold);
@@ -70,7 +71,8 @@ int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsi
         size_t n_train = tf_cv_select(fold, n, f, 0, train);
         size_t n_test = tf_cv_select(fold, n, f, 1, test);
         tf_model *m = fit(d, train, n_train, orders, "cv", err, errlen);
-        if (m == NULL && strncmp(err, TF_FIT_UNDETERMINED, strlen(TF_FIT_UNDETERMINED)) == 0) {
+        if (m == NULL &&
+            strncmp(err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
             sum2 = emax = INFINITY; /* the folds cannot determine this order */
             count = 1;
             break;
@@ -80,7 +82,7 @@ int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsi
             break;
         }
         double fmax_err, frms;
-        tf_model_errors(m, d, test, n_test, &fmax_err, &frms, NULL);
+        tf_family_errors(m, d, test, n_test, &fmax_err, &frms, NULL);
         size_t rows = 3 * (size_t)m->n_out;
         sum2 += frms * frms * (double)(n_test * rows);
         count += n_test * rows;

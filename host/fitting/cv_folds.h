@@ -1,9 +1,9 @@
 /*
- * cv.h — k-fold cross-validation folds: a seeded shuffle of the cases, then
+ * cv_folds.h — k-fold cross-validation folds: a seeded shuffle of the cases, then
  * case i belongs to fold (position of i) mod k.  Deterministic for a seed.
  */
-#ifndef TF_CV_H
-#define TF_CV_H
+#ifndef TF_CV_FOLDS_H
+#define TF_CV_FOLDS_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -15,4 +15,4 @@ void tf_cv_folds(size_t n, unsigned k, uint64_t seed, unsigned *fold);
  * their count. */
 size_t tf_cv_select(const unsigned *fold, size_t n, unsigned f, int in, size_t *idx);
 
-#endif /* TF_CV_H */
+#endif /* TF_CV_FOLDS_H */
