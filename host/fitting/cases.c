@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "base/log.h"
-#include "fitting/families/common.h"
 #include "fitting/force_samples.h"
 
 static void *keep(tf_cases *c, void *p)

@@ -59,7 +59,7 @@ static const tf_candidate *pick_contact(const tf_sweep *sw, const tf_mcu *mcu, d
     const tf_candidate *best = NULL;
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i];
-        if (usable(c) && c->family == TFIT_FAMILY_CONTACT && c->heldout_max <= tol &&
+        if (usable(c) && c->family->kind == TF_FAMILY_INVERSE && c->heldout_max <= tol &&
             (best == NULL || tf_candidate_us(c, mcu) < tf_candidate_us(best, mcu))) {
             best = c;
         }
@@ -74,7 +74,7 @@ static void extremes(const tf_sweep *sw, const tf_mcu *mcu, const tf_candidate *
     *fast = *accurate = NULL;
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i];
-        if (!usable(c) || c->family == TFIT_FAMILY_CONTACT) {
+        if (!usable(c) || c->family->kind == TF_FAMILY_INVERSE) {
             continue;
         }
         if (*fast == NULL || tf_candidate_us(c, mcu) < tf_candidate_us(*fast, mcu)) {
@@ -102,7 +102,7 @@ int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double ma
     const double contact_us = tf_candidate_us(sel->contact, mcu);
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i], *b = sel->forward;
-        if (!usable(c) || c->family == TFIT_FAMILY_CONTACT) {
+        if (!usable(c) || c->family->kind == TF_FAMILY_INVERSE) {
             continue;
         }
         const double us = tf_candidate_us(c, mcu);

@@ -1,12 +1,13 @@
 /*
- * sweep.c — see sweep.h.  Candidates per output set:
- *   nodal p = 0 .. max_degree            float32, Q31, float64
- *   modal p = 1, 2 and r = 1 .. max_rank float32
- *   zhou2017 at its cross-validated orders (where it applies), float32
- *   contact inverse p = 1 .. max_degree  float32, Q31, float64 (once)
- * float64 is the same fit evaluated with double coefficients and
- * arithmetic: what the fit achieves before float32 rounding.  There is no
- * float64 target evaluator, so it has no time.
+ * sweep.c — see sweep.h.  Candidates per output set: every registered
+ * family that applies gives its candidates (family.h; today nodal p = 0 ..
+ * max_degree, modal p = 1, 2 and r = 1 .. max_rank, zhou2017 at its
+ * cross-validated orders, the contact inverse p = 1 .. max_degree), each in
+ * float32 and, where the family has them, its Q31 and float64 forms.  An
+ * inverse family does not depend on the output set and is swept once, with
+ * the scene's outputs.  float64 is the same fit evaluated with double
+ * coefficients and arithmetic: what the fit achieves before float32
+ * rounding.  There is no float64 target evaluator, so it has no time.
  */
 #include "tradeoff/sweep.h"
 
@@ -16,11 +17,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "model/basis.h"
-#include "cost/cycles.h"
-#include "fitting/families/common.h"
-#include "fitting/families/family.h"
 #include "base/log.h"
+#include "fitting/cases.h"
+#include "fitting/families/family.h"
 #include "model/q31.h"
 #include "model/target_view.h"
 
@@ -58,18 +57,19 @@ typedef struct timing_job {
     int32_t (*qin)[3];
     size_t n_in;
     void *out;
+    int inverse; /* the target's contact-force entry point, else displacements */
 } timing_job;
 
 static void call(const timing_job *j, size_t i)
 {
     size_t k = i % j->n_in;
     if (j->f32 != NULL) {
-        if (j->f32->family == TFIT_FAMILY_CONTACT) {
+        if (j->inverse) {
             tfit_contact_force(j->f32, j->in[k], j->out);
         } else {
             tfit_displacements(j->f32, j->in[k], j->out);
         }
-    } else if (j->q31->family == TFIT_FAMILY_CONTACT) {
+    } else if (j->inverse) {
         tfit_contact_force_q31(j->q31, j->qin[k], j->out);
     } else {
         tfit_displacements_q31(j->q31, j->qin[k], j->out);
@@ -122,14 +122,17 @@ static const double *case_input(const tf_fitdata *d, int contact, size_t i)
     return contact ? d->contact[i] : d->force[i];
 }
 
+static int is_inverse(const tf_model *m)
+{
+    return tf_family_of(m->family)->kind == TF_FAMILY_INVERSE;
+}
+
 static void fill_common(tf_candidate *c, const tf_model *m, const char *label, tf_precision prec,
                         tf_output_set set)
 {
     memset(c, 0, sizeof *c);
     snprintf(c->label, sizeof c->label, "%s", label);
-    c->family = m->family;
-    c->orders[0] = m->dims[0];
-    c->orders[1] = m->family == TFIT_FAMILY_MODAL ? m->dims[1] : 0;
+    c->family = tf_family_of(m->family);
     c->precision = prec;
     c->set = set;
     c->n_out = m->n_out;
@@ -146,23 +149,23 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     fill_common(c, m, label, TF_PREC_F32, set);
     c->model = m;
     c->n_coef = m->n_coef;
-    c->table_bytes = tf_model_table_bytes(m);
-    tf_opcount ops = tf_model_ops(m);
-    c->ops = ops.add + ops.mul + ops.div;
-    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
-    c->us_m4f = m4.cycles / tf_core_mhz(TF_CORE_M4F);
-    c->us_m4f_low = m4.cycles_low / tf_core_mhz(TF_CORE_M4F);
-    c->us_m7 = m7.cycles / tf_core_mhz(TF_CORE_M7);
+    tf_family_cost cost;
+    c->family->cost(m, &cost);
+    c->table_bytes = cost.table_bytes;
+    c->ops = cost.ops.add + cost.ops.mul + cost.ops.div;
+    c->us_m4f = cost.m4f.cycles / tf_core_mhz(TF_CORE_M4F);
+    c->us_m4f_low = cost.m4f.cycles_low / tf_core_mhz(TF_CORE_M4F);
+    c->us_m7 = cost.m7.cycles / tf_core_mhz(TF_CORE_M7);
     tf_family_errors(m, held, NULL, held->n_cases, &c->heldout_max, &c->heldout_rms,
                      &m->heldout_rel_max);
     m->heldout_max = c->heldout_max; /* the header reports them if it is chosen */
     m->heldout_rms = c->heldout_rms;
     m->heldout_cases = (uint32_t)held->n_cases;
 
-    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    const int contact = is_inverse(m);
     tfit_model view;
     tf_target_view(m, &view);
-    timing_job j = {.f32 = &view, .n_in = held->n_cases};
+    timing_job j = {.f32 = &view, .n_in = held->n_cases, .inverse = contact};
     j.in = malloc(held->n_cases * sizeof *j.in);
     j.out = malloc(3 * m->n_out * sizeof(float));
     if (j.in == NULL || j.out == NULL) {
@@ -181,12 +184,12 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     return 0;
 }
 
-/* The Q31 form of a float32 candidate (nodal and contact families). */
+/* The Q31 form of a float32 candidate (families that have one). */
 static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
                    const tf_fitdata *held)
 {
     char err[256];
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = tf_family_of(m->family)->q31(m, err, sizeof err);
     if (q == NULL) {
         return 0; /* no Q31 form: not a candidate */
     }
@@ -198,7 +201,7 @@ static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output
     fill_common(c, m, label, TF_PREC_Q31, set);
     c->n_coef = q->n_words;
     c->table_bytes = 4 * (q->n_words + m->n_out);
-    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    const int contact = is_inverse(m);
     const size_t rows = 3 * (size_t)m->n_out;
     int32_t *out = malloc(rows * sizeof *out);
     int32_t(*qin)[3] = malloc(held->n_cases * sizeof *qin);
@@ -225,7 +228,8 @@ static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output
     c->heldout_rms = sqrt(sum2 / ((double)held->n_cases * (double)rows));
     tfit_model_q31 view;
     tf_target_view_q31(q, &view);
-    timing_job j = {.q31 = &view, .qin = qin, .n_in = held->n_cases, .out = out};
+    timing_job j = {.q31 = &view, .qin = qin, .n_in = held->n_cases, .out = out,
+                    .inverse = contact};
     c->ns_native = time_calls(&j);
     free(out);
     free(qin);
@@ -233,84 +237,59 @@ static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output
     return 0;
 }
 
-/* The float64 evaluation of a nodal or contact fit: the same least squares,
- * coefficients and arithmetic kept in double. */
+/* The float64 form of a float32 candidate (families that have one). */
 static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
-                   const tf_fitdata *train, const tf_fitdata *held)
+                   const tf_cases *cases, char *err, size_t errlen)
 {
-    const int contact = m->family == TFIT_FAMILY_CONTACT;
-    const uint32_t p = m->dims[0], t = tf_terms(p);
-    const size_t rows = 3 * (size_t)m->n_out, n = train->n_cases;
-    char err[256];
-    double *a = tf_family_design(m, contact ? train->contact : train->force, NULL, n, p);
-    double *y = contact ? malloc(n * 3 * sizeof *y) : tf_family_gather_u(train, NULL, n);
-    double *x = malloc(t * rows * sizeof *x), *phi = malloc(t * sizeof *phi);
-    int rc = (a && y && x && phi && grow(sw) == 0) ? 0 : -1;
-    if (rc == 0 && contact) {
-        for (size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) {
-                y[i + (size_t)k * n] = train->force[i][k];
-            }
-        }
+    if (grow(sw) != 0) {
+        snprintf(err, errlen, "out of memory for the candidates");
+        return -1;
     }
-    if (rc == 0) {
-        rc = tf_family_lsq(a, n, t, y, rows, x, err, sizeof err);
+    tf_candidate *c = &sw->c[sw->n];
+    fill_common(c, m, label, TF_PREC_F64, set);
+    c->n_coef = m->n_coef;
+    c->table_bytes = 8 * m->n_coef + 4 * (m->n_dims + m->n_out);
+    if (c->family->f64_errors(m, cases, &c->heldout_max, &c->heldout_rms, err, errlen) != 0) {
+        return -1;
     }
-    if (rc == 0) {
-        tf_candidate *c = &sw->c[sw->n++];
-        fill_common(c, m, label, TF_PREC_F64, set);
-        c->n_coef = m->n_coef;
-        c->table_bytes = 8 * m->n_coef + 4 * (m->n_dims + m->n_out);
-        double emax = 0, sum2 = 0;
-        for (size_t i = 0; i < held->n_cases; ++i) {
-            double g[3];
-            tf_family_normalise(m, case_input(held, contact, i), g);
-            tf_basis(p, g, phi);
-            const double *truth = contact ? held->force[i] : held->u + rows * i;
-            for (size_t o = 0; o < rows; ++o) {
-                double v = 0;
-                for (uint32_t k = 0; k < t; ++k) {
-                    v += x[k + o * t] * phi[k];
-                }
-                emax = fmax(emax, fabs(v - truth[o]));
-                sum2 += (v - truth[o]) * (v - truth[o]);
-            }
-        }
-        c->heldout_max = emax;
-        c->heldout_rms = sqrt(sum2 / ((double)held->n_cases * (double)rows));
-    }
-    free(a);
-    free(y);
-    free(x);
-    free(phi);
-    return rc;
+    ++sw->n;
+    return 0;
 }
 
 /* A float32 candidate fitted on every training case, with its Q31 and
- * float64 forms where they exist.  Takes ownership of m. */
-static int measure(tf_sweep *sw, tf_model *m, tf_output_set set, const tf_cases *cases)
+ * float64 forms where its family has them.  Takes ownership of m. */
+typedef struct measure_job {
+    tf_sweep *sw;
+    tf_output_set set;
+    const tf_cases *cases;
+    char *err;
+    size_t errlen;
+} measure_job;
+
+static int measure(void *arg, tf_model *m)
 {
-    char label[96];
-    const tf_fitdata *held = &cases->heldout;
-    if (m->family == TFIT_FAMILY_MODAL) {
-        snprintf(label, sizeof label, "modal p=%u r=%u", m->dims[0], m->dims[1]);
-    } else if (m->family == TFIT_FAMILY_ZHOU2017) {
-        snprintf(label, sizeof label, "zhou2017 (CV orders)");
-    } else {
-        snprintf(label, sizeof label, "%s p=%u", tf_family_name(m->family), m->dims[0]);
+    const measure_job *j = arg;
+    const tf_family *f = tf_family_of(m->family);
+    char label[96], orders[64];
+    f->orders_text(m, TF_ORDERS_SHORT, orders, sizeof orders);
+    snprintf(label, sizeof label, "%s %s", f->name, orders);
+    int rc = 0;
+    if (f->q31 != NULL && add_q31(j->sw, m, label, j->set, &j->cases->heldout) != 0) {
+        snprintf(j->err, j->errlen, "out of memory for the candidates");
+        rc = -1;
     }
-    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
-        if (add_q31(sw, m, label, set, held) != 0 ||
-            add_f64(sw, m, label, set, &cases->train, held) != 0) {
-            tf_model_free(m);
-            return -1;
-        }
+    if (rc == 0 && f->f64_errors != NULL &&
+        add_f64(j->sw, m, label, j->set, j->cases, j->err, j->errlen) != 0) {
+        rc = -1;
     }
-    if (add_f32(sw, m, label, set, held) != 0) {
+    if (rc == 0 && add_f32(j->sw, m, label, j->set, &j->cases->heldout) != 0) {
+        snprintf(j->err, j->errlen, "out of memory for the candidates");
+        rc = -1;
+    }
+    if (rc != 0) {
         tf_model_free(m);
-        return -1;
     }
-    return 0;
+    return rc;
 }
 
 /* The problem with another output selection (a shallow copy: the solver
@@ -353,40 +332,17 @@ static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
         free(nodes);
         return -1;
     }
-    const tf_fitdata *d = &cases.train;
-    const size_t n = d->n_cases;
+    measure_job job = {.sw = sw, .set = set, .cases = &cases, .err = err, .errlen = errlen};
     int rc = 0;
-    tf_info(ctx, "sweep: %s (%u output points)", tf_output_set_name(set), d->n_out);
-    for (uint32_t p = 0; rc == 0 && p <= plan->max_degree; ++p) {
-        if (tf_terms(p) > n) {
+    tf_info(ctx, "sweep: %s (%u output points)", tf_output_set_name(set), cases.train.n_out);
+    for (size_t i = 0; rc == 0 && i < tf_family_count(); ++i) {
+        const tf_family *f = tf_family_at(i);
+        char why[320];
+        if ((f->kind == TF_FAMILY_INVERSE && set != TF_SET_SCENE) ||
+            f->applicable(&cases, plan, why, sizeof why) != 0) {
             continue;
         }
-        tf_model *m = tf_fit_nodal(d, NULL, n, &p, "nodal", err, errlen);
-        rc = m ? measure(sw, m, set, &cases) : -1;
-    }
-    for (uint32_t p = 1; rc == 0 && p <= 2 && p <= plan->max_degree; ++p) {
-        for (uint32_t r = 1; rc == 0 && r <= plan->max_rank && r <= 3 * d->n_out && r <= n; ++r) {
-            const uint32_t orders[2] = {p, r};
-            tf_model *m = tf_fit_modal(d, NULL, n, orders, "modal", err, errlen);
-            rc = m ? measure(sw, m, set, &cases) : -1;
-        }
-    }
-    char why[320];
-    if (rc == 0 && set != TF_SET_CONTACT && tf_zhou_applicable(d, why, sizeof why) == 0) {
-        const tf_fitdata *axis[3] = {&cases.axis[0], &cases.axis[1], &cases.axis[2]};
-        tf_zhou_orders o;
-        rc = tf_zhou_select(axis, plan->folds, plan->seed, &o, NULL, err, errlen);
-        tf_model *m = rc == 0 ? tf_fit_zhou2017(axis, &o, "zhou2017", err, errlen) : NULL;
-        rc = m ? measure(sw, m, set, &cases) : -1;
-    }
-    if (rc == 0 && set == TF_SET_SCENE) { /* the contact inverse does not depend on the set */
-        for (uint32_t p = 1; rc == 0 && p <= plan->max_degree; ++p) {
-            tf_model *m = tf_fit_contact(d, NULL, n, &p, "contact", err, errlen);
-            if (m != NULL) {
-                m->node_ids[0] = s->contacts[plan->contact].node + 1;
-            }
-            rc = m ? measure(sw, m, set, &cases) : -1;
-        }
+        rc = f->candidates(&cases, plan, measure, &job, err, errlen);
     }
     tf_cases_free(&cases);
     free(nodes);
@@ -402,7 +358,7 @@ static void mark_pareto(tf_sweep *sw)
         a->pareto = isfinite(a->ns_native);
         for (size_t k = 0; a->pareto && k < sw->n; ++k) {
             const tf_candidate *b = &sw->c[k];
-            int same_kind = (a->family == TFIT_FAMILY_CONTACT) == (b->family == TFIT_FAMILY_CONTACT);
+            int same_kind = a->family->kind == b->family->kind;
             if (k == i || b->set != a->set || !same_kind || !isfinite(b->ns_native)) {
                 continue;
             }

@@ -11,7 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "fitting/pipeline.h"
+#include "fitting/families/family.h"
+#include "fitting/plan.h"
 #include "model/model.h"
 #include "problem/problem.h"
 #include "solvers/solver.h"
@@ -28,8 +29,7 @@ typedef enum tf_output_set {
 
 typedef struct tf_candidate {
     char label[96];           /* "nodal p=2", "modal p=1 r=4", ... */
-    tfit_family family;
-    uint32_t orders[2];
+    const tf_family *family;
     tf_precision precision;
     tf_output_set set;
     uint32_t n_out;

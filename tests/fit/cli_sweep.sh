@@ -11,7 +11,7 @@ expect 0 "sweep, scene outputs" -- "$tool" -q sweep coeffs/block48.yaml --output
     --csv "$tmp/s.csv" --md "$tmp/s.md"
 head -1 "$tmp/s.csv" | grep -q '^outputs,n_out,model,family,precision' || bad "sweep CSV header"
 for m in "nodal p=1,nodal,float32" "nodal p=1,nodal,Q31" "nodal p=1,nodal,float64" \
-         "modal p=1 r=3,modal,float32" "zhou2017 (CV orders),zhou2017,float32" \
+         "modal p=1 r=3,modal,float32" "zhou2017 lambda=1,1,1,zhou2017,float32" \
          "contact p=1,contact,float32"; do
     grep -q ",$m," "$tmp/s.csv" || bad "sweep lacks '$m'"
 done

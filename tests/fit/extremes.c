@@ -48,7 +48,8 @@ static int check(const char *path, const material *mat)
         printf("nu %s E %s: fit failed: %s\n", mat->nu, mat->young, ctx.err);
         return 1;
     }
-    const tf_model *fwd = o.fam[TFIT_FAMILY_NODAL].model, *con = o.fam[TFIT_FAMILY_CONTACT].model;
+    const tf_model *fwd = tf_fit_emitted(&o, &plan, TF_FAMILY_FORWARD);
+    const tf_model *con = tf_fit_emitted(&o, &plan, TF_FAMILY_INVERSE);
     const size_t dofs = 3 * tf_solver_node_count(solver);
     double train[6][3], fresh[FRESH][3], *u = malloc(FRESH * dofs * sizeof *u);
     float *out = malloc(3 * fwd->n_out * sizeof *out);

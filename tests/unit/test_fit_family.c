@@ -1,8 +1,9 @@
 /*
- * test_fit_family.c — the family fitters on synthetic cases with known
- * structure: the right order/rank reproduces the data to float precision,
- * a too-small one does not, cross-validation tells them apart, and the
- * contact inverse inverts a linear and a nonlinear tissue law.
+ * test_fit_family.c — the registered families' fitters on synthetic cases
+ * with known structure: the right order/rank reproduces the data to float
+ * precision, a too-small one does not, cross-validation tells them apart,
+ * and the contact inverse inverts a linear and a nonlinear tissue law; the
+ * registry's lookups.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -69,6 +70,29 @@ static tf_fitdata data(void)
     return d;
 }
 
+/* Training cases d as the families see them (contact site: node index 6). */
+static tf_cases cases_of(const tf_fitdata *d)
+{
+    return (tf_cases){.train = *d, .contact_node = 6};
+}
+
+/* The registered family's model of the given orders on every case of d. */
+static tf_model *fit(const char *family, const tf_fitdata *d, const uint32_t *orders, char *err,
+                     size_t errlen)
+{
+    const tf_family *f = tf_family_find(family);
+    assert_non_null(f);
+    tf_cases c = cases_of(d);
+    return f->fit(&c, NULL, 0, orders, err, errlen);
+}
+
+static int cv(const char *family, const tf_fitdata *d, const uint32_t *orders, double *rms,
+              char *err, size_t errlen)
+{
+    tf_cases c = cases_of(d);
+    return tf_family_cv_error(tf_family_find(family), &c, orders, 5, 1, rms, NULL, err, errlen);
+}
+
 static void nodal_orders(void **state)
 {
     (void)state;
@@ -77,8 +101,8 @@ static void nodal_orders(void **state)
     char err[256];
     double max1, max2, rms1, rms2;
     uint32_t p1 = 1, p2 = 2;
-    tf_model *m1 = tf_fit_nodal(&d, NULL, NC, &p1, "n1", err, sizeof err);
-    tf_model *m2 = tf_fit_nodal(&d, NULL, NC, &p2, "n2", err, sizeof err);
+    tf_model *m1 = fit("nodal", &d, &p1, err, sizeof err);
+    tf_model *m2 = fit("nodal", &d, &p2, err, sizeof err);
     assert_non_null(m1);
     assert_non_null(m2);
     tf_family_errors(m1, &d, NULL, NC, &max1, &rms1, NULL);
@@ -89,12 +113,9 @@ static void nodal_orders(void **state)
 
     double cv1, cv2, cv3;
     uint32_t p3 = 3;
-    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err),
-                     0);
-    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err),
-                     0);
-    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p3, 5, 1, &cv3, NULL, err, sizeof err),
-                     0);
+    assert_int_equal(cv("nodal", &d, &p1, &cv1, err, sizeof err), 0);
+    assert_int_equal(cv("nodal", &d, &p2, &cv2, err, sizeof err), 0);
+    assert_int_equal(cv("nodal", &d, &p3, &cv3, err, sizeof err), 0);
     assert_true(cv2 < 1e-3 * cv1);
     assert_true(cv3 < 1e-3 * cv1);
     tf_model_free(m1);
@@ -108,8 +129,8 @@ static void modal_rank(void **state)
     tf_fitdata d = data();
     char err[256];
     const uint32_t r2[2] = {2, 2}, r3[2] = {2, 3};
-    tf_model *m2 = tf_fit_modal(&d, NULL, NC, r2, "m2", err, sizeof err);
-    tf_model *m3 = tf_fit_modal(&d, NULL, NC, r3, "m3", err, sizeof err);
+    tf_model *m2 = fit("modal", &d, r2, err, sizeof err);
+    tf_model *m3 = fit("modal", &d, r3, err, sizeof err);
     assert_non_null(m2);
     assert_non_null(m3);
     double max2, max3;
@@ -118,7 +139,7 @@ static void modal_rank(void **state)
     assert_true(max2 > 0.01); /* the third mode is missing */
     assert_true(max3 < 2e-6);
     const uint32_t too_many[2] = {1, NC + 1};
-    assert_null(tf_fit_modal(&d, NULL, NC, too_many, "x", err, sizeof err));
+    assert_null(fit("modal", &d, too_many, err, sizeof err));
     assert_non_null(strstr(err, "more modes"));
     tf_model_free(m2);
     tf_model_free(m3);
@@ -131,13 +152,14 @@ static void contact_inverse(void **state)
     tf_fitdata d = data();
     char err[256];
     uint32_t p1 = 1, p3 = 3;
-    tf_model *lin = tf_fit_contact(&d, NULL, NC, &p1, "c1", err, sizeof err);
-    tf_model *cub = tf_fit_contact(&d, NULL, NC, &p3, "c3", err, sizeof err);
+    tf_model *lin = fit("contact", &d, &p1, err, sizeof err);
+    tf_model *cub = fit("contact", &d, &p3, err, sizeof err);
     assert_non_null(lin);
     assert_non_null(cub);
     double rel1, rel3;
     tf_family_errors(lin, &d, NULL, NC, NULL, NULL, &rel1);
     tf_family_errors(cub, &d, NULL, NC, NULL, NULL, &rel3);
+    assert_int_equal(lin->node_ids[0], 7); /* the contact node's number */
     assert_true(rel3 < 0.2 * rel1); /* the nonlinearity needs the cubic */
     assert_true(rel3 < 1e-2);
 
@@ -145,7 +167,7 @@ static void contact_inverse(void **state)
     for (int i = 0; i < NC; ++i) {
         contact[i][2] = 11.0 * force[i][2];
     }
-    tf_model *exact = tf_fit_contact(&d, NULL, NC, &p1, "e", err, sizeof err);
+    tf_model *exact = fit("contact", &d, &p1, err, sizeof err);
     double rel;
     tf_family_errors(exact, &d, NULL, NC, NULL, NULL, &rel);
     assert_true(rel < 1e-5);
@@ -154,7 +176,7 @@ static void contact_inverse(void **state)
     for (int i = 0; i < NC; ++i) {
         contact[i][2] = 0;
     }
-    assert_null(tf_fit_contact(&d, NULL, NC, &p1, "s", err, sizeof err));
+    assert_null(fit("contact", &d, &p1, err, sizeof err));
     assert_non_null(strstr(err, "singular"));
     tf_model_free(lin);
     tf_model_free(cub);
@@ -176,17 +198,15 @@ static void near_singular_cases(void **state)
         memcpy(contact[i], contact[i % 5], sizeof contact[i]);
     }
     uint32_t p1 = 1, p2 = 2;
-    tf_model *m1 = tf_fit_nodal(&d, NULL, NC, &p1, "d1", err, sizeof err);
+    tf_model *m1 = fit("nodal", &d, &p1, err, sizeof err);
     assert_non_null(m1); /* 4 coefficients, 5 distinct forces */
     tf_model_free(m1);
-    assert_null(tf_fit_nodal(&d, NULL, NC, &p2, "d2", err, sizeof err));
+    assert_null(fit("nodal", &d, &p2, err, sizeof err));
     assert_non_null(strstr(err, "undetermined"));
     assert_non_null(strstr(err, "of 10 coefficients"));
     double cv1, cv2;
-    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p1, 5, 1, &cv1, NULL, err, sizeof err),
-                     0);
-    assert_int_equal(tf_family_cv_error(&d, tf_fit_nodal, &p2, 5, 1, &cv2, NULL, err, sizeof err),
-                     0);
+    assert_int_equal(cv("nodal", &d, &p1, &cv1, err, sizeof err), 0);
+    assert_int_equal(cv("nodal", &d, &p2, &cv2, err, sizeof err), 0);
     assert_true(isfinite(cv1));
     assert_true(isinf(cv2));
 
@@ -198,15 +218,37 @@ static void near_singular_cases(void **state)
         force[i][1] = 1e-12 * tf_rng_range(&r, -1, 1);
         force[i][2] = 1e-12 * tf_rng_range(&r, -1, 1);
     }
-    assert_null(tf_fit_nodal(&d, NULL, NC, &p1, "c1", err, sizeof err));
+    assert_null(fit("nodal", &d, &p1, err, sizeof err));
     assert_non_null(strstr(err, "undetermined"));
-    assert_null(tf_fit_contact(&d, NULL, NC, &p1, "c2", err, sizeof err));
+    assert_null(fit("contact", &d, &p1, err, sizeof err));
     assert_non_null(strstr(err, "undetermined"));
+}
+
+static void registry(void **state)
+{
+    (void)state;
+    char names[256];
+    assert_true(tf_family_count() >= 4);
+    for (size_t i = 0; i < tf_family_count(); ++i) {
+        const tf_family *f = tf_family_at(i);
+        assert_ptr_equal(tf_family_find(f->name), f);
+        assert_ptr_equal(tf_family_of(f->id), f); /* one family per target id */
+    }
+    assert_null(tf_family_at(tf_family_count()));
+    assert_int_equal(tf_family_find("zhou2017")->id, TFIT_FAMILY_ZHOU2017);
+    assert_int_equal(tf_family_find("contact")->kind, TF_FAMILY_INVERSE);
+    assert_null(tf_family_find("bogus"));
+    assert_null(tf_family_of((tfit_family)9));
+    tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
+    assert_string_equal(names, "nodal, modal, zhou2017");
+    tf_family_names(TF_FAMILY_INVERSE, names, sizeof names);
+    assert_string_equal(names, "contact");
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(registry),
         cmocka_unit_test(nodal_orders),
         cmocka_unit_test(near_singular_cases),
         cmocka_unit_test(modal_rank),

@@ -103,7 +103,7 @@ static void recovers_a_separable_field(void **state)
         assert_int_equal(o.b[pair], 3); /* y^3 */
         assert_int_equal(o.k[pair], 1); /* p linear in t */
     }
-    tf_model *m = tf_fit_zhou2017(ax, &o, "z", err, sizeof err);
+    tf_model *m = tf_zhou_fit(ax, &o, "z", err, sizeof err);
     assert_non_null(m);
     double max;
     tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL); /* superposed forces */
@@ -121,7 +121,7 @@ static void cannot_hold_a_cross_term(void **state)
     tf_zhou_orders o;
     char err[256];
     assert_int_equal(tf_zhou_select(ax, 5, 1, &o, NULL, err, sizeof err), 0);
-    tf_model *m = tf_fit_zhou2017(ax, &o, "z", err, sizeof err);
+    tf_model *m = tf_zhou_fit(ax, &o, "z", err, sizeof err);
     double max;
     tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL);
     assert_true(max > 0.1); /* separable surfaces miss x*y */

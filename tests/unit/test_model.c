@@ -80,22 +80,12 @@ static void host_validation_matches_target_check(void **state)
     assert_int_equal(rejected, 300);
 }
 
-static void family_names(void **state)
-{
-    (void)state;
-    assert_string_equal(tf_family_name(TFIT_FAMILY_ZHOU2017), "zhou2017");
-    assert_int_equal(tf_family_from_name("modal"), TFIT_FAMILY_MODAL);
-    assert_int_equal(tf_family_from_name("bogus"), 0);
-    assert_null(tf_family_name((tfit_family)9));
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sizes_follow_the_layout),
         cmocka_unit_test(block48_nodal_operation_count),
         cmocka_unit_test(host_validation_matches_target_check),
-        cmocka_unit_test(family_names),
     };
     return cmocka_run_group_tests_name("model", tests, NULL, NULL);
 }

@@ -1,6 +1,9 @@
 /*
- * common.h — pieces shared by the family fitters: the normalised input
- * as the target will see it, design matrices, gathering cases.
+ * common.h — pieces shared by the families (family.h): the normalised
+ * input as the target will see it, design matrices, gathering cases, the
+ * degree search by cross-validation, and the operations of the polynomial
+ * families (every output a polynomial of degree dims[0] in the normalised
+ * input: nodal, contact).
  */
 #ifndef TF_FAMILY_COMMON_H
 #define TF_FAMILY_COMMON_H
@@ -8,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "fitting/families/family.h"
 #include "fitting/fitdata.h"
 #include "model/model.h"
 
@@ -62,5 +66,41 @@ void tf_family_forward_setup(tf_model *model, const tf_fitdata *d);
 tf_model *tf_family_forward_model(const char *name, tfit_family family, const uint32_t *dims,
                                   uint32_t n_dims, uint32_t p, const tf_fitdata *d,
                                   const size_t *idx, size_t m, char *err, size_t errlen);
+
+/* ---- order search ---------------------------------------------------- */
+
+/* The smallest index in [lo, hi] whose value is within 2 % of the best
+ * (plus 1e-6: below that a higher order buys nothing the float32 target can
+ * show, in mm or N). */
+uint32_t tf_family_cheapest_within(const double *v, uint32_t lo, uint32_t hi);
+
+/* Cases in one training fold of c->train under the plan's k-fold split. */
+size_t tf_family_fold_cases(const tf_cases *c, const tf_fit_plan *plan);
+
+/* Degrees p in [lo, plan->max_degree] by cross-validation of f at orders
+ * {p, extra}: cv[0..TFIT_MAX_DEGREE] (INFINITY where not tried: outside the
+ * range, or more terms than a training fold has cases), the choice in
+ * *best.  Returns 0, or -1 with a message (also when no degree is
+ * determined). */
+int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
+                            uint32_t lo, uint32_t extra, double *cv, uint32_t *best, char *err,
+                            size_t errlen);
+
+/* ---- operations shared by several families ------------------------------ */
+
+/* tf_family.applicable of a family that describes any cases. */
+int tf_family_always(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen);
+
+/* "p=2": the degree dims[0]. */
+void tf_family_degree_text(const tf_model *m, int style, char *buf, size_t n);
+
+/* tf_family.f64_errors of the polynomial families: the same least squares
+ * on every training case, kept in double, against the held-out cases. */
+int tf_family_poly_f64_errors(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                              char *err, size_t errlen);
+
+/* tf_family.cost from the model's layout: model.h's operation count and
+ * table bytes, cost/cycles.h's estimates. */
+void tf_family_layout_cost(const tf_model *m, tf_family_cost *out);
 
 #endif /* TF_FAMILY_COMMON_H */

@@ -71,11 +71,15 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
     return rc;
 }
 
-tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                         const char *name, char *err, size_t errlen)
+static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen)
 {
+    const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0];
-    double delta0[3], c[9], k[9], w[9], x0[3];
+    if (idx == NULL) {
+        m = d->n_cases;
+    }
+    double delta0[3], cm[9], k[9], w[9], x0[3];
     double(*g)[3] = malloc(m * sizeof *g);
     if (g == NULL) {
         snprintf(err, errlen, "contact: out of memory");
@@ -88,30 +92,30 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     int spans = tf_family_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
     free(g);
-    if (spans != 0 || linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
+    if (spans != 0 || linear_compliance(d, idx, m, delta0, cm, err, errlen) != 0) {
         return NULL;
     }
-    if (inverse3(c, k) < 1e-12) {
+    if (inverse3(cm, k) < 1e-12) {
         snprintf(err, errlen,
                  "contact: the contact site's compliance is singular (the site does not move "
                  "under some force direction): no impedance model");
         return NULL;
     }
-    tf_model *model = tf_model_new(name, TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
+    tf_model *model = tf_model_new("contact", TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
     if (model == NULL) {
         return NULL;
     }
     for (int i = 0; i < 3; ++i) {
         x0[i] = delta0[i];
         for (int j = 0; j < 3; ++j) {
-            x0[i] += c[3 * i + j] * d->centre[j];
+            x0[i] += cm[3 * i + j] * d->centre[j];
         }
     }
     for (int i = 0; i < 9; ++i) {
         w[i] = k[i] / d->radius;
     }
     tf_model_set_map(model, x0, w);
-    model->node_ids[0] = 0; /* set by the caller: the contact node */
+    model->node_ids[0] = c->contact_node + 1; /* node numbers count from 1 */
     if (tf_family_spans(model, d->contact, idx, m, err, errlen) != 0) {
         tf_model_free(model);
         return NULL;
@@ -146,3 +150,42 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     return model;
 }
+
+/* p = 1 .. max_degree by cross-validation (p = 0 would be a constant force:
+ * no impedance). */
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
+                         char *err, size_t errlen)
+{
+    uint32_t p;
+    if (tf_family_select_degree(r->family, c, plan, 1, 0, r->cv, &p, err, errlen) != 0) {
+        return -1;
+    }
+    r->model = fit(c, NULL, 0, &p, err, errlen);
+    return r->model ? 0 : -1;
+}
+
+static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen)
+{
+    for (uint32_t p = 1; p <= plan->max_degree; ++p) {
+        tf_model *m = fit(c, NULL, 0, &p, err, errlen);
+        if (m == NULL || take(arg, m) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+const tf_family tf_family_contact = {
+    .id = TFIT_FAMILY_CONTACT,
+    .name = "contact",
+    .kind = TF_FAMILY_INVERSE,
+    .applicable = tf_family_always,
+    .select = select_orders,
+    .fit = fit,
+    .candidates = candidates,
+    .orders_text = tf_family_degree_text,
+    .q31 = tf_q31_quantise,
+    .f64_errors = tf_family_poly_f64_errors,
+    .cost = tf_family_layout_cost,
+};

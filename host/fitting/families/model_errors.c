@@ -16,7 +16,8 @@
 void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
                       double *max, double *rms, double *rel_max)
 {
-    const int contact = model->family == TFIT_FAMILY_CONTACT;
+    const tf_family *f = tf_family_of(model->family);
+    const int contact = f != NULL && f->kind == TF_FAMILY_INVERSE;
     const size_t rows = 3 * (size_t)model->n_out;
     float *out = malloc(rows * sizeof *out);
     double emax = 0, sum2 = 0, rmax = 0;
@@ -50,10 +51,11 @@ void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *
     }
 }
 
-int tf_family_cv_error(const tf_fitdata *d, tf_family_fitter fit, const uint32_t *orders,
+int tf_family_cv_error(const tf_family *family, const tf_cases *c, const uint32_t *orders,
                        unsigned folds, uint64_t seed, double *rms, double *max, char *err,
                        size_t errlen)
 {
+    const tf_fitdata *d = &c->train;
     const size_t n = d->n_cases;
     unsigned *fold = malloc(n * sizeof *fold);
     size_t *train = malloc(n * sizeof *train), *test = malloc(n * sizeof *test);
@@ -70,7 +72,7 @@ int tf_family_cv_error(const tf_fitdata *d, tf_family_fitter fit, const uint32_t
     for (unsigned f = 0; rc == 0 && f < folds; ++f) {
         size_t n_train = tf_cv_select(fold, n, f, 0, train);
         size_t n_test = tf_cv_select(fold, n, f, 1, test);
-        tf_model *m = fit(d, train, n_train, orders, "cv", err, errlen);
+        tf_model *m = family->fit(c, train, n_train, orders, err, errlen);
         if (m == NULL &&
             strncmp(err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
             sum2 = emax = INFINITY; /* the folds cannot determine this order */

@@ -1,7 +1,7 @@
 /*
  * nodal.c — the nodal family: each output component a polynomial of
  * total degree p in the normalised force; one QR factorisation of the
- * design matrix serves all 3 n_out columns.
+ * design matrix serves all 3 n_out columns.  Degree by cross-validation.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,12 +9,16 @@
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
 
-tf_model *tf_fit_nodal(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                       const char *name, char *err, size_t errlen)
+static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen)
 {
+    const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0];
+    if (idx == NULL) {
+        m = d->n_cases;
+    }
     tf_model *model =
-        tf_family_forward_model(name, TFIT_FAMILY_NODAL, &p, 1, p, d, idx, m, err, errlen);
+        tf_family_forward_model("nodal", TFIT_FAMILY_NODAL, &p, 1, p, d, idx, m, err, errlen);
     if (model == NULL) {
         return NULL;
     }
@@ -25,10 +29,10 @@ tf_model *tf_fit_nodal(const tf_fitdata *d, const size_t *idx, size_t m, const u
     double *x = malloc(t * rows * sizeof *x);
     int rc = (a && y && x) ? tf_family_lsq(a, m, t, y, rows, x, err, errlen) : -1;
     if (rc == 0) {
-        float *c = tf_model_tables(model);
+        float *coef = tf_model_tables(model);
         for (size_t o = 0; o < rows; ++o) {
             for (uint32_t k = 0; k < t; ++k) {
-                c[o * t + k] = (float)x[k + o * t];
+                coef[o * t + k] = (float)x[k + o * t];
             }
         }
     } else if (!(a && y && x)) {
@@ -43,3 +47,44 @@ tf_model *tf_fit_nodal(const tf_fitdata *d, const size_t *idx, size_t m, const u
     }
     return model;
 }
+
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
+                         char *err, size_t errlen)
+{
+    uint32_t p;
+    if (tf_family_select_degree(r->family, c, plan, 0, 0, r->cv, &p, err, errlen) != 0) {
+        return -1;
+    }
+    r->model = fit(c, NULL, 0, &p, err, errlen);
+    return r->model ? 0 : -1;
+}
+
+/* p = 0 .. max_degree, while the cases determine the terms. */
+static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen)
+{
+    for (uint32_t p = 0; p <= plan->max_degree; ++p) {
+        if (tf_terms(p) > c->train.n_cases) {
+            continue;
+        }
+        tf_model *m = fit(c, NULL, 0, &p, err, errlen);
+        if (m == NULL || take(arg, m) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+const tf_family tf_family_nodal = {
+    .id = TFIT_FAMILY_NODAL,
+    .name = "nodal",
+    .kind = TF_FAMILY_FORWARD,
+    .applicable = tf_family_always,
+    .select = select_orders,
+    .fit = fit,
+    .candidates = candidates,
+    .orders_text = tf_family_degree_text,
+    .q31 = tf_q31_quantise,
+    .f64_errors = tf_family_poly_f64_errors,
+    .cost = tf_family_layout_cost,
+};

@@ -1,5 +1,5 @@
 /*
- * zhou2017.c — see fit_zhou2017.h.
+ * zhou2017.c — see zhou2017.h; the family's registry entry at the end.
  */
 #include "fitting/families/zhou2017.h"
 
@@ -12,6 +12,7 @@
 #include "model/basis.h"
 #include "fitting/cv_folds.h"
 #include "fitting/families/common.h"
+#include "fitting/families/family.h"
 
 #define BETA_MAX 4 /* k searched in 0..4: the seed needed 1 */
 
@@ -226,8 +227,8 @@ static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
     return rc;
 }
 
-tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders *o,
-                          const char *name, char *err, size_t errlen)
+tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, const char *name,
+                      char *err, size_t errlen)
 {
     const tf_fitdata *d0 = axis[0];
     uint32_t dims[TFIT_ZHOU2017_DIMS];
@@ -517,3 +518,100 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
     free(own);
     return rc;
 }
+
+/* ---- the registry's operations (family.h) -------------------------------- */
+
+static void orders_of(const uint32_t *dims, tf_zhou_orders *o)
+{
+    for (int a = 0; a < 3; ++a) {
+        o->lambda[a] = dims[a];
+    }
+    for (int pair = 0; pair < 9; ++pair) {
+        o->a[pair] = dims[3 + 3 * pair];
+        o->b[pair] = dims[4 + 3 * pair];
+        o->k[pair] = dims[5 + 3 * pair];
+    }
+}
+
+/* The fit uses the single-axis cases, all of them: no selection. */
+static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen)
+{
+    (void)m;
+    if (idx != NULL) {
+        snprintf(err, errlen, "zhou2017 fits every single-axis case: no selection of cases");
+        return NULL;
+    }
+    const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
+    tf_zhou_orders o;
+    orders_of(orders, &o);
+    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+}
+
+/* The seed's model needs the outputs on one plane and a centred envelope,
+ * and its surface orders are cross-validated over the output points: at
+ * least one per fold. */
+static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+{
+    if (c->train.n_out < plan->folds) {
+        snprintf(why, whylen,
+                 "family zhou2017 cross-validates its surfaces over the output points: it needs "
+                 "at least %u (the folds), not %u",
+                 plan->folds, c->train.n_out);
+        return -1;
+    }
+    return tf_zhou_applicable(&c->train, why, whylen);
+}
+
+/* Orders by cross-validation (tf_zhou_select), then the model. */
+static tf_model *cross_validated(const tf_cases *c, const tf_fit_plan *plan, char *err,
+                                 size_t errlen)
+{
+    const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
+    tf_zhou_orders o;
+    if (tf_zhou_select(axis, plan->folds, plan->seed, &o, NULL, err, errlen) != 0) {
+        return NULL;
+    }
+    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+}
+
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
+                         char *err, size_t errlen)
+{
+    r->model = cross_validated(c, plan, err, errlen);
+    return r->model ? 0 : -1;
+}
+
+/* One candidate: the cross-validated orders. */
+static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen)
+{
+    tf_model *m = cross_validated(c, plan, err, errlen);
+    return (m == NULL || take(arg, m) != 0) ? -1 : 0;
+}
+
+/* Full: "lambda=1,1,1 xx:A/B/k ..." per (force axis, component); short:
+ * the contact-law orders. */
+static void orders_text(const tf_model *m, int style, char *buf, size_t n)
+{
+    const uint32_t *d = m->dims;
+    int k = snprintf(buf, n, "lambda=%u,%u,%u", d[0], d[1], d[2]);
+    for (int pair = 0; style == TF_ORDERS_FULL && pair < 9 && k > 0 && (size_t)k < n; ++pair) {
+        k += snprintf(buf + k, n - (size_t)k, " %c%c:%u/%u/%u", "xyz"[pair / 3], "xyz"[pair % 3],
+                      d[3 + 3 * pair], d[4 + 3 * pair], d[5 + 3 * pair]);
+    }
+}
+
+const tf_family tf_family_zhou2017 = {
+    .id = TFIT_FAMILY_ZHOU2017,
+    .name = "zhou2017",
+    .kind = TF_FAMILY_FORWARD,
+    .applicable = applicable,
+    .select = select_orders,
+    .fit = fit,
+    .candidates = candidates,
+    .orders_text = orders_text,
+    .q31 = NULL, /* no Q31 form (docs/q31-format.md §1) */
+    .f64_errors = NULL,
+    .cost = tf_family_layout_cost,
+};
