@@ -83,6 +83,7 @@ typedef struct lm {
     double *p, *r, *jac;   /* current point, residuals, Jacobian (m x n) */
     double *pt, *rt;       /* trial point and residuals */
     double *qr, *qtf, *tau, *diag, *grad, *step, *js, *fdiag, *fstep, *typ, *cnorm, *dv;
+    double *cscale; /* power of two near each column's norm: QR of J C^-1 */
     double *work;
     lapack_int *piv;
     size_t *free_idx;
@@ -153,7 +154,7 @@ static void lm_free(lm *s)
 static int lm_alloc(lm *s)
 {
     const size_t m = s->m, n = s->n;
-    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n + n + n +
+    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n + n + n + n +
                    tf_lmstep_work_size(n);
     s->p = malloc(total * sizeof *s->p);
     s->piv = malloc(n * sizeof *s->piv);
@@ -180,6 +181,7 @@ static int lm_alloc(lm *s)
     s->typ = q, q += n;
     s->cnorm = q, q += n;
     s->dv = q, q += n;
+    s->cscale = q, q += n;
     s->work = q;
     return 0;
 }
@@ -260,12 +262,33 @@ static void update_scaling(lm *s, int first)
     }
 }
 
-/* Pivoted QR of the free columns and Q^T r.  Returns the numerical rank. */
+/* Column scale for the factorisation: the power of two nearest above the
+ * column's norm (1 for a zero column), so that J C^-1 has columns of norm
+ * in (1/2, 1] and the scaling itself is exact. */
+static double column_scale(double norm)
+{
+    int e;
+    return norm > 0 && isfinite(norm) ? (frexp(norm, &e), ldexp(1.0, e)) : 1.0;
+}
+
+/* Pivoted QR of the free columns of J C^-1 and Q^T r.  Returns the
+ * numerical rank.
+ *
+ * The columns are scaled to about unit norm first (exactly, by powers of
+ * two), so that pivoting and the rank decision do not depend on the units
+ * of the parameters (docs/lm.md §2): on the unscaled J one column 1e15
+ * times larger than the others made them all look dependent, and the
+ * Gauss-Newton step and reduction ignored them. */
 static int factor(lm *s, size_t *rank)
 {
     const size_t m = s->m, nf = s->nf, k = m < nf ? m : nf;
     for (size_t c = 0; c < nf; ++c) {
-        memcpy(s->qr + c * m, s->jac + s->free_idx[c] * m, m * sizeof *s->qr);
+        size_t j = s->free_idx[c];
+        double cs = column_scale(s->cnorm[j]);
+        s->cscale[j] = cs;
+        for (size_t i = 0; i < m; ++i) {
+            s->qr[i + c * m] = s->jac[i + j * m] / cs;
+        }
         s->piv[c] = 0;
     }
     lapack_int info = LAPACKE_dgeqp3(LAPACK_COL_MAJOR, (lapack_int)m, (lapack_int)nf, s->qr,
@@ -280,7 +303,7 @@ static int factor(lm *s, size_t *rank)
         return -1;
     }
     /* Rank for the Gauss–Newton step: columns beyond it are noise at the
-     * level of double rounding in R. */
+     * level of double rounding in R (of the scaled columns, |R_00| ~ 1). */
     double r00 = fabs(s->qr[0]), tol = (double)(m > nf ? m : nf) * DBL_EPSILON * r00;
     *rank = 0;
     while (*rank < k && fabs(s->qr[*rank + *rank * m]) > tol) {
@@ -293,7 +316,11 @@ static int factor(lm *s, size_t *rank)
     return 0;
 }
 
-/* Largest cosine between r and a free column of J (Moré's gtol test). */
+/* Largest cosine between r and a free column of J (Moré's gtol test).
+ * Divided one norm at a time: the product of a large column norm and
+ * ||r|| overflows to infinity and made the cosine 0, a false "gradient"
+ * stop; a cosine that cannot be computed (NaN from an overflowed J^T r)
+ * counts as large. */
 static double gradient_cosine(const lm *s)
 {
     double g = 0;
@@ -301,35 +328,41 @@ static double gradient_cosine(const lm *s)
         size_t j = s->free_idx[c];
         double cn = s->cnorm[j];
         if (cn > 0) {
-            g = fmax(g, fabs(s->grad[j]) / (cn * s->rnorm));
+            double cosine = fabs(s->grad[j]) / cn / s->rnorm;
+            g = isnan(cosine) ? INFINITY : fmax(g, cosine);
         }
     }
     return g;
 }
 
 /* The damped step on the free parameters, projected into the box.  Sets
- * s->step to the step actually taken and s->pt to the trial point. */
-static int trial_step(lm *s, size_t rank)
+ * s->step to the damped step and s->pt to the trial point.  The factor is
+ * of J C^-1, so the step is solved for C p with the scaling D C^-1 (the
+ * same ||D p||) and unscaled (exactly: C holds powers of two).  Returns
+ * TF_STOP_DIRECT, or BAD_JACOBIAN when LAPACK failed. */
+static tf_stop trial_step(lm *s, size_t rank)
 {
     const size_t nf = s->nf;
     for (size_t c = 0; c < nf; ++c) {
-        s->fdiag[c] = s->diag[s->free_idx[c]];
+        size_t j = s->free_idx[c];
+        s->fdiag[c] = s->diag[j] / s->cscale[j];
     }
     tf_lmstep st = {nf, s->m < nf ? s->m : nf, s->qr, s->m, s->piv, rank, s->qtf, s->fdiag,
                     s->work};
     double par = tf_lmstep_solve(&st, s->delta, s->par, s->fstep);
     if (par < 0) {
-        return -1;
+        return TF_STOP_BAD_JACOBIAN;
     }
     s->par = par;
     memset(s->step, 0, s->n * sizeof *s->step);
     for (size_t c = 0; c < nf; ++c) {
-        s->step[s->free_idx[c]] = s->fstep[c];
+        size_t j = s->free_idx[c];
+        s->step[j] = s->fstep[c] / s->cscale[j];
     }
     for (size_t j = 0; j < s->n; ++j) {
         s->pt[j] = clamp(s, j, s->p[j] + s->step[j]);
     }
-    return 0;
+    return TF_STOP_DIRECT;
 }
 
 /* Predicted relative reduction of ||r||^2 for the step (Moré eq. 4.4 and
@@ -431,8 +464,9 @@ static double noise_floor(const lm *s)
 static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
 {
     *accepted = 0;
-    if (trial_step(s, rank) != 0) {
-        return TF_STOP_BAD_JACOBIAN;
+    tf_stop st = trial_step(s, rank);
+    if (st != TF_STOP_DIRECT) {
+        return st;
     }
     int projected = 0;
     for (size_t j = 0; j < s->n; ++j) {
@@ -482,8 +516,13 @@ static tf_stop iterate(lm *s)
         active_set(s);
         update_scaling(s, first);
         if (first) {
+            /* factor ||D p0||; at p0 = 0, factor ||r0|| rather than factor
+             * itself: ||D p|| is in the units of r (D_j = ||J_j||), so an
+             * absolute radius of 1 would depend on the parameters' units
+             * (and with one large column stop the fit at the start, the
+             * region below what double can resolve of ||r||). */
             double pn = scaled_norm(s, s->p);
-            s->delta = pn > 0 ? s->opt->factor * pn : s->opt->factor;
+            s->delta = s->opt->factor * (pn > 0 ? pn : s->rnorm);
             s->par = 0;
         }
         if (s->nf == 0) {
