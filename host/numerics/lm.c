@@ -30,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "numerics/lm_box.h"
 #include "numerics/lm_fdjac.h"
 #include "numerics/lm_step.h"
 
@@ -92,6 +93,7 @@ typedef struct lm {
     double gn_prered; /* relative reduction the Gauss–Newton step predicts */
     size_t evals, jac_evals, iterations;
     int wall;         /* a trial since the last accepted step was non-finite */
+    int projected;    /* a bound cut the last trial step short */
 } lm;
 
 /* Euclidean norm, scaled against overflow (BLAS dnrm2). */
@@ -118,11 +120,6 @@ static double lower(const lm *s, size_t j)
 static double upper(const lm *s, size_t j)
 {
     return s->pb->upper != NULL ? s->pb->upper[j] : INFINITY;
-}
-
-static double clamp(const lm *s, size_t j, double v)
-{
-    return fmin(fmax(v, lower(s, j)), upper(s, j));
 }
 
 /* ||D v||. */
@@ -336,10 +333,11 @@ static double gradient_cosine(const lm *s)
 }
 
 /* The damped step on the free parameters, projected into the box.  Sets
- * s->step to the damped step and s->pt to the trial point.  The factor is
- * of J C^-1, so the step is solved for C p with the scaling D C^-1 (the
- * same ||D p||) and unscaled (exactly: C holds powers of two).  Returns
- * TF_STOP_DIRECT, or BAD_JACOBIAN when LAPACK failed. */
+ * s->step to the damped step (the step taken when a bound cut it) and
+ * s->pt to the trial point.  The factor is of J C^-1, so the step is
+ * solved for C p with the scaling D C^-1 (the same ||D p||) and unscaled
+ * (exactly: C holds powers of two).  Returns TF_STOP_DIRECT, or
+ * BAD_JACOBIAN when LAPACK failed. */
 static tf_stop trial_step(lm *s, size_t rank)
 {
     const size_t nf = s->nf;
@@ -359,8 +357,11 @@ static tf_stop trial_step(lm *s, size_t rank)
         size_t j = s->free_idx[c];
         s->step[j] = s->fstep[c] / s->cscale[j];
     }
-    for (size_t j = 0; j < s->n; ++j) {
-        s->pt[j] = clamp(s, j, s->p[j] + s->step[j]);
+    s->projected = tf_lm_box_trial(s->n, s->pb->lower, s->pb->upper, s->p, s->step, s->pt);
+    if (s->projected) {
+        for (size_t j = 0; j < s->n; ++j) {
+            s->step[j] = s->pt[j] - s->p[j];
+        }
     }
     return TF_STOP_DIRECT;
 }
@@ -468,12 +469,6 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
     if (st != TF_STOP_DIRECT) {
         return st;
     }
-    int projected = 0;
-    for (size_t j = 0; j < s->n; ++j) {
-        double taken = s->pt[j] - s->p[j];
-        projected |= taken != s->step[j];
-        s->step[j] = taken;
-    }
     s->pnorm_scaled = scaled_norm(s, s->step);
     if (first) {
         s->delta = fmin(s->delta, s->pnorm_scaled);
@@ -486,7 +481,7 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
     double rtnorm = finite ? norm2(s->rt, s->m) : INFINITY;
     double actred = 0.1 * rtnorm < s->rnorm ? 1 - (rtnorm / s->rnorm) * (rtnorm / s->rnorm) : -1;
     double prered, dirder;
-    predicted(s, projected, &prered, &dirder);
+    predicted(s, s->projected, &prered, &dirder);
     double ratio = prered != 0 ? actred / prered : 0;
     double noise = noise_floor(s);
     int unresolved = finite && fabs(actred) <= noise && prered <= noise;
@@ -570,7 +565,7 @@ int tf_lm_solve(const tf_lm_problem *pb, const tf_lm_options *opt, double *p, tf
         return -1;
     }
     for (size_t j = 0; j < s.n; ++j) {
-        s.p[j] = clamp(&s, j, p[j]);
+        s.p[j] = tf_lm_box_clamp(p[j], lower(&s, j), upper(&s, j));
         s.typ[j] = s.p[j] != 0 ? fabs(s.p[j]) : 1.0; /* for finite differences */
     }
     tf_stop stop;
