@@ -55,6 +55,7 @@ const char *tf_stop_name(tf_stop s)
         [TF_STOP_PRECISION] = "precision",
         [TF_STOP_MAX_EVALS] = "max-evals",
         [TF_STOP_NONFINITE] = "nonfinite",
+        [TF_STOP_UNDERFLOW] = "underflow",
         [TF_STOP_BAD_START] = "bad-start",
         [TF_STOP_BAD_JACOBIAN] = "bad-jacobian",
         [TF_STOP_CALLBACK] = "callback",
@@ -336,8 +337,9 @@ static double gradient_cosine(const lm *s)
  * s->step to the damped step (the step taken when a bound cut it) and
  * s->pt to the trial point.  The factor is of J C^-1, so the step is
  * solved for C p with the scaling D C^-1 (the same ||D p||) and unscaled
- * (exactly: C holds powers of two).  Returns TF_STOP_DIRECT, or
- * BAD_JACOBIAN when LAPACK failed. */
+ * (exactly, but it may underflow: C holds powers of two).  Returns
+ * TF_STOP_DIRECT, or why no step could be made: BAD_JACOBIAN when LAPACK
+ * failed, UNDERFLOW when the step is zero in every component. */
 static tf_stop trial_step(lm *s, size_t rank)
 {
     const size_t nf = s->nf;
@@ -348,14 +350,22 @@ static tf_stop trial_step(lm *s, size_t rank)
     tf_lmstep st = {nf, s->m < nf ? s->m : nf, s->qr, s->m, s->piv, rank, s->qtf, s->fdiag,
                     s->work};
     double par = tf_lmstep_solve(&st, s->delta, s->par, s->fstep);
+    if (par == TF_LMSTEP_UNDERFLOW) {
+        return TF_STOP_UNDERFLOW;
+    }
     if (par < 0) {
         return TF_STOP_BAD_JACOBIAN;
     }
     s->par = par;
     memset(s->step, 0, s->n * sizeof *s->step);
+    int moves = 0;
     for (size_t c = 0; c < nf; ++c) {
         size_t j = s->free_idx[c];
         s->step[j] = s->fstep[c] / s->cscale[j];
+        moves |= s->step[j] != 0;
+    }
+    if (!moves) {
+        return TF_STOP_UNDERFLOW;
     }
     s->projected = tf_lm_box_trial(s->n, s->pb->lower, s->pb->upper, s->p, s->step, s->pt);
     if (s->projected) {
