@@ -2,9 +2,11 @@
 #
 #   check-lm   the `tissuefit lm-strd` command line (good, CRLF and LF files,
 #              missing and damaged files, bad --start); the 54 NIST StRD runs
-#              themselves are the unit test tests/unit/test_lm_nist.c
-#   bench-lm   the 54 runs with tissuefit and with GSL multifit_nlinear, side
-#              by side (GSL is needed only here: DEBS_BENCH)
+#              and the 53 MGH runs themselves are the unit tests
+#              tests/unit/test_lm_nist.c and test_lm_mgh.c (check-unit)
+#   bench-lm   the 54 NIST runs and the 53 Moré–Garbow–Hillstrom runs with
+#              tissuefit and with GSL multifit_nlinear, side by side (GSL is
+#              needed only here: DEBS_BENCH)
 #   lm-table   the NIST and Moré–Garbow–Hillstrom tables and studies of
 #              docs/lm.md, as Markdown
 
@@ -45,6 +47,13 @@ $(LM_T)/bench_gsl: tests/lm/bench_gsl.c $(B)/native/libtissuefit-host.a | deps-b
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
 
-bench-lm: $(LM_T)/bench_gsl
+$(LM_T)/bench_mgh_gsl: tests/lm/bench_mgh_gsl.c $(B)/native/libtissuefit-host.a | deps-bench
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
+
+bench-lm: $(LM_T)/bench_gsl $(LM_T)/bench_mgh_gsl
 	@echo "== LM: tissuefit against GSL multifit_nlinear, NIST StRD (54 runs) =="
-	@$<
+	@$(LM_T)/bench_gsl
+	@echo "== LM: tissuefit against GSL multifit_nlinear, Moré-Garbow-Hillstrom (53 runs) =="
+	@$(LM_T)/bench_mgh_gsl

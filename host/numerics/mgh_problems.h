@@ -46,11 +46,13 @@ void tf_mgh_jacobian(const tf_mgh_run *r, const double *x, double *jac);
 
 /* The values of sum f_i^2 at the known minima for this (n, m) in
  * f[0..count-1]; returns count (1 to TF_MGH_MAX_MINIMA).  f[0] is the
- * global minimum, f[1] the other minimum the paper lists where it lists
- * one (a local minimum, or one at infinity: parameters going to
- * +-infinity); f[2], for Kowalik–Osborne only, a local minimum the paper
- * does not list, found by this study (tests/unit/test_lm_mgh.c checks that
- * it is one: zero gradient, positive definite Hessian). */
+ * smallest known (the global minimum as far as known), f[1] the other
+ * minimum the paper lists where it lists one (a local minimum, or one at
+ * infinity: parameters going to +-infinity).  Not from the paper, found by
+ * this study and checked by tests/unit/test_lm_mgh.c: f[2] for Kowalik–
+ * Osborne (a local minimum: zero gradient, positive definite Hessian), and
+ * both values for Chebyquad with n = 1, m = 8, which the paper does not
+ * list. */
 size_t tf_mgh_minima(const tf_mgh_run *r, double *f);
 
 #endif /* TF_MGH_PROBLEMS_H */

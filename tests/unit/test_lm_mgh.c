@@ -122,6 +122,9 @@ static void jacobians_match_differences(void **state)
  *  - Kowalik–Osborne from 10 x0: the local minimum 4.23675e-4 the paper
  *    does not list (checked below; GSL reaches the global one, MINPACK the
  *    one at infinity, 1.02734e-3);
+ *  - Chebyquad n = 1 from 10 x0 and 100 x0: the local minimum 3.55039 at
+ *    x = 0.98173 (MINPACK and GSL end there too; the smallest is 3.06653,
+ *    see chebyquad_one_variable_minima);
  *  - Brown almost-linear n = 10 from 100 x0: the paper's other minimum 1
  *    at (0, ..., 0, 11).  Its first Jacobian has one row 1e15 times the
  *    others: the scaled columns are independent only at the level of
@@ -139,8 +142,9 @@ typedef struct exception {
 } exception;
 
 static const exception exceptions[] = {
-    {7, 2, 1, 0x3},  {7, 2, 10, 0x3}, {7, 2, 100, 0x3},  {8, 3, 10, 0x3},
-    {8, 3, 100, 0x3}, {9, 4, 10, 0x7}, {16, 10, 100, 0x3},
+    {7, 2, 1, 0x3},  {7, 2, 10, 0x3},   {7, 2, 100, 0x3}, {8, 3, 10, 0x3},
+    {8, 3, 100, 0x3}, {9, 4, 10, 0x7},  {15, 1, 10, 0x3}, {15, 1, 100, 0x3},
+    {16, 10, 100, 0x3},
 };
 
 static unsigned accepted(const tf_mgh_run *r)
@@ -255,6 +259,33 @@ static void kowalik_osborne_third_point_is_a_minimum(void **state)
     assert_true(eig[0] > 0.01);
 }
 
+static double chebyquad1(double x)
+{
+    const tf_mgh_run r = {15, 1, 8, 1};
+    double f[8];
+    tf_mgh_residual(&r, &x, f);
+    return norm(f, 8) * norm(f, 8);
+}
+
+/* Chebyquad with n = 1, m = 8 is not in the paper: its minima come from a
+ * search here.  The smallest value on a 1e-5 grid over [-0.25, 1.25] (the
+ * function grows like x^16 outside [0, 1]) is the listed global minimum,
+ * and the listed local one is a minimum of the function. */
+static void chebyquad_one_variable_minima(void **state)
+{
+    (void)state;
+    const tf_mgh_run r = {15, 1, 8, 1};
+    double f[TF_MGH_MAX_MINIMA], lowest = INFINITY;
+    assert_int_equal(tf_mgh_minima(&r, f), 2);
+    for (int k = 0; k <= 150000; ++k) {
+        lowest = fmin(lowest, chebyquad1(-0.25 + 1e-5 * k));
+    }
+    assert_true(lowest >= f[0] * (1 - 1e-9) && lowest <= f[0] * (1 + 1e-7));
+    const double x = 0.9817312645;
+    assert_close(chebyquad1(x), f[1], 1e-9);
+    assert_true(chebyquad1(x - 1e-3) > f[1] && chebyquad1(x + 1e-3) > f[1]);
+}
+
 /* ------------------------------------------------------------------------ */
 
 /* Scalings: every parameter x 1e10 ("up"), x 1e-10 ("down"), 1e10 and
@@ -340,6 +371,7 @@ int main(void)
         cmocka_unit_test(jacobians_match_differences),
         cmocka_unit_test(every_run_reaches_its_known_minimum),
         cmocka_unit_test(kowalik_osborne_third_point_is_a_minimum),
+        cmocka_unit_test(chebyquad_one_variable_minima),
         cmocka_unit_test(results_do_not_depend_on_parameter_units),
         cmocka_unit_test(powell_singular_stops_by_itself),
     };
