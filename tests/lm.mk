@@ -42,15 +42,15 @@ lm-table: $(LM_T)/strd_table $(LM_T)/mgh_table
 	@echo
 	@for s in up down alternate; do $(LM_T)/mgh_table --scale $$s --summary; done
 
-$(LM_T)/bench_gsl: tests/lm/bench_gsl.c $(B)/native/libtissuefit-host.a | deps-bench
+$(LM_T)/bench_gsl: tests/lm/bench_gsl.c tests/lm/bench_time.c $(B)/native/libtissuefit-host.a | deps-bench
 	@mkdir -p $(@D)
 	$(call say,BUILD)
-	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
+	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< tests/lm/bench_time.c $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
 
-$(LM_T)/bench_mgh_gsl: tests/lm/bench_mgh_gsl.c $(B)/native/libtissuefit-host.a | deps-bench
+$(LM_T)/bench_mgh_gsl: tests/lm/bench_mgh_gsl.c tests/lm/bench_time.c $(B)/native/libtissuefit-host.a | deps-bench
 	@mkdir -p $(@D)
 	$(call say,BUILD)
-	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
+	$(Q)$(CC) $(HOST_CFLAGS) -O2 $< tests/lm/bench_time.c $(B)/native/libtissuefit-host.a -lgsl $(HOST_LIBS) -o $@
 
 bench-lm: $(LM_T)/bench_gsl $(LM_T)/bench_mgh_gsl
 	@echo "== LM: tissuefit against GSL multifit_nlinear, NIST StRD (54 runs) =="

@@ -22,8 +22,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_time.h"
 #include "numerics/mgh_fit.h"
 
 typedef struct outcome {
@@ -101,29 +101,10 @@ static void verdict(const tf_mgh_run *r, outcome o, char *buf, size_t len)
     }
 }
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, by_value);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* Seconds for all runs with one solver (gsl != 0: GSL, tight set). */
 static double set_time(const tf_mgh_run *runs, size_t nr, int gsl)
 {
-    double t0 = now();
+    double t0 = bench_now();
     for (size_t k = 0; k < nr; ++k) {
         if (gsl) {
             run_gsl(&runs[k], 1e-15, 1e-15, 1e-15);
@@ -131,7 +112,7 @@ static double set_time(const tf_mgh_run *runs, size_t nr, int gsl)
             run_ours(&runs[k]);
         }
     }
-    return now() - t0;
+    return bench_now() - t0;
 }
 
 int main(int argc, char **argv)
@@ -176,7 +157,7 @@ int main(int argc, char **argv)
         t_ours[k] = set_time(runs, nr, 0);
         t_gsl[k] = set_time(runs, nr, 1);
     }
-    double mo = median(t_ours, repeats), mg = median(t_gsl, repeats);
+    double mo = bench_median(t_ours, repeats), mg = bench_median(t_gsl, repeats);
     printf("time for the %zu runs, median of %d: ours %.2f ms, GSL %.2f ms; ratio ours/GSL %.2f\n",
            nr, repeats, 1e3 * mo, 1e3 * mg, mo / mg);
     return 0;
