@@ -66,14 +66,20 @@ static void mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t)
     assert_int_equal(rc, TF_GEOM_OK);
 }
 
+/* The test sphere and its mesh at spacing h. */
+static void sphere_mesh(double h, tf_surface *s, tf_tetmesh *t)
+{
+    sphere(s);
+    tf_mesh_options o = spacing(h);
+    mesh(s, &o, t);
+}
+
 static void cells_fill_the_sphere_and_every_node_is_inside(void **state)
 {
     (void)state;
     tf_surface s;
     tf_tetmesh t;
-    sphere(&s);
-    tf_mesh_options o = spacing(5);
-    mesh(&s, &o, &t);
+    sphere_mesh(5, &s, &t);
     assert_int_equal(t.nsurf, s.nv);
     assert_true(t.nn > t.nsurf + 50); /* there are interior nodes */
     assert_close(t.enclosed_volume, tf_surface_volume(&s), 0);
@@ -116,9 +122,7 @@ static void cell_quadrature_matches_the_divergence_theorem(void **state)
     (void)state;
     tf_surface s;
     tf_tetmesh t;
-    sphere(&s);
-    tf_mesh_options o = spacing(6);
-    mesh(&s, &o, &t);
+    sphere_mesh(6, &s, &t);
     tf_simplex_rule tet, tri;
     tf_tet_rule(2, &tet);
     tf_tri_rule(3, &tri);
@@ -262,9 +266,7 @@ static void the_checks_catch_a_broken_mesh(void **state)
     tf_tetmesh t;
     tf_tetmesh_faults f;
     tf_geom_msg m;
-    sphere(&s);
-    tf_mesh_options o = spacing(6);
-    mesh(&s, &o, &t);
+    sphere_mesh(6, &s, &t);
     assert_int_equal(tf_tetmesh_topology(&t, &s, &f), 0);
     assert_int_equal(f.nonpositive + f.moved + f.unused + f.extra + f.missing + f.bad_faces, 0);
 

@@ -111,44 +111,42 @@ static void check_rule(const tf_simplex_rule *r, int corners)
     assert_close(sum, 1, 1e-15);
 }
 
+typedef int (*rule_fn)(unsigned, tf_simplex_rule *);
+typedef double (*error_fn)(const tf_simplex_rule *, unsigned);
+
+/* Every degree 1 .. max gives a rule of the expected size and degree,
+ * exact to that degree and not the next; other degrees are refused. */
+static void check_family(rule_fn rule, error_fn error, int corners, const unsigned points[6])
+{
+    static const unsigned degree[6] = {0, 1, 2, 5, 5, 5};
+    for (unsigned d = 1; d <= TF_SIMPLEX_MAX_DEGREE; ++d) {
+        tf_simplex_rule r;
+        assert_int_equal(rule(d, &r), 0);
+        assert_int_equal(r.n, points[d]);
+        assert_int_equal(r.degree, degree[d]);
+        check_rule(&r, corners);
+        for (unsigned e = 0; e <= r.degree; ++e) {
+            assert_true(error(&r, e) < 1e-14);
+        }
+        assert_true(error(&r, r.degree + 1) > 1e-3); /* and no further */
+    }
+    tf_simplex_rule r;
+    assert_int_equal(rule(0, &r), -1);
+    assert_int_equal(rule(TF_SIMPLEX_MAX_DEGREE + 1, &r), -1);
+}
+
 static void tet_rules_are_exact_to_their_degree(void **state)
 {
     (void)state;
-    static const unsigned points[6] = {0, 1, 4, 15, 15, 15}, degree[6] = {0, 1, 2, 5, 5, 5};
-    for (unsigned d = 1; d <= TF_SIMPLEX_MAX_DEGREE; ++d) {
-        tf_simplex_rule r;
-        assert_int_equal(tf_tet_rule(d, &r), 0);
-        assert_int_equal(r.n, points[d]);
-        assert_int_equal(r.degree, degree[d]);
-        check_rule(&r, 4);
-        for (unsigned e = 0; e <= r.degree; ++e) {
-            assert_true(tet_error(&r, e) < 1e-14);
-        }
-        assert_true(tet_error(&r, r.degree + 1) > 1e-3); /* and no further */
-    }
-    tf_simplex_rule r;
-    assert_int_equal(tf_tet_rule(0, &r), -1);
-    assert_int_equal(tf_tet_rule(TF_SIMPLEX_MAX_DEGREE + 1, &r), -1);
+    static const unsigned points[6] = {0, 1, 4, 15, 15, 15};
+    check_family(tf_tet_rule, tet_error, 4, points);
 }
 
 static void triangle_rules_are_exact_to_their_degree(void **state)
 {
     (void)state;
-    static const unsigned points[6] = {0, 1, 3, 7, 7, 7}, degree[6] = {0, 1, 2, 5, 5, 5};
-    for (unsigned d = 1; d <= TF_SIMPLEX_MAX_DEGREE; ++d) {
-        tf_simplex_rule r;
-        assert_int_equal(tf_tri_rule(d, &r), 0);
-        assert_int_equal(r.n, points[d]);
-        assert_int_equal(r.degree, degree[d]);
-        check_rule(&r, 3);
-        for (unsigned e = 0; e <= r.degree; ++e) {
-            assert_true(tri_error(&r, e) < 1e-14);
-        }
-        assert_true(tri_error(&r, r.degree + 1) > 1e-3);
-    }
-    tf_simplex_rule r;
-    assert_int_equal(tf_tri_rule(0, &r), -1);
-    assert_int_equal(tf_tri_rule(TF_SIMPLEX_MAX_DEGREE + 1, &r), -1);
+    static const unsigned points[6] = {0, 1, 3, 7, 7, 7};
+    check_family(tf_tri_rule, tri_error, 3, points);
 }
 
 /* The mapped points are where the barycentric coordinates say. */
