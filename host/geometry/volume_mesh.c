@@ -102,26 +102,33 @@ static int add_volume(void)
  * node belongs to no tetrahedron and is not collected. */
 static int add_size_field(const tf_mesh_options *o)
 {
-    int ierr = 0, field;
+    int ierr = 0, failed = 0, field;
     char text[64];
     if (!o->graded) {
         field = gmshModelMeshFieldAdd("MathEval", -1, &ierr);
+        failed |= ierr;
         snprintf(text, sizeof text, "%.17g", o->spacing);
         gmshModelMeshFieldSetString(field, "F", text, &ierr);
+        failed |= ierr;
     } else {
         double point = (double)gmshModelGeoAddPoint(o->grade_at[0], o->grade_at[1],
                                                     o->grade_at[2], o->spacing, -1, &ierr);
+        failed |= ierr;
         int distance = gmshModelMeshFieldAdd("Distance", -1, &ierr);
+        failed |= ierr;
         gmshModelMeshFieldSetNumbers(distance, "PointsList", &point, 1, &ierr);
+        failed |= ierr;
         field = gmshModelMeshFieldAdd("Threshold", -1, &ierr);
-        gmshModelMeshFieldSetNumber(field, "InField", distance, &ierr);
-        gmshModelMeshFieldSetNumber(field, "SizeMin", o->grade_spacing, &ierr);
-        gmshModelMeshFieldSetNumber(field, "SizeMax", o->spacing, &ierr);
-        gmshModelMeshFieldSetNumber(field, "DistMin", o->grade_radius, &ierr);
-        gmshModelMeshFieldSetNumber(field, "DistMax", o->grade_ramp, &ierr);
+        failed |= ierr;
+        const char *name[5] = {"InField", "SizeMin", "SizeMax", "DistMin", "DistMax"};
+        double value[5] = {distance, o->grade_spacing, o->spacing, o->grade_radius, o->grade_ramp};
+        for (int k = 0; k < 5; ++k) {
+            gmshModelMeshFieldSetNumber(field, name[k], value[k], &ierr);
+            failed |= ierr;
+        }
     }
     gmshModelMeshFieldSetAsBackgroundMesh(field, &ierr);
-    return ierr;
+    return failed | ierr;
 }
 
 /* Sizes from the field only (not from the surface's edges, points or
