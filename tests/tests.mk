@@ -1,6 +1,7 @@
 # tests.mk — everything `make check` runs.
 #
-#   check-unit         cmocka host unit tests (tests/unit/test_*.c)
+#   check-unit         cmocka host unit tests (tests/unit/LAYER/test_*.c, one
+#                      folder per host/ layer)
 #   check-sanitize     the same tests under AddressSanitizer + UBSan
 #   check-freestanding target library for Cortex-M4F and RV64: no undefined
 #                      symbols, no mutable statics, no recursion
@@ -10,9 +11,10 @@
 #   check-insncount    callgrind: same instruction count for every input
 #   check-cli          the command line: help, exit statuses, nothing half-written
 
-TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -Itests/support -Itests/bitexact
+# -I.: a test reaches beyond host/ by its path from the top ("tests/...").
+TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -I. -Itests/support -Itests/bitexact
 SUPPORT_SRC := $(wildcard tests/support/*.c)
-UNIT_SRC := $(wildcard tests/unit/test_*.c)
+UNIT_SRC := $(shell find tests/unit -name 'test_*.c' | LC_ALL=C sort)
 UNIT_NAMES := $(UNIT_SRC:tests/unit/%.c=%)
 BITEXACT_CONFIGS := gcc-O0 gcc-O2 gcc-O3-native clang-O2
 T := $(B)/tests

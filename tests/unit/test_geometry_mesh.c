@@ -16,7 +16,7 @@
 
 #include <cmocka.h>
 
-#include "../geometry/shapes.h"
+#include "tests/geometry/shapes.h"
 #include "assert_close.h"
 #include "geometry/simplex_rules.h"
 #include "geometry/surface_prepare.h"

@@ -15,7 +15,7 @@
 
 #include <cmocka.h>
 
-#include "../geometry/shapes.h"
+#include "tests/geometry/shapes.h"
 #include "assert_close.h"
 #include "geometry/self_intersect.h"
 #include "geometry/surface_prepare.h"

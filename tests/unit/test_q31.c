@@ -18,7 +18,7 @@
 #include <cmocka.h>
 
 #define TFIT_Q31_PORTABLE_MUL /* the Armv6-M helpers, on this machine */
-#include "../../target/src/tfit_q31_internal.h"
+#include "target/src/tfit_q31_internal.h"
 
 #include "fitting/families/family.h"
 #include "model/q31.h"
