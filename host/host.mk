@@ -9,7 +9,7 @@ HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/
 # rounding in `f[i][k] = (double)(float)f[i][k]` for k = 0, 1 of rows of
 # three (only k = 2 is rounded; -O1, clang and this flag are right).  The
 # host rounds to float to see exactly what the firmware sees, so it is off
-# for all host code; tests/unit/test_toolchain.c fails if it comes back.
+# for all host code; tests/unit/fitting/test_toolchain.c fails if it comes back.
 HOST_CFLAGS := $(HOST_STRICT) -fno-tree-slp-vectorize -fopenmp -Ihost -Itarget/include \
                -I/usr/include/suitesparse -DTFIT_TOOL_VERSION='"$(VERSION)"'
 HOST_LIBS := -fopenmp -lcholmod -llapacke -lopenblas -lcyaml -lgmsh -lassimp -lz -lm

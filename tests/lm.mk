@@ -3,7 +3,7 @@
 #   check-lm   the `tissuefit lm-strd` command line (good, CRLF and LF files,
 #              missing and damaged files, bad --start); the 54 NIST StRD runs
 #              and the 53 MGH runs themselves are the unit tests
-#              tests/unit/test_lm_nist.c and test_lm_mgh.c (check-unit)
+#              tests/unit/numerics/test_lm_nist.c and test_lm_mgh.c (check-unit)
 #   bench-lm   the 54 NIST runs and the 53 Moré–Garbow–Hillstrom runs with
 #              tissuefit and with GSL multifit_nlinear, side by side (GSL is
 #              needed only here: DEBS_BENCH)

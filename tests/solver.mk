@@ -10,8 +10,8 @@
 #                         time split and peak memory; 150 load cases
 #   solver-validation     regenerates docs/validation/ (tables and PNG plots
 #                         for docs/validation.md); not part of make check
-# Unit tests (tests/unit/test_{scene,rpim,quadrature,neighbours,elasticity,
-# solver,verify}.c) run with check-unit and check-sanitize.
+# Unit tests (tests/unit/{scene,meshfree,materials,solvers,verify}/) run
+# with check-unit and check-sanitize.
 
 SOLVER_TOOLS := $(T)/solver/calculix_compare $(T)/solver/bench_solver $(T)/solver/node61
 DEBS_VALIDATION := $(DEBS_BUILD) gnuplot-nox

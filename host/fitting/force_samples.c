@@ -77,7 +77,7 @@ double tf_force_samples_min_distance(const double (*p)[3], size_t n)
 }
 
 /* host.mk compiles this without SLP vectorization: GCC 12.2 at -O2 would
- * round only v[i][2] (tests/unit/test_toolchain.c). */
+ * round only v[i][2] (tests/unit/fitting/test_toolchain.c). */
 void tf_forces_to_float(double (*v)[3], size_t n)
 {
     for (size_t i = 0; i < n; ++i) {

@@ -1,5 +1,5 @@
 /*
- * test_fit_family.c — the registered families' fitters on synthetic cases
+ * test_families.c — the registered families' fitters on synthetic cases
  * with known structure: the right order/rank reproduces the data to float
  * precision, a too-small one does not, cross-validation tells them apart,
  * and the contact inverse inverts a linear and a nonlinear tissue law; the
@@ -254,5 +254,5 @@ int main(void)
         cmocka_unit_test(modal_rank),
         cmocka_unit_test(contact_inverse),
     };
-    return cmocka_run_group_tests_name("fit_family", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("families", tests, NULL, NULL);
 }

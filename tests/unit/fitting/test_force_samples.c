@@ -1,5 +1,5 @@
 /*
- * test_loadcases.c — training and held-out forces: inside the envelope,
+ * test_force_samples.c — training and held-out forces: inside the envelope,
  * the axis points present, space-filling better than random, deterministic,
  * and the held-out set disjoint from training.
  */
@@ -74,5 +74,5 @@ int main(void)
         cmocka_unit_test(inside_and_axes),
         cmocka_unit_test(space_filling_and_deterministic),
     };
-    return cmocka_run_group_tests_name("loadcases", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("force_samples", tests, NULL, NULL);
 }

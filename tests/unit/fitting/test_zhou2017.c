@@ -1,5 +1,5 @@
 /*
- * test_fit_zhou2017.c — the seed-000 fitter on synthetic surfaces: a field
+ * test_zhou2017.c — the seed-000 fitter on synthetic surfaces: a field
  * the model can hold (separable polynomial in x and y, linear in the force)
  * is recovered with the right orders chosen by cross-validation and
  * superposes exactly for combined forces; a non-separable field is not;

@@ -1,5 +1,5 @@
 /*
- * test_geometry_mesh.c — a generated sphere filled with tetrahedra by gmsh
+ * test_mesh.c — a generated sphere filled with tetrahedra by gmsh
  * (geometry/volume_mesh.h): the cells' volume is the enclosed volume, no
  * node is outside (winding numbers), the surface vertices are the first
  * nodes unchanged, the same input gives the same bits, grading adds nodes

@@ -1,5 +1,5 @@
 /*
- * test_geometry_rules.c — Gauss rules on tetrahedra and triangles
+ * test_rules.c — Gauss rules on tetrahedra and triangles
  * (geometry/simplex_rules.h): each integrates every monomial of its degree
  * exactly on a skewed simplex, and some monomial of the next degree not.
  */

@@ -1,5 +1,5 @@
 /*
- * test_geometry_surface.c — reading, checking, repairing and placing organ
+ * test_surface.c — reading, checking, repairing and placing organ
  * surfaces (geometry/surface_*.h, transform.h, self_intersect.h) on
  * surfaces the test generates: each bad mesh gets its clear message.
  */
