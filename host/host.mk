@@ -3,6 +3,13 @@
 # (or a folder) needs no change here.  Includes are written from host/
 # ("solvers/solver.h"), so each one names the layer it reaches into.
 
+# The layers, lowest first: a file may include its own layer and the ones
+# before it, never a later one (tests/layers/check_includes.sh, in make
+# check).  A new folder goes into this list; docs/architecture.md says what
+# each holds.
+HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify model cost \
+               fitting emit tradeoff report scene cli
+
 HOST_SRC := $(filter-out host/cli/main.c,$(shell find host -name '*.c' | LC_ALL=C sort))
 HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/tfit_q31.h host/host.mk
 # -fno-tree-slp-vectorize: GCC 12.2's SLP vectorizer at -O2 drops the
