@@ -38,7 +38,7 @@ check-geometry: $(T)/geometry/mesh_demo
 	@$< $(MESHES)/liver.vtk --spacing 12 --check
 	@$< $(MESHES)/derived/liver_vtk_main.obj --spacing 12 --vtu $(T)/geometry/liver-2.vtu >/dev/null
 	@cmp $(T)/geometry/liver-1.vtu $(T)/geometry/liver-2.vtu && \
-	  echo "two runs on the same liver wrote the same .vtu, byte for byte: ok"
+	  echo "ok: two runs on the same liver wrote the same .vtu, byte for byte"
 
 # $(call geometry_run,LABEL,FILE,SPACING,TRANSFORM)
 geometry_run = $(T)/geometry/mesh_demo $(MESHES)/$(2) --spacing $(3) $(4) --check \
