@@ -57,6 +57,9 @@ $(eval $(call tfit_lib,bitexact-gcc-O0,$(CC),-O0,,check))
 $(eval $(call tfit_lib,bitexact-gcc-O2,$(CC),-O2,,check))
 $(eval $(call tfit_lib,bitexact-gcc-O3-native,$(CC),-O3 -march=native,,check))
 $(eval $(call tfit_lib,bitexact-clang-O2,$(CLANG),-O2,,check))
+# The counter-test: contraction into FMA allowed (after -ffp-contract=off, so
+# it wins); check-bitexact requires this build to mismatch.
+$(eval $(call tfit_lib,bitexact-fma,$(CC),-O2 -mfma -ffp-contract=fast,,check))
 
 # Under the sanitizers, for the host unit tests that call the target.
 $(eval $(call tfit_lib,asan,$(CC),-O1 -g $(SANITIZE),,check))

@@ -17,8 +17,17 @@ DEBS_BENCH += libgsl-dev
 CHECKS += check-lm
 BENCHES += bench-lm
 
-check-lm: $(B)/bin/tissuefit
+# Missing NIST data is a failure, not a skip: both tests are first run
+# against a directory that does not exist and must fail saying so.
+check-lm: $(B)/bin/tissuefit $(T)/unit/numerics/test_lm_nist
 	@echo "== lm-strd command line =="
+	@if NIST_DIR=$(B)/no-nist tests/lm/cli_lm.sh $(B)/bin/tissuefit >$(B)/no-nist.log 2>&1 || \
+	    ! grep -q "no-nist is absent" $(B)/no-nist.log; then \
+	  echo "cli_lm.sh did not fail on a missing NIST directory:"; cat $(B)/no-nist.log; exit 1; fi
+	@if TF_NIST_DIR=$(B)/no-nist $(T)/unit/numerics/test_lm_nist >$(B)/no-nist.log 2>&1 || \
+	    ! grep -q "no-nist is absent" $(B)/no-nist.log; then \
+	  echo "test_lm_nist did not fail on a missing NIST directory:"; cat $(B)/no-nist.log; exit 1; fi
+	@echo "without the NIST files both tests fail: ok"
 	@tests/lm/cli_lm.sh $(B)/bin/tissuefit
 
 $(LM_T)/strd_table: tests/lm/strd_table.c $(B)/native/libtissuefit-host.a | deps-build

@@ -35,6 +35,7 @@ check-solver-calculix: $(B)/bin/tissuefit $(T)/solver/calculix_compare
 	@echo "== block48 against the CalculiX reference =="
 	@tests/solver/compare_selftest.sh $(B)/bin/tissuefit $(T)/solver/calculix_compare
 	@$(T)/solver/calculix_compare
+	@echo "ok: block48 converges to the CalculiX reference under refinement"
 
 bench-solver: $(T)/solver/bench_solver
 	@echo "== solver speed: block48 (GUIDE §7: <= 0.5 s at 11x11x3, <= 30 s at 41x41x9) =="

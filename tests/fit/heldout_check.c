@@ -1,5 +1,5 @@
 /*
- * heldout_check.c — recomputes a shipped header's held-out errors
+ * heldout_check.c — recomputes a fitted header's held-out errors
  * independently of the fitting pipeline: the header is compiled here with
  * the target library and evaluated by tfit_displacements() /
  * tfit_contact_force() (not the host's reference evaluator), at the
