@@ -86,6 +86,18 @@ int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_
                             uint32_t lo, uint32_t extra, double *cv, uint32_t *best, char *err,
                             size_t errlen);
 
+/* tf_family.select of a family searched by degree alone (orders {p}): the
+ * degree p >= lo by cross-validation, then f's fit at p on every training
+ * case into r->model. */
+int tf_family_select_by_degree(const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
+                               tf_family_result *r, char *err, size_t errlen);
+
+/* tf_family.candidates of such a family: its fit at every degree p = lo ..
+ * plan->max_degree whose terms the training cases determine. */
+int tf_family_degree_candidates(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
+                                uint32_t lo, tf_family_take take, void *arg, char *err,
+                                size_t errlen);
+
 /* ---- operations shared by several families ------------------------------ */
 
 /* tf_family.applicable of a family that describes any cases. */

@@ -15,6 +15,8 @@
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
 
+extern const tf_family tf_family_contact;
+
 /* Inverse of a 3x3 row-major matrix; returns its reciprocal condition
  * estimate |det| / (||c||^3) (0 when singular). */
 static double inverse3(const double c[9], double k[9])
@@ -151,29 +153,17 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     return model;
 }
 
-/* p = 1 .. max_degree by cross-validation (p = 0 would be a constant force:
- * no impedance). */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+/* The degree by cross-validation, p >= 1 (p = 0 would be a constant force: no impedance). */
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
+                         size_t errlen)
 {
-    uint32_t p;
-    if (tf_family_select_degree(r->family, c, plan, 1, 0, r->cv, &p, err, errlen) != 0) {
-        return -1;
-    }
-    r->model = fit(c, NULL, 0, &p, err, errlen);
-    return r->model ? 0 : -1;
+    return tf_family_select_by_degree(c, plan, 1, r, err, errlen);
 }
 
 static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
                       char *err, size_t errlen)
 {
-    for (uint32_t p = 1; p <= plan->max_degree; ++p) {
-        tf_model *m = fit(c, NULL, 0, &p, err, errlen);
-        if (m == NULL || take(arg, m) != 0) {
-            return -1;
-        }
-    }
-    return 0;
+    return tf_family_degree_candidates(&tf_family_contact, c, plan, 1, take, arg, err, errlen);
 }
 
 const tf_family tf_family_contact = {

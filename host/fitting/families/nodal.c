@@ -9,6 +9,8 @@
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
 
+extern const tf_family tf_family_nodal;
+
 static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
                      char *err, size_t errlen)
 {
@@ -48,31 +50,17 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     return model;
 }
 
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+/* The degree by cross-validation, p >= 0. */
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
+                         size_t errlen)
 {
-    uint32_t p;
-    if (tf_family_select_degree(r->family, c, plan, 0, 0, r->cv, &p, err, errlen) != 0) {
-        return -1;
-    }
-    r->model = fit(c, NULL, 0, &p, err, errlen);
-    return r->model ? 0 : -1;
+    return tf_family_select_by_degree(c, plan, 0, r, err, errlen);
 }
 
-/* p = 0 .. max_degree, while the cases determine the terms. */
 static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
                       char *err, size_t errlen)
 {
-    for (uint32_t p = 0; p <= plan->max_degree; ++p) {
-        if (tf_terms(p) > c->train.n_cases) {
-            continue;
-        }
-        tf_model *m = fit(c, NULL, 0, &p, err, errlen);
-        if (m == NULL || take(arg, m) != 0) {
-            return -1;
-        }
-    }
-    return 0;
+    return tf_family_degree_candidates(&tf_family_nodal, c, plan, 0, take, arg, err, errlen);
 }
 
 const tf_family tf_family_nodal = {

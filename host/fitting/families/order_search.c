@@ -1,6 +1,7 @@
 /*
- * order_search.c — choosing a family's degree by k-fold cross-validation
- * (common.h), shared by the families that search a degree.
+ * order_search.c — choosing a family's degree by k-fold cross-validation,
+ * and the order search and sweep candidates of the families searched by
+ * degree alone (common.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -56,6 +57,33 @@ int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_
                  "load cases?)",
                  TF_FAMILY_UNDETERMINED, c->train.n_cases);
         return -1;
+    }
+    return 0;
+}
+
+int tf_family_select_by_degree(const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
+                               tf_family_result *r, char *err, size_t errlen)
+{
+    uint32_t p;
+    if (tf_family_select_degree(r->family, c, plan, lo, 0, r->cv, &p, err, errlen) != 0) {
+        return -1;
+    }
+    r->model = r->family->fit(c, NULL, 0, &p, err, errlen);
+    return r->model ? 0 : -1;
+}
+
+int tf_family_degree_candidates(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
+                                uint32_t lo, tf_family_take take, void *arg, char *err,
+                                size_t errlen)
+{
+    for (uint32_t p = lo; p <= plan->max_degree; ++p) {
+        if (tf_terms(p) > c->train.n_cases) {
+            continue;
+        }
+        tf_model *m = f->fit(c, NULL, 0, &p, err, errlen);
+        if (m == NULL || take(arg, m) != 0) {
+            return -1;
+        }
     }
     return 0;
 }

@@ -30,8 +30,7 @@
 
 #include <cmocka.h>
 
-#include "base/context.h"
-#include "scene/scene.h"
+#include "scene_run.h"
 #include "solvers/solver.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
@@ -39,62 +38,19 @@
 
 static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
 
-typedef struct run {
-    tf_ctx ctx;
-    tf_scene *scene;
-    const tf_problem *p;
-    tf_solver *solver;
-    size_t n3; /* 3 N */
-    double *u; /* 3N x cases */
-} run;
+typedef tf_scene_run run;
 
 /* Solver type t on block48 with overrides, threads (0: OpenMP's), and
  * cases forces[n] at contact site 0. */
 static run *solve_with(const tf_solver_ops *t, const char *const *sets, size_t n_sets, int threads,
                        const double (*forces)[3], size_t n)
 {
-    char err[512];
-    run *r = calloc(1, sizeof *r);
-    tf_ctx_init(&r->ctx);
-    r->ctx.level = TF_LOG_ERROR;
-    r->ctx.threads = threads;
-    r->scene = tf_scene_load(BLOCK48, sets, n_sets, err, sizeof err);
-    if (r->scene == NULL) {
-        fail_msg("%s", err);
-    }
-    r->p = &r->scene->problem;
-    r->solver = tf_solver_create_as(t, r->p, NULL, &r->ctx);
-    if (r->solver == NULL) {
-        fail_msg("%s: %s", t->name, r->ctx.err);
-    }
-    r->n3 = 3 * tf_solver_node_count(r->solver);
-    r->u = malloc(r->n3 * n * sizeof *r->u);
-    if (tf_solver_solve(r->solver, 0, forces, n, NULL, r->u) != 0) {
-        fail_msg("%s: %s", t->name, r->ctx.err);
-    }
-    return r;
+    return tf_scene_run_solve(BLOCK48, t, sets, n_sets, threads, forces, n);
 }
 
 static run *solve(const tf_solver_ops *t, const double (*forces)[3], size_t n)
 {
     return solve_with(t, NULL, 0, 0, forces, n);
-}
-
-static void done(run *r)
-{
-    free(r->u);
-    tf_solver_destroy(r->solver);
-    tf_scene_free(r->scene);
-    free(r);
-}
-
-static double max_abs(const double *v, size_t n)
-{
-    double m = 0;
-    for (size_t i = 0; i < n; ++i) {
-        m = fmax(m, fabs(v[i]));
-    }
-    return m;
 }
 
 /* max |a - s b| / max |s b| */
@@ -104,7 +60,7 @@ static double mismatch(const double *a, const double *b, double s, size_t n)
     for (size_t i = 0; i < n; ++i) {
         worst = fmax(worst, fabs(a[i] - s * b[i]));
     }
-    return worst / (fabs(s) * max_abs(b, n));
+    return worst / (fabs(s) * tf_max_abs(b, n));
 }
 
 static int linear(const tf_solver *s)
@@ -118,32 +74,20 @@ static void equilibrium(void **state)
     for (size_t t = 0; t < tf_solver_type_count(); ++t) {
         const tf_solver_ops *type = tf_solver_type_at(t);
         run *r = solve(type, unit_forces, 3);
-        double *react = malloc(r->n3 * sizeof *react);
-        unsigned char *fixed = malloc(r->n3);
-        tf_problem_fixed_dofs(r->p, fixed);
+        double sum[3], resid;
         if (type->reactions == NULL) {
-            assert_int_equal(tf_solver_reactions(r->solver, 0, unit_forces[0], r->u, react), -1);
+            assert_int_equal(tf_scene_run_balance(r, unit_forces[0], r->u, sum, &resid), -1);
             print_message("%s: no reactions (refused, as declared)\n", type->name);
         }
         for (int c = 0; type->reactions != NULL && c < 3; ++c) {
-            double sum[3] = {0, 0, 0}, resid = 0;
             assert_int_equal(
-                tf_solver_reactions(r->solver, 0, unit_forces[c], r->u + c * r->n3, react), 0);
-            for (size_t d = 0; d < r->n3; ++d) {
-                if (fixed[d]) {
-                    sum[d % 3] += react[d];
-                } else {
-                    resid = fmax(resid, fabs(react[d]));
-                }
-            }
+                tf_scene_run_balance(r, unit_forces[c], r->u + c * r->n3, sum, &resid), 0);
             for (int a = 0; a < 3; ++a) {
                 assert_true(fabs(sum[a] + unit_forces[c][a]) < 1e-6);
             }
             assert_true(resid < 1e-9);
         }
-        free(fixed);
-        free(react);
-        done(r);
+        tf_scene_run_free(r);
     }
 }
 
@@ -168,9 +112,9 @@ static void symmetry(void **state)
                 }
             }
         }
-        assert_true(worst < 1e-9 * max_abs(r->u, 3 * r->n3));
+        assert_true(worst < 1e-9 * tf_max_abs(r->u, 3 * r->n3));
         assert_true(uz[3 * 60 + 2] < 0 && ux[3 * 60] > 0); /* node 61 moves with the force */
-        done(r);
+        tf_scene_run_free(r);
     }
 }
 
@@ -193,9 +137,9 @@ static void scaling_with_young_modulus(void **state)
         if (linear(ref->solver)) {
             assert_true(mismatch(e_only->u, ref->u, 1 / k, n) < 1e-12);
         }
-        done(e_only);
-        done(both);
-        done(ref);
+        tf_scene_run_free(e_only);
+        tf_scene_run_free(both);
+        tf_scene_run_free(ref);
     }
 }
 
@@ -208,8 +152,8 @@ static void same_bits_with_one_and_two_threads(void **state)
         run *one = solve_with(type, finer, 2, 1, unit_forces, 3);
         run *two = solve_with(type, finer, 2, 2, unit_forces, 3);
         assert_memory_equal(one->u, two->u, 3 * one->n3 * sizeof *one->u);
-        done(one);
-        done(two);
+        tf_scene_run_free(one);
+        tf_scene_run_free(two);
     }
 }
 
@@ -222,7 +166,7 @@ static void small_load_limit(void **state)
         /* secant compliances u(s f) / s at s = 1e-3 and 1e-4 */
         const double d = mismatch(r->u, r->u + r->n3, 10, r->n3);
         assert_true(d < (linear(r->solver) ? 1e-12 : 1e-3));
-        done(r);
+        tf_scene_run_free(r);
     }
 }
 
@@ -235,13 +179,13 @@ static void capabilities_hold(void **state)
         run *r = solve(type, f, 4);
         const unsigned caps = tf_solver_caps_of(r->solver);
         const double *u0 = r->u, *u1 = r->u + r->n3, *u2 = r->u + 2 * r->n3;
-        const double *u12 = r->u + 3 * r->n3, scale = max_abs(r->u, 4 * r->n3);
+        const double *u12 = r->u + 3 * r->n3, scale = tf_max_abs(r->u, 4 * r->n3);
         assert_true(!(caps & TF_SOLVER_LINEAR) || (caps & TF_SOLVER_AFFINE));
         for (size_t d = 0; (caps & TF_SOLVER_AFFINE) && d < r->n3; ++d) {
             assert_true(fabs(u12[d] - (u1[d] + u2[d] - u0[d])) < 1e-12 * scale);
         }
         if (caps & TF_SOLVER_LINEAR) {
-            assert_true(max_abs(u0, r->n3) <= 1e-14 * scale);
+            assert_true(tf_max_abs(u0, r->n3) <= 1e-14 * scale);
         }
         if (!(caps & TF_SOLVER_TIME_DEPENDENT)) {
             /* a static solver's history is its batch: the same bits when
@@ -258,7 +202,7 @@ static void capabilities_hold(void **state)
         }
         assert_string_equal(tf_solver_name(r->solver), type->name);
         assert_ptr_equal(tf_solver_type_find(type->name), type);
-        done(r);
+        tf_scene_run_free(r);
     }
 }
 
@@ -274,7 +218,7 @@ static void bad_arguments_are_refused(void **state)
         assert_int_equal(tf_solver_reactions(r->solver, 2, unit_forces[0], r->u, r->u), -1);
         assert_int_equal(tf_solver_history(r->solver, 0, unit_forces, 1, 0, r->u), -1);
         assert_non_null(strstr(r->ctx.err, "time step"));
-        done(r);
+        tf_scene_run_free(r);
     }
 }
 

@@ -19,6 +19,7 @@
 
 #include "base/context.h"
 #include "scene/scene.h"
+#include "scene_run.h"
 #include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
 
@@ -26,65 +27,19 @@
 
 static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}; /* fx, fy, fz */
 
-typedef struct run {
-    tf_ctx ctx;
-    tf_scene *scene;
-    const tf_problem *p;
-    tf_solver *solver;
-    double *u; /* 3N x ncases */
-} run;
+typedef tf_scene_run run;
 
-/* A quiet context with the given thread count (0: OpenMP's). */
-static void quiet(tf_ctx *ctx, int threads)
+/* block48 with overrides, the scene's own solver. */
+static run *solve(const char *const *sets, size_t n_sets, const double (*forces)[3],
+                  size_t ncases)
 {
-    tf_ctx_init(ctx);
-    ctx->level = TF_LOG_ERROR;
-    ctx->threads = threads;
+    return tf_scene_run_solve(BLOCK48, NULL, sets, n_sets, 0, forces, ncases);
 }
 
 static run *solve_on(const char *scene, const char *const *sets, size_t n_sets, int threads,
                      const double (*forces)[3], size_t ncases)
 {
-    char err[512];
-    run *r = calloc(1, sizeof *r);
-    quiet(&r->ctx, threads);
-    r->scene = tf_scene_load(scene, sets, n_sets, err, sizeof err);
-    if (r->scene == NULL) {
-        fail_msg("%s", err);
-    }
-    r->p = &r->scene->problem;
-    r->solver = tf_solver_create(r->p, NULL, &r->ctx);
-    if (r->solver == NULL) {
-        fail_msg("%s", r->ctx.err);
-    }
-    r->u = malloc(3 * r->p->cloud.n * ncases * sizeof *r->u);
-    if (tf_solver_solve(r->solver, forces ? 0 : -1, forces, ncases, NULL, r->u) != 0) {
-        fail_msg("%s", r->ctx.err);
-    }
-    return r;
-}
-
-static run *solve(const char *const *sets, size_t n_sets, const double (*forces)[3],
-                  size_t ncases)
-{
-    return solve_on(BLOCK48, sets, n_sets, 0, forces, ncases);
-}
-
-static void done(run *r)
-{
-    free(r->u);
-    tf_solver_destroy(r->solver);
-    tf_scene_free(r->scene);
-    free(r);
-}
-
-static double max_abs(const double *v, size_t n)
-{
-    double m = 0;
-    for (size_t i = 0; i < n; ++i) {
-        m = fmax(m, fabs(v[i]));
-    }
-    return m;
+    return tf_scene_run_solve(scene, NULL, sets, n_sets, threads, forces, ncases);
 }
 
 /* A point force instead of the patch (test_conformance.c has the patch). */
@@ -93,29 +48,16 @@ static void reactions_balance_a_point_force(void **state)
     (void)state;
     const char *point[] = {"contact.0={node: 61}"};
     run *r = solve(point, 1, unit_forces, 3);
-    size_t n3 = 3 * r->p->cloud.n;
-    double *react = malloc(n3 * sizeof *react);
-    unsigned char *fixed = malloc(n3);
-    tf_problem_fixed_dofs(r->p, fixed);
     for (int c = 0; c < 3; ++c) {
-        double sum[3] = {0, 0, 0}, resid = 0;
-        assert_int_equal(tf_solver_reactions(r->solver, 0, unit_forces[c], r->u + c * n3, react),
+        double sum[3], resid;
+        assert_int_equal(tf_scene_run_balance(r, unit_forces[c], r->u + c * r->n3, sum, &resid),
                          0);
-        for (size_t d = 0; d < n3; ++d) {
-            if (fixed[d]) {
-                sum[d % 3] += react[d];
-            } else {
-                resid = fmax(resid, fabs(react[d]));
-            }
-        }
         for (int a = 0; a < 3; ++a) {
             assert_true(fabs(sum[a] + unit_forces[c][a]) < 1e-6);
         }
         assert_true(resid < 1e-10);
     }
-    free(fixed);
-    free(react);
-    done(r);
+    tf_scene_run_free(r);
 }
 
 static double relative_difference(const double *a, const double *b, size_t n)
@@ -124,7 +66,7 @@ static double relative_difference(const double *a, const double *b, size_t n)
     for (size_t d = 0; d < n; ++d) {
         worst = fmax(worst, fabs(a[d] - b[d]));
     }
-    return worst / max_abs(b, n);
+    return worst / tf_max_abs(b, n);
 }
 
 static void penalty_agrees_with_elimination(void **state)
@@ -135,14 +77,14 @@ static void penalty_agrees_with_elimination(void **state)
     const char *seed[] = {"solver.bc=penalty"};
     run *pen = solve(seed, 1, unit_forces, 3);
     assert_true(relative_difference(pen->u, elim->u, n) < 1e-6); /* lambda = 1e7 */
-    done(pen);
+    tf_scene_run_free(pen);
     /* a small lambda does not hold the faces (error about 0.1 / lambda):
      * the check above can fail */
     const char *weak[] = {"solver.bc=penalty", "solver.penalty=10"};
     run *loose = solve(weak, 2, unit_forces, 3);
     assert_true(relative_difference(loose->u, elim->u, n) > 1e-3);
-    done(loose);
-    done(elim);
+    tf_scene_run_free(loose);
+    tf_scene_run_free(elim);
 }
 
 static void many_cases_through_one_factorisation(void **state)
@@ -162,14 +104,14 @@ static void many_cases_through_one_factorisation(void **state)
         for (size_t d = 0; d < n3; ++d) {
             /* linear: the superposition of the unit cases (fz case is -z) */
             double sup = f[0] * units->u[d] + f[1] * units->u[n3 + d] - f[2] * units->u[2 * n3 + d];
-            assert_true(fabs(u[d] - sup) < 1e-12 * max_abs(units->u, 3 * n3));
-            assert_true(fabs(u[d] - one[d]) < 1e-13 * max_abs(units->u, 3 * n3));
+            assert_true(fabs(u[d] - sup) < 1e-12 * tf_max_abs(units->u, 3 * n3));
+            assert_true(fabs(u[d] - one[d]) < 1e-13 * tf_max_abs(units->u, 3 * n3));
         }
     }
     assert_int_equal(tf_solver_info_of(many->solver)->solves, 12);
     free(one);
-    done(many);
-    done(units);
+    tf_scene_run_free(many);
+    tf_scene_run_free(units);
 }
 
 /* The context left at 0 threads takes OpenMP's default: the same bits as
@@ -185,8 +127,8 @@ static void same_bits_with_openmps_default(void **state)
     omp_set_num_threads(saved);
     size_t n = 9 * one->p->cloud.n;
     assert_memory_equal(one->u, dflt->u, n * sizeof *one->u);
-    done(one);
-    done(dflt);
+    tf_scene_run_free(one);
+    tf_scene_run_free(dflt);
 }
 
 /* Compliance at node 61 under 1 N along -z. */
@@ -199,7 +141,7 @@ static double uz61(const char *nu, const char *volumetric, const char *centre)
     const char *sets[] = {a, b, c};
     run *r = solve(sets, 3, unit_forces + 2, 1);
     double uz = -r->u[3 * 60 + 2];
-    done(r);
+    tf_scene_run_free(r);
     return uz;
 }
 
@@ -222,7 +164,7 @@ static void nodes_are_exposed_in_scene_numbering(void **state)
     assert_int_equal(tf_problem_node_number(r->p, 60), 61);
     const double *x = tf_solver_coords(r->solver) + 3 * 60;
     assert_true(x[0] == 24 && x[1] == 24 && x[2] == 6);
-    done(r);
+    tf_scene_run_free(r);
 }
 
 /* block48 has no loads and clamped faces: linear.  The cantilever carries
@@ -241,10 +183,10 @@ static void capabilities_follow_the_problem(void **state)
     assert_null(tf_solver_create(b->p, &o, &b->ctx));
     assert_non_null(strstr(b->ctx.err, "no solver 'fem'"));
     assert_non_null(strstr(b->ctx.err, "rpim-galerkin"));
-    done(b);
+    tf_scene_run_free(b);
     run *c = solve_on("coeffs/cantilever.yaml", NULL, 0, 0, NULL, 1);
     assert_int_equal(tf_solver_caps_of(c->solver), TF_SOLVER_AFFINE);
-    done(c);
+    tf_scene_run_free(c);
 }
 
 int main(void)
