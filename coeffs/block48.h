@@ -8,12 +8,12 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_forward: nodal p=1, 121 output points, force [N] -> displacement [mm]
  *       1103 add, 1122 mul, 0 div per evaluation; 6344 table bytes
- *       5552 instructions; Cortex-M4F <= 7846 cycles (46.70 us at 168 MHz), Cortex-M7 ~5362 (11.17 us at 480 MHz)
+ *       2478 instructions; Cortex-M4F <= 4385 cycles (26.10 us at 168 MHz), Cortex-M7 ~3410 (7.10 us at 480 MHz)
  *       Q31 form tfit_block48_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 3.04e-08 mm (float32 path: 1.68e-07)
  *       held-out error over 50 cases: max 1.16e-07 mm, rms 5.68e-09 mm
  *   tfit_block48_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
- *       241 instructions; Cortex-M4F <= 325 cycles (1.93 us at 168 MHz), Cortex-M7 ~216 (0.45 us at 480 MHz)
+ *       154 instructions; Cortex-M4F <= 208 cycles (1.24 us at 168 MHz), Cortex-M7 ~157 (0.33 us at 480 MHz)
  *       Q31 form tfit_block48_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.04e-08 N (float32 path: 6.65e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 1.12e-08 N
  *
@@ -45,12 +45,12 @@
 #define TFIT_BLOCK48_FORWARD_OPS_DIV 0
 #define TFIT_BLOCK48_FORWARD_OPS 2225
 #define TFIT_BLOCK48_FORWARD_TABLE_BYTES 6344
-#define TFIT_BLOCK48_FORWARD_INSNS_ARMV7EM 5552 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_FORWARD_CYCLES_M4F 7846u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_FORWARD_CYCLES_M4F_MIN 5599u
-#define TFIT_BLOCK48_FORWARD_US_M4F_168MHZ 46.70
-#define TFIT_BLOCK48_FORWARD_CYCLES_M7 5362u /* estimate, +-30 % */
-#define TFIT_BLOCK48_FORWARD_US_M7_480MHZ 11.17
+#define TFIT_BLOCK48_FORWARD_INSNS_ARMV7EM 2478 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_FORWARD_CYCLES_M4F 4385u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_FORWARD_CYCLES_M4F_MIN 4357u
+#define TFIT_BLOCK48_FORWARD_US_M4F_168MHZ 26.10
+#define TFIT_BLOCK48_FORWARD_CYCLES_M7 3410u /* estimate, +-30 % */
+#define TFIT_BLOCK48_FORWARD_US_M7_480MHZ 7.10
 #define TFIT_BLOCK48_FORWARD_Q31_IN_EXP 1 /* input word x = value * 2^(31 - 1), N */
 #define TFIT_BLOCK48_FORWARD_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), mm */
 #define TFIT_BLOCK48_FORWARD_Q31_ADDED_ERROR_MM 3.04358e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 1.68053e-07 */
@@ -75,12 +75,12 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_OPS_DIV 0
 #define TFIT_BLOCK48_CONTACT_OPS 65
 #define TFIT_BLOCK48_CONTACT_TABLE_BYTES 104
-#define TFIT_BLOCK48_CONTACT_INSNS_ARMV7EM 241 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_CONTACT_CYCLES_M4F 325u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_CONTACT_CYCLES_M4F_MIN 261u
-#define TFIT_BLOCK48_CONTACT_US_M4F_168MHZ 1.93
-#define TFIT_BLOCK48_CONTACT_CYCLES_M7 216u /* estimate, +-30 % */
-#define TFIT_BLOCK48_CONTACT_US_M7_480MHZ 0.45
+#define TFIT_BLOCK48_CONTACT_INSNS_ARMV7EM 154 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_CONTACT_CYCLES_M4F 208u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_CONTACT_CYCLES_M4F_MIN 196u
+#define TFIT_BLOCK48_CONTACT_US_M4F_168MHZ 1.24
+#define TFIT_BLOCK48_CONTACT_CYCLES_M7 157u /* estimate, +-30 % */
+#define TFIT_BLOCK48_CONTACT_US_M7_480MHZ 0.33
 #define TFIT_BLOCK48_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CONTACT_Q31_ADDED_ERROR_N 4.0422e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.65254e-08 */
