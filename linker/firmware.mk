@@ -303,3 +303,62 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "servo budget: haptic.h fits 1 kHz on both cores; 20 kHz on the M4F is refused at compile time"
 	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
 
+
+# --- a build that contracts a*b + c (issue 19) --------------------------------
+# GCC's GNU modes (the default -std=gnu11) and -ffp-contract=fast fuse a*b + c
+# into VFMA on the M4F, which changes bits.  The library's sources ask GCC
+# and Clang for no contraction themselves and refuse -ffast-math
+# (tfit_internal.h).  check-contract shows (1) that the unmodified sources
+# built with -std=gnu11 or -ffp-contract=fast contain no fused multiply-add
+# and (2) that -ffast-math stops the build, then (3) that a library whose
+# compiler ignored the pragma (removed here from a copy of the sources) is
+# caught at boot: on mps2-an386 every float model whose golden vectors come
+# out with other bits fails tfit_model_check() with TFIT_ERR_ARITH.  That
+# library is the C path (-DTFIT_PORTABLE): the degree-1 assembly cannot be
+# contracted.
+FW_CONTRACT := $(FW)/contract
+FW_CONTRACT_PRAGMA := \#pragma GCC optimize("fp-contract=off")
+
+$(FW_CONTRACT)/gnu11/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)tests/firmware/contract_lib.sh $@ target/src -std=gnu11
+$(FW_CONTRACT)/fast/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)tests/firmware/contract_lib.sh $@ target/src -std=c11 -ffp-contract=fast
+$(FW_CONTRACT)/unguarded/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)rm -rf $(@D)/src && mkdir -p $(@D)/src && cp target/src/*.c target/src/*.h $(@D)/src/
+	$(Q)grep -qxF '$(FW_CONTRACT_PRAGMA)' $(@D)/src/tfit_internal.h || \
+	  { echo "tfit_internal.h no longer has the line this test removes"; exit 1; }
+	$(Q)grep -vxF '$(FW_CONTRACT_PRAGMA)' target/src/tfit_internal.h >$(@D)/src/tfit_internal.h
+	$(Q)tests/firmware/contract_lib.sh $@ $(@D)/src -std=gnu11 -DTFIT_PORTABLE
+
+define fw_contract_image
+$(FW_CONTRACT)/contract-$(call fw_name,$(1)).elf: tests/firmware/qemu_contract.c $(1) $(FW_STARTUP) \
+    $(FW_SEMIHOST) $(FW_CONTRACT)/unguarded/libtfit.a | deps-check
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -I$(dir $(1)) -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DLABEL='"$(call fw_name,$(1))/mps2-an386, contracted"' $$(filter %.c,$$^) \
+	  $(FW_CONTRACT)/unguarded/libtfit.a $(FW_LDFLAGS) -T mps2-an386.ld -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(eval $(call fw_contract_image,$(h))))
+
+.PHONY: check-contract
+CHECKS += check-contract
+check-contract: $(foreach v,gnu11 fast unguarded,$(FW_CONTRACT)/$(v)/libtfit.a) \
+    $(foreach h,$(FW_HEADERS),$(FW_CONTRACT)/contract-$(call fw_name,$(h)).elf)
+	@echo "== a build that contracts a*b+c: no VFMA from the sources, -ffast-math refused, the boot check catches the rest (M4F, QEMU) =="
+	@set -e; for v in gnu11 fast; do \
+	  n=$$($(ARM)objdump -d $(FW_CONTRACT)/$$v/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
+	  if [ "$$n" != 0 ]; then echo "the $$v build has $$n fused multiply-adds"; exit 1; fi; done; \
+	  echo "-std=gnu11 and -ffp-contract=fast builds of target/src: 0 fused multiply-adds (the sources' pragma)"
+	@if $(ARM)gcc -std=c11 -ffast-math $(M4F_FLAGS) -Itarget/include -fsyntax-only target/src/tfit_nodal.c \
+	    2>$(FW_CONTRACT)/fast-math.err; then echo "-ffast-math was accepted"; exit 1; fi; \
+	  grep -q "tfit: -ffast-math" $(FW_CONTRACT)/fast-math.err && echo "-ffast-math: refused at compile time"
+	@n=$$($(ARM)objdump -d $(FW_CONTRACT)/unguarded/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
+	  if [ "$$n" = 0 ]; then echo "the build without the pragma did not contract: the test shows nothing"; exit 1; fi; \
+	  echo "without the pragma, -std=gnu11 contracts: $$n fused multiply-adds in the library"
+	@set -e; for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	  tests/firmware/qemu_run.sh mps2-an386 $(FW_CONTRACT)/contract-$$h.elf; done

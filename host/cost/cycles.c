@@ -146,14 +146,14 @@ typedef struct block {
 static const block blocks[N_BLOCKS] = {
     /* dims[0] != 1; a model of another family with dims[0] = 1 adds ENTRY_DIMS1 */
     [ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
-                       SAME("alu=12 load=3 ldm=1 stm=1 words=6 branch=2 nbranch=3")},
+                       SAME("alu=12 load=2 ldm=2 stm=1 words=8 branch=2 nbranch=5")},
     [ENTRY_DIMS1] = {"tfit_displacements", 0, 0, SAME("alu=1 nbranch=1")},
     [ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
-                       SAME("alu=5 load=4 stm=1 words=1 branch=1 nbranch=4")},
+                       SAME("alu=5 load=2 ldm=2 stm=1 words=6 branch=1 nbranch=6")},
     [D1_ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
-                          SAME("alu=8 load=3 ldm=1 stm=1 words=6 branch=1 nbranch=4")},
+                          SAME("alu=8 load=2 ldm=2 stm=1 words=8 branch=1 nbranch=6")},
     [D1_ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
-                          SAME("alu=5 load=4 stm=1 words=1 branch=2 nbranch=3")},
+                          SAME("alu=5 load=2 ldm=2 stm=1 words=6 branch=2 nbranch=5")},
     /* (objdump counts one more alu: the nop before its literal pool) */
     [D1_ONE] = {"tfit_degree1_one_asm", 0, 0,
                 SAME("alu=52 load=2 ldm=1 ldm_pc=1 stm=1 words=11 fldm=2 fstm=1 fwords=27 "
@@ -198,7 +198,7 @@ static const block blocks[N_BLOCKS] = {
     [NODAL_P0_SKIP] = {"tfit_eval_nodal", 0, 0, SAME("alu=5")},
     [NODAL_TERM] = {"tfit_eval_nodal", 2, 2, SAME("alu=2 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [MODAL_PATH] = {"tfit_eval_modal", 0, 0,
-                    SAME("alu=26 mul=2 mla=2 load=5 store=1 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 "
+                    SAME("alu=28 mul=3 mla=1 load=6 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 "
                          "branch=1 nbranch=2")},
     [MODAL_AMP] = {"tfit_eval_modal", 1, 1,
                    SAME("alu=6 fload=1 fstm=1 fwords=1 branch=1 nbranch=1")},
@@ -206,7 +206,7 @@ static const block blocks[N_BLOCKS] = {
     [MODAL_AMP_TERM] = {"tfit_eval_modal", 2, 2,
                         SAME("alu=2 fldm=2 fwords=2 fadd=1 fmul=1 branch=1")},
     [MODAL_NODE] = {"tfit_eval_modal", 3, 1,
-                    SAME("alu=17 store=3 fload=3 fmul=3 fmov=3 branch=1 nbranch=1")},
+                    SAME("alu=16 store=3 fload=3 fmul=3 fmov=3 branch=1 nbranch=1")},
     [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
     [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,

@@ -86,8 +86,12 @@ static tfit_status forward_general(const tfit_model *m, const float force[3], fl
 tfit_status tfit_displacements(const tfit_model *m, const float force[3], float *out)
 {
     /* bitwise tests: the degree-1 path falls through every conditional
-     * branch (GCC 12), a taken branch costing the M4 up to 4 cycles */
+     * branch (GCC 12), a taken branch costing the M4 up to 4 cycles.  A
+     * model with NULL tables is an argument error, as in the Q31 API. */
     if ((m == 0) | (force == 0) | (out == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
         return TFIT_ERR_ARG;
     }
     if ((m->dims[0] == 1u) & (m->family == TFIT_FAMILY_NODAL)) {
@@ -99,6 +103,9 @@ tfit_status tfit_displacements(const tfit_model *m, const float force[3], float 
 tfit_status tfit_contact_force(const tfit_model *m, const float disp[3], float force[3])
 {
     if ((m == 0) | (disp == 0) | (force == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
         return TFIT_ERR_ARG;
     }
     if (m->family != TFIT_FAMILY_CONTACT) {

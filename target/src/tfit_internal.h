@@ -13,6 +13,23 @@
 
 #include "tfit.h"
 
+/* Bit-exactness needs a*b + c rounded twice, as written: no contraction into
+ * a fused multiply-add, whatever the caller's flags (GCC's default
+ * -std=gnu11 mode contracts on any FPU with FMA, Cortex-M4F included).  GCC
+ * honours its optimize pragma even under -ffp-contract=fast; Clang and other
+ * C99 compilers honour the standard pragma (GCC does not, and warns).
+ * tfit_model_check() proves the result on the device (TFIT_ERR_ARITH). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#else
+#pragma STDC FP_CONTRACT OFF
+#endif
+/* -ffast-math reassociates and drops NaN and signed-zero handling: no pragma
+ * undoes all of it. */
+#if defined(__FAST_MATH__)
+#error "tfit: -ffast-math changes float results; build the library without it (docs/firmware.md §2)"
+#endif
+
 /* Bit-exactness needs float expressions evaluated in float (no x87 excess
  * precision); see GUIDE §4 and docs/header-format.md.  16 (ISO/IEC TS
  * 18661-3: only _Float16 is widened, to float) is as good as 0 for us. */
