@@ -8,7 +8,11 @@
 #   - a rank that fails (TF_TEST_FAIL_RANK=2, three ranks) and a case that
 #     fails wherever it is solved (TF_TEST_FAIL_FZ) stop the run with exit
 #     1, the case and the rank named, nothing written and an existing
-#     header left as it was.
+#     header left as it was;
+#   - before any case: a rank that cannot build its solver
+#     (TF_TEST_FAIL_CREATE_RANK) stops every rank with exit 1 and its
+#     message; a rank that reads another scene (mpirun's MPMD form) with
+#     exit 2.
 # Extra arguments go to every fit.  MPIRUN may carry mpirun's options.
 set -u
 serial=$1 mpi=$2 scene=$3
@@ -55,6 +59,13 @@ if [ -n "${VARIANT:-}" ]; then
         -x TF_TEST_FAIL_FZ=-0.97 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/x.h"
     says "a failing case" "case [0-9]* (case [0-9]* of [0-9]*, force (.*) N) on rank [01]: Newton"
     [ "$(cat "$tmp/w/kept.h")" = keep ] || bad "the existing header was touched"
+    expect 1 "rank 1 cannot build its solver" -- $mpirun -n 3 --oversubscribe \
+        -x TF_TEST_FAIL_CREATE_RANK=1 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/x.h"
+    says "rank 1's solver" "rank 1: fit: out of memory for the stiffness matrix"
+    { cat "$scene"; echo "# another copy"; } >"$tmp/other.yaml"
+    expect 2 "rank 1 reads another scene" -- $mpirun --oversubscribe -n 1 "$mpi" -q fit \
+        "$scene" "$@" -o "$tmp/w/x.h" : -n 1 "$mpi" -q fit "$tmp/other.yaml" "$@" -o "$tmp/w/x.h"
+    says "another scene" "rank 1 read another scene or other overrides than rank 0"
     rm -f "$tmp/w/kept.h"
     nothing_written "failed runs"
 fi

@@ -13,6 +13,8 @@
  *     TF_TEST_FAIL_FZ=v  fails every case whose force has f_z < v;
  *     TF_TEST_FAIL_RANK=r  fails the third case solved on MPI rank r
  *     (OMPI_COMM_WORLD_RANK), a rank that breaks whatever it is handed;
+ *   - TF_TEST_FAIL_CREATE_RANK=r: the solver cannot be built on rank r (as
+ *     when a node lacks the memory), before any case is handed out;
  *   - TF_TEST_NUDGE_RANK=r moves every value solved on rank r by one ulp:
  *     the check's counter-test, which the header comparison must notice.
  *
@@ -77,6 +79,10 @@ tf_solver *__wrap_tf_solver_create(const tf_problem *p, const tf_solver_opts *o,
     real = tf_solver_type_find((o != NULL ? o : &p->solver)->method);
     if (real == NULL) {
         tf_fail(ctx, "no solver '%s'", (o != NULL ? o : &p->solver)->method);
+        return NULL;
+    }
+    if (env_int("TF_TEST_FAIL_CREATE_RANK", -1) == env_int("OMPI_COMM_WORLD_RANK", 0)) {
+        tf_fail(ctx, "out of memory for the stiffness matrix (injected by the test)");
         return NULL;
     }
     variant = *real;
