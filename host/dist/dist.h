@@ -51,8 +51,9 @@ void tf_dist_sink(void *user, tf_log_level level, const char *msg);
  * rc is this rank's exit status so far (0: ready), fingerprint a checksum of
  * what it read (scene bytes and overrides).  Returns the run's status, the
  * same on every rank: the worst rc, or 2 when a rank read something else
- * than rank 0.  Rank 0 reports what went wrong on the others (a failure it
- * did not share, a different scene). */
+ * than rank 0 or runs other OpenBLAS kernels (base/blas_pin.h), either of
+ * which would change its cases' bits.  Rank 0 reports what went wrong on
+ * the others (a failure it did not share, a different scene or kernel). */
 int tf_dist_agree(tf_dist *d, tf_ctx *ctx, int rc, uint32_t fingerprint);
 
 /* Rank 0: the runner that spreads case lists over the ranks (with one rank:

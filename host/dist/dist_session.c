@@ -7,6 +7,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "base/blas_pin.h"
 #include "base/log.h"
 #include "dist/dist_internal.h"
 
@@ -67,47 +68,77 @@ void dist_recv(void *buf, int count, MPI_Datatype type, int source, int tag, MPI
     }
 }
 
-/* Rank 0's report of the ranks that failed where it did not, or read
- * another scene. */
-static void report(tf_ctx *ctx, const int *rc, const uint32_t *print, const char *msgs, int size)
+#define CORE_MAX 32 /* an OpenBLAS kernel family's name */
+
+/* What every rank said before any case: its status, the checksum of what
+ * it read, its OpenBLAS kernels, its last error (rank 0 only). */
+typedef struct ranks_said {
+    int *rc;
+    uint32_t *print;
+    char *core, *msgs;
+} ranks_said;
+
+/* 0, or 2 when a rank read another scene or runs other BLAS kernels than
+ * rank 0: its cases would give other bits. */
+static int same_inputs(const ranks_said *a, int size)
 {
     for (int r = 1; r < size; ++r) {
-        if (print[r] != print[0] && rc[r] == 0) {
+        if (a->print[r] != a->print[0] ||
+            strcmp(a->core + (size_t)r * CORE_MAX, a->core) != 0) {
+            return 2;
+        }
+    }
+    return 0;
+}
+
+/* Rank 0's report of what went wrong elsewhere. */
+static void report(tf_ctx *ctx, const ranks_said *a, int size)
+{
+    for (int r = 1; r < size; ++r) {
+        const char *core = a->core + (size_t)r * CORE_MAX;
+        if (a->rc[r] != 0) {
+            tf_error(ctx, "rank %d: %s", r, a->msgs + (size_t)r * TF_CTX_ERR_MAX);
+        } else if (a->print[r] != a->print[0]) {
             tf_error(ctx, "rank %d read another scene or other overrides than rank 0 (checksum "
                      "%08x, rank 0: %08x): every rank must read the same files",
-                     r, (unsigned)print[r], (unsigned)print[0]);
-        } else if (rc[r] != 0) {
-            tf_error(ctx, "rank %d: %s", r, msgs + (size_t)r * TF_CTX_ERR_MAX);
+                     r, (unsigned)a->print[r], (unsigned)a->print[0]);
+        } else if (strcmp(core, a->core) != 0) {
+            tf_error(ctx, "rank %d uses OpenBLAS's %s kernels, rank 0 %s: its cases would differ "
+                     "in the last bits (run every rank on CPUs with the same kernel family, "
+                     "blas_pin.h)",
+                     r, core, a->core);
         }
     }
 }
 
 int tf_dist_agree(tf_dist *d, tf_ctx *ctx, int rc, uint32_t fingerprint)
 {
-    int *all_rc = calloc((size_t)d->size, sizeof *all_rc);
-    uint32_t *print = calloc((size_t)d->size, sizeof *print);
-    char *msgs = d->rank == 0 ? calloc((size_t)d->size, TF_CTX_ERR_MAX) : NULL;
-    if (all_rc == NULL || print == NULL || (d->rank == 0 && msgs == NULL)) {
+    const size_t n = (size_t)d->size;
+    char core[CORE_MAX] = "";
+    ranks_said a = {calloc(n, sizeof *a.rc), calloc(n, sizeof *a.print), calloc(n, CORE_MAX),
+                    d->rank == 0 ? calloc(n, TF_CTX_ERR_MAX) : NULL};
+    if (!a.rc || !a.print || !a.core || (d->rank == 0 && !a.msgs)) {
         fprintf(stderr, "tissuefit: error: rank %d: out of memory\n", d->rank);
         MPI_Abort(MPI_COMM_WORLD, 1);
     }
-    MPI_Allgather(&rc, 1, MPI_INT, all_rc, 1, MPI_INT, MPI_COMM_WORLD);
-    MPI_Allgather(&fingerprint, 1, MPI_UINT32_T, print, 1, MPI_UINT32_T, MPI_COMM_WORLD);
-    MPI_Gather(d->last_error, TF_CTX_ERR_MAX, MPI_CHAR, msgs, TF_CTX_ERR_MAX, MPI_CHAR, 0,
+    snprintf(core, sizeof core, "%s", tf_blas_coretype());
+    MPI_Allgather(&rc, 1, MPI_INT, a.rc, 1, MPI_INT, MPI_COMM_WORLD);
+    MPI_Allgather(&fingerprint, 1, MPI_UINT32_T, a.print, 1, MPI_UINT32_T, MPI_COMM_WORLD);
+    MPI_Allgather(core, CORE_MAX, MPI_CHAR, a.core, CORE_MAX, MPI_CHAR, MPI_COMM_WORLD);
+    MPI_Gather(d->last_error, TF_CTX_ERR_MAX, MPI_CHAR, a.msgs, TF_CTX_ERR_MAX, MPI_CHAR, 0,
                MPI_COMM_WORLD);
     int worst = 0;
-    for (int r = 0; r < d->size; ++r) {
-        worst = all_rc[r] > worst ? all_rc[r] : worst;
+    for (size_t r = 0; r < n; ++r) {
+        worst = a.rc[r] > worst ? a.rc[r] : worst;
     }
-    for (int r = 1; worst == 0 && r < d->size; ++r) {
-        worst = print[r] != print[0] ? 2 : 0;
+    worst = worst != 0 ? worst : same_inputs(&a, d->size);
+    if (d->rank == 0 && a.rc[0] == 0) {
+        report(ctx, &a, d->size);
     }
-    if (d->rank == 0 && all_rc[0] == 0) {
-        report(ctx, all_rc, print, msgs, d->size);
-    }
-    free(all_rc);
-    free(print);
-    free(msgs);
+    free(a.rc);
+    free(a.print);
+    free(a.core);
+    free(a.msgs);
     return worst;
 }
 

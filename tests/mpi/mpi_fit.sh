@@ -11,8 +11,8 @@
 #     header left as it was;
 #   - before any case: a rank that cannot build its solver
 #     (TF_TEST_FAIL_CREATE_RANK) stops every rank with exit 1 and its
-#     message; a rank that reads another scene (mpirun's MPMD form) with
-#     exit 2.
+#     message; a rank that reads another scene (mpirun's MPMD form), or
+#     runs other OpenBLAS kernels, with exit 2.
 # Extra arguments go to every fit.  MPIRUN may carry mpirun's options.
 set -u
 serial=$1 mpi=$2 scene=$3
@@ -66,6 +66,10 @@ if [ -n "${VARIANT:-}" ]; then
     expect 2 "rank 1 reads another scene" -- $mpirun --oversubscribe -n 1 "$mpi" -q fit \
         "$scene" "$@" -o "$tmp/w/x.h" : -n 1 "$mpi" -q fit "$tmp/other.yaml" "$@" -o "$tmp/w/x.h"
     says "another scene" "rank 1 read another scene or other overrides than rank 0"
+    expect 2 "rank 1 runs other BLAS kernels" -- $mpirun --oversubscribe -n 1 "$mpi" -q fit \
+        "$scene" "$@" -o "$tmp/w/x.h" : -n 1 env OPENBLAS_CORETYPE=Nehalem \
+        TISSUEFIT_BLAS_PINNED=1 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/x.h"
+    says "other kernels" "rank 1 uses OpenBLAS.s Nehalem kernels, rank 0 "
     rm -f "$tmp/w/kept.h"
     nothing_written "failed runs"
 fi
