@@ -45,7 +45,8 @@ enum dist_flag {
 typedef struct dist_msg {
     int64_t index;   /* case in the list; JOB: n_keep */
     double force[3]; /* CASE */
-    double seconds;  /* DONE: the solve's wall time */
+    double seconds;  /* DONE: the solve's wall time ... */
+    double cpu;      /* ... and its thread's CPU time */
     int32_t contact; /* JOB */
     int32_t flags;
 } dist_msg;
@@ -59,6 +60,9 @@ struct tf_dist {
 /* Receives like MPI_Recv, polling with sleeps that grow from 50 us to 2 ms
  * while nothing comes (a waiting rank must not take a core). */
 void dist_recv(void *buf, int count, MPI_Datatype type, int source, int tag, MPI_Status *st);
+
+/* The calling thread's CPU time, s. */
+double dist_cpu_seconds(void);
 
 /* One case list spread over the ranks (dist_runner.c). */
 int dist_run(const tf_case_runner *r, tf_solver *s, const tf_case_list *l, double *kept);

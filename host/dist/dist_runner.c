@@ -27,7 +27,7 @@ typedef struct local {
     const double *start;
     double *out;
     int rc;
-    double seconds;
+    double seconds, cpu;
 } local;
 
 typedef struct sched {
@@ -41,7 +41,8 @@ typedef struct sched {
     double *full;     /* rank 0's solution of a case no other starts from */
     long *busy;       /* per rank: the case it solves, or -1 */
     size_t *cases;    /* per rank: cases solved */
-    double *seconds;  /* per rank: time solving them */
+    double *seconds;  /* per rank: wall time solving them ... */
+    double *cpu;      /* ... and CPU time of the solving thread */
     int failed, failed_rank;
     size_t failed_case;
     char why[TF_CTX_ERR_MAX];
@@ -60,12 +61,13 @@ static void *local_main(void *arg)
             break;
         }
         pthread_mutex_unlock(&w->mu);
-        double t0 = omp_get_wtime();
+        double t0 = omp_get_wtime(), c0 = dist_cpu_seconds();
         int rc = tf_case_solve_one(w->s, w->l, w->index, w->start, w->out);
-        double dt = omp_get_wtime() - t0;
+        double dt = omp_get_wtime() - t0, dc = dist_cpu_seconds() - c0;
         pthread_mutex_lock(&w->mu);
         w->rc = rc;
         w->seconds = dt;
+        w->cpu = dc;
         w->state = L_DONE;
     }
     pthread_mutex_unlock(&w->mu);
@@ -132,11 +134,12 @@ static void hand_to_local(sched *sc, size_t i)
     pthread_mutex_unlock(&sc->me.mu);
 }
 
-static void finished(sched *sc, int r, size_t i, double seconds, int ok)
+static void finished(sched *sc, int r, size_t i, const double time[2], int ok)
 {
     sc->busy[r] = -1;
     --sc->in_flight;
-    sc->seconds[r] += seconds;
+    sc->seconds[r] += time[0];
+    sc->cpu[r] += time[1];
     if (ok) {
         sc->state[i] = SOLVED;
         ++sc->solved;
@@ -178,7 +181,7 @@ static int poll_workers(sched *sc)
                 memcpy(sc->why, why, sizeof why);
             }
         }
-        finished(sc, r, i, m.seconds, (m.flags & DIST_OK) != 0);
+        finished(sc, r, i, (const double[2]){m.seconds, m.cpu}, (m.flags & DIST_OK) != 0);
         ++got;
     }
     return got;
@@ -202,7 +205,7 @@ static int poll_local(sched *sc)
     } else if (!sc->failed) {
         snprintf(sc->why, sizeof sc->why, "%s", sc->s->ctx->err);
     }
-    finished(sc, 0, i, sc->me.seconds, sc->me.rc == 0);
+    finished(sc, 0, i, (const double[2]){sc->me.seconds, sc->me.cpu}, sc->me.rc == 0);
     return 1;
 }
 
@@ -261,8 +264,8 @@ static void summary(const sched *sc, double wall)
     int k = snprintf(line, sizeof line, "dist: %zu cases on %d ranks in %.2f s (", sc->solved,
                      sc->d->size, wall);
     for (int r = 0; r < sc->d->size && k > 0 && (size_t)k < sizeof line; ++r) {
-        k += snprintf(line + k, sizeof line - (size_t)k, "%srank %d: %zu in %.2f s", r ? ", " : "",
-                      r, sc->cases[r], sc->seconds[r]);
+        k += snprintf(line + k, sizeof line - (size_t)k, "%srank %d: %zu in %.2f s (%.2f s CPU)",
+                      r ? ", " : "", r, sc->cases[r], sc->seconds[r], sc->cpu[r]);
     }
     tf_info(sc->s->ctx, "%s)", line);
 }
@@ -279,6 +282,7 @@ static void sched_free(sched *sc)
     free(sc->busy);
     free(sc->cases);
     free(sc->seconds);
+    free(sc->cpu);
 }
 
 int dist_run(const tf_case_runner *r, tf_solver *s, const tf_case_list *l, double *kept)
@@ -296,9 +300,10 @@ int dist_run(const tf_case_runner *r, tf_solver *s, const tf_case_list *l, doubl
     sc.busy = malloc(size * sizeof *sc.busy);
     sc.cases = calloc(size, sizeof *sc.cases);
     sc.seconds = calloc(size, sizeof *sc.seconds);
+    sc.cpu = calloc(size, sizeof *sc.cpu);
     sc.me = (local){.state = L_IDLE, .s = s, .l = l};
     if (!sc.is_start || !sc.state || !sc.field || !sc.full || !sc.busy || !sc.cases ||
-        !sc.seconds || pthread_mutex_init(&sc.me.mu, NULL) != 0 ||
+        !sc.seconds || !sc.cpu || pthread_mutex_init(&sc.me.mu, NULL) != 0 ||
         pthread_cond_init(&sc.me.cv, NULL) != 0) {
         sched_free(&sc);
         return tf_fail(s->ctx, "out of memory to spread %zu load cases", l->n);

@@ -63,10 +63,11 @@ static void solve_case(tf_solver *s, job *j, const dist_msg *m)
     const tf_case_list one = {.contact = j->contact, .n = 1, .force = force,
                               .n_keep = j->n_keep, .keep = j->keep};
     dist_msg done = {.index = m->index};
-    double t0 = omp_get_wtime();
+    double t0 = omp_get_wtime(), c0 = dist_cpu_seconds();
     s->ctx->err[0] = '\0';
     int rc = tf_case_solve_one(s, &one, 0, (m->flags & DIST_HAS_START) ? j->start : NULL, j->full);
     done.seconds = omp_get_wtime() - t0;
+    done.cpu = dist_cpu_seconds() - c0;
     if (rc != 0) {
         MPI_Send(&done, sizeof done, MPI_BYTE, 0, DIST_DONE, MPI_COMM_WORLD);
         MPI_Send(s->ctx->err, TF_CTX_ERR_MAX, MPI_CHAR, 0, DIST_ERROR, MPI_COMM_WORLD);

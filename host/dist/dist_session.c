@@ -52,6 +52,13 @@ void tf_dist_sink(void *user, tf_log_level level, const char *msg)
 
 const tf_case_runner *tf_dist_runner(tf_dist *d) { return &d->runner; }
 
+double dist_cpu_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 void dist_recv(void *buf, int count, MPI_Datatype type, int source, int tag, MPI_Status *st)
 {
     MPI_Request req;
