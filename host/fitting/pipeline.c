@@ -12,6 +12,7 @@
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "base/log.h"
+#include "model/passivity.h"
 #include "model/ref_eval.h"
 
 static double seconds(void)
@@ -98,6 +99,11 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
         return -1;
     }
     heldout(r, &o->cases.heldout);
+    /* a contact law that creates energy somewhere in its envelope would make
+     * the haptic loop unstable: refused, never emitted (passivity.h) */
+    if (inverse && tf_passivity_require(r->model, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     if (!inverse && seed_table(r, &o->cases, ctx) != 0) {
         return -1;
     }
