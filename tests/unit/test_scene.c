@@ -175,7 +175,7 @@ static void each_bad_scene_has_its_own_message(void **state)
                  (const char *[]){"t.yaml:9:", "fixed.0", "exactly one of face, plane or box", NULL});
     expect_error(9, "  - plane: {axis: x, at: 3}\n",
                  (const char *[]){"t.yaml:9:", "fixed.0", "holds no node", NULL});
-    expect_error(8, "fixed: []\n", (const char *[]){"t.yaml:", "fixed", "few", NULL});
+    expect_span(8, 2, "fixed: []\n", (const char *[]){"t.yaml:", "fixed", "few", NULL});
     expect_error(11, "  - node: 99\n", (const char *[]){"t.yaml:11:", "contact.0.node", "1 to 50", NULL});
     expect_error(14, "  face: q\n", (const char *[]){"t.yaml:14:", "outputs.face", NULL});
     expect_span(13, 2, "  select: box\n  box: {min: [20, 20, 20], max: [30, 30, 30]}\n",
