@@ -30,7 +30,10 @@ check-coeffs: $(B)/bin/tissuefit
 	      if ! cmp -s $(B)/coeffs/t$$t/$$f coeffs/$$f; then \
 	        echo "coeffs/$$f differs from its regeneration with $$t thread(s): run make coeffs"; \
 	        diff $(B)/coeffs/t$$t/$$f coeffs/$$f | head -5; exit 1; fi; done; done; \
-	  echo "$$h: identical to its regeneration with 1 and 2 threads"; done
+	  echo "$$h: identical to its regeneration with 1 and 2 threads"; \
+	  printf '#include "%s_golden.h"\n' $$n | $(CC) $(HOST_STRICT) -Itarget/include -Icoeffs \
+	    -fsyntax-only -x c - || { echo "coeffs/$${n}_golden.h does not pair with $$h"; exit 1; }; \
+	  echo "$${n}_golden.h: its CRC is the one $$h names (the pair is from one run)"; done
 
 # The held-out check, one binary per shipped header.
 $(T)/heldout-%: tests/fit/heldout_check.c coeffs/%.h $(B)/native/libtissuefit-host.a \

@@ -4,16 +4,140 @@
 #include "base/atomic_file.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* Open temporaries, for the signal handler.  This is process-wide state on
+ * purpose: a signal handler can reach nothing else.  A slot is live from
+ * the temporary's creation until it is renamed or removed. */
+#define SLOTS 16
+static char pending[SLOTS][sizeof ((tf_afile *)0)->tmp];
+static volatile sig_atomic_t live[SLOTS];
+
+static void on_signal(int sig)
+{
+    for (int k = 0; k < SLOTS; ++k) {
+        if (live[k]) {
+            unlink(pending[k]);
+        }
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+void tf_afile_cleanup_on_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; ++k) {
+        struct sigaction old, sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        /* a signal the caller ignores (nohup) stays ignored */
+        if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler != SIG_IGN) {
+            sigaction(sigs[k], &sa, NULL);
+        }
+    }
+}
+
+static void remember(tf_afile *a)
+{
+    a->slot = -1;
+    for (int k = 0; k < SLOTS; ++k) {
+        if (!live[k]) {
+            memcpy(pending[k], a->tmp, sizeof pending[k]);
+            live[k] = 1;
+            a->slot = k;
+            return;
+        }
+    }
+}
+
+static void forget(tf_afile *a)
+{
+    if (a->slot >= 0) {
+        live[a->slot] = 0;
+        a->slot = -1;
+    }
+}
+
+/* The directory part of path ("." when there is none). */
+static void dir_of(const char *path, char *dir, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    if (slash == NULL) {
+        snprintf(dir, n, ".");
+    } else if (slash == path) {
+        snprintf(dir, n, "/");
+    } else {
+        snprintf(dir, n, "%.*s", (int)(slash - path), path);
+    }
+}
+
+int tf_afile_target(const char *path, char *dst, size_t dstlen, char *err, size_t errlen)
+{
+    struct stat st;
+    size_t len = strlen(path);
+    if (len == 0 || path[len - 1] == '/') {
+        snprintf(err, errlen, "'%s' is not a file name", path);
+        return -1;
+    }
+    if (snprintf(dst, dstlen, "%s", path) >= (int)dstlen) {
+        snprintf(err, errlen, "%s: path too long", path);
+        return -1;
+    }
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        char *real = realpath(path, NULL); /* written through, as cp does */
+        if (real == NULL) {
+            snprintf(err, errlen, "%s: a symbolic link to nothing (%s): not writing through it",
+                     path, strerror(errno));
+            return -1;
+        }
+        int fits = snprintf(dst, dstlen, "%s", real) < (int)dstlen;
+        free(real);
+        if (!fits) {
+            snprintf(err, errlen, "%s: path too long", path);
+            return -1;
+        }
+    }
+    if (stat(dst, &st) == 0 && !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: exists and is not a regular file (%s): not replacing it",
+                 path, S_ISDIR(st.st_mode) ? "a directory" : "a device, FIFO or socket");
+        return -1;
+    }
+    char dir[sizeof ((tf_afile *)0)->dst];
+    dir_of(dst, dir, sizeof dir);
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: no directory %s", path, dir);
+        return -1;
+    }
+    if (access(dir, W_OK | X_OK) != 0) {
+        snprintf(err, errlen, "%s: cannot write in %s: %s", path, dir, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int tf_afile_check(const char *path, char *err, size_t errlen)
+{
+    char dst[sizeof ((tf_afile *)0)->dst];
+    return tf_afile_target(path, dst, sizeof dst, err, errlen);
+}
+
 int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
 {
     a->fp = NULL;
-    if (snprintf(a->dst, sizeof a->dst, "%s", path) >= (int)sizeof a->dst ||
-        snprintf(a->tmp, sizeof a->tmp, "%s.tmp.XXXXXX", path) >= (int)sizeof a->tmp) {
+    a->slot = -1;
+    a->tmp[0] = '\0';
+    if (tf_afile_target(path, a->dst, sizeof a->dst, err, errlen) != 0) {
+        return -1;
+    }
+    if (snprintf(a->tmp, sizeof a->tmp, "%s.tmp.XXXXXX", a->dst) >= (int)sizeof a->tmp) {
         snprintf(err, errlen, "%s: path too long", path);
         return -1;
     }
@@ -22,20 +146,71 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: cannot create a temporary file: %s", path, strerror(errno));
         return -1;
     }
+    remember(a);
     /* mkstemp creates 0600; give the result the mode a plain fopen would. */
     mode_t mask = umask(0);
     umask(mask);
-    if (fchmod(fd, 0666 & ~mask) != 0) {
+    if (fchmod(fd, 0666 & ~mask) != 0 || (a->fp = fdopen(fd, "w")) == NULL) {
         snprintf(err, errlen, "%s: %s", a->tmp, strerror(errno));
         close(fd);
         unlink(a->tmp);
+        forget(a);
         return -1;
     }
-    a->fp = fdopen(fd, "w");
-    if (a->fp == NULL) {
-        snprintf(err, errlen, "%s: %s", a->tmp, strerror(errno));
+    return 0;
+}
+
+/* Writes out, syncs and closes the temporary; errno-style code or 0. */
+static int settle(tf_afile *a)
+{
+    int failed = ferror(a->fp) || fflush(a->fp) != 0 || fsync(fileno(a->fp)) != 0;
+    int saved = failed ? (errno ? errno : EIO) : 0;
+    if (fclose(a->fp) != 0 && !failed) {
+        saved = errno ? errno : EIO;
+    }
+    a->fp = NULL;
+    return saved;
+}
+
+static void sync_dir(const char *dst)
+{
+    char dir[sizeof ((tf_afile *)0)->dst];
+    dir_of(dst, dir, sizeof dir);
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        fsync(fd); /* best effort: the renames are durable once this returns */
         close(fd);
-        unlink(a->tmp);
+    }
+}
+
+int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errlen)
+{
+    int code = 0;
+    size_t bad = 0;
+    for (size_t k = 0; k < n; ++k) {
+        int c = settle(files[k]);
+        if (c != 0 && code == 0) {
+            code = c;
+            bad = k;
+        }
+    }
+    for (size_t k = 0; k < n && code == 0; ++k) {
+        if (rename(files[k]->tmp, files[k]->dst) != 0) {
+            code = errno;
+            bad = k;
+            break;
+        }
+        forget(files[k]);
+        sync_dir(files[k]->dst);
+    }
+    if (code != 0) {
+        snprintf(err, errlen, "%s: write failed: %s", files[bad]->dst, strerror(code));
+        for (size_t k = 0; k < n; ++k) {
+            if (files[k]->slot >= 0) {
+                unlink(files[k]->tmp);
+                forget(files[k]);
+            }
+        }
         return -1;
     }
     return 0;
@@ -43,23 +218,8 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
 
 int tf_afile_commit(tf_afile *a, char *err, size_t errlen)
 {
-    int failed = ferror(a->fp) || fflush(a->fp) != 0 || fsync(fileno(a->fp)) != 0;
-    int saved = errno;
-    if (fclose(a->fp) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    a->fp = NULL;
-    if (!failed && rename(a->tmp, a->dst) != 0) {
-        failed = 1;
-        saved = errno;
-    }
-    if (failed) {
-        snprintf(err, errlen, "%s: write failed: %s", a->dst, strerror(saved));
-        unlink(a->tmp);
-        return -1;
-    }
-    return 0;
+    tf_afile *one[1] = {a};
+    return tf_afile_commit_all(one, 1, err, errlen);
 }
 
 void tf_afile_abort(tf_afile *a)
@@ -68,5 +228,8 @@ void tf_afile_abort(tf_afile *a)
         fclose(a->fp);
         a->fp = NULL;
     }
-    unlink(a->tmp);
+    if (a->tmp[0] != '\0') {
+        unlink(a->tmp);
+    }
+    forget(a);
 }

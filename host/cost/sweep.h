@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "fitting/pipeline.h"
 #include "model/model.h"
@@ -63,6 +64,9 @@ const char *tf_output_set_name(tf_output_set s);
 /* CSV, Markdown table and log-log PNG (error against native time, with the
  * seed's own point).  Each returns 0, or -1 with a message. */
 int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen);
+/* The same table written to an open stream (standard output); 0, or -1
+ * when a write failed. */
+int tf_sweep_csv_write(const tf_sweep *sw, FILE *fp);
 int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
                       size_t errlen);
 int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen);
