@@ -2,9 +2,11 @@
  * main.c — the `tissuefit` entry point: global options, the run's context
  * (base/context.h) and dispatch to the command table (cli.h).
  */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "base/atomic_file.h"
 #include "base/blas_pin.h"
 #include "cli/cli.h"
 #include "base/log.h"
@@ -54,12 +56,26 @@ int tf_wants_help(int argc, char **argv)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* Standard output written in full, or a failure: a command whose table went
+ * to a full disk (>/dev/full) must not exit 0.  Every command's output
+ * passes here, so none can forget the final flush and close. */
+static int finish(tf_ctx *ctx, int rc)
 {
-    tf_blas_pin(argv);
-    tf_ctx run;
-    tf_ctx *ctx = &run;
-    tf_ctx_init(ctx);
+    int bad = fflush(stdout) != 0 || ferror(stdout);
+    int saved = errno;
+    if (fclose(stdout) != 0 && !bad) {
+        bad = 1;
+        saved = errno;
+    }
+    if (bad) {
+        tf_error(ctx, "cannot write standard output: %s", strerror(saved));
+        return rc == TF_EXIT_OK ? TF_EXIT_FAIL : rc;
+    }
+    return rc;
+}
+
+static int dispatch(tf_ctx *ctx, int argc, char **argv)
+{
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; ++i) {
         if (strcmp(argv[i], "-q") == 0 || strcmp(argv[i], "--quiet") == 0) {
@@ -107,4 +123,13 @@ int main(int argc, char **argv)
     }
     tf_error(ctx, "no command '%s' (try 'tissuefit --help')", name);
     return TF_EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    tf_blas_pin(argv);
+    tf_ctx run;
+    tf_ctx_init(&run);
+    tf_afile_cleanup_on_signals();
+    return finish(&run, dispatch(&run, argc, argv));
 }
