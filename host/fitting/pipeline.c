@@ -166,6 +166,9 @@ static int fit_modal(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size
     if (rmax > fold_cases) {
         rmax = (uint32_t)fold_cases;
     }
+    if (rmax > 3 * d->n_out) { /* no more modes than output components (3 outputs: 9) */
+        rmax = 3 * (uint32_t)d->n_out;
+    }
     uint32_t p;
     if (select_degree(d, tf_fit_modal, plan, 0, rmax, f->cv, &p, err, errlen) != 0) {
         return -1;
