@@ -12,13 +12,17 @@
 #   (the fuzz targets: tests/fuzz.mk; unit tests: test_scene_hostile.c,
 #   test_neighbours.c, test_emit.c)
 
-.PHONY: check-outputs
-CHECKS += check-outputs
+.PHONY: check-hostile check-outputs
+CHECKS += check-hostile check-outputs
 
 $(T)/rename_fault.so: tests/cli/rename_fault.c | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(STRICT) -shared -fPIC $< -o $@
+
+check-hostile: $(B)/bin/tissuefit
+	@echo "== hostile scenes and command lines =="
+	@tests/cli/hostile.sh $(B)/bin/tissuefit
 
 check-outputs: $(B)/bin/tissuefit $(B)/native/libtfit.a $(T)/rename_fault.so
 	@echo "== outputs that belong together: header and golden file =="
