@@ -52,7 +52,7 @@ if ! $(FZ)/fuzz_$(1) $(3) -dict=tests/fuzz/$(1).dict -max_total_time=$(2) \
   echo "fuzz_$(1): FINDING (input in $(FZ)/artifacts/, log $(FZ)/$(1).log)"; exit 1; fi; \
 runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $(FZ)/$(1).log); \
 cov=$$(grep -o 'cov: [0-9]*' $(FZ)/$(1).log | tail -1); \
-echo "fuzz_$(1): $(2) s, $$runs inputs, $$cov, $$(ls $(3) | wc -l) in the corpus: no finding"
+echo "ok: fuzz_$(1): $(2) s, $$runs inputs, $$cov, $$(ls $(3) | wc -l) in the corpus, no finding"
 endef
 
 .PHONY: check-fuzz fuzz

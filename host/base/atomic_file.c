@@ -12,60 +12,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* Open temporaries, for the signal handler.  This is process-wide state on
- * purpose: a signal handler can reach nothing else.  A slot is live from
- * the temporary's creation until it is renamed or removed. */
-#define SLOTS 16
-static char pending[SLOTS][sizeof ((tf_afile *)0)->tmp];
-static volatile sig_atomic_t live[SLOTS];
-
-static void on_signal(int sig)
-{
-    for (int k = 0; k < SLOTS; ++k) {
-        if (live[k]) {
-            unlink(pending[k]);
-        }
-    }
-    signal(sig, SIG_DFL);
-    raise(sig);
-}
-
-void tf_afile_cleanup_on_signals(void)
-{
-    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-    for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; ++k) {
-        struct sigaction old, sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = on_signal;
-        sigemptyset(&sa.sa_mask);
-        /* a signal the caller ignores (nohup) stays ignored */
-        if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler != SIG_IGN) {
-            sigaction(sigs[k], &sa, NULL);
-        }
-    }
-}
-
-static void remember(tf_afile *a)
-{
-    a->slot = -1;
-    for (int k = 0; k < SLOTS; ++k) {
-        if (!live[k]) {
-            memcpy(pending[k], a->tmp, sizeof pending[k]);
-            live[k] = 1;
-            a->slot = k;
-            return;
-        }
-    }
-}
-
-static void forget(tf_afile *a)
-{
-    if (a->slot >= 0) {
-        live[a->slot] = 0;
-        a->slot = -1;
-    }
-}
-
 /* The directory part of path ("." when there is none). */
 static void dir_of(const char *path, char *dir, size_t n)
 {
@@ -132,7 +78,6 @@ int tf_afile_check(const char *path, char *err, size_t errlen)
 int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
 {
     a->fp = NULL;
-    a->slot = -1;
     a->tmp[0] = '\0';
     if (tf_afile_target(path, a->dst, sizeof a->dst, err, errlen) != 0) {
         return -1;
@@ -144,9 +89,9 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
         snprintf(err, errlen, "%s: cannot create a temporary file: %s", path, strerror(errno));
+        a->tmp[0] = '\0';
         return -1;
     }
-    remember(a);
     /* mkstemp creates 0600; give the result the mode a plain fopen would. */
     mode_t mask = umask(0);
     umask(mask);
@@ -154,7 +99,7 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: %s", a->tmp, strerror(errno));
         close(fd);
         unlink(a->tmp);
-        forget(a);
+        a->tmp[0] = '\0';
         return -1;
     }
     return 0;
@@ -183,6 +128,34 @@ static void sync_dir(const char *dst)
     }
 }
 
+/* Renames every temporary in order.  SIGINT, SIGTERM and SIGHUP are held
+ * back meanwhile (delivered after the last rename), so an interrupt of this
+ * thread cannot fall between two renames.  errno-style code or 0; *bad is
+ * the file that failed. */
+static int rename_all(tf_afile *const *files, size_t n, size_t *bad)
+{
+    sigset_t hold, old;
+    sigemptyset(&hold);
+    sigaddset(&hold, SIGINT);
+    sigaddset(&hold, SIGTERM);
+    sigaddset(&hold, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &hold, &old);
+    int code = 0;
+    for (size_t k = 0; k < n; ++k) {
+        if (rename(files[k]->tmp, files[k]->dst) != 0) {
+            code = errno;
+            *bad = k;
+            break;
+        }
+        files[k]->tmp[0] = '\0'; /* renamed: nothing left to remove */
+    }
+    for (size_t k = 0; k < n && code == 0; ++k) {
+        sync_dir(files[k]->dst);
+    }
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    return code;
+}
+
 int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errlen)
 {
     int code = 0;
@@ -194,21 +167,15 @@ int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errl
             bad = k;
         }
     }
-    for (size_t k = 0; k < n && code == 0; ++k) {
-        if (rename(files[k]->tmp, files[k]->dst) != 0) {
-            code = errno;
-            bad = k;
-            break;
-        }
-        forget(files[k]);
-        sync_dir(files[k]->dst);
+    if (code == 0) {
+        code = rename_all(files, n, &bad);
     }
     if (code != 0) {
         snprintf(err, errlen, "%s: write failed: %s", files[bad]->dst, strerror(code));
         for (size_t k = 0; k < n; ++k) {
-            if (files[k]->slot >= 0) {
+            if (files[k]->tmp[0] != '\0') {
                 unlink(files[k]->tmp);
-                forget(files[k]);
+                files[k]->tmp[0] = '\0';
             }
         }
         return -1;
@@ -230,6 +197,6 @@ void tf_afile_abort(tf_afile *a)
     }
     if (a->tmp[0] != '\0') {
         unlink(a->tmp);
+        a->tmp[0] = '\0';
     }
-    forget(a);
 }

@@ -12,8 +12,9 @@
  * Files that belong together (a header and its golden vectors) are written
  * to temporaries that are all synced before the first rename
  * (tf_afile_commit_all), so a full disk or a failed write changes none of
- * them.  A temporary is removed on every error path, and on SIGINT, SIGTERM
- * and SIGHUP once tf_afile_cleanup_on_signals() has been called.
+ * them, and an interrupt (SIGINT, SIGTERM, SIGHUP) of the writing thread
+ * is held back until the last rename.  A temporary is removed on every
+ * error path.
  */
 #ifndef TF_ATOMIC_FILE_H
 #define TF_ATOMIC_FILE_H
@@ -25,7 +26,6 @@ typedef struct tf_afile {
     FILE *fp;
     char tmp[4096];
     char dst[4096]; /* the file replaced: the path, or the file its link names */
-    int slot;       /* in the table of temporaries removed on a signal, or -1 */
 } tf_afile;
 
 /* The file that writing path replaces: path itself, or the regular file its
@@ -56,10 +56,5 @@ int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errl
 
 /* Discards the temporary file. */
 void tf_afile_abort(tf_afile *a);
-
-/* Removes open temporaries when the process is interrupted (SIGINT,
- * SIGTERM, SIGHUP), then dies of the signal as it would have.  Called once
- * by the tool's main(). */
-void tf_afile_cleanup_on_signals(void);
 
 #endif /* TF_ATOMIC_FILE_H */

@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "base/atomic_file.h"
 #include "base/blas_pin.h"
 #include "cli/cli.h"
 #include "base/log.h"
@@ -130,6 +129,5 @@ int main(int argc, char **argv)
     tf_blas_pin(argv);
     tf_ctx run;
     tf_ctx_init(&run);
-    tf_afile_cleanup_on_signals();
     return finish(&run, dispatch(&run, argc, argv));
 }

@@ -65,12 +65,15 @@ expect 1 "fit on a full disk: exit 1, not 2" -- \
 [ -e "$d/fitted.h" ] || [ -e "$d/fitted_golden.h" ] && bad "fit on a full disk left a file"
 no_temporaries "$d" "fit on a full disk"
 
-# --- interrupted before the first rename (SIGTERM): old pair, no temporaries
+# --- SIGTERM at the first rename: held back until both are renamed, so the
+# run dies of it with a whole new pair and no temporary
+cp "$d/pair.h" "$d/keep.h"
 expect 143 "SIGTERM at the first rename" -- env LD_PRELOAD="$fault" TF_RENAME_FAULT=1:15 \
     "$tool" -q demo-model --envelope 2 -o "$d/pair.h"
-cmp -s "$d/pair.h" "$tmp/pair.h.1" && cmp -s "$d/pair_golden.h" "$tmp/pair_golden.h.1" ||
-    bad "an interrupted run changed the pair"
+cmp -s "$d/pair.h" "$tmp/pair.h.1" && bad "SIGTERM split the pair (old header)"
+golden_runs "$d" pair || bad "the pair after SIGTERM does not run: $(head -5 "$tmp/cc")"
 no_temporaries "$d" "SIGTERM"
+cp "$tmp/pair.h.1" "$d/pair.h" && cp "$tmp/pair_golden.h.1" "$d/pair_golden.h" && rm "$d/keep.h"
 
 # --- killed between the two renames: a new golden file beside the old
 # header, which the golden runner refuses to compile
