@@ -20,74 +20,22 @@
 #include <cmocka.h>
 
 #include "scene/scene.h"
+#include "scene_refused.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
 
-static const char *base =
-    "name: t\n"                                   /* 1 */
-    "geometry:\n"                                 /* 2 */
-    "  box: {min: [0, 0, 0], max: [10, 10, 2]}\n" /* 3 */
-    "  grid: [5, 5, 2]\n"                         /* 4 */
-    "material:\n"                                 /* 5 */
-    "  E: 1.0\n"                                  /* 6 */
-    "  nu: 0.3\n"                                 /* 7 */
-    "fixed:\n"                                    /* 8 */
-    "  - face: z-\n"                              /* 9 */
-    "contact:\n"                                  /* 10 */
-    "  - node: 13\n"                              /* 11 */
-    "outputs:\n"                                  /* 12 */
-    "  select: face\n"                            /* 13 */
-    "  face: z+\n";                               /* 14 */
-
-/* base with line `line` replaced by `with` (which may hold several lines). */
-static void replaced(int line, const char *with, char *out, size_t outlen)
-{
-    size_t used = 0;
-    const char *p = base;
-    out[0] = '\0';
-    for (int l = 1; *p; ++l) {
-        size_t len = (size_t)(strchr(p, '\n') - p) + 1;
-        used += (size_t)snprintf(out + used, outlen - used, "%.*s", (int)(l == line ? strlen(with) : len),
-                                 l == line ? with : p);
-        p += len;
-    }
-}
-
-/* The text must be refused with every fragment in the message. */
-static void refused_text(const char *text, size_t len, const char *const *fragments)
-{
-    char err[1024] = "";
-    tf_scene *s = tf_scene_load_text(text, len, "t.yaml", NULL, 0, err, sizeof err);
-    if (s != NULL) {
-        tf_scene_free(s);
-        fail_msg("accepted: %s", text);
-    }
-    for (const char *const *f = fragments; *f; ++f) {
-        if (strstr(err, *f) == NULL) {
-            fail_msg("message '%s' lacks '%s'", err, *f);
-        }
-    }
-}
-
+/* tf_test_scene (scene_refused.h) with line `line` replaced by `with`. */
 static void refused(int line, const char *with, const char *const *fragments)
 {
-    char text[2048];
-    replaced(line, with, text, sizeof text);
-    refused_text(text, strlen(text), fragments);
+    tf_test_refused(line, 1, with, fragments);
+}
+
+static void refused_text(const char *text, size_t len, const char *const *fragments)
+{
+    tf_test_refused_text(text, len, fragments);
 }
 
 #define FRAGS(...) ((const char *const[]){__VA_ARGS__, NULL})
-
-static void the_base_is_good(void **state)
-{
-    (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load_text(base, strlen(base), "t.yaml", NULL, 0, err, sizeof err);
-    if (s == NULL) {
-        fail_msg("%s", err);
-    }
-    tf_scene_free(s);
-}
 
 static void numbers_with_trailing_text(void **state)
 {
@@ -117,7 +65,7 @@ static void one_document_no_aliases(void **state)
 {
     (void)state;
     char text[2048];
-    snprintf(text, sizeof text, "%s---\nname: other\n", base);
+    snprintf(text, sizeof text, "%s---\nname: other\n", tf_test_scene);
     refused_text(text, strlen(text), FRAGS("t.yaml:15:", "second YAML document"));
     const char *alias = "name: t\n"
                         "geometry:\n"
@@ -236,7 +184,6 @@ static void scene_paths_that_are_not_files(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(the_base_is_good),
         cmocka_unit_test(numbers_with_trailing_text),
         cmocka_unit_test(loose_whole_numbers_and_booleans),
         cmocka_unit_test(one_document_no_aliases),
