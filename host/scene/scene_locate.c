@@ -312,7 +312,8 @@ void sd_explain(const char *text, size_t len, const sd_log *log, const char *bas
         snprintf(msg, msglen, "at least %ld characters", strtol(arg, NULL, 10));
     } else if (after(t, "libyaml: ", arg, sizeof arg)) {
         snprintf(msg, msglen, "YAML syntax error: %s", arg);
-    } else if (after(t, "Load: ", arg, sizeof arg)) {
+    } else if (after(t, "Load: ", arg, sizeof arg) && arg[0] != '\0' &&
+               strncmp(arg, "Backtrace", 9) != 0) {
         snprintf(msg, msglen, "%s", arg);
     } else {
         snprintf(msg, msglen, "not a valid scene");

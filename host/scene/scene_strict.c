@@ -213,10 +213,35 @@ static int scalar(walk *w, const yaml_event_t *ev)
     return rc;
 }
 
+static const char *kind_of(const yaml_event_t *ev)
+{
+    return ev->type == YAML_MAPPING_START_EVENT    ? "a mapping"
+           : ev->type == YAML_SEQUENCE_START_EVENT ? "a list"
+                                                   : "a single value";
+}
+
+/* The document's own value and the keys of mappings, which libcyaml's
+ * messages cannot place (they have no enclosing line). */
+static int check_shape(walk *w, const yaml_event_t *ev)
+{
+    const frame *f = w->depth > 0 ? &w->f[w->depth - 1] : NULL;
+    if (f != NULL && f->is_map && !f->have_key && ev->type != YAML_SCALAR_EVENT) {
+        return fail(w, ev->start_mark.line, "a key must be a plain word, not %s", kind_of(ev));
+    }
+    if (f == NULL && w->root->type == CYAML_MAPPING && ev->type != YAML_MAPPING_START_EVENT) {
+        return fail(w, ev->start_mark.line, "expected a mapping of keys (%s), got %s",
+                    w->path[0] ? "key: value" : "name:, geometry:, ...", kind_of(ev));
+    }
+    return 0;
+}
+
 static int open_collection(walk *w, const yaml_event_t *ev, int is_map)
 {
     if (w->depth == DEPTH) {
         return fail(w, ev->start_mark.line, "nested more than %d levels deep: not a scene", DEPTH);
+    }
+    if (check_shape(w, ev) != 0) {
+        return -1;
     }
     const cyaml_schema_value_t *v = enter(w);
     int fits = v != NULL && (is_map ? v->type == CYAML_MAPPING
@@ -261,7 +286,7 @@ static int event(walk *w, const yaml_event_t *ev, int *documents)
                     "aliases (*%s) are not supported in scenes: write the value out",
                     (const char *)ev->data.alias.anchor);
     case YAML_SCALAR_EVENT:
-        return scalar(w, ev);
+        return check_shape(w, ev) != 0 ? -1 : scalar(w, ev);
     case YAML_SEQUENCE_START_EVENT:
     case YAML_MAPPING_START_EVENT:
         return open_collection(w, ev, ev->type == YAML_MAPPING_START_EVENT);

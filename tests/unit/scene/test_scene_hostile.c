@@ -82,6 +82,9 @@ static void one_document_no_aliases(void **state)
 static void syntax_errors_have_lines(void **state)
 {
     (void)state;
+    refused_text("[1, 2]\n", 7, FRAGS("t.yaml:1: expected a mapping of keys", "got a list"));
+    refused_text("\n\nhello\n", 8, FRAGS("t.yaml:3: expected a mapping of keys"));
+    refused(2, "? [a]\n: b\ngeometry:\n", FRAGS("t.yaml:2: a key must be a plain word"));
     refused(7, "  nu: 0.3\xff\xfe\n", FRAGS("t.yaml:7:", "YAML syntax error", "UTF-8"));
     refused(12, "outputs:\x01\x02\x03\n", FRAGS("t.yaml:12:", "YAML syntax error", "control"));
     const char garbage[] = "\x7f" "ELF\x02\x01\x01\x00\x00\x00\n\x00\x00";
