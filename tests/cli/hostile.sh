@@ -5,9 +5,6 @@
 set -u
 tool=$1
 . "$(dirname "$0")/expect.sh"
-says() {
-    grep -q -- "$2" "$tmp/err" || bad "$1: message lacks '$2': $(head -c 600 "$tmp/err")"
-}
 B=coeffs/block48.yaml
 
 # --- numbers, whole numbers, documents, syntax (details: test_scene_hostile.c)

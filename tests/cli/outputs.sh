@@ -7,9 +7,6 @@
 set -u
 tool=$1 lib=$2 fault=$3
 . "$(dirname "$0")/expect.sh"
-says() {
-    grep -q -- "$2" "$tmp/err" || bad "$1: message lacks '$2': $(head -c 600 "$tmp/err")"
-}
 no_temporaries() {
     ls -A "$1" | grep -q '\.tmp' && bad "$2: temporary files left: $(ls -A "$1" | grep '\.tmp')"
 }
