@@ -2,7 +2,6 @@
  * main.c — the `tissuefit` entry point: global options, the run's context
  * (base/context.h) and dispatch to the command table (cli.h).
  */
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -40,37 +39,6 @@ static void usage(FILE *out)
             "  -h, --help    this text\n"
             "  --version     tool and target API version\n\n"
             "Exit status: 0 success, 1 failure while running, 2 bad usage or input.\n");
-}
-
-int tf_wants_help(int argc, char **argv)
-{
-    for (int i = 1; i < argc; ++i) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            return 1;
-        }
-        if (strcmp(argv[i], "--") == 0) {
-            break;
-        }
-    }
-    return 0;
-}
-
-/* Standard output written in full, or a failure: a command whose table went
- * to a full disk (>/dev/full) must not exit 0.  Every command's output
- * passes here, so none can forget the final flush and close. */
-static int finish(tf_ctx *ctx, int rc)
-{
-    int bad = fflush(stdout) != 0 || ferror(stdout);
-    int saved = errno;
-    if (fclose(stdout) != 0 && !bad) {
-        bad = 1;
-        saved = errno;
-    }
-    if (bad) {
-        tf_error(ctx, "cannot write standard output: %s", strerror(saved));
-        return rc == TF_EXIT_OK ? TF_EXIT_FAIL : rc;
-    }
-    return rc;
 }
 
 static int dispatch(tf_ctx *ctx, int argc, char **argv)
@@ -129,5 +97,5 @@ int main(int argc, char **argv)
     tf_blas_pin(argv);
     tf_ctx run;
     tf_ctx_init(&run);
-    return finish(&run, dispatch(&run, argc, argv));
+    return tf_finish_stdout(&run, dispatch(&run, argc, argv));
 }
