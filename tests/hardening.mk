@@ -5,8 +5,9 @@
 #                   before the solve, standard output on a full disk, a fit
 #                   on 3 outputs, replay with a NaN
 #   check-outputs   tests/cli/outputs.sh: NAME.h and NAME_golden.h change
-#                   together (a full disk, SIGTERM, and SIGKILL between the
-#                   renames through tests/cli/rename_fault.c), non-regular
+#                   together (a full disk, SIGTERM while writing and at the
+#                   first rename, SIGKILL between the renames, through
+#                   tests/cli/rename_fault.c), non-regular
 #                   destinations, links written through, hostile text in
 #                   generated comments compiled by gcc and clang
 #   (the fuzz targets: tests/fuzz.mk; unit tests: test_scene_hostile.c,

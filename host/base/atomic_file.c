@@ -75,6 +75,40 @@ int tf_afile_check(const char *path, char *err, size_t errlen)
     return tf_afile_target(path, dst, sizeof dst, err, errlen);
 }
 
+/* SIGINT, SIGTERM and SIGHUP: held back while a temporary exists. */
+static void interrupts(sigset_t *set)
+{
+    sigemptyset(set);
+    sigaddset(set, SIGINT);
+    sigaddset(set, SIGTERM);
+    sigaddset(set, SIGHUP);
+}
+
+static void hold_interrupts(tf_afile *a)
+{
+    sigset_t hold;
+    interrupts(&hold);
+    pthread_sigmask(SIG_BLOCK, &hold, &a->before);
+}
+
+/* Releases the interrupts that were not held before any of files[0..n)
+ * was opened (a pending one is delivered now, its temporaries gone). */
+static void release_interrupts(tf_afile *const *files, size_t n)
+{
+    sigset_t hold, release;
+    interrupts(&hold);
+    sigemptyset(&release);
+    const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t k = 0; k < n; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            if (!sigismember(&files[k]->before, sigs[i])) {
+                sigaddset(&release, sigs[i]);
+            }
+        }
+    }
+    pthread_sigmask(SIG_UNBLOCK, &release, NULL);
+}
+
 int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
 {
     a->fp = NULL;
@@ -86,10 +120,13 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: path too long", path);
         return -1;
     }
+    hold_interrupts(a);
+    tf_afile *self[1] = {a};
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
         snprintf(err, errlen, "%s: cannot create a temporary file: %s", path, strerror(errno));
         a->tmp[0] = '\0';
+        release_interrupts(self, 1);
         return -1;
     }
     /* mkstemp creates 0600; give the result the mode a plain fopen would. */
@@ -100,6 +137,7 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
         close(fd);
         unlink(a->tmp);
         a->tmp[0] = '\0';
+        release_interrupts(self, 1);
         return -1;
     }
     return 0;
@@ -128,18 +166,11 @@ static void sync_dir(const char *dst)
     }
 }
 
-/* Renames every temporary in order.  SIGINT, SIGTERM and SIGHUP are held
- * back meanwhile (delivered after the last rename), so an interrupt of this
- * thread cannot fall between two renames.  errno-style code or 0; *bad is
- * the file that failed. */
+/* Renames every temporary in order (interrupts are held back since the
+ * files were opened).  errno-style code or 0; *bad is the file that
+ * failed. */
 static int rename_all(tf_afile *const *files, size_t n, size_t *bad)
 {
-    sigset_t hold, old;
-    sigemptyset(&hold);
-    sigaddset(&hold, SIGINT);
-    sigaddset(&hold, SIGTERM);
-    sigaddset(&hold, SIGHUP);
-    pthread_sigmask(SIG_BLOCK, &hold, &old);
     int code = 0;
     for (size_t k = 0; k < n; ++k) {
         if (rename(files[k]->tmp, files[k]->dst) != 0) {
@@ -152,7 +183,6 @@ static int rename_all(tf_afile *const *files, size_t n, size_t *bad)
     for (size_t k = 0; k < n && code == 0; ++k) {
         sync_dir(files[k]->dst);
     }
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
     return code;
 }
 
@@ -178,9 +208,9 @@ int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errl
                 files[k]->tmp[0] = '\0';
             }
         }
-        return -1;
     }
-    return 0;
+    release_interrupts(files, n);
+    return code != 0 ? -1 : 0;
 }
 
 int tf_afile_commit(tf_afile *a, char *err, size_t errlen)
@@ -198,5 +228,7 @@ void tf_afile_abort(tf_afile *a)
     if (a->tmp[0] != '\0') {
         unlink(a->tmp);
         a->tmp[0] = '\0';
+        tf_afile *self[1] = {a};
+        release_interrupts(self, 1);
     }
 }

@@ -12,18 +12,22 @@
  * Files that belong together (a header and its golden vectors) are written
  * to temporaries that are all synced before the first rename
  * (tf_afile_commit_all), so a full disk or a failed write changes none of
- * them, and an interrupt (SIGINT, SIGTERM, SIGHUP) of the writing thread
- * is held back until the last rename.  A temporary is removed on every
- * error path.
+ * them.  An interrupt (SIGINT, SIGTERM, SIGHUP) is held back from the
+ * moment a temporary exists until it is renamed or removed (the tool is
+ * single-threaded: OPENBLAS_NUM_THREADS=1), so no exit path leaves a
+ * temporary behind and no interrupt falls between two renames.  Only
+ * SIGKILL or a crash can (header-format.md §1).
  */
 #ifndef TF_ATOMIC_FILE_H
 #define TF_ATOMIC_FILE_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
 typedef struct tf_afile {
     FILE *fp;
+    sigset_t before; /* the thread's signal mask before open held interrupts back */
     char tmp[4096];
     char dst[4096]; /* the file replaced: the path, or the file its link names */
 } tf_afile;
@@ -54,7 +58,8 @@ int tf_afile_commit(tf_afile *a, char *err, size_t errlen);
  * their content (header-format.md §1). */
 int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errlen);
 
-/* Discards the temporary file. */
+/* Discards the temporary file.  Abort files in the reverse order of their
+ * opening: interrupts held back since the first one are released with it. */
 void tf_afile_abort(tf_afile *a);
 
 #endif /* TF_ATOMIC_FILE_H */

@@ -72,6 +72,14 @@ golden_runs "$d" pair || bad "the pair after SIGTERM does not run: $(head -5 "$t
 no_temporaries "$d" "SIGTERM"
 cp "$tmp/pair.h.1" "$d/pair.h" && cp "$tmp/pair_golden.h.1" "$d/pair_golden.h" && rm "$d/keep.h"
 
+# --- SIGTERM while the temporaries are written (the second one just
+# created): held back too, so no temporary stays behind
+expect 143 "SIGTERM while writing the temporaries" -- env LD_PRELOAD="$fault" TF_MKSTEMP_FAULT=2:15 \
+    "$tool" -q demo-model --envelope 3 -o "$d/pair.h"
+no_temporaries "$d" "SIGTERM while writing"
+golden_runs "$d" pair || bad "the pair after SIGTERM while writing does not run: $(head -5 "$tmp/cc")"
+cp "$tmp/pair.h.1" "$d/pair.h" && cp "$tmp/pair_golden.h.1" "$d/pair_golden.h"
+
 # --- killed between the two renames: a new golden file beside the old
 # header, which the golden runner refuses to compile
 expect 137 "SIGKILL between the renames" -- env LD_PRELOAD="$fault" TF_RENAME_FAULT=2:9 \
