@@ -36,6 +36,9 @@
 #error "block48.h was generated for tfit API version 4: regenerate it with tissuefit"
 #endif
 
+/* CRC-32 of block48_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
+#define TFIT_BLOCK48_GOLDEN_CRC32 0x9f4880cbu
+
 /* tfit_block48_forward */
 #define TFIT_BLOCK48_FORWARD_FAMILY "nodal"
 #define TFIT_BLOCK48_FORWARD_FAMILY_ID 1

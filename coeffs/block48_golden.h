@@ -7427,4 +7427,9 @@ static const tfit_golden_q31 tfit_block48_contact_q31_golden = {
 #define TFIT_BLOCK48_GOLDEN_SETS {&tfit_block48_forward_golden, &tfit_block48_contact_golden}
 #define TFIT_BLOCK48_GOLDEN_Q31_SETS {&tfit_block48_forward_q31_golden, &tfit_block48_contact_q31_golden, 0}
 
+/* block48.h carries the CRC-32 of this file up to here. */
+#if !defined(TFIT_BLOCK48_GOLDEN_CRC32) || TFIT_BLOCK48_GOLDEN_CRC32 != 0x9f4880cbu
+#error "block48_golden.h and block48.h are not from the same run of tissuefit: regenerate both"
+#endif
+
 #endif /* TFIT_BLOCK48_GOLDEN_H */

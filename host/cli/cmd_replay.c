@@ -233,7 +233,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         return TF_EXIT_FAIL;
     }
     double worst = 0, deepest = -1;
-    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0;
+    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0;
+    size_t first_bad = 0;
     for (size_t i = 0; i < t->n; ++i) {
         const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *ui = u + i * dofs;
         for (size_t j = 0; j < n_out; ++j) {
@@ -243,7 +244,13 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
                     bad_zero += logged != 0;
                     continue;
                 }
+                /* A NaN compares false with any bound: counted, never
+                 * silently skipped (it would hide behind a small maximum). */
                 double e = fabs(logged - ui[3 * (size_t)s->outputs.nodes[j] + (size_t)k]);
+                if (!isfinite(e)) {
+                    first_bad = not_finite++ ? first_bad : i;
+                    continue;
+                }
                 if (e > worst) {
                     worst = e;
                     worst_tick = i;
@@ -259,7 +266,12 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
-    int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
+    if (not_finite > 0) {
+        tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
+                 "tick %zu): the deviation above covers only the finite ones",
+                 not_finite, first_bad);
+    }
+    int rc = bad_zero || not_finite ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
         rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
                  ? TF_EXIT_OK
@@ -303,6 +315,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     if (optind + 1 != argc || csv == NULL) {
         tf_error(ctx, "replay: expected one scene file and --ticks FILE.csv");
+        tf_sets_free(&sets);
+        return TF_EXIT_USAGE;
+    }
+    if (tf_cmd_outputs(ctx, "replay", &png, 1) != 0) {
         tf_sets_free(&sets);
         return TF_EXIT_USAGE;
     }

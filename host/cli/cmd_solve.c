@@ -133,17 +133,15 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     if (a->vtk) {
         tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
     }
-    int rc = 0;
+    tf_afile *files[2];
+    size_t n = 0;
     if (a->out) {
-        rc = tf_afile_commit(&csv, err, sizeof err);
+        files[n++] = &csv;
     }
     if (a->vtk) {
-        if (rc == 0) {
-            rc = tf_afile_commit(&vtu, err, sizeof err);
-        } else {
-            tf_afile_abort(&vtu);
-        }
+        files[n++] = &vtu;
     }
+    int rc = tf_afile_commit_all(files, n, err, sizeof err);
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
         tf_error(ctx, "solve: %s", rc ? err : "cannot write to standard output");
         return TF_EXIT_FAIL;
@@ -155,7 +153,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {0};
     tf_scene *s = NULL;
-    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
+    if (parse(ctx, argc, argv, &a) != 0 ||
+        tf_cmd_outputs(ctx, "solve", (const char *[]){a.out, a.vtk}, 2) != 0 ||
+        (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }

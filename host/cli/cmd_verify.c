@@ -132,7 +132,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     verify_args a = {0};
     tf_verify_row rows[MAX_LEVELS];
     char err[1024];
-    if (parse(ctx, argc, argv, &a) != 0) {
+    if (parse(ctx, argc, argv, &a) != 0 || tf_cmd_outputs(ctx, "verify", &a.csv, 1) != 0) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }

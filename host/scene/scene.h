@@ -22,6 +22,9 @@ typedef struct tf_scene {
     tf_fit_plan fit;    /* the fit: section (contact -1 when there is no contact site) */
 } tf_scene;
 
+/* A scene file is a regular file of at most this many bytes. */
+#define TF_SCENE_MAX_BYTES (16 << 20)
+
 /* Reads a scene file, applies the overrides ("key=value", e.g.
  * "geometry.grid=41,41,9") in order, validates and resolves it.  Returns
  * NULL with a message naming file, line and field (or the --set argument)

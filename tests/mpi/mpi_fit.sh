@@ -13,7 +13,9 @@
 #   - before any case: a rank that cannot build its solver
 #     (TF_TEST_FAIL_CREATE_RANK) stops every rank with exit 1 and its
 #     message; a rank that reads another scene (mpirun's MPMD form), or
-#     runs other OpenBLAS kernels, with exit 2.
+#     runs other OpenBLAS kernels, with exit 2;
+#   - (issue 19) a missing output directory refused before any case (exit
+#     2), standard output that cannot be written is a failure (exit 1).
 # Extra arguments go to every fit.  MPIRUN may carry mpirun's options.
 set -u
 serial=$1 mpi=$2 scene=$3
@@ -74,4 +76,10 @@ if [ -n "${VARIANT:-}" ]; then
     rm -f "$tmp/w/kept.h"
     nothing_written "failed runs"
 fi
+# issue 19: outputs checked before any case, standard output checked at exit
+expect 2 "mpirun -n 2 fit into a missing directory" -- $mpirun -n 2 --oversubscribe "$mpi" -q fit \
+    "$scene" "$@" -o "$tmp/missing/$name.h"
+says "missing directory" "$tmp/missing/$name.h: no directory"
+expect 1 "tissuefit-mpi --version >/dev/full" -- sh -c 'exec "$0" --version >/dev/full' "$mpi"
+says "--version >/dev/full" "cannot write standard output"
 finish "tissuefit-mpi fit of $name: 1, 2, 3 ranks"
