@@ -23,7 +23,8 @@ static void help(FILE *out)
             "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
             "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
             "The scene's loads always act; --force adds a force (N) at a contact site,\n"
-            "spread as the site's patch says.\n\n"
+            "spread as the site's patch says.  A scene with no loads and no prescribed\n"
+            "displacement needs --force (its solution would be zero).\n\n"
             "Options:\n"
             "  --force FX,FY,FZ   force at the contact site, N\n"
             "  --contact NAME     which contact site (default: the first)\n"
@@ -97,6 +98,14 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     if (!a->has_force) {
         if (a->contact) {
             tf_error(ctx, "solve: --contact without --force");
+            return -2;
+        }
+        if (tf_problem_unloaded(s)) {
+            /* The answer would be zero everywhere: almost surely a forgotten --force. */
+            tf_error(ctx,
+                     "solve: %s: nothing loads the body (no --force, no loads and no "
+                     "prescribed displacement in the scene): give --force FX,FY,FZ",
+                     a->scene);
             return -2;
         }
         return -1;
