@@ -219,7 +219,7 @@ static void write_floats(FILE *f, const float *v, size_t n, const char *comment)
 
 /* The coefficient table with a comment per block, so the header documents
  * its own layout (docs/header-format.md §3). */
-static void write_coef(FILE *f, const tf_model *m)
+static void write_coef(FILE *f, const tf_model *m, const char *site)
 {
     static const char comp[] = "xyz";
     char note[128];
@@ -231,7 +231,8 @@ static void write_coef(FILE *f, const tf_model *m)
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint32_t t = tf_terms(m->dims[0]);
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
-            snprintf(note, sizeof note, "node %u %c%s", m->node_ids[o / 3],
+            snprintf(note, sizeof note, "%s %u %c%s",
+                     m->family == TFIT_FAMILY_CONTACT ? "node" : site, m->node_ids[o / 3],
                      comp[o % 3], m->family == TFIT_FAMILY_CONTACT ? " force" : "");
             write_floats(f, c, t, note);
         }
@@ -242,7 +243,8 @@ static void write_coef(FILE *f, const tf_model *m)
             write_floats(f, c, t, note);
         }
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += r) {
-            snprintf(note, sizeof note, "modes at node %u %c", m->node_ids[o / 3], comp[o % 3]);
+            snprintf(note, sizeof note, "modes at %s %u %c", site, m->node_ids[o / 3],
+                     comp[o % 3]);
             write_floats(f, c, r, note);
         }
     } else {
@@ -276,7 +278,7 @@ static void write_u32_table(FILE *f, const char *type, const char *name, const u
     fprintf(f, "};\n");
 }
 
-static void write_definition(FILE *f, const tf_model *m, uint32_t crc)
+static void write_definition(FILE *f, const tf_model *m, uint32_t crc, const char *site)
 {
     char name[TF_NAME_MAX + 16];
     fprintf(f, "\n");
@@ -284,13 +286,44 @@ static void write_definition(FILE *f, const tf_model *m, uint32_t crc)
     write_u32_table(f, "uint32_t", name, m->dims, m->n_dims, 0);
     snprintf(name, sizeof name, "tfit_%s_nodes", m->name);
     write_u32_table(f, "uint32_t", name, m->node_ids, m->n_out, 0);
-    write_coef(f, m);
+    write_coef(f, m, site);
     fprintf(f,
             "const tfit_model tfit_%s = {\n    %uu, %uu, %uu, %uu, %uu,\n"
             "    tfit_%s_dims, tfit_%s_coef, tfit_%s_nodes,\n    0x%08xu\n};\n",
             m->name, TFIT_API_VERSION, (unsigned)m->family, m->n_out, m->n_dims, m->n_coef,
             m->name, m->name, m->name, crc);
     tf_emit_q31_definition(f, m);
+}
+
+/* A list of points as a brace initialiser of float literals. */
+static void write_point_list(FILE *f, const double *x, size_t n)
+{
+    fprintf(f, "{");
+    for (size_t i = 0; i < 3 * n; ++i) {
+        fprintf(f, "%s%af%s", i % 3 == 0 ? (i % 6 == 0 ? " \\\n    " : "  ") : " ",
+                (double)(float)x[i], i + 1 < 3 * n ? "," : "");
+    }
+    fprintf(f, " \\\n}\n");
+}
+
+/* Where outputs between nodes and a contact point given by position are:
+ * initialisers for the firmware (an unused macro costs nothing). */
+static void write_points(FILE *f, const char *guard, const tf_emit_info *info)
+{
+    if (info->points != NULL) {
+        fprintf(f,
+                "\n/* The output points (mm, float): output j of the forward models\n"
+                " * (node_ids[j] = j + 1) is the displacement at point j, x y z. */\n"
+                "#define TFIT_%s_OUTPUT_POINTS_N %zuu\n#define TFIT_%s_OUTPUT_POINTS_MM ",
+                guard, info->n_points, guard);
+        write_point_list(f, info->points, info->n_points);
+    }
+    if (info->contact_point != NULL) {
+        fprintf(f, "\n/* The contact point (mm, float): the contact displacement is its "
+                   "displacement. */\n#define TFIT_%s_CONTACT_POINT_MM ",
+                guard);
+        write_point_list(f, info->contact_point, 1);
+    }
 }
 
 static void write_header(FILE *f, const char *base, tf_model *const *models, size_t n,
@@ -308,9 +341,10 @@ static void write_header(FILE *f, const char *base, tf_model *const *models, siz
     for (size_t i = 0; i < n; ++i) {
         write_macros(f, models[i], tf_model_crc32(models[i]));
     }
+    write_points(f, g, info);
     fprintf(f, "\n#ifdef TFIT_%s_IMPLEMENTATION\n", g);
     for (size_t i = 0; i < n; ++i) {
-        write_definition(f, models[i], tf_model_crc32(models[i]));
+        write_definition(f, models[i], tf_model_crc32(models[i]), info->points ? "point" : "node");
     }
     fprintf(f, "\n#endif /* TFIT_%s_IMPLEMENTATION */\n#endif /* TFIT_%s_H */\n", g, g);
 }

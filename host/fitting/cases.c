@@ -10,6 +10,7 @@
 #include "base/log.h"
 #include "fitting/fit_common.h"
 #include "fitting/loadcases.h"
+#include "solvers/probe.h"
 
 static void *keep(tf_cases *c, void *p)
 {
@@ -21,18 +22,20 @@ static void *keep(tf_cases *c, void *p)
     return NULL;
 }
 
-/* The output rows and the contact site of a 3N solution. */
-static void extract(const tf_cases *c, const double *full, double *u, double contact[3])
+/* The output rows and the contact site of a 3N solution (solvers/probe.h:
+ * nodal values, or the field at points between nodes). */
+static int extract(const tf_cases *c, const double *full, double *u, double contact[3])
 {
-    const tf_outputs *o = &c->problem->outputs;
-    for (size_t j = 0; u != NULL && j < o->n_nodes; ++j) {
-        for (int k = 0; k < 3; ++k) {
-            u[3 * j + (size_t)k] = full[3 * (size_t)o->nodes[j] + (size_t)k];
-        }
+    tf_ctx *ctx = c->solver->ctx;
+    if (u != NULL &&
+        tf_probe_outputs(c->solver, c->problem, full, u, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
     }
-    for (int k = 0; contact != NULL && k < 3; ++k) {
-        contact[k] = full[3 * (size_t)c->contact_node + (size_t)k];
+    if (contact != NULL && tf_probe_contact(c->solver, c->problem, c->contact, full, contact,
+                                            ctx->err, sizeof ctx->err) != 0) {
+        return -1;
     }
+    return 0;
 }
 
 /* Solves forces[n][3] at the contact site into output rows u (3 n_out x n)
@@ -48,7 +51,7 @@ static int solve_into(tf_cases *c, const double (*f)[3], size_t n, double *u,
     }
     int rc = tf_solver_solve(c->solver, c->contact, f, n, NULL, full);
     for (size_t i = 0; rc == 0 && i < n; ++i) {
-        extract(c, full + i * dofs, u ? u + i * rows : NULL, contact ? contact[i] : NULL);
+        rc = extract(c, full + i * dofs, u ? u + i * rows : NULL, contact ? contact[i] : NULL);
     }
     c->solves += n;
     free(full);
@@ -153,8 +156,12 @@ static int design(tf_cases *c, size_t n_train, size_t n_heldout, uint64_t seed)
     }
     const double *xyz = tf_solver_coords(c->solver);
     for (size_t j = 0; j < n_out; ++j) {
-        c->node_ids[j] = tf_problem_node_number(p, p->outputs.nodes[j]);
-        memcpy(c->rest[j], xyz + 3 * (size_t)p->outputs.nodes[j], sizeof c->rest[j]);
+        /* output points between nodes are numbered 1, 2, ... in the header */
+        const double *x = p->outputs.points ? p->outputs.points + 3 * j
+                                            : xyz + 3 * (size_t)p->outputs.nodes[j];
+        c->node_ids[j] = p->outputs.points ? (uint32_t)j + 1
+                                           : tf_problem_node_number(p, p->outputs.nodes[j]);
+        memcpy(c->rest[j], x, sizeof c->rest[j]);
     }
     tf_loadcases(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train, held);
     tf_round_to_float(train, n_train);
