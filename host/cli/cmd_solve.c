@@ -13,13 +13,15 @@
 #include "report/displacement_out.h"
 #include "base/log.h"
 #include "scene/scene.h"
+#include "solvers/probe.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
 {
     fprintf(out,
             "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
-            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n\n"
+            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n"
+            "                       [--outputs FILE.csv]\n\n"
             "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
             "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
             "The scene's loads always act; --force adds a force (N) at a contact site,\n"
@@ -31,14 +33,17 @@ static void help(FILE *out)
             "  --set KEY=VALUE    override a scene value, e.g. geometry.grid=41,41,9\n"
             "                     (repeatable; see docs/scene-format.md)\n"
             "  -o, --out FILE     CSV file (default: standard output)\n"
-            "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n\n"
+            "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n"
+            "  --outputs FILE     also write the scene's outputs (nodes, or points between\n"
+            "                     nodes through the shape functions) as\n"
+            "                     output,x,y,z,ux,uy,uz\n\n"
             "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
             "Exit status: 0 ok, 1 the solve failed, 2 bad usage or a bad scene (nothing\n"
             "written then).\n");
 }
 
 typedef struct solve_args {
-    const char *scene, *out, *vtk, *contact;
+    const char *scene, *out, *vtk, *contact, *outputs;
     double force[3];
     int has_force;
     tf_sets sets;
@@ -51,6 +56,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                                          {"set", required_argument, NULL, 's'},
                                          {"out", required_argument, NULL, 'o'},
                                          {"vtk", required_argument, NULL, 'v'},
+                                         {"outputs", required_argument, NULL, 'O'},
                                          {0}};
     int c;
     optind = 1;
@@ -78,6 +84,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
             break;
         case 'v':
             a->vtk = optarg;
+            break;
+        case 'O':
+            a->outputs = optarg;
             break;
         default:
             tf_error(ctx, "solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
@@ -122,35 +131,34 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return k;
 }
 
-/* Both files go to temporaries first, so a failure leaves neither. */
-static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u)
+/* The files go to temporaries first, so a failure leaves none of them. */
+static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u,
+                         const double *at_outputs)
 {
     char err[512];
-    tf_afile csv, vtu;
-    if (a->out && tf_afile_open(&csv, a->out, err, sizeof err) != 0) {
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
-    }
-    if (a->vtk && tf_afile_open(&vtu, a->vtk, err, sizeof err) != 0) {
-        if (a->out) {
-            tf_afile_abort(&csv);
+    const char *path[3] = {a->out, a->vtk, a->outputs};
+    tf_afile f[3];
+    int open = 0, rc = 0;
+    for (; open < 3 && rc == 0; ++open) {
+        if (path[open] && tf_afile_open(&f[open], path[open], err, sizeof err) != 0) {
+            rc = -1;
+            break;
         }
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
     }
-    tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
-    if (a->vtk) {
-        tf_vtu_displacements(vtu.fp, &s->cloud, u);
+    if (rc == 0) {
+        tf_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
+        if (a->vtk) {
+            tf_vtu_displacements(f[1].fp, &s->cloud, u);
+        }
+        if (a->outputs) {
+            tf_csv_outputs(f[2].fp, s, at_outputs);
+        }
     }
-    int rc = 0;
-    if (a->out) {
-        rc = tf_afile_commit(&csv, err, sizeof err);
-    }
-    if (a->vtk) {
-        if (rc == 0) {
-            rc = tf_afile_commit(&vtu, err, sizeof err);
-        } else {
-            tf_afile_abort(&vtu);
+    for (int k = 0; k < open; ++k) {
+        if (path[k] && rc == 0) {
+            rc = tf_afile_commit(&f[k], err, sizeof err);
+        } else if (path[k]) {
+            tf_afile_abort(&f[k]);
         }
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
@@ -178,15 +186,19 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     int rc = TF_EXIT_FAIL;
     tf_solver *sv = tf_solver_create(p, NULL, ctx);
     double *u = malloc(3 * p->cloud.n * sizeof *u);
-    if (sv == NULL || u == NULL) {
+    double *v = malloc(3 * p->outputs.n_nodes * sizeof *v);
+    if (sv == NULL || u == NULL || v == NULL) {
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
+    } else if (a.outputs && tf_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
+        tf_error(ctx, "solve: %s: outputs: %s", a.scene, ctx->err);
     } else {
         tf_solver_report(sv);
-        rc = write_outputs(ctx, &a, p, u);
+        rc = write_outputs(ctx, &a, p, u, v);
     }
     free(u);
+    free(v);
     tf_solver_destroy(sv);
     tf_scene_free(s);
     return rc;
