@@ -8,17 +8,26 @@
 #                         41x41x9 (node 61 within 3 % at the finest level)
 #   bench-solver          speed of block48 at three grids (medians), the
 #                         time split and peak memory; 150 load cases
+#   bench-accuracy        time to bring block48's node 61 within 1 % and
+#                         0.3 % of the reference: tissuefit (best cloud)
+#                         against CalculiX C3D20R, and the ratio (minutes:
+#                         CalculiX runs at two mesh levels)
 #   solver-validation     regenerates docs/validation/ (tables and PNG plots
 #                         for docs/validation.md); not part of make check
+#   accuracy-study        the shape-parameter, support and grading study of
+#                         docs/validation.md §7 (docs/validation/accuracy/,
+#                         about an hour; ACCURACY_PARTS=... runs some parts)
 # Unit tests (tests/unit/test_{scene,rpim,quadrature,neighbours,elasticity,
 # solver,verify}.c) run with check-unit and check-sanitize.
 
 SOLVER_TOOLS := $(T)/solver/calculix_compare $(T)/solver/bench_solver $(T)/solver/node61
 DEBS_VALIDATION := $(DEBS_BUILD) gnuplot-nox
 
-.PHONY: check-solver-cli check-solver-calculix bench-solver solver-validation deps-validation
+.PHONY: check-solver-cli check-solver-calculix bench-solver bench-accuracy solver-validation \
+        deps-validation \
+        accuracy-study
 CHECKS += check-solver-cli check-solver-calculix
-BENCHES += bench-solver
+BENCHES += bench-solver bench-accuracy
 
 deps-validation: ; $(call ensure_debs,$(DEBS_VALIDATION))
 
@@ -42,5 +51,15 @@ bench-solver: $(T)/solver/bench_solver
 	@$(T)/solver/bench_solver 21,21,5 5
 	@$(T)/solver/bench_solver 41,41,9 3
 
+bench-accuracy: $(T)/solver/calculix_compare $(B)/calculix/block48_deck | deps-calculix
+	@echo "== block48: time to 1 % and 0.3 % at node 61 in every case, tissuefit against CalculiX C3D20R =="
+	@tests/solver/bench_accuracy.sh $(T)/solver/calculix_compare $(B)/calculix/block48_deck \
+	  $(B)/bench/accuracy
+
 solver-validation: $(B)/bin/tissuefit $(SOLVER_TOOLS) | deps-validation
 	@tests/solver/validation.sh $(B)/bin/tissuefit $(T)/solver docs/validation
+
+ACCURACY_PARTS ?=
+accuracy-study: $(B)/bin/tissuefit $(T)/solver/calculix_compare | deps-validation
+	@tests/solver/accuracy_study.sh $(B)/bin/tissuefit $(T)/solver/calculix_compare \
+	  docs/validation/accuracy $(ACCURACY_PARTS)

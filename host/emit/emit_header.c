@@ -295,13 +295,17 @@ static void write_definition(FILE *f, const tf_model *m, uint32_t crc, const cha
     tf_emit_q31_definition(f, m);
 }
 
-/* A list of points as a brace initialiser of float literals. */
-static void write_point_list(FILE *f, const double *x, size_t n)
+/* Points as a brace initialiser of float literals: {x, y, z} for one,
+ * {{x, y, z}, ...} (two per line) for a list, so either initialises a
+ * float[3] or float[n][3] without warnings. */
+static void write_point_list(FILE *f, const double *x, size_t n, int nested)
 {
     fprintf(f, "{");
-    for (size_t i = 0; i < 3 * n; ++i) {
-        fprintf(f, "%s%af%s", i % 3 == 0 ? (i % 6 == 0 ? " \\\n    " : "  ") : " ",
-                (double)(float)x[i], i + 1 < 3 * n ? "," : "");
+    for (size_t p = 0; p < n; ++p) {
+        const double *q = x + 3 * p;
+        fprintf(f, "%s%s%af, %af, %af%s%s", p % 2 == 0 ? " \\\n    " : " ", nested ? "{" : "",
+                (double)(float)q[0], (double)(float)q[1], (double)(float)q[2], nested ? "}" : "",
+                p + 1 < n ? "," : "");
     }
     fprintf(f, " \\\n}\n");
 }
@@ -313,16 +317,16 @@ static void write_points(FILE *f, const char *guard, const tf_emit_info *info)
     if (info->points != NULL) {
         fprintf(f,
                 "\n/* The output points (mm, float): output j of the forward models\n"
-                " * (node_ids[j] = j + 1) is the displacement at point j, x y z. */\n"
+                " * (node_ids[j] = j + 1) is the displacement at point j, {x, y, z}. */\n"
                 "#define TFIT_%s_OUTPUT_POINTS_N %zuu\n#define TFIT_%s_OUTPUT_POINTS_MM ",
                 guard, info->n_points, guard);
-        write_point_list(f, info->points, info->n_points);
+        write_point_list(f, info->points, info->n_points, 1);
     }
     if (info->contact_point != NULL) {
         fprintf(f, "\n/* The contact point (mm, float): the contact displacement is its "
                    "displacement. */\n#define TFIT_%s_CONTACT_POINT_MM ",
                 guard);
-        write_point_list(f, info->contact_point, 1);
+        write_point_list(f, info->contact_point, 1, 0);
     }
 }
 
