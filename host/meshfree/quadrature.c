@@ -89,17 +89,7 @@ unsigned tf_cells_slab(const tf_cells *c, int a, double x)
         double t = floor((x - c->lo[a]) / c->size[a]);
         return t < 0 ? 0 : t >= c->n[a] ? c->n[a] - 1 : (unsigned)t;
     }
-    const double *e = c->edge[a];
-    unsigned lo = 0, hi = c->n[a];
-    while (hi - lo > 1) {
-        unsigned mid = (lo + hi) / 2;
-        if (e[mid] <= x) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    return lo;
+    return tf_lines_interval(c->edge[a], c->n[a] + 1, x);
 }
 
 double tf_cells_min_size(const tf_cells *c, int a)

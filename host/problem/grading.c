@@ -94,3 +94,17 @@ int tf_grading_axis(double lo, double hi, unsigned n, double ratio, const double
     free(d);
     return 0;
 }
+
+unsigned tf_lines_interval(const double *lines, unsigned n, double x)
+{
+    unsigned lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        unsigned mid = (lo + hi) / 2;
+        if (lines[mid] <= x) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}

@@ -40,4 +40,8 @@ void tf_grading_add(tf_grading *g, int a, double a0, double a1, double lo, doubl
 int tf_grading_axis(double lo, double hi, unsigned n, double ratio, const double (*at)[2],
                     size_t na, double *x);
 
+/* The interval i of n >= 2 ascending lines with lines[i] <= x < lines[i+1],
+ * clamped to 0 .. n - 2 (binary search). */
+unsigned tf_lines_interval(const double *lines, unsigned n, double x);
+
 #endif /* TF_GRADING_H */

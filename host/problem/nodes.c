@@ -134,21 +134,10 @@ int tf_cloud_box(tf_cloud *c, const double lo[3], const double hi[3], const unsi
     return tf_cloud_box_graded(c, lo, hi, grid, jitter, seed, NULL);
 }
 
-/* The grid interval of axis a holding x: i with axis[i] <= x < axis[i+1]
- * (clamped to the first and last). */
+/* The grid interval of axis a holding x (clamped to the first and last). */
 static unsigned interval(const tf_cloud *c, int a, double x)
 {
-    const double *g = c->axis[a];
-    unsigned lo = 0, hi = c->grid[a] - 1;
-    while (hi - lo > 1) {
-        unsigned mid = (lo + hi) / 2;
-        if (g[mid] <= x) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    return lo;
+    return tf_lines_interval(c->axis[a], c->grid[a], x);
 }
 
 double tf_cloud_to_index(const tf_cloud *c, int a, double x)
