@@ -113,7 +113,7 @@ void tf_shape_stats_reset(tf_shape_stats *st)
 void tf_shape_work_init(tf_shape_work *w)
 {
     w->rw.cap = w->rw.rhs_cap = 0;
-    w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = NULL;
+    w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = w->rw.qp = w->rw.pp = w->rw.qwork = NULL;
     w->rw.ipiv = w->rw.iwork = NULL;
     w->mw.cap = 0;
     w->mw.w = w->mw.dw = w->mw.p = NULL;

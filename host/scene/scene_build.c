@@ -349,7 +349,7 @@ static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
 /* The default multiquadric length: d_c relative to the local nodal spacing
  * (docs/validation.md, the shape-parameter study); 0 would make the seed's
  * absolute d_c = 2 mm the default. */
-#define SD_D_C_SPACINGS 0.0
+#define SD_D_C_SPACINGS 8.0
 
 tf_solver_opts sd_solver_defaults(const unsigned grid[3])
 {

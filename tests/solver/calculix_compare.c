@@ -17,10 +17,11 @@
  * position.  --set overrides apply to every level.
  *
  * Prints level,grid,nodes,case,ux61,uy61,uz61,ref_ux61,ref_uy61,ref_uz61,
- * err61,rms,rms_rel,seconds where err61 = |u61 - ref| / |ref| at node 61
+ * err61,rms,rms_rel,seconds,min_rcond where err61 = |u61 - ref| / |ref| at node 61
  * (24, 24, 6), rms the RMS of |u - ref| over the 121 points (mm), rms_rel
  * relative to the RMS of |ref|, seconds the wall time of the level's solver
- * (build and three solves).  Exit 1 when, at the finest level, node 61 is
+ * (build and three solves), min_rcond the smallest reciprocal condition of
+ * its local RPIM systems.  Exit 1 when, at the finest level, node 61 is
  * more than --max-err61 (default 0.03) off in any case, or the RMS error
  * grows from one level to the next (unless --no-check); a missing data file
  * is an error.
@@ -35,6 +36,7 @@
 #include "base/blas_pin.h"
 #include "base/context.h"
 #include "scene/scene.h"
+#include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
 
 #define TOP 121
@@ -189,7 +191,7 @@ static tf_scene *level_scene(const options *o, const char *grid)
 /* Solves one level for the three cases and evaluates them at the reference
  * points: u[c][n][a]. */
 static int solve_level(const options *o, const char *grid, const reference *ref, tf_scene **scene,
-                       double (*u)[TOP][3], double *seconds)
+                       double (*u)[TOP][3], double *seconds, double *rcond)
 {
     unsigned g[3];
     if (sscanf(grid, "%u,%u,%u", &g[0], &g[1], &g[2]) != 3) {
@@ -208,6 +210,8 @@ static int solve_level(const options *o, const char *grid, const reference *ref,
     double *full = sv ? malloc(9 * p->cloud.n * sizeof *full) : NULL;
     int rc = full ? tf_solver_solve(sv, 0, forces, 3, NULL, full) : -1;
     *seconds = omp_get_wtime() - t0;
+    const tf_galerkin_info *gi = sv ? tf_galerkin_info_of(sv) : NULL;
+    *rcond = gi ? gi->st.min_rcond : NAN;
     double grad[TOP * 9];
     for (int c = 0; rc == 0 && c < 3; ++c) {
         rc = tf_solver_field(sv, full + (size_t)c * 3 * p->cloud.n, &ref[c].x[0][0], TOP, &u[c][0][0],
@@ -274,7 +278,7 @@ int main(int argc, char **argv)
     }
     FILE *csv = o.csv ? fopen(o.csv, "w") : NULL;
     const char *header = "level,grid,nodes,case,ux61,uy61,uz61,ref_ux61,ref_uy61,ref_uz61,err61,"
-                         "rms,rms_rel,seconds\n";
+                         "rms,rms_rel,seconds,min_rcond\n";
     printf("%s", header);
     if (csv) {
         fputs(header, csv);
@@ -284,8 +288,8 @@ int main(int argc, char **argv)
     for (int l = 0; l < o.n_levels; ++l) {
         tf_scene *s = NULL;
         static double u[3][TOP][3];
-        double seconds = 0;
-        if (solve_level(&o, o.levels[l], ref, &s, u, &seconds) != 0) {
+        double seconds = 0, rcond = NAN;
+        if (solve_level(&o, o.levels[l], ref, &s, u, &seconds, &rcond) != 0) {
             tf_scene_free(s);
             return 1;
         }
@@ -295,10 +299,10 @@ int main(int argc, char **argv)
             compare((const double(*)[3])u[c], &ref[c], &r);
             char row[512];
             snprintf(row, sizeof row,
-                     "%d,%ux%ux%u,%zu,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,%.4g,%.4f,%.2f\n", l,
+                     "%d,%ux%ux%u,%zu,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,%.4g,%.4f,%.2f,%.2g\n", l,
                      p->cloud.grid[0], p->cloud.grid[1], p->cloud.grid[2], p->cloud.n, cases[c],
                      r.u61[0], r.u61[1], r.u61[2], r.ref61[0], r.ref61[1], r.ref61[2], r.err61,
-                     r.rms, r.rms_rel, seconds);
+                     r.rms, r.rms_rel, seconds, rcond);
             printf("%s", row);
             fflush(stdout);
             if (csv) {
