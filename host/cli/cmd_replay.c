@@ -240,7 +240,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     double *v = malloc(t->n * 3 * n_out * sizeof *v);
     int rc = v ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) : -1;
     for (size_t i = 0; rc == 0 && i < t->n; ++i) {
-        rc = tf_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
+        rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
                               sizeof ctx->err);
     }
     free(u);

@@ -146,12 +146,12 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         }
     }
     if (rc == 0) {
-        tf_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
+        tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
         if (a->vtk) {
-            tf_vtu_displacements(f[1].fp, &s->cloud, u);
+            tf_report_vtu_displacements(f[1].fp, &s->cloud, u);
         }
         if (a->outputs) {
-            tf_csv_outputs(f[2].fp, s, at_outputs);
+            tf_report_csv_outputs(f[2].fp, s, at_outputs);
         }
     }
     for (int k = 0; k < open; ++k) {
@@ -191,7 +191,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
-    } else if (a.outputs && tf_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
+    } else if (a.outputs && tf_solver_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
         tf_error(ctx, "solve: %s: outputs: %s", a.scene, ctx->err);
     } else {
         tf_solver_report(sv);

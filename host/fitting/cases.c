@@ -8,8 +8,7 @@
 #include <string.h>
 
 #include "base/log.h"
-#include "fitting/fit_common.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "solvers/probe.h"
 
 static void *keep(tf_cases *c, void *p)
@@ -28,10 +27,10 @@ static int extract(const tf_cases *c, const double *full, double *u, double cont
 {
     tf_ctx *ctx = c->solver->ctx;
     if (u != NULL &&
-        tf_probe_outputs(c->solver, c->problem, full, u, ctx->err, sizeof ctx->err) != 0) {
+        tf_solver_probe_outputs(c->solver, c->problem, full, u, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
-    if (contact != NULL && tf_probe_contact(c->solver, c->problem, c->contact, full, contact,
+    if (contact != NULL && tf_solver_probe_contact(c->solver, c->problem, c->contact, full, contact,
                                             ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
@@ -163,9 +162,10 @@ static int design(tf_cases *c, size_t n_train, size_t n_heldout, uint64_t seed)
                                            : tf_problem_node_number(p, p->outputs.nodes[j]);
         memcpy(c->rest[j], x, sizeof c->rest[j]);
     }
-    tf_loadcases(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train, held);
-    tf_round_to_float(train, n_train);
-    tf_round_to_float(held, n_heldout);
+    tf_force_samples(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train,
+                     held);
+    tf_forces_to_float(train, n_train);
+    tf_forces_to_float(held, n_heldout);
     for (int a = 0; a < 3; ++a) {
         for (size_t i = 0; i < n_train; ++i) {
             double *f = axes[(size_t)a * n_train + i];

@@ -89,7 +89,7 @@ unsigned tf_cells_slab(const tf_cells *c, int a, double x)
         double t = floor((x - c->lo[a]) / c->size[a]);
         return t < 0 ? 0 : t >= c->n[a] ? c->n[a] - 1 : (unsigned)t;
     }
-    return tf_lines_interval(c->edge[a], c->n[a] + 1, x);
+    return tf_cloud_lines_interval(c->edge[a], c->n[a] + 1, x);
 }
 
 double tf_cells_min_size(const tf_cells *c, int a)

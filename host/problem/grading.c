@@ -8,7 +8,7 @@
 
 #define SUBSTEPS 256
 
-void tf_grading_add(tf_grading *g, int a, double a0, double a1, double lo, double hi)
+void tf_cloud_grading_add(tf_cloud_grading *g, int a, double a0, double a1, double lo, double hi)
 {
     if (a0 > a1) {
         double t = a0;
@@ -22,7 +22,7 @@ void tf_grading_add(tf_grading *g, int a, double a0, double a1, double lo, doubl
             return;
         }
     }
-    if (g->n[a] < TF_GRADING_MAX) {
+    if (g->n[a] < TF_CLOUD_GRADING_MAX) {
         g->at[a][g->n[a]][0] = a0;
         g->at[a][g->n[a]][1] = a1;
         g->n[a]++;
@@ -49,7 +49,7 @@ static void uniform(double lo, double hi, unsigned n, double *x)
     x[n - 1] = hi;
 }
 
-int tf_grading_axis(double lo, double hi, unsigned n, double ratio, const double (*at)[2],
+int tf_cloud_grading_axis(double lo, double hi, unsigned n, double ratio, const double (*at)[2],
                     size_t na, double *x)
 {
     size_t m = (size_t)SUBSTEPS * (n - 1);
@@ -95,7 +95,7 @@ int tf_grading_axis(double lo, double hi, unsigned n, double ratio, const double
     return 0;
 }
 
-unsigned tf_lines_interval(const double *lines, unsigned n, double x)
+unsigned tf_cloud_lines_interval(const double *lines, unsigned n, double x)
 {
     unsigned lo = 0, hi = n - 1;
     while (hi - lo > 1) {

@@ -20,28 +20,28 @@
 
 #include <stddef.h>
 
-#define TF_GRADING_MAX 16
+#define TF_CLOUD_GRADING_MAX 16
 
 /* Grading of a box grid, per axis. */
-typedef struct tf_grading {
+typedef struct tf_cloud_grading {
     double ratio[3];                 /* largest / smallest spacing per axis, >= 1 */
     size_t n[3];                     /* attractor intervals per axis */
-    double at[3][TF_GRADING_MAX][2]; /* [lo, hi] on that axis (lo = hi: a plane), mm */
-} tf_grading;
+    double at[3][TF_CLOUD_GRADING_MAX][2]; /* [lo, hi] on that axis (lo = hi: a plane), mm */
+} tf_cloud_grading;
 
 /* Adds the attractor interval [a0, a1] (clamped to [lo, hi]) to axis a,
  * unless it is there already or the axis is full (then it is dropped: 16
  * per axis are plenty).  a0 > a1 are swapped. */
-void tf_grading_add(tf_grading *g, int a, double a0, double a1, double lo, double hi);
+void tf_cloud_grading_add(tf_cloud_grading *g, int a, double a0, double a1, double lo, double hi);
 
 /* The n >= 2 grid lines x[0] = lo < ... < x[n-1] = hi of an axis graded by
  * ratio towards the na intervals at[].  Returns 0, or -1 when out of
  * memory. */
-int tf_grading_axis(double lo, double hi, unsigned n, double ratio, const double (*at)[2],
+int tf_cloud_grading_axis(double lo, double hi, unsigned n, double ratio, const double (*at)[2],
                     size_t na, double *x);
 
 /* The interval i of n >= 2 ascending lines with lines[i] <= x < lines[i+1],
  * clamped to 0 .. n - 2 (binary search). */
-unsigned tf_lines_interval(const double *lines, unsigned n, double x);
+unsigned tf_cloud_lines_interval(const double *lines, unsigned n, double x);
 
 #endif /* TF_GRADING_H */

@@ -49,7 +49,7 @@ double tf_cloud_face_coord(const tf_cloud *c, tf_face f)
 
 /* The grid lines of each axis: uniform (the historical formula, so that
  * ungraded clouds keep their bits) or graded. */
-static int grid_lines(tf_cloud *c, const tf_grading *g)
+static int grid_lines(tf_cloud *c, const tf_cloud_grading *g)
 {
     c->graded = 0;
     for (int a = 0; a < 3; ++a) {
@@ -63,7 +63,7 @@ static int grid_lines(tf_cloud *c, const tf_grading *g)
             for (unsigned i = 0; i < n; ++i) {
                 c->axis[a][i] = i + 1 == n ? c->hi[a] : c->lo[a] + i * c->spacing[a];
             }
-        } else if (tf_grading_axis(c->lo[a], c->hi[a], n, g->ratio[a], (const double(*)[2])g->at[a],
+        } else if (tf_cloud_grading_axis(c->lo[a], c->hi[a], n, g->ratio[a], (const double(*)[2])g->at[a],
                                    g->n[a], c->axis[a]) != 0) {
             return -1;
         } else {
@@ -89,7 +89,7 @@ static double jitter_scale(const tf_cloud *c, int a, unsigned i)
 
 int tf_cloud_box_graded(tf_cloud *c, const double lo[3], const double hi[3],
                         const unsigned grid[3], double jitter, uint64_t seed,
-                        const tf_grading *g)
+                        const tf_cloud_grading *g)
 {
     c->xyz = NULL;
     for (int a = 0; a < 3; ++a) {
@@ -137,7 +137,7 @@ int tf_cloud_box(tf_cloud *c, const double lo[3], const double hi[3], const unsi
 /* The grid interval of axis a holding x (clamped to the first and last). */
 static unsigned interval(const tf_cloud *c, int a, double x)
 {
-    return tf_lines_interval(c->axis[a], c->grid[a], x);
+    return tf_cloud_lines_interval(c->axis[a], c->grid[a], x);
 }
 
 double tf_cloud_to_index(const tf_cloud *c, int a, double x)

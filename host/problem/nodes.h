@@ -54,7 +54,7 @@ int tf_cloud_box(tf_cloud *c, const double lo[3], const double hi[3], const unsi
  * interval along each axis. */
 int tf_cloud_box_graded(tf_cloud *c, const double lo[3], const double hi[3],
                         const unsigned grid[3], double jitter, uint64_t seed,
-                        const tf_grading *g);
+                        const tf_cloud_grading *g);
 void tf_cloud_free(tf_cloud *c);
 
 /* Fractional grid index of coordinate x along axis a (clamped to the box),

@@ -90,7 +90,7 @@ int tf_problem_unloaded(const tf_problem *p)
     return 1;
 }
 
-void tf_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3])
+void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3])
 {
     int u, v, n = tf_face_axis(patch->face);
     switch (patch->shape) {

@@ -36,7 +36,7 @@ typedef struct tf_box_geometry {
     unsigned grid[3];      /* nodes per axis */
     double jitter;         /* fraction of the spacing, interior nodes */
     uint64_t seed;         /* of the jitter */
-    tf_grading grading;    /* ratio 1 on every axis: a uniform grid (nodes.h) */
+    tf_cloud_grading grading;    /* ratio 1 on every axis: a uniform grid (nodes.h) */
 } tf_box_geometry;
 
 typedef struct tf_geometry {
@@ -207,7 +207,7 @@ static inline uint32_t tf_problem_node_number(const tf_problem *p, size_t index)
 }
 
 /* The centre of a patch on its face (a point force: its point), mm. */
-void tf_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3]);
+void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3]);
 
 /* Index of the node nearest x (the lowest index of equally near ones). */
 uint32_t tf_problem_nearest_node(const tf_problem *p, const double x[3]);

@@ -11,12 +11,12 @@
 #include "problem/nodes.h"
 
 /* A patch: its face's plane along the normal, its extent in the face. */
-static void patch(tf_grading *g, const sd_patch *p, const double lo[3], const double hi[3])
+static void patch(tf_cloud_grading *g, const sd_patch *p, const double lo[3], const double hi[3])
 {
     int u, v, n = tf_face_axis((tf_face)p->face);
     double plane = tf_face_is_max((tf_face)p->face) ? hi[n] : lo[n];
     tf_face_axes((tf_face)p->face, &u, &v);
-    tf_grading_add(g, n, plane, plane, lo[n], hi[n]);
+    tf_cloud_grading_add(g, n, plane, plane, lo[n], hi[n]);
     if (p->centre == NULL) {
         return; /* the whole face: no edge inside it */
     }
@@ -27,36 +27,36 @@ static void patch(tf_grading *g, const sd_patch *p, const double lo[3], const do
     } else if (p->radius) {
         ext[0] = ext[1] = *p->radius;
     }
-    tf_grading_add(g, u, p->centre[0] - ext[0], p->centre[0] + ext[0], lo[u], hi[u]);
-    tf_grading_add(g, v, p->centre[1] - ext[1], p->centre[1] + ext[1], lo[v], hi[v]);
+    tf_cloud_grading_add(g, u, p->centre[0] - ext[0], p->centre[0] + ext[0], lo[u], hi[u]);
+    tf_cloud_grading_add(g, v, p->centre[1] - ext[1], p->centre[1] + ext[1], lo[v], hi[v]);
 }
 
-static void point(tf_grading *g, const double *x, const double lo[3], const double hi[3])
+static void point(tf_cloud_grading *g, const double *x, const double lo[3], const double hi[3])
 {
     for (int a = 0; a < 3; ++a) {
-        tf_grading_add(g, a, x[a], x[a], lo[a], hi[a]);
+        tf_cloud_grading_add(g, a, x[a], x[a], lo[a], hi[a]);
     }
 }
 
-static void fixed(tf_grading *g, const sd_fixed *f, const double lo[3], const double hi[3])
+static void fixed(tf_cloud_grading *g, const sd_fixed *f, const double lo[3], const double hi[3])
 {
     if (f->face) {
         int a = tf_face_axis((tf_face)*f->face);
         double at = tf_face_is_max((tf_face)*f->face) ? hi[a] : lo[a];
-        tf_grading_add(g, a, at, at, lo[a], hi[a]);
+        tf_cloud_grading_add(g, a, at, at, lo[a], hi[a]);
     } else if (f->plane) {
         int a = f->plane->axis;
-        tf_grading_add(g, a, f->plane->at, f->plane->at, lo[a], hi[a]);
+        tf_cloud_grading_add(g, a, f->plane->at, f->plane->at, lo[a], hi[a]);
     } else if (f->box) {
         for (int a = 0; a < 3; ++a) { /* only where the box ends inside the body */
             if (f->box->min[a] > lo[a] || f->box->max[a] < hi[a]) {
-                tf_grading_add(g, a, f->box->min[a], f->box->max[a], lo[a], hi[a]);
+                tf_cloud_grading_add(g, a, f->box->min[a], f->box->max[a], lo[a], hi[a]);
             }
         }
     }
 }
 
-int sd_grading(const sd_scene *doc, const double lo[3], const double hi[3], tf_grading *g,
+int sd_grading(const sd_scene *doc, const double lo[3], const double hi[3], tf_cloud_grading *g,
                char *msg, size_t msglen)
 {
     memset(g, 0, sizeof *g);

@@ -17,7 +17,7 @@
 /* Fills g for the box [lo, hi] from doc (ratio 1 everywhere when doc has no
  * geometry.grading).  Returns 0, or -1 with a message (a ratio below 1 or
  * above 20). */
-int sd_grading(const sd_scene *doc, const double lo[3], const double hi[3], tf_grading *g,
+int sd_grading(const sd_scene *doc, const double lo[3], const double hi[3], tf_cloud_grading *g,
                char *msg, size_t msglen);
 
 #endif /* TF_SCENE_GRADING_H */

@@ -21,7 +21,7 @@ static int field_at(const tf_solver *s, const double *u, const double *x, size_t
     return rc;
 }
 
-int tf_probe_outputs(const tf_solver *s, const tf_problem *p, const double *u, double *out,
+int tf_solver_probe_outputs(const tf_solver *s, const tf_problem *p, const double *u, double *out,
                      char *err, size_t errlen)
 {
     const tf_outputs *o = &p->outputs;
@@ -34,7 +34,7 @@ int tf_probe_outputs(const tf_solver *s, const tf_problem *p, const double *u, d
     return 0;
 }
 
-int tf_probe_contact(const tf_solver *s, const tf_problem *p, int k, const double *u,
+int tf_solver_probe_contact(const tf_solver *s, const tf_problem *p, int k, const double *u,
                      double out[3], char *err, size_t errlen)
 {
     const tf_contact *c = &p->contacts[k];
