@@ -291,7 +291,7 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
                  "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular to "
                  "machine precision: too few nodes or all in one plane (raise "
                  "solver.support), or a multiquadric too flat for the spacing (lower "
-                 "solver.rbf.d_c)",
+                 "solver.rbf.spacings or d_c)",
                  w->n, at[0], at[1], at[2]);
         w->cell = SIZE_MAX;
         return -1;
