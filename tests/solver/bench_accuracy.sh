@@ -27,7 +27,7 @@ REF=tests/calculix/data
 # docs/validation/accuracy/grading.csv, its first level from which every
 # finer one stays within the target (21x21x5: +0.68 / -0.87 %; 31x31x7:
 # -0.07 / +0.28 %).  CalculiX: the cheapest committed C3D20R mesh within it
-# (docs/calculix-reference.md: 40x40x4, +0.12 / -0.51 %, where 40x40x2 is
+# (docs/calculix-reference.md: 40x40x4, -0.12 / -0.51 %, where 40x40x2 is
 # -0.9 / -1.4 %; 80x80x4, +0.08 / -0.07 %, where 40x40x8 is -0.29 / -0.37 %).
 TF_1="21,21,5 geometry.grading=3,3,2"
 TF_03="31,31,7 geometry.grading=3,3,2"
