@@ -16,6 +16,7 @@
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_block48_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 3.69e-08 N (float32 path: 7.03e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 1.47e-08 N
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.431 N/mm; largest stiffness 1.18 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_IMPLEMENTATION before including it: that file holds
@@ -93,6 +94,8 @@ extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_RMS_N 1.47248e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_REL_MAX 9.73376e-08
+#define TFIT_BLOCK48_CONTACT_STIFFNESS_MIN_N_PER_MM 0.430984 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_BLOCK48_CONTACT_STIFFNESS_MAX_N_PER_MM 1.17581 /* largest ||df/ddelta||_2 */
 #define TFIT_BLOCK48_CONTACT_CRC32 0x9a749a78u
 #define tfit_block48_contact tfit_block48_contact_9a749a78 /* this header's version of the model */
 extern const tfit_model tfit_block48_contact;
