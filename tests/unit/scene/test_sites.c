@@ -57,7 +57,12 @@ static void contact_compliance(const tf_scene *s, double *site, double *at_load)
     tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     assert_non_null(sv);
     tf_cases c;
-    assert_int_equal(tf_cases_build(p, sv, 0, 12, 4, 3, 0, &c), 0);
+    tf_fit_plan plan;
+    tf_fit_plan_defaults(&plan);
+    plan.n_train = 12;
+    plan.n_heldout = 4;
+    plan.seed = 3;
+    assert_int_equal(tf_cases_build(p, sv, &plan, &c), 0);
     *site = -c.unit_contact[2][2];
     const double down[1][3] = {{0, 0, -1}}, centre[3] = {24, 24, 6};
     double *u = malloc(3 * p->cloud.n * sizeof *u), uh[3], grad[9];
