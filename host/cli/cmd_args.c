@@ -56,6 +56,10 @@ tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
     tf_scene *s = tf_scene_load(path, sets->item, sets->n, err, sizeof err);
     if (s == NULL) {
         tf_error(ctx, "%s", err);
+        return NULL;
+    }
+    for (const char *line = s->warnings; *line != '\0'; line += strcspn(line, "\n") + 1) {
+        tf_warn(ctx, "%.*s", (int)strcspn(line, "\n"), line);
     }
     return s;
 }

@@ -281,8 +281,11 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         size_t k = strlen(note);
         snprintf(note + k, sizeof note - k, "\n%s", choice);
     }
+    const tf_contact *site = &s->contacts[p->contact];
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
-                               .notes = note, .golden_seed = p->seed};
+                               .notes = note, .golden_seed = p->seed,
+                               .points = s->outputs.points, .n_points = s->outputs.n_nodes,
+                               .contact_point = site->by_node ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
     if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
         tf_error(ctx, "fit: %s", err); /* the path was checked: a failure while running */

@@ -275,7 +275,7 @@ static void write_floats(FILE *f, const float *v, size_t n, const char *comment)
 
 /* The coefficient table with a comment per block, so the header documents
  * its own layout (docs/header-format.md §3). */
-static void write_coef(FILE *f, const tf_model *m)
+static void write_coef(FILE *f, const tf_model *m, const char *site)
 {
     static const char comp[] = "xyz";
     char note[128];
@@ -287,8 +287,8 @@ static void write_coef(FILE *f, const tf_model *m)
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint32_t t = tf_terms(m->dims[0]);
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
-            snprintf(note, sizeof note, "node %u %c%s", m->node_ids[o / 3], comp[o % 3],
-                     inverse(m) ? " force" : "");
+            snprintf(note, sizeof note, "%s %u %c%s", inverse(m) ? "node" : site,
+                     m->node_ids[o / 3], comp[o % 3], inverse(m) ? " force" : "");
             write_floats(f, c, t, note);
         }
     } else if (m->family == TFIT_FAMILY_MODAL) {
@@ -298,7 +298,8 @@ static void write_coef(FILE *f, const tf_model *m)
             write_floats(f, c, t, note);
         }
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += r) {
-            snprintf(note, sizeof note, "modes at node %u %c", m->node_ids[o / 3], comp[o % 3]);
+            snprintf(note, sizeof note, "modes at %s %u %c", site, m->node_ids[o / 3],
+                     comp[o % 3]);
             write_floats(f, c, r, note);
         }
     } else {
@@ -332,7 +333,8 @@ static void write_u32_table(FILE *f, const char *type, const char *name, const u
     fprintf(f, "};\n");
 }
 
-static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, uint32_t crc)
+static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, uint32_t crc,
+                             const char *site)
 {
     char name[TF_NAME_MAX + 16];
     fprintf(f, "\n");
@@ -340,7 +342,7 @@ static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, 
     write_u32_table(f, "uint32_t", name, m->dims, m->n_dims, 0);
     snprintf(name, sizeof name, "tfit_%s_nodes", m->name);
     write_u32_table(f, "uint32_t", name, m->node_ids, m->n_out, 0);
-    write_coef(f, m);
+    write_coef(f, m, site);
     fprintf(f,
             "const tfit_model tfit_%s = {\n    %uu, %uu, %uu, %uu, %uu,\n"
             "    tfit_%s_dims, tfit_%s_coef, tfit_%s_nodes,\n"
@@ -356,6 +358,41 @@ static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, 
     }
     fprintf(f, "},\n    0x%08xu\n};\n", crc);
     tf_emit_q31_definition(f, m);
+}
+
+/* Points as a brace initialiser of float literals: {x, y, z} for one,
+ * {{x, y, z}, ...} (two per line) for a list, so either initialises a
+ * float[3] or float[n][3] without warnings. */
+static void write_point_list(FILE *f, const double *x, size_t n, int nested)
+{
+    fprintf(f, "{");
+    for (size_t p = 0; p < n; ++p) {
+        const double *q = x + 3 * p;
+        fprintf(f, "%s%s%af, %af, %af%s%s", p % 2 == 0 ? " \\\n    " : " ", nested ? "{" : "",
+                (double)(float)q[0], (double)(float)q[1], (double)(float)q[2], nested ? "}" : "",
+                p + 1 < n ? "," : "");
+    }
+    fprintf(f, " \\\n}\n");
+}
+
+/* Where outputs between nodes and a contact point given by position are:
+ * initialisers for the firmware (an unused macro costs nothing). */
+static void write_points(FILE *f, const char *guard, const tf_emit_info *info)
+{
+    if (info->points != NULL) {
+        fprintf(f,
+                "\n/* The output points (mm, float): output j of the forward models\n"
+                " * (node_ids[j] = j + 1) is the displacement at point j, {x, y, z}. */\n"
+                "#define TFIT_%s_OUTPUT_POINTS_N %zuu\n#define TFIT_%s_OUTPUT_POINTS_MM ",
+                guard, info->n_points, guard);
+        write_point_list(f, info->points, info->n_points, 1);
+    }
+    if (info->contact_point != NULL) {
+        fprintf(f, "\n/* The contact point (mm, float): the contact displacement is its "
+                   "displacement. */\n#define TFIT_%s_CONTACT_POINT_MM ",
+                guard);
+        write_point_list(f, info->contact_point, 1, 0);
+    }
 }
 
 static void write_header(FILE *f, const char *base, tf_model *const *models,
@@ -378,9 +415,11 @@ static void write_header(FILE *f, const char *base, tf_model *const *models,
     for (size_t i = 0; i < n; ++i) {
         write_macros(f, models[i], tf_model_crc32_checked(models[i], checks[i]));
     }
+    write_points(f, g, info);
     fprintf(f, "\n#ifdef TFIT_%s_IMPLEMENTATION\n", g);
     for (size_t i = 0; i < n; ++i) {
-        write_definition(f, models[i], checks[i], tf_model_crc32_checked(models[i], checks[i]));
+        write_definition(f, models[i], checks[i], tf_model_crc32_checked(models[i], checks[i]),
+                         info->points ? "point" : "node");
     }
     fprintf(f, "\n#endif /* TFIT_%s_IMPLEMENTATION */\n#endif /* TFIT_%s_H */\n", g, g);
 }

@@ -17,6 +17,12 @@ typedef struct tf_emit_info {
     uint32_t source_crc32;
     const char *notes;      /* extra banner text, '\n'-separated lines, or NULL */
     uint64_t golden_seed;   /* seed of the golden input design */
+    /* Where the outputs are when they are points between nodes (NULL: nodes,
+     * named by node_ids): n_points points, 3 coordinates each, mm; output j
+     * of a forward model (node_ids[j] = j + 1) is point j. */
+    const double *points;
+    size_t n_points;
+    const double *contact_point; /* NULL, or the contact point by position, mm */
 } tf_emit_info;
 
 /* Validates every model, then writes path and its _golden.h sibling.  The

@@ -76,6 +76,57 @@ static void report(const char *text, size_t len, const char *name, const char *c
     }
 }
 
+/* The --set paths override the value at path (or a mapping above it). */
+static int overridden(const char (*set_paths)[128], size_t n_sets, const char *path)
+{
+    for (size_t k = 0; k < n_sets; ++k) {
+        if (covers(set_paths[k], path)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void warn_node(tf_scene *s, const char *name, const char *path, uint32_t number,
+                      const char *what)
+{
+    const tf_problem *p = &s->problem;
+    const double *x = p->cloud.xyz + 3 * (size_t)(number - 1);
+    size_t used = strlen(s->warnings);
+    snprintf(s->warnings + used, sizeof s->warnings - used,
+             "%s: %s: node %u was numbered on the file's grid; with the grid overridden it is "
+             "the node at (%g, %g, %g) mm: give %s by position to follow the grid\n",
+             name, path, number, x[0], x[1], x[2], what);
+}
+
+/* Node numbers in the file name other places once --set changes the grid
+ * (the numbering follows the grid): say so for each one not overridden too. */
+static void node_number_warnings(const sd_scene *doc, const char (*set_paths)[128],
+                                 size_t n_sets, const char *name, tf_scene *s)
+{
+    char path[128];
+    if (!overridden(set_paths, n_sets, "geometry.grid")) {
+        return;
+    }
+    for (unsigned k = 0; k < doc->contact_count; ++k) {
+        snprintf(path, sizeof path, "contact.%u.node", k);
+        if (doc->contact[k].node && !overridden(set_paths, n_sets, path)) {
+            warn_node(s, name, path, *doc->contact[k].node,
+                      "the contact point (at: [x, y, z], or its patch alone: the centre)");
+        }
+    }
+    for (unsigned k = 0; k < doc->loads_count; ++k) {
+        snprintf(path, sizeof path, "loads.%u.node", k);
+        if (doc->loads[k].node && !overridden(set_paths, n_sets, path)) {
+            warn_node(s, name, path, *doc->loads[k].node, "the point force (at: [x, y, z])");
+        }
+    }
+    if (doc->outputs.nodes_count > 0 && !overridden(set_paths, n_sets, "outputs.nodes")) {
+        warn_node(s, name, "outputs.nodes", doc->outputs.nodes[0],
+                  "the outputs (select: points)");
+    }
+}
+
 tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
                              const char *const *sets, size_t n_sets, char *err, size_t errlen)
 {
@@ -119,6 +170,8 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         if (sd_build(doc, p, &s->fit, &is) != 0) {
             report(text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err, errlen);
             ok = 0;
+        } else {
+            node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
         }
     } else if (!set_paths || !s) {
         snprintf(err, errlen, "out of memory");

@@ -20,6 +20,9 @@
 typedef struct tf_scene {
     tf_problem problem;
     tf_fit_plan fit;    /* the fit: section (contact -1 when there is no contact site) */
+    /* Warnings for the user, one per line ("" when none): a node number
+     * from the file when --set changed the grid that numbered it. */
+    char warnings[2048];
 } tf_scene;
 
 /* A scene file is a regular file of at most this many bytes. */
