@@ -120,9 +120,16 @@ typedef struct tf_outputs {
     size_t n_nodes;
 } tf_outputs;
 
-typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
+/* Essential conditions: nodal values removed (RPIM), the seed's penalty
+ * (RPIM: eq 28 on nodal values; EFG: the weak form of seed 001 eqs 19, 23),
+ * or Nitsche's method (solvers/boundary.h). */
+typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY, TF_BC_NITSCHE } tf_bc_method;
 typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
 typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
+/* Volume integration: Gauss points as they are, or with the shape-function
+ * gradients corrected per cell so that the discrete divergence theorem
+ * holds (VCI, solvers/cell_gradients.h). */
+typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_integration;
 
 #define TF_SOLVER_METHOD_MAX 32
 
@@ -141,7 +148,9 @@ typedef struct tf_solver_opts {
     unsigned cells[3];/* background cells per axis */
     unsigned gauss;   /* Gauss-Legendre points per axis per cell */
     tf_bc_method bc;
-    double penalty;   /* lambda of seed eq 28 */
+    double penalty;   /* lambda of seed eq 28 (RPIM); alpha / ((lambda + 2 mu) / h) (EFG) */
+    double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
+    tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
 } tf_solver_opts;
 

@@ -296,6 +296,8 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .gauss = 3,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
+        .nitsche = 100,
+        .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
     };
     for (int a = 0; a < 3; ++a) {
@@ -332,8 +334,11 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         o->cells[a] = d->cells[a];
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
-    o->bc = d->bc ? (tf_bc_method)*d->bc : o->bc;
+    int efg = strcmp(o->method, "efg-galerkin") == 0;
+    o->bc = d->bc ? (tf_bc_method)*d->bc : efg ? TF_BC_NITSCHE : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
+    o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
+    o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
     o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
     if (!(isfinite(o->support) && o->support > 0)) {
         return fail(is, "solver.support", "must be a positive number of nodal spacings");
@@ -359,6 +364,14 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     }
     if (!(isfinite(o->penalty) && o->penalty > 0)) {
         return fail(is, "solver.penalty", "must be a positive factor");
+    }
+    if (!(isfinite(o->nitsche) && o->nitsche > 0)) {
+        return fail(is, "solver.nitsche", "must be a positive factor");
+    }
+    if (efg && o->bc == TF_BC_ELIMINATION) {
+        return fail(is, "solver.bc",
+                    "elimination needs shape functions that interpolate (rpim-galerkin); EFG "
+                    "takes penalty or nitsche");
     }
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
         return fail(is, "solver.rcond_warn", "must lie in (0, 1)");

@@ -35,7 +35,10 @@ static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", T
 static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
 static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
                                              {"cell", TF_VOLUMETRIC_CELL}};
-static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
+static const cyaml_strval_t bcs[] = {
+    {"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}, {"nitsche", TF_BC_NITSCHE}};
+static const cyaml_strval_t integrations[] = {{"gauss", TF_INTEGRATION_GAUSS},
+                                              {"vci", TF_INTEGRATION_VCI}};
 /* tfit_family values (tfit.h) of the forward families */
 static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
@@ -144,6 +147,9 @@ static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_UINT_PTR("gauss", OPT, sd_solver, gauss),
     CYAML_FIELD_ENUM_PTR("bc", STRICT_OPT, sd_solver, bc, bcs, N(bcs)),
     CYAML_FIELD_FLOAT_PTR("penalty", OPT, sd_solver, penalty),
+    CYAML_FIELD_FLOAT_PTR("nitsche", OPT, sd_solver, nitsche),
+    CYAML_FIELD_ENUM_PTR("integration", STRICT_OPT, sd_solver, integration, integrations,
+                         N(integrations)),
     CYAML_FIELD_FLOAT_PTR("rcond_warn", OPT, sd_solver, rcond_warn),
     CYAML_FIELD_END,
 };

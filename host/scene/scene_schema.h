@@ -98,6 +98,8 @@ typedef struct sd_solver {
     unsigned *gauss;
     int *bc;         /* tf_bc_method */
     double *penalty;
+    double *nitsche;
+    int *integration; /* tf_integration */
     double *rcond_warn;
 } sd_solver;
 

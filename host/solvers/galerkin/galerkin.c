@@ -13,15 +13,23 @@
 #include "base/log.h"
 #include "base/peak_memory.h"
 #include "solvers/assemble.h"
+#include "solvers/boundary.h"
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
 #include "solvers/loads.h"
+#include "solvers/nodal_values.h"
 
 typedef struct galerkin {
     tf_solver base;    /* first: a galerkin is a tf_solver (base.opts: its options) */
     tf_shape sh;
     int shape_ok;
-    tf_csc k;          /* full stiffness, every DOF */
+    int efg;           /* MLS shape functions: the unknowns are parameters (nodal_values.h) */
+    int weak;          /* essential conditions in weak form (boundary.h) */
+    tf_boundary bnd;   /* weak: Gamma_u's points */
+    tf_nodal_map map;  /* EFG: parameters -> nodal displacements */
+    double *d_cache, *u_cache; /* EFG field: the parameters of the last u asked for */
+    int cache_ok;
+    tf_csc k;          /* stiffness of the body, every DOF (weak terms not included) */
     tf_constraints bc; /* prescribed DOFs */
     double *f0;        /* 3N: the problem's loads */
     double *basis;     /* n_contacts x (3N x 3): unit forces at each site */
@@ -55,6 +63,37 @@ static int build_loads(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
+/* K plus the weak boundary terms, and the loads plus theirs. */
+static int weak_system(galerkin *g, tf_csc *a, tf_ctx *ctx)
+{
+    const tf_problem *p = g->base.problem;
+    size_t n3 = g->k.n;
+    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    double scale = tf_boundary_scale(&l, &p->cloud);
+    tf_bc_method m = g->base.opts.bc;
+    double factor = scale * (m == TF_BC_NITSCHE ? g->base.opts.nitsche : g->base.opts.penalty);
+    g->rhs0 = malloc(n3 * sizeof *g->rhs0);
+    a->n = g->k.n;
+    a->nnz = g->k.nnz;
+    a->p = malloc((n3 + 1) * sizeof *a->p);
+    a->i = malloc(g->k.nnz * sizeof *a->i);
+    a->x = malloc(g->k.nnz * sizeof *a->x);
+    if (!g->rhs0 || !a->p || !a->i || !a->x) {
+        tf_csc_free(a);
+        return tf_fail(ctx, "out of memory");
+    }
+    memcpy(g->rhs0, g->f0, n3 * sizeof *g->rhs0);
+    memcpy(a->p, g->k.p, (n3 + 1) * sizeof *a->p);
+    memcpy(a->i, g->k.i, g->k.nnz * sizeof *a->i);
+    memcpy(a->x, g->k.x, g->k.nnz * sizeof *a->x);
+    if (tf_boundary_add_linear(&g->bnd, &g->sh, m, factor, &l, a, g->rhs0, ctx->err,
+                               sizeof ctx->err) != 0) {
+        tf_csc_free(a);
+        return -1;
+    }
+    return 0;
+}
+
 /* The system matrix and the constant part of every right-hand side, then
  * the factorisation. */
 static int factorise(galerkin *g, tf_ctx *ctx)
@@ -62,7 +101,11 @@ static int factorise(galerkin *g, tf_ctx *ctx)
     size_t n3 = g->k.n;
     tf_csc a = {0};
     tf_chol_info ci;
-    if (g->base.opts.bc == TF_BC_PENALTY) {
+    if (g->weak) {
+        if (weak_system(g, &a, ctx) != 0) {
+            return -1;
+        }
+    } else if (g->base.opts.bc == TF_BC_PENALTY) {
         g->rhs0 = malloc(n3 * sizeof *g->rhs0);
         if (g->rhs0 == NULL) {
             return tf_fail(ctx, "out of memory");
@@ -108,13 +151,16 @@ static void announce(const galerkin *g, const tf_problem *p, const tf_ctx *ctx)
     const tf_solver_opts *o = &g->base.opts;
     const tf_cells *c = &g->sh.cells;
     tf_info(ctx,
-            "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points, support %g x spacing "
+            "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points%s, support %g x spacing "
             "(%s-centred), %s, volumetric strain %s, BCs by %s",
-            p->cloud.n, 3 * p->cloud.n, tf_cells_count(c), c->gauss, o->support,
+            p->cloud.n, 3 * p->cloud.n, tf_cells_count(c), c->gauss,
+            o->integration == TF_INTEGRATION_VCI ? " (VCI)" : "", o->support,
             o->centre == TF_SUPPORT_CELL ? "cell" : "point",
-            o->polynomial ? "RBF + linear polynomial" : "RBF only",
+            g->efg ? "MLS (EFG)" : o->polynomial ? "RBF + linear polynomial" : "RBF only",
             o->volumetric == TF_VOLUMETRIC_CELL ? "averaged per cell" : "at every point",
-            o->bc == TF_BC_PENALTY ? "penalty" : "elimination");
+            o->bc == TF_BC_NITSCHE   ? "Nitsche's method"
+            : o->bc == TF_BC_PENALTY ? (g->weak ? "penalty (weak form)" : "penalty")
+                                     : "elimination");
 }
 
 static void destroy(tf_solver *s)
@@ -125,6 +171,10 @@ static void destroy(tf_solver *s)
     }
     tf_csc_free(&g->k);
     tf_constraints_release(&g->bc);
+    tf_boundary_free(&g->bnd);
+    tf_nodal_map_free(&g->map);
+    free(g->d_cache);
+    free(g->u_cache);
     free(g->f0);
     free(g->basis);
     free(g->rhs0);
@@ -141,11 +191,24 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     g->shape_ok = 1;
+    if (g->efg && tf_shape_use_efg(&g->sh, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
+    if (g->weak && tf_boundary_build(&g->bnd, p, &g->sh, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     announce(g, p, ctx);
     tf_assembly_info ai;
     tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    tf_assembly_extra ex = {g->base.opts.integration == TF_INTEGRATION_VCI,
+                            g->weak ? &g->bnd : NULL};
+    int plain = !ex.vci && ex.bnd == NULL; /* today's path, bit for bit */
     if (tf_assemble_stiffness(&g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
-                              tf_ctx_threads(ctx), &g->k, &ai, ctx->err, sizeof ctx->err) != 0) {
+                              plain ? NULL : &ex, tf_ctx_threads(ctx), &g->k, &ai, ctx->err,
+                              sizeof ctx->err) != 0) {
+        return -1;
+    }
+    if (g->efg && tf_nodal_map_build(&g->map, &g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
     g->detail.points = ai.points;
@@ -159,11 +222,18 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
-static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx, int efg)
 {
     if (p->material.law != TF_LAW_LINEAR) {
-        tf_fail(ctx, "%s: the rpim-galerkin solver solves linear elastic materials, not %s",
-                p->name, tf_law_name(p->material.law));
+        tf_fail(ctx, "%s: the %s solver solves linear elastic materials, not %s", p->name,
+                efg ? "efg-galerkin" : "rpim-galerkin", tf_law_name(p->material.law));
+        return NULL;
+    }
+    if (efg && o->bc == TF_BC_ELIMINATION) {
+        tf_fail(ctx,
+                "%s: EFG shape functions do not interpolate, so nodal values cannot be "
+                "eliminated: solver.bc must be penalty or nitsche",
+                p->name);
         return NULL;
     }
     galerkin *g = calloc(1, sizeof *g);
@@ -172,6 +242,9 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
         return NULL;
     }
     g->base.opts = *o;
+    g->base.problem = p; /* (tf_solver_create_as sets it again) */
+    g->efg = efg;
+    g->weak = efg || o->bc == TF_BC_NITSCHE;
     tf_shape_stats_reset(&g->detail.st);
     if (assemble(g, p, ctx) != 0) {
         destroy(&g->base);
@@ -191,8 +264,8 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
         return NULL;
     }
     g->detail.t_loads = omp_get_wtime() - t0;
-    tf_info(ctx, "solver: factorising %zu unknowns (CHOLMOD)",
-            g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free);
+    size_t unknowns = g->weak || g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free;
+    tf_info(ctx, "solver: factorising %zu unknowns (CHOLMOD)", unknowns);
     if (factorise(g, ctx) != 0) {
         destroy(&g->base);
         return NULL;
@@ -202,7 +275,7 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
     g->base.info = (tf_solver_info){
         .nodes = p->cloud.n,
         .dofs = n3,
-        .unknowns = g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free,
+        .unknowns = unknowns,
         .t_setup = g->detail.t_pattern + g->detail.t_shape + g->detail.t_assemble +
                    g->detail.t_factor,
     };
@@ -233,7 +306,11 @@ static void rhs_of(const galerkin *g, int contact, const double *force, double *
     size_t n3 = g->k.n;
     const tf_constraints *bc = &g->bc;
     load_vector(g, contact, force, f);
-    if (g->base.opts.bc == TF_BC_PENALTY) {
+    if (g->weak) {
+        for (size_t d = 0; d < n3; ++d) {
+            rhs[d] = g->rhs0[d] + (f[d] - g->f0[d]);
+        }
+    } else if (g->base.opts.bc == TF_BC_PENALTY) {
         for (size_t d = 0; d < n3; ++d) {
             rhs[d] = bc->fixed[d] ? g->rhs0[d] : f[d];
         }
@@ -257,7 +334,7 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     galerkin *g = of(s);
     tf_ctx *ctx = s->ctx;
     const tf_constraints *bc = &g->bc;
-    size_t n3 = g->k.n, m = g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
+    size_t n3 = g->k.n, m = g->weak || g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
     double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
     double *f = malloc(n3 * sizeof *f);
     if (!b || !x || !f) {
@@ -270,7 +347,10 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
         rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
     }
     int rc = tf_chol_solve(g->chol, b, x, n, ctx->err, sizeof ctx->err);
-    for (size_t k = 0; k < n && rc == 0; ++k) {
+    if (rc == 0 && g->efg) { /* displacements at the nodes, not parameters */
+        tf_nodal_map_values(&g->map, x, u, n);
+    }
+    for (size_t k = 0; k < n && rc == 0 && !g->efg; ++k) {
         double *uk = u + k * n3;
         for (size_t d = 0; d < n3; ++d) {
             uk[d] = m == n3        ? x[k * m + d]
@@ -284,6 +364,36 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     return rc;
 }
 
+/* EFG: the parameters of nodal displacements u, through a one-entry cache
+ * (the error norms ask for the field of one u from many threads).
+ * Returns NULL with a message in err. */
+static const double *params_of(galerkin *g, const double *u, char *err, size_t errlen)
+{
+    size_t n3 = 3 * g->map.n;
+    const double *d = NULL;
+#pragma omp critical(tf_galerkin_params)
+    {
+        if (g->d_cache == NULL) {
+            g->d_cache = malloc(n3 * sizeof *g->d_cache);
+            g->u_cache = malloc(n3 * sizeof *g->u_cache);
+        }
+        if (g->d_cache && g->u_cache && g->cache_ok &&
+            memcmp(g->u_cache, u, n3 * sizeof *u) == 0) {
+            d = g->d_cache;
+        } else if (g->d_cache && g->u_cache) {
+            g->cache_ok = 0;
+            if (tf_nodal_map_params(&g->map, u, g->d_cache, err, errlen) == 0) {
+                memcpy(g->u_cache, u, n3 * sizeof *u);
+                g->cache_ok = 1;
+                d = g->d_cache;
+            }
+        } else {
+            snprintf(err, errlen, "out of memory");
+        }
+    }
+    return d;
+}
+
 static int reactions(const tf_solver *s, int contact, const double force[3], const double *u,
                      double *r)
 {
@@ -294,19 +404,29 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
         return tf_fail(s->ctx, "out of memory");
     }
     load_vector(g, contact, force, f);
-    tf_csc_symv(&g->k, u, r, 1);
-    for (size_t d = 0; d < n3; ++d) {
-        r[d] -= f[d];
+    const double *d = g->efg ? params_of((galerkin *)g, u, s->ctx->err, sizeof s->ctx->err) : u;
+    if (d == NULL) {
+        free(f);
+        return -1;
+    }
+    tf_csc_symv(&g->k, d, r, 1);
+    for (size_t q = 0; q < n3; ++q) {
+        r[q] -= f[q];
     }
     free(f);
     return 0;
 }
 
-/* u_h = sum_I phi_I u_I and its gradient, point by point (RPIM interpolant). */
+/* u_h = sum_I phi_I u_I and its gradient, point by point (RPIM interpolant;
+ * EFG: the MLS approximation of the parameters of u). */
 static int field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
                  double *grad, char *err, size_t errlen)
 {
-    const tf_shape *sh = &of_const(s)->sh;
+    const galerkin *g = of_const(s);
+    const tf_shape *sh = &g->sh;
+    if (g->efg && (u = params_of((galerkin *)g, u, err, errlen)) == NULL) {
+        return -1;
+    }
     tf_shape_work w;
     tf_shape_work_init(&w);
     int rc = 0;
@@ -364,10 +484,20 @@ static void report(const tf_solver *s)
     }
 }
 
+static tf_solver *create_rpim(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return create(p, o, ctx, 0);
+}
+
+static tf_solver *create_efg(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return create(p, o, ctx, 1);
+}
+
 const tf_solver_ops tf_galerkin_ops = {
     .name = "rpim-galerkin",
     .summary = "RPIM Galerkin, linear elasticity, one CHOLMOD factorisation (seed 000 §2)",
-    .create = create,
+    .create = create_rpim,
     .caps = caps,
     .solve = solve,
     .history = NULL,
@@ -379,12 +509,33 @@ const tf_solver_ops tf_galerkin_ops = {
     .destroy = destroy,
 };
 
+const tf_solver_ops tf_efg_galerkin_ops = {
+    .name = "efg-galerkin",
+    .summary = "element-free Galerkin (MLS, seed 001 §2), linear elasticity, weak essential "
+               "conditions, one CHOLMOD factorisation",
+    .create = create_efg,
+    .caps = caps,
+    .solve = solve,
+    .history = NULL,
+    .reactions = reactions,
+    .field = field,
+    .node_count = node_count,
+    .coords = coords,
+    .report = report,
+    .destroy = destroy,
+};
+
+static int is_galerkin(const tf_solver *s)
+{
+    return s->ops == &tf_galerkin_ops || s->ops == &tf_efg_galerkin_ops;
+}
+
 const tf_galerkin_info *tf_galerkin_info_of(const tf_solver *s)
 {
-    return s->ops == &tf_galerkin_ops ? &of_const(s)->detail : NULL;
+    return is_galerkin(s) ? &of_const(s)->detail : NULL;
 }
 
 const tf_shape *tf_galerkin_shape(const tf_solver *s)
 {
-    return s->ops == &tf_galerkin_ops ? &of_const(s)->sh : NULL;
+    return is_galerkin(s) ? &of_const(s)->sh : NULL;
 }
