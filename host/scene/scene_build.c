@@ -94,18 +94,73 @@ static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* The scene's key of a tf_material field tf_material_check names. */
+static const char *material_key(const char *field)
+{
+    return strcmp(field, "young") == 0 ? "E" : strcmp(field, "poisson") == 0 ? "nu" : field;
+}
+
+static int kelvin_law(tf_law law)
+{
+    return law == TF_LAW_KELVIN || law == TF_LAW_KELVIN_NH;
+}
+
 static int material(const sd_material *m, tf_problem *s, sd_issue *is)
 {
-    s->material = (tf_material){.law = TF_LAW_LINEAR, .young = m->young, .poisson = m->poisson};
-    if (!(isfinite(m->young) && m->young > 0)) {
-        return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
-                    m->young);
+    tf_material *mat = &s->material;
+    *mat = (tf_material){.law = m->law ? (tf_law)*m->law : TF_LAW_LINEAR,
+                         .poisson = m->poisson,
+                         .young = m->young ? *m->young : NAN,
+                         .k1 = m->k1 ? *m->k1 : NAN,
+                         .k2 = m->k2 ? *m->k2 : NAN,
+                         .eta = m->eta ? *m->eta : NAN,
+                         .k = m->k ? *m->k : 0};
+    const char *law = tf_law_name(mat->law);
+    if (kelvin_law(mat->law)) {
+        const char *missing = !m->k1 ? "k1" : !m->k2 ? "k2" : !m->eta ? "eta" : NULL;
+        if (missing) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", missing);
+            return fail(is, path, "the %s law needs k1, k2 and eta (MPa, MPa, MPa s)", law);
+        }
+        if (m->young) {
+            return fail(is, "material.E",
+                        "the %s law takes k1 (relaxed) and k2 (k1 + k2 instantaneous), not E",
+                        law);
+        }
+        /* the small-strain moduli of the initial response (B-bar, weak
+         * boundary terms): the instantaneous ones */
+        mat->young = mat->k1 + mat->k2;
+    } else {
+        if (!m->young) {
+            return fail(is, "material.E", "'E' is missing: the %s law needs Young's modulus (MPa)",
+                        law);
+        }
+        const char *extra = m->k1 ? "k1" : m->k2 ? "k2" : m->eta ? "eta" : m->k ? "k" : NULL;
+        if (extra) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", extra);
+            return fail(is, path, "belongs to the kelvin laws, not to %s", law);
+        }
     }
-    if (!(m->poisson > -1 && m->poisson < 0.5)) {
-        return fail(is, "material.nu",
-                    "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
-                    "this displacement formulation cannot represent (got %g)",
-                    m->poisson);
+    if (mat->law == TF_LAW_LINEAR) {
+        if (!(isfinite(mat->young) && mat->young > 0)) {
+            return fail(is, "material.E",
+                        "Young's modulus must be a positive number of MPa (got %g)", mat->young);
+        }
+        if (!(mat->poisson > -1 && mat->poisson < 0.5)) {
+            return fail(is, "material.nu",
+                        "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
+                        "this displacement formulation cannot represent (got %g)",
+                        mat->poisson);
+        }
+        return 0;
+    }
+    char why[256], path[32];
+    const char *bad = tf_material_check(mat, why, sizeof why);
+    if (bad != NULL) {
+        snprintf(path, sizeof path, "material.%s", material_key(bad));
+        return fail(is, path, "%s", why);
     }
     return 0;
 }

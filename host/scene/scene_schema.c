@@ -24,6 +24,11 @@ static const cyaml_strval_t faces[] = {
     {"y+", TF_FACE_YMAX}, {"z-", TF_FACE_ZMIN}, {"z+", TF_FACE_ZMAX},
 };
 static const cyaml_strval_t axes[] = {{"x", 0}, {"y", 1}, {"z", 2}};
+static const cyaml_strval_t laws[] = {
+    {"linear", TF_LAW_LINEAR},         {"svk", TF_LAW_SVK},
+    {"neo-hookean", TF_LAW_NEOHOOKE},  {"kelvin", TF_LAW_KELVIN},
+    {"kelvin-neo-hookean", TF_LAW_KELVIN_NH},
+};
 static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, {"z", TF_COMP_Z}};
 static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
@@ -61,8 +66,13 @@ static const cyaml_schema_field_t geometry_fields[] = {
 };
 
 static const cyaml_schema_field_t material_fields[] = {
-    CYAML_FIELD_FLOAT("E", CYAML_FLAG_DEFAULT, sd_material, young),
+    CYAML_FIELD_ENUM_PTR("law", STRICT_OPT, sd_material, law, laws, N(laws)),
+    CYAML_FIELD_FLOAT_PTR("E", OPT, sd_material, young),
     CYAML_FIELD_FLOAT("nu", CYAML_FLAG_DEFAULT, sd_material, poisson),
+    CYAML_FIELD_FLOAT_PTR("k1", OPT, sd_material, k1),
+    CYAML_FIELD_FLOAT_PTR("k2", OPT, sd_material, k2),
+    CYAML_FIELD_FLOAT_PTR("eta", OPT, sd_material, eta),
+    CYAML_FIELD_FLOAT_PTR("k", OPT, sd_material, k),
     CYAML_FIELD_END,
 };
 

@@ -29,8 +29,10 @@ typedef struct sd_geometry {
 } sd_geometry;
 
 typedef struct sd_material {
-    double young;   /* key E */
+    int *law;       /* tf_law; linear when absent */
+    double *young;  /* key E (every law but the Kelvin ones) */
     double poisson; /* key nu */
+    double *k1, *k2, *eta, *k; /* Kelvin laws (materials/material.h) */
 } sd_material;
 
 typedef struct sd_plane {
