@@ -133,6 +133,30 @@ typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_inte
 
 #define TF_SOLVER_METHOD_MAX 32
 
+/* How the nonlinear solver solves each Newton iteration's linear system
+ * (docs/solver.md): a new factorisation of the tangent every iteration; the
+ * last factorisation kept until convergence slows (modified Newton); or a
+ * Krylov method (CG, or GMRES for an unsymmetric tangent) on the current
+ * tangent preconditioned by the last factorisation, refactorised when the
+ * Krylov iterations exceed krylov_max. */
+typedef enum tf_tangent_kind {
+    TF_TANGENT_FULL,
+    TF_TANGENT_MODIFIED,
+    TF_TANGENT_KRYLOV,
+} tf_tangent_kind;
+
+/* Newton-Raphson and load stepping (solvers/nonlinear/). */
+typedef struct tf_newton_opts {
+    double rtol;         /* |residual| <= rtol |internal forces| ... */
+    double etol;         /* ... and |du . residual| <= etol of the step's first */
+    unsigned max_iter;   /* iterations per load step */
+    unsigned steps;      /* load steps to begin with */
+    unsigned max_cuts;   /* halvings of a load step before giving up */
+    tf_tangent_kind tangent;
+    unsigned krylov_max; /* Krylov iterations per solve before refactorising */
+    int ordering;        /* tf_ordering (solvers/cholmod_solve.h) */
+} tf_newton_opts;
+
 /* Which solver (by its registered name, solvers/solver.h) and how it
  * discretises.  The meshless options are those of the RPIM Galerkin solver;
  * a solver ignores what it does not use. */
@@ -152,6 +176,7 @@ typedef struct tf_solver_opts {
     double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
     tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    tf_newton_opts newton; /* nonlinear laws */
 } tf_solver_opts;
 
 typedef enum tf_analytic_kind {

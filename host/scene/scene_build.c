@@ -354,11 +354,46 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .nitsche = 100,
         .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
+        .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 25, .steps = 1, .max_cuts = 10,
+                   .tangent = TF_TANGENT_FULL, .krylov_max = 100, .ordering = 0},
     };
     for (int a = 0; a < 3; ++a) {
         o.cells[a] = grid[a] - 1;
     }
     return o;
+}
+
+static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
+{
+    if (d == NULL) {
+        return 0;
+    }
+    o->rtol = d->tolerance ? *d->tolerance : o->rtol;
+    o->etol = d->energy_tolerance ? *d->energy_tolerance : o->etol;
+    o->max_iter = d->iterations ? *d->iterations : o->max_iter;
+    o->steps = d->steps ? *d->steps : o->steps;
+    o->max_cuts = d->cuts ? *d->cuts : o->max_cuts;
+    o->tangent = d->tangent ? (tf_tangent_kind)*d->tangent : o->tangent;
+    o->krylov_max = d->krylov_iterations ? *d->krylov_iterations : o->krylov_max;
+    if (!(o->rtol > 0 && o->rtol < 1)) {
+        return fail(is, "solver.newton.tolerance", "must lie in (0, 1)");
+    }
+    if (!(o->etol > 0 && o->etol < 1)) {
+        return fail(is, "solver.newton.energy_tolerance", "must lie in (0, 1)");
+    }
+    if (o->max_iter < 1 || o->max_iter > 1000) {
+        return fail(is, "solver.newton.iterations", "1 to 1000 iterations per load step");
+    }
+    if (o->steps < 1 || o->steps > 100000) {
+        return fail(is, "solver.newton.steps", "1 to 100000 load steps to begin with");
+    }
+    if (o->max_cuts > 30) {
+        return fail(is, "solver.newton.cuts", "0 to 30 halvings of a load step");
+    }
+    if (o->krylov_max < 1 || o->krylov_max > 10000) {
+        return fail(is, "solver.newton.krylov_iterations", "1 to 10000 iterations");
+    }
+    return 0;
 }
 
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
@@ -394,6 +429,10 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     o->penalty = d->penalty ? *d->penalty : o->penalty;
     o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
     o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
+    o->newton.ordering = d->ordering ? *d->ordering : o->newton.ordering;
+    if (newton(d->newton, &o->newton, is) != 0) {
+        return -1;
+    }
     o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
     if (!(isfinite(o->support) && o->support > 0)) {
         return fail(is, "solver.support", "must be a positive number of nodal spacings");

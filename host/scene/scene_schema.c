@@ -44,6 +44,11 @@ static const cyaml_strval_t bcs[] = {
     {"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}, {"nitsche", TF_BC_NITSCHE}};
 static const cyaml_strval_t integrations[] = {{"gauss", TF_INTEGRATION_GAUSS},
                                               {"vci", TF_INTEGRATION_VCI}};
+/* tf_ordering values (solvers/cholmod_solve.h) */
+static const cyaml_strval_t orderings[] = {{"default", 0}, {"amd", 1}, {"metis", 2}, {"nesdis", 3}};
+static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
+                                          {"modified", TF_TANGENT_MODIFIED},
+                                          {"krylov", TF_TANGENT_KRYLOV}};
 /* tfit_family values (tfit.h) of the forward families */
 static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
@@ -144,6 +149,17 @@ static const cyaml_schema_field_t rbf_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t newton_fields[] = {
+    CYAML_FIELD_FLOAT_PTR("tolerance", OPT, sd_newton, tolerance),
+    CYAML_FIELD_FLOAT_PTR("energy_tolerance", OPT, sd_newton, energy_tolerance),
+    CYAML_FIELD_UINT_PTR("iterations", OPT, sd_newton, iterations),
+    CYAML_FIELD_UINT_PTR("steps", OPT, sd_newton, steps),
+    CYAML_FIELD_UINT_PTR("cuts", OPT, sd_newton, cuts),
+    CYAML_FIELD_ENUM_PTR("tangent", STRICT_OPT, sd_newton, tangent, tangents, N(tangents)),
+    CYAML_FIELD_UINT_PTR("krylov_iterations", OPT, sd_newton, krylov_iterations),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_STRING_PTR("method", OPT, sd_solver, method, 1, TF_SOLVER_METHOD_MAX - 1),
     CYAML_FIELD_FLOAT_PTR("support", OPT, sd_solver, support),
@@ -160,6 +176,8 @@ static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_FLOAT_PTR("nitsche", OPT, sd_solver, nitsche),
     CYAML_FIELD_ENUM_PTR("integration", STRICT_OPT, sd_solver, integration, integrations,
                          N(integrations)),
+    CYAML_FIELD_ENUM_PTR("ordering", STRICT_OPT, sd_solver, ordering, orderings, N(orderings)),
+    CYAML_FIELD_MAPPING_PTR("newton", OPT, sd_solver, newton, newton_fields),
     CYAML_FIELD_FLOAT_PTR("rcond_warn", OPT, sd_solver, rcond_warn),
     CYAML_FIELD_END,
 };

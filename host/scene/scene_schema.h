@@ -89,6 +89,12 @@ typedef struct sd_rbf {
     double *q;
 } sd_rbf;
 
+typedef struct sd_newton {
+    double *tolerance, *energy_tolerance;
+    unsigned *iterations, *steps, *cuts, *krylov_iterations;
+    int *tangent; /* tf_tangent_kind */
+} sd_newton;
+
 typedef struct sd_solver {
     char *method;    /* a registered solver's name (solvers/solver.h) */
     double *support;
@@ -102,6 +108,8 @@ typedef struct sd_solver {
     double *penalty;
     double *nitsche;
     int *integration; /* tf_integration */
+    int *ordering;    /* tf_ordering */
+    sd_newton *newton;
     double *rcond_warn;
 } sd_solver;
 

@@ -24,6 +24,30 @@ typedef struct tf_chol_info {
  * definite or memory runs out. */
 tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t errlen);
 
+/* Fill-reducing orderings: CHOLMOD's own choice (AMD, then METIS when the
+ * fill is high: tf_chol_factor's), or one of them forced. */
+typedef enum tf_ordering {
+    TF_ORDER_DEFAULT,
+    TF_ORDER_AMD,
+    TF_ORDER_METIS,
+    TF_ORDER_NESDIS,
+} tf_ordering;
+
+/* The symbolic analysis of A's pattern only, with the given ordering
+ * (a Newton solver analyses once and refactorises many times).  Returns
+ * NULL with a message. */
+tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, tf_chol_info *info, char *err,
+                         size_t errlen);
+
+/* Numeric factorisation of A (the pattern analysed) into c, replacing the
+ * last one.  Returns 0; 1 when A is not positive definite (c then holds no
+ * usable factor); -1 with a message on other failures.  *t gets the
+ * seconds it took. */
+int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen);
+
+/* The ordering's name ("AMD", ...) of an analysed c. */
+const char *tf_chol_ordering(const tf_chol *c);
+
 /* Solves A X = B for ncol columns (column major, length n each).
  * Returns 0, or -1 with a message. */
 int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen);

@@ -70,6 +70,8 @@ void tf_nodal_map_free(tf_nodal_map *m)
     free(m->ptr);
     free(m->col);
     free(m->val);
+    free(m->u_cache);
+    free(m->d_cache);
     memset(m, 0, sizeof *m);
 }
 
@@ -156,4 +158,31 @@ int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, 
         return -1;
     }
     return 0;
+}
+
+const double *tf_nodal_map_params_of(tf_nodal_map *m, const double *u, char *err,
+                                     size_t errlen)
+{
+    size_t n3 = 3 * m->n;
+    const double *d = NULL;
+#pragma omp critical(tf_nodal_map_cache)
+    {
+        if (m->d_cache == NULL) {
+            m->d_cache = malloc(n3 * sizeof *m->d_cache);
+            m->u_cache = malloc(n3 * sizeof *m->u_cache);
+        }
+        if (m->d_cache == NULL || m->u_cache == NULL) {
+            snprintf(err, errlen, "out of memory");
+        } else if (m->cache_ok && memcmp(m->u_cache, u, n3 * sizeof *u) == 0) {
+            d = m->d_cache;
+        } else {
+            m->cache_ok = 0;
+            if (tf_nodal_map_params(m, u, m->d_cache, err, errlen) == 0) {
+                memcpy(m->u_cache, u, n3 * sizeof *u);
+                m->cache_ok = 1;
+                d = m->d_cache;
+            }
+        }
+    }
+    return d;
 }

@@ -20,6 +20,8 @@ typedef struct tf_nodal_map {
     int *col;        /* node J */
     double *val;     /* phi_J(x_I) */
     void *symbolic, *numeric; /* UMFPACK's factorisation of Lambda (lazily) */
+    double *u_cache, *d_cache; /* the last u turned into parameters, and them */
+    int cache_ok;
 } tf_nodal_map;
 
 /* Lambda of the shape functions sh at their own nodes.  Returns 0, or -1
@@ -34,5 +36,12 @@ void tf_nodal_map_values(const tf_nodal_map *m, const double *d, double *u, size
  * (Lambda singular, out of memory).  Not reentrant: the first call
  * factorises. */
 int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, size_t errlen);
+
+/* The parameters of u through a one-entry cache: the same u asked again
+ * (the field of one solution at many points, from many threads at once)
+ * costs a comparison.  Thread-safe; the pointer stays valid until a
+ * different u is asked for.  Returns NULL with a message in err. */
+const double *tf_nodal_map_params_of(tf_nodal_map *m, const double *u, char *err,
+                                     size_t errlen);
 
 #endif /* TF_NODAL_VALUES_H */

@@ -35,7 +35,9 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
     if (s == NULL) {
         return NULL;
     }
-    s->ops = type;
+    if (s->ops == NULL) { /* (a type may hand over to another implementation) */
+        s->ops = type;
+    }
     s->problem = p;
     s->opts = *o;
     s->ctx = ctx;

@@ -16,8 +16,10 @@
 #include "solvers/boundary.h"
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
+#include "solvers/field.h"
 #include "solvers/loads.h"
 #include "solvers/nodal_values.h"
+#include "solvers/nonlinear/nonlinear.h"
 
 typedef struct galerkin {
     tf_solver base;    /* first: a galerkin is a tf_solver (base.opts: its options) */
@@ -27,8 +29,6 @@ typedef struct galerkin {
     int weak;          /* essential conditions in weak form (boundary.h) */
     tf_boundary bnd;   /* weak: Gamma_u's points */
     tf_nodal_map map;  /* EFG: parameters -> nodal displacements */
-    double *d_cache, *u_cache; /* EFG field: the parameters of the last u asked for */
-    int cache_ok;
     tf_csc k;          /* stiffness of the body, every DOF (weak terms not included) */
     tf_constraints bc; /* prescribed DOFs */
     double *f0;        /* 3N: the problem's loads */
@@ -173,8 +173,6 @@ static void destroy(tf_solver *s)
     tf_constraints_release(&g->bc);
     tf_boundary_free(&g->bnd);
     tf_nodal_map_free(&g->map);
-    free(g->d_cache);
-    free(g->u_cache);
     free(g->f0);
     free(g->basis);
     free(g->rhs0);
@@ -225,9 +223,7 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
 static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx, int efg)
 {
     if (p->material.law != TF_LAW_LINEAR) {
-        tf_fail(ctx, "%s: the %s solver solves linear elastic materials, not %s", p->name,
-                efg ? "efg-galerkin" : "rpim-galerkin", tf_law_name(p->material.law));
-        return NULL;
+        return tf_nonlinear_create(p, o, ctx, efg);
     }
     if (efg && o->bc == TF_BC_ELIMINATION) {
         tf_fail(ctx,
@@ -364,36 +360,6 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     return rc;
 }
 
-/* EFG: the parameters of nodal displacements u, through a one-entry cache
- * (the error norms ask for the field of one u from many threads).
- * Returns NULL with a message in err. */
-static const double *params_of(galerkin *g, const double *u, char *err, size_t errlen)
-{
-    size_t n3 = 3 * g->map.n;
-    const double *d = NULL;
-#pragma omp critical(tf_galerkin_params)
-    {
-        if (g->d_cache == NULL) {
-            g->d_cache = malloc(n3 * sizeof *g->d_cache);
-            g->u_cache = malloc(n3 * sizeof *g->u_cache);
-        }
-        if (g->d_cache && g->u_cache && g->cache_ok &&
-            memcmp(g->u_cache, u, n3 * sizeof *u) == 0) {
-            d = g->d_cache;
-        } else if (g->d_cache && g->u_cache) {
-            g->cache_ok = 0;
-            if (tf_nodal_map_params(&g->map, u, g->d_cache, err, errlen) == 0) {
-                memcpy(g->u_cache, u, n3 * sizeof *u);
-                g->cache_ok = 1;
-                d = g->d_cache;
-            }
-        } else {
-            snprintf(err, errlen, "out of memory");
-        }
-    }
-    return d;
-}
-
 static int reactions(const tf_solver *s, int contact, const double force[3], const double *u,
                      double *r)
 {
@@ -404,7 +370,9 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
         return tf_fail(s->ctx, "out of memory");
     }
     load_vector(g, contact, force, f);
-    const double *d = g->efg ? params_of((galerkin *)g, u, s->ctx->err, sizeof s->ctx->err) : u;
+    const double *d =
+        g->efg ? tf_nodal_map_params_of((tf_nodal_map *)&g->map, u, s->ctx->err, sizeof s->ctx->err)
+               : u;
     if (d == NULL) {
         free(f);
         return -1;
@@ -417,43 +385,16 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
     return 0;
 }
 
-/* u_h = sum_I phi_I u_I and its gradient, point by point (RPIM interpolant;
- * EFG: the MLS approximation of the parameters of u). */
+/* u_h = sum_I phi_I u_I and its gradient (RPIM interpolant; EFG: the MLS
+ * approximation of the parameters of u). */
 static int field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
                  double *grad, char *err, size_t errlen)
 {
     const galerkin *g = of_const(s);
-    const tf_shape *sh = &g->sh;
-    if (g->efg && (u = params_of((galerkin *)g, u, err, errlen)) == NULL) {
+    if (g->efg && (u = tf_nodal_map_params_of((tf_nodal_map *)&g->map, u, err, errlen)) == NULL) {
         return -1;
     }
-    tf_shape_work w;
-    tf_shape_work_init(&w);
-    int rc = 0;
-    for (size_t p = 0; p < np && rc == 0; ++p) {
-        const double *xp = x + 3 * p;
-        double *up = uh + 3 * p, *gp = grad + 9 * p;
-        rc = tf_shape_at(sh, &w, xp, tf_shape_cell(sh, xp), 1);
-        if (rc != 0) {
-            snprintf(err, errlen, "%s", w.err);
-            break;
-        }
-        for (int i = 0; i < 9; ++i) {
-            gp[i] = 0;
-        }
-        up[0] = up[1] = up[2] = 0;
-        for (size_t k = 0; k < w.n; ++k) {
-            const double *ui = u + 3 * (size_t)w.idx[k];
-            for (int i = 0; i < 3; ++i) {
-                up[i] += w.phi[k] * ui[i];
-                for (int j = 0; j < 3; ++j) {
-                    gp[3 * i + j] += w.dphi[(size_t)j * w.n + k] * ui[i];
-                }
-            }
-        }
-    }
-    tf_shape_work_free(&w);
-    return rc;
+    return tf_shape_field(&g->sh, u, x, np, uh, grad, err, errlen);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }
