@@ -20,6 +20,7 @@
 #include <stdint.h>
 
 #include "materials/material.h"
+#include "problem/history.h"
 #include "problem/nodes.h"
 
 #define TF_PROBLEM_NAME_MAX 64
@@ -209,6 +210,7 @@ typedef struct tf_problem {
     tf_outputs outputs;
     tf_solver_opts solver;
     tf_analytic analytic;
+    tf_history history;   /* how the loads change in time (present: 0 when not given) */
 } tf_problem;
 
 /* Frees what the problem owns (cloud, fixed nodes, loads, contacts, outputs)

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "problem/regions.h"
+#include "scene/scene_history.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
@@ -549,7 +550,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
-        fit(doc->fit, s, plan, is) != 0) {
+        sd_history_build(doc->history, s, is) != 0 || fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }
     if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {

@@ -190,6 +190,32 @@ static const cyaml_schema_field_t reference_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_strval_t segment_kinds[] = {
+    {"step", TF_SEG_STEP}, {"release", TF_SEG_RELEASE}, {"ramp", TF_SEG_RAMP},
+    {"hold", TF_SEG_HOLD}, {"sinusoid", TF_SEG_SINUSOID}};
+
+static const cyaml_schema_field_t segment_fields[] = {
+    CYAML_FIELD_ENUM("kind", CYAML_FLAG_STRICT, sd_segment, kind, segment_kinds, N(segment_kinds)),
+    CYAML_FIELD_FLOAT_PTR("to", OPT, sd_segment, to),
+    CYAML_FIELD_FLOAT_PTR("time", OPT, sd_segment, time),
+    CYAML_FIELD_FLOAT_PTR("amplitude", OPT, sd_segment, amplitude),
+    CYAML_FIELD_FLOAT_PTR("period", OPT, sd_segment, period),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t segment_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_segment, segment_fields)};
+
+static const cyaml_schema_field_t history_fields[] = {
+    CYAML_FIELD_FLOAT("dt", CYAML_FLAG_DEFAULT, sd_history, dt),
+    CYAML_FIELD_FLOAT("duration", CYAML_FLAG_DEFAULT, sd_history, duration),
+    CYAML_FIELD_SEQUENCE_FIXED("force", OPT_PTR, sd_history, force, &real, 3),
+    CYAML_FIELD_STRING_PTR("contact", OPT, sd_history, contact, 1, TF_PROBLEM_NAME_MAX - 1),
+    CYAML_FIELD_SEQUENCE("segments", OPT_PTR, sd_history, segments, &segment_entry, 1,
+                         CYAML_UNLIMITED),
+    CYAML_FIELD_STRING_PTR("table", OPT, sd_history, table, 1, 4095),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
     CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_PROBLEM_NAME_MAX - 1),
@@ -215,6 +241,7 @@ static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_MAPPING("outputs", CYAML_FLAG_DEFAULT, sd_scene, outputs, outputs_fields),
     CYAML_FIELD_MAPPING_PTR("solver", OPT, sd_scene, solver, solver_fields),
     CYAML_FIELD_MAPPING_PTR("reference", OPT, sd_scene, reference, reference_fields),
+    CYAML_FIELD_MAPPING_PTR("history", OPT, sd_scene, history, history_fields),
     CYAML_FIELD_MAPPING_PTR("fit", OPT, sd_scene, fit, fit_fields),
     CYAML_FIELD_END,
 };

@@ -120,6 +120,20 @@ typedef struct sd_reference {
     double *gradient; /* 9 */
 } sd_reference;
 
+typedef struct sd_segment {
+    int kind;         /* tf_segment_kind */
+    double *to, *time, *amplitude, *period;
+} sd_segment;
+
+typedef struct sd_history {
+    double dt, duration;
+    double *force;    /* 3 */
+    char *contact;
+    sd_segment *segments;
+    unsigned segments_count;
+    char *table;      /* CSV file of t, fx, fy, fz */
+} sd_history;
+
 typedef struct sd_fit {
     int *family;       /* tfit_family of the forward model to emit */
     char *contact;     /* contact site name */
@@ -141,6 +155,7 @@ typedef struct sd_scene {
     sd_outputs outputs;
     sd_solver *solver;
     sd_reference *reference;
+    sd_history *history;
     sd_fit *fit;
 } sd_scene;
 

@@ -97,6 +97,7 @@ tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t e
     info->nnz_l = c->cm.lnz;
     info->flops = c->cm.fl;
     info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    info->rcond = cholmod_rcond(c->l, &c->cm);
     return c;
 }
 
@@ -122,8 +123,8 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
     return 0;
 }
 
-tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, tf_chol_info *info, char *err,
-                         size_t errlen)
+tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
+                         char *err, size_t errlen)
 {
     tf_chol *c = calloc(1, sizeof *c);
     if (c == NULL) {
@@ -133,6 +134,10 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, tf_chol_info *info, c
     cholmod_start(&c->cm);
     c->cm.print = 0;
     c->n = a->n;
+    if (ldl) {
+        c->cm.supernodal = CHOLMOD_SIMPLICIAL;
+        c->cm.final_ll = 0;
+    }
     if (ord != TF_ORDER_DEFAULT) {
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = ord == TF_ORDER_AMD     ? CHOLMOD_AMD
@@ -164,7 +169,7 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
     double t0 = omp_get_wtime();
     int ok = cholmod_factorize(&s, c->l, &c->cm);
     *t = omp_get_wtime() - t0;
-    if (c->cm.status == CHOLMOD_NOT_POSDEF) {
+    if (c->cm.status == CHOLMOD_NOT_POSDEF || (ok && c->l->minor < c->n)) {
         return 1;
     }
     if (!ok || c->cm.status != CHOLMOD_OK) {

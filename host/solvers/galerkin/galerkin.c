@@ -143,6 +143,7 @@ static int factorise(galerkin *g, tf_ctx *ctx)
     g->detail.nnz_l = ci.nnz_l;
     g->detail.flops = ci.flops;
     g->detail.ordering = ci.ordering;
+    g->detail.rcond = ci.rcond;
     return 0;
 }
 
@@ -266,8 +267,10 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
         destroy(&g->base);
         return NULL;
     }
-    tf_info(ctx, "solver: factorised in %.2f s (%s ordering, %.3g entries in L)",
-            g->detail.t_factor, g->detail.ordering, g->detail.nnz_l);
+    tf_info(ctx,
+            "solver: factorised in %.2f s (%s ordering, %.3g entries in L, reciprocal "
+            "condition about %.2g)",
+            g->detail.t_factor, g->detail.ordering, g->detail.nnz_l, g->detail.rcond);
     g->base.info = (tf_solver_info){
         .nodes = p->cloud.n,
         .dofs = n3,

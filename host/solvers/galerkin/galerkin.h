@@ -35,6 +35,7 @@ typedef struct tf_galerkin_info {
     size_t points;        /* volume Gauss points */
     size_t nnz_k;         /* stored entries of K (lower triangle) */
     double nnz_l, flops;  /* factor entries, factorisation flops */
+    double rcond;         /* CHOLMOD's rough reciprocal condition of the factorised system */
     const char *ordering;
     /* wall-clock seconds */
     double t_pattern;     /* supports of every cell, sparsity pattern */

@@ -742,3 +742,47 @@ void nl_external(const nl_solver *s, const nl_target *t, double *f)
         }
     }
 }
+
+/* The support's force on the body from one fixed region, weak form:
+ * minus the sum over the nodes of the region's boundary terms, i.e.
+ * sum_q w (S P N - beta S g) (Nitsche) or -sum_q w alpha S g (penalty),
+ * at the state (d, histories) just committed: the laws evaluated with
+ * dt = 0 from the committed history give its stress back. */
+int nl_region_force(nl_solver *s, size_t region, double force[3])
+{
+    force[0] = force[1] = force[2] = 0;
+    for (size_t q = 0; q < s->bnd.n; ++q) {
+        const tf_bpoint *bp = &s->bnd.pt[q];
+        if (bp->region != region) {
+            continue;
+        }
+        double g[3], F[9], Sv[6], St[9], P[9];
+        boundary_state(s, q, s->d, s->at.scale, g, F);
+        double f = s->base.opts.bc == TF_BC_PENALTY ? s->bc_factor : 0;
+        if (s->base.opts.bc == TF_BC_NITSCHE) {
+            double *h = s->bhist + q * s->nh;
+            if (tf_material_eval(&s->mat, F, 0, h, s->bhist_new + q * s->nh, Sv, NULL, NULL) !=
+                TF_MAT_OK) {
+                return tf_fail(s->base.ctx, "J <= 0 at the boundary point (%g, %g, %g) mm",
+                               bp->x[0], bp->x[1], bp->x[2]);
+            }
+            tensor_of_voigt(Sv, St);
+            if (s->small) {
+                memcpy(P, St, sizeof P);
+            } else {
+                tf_matmul3(F, St, P);
+            }
+            f = s->bc_factor;
+            for (int a = 0; a < 3; ++a) {
+                if ((bp->mask >> a) & 1u) {
+                    force[a] += bp->w * (P[3 * a] * bp->n[0] + P[3 * a + 1] * bp->n[1] +
+                                         P[3 * a + 2] * bp->n[2]);
+                }
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            force[a] -= bp->w * f * g[a];
+        }
+    }
+    return 0;
+}

@@ -39,7 +39,7 @@ typedef struct nl_fault {
 
 /* Counters for the report and the benchmark. */
 typedef struct nl_stats {
-    size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov;
+    size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov, indefinite;
     double t_residual, t_tangent, t_factor, t_solve;
 } nl_stats;
 
@@ -80,8 +80,10 @@ typedef struct nl_solver {
     tf_nodal_map map;   /* EFG */
     double *f0, *basis; /* loads (3N), unit contact columns (3 x 3N per site) */
     /* linear algebra */
-    tf_chol *chol;
+    tf_chol *chol;      /* Cholesky of the tangent */
+    tf_chol *ldl;       /* LDL^T, when the tangent is not positive definite */
     int chol_ok;        /* holds a usable factor */
+    int use_ldl;        /* the usable factor is the LDL^T one */
     tf_chol_info ci;
     /* work */
     double *r, *fint, *du, *dtrial, *rtrial, *wk; /* 3N each; wk: Krylov space */
@@ -102,6 +104,10 @@ void nl_model_free(nl_solver *s);
  * inverts (fault filled); -1 with a message in ctx. */
 int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
                 double *r, double *fint, nl_fault *fault);
+
+/* The support's force (N) on the body from fixed region `region` in the
+ * committed state, weak essential conditions.  Returns 0, or -1. */
+int nl_region_force(nl_solver *s, size_t region, double force[3]);
 
 /* External forces of a target (3N). */
 void nl_external(const nl_solver *s, const nl_target *t, double *f);

@@ -48,12 +48,37 @@ static void eliminate(nl_solver *s)
     }
 }
 
+/* A tangent that is not positive definite (past a limit point, St.
+ * Venant-Kirchhoff's material instability in compression) still has an
+ * LDL^T factorisation unless a pivot vanishes; Newton's method then goes on
+ * along the load path, and the step is cut only when that fails too. */
+static int factor_indefinite(nl_solver *s)
+{
+    tf_ctx *ctx = s->base.ctx;
+    if (s->ldl == NULL) {
+        tf_chol_info ci;
+        s->ldl = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.newton.ordering, 1, &ci,
+                                 ctx->err, sizeof ctx->err);
+        if (s->ldl == NULL) {
+            return -1;
+        }
+    }
+    double t;
+    int rc = tf_chol_refactor(s->ldl, &s->k, &t, ctx->err, sizeof ctx->err);
+    s->st.factorisations++;
+    s->st.indefinite++;
+    s->st.t_factor += t;
+    s->chol_ok = rc == 0;
+    s->use_ldl = rc == 0;
+    return rc;
+}
+
 int nl_factor(nl_solver *s)
 {
     tf_ctx *ctx = s->base.ctx;
     eliminate(s);
     if (s->chol == NULL) {
-        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.newton.ordering, &s->ci,
+        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.newton.ordering, 0, &s->ci,
                                   ctx->err, sizeof ctx->err);
         if (s->chol == NULL) {
             return -1;
@@ -64,7 +89,8 @@ int nl_factor(nl_solver *s)
     s->st.factorisations++;
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
-    return rc;
+    s->use_ldl = 0;
+    return rc == 1 ? factor_indefinite(s) : rc;
 }
 
 void nl_tangent_apply(const nl_solver *s, const double *x, double *y)
@@ -83,9 +109,14 @@ void nl_tangent_apply(const nl_solver *s, const double *x, double *y)
     }
 }
 
+static tf_chol *factor_of(nl_solver *s)
+{
+    return s->use_ldl ? s->ldl : s->chol;
+}
+
 static int precondition(nl_solver *s, const double *r, double *z)
 {
-    return tf_chol_solve(s->chol, r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
+    return tf_chol_solve(factor_of(s), r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
 }
 
 /* Preconditioned conjugate gradients for K x = b, x = 0 first.  Returns the
@@ -259,7 +290,7 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
         return rc;
     }
     int done = 0, failed = 0;
-    if (fresh_tangent && (kind == TF_TANGENT_KRYLOV || s->kskew != NULL)) {
+    if (fresh_tangent && !s->use_ldl && (kind == TF_TANGENT_KRYLOV || s->kskew != NULL)) {
         done = krylov(s, b, du, &failed);
         if (!done && !failed && kind == TF_TANGENT_KRYLOV) {
             /* the old factor no longer helps: refactorise and try again */
@@ -267,7 +298,7 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
             done = rc == 0 && krylov(s, b, du, &failed);
         }
     } else {
-        failed = tf_chol_solve(s->chol, b, du, 1, ctx->err, sizeof ctx->err) != 0;
+        failed = tf_chol_solve(factor_of(s), b, du, 1, ctx->err, sizeof ctx->err) != 0;
         done = !failed;
     }
     s->st.t_solve += omp_get_wtime() - t0;

@@ -316,3 +316,32 @@ int tf_nonlinear_displacements(tf_solver *sv, double *u)
     outputs(of(sv), u);
     return 0;
 }
+
+int tf_nonlinear_region_force(tf_solver *sv, size_t region, double force[3])
+{
+    if (!is_nonlinear(sv) || region >= sv->problem->n_fixed) {
+        return tf_fail(sv->ctx, "no fixed region %zu in the nonlinear solver's problem", region);
+    }
+    nl_solver *s = of(sv);
+    if (s->weak) {
+        return nl_region_force(s, region, force);
+    }
+    size_t n3 = 3 * s->sh.cloud->n;
+    double *r = malloc(n3 * sizeof *r), *fext = malloc(n3 * sizeof *fext);
+    nl_fault f = {0};
+    int rc = r && fext ? nl_assemble(s, s->d, &s->at, 0, 0, r, s->fint, &f) : -1;
+    if (rc == 0) {
+        nl_external(s, &s->at, fext);
+        const tf_fixed *fx = &sv->problem->fixed[region];
+        force[0] = force[1] = force[2] = 0;
+        for (size_t k = 0; k < fx->n_nodes; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                size_t dof = 3 * (size_t)fx->nodes[k] + (size_t)a;
+                force[a] += (fx->components >> a) & 1u ? s->fint[dof] - fext[dof] : 0;
+            }
+        }
+    }
+    free(r);
+    free(fext);
+    return rc == 0 ? 0 : tf_fail(sv->ctx, "the reactions could not be evaluated");
+}

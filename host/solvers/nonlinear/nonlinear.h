@@ -57,4 +57,10 @@ int tf_nonlinear_advance(tf_solver *s, double scale, int contact, const double f
 /* The current state's displacements at the nodes (3N). */
 int tf_nonlinear_displacements(tf_solver *s, double *u);
 
+/* The force (N) the supports of fixed region `region` (problem.h order)
+ * exert on the body in the current state: with weak essential conditions
+ * the region's boundary terms, with elimination the residual at its
+ * prescribed DOFs.  Returns 0, or -1 with a message. */
+int tf_nonlinear_region_force(tf_solver *s, size_t region, double force[3]);
+
 #endif /* TF_NONLINEAR_H */

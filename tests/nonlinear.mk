@@ -1,0 +1,26 @@
+# nonlinear.mk — the nonlinear and viscoelastic Galerkin solver (issue 13):
+# studies behind their own targets, with committed results.
+#
+#   nonlinear-validation   docs/validation/nonlinear/: the homogeneous tests
+#                          against closed forms (RPIM and EFG), the EFG patch
+#                          test and cantilever, the weak boundary conditions
+#                          compared; tables and plots of docs/validation.md §7
+# Unit tests (tests/unit/test_{nonlinear,weak_bc,homogeneous}.c) run with
+# check-unit and check-sanitize.
+
+NL_TOOLS := $(T)/solver/homogeneous
+
+$(T)/solver/homogeneous: tests/solver/homogeneous.c tests/support/homogeneous.c $(B)/native/libtissuefit-host.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $(filter %.c,$^) $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
+
+.PHONY: nonlinear-validation
+nonlinear-validation: $(B)/bin/tissuefit $(NL_TOOLS) | deps-validation
+	@tests/solver/nonlinear_validation.sh $(B)/bin/tissuefit $(T)/solver docs/validation/nonlinear
+
+.PHONY: check-nonlinear-cli
+CHECKS += check-nonlinear-cli
+check-nonlinear-cli: $(B)/bin/tissuefit
+	@echo "== tissuefit solve with nonlinear laws and load histories =="
+	@tests/solver/nonlinear_cli.sh $(B)/bin/tissuefit
