@@ -8,7 +8,7 @@
 # Unit tests (tests/unit/test_{nonlinear,weak_bc,homogeneous}.c) run with
 # check-unit and check-sanitize.
 
-NL_TOOLS := $(T)/solver/homogeneous
+NL_TOOLS := $(T)/solver/homogeneous $(T)/solver/block48_curves $(T)/solver/bench_nonlinear
 
 $(T)/solver/homogeneous: tests/solver/homogeneous.c tests/support/homogeneous.c $(B)/native/libtissuefit-host.a | deps-build
 	@mkdir -p $(@D)
@@ -24,3 +24,12 @@ CHECKS += check-nonlinear-cli
 check-nonlinear-cli: $(B)/bin/tissuefit
 	@echo "== tissuefit solve with nonlinear laws and load histories =="
 	@tests/solver/nonlinear_cli.sh $(B)/bin/tissuefit
+
+# make bench: Newton iterations per load step and time per nonlinear case at
+# the seed's grid and at 41 x 41 x 9, against one linear solve in the same run.
+.PHONY: bench-nonlinear
+BENCHES += bench-nonlinear
+bench-nonlinear: $(T)/solver/bench_nonlinear
+	@echo "== nonlinear solver: block48 cases from rest (issue 13: 3 N neo-Hookean at 41x41x9 <= 3 x one linear solve) =="
+	@$(T)/solver/bench_nonlinear 11,11,3 3
+	@$(T)/solver/bench_nonlinear 41,41,9 1

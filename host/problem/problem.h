@@ -136,14 +136,16 @@ typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_inte
 
 /* How the nonlinear solver solves each Newton iteration's linear system
  * (docs/solver.md): a new factorisation of the tangent every iteration; the
- * last factorisation kept until convergence slows (modified Newton); or a
+ * last factorisation kept until convergence slows (modified Newton); a
  * Krylov method (CG, or GMRES for an unsymmetric tangent) on the current
  * tangent preconditioned by the last factorisation, refactorised when the
- * Krylov iterations exceed krylov_max. */
+ * Krylov iterations exceed krylov_max; or quasi-Newton (limited-memory
+ * BFGS) updates of the last factorisation, refactorised when they stall. */
 typedef enum tf_tangent_kind {
     TF_TANGENT_FULL,
     TF_TANGENT_MODIFIED,
     TF_TANGENT_KRYLOV,
+    TF_TANGENT_BFGS,
 } tf_tangent_kind;
 
 /* Newton-Raphson and load stepping (solvers/nonlinear/). */
@@ -155,7 +157,6 @@ typedef struct tf_newton_opts {
     unsigned max_cuts;   /* halvings of a load step before giving up */
     tf_tangent_kind tangent;
     unsigned krylov_max; /* Krylov iterations per solve before refactorising */
-    int ordering;        /* tf_ordering (solvers/cholmod_solve.h) */
 } tf_newton_opts;
 
 /* Which solver (by its registered name, solvers/solver.h) and how it
@@ -177,6 +178,7 @@ typedef struct tf_solver_opts {
     double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
     tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    int ordering;     /* fill-reducing ordering, tf_ordering (solvers/cholmod_solve.h) */
     tf_newton_opts newton; /* nonlinear laws */
 } tf_solver_opts;
 

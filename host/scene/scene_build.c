@@ -355,8 +355,9 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .nitsche = 100,
         .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
-        .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 25, .steps = 1, .max_cuts = 10,
-                   .tangent = TF_TANGENT_FULL, .krylov_max = 100, .ordering = 0},
+        .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
+                   .tangent = TF_TANGENT_FULL, .krylov_max = 100},
+        .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
         o.cells[a] = grid[a] - 1;
@@ -430,7 +431,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     o->penalty = d->penalty ? *d->penalty : o->penalty;
     o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
     o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
-    o->newton.ordering = d->ordering ? *d->ordering : o->newton.ordering;
+    o->ordering = d->ordering ? *d->ordering : o->ordering;
     if (newton(d->newton, &o->newton, is) != 0) {
         return -1;
     }

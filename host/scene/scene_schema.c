@@ -48,7 +48,8 @@ static const cyaml_strval_t integrations[] = {{"gauss", TF_INTEGRATION_GAUSS},
 static const cyaml_strval_t orderings[] = {{"default", 0}, {"amd", 1}, {"metis", 2}, {"nesdis", 3}};
 static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
                                           {"modified", TF_TANGENT_MODIFIED},
-                                          {"krylov", TF_TANGENT_KRYLOV}};
+                                          {"krylov", TF_TANGENT_KRYLOV},
+                                          {"bfgs", TF_TANGENT_BFGS}};
 /* tfit_family values (tfit.h) of the forward families */
 static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},

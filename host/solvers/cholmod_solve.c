@@ -101,6 +101,8 @@ tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t e
     return c;
 }
 
+double tf_chol_rcond(tf_chol *c) { return cholmod_rcond(c->l, &c->cm); }
+
 int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen)
 {
     cholmod_dense d;
@@ -159,6 +161,7 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
     info->nnz_l = c->cm.lnz;
     info->flops = c->cm.fl;
     info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    info->rcond = 0;
     return c;
 }
 

@@ -48,6 +48,9 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
  * other failures.  *t gets the seconds it took. */
 int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen);
 
+/* CHOLMOD's rough reciprocal condition of the last factorisation. */
+double tf_chol_rcond(tf_chol *c);
+
 /* The ordering's name ("AMD", ...) of an analysed c. */
 const char *tf_chol_ordering(const tf_chol *c);
 

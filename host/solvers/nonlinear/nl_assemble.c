@@ -41,16 +41,22 @@
 #include "solvers/assemble.h"
 #include "solvers/nonlinear/nl_internal.h"
 
-#define BATCH 32
+/* Cells computed in parallel before they are added in cell order (the
+ * same sums whatever the thread count): all of them for the forces, and
+ * for the tangent as many as 64 MB of cell matrices hold.  Few large
+ * batches: every batch ends in a barrier, and on a loaded machine threads
+ * spinning there took 90 % of a small solve's time with batches of 32. */
+#define TANGENT_BATCH_BYTES (64.0 * 1024 * 1024)
 
 /* One thread's buffers for one cell. */
 typedef struct cell_buf {
-    double *dl, *bs, *cbs, *gs, *sgs, *ds, *hs, *hc, *dj, *hv, *sv, *ms, *o;
+    double *dl, *bs, *cbs, *gs, *sgs, *hs, *hc, *dj, *hv, *sv, *ms, *o;
     double *pt;   /* per point: F(9) S(6) C(36) J, q~, kappa, P(9) */
 } cell_buf;
 
-#define PT_STRIDE 64
-enum { PT_F = 0, PT_S = 9, PT_C = 15, PT_J = 51 /* J - 1 */, PT_Q = 52, PT_KAPPA = 53, PT_P = 54 };
+#define PT_STRIDE 72
+/* per point: F, S (Voigt), C, J - 1, q~, kappa, P, c (Voigt: d theta = j c . dE) */
+enum { PT_F = 0, PT_S = 9, PT_C = 15, PT_J = 51, PT_Q = 52, PT_KAPPA = 53, PT_P = 54, PT_CV = 63 };
 
 static int buf_init(cell_buf *b, size_t np, size_t m)
 {
@@ -61,7 +67,6 @@ static int buf_init(cell_buf *b, size_t np, size_t m)
     b->cbs = malloc(6 * np * m3 * sizeof *b->cbs);
     b->gs = malloc(3 * np * m * sizeof *b->gs);
     b->sgs = malloc(3 * np * m * sizeof *b->sgs);
-    b->ds = malloc(np * m3 * sizeof *b->ds);
     b->hs = malloc(np * m3 * sizeof *b->hs);
     b->hc = malloc(np * m3 * sizeof *b->hc);
     b->dj = malloc(np * m3 * sizeof *b->dj);
@@ -70,7 +75,7 @@ static int buf_init(cell_buf *b, size_t np, size_t m)
     b->ms = malloc(m * m * sizeof *b->ms);
     b->o = malloc(9 * m * m * sizeof *b->o);
     b->pt = malloc(np * PT_STRIDE * sizeof *b->pt);
-    return b->dl && b->bs && b->cbs && b->gs && b->sgs && b->ds && b->hs && b->hc && b->dj &&
+    return b->dl && b->bs && b->cbs && b->gs && b->sgs && b->hs && b->hc && b->dj &&
                    b->hv && b->sv && b->ms && b->o && b->pt
                ? 0
                : -1;
@@ -78,7 +83,7 @@ static int buf_init(cell_buf *b, size_t np, size_t m)
 
 static void buf_free(cell_buf *b)
 {
-    void *p[] = {b->dl, b->bs, b->cbs, b->gs, b->sgs, b->ds, b->hs, b->hc, b->dj, b->hv, b->sv,
+    void *p[] = {b->dl, b->bs, b->cbs, b->gs, b->sgs, b->hs, b->hc, b->dj, b->hv, b->sv,
                  b->ms, b->o, b->pt};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; ++k) {
         free(p[k]);
@@ -177,6 +182,9 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
         }
         double *dj = b->dj + p * m3, *hv = b->hv + p * m3;
         pt[PT_J] = s->svk_volume ? green_trace(F) : jacobian_minus_one(F, s->small);
+        double *cv = pt + PT_CV;
+        cv[0] = cv[1] = cv[2] = 1; /* d tr E, d div u: c = (1, 1, 1, 0, 0, 0) */
+        cv[3] = cv[4] = cv[5] = 0;
         if (s->svk_volume) { /* d tr E = (F G_i)_a */
             for (size_t i = 0; i < m; ++i) {
                 for (size_t a = 0; a < 3; ++a) {
@@ -193,6 +201,11 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
         } else {
             double inv[9];
             inverse3(F, det, inv);
+            for (int vi = 0; vi < 6; ++vi) { /* dJ = J C^-1 : dE, C^-1 = F^-1 F^-T */
+                int i = tf_voigt_i[vi], j = tf_voigt_j[vi];
+                cv[vi] = inv[3 * i] * inv[3 * j] + inv[3 * i + 1] * inv[3 * j + 1] +
+                         inv[3 * i + 2] * inv[3 * j + 2];
+            }
             for (size_t i = 0; i < m; ++i) {
                 for (size_t a = 0; a < 3; ++a) {
                     double h = inv[a] * Gp[i] + inv[3 + a] * Gp[m + i] + inv[6 + a] * Gp[2 * m + i];
@@ -263,14 +276,77 @@ static void cell_forces(const nl_solver *s, const double *G, const double *w, si
     }
 }
 
-/* B (Voigt rows of dE per DOF) of every point, stacked: bs[(6p + I) + 6 np (3i + a)], I Voigt;
- * cbs the same rows times w C. */
-static void stack_b(const nl_solver *s, const double *G, const double *w, size_t m, cell_buf *b)
+/* The point's 6 x 6 matrix of the material part: C minus the volumetric
+ * correction's pointwise term kappa lambda_v j^2 c c^T (d theta = j c . dE,
+ * j = J for theta = J - 1 at finite strain, else 1), so that one product
+ * gives both. */
+static void material_matrix(const nl_solver *s, const double *pt, double ce[36])
+{
+    const double *C = pt + PT_C, *cv = pt + PT_CV;
+    double j = s->small || s->svk_volume ? 1 : 1 + pt[PT_J];
+    double f = s->lambda_v * pt[PT_KAPPA] * j * j;
+    for (int k = 0; k < 36; ++k) {
+        ce[k] = C[k] - f * cv[k / 6] * cv[k % 6];
+    }
+}
+
+/* Cholesky of a symmetric 6 x 6 (lower, in place).  Returns 0, or -1 when
+ * it is not positive definite. */
+static int cholesky6(double a[36])
+{
+    for (int j = 0; j < 6; ++j) {
+        double d = a[6 * j + j];
+        for (int k = 0; k < j; ++k) {
+            d -= a[6 * j + k] * a[6 * j + k];
+        }
+        if (!(d > 0)) {
+            return -1;
+        }
+        d = sqrt(d);
+        a[6 * j + j] = d;
+        for (int i = j + 1; i < 6; ++i) {
+            double v = a[6 * i + j];
+            for (int k = 0; k < j; ++k) {
+                v -= a[6 * i + k] * a[6 * j + k];
+            }
+            a[6 * i + j] = v / d;
+        }
+    }
+    return 0;
+}
+
+/* B (Voigt rows of dE per DOF) of every point, stacked in bs
+ * [(6p + I) + 6 np (3i + a)]; with a positive definite material matrix at
+ * every point (symmetric laws) bs is replaced by L^T B sqrt(w) (C = L L^T)
+ * and the return is 1: K = bs^T bs.  Otherwise cbs holds w C B and the
+ * return is 0: K = bs^T cbs. */
+static int stack_b(const nl_solver *s, const double *G, const double *w, size_t m, cell_buf *b)
 {
     size_t np = s->np, ld = 6 * np;
+    int spd = !s->unsym;
+    double ce[36 * 27], *cep = np <= 27 ? ce : NULL;
     for (size_t p = 0; p < np; ++p) {
-        const double *pt = b->pt + p * PT_STRIDE, *F = pt + PT_F, *C = pt + PT_C;
+        double one[36], *c = cep ? cep + 36 * p : one;
+        material_matrix(s, b->pt + p * PT_STRIDE, c);
+        if (spd && cep) {
+            double l[36];
+            memcpy(l, c, sizeof l);
+            spd = cholesky6(l) == 0;
+        }
+    }
+    spd = spd && cep;
+    for (size_t p = 0; p < np; ++p) {
+        const double *pt = b->pt + p * PT_STRIDE, *F = pt + PT_F;
         const double *Gp = G + 3 * p * m;
+        double c[36], sw = sqrt(w[p]);
+        if (cep) {
+            memcpy(c, cep + 36 * p, sizeof c);
+        } else {
+            material_matrix(s, pt, c);
+        }
+        if (spd) {
+            cholesky6(c);
+        }
         for (size_t i = 0; i < m; ++i) {
             for (size_t a = 0; a < 3; ++a) {
                 double col[6];
@@ -284,15 +360,23 @@ static void stack_b(const nl_solver *s, const double *G, const double *w, size_t
                 double *ccol = b->cbs + ld * (3 * i + a) + 6 * p;
                 for (int vi = 0; vi < 6; ++vi) {
                     double v = 0;
-                    for (int vj = 0; vj < 6; ++vj) {
-                        v += C[6 * vi + vj] * col[vj];
+                    if (spd) { /* (L^T col)_vi = sum_{k >= vi} L[k][vi] col[k] */
+                        for (int k = vi; k < 6; ++k) {
+                            v += c[6 * k + vi] * col[k];
+                        }
+                        bcol[vi] = sw * v;
+                    } else {
+                        for (int vj = 0; vj < 6; ++vj) {
+                            v += c[6 * vi + vj] * col[vj];
+                        }
+                        bcol[vi] = col[vi];
+                        ccol[vi] = w[p] * v;
                     }
-                    bcol[vi] = col[vi];
-                    ccol[vi] = w[p] * v;
                 }
             }
         }
     }
+    return spd;
 }
 
 /* Geometric stiffness delta_ab G_i . S G_j into kc (3m x 3m). */
@@ -339,17 +423,14 @@ static void correction_tangent(const nl_solver *s, const double *w, size_t m, ce
     memset(b->sv, 0, m3 * sizeof *b->sv);
     for (size_t p = 0; p < np; ++p) {
         const double *dj = b->dj + p * m3;
-        double sw = sqrt(w[p]);
         vol += w[p];
         for (size_t q = 0; q < m3; ++q) {
             b->sv[q] += w[p] * dj[q];
-            b->ds[p + np * q] = sw * dj[q];
         }
     }
+    /* f s s^T / V; the pointwise - f sum_g w dJ dJ^T is in the material
+     * matrix (material_matrix) */
     double f = kappa * s->lambda_v;
-    /* f (s s^T / V - Ds^T Ds) */
-    cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)m3, (int)m3, (int)np, -f, b->ds,
-                (int)np, b->ds, (int)np, 1.0, kc, (int)m3);
     cblas_dger(CblasColMajor, (int)m3, (int)m3, f / vol, b->sv, 1, b->sv, 1, kc, (int)m3);
     if (s->small || s->svk_volume) {
         return;
@@ -383,9 +464,18 @@ static void cell_tangent(const nl_solver *s, const double *G, const double *w, s
                          cell_buf *b, double *kc)
 {
     size_t m3 = 3 * m, ld = 6 * s->np;
-    stack_b(s, G, w, m, b);
-    cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)m3, (int)m3, (int)ld, 1.0, b->bs,
-                (int)ld, b->cbs, (int)ld, 0.0, kc, (int)m3);
+    if (stack_b(s, G, w, m, b)) {
+        cblas_dsyrk(CblasColMajor, CblasLower, CblasTrans, (int)m3, (int)ld, 1.0, b->bs, (int)ld,
+                    0.0, kc, (int)m3);
+        for (size_t j = 0; j < m3; ++j) { /* the upper triangle too (add_split reads both) */
+            for (size_t i = j + 1; i < m3; ++i) {
+                kc[j + m3 * i] = kc[i + m3 * j];
+            }
+        }
+    } else {
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, (int)m3, (int)m3, (int)ld, 1.0,
+                    b->bs, (int)ld, b->cbs, (int)ld, 0.0, kc, (int)m3);
+    }
     if (!s->small) {
         geometric(s, G, w, m, b, kc);
     }
@@ -609,7 +699,8 @@ typedef struct pass {
     const double *d;
     double dt;
     int tangent;
-    double *fl, *kc; /* BATCH slices */
+    double *fl, *kc; /* batch slices */
+    size_t batch;
     size_t fstride, kstride;
 } pass;
 
@@ -651,8 +742,8 @@ static int all_cells(pass *ps, double *fint, nl_fault *fault)
         return tf_fail(s->base.ctx, "out of memory");
     }
     openblas_set_num_threads(1);
-    for (size_t start = 0; start < nc && failed == SIZE_MAX; start += BATCH) {
-        size_t end = start + BATCH < nc ? start + BATCH : nc;
+    for (size_t start = 0; start < nc && failed == SIZE_MAX; start += ps->batch) {
+        size_t end = start + ps->batch < nc ? start + ps->batch : nc;
 #pragma omp parallel for num_threads(nt) schedule(dynamic, 1)
         for (size_t c = start; c < end; ++c) {
             nl_fault f = {0};
@@ -691,9 +782,14 @@ int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, in
 {
     size_t n3 = 3 * s->sh.cloud->n, m = s->maxm;
     double t0 = omp_get_wtime();
-    pass ps = {s, d, dt, tangent, NULL, NULL, 3 * m, tangent ? 9 * m * m : 0};
-    ps.fl = malloc(BATCH * ps.fstride * sizeof *ps.fl);
-    ps.kc = tangent ? malloc(BATCH * ps.kstride * sizeof *ps.kc) : NULL;
+    pass ps = {.s = s, .d = d, .dt = dt, .tangent = tangent, .batch = s->ncell,
+               .fstride = 3 * m, .kstride = tangent ? 9 * m * m : 0};
+    if (tangent) {
+        double fit = TANGENT_BATCH_BYTES / (8.0 * (double)ps.kstride);
+        ps.batch = fit < 32 ? 32 : fit > (double)s->ncell ? s->ncell : (size_t)fit;
+    }
+    ps.fl = malloc(ps.batch * ps.fstride * sizeof *ps.fl);
+    ps.kc = tangent ? malloc(ps.batch * ps.kstride * sizeof *ps.kc) : NULL;
     double *fi = fint ? fint : s->fint;
     if (ps.fl == NULL || (tangent && ps.kc == NULL)) {
         free(ps.fl);

@@ -85,6 +85,9 @@ typedef struct nl_solver {
     int chol_ok;        /* holds a usable factor */
     int use_ldl;        /* the usable factor is the LDL^T one */
     tf_chol_info ci;
+    /* quasi-Newton (BFGS): pairs s_i = dd, y_i = dr since the last factorisation */
+    double *qs, *qy, *qrho;
+    size_t qn, qmax;
     /* work */
     double *r, *fint, *du, *dtrial, *rtrial, *wk; /* 3N each; wk: Krylov space */
     size_t wk_cols;
@@ -120,6 +123,10 @@ int nl_factor(nl_solver *s);
  * strategy says so.  Returns 0, 1 (no usable factor: the tangent is not
  * positive definite), -1 (message). */
 int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent);
+/* Quasi-Newton: forget the pairs (a new factorisation), or remember the
+ * step s and the residual's change y of an iteration. */
+void nl_qn_reset(nl_solver *s);
+void nl_qn_update(nl_solver *s, const double *step, const double *dr);
 /* y = K x with the assembled tangent (symmetric part + skew part). */
 void nl_tangent_apply(const nl_solver *s, const double *x, double *y);
 

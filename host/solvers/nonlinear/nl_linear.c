@@ -57,7 +57,7 @@ static int factor_indefinite(nl_solver *s)
     tf_ctx *ctx = s->base.ctx;
     if (s->ldl == NULL) {
         tf_chol_info ci;
-        s->ldl = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.newton.ordering, 1, &ci,
+        s->ldl = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 1, &ci,
                                  ctx->err, sizeof ctx->err);
         if (s->ldl == NULL) {
             return -1;
@@ -78,7 +78,7 @@ int nl_factor(nl_solver *s)
     tf_ctx *ctx = s->base.ctx;
     eliminate(s);
     if (s->chol == NULL) {
-        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.newton.ordering, 0, &s->ci,
+        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 0, &s->ci,
                                   ctx->err, sizeof ctx->err);
         if (s->chol == NULL) {
             return -1;
@@ -90,7 +90,72 @@ int nl_factor(nl_solver *s)
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
     s->use_ldl = 0;
+    nl_qn_reset(s);
     return rc == 1 ? factor_indefinite(s) : rc;
+}
+
+void nl_qn_reset(nl_solver *s) { s->qn = 0; }
+
+void nl_qn_update(nl_solver *s, const double *step, const double *dr)
+{
+    size_t n = s->k.n;
+    if (s->qmax == 0) {
+        return;
+    }
+    double ys = dot(dr, step, n);
+    if (!(ys > 1e-12 * sqrt(dot(dr, dr, n) * dot(step, step, n)))) {
+        return; /* no curvature along the step: the pair would spoil H */
+    }
+    if (s->qn == s->qmax) { /* drop the oldest */
+        memmove(s->qs, s->qs + n, (s->qmax - 1) * n * sizeof *s->qs);
+        memmove(s->qy, s->qy + n, (s->qmax - 1) * n * sizeof *s->qy);
+        memmove(s->qrho, s->qrho + 1, (s->qmax - 1) * sizeof *s->qrho);
+        s->qn--;
+    }
+    memcpy(s->qs + s->qn * n, step, n * sizeof *step);
+    memcpy(s->qy + s->qn * n, dr, n * sizeof *dr);
+    s->qrho[s->qn++] = 1 / ys;
+}
+
+static tf_chol *factor_of(nl_solver *s)
+{
+    return s->use_ldl ? s->ldl : s->chol;
+}
+
+static int precondition(nl_solver *s, const double *r, double *z)
+{
+    return tf_chol_solve(factor_of(s), r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
+}
+
+/* Limited-memory BFGS (Nocedal's two-loop recursion, the last factorisation
+ * as the initial inverse; Matthies & Strang 1979 for finite elements):
+ * x = H b. */
+static int bfgs(nl_solver *s, const double *b, double *x)
+{
+    size_t n = s->k.n, m = s->qn;
+    double alpha[64], *q = malloc(n * sizeof *q);
+    if (q == NULL) {
+        return tf_fail(s->base.ctx, "out of memory");
+    }
+    memcpy(q, b, n * sizeof *q);
+    for (size_t i = m; i-- > 0;) {
+        alpha[i] = s->qrho[i] * dot(s->qs + i * n, q, n);
+        for (size_t k = 0; k < n; ++k) {
+            q[k] -= alpha[i] * s->qy[i * n + k];
+        }
+    }
+    int rc = precondition(s, q, x);
+    free(q);
+    if (rc != 0) {
+        return -1;
+    }
+    for (size_t i = 0; i < m; ++i) {
+        double beta = s->qrho[i] * dot(s->qy + i * n, x, n);
+        for (size_t k = 0; k < n; ++k) {
+            x[k] += s->qs[i * n + k] * (alpha[i] - beta);
+        }
+    }
+    return 0;
 }
 
 void nl_tangent_apply(const nl_solver *s, const double *x, double *y)
@@ -107,16 +172,6 @@ void nl_tangent_apply(const nl_solver *s, const double *x, double *y)
             y[j] -= s->kskew[q] * x[i];
         }
     }
-}
-
-static tf_chol *factor_of(nl_solver *s)
-{
-    return s->use_ldl ? s->ldl : s->chol;
-}
-
-static int precondition(nl_solver *s, const double *r, double *z)
-{
-    return tf_chol_solve(factor_of(s), r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
 }
 
 /* Preconditioned conjugate gradients for K x = b, x = 0 first.  Returns the
@@ -280,10 +335,10 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
         eliminate(s);
     }
     int rc = 0;
-    if (kind == TF_TANGENT_FULL && fresh_tangent) {
-        rc = nl_factor(s);
+    if (fresh_tangent && (kind != TF_TANGENT_KRYLOV || !s->chol_ok)) {
+        rc = nl_factor(s); /* full Newton; modified and BFGS assemble only to refactorise */
     } else if (!s->chol_ok) {
-        rc = fresh_tangent ? nl_factor(s) : 1;
+        rc = 1;
     }
     if (rc != 0) {
         s->st.t_solve += omp_get_wtime() - t0;
@@ -297,6 +352,9 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
             rc = nl_factor(s);
             done = rc == 0 && krylov(s, b, du, &failed);
         }
+    } else if (kind == TF_TANGENT_BFGS && s->qn > 0) {
+        failed = bfgs(s, b, du) != 0;
+        done = !failed;
     } else {
         failed = tf_chol_solve(factor_of(s), b, du, 1, ctx->err, sizeof ctx->err) != 0;
         done = !failed;

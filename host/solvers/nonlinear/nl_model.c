@@ -206,6 +206,15 @@ static int allocate_state(nl_solver *s, tf_ctx *ctx)
         s->wk_cols = 40;
         s->wk = malloc((s->wk_cols + 6) * n3 * sizeof *s->wk);
     }
+    if (s->base.opts.newton.tangent == TF_TANGENT_BFGS) {
+        s->qmax = 30;
+        s->qs = malloc(s->qmax * n3 * sizeof *s->qs);
+        s->qy = malloc(s->qmax * n3 * sizeof *s->qy);
+        s->qrho = malloc(s->qmax * sizeof *s->qrho);
+        if (!s->qs || !s->qy || !s->qrho) {
+            return tf_fail(ctx, "out of memory");
+        }
+    }
     if (!s->d || !s->hist || !s->hist_new || !s->bhist || !s->bhist_new || !s->r || !s->fint ||
         !s->du || !s->dtrial || !s->rtrial || (s->unsym && !s->kskew) ||
         (s->wk_cols && !s->wk)) {
@@ -274,7 +283,7 @@ void nl_model_free(nl_solver *s)
     void *bufs[] = {s->gptr,  s->grad,  s->wts,       s->kskew, s->kbc,  s->d,      s->hist,
                     s->hist_new, s->bhist, s->bhist_new, s->bptr, s->bidx, s->bphi, s->bdphi,
                     s->f0,    s->basis, s->r,         s->fint,  s->du,   s->dtrial, s->rtrial,
-                    s->wk};
+                    s->wk,    s->qs,    s->qy,        s->qrho};
     for (size_t k = 0; k < sizeof bufs / sizeof bufs[0]; ++k) {
         free(bufs[k]);
     }

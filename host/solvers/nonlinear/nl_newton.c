@@ -134,16 +134,23 @@ static int line_search(nl_solver *s, const double *d, const double *du, double s
     return residual(s, s->dtrial, t, dt, 0, fext, rt, ref, fault);
 }
 
-/* Does this iteration assemble a tangent?  Full Newton and Krylov always;
- * modified Newton when it has no factor or the last iteration reduced the
- * residual by less than half. */
-static int wants_tangent(const nl_solver *s, int it, double ratio)
+/* Does this iteration assemble a tangent?  Full Newton and Krylov always.
+ * Modified Newton and BFGS keep their factorisation while it pays: they
+ * assemble (and refactorise) when they have none, or when, at least
+ * `patience` iterations after the last one, the correction's energy fell
+ * by less than `rate` in the last iteration (the residual itself is no
+ * guide: far from the solution it may grow while the energy falls).  BFGS
+ * learns the change of the tangent from its steps and is more patient. */
+static int wants_tangent(const nl_solver *s, unsigned since, double ratio_e)
 {
     tf_tangent_kind k = s->base.opts.newton.tangent;
-    if (k != TF_TANGENT_MODIFIED) {
-        return 1;
+    if (k == TF_TANGENT_MODIFIED) {
+        return !s->chol_ok || (since >= 2 && ratio_e > 0.25);
     }
-    return !s->chol_ok || (it > 0 && ratio > 0.5);
+    if (k == TF_TANGENT_BFGS) {
+        return !s->chol_ok || (since >= 4 && ratio_e > 0.5);
+    }
+    return 1;
 }
 
 /* Newton iterations for one load step from s->d.  Returns 0 (converged:
@@ -154,11 +161,17 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
     size_t n3 = 3 * s->sh.cloud->n;
     const tf_newton_opts *o = &s->base.opts.newton;
     double *fext = malloc(n3 * sizeof *fext), *d = malloc(n3 * sizeof *d);
-    double *rt = malloc(n3 * sizeof *rt);
-    if (!fext || !d || !rt) {
+    double *rt = malloc(n3 * sizeof *rt), *qs = NULL, *qy = NULL;
+    if (o->tangent == TF_TANGENT_BFGS) {
+        qs = malloc(n3 * sizeof *qs);
+        qy = malloc(n3 * sizeof *qy);
+    }
+    if (!fext || !d || !rt || (o->tangent == TF_TANGENT_BFGS && (!qs || !qy))) {
         free(fext);
         free(d);
         free(rt);
+        free(qs);
+        free(qy);
         return tf_fail(s->base.ctx, "out of memory");
     }
     nl_external(s, t, fext);
@@ -168,12 +181,14 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             d[i] = t->scale * s->bc.ubar[i];
         }
     }
-    double e0 = 0, e = 0, ref = 0, rn = 0, last = 0;
+    double e0 = 0, e = 0, e_prev = 0, ref = 0, rn = 0;
+    unsigned since = 0;
     int have_r = 0, rc = 0, conv = 0;
     unsigned it;
     for (it = 0; it <= o->max_iter; ++it) {
-        int tangent = it < o->max_iter && wants_tangent(s, (int)it, last > 0 ? rn / last : 0);
+        int tangent = it < o->max_iter && wants_tangent(s, since, e_prev > 0 ? e / e_prev : 0);
         double before = rn;
+        since = tangent ? 0 : since + 1;
         if (!have_r || tangent) {
             rc = residual(s, d, t, dt, tangent, fext, s->r, &ref, &f->fault);
         } else {
@@ -184,7 +199,6 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             break;
         }
         rn = norm(s->r, n3);
-        last = it > 0 ? before : 0;
         int stalled = it >= 2 && rn > 0.5 * before && e <= ROUNDING_ENERGY * e0;
         if ((rn <= o->rtol * ref && (it == 0 || e <= o->etol * e0)) || stalled) {
             conv = 1;
@@ -199,6 +213,7 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             break;
         }
         double s0 = dot(s->du, s->r, n3);
+        e_prev = it > 0 ? e : 0;
         e = fabs(s0);
         if (it == 0 || e0 == 0) {
             e0 = e;
@@ -214,6 +229,13 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
         if (rc != 0) {
             f->why = WHY_INVERTED;
             break;
+        }
+        for (size_t i = 0; qs && i < n3; ++i) {
+            qs[i] = s->dtrial[i] - d[i];
+            qy[i] = rt[i] - s->r[i];
+        }
+        if (qs) {
+            nl_qn_update(s, qs, qy);
         }
         memcpy(d, s->dtrial, n3 * sizeof *d);
         have_r = 1;
@@ -238,6 +260,8 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
     free(fext);
     free(d);
     free(rt);
+    free(qs);
+    free(qy);
     return conv ? 0 : rc;
 }
 
