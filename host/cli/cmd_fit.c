@@ -14,17 +14,20 @@
 
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
+#include "cli/cmd_fit.h"
 #include "emit/emit_header.h"
 #include "fitting/pipeline.h"
 #include "report/fit_report.h"
 #include "base/log.h"
 #include "base/plot.h"
 #include "scene/scene.h"
-#include "cost/select.h"
+#include "tradeoff/select.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
 {
+    char names[256];
+    tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
     fprintf(out,
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
@@ -37,7 +40,7 @@ static void help(FILE *out)
             "(docs/scene-format.md); --set overrides any of it, e.g. --set fit.train=200.\n\n"
             "Options:\n"
             "  -o, --out FILE.h    header to write (a lower-case C identifier + .h)\n"
-            "  --family F          forward family to emit: nodal, modal or zhou2017\n"
+            "  --family F          forward family to emit, one of: %s\n"
             "                      (default: the scene's fit.family, else nodal)\n"
             "  --contact NAME      contact site (default: fit.contact, else the first)\n"
             "  --set KEY=VALUE     override a scene value (repeatable)\n"
@@ -54,7 +57,8 @@ static void help(FILE *out)
             "                      none qualifies, the message gives the best on each\n"
             "                      axis and nothing is written.\n\n"
             "Exit status: 0 ok, 1 a solve or fit failed, 2 bad usage or a scene that\n"
-            "cannot be fitted (nothing is written then).\n");
+            "cannot be fitted (nothing is written then).\n",
+            names);
 }
 
 typedef struct fit_args {
@@ -148,11 +152,11 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
     *p = sc->fit;
     p->direct = a->direct;
     if (a->family) {
-        p->family = tf_family_from_name(a->family);
-        if (p->family != TFIT_FAMILY_NODAL && p->family != TFIT_FAMILY_MODAL &&
-            p->family != TFIT_FAMILY_ZHOU2017) {
-            tf_error(ctx, "fit: --family '%s': the forward families are nodal, modal and zhou2017",
-                     a->family);
+        p->family = tf_family_find(a->family);
+        if (p->family == NULL || p->family->kind != TF_FAMILY_FORWARD) {
+            char names[256];
+            tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
+            tf_error(ctx, "fit: --family '%s': the forward families are %s", a->family, names);
             return -1;
         }
     }
@@ -214,6 +218,10 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
 {
     char base[TF_NAME_MAX - 8], err[512], note[1024];
     const char *slash = strrchr(a->out, '/');
+    if (fwd == NULL || con == NULL) {
+        tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
+        return TF_EXIT_FAIL;
+    }
     if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
         tf_error(ctx, "fit: %s: the header name is too long for its model names", a->out);
         return TF_EXIT_USAGE;
@@ -221,7 +229,6 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     base[strcspn(base, ".")] = '\0';
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
-    con->node_ids[0] = s->contacts[p->contact].node + 1;
     uint32_t crc = 0;
     if (file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
@@ -240,7 +247,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         return TF_EXIT_USAGE;
     }
     tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
-            tf_family_name(fwd->family));
+            tf_family_of(fwd->family)->name);
     return TF_EXIT_OK;
 }
 
@@ -283,59 +290,100 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     return rc;
 }
 
-static int run(tf_ctx *ctx, int argc, char **argv)
+/* The checksum every rank of an MPI run must agree on: the scene file's
+ * bytes and the overrides. */
+static uint32_t fingerprint(const fit_args *a)
 {
-    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
-    char err[1024];
-    int rc = TF_EXIT_USAGE;
-    tf_scene *s = NULL;
-    tf_solver *solver = NULL;
-    tf_fit_outcome o;
-    int have_outcome = 0;
-    tf_fit_plan plan;
-    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
-    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL ||
-        make_plan(ctx, &a, s, &plan) != 0) {
-        goto done;
+    uint32_t crc = 0;
+    if (file_crc32(a->scene, &crc) != 0) {
+        return 0;
     }
-    const tf_problem *p = &s->problem;
-    if (a.report && !tf_plot_available()) {
+    uLong c = crc;
+    for (size_t i = 0; i < a->sets.n; ++i) {
+        c = crc32(c, (const Bytef *)a->sets.item[i], (uInt)strlen(a->sets.item[i]) + 1);
+    }
+    return (uint32_t)c;
+}
+
+/* The command line, the scene, the plan and the solver: 0 when all are
+ * ready, else the exit status after the message. */
+static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s,
+                   tf_fit_plan *plan, tf_solver **solver)
+{
+    if (parse(ctx, argc, argv, a) != 0 || (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL ||
+        make_plan(ctx, a, *s, plan) != 0) {
+        return TF_EXIT_USAGE;
+    }
+    if (a->report && !tf_plot_available()) {
         tf_error(ctx,
                  "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
-        goto done;
+        return TF_EXIT_USAGE;
     }
-    rc = TF_EXIT_FAIL;
-    solver = tf_solver_create(p, NULL, ctx);
-    if (solver == NULL) {
+    *solver = tf_solver_create(&(*s)->problem, NULL, ctx);
+    if (*solver == NULL) {
         tf_error(ctx, "fit: %s", ctx->err);
-        goto done;
+        return TF_EXIT_FAIL;
     }
-    int fitted = tf_fit_run(p, solver, &plan, &o);
+    return TF_EXIT_OK;
+}
+
+/* The fit, the header and the report. */
+static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *solver,
+               const tf_fit_plan *plan)
+{
+    char err[1024];
+    tf_fit_outcome o;
+    int fitted = tf_fit_run(p, solver, plan, &o);
     if (fitted != 0) {
-        tf_error(ctx, "fit: %s: %s", a.scene, ctx->err);
-        rc = fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
-        goto done;
+        tf_error(ctx, "fit: %s: %s", a->scene, ctx->err);
+        return fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
     }
-    have_outcome = 1;
-    if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
-        rc = emit(ctx, &a, p, &plan, &o, o.fam[plan.family].model,
-                  o.fam[TFIT_FAMILY_CONTACT].model, NULL);
+    int rc;
+    if (isnan(a->budget_us) && isnan(a->max_error_mm)) {
+        rc = emit(ctx, a, p, plan, &o, tf_fit_emitted(&o, plan, TF_FAMILY_FORWARD),
+                  tf_fit_emitted(&o, plan, TF_FAMILY_INVERSE), NULL);
     } else {
-        rc = emit_selected(ctx, &a, p, solver, &plan, &o);
+        rc = emit_selected(ctx, a, p, solver, plan, &o);
     }
-    if (rc == TF_EXIT_OK && a.report &&
-        tf_fit_report(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
+    if (rc == TF_EXIT_OK && a->report &&
+        tf_report_fit(a->report, a->out, p, solver, plan, &o, err, sizeof err) != 0) {
         tf_error(ctx, "fit: report: %s", err);
         rc = TF_EXIT_FAIL;
     }
-done:
-    if (have_outcome) {
-        tf_fit_outcome_free(&o);
+    tf_fit_outcome_free(&o);
+    return rc;
+}
+
+int tf_cmd_fit_ranks(tf_ctx *ctx, int argc, char **argv, const tf_fit_ranks *ranks)
+{
+    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
+    char err[1024];
+    tf_scene *s = NULL;
+    tf_solver *solver = NULL;
+    tf_fit_plan plan;
+    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
+    int rc = prepare(ctx, argc, argv, &a, &s, &plan, &solver);
+    if (ranks != NULL) {
+        rc = ranks->agree(ranks->user, ctx, rc, rc == TF_EXIT_OK ? fingerprint(&a) : 0);
+        if (rc == TF_EXIT_OK && ranks->worker) {
+            rc = ranks->serve(ranks->user, solver);
+        } else if (rc == TF_EXIT_OK) {
+            plan.runner = ranks->runner;
+            rc = fit(ctx, &a, &s->problem, solver, &plan);
+            ranks->stop(ranks->user);
+        }
+    } else if (rc == TF_EXIT_OK) {
+        rc = fit(ctx, &a, &s->problem, solver, &plan);
     }
     tf_solver_destroy(solver);
     tf_scene_free(s);
     tf_sets_free(&a.sets);
     return rc;
+}
+
+static int run(tf_ctx *ctx, int argc, char **argv)
+{
+    return tf_cmd_fit_ranks(ctx, argc, argv, NULL);
 }
 
 const tf_command tf_cmd_fit = {

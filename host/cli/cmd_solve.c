@@ -147,9 +147,9 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
-    tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
+    tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
     if (a->vtk) {
-        tf_vtu_displacements(vtu.fp, &s->cloud, u);
+        tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
     }
     int rc = 0;
     if (a->out) {
@@ -203,7 +203,7 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
     for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
         vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
         if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0) {
-            tf_vtu_displacements(f[k++].fp, &p->cloud, u + 3 * p->cloud.n * s);
+            tf_report_vtu_displacements(f[k++].fp, &p->cloud, u + 3 * p->cloud.n * s);
         }
     }
     if (rc == 0 && a->vtk && (rc = tf_afile_open(&f[k], a->vtk, err, sizeof err)) == 0) {

@@ -50,8 +50,6 @@ static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
                                           {"modified", TF_TANGENT_MODIFIED},
                                           {"krylov", TF_TANGENT_KRYLOV},
                                           {"bfgs", TF_TANGENT_BFGS}};
-/* tfit_family values (tfit.h) of the forward families */
-static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
                                             {"linear", TF_ANALYTIC_LINEAR}};
 
@@ -218,7 +216,7 @@ static const cyaml_schema_field_t history_fields[] = {
 };
 
 static const cyaml_schema_field_t fit_fields[] = {
-    CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
+    CYAML_FIELD_STRING_PTR("family", OPT, sd_fit, family, 1, 32),
     CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_UINT_PTR("train", OPT, sd_fit, train),
     CYAML_FIELD_UINT_PTR("heldout", OPT, sd_fit, heldout),

@@ -17,7 +17,7 @@
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
 #include "solvers/field.h"
-#include "solvers/loads.h"
+#include "solvers/load_vector.h"
 #include "solvers/nodal_values.h"
 #include "solvers/nonlinear/nonlinear.h"
 
@@ -238,17 +238,22 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
-static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx, int efg)
+static tf_solver *create(const tf_problem *p, const tf_solver_opts *opts, tf_ctx *ctx, int efg)
 {
+    /* EFG shape functions do not interpolate: nodal values cannot be
+     * eliminated.  A scene asking for elimination with efg-galerkin is
+     * refused where it is read (scene_build.c); options made for another
+     * type (tf_solver_create_as on an RPIM problem, the conformance suite)
+     * get EFG's own way of holding the fixed regions, Nitsche's method. */
+    tf_solver_opts eo = *opts;
+    if (efg && eo.bc == TF_BC_ELIMINATION) {
+        eo.bc = TF_BC_NITSCHE;
+        tf_info(ctx, "%s: efg-galerkin holds the fixed regions by Nitsche's method (its shape "
+                     "functions do not interpolate: nothing can be eliminated)", p->name);
+    }
+    const tf_solver_opts *o = &eo;
     if (p->material.law != TF_LAW_LINEAR) {
         return tf_nonlinear_create(p, o, ctx, efg);
-    }
-    if (efg && o->bc == TF_BC_ELIMINATION) {
-        tf_fail(ctx,
-                "%s: EFG shape functions do not interpolate, so nodal values cannot be "
-                "eliminated: solver.bc must be penalty or nitsche",
-                p->name);
-        return NULL;
     }
     galerkin *g = calloc(1, sizeof *g);
     if (g == NULL) {
@@ -390,14 +395,7 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
         return tf_fail(s->ctx, "out of memory");
     }
     load_vector(g, contact, force, f);
-    const double *d =
-        g->efg ? tf_nodal_map_params_of((tf_nodal_map *)&g->map, u, s->ctx->err, sizeof s->ctx->err)
-               : u;
-    if (d == NULL) {
-        free(f);
-        return -1;
-    }
-    tf_csc_symv(&g->k, d, r, 1);
+    tf_csc_symv(&g->k, u, r, 1); /* (RPIM: u are the nodal parameters) */
     for (size_t q = 0; q < n3; ++q) {
         r[q] -= f[q];
     }
@@ -478,7 +476,10 @@ const tf_solver_ops tf_efg_galerkin_ops = {
     .caps = caps,
     .solve = solve,
     .history = NULL,
-    .reactions = reactions,
+    /* none: the fixed regions are held weakly, their reaction is a traction
+     * over the face whose Galerkin forces fall on every node whose support
+     * meets it, not on the region's nodes (docs/solver.md, Known limits) */
+    .reactions = NULL,
     .field = field,
     .node_count = node_count,
     .coords = coords,

@@ -14,7 +14,7 @@
 #include "base/log.h"
 #include "solvers/assemble.h"
 #include "solvers/cell_gradients.h"
-#include "solvers/loads.h"
+#include "solvers/load_vector.h"
 #include "solvers/nonlinear/nl_internal.h"
 
 /* Gradients of every cell, in parallel (each cell its own slice). */

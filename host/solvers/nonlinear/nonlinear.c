@@ -193,7 +193,7 @@ static const tf_solver_ops efg_ops = {
     .caps = caps,
     .solve = solve,
     .history = history,
-    .reactions = reactions,
+    .reactions = NULL, /* weak fixed regions (tf_efg_galerkin_ops) */
     .field = field,
     .node_count = node_count,
     .coords = coords,
@@ -206,7 +206,8 @@ static int is_nonlinear(const tf_solver *s) { return s->ops == &rpim_ops || s->o
 static void announce(const nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
-    static const char *tangents[] = {"full Newton", "modified Newton", "Newton-Krylov"};
+    static const char *tangents[] = {"full Newton", "modified Newton", "Newton-Krylov",
+                                    "quasi-Newton (BFGS)"};
     tf_info(ctx,
             "solver: %s law, %s kinematics, %zu nodes, %zu cells x %u^3 Gauss points%s, %s, "
             "volumetric %s, BCs by %s, %s",
