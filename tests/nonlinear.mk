@@ -32,4 +32,4 @@ BENCHES += bench-nonlinear
 bench-nonlinear: $(T)/solver/bench_nonlinear
 	@echo "== nonlinear solver: block48 cases from rest (issue 13: 3 N neo-Hookean at 41x41x9 <= 3 x one linear solve) =="
 	@$(T)/solver/bench_nonlinear 11,11,3 3
-	@$(T)/solver/bench_nonlinear 41,41,9 1
+	@$(T)/solver/bench_nonlinear 41,41,9 1 cases=2

@@ -6,22 +6,10 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-{
-    va_list ap;
-    snprintf(is->path, sizeof is->path, "%s", path);
-    va_start(ap, fmt);
-    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 /* Which fields a segment kind takes: to, time, amplitude, period. */
 static const unsigned char takes[5][4] = {
@@ -40,16 +28,16 @@ static int segment(const sd_segment *d, size_t k, tf_segment *g, sd_issue *is)
     for (int f = 0; f < 4; ++f) {
         snprintf(path, sizeof path, "history.segments.%zu.%s", k, names[f]);
         if (takes[g->kind][f] && v[f] == NULL) {
-            return fail(is, path, "a %s segment needs %s", kinds[g->kind], names[f]);
+            return sd_fail(is, path, "a %s segment needs %s", kinds[g->kind], names[f]);
         }
         if (!takes[g->kind][f] && v[f] != NULL) {
-            return fail(is, path, "a %s segment takes no %s", kinds[g->kind], names[f]);
+            return sd_fail(is, path, "a %s segment takes no %s", kinds[g->kind], names[f]);
         }
         if (v[f] != NULL && !isfinite(*v[f])) {
-            return fail(is, path, "must be a finite number");
+            return sd_fail(is, path, "must be a finite number");
         }
         if (v[f] != NULL && f > 0 && !(*v[f] > 0)) {
-            return fail(is, path, "must be positive (s)");
+            return sd_fail(is, path, "must be positive (s)");
         }
     }
     g->to = d->to ? *d->to : 0;
@@ -76,7 +64,7 @@ static int read_table(const char *path, tf_history *h, sd_issue *is)
 {
     FILE *fp = fopen(path, "r");
     if (fp == NULL) {
-        return fail(is, "history.table", "cannot read %s: %s", path, strerror(errno));
+        return sd_fail(is, "history.table", "cannot read %s: %s", path, strerror(errno));
     }
     char line[512];
     size_t cap = 0;
@@ -93,13 +81,13 @@ static int read_table(const char *path, tf_history *h, sd_issue *is)
             if (lineno == 1 && h->n_rows == 0) {
                 continue; /* header */
             }
-            rc = fail(is, "history.table", "%s:%d: expected four numbers t,fx,fy,fz (s, N)",
+            rc = sd_fail(is, "history.table", "%s:%d: expected four numbers t,fx,fy,fz (s, N)",
                       path, lineno);
             break;
         }
         if (!isfinite(r[0]) || !isfinite(r[1]) || !isfinite(r[2]) || !isfinite(r[3]) ||
             r[0] < 0 || (h->n_rows > 0 && !(r[0] > h->table[4 * (h->n_rows - 1)]))) {
-            rc = fail(is, "history.table",
+            rc = sd_fail(is, "history.table",
                       "%s:%d: times must be finite, >= 0 and increasing, forces finite", path,
                       lineno);
             break;
@@ -108,7 +96,7 @@ static int read_table(const char *path, tf_history *h, sd_issue *is)
             cap = 2 * cap + 64;
             double *t = realloc(h->table, 4 * cap * sizeof *t);
             if (t == NULL) {
-                rc = fail(is, "history.table", "out of memory");
+                rc = sd_fail(is, "history.table", "out of memory");
                 break;
             }
             h->table = t;
@@ -117,7 +105,7 @@ static int read_table(const char *path, tf_history *h, sd_issue *is)
     }
     fclose(fp);
     if (rc == 0 && h->n_rows == 0) {
-        rc = fail(is, "history.table", "%s holds no row of t,fx,fy,fz", path);
+        rc = sd_fail(is, "history.table", "%s holds no row of t,fx,fy,fz", path);
     }
     return rc;
 }
@@ -134,50 +122,50 @@ int sd_history_build(const sd_history *d, tf_problem *p, sd_issue *is)
     h->dt = d->dt;
     h->duration = d->duration;
     if (!(isfinite(h->dt) && h->dt > 0)) {
-        return fail(is, "history.dt", "the time step must be a positive number of seconds");
+        return sd_fail(is, "history.dt", "the time step must be a positive number of seconds");
     }
     if (!(isfinite(h->duration) && h->duration > 0)) {
-        return fail(is, "history.duration", "must be a positive number of seconds");
+        return sd_fail(is, "history.duration", "must be a positive number of seconds");
     }
     if (h->duration / h->dt > 1e6) {
-        return fail(is, "history.dt", "%.0f steps: more than a million", h->duration / h->dt);
+        return sd_fail(is, "history.dt", "%.0f steps: more than a million", h->duration / h->dt);
     }
     if ((d->segments != NULL) == (d->table != NULL)) {
-        return fail(is, "history", "give exactly one of segments or table");
+        return sd_fail(is, "history", "give exactly one of segments or table");
     }
     if (d->contact) {
         h->contact = tf_problem_contact(p, d->contact);
         if (h->contact < 0) {
-            return fail(is, "history.contact", "names no contact site of the scene");
+            return sd_fail(is, "history.contact", "names no contact site of the scene");
         }
     } else {
         h->contact = p->n_contacts > 0 ? 0 : -1;
     }
     if (d->force) {
         if (d->table) {
-            return fail(is, "history.force", "a table gives the force itself: no force here");
+            return sd_fail(is, "history.force", "a table gives the force itself: no force here");
         }
         if (h->contact < 0) {
-            return fail(is, "history.force", "the scene has no contact site to apply it at");
+            return sd_fail(is, "history.force", "the scene has no contact site to apply it at");
         }
         for (int a = 0; a < 3; ++a) {
             h->force[a] = d->force[a];
             if (!isfinite(h->force[a])) {
-                return fail(is, "history.force", "must be finite (N)");
+                return sd_fail(is, "history.force", "must be finite (N)");
             }
         }
     }
     if (d->table) {
         char path[4096 + 512];
         if (h->contact < 0) {
-            return fail(is, "history.table", "the scene has no contact site for the table's force");
+            return sd_fail(is, "history.table", "the scene has no contact site for the table's force");
         }
         table_path(p->source, d->table, path, sizeof path);
         return read_table(path, h, is);
     }
     h->seg = calloc(d->segments_count, sizeof *h->seg);
     if (h->seg == NULL) {
-        return fail(is, "history.segments", "out of memory");
+        return sd_fail(is, "history.segments", "out of memory");
     }
     h->n_seg = d->segments_count;
     for (size_t k = 0; k < h->n_seg; ++k) {

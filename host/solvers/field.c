@@ -36,3 +36,12 @@ int tf_shape_field(const tf_shape *sh, const double *d, const double *x, size_t 
     tf_shape_work_free(&w);
     return rc;
 }
+
+int tf_nodal_field(const tf_shape *sh, tf_nodal_map *map, const double *u, const double *x,
+                   size_t np, double *uh, double *grad, char *err, size_t errlen)
+{
+    if (map != NULL && (u = tf_nodal_map_params_of(map, u, err, errlen)) == NULL) {
+        return -1;
+    }
+    return tf_shape_field(sh, u, x, np, uh, grad, err, errlen);
+}

@@ -409,10 +409,8 @@ static int field(const tf_solver *s, const double *u, const double *x, size_t np
                  double *grad, char *err, size_t errlen)
 {
     const galerkin *g = of_const(s);
-    if (g->efg && (u = tf_nodal_map_params_of((tf_nodal_map *)&g->map, u, err, errlen)) == NULL) {
-        return -1;
-    }
-    return tf_shape_field(&g->sh, u, x, np, uh, grad, err, errlen);
+    return tf_nodal_field(&g->sh, g->efg ? (tf_nodal_map *)&g->map : NULL, u, x, np, uh, grad,
+                          err, errlen);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }

@@ -148,10 +148,7 @@ static int field(const tf_solver *sv, const double *u, const double *x, size_t n
                  double *grad, char *err, size_t errlen)
 {
     nl_solver *s = (nl_solver *)of_const(sv);
-    if (s->efg && (u = tf_nodal_map_params_of(&s->map, u, err, errlen)) == NULL) {
-        return -1;
-    }
-    return tf_shape_field(&s->sh, u, x, np, uh, grad, err, errlen);
+    return tf_nodal_field(&s->sh, s->efg ? &s->map : NULL, u, x, np, uh, grad, err, errlen);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }
