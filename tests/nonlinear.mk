@@ -5,7 +5,8 @@
 #                          against closed forms (RPIM and EFG), the EFG patch
 #                          test and cantilever, the weak boundary conditions
 #                          compared; tables and plots of docs/validation.md §7
-# Unit tests (tests/unit/test_{nonlinear,weak_bc,homogeneous}.c) run with
+# Unit tests (tests/unit/solvers/test_{nonlinear,weak_bc,homogeneous}.c,
+# tests/unit/problem/test_history.c) run with
 # check-unit and check-sanitize.
 
 NL_TOOLS := $(T)/solver/homogeneous $(T)/solver/block48_curves $(T)/solver/bench_nonlinear

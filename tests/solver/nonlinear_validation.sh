@@ -25,19 +25,14 @@ say "homogeneous: creep against the time step"
 say "EFG patch test and cantilever"
 E="--set solver.method=efg-galerkin"
 "$tool" -q verify patch --levels 8 $E --csv "$out/efg_patch_nitsche.csv" >/dev/null
-"$tool" -q verify patch --levels 8 $E --set solver.bc=penalty --set solver.penalty=10 \
-    --csv "$out/efg_patch_penalty.csv" >/dev/null
 "$tool" -q verify patch --levels 8 $E --set solver.integration=vci --csv "$out/efg_patch_vci.csv" >/dev/null
-"$tool" -q verify patch --levels 8 --set solver.bc=nitsche --set solver.integration=vci \
-    --csv "$out/rpim_patch_vci.csv" >/dev/null
-"$tool" -q verify cantilever --levels 5 $E --csv "$out/efg_cantilever.csv" >/dev/null
-"$tool" -q verify cantilever --levels 5 $E --set solver.integration=vci \
-    --csv "$out/efg_cantilever_vci.csv" >/dev/null
+"$tool" -q verify cantilever --levels 4 $E --csv "$out/efg_cantilever.csv" >/dev/null
+"$tool" -q verify cantilever --levels 4 --csv "$out/rpim_cantilever.csv" >/dev/null
 
 # --- weak boundary conditions: accuracy against the factor, conditioning --------
 say "penalty and Nitsche factors (cantilever level 2, EFG)"
 echo "method,factor,error_l2,error_energy,rcond" >"$out/weak_bc_factor.csv"
-for f in 0.1 0.3 1 3 10 30 100 300 1000 1e4 1e5 1e6; do
+for f in 0.3 3 10 30 100 1000 1e4 1e6; do
     for m in penalty nitsche; do
         "$tool" verify cantilever --levels 3 $E --set solver.bc=$m --set solver.$m=$f \
             >"$tmp/v.csv" 2>"$tmp/v.err" || true
@@ -70,6 +65,20 @@ for m in rpim-galerkin efg-galerkin; do
     limit $m "material={law: kelvin-neo-hookean, nu: 0.49, k1: 0.2, k2: 0.12, eta: 0.3}" \
         "material={E: 0.2, nu: 0.49}" "" "$beta" "kelvin-neo-hookean (relaxed)"
 done
+
+# --- block48 at large indentation (acceptance 3): node 61's curve, 3 load levels
+say "block48 curves"
+echo "grid,law,factor,fx,fy,fz,ux,uy,uz,steps,iterations,tangents,factorisations,seconds" \
+    >"$tmp/curves.csv"
+for g in 11,11,3 21,21,5; do
+    for law in neo-hookean svk; do
+        for f in 0,0,-3 1,0,0 1,0,-3; do
+            # a law past its limit load fails (exit 1) with its row marked "failed"
+            "$tools/block48_curves" $g $law $f 3 2>>"$tmp/curves.err" | tail -n +2 >>"$tmp/curves.csv" || true
+        done
+    done
+done
+cp "$tmp/curves.csv" "$out/block48_curves.csv"
 }
 
 # --- plots -----------------------------------------------------------------------
@@ -128,10 +137,21 @@ unset logscale x
 set xlabel "Gauss points per axis"
 set ylabel "relative L2 error"
 set title "Patch test (jittered 6^3 cloud): EFG and RPIM, Gauss points and VCI"
+set logscale y
 plot "$out/efg_patch_nitsche.csv" using 1:4 with linespoints title "EFG, Nitsche", \
-     "$out/efg_patch_penalty.csv" using 1:4 with linespoints title "EFG, penalty 10", \
      "$out/efg_patch_vci.csv" using 1:(\$4 > 1e-16 ? \$4 : 1e-16) with linespoints title "EFG, Nitsche + VCI", \
-     "$out/rpim_patch_vci.csv" using 1:(\$4 > 1e-16 ? \$4 : 1e-16) with linespoints title "RPIM, Nitsche + VCI"
+     "docs/validation/patch_linear.csv" using 1:4 with linespoints title "RPIM (§2)"
+set output "$out/block48_curves.png"
+unset logscale
+set xlabel "force along -z (N)"
+set ylabel "-u_z at the top centre (mm)"
+set title "block48, 3 N along -z from rest: node 61's curve (3 load levels)"
+set key left top
+sel(g, l) = sprintf("< grep '^%s,%s,[0-9.e-]*,0,0,' $out/block48_curves.csv | grep -v failed", g, l)
+plot sel("11x11x3", "neo-hookean") using (-\$6):(-\$9) with linespoints title "neo-Hookean, 11x11x3", \
+     sel("21x21x5", "neo-hookean") using (-\$6):(-\$9) with linespoints title "neo-Hookean, 21x21x5", \
+     sel("11x11x3", "svk") using (-\$6):(-\$9) with linespoints title "SVK, 11x11x3", \
+     sel("21x21x5", "svk") using (-\$6):(-\$9) with linespoints title "SVK, 21x21x5"
 EOF
 }
 if [ "${4:-}" != plots ]; then
