@@ -20,138 +20,21 @@
  *   bounds   relative, e.g. 0.01 for 1 %
  * Prints one line per failed check; exits 1 if any failed, 2 on bad usage.
  */
+#include "data_csv.h"
+
 #include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define GRID 11
-#define NODES (GRID * GRID)
-#define SPACING 4.8
-#define TOP 6.0
-#define PATH_LEN 512
 #define LIST_MAX 8
 /* CalculiX prints 7 significant digits: exact symmetries hold to that,
  * relative to the largest displacement of the field. */
 #define SYM_TOL 1e-5
 #define REACTION_TOL 1e-6
 
-typedef struct {
-    double u[NODES][3]; /* ux, uy, uz of block48 node N at u[N - 1] */
-    double max_abs;
-} field;
-
+static const grid_spec block48 = {GRID, GRID, 4.8, 6.0, CLAMP_X0 | CLAMP_X1 | CLAMP_Y0 | CLAMP_Y1};
 static const char *const cases[3] = {"fx", "fy", "fz"};
-static const char *data_dir;
-static int failures;
-
-static void fail(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-static void fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    printf("FAIL: ");
-    vprintf(fmt, ap);
-    printf("\n");
-    va_end(ap);
-    ++failures;
-}
-
-static FILE *open_data(const char *name)
-{
-    char path[2 * PATH_LEN];
-    snprintf(path, sizeof path, "%s/%s", data_dir, name);
-    FILE *fp = fopen(path, "r");
-    if (fp == NULL) {
-        fail("%s: missing", path);
-    }
-    return fp;
-}
-
-/* Parses a whole field as a finite double. */
-static int parse_num(const char *s, double *v)
-{
-    char *end;
-    *v = strtod(s, &end);
-    return end != s && *end == '\0' && isfinite(*v);
-}
-
-/* Splits a CSV line in place; returns the number of fields (max + 1 when
- * there are more than max). */
-static int split(char *line, char **fields, int max)
-{
-    line[strcspn(line, "\r\n")] = '\0';
-    char *p = line;
-    for (int n = 0; n < max; ++n) {
-        fields[n] = p;
-        p = strchr(p, ',');
-        if (p == NULL) {
-            return n + 1;
-        }
-        *p++ = '\0';
-    }
-    return max + 1;
-}
-
-static int check_row(const char *name, int row, char **f, field *out)
-{
-    double v[7];
-    for (int k = 0; k < 7; ++k) {
-        if (!parse_num(f[k], &v[k])) {
-            fail("%s line %d: field %d (%s) is not a finite number", name, row + 2, k + 1, f[k]);
-            return -1;
-        }
-    }
-    int i = row % GRID, j = row / GRID;
-    if (v[0] != row + 1 || fabs(v[1] - SPACING * i) > 1e-9 || fabs(v[2] - SPACING * j) > 1e-9 ||
-        fabs(v[3] - TOP) > 1e-9) {
-        fail("%s line %d: expected node %d at (%g, %g, %g)", name, row + 2, row + 1, SPACING * i,
-             SPACING * j, TOP);
-        return -1;
-    }
-    int edge = i == 0 || j == 0 || i == GRID - 1 || j == GRID - 1;
-    for (int k = 0; k < 3; ++k) {
-        out->u[row][k] = v[4 + k];
-        out->max_abs = fmax(out->max_abs, fabs(v[4 + k]));
-        if (edge && v[4 + k] != 0) {
-            fail("%s line %d: clamped edge node %d moves", name, row + 2, row + 1);
-            return -1;
-        }
-    }
-    return 0;
-}
-
-/* Reads one displacement file; returns 0 when its format is right. */
-static int read_field(const char *name, field *out)
-{
-    FILE *fp = open_data(name);
-    if (fp == NULL) {
-        return -1;
-    }
-    memset(out, 0, sizeof *out);
-    char line[1024];
-    int rows = 0, bad = 0;
-    if (fgets(line, sizeof line, fp) == NULL || strcmp(line, "node,x,y,z,ux,uy,uz\n") != 0) {
-        fail("%s line 1: header is not node,x,y,z,ux,uy,uz", name);
-        bad = 1;
-    }
-    while (!bad && fgets(line, sizeof line, fp) != NULL) {
-        char *f[8];
-        if (rows == NODES || split(line, f, 7) != 7) {
-            fail("%s line %d: a 122nd row, or not 7 fields", name, rows + 2);
-            bad = 1;
-        } else {
-            bad = check_row(name, rows++, f, out) != 0;
-        }
-    }
-    fclose(fp);
-    if (!bad && rows != NODES) {
-        fail("%s: %d rows, expected 121", name, rows);
-        bad = 1;
-    }
-    return bad ? -1 : 0;
-}
 
 /* Reads the three cases of the files named PREFIX CASE SUFFIX. */
 static int read_cases(const char *prefix, const char *suffix, field c[3])
@@ -160,7 +43,7 @@ static int read_cases(const char *prefix, const char *suffix, field c[3])
     for (int k = 0; k < 3; ++k) {
         char name[PATH_LEN];
         snprintf(name, sizeof name, "%s%s%s", prefix, cases[k], suffix);
-        bad |= read_field(name, &c[k]) != 0;
+        bad |= read_field(name, &block48, &c[k]) != 0;
     }
     return bad ? -1 : 0;
 }
@@ -217,29 +100,11 @@ static void check_symmetry(const char *set, const field c[3])
     check_reflection(set, "fz symmetry about y = 24", &c[2], 1, fz_y);
 }
 
-static double norm3(const double *a) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
-/* Relative RMS over the nodes (node < 0) or at one node of |fine - coarse|. */
-static double change(const field *coarse, const field *fine, int node)
-{
-    double num = 0, den = 0;
-    for (int n = 0; n < NODES; ++n) {
-        if (node >= 0 && n != node) {
-            continue;
-        }
-        double d[3] = {fine->u[n][0] - coarse->u[n][0], fine->u[n][1] - coarse->u[n][1],
-                       fine->u[n][2] - coarse->u[n][2]};
-        num += norm3(d) * norm3(d);
-        den += norm3(fine->u[n]) * norm3(fine->u[n]);
-    }
-    return sqrt(num / den);
-}
-
 static void check_convergence(const char *coarse, const char *fine, const field fc[3],
                               const field ff[3], double rms_bound, double n61_bound)
 {
     for (int k = 0; k < 3; ++k) {
-        double rms = change(&fc[k], &ff[k], -1), n61 = change(&fc[k], &ff[k], 60);
+        double rms = field_change(&fc[k], &ff[k], -1), n61 = field_change(&fc[k], &ff[k], 60);
         printf("  %s %s -> %s: RMS change %.3f %% (bound %.3g %%), node 61 %.3f %% (bound %.3g %%)\n",
                cases[k], coarse, fine, 100 * rms, 100 * rms_bound, 100 * n61, 100 * n61_bound);
         if (!(rms < rms_bound) || !(n61 < n61_bound)) {
@@ -251,15 +116,12 @@ static void check_convergence(const char *coarse, const char *fine, const field 
 /* block48_reference.csv names, for each case, the finest level's file. */
 static void check_reference(const char *finest)
 {
-    FILE *fp = open_data("block48_reference.csv");
+    FILE *fp = open_table("block48_reference.csv", "case,level,file");
     if (fp == NULL) {
         return;
     }
     char line[1024], want[PATH_LEN];
     int seen[3] = {0, 0, 0}, row = 1;
-    if (fgets(line, sizeof line, fp) == NULL || strcmp(line, "case,level,file\n") != 0) {
-        fail("block48_reference.csv line 1: header is not case,level,file");
-    }
     while (fgets(line, sizeof line, fp) != NULL) {
         char *f[4];
         ++row;
@@ -285,15 +147,12 @@ static void check_reference(const char *finest)
  * own run (named after the level) is listed with all three cases. */
 static void check_reactions(char *const *levels, int nlevels)
 {
-    FILE *fp = open_data("block48_reactions.csv");
+    FILE *fp = open_table("block48_reactions.csv", "run,case,fx,fy,fz,rx,ry,rz");
     if (fp == NULL) {
         return;
     }
     char line[1024];
     int row = 1, found[LIST_MAX] = {0};
-    if (fgets(line, sizeof line, fp) == NULL || strcmp(line, "run,case,fx,fy,fz,rx,ry,rz\n") != 0) {
-        fail("block48_reactions.csv line 1: header is not run,case,fx,fy,fz,rx,ry,rz");
-    }
     while (fgets(line, sizeof line, fp) != NULL) {
         char *f[9];
         double v[6];
@@ -302,7 +161,8 @@ static void check_reactions(char *const *levels, int nlevels)
         for (int k = 0; ok && k < 6; ++k) {
             ok = parse_num(f[2 + k], &v[k]);
         }
-        if (!ok || fabs(norm3(v) - 1) > 1e-12 || fabs(v[0] + v[3]) > REACTION_TOL ||
+        double size = ok ? sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) : 0;
+        if (!ok || fabs(size - 1) > 1e-12 || fabs(v[0] + v[3]) > REACTION_TOL ||
             fabs(v[1] + v[4]) > REACTION_TOL || fabs(v[2] + v[5]) > REACTION_TOL) {
             fail("block48_reactions.csv line %d: reaction does not balance a 1 N force", row);
             continue;
@@ -318,7 +178,6 @@ static void check_reactions(char *const *levels, int nlevels)
         }
     }
 }
-
 
 static int split_list(char *s, char **items)
 {

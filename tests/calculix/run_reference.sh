@@ -78,7 +78,7 @@ record() {
     echo "$run,$element,$nu,$n,$layers,$load,$size,$used_threads,$seconds,$mb" >> "$out/runs.csv"
     echo "calculix: $run: $seconds s, $mb MB" >&2
     # (no pipe: a failed extraction must stop the study under set -e)
-    awk -f "$here/dat_reactions.awk" "$work/$run.inp" "$work/$run.dat" > "$out/$run.reactions"
+    awk -f "$here/support_reaction.awk" -f "$here/dat_reactions.awk" "$work/$run.inp" "$work/$run.dat" > "$out/$run.reactions"
     sed "s/^/$run,/" "$out/$run.reactions" >> "$out/reactions.csv"
     step=0
     for c in $(awk '$1 == "**" && $2 == "STEP" { print $4 }' "$work/$run.inp"); do
