@@ -59,9 +59,10 @@ $(CX)/check_%: tests/calculix/check_%.c tests/calculix/data_csv.c tests/calculix
 	$(Q)$(CC) $(HOST_STRICT) -O2 $< tests/calculix/data_csv.c -lm -o $@
 
 calculix-reference: $(CX)/box_deck | deps-calculix
-	$(Q)LEVELS="$(CALCULIX_LEVELS)" NUS="$(CALCULIX_NUS)" SWEEP_LEVEL=$(CALCULIX_SWEEP_LEVEL) \
-	  LOCK_LEVEL=$(CALCULIX_LOCK_LEVEL) MESH_RUNS="$(CALCULIX_MESH_RUNS)" \
-	  POINT_LEVELS="$(CALCULIX_POINT_LEVELS)" \
+	$(Q)SCENE=block48 NU_REF=0.49 POINT=61 LEVELS="$(CALCULIX_LEVELS)" NUS="$(CALCULIX_NUS)" \
+	  SWEEP_LEVEL=$(CALCULIX_SWEEP_LEVEL) LOCK_LEVEL=$(CALCULIX_LOCK_LEVEL) \
+	  MESH_RUNS="$(CALCULIX_MESH_RUNS)" GRID_RUNS="$(CALCULIX_GRID_RUNS)" \
+	  POINT_LEVELS="$(CALCULIX_POINT_LEVELS)" REUSE=$(CALCULIX_REUSE) \
 	  tests/calculix/run_reference.sh $< $(CX) $(CX_DATA)
 	@$(MAKE) --no-print-directory calculix-report check-calculix-data
 
@@ -85,7 +86,7 @@ calculix-report: | deps-calculix-plot
 
 check-calculix-data: $(CX)/check_data
 	@echo "== CalculiX reference data for block48 =="
-	@tests/calculix/check_data.sh $< $(CX_DATA) $(CX)/mutant $(CX_CHECK_ARGS)
+	@tests/calculix/check_data.sh $< block48 $(CX_DATA) $(CX)/mutant $(CX_CHECK_ARGS)
 
 check-calculix-deck: $(CX)/box_deck
 	@echo "== CalculiX deck writer for the box scenes (block48, beam40) =="

@@ -16,9 +16,13 @@
 #   NL_LOAD_LEVELS printed load levels per path (equal steps of the force)
 #   NL_COMPARE    "level:element ..." every material and path again with
 #                 another element on that level
-#   NL_SMALL      levels of the small-load runs: each path at SMALL_FACTOR of
-#                 its force in one increment, beside a linear run of the same
-#                 mesh and element (the small-load limit)
+#   NL_EXTRA      "divisions:layers:material:path ..." single runs of the
+#                 study's element on other meshes (through-thickness and
+#                 in-plane refinement apart), named nl_MAT_PATH_DxDxL
+#   NL_SMALL      levels of the small-load runs: each path at each factor of
+#                 NL_SMALL_FACTORS times its force, in one increment, beside
+#                 a linear run of the same mesh and element (the small-load
+#                 limit: the difference must shrink in proportion to the force)
 #
 # Decks, CalculiX output and logs stay in WORK (build/calculix/nl).  DATA
 # (tests/calculix/data) is written only after every run ended:
@@ -41,7 +45,6 @@ set -eu
 deck_tool=$1 work=$2 data=$3
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
-small_factor=0.001
 mkdir -p "$work/out"
 out=$work/out
 echo "run,material,element,path,divisions,layers,symmetry,elements,nodes,dofs,increments,cutbacks,iterations,reached,threads,seconds,max_rss_mb" > "$out/runs.csv"
@@ -126,7 +129,7 @@ sweep() {
         for p in $NL_PATHS; do
             path=$(field "$p" 1) sym=$(field "$p" 3)
             force=$(field "$p" 2 | awk -F, -v s="$scale" '{ printf "%.10g,%.10g,%.10g", s * $1, s * $2, s * $3 }')
-            nonlinear "nl_${mat}_${path}_$name$suffix" "$mat" "$el" "$path$( [ "$scale" = 1 ] || echo _small)" \
+            nonlinear "nl_${mat}_${path}_$name$suffix" "$mat" "$el" "$path$( [ "$scale" = 1 ] || echo "_s$scale")" \
                 "$force" "$sym" "$n" "$layers" "$levels"
         done
     done
@@ -138,9 +141,18 @@ done
 for c in $NL_COMPARE; do
     sweep "$(level_of "${c%%:*}")" "${c#*:}" "_${c#*:}" 1 "$NL_LOAD_LEVELS"
 done
+for e in $NL_EXTRA; do
+    n=$(field "$e" 1) layers=$(field "$e" 2) mat=$(field "$e" 3) path=$(field "$e" 4)
+    p=$(for q in $NL_PATHS; do [ "$(field "$q" 1)" = "$path" ] && echo "$q"; done)
+    [ -n "$p" ] || { echo "run_nlgeom: path $path of NL_EXTRA is not in NL_PATHS" >&2; exit 2; }
+    nonlinear "nl_${mat}_${path}_${n}x${n}x$layers" "$mat" "$NL_ELEMENT" "$path" "$(field "$p" 2)" \
+        "$(field "$p" 3)" "$n" "$layers" "$NL_LOAD_LEVELS"
+done
 for s in $NL_SMALL; do
     l=$(level_of "$s")
-    sweep "$l" "$NL_ELEMENT" "_small" "$small_factor" 1
+    for f in $NL_SMALL_FACTORS; do
+        sweep "$l" "$NL_ELEMENT" "_s$f" "$f" 1
+    done
     linear "linear_${s}_$NL_ELEMENT" "$NL_ELEMENT" "$(field "$l" 2)" "$(field "$l" 3)"
 done
 
