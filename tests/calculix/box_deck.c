@@ -85,7 +85,7 @@
 #define PATH_CASE 3
 /* Smallest increment CalculiX may cut back to, relative to the interval
  * between printed load levels, before it gives up. */
-#define MIN_FRACTION 1e-4
+#define MIN_FRACTION 1e-2
 
 enum { X0 = 1, X1 = 2, Y0 = 4, Y1 = 8 }; /* lateral faces */
 enum { SYM_X = 1, SYM_Y = 2 };           /* mirror planes x = xc, y = yc */

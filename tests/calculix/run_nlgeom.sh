@@ -16,9 +16,10 @@
 #   NL_LOAD_LEVELS printed load levels per path (equal steps of the force)
 #   NL_COMPARE    "level:element ..." every material and path again with
 #                 another element on that level
-#   NL_EXTRA      "divisions:layers:material:path ..." single runs of the
-#                 study's element on other meshes (through-thickness and
-#                 in-plane refinement apart), named nl_MAT_PATH_DxDxL
+#   NL_EXTRA      "divisions:layers:material:path[:element] ..." single runs
+#                 on other meshes (through-thickness and in-plane refinement
+#                 apart) or with another element, named nl_MAT_PATH_DxDxL
+#                 (+ _ELEMENT when it is not the study's)
 #   NL_SMALL      levels of the small-load runs: each path at each factor of
 #                 NL_SMALL_FACTORS times its force, in one increment, beside
 #                 a linear run of the same mesh and element (the small-load
@@ -143,10 +144,12 @@ for c in $NL_COMPARE; do
 done
 for e in $NL_EXTRA; do
     n=$(field "$e" 1) layers=$(field "$e" 2) mat=$(field "$e" 3) path=$(field "$e" 4)
+    el=$(field "$e" 5) suffix=""
+    [ -n "$el" ] && [ "$el" != "$NL_ELEMENT" ] && suffix=_$el
     p=$(for q in $NL_PATHS; do [ "$(field "$q" 1)" = "$path" ] && echo "$q"; done)
     [ -n "$p" ] || { echo "run_nlgeom: path $path of NL_EXTRA is not in NL_PATHS" >&2; exit 2; }
-    nonlinear "nl_${mat}_${path}_${n}x${n}x$layers" "$mat" "$NL_ELEMENT" "$path" "$(field "$p" 2)" \
-        "$(field "$p" 3)" "$n" "$layers" "$NL_LOAD_LEVELS"
+    nonlinear "nl_${mat}_${path}_${n}x${n}x$layers$suffix" "$mat" "${el:-$NL_ELEMENT}" "$path" \
+        "$(field "$p" 2)" "$(field "$p" 3)" "$n" "$layers" "$NL_LOAD_LEVELS"
 done
 for s in $NL_SMALL; do
     l=$(level_of "$s")
