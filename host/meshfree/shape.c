@@ -7,29 +7,70 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-int tf_shape_init(tf_shape *sh, const tf_scene *s)
+int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const double hi[3],
+                  const tf_solver_opts *o)
 {
-    const tf_solver_opts *o = &s->solver;
-    sh->cloud = &s->cloud;
+    sh->cloud = cloud;
     sh->rpim.shape = o->alpha_c * o->d_c;
     sh->rpim.q = o->q;
     sh->rpim.poly = o->polynomial;
     sh->centre = o->centre;
     sh->rcond_warn = o->rcond_warn;
+    sh->support = o->support;
+    sh->mls_radius = NULL;
     sh->scale = 0;
     for (int a = 0; a < 3; ++a) {
-        sh->radius[a] = o->support * s->cloud.spacing[a];
+        sh->radius[a] = o->support * cloud->spacing[a];
         sh->scale = fmax(sh->scale, sh->radius[a]);
     }
-    if (tf_cells_init(&sh->cells, s->box_min, s->box_max, o->cells, o->gauss) != 0) {
+    if (tf_cells_init(&sh->cells, lo, hi, o->cells, o->gauss) != 0) {
         return -1;
     }
-    return tf_nbr_build(&sh->nbr, s->cloud.xyz, s->cloud.n, sh->radius);
+    return tf_nbr_build(&sh->nbr, cloud->xyz, cloud->n, sh->radius);
 }
 
 void tf_shape_free(tf_shape *sh)
 {
     tf_nbr_free(&sh->nbr);
+    free(sh->mls_radius);
+    sh->mls_radius = NULL;
+}
+
+int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
+{
+    const tf_cloud *c = sh->cloud;
+    double *rad = malloc(3 * c->n * sizeof *rad), reach[3] = {0, 0, 0}, t = 0;
+    if (rad == NULL) {
+        snprintf(err, errlen, "out of memory for the radii of influence");
+        return -1;
+    }
+    if (tf_mls_radii(c->xyz, c->n, c->spacing, sh->support, rad, err, errlen) != 0) {
+        free(rad);
+        return -1;
+    }
+    for (size_t i = 0; i < c->n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            reach[a] = fmax(reach[a], rad[3 * i + a]);
+        }
+    }
+    /* A node reaching a point of a cell lies within the ellipsoid reach
+     * (1 + t) of the cell's centre, t the half-diagonal in reach units. */
+    for (int a = 0; sh->centre == TF_SUPPORT_CELL && a < 3; ++a) {
+        t += (0.5 * sh->cells.size[a] / reach[a]) * (0.5 * sh->cells.size[a] / reach[a]);
+    }
+    sh->scale = 0;
+    for (int a = 0; a < 3; ++a) {
+        sh->scale = fmax(sh->scale, reach[a]);
+        reach[a] *= 1 + sqrt(t);
+    }
+    tf_nbr_free(&sh->nbr);
+    free(sh->mls_radius);
+    sh->mls_radius = rad;
+    if (tf_nbr_build(&sh->nbr, c->xyz, c->n, reach) != 0) {
+        snprintf(err, errlen, "out of memory for the EFG neighbour grid");
+        return -1;
+    }
+    return 0;
 }
 
 void tf_shape_stats_reset(tf_shape_stats *st)
@@ -46,6 +87,8 @@ void tf_shape_work_init(tf_shape_work *w)
     w->rw.cap = w->rw.rhs_cap = 0;
     w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = NULL;
     w->rw.ipiv = w->rw.iwork = NULL;
+    w->mw.cap = 0;
+    w->mw.w = w->mw.dw = w->mw.p = NULL;
     w->idx = NULL;
     w->phi = w->dphi = NULL;
     w->n = w->cap = w->pcap = 0;
@@ -57,6 +100,7 @@ void tf_shape_work_init(tf_shape_work *w)
 void tf_shape_work_free(tf_shape_work *w)
 {
     tf_rpim_work_free(&w->rw);
+    tf_mls_work_free(&w->mw);
     free(w->idx);
     free(w->phi);
     free(w->dphi);
@@ -70,10 +114,12 @@ static int grow(tf_shape_work *w, size_t need, size_t np)
     size_t pcap = np > w->pcap ? np : w->pcap;
     if (cap != w->cap) {
         tf_rpim_work_free(&w->rw);
+        tf_mls_work_free(&w->mw);
         free(w->idx);
         w->idx = malloc(cap * sizeof *w->idx);
         w->cell = SIZE_MAX;
-        if (w->idx == NULL || tf_rpim_work_init(&w->rw, cap) != 0) {
+        if (w->idx == NULL || tf_rpim_work_init(&w->rw, cap) != 0 ||
+            tf_mls_work_init(&w->mw, cap) != 0) {
             w->cap = w->pcap = 0;
             snprintf(w->err, sizeof w->err, "out of memory for a support of %zu nodes", need);
             return -1;
@@ -130,6 +176,17 @@ int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], si
         }
         n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
     }
+    if (sh->mls_radius) { /* EFG: the nodes whose domain reaches x, or the cell */
+        double lo[3] = {x[0], x[1], x[2]}, hi[3] = {x[0], x[1], x[2]}, half[3];
+        if (sh->centre == TF_SUPPORT_CELL) {
+            tf_cells_box(&sh->cells, cell, at, half);
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = at[a] - half[a];
+                hi[a] = at[a] + half[a];
+            }
+        }
+        n = tf_mls_reach(sh->cloud->xyz, sh->mls_radius, w->idx, n, lo, hi);
+    }
     w->n = n;
     if (n == 0) {
         snprintf(w->err, sizeof w->err,
@@ -140,10 +197,10 @@ int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], si
     return 0;
 }
 
-static void record(const tf_shape *sh, tf_shape_stats *st, double rcond, const double at[3],
-                   size_t n)
+static void record(const tf_shape *sh, tf_shape_stats *st, size_t systems, double rcond,
+                   const double at[3], size_t n)
 {
-    st->systems++;
+    st->systems += systems;
     st->ill += rcond < sh->rcond_warn;
     if (rcond < st->min_rcond) {
         st->min_rcond = rcond;
@@ -162,6 +219,14 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
     if (sh->centre == TF_SUPPORT_CELL && w->cell == cell) {
         return 0;
     }
+    if (sh->mls_radius) { /* EFG: A(x) belongs to each point (evaluate) */
+        w->cell = SIZE_MAX;
+        if (tf_shape_support(sh, w, x, cell) != 0) {
+            return -1;
+        }
+        w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
+        return 0;
+    }
     double at[3], rcond;
     support_centre(sh, x, cell, at);
     if (tf_shape_support(sh, w, x, cell) != 0) {
@@ -178,15 +243,39 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
         w->cell = SIZE_MAX;
         return -1;
     }
-    record(sh, &w->st, rcond, at, w->n);
+    record(sh, &w->st, 1, rcond, at, w->n);
     w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
     return 0;
 }
 
-static int evaluate(tf_shape_work *w, const double *x, size_t np, int deriv)
+/* EFG: MLS at the np points of the prepared support. */
+static int evaluate_mls(const tf_shape *sh, tf_shape_work *w, const double *x, size_t np,
+                        int deriv)
+{
+    double rcond;
+    size_t at;
+    if (tf_mls_eval(&w->mw, sh->cloud->xyz, sh->mls_radius, w->idx, w->n, sh->scale, x, np,
+                    w->phi, deriv ? w->dphi : NULL, &rcond, &at) != 0) {
+        const double *p = x + 3 * at;
+        snprintf(w->err, sizeof w->err,
+                 "the MLS moment matrix at (%g, %g, %g) mm is singular to machine precision: "
+                 "fewer than four of the %zu nodes around it weigh there, or all of them lie "
+                 "in one plane (raise solver.support)",
+                 p[0], p[1], p[2], w->n);
+        w->cell = SIZE_MAX;
+        return -1;
+    }
+    record(sh, &w->st, np, rcond, x + 3 * at, w->n);
+    return 0;
+}
+
+static int evaluate(const tf_shape *sh, tf_shape_work *w, const double *x, size_t np, int deriv)
 {
     if (np > w->pcap && grow(w, w->n, np) != 0) {
         return -1;
+    }
+    if (sh->mls_radius) {
+        return evaluate_mls(sh, w, x, np, deriv);
     }
     if (tf_rpim_eval(&w->rw, x, np, w->phi, deriv ? w->dphi : NULL) != 0) {
         snprintf(w->err, sizeof w->err, "out of memory for shape functions");
@@ -200,7 +289,7 @@ int tf_shape_at(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t 
     if (prepare(sh, w, x, cell) != 0) {
         return -1;
     }
-    return evaluate(w, x, 1, deriv);
+    return evaluate(sh, w, x, 1, deriv);
 }
 
 int tf_shape_cell_points(const tf_shape *sh, tf_shape_work *w, size_t cell, const double *x,
@@ -209,7 +298,7 @@ int tf_shape_cell_points(const tf_shape *sh, tf_shape_work *w, size_t cell, cons
     if (sh->centre != TF_SUPPORT_CELL || prepare(sh, w, x, cell) != 0) {
         return -1;
     }
-    return evaluate(w, x, np, deriv);
+    return evaluate(sh, w, x, np, deriv);
 }
 
 void tf_shape_stats_merge(tf_shape_stats *into, const tf_shape_stats *from)

@@ -2,8 +2,14 @@
  * shape.h — the trial functions of the Galerkin method at a point: which
  * nodes support it and their RPIM shape functions (seed §2.2-2.3).
  *
+ * Two kinds of shape function: RPIM (rpim.h, the default) and, after
+ * tf_shape_use_efg, the element-free Galerkin method's MLS (mls.h, seed
+ * 001), with the same output per point (nodes, phi, dphi).
+ *
  * Two choices of support domain, both an ellipsoid of semi-axes
- * alpha_s x nodal spacing per axis:
+ * alpha_s x nodal spacing per axis (EFG: every node's own domain of
+ * influence, alpha_s x its local spacing; a support is then the set of
+ * nodes whose domain reaches the point, or the cell):
  *   point: centred at the evaluation point itself (the seed: "a support
  *          domain of a certain size is centered there"); one local system
  *          per point;
@@ -17,10 +23,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "meshfree/mls.h"
 #include "meshfree/neighbours.h"
 #include "meshfree/quadrature.h"
 #include "meshfree/rpim.h"
-#include "scene/scene.h"
+#include "problem/problem.h"
 
 typedef struct tf_shape {
     const tf_cloud *cloud;
@@ -31,6 +38,8 @@ typedef struct tf_shape {
     tf_cells cells;
     tf_support_centre centre;
     double rcond_warn;
+    double support;      /* alpha_s */
+    double *mls_radius;  /* EFG: 3 n radii of influence, mm; NULL for RPIM */
 } tf_shape;
 
 /* Conditioning and size of the local systems met by one worker. */
@@ -44,6 +53,7 @@ typedef struct tf_shape_stats {
 
 typedef struct tf_shape_work {
     tf_rpim_work rw;
+    tf_mls_work mw;  /* EFG */
     uint32_t *idx;   /* support nodes, ascending */
     size_t n, cap;   /* support size, node capacity */
     size_t pcap;     /* point capacity of phi, dphi */
@@ -54,9 +64,17 @@ typedef struct tf_shape_work {
     char err[256];
 } tf_shape_work;
 
-/* From a scene's cloud and solver options.  Returns 0, or -1 (out of memory). */
-int tf_shape_init(tf_shape *sh, const tf_scene *s);
+/* From a node cloud (which must outlive sh), the box the background cells
+ * cover and the solver options.  Returns 0, or -1 (out of memory, bad
+ * cells). */
+int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const double hi[3],
+                  const tf_solver_opts *o);
 void tf_shape_free(tf_shape *sh);
+
+/* Switches sh from RPIM to EFG: MLS shape functions whose nodes have the
+ * radii of influence alpha_s x their local spacing (tf_mls_radii).
+ * Returns 0, or -1 with a message in err. */
+int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen);
 
 void tf_shape_work_init(tf_shape_work *w);
 void tf_shape_work_free(tf_shape_work *w);

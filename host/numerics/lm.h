@@ -22,7 +22,7 @@
 
 /* Why a fit stopped.  tf_stop_converged() says which ones are success. */
 typedef enum tf_stop {
-    TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_fit) */
+    TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_lsfit) */
     TF_STOP_REDUCTION,      /* actual and predicted relative reduction <= ftol,
                                with a sane ratio (0.25..2) between them, and
                                the Gauss–Newton step's predicted one <= ftol */
@@ -36,6 +36,10 @@ typedef enum tf_stop {
     TF_STOP_NONFINITE,      /* the trust region collapsed after non-finite
                                trials: the edge of the model's domain, not a
                                minimum (not converged) */
+    TF_STOP_UNDERFLOW,      /* the damped step underflowed to zero: the
+                               parameters or their steps are at the bottom
+                               of the double range (rescale them; not
+                               converged) */
     TF_STOP_BAD_START,      /* non-finite residual at the starting point */
     TF_STOP_BAD_JACOBIAN,   /* non-finite Jacobian entry (analytic or differenced) */
     TF_STOP_CALLBACK,       /* a callback returned non-zero */
