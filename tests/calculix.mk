@@ -85,6 +85,9 @@ calculix-report: | deps-calculix-plot
 	$(Q){ awk -v md=1 -f tests/calculix/convergence.awk $(CX_DATA)/block48_runs.csv $(CX_LEVEL_FILES) && echo && \
 	  awk -v div=$(word 1,$(CX_SWEEP_MESH)) -v layers=$(word 2,$(CX_SWEEP_MESH)) -f tests/calculix/tables.awk \
 	  $(CX_DATA)/block48_runs.csv $(CX_DATA)/block48_node61.csv $(CX_DATA)/block48_reactions.csv; } > $(CX)/tables.md
+	$(Q)awk -F, -v levels="$(CALCULIX_LEVELS)" -f tests/calculix/richardson.awk \
+	  $(CX_DATA)/block48_node61.csv > $(CX_DATA)/block48_node61_reference.csv.tmp && \
+	  mv $(CX_DATA)/block48_node61_reference.csv.tmp $(CX_DATA)/block48_node61_reference.csv
 	$(Q)for f in $(CX_DATA)/block48_f*_*.csv $(CX_DATA)/block48_nu*.csv; do \
 	  b=$$(basename $$f .csv); awk -v title=$$b -f tests/calculix/csv_to_vtk.awk $$f > $(CX)/vtk/$$b.vtk; done
 	@echo "calculix: docs/calculix-convergence.png, docs/calculix-nu-sweep.png, $(CX)/tables.md, $(CX)/vtk/*.vtk"
@@ -119,7 +122,7 @@ CALCULIX_NL_SMALL_FACTORS := 0.001 0.01
 # SMALL_SLOPE x factor of the linear solution of their mesh.
 CALCULIX_NL_CONV_BOUND := 0.06
 CALCULIX_NL_CONV_FACTOR := 0.5
-CALCULIX_NL_SMALL_SLOPE := 1
+CALCULIX_NL_SMALL_SLOPE := 0.5
 
 CX_NL_LEVEL_NAMES := $(foreach l,$(CALCULIX_NL_LEVELS),$(firstword $(subst :, ,$(l))))
 CX_NL_PATH_ARGS := $(call cx_list,$(foreach p,$(CALCULIX_NL_PATHS),$(subst $(cx_comma),:,$(word 1,$(subst :, ,$(p))):$(word 2,$(subst :, ,$(p))))))

@@ -10,7 +10,7 @@ finest=${1##*,}
 args="$*"
 fails=0
 run=nl_$(echo "$2" | cut -d, -f1)_a_$finest   # the first material's path a, finest level
-curves=block48_nl_curves.csv field=block48_${run#nl_}.csv
+curves=block48_nl_curves.csv field=block48_$run.csv
 
 # shellcheck disable=SC2086
 check() { "$checker" "$1" $args; }
@@ -36,7 +36,7 @@ edit() { awk -F, -v OFS=, -v r="$run" "$2" "$data/$1" > "$tmp/$1"; }
 
 drop_level() { edit $curves '!($1 == r && ++n == 3)'; }
 wrong_reaction() { edit $curves '$1 == r && ++n == 2 { $11 = -$11 } 1'; }
-turns_back() { edit $curves '$1 == r && ++n == 2 { $8 = 0.5 * $8 } 1'; }
+turns_back() { edit $curves '$1 == r && ++n == 2 { $8 = 0.4 * $8 } 1'; }
 # the finest run 5 % softer, its curve and its field alike
 softer() {
     edit $curves '$1 == r { $6 *= 1.05; $7 *= 1.05; $8 *= 1.05 } 1'
