@@ -146,7 +146,7 @@ for e in $NL_EXTRA; do
     n=$(field "$e" 1) layers=$(field "$e" 2) mat=$(field "$e" 3) path=$(field "$e" 4)
     el=$(field "$e" 5) suffix=""
     [ -n "$el" ] && [ "$el" != "$NL_ELEMENT" ] && suffix=_$el
-    p=$(for q in $NL_PATHS; do [ "$(field "$q" 1)" = "$path" ] && echo "$q"; done)
+    p=$(for q in $NL_PATHS; do [ "$(field "$q" 1)" != "$path" ] || echo "$q"; done)
     [ -n "$p" ] || { echo "run_nlgeom: path $path of NL_EXTRA is not in NL_PATHS" >&2; exit 2; }
     nonlinear "nl_${mat}_${path}_${n}x${n}x$layers$suffix" "$mat" "${el:-$NL_ELEMENT}" "$path" \
         "$(field "$p" 2)" "$(field "$p" 3)" "$n" "$layers" "$NL_LOAD_LEVELS"
