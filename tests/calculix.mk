@@ -88,9 +88,11 @@ calculix-report: | deps-calculix-plot
 	$(Q)awk -F, -v levels="$(CALCULIX_LEVELS)" -f tests/calculix/richardson.awk \
 	  $(CX_DATA)/block48_node61.csv > $(CX_DATA)/block48_node61_reference.csv.tmp && \
 	  mv $(CX_DATA)/block48_node61_reference.csv.tmp $(CX_DATA)/block48_node61_reference.csv
+	$(Q)awk -F, -f tests/calculix/accuracy.awk $(CX_DATA)/block48_node61_reference.csv \
+	  $(CX_DATA)/block48_runs.csv $(CX_DATA)/block48_node61.csv > $(CX)/accuracy.md
 	$(Q)for f in $(CX_DATA)/block48_f*_*.csv $(CX_DATA)/block48_nu*.csv; do \
 	  b=$$(basename $$f .csv); awk -v title=$$b -f tests/calculix/csv_to_vtk.awk $$f > $(CX)/vtk/$$b.vtk; done
-	@echo "calculix: docs/calculix-convergence.png, docs/calculix-nu-sweep.png, $(CX)/tables.md, $(CX)/vtk/*.vtk"
+	@echo "calculix: docs/calculix-convergence.png, docs/calculix-nu-sweep.png, $(CX)/tables.md, $(CX)/accuracy.md, $(CX)/vtk/*.vtk"
 
 check-calculix-data: $(CX)/check_data
 	@echo "== CalculiX reference data for block48 =="
@@ -114,7 +116,7 @@ CALCULIX_NL_MATERIALS := neohooke svk
 CALCULIX_NL_PATHS := a:0,0,-3:xy b:1,0,0:y c:1,0,-3:y
 CALCULIX_NL_LOAD_LEVELS := 10
 CALCULIX_NL_COMPARE := h2.4:C3D20R
-CALCULIX_NL_EXTRA :=
+CALCULIX_NL_EXTRA := 60:6:neohooke:a 60:6:neohooke:b 60:6:svk:b
 CALCULIX_NL_SMALL := h2.4
 CALCULIX_NL_SMALL_FACTORS := 0.001 0.01
 # The check: node 61 of the two finest levels within CONV_BOUND (relative) at
@@ -158,3 +160,43 @@ calculix-nlgeom-report: | deps-calculix-plot
 check-calculix-nlgeom: $(CX)/check_nlgeom
 	@echo "== CalculiX large-deformation (NLGEOM) reference data for block48 =="
 	@tests/calculix/check_nlgeom.sh $< $(CX_DATA) $(CX)/nl_mutant $(CX_NL_CHECK_ARGS)
+
+# ---- beam40: the second FE-referenced box (coeffs/beam40.yaml), linear ----
+# 40 x 20 x 20 mm, clamped at x = 0 only, nu = 0.45, the 5 mm patch centred
+# at (30, 10, 20).  Levels name:divisions:layers (divisions a multiple of 16,
+# the patch on element edges); elements twice as long through the
+# thickness as in plane, the same shape at every level.
+CALCULIX_BEAM40_LEVELS := h2.5:16:4 h1.25:32:8 h0.83:48:12
+CALCULIX_BEAM40_RMS_BOUND := 0.01
+CALCULIX_BEAM40_N25_BOUND := 0.01
+CX_BEAM40_LEVEL_NAMES := $(foreach l,$(CALCULIX_BEAM40_LEVELS),$(firstword $(subst :, ,$(l))))
+
+.PHONY: calculix-beam40 check-calculix-beam40
+
+calculix-beam40: $(CX)/box_deck | deps-calculix
+	$(Q)SCENE=beam40 NU_REF=0.45 POINT=25 LEVELS="$(CALCULIX_BEAM40_LEVELS)" NUS="" SWEEP_LEVEL= \
+	  LOCK_LEVEL= MESH_RUNS="" GRID_RUNS="" POINT_LEVELS="" REUSE=$(CALCULIX_REUSE) \
+	  tests/calculix/run_reference.sh $< $(CX)/beam40 $(CX_DATA)
+	$(Q)awk -F, -v levels="$(CALCULIX_BEAM40_LEVELS)" -f tests/calculix/richardson.awk \
+	  $(CX_DATA)/beam40_node25.csv > $(CX_DATA)/beam40_node25_reference.csv.tmp && \
+	  mv $(CX_DATA)/beam40_node25_reference.csv.tmp $(CX_DATA)/beam40_node25_reference.csv
+	@$(MAKE) --no-print-directory check-calculix-beam40
+
+check-calculix-beam40: $(CX)/check_data
+	@echo "== CalculiX reference data for beam40 =="
+	@tests/calculix/check_data.sh $< beam40 $(CX_DATA) $(CX)/beam40_mutant \
+	  $(call cx_list,$(CX_BEAM40_LEVEL_NAMES)) none none $(CALCULIX_BEAM40_RMS_BOUND) $(CALCULIX_BEAM40_N25_BOUND)
+	@echo "ok: the beam40 reference data pass their checks; every mutant is rejected"
+
+# ---- make bench: CalculiX's time to 1 % and 0.3 % at block48's node 61 ----
+# target%:divisions:layers, the cheapest committed C3D20R mesh reaching the
+# target at node 61 for both fx and fz against block48_node61_reference.csv
+# (docs/calculix-reference.md, "Accuracy per second"): 40x40x4 is 0.61 %
+# off in fz, 80x80x4 0.16 %.  About 7 minutes on one thread.
+CALCULIX_BENCH_LEVELS := 1:40:4 0.3:80:4
+.PHONY: bench-calculix
+BENCHES += bench-calculix
+
+bench-calculix: $(CX)/box_deck | deps-calculix
+	@echo "== CalculiX C3D20R: time to 1 % and 0.3 % at block48 node 61 =="
+	$(Q)tests/calculix/bench_ccx.sh $< $(CX)/bench $(CX_DATA)/block48_node61_reference.csv $(CALCULIX_BENCH_LEVELS)
