@@ -170,18 +170,16 @@ check-calculix-nlgeom: $(CX)/check_nlgeom
 # (h0.83:48:12, 182k DOFs) did not fit the time the study had.
 CALCULIX_BEAM40_LEVELS := h2.5:16:4 h1.25:32:8
 CALCULIX_BEAM40_RMS_BOUND := 0.01
-CALCULIX_BEAM40_N25_BOUND := 0.01
+CALCULIX_BEAM40_N25_BOUND := 0.04
 CX_BEAM40_LEVEL_NAMES := $(foreach l,$(CALCULIX_BEAM40_LEVELS),$(firstword $(subst :, ,$(l))))
 
 .PHONY: calculix-beam40 check-calculix-beam40
+CHECKS += check-calculix-beam40
 
 calculix-beam40: $(CX)/box_deck | deps-calculix
 	$(Q)SCENE=beam40 NU_REF=0.45 POINT=25 LEVELS="$(CALCULIX_BEAM40_LEVELS)" NUS="" SWEEP_LEVEL= \
 	  LOCK_LEVEL= MESH_RUNS="" GRID_RUNS="" POINT_LEVELS="" REUSE=$(CALCULIX_REUSE) \
 	  tests/calculix/run_reference.sh $< $(CX)/beam40 $(CX_DATA)
-	$(Q)awk -F, -v levels="$(CALCULIX_BEAM40_LEVELS)" -f tests/calculix/richardson.awk \
-	  $(CX_DATA)/beam40_node25.csv > $(CX_DATA)/beam40_node25_reference.csv.tmp && \
-	  mv $(CX_DATA)/beam40_node25_reference.csv.tmp $(CX_DATA)/beam40_node25_reference.csv
 	@$(MAKE) --no-print-directory check-calculix-beam40
 
 check-calculix-beam40: $(CX)/check_data

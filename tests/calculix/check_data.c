@@ -17,6 +17,8 @@
  *     given bounds;
  *   - the reference list names the finest level's files;
  *   - the nu sweep at the reference nu is the same data as its level's files;
+ *   - the load point's table (SCENE_nodeP.csv) holds each level's and case's
+ *     load point as its file does;
  *   - every run's reaction total balances the applied 1 N force.
  *
  * usage: check_data SCENE DIR LEVELS NUS SWEEP_LEVEL RMS_BOUND POINT_BOUND
@@ -221,7 +223,52 @@ static int split_list(char *s, char **items)
     return n > LIST_MAX ? -1 : n;
 }
 
-/* Every level's files; symmetry at each; convergence of the last two. */
+/* The load point's table (SCENE_nodeP.csv) has, for every level and case,
+ * the load point's row of that level's file: a field file swapped for
+ * another level's is caught even with only two levels. */
+static void check_point_table(char *const *levels, int n, field f[][3], const int *ok)
+{
+    char table[PATH_LEN], rest[32];
+    snprintf(rest, sizeof rest, "node%d.csv", sc->point + 1);
+    FILE *fp = open_table(scene_file(table, sizeof table, rest), "run,element,nu,divisions,layers,load,case,ux,uy,uz");
+    if (fp == NULL) {
+        return;
+    }
+    int seen[LIST_MAX][3] = {{0}};
+    char line[1024];
+    while (fgets(line, sizeof line, fp) != NULL) {
+        char *w[11];
+        double u[3];
+        if (split(line, w, 10) != 10 || strcmp(w[5], "patch") != 0 || !parse_num(w[7], &u[0]) ||
+            !parse_num(w[8], &u[1]) || !parse_num(w[9], &u[2])) {
+            continue;
+        }
+        for (int l = 0; l < n; ++l) {
+            for (int c = 0; c < 3 && strcmp(w[0], levels[l]) == 0; ++c) {
+                if (strcmp(w[6], cases[c]) != 0 || !ok[l]) {
+                    continue;
+                }
+                const double *fu = f[l][c].u[sc->point];
+                seen[l][c] = 1;
+                if (fabs(fu[0] - u[0]) + fabs(fu[1] - u[1]) + fabs(fu[2] - u[2]) > 1e-9 * f[l][c].max_abs) {
+                    fail("%s: %s %s differs from point %d of the %s file", table, levels[l], cases[c],
+                         sc->point + 1, cases[c]);
+                }
+            }
+        }
+    }
+    fclose(fp);
+    for (int l = 0; l < n; ++l) {
+        for (int c = 0; c < 3; ++c) {
+            if (ok[l] && !seen[l][c]) {
+                fail("%s: no %s %s row", table, levels[l], cases[c]);
+            }
+        }
+    }
+}
+
+/* Every level's files; symmetry at each; the load point's table;
+ * convergence of the last two. */
 static void check_levels(char *const *levels, int n, double rms_bound, double n61_bound)
 {
     static field f[LIST_MAX][3];
@@ -234,6 +281,7 @@ static void check_levels(char *const *levels, int n, double rms_bound, double n6
             check_symmetry(levels[l], f[l]);
         }
     }
+    check_point_table(levels, n, f, ok);
     if (n < 2) {
         fail("convergence needs at least two levels");
     } else if (ok[n - 2] && ok[n - 1]) {
@@ -247,7 +295,7 @@ static void check_sweep(char *const *nus, int n, const char *level)
     field f[3], base[3];
     char prefix[PATH_LEN], suffix[PATH_LEN];
     snprintf(suffix, sizeof suffix, "_%s.csv", level);
-    int have_base = read_cases(scene_file(prefix, sizeof prefix, ""), suffix, base) == 0;
+    int have_base = n > 0 && read_cases(scene_file(prefix, sizeof prefix, ""), suffix, base) == 0;
     for (int v = 0; v < n; ++v) {
         snprintf(prefix, sizeof prefix, "%s_nu%s_", sc->name, nus[v]);
         if (read_cases(prefix, ".csv", f) != 0) {
