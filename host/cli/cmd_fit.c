@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <zlib.h>
 
+#include "base/file_crc.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "emit/emit_header.h"
@@ -172,25 +172,6 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
     return 0;
 }
 
-/* CRC-32 of the scene file's bytes, for the header's banner. */
-static int file_crc32(const char *path, uint32_t *crc)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) {
-        return -1;
-    }
-    unsigned char buf[8192];
-    uLong c = crc32(0L, Z_NULL, 0);
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) {
-        c = crc32(c, buf, (uInt)n);
-    }
-    int bad = ferror(f);
-    fclose(f);
-    *crc = (uint32_t)c;
-    return bad ? -1 : 0;
-}
-
 /* Banner notes: what was fitted and how, with the overrides (they change the
  * result, so they belong with it). */
 static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
@@ -223,7 +204,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     snprintf(con->name, sizeof con->name, "%s_contact", base);
     con->node_ids[0] = s->contacts[p->contact].node + 1;
     uint32_t crc = 0;
-    if (file_crc32(a->scene, &crc) != 0) {
+    if (tf_file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
         return TF_EXIT_FAIL;
     }

@@ -18,6 +18,7 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
     sh->rcond_warn = o->rcond_warn;
     sh->support = o->support;
     sh->mls_radius = NULL;
+    sh->cell_radius = NULL;
     sh->scale = 0;
     for (int a = 0; a < 3; ++a) {
         sh->radius[a] = o->support * cloud->spacing[a];
@@ -32,12 +33,49 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
 void tf_shape_free(tf_shape *sh)
 {
     tf_nbr_free(&sh->nbr);
+    tf_cells_free(&sh->cells);
     free(sh->mls_radius);
-    sh->mls_radius = NULL;
+    free(sh->cell_radius);
+    sh->mls_radius = sh->cell_radius = NULL;
+}
+
+int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
+                      size_t errlen)
+{
+    if (sh->mls_radius != NULL || sh->cloud->n < TF_LOCAL_K) {
+        snprintf(err, errlen, sh->mls_radius ? "EFG shape functions on tetrahedral cells are not "
+                                               "supported"
+                                             : "fewer nodes than a support needs");
+        return -1;
+    }
+    sh->cell_radius = malloc((ntet + 1) * sizeof *sh->cell_radius);
+    if (sh->cell_radius == NULL ||
+        tf_cells_use_tets(&sh->cells, sh->cloud->xyz, tet, ntet, degree) != 0) {
+        snprintf(err, errlen, "out of memory for %zu tetrahedral cells (or tet_degree %u)", ntet,
+                 degree);
+        return -1;
+    }
+    for (size_t e = 0; e < ntet; ++e) {
+        double centre[3], half[3];
+        tf_cells_box(&sh->cells, e, centre, half);
+        size_t cap = TF_SUPPORT_CAP < sh->cloud->n ? TF_SUPPORT_CAP : sh->cloud->n;
+        double h = tf_nbr_kth_distance(&sh->nbr, centre, TF_LOCAL_K);
+        double most = tf_nbr_kth_distance(&sh->nbr, centre, cap);
+        if (h < 0 || most < 0) {
+            snprintf(err, errlen, "out of memory for the local spacing");
+            return -1;
+        }
+        sh->cell_radius[e] = fmin(sh->support * h, most);
+    }
+    return 0;
 }
 
 int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
 {
+    if (sh->cell_radius != NULL) {
+        snprintf(err, errlen, "EFG shape functions on tetrahedral cells are not supported");
+        return -1;
+    }
     const tf_cloud *c = sh->cloud;
     double *rad = malloc(3 * c->n * sizeof *rad), reach[3] = {0, 0, 0}, t = 0;
     if (rad == NULL) {
@@ -144,6 +182,9 @@ static int grow(tf_shape_work *w, size_t need, size_t np)
 size_t tf_shape_cell(const tf_shape *sh, const double x[3])
 {
     const tf_cells *c = &sh->cells;
+    if (c->tet) {
+        return tf_cells_locate(c, x);
+    }
     size_t ijk[3];
     for (int a = 0; a < 3; ++a) {
         double t = floor((x[a] - c->lo[a]) / c->size[a]);
@@ -165,16 +206,33 @@ static void support_centre(const tf_shape *sh, const double x[3], size_t cell, d
     }
 }
 
+/* The nodes in the support domain around at: the ellipsoid of the grid's
+ * radii, or on tetrahedral cells the ball of the cell's radius. */
+static size_t query(const tf_shape *sh, const double at[3], size_t cell, uint32_t *out, size_t cap)
+{
+    if (sh->cell_radius != NULL) {
+        return tf_nbr_query_ball(&sh->nbr, at, sh->cell_radius[cell], out, cap);
+    }
+    return tf_nbr_query(&sh->nbr, at, out, cap);
+}
+
+/* The radius distances are divided by (rpim.h): the ellipsoid's largest
+ * semi-axis, or the cell's ball. */
+static double scale_of(const tf_shape *sh, size_t cell)
+{
+    return sh->cell_radius != NULL ? sh->cell_radius[cell] : sh->scale;
+}
+
 int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
 {
     double at[3];
     support_centre(sh, x, cell, at);
-    size_t n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+    size_t n = query(sh, at, cell, w->idx, w->cap);
     if (n > w->cap) {
         if (grow(w, n, w->pcap ? w->pcap : 1) != 0) {
             return -1;
         }
-        n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+        n = query(sh, at, cell, w->idx, w->cap);
     }
     if (sh->mls_radius) { /* EFG: the nodes whose domain reaches x, or the cell */
         double lo[3] = {x[0], x[1], x[2]}, hi[3] = {x[0], x[1], x[2]}, half[3];
@@ -232,7 +290,7 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
     if (tf_shape_support(sh, w, x, cell) != 0) {
         return -1;
     }
-    if (tf_rpim_factor(&sh->rpim, &w->rw, sh->cloud->xyz, w->idx, w->n, at, sh->scale,
+    if (tf_rpim_factor(&sh->rpim, &w->rw, sh->cloud->xyz, w->idx, w->n, at, scale_of(sh, cell),
                        &rcond) != 0) {
         snprintf(w->err, sizeof w->err,
                  "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular to "

@@ -29,7 +29,9 @@ typedef struct tf_cloud {
     double *xyz;       /* 3 n coordinates, node index order, mm */
     double spacing[3]; /* nominal nodal spacing per axis, mm */
     double lo[3], hi[3];
-    unsigned grid[3];  /* nodes per axis */
+    unsigned grid[3];  /* nodes per axis (a box; 0 for an organ's mesh) */
+    size_t n_surface;  /* an organ's mesh: nodes 0 .. n_surface - 1 are its surface
+                          vertices; 0 for a box */
 } tf_cloud;
 
 /* Fills a box [lo, hi] with grid[0] x grid[1] x grid[2] nodes (each >= 2),

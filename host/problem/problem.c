@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/mesh_geometry.h"
+
 void tf_problem_release(tf_problem *p)
 {
     tf_cloud_free(&p->cloud);
@@ -13,8 +15,18 @@ void tf_problem_release(tf_problem *p)
         free(p->fixed[k].nodes);
     }
     free(p->fixed);
+    for (size_t k = 0; p->loads && k < p->n_loads; ++k) {
+        free(p->loads[k].patch.tri);
+    }
     free(p->loads);
+    for (size_t k = 0; p->contacts && k < p->n_contacts; ++k) {
+        free(p->contacts[k].patch.tri);
+    }
     free(p->contacts);
+    if (p->geometry.kind == TF_GEOMETRY_MESH && p->geometry.as.mesh != NULL) {
+        tf_mesh_geometry_free(p->geometry.as.mesh);
+        free(p->geometry.as.mesh);
+    }
     free(p->outputs.nodes);
     memset(p, 0, sizeof *p);
 }
@@ -36,8 +48,10 @@ void tf_problem_bounds(const tf_problem *p, double lo[3], double hi[3])
         memcpy(lo, p->geometry.as.box.min, 3 * sizeof *lo);
         memcpy(hi, p->geometry.as.box.max, 3 * sizeof *hi);
         return;
+    case TF_GEOMETRY_MESH:
+        break; /* the nodes' bounding box: the surface vertices are nodes */
     }
-    memcpy(lo, p->cloud.lo, 3 * sizeof *lo); /* not reached: every kind is listed */
+    memcpy(lo, p->cloud.lo, 3 * sizeof *lo);
     memcpy(hi, p->cloud.hi, 3 * sizeof *hi);
 }
 

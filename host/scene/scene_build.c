@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "problem/regions.h"
+#include "scene/scene_organ.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
@@ -19,10 +20,16 @@ static int fail(sd_issue *is, const char *path, const char *fmt, ...)
 static int fail(sd_issue *is, const char *path, const char *fmt, ...)
 {
     va_list ap;
-    snprintf(is->path, sizeof is->path, "%s", path);
     va_start(ap, fmt);
-    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
+    sd_vfail(is, path, fmt, ap);
     va_end(ap);
+    return -1;
+}
+
+int sd_vfail(sd_issue *is, const char *path, const char *fmt, va_list ap)
+{
+    snprintf(is->path, sizeof is->path, "%s", path);
+    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
     return -1;
 }
 
@@ -61,8 +68,18 @@ static int check_box(const sd_box *b, const char *path, sd_issue *is)
     return 0;
 }
 
-static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
+static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
+    const sd_geometry *g = &doc->geometry;
+    if ((g->box != NULL) == (g->surface != NULL)) {
+        return fail(is, "geometry", "give exactly one of box (with grid) or surface (with spacing)");
+    }
+    if (g->surface) {
+        return sd_organ_geometry(doc, s, is);
+    }
+    if (g->grid == NULL || g->spacing || g->grading) {
+        return fail(is, "geometry", "a box takes grid (and jitter, seed), not spacing or grading");
+    }
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;
     }
@@ -110,15 +127,80 @@ static int material(const sd_material *m, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* The regions of organs: a ball, a half-space, surface vertices near a
+ * point (also usable on a box except `near`). */
+static int shaped_region(const sd_fixed *d, size_t k, const tf_problem *s, tf_region *r,
+                         sd_issue *is)
+{
+    char p[128];
+    if (d->sphere) {
+        r->kind = TF_REGION_SPHERE;
+        memcpy(r->centre, d->sphere->centre, sizeof r->centre);
+        r->radius = d->sphere->radius;
+    } else if (d->side) {
+        r->kind = TF_REGION_SIDE;
+        memcpy(r->centre, d->side->point, sizeof r->centre);
+        memcpy(r->normal, d->side->normal, sizeof r->normal);
+        if (!finite_all(r->normal, 3) ||
+            (r->normal[0] == 0 && r->normal[1] == 0 && r->normal[2] == 0)) {
+            return fail(is, at(p, sizeof p, "fixed", k, "side"),
+                        "the normal must be a finite non-zero vector");
+        }
+    } else {
+        r->kind = TF_REGION_NEAR;
+        memcpy(r->centre, d->near->point, sizeof r->centre);
+        r->radius = d->near->distance;
+        if (tf_problem_mesh(s) == NULL) {
+            return fail(is, at(p, sizeof p, "fixed", k, "near"),
+                        "near selects surface vertices of an organ (geometry.surface)");
+        }
+    }
+    if (!finite_all(r->centre, 3) || !(isfinite(r->radius) && r->radius >= 0)) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+                    "needs a finite point (mm) and a finite non-negative radius or distance");
+    }
+    return 0;
+}
+
+static int vertex_list(const sd_fixed *d, size_t k, const tf_problem *s, tf_fixed *f,
+                       sd_issue *is)
+{
+    char p[128];
+    f->where.kind = TF_REGION_VERTICES;
+    f->n_nodes = d->vertices_count;
+    f->nodes = malloc((f->n_nodes + 1) * sizeof *f->nodes);
+    if (f->nodes == NULL) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
+    }
+    return sd_organ_vertices(d->vertices, d->vertices_count, s,
+                             at(p, sizeof p, "fixed", k, "vertices"), f->nodes, is);
+}
+
 static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd_issue *is)
 {
     char p[128];
-    int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL);
+    int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL) +
+                (d->sphere != NULL) + (d->side != NULL) + (d->near != NULL) +
+                (d->vertices_count > 0);
     if (kinds != 1) {
         return fail(is, at(p, sizeof p, "fixed", k, NULL),
-                    "give exactly one of face, plane or box (got %d)", kinds);
+                    "give exactly one of face, plane, box, sphere, side, near or vertices "
+                    "(got %d)",
+                    kinds);
     }
-    if (d->face) {
+    if (d->face && tf_problem_mesh(s) != NULL) {
+        return fail(is, at(p, sizeof p, "fixed", k, "face"),
+                    "an organ has no box faces: use box, sphere, side, near or vertices");
+    }
+    if (d->sphere || d->side || d->near) {
+        if (shaped_region(d, k, s, &f->where, is) != 0) {
+            return -1;
+        }
+    } else if (d->vertices_count > 0) {
+        if (vertex_list(d, k, s, f, is) != 0) {
+            return -1;
+        }
+    } else if (d->face) {
         f->where.kind = TF_REGION_FACE;
         f->where.face = (tf_face)*d->face;
     } else if (d->plane) {
@@ -155,7 +237,8 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     if (!finite_all(f->value, 3)) {
         return fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
     }
-    if (tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
+    if (f->where.kind != TF_REGION_VERTICES &&
+        tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
         return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
@@ -202,14 +285,15 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
         const sd_load *d = &doc->loads[k];
         tf_load *l = &s->loads[k];
         l->exact = d->exact && *d->exact;
-        if ((d->node != NULL) == (d->patch != NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL), "give exactly one of node or patch");
+        if ((d->node != NULL) + (d->patch != NULL) + (d->site != NULL) != 1) {
+            return fail(is, at(p, sizeof p, "loads", k, NULL),
+                        "give exactly one of node, patch or site");
         }
         if (l->exact == (d->force != NULL)) {
             return fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of force or exact: true");
         }
-        if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->node != NULL)) {
+        if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->patch == NULL)) {
             return fail(is, at(p, sizeof p, "loads", k, "exact"),
                         "exact: true needs a reference section and a patch");
         }
@@ -219,7 +303,13 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 return fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
             }
         }
-        if (d->node) {
+        if (d->site) {
+            uint32_t node;
+            if (sd_organ_site(d->site, s, at(p, sizeof p, "loads", k, NULL), &l->patch, &node,
+                              is) != 0) {
+                return -1;
+            }
+        } else if (d->node) {
             l->patch.shape = TF_PATCH_POINT;
             if (node_index(*d->node, s, at(p, sizeof p, "loads", k, "node"), &l->patch.node, is)) {
                 return -1;
@@ -254,7 +344,18 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                             "'%s' names contact %zu already", c->name, j);
             }
         }
-        if (node_index(d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
+        if ((d->site != NULL) == (d->node != NULL) || (d->site && d->patch)) {
+            return fail(is, at(p, sizeof p, "contact", k, NULL),
+                        "give node (and a patch) on a box, or site on an organ");
+        }
+        if (d->site) {
+            if (sd_organ_site(d->site, s, at(p, sizeof p, "contact", k, NULL), &c->patch,
+                              &c->node, is) != 0) {
+                return -1;
+            }
+            continue;
+        }
+        if (node_index(*d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
             return -1;
         }
         c->patch.shape = TF_PATCH_POINT;
@@ -294,6 +395,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .polynomial = 1,
         .volumetric = TF_VOLUMETRIC_CELL,
         .gauss = 3,
+        .tet_degree = 2,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
         .rcond_warn = 1e-12,
@@ -307,7 +409,9 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
 {
     tf_solver_opts *o = &s->solver;
-    *o = sd_solver_defaults(s->geometry.as.box.grid);
+    static const unsigned no_grid[3] = {2, 2, 2}; /* an organ has no background grid */
+    *o = sd_solver_defaults(s->geometry.kind == TF_GEOMETRY_BOX ? s->geometry.as.box.grid
+                                                                : no_grid);
     if (d == NULL) {
         return 0;
     }
@@ -332,6 +436,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         o->cells[a] = d->cells[a];
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
+    o->tet_degree = d->tet_degree ? *d->tet_degree : o->tet_degree;
     o->bc = d->bc ? (tf_bc_method)*d->bc : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
     o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
@@ -356,6 +461,11 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     }
     if (o->gauss < 1 || o->gauss > 12) {
         return fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
+    }
+    if (o->tet_degree < 1 || o->tet_degree > 5) {
+        return fail(is, "solver.tet_degree",
+                    "1 to 5: the degree of the tetrahedron rule (1, 2 or 5 points sets; 3 and 4 "
+                    "use the degree-5 rule)");
     }
     if (!(isfinite(o->penalty) && o->penalty > 0)) {
         return fail(is, "solver.penalty", "must be a positive factor");
@@ -438,7 +548,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (doc->name) {
         snprintf(s->name, sizeof s->name, "%s", doc->name);
     }
-    if (geometry(&doc->geometry, s, is) != 0 || material(&doc->material, s, is) != 0 ||
+    if (geometry(doc, s, is) != 0 || material(&doc->material, s, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||

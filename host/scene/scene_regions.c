@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/mesh_geometry.h"
 #include "problem/regions.h"
 
 static int patch_fail(char *msg, size_t msglen, const char *what)
@@ -72,10 +73,75 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
     return -1;
 }
 
+/* The surface vertices within radius of any contact site's node, ascending. */
+static void near_contact(const tf_problem *s, double radius, tf_outputs *o)
+{
+    const tf_cloud *c = &s->cloud;
+    for (size_t i = 0; i < c->n_surface; ++i) {
+        const double *x = c->xyz + 3 * i;
+        for (size_t k = 0; k < s->n_contacts; ++k) {
+            const double *y = c->xyz + 3 * (size_t)s->contacts[k].node;
+            double d2 = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+                        (x[2] - y[2]) * (x[2] - y[2]);
+            if (d2 <= radius * radius) {
+                o->nodes[o->n_nodes++] = (uint32_t)i;
+                break;
+            }
+        }
+    }
+}
+
+/* The selections of organs: every surface vertex, those near the contact
+ * sites, or a list of vertices by their index in the mesh file. */
+static int organ_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
+                         size_t msglen)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(s);
+    if (m == NULL) {
+        return outputs_fail(msg, msglen,
+                            "select: surface, near-contact and vertices need an organ "
+                            "(geometry.surface)");
+    }
+    if (o->kind == TF_OUT_SURFACE) {
+        for (size_t i = 0; i < s->cloud.n_surface; ++i) {
+            o->nodes[o->n_nodes++] = (uint32_t)i;
+        }
+    } else if (o->kind == TF_OUT_NEAR_CONTACT) {
+        if (!(isfinite(*d->radius) && *d->radius >= 0) || s->n_contacts == 0) {
+            return outputs_fail(msg, msglen,
+                                "near-contact needs a contact site and a finite radius >= 0 (mm)");
+        }
+        near_contact(s, *d->radius, o);
+    } else {
+        for (unsigned k = 0; k < d->vertices_count; ++k) {
+            long i = tf_mesh_vertex_node(m, (long)d->vertices[k]);
+            if (i < 0) {
+                snprintf(msg, msglen, "vertex %u is not a vertex of the surface read from %s",
+                         d->vertices[k], m->file);
+                return -1;
+            }
+            o->nodes[o->n_nodes++] = (uint32_t)i;
+        }
+    }
+    return 0;
+}
+
 int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
                        size_t msglen)
 {
     o->kind = (tf_output_kind)d->select;
+    int organ = o->kind == TF_OUT_SURFACE || o->kind == TF_OUT_NEAR_CONTACT ||
+                o->kind == TF_OUT_VERTICES;
+    if ((d->radius != NULL) != (o->kind == TF_OUT_NEAR_CONTACT) ||
+        (d->vertices_count > 0) != (o->kind == TF_OUT_VERTICES)) {
+        return outputs_fail(msg, msglen,
+                            "select: near-contact takes radius, vertices takes vertices (a "
+                            "non-empty list); the others take neither");
+    }
+    if (o->kind == TF_OUT_FACE && tf_problem_mesh(s) != NULL) {
+        return outputs_fail(msg, msglen, "an organ has no box faces: select surface, "
+                                         "near-contact or vertices");
+    }
     int has_nodes = d->nodes != NULL || d->nodes_count > 0;
     if (o->kind == TF_OUT_NODES && d->nodes_count == 0) {
         return outputs_fail(msg, msglen, "select: nodes needs a non-empty nodes list");
@@ -86,13 +152,17 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
                             "select: face takes face, box takes box, nodes takes nodes; all "
                             "and contact take nothing else");
     }
-    size_t n = s->cloud.n;
-    o->nodes = malloc((n > d->nodes_count ? n : d->nodes_count) * sizeof *o->nodes + 1);
+    size_t n = s->cloud.n, list = d->nodes_count + d->vertices_count;
+    o->nodes = malloc((n > list ? n : list) * sizeof *o->nodes + 1);
     if (o->nodes == NULL) {
         return outputs_fail(msg, msglen, "out of memory");
     }
     o->n_nodes = 0;
-    if (o->kind == TF_OUT_ALL) {
+    if (organ) {
+        if (organ_outputs(d, s, o, msg, msglen) != 0) {
+            return -1;
+        }
+    } else if (o->kind == TF_OUT_ALL) {
         for (size_t i = 0; i < n; ++i) {
             o->nodes[o->n_nodes++] = (uint32_t)i;
         }

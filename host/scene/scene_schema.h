@@ -21,11 +21,35 @@ typedef struct sd_box {
     double max[3];
 } sd_box;
 
+typedef struct sd_rotate {
+    double axis[3];
+    double angle;      /* degrees */
+} sd_rotate;
+
+/* An organ's surface mesh and how it is placed in the scene's frame. */
+typedef struct sd_surface {
+    char *file;        /* relative to the scene file's folder */
+    double *scale;     /* file units -> mm */
+    bool *centre;
+    sd_rotate *rotate;
+    double *translate; /* 3, mm */
+} sd_surface;
+
+typedef struct sd_grading {
+    double *at;        /* 3, mm; default: the first contact site's point */
+    double spacing;
+    double radius;
+    double ramp;
+} sd_grading;
+
 typedef struct sd_geometry {
-    sd_box *box;       /* required today; `surface:` will be the alternative */
-    unsigned grid[3];
+    sd_box *box;       /* a box and its grid, or */
+    unsigned *grid;    /* 3 */
     double *jitter;
     uint64_t *seed;
+    sd_surface *surface; /* an organ's surface, its interior spacing and grading */
+    double *spacing;
+    sd_grading *grading;
 } sd_geometry;
 
 typedef struct sd_material {
@@ -38,10 +62,36 @@ typedef struct sd_plane {
     double at;
 } sd_plane;
 
+typedef struct sd_sphere {
+    double centre[3];
+    double radius;
+} sd_sphere;
+
+typedef struct sd_side {
+    double point[3];
+    double normal[3];
+} sd_side;
+
+typedef struct sd_near {
+    double point[3];
+    double distance;
+} sd_near;
+
+/* A contact site on an organ's surface: a point and a radius. */
+typedef struct sd_site {
+    double point[3];
+    double radius;
+} sd_site;
+
 typedef struct sd_fixed {
     int *face;        /* tf_face */
     sd_plane *plane;
     sd_box *box;
+    sd_sphere *sphere;
+    sd_side *side;
+    sd_near *near;
+    uint32_t *vertices; /* surface vertices by their index in the mesh file */
+    unsigned vertices_count;
     unsigned *components; /* TF_COMP_* flags */
     double *displacement; /* 3 */
     bool *exact;
@@ -58,14 +108,16 @@ typedef struct sd_patch {
 typedef struct sd_load {
     uint32_t *node;
     sd_patch *patch;
+    sd_site *site;
     double *force;   /* 3 */
     bool *exact;
 } sd_load;
 
 typedef struct sd_contact {
     char *name;
-    uint32_t node;
+    uint32_t *node;  /* a box: required */
     sd_patch *patch;
+    sd_site *site;   /* an organ: instead of node and patch */
 } sd_contact;
 
 typedef struct sd_envelope {
@@ -79,6 +131,9 @@ typedef struct sd_outputs {
     sd_box *box;
     uint32_t *nodes;
     unsigned nodes_count;
+    double *radius;      /* near-contact */
+    uint32_t *vertices;  /* vertices: indices in the mesh file */
+    unsigned vertices_count;
 } sd_outputs;
 
 typedef struct sd_rbf {
@@ -96,6 +151,7 @@ typedef struct sd_solver {
     int *volumetric; /* tf_volumetric */
     unsigned *cells; /* 3 */
     unsigned *gauss;
+    unsigned *tet_degree;
     int *bc;         /* tf_bc_method */
     double *penalty;
     double *rcond_warn;

@@ -54,7 +54,8 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
         return 0;
     }
     size_t nq = 0;
-    tf_qpoint *q = tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
+    tf_qpoint *q = t->p->shape == TF_PATCH_SURFACE ? tf_surface_patch_points(t->p, sh->cloud, &nq)
+                                                    : tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
     if (q == NULL) {
         snprintf(err, errlen, "out of memory");
         return -1;

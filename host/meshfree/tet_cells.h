@@ -1,0 +1,20 @@
+/*
+ * tet_cells.h — tetrahedral integration cells (an organ's mesh) behind the
+ * background-cell interface of quadrature.h: Gauss points, centroid and
+ * extent of a cell; tf_cells_use_tets, tf_cells_locate and tf_cells_free
+ * are declared there.
+ */
+#ifndef TF_TET_CELLS_H
+#define TF_TET_CELLS_H
+
+#include <stddef.h>
+
+#include "meshfree/quadrature.h"
+
+/* Point p of tetrahedron `cell` and its weight (volume, mm^3). */
+void tf_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w);
+
+/* Centroid of tetrahedron `cell` and half the extent of its bounding box. */
+void tf_tet_box(const tf_cells *c, size_t cell, double centre[3], double half[3]);
+
+#endif /* TF_TET_CELLS_H */
