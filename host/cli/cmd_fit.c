@@ -21,6 +21,7 @@
 #include "base/plot.h"
 #include "scene/scene.h"
 #include "cost/select.h"
+#include "problem/mesh_geometry.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
@@ -190,6 +191,42 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
     }
 }
 
+/* An organ's output map (emit_header.h): the arrays are malloc'ed into m. */
+static int organ_map(const tf_problem *s, const tf_model *fwd, uint32_t contact_node,
+                     tf_emit_map *m)
+{
+    const tf_mesh_geometry *g = tf_problem_mesh(s);
+    size_t n = fwd->n_out;
+    const char *ext = strrchr(g->file, '.');
+    int vtk = ext != NULL && (strcmp(ext, ".vtk") == 0 || strcmp(ext, ".VTK") == 0);
+    uint32_t *vertex = malloc((n + 1) * sizeof *vertex);
+    double *mm = malloc((3 * n + 1) * sizeof *mm), *file = malloc((3 * n + 1) * sizeof *file);
+    *m = (tf_emit_map){.mesh_file = g->file, .mesh_crc32 = g->file_crc32, .n = n,
+                       .vertex = vertex, .rest_mm = mm, .rest_file = file,
+                       .contact_vertex = (uint32_t)g->tm.source[contact_node],
+                       .reader = vtk ? "counted in the file's point order from 0 (gmsh)"
+                                     : "counted from 0 in the order assimp 5 gives with "
+                                       "aiProcess_JoinIdenticalVertices after\n * removing every "
+                                       "attribute but positions (docs/header-format.md)"};
+    if (vertex == NULL || mm == NULL || file == NULL) {
+        return -1;
+    }
+    for (size_t j = 0; j < n; ++j) {
+        size_t node = fwd->node_ids[j] - 1; /* an output of an organ is a surface vertex */
+        vertex[j] = (uint32_t)g->tm.source[node];
+        memcpy(mm + 3 * j, g->tm.xyz + 3 * node, 3 * sizeof *mm);
+        memcpy(file + 3 * j, g->file_xyz + 3 * node, 3 * sizeof *file);
+    }
+    return 0;
+}
+
+static void organ_map_free(tf_emit_map *m)
+{
+    free((void *)m->vertex);
+    free((void *)m->rest_mm);
+    free((void *)m->rest_file);
+}
+
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
@@ -213,10 +250,20 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         size_t k = strlen(note);
         snprintf(note + k, sizeof note - k, "\n%s", choice);
     }
+    tf_emit_map map = {0};
+    int organ = tf_problem_mesh(s) != NULL;
+    if (organ && organ_map(s, fwd, s->contacts[p->contact].node, &map) != 0) {
+        organ_map_free(&map);
+        tf_error(ctx, "fit: out of memory");
+        return TF_EXIT_FAIL;
+    }
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
-                               .notes = note, .golden_seed = p->seed};
+                               .notes = note, .golden_seed = p->seed,
+                               .map = organ ? &map : NULL};
     tf_model *models[2] = {fwd, con};
-    if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
+    int rc = tf_emit_header(a->out, models, 2, &info, err, sizeof err);
+    organ_map_free(&map);
+    if (rc != 0) {
         tf_error(ctx, "fit: %s", err);
         return TF_EXIT_USAGE;
     }

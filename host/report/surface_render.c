@@ -80,7 +80,7 @@ static facet *order(const tf_render *r, const double basis[3][3], size_t *n)
 static void settings(FILE *gp, const tf_render *r)
 {
     fprintf(gp,
-            "set view 0,0,1,1\nset view equal xyz\nunset border\nunset tics\nunset key\n"
+            "set view 0,0,1.4,1\nset view equal xy\nunset border\nunset tics\nunset key\n"
             "set xlabel ''\nset ylabel ''\nset zlabel ''\n"
             "set pm3d scansforward corners2color mean\n"
             "set pm3d lighting primary 0.45 specular 0.15\n"
@@ -93,7 +93,11 @@ static void settings(FILE *gp, const tf_render *r)
     } else {
         fprintf(gp, "unset colorbox\n");
     }
-    fprintf(gp, "set title '%s'\n", r->title);
+    fputs("set title '", gp);
+    for (const char *c = r->title; *c != '\0'; ++c) { /* '' is a quote in gnuplot's strings */
+        fputs(*c == '\'' ? "''" : (char[2]){*c, '\0'}, gp);
+    }
+    fputs("'\n", gp);
 }
 
 int tf_render_png(const char *path, const tf_render *r, char *err, size_t errlen)
@@ -121,7 +125,8 @@ int tf_render_png(const char *path, const tf_render *r, char *err, size_t errlen
         for (int q = 0; q < 4; ++q) {
             double c[3];
             project(r, basis, order4[q], c);
-            fprintf(p.gp, "%.6g %.6g %.6g %.6g\n%s", c[0], c[1], c[2], r->value[order4[q]],
+            double val = r->tri_value ? r->tri_value[f[k].t] : r->value[order4[q]];
+            fprintf(p.gp, "%.6g %.6g %.6g %.6g\n%s", c[0], c[1], c[2], val,
                     q == 1 ? "\n" : q == 3 ? "\n\n" : "");
         }
     }

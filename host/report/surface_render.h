@@ -25,7 +25,8 @@ typedef struct tf_render {
     const size_t *tri;     /* 3 node indices per triangle, counter-clockwise from outside */
     size_t ntri;
     int closed;            /* 1: a closed surface (back faces are dropped) */
-    const double *value;   /* per node: the colour value */
+    const double *value;   /* per node: the colour value (a facet: the mean of its corners') */
+    const double *tri_value; /* per triangle instead, or NULL (categories: no blending) */
     double vmin, vmax;     /* colour range */
     const char *palette;   /* gnuplot "set palette" arguments */
     const char *cblabel;   /* colour bar label, or NULL for no colour bar */

@@ -195,5 +195,14 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
     if (o->n_nodes == 0) {
         return outputs_fail(msg, msglen, "the selection holds no node: nothing to output");
     }
+    for (size_t k = 0; tf_problem_mesh(s) != NULL && k < o->n_nodes; ++k) {
+        if (o->nodes[k] >= s->cloud.n_surface) {
+            snprintf(msg, msglen,
+                     "node %u lies inside the organ: outputs of an organ are surface vertices "
+                     "(the renderer has no vertex inside)",
+                     o->nodes[k] + 1);
+            return -1;
+        }
+    }
     return 0;
 }
