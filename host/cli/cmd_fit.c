@@ -259,7 +259,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     }
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
                                .notes = note, .golden_seed = p->seed,
-                               .map = organ ? &map : NULL};
+                               .map = organ ? &map : NULL, .servo_hz = p->servo_hz};
     tf_model *models[2] = {fwd, con};
     int rc = tf_emit_header(a->out, models, 2, &info, err, sizeof err);
     organ_map_free(&map);

@@ -155,6 +155,10 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->heldout_rms, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm");
         }
     }
+    if (info->servo_hz > 0 && n_models == 2) {
+        fprintf(f, " *\n");
+        tf_emit_servo_banner(f, models[0], models[1], info->servo_hz);
+    }
     char guard[TF_NAME_MAX + 8];
     upper(base, guard, sizeof guard);
     fprintf(f, " *\n * Include this header wherever the models are used.  In exactly one .c\n"
@@ -355,6 +359,11 @@ static void write_header(FILE *f, const char *base, tf_model *const *models, siz
     }
     if (info->map != NULL) {
         write_map_macros(f, base, info->map);
+    }
+    if (info->servo_hz > 0 && n == 2) {
+        char prefix[TF_NAME_MAX + 16];
+        snprintf(prefix, sizeof prefix, "TFIT_%s", g);
+        tf_emit_servo_macros(f, prefix, models[0], models[1], info->servo_hz);
     }
     fprintf(f, "\n#ifdef TFIT_%s_IMPLEMENTATION\n", g);
     for (size_t i = 0; i < n; ++i) {

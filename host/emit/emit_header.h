@@ -34,6 +34,7 @@ typedef struct tf_emit_info {
     const char *notes;      /* extra banner text, '\n'-separated lines, or NULL */
     uint64_t golden_seed;   /* seed of the golden input design */
     const tf_emit_map *map; /* an organ's output map, or NULL */
+    unsigned servo_hz;      /* the haptic loop's rate: the header states the budget (0: none) */
 } tf_emit_info;
 
 /* Validates every model, then writes path and its _golden.h sibling.  The

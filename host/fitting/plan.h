@@ -19,6 +19,7 @@ typedef struct tf_fit_plan {
     uint32_t max_degree;  /* nodal, modal and contact degrees searched: 0 (1) .. max */
     uint32_t max_rank;    /* modal ranks searched: 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
+    unsigned servo_hz;    /* the haptic loop's rate the header states its budget at (0: none) */
 } tf_fit_plan;
 
 /* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,

@@ -519,6 +519,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     f->folds = d->folds ? *d->folds : f->folds;
     f->max_degree = d->max_degree ? *d->max_degree : f->max_degree;
     f->max_rank = d->max_rank ? *d->max_rank : f->max_rank;
+    f->servo_hz = d->servo_hz ? *d->servo_hz : f->servo_hz;
     if (d->contact) {
         f->contact = tf_problem_contact(s, d->contact);
         if (f->contact < 0) {
@@ -539,6 +540,9 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     }
     if (f->max_rank < 1 || f->max_rank > 24) {
         return fail(is, "fit.max_rank", "1 to 24 modes");
+    }
+    if (d->servo_hz && (f->servo_hz < 1 || f->servo_hz > 100000)) {
+        return fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
     }
     return 0;
 }

@@ -228,6 +228,7 @@ static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_UINT_PTR("folds", OPT, sd_fit, folds),
     CYAML_FIELD_UINT_PTR("max_degree", OPT, sd_fit, max_degree),
     CYAML_FIELD_UINT_PTR("max_rank", OPT, sd_fit, max_rank),
+    CYAML_FIELD_UINT_PTR("servo_hz", OPT, sd_fit, servo_hz),
     CYAML_FIELD_END,
 };
 

@@ -167,7 +167,7 @@ typedef struct sd_reference {
 typedef struct sd_fit {
     int *family;       /* tfit_family of the forward model to emit */
     char *contact;     /* contact site name */
-    unsigned *train, *heldout, *folds, *max_degree, *max_rank;
+    unsigned *train, *heldout, *folds, *max_degree, *max_rank, *servo_hz;
     uint64_t *seed;
 } sd_fit;
 

@@ -1,0 +1,51 @@
+#!/bin/sh
+# run_organ.sh DECK_TOOL SCENE WORK DATA NAME LEVELS...
+#
+# The CalculiX reference of an organ scene (docs/validation.md, organs):
+# one CalculiX run per level, coarse to fine; a level is
+# "label:spacing:refine[:solver]" (organ_deck.c).  Decks, CalculiX output and
+# logs stay in WORK; DATA receives, once every run succeeded,
+#   NAME_<label>.csv   the output vertices' displacements under 1 N along
+#                      x, y, z (organ_dat.awk)
+#   NAME_runs.csv      label,spacing,refine,elements,nodes,dofs,seconds,max_rss_mb
+# A run whose deck is unchanged and whose output is present is not repeated
+# (delete WORK to force it).  CCX_THREADS (default 1) threads per run.
+set -eu
+[ $# -ge 6 ] || { echo "usage: $0 DECK_TOOL SCENE WORK DATA NAME LEVEL..." >&2; exit 2; }
+deck_tool=$1 scene=$2 work=$3 data=$4 name=$5
+shift 5
+here=$(cd "$(dirname "$0")" && pwd)
+threads=${CCX_THREADS:-1}
+mkdir -p "$work/out"
+echo "label,spacing,refine,elements,nodes,dofs,seconds,max_rss_mb" > "$work/out/${name}_runs.csv"
+for level in "$@"; do
+    label=$(echo "$level" | cut -d: -f1) spacing=$(echo "$level" | cut -d: -f2)
+    refine=$(echo "$level" | cut -d: -f3) solver=$(echo "$level:" | cut -d: -f4)
+    run=${name}_$label
+    "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" ${solver:+--solver "$solver"} \
+        > "$work/$run.inp.new"
+    if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
+        rm "$work/$run.inp.new"
+        echo "calculix: $run: deck unchanged, reusing its results" >&2
+    else
+        mv "$work/$run.inp.new" "$work/$run.inp"
+        rm -f "$work/$run.dat" "$work/$run.time"
+        echo "calculix: $run: spacing $spacing mm, $refine refinement(s) ..." >&2
+        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M" -o "$run.time.new" \
+            ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
+        grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
+        mv "$work/$run.time.new" "$work/$run.time"
+    fi
+    awk -f "$here/organ_dat.awk" "$work/$run.inp" "$work/$run.dat" > "$work/out/$run.csv"
+    size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5; exit }' "$work/$run.inp")
+    read -r seconds kb < "$work/$run.time"
+    mb=$(awk -v kb="$kb" 'BEGIN { printf "%.0f", kb / 1024 }')
+    echo "$label,$spacing,$refine,$size,$seconds,$mb" >> "$work/out/${name}_runs.csv"
+    echo "calculix: $run: $seconds s, $mb MB" >&2
+done
+mkdir -p "$data"
+cp "$work/out/${name}_runs.csv" "$data/"
+for level in "$@"; do
+    cp "$work/out/${name}_$(echo "$level" | cut -d: -f1).csv" "$data/"
+done
+echo "calculix: wrote $data/${name}_*.csv" >&2

@@ -1,0 +1,48 @@
+# calculix_organ.mk — the CalculiX reference of the organ scenes (issue 15,
+# acceptance 1; docs/validation.md, "Organs").
+#
+#   make calculix-organ     runs CalculiX on the liver at the levels below
+#                           (tens of minutes) and rewrites
+#                           tests/calculix/data/liver_*.csv, then the table
+#   make calculix-organ-table  the convergence table from the committed data
+#                           and a fresh meshless solve (build/calculix/organ.md)
+#   check-organ-calculix    (make check) the shipped liver's meshless solve
+#                           within 3 % of the finest level, at the contact
+#                           vertex and over the output vertices; the deck
+#                           writer's patch and counts on a coarse level
+#
+# A level is label:spacing:refine[:solver] (organ_deck.c): the liver's
+# surface as it is with the interior at `spacing` mm, refined `refine`
+# times (each tetrahedron into eight, the surface triangles into four on
+# their own planes), 10-node tetrahedra.
+
+ORGAN_SCENE := coeffs/liver.yaml
+ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
+ORGAN_FINEST := s20r1
+ORGAN_BOUND := 0.03
+
+.PHONY: calculix-organ calculix-organ-table check-organ-calculix
+CHECKS += check-organ-calculix
+
+$(CX)/organ_deck $(CX)/organ_compare: $(CX)/%: tests/calculix/%.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtfit.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a \
+	  $(HOST_LIBS) -o $@
+
+calculix-organ: $(CX)/organ_deck | deps-calculix
+	$(Q)tests/calculix/run_organ.sh $< $(ORGAN_SCENE) $(CX)/organ $(CX_DATA) liver $(ORGAN_LEVELS)
+	@$(MAKE) --no-print-directory calculix-organ-table
+
+calculix-organ-table: $(CX)/organ_compare
+	@mkdir -p $(CX)
+	@{ echo "CalculiX levels against the finest ($(ORGAN_FINEST)):"; \
+	  for l in $(ORGAN_LEVELS); do n=$${l%%:*}; [ $$n = $(ORGAN_FINEST) ] && continue; \
+	    echo; echo "level $$n:"; $< $(CX_DATA)/liver_$(ORGAN_FINEST).csv --csv $(CX_DATA)/liver_$$n.csv || true; done; \
+	  echo; echo "meshless ($(ORGAN_SCENE)) against $(ORGAN_FINEST):"; \
+	  $< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) || true; } | tee $(CX)/organ.md
+
+check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
+	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND)) =="
+	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND)
