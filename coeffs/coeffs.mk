@@ -7,7 +7,7 @@
 #   check-fit      the held-out errors recomputed from the compiled header
 #                  and fresh solves; `tissuefit fit` refusing bad scenes
 
-SHIPPED_SCENES := coeffs/block48.yaml
+SHIPPED_SCENES := coeffs/block48.yaml coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml
 SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
 REPORTS := docs/reports
 

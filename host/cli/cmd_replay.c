@@ -20,6 +20,8 @@
 #include "cli/cmd_args.h"
 #include "base/log.h"
 #include "base/plot.h"
+#include "report/organ_pictures.h"
+#include "report/surface_render.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -152,58 +154,87 @@ static uint32_t *rows_of(const tf_outputs *o, const double *xyz)
     return order;
 }
 
-static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
-                const double *u, size_t tick, const double f[3])
+/* Triangles over the output points sorted into rows (rows_of): two per
+ * quadrilateral between equal-length neighbouring rows.  Returns the
+ * count, 0 when the rows do not form a grid, or -1 when out of memory. */
+static long grid_triangles(const uint32_t *order, size_t n, const double *xyz, size_t **tri)
 {
-    tf_plot p;
-    char err[512];
+    size_t row = 0;
+    while (row < n && xyz[3 * (size_t)order[row] + 1] == xyz[3 * (size_t)order[0] + 1]) {
+        row++;
+    }
+    if (row < 2 || n % row != 0 || n / row < 2) {
+        return 0;
+    }
+    size_t rows = n / row, nt = 2 * (row - 1) * (rows - 1);
+    *tri = malloc(3 * nt * sizeof **tri);
+    if (*tri == NULL) {
+        return -1;
+    }
+    size_t *t = *tri;
+    for (size_t r = 0; r + 1 < rows; ++r) {
+        for (size_t i = 0; i + 1 < row; ++i) {
+            size_t a = order[r * row + i], b = order[r * row + i + 1];
+            size_t c = order[(r + 1) * row + i + 1], d = order[(r + 1) * row + i];
+            *t++ = a, *t++ = b, *t++ = c;
+            *t++ = a, *t++ = c, *t++ = d;
+        }
+    }
+    return (long)nt;
+}
+
+/* The deformed output surface in depth order (report/surface_render.h): an
+ * organ's whole surface, or a box's grid of output points with the
+ * vertical exaggerated 4 times so that a dent of a few millimetres shows. */
+static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
+                const double *u, size_t tick, const double f[3], int contact)
+{
+    char err[512], title[256];
+    if (tf_problem_mesh(s) != NULL) {
+        tf_organ_view v = {.contact = contact, .exaggerate = 1, .azimuth = NAN, .elevation = NAN};
+        if (tf_organ_deformed_png(png, s, u, f, &v, err, sizeof err) != 0) {
+            tf_error(ctx, "replay: %s", err);
+            return -1;
+        }
+        return 0;
+    }
     const double *xyz = tf_solver_coords(solver);
-    const size_t n = s->outputs.n_nodes;
+    const size_t n = s->outputs.n_nodes, nn = tf_solver_node_count(solver);
     uint32_t *order = rows_of(&s->outputs, xyz);
-    if (order == NULL) {
-        tf_error(ctx, "replay: out of memory");
+    size_t *tri = NULL;
+    double *uz = malloc((nn + 1) * sizeof *uz);
+    long nt = order && uz ? grid_triangles(order, n, xyz, &tri) : -1;
+    if (nt <= 0) {
+        tf_error(ctx, "replay: %s", nt < 0 ? "out of memory"
+                                           : "--png draws output points that form a grid of rows");
+        free(order);
+        free(uz);
         return -1;
     }
     double lo = 0, hi = 0;
+    for (size_t i = 0; i < nn; ++i) {
+        uz[i] = u[3 * i + 2];
+    }
     for (size_t j = 0; j < n; ++j) {
-        lo = fmin(lo, u[3 * (size_t)order[j] + 2]);
-        hi = fmax(hi, u[3 * (size_t)order[j] + 2]);
+        lo = fmin(lo, uz[order[j]]);
+        hi = fmax(hi, uz[order[j]]);
     }
-    if (tf_plot_open(&p, png, 1000, 750, err, sizeof err) != 0) {
+    snprintf(title, sizeof title,
+             "deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N (the solve; "
+             "displacements to scale, vertical x4)",
+             tick, f[0], f[1], f[2]);
+    tf_render r = {.xyz = xyz, .u = u, .tri = tri, .ntri = (size_t)nt, .closed = 0,
+                   .value = uz, .vmin = lo, .vmax = hi > lo ? hi : lo + 1e-9,
+                   .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
+                   .elevation = 35, .zscale = 4, .title = title, .width = 1000, .height = 750};
+    int rc = tf_render_png(png, &r, err, sizeof err);
+    if (rc != 0) {
         tf_error(ctx, "replay: %s", err);
-        free(order);
-        return -1;
-    }
-    fprintf(p.gp, "set cbrange [%g:%g]\n", lo, hi > lo ? hi : lo + 1e-9);
-    fprintf(p.gp,
-            "set title 'deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N "
-            "(the solve; displacements to scale, mm)'\n"
-            "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset zlabel 'z (mm)' rotate\n"
-            "set view 55,35\nset ticslevel 0\nset cblabel 'u_z (mm)'\n"
-            "set palette rgb 33,13,10\nset pm3d depthorder border lc 'black' lw 0.5\n"
-            "splot '-' using 1:2:3:4 with pm3d title 'deformed', "
-            "'-' using 1:2:3 with lines lc 'gray' title 'rest'\n",
-            tick, f[0], f[1], f[2]);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (size_t j = 0; j < n; ++j) {
-            const double *x = xyz + 3 * (size_t)order[j], *d = u + 3 * (size_t)order[j];
-            if (j > 0 && x[1] != xyz[3 * (size_t)order[j - 1] + 1]) {
-                fputc('\n', p.gp);
-            }
-            if (pass == 0) {
-                fprintf(p.gp, "%g %g %g %g\n", x[0] + d[0], x[1] + d[1], x[2] + d[2], d[2]);
-            } else {
-                fprintf(p.gp, "%g %g %g\n", x[0], x[1], x[2]);
-            }
-        }
-        fprintf(p.gp, "e\n");
     }
     free(order);
-    if (tf_plot_close(&p, err, sizeof err) != 0) {
-        tf_error(ctx, "replay: %s", err);
-        return -1;
-    }
-    return 0;
+    free(tri);
+    free(uz);
+    return rc;
 }
 
 /* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
@@ -261,7 +292,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
     int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
+        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick,
+                  contact) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {

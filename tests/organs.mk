@@ -1,0 +1,54 @@
+# organs.mk — the shipped organ scenes (issue 15): coeffs/{liver,stomach,heart}.
+#
+#   check-organs    each organ header's output map against its mesh file
+#                   and scene (vertex index, positions, CRC) and its servo
+#                   budget at 1 kHz on a Cortex-M4F (tests/organs/map_check.c)
+#   organ-pictures  the organs at rest and deformed (docs/organs/*.png) and
+#                   their VTK files for ParaView (build/organs/*.vtu)
+#   bench-organs    (make bench) seconds to regenerate each organ header
+# The headers' held-out errors are recomputed by check-fit (coeffs.mk) and
+# the liver is compared with CalculiX by check-organ-calculix
+# (tests/calculix_organ.mk).
+
+ORGAN_SCENES := coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml
+ORGAN_NAMES := $(ORGAN_SCENES:coeffs/%.yaml=%)
+
+.PHONY: check-organs organ-pictures bench-organs
+CHECKS += check-organs
+BENCHES += bench-organs
+
+$(T)/organs/map-%: tests/organs/map_check.c coeffs/%.h $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)u=$$(echo $* | tr a-z A-Z); $(CC) $(TEST_CFLAGS) -Icoeffs -DHEADER='"$*.h"' \
+	  -DFORWARD=tfit_$*_forward -DPFX=TFIT_$$u -DMAP=tfit_$* -DTFIT_$${u}_IMPLEMENTATION $< \
+	  $(call host_test_link,native) -o $@
+
+check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%)
+	@echo "== organ headers: output maps against the mesh files, servo budget at 1 kHz on M4F =="
+	@set -e; for n in $(ORGAN_NAMES); do $(T)/organs/map-$$n coeffs/$$n.yaml; done
+
+# The force of each picture: the envelope's largest, into the organ at its site.
+ORGAN_FORCE_liver := 0,0.3,0
+ORGAN_FORCE_stomach := 0,0.3,0
+ORGAN_FORCE_heart := -0.3,0,0
+
+# $(call organ_picture,NAME)
+organ_picture = $(B)/bin/tissuefit -q solve coeffs/$(1).yaml --force $(ORGAN_FORCE_$(1)) \
+  -o $(B)/organs/$(1).csv --vtk $(B)/organs/$(1).vtu --png-rest docs/organs/$(1)_rest.png \
+  --png docs/organs/$(1)_deformed.png;
+
+organ-pictures: $(B)/bin/tissuefit | deps-demo
+	@echo "== organ pictures: docs/organs/*_{rest,deformed}.png, $(B)/organs/*.vtu =="
+	@mkdir -p docs/organs $(B)/organs
+	@set -e; $(foreach n,$(ORGAN_NAMES),$(call organ_picture,$(n)))
+
+# Regeneration time of each organ header (solve, load cases, fits, header),
+# median of three runs on this machine.
+bench-organs: $(B)/bin/tissuefit
+	@echo "== organ headers: regeneration time (make coeffs), median of 3 runs =="
+	@set -e; for n in $(ORGAN_NAMES); do \
+	  for r in 1 2 3; do /usr/bin/time -f %e -o $(B)/organs-time-$$r $(B)/bin/tissuefit -q fit \
+	    coeffs/$$n.yaml -o $(B)/bench-$$n.h; done; \
+	  printf '%-8s %s s\n' $$n $$(sort -n $(B)/organs-time-[123] | sed -n 2p); done
