@@ -11,14 +11,15 @@
 #                           vertex and over the output vertices; the deck
 #                           writer's patch and counts on a coarse level
 #
-# A level is label:spacing:refine[:solver] (organ_deck.c): the liver's
-# surface as it is with the interior at `spacing` mm, refined `refine`
-# times (each tetrahedron into eight, the surface triangles into four on
-# their own planes), 10-node tetrahedra.
+# A level is label:spacing:refine[:grade] (organ_deck.c): the liver's
+# surface as it is with the interior at `spacing` mm (graded to `grade` mm
+# near the contact vertex), refined `refine` times (each tetrahedron into
+# eight, the surface triangles into four on their own planes), 10-node
+# tetrahedra.
 
 ORGAN_SCENE := coeffs/liver.yaml
-ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
-ORGAN_FINEST := s20r1
+ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1 g4r1:20:1:4
+ORGAN_FINEST := g4r1
 ORGAN_BOUND := 0.03
 
 .PHONY: calculix-organ calculix-organ-table check-organ-calculix

@@ -2,7 +2,8 @@
  * organ_compare.c — an organ's displacements against the CalculiX
  * reference (issue 15 acceptance 1, docs/validation.md §organs).
  *
- *   organ_compare REFERENCE.csv SCENE [BOUND]     the meshless solve
+ *   organ_compare REFERENCE.csv SCENE [BOUND] [--set KEY=VALUE]...
+ *                                                 the meshless solve
  *   organ_compare REFERENCE.csv --csv LEVEL.csv    a coarser CalculiX level
  *
  * REFERENCE.csv and LEVEL.csv come from organ_dat.awk (vertex,x,y,z,case,
@@ -82,13 +83,14 @@ static double norm3(const double *v)
 }
 
 /* The meshless displacements at the reference's rows, into cand. */
-static int meshless(const char *scene, const rows *ref, rows *cand)
+static int meshless(const char *scene, const char *const *sets, size_t n_sets, const rows *ref,
+                    rows *cand)
 {
     char err[2048];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load(scene, NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(scene, sets, n_sets, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "organ_compare: %s\n", err);
         return -1;
@@ -129,17 +131,24 @@ static int meshless(const char *scene, const rows *ref, rows *cand)
 int main(int argc, char **argv)
 {
     static rows ref, cand;
-    if (argc < 3 || argc > 4 || read_rows(argv[1], &ref) != 0) {
-        fprintf(stderr, "usage: organ_compare REFERENCE.csv SCENE [BOUND] | REFERENCE.csv --csv "
-                        "LEVEL.csv\n");
+    const char *sets[32];
+    size_t n_sets = 0;
+    int args = argc;
+    while (args >= 5 && strcmp(argv[args - 2], "--set") == 0 && n_sets < 32) {
+        sets[n_sets++] = argv[args - 1];
+        args -= 2;
+    }
+    if (args < 3 || args > 4 || read_rows(argv[1], &ref) != 0) {
+        fprintf(stderr, "usage: organ_compare REFERENCE.csv SCENE [BOUND] [--set K=V]... | "
+                        "REFERENCE.csv --csv LEVEL.csv\n");
         return 2;
     }
     int level = strcmp(argv[2], "--csv") == 0;
-    if (level ? argc != 4 || read_rows(argv[3], &cand) != 0
-              : meshless(argv[2], &ref, &cand) != 0) {
+    if (level ? args != 4 || read_rows(argv[3], &cand) != 0
+              : meshless(argv[2], sets, n_sets, &ref, &cand) != 0) {
         return 2;
     }
-    double bound = !level && argc == 4 ? atof(argv[3]) : INFINITY;
+    double bound = !level && args == 4 ? atof(argv[3]) : INFINITY;
     int ok = 1;
     printf("| case | |u_ref| at the contact vertex (mm/N) | contact error | outputs: max |du| / "
            "max |u_ref| |\n|---|---:|---:|---:|\n");

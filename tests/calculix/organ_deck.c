@@ -4,13 +4,13 @@
  * patch as the meshless solve, meshed by gmsh with 10-node tetrahedra
  * (C3D10), one *STEP per unit force (1 N along x, y and z).
  *
- *   organ_deck SCENE --spacing H [--graded] [--refine R] [--solver NAME]
+ *   organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]
  *
  * Mesh (geometry/volume_mesh_tet10.h): the scene's surface as it is (every
- * vertex a node), the interior at spacing H mm (--graded: with the scene's
- * own grading towards its contact site), then R uniform refinements (each
- * tetrahedron into eight; the surface triangles into four on their own
- * planes: the same polyhedron), then second order.
+ * vertex a node), the interior at spacing H mm (--grade G: G mm within
+ * 20 mm of the contact vertex, rising linearly to H at 60 mm), then R
+ * uniform refinements (each tetrahedron into eight; the surface triangles
+ * into four on their own planes: the same polyhedron), then second order.
  *
  * Fixed region: every node (corner or mid-edge) the scene's fixed regions
  * select by position (box, sphere, side; not the vertex-based near and
@@ -53,12 +53,12 @@ typedef struct options {
     const char *scene, *solver;
     double spacing;
     unsigned refine;
-    int graded;
+    double grade; /* mm near the contact vertex, 0: none */
 } options;
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: organ_deck SCENE --spacing H [--graded] [--refine R] [--solver NAME]\n");
+    fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n");
     return 2;
 }
 
@@ -67,7 +67,7 @@ static int parse(int argc, char **argv, options *o)
     static const struct option opts[] = {{"spacing", required_argument, NULL, 's'},
                                          {"refine", required_argument, NULL, 'r'},
                                          {"solver", required_argument, NULL, 'v'},
-                                         {"graded", no_argument, NULL, 'g'},
+                                         {"grade", required_argument, NULL, 'g'},
                                          {0}};
     int c;
     char *end;
@@ -85,7 +85,10 @@ static int parse(int argc, char **argv, options *o)
         } else if (c == 'v') {
             o->solver = optarg;
         } else if (c == 'g') {
-            o->graded = 1;
+            o->grade = strtod(optarg, &end);
+            if (*end || !(o->grade > 0)) {
+                return -1;
+            }
         } else {
             return -1;
         }
@@ -341,8 +344,9 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
     for (size_t i = 0; i < q->nn; ++i) {
         nfixed += fixed[i];
     }
-    printf("** %s: CalculiX deck of tests/calculix/organ_deck.c (spacing %g mm%s, refine %u)\n",
-           o->scene, o->spacing, o->graded ? ", graded" : "", o->refine);
+    printf("** %s: CalculiX deck of tests/calculix/organ_deck.c (spacing %g mm, graded to %g mm "
+           "near the contact, refine %u)\n",
+           o->scene, o->spacing, o->grade > 0 ? o->grade : o->spacing, o->refine);
     printf("** SIZE %zu %zu %zu\n", q->ntet, q->nn, 3 * (q->nn - nfixed));
     write_outputs(q, p, out);
     write_mesh(q);
@@ -382,12 +386,13 @@ int main(int argc, char **argv)
     tf_geom_msg msg;
     tf_mesh_options mo = m->mesh;
     mo.spacing = o.spacing;
-    if (o.graded && !mo.graded) {
-        fprintf(stderr, "organ_deck: --graded: %s has no geometry.grading\n", o.scene);
-        tf_scene_free(sc);
-        return 2;
+    mo.graded = o.grade > 0;
+    if (mo.graded) {
+        memcpy(mo.grade_at, m->tm.xyz + 3 * (size_t)p->contacts[0].node, sizeof mo.grade_at);
+        mo.grade_spacing = o.grade;
+        mo.grade_radius = 20;
+        mo.grade_ramp = 60;
     }
-    mo.graded = o.graded;
     int rc = surface_of(m, &s) != 0 ? 1 : tf_volume_mesh_tet10(&s, &mo, o.refine, &q, &msg);
     if (rc != 0) {
         fprintf(stderr, "organ_deck: %s\n", rc == 1 && s.xyz == NULL ? "out of memory" : msg.error);

@@ -3,7 +3,7 @@
 #
 # The CalculiX reference of an organ scene (docs/validation.md, organs):
 # one CalculiX run per level, coarse to fine; a level is
-# "label:spacing:refine[:solver]" (organ_deck.c).  Decks, CalculiX output and
+# "label:spacing:refine[:grade]" (organ_deck.c; grade 0 or absent: none).  Decks, CalculiX output and
 # logs stay in WORK; DATA receives, once every run succeeded,
 #   NAME_<label>.csv   the output vertices' displacements under 1 N along
 #                      x, y, z (organ_dat.awk)
@@ -17,13 +17,17 @@ shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
 mkdir -p "$work/out"
-echo "label,spacing,refine,elements,nodes,dofs,seconds,max_rss_mb" > "$work/out/${name}_runs.csv"
+echo "label,spacing,refine,grade,elements,nodes,dofs,seconds,max_rss_mb" > "$work/out/${name}_runs.csv"
 for level in "$@"; do
     label=$(echo "$level" | cut -d: -f1) spacing=$(echo "$level" | cut -d: -f2)
-    refine=$(echo "$level" | cut -d: -f3) solver=$(echo "$level:" | cut -d: -f4)
+    refine=$(echo "$level" | cut -d: -f3) grade=$(echo "$level:" | cut -d: -f4)
+    grade=${grade:-0}
     run=${name}_$label
-    "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" ${solver:+--solver "$solver"} \
-        > "$work/$run.inp.new"
+    if [ "$grade" = 0 ]; then
+        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" > "$work/$run.inp.new"
+    else
+        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" --grade "$grade" > "$work/$run.inp.new"
+    fi
     if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
         rm "$work/$run.inp.new"
         echo "calculix: $run: deck unchanged, reusing its results" >&2
@@ -40,7 +44,7 @@ for level in "$@"; do
     size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5; exit }' "$work/$run.inp")
     read -r seconds kb < "$work/$run.time"
     mb=$(awk -v kb="$kb" 'BEGIN { printf "%.0f", kb / 1024 }')
-    echo "$label,$spacing,$refine,$size,$seconds,$mb" >> "$work/out/${name}_runs.csv"
+    echo "$label,$spacing,$refine,$grade,$size,$seconds,$mb" >> "$work/out/${name}_runs.csv"
     echo "calculix: $run: $seconds s, $mb MB" >&2
 done
 mkdir -p "$data"
