@@ -232,8 +232,60 @@ static void tetrahedral_cells_pass_the_patch_test(void **state)
     }
     print_message("patch test on %zu tetrahedra: interior error %.3g of %.3g mm\n",
                   tf_problem_mesh(p)->tm.ntet, worst, top);
-    assert_true(worst <= 0.05 * top);
+    /* Not to quadrature accuracy: RPIM shape functions jump between cells
+     * (docs/validation.md §2 and §7); 2.5 % measured. */
+    assert_true(worst <= 0.03 * top);
     free(u);
+    tf_solver_destroy(sv);
+    tf_scene_free(s);
+}
+
+/* The strain energy of a linear field is exact: RPIM with the linear
+ * polynomial reproduces its gradient G at every Gauss point, so
+ * u^T K u = sum_g w_g G:D:G = V G:D:G when the tetrahedra's weights add up
+ * to the organ's volume (B-bar too: div u is constant). */
+static void a_linear_field_has_the_exact_energy(void **state)
+{
+    (void)state;
+    char err[1024];
+    tf_scene *s = load(base, NULL, 0, err, sizeof err);
+    assert_non_null(s);
+    const tf_problem *p = &s->problem;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
+    assert_non_null(sv);
+    const double g[9] = {0.01, 0.002, -0.003, 0.004, -0.02, 0.001, 0.003, 0.002, 0.015};
+    size_t n3 = 3 * p->cloud.n;
+    double *u = malloc(n3 * sizeof *u), *r = malloc(n3 * sizeof *r), zero[3] = {0, 0, 0};
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            u[3 * i + (size_t)a] = 0;
+            for (int b = 0; b < 3; ++b) {
+                u[3 * i + (size_t)a] += g[3 * a + b] * p->cloud.xyz[3 * i + (size_t)b];
+            }
+        }
+    }
+    assert_int_equal(tf_solver_reactions(sv, -1, zero, u, r), 0);
+    double energy = 0;
+    for (size_t d = 0; d < n3; ++d) {
+        energy += u[d] * r[d];
+    }
+    double E = p->material.young, nu = p->material.poisson;
+    double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    double tr = g[0] + g[4] + g[8], eps2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) {
+            double e = 0.5 * (g[3 * a + b] + g[3 * b + a]);
+            eps2 += e * e;
+        }
+    }
+    double exact = tf_problem_mesh(p)->tm.enclosed_volume * (lambda * tr * tr + 2 * mu * eps2);
+    print_message("strain energy of a linear field: %.12g, exact %.12g\n", energy, exact);
+    assert_true(fabs(energy - exact) <= 1e-9 * exact);
+    free(u);
+    free(r);
     tf_solver_destroy(sv);
     tf_scene_free(s);
 }
@@ -277,6 +329,7 @@ int main(void)
         cmocka_unit_test(the_organ_scene_is_built_as_written),
         cmocka_unit_test(each_bad_organ_scene_has_its_own_message),
         cmocka_unit_test(tetrahedral_cells_pass_the_patch_test),
+        cmocka_unit_test(a_linear_field_has_the_exact_energy),
         cmocka_unit_test(a_contact_site_applies_the_whole_force),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
