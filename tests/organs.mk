@@ -6,6 +6,8 @@
 #   organ-pictures  the organs at rest and deformed (docs/organs/*.png) and
 #                   their VTK files for ParaView (build/organs/*.vtu)
 #   bench-organs    (make bench) seconds to regenerate each organ header
+#   organ-subsets   what the near-contact outputs leave out: the largest
+#                   displacement of a surface vertex that is not an output
 # The headers' held-out errors are recomputed by check-fit (coeffs.mk) and
 # the liver is compared with CalculiX by check-organ-calculix
 # (tests/calculix_organ.mk).
@@ -13,7 +15,7 @@
 ORGAN_SCENES := coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml
 ORGAN_NAMES := $(ORGAN_SCENES:coeffs/%.yaml=%)
 
-.PHONY: check-organs organ-pictures bench-organs
+.PHONY: check-organs organ-pictures bench-organs organ-subsets
 CHECKS += check-organs
 BENCHES += bench-organs
 
@@ -52,3 +54,13 @@ bench-organs: $(B)/bin/tissuefit
 	  for r in 1 2 3; do /usr/bin/time -f %e -o $(B)/organs-time-$$r $(B)/bin/tissuefit -q fit \
 	    coeffs/$$n.yaml -o $(B)/bench-$$n.h; done; \
 	  printf '%-8s %s s\n' $$n $$(sort -n $(B)/organs-time-[123] | sed -n 2p); done
+
+$(T)/organs/subset_report: tests/organs/subset_report.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtfit.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+organ-subsets: $(T)/organs/subset_report
+	@echo "== organs: what the near-contact outputs leave out (the envelope's force along x, y, z) =="
+	@$< $(ORGAN_SCENES)

@@ -15,23 +15,16 @@
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
+int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
 {
     va_list ap;
+    snprintf(is->path, sizeof is->path, "%s", path);
     va_start(ap, fmt);
-    sd_vfail(is, path, fmt, ap);
+    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
     va_end(ap);
     return -1;
 }
-
-int sd_vfail(sd_issue *is, const char *path, const char *fmt, va_list ap)
-{
-    snprintf(is->path, sizeof is->path, "%s", path);
-    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
-    return -1;
-}
+#define fail sd_fail
 
 /* "prefix.k.key" into buf. */
 static const char *at(char *buf, size_t len, const char *prefix, size_t k, const char *key)

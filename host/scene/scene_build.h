@@ -5,7 +5,6 @@
 #ifndef TF_SCENE_BUILD_H
 #define TF_SCENE_BUILD_H
 
-#include <stdarg.h>
 #include <stddef.h>
 
 #include "fitting/plan.h"
@@ -19,8 +18,9 @@ typedef struct sd_issue {
     char msg[768]; /* room for a geometry message (geom_msg.h) and its context */
 } sd_issue;
 
-/* Records the issue at path; returns -1. */
-int sd_vfail(sd_issue *is, const char *path, const char *fmt, va_list ap);
+/* Records the issue at path (a printf format); returns -1. */
+int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 
 /* Fills p (zeroed by the caller, its name and source set) and the plan
  * from doc.  Returns 0, or -1 with the issue; p may then hold partial

@@ -4,23 +4,13 @@
 #include "scene/scene_organ.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "problem/mesh_geometry.h"
 
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    sd_vfail(is, path, fmt, ap);
-    va_end(ap);
-    return -1;
-}
+#define fail sd_fail
 
 static int finite3(const double *v)
 {
