@@ -191,8 +191,8 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
 {
     char err[512], title[256];
     if (tf_problem_mesh(s) != NULL) {
-        tf_organ_view v = {.contact = contact, .exaggerate = 1, .azimuth = NAN, .elevation = NAN};
-        if (tf_organ_deformed_png(png, s, u, f, &v, err, sizeof err) != 0) {
+        tf_report_organ_view v = {.contact = contact, .exaggerate = 1, .azimuth = NAN, .elevation = NAN};
+        if (tf_report_organ_deformed_png(png, s, u, f, &v, err, sizeof err) != 0) {
             tf_error(ctx, "replay: %s", err);
             return -1;
         }
@@ -223,11 +223,11 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
              "deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N (the solve; "
              "displacements to scale, vertical x4)",
              tick, f[0], f[1], f[2]);
-    tf_render r = {.xyz = xyz, .u = u, .tri = tri, .ntri = (size_t)nt, .closed = 0,
+    tf_report_render r = {.xyz = xyz, .u = u, .tri = tri, .ntri = (size_t)nt, .closed = 0,
                    .value = uz, .vmin = lo, .vmax = hi > lo ? hi : lo + 1e-9,
                    .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
                    .elevation = 35, .zscale = 4, .title = title, .width = 1000, .height = 750};
-    int rc = tf_render_png(png, &r, err, sizeof err);
+    int rc = tf_report_render_png(png, &r, err, sizeof err);
     if (rc != 0) {
         tf_error(ctx, "replay: %s", err);
     }

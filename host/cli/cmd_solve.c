@@ -165,13 +165,13 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
-    tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
+    tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
     if (a->vtk) {
         const tf_mesh_geometry *m = tf_problem_mesh(s);
         if (m != NULL) {
-            tf_vtu_displacements_tets(vtu.fp, &s->cloud, m->tm.tet, m->tm.ntet, u);
+            tf_report_vtu_displacements_tets(vtu.fp, &s->cloud, m->tm.tet, m->tm.ntet, u);
         } else {
-            tf_vtu_displacements(vtu.fp, &s->cloud, u);
+            tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
         }
     }
     int rc = 0;
@@ -197,11 +197,11 @@ static int pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s, int c
                     const double *u)
 {
     char err[512];
-    tf_organ_view v = {.contact = contact < 0 ? 0 : contact, .exaggerate = a->exaggerate,
+    tf_report_organ_view v = {.contact = contact < 0 ? 0 : contact, .exaggerate = a->exaggerate,
                        .azimuth = a->view[0], .elevation = a->view[1]};
     const double zero[3] = {0, 0, 0};
-    if ((a->png_rest && tf_organ_rest_png(a->png_rest, s, &v, err, sizeof err) != 0) ||
-        (a->png && tf_organ_deformed_png(a->png, s, u, contact < 0 ? zero : a->force, &v, err,
+    if ((a->png_rest && tf_report_organ_rest_png(a->png_rest, s, &v, err, sizeof err) != 0) ||
+        (a->png && tf_report_organ_deformed_png(a->png, s, u, contact < 0 ? zero : a->force, &v, err,
                                          sizeof err) != 0)) {
         tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;

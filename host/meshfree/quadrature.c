@@ -70,7 +70,7 @@ static void cell_ijk(const tf_cells *c, size_t cell, size_t ijk[3])
 void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[3])
 {
     if (c->tet) {
-        tf_tet_box(c, cell, centre, half);
+        tf_cells_tet_box(c, cell, centre, half);
         return;
     }
     size_t ijk[3];
@@ -84,7 +84,7 @@ void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[
 void tf_cells_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w)
 {
     if (c->tet) {
-        tf_tet_point(c, cell, p, x, w);
+        tf_cells_tet_point(c, cell, p, x, w);
         return;
     }
     size_t ijk[3];

@@ -90,7 +90,7 @@ tf_qpoint *tf_patch_points(const tf_patch *p, const tf_cloud *cloud, const tf_ce
  * triangles.  The weights sum to the patch's area up to rounding, so a
  * uniform traction force / area applies the whole force.  Returns a
  * malloc'ed array (length in *n) or NULL when out of memory. */
-tf_qpoint *tf_surface_patch_points(const tf_patch *p, const tf_cloud *cloud, size_t *n);
+tf_qpoint *tf_patch_surface_points(const tf_patch *p, const tf_cloud *cloud, size_t *n);
 
 /* Area of a patch, mm^2 (0 for a point). */
 double tf_patch_area(const tf_patch *p, const tf_cloud *cloud);

@@ -15,7 +15,7 @@ static void corners(const tf_cells *c, size_t cell, double x[4][3])
     }
 }
 
-void tf_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w)
+void tf_cells_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w)
 {
     double v[4][3];
     corners(c, cell, v);
@@ -26,7 +26,7 @@ void tf_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double 
     *w = ws[p];
 }
 
-void tf_tet_box(const tf_cells *c, size_t cell, double centre[3], double half[3])
+void tf_cells_tet_box(const tf_cells *c, size_t cell, double centre[3], double half[3])
 {
     double v[4][3];
     corners(c, cell, v);
@@ -55,7 +55,7 @@ static void bin_of(const tf_tet_locator *l, const double x[3], unsigned b[3])
 static void cell_bins(const tf_cells *c, size_t e, unsigned lo[3], unsigned hi[3])
 {
     double centre[3], half[3], a[3], b[3];
-    tf_tet_box(c, e, centre, half);
+    tf_cells_tet_box(c, e, centre, half);
     for (int k = 0; k < 3; ++k) {
         a[k] = centre[k] - half[k];
         b[k] = centre[k] + half[k];
@@ -217,7 +217,7 @@ size_t tf_cells_locate(const tf_cells *c, const double x[3])
     return best == SIZE_MAX ? 0 : best;
 }
 
-tf_qpoint *tf_surface_patch_points(const tf_patch *p, const tf_cloud *cloud, size_t *n)
+tf_qpoint *tf_patch_surface_points(const tf_patch *p, const tf_cloud *cloud, size_t *n)
 {
     tf_simplex_rule r;
     tf_tri_rule(5, &r);

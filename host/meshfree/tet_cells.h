@@ -12,9 +12,9 @@
 #include "meshfree/quadrature.h"
 
 /* Point p of tetrahedron `cell` and its weight (volume, mm^3). */
-void tf_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w);
+void tf_cells_tet_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w);
 
 /* Centroid of tetrahedron `cell` and half the extent of its bounding box. */
-void tf_tet_box(const tf_cells *c, size_t cell, double centre[3], double half[3]);
+void tf_cells_tet_box(const tf_cells *c, size_t cell, double centre[3], double half[3]);
 
 #endif /* TF_TET_CELLS_H */

@@ -13,7 +13,7 @@
 #include "geometry/surface_read.h"
 #include "geometry/tetmesh_check.h"
 
-void tf_mesh_geometry_free(tf_mesh_geometry *g)
+void tf_problem_mesh_free(tf_mesh_geometry *g)
 {
     tf_tetmesh_free(&g->tm);
     free(g->file_xyz);
@@ -45,12 +45,12 @@ static int verify(tf_mesh_geometry *g, const tf_surface *s, tf_geom_msg *m)
 {
     const tf_tetmesh *t = &g->tm;
     double rel = fabs(t->cells_volume - t->enclosed_volume) / t->enclosed_volume;
-    if (!(rel <= TF_MESH_VOLUME_TOL)) {
+    if (!(rel <= TF_PROBLEM_MESH_VOLUME_TOL)) {
         return tf_geom_fail(m, TF_GEOM_FAILED,
                             "the tetrahedra's volume %g mm^3 differs from the enclosed %g mm^3 "
                             "by %.3g %% (at most %g %%)",
                             t->cells_volume, t->enclosed_volume, 100 * rel,
-                            100 * TF_MESH_VOLUME_TOL);
+                            100 * TF_PROBLEM_MESH_VOLUME_TOL);
     }
     tf_inside_report r;
     tf_tetmesh_inside(t, s, &r);
@@ -65,7 +65,7 @@ static int verify(tf_mesh_geometry *g, const tf_surface *s, tf_geom_msg *m)
     return TF_GEOM_OK;
 }
 
-int tf_mesh_geometry_build(tf_mesh_geometry *g, tf_geom_msg *m)
+int tf_problem_mesh_build(tf_mesh_geometry *g, tf_geom_msg *m)
 {
     tf_surface s;
     m->error[0] = m->notes[0] = '\0';
@@ -80,12 +80,12 @@ int tf_mesh_geometry_build(tf_mesh_geometry *g, tf_geom_msg *m)
     rc = rc ? rc : verify(g, &s, m);
     tf_surface_free(&s);
     if (rc != TF_GEOM_OK) {
-        tf_mesh_geometry_free(g);
+        tf_problem_mesh_free(g);
     }
     return rc;
 }
 
-int tf_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c)
+int tf_problem_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c)
 {
     const tf_tetmesh *t = &g->tm;
     memset(c, 0, sizeof *c);
@@ -116,7 +116,7 @@ static double dist2(const double *a, const double *b)
            (a[2] - b[2]) * (a[2] - b[2]);
 }
 
-uint32_t tf_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3])
+uint32_t tf_problem_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3])
 {
     uint32_t best = 0;
     double d = INFINITY;
@@ -130,7 +130,7 @@ uint32_t tf_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3])
     return best;
 }
 
-long tf_mesh_vertex_node(const tf_mesh_geometry *g, long source)
+long tf_problem_mesh_vertex_node(const tf_mesh_geometry *g, long source)
 {
     for (size_t i = 0; i < g->tm.nsurf; ++i) {
         if (g->tm.source[i] == source) {
@@ -153,7 +153,7 @@ static double triangle_area(const double *a, const double *b, const double *c)
     return 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
-int tf_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p)
+int tf_problem_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p)
 {
     const tf_tetmesh *t = &g->tm;
     const double *o = t->xyz + 3 * (size_t)centre;

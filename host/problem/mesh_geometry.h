@@ -19,26 +19,26 @@
 #include "problem/problem.h"
 
 /* Largest |cells - enclosed| / enclosed volume accepted (acceptance 2). */
-#define TF_MESH_VOLUME_TOL 0.01
+#define TF_PROBLEM_MESH_VOLUME_TOL 0.01
 
 /* Builds g->tm, g->file_xyz, g->min_winding and g->notes from
  * g->path, g->place and g->mesh (filled by the caller).  Returns
  * TF_GEOM_OK, TF_GEOM_BAD_INPUT (an unusable file or option) or
  * TF_GEOM_FAILED, with m->error; g owns nothing on failure. */
-int tf_mesh_geometry_build(tf_mesh_geometry *g, tf_geom_msg *m);
+int tf_problem_mesh_build(tf_mesh_geometry *g, tf_geom_msg *m);
 
-void tf_mesh_geometry_free(tf_mesh_geometry *g);
+void tf_problem_mesh_free(tf_mesh_geometry *g);
 
 /* The node cloud of the organ (a copy of the mesh's nodes; spacing: the
  * interior spacing on every axis).  Returns 0, or -1 when out of memory. */
-int tf_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c);
+int tf_problem_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c);
 
 /* The surface vertex (node index) nearest p, ties to the lowest index. */
-uint32_t tf_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3]);
+uint32_t tf_problem_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3]);
 
 /* The node of the surface vertex whose index in the mesh file is `source`,
  * or -1 when the file has no such vertex (or it was dropped as a speck). */
-long tf_mesh_vertex_node(const tf_mesh_geometry *g, long source);
+long tf_problem_mesh_vertex_node(const tf_mesh_geometry *g, long source);
 
 /* A contact site: the surface triangles whose centroid lies within radius
  * of the surface vertex `centre` (a triangle partly inside the ball counts
@@ -46,6 +46,6 @@ long tf_mesh_vertex_node(const tf_mesh_geometry *g, long source);
  * triangles), into p (shape TF_PATCH_SURFACE, its own triangle list, their
  * total area).  Returns 0, 1 when no triangle qualifies, -1 when out of
  * memory. */
-int tf_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p);
+int tf_problem_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p);
 
 #endif /* TF_MESH_GEOMETRY_H */

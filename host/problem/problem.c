@@ -24,7 +24,7 @@ void tf_problem_release(tf_problem *p)
     }
     free(p->contacts);
     if (p->geometry.kind == TF_GEOMETRY_MESH && p->geometry.as.mesh != NULL) {
-        tf_mesh_geometry_free(p->geometry.as.mesh);
+        tf_problem_mesh_free(p->geometry.as.mesh);
         free(p->geometry.as.mesh);
     }
     free(p->outputs.nodes);

@@ -3,8 +3,8 @@
  */
 #include "report/displacement_out.h"
 
-void tf_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
-                          const double *u)
+void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
+                                 const double *u)
 {
     fprintf(fp, "node,x,y,z,ux,uy,uz\n");
     size_t count = idx ? n : c->n;
@@ -67,7 +67,7 @@ static void vtu_cells_end(FILE *fp, size_t nc, unsigned corners, unsigned type)
     fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 }
 
-void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
 {
     size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
     vtu_points(fp, c, nc, u);
@@ -84,7 +84,7 @@ void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
     vtu_cells_end(fp, nc, 8, 12);
 }
 
-void tf_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,
                                const double *u)
 {
     vtu_points(fp, c, ntet, u);

@@ -30,7 +30,7 @@ static void vertex_normal(const tf_mesh_geometry *m, size_t c, double n[3])
     }
 }
 
-static void camera_for(const tf_problem *p, const tf_organ_view *v, tf_render *r)
+static void camera_for(const tf_problem *p, const tf_report_organ_view *v, tf_report_render *r)
 {
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     double n[3];
@@ -41,18 +41,18 @@ static void camera_for(const tf_problem *p, const tf_organ_view *v, tf_render *r
     r->elevation = isnan(v->elevation) ? fmax(-80, fmin(80, el + 20)) : v->elevation;
 }
 
-static void base(const tf_problem *p, const tf_organ_view *v, tf_render *r)
+static void base(const tf_problem *p, const tf_report_organ_view *v, tf_report_render *r)
 {
     const tf_mesh_geometry *m = tf_problem_mesh(p);
-    *r = (tf_render){.xyz = m->tm.xyz, .tri = m->tm.tri, .ntri = m->tm.ntri, .closed = 1,
+    *r = (tf_report_render){.xyz = m->tm.xyz, .tri = m->tm.tri, .ntri = m->tm.ntri, .closed = 1,
                      .zscale = 1, .width = 1000, .height = 800};
     camera_for(p, v, r);
 }
 
-int tf_organ_rest_png(const char *path, const tf_problem *p, const tf_organ_view *v, char *err,
+int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_report_organ_view *v, char *err,
                       size_t errlen)
 {
-    tf_render r;
+    tf_report_render r;
     char title[512];
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     unsigned char *fixed = calloc(p->cloud.n + 1, 1);
@@ -95,16 +95,16 @@ int tf_organ_rest_png(const char *path, const tf_problem *p, const tf_organ_view
                 "1.5 '#d83020', 2 '#d83020')";
     r.cblabel = NULL;
     r.title = title;
-    int rc = tf_render_png(path, &r, err, errlen);
+    int rc = tf_report_render_png(path, &r, err, errlen);
     free(value);
     return rc;
 }
 
-int tf_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
-                          const double force[3], const tf_organ_view *v, char *err,
+int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
+                          const double force[3], const tf_report_organ_view *v, char *err,
                           size_t errlen)
 {
-    tf_render r;
+    tf_report_render r;
     char title[512];
     size_t n = p->cloud.n;
     double *value = malloc((n + 1) * sizeof *value), *drawn = malloc((3 * n + 1) * sizeof *drawn);
@@ -140,7 +140,7 @@ int tf_organ_deformed_png(const char *path, const tf_problem *p, const double *u
     r.palette = "defined (0 '#e0b890', 0.35 '#f0a040', 0.7 '#d83020', 1 '#601010')";
     r.cblabel = "|u| (mm)";
     r.title = title;
-    int rc = tf_render_png(path, &r, err, errlen);
+    int rc = tf_report_render_png(path, &r, err, errlen);
     free(value);
     free(drawn);
     return rc;

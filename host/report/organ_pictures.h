@@ -12,21 +12,21 @@
 
 #include "problem/problem.h"
 
-typedef struct tf_organ_view {
+typedef struct tf_report_organ_view {
     int contact;       /* site the camera looks at (>= 0) */
     double exaggerate; /* displacements drawn this many times their size (1: to scale) */
     const char *title; /* first line of the title, or NULL for the scene's name */
     double azimuth, elevation; /* camera (degrees, surface_render.h), NAN: at the site */
-} tf_organ_view;
+} tf_report_organ_view;
 
 /* The rest surface: tissue, fixed nodes (blue) and contact patches (red). */
-int tf_organ_rest_png(const char *path, const tf_problem *p, const tf_organ_view *v, char *err,
+int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_report_organ_view *v, char *err,
                       size_t errlen);
 
 /* The surface moved by u (3 per node), coloured by |u|; force is what
  * caused it (N, for the title). */
-int tf_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
-                          const double force[3], const tf_organ_view *v, char *err,
+int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
+                          const double force[3], const tf_report_organ_view *v, char *err,
                           size_t errlen);
 
 #endif /* TF_ORGAN_PICTURES_H */

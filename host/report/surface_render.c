@@ -25,7 +25,7 @@ static int far_first(const void *a, const void *b)
 }
 
 /* Camera frame: right, up, and towards the camera (right-handed). */
-static void camera(const tf_render *r, double right[3], double up[3], double toward[3])
+static void camera(const tf_report_render *r, double right[3], double up[3], double toward[3])
 {
     double az = r->azimuth * M_PI / 180, el = r->elevation * M_PI / 180;
     toward[0] = cos(el) * cos(az);
@@ -40,7 +40,7 @@ static void camera(const tf_render *r, double right[3], double up[3], double tow
 }
 
 /* Node i in camera coordinates (x right, y up, z towards the camera). */
-static void project(const tf_render *r, const double basis[3][3], size_t i, double c[3])
+static void project(const tf_report_render *r, const double basis[3][3], size_t i, double c[3])
 {
     double p[3];
     for (int a = 0; a < 3; ++a) {
@@ -53,7 +53,7 @@ static void project(const tf_render *r, const double basis[3][3], size_t i, doub
 }
 
 /* The facets to draw, far first; back faces dropped on a closed surface. */
-static facet *order(const tf_render *r, const double basis[3][3], size_t *n)
+static facet *order(const tf_report_render *r, const double basis[3][3], size_t *n)
 {
     facet *f = malloc((r->ntri + 1) * sizeof *f);
     *n = 0;
@@ -77,7 +77,7 @@ static facet *order(const tf_render *r, const double basis[3][3], size_t *n)
     return f;
 }
 
-static void settings(FILE *gp, const tf_render *r)
+static void settings(FILE *gp, const tf_report_render *r)
 {
     fprintf(gp,
             "set view 0,0,1.4,1\nset view equal xy\nunset border\nunset tics\nunset key\n"
@@ -100,7 +100,7 @@ static void settings(FILE *gp, const tf_render *r)
     fputs("'\n", gp);
 }
 
-int tf_render_png(const char *path, const tf_render *r, char *err, size_t errlen)
+int tf_report_render_png(const char *path, const tf_report_render *r, char *err, size_t errlen)
 {
     double basis[3][3];
     camera(r, basis[0], basis[1], basis[2]);

@@ -19,7 +19,7 @@
 
 #include <stddef.h>
 
-typedef struct tf_render {
+typedef struct tf_report_render {
     const double *xyz;     /* node coordinates, mm */
     const double *u;       /* displacements (3 per node) added to xyz, or NULL */
     const size_t *tri;     /* 3 node indices per triangle, counter-clockwise from outside */
@@ -34,10 +34,10 @@ typedef struct tf_render {
     double zscale;         /* vertical exaggeration (1: true shape) */
     const char *title;
     int width, height;     /* pixels */
-} tf_render;
+} tf_report_render;
 
 /* Writes the PNG (temporary file renamed on success).  Returns 0, or -1
  * with a message. */
-int tf_render_png(const char *path, const tf_render *r, char *err, size_t errlen);
+int tf_report_render_png(const char *path, const tf_report_render *r, char *err, size_t errlen);
 
 #endif /* TF_SURFACE_RENDER_H */

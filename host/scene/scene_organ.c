@@ -119,11 +119,11 @@ int sd_organ_geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
         return -1;
     }
     tf_geom_msg msg;
-    int rc = tf_mesh_geometry_build(m, &msg);
+    int rc = tf_problem_mesh_build(m, &msg);
     if (rc != TF_GEOM_OK) {
         return fail(is, field_of(rc, msg.error), "%s: %s", m->path, msg.error);
     }
-    if (tf_mesh_cloud(m, &s->cloud) != 0) {
+    if (tf_problem_mesh_cloud(m, &s->cloud) != 0) {
         return fail(is, "geometry", "out of memory");
     }
     return 0;
@@ -142,8 +142,8 @@ int sd_organ_site(const sd_site *d, const tf_problem *s, const char *path, tf_pa
     if (!finite3(d->point) || !(isfinite(d->radius) && d->radius > 0)) {
         return fail(is, where, "needs a finite point (mm) and a positive radius (mm)");
     }
-    *node = tf_mesh_nearest_vertex(m, d->point);
-    int rc = tf_mesh_site(m, *node, d->radius, p);
+    *node = tf_problem_mesh_nearest_vertex(m, d->point);
+    int rc = tf_problem_mesh_site(m, *node, d->radius, p);
     if (rc < 0) {
         return fail(is, where, "out of memory");
     }
@@ -169,7 +169,7 @@ int sd_organ_vertices(const uint32_t *v, size_t n, const tf_problem *s, const ch
         return fail(is, path, "vertices name an organ's surface vertices (geometry.surface)");
     }
     for (size_t k = 0; k < n; ++k) {
-        long i = tf_mesh_vertex_node(m, (long)v[k]);
+        long i = tf_problem_mesh_vertex_node(m, (long)v[k]);
         if (i < 0) {
             return fail(is, path,
                         "vertex %u is not a vertex of the surface read from %s (indices "

@@ -20,7 +20,7 @@
 int sd_organ_geometry(const sd_scene *doc, tf_problem *s, sd_issue *is);
 
 /* A site {point, radius} at path: the contact node is the surface vertex
- * nearest point, the patch the triangles around it (tf_mesh_site). */
+ * nearest point, the patch the triangles around it (tf_problem_mesh_site). */
 int sd_organ_site(const sd_site *d, const tf_problem *s, const char *path, tf_patch *p,
                   uint32_t *node, sd_issue *is);
 

@@ -114,7 +114,7 @@ static int organ_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o
         near_contact(s, *d->radius, o);
     } else {
         for (unsigned k = 0; k < d->vertices_count; ++k) {
-            long i = tf_mesh_vertex_node(m, (long)d->vertices[k]);
+            long i = tf_problem_mesh_vertex_node(m, (long)d->vertices[k]);
             if (i < 0) {
                 snprintf(msg, msglen, "vertex %u is not a vertex of the surface read from %s",
                          d->vertices[k], m->file);

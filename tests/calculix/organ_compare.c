@@ -107,7 +107,7 @@ static int meshless(const char *scene, const char *const *sets, size_t n_sets, c
     }
     *cand = *ref;
     for (size_t k = 0; rc == 0 && k < ref->n; ++k) {
-        long node = tf_mesh_vertex_node(m, ref->vertex[k]);
+        long node = tf_problem_mesh_vertex_node(m, ref->vertex[k]);
         if (node < 0) {
             fprintf(stderr, "organ_compare: vertex %ld is not in %s\n", ref->vertex[k], scene);
             rc = -1;
