@@ -47,3 +47,4 @@ calculix-organ-table: $(CX)/organ_compare
 check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
 	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND)) =="
 	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND)
+	@echo "ok: the liver's contact displacement and output vertices within $(ORGAN_BOUND) of CalculiX"

@@ -27,9 +27,14 @@ $(T)/organs/map-%: tests/organs/map_check.c coeffs/%.h $(B)/native/libtissuefit-
 	  -DFORWARD=tfit_$*_forward -DPFX=TFIT_$$u -DMAP=tfit_$* -DTFIT_$${u}_IMPLEMENTATION $< \
 	  $(call host_test_link,native) -o $@
 
-check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%)
-	@echo "== organ headers: output maps against the mesh files, servo budget at 1 kHz on M4F =="
+# Golden vectors of the organ headers on the Cortex-M4F (QEMU mps2-an386).
+$(foreach h,$(ORGAN_HEADERS),$(eval $(call fw_golden,$(h),m4f)))
+
+check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%) $(ORGAN_NAMES:%=$(FW)/m4f/golden-%.elf)
+	@echo "== organ headers: output maps against the mesh files, servo budget at 1 kHz on M4F, golden vectors on M4F =="
 	@set -e; for n in $(ORGAN_NAMES); do $(T)/organs/map-$$n coeffs/$$n.yaml; done
+	@set -e; for n in $(ORGAN_NAMES); do tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/golden-$$n.elf; done
+	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F"
 
 # The force of each picture: the envelope's largest, into the organ at its site.
 ORGAN_FORCE_liver := 0,0.3,0
@@ -46,9 +51,13 @@ organ-pictures: $(B)/bin/tissuefit | deps-demo
 	@mkdir -p docs/organs $(B)/organs
 	@set -e; $(foreach n,$(ORGAN_NAMES),$(call organ_picture,$(n)))
 
+# Native speed and instruction counts of the organ models (tests/bench/run.sh).
+$(foreach h,$(ORGAN_HEADERS),$(eval $(call bench_binary,$(h))))
+
 # Regeneration time of each organ header (solve, load cases, fits, header),
 # median of three runs on this machine.
-bench-organs: $(B)/bin/tissuefit
+bench-organs: $(B)/bin/tissuefit $(foreach h,$(ORGAN_HEADERS),$(B)/bench/bench-$(call fw_name,$(h)))
+	@set -e; $(foreach h,$(ORGAN_HEADERS),tests/bench/run.sh $(B)/bench/bench-$(call fw_name,$(h)) $(h) $(BENCH_CALLS);)
 	@echo "== organ headers: regeneration time (make coeffs), median of 3 runs =="
 	@set -e; for n in $(ORGAN_NAMES); do \
 	  for r in 1 2 3; do /usr/bin/time -f %e -o $(B)/organs-time-$$r $(B)/bin/tissuefit -q fit \

@@ -252,12 +252,23 @@ static int fixed_nodes(const tf_tet10_mesh *q, const tf_problem *p, unsigned cha
     return 0;
 }
 
+/* A coordinate as CalculiX reads it: a field holds at most 20 characters,
+ * so %.17g (exact) when it fits, else %.14g (1e-14 relative). */
+static const char *coordinate(double v, char *buf, size_t len)
+{
+    if (snprintf(buf, len, "%.17g", v) > 20) {
+        snprintf(buf, len, "%.14g", v);
+    }
+    return buf;
+}
+
 static void write_mesh(const tf_tet10_mesh *q)
 {
+    char a[32], b[32], c[32];
     printf("*NODE, NSET=NALL\n");
     for (size_t i = 0; i < q->nn; ++i) {
-        printf("%zu, %.17g, %.17g, %.17g\n", i + 1, q->xyz[3 * i], q->xyz[3 * i + 1],
-               q->xyz[3 * i + 2]);
+        printf("%zu, %s, %s, %s\n", i + 1, coordinate(q->xyz[3 * i], a, sizeof a),
+               coordinate(q->xyz[3 * i + 1], b, sizeof b), coordinate(q->xyz[3 * i + 2], c, sizeof c));
     }
     printf("*ELEMENT, TYPE=C3D10, ELSET=ORGAN\n");
     for (size_t e = 0; e < q->ntet; ++e) {
