@@ -8,17 +8,17 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_stomach_forward: nodal p=1, 484 output points, force [N] -> displacement [mm]
  *       4370 add, 4389 mul, 0 div per evaluation; 25220 table bytes
- *       21524 instructions; Cortex-M4F <= 30352 cycles (180.67 us at 168 MHz), Cortex-M7 ~20789 (43.31 us at 480 MHz)
+ *       9441 instructions; Cortex-M4F <= 16860 cycles (100.36 us at 168 MHz), Cortex-M7 ~13121 (27.33 us at 480 MHz)
  *       Q31 form tfit_stomach_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.91e-08 mm (float32 path: 4.62e-07)
  *       held-out error over 50 cases: max 3.87e-07 mm, rms 4.55e-08 mm
  *   tfit_stomach_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
- *       241 instructions; Cortex-M4F <= 325 cycles (1.93 us at 168 MHz), Cortex-M7 ~216 (0.45 us at 480 MHz)
+ *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_stomach_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 1.08e-08 N (float32 path: 4.19e-08)
  *       held-out error over 50 cases: max 2.98e-08 N, rms 9.66e-09 N
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
- * tfit_stomach_forward + tfit_stomach_contact take at most 30677 (18.26 % of it).
+ * tfit_stomach_forward + tfit_stomach_contact take at most 17073 (10.16 % of it).
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_STOMACH_IMPLEMENTATION before including it: that file holds
@@ -30,8 +30,8 @@
 #include "tfit.h"
 #include "tfit_q31.h"
 
-#if TFIT_API_VERSION != 3
-#error "stomach.h was generated for tfit API version 3: regenerate it with tissuefit"
+#if TFIT_API_VERSION != 4
+#error "stomach.h was generated for tfit API version 4: regenerate it with tissuefit"
 #endif
 
 /* tfit_stomach_forward */
@@ -48,21 +48,23 @@
 #define TFIT_STOMACH_FORWARD_OPS_DIV 0
 #define TFIT_STOMACH_FORWARD_OPS 8759
 #define TFIT_STOMACH_FORWARD_TABLE_BYTES 25220
-#define TFIT_STOMACH_FORWARD_INSNS_ARMV7EM 21524 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_STOMACH_FORWARD_CYCLES_M4F 30352u /* upper bound, zero-wait-state tables */
-#define TFIT_STOMACH_FORWARD_CYCLES_M4F_MIN 21571u
-#define TFIT_STOMACH_FORWARD_US_M4F_168MHZ 180.67
-#define TFIT_STOMACH_FORWARD_CYCLES_M7 20789u /* estimate, +-30 % */
-#define TFIT_STOMACH_FORWARD_US_M7_480MHZ 43.31
+#define TFIT_STOMACH_FORWARD_INSNS_ARMV7EM 9441 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_STOMACH_FORWARD_CYCLES_M4F 16860u /* upper bound, zero-wait-state tables */
+#define TFIT_STOMACH_FORWARD_CYCLES_M4F_MIN 16789u
+#define TFIT_STOMACH_FORWARD_US_M4F_168MHZ 100.36
+#define TFIT_STOMACH_FORWARD_CYCLES_M7 13121u /* estimate, +-30 % */
+#define TFIT_STOMACH_FORWARD_US_M7_480MHZ 27.33
 #define TFIT_STOMACH_FORWARD_Q31_IN_EXP 0 /* input word x = value * 2^(31 - 0), N */
 #define TFIT_STOMACH_FORWARD_Q31_OUT_EXP 7 /* output value = word * 2^(7 - 31), mm */
 #define TFIT_STOMACH_FORWARD_Q31_ADDED_ERROR_MM 9.9067e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.62287e-07 */
-#define TFIT_STOMACH_FORWARD_Q31_CRC32 0x2294729bu
+#define TFIT_STOMACH_FORWARD_Q31_CRC32 0x6c786e94u
+#define tfit_stomach_forward_q31 tfit_stomach_forward_q31_6c786e94 /* this header's version of the model */
 extern const tfit_model_q31 tfit_stomach_forward_q31;
 #define TFIT_STOMACH_FORWARD_HELDOUT_CASES 50
 #define TFIT_STOMACH_FORWARD_HELDOUT_MAX_MM 3.87383e-07
 #define TFIT_STOMACH_FORWARD_HELDOUT_RMS_MM 4.54711e-08
-#define TFIT_STOMACH_FORWARD_CRC32 0x9b48e19eu
+#define TFIT_STOMACH_FORWARD_CRC32 0xc25755c2u
+#define tfit_stomach_forward tfit_stomach_forward_c25755c2 /* this header's version of the model */
 extern const tfit_model tfit_stomach_forward;
 
 /* tfit_stomach_contact */
@@ -78,22 +80,24 @@ extern const tfit_model tfit_stomach_forward;
 #define TFIT_STOMACH_CONTACT_OPS_DIV 0
 #define TFIT_STOMACH_CONTACT_OPS 65
 #define TFIT_STOMACH_CONTACT_TABLE_BYTES 104
-#define TFIT_STOMACH_CONTACT_INSNS_ARMV7EM 241 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_STOMACH_CONTACT_CYCLES_M4F 325u /* upper bound, zero-wait-state tables */
-#define TFIT_STOMACH_CONTACT_CYCLES_M4F_MIN 261u
-#define TFIT_STOMACH_CONTACT_US_M4F_168MHZ 1.93
-#define TFIT_STOMACH_CONTACT_CYCLES_M7 216u /* estimate, +-30 % */
-#define TFIT_STOMACH_CONTACT_US_M7_480MHZ 0.45
+#define TFIT_STOMACH_CONTACT_INSNS_ARMV7EM 156 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_STOMACH_CONTACT_CYCLES_M4F 213u /* upper bound, zero-wait-state tables */
+#define TFIT_STOMACH_CONTACT_CYCLES_M4F_MIN 203u
+#define TFIT_STOMACH_CONTACT_US_M4F_168MHZ 1.27
+#define TFIT_STOMACH_CONTACT_CYCLES_M7 166u /* estimate, +-30 % */
+#define TFIT_STOMACH_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_STOMACH_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_STOMACH_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
 #define TFIT_STOMACH_CONTACT_Q31_ADDED_ERROR_N 1.08035e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.18774e-08 */
-#define TFIT_STOMACH_CONTACT_Q31_CRC32 0x1f49a08eu
+#define TFIT_STOMACH_CONTACT_Q31_CRC32 0x200888f4u
+#define tfit_stomach_contact_q31 tfit_stomach_contact_q31_200888f4 /* this header's version of the model */
 extern const tfit_model_q31 tfit_stomach_contact_q31;
 #define TFIT_STOMACH_CONTACT_HELDOUT_CASES 50
 #define TFIT_STOMACH_CONTACT_HELDOUT_MAX_N 2.98023e-08
 #define TFIT_STOMACH_CONTACT_HELDOUT_RMS_N 9.66418e-09
 #define TFIT_STOMACH_CONTACT_HELDOUT_REL_MAX 1.73828e-07
-#define TFIT_STOMACH_CONTACT_CRC32 0xb68fe469u
+#define TFIT_STOMACH_CONTACT_CRC32 0x33128287u
+#define tfit_stomach_contact tfit_stomach_contact_33128287 /* this header's version of the model */
 extern const tfit_model tfit_stomach_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_stomach_forward is
@@ -111,7 +115,7 @@ extern const float tfit_stomach_rest_file[1452];
 
 #define TFIT_STOMACH_SERVO_HZ 1000u /* the haptic loop's rate */
 #define TFIT_STOMACH_SERVO_CYCLES_M4F 168000u /* one tick at 168 MHz */
-#define TFIT_STOMACH_TICK_CYCLES_M4F 30677u /* forward + contact, upper bounds */
+#define TFIT_STOMACH_TICK_CYCLES_M4F 17073u /* forward + contact, upper bounds */
 
 #ifdef TFIT_STOMACH_IMPLEMENTATION
 
@@ -3094,9 +3098,16 @@ static const float tfit_stomach_forward_coef[5820] = {
     -0x1.333334p-57f, -0x1.5c399ep-2f, -0x1.d3827ep-2f, 0x1.92bbc8p+0f,
 };
 const tfit_model tfit_stomach_forward = {
-    3u, 1u, 484u, 1u, 5820u,
+    4u, 1u, 484u, 1u, 5820u,
     tfit_stomach_forward_dims, tfit_stomach_forward_coef, tfit_stomach_forward_nodes,
-    0x9b48e19eu
+    tfit_stomach_forward_dims + 1u, tfit_stomach_forward_coef + 5820u, tfit_stomach_forward_nodes + 484u,
+    /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
+    {0x3e74e214u, 0xbe08b943u, 0x3d6d4dd1u, 0xbd2a2ea2u, 0x3e5c8ad8u, 0xbdbb5fbdu,
+     0x3e658a09u, 0x3c3b0dbeu, 0x3e12c57bu, 0xbdf82bb2u, 0xbd0ecd48u, 0xbdb33eddu,
+     0xbe315cacu, 0xbe315cacu, 0xbe315cacu, 0xbfb065bbu, 0xc0009e2bu, 0x3fdffc71u,
+     0xefdea511u, 0xf02256abu, 0x700d5ae8u, 0xc001f357u, 0x3f8b12d0u, 0xbff61a03u,
+     0xf546c73eu, 0xfab9d30cu},
+    0xc25755c2u
 };
 static const int32_t tfit_stomach_forward_q31_coef[7273] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -6011,9 +6022,10 @@ static const int32_t tfit_stomach_forward_q31_coef[7273] = {
     34, 0, -91285112, -122554872, 422296704,
 };
 const tfit_model_q31 tfit_stomach_forward_q31 = {
-    2u, 1u, 484u, 1u, 7273u,
+    3u, 1u, 484u, 1u, 7273u,
     tfit_stomach_forward_q31_coef, tfit_stomach_forward_nodes,
-    0x2294729bu
+    tfit_stomach_forward_q31_coef + 7273u, tfit_stomach_forward_nodes + 484u,
+    0x6c786e94u
 };
 
 static const uint32_t tfit_stomach_contact_dims[1] = {
@@ -6037,9 +6049,16 @@ static const float tfit_stomach_contact_coef[24] = {
     -0x1.d9999ap-58f, -0x1.ee41fp-29f, -0x1.735d0ep-32f, 0x1.333334p-2f,
 };
 const tfit_model tfit_stomach_contact = {
-    3u, 4u, 1u, 1u, 24u,
+    4u, 4u, 1u, 1u, 24u,
     tfit_stomach_contact_dims, tfit_stomach_contact_coef, tfit_stomach_contact_nodes,
-    0xb68fe469u
+    tfit_stomach_contact_dims + 1u, tfit_stomach_contact_coef + 24u, tfit_stomach_contact_nodes + 1u,
+    /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
+    {0x3fd4f8afu, 0xbf239460u, 0x3eae01ebu, 0xbda93312u, 0x3f8211ebu, 0xbfb178f8u,
+     0x3faa2316u, 0xbe2f443bu, 0x3fa0be02u, 0xbf313fffu, 0xbc24c37cu, 0xbf43cd03u,
+     0xbf5d501cu, 0xbee57de6u, 0xbfc358b3u, 0xc16e67a2u, 0xc12bc940u, 0x41e6b92bu,
+     0xf1967460u, 0xf158d318u, 0x72119b5cu, 0xc1274084u, 0x40ea99aau, 0xc1a910c3u,
+     0x6050b030u, 0xf9975dd2u},
+    0x33128287u
 };
 static const int32_t tfit_stomach_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -6056,9 +6075,10 @@ static const int32_t tfit_stomach_contact_q31_coef[28] = {
     33, 0, -8, -1, 644245120,
 };
 const tfit_model_q31 tfit_stomach_contact_q31 = {
-    2u, 4u, 1u, 1u, 28u,
+    3u, 4u, 1u, 1u, 28u,
     tfit_stomach_contact_q31_coef, tfit_stomach_contact_nodes,
-    0x1f49a08eu
+    tfit_stomach_contact_q31_coef + 28u, tfit_stomach_contact_nodes + 1u,
+    0x200888f4u
 };
 
 const uint32_t tfit_stomach_vertex[484] = {
