@@ -36,15 +36,21 @@ check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%) $(ORGAN_NAMES:%=$(FW)/m4f/golde
 	@set -e; for n in $(ORGAN_NAMES); do tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/golden-$$n.elf; done
 	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F"
 
-# The force of each picture: the envelope's largest, into the organ at its site.
+# The force of each picture: the envelope's largest, into the organ at its
+# site; displacements drawn to scale, or magnified where a dent of a
+# millimetre or two would not show on an organ ten centimetres across (the
+# title says so).
 ORGAN_FORCE_liver := 0,0.3,0
 ORGAN_FORCE_stomach := 0,0.3,0
 ORGAN_FORCE_heart := -0.3,0,0
+ORGAN_MAGNIFY_liver := 1
+ORGAN_MAGNIFY_stomach := 5
+ORGAN_MAGNIFY_heart := 5
 
 # $(call organ_picture,NAME)
 organ_picture = $(B)/bin/tissuefit -q solve coeffs/$(1).yaml --force $(ORGAN_FORCE_$(1)) \
   -o $(B)/organs/$(1).csv --vtk $(B)/organs/$(1).vtu --png-rest docs/organs/$(1)_rest.png \
-  --png docs/organs/$(1)_deformed.png;
+  --png docs/organs/$(1)_deformed.png --exaggerate $(ORGAN_MAGNIFY_$(1));
 
 organ-pictures: $(B)/bin/tissuefit | deps-demo
 	@echo "== organ pictures: docs/organs/*_{rest,deformed}.png, $(B)/organs/*.vtu =="
