@@ -13,7 +13,9 @@
  *  - tfit_NAME_rest_mm[j] is the scene's node of the forward model's output j
  *    (as a float) and that node is the file's vertex;
  * and that the file's CRC-32 is the header's and the budget holds:
- * _TICK_CYCLES_M4F <= _SERVO_CYCLES_M4F (also a _Static_assert).
+ * _TICK_CYCLES_M4F <= _SERVO_CYCLES_M4F (also a _Static_assert); and that
+ * the tetrahedra's volume is the enclosed volume within 1 % with no
+ * interior node outside the surface.
  */
 #include <math.h>
 #include <stdio.h>
@@ -92,7 +94,15 @@ int main(int argc, char **argv)
            crc == MACRO(PFX, _MESH_CRC32) ? "matches" : "DIFFERS", MACRO(PFX, _TICK_CYCLES_M4F),
            MACRO(PFX, _SERVO_CYCLES_M4F),
            100.0 * MACRO(PFX, _TICK_CYCLES_M4F) / MACRO(PFX, _SERVO_CYCLES_M4F));
+    /* Issue 15 acceptance 2 on the shipped scene itself: the cells fill the
+     * surface (1 %) and every interior node is inside (winding number > 1/2;
+     * mesh_geometry.c refuses the scene otherwise, this states the margin). */
+    double vol = (m->tm.cells_volume - m->tm.enclosed_volume) / m->tm.enclosed_volume;
+    int filled = fabs(vol) <= 0.01 && m->min_winding > 0.5;
+    printf("%s: %zu nodes (%zu surface), %zu tetrahedra; (cells - enclosed)/enclosed %.1e; "
+           "smallest interior winding number %.6f\n",
+           sc->problem.name, m->tm.nn, m->tm.nsurf, m->tm.ntet, vol, m->min_winding);
     tf_surface_free(&file);
     tf_scene_free(sc);
-    return ok && bad == 0 ? 0 : 1;
+    return ok && bad == 0 && filled ? 0 : 1;
 }
