@@ -11,6 +11,8 @@
 #                           vertex and over the output vertices; the deck
 #                           writer's patch and counts on a coarse level
 #
+# The committed data are of the outputs within 30 mm (an earlier liver.yaml;
+# docs/validation.md §7): rerun calculix-organ for the 40 mm set.
 # A level is label:spacing:refine[:grade] (organ_deck.c): the liver's
 # surface as it is with the interior at `spacing` mm (graded to `grade` mm
 # near the contact vertex), refined `refine` times (each tetrahedron into
@@ -18,8 +20,10 @@
 # tetrahedra.
 
 ORGAN_SCENE := coeffs/liver.yaml
-ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1 g4r1:20:1:4
-ORGAN_FINEST := g4r1
+# s20r1 (537,042 unknowns) took 24 min and 3.6 GB with one thread; a graded
+# refined level (g4r1:20:1:4) would be larger still and was not run.
+ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
+ORGAN_FINEST := s20r1
 ORGAN_BOUND := 0.03
 
 .PHONY: calculix-organ calculix-organ-table check-organ-calculix
