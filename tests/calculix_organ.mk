@@ -52,3 +52,10 @@ check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
 	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND)) =="
 	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND)
 	@echo "ok: the liver's contact displacement and output vertices within $(ORGAN_BOUND) of CalculiX"
+	@echo "== the organ deck writer: s20r0 deck (its loaded faces' area = the patch's, checked) has the committed level's size =="
+	@mkdir -p $(CX)
+	@$(CX)/organ_deck $(ORGAN_SCENE) --spacing 20 --refine 0 > $(CX)/check_s20r0.inp
+	@got=$$(awk '$$1 == "**" && $$2 == "SIZE" { print $$3 "," $$4 "," $$5; exit }' $(CX)/check_s20r0.inp); \
+	  want=$$(awk -F, '$$1 == "s20r0" { print $$5 "," $$6 "," $$7 }' $(CX_DATA)/liver_runs.csv); \
+	  if [ "$$got" != "$$want" ]; then echo "organ_deck: s20r0 elements,nodes,dofs $$got, the reference's $$want"; exit 1; fi; \
+	  echo "ok: s20r0 deck: $$got elements,nodes,dofs as in $(CX_DATA)/liver_runs.csv"
