@@ -16,6 +16,7 @@ deck_tool=$1 scene=$2 work=$3 data=$4 name=$5
 shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
+. "$here/ccx_cached.sh"
 mkdir -p "$work/out"
 echo "label,spacing,refine,grade,elements,nodes,dofs,seconds,max_rss_mb" > "$work/out/${name}_runs.csv"
 for level in "$@"; do
@@ -28,18 +29,7 @@ for level in "$@"; do
     else
         "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" --grade "$grade" > "$work/$run.inp.new"
     fi
-    if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
-        rm "$work/$run.inp.new"
-        echo "calculix: $run: deck unchanged, reusing its results" >&2
-    else
-        mv "$work/$run.inp.new" "$work/$run.inp"
-        rm -f "$work/$run.dat" "$work/$run.time"
-        echo "calculix: $run: spacing $spacing mm, $refine refinement(s) ..." >&2
-        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M" -o "$run.time.new" \
-            ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
-        grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
-        mv "$work/$run.time.new" "$work/$run.time"
-    fi
+    ccx_cached "$work" "$run" "$threads" "%e %M" "spacing $spacing mm, $refine refinement(s)"
     awk -f "$here/organ_dat.awk" "$work/$run.inp" "$work/$run.dat" > "$work/out/$run.csv"
     size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5; exit }' "$work/$run.inp")
     read -r seconds kb < "$work/$run.time"

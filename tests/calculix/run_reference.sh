@@ -33,6 +33,7 @@ levels=$LEVELS nus=$NUS sweep_level=$SWEEP_LEVEL lock_level=$LOCK_LEVEL mesh_run
 point_levels=$POINT_LEVELS
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
+. "$here/ccx_cached.sh"
 mkdir -p "$work/out"
 out=$work/out
 echo "run,element,nu,divisions,layers,load,elements,nodes,dofs,threads,seconds,max_rss_mb" > "$out/runs.csv"
@@ -54,18 +55,7 @@ solve() {
     case " $* " in *" --pressure "*) load=pressure ;; *" --point "*) load=point ;; esac
     "$deck_tool" --divisions "$n" --layers "$layers" --nu "$nu" --element "$element" "$@" \
         > "$work/$run.inp.new"
-    if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
-        rm "$work/$run.inp.new"
-        echo "calculix: $run: deck unchanged, reusing its results" >&2
-    else
-        mv "$work/$run.inp.new" "$work/$run.inp"
-        rm -f "$work/$run.dat" "$work/$run.time"
-        echo "calculix: $run: ${n}x${n}x$layers $element, nu = $nu ..." >&2
-        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M $threads" -o "$run.time.new" \
-            ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
-        grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
-        mv "$work/$run.time.new" "$work/$run.time"
-    fi
+    ccx_cached "$work" "$run" "$threads" "%e %M $threads" "${n}x${n}x$layers $element, nu = $nu"
     record "$run" "$n" "$layers" "$nu" "$element" "$load"
 }
 
