@@ -16,6 +16,7 @@
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_heart_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 6.91e-09 N (float32 path: 4.01e-08)
  *       held-out error over 50 cases: max 2.98e-08 N, rms 9.62e-09 N
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0764 N/mm; largest stiffness 0.184 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
  * tfit_heart_forward + tfit_heart_contact take at most 33605 (20.00 % of it).
@@ -96,6 +97,8 @@ extern const tfit_model_q31 tfit_heart_contact_q31;
 #define TFIT_HEART_CONTACT_HELDOUT_MAX_N 2.98023e-08
 #define TFIT_HEART_CONTACT_HELDOUT_RMS_N 9.62364e-09
 #define TFIT_HEART_CONTACT_HELDOUT_REL_MAX 1.76108e-07
+#define TFIT_HEART_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0764197 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_HEART_CONTACT_STIFFNESS_MAX_N_PER_MM 0.183787 /* largest ||df/ddelta||_2 */
 #define TFIT_HEART_CONTACT_CRC32 0x6f0b3318u
 #define tfit_heart_contact tfit_heart_contact_6f0b3318 /* this header's version of the model */
 extern const tfit_model tfit_heart_contact;

@@ -16,6 +16,7 @@
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_liver_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 1.22e-08 N (float32 path: 4.12e-08)
  *       held-out error over 50 cases: max 2.98e-08 N, rms 1.01e-08 N
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0481 N/mm; largest stiffness 0.125 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
  * tfit_liver_forward + tfit_liver_contact take at most 8683 (5.17 % of it).
@@ -96,6 +97,8 @@ extern const tfit_model_q31 tfit_liver_contact_q31;
 #define TFIT_LIVER_CONTACT_HELDOUT_MAX_N 2.98023e-08
 #define TFIT_LIVER_CONTACT_HELDOUT_RMS_N 1.01174e-08
 #define TFIT_LIVER_CONTACT_HELDOUT_REL_MAX 1.32185e-07
+#define TFIT_LIVER_CONTACT_STIFFNESS_MIN_N_PER_MM 0.048051 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_LIVER_CONTACT_STIFFNESS_MAX_N_PER_MM 0.124629 /* largest ||df/ddelta||_2 */
 #define TFIT_LIVER_CONTACT_CRC32 0xfd21da8du
 #define tfit_liver_contact tfit_liver_contact_fd21da8d /* this header's version of the model */
 extern const tfit_model tfit_liver_contact;

@@ -16,6 +16,7 @@
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_stomach_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 1.08e-08 N (float32 path: 4.19e-08)
  *       held-out error over 50 cases: max 2.98e-08 N, rms 9.66e-09 N
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0713 N/mm; largest stiffness 0.264 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
  * tfit_stomach_forward + tfit_stomach_contact take at most 17073 (10.16 % of it).
@@ -96,6 +97,8 @@ extern const tfit_model_q31 tfit_stomach_contact_q31;
 #define TFIT_STOMACH_CONTACT_HELDOUT_MAX_N 2.98023e-08
 #define TFIT_STOMACH_CONTACT_HELDOUT_RMS_N 9.66418e-09
 #define TFIT_STOMACH_CONTACT_HELDOUT_REL_MAX 1.73828e-07
+#define TFIT_STOMACH_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0713355 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_STOMACH_CONTACT_STIFFNESS_MAX_N_PER_MM 0.264223 /* largest ||df/ddelta||_2 */
 #define TFIT_STOMACH_CONTACT_CRC32 0x33128287u
 #define tfit_stomach_contact tfit_stomach_contact_33128287 /* this header's version of the model */
 extern const tfit_model tfit_stomach_contact;
