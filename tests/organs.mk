@@ -5,7 +5,8 @@
 #                   budget at 1 kHz on a Cortex-M4F (tests/organs/map_check.c)
 #   organ-pictures  the organs at rest and deformed (docs/organs/*.png) and
 #                   their VTK files for ParaView (build/organs/*.vtu)
-#   bench-organs    (make bench) seconds to regenerate each organ header
+#   bench-organs    (make bench) the organ models' native speed; their
+#                   regeneration times are bench-regen's (coeffs.mk)
 #   organ-subsets   what the near-contact outputs leave out: the largest
 #                   displacement of a surface vertex that is not an output
 # The headers' held-out errors are recomputed by check-fit (coeffs.mk) and
@@ -60,15 +61,11 @@ organ-pictures: $(B)/bin/tissuefit | deps-demo
 # Native speed and instruction counts of the organ models (tests/bench/run.sh).
 $(foreach h,$(ORGAN_HEADERS),$(eval $(call bench_binary,$(h))))
 
-# Regeneration time of each organ header (solve, load cases, fits, header),
-# median of three runs on this machine.
-bench-organs: $(B)/bin/tissuefit $(foreach h,$(ORGAN_HEADERS),$(B)/bench/bench-$(call fw_name,$(h)))
+# Native speed and instruction counts of the organ models; their
+# regeneration times are in bench-regen (coeffs.mk: every shipped scene).
+bench-organs: $(foreach h,$(ORGAN_HEADERS),$(B)/bench/bench-$(call fw_name,$(h)))
+	@echo "== organ models: native speed and instructions per evaluation =="
 	@set -e; $(foreach h,$(ORGAN_HEADERS),tests/bench/run.sh $(B)/bench/bench-$(call fw_name,$(h)) $(h) $(BENCH_CALLS);)
-	@echo "== organ headers: regeneration time (make coeffs), median of 3 runs =="
-	@set -e; for n in $(ORGAN_NAMES); do \
-	  for r in 1 2 3; do /usr/bin/time -f %e -o $(B)/organs-time-$$r $(B)/bin/tissuefit -q fit \
-	    coeffs/$$n.yaml -o $(B)/bench-$$n.h; done; \
-	  printf '%-8s %s s\n' $$n $$(sort -n $(B)/organs-time-[123] | sed -n 2p); done
 
 $(T)/organs/subset_report: tests/organs/subset_report.c $(B)/native/libtissuefit-host.a \
     $(B)/native/libtfit.a | deps-build
