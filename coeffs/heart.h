@@ -11,11 +11,13 @@
  *       18671 instructions; Cortex-M4F <= 33392 cycles (198.76 us at 168 MHz), Cortex-M7 ~25988 (54.14 us at 480 MHz)
  *       Q31 form tfit_heart_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.77e-08 mm (float32 path: 5.72e-07)
  *       held-out error over 50 cases: max 4.13e-07 mm, rms 4.4e-08 mm
+ *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *   tfit_heart_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_heart_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 6.91e-09 N (float32 path: 4.01e-08)
  *       held-out error over 50 cases: max 2.98e-08 N, rms 9.62e-09 N
+ *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0764 N/mm; largest stiffness 0.184 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
