@@ -12,7 +12,7 @@
 #                           writer's patch and counts on a coarse level
 #
 # The committed data are of the outputs within 30 mm (an earlier liver.yaml;
-# docs/validation.md §7): rerun calculix-organ for the 40 mm set.
+# docs/validation.md §14): rerun calculix-organ for the 40 mm set.
 # A level is label:spacing:refine[:grade] (organ_deck.c): the liver's
 # surface as it is with the interior at `spacing` mm (graded to `grade` mm
 # near the contact vertex), refined `refine` times (each tetrahedron into
@@ -26,7 +26,7 @@ ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
 ORGAN_FINEST := s20r1
 ORGAN_BOUND := 0.03
 
-.PHONY: calculix-organ calculix-organ-table check-organ-calculix
+.PHONY: calculix-organ calculix-organ-table calculix-organ-physics check-organ-calculix
 CHECKS += check-organ-calculix
 
 $(CX)/organ_deck $(CX)/organ_compare: $(CX)/%: tests/calculix/%.c $(B)/native/libtissuefit-host.a \
@@ -38,7 +38,7 @@ $(CX)/organ_deck $(CX)/organ_compare: $(CX)/%: tests/calculix/%.c $(B)/native/li
 
 calculix-organ: $(CX)/organ_deck | deps-calculix
 	$(Q)tests/calculix/run_organ.sh $< $(ORGAN_SCENE) $(CX)/organ $(CX_DATA) liver $(ORGAN_LEVELS)
-	@$(MAKE) --no-print-directory calculix-organ-table
+	@$(MAKE) --no-print-directory calculix-organ-physics calculix-organ-table
 
 calculix-organ-table: $(CX)/organ_compare
 	@mkdir -p $(CX)
@@ -59,3 +59,17 @@ check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
 	  want=$$(awk -F, '$$1 == "s20r0" { print $$5 "," $$6 "," $$7 }' $(CX_DATA)/liver_runs.csv); \
 	  if [ "$$got" != "$$want" ]; then echo "organ_deck: s20r0 elements,nodes,dofs $$got, the reference's $$want"; exit 1; fi; \
 	  echo "ok: s20r0 deck: $$got elements,nodes,dofs as in $(CX_DATA)/liver_runs.csv"
+
+# The finest level in tissuefit fit --reference's form (docs/fitting.md,
+# "Error against the physics"): an index liver_physics.csv and one
+# node,x,y,z,ux,uy,uz file per unit force (node: the file's vertex index),
+# so the liver's header states its solve's error against CalculiX
+# (coeffs/coeffs.mk, PHYSICS_liver).  Rewritten by calculix-organ.
+calculix-organ-physics:
+	@set -e; d=$(CX_DATA); { echo "fx,fy,fz,file"; echo "1,0,0,liver_physics_fx.csv"; \
+	  echo "0,1,0,liver_physics_fy.csv"; echo "0,0,1,liver_physics_fz.csv"; } > $$d/liver_physics.csv; \
+	  for c in fx fy fz; do \
+	    awk -F, -v c=$$c 'NR == 1 { print "node,x,y,z,ux,uy,uz"; next } \
+	      $$5 == c { print $$1 "," $$2 "," $$3 "," $$4 "," $$6 "," $$7 "," $$8 }' \
+	      $$d/liver_$(ORGAN_FINEST).csv > $$d/liver_physics_$$c.csv; done
+	@echo "wrote $(CX_DATA)/liver_physics.csv and its three cases from liver_$(ORGAN_FINEST).csv"

@@ -23,6 +23,7 @@
 #include "report/organ_pictures.h"
 #include "report/surface_render.h"
 #include "scene/scene.h"
+#include "solvers/probe.h"
 #include "solvers/solver.h"
 
 #define META_COLUMNS 8 /* tick, fx, fy, fz, status, contact fx, fy, fz */
@@ -120,7 +121,7 @@ static void effective_force(const tf_envelope *e, const double *in, double f[3])
  * ascending x: gnuplot draws the blocks as a surface. */
 typedef struct row_key {
     double x, y;
-    uint32_t node;
+    size_t out;
 } row_key;
 
 static int by_row(const void *a, const void *b)
@@ -132,35 +133,44 @@ static int by_row(const void *a, const void *b)
     return (p->x > q->x) - (p->x < q->x);
 }
 
-/* The output nodes in row order, or NULL when out of memory. */
-static uint32_t *rows_of(const tf_outputs *o, const double *xyz)
+/* The rest position of output j: its point, or its node. */
+static const double *output_at(const tf_problem *s, const double *xyz, size_t j)
 {
-    row_key *key = malloc((o->n_nodes + 1) * sizeof *key);
-    uint32_t *order = malloc((o->n_nodes + 1) * sizeof *order);
+    const tf_outputs *o = &s->outputs;
+    return o->points ? o->points + 3 * j : xyz + 3 * (size_t)o->nodes[j];
+}
+
+/* The outputs in row order, or NULL when out of memory. */
+static size_t *rows_of(const tf_problem *s, const double *xyz)
+{
+    const size_t n = s->outputs.n_nodes;
+    row_key *key = malloc((n + 1) * sizeof *key);
+    size_t *order = malloc((n + 1) * sizeof *order);
     if (key == NULL || order == NULL) {
         free(key);
         free(order);
         return NULL;
     }
-    for (size_t j = 0; j < o->n_nodes; ++j) {
-        const double *x = xyz + 3 * (size_t)o->nodes[j];
-        key[j] = (row_key){.x = x[0], .y = x[1], .node = o->nodes[j]};
+    for (size_t j = 0; j < n; ++j) {
+        const double *x = output_at(s, xyz, j);
+        key[j] = (row_key){.x = x[0], .y = x[1], .out = j};
     }
-    qsort(key, o->n_nodes, sizeof *key, by_row);
-    for (size_t j = 0; j < o->n_nodes; ++j) {
-        order[j] = key[j].node;
+    qsort(key, n, sizeof *key, by_row);
+    for (size_t j = 0; j < n; ++j) {
+        order[j] = key[j].out;
     }
     free(key);
     return order;
 }
 
-/* Triangles over the output points sorted into rows (rows_of): two per
- * quadrilateral between equal-length neighbouring rows.  Returns the
- * count, 0 when the rows do not form a grid, or -1 when out of memory. */
-static long grid_triangles(const uint32_t *order, size_t n, const double *xyz, size_t **tri)
+/* Triangles over the outputs sorted into rows (rows_of; x holds the
+ * outputs' rest positions): two per quadrilateral between equal-length
+ * neighbouring rows.  Returns the count, 0 when the rows do not form a
+ * grid, or -1 when out of memory. */
+static long grid_triangles(const size_t *order, size_t n, const double *x, size_t **tri)
 {
     size_t row = 0;
-    while (row < n && xyz[3 * (size_t)order[row] + 1] == xyz[3 * (size_t)order[0] + 1]) {
+    while (row < n && x[3 * order[row] + 1] == x[3 * order[0] + 1]) {
         row++;
     }
     if (row < 2 || n % row != 0 || n / row < 2) {
@@ -184,55 +194,60 @@ static long grid_triangles(const uint32_t *order, size_t n, const double *xyz, s
 }
 
 /* The deformed output surface in depth order (report/surface_render.h): an
- * organ's whole surface, or a box's grid of output points with the
+ * organ's whole surface from the nodal field u, or a box's grid of outputs
+ * (nodes, or points between them) from their displacements v, with the
  * vertical exaggerated 4 times so that a dent of a few millimetres shows. */
 static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
-                const double *u, size_t tick, const double f[3], int contact)
+                const double *u, const double *v, size_t tick, const double f[3], int contact)
 {
     char err[512], title[256];
     if (tf_problem_mesh(s) != NULL) {
-        tf_report_organ_view v = {.contact = contact, .exaggerate = 1, .azimuth = NAN, .elevation = NAN};
-        if (tf_report_organ_deformed_png(png, s, u, f, &v, err, sizeof err) != 0) {
+        tf_report_organ_view ov = {.contact = contact, .exaggerate = 1, .azimuth = NAN,
+                                   .elevation = NAN};
+        if (tf_report_organ_deformed_png(png, s, u, f, &ov, err, sizeof err) != 0) {
             tf_error(ctx, "replay: %s", err);
             return -1;
         }
         return 0;
     }
     const double *xyz = tf_solver_coords(solver);
-    const size_t n = s->outputs.n_nodes, nn = tf_solver_node_count(solver);
-    uint32_t *order = rows_of(&s->outputs, xyz);
-    size_t *tri = NULL;
-    double *uz = malloc((nn + 1) * sizeof *uz);
-    long nt = order && uz ? grid_triangles(order, n, xyz, &tri) : -1;
+    const size_t n = s->outputs.n_nodes;
+    size_t *order = rows_of(s, xyz), *tri = NULL;
+    double *x = malloc((3 * n + 1) * sizeof *x), *uz = malloc((n + 1) * sizeof *uz);
+    for (size_t j = 0; x != NULL && j < n; ++j) {
+        memcpy(x + 3 * j, output_at(s, xyz, j), 3 * sizeof *x);
+    }
+    long nt = order && x && uz ? grid_triangles(order, n, x, &tri) : -1;
     if (nt <= 0) {
         tf_error(ctx, "replay: %s", nt < 0 ? "out of memory"
                                            : "--png draws output points that form a grid of rows");
         free(order);
+        free(x);
         free(uz);
         return -1;
     }
     double lo = 0, hi = 0;
-    for (size_t i = 0; i < nn; ++i) {
-        uz[i] = u[3 * i + 2];
-    }
     for (size_t j = 0; j < n; ++j) {
-        lo = fmin(lo, uz[order[j]]);
-        hi = fmax(hi, uz[order[j]]);
+        uz[j] = v[3 * j + 2];
+        lo = fmin(lo, uz[j]);
+        hi = fmax(hi, uz[j]);
     }
     snprintf(title, sizeof title,
              "deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N (the solve; "
              "displacements to scale, vertical x4)",
              tick, f[0], f[1], f[2]);
-    tf_report_render r = {.xyz = xyz, .u = u, .tri = tri, .ntri = (size_t)nt, .closed = 0,
-                   .value = uz, .vmin = lo, .vmax = hi > lo ? hi : lo + 1e-9,
-                   .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
-                   .elevation = 35, .zscale = 4, .title = title, .width = 1000, .height = 750};
+    tf_report_render r = {.xyz = x, .u = v, .tri = tri, .ntri = (size_t)nt, .closed = 0,
+                          .value = uz, .vmin = lo, .vmax = hi > lo ? hi : lo + 1e-9,
+                          .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
+                          .elevation = 35, .zscale = 4, .title = title, .width = 1000,
+                          .height = 750};
     int rc = tf_report_render_png(png, &r, err, sizeof err);
     if (rc != 0) {
         tf_error(ctx, "replay: %s", err);
     }
     free(order);
     free(tri);
+    free(x);
     free(uz);
     return rc;
 }
@@ -257,16 +272,25 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
             effective_force(&s->envelope, row + 1, forces + 3 * i);
         }
     }
-    if (tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) != 0) {
-        tf_error(ctx, "replay: %s", ctx->err);
+    /* the solve's displacements at the outputs (nodes, or points between them) */
+    double *v = malloc(t->n * 3 * n_out * sizeof *v);
+    int rc = v ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) : -1;
+    for (size_t i = 0; rc == 0 && i < t->n; ++i) {
+        rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
+                              sizeof ctx->err);
+    }
+    if (rc != 0) {
+        tf_error(ctx, "replay: %s", v ? ctx->err : "out of memory");
         free(forces);
         free(u);
+        free(v);
         return TF_EXIT_FAIL;
     }
     double worst = 0, deepest = -1;
-    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0;
+    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0;
+    size_t first_bad = 0;
     for (size_t i = 0; i < t->n; ++i) {
-        const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *ui = u + i * dofs;
+        const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *vi = v + i * 3 * n_out;
         for (size_t j = 0; j < n_out; ++j) {
             for (int k = 0; k < 3; ++k) {
                 double logged = out[3 * j + (size_t)k];
@@ -274,7 +298,13 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
                     bad_zero += logged != 0;
                     continue;
                 }
-                double e = fabs(logged - ui[3 * (size_t)s->outputs.nodes[j] + (size_t)k]);
+                /* A NaN compares false with any bound: counted, never
+                 * silently skipped (it would hide behind a small maximum). */
+                double e = fabs(logged - vi[3 * j + (size_t)k]);
+                if (!isfinite(e)) {
+                    first_bad = not_finite++ ? first_bad : i;
+                    continue;
+                }
                 if (e > worst) {
                     worst = e;
                     worst_tick = i;
@@ -290,10 +320,15 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
-    int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
+    if (not_finite > 0) {
+        tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
+                 "tick %zu): the deviation above covers only the finite ones",
+                 not_finite, first_bad);
+    }
+    rc = bad_zero || not_finite ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick,
-                  contact) == 0
+        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, v + deep_tick * 3 * n_out, deep_tick,
+                  forces + 3 * deep_tick, contact) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {
@@ -302,6 +337,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     }
     free(forces);
     free(u);
+    free(v);
     return rc;
 }
 
@@ -335,6 +371,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     if (optind + 1 != argc || csv == NULL) {
         tf_error(ctx, "replay: expected one scene file and --ticks FILE.csv");
+        tf_sets_free(&sets);
+        return TF_EXIT_USAGE;
+    }
+    if (tf_cmd_outputs(ctx, "replay", &png, 1) != 0) {
         tf_sets_free(&sets);
         return TF_EXIT_USAGE;
     }

@@ -1,34 +1,49 @@
 /*
  * cmd_solve.c — `tissuefit solve`: one load case of a scene, every node's
- * displacement to CSV (and VTU for ParaView).
+ * displacement to CSV (and VTU for ParaView); with a `history:` section, a
+ * time series (CSV per step, ParaView .pvd + .vtu).
  */
 #include <getopt.h>
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/atomic_file.h"
+#include "base/log.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "report/displacement_out.h"
-#include "report/organ_pictures.h"
 #include "base/log.h"
 #include "base/plot.h"
+#include "report/organ_pictures.h"
+#include "report/time_series.h"
 #include "scene/scene.h"
+#include "solvers/probe.h"
+#include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
+
+/* ParaView files a time series may write (each its own .vtu). */
+#define MAX_VTU_STEPS 1000
 
 static void help(FILE *out)
 {
     fprintf(out,
             "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
-            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n"
-            "                       [--png FILE.png] [--png-rest FILE.png] [--exaggerate K]\n"
-            "                       [--view AZ,EL]\n\n"
-            "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
-            "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
-            "The scene's loads always act; --force adds a force (N) at a contact site,\n"
-            "spread as the site's patch says.\n\n"
+            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu|.pvd]\n"
+            "                       [--outputs FILE.csv] [--png FILE.png] [--png-rest FILE.png]\n"
+            "                       [--exaggerate K] [--view AZ,EL]\n\n"
+            "Solves the scene with its solver (solver.method: RPIM or EFG Galerkin) and\n"
+            "material law, and writes every node's displacement as CSV: header\n"
+            "node,x,y,z,ux,uy,uz, mm, %%.17g.  The scene's loads always act; --force adds a\n"
+            "force (N) at a contact site, spread as the site's patch says.  A nonlinear\n"
+            "law is solved by Newton's method; a Kelvin law without a history gives the\n"
+            "fully relaxed equilibrium.\n\n"
+            "With a history: section (docs/scene-format.md) the solve follows it in time:\n"
+            "the CSV then holds step,time,node,x,y,z,ux,uy,uz for every step, and --vtk\n"
+            "FILE.pvd writes a ParaView time series (FILE.pvd and FILE_NNNN.vtu, at most\n"
+            "%d steps); --force replaces history.force.\n\n"
             "Options:\n"
             "  --force FX,FY,FZ   force at the contact site, N\n"
             "  --contact NAME     which contact site (default: the first)\n"
@@ -36,18 +51,23 @@ static void help(FILE *out)
             "                     (repeatable; see docs/scene-format.md)\n"
             "  -o, --out FILE     CSV file (default: standard output)\n"
             "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n"
+            "  --outputs FILE     also write the scene's outputs (nodes, or points between\n"
+            "                     nodes through the shape functions) as\n"
+            "                     output,x,y,z,ux,uy,uz\n"
             "  --png FILE.png     an organ: its surface deformed by the solve (needs gnuplot)\n"
             "  --png-rest FILE.png  an organ at rest with its fixed region and contact sites\n"
             "  --exaggerate K     draw displacements K times their size (default 1: to scale)\n"
             "  --view AZ,EL       camera azimuth about +z from +x and elevation, degrees\n"
             "                     (default: facing the contact site, turned 35 and raised 20)\n\n"
             "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
-            "Exit status: 0 ok, 1 the solve failed, 2 bad usage or a bad scene (nothing\n"
-            "written then).\n");
+            "Exit status: 0 ok, 1 the solve failed (Newton's method did not converge, a\n"
+            "point inverted: the message names the load step, the force and the place),\n"
+            "2 bad usage or a bad scene (nothing written then).\n",
+            MAX_VTU_STEPS);
 }
 
 typedef struct solve_args {
-    const char *scene, *out, *vtk, *contact, *png, *png_rest;
+    const char *scene, *out, *vtk, *contact, *outputs, *png, *png_rest;
     double force[3], exaggerate, view[2];
     int has_force;
     tf_sets sets;
@@ -60,6 +80,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                                          {"set", required_argument, NULL, 's'},
                                          {"out", required_argument, NULL, 'o'},
                                          {"vtk", required_argument, NULL, 'v'},
+                                         {"outputs", required_argument, NULL, 'O'},
                                          {"png", required_argument, NULL, 'p'},
                                          {"png-rest", required_argument, NULL, 'r'},
                                          {"exaggerate", required_argument, NULL, 'x'},
@@ -91,6 +112,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
             break;
         case 'v':
             a->vtk = optarg;
+            break;
+        case 'O':
+            a->outputs = optarg;
             break;
         case 'p':
             a->png = optarg;
@@ -130,9 +154,20 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
 /* The contact site the force goes to, or -1 when there is no force. */
 static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 {
-    if (!a->has_force) {
+    if (s->history.present && !a->has_force && !a->contact) {
+        return s->history.contact;
+    }
+    if (!a->has_force && !s->history.present) {
         if (a->contact) {
             tf_error(ctx, "solve: --contact without --force");
+            return -2;
+        }
+        if (tf_problem_unloaded(s)) {
+            /* The answer would be zero everywhere: almost surely a forgotten --force. */
+            tf_error(ctx,
+                     "solve: %s: nothing loads the body (no --force, no loads and no "
+                     "prescribed displacement in the scene): give --force FX,FY,FZ",
+                     a->scene);
             return -2;
         }
         return -1;
@@ -141,7 +176,7 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
         tf_error(ctx, "solve: %s has no contact site for --force", a->scene);
         return -2;
     }
-    int k = a->contact ? tf_problem_contact(s, a->contact) : 0;
+    int k = a->contact ? tf_problem_contact(s, a->contact) : s->history.present ? s->history.contact : 0;
     if (k < 0) {
         tf_error(ctx, "solve: %s has no contact site '%s'", a->scene, a->contact);
         return -2;
@@ -149,40 +184,46 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return k;
 }
 
-/* Both files go to temporaries first, so a failure leaves neither. */
-static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u)
+/* The displacement field for ParaView: an organ on its tetrahedra, a box
+ * on its grid. */
+static void write_vtu(FILE *fp, const tf_problem *p, const double *u)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m != NULL) {
+        tf_report_vtu_displacements_tets(fp, &p->cloud, m->tm.tet, m->tm.ntet, u);
+    } else {
+        tf_report_vtu_displacements(fp, &p->cloud, u);
+    }
+}
+
+/* The files go to temporaries first, so a failure leaves none of them. */
+static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u,
+                         const double *at_outputs)
 {
     char err[512];
-    tf_afile csv, vtu;
-    if (a->out && tf_afile_open(&csv, a->out, err, sizeof err) != 0) {
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
-    }
-    if (a->vtk && tf_afile_open(&vtu, a->vtk, err, sizeof err) != 0) {
-        if (a->out) {
-            tf_afile_abort(&csv);
-        }
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
-    }
-    tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
-    if (a->vtk) {
-        const tf_mesh_geometry *m = tf_problem_mesh(s);
-        if (m != NULL) {
-            tf_report_vtu_displacements_tets(vtu.fp, &s->cloud, m->tm.tet, m->tm.ntet, u);
-        } else {
-            tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
-        }
-    }
+    const char *path[3] = {a->out, a->vtk, a->outputs};
+    tf_afile f[3], *files[3];
+    size_t n = 0;
     int rc = 0;
-    if (a->out) {
-        rc = tf_afile_commit(&csv, err, sizeof err);
+    for (int k = 0; k < 3 && rc == 0; ++k) {
+        if (path[k] && tf_afile_open(&f[k], path[k], err, sizeof err) != 0) {
+            rc = -1;
+        } else if (path[k]) {
+            files[n++] = &f[k];
+        }
     }
-    if (a->vtk) {
-        if (rc == 0) {
-            rc = tf_afile_commit(&vtu, err, sizeof err);
-        } else {
-            tf_afile_abort(&vtu);
+    if (rc == 0) {
+        tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
+        if (a->vtk) {
+            write_vtu(f[1].fp, s, u);
+        }
+        if (a->outputs) {
+            tf_report_csv_outputs(f[2].fp, s, at_outputs);
+        }
+        rc = tf_afile_commit_all(files, n, err, sizeof err);
+    } else {
+        while (n > 0) { /* reverse order of opening (atomic_file.h) */
+            tf_afile_abort(files[--n]);
         }
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
@@ -209,6 +250,70 @@ static int pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s, int c
     return TF_EXIT_OK;
 }
 
+static int ends_with(const char *s, const char *tail)
+{
+    size_t n = strlen(s), m = strlen(tail);
+    return n >= m && strcmp(s + n - m, tail) == 0;
+}
+
+/* The .vtu file of step k beside base.pvd: base_NNNN.vtu (its full path,
+ * and its name relative to the .pvd). */
+static void vtu_name(const char *pvd, size_t k, char *path, size_t len, const char **name)
+{
+    snprintf(path, len, "%.*s_%04zu.vtu", (int)(strlen(pvd) - 4), pvd, k + 1);
+    const char *slash = strrchr(path, '/');
+    *name = slash ? slash + 1 : path;
+}
+
+/* Every file of a time series, all or none. */
+static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, size_t n,
+                        const double *t, const double *u)
+{
+    char err[512];
+    size_t nf = (a->out ? 1 : 0) + (a->vtk ? n + 1 : 0), k = 0;
+    tf_afile *f = calloc(nf + 1, sizeof *f);
+    char(*paths)[4200] = calloc(n + 1, sizeof *paths);
+    const char **names = calloc(n + 1, sizeof *names);
+    int rc = f && paths && names ? 0 : -1;
+    if (rc != 0) {
+        snprintf(err, sizeof err, "out of memory");
+    }
+    if (rc == 0 && a->out && (rc = tf_afile_open(&f[k], a->out, err, sizeof err)) == 0) {
+        tf_report_series_csv(f[k++].fp, &p->cloud, n, t, u);
+    }
+    for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
+        vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
+        if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0) {
+            write_vtu(f[k++].fp, p, u + 3 * p->cloud.n * s);
+        }
+    }
+    if (rc == 0 && a->vtk && (rc = tf_afile_open(&f[k], a->vtk, err, sizeof err)) == 0) {
+        tf_report_series_pvd(f[k++].fp, n, t, names);
+    }
+    if (rc == 0 && !a->out) {
+        tf_report_series_csv(stdout, &p->cloud, n, t, u);
+        rc = fflush(stdout) == 0 ? 0 : -1;
+        if (rc != 0) {
+            snprintf(err, sizeof err, "cannot write to standard output");
+        }
+    }
+    for (size_t q = 0; q < k; ++q) { /* every temporary written: rename them all */
+        if (rc == 0) {
+            rc = tf_afile_commit(&f[q], err, sizeof err);
+        } else {
+            tf_afile_abort(&f[q]);
+        }
+    }
+    free(f);
+    free(paths);
+    free(names);
+    if (rc != 0) {
+        tf_error(ctx, "solve: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    return TF_EXIT_OK;
+}
+
 /* --png and --png-rest draw organs around a contact site, with gnuplot. */
 static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 {
@@ -220,6 +325,11 @@ static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
                       "contact site");
         return -1;
     }
+    if (s->history.present) {
+        tf_error(ctx, "solve: --png and --png-rest draw one solve, not a history (use --vtk "
+                      "FILE.pvd)");
+        return -1;
+    }
     if (!tf_plot_available()) {
         tf_error(ctx, "solve: --png needs gnuplot with the pngcairo terminal (gnuplot-nox)");
         return -1;
@@ -227,11 +337,76 @@ static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return 0;
 }
 
+/* The problem's history, step by step: a nonlinear solver advances its
+ * state; the linear one solves each step's force (the scene's loads act
+ * throughout). */
+static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf_solver *sv,
+                       int contact)
+{
+    tf_history h = p->history;
+    if (a->has_force) {
+        if (h.table) {
+            tf_error(ctx, "solve: %s: its history has a table of forces: no --force", a->scene);
+            return TF_EXIT_USAGE;
+        }
+        memcpy(h.force, a->force, sizeof h.force);
+    }
+    tf_samples smp;
+    if (tf_history_sample(&h, &smp) != 0) {
+        tf_error(ctx, "solve: out of memory");
+        return TF_EXIT_FAIL;
+    }
+    if (a->vtk && smp.n > MAX_VTU_STEPS) {
+        tf_error(ctx, "solve: %zu steps: --vtk writes at most %d (raise history.dt)", smp.n,
+                 MAX_VTU_STEPS);
+        tf_samples_free(&smp);
+        return TF_EXIT_USAGE;
+    }
+    size_t n3 = 3 * p->cloud.n;
+    double *u = malloc(n3 * smp.n * sizeof *u);
+    tf_nonlinear_info info;
+    int nonlinear = tf_nonlinear_info_of(sv, &info) == 0, rc = u ? 0 : -1;
+    double t0 = omp_get_wtime(), shown = t0, prev = 0;
+    if (nonlinear) {
+        tf_nonlinear_reset(sv);
+    }
+    for (size_t k = 0; k < smp.n && rc == 0; ++k) {
+        double *uk = u + n3 * k;
+        if (nonlinear) {
+            rc = tf_nonlinear_advance(sv, smp.scale[k], contact, smp.force[k], smp.t[k] - prev);
+            rc = rc == 0 ? tf_nonlinear_displacements(sv, uk) : rc;
+        } else {
+            rc = tf_solver_solve(sv, contact, (const double(*)[3])smp.force[k], 1, NULL, uk);
+        }
+        prev = smp.t[k];
+        double now = omp_get_wtime();
+        if (rc == 0 && now - shown > 1) {
+            tf_info(ctx, "solve: step %zu of %zu, t = %g s (%.0f s so far)", k + 1, smp.n,
+                    smp.t[k], now - t0);
+            shown = now;
+        }
+    }
+    if (rc != 0) {
+        tf_error(ctx, "solve: %s: %s", a->scene, u ? ctx->err : "out of memory");
+        free(u);
+        tf_samples_free(&smp);
+        return TF_EXIT_FAIL;
+    }
+    tf_solver_report(sv);
+    int out = write_series(ctx, a, p, smp.n, smp.t, u);
+    free(u);
+    tf_samples_free(&smp);
+    return out;
+}
+
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {.exaggerate = 1, .view = {NAN, NAN}};
     tf_scene *s = NULL;
-    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
+    if (parse(ctx, argc, argv, &a) != 0 ||
+        tf_cmd_outputs(ctx, "solve", (const char *[]){a.out, a.vtk, a.outputs, a.png, a.png_rest},
+                       5) != 0 ||
+        (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }
@@ -242,19 +417,32 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }
+    if (a.vtk && !ends_with(a.vtk, p->history.present ? ".pvd" : ".vtu")) {
+        tf_error(ctx, "solve: --vtk %s: %s", a.vtk,
+                 p->history.present ? "a time series is a .pvd file (with .vtu files beside it)"
+                                    : "a .vtu file");
+        tf_scene_free(s);
+        return TF_EXIT_USAGE;
+    }
     int rc = TF_EXIT_FAIL;
     tf_solver *sv = tf_solver_create(p, NULL, ctx);
     double *u = malloc(3 * p->cloud.n * sizeof *u);
-    if (sv == NULL || u == NULL) {
+    double *v = malloc(3 * p->outputs.n_nodes * sizeof *v);
+    if (sv != NULL && u != NULL && v != NULL && p->history.present) {
+        rc = run_history(ctx, &a, p, sv, contact);
+    } else if (sv == NULL || u == NULL || v == NULL) {
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
+    } else if (a.outputs && tf_solver_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
+        tf_error(ctx, "solve: %s: outputs: %s", a.scene, ctx->err);
     } else {
         tf_solver_report(sv);
-        rc = write_outputs(ctx, &a, p, u);
+        rc = write_outputs(ctx, &a, p, u, v);
         rc = rc == TF_EXIT_OK ? pictures(ctx, &a, p, contact, u) : rc;
     }
     free(u);
+    free(v);
     tf_solver_destroy(sv);
     tf_scene_free(s);
     return rc;

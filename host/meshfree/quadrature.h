@@ -27,16 +27,19 @@ typedef struct tf_tet_locator {
     uint32_t *items; /* tetrahedron indices, ascending within a bin */
 } tf_tet_locator;
 
-/* Background cells: a box split into cells[0] x cells[1] x cells[2] equal
- * cells with gauss^3 points each; or, after tf_cells_use_tets, the
- * tetrahedra of an organ's mesh with a symmetric Gauss rule each
- * (geometry/simplex_rules.h). */
+/* Background cells: a box split into cells[0] x cells[1] x cells[2] cells
+ * with gauss^3 points each; equal cells, or on a graded cloud cells that
+ * follow its grid lines (edges equidistant in the cloud's index space, so
+ * one cell per grid interval when there are grid - 1 cells); or, after
+ * tf_cells_use_tets, the tetrahedra of an organ's mesh with a symmetric
+ * Gauss rule each (geometry/simplex_rules.h). */
 typedef struct tf_cells {
     double lo[3];
-    double size[3];    /* one cell, mm */
+    double size[3];    /* one cell, mm (equal cells); the mean cell (graded) */
     unsigned n[3];
     unsigned gauss;
     double gx[TF_GAUSS_MAX], gw[TF_GAUSS_MAX];
+    double *edge[3];   /* graded: n[a] + 1 cell edges per axis, ascending; NULL: equal cells */
     const double *tet_xyz; /* tetrahedral cells: node coordinates (borrowed), or NULL */
     const size_t *tet;     /* 4 node indices per cell (borrowed) */
     size_t ntet;
@@ -46,6 +49,16 @@ typedef struct tf_cells {
 
 int tf_cells_init(tf_cells *c, const double lo[3], const double hi[3], const unsigned n[3],
                   unsigned gauss);
+/* Cells over a cloud's box: equal cells on a uniform cloud (tf_cells_init),
+ * graded ones on a graded cloud.  Returns 0, or -1 (bad gauss, out of
+ * memory). */
+int tf_cells_init_cloud(tf_cells *c, const tf_cloud *cloud, const unsigned n[3], unsigned gauss);
+/* Frees a graded box's cell edges and what tf_cells_use_tets allocated. */
+void tf_cells_free(tf_cells *c);
+/* The cell index along axis a that holds coordinate x (clamped). */
+unsigned tf_cells_slab(const tf_cells *c, int a, double x);
+/* The smallest cell size along axis a, mm. */
+double tf_cells_min_size(const tf_cells *c, int a);
 static inline size_t tf_cells_count(const tf_cells *c)
 {
     return c->tet ? c->ntet : (size_t)c->n[0] * c->n[1] * c->n[2];
@@ -60,8 +73,6 @@ static inline size_t tf_cells_points(const tf_cells *c)
  * or -1 (bad degree, out of memory). */
 int tf_cells_use_tets(tf_cells *c, const double *xyz, const size_t *tet, size_t ntet,
                       unsigned degree);
-/* Frees what tf_cells_use_tets allocated (nothing for box cells). */
-void tf_cells_free(tf_cells *c);
 /* Tetrahedral cells: the one holding x (the most interior when x lies on
  * shared faces; the nearest by barycentric coordinates when x is outside
  * every one). */

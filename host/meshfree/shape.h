@@ -7,7 +7,9 @@
  * 001), with the same output per point (nodes, phi, dphi).
  *
  * Two choices of support domain, both an ellipsoid of semi-axes
- * alpha_s x nodal spacing per axis (on an organ's tetrahedra: a ball of
+ * alpha_s x the local nodal spacing per axis, i.e. a ball of radius alpha_s
+ * in the cloud's index space (nodes.h), so that a graded cloud's supports
+ * hold as many nodes as a uniform one's (on an organ's tetrahedra: a ball of
  * radius alpha_s x the local spacing, tf_shape_use_tets) (EFG: every node's own domain of
  * influence, alpha_s x its local spacing; a support is then the set of
  * nodes whose domain reaches the point, or the cell):
@@ -17,6 +19,13 @@
  *   cell:  centred at the centre of the background cell holding the point;
  *          every point of a cell shares one node set and one factorised
  *          local system, which makes assembly several times faster.
+ *
+ * The multiquadric's length alpha_c d_c (rpim.h) is fixed (an absolute d_c,
+ * the seed's) or d_c = d_c_spacings x h, h the local nodal spacing of the
+ * support: the geometric mean of the grid intervals around its centre
+ * (tf_cloud_local_spacing; on an organ's tetrahedra the distance to the
+ * TF_LOCAL_K-th nearest node of the cell's centroid), so that the basis
+ * keeps its shape relative to the nodes when the grid is refined or graded.
  */
 #ifndef TF_SHAPE_H
 #define TF_SHAPE_H
@@ -32,9 +41,11 @@
 
 typedef struct tf_shape {
     const tf_cloud *cloud;
-    tf_rpim rpim;
-    tf_nbr nbr;
-    double radius[3];  /* support semi-axes, mm */
+    tf_rpim rpim;      /* shape: alpha_c d_c for an absolute d_c */
+    double alpha_c, d_c_spacings; /* d_c_spacings > 0: d_c = d_c_spacings x local spacing */
+    tf_nbr nbr;        /* RPIM on a box: over the nodes' index coordinates xi; EFG, tets: mm */
+    double *xi;        /* RPIM: 3 n index coordinates (nodes.h), NULL after tf_shape_use_efg/_tets */
+    double radius[3];  /* support semi-axes, mm (nominal spacing) */
     double scale;      /* largest semi-axis: distances are divided by it */
     tf_cells cells;
     tf_support_centre centre;
@@ -42,6 +53,7 @@ typedef struct tf_shape {
     double support;      /* alpha_s */
     double *mls_radius;  /* EFG: 3 n radii of influence, mm; NULL for RPIM */
     double *cell_radius; /* tetrahedral cells: each one's support radius, mm; NULL otherwise */
+    double *cell_spacing; /* tetrahedral cells: each one's local spacing h, mm (d_c = spacings x h) */
 } tf_shape;
 
 /* Conditioning and size of the local systems met by one worker. */
@@ -91,8 +103,10 @@ void tf_shape_free(tf_shape *sh);
  * given degree, and sizes supports from the local spacing: every Gauss
  * point of a tetrahedron has the ball of radius alpha_s x the local
  * spacing at the tetrahedron's centroid (capped, TF_SUPPORT_CAP), centred
- * at the point or at the centroid (o->centre).  Returns 0, or -1 with a
- * message. */
+ * at the point or at the centroid (o->centre); a relative d_c
+ * (solver.rbf.spacings) is that many times the same local spacing.  The
+ * neighbour grid is rebuilt in mm.  RPIM only (EFG is refused).  Returns 0,
+ * or -1 with a message. */
 int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
                       size_t errlen);
 

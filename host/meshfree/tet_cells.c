@@ -147,13 +147,13 @@ int tf_cells_use_tets(tf_cells *c, const double *xyz, const size_t *tet, size_t 
     c->tet = tet;
     c->ntet = ntet;
     if (build_locator(c) != 0) {
-        tf_cells_free(c);
+        tf_cells_tet_free(c);
         return -1;
     }
     return 0;
 }
 
-void tf_cells_free(tf_cells *c)
+void tf_cells_tet_free(tf_cells *c)
 {
     free(c->loc.start);
     free(c->loc.items);

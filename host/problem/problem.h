@@ -25,6 +25,7 @@
 #include "geometry/transform.h"
 #include "geometry/volume_mesh.h"
 #include "materials/material.h"
+#include "problem/history.h"
 #include "problem/nodes.h"
 
 #define TF_PROBLEM_NAME_MAX 64
@@ -41,6 +42,7 @@ typedef struct tf_box_geometry {
     unsigned grid[3];      /* nodes per axis */
     double jitter;         /* fraction of the spacing, interior nodes */
     uint64_t seed;         /* of the jitter */
+    tf_cloud_grading grading;    /* ratio 1 on every axis: a uniform grid (nodes.h) */
 } tf_box_geometry;
 
 /* An organ (TF_GEOMETRY_MESH): the surface file, how it is placed and
@@ -106,6 +108,8 @@ typedef enum tf_patch_shape {
     TF_PATCH_RECT,   /* uniform traction over a rectangle of a face */
     TF_PATCH_CIRCLE, /* uniform traction over a disc of a face */
     TF_PATCH_SURFACE,/* uniform traction over surface triangles of a mesh (a contact site) */
+    TF_PATCH_AT,     /* a force at a point anywhere in the body, spread to the nodes by
+                        their shape functions there (the Galerkin load of a point force) */
 } tf_patch_shape;
 
 /* Where a force acts.  In-face coordinates (u, v): (x, y) on z faces,
@@ -117,7 +121,7 @@ typedef struct tf_patch {
     double centre[2];   /* RECT, CIRCLE: (u, v), mm */
     double size[2];     /* RECT: side lengths along u and v, mm */
     double radius;      /* CIRCLE, SURFACE, mm */
-    double at[3];       /* SURFACE: the site's centre (a surface vertex), mm */
+    double at[3];       /* AT: the point; SURFACE: the site's centre (a surface vertex), mm */
     uint32_t *tri;      /* SURFACE: 3 node indices per triangle, outward (owned) */
     size_t n_tri;
     double area;        /* SURFACE: their total area, mm^2 */
@@ -131,12 +135,17 @@ typedef struct tf_load {
     int exact;
 } tf_load;
 
-/* A contact site: where the haptic force acts, and the node whose
- * displacement is the contact displacement. */
+/* A contact site: where the haptic force acts, and the point whose
+ * displacement is the contact displacement.  Given by a node number, the
+ * point is that node and its displacement the nodal value; given by
+ * position (or by its patch, whose centre it then is), the displacement is
+ * the solver's field at the point, whatever the grid. */
 typedef struct tf_contact {
     char name[TF_PROBLEM_NAME_MAX];
-    uint32_t node;  /* node index */
-    tf_patch patch; /* TF_PATCH_POINT at `node` when no patch was given */
+    uint32_t node;  /* node index: the node given, or the node nearest `at` */
+    double at[3];   /* the contact point, mm */
+    int by_node;    /* 1: given as a node number (the nodal value is the contact displacement) */
+    tf_patch patch; /* TF_PATCH_POINT at `node` (TF_PATCH_AT at `at`) when no patch was given */
 } tf_contact;
 
 /* The forces the haptic device may apply: the ball |F - centre| <= radius. */
@@ -151,22 +160,59 @@ typedef enum tf_output_kind {
     TF_OUT_BOX,
     TF_OUT_NODES,
     TF_OUT_CONTACT,
+    TF_OUT_POINTS,
     TF_OUT_SURFACE,      /* every surface vertex of a mesh */
     TF_OUT_NEAR_CONTACT, /* surface vertices within a radius of a contact site */
     TF_OUT_VERTICES,     /* surface vertices named by their index in the mesh file */
 } tf_output_kind;
 
+/* The output points: nodes, or (points != NULL) points anywhere in the
+ * body whose displacements are the solver's field there (solvers/probe.h);
+ * nodes[] then holds the node nearest each point. */
 typedef struct tf_outputs {
     tf_output_kind kind;
     uint32_t *nodes; /* resolved node indices (ascending, or in list order for TF_OUT_NODES) */
-    size_t n_nodes;
+    size_t n_nodes;  /* output count */
+    double *points;  /* NULL, or 3 n_nodes coordinates, mm */
 } tf_outputs;
 
-typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
+/* Essential conditions: nodal values removed (RPIM), the seed's penalty
+ * (RPIM: eq 28 on nodal values; EFG: the weak form of seed 001 eqs 19, 23),
+ * or Nitsche's method (solvers/boundary.h). */
+typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY, TF_BC_NITSCHE } tf_bc_method;
 typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
 typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
+/* Volume integration: Gauss points as they are, or with the shape-function
+ * gradients corrected per cell so that the discrete divergence theorem
+ * holds (VCI, solvers/cell_gradients.h). */
+typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_integration;
 
 #define TF_SOLVER_METHOD_MAX 32
+
+/* How the nonlinear solver solves each Newton iteration's linear system
+ * (docs/solver.md): a new factorisation of the tangent every iteration; the
+ * last factorisation kept until convergence slows (modified Newton); a
+ * Krylov method (CG, or GMRES for an unsymmetric tangent) on the current
+ * tangent preconditioned by the last factorisation, refactorised when the
+ * Krylov iterations exceed krylov_max; or quasi-Newton (limited-memory
+ * BFGS) updates of the last factorisation, refactorised when they stall. */
+typedef enum tf_tangent_kind {
+    TF_TANGENT_FULL,
+    TF_TANGENT_MODIFIED,
+    TF_TANGENT_KRYLOV,
+    TF_TANGENT_BFGS,
+} tf_tangent_kind;
+
+/* Newton-Raphson and load stepping (solvers/nonlinear/). */
+typedef struct tf_newton_opts {
+    double rtol;         /* |residual| <= rtol |internal forces| ... */
+    double etol;         /* ... and |du . residual| <= etol of the step's first */
+    unsigned max_iter;   /* iterations per load step */
+    unsigned steps;      /* load steps to begin with */
+    unsigned max_cuts;   /* halvings of a load step before giving up */
+    tf_tangent_kind tangent;
+    unsigned krylov_max; /* Krylov iterations per solve before refactorising */
+} tf_newton_opts;
 
 /* Which solver (by its registered name, solvers/solver.h) and how it
  * discretises.  The meshless options are those of the RPIM Galerkin solver;
@@ -176,7 +222,8 @@ typedef struct tf_solver_opts {
     double support;   /* alpha_s: support radius in nodal spacings (per axis) */
     tf_support_centre centre; /* support centred at each Gauss point or at its cell */
     double alpha_c;   /* RBF: R(r) = (r^2 + (alpha_c d_c)^2)^q   (seed eq 12) */
-    double d_c;       /* mm */
+    double d_c;       /* mm, when d_c_spacings is 0 (absolute, the seed's) */
+    double d_c_spacings; /* > 0: d_c = d_c_spacings x the local nodal spacing (meshfree/shape.h) */
     double q;
     int polynomial;   /* 0: none (seed eq 12); 1: linear augmentation (seed eq 11) */
     tf_volumetric volumetric; /* volumetric strain at each Gauss point, or per cell (B-bar) */
@@ -184,8 +231,12 @@ typedef struct tf_solver_opts {
     unsigned gauss;   /* Gauss-Legendre points per axis per cell */
     unsigned tet_degree; /* meshes: degree of the Gauss rule on each tetrahedron (1, 2, 5) */
     tf_bc_method bc;
-    double penalty;   /* lambda of seed eq 28 */
+    double penalty;   /* lambda of seed eq 28 (RPIM); alpha / ((lambda + 2 mu) / h) (EFG) */
+    double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
+    tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    int ordering;     /* fill-reducing ordering, tf_ordering (solvers/cholmod_solve.h) */
+    tf_newton_opts newton; /* nonlinear laws */
 } tf_solver_opts;
 
 typedef enum tf_analytic_kind {
@@ -218,6 +269,7 @@ typedef struct tf_problem {
     tf_outputs outputs;
     tf_solver_opts solver;
     tf_analytic analytic;
+    tf_history history;   /* how the loads change in time (present: 0 when not given) */
 } tf_problem;
 
 /* Frees what the problem owns (cloud, fixed nodes, loads, contacts, outputs)
@@ -239,6 +291,12 @@ static inline uint32_t tf_problem_node_number(const tf_problem *p, size_t index)
     (void)p;
     return (uint32_t)index + 1;
 }
+
+/* The centre of a patch on its face (a point force: its point), mm. */
+void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3]);
+
+/* Index of the node nearest x (the lowest index of equally near ones). */
+uint32_t tf_problem_nearest_node(const tf_problem *p, const double x[3]);
 
 /* The geometry's bounding box, mm. */
 void tf_problem_bounds(const tf_problem *p, double lo[3], double hi[3]);

@@ -12,6 +12,8 @@
 
 #include "fitting/families/family.h"
 #include "problem/regions.h"
+#include "scene/scene_grading.h"
+#include "scene/scene_history.h"
 #include "scene/scene_organ.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
@@ -51,11 +53,11 @@ static int finite_all(const double *v, size_t n)
 static int check_box(const sd_box *b, const char *path, sd_issue *is)
 {
     if (!finite_all(b->min, 3) || !finite_all(b->max, 3)) {
-        return fail(is, path, "coordinates must be finite numbers");
+        return sd_fail(is, path, "coordinates must be finite numbers");
     }
     for (int a = 0; a < 3; ++a) {
         if (!(b->min[a] < b->max[a])) {
-            return fail(is, path, "min must be below max along %c (%g >= %g)", "xyz"[a],
+            return sd_fail(is, path, "min must be below max along %c (%g >= %g)", "xyz"[a],
                         b->min[a], b->max[a]);
         }
     }
@@ -66,13 +68,15 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     const sd_geometry *g = &doc->geometry;
     if ((g->box != NULL) == (g->surface != NULL)) {
-        return fail(is, "geometry", "give exactly one of box (with grid) or surface (with spacing)");
+        return sd_fail(is, "geometry",
+                       "give exactly one of box (with grid) or surface (with spacing)");
     }
     if (g->surface) {
         return sd_organ_geometry(doc, s, is);
     }
-    if (g->grid == NULL || g->spacing || g->grading) {
-        return fail(is, "geometry", "a box takes grid (and jitter, seed), not spacing or grading");
+    if (g->grid == NULL || g->spacing || g->refine) {
+        return sd_fail(is, "geometry", "a box takes grid (and grading, jitter, seed), not spacing "
+                                       "or refine");
     }
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;
@@ -85,38 +89,98 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
         box->max[a] = g->box->max[a];
         box->grid[a] = g->grid[a];
         if (g->grid[a] < 2) {
-            return fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
+            return sd_fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
                         g->grid[a], "xyz"[a]);
         }
         nodes *= g->grid[a];
     }
     if (nodes > 2e6) {
-        return fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
+        return sd_fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
                     nodes);
     }
     box->jitter = g->jitter ? *g->jitter : 0;
     box->seed = g->seed ? *g->seed : 1;
     if (!(box->jitter >= 0 && box->jitter <= 0.4)) {
-        return fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
+        return sd_fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
     }
-    if (tf_cloud_box(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed) != 0) {
-        return fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
+    if (sd_grading(doc, box->min, box->max, &box->grading, is->msg, sizeof is->msg) != 0) {
+        snprintf(is->path, sizeof is->path, "geometry.grading");
+        return -1;
+    }
+    if (tf_cloud_box_graded(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed,
+                            &box->grading) != 0) {
+        return sd_fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
     }
     return 0;
 }
 
+/* The scene's key of a tf_material field tf_material_check names. */
+static const char *material_key(const char *field)
+{
+    return strcmp(field, "young") == 0 ? "E" : strcmp(field, "poisson") == 0 ? "nu" : field;
+}
+
+static int kelvin_law(tf_law law)
+{
+    return law == TF_LAW_KELVIN || law == TF_LAW_KELVIN_NH;
+}
+
 static int material(const sd_material *m, tf_problem *s, sd_issue *is)
 {
-    s->material = (tf_material){.law = TF_LAW_LINEAR, .young = m->young, .poisson = m->poisson};
-    if (!(isfinite(m->young) && m->young > 0)) {
-        return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
-                    m->young);
+    tf_material *mat = &s->material;
+    *mat = (tf_material){.law = m->law ? (tf_law)*m->law : TF_LAW_LINEAR,
+                         .poisson = m->poisson,
+                         .young = m->young ? *m->young : NAN,
+                         .k1 = m->k1 ? *m->k1 : NAN,
+                         .k2 = m->k2 ? *m->k2 : NAN,
+                         .eta = m->eta ? *m->eta : NAN,
+                         .k = m->k ? *m->k : 0};
+    const char *law = tf_law_name(mat->law);
+    if (kelvin_law(mat->law)) {
+        const char *missing = !m->k1 ? "k1" : !m->k2 ? "k2" : !m->eta ? "eta" : NULL;
+        if (missing) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", missing);
+            return sd_fail(is, path, "the %s law needs k1, k2 and eta (MPa, MPa, MPa s)", law);
+        }
+        if (m->young) {
+            return sd_fail(is, "material.E",
+                        "the %s law takes k1 (relaxed) and k2 (k1 + k2 instantaneous), not E",
+                        law);
+        }
+        /* the small-strain moduli of the initial response (B-bar, weak
+         * boundary terms): the instantaneous ones */
+        mat->young = mat->k1 + mat->k2;
+    } else {
+        if (!m->young) {
+            return sd_fail(is, "material.E", "'E' is missing: the %s law needs Young's modulus (MPa)",
+                        law);
+        }
+        const char *extra = m->k1 ? "k1" : m->k2 ? "k2" : m->eta ? "eta" : m->k ? "k" : NULL;
+        if (extra) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", extra);
+            return sd_fail(is, path, "belongs to the kelvin laws, not to %s", law);
+        }
     }
-    if (!(m->poisson > -1 && m->poisson < 0.5)) {
-        return fail(is, "material.nu",
-                    "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
-                    "this displacement formulation cannot represent (got %g)",
-                    m->poisson);
+    if (mat->law == TF_LAW_LINEAR) {
+        if (!(isfinite(mat->young) && mat->young > 0)) {
+            return sd_fail(is, "material.E",
+                        "Young's modulus must be a positive number of MPa (got %g)", mat->young);
+        }
+        if (!(mat->poisson > -1 && mat->poisson < 0.5)) {
+            return sd_fail(is, "material.nu",
+                        "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
+                        "this displacement formulation cannot represent (got %g)",
+                        mat->poisson);
+        }
+        return 0;
+    }
+    char why[256], path[32];
+    const char *bad = tf_material_check(mat, why, sizeof why);
+    if (bad != NULL) {
+        snprintf(path, sizeof path, "material.%s", material_key(bad));
+        return sd_fail(is, path, "%s", why);
     }
     return 0;
 }
@@ -177,10 +241,10 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
                 (d->sphere != NULL) + (d->side != NULL) + (d->near != NULL) +
                 (d->vertices_count > 0);
     if (kinds != 1) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL),
-                    "give exactly one of face, plane, box, sphere, side, near or vertices "
-                    "(got %d)",
-                    kinds);
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL),
+                       "give exactly one of face, plane, box, sphere, side, near or vertices "
+                       "(got %d)",
+                       kinds);
     }
     if (d->face && tf_problem_mesh(s) != NULL) {
         return fail(is, at(p, sizeof p, "fixed", k, "face"),
@@ -202,7 +266,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
         f->where.axis = d->plane->axis;
         f->where.at = d->plane->at;
         if (!isfinite(d->plane->at)) {
-            return fail(is, at(p, sizeof p, "fixed", k, "plane"), "'at' must be finite");
+            return sd_fail(is, at(p, sizeof p, "fixed", k, "plane"), "'at' must be finite");
         }
     } else {
         f->where.kind = TF_REGION_BOX;
@@ -214,29 +278,29 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     }
     f->components = d->components ? *d->components : TF_COMP_ALL;
     if (f->components == 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, "components"), "names no component");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "components"), "names no component");
     }
     f->exact = d->exact && *d->exact;
     if (f->exact && d->displacement) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL),
                     "give displacement or exact: true, not both");
     }
     if (f->exact && s->analytic.kind == TF_ANALYTIC_NONE) {
-        return fail(is, at(p, sizeof p, "fixed", k, "exact"),
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "exact"),
                     "exact: true needs a reference section");
     }
     for (int a = 0; a < 3; ++a) {
         f->value[a] = d->displacement ? d->displacement[a] : 0;
     }
     if (!finite_all(f->value, 3)) {
-        return fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
     }
     if (f->where.kind != TF_REGION_VERTICES &&
         tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
     }
     return 0;
 }
@@ -245,7 +309,7 @@ static int fixed(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     s->fixed = calloc(doc->fixed_count, sizeof *s->fixed);
     if (s->fixed == NULL) {
-        return fail(is, "fixed", "out of memory");
+        return sd_fail(is, "fixed", "out of memory");
     }
     s->n_fixed = doc->fixed_count;
     for (size_t k = 0; k < doc->fixed_count; ++k) {
@@ -260,10 +324,28 @@ static int node_index(uint32_t number, const tf_problem *s, const char *path, ui
                       sd_issue *is)
 {
     if (number < 1 || number > s->cloud.n) {
-        return fail(is, path, "node %u does not exist (nodes are numbered 1 to %zu)", number,
+        return sd_fail(is, path, "node %u does not exist (nodes are numbered 1 to %zu)", number,
                     s->cloud.n);
     }
     *index = number - 1;
+    return 0;
+}
+
+/* A position given in the scene: finite and inside the body. */
+static int position(const double *x, const tf_problem *s, const char *path, double out[3],
+                    sd_issue *is)
+{
+    double tol = tf_cloud_tol(&s->cloud);
+    if (!finite_all(x, 3)) {
+        return sd_fail(is, path, "must be three finite coordinates (mm)");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (x[a] < s->cloud.lo[a] - tol || x[a] > s->cloud.hi[a] + tol) {
+            return sd_fail(is, path, "(%g, %g, %g) mm lies outside the body (%c in [%g, %g])", x[0],
+                        x[1], x[2], "xyz"[a], s->cloud.lo[a], s->cloud.hi[a]);
+        }
+        out[a] = x[a];
+    }
     return 0;
 }
 
@@ -272,29 +354,29 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
     char p[128];
     s->loads = calloc(doc->loads_count + 1, sizeof *s->loads);
     if (s->loads == NULL) {
-        return fail(is, "loads", "out of memory");
+        return sd_fail(is, "loads", "out of memory");
     }
     s->n_loads = doc->loads_count;
     for (size_t k = 0; k < doc->loads_count; ++k) {
         const sd_load *d = &doc->loads[k];
         tf_load *l = &s->loads[k];
         l->exact = d->exact && *d->exact;
-        if ((d->node != NULL) + (d->patch != NULL) + (d->site != NULL) != 1) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL),
-                        "give exactly one of node, patch or site");
+        if ((d->node != NULL) + (d->at != NULL) + (d->patch != NULL) + (d->site != NULL) != 1) {
+            return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
+                           "give exactly one of node, at, patch or site");
         }
         if (l->exact == (d->force != NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL),
+            return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of force or exact: true");
         }
         if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->patch == NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, "exact"),
+            return sd_fail(is, at(p, sizeof p, "loads", k, "exact"),
                         "exact: true needs a reference section and a patch");
         }
         if (d->force) {
             memcpy(l->force, d->force, sizeof l->force);
             if (!finite_all(l->force, 3)) {
-                return fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
+                return sd_fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
             }
         }
         if (d->site) {
@@ -308,10 +390,54 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
             if (node_index(*d->node, s, at(p, sizeof p, "loads", k, "node"), &l->patch.node, is)) {
                 return -1;
             }
+        } else if (d->at) {
+            l->patch.shape = TF_PATCH_AT;
+            if (position(d->at, s, at(p, sizeof p, "loads", k, "at"), l->patch.at, is) != 0) {
+                return -1;
+            }
         } else if (sd_resolve_patch(d->patch, &s->cloud, &l->patch, is->msg, sizeof is->msg) != 0) {
             snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "loads", k, "patch"));
             return -1;
         }
+    }
+    return 0;
+}
+
+/* Where a contact site is: a node number, a point, or its patch's centre;
+ * and how its force is spread (its patch, else a point force there). */
+static int contact_site(const sd_contact *d, const tf_problem *s, size_t k, tf_contact *c,
+                        sd_issue *is)
+{
+    char p[128];
+    int forms = (d->node != NULL) + (d->at != NULL);
+    if (forms > 1 || (forms == 0 && d->patch == NULL)) {
+        return sd_fail(is, at(p, sizeof p, "contact", k, NULL),
+                    "give the contact point as one of node or at (or neither, with a patch: "
+                    "its centre)");
+    }
+    if (d->patch && sd_resolve_patch(d->patch, &s->cloud, &c->patch, is->msg, sizeof is->msg) != 0) {
+        snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "contact", k, "patch"));
+        return -1;
+    }
+    c->by_node = d->node != NULL;
+    if (d->node) {
+        if (node_index(*d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
+            return -1;
+        }
+        memcpy(c->at, s->cloud.xyz + 3 * (size_t)c->node, sizeof c->at);
+    } else if (d->at) {
+        if (position(d->at, s, at(p, sizeof p, "contact", k, "at"), c->at, is) != 0) {
+            return -1;
+        }
+        c->node = tf_problem_nearest_node(s, c->at);
+    } else {
+        tf_problem_patch_centre(&c->patch, &s->cloud, c->at);
+        c->node = tf_problem_nearest_node(s, c->at);
+    }
+    if (d->patch == NULL) {
+        c->patch.shape = c->by_node ? TF_PATCH_POINT : TF_PATCH_AT;
+        c->patch.node = c->node;
+        memcpy(c->patch.at, c->at, sizeof c->at);
     }
     return 0;
 }
@@ -321,7 +447,7 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
     char p[128];
     s->contacts = calloc(doc->contact_count + 1, sizeof *s->contacts);
     if (s->contacts == NULL) {
-        return fail(is, "contact", "out of memory");
+        return sd_fail(is, "contact", "out of memory");
     }
     s->n_contacts = doc->contact_count;
     for (size_t k = 0; k < doc->contact_count; ++k) {
@@ -334,28 +460,26 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
         }
         for (size_t j = 0; j < k; ++j) {
             if (strcmp(s->contacts[j].name, c->name) == 0) {
-                return fail(is, at(p, sizeof p, "contact", k, "name"),
+                return sd_fail(is, at(p, sizeof p, "contact", k, "name"),
                             "'%s' names contact %zu already", c->name, j);
             }
         }
-        if ((d->site != NULL) == (d->node != NULL) || (d->site && d->patch)) {
-            return fail(is, at(p, sizeof p, "contact", k, NULL),
-                        "give node (and a patch) on a box, or site on an organ");
+        if (d->site && (d->node || d->at || d->patch)) {
+            return sd_fail(is, at(p, sizeof p, "contact", k, NULL),
+                           "give a site on an organ, or node, at or patch on a box, not both");
         }
         if (d->site) {
+            /* The site's centre is the surface vertex nearest its point: a
+             * node, so its nodal value is the contact displacement. */
             if (sd_organ_site(d->site, s, at(p, sizeof p, "contact", k, NULL), &c->patch,
                               &c->node, is) != 0) {
                 return -1;
             }
+            c->by_node = 1;
+            memcpy(c->at, s->cloud.xyz + 3 * (size_t)c->node, sizeof c->at);
             continue;
         }
-        if (node_index(*d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
-            return -1;
-        }
-        c->patch.shape = TF_PATCH_POINT;
-        c->patch.node = c->node;
-        if (d->patch && sd_resolve_patch(d->patch, &s->cloud, &c->patch, is->msg, sizeof is->msg) != 0) {
-            snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "contact", k, "patch"));
+        if (contact_site(d, s, k, c, is) != 0) {
             return -1;
         }
     }
@@ -369,13 +493,18 @@ static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
         s->envelope.centre[a] = e && e->centre ? e->centre[a] : 0;
     }
     if (!(isfinite(s->envelope.radius) && s->envelope.radius > 0)) {
-        return fail(is, "envelope.radius", "must be a positive number of newtons");
+        return sd_fail(is, "envelope.radius", "must be a positive number of newtons");
     }
     if (!finite_all(s->envelope.centre, 3)) {
-        return fail(is, "envelope.centre", "must be finite (N)");
+        return sd_fail(is, "envelope.centre", "must be finite (N)");
     }
     return 0;
 }
+
+/* The default multiquadric length: d_c relative to the local nodal spacing
+ * (docs/validation.md, the shape-parameter study); 0 would make the seed's
+ * absolute d_c = 2 mm the default. */
+#define SD_D_C_SPACINGS 8.0
 
 tf_solver_opts sd_solver_defaults(const unsigned grid[3])
 {
@@ -385,6 +514,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .centre = TF_SUPPORT_CELL,
         .alpha_c = 1.0,
         .d_c = 2.0,
+        .d_c_spacings = SD_D_C_SPACINGS,
         .q = 1.03,
         .polynomial = 1,
         .volumetric = TF_VOLUMETRIC_CELL,
@@ -392,12 +522,50 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .tet_degree = 2,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
+        .nitsche = 100,
+        .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
+        .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
+                   .tangent = TF_TANGENT_FULL, .krylov_max = 100},
+        .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
         o.cells[a] = grid[a] - 1;
     }
     return o;
+}
+
+static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
+{
+    if (d == NULL) {
+        return 0;
+    }
+    o->rtol = d->tolerance ? *d->tolerance : o->rtol;
+    o->etol = d->energy_tolerance ? *d->energy_tolerance : o->etol;
+    o->max_iter = d->iterations ? *d->iterations : o->max_iter;
+    o->steps = d->steps ? *d->steps : o->steps;
+    o->max_cuts = d->cuts ? *d->cuts : o->max_cuts;
+    o->tangent = d->tangent ? (tf_tangent_kind)*d->tangent : o->tangent;
+    o->krylov_max = d->krylov_iterations ? *d->krylov_iterations : o->krylov_max;
+    if (!(o->rtol > 0 && o->rtol < 1)) {
+        return sd_fail(is, "solver.newton.tolerance", "must lie in (0, 1)");
+    }
+    if (!(o->etol > 0 && o->etol < 1)) {
+        return sd_fail(is, "solver.newton.energy_tolerance", "must lie in (0, 1)");
+    }
+    if (o->max_iter < 1 || o->max_iter > 1000) {
+        return sd_fail(is, "solver.newton.iterations", "1 to 1000 iterations per load step");
+    }
+    if (o->steps < 1 || o->steps > 100000) {
+        return sd_fail(is, "solver.newton.steps", "1 to 100000 load steps to begin with");
+    }
+    if (o->max_cuts > 30) {
+        return sd_fail(is, "solver.newton.cuts", "0 to 30 halvings of a load step");
+    }
+    if (o->krylov_max < 1 || o->krylov_max > 10000) {
+        return sd_fail(is, "solver.newton.krylov_iterations", "1 to 10000 iterations");
+    }
+    return 0;
 }
 
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
@@ -406,6 +574,12 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     static const unsigned no_grid[3] = {2, 2, 2}; /* an organ has no background grid */
     *o = sd_solver_defaults(s->geometry.kind == TF_GEOMETRY_BOX ? s->geometry.as.box.grid
                                                                 : no_grid);
+    if (s->geometry.kind != TF_GEOMETRY_BOX) {
+        /* An organ's default d_c is the seed's absolute 2 mm: its supports
+         * (balls of up to 60 nodes, a dense skin) leave the relative 8 h
+         * singular, 4 h ill-conditioned (docs/validation.md §14). */
+        o->d_c_spacings = 0;
+    }
     if (d == NULL) {
         return 0;
     }
@@ -413,16 +587,25 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         if (tf_solver_type_find(d->method) == NULL) {
             char names[256];
             tf_solver_type_names(names, sizeof names);
-            return fail(is, "solver.method", "'%s' is not one of: %s", d->method, names);
+            return sd_fail(is, "solver.method", "'%s' is not one of: %s", d->method, names);
         }
         snprintf(o->method, sizeof o->method, "%s", d->method);
     }
     o->support = d->support ? *d->support : o->support;
     o->centre = d->centre ? (tf_support_centre)*d->centre : o->centre;
     if (d->rbf) {
+        if (d->rbf->d_c && d->rbf->spacings) {
+            return sd_fail(is, "solver.rbf",
+                        "give d_c (mm, absolute) or spacings (d_c relative to the local "
+                        "nodal spacing), not both");
+        }
         o->alpha_c = d->rbf->alpha_c ? *d->rbf->alpha_c : o->alpha_c;
         o->d_c = d->rbf->d_c ? *d->rbf->d_c : o->d_c;
+        o->d_c_spacings = d->rbf->d_c ? 0 : d->rbf->spacings ? *d->rbf->spacings : o->d_c_spacings;
         o->q = d->rbf->q ? *d->rbf->q : o->q;
+        if (d->rbf->spacings && !(isfinite(o->d_c_spacings) && o->d_c_spacings > 0)) {
+            return sd_fail(is, "solver.rbf.spacings", "must be a positive number of nodal spacings");
+        }
     }
     o->polynomial = d->polynomial ? *d->polynomial : o->polynomial;
     o->volumetric = d->volumetric ? (tf_volumetric)*d->volumetric : o->volumetric;
@@ -431,30 +614,37 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
     o->tet_degree = d->tet_degree ? *d->tet_degree : o->tet_degree;
-    o->bc = d->bc ? (tf_bc_method)*d->bc : o->bc;
+    int efg = strcmp(o->method, "efg-galerkin") == 0;
+    o->bc = d->bc ? (tf_bc_method)*d->bc : efg ? TF_BC_NITSCHE : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
+    o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
+    o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
+    o->ordering = d->ordering ? *d->ordering : o->ordering;
+    if (newton(d->newton, &o->newton, is) != 0) {
+        return -1;
+    }
     o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
     if (!(isfinite(o->support) && o->support > 0)) {
-        return fail(is, "solver.support", "must be a positive number of nodal spacings");
+        return sd_fail(is, "solver.support", "must be a positive number of nodal spacings");
     }
     if (!(isfinite(o->alpha_c) && o->alpha_c > 0)) {
-        return fail(is, "solver.rbf.alpha_c", "must be positive");
+        return sd_fail(is, "solver.rbf.alpha_c", "must be positive");
     }
     if (!(isfinite(o->d_c) && o->d_c > 0)) {
-        return fail(is, "solver.rbf.d_c", "must be a positive length (mm)");
+        return sd_fail(is, "solver.rbf.d_c", "must be a positive length (mm)");
     }
     if (!(isfinite(o->q) && o->q > 0) || o->q == floor(o->q)) {
-        return fail(is, "solver.rbf.q",
+        return sd_fail(is, "solver.rbf.q",
                     "must be positive and not a whole number (an integer q makes the "
                     "multiquadric a polynomial and the local systems singular)");
     }
     for (int a = 0; a < 3; ++a) {
         if (o->cells[a] < 1 || o->cells[a] > 4096) {
-            return fail(is, "solver.cells", "1 to 4096 background cells per axis");
+            return sd_fail(is, "solver.cells", "1 to 4096 background cells per axis");
         }
     }
     if (o->gauss < 1 || o->gauss > 12) {
-        return fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
+        return sd_fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
     }
     if (o->tet_degree < 1 || o->tet_degree > 5) {
         return fail(is, "solver.tet_degree",
@@ -462,10 +652,18 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
                     "use the degree-5 rule)");
     }
     if (!(isfinite(o->penalty) && o->penalty > 0)) {
-        return fail(is, "solver.penalty", "must be a positive factor");
+        return sd_fail(is, "solver.penalty", "must be a positive factor");
+    }
+    if (!(isfinite(o->nitsche) && o->nitsche > 0)) {
+        return sd_fail(is, "solver.nitsche", "must be a positive factor");
+    }
+    if (efg && o->bc == TF_BC_ELIMINATION) {
+        return sd_fail(is, "solver.bc",
+                    "elimination needs shape functions that interpolate (rpim-galerkin); EFG "
+                    "takes penalty or nitsche");
     }
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
-        return fail(is, "solver.rcond_warn", "must lie in (0, 1)");
+        return sd_fail(is, "solver.rcond_warn", "must lie in (0, 1)");
     }
     return 0;
 }
@@ -479,20 +677,20 @@ static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)
     }
     if (r->kind == TF_ANALYTIC_CANTILEVER) {
         if (d->load == NULL || !isfinite(*d->load) || d->offset || d->gradient) {
-            return fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
+            return sd_fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
         }
         r->load = *d->load;
         return 0;
     }
     if (d->gradient == NULL || d->load) {
-        return fail(is, "reference", "linear takes a gradient (9 numbers), an optional offset");
+        return sd_fail(is, "reference", "linear takes a gradient (9 numbers), an optional offset");
     }
     memcpy(r->gradient, d->gradient, sizeof r->gradient);
     for (int a = 0; a < 3; ++a) {
         r->offset[a] = d->offset ? d->offset[a] : 0;
     }
     if (!finite_all(r->gradient, 9) || !finite_all(r->offset, 3)) {
-        return fail(is, "reference", "values must be finite");
+        return sd_fail(is, "reference", "values must be finite");
     }
     return 0;
 }
@@ -511,7 +709,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
         if (f->family == NULL || f->family->kind != TF_FAMILY_FORWARD) {
             char names[256];
             tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
-            return fail(is, "fit.family", "'%s' is not one of the forward families: %s",
+            return sd_fail(is, "fit.family", "'%s' is not one of the forward families: %s",
                         d->family, names);
         }
     }
@@ -525,23 +723,23 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     if (d->contact) {
         f->contact = tf_problem_contact(s, d->contact);
         if (f->contact < 0) {
-            return fail(is, "fit.contact", "names no contact site of the scene");
+            return sd_fail(is, "fit.contact", "names no contact site of the scene");
         }
     }
     if (f->n_train < 6 || f->n_train > 100000) {
-        return fail(is, "fit.train", "6 to 100000 training load cases");
+        return sd_fail(is, "fit.train", "6 to 100000 training load cases");
     }
     if (f->n_heldout < 1 || f->n_heldout > 100000) {
-        return fail(is, "fit.heldout", "1 to 100000 held-out load cases");
+        return sd_fail(is, "fit.heldout", "1 to 100000 held-out load cases");
     }
     if (f->folds < 2 || f->folds > 20 || f->folds > f->n_train) {
-        return fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
+        return sd_fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
     }
     if (f->max_degree > 8) {
-        return fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
+        return sd_fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
     }
     if (f->max_rank < 1 || f->max_rank > TF_FAMILY_MAX_RANK) {
-        return fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
+        return sd_fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
     }
     if (d->servo_hz && (f->servo_hz < 1 || f->servo_hz > 100000)) {
         return fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
@@ -558,7 +756,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
-        fit(doc->fit, s, plan, is) != 0) {
+        sd_history_build(doc->history, s, is) != 0 || fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }
     if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {

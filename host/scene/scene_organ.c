@@ -60,10 +60,10 @@ static int mesh_options(const sd_scene *doc, tf_mesh_options *o, sd_issue *is)
     if (!(isfinite(o->spacing) && o->spacing > 0)) {
         return fail(is, "geometry.spacing", "must be a positive number of mm");
     }
-    if (g->grading == NULL) {
+    if (g->refine == NULL) {
         return 0;
     }
-    const sd_grading *d = g->grading;
+    const sd_refine *d = g->refine;
     o->graded = 1;
     o->grade_spacing = d->spacing;
     o->grade_radius = d->radius;
@@ -73,8 +73,8 @@ static int mesh_options(const sd_scene *doc, tf_mesh_options *o, sd_issue *is)
     } else if (doc->contact_count > 0 && doc->contact[0].site) {
         memcpy(o->grade_at, doc->contact[0].site->point, sizeof o->grade_at);
     } else {
-        return fail(is, "geometry.grading",
-                    "give at: [x, y, z] (there is no contact site with a point to grade "
+        return fail(is, "geometry.refine",
+                    "give at: [x, y, z] (there is no contact site with a point to refine "
                     "towards)");
     }
     return 0;
@@ -87,7 +87,7 @@ static const char *field_of(int rc, const char *msg)
         return "geometry.spacing";
     }
     if (rc == TF_GEOM_BAD_INPUT && strncmp(msg, "grading", 7) == 0) {
-        return "geometry.grading";
+        return "geometry.refine"; /* the geometry layer calls it grading */
     }
     if (strncmp(msg, "absurd size", 11) == 0) {
         return "geometry.surface.scale";
@@ -98,8 +98,10 @@ static const char *field_of(int rc, const char *msg)
 int sd_organ_geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     const sd_geometry *g = &doc->geometry;
-    if (g->grid || g->jitter || g->seed) {
-        return fail(is, "geometry", "grid, jitter and seed belong to a box, not to a surface");
+    if (g->grid || g->grading || g->jitter || g->seed) {
+        return fail(is, "geometry",
+                    "grid, grading, jitter and seed belong to a box, not to a surface (a "
+                    "surface refines towards a point with refine)");
     }
     if (g->spacing == NULL) {
         return fail(is, "geometry",

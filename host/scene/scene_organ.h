@@ -14,7 +14,7 @@
 #include "scene/scene_build.h"
 #include "scene/scene_schema.h"
 
-/* geometry.surface, .spacing and .grading into s->geometry (a mesh) and
+/* geometry.surface, .spacing and .refine into s->geometry (a mesh) and
  * s->cloud.  s->source is the scene file (relative mesh paths start from
  * its folder). */
 int sd_organ_geometry(const sd_scene *doc, tf_problem *s, sd_issue *is);

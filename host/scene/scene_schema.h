@@ -35,26 +35,30 @@ typedef struct sd_surface {
     double *translate; /* 3, mm */
 } sd_surface;
 
-typedef struct sd_grading {
+/* An organ's local refinement (geometry.refine). */
+typedef struct sd_refine {
     double *at;        /* 3, mm; default: the first contact site's point */
     double spacing;
     double radius;
     double ramp;
-} sd_grading;
+} sd_refine;
 
 typedef struct sd_geometry {
     sd_box *box;       /* a box and its grid, or */
     unsigned *grid;    /* 3 */
+    double *grading;   /* 3, a box: largest / smallest spacing per axis */
     double *jitter;
     uint64_t *seed;
     sd_surface *surface; /* an organ's surface, its interior spacing and grading */
     double *spacing;
-    sd_grading *grading;
+    sd_refine *refine;
 } sd_geometry;
 
 typedef struct sd_material {
-    double young;   /* key E */
+    int *law;       /* tf_law; linear when absent */
+    double *young;  /* key E (every law but the Kelvin ones) */
     double poisson; /* key nu */
+    double *k1, *k2, *eta, *k; /* Kelvin laws (materials/material.h) */
 } sd_material;
 
 typedef struct sd_plane {
@@ -107,6 +111,7 @@ typedef struct sd_patch {
 
 typedef struct sd_load {
     uint32_t *node;
+    double *at;      /* 3: a point force's position, mm */
     sd_patch *patch;
     sd_site *site;
     double *force;   /* 3 */
@@ -115,7 +120,8 @@ typedef struct sd_load {
 
 typedef struct sd_contact {
     char *name;
-    uint32_t *node;  /* a box: required */
+    uint32_t *node;  /* a box: a node, or */
+    double *at;      /* 3, a box: the contact point, mm */
     sd_patch *patch;
     sd_site *site;   /* an organ: instead of node and patch */
 } sd_contact;
@@ -124,6 +130,11 @@ typedef struct sd_envelope {
     double *radius;
     double *centre;  /* 3 */
 } sd_envelope;
+
+typedef struct sd_lattice {
+    double min[3], max[3];
+    unsigned count[3];
+} sd_lattice;
 
 typedef struct sd_outputs {
     int select;      /* tf_output_kind */
@@ -134,13 +145,23 @@ typedef struct sd_outputs {
     double *radius;      /* near-contact */
     uint32_t *vertices;  /* vertices: indices in the mesh file */
     unsigned vertices_count;
+    double (*points)[3];
+    unsigned points_count;
+    sd_lattice *lattice;
 } sd_outputs;
 
 typedef struct sd_rbf {
     double *alpha_c;
     double *d_c;
+    double *spacings; /* d_c in local nodal spacings */
     double *q;
 } sd_rbf;
+
+typedef struct sd_newton {
+    double *tolerance, *energy_tolerance;
+    unsigned *iterations, *steps, *cuts, *krylov_iterations;
+    int *tangent; /* tf_tangent_kind */
+} sd_newton;
 
 typedef struct sd_solver {
     char *method;    /* a registered solver's name (solvers/solver.h) */
@@ -154,6 +175,10 @@ typedef struct sd_solver {
     unsigned *tet_degree;
     int *bc;         /* tf_bc_method */
     double *penalty;
+    double *nitsche;
+    int *integration; /* tf_integration */
+    int *ordering;    /* tf_ordering */
+    sd_newton *newton;
     double *rcond_warn;
 } sd_solver;
 
@@ -163,6 +188,20 @@ typedef struct sd_reference {
     double *offset;   /* 3 */
     double *gradient; /* 9 */
 } sd_reference;
+
+typedef struct sd_segment {
+    int kind;         /* tf_segment_kind */
+    double *to, *time, *amplitude, *period;
+} sd_segment;
+
+typedef struct sd_history {
+    double dt, duration;
+    double *force;    /* 3 */
+    char *contact;
+    sd_segment *segments;
+    unsigned segments_count;
+    char *table;      /* CSV file of t, fx, fy, fz */
+} sd_history;
 
 typedef struct sd_fit {
     char *family;      /* a registered forward family's name (fitting/families/family.h) */
@@ -185,6 +224,7 @@ typedef struct sd_scene {
     sd_outputs outputs;
     sd_solver *solver;
     sd_reference *reference;
+    sd_history *history;
     sd_fit *fit;
 } sd_scene;
 

@@ -19,7 +19,7 @@
  * With BOUND, exits 1 when the contact or the outputs' error exceeds it
  * (3 % is the issue's); the worst vertex is reported, not bounded: it sits
  * at the edge of the loaded patch, where the traction jumps and both
- * discretisations differ most (docs/validation.md §7).
+ * discretisations differ most (docs/validation.md §14).
  * A markdown row per case goes to stdout.  Exit 2 on bad input.
  */
 #include <math.h>
