@@ -38,9 +38,9 @@ static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[
     }
 }
 
-void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+/* Everything before the cells: header, point data, points. */
+static void vtu_points(FILE *fp, const tf_cloud *c, size_t nc, const double *u)
 {
-    size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
     fprintf(fp,
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -63,6 +63,26 @@ void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
     }
     fprintf(fp, "</DataArray>\n</Points>\n<Cells>\n"
                 "<DataArray type=\"UInt64\" Name=\"connectivity\" format=\"ascii\">\n");
+}
+
+/* Offsets and types of nc cells of `corners` points and VTK type `type`. */
+static void vtu_cells_end(FILE *fp, size_t nc, unsigned corners, unsigned type)
+{
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt64\" Name=\"offsets\" format=\"ascii\">\n");
+    for (size_t q = 1; q <= nc; ++q) {
+        fprintf(fp, "%zu\n", corners * q);
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    for (size_t q = 0; q < nc; ++q) {
+        fprintf(fp, "%u\n", type);
+    }
+    fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+}
+
+void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+{
+    size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
+    vtu_points(fp, c, nc, u);
     for (unsigned k = 0; k + 1 < c->grid[2]; ++k) {
         for (unsigned j = 0; j + 1 < c->grid[1]; ++j) {
             for (unsigned i = 0; i + 1 < c->grid[0]; ++i) {
@@ -73,13 +93,16 @@ void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
             }
         }
     }
-    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt64\" Name=\"offsets\" format=\"ascii\">\n");
-    for (size_t q = 1; q <= nc; ++q) {
-        fprintf(fp, "%zu\n", 8 * q);
+    vtu_cells_end(fp, nc, 8, 12);
+}
+
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,
+                               const double *u)
+{
+    vtu_points(fp, c, ntet, u);
+    for (size_t e = 0; e < ntet; ++e) {
+        fprintf(fp, "%zu %zu %zu %zu\n", tet[4 * e], tet[4 * e + 1], tet[4 * e + 2],
+                tet[4 * e + 3]);
     }
-    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for (size_t q = 0; q < nc; ++q) {
-        fprintf(fp, "12\n");
-    }
-    fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    vtu_cells_end(fp, ntet, 4, 10);
 }

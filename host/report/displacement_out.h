@@ -2,7 +2,7 @@
  * displacement_out.h — nodal displacements to files: CSV (the format the
  * project compares with CalculiX: header node,x,y,z,ux,uy,uz, mm, %.17g)
  * and VTK XML unstructured grids for ParaView (hexahedra of the node grid,
- * point data "displacement" and "node").
+ * or an organ's tetrahedra; point data "displacement" and "node").
  */
 #ifndef TF_DISPLACEMENT_OUT_H
 #define TF_DISPLACEMENT_OUT_H
@@ -24,5 +24,9 @@ void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v);
 
 /* The whole cloud as a VTU file. */
 void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u);
+
+/* An organ's cloud as a VTU file: its tetrahedra (4 node indices each). */
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet,
+                                      size_t ntet, const double *u);
 
 #endif /* TF_DISPLACEMENT_OUT_H */
