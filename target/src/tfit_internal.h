@@ -166,6 +166,10 @@ static inline void tfit_rows_degree1(const float *c, const float g[3], uint32_t 
  * (the contact family), without the registers the pair loop needs. */
 tfit_status tfit_degree1_asm(const tfit_model *m, const float in[3], float *out);
 tfit_status tfit_degree1_one_asm(const tfit_model *m, const float in[3], float *out);
+/* The rows alone (§5.2, §5.5) at g: the model's rows when keep is all ones,
+ * the zero rows when it is 0. */
+void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, uint32_t keep,
+                           float *out);
 #else
 #define TFIT_DEGREE1_ASM 0
 #endif

@@ -97,6 +97,18 @@ void tfit_prony_static(const tfit_model *m, tfit_model *v)
     v->node_ids = m->node_ids;
 }
 
+/* The static map of a p = 1 model: the assembly of tfit_degree1_armv7em.c
+ * on Cortex-M4F/M7, else the same operations in C. */
+static void degree1_rows(const float *rows, const float h[3], uint32_t n_out, uint32_t keep,
+                         float *out)
+{
+#if TFIT_DEGREE1_ASM
+    tfit_degree1_rows_asm(rows, h, n_out, keep, out);
+#else
+    tfit_rows_degree1(rows, h, n_out, keep, out);
+#endif
+}
+
 tfit_status tfit_prony_reset(const tfit_model *m, float *state)
 {
     if ((m == 0) | (state == 0)) {
@@ -110,9 +122,12 @@ tfit_status tfit_prony_reset(const tfit_model *m, float *state)
     }
     const float zero[3] = {0.0f, 0.0f, 0.0f};
     uint32_t bad;
+    /* volatile: GCC would make the zeroing loop a call to memset, which a
+     * freestanding library cannot make (check-freestanding: nm -u) */
+    volatile float *terms = state + 3;
     (void)tfit_input_map(m->coef, zero, state, &bad); /* the projected zero force */
-    for (uint32_t w = 3u; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
-        state[w] = 0.0f;
+    for (uint32_t w = 0u; w < 3u * m->dims[2]; ++w) {
+        terms[w] = 0.0f;
     }
     return TFIT_OK;
 }
@@ -134,10 +149,12 @@ tfit_status tfit_prony_step(const tfit_model *m, float *state, const float force
     const uint32_t clamped = tfit_input_map(m->coef, force, g, &bad);
     tfit_prony_filter(m, g, ~bad, state, h);
     tfit_prony_static(m, &v);
-    if (v.family == TFIT_FAMILY_NODAL) {
-        tfit_eval_nodal(&v, h, ~bad, out);
-    } else {
+    if (v.family == TFIT_FAMILY_MODAL) {
         tfit_eval_modal(&v, h, ~bad, out);
+    } else if (m->dims[0] != 1u) {
+        tfit_eval_nodal(&v, h, ~bad, out);
+    } else { /* p = 1: rows of {1, h0, h1, h2} (docs/firmware.md §5.4) */
+        degree1_rows(v.coef + TFIT_INPUT_MAP_FLOATS, h, m->n_out, ~bad, out);
     }
     return (tfit_status)((int)(clamped & ~bad & 1u) - (int)(bad & 1u));
 }

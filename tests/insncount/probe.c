@@ -2,8 +2,11 @@
  * probe.c — evaluates every golden vector of every model of families.h once,
  * float and Q31 forms, under callgrind, dumping the instruction count of
  * each evaluation (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare
- * them: the count must not depend on the input.  Q31 sets are numbered
- * from 20 and their family ids shifted by 4 (5 nodal, 8 contact).
+ * them: the count must not depend on the input.  A prony model's golden
+ * vectors are one tick sequence: each tick is one evaluation, stepped from
+ * a reset state, so the count must depend on neither the input nor the
+ * state.  Q31 sets are numbered from 20 and their family ids shifted by 5
+ * (6 nodal, 9 contact).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,13 +33,23 @@ int main(void)
     for (size_t s = 0; s < sizeof sets / sizeof sets[0]; ++s) {
         const tfit_model *m = sets[s]->model;
         float *out = malloc(3 * m->n_out * sizeof *out);
+        float state[TFIT_PRONY_MAX_STATE];
+        if (m->family == TFIT_FAMILY_PRONY) {
+            tfit_prony_reset(m, state);
+        }
         for (uint32_t v = 0; v < sets[s]->n_vec; ++v) {
             float x[3];
             char label[64];
+            tfit_status st;
             memcpy(x, sets[s]->in + 3 * v, sizeof x);
             CALLGRIND_ZERO_STATS;
-            tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force(m, x, out)
-                                                              : tfit_displacements(m, x, out);
+            if (m->family == TFIT_FAMILY_PRONY) {
+                st = tfit_prony_step(m, state, x, out);
+            } else if (m->family == TFIT_FAMILY_CONTACT) {
+                st = tfit_contact_force(m, x, out);
+            } else {
+                st = tfit_displacements(m, x, out);
+            }
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", s, m->family, v,
                      (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
@@ -54,7 +67,7 @@ int main(void)
             tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
                                                               : tfit_displacements_q31(m, x, out);
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", 20 + s,
-                     m->family + 4, v, (int)st);
+                     m->family + 5, v, (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
         }
         free(out);

@@ -1,0 +1,103 @@
+# prony.mk — the prony family's long runs and studies (issue 14).
+#
+#   check-prony-long   every prony model of families.h and haptic.h stepped
+#                      10^6 ticks through a haptic force history natively,
+#                      and those of families.h under QEMU on Cortex-M4F and
+#                      M7: status, state and outputs hashed at every tick,
+#                      against the host reference's run
+#   prony-long-qemu    the same under QEMU for every test header (haptic.h's
+#                      block48-shaped model too: about a minute)
+#   check-prony-tick   a firmware stating another tick does not compile
+#   prony-study        the float32 accuracy of one term's update over 10^6
+#                      ticks against double, by T / tau (docs/fitting.md)
+
+PRONY_LONG := families haptic
+PRONY_LONG_CORES := m4f m7
+upper = $(shell echo $(1) | tr a-z A-Z)
+
+# $(call prony_long,NAME): the host's expectation and the native runner
+define prony_long
+$(T)/prony/long_ref-$(1): tests/prony/long_ref.c tests/prony/long_hash.h tests/support/force_sequence.h \
+    $(T)/gen/$(1).h $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -I$(T)/gen -Itests/prony -DGOLDEN_H='"$(1)_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  $$< $(call host_test_link,native) -o $$@
+$(T)/gen/$(1)_long.h: $(T)/prony/long_ref-$(1)
+	$$(call say,GEN)
+	$(Q)$$< $$@
+$(T)/prony/long_run-$(1): tests/prony/long_run.c $(T)/gen/$(1)_long.h $(B)/native/libtfit.a
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(T)/gen -Itests/prony -Itests/support \
+	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
+	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION -DLABEL='"$(1)/native"' \
+	  $$< $(B)/native/libtfit.a -o $$@
+endef
+$(foreach h,$(PRONY_LONG),$(eval $(call prony_long,$(h))))
+
+# $(call prony_long_fw,NAME,CORE): the same runner on a QEMU board
+define prony_long_fw
+$(FW)/$(2)/long-$(1).elf: tests/prony/long_run.c $(T)/gen/$(1)_long.h $(FW_STARTUP) $(FW_SEMIHOST) \
+    $(FW_LIB_$(2)) linker/$(FW_LD_$(2)) linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) -I$(T)/gen -Itests/prony -Itests/support -DLONG_QEMU \
+	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
+	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  -DLABEL='"$(1)/$(FW_QEMU_$(2))"' $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) \
+	  -T $(FW_LD_$(2)) -o $$@
+endef
+$(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_fw,$(h),$(c)))))
+
+# make check runs the small test models under QEMU (about 15 s per core);
+# the block48-shaped haptic_creep (121 points, about 30 s per core) runs
+# with the native ones everywhere and under QEMU in prony-long-qemu.
+PRONY_LONG_QEMU_CHECK := families
+PRONY_LONG_QEMU_RUNS := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=prony-long-$(c)-%))
+PRONY_LONG_QEMU_ALL := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG:%=prony-long-$(c)-%))
+.PHONY: check-prony-long prony-long-qemu $(PRONY_LONG_QEMU_ALL)
+define prony_long_qemu
+prony-long-$(2)-$(1): $(FW)/$(2)/long-$(1).elf
+	@tests/firmware/qemu_run.sh $(FW_QEMU_$(2)) $$<
+endef
+$(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_qemu,$(h),$(c)))))
+
+CHECKS += check-prony-long
+check-prony-long: $(PRONY_LONG:%=$(T)/prony/long_run-%) \
+    $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=$(FW)/$(c)/long-%.elf))
+	@echo "== prony models: 10^6 ticks of a haptic force history, native and QEMU (M4F, M7), against the host reference =="
+	@set -e; for h in $(PRONY_LONG); do $(T)/prony/long_run-$$h; done
+	@$(MAKE) --no-print-directory $(PRONY_LONG_QEMU_RUNS)
+	@echo "ok: every prony model bit-exact over 10^6 ticks natively ($(PRONY_LONG)) and under QEMU ($(PRONY_LONG_QEMU_CHECK))"
+
+prony-long-qemu: $(PRONY_LONG_QEMU_ALL)
+	@echo "== prony models: 10^6 ticks under QEMU, M4F and M7, every test header ($(PRONY_LONG)) =="
+
+# --- the float32 study -----------------------------------------------------------
+$(T)/prony/recursion_study: tests/prony/recursion_study.c tests/support/force_sequence.h \
+    $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+.PHONY: prony-study
+prony-study: $(T)/prony/recursion_study
+	@echo "== prony: float32 error of one term's update over 10^6 ticks, by T/tau =="
+	@$< 1000000 | tee docs/data/prony_recursion.txt
+
+# --- the tick period, checked at compile time ------------------------------------
+# haptic_creep is fitted for 1 ms: TFIT_TICK_NS=1000000 and TFIT_TICK_US=1000
+# compile, any other tick must stop at the header's #error.
+.PHONY: check-prony-tick
+CHECKS += check-prony-tick
+check-prony-tick: tests/prony/tick_tu.c $(T)/gen/haptic.h
+	@echo "== prony: a firmware whose tick differs from the model's does not compile =="
+	@set -e; cc="$(CC) $(HOST_STRICT) -Itarget/include -I$(T)/gen -fsyntax-only"; \
+	for ok in -DTFIT_TICK_NS=1000000 -DTFIT_TICK_US=1000 ""; do \
+	  $$cc $$ok $< || { echo "the model's own tick ($$ok) was refused"; exit 1; }; done; \
+	for bad in -DTFIT_TICK_NS=999999 -DTFIT_TICK_NS=500000 -DTFIT_TICK_US=999 -DTFIT_TICK_US=100; do \
+	  if $$cc $$bad $< 2>$(T)/prony-tick.err; then echo "$$bad compiled against a 1 ms model"; exit 1; fi; \
+	  grep -q 'fitted for a 1000000 ns tick' $(T)/prony-tick.err || { cat $(T)/prony-tick.err; exit 1; }; \
+	done; \
+	echo "ok: haptic_creep (1 ms) compiles with TFIT_TICK_NS=1000000, TFIT_TICK_US=1000 or neither; TFIT_TICK_NS=999999, 500000 and TFIT_TICK_US=999, 100 stop at its #error"
