@@ -83,9 +83,4 @@ uint32_t tf_model_table_bytes(const tf_model *m);
  * coef + 12 as that family's do; not an owner: never free it). */
 tf_model tf_prony_static_view(const tf_model *m);
 
-/* "nodal", "modal", "zhou2017", "contact", "prony", or NULL. */
-const char *tf_family_name(tfit_family f);
-/* Family from its name; 0 when unknown. */
-tfit_family tf_family_from_name(const char *name);
-
 #endif /* TF_MODEL_H */

@@ -24,6 +24,11 @@
 
 #include "model/model.h"
 
+/* The slowest time constant a model may have, in ticks: beyond it the
+ * float32 update of a term loses more than 0.1 % of the peak response over
+ * 10^6 ticks (measured: make prony-study, docs/fitting.md §7). */
+#define TF_PRONY_MAX_TAU_TICKS 1e5
+
 /* The float decay a = exp(-T / tau) rounded to nearest, and the time
  * constant it realises.  tick and tau in seconds, tau > 0. */
 float tf_prony_decay(double tick, double tau);

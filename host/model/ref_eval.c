@@ -358,9 +358,11 @@ tfit_status tf_ref_prony_step(const tf_model *m, float *state, const float in[3]
 
 tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
 {
-    if (m->family == TFIT_FAMILY_PRONY) { /* one tick from rest */
+    if (m->family == TFIT_FAMILY_PRONY) { /* relaxed: the force held for ever */
         float state[TFIT_PRONY_MAX_STATE];
+        int clamped, bad;
         tf_ref_prony_reset(m, state);
+        tf_ref_input(m, in, state, &clamped, &bad, NULL); /* gp = g: no increment, e_k = 0 */
         return tf_ref_prony_step(m, state, in, out, ops);
     }
     arith c = {{0, 0, 0}};

@@ -16,8 +16,10 @@
 
 /* Evaluates m at the raw input in[3] (N or mm) into out[3 m->n_out].
  * Returns the tfit_status the target must return.  When ops is not NULL the
- * operations performed are added to it.  A prony model takes one tick from
- * a reset state. */
+ * operations performed are added to it.  A prony model gives its relaxed
+ * response (the force held for ever: the state {g, 0}, then one tick), the
+ * equilibrium a time-dependent solver's static solve gives; h = g there,
+ * so it is its static map at g. */
 tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops);
 
 /* A prony model's state (TFIT_PRONY_STATE_WORDS(K) floats) at rest, and one
