@@ -8,10 +8,16 @@
 #   prony-long-qemu    the same under QEMU for every test header (haptic.h's
 #                      block48-shaped model too: about a minute)
 #   check-prony-tick   a firmware stating another tick does not compile
+#   check-prony-fit    block48 as a linear viscoelastic body (seed 001's
+#                      Kelvin solid; a two-term creep): the prony family's
+#                      order search on synthetic training histories, held-out
+#                      press-hold-release histories within 2 % of the peak
+#                      displacement; writes creep48.h (the fitted model), whose
+#                      golden vectors and 10^6-tick run are checked too
 #   prony-study        the float32 accuracy of one term's update over 10^6
 #                      ticks against double, by T / tau (docs/fitting.md)
 
-PRONY_LONG := families haptic
+PRONY_LONG := families haptic creep48
 PRONY_LONG_CORES := m4f m7
 upper = $(shell echo $(1) | tr a-z A-Z)
 
@@ -51,8 +57,9 @@ endef
 $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_fw,$(h),$(c)))))
 
 # make check runs the small test models under QEMU (about 15 s per core);
-# the block48-shaped haptic_creep (121 points, about 30 s per core) runs
-# with the native ones everywhere and under QEMU in prony-long-qemu.
+# the block48-shaped ones (haptic_creep, creep48: 121 points, about 30 s
+# per core each) run natively in make check and under QEMU in
+# prony-long-qemu.
 PRONY_LONG_QEMU_CHECK := families
 PRONY_LONG_QEMU_RUNS := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=prony-long-$(c)-%))
 PRONY_LONG_QEMU_ALL := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG:%=prony-long-$(c)-%))
@@ -101,3 +108,33 @@ check-prony-tick: tests/prony/tick_tu.c $(T)/gen/haptic.h
 	  grep -q 'fitted for a 1000000 ns tick' $(T)/prony-tick.err || { cat $(T)/prony-tick.err; exit 1; }; \
 	done; \
 	echo "ok: haptic_creep (1 ms) compiles with TFIT_TICK_NS=1000000, TFIT_TICK_US=1000 or neither; TFIT_TICK_NS=999999, 500000 and TFIT_TICK_US=999, 100 stop at its #error"
+
+# --- the fit: block48 creeping, synthetic histories -------------------------------
+PRONY_KELVIN := kelvin:0.32,0.192,0.192
+PRONY_TWO_TERMS := two:0.25,0.3,0.2,3
+PRONY_MAX_REL := 0.02
+
+$(T)/prony/creep_fit: tests/prony/creep_fit.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+$(T)/gen/creep48.h: $(T)/prony/creep_fit coeffs/block48.yaml
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< coeffs/block48.yaml $(PRONY_KELVIN) $@ $(PRONY_MAX_REL) >$(T)/prony/creep48.log || \
+	  { cat $(T)/prony/creep48.log; exit 1; }
+
+$(T)/prony/golden-creep48: tests/header/run_golden.c $(T)/gen/creep48.h $(B)/native/libtfit.a
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"creep48_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DTFIT_CREEP48_IMPLEMENTATION $< \
+	  $(B)/native/libtfit.a -o $@
+
+.PHONY: check-prony-fit
+CHECKS += check-prony-fit
+check-prony-fit: $(T)/prony/creep_fit $(T)/gen/creep48.h $(T)/prony/golden-creep48
+	@echo "== prony: block48 creeping (synthetic linear viscoelastic histories), held-out press-hold-release within 2 % of the peak =="
+	@cat $(T)/prony/creep48.log
+	@$(T)/prony/creep_fit coeffs/block48.yaml $(PRONY_TWO_TERMS) $(T)/prony/creep2.h $(PRONY_MAX_REL)
+	@$(T)/prony/golden-creep48 creep48/native

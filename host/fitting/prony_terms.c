@@ -8,9 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <lapacke.h>
+
 #include "fitting/families/common.h"
 #include "numerics/lm.h"
-#include "numerics/lsq.h"
 
 /* What the LM residual needs: the data, the histories, K, and work arrays. */
 typedef struct fit {
@@ -50,35 +51,48 @@ static void term_column(const fit *f, double tau, double *col)
     }
 }
 
-/* Weights for the columns in use (mask) by least squares; a negative one
- * drops its column and the rest are solved again.  Returns 0, or -1 when
- * the columns in use are dependent or the solve fails. */
-static int weights(fit *f, unsigned mask, char *err, size_t errlen)
+/* Weights for the columns in use (mask) by least squares, from the normal
+ * equations (K <= 8 columns: their Gram matrix is tiny, and Cholesky of it
+ * costs nothing beside forming it); a negative weight drops its column and
+ * the rest are solved again.  Returns 0, or -1 when the columns in use are
+ * dependent (the Gram matrix not positive definite to working precision). */
+static int weights(fit *f, unsigned mask)
 {
-    double *a = malloc(f->m * (size_t)f->k * sizeof *a);
-    if (a == NULL) {
-        snprintf(err, errlen, "out of memory for a %zu x %d design", f->m, f->k);
-        return -1;
+    double gram[TFIT_PRONY_MAX_TERMS][TFIT_PRONY_MAX_TERMS], rhs[TFIT_PRONY_MAX_TERMS];
+    for (int i = 0; i < f->k; ++i) {
+        const double *ei = f->e + (size_t)i * f->m;
+        rhs[i] = 0;
+        for (size_t r = 0; r < f->m; ++r) {
+            rhs[i] += ei[r] * f->y[r];
+        }
+        for (int j = 0; j <= i; ++j) {
+            const double *ej = f->e + (size_t)j * f->m;
+            double s = 0;
+            for (size_t r = 0; r < f->m; ++r) {
+                s += ei[r] * ej[r];
+            }
+            gram[i][j] = gram[j][i] = s;
+        }
     }
     for (int round = 0; round <= f->k; ++round) {
         int cols[TFIT_PRONY_MAX_TERMS], nc = 0;
+        double a[TFIT_PRONY_MAX_TERMS * TFIT_PRONY_MAX_TERMS], x[TFIT_PRONY_MAX_TERMS];
         for (int j = 0; j < f->k; ++j) {
             f->w[j] = 0;
             if (mask & (1u << j)) {
-                memcpy(a + (size_t)nc * f->m, f->e + (size_t)j * f->m, f->m * sizeof *a);
                 cols[nc++] = j;
             }
         }
         if (nc == 0) {
-            break;
+            return 0;
         }
-        double x[TFIT_PRONY_MAX_TERMS];
-        tf_lsq *q = tf_lsq_factor(f->m, (size_t)nc, a, f->m, NULL, 1e-10, err, errlen);
-        int rc = q == NULL || tf_lsq_rank(q) < (size_t)nc ||
-                 tf_lsq_solve(q, 1, f->y, f->m, x, (size_t)nc, NULL, err, errlen) != 0;
-        tf_lsq_free(q);
-        if (rc) {
-            free(a);
+        for (int i = 0; i < nc; ++i) {
+            x[i] = rhs[cols[i]];
+            for (int j = 0; j < nc; ++j) {
+                a[i + j * nc] = gram[cols[i]][cols[j]];
+            }
+        }
+        if (LAPACKE_dposv(LAPACK_COL_MAJOR, 'L', nc, 1, a, nc, x, nc) != 0) {
             return -1;
         }
         unsigned negative = 0;
@@ -89,11 +103,10 @@ static int weights(fit *f, unsigned mask, char *err, size_t errlen)
             }
         }
         if (negative == 0) {
-            break;
+            return 0;
         }
         mask &= ~negative;
     }
-    free(a);
     return 0;
 }
 
@@ -101,11 +114,10 @@ static int weights(fit *f, unsigned mask, char *err, size_t errlen)
 static int residual(void *ctx, const double *p, double *r)
 {
     fit *f = ctx;
-    char err[256];
     for (int j = 0; j < f->k; ++j) {
         term_column(f, exp(p[j]), f->e + (size_t)j * f->m);
     }
-    f->ok = weights(f, (1u << f->k) - 1, err, sizeof err) == 0;
+    f->ok = weights(f, (1u << f->k) - 1) == 0;
     for (size_t i = 0; i < f->m; ++i) {
         double v = f->y[i];
         for (int j = 0; j < f->k; ++j) {
@@ -170,6 +182,13 @@ static int by_tau(const void *x, const void *y)
 int tf_prony_fit_terms(const tf_prony_data *d, const size_t *idx, size_t n, int k, double tau_lo,
                        double tau_hi, tf_prony_terms *out, char *err, size_t errlen)
 {
+    return tf_prony_fit_terms_from(d, idx, n, k, tau_lo, tau_hi, 3, out, err, errlen);
+}
+
+int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out,
+                            char *err, size_t errlen)
+{
     fit f;
     memset(out, 0, sizeof *out);
     if (k < 0 || k > TFIT_PRONY_MAX_TERMS || !(tau_lo > 0 && tau_lo < tau_hi)) {
@@ -208,7 +227,7 @@ int tf_prony_fit_terms(const tf_prony_data *d, const size_t *idx, size_t n, int 
     tf_lm_default_options(&opt, (size_t)k);
     opt.ftol = opt.xtol = 1e-9;
     const double shifts[3] = {0.0, -0.3, 0.3};
-    for (int s = 0; s < 3; ++s) {
+    for (int s = 0; s < starts && s < 3; ++s) {
         double p[TFIT_PRONY_MAX_TERMS];
         tf_lm_result res;
         memset(&res, 0, sizeof res);

@@ -16,7 +16,9 @@
  * and at every step the weights are the least-squares solution for those
  * time constants (variable projection; Golub and Pereyra 1973), kept
  * non-negative by dropping a term whose weight comes out negative and
- * solving again.  Their sum must not exceed 1 (a creep function starts at
+ * solving again.  Three starts, the time constants spread log-evenly
+ * over the range and shifted by -0.3 and +0.3 of their spacing; the best
+ * is kept.  Their sum must not exceed 1 (a creep function starts at
  * J(0) >= 0); a fit whose weights need more is refused as undetermined.
  */
 #ifndef TF_PRONY_TERMS_H
@@ -47,6 +49,12 @@ typedef struct tf_prony_terms {
  * determine K terms). */
 int tf_prony_fit_terms(const tf_prony_data *d, const size_t *idx, size_t n, int k, double tau_lo,
                        double tau_hi, tf_prony_terms *out, char *err, size_t errlen);
+
+/* The same from `starts` (1 to 3) starting points (cheaper, for
+ * cross-validation's many fits). */
+int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out,
+                            char *err, size_t errlen);
 
 /* RMS of h - target over histories idx[0..n) (idx NULL: all). */
 double tf_prony_terms_rms(const tf_prony_data *d, const size_t *idx, size_t n,

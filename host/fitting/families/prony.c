@@ -276,7 +276,7 @@ int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const t
                 }
             }
             tf_prony_terms t;
-            if (tf_prony_fit_terms(d, idx, nt, k, lo, hi, &t, err, errlen) != 0) {
+            if (tf_prony_fit_terms_from(d, idx, nt, k, lo, hi, 1, &t, err, errlen) != 0) {
                 break;
             }
             for (size_t i = 0; i < n; ++i) {
