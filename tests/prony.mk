@@ -15,7 +15,9 @@
 #                      displacement; writes creep48.h (the fitted model), whose
 #                      golden vectors and 10^6-tick run are checked too
 #   prony-study        the float32 accuracy of one term's update over 10^6
-#                      ticks against double, by T / tau (docs/fitting.md)
+#                      ticks against double, by T / tau, and the filter on
+#                      the static map's input against its output
+#                      (docs/fitting.md §7, docs/validation/prony_*.txt)
 
 PRONY_LONG := families haptic creep48
 PRONY_LONG_CORES := m4f m7
@@ -81,17 +83,20 @@ check-prony-long: $(PRONY_LONG:%=$(T)/prony/long_run-%) \
 prony-long-qemu: $(PRONY_LONG_QEMU_ALL)
 	@echo "== prony models: 10^6 ticks under QEMU, M4F and M7, every test header ($(PRONY_LONG)) =="
 
-# --- the float32 study -----------------------------------------------------------
-$(T)/prony/recursion_study: tests/prony/recursion_study.c tests/support/force_sequence.h \
-    $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+# --- studies (docs/fitting.md §7; results committed in docs/validation/) --------
+$(T)/prony/recursion_study $(T)/prony/structure_study: $(T)/prony/%: tests/prony/%.c \
+    tests/support/force_sequence.h $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
 
 .PHONY: prony-study
-prony-study: $(T)/prony/recursion_study
+prony-study: $(T)/prony/recursion_study $(T)/prony/structure_study
+	@mkdir -p docs/validation
 	@echo "== prony: float32 error of one term's update over 10^6 ticks, by T/tau =="
-	@$< 1000000 | tee docs/data/prony_recursion.txt
+	@$(T)/prony/recursion_study 1000000 | tee docs/validation/prony_recursion.txt
+	@echo "== prony: terms on the static map's input (Wiener) or output (Hammerstein) =="
+	@$(T)/prony/structure_study | tee docs/validation/prony_structure.txt
 
 # --- the tick period, checked at compile time ------------------------------------
 # haptic_creep is fitted for 1 ms: TFIT_TICK_NS=1000000 and TFIT_TICK_US=1000

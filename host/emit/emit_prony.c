@@ -3,6 +3,8 @@
  */
 #include "emit/emit_prony.h"
 
+#include <math.h>
+
 #include "model/prony.h"
 
 /* The term's time constant (s) as the device realises it, and its weight
@@ -30,6 +32,12 @@ void tf_emit_prony_banner(FILE *f, const tf_model *m)
         fprintf(f, " - %.4g exp(-t/%.4g s)", w, tau);
     }
     fprintf(f, "\n");
+    if (!isnan(m->heldout_rel_max)) {
+        fprintf(f,
+                " *       held-out cases are force histories stepped from rest: largest error "
+                "%.3g %% of the largest displacement\n",
+                100 * m->heldout_rel_max);
+    }
 }
 
 void tf_emit_prony_macros(FILE *f, const tf_model *m, const char *p)

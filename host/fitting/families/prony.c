@@ -205,7 +205,8 @@ static void tau_range(const tf_histories *h, double *lo, double *hi)
     *hi = fmax(2 * h->tick, (double)h->train.n_ticks * h->tick);
 }
 
-static int tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err, size_t errlen)
+int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
+                         size_t errlen)
 {
     for (int k = 0; k < t->n; ++k) {
         if (t->tau[k] > TF_PRONY_MAX_TAU_TICKS * h->tick) {
@@ -244,7 +245,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     tf_model *model = NULL;
     if (tf_prony_data_build(s, &h->train, h->tick, &d, err, errlen) == 0) {
         if (tf_prony_fit_terms(&d, NULL, 0, (int)orders[2], lo, hi, &t, err, errlen) == 0 &&
-            tick_allows(&t, h, err, errlen) == 0) {
+            tf_prony_tick_allows(&t, h, err, errlen) == 0) {
             model = assemble(s, &t, h->tick_ns, err, errlen);
         }
         tf_prony_data_free(&d);
@@ -322,7 +323,7 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
         rc = tf_prony_select_terms(&d, c->hist, plan, cv, &k, &t, err, errlen);
         tf_prony_data_free(&d);
     }
-    if (rc == 0 && tick_allows(&t, c->hist, err, errlen) == 0) {
+    if (rc == 0 && tf_prony_tick_allows(&t, c->hist, err, errlen) == 0) {
         r->model = assemble(s, &t, c->hist->tick_ns, err, errlen);
     }
     tf_model_free(s);

@@ -32,6 +32,11 @@ void tf_prony_data_free(tf_prony_data *d);
 int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const tf_fit_plan *plan,
                           double *cv, int *best, tf_prony_terms *terms, char *err, size_t errlen);
 
+/* 0 when every time constant of t is within TF_PRONY_MAX_TAU_TICKS ticks
+ * of h (model/prony.h); else -1 with a message naming the tick it needs. */
+int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
+                         size_t errlen);
+
 /* The float32 model m stepped through every history of set from rest
  * (tf_ref_prony_step), against the true displacements: the largest and RMS
  * error and the largest |displacement| (mm).  Returns 0, or -1 when out of
