@@ -160,6 +160,18 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                        plan->direct, &o->cases) != 0) {
         return -1;
     }
+    if (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) {
+        tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
+                "of %u us", plan->hist_train, plan->hist_heldout, plan->hist_ticks,
+                plan->tick_ns / 1000);
+        if (tf_histories_solve(&o->cases, plan->tick_ns, plan->hist_train, plan->hist_heldout,
+                               plan->hist_ticks, plan->seed, &o->hist) != 0) {
+            tf_cases_free(&o->cases);
+            return -1;
+        }
+        o->has_hist = 1;
+        o->cases.hist = &o->hist;
+    }
     o->seconds_cases = seconds() - t0;
     warn_large(ctx, p, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
@@ -193,6 +205,10 @@ void tf_fit_outcome_free(tf_fit_outcome *o)
     o->fam = NULL;
     o->n_families = 0;
     tf_cases_free(&o->cases);
+    if (o->has_hist) {
+        tf_histories_free(&o->hist);
+        o->has_hist = 0;
+    }
 }
 
 const tf_family_result *tf_fit_result_of(const tf_fit_outcome *o, const tf_family *f)

@@ -19,10 +19,17 @@ typedef struct tf_fit_plan {
     uint32_t max_degree;  /* degrees searched (nodal, modal, contact): 0 (1) .. max */
     uint32_t max_rank;    /* ranks searched (modal): 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
+    /* Force histories, for a time-dependent solver (histories.h): the tick
+     * (the prony model's), how many training and held-out histories, and
+     * their length in ticks. */
+    uint32_t tick_ns;
+    size_t hist_train, hist_heldout, hist_ticks;
 } tf_fit_plan;
 
 /* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,
- * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows. */
+ * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows;
+ * for a time-dependent solver 12 training and 6 held-out histories of
+ * 5000 ticks of 1 ms. */
 void tf_fit_plan_defaults(tf_fit_plan *p);
 
 #endif /* TF_FIT_PLAN_H */
