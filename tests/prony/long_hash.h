@@ -20,23 +20,20 @@ static inline uint32_t tf_long_word(uint32_t h, uint32_t w)
     return (h ^ w) * 16777619u;
 }
 
+typedef union tf_long_fu {
+    float f;
+    uint32_t u;
+} tf_long_fu;
+
 static inline uint32_t tf_long_bits(float f)
 {
-    union {
-        float f;
-        uint32_t u;
-    } v;
-    v.f = f;
+    tf_long_fu v = {.f = f};
     return v.u;
 }
 
 static inline float tf_long_float(uint32_t u)
 {
-    union {
-        float f;
-        uint32_t u;
-    } v;
-    v.u = u;
+    tf_long_fu v = {.u = u};
     return v.f;
 }
 

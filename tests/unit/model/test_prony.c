@@ -75,6 +75,22 @@ static void target_agrees_with_reference_over_long_histories(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* A one-point prony model of degree 1 with K terms whose static map is
+ * the identity (out = h: rows x, y, z = (0, 1, 0, 0), ...), its input map
+ * the ball of radius R around centre; terms not set. */
+static tf_model *identity_model(uint32_t terms, const double centre[3], double radius)
+{
+    const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, terms, 1000000}; /* 1 ms */
+    char err[256];
+    tf_model *m = tf_model_new("i", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
+    tf_model_set_ball(m, centre, radius);
+    float *rows = tf_model_tables(m) + 2 * terms;
+    for (int c = 0; c < 3; ++c) {
+        rows[4 * c + 1 + c] = 1.0f;
+    }
+    return m;
+}
+
 /* Exact creep of one term for a piecewise-linear input (first-order hold):
  * tau x' = g - x over a tick where g goes from g0 to g1. */
 static double exact_lag(double x, double g0, double g1, double tick, double tau)
@@ -89,18 +105,13 @@ static double exact_lag(double x, double g0, double g1, double tick, double tau)
 static void update_is_the_exact_first_order_hold(void **state)
 {
     (void)state;
-    const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, 2, 1000000}; /* 1 ms */
-    char err[256];
-    tf_model *m = tf_model_new("c", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
+    const double origin[3] = {0, 0, 0};
+    tf_model *m = identity_model(2, origin, 1.0);
     const double tau_asked[2] = {0.004, 0.35}, w[2] = {0.3, 0.45};
     double tau[2];
     for (int k = 0; k < 2; ++k) {
         tau[k] = tf_prony_set_term(m, (uint32_t)k, tau_asked[k], w[k]);
         assert_true(fabs(tau[k] / tau_asked[k] - 1) < 1e-3);
-    }
-    float *rows = tf_model_tables(m) + 4; /* u = h: rows x, y, z = (0, 1, 0, 0), ... */
-    for (int c = 0; c < 3; ++c) {
-        rows[4 * c + 1 + c] = 1.0f;
     }
     tfit_model t;
     tf_target_view(m, &t);
@@ -178,16 +189,9 @@ static void bad_tick_leaves_the_state(void **state)
 static void reset_and_relaxation(void **state)
 {
     (void)state;
-    const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, 1, 1000000};
-    char err[256];
-    tf_model *m = tf_model_new("r", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
     const double centre[3] = {0.25, 0, 0};
-    tf_model_set_ball(m, centre, 2.0);
+    tf_model *m = identity_model(1, centre, 2.0);
     tf_prony_set_term(m, 0, 0.01, 0.6);
-    float *rows = tf_model_tables(m) + 2;
-    for (int c = 0; c < 3; ++c) {
-        rows[4 * c + 1 + c] = 1.0f;
-    }
     tfit_model t;
     tf_target_view(m, &t);
     float st[TFIT_PRONY_MAX_STATE], out[3];
