@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 typedef struct tf_family tf_family; /* fitting/families/family.h */
+typedef struct tf_case_runner tf_case_runner; /* fitting/case_runner.h */
 
 typedef struct tf_fit_plan {
     const tf_family *family; /* forward family to emit (the registry's) */
@@ -24,6 +25,9 @@ typedef struct tf_fit_plan {
      * their length in ticks. */
     uint32_t tick_ns;
     size_t hist_train, hist_heldout, hist_ticks;
+    /* where the cases of a solver that is not affine are solved: NULL here,
+     * or spread over ranks (dist/); the bits are the same */
+    const tf_case_runner *runner;
 } tf_fit_plan;
 
 /* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,
