@@ -13,7 +13,8 @@
 #                      order search on synthetic training histories, held-out
 #                      press-hold-release histories within 2 % of the peak
 #                      displacement; writes creep48.h (the fitted model), whose
-#                      golden vectors and 10^6-tick run are checked too
+#                      golden vectors, 10^6-tick run and instruction count
+#                      per tick (callgrind) are checked too
 #   prony-study        the float32 accuracy of one term's update over 10^6
 #                      ticks against double, by T / tau, and the filter on
 #                      the static map's input against its output
@@ -136,11 +137,18 @@ $(T)/prony/golden-creep48: tests/header/run_golden.c $(T)/gen/creep48.h $(B)/nat
 	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DTFIT_CREEP48_IMPLEMENTATION $< \
 	  $(B)/native/libtfit.a -o $@
 
+$(T)/prony/probe-creep48: tests/insncount/probe.c $(T)/gen/creep48.h $(B)/native/libtfit.a
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"creep48_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_CREEP48_GOLDEN_Q31_SETS \
+	  -DTFIT_CREEP48_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
+
 .PHONY: check-prony-fit
 CHECKS += check-prony-fit
-check-prony-fit: $(T)/prony/creep_fit $(T)/gen/creep48.h $(T)/prony/golden-creep48
+check-prony-fit: $(T)/prony/creep_fit $(T)/gen/creep48.h $(T)/prony/golden-creep48 $(T)/prony/probe-creep48
 	@echo "== prony: block48 creeping (synthetic linear viscoelastic histories), held-out press-hold-release within 2 % of the peak =="
 	@cat $(T)/prony/creep48.log
 	@$(T)/prony/creep_fit coeffs/block48.yaml $(PRONY_TWO_TERMS) $(T)/prony/creep2.h $(PRONY_MAX_REL)
 	@$(T)/prony/golden-creep48 creep48/native
-	@echo "ok: block48 creeping: K and the time constants recovered (one and two terms), held-out histories within $(PRONY_MAX_REL) x the peak; creep48.h's golden vectors bit-exact natively"
+	@tests/insncount/run.sh $(T)/prony/probe-creep48 $(T)/prony/insncount-creep48
+	@echo "ok: block48 creeping: K and the time constants recovered (one and two terms), held-out histories within $(PRONY_MAX_REL) x the peak; creep48.h's golden vectors bit-exact natively, one instruction count for every tick of its golden sequence"

@@ -72,8 +72,7 @@ int main(int argc, char **argv)
     tf_solver *solver = tf_solver_create(&scene->problem, NULL, &ctx);
     tf_cases cases;
     tf_histories hist;
-    if (solver == NULL || tf_cases_build(&scene->problem, solver, plan.contact, plan.n_train,
-                                         plan.n_heldout, plan.seed, 0, &cases) != 0) {
+    if (solver == NULL || tf_cases_build(&scene->problem, solver, &plan, &cases) != 0) {
         fprintf(stderr, "creep_fit: %s\n", ctx.err);
         return 1;
     }
