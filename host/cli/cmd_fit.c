@@ -15,6 +15,7 @@
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "cli/cmd_fit.h"
+#include "base/clock.h"
 #include "emit/emit_header.h"
 #include "fitting/pipeline.h"
 #include "report/fit_report.h"
@@ -67,6 +68,7 @@ typedef struct fit_args {
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
     tf_sets sets;
+    double seconds_setup; /* the solver's assembly and factorisation */
 } fit_args;
 
 /* A positive finite number, or -1 with a message. */
@@ -319,12 +321,29 @@ static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s
                  "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
         return TF_EXIT_USAGE;
     }
+    const double t0 = tf_seconds();
     *solver = tf_solver_create(&(*s)->problem, NULL, ctx);
+    a->seconds_setup = tf_seconds() - t0;
     if (*solver == NULL) {
         tf_error(ctx, "fit: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
+}
+
+/* Where the time to regenerate a header goes (make bench-regen reads this
+ * line): the solver's setup (assembly, factorisation), the load cases'
+ * solves, the families' fits (orders, held-out errors), and the rest
+ * (selection sweep, golden vectors, writing). */
+static void time_split(const tf_ctx *ctx, const fit_args *a, const tf_fit_outcome *o,
+                       double total)
+{
+    double fits = 0;
+    for (size_t i = 0; i < o->n_families; ++i) {
+        fits += o->fam[i].seconds;
+    }
+    tf_info(ctx, "fit: time: setup %.3f s, solves %.3f s, fits %.3f s, header %.3f s", a->seconds_setup,
+            o->seconds_cases, fits, total - o->seconds_cases - fits);
 }
 
 /* The fit, the header and the report. */
@@ -333,6 +352,7 @@ static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *s
 {
     char err[1024];
     tf_fit_outcome o;
+    const double t0 = tf_seconds();
     int fitted = tf_fit_run(p, solver, plan, &o);
     if (fitted != 0) {
         tf_error(ctx, "fit: %s: %s", a->scene, ctx->err);
@@ -344,6 +364,9 @@ static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *s
                   tf_fit_emitted(&o, plan, TF_FAMILY_INVERSE), NULL);
     } else {
         rc = emit_selected(ctx, a, p, solver, plan, &o);
+    }
+    if (rc == TF_EXIT_OK) {
+        time_split(ctx, a, &o, tf_seconds() - t0);
     }
     if (rc == TF_EXIT_OK && a->report &&
         tf_report_fit(a->report, a->out, p, solver, plan, &o, err, sizeof err) != 0) {
