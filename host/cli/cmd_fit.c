@@ -17,6 +17,7 @@
 #include "cli/cmd_fit.h"
 #include "base/clock.h"
 #include "emit/emit_header.h"
+#include "fitting/discretisation.h"
 #include "fitting/pipeline.h"
 #include "report/fit_report.h"
 #include "base/log.h"
@@ -32,7 +33,8 @@ static void help(FILE *out)
     fprintf(out,
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
-            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n\n"
+            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n"
+            "                     [--reference INDEX.csv]\n\n"
             "Solves the scene's load cases (one factorisation), fits every model family\n"
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
@@ -52,6 +54,9 @@ static void help(FILE *out)
             "                      time plus the contact inverse's fits X microseconds\n"
             "  --max-error-mm E    emit the cheapest forward model within E mm held-out\n"
             "                      (with --budget-us: the cheapest within both)\n"
+            "  --reference F.csv   a finer solution of the same physics (CalculiX, ...):\n"
+            "                      the header states the solve's error against it\n"
+            "                      beside the fit's (docs/fitting.md, format there)\n"
             "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
             "                      These three choose among every candidate of\n"
             "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
@@ -63,8 +68,9 @@ static void help(FILE *out)
 }
 
 typedef struct fit_args {
-    const char *scene, *out, *family, *contact, *report;
+    const char *scene, *out, *family, *contact, *report, *reference;
     int direct;
+    tf_discretisation phys; /* measured when reference != NULL */
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
     tf_sets sets;
@@ -90,7 +96,8 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
         {"contact", required_argument, NULL, 'c'}, {"set", required_argument, NULL, 's'},
         {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
         {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
-        {"mcu", required_argument, NULL, 'm'},     {0}};
+        {"mcu", required_argument, NULL, 'm'},     {"reference", required_argument, NULL, 'p'},
+        {0}};
     char err[256];
     int c;
     optind = 1;
@@ -117,6 +124,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
             break;
         case 'd':
             a->direct = 1;
+            break;
+        case 'p':
+            a->reference = optarg;
             break;
         case 'b':
             if (positive(ctx, "--budget-us", optarg, &a->budget_us) != 0) {
@@ -215,6 +225,24 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
     }
 }
 
+/* The models' error against the physics: the forward model's displacement
+ * error bound; the contact inverse's force error from the relative error of
+ * the contact site's compliance over the largest force of the envelope. */
+static void state_physics(const tf_discretisation *d, const tf_envelope *env, tf_model *fwd,
+                          tf_model *con)
+{
+    const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
+    fwd->discretisation_max = d->max_mm;
+    con->discretisation_max = d->site_rel * biggest;
+    snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
+             "%s, %zu load case%s at %zu points, %s", d->source, d->cases, d->cases == 1 ? "" : "s",
+             d->points, d->enveloped ? "bound over the envelope (linear)" : "largest over the cases");
+    snprintf(con->discretisation_note, sizeof con->discretisation_note,
+             "%s: contact-site displacement off by %.3g %% (reference point %.3g mm from the "
+             "site), times the largest force %.3g N",
+             d->source, 100 * d->site_rel, d->site_gap, biggest);
+}
+
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
@@ -231,6 +259,9 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     base[strcspn(base, ".")] = '\0';
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
+    if (a->reference != NULL) {
+        state_physics(&a->phys, &s->envelope, fwd, con);
+    }
     uint32_t crc = 0;
     if (file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
@@ -347,10 +378,20 @@ static void time_split(const tf_ctx *ctx, const fit_args *a, const tf_fit_outcom
 }
 
 /* The fit, the header and the report. */
-static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *solver,
+static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
                const tf_fit_plan *plan)
 {
     char err[1024];
+    if (a->reference != NULL) {
+        tf_info(ctx, "fit: the solve against the physics: %s", a->reference);
+        if (tf_discretisation_measure(solver, p, plan->contact, a->reference, &a->phys, err,
+                                      sizeof err) != 0) {
+            tf_error(ctx, "fit: --reference %s", err);
+            return TF_EXIT_USAGE;
+        }
+        tf_info(ctx, "fit: discretisation: max %.3g mm (%s), contact site %.3g %%", a->phys.max_mm,
+                a->phys.enveloped ? "over the envelope" : "over the cases", 100 * a->phys.site_rel);
+    }
     tf_fit_outcome o;
     const double t0 = tf_seconds();
     int fitted = tf_fit_run(p, solver, plan, &o);

@@ -152,6 +152,15 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->heldout_cases, m->heldout_max, output_unit(m, 0), m->heldout_rms,
                     output_unit(m, 0));
         }
+        if (isnan(m->discretisation_max)) {
+            fprintf(f, " *       error of the solve against the physics: not measured (tissuefit fit "
+                       "--reference)\n");
+        } else {
+            fprintf(f, " *       error against the physics: fit %.3g + discretisation %.3g = total <= %.3g %s\n",
+                    m->heldout_max, m->discretisation_max, m->heldout_max + m->discretisation_max,
+                    output_unit(m, 0));
+            fprintf(f, " *         (discretisation: %s)\n", m->discretisation_note);
+        }
         if (m->passivity_samples > 0) {
             fprintf(f, " *       passive over %u samples of its envelope: symmetric stiffness >= %.3g "
                        "N/mm; largest stiffness %.3g N/mm (the device must render it)\n",
@@ -207,6 +216,13 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         if (!isnan(m->heldout_rel_max)) {
             fprintf(f, "#define TFIT_%s_HELDOUT_REL_MAX %.6g\n", p, m->heldout_rel_max);
         }
+    }
+    if (!isnan(m->discretisation_max) && !isnan(m->heldout_max)) {
+        const char *u = output_unit(m, 1);
+        fprintf(f, "#define TFIT_%s_DISCRETISATION_MAX_%s %.6g /* the solve against the physics */\n",
+                p, u, m->discretisation_max);
+        fprintf(f, "#define TFIT_%s_TOTAL_MAX_%s %.6g /* held-out fit + discretisation */\n", p, u,
+                m->heldout_max + m->discretisation_max);
     }
     if (m->passivity_samples > 0) {
         fprintf(f, "#define TFIT_%s_STIFFNESS_MIN_N_PER_MM %.6g /* sym(df/ddelta), smallest eigenvalue */\n",
