@@ -36,7 +36,9 @@ check-coeffs: $(B)/bin/tissuefit
 	      if ! cmp -s $(B)/coeffs/t$$t/$$f coeffs/$$f; then \
 	        echo "coeffs/$$f differs from its regeneration with $$t thread(s): run make coeffs"; \
 	        diff $(B)/coeffs/t$$t/$$f coeffs/$$f | head -5; exit 1; fi; done; done; \
-	  echo "ok: $$h: identical to its regeneration with 1 and 2 threads"; done
+	  printf '#include "%s_golden.h"\n' $$n | $(CC) $(HOST_STRICT) -Itarget/include -Icoeffs \
+	    -fsyntax-only -x c - || { echo "coeffs/$${n}_golden.h does not pair with $$h"; exit 1; }; \
+	  echo "ok: $$h: identical to its regeneration with 1 and 2 threads; $${n}_golden.h has the CRC it names"; done
 
 # The held-out check, one binary per shipped scene, compiled with a header
 # fitted now by this build's tool (not the committed one, which

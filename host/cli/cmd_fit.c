@@ -157,6 +157,18 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
     return 0;
 }
 
+/* The header, its golden file and the report directory can be written:
+ * found out before the solve, not after it. */
+static int check_outputs(tf_ctx *ctx, const fit_args *a)
+{
+    char err[1024];
+    if (tf_emit_check_path(a->out, strlen("_forward"), err, sizeof err) != 0) {
+        tf_error(ctx, "fit: %s", err);
+        return -1;
+    }
+    return a->report ? tf_cmd_output_dir(ctx, "fit", a->report) : 0;
+}
+
 /* The plan from the scene's fit: section and the options. */
 static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_plan *p)
 {
@@ -252,10 +264,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
         return TF_EXIT_FAIL;
     }
-    if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
-        tf_error(ctx, "fit: %s: the header name is too long for its model names", a->out);
-        return TF_EXIT_USAGE;
-    }
+    snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out); /* fits: check_outputs */
     base[strcspn(base, ".")] = '\0';
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
@@ -272,12 +281,15 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         size_t k = strlen(note);
         snprintf(note + k, sizeof note - k, "\n%s", choice);
     }
+    const tf_contact *site = &s->contacts[p->contact];
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
-                               .notes = note, .golden_seed = p->seed};
+                               .notes = note, .golden_seed = p->seed,
+                               .points = s->outputs.points, .n_points = s->outputs.n_nodes,
+                               .contact_point = site->by_node ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
     if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
-        tf_error(ctx, "fit: %s", err);
-        return TF_EXIT_USAGE;
+        tf_error(ctx, "fit: %s", err); /* the path was checked: a failure while running */
+        return TF_EXIT_FAIL;
     }
     tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
             tf_family_of(fwd->family)->name);
@@ -343,8 +355,8 @@ static uint32_t fingerprint(const fit_args *a)
 static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s,
                    tf_fit_plan *plan, tf_solver **solver)
 {
-    if (parse(ctx, argc, argv, a) != 0 || (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL ||
-        make_plan(ctx, a, *s, plan) != 0) {
+    if (parse(ctx, argc, argv, a) != 0 || check_outputs(ctx, a) != 0 ||
+        (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL || make_plan(ctx, a, *s, plan) != 0) {
         return TF_EXIT_USAGE;
     }
     if (a->report && !tf_plot_available()) {

@@ -189,11 +189,13 @@ static double envelope_bound(const double *const diff[3], size_t rows, const dou
     return worst;
 }
 
-/* The reference point nearest the contact node, and the relative error there. */
+/* The reference point nearest the contact point (its node when given by
+ * number), and the relative error there. */
 static void site_error(const tf_solver *s, const tf_problem *p, int contact, const ref_case *c,
                        const double *diff, tf_discretisation *out)
 {
-    const double *xn = tf_solver_coords(s) + 3 * (size_t)p->contacts[contact].node;
+    const tf_contact *site = &p->contacts[contact];
+    const double *xn = site->by_node ? tf_solver_coords(s) + 3 * (size_t)site->node : site->at;
     size_t best = 0;
     double gap = INFINITY;
     for (size_t j = 0; j < c->np; ++j) {

@@ -128,7 +128,8 @@ int main(int argc, char **argv)
         }
     }
     /* the contact site: the reference point at its node */
-    const double *xn = tf_solver_coords(sv) + 3 * (size_t)p->contacts[0].node;
+    const tf_contact *ct = &p->contacts[0];
+    const double *xn = ct->by_node ? tf_solver_coords(sv) + 3 * (size_t)ct->node : ct->at;
     double site = 0;
     for (size_t j = 0; j < np; ++j) {
         if (fabs(ref[0].x[j][0] - xn[0]) + fabs(ref[0].x[j][1] - xn[1]) + fabs(ref[0].x[j][2] - xn[2]) < 1e-6) {
