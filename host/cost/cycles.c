@@ -132,6 +132,18 @@ typedef enum block_id {
     ZHOU_Y_PART,    /* ... the Y tail in loop 7's body outside loop 9 (B = 0 skips it) */
     ZHOU_SUM,       /* ... the superposition in loop 7's body (force axis x skips it) */
     STEP_ENTRY,     /* a Clenshaw loop is entered past its first instruction */
+    PRONY_STEP,     /* tfit_prony_step: checks, projection and filter calls, the static
+                     * map's view, status (nodal p != 1 path without its dispatch) */
+    PRONY_NODAL,    /* ... dispatch to tfit_eval_nodal (p != 1) */
+    PRONY_ROWS,     /* ... dispatch to tfit_degree1_rows_asm (nodal p = 1) */
+    PRONY_MODAL,    /* ... dispatch to tfit_eval_modal */
+    PRONY_FILTER,   /* tfit_prony_filter() outside its loop, K >= 1 */
+    PRONY_FILTER_SETUP, /* ... the loop's set-up and exit load, which K = 0 skips */
+    PRONY_FILTER_STUB,  /* ... the out-of-line code K = 0 runs instead */
+    PRONY_TERM,     /* loop 1: one term, three axes */
+    D1R_PATH,       /* tfit_degree1_rows_asm() outside its loops and the odd point */
+    D1R_MAIN,       /* loop 1: eight pairs of output points */
+    D1R_REM,        /* loop 2: one pair */
     N_BLOCKS
 } block_id;
 
@@ -242,6 +254,25 @@ static const block blocks[N_BLOCKS] = {
                      SAME("alu=1 fload=1 fadd=3 fmul=1 fother=2 branch=1")},
     [ZHOU_SUM] = {"tfit_eval_zhou2017", 0, 0, SAME("fload=1 fadd=1")},
     [STEP_ENTRY] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=1")},
+    [PRONY_STEP] = {"tfit_prony_step", 0, 0,
+                    {"alu=44 load=11 store=8 ldm=1 ldm_pc=1 stm=1 words=16 branch=2 nbranch=5",
+                     "alu=44 load=11 store=6 ldm=1 ldm_pc=1 stm=2 words=18 branch=2 nbranch=5"}},
+    [PRONY_NODAL] = {"tfit_prony_step", 0, 0, SAME("alu=5 load=1 branch=1 nbranch=2")},
+    [PRONY_ROWS] = {"tfit_prony_step", 0, 0, SAME("alu=4 load=1 store=1 branch=3 nbranch=1")},
+    [PRONY_MODAL] = {"tfit_prony_step", 0, 0, SAME("alu=4 branch=3")},
+    [PRONY_FILTER] = {"tfit_prony_filter", 0, 0,
+                      SAME("alu=52 load=4 store=5 ldm=1 ldm_pc=1 stm=1 words=10 fload=7 fstore=1 "
+                           "fadd=3 fmov=3 nbranch=1")},
+    [PRONY_FILTER_SETUP] = {"tfit_prony_filter", 0, 0, SAME("alu=6 fload=1")},
+    [PRONY_FILTER_STUB] = {"tfit_prony_filter", 0, 0, SAME("fother=1 branch=1")},
+    [PRONY_TERM] = {"tfit_prony_filter", 1, 1,
+                    SAME("alu=5 fload=5 fstore=3 fadd=6 fmul=6 branch=1")},
+    [D1R_PATH] = {"tfit_degree1_rows_asm", 0, 0,
+                  SAME("alu=12 load=2 ldm_pc=1 stm=1 words=8 fldm=2 fstm=1 fwords=27 nbranch=3")},
+    [D1R_MAIN] = {"tfit_degree1_rows_asm", 1, 1,
+                  SAME("alu=2 fldm=8 fstm=8 fwords=240 fadd=144 fmul=144 branch=1")},
+    [D1R_REM] = {"tfit_degree1_rows_asm", 2, 1,
+                 SAME("alu=1 fldm=1 fstm=1 fwords=30 fadd=18 fmul=18 branch=1")},
 };
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
@@ -295,17 +326,24 @@ static void add_loop(tf_insn_mix *t, tf_core core, block_id b, uint64_t n)
 
 /* Degree 1 (tfit_degree1_armv7em.c): n_out / 16 iterations of eight
  * pairs, then (n_out / 2) mod 8 single pairs, then the odd point; each
- * part skipped by a taken branch when empty. */
-static void d1_mix(tf_insn_mix *t, tf_core core, uint32_t n_out)
+ * part skipped by a taken branch when empty.  path, main and rem: the
+ * blocks of tfit_degree1_asm or of tfit_degree1_rows_asm (the same loops). */
+static void d1_loops(tf_insn_mix *t, tf_core core, uint32_t n_out, block_id path, block_id main,
+                     block_id rem)
 {
-    add_block(t, core, D1_PATH, 1);
+    add_block(t, core, path, 1);
     const uint32_t iterations = n_out >> 4, pairs = (n_out >> 1) & 7u;
-    add_loop(t, core, D1_MAIN, iterations);
-    add_loop(t, core, D1_REM, pairs);
+    add_loop(t, core, main, iterations);
+    add_loop(t, core, rem, pairs);
     taken(t, (iterations == 0) + (pairs == 0) + !(n_out & 1u));
     if (n_out & 1u) {
         add_block(t, core, D1_POINT, 1);
     }
+}
+
+static void d1_mix(tf_insn_mix *t, tf_core core, uint32_t n_out)
+{
+    d1_loops(t, core, n_out, D1_PATH, D1_MAIN, D1_REM);
 }
 
 static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
@@ -325,10 +363,10 @@ static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
     falls_through(t, (uint64_t)(p + 1) * (p + 2) / 2);
 }
 
+/* tfit_eval_nodal, called by evaluate() or tfit_prony_step */
 static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], terms = tf_terms(p);
-    add_block(t, core, EVAL_NODAL, 1);
     basis_mix(t, core, p);
     add_block(t, core, NODAL_PATH, 1);
     add_loop(t, core, NODAL_NODE, m->n_out);
@@ -341,10 +379,10 @@ static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+/* tfit_eval_modal, called by evaluate() or tfit_prony_step */
 static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], r = m->dims[1], terms = tf_terms(p);
-    add_block(t, core, EVAL_MODAL, 1);
     basis_mix(t, core, p);
     add_block(t, core, MODAL_PATH, 1);
     add_loop(t, core, MODAL_AMP, r);
@@ -422,9 +460,42 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+/* One tick of a prony model (tfit_prony.c): the step's path and its
+ * dispatch, the projection, the filter (its loop over K terms; K = 0 jumps
+ * past it), then the static map as its own family's evaluator, or at p = 1
+ * the rows of tfit_degree1_rows_asm. */
+static void prony_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const tf_model v = tf_prony_static_view(m);
+    const uint32_t terms = m->dims[2];
+    add_block(t, core, PRONY_STEP, 1);
+    add_block(t, core, INPUT_PATH, 1);
+    add_block(t, core, PRONY_FILTER, 1);
+    add_loop(t, core, PRONY_TERM, terms);
+    if (terms == 0) {
+        sub_block(t, core, PRONY_FILTER_SETUP, 1);
+        add_block(t, core, PRONY_FILTER_STUB, 1);
+        taken(t, 1);
+    }
+    if (v.family == TFIT_FAMILY_MODAL) {
+        add_block(t, core, PRONY_MODAL, 1);
+        modal_mix(t, core, &v);
+    } else if (v.dims[0] != 1) {
+        add_block(t, core, PRONY_NODAL, 1);
+        nodal_mix(t, core, &v);
+    } else {
+        add_block(t, core, PRONY_ROWS, 1);
+        d1_loops(t, core, v.n_out, D1R_PATH, D1R_MAIN, D1R_REM);
+    }
+}
+
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
+    if (m->family == TFIT_FAMILY_PRONY) {
+        prony_mix(mix, core, m);
+        return;
+    }
     const int contact = m->family == TFIT_FAMILY_CONTACT;
     if ((contact || m->family == TFIT_FAMILY_NODAL) && m->dims[0] == 1) {
         /* the degree-1 fast paths, tfit_eval.c */
@@ -443,12 +514,14 @@ void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
     }
     switch (m->family) {
     case TFIT_FAMILY_MODAL:
+        add_block(mix, core, EVAL_MODAL, 1);
         modal_mix(mix, core, m);
         break;
     case TFIT_FAMILY_ZHOU2017:
         zhou_mix(mix, core, m);
         break;
     default:
+        add_block(mix, core, EVAL_NODAL, 1);
         nodal_mix(mix, core, m);
         break;
     }

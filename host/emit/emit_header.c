@@ -15,6 +15,7 @@
 
 #include "base/atomic_file.h"
 #include "emit/emit_budget.h"
+#include "emit/emit_prony.h"
 #include "emit/emit_q31.h"
 #include "fitting/families/family.h"
 #include "model/golden.h"
@@ -169,6 +170,7 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                 (unsigned long long)cost.ops.div, cost.table_bytes);
         tf_emit_budget_banner(f, &cost);
         tf_emit_q31_banner(f, m);
+        tf_emit_prony_banner(f, m);
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
@@ -234,6 +236,7 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         snprintf(prefix, sizeof prefix, "TFIT_%s", p);
         tf_emit_budget_macros(f, &cost, prefix);
         tf_emit_q31_macros(f, m, prefix);
+        tf_emit_prony_macros(f, m, prefix);
     }
     if (!isnan(m->heldout_max)) {
         const char *u = output_unit(m, 1);
@@ -279,15 +282,31 @@ static void write_floats(FILE *f, const float *v, size_t n, const char *comment)
 
 /* The coefficient table with a comment per block, so the header documents
  * its own layout (docs/header-format.md §3). */
+static void write_tables(FILE *f, const tf_model *m, const char *site);
+
 static void write_coef(FILE *f, const tf_model *m, const char *site)
 {
-    static const char comp[] = "xyz";
-    char note[128];
     const float *c = m->coef;
     fprintf(f, "static const float tfit_%s_coef[%u] = {\n", m->name, m->n_coef);
     write_floats(f, c, 3, "input map: envelope centre x0");
     write_floats(f, c + 3, 9, "input map: W (row-major), g = W (x - x0)");
-    c += TFIT_INPUT_MAP_FLOATS;
+    if (m->family == TFIT_FAMILY_PRONY) {
+        const tf_model v = tf_prony_static_view(m);
+        tf_emit_prony_terms(f, m);
+        write_tables(f, &v, site);
+    } else {
+        write_tables(f, m, site);
+    }
+    fprintf(f, "};\n");
+}
+
+/* The family's tables after the input map (a prony model's static map is
+ * written as its own family). */
+static void write_tables(FILE *f, const tf_model *m, const char *site)
+{
+    static const char comp[] = "xyz";
+    char note[128];
+    const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint32_t t = tf_terms(m->dims[0]);
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
@@ -323,7 +342,6 @@ static void write_coef(FILE *f, const tf_model *m, const char *site)
         }
         write_floats(f, c, 2 * m->n_out, "normalised node coordinates X, Y");
     }
-    fprintf(f, "};\n");
 }
 
 static void write_u32_values(FILE *f, const uint32_t *v, size_t n, int hex)
@@ -487,12 +505,12 @@ static void write_header(FILE *f, const char *base, tf_model *const *models,
 static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
 {
     float in[TF_GOLDEN_MAX][3];
-    size_t n_vec = tf_golden_inputs(m, seed, in);
+    size_t n_vec = tf_golden_design(m, seed, in);
     size_t n_out = 3 * (size_t)m->n_out;
     uint32_t in_bits[TF_GOLDEN_MAX * 3];
     int32_t status[TF_GOLDEN_MAX];
     uint32_t *out_bits = malloc(n_vec * n_out * sizeof *out_bits);
-    float *out = malloc(n_out * sizeof *out);
+    float *out = malloc(n_vec * n_out * sizeof *out);
     char name[TF_NAME_MAX + 32], p[TF_NAME_MAX + 8];
     upper(m->name, p, sizeof p);
     if (out_bits == NULL || out == NULL) {
@@ -500,14 +518,14 @@ static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
         free(out_bits);
         return -1;
     }
+    tf_ref_run(m, (const float(*)[3])in, n_vec, status, out);
     for (size_t v = 0; v < n_vec; ++v) {
-        status[v] = (int32_t)tf_ref_eval(m, in[v], out, NULL);
         for (int i = 0; i < 3; ++i) {
             in_bits[3 * v + (size_t)i] = float_bits(in[v][i]);
         }
-        for (size_t o = 0; o < n_out; ++o) {
-            out_bits[v * n_out + o] = float_bits(out[o]);
-        }
+    }
+    for (size_t w = 0; w < n_vec * n_out; ++w) {
+        out_bits[w] = float_bits(out[w]);
     }
     fprintf(f, "\n#define TFIT_%s_GOLDEN_N %zu\n", p, n_vec);
     snprintf(name, sizeof name, "tfit_%s_golden_in", m->name);

@@ -30,6 +30,8 @@
 #include "problem/problem.h"
 #include "solvers/solver.h"
 
+struct tf_histories; /* histories.h */
+
 typedef struct tf_cases {
     tf_solver *solver;       /* what solved them (outlives the cases) */
     const tf_problem *problem;
@@ -39,6 +41,10 @@ typedef struct tf_cases {
     int superposed;          /* training cases from unit responses */
     size_t solves;           /* right-hand sides solved */
     tf_fitdata train, heldout, axis[3];
+    /* Force histories and their responses when the body creeps (a
+     * time-dependent solver): what the prony family fits; NULL otherwise.
+     * Not owned. */
+    const struct tf_histories *hist;
     /* Affine solvers: unit responses at the outputs (3 n_out) and the
      * contact site (3): u(f) = base + sum_k f_k unit[k]. */
     double *base, *unit[3], base_contact[3], unit_contact[3][3];

@@ -15,14 +15,25 @@
 #include "model/passivity.h"
 #include "model/ref_eval.h"
 
-static void heldout(tf_family_result *f, const tf_fitdata *d)
+/* The held-out errors: the static held-out cases, or the family's own
+ * (a time-dependent family's held-out histories). */
+static int heldout(tf_family_result *f, const tf_cases *c, tf_ctx *ctx)
 {
-    tf_family_errors(f->model, d, NULL, d->n_cases, &f->heldout_max, &f->heldout_rms,
-                     &f->heldout_rel_max);
+    uint32_t n = (uint32_t)c->heldout.n_cases;
+    if (f->family->heldout != NULL) {
+        if (f->family->heldout(f->model, c, &f->heldout_max, &f->heldout_rms,
+                               &f->heldout_rel_max, &n) != 0) {
+            return tf_fail(ctx, "%s: out of memory for its held-out errors", f->family->name);
+        }
+    } else {
+        tf_family_errors(f->model, &c->heldout, NULL, c->heldout.n_cases, &f->heldout_max,
+                         &f->heldout_rms, &f->heldout_rel_max);
+    }
     f->model->heldout_max = f->heldout_max;
     f->model->heldout_rms = f->heldout_rms;
     f->model->heldout_rel_max = f->heldout_rel_max;
-    f->model->heldout_cases = (uint32_t)d->n_cases;
+    f->model->heldout_cases = n;
+    return 0;
 }
 
 /* Seed Table 3 and the mean deviation maps (pipeline.h).  Returns 0, or -1
@@ -91,7 +102,9 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
     if (f->select(&o->cases, plan, r, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
-    heldout(r, &o->cases.heldout);
+    if (heldout(r, &o->cases, ctx) != 0) {
+        return -1;
+    }
     /* a contact law that creates energy somewhere in its envelope would make
      * the haptic loop unstable: refused, never emitted (passivity.h) */
     if (inverse && tf_passivity_require(r->model, ctx->err, sizeof ctx->err) != 0) {
@@ -141,6 +154,18 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     if (tf_cases_build(p, solver, plan, &o->cases) != 0) {
         return -1;
     }
+    if (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) {
+        tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
+                "of %u us", plan->hist_train, plan->hist_heldout, plan->hist_ticks,
+                plan->tick_ns / 1000);
+        if (tf_histories_solve(&o->cases, plan->tick_ns, plan->hist_train, plan->hist_heldout,
+                               plan->hist_ticks, plan->seed, &o->hist) != 0) {
+            tf_cases_free(&o->cases);
+            return -1;
+        }
+        o->has_hist = 1;
+        o->cases.hist = &o->hist;
+    }
     o->seconds_cases = tf_seconds() - t0;
     warn_large(ctx, p, solver, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
@@ -174,6 +199,10 @@ void tf_fit_outcome_free(tf_fit_outcome *o)
     o->fam = NULL;
     o->n_families = 0;
     tf_cases_free(&o->cases);
+    if (o->has_hist) {
+        tf_histories_free(&o->hist);
+        o->has_hist = 0;
+    }
 }
 
 const tf_family_result *tf_fit_result_of(const tf_fit_outcome *o, const tf_family *f)

@@ -13,6 +13,7 @@
 
 #include "fitting/cases.h"
 #include "fitting/families/family.h"
+#include "fitting/histories.h"
 #include "fitting/plan.h"
 #include "model/model.h"
 #include "problem/problem.h"
@@ -20,12 +21,17 @@
 
 typedef struct tf_fit_outcome {
     tf_cases cases;
+    /* A time-dependent solver's force histories (the plan's tick, counts
+     * and length), which cases.hist points to; has_hist 0 otherwise. */
+    tf_histories hist;
+    int has_hist;
     size_t n_families;
     tf_family_result *fam; /* one per registered family, in the registry's order */
     double seconds_cases;
 } tf_fit_outcome;
 
-/* Runs the whole fit of problem p with a solver of it.  A family that does
+/* Runs the whole fit of problem p with a solver of it (and, when the solver
+ * is time-dependent, its force histories).  A family that does
  * not apply to the problem is marked so (why[]).  Returns 0; -2 when the
  * plan's forward family does not apply (a problem the user must change); -1
  * on any other failure; with the message in the solver's context. */

@@ -21,13 +21,20 @@ typedef struct tf_fit_plan {
     uint32_t max_rank;    /* ranks searched (modal): 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
     unsigned servo_hz;    /* the haptic loop's rate the header states its budget at (0: none) */
+    /* Force histories, for a time-dependent solver (histories.h): the tick
+     * (the prony model's), how many training and held-out histories, and
+     * their length in ticks. */
+    uint32_t tick_ns;
+    size_t hist_train, hist_heldout, hist_ticks;
     /* where the cases of a solver that is not affine are solved: NULL here,
      * or spread over ranks (dist/); the bits are the same */
     const tf_case_runner *runner;
 } tf_fit_plan;
 
 /* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,
- * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows. */
+ * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows;
+ * for a time-dependent solver 12 training and 6 held-out histories of
+ * 5000 ticks of 1 ms. */
 void tf_fit_plan_defaults(tf_fit_plan *p);
 
 #endif /* TF_FIT_PLAN_H */

@@ -144,6 +144,67 @@ size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3])
     return b.n;
 }
 
+size_t tf_golden_ticks(const tf_model *m, uint64_t seed, float in[][3])
+{
+    builder b = {.in = in, .n = 0, .x0 = m->coef};
+    tf_rng r = {seed};
+    double u[3], v[3];
+    w_inverse(m, b.inv);
+
+    put(&b, 0.0f, 0.0f, 0.0f);      /* 0: rest */
+    random_unit(&r, u);
+    for (int k = 1; k <= 10; ++k) { /* 1-10: press, to the boundary */
+        put_u(&b, u, k / 10.0);
+    }
+    for (int k = 0; k < 8; ++k) { /* 11-18: hold on it */
+        put_u(&b, u, 1.0);
+    }
+    for (int k = 5; k >= 0; --k) { /* 19-24: release */
+        put_u(&b, u, k / 6.0);
+    }
+    for (int k = 0; k < 4; ++k) { /* 25-28: rest */
+        put(&b, 0.0f, 0.0f, 0.0f);
+    }
+    for (int k = 0; k < 12; ++k) { /* 29-40: random inside */
+        random_unit(&r, v);
+        put_u(&b, v, tf_rng_uniform(&r));
+    }
+    random_unit(&r, v); /* 41-45: a glitch between equal forces (the state must not move) */
+    put_u(&b, v, 0.7);
+    put(&b, NAN, 0.0f, 0.0f);
+    put_u(&b, v, 0.7);
+    put(&b, 0.0f, -INFINITY, 1.0f);
+    put_u(&b, v, 0.7);
+    for (int k = 0; k < 2; ++k) { /* 46-49: beyond the envelope, 10x and 1e30x */
+        random_unit(&r, v);
+        put_u(&b, v, 10.0);
+        put_u(&b, v, 1e30);
+    }
+    for (int axis = 0; axis < 3; ++axis) { /* 50-55: on the boundary, +-axes */
+        for (int sign = -1; sign <= 1; sign += 2) {
+            double e[3] = {0, 0, 0};
+            e[axis] = sign;
+            put_u(&b, e, 1.0);
+        }
+    }
+    put(&b, FLT_MAX, -FLT_MAX, FLT_MAX / 3); /* 56-58: the largest floats */
+    put(&b, -FLT_MAX, 0.0f, 0.0f);
+    put(&b, 1e38f, 1e-38f, -1e38f);
+    put(&b, 1e-40f, -1e-42f, float_from_bits(1u)); /* 59-61: subnormal and signed zeros */
+    put(&b, float_from_bits(0x80000001u), 0.0f, 0.0f);
+    put(&b, -0.0f, -0.0f, -0.0f);
+    put(&b, float_from_bits(0x7f800001u), 0.25f, 0.5f); /* 62-65: NaN kinds, Inf */
+    put(&b, float_from_bits(0x7fc12345u), 0.0f, 0.0f);
+    put(&b, INFINITY, -INFINITY, NAN);
+    put(&b, -NAN, 0.5f, 0.5f);
+    for (int k = 0; k < 10; ++k) { /* 66-75: random inside, then back to rest */
+        random_unit(&r, v);
+        put_u(&b, v, tf_rng_uniform(&r));
+    }
+    put(&b, 0.0f, 0.0f, 0.0f);
+    return b.n;
+}
+
 /* The self-test inputs, from the golden design (fixed seed, independent of
  * the header's): four random points inside the envelope, a cube diagonal on
  * its boundary (|g| = 1 to rounding, so the clamp decision itself is
@@ -152,6 +213,10 @@ size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3])
  * the status and every output into one CRC; at TFIT_CHECK_FAR generated
  * inputs far beyond it, the projected g into a second (tfit_check.c). */
 static const size_t check_pick[TFIT_CHECK_INPUTS] = {2, 3, 4, 5, 32, 44, 45, 46};
+/* A prony model's, a tick sequence from rest (tf_golden_ticks): the press
+ * from 0.1 to 0.4 of the radius, the boundary, a random point, a NaN tick
+ * (the skip), and the 10x and 1e30x points beyond the envelope. */
+static const size_t check_pick_ticks[TFIT_CHECK_INPUTS] = {1, 2, 3, 4, 11, 29, 42, 47};
 #define CHECK_SEED 0x7466u
 
 int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
@@ -162,12 +227,29 @@ int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
     if (out == NULL) {
         return -1;
     }
-    tf_golden_inputs(m, CHECK_SEED, in);
+    const int prony = m->family == TFIT_FAMILY_PRONY;
+    float st[TFIT_PRONY_MAX_STATE];
+    if (prony) {
+        tf_golden_ticks(m, CHECK_SEED, in);
+        tf_ref_prony_reset(m, st);
+    } else {
+        tf_golden_inputs(m, CHECK_SEED, in);
+    }
     uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
     for (int k = 0; k < TFIT_CHECK_INPUTS; ++k) {
-        const float *x = in[check_pick[k]];
+        const float *x = in[prony ? check_pick_ticks[k] : check_pick[k]];
         memcpy(check + 3 * k, x, 3 * sizeof *check);
-        crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval(m, x, out, NULL));
+        if (prony) { /* the status, the new state, the outputs (tfit_check.c) */
+            tfit_status status = tf_ref_prony_step(m, st, x, out, NULL);
+            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)status);
+            for (uint32_t w = 0; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
+                uint32_t bits;
+                memcpy(&bits, &st[w], sizeof bits);
+                crc = tf_crc32_u32(crc, bits);
+            }
+        } else {
+            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval(m, x, out, NULL));
+        }
         for (size_t o = 0; o < n; ++o) {
             uint32_t w;
             memcpy(&w, &out[o], sizeof w);
@@ -204,4 +286,10 @@ uint32_t tf_model_crc32_checked(const tf_model *m, const uint32_t check[TFIT_CHE
         crc = tf_crc32_u32(crc, check[i]);
     }
     return crc;
+}
+
+size_t tf_golden_design(const tf_model *m, uint64_t seed, float in[][3])
+{
+    return m->family == TFIT_FAMILY_PRONY ? tf_golden_ticks(m, seed, in)
+                                          : tf_golden_inputs(m, seed, in);
 }

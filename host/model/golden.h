@@ -17,6 +17,16 @@
 /* Fills in[][3] (capacity TF_GOLDEN_MAX) and returns the count. */
 size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3]);
 
+/* A prony model's golden design: one tick sequence from rest (press to the
+ * envelope's boundary, hold, release, rest, random forces inside, NaN/Inf
+ * ticks between equal forces, forces beyond the envelope, the largest and
+ * subnormal floats), at most TF_GOLDEN_MAX ticks.  Returns the count. */
+size_t tf_golden_ticks(const tf_model *m, uint64_t seed, float in[][3]);
+
+/* The golden design of any model: tf_golden_ticks for a prony model, else
+ * tf_golden_inputs. */
+size_t tf_golden_design(const tf_model *m, uint64_t seed, float in[][3]);
+
 /* The self-test every emitted model carries (docs/header-format.md §8;
  * tfit_model_check() evaluates it): TFIT_CHECK_INPUTS inputs (bits), then
  * the CRC-32 of the status and every output's bits at each, in order, from

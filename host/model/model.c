@@ -48,6 +48,15 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
         }
         n += (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
         break;
+    case TFIT_FAMILY_PRONY: /* {p, r, K, tick_ns}: K pairs, then nodal (r = 0) or modal */
+        if (n_dims != TFIT_PRONY_DIMS || dims[0] > TFIT_MAX_DEGREE || dims[1] > TFIT_MAX_RANK ||
+            dims[2] > TFIT_PRONY_MAX_TERMS || dims[3] == 0) {
+            return 0;
+        }
+        n += 2ull * dims[2];
+        n += dims[1] == 0 ? 3ull * n_out * tf_terms(dims[0])
+                          : (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
+        break;
     case TFIT_FAMILY_ZHOU2017:
         if (n_dims != TFIT_ZHOU2017_DIMS) {
             return 0;
@@ -215,9 +224,14 @@ static int bound_fail(double b, const char *what, const tf_model *m, uint32_t in
     return 1;
 }
 
+static int validate_prony(const tf_model *m, char *err, size_t errlen);
+
 static int validate_ranges(const tf_model *m, char *err, size_t errlen)
 {
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
+    if (m->family == TFIT_FAMILY_PRONY) {
+        return validate_prony(m, err, errlen);
+    }
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint32_t t = tf_terms(m->dims[0]);
         for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
@@ -282,6 +296,37 @@ static int validate_ranges(const tf_model *m, char *err, size_t errlen)
     return 0;
 }
 
+tf_model tf_prony_static_view(const tf_model *m)
+{
+    tf_model v = *m;
+    const uint32_t skip = 2 * m->dims[2];
+    v.family = m->dims[1] == 0 ? TFIT_FAMILY_NODAL : TFIT_FAMILY_MODAL;
+    v.n_dims = m->dims[1] == 0 ? 1 : 2;
+    v.coef = m->coef + skip; /* its tables at coef + 12, as the family's own */
+    v.n_coef = m->n_coef - skip;
+    return v;
+}
+
+/* Prony terms (header-format.md §8): 0 <= a_k <= 1 - 2^-19 (the target's
+ * limit is 1 - 2^-20: a bit of margin) and |D_k| <= 2^63; then the static
+ * map as its own family. */
+static int validate_prony(const tf_model *m, char *err, size_t errlen)
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        double a = pt[2 * k], d = fabs((double)pt[2 * k + 1]);
+        if (!(a >= 0 && a <= 1 - 0x1p-19) || !(d <= 0x1p63)) {
+            snprintf(err, errlen,
+                     "model '%s': prony term %u has decay %g and gain %g (decay in [0, 1 - 2^-19] "
+                     "and |gain| <= 2^63 keep the state finite)",
+                     m->name, k, a, (double)pt[2 * k + 1]);
+            return 1;
+        }
+    }
+    tf_model v = tf_prony_static_view(m);
+    return validate_ranges(&v, err, errlen);
+}
+
 int tf_model_validate(const tf_model *m, char *err, size_t errlen)
 {
     if (tf_model_ncoef(m->family, m->n_out, m->dims, m->n_dims) != m->n_coef) {
@@ -340,6 +385,15 @@ static uint64_t series_add(uint32_t n)
 
 tf_opcount tf_model_ops(const tf_model *m)
 {
+    if (m->family == TFIT_FAMILY_PRONY) {
+        /* the filter (§5.6): 3 differences, then per term 6 mul and 3 add
+         * for the state and 3 subtractions for h; then the static map */
+        tf_model v = tf_prony_static_view(m);
+        tf_opcount ops = tf_model_ops(&v);
+        ops.add += 3 + 6ull * m->dims[2];
+        ops.mul += 6ull * m->dims[2];
+        return ops;
+    }
     tf_opcount ops = input_ops();
     const uint64_t rows = 3ull * m->n_out;
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {

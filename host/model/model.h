@@ -86,4 +86,9 @@ tf_opcount tf_model_ops(const tf_model *m);
  * descriptor struct whose size depends on the target's pointer width. */
 uint32_t tf_model_table_bytes(const tf_model *m);
 
+/* A prony model's static map as a nodal (r = 0) or modal model sharing its
+ * tables (coef points 2K floats further, so that its tables start at
+ * coef + 12 as that family's do; not an owner: never free it). */
+tf_model tf_prony_static_view(const tf_model *m);
+
 #endif /* TF_MODEL_H */

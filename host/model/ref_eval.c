@@ -34,6 +34,8 @@ static float f_mul(arith *c, float a, float b)
     return (float)((double)a * (double)b);
 }
 
+static void add_ops(tf_opcount *ops, const arith *c);
+
 static float largest_magnitude(const float v[3])
 {
     float m = fabsf(v[0]);
@@ -261,41 +263,132 @@ void tf_ref_input(const tf_model *m, const float in[3], float g[3], int *clamped
 {
     arith c = {{0, 0, 0}};
     input_map(&c, m, in, g, clamped, bad);
-    if (ops != NULL) {
-        ops->add += c.n.add;
-        ops->mul += c.n.mul;
-        ops->div += c.n.div;
-    }
+    add_ops(ops, &c);
 }
 
-tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
+/* The family's part (§5) at the projected input g, into out. */
+static void eval_family(arith *c, const tf_model *m, const float g[3], float *out)
 {
-    arith c = {{0, 0, 0}};
-    float g[3];
-    int clamped, bad;
-    input_map(&c, m, in, g, &clamped, &bad);
-
     if (m->family == TFIT_FAMILY_ZHOU2017) {
-        eval_zhou2017(&c, m, g, out);
+        eval_zhou2017(c, m, g, out);
     } else {
         float phi[TFIT_TERMS_MAX];
-        chebyshev_basis(&c, m->dims[0], g, phi);
+        chebyshev_basis(c, m->dims[0], g, phi);
         if (m->family == TFIT_FAMILY_MODAL) {
-            eval_modal(&c, m, phi, out);
+            eval_modal(c, m, phi, out);
         } else {
-            eval_polynomial_rows(&c, m->coef + TFIT_INPUT_MAP_FLOATS, 3 * m->n_out,
+            eval_polynomial_rows(c, m->coef + TFIT_INPUT_MAP_FLOATS, 3 * m->n_out,
                                  tf_terms(m->dims[0]), phi, out);
         }
     }
+}
+
+static void add_ops(tf_opcount *ops, const arith *c)
+{
+    if (ops != NULL) {
+        ops->add += c->n.add;
+        ops->mul += c->n.mul;
+        ops->div += c->n.div;
+    }
+}
+
+/* h_i beyond [-1, 1] -> +-1 with its sign (§5.6; never NaN here). */
+static float clamp_unit(float h)
+{
+    return fabsf(h) > 1.0f ? copysignf(1.0f, h) : h;
+}
+
+/* The prony filter (§5.6): d_i = g_i - gp_i; per term k and axis i
+ * z_ki = (a_k z_ki) + (D_k d_i) and h_i = h_i - z_ki from h_i = g_i; the
+ * state becomes {g, z} unless the input was bad. */
+static void prony_filter(arith *c, const tf_model *m, const float g[3], int bad, float *state,
+                         float h[3])
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const uint32_t words = TFIT_PRONY_STATE_WORDS(m->dims[2]);
+    float next[TFIT_PRONY_MAX_STATE], d[3];
+    for (int i = 0; i < 3; ++i) {
+        d[i] = f_sub(c, g[i], state[i]);
+        h[i] = g[i];
+        next[i] = g[i];
+    }
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            float z = f_add(c, f_mul(c, pt[2 * k], state[3 + 3 * k + i]), f_mul(c, pt[2 * k + 1], d[i]));
+            next[3 + 3 * k + i] = z;
+            h[i] = f_sub(c, h[i], z);
+        }
+    }
+    for (int i = 0; i < 3; ++i) {
+        h[i] = clamp_unit(h[i]);
+    }
+    if (!bad) {
+        memcpy(state, next, words * sizeof *state);
+    }
+}
+
+void tf_ref_prony_reset(const tf_model *m, float *state)
+{
+    const float zero[3] = {0, 0, 0};
+    int clamped, bad;
+    tf_ref_input(m, zero, state, &clamped, &bad, NULL);
+    for (uint32_t w = 3; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
+        state[w] = 0.0f;
+    }
+}
+
+tfit_status tf_ref_prony_step(const tf_model *m, float *state, const float in[3], float *out,
+                              tf_opcount *ops)
+{
+    arith c = {{0, 0, 0}};
+    float g[3], h[3];
+    int clamped, bad;
+    input_map(&c, m, in, g, &clamped, &bad);
+    prony_filter(&c, m, g, bad, state, h);
+    tf_model v = tf_prony_static_view(m);
+    eval_family(&c, &v, h, out);
     if (bad) {
         for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
             out[o] = 0.0f;
         }
     }
-    if (ops != NULL) {
-        ops->add += c.n.add;
-        ops->mul += c.n.mul;
-        ops->div += c.n.div;
-    }
+    add_ops(ops, &c);
     return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
+}
+
+tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
+{
+    if (m->family == TFIT_FAMILY_PRONY) { /* relaxed: the force held for ever */
+        float state[TFIT_PRONY_MAX_STATE];
+        int clamped, bad;
+        tf_ref_prony_reset(m, state);
+        tf_ref_input(m, in, state, &clamped, &bad, NULL); /* gp = g: no increment, e_k = 0 */
+        return tf_ref_prony_step(m, state, in, out, ops);
+    }
+    arith c = {{0, 0, 0}};
+    float g[3];
+    int clamped, bad;
+    input_map(&c, m, in, g, &clamped, &bad);
+    eval_family(&c, m, g, out);
+    if (bad) {
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+            out[o] = 0.0f;
+        }
+    }
+    add_ops(ops, &c);
+    return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
+}
+
+void tf_ref_run(const tf_model *m, const float (*in)[3], size_t n, int32_t *status, float *out)
+{
+    float state[TFIT_PRONY_MAX_STATE];
+    const size_t n_out = 3 * (size_t)m->n_out;
+    if (m->family == TFIT_FAMILY_PRONY) {
+        tf_ref_prony_reset(m, state);
+    }
+    for (size_t v = 0; v < n; ++v) {
+        status[v] = (int32_t)(m->family == TFIT_FAMILY_PRONY
+                                  ? tf_ref_prony_step(m, state, in[v], out + v * n_out, NULL)
+                                  : tf_ref_eval(m, in[v], out + v * n_out, NULL));
+    }
 }

@@ -695,6 +695,33 @@ static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* The fit: section's force histories (a time-dependent solver's; the
+ * prony family's tick).  The tick is whole microseconds up to 1 s (the
+ * model stores nanoseconds in 32 bits); whether it suits the fitted time
+ * constants is the prony fit's check (docs/fitting.md §7.3). */
+static int fit_histories(const sd_fit *d, tf_fit_plan *f, sd_issue *is)
+{
+    if (d->tick_us) {
+        if (*d->tick_us < 1 || *d->tick_us > 1000000) {
+            return sd_fail(is, "fit.tick_us", "1 to 1000000 microseconds");
+        }
+        f->tick_ns = 1000u * *d->tick_us;
+    }
+    f->hist_train = d->histories ? *d->histories : f->hist_train;
+    f->hist_heldout = d->heldout_histories ? *d->heldout_histories : f->hist_heldout;
+    f->hist_ticks = d->history_ticks ? *d->history_ticks : f->hist_ticks;
+    if (f->hist_train < 2 || f->hist_train > 10000) {
+        return sd_fail(is, "fit.histories", "2 to 10000 training force histories");
+    }
+    if (f->hist_heldout < 1 || f->hist_heldout > 10000) {
+        return sd_fail(is, "fit.heldout_histories", "1 to 10000 held-out force histories");
+    }
+    if (f->hist_ticks < 10 || f->hist_ticks > 10000000) {
+        return sd_fail(is, "fit.history_ticks", "10 to 10000000 ticks per history");
+    }
+    return 0;
+}
+
 /* The fit: section.  Limits keep every design matrix of a fold
  * non-trivial and the searches inside the target's capacity (tfit.h). */
 static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *is)
@@ -742,9 +769,9 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
         return sd_fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
     }
     if (d->servo_hz && (f->servo_hz < 1 || f->servo_hz > 100000)) {
-        return fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
+        return sd_fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
     }
-    return 0;
+    return fit_histories(d, f, is);
 }
 
 int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is)

@@ -305,6 +305,10 @@ static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_UINT_PTR("max_degree", OPT, sd_fit, max_degree),
     CYAML_FIELD_UINT_PTR("max_rank", OPT, sd_fit, max_rank),
     CYAML_FIELD_UINT_PTR("servo_hz", OPT, sd_fit, servo_hz),
+    CYAML_FIELD_UINT_PTR("tick_us", OPT, sd_fit, tick_us),
+    CYAML_FIELD_UINT_PTR("histories", OPT, sd_fit, histories),
+    CYAML_FIELD_UINT_PTR("heldout_histories", OPT, sd_fit, heldout_histories),
+    CYAML_FIELD_UINT_PTR("history_ticks", OPT, sd_fit, history_ticks),
     CYAML_FIELD_END,
 };
 

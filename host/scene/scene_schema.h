@@ -208,6 +208,8 @@ typedef struct sd_fit {
     char *contact;     /* contact site name */
     unsigned *train, *heldout, *folds, *max_degree, *max_rank, *servo_hz;
     uint64_t *seed;
+    /* a time-dependent solver's force histories (fitting/histories.h) */
+    unsigned *tick_us, *histories, *heldout_histories, *history_ticks;
 } sd_fit;
 
 typedef struct sd_scene {

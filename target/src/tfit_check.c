@@ -18,6 +18,8 @@
 #define BOUND_LIMIT 0x1p100f
 #define X0_LIMIT 0x1p64f
 #define W_LIMIT 0x1p56f
+#define PRONY_A_LIMIT (1.0f - 0x1p-20f)
+#define PRONY_D_LIMIT 0x1p64f
 
 static float fabs_(float x)
 {
@@ -143,12 +145,34 @@ static int zhou2017_ok(const tfit_model *m)
     return 1;
 }
 
+/* Prony terms: 0 <= a_k <= 1 - 2^-20 and |D_k| <= 2^64.  Then the state
+ * stays finite for every input sequence: |d_i| <= 2 (1 + 2^-20) after the
+ * projection, so |z| <= (1 + 2^-24)^2 (a |z| + 2.0001 |D|) at every step,
+ * whose fixed point is below 2^23 |D| <= 2^87 because
+ * 1 - a (1 + 2^-24)^2 > 2^-21; h is the clamped g - sum z.  The static map
+ * then sees |h_i| <= 1, as the nodal and modal proofs assume. */
+static int prony_ok(const tfit_model *m)
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0u; k < m->dims[2]; ++k) {
+        const float a = pt[2u * k], dk = fabs_(pt[2u * k + 1u]);
+        if (!(a >= 0.0f && a <= PRONY_A_LIMIT) || !within(dk, PRONY_D_LIMIT)) {
+            return 0;
+        }
+    }
+    tfit_model v;
+    tfit_prony_static(m, &v);
+    return v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v);
+}
+
 static int range_ok(const tfit_model *m)
 {
     if (!map_ok(m->coef)) {
         return 0;
     }
     switch (m->family) {
+    case TFIT_FAMILY_PRONY:
+        return prony_ok(m);
     case TFIT_FAMILY_MODAL:
         return modal_ok(m);
     case TFIT_FAMILY_ZHOU2017:
@@ -222,19 +246,39 @@ static uint32_t far_input(uint32_t state, float in[3])
 
 /* The self-test: at each carried input the status and every output, point
  * by point (no buffer of 3 n_out floats), and at the far inputs the
- * projected g, each folded into a CRC-32 that must equal the host's. */
+ * projected g, each folded into a CRC-32 that must equal the host's.  A
+ * prony model takes the inputs as ticks from a reset state: after the
+ * status, each tick's new state words, and the static map sees the
+ * filtered input h. */
 static tfit_status self_test(const tfit_model *m)
 {
-    float in[3], g[3], out[3];
+    float in[3], g[3], h[3], out[3], st[TFIT_PRONY_MAX_STATE];
     uint32_t bad, crc = 0xffffffffu;
+    const int prony = m->family == TFIT_FAMILY_PRONY;
+    tfit_model static_map;
+    const tfit_model *eval = m;
+    if (prony) {
+        (void)tfit_prony_reset(m, st);
+        tfit_prony_static(m, &static_map);
+        eval = &static_map;
+    }
     for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_INPUTS; ++k) {
         for (uint32_t i = 0u; i < 3u; ++i) {
             in[i] = tfit_float(m->check[3u * k + i]);
         }
         const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
         crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u)); /* the status */
+        if (prony) { /* the new state, then the static map at h */
+            tfit_prony_filter(m, g, ~bad, st, h);
+            for (uint32_t w = 0u; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
+                crc = tfit_crc32_word(crc, tfit_bits(st[w]));
+            }
+            g[0] = h[0];
+            g[1] = h[1];
+            g[2] = h[2];
+        }
         for (uint32_t j = 0u; j < m->n_out; ++j) {
-            point(m, g, ~bad, j, out);
+            point(eval, g, ~bad, j, out);
             for (uint32_t i = 0u; i < 3u; ++i) {
                 crc = tfit_crc32_word(crc, tfit_bits(out[i]));
             }
@@ -264,7 +308,7 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_CONTACT) {
+    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_PRONY) {
         return TFIT_ERR_FAMILY;
     }
     /* Sizes before the CRC: the CRC reads n_coef floats. */

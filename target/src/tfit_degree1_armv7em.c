@@ -25,6 +25,9 @@
  *     +0.0f, the same bits as the mask), rewound once per iteration;
  *   - the projection with its integer selections as conditional moves.
  *
+ * tfit_degree1_rows_asm() runs the rows alone, at a g the caller projected
+ * and filtered (the prony family's static map at p = 1, tfit_prony.c).
+ *
  * Registers: g in s0-s2, a pair in s3-s26 (s16-s26 are callee-saved: the
  * compiler saves them, because they are clobbered); core r0 rows pointer,
  * r2 out, r3 n_out, r4-r6, r12 and lr scratch.  The cycle model
@@ -231,6 +234,32 @@ static const float tfit_zero_coef[192];
     "vadd.f32 s8, s23, s26\n\t"                                                                   \
     "vstm     r2!, {s3-s8}\n\t"
 
+/* The rows of n_out output points (r3) at g (s0-s2), from r0 on, into r2:
+ * n_out / 16 passes of eight pairs, (n_out / 2) mod 8 single pairs, the odd
+ * point.  lr is keep: for a NaN/Inf input (lr = 0) r0 points at the zero
+ * rows, rewound by 768 bytes after each pass. */
+#define TFIT_ASM_ROWS                                                                             \
+    "mov      r5, #768\n\t" /* rewind per iteration: 0, or 768 for NaN/Inf */                     \
+    "bic      r5, r5, lr\n\t"                                                                      \
+    "lsrs     r4, r3, #4\n\t" /* iterations of 8 pairs */                                          \
+    "beq      2f\n"                                                                                \
+    "1:\n\t" TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR     \
+        TFIT_ASM_PAIR TFIT_ASM_PAIR                                                               \
+    "sub      r0, r0, r5\n\t"                                                                      \
+    "subs     r4, r4, #1\n\t"                                                                      \
+    "bne      1b\n"                                                                                \
+    "2:\n\t"                                                                                       \
+    "lsr      r4, r3, #1\n\t" /* the remaining pairs */                                            \
+    "ands     r4, r4, #7\n\t"                                                                      \
+    "beq      4f\n"                                                                                \
+    "3:\n\t" TFIT_ASM_PAIR                                                                         \
+    "subs     r4, r4, #1\n\t"                                                                      \
+    "bne      3b\n"                                                                                \
+    "4:\n\t"                                                                                       \
+    "tst      r3, #1\n\t" /* the odd point */                                                      \
+    "beq      5f\n\t" TFIT_ASM_POINT                                                               \
+    "5:\n\t"
+
 #define TFIT_ASM_CLOBBER_LOW                                                                      \
     "r4", "r5", "r6", "lr", "s0", "s1", "s2", "s3", "s4", "s5", "s6", "s7", "s8", "s9", "s10",    \
         "s11", "s12", "s13", "s14", "s15", "cc", "memory"
@@ -255,32 +284,31 @@ tfit_status tfit_degree1_asm(const tfit_model *m, const float in[3], float *out)
     register const float *r1 __asm__("r1") = in;
     register float *r2 __asm__("r2") = out;
     register uintptr_t r12 __asm__("r12") = (uintptr_t)tfit_zero_coef;
-    __asm__ volatile(TFIT_ASM_INPUT_MAP
-                     "mov      r5, #768\n\t" /* rewind per iteration: 0, or 768 for NaN/Inf */
-                     "bic      r5, r5, lr\n\t"
-                     "lsrs     r4, r3, #4\n\t" /* iterations of 8 pairs */
-                     "beq      2f\n"
-                     "1:\n\t" TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR
-                     TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR TFIT_ASM_PAIR
-                     "sub      r0, r0, r5\n\t"
-                     "subs     r4, r4, #1\n\t"
-                     "bne      1b\n"
-                     "2:\n\t"
-                     "lsr      r4, r3, #1\n\t" /* the remaining pairs */
-                     "ands     r4, r4, #7\n\t"
-                     "beq      4f\n"
-                     "3:\n\t" TFIT_ASM_PAIR
-                     "subs     r4, r4, #1\n\t"
-                     "bne      3b\n"
-                     "4:\n\t"
-                     "tst      r3, #1\n\t" /* the odd point */
-                     "beq      5f\n\t" TFIT_ASM_POINT
-                     "5:\n\t"
+    __asm__ volatile(TFIT_ASM_INPUT_MAP TFIT_ASM_ROWS
                      : "+r"(r0), "+r"(r1), "+r"(r2), "+r"(r12)
                      : "r"(r3)
                      : TFIT_ASM_CLOBBER_LOW, "s16", "s17", "s18", "s19", "s20", "s21", "s22",
                        "s23", "s24", "s25", "s26");
     return (tfit_status)(int32_t)r12;
+}
+
+void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, uint32_t keep,
+                           float *out)
+{
+    register const float *r0 __asm__("r0") = rows;
+    register float *r2 __asm__("r2") = out;
+    register uint32_t r3 __asm__("r3") = n_out;
+    register uintptr_t r12 __asm__("r12") = (uintptr_t)tfit_zero_coef;
+    __asm__ volatile("vldm     %[g], {s0-s2}\n\t" /* g */
+                     "movs     lr, %[keep]\n\t"   /* keep: all ones, or 0 for NaN/Inf */
+                     "it       eq\n\t"
+                     "moveq    r0, r12\n\t"       /* bad: the zero rows (header-format §5.5) */
+                     TFIT_ASM_ROWS
+                     : "+r"(r0), "+r"(r2)
+                     : "r"(r3), "r"(r12), [g] "r"(g), [keep] "r"(keep)
+                     : "r4", "r5", "lr", "s0", "s1", "s2", "s3", "s4", "s5", "s6", "s7", "s8", "s9",
+                       "s10", "s11", "s12", "s13", "s14", "s15", "s16", "s17", "s18", "s19", "s20",
+                       "s21", "s22", "s23", "s24", "s25", "s26", "cc", "memory");
 }
 
 #else

@@ -14,14 +14,24 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
     const tfit_model *m = gv->model;
     const uint32_t n = 3u * m->n_out;
     uint32_t mismatches = 0u;
+    float state[TFIT_PRONY_MAX_STATE]; /* a prony model's: one tick sequence */
+    if (m->family == TFIT_FAMILY_PRONY) {
+        (void)tfit_prony_reset(m, state);
+    }
 
     for (uint32_t v = 0u; v < gv->n_vec; ++v) {
         float x[3];
+        tfit_status s;
         for (uint32_t i = 0u; i < 3u; ++i) {
             x[i] = tfit_float(gv->in[3u * v + i]);
         }
-        tfit_status s = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force(m, x, scratch)
-                                                         : tfit_displacements(m, x, scratch);
+        if (m->family == TFIT_FAMILY_PRONY) {
+            s = tfit_prony_step(m, state, x, scratch);
+        } else if (m->family == TFIT_FAMILY_CONTACT) {
+            s = tfit_contact_force(m, x, scratch);
+        } else {
+            s = tfit_displacements(m, x, scratch);
+        }
         mismatches += (uint32_t)((int32_t)s != gv->status[v]);
         for (uint32_t o = 0u; o < n; ++o) {
             mismatches += (uint32_t)(tfit_bits(scratch[o]) != gv->out[v * n + o]);

@@ -166,6 +166,10 @@ static inline void tfit_rows_degree1(const float *c, const float g[3], uint32_t 
  * (the contact family), without the registers the pair loop needs. */
 tfit_status tfit_degree1_asm(const tfit_model *m, const float in[3], float *out);
 tfit_status tfit_degree1_one_asm(const tfit_model *m, const float in[3], float *out);
+/* The rows alone (§5.2, §5.5) at g: the model's rows when keep is all ones,
+ * the zero rows when it is 0. */
+void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, uint32_t keep,
+                           float *out);
 #else
 #define TFIT_DEGREE1_ASM 0
 #endif
@@ -185,6 +189,17 @@ void tfit_basis(uint32_t p, const float g[3], float *phi);
 void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
+
+/* The prony family's filter (tfit_prony.c, header-format.md §5.6): the
+ * projected input g of this tick -> h, the input of the static map; the new
+ * state is written over state when keep is all ones, else into a scratch
+ * copy (state keeps every bit). */
+void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
+                       float h[3]);
+
+/* The static map of a prony model as a nodal or modal model *v (the fields
+ * the evaluators read: family, n_out, n_dims, dims, coef, n_coef, node_ids). */
+void tfit_prony_static(const tfit_model *m, tfit_model *v);
 
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);

@@ -44,6 +44,20 @@ static uint32_t zhou2017_coefs(const tfit_model *m)
     return n;
 }
 
+/* {p, r, K, tick_ns}: K pairs {a_k, D_k} after the input map, then nodal
+ * rows (r = 0) or a modal table of rank r; a tick of at least 1 ns. */
+static uint32_t prony_coefs(const tfit_model *m)
+{
+    const uint32_t *dm = m->dims;
+    const uint32_t p = dm[0], r = dm[1], terms = dm[2];
+    if (p > TFIT_MAX_DEGREE || r > TFIT_MAX_RANK || terms > TFIT_PRONY_MAX_TERMS || dm[3] == 0u) {
+        return 0u;
+    }
+    const uint32_t table = r == 0u ? 3u * m->n_out * TFIT_TERMS(p)
+                                   : r * TFIT_TERMS(p) + 3u * m->n_out * r;
+    return TFIT_INPUT_MAP_FLOATS + 2u * terms + table;
+}
+
 uint32_t tfit_expected_coefs(const tfit_model *m)
 {
     if (m->n_out == 0u || m->n_out > TFIT_MAX_OUT) {
@@ -58,6 +72,8 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
         return m->n_dims == TFIT_MODAL_DIMS ? modal_coefs(m) : 0u;
     case TFIT_FAMILY_ZHOU2017:
         return m->n_dims == TFIT_ZHOU2017_DIMS ? zhou2017_coefs(m) : 0u;
+    case TFIT_FAMILY_PRONY:
+        return m->n_dims == TFIT_PRONY_DIMS ? prony_coefs(m) : 0u;
     default:
         return 0u;
     }

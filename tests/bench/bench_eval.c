@@ -65,6 +65,11 @@ static void float_models(int timed, long calls, double *t, double overhead)
         const tfit_model *m = sets[s]->model;
         float *out = malloc(3 * m->n_out * sizeof *out);
         const int contact = m->family == TFIT_FAMILY_CONTACT;
+        const int prony = m->family == TFIT_FAMILY_PRONY; /* a tick of its state */
+        float state[TFIT_PRONY_MAX_STATE];
+        if (prony) {
+            tfit_prony_reset(m, state);
+        }
         if (!timed) {
             CALLGRIND_ZERO_STATS;
         }
@@ -72,7 +77,9 @@ static void float_models(int timed, long calls, double *t, double overhead)
             float x[3];
             memcpy(x, sets[s]->in + 3 * (i % IN_ENVELOPE), sizeof x);
             double t0 = timed ? now_ns() : 0;
-            if (contact) {
+            if (prony) {
+                tfit_prony_step(m, state, x, out);
+            } else if (contact) {
                 tfit_contact_force(m, x, out);
             } else {
                 tfit_displacements(m, x, out);

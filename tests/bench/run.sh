@@ -16,7 +16,7 @@ pin=""
 if command -v taskset >/dev/null 2>&1 && taskset -c 1 true 2>/dev/null; then pin="taskset -c 1"; fi
 $pin "$bin" time "$calls" >"$tmp/time"
 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" --toggle-collect='tfit_displacements*' \
-    --toggle-collect='tfit_contact_force*' "$bin" count 1000 >/dev/null 2>&1
+    --toggle-collect='tfit_contact_force*' --toggle-collect='tfit_prony_step' "$bin" count 1000 >/dev/null 2>&1
 for f in "$tmp"/cg.out.*; do
     awk '/^desc: Trigger: Client Request:/ { sub(/.*Request: /, ""); label = $0 }
          /^(totals|summary):/ { total = $2 }

@@ -1,10 +1,13 @@
 /*
  * gen_random.c — writes random models with their golden vectors.
  *
- *   gen_random bundle N SEED FILE   N random models into a bundle (bundle.h)
- *   gen_random header SEED FILE.h   two small models per family, and a contact
- *                                   model of degree 1, through the
- *                                   real header emitter (FILE.h + FILE_golden.h)
+ *   gen_random bundle N SEED FILE   N random models of the stateless families,
+ *                                   then 200 prony models, into a bundle (bundle.h)
+ *   gen_random header SEED FILE.h   two small models per stateless family, a
+ *                                   contact model of degree 1 and two prony
+ *                                   models (nodal and modal static maps),
+ *                                   through the real header emitter
+ *                                   (FILE.h + FILE_golden.h)
  *
  * Expected outputs come from the host reference evaluator (ref_eval.c).
  */
@@ -35,8 +38,8 @@ static uint32_t bits(float x)
 static int write_model(FILE *f, const tf_model *m, uint64_t seed)
 {
     float in[TF_GOLDEN_MAX][3];
-    size_t n_vec = tf_golden_inputs(m, seed, in);
-    float *out = malloc(3 * m->n_out * sizeof *out);
+    size_t n_vec = tf_golden_design(m, seed, in);
+    float *out = malloc(n_vec * 3 * m->n_out * sizeof *out);
     int32_t status[TF_GOLDEN_MAX];
     if (out == NULL) {
         return -1;
@@ -69,25 +72,20 @@ static int write_model(FILE *f, const tf_model *m, uint64_t seed)
             put(f, bits(in[v][i]));
         }
     }
-    long status_at = ftell(f);
-    for (size_t v = 0; v < n_vec; ++v) {
-        put(f, 0);
-    }
-    for (size_t v = 0; v < n_vec; ++v) {
-        status[v] = (int32_t)tf_ref_eval(m, in[v], out, NULL);
-        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
-            put(f, bits(out[o]));
-        }
-    }
-    long end = ftell(f);
-    fseek(f, status_at, SEEK_SET);
+    tf_ref_run(m, (const float(*)[3])in, n_vec, status, out);
     for (size_t v = 0; v < n_vec; ++v) {
         put(f, (uint32_t)status[v]);
     }
-    fseek(f, end, SEEK_SET);
+    for (size_t w = 0; w < n_vec * 3 * m->n_out; ++w) {
+        put(f, bits(out[w]));
+    }
     free(out);
     return 0;
 }
+
+/* Prony models after the stateless ones, from their own sequence (the
+ * first n models are those of earlier bundles). */
+#define BUNDLE_PRONY 200
 
 static int bundle(long n, uint64_t seed, const char *path)
 {
@@ -96,14 +94,15 @@ static int bundle(long n, uint64_t seed, const char *path)
         perror(path);
         return 1;
     }
-    tf_rng r = {seed};
-    long per_family[5] = {0};
+    tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u};
+    long per_family[6] = {0};
     put(f, TF_BUNDLE_MAGIC);
-    put(f, (uint32_t)n);
-    for (long i = 0; i < n; ++i) {
+    put(f, (uint32_t)(n + BUNDLE_PRONY));
+    for (long i = 0; i < n + BUNDLE_PRONY; ++i) {
         char name[32];
         snprintf(name, sizeof name, "random%ld", i);
-        tf_model *m = tf_random_model(&r, name, 0, 0);
+        tf_model *m = i < n ? tf_random_model(&r, name, 0, 0)
+                            : tf_random_model(&rp, name, TFIT_FAMILY_PRONY, 0);
         if (m == NULL || write_model(f, m, seed + (uint64_t)i) != 0) {
             fclose(f);
             return 1;
@@ -115,8 +114,10 @@ static int bundle(long n, uint64_t seed, const char *path)
         perror(path);
         return 1;
     }
-    printf("gen_random: %ld models (nodal %ld, modal %ld, zhou2017 %ld, contact %ld) -> %s\n", n,
-           per_family[1], per_family[2], per_family[3], per_family[4], path);
+    printf("gen_random: %ld models (nodal %ld, modal %ld, zhou2017 %ld, contact %ld, prony %ld) -> "
+           "%s\n",
+           n + BUNDLE_PRONY, per_family[1], per_family[2], per_family[3], per_family[4],
+           per_family[5], path);
     return 0;
 }
 
@@ -136,11 +137,29 @@ static tf_model *contact_degree1(uint64_t seed, const char *name)
     return NULL;
 }
 
+/* A small prony model with a nodal (modal) static map and at least one
+ * (two) terms, from its own sequence so that the other models do not
+ * change. */
+static tf_model *prony(uint64_t seed, const char *name, int modal)
+{
+    tf_rng r = {seed ^ (modal ? 0xbeefu : 0xfeedu)};
+    for (int tries = 0; tries < 1000; ++tries) {
+        tf_model *m = tf_random_model(&r, name, TFIT_FAMILY_PRONY, 1);
+        if (m == NULL || ((m->dims[1] > 0) == modal && m->dims[2] >= 1u + (uint32_t)!modal)) {
+            return m;
+        }
+        tf_model_free(m);
+    }
+    return NULL;
+}
+
+#define HEADER_MODELS 11
+
 static int header(uint64_t seed, const char *path)
 {
     static const char *const names[] = {"nodal_a", "nodal_b", "modal_a", "modal_b",
                                         "zhou_a", "zhou_b", "contact_a", "contact_b"};
-    tf_model *models[9];
+    tf_model *models[HEADER_MODELS];
     tf_rng r = {seed};
     char err[512];
     for (int i = 0; i < 8; ++i) {
@@ -150,13 +169,15 @@ static int header(uint64_t seed, const char *path)
         }
     }
     models[8] = contact_degree1(seed, "contact_p1");
-    if (models[8] == NULL) {
+    models[9] = prony(seed, "prony_a", 0);
+    models[10] = prony(seed, "prony_b", 1);
+    if (models[8] == NULL || models[9] == NULL || models[10] == NULL) {
         return 1;
     }
     const tf_emit_info info = {.source = "random test models (tests/bitexact/gen_random.c)",
                                .golden_seed = seed};
-    int rc = tf_emit_header(path, models, 9, &info, err, sizeof err);
-    for (int i = 0; i < 9; ++i) {
+    int rc = tf_emit_header(path, models, HEADER_MODELS, &info, err, sizeof err);
+    for (int i = 0; i < HEADER_MODELS; ++i) {
         tf_model_free(models[i]);
     }
     if (rc != 0) {

@@ -89,7 +89,14 @@ static tf_model *shape_of(const char *name)
     }
     tfit_family family = (tfit_family)atoi(fam);
     uint32_t dims[TFIT_ZHOU2017_DIMS] = {0}, n_dims = 1;
-    if (family == TFIT_FAMILY_MODAL) {
+    if (family == TFIT_FAMILY_PRONY) { /* "p=1 K=2 tick=1000000ns", " r=3" after p if modal */
+        n_dims = TFIT_PRONY_DIMS;
+        if (sscanf(ord, "\"p=%u r=%u K=%u tick=%uns\"", &dims[0], &dims[1], &dims[2],
+                   &dims[3]) != 4 &&
+            sscanf(ord, "\"p=%u K=%u tick=%uns\"", &dims[0], &dims[2], &dims[3]) != 3) {
+            return NULL;
+        }
+    } else if (family == TFIT_FAMILY_MODAL) {
         n_dims = 2;
         sscanf(ord, "\"p=%u r=%u\"", &dims[0], &dims[1]);
     } else if (family == TFIT_FAMILY_ZHOU2017) {

@@ -8,6 +8,9 @@
  *   haptic_contact_p1   contact, p = 1, 2, 3 at node 61 (the top centre),
  *   haptic_contact_p2   displacement [mm] -> force [N]
  *   haptic_contact_p3
+ *   haptic_creep        prony: haptic_forward's compliance as the relaxed
+ *                       static map, creeping with two terms (0.3 at 0.25 s,
+ *                       0.2 at 2.5 s) at a 1 ms tick
  *
  * The numbers are synthetic but plausible: a compliance field peaked at the
  * contact node with block48's reported centre compliances (2.83 mm/N in
@@ -17,7 +20,8 @@
  *
  * `gen_haptic shapes FILE.h` writes shapes.h instead: small models of every
  * family at the edges of the loop structure (p = 0, 1, 2, 5, 8; r = 1 and
- * 48; zhou2017 orders with zeros; p = 1 with n_out = 1, 16, 30, 33), so
+ * 48; zhou2017 orders with zeros; p = 1 with n_out = 1, 16, 30, 33; prony
+ * with K = 0, 1, 2, 8 terms over nodal and modal static maps), so
  * that the golden vectors and the cycle model's check
  * (make check-cycles) sees every path through the compiled evaluator.
  *
@@ -27,8 +31,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "emit/emit_header.h"
 #include "base/rng.h"
+#include "emit/emit_header.h"
+#include "model/prony.h"
 
 #define GRID 11
 #define SPACING 4.8        /* mm */
@@ -63,6 +68,29 @@ static tf_model *forward(char *err, size_t errlen)
         }
     }
     m->envelope_radius = FORCE_RADIUS;
+    return m;
+}
+
+/* The forward model's compliance as the relaxed map of a creeping body. */
+static tf_model *creep(const tf_model *fwd, char *err, size_t errlen)
+{
+    const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, 2, 1000000};
+    tf_model *m = tf_model_new("haptic_creep", TFIT_FAMILY_PRONY, fwd->n_out, dims,
+                               TFIT_PRONY_DIMS, err, errlen);
+    if (m == NULL) {
+        return NULL;
+    }
+    const double centre[3] = {0, 0, 0};
+    tf_model_set_ball(m, centre, FORCE_RADIUS);
+    tf_prony_set_term(m, 0, 0.25, 0.3);
+    tf_prony_set_term(m, 1, 2.5, 0.2);
+    const tf_model v = tf_prony_static_view(m);
+    for (uint32_t i = 0; i < fwd->n_coef - TFIT_INPUT_MAP_FLOATS; ++i) {
+        v.coef[TFIT_INPUT_MAP_FLOATS + i] = fwd->coef[TFIT_INPUT_MAP_FLOATS + i];
+    }
+    for (uint32_t j = 0; j < fwd->n_out; ++j) {
+        m->node_ids[j] = fwd->node_ids[j];
+    }
     return m;
 }
 
@@ -111,6 +139,9 @@ static tf_model *shaped(const char *name, tfit_family f, uint32_t n_out, const u
             c[i] = (float)tf_rng_range(r, -1, 1);
         }
     }
+    for (uint32_t k = 0; f == TFIT_FAMILY_PRONY && k < dims[2]; ++k) { /* tau 2^k ticks */
+        tf_prony_set_term(m, k, ldexp(tf_prony_tick(m), (int)k), 0.1);
+    }
     for (uint32_t j = 0; j < n_out; ++j) {
         m->node_ids[j] = j + 1;
     }
@@ -127,7 +158,7 @@ static int shapes(const char *path)
     struct {
         const char *name;
         tfit_family f;
-        uint32_t n_out, dims[2], n_dims;
+        uint32_t n_out, dims[TFIT_PRONY_DIMS], n_dims;
     } list[] = {
         {"nodal_p0", TFIT_FAMILY_NODAL, 3, {0, 0}, 1},
         {"nodal_p2", TFIT_FAMILY_NODAL, 2, {2, 0}, 1},
@@ -143,6 +174,11 @@ static int shapes(const char *path)
         {"nodal_p1_n16", TFIT_FAMILY_NODAL, 16, {1, 0}, 1},
         {"nodal_p1_n30", TFIT_FAMILY_NODAL, 30, {1, 0}, 1},
         {"nodal_p1_n33", TFIT_FAMILY_NODAL, 33, {1, 0}, 1},
+        /* prony {p, r, K, tick_ns}: no term (the loop skipped), one, two, eight */
+        {"prony_k0_p1", TFIT_FAMILY_PRONY, 2, {1, 0, 0, 1000000}, 4},
+        {"prony_k1_p0", TFIT_FAMILY_PRONY, 3, {0, 0, 1, 250000}, 4},
+        {"prony_k2_p1_r1", TFIT_FAMILY_PRONY, 1, {1, 1, 2, 1000000}, 4},
+        {"prony_k8_p2_r3", TFIT_FAMILY_PRONY, 2, {2, 3, 8, 100000}, 4},
     };
     enum { N_LIST = sizeof list / sizeof list[0] };
     tf_model *models[N_LIST + 1] = {NULL};
@@ -186,21 +222,24 @@ int main(int argc, char **argv)
         return 2;
     }
     char err[512];
-    tf_model *models[4] = {forward(err, sizeof err), NULL, NULL, NULL};
+    tf_model *models[5] = {forward(err, sizeof err), NULL, NULL, NULL, NULL};
     for (uint32_t p = 1; p <= 3 && models[p - 1] != NULL; ++p) {
         models[p] = contact(p, err, sizeof err);
     }
-    int rc = 1;
     if (models[3] != NULL) {
+        models[4] = creep(models[0], err, sizeof err);
+    }
+    int rc = 1;
+    if (models[4] != NULL) {
         const tf_emit_info info = {
             .source = "synthetic block48-shaped test models (tests/firmware/gen_haptic.c)",
             .golden_seed = 48};
-        rc = tf_emit_header(argv[1], models, 4, &info, err, sizeof err) != 0;
+        rc = tf_emit_header(argv[1], models, 5, &info, err, sizeof err) != 0;
     }
     if (rc != 0) {
         fprintf(stderr, "gen_haptic: %s\n", err);
     }
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 5; ++i) {
         tf_model_free(models[i]);
     }
     return rc;

@@ -2,16 +2,28 @@
  * probe.c — evaluates every golden vector of every model of families.h once,
  * float and Q31 forms, under callgrind, dumping the instruction count of
  * each evaluation (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare
- * them: the count must not depend on the input.  Q31 sets are numbered
- * from 20 and their family ids shifted by 4 (5 nodal, 8 contact).
+ * them: the count must not depend on the input.  A prony model's golden
+ * vectors are one tick sequence: each tick is one evaluation, stepped from
+ * a reset state, so the count must depend on neither the input nor the
+ * state.  Q31 sets are numbered from 20 and their family ids shifted by 5
+ * (6 nodal, 9 contact).
+ *
+ * families.h by default; another header with -DGOLDEN_H, -DGOLDEN_SETS,
+ * -DGOLDEN_Q31_SETS and its -DTFIT_NAME_IMPLEMENTATION (tests/prony.mk runs
+ * creep48.h, the block48-shaped viscoelastic model, this way).
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <valgrind/callgrind.h>
 
+#ifndef GOLDEN_H
 #define TFIT_FAMILIES_IMPLEMENTATION
-#include "families_golden.h"
+#define GOLDEN_H "families_golden.h"
+#define GOLDEN_SETS TFIT_FAMILIES_GOLDEN_SETS
+#define GOLDEN_Q31_SETS TFIT_FAMILIES_GOLDEN_Q31_SETS
+#endif
+#include GOLDEN_H
 
 /* Negative control: a function whose cost depends on its input, so run.sh
  * can show that the measurement tells the difference. */
@@ -26,24 +38,34 @@ static __attribute__((noinline)) float control_branchy(float x)
 
 int main(void)
 {
-    static const tfit_golden *const sets[] = TFIT_FAMILIES_GOLDEN_SETS;
+    static const tfit_golden *const sets[] = GOLDEN_SETS;
     for (size_t s = 0; s < sizeof sets / sizeof sets[0]; ++s) {
         const tfit_model *m = sets[s]->model;
         float *out = malloc(3 * m->n_out * sizeof *out);
+        float state[TFIT_PRONY_MAX_STATE];
+        if (m->family == TFIT_FAMILY_PRONY) {
+            tfit_prony_reset(m, state);
+        }
         for (uint32_t v = 0; v < sets[s]->n_vec; ++v) {
             float x[3];
             char label[64];
+            tfit_status st;
             memcpy(x, sets[s]->in + 3 * v, sizeof x);
             CALLGRIND_ZERO_STATS;
-            tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force(m, x, out)
-                                                              : tfit_displacements(m, x, out);
+            if (m->family == TFIT_FAMILY_PRONY) {
+                st = tfit_prony_step(m, state, x, out);
+            } else if (m->family == TFIT_FAMILY_CONTACT) {
+                st = tfit_contact_force(m, x, out);
+            } else {
+                st = tfit_displacements(m, x, out);
+            }
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", s, m->family, v,
                      (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
         }
         free(out);
     }
-    static const tfit_golden_q31 *const q31[] = TFIT_FAMILIES_GOLDEN_Q31_SETS;
+    static const tfit_golden_q31 *const q31[] = GOLDEN_Q31_SETS;
     for (size_t s = 0; q31[s] != NULL; ++s) {
         const tfit_model_q31 *m = q31[s]->model;
         int32_t *out = malloc(3 * m->n_out * sizeof *out);
@@ -54,7 +76,7 @@ int main(void)
             tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
                                                               : tfit_displacements_q31(m, x, out);
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", 20 + s,
-                     m->family + 4, v, (int)st);
+                     m->family + 5, v, (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
         }
         free(out);

@@ -3,7 +3,8 @@
  * extremes"), checked on one input at a time through the public target API,
  * for a float32 model (tfit.h) or its Q31 form (tfit_q31.h):
  *
- *   float  every output is finite; a NaN/Inf input gives TFIT_ERR_INPUT and
+ *   float  every output is finite (a prony model's state too: each input is
+ *          a tick from the state the inputs before it left); a NaN/Inf input gives TFIT_ERR_INPUT and
  *          +0.0f in every output word; a finite input gives TFIT_OK inside
  *          the envelope and TFIT_CLAMPED outside it (the status is predicted
  *          from x0 and W in double, with a margin for float rounding); a
@@ -68,6 +69,8 @@ typedef struct stab_float {
     float *y, *y_b, *y_n, *y_g;
     tfit_model in_g;
     float *coef_g;      /* in_g's coefficients */
+    float state[TFIT_PRONY_MAX_STATE]; /* a prony model's: every input is one tick from
+                                        * it, and stab_float_check advances it */
     stab_stats st;
 } stab_float;
 

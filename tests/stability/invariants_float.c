@@ -23,8 +23,17 @@ static int finite_bits(float x)
     return (bits(x) & 0x7f800000u) != 0x7f800000u;
 }
 
-static tfit_status eval_entry(const tfit_model *m, const float x[3], float *y)
+/* A prony model is evaluated as one tick from c->state, on a copy (the
+ * state is the same for the input and its boundary point, so every
+ * invariant below holds as for a stateless model); stab_float_check then
+ * advances c->state with the checked input. */
+static tfit_status eval_entry(const stab_float *c, const tfit_model *m, const float x[3], float *y)
 {
+    if (m->family == TFIT_FAMILY_PRONY) {
+        float state[TFIT_PRONY_MAX_STATE];
+        memcpy(state, c->state, sizeof state);
+        return tfit_prony_step(m, state, x, y);
+    }
     if (m->family == TFIT_FAMILY_CONTACT) {
         return tfit_contact_force(m, x, y);
     }
@@ -33,13 +42,13 @@ static tfit_status eval_entry(const tfit_model *m, const float x[3], float *y)
 
 tfit_status stab_float_eval(const stab_float *c, const float x[3], float *y)
 {
-    return eval_entry(c->m, x, y);
+    return eval_entry(c, c->m, x, y);
 }
 
 /* The model's result at the projected point g itself (c->in_g). */
 static void stab_float_eval_g(const stab_float *c, const float g[3], float *y)
 {
-    eval_entry(&c->in_g, g, y);
+    eval_entry(c, &c->in_g, g, y);
 }
 
 /* g = W v in double; returns |W v|. */
@@ -258,6 +267,9 @@ int stab_float_init(stab_float *c, const tfit_model *m, const char *label)
     }
     c->in_g = *m;
     c->in_g.coef = c->coef_g;
+    if (m->family == TFIT_FAMILY_PRONY) {
+        tfit_prony_reset(m, c->state);
+    }
     c->scale = boundary_scale(c);
     return 0;
 }
@@ -356,7 +368,23 @@ static int check_boundary(stab_float *c, const float x[3])
     return fail(c, x, what);
 }
 
+static int check_one(stab_float *c, const float x[3]);
+
 int stab_float_check(stab_float *c, const float x[3])
+{
+    const int n = check_one(c, x);
+    if (c->m->family == TFIT_FAMILY_PRONY) { /* the next input meets the state this one leaves */
+        tfit_prony_step(c->m, c->state, x, c->y);
+        for (uint32_t w = 0; w < TFIT_PRONY_STATE_WORDS(c->m->dims[2]); ++w) {
+            if (!finite_bits(c->state[w])) {
+                return n + fail(c, x, "a state word is NaN or Inf");
+            }
+        }
+    }
+    return n;
+}
+
+static int check_one(stab_float *c, const float x[3])
 {
     const tfit_status s = stab_float_eval(c, x, c->y);
     int n = 0;

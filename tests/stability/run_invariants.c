@@ -24,7 +24,7 @@
 
 static const char *family_name(uint32_t f)
 {
-    static const char *const names[] = {"?", "nodal", "modal", "zhou2017", "contact"};
+    static const char *const names[] = {"?", "nodal", "modal", "zhou2017", "contact", "prony"};
     return f < sizeof names / sizeof names[0] ? names[f] : "?";
 }
 

@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "fitting/families/zhou2017.h"
+#include "model/prony.h"
 
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {
@@ -75,10 +76,39 @@ static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_di
         }
         *n_dims = TFIT_ZHOU2017_DIMS;
         break;
+    case TFIT_FAMILY_PRONY: /* {p, r (0: nodal), K, tick_ns} */
+        dims[0] = pick(r, 0, pmax);
+        dims[1] = tf_rng_below(r, 2) ? 0 : pick(r, 1, small ? 4 : 16);
+        dims[2] = pick(r, 0, small ? 3 : TFIT_PRONY_MAX_TERMS);
+        dims[3] = (uint32_t)pow(10.0, tf_rng_range(r, 3.0, 8.0)); /* 1 us .. 0.1 s */
+        *n_dims = TFIT_PRONY_DIMS;
+        break;
     default:
         dims[0] = pick(r, 0, pmax);
         *n_dims = 1;
         break;
+    }
+}
+
+/* Prony terms: decays exp(-T/tau) with T/tau log-uniform in [1e-5, 20], now
+ * and then exactly 0 or the largest emittable decay; gains either those of
+ * a physical creep function (weights >= 0 summing to at most 1) or random
+ * over many binades, so that the clamp of h acts too. */
+static void prony_terms(tf_rng *r, tf_model *m, int physical)
+{
+    float *pt = tf_model_tables(m);
+    double left = 1.0;
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        uint32_t kind = tf_rng_below(r, 16);
+        double ratio = pow(10.0, tf_rng_range(r, -5.0, log10(20.0)));
+        pt[2 * k] = kind == 0 ? 0.0f : (kind == 1 ? 1.0f - 0x1p-19f : (float)exp(-ratio));
+        if (physical) {
+            double w = left * tf_rng_uniform(r);
+            left -= w;
+            pt[2 * k + 1] = (float)(w * tf_prony_hold_gain(pt[2 * k]));
+        } else {
+            pt[2 * k + 1] = random_coef(r, -20, 6);
+        }
     }
 }
 
@@ -93,6 +123,9 @@ static void fill_tables(tf_rng *r, tf_model *m)
     uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
     for (uint32_t i = 0; i < n - n_xy; ++i) {
         c[i] = random_coef(r, elo, ehi);
+    }
+    if (m->family == TFIT_FAMILY_PRONY) {
+        prony_terms(r, m, spread == 0);
     }
     for (uint32_t i = n - n_xy; i < n; ++i) {
         uint32_t k = tf_rng_below(r, 12);
@@ -124,12 +157,16 @@ static int make_emittable(tf_model *m)
     float *c = tf_model_tables(m);
     uint32_t n = m->n_coef - TFIT_INPUT_MAP_FLOATS;
     uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
+    /* a prony model's decays stay as drawn (halving its gains is harmless) */
+    uint32_t n_decays = m->family == TFIT_FAMILY_PRONY ? m->dims[2] : 0;
     for (int tries = 0; tries < 400; ++tries) {
         if (tf_model_validate(m, err, sizeof err) == 0) {
             return 0;
         }
         for (uint32_t i = 0; i < n - n_xy; ++i) {
-            c[i] = ldexpf(c[i], -2);
+            if (!(i < 2 * n_decays && i % 2 == 0)) {
+                c[i] = ldexpf(c[i], -2);
+            }
         }
         if (m->family == TFIT_FAMILY_ZHOU2017) {
             zhou_scales(m);
@@ -140,6 +177,8 @@ static int make_emittable(tf_model *m)
 
 tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small)
 {
+    /* family 0: the stateless families (their sequences predate prony,
+     * which is drawn only when asked for) */
     static const tfit_family families[] = {TFIT_FAMILY_NODAL, TFIT_FAMILY_NODAL,
                                            TFIT_FAMILY_MODAL, TFIT_FAMILY_ZHOU2017,
                                            TFIT_FAMILY_CONTACT};

@@ -10,7 +10,8 @@
 #include "model/model.h"
 #include "base/rng.h"
 
-/* family 0 picks one at random.  small != 0 keeps tables short (for
+/* family 0 picks one of the stateless families at random (prony only when
+ * asked for).  small != 0 keeps tables short (for
  * emitted headers).  Returns NULL only when out of memory. */
 tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small);
 

@@ -105,6 +105,13 @@ struct tf_family {
                       size_t errlen);
     /* Operations, table bytes and cycles of one evaluation. */
     void (*cost)(const tf_model *m, tf_family_cost *out);
+    /* The held-out errors the family is judged on, when they are not the
+     * static held-out cases' (NULL: tf_family_errors on c->heldout): the
+     * largest and RMS error, the largest error relative to the largest
+     * true value (NAN when not meaningful), and how many held-out cases
+     * (or histories) behind them.  Returns 0, or -1 when out of memory. */
+    int (*heldout)(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                   double *rel_max, uint32_t *n);
 };
 
 /* ---- the registry (registry.c) ------------------------------------------- */

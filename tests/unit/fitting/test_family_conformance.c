@@ -39,18 +39,24 @@
 #include "emit/emit_header.h"
 #include "fitting/cases.h"
 #include "fitting/families/family.h"
+#include "fitting/histories.h"
 #include "model/q31.h"
 #include "model/ref_eval.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
-/* block48 and its solved cases, shared by every test. */
+/* block48 and its solved cases, shared by every test.  The cases carry
+ * force histories of block48 as a linear viscoelastic body (seed 001's
+ * Kelvin solid with k1 = E, k2 = 0.6 k1, eta = k2 s: an illustrative
+ * creep, histories.h), so that a time-dependent family (prony) applies;
+ * the others ignore them. */
 typedef struct fixture {
     tf_ctx ctx;
     tf_scene *scene;
     tf_solver *solver;
     tf_fit_plan plan;
     tf_cases cases;
+    tf_histories hist;
 } fixture;
 
 static int setup(void **state)
@@ -71,6 +77,13 @@ static int setup(void **state)
         print_error("%s\n", x->ctx.err);
         return -1;
     }
+    const tf_creep creep = tf_creep_kelvin(0.32, 0.192, 0.192);
+    if (tf_histories_linear_creep(&x->cases, &creep, 1000000, 8, 4, 1500, x->plan.seed, &x->hist,
+                                  err, sizeof err) != 0) {
+        print_error("%s\n", err);
+        return -1;
+    }
+    x->cases.hist = &x->hist;
     *state = x;
     return 0;
 }
@@ -78,6 +91,7 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     fixture *x = *state;
+    tf_histories_free(&x->hist);
     tf_cases_free(&x->cases);
     tf_solver_destroy(x->solver);
     tf_scene_free(x->scene);

@@ -54,7 +54,7 @@ static void every_flip_is_caught(void **state)
 {
     (void)state;
     tf_rng r = {2026};
-    for (int family = 1; family <= 4; ++family) {
+    for (int family = 1; family <= TFIT_FAMILY_PRONY; ++family) {
         tf_model *m = tf_random_model(&r, "small", (tfit_family)family, 1);
         tfit_model t;
         tf_target_view(m, &t);

@@ -78,9 +78,14 @@ static void overrides_change_every_kind_of_value(void **state)
     const char *sets[] = {"geometry.grid=21,21,5", "contact.0.node=221", "solver.rbf.q=0.5",
                           "fixed.0.components=x,z", "solver.bc=penalty", "name=b21",
                           "fixed.4.face=z-", "outputs={select: contact}",
-                          "solver.volumetric=full"};
+                          "solver.volumetric=full", "fit.tick_us=20000", "fit.histories=8",
+                          "fit.heldout_histories=3", "fit.history_ticks=250"};
     tf_scene *s = tf_scene_load(BLOCK48, sets, sizeof sets / sizeof sets[0], err, sizeof err);
     assert_non_null(s);
+    assert_int_equal(s->fit.tick_ns, 20000000);
+    assert_int_equal(s->fit.hist_train, 8);
+    assert_int_equal(s->fit.hist_heldout, 3);
+    assert_int_equal(s->fit.hist_ticks, 250);
     assert_int_equal(s->problem.cloud.n, 21 * 21 * 5);
     const double *c = node_xyz(s, 221);
     assert_true(c[0] == 24 && c[1] == 24 && c[2] == 6);
@@ -198,6 +203,12 @@ static void each_bad_scene_has_its_own_message(void **state)
     expect_error(1, "name: t\nfit: {family: cubic}\n", (const char *[]){"t.yaml:2:", "fit.family", NULL});
     expect_error(1, "name: t\nfit: {folds: 1}\n", (const char *[]){"t.yaml:2:", "fit.folds", NULL});
     expect_error(1, "name: t\nfit: {contact: nowhere}\n", (const char *[]){"t.yaml:2:", "fit.contact", NULL});
+    expect_error(1, "name: t\nfit: {tick_us: 0}\n", (const char *[]){"t.yaml:2:", "fit.tick_us", NULL});
+    expect_error(1, "name: t\nfit: {tick_us: 1000001}\n", (const char *[]){"t.yaml:2:", "fit.tick_us", NULL});
+    expect_error(1, "name: t\nfit: {histories: 1}\n", (const char *[]){"t.yaml:2:", "fit.histories", NULL});
+    expect_error(1, "name: t\nfit: {heldout_histories: 0}\n",
+                 (const char *[]){"t.yaml:2:", "fit.heldout_histories", NULL});
+    expect_error(1, "name: t\nfit: {history_ticks: 9}\n", (const char *[]){"t.yaml:2:", "fit.history_ticks", NULL});
     expect_error(3, "  box: {min: [0, 0, 0], max: [10, 10, 2]\n", (const char *[]){"t.yaml:", NULL});
 }
 

@@ -1,0 +1,322 @@
+/*
+ * histories.c — see histories.h.
+ */
+#include "fitting/histories.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/context.h"
+#include "base/rng.h"
+
+#define MAX_RAMPS 4
+
+/* One history: ramps from one force to the next (cosine in time), held
+ * between them; before the first ramp the force is zero. */
+typedef struct ramp {
+    double t0, dur;
+    double to[3];
+} ramp;
+
+typedef struct history {
+    int n;
+    ramp r[MAX_RAMPS];
+} history;
+
+struct tf_history_design {
+    size_t n;
+    history *h;
+};
+
+tf_creep tf_creep_kelvin(double k1, double k2, double eta)
+{
+    tf_creep c = {0, {0}, {0}};
+    if (k2 > 0) {
+        c.n = 1;
+        c.w[0] = k2 / (k1 + k2);
+        c.tau[0] = eta / k2 * (k1 + k2) / k1;
+    }
+    return c;
+}
+
+/* A force at level s of the radius in a random direction, around centre. */
+static void random_force(tf_rng *r, const tf_fitdata *d, double s, double f[3])
+{
+    double u[3], n2;
+    do {
+        for (int i = 0; i < 3; ++i) {
+            u[i] = tf_rng_range(r, -1, 1);
+        }
+        n2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    } while (n2 > 1 || n2 < 1e-4);
+    for (int i = 0; i < 3; ++i) {
+        f[i] = d->centre[i] + s * d->radius * u[i] / sqrt(n2);
+    }
+}
+
+static void add_ramp(history *h, double t0, double dur, const double to[3])
+{
+    if (h->n < MAX_RAMPS) {
+        ramp *r = &h->r[h->n++];
+        r->t0 = t0;
+        r->dur = dur;
+        memcpy(r->to, to, sizeof r->to);
+    }
+}
+
+/* Training: press to a random force (level 0.3..1 of the radius) over
+ * 0.02..0.5 s, hold 0.2..0.45 of the history, sometimes a second press on
+ * top, release to no force over 0.02..0.5 s, rest.  Held-out: press, hold and release
+ * only, with levels, directions and times from another stream. */
+static void design_one(tf_rng *r, const tf_fitdata *d, double duration, int heldout, history *h)
+{
+    double f[3];
+    const double zero[3] = {0, 0, 0};
+    h->n = 0;
+    double t = tf_rng_range(r, 0, 0.05 * duration);
+    double ramp_t = tf_rng_range(r, 0.02, 0.5);
+    random_force(r, d, tf_rng_range(r, 0.3, 1.0), f);
+    add_ramp(h, t, ramp_t, f);
+    t += ramp_t + tf_rng_range(r, 0.2, 0.45) * duration;
+    if (!heldout && tf_rng_below(r, 2) == 0) {
+        ramp_t = tf_rng_range(r, 0.02, 0.3);
+        random_force(r, d, tf_rng_range(r, 0.2, 1.0), f);
+        add_ramp(h, t, ramp_t, f);
+        t += ramp_t + tf_rng_range(r, 0.05, 0.2) * duration;
+    }
+    add_ramp(h, t, tf_rng_range(r, 0.02, 0.5), zero);
+}
+
+tf_history_design *tf_history_design_new(const tf_fitdata *d, size_t n_train, size_t n_heldout,
+                                         size_t n_ticks, double tick, uint64_t seed)
+{
+    tf_history_design *hd = malloc(sizeof *hd);
+    if (hd == NULL) {
+        return NULL;
+    }
+    hd->n = n_train + n_heldout;
+    hd->h = malloc(hd->n * sizeof *hd->h);
+    if (hd->h == NULL) {
+        free(hd);
+        return NULL;
+    }
+    tf_rng train = {seed}, held = {seed ^ 0x5eedf00dull};
+    const double duration = (double)n_ticks * tick;
+    for (size_t i = 0; i < hd->n; ++i) {
+        design_one(i < n_train ? &train : &held, d, duration, i >= n_train, &hd->h[i]);
+    }
+    return hd;
+}
+
+void tf_history_design_free(tf_history_design *hd)
+{
+    if (hd != NULL) {
+        free(hd->h);
+        free(hd);
+    }
+}
+
+void tf_history_design_force(const tf_history_design *hd, size_t i, double t, double f[3])
+{
+    const history *h = &hd->h[i];
+    double from[3] = {0, 0, 0}; /* at rest under no force until the first ramp */
+    memcpy(f, from, sizeof from);
+    for (int j = 0; j < h->n; ++j) {
+        const ramp *r = &h->r[j];
+        if (t <= r->t0) {
+            return;
+        }
+        const double s = t >= r->t0 + r->dur ? 1.0 : 0.5 * (1 - cos(M_PI * (t - r->t0) / r->dur));
+        for (int k = 0; k < 3; ++k) {
+            f[k] = from[k] + s * (r->to[k] - from[k]);
+            from[k] = r->to[k];
+        }
+    }
+}
+
+static int alloc_set(tf_history_set *s, size_t n, size_t n_ticks, uint32_t n_out)
+{
+    s->n = n;
+    s->n_ticks = n_ticks;
+    s->n_out = n_out;
+    s->force = malloc(n * n_ticks * sizeof *s->force);
+    s->u = malloc(n * n_ticks * 3 * (size_t)n_out * sizeof *s->u);
+    return s->force != NULL && s->u != NULL ? 0 : -1;
+}
+
+/* The forces of every tick, rounded to float (the firmware's input). */
+static void sample_forces(const tf_history_design *hd, size_t first, tf_history_set *s,
+                          double tick)
+{
+    for (size_t h = 0; h < s->n; ++h) {
+        for (size_t n = 0; n < s->n_ticks; ++n) {
+            double f[3];
+            tf_history_design_force(hd, first + h, (double)n * tick, f);
+            for (int k = 0; k < 3; ++k) {
+                s->force[h * s->n_ticks + n][k] = (double)(float)f[k];
+            }
+        }
+    }
+}
+
+/* One history of a linear viscoelastic body: y = f - sum_j w_j e_j with
+ * e_j = int exp(-(t - s)/tau_j) df(s), integrated over substeps on which f
+ * is taken linear (the exact update there); u = base + sum_k unit_k y_k.
+ * The force at the ticks is the float one stored in s (the substeps in
+ * between follow the design's continuous force). */
+static void creep_one(const tf_cases *c, const tf_creep *cr, const tf_history_design *hd,
+                      size_t which, tf_history_set *s, size_t h, double tick)
+{
+    const size_t rows = 3 * (size_t)s->n_out;
+    const double dt = tick / TF_HIST_SUBSTEPS;
+    double e[TF_CREEP_MAX_TERMS][3] = {{0}}, a[TF_CREEP_MAX_TERMS], dgain[TF_CREEP_MAX_TERMS];
+    for (int j = 0; j < cr->n; ++j) {
+        const double r = dt / cr->tau[j];
+        a[j] = exp(-r);
+        dgain[j] = -expm1(-r) / r;
+    }
+    double f_prev[3] = {0, 0, 0};
+    for (size_t n = 0; n < s->n_ticks; ++n) {
+        const double *fn = tf_history_force(s, h, n);
+        for (int sub = 1; sub <= TF_HIST_SUBSTEPS && n > 0; ++sub) {
+            double f[3];
+            if (sub == TF_HIST_SUBSTEPS) {
+                memcpy(f, fn, sizeof f);
+            } else {
+                tf_history_design_force(hd, which, ((double)(n - 1) + (double)sub / TF_HIST_SUBSTEPS) * tick, f);
+            }
+            for (int j = 0; j < cr->n; ++j) {
+                for (int k = 0; k < 3; ++k) {
+                    e[j][k] = a[j] * e[j][k] + dgain[j] * (f[k] - f_prev[k]);
+                }
+            }
+            memcpy(f_prev, f, sizeof f);
+        }
+        if (n == 0) { /* the force at t = 0 is applied from rest: an instantaneous step */
+            for (int j = 0; j < cr->n; ++j) {
+                for (int k = 0; k < 3; ++k) {
+                    e[j][k] = fn[k];
+                }
+            }
+            memcpy(f_prev, fn, sizeof f_prev);
+        }
+        double y[3];
+        for (int k = 0; k < 3; ++k) {
+            y[k] = fn[k];
+            for (int j = 0; j < cr->n; ++j) {
+                y[k] -= cr->w[j] * e[j][k];
+            }
+        }
+        double *u = s->u + (h * s->n_ticks + n) * rows;
+        for (size_t o = 0; o < rows; ++o) {
+            u[o] = c->base[o] + y[0] * c->unit[0][o] + y[1] * c->unit[1][o] + y[2] * c->unit[2][o];
+        }
+    }
+}
+
+static int start(tf_histories *h, const tf_cases *c, uint32_t tick_ns, size_t n_train,
+                 size_t n_heldout, size_t n_ticks, uint64_t seed, tf_history_design **hd)
+{
+    memset(h, 0, sizeof *h);
+    h->tick_ns = tick_ns;
+    h->tick = 1e-9 * tick_ns;
+    *hd = tf_history_design_new(&c->train, n_train, n_heldout, n_ticks, h->tick, seed);
+    if (*hd == NULL || alloc_set(&h->train, n_train, n_ticks, c->train.n_out) != 0 ||
+        alloc_set(&h->heldout, n_heldout, n_ticks, c->train.n_out) != 0) {
+        return -1;
+    }
+    sample_forces(*hd, 0, &h->train, h->tick);
+    sample_forces(*hd, n_train, &h->heldout, h->tick);
+    return 0;
+}
+
+int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t tick_ns,
+                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
+                              tf_histories *h, char *err, size_t errlen)
+{
+    if (!c->affine || c->base == NULL) {
+        snprintf(err, errlen, "linear creep histories need an affine solver's unit responses");
+        return -1;
+    }
+    tf_history_design *hd;
+    if (start(h, c, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
+        tf_history_design_free(hd);
+        tf_histories_free(h);
+        snprintf(err, errlen, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
+                 n_ticks);
+        return -1;
+    }
+    for (size_t i = 0; i < n_train; ++i) {
+        creep_one(c, creep, hd, i, &h->train, i, h->tick);
+    }
+    for (size_t i = 0; i < n_heldout; ++i) {
+        creep_one(c, creep, hd, n_train + i, &h->heldout, i, h->tick);
+    }
+    tf_history_design_free(hd);
+    return 0;
+}
+
+/* One history through the solver, keeping the output rows. */
+static int solve_one(const tf_cases *c, tf_history_set *s, size_t h, double tick)
+{
+    const tf_outputs *o = &c->problem->outputs;
+    const size_t dofs = 3 * tf_solver_node_count(c->solver), rows = 3 * (size_t)s->n_out;
+    double *full = malloc(dofs * s->n_ticks * sizeof *full);
+    if (full == NULL) {
+        return tf_fail(c->solver->ctx, "out of memory for a history of %zu ticks", s->n_ticks);
+    }
+    int rc = tf_solver_history(c->solver, c->contact,
+                               (const double(*)[3])s->force + h * s->n_ticks, s->n_ticks, tick,
+                               full);
+    for (size_t n = 0; rc == 0 && n < s->n_ticks; ++n) {
+        double *u = s->u + (h * s->n_ticks + n) * rows;
+        for (size_t j = 0; j < o->n_nodes; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                u[3 * j + (size_t)k] = full[n * dofs + 3 * (size_t)o->nodes[j] + (size_t)k];
+            }
+        }
+    }
+    free(full);
+    return rc;
+}
+
+int tf_histories_solve(const tf_cases *c, uint32_t tick_ns, size_t n_train, size_t n_heldout,
+                       size_t n_ticks, uint64_t seed, tf_histories *h)
+{
+    tf_history_design *hd;
+    if (start(h, c, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
+        tf_history_design_free(hd);
+        tf_histories_free(h);
+        return tf_fail(c->solver->ctx, "out of memory for %zu histories", n_train + n_heldout);
+    }
+    tf_history_design_free(hd);
+    for (size_t i = 0; i < n_train; ++i) {
+        if (solve_one(c, &h->train, i, h->tick) != 0) {
+            tf_histories_free(h);
+            return -1;
+        }
+    }
+    for (size_t i = 0; i < n_heldout; ++i) {
+        if (solve_one(c, &h->heldout, i, h->tick) != 0) {
+            tf_histories_free(h);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void free_set(tf_history_set *s)
+{
+    free(s->force);
+    free(s->u);
+    s->force = NULL;
+    s->u = NULL;
+}
+
+void tf_histories_free(tf_histories *h)
+{
+    free_set(&h->train);
+    free_set(&h->heldout);
+}
