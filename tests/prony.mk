@@ -173,6 +173,7 @@ $(T)/gen/kelvin_small.h: tests/prony/kelvin_small.yaml $(B)/bin/tissuefit
 	$(Q)$(B)/bin/tissuefit -q fit $< -o $@
 
 $(T)/prony/golden-kelvin_small: tests/header/run_golden.c $(T)/gen/kelvin_small.h $(B)/native/libtfit.a
+	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"kelvin_small_golden.h"' \
 	  -DGOLDEN_SETS=TFIT_KELVIN_SMALL_GOLDEN_SETS -DTFIT_KELVIN_SMALL_IMPLEMENTATION $< \
