@@ -13,8 +13,9 @@
  * discretisation error of a contact radius measured in particle spacings
  * (docs/collocation.md, Hertz).
  *
- * The force on the sphere is, in a dynamic step, the momentum the sphere
- * took from the particles over dt; in equilibrium (tf_colloc_relax), the
+ * The force on the sphere is, in a dynamic step, the constraint force that
+ * removed the particles' inward velocity (the momentum taken over dt, with
+ * the damped step's gain); in equilibrium (tf_colloc_relax), the
  * sum of the particles' inward forces on it, which is the same number once
  * the motion has died out and has no lag.
  */
@@ -131,7 +132,10 @@ void tf_colloc_contact(tf_colloc *c, const double *m, double dt, double alpha, d
             touching++;
         }
     }
-    b->force = p / dt;
+    /* The constraint force lambda is what the step's update (dt/(1 + alpha
+     * dt/2) per unit force, colloc_dynamics.c) needs to remove the inward
+     * velocity: lambda = m dv (1 + alpha dt/2) / dt. */
+    b->force = p * (1 + alpha * dt / 2) / dt;
     b->contacts = touching;
 }
 

@@ -20,8 +20,9 @@
  *   its step is stable against the contact's stiffness.
  *
  * Converged when the residual (the net force at free components, less the
- * sphere's reactions) is below tol times the applied and reaction forces
- * (2-norms), checked every step.
+ * sphere's reactions, and for a force-driven sphere its own net force) is
+ * below tol times the applied and reaction forces (2-norms), checked every
+ * step.
  */
 #include "solvers/collocation/colloc_internal.h"
 
@@ -78,6 +79,11 @@ static void residual(tf_colloc *c, double *rnorm, double *scale)
         r2 += c->res[q] * c->res[q];
         double applied = c->fixed[q / 3] >> (q % 3) & 1 ? c->f[q] + c->fext[q] : c->fext[q];
         s2 += applied * applied;
+    }
+    if (c->ball.on && c->ball.s.drive == TF_COLLOC_FORCE) { /* the sphere's balance */
+        double rs = c->ball.s.force - fc;
+        r2 += rs * rs;
+        s2 += c->ball.s.force * c->ball.s.force;
     }
     *rnorm = sqrt(r2);
     *scale = sqrt(s2) + fabs(fc);
