@@ -36,7 +36,7 @@ typedef struct tf_colloc_opts {
     double support;      /* h_i = support x mean distance to the neighbours (default 2) */
     double rcond_min;    /* smallest reciprocal condition of a moment matrix (1e-6) */
     double kv;           /* volume-conservation constant of eq 12, MPa (default 0) */
-    double stab;         /* weight of the fit-residual energy (ours, default 0.1; see
+    double stab;         /* weight of the fit-residual energy (ours, default 0.3; see
                           * docs/collocation.md: 0 is the seed's method) */
 } tf_colloc_opts;
 

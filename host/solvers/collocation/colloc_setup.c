@@ -25,7 +25,7 @@ void tf_colloc_defaults(tf_colloc_opts *o)
     o->support = 2.0;
     o->rcond_min = 1e-6;
     o->kv = 0;
-    o->stab = 0.1;
+    o->stab = 0.3;
 }
 
 /* Seed 004 eq 1: w(r) = 1 - 3r^2 + 3r^4 - r^6 = (1 - r^2)^3 for r <= 1. */
