@@ -122,7 +122,12 @@ int main(int argc, char **argv)
     for (int threads = 1; threads <= (maxt < 2 ? 2 : maxt); ++threads) {
         omp_set_num_threads(threads);
         tf_colloc *c = body(X, fixed, vol);
-        double dt = 0.9 * tf_colloc_critical_dt(c, err, sizeof err);
+        double dcrit = tf_colloc_critical_dt(c, err, sizeof err), dt = 0.9 * dcrit;
+        if (threads == 1) {
+            printf("stable step: %.4g s (Lanczos), wave bound min r / c_p %.4g s, ratio %.2f; "
+                   "steps of 0.9 of it\n", dcrit, tf_colloc_wave_dt(c),
+                   dcrit / tf_colloc_wave_dt(c));
+        }
         tf_colloc_run(c, dt, 5, 0, err, sizeof err); /* warm up */
         for (int k = 0; k < batches; ++k) {
             r[k] = reference(a, a + NREF * NREF, a + 2 * NREF * NREF, &rc[k]);

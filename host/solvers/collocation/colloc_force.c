@@ -98,17 +98,6 @@ static double residual_energy(const tf_colloc *c, size_t i, const double *u, con
     return 0.5 * c->beta[i] * e;
 }
 
-/* out = a b for 3 x 3 row-major a, b. */
-static void mul3(const double a[9], const double b[9], double out[9])
-{
-    for (int r = 0; r < 3; ++r) {
-        for (int col = 0; col < 3; ++col) {
-            out[3 * r + col] = a[3 * r] * b[col] + a[3 * r + 1] * b[3 + col] +
-                               a[3 * r + 2] * b[6 + col];
-        }
-    }
-}
-
 /* G_i = B_i A_i^-1, B_i = sum_k (u_k - u_i) y_ik^T (colloc_mls.c), and
  * q_i = sum_k w_ik (u_k - u_i). */
 static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9], double q[3])
@@ -132,7 +121,7 @@ static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9],
         q[1] += w * du1;
         q[2] += w * du2;
     }
-    mul3(B, c->ainv + 9 * i, G);
+    tf_matmul3(B, c->ainv + 9 * i, G);
 }
 
 /* First Piola-Kirchhoff stress P (and the energy density in *W) of particle
@@ -180,7 +169,7 @@ static int phase1(tf_colloc *c, size_t i, const double *u, double dt, int want_e
     for (int k = 0; k < 9; ++k) {
         P[k] *= vi;
     }
-    mul3(P, ainv, M);
+    tf_matmul3(P, ainv, M);
     for (int k = 0; k < 9; ++k) {
         out[k] = M[k] - bi * G[k];
     }

@@ -20,24 +20,7 @@
 #include <stdlib.h>
 
 #include "materials/elasticity.h"
-
-/* Inverse of the symmetric 3 x 3 a by cofactors; returns det a. */
-static double inverse3(const double a[9], double inv[9])
-{
-    double c00 = a[4] * a[8] - a[5] * a[7], c01 = a[5] * a[6] - a[3] * a[8],
-           c02 = a[3] * a[7] - a[4] * a[6];
-    double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
-    inv[0] = c00 / det;
-    inv[1] = (a[2] * a[7] - a[1] * a[8]) / det;
-    inv[2] = (a[1] * a[5] - a[2] * a[4]) / det;
-    inv[3] = c01 / det;
-    inv[4] = (a[0] * a[8] - a[2] * a[6]) / det;
-    inv[5] = (a[2] * a[3] - a[0] * a[5]) / det;
-    inv[6] = c02 / det;
-    inv[7] = (a[1] * a[6] - a[0] * a[7]) / det;
-    inv[8] = (a[0] * a[4] - a[1] * a[3]) / det;
-    return det;
-}
+#include "materials/kinematics.h"
 
 static double norm1(const double a[9])
 {
@@ -79,7 +62,10 @@ static double particle(tf_colloc *c, size_t i, double mu)
         }
         w2 += w * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
     }
-    double det = inverse3(A, inv);
+    double det = tf_det3(A);
+    if (det > 0) {
+        tf_inverse_sym3(A, det, inv);
+    }
     if (!(det > 0) || !isfinite(det) || !(w2 > 0)) {
         return 0;
     }
