@@ -8,12 +8,12 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_forward: nodal p=1, 121 output points, force [N] -> displacement [mm]
  *       1103 add, 1122 mul, 0 div per evaluation; 6344 table bytes
- *       5552 instructions; Cortex-M4F <= 7846 cycles (46.70 us at 168 MHz), Cortex-M7 ~5362 (11.17 us at 480 MHz)
+ *       2480 instructions; Cortex-M4F <= 4388 cycles (26.12 us at 168 MHz), Cortex-M7 ~3417 (7.12 us at 480 MHz)
  *       Q31 form tfit_block48_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 3.04e-08 mm (float32 path: 1.68e-07)
  *       held-out error over 50 cases: max 1.16e-07 mm, rms 5.68e-09 mm
  *   tfit_block48_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
- *       241 instructions; Cortex-M4F <= 325 cycles (1.93 us at 168 MHz), Cortex-M7 ~216 (0.45 us at 480 MHz)
+ *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_block48_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.04e-08 N (float32 path: 6.65e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 1.12e-08 N
  *
@@ -27,8 +27,8 @@
 #include "tfit.h"
 #include "tfit_q31.h"
 
-#if TFIT_API_VERSION != 3
-#error "block48.h was generated for tfit API version 3: regenerate it with tissuefit"
+#if TFIT_API_VERSION != 4
+#error "block48.h was generated for tfit API version 4: regenerate it with tissuefit"
 #endif
 
 /* tfit_block48_forward */
@@ -45,21 +45,23 @@
 #define TFIT_BLOCK48_FORWARD_OPS_DIV 0
 #define TFIT_BLOCK48_FORWARD_OPS 2225
 #define TFIT_BLOCK48_FORWARD_TABLE_BYTES 6344
-#define TFIT_BLOCK48_FORWARD_INSNS_ARMV7EM 5552 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_FORWARD_CYCLES_M4F 7846u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_FORWARD_CYCLES_M4F_MIN 5599u
-#define TFIT_BLOCK48_FORWARD_US_M4F_168MHZ 46.70
-#define TFIT_BLOCK48_FORWARD_CYCLES_M7 5362u /* estimate, +-30 % */
-#define TFIT_BLOCK48_FORWARD_US_M7_480MHZ 11.17
+#define TFIT_BLOCK48_FORWARD_INSNS_ARMV7EM 2480 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_FORWARD_CYCLES_M4F 4388u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_FORWARD_CYCLES_M4F_MIN 4361u
+#define TFIT_BLOCK48_FORWARD_US_M4F_168MHZ 26.12
+#define TFIT_BLOCK48_FORWARD_CYCLES_M7 3417u /* estimate, +-30 % */
+#define TFIT_BLOCK48_FORWARD_US_M7_480MHZ 7.12
 #define TFIT_BLOCK48_FORWARD_Q31_IN_EXP 1 /* input word x = value * 2^(31 - 1), N */
 #define TFIT_BLOCK48_FORWARD_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), mm */
 #define TFIT_BLOCK48_FORWARD_Q31_ADDED_ERROR_MM 3.04358e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 1.68053e-07 */
-#define TFIT_BLOCK48_FORWARD_Q31_CRC32 0x10352687u
+#define TFIT_BLOCK48_FORWARD_Q31_CRC32 0xfac52583u
+#define tfit_block48_forward_q31 tfit_block48_forward_q31_fac52583 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_forward_q31;
 #define TFIT_BLOCK48_FORWARD_HELDOUT_CASES 50
 #define TFIT_BLOCK48_FORWARD_HELDOUT_MAX_MM 1.16479e-07
 #define TFIT_BLOCK48_FORWARD_HELDOUT_RMS_MM 5.67964e-09
-#define TFIT_BLOCK48_FORWARD_CRC32 0x522e69fcu
+#define TFIT_BLOCK48_FORWARD_CRC32 0x64439b74u
+#define tfit_block48_forward tfit_block48_forward_64439b74 /* this header's version of the model */
 extern const tfit_model tfit_block48_forward;
 
 /* tfit_block48_contact */
@@ -75,22 +77,24 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_OPS_DIV 0
 #define TFIT_BLOCK48_CONTACT_OPS 65
 #define TFIT_BLOCK48_CONTACT_TABLE_BYTES 104
-#define TFIT_BLOCK48_CONTACT_INSNS_ARMV7EM 241 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_CONTACT_CYCLES_M4F 325u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_CONTACT_CYCLES_M4F_MIN 261u
-#define TFIT_BLOCK48_CONTACT_US_M4F_168MHZ 1.93
-#define TFIT_BLOCK48_CONTACT_CYCLES_M7 216u /* estimate, +-30 % */
-#define TFIT_BLOCK48_CONTACT_US_M7_480MHZ 0.45
+#define TFIT_BLOCK48_CONTACT_INSNS_ARMV7EM 156 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_CONTACT_CYCLES_M4F 213u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_CONTACT_CYCLES_M4F_MIN 203u
+#define TFIT_BLOCK48_CONTACT_US_M4F_168MHZ 1.27
+#define TFIT_BLOCK48_CONTACT_CYCLES_M7 166u /* estimate, +-30 % */
+#define TFIT_BLOCK48_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_BLOCK48_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CONTACT_Q31_ADDED_ERROR_N 4.0422e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.65254e-08 */
-#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x0ce71a33u
+#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x33a63249u
+#define tfit_block48_contact_q31 tfit_block48_contact_q31_33a63249 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_CASES 50
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_RMS_N 1.12419e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_REL_MAX 7.52712e-08
-#define TFIT_BLOCK48_CONTACT_CRC32 0xfb2b6178u
+#define TFIT_BLOCK48_CONTACT_CRC32 0x98757703u
+#define tfit_block48_contact tfit_block48_contact_98757703 /* this header's version of the model */
 extern const tfit_model tfit_block48_contact;
 
 #ifdef TFIT_BLOCK48_IMPLEMENTATION
@@ -851,9 +855,16 @@ static const float tfit_block48_forward_coef[1464] = {
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
 };
 const tfit_model tfit_block48_forward = {
-    3u, 1u, 121u, 1u, 1464u,
+    4u, 1u, 121u, 1u, 1464u,
     tfit_block48_forward_dims, tfit_block48_forward_coef, tfit_block48_forward_nodes,
-    0x522e69fcu
+    tfit_block48_forward_dims + 1u, tfit_block48_forward_coef + 1464u, tfit_block48_forward_nodes + 121u,
+    /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
+    {0x3f4c11bbu, 0xbee3df70u, 0x3e45c0d9u, 0xbe0dd187u, 0x3f37c909u, 0xbe9c251du,
+     0x3f3f485cu, 0x3d1be0c9u, 0x3ef49e77u, 0xbececf14u, 0xbdee00ccu, 0xbe955f0du,
+     0xbf13cd3au, 0xbf13cd3au, 0xbf13cd3au, 0xc092ff71u, 0xc0d65cf2u, 0x40baa7b3u,
+     0xf0b9898eu, 0xf1074839u, 0x70eb9782u, 0xc0d89590u, 0x4067ca04u, 0xc0cd15adu,
+     0xf3e9631bu, 0x4c4a1835u},
+    0x64439b74u
 };
 static const int32_t tfit_block48_forward_q31_coef[1828] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1590,9 +1601,10 @@ static const int32_t tfit_block48_forward_q31_coef[1828] = {
     62, 0, 0, 0, 0,
 };
 const tfit_model_q31 tfit_block48_forward_q31 = {
-    2u, 1u, 121u, 1u, 1828u,
+    3u, 1u, 121u, 1u, 1828u,
     tfit_block48_forward_q31_coef, tfit_block48_forward_nodes,
-    0x10352687u
+    tfit_block48_forward_q31_coef + 1828u, tfit_block48_forward_nodes + 121u,
+    0xfac52583u
 };
 
 static const uint32_t tfit_block48_contact_dims[1] = {
@@ -1616,9 +1628,16 @@ static const float tfit_block48_contact_coef[24] = {
     0x1.99999ap-59f, 0x1.7b0beep-54f, 0x1.a2cd64p-56f, 0x1p+0f,
 };
 const tfit_model tfit_block48_contact = {
-    3u, 4u, 1u, 1u, 24u,
+    4u, 4u, 1u, 1u, 24u,
     tfit_block48_contact_dims, tfit_block48_contact_coef, tfit_block48_contact_nodes,
-    0xfb2b6178u
+    tfit_block48_contact_dims + 1u, tfit_block48_contact_coef + 24u, tfit_block48_contact_nodes + 1u,
+    /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
+    {0x3f1f48d9u, 0xbeb1dd3du, 0x3ece891cu, 0xbddd63f5u, 0x3f0f73bcu, 0xbf231455u,
+     0x3f154dd9u, 0x3cf356b2u, 0x3f7f7b8bu, 0xbea16c48u, 0xbdb9c578u, 0xbf1c0142u,
+     0xbee6bb11u, 0xbee6bb11u, 0xbf9a5d96u, 0xc06579d1u, 0xc0a751beu, 0x4142f1c9u,
+     0xf090d1d2u, 0xf0d32fc9u, 0x71760df5u, 0xc0a90d93u, 0x4034ebccu, 0xc1563149u,
+     0x60e5a32du, 0x11f741beu},
+    0x98757703u
 };
 static const int32_t tfit_block48_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1635,9 +1654,10 @@ static const int32_t tfit_block48_contact_q31_coef[28] = {
     34, 0, 0, 0, 1073741824,
 };
 const tfit_model_q31 tfit_block48_contact_q31 = {
-    2u, 4u, 1u, 1u, 28u,
+    3u, 4u, 1u, 1u, 28u,
     tfit_block48_contact_q31_coef, tfit_block48_contact_nodes,
-    0x0ce71a33u
+    tfit_block48_contact_q31_coef + 28u, tfit_block48_contact_nodes + 1u,
+    0x33a63249u
 };
 
 #endif /* TFIT_BLOCK48_IMPLEMENTATION */

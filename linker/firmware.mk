@@ -50,6 +50,24 @@ FW_LD_m0 := microbit.ld
 FW_SCRATCH_m0 := -DSCRATCH_WORDS=1536u
 FW_CORES := m4f m7
 FW_Q31_CORES := m3 m0
+# The same boards with other builds of the float library: the portable C
+# path (the reference for the assembly, tfit_degree1_armv7em.c) and the
+# assembly compiled at -O0, -Os and -O3.  Golden vectors only (check-qemu).
+FW_VARIANTS := m4f-c m7-c m4f-O0 m4f-Os m4f-O3
+FW_LIB_m4f-c := $(B)/cortex-m4f-portable/libtfit.a
+FW_LIB_m7-c := $(B)/cortex-m7-portable/libtfit.a
+FW_LIB_m4f-O0 := $(B)/cortex-m4f-O0/libtfit.a
+FW_LIB_m4f-Os := $(B)/cortex-m4f-Os/libtfit.a
+FW_LIB_m4f-O3 := $(B)/cortex-m4f-O3/libtfit.a
+$(foreach v,m4f-c m4f-O0 m4f-Os m4f-O3,$(eval FW_FLAGS_$(v) := $(M4F_FLAGS))$(eval FW_QEMU_$(v) := mps2-an386)$(eval FW_LD_$(v) := mps2-an386.ld))
+FW_FLAGS_m7-c := $(M7_FLAGS)
+FW_QEMU_m7-c := mps2-an500
+FW_LD_m7-c := mps2-an500.ld
+FW_TAG_m4f-c := (C)
+FW_TAG_m7-c := (C)
+FW_TAG_m4f-O0 := (-O0)
+FW_TAG_m4f-Os := (-Os)
+FW_TAG_m4f-O3 := (-O3)
 
 DEBS_CHECK += qemu-system-arm
 
@@ -79,12 +97,12 @@ $(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(
 	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
 	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
 	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
-	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))"' \
+	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))$(FW_TAG_$(2))"' \
 	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_LD_$(2)) \
 	  -Wl,-Map=$$(@:.elf=.map) -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_golden,$(h),$(c)))))
-FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
+$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(eval $(call fw_golden,$(h),$(c)))))
+FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
 
 # The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
 $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
@@ -97,8 +115,8 @@ $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: 
 .PHONY: check-qemu
 CHECKS += check-qemu
 check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
-	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit) =="
-	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit); the C path and -O0/-Os/-O3 builds on M4F/M7 =="
+	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
 	    tests/firmware/qemu_run.sh $(FW_QEMU_$(c)) $(FW)/$(c)/golden-$$h.elf; done;)
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
@@ -133,6 +151,7 @@ check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
 # over the real instruction stream).
 FW_TOOL_SRC := tests/firmware/insn_class.c
 FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map tfit_basis \
+                 tfit_degree1_asm tfit_degree1_one_asm \
                  tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
@@ -284,3 +303,62 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "servo budget: haptic.h fits 1 kHz on both cores; 20 kHz on the M4F is refused at compile time"
 	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
 
+
+# --- a build that contracts a*b + c (issue 19) --------------------------------
+# GCC's GNU modes (the default -std=gnu11) and -ffp-contract=fast fuse a*b + c
+# into VFMA on the M4F, which changes bits.  The library's sources ask GCC
+# and Clang for no contraction themselves and refuse -ffast-math
+# (tfit_internal.h).  check-contract shows (1) that the unmodified sources
+# built with -std=gnu11 or -ffp-contract=fast contain no fused multiply-add
+# and (2) that -ffast-math stops the build, then (3) that a library whose
+# compiler ignored the pragma (removed here from a copy of the sources) is
+# caught at boot: on mps2-an386 every float model whose golden vectors come
+# out with other bits fails tfit_model_check() with TFIT_ERR_ARITH.  That
+# library is the C path (-DTFIT_PORTABLE): the degree-1 assembly cannot be
+# contracted.
+FW_CONTRACT := $(FW)/contract
+FW_CONTRACT_PRAGMA := \#pragma GCC optimize("fp-contract=off")
+
+$(FW_CONTRACT)/gnu11/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)tests/firmware/contract_lib.sh $@ target/src -std=gnu11
+$(FW_CONTRACT)/fast/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)tests/firmware/contract_lib.sh $@ target/src -std=c11 -ffp-contract=fast
+$(FW_CONTRACT)/unguarded/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) tests/firmware/contract_lib.sh | deps-check
+	$(call say,AR)
+	$(Q)rm -rf $(@D)/src && mkdir -p $(@D)/src && cp target/src/*.c target/src/*.h $(@D)/src/
+	$(Q)grep -qxF '$(FW_CONTRACT_PRAGMA)' $(@D)/src/tfit_internal.h || \
+	  { echo "tfit_internal.h no longer has the line this test removes"; exit 1; }
+	$(Q)grep -vxF '$(FW_CONTRACT_PRAGMA)' target/src/tfit_internal.h >$(@D)/src/tfit_internal.h
+	$(Q)tests/firmware/contract_lib.sh $@ $(@D)/src -std=gnu11 -DTFIT_PORTABLE
+
+define fw_contract_image
+$(FW_CONTRACT)/contract-$(call fw_name,$(1)).elf: tests/firmware/qemu_contract.c $(1) $(FW_STARTUP) \
+    $(FW_SEMIHOST) $(FW_CONTRACT)/unguarded/libtfit.a | deps-check
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -I$(dir $(1)) -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DLABEL='"$(call fw_name,$(1))/mps2-an386, contracted"' $$(filter %.c,$$^) \
+	  $(FW_CONTRACT)/unguarded/libtfit.a $(FW_LDFLAGS) -T mps2-an386.ld -o $$@
+endef
+$(foreach h,$(FW_HEADERS),$(eval $(call fw_contract_image,$(h))))
+
+.PHONY: check-contract
+CHECKS += check-contract
+check-contract: $(foreach v,gnu11 fast unguarded,$(FW_CONTRACT)/$(v)/libtfit.a) \
+    $(foreach h,$(FW_HEADERS),$(FW_CONTRACT)/contract-$(call fw_name,$(h)).elf)
+	@echo "== a build that contracts a*b+c: no VFMA from the sources, -ffast-math refused, the boot check catches the rest (M4F, QEMU) =="
+	@set -e; for v in gnu11 fast; do \
+	  n=$$($(ARM)objdump -d $(FW_CONTRACT)/$$v/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
+	  if [ "$$n" != 0 ]; then echo "the $$v build has $$n fused multiply-adds"; exit 1; fi; done; \
+	  echo "-std=gnu11 and -ffp-contract=fast builds of target/src: 0 fused multiply-adds (the sources' pragma)"
+	@if $(ARM)gcc -std=c11 -ffast-math $(M4F_FLAGS) -Itarget/include -fsyntax-only target/src/tfit_nodal.c \
+	    2>$(FW_CONTRACT)/fast-math.err; then echo "-ffast-math was accepted"; exit 1; fi; \
+	  grep -q "tfit: -ffast-math" $(FW_CONTRACT)/fast-math.err && echo "-ffast-math: refused at compile time"
+	@n=$$($(ARM)objdump -d $(FW_CONTRACT)/unguarded/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
+	  if [ "$$n" = 0 ]; then echo "the build without the pragma did not contract: the test shows nothing"; exit 1; fi; \
+	  echo "without the pragma, -std=gnu11 contracts: $$n fused multiply-adds in the library"
+	@set -e; for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	  tests/firmware/qemu_run.sh mps2-an386 $(FW_CONTRACT)/contract-$$h.elf; done

@@ -38,6 +38,10 @@ M7_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
 # -fstack-usage: the frame of every function, for `make firmware`'s stack table.
 $(eval $(call tfit_lib,cortex-m4f,$(ARM)gcc,$(M4F_FLAGS) -O2 -fstack-usage,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m7,$(ARM)gcc,$(M7_FLAGS) -O2 -fstack-usage,$(ARM),check))
+# The portable C path on the same cores (-DTFIT_PORTABLE: no assembly), the
+# reference the assembly is checked against under QEMU (check-qemu).
+$(eval $(call tfit_lib,cortex-m4f-portable,$(ARM)gcc,$(M4F_FLAGS) -O2 -DTFIT_PORTABLE,$(ARM),check))
+$(eval $(call tfit_lib,cortex-m7-portable,$(ARM)gcc,$(M7_FLAGS) -O2 -DTFIT_PORTABLE,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O0,$(ARM)gcc,$(M4F_FLAGS) -O0,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-Os,$(ARM)gcc,$(M4F_FLAGS) -Os,$(ARM),check))
 $(eval $(call tfit_lib,cortex-m4f-O3,$(ARM)gcc,$(M4F_FLAGS) -O3,$(ARM),check))

@@ -115,12 +115,27 @@ $(T)/two_tu: tests/header/tu_main.c tests/header/tu_other.c $(T)/gen/families.h 
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
 
-check-header: $(T)/two_tu
-	@echo "== generated header in two translation units =="
+# A stale header: families.h regenerated from another seed (same model names,
+# other tables and N_OUT), compiled into one file next to the current one's
+# IMPLEMENTATION: the link must fail on the model's CRC-named symbol.
+$(T)/gen/stale/families.h: $(T)/gen_random
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< header 8 $@
+
+check-header: $(T)/two_tu $(T)/gen/stale/families.h tests/header/tu_stale.c
+	@echo "== generated header in two translation units; a file compiled against a stale header does not link =="
 	@$(T)/two_tu
 	@n=$$(nm $(T)/two_tu | grep -c ' tfit_nodal_a_coef$$'); \
 	if [ "$$n" != 1 ]; then echo "tfit_nodal_a_coef defined $$n times"; exit 1; fi; \
 	echo "tables defined once: ok"
+	@if $(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -c tests/header/tu_main.c -o $(T)/tu_main.o && \
+	  $(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen/stale -c tests/header/tu_stale.c -o $(T)/tu_stale.o && \
+	  $(CC) $(T)/tu_main.o $(T)/tu_stale.o $(B)/native/libtfit.a -o $(T)/stale_tu 2>$(T)/stale.err; then \
+	  echo "a file compiled against a stale families.h linked"; exit 1; fi; \
+	  want=$$(sed -n 's/^#define tfit_nodal_a \(tfit_nodal_a_[0-9a-f]*\) .*/\1/p' $(T)/gen/stale/families.h); \
+	  grep -q "undefined reference to .$$want" $(T)/stale.err || { cat $(T)/stale.err; exit 1; }; \
+	  echo "stale header (N_OUT $$(sed -n 's/^#define TFIT_NODAL_A_N_OUT \([0-9]*\)u/\1/p' $(T)/gen/stale/families.h) against $$(sed -n 's/^#define TFIT_NODAL_A_N_OUT \([0-9]*\)u/\1/p' $(T)/gen/families.h)): link refused, undefined $$want"
 
 # --- fixed instruction count ------------------------------------------------
 $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a

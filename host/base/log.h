@@ -1,17 +1,22 @@
 /*
- * log.h — messages on stderr: progress for long runs (silenced by -q) and
- * errors (always shown).
+ * log.h — messages through a run's context (context.h): progress for long
+ * runs (dropped by `tissuefit -q`), warnings and errors, each handed to the
+ * context's sink when its level shows it.  The default sink
+ * writes them to standard error, errors prefixed "tissuefit: error: " and
+ * warnings "tissuefit: warning: ".
  */
 #ifndef TF_LOG_H
 #define TF_LOG_H
 
-/* Set by the command line: 1 when -q was given. */
-extern int tf_quiet;
+#include "base/context.h"
 
-/* Progress or information, unless quiet. */
-void tf_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* Progress or information. */
+void tf_info(const tf_ctx *ctx, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-/* An error message prefixed with "tissuefit: error: ". */
-void tf_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* Something the user should change; shown under -q. */
+void tf_warn(const tf_ctx *ctx, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* An error; always shown. */
+void tf_error(const tf_ctx *ctx, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif /* TF_LOG_H */

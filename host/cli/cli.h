@@ -9,6 +9,8 @@
 
 #include <stdio.h>
 
+#include "base/context.h"
+
 #define TF_EXIT_OK 0
 #define TF_EXIT_FAIL 1
 #define TF_EXIT_USAGE 2
@@ -16,7 +18,7 @@
 typedef struct tf_command {
     const char *name;
     const char *summary;               /* one line for `tissuefit --help` */
-    int (*run)(int argc, char **argv); /* argv[0] is the command name */
+    int (*run)(tf_ctx *ctx, int argc, char **argv); /* argv[0] is the command name */
     void (*help)(FILE *out);           /* `tissuefit NAME --help` */
 } tf_command;
 

@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/log.h"
+
 int tf_parse_vec3(const char *s, double v[3])
 {
     const char *p = s;
@@ -40,4 +42,14 @@ void tf_sets_free(tf_sets *s)
     free(s->item);
     s->item = NULL;
     s->n = s->cap = 0;
+}
+
+tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
+{
+    char err[1024];
+    tf_scene *s = tf_scene_load(path, sets->item, sets->n, err, sizeof err);
+    if (s == NULL) {
+        tf_error(ctx, "%s", err);
+    }
+    return s;
 }

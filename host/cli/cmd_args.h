@@ -1,10 +1,13 @@
 /*
- * cmd_args.h — option values shared by the solver commands.
+ * cmd_args.h — option values and steps shared by the solver commands.
  */
 #ifndef TF_CMD_ARGS_H
 #define TF_CMD_ARGS_H
 
 #include <stddef.h>
+
+#include "base/context.h"
+#include "scene/scene.h"
 
 /* "FX,FY,FZ" -> v; 0, or -1 when not three finite numbers. */
 int tf_parse_vec3(const char *s, double v[3]);
@@ -18,5 +21,9 @@ typedef struct tf_sets {
 /* Appends; 0, or -1 when out of memory. */
 int tf_sets_add(tf_sets *s, const char *assignment);
 void tf_sets_free(tf_sets *s);
+
+/* The scene file with the --set overrides applied, or NULL after an error
+ * message (file, line, field) through the context. */
+tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets);
 
 #endif /* TF_CMD_ARGS_H */

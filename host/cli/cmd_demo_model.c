@@ -138,7 +138,7 @@ static void help(FILE *out)
             HELDOUT);
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     static const struct option opts[] = {
         {"out", required_argument, NULL, 'o'}, {"envelope", required_argument, NULL, 'e'}, {0}};
@@ -156,18 +156,19 @@ static int run(int argc, char **argv)
         case 'e':
             radius = strtod(optarg, &end);
             if (*end != '\0' || !(radius > 0) || !isfinite(radius)) {
-                tf_error("demo-model: --envelope '%s' is not a positive number of newtons", optarg);
+                tf_error(ctx, "demo-model: --envelope '%s' is not a positive number of newtons",
+                         optarg);
                 return TF_EXIT_USAGE;
             }
             break;
         default:
-            tf_error("demo-model: bad option '%s' (see tissuefit demo-model --help)",
+            tf_error(ctx, "demo-model: bad option '%s' (see tissuefit demo-model --help)",
                      argv[optind - 1]);
             return TF_EXIT_USAGE;
         }
     }
     if (path == NULL || optind != argc) {
-        tf_error("demo-model: expected -o FILE.h and no other arguments");
+        tf_error(ctx, "demo-model: expected -o FILE.h and no other arguments");
         return TF_EXIT_USAGE;
     }
 
@@ -179,12 +180,12 @@ static int run(int argc, char **argv)
 
     tf_model *m = build(name, radius, err, sizeof err);
     if (m == NULL) {
-        tf_error("demo-model: %s", err);
+        tf_error(ctx, "demo-model: %s", err);
         return TF_EXIT_USAGE;
     }
     measure(m, radius);
-    tf_info("demo-model: held-out max error %.3g mm, rms %.3g mm over %d forces", m->heldout_max,
-            m->heldout_rms, HELDOUT);
+    tf_info(ctx, "demo-model: held-out max error %.3g mm, rms %.3g mm over %d forces",
+            m->heldout_max, m->heldout_rms, HELDOUT);
     const tf_emit_info info = {
         .source = "built-in demo model (no scene)",
         .notes = "Softened Boussinesq-Cerruti half-space, E = 0.32 MPa, nu = 0.49, core 2.4 mm;\n"
@@ -195,10 +196,10 @@ static int run(int argc, char **argv)
     int rc = tf_emit_header(path, &m, 1, &info, err, sizeof err);
     tf_model_free(m);
     if (rc != 0) {
-        tf_error("demo-model: %s", err);
+        tf_error(ctx, "demo-model: %s", err);
         return TF_EXIT_USAGE;
     }
-    tf_info("demo-model: wrote %s and its golden vectors", path);
+    tf_info(ctx, "demo-model: wrote %s and its golden vectors", path);
     return TF_EXIT_OK;
 }
 

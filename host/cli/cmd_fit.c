@@ -66,18 +66,18 @@ typedef struct fit_args {
 } fit_args;
 
 /* A positive finite number, or -1 with a message. */
-static int positive(const char *opt, const char *text, double *v)
+static int positive(tf_ctx *ctx, const char *opt, const char *text, double *v)
 {
     char *end;
     *v = strtod(text, &end);
     if (*end != '\0' || !(*v > 0) || !isfinite(*v)) {
-        tf_error("fit: %s '%s' is not a positive number", opt, text);
+        tf_error(ctx, "fit: %s '%s' is not a positive number", opt, text);
         return -1;
     }
     return 0;
 }
 
-static int parse(int argc, char **argv, fit_args *a)
+static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
 {
     static const struct option opts[] = {
         {"out", required_argument, NULL, 'o'},    {"family", required_argument, NULL, 'f'},
@@ -102,7 +102,7 @@ static int parse(int argc, char **argv, fit_args *a)
             break;
         case 's':
             if (tf_sets_add(&a->sets, optarg) != 0) {
-                tf_error("fit: out of memory");
+                tf_error(ctx, "fit: out of memory");
                 return -1;
             }
             break;
@@ -113,28 +113,28 @@ static int parse(int argc, char **argv, fit_args *a)
             a->direct = 1;
             break;
         case 'b':
-            if (positive("--budget-us", optarg, &a->budget_us) != 0) {
+            if (positive(ctx, "--budget-us", optarg, &a->budget_us) != 0) {
                 return -1;
             }
             break;
         case 'e':
-            if (positive("--max-error-mm", optarg, &a->max_error_mm) != 0) {
+            if (positive(ctx, "--max-error-mm", optarg, &a->max_error_mm) != 0) {
                 return -1;
             }
             break;
         case 'm':
             if (tf_mcu_parse(optarg, &a->mcu, err, sizeof err) != 0) {
-                tf_error("fit: %s", err);
+                tf_error(ctx, "fit: %s", err);
                 return -1;
             }
             break;
         default:
-            tf_error("fit: bad option '%s' (see tissuefit fit --help)", argv[optind - 1]);
+            tf_error(ctx, "fit: bad option '%s' (see tissuefit fit --help)", argv[optind - 1]);
             return -1;
         }
     }
     if (optind + 1 != argc || a->out == NULL) {
-        tf_error("fit: expected one scene file and -o FILE.h (see tissuefit fit --help)");
+        tf_error(ctx, "fit: expected one scene file and -o FILE.h (see tissuefit fit --help)");
         return -1;
     }
     a->scene = argv[optind];
@@ -142,37 +142,30 @@ static int parse(int argc, char **argv, fit_args *a)
 }
 
 /* The plan from the scene's fit: section and the options. */
-static int make_plan(const fit_args *a, const tf_scene *s, tf_fit_plan *p)
+static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_plan *p)
 {
-    tf_fit_plan_defaults(p);
-    p->family = (tfit_family)s->fit.family;
-    p->contact = s->fit.contact;
-    p->n_train = s->fit.train;
-    p->n_heldout = s->fit.heldout;
-    p->seed = s->fit.seed;
-    p->folds = s->fit.folds;
-    p->max_degree = s->fit.max_degree;
-    p->max_rank = s->fit.max_rank;
+    const tf_problem *s = &sc->problem;
+    *p = sc->fit;
     p->direct = a->direct;
     if (a->family) {
         p->family = tf_family_from_name(a->family);
         if (p->family != TFIT_FAMILY_NODAL && p->family != TFIT_FAMILY_MODAL &&
             p->family != TFIT_FAMILY_ZHOU2017) {
-            tf_error("fit: --family '%s': the forward families are nodal, modal and zhou2017",
+            tf_error(ctx, "fit: --family '%s': the forward families are nodal, modal and zhou2017",
                      a->family);
             return -1;
         }
     }
     if (s->n_contacts == 0) {
-        tf_error("fit: %s has no contact site: a fit needs the site where the haptic force "
+        tf_error(ctx, "fit: %s has no contact site: a fit needs the site where the haptic force "
                  "acts (add an entry under contact:, docs/scene-format.md)",
                  a->scene);
         return -1;
     }
     if (a->contact) {
-        p->contact = tf_scene_contact(s, a->contact);
+        p->contact = tf_problem_contact(s, a->contact);
         if (p->contact < 0) {
-            tf_error("fit: %s has no contact site '%s'", a->scene, a->contact);
+            tf_error(ctx, "fit: %s has no contact site '%s'", a->scene, a->contact);
             return -1;
         }
     }
@@ -200,7 +193,7 @@ static int file_crc32(const char *path, uint32_t *crc)
 
 /* Banner notes: what was fitted and how, with the overrides (they change the
  * result, so they belong with it). */
-static void notes(const fit_args *a, const tf_scene *s, const tf_fit_plan *p,
+static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                   const tf_fit_outcome *o, char *buf, size_t n)
 {
     int k = snprintf(buf, n,
@@ -216,13 +209,13 @@ static void notes(const fit_args *a, const tf_scene *s, const tf_fit_plan *p,
     }
 }
 
-static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_fit_outcome *o,
-                tf_model *fwd, tf_model *con, const char *choice)
+static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
+                tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
     char base[TF_NAME_MAX - 8], err[512], note[1024];
     const char *slash = strrchr(a->out, '/');
     if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
-        tf_error("fit: %s: the header name is too long for its model names", a->out);
+        tf_error(ctx, "fit: %s: the header name is too long for its model names", a->out);
         return TF_EXIT_USAGE;
     }
     base[strcspn(base, ".")] = '\0';
@@ -231,7 +224,7 @@ static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_f
     con->node_ids[0] = s->contacts[p->contact].node + 1;
     uint32_t crc = 0;
     if (file_crc32(a->scene, &crc) != 0) {
-        tf_error("fit: %s: cannot read it again for its checksum", a->scene);
+        tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
         return TF_EXIT_FAIL;
     }
     notes(a, s, p, o, note, sizeof note);
@@ -243,30 +236,30 @@ static int emit(const fit_args *a, const tf_scene *s, const tf_fit_plan *p, tf_f
                                .notes = note, .golden_seed = p->seed};
     tf_model *models[2] = {fwd, con};
     if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
-        tf_error("fit: %s", err);
+        tf_error(ctx, "fit: %s", err);
         return TF_EXIT_USAGE;
     }
-    tf_info("fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
+    tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
             tf_family_name(fwd->family));
     return TF_EXIT_OK;
 }
 
 /* --budget-us / --max-error-mm: the sweep's candidates, then the choice. */
-static int emit_selected(const fit_args *a, const tf_scene *s, tf_solver *solver,
+static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf_solver *solver,
                          const tf_fit_plan *p, tf_fit_outcome *o)
 {
     char err[1024], choice[512];
     tf_sweep sw;
     tf_selection sel;
-    tf_info("fit: measuring every candidate for the choice (tissuefit sweep)");
-    if (tf_sweep_run(s, solver, p, 1u << TF_SET_SCENE, &sw, err, sizeof err) != 0) {
-        tf_error("fit: %s", err);
+    tf_info(ctx, "fit: measuring every candidate for the choice (tissuefit sweep)");
+    if (tf_sweep_run(s, solver, p, 1u << TF_SET_SCENE, &sw) != 0) {
+        tf_error(ctx, "fit: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     /* the contact inverse: within 1e-4 of the envelope radius (the bound) */
-    if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope_radius, &sel,
+    if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope.radius, &sel,
                   err, sizeof err) != 0) {
-        tf_error("fit: %s: %s; nothing written", a->scene, err);
+        tf_error(ctx, "fit: %s: %s; nothing written", a->scene, err);
         tf_sweep_free(&sw);
         return TF_EXIT_USAGE;
     }
@@ -284,13 +277,13 @@ static int emit_selected(const fit_args *a, const tf_scene *s, tf_solver *solver
              "%s (%.2f us).",
              limits, a->mcu.name, sel.forward->label, tf_candidate_us(sel.forward, &a->mcu),
              sel.contact->label, tf_candidate_us(sel.contact, &a->mcu));
-    tf_info("fit: %s", choice);
-    int rc = emit(a, s, p, o, sel.forward->model, sel.contact->model, choice);
+    tf_info(ctx, "fit: %s", choice);
+    int rc = emit(ctx, a, s, p, o, sel.forward->model, sel.contact->model, choice);
     tf_sweep_free(&sw);
     return rc;
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
     char err[1024];
@@ -301,50 +294,45 @@ static int run(int argc, char **argv)
     int have_outcome = 0;
     tf_fit_plan plan;
     tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
-    if (parse(argc, argv, &a) != 0) {
+    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL ||
+        make_plan(ctx, &a, s, &plan) != 0) {
         goto done;
     }
-    s = tf_scene_load(a.scene, a.sets.item, a.sets.n, err, sizeof err);
-    if (s == NULL) {
-        tf_error("%s", err);
-        goto done;
-    }
-    if (make_plan(&a, s, &plan) != 0) {
-        goto done;
-    }
+    const tf_problem *p = &s->problem;
     if (a.report && !tf_plot_available()) {
-        tf_error("fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+        tf_error(ctx,
+                 "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
         goto done;
     }
     rc = TF_EXIT_FAIL;
-    solver = tf_solver_new(s, err, sizeof err);
+    solver = tf_solver_create(p, NULL, ctx);
     if (solver == NULL) {
-        tf_error("fit: %s", err);
+        tf_error(ctx, "fit: %s", ctx->err);
         goto done;
     }
-    int fitted = tf_fit_run(s, solver, &plan, &o, err, sizeof err);
+    int fitted = tf_fit_run(p, solver, &plan, &o);
     if (fitted != 0) {
-        tf_error("fit: %s: %s", a.scene, err);
+        tf_error(ctx, "fit: %s: %s", a.scene, ctx->err);
         rc = fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
         goto done;
     }
     have_outcome = 1;
     if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
-        rc = emit(&a, s, &plan, &o, o.fam[plan.family].model, o.fam[TFIT_FAMILY_CONTACT].model,
-                  NULL);
+        rc = emit(ctx, &a, p, &plan, &o, o.fam[plan.family].model,
+                  o.fam[TFIT_FAMILY_CONTACT].model, NULL);
     } else {
-        rc = emit_selected(&a, s, solver, &plan, &o);
+        rc = emit_selected(ctx, &a, p, solver, &plan, &o);
     }
     if (rc == TF_EXIT_OK && a.report &&
-        tf_fit_report(a.report, a.out, s, solver, &plan, &o, err, sizeof err) != 0) {
-        tf_error("fit: report: %s", err);
+        tf_fit_report(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
+        tf_error(ctx, "fit: report: %s", err);
         rc = TF_EXIT_FAIL;
     }
 done:
     if (have_outcome) {
         tf_fit_outcome_free(&o);
     }
-    tf_solver_free(solver);
+    tf_solver_destroy(solver);
     tf_scene_free(s);
     tf_sets_free(&a.sets);
     return rc;

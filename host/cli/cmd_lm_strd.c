@@ -49,7 +49,7 @@ static int parse_start(const char *arg)
     return strcmp(arg, "1") == 0 ? 1 : strcmp(arg, "2") == 0 ? 2 : 0;
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     static const struct option opts[] = {{"start", required_argument, NULL, 's'},
                                          {"finite-diff", no_argument, NULL, 'f'},
@@ -60,30 +60,31 @@ static int run(int argc, char **argv)
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (c == 's' && (start = parse_start(optarg)) == 0) {
-            tf_error("lm-strd: --start '%s' must be 1 or 2", optarg);
+            tf_error(ctx, "lm-strd: --start '%s' must be 1 or 2", optarg);
             return TF_EXIT_USAGE;
         } else if (c == 'f' || c == 'c') {
             finite_diff = 1;
             central |= c == 'c';
         } else if (c != 's') {
-            tf_error("lm-strd: bad option '%s' (see tissuefit lm-strd --help)", argv[optind - 1]);
+            tf_error(ctx, "lm-strd: bad option '%s' (see tissuefit lm-strd --help)",
+                     argv[optind - 1]);
             return TF_EXIT_USAGE;
         }
     }
     if (optind != argc - 1 || start == 0) {
-        tf_error("lm-strd: expected one FILE.dat and --start 1|2");
+        tf_error(ctx, "lm-strd: expected one FILE.dat and --start 1|2");
         return TF_EXIT_USAGE;
     }
     const char *path = argv[optind];
     char err[1024];
     tf_nist d;
     if (tf_nist_read(path, &d, err, sizeof err) != 0) {
-        tf_error("lm-strd: %s", err);
+        tf_error(ctx, "lm-strd: %s", err);
         return TF_EXIT_USAGE;
     }
     const tf_nist_model *model = tf_nist_match(&d, path, err, sizeof err);
     if (model == NULL) {
-        tf_error("lm-strd: %s", err);
+        tf_error(ctx, "lm-strd: %s", err);
         tf_nist_free(&d);
         return TF_EXIT_USAGE;
     }
@@ -92,17 +93,17 @@ static int run(int argc, char **argv)
     o.lm.central_diff = central;
     tf_nist_score s;
     if (tf_nist_fit(&d, model, start, &o, finite_diff, &s, err, sizeof err) != 0) {
-        tf_error("lm-strd: %s: %s", path, err);
+        tf_error(ctx, "lm-strd: %s: %s", path, err);
         tf_nist_free(&d);
         return TF_EXIT_FAIL;
     }
     print_csv(&d, &s);
-    tf_info("lm-strd: %s start %d: stop %s after %zu iterations, %zu evaluations, %zu "
+    tf_info(ctx, "lm-strd: %s start %d: stop %s after %zu iterations, %zu evaluations, %zu "
             "Jacobians; min LRE %.2f",
             d.name, start, tf_stop_name(s.stop), s.iterations, s.evals, s.jac_evals, s.min_lre);
     int ok = tf_stop_converged(s.stop);
     if (!ok) {
-        tf_error("lm-strd: %s start %d did not converge (%s)", d.name, start,
+        tf_error(ctx, "lm-strd: %s start %d did not converge (%s)", d.name, start,
                  tf_stop_name(s.stop));
     }
     tf_nist_free(&d);

@@ -47,11 +47,11 @@ static void help(FILE *out)
 
 /* Reads the CSV (header line, then numbers).  Returns 0, or -1 naming the
  * file and line. */
-static int read_ticks(const char *path, ticks *t)
+static int read_ticks(tf_ctx *ctx, const char *path, ticks *t)
 {
     FILE *f = fopen(path, "r");
     if (f == NULL) {
-        tf_error("replay: %s: cannot open it", path);
+        tf_error(ctx, "replay: %s: cannot open it", path);
         return -1;
     }
     char *line = NULL;
@@ -72,7 +72,7 @@ static int read_ticks(const char *path, ticks *t)
             n_alloc = n_alloc ? 2 * n_alloc : 1024;
             double *grown = realloc(t->v, n_alloc * t->cols * sizeof *grown);
             if (grown == NULL) {
-                tf_error("replay: out of memory");
+                tf_error(ctx, "replay: out of memory");
                 rc = -1;
                 break;
             }
@@ -83,7 +83,7 @@ static int read_ticks(const char *path, ticks *t)
             char *end;
             t->v[t->n * t->cols + c] = strtod(p, &end);
             if (end == p || (c + 1 < t->cols && *end != ',')) {
-                tf_error("replay: %s:%zu: column %zu is not a number", path, lineno, c + 1);
+                tf_error(ctx, "replay: %s:%zu: column %zu is not a number", path, lineno, c + 1);
                 rc = -1;
                 break;
             }
@@ -94,61 +94,83 @@ static int read_ticks(const char *path, ticks *t)
     free(line);
     fclose(f);
     if (rc == 0 && (t->n == 0 || t->cols < META_COLUMNS + 3)) {
-        tf_error("replay: %s: no ticks, or not the haptic loop's CSV", path);
+        tf_error(ctx, "replay: %s: no ticks, or not the haptic loop's CSV", path);
         rc = -1;
     }
     return rc;
 }
 
 /* The force the firmware evaluated: the input, projected onto the ball. */
-static void effective_force(const tf_scene *s, const double *in, double f[3])
+static void effective_force(const tf_envelope *e, const double *in, double f[3])
 {
     double d[3], n2 = 0;
     for (int k = 0; k < 3; ++k) {
-        d[k] = in[k] - s->envelope_centre[k];
+        d[k] = in[k] - e->centre[k];
         n2 += d[k] * d[k];
     }
-    double scale = sqrt(n2) > s->envelope_radius ? s->envelope_radius / sqrt(n2) : 1.0;
+    double scale = sqrt(n2) > e->radius ? e->radius / sqrt(n2) : 1.0;
     for (int k = 0; k < 3; ++k) {
-        f[k] = s->envelope_centre[k] + scale * d[k];
+        f[k] = e->centre[k] + scale * d[k];
     }
 }
 
-/* Output points in rows of equal rest y, ascending x: gnuplot draws the
- * blocks as a surface. */
-static const double *sort_xyz;
+/* An output point with its rest (x, y), sorted into rows of equal y,
+ * ascending x: gnuplot draws the blocks as a surface. */
+typedef struct row_key {
+    double x, y;
+    uint32_t node;
+} row_key;
+
 static int by_row(const void *a, const void *b)
 {
-    const double *p = sort_xyz + 3 * (size_t)*(const uint32_t *)a;
-    const double *q = sort_xyz + 3 * (size_t)*(const uint32_t *)b;
-    if (p[1] != q[1]) {
-        return p[1] < q[1] ? -1 : 1;
+    const row_key *p = a, *q = b;
+    if (p->y != q->y) {
+        return p->y < q->y ? -1 : 1;
     }
-    return (p[0] > q[0]) - (p[0] < q[0]);
+    return (p->x > q->x) - (p->x < q->x);
 }
 
-static int draw(const char *png, const tf_scene *s, const tf_solver *solver, const double *u,
-                size_t tick, const double f[3])
+/* The output nodes in row order, or NULL when out of memory. */
+static uint32_t *rows_of(const tf_outputs *o, const double *xyz)
+{
+    row_key *key = malloc((o->n_nodes + 1) * sizeof *key);
+    uint32_t *order = malloc((o->n_nodes + 1) * sizeof *order);
+    if (key == NULL || order == NULL) {
+        free(key);
+        free(order);
+        return NULL;
+    }
+    for (size_t j = 0; j < o->n_nodes; ++j) {
+        const double *x = xyz + 3 * (size_t)o->nodes[j];
+        key[j] = (row_key){.x = x[0], .y = x[1], .node = o->nodes[j]};
+    }
+    qsort(key, o->n_nodes, sizeof *key, by_row);
+    for (size_t j = 0; j < o->n_nodes; ++j) {
+        order[j] = key[j].node;
+    }
+    free(key);
+    return order;
+}
+
+static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
+                const double *u, size_t tick, const double f[3])
 {
     tf_plot p;
     char err[512];
     const double *xyz = tf_solver_coords(solver);
     const size_t n = s->outputs.n_nodes;
-    uint32_t *order = malloc(n * sizeof *order);
+    uint32_t *order = rows_of(&s->outputs, xyz);
     if (order == NULL) {
-        tf_error("replay: out of memory");
+        tf_error(ctx, "replay: out of memory");
         return -1;
     }
-    memcpy(order, s->outputs.nodes, n * sizeof *order);
-    sort_xyz = xyz;
-    qsort(order, n, sizeof *order, by_row);
     double lo = 0, hi = 0;
     for (size_t j = 0; j < n; ++j) {
         lo = fmin(lo, u[3 * (size_t)order[j] + 2]);
         hi = fmax(hi, u[3 * (size_t)order[j] + 2]);
     }
     if (tf_plot_open(&p, png, 1000, 750, err, sizeof err) != 0) {
-        tf_error("replay: %s", err);
+        tf_error(ctx, "replay: %s", err);
         free(order);
         return -1;
     }
@@ -178,23 +200,22 @@ static int draw(const char *png, const tf_scene *s, const tf_solver *solver, con
     }
     free(order);
     if (tf_plot_close(&p, err, sizeof err) != 0) {
-        tf_error("replay: %s", err);
+        tf_error(ctx, "replay: %s", err);
         return -1;
     }
     return 0;
 }
 
 /* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
-static int compare(const tf_scene *s, tf_solver *solver, int contact, const ticks *t,
-                   const char *png)
+static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int contact,
+                   const ticks *t, const char *png)
 {
     const size_t n_out = s->outputs.n_nodes, dofs = 3 * tf_solver_node_count(solver);
     double *forces = malloc(t->n * 3 * sizeof *forces), *u = malloc(t->n * dofs * sizeof *u);
-    char err[512];
     if (forces == NULL || u == NULL) {
         free(forces);
         free(u);
-        tf_error("replay: out of memory for %zu ticks", t->n);
+        tf_error(ctx, "replay: out of memory for %zu ticks", t->n);
         return TF_EXIT_FAIL;
     }
     for (size_t i = 0; i < t->n; ++i) {
@@ -202,11 +223,11 @@ static int compare(const tf_scene *s, tf_solver *solver, int contact, const tick
         if (row[4] < 0) {
             forces[3 * i] = forces[3 * i + 1] = forces[3 * i + 2] = 0;
         } else {
-            effective_force(s, row + 1, forces + 3 * i);
+            effective_force(&s->envelope, row + 1, forces + 3 * i);
         }
     }
-    if (tf_solver_solve(solver, contact, forces, t->n, u, err, sizeof err) != 0) {
-        tf_error("replay: %s", err);
+    if (tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) != 0) {
+        tf_error(ctx, "replay: %s", ctx->err);
         free(forces);
         free(u);
         return TF_EXIT_FAIL;
@@ -240,7 +261,7 @@ static int compare(const tf_scene *s, tf_solver *solver, int contact, const tick
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
     int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
+        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {
@@ -252,7 +273,7 @@ static int compare(const tf_scene *s, tf_solver *solver, int contact, const tick
     return rc;
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     static const struct option opts[] = {{"ticks", required_argument, NULL, 't'},
                                          {"png", required_argument, NULL, 'p'},
@@ -261,7 +282,6 @@ static int run(int argc, char **argv)
                                          {0}};
     const char *csv = NULL, *png = NULL, *contact_name = NULL;
     tf_sets sets = {0};
-    char err[1024];
     int c, rc = TF_EXIT_USAGE;
     optind = 1;
     opterr = 0;
@@ -275,38 +295,38 @@ static int run(int argc, char **argv)
         } else if (c == 's' && tf_sets_add(&sets, optarg) == 0) {
             continue;
         } else {
-            tf_error("replay: bad option '%s' (see tissuefit replay --help)", argv[optind - 1]);
+            tf_error(ctx, "replay: bad option '%s' (see tissuefit replay --help)",
+                     argv[optind - 1]);
             tf_sets_free(&sets);
             return TF_EXIT_USAGE;
         }
     }
     if (optind + 1 != argc || csv == NULL) {
-        tf_error("replay: expected one scene file and --ticks FILE.csv");
+        tf_error(ctx, "replay: expected one scene file and --ticks FILE.csv");
         tf_sets_free(&sets);
         return TF_EXIT_USAGE;
     }
     ticks t = {0};
-    tf_scene *s = tf_scene_load(argv[optind], sets.item, sets.n, err, sizeof err);
+    tf_scene *s = tf_cmd_scene(ctx, argv[optind], &sets);
+    const tf_problem *p = s ? &s->problem : NULL;
     tf_solver *solver = NULL;
-    if (s == NULL) {
-        tf_error("%s", err);
-    } else if (read_ticks(csv, &t) != 0) {
+    if (s == NULL || read_ticks(ctx, csv, &t) != 0) {
         /* reported */
-    } else if (t.cols != META_COLUMNS + 3 * s->outputs.n_nodes) {
-        tf_error("replay: %s has %zu output points, the scene's outputs %zu", csv,
-                 (t.cols - META_COLUMNS) / 3, s->outputs.n_nodes);
+    } else if (t.cols != META_COLUMNS + 3 * p->outputs.n_nodes) {
+        tf_error(ctx, "replay: %s has %zu output points, the scene's outputs %zu", csv,
+                 (t.cols - META_COLUMNS) / 3, p->outputs.n_nodes);
     } else {
-        int k = contact_name ? tf_scene_contact(s, contact_name) : s->fit.contact;
+        int k = contact_name ? tf_problem_contact(p, contact_name) : s->fit.contact;
         if (k < 0) {
-            tf_error("replay: %s has no such contact site", argv[optind]);
-        } else if ((solver = tf_solver_new(s, err, sizeof err)) == NULL) {
-            tf_error("replay: %s", err);
+            tf_error(ctx, "replay: %s has no such contact site", argv[optind]);
+        } else if ((solver = tf_solver_create(p, NULL, ctx)) == NULL) {
+            tf_error(ctx, "replay: %s", ctx->err);
             rc = TF_EXIT_FAIL;
         } else {
-            rc = compare(s, solver, k, &t, png);
+            rc = compare(ctx, p, solver, k, &t, png);
         }
     }
-    tf_solver_free(solver);
+    tf_solver_destroy(solver);
     tf_scene_free(s);
     free(t.v);
     tf_sets_free(&sets);

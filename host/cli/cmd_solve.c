@@ -14,7 +14,6 @@
 #include "base/log.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
-#include "solvers/solver_report.h"
 
 static void help(FILE *out)
 {
@@ -44,7 +43,7 @@ typedef struct solve_args {
     tf_sets sets;
 } solve_args;
 
-static int parse(int argc, char **argv, solve_args *a)
+static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
 {
     static const struct option opts[] = {{"force", required_argument, NULL, 'f'},
                                          {"contact", required_argument, NULL, 'c'},
@@ -59,7 +58,7 @@ static int parse(int argc, char **argv, solve_args *a)
         switch (c) {
         case 'f':
             if (tf_parse_vec3(optarg, a->force) != 0) {
-                tf_error("solve: --force '%s' is not three numbers FX,FY,FZ (N)", optarg);
+                tf_error(ctx, "solve: --force '%s' is not three numbers FX,FY,FZ (N)", optarg);
                 return -1;
             }
             a->has_force = 1;
@@ -69,7 +68,7 @@ static int parse(int argc, char **argv, solve_args *a)
             break;
         case 's':
             if (tf_sets_add(&a->sets, optarg) != 0) {
-                tf_error("solve: out of memory");
+                tf_error(ctx, "solve: out of memory");
                 return -1;
             }
             break;
@@ -80,12 +79,12 @@ static int parse(int argc, char **argv, solve_args *a)
             a->vtk = optarg;
             break;
         default:
-            tf_error("solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
+            tf_error(ctx, "solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
             return -1;
         }
     }
     if (optind + 1 != argc) {
-        tf_error("solve: expected one scene file (see tissuefit solve --help)");
+        tf_error(ctx, "solve: expected one scene file (see tissuefit solve --help)");
         return -1;
     }
     a->scene = argv[optind];
@@ -93,41 +92,41 @@ static int parse(int argc, char **argv, solve_args *a)
 }
 
 /* The contact site the force goes to, or -1 when there is no force. */
-static int pick_contact(const solve_args *a, const tf_scene *s)
+static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 {
     if (!a->has_force) {
         if (a->contact) {
-            tf_error("solve: --contact without --force");
+            tf_error(ctx, "solve: --contact without --force");
             return -2;
         }
         return -1;
     }
     if (s->n_contacts == 0) {
-        tf_error("solve: %s has no contact site for --force", a->scene);
+        tf_error(ctx, "solve: %s has no contact site for --force", a->scene);
         return -2;
     }
-    int k = a->contact ? tf_scene_contact(s, a->contact) : 0;
+    int k = a->contact ? tf_problem_contact(s, a->contact) : 0;
     if (k < 0) {
-        tf_error("solve: %s has no contact site '%s'", a->scene, a->contact);
+        tf_error(ctx, "solve: %s has no contact site '%s'", a->scene, a->contact);
         return -2;
     }
     return k;
 }
 
 /* Both files go to temporaries first, so a failure leaves neither. */
-static int write_outputs(const solve_args *a, const tf_scene *s, const double *u)
+static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u)
 {
     char err[512];
     tf_afile csv, vtu;
     if (a->out && tf_afile_open(&csv, a->out, err, sizeof err) != 0) {
-        tf_error("solve: %s", err);
+        tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
     if (a->vtk && tf_afile_open(&vtu, a->vtk, err, sizeof err) != 0) {
         if (a->out) {
             tf_afile_abort(&csv);
         }
-        tf_error("solve: %s", err);
+        tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
     tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
@@ -146,44 +145,40 @@ static int write_outputs(const solve_args *a, const tf_scene *s, const double *u
         }
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
-        tf_error("solve: %s", rc ? err : "cannot write to standard output");
+        tf_error(ctx, "solve: %s", rc ? err : "cannot write to standard output");
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {0};
-    char err[1024];
-    if (parse(argc, argv, &a) != 0) {
+    tf_scene *s = NULL;
+    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }
-    tf_scene *s = tf_scene_load(a.scene, a.sets.item, a.sets.n, err, sizeof err);
     tf_sets_free(&a.sets);
-    if (s == NULL) {
-        tf_error("%s", err);
-        return TF_EXIT_USAGE;
-    }
-    int contact = pick_contact(&a, s);
+    const tf_problem *p = &s->problem;
+    int contact = pick_contact(ctx, &a, p);
     if (contact < -1) {
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }
     int rc = TF_EXIT_FAIL;
-    tf_solver *sv = tf_solver_new(s, err, sizeof err);
-    double *u = malloc(3 * s->cloud.n * sizeof *u);
+    tf_solver *sv = tf_solver_create(p, NULL, ctx);
+    double *u = malloc(3 * p->cloud.n * sizeof *u);
     if (sv == NULL || u == NULL) {
-        tf_error("solve: %s: %s", a.scene, sv ? "out of memory" : err);
-    } else if (tf_solver_solve(sv, contact, a.force, 1, u, err, sizeof err) != 0) {
-        tf_error("solve: %s: %s", a.scene, err);
+        tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
+    } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
+        tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
     } else {
-        tf_solver_report(sv, s);
-        rc = write_outputs(&a, s, u);
+        tf_solver_report(sv);
+        rc = write_outputs(ctx, &a, p, u);
     }
     free(u);
-    tf_solver_free(sv);
+    tf_solver_destroy(sv);
     tf_scene_free(s);
     return rc;
 }

@@ -37,7 +37,7 @@ static void help(FILE *out)
             "  --set K=V     override a scene value (repeatable)\n");
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     static const struct option opts[] = {{"csv", required_argument, NULL, 'c'},
                                          {"md", required_argument, NULL, 'm'},
@@ -64,51 +64,44 @@ static int run(int argc, char **argv)
         } else if (c == 's' && tf_sets_add(&overrides, optarg) == 0) {
             continue;
         } else {
-            tf_error("sweep: bad option '%s' (see tissuefit sweep --help)", argv[optind - 1]);
+            tf_error(ctx, "sweep: bad option '%s' (see tissuefit sweep --help)", argv[optind - 1]);
             tf_sets_free(&overrides);
             return TF_EXIT_USAGE;
         }
     }
     if (optind + 1 != argc) {
-        tf_error("sweep: expected one scene file (see tissuefit sweep --help)");
+        tf_error(ctx, "sweep: expected one scene file (see tissuefit sweep --help)");
         tf_sets_free(&overrides);
         return TF_EXIT_USAGE;
     }
-    tf_scene *s = tf_scene_load(argv[optind], overrides.item, overrides.n, err, sizeof err);
+    tf_scene *s = tf_cmd_scene(ctx, argv[optind], &overrides);
+    const tf_problem *p = s ? &s->problem : NULL;
     tf_solver *solver = NULL;
     tf_sweep sw = {0};
-    tf_fit_plan plan;
     if (s == NULL) {
-        tf_error("%s", err);
-    } else if (s->n_contacts == 0) {
-        tf_error("sweep: %s has no contact site to apply forces at", argv[optind]);
+        /* reported */
+    } else if (p->n_contacts == 0) {
+        tf_error(ctx, "sweep: %s has no contact site to apply forces at", argv[optind]);
     } else if (png != NULL && !tf_plot_available()) {
-        tf_error("sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+        tf_error(ctx,
+                 "sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
     } else {
-        tf_fit_plan_defaults(&plan);
-        plan.contact = s->fit.contact;
-        plan.n_train = s->fit.train;
-        plan.n_heldout = s->fit.heldout;
-        plan.seed = s->fit.seed;
-        plan.folds = s->fit.folds;
-        plan.max_degree = s->fit.max_degree;
-        plan.max_rank = s->fit.max_rank;
         rc = TF_EXIT_FAIL;
-        solver = tf_solver_new(s, err, sizeof err);
-        if (solver == NULL || tf_sweep_run(s, solver, &plan, sets, &sw, err, sizeof err) != 0) {
-            tf_error("sweep: %s", err);
+        solver = tf_solver_create(p, NULL, ctx);
+        if (solver == NULL || tf_sweep_run(p, solver, &s->fit, sets, &sw) != 0) {
+            tf_error(ctx, "sweep: %s", ctx->err);
         } else if ((csv && tf_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
                    (!csv && tf_sweep_csv(&sw, "/dev/stdout", err, sizeof err) != 0) ||
-                   (md && tf_sweep_markdown(&sw, s, md, err, sizeof err) != 0) ||
+                   (md && tf_sweep_markdown(&sw, p, md, err, sizeof err) != 0) ||
                    (png && tf_sweep_plot(&sw, png, err, sizeof err) != 0)) {
-            tf_error("sweep: %s", err);
+            tf_error(ctx, "sweep: %s", err);
         } else {
-            tf_info("sweep: %zu candidates measured", sw.n);
+            tf_info(ctx, "sweep: %zu candidates measured", sw.n);
             rc = TF_EXIT_OK;
         }
     }
     tf_sweep_free(&sw);
-    tf_solver_free(solver);
+    tf_solver_destroy(solver);
     tf_scene_free(s);
     tf_sets_free(&overrides);
     return rc;

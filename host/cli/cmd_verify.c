@@ -12,6 +12,7 @@
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "base/log.h"
+#include "scene/scene_levels.h"
 #include "verify/verify.h"
 
 #define MAX_LEVELS 12
@@ -47,7 +48,7 @@ typedef struct verify_args {
     tf_sets sets;
 } verify_args;
 
-static int parse(int argc, char **argv, verify_args *a)
+static int parse(tf_ctx *ctx, int argc, char **argv, verify_args *a)
 {
     static const struct option opts[] = {{"scene", required_argument, NULL, 'S'},
                                          {"levels", required_argument, NULL, 'l'},
@@ -67,7 +68,7 @@ static int parse(int argc, char **argv, verify_args *a)
         case 'l':
             a->levels = (unsigned)strtoul(optarg, &end, 10);
             if (*end != '\0' || a->levels < 1 || a->levels > MAX_LEVELS) {
-                tf_error("verify: --levels '%s' is not 1 to %d", optarg, MAX_LEVELS);
+                tf_error(ctx, "verify: --levels '%s' is not 1 to %d", optarg, MAX_LEVELS);
                 return -1;
             }
             break;
@@ -76,7 +77,7 @@ static int parse(int argc, char **argv, verify_args *a)
                    : strcmp(optarg, "gauss") == 0 ? TF_VARY_GAUSS
                                                   : -2;
             if (vary == -2) {
-                tf_error("verify: --vary '%s' is not grid or gauss", optarg);
+                tf_error(ctx, "verify: --vary '%s' is not grid or gauss", optarg);
                 return -1;
             }
             break;
@@ -89,17 +90,18 @@ static int parse(int argc, char **argv, verify_args *a)
             a->csv = optarg;
             break;
         default:
-            tf_error("verify: bad option '%s' (see tissuefit verify --help)", argv[optind - 1]);
+            tf_error(ctx, "verify: bad option '%s' (see tissuefit verify --help)",
+                     argv[optind - 1]);
             return -1;
         }
     }
     if (optind + 1 != argc) {
-        tf_error("verify: expected cantilever or patch (see tissuefit verify --help)");
+        tf_error(ctx, "verify: expected cantilever or patch (see tissuefit verify --help)");
         return -1;
     }
     int cantilever = strcmp(argv[optind], "cantilever") == 0;
     if (!cantilever && strcmp(argv[optind], "patch") != 0) {
-        tf_error("verify: '%s' is not cantilever or patch", argv[optind]);
+        tf_error(ctx, "verify: '%s' is not cantilever or patch", argv[optind]);
         return -1;
     }
     if (a->scene == NULL) {
@@ -125,25 +127,33 @@ static void print_table(FILE *fp, const tf_verify_row *rows, size_t n)
     }
 }
 
-static int run(int argc, char **argv)
+static int run(tf_ctx *ctx, int argc, char **argv)
 {
     verify_args a = {0};
     tf_verify_row rows[MAX_LEVELS];
     char err[1024];
-    if (parse(argc, argv, &a) != 0) {
+    if (parse(ctx, argc, argv, &a) != 0) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }
     int rc = TF_EXIT_OK;
     for (unsigned k = 0; k < a.levels && rc == TF_EXIT_OK; ++k) {
-        int usage;
-        if (tf_verify_level(a.scene, a.sets.item, a.sets.n, a.vary, k, &rows[k], &usage, err,
-                            sizeof err) != 0) {
-            tf_error("verify: %s", err);
-            rc = usage ? TF_EXIT_USAGE : TF_EXIT_FAIL;
+        unsigned label;
+        tf_scene *s = tf_scene_level(a.scene, a.sets.item, a.sets.n, a.vary, k, &label, err,
+                                     sizeof err);
+        if (s == NULL) {
+            tf_error(ctx, "verify: %s", err);
+            rc = TF_EXIT_USAGE;
             break;
         }
-        tf_info("verify: level %u: %zu nodes, L2 error %.3e, energy error %.3e (%.2f s)",
+        int verified = tf_verify_problem(&s->problem, label, ctx, &rows[k]);
+        tf_scene_free(s);
+        if (verified != 0) {
+            tf_error(ctx, "verify: %s", ctx->err);
+            rc = verified == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
+            break;
+        }
+        tf_info(ctx, "verify: level %u: %zu nodes, L2 error %.3e, energy error %.3e (%.2f s)",
                 rows[k].level, rows[k].nodes, rows[k].error_l2, rows[k].error_energy,
                 rows[k].seconds);
     }
@@ -157,12 +167,12 @@ static int run(int argc, char **argv)
     if (a.csv) {
         tf_afile f;
         if (tf_afile_open(&f, a.csv, err, sizeof err) != 0) {
-            tf_error("verify: %s", err);
+            tf_error(ctx, "verify: %s", err);
             return TF_EXIT_FAIL;
         }
         print_table(f.fp, rows, a.levels);
         if (tf_afile_commit(&f, err, sizeof err) != 0) {
-            tf_error("verify: %s", err);
+            tf_error(ctx, "verify: %s", err);
             return TF_EXIT_FAIL;
         }
     }

@@ -1,6 +1,6 @@
 /*
- * main.c — the `tissuefit` entry point: global options and dispatch to the
- * command table (cli.h).
+ * main.c — the `tissuefit` entry point: global options, the run's context
+ * (base/context.h) and dispatch to the command table (cli.h).
  */
 #include <stdio.h>
 #include <string.h>
@@ -57,10 +57,13 @@ int tf_wants_help(int argc, char **argv)
 int main(int argc, char **argv)
 {
     tf_blas_pin(argv);
+    tf_ctx run;
+    tf_ctx *ctx = &run;
+    tf_ctx_init(ctx);
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; ++i) {
         if (strcmp(argv[i], "-q") == 0 || strcmp(argv[i], "--quiet") == 0) {
-            tf_quiet = 1;
+            ctx->level = TF_LOG_WARN;
         } else if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
             usage(stdout);
             return TF_EXIT_OK;
@@ -69,7 +72,7 @@ int main(int argc, char **argv)
                    TFIT_API_VERSION, tf_blas_coretype());
             return TF_EXIT_OK;
         } else {
-            tf_error("unknown option '%s' (try 'tissuefit --help')", argv[i]);
+            tf_error(ctx, "unknown option '%s' (try 'tissuefit --help')", argv[i]);
             return TF_EXIT_USAGE;
         }
     }
@@ -90,7 +93,7 @@ int main(int argc, char **argv)
                 return TF_EXIT_OK;
             }
         }
-        tf_error("no command '%s' (try 'tissuefit --help')", name);
+        tf_error(ctx, "no command '%s' (try 'tissuefit --help')", name);
         return TF_EXIT_USAGE;
     }
     for (size_t k = 0; k < N_COMMANDS; ++k) {
@@ -99,9 +102,9 @@ int main(int argc, char **argv)
                 commands[k]->help(stdout);
                 return TF_EXIT_OK;
             }
-            return commands[k]->run(argc - i, argv + i);
+            return commands[k]->run(ctx, argc - i, argv + i);
         }
     }
-    tf_error("no command '%s' (try 'tissuefit --help')", name);
+    tf_error(ctx, "no command '%s' (try 'tissuefit --help')", name);
     return TF_EXIT_USAGE;
 }

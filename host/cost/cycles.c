@@ -10,7 +10,7 @@
 static const char *const class_names[TF_INSN_CLASSES] = {
     "alu", "mul", "mla", "div", "load", "store", "ldm", "ldm_pc", "stm", "words",
     "fload", "fstore", "fldm", "fstm", "fwords", "fadd", "fmul", "fdiv", "fmac", "fother",
-    "fmov", "branch"};
+    "fmov", "branch", "nbranch"};
 
 void tf_insn_mix_format(const tf_insn_mix *mix, char *buf, size_t n)
 {
@@ -81,8 +81,15 @@ uint64_t tf_insn_mix_count(const tf_insn_mix *mix)
  */
 typedef enum block_id {
     ENTRY_FORWARD,  /* tfit_displacements: argument and family checks, tail call */
+    ENTRY_DIMS1,    /* ... a family other than nodal with dims[0] = 1 tests the family too */
     ENTRY_CONTACT,  /* tfit_contact_force, p != 1: the same */
-    CONTACT_P1,     /* tfit_contact_force, p = 1: the whole call but the input map */
+    D1_ENTRY_FORWARD, /* tfit_displacements, nodal p = 1: checks, tail call */
+    D1_ENTRY_CONTACT, /* tfit_contact_force, p = 1: the same */
+    D1_ONE,         /* tfit_degree1_one_asm(): the whole contact p = 1 evaluation */
+    D1_PATH,        /* tfit_degree1_asm() outside its loops and the odd point */
+    D1_MAIN,        /* loop 1: eight pairs of output points */
+    D1_REM,         /* loop 2: one pair of output points */
+    D1_POINT,       /* the odd output point */
     EVAL_NODAL,     /* evaluate(): input map call, family switch, status */
     EVAL_MODAL,
     EVAL_ZHOU,
@@ -95,8 +102,6 @@ typedef enum block_id {
     BASIS_DEGREE,   /* loop 2: one degree d = 0..p */
     BASIS_E,        /* loop 3: one inner degree e = b + c = 0..d */
     BASIS_TERM,     /* loop 4: one term T_a(g0) (T_b(g1) T_c(g2)) */
-    NODAL_PATH_P1,  /* tfit_eval_nodal() outside loops, p = 1 (no basis call) */
-    NODAL_NODE_P1,  /* loop 3: one output point, p = 1 */
     NODAL_PATH,     /* outside loops, p != 1 */
     NODAL_NODE,     /* loop 1: one output point, any p */
     NODAL_P0_SKIP,  /* ... minus the inner-loop set-up that p = 0 skips */
@@ -139,28 +144,43 @@ typedef struct block {
 #define SAME(s) {s, s}
 
 static const block blocks[N_BLOCKS] = {
+    /* dims[0] != 1; a model of another family with dims[0] = 1 adds ENTRY_DIMS1 */
     [ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
-                       {"alu=2 load=1 ldm=1 stm=1 words=4 branch=5", "alu=4 load=1 branch=4"}},
+                       SAME("alu=12 load=2 ldm=2 stm=1 words=8 branch=2 nbranch=5")},
+    [ENTRY_DIMS1] = {"tfit_displacements", 0, 0, SAME("alu=1 nbranch=1")},
     [ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
-                       {"alu=9 load=3 ldm=1 stm=1 words=6 branch=6",
-                        "alu=8 load=3 ldm=1 stm=1 words=6 branch=5"}},
-    [CONTACT_P1] = {"tfit_contact_force", 0, 0,
-                    {"alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
-                     "branch=6",
-                     "alu=19 load=6 store=3 ldm_pc=1 stm=1 words=6 fload=15 fadd=9 fmul=9 fmov=3 "
-                     "branch=5"}},
-    [EVAL_NODAL] = {"evaluate", 0, 0, SAME("alu=18 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
+                       SAME("alu=5 load=2 ldm=2 stm=1 words=6 branch=1 nbranch=6")},
+    [D1_ENTRY_FORWARD] = {"tfit_displacements", 0, 0,
+                          SAME("alu=8 load=2 ldm=2 stm=1 words=8 branch=1 nbranch=6")},
+    [D1_ENTRY_CONTACT] = {"tfit_contact_force", 0, 0,
+                          SAME("alu=5 load=2 ldm=2 stm=1 words=6 branch=2 nbranch=5")},
+    /* (objdump counts one more alu: the nop before its literal pool) */
+    [D1_ONE] = {"tfit_degree1_one_asm", 0, 0,
+                SAME("alu=52 load=2 ldm=1 ldm_pc=1 stm=1 words=11 fldm=2 fstm=1 fwords=27 "
+                     "fadd=23 fmul=42 fother=3 fmov=11")},
+    /* the three skips (no main iteration, no remaining pair, no odd point)
+     * counted as falling through; d1_mix turns each one taken */
+    [D1_PATH] = {"tfit_degree1_asm", 0, 0,
+                 SAME("alu=58 load=3 ldm=1 ldm_pc=1 stm=1 words=11 fldm=2 fstm=1 fwords=36 "
+                      "fadd=14 fmul=33 fother=3 fmov=11 nbranch=3")},
+    [D1_MAIN] = {"tfit_degree1_asm", 1, 1,
+                 SAME("alu=2 fldm=8 fstm=8 fwords=240 fadd=144 fmul=144 branch=1")},
+    [D1_REM] = {"tfit_degree1_asm", 2, 1,
+                SAME("alu=1 fldm=1 fstm=1 fwords=30 fadd=18 fmul=18 branch=1")},
+    [D1_POINT] = {"tfit_degree1_asm", 0, 0, SAME("fldm=1 fstm=1 fwords=15 fadd=9 fmul=9")},
+    [EVAL_NODAL] = {"evaluate", 0, 0, SAME("alu=18 load=4 ldm_pc=1 stm=1 words=10 branch=2 nbranch=2")},
     [EVAL_MODAL] = {"evaluate", 0, 0, SAME("alu=17 load=4 ldm_pc=1 stm=1 words=10 branch=4")},
-    [EVAL_ZHOU] = {"evaluate", 0, 0, SAME("alu=21 load=5 ldm_pc=1 stm=1 words=10 branch=6")},
+    [EVAL_ZHOU] = {"evaluate", 0, 0, SAME("alu=21 load=5 ldm_pc=1 stm=1 words=10 branch=4 nbranch=2")},
     [MASK_WORD] = {"evaluate", 1, 1, SAME("alu=3 load=1 store=1 branch=1")},
     [INPUT_PATH] = {"tfit_input_map", 0, 0,
                     {"alu=81 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=8 fload=12 fstore=3 "
                      "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14",
-                     "alu=82 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=12 fload=12 fstore=3 "
+                     "alu=81 load=2 store=1 ldm=1 ldm_pc=1 stm=1 words=12 fload=12 fstore=3 "
                      "fldm=1 fstm=1 fwords=4 fadd=14 fmul=33 fother=4 fmov=14"}},
     [BASIS_PATH] = {"tfit_basis", 0, 0, /* the M4F enters loop 1 with a branch */
-                    {"alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=2",
-                     "alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=1"}},
+                    {"alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 branch=1 "
+                     "nbranch=1",
+                     "alu=14 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=3 nbranch=1"}},
     [BASIS_PATH_LOW] = {"tfit_basis", 0, 0,
                         SAME("alu=10 ldm_pc=1 stm=1 words=14 fload=3 fstore=6 fadd=3 fother=1 "
                              "branch=2")},
@@ -170,23 +190,23 @@ static const block blocks[N_BLOCKS] = {
     [BASIS_DEGREE] = {"tfit_basis", 2, 1, SAME("alu=6 branch=1")},
     [BASIS_E] = {"tfit_basis", 3, 2, SAME("alu=8 fldm=1 fwords=1 branch=1")},
     [BASIS_TERM] = {"tfit_basis", 4, 3, SAME("alu=1 fldm=2 fstm=1 fwords=3 fmul=2 branch=1")},
-    [NODAL_PATH_P1] = {"tfit_eval_nodal", 0, 0,
-                       SAME("alu=10 load=4 ldm_pc=1 stm=1 words=18 fload=3 branch=2")},
-    [NODAL_NODE_P1] = {"tfit_eval_nodal", 3, 1,
-                       SAME("alu=7 store=3 fload=12 fadd=9 fmul=9 fmov=3 branch=1")},
     [NODAL_PATH] = {"tfit_eval_nodal", 0, 0,
-                    SAME("alu=22 mul=2 mla=1 load=5 store=1 ldm_pc=1 stm=1 words=18 branch=3")},
-    [NODAL_NODE] = {"tfit_eval_nodal", 1, 1, SAME("alu=15 load=1 store=3 fload=3 fmov=3 branch=2")},
+                    SAME("alu=21 mul=2 mla=1 load=5 store=1 ldm_pc=1 stm=1 words=18 branch=1 "
+                         "nbranch=1")},
+    [NODAL_NODE] = {"tfit_eval_nodal", 1, 1, SAME("alu=17 load=1 store=3 fload=3 fmov=3 branch=1 "
+                                                          "nbranch=1")},
     [NODAL_P0_SKIP] = {"tfit_eval_nodal", 0, 0, SAME("alu=5")},
     [NODAL_TERM] = {"tfit_eval_nodal", 2, 2, SAME("alu=2 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [MODAL_PATH] = {"tfit_eval_modal", 0, 0,
-                    SAME("alu=26 mul=2 mla=2 load=5 store=1 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 branch=3")},
-    [MODAL_AMP] = {"tfit_eval_modal", 1, 1, SAME("alu=6 fload=1 fstm=1 fwords=1 branch=2")},
+                    SAME("alu=28 mul=3 mla=1 load=6 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 "
+                         "branch=1 nbranch=2")},
+    [MODAL_AMP] = {"tfit_eval_modal", 1, 1,
+                   SAME("alu=6 fload=1 fstm=1 fwords=1 branch=1 nbranch=1")},
     [MODAL_AMP_P0_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=3")},
     [MODAL_AMP_TERM] = {"tfit_eval_modal", 2, 2,
                         SAME("alu=2 fldm=2 fwords=2 fadd=1 fmul=1 branch=1")},
     [MODAL_NODE] = {"tfit_eval_modal", 3, 1,
-                    SAME("alu=17 store=3 fload=3 fmul=3 fmov=3 branch=2")},
+                    SAME("alu=16 store=3 fload=3 fmul=3 fmov=3 branch=1 nbranch=1")},
     [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
     [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
@@ -194,22 +214,24 @@ static const block blocks[N_BLOCKS] = {
                     "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2"}},
     [ZHOU_AXIS] = {"tfit_eval_zhou2017", 1, 1,
                    SAME("alu=6 load=1 fload=1 fldm=2 fstm=1 fwords=3 fadd=3 fmul=2 fother=2 "
-                        "branch=3")},
+                        "branch=2 nbranch=1")},
     [ZHOU_AXIS_STEP] = {"tfit_eval_zhou2017", 2, 2,
                         SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
     [ZHOU_AXIS_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=3 fother=2 branch=1")},
     [ZHOU_AXIS_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fload=1 fother=1 branch=1")},
     [ZHOU_SURF_AXIS] = {"tfit_eval_zhou2017", 3, 1, SAME("alu=8 load=2 store=2 branch=1")},
     [ZHOU_PAIR] = {"tfit_eval_zhou2017", 4, 2,
-                   SAME("alu=25 mla=1 load=9 store=3 ldm=1 words=2 fload=2 fadd=1 branch=3")},
+                   SAME("alu=25 mla=1 load=9 store=3 ldm=1 words=2 fload=2 fadd=1 branch=1 "
+                        "nbranch=2")},
     [ZHOU_ROW] = {"tfit_eval_zhou2017", 5, 3,
-                  SAME("alu=4 fload=1 fstm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=3")},
+                  SAME("alu=4 fload=1 fstm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=2 "
+                       "nbranch=1")},
     [ZHOU_ROW_STEP] = {"tfit_eval_zhou2017", 6, 4,
                        SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
     [ZHOU_ROW_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
     [ZHOU_ROW_STUB] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=2 branch=1")},
     [ZHOU_NODE] = {"tfit_eval_zhou2017", 7, 3,
-                   SAME("alu=7 fload=3 fstore=1 fadd=7 fmul=2 fother=4 branch=6")},
+                   SAME("alu=7 fload=3 fstore=1 fadd=7 fmul=2 fother=4 branch=3 nbranch=3")},
     [ZHOU_X_STEP] = {"tfit_eval_zhou2017", 8, 4,
                      SAME("alu=1 fldm=1 fwords=1 fadd=2 fmul=1 fother=2 branch=1")},
     [ZHOU_X_SETUP] = {"tfit_eval_zhou2017", 0, 0, SAME("alu=1 fother=2 branch=1")},
@@ -248,35 +270,74 @@ static void sub_block(tf_insn_mix *total, tf_core core, block_id b, uint64_t tim
     }
 }
 
+/* n conditional branches that fall through instead of being taken (a
+ * loop's last back edge, a skip not taken), or the reverse. */
+static void falls_through(tf_insn_mix *t, uint64_t n)
+{
+    add_mix(t, "nbranch=1", n);
+    t->n[TF_INSN_BRANCH] -= (unsigned)n;
+}
+
+static void taken(tf_insn_mix *t, uint64_t n)
+{
+    add_mix(t, "branch=1", n);
+    t->n[TF_INSN_NBRANCH] -= (unsigned)n;
+}
+
+/* A loop block run n times: its back edge falls through the last time. */
+static void add_loop(tf_insn_mix *t, tf_core core, block_id b, uint64_t n)
+{
+    add_block(t, core, b, n);
+    if (n > 0) {
+        falls_through(t, 1);
+    }
+}
+
+/* Degree 1 (tfit_degree1_armv7em.c): n_out / 16 iterations of eight
+ * pairs, then (n_out / 2) mod 8 single pairs, then the odd point; each
+ * part skipped by a taken branch when empty. */
+static void d1_mix(tf_insn_mix *t, tf_core core, uint32_t n_out)
+{
+    add_block(t, core, D1_PATH, 1);
+    const uint32_t iterations = n_out >> 4, pairs = (n_out >> 1) & 7u;
+    add_loop(t, core, D1_MAIN, iterations);
+    add_loop(t, core, D1_REM, pairs);
+    taken(t, (iterations == 0) + (pairs == 0) + !(n_out & 1u));
+    if (n_out & 1u) {
+        add_block(t, core, D1_POINT, 1);
+    }
+}
+
 static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
 {
     if (p <= 1) {
         add_block(t, core, BASIS_PATH_LOW, 1);
     } else {
         add_block(t, core, BASIS_PATH, 1);
-        add_block(t, core, BASIS_T_STEP, p - 1);
+        add_loop(t, core, BASIS_T_STEP, p - 1);
         sub_block(t, core, BASIS_T_ENTRY, 1);
     }
-    add_block(t, core, BASIS_DEGREE, p + 1);
+    add_loop(t, core, BASIS_DEGREE, p + 1);
+    /* loop 3 entered once per degree, loop 4 once per (degree, e) */
     add_block(t, core, BASIS_E, (uint64_t)(p + 1) * (p + 2) / 2);
+    falls_through(t, p + 1);
     add_block(t, core, BASIS_TERM, tf_terms(p));
+    falls_through(t, (uint64_t)(p + 1) * (p + 2) / 2);
 }
 
 static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], terms = tf_terms(p);
     add_block(t, core, EVAL_NODAL, 1);
-    if (p == 1) { /* the basis is g itself: no tfit_basis call */
-        add_block(t, core, NODAL_PATH_P1, 1);
-        add_block(t, core, NODAL_NODE_P1, m->n_out);
-        return;
-    }
     basis_mix(t, core, p);
     add_block(t, core, NODAL_PATH, 1);
-    add_block(t, core, NODAL_NODE, m->n_out);
+    add_loop(t, core, NODAL_NODE, m->n_out);
     add_block(t, core, NODAL_TERM, (uint64_t)m->n_out * (terms - 1));
-    if (p == 0) {
+    if (p == 0) { /* the term loop is skipped, by a taken branch */
         sub_block(t, core, NODAL_P0_SKIP, m->n_out);
+        taken(t, m->n_out);
+    } else {
+        falls_through(t, m->n_out);
     }
 }
 
@@ -286,32 +347,41 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     add_block(t, core, EVAL_MODAL, 1);
     basis_mix(t, core, p);
     add_block(t, core, MODAL_PATH, 1);
-    add_block(t, core, MODAL_AMP, r);
+    add_loop(t, core, MODAL_AMP, r);
     add_block(t, core, MODAL_AMP_TERM, (uint64_t)r * (terms - 1));
-    if (p == 0) {
+    if (p == 0) { /* skipped by a taken branch */
         sub_block(t, core, MODAL_AMP_P0_SKIP, r);
+        taken(t, r);
+    } else {
+        falls_through(t, r);
     }
-    add_block(t, core, MODAL_NODE, m->n_out);
+    add_loop(t, core, MODAL_NODE, m->n_out);
     add_block(t, core, MODAL_MODE, (uint64_t)m->n_out * (r - 1));
     if (r == 1) {
         sub_block(t, core, MODAL_R1_SKIP, m->n_out);
+        taken(t, m->n_out);
+    } else {
+        falls_through(t, m->n_out);
     }
 }
 
 /* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
  * body holds the set-up of its step loop; n >= 1 runs n steps, entering the
  * loop past its first instruction (a register move); n = 0 branches past
- * the set-up and the loop to an out-of-line stub and back. */
+ * the set-up and the loop to an out-of-line stub and back (the test that
+ * falls through for n >= 1 is then taken). */
 static void clenshaw_mix(tf_insn_mix *t, tf_core core, uint32_t n, uint64_t times, block_id step,
                          block_id setup, block_id stub)
 {
     if (n == 0) {
         sub_block(t, core, setup, times);
         add_block(t, core, stub, times);
+        taken(t, times);
         return;
     }
     add_block(t, core, step, times * n);
     sub_block(t, core, STEP_ENTRY, times);
+    falls_through(t, times);
 }
 
 static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
@@ -319,29 +389,35 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     const uint32_t *d = m->dims;
     const uint64_t n = m->n_out;
     add_block(t, core, EVAL_ZHOU, 1);
-    add_block(t, core, MASK_WORD, 3 * n);
+    add_loop(t, core, MASK_WORD, 3 * n);
     add_block(t, core, ZHOU_PATH, 1);
+    add_loop(t, core, ZHOU_AXIS, 3);
+    add_loop(t, core, ZHOU_SURF_AXIS, 3);
     for (int a = 0; a < 3; ++a) {
-        add_block(t, core, ZHOU_AXIS, 1);
         clenshaw_mix(t, core, d[a], 1, ZHOU_AXIS_STEP, ZHOU_AXIS_SETUP, ZHOU_AXIS_STUB);
-        add_block(t, core, ZHOU_SURF_AXIS, 1);
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = d[3 + 3 * pair], by = d[4 + 3 * pair], k = d[5 + 3 * pair];
         uint64_t rows = (uint64_t)ax + by + 1;
         add_block(t, core, ZHOU_PAIR, 1);
-        add_block(t, core, ZHOU_ROW, rows);
+        if (pair % 3 == 2) { /* the pair loop's back edge, once per force axis */
+            falls_through(t, 1);
+        }
+        add_loop(t, core, ZHOU_ROW, rows);
         clenshaw_mix(t, core, k, rows, ZHOU_ROW_STEP, ZHOU_ROW_SETUP, ZHOU_ROW_STUB);
-        add_block(t, core, ZHOU_NODE, n);
+        add_loop(t, core, ZHOU_NODE, n);
         clenshaw_mix(t, core, ax, n, ZHOU_X_STEP, ZHOU_X_SETUP, ZHOU_X_STUB);
-        if (by == 0) {
+        if (by == 0) { /* the Y part skipped by a taken branch */
             sub_block(t, core, ZHOU_Y_PART, n);
+            taken(t, n);
         } else {
             add_block(t, core, ZHOU_Y_STEP, n * by);
             sub_block(t, core, STEP_ENTRY, n);
+            falls_through(t, n);
         }
-        if (pair < 3) {
+        if (pair < 3) { /* force axis x stores instead of adding: a taken branch */
             sub_block(t, core, ZHOU_SUM, n);
+            taken(t, n);
         }
     }
 }
@@ -349,12 +425,22 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
-    add_block(mix, core, INPUT_PATH, 1);
-    if (m->family == TFIT_FAMILY_CONTACT && m->dims[0] == 1) {
-        add_block(mix, core, CONTACT_P1, 1); /* the fast path, tfit_eval.c */
+    const int contact = m->family == TFIT_FAMILY_CONTACT;
+    if ((contact || m->family == TFIT_FAMILY_NODAL) && m->dims[0] == 1) {
+        /* the degree-1 fast paths, tfit_eval.c */
+        add_block(mix, core, contact ? D1_ENTRY_CONTACT : D1_ENTRY_FORWARD, 1);
+        if (contact) {
+            add_block(mix, core, D1_ONE, 1);
+        } else {
+            d1_mix(mix, core, m->n_out);
+        }
         return;
     }
-    add_block(mix, core, m->family == TFIT_FAMILY_CONTACT ? ENTRY_CONTACT : ENTRY_FORWARD, 1);
+    add_block(mix, core, INPUT_PATH, 1);
+    add_block(mix, core, contact ? ENTRY_CONTACT : ENTRY_FORWARD, 1);
+    if (!contact && m->dims[0] == 1) {
+        add_block(mix, core, ENTRY_DIMS1, 1);
+    }
     switch (m->family) {
     case TFIT_FAMILY_MODAL:
         modal_mix(mix, core, m);
@@ -373,9 +459,15 @@ size_t tf_cycles_loop_table(tf_core core, char *buf, size_t n)
     size_t k = 0;
     for (int b = 0; b < N_BLOCKS; ++b) {
         if (blocks[b].loop > 0) {
+            /* objdump cannot tell a taken branch from one that falls through */
+            tf_insn_mix m;
+            char text[512];
+            tf_insn_mix_parse(blocks[b].mix[core], &m);
+            m.n[TF_INSN_BRANCH] += m.n[TF_INSN_NBRANCH];
+            m.n[TF_INSN_NBRANCH] = 0;
+            tf_insn_mix_format(&m, text, sizeof text);
             int w = snprintf(buf + (k < n ? k : n), k < n ? n - k : 0, "%s loop %d depth %d: %s\n",
-                             blocks[b].function, blocks[b].loop, blocks[b].depth,
-                             blocks[b].mix[core]);
+                             blocks[b].function, blocks[b].loop, blocks[b].depth, text);
             k += (size_t)w;
         }
     }
@@ -407,30 +499,30 @@ typedef struct cost_table {
 } cost_table;
 
 enum { ALU, MUL, MLA, DIV, LOAD, STORE, LDM, LDM_PC, STM, WORDS, FLOAD, FSTORE, FLDM, FSTM,
-       FWORDS, FADD, FMUL, FDIV, FMAC, FOTHER, FMOV, BRANCH };
+       FWORDS, FADD, FMUL, FDIV, FMAC, FOTHER, FMOV, BRANCH, NBRANCH };
 
 static const cost_table costs[TF_CORES][2] = {
     [TF_CORE_M4F] = {
         /* high */ {{[ALU] = 1, [MUL] = 1, [MLA] = 2, [DIV] = 12, [LOAD] = 2, [STORE] = 2,
                      [LDM] = 1, [LDM_PC] = 4, [STM] = 1, [WORDS] = 1, [FLOAD] = 2, [FSTORE] = 2,
                      [FLDM] = 1, [FSTM] = 1, [FWORDS] = 1, [FADD] = 1, [FMUL] = 1, [FDIV] = 14,
-                     [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 4}},
+                     [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 4, [NBRANCH] = 1}},
         /* low */ {{[ALU] = 1, [MUL] = 1, [MLA] = 2, [DIV] = 2, [LOAD] = 1, [STORE] = 1,
                     [LDM] = 1, [LDM_PC] = 2, [STM] = 1, [WORDS] = 1, [FLOAD] = 1, [FSTORE] = 1,
                     [FLDM] = 1, [FSTM] = 1, [FWORDS] = 1, [FADD] = 1, [FMUL] = 1, [FDIV] = 14,
-                    [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 1}},
+                    [FMAC] = 3, [FOTHER] = 1, [FMOV] = 1, [BRANCH] = 2, [NBRANCH] = 1}},
     },
     [TF_CORE_M7] = {
         /* high */ {{[ALU] = 0.5, [MUL] = 1, [MLA] = 1, [DIV] = 12, [LOAD] = 1, [STORE] = 1,
                      [LDM] = 1, [LDM_PC] = 3, [STM] = 1, [WORDS] = 0.5, [FLOAD] = 1,
                      [FSTORE] = 1, [FLDM] = 1, [FSTM] = 1, [FWORDS] = 0.5, [FADD] = 1,
                      [FMUL] = 1, [FDIV] = 14, [FMAC] = 1, [FOTHER] = 1, [FMOV] = 1,
-                     [BRANCH] = 3}},
+                     [BRANCH] = 3, [NBRANCH] = 3}},
         /* low */ {{[ALU] = 0.5, [MUL] = 0.5, [MLA] = 1, [DIV] = 2, [LOAD] = 0.5, [STORE] = 0.5,
                     [LDM] = 1, [LDM_PC] = 1, [STM] = 1, [WORDS] = 0.5, [FLOAD] = 0.5,
                     [FSTORE] = 0.5, [FLDM] = 1, [FSTM] = 1, [FWORDS] = 0.5, [FADD] = 1,
                     [FMUL] = 1, [FDIV] = 14, [FMAC] = 1, [FOTHER] = 1, [FMOV] = 1,
-                    [BRANCH] = 1}},
+                    [BRANCH] = 1, [NBRANCH] = 1}},
     },
 };
 

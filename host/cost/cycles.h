@@ -43,7 +43,8 @@ typedef enum tf_insn_class {
     TF_INSN_FMAC,   /* VMLA, VFMA, ...: must never appear (-ffp-contract=off) */
     TF_INSN_FOTHER, /* VCMP, VCVT, VABS, VNEG, VMOV between FPU registers or of a constant */
     TF_INSN_FMOV,   /* VMOV between core and FPU registers, VMRS, VMSR */
-    TF_INSN_BRANCH, /* B, BL, BX, CBZ, CBNZ, conditional branches */
+    TF_INSN_BRANCH, /* B, BL, BX, and CBZ, CBNZ, B<cond> when taken */
+    TF_INSN_NBRANCH, /* CBZ, CBNZ, B<cond> not taken (objdump cannot tell: "branch" there) */
     TF_INSN_CLASSES
 } tf_insn_class;
 

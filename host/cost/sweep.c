@@ -313,9 +313,10 @@ static int measure(tf_sweep *sw, tf_model *m, tf_output_set set, const tf_cases 
     return 0;
 }
 
-/* The scene with another output selection (the solver does not read it). */
-static int outputs_of(const tf_scene *s, const tf_solver *solver, tf_output_set set, int contact,
-                      tf_scene *copy, uint32_t **nodes)
+/* The problem with another output selection (a shallow copy: the solver
+ * does not read the outputs). */
+static int outputs_of(const tf_problem *s, const tf_solver *solver, tf_output_set set,
+                      int contact, tf_problem *copy, uint32_t **nodes)
 {
     *copy = *s;
     *nodes = NULL;
@@ -335,22 +336,27 @@ static int outputs_of(const tf_scene *s, const tf_solver *solver, tf_output_set 
     return 0;
 }
 
-static int sweep_set(tf_sweep *sw, const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan,
-                     tf_output_set set, char *err, size_t errlen)
+static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
+                     const tf_fit_plan *plan, tf_output_set set)
 {
-    tf_scene copy;
+    tf_ctx *ctx = solver->ctx;
+    char *err = ctx->err;
+    const size_t errlen = sizeof ctx->err;
+    tf_problem copy;
     uint32_t *nodes;
     tf_cases cases;
-    if (outputs_of(s, solver, set, plan->contact, &copy, &nodes) != 0 ||
-        tf_cases_build(&copy, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       0, &cases, err, errlen) != 0) {
+    if (outputs_of(s, solver, set, plan->contact, &copy, &nodes) != 0) {
+        return tf_fail(ctx, "out of memory for the output set");
+    }
+    if (tf_cases_build(&copy, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
+                       0, &cases) != 0) {
         free(nodes);
         return -1;
     }
     const tf_fitdata *d = &cases.train;
     const size_t n = d->n_cases;
     int rc = 0;
-    tf_info("sweep: %s (%u output points)", tf_output_set_name(set), d->n_out);
+    tf_info(ctx, "sweep: %s (%u output points)", tf_output_set_name(set), d->n_out);
     for (uint32_t p = 0; rc == 0 && p <= plan->max_degree; ++p) {
         if (tf_terms(p) > n) {
             continue;
@@ -408,15 +414,14 @@ static void mark_pareto(tf_sweep *sw)
     }
 }
 
-int tf_sweep_run(const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
-                 tf_sweep *sw, char *err, size_t errlen)
+int tf_sweep_run(const tf_problem *s, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
+                 tf_sweep *sw)
 {
     memset(sw, 0, sizeof *sw);
     sw->n_train = plan->n_train;
     sw->n_heldout = plan->n_heldout;
     for (int set = 0; set < TF_SET_COUNT; ++set) {
-        if ((sets & (1u << set)) && sweep_set(sw, s, solver, plan, (tf_output_set)set, err,
-                                              errlen) != 0) {
+        if ((sets & (1u << set)) && sweep_set(sw, s, solver, plan, (tf_output_set)set) != 0) {
             tf_sweep_free(sw);
             return -1;
         }

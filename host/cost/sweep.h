@@ -1,5 +1,5 @@
 /*
- * sweep.h — the speed-for-accuracy trade of a scene (docs/tradeoff.md):
+ * sweep.h — the speed-for-accuracy trade of a problem (docs/tradeoff.md):
  * every candidate model — family, orders or rank, precision, output set —
  * fitted to the same load cases and measured the same way: coefficients,
  * table bytes, operations, estimated Cortex-M4F/M7 time, measured native
@@ -13,14 +13,14 @@
 
 #include "fitting/pipeline.h"
 #include "model/model.h"
-#include "scene/scene.h"
+#include "problem/problem.h"
 #include "solvers/solver.h"
 
 typedef enum tf_precision { TF_PREC_F32, TF_PREC_F64, TF_PREC_Q31 } tf_precision;
 
 /* Which output points a candidate reports. */
 typedef enum tf_output_set {
-    TF_SET_SCENE,   /* the scene's outputs */
+    TF_SET_SCENE,   /* the problem's outputs (the scene's) */
     TF_SET_CONTACT, /* the contact site only */
     TF_SET_ALL,     /* every node */
     TF_SET_COUNT
@@ -51,9 +51,10 @@ typedef struct tf_sweep {
 /* Output sets to sweep: bit (1 << tf_output_set). */
 #define TF_SWEEP_ALL_SETS ((1u << TF_SET_COUNT) - 1u)
 
-/* Fits and measures every candidate.  Returns 0, or -1 with a message. */
-int tf_sweep_run(const tf_scene *scene, tf_solver *solver, const tf_fit_plan *plan,
-                 unsigned sets, tf_sweep *out, char *err, size_t errlen);
+/* Fits and measures every candidate of problem p with a solver of it.
+ * Returns 0, or -1 with a message in the solver's context. */
+int tf_sweep_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
+                 tf_sweep *out);
 void tf_sweep_free(tf_sweep *sw);
 
 const char *tf_precision_name(tf_precision p);
@@ -62,7 +63,7 @@ const char *tf_output_set_name(tf_output_set s);
 /* CSV, Markdown table and log-log PNG (error against native time, with the
  * seed's own point).  Each returns 0, or -1 with a message. */
 int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen);
-int tf_sweep_markdown(const tf_sweep *sw, const tf_scene *scene, const char *path, char *err,
+int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
                       size_t errlen);
 int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen);
 

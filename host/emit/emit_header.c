@@ -203,6 +203,11 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         }
     }
     fprintf(f, "#define TFIT_%s_CRC32 0x%08xu\n", p, crc);
+    /* The object's link name carries the CRC: a file compiled against another
+     * version of this header refers to another name and does not link (a
+     * stale N_OUT would size its buffers wrongly; header-format.md §2). */
+    fprintf(f, "#define tfit_%s tfit_%s_%08x /* this header's version of the model */\n",
+            m->name, m->name, crc);
     fprintf(f, "extern const tfit_model tfit_%s;\n", m->name);
 }
 
@@ -276,7 +281,7 @@ static void write_u32_table(FILE *f, const char *type, const char *name, const u
     fprintf(f, "};\n");
 }
 
-static void write_definition(FILE *f, const tf_model *m, uint32_t crc)
+static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, uint32_t crc)
 {
     char name[TF_NAME_MAX + 16];
     fprintf(f, "\n");
@@ -287,14 +292,23 @@ static void write_definition(FILE *f, const tf_model *m, uint32_t crc)
     write_coef(f, m);
     fprintf(f,
             "const tfit_model tfit_%s = {\n    %uu, %uu, %uu, %uu, %uu,\n"
-            "    tfit_%s_dims, tfit_%s_coef, tfit_%s_nodes,\n    0x%08xu\n};\n",
+            "    tfit_%s_dims, tfit_%s_coef, tfit_%s_nodes,\n"
+            "    tfit_%s_dims + %uu, tfit_%s_coef + %uu, tfit_%s_nodes + %uu,\n"
+            "    /* self-test: %d inputs, then the CRC of the status and outputs at each "
+            "(header-format.md section 8) */\n    {",
             m->name, TFIT_API_VERSION, (unsigned)m->family, m->n_out, m->n_dims, m->n_coef,
-            m->name, m->name, m->name, crc);
+            m->name, m->name, m->name, m->name, m->n_dims, m->name, m->n_coef, m->name, m->n_out,
+            TFIT_CHECK_INPUTS);
+    for (int i = 0; i < TFIT_CHECK_WORDS; ++i) {
+        fprintf(f, "%s0x%08xu%s", i == 0 ? "" : (i % 6 == 0 ? "\n     " : " "), check[i],
+                i + 1 < TFIT_CHECK_WORDS ? "," : "");
+    }
+    fprintf(f, "},\n    0x%08xu\n};\n", crc);
     tf_emit_q31_definition(f, m);
 }
 
-static void write_header(FILE *f, const char *base, tf_model *const *models, size_t n,
-                         const tf_emit_info *info)
+static void write_header(FILE *f, const char *base, tf_model *const *models,
+                         uint32_t (*checks)[TFIT_CHECK_WORDS], size_t n, const tf_emit_info *info)
 {
     char g[TF_NAME_MAX + 8];
     upper(base, g, sizeof g);
@@ -306,11 +320,11 @@ static void write_header(FILE *f, const char *base, tf_model *const *models, siz
             "regenerate it with tissuefit\"\n#endif\n",
             TFIT_API_VERSION, base, TFIT_API_VERSION);
     for (size_t i = 0; i < n; ++i) {
-        write_macros(f, models[i], tf_model_crc32(models[i]));
+        write_macros(f, models[i], tf_model_crc32_checked(models[i], checks[i]));
     }
     fprintf(f, "\n#ifdef TFIT_%s_IMPLEMENTATION\n", g);
     for (size_t i = 0; i < n; ++i) {
-        write_definition(f, models[i], tf_model_crc32(models[i]));
+        write_definition(f, models[i], checks[i], tf_model_crc32_checked(models[i], checks[i]));
     }
     fprintf(f, "\n#endif /* TFIT_%s_IMPLEMENTATION */\n#endif /* TFIT_%s_H */\n", g, g);
 }
@@ -427,15 +441,29 @@ int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
     if (check_models(base, models, n_models, err, errlen) != 0) {
         return -1;
     }
+    uint32_t(*checks)[TFIT_CHECK_WORDS] = malloc(n_models * sizeof *checks);
+    for (size_t i = 0; checks != NULL && i < n_models; ++i) {
+        if (tf_check_vector(models[i], checks[i]) != 0) {
+            free(checks);
+            checks = NULL;
+        }
+    }
+    if (checks == NULL) {
+        snprintf(err, errlen, "%s: out of memory while computing the self-test vectors", path);
+        return -1;
+    }
     tf_afile h, g;
     if (tf_afile_open(&h, path, err, errlen) != 0) {
+        free(checks);
         return -1;
     }
     if (tf_afile_open(&g, gpath, err, errlen) != 0) {
         tf_afile_abort(&h);
+        free(checks);
         return -1;
     }
-    write_header(h.fp, base, models, n_models, info);
+    write_header(h.fp, base, models, checks, n_models, info);
+    free(checks);
     if (write_golden(g.fp, base, models, n_models, info) != 0) {
         snprintf(err, errlen, "%s: out of memory while computing golden vectors", gpath);
         tf_afile_abort(&g);

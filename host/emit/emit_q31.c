@@ -64,6 +64,8 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
             "float32: %.6g */\n",
             p, unit(m), q->added_error, q->error_cases, q->float_error);
     fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
+    fprintf(f, "#define tfit_%s_q31 tfit_%s_q31_%08x /* this header's version of the model */\n",
+            m->name, m->name, tf_q31_crc32(q));
     fprintf(f, "extern const tfit_model_q31 tfit_%s_q31;\n", m->name);
     tf_q31_free(q);
 }
@@ -107,9 +109,10 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
     fprintf(f, "};\n");
     fprintf(f,
             "const tfit_model_q31 tfit_%s_q31 = {\n    %uu, %uu, %uu, %uu, %uu,\n"
-            "    tfit_%s_q31_coef, tfit_%s_nodes,\n    0x%08xu\n};\n",
+            "    tfit_%s_q31_coef, tfit_%s_nodes,\n"
+            "    tfit_%s_q31_coef + %uu, tfit_%s_nodes + %uu,\n    0x%08xu\n};\n",
             m->name, TFIT_Q31_API_VERSION, (unsigned)q->family, q->n_out, q->degree, q->n_words,
-            m->name, m->name, tf_q31_crc32(q));
+            m->name, m->name, m->name, q->n_words, m->name, q->n_out, tf_q31_crc32(q));
     tf_q31_free(q);
 }
 

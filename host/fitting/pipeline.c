@@ -1,5 +1,5 @@
 /*
- * pipeline.c — see fit_pipeline.h.
+ * pipeline.c — the fitting pipeline (pipeline.h).
  */
 #include "fitting/pipeline.h"
 
@@ -17,13 +17,6 @@
 /* Below this CV error a higher order buys nothing the float32 target can
  * show (mm or N). */
 #define CV_FLOOR 1e-6
-
-void tf_fit_plan_defaults(tf_fit_plan *p)
-{
-    *p = (tf_fit_plan){.family = TFIT_FAMILY_NODAL, .contact = 0, .n_train = 100,
-                       .n_heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
-                       .max_rank = 12};
-}
 
 static double seconds(void)
 {
@@ -86,8 +79,9 @@ static void heldout(tf_family_fit *f, const tf_fitdata *d)
     f->model->heldout_cases = (uint32_t)d->n_cases;
 }
 
-/* Seed Table 3 and the mean deviation maps (fit_pipeline.h). */
-static int seed_table(tf_family_fit *f, const tf_cases *c)
+/* Seed Table 3 and the mean deviation maps (pipeline.h).  Returns 0, or -1
+ * with a message in ctx. */
+static int seed_table(tf_family_fit *f, tf_cases *c, tf_ctx *ctx)
 {
     const tf_fitdata *d = &c->train;
     const size_t rows = 3 * (size_t)d->n_out;
@@ -97,7 +91,7 @@ static int seed_table(tf_family_fit *f, const tf_cases *c)
     if (out == NULL || truth == NULL || f->deviation == NULL) {
         free(out);
         free(truth);
-        return -1;
+        return tf_fail(ctx, "out of memory for the error maps");
     }
     for (int a = 0; a < 3; ++a) {
         double sum2[3] = {0, 0, 0};
@@ -110,7 +104,11 @@ static int seed_table(tf_family_fit *f, const tf_cases *c)
             for (int k = 0; k < 3; ++k) {
                 f3[k] = (double)fin[k];
             }
-            tf_cases_response(c, f3, truth, NULL);
+            if (tf_cases_response(c, f3, truth, NULL) != 0) {
+                free(out);
+                free(truth);
+                return -1;
+            }
             tf_ref_eval(f->model, fin, out, NULL);
             for (size_t j = 0; j < d->n_out; ++j) {
                 for (int comp = 0; comp < 3; ++comp) {
@@ -200,11 +198,9 @@ static int fit_modal(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size
     return f->model ? 0 : -1;
 }
 
-static int fit_zhou(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *plan, char *err,
-                    size_t errlen)
+static int fit_zhou(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size_t errlen)
 {
     tf_family_fit *f = &o->fam[TFIT_FAMILY_ZHOU2017];
-    (void)s;
     if (tf_zhou_applicable(&o->cases.train, f->why, sizeof f->why) != 0) {
         f->applicable = 0;
         return 0;
@@ -219,14 +215,15 @@ static int fit_zhou(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *pla
     return f->model ? 0 : -1;
 }
 
-static int run_family(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *plan,
-                      tfit_family fam, char *err, size_t errlen)
+static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan, tfit_family fam)
 {
+    char *err = ctx->err;
+    const size_t errlen = sizeof ctx->err;
     tf_family_fit *f = &o->fam[fam];
     double t0 = seconds();
     int rc;
     f->applicable = 1;
-    tf_info("fit: %s: choosing orders by %u-fold cross-validation", tf_family_name(fam),
+    tf_info(ctx, "fit: %s: choosing orders by %u-fold cross-validation", tf_family_name(fam),
             plan->folds);
     switch (fam) {
     case TFIT_FAMILY_NODAL:
@@ -236,7 +233,7 @@ static int run_family(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *p
         rc = fit_modal(o, plan, err, errlen);
         break;
     case TFIT_FAMILY_ZHOU2017:
-        rc = fit_zhou(s, o, plan, err, errlen);
+        rc = fit_zhou(o, plan, err, errlen);
         break;
     default:
         rc = fit_contact(o, plan, err, errlen);
@@ -246,12 +243,11 @@ static int run_family(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *p
         return rc;
     }
     heldout(f, &o->cases.heldout);
-    if (fam != TFIT_FAMILY_CONTACT && seed_table(f, &o->cases) != 0) {
-        snprintf(err, errlen, "out of memory for the error maps");
+    if (fam != TFIT_FAMILY_CONTACT && seed_table(f, &o->cases, ctx) != 0) {
         return -1;
     }
     f->seconds = seconds() - t0;
-    tf_info("fit: %s: held-out max %.3g %s, rms %.3g (%.2f s)", tf_family_name(fam),
+    tf_info(ctx, "fit: %s: held-out max %.3g %s, rms %.3g (%.2f s)", tf_family_name(fam),
             f->heldout_max, fam == TFIT_FAMILY_CONTACT ? "N" : "mm", f->heldout_rms, f->seconds);
     return 0;
 }
@@ -259,49 +255,51 @@ static int run_family(const tf_scene *s, tf_fit_outcome *o, const tf_fit_plan *p
 /* Small-strain elasticity stops describing tissue when displacements
  * approach the body's size; the model still reproduces the solve, which is
  * what its error measures, so this is a warning, not a refusal. */
-static void warn_large(const tf_scene *s, const tf_fitdata *d)
+static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_fitdata *d)
 {
-    double biggest = 0, body = INFINITY;
+    double biggest = 0, body = INFINITY, lo[3], hi[3];
     for (size_t i = 0; i < 3 * (size_t)d->n_out * d->n_cases; ++i) {
         biggest = fmax(biggest, fabs(d->u[i]));
     }
+    tf_problem_bounds(p, lo, hi);
     for (int a = 0; a < 3; ++a) {
-        body = fmin(body, s->box_max[a] - s->box_min[a]);
+        body = fmin(body, hi[a] - lo[a]);
     }
     if (biggest > 0.1 * body) {
-        tf_info("fit: warning: displacements reach %.3g mm on a body %.3g mm thick: linear "
+        tf_info(ctx, "fit: warning: displacements reach %.3g mm on a body %.3g mm thick: linear "
                 "(small-strain) elasticity does not describe tissue there; the models reproduce "
                 "the linear solve",
                 biggest, body);
     }
 }
 
-int tf_fit_run(const tf_scene *s, tf_solver *solver, const tf_fit_plan *plan,
-               tf_fit_outcome *o, char *err, size_t errlen)
+int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+               tf_fit_outcome *o)
 {
+    tf_ctx *ctx = solver->ctx;
     memset(o, 0, sizeof *o);
     double t0 = seconds();
-    if (tf_cases_build(s, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       plan->direct, &o->cases, err, errlen) != 0) {
+    if (tf_cases_build(p, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
+                       plan->direct, &o->cases) != 0) {
         return -1;
     }
     o->seconds_cases = seconds() - t0;
-    warn_large(s, &o->cases.train);
+    warn_large(ctx, p, &o->cases.train);
     if (plan->family == TFIT_FAMILY_ZHOU2017 &&
-        tf_zhou_applicable(&o->cases.train, err, errlen) != 0) {
+        tf_zhou_applicable(&o->cases.train, ctx->err, sizeof ctx->err) != 0) {
         tf_fit_outcome_free(o);
         return -2; /* refuse before any fitting */
     }
     static const tfit_family order[] = {TFIT_FAMILY_NODAL, TFIT_FAMILY_MODAL,
                                         TFIT_FAMILY_ZHOU2017, TFIT_FAMILY_CONTACT};
     for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i) {
-        if (run_family(s, o, plan, order[i], err, errlen) != 0) {
+        if (run_family(ctx, o, plan, order[i]) != 0) {
             tf_fit_outcome_free(o);
             return -1;
         }
     }
     if (!o->fam[plan->family].applicable) {
-        snprintf(err, errlen, "%s", o->fam[plan->family].why);
+        tf_fail(ctx, "%s", o->fam[plan->family].why);
         tf_fit_outcome_free(o);
         return -2;
     }

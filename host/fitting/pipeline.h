@@ -1,6 +1,6 @@
 /*
- * pipeline.h — from a solved scene to fitted models (docs/fitting.md):
- * load cases (fit_cases.h), every applicable family fitted with its orders
+ * pipeline.h — from a problem and its solver to fitted models
+ * (docs/fitting.md): load cases (cases.h), every applicable family fitted with its orders
  * chosen by k-fold cross-validation, held-out errors of the float32 target,
  * the seed's Table 3 view, and the modal error-versus-rank table.
  */
@@ -12,25 +12,13 @@
 
 #include "fitting/cases.h"
 #include "fitting/families/zhou2017.h"
+#include "fitting/plan.h"
 #include "model/model.h"
-#include "scene/scene.h"
+#include "problem/problem.h"
 #include "solvers/solver.h"
 
 #define TF_FIT_MAX_RANK 24 /* modal ranks searched (and tabulated) */
 #define TF_FIT_LEVELS 5    /* the seed's force levels: 0.2 .. 1.0 of the envelope */
-
-typedef struct tf_fit_plan {
-    tfit_family family;   /* forward family to emit */
-    int contact;          /* contact site index */
-    size_t n_train, n_heldout;
-    uint64_t seed;
-    unsigned folds;
-    uint32_t max_degree;  /* nodal, modal and contact degrees searched: 0 (1) .. max */
-    uint32_t max_rank;    /* modal ranks searched: 1 .. max */
-    int direct;           /* solve every training case instead of superposing */
-} tf_fit_plan;
-
-void tf_fit_plan_defaults(tf_fit_plan *p);
 
 typedef struct tf_family_fit {
     int applicable;
@@ -59,11 +47,12 @@ typedef struct tf_fit_outcome {
     double seconds_cases;
 } tf_fit_outcome;
 
-/* Runs the whole fit.  A family that does not apply to the scene is marked
- * so (why[]).  Returns 0; -2 when the plan's forward family does not apply
- * (a scene problem); -1 on any other failure; with a message. */
-int tf_fit_run(const tf_scene *scene, tf_solver *solver, const tf_fit_plan *plan,
-               tf_fit_outcome *out, char *err, size_t errlen);
+/* Runs the whole fit of problem p with a solver of it.  A family that does
+ * not apply to the problem is marked so (why[]).  Returns 0; -2 when the
+ * plan's forward family does not apply (a problem the user must change); -1
+ * on any other failure; with the message in the solver's context. */
+int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+               tf_fit_outcome *out);
 void tf_fit_outcome_free(tf_fit_outcome *out);
 
 #endif /* TF_FIT_PIPELINE_H */

@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 
-#include "scene/scene.h"
+#include "problem/problem.h"
 
 #define TF_GAUSS_MAX 12
 

@@ -7,10 +7,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-int tf_shape_init(tf_shape *sh, const tf_scene *s)
+int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const double hi[3],
+                  const tf_solver_opts *o)
 {
-    const tf_solver_opts *o = &s->solver;
-    sh->cloud = &s->cloud;
+    sh->cloud = cloud;
     sh->rpim.shape = o->alpha_c * o->d_c;
     sh->rpim.q = o->q;
     sh->rpim.poly = o->polynomial;
@@ -20,13 +20,13 @@ int tf_shape_init(tf_shape *sh, const tf_scene *s)
     sh->mls_radius = NULL;
     sh->scale = 0;
     for (int a = 0; a < 3; ++a) {
-        sh->radius[a] = o->support * s->cloud.spacing[a];
+        sh->radius[a] = o->support * cloud->spacing[a];
         sh->scale = fmax(sh->scale, sh->radius[a]);
     }
-    if (tf_cells_init(&sh->cells, s->box_min, s->box_max, o->cells, o->gauss) != 0) {
+    if (tf_cells_init(&sh->cells, lo, hi, o->cells, o->gauss) != 0) {
         return -1;
     }
-    return tf_nbr_build(&sh->nbr, s->cloud.xyz, s->cloud.n, sh->radius);
+    return tf_nbr_build(&sh->nbr, cloud->xyz, cloud->n, sh->radius);
 }
 
 void tf_shape_free(tf_shape *sh)

@@ -27,7 +27,7 @@
 #include "meshfree/neighbours.h"
 #include "meshfree/quadrature.h"
 #include "meshfree/rpim.h"
-#include "scene/scene.h"
+#include "problem/problem.h"
 
 typedef struct tf_shape {
     const tf_cloud *cloud;
@@ -64,8 +64,11 @@ typedef struct tf_shape_work {
     char err[256];
 } tf_shape_work;
 
-/* From a scene's cloud and solver options.  Returns 0, or -1 (out of memory). */
-int tf_shape_init(tf_shape *sh, const tf_scene *s);
+/* From a node cloud (which must outlive sh), the box the background cells
+ * cover and the solver options.  Returns 0, or -1 (out of memory, bad
+ * cells). */
+int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const double hi[3],
+                  const tf_solver_opts *o);
 void tf_shape_free(tf_shape *sh);
 
 /* Switches sh from RPIM to EFG: MLS shape functions whose nodes have the

@@ -7,9 +7,13 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include <zlib.h>
+
 #include "base/rng.h"
+#include "model/ref_eval.h"
 
 /* Inverse of the model's W (3x3, from its float entries) by cofactors. */
 static void w_inverse(const tf_model *m, double inv[9])
@@ -138,4 +142,66 @@ size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3])
     put(&b, INFINITY, -INFINITY, NAN);
     put(&b, 0.5f, 0.5f, INFINITY);
     return b.n;
+}
+
+/* The self-test inputs, from the golden design (fixed seed, independent of
+ * the header's): four random points inside the envelope, a cube diagonal on
+ * its boundary (|g| = 1 to rounding, so the clamp decision itself is
+ * tested), and three points beyond it, 10x, 1e30x and 10x again (the
+ * Newton step and the power-of-two scalings).  At each the target folds
+ * the status and every output into one CRC; at TFIT_CHECK_FAR generated
+ * inputs far beyond it, the projected g into a second (tfit_check.c). */
+static const size_t check_pick[TFIT_CHECK_INPUTS] = {2, 3, 4, 5, 32, 44, 45, 46};
+#define CHECK_SEED 0x7466u
+
+int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
+{
+    float in[TF_GOLDEN_MAX][3];
+    const size_t n = 3 * (size_t)m->n_out;
+    float *out = malloc(n * sizeof *out);
+    if (out == NULL) {
+        return -1;
+    }
+    tf_golden_inputs(m, CHECK_SEED, in);
+    uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
+    for (int k = 0; k < TFIT_CHECK_INPUTS; ++k) {
+        const float *x = in[check_pick[k]];
+        memcpy(check + 3 * k, x, 3 * sizeof *check);
+        crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval(m, x, out, NULL));
+        for (size_t o = 0; o < n; ++o) {
+            uint32_t w;
+            memcpy(&w, &out[o], sizeof w);
+            crc = tf_crc32_u32(crc, w);
+        }
+    }
+    check[3 * TFIT_CHECK_INPUTS] = crc;
+    /* the far inputs: g, as tfit_check.c's far_input() generates them */
+    uint32_t state = 1u;
+    crc = (uint32_t)crc32(0L, Z_NULL, 0);
+    for (int k = 0; k < TFIT_CHECK_FAR; ++k) {
+        float x[3], g[3];
+        int clamped, bad;
+        for (int i = 0; i < 3; ++i) {
+            state = state * 1664525u + 1013904223u;
+            x[i] = (float)((int32_t)(state >> 8) - 0x800000) * 0x1p77f; /* exact */
+        }
+        tf_ref_input(m, x, g, &clamped, &bad, NULL);
+        for (int i = 0; i < 3; ++i) {
+            uint32_t w;
+            memcpy(&w, &g[i], sizeof w);
+            crc = tf_crc32_u32(crc, w);
+        }
+    }
+    check[3 * TFIT_CHECK_INPUTS + 1] = crc;
+    free(out);
+    return 0;
+}
+
+uint32_t tf_model_crc32_checked(const tf_model *m, const uint32_t check[TFIT_CHECK_WORDS])
+{
+    uint32_t crc = tf_model_crc32(m);
+    for (int i = 0; i < TFIT_CHECK_WORDS; ++i) {
+        crc = tf_crc32_u32(crc, check[i]);
+    }
+    return crc;
 }

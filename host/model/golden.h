@@ -17,4 +17,14 @@
 /* Fills in[][3] (capacity TF_GOLDEN_MAX) and returns the count. */
 size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3]);
 
+/* The self-test every emitted model carries (docs/header-format.md §8;
+ * tfit_model_check() evaluates it): TFIT_CHECK_INPUTS inputs (bits), then
+ * the CRC-32 of the status and every output's bits at each, in order, from
+ * the reference evaluator.  Returns -1 when out of memory. */
+int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS]);
+
+/* The model's CRC-32 as the target computes it: tf_model_crc32() continued
+ * over the self-test vector. */
+uint32_t tf_model_crc32_checked(const tf_model *m, const uint32_t check[TFIT_CHECK_WORDS]);
+
 #endif /* TF_GOLDEN_H */

@@ -30,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "numerics/lm_box.h"
 #include "numerics/lm_fdjac.h"
 #include "numerics/lm_step.h"
 
@@ -54,6 +55,7 @@ const char *tf_stop_name(tf_stop s)
         [TF_STOP_PRECISION] = "precision",
         [TF_STOP_MAX_EVALS] = "max-evals",
         [TF_STOP_NONFINITE] = "nonfinite",
+        [TF_STOP_UNDERFLOW] = "underflow",
         [TF_STOP_BAD_START] = "bad-start",
         [TF_STOP_BAD_JACOBIAN] = "bad-jacobian",
         [TF_STOP_CALLBACK] = "callback",
@@ -83,6 +85,7 @@ typedef struct lm {
     double *p, *r, *jac;   /* current point, residuals, Jacobian (m x n) */
     double *pt, *rt;       /* trial point and residuals */
     double *qr, *qtf, *tau, *diag, *grad, *step, *js, *fdiag, *fstep, *typ, *cnorm, *dv;
+    double *cscale; /* power of two near each column's norm: QR of J C^-1 */
     double *work;
     lapack_int *piv;
     size_t *free_idx;
@@ -91,6 +94,7 @@ typedef struct lm {
     double gn_prered; /* relative reduction the Gauss–Newton step predicts */
     size_t evals, jac_evals, iterations;
     int wall;         /* a trial since the last accepted step was non-finite */
+    int projected;    /* a bound cut the last trial step short */
 } lm;
 
 /* Euclidean norm, scaled against overflow (BLAS dnrm2). */
@@ -117,11 +121,6 @@ static double lower(const lm *s, size_t j)
 static double upper(const lm *s, size_t j)
 {
     return s->pb->upper != NULL ? s->pb->upper[j] : INFINITY;
-}
-
-static double clamp(const lm *s, size_t j, double v)
-{
-    return fmin(fmax(v, lower(s, j)), upper(s, j));
 }
 
 /* ||D v||. */
@@ -153,7 +152,7 @@ static void lm_free(lm *s)
 static int lm_alloc(lm *s)
 {
     const size_t m = s->m, n = s->n;
-    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n + n + n +
+    size_t total = n + m + m * n + n + m + m * n + m + n + n + n + n + m + n + n + n + n + n + n +
                    tf_lmstep_work_size(n);
     s->p = malloc(total * sizeof *s->p);
     s->piv = malloc(n * sizeof *s->piv);
@@ -180,6 +179,7 @@ static int lm_alloc(lm *s)
     s->typ = q, q += n;
     s->cnorm = q, q += n;
     s->dv = q, q += n;
+    s->cscale = q, q += n;
     s->work = q;
     return 0;
 }
@@ -260,12 +260,33 @@ static void update_scaling(lm *s, int first)
     }
 }
 
-/* Pivoted QR of the free columns and Q^T r.  Returns the numerical rank. */
+/* Column scale for the factorisation: the power of two nearest above the
+ * column's norm (1 for a zero column), so that J C^-1 has columns of norm
+ * in (1/2, 1] and the scaling itself is exact. */
+static double column_scale(double norm)
+{
+    int e;
+    return norm > 0 && isfinite(norm) ? (frexp(norm, &e), ldexp(1.0, e)) : 1.0;
+}
+
+/* Pivoted QR of the free columns of J C^-1 and Q^T r.  Returns the
+ * numerical rank.
+ *
+ * The columns are scaled to about unit norm first (exactly, by powers of
+ * two), so that pivoting and the rank decision do not depend on the units
+ * of the parameters (docs/lm.md §2): on the unscaled J one column 1e15
+ * times larger than the others made them all look dependent, and the
+ * Gauss-Newton step and reduction ignored them. */
 static int factor(lm *s, size_t *rank)
 {
     const size_t m = s->m, nf = s->nf, k = m < nf ? m : nf;
     for (size_t c = 0; c < nf; ++c) {
-        memcpy(s->qr + c * m, s->jac + s->free_idx[c] * m, m * sizeof *s->qr);
+        size_t j = s->free_idx[c];
+        double cs = column_scale(s->cnorm[j]);
+        s->cscale[j] = cs;
+        for (size_t i = 0; i < m; ++i) {
+            s->qr[i + c * m] = s->jac[i + j * m] / cs;
+        }
         s->piv[c] = 0;
     }
     lapack_int info = LAPACKE_dgeqp3(LAPACK_COL_MAJOR, (lapack_int)m, (lapack_int)nf, s->qr,
@@ -280,7 +301,7 @@ static int factor(lm *s, size_t *rank)
         return -1;
     }
     /* Rank for the Gauss–Newton step: columns beyond it are noise at the
-     * level of double rounding in R. */
+     * level of double rounding in R (of the scaled columns, |R_00| ~ 1). */
     double r00 = fabs(s->qr[0]), tol = (double)(m > nf ? m : nf) * DBL_EPSILON * r00;
     *rank = 0;
     while (*rank < k && fabs(s->qr[*rank + *rank * m]) > tol) {
@@ -293,7 +314,11 @@ static int factor(lm *s, size_t *rank)
     return 0;
 }
 
-/* Largest cosine between r and a free column of J (Moré's gtol test). */
+/* Largest cosine between r and a free column of J (Moré's gtol test).
+ * Divided one norm at a time: the product of a large column norm and
+ * ||r|| overflows to infinity and made the cosine 0, a false "gradient"
+ * stop; a cosine that cannot be computed (NaN from an overflowed J^T r)
+ * counts as large. */
 static double gradient_cosine(const lm *s)
 {
     double g = 0;
@@ -301,35 +326,54 @@ static double gradient_cosine(const lm *s)
         size_t j = s->free_idx[c];
         double cn = s->cnorm[j];
         if (cn > 0) {
-            g = fmax(g, fabs(s->grad[j]) / (cn * s->rnorm));
+            double cosine = fabs(s->grad[j]) / cn / s->rnorm;
+            g = isnan(cosine) ? INFINITY : fmax(g, cosine);
         }
     }
     return g;
 }
 
 /* The damped step on the free parameters, projected into the box.  Sets
- * s->step to the step actually taken and s->pt to the trial point. */
-static int trial_step(lm *s, size_t rank)
+ * s->step to the damped step (the step taken when a bound cut it) and
+ * s->pt to the trial point.  The factor is of J C^-1, so the step is
+ * solved for C p with the scaling D C^-1 (the same ||D p||) and unscaled
+ * (exactly, but it may underflow: C holds powers of two).  Returns
+ * TF_STOP_DIRECT, or why no step could be made: BAD_JACOBIAN when LAPACK
+ * failed, UNDERFLOW when the step is zero in every component. */
+static tf_stop trial_step(lm *s, size_t rank)
 {
     const size_t nf = s->nf;
     for (size_t c = 0; c < nf; ++c) {
-        s->fdiag[c] = s->diag[s->free_idx[c]];
+        size_t j = s->free_idx[c];
+        s->fdiag[c] = s->diag[j] / s->cscale[j];
     }
     tf_lmstep st = {nf, s->m < nf ? s->m : nf, s->qr, s->m, s->piv, rank, s->qtf, s->fdiag,
                     s->work};
     double par = tf_lmstep_solve(&st, s->delta, s->par, s->fstep);
+    if (par == TF_LMSTEP_UNDERFLOW) {
+        return TF_STOP_UNDERFLOW;
+    }
     if (par < 0) {
-        return -1;
+        return TF_STOP_BAD_JACOBIAN;
     }
     s->par = par;
     memset(s->step, 0, s->n * sizeof *s->step);
+    int moves = 0;
     for (size_t c = 0; c < nf; ++c) {
-        s->step[s->free_idx[c]] = s->fstep[c];
+        size_t j = s->free_idx[c];
+        s->step[j] = s->fstep[c] / s->cscale[j];
+        moves |= s->step[j] != 0;
     }
-    for (size_t j = 0; j < s->n; ++j) {
-        s->pt[j] = clamp(s, j, s->p[j] + s->step[j]);
+    if (!moves) {
+        return TF_STOP_UNDERFLOW;
     }
-    return 0;
+    s->projected = tf_lm_box_trial(s->n, s->pb->lower, s->pb->upper, s->p, s->step, s->pt);
+    if (s->projected) {
+        for (size_t j = 0; j < s->n; ++j) {
+            s->step[j] = s->pt[j] - s->p[j];
+        }
+    }
+    return TF_STOP_DIRECT;
 }
 
 /* Predicted relative reduction of ||r||^2 for the step (Moré eq. 4.4 and
@@ -431,14 +475,9 @@ static double noise_floor(const lm *s)
 static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
 {
     *accepted = 0;
-    if (trial_step(s, rank) != 0) {
-        return TF_STOP_BAD_JACOBIAN;
-    }
-    int projected = 0;
-    for (size_t j = 0; j < s->n; ++j) {
-        double taken = s->pt[j] - s->p[j];
-        projected |= taken != s->step[j];
-        s->step[j] = taken;
+    tf_stop st = trial_step(s, rank);
+    if (st != TF_STOP_DIRECT) {
+        return st;
     }
     s->pnorm_scaled = scaled_norm(s, s->step);
     if (first) {
@@ -452,7 +491,7 @@ static tf_stop one_trial(lm *s, size_t rank, int first, int *accepted)
     double rtnorm = finite ? norm2(s->rt, s->m) : INFINITY;
     double actred = 0.1 * rtnorm < s->rnorm ? 1 - (rtnorm / s->rnorm) * (rtnorm / s->rnorm) : -1;
     double prered, dirder;
-    predicted(s, projected, &prered, &dirder);
+    predicted(s, s->projected, &prered, &dirder);
     double ratio = prered != 0 ? actred / prered : 0;
     double noise = noise_floor(s);
     int unresolved = finite && fabs(actred) <= noise && prered <= noise;
@@ -482,8 +521,13 @@ static tf_stop iterate(lm *s)
         active_set(s);
         update_scaling(s, first);
         if (first) {
+            /* factor ||D p0||; at p0 = 0, factor ||r0|| rather than factor
+             * itself: ||D p|| is in the units of r (D_j = ||J_j||), so an
+             * absolute radius of 1 would depend on the parameters' units
+             * (and with one large column stop the fit at the start, the
+             * region below what double can resolve of ||r||). */
             double pn = scaled_norm(s, s->p);
-            s->delta = pn > 0 ? s->opt->factor * pn : s->opt->factor;
+            s->delta = s->opt->factor * (pn > 0 ? pn : s->rnorm);
             s->par = 0;
         }
         if (s->nf == 0) {
@@ -531,7 +575,7 @@ int tf_lm_solve(const tf_lm_problem *pb, const tf_lm_options *opt, double *p, tf
         return -1;
     }
     for (size_t j = 0; j < s.n; ++j) {
-        s.p[j] = clamp(&s, j, p[j]);
+        s.p[j] = tf_lm_box_clamp(p[j], lower(&s, j), upper(&s, j));
         s.typ[j] = s.p[j] != 0 ? fabs(s.p[j]) : 1.0; /* for finite differences */
     }
     tf_stop stop;

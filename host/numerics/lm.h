@@ -36,6 +36,10 @@ typedef enum tf_stop {
     TF_STOP_NONFINITE,      /* the trust region collapsed after non-finite
                                trials: the edge of the model's domain, not a
                                minimum (not converged) */
+    TF_STOP_UNDERFLOW,      /* the damped step underflowed to zero: the
+                               parameters or their steps are at the bottom
+                               of the double range (rescale them; not
+                               converged) */
     TF_STOP_BAD_START,      /* non-finite residual at the starting point */
     TF_STOP_BAD_JACOBIAN,   /* non-finite Jacobian entry (analytic or differenced) */
     TF_STOP_CALLBACK,       /* a callback returned non-zero */

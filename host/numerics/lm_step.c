@@ -151,7 +151,7 @@ double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *ste
     double *z = z_vector(s);
     int info = gauss_newton(s, z);
     if (info != 0) {
-        return -1;
+        return TF_LMSTEP_FAILED;
     }
     unpivot(s, z, step);
     double dxnorm = scaled_norm(s, step), fp = dxnorm - delta;
@@ -164,7 +164,7 @@ double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *ste
     if (s->rank == n) {
         parl = (fp / delta) / newton_denominator(s, s->r, s->ldr, step, dxnorm, &info);
         if (info != 0) {
-            return -1;
+            return TF_LMSTEP_FAILED;
         }
     }
     double gnorm = scaled_gradient(s);
@@ -181,10 +181,16 @@ double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *ste
             par = fmax(DBL_MIN, 0.001 * paru);
         }
         if (damped(s, par, z) != 0) {
-            return -1;
+            return TF_LMSTEP_FAILED;
         }
         unpivot(s, z, step);
         dxnorm = scaled_norm(s, step);
+        if (dxnorm == 0) {
+            /* A damped step with a non-zero gradient is non-zero in exact
+             * arithmetic: this one underflowed.  Going on would divide
+             * 0 by 0 in the Newton denominator. */
+            return TF_LMSTEP_UNDERFLOW;
+        }
         double previous = fp;
         fp = dxnorm - delta;
         /* Done when ||D p|| is within 10 % of delta, or when phi stopped
@@ -195,7 +201,7 @@ double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *ste
         }
         double parc = (fp / delta) / newton_denominator(s, s->work, 2 * n, step, dxnorm, &info);
         if (info != 0) {
-            return -1;
+            return TF_LMSTEP_FAILED;
         }
         if (fp > 0) {
             parl = fmax(parl, par);

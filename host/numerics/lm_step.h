@@ -24,10 +24,15 @@ typedef struct tf_lmstep {
 
 size_t tf_lmstep_work_size(size_t n);
 
+#define TF_LMSTEP_FAILED (-1.0)    /* LAPACK failed (cannot happen for finite input) */
+#define TF_LMSTEP_UNDERFLOW (-2.0) /* the damped step underflowed to zero */
+
 /* Returns lambda (par is the previous one, a starting guess) and the step
  * in step[] (parameter order); ||D step|| <= 1.1 delta, and lambda = 0
- * when the Gauss–Newton step is already that short.  Returns a negative
- * value if LAPACK fails (cannot happen for valid input). */
+ * when the Gauss–Newton step is already that short.  Returns
+ * TF_LMSTEP_UNDERFLOW when the damped step for a delta this small is zero
+ * in double precision (its scaled norm, the Newton iteration's divisor,
+ * would be 0), TF_LMSTEP_FAILED if LAPACK fails. */
 double tf_lmstep_solve(const tf_lmstep *s, double delta, double par, double *step);
 
 #endif /* TF_LM_STEP_H */

@@ -33,7 +33,7 @@ typedef struct tf_cloud {
 } tf_cloud;
 
 /* Fills a box [lo, hi] with grid[0] x grid[1] x grid[2] nodes (each >= 2),
- * numbered top layer first (scene.h).  Interior nodes are moved by up to
+ * numbered top layer first (problem.h).  Interior nodes are moved by up to
  * jitter x spacing along each axis (uniform, from seed); nodes on the
  * boundary stay on it.  Returns 0, or -1 when out of memory. */
 int tf_cloud_box(tf_cloud *c, const double lo[3], const double hi[3], const unsigned grid[3],

@@ -11,7 +11,8 @@
 
 /* header: the header path (its stem names the files).  Returns 0, or -1
  * with a message. */
-int tf_fit_report(const char *dir, const char *header, const tf_scene *scene, tf_solver *solver,
-                  const tf_fit_plan *plan, const tf_fit_outcome *out, char *err, size_t errlen);
+int tf_fit_report(const char *dir, const char *header, const tf_problem *p,
+                  const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *out,
+                  char *err, size_t errlen);
 
 #endif /* TF_FIT_REPORT_H */

@@ -51,7 +51,7 @@ static void number(FILE *f, double v, const char *fmt)
     }
 }
 
-int tf_sweep_markdown(const tf_sweep *sw, const tf_scene *scene, const char *path, char *err,
+int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
                       size_t errlen)
 {
     tf_afile f;
@@ -67,7 +67,7 @@ int tf_sweep_markdown(const tf_sweep *sw, const tf_scene *scene, const char *pat
             "per call of the real evaluator on this machine.  float64: the same fit with "
             "double coefficients and arithmetic (no target evaluator, so no time).  ★ marks "
             "the error/time Pareto front of each output set.\n\n",
-            scene->name, scene->source, sw->n_train, sw->n_heldout);
+            p->name, p->source, sw->n_train, sw->n_heldout);
     fprintf(f.fp, "| outputs | model | precision | coefficients | table bytes | ops | M4F µs | "
                   "M7 µs | native ns | held-out max | held-out RMS | |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|---|\n");

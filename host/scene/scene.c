@@ -1,6 +1,7 @@
 /*
- * scene.c — reading scenes: load (libcyaml), overrides, build, and error
- * messages that name file, line and field (scene.h).
+ * scene.c — reading scenes: load (libcyaml), overrides, build (scene_build.c,
+ * which calls nothing here), and error messages that name file, line and
+ * field (scene.h).
  */
 #include "scene/scene.h"
 
@@ -19,25 +20,8 @@ void tf_scene_free(tf_scene *s)
     if (s == NULL) {
         return;
     }
-    tf_cloud_free(&s->cloud);
-    for (size_t k = 0; s->fixed && k < s->n_fixed; ++k) {
-        free(s->fixed[k].nodes);
-    }
-    free(s->fixed);
-    free(s->loads);
-    free(s->contacts);
-    free(s->outputs.nodes);
+    tf_problem_release(&s->problem);
     free(s);
-}
-
-int tf_scene_contact(const tf_scene *s, const char *name)
-{
-    for (size_t k = 0; k < s->n_contacts; ++k) {
-        if (strcmp(s->contacts[k].name, name) == 0) {
-            return (int)k;
-        }
-    }
-    return -1;
 }
 
 /* "a/b/block48.yaml" -> "block48" */
@@ -104,9 +88,10 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     }
     if (ok) {
         sd_issue is;
-        snprintf(s->source, sizeof s->source, "%s", name);
-        stem(name, s->name, sizeof s->name);
-        if (sd_build(doc, s, &is) != 0) {
+        tf_problem *p = &s->problem;
+        snprintf(p->source, sizeof p->source, "%s", name);
+        stem(name, p->name, sizeof p->name);
+        if (sd_build(doc, p, &s->fit, &is) != 0) {
             report(text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err, errlen);
             ok = 0;
         }

@@ -10,7 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/regions.h"
 #include "scene/scene_regions.h"
+#include "solvers/solver.h"
 
 static int fail(sd_issue *is, const char *path, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -59,16 +61,18 @@ static int check_box(const sd_box *b, const char *path, sd_issue *is)
     return 0;
 }
 
-static int geometry(const sd_geometry *g, tf_scene *s, sd_issue *is)
+static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
 {
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;
     }
+    s->geometry.kind = TF_GEOMETRY_BOX;
+    tf_box_geometry *box = &s->geometry.as.box;
     double nodes = 1;
     for (int a = 0; a < 3; ++a) {
-        s->box_min[a] = g->box->min[a];
-        s->box_max[a] = g->box->max[a];
-        s->grid[a] = g->grid[a];
+        box->min[a] = g->box->min[a];
+        box->max[a] = g->box->max[a];
+        box->grid[a] = g->grid[a];
         if (g->grid[a] < 2) {
             return fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
                         g->grid[a], "xyz"[a]);
@@ -79,21 +83,20 @@ static int geometry(const sd_geometry *g, tf_scene *s, sd_issue *is)
         return fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
                     nodes);
     }
-    s->jitter = g->jitter ? *g->jitter : 0;
-    s->seed = g->seed ? *g->seed : 1;
-    if (!(s->jitter >= 0 && s->jitter <= 0.4)) {
+    box->jitter = g->jitter ? *g->jitter : 0;
+    box->seed = g->seed ? *g->seed : 1;
+    if (!(box->jitter >= 0 && box->jitter <= 0.4)) {
         return fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
     }
-    if (tf_cloud_box(&s->cloud, s->box_min, s->box_max, s->grid, s->jitter, s->seed) != 0) {
+    if (tf_cloud_box(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed) != 0) {
         return fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
     }
     return 0;
 }
 
-static int material(const sd_material *m, tf_scene *s, sd_issue *is)
+static int material(const sd_material *m, tf_problem *s, sd_issue *is)
 {
-    s->young = m->young;
-    s->poisson = m->poisson;
+    s->material = (tf_material){.law = TF_LAW_LINEAR, .young = m->young, .poisson = m->poisson};
     if (!(isfinite(m->young) && m->young > 0)) {
         return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
                     m->young);
@@ -107,7 +110,7 @@ static int material(const sd_material *m, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-static int fixed_one(const sd_fixed *d, size_t k, tf_scene *s, tf_fixed *f, sd_issue *is)
+static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd_issue *is)
 {
     char p[128];
     int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL);
@@ -142,7 +145,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_scene *s, tf_fixed *f, sd_i
         return fail(is, at(p, sizeof p, "fixed", k, NULL),
                     "give displacement or exact: true, not both");
     }
-    if (f->exact && s->reference.kind == TF_REF_NONE) {
+    if (f->exact && s->analytic.kind == TF_ANALYTIC_NONE) {
         return fail(is, at(p, sizeof p, "fixed", k, "exact"),
                     "exact: true needs a reference section");
     }
@@ -152,7 +155,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_scene *s, tf_fixed *f, sd_i
     if (!finite_all(f->value, 3)) {
         return fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
     }
-    if (sd_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
+    if (tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
         return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
@@ -161,7 +164,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_scene *s, tf_fixed *f, sd_i
     return 0;
 }
 
-static int fixed(const sd_scene *doc, tf_scene *s, sd_issue *is)
+static int fixed(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     s->fixed = calloc(doc->fixed_count, sizeof *s->fixed);
     if (s->fixed == NULL) {
@@ -176,7 +179,7 @@ static int fixed(const sd_scene *doc, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-static int node_index(uint32_t number, const tf_scene *s, const char *path, uint32_t *index,
+static int node_index(uint32_t number, const tf_problem *s, const char *path, uint32_t *index,
                       sd_issue *is)
 {
     if (number < 1 || number > s->cloud.n) {
@@ -187,7 +190,7 @@ static int node_index(uint32_t number, const tf_scene *s, const char *path, uint
     return 0;
 }
 
-static int loads(const sd_scene *doc, tf_scene *s, sd_issue *is)
+static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     char p[128];
     s->loads = calloc(doc->loads_count + 1, sizeof *s->loads);
@@ -206,7 +209,7 @@ static int loads(const sd_scene *doc, tf_scene *s, sd_issue *is)
             return fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of force or exact: true");
         }
-        if (l->exact && (s->reference.kind == TF_REF_NONE || d->node != NULL)) {
+        if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->node != NULL)) {
             return fail(is, at(p, sizeof p, "loads", k, "exact"),
                         "exact: true needs a reference section and a patch");
         }
@@ -229,7 +232,7 @@ static int loads(const sd_scene *doc, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-static int contacts(const sd_scene *doc, tf_scene *s, sd_issue *is)
+static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     char p[128];
     s->contacts = calloc(doc->contact_count + 1, sizeof *s->contacts);
@@ -264,16 +267,16 @@ static int contacts(const sd_scene *doc, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-static int envelope(const sd_envelope *e, tf_scene *s, sd_issue *is)
+static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
 {
-    s->envelope_radius = e && e->radius ? *e->radius : 1.0;
+    s->envelope.radius = e && e->radius ? *e->radius : 1.0;
     for (int a = 0; a < 3; ++a) {
-        s->envelope_centre[a] = e && e->centre ? e->centre[a] : 0;
+        s->envelope.centre[a] = e && e->centre ? e->centre[a] : 0;
     }
-    if (!(isfinite(s->envelope_radius) && s->envelope_radius > 0)) {
+    if (!(isfinite(s->envelope.radius) && s->envelope.radius > 0)) {
         return fail(is, "envelope.radius", "must be a positive number of newtons");
     }
-    if (!finite_all(s->envelope_centre, 3)) {
+    if (!finite_all(s->envelope.centre, 3)) {
         return fail(is, "envelope.centre", "must be finite (N)");
     }
     return 0;
@@ -282,6 +285,7 @@ static int envelope(const sd_envelope *e, tf_scene *s, sd_issue *is)
 tf_solver_opts sd_solver_defaults(const unsigned grid[3])
 {
     tf_solver_opts o = {
+        .method = "rpim-galerkin",
         .support = 2.0,
         .centre = TF_SUPPORT_CELL,
         .alpha_c = 1.0,
@@ -300,12 +304,20 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
     return o;
 }
 
-static int solver(const sd_solver *d, tf_scene *s, sd_issue *is)
+static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
 {
     tf_solver_opts *o = &s->solver;
-    *o = sd_solver_defaults(s->grid);
+    *o = sd_solver_defaults(s->geometry.as.box.grid);
     if (d == NULL) {
         return 0;
+    }
+    if (d->method) {
+        if (tf_solver_type_find(d->method) == NULL) {
+            char names[256];
+            tf_solver_type_names(names, sizeof names);
+            return fail(is, "solver.method", "'%s' is not one of: %s", d->method, names);
+        }
+        snprintf(o->method, sizeof o->method, "%s", d->method);
     }
     o->support = d->support ? *d->support : o->support;
     o->centre = d->centre ? (tf_support_centre)*d->centre : o->centre;
@@ -354,14 +366,14 @@ static int solver(const sd_solver *d, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-static int reference(const sd_reference *d, tf_scene *s, sd_issue *is)
+static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)
 {
-    tf_reference *r = &s->reference;
-    r->kind = d ? (tf_reference_kind)d->kind : TF_REF_NONE;
+    tf_analytic *r = &s->analytic;
+    r->kind = d ? (tf_analytic_kind)d->kind : TF_ANALYTIC_NONE;
     if (d == NULL) {
         return 0;
     }
-    if (r->kind == TF_REF_CANTILEVER) {
+    if (r->kind == TF_ANALYTIC_CANTILEVER) {
         if (d->load == NULL || !isfinite(*d->load) || d->offset || d->gradient) {
             return fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
         }
@@ -383,35 +395,33 @@ static int reference(const sd_reference *d, tf_scene *s, sd_issue *is)
 
 /* The fit: section.  Limits keep every design matrix of a fold
  * non-trivial and the searches inside the target's capacity (tfit.h). */
-static int fit(const sd_fit *d, tf_scene *s, sd_issue *is)
+static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *is)
 {
-    tf_scene_fit *f = &s->fit;
-    *f = (tf_scene_fit){.family = 1, .contact = s->n_contacts > 0 ? 0 : -1, .train = 100,
-                        .heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
-                        .max_rank = 12};
+    tf_fit_plan_defaults(f);
+    f->contact = s->n_contacts > 0 ? 0 : -1;
     if (d == NULL) {
         return 0;
     }
-    f->family = d->family ? *d->family : f->family;
-    f->train = d->train ? *d->train : f->train;
-    f->heldout = d->heldout ? *d->heldout : f->heldout;
+    f->family = d->family ? (tfit_family)*d->family : f->family;
+    f->n_train = d->train ? *d->train : f->n_train;
+    f->n_heldout = d->heldout ? *d->heldout : f->n_heldout;
     f->seed = d->seed ? *d->seed : f->seed;
     f->folds = d->folds ? *d->folds : f->folds;
     f->max_degree = d->max_degree ? *d->max_degree : f->max_degree;
     f->max_rank = d->max_rank ? *d->max_rank : f->max_rank;
     if (d->contact) {
-        f->contact = tf_scene_contact(s, d->contact);
+        f->contact = tf_problem_contact(s, d->contact);
         if (f->contact < 0) {
             return fail(is, "fit.contact", "names no contact site of the scene");
         }
     }
-    if (f->train < 6 || f->train > 100000) {
+    if (f->n_train < 6 || f->n_train > 100000) {
         return fail(is, "fit.train", "6 to 100000 training load cases");
     }
-    if (f->heldout < 1 || f->heldout > 100000) {
+    if (f->n_heldout < 1 || f->n_heldout > 100000) {
         return fail(is, "fit.heldout", "1 to 100000 held-out load cases");
     }
-    if (f->folds < 2 || f->folds > 20 || f->folds > f->train) {
+    if (f->folds < 2 || f->folds > 20 || f->folds > f->n_train) {
         return fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
     }
     if (f->max_degree > 8) {
@@ -423,7 +433,7 @@ static int fit(const sd_fit *d, tf_scene *s, sd_issue *is)
     return 0;
 }
 
-int sd_build(const sd_scene *doc, tf_scene *s, sd_issue *is)
+int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is)
 {
     if (doc->name) {
         snprintf(s->name, sizeof s->name, "%s", doc->name);
@@ -432,7 +442,7 @@ int sd_build(const sd_scene *doc, tf_scene *s, sd_issue *is)
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
-        fit(doc->fit, s, is) != 0) {
+        fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }
     if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {

@@ -1,5 +1,5 @@
 /*
- * scene_regions.c — regions, patches and outputs against the node cloud
+ * scene_regions.c — patches and outputs against the node cloud
  * (scene_regions.h).
  */
 #include "scene/scene_regions.h"
@@ -9,38 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int in_region(const tf_cloud *c, const tf_region *r, const double *x, double tol)
-{
-    switch (r->kind) {
-    case TF_REGION_FACE:
-        return fabs(x[tf_face_axis(r->face)] - tf_cloud_face_coord(c, r->face)) <= tol;
-    case TF_REGION_PLANE:
-        return fabs(x[r->axis] - r->at) <= tol;
-    default:
-        for (int a = 0; a < 3; ++a) {
-            if (x[a] < r->min[a] - tol || x[a] > r->max[a] + tol) {
-                return 0;
-            }
-        }
-        return 1;
-    }
-}
-
-int sd_region_nodes(const tf_cloud *c, const tf_region *r, uint32_t **nodes, size_t *n)
-{
-    double tol = tf_cloud_tol(c);
-    *n = 0;
-    *nodes = malloc((c->n + 1) * sizeof **nodes);
-    if (*nodes == NULL) {
-        return -1;
-    }
-    for (size_t i = 0; i < c->n; ++i) {
-        if (in_region(c, r, c->xyz + 3 * i, tol)) {
-            (*nodes)[(*n)++] = (uint32_t)i;
-        }
-    }
-    return 0;
-}
+#include "problem/regions.h"
 
 static int patch_fail(char *msg, size_t msglen, const char *what)
 {
@@ -103,7 +72,8 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
     return -1;
 }
 
-int sd_resolve_outputs(const sd_outputs *d, const tf_scene *s, tf_outputs *o, char *msg, size_t msglen)
+int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
+                       size_t msglen)
 {
     o->kind = (tf_output_kind)d->select;
     int has_nodes = d->nodes != NULL || d->nodes_count > 0;
@@ -135,7 +105,7 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_scene *s, tf_outputs *o, ch
             memcpy(r.max, d->box->max, sizeof r.max);
         }
         free(o->nodes);
-        if (sd_region_nodes(&s->cloud, &r, &o->nodes, &o->n_nodes) != 0) {
+        if (tf_region_nodes(&s->cloud, &r, &o->nodes, &o->n_nodes) != 0) {
             return outputs_fail(msg, msglen, "out of memory");
         }
     } else if (o->kind == TF_OUT_NODES) {

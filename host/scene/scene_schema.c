@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/scene.h"
+#include "problem/problem.h"
 
 #define OPT CYAML_FLAG_OPTIONAL
 #define OPT_PTR (CYAML_FLAG_OPTIONAL | CYAML_FLAG_POINTER)
@@ -38,8 +38,8 @@ static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
 static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
 /* tfit_family values (tfit.h) of the forward families */
 static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
-static const cyaml_strval_t references[] = {{"cantilever", TF_REF_CANTILEVER},
-                                            {"linear", TF_REF_LINEAR}};
+static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
+                                            {"linear", TF_ANALYTIC_LINEAR}};
 
 #define N(a) CYAML_ARRAY_LEN(a)
 
@@ -102,7 +102,7 @@ static const cyaml_schema_value_t load_entry = {
     CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_load, load_fields)};
 
 static const cyaml_schema_field_t contact_fields[] = {
-    CYAML_FIELD_STRING_PTR("name", OPT, sd_contact, name, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_STRING_PTR("name", OPT, sd_contact, name, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_UINT("node", CYAML_FLAG_DEFAULT, sd_contact, node),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_contact, patch, patch_fields),
     CYAML_FIELD_END,
@@ -132,6 +132,7 @@ static const cyaml_schema_field_t rbf_fields[] = {
 };
 
 static const cyaml_schema_field_t solver_fields[] = {
+    CYAML_FIELD_STRING_PTR("method", OPT, sd_solver, method, 1, TF_SOLVER_METHOD_MAX - 1),
     CYAML_FIELD_FLOAT_PTR("support", OPT, sd_solver, support),
     CYAML_FIELD_ENUM_PTR("centre", STRICT_OPT, sd_solver, centre, centres, N(centres)),
     CYAML_FIELD_MAPPING_PTR("rbf", OPT, sd_solver, rbf, rbf_fields),
@@ -157,7 +158,7 @@ static const cyaml_schema_field_t reference_fields[] = {
 
 static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
-    CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_UINT_PTR("train", OPT, sd_fit, train),
     CYAML_FIELD_UINT_PTR("heldout", OPT, sd_fit, heldout),
     CYAML_FIELD_UINT_PTR("seed", OPT, sd_fit, seed),
@@ -168,7 +169,7 @@ static const cyaml_schema_field_t fit_fields[] = {
 };
 
 static const cyaml_schema_field_t scene_fields[] = {
-    CYAML_FIELD_STRING_PTR("name", OPT, sd_scene, name, 1, TF_SCENE_NAME_MAX - 1),
+    CYAML_FIELD_STRING_PTR("name", OPT, sd_scene, name, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_MAPPING("geometry", CYAML_FLAG_DEFAULT, sd_scene, geometry, geometry_fields),
     CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_scene, material, material_fields),
     CYAML_FIELD_SEQUENCE("fixed", CYAML_FLAG_POINTER, sd_scene, fixed, &fixed_entry, 1,

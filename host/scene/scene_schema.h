@@ -1,7 +1,7 @@
 /*
  * scene_schema.h — the scene file as libcyaml loads it: one C struct per
  * YAML mapping, a pointer for every optional value (NULL when absent, so
- * defaults are applied in one place, scene.c), and the schema that maps
+ * defaults are applied in one place, scene_build.c), and the schema that maps
  * keys to members.  docs/scene-format.md documents each key.
  *
  * Extending the format: add the member here and its field to the mapping's
@@ -88,6 +88,7 @@ typedef struct sd_rbf {
 } sd_rbf;
 
 typedef struct sd_solver {
+    char *method;    /* a registered solver's name (solvers/solver.h) */
     double *support;
     int *centre;     /* tf_support_centre */
     sd_rbf *rbf;
@@ -101,7 +102,7 @@ typedef struct sd_solver {
 } sd_solver;
 
 typedef struct sd_reference {
-    int kind;        /* tf_reference_kind */
+    int kind;        /* tf_analytic_kind */
     double *load;
     double *offset;   /* 3 */
     double *gradient; /* 9 */

@@ -64,7 +64,8 @@ static void note_failure(size_t c, const char *why, size_t *failed, char *msg, s
     }
 }
 
-static int build_cell_sets(const tf_shape *sh, tf_nodesets *cs, char *err, size_t errlen)
+static int build_cell_sets(const tf_shape *sh, int threads, tf_nodesets *cs, char *err,
+                           size_t errlen)
 {
     size_t ncell = tf_cells_count(&sh->cells), nn = sh->cloud->n, failed = SIZE_MAX;
     uint32_t **lists = calloc(ncell, sizeof *lists);
@@ -76,7 +77,7 @@ static int build_cell_sets(const tf_shape *sh, tf_nodesets *cs, char *err, size_
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-#pragma omp parallel
+#pragma omp parallel num_threads(threads)
     {
         tf_shape_work sw;
         tf_shape_work_init(&sw);
@@ -131,6 +132,7 @@ typedef struct value_pass {
     const tf_lame *l;
     int bbar;
     const tf_nodesets *cs, *bp;
+    int threads;
     tf_csc *k;
     double t_shape, t_all;
     tf_shape_stats st;
@@ -146,7 +148,7 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     }
     double *buf = malloc((size_t)BATCH * 9 * maxm * maxm * sizeof *buf);
     char msg[256] = "out of memory";
-    int nt = omp_get_max_threads();
+    int nt = v->threads;
     tf_cell_work *cw = calloc((size_t)nt, sizeof *cw);
     int ok = buf != NULL && cw != NULL;
     for (int t = 0; ok && t < nt; ++t) {
@@ -154,7 +156,7 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     }
     for (size_t start = 0; ok && start < ncell && failed == SIZE_MAX; start += BATCH) {
         size_t end = start + BATCH < ncell ? start + BATCH : ncell;
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for num_threads(nt) schedule(dynamic, 1)
         for (size_t c = start; c < end; ++c) {
             tf_cell_work *w = &cw[omp_get_thread_num()];
             double t0 = omp_get_wtime();
@@ -185,7 +187,7 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     return 0;
 }
 
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, int threads, tf_csc *k,
                           tf_assembly_info *info, char *err, size_t errlen)
 {
     tf_nodesets cs = {0}, bp = {0};
@@ -195,13 +197,13 @@ int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc
      * on one thread each instead of spawning and spinning more. */
     openblas_set_num_threads(1);
     double t0 = omp_get_wtime();
-    int rc = build_cell_sets(sh, &cs, err, errlen);
+    int rc = build_cell_sets(sh, threads, &cs, err, errlen);
     if (rc == 0) {
-        rc = tf_sparsity(&cs, sh->cloud->n, &bp, k, err, errlen);
+        rc = tf_sparsity(&cs, sh->cloud->n, threads, &bp, k, err, errlen);
     }
     double t1 = omp_get_wtime();
     info->t_pattern = t1 - t0;
-    value_pass v = {sh, l, bbar, &cs, &bp, k, 0, 0, {0}};
+    value_pass v = {sh, l, bbar, &cs, &bp, threads, k, 0, 0, {0}};
     tf_shape_stats_reset(&v.st);
     if (rc == 0) {
         rc = assemble_values(&v, err, errlen);

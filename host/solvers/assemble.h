@@ -27,10 +27,10 @@ typedef struct tf_assembly_info {
 } tf_assembly_info;
 
 /* Assembles K for the shape functions sh and the material l; with bbar
- * the volumetric strain is averaged over each background cell (B-bar).
- * Returns 0, or -1 with a message in err (a singular local system, out of
- * memory). */
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_csc *k,
+ * the volumetric strain is averaged over each background cell (B-bar), on
+ * `threads` OpenMP threads (>= 1; the same bits for any count).  Returns
+ * 0, or -1 with a message in err (a singular local system, out of memory). */
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, int threads, tf_csc *k,
                           tf_assembly_info *info, char *err, size_t errlen);
 
 #endif /* TF_ASSEMBLE_H */

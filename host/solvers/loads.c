@@ -7,12 +7,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "verify/reference.h"
+#include "problem/analytic.h"
 
 /* Traction at x: a uniform force per area (ncol = 1), the three unit
  * columns (ncol = 3, force NULL), or the reference solution's (exact). */
 typedef struct traction {
-    const tf_scene *s;
+    const tf_problem *pr; /* exact: whose analytic solution */
     const tf_patch *p;
     const double *force;
     double area;
@@ -22,7 +22,7 @@ typedef struct traction {
 static void traction_at(const traction *t, const double x[3], double out[9], size_t *ncol)
 {
     if (t->exact) {
-        tf_reference_traction(t->s, t->p->face, x, out);
+        tf_analytic_traction(t->pr, t->p->face, x, out);
         *ncol = 1;
     } else if (t->force) {
         for (int a = 0; a < 3; ++a) {
@@ -85,16 +85,16 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
     return rc;
 }
 
-int tf_load_patch(const tf_shape *sh, const tf_scene *s, const tf_patch *p, const double *force,
-                  double *f, char *err, size_t errlen)
+int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
+                  char *err, size_t errlen)
 {
-    traction t = {s, p, force, tf_patch_area(p, sh->cloud), 0};
+    traction t = {NULL, p, force, tf_patch_area(p, sh->cloud), 0};
     return integrate(sh, &t, f, err, errlen);
 }
 
-int tf_load_exact(const tf_shape *sh, const tf_scene *s, const tf_patch *p, double *f, char *err,
-                  size_t errlen)
+int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
+                  char *err, size_t errlen)
 {
-    traction t = {s, p, NULL, tf_patch_area(p, sh->cloud), 1};
+    traction t = {pr, p, NULL, tf_patch_area(p, sh->cloud), 1};
     return integrate(sh, &t, f, err, errlen);
 }

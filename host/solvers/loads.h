@@ -9,18 +9,18 @@
 
 #include <stddef.h>
 
-#include "scene/scene.h"
+#include "problem/problem.h"
 #include "meshfree/shape.h"
 
 /* Adds to f (3N) the nodal forces of a total force spread uniformly over
  * the patch.  With ncol = 3 and force = NULL it writes instead the three
  * unit-force columns (column a: 1 N along axis a) into f (3N x 3, column
  * major, added to).  Returns 0, or -1 with a message. */
-int tf_load_patch(const tf_shape *sh, const tf_scene *s, const tf_patch *p, const double *force,
-                  double *f, char *err, size_t errlen);
+int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
+                  char *err, size_t errlen);
 
-/* Adds to f the reference solution's traction sigma n over the patch. */
-int tf_load_exact(const tf_shape *sh, const tf_scene *s, const tf_patch *p, double *f, char *err,
-                  size_t errlen);
+/* Adds to f the problem's analytic traction sigma n over the patch. */
+int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
+                  char *err, size_t errlen);
 
 #endif /* TF_LOADS_H */

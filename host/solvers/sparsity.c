@@ -94,7 +94,8 @@ static size_t neighbours_of(size_t b, const tf_nodesets *cs, const tf_nodesets *
 
 /* Block pattern, one node per iteration in parallel (each writes its own
  * list: no order dependence). */
-static int block_pattern(const tf_nodesets *cs, const tf_nodesets *nc, tf_nodesets *bp)
+static int block_pattern(const tf_nodesets *cs, const tf_nodesets *nc, tf_nodesets *bp,
+                         int threads)
 {
     size_t n = nc->count;
     uint32_t **lists = calloc(n, sizeof *lists);
@@ -105,7 +106,7 @@ static int block_pattern(const tf_nodesets *cs, const tf_nodesets *nc, tf_nodese
         free(len);
         return -1;
     }
-#pragma omp parallel reduction(| : oom)
+#pragma omp parallel num_threads(threads) reduction(| : oom)
     {
         uint32_t *mark = calloc(n, sizeof *mark), *list = malloc((n + 1) * sizeof *list);
         oom |= !mark || !list;
@@ -168,12 +169,12 @@ static int scalar_pattern(const tf_nodesets *bp, tf_csc *k, char *err, size_t er
     return 0;
 }
 
-int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, tf_nodesets *blocks, tf_csc *k,
-                char *err, size_t errlen)
+int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, int threads, tf_nodesets *blocks,
+                tf_csc *k, char *err, size_t errlen)
 {
     tf_nodesets nc = {0};
     memset(k, 0, sizeof *k);
-    if (invert(cells, n_nodes, &nc) != 0 || block_pattern(cells, &nc, blocks) != 0) {
+    if (invert(cells, n_nodes, &nc) != 0 || block_pattern(cells, &nc, blocks, threads) != 0) {
         tf_nodesets_free(&nc);
         snprintf(err, errlen, "out of memory for the sparsity pattern");
         return -1;

@@ -27,10 +27,11 @@ int tf_nodesets_pack(tf_nodesets *s, uint32_t **lists, const size_t *len, size_t
 /* From the cells' node sets (ascending), the block pattern (for each node
  * b the nodes a >= b sharing a cell with it, ascending, b first) and the
  * scalar pattern of K with zero values: column 3b + j holds rows
- * 3b + j .. 3b + 2, then 3a .. 3a + 2 for each node a > b.  Returns 0, or
- * -1 with a message. */
-int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, tf_nodesets *blocks, tf_csc *k,
-                char *err, size_t errlen);
+ * 3b + j .. 3b + 2, then 3a .. 3a + 2 for each node a > b, on `threads`
+ * OpenMP threads (the same result for any count).  Returns 0, or -1 with a
+ * message. */
+int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, int threads, tf_nodesets *blocks,
+                tf_csc *k, char *err, size_t errlen);
 
 /* Position of entry (3a + i, 3b + j), a >= b and i >= j when a == b, in
  * K's values; pos is the index of a in b's block list (0 for b itself). */

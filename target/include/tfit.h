@@ -22,7 +22,8 @@
  *                                // #define TFIT_BLOCK48_IMPLEMENTATION
  *     static float u[3 * TFIT_BLOCK48_FORWARD_N_OUT];
  *
- *     void boot(void) {           // once: detects corrupted flash
+ *     void boot(void) {           // once: corrupted flash, a build whose
+ *                                 // arithmetic gives other bits
  *         if (tfit_model_check(&tfit_block48_forward) != TFIT_OK) fault();
  *     }
  *     void servo_tick(const float f[3]) {
@@ -32,6 +33,11 @@
  *
  * The table layouts and the exact evaluation order (which the host's golden
  * vectors reproduce bit for bit) are specified in docs/header-format.md.
+ *
+ * Build the library with -ffp-contract=off and without -ffast-math
+ * (docs/firmware.md §2).  Its sources ask GCC and Clang for no contraction
+ * themselves and refuse -ffast-math; tfit_model_check() then proves the
+ * arithmetic on the device (TFIT_ERR_ARITH).
  */
 #ifndef TFIT_H
 #define TFIT_H
@@ -44,7 +50,7 @@ extern "C" {
 
 /* Version of the model layout and evaluation order.  A generated header
  * refuses to compile against a different version. */
-#define TFIT_API_VERSION 3
+#define TFIT_API_VERSION 4
 
 /* Build-time capacity.  Evaluation keeps its work arrays on the stack, sized
  * by these limits; tfit_model_check() rejects models that exceed them. */
@@ -77,7 +83,10 @@ typedef enum tfit_status {
     TFIT_ERR_VERSION = -4, /* model generated for another TFIT_API_VERSION */
     TFIT_ERR_SIZE = -5,    /* dims/table sizes inconsistent, or beyond this build's capacity */
     TFIT_ERR_CORRUPT = -6, /* CRC-32 of the model does not match (damaged flash) */
-    TFIT_ERR_RANGE = -7    /* coefficients non-finite, or large enough to overflow float */
+    TFIT_ERR_RANGE = -7,   /* coefficients non-finite, or large enough to overflow float */
+    TFIT_ERR_ARITH = -8    /* the model's self-test vector gave other bits: this build's float
+                            * arithmetic is not the host's (a*b+c contracted into a fused
+                            * multiply-add, -ffast-math, a flush-to-zero FPU, ...) */
 } tfit_status;
 
 typedef enum tfit_family {
@@ -86,6 +95,15 @@ typedef enum tfit_family {
     TFIT_FAMILY_ZHOU2017 = 3, /* seed-000 structure: per-axis contact law + separable x/y surfaces */
     TFIT_FAMILY_CONTACT = 4   /* contact displacement -> contact force (one output point) */
 } tfit_family;
+
+/* A model's self-test (docs/header-format.md §8): TFIT_CHECK_INPUTS inputs
+ * (3 words of bits each); the CRC-32 of the status and of every output's
+ * bits at each of them; the CRC-32 of the projected input g at
+ * TFIT_CHECK_FAR inputs beyond the envelope that both sides generate (no
+ * table).  The CRCs are the host's. */
+#define TFIT_CHECK_INPUTS 8
+#define TFIT_CHECK_FAR 64
+#define TFIT_CHECK_WORDS (3 * TFIT_CHECK_INPUTS + 2)
 
 /* A model: scalar sizes and pointers to const tables only.  Generated
  * headers define these as `const`, so the whole model sits in flash. */
@@ -98,14 +116,25 @@ typedef struct tfit_model {
     const uint32_t *dims;     /* family shape: orders, rank (see TFIT_*_DIMS) */
     const float *coef;        /* input map, then the family's tables */
     const uint32_t *node_ids; /* n_out scene node numbers (the contact node for TFIT_FAMILY_CONTACT) */
-    uint32_t crc32;           /* CRC-32 over the fields above and the three tables */
+    /* Each table's end, dims + n_dims, coef + n_coef, node_ids + n_out: a
+     * damaged pointer no longer matches its partner, and tfit_model_check()
+     * finds it without reading through it (the CRC cannot cover addresses). */
+    const uint32_t *dims_end;
+    const float *coef_end;
+    const uint32_t *node_ids_end;
+    /* Self-test: inputs and the CRC of what the host computed at each
+     * (docs/header-format.md §8); tfit_model_check() evaluates it. */
+    uint32_t check[TFIT_CHECK_WORDS];
+    uint32_t crc32; /* CRC-32 over the scalar fields, the three tables and check[] */
 } tfit_model;
 
-/* Verifies version, family, sizes against this build's capacity, the CRC-32
- * (detects damaged flash: every single-bit error), and that no evaluation can
- * overflow float.  Call it once at boot.  The evaluation functions assume a
- * model that passed this check; with such a model no output is ever NaN or
- * Inf. */
+/* Verifies, in this order: pointers (NULL: TFIT_ERR_ARG; not matching their
+ * ends: TFIT_ERR_CORRUPT, before any table is read), version, family, sizes
+ * against this build's capacity, the CRC-32 (damaged flash: every single-bit
+ * error), that no evaluation can overflow float, and finally the self-test,
+ * bit for bit (TFIT_ERR_ARITH).  Call it once at boot.  The
+ * evaluation functions assume a model that passed this check; with such a
+ * model no output is ever NaN or Inf. */
 tfit_status tfit_model_check(const tfit_model *m);
 
 /* CRC-32 (IEEE 802.3, as zlib's crc32) of the model as tfit_model_check()
@@ -114,7 +143,11 @@ uint32_t tfit_model_crc32(const tfit_model *m);
 
 /* Forward evaluation: force[3] in N -> out[3 * m->n_out] displacements in mm,
  * ordered node by node (ux, uy, uz).  Returns TFIT_OK, TFIT_CLAMPED,
- * TFIT_ERR_INPUT (outputs zeroed), TFIT_ERR_ARG or TFIT_ERR_FAMILY. */
+ * TFIT_ERR_INPUT (outputs zeroed), TFIT_ERR_ARG (a NULL argument, or a model
+ * whose dims or coef is NULL) or TFIT_ERR_FAMILY.  out must hold
+ * 3 * TFIT_NAME_N_OUT floats of the header the model came from; a file
+ * compiled against another version of that header does not link
+ * (docs/header-format.md §2). */
 tfit_status tfit_displacements(const tfit_model *m, const float force[3], float *out);
 
 /* Haptic impedance: contact-site displacement disp[3] in mm -> force[3] in N

@@ -40,7 +40,7 @@ extern "C" {
 #endif
 
 /* Version of the Q31 table layout and integer operation order. */
-#define TFIT_Q31_API_VERSION 2
+#define TFIT_Q31_API_VERSION 3
 
 /* Words of a Q31 input map at the start of q[]: x0 (3), W (9), H (1). */
 #define TFIT_Q31_MAP_WORDS 13
@@ -53,10 +53,16 @@ typedef struct tfit_model_q31 {
     uint32_t n_words;         /* entries in q[]: 13 + 3 n_out (T(p) + 1) */
     const int32_t *q;         /* input map, then per row: shift, T(p) coefficients */
     const uint32_t *node_ids; /* n_out scene node numbers */
-    uint32_t crc32;           /* CRC-32 over the fields above and the two tables */
+    /* q + n_words and node_ids + n_out: a damaged pointer no longer matches
+     * its end, and tfit_model_check_q31() finds it without reading through it
+     * (the CRC cannot cover addresses). */
+    const int32_t *q_end;
+    const uint32_t *node_ids_end;
+    uint32_t crc32; /* CRC-32 over the scalar fields and the two tables */
 } tfit_model_q31;
 
-/* Version, family, sizes, CRC-32 and the range proof (every shift in its
+/* Pointers (NULL: TFIT_ERR_ARG; not matching their ends: TFIT_ERR_CORRUPT),
+ * version, family, sizes, CRC-32 and the range proof (every shift in its
  * documented range, every coefficient row small enough that no
  * intermediate overflows).  Call once at boot. */
 tfit_status tfit_model_check_q31(const tfit_model_q31 *m);

@@ -158,10 +158,108 @@ static int range_ok(const tfit_model *m)
     }
 }
 
+/* Each table pointer against its end pointer, as integers (no pointer
+ * arithmetic on a possibly damaged value): a single flipped bit in either
+ * breaks the equality. */
+static int ends_match(const tfit_model *m)
+{
+    return (uintptr_t)m->dims_end - (uintptr_t)m->dims == (uintptr_t)m->n_dims * 4u &&
+           (uintptr_t)m->coef_end - (uintptr_t)m->coef == (uintptr_t)m->n_coef * 4u &&
+           (uintptr_t)m->node_ids_end - (uintptr_t)m->node_ids == (uintptr_t)m->n_out * 4u;
+}
+
+/* Output point j of m at the projected input g, into out[3]: the family's
+ * own evaluator on a view of the model that holds point j alone (its rows
+ * for nodal and contact, its row of U for modal, its coordinates for
+ * zhou2017; the rest of the table is where the evaluator expects it).
+ * Always the C evaluators: the degree-1 assembly has nothing a compiler
+ * could contract. */
+static void point(const tfit_model *m, const float g[3], uint32_t keep, uint32_t j, float out[3])
+{
+    tfit_model v; /* the fields evaluation reads, one by one: a struct copy
+                   * would be a memcpy call, which a freestanding library
+                   * cannot make */
+    const uint32_t after = m->n_out - 1u - j; /* output points after j */
+    v.family = m->family;
+    v.n_out = 1u;
+    v.n_dims = m->n_dims;
+    v.n_coef = m->n_coef;
+    v.dims = m->dims;
+    v.coef = m->coef;
+    v.node_ids = m->node_ids;
+    switch (m->family) {
+    case TFIT_FAMILY_MODAL:
+        v.n_coef = m->n_coef - 3u * m->dims[1] * after;
+        tfit_eval_modal(&v, g, keep, out);
+        break;
+    case TFIT_FAMILY_ZHOU2017:
+        v.n_coef = m->n_coef - 2u * after;
+        tfit_eval_zhou2017(&v, g, out);
+        for (uint32_t i = 0u; i < 3u; ++i) {
+            out[i] = tfit_masked(out[i], keep);
+        }
+        break;
+    default: /* nodal, contact: the rows at coef + 12 + 3 T j */
+        v.coef = m->coef + 3u * TFIT_TERMS(m->dims[0]) * j;
+        tfit_eval_nodal(&v, g, keep, out);
+        break;
+    }
+}
+
+/* Far input k of the self-test (header-format.md §8), the host's too: a
+ * linear congruential sequence gives three signed 24-bit integers, exact as
+ * floats, times 2^77 (exact): beyond 2^64, so §4 scales them, and beyond any
+ * envelope, so the Newton step runs. */
+static uint32_t far_input(uint32_t state, float in[3])
+{
+    for (uint32_t i = 0u; i < 3u; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const int32_t v = (int32_t)(state >> 8) - 0x800000; /* [-2^23, 2^23) */
+        in[i] = (float)v * 0x1p77f;
+    }
+    return state;
+}
+
+/* The self-test: at each carried input the status and every output, point
+ * by point (no buffer of 3 n_out floats), and at the far inputs the
+ * projected g, each folded into a CRC-32 that must equal the host's. */
+static tfit_status self_test(const tfit_model *m)
+{
+    float in[3], g[3], out[3];
+    uint32_t bad, crc = 0xffffffffu;
+    for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_INPUTS; ++k) {
+        for (uint32_t i = 0u; i < 3u; ++i) {
+            in[i] = tfit_float(m->check[3u * k + i]);
+        }
+        const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+        crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u)); /* the status */
+        for (uint32_t j = 0u; j < m->n_out; ++j) {
+            point(m, g, ~bad, j, out);
+            for (uint32_t i = 0u; i < 3u; ++i) {
+                crc = tfit_crc32_word(crc, tfit_bits(out[i]));
+            }
+        }
+    }
+    uint32_t state = 1u, far = 0xffffffffu;
+    for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_FAR; ++k) {
+        state = far_input(state, in);
+        (void)tfit_input_map(m->coef, in, g, &bad);
+        for (uint32_t i = 0u; i < 3u; ++i) {
+            far = tfit_crc32_word(far, tfit_bits(g[i]));
+        }
+    }
+    const uint32_t *want = m->check + 3u * TFIT_CHECK_INPUTS;
+    return ((crc ^ 0xffffffffu) == want[0] && (far ^ 0xffffffffu) == want[1]) ? TFIT_OK
+                                                                              : TFIT_ERR_ARITH;
+}
+
 tfit_status tfit_model_check(const tfit_model *m)
 {
     if (m == 0 || m->dims == 0 || m->coef == 0 || m->node_ids == 0) {
         return TFIT_ERR_ARG;
+    }
+    if (!ends_match(m)) {
+        return TFIT_ERR_CORRUPT;
     }
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
@@ -177,5 +275,8 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (tfit_model_crc32(m) != m->crc32) {
         return TFIT_ERR_CORRUPT;
     }
-    return range_ok(m) ? TFIT_OK : TFIT_ERR_RANGE;
+    if (!range_ok(m)) {
+        return TFIT_ERR_RANGE;
+    }
+    return self_test(m);
 }

@@ -1,7 +1,10 @@
 /*
  * tfit_crc32.c — CRC-32 of a model, identical to zlib's crc32() over the
  * model serialised as little-endian 32-bit words:
- *   api_version, family, n_out, n_dims, n_coef, dims[], coef[] (bits), node_ids[].
+ *   api_version, family, n_out, n_dims, n_coef, dims[], coef[] (bits),
+ *   node_ids[], check[] (the self-test vector).
+ * The table pointers are addresses, which the host cannot know: each is
+ * checked against its end pointer instead (tfit_check.c).
  * The word step is tfit_crc32_word() (tfit_crc_word.c).
  */
 #include "tfit_internal.h"
@@ -30,5 +33,6 @@ uint32_t tfit_model_crc32(const tfit_model *m)
         crc = tfit_crc32_word(crc, tfit_bits(m->coef[i]));
     }
     crc = crc_words(crc, m->node_ids, m->n_out);
+    crc = crc_words(crc, m->check, TFIT_CHECK_WORDS);
     return crc ^ 0xffffffffu;
 }

@@ -45,42 +45,74 @@ static tfit_status evaluate(const tfit_model *m, const float in[3], float *out)
     return status_of(clamped, bad);
 }
 
-/* Contact p = 1, the exact degree for linear elasticity and the model the
- * haptic loop calls every tick: the same operations as evaluate() (the
- * projection, then tfit_eval_nodal's degree-1 rows for one output point),
- * without the family dispatch, the nodal set-up and the loop.  This is what
- * brings the contact-force call within 2 us on a 168 MHz M4F
- * (docs/firmware.md §5). */
-static tfit_status contact_degree1(const tfit_model *m, const float disp[3], float force[3])
+/* Degree 1 (nodal and contact p = 1: the exact degree for linear
+ * elasticity, and the models the haptic loop calls every tick): the same
+ * operations as evaluate() — the projection, then the rows of §5.2 with
+ * phi = {1, g0, g1, g2} = g, and the output mask — without the family
+ * dispatch and the basis.  On Cortex-M4F/M7 in assembly
+ * (tfit_degree1_armv7em.c), elsewhere in C; docs/firmware.md §5. */
+static tfit_status degree1(const tfit_model *m, const float in[3], float *out)
 {
+#if TFIT_DEGREE1_ASM
+    return tfit_degree1_asm(m, in, out);
+#else
     float g[3];
     uint32_t bad;
-    const uint32_t clamped = tfit_input_map(m->coef, disp, g, &bad);
-    tfit_rows_degree1(m->coef + TFIT_INPUT_MAP_FLOATS, g, 1u, ~bad, force);
+    const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+    tfit_rows_degree1(m->coef + TFIT_INPUT_MAP_FLOATS, g, m->n_out, ~bad, out);
     return status_of(clamped, bad);
+#endif
 }
 
-tfit_status tfit_displacements(const tfit_model *m, const float force[3], float *out)
+/* The contact family's one output point. */
+static tfit_status contact_degree1(const tfit_model *m, const float disp[3], float force[3])
 {
-    if (m == 0 || force == 0 || out == 0) {
-        return TFIT_ERR_ARG;
-    }
+#if TFIT_DEGREE1_ASM
+    return tfit_degree1_one_asm(m, disp, force);
+#else
+    return degree1(m, disp, force);
+#endif
+}
+
+/* The forward families other than nodal p = 1. */
+static tfit_status forward_general(const tfit_model *m, const float force[3], float *out)
+{
     if (!is_forward(m->family)) {
         return TFIT_ERR_FAMILY;
     }
     return evaluate(m, force, out);
 }
 
+tfit_status tfit_displacements(const tfit_model *m, const float force[3], float *out)
+{
+    /* bitwise tests: the degree-1 path falls through every conditional
+     * branch (GCC 12), a taken branch costing the M4 up to 4 cycles.  A
+     * model with NULL tables is an argument error, as in the Q31 API. */
+    if ((m == 0) | (force == 0) | (out == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims[0] == 1u) & (m->family == TFIT_FAMILY_NODAL)) {
+        return degree1(m, force, out);
+    }
+    return forward_general(m, force, out);
+}
+
 tfit_status tfit_contact_force(const tfit_model *m, const float disp[3], float force[3])
 {
-    if (m == 0 || disp == 0 || force == 0) {
+    if ((m == 0) | (disp == 0) | (force == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
         return TFIT_ERR_ARG;
     }
     if (m->family != TFIT_FAMILY_CONTACT) {
         return TFIT_ERR_FAMILY;
     }
-    if (m->dims[0] == 1u) {
-        return contact_degree1(m, disp, force);
+    if (m->dims[0] != 1u) {
+        return evaluate(m, disp, force);
     }
-    return evaluate(m, disp, force);
+    return contact_degree1(m, disp, force);
 }

@@ -13,6 +13,23 @@
 
 #include "tfit.h"
 
+/* Bit-exactness needs a*b + c rounded twice, as written: no contraction into
+ * a fused multiply-add, whatever the caller's flags (GCC's default
+ * -std=gnu11 mode contracts on any FPU with FMA, Cortex-M4F included).  GCC
+ * honours its optimize pragma even under -ffp-contract=fast; Clang and other
+ * C99 compilers honour the standard pragma (GCC does not, and warns).
+ * tfit_model_check() proves the result on the device (TFIT_ERR_ARITH). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#else
+#pragma STDC FP_CONTRACT OFF
+#endif
+/* -ffast-math reassociates and drops NaN and signed-zero handling: no pragma
+ * undoes all of it. */
+#if defined(__FAST_MATH__)
+#error "tfit: -ffast-math changes float results; build the library without it (docs/firmware.md §2)"
+#endif
+
 /* Bit-exactness needs float expressions evaluated in float (no x87 excess
  * precision); see GUIDE §4 and docs/header-format.md.  16 (ISO/IEC TS
  * 18661-3: only _Float16 is widened, to float) is as good as 0 for us. */
@@ -113,9 +130,9 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
  * {1, g0, g1, g2} is g itself (phi_k = g_v * 1.0f is exact), so g is used
  * directly.  One output point per iteration: the three rows of a node share
  * each g_v and keep three independent sums in flight.  The output mask
- * (header-format.md §5.5) is applied as each word is stored.  Inline: the
- * contact fast path (tfit_eval.c) calls it with n_out = 1, where the loop
- * disappears. */
+ * (header-format.md §5.5) is applied as each word is stored.  The portable
+ * degree-1 path of tfit_eval.c; on Cortex-M4F/M7 the assembly of
+ * tfit_degree1_armv7em.c does the same operations. */
 static inline void tfit_rows_degree1(const float *c, const float g[3], uint32_t n_out,
                                      uint32_t keep, float *out)
 {
@@ -137,6 +154,21 @@ static inline void tfit_rows_degree1(const float *c, const float g[3], uint32_t 
         out += 3;
     }
 }
+
+/* Degree-1 models on Armv7E-M with a single-precision FPU (Cortex-M4F, M7)
+ * run in assembly (tfit_degree1_armv7em.c); -DTFIT_PORTABLE selects the C
+ * path everywhere, and it is the path on every other target. */
+#if defined(__ARM_ARCH_7EM__) && defined(__thumb2__) && defined(__ARM_FP) &&                     \
+    ((__ARM_FP & 4) != 0) && !defined(TFIT_PORTABLE)
+#define TFIT_DEGREE1_ASM 1
+/* The whole evaluation of a degree-1 model: projection (§4), rows (§5.2) and
+ * output mask (§5.5); returns the status.  _one: exactly one output point
+ * (the contact family), without the registers the pair loop needs. */
+tfit_status tfit_degree1_asm(const tfit_model *m, const float in[3], float *out);
+tfit_status tfit_degree1_one_asm(const tfit_model *m, const float in[3], float *out);
+#else
+#define TFIT_DEGREE1_ASM 0
+#endif
 
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
  * mask when the input was projected; *bad is all ones when the input held a

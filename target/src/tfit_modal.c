@@ -17,7 +17,10 @@ void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float
     const uint32_t r = m->dims[1];
     const uint32_t n_terms = TFIT_TERMS(p);
     const float *amp = m->coef + TFIT_INPUT_MAP_FLOATS;
-    const float *u = amp + r * n_terms;
+    /* U ends the table (amp + r T for a whole model): counted from the end,
+     * a view of output point j alone (n_out = 1, n_coef shortened) finds
+     * U's row j, as tfit_model_check's self-test needs */
+    const float *u = m->coef + (m->n_coef - 3u * r * m->n_out);
 
     tfit_basis(p, g, phi);
     for (uint32_t k = 0u; k < r; ++k) {

@@ -7,13 +7,13 @@
  * (node-major: ux, uy, uz of node 0, then node 1, ...), T = C(p+3, 3).
  * out[o] = C[o][0] + C[o][1] phi1 + ... + C[o][T-1] phi_{T-1}, left to right.
  *
- * Speed without touching that order (docs/firmware.md, "Cycle budget"): one
- * output point per iteration, so the three rows of a node share each basis
- * value and keep three independent sums in flight; for p = 1 (the exact
- * degree for linear elasticity) the basis stays in registers and the row is
- * written out (tfit_rows_degree1, tfit_internal.h).  The output mask
- * (header-format.md §5.5) is applied as each word is stored instead of in a
- * second pass over the outputs.
+ * Speed without touching that order (docs/firmware.md §5): one output
+ * point per iteration, so the three rows of a node share each basis value
+ * and keep three independent sums in flight.  p = 1 (the exact degree for
+ * linear elasticity) never comes here: tfit_eval.c evaluates it directly
+ * (tfit_rows_degree1, or the assembly of tfit_degree1_armv7em.c).  The
+ * output mask (header-format.md §5.5) is applied as each word is stored
+ * instead of in a second pass over the outputs.
  */
 #include "tfit_internal.h"
 
@@ -45,10 +45,6 @@ void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float
     const uint32_t p = m->dims[0];
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
 
-    if (p == 1u) {
-        tfit_rows_degree1(c, g, m->n_out, keep, out);
-        return;
-    }
     tfit_basis(p, g, phi);
     nodes_any_degree(c, phi, TFIT_TERMS(p), m->n_out, keep, out);
 }

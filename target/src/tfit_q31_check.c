@@ -78,10 +78,20 @@ static int rows_ok(const tfit_model_q31 *m)
     return 1;
 }
 
+/* Each table pointer against its end, as integers (tfit_check.c). */
+static int ends_match(const tfit_model_q31 *m)
+{
+    return (uintptr_t)m->q_end - (uintptr_t)m->q == (uintptr_t)m->n_words * 4u &&
+           (uintptr_t)m->node_ids_end - (uintptr_t)m->node_ids == (uintptr_t)m->n_out * 4u;
+}
+
 tfit_status tfit_model_check_q31(const tfit_model_q31 *m)
 {
     if (m == 0 || m->q == 0 || m->node_ids == 0) {
         return TFIT_ERR_ARG;
+    }
+    if (!ends_match(m)) {
+        return TFIT_ERR_CORRUPT;
     }
     if (m->api_version != (uint32_t)TFIT_Q31_API_VERSION) {
         return TFIT_ERR_VERSION;

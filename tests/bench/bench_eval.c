@@ -5,7 +5,8 @@
  * through the model's in-envelope golden inputs.
  *
  *   bench_eval time [CALLS]   one line per model:
- *       float|q31 SET n_out median_ns p99_ns max_ns
+ *       float|q31 SET n_out median_ns p99_ns max_ns n_coef
+ *   (n_coef: coefficients of the float table, words of the Q31 one)
  *   bench_eval count CALLS    the same calls without timing, one callgrind
  *                             dump per model (instructions per call)
  *
@@ -46,15 +47,15 @@ static double timer_cost(double *t, long calls)
     return t[calls / 2];
 }
 
-static void report(const char *kind, size_t set, uint32_t n_out, double *t, long calls,
-                   double overhead)
+static void report(const char *kind, size_t set, uint32_t n_out, uint32_t n_coef, double *t,
+                   long calls, double overhead)
 {
     for (long i = 0; i < calls; ++i) {
         t[i] = t[i] - overhead;
     }
     qsort(t, (size_t)calls, sizeof *t, by_value);
-    printf("%s %zu %u %.1f %.1f %.1f\n", kind, set, n_out, t[calls / 2], t[calls * 99 / 100],
-           t[calls - 1]);
+    printf("%s %zu %u %.1f %.1f %.1f %u\n", kind, set, n_out, t[calls / 2], t[calls * 99 / 100],
+           t[calls - 1], n_coef);
 }
 
 static void float_models(int timed, long calls, double *t, double overhead)
@@ -81,7 +82,7 @@ static void float_models(int timed, long calls, double *t, double overhead)
             }
         }
         if (timed) {
-            report("float", s, m->n_out, t, calls, overhead);
+            report("float", s, m->n_out, m->n_coef, t, calls, overhead);
         } else {
             char label[32];
             snprintf(label, sizeof label, "float %zu", s);
@@ -114,7 +115,7 @@ static void q31_models(int timed, long calls, double *t, double overhead)
             }
         }
         if (timed) {
-            report("q31", s, m->n_out, t, calls, overhead);
+            report("q31", s, m->n_out, m->n_words, t, calls, overhead);
         } else {
             char label[32];
             snprintf(label, sizeof label, "q31 %zu", s);

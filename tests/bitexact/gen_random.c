@@ -2,7 +2,8 @@
  * gen_random.c — writes random models with their golden vectors.
  *
  *   gen_random bundle N SEED FILE   N random models into a bundle (bundle.h)
- *   gen_random header SEED FILE.h   two small models per family through the
+ *   gen_random header SEED FILE.h   two small models per family, and a contact
+ *                                   model of degree 1, through the
  *                                   real header emitter (FILE.h + FILE_golden.h)
  *
  * Expected outputs come from the host reference evaluator (ref_eval.c).
@@ -53,7 +54,15 @@ static int write_model(FILE *f, const tf_model *m, uint64_t seed)
     for (uint32_t i = 0; i < m->n_out; ++i) {
         put(f, m->node_ids[i]);
     }
-    put(f, tf_model_crc32(m));
+    uint32_t check[TFIT_CHECK_WORDS];
+    if (tf_check_vector(m, check) != 0) {
+        free(out);
+        return -1;
+    }
+    for (int i = 0; i < TFIT_CHECK_WORDS; ++i) {
+        put(f, check[i]);
+    }
+    put(f, tf_model_crc32_checked(m, check));
     put(f, (uint32_t)n_vec);
     for (size_t v = 0; v < n_vec; ++v) {
         for (int i = 0; i < 3; ++i) {
@@ -111,11 +120,27 @@ static int bundle(long n, uint64_t seed, const char *path)
     return 0;
 }
 
+/* A random contact model of degree 1 (the haptic loop's; its fast path):
+ * drawn until the degree is 1, from its own sequence so that the other
+ * models do not change. */
+static tf_model *contact_degree1(uint64_t seed, const char *name)
+{
+    tf_rng r = {seed ^ 0xc0ffeeu};
+    for (int tries = 0; tries < 1000; ++tries) {
+        tf_model *m = tf_random_model(&r, name, TFIT_FAMILY_CONTACT, 1);
+        if (m == NULL || m->dims[0] == 1) {
+            return m;
+        }
+        tf_model_free(m);
+    }
+    return NULL;
+}
+
 static int header(uint64_t seed, const char *path)
 {
     static const char *const names[] = {"nodal_a", "nodal_b", "modal_a", "modal_b",
                                         "zhou_a", "zhou_b", "contact_a", "contact_b"};
-    tf_model *models[8];
+    tf_model *models[9];
     tf_rng r = {seed};
     char err[512];
     for (int i = 0; i < 8; ++i) {
@@ -124,10 +149,14 @@ static int header(uint64_t seed, const char *path)
             return 1;
         }
     }
+    models[8] = contact_degree1(seed, "contact_p1");
+    if (models[8] == NULL) {
+        return 1;
+    }
     const tf_emit_info info = {.source = "random test models (tests/bitexact/gen_random.c)",
                                .golden_seed = seed};
-    int rc = tf_emit_header(path, models, 8, &info, err, sizeof err);
-    for (int i = 0; i < 8; ++i) {
+    int rc = tf_emit_header(path, models, 9, &info, err, sizeof err);
+    for (int i = 0; i < 9; ++i) {
         tf_model_free(models[i]);
     }
     if (rc != 0) {

@@ -79,6 +79,12 @@ int main(int argc, char **argv)
         m.dims = words(m.n_dims);
         m.coef = (const float *)words(m.n_coef);
         m.node_ids = words(m.n_out);
+        m.dims_end = m.dims + m.n_dims;
+        m.coef_end = m.coef + m.n_coef;
+        m.node_ids_end = m.node_ids + m.n_out;
+        for (int k = 0; k < TFIT_CHECK_WORDS; ++k) {
+            m.check[k] = get();
+        }
         m.crc32 = get();
         tfit_golden g = {.model = &m, .n_vec = get()};
         g.in = words(3 * g.n_vec);

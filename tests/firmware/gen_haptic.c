@@ -17,7 +17,8 @@
  *
  * `gen_haptic shapes FILE.h` writes shapes.h instead: small models of every
  * family at the edges of the loop structure (p = 0, 1, 2, 5, 8; r = 1 and
- * 48; zhou2017 orders with zeros), so that the cycle model's check
+ * 48; zhou2017 orders with zeros; p = 1 with n_out = 1, 16, 30, 33), so
+ * that the golden vectors and the cycle model's check
  * (make check-cycles) sees every path through the compiled evaluator.
  *
  * usage: gen_haptic FILE.h | gen_haptic shapes FILE.h
@@ -136,6 +137,12 @@ static int shapes(const char *path)
         {"modal_p0_r1", TFIT_FAMILY_MODAL, 2, {0, 1}, 2},
         {"modal_p2_r5", TFIT_FAMILY_MODAL, 3, {2, 5}, 2},
         {"modal_p1_r48", TFIT_FAMILY_MODAL, 2, {1, 48}, 2},
+        /* degree 1 (tfit_degree1_armv7em.c): n_out / 16 iterations of the
+         * 8-pair loop, (n_out / 2) mod 8 single pairs, an odd point */
+        {"nodal_p1_n1", TFIT_FAMILY_NODAL, 1, {1, 0}, 1},
+        {"nodal_p1_n16", TFIT_FAMILY_NODAL, 16, {1, 0}, 1},
+        {"nodal_p1_n30", TFIT_FAMILY_NODAL, 30, {1, 0}, 1},
+        {"nodal_p1_n33", TFIT_FAMILY_NODAL, 33, {1, 0}, 1},
     };
     enum { N_LIST = sizeof list / sizeof list[0] };
     tf_model *models[N_LIST + 1] = {NULL};

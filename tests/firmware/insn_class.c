@@ -149,7 +149,8 @@ int tf_is_conditional_branch(const char *mnemonic)
 {
     char b[32];
     base_mnemonic(mnemonic, b, sizeof b);
-    return strlen(b) == 3 && b[0] == 'b' && is_cond(b + 1) && strcmp(b, "bal") != 0;
+    return (strlen(b) == 3 && b[0] == 'b' && is_cond(b + 1) && strcmp(b, "bal") != 0) ||
+           strcmp(b, "cbz") == 0 || strcmp(b, "cbnz") == 0;
 }
 
 int tf_parse_objdump_line(const char *line, unsigned long *addr, char *mn, size_t mn_len,

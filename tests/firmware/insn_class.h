@@ -14,7 +14,8 @@
  * number of registers of a multiple transfer, else 0. */
 int tf_classify_insn(const char *mnemonic, const char *operands, int *words);
 
-/* True for a conditional branch mnemonic (beq, bne.n, ...). */
+/* True for a conditional branch mnemonic (beq, bne.n, cbz, cbnz, ...): the
+ * branches that may fall through (TF_INSN_NBRANCH when they do). */
 int tf_is_conditional_branch(const char *mnemonic);
 
 /* Splits "   3c:\tvmul.f32\ts15, s15, s14" (objdump -d --no-show-raw-insn).

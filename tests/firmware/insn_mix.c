@@ -7,7 +7,7 @@
  * that their back edge is conditional, while an unconditional backward
  * branch is a jump to shared code such as an epilogue) and the code outside
  * them.  A backward branch over a return (pop {pc}, bx lr) is a jump to a
- * shared epilogue, not a loop.
+ * shared epilogue (or to a tail call, `b.w <other function>`), not a loop.
  * For each region it prints the instructions that belong to it and to no
  * loop nested inside, by cost class of the Cortex-M technical reference
  * manuals (host/cost/cycles.h, docs/firmware.md):
@@ -146,6 +146,11 @@ int main(int argc, char **argv)
             in.cls = tf_classify_insn(mn, ops, &in.words);
             in.returns = in.cls == TF_INSN_LDM_PC || (strncmp(mn, "bx", 2) == 0 && strncmp(ops, "lr", 2) == 0);
             const char *lt = strchr(ops, '<');
+            /* b.w <other_function>: a tail call leaves the function like a return */
+            if ((strcmp(mn, "b") == 0 || strcmp(mn, "b.w") == 0 || strcmp(mn, "b.n") == 0) &&
+                lt != NULL && strncmp(lt + 1, func, strlen(func)) != 0) {
+                in.returns = 1;
+            }
             if (tf_is_conditional_branch(mn) && lt != NULL &&
                 strncmp(lt + 1, func, strlen(func)) == 0 &&
                 (lt[1 + strlen(func)] == '+' || lt[1 + strlen(func)] == '>')) {

@@ -9,6 +9,8 @@
  * (in_asm lists the instructions of every translated block, exec logs every
  * execution of a block, nochain makes QEMU log each one).  Every instruction
  * of every executed block is classified as in insn_mix.c (host/cost/cycles.h).
+ * A conditional branch ends its block; it was taken (class branch) unless
+ * the next block executed starts at the instruction after it (nbranch).
  *
  * An evaluation starts when a block at the entry of tfit_displacements,
  * tfit_contact_force (or their _q31 forms) executes and ends when control is
@@ -34,6 +36,8 @@
 typedef struct site {
     signed char cls; /* -1: unknown */
     unsigned char words;
+    unsigned char cond; /* a conditional branch (may fall through) */
+    unsigned char size; /* bytes, from the next instruction's address (0: unknown) */
 } site;
 
 static site *sites; /* by address / 2 (Thumb), both windows */
@@ -73,7 +77,8 @@ static void load_disassembly(const char *path)
         sites[i].cls = -1;
     }
     char line[512], name[64];
-    unsigned long addr;
+    unsigned long addr, prev_addr = 0;
+    site *prev = NULL;
     int cur = -1;
     while (fgets(line, sizeof line, f) != NULL) {
         if (sscanf(line, "%lx <%63[^>]>:", &addr, name) == 2) {
@@ -82,6 +87,7 @@ static void load_disassembly(const char *path)
                 snprintf(funcs[cur], sizeof funcs[cur], "%s", name);
                 func_addr[cur] = addr;
             }
+            prev = NULL;
             continue;
         }
         char mn[32], ops[256];
@@ -89,10 +95,17 @@ static void load_disassembly(const char *path)
             continue;
         }
         site *s = at(addr);
+        if (prev != NULL && addr > prev_addr && addr - prev_addr <= 4) {
+            prev->size = (unsigned char)(addr - prev_addr);
+        }
+        prev = NULL;
         if (s != NULL && mn[0] != '.') {
             int words;
             s->cls = (signed char)tf_classify_insn(mn, ops, &words);
             s->words = (unsigned char)words;
+            s->cond = (unsigned char)tf_is_conditional_branch(mn);
+            prev = s;
+            prev_addr = addr;
         }
     }
     fclose(f);
@@ -194,6 +207,7 @@ int main(int argc, char **argv)
     int in_call = 0;
     const char *entry = "?";
     tf_insn_mix mix;
+    unsigned long fallthrough = 0; /* of a conditional branch ending the last block, or 0 */
     while (fgets(line, sizeof line, f) != NULL) {
         unsigned long a, pc;
         if (strncmp(line, "IN:", 3) == 0) {
@@ -212,6 +226,10 @@ int main(int argc, char **argv)
         filling = NULL;
         if (sscanf(line, "Trace %*d: %*s [%*x/%lx/", &pc) != 1) {
             continue;
+        }
+        if (fallthrough != 0) { /* the last block's conditional branch, now resolved */
+            tf_insn_mix_add(&mix, pc == fallthrough ? TF_INSN_NBRANCH : TF_INSN_BRANCH, 0);
+            fallthrough = 0;
         }
         const char *fn = func_of(pc);
         int entry_of_check = 0;
@@ -253,6 +271,15 @@ int main(int argc, char **argv)
                 fprintf(stderr, "trace_mix: no instruction at 0x%lx in the disassembly\n",
                         t->addr[i]);
                 return 2;
+            }
+            if (i == t->n - 1 && s->cond) {
+                if (s->size == 0) {
+                    fprintf(stderr, "trace_mix: size of the branch at 0x%lx unknown\n",
+                            t->addr[i]);
+                    return 2;
+                }
+                fallthrough = t->addr[i] + s->size;
+                continue;
             }
             tf_insn_mix_add(&mix, s->cls, s->words);
         }

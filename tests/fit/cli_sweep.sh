@@ -26,8 +26,11 @@ awk -F, '$3 == "nodal p=1" && $5 == "float32" && $16 == 1 && $13 < 0.001 { ok = 
 chosen() { sed -n 's/.*Chosen among every candidate.*: \(.*\) (.*us) and the contact.*/\1/p' "$1"; }
 expect 0 "budget 60 us on the M4F" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --budget-us 60
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "60 us chose '$(chosen "$tmp/w/b.h")', not nodal p=1"
-expect 0 "budget 40 us on the M4F" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --budget-us 40
-[ "$(chosen "$tmp/w/b.h")" = "modal p=1 r=1" ] || bad "40 us chose '$(chosen "$tmp/w/b.h")'"
+# on the M7 nodal p=0 is cheaper than nodal p=1 (6.2 against 7.1 us): a
+# budget between them buys the mean shape
+expect 0 "budget 7 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" \
+    --budget-us 7 --mcu cortex-m7@480
+[ "$(chosen "$tmp/w/b.h")" = "nodal p=0" ] || bad "M7 7 us chose '$(chosen "$tmp/w/b.h")'"
 expect 0 "error 10 um, cheapest" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --max-error-mm 0.01
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "10 um chose '$(chosen "$tmp/w/b.h")'"
 expect 0 "budget 15 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" \
@@ -36,7 +39,7 @@ expect 0 "budget 15 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o
 rm -f "$tmp"/w/*
 
 expect 2 "a budget nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 20
-grep -q "Fastest: nodal p=0" "$tmp/err" && grep -q "Most accurate: nodal p=1" "$tmp/err" ||
+grep -q "Fastest: nodal p=1" "$tmp/err" && grep -q "Most accurate: nodal p=1" "$tmp/err" ||
     bad "the refusal does not state the best on each axis: $(cat "$tmp/err")"
 expect 2 "an error nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --max-error-mm 1e-12
 expect 2 "an unknown core" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 100 \

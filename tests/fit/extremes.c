@@ -19,6 +19,7 @@
 #include "fitting/pipeline.h"
 #include "fitting/loadcases.h"
 #include "model/ref_eval.h"
+#include "scene/scene.h"
 
 #define FRESH 200
 
@@ -32,26 +33,29 @@ static int check(const char *path, const material *mat)
     snprintf(nu, sizeof nu, "material.nu=%s", mat->nu);
     snprintf(young, sizeof young, "material.E=%s", mat->young);
     const char *sets[] = {nu, young};
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_scene *s = tf_scene_load(path, sets, 2, err, sizeof err);
-    tf_solver *solver = s ? tf_solver_new(s, err, sizeof err) : NULL;
+    const tf_problem *p = s ? &s->problem : NULL;
+    tf_solver *solver = s ? tf_solver_create(p, NULL, &ctx) : NULL;
     tf_fit_plan plan;
     tf_fit_outcome o;
     if (solver == NULL) {
-        printf("nu %s E %s: %s\n", mat->nu, mat->young, err);
+        printf("nu %s E %s: %s\n", mat->nu, mat->young, s ? ctx.err : err);
         return 1;
     }
     tf_fit_plan_defaults(&plan);
-    if (tf_fit_run(s, solver, &plan, &o, err, sizeof err) != 0) {
-        printf("nu %s E %s: fit failed: %s\n", mat->nu, mat->young, err);
+    if (tf_fit_run(p, solver, &plan, &o) != 0) {
+        printf("nu %s E %s: fit failed: %s\n", mat->nu, mat->young, ctx.err);
         return 1;
     }
     const tf_model *fwd = o.fam[TFIT_FAMILY_NODAL].model, *con = o.fam[TFIT_FAMILY_CONTACT].model;
     const size_t dofs = 3 * tf_solver_node_count(solver);
     double train[6][3], fresh[FRESH][3], *u = malloc(FRESH * dofs * sizeof *u);
     float *out = malloc(3 * fwd->n_out * sizeof *out);
-    tf_loadcases(s->envelope_centre, s->envelope_radius, 6, FRESH, 0xf4e5, train, fresh);
+    tf_loadcases(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
     tf_round_to_float(fresh, FRESH);
-    int bad = tf_solver_solve(solver, 0, &fresh[0][0], FRESH, u, err, sizeof err) != 0;
+    int bad = tf_solver_solve(solver, 0, (const double(*)[3])fresh, FRESH, NULL, u) != 0;
     double fmax_err = 0, big = 0, crel = 0;
     for (size_t i = 0; !bad && i < FRESH; ++i) {
         const double *ui = u + i * dofs;
@@ -64,7 +68,7 @@ static int check(const char *path, const material *mat)
                 big = fmax(big, fabs(truth));
             }
         }
-        const uint32_t c = s->contacts[0].node;
+        const uint32_t c = p->contacts[0].node;
         const float d[3] = {(float)ui[3 * c], (float)ui[3 * c + 1], (float)ui[3 * c + 2]};
         float fc[3];
         tf_ref_eval(con, d, fc, NULL);
@@ -82,7 +86,7 @@ static int check(const char *path, const material *mat)
     free(u);
     free(out);
     tf_fit_outcome_free(&o);
-    tf_solver_free(solver);
+    tf_solver_destroy(solver);
     tf_scene_free(s);
     return !ok;
 }

@@ -38,23 +38,32 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL\n");
         return 2;
     }
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
     tf_scene *s = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
-    tf_solver *solver = s ? tf_solver_new(s, err, sizeof err) : NULL;
-    if (solver == NULL) {
+    if (s == NULL) {
         fprintf(stderr, "heldout_check: %s\n", err);
         return 1;
     }
-    const size_t n = s->fit.heldout, n_train = s->fit.train, dofs = 3 * tf_solver_node_count(solver);
+    const tf_problem *p = &s->problem;
+    tf_solver *solver = tf_solver_create(p, NULL, &ctx);
+    if (solver == NULL) {
+        fprintf(stderr, "heldout_check: %s\n", ctx.err);
+        return 1;
+    }
+    const size_t n = s->fit.n_heldout, n_train = s->fit.n_train;
+    const size_t dofs = 3 * tf_solver_node_count(solver);
     double(*train)[3] = malloc(n_train * sizeof *train), (*held)[3] = malloc(n * sizeof *held);
     double *u = malloc(n * dofs * sizeof *u);
-    tf_loadcases(s->envelope_centre, s->envelope_radius, n_train, n, s->fit.seed, train, held);
+    tf_loadcases(p->envelope.centre, p->envelope.radius, n_train, n, s->fit.seed, train, held);
     for (size_t i = 0; i < n; ++i) { /* the firmware's input is a float */
         for (int k = 0; k < 3; ++k) {
             held[i][k] = (double)(float)held[i][k];
         }
     }
-    if (tf_solver_solve(solver, s->fit.contact, &held[0][0], n, u, err, sizeof err) != 0) {
-        fprintf(stderr, "heldout_check: %s\n", err);
+    if (tf_solver_solve(solver, s->fit.contact, (const double(*)[3])held, n, NULL, u) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", ctx.err);
         return 1;
     }
     const tfit_model *fwd = &FORWARD, *con = &CONTACT;
@@ -109,7 +118,7 @@ int main(int argc, char **argv)
     free(held);
     free(u);
     free(out);
-    tf_solver_free(solver);
+    tf_solver_destroy(solver);
     tf_scene_free(s);
     return ok ? 0 : 1;
 }

@@ -24,8 +24,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_time.h"
 #include "numerics/nist_fit.h"
 
 #define DIR "../shared/reference/nist-strd"
@@ -122,45 +122,26 @@ static outcome run_ours(const problem *p, int start)
 
 /* ------------------------------------------------------------------------ */
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, by_value);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* Median over repeats of the seconds one run takes with each solver, and
  * the ratio ours / GSL. */
 static double run_ratio(problem *p, int start, int repeats)
 {
     double a[1000], g[1000];
     for (int r = 0; r < repeats; ++r) {
-        double t0 = now();
+        double t0 = bench_now();
         run_ours(p, start);
-        double t1 = now();
+        double t1 = bench_now();
         run_gsl(p, start, 1e-15, 1e-15, 1e-15);
         a[r] = t1 - t0;
-        g[r] = now() - t1;
+        g[r] = bench_now() - t1;
     }
-    return median(a, repeats) / median(g, repeats);
+    return bench_median(a, repeats) / bench_median(g, repeats);
 }
 
 /* Seconds for all 54 runs with one solver (gsl != 0: GSL, tight set). */
 static double suite_time(problem *pr, size_t np, int gsl)
 {
-    double t0 = now();
+    double t0 = bench_now();
     for (size_t k = 0; k < np; ++k) {
         for (int start = 1; start <= 2; ++start) {
             if (gsl) {
@@ -170,7 +151,7 @@ static double suite_time(problem *pr, size_t np, int gsl)
             }
         }
     }
-    return now() - t0;
+    return bench_now() - t0;
 }
 
 static void load_all(problem *pr, size_t *np)
@@ -238,7 +219,7 @@ int main(int argc, char **argv)
         t_ours[r] = suite_time(pr, np, 0);
         t_gsl[r] = suite_time(pr, np, 1);
     }
-    double mo = median(t_ours, repeats), mg = median(t_gsl, repeats);
+    double mo = bench_median(t_ours, repeats), mg = bench_median(t_gsl, repeats);
     printf("time for the 54 runs, median of %d: ours %.2f ms, GSL %.2f ms; ratio ours/GSL "
            "%.2f\n",
            repeats, 1e3 * mo, 1e3 * mg, mo / mg);
@@ -256,7 +237,7 @@ int main(int argc, char **argv)
     }
     printf("time per run, ours/GSL (medians of %d): median over the 54 runs %.2f, range %.2f "
            "to %.2f\n",
-           repeats, median(ratios, nr), lo, hi);
+           repeats, bench_median(ratios, nr), lo, hi);
     for (size_t k = 0; k < np; ++k) {
         free(pr[k].y);
         tf_nist_free(&pr[k].d);

@@ -14,10 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/log.h"
+#include "base/context.h"
+#include "base/peak_memory.h"
 #include "scene/scene.h"
+#include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
-#include "solvers/solver_report.h"
 
 #define MAX_REPS 15
 #define PHASES 7
@@ -47,45 +48,51 @@ int main(int argc, char **argv)
     snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", argv[1]);
     snprintf(set_node, sizeof set_node, "contact.0.node=%u", g[0] / 2 + g[0] * (g[1] / 2) + 1);
     const char *sets[] = {set_grid, set_node};
-    const double unit[9] = {1, 0, 0, 0, 1, 0, 0, 0, -1};
+    const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
     double t[PHASES][MAX_REPS], many = 0;
     size_t nodes = 0, nnz_k = 0;
     double nnz_l = 0;
-    tf_quiet = 1;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
     for (int r = 0; r < reps; ++r) {
         double t0 = omp_get_wtime();
         tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, 2, err, sizeof err);
-        tf_solver *sv = s ? tf_solver_new(s, err, sizeof err) : NULL;
-        double *u = sv ? malloc(150 * 3 * s->cloud.n * sizeof *u) : NULL;
-        if (u == NULL || tf_solver_solve(sv, 0, unit, 3, u, err, sizeof err) != 0) {
+        if (s == NULL) {
             fprintf(stderr, "bench_solver: %s\n", err);
             return 1;
         }
-        const tf_solver_info *in = tf_solver_info_of(sv);
+        tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);
+        double *u = sv ? malloc(150 * 3 * s->problem.cloud.n * sizeof *u) : NULL;
+        if (u == NULL || tf_solver_solve(sv, 0, unit, 3, NULL, u) != 0) {
+            fprintf(stderr, "bench_solver: %s\n", ctx.err);
+            return 1;
+        }
+        const tf_galerkin_info *in = tf_galerkin_info_of(sv);
         t[0][r] = omp_get_wtime() - t0;
         t[1][r] = in->t_pattern;
         t[2][r] = in->t_shape;
         t[3][r] = in->t_assemble;
         t[4][r] = in->t_loads;
         t[5][r] = in->t_factor;
-        t[6][r] = in->t_solve;
+        t[6][r] = tf_solver_info_of(sv)->t_solve;
         if (r == reps - 1) {
-            double f[450];
+            double f[150][3];
             for (int k = 0; k < 450; ++k) {
-                f[k] = ((k * 7919) % 2001 - 1000) / 1732.0; /* inside the 1 N ball */
+                f[k / 3][k % 3] = ((k * 7919) % 2001 - 1000) / 1732.0; /* inside the 1 N ball */
             }
             double t1 = omp_get_wtime();
-            if (tf_solver_solve(sv, 0, f, 150, u, err, sizeof err) != 0) {
-                fprintf(stderr, "bench_solver: %s\n", err);
+            if (tf_solver_solve(sv, 0, (const double(*)[3])f, 150, NULL, u) != 0) {
+                fprintf(stderr, "bench_solver: %s\n", ctx.err);
                 return 1;
             }
             many = omp_get_wtime() - t1;
-            nodes = in->nodes;
+            nodes = tf_solver_info_of(sv)->nodes;
             nnz_k = in->nnz_k;
             nnz_l = in->nnz_l;
         }
         free(u);
-        tf_solver_free(sv);
+        tf_solver_destroy(sv);
         tf_scene_free(s);
     }
     static const char *const names[PHASES] = {"total (read to 3 solutions)", "pattern",

@@ -27,7 +27,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "base/log.h"
+#include "base/context.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -35,7 +35,7 @@
 #define MAX_LEVELS 6
 
 static const char *const cases[3] = {"fx", "fy", "fz"};
-static const double forces[9] = {1, 0, 0, 0, 1, 0, 0, 0, -1};
+static const double forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
 
 typedef struct reference {
     double x[TOP][3], u[TOP][3];
@@ -118,14 +118,14 @@ typedef struct result {
 } result;
 
 /* Node index of the top-surface point x on a box grid. */
-static size_t top_node(const tf_scene *s, const double x[3])
+static size_t top_node(const tf_problem *s, const double x[3])
 {
     unsigned i = (unsigned)lround(x[0] / s->cloud.spacing[0]);
     unsigned j = (unsigned)lround(x[1] / s->cloud.spacing[1]);
-    return tf_cloud_index(&s->cloud, i, j, s->grid[2] - 1);
+    return tf_cloud_index(&s->cloud, i, j, s->cloud.grid[2] - 1);
 }
 
-static int compare(const tf_scene *s, const double *u, const reference *r, result *out)
+static int compare(const tf_problem *s, const double *u, const reference *r, result *out)
 {
     double e2 = 0, r2 = 0;
     for (int n = 0; n < TOP; ++n) {
@@ -169,13 +169,21 @@ static int solve_level(const options *o, const char *grid, tf_scene **scene, dou
     snprintf(set_nu, sizeof set_nu, "material.nu=%s", o->nu ? o->nu : "0.49");
     const char *sets[] = {set_grid, set_node, set_nu};
     *scene = tf_scene_load("coeffs/block48.yaml", sets, 3, err, sizeof err);
-    tf_solver *sv = *scene ? tf_solver_new(*scene, err, sizeof err) : NULL;
-    *u = sv ? malloc(9 * (*scene)->cloud.n * sizeof **u) : NULL;
-    int rc = *u ? tf_solver_solve(sv, 0, forces, 3, *u, err, sizeof err) : -1;
-    if (rc != 0) {
+    if (*scene == NULL) {
         fprintf(stderr, "calculix_compare: %s\n", err);
+        return -1;
     }
-    tf_solver_free(sv);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    const tf_problem *p = &(*scene)->problem;
+    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
+    *u = sv ? malloc(9 * p->cloud.n * sizeof **u) : NULL;
+    int rc = *u ? tf_solver_solve(sv, 0, forces, 3, NULL, *u) : -1;
+    if (rc != 0) {
+        fprintf(stderr, "calculix_compare: %s\n", *u || !sv ? ctx.err : "out of memory");
+    }
+    tf_solver_destroy(sv);
     return rc;
 }
 
@@ -227,7 +235,6 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    tf_quiet = 1;
     FILE *csv = o.csv ? fopen(o.csv, "w") : NULL;
     const char *header = "level,grid,nodes,case,ux61,uy61,uz61,ref_ux61,ref_uy61,ref_uz61,err61,"
                          "rms,rms_rel\n";
@@ -245,12 +252,14 @@ int main(int argc, char **argv)
         }
         for (int c = 0; c < 3; ++c) {
             result r = {{0, 0, 0}, {0, 0, 0}, 0, 0, 0};
-            if (compare(s, u + (size_t)c * 3 * s->cloud.n, &ref[c], &r) != 0) {
+            const tf_problem *p = &s->problem;
+            if (compare(p, u + (size_t)c * 3 * p->cloud.n, &ref[c], &r) != 0) {
                 return 1;
             }
             char row[512];
             snprintf(row, sizeof row, "%d,%ux%ux%u,%zu,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,%.4g,%.4f\n",
-                     l, s->grid[0], s->grid[1], s->grid[2], s->cloud.n, cases[c], r.u61[0], r.u61[1], r.u61[2],
+                     l, p->cloud.grid[0], p->cloud.grid[1], p->cloud.grid[2], p->cloud.n, cases[c],
+                     r.u61[0], r.u61[1], r.u61[2],
                      r.ref61[0], r.ref61[1], r.ref61[2], r.err61, r.rms, r.rms_rel);
             printf("%s", row);
             if (csv) {

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "base/log.h"
+#include "base/context.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -31,21 +31,28 @@ int main(int argc, char **argv)
     for (int k = 2; k < argc; ++k) {
         sets[k] = argv[k];
     }
-    const double f[9] = {1, 0, 0, 0, 1, 0, 0, 0, -1};
-    tf_quiet = 1;
+    const double f[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
     double t0 = omp_get_wtime();
     tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, (size_t)argc, err, sizeof err);
-    tf_solver *sv = s ? tf_solver_new(s, err, sizeof err) : NULL;
-    double *u = sv ? malloc(9 * s->cloud.n * sizeof *u) : NULL;
-    if (u == NULL || tf_solver_solve(sv, 0, f, 3, u, err, sizeof err) != 0) {
+    if (s == NULL) {
         fprintf(stderr, "node61: %s\n", err);
         return 1;
     }
-    size_t n3 = 3 * s->cloud.n;
-    printf("%zu,%.10g,%.10g,%.10g,%.3f\n", s->cloud.n, u[3 * centre], u[n3 + 3 * centre + 1],
+    const tf_problem *p = &s->problem;
+    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
+    double *u = sv ? malloc(9 * p->cloud.n * sizeof *u) : NULL;
+    if (u == NULL || tf_solver_solve(sv, 0, f, 3, NULL, u) != 0) {
+        fprintf(stderr, "node61: %s\n", ctx.err);
+        return 1;
+    }
+    size_t n3 = 3 * p->cloud.n;
+    printf("%zu,%.10g,%.10g,%.10g,%.3f\n", p->cloud.n, u[3 * centre], u[n3 + 3 * centre + 1],
            u[2 * n3 + 3 * centre + 2], omp_get_wtime() - t0);
     free(u);
-    tf_solver_free(sv);
+    tf_solver_destroy(sv);
     tf_scene_free(s);
     return 0;
 }

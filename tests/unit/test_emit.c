@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "emit/emit_header.h"
+#include "model/golden.h"
 #include "random_model.h"
 
 static char dir[256];
@@ -105,13 +106,18 @@ static void header_content_and_exact_literals(void **state)
     char *h = slurp(path, NULL);
     assert_non_null(h);
     assert_non_null(strstr(h, "#ifndef TFIT_ALPHA_H"));
-    assert_non_null(strstr(h, "#if TFIT_API_VERSION != 3\n#error"));
+    assert_non_null(strstr(h, "#if TFIT_API_VERSION != 4\n#error"));
     assert_non_null(strstr(h, "scene: scene.yaml (crc32 0xdeadbeef)"));
     assert_non_null(strstr(h, "#ifdef TFIT_ALPHA_IMPLEMENTATION"));
     assert_non_null(strstr(h, "extern const tfit_model tfit_alpha_contact;"));
-    char crc[64];
-    snprintf(crc, sizeof crc, "#define TFIT_ALPHA_FORWARD_CRC32 0x%08xu",
-             tf_model_crc32(two_models[0]));
+    char crc[128];
+    uint32_t check[TFIT_CHECK_WORDS];
+    assert_int_equal(tf_check_vector(two_models[0], check), 0);
+    const uint32_t want = tf_model_crc32_checked(two_models[0], check);
+    snprintf(crc, sizeof crc, "#define TFIT_ALPHA_FORWARD_CRC32 0x%08xu", want);
+    assert_non_null(strstr(h, crc));
+    /* the link name carries the CRC (stale headers do not link) */
+    snprintf(crc, sizeof crc, "#define tfit_alpha_forward tfit_alpha_forward_%08x", want);
     assert_non_null(strstr(h, crc));
 
     /* Every literal of the coefficient table reads back to the same float. */

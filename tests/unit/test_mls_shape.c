@@ -29,6 +29,14 @@ typedef struct efg {
     tf_shape_work w;
 } efg;
 
+/* The shape object of a problem's cloud, bounds and solver options. */
+static int shape_of(tf_shape *sh, const tf_problem *p)
+{
+    double lo[3], hi[3];
+    tf_problem_bounds(p, lo, hi);
+    return tf_shape_init(sh, &p->cloud, lo, hi, &p->solver);
+}
+
 static void efg_open(efg *e, const char *centre)
 {
     char err[512], set[64];
@@ -38,7 +46,7 @@ static void efg_open(efg *e, const char *centre)
     if (e->scene == NULL) {
         fail_msg("%s", err);
     }
-    assert_int_equal(tf_shape_init(&e->sh, e->scene), 0);
+    assert_int_equal(shape_of(&e->sh, &e->scene->problem), 0);
     if (tf_shape_use_efg(&e->sh, err, sizeof err) != 0) {
         fail_msg("%s", err);
     }
@@ -127,7 +135,7 @@ static void cell_and_point_supports_give_the_same_shape_functions(void **state)
     efg ec, ep;
     efg_open(&ec, "cell");
     efg_open(&ep, "point");
-    size_t nn = ec.scene->cloud.n, np = tf_cells_points(&ec.sh.cells);
+    size_t nn = ec.scene->problem.cloud.n, np = tf_cells_points(&ec.sh.cells);
     double *dense = calloc(nn, sizeof *dense), x[3 * 64], w, worst = 0;
     for (size_t c = 0; c < tf_cells_count(&ec.sh.cells); c += 7) {
         for (size_t p = 0; p < np; ++p) {
@@ -166,12 +174,12 @@ static void a_support_too_small_is_refused_with_the_place(void **state)
     assert_non_null(s);
     tf_shape sh;
     tf_shape_work w;
-    assert_int_equal(tf_shape_init(&sh, s), 0);
+    assert_int_equal(shape_of(&sh, &s->problem), 0);
     assert_int_equal(tf_shape_use_efg(&sh, err, sizeof err), 0);
     tf_shape_work_init(&w);
     /* at a node only that node's domain (0.3 spacings; jitter keeps nodes
      * 0.4 spacings apart) reaches: A has rank 1 */
-    const double *x = s->cloud.xyz + 3 * 100;
+    const double *x = s->problem.cloud.xyz + 3 * 100;
     assert_int_equal(tf_shape_at(&sh, &w, x, tf_shape_cell(&sh, x), 1), -1);
     char where[128];
     snprintf(where, sizeof where, "(%g, %g, %g) mm", x[0], x[1], x[2]);

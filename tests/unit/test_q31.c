@@ -159,7 +159,18 @@ static void check_rejects_damage(void **state)
     assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_FAMILY);
     tf_target_view_q31(q, &t);
     t.n_words -= 1;
+    assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_CORRUPT); /* no longer q_end - q */
+    t.q_end -= 1;
     assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_SIZE);
+    /* a flipped bit in a table pointer: caught by its end, never read through */
+    for (int b = 0; b < 32; ++b) {
+        tf_target_view_q31(q, &t);
+        t.q = (const int32_t *)((uintptr_t)t.q ^ ((uintptr_t)1 << b));
+        assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_CORRUPT);
+        tf_target_view_q31(q, &t);
+        t.node_ids_end = (const uint32_t *)((uintptr_t)t.node_ids_end ^ ((uintptr_t)1 << b));
+        assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_CORRUPT);
+    }
     tf_target_view_q31(q, &t);
     q->q[20] ^= 1 << 7; /* a flipped bit */
     assert_int_equal(tfit_model_check_q31(&t), TFIT_ERR_CORRUPT);

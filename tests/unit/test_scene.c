@@ -18,7 +18,7 @@
 
 static const double *node_xyz(const tf_scene *s, uint32_t number)
 {
-    return s->cloud.xyz + 3 * (size_t)(number - 1);
+    return s->problem.cloud.xyz + 3 * (size_t)(number - 1);
 }
 
 static void block48_as_the_guide_defines_it(void **state)
@@ -27,9 +27,10 @@ static void block48_as_the_guide_defines_it(void **state)
     char err[512];
     tf_scene *s = tf_scene_load(BLOCK48, NULL, 0, err, sizeof err);
     assert_non_null(s);
-    assert_string_equal(s->name, "block48");
-    assert_int_equal(s->cloud.n, 363);
-    assert_true(s->young == 0.32 && s->poisson == 0.49);
+    assert_string_equal(s->problem.name, "block48");
+    assert_int_equal(s->problem.cloud.n, 363);
+    assert_int_equal(s->problem.material.law, TF_LAW_LINEAR);
+    assert_true(s->problem.material.young == 0.32 && s->problem.material.poisson == 0.49);
     /* node 61 is the top centre; N = i + 11 j + 1 on the top layer */
     const double *c = node_xyz(s, 61);
     assert_true(c[0] == 24 && c[1] == 24 && c[2] == 6);
@@ -42,25 +43,30 @@ static void block48_as_the_guide_defines_it(void **state)
     }
     /* the layers below follow: 122 .. 242 at z = 3, 243 .. 363 at z = 0 */
     assert_true(node_xyz(s, 122)[2] == 3 && node_xyz(s, 363)[2] == 0);
-    assert_int_equal(s->n_fixed, 4);
+    assert_int_equal(s->problem.n_fixed, 4);
     for (size_t k = 0; k < 4; ++k) {
-        assert_int_equal(s->fixed[k].n_nodes, 33); /* 11 x 3 nodes per lateral face */
-        assert_int_equal(s->fixed[k].components, TF_COMP_ALL);
+        assert_int_equal(s->problem.fixed[k].n_nodes, 33); /* 11 x 3 nodes per lateral face */
+        assert_int_equal(s->problem.fixed[k].components, TF_COMP_ALL);
     }
-    assert_int_equal(s->n_contacts, 1);
-    assert_int_equal(s->contacts[0].node, 60);
-    assert_int_equal(s->contacts[0].patch.shape, TF_PATCH_RECT);
-    assert_int_equal(s->contacts[0].patch.face, TF_FACE_ZMAX);
-    assert_true(s->contacts[0].patch.centre[0] == 24 && s->contacts[0].patch.size[1] == 4.8);
-    assert_true(s->envelope_radius == 1.0);
-    assert_int_equal(s->outputs.n_nodes, 121);
+    assert_int_equal(s->problem.n_contacts, 1);
+    assert_int_equal(s->problem.contacts[0].node, 60);
+    assert_int_equal(s->problem.contacts[0].patch.shape, TF_PATCH_RECT);
+    assert_int_equal(s->problem.contacts[0].patch.face, TF_FACE_ZMAX);
+    const tf_patch *patch = &s->problem.contacts[0].patch;
+    assert_true(patch->centre[0] == 24 && patch->size[1] == 4.8);
+    assert_true(s->problem.envelope.radius == 1.0);
+    assert_string_equal(s->problem.solver.method, "rpim-galerkin");
+    assert_int_equal(s->fit.contact, 0);
+    assert_int_equal(s->fit.n_train, 100);
+    assert_int_equal(s->problem.outputs.n_nodes, 121);
     for (size_t k = 0; k < 121; ++k) {
-        assert_int_equal(s->outputs.nodes[k], k); /* the top layer, in node order */
+        assert_int_equal(s->problem.outputs.nodes[k], k); /* the top layer, in node order */
     }
-    assert_int_equal(s->solver.polynomial, 1);
-    assert_int_equal(s->solver.volumetric, TF_VOLUMETRIC_CELL);
-    assert_int_equal(s->solver.centre, TF_SUPPORT_CELL);
-    assert_true(s->solver.alpha_c == 1.0 && s->solver.d_c == 2.0 && s->solver.q == 1.03);
+    assert_int_equal(s->problem.solver.polynomial, 1);
+    assert_int_equal(s->problem.solver.volumetric, TF_VOLUMETRIC_CELL);
+    assert_int_equal(s->problem.solver.centre, TF_SUPPORT_CELL);
+    const tf_solver_opts *o = &s->problem.solver;
+    assert_true(o->alpha_c == 1.0 && o->d_c == 2.0 && o->q == 1.03);
     tf_scene_free(s);
 }
 
@@ -74,19 +80,19 @@ static void overrides_change_every_kind_of_value(void **state)
                           "solver.volumetric=full"};
     tf_scene *s = tf_scene_load(BLOCK48, sets, sizeof sets / sizeof sets[0], err, sizeof err);
     assert_non_null(s);
-    assert_int_equal(s->cloud.n, 21 * 21 * 5);
+    assert_int_equal(s->problem.cloud.n, 21 * 21 * 5);
     const double *c = node_xyz(s, 221);
     assert_true(c[0] == 24 && c[1] == 24 && c[2] == 6);
-    assert_true(s->solver.q == 0.5);
-    assert_int_equal(s->fixed[0].components, TF_COMP_X | TF_COMP_Z);
-    assert_int_equal(s->solver.bc, TF_BC_PENALTY);
-    assert_int_equal(s->solver.volumetric, TF_VOLUMETRIC_FULL);
-    assert_string_equal(s->name, "b21");
-    assert_int_equal(s->n_fixed, 5); /* appended */
-    assert_int_equal(s->fixed[4].n_nodes, 21 * 21);
-    assert_int_equal(s->outputs.n_nodes, 1);
-    assert_int_equal(s->outputs.nodes[0], 220);
-    assert_int_equal(s->solver.cells[0], 20); /* default cells follow the grid */
+    assert_true(s->problem.solver.q == 0.5);
+    assert_int_equal(s->problem.fixed[0].components, TF_COMP_X | TF_COMP_Z);
+    assert_int_equal(s->problem.solver.bc, TF_BC_PENALTY);
+    assert_int_equal(s->problem.solver.volumetric, TF_VOLUMETRIC_FULL);
+    assert_string_equal(s->problem.name, "b21");
+    assert_int_equal(s->problem.n_fixed, 5); /* appended */
+    assert_int_equal(s->problem.fixed[4].n_nodes, 21 * 21);
+    assert_int_equal(s->problem.outputs.n_nodes, 1);
+    assert_int_equal(s->problem.outputs.nodes[0], 220);
+    assert_int_equal(s->problem.solver.cells[0], 20); /* default cells follow the grid */
     tf_scene_free(s);
 }
 
@@ -178,6 +184,8 @@ static void each_bad_scene_has_its_own_message(void **state)
                 (const char *[]){"t.yaml:13:", "outputs", "non-empty", NULL});
     expect_error(13, "  select: all\n", (const char *[]){"t.yaml:", "outputs", "take nothing else", NULL});
     expect_error(1, "name: t\nsolver: {gauss: 40}\n", (const char *[]){"t.yaml:2:", "solver.gauss", NULL});
+    expect_error(1, "name: t\nsolver: {method: fem}\n",
+                 (const char *[]){"t.yaml:2:", "solver.method", "'fem'", "rpim-galerkin", NULL});
     expect_error(1, "name: t\nsolver: {rbf: {q: 1}}\n", (const char *[]){"t.yaml:2:", "solver.rbf.q", "whole", NULL});
     expect_error(1, "name: t\nfitting: {family: nodal}\n", (const char *[]){"t.yaml:2:", "fitting", "unknown key", NULL});
     expect_error(1, "name: t\nfit: {family: cubic}\n", (const char *[]){"t.yaml:2:", "fit.family", NULL});
@@ -226,7 +234,8 @@ static void jitter_moves_only_interior_nodes(void **state)
     for (unsigned k = 0; k < 6; ++k) {
         for (unsigned j = 0; j < 6; ++j) {
             for (unsigned i = 0; i < 6; ++i) {
-                const double *x = s->cloud.xyz + 3 * tf_cloud_index(&s->cloud, i, j, k);
+                const tf_cloud *cl = &s->problem.cloud;
+                const double *x = cl->xyz + 3 * tf_cloud_index(cl, i, j, k);
                 const unsigned ijk[3] = {i, j, k};
                 int interior = i % 5 && j % 5 && k % 5;
                 for (int a = 0; a < 3; ++a) {

@@ -1,8 +1,9 @@
 /*
- * test_solver.c — the solver on block48 (GUIDE §5): equilibrium of
- * reactions and load, x <-> y mirror symmetry, 1/E scaling, elimination
- * against the seed's penalty, many load cases through one factorisation,
- * and the same bits whatever the thread count.
+ * test_solver.c — the RPIM Galerkin solver through the solver interface
+ * on block48 (GUIDE §5): equilibrium of reactions and load, x <-> y mirror
+ * symmetry, 1/E scaling, elimination against the seed's penalty, many load
+ * cases through one factorisation, the same bits whatever the thread count,
+ * the capabilities it declares and the interface's argument checks.
  */
 #include <math.h>
 #include <omp.h>
@@ -16,44 +17,65 @@
 
 #include <cmocka.h>
 
-#include "base/log.h"
+#include "base/context.h"
 #include "scene/scene.h"
+#include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
 
-static const double unit_forces[9] = {1, 0, 0, 0, 1, 0, 0, 0, -1}; /* fx, fy, fz */
+static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}; /* fx, fy, fz */
 
 typedef struct run {
+    tf_ctx ctx;
     tf_scene *scene;
+    const tf_problem *p;
     tf_solver *solver;
     double *u; /* 3N x ncases */
 } run;
 
-static run solve(const char *const *sets, size_t n_sets, const double *forces, size_t ncases)
+/* A quiet context with the given thread count (0: OpenMP's). */
+static void quiet(tf_ctx *ctx, int threads)
+{
+    tf_ctx_init(ctx);
+    ctx->level = TF_LOG_ERROR;
+    ctx->threads = threads;
+}
+
+static run *solve_on(const char *scene, const char *const *sets, size_t n_sets, int threads,
+                     const double (*forces)[3], size_t ncases)
 {
     char err[512];
-    run r;
-    r.scene = tf_scene_load(BLOCK48, sets, n_sets, err, sizeof err);
-    if (r.scene == NULL) {
+    run *r = calloc(1, sizeof *r);
+    quiet(&r->ctx, threads);
+    r->scene = tf_scene_load(scene, sets, n_sets, err, sizeof err);
+    if (r->scene == NULL) {
         fail_msg("%s", err);
     }
-    r.solver = tf_solver_new(r.scene, err, sizeof err);
-    if (r.solver == NULL) {
-        fail_msg("%s", err);
+    r->p = &r->scene->problem;
+    r->solver = tf_solver_create(r->p, NULL, &r->ctx);
+    if (r->solver == NULL) {
+        fail_msg("%s", r->ctx.err);
     }
-    r.u = malloc(3 * r.scene->cloud.n * ncases * sizeof *r.u);
-    if (tf_solver_solve(r.solver, 0, forces, ncases, r.u, err, sizeof err) != 0) {
-        fail_msg("%s", err);
+    r->u = malloc(3 * r->p->cloud.n * ncases * sizeof *r->u);
+    if (tf_solver_solve(r->solver, forces ? 0 : -1, forces, ncases, NULL, r->u) != 0) {
+        fail_msg("%s", r->ctx.err);
     }
     return r;
+}
+
+static run *solve(const char *const *sets, size_t n_sets, const double (*forces)[3],
+                  size_t ncases)
+{
+    return solve_on(BLOCK48, sets, n_sets, 0, forces, ncases);
 }
 
 static void done(run *r)
 {
     free(r->u);
-    tf_solver_free(r->solver);
+    tf_solver_destroy(r->solver);
     tf_scene_free(r->scene);
+    free(r);
 }
 
 static double max_abs(const double *v, size_t n)
@@ -70,39 +92,41 @@ static void reactions_balance_the_applied_force(void **state)
     (void)state;
     const char *point[] = {"contact.0={node: 61}"}; /* a point force instead of the patch */
     for (int variant = 0; variant < 2; ++variant) {
-        run r = solve(point, (size_t)variant, unit_forces, 3);
-        size_t n3 = 3 * r.scene->cloud.n;
+        run *r = solve(point, (size_t)variant, unit_forces, 3);
+        size_t n3 = 3 * r->p->cloud.n;
         double *react = malloc(n3 * sizeof *react);
+        unsigned char *fixed = malloc(n3);
+        tf_problem_fixed_dofs(r->p, fixed);
         for (int c = 0; c < 3; ++c) {
             double sum[3] = {0, 0, 0}, resid = 0;
-            assert_int_equal(tf_solver_reactions(r.solver, 0, unit_forces + 3 * c, r.u + c * n3,
-                                                 react),
-                             0);
+            assert_int_equal(
+                tf_solver_reactions(r->solver, 0, unit_forces[c], r->u + c * n3, react), 0);
             for (size_t d = 0; d < n3; ++d) {
-                if (tf_solver_dof_fixed(r.solver, d)) {
+                if (fixed[d]) {
                     sum[d % 3] += react[d];
                 } else {
                     resid = fmax(resid, fabs(react[d]));
                 }
             }
             for (int a = 0; a < 3; ++a) {
-                assert_true(fabs(sum[a] + unit_forces[3 * c + a]) < 1e-6);
+                assert_true(fabs(sum[a] + unit_forces[c][a]) < 1e-6);
             }
             assert_true(resid < 1e-10);
         }
+        free(fixed);
         free(react);
-        done(&r);
+        done(r);
     }
 }
 
 static void fx_and_fy_mirror_each_other(void **state)
 {
     (void)state;
-    run r = solve(NULL, 0, unit_forces, 3);
-    const tf_cloud *c = &r.scene->cloud;
+    run *r = solve(NULL, 0, unit_forces, 3);
+    const tf_cloud *c = &r->p->cloud;
     size_t n3 = 3 * c->n;
-    const double *ux = r.u, *uy = r.u + n3, *uz = r.u + 2 * n3;
-    double scale = max_abs(r.u, 3 * n3), worst = 0;
+    const double *ux = r->u, *uy = r->u + n3, *uz = r->u + 2 * n3;
+    double scale = max_abs(r->u, 3 * n3), worst = 0;
     for (unsigned k = 0; k < 3; ++k) {
         for (unsigned j = 0; j < 11; ++j) {
             for (unsigned i = 0; i < 11; ++i) {
@@ -120,26 +144,26 @@ static void fx_and_fy_mirror_each_other(void **state)
     }
     assert_true(worst < 1e-9 * scale);
     assert_true(uz[3 * 60 + 2] < 0 && ux[3 * 60] > 0); /* node 61 moves with the force */
-    done(&r);
+    done(r);
 }
 
 static void displacement_scales_as_one_over_e(void **state)
 {
     (void)state;
-    run ref = solve(NULL, 0, unit_forces, 3);
-    size_t n = 9 * ref.scene->cloud.n;
+    run *ref = solve(NULL, 0, unit_forces, 3);
+    size_t n = 9 * ref->p->cloud.n;
     const char *stiff[] = {"material.E=320"}, *soft[] = {"material.E=0.00032"};
     const double factor[2] = {1e-3, 1e3};
     for (int k = 0; k < 2; ++k) {
-        run r = solve(k ? soft : stiff, 1, unit_forces, 3);
+        run *r = solve(k ? soft : stiff, 1, unit_forces, 3);
         double worst = 0;
         for (size_t d = 0; d < n; ++d) {
-            worst = fmax(worst, fabs(r.u[d] - factor[k] * ref.u[d]));
+            worst = fmax(worst, fabs(r->u[d] - factor[k] * ref->u[d]));
         }
-        assert_true(worst < 1e-12 * factor[k] * max_abs(ref.u, n));
-        done(&r);
+        assert_true(worst < 1e-12 * factor[k] * max_abs(ref->u, n));
+        done(r);
     }
-    done(&ref);
+    done(ref);
 }
 
 static double relative_difference(const double *a, const double *b, size_t n)
@@ -154,63 +178,66 @@ static double relative_difference(const double *a, const double *b, size_t n)
 static void penalty_agrees_with_elimination(void **state)
 {
     (void)state;
-    run elim = solve(NULL, 0, unit_forces, 3);
-    size_t n = 9 * elim.scene->cloud.n;
+    run *elim = solve(NULL, 0, unit_forces, 3);
+    size_t n = 9 * elim->p->cloud.n;
     const char *seed[] = {"solver.bc=penalty"};
-    run pen = solve(seed, 1, unit_forces, 3);
-    assert_true(relative_difference(pen.u, elim.u, n) < 1e-6); /* lambda = 1e7 */
-    done(&pen);
+    run *pen = solve(seed, 1, unit_forces, 3);
+    assert_true(relative_difference(pen->u, elim->u, n) < 1e-6); /* lambda = 1e7 */
+    done(pen);
     /* a small lambda does not hold the faces (error about 0.1 / lambda):
      * the check above can fail */
     const char *weak[] = {"solver.bc=penalty", "solver.penalty=10"};
-    run loose = solve(weak, 2, unit_forces, 3);
-    assert_true(relative_difference(loose.u, elim.u, n) > 1e-3);
-    done(&loose);
-    done(&elim);
+    run *loose = solve(weak, 2, unit_forces, 3);
+    assert_true(relative_difference(loose->u, elim->u, n) > 1e-3);
+    done(loose);
+    done(elim);
 }
 
 static void many_cases_through_one_factorisation(void **state)
 {
     (void)state;
-    double forces[3 * 6];
+    double forces[6][3];
     for (int k = 0; k < 18; ++k) {
-        forces[k] = sin(1.7 * k + 0.3); /* six arbitrary forces */
+        forces[k / 3][k % 3] = sin(1.7 * k + 0.3); /* six arbitrary forces */
     }
-    run units = solve(NULL, 0, unit_forces, 3);
-    run many = solve(NULL, 0, forces, 6);
-    size_t n3 = 3 * units.scene->cloud.n;
+    run *units = solve(NULL, 0, unit_forces, 3);
+    run *many = solve(NULL, 0, (const double(*)[3])forces, 6);
+    size_t n3 = 3 * units->p->cloud.n;
     double *one = malloc(n3 * sizeof *one);
-    char err[256];
     for (int k = 0; k < 6; ++k) {
-        const double *f = forces + 3 * k, *u = many.u + k * n3;
-        assert_int_equal(tf_solver_solve(many.solver, 0, f, 1, one, err, sizeof err), 0);
+        const double *f = forces[k], *u = many->u + k * n3;
+        assert_int_equal(tf_solver_solve(many->solver, 0, &forces[k], 1, NULL, one), 0);
         for (size_t d = 0; d < n3; ++d) {
             /* linear: the superposition of the unit cases (fz case is -z) */
-            double sup = f[0] * units.u[d] + f[1] * units.u[n3 + d] - f[2] * units.u[2 * n3 + d];
-            assert_true(fabs(u[d] - sup) < 1e-12 * max_abs(units.u, 3 * n3));
-            assert_true(fabs(u[d] - one[d]) < 1e-13 * max_abs(units.u, 3 * n3));
+            double sup = f[0] * units->u[d] + f[1] * units->u[n3 + d] - f[2] * units->u[2 * n3 + d];
+            assert_true(fabs(u[d] - sup) < 1e-12 * max_abs(units->u, 3 * n3));
+            assert_true(fabs(u[d] - one[d]) < 1e-13 * max_abs(units->u, 3 * n3));
         }
     }
-    assert_int_equal(tf_solver_info_of(many.solver)->solves, 12);
+    assert_int_equal(tf_solver_info_of(many->solver)->solves, 12);
     free(one);
-    done(&many);
-    done(&units);
+    done(many);
+    done(units);
 }
 
+/* Through the context's thread count (the solver's parallel loops) and
+ * OpenMP's default (the context left at 0). */
 static void same_bits_whatever_the_thread_count(void **state)
 {
     (void)state;
     int saved = omp_get_max_threads();
     const char *finer[] = {"geometry.grid=15,15,4", "contact.0.node=113"};
-    omp_set_num_threads(1);
-    run one = solve(finer, 2, unit_forces, 3);
+    run *one = solve_on(BLOCK48, finer, 2, 1, unit_forces, 3);
+    run *two = solve_on(BLOCK48, finer, 2, 2, unit_forces, 3);
     omp_set_num_threads(2);
-    run two = solve(finer, 2, unit_forces, 3);
+    run *dflt = solve_on(BLOCK48, finer, 2, 0, unit_forces, 3);
     omp_set_num_threads(saved);
-    size_t n = 9 * one.scene->cloud.n;
-    assert_memory_equal(one.u, two.u, n * sizeof *one.u);
-    done(&one);
-    done(&two);
+    size_t n = 9 * one->p->cloud.n;
+    assert_memory_equal(one->u, two->u, n * sizeof *one->u);
+    assert_memory_equal(one->u, dflt->u, n * sizeof *one->u);
+    done(one);
+    done(two);
+    done(dflt);
 }
 
 /* Compliance at node 61 under 1 N along -z. */
@@ -221,9 +248,9 @@ static double uz61(const char *nu, const char *volumetric, const char *centre)
     snprintf(b, sizeof b, "solver.volumetric=%s", volumetric);
     snprintf(c, sizeof c, "solver.centre=%s", centre);
     const char *sets[] = {a, b, c};
-    run r = solve(sets, 3, unit_forces + 6, 1);
-    double uz = -r.u[3 * 60 + 2];
-    done(&r);
+    run *r = solve(sets, 3, unit_forces + 2, 1);
+    double uz = -r->u[3 * 60 + 2];
+    done(r);
     return uz;
 }
 
@@ -241,14 +268,57 @@ static void cell_averaged_volume_strain_relieves_locking(void **state)
 static void nodes_are_exposed_in_scene_numbering(void **state)
 {
     (void)state;
-    run r = solve(NULL, 0, unit_forces, 1);
-    assert_int_equal(tf_solver_node_count(r.solver), 363);
-    assert_int_equal(tf_solver_node_number(r.solver, 60), 61);
-    const double *x = tf_solver_coords(r.solver) + 3 * 60;
+    run *r = solve(NULL, 0, unit_forces, 1);
+    assert_int_equal(tf_solver_node_count(r->solver), 363);
+    assert_int_equal(tf_problem_node_number(r->p, 60), 61);
+    const double *x = tf_solver_coords(r->solver) + 3 * 60;
     assert_true(x[0] == 24 && x[1] == 24 && x[2] == 6);
-    char err[256];
-    assert_int_equal(tf_solver_solve(r.solver, 1, unit_forces, 1, r.u, err, sizeof err), -1);
-    done(&r);
+    /* the interface refuses a contact site the problem does not have */
+    r->ctx.err[0] = '\0';
+    assert_int_equal(tf_solver_solve(r->solver, 1, unit_forces, 1, NULL, r->u), -1);
+    assert_non_null(strstr(r->ctx.err, "no contact site 1"));
+    assert_int_equal(tf_solver_solve(r->solver, 0, NULL, 1, NULL, r->u), -1);
+    assert_int_equal(tf_solver_reactions(r->solver, 2, unit_forces[0], r->u, r->u), -1);
+    done(r);
+}
+
+/* block48 has no loads and clamped faces: linear.  The cantilever carries
+ * a traction and prescribed values: affine only.  Both name the solver
+ * they asked for, and an unknown one is refused with the list. */
+static void capabilities_follow_the_problem(void **state)
+{
+    (void)state;
+    run *b = solve(NULL, 0, unit_forces, 1);
+    assert_int_equal(tf_solver_caps_of(b->solver), TF_SOLVER_AFFINE | TF_SOLVER_LINEAR);
+    assert_string_equal(tf_solver_name(b->solver), "rpim-galerkin");
+    assert_non_null(tf_galerkin_info_of(b->solver));
+    assert_true(tf_galerkin_info_of(b->solver)->nnz_k > 0);
+    tf_solver_opts o = b->p->solver;
+    snprintf(o.method, sizeof o.method, "fem");
+    assert_null(tf_solver_create(b->p, &o, &b->ctx));
+    assert_non_null(strstr(b->ctx.err, "no solver 'fem'"));
+    assert_non_null(strstr(b->ctx.err, "rpim-galerkin"));
+    done(b);
+    run *c = solve_on("coeffs/cantilever.yaml", NULL, 0, 0, NULL, 1);
+    assert_int_equal(tf_solver_caps_of(c->solver), TF_SOLVER_AFFINE);
+    done(c);
+}
+
+/* A static solver's history is its cases solved one by one: the same bits
+ * as the batch, and a non-positive step is refused. */
+static void a_static_history_is_the_batch(void **state)
+{
+    (void)state;
+    const double steps[4][3] = {{0, 0, 0}, {0.2, 0, -0.1}, {0.4, -0.3, -0.5}, {0, 0, -1}};
+    run *r = solve(NULL, 0, steps, 4);
+    size_t n = 4 * 3 * r->p->cloud.n;
+    double *h = malloc(n * sizeof *h);
+    assert_int_equal(tf_solver_history(r->solver, 0, steps, 4, 1e-3, h), 0);
+    assert_memory_equal(h, r->u, n * sizeof *h);
+    assert_int_equal(tf_solver_history(r->solver, 0, steps, 4, 0, h), -1);
+    assert_non_null(strstr(r->ctx.err, "time step"));
+    free(h);
+    done(r);
 }
 
 int main(void)
@@ -262,7 +332,8 @@ int main(void)
         cmocka_unit_test(same_bits_whatever_the_thread_count),
         cmocka_unit_test(cell_averaged_volume_strain_relieves_locking),
         cmocka_unit_test(nodes_are_exposed_in_scene_numbering),
+        cmocka_unit_test(capabilities_follow_the_problem),
+        cmocka_unit_test(a_static_history_is_the_batch),
     };
-    tf_quiet = 1;
     return cmocka_run_group_tests_name("solver", tests, NULL, NULL);
 }

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "random_model.h"
+#include "model/golden.h"
 #include "model/target_view.h"
 #include "tfit.h"
 
@@ -126,6 +127,40 @@ static void arguments_and_families(void **state)
     assert_int_equal(tfit_model_check(NULL), TFIT_ERR_ARG);
     assert_int_equal(tfit_model_crc32(NULL), 0u);
     assert_int_equal(tfit_golden_run(NULL, out), UINT32_MAX);
+
+    /* An unchecked model with NULL tables: an argument error, as the Q31
+     * entry points return, never a read through NULL (every degree, both
+     * entry points, each table). */
+    for (uint32_t p = 0; p <= 2; ++p) {
+        for (int table = 0; table < 2; ++table) {
+            const uint32_t dims[1] = {p};
+            char err[256];
+            tf_model *n = tf_model_new("n", TFIT_FAMILY_NODAL, 3, dims, 1, err, sizeof err);
+            tf_model *c = tf_model_new("c", TFIT_FAMILY_CONTACT, 1, dims, 1, err, sizeof err);
+            tfit_model v[2];
+            tf_target_view(n, &v[0]);
+            tf_target_view(c, &v[1]);
+            for (int k = 0; k < 2; ++k) {
+                if (table == 0) {
+                    v[k].coef = NULL;
+                } else {
+                    v[k].dims = NULL;
+                }
+            }
+            assert_int_equal(tfit_displacements(&v[0], in, out), TFIT_ERR_ARG);
+            assert_int_equal(tfit_contact_force(&v[1], in, out), TFIT_ERR_ARG);
+            tf_model_free(n);
+            tf_model_free(c);
+        }
+    }
+    tfit_model_q31 q = {0};
+    q.family = TFIT_FAMILY_NODAL;
+    q.n_out = 1;
+    const int32_t qin[3] = {0, 0, 0};
+    int32_t qout[3];
+    assert_int_equal(tfit_displacements_q31(&q, qin, qout), TFIT_ERR_ARG);
+    q.family = TFIT_FAMILY_CONTACT;
+    assert_int_equal(tfit_contact_force_q31(&q, qin, qout), TFIT_ERR_ARG);
     tf_model_free(nodal);
     tf_model_free(contact);
 }
@@ -140,7 +175,7 @@ static void check_rejections(void **state)
 
     tf_target_view(m, &t);
     assert_int_equal(tfit_model_check(&t), TFIT_OK);
-    assert_int_equal(tfit_model_crc32(&t), tf_model_crc32(m));
+    assert_int_equal(tfit_model_crc32(&t), tf_model_crc32_checked(m, t.check));
 
     t.api_version = TFIT_API_VERSION + 1;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_VERSION);
@@ -153,6 +188,8 @@ static void check_rejections(void **state)
 
     tf_target_view(m, &t);
     t.n_coef -= 1;
+    assert_int_equal(tfit_model_check(&t), TFIT_ERR_CORRUPT); /* no longer coef_end - coef */
+    t.coef_end -= 1;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
     tf_target_view(m, &t);
     t.family = TFIT_FAMILY_CONTACT; /* contact needs exactly one output point */
@@ -161,7 +198,32 @@ static void check_rejections(void **state)
     const uint32_t too_high[1] = {TFIT_MAX_DEGREE + 1};
     tf_target_view(m, &t);
     t.dims = too_high;
+    t.dims_end = too_high + 1;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
+
+    /* a table pointer that no longer matches its end is never read through */
+    const uintptr_t one = 1;
+    for (int b = 0; b < 8 * (int)sizeof(uintptr_t); ++b) {
+        tf_target_view(m, &t);
+        t.coef = (const float *)((uintptr_t)t.coef ^ (one << b));
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_CORRUPT);
+        tf_target_view(m, &t);
+        t.dims = (const uint32_t *)((uintptr_t)t.dims ^ (one << b));
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_CORRUPT);
+        tf_target_view(m, &t);
+        t.node_ids_end = (const uint32_t *)((uintptr_t)t.node_ids_end ^ (one << b));
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_CORRUPT);
+    }
+
+    /* the self-test: results that differ from the carried ones, with a
+     * model CRC that matches, are an arithmetic failure, not damage */
+    for (int b = 0; b < 32; ++b) {
+        tf_target_view(m, &t);
+        t.check[TFIT_CHECK_WORDS - 1] ^= 1u << b;
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_CORRUPT);
+        t.crc32 = tfit_model_crc32(&t);
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_ARITH);
+    }
 
     tf_target_view(m, &t);
     t.crc32 ^= 1u;
@@ -196,6 +258,7 @@ static void zhou_and_modal_rejections(void **state)
     tf_target_view(md, &t);
     uint32_t dims[2] = {md->dims[0], 0};
     t.dims = dims; /* rank 0 */
+    t.dims_end = dims + 2;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
     dims[1] = TFIT_MAX_RANK + 1;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);

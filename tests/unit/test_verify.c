@@ -11,27 +11,50 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
-#include "verify/error_norm.h"
-#include "base/log.h"
-#include "verify/reference.h"
+#include "base/context.h"
+#include "problem/analytic.h"
 #include "scene/scene.h"
+#include "scene/scene_levels.h"
 #include "solvers/solver.h"
+#include "verify/error_norm.h"
 #include "verify/verify.h"
+
+static void quiet(tf_ctx *ctx)
+{
+    tf_ctx_init(ctx);
+    ctx->level = TF_LOG_ERROR;
+}
+
+/* Level k of a study of a scene file, verified. */
+static tf_verify_row level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
+                           unsigned k)
+{
+    char err[512];
+    unsigned label;
+    tf_ctx ctx;
+    quiet(&ctx);
+    tf_scene *s = tf_scene_level(path, sets, n_sets, vary, k, &label, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    tf_verify_row row;
+    if (tf_verify_problem(&s->problem, label, &ctx, &row) != 0) {
+        fail_msg("%s", ctx.err);
+    }
+    tf_scene_free(s);
+    return row;
+}
 
 static void cantilever_converges(void **state)
 {
     (void)state;
     tf_verify_row rows[3];
-    char err[512];
-    int usage;
     for (unsigned k = 0; k < 3; ++k) {
-        if (tf_verify_level("coeffs/cantilever.yaml", NULL, 0, TF_VARY_GRID, k, &rows[k], &usage,
-                            err, sizeof err) != 0) {
-            fail_msg("%s", err);
-        }
+        rows[k] = level("coeffs/cantilever.yaml", NULL, 0, TF_VARY_GRID, k);
     }
     tf_verify_rates(rows, 3);
     assert_int_equal(rows[2].nodes, 65 * 17 * 2);
@@ -44,15 +67,10 @@ static void cantilever_converges(void **state)
 
 static double patch_error(const char *polynomial, unsigned gauss)
 {
-    char set_poly[64], err[512];
+    char set_poly[64];
     snprintf(set_poly, sizeof set_poly, "solver.polynomial=%s", polynomial);
     const char *sets[] = {set_poly};
-    tf_verify_row row;
-    int usage;
-    if (tf_verify_level("tests/solver/patch.yaml", sets, 1, TF_VARY_GAUSS, gauss - 1, &row, &usage,
-                        err, sizeof err) != 0) {
-        fail_msg("%s", err);
-    }
+    tf_verify_row row = level("tests/solver/patch.yaml", sets, 1, TF_VARY_GAUSS, gauss - 1);
     assert_int_equal(row.level, gauss);
     return row.error_l2;
 }
@@ -76,22 +94,41 @@ static void exact_nodal_values_have_no_error(void **state)
 {
     (void)state;
     char err[512];
+    tf_ctx ctx;
+    quiet(&ctx);
     tf_scene *s = tf_scene_load("tests/solver/patch.yaml", NULL, 0, err, sizeof err);
     assert_non_null(s);
-    tf_solver *sv = tf_solver_new(s, err, sizeof err);
+    const tf_problem *p = &s->problem;
+    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     assert_non_null(sv);
-    double *u = malloc(3 * s->cloud.n * sizeof *u), g[9], l2, en;
-    for (size_t i = 0; i < s->cloud.n; ++i) {
-        tf_reference_eval(s, s->cloud.xyz + 3 * i, u + 3 * i, g);
+    double *u = malloc(3 * p->cloud.n * sizeof *u), g[9], l2, en;
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        tf_analytic_eval(p, p->cloud.xyz + 3 * i, u + 3 * i, g);
     }
     /* the linear polynomial reproduces a linear field: no error at all */
-    assert_int_equal(tf_error_norms(tf_solver_shape(sv), s, u, 5, &l2, &en, err, sizeof err), 0);
+    assert_int_equal(tf_error_norms(sv, u, 5, &l2, &en), 0);
     assert_true(l2 < 1e-10 && en < 1e-8);
     u[3 * 100] += 1e-3; /* and the norms see a disturbed node */
-    assert_int_equal(tf_error_norms(tf_solver_shape(sv), s, u, 5, &l2, &en, err, sizeof err), 0);
+    assert_int_equal(tf_error_norms(sv, u, 5, &l2, &en), 0);
     assert_true(l2 > 1e-5 && en > 1e-3);
     free(u);
-    tf_solver_free(sv);
+    tf_solver_destroy(sv);
+    tf_scene_free(s);
+}
+
+/* A problem without an analytic solution cannot be verified (-2, a usage
+ * error), and says so. */
+static void no_reference_no_verification(void **state)
+{
+    (void)state;
+    char err[512];
+    tf_ctx ctx;
+    quiet(&ctx);
+    tf_scene *s = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    assert_non_null(s);
+    tf_verify_row row;
+    assert_int_equal(tf_verify_problem(&s->problem, 0, &ctx, &row), -2);
+    assert_non_null(strstr(ctx.err, "no reference section"));
     tf_scene_free(s);
 }
 
@@ -101,7 +138,7 @@ int main(void)
         cmocka_unit_test(cantilever_converges),
         cmocka_unit_test(patch_error_falls_with_the_gauss_order),
         cmocka_unit_test(exact_nodal_values_have_no_error),
+        cmocka_unit_test(no_reference_no_verification),
     };
-    tf_quiet = 1;
     return cmocka_run_group_tests_name("verify", tests, NULL, NULL);
 }

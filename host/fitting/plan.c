@@ -1,0 +1,11 @@
+/*
+ * plan.c — the default fit plan (plan.h).
+ */
+#include "fitting/plan.h"
+
+void tf_fit_plan_defaults(tf_fit_plan *p)
+{
+    *p = (tf_fit_plan){.family = TFIT_FAMILY_NODAL, .contact = 0, .n_train = 100,
+                       .n_heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
+                       .max_rank = 12};
+}

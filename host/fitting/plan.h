@@ -1,0 +1,28 @@
+/*
+ * plan.h — how a fit samples and searches (docs/fitting.md): the scene's
+ * fit: section, with the command line's choices on top.
+ */
+#ifndef TF_FIT_PLAN_H
+#define TF_FIT_PLAN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "tfit.h"
+
+typedef struct tf_fit_plan {
+    tfit_family family;   /* forward family to emit */
+    int contact;          /* contact site index (-1 when the problem has none) */
+    size_t n_train, n_heldout;
+    uint64_t seed;        /* load-case design and folds */
+    unsigned folds;       /* k of the k-fold cross-validation */
+    uint32_t max_degree;  /* nodal, modal and contact degrees searched: 0 (1) .. max */
+    uint32_t max_rank;    /* modal ranks searched: 1 .. max */
+    int direct;           /* solve every training case even when the solver is affine */
+} tf_fit_plan;
+
+/* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,
+ * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows. */
+void tf_fit_plan_defaults(tf_fit_plan *p);
+
+#endif /* TF_FIT_PLAN_H */

@@ -1,0 +1,89 @@
+/*
+ * read_assimp.c — OBJ, STL, PLY and OFF surfaces through assimp's C API
+ * (surface_read.h).
+ */
+#include "geometry/surface_read.h"
+
+#include <assimp/cimport.h>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+/* Everything but positions and faces is removed before vertices are
+ * joined, so that normals, texture seams or materials cannot split one
+ * position into several vertices (which would open the surface); the
+ * scene graph's transforms are applied and its meshes merged. */
+static const struct aiScene *import(const char *path, struct aiPropertyStore *props)
+{
+    aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS,
+                               aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
+                                   aiComponent_COLORS | aiComponent_TEXCOORDS |
+                                   aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+                                   aiComponent_TEXTURES | aiComponent_LIGHTS |
+                                   aiComponent_CAMERAS | aiComponent_MATERIALS);
+    unsigned flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
+                     aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices;
+    return aiImportFileExWithProperties(path, flags, NULL, props);
+}
+
+/* Vertices and triangles of all meshes, meshes one after the other. */
+static int copy_meshes(const struct aiScene *sc, const char *path, tf_surface *s, tf_geom_msg *m)
+{
+    size_t nv = 0, nt = 0, other = 0;
+    for (unsigned k = 0; k < sc->mNumMeshes; ++k) {
+        const struct aiMesh *me = sc->mMeshes[k];
+        nv += me->mNumVertices;
+        for (unsigned f = 0; f < me->mNumFaces; ++f) {
+            if (me->mFaces[f].mNumIndices == 3) {
+                nt++;
+            } else {
+                other++;
+            }
+        }
+    }
+    if (other) {
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "'%s': %zu faces are points or lines, not triangles", path, other);
+    }
+    if (nt == 0) {
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "'%s': no triangles", path);
+    }
+    if (tf_surface_alloc(s, nv, nt) != 0) {
+        return tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
+    }
+    size_t v0 = 0, t = 0;
+    for (unsigned k = 0; k < sc->mNumMeshes; ++k) {
+        const struct aiMesh *me = sc->mMeshes[k];
+        for (unsigned i = 0; i < me->mNumVertices; ++i) {
+            s->xyz[3 * (v0 + i)] = me->mVertices[i].x;
+            s->xyz[3 * (v0 + i) + 1] = me->mVertices[i].y;
+            s->xyz[3 * (v0 + i) + 2] = me->mVertices[i].z;
+        }
+        for (unsigned f = 0; f < me->mNumFaces; ++f, ++t) {
+            for (int c = 0; c < 3; ++c) {
+                s->tri[3 * t + c] = v0 + me->mFaces[f].mIndices[c];
+            }
+        }
+        v0 += me->mNumVertices;
+    }
+    return TF_GEOM_OK;
+}
+
+int tf_surface_read_assimp(const char *path, tf_surface *s, tf_geom_msg *m)
+{
+    struct aiPropertyStore *props = aiCreatePropertyStore();
+    if (props == NULL) {
+        return tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
+    }
+    const struct aiScene *sc = import(path, props);
+    int rc;
+    if (sc == NULL) {
+        rc = tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path,
+                          aiGetErrorString());
+    } else {
+        rc = copy_meshes(sc, path, s, m);
+        aiReleaseImport(sc);
+    }
+    aiReleasePropertyStore(props);
+    return rc;
+}

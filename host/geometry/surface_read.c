@@ -1,0 +1,47 @@
+/*
+ * surface_read.c — which library reads which mesh format (surface_read.h).
+ */
+#include "geometry/surface_read.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+typedef int (*reader)(const char *, tf_surface *, tf_geom_msg *);
+
+/* The reader for a file name's extension, or NULL. */
+static reader reader_for(const char *ext)
+{
+    static const char *const by_assimp[] = {"obj", "stl", "ply", "off"};
+    if (strcasecmp(ext, "vtk") == 0) {
+        return tf_surface_read_gmsh;
+    }
+    for (size_t k = 0; k < sizeof by_assimp / sizeof by_assimp[0]; ++k) {
+        if (strcasecmp(ext, by_assimp[k]) == 0) {
+            return tf_surface_read_assimp;
+        }
+    }
+    return NULL;
+}
+
+int tf_surface_read(const char *path, tf_surface *s, tf_geom_msg *m)
+{
+    const char *dot = strrchr(path, '.');
+    const char *slash = strrchr(path, '/');
+    const char *ext = dot && (slash == NULL || dot > slash) ? dot + 1 : "";
+    reader read = reader_for(ext);
+    if (read == NULL) {
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "'%s': unknown mesh format '.%s' (read: .obj .stl .ply .off .vtk)",
+                            path, ext);
+    }
+    /* gmsh takes a missing file for a new, empty model: ask first */
+    FILE *fp = fopen(path, "rb");
+    if (fp == NULL) {
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path,
+                            strerror(errno));
+    }
+    fclose(fp);
+    return read(path, s, m);
+}

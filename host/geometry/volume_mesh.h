@@ -1,0 +1,41 @@
+/*
+ * volume_mesh.h — a tetrahedral mesh of the volume a checked surface
+ * encloses (surface_prepare.h), by gmsh: the surface's triangles become a
+ * discrete surface entity, bounded as a surface loop into a volume, which
+ * gmsh's Delaunay mesher fills (mesh.generate(3)).  The surface is not
+ * remeshed: its vertices are nodes, its triangles are the faces of the
+ * boundary tetrahedra, whatever the spacing.  The spacing sets the node
+ * density inside, through a background size field: constant, or graded
+ * towards a point with gmsh's Distance and Threshold fields.
+ *
+ * The result is checked before it is returned (tetmesh_check.h): every
+ * tetrahedron positive, every surface vertex a node with unchanged
+ * coordinates, the boundary faces exactly the surface's triangles.
+ */
+#ifndef TF_VOLUME_MESH_H
+#define TF_VOLUME_MESH_H
+
+#include "geometry/geom_msg.h"
+#include "geometry/surface.h"
+#include "geometry/tetmesh.h"
+
+typedef struct tf_mesh_options {
+    double spacing;       /* target node spacing inside, mm */
+    int graded;           /* grade towards grade_at */
+    double grade_at[3];   /* the contact site, mm */
+    double grade_spacing; /* spacing within grade_radius of grade_at, mm */
+    double grade_radius;  /* mm */
+    double grade_ramp;    /* distance at which the spacing is back to `spacing`, mm */
+} tf_mesh_options;
+
+/* Largest number of tetrahedra a spacing may ask for (an estimate from the
+ * volume, checked before meshing). */
+#define TF_MESH_MAX_TETS 20000000.0
+
+/* Returns TF_GEOM_OK, TF_GEOM_BAD_INPUT (options out of range) or
+ * TF_GEOM_FAILED (the mesher failed, or its mesh failed a check), with
+ * m->error set; t is empty on failure. */
+int tf_volume_mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t,
+                   tf_geom_msg *m);
+
+#endif /* TF_VOLUME_MESH_H */

@@ -1,0 +1,205 @@
+/*
+ * problem.h — a problem: everything a solver needs to compute displacements,
+ * and nothing about where it came from.  Geometry and its node cloud,
+ * material, fixed regions (resolved to nodes), loads, contact sites, the
+ * force envelope, the output nodes, the solver's options and an optional
+ * analytic solution.  Every value has been checked by whoever built it
+ * (host/scene/ builds one from YAML; a test may fill one by hand).  Units:
+ * mm, N, MPa.
+ *
+ * Node numbering (1-based numbers, GUIDE §5 extended to every layer): on a
+ * box grid of nx × ny × nz nodes, node (i, j, k) with k = 0 at the bottom has
+ * number N = i + nx j + nx ny (nz - 1 - k) + 1, so the top layer comes first
+ * and block48's node 61 is the top centre.  Internal node index = N - 1
+ * everywhere in host/.
+ */
+#ifndef TF_PROBLEM_H
+#define TF_PROBLEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "materials/material.h"
+#include "problem/nodes.h"
+
+#define TF_PROBLEM_NAME_MAX 64
+
+/* Displacement components, as a bit mask. */
+enum { TF_COMP_X = 1, TF_COMP_Y = 2, TF_COMP_Z = 4, TF_COMP_ALL = 7 };
+
+/* The body.  A tagged union: a box filled with a grid of nodes today; an
+ * organ's tetrahedral mesh next (a new kind, member and bounds case). */
+typedef enum tf_geometry_kind { TF_GEOMETRY_BOX } tf_geometry_kind;
+
+typedef struct tf_box_geometry {
+    double min[3], max[3]; /* mm */
+    unsigned grid[3];      /* nodes per axis */
+    double jitter;         /* fraction of the spacing, interior nodes */
+    uint64_t seed;         /* of the jitter */
+} tf_box_geometry;
+
+typedef struct tf_geometry {
+    tf_geometry_kind kind;
+    union {
+        tf_box_geometry box; /* TF_GEOMETRY_BOX */
+    } as;
+} tf_geometry;
+
+typedef enum tf_region_kind { TF_REGION_FACE, TF_REGION_PLANE, TF_REGION_BOX } tf_region_kind;
+
+/* A set of nodes: a face of the box, a plane x_axis = at, or a box. */
+typedef struct tf_region {
+    tf_region_kind kind;
+    tf_face face;   /* TF_REGION_FACE */
+    int axis;       /* TF_REGION_PLANE: 0, 1, 2 */
+    double at;      /* TF_REGION_PLANE, mm */
+    double min[3];  /* TF_REGION_BOX, mm */
+    double max[3];
+} tf_region;
+
+typedef struct tf_fixed {
+    tf_region where;
+    unsigned components; /* TF_COMP_* mask of the prescribed components */
+    double value[3];     /* prescribed displacement, mm */
+    int exact;           /* value taken from the problem's analytic solution */
+    uint32_t *nodes;     /* resolved node indices, ascending */
+    size_t n_nodes;
+} tf_fixed;
+
+typedef enum tf_patch_shape {
+    TF_PATCH_POINT,  /* a force at one node */
+    TF_PATCH_FACE,   /* uniform traction over a whole face */
+    TF_PATCH_RECT,   /* uniform traction over a rectangle of a face */
+    TF_PATCH_CIRCLE, /* uniform traction over a disc of a face */
+} tf_patch_shape;
+
+/* Where a force acts.  In-face coordinates (u, v): (x, y) on z faces,
+ * (y, z) on x faces, (x, z) on y faces. */
+typedef struct tf_patch {
+    tf_patch_shape shape;
+    uint32_t node;      /* TF_PATCH_POINT: node index */
+    tf_face face;       /* the other shapes */
+    double centre[2];   /* RECT, CIRCLE: (u, v), mm */
+    double size[2];     /* RECT: side lengths along u and v, mm */
+    double radius;      /* CIRCLE, mm */
+} tf_patch;
+
+/* A load that is always applied: a total force spread over a patch, or the
+ * analytic solution's traction (exact). */
+typedef struct tf_load {
+    tf_patch patch;
+    double force[3]; /* N, total over the patch */
+    int exact;
+} tf_load;
+
+/* A contact site: where the haptic force acts, and the node whose
+ * displacement is the contact displacement. */
+typedef struct tf_contact {
+    char name[TF_PROBLEM_NAME_MAX];
+    uint32_t node;  /* node index */
+    tf_patch patch; /* TF_PATCH_POINT at `node` when no patch was given */
+} tf_contact;
+
+/* The forces the haptic device may apply: the ball |F - centre| <= radius. */
+typedef struct tf_envelope {
+    double radius;    /* N */
+    double centre[3]; /* N */
+} tf_envelope;
+
+typedef enum tf_output_kind {
+    TF_OUT_ALL,
+    TF_OUT_FACE,
+    TF_OUT_BOX,
+    TF_OUT_NODES,
+    TF_OUT_CONTACT,
+} tf_output_kind;
+
+typedef struct tf_outputs {
+    tf_output_kind kind;
+    uint32_t *nodes; /* resolved node indices (ascending, or in list order for TF_OUT_NODES) */
+    size_t n_nodes;
+} tf_outputs;
+
+typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
+typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
+typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
+
+#define TF_SOLVER_METHOD_MAX 32
+
+/* Which solver (by its registered name, solvers/solver.h) and how it
+ * discretises.  The meshless options are those of the RPIM Galerkin solver;
+ * a solver ignores what it does not use. */
+typedef struct tf_solver_opts {
+    char method[TF_SOLVER_METHOD_MAX]; /* registered solver name, e.g. "rpim-galerkin" */
+    double support;   /* alpha_s: support radius in nodal spacings (per axis) */
+    tf_support_centre centre; /* support centred at each Gauss point or at its cell */
+    double alpha_c;   /* RBF: R(r) = (r^2 + (alpha_c d_c)^2)^q   (seed eq 12) */
+    double d_c;       /* mm */
+    double q;
+    int polynomial;   /* 0: none (seed eq 12); 1: linear augmentation (seed eq 11) */
+    tf_volumetric volumetric; /* volumetric strain at each Gauss point, or per cell (B-bar) */
+    unsigned cells[3];/* background cells per axis */
+    unsigned gauss;   /* Gauss-Legendre points per axis per cell */
+    tf_bc_method bc;
+    double penalty;   /* lambda of seed eq 28 */
+    double rcond_warn;/* warn when a local system's reciprocal condition is below */
+} tf_solver_opts;
+
+typedef enum tf_analytic_kind {
+    TF_ANALYTIC_NONE,
+    TF_ANALYTIC_CANTILEVER,
+    TF_ANALYTIC_LINEAR,
+} tf_analytic_kind;
+
+/* An analytic solution the problem is checked against (analytic.h). */
+typedef struct tf_analytic {
+    tf_analytic_kind kind;
+    double load;         /* CANTILEVER: end load P per mm of thickness, N/mm (+y; plane strain) */
+    double offset[3];    /* LINEAR: u(x) = offset + gradient x, mm */
+    double gradient[9];  /* LINEAR: row-major du_i/dx_j */
+} tf_analytic;
+
+typedef struct tf_problem {
+    char name[TF_PROBLEM_NAME_MAX];
+    char source[512];   /* where it came from (a scene file), for messages */
+    tf_geometry geometry;
+    tf_cloud cloud;     /* the nodes */
+    tf_material material; /* a law and its parameters (materials/material.h) */
+    tf_fixed *fixed;
+    size_t n_fixed;
+    tf_load *loads;
+    size_t n_loads;
+    tf_contact *contacts;
+    size_t n_contacts;
+    tf_envelope envelope;
+    tf_outputs outputs;
+    tf_solver_opts solver;
+    tf_analytic analytic;
+} tf_problem;
+
+/* Frees what the problem owns (cloud, fixed nodes, loads, contacts, outputs)
+ * and zeroes it; the struct itself belongs to the caller. */
+void tf_problem_release(tf_problem *p);
+
+/* Index of the contact site called name, or -1. */
+int tf_problem_contact(const tf_problem *p, const char *name);
+
+/* The 1-based node number of a node index (the numbering above). */
+static inline uint32_t tf_problem_node_number(const tf_problem *p, size_t index)
+{
+    (void)p;
+    return (uint32_t)index + 1;
+}
+
+/* The geometry's bounding box, mm. */
+void tf_problem_bounds(const tf_problem *p, double lo[3], double hi[3]);
+
+/* Marks the DOFs (3 i + a) a fixed region prescribes: mask[dof] = 1, else
+ * 0; mask holds 3 cloud.n entries. */
+void tf_problem_fixed_dofs(const tf_problem *p, unsigned char *mask);
+
+/* 1 when the response to a contact force is linear, not only affine: no
+ * load always acts and every prescribed displacement is zero. */
+int tf_problem_unloaded(const tf_problem *p);
+
+#endif /* TF_PROBLEM_H */

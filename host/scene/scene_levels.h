@@ -1,0 +1,29 @@
+/*
+ * scene_levels.h — the levels of a convergence study of a scene file
+ * (`tissuefit verify`), each a scene read with extra overrides.
+ *
+ * Grid series: level k halves the nodal spacing k times on every axis
+ * with more than two nodes, and scales the background cells and the RBF
+ * length d_c with it, so every level is the same discretisation at a finer
+ * scale.  An axis with two nodes is the thickness of a plane problem: it
+ * keeps its two nodes and its extent shrinks with the spacing.
+ *
+ * Gauss series: level k uses k + 1 Gauss points per axis, nothing else
+ * changes.
+ */
+#ifndef TF_SCENE_LEVELS_H
+#define TF_SCENE_LEVELS_H
+
+#include <stddef.h>
+
+#include "scene/scene.h"
+
+typedef enum tf_vary { TF_VARY_GRID, TF_VARY_GAUSS } tf_vary;
+
+/* Level k of the study of a scene file, with the user's overrides applied
+ * first; *label is the level's name in a table (grid: k; gauss: the Gauss
+ * order).  Returns NULL with a message (a bad scene) in err. */
+tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
+                         unsigned k, unsigned *label, char *err, size_t errlen);
+
+#endif /* TF_SCENE_LEVELS_H */

@@ -1,0 +1,390 @@
+/*
+ * galerkin.c — the RPIM Galerkin solver: build once, solve many
+ * (galerkin.h).
+ */
+#include "solvers/galerkin/galerkin.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/log.h"
+#include "base/peak_memory.h"
+#include "solvers/assemble.h"
+#include "solvers/cholmod_solve.h"
+#include "solvers/constraints.h"
+#include "solvers/loads.h"
+
+typedef struct galerkin {
+    tf_solver base;    /* first: a galerkin is a tf_solver (base.opts: its options) */
+    tf_shape sh;
+    int shape_ok;
+    tf_csc k;          /* full stiffness, every DOF */
+    tf_constraints bc; /* prescribed DOFs */
+    double *f0;        /* 3N: the problem's loads */
+    double *basis;     /* n_contacts x (3N x 3): unit forces at each site */
+    double *rhs0;      /* system size: constant part of every right-hand side */
+    tf_chol *chol;
+    tf_galerkin_info detail;
+} galerkin;
+
+static galerkin *of(tf_solver *s) { return (galerkin *)s; }
+static const galerkin *of_const(const tf_solver *s) { return (const galerkin *)s; }
+
+static int build_loads(galerkin *g, const tf_problem *p, tf_ctx *ctx)
+{
+    size_t n3 = g->k.n;
+    for (size_t k = 0; k < p->n_loads; ++k) {
+        const tf_load *ld = &p->loads[k];
+        int rc = ld->exact
+                     ? tf_load_exact(&g->sh, p, &ld->patch, g->f0, ctx->err, sizeof ctx->err)
+                     : tf_load_patch(&g->sh, &ld->patch, ld->force, g->f0, ctx->err,
+                                     sizeof ctx->err);
+        if (rc != 0) {
+            return -1;
+        }
+    }
+    for (size_t c = 0; c < p->n_contacts; ++c) {
+        if (tf_load_patch(&g->sh, &p->contacts[c].patch, NULL, g->basis + 3 * n3 * c, ctx->err,
+                          sizeof ctx->err) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The system matrix and the constant part of every right-hand side, then
+ * the factorisation. */
+static int factorise(galerkin *g, tf_ctx *ctx)
+{
+    size_t n3 = g->k.n;
+    tf_csc a = {0};
+    tf_chol_info ci;
+    if (g->base.opts.bc == TF_BC_PENALTY) {
+        g->rhs0 = malloc(n3 * sizeof *g->rhs0);
+        if (g->rhs0 == NULL) {
+            return tf_fail(ctx, "out of memory");
+        }
+        memcpy(g->rhs0, g->f0, n3 * sizeof *g->rhs0);
+        if (tf_constraints_penalise(&g->bc, &g->k, g->base.opts.penalty, &a, g->rhs0) != 0) {
+            return tf_fail(ctx, "out of memory");
+        }
+    } else {
+        double *ku = malloc(n3 * sizeof *ku);
+        g->rhs0 = malloc((g->bc.n_free + 1) * sizeof *g->rhs0);
+        if (ku == NULL || g->rhs0 == NULL || tf_constraints_reduce(&g->bc, &g->k, &a) != 0) {
+            free(ku);
+            return tf_fail(ctx, "out of memory");
+        }
+        /* F_f - K_fc u_bar_c */
+        tf_csc_symv(&g->k, g->bc.ubar, ku, 1);
+        for (size_t d = 0; d < n3; ++d) {
+            if (!g->bc.fixed[d]) {
+                g->rhs0[g->bc.free_index[d]] = g->f0[d] - ku[d];
+            }
+        }
+        free(ku);
+    }
+    if (a.n == 0) {
+        tf_csc_free(&a);
+        return tf_fail(ctx, "every degree of freedom is fixed: nothing to solve");
+    }
+    g->chol = tf_chol_factor(&a, &ci, ctx->err, sizeof ctx->err);
+    tf_csc_free(&a);
+    if (g->chol == NULL) {
+        return -1;
+    }
+    g->detail.t_factor = ci.t_analyse + ci.t_factor;
+    g->detail.nnz_l = ci.nnz_l;
+    g->detail.flops = ci.flops;
+    g->detail.ordering = ci.ordering;
+    return 0;
+}
+
+static void announce(const galerkin *g, const tf_problem *p, const tf_ctx *ctx)
+{
+    const tf_solver_opts *o = &g->base.opts;
+    const tf_cells *c = &g->sh.cells;
+    tf_info(ctx,
+            "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points, support %g x spacing "
+            "(%s-centred), %s, volumetric strain %s, BCs by %s",
+            p->cloud.n, 3 * p->cloud.n, tf_cells_count(c), c->gauss, o->support,
+            o->centre == TF_SUPPORT_CELL ? "cell" : "point",
+            o->polynomial ? "RBF + linear polynomial" : "RBF only",
+            o->volumetric == TF_VOLUMETRIC_CELL ? "averaged per cell" : "at every point",
+            o->bc == TF_BC_PENALTY ? "penalty" : "elimination");
+}
+
+static void destroy(tf_solver *s)
+{
+    galerkin *g = of(s);
+    if (g->shape_ok) {
+        tf_shape_free(&g->sh);
+    }
+    tf_csc_free(&g->k);
+    tf_constraints_release(&g->bc);
+    free(g->f0);
+    free(g->basis);
+    free(g->rhs0);
+    tf_chol_free(g->chol);
+    free(g);
+}
+
+/* Shape functions and the stiffness K of every DOF. */
+static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
+{
+    double lo[3], hi[3];
+    tf_problem_bounds(p, lo, hi);
+    if (tf_shape_init(&g->sh, &p->cloud, lo, hi, &g->base.opts) != 0) {
+        return tf_fail(ctx, "out of memory");
+    }
+    g->shape_ok = 1;
+    announce(g, p, ctx);
+    tf_assembly_info ai;
+    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    if (tf_assemble_stiffness(&g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
+                              tf_ctx_threads(ctx), &g->k, &ai, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
+    g->detail.points = ai.points;
+    g->detail.nnz_k = g->k.nnz;
+    g->detail.t_pattern = ai.t_pattern;
+    g->detail.t_shape = ai.t_values * ai.shape_fraction;
+    g->detail.t_assemble = ai.t_values - g->detail.t_shape;
+    g->detail.st = ai.st;
+    tf_info(ctx, "solver: assembled %zu Gauss points in %.2f s (K has %zu stored entries)",
+            ai.points, ai.t_pattern + ai.t_values, g->k.nnz);
+    return 0;
+}
+
+static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    if (p->material.law != TF_LAW_LINEAR) {
+        tf_fail(ctx, "%s: the rpim-galerkin solver solves linear elastic materials, not %s",
+                p->name, tf_law_name(p->material.law));
+        return NULL;
+    }
+    galerkin *g = calloc(1, sizeof *g);
+    if (g == NULL) {
+        tf_fail(ctx, "out of memory");
+        return NULL;
+    }
+    g->base.opts = *o;
+    tf_shape_stats_reset(&g->detail.st);
+    if (assemble(g, p, ctx) != 0) {
+        destroy(&g->base);
+        return NULL;
+    }
+    double t0 = omp_get_wtime();
+    size_t n3 = g->k.n;
+    g->f0 = calloc(n3, sizeof *g->f0);
+    g->basis = calloc(3 * n3 * (p->n_contacts + 1), sizeof *g->basis);
+    if (!g->f0 || !g->basis || tf_constraints_init(&g->bc, p) != 0) {
+        tf_fail(ctx, "out of memory");
+        destroy(&g->base);
+        return NULL;
+    }
+    if (build_loads(g, p, ctx) != 0) {
+        destroy(&g->base);
+        return NULL;
+    }
+    g->detail.t_loads = omp_get_wtime() - t0;
+    tf_info(ctx, "solver: factorising %zu unknowns (CHOLMOD)",
+            g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free);
+    if (factorise(g, ctx) != 0) {
+        destroy(&g->base);
+        return NULL;
+    }
+    tf_info(ctx, "solver: factorised in %.2f s (%s ordering, %.3g entries in L)",
+            g->detail.t_factor, g->detail.ordering, g->detail.nnz_l);
+    g->base.info = (tf_solver_info){
+        .nodes = p->cloud.n,
+        .dofs = n3,
+        .unknowns = g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free,
+        .t_setup = g->detail.t_pattern + g->detail.t_shape + g->detail.t_assemble +
+                   g->detail.t_factor,
+    };
+    return &g->base;
+}
+
+static unsigned caps(const tf_solver *s)
+{
+    return TF_SOLVER_AFFINE | (tf_problem_unloaded(s->problem) ? TF_SOLVER_LINEAR : 0u);
+}
+
+/* Full load vector of one case: the problem's loads + the contact force. */
+static void load_vector(const galerkin *g, int contact, const double *force, double *f)
+{
+    size_t n3 = g->k.n;
+    memcpy(f, g->f0, n3 * sizeof *f);
+    if (contact >= 0) {
+        const double *b = g->basis + 3 * n3 * (size_t)contact;
+        for (size_t d = 0; d < n3; ++d) {
+            f[d] += b[d] * force[0] + b[n3 + d] * force[1] + b[2 * n3 + d] * force[2];
+        }
+    }
+}
+
+/* Right-hand side of one case in the factorised system's DOFs. */
+static void rhs_of(const galerkin *g, int contact, const double *force, double *f, double *rhs)
+{
+    size_t n3 = g->k.n;
+    const tf_constraints *bc = &g->bc;
+    load_vector(g, contact, force, f);
+    if (g->base.opts.bc == TF_BC_PENALTY) {
+        for (size_t d = 0; d < n3; ++d) {
+            rhs[d] = bc->fixed[d] ? g->rhs0[d] : f[d];
+        }
+    } else {
+        for (size_t d = 0; d < n3; ++d) {
+            if (!bc->fixed[d]) {
+                rhs[bc->free_index[d]] = g->rhs0[bc->free_index[d]] + f[d] - g->f0[d];
+            }
+        }
+    }
+}
+
+/* One CHOLMOD solve with n right-hand sides; u0 is not needed (linear). */
+static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
+                 const double *u0, double *u)
+{
+    (void)u0;
+    if (n == 0) {
+        return 0; /* (the interface never asks; this tells the compiler b is filled) */
+    }
+    galerkin *g = of(s);
+    tf_ctx *ctx = s->ctx;
+    const tf_constraints *bc = &g->bc;
+    size_t n3 = g->k.n, m = g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
+    double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
+    double *f = malloc(n3 * sizeof *f);
+    if (!b || !x || !f) {
+        free(b);
+        free(x);
+        free(f);
+        return tf_fail(ctx, "out of memory for %zu load cases of %zu DOFs", n, n3);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
+    }
+    int rc = tf_chol_solve(g->chol, b, x, n, ctx->err, sizeof ctx->err);
+    for (size_t k = 0; k < n && rc == 0; ++k) {
+        double *uk = u + k * n3;
+        for (size_t d = 0; d < n3; ++d) {
+            uk[d] = m == n3        ? x[k * m + d]
+                    : bc->fixed[d] ? bc->ubar[d]
+                                   : x[k * m + (size_t)bc->free_index[d]];
+        }
+    }
+    free(b);
+    free(x);
+    free(f);
+    return rc;
+}
+
+static int reactions(const tf_solver *s, int contact, const double force[3], const double *u,
+                     double *r)
+{
+    const galerkin *g = of_const(s);
+    size_t n3 = g->k.n;
+    double *f = malloc(n3 * sizeof *f);
+    if (f == NULL) {
+        return tf_fail(s->ctx, "out of memory");
+    }
+    load_vector(g, contact, force, f);
+    tf_csc_symv(&g->k, u, r, 1);
+    for (size_t d = 0; d < n3; ++d) {
+        r[d] -= f[d];
+    }
+    free(f);
+    return 0;
+}
+
+/* u_h = sum_I phi_I u_I and its gradient, point by point (RPIM interpolant). */
+static int field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
+                 double *grad, char *err, size_t errlen)
+{
+    const tf_shape *sh = &of_const(s)->sh;
+    tf_shape_work w;
+    tf_shape_work_init(&w);
+    int rc = 0;
+    for (size_t p = 0; p < np && rc == 0; ++p) {
+        const double *xp = x + 3 * p;
+        double *up = uh + 3 * p, *gp = grad + 9 * p;
+        rc = tf_shape_at(sh, &w, xp, tf_shape_cell(sh, xp), 1);
+        if (rc != 0) {
+            snprintf(err, errlen, "%s", w.err);
+            break;
+        }
+        for (int i = 0; i < 9; ++i) {
+            gp[i] = 0;
+        }
+        up[0] = up[1] = up[2] = 0;
+        for (size_t k = 0; k < w.n; ++k) {
+            const double *ui = u + 3 * (size_t)w.idx[k];
+            for (int i = 0; i < 3; ++i) {
+                up[i] += w.phi[k] * ui[i];
+                for (int j = 0; j < 3; ++j) {
+                    gp[3 * i + j] += w.dphi[(size_t)j * w.n + k] * ui[i];
+                }
+            }
+        }
+    }
+    tf_shape_work_free(&w);
+    return rc;
+}
+
+static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }
+static const double *coords(const tf_solver *s) { return s->problem->cloud.xyz; }
+
+/* Time split and memory (progress), and a warning when local systems were
+ * ill-conditioned: how many, the worst place and what to change. */
+static void report(const tf_solver *s)
+{
+    const galerkin *g = of_const(s);
+    const tf_galerkin_info *in = &g->detail;
+    tf_info(s->ctx,
+            "solver: times (s): pattern %.3f, shape functions %.3f, assembly %.3f, loads %.3f, "
+            "factorisation %.3f, solves %.3f (%zu right-hand sides); peak memory %.0f MiB",
+            in->t_pattern, in->t_shape, in->t_assemble, in->t_loads, in->t_factor,
+            s->info.t_solve, s->info.solves, tf_peak_mib());
+    tf_info(s->ctx,
+            "solver: %zu local systems of %zu to %zu nodes, smallest reciprocal condition %.2g",
+            in->st.systems, in->st.min_nodes, in->st.max_nodes, in->st.min_rcond);
+    if (in->st.ill > 0) {
+        tf_warn(s->ctx,
+                "%s: %zu of %zu local RPIM systems are ill-conditioned (reciprocal condition "
+                "below %.2g; worst %.2g near (%g, %g, %g) mm); the shape functions lose about "
+                "%.0f digits: lower solver.rbf.d_c or solver.support",
+                s->problem->source, in->st.ill, in->st.systems, g->base.opts.rcond_warn,
+                in->st.min_rcond, in->st.worst_at[0], in->st.worst_at[1], in->st.worst_at[2],
+                in->st.min_rcond > 0 ? -log10(in->st.min_rcond) : 16.0);
+    }
+}
+
+const tf_solver_ops tf_galerkin_ops = {
+    .name = "rpim-galerkin",
+    .summary = "RPIM Galerkin, linear elasticity, one CHOLMOD factorisation (seed 000 §2)",
+    .create = create,
+    .caps = caps,
+    .solve = solve,
+    .history = NULL,
+    .reactions = reactions,
+    .field = field,
+    .node_count = node_count,
+    .coords = coords,
+    .report = report,
+    .destroy = destroy,
+};
+
+const tf_galerkin_info *tf_galerkin_info_of(const tf_solver *s)
+{
+    return s->ops == &tf_galerkin_ops ? &of_const(s)->detail : NULL;
+}
+
+const tf_shape *tf_galerkin_shape(const tf_solver *s)
+{
+    return s->ops == &tf_galerkin_ops ? &of_const(s)->sh : NULL;
+}

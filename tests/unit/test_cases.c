@@ -1,0 +1,135 @@
+/*
+ * test_cases.c — the load cases of a fit follow what the solver declares:
+ * an affine solver's training cases are superposed from four unit solves,
+ * any other solver's are all solved, and the two agree to rounding.  The
+ * "other" solver is the RPIM Galerkin solver with its capabilities hidden
+ * (same operations, caps 0), so the only difference is the pipeline's path.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "base/context.h"
+#include "fitting/cases.h"
+#include "scene/scene.h"
+#include "solvers/galerkin/galerkin.h"
+#include "solvers/solver.h"
+
+#define N_TRAIN 30
+#define N_HELD 10
+
+static unsigned no_caps(const tf_solver *s)
+{
+    (void)s;
+    return 0;
+}
+
+static double max_abs(const double *v, size_t n)
+{
+    double m = 0;
+    for (size_t i = 0; i < n; ++i) {
+        m = fmax(m, fabs(v[i]));
+    }
+    return m;
+}
+
+static double max_diff(const double *a, const double *b, size_t n)
+{
+    double m = 0;
+    for (size_t i = 0; i < n; ++i) {
+        m = fmax(m, fabs(a[i] - b[i]));
+    }
+    return m;
+}
+
+/* block48 (linear), and block48 with a load that always acts (affine: the
+ * superposition's constant term is not zero). */
+static void check_paths(const char *const *sets, size_t n_sets)
+{
+    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, n_sets, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    const tf_problem *p = &s->problem;
+    tf_solver_ops plain = tf_galerkin_ops;
+    plain.name = "galerkin-without-caps";
+    plain.caps = no_caps;
+    tf_solver *affine = tf_solver_create(p, NULL, &ctx);
+    tf_solver *other = tf_solver_create_as(&plain, p, NULL, &ctx);
+    assert_non_null(affine);
+    assert_non_null(other);
+    assert_true(tf_solver_caps_of(affine) & TF_SOLVER_AFFINE);
+    assert_int_equal(!!(tf_solver_caps_of(affine) & TF_SOLVER_LINEAR), n_sets == 0);
+    assert_int_equal(tf_solver_caps_of(other), 0);
+
+    tf_cases a, o;
+    assert_int_equal(tf_cases_build(p, affine, 0, N_TRAIN, N_HELD, 7, 0, &a), 0);
+    assert_int_equal(tf_cases_build(p, other, 0, N_TRAIN, N_HELD, 7, 0, &o), 0);
+    assert_true(a.superposed && !o.superposed);
+    assert_int_equal(a.solves, 4 + N_HELD);           /* unit responses + held-out */
+    assert_int_equal(o.solves, 4 * N_TRAIN + N_HELD); /* training, 3 axes, held-out */
+
+    /* superposition against direct solves: rounding only */
+    const size_t rows = 3 * p->outputs.n_nodes;
+    double scale = max_abs(o.train.u, N_TRAIN * rows);
+    assert_true(scale > 1);
+    assert_true(max_diff(a.train.u, o.train.u, N_TRAIN * rows) < 1e-13 * scale);
+    assert_true(max_diff(&a.train.contact[0][0], &o.train.contact[0][0], 3 * N_TRAIN) <
+                1e-13 * scale);
+    for (int k = 0; k < 3; ++k) {
+        assert_true(max_diff(a.axis[k].u, o.axis[k].u, N_TRAIN * rows) < 1e-13 * scale);
+    }
+    /* the held-out cases are solved on both paths: the same bits */
+    assert_memory_equal(a.heldout.u, o.heldout.u, N_HELD * rows * sizeof(double));
+
+    /* a response at a new force: superposed, or one more solve */
+    const double f[3] = {0.3, -0.2, -0.6};
+    double *ua = malloc(rows * sizeof *ua), *uo = malloc(rows * sizeof *uo), ca[3], co[3];
+    size_t before = o.solves;
+    assert_int_equal(tf_cases_response(&a, f, ua, ca), 0);
+    assert_int_equal(tf_cases_response(&o, f, uo, co), 0);
+    assert_int_equal(o.solves, before + 1);
+    assert_true(max_diff(ua, uo, rows) < 1e-13 * scale);
+    assert_true(max_diff(ca, co, 3) < 1e-13 * scale);
+
+    /* --direct on the affine solver: every case solved, as the other one */
+    tf_cases d;
+    assert_int_equal(tf_cases_build(p, affine, 0, N_TRAIN, N_HELD, 7, 1, &d), 0);
+    assert_false(d.superposed);
+    assert_memory_equal(d.train.u, o.train.u, N_TRAIN * rows * sizeof(double));
+
+    free(ua);
+    free(uo);
+    tf_cases_free(&a);
+    tf_cases_free(&o);
+    tf_cases_free(&d);
+    tf_solver_destroy(affine);
+    tf_solver_destroy(other);
+    tf_scene_free(s);
+}
+
+static void superposed_only_when_the_solver_is_affine(void **state)
+{
+    (void)state;
+    const char *loaded[] = {"loads.0.node=50", "loads.0.force=0.2,0,-0.4"};
+    check_paths(NULL, 0);
+    check_paths(loaded, 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(superposed_only_when_the_solver_is_affine),
+    };
+    return cmocka_run_group_tests_name("cases", tests, NULL, NULL);
+}
