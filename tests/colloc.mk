@@ -12,14 +12,10 @@
 # Unit tests (tests/unit/test_colloc*.c) run with check-unit and
 # check-sanitize.
 
-COLLOC_CLOUD := tests/colloc/hertz_cloud.c
-
-$(T)/colloc/%: tests/colloc/%.c $(COLLOC_CLOUD) tests/colloc/hertz_cloud.h \
-    $(B)/native/libtissuefit-host.a | deps-build
+$(T)/colloc/%: tests/colloc/%.c $(B)/native/libtissuefit-host.a | deps-build
 	@mkdir -p $(@D)
 	$(call say,BUILD)
-	$(Q)$(CC) $(TEST_CFLAGS) -O2 -Itests/colloc $< $(COLLOC_CLOUD) \
-	  $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
 
 DEBS_COLLOC_STUDY := $(DEBS_BUILD) gnuplot-nox
 .PHONY: check-colloc hertz-study bench-colloc block48-colloc deps-colloc-study

@@ -126,6 +126,18 @@ typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumet
 
 #define TF_SOLVER_METHOD_MAX 32
 
+/* The MLS collocation solver's options (solvers/collocation/, scene
+ * solver.collocation; docs/collocation.md). */
+typedef struct tf_colloc_settings {
+    unsigned neighbours;    /* k nearest (ties at the k-th distance included) */
+    double support;         /* support radius / mean neighbour distance */
+    double stabilisation;   /* weight of the fit-residual energy */
+    double volume_constant; /* k_v of seed 004 eq 12, MPa */
+    double density;         /* t/mm^3 (1e-9: 1000 kg/m^3) */
+    double damping;         /* mass-proportional damping of load histories, 1/s */
+    double tolerance;       /* of the dynamic relaxation (relative residual) */
+} tf_colloc_settings;
+
 /* Which solver (by its registered name, solvers/solver.h) and how it
  * discretises.  The meshless options are those of the RPIM Galerkin solver;
  * a solver ignores what it does not use. */
@@ -143,6 +155,7 @@ typedef struct tf_solver_opts {
     tf_bc_method bc;
     double penalty;   /* lambda of seed eq 28 */
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    tf_colloc_settings colloc; /* "mls-collocation" */
 } tf_solver_opts;
 
 typedef enum tf_analytic_kind {

@@ -12,6 +12,7 @@
 
 #include "problem/regions.h"
 #include "scene/scene_regions.h"
+#include "solvers/collocation/colloc_solver.h"
 #include "solvers/solver.h"
 
 static int fail(sd_issue *is, const char *path, const char *fmt, ...)
@@ -297,11 +298,50 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
         .rcond_warn = 1e-12,
+        .colloc = tf_colloc_settings_default(),
     };
     for (int a = 0; a < 3; ++a) {
         o.cells[a] = grid[a] - 1;
     }
     return o;
+}
+
+/* solver.collocation (the mls-collocation solver, docs/collocation.md). */
+static int colloc(const sd_colloc *d, tf_colloc_settings *c, sd_issue *is)
+{
+    if (d == NULL) {
+        return 0;
+    }
+    c->neighbours = d->neighbours ? *d->neighbours : c->neighbours;
+    c->support = d->support ? *d->support : c->support;
+    c->stabilisation = d->stabilisation ? *d->stabilisation : c->stabilisation;
+    c->volume_constant = d->volume_constant ? *d->volume_constant : c->volume_constant;
+    c->density = d->density ? *d->density : c->density;
+    c->damping = d->damping ? *d->damping : c->damping;
+    c->tolerance = d->tolerance ? *d->tolerance : c->tolerance;
+    if (c->neighbours < 4 || c->neighbours > 256) {
+        return fail(is, "solver.collocation.neighbours", "4 to 256 nearest particles");
+    }
+    if (!(c->support > 1 && c->support <= 10)) {
+        return fail(is, "solver.collocation.support",
+                    "the support radius must be 1 to 10 mean neighbour distances");
+    }
+    if (!(isfinite(c->stabilisation) && c->stabilisation >= 0)) {
+        return fail(is, "solver.collocation.stabilisation", "must be a number >= 0");
+    }
+    if (!(isfinite(c->volume_constant) && c->volume_constant >= 0)) {
+        return fail(is, "solver.collocation.volume_constant", "must be >= 0 (MPa)");
+    }
+    if (!(isfinite(c->density) && c->density > 0)) {
+        return fail(is, "solver.collocation.density", "must be > 0 (t/mm^3; water: 1e-9)");
+    }
+    if (!(isfinite(c->damping) && c->damping >= 0)) {
+        return fail(is, "solver.collocation.damping", "must be >= 0 (1/s)");
+    }
+    if (!(c->tolerance > 0 && c->tolerance < 1)) {
+        return fail(is, "solver.collocation.tolerance", "must lie in (0, 1)");
+    }
+    return 0;
 }
 
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
@@ -363,7 +403,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
         return fail(is, "solver.rcond_warn", "must lie in (0, 1)");
     }
-    return 0;
+    return colloc(d->collocation, &o->colloc, is);
 }
 
 static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)

@@ -87,6 +87,16 @@ typedef struct sd_rbf {
     double *q;
 } sd_rbf;
 
+typedef struct sd_colloc {
+    unsigned *neighbours;
+    double *support;
+    double *stabilisation;
+    double *volume_constant;
+    double *density;
+    double *damping;
+    double *tolerance;
+} sd_colloc;
+
 typedef struct sd_solver {
     char *method;    /* a registered solver's name (solvers/solver.h) */
     double *support;
@@ -99,6 +109,7 @@ typedef struct sd_solver {
     int *bc;         /* tf_bc_method */
     double *penalty;
     double *rcond_warn;
+    sd_colloc *collocation; /* "mls-collocation" */
 } sd_solver;
 
 typedef struct sd_reference {

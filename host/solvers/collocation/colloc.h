@@ -38,6 +38,7 @@ typedef struct tf_colloc_opts {
     double kv;           /* volume-conservation constant of eq 12, MPa (default 0) */
     double stab;         /* weight of the fit-residual energy (ours, default 0.3; see
                           * docs/collocation.md: 0 is the seed's method) */
+    int threads;         /* OpenMP threads of the parallel loops; 0: OpenMP's default */
 } tf_colloc_opts;
 
 void tf_colloc_defaults(tf_colloc_opts *o);

@@ -50,7 +50,7 @@ void tf_colloc_impose(tf_colloc *c, double *u, double *v)
 void tf_colloc_kick_drift(tf_colloc *c, const double *m, double dt, double alpha)
 {
     double damp = alpha * dt / 2, keep = (1 - damp) / (1 + damp), gain = dt / (1 + damp);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         double inv = gain / m[i];
         for (int a = 0; a < 3; ++a) {

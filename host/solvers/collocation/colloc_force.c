@@ -219,7 +219,7 @@ int tf_colloc_eval(tf_colloc *c, const double *u, double dt, double *f, double *
         u = c->ue;
         fa = c->fe;
     }
-#pragma omp parallel
+#pragma omp parallel num_threads(tf_colloc_threads(c))
     {
 #pragma omp for schedule(static) reduction(| : failed)
         for (size_t i = 0; i < n; ++i) {
@@ -263,7 +263,7 @@ void tf_colloc_deformation(tf_colloc *c, const double *u, double *F)
         tf_colloc_ghost_fill(c, u, c->ue);
         u = c->ue;
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         double q[3], *Fi = F + 9 * i;
         gradient(c, i, u, Fi, q);

@@ -88,6 +88,9 @@ void tf_colloc_ghost_fold(const tf_colloc *c, const double *fe, double *f);
  * lies on. */
 double tf_colloc_mirror_share(const tf_colloc *c, size_t i);
 
+/* The thread count of the parallel loops (colloc_setup.c). */
+int tf_colloc_threads(const tf_colloc *c);
+
 /* Seed 004 eq 1 (colloc_setup.c). */
 double tf_colloc_kernel(double r);
 

@@ -139,7 +139,7 @@ void tf_colloc_ghost_fill(const tf_colloc *c, const double *u, double *ue)
 
 void tf_colloc_ghost_fold(const tf_colloc *c, const double *fe, double *f)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         double f0 = fe[3 * i], f1 = fe[3 * i + 1], f2 = fe[3 * i + 2];
         for (uint32_t g = c->gstart[i]; g < c->gstart[i + 1]; ++g) {

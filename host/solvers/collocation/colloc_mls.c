@@ -125,7 +125,7 @@ int tf_colloc_setup_mls(tf_colloc *c, char *err, size_t errlen)
         snprintf(err, errlen, "out of memory for the moment matrices");
         return -1;
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         rc[i] = particle(c, i, mu);
     }

@@ -6,6 +6,7 @@
 #include "solvers/collocation/colloc_internal.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,6 +27,12 @@ void tf_colloc_defaults(tf_colloc_opts *o)
     o->rcond_min = 1e-6;
     o->kv = 0;
     o->stab = 0.3;
+    o->threads = 0;
+}
+
+int tf_colloc_threads(const tf_colloc *c)
+{
+    return c->opts.threads > 0 ? c->opts.threads : omp_get_max_threads();
 }
 
 /* Seed 004 eq 1: w(r) = 1 - 3r^2 + 3r^4 - r^6 = (1 - r^2)^3 for r <= 1. */
@@ -56,7 +63,8 @@ static int check_opts(const tf_colloc_body *b, const tf_colloc_opts *o, char *er
                  o->support);
         return -1;
     }
-    if (!(o->rcond_min > 0 && o->rcond_min < 1) || !(o->kv >= 0 && isfinite(o->kv)) ||
+    if (o->threads < 0 || !(o->rcond_min > 0 && o->rcond_min < 1) ||
+        !(o->kv >= 0 && isfinite(o->kv)) ||
         !(o->stab >= 0 && isfinite(o->stab))) {
         snprintf(err, errlen, "rcond_min in (0, 1), kv >= 0 and stab >= 0 required "
                               "(got %g, %g, %g)", o->rcond_min, o->kv, o->stab);
@@ -133,7 +141,7 @@ static int nearest_all(const tf_colloc *c, size_t npts, uint32_t *tmp, double *d
     if (tf_nbr_build(&grid, c->X, npts, r) != 0) {
         return -1;
     }
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         cnt[i] = tf_nbr_nearest(&grid, c->X + 3 * i, c->opts.neighbours, TIE, i, tmp + i * cap,
                                 dist + i * cap, cap);
@@ -220,7 +228,7 @@ static int supports(tf_colloc *c, char *err, size_t errlen)
  * total Lagrangian) and y_ik = w_ik X_ik. */
 static void weights(tf_colloc *c)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
         for (uint32_t p = c->start[i]; p < c->start[i + 1]; ++p) {
             const double *xi = c->X + 3 * i, *xk = c->X + 3 * (size_t)c->nbr[p];

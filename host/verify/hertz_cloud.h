@@ -19,23 +19,23 @@
  * index, the part of a cell inside the finer box left out): exact for a
  * uniform grid (the tributary volumes), and summing to the block's volume.
  */
-#ifndef HERTZ_CLOUD_H
-#define HERTZ_CLOUD_H
+#ifndef TF_HERTZ_CLOUD_H
+#define TF_HERTZ_CLOUD_H
 
 #include <stddef.h>
 
-typedef struct hertz_cloud {
+typedef struct tf_hertz_cloud {
     size_t n;
     double *X;            /* 3n */
     double *volume;       /* n */
     unsigned char *fixed; /* n */
     double L;             /* half-width and depth of the block, mm */
     double volume_total;  /* of the quarter block, mm^3 */
-} hertz_cloud;
+} tf_hertz_cloud;
 
 /* Returns 0, or -1 when out of memory or the arguments make no cloud
  * (cells >= 2, levels >= 1, h0 > 0, ratio in [1.2, 4]). */
-int hertz_cloud_make(hertz_cloud *hc, double h0, int cells, int levels, double ratio);
-void hertz_cloud_free(hertz_cloud *hc);
+int tf_hertz_cloud_make(tf_hertz_cloud *hc, double h0, int cells, int levels, double ratio);
+void tf_hertz_cloud_free(tf_hertz_cloud *hc);
 
-#endif /* HERTZ_CLOUD_H */
+#endif /* TF_HERTZ_CLOUD_H */

@@ -2,7 +2,7 @@
  * hertz_cloud.c — nested-grid quarter blocks for the Hertz test
  * (hertz_cloud.h).
  */
-#include "hertz_cloud.h"
+#include "verify/hertz_cloud.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -59,7 +59,7 @@ static double outside(double lo, double hi, double b)
 
 /* Voronoi volumes by sampling each level's region at a quarter of its
  * spacing: a sampling cell counts with its part outside the finer box. */
-static int voronoi(hertz_cloud *hc, const levels *lv)
+static int voronoi(tf_hertz_cloud *hc, const levels *lv)
 {
     tf_nbr g;
     double r[3] = {lv->h0, lv->h0, lv->h0};
@@ -98,9 +98,9 @@ static int voronoi(hertz_cloud *hc, const levels *lv)
     return 0;
 }
 
-int hertz_cloud_make(hertz_cloud *hc, double h0, int cells, int count, double ratio)
+int tf_hertz_cloud_make(tf_hertz_cloud *hc, double h0, int cells, int count, double ratio)
 {
-    *hc = (hertz_cloud){0};
+    *hc = (tf_hertz_cloud){0};
     if (cells < 2 || count < 1 || count > 40 || !(h0 > 0) || !(ratio >= 1.2 && ratio <= 4)) {
         return -1;
     }
@@ -113,7 +113,7 @@ int hertz_cloud_make(hertz_cloud *hc, double h0, int cells, int count, double ra
     hc->volume = malloc(n * sizeof *hc->volume);
     hc->fixed = malloc(n);
     if (!hc->X || !hc->volume || !hc->fixed) {
-        hertz_cloud_free(hc);
+        tf_hertz_cloud_free(hc);
         return -1;
     }
     for (int l = 0; l < count; ++l) {
@@ -122,16 +122,16 @@ int hertz_cloud_make(hertz_cloud *hc, double h0, int cells, int count, double ra
     hc->L = box(&lv, count - 1);
     hc->volume_total = hc->L * hc->L * hc->L;
     if (voronoi(hc, &lv) != 0) {
-        hertz_cloud_free(hc);
+        tf_hertz_cloud_free(hc);
         return -1;
     }
     return 0;
 }
 
-void hertz_cloud_free(hertz_cloud *hc)
+void tf_hertz_cloud_free(tf_hertz_cloud *hc)
 {
     free(hc->X);
     free(hc->volume);
     free(hc->fixed);
-    *hc = (hertz_cloud){0};
+    *hc = (tf_hertz_cloud){0};
 }
