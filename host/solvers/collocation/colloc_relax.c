@@ -21,8 +21,10 @@
  *
  * Converged when the residual (the net force at free components, less the
  * sphere's reactions, and for a force-driven sphere its own net force) is
- * below tol times the applied and reaction forces (2-norms), checked every
- * step.
+ * below tol times the applied and reaction forces (2-norms), and the motion
+ * has died out: the last step moved no component by more than tol times
+ * the largest displacement so far (the kinetic criterion; with unit steps
+ * the largest speed).  Both are checked every step.
  */
 #include "solvers/collocation/colloc_internal.h"
 
@@ -89,6 +91,17 @@ static void residual(tf_colloc *c, double *rnorm, double *scale)
     *scale = sqrt(s2) + fabs(fc);
 }
 
+/* The largest speed against the largest displacement since u0. */
+static int at_rest(const tf_colloc *c, double tol)
+{
+    double vmax = 0, umax = 0;
+    for (size_t q = 0; q < 3 * c->n; ++q) {
+        vmax = fmax(vmax, fabs(c->v[q]));
+        umax = fmax(umax, fabs(c->u[q] - c->u0[q]));
+    }
+    return vmax <= tol * umax;
+}
+
 /* 2 sqrt of the Rayleigh quotient of the displacement so far, or the
  * previous value when there is none yet. */
 static double adapt(const tf_colloc *c, double alpha)
@@ -150,7 +163,7 @@ int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax
             snprintf(err, errlen, "the relaxation diverged after %zu steps", k);
             return -1;
         }
-        if (rnorm <= o->tol * scale) {
+        if (rnorm <= o->tol * scale && at_rest(c, o->tol)) {
             st->converged = 1;
             break;
         }
