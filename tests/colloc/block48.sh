@@ -31,6 +31,7 @@ row() { # grid stab
 }
 for g in 11,11,3 21,21,5 41,41,9; do row "$g" 0.3; done
 for s in 0.1 1; do row 41,41,9 "$s"; done
+chmod 644 "$tmp"
 mv "$tmp" "$out/block48.csv"
 trap - EXIT
 column -t -s, "$out/block48.csv"
