@@ -90,15 +90,20 @@ include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildc
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 
-# Each check prints a "== ... ==" heading; one that prints none ran nothing
-# (a rule lost its recipe), which must fail rather than pass silently.
+# Each check prints a "== ... ==" heading first and a result line
+# "ok: ..." last, once its work is done (tests/check_guard.sh): a check
+# whose rule lost its recipe, or that stopped after its heading, must fail
+# rather than pass silently.  The guard is first shown such a log.
 check: | deps-check
 	@mkdir -p $(B)/check
+	@printf '== a check that stopped after its heading ==\n' >$(B)/check/guard-selftest.log
+	@if tests/check_guard.sh guard-selftest $(B)/check/guard-selftest.log >/dev/null; then \
+	  echo "tests/check_guard.sh accepted a log without a result line"; exit 1; fi
 	@set -e; for c in $(CHECKS); do \
 	  $(MAKE) --no-print-directory $$c 2>&1 | tee $(B)/check/$$c.log; \
-	  grep -q '^== ' $(B)/check/$$c.log || { echo "$$c ran nothing: its rule has no recipe"; exit 1; }; \
+	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
 	done
-	@echo "== make check: all passed ($(words $(CHECKS)) checks) =="
+	@echo "== make check: all passed ($(words $(CHECKS)) checks, each with its result line) =="
 
 bench: | deps-bench
 	@$(MAKE) --no-print-directory $(BENCHES)

@@ -4,8 +4,9 @@
 #   make coeffs    regenerate every shipped header and report
 #   check-coeffs   regenerate each shipped header with 1 and with 2 threads;
 #                  both must be byte-identical to the committed files
-#   check-fit      the held-out errors recomputed from the compiled header
-#                  and fresh solves; `tissuefit fit` refusing bad scenes
+#   check-fit      the held-out errors recomputed from a freshly fitted
+#                  header, compiled, and fresh solves; `tissuefit fit`
+#                  refusing bad scenes
 
 SHIPPED_SCENES := coeffs/block48.yaml
 SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
@@ -30,23 +31,34 @@ check-coeffs: $(B)/bin/tissuefit
 	      if ! cmp -s $(B)/coeffs/t$$t/$$f coeffs/$$f; then \
 	        echo "coeffs/$$f differs from its regeneration with $$t thread(s): run make coeffs"; \
 	        diff $(B)/coeffs/t$$t/$$f coeffs/$$f | head -5; exit 1; fi; done; done; \
-	  echo "$$h: identical to its regeneration with 1 and 2 threads"; done
+	  echo "ok: $$h: identical to its regeneration with 1 and 2 threads"; done
 
-# The held-out check, one binary per shipped header.
-$(T)/heldout-%: tests/fit/heldout_check.c coeffs/%.h $(B)/native/libtissuefit-host.a \
+# The held-out check, one binary per shipped scene, compiled with a header
+# fitted now by this build's tool (not the committed one, which
+# check-coeffs compares separately): a change in the fitter shows here.
+.SECONDARY: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/fresh/%.h)
+$(T)/fresh/%.h: coeffs/%.yaml $(B)/bin/tissuefit
+	@mkdir -p $(@D)
+	$(call say,FIT)
+	$(Q)$(B)/bin/tissuefit -q fit $< -o $@
+$(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
-	$(Q)u=$$(echo $* | tr a-z A-Z); $(CC) $(TEST_CFLAGS) -Icoeffs -DHEADER='"$*.h"' \
+	$(Q)u=$$(echo $* | tr a-z A-Z); $(CC) $(TEST_CFLAGS) -I$(T)/fresh -DHEADER='"$*.h"' \
 	  -DFORWARD=tfit_$*_forward -DCONTACT=tfit_$*_contact -DPFX=TFIT_$$u \
 	  -DTFIT_$${u}_IMPLEMENTATION $< $(call host_test_link,native) -o $@
 
-# Bounds: 1 um for the linear forward model, 1e-4 relative for the contact
-# inverse (issue acceptance).
+# Bounds: 1 um for the linear forward model (the fitting issue's
+# acceptance); the contact inverse within 4 float32 ulps of the force,
+# relative (4 x 2^-23 = 4.8e-7; measured 7.5e-8 on block48: a linear tissue's
+# degree-1 inverse is exact up to the float32 evaluation's rounding, a few
+# ulps over its ~20 operations; a fit 7 times worse fails).
+CONTACT_REL_BOUND := 4.8e-7
 check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
-	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 1e-4; done
+	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 $(CONTACT_REL_BOUND); done
 	@echo "== material extremes: the stated bound holds at fresh forces =="
 	@$(T)/extremes coeffs/block48.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="

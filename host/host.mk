@@ -3,13 +3,20 @@
 # (or a folder) needs no change here.  Includes are written from host/
 # ("solvers/solver.h"), so each one names the layer it reaches into.
 
+# The layers, lowest first: a file may include its own layer and the ones
+# before it, never a later one (tests/layers/check_includes.sh, in make
+# check).  A new folder goes into this list; docs/architecture.md says what
+# each holds.
+HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify model cost \
+               fitting emit tradeoff report scene cli
+
 HOST_SRC := $(filter-out host/cli/main.c,$(shell find host -name '*.c' | LC_ALL=C sort))
 HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/tfit_q31.h host/host.mk
 # -fno-tree-slp-vectorize: GCC 12.2's SLP vectorizer at -O2 drops the
 # rounding in `f[i][k] = (double)(float)f[i][k]` for k = 0, 1 of rows of
 # three (only k = 2 is rounded; -O1, clang and this flag are right).  The
 # host rounds to float to see exactly what the firmware sees, so it is off
-# for all host code; tests/unit/test_toolchain.c fails if it comes back.
+# for all host code; tests/unit/fitting/test_toolchain.c fails if it comes back.
 HOST_CFLAGS := $(HOST_STRICT) -fno-tree-slp-vectorize -fopenmp -Ihost -Itarget/include \
                -I/usr/include/suitesparse -DTFIT_TOOL_VERSION='"$(VERSION)"'
 HOST_LIBS := -fopenmp -lcholmod -llapacke -lopenblas -lcyaml -lgmsh -lassimp -lz -lm

@@ -18,8 +18,12 @@ for spec in "$@"; do
     core=$(echo "$spec" | cut -d: -f1)
     elf=$(echo "$spec" | cut -d: -f2)
     objdir=$(echo "$spec" | cut -d: -f3)
-    arm-none-eabi-objdump -d "$elf" | "$callgraph" | awk '$2 == "->" { print $1, $3 }' >"$tmp/$core.edges"
-    cat "$objdir"/*.su | awk -F'\t' '{ n = split($1, p, ":"); print p[n], $2, $3 }' >"$tmp/$core.frames"
+    # No pipes: /bin/sh has no pipefail, and a checker that fails (recursion
+    # found, unreadable image) must stop the table, not feed it nothing.
+    arm-none-eabi-objdump -d "$elf" >"$tmp/$core.dis"
+    "$callgraph" <"$tmp/$core.dis" >"$tmp/$core.graph"
+    awk '$2 == "->" { print $1, $3 }' "$tmp/$core.graph" >"$tmp/$core.edges"
+    awk -F'\t' '{ n = split($1, p, ":"); print p[n], $2, $3 }' "$objdir"/*.su >"$tmp/$core.frames"
     if grep -q dynamic "$tmp/$core.frames"; then
         echo "stack_table: dynamic stack frame in the $core library:"; grep dynamic "$tmp/$core.frames"
         exit 1

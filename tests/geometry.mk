@@ -11,7 +11,7 @@
 #                    counts, volumes, median times of 3 runs (the table in
 #                    docs/geometry.md) and a .vtu per mesh for ParaView in
 #                    build/geometry/
-# Unit tests (tests/unit/test_geometry_{rules,surface,mesh}.c) run with
+# Unit tests (tests/unit/geometry/test_{rules,surface,mesh}.c) run with
 # check-unit and check-sanitize.
 #
 # The organ meshes are read from MESHES (outside the repository, see
@@ -24,8 +24,8 @@ GEOMETRY_OUT := $(B)/geometry
 .PHONY: check-geometry geometry-demo
 CHECKS += check-geometry
 
-$(T)/unit/test_geometry_surface $(T)/unit/test_geometry_mesh \
-$(T)/asan/test_geometry_surface $(T)/asan/test_geometry_mesh: tests/geometry/shapes.h
+$(T)/unit/geometry/test_surface $(T)/unit/geometry/test_mesh \
+$(T)/asan/geometry/test_surface $(T)/asan/geometry/test_mesh: tests/geometry/shapes.h
 
 $(T)/geometry/mesh_demo: tests/geometry/mesh_demo.c $(B)/native/libtissuefit-host.a | deps-build
 	@mkdir -p $(@D)
@@ -38,7 +38,7 @@ check-geometry: $(T)/geometry/mesh_demo
 	@$< $(MESHES)/liver.vtk --spacing 12 --check
 	@$< $(MESHES)/derived/liver_vtk_main.obj --spacing 12 --vtu $(T)/geometry/liver-2.vtu >/dev/null
 	@cmp $(T)/geometry/liver-1.vtu $(T)/geometry/liver-2.vtu && \
-	  echo "two runs on the same liver wrote the same .vtu, byte for byte: ok"
+	  echo "ok: two runs on the same liver wrote the same .vtu, byte for byte"
 
 # $(call geometry_run,LABEL,FILE,SPACING,TRANSFORM)
 geometry_run = $(T)/geometry/mesh_demo $(MESHES)/$(2) --spacing $(3) $(4) --check \

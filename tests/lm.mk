@@ -3,7 +3,7 @@
 #   check-lm   the `tissuefit lm-strd` command line (good, CRLF and LF files,
 #              missing and damaged files, bad --start); the 54 NIST StRD runs
 #              and the 53 MGH runs themselves are the unit tests
-#              tests/unit/test_lm_nist.c and test_lm_mgh.c (check-unit)
+#              tests/unit/numerics/test_lm_nist.c and test_lm_mgh.c (check-unit)
 #   bench-lm   the 54 NIST runs and the 53 Moré–Garbow–Hillstrom runs with
 #              tissuefit and with GSL multifit_nlinear, side by side (GSL is
 #              needed only here: DEBS_BENCH)
@@ -17,8 +17,17 @@ DEBS_BENCH += libgsl-dev
 CHECKS += check-lm
 BENCHES += bench-lm
 
-check-lm: $(B)/bin/tissuefit
+# Missing NIST data is a failure, not a skip: both tests are first run
+# against a directory that does not exist and must fail saying so.
+check-lm: $(B)/bin/tissuefit $(T)/unit/numerics/test_lm_nist
 	@echo "== lm-strd command line =="
+	@if NIST_DIR=$(B)/no-nist tests/lm/cli_lm.sh $(B)/bin/tissuefit >$(B)/no-nist.log 2>&1 || \
+	    ! grep -q "no-nist is absent" $(B)/no-nist.log; then \
+	  echo "cli_lm.sh did not fail on a missing NIST directory:"; cat $(B)/no-nist.log; exit 1; fi
+	@if TF_NIST_DIR=$(B)/no-nist $(T)/unit/numerics/test_lm_nist >$(B)/no-nist.log 2>&1 || \
+	    ! grep -q "no-nist is absent" $(B)/no-nist.log; then \
+	  echo "test_lm_nist did not fail on a missing NIST directory:"; cat $(B)/no-nist.log; exit 1; fi
+	@echo "without the NIST files both tests fail: ok"
 	@tests/lm/cli_lm.sh $(B)/bin/tissuefit
 
 $(LM_T)/strd_table: tests/lm/strd_table.c $(B)/native/libtissuefit-host.a | deps-build

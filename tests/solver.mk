@@ -10,8 +10,8 @@
 #                         time split and peak memory; 150 load cases
 #   solver-validation     regenerates docs/validation/ (tables and PNG plots
 #                         for docs/validation.md); not part of make check
-# Unit tests (tests/unit/test_{scene,rpim,quadrature,neighbours,elasticity,
-# solver,verify}.c) run with check-unit and check-sanitize.
+# Unit tests (tests/unit/{scene,meshfree,materials,solvers,verify}/) run
+# with check-unit and check-sanitize.
 
 SOLVER_TOOLS := $(T)/solver/calculix_compare $(T)/solver/bench_solver $(T)/solver/node61
 DEBS_VALIDATION := $(DEBS_BUILD) gnuplot-nox
@@ -35,6 +35,7 @@ check-solver-calculix: $(B)/bin/tissuefit $(T)/solver/calculix_compare
 	@echo "== block48 against the CalculiX reference =="
 	@tests/solver/compare_selftest.sh $(B)/bin/tissuefit $(T)/solver/calculix_compare
 	@$(T)/solver/calculix_compare
+	@echo "ok: block48 converges to the CalculiX reference under refinement"
 
 bench-solver: $(T)/solver/bench_solver
 	@echo "== solver speed: block48 (GUIDE §7: <= 0.5 s at 11x11x3, <= 30 s at 41x41x9) =="

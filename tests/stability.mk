@@ -64,6 +64,7 @@ $(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE)
 CHECKS += check-stability
 check-stability: check-stability-basis check-stability-extremes check-stability-random \
                  check-stability-sanitize check-stability-models
+	@echo "ok: stability: basis, extremes, random inputs, sanitizers and random models"
 
 # One target per header, so that make -j2 runs two at a time.
 $(STAB_NAMES:%=stability-extremes-%): stability-extremes-%: $(STAB_T)/native/run_invariants-%

@@ -1,6 +1,7 @@
 # tests.mk — everything `make check` runs.
 #
-#   check-unit         cmocka host unit tests (tests/unit/test_*.c)
+#   check-unit         cmocka host unit tests (tests/unit/LAYER/test_*.c, one
+#                      folder per host/ layer)
 #   check-sanitize     the same tests under AddressSanitizer + UBSan
 #   check-freestanding target library for Cortex-M4F and RV64: no undefined
 #                      symbols, no mutable statics, no recursion
@@ -10,9 +11,10 @@
 #   check-insncount    callgrind: same instruction count for every input
 #   check-cli          the command line: help, exit statuses, nothing half-written
 
-TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -Itests/support -Itests/bitexact
+# -I.: a test reaches beyond host/ by its path from the top ("tests/...").
+TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -I. -Itests/support -Itests/bitexact
 SUPPORT_SRC := $(wildcard tests/support/*.c)
-UNIT_SRC := $(wildcard tests/unit/test_*.c)
+UNIT_SRC := $(shell find tests/unit -name 'test_*.c' | LC_ALL=C sort)
 UNIT_NAMES := $(UNIT_SRC:tests/unit/%.c=%)
 BITEXACT_CONFIGS := gcc-O0 gcc-O2 gcc-O3-native clang-O2
 T := $(B)/tests
@@ -37,11 +39,13 @@ CHECKS += check-unit check-sanitize check-freestanding check-bitexact check-gold
 check-unit: $(UNIT_NAMES:%=$(T)/unit/%)
 	@echo "== host unit tests =="
 	@set -e; for t in $^; do $$t; done
+	@echo "ok: $(words $^) unit test programs passed"
 
 check-sanitize: $(UNIT_NAMES:%=$(T)/asan/%)
 	@echo "== host unit tests under ASan + UBSan =="
 	@set -e; for t in $^; do \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 $$t; done
+	@echo "ok: $(words $^) unit test programs passed under ASan + UBSan"
 
 # --- freestanding -----------------------------------------------------------
 $(T)/callgraph: tests/freestanding/callgraph.c | deps-check
@@ -65,6 +69,7 @@ check-freestanding: $(T)/callgraph $(T)/recursive.elf \
 	  FLAGS="$(M4F_FLAGS)" tests/freestanding/check.sh $$b $(ARM) $(B)/$$b arm; done; \
 	for b in riscv64 riscv64-O0; do \
 	  FLAGS="$(RV64_FLAGS)" tests/freestanding/check.sh $$b $(RV) $(B)/$$b; done
+	@echo "ok: 6 target library builds freestanding; the call-graph checker rejects recursion"
 
 # --- bit-exact: random models -------------------------------------------------
 $(T)/gen_random: tests/bitexact/gen_random.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
@@ -81,9 +86,40 @@ $(T)/run_bundle-%: tests/bitexact/run_bundle.c $(B)/bitexact-%/libtfit.a | deps-
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/bitexact $^ -o $@
 
-check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%)
+# The counter-test: the library built so that it contracts a*b + c into
+# FMA must mismatch, or bit-exactness is not being measured.  The sources
+# forbid contraction themselves (tfit_internal.h's pragma, which holds even
+# under -ffp-contract=fast), so the pragma is removed from a copy, as
+# check-contract does for the M4F; the copy is built with -mfma
+# -ffp-contract=fast.  Its golden bits must differ and its boot self-test
+# (tfit_model_check, TFIT_ERR_ARITH) must fail.  It needs a CPU with FMA;
+# without one the check fails, it is not skipped.
+FMA_PRAGMA := \#pragma GCC optimize("fp-contract=off")
+$(T)/fma/libtfit.a: $(TARGET_SRC) $(TARGET_HDR) | deps-check
+	$(call say,AR)
+	$(Q)rm -rf $(@D) && mkdir -p $(@D)/src $(@D)/obj && cp target/src/*.c target/src/*.h $(@D)/src/
+	$(Q)grep -qxF '$(FMA_PRAGMA)' $(@D)/src/tfit_internal.h || \
+	  { echo "tfit_internal.h no longer has the line this test removes"; exit 1; }
+	$(Q)grep -vxF '$(FMA_PRAGMA)' target/src/tfit_internal.h >$(@D)/src/tfit_internal.h
+	$(Q)for f in $(@D)/src/*.c; do $(CC) $(TARGET_CFLAGS) -O2 -mfma -ffp-contract=fast \
+	  -I$(@D)/src -c $$f -o $(@D)/obj/$$(basename $${f%.c}).o || exit 1; done
+	$(Q)ld -r $(@D)/obj/*.o -o $(@D)/libtfit.o && ar rcs $@ $(@D)/libtfit.o
+$(T)/run_bundle-fma: tests/bitexact/run_bundle.c $(T)/fma/libtfit.a | deps-check
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/bitexact $^ -o $@
+
+check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%) $(T)/run_bundle-fma
 	@echo "== bit-exact: random models, every family, four compiler configurations =="
 	@set -e; for c in $(BITEXACT_CONFIGS); do $(T)/run_bundle-$$c $$c $(T)/random.bundle; done
+	@grep -qw fma /proc/cpuinfo || { echo "this CPU has no FMA: the FMA counter-test cannot run"; exit 1; }
+	@if $(T)/run_bundle-fma fma-contracted $(T)/random.bundle >$(T)/fma.log 2>&1; then \
+	  tail -n 1 $(T)/fma.log; echo "the FMA-contracted library matched every golden word"; exit 1; fi; \
+	tail -n 1 $(T)/fma.log; \
+	n=$$(sed -n 's/.* \([0-9][0-9]*\) mismatches.*/\1/p' $(T)/fma.log); \
+	k=$$(sed -n 's/.* \([0-9][0-9]*\) failed checks.*/\1/p' $(T)/fma.log); \
+	[ "$${n:-0}" -gt 0 ] || { echo "the FMA build gave no mismatching word"; exit 1; }; \
+	[ "$${k:-0}" -gt 0 ] || { echo "the FMA build passed every boot self-test"; exit 1; }
+	@echo "ok: 1000 random models bit-exact in $(words $(BITEXACT_CONFIGS)) compiler configurations; a contracted build mismatches and fails its self-test"
 
 # --- generated headers --------------------------------------------------------
 $(T)/gen/families.h: $(T)/gen_random
@@ -110,6 +146,7 @@ check-golden: $(foreach h,families demo,$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%)
 	@echo "== golden vectors of generated headers =="
 	@set -e; for h in families demo; do for c in $(BITEXACT_CONFIGS); do \
 	  $(T)/golden-$$h-$$c $$h/$$c; done; done
+	@echo "ok: golden vectors of 2 generated headers pass in $(words $(BITEXACT_CONFIGS)) configurations"
 
 $(T)/two_tu: tests/header/tu_main.c tests/header/tu_other.c $(T)/gen/families.h $(B)/native/libtfit.a
 	$(call say,BUILD)
@@ -136,6 +173,7 @@ check-header: $(T)/two_tu $(T)/gen/stale/families.h tests/header/tu_stale.c
 	  want=$$(sed -n 's/^#define tfit_nodal_a \(tfit_nodal_a_[0-9a-f]*\) .*/\1/p' $(T)/gen/stale/families.h); \
 	  grep -q "undefined reference to .$$want" $(T)/stale.err || { cat $(T)/stale.err; exit 1; }; \
 	  echo "stale header (N_OUT $$(sed -n 's/^#define TFIT_NODAL_A_N_OUT \([0-9]*\)u/\1/p' $(T)/gen/stale/families.h) against $$(sed -n 's/^#define TFIT_NODAL_A_N_OUT \([0-9]*\)u/\1/p' $(T)/gen/families.h)): link refused, undefined $$want"
+	@echo "ok: the header compiles in two translation units, its tables defined once; a stale one does not link"
 
 # --- fixed instruction count ------------------------------------------------
 $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
@@ -145,6 +183,7 @@ $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
 check-insncount: $(T)/probe
 	@echo "== instructions per evaluation (callgrind), every golden input =="
 	@tests/insncount/run.sh $(T)/probe $(T)/insncount
+	@echo "ok: one instruction count per entry point and model, whatever the input"
 
 check-cli: $(B)/bin/tissuefit
 	@echo "== command line =="

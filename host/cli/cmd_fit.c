@@ -20,11 +20,13 @@
 #include "base/log.h"
 #include "base/plot.h"
 #include "scene/scene.h"
-#include "cost/select.h"
+#include "tradeoff/select.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
 {
+    char names[256];
+    tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
     fprintf(out,
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
@@ -37,7 +39,7 @@ static void help(FILE *out)
             "(docs/scene-format.md); --set overrides any of it, e.g. --set fit.train=200.\n\n"
             "Options:\n"
             "  -o, --out FILE.h    header to write (a lower-case C identifier + .h)\n"
-            "  --family F          forward family to emit: nodal, modal or zhou2017\n"
+            "  --family F          forward family to emit, one of: %s\n"
             "                      (default: the scene's fit.family, else nodal)\n"
             "  --contact NAME      contact site (default: fit.contact, else the first)\n"
             "  --set KEY=VALUE     override a scene value (repeatable)\n"
@@ -54,7 +56,8 @@ static void help(FILE *out)
             "                      none qualifies, the message gives the best on each\n"
             "                      axis and nothing is written.\n\n"
             "Exit status: 0 ok, 1 a solve or fit failed, 2 bad usage or a scene that\n"
-            "cannot be fitted (nothing is written then).\n");
+            "cannot be fitted (nothing is written then).\n",
+            names);
 }
 
 typedef struct fit_args {
@@ -148,11 +151,11 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
     *p = sc->fit;
     p->direct = a->direct;
     if (a->family) {
-        p->family = tf_family_from_name(a->family);
-        if (p->family != TFIT_FAMILY_NODAL && p->family != TFIT_FAMILY_MODAL &&
-            p->family != TFIT_FAMILY_ZHOU2017) {
-            tf_error(ctx, "fit: --family '%s': the forward families are nodal, modal and zhou2017",
-                     a->family);
+        p->family = tf_family_find(a->family);
+        if (p->family == NULL || p->family->kind != TF_FAMILY_FORWARD) {
+            char names[256];
+            tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
+            tf_error(ctx, "fit: --family '%s': the forward families are %s", a->family, names);
             return -1;
         }
     }
@@ -214,6 +217,10 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
 {
     char base[TF_NAME_MAX - 8], err[512], note[1024];
     const char *slash = strrchr(a->out, '/');
+    if (fwd == NULL || con == NULL) {
+        tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
+        return TF_EXIT_FAIL;
+    }
     if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
         tf_error(ctx, "fit: %s: the header name is too long for its model names", a->out);
         return TF_EXIT_USAGE;
@@ -221,7 +228,6 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     base[strcspn(base, ".")] = '\0';
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
-    con->node_ids[0] = s->contacts[p->contact].node + 1;
     uint32_t crc = 0;
     if (file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
@@ -240,7 +246,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         return TF_EXIT_USAGE;
     }
     tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
-            tf_family_name(fwd->family));
+            tf_family_of(fwd->family)->name);
     return TF_EXIT_OK;
 }
 
@@ -318,13 +324,13 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     have_outcome = 1;
     if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
-        rc = emit(ctx, &a, p, &plan, &o, o.fam[plan.family].model,
-                  o.fam[TFIT_FAMILY_CONTACT].model, NULL);
+        rc = emit(ctx, &a, p, &plan, &o, tf_fit_emitted(&o, &plan, TF_FAMILY_FORWARD),
+                  tf_fit_emitted(&o, &plan, TF_FAMILY_INVERSE), NULL);
     } else {
         rc = emit_selected(ctx, &a, p, solver, &plan, &o);
     }
     if (rc == TF_EXIT_OK && a.report &&
-        tf_fit_report(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
+        tf_report_fit(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
         tf_error(ctx, "fit: report: %s", err);
         rc = TF_EXIT_FAIL;
     }

@@ -88,7 +88,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_nist_free(&d);
         return TF_EXIT_USAGE;
     }
-    tf_fit_options o;
+    tf_lsfit_options o;
     tf_nist_options(&o, d.n_par);
     o.lm.central_diff = central;
     tf_nist_score s;

@@ -129,9 +129,9 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
-    tf_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
+    tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
     if (a->vtk) {
-        tf_vtu_displacements(vtu.fp, &s->cloud, u);
+        tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
     }
     int rc = 0;
     if (a->out) {

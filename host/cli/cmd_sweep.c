@@ -12,7 +12,8 @@
 #include "cli/cmd_args.h"
 #include "base/log.h"
 #include "base/plot.h"
-#include "cost/sweep.h"
+#include "report/sweep_report.h"
+#include "tradeoff/sweep.h"
 
 static void help(FILE *out)
 {
@@ -90,10 +91,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         solver = tf_solver_create(p, NULL, ctx);
         if (solver == NULL || tf_sweep_run(p, solver, &s->fit, sets, &sw) != 0) {
             tf_error(ctx, "sweep: %s", ctx->err);
-        } else if ((csv && tf_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
-                   (!csv && tf_sweep_csv(&sw, "/dev/stdout", err, sizeof err) != 0) ||
-                   (md && tf_sweep_markdown(&sw, p, md, err, sizeof err) != 0) ||
-                   (png && tf_sweep_plot(&sw, png, err, sizeof err) != 0)) {
+        } else if ((csv && tf_report_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
+                   (!csv && tf_report_sweep_csv(&sw, "/dev/stdout", err, sizeof err) != 0) ||
+                   (md && tf_report_sweep_markdown(&sw, p, md, err, sizeof err) != 0) ||
+                   (png && tf_report_sweep_plot(&sw, png, err, sizeof err) != 0)) {
             tf_error(ctx, "sweep: %s", err);
         } else {
             tf_info(ctx, "sweep: %zu candidates measured", sw.n);

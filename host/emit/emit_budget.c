@@ -8,9 +8,9 @@
 
 #include "cost/cycles.h"
 
-void tf_emit_budget_banner(FILE *f, const tf_model *m)
+void tf_emit_budget_banner(FILE *f, const tf_family_cost *cost)
 {
-    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    const tf_cycles m4 = cost->m4f, m7 = cost->m7;
     fprintf(f,
             " *       %llu instructions; Cortex-M4F <= %.0f cycles (%.2f us at 168 MHz), "
             "Cortex-M7 ~%.0f (%.2f us at 480 MHz)\n",
@@ -18,9 +18,9 @@ void tf_emit_budget_banner(FILE *f, const tf_model *m)
             ceil(m7.cycles), m7.cycles / 480.0);
 }
 
-void tf_emit_budget_macros(FILE *f, const tf_model *m, const char *p)
+void tf_emit_budget_macros(FILE *f, const tf_family_cost *cost, const char *p)
 {
-    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    const tf_cycles m4 = cost->m4f, m7 = cost->m7;
     fprintf(f, "#define %s_INSNS_ARMV7EM %llu /* per call, gcc -O2 (docs/firmware.md) */\n", p,
             (unsigned long long)m4.instructions);
     fprintf(f, "#define %s_CYCLES_M4F %.0fu /* upper bound, zero-wait-state tables */\n", p,

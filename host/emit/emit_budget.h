@@ -1,18 +1,18 @@
 /*
  * emit_budget.h — the firmware budget of a model in its generated header:
  * instructions, estimated cycles and microseconds per evaluation on
- * Cortex-M4F and Cortex-M7 (host/cost/cycles.c, docs/firmware.md).  Called by
- * emit_header.c for every model.
+ * Cortex-M4F and Cortex-M7 (the family's cost: host/cost/cycles.c,
+ * docs/firmware.md).  Called by emit_header.c for every model.
  */
 #ifndef TF_EMIT_BUDGET_H
 #define TF_EMIT_BUDGET_H
 
 #include <stdio.h>
 
-#include "model/model.h"
+#include "fitting/families/family.h"
 
 /* Banner line(s) for the model's header comment. */
-void tf_emit_budget_banner(FILE *f, const tf_model *m);
+void tf_emit_budget_banner(FILE *f, const tf_family_cost *cost);
 
 /* The macros, prefix = "TFIT_" + upper-case model name:
  *   PREFIX_INSNS_ARMV7EM       instructions per call (arm-none-eabi-gcc -O2)
@@ -21,6 +21,6 @@ void tf_emit_budget_banner(FILE *f, const tf_model *m);
  *   PREFIX_US_M4F_168MHZ       PREFIX_CYCLES_M4F at 168 MHz
  *   PREFIX_CYCLES_M7           dual-issue model, +-30 %
  *   PREFIX_US_M7_480MHZ */
-void tf_emit_budget_macros(FILE *f, const tf_model *m, const char *prefix);
+void tf_emit_budget_macros(FILE *f, const tf_family_cost *cost, const char *prefix);
 
 #endif /* TF_EMIT_BUDGET_H */

@@ -15,6 +15,7 @@
 #include "base/atomic_file.h"
 #include "emit/emit_budget.h"
 #include "emit/emit_q31.h"
+#include "fitting/families/family.h"
 #include "model/golden.h"
 #include "model/ref_eval.h"
 
@@ -75,36 +76,31 @@ static uint32_t float_bits(float f)
     return u;
 }
 
+/* The registered family of a model (check_models refuses any other). */
+static const tf_family *family(const tf_model *m)
+{
+    return tf_family_of(m->family);
+}
+
+static int inverse(const tf_model *m)
+{
+    return family(m)->kind == TF_FAMILY_INVERSE;
+}
+
 static const char *input_desc(const tf_model *m)
 {
-    return m->family == TFIT_FAMILY_CONTACT ? "contact displacement [mm]" : "force [N]";
+    return inverse(m) ? "contact displacement [mm]" : "force [N]";
 }
 
 static const char *output_desc(const tf_model *m)
 {
-    return m->family == TFIT_FAMILY_CONTACT ? "contact force [N]" : "displacement [mm]";
+    return inverse(m) ? "contact force [N]" : "displacement [mm]";
 }
 
-static const char *output_unit(const tf_model *m)
+/* The output unit: in macro names (upper case) or in text. */
+static const char *output_unit(const tf_model *m, int upper_case)
 {
-    return m->family == TFIT_FAMILY_CONTACT ? "N" : "MM";
-}
-
-/* "p=2", "p=2 r=6", or the zhou2017 orders. */
-static void orders_text(const tf_model *m, char *buf, size_t n)
-{
-    const uint32_t *d = m->dims;
-    if (m->family == TFIT_FAMILY_MODAL) {
-        snprintf(buf, n, "p=%u r=%u", d[0], d[1]);
-    } else if (m->family == TFIT_FAMILY_ZHOU2017) {
-        int k = snprintf(buf, n, "lambda=%u,%u,%u", d[0], d[1], d[2]);
-        for (int pair = 0; pair < 9 && k > 0 && (size_t)k < n; ++pair) {
-            k += snprintf(buf + k, n - (size_t)k, " %c%c:%u/%u/%u", "xyz"[pair / 3],
-                          "xyz"[pair % 3], d[3 + 3 * pair], d[4 + 3 * pair], d[5 + 3 * pair]);
-        }
-    } else {
-        snprintf(buf, n, "p=%u", d[0]);
-    }
+    return inverse(m) ? "N" : (upper_case ? "MM" : "mm");
 }
 
 static void banner_line(FILE *f, const char *text)
@@ -137,22 +133,22 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
     fprintf(f, " *\n * Models (tfit_model objects; evaluation order in docs/header-format.md):\n");
     for (size_t i = 0; i < n_models; ++i) {
         const tf_model *m = models[i];
-        tf_opcount ops = tf_model_ops(m);
-        orders_text(m, orders, sizeof orders);
-        fprintf(f, " *   tfit_%s: %s %s, %u output point%s, %s -> %s\n", m->name,
-                tf_family_name(m->family), orders, m->n_out, m->n_out == 1 ? "" : "s",
-                input_desc(m), output_desc(m));
+        tf_family_cost cost;
+        family(m)->cost(m, &cost);
+        family(m)->orders_text(m, TF_ORDERS_FULL, orders, sizeof orders);
+        fprintf(f, " *   tfit_%s: %s %s, %u output point%s, %s -> %s\n", m->name, family(m)->name,
+                orders, m->n_out, m->n_out == 1 ? "" : "s", input_desc(m), output_desc(m));
         fprintf(f, " *       %llu add, %llu mul, %llu div per evaluation; %u table bytes\n",
-                (unsigned long long)ops.add, (unsigned long long)ops.mul,
-                (unsigned long long)ops.div, tf_model_table_bytes(m));
-        tf_emit_budget_banner(f, m);
+                (unsigned long long)cost.ops.add, (unsigned long long)cost.ops.mul,
+                (unsigned long long)cost.ops.div, cost.table_bytes);
+        tf_emit_budget_banner(f, &cost);
         tf_emit_q31_banner(f, m);
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
             fprintf(f, " *       held-out error over %u cases: max %.3g %s, rms %.3g %s\n",
-                    m->heldout_cases, m->heldout_max, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm",
-                    m->heldout_rms, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm");
+                    m->heldout_cases, m->heldout_max, output_unit(m, 0), m->heldout_rms,
+                    output_unit(m, 0));
         }
     }
     char guard[TF_NAME_MAX + 8];
@@ -167,10 +163,12 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
 {
     char p[TF_NAME_MAX + 8], orders[256];
     upper(m->name, p, sizeof p);
-    orders_text(m, orders, sizeof orders);
-    tf_opcount ops = tf_model_ops(m);
+    family(m)->orders_text(m, TF_ORDERS_FULL, orders, sizeof orders);
+    tf_family_cost cost;
+    family(m)->cost(m, &cost);
+    const tf_opcount ops = cost.ops;
     fprintf(f, "\n/* tfit_%s */\n", m->name);
-    fprintf(f, "#define TFIT_%s_FAMILY \"%s\"\n", p, tf_family_name(m->family));
+    fprintf(f, "#define TFIT_%s_FAMILY \"%s\"\n", p, family(m)->name);
     fprintf(f, "#define TFIT_%s_FAMILY_ID %d\n", p, (int)m->family);
     fprintf(f, "#define TFIT_%s_ORDERS \"%s\"\n", p, orders);
     fprintf(f, "#define TFIT_%s_N_OUT %uu\n", p, m->n_out);
@@ -178,7 +176,7 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
     fprintf(f, "#define TFIT_%s_OUTPUT \"%s\"\n", p, output_desc(m));
     if (m->envelope_radius > 0) {
         fprintf(f, "#define TFIT_%s_ENVELOPE_RADIUS %.9g /* %s, ball around the centre */\n", p,
-                m->envelope_radius, m->family == TFIT_FAMILY_CONTACT ? "mm" : "N");
+                m->envelope_radius, inverse(m) ? "mm" : "N");
     }
     fprintf(f, "#define TFIT_%s_ENVELOPE_CENTER {%.9g, %.9g, %.9g}\n", p, (double)m->coef[0],
             (double)m->coef[1], (double)m->coef[2]);
@@ -186,15 +184,15 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
     fprintf(f, "#define TFIT_%s_OPS_MUL %llu\n", p, (unsigned long long)ops.mul);
     fprintf(f, "#define TFIT_%s_OPS_DIV %llu\n", p, (unsigned long long)ops.div);
     fprintf(f, "#define TFIT_%s_OPS %llu\n", p, (unsigned long long)(ops.add + ops.mul + ops.div));
-    fprintf(f, "#define TFIT_%s_TABLE_BYTES %u\n", p, tf_model_table_bytes(m));
+    fprintf(f, "#define TFIT_%s_TABLE_BYTES %u\n", p, cost.table_bytes);
     {
         char prefix[TF_NAME_MAX + 16];
         snprintf(prefix, sizeof prefix, "TFIT_%s", p);
-        tf_emit_budget_macros(f, m, prefix);
+        tf_emit_budget_macros(f, &cost, prefix);
         tf_emit_q31_macros(f, m, prefix);
     }
     if (!isnan(m->heldout_max)) {
-        const char *u = output_unit(m);
+        const char *u = output_unit(m, 1);
         fprintf(f, "#define TFIT_%s_HELDOUT_CASES %u\n", p, m->heldout_cases);
         fprintf(f, "#define TFIT_%s_HELDOUT_MAX_%s %.6g\n", p, u, m->heldout_max);
         fprintf(f, "#define TFIT_%s_HELDOUT_RMS_%s %.6g\n", p, u, m->heldout_rms);
@@ -236,8 +234,8 @@ static void write_coef(FILE *f, const tf_model *m)
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
         uint32_t t = tf_terms(m->dims[0]);
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
-            snprintf(note, sizeof note, "node %u %c%s", m->node_ids[o / 3],
-                     comp[o % 3], m->family == TFIT_FAMILY_CONTACT ? " force" : "");
+            snprintf(note, sizeof note, "node %u %c%s", m->node_ids[o / 3], comp[o % 3],
+                     inverse(m) ? " force" : "");
             write_floats(f, c, t, note);
         }
     } else if (m->family == TFIT_FAMILY_MODAL) {
@@ -420,6 +418,11 @@ static int check_models(const char *base, tf_model *const *models, size_t n, cha
                 snprintf(err, errlen, "two models are named '%s'", models[i]->name);
                 return -1;
             }
+        }
+        if (tf_family_of(models[i]->family) == NULL) {
+            snprintf(err, errlen, "model '%s': family %d is not registered", models[i]->name,
+                     (int)models[i]->family);
+            return -1;
         }
         if (tf_model_validate(models[i], err, errlen) != 0) {
             return -1;

@@ -7,25 +7,44 @@
 
 #include <ctype.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
+#include "fitting/families/family.h"
 #include "model/q31.h"
 
 #define ERROR_SEED 0x51u /* fixed: the same header every time */
 
-static const char *unit(const tf_model *m)
+static int inverse(const tf_model *m)
 {
-    return m->family == TFIT_FAMILY_CONTACT ? "N" : "MM";
+    return tf_family_of(m->family)->kind == TF_FAMILY_INVERSE;
+}
+
+/* Output unit in macro names (upper case) or text; input unit. */
+static const char *unit(const tf_model *m, int upper_case)
+{
+    return inverse(m) ? "N" : (upper_case ? "MM" : "mm");
 }
 
 static const char *in_unit(const tf_model *m)
 {
-    return m->family == TFIT_FAMILY_CONTACT ? "mm" : "N";
+    return inverse(m) ? "mm" : "N";
+}
+
+/* The Q31 form by the model's family, or NULL with the reason. */
+static tf_q31 *quantised(const tf_model *m, char *err, size_t errlen)
+{
+    const tf_family *f = tf_family_of(m->family);
+    if (f->q31 == NULL) {
+        snprintf(err, errlen, "model '%s': no Q31 form for the %s family", m->name, f->name);
+        return NULL;
+    }
+    return f->q31(m, err, errlen);
 }
 
 static tf_q31 *measured(const tf_model *m, char *err, size_t errlen)
 {
-    tf_q31 *q = tf_q31_quantise(m, err, errlen);
+    tf_q31 *q = quantised(m, err, errlen);
     if (q != NULL) {
         tf_q31_measure(q, m, ERROR_SEED, TF_Q31_ERROR_CASES);
     }
@@ -43,8 +62,8 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
     fprintf(f,
             " *       Q31 form tfit_%s_q31: input 2^%d %s, output 2^%d %s full scale; adds "
             "%.3g %s (float32 path: %.3g)\n",
-            m->name, q->in_exp, in_unit(m), q->out_exp, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm",
-            q->added_error, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm", q->float_error);
+            m->name, q->in_exp, in_unit(m), q->out_exp, unit(m, 0), q->added_error, unit(m, 0),
+            q->float_error);
     tf_q31_free(q);
 }
 
@@ -58,11 +77,11 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
     fprintf(f, "#define %s_Q31_IN_EXP %d /* input word x = value * 2^(31 - %d), %s */\n", p,
             q->in_exp, q->in_exp, in_unit(m));
     fprintf(f, "#define %s_Q31_OUT_EXP %d /* output value = word * 2^(%d - 31), %s */\n", p,
-            q->out_exp, q->out_exp, m->family == TFIT_FAMILY_CONTACT ? "N" : "mm");
+            q->out_exp, q->out_exp, unit(m, 0));
     fprintf(f,
             "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u envelope points; "
             "float32: %.6g */\n",
-            p, unit(m), q->added_error, q->error_cases, q->float_error);
+            p, unit(m, 1), q->added_error, q->error_cases, q->float_error);
     fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
     fprintf(f, "#define tfit_%s_q31 tfit_%s_q31_%08x /* this header's version of the model */\n",
             m->name, m->name, tf_q31_crc32(q));
@@ -92,7 +111,7 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
 {
     char err[256], note[96];
     static const char comp[] = "xyz";
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = quantised(m, err, sizeof err);
     if (q == NULL) {
         return;
     }
@@ -119,7 +138,7 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
 int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
 {
     char err[256];
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = quantised(m, err, sizeof err);
     if (q == NULL) {
         return 0;
     }
@@ -161,7 +180,7 @@ void tf_emit_q31_sets(FILE *f, const char *base_upper, tf_model *const *models, 
     char err[256];
     fprintf(f, "#define TFIT_%s_GOLDEN_Q31_SETS {", base_upper);
     for (size_t i = 0; i < n; ++i) {
-        tf_q31 *q = tf_q31_quantise(models[i], err, sizeof err);
+        tf_q31 *q = quantised(models[i], err, sizeof err);
         if (q != NULL) {
             fprintf(f, "&tfit_%s_q31_golden, ", models[i]->name);
         }

@@ -1,7 +1,8 @@
 /*
- * emit_q31.h — the Q31 form of each nodal and contact model in the
- * generated header and its golden file (docs/q31-format.md §7).  Called by
- * emit_header.c; models without a Q31 form get a comment saying why.
+ * emit_q31.h — the Q31 form of each model whose family has one
+ * (family.h: nodal and contact) in the generated header and its golden file
+ * (docs/q31-format.md §7).  Called by emit_header.c; models without a Q31
+ * form get a comment saying why.
  */
 #ifndef TF_EMIT_Q31_H
 #define TF_EMIT_Q31_H

@@ -8,8 +8,7 @@
 #include <string.h>
 
 #include "base/log.h"
-#include "fitting/fit_common.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 
 static void *keep(tf_cases *c, void *p)
 {
@@ -156,9 +155,10 @@ static int design(tf_cases *c, size_t n_train, size_t n_heldout, uint64_t seed)
         c->node_ids[j] = tf_problem_node_number(p, p->outputs.nodes[j]);
         memcpy(c->rest[j], xyz + 3 * (size_t)p->outputs.nodes[j], sizeof c->rest[j]);
     }
-    tf_loadcases(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train, held);
-    tf_round_to_float(train, n_train);
-    tf_round_to_float(held, n_heldout);
+    tf_force_samples(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train,
+                     held);
+    tf_forces_to_float(train, n_train);
+    tf_forces_to_float(held, n_heldout);
     for (int a = 0; a < 3; ++a) {
         for (size_t i = 0; i < n_train; ++i) {
             double *f = axes[(size_t)a * n_train + i];

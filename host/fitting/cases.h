@@ -1,6 +1,6 @@
 /*
  * cases.h — the solved load cases behind a fit: training forces filling
- * the envelope, held-out forces never used by a fit (loadcases.h), the
+ * the envelope, held-out forces never used by a fit (force_samples.h), the
  * displacements of the problem's output points and of the contact site, and
  * single-axis training cases for the zhou2017 family.
  *

@@ -9,14 +9,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
 #include "base/log.h"
 #include "model/ref_eval.h"
-
-/* Below this CV error a higher order buys nothing the float32 target can
- * show (mm or N). */
-#define CV_FLOOR 1e-6
 
 static double seconds(void)
 {
@@ -25,54 +21,10 @@ static double seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The smallest index whose value is within 2 % (plus the floor) of the best. */
-static uint32_t cheapest_within(const double *v, uint32_t lo, uint32_t hi)
+static void heldout(tf_family_result *f, const tf_fitdata *d)
 {
-    double best = INFINITY;
-    for (uint32_t i = lo; i <= hi; ++i) {
-        best = fmin(best, v[i]);
-    }
-    for (uint32_t i = lo; i <= hi; ++i) {
-        if (v[i] <= 1.02 * best + CV_FLOOR) {
-            return i;
-        }
-    }
-    return lo;
-}
-
-/* Degrees p in [lo, max] by CV; a degree with more terms than a training
- * fold has cases is not tried (its CV error is infinite). */
-static int select_degree(const tf_fitdata *d, tf_fitter fit, const tf_fit_plan *plan, uint32_t lo,
-                         uint32_t extra, double *cv, uint32_t *best, char *err, size_t errlen)
-{
-    size_t fold_cases = d->n_cases - (d->n_cases + plan->folds - 1) / plan->folds;
-    uint32_t hi = lo;
-    for (uint32_t p = 0; p <= TFIT_MAX_DEGREE; ++p) {
-        cv[p] = INFINITY;
-        if (p < lo || p > plan->max_degree || tf_terms(p) > fold_cases) {
-            continue;
-        }
-        uint32_t orders[2] = {p, extra};
-        if (tf_cv_error(d, fit, orders, plan->folds, plan->seed, &cv[p], NULL, err, errlen) != 0) {
-            return -1;
-        }
-        hi = p;
-    }
-    *best = cheapest_within(cv, lo, hi);
-    if (!isfinite(cv[*best])) {
-        snprintf(err, errlen,
-                 "%s: no degree is determined by the %zu training cases (repeated or collinear "
-                 "load cases?)",
-                 TF_FIT_UNDETERMINED, d->n_cases);
-        return -1;
-    }
-    return 0;
-}
-
-static void heldout(tf_family_fit *f, const tf_fitdata *d)
-{
-    tf_model_errors(f->model, d, NULL, d->n_cases, &f->heldout_max, &f->heldout_rms,
-                    &f->heldout_rel_max);
+    tf_family_errors(f->model, d, NULL, d->n_cases, &f->heldout_max, &f->heldout_rms,
+                     &f->heldout_rel_max);
     f->model->heldout_max = f->heldout_max;
     f->model->heldout_rms = f->heldout_rms;
     f->model->heldout_rel_max = f->heldout_rel_max;
@@ -81,7 +33,7 @@ static void heldout(tf_family_fit *f, const tf_fitdata *d)
 
 /* Seed Table 3 and the mean deviation maps (pipeline.h).  Returns 0, or -1
  * with a message in ctx. */
-static int seed_table(tf_family_fit *f, tf_cases *c, tf_ctx *ctx)
+static int seed_table(tf_family_result *f, tf_cases *c, tf_ctx *ctx)
 {
     const tf_fitdata *d = &c->train;
     const size_t rows = 3 * (size_t)d->n_out;
@@ -95,8 +47,8 @@ static int seed_table(tf_family_fit *f, tf_cases *c, tf_ctx *ctx)
     }
     for (int a = 0; a < 3; ++a) {
         double sum2[3] = {0, 0, 0};
-        for (int level = 1; level <= TF_FIT_LEVELS; ++level) {
-            double s = d->radius * level / TF_FIT_LEVELS, f3[3] = {0, 0, 0};
+        for (int level = 1; level <= TF_FAMILY_LEVELS; ++level) {
+            double s = d->radius * level / TF_FAMILY_LEVELS, f3[3] = {0, 0, 0};
             f3[a] = (double)(float)(d->centre[a] + s);
             const float in[3] = {(float)d->centre[0], (float)d->centre[1], (float)d->centre[2]};
             float fin[3] = {in[0], in[1], in[2]};
@@ -115,12 +67,12 @@ static int seed_table(tf_family_fit *f, tf_cases *c, tf_ctx *ctx)
                     double e = (double)out[3 * j + (size_t)comp] - truth[3 * j + (size_t)comp];
                     sum2[comp] += (e / s) * (e / s);
                     f->deviation[((size_t)a * 3 + (size_t)comp) * d->n_out + j] +=
-                        e / TF_FIT_LEVELS;
+                        e / TF_FAMILY_LEVELS;
                 }
             }
         }
         for (int comp = 0; comp < 3; ++comp) {
-            f->table3[a][comp] = sqrt(sum2[comp] / (TF_FIT_LEVELS * (double)d->n_out));
+            f->table3[a][comp] = sqrt(sum2[comp] / (TF_FAMILY_LEVELS * (double)d->n_out));
         }
     }
     free(out);
@@ -128,127 +80,39 @@ static int seed_table(tf_family_fit *f, tf_cases *c, tf_ctx *ctx)
     return 0;
 }
 
-static int fit_nodal(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size_t errlen)
+/* Marks every curve "not tried" before a family's order search. */
+static void untried(tf_family_result *r)
 {
-    tf_family_fit *f = &o->fam[TFIT_FAMILY_NODAL];
-    uint32_t p;
-    if (select_degree(&o->cases.train, tf_fit_nodal, plan, 0, 0, f->cv, &p, err, errlen) != 0) {
-        return -1;
+    for (size_t i = 0; i <= TFIT_MAX_DEGREE; ++i) {
+        r->cv[i] = INFINITY;
     }
-    f->model = tf_fit_nodal(&o->cases.train, NULL, o->cases.train.n_cases, &p, "nodal", err,
-                            errlen);
-    return f->model ? 0 : -1;
+    for (size_t i = 0; i <= TF_FAMILY_MAX_RANK; ++i) {
+        r->cv_rank[i] = r->heldout_rank[i] = INFINITY;
+    }
 }
 
-static int fit_contact(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size_t errlen)
+static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
+                      tf_family_result *r)
 {
-    tf_family_fit *f = &o->fam[TFIT_FAMILY_CONTACT];
-    uint32_t p;
-    if (select_degree(&o->cases.train, tf_fit_contact, plan, 1, 0, f->cv, &p, err, errlen) != 0) {
-        return -1;
-    }
-    f->model = tf_fit_contact(&o->cases.train, NULL, o->cases.train.n_cases, &p, "contact", err,
-                              errlen);
-    return f->model ? 0 : -1;
-}
-
-/* Modal: the degree by CV at the largest rank searched, then the rank by CV
- * at that degree; the held-out error of every rank for the report. */
-static int fit_modal(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size_t errlen)
-{
-    tf_family_fit *f = &o->fam[TFIT_FAMILY_MODAL];
-    const tf_fitdata *d = &o->cases.train;
-    const size_t fold_cases = d->n_cases - (d->n_cases + plan->folds - 1) / plan->folds;
-    uint32_t rmax = plan->max_rank;
-    if (rmax > TF_FIT_MAX_RANK) {
-        rmax = TF_FIT_MAX_RANK;
-    }
-    if (rmax > fold_cases) {
-        rmax = (uint32_t)fold_cases;
-    }
-    uint32_t p;
-    if (select_degree(d, tf_fit_modal, plan, 0, rmax, f->cv, &p, err, errlen) != 0) {
-        return -1;
-    }
-    f->cv_rank[0] = INFINITY;
-    for (uint32_t r = 1; r <= TF_FIT_MAX_RANK; ++r) {
-        const uint32_t orders[2] = {p, r};
-        f->cv_rank[r] = INFINITY;
-        o->rank_max[r] = INFINITY;
-        if (r > rmax) {
-            continue;
-        }
-        if (tf_cv_error(d, tf_fit_modal, orders, plan->folds, plan->seed, &f->cv_rank[r], NULL,
-                        err, errlen) != 0) {
-            return -1;
-        }
-        tf_model *m = tf_fit_modal(d, NULL, d->n_cases, orders, "modal", err, errlen);
-        if (m == NULL) {
-            return -1;
-        }
-        tf_model_errors(m, &o->cases.heldout, NULL, o->cases.heldout.n_cases, &o->rank_max[r],
-                        NULL, NULL);
-        if (o->rank_10um == 0 && o->rank_max[r] <= 0.010) {
-            o->rank_10um = r;
-        }
-        tf_model_free(m);
-    }
-    const uint32_t orders[2] = {p, cheapest_within(f->cv_rank, 1, rmax)};
-    f->model = tf_fit_modal(d, NULL, d->n_cases, orders, "modal", err, errlen);
-    return f->model ? 0 : -1;
-}
-
-static int fit_zhou(tf_fit_outcome *o, const tf_fit_plan *plan, char *err, size_t errlen)
-{
-    tf_family_fit *f = &o->fam[TFIT_FAMILY_ZHOU2017];
-    if (tf_zhou_applicable(&o->cases.train, f->why, sizeof f->why) != 0) {
-        f->applicable = 0;
+    const tf_family *f = r->family;
+    const int inverse = f->kind == TF_FAMILY_INVERSE;
+    double t0 = seconds();
+    untried(r);
+    r->applicable = f->applicable(&o->cases, plan, r->why, sizeof r->why) == 0;
+    if (!r->applicable) {
         return 0;
     }
-    const tf_fitdata *axis[3] = {&o->cases.axis[0], &o->cases.axis[1], &o->cases.axis[2]};
-    f->zhou_cv = malloc(sizeof *f->zhou_cv);
-    if (f->zhou_cv == NULL ||
-        tf_zhou_select(axis, plan->folds, plan->seed, &f->zhou, f->zhou_cv, err, errlen) != 0) {
+    tf_info(ctx, "fit: %s: choosing orders by %u-fold cross-validation", f->name, plan->folds);
+    if (f->select(&o->cases, plan, r, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
-    f->model = tf_fit_zhou2017(axis, &f->zhou, "zhou2017", err, errlen);
-    return f->model ? 0 : -1;
-}
-
-static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan, tfit_family fam)
-{
-    char *err = ctx->err;
-    const size_t errlen = sizeof ctx->err;
-    tf_family_fit *f = &o->fam[fam];
-    double t0 = seconds();
-    int rc;
-    f->applicable = 1;
-    tf_info(ctx, "fit: %s: choosing orders by %u-fold cross-validation", tf_family_name(fam),
-            plan->folds);
-    switch (fam) {
-    case TFIT_FAMILY_NODAL:
-        rc = fit_nodal(o, plan, err, errlen);
-        break;
-    case TFIT_FAMILY_MODAL:
-        rc = fit_modal(o, plan, err, errlen);
-        break;
-    case TFIT_FAMILY_ZHOU2017:
-        rc = fit_zhou(o, plan, err, errlen);
-        break;
-    default:
-        rc = fit_contact(o, plan, err, errlen);
-        break;
-    }
-    if (rc != 0 || !f->applicable) {
-        return rc;
-    }
-    heldout(f, &o->cases.heldout);
-    if (fam != TFIT_FAMILY_CONTACT && seed_table(f, &o->cases, ctx) != 0) {
+    heldout(r, &o->cases.heldout);
+    if (!inverse && seed_table(r, &o->cases, ctx) != 0) {
         return -1;
     }
-    f->seconds = seconds() - t0;
-    tf_info(ctx, "fit: %s: held-out max %.3g %s, rms %.3g (%.2f s)", tf_family_name(fam),
-            f->heldout_max, fam == TFIT_FAMILY_CONTACT ? "N" : "mm", f->heldout_rms, f->seconds);
+    r->seconds = seconds() - t0;
+    tf_info(ctx, "fit: %s: held-out max %.3g %s, rms %.3g (%.2f s)", f->name, r->heldout_max,
+            inverse ? "N" : "mm", r->heldout_rms, r->seconds);
     return 0;
 }
 
@@ -285,36 +149,57 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     }
     o->seconds_cases = seconds() - t0;
     warn_large(ctx, p, &o->cases.train);
-    if (plan->family == TFIT_FAMILY_ZHOU2017 &&
-        tf_zhou_applicable(&o->cases.train, ctx->err, sizeof ctx->err) != 0) {
+    /* refuse a forward family that does not apply before any fitting */
+    if (plan->family->applicable(&o->cases, plan, ctx->err, sizeof ctx->err) != 0) {
         tf_fit_outcome_free(o);
-        return -2; /* refuse before any fitting */
+        return -2;
     }
-    static const tfit_family order[] = {TFIT_FAMILY_NODAL, TFIT_FAMILY_MODAL,
-                                        TFIT_FAMILY_ZHOU2017, TFIT_FAMILY_CONTACT};
-    for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i) {
-        if (run_family(ctx, o, plan, order[i]) != 0) {
+    o->n_families = tf_family_count();
+    o->fam = calloc(o->n_families, sizeof *o->fam);
+    if (o->fam == NULL) {
+        tf_fit_outcome_free(o);
+        return tf_fail(ctx, "out of memory for the families' results");
+    }
+    for (size_t i = 0; i < o->n_families; ++i) {
+        o->fam[i].family = tf_family_at(i);
+        if (run_family(ctx, o, plan, &o->fam[i]) != 0) {
             tf_fit_outcome_free(o);
             return -1;
         }
-    }
-    if (!o->fam[plan->family].applicable) {
-        tf_fail(ctx, "%s", o->fam[plan->family].why);
-        tf_fit_outcome_free(o);
-        return -2;
     }
     return 0;
 }
 
 void tf_fit_outcome_free(tf_fit_outcome *o)
 {
-    for (int f = 1; f <= 4; ++f) {
-        tf_model_free(o->fam[f].model);
-        free(o->fam[f].deviation);
-        free(o->fam[f].zhou_cv);
-        o->fam[f].model = NULL;
-        o->fam[f].deviation = NULL;
-        o->fam[f].zhou_cv = NULL;
+    for (size_t i = 0; o->fam != NULL && i < o->n_families; ++i) {
+        tf_model_free(o->fam[i].model);
+        free(o->fam[i].deviation);
     }
+    free(o->fam);
+    o->fam = NULL;
+    o->n_families = 0;
     tf_cases_free(&o->cases);
+}
+
+const tf_family_result *tf_fit_result_of(const tf_fit_outcome *o, const tf_family *f)
+{
+    for (size_t i = 0; i < o->n_families; ++i) {
+        if (o->fam[i].family == f) {
+            return &o->fam[i];
+        }
+    }
+    return NULL;
+}
+
+tf_model *tf_fit_emitted(const tf_fit_outcome *o, const tf_fit_plan *plan, tf_family_kind kind)
+{
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (r->applicable && r->family->kind == kind &&
+            (kind != TF_FAMILY_FORWARD || r->family == plan->family)) {
+            return r->model;
+        }
+    }
+    return NULL;
 }

@@ -1,8 +1,9 @@
 /*
  * pipeline.h — from a problem and its solver to fitted models
- * (docs/fitting.md): load cases (cases.h), every applicable family fitted with its orders
- * chosen by k-fold cross-validation, held-out errors of the float32 target,
- * the seed's Table 3 view, and the modal error-versus-rank table.
+ * (docs/fitting.md): load cases (cases.h), then every registered family
+ * (families/family.h) that applies, its orders chosen by k-fold
+ * cross-validation, its held-out errors of the float32 target and, for
+ * forward families, the seed's Table 3 view.
  */
 #ifndef TF_FIT_PIPELINE_H
 #define TF_FIT_PIPELINE_H
@@ -11,39 +12,16 @@
 #include <stdint.h>
 
 #include "fitting/cases.h"
-#include "fitting/families/zhou2017.h"
+#include "fitting/families/family.h"
 #include "fitting/plan.h"
 #include "model/model.h"
 #include "problem/problem.h"
 #include "solvers/solver.h"
 
-#define TF_FIT_MAX_RANK 24 /* modal ranks searched (and tabulated) */
-#define TF_FIT_LEVELS 5    /* the seed's force levels: 0.2 .. 1.0 of the envelope */
-
-typedef struct tf_family_fit {
-    int applicable;
-    char why[320];           /* when not applicable */
-    tf_model *model;         /* fitted on every training case */
-    double cv[TFIT_MAX_DEGREE + 1];     /* CV RMS by degree (nodal, contact; modal at its rank) */
-    double cv_rank[TF_FIT_MAX_RANK + 1];/* modal: CV RMS by rank at its degree */
-    double heldout_max, heldout_rms, heldout_rel_max;
-    double seconds;          /* order selection and fit */
-    /* Forward families: force s e_a at the seed's levels s = 0.2 .. 1.0 of the
-     * envelope radius (superposed response as the truth).  table3[a][c]: RMS
-     * over points and levels of error_c / s (mm/N, seed Table 3);
-     * deviation[a][c]: the mean error over the levels at each point (mm,
-     * seed Figs 5-13), 3 x 3 x n_out. */
-    double table3[3][3];
-    double *deviation;
-    tf_zhou_orders zhou;     /* zhou2017 */
-    tf_zhou_cv *zhou_cv;
-} tf_family_fit;
-
 typedef struct tf_fit_outcome {
     tf_cases cases;
-    tf_family_fit fam[5];    /* indexed by tfit_family (1..4) */
-    double rank_max[TF_FIT_MAX_RANK + 1]; /* modal held-out max error by rank, at its degree */
-    uint32_t rank_10um;      /* smallest rank within 10 um, 0 if none */
+    size_t n_families;
+    tf_family_result *fam; /* one per registered family, in the registry's order */
     double seconds_cases;
 } tf_fit_outcome;
 
@@ -54,5 +32,12 @@ typedef struct tf_fit_outcome {
 int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *out);
 void tf_fit_outcome_free(tf_fit_outcome *out);
+
+/* The result of family f in an outcome (NULL when f is not registered). */
+const tf_family_result *tf_fit_result_of(const tf_fit_outcome *o, const tf_family *f);
+
+/* The model the fit emits for a kind: the plan's forward family, or the
+ * first applicable inverse family (NULL when none). */
+tf_model *tf_fit_emitted(const tf_fit_outcome *o, const tf_fit_plan *plan, tf_family_kind kind);
 
 #endif /* TF_FIT_PIPELINE_H */

@@ -3,9 +3,11 @@
  */
 #include "fitting/plan.h"
 
+#include "fitting/families/family.h"
+
 void tf_fit_plan_defaults(tf_fit_plan *p)
 {
-    *p = (tf_fit_plan){.family = TFIT_FAMILY_NODAL, .contact = 0, .n_train = 100,
+    *p = (tf_fit_plan){.family = tf_family_find("nodal"), .contact = 0, .n_train = 100,
                        .n_heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
                        .max_rank = 12};
 }

@@ -8,16 +8,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "tfit.h"
+typedef struct tf_family tf_family; /* fitting/families/family.h */
 
 typedef struct tf_fit_plan {
-    tfit_family family;   /* forward family to emit */
+    const tf_family *family; /* forward family to emit (the registry's) */
     int contact;          /* contact site index (-1 when the problem has none) */
     size_t n_train, n_heldout;
     uint64_t seed;        /* load-case design and folds */
     unsigned folds;       /* k of the k-fold cross-validation */
-    uint32_t max_degree;  /* nodal, modal and contact degrees searched: 0 (1) .. max */
-    uint32_t max_rank;    /* modal ranks searched: 1 .. max */
+    uint32_t max_degree;  /* degrees searched (nodal, modal, contact): 0 (1) .. max */
+    uint32_t max_rank;    /* ranks searched (modal): 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
 } tf_fit_plan;
 

@@ -18,23 +18,6 @@
 #define X0_LIMIT 0x1p63
 #define W_LIMIT 0x1p55
 
-static const char *const family_names[] = {NULL, "nodal", "modal", "zhou2017", "contact"};
-
-const char *tf_family_name(tfit_family f)
-{
-    return (f >= TFIT_FAMILY_NODAL && f <= TFIT_FAMILY_CONTACT) ? family_names[f] : NULL;
-}
-
-tfit_family tf_family_from_name(const char *name)
-{
-    for (int f = TFIT_FAMILY_NODAL; f <= TFIT_FAMILY_CONTACT; ++f) {
-        if (strcmp(name, family_names[f]) == 0) {
-            return (tfit_family)f;
-        }
-    }
-    return (tfit_family)0;
-}
-
 uint32_t tf_terms(uint32_t p)
 {
     return (p + 1) * (p + 2) * (p + 3) / 6;
@@ -95,8 +78,8 @@ tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, con
 {
     uint32_t n_coef = tf_model_ncoef(family, n_out, dims, n_dims);
     if (n_coef == 0) {
-        snprintf(err, errlen, "model '%s': invalid shape for family %s (n_out %u, %u dims)", name,
-                 tf_family_name(family) ? tf_family_name(family) : "?", n_out, n_dims);
+        snprintf(err, errlen, "model '%s': invalid shape for family %d (n_out %u, %u dims)", name,
+                 (int)family, n_out, n_dims);
         return NULL;
     }
     if (strlen(name) >= TF_NAME_MAX) {

@@ -78,9 +78,4 @@ tf_opcount tf_model_ops(const tf_model *m);
  * descriptor struct whose size depends on the target's pointer width. */
 uint32_t tf_model_table_bytes(const tf_model *m);
 
-/* "nodal", "modal", "zhou2017", "contact", or NULL. */
-const char *tf_family_name(tfit_family f);
-/* Family from its name; 0 when unknown. */
-tfit_family tf_family_from_name(const char *name);
-
 #endif /* TF_MODEL_H */

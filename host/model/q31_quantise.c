@@ -125,8 +125,8 @@ static void quantise_rows(const tf_model *m, tf_q31 *q)
 tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen)
 {
     if (m->family != TFIT_FAMILY_NODAL && m->family != TFIT_FAMILY_CONTACT) {
-        snprintf(err, errlen, "model '%s': no Q31 form for the %s family", m->name,
-                 tf_family_name(m->family));
+        snprintf(err, errlen, "model '%s': no Q31 form for family %d (nodal and contact only)",
+                 m->name, (int)m->family);
         return NULL;
     }
     tf_q31 *q = calloc(1, sizeof *q);

@@ -22,7 +22,7 @@
 
 /* Why a fit stopped.  tf_stop_converged() says which ones are success. */
 typedef enum tf_stop {
-    TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_fit) */
+    TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_lsfit) */
     TF_STOP_REDUCTION,      /* actual and predicted relative reduction <= ftol,
                                with a sane ratio (0.25..2) between them, and
                                the Gauss–Newton step's predicted one <= ftol */

@@ -19,14 +19,14 @@
  * 6e4, Bennett5). */
 #define FD_RANK_TOL 1e-6
 
-void tf_fit_default_options(tf_fit_options *o, size_t n_par)
+void tf_lsfit_default_options(tf_lsfit_options *o, size_t n_par)
 {
     memset(o, 0, sizeof *o);
     o->rank_tol = 1e-10;
     tf_lm_default_options(&o->lm, n_par);
 }
 
-void tf_fit_result_free(tf_fit_result *res)
+void tf_lsfit_result_free(tf_lsfit_result *res)
 {
     free(res->par);
     free(res->rss);
@@ -37,12 +37,12 @@ void tf_fit_result_free(tf_fit_result *res)
     memset(res, 0, sizeof *res);
 }
 
-double tf_fit_cov(const tf_fit_result *res, size_t k, size_t i, size_t j)
+double tf_lsfit_cov(const tf_lsfit_result *res, size_t k, size_t i, size_t j)
 {
     return res->sigma2[k] * res->cov[i + j * res->n_par];
 }
 
-static int result_alloc(tf_fit_result *res, size_t n, size_t k, size_t m)
+static int result_alloc(tf_lsfit_result *res, size_t n, size_t k, size_t m)
 {
     memset(res, 0, sizeof *res);
     res->n_par = n;
@@ -56,14 +56,14 @@ static int result_alloc(tf_fit_result *res, size_t n, size_t k, size_t m)
     res->state = calloc(n, sizeof *res->state);
     if (res->par == NULL || res->rss == NULL || res->sigma2 == NULL || res->cov == NULL ||
         res->se == NULL || res->state == NULL) {
-        tf_fit_result_free(res);
+        tf_lsfit_result_free(res);
         return -1;
     }
     return 0;
 }
 
 /* sigma2 and standard errors from rss, cov and state. */
-static void finish_statistics(tf_fit_result *res)
+static void finish_statistics(tf_lsfit_result *res)
 {
     const size_t n = res->n_par;
     for (size_t k = 0; k < res->n_rhs; ++k) {
@@ -80,8 +80,8 @@ static void finish_statistics(tf_fit_result *res)
 /* ------------------------------------------------------------------------ */
 /* Linear: one factorisation, all data columns solved together. */
 
-static int fit_linear(const tf_fit_model *model, const tf_fit_data *data, const tf_fit_options *o,
-                      tf_fit_result *res, char *err, size_t errlen)
+static int fit_linear(const tf_lsfit_model *model, const tf_lsfit_data *data,
+                      const tf_lsfit_options *o, tf_lsfit_result *res, char *err, size_t errlen)
 {
     const size_t m = data->n_obs, n = model->n_par, k = data->n_rhs;
     double *a = malloc(m * n * sizeof *a);
@@ -111,7 +111,7 @@ static int fit_linear(const tf_fit_model *model, const tf_fit_data *data, const 
             snprintf(err, errlen, "out of memory");
         }
         tf_lsq_free(f);
-        tf_fit_result_free(res);
+        tf_lsfit_result_free(res);
         return -1;
     }
     res->rank = tf_lsq_rank(f);
@@ -128,7 +128,7 @@ static int fit_linear(const tf_fit_model *model, const tf_fit_data *data, const 
 /* Nonlinear: weighted residuals r_i = sqrt(w_i) (f_i(p) - y_i) for lm.c. */
 
 typedef struct nl_ctx {
-    const tf_fit_model *model;
+    const tf_lsfit_model *model;
     const double *y;
     double *sqrt_w; /* NULL when unweighted */
     size_t m, n;
@@ -167,7 +167,7 @@ static int nl_jacobian(void *ctx, const double *p, double *jac)
 }
 
 /* Covariance of the free parameters from the Jacobian columns in idx. */
-static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_fit_result *res,
+static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_lsfit_result *res,
                            double rank_tol, char *err, size_t errlen)
 {
     const size_t m = res->n_obs, n = res->n_par;
@@ -205,7 +205,7 @@ static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_f
  * parameters not held by a bound (a held parameter was not estimated, so
  * its column says nothing about its uncertainty).  Without a finite
  * Jacobian there (a fit that could not start) they are all NAN. */
-static int nonlinear_statistics(const double *jac, const signed char *active, tf_fit_result *res,
+static int nonlinear_statistics(const double *jac, const signed char *active, tf_lsfit_result *res,
                                 double rank_tol, char *err, size_t errlen)
 {
     const size_t m = res->n_obs, n = res->n_par;
@@ -254,8 +254,8 @@ static double weighted_norm(const double *y, const double *sqrt_w, size_t m)
     return scale * sqrt(s);
 }
 
-static int fit_nonlinear(const tf_fit_model *model, const tf_fit_data *data,
-                         const tf_fit_options *o, tf_fit_result *res, char *err, size_t errlen)
+static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
+                         const tf_lsfit_options *o, tf_lsfit_result *res, char *err, size_t errlen)
 {
     const size_t m = data->n_obs, n = model->n_par;
     if (data->n_rhs != 1 || o->start == NULL) {
@@ -307,13 +307,13 @@ static int fit_nonlinear(const tf_fit_model *model, const tf_fit_data *data,
     free(active);
     free(c.sqrt_w);
     if (rc != 0) {
-        tf_fit_result_free(res);
+        tf_lsfit_result_free(res);
     }
     return rc;
 }
 
-int tf_fit(const tf_fit_model *model, const tf_fit_data *data, const tf_fit_options *opt,
-           tf_fit_result *res, char *err, size_t errlen)
+int tf_lsfit(const tf_lsfit_model *model, const tf_lsfit_data *data, const tf_lsfit_options *opt,
+           tf_lsfit_result *res, char *err, size_t errlen)
 {
     memset(res, 0, sizeof *res);
     if (err != NULL && errlen > 0) {

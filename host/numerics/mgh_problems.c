@@ -2,7 +2,7 @@
  * mgh_problems.c — the 18 least-squares problems of Moré, Garbow &
  * Hillstrom (ACM TOMS 7(1) 1981, §3), written from the paper's
  * definitions: residuals f_i(x), their Jacobians (derived by hand, checked
- * against differences by tests/unit/test_lm_mgh.c), standard starting
+ * against differences by tests/unit/numerics/test_lm_mgh.c), standard starting
  * points, and the minimal sums of squares the paper reports.  Indices in
  * the comments are the paper's (1-based); the code's are 0-based.
  */
@@ -682,7 +682,7 @@ static double watson_min(size_t n)
  * the one-variable function: 3.0665272324 at x = 0.40897 and 0.59103
  * (symmetric about 1/2), the smallest on [-0.25, 1.25], and a local
  * minimum 3.5503912977 at x = 0.98173 (where MINPACK's driver ends from
- * 10 x0 and 100 x0, final norm 1.8842482).  tests/unit/test_lm_mgh.c
+ * 10 x0 and 100 x0, final norm 1.8842482).  tests/unit/numerics/test_lm_mgh.c
  * checks both. */
 static size_t chebyquad_minima(size_t n, double *f)
 {

@@ -49,7 +49,7 @@ void tf_mgh_jacobian(const tf_mgh_run *r, const double *x, double *jac);
  * smallest known (the global minimum as far as known), f[1] the other
  * minimum the paper lists where it lists one (a local minimum, or one at
  * infinity: parameters going to +-infinity).  Not from the paper, found by
- * this study and checked by tests/unit/test_lm_mgh.c: f[2] for Kowalik–
+ * this study and checked by tests/unit/numerics/test_lm_mgh.c: f[2] for Kowalik–
  * Osborne (a local minimum: zero gradient, positive definite Hessian), and
  * both values for Chebyquad with n = 1, m = 8, which the paper does not
  * list. */

@@ -1,5 +1,5 @@
 /*
- * nist_fit.c — one NIST StRD run through tf_fit, scored in correct digits
+ * nist_fit.c — one NIST StRD run through tf_lsfit, scored in correct digits
  * (see nist_fit.h).
  */
 #include "numerics/nist_fit.h"
@@ -71,9 +71,9 @@ int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_mo
     return 0;
 }
 
-void tf_nist_options(tf_fit_options *o, size_t n_par)
+void tf_nist_options(tf_lsfit_options *o, size_t n_par)
 {
-    tf_fit_default_options(o, n_par);
+    tf_lsfit_default_options(o, n_par);
     o->lm.ftol = 1e-15;
     o->lm.xtol = 1e-15;
     o->lm.gtol = 0;
@@ -108,7 +108,7 @@ static int jacobian(void *ctx, const double *b, double *jac)
     return 0;
 }
 
-static void score(const tf_nist *d, const tf_fit_result *r, tf_nist_score *s)
+static void score(const tf_nist *d, const tf_lsfit_result *r, tf_nist_score *s)
 {
     s->min_lre = TF_LRE_CAP;
     for (size_t j = 0; j < d->n_par; ++j) {
@@ -127,7 +127,7 @@ static void score(const tf_nist *d, const tf_fit_result *r, tf_nist_score *s)
     s->jac_evals = r->jac_evals;
 }
 
-int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_fit_options *o,
+int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_lsfit_options *o,
                 int finite_diff, tf_nist_score *s, char *err, size_t errlen)
 {
     if (start != 1 && start != 2) {
@@ -143,18 +143,18 @@ int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const t
         y[i] = response(model, d->y[i]);
     }
     run_ctx c = {d, model};
-    tf_fit_model fm = {.n_par = d->n_par, .value = values,
+    tf_lsfit_model fm = {.n_par = d->n_par, .value = values,
                        .jacobian = finite_diff ? NULL : jacobian, .ctx = &c};
-    tf_fit_data data = {.n_obs = d->n_obs, .n_rhs = 1, .y = y};
-    tf_fit_options opt = *o;
+    tf_lsfit_data data = {.n_obs = d->n_obs, .n_rhs = 1, .y = y};
+    tf_lsfit_options opt = *o;
     opt.start = d->start[start - 1];
-    tf_fit_result r;
-    int rc = tf_fit(&fm, &data, &opt, &r, err, errlen);
+    tf_lsfit_result r;
+    int rc = tf_lsfit(&fm, &data, &opt, &r, err, errlen);
     free(y);
     if (rc != 0) {
         return -1;
     }
     score(d, &r, s);
-    tf_fit_result_free(&r);
+    tf_lsfit_result_free(&r);
     return 0;
 }

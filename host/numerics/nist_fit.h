@@ -45,11 +45,11 @@ int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_mo
 
 /* Tolerances of the certification runs (docs/lm.md): ftol = xtol = 1e-15,
  * gtol = 0, 10000 evaluations. */
-void tf_nist_options(tf_fit_options *o, size_t n_par);
+void tf_nist_options(tf_lsfit_options *o, size_t n_par);
 
 /* Fits d with model from start 1 or 2 using o (analytic Jacobian unless
  * finite_diff).  Returns 0 with the score, -1 with a message. */
-int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_fit_options *o,
+int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_lsfit_options *o,
                 int finite_diff, tf_nist_score *s, char *err, size_t errlen);
 
 #endif /* TF_NIST_FIT_H */

@@ -2,7 +2,7 @@
  * nist_models.c — the 19 distinct model functions of the 27 NIST StRD
  * nonlinear problems, with their derivatives (see nist_models.h).  The
  * formulas are those printed in the files; the derivatives are worked out
- * by hand and checked against central differences in tests/unit/test_lm_nist.c.
+ * by hand and checked against central differences in tests/unit/numerics/test_lm_nist.c.
  */
 #include "numerics/nist_models.h"
 

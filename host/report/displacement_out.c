@@ -3,8 +3,8 @@
  */
 #include "report/displacement_out.h"
 
-void tf_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
-                          const double *u)
+void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
+                                 const double *u)
 {
     fprintf(fp, "node,x,y,z,ux,uy,uz\n");
     size_t count = idx ? n : c->n;
@@ -26,7 +26,7 @@ static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[
     }
 }
 
-void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
 {
     size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
     fprintf(fp,

@@ -14,10 +14,10 @@
 #include "problem/nodes.h"
 
 /* Rows for the n nodes idx[] (all nodes when idx is NULL, n ignored). */
-void tf_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
-                          const double *u);
+void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
+                                 const double *u);
 
 /* The whole cloud as a VTU file. */
-void tf_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u);
+void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u);
 
 #endif /* TF_DISPLACEMENT_OUT_H */

@@ -29,40 +29,46 @@ static void stem(const char *header, char *out, size_t n)
     out[strcspn(out, ".")] = '\0';
 }
 
-static void orders(const tf_model *m, char *buf, size_t n)
+static const char *unit_of(const tf_family *f)
 {
-    if (m->family == TFIT_FAMILY_MODAL) {
-        snprintf(buf, n, "p=%u r=%u", m->dims[0], m->dims[1]);
-    } else if (m->family == TFIT_FAMILY_ZHOU2017) {
-        snprintf(buf, n, "λ=%u,%u,%u (surfaces below)", m->dims[0], m->dims[1], m->dims[2]);
-    } else {
-        snprintf(buf, n, "p=%u", m->dims[0]);
-    }
+    return f->kind == TF_FAMILY_INVERSE ? "N" : "mm";
 }
 
-static void cost_row(FILE *f, const tf_family_fit *ff, tfit_family fam, int emitted)
+static void cost_row(FILE *f, const tf_family_result *r, int emitted)
 {
     char ord[128];
-    const tf_model *m = ff->model;
-    if (!ff->applicable) {
-        fprintf(f, "| %s | not applicable: %s |||||||||\n", tf_family_name(fam), ff->why);
+    const tf_model *m = r->model;
+    const tf_family *fam = r->family;
+    if (!r->applicable) {
+        fprintf(f, "| %s | not applicable: %s |||||||||\n", fam->name, r->why);
         return;
     }
-    orders(m, ord, sizeof ord);
-    tf_opcount ops = tf_model_ops(m);
-    tf_cycles m4 = tf_cycles_estimate(m, TF_CORE_M4F), m7 = tf_cycles_estimate(m, TF_CORE_M7);
-    const char *unit = fam == TFIT_FAMILY_CONTACT ? "N" : "mm";
+    fam->orders_text(m, TF_ORDERS_SHORT, ord, sizeof ord);
+    tf_family_cost cost;
+    fam->cost(m, &cost);
+    const char *unit = unit_of(fam);
     fprintf(f, "| %s%s | %s | %u | %llu | %u | %.1f–%.1f | %.2f | %.3g %s | %.3g %s | %.2f |\n",
-            tf_family_name(fam), emitted ? " (emitted)" : "", ord, m->n_coef,
-            (unsigned long long)(ops.add + ops.mul + ops.div), tf_model_table_bytes(m),
-            m4.cycles_low / tf_core_mhz(TF_CORE_M4F), m4.cycles / tf_core_mhz(TF_CORE_M4F),
-            m7.cycles / tf_core_mhz(TF_CORE_M7), ff->heldout_max, unit, ff->heldout_rms, unit,
-            ff->seconds);
+            fam->name, emitted ? " (emitted)" : "", ord, m->n_coef,
+            (unsigned long long)(cost.ops.add + cost.ops.mul + cost.ops.div), cost.table_bytes,
+            cost.m4f.cycles_low / tf_core_mhz(TF_CORE_M4F),
+            cost.m4f.cycles / tf_core_mhz(TF_CORE_M4F), cost.m7.cycles / tf_core_mhz(TF_CORE_M7),
+            r->heldout_max, unit, r->heldout_rms, unit, r->seconds);
 }
 
-static void table3(FILE *f, const tf_family_fit *ff, const char *title)
+/* Whether a curve has a value: the family searched it. */
+static int searched(const double *v, size_t n)
 {
-    fprintf(f, "\n%s\n\n| force along | RMS x | RMS y | RMS z |\n|---|---|---|---|\n", title);
+    for (size_t i = 0; i < n; ++i) {
+        if (isfinite(v[i])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void table3(FILE *f, const tf_family_result *ff, const char *title)
+{
+    fprintf(f, "\n**%s**\n\n| force along | RMS x | RMS y | RMS z |\n|---|---|---|---|\n", title);
     for (int a = 0; a < 3; ++a) {
         fprintf(f, "| %c | %.3g | %.3g | %.3g |\n", "XYZ"[a], ff->table3[a][0], ff->table3[a][1],
                 ff->table3[a][2]);
@@ -80,42 +86,68 @@ static void data_block(FILE *gp, const char *name, const double *x, const double
     fprintf(gp, "EOD\n");
 }
 
+/* Left: the CV error by degree of every family that searched a degree;
+ * right: the CV and held-out errors by rank of every family with a rank. */
 static int cv_plot(const char *path, const tf_fit_outcome *o, char *err, size_t errlen)
 {
+    static const int point[] = {7, 5, 9, 11, 13};
     tf_plot p;
     if (tf_plot_open(&p, path, 1000, 420, err, errlen) != 0) {
         return -1;
     }
-    double deg[TFIT_MAX_DEGREE + 1], rank[TF_FIT_MAX_RANK + 1];
+    double deg[TFIT_MAX_DEGREE + 1], rank[TF_FAMILY_MAX_RANK + 1];
     for (int i = 0; i <= TFIT_MAX_DEGREE; ++i) {
         deg[i] = i;
     }
-    for (int i = 0; i <= TF_FIT_MAX_RANK; ++i) {
+    for (int i = 0; i <= TF_FAMILY_MAX_RANK; ++i) {
         rank[i] = i;
     }
-    data_block(p.gp, "nodal", deg, o->fam[TFIT_FAMILY_NODAL].cv, TFIT_MAX_DEGREE + 1);
-    data_block(p.gp, "modal", deg, o->fam[TFIT_FAMILY_MODAL].cv, TFIT_MAX_DEGREE + 1);
-    data_block(p.gp, "contact", deg, o->fam[TFIT_FAMILY_CONTACT].cv, TFIT_MAX_DEGREE + 1);
-    data_block(p.gp, "rank", rank, o->fam[TFIT_FAMILY_MODAL].cv_rank, TF_FIT_MAX_RANK + 1);
-    data_block(p.gp, "heldout", rank, o->rank_max, TF_FIT_MAX_RANK + 1);
+    char name[64];
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        snprintf(name, sizeof name, "cv%zu", i);
+        data_block(p.gp, name, deg, r->cv, TFIT_MAX_DEGREE + 1);
+        snprintf(name, sizeof name, "rank%zu", i);
+        data_block(p.gp, name, rank, r->cv_rank, TF_FAMILY_MAX_RANK + 1);
+        snprintf(name, sizeof name, "heldout%zu", i);
+        data_block(p.gp, name, rank, r->heldout_rank, TF_FAMILY_MAX_RANK + 1);
+    }
+    fprintf(p.gp, "set multiplot layout 1,2\n"
+                  "set logscale y\nset format y '%%.0e'\nset xtics 1\nset grid\nset key top right\n"
+                  "set title 'cross-validated RMS error by polynomial degree'\n"
+                  "set xlabel 'total degree p'\nset ylabel 'CV RMS error (mm; contact: N)'\n"
+                  "plot ");
+    const char *sep = "";
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (searched(r->cv, TFIT_MAX_DEGREE + 1)) {
+            fprintf(p.gp, "%s$cv%zu w lp pt %d t '%s (%s)'", sep, i, point[i % 5], r->family->name,
+                    unit_of(r->family));
+            sep = ", ";
+        }
+    }
     fprintf(p.gp,
-            "set multiplot layout 1,2\n"
-            "set logscale y\nset format y '%%.0e'\nset xtics 1\nset grid\nset key top right\n"
-            "set title 'cross-validated RMS error by polynomial degree'\n"
-            "set xlabel 'total degree p'\nset ylabel 'CV RMS error (mm; contact: N)'\n"
-            "plot $nodal w lp pt 7 t 'nodal', $modal w lp pt 5 t 'modal (largest rank)', "
-            "$contact w lp pt 9 t 'contact inverse (N)'\n"
-            "set title 'modal family by rank'\nset xlabel 'rank r'\nset ylabel 'error (mm)'\n"
-            "set xtics 2\n"
-            "plot $rank w lp pt 7 t 'CV RMS', $heldout w lp pt 5 t 'held-out max', "
-            "0.010 w l dt 2 t '10 um'\n"
-            "unset multiplot\n");
+            "%s\nset title 'error by rank'\nset xlabel 'rank r'\nset ylabel 'error (mm)'\n"
+            "set xtics 2\nplot ",
+            *sep ? "" : "NaN t ''");
+    sep = "";
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (searched(r->cv_rank, TF_FAMILY_MAX_RANK + 1)) {
+            fprintf(p.gp,
+                    "%s$rank%zu w lp pt 7 t '%s CV RMS', $heldout%zu w lp pt 5 t '%s "
+                    "held-out max'",
+                    sep, i, r->family->name, i, r->family->name);
+            sep = ", ";
+        }
+    }
+    fprintf(p.gp, "%s0.010 w l dt 2 t '10 um'\nunset multiplot\n", sep);
     return tf_plot_close(&p, err, errlen);
 }
 
 /* 3 x 3 panels: mean deviation (model - solve) of each component under a
  * force along each axis, over the output points seen from above. */
-static int error_map(const char *path, const tf_fitdata *d, const tf_family_fit *ff,
+static int error_map(const char *path, const tf_fitdata *d, const tf_family_result *ff,
                      const char *family, char *err, size_t errlen)
 {
     tf_plot p;
@@ -147,17 +179,47 @@ static int error_map(const char *path, const tf_fitdata *d, const tf_family_fit 
     return tf_plot_close(&p, err, errlen);
 }
 
-static void zhou_orders(FILE *f, const tf_family_fit *z)
+/* The rank table of a family with a rank (modal). */
+static void rank_table(FILE *f, const tf_family_result *r, const tf_fit_plan *plan)
 {
-    fprintf(f, "\nzhou2017 orders chosen by cross-validation: contact laws λ = %u, %u, %u; "
-               "surfaces (x order A, y order B, β order k) per force axis and component:\n\n"
-               "| force | ux | uy | uz |\n|---|---|---|---|\n",
-            z->zhou.lambda[0], z->zhou.lambda[1], z->zhou.lambda[2]);
-    for (int a = 0; a < 3; ++a) {
-        fprintf(f, "| %c |", "XYZ"[a]);
-        for (int c = 0; c < 3; ++c) {
-            int pair = 3 * a + c;
-            fprintf(f, " A=%u B=%u k=%u |", z->zhou.a[pair], z->zhou.b[pair], z->zhou.k[pair]);
+    uint32_t within = 0;
+    fprintf(f,
+            "\n## Error against rank: %s\n\n| rank r | CV RMS (mm) | held-out max "
+            "(mm) |\n|---|---|---|\n",
+            r->family->name);
+    for (uint32_t k = 1; k <= plan->max_rank && k <= TF_FAMILY_MAX_RANK; ++k) {
+        fprintf(f, "| %u | %.3g | %.3g |\n", k, r->cv_rank[k], r->heldout_rank[k]);
+    }
+    for (uint32_t k = 1; k <= TF_FAMILY_MAX_RANK && within == 0; ++k) {
+        within = r->heldout_rank[k] <= 0.010 ? k : 0;
+    }
+    if (within > 0) {
+        fprintf(f, "\nSmallest rank within 10 µm (held-out max): **r = %u**.\n", within);
+    } else {
+        fprintf(f, "\nNo rank up to %u is within 10 µm.\n", plan->max_rank);
+    }
+}
+
+/* The CV table: one column per family that searched a degree. */
+static void cv_table(FILE *f, const tf_fit_outcome *o, const tf_fit_plan *plan)
+{
+    fprintf(f, "| degree p |");
+    for (size_t i = 0; i < o->n_families; ++i) {
+        if (searched(o->fam[i].cv, TFIT_MAX_DEGREE + 1)) {
+            fprintf(f, " %s CV RMS (%s) |", o->fam[i].family->name, unit_of(o->fam[i].family));
+        }
+    }
+    fprintf(f, "\n|---|");
+    for (size_t i = 0; i < o->n_families; ++i) {
+        fprintf(f, "%s", searched(o->fam[i].cv, TFIT_MAX_DEGREE + 1) ? "---|" : "");
+    }
+    fprintf(f, "\n");
+    for (int p = 0; p <= (int)plan->max_degree; ++p) {
+        fprintf(f, "| %d |", p);
+        for (size_t i = 0; i < o->n_families; ++i) {
+            if (searched(o->fam[i].cv, TFIT_MAX_DEGREE + 1)) {
+                fprintf(f, " %.3g |", o->fam[i].cv[p]);
+            }
         }
         fprintf(f, "\n");
     }
@@ -185,40 +247,34 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
                "Cortex-M7 estimate at 480 MHz (docs/firmware.md).\n\n"
                "| family | orders | coefficients | ops | table bytes | M4F µs | M7 µs | held-out "
                "max | held-out RMS | fit s |\n|---|---|---|---|---|---|---|---|---|---|\n");
-    for (int fam = 1; fam <= 4; ++fam) {
-        cost_row(f, &o->fam[fam], (tfit_family)fam, fam == (int)plan->family);
+    for (size_t i = 0; i < o->n_families; ++i) {
+        cost_row(f, &o->fam[i], o->fam[i].family == plan->family);
     }
-    if (o->fam[TFIT_FAMILY_CONTACT].applicable) {
-        fprintf(f, "\nContact inverse: held-out relative force error max %.3g.\n",
-                o->fam[TFIT_FAMILY_CONTACT].heldout_rel_max);
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (r->applicable && r->family->kind == TF_FAMILY_INVERSE) {
+            fprintf(f, "\nInverse family %s: held-out relative force error max %.3g.\n",
+                    r->family->name, r->heldout_rel_max);
+        }
     }
-    fprintf(f, "\n## Cross-validation\n\n![cross-validation](%s_cv.png)\n\n"
-               "| degree p | nodal CV RMS (mm) | modal CV RMS (mm) | contact CV RMS (N) |\n"
-               "|---|---|---|---|\n",
-            name);
-    for (int p = 0; p <= (int)plan->max_degree; ++p) {
-        fprintf(f, "| %d | %.3g | %.3g | %.3g |\n", p, o->fam[TFIT_FAMILY_NODAL].cv[p],
-                o->fam[TFIT_FAMILY_MODAL].cv[p], o->fam[TFIT_FAMILY_CONTACT].cv[p]);
-    }
-    fprintf(f, "\n## Modal family: error against rank\n\n| rank r | CV RMS (mm) | held-out max "
-               "(mm) |\n|---|---|---|\n");
-    for (uint32_t r = 1; r <= plan->max_rank && r <= TF_FIT_MAX_RANK; ++r) {
-        fprintf(f, "| %u | %.3g | %.3g |\n", r, o->fam[TFIT_FAMILY_MODAL].cv_rank[r],
-                o->rank_max[r]);
-    }
-    if (o->rank_10um > 0) {
-        fprintf(f, "\nSmallest rank within 10 µm (held-out max): **r = %u**.\n", o->rank_10um);
-    } else {
-        fprintf(f, "\nNo rank up to %u is within 10 µm.\n", plan->max_rank);
+    fprintf(f, "\n## Cross-validation\n\n![cross-validation](%s_cv.png)\n\n", name);
+    cv_table(f, o, plan);
+    for (size_t i = 0; i < o->n_families; ++i) {
+        if (searched(o->fam[i].cv_rank, TF_FAMILY_MAX_RANK + 1)) {
+            rank_table(f, &o->fam[i], plan);
+        }
     }
     fprintf(f, "\n## The seed's Table 3 view\n\nRMS error of the output displacements under "
                "forces of 0.2, 0.4, ... 1.0 × the envelope radius along each axis, divided by "
                "the force (mm/N), as seed 000 Table 3 reports it.\n");
-    table3(f, &o->fam[TFIT_FAMILY_NODAL], "**nodal**");
-    table3(f, &o->fam[TFIT_FAMILY_MODAL], "**modal**");
-    if (o->fam[TFIT_FAMILY_ZHOU2017].applicable) {
-        table3(f, &o->fam[TFIT_FAMILY_ZHOU2017], "**zhou2017** (this tool, the seed's method)");
-        zhou_orders(f, &o->fam[TFIT_FAMILY_ZHOU2017]);
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (r->applicable && r->family->kind == TF_FAMILY_FORWARD) {
+            char ord[512];
+            r->family->orders_text(r->model, TF_ORDERS_FULL, ord, sizeof ord);
+            table3(f, r, r->family->name);
+            fprintf(f, "\nOrders: `%s`.\n", ord);
+        }
     }
     fprintf(f, "\n**Seed 000, Table 3** (its own RPIM solution, point load, raw-mm basis):\n\n"
                "| force along | RMS x | RMS y | RMS z |\n|---|---|---|---|\n");
@@ -228,15 +284,15 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
     }
     fprintf(f, "\n## Error maps\n\nMean deviation of each family from the solve over the output "
                "points (the seed's Figs 5–13), per force axis and displacement component.\n\n");
-    for (int fam = 1; fam <= 3; ++fam) {
-        if (o->fam[fam].applicable) {
-            fprintf(f, "![%s](%s_errors_%s.png)\n\n", tf_family_name((tfit_family)fam), name,
-                    tf_family_name((tfit_family)fam));
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (r->applicable && r->family->kind == TF_FAMILY_FORWARD) {
+            fprintf(f, "![%s](%s_errors_%s.png)\n\n", r->family->name, name, r->family->name);
         }
     }
 }
 
-int tf_fit_report(const char *dir, const char *header, const tf_problem *s,
+int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
                   const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *o,
                   char *err, size_t errlen)
 {
@@ -246,14 +302,13 @@ int tf_fit_report(const char *dir, const char *header, const tf_problem *s,
     if (cv_plot(path, o, err, errlen) != 0) {
         return -1;
     }
-    for (int fam = 1; fam <= 3; ++fam) {
-        if (!o->fam[fam].applicable) {
+    for (size_t i = 0; i < o->n_families; ++i) {
+        const tf_family_result *r = &o->fam[i];
+        if (!r->applicable || r->family->kind != TF_FAMILY_FORWARD) {
             continue;
         }
-        snprintf(path, sizeof path, "%s/%s_errors_%s.png", dir, name,
-                 tf_family_name((tfit_family)fam));
-        if (error_map(path, &o->cases.train, &o->fam[fam], tf_family_name((tfit_family)fam), err,
-                      errlen) != 0) {
+        snprintf(path, sizeof path, "%s/%s_errors_%s.png", dir, name, r->family->name);
+        if (error_map(path, &o->cases.train, r, r->family->name, err, errlen) != 0) {
             return -1;
         }
     }

@@ -11,7 +11,7 @@
 
 /* header: the header path (its stem names the files).  Returns 0, or -1
  * with a message. */
-int tf_fit_report(const char *dir, const char *header, const tf_problem *p,
+int tf_report_fit(const char *dir, const char *header, const tf_problem *p,
                   const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *out,
                   char *err, size_t errlen);
 

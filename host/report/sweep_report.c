@@ -3,23 +3,24 @@
  * plot of held-out error against native time per evaluation, with the
  * seed's own point (0.1509 s per evaluation, 0.5 mm maximum error).
  */
+#include "report/sweep_report.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "base/atomic_file.h"
 #include "base/plot.h"
-#include "cost/sweep.h"
 
 #define SEED_NS 0.1509e9 /* seed 000 §5.1.2: 0.1509 s per evaluation (Matlab) */
 #define SEED_MM 0.5      /* its reported maximum deviation */
 
 static const char *unit(const tf_candidate *c)
 {
-    return c->family == TFIT_FAMILY_CONTACT ? "N" : "mm";
+    return c->family->kind == TF_FAMILY_INVERSE ? "N" : "mm";
 }
 
-int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
 {
     tf_afile f;
     if (tf_afile_open(&f, path, err, errlen) != 0) {
@@ -34,7 +35,7 @@ int tf_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
             snprintf(ops, sizeof ops, "%llu", (unsigned long long)c->ops);
         }
         fprintf(f.fp, "%s,%u,%s,%s,%s,%u,%u,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%s,%d\n",
-                tf_output_set_name(c->set), c->n_out, c->label, tf_family_name(c->family),
+                tf_output_set_name(c->set), c->n_out, c->label, c->family->name,
                 tf_precision_name(c->precision), c->n_coef, c->table_bytes, ops, c->us_m4f,
                 c->us_m4f_low, c->us_m7, c->ns_native, c->heldout_max, c->heldout_rms, unit(c),
                 c->pareto);
@@ -51,8 +52,8 @@ static void number(FILE *f, double v, const char *fmt)
     }
 }
 
-int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
-                      size_t errlen)
+int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
+                             size_t errlen)
 {
     tf_afile f;
     if (tf_afile_open(&f, path, err, errlen) != 0) {
@@ -91,10 +92,30 @@ int tf_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path,
     return tf_afile_commit(&f, err, errlen);
 }
 
-int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+/* A plotted series: the forward family at registry position fam in one
+ * precision, the scene's outputs, with a time and a positive error. */
+static int in_series(const tf_candidate *c, size_t fam, int prec)
 {
-    static const char *const colour[] = {"", "#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
+    return c->family == tf_family_at(fam) && (int)c->precision == prec &&
+           c->set == TF_SET_SCENE && isfinite(c->ns_native) && c->heldout_max > 0;
+}
+
+static int series_present(const tf_sweep *sw, size_t fam, int prec)
+{
+    for (size_t i = 0; i < sw->n; ++i) {
+        if (in_series(&sw->c[i], fam, prec)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+{
+    static const char *const colour[] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                                         "#e377c2"};
     static const int point[] = {7, 5, 9};
+    const size_t n_fam = tf_family_count(), n_colour = sizeof colour / sizeof colour[0];
     tf_plot p;
     if (tf_plot_open(&p, path, 1000, 700, err, errlen) != 0) {
         return -1;
@@ -107,36 +128,27 @@ int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen
             "set title 'forward models: error against time (filled: Pareto front)'\n"
             "set label 1 'seed 000 (0.1509 s, 0.5 mm)' at %g,%g offset -12,1.5\n",
             SEED_NS, SEED_MM);
-    /* one series per family and precision that has points */
-    int present[4][3] = {{0}};
-    for (size_t i = 0; i < sw->n; ++i) {
-        const tf_candidate *c = &sw->c[i];
-        if (c->family <= 3 && c->set == TF_SET_SCENE && isfinite(c->ns_native) &&
-            c->heldout_max > 0) {
-            present[c->family][c->precision] = 1;
-        }
-    }
+    /* one series per forward family and precision that has points */
     fprintf(p.gp, "plot '-' w p pt 3 ps 2 lc 'black' t 'seed 000'");
-    for (int fam = 1; fam <= 3; ++fam) {
+    for (size_t fam = 0; fam < n_fam; ++fam) {
         for (int prec = 0; prec < 3; ++prec) {
-            if (present[fam][prec]) {
+            if (tf_family_at(fam)->kind == TF_FAMILY_FORWARD && series_present(sw, fam, prec)) {
                 fprintf(p.gp, ", '-' w p pt %d ps 1.2 lc rgb '%s' t '%s %s'", point[prec],
-                        colour[fam], tf_family_name((tfit_family)fam),
+                        colour[fam % n_colour], tf_family_at(fam)->name,
                         tf_precision_name((tf_precision)prec));
             }
         }
     }
     fprintf(p.gp, ", '-' w lp pt 7 ps 1.6 lc 'black' dt 2 t 'Pareto (scene outputs)'\n");
     fprintf(p.gp, "%g %g\ne\n", SEED_NS, SEED_MM);
-    for (int fam = 1; fam <= 3; ++fam) {
+    for (size_t fam = 0; fam < n_fam; ++fam) {
         for (int prec = 0; prec < 3; ++prec) {
-            if (!present[fam][prec]) {
+            if (tf_family_at(fam)->kind != TF_FAMILY_FORWARD || !series_present(sw, fam, prec)) {
                 continue;
             }
             for (size_t i = 0; i < sw->n; ++i) {
                 const tf_candidate *c = &sw->c[i];
-                if ((int)c->family == fam && (int)c->precision == prec && c->set == TF_SET_SCENE &&
-                    isfinite(c->ns_native) && c->heldout_max > 0) {
+                if (in_series(c, fam, prec)) {
                     fprintf(p.gp, "%g %g\n", c->ns_native, c->heldout_max);
                 }
             }
@@ -150,7 +162,7 @@ int tf_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen
         size_t best = sw->n;
         for (size_t i = 0; i < sw->n; ++i) {
             const tf_candidate *c = &sw->c[i];
-            if (c->pareto && c->set == TF_SET_SCENE && c->family != TFIT_FAMILY_CONTACT &&
+            if (c->pareto && c->set == TF_SET_SCENE && c->family->kind == TF_FAMILY_FORWARD &&
                 c->ns_native > last && (best == sw->n || c->ns_native < sw->c[best].ns_native)) {
                 best = i;
             }

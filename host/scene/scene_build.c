@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fitting/families/family.h"
 #include "problem/regions.h"
 #include "scene/scene_regions.h"
 #include "solvers/collocation/colloc_solver.h"
@@ -442,7 +443,15 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     if (d == NULL) {
         return 0;
     }
-    f->family = d->family ? (tfit_family)*d->family : f->family;
+    if (d->family) {
+        f->family = tf_family_find(d->family);
+        if (f->family == NULL || f->family->kind != TF_FAMILY_FORWARD) {
+            char names[256];
+            tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
+            return fail(is, "fit.family", "'%s' is not one of the forward families: %s",
+                        d->family, names);
+        }
+    }
     f->n_train = d->train ? *d->train : f->n_train;
     f->n_heldout = d->heldout ? *d->heldout : f->n_heldout;
     f->seed = d->seed ? *d->seed : f->seed;
@@ -467,8 +476,8 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     if (f->max_degree > 8) {
         return fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
     }
-    if (f->max_rank < 1 || f->max_rank > 24) {
-        return fail(is, "fit.max_rank", "1 to 24 modes");
+    if (f->max_rank < 1 || f->max_rank > TF_FAMILY_MAX_RANK) {
+        return fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
     }
     return 0;
 }

@@ -36,8 +36,6 @@ static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
 static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
                                              {"cell", TF_VOLUMETRIC_CELL}};
 static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
-/* tfit_family values (tfit.h) of the forward families */
-static const cyaml_strval_t families[] = {{"nodal", 1}, {"modal", 2}, {"zhou2017", 3}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
                                             {"linear", TF_ANALYTIC_LINEAR}};
 
@@ -169,7 +167,7 @@ static const cyaml_schema_field_t reference_fields[] = {
 };
 
 static const cyaml_schema_field_t fit_fields[] = {
-    CYAML_FIELD_ENUM_PTR("family", STRICT_OPT, sd_fit, family, families, N(families)),
+    CYAML_FIELD_STRING_PTR("family", OPT, sd_fit, family, 1, 32),
     CYAML_FIELD_STRING_PTR("contact", OPT, sd_fit, contact, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_UINT_PTR("train", OPT, sd_fit, train),
     CYAML_FIELD_UINT_PTR("heldout", OPT, sd_fit, heldout),

@@ -120,7 +120,7 @@ typedef struct sd_reference {
 } sd_reference;
 
 typedef struct sd_fit {
-    int *family;       /* tfit_family of the forward model to emit */
+    char *family;      /* a registered forward family's name (fitting/families/family.h) */
     char *contact;     /* contact site name */
     unsigned *train, *heldout, *folds, *max_degree, *max_rank;
     uint64_t *seed;

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "cost/cycles.h"
+#include "fitting/families/family.h"
 
 #define MAX_MODELS 64
 #define MAX_MACROS 4096
@@ -213,7 +214,7 @@ int main(int argc, char **argv)
         int fixed = strcmp(verdict, "identical") == 0;
         printf("%-22s %-9s %-14.14s n_out %4u: %3u inputs %s, %6llu instructions traced, model "
                "%s; %s %.0f cycles (%.0f..%.0f) = %.2f us at %.0f MHz\n",
-               name, tf_family_name(m->family), macro(name, "ORDERS"), m->n_out, calls,
+               name, tf_family_of(m->family)->name, macro(name, "ORDERS"), m->n_out, calls,
                fixed ? "same instructions" : "DIFFERENT instructions",
                (unsigned long long)tf_insn_mix_count(&traced), same ? "exact" : "DIFFERS",
                tf_core_name(core), c.cycles, c.cycles_low, c.cycles, c.cycles / tf_core_mhz(core),

@@ -11,7 +11,7 @@ expect 0 "sweep, scene outputs" -- "$tool" -q sweep coeffs/block48.yaml --output
     --csv "$tmp/s.csv" --md "$tmp/s.md"
 head -1 "$tmp/s.csv" | grep -q '^outputs,n_out,model,family,precision' || bad "sweep CSV header"
 for m in "nodal p=1,nodal,float32" "nodal p=1,nodal,Q31" "nodal p=1,nodal,float64" \
-         "modal p=1 r=3,modal,float32" "zhou2017 (CV orders),zhou2017,float32" \
+         "modal p=1 r=3,modal,float32" "zhou2017 lambda=1,1,1,zhou2017,float32" \
          "contact p=1,contact,float32"; do
     grep -q ",$m," "$tmp/s.csv" || bad "sweep lacks '$m'"
 done
@@ -42,8 +42,12 @@ expect 2 "a budget nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp
 grep -q "Fastest: nodal p=1" "$tmp/err" && grep -q "Most accurate: nodal p=1" "$tmp/err" ||
     bad "the refusal does not state the best on each axis: $(cat "$tmp/err")"
 expect 2 "an error nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --max-error-mm 1e-12
+says "an error nothing meets" "no model fits a 1e-12 mm error on cortex-m4f@168"
+says "an error nothing meets" "Most accurate: nodal p=1, held-out max"
 expect 2 "an unknown core" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 100 \
     --mcu cortex-m3@72
+says "an unknown core" "--mcu 'cortex-m3@72': cycle estimates exist for cortex-m4f and cortex-m7"
 expect 2 "a budget that is not a number" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us fast
+says "a budget that is not a number" "--budget-us 'fast' is not a positive number"
 [ -z "$(ls -A "$tmp/w")" ] || bad "a refused fit wrote $(ls -A "$tmp/w")"
 finish sweep

@@ -15,9 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fitting/fit_common.h"
 #include "fitting/pipeline.h"
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "model/ref_eval.h"
 #include "scene/scene.h"
 
@@ -49,12 +48,13 @@ static int check(const char *path, const material *mat)
         printf("nu %s E %s: fit failed: %s\n", mat->nu, mat->young, ctx.err);
         return 1;
     }
-    const tf_model *fwd = o.fam[TFIT_FAMILY_NODAL].model, *con = o.fam[TFIT_FAMILY_CONTACT].model;
+    const tf_model *fwd = tf_fit_emitted(&o, &plan, TF_FAMILY_FORWARD);
+    const tf_model *con = tf_fit_emitted(&o, &plan, TF_FAMILY_INVERSE);
     const size_t dofs = 3 * tf_solver_node_count(solver);
     double train[6][3], fresh[FRESH][3], *u = malloc(FRESH * dofs * sizeof *u);
     float *out = malloc(3 * fwd->n_out * sizeof *out);
-    tf_loadcases(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
-    tf_round_to_float(fresh, FRESH);
+    tf_force_samples(p->envelope.centre, p->envelope.radius, 6, FRESH, 0xf4e5, train, fresh);
+    tf_forces_to_float(fresh, FRESH);
     int bad = tf_solver_solve(solver, 0, (const double(*)[3])fresh, FRESH, NULL, u) != 0;
     double fmax_err = 0, big = 0, crel = 0;
     for (size_t i = 0; !bad && i < FRESH; ++i) {

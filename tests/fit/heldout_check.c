@@ -1,5 +1,5 @@
 /*
- * heldout_check.c — recomputes a shipped header's held-out errors
+ * heldout_check.c — recomputes a fitted header's held-out errors
  * independently of the fitting pipeline: the header is compiled here with
  * the target library and evaluated by tfit_displacements() /
  * tfit_contact_force() (not the host's reference evaluator), at the
@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "fitting/loadcases.h"
+#include "fitting/force_samples.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -56,7 +56,7 @@ int main(int argc, char **argv)
     const size_t dofs = 3 * tf_solver_node_count(solver);
     double(*train)[3] = malloc(n_train * sizeof *train), (*held)[3] = malloc(n * sizeof *held);
     double *u = malloc(n * dofs * sizeof *u);
-    tf_loadcases(p->envelope.centre, p->envelope.radius, n_train, n, s->fit.seed, train, held);
+    tf_force_samples(p->envelope.centre, p->envelope.radius, n_train, n, s->fit.seed, train, held);
     for (size_t i = 0; i < n; ++i) { /* the firmware's input is a float */
         for (int k = 0; k < 3; ++k) {
             held[i][k] = (double)(float)held[i][k];

@@ -105,7 +105,7 @@ static outcome run_gsl(problem *p, int start, double xtol, double gtol, double f
 
 static outcome run_ours(const problem *p, int start)
 {
-    tf_fit_options o;
+    tf_lsfit_options o;
     tf_nist_options(&o, p->d.n_par);
     tf_nist_score s;
     char err[256];

@@ -37,7 +37,7 @@ static double min_of(const double *v, size_t n)
 }
 
 static void one_run(const tf_nist *d, const tf_nist_model *model, int start,
-                    const tf_fit_options *o, int fd, int rows, totals *t)
+                    const tf_lsfit_options *o, int fd, int rows, totals *t)
 {
     tf_nist_score s;
     char err[512];
@@ -107,7 +107,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "strd_table: %s\n", err);
             return 1;
         }
-        tf_fit_options o;
+        tf_lsfit_options o;
         tf_nist_options(&o, d.n_par);
         o.lm.factor = factor;
         o.lm.central_diff = central;

@@ -224,10 +224,10 @@ int main(int argc, char **argv)
         return 2;
     }
     if (stat(o.data, &st) != 0) {
-        printf("SKIP: %s does not exist: the CalculiX reference has not been merged into this "
-               "branch yet (once it is, a missing file fails this check)\n",
-               o.data);
-        return 0;
+        fprintf(stderr, "calculix_compare: %s does not exist: no CalculiX reference to compare "
+                        "with (tests/calculix/data is committed; --data names another place)\n",
+                o.data);
+        return 1;
     }
     for (int c = 0; c < 3; ++c) {
         char path[768];

@@ -28,15 +28,24 @@ expect 0 "solve with overrides" -- "$tool" -q solve $B --set geometry.grid=5,5,2
 check "overrides reach the grid" test "$(wc -l <"$tmp/w/s.csv")" = 51
 rm -f "$tmp/w"/*
 expect 0 "solve the cantilever (scene loads only)" -- "$tool" -q solve coeffs/cantilever.yaml -o "$tmp/w/c.csv"
+check "cantilever: 170 nodes, the free end (x = 48) deflected along +y" \
+    awk -F, 'NR > 1 { n++ } $2 == 48 && $6 > 0 { tip++ } END { exit !(n == 170 && tip > 0) }' "$tmp/w/c.csv"
 rm -f "$tmp/w"/*
 
 expect 2 "solve without a scene" -- "$tool" solve
+says "no scene" "expected one scene file"
 expect 2 "solve with two scenes" -- "$tool" solve $B $B
+says "two scenes" "expected one scene file"
 expect 2 "solve, bad force" -- "$tool" solve $B --force 1,2 -o "$tmp/w/a.csv"
+says "bad force" "--force '1,2' is not three numbers"
 expect 2 "solve, force not a number" -- "$tool" solve $B --force 1,x,0 -o "$tmp/w/a.csv"
+says "force not a number" "--force '1,x,0' is not three numbers"
 expect 2 "solve, unknown contact" -- "$tool" solve $B --force 0,0,1 --contact nowhere -o "$tmp/w/a.csv"
+says "unknown contact" "has no contact site 'nowhere'"
 expect 2 "solve, force without a contact site" -- "$tool" solve coeffs/cantilever.yaml --force 0,0,1 -o "$tmp/w/a.csv"
+says "force without a contact site" "cantilever.yaml has no contact site for --force"
 expect 2 "solve, unknown option" -- "$tool" solve $B --bogus -o "$tmp/w/a.csv"
+says "unknown option" "bad option '--bogus'"
 expect 2 "solve, missing scene file" -- "$tool" solve "$tmp/none.yaml" -o "$tmp/w/a.csv"
 check "names the missing file" grep -q "$tmp/none.yaml" "$tmp/err"
 sed 's/  nu: 0.49/  nu: 0.5/' $B >"$tmp/nu.yaml"
@@ -59,9 +68,13 @@ check "table in the file" cmp -s "$tmp/out" "$tmp/w/v.csv"
 check "a rate on the second row" awk -F, 'NR == 3 { exit !($6 > 1) }' "$tmp/out"
 rm -f "$tmp/w"/*
 expect 2 "verify, unknown study" -- "$tool" verify beam
+says "unknown study" "'beam' is not cantilever or patch"
 expect 2 "verify, bad --levels" -- "$tool" verify patch --levels 0
+says "bad --levels" "--levels '0' is not 1 to 12"
 expect 2 "verify, bad --vary" -- "$tool" verify patch --vary time
+says "bad --vary" "--vary 'time' is not grid or gauss"
 expect 2 "verify, scene without reference" -- "$tool" verify patch --scene $B --csv "$tmp/w/v.csv"
+says "scene without reference" "has no reference section"
 nothing_written "bad verify"
 
 finish "solver cli"

@@ -32,13 +32,26 @@ fi
 if ! awk -F, 'NR > 1 && $1 == 0 && $11 > 0.05 { seen = 1 } END { exit !seen }' "$tmp/out"; then
     echo "FAIL: the coarse grid does not differ from the fine one"; fails=$((fails + 1))
 fi
+# rejects WHAT PATTERN ARGS...: the comparison fails (exit 1, not a usage
+# error) and says PATTERN, so it is rejected for the reason meant.
+rejects() {
+    what=$1 pattern=$2
+    shift 2
+    "$compare" "$@" >"$tmp/rej.out" 2>"$tmp/rej.err"
+    rc=$?
+    if [ "$rc" != 1 ] || ! grep -q -e "$pattern" "$tmp/rej.err"; then
+        echo "FAIL: $what: exit $rc (expected 1) and stderr without '$pattern':"
+        cat "$tmp/rej.err"; fails=$((fails + 1))
+    else
+        echo "rejected as it must be: $what ($(head -1 "$tmp/rej.err"))"
+    fi
+}
 # a reference the coarse grid matches better than the fine one must fail
-if "$compare" --data "$tmp" --levels "21,21,5;11,11,3" >/dev/null 2>&1; then
-    echo "FAIL: a growing error passed"; fails=$((fails + 1))
-fi
+rejects "a growing error" "the RMS error grows from level 0 to 1" \
+    --data "$tmp" --levels "21,21,5;11,11,3"
+rejects "a missing data directory" "$tmp/none does not exist" --data "$tmp/none"
 sed -i '$d' "$tmp/block48_fz_self.csv"
-if "$compare" --data "$tmp" --levels "21,21,5" >/dev/null 2>&1; then
-    echo "FAIL: a file with 120 rows passed"; fails=$((fails + 1))
-fi
+rejects "a file with 120 rows" "block48_fz_self.csv: expected the header node,x,y,z,ux,uy,uz and 121 rows" \
+    --data "$tmp" --levels "21,21,5"
 echo "comparison self-test: $fails failure(s)"
 [ "$fails" = 0 ]

@@ -12,8 +12,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "fitting/fit_common.h"
+#include "fitting/families/common.h"
 #include "fitting/families/family.h"
+
+extern const tf_family tf_family_contact;
 
 /* Inverse of a 3x3 row-major matrix; returns its reciprocal condition
  * estimate |det| / (||c||^3) (0 when singular). */
@@ -50,14 +52,14 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
         return -1;
     }
     for (size_t i = 0; i < m; ++i) {
-        size_t n = tf_fit_case(idx, i);
+        size_t n = tf_family_case(idx, i);
         a[i] = 1;
         for (int k = 0; k < 3; ++k) {
             a[i + (size_t)(k + 1) * m] = d->force[n][k];
             y[i + (size_t)k * m] = d->contact[n][k];
         }
     }
-    int rc = tf_fit_lsq(a, m, 4, y, 3, x, err, errlen);
+    int rc = tf_family_lsq(a, m, 4, y, 3, x, err, errlen);
     free(a);
     free(y);
     if (rc == 0) {
@@ -71,11 +73,15 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
     return rc;
 }
 
-tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                         const char *name, char *err, size_t errlen)
+static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen)
 {
+    const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0];
-    double delta0[3], c[9], k[9], w[9], x0[3];
+    if (idx == NULL) {
+        m = d->n_cases;
+    }
+    double delta0[3], cm[9], k[9], w[9], x0[3];
     double(*g)[3] = malloc(m * sizeof *g);
     if (g == NULL) {
         snprintf(err, errlen, "contact: out of memory");
@@ -83,50 +89,50 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     for (size_t i = 0; i < m; ++i) { /* forces normalised to the envelope */
         for (int a = 0; a < 3; ++a) {
-            g[i][a] = (d->force[tf_fit_case(idx, i)][a] - d->centre[a]) / d->radius;
+            g[i][a] = (d->force[tf_family_case(idx, i)][a] - d->centre[a]) / d->radius;
         }
     }
-    int spans = tf_fit_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
+    int spans = tf_family_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
     free(g);
-    if (spans != 0 || linear_compliance(d, idx, m, delta0, c, err, errlen) != 0) {
+    if (spans != 0 || linear_compliance(d, idx, m, delta0, cm, err, errlen) != 0) {
         return NULL;
     }
-    if (inverse3(c, k) < 1e-12) {
+    if (inverse3(cm, k) < 1e-12) {
         snprintf(err, errlen,
                  "contact: the contact site's compliance is singular (the site does not move "
                  "under some force direction): no impedance model");
         return NULL;
     }
-    tf_model *model = tf_model_new(name, TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
+    tf_model *model = tf_model_new("contact", TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
     if (model == NULL) {
         return NULL;
     }
     for (int i = 0; i < 3; ++i) {
         x0[i] = delta0[i];
         for (int j = 0; j < 3; ++j) {
-            x0[i] += c[3 * i + j] * d->centre[j];
+            x0[i] += cm[3 * i + j] * d->centre[j];
         }
     }
     for (int i = 0; i < 9; ++i) {
         w[i] = k[i] / d->radius;
     }
     tf_model_set_map(model, x0, w);
-    model->node_ids[0] = 0; /* set by the caller: the contact node */
-    if (tf_fit_spans(model, d->contact, idx, m, err, errlen) != 0) {
+    model->node_ids[0] = c->contact_node + 1; /* node numbers count from 1 */
+    if (tf_family_spans(model, d->contact, idx, m, err, errlen) != 0) {
         tf_model_free(model);
         return NULL;
     }
     const uint32_t t = tf_terms(p);
-    double *a = tf_fit_design(model, d->contact, idx, m, p);
-    double *y = malloc(m * 3 * sizeof *y), x[3 * TFIT_MAX_TERMS_HOST];
+    double *a = tf_family_design(model, d->contact, idx, m, p);
+    double *y = malloc(m * 3 * sizeof *y), x[3 * TF_FAMILY_MAX_TERMS];
     int rc = -1;
     if (a != NULL && y != NULL) {
         for (size_t i = 0; i < m; ++i) {
             for (int j = 0; j < 3; ++j) {
-                y[i + (size_t)j * m] = d->force[tf_fit_case(idx, i)][j];
+                y[i + (size_t)j * m] = d->force[tf_family_case(idx, i)][j];
             }
         }
-        rc = tf_fit_lsq(a, m, t, y, 3, x, err, errlen);
+        rc = tf_family_lsq(a, m, t, y, 3, x, err, errlen);
     } else {
         snprintf(err, errlen, "contact: out of memory");
     }
@@ -146,3 +152,30 @@ tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const
     }
     return model;
 }
+
+/* The degree by cross-validation, p >= 1 (p = 0 would be a constant force: no impedance). */
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
+                         size_t errlen)
+{
+    return tf_family_select_by_degree(c, plan, 1, r, err, errlen);
+}
+
+static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen)
+{
+    return tf_family_degree_candidates(&tf_family_contact, c, plan, 1, take, arg, err, errlen);
+}
+
+const tf_family tf_family_contact = {
+    .id = TFIT_FAMILY_CONTACT,
+    .name = "contact",
+    .kind = TF_FAMILY_INVERSE,
+    .applicable = tf_family_always,
+    .select = select_orders,
+    .fit = fit,
+    .candidates = candidates,
+    .orders_text = tf_family_degree_text,
+    .q31 = tf_q31_quantise,
+    .f64_errors = tf_family_poly_f64_errors,
+    .cost = tf_family_layout_cost,
+};

@@ -1,53 +1,139 @@
 /*
- * family.h — fitting the model families of GUIDE §3 to solved load
- * cases (docs/fitting.md).  Every fitter builds a tf_model in the target's
- * layout from a subset of the cases (idx[0..m), or all when idx is NULL);
- * linear-in-parameter fits go through the pivoted-QR least squares of
- * lsq.h, one factorisation for all output columns.
+ * family.h — the model families of GUIDE §3 as a registry (registry.c).
+ *
+ * A family is a way of fitting solved load cases (fitting/cases.h) with a
+ * model the target evaluates (tfit.h's family id, model/model.h's layout).
+ * Each family is one file in this folder that fills a tf_family; the fit
+ * pipeline, the sweep and the header emitter iterate the registry and call
+ * these operations, and never switch on a family.  A forward family maps
+ * the contact force [N] to the output points' displacements [mm]; an
+ * inverse one maps the contact site's displacement [mm] to the contact
+ * force [N] (the haptic impedance).
+ *
+ * Orders are the model's dims (model.h): nodal and contact {p}, modal
+ * {p, r}, zhou2017 its 30 orders.  Messages of fits that the cases cannot
+ * determine begin with TF_FAMILY_UNDETERMINED (common.h), so that
+ * cross-validation can tell "this order is not supported" from a failure.
  */
-#ifndef TF_FIT_FAMILY_H
-#define TF_FIT_FAMILY_H
+#ifndef TF_FAMILY_H
+#define TF_FAMILY_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-#include "fitting/fitdata.h"
+#include "cost/cycles.h"
+#include "fitting/cases.h"
+#include "fitting/plan.h"
 #include "model/model.h"
+#include "model/q31.h"
 
-/* Orders of a candidate: nodal/contact {p}; modal {p, r}; zhou2017 uses
- * fit_zhou2017.h.  Returns NULL with a message on failure. */
-typedef tf_model *(*tf_fitter)(const tf_fitdata *d, const size_t *idx, size_t m,
-                               const uint32_t *orders, const char *name, char *err,
-                               size_t errlen);
+#define TF_FAMILY_MAX_RANK 24 /* ranks a family with a rank (modal) searches and tabulates */
+#define TF_FAMILY_LEVELS 5    /* the seed's force levels: 0.2 .. 1.0 of the envelope */
 
-/* Nodal: every output component a polynomial of total degree p in the
- * normalised force g = (f - centre) / radius. */
-tf_model *tf_fit_nodal(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                       const char *name, char *err, size_t errlen);
+typedef struct tf_family tf_family;
 
-/* Modal: rank-r POD of the training displacements, each amplitude a
- * polynomial of total degree p in g. */
-tf_model *tf_fit_modal(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                       const char *name, char *err, size_t errlen);
+typedef enum tf_family_kind {
+    TF_FAMILY_FORWARD, /* contact force -> displacements of the output points */
+    TF_FAMILY_INVERSE, /* contact-site displacement -> contact force */
+} tf_family_kind;
 
-/* Contact inverse: the force as a polynomial of degree p in the contact-site
- * displacement, normalised by the fitted contact stiffness so that its
- * envelope is the image of the force ball. */
-tf_model *tf_fit_contact(const tf_fitdata *d, const size_t *idx, size_t m, const uint32_t *orders,
-                         const char *name, char *err, size_t errlen);
+/* One family fitted by the pipeline (pipeline.h): its order search, the
+ * model on every training case and what the pipeline measured of it. */
+typedef struct tf_family_result {
+    const tf_family *family;
+    int applicable;
+    char why[320];                  /* when not applicable */
+    tf_model *model;                /* fitted on every training case */
+    double cv[TFIT_MAX_DEGREE + 1]; /* CV RMS by degree (INFINITY: not tried) */
+    /* Families with a rank (modal), at the chosen degree: CV RMS and
+     * held-out max error by rank (INFINITY: not tried). */
+    double cv_rank[TF_FAMILY_MAX_RANK + 1];
+    double heldout_rank[TF_FAMILY_MAX_RANK + 1];
+    double heldout_max, heldout_rms, heldout_rel_max;
+    double seconds; /* order selection and fit */
+    /* Forward families: force s e_a at the seed's levels s = 0.2 .. 1.0 of
+     * the envelope radius.  table3[a][c]: RMS over points and levels of
+     * error_c / s (mm/N, seed Table 3); deviation: the mean error over the
+     * levels at each point (mm, seed Figs 5-13), 3 x 3 x n_out. */
+    double table3[3][3];
+    double *deviation;
+} tf_family_result;
 
-/* Errors of a model on cases idx[0..m) (all when NULL), evaluated exactly as
- * the target does (reference evaluator, float32 input): forward models
- * against d->u in mm; contact models against d->force in N (rel_max: the
- * largest |error| / |force|).  Any of the outputs may be NULL. */
-void tf_model_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
-                     double *max, double *rms, double *rel_max);
+/* The cost of one evaluation on the target. */
+typedef struct tf_family_cost {
+    tf_opcount ops;
+    uint32_t table_bytes;
+    tf_cycles m4f, m7;
+} tf_family_cost;
 
-/* k-fold cross-validated RMS error of fitter at the given orders (and the
- * largest validation error in *max when not NULL): infinite when the folds'
- * cases cannot determine the order (fit_common.h, TF_FIT_UNDETERMINED).
- * Returns -1 with a message when a fold fails otherwise. */
-int tf_cv_error(const tf_fitdata *d, tf_fitter fit, const uint32_t *orders, unsigned folds,
-                uint64_t seed, double *rms, double *max, char *err, size_t errlen);
+/* A sweep's consumer of candidate models: takes ownership of m; returns 0
+ * to go on, non-zero to stop (with a message of its own). */
+typedef int (*tf_family_take)(void *arg, tf_model *m);
 
-#endif /* TF_FIT_FAMILY_H */
+/* Orders as text: TF_ORDERS_FULL for the header (ASCII, every order),
+ * TF_ORDERS_SHORT for tables and labels. */
+enum { TF_ORDERS_FULL, TF_ORDERS_SHORT };
+
+struct tf_family {
+    tfit_family id;   /* the target's family of its models (tfit.h) */
+    const char *name; /* scene key fit.family, --family, the header's FAMILY */
+    tf_family_kind kind;
+    /* 0 when the family can describe the cases; else -1 with the reason
+     * in why (not a failure: the family is skipped). */
+    int (*applicable)(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen);
+    /* Order search: the orders by cross-validation on c->train within the
+     * plan's limits, then the model on every training case, into r (model,
+     * cv curves).  Returns 0, or -1 with a message. */
+    int (*select)(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
+                  size_t errlen);
+    /* The model of the given orders on training cases idx[0..m) (idx NULL:
+     * all of c->train).  NULL with a message. */
+    tf_model *(*fit)(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen);
+    /* The sweep's candidates (tradeoff/sweep.h): every order the plan
+     * allows, each fitted on every training case and given to take.
+     * Returns 0, or -1 with a message (or take's non-zero). */
+    int (*candidates)(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen);
+    void (*orders_text)(const tf_model *m, int style, char *buf, size_t n);
+    /* The Q31 form of a model (model/q31.h), or NULL when the family has none. */
+    tf_q31 *(*q31)(const tf_model *m, char *err, size_t errlen);
+    /* Held-out errors of the same fit with coefficients and arithmetic in
+     * double (what the fit achieves before float32 rounding); NULL when the
+     * family has no such form.  Returns 0, or -1 with a message. */
+    int (*f64_errors)(const tf_model *m, const tf_cases *c, double *max, double *rms, char *err,
+                      size_t errlen);
+    /* Operations, table bytes and cycles of one evaluation. */
+    void (*cost)(const tf_model *m, tf_family_cost *out);
+};
+
+/* ---- the registry (registry.c) ------------------------------------------- */
+
+size_t tf_family_count(void);
+const tf_family *tf_family_at(size_t i);
+/* The family registered under name, or NULL. */
+const tf_family *tf_family_find(const char *name);
+/* The family whose models carry this id, or NULL. */
+const tf_family *tf_family_of(tfit_family id);
+/* "nodal, modal, zhou2017": the names of every family of a kind. */
+void tf_family_names(tf_family_kind kind, char *out, size_t outlen);
+
+/* ---- shared by the pipeline, the sweep and the families (model_errors.c) */
+
+/* Errors of a model on cases idx[0..m) (all when NULL), evaluated exactly
+ * as the target does (reference evaluator, float32 input): forward models
+ * against d->u in mm; inverse models against d->force in N (rel_max: the
+ * largest |error| / |force|, NAN for forward models).  Any output may be
+ * NULL. */
+void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
+                      double *max, double *rms, double *rel_max);
+
+/* k-fold cross-validated RMS error of family f at the given orders on
+ * c->train (and the largest validation error in *max when not NULL):
+ * infinite when the folds' cases cannot determine the order.  Returns -1
+ * with a message when a fold fails otherwise. */
+int tf_family_cv_error(const tf_family *f, const tf_cases *c, const uint32_t *orders,
+                       unsigned folds, uint64_t seed, double *rms, double *max, char *err,
+                       size_t errlen);
+
+#endif /* TF_FAMILY_H */

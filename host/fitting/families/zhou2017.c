@@ -1,5 +1,5 @@
 /*
- * zhou2017.c — see fit_zhou2017.h.
+ * zhou2017.c — see zhou2017.h; the family's registry entry at the end.
  */
 #include "fitting/families/zhou2017.h"
 
@@ -10,8 +10,9 @@
 #include <string.h>
 
 #include "model/basis.h"
-#include "fitting/cv.h"
-#include "fitting/fit_common.h"
+#include "fitting/cv_folds.h"
+#include "fitting/families/common.h"
+#include "fitting/families/family.h"
 
 #define BETA_MAX 4 /* k searched in 0..4: the seed needed 1 */
 
@@ -68,7 +69,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
     int rc = -1;
     if (design && y) {
         for (size_t i = 0; i < m; ++i) {
-            size_t n = tf_fit_case(idx, i);
+            size_t n = tf_family_case(idx, i);
             double pw[TFIT_MAX_DEGREE + 1];
             tf_chebyshev(lambda, d->force[n][a] / d->radius, pw);
             for (uint32_t k = 0; k <= lambda; ++k) {
@@ -76,7 +77,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
             }
             y[i] = d->contact[n][a];
         }
-        rc = tf_fit_lsq(design, m, lambda + 1, y, 1, r, err, errlen);
+        rc = tf_family_lsq(design, m, lambda + 1, y, 1, r, err, errlen);
     }
     free(design);
     free(y);
@@ -90,7 +91,7 @@ static double *surface_design(const double *xy, const size_t *pts, size_t np, ui
     size_t cols = A + B + 1;
     double *s = malloc(np * cols * sizeof *s);
     for (size_t q = 0; s && q < np; ++q) {
-        const double *p = xy + 2 * tf_fit_case(pts, q);
+        const double *p = xy + 2 * tf_family_case(pts, q);
         double px[TFIT_ZHOU_MAX_ORDER + 1], py[TFIT_ZHOU_MAX_ORDER + 1];
         tf_chebyshev(A, p[0], px);
         tf_chebyshev(B, p[1], py);
@@ -114,12 +115,12 @@ static int surfaces(const tf_fitdata *d, int c, const size_t *cases, size_t m, c
     int rc = -1;
     if (s && y) {
         for (size_t i = 0; i < m; ++i) {
-            const double *u = d->u + 3 * (size_t)d->n_out * tf_fit_case(cases, i);
+            const double *u = d->u + 3 * (size_t)d->n_out * tf_family_case(cases, i);
             for (size_t q = 0; q < np; ++q) {
-                y[q + i * np] = u[3 * tf_fit_case(pts, q) + (size_t)c];
+                y[q + i * np] = u[3 * tf_family_case(pts, q) + (size_t)c];
             }
         }
-        rc = tf_fit_lsq(s, np, A + B + 1, y, m, p, err, errlen);
+        rc = tf_family_lsq(s, np, A + B + 1, y, m, p, err, errlen);
     }
     free(s);
     free(y);
@@ -143,7 +144,7 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
                 y[i + r * m] = p[r + i * rows];
             }
         }
-        rc = tf_fit_lsq(design, m, k + 1, y, rows, beta, err, errlen);
+        rc = tf_family_lsq(design, m, k + 1, y, rows, beta, err, errlen);
     }
     free(design);
     free(y);
@@ -226,8 +227,8 @@ static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
     return rc;
 }
 
-tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders *o,
-                          const char *name, char *err, size_t errlen)
+tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, const char *name,
+                      char *err, size_t errlen)
 {
     const tf_fitdata *d0 = axis[0];
     uint32_t dims[TFIT_ZHOU2017_DIMS];
@@ -247,7 +248,7 @@ tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders 
         free(xy);
         return NULL;
     }
-    tf_fit_forward_setup(model, d0);
+    tf_family_forward_setup(model, d0);
     plane_coordinates(d0, xy);
     float *c = tf_model_tables(model);
     int rc = 0;
@@ -300,10 +301,10 @@ static double rms_of(double sum2, size_t count)
 }
 
 /* A fold whose cases cannot determine the orders makes the orders'
- * CV error infinite (fit_common.h); anything else is a failure. */
+ * CV error infinite (common.h); anything else is a failure. */
 static int undetermined(int rc, const char *err, double *out)
 {
-    if (rc != 0 && strncmp(err, TF_FIT_UNDETERMINED, strlen(TF_FIT_UNDETERMINED)) == 0) {
+    if (rc != 0 && strncmp(err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
         *out = INFINITY;
         return 1;
     }
@@ -517,3 +518,100 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
     free(own);
     return rc;
 }
+
+/* ---- the registry's operations (family.h) -------------------------------- */
+
+static void orders_of(const uint32_t *dims, tf_zhou_orders *o)
+{
+    for (int a = 0; a < 3; ++a) {
+        o->lambda[a] = dims[a];
+    }
+    for (int pair = 0; pair < 9; ++pair) {
+        o->a[pair] = dims[3 + 3 * pair];
+        o->b[pair] = dims[4 + 3 * pair];
+        o->k[pair] = dims[5 + 3 * pair];
+    }
+}
+
+/* The fit uses the single-axis cases, all of them: no selection. */
+static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
+                     char *err, size_t errlen)
+{
+    (void)m;
+    if (idx != NULL) {
+        snprintf(err, errlen, "zhou2017 fits every single-axis case: no selection of cases");
+        return NULL;
+    }
+    const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
+    tf_zhou_orders o;
+    orders_of(orders, &o);
+    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+}
+
+/* The seed's model needs the outputs on one plane and a centred envelope,
+ * and its surface orders are cross-validated over the output points: at
+ * least one per fold. */
+static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+{
+    if (c->train.n_out < plan->folds) {
+        snprintf(why, whylen,
+                 "family zhou2017 cross-validates its surfaces over the output points: it needs "
+                 "at least %u (the folds), not %u",
+                 plan->folds, c->train.n_out);
+        return -1;
+    }
+    return tf_zhou_applicable(&c->train, why, whylen);
+}
+
+/* Orders by cross-validation (tf_zhou_select), then the model. */
+static tf_model *cross_validated(const tf_cases *c, const tf_fit_plan *plan, char *err,
+                                 size_t errlen)
+{
+    const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
+    tf_zhou_orders o;
+    if (tf_zhou_select(axis, plan->folds, plan->seed, &o, NULL, err, errlen) != 0) {
+        return NULL;
+    }
+    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+}
+
+static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
+                         char *err, size_t errlen)
+{
+    r->model = cross_validated(c, plan, err, errlen);
+    return r->model ? 0 : -1;
+}
+
+/* One candidate: the cross-validated orders. */
+static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
+                      char *err, size_t errlen)
+{
+    tf_model *m = cross_validated(c, plan, err, errlen);
+    return (m == NULL || take(arg, m) != 0) ? -1 : 0;
+}
+
+/* Full: "lambda=1,1,1 xx:A/B/k ..." per (force axis, component); short:
+ * the contact-law orders. */
+static void orders_text(const tf_model *m, int style, char *buf, size_t n)
+{
+    const uint32_t *d = m->dims;
+    int k = snprintf(buf, n, "lambda=%u,%u,%u", d[0], d[1], d[2]);
+    for (int pair = 0; style == TF_ORDERS_FULL && pair < 9 && k > 0 && (size_t)k < n; ++pair) {
+        k += snprintf(buf + k, n - (size_t)k, " %c%c:%u/%u/%u", "xyz"[pair / 3], "xyz"[pair % 3],
+                      d[3 + 3 * pair], d[4 + 3 * pair], d[5 + 3 * pair]);
+    }
+}
+
+const tf_family tf_family_zhou2017 = {
+    .id = TFIT_FAMILY_ZHOU2017,
+    .name = "zhou2017",
+    .kind = TF_FAMILY_FORWARD,
+    .applicable = applicable,
+    .select = select_orders,
+    .fit = fit,
+    .candidates = candidates,
+    .orders_text = orders_text,
+    .q31 = NULL, /* no Q31 form (docs/q31-format.md §1) */
+    .f64_errors = NULL,
+    .cost = tf_family_layout_cost,
+};

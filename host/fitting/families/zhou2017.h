@@ -13,8 +13,8 @@
  * used 1stOpt): lambda over load cases, (A, B) over output points, k over
  * load cases.
  */
-#ifndef TF_FIT_ZHOU2017_H
-#define TF_FIT_ZHOU2017_H
+#ifndef TF_ZHOU2017_H
+#define TF_ZHOU2017_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -44,11 +44,11 @@ typedef struct tf_zhou_cv {
 int tf_zhou_applicable(const tf_fitdata *d, char *err, size_t errlen);
 
 /* axis[a]: load cases with the force along axis a only (same outputs). */
-tf_model *tf_fit_zhou2017(const tf_fitdata *const axis[3], const tf_zhou_orders *o,
-                          const char *name, char *err, size_t errlen);
+tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, const char *name,
+                      char *err, size_t errlen);
 
 /* Chooses the orders by k-fold cross-validation; cv may be NULL. */
 int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t seed,
                    tf_zhou_orders *o, tf_zhou_cv *cv, char *err, size_t errlen);
 
-#endif /* TF_FIT_ZHOU2017_H */
+#endif /* TF_ZHOU2017_H */

@@ -15,7 +15,7 @@
 #include "solvers/assemble.h"
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
-#include "solvers/loads.h"
+#include "solvers/load_vector.h"
 
 typedef struct galerkin {
     tf_solver base;    /* first: a galerkin is a tf_solver (base.opts: its options) */

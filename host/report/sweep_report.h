@@ -1,0 +1,20 @@
+/*
+ * sweep_report.h — a sweep (tradeoff/sweep.h) written out: CSV, a Markdown
+ * table and a log-log PNG of held-out error against native time, with the
+ * seed's own point.
+ */
+#ifndef TF_SWEEP_REPORT_H
+#define TF_SWEEP_REPORT_H
+
+#include <stddef.h>
+
+#include "problem/problem.h"
+#include "tradeoff/sweep.h"
+
+/* Each returns 0, or -1 with a message. */
+int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen);
+int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
+                             size_t errlen);
+int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen);
+
+#endif /* TF_SWEEP_REPORT_H */

@@ -1,0 +1,100 @@
+/*
+ * load_vector.c — nodal force vectors of patch tractions and point forces
+ * (load_vector.h; seed eq 25).
+ */
+#include "solvers/load_vector.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "problem/analytic.h"
+
+/* Traction at x: a uniform force per area (ncol = 1), the three unit
+ * columns (ncol = 3, force NULL), or the reference solution's (exact). */
+typedef struct traction {
+    const tf_problem *pr; /* exact: whose analytic solution */
+    const tf_patch *p;
+    const double *force;
+    double area;
+    int exact;
+} traction;
+
+static void traction_at(const traction *t, const double x[3], double out[9], size_t *ncol)
+{
+    if (t->exact) {
+        tf_analytic_traction(t->pr, t->p->face, x, out);
+        *ncol = 1;
+    } else if (t->force) {
+        for (int a = 0; a < 3; ++a) {
+            out[a] = t->force[a] / t->area;
+        }
+        *ncol = 1;
+    } else {
+        for (int k = 0; k < 9; ++k) {
+            out[k] = k % 4 == 0 ? 1 / t->area : 0; /* column a: e_a / area */
+        }
+        *ncol = 3;
+    }
+}
+
+static int integrate(const tf_shape *sh, const traction *t, double *f, char *err, size_t errlen)
+{
+    size_t n3 = 3 * sh->cloud->n;
+    if (t->p->shape == TF_PATCH_POINT) {
+        double tr[9];
+        size_t ncol;
+        traction tp = *t;
+        tp.area = 1; /* a point force is its own total */
+        traction_at(&tp, sh->cloud->xyz + 3 * (size_t)t->p->node, tr, &ncol);
+        for (size_t c = 0; c < ncol; ++c) {
+            for (int a = 0; a < 3; ++a) {
+                f[c * n3 + 3 * (size_t)t->p->node + (size_t)a] += tr[3 * c + (size_t)a];
+            }
+        }
+        return 0;
+    }
+    size_t nq = 0;
+    tf_qpoint *q = tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
+    if (q == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    tf_shape_work w;
+    tf_shape_work_init(&w);
+    int rc = 0;
+    for (size_t k = 0; k < nq && rc == 0; ++k) {
+        rc = tf_shape_at(sh, &w, q[k].x, tf_shape_cell(sh, q[k].x), 0);
+        if (rc != 0) {
+            snprintf(err, errlen, "load patch: %s", w.err);
+            break;
+        }
+        double tr[9];
+        size_t ncol;
+        traction_at(t, q[k].x, tr, &ncol);
+        for (size_t i = 0; i < w.n; ++i) {
+            double wphi = q[k].w * w.phi[i];
+            for (size_t c = 0; c < ncol; ++c) {
+                for (int a = 0; a < 3; ++a) {
+                    f[c * n3 + 3 * (size_t)w.idx[i] + (size_t)a] += wphi * tr[3 * c + (size_t)a];
+                }
+            }
+        }
+    }
+    tf_shape_work_free(&w);
+    free(q);
+    return rc;
+}
+
+int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
+                  char *err, size_t errlen)
+{
+    traction t = {NULL, p, force, tf_patch_area(p, sh->cloud), 0};
+    return integrate(sh, &t, f, err, errlen);
+}
+
+int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
+                  char *err, size_t errlen)
+{
+    traction t = {pr, p, NULL, tf_patch_area(p, sh->cloud), 1};
+    return integrate(sh, &t, f, err, errlen);
+}

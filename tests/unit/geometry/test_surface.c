@@ -1,0 +1,392 @@
+/*
+ * test_surface.c — reading, checking, repairing and placing organ
+ * surfaces (geometry/surface_*.h, transform.h, self_intersect.h) on
+ * surfaces the test generates: each bad mesh gets its clear message.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "tests/geometry/shapes.h"
+#include "assert_close.h"
+#include "geometry/self_intersect.h"
+#include "geometry/surface_prepare.h"
+#include "geometry/surface_read.h"
+#include "geometry/transform.h"
+
+static char dir[64];
+
+static int make_dir(void **state)
+{
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/tf_geometry_XXXXXX");
+    return mkdtemp(dir) == NULL ? -1 : 0;
+}
+
+static int remove_dir(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static const char *file(const char *name)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return path;
+}
+
+static void assert_contains(const char *text, const char *part)
+{
+    if (strstr(text, part) == NULL) {
+        print_error("\"%s\" does not contain \"%s\"\n", text, part);
+        fail();
+    }
+}
+
+/* A cube of 20 mm at x0 = 10, cleaned and checked as the scene would. */
+static int prepare(tf_surface *s, tf_geom_msg *m)
+{
+    memset(m, 0, sizeof *m);
+    int rc = tf_surface_clean(s, m);
+    return rc ? rc : tf_surface_check_placed(s, m);
+}
+
+static void a_closed_cube_passes_untouched(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    assert_int_equal(shape_cube(&s, 10, 20), 0);
+    assert_int_equal(prepare(&s, &m), TF_GEOM_OK);
+    assert_string_equal(m.notes, "");
+    assert_int_equal(s.nv, 8);
+    assert_int_equal(s.nt, 12);
+    assert_close(tf_surface_volume(&s), 8000, 1e-9);
+    assert_close(tf_surface_area(&s), 2400, 1e-9);
+    tf_surface_free(&s);
+}
+
+static void an_open_box_is_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20);
+    s.nt = 11; /* the lid loses a triangle */
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "open surface (edges of only one triangle): 3 edges");
+    tf_surface_free(&s);
+}
+
+static void a_flipped_triangle_is_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20);
+    size_t v = s.tri[3 * 5 + 1];
+    s.tri[3 * 5 + 1] = s.tri[3 * 5 + 2];
+    s.tri[3 * 5 + 2] = v;
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "inconsistent winding");
+    assert_contains(m.error, "3 edges");
+    assert_contains(m.error, "vertices 0 (10, 10, 10) and 4 (10, 10, 30), triangles 5 and 10");
+    tf_surface_free(&s);
+}
+
+static void inward_winding_is_reversed_with_a_note(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20);
+    tf_surface_reverse(&s);
+    assert_close(tf_surface_volume(&s), -8000, 1e-9);
+    assert_int_equal(prepare(&s, &m), TF_GEOM_OK);
+    assert_contains(m.notes, "wound inward");
+    assert_close(tf_surface_volume(&s), 8000, 1e-9);
+    tf_surface_free(&s);
+}
+
+/* Two cubes in one surface: the second's vertices follow the first's. */
+static void two_cubes(tf_surface *s, double size2)
+{
+    tf_surface a, b;
+    shape_cube(&a, 10, 20);
+    shape_cube(&b, 50, size2);
+    tf_surface_alloc(s, 16, 24);
+    memcpy(s->xyz, a.xyz, 24 * sizeof *s->xyz);
+    memcpy(s->xyz + 24, b.xyz, 24 * sizeof *s->xyz);
+    for (size_t k = 0; k < 36; ++k) {
+        s->tri[k] = a.tri[k];
+        s->tri[36 + k] = b.tri[k] + 8;
+    }
+    tf_surface_free(&a);
+    tf_surface_free(&b);
+}
+
+static void specks_are_dropped_and_a_second_organ_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    two_cubes(&s, 2); /* 8 mm^3: 0.1 % of 8000 */
+    assert_int_equal(prepare(&s, &m), TF_GEOM_OK);
+    assert_contains(m.notes, "kept the largest of 2 pieces; dropped 12 triangles");
+    assert_int_equal(s.nv, 8);
+    assert_int_equal(s.nt, 12);
+    assert_int_equal(s.source[7], 7);
+    tf_surface_free(&s);
+
+    two_cubes(&s, 5); /* 125 mm^3: 1.6 % */
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "2 separate pieces: piece 2 (from triangle 12) encloses 1.56 %");
+    tf_surface_free(&s);
+}
+
+static void unused_vertices_are_dropped_keeping_file_indices(void **state)
+{
+    (void)state;
+    tf_surface s, c;
+    tf_geom_msg m;
+    shape_cube(&c, 10, 20);
+    tf_surface_alloc(&s, 9, 12); /* vertex 0 is unused, the cube's are 1..8 */
+    s.xyz[0] = s.xyz[1] = s.xyz[2] = 1e6;
+    memcpy(s.xyz + 3, c.xyz, 24 * sizeof *s.xyz);
+    for (size_t k = 0; k < 36; ++k) {
+        s.tri[k] = c.tri[k] + 1;
+    }
+    assert_int_equal(prepare(&s, &m), TF_GEOM_OK);
+    assert_contains(m.notes, "dropped 1 vertices");
+    assert_int_equal(s.nv, 8);
+    for (size_t v = 0; v < 8; ++v) {
+        assert_int_equal(s.source[v], (long)v + 1);
+        assert_true(memcmp(s.xyz + 3 * v, c.xyz + 3 * v, 3 * sizeof *s.xyz) == 0);
+    }
+    tf_surface_free(&s);
+    tf_surface_free(&c);
+}
+
+static void a_degenerate_or_nonmanifold_surface_is_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20);
+    s.tri[3 * 7 + 2] = s.tri[3 * 7];
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "degenerate triangle 7");
+    tf_surface_free(&s);
+
+    /* a fin: a triangle standing on an edge of the cube (third triangle there) */
+    tf_surface c;
+    shape_cube(&c, 10, 20);
+    tf_surface_alloc(&s, 9, 13);
+    memcpy(s.xyz, c.xyz, 24 * sizeof *s.xyz);
+    memcpy(s.tri, c.tri, 36 * sizeof *s.tri);
+    s.xyz[24] = 0, s.xyz[25] = 0, s.xyz[26] = 0;
+    s.tri[36] = 0, s.tri[37] = 1, s.tri[38] = 8;
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "open surface"); /* the fin's free edges come first */
+    tf_surface_free(&s);
+    tf_surface_free(&c);
+}
+
+/* A cube whose top corner (vertex 6) is pushed down through the bottom:
+ * still one closed, consistently wound piece, but it crosses itself. */
+static void a_self_intersecting_surface_is_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20);
+    s.xyz[3 * 6] = 22, s.xyz[3 * 6 + 1] = 22, s.xyz[3 * 6 + 2] = 5;
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "self-intersecting surface:");
+    assert_contains(m.error, "the volume mesher cannot fill it");
+    tf_crossing c;
+    assert_int_equal(tf_surface_crossings(&s, &c), 0);
+    assert_true(c.pairs >= 1);
+    assert_true(c.at[2] >= 10 - 1e-9 && c.at[2] <= 30); /* on the bottom or a side */
+    tf_surface_free(&s);
+
+    shape_cube(&s, 10, 20); /* the untouched cube crosses nothing */
+    assert_int_equal(tf_surface_crossings(&s, &c), 0);
+    assert_int_equal(c.pairs, 0);
+    tf_surface_free(&s);
+}
+
+static void segment_triangle_crossing(void **state)
+{
+    (void)state;
+    const double a[3] = {0, 0, 0}, b[3] = {4, 0, 0}, c[3] = {0, 4, 0};
+    const double p[3] = {1, 1, -1}, q[3] = {1, 1, 3}, r[3] = {5, 5, -1}, s[3] = {5, 5, 1};
+    double at[3];
+    assert_int_equal(tf_segment_crosses_triangle(p, q, a, b, c, at), 1);
+    assert_close(at[0], 1, 1e-15);
+    assert_close(at[2], 0, 1e-15);
+    assert_int_equal(tf_segment_crosses_triangle(r, s, a, b, c, at), 0); /* misses */
+    assert_int_equal(tf_segment_crosses_triangle(p, a, a, b, c, at), 0); /* touches a corner */
+}
+
+static void absurd_units_are_refused(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    tf_transform t = tf_transform_identity();
+    shape_cube(&s, 10, 20);
+    t.scale = 0.01; /* 20 file units read as cm -> 0.2 mm */
+    assert_int_equal(tf_transform_apply(&t, &s, &m), TF_GEOM_OK);
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "absurd size: the bounding box is 0.2 x 0.2 x 0.2 mm after "
+                             "scaling, under 1 mm");
+    tf_surface_free(&s);
+
+    shape_cube(&s, 10, 20);
+    t.scale = 100;
+    tf_transform_apply(&t, &s, &m);
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "over 1 m");
+    tf_surface_free(&s);
+
+    shape_cube(&s, 10, 20);
+    t.scale = -1;
+    assert_int_equal(tf_transform_apply(&t, &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "scale -1: must be a positive number");
+    tf_surface_free(&s);
+}
+
+static void transform_scales_centres_rotates_translates(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    shape_cube(&s, 10, 20); /* [10, 30]^3, vertex 1 at (30, 10, 10) */
+    tf_transform t = {.scale = 2, .centre = 1, .axis = {0, 0, 5}, .angle_deg = 90,
+                      .translate = {1, 2, 3}};
+    assert_int_equal(tf_transform_apply(&t, &s, &m), TF_GEOM_OK);
+    /* scaled (60, 20, 20), centre (40, 40, 40) -> (20, -20, -20), turned
+     * 90 degrees about z -> (20, 20, -20), moved -> (21, 22, -17) */
+    assert_close(s.xyz[3], 21, 1e-12);
+    assert_close(s.xyz[4], 22, 1e-12);
+    assert_close(s.xyz[5], -17, 1e-12);
+    assert_close(tf_surface_volume(&s), 64000, 1e-6); /* 8000 x 2^3, turning keeps it */
+    double lo[3], hi[3];
+    tf_surface_bbox(&s, lo, hi);
+    assert_close(0.5 * (lo[0] + hi[0]), 1, 1e-12);
+    assert_close(0.5 * (lo[2] + hi[2]), 3, 1e-12);
+    tf_surface_free(&s);
+}
+
+/* The same cube through each reader: OBJ with groups and texture seams,
+ * STL (one triangle per facet, nothing shared), ASCII VTK. */
+static void each_format_reads_the_same_closed_cube(void **state)
+{
+    (void)state;
+    tf_surface c, s;
+    tf_geom_msg m = {0};
+    shape_cube(&c, 10, 20);
+    FILE *fp = fopen(file("cube.obj"), "w");
+    fprintf(fp, "vt 0 0\nvt 1 0\nvt 0 1\n");
+    for (size_t v = 0; v < 8; ++v) {
+        fprintf(fp, "v %g %g %g\n", c.xyz[3 * v], c.xyz[3 * v + 1], c.xyz[3 * v + 2]);
+    }
+    for (size_t t = 0; t < 12; ++t) {
+        fprintf(fp, "%sf %zu/%zu %zu/%zu %zu/%zu\n", t == 6 ? "g second\nusemtl other\n" : "",
+                c.tri[3 * t] + 1, t % 3 + 1, c.tri[3 * t + 1] + 1, (t + 1) % 3 + 1,
+                c.tri[3 * t + 2] + 1, (t + 2) % 3 + 1);
+    }
+    fclose(fp);
+    assert_int_equal(shape_write_stl(&c, file("cube.STL")), 0);
+    assert_int_equal(shape_write_vtk(&c, file("cube.vtk")), 0);
+    const char *names[] = {"cube.obj", "cube.STL", "cube.vtk"};
+    for (int k = 0; k < 3; ++k) {
+        assert_int_equal(tf_surface_read(file(names[k]), &s, &m), TF_GEOM_OK);
+        assert_int_equal(s.nv, 8);
+        assert_int_equal(s.nt, 12);
+        assert_int_equal(tf_surface_clean(&s, &m), TF_GEOM_OK);
+        assert_string_equal(m.notes, "");
+        assert_close(tf_surface_volume(&s), 8000, 1e-9);
+        tf_surface_free(&s);
+    }
+    /* VTK keeps the file's vertex order */
+    tf_surface_read(file("cube.vtk"), &s, &m);
+    assert_true(memcmp(s.xyz, c.xyz, 24 * sizeof *s.xyz) == 0);
+    tf_surface_free(&s);
+    tf_surface_free(&c);
+}
+
+static void unreadable_files_say_why(void **state)
+{
+    (void)state;
+    tf_surface s;
+    tf_geom_msg m;
+    assert_int_equal(tf_surface_read(file("none.obj"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "cannot read mesh");
+    assert_contains(m.error, "none.obj");
+    assert_int_equal(tf_surface_read(file("none.vtk"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "none.vtk': No such file or directory");
+    FILE *fp = fopen(file("bad.vtk"), "w");
+    fprintf(fp, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0\n");
+    fclose(fp);
+    assert_int_equal(tf_surface_read(file("bad.vtk"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "cannot read mesh: Error loading");
+    assert_contains(m.error, "bad.vtk");
+    assert_int_equal(tf_surface_read(file("cube.dae"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "unknown mesh format '.dae'");
+
+    fp = fopen(file("lines.obj"), "w");
+    fprintf(fp, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n");
+    fclose(fp);
+    assert_int_equal(tf_surface_read(file("lines.obj"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "1 faces are points or lines, not triangles");
+
+    fp = fopen(file("range.obj"), "w");
+    fprintf(fp, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+    fclose(fp);
+    assert_int_equal(tf_surface_read(file("range.obj"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "index out of range");
+
+    /* the whole pipeline with a transform: an open surface from a file */
+    tf_surface c;
+    shape_cube(&c, 10, 20);
+    c.nt = 10;
+    shape_write_vtk(&c, file("open.vtk"));
+    tf_transform t = tf_transform_identity();
+    assert_int_equal(tf_surface_load(file("open.vtk"), &t, &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "open surface");
+    assert_null(s.xyz);
+    tf_surface_free(&c);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(a_closed_cube_passes_untouched),
+        cmocka_unit_test(an_open_box_is_refused),
+        cmocka_unit_test(a_flipped_triangle_is_refused),
+        cmocka_unit_test(inward_winding_is_reversed_with_a_note),
+        cmocka_unit_test(specks_are_dropped_and_a_second_organ_refused),
+        cmocka_unit_test(unused_vertices_are_dropped_keeping_file_indices),
+        cmocka_unit_test(a_degenerate_or_nonmanifold_surface_is_refused),
+        cmocka_unit_test(a_self_intersecting_surface_is_refused),
+        cmocka_unit_test(segment_triangle_crossing),
+        cmocka_unit_test(absurd_units_are_refused),
+        cmocka_unit_test(transform_scales_centres_rotates_translates),
+        cmocka_unit_test(each_format_reads_the_same_closed_cube),
+        cmocka_unit_test(unreadable_files_say_why),
+    };
+    return cmocka_run_group_tests(tests, make_dir, remove_dir);
+}
