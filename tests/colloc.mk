@@ -40,7 +40,7 @@ check-colloc: $(T)/colloc/hertz $(T)/colloc/block48 $(B)/bin/tissuefit
 	@cut -d, -f1-21 $(T)/colloc/threads-2.csv > $(T)/colloc/threads-2.cut
 	@test -s $(T)/colloc/threads-1.cut
 	@cmp $(T)/colloc/threads-1.cut $(T)/colloc/threads-2.cut && \
-	  echo "forces, contact counts and relaxation steps identical to the last bit: ok"
+	  echo "ok: forces, contact counts and relaxation steps identical to the last bit"
 	@echo "== collocation: tissuefit solve (mls-collocation) against the core on block48 =="
 	@OMP_NUM_THREADS=1 tests/colloc/solver_path.sh $(B)/bin/tissuefit $(T)/colloc/block48
 	@echo "== tissuefit verify hertz =="
@@ -48,7 +48,7 @@ check-colloc: $(T)/colloc/hertz $(T)/colloc/block48 $(B)/bin/tissuefit
 	  --csv $(T)/colloc/verify_hertz.csv > /dev/null
 	@awk -F, 'NR == 1 && $$1 == "particles" { h = 1 } NR > 1 && $$1 == 713 { n++ } \
 	  END { if (!h || n != 4) { print "FAIL: verify hertz CSV"; exit 1 } \
-	        print "verify hertz: 4 force-indentation pairs at 713 particles: ok" }' \
+	        print "ok: verify hertz wrote 4 force-indentation pairs at 713 particles" }' \
 	  $(T)/colloc/verify_hertz.csv
 
 hertz-study: $(T)/colloc/hertz | deps-colloc-study

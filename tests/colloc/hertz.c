@@ -182,7 +182,7 @@ int main(int argc, char **argv)
         }
     }
     if (a.check >= 0 && rc == 0) {
-        printf("every indentation within %g of Hertz's: ok\n", a.check);
+        printf("ok: every indentation within %g of Hertz's theory\n", a.check);
     }
     return rc;
 }

@@ -19,4 +19,4 @@ awk -v cx="$cx" -v cz="$cz" -v tx="$tx" -v tz="$tz" 'BEGIN {
   ex = (tx - cx) / cx; ez = (tz - cz) / cz; ex = ex < 0 ? -ex : ex; ez = ez < 0 ? -ez : ez
   printf "node 61, mm/N: x %.7f (tissuefit) vs %.7f (core), z %.7f vs %.7f; relative differences %.1e, %.1e\n", tx, cx, tz, cz, ex, ez
   if (!(ex <= 1e-4 && ez <= 1e-4)) { print "FAIL: the solver path differs from the core"; exit 1 }
-  print "tissuefit solve --set solver.method=mls-collocation matches the core: ok" }'
+  print "ok: tissuefit solve --set solver.method=mls-collocation matches the core" }'
