@@ -48,19 +48,10 @@ static int seed_table(tf_family_result *f, tf_cases *c, tf_ctx *ctx)
     for (int a = 0; a < 3; ++a) {
         double sum2[3] = {0, 0, 0};
         for (int level = 1; level <= TF_FAMILY_LEVELS; ++level) {
-            double s = d->radius * level / TF_FAMILY_LEVELS, f3[3] = {0, 0, 0};
-            f3[a] = (double)(float)(d->centre[a] + s);
-            const float in[3] = {(float)d->centre[0], (float)d->centre[1], (float)d->centre[2]};
-            float fin[3] = {in[0], in[1], in[2]};
-            fin[a] = (float)f3[a];
-            for (int k = 0; k < 3; ++k) {
-                f3[k] = (double)fin[k];
-            }
-            if (tf_cases_response(c, f3, truth, NULL) != 0) {
-                free(out);
-                free(truth);
-                return -1;
-            }
+            double s = d->radius * level / TF_FAMILY_LEVELS, f3[3];
+            tf_cases_level_force(d, a, level, f3);
+            const float fin[3] = {(float)f3[0], (float)f3[1], (float)f3[2]};
+            tf_cases_level_response(c, a, level, truth);
             tf_ref_eval(f->model, fin, out, NULL);
             for (size_t j = 0; j < d->n_out; ++j) {
                 for (int comp = 0; comp < 3; ++comp) {
@@ -143,8 +134,7 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     tf_ctx *ctx = solver->ctx;
     memset(o, 0, sizeof *o);
     double t0 = seconds();
-    if (tf_cases_build(p, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       plan->direct, &o->cases) != 0) {
+    if (tf_cases_build(p, solver, plan, &o->cases) != 0) {
         return -1;
     }
     o->seconds_cases = seconds() - t0;

@@ -327,8 +327,9 @@ static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
     if (outputs_of(s, solver, set, plan->contact, &copy, &nodes) != 0) {
         return tf_fail(ctx, "out of memory for the output set");
     }
-    if (tf_cases_build(&copy, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       0, &cases) != 0) {
+    tf_fit_plan superposed = *plan;
+    superposed.direct = 0;
+    if (tf_cases_build(&copy, solver, &superposed, &cases) != 0) {
         free(nodes);
         return -1;
     }
