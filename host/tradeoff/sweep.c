@@ -20,6 +20,7 @@
 #include "base/log.h"
 #include "fitting/cases.h"
 #include "fitting/families/family.h"
+#include "model/passivity.h"
 #include "model/q31.h"
 #include "model/target_view.h"
 
@@ -163,6 +164,12 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     m->heldout_cases = (uint32_t)held->n_cases;
 
     const int contact = is_inverse(m);
+    char why[512];
+    const int passivity = contact ? tf_passivity_require(m, why, sizeof why) : 0;
+    if (passivity < 0) {
+        return -1;
+    }
+    c->passive = passivity == 0; /* a non-passive law stays in the sweep, never selected */
     tfit_model view;
     tf_target_view(m, &view);
     timing_job j = {.f32 = &view, .n_in = held->n_cases, .inverse = contact};
