@@ -31,6 +31,7 @@ static int in_patch(const tf_patch *p, double u, double v)
         return (u - p->centre[0]) * (u - p->centre[0]) + (v - p->centre[1]) * (v - p->centre[1]) <=
                p->radius * p->radius;
     case TF_PATCH_POINT:
+    case TF_PATCH_AT:
         return 0;
     }
     return 0;
@@ -107,6 +108,13 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
                            double *f, char *err, size_t errlen)
 {
     size_t n = pr->cloud.n, n3 = 3 * n;
+    if (p->shape == TF_PATCH_AT) {
+        /* A point force between particles would need the MLS shape
+         * functions at that point; not provided (no field either). */
+        snprintf(err, errlen, "mls-collocation: a force at a point between particles is not "
+                              "supported; give a node or a face patch");
+        return -1;
+    }
     if (p->shape == TF_PATCH_POINT) {
         for (int a = 0; a < 3; ++a) {
             if (force) {
@@ -145,7 +153,7 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
 int tf_colloc_exact_forces(const tf_problem *pr, const tf_patch *p, double *f, char *err,
                            size_t errlen)
 {
-    if (p->shape == TF_PATCH_POINT) {
+    if (p->shape == TF_PATCH_POINT || p->shape == TF_PATCH_AT) {
         snprintf(err, errlen, "an analytic traction needs a patch, not a point");
         return -1;
     }
