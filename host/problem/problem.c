@@ -18,6 +18,7 @@ void tf_problem_release(tf_problem *p)
     free(p->contacts);
     free(p->outputs.nodes);
     free(p->outputs.points);
+    tf_history_release(&p->history);
     memset(p, 0, sizeof *p);
 }
 

@@ -11,6 +11,7 @@
 
 static const tf_solver_ops *const types[] = {
     &tf_galerkin_ops,
+    &tf_efg_galerkin_ops,
     &tf_colloc_ops,
 };
 
