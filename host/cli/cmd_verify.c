@@ -1,6 +1,7 @@
 /*
  * cmd_verify.c — `tissuefit verify`: convergence table of the cantilever or
- * the patch test against their analytic solutions.
+ * the patch test against their analytic solutions; `verify hertz` is the
+ * collocation solver's Hertz test (cmd_verify_hertz.c).
  */
 #include <getopt.h>
 #include <math.h>
@@ -11,6 +12,7 @@
 #include "base/atomic_file.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
+#include "cli/cmd_verify_hertz.h"
 #include "base/log.h"
 #include "scene/scene_levels.h"
 #include "verify/verify.h"
@@ -40,6 +42,8 @@ static void help(FILE *out)
             "  --csv FILE        also write the table to FILE\n"
             "Errors are integrated with %d^3 Gauss points per background cell.\n",
             MAX_LEVELS, TF_VERIFY_ERROR_ORDER);
+    fputc('\n', out);
+    tf_verify_hertz_help(out);
 }
 
 typedef struct verify_args {
@@ -130,6 +134,11 @@ static void print_table(FILE *fp, const tf_verify_row *rows, size_t n)
 
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
+    for (int k = 1; k < argc; ++k) {
+        if (strcmp(argv[k], "hertz") == 0) {
+            return tf_verify_hertz(ctx, argc, argv);
+        }
+    }
     verify_args a = {0};
     tf_verify_row rows[MAX_LEVELS];
     char err[1024];
@@ -183,7 +192,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
 
 const tf_command tf_cmd_verify = {
     .name = "verify",
-    .summary = "convergence table of the cantilever or the patch test",
+    .summary = "convergence table of the cantilever or the patch test; the Hertz test",
     .run = run,
     .help = help,
 };

@@ -204,3 +204,97 @@ double tf_nbr_kth_distance(const tf_nbr *g, const double x[3], size_t k)
     free(idx);
     return dk;
 }
+
+/* Inserts (d2, j) into the ascending list (d2s, out) of at most cap
+ * entries, ties by index. */
+static void keep_sorted(double d2, uint32_t j, double *d2s, uint32_t *out, size_t *m, size_t cap)
+{
+    size_t k = *m;
+    if (k == cap) {
+        if (d2 > d2s[k - 1] || (d2 == d2s[k - 1] && j > out[k - 1])) {
+            return;
+        }
+        k--;
+    } else {
+        (*m)++;
+    }
+    while (k > 0 && (d2s[k - 1] > d2 || (d2s[k - 1] == d2 && out[k - 1] > j))) {
+        d2s[k] = d2s[k - 1];
+        out[k] = out[k - 1];
+        --k;
+    }
+    d2s[k] = d2;
+    out[k] = j;
+}
+
+/* Every node of bin k into the list. */
+static void scan_bin(const tf_nbr *g, size_t k, const double x[3], size_t skip, double *d2s,
+                     uint32_t *out, size_t *m, size_t cap)
+{
+    for (uint32_t p = g->start[k]; p < g->start[k + 1]; ++p) {
+        uint32_t j = g->items[p];
+        if (j == skip) {
+            continue;
+        }
+        const double *y = g->xyz + 3 * (size_t)j;
+        double d0 = y[0] - x[0], d1 = y[1] - x[1], d2 = y[2] - x[2];
+        keep_sorted(d0 * d0 + d1 * d1 + d2 * d2, j, d2s, out, m, cap);
+    }
+}
+
+size_t tf_nbr_nearest(const tf_nbr *g, const double x[3], size_t k, double tie, size_t skip,
+                      uint32_t *out, double *dist, size_t cap)
+{
+    double *d2s = malloc((cap ? cap : 1) * sizeof *d2s);
+    if (d2s == NULL || k == 0 || cap < k) {
+        free(d2s);
+        return 0;
+    }
+    unsigned b0[3];
+    bin_of(g, x, b0);
+    double step = fmin(g->bin[0], fmin(g->bin[1], g->bin[2]));
+    unsigned rmax = 0;
+    for (int a = 0; a < 3; ++a) {
+        unsigned far = b0[a] > g->dims[a] - 1 - b0[a] ? b0[a] : g->dims[a] - 1 - b0[a];
+        rmax = far > rmax ? far : rmax;
+    }
+    size_t m = 0;
+    double lim = (1 + tie) * (1 + tie);
+    for (unsigned r = 0; r <= rmax; ++r) {
+        /* The shell of bins at Chebyshev distance r from b0, clipped. */
+        long lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = (long)b0[a] - (long)r < 0 ? 0 : (long)b0[a] - (long)r;
+            hi[a] = (long)b0[a] + (long)r > (long)g->dims[a] - 1 ? (long)g->dims[a] - 1
+                                                                 : (long)b0[a] + (long)r;
+        }
+        for (long c = lo[2]; c <= hi[2]; ++c) {
+            for (long b = lo[1]; b <= hi[1]; ++b) {
+                for (long a = lo[0]; a <= hi[0]; ++a) {
+                    long da = labs(a - (long)b0[0]), db = labs(b - (long)b0[1]),
+                         dc = labs(c - (long)b0[2]);
+                    long cheb = da > db ? (da > dc ? da : dc) : (db > dc ? db : dc);
+                    if (cheb != (long)r) {
+                        continue;
+                    }
+                    size_t bin = (size_t)a + (size_t)g->dims[0] * ((size_t)b + (size_t)g->dims[1] * (size_t)c);
+                    scan_bin(g, bin, x, skip, d2s, out, &m, cap);
+                }
+            }
+        }
+        /* Every node closer than r bins is in the list now. */
+        double reach = r * step;
+        if (m >= k && d2s[k - 1] * lim < reach * reach) {
+            break;
+        }
+    }
+    size_t n = m < k ? m : k;
+    while (tie > 0 && n < m && d2s[n] <= d2s[k - 1] * lim) {
+        n++;
+    }
+    for (size_t i = 0; dist && i < n; ++i) {
+        dist[i] = sqrt(d2s[i]);
+    }
+    free(d2s);
+    return n;
+}

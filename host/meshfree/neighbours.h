@@ -42,4 +42,16 @@ size_t tf_nbr_query_ball(const tf_nbr *g, const double x[3], double r, uint32_t 
  * count), or -1 when out of memory. */
 double tf_nbr_kth_distance(const tf_nbr *g, const double x[3], size_t k);
 
+/* The k nodes nearest to x (Euclidean distance, whatever the radii the grid
+ * was built for), followed by every further node whose distance is within a
+ * relative `tie` of the k-th one's (tie <= 0: none, exactly k; a regular grid has many nodes
+ * at equal distances, and cutting among them by index would make a
+ * lopsided neighbourhood), ordered by distance, then index.  Node `skip`
+ * (x's own node, or SIZE_MAX for none) is left out.  Writes at most
+ * cap >= k indices to out and their distances to dist (when not NULL) and
+ * returns how many it wrote: fewer than k only when the cloud has fewer
+ * nodes; tied nodes beyond cap are dropped (the largest indices first). */
+size_t tf_nbr_nearest(const tf_nbr *g, const double x[3], size_t k, double tie, size_t skip,
+                      uint32_t *out, double *dist, size_t cap);
+
 #endif /* TF_NEIGHBOURS_H */

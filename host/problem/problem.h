@@ -189,6 +189,18 @@ typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_inte
 
 #define TF_SOLVER_METHOD_MAX 32
 
+/* The MLS collocation solver's options (solvers/collocation/, scene
+ * solver.collocation; docs/collocation.md). */
+typedef struct tf_colloc_settings {
+    unsigned neighbours;    /* k nearest (ties at the k-th distance included) */
+    double support;         /* support radius / mean neighbour distance */
+    double stabilisation;   /* weight of the fit-residual energy */
+    double volume_constant; /* k_v of seed 004 eq 12, MPa */
+    double density;         /* t/mm^3 (1e-9: 1000 kg/m^3) */
+    double damping;         /* mass-proportional damping of load histories, 1/s */
+    double tolerance;       /* of the dynamic relaxation (relative residual) */
+} tf_colloc_settings;
+
 /* How the nonlinear solver solves each Newton iteration's linear system
  * (docs/solver.md): a new factorisation of the tangent every iteration; the
  * last factorisation kept until convergence slows (modified Newton); a
@@ -235,6 +247,7 @@ typedef struct tf_solver_opts {
     double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
     tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    tf_colloc_settings colloc; /* "mls-collocation" */
     int ordering;     /* fill-reducing ordering, tf_ordering (solvers/cholmod_solve.h) */
     tf_newton_opts newton; /* nonlinear laws */
 } tf_solver_opts;

@@ -16,6 +16,7 @@
 #include "scene/scene_history.h"
 #include "scene/scene_organ.h"
 #include "scene/scene_regions.h"
+#include "solvers/collocation/colloc_solver.h"
 #include "solvers/solver.h"
 
 int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
@@ -525,6 +526,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .nitsche = 100,
         .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
+        .colloc = tf_colloc_settings_default(),
         .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
                    .tangent = TF_TANGENT_FULL, .krylov_max = 100},
         .ordering = 0,
@@ -533,6 +535,44 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         o.cells[a] = grid[a] - 1;
     }
     return o;
+}
+
+/* solver.collocation (the mls-collocation solver, docs/collocation.md). */
+static int colloc(const sd_colloc *d, tf_colloc_settings *c, sd_issue *is)
+{
+    if (d == NULL) {
+        return 0;
+    }
+    c->neighbours = d->neighbours ? *d->neighbours : c->neighbours;
+    c->support = d->support ? *d->support : c->support;
+    c->stabilisation = d->stabilisation ? *d->stabilisation : c->stabilisation;
+    c->volume_constant = d->volume_constant ? *d->volume_constant : c->volume_constant;
+    c->density = d->density ? *d->density : c->density;
+    c->damping = d->damping ? *d->damping : c->damping;
+    c->tolerance = d->tolerance ? *d->tolerance : c->tolerance;
+    if (c->neighbours < 4 || c->neighbours > 256) {
+        return sd_fail(is, "solver.collocation.neighbours", "4 to 256 nearest particles");
+    }
+    if (!(c->support > 1 && c->support <= 10)) {
+        return sd_fail(is, "solver.collocation.support",
+                       "the support radius must be 1 to 10 mean neighbour distances");
+    }
+    if (!(isfinite(c->stabilisation) && c->stabilisation >= 0)) {
+        return sd_fail(is, "solver.collocation.stabilisation", "must be a number >= 0");
+    }
+    if (!(isfinite(c->volume_constant) && c->volume_constant >= 0)) {
+        return sd_fail(is, "solver.collocation.volume_constant", "must be >= 0 (MPa)");
+    }
+    if (!(isfinite(c->density) && c->density > 0)) {
+        return sd_fail(is, "solver.collocation.density", "must be > 0 (t/mm^3; water: 1e-9)");
+    }
+    if (!(isfinite(c->damping) && c->damping >= 0)) {
+        return sd_fail(is, "solver.collocation.damping", "must be >= 0 (1/s)");
+    }
+    if (!(c->tolerance > 0 && c->tolerance < 1)) {
+        return sd_fail(is, "solver.collocation.tolerance", "must lie in (0, 1)");
+    }
+    return 0;
 }
 
 static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
@@ -665,7 +705,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
         return sd_fail(is, "solver.rcond_warn", "must lie in (0, 1)");
     }
-    return 0;
+    return colloc(d->collocation, &o->colloc, is);
 }
 
 static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)

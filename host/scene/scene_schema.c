@@ -227,6 +227,17 @@ static const cyaml_schema_field_t rbf_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t colloc_fields[] = {
+    CYAML_FIELD_UINT_PTR("neighbours", OPT, sd_colloc, neighbours),
+    CYAML_FIELD_FLOAT_PTR("support", OPT, sd_colloc, support),
+    CYAML_FIELD_FLOAT_PTR("stabilisation", OPT, sd_colloc, stabilisation),
+    CYAML_FIELD_FLOAT_PTR("volume_constant", OPT, sd_colloc, volume_constant),
+    CYAML_FIELD_FLOAT_PTR("density", OPT, sd_colloc, density),
+    CYAML_FIELD_FLOAT_PTR("damping", OPT, sd_colloc, damping),
+    CYAML_FIELD_FLOAT_PTR("tolerance", OPT, sd_colloc, tolerance),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t newton_fields[] = {
     CYAML_FIELD_FLOAT_PTR("tolerance", OPT, sd_newton, tolerance),
     CYAML_FIELD_FLOAT_PTR("energy_tolerance", OPT, sd_newton, energy_tolerance),
@@ -258,6 +269,7 @@ static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_ENUM_PTR("ordering", STRICT_OPT, sd_solver, ordering, orderings, N(orderings)),
     CYAML_FIELD_MAPPING_PTR("newton", OPT, sd_solver, newton, newton_fields),
     CYAML_FIELD_FLOAT_PTR("rcond_warn", OPT, sd_solver, rcond_warn),
+    CYAML_FIELD_MAPPING_PTR("collocation", OPT, sd_solver, collocation, colloc_fields),
     CYAML_FIELD_END,
 };
 

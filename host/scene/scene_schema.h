@@ -157,6 +157,16 @@ typedef struct sd_rbf {
     double *q;
 } sd_rbf;
 
+typedef struct sd_colloc {
+    unsigned *neighbours;
+    double *support;
+    double *stabilisation;
+    double *volume_constant;
+    double *density;
+    double *damping;
+    double *tolerance;
+} sd_colloc;
+
 typedef struct sd_newton {
     double *tolerance, *energy_tolerance;
     unsigned *iterations, *steps, *cuts, *krylov_iterations;
@@ -180,6 +190,7 @@ typedef struct sd_solver {
     int *ordering;    /* tf_ordering */
     sd_newton *newton;
     double *rcond_warn;
+    sd_colloc *collocation; /* "mls-collocation" */
 } sd_solver;
 
 typedef struct sd_reference {

@@ -5,12 +5,14 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "solvers/collocation/colloc_solver.h"
 #include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
 
 static const tf_solver_ops *const types[] = {
     &tf_galerkin_ops,
     &tf_efg_galerkin_ops,
+    &tf_colloc_ops,
 };
 
 size_t tf_solver_type_count(void) { return sizeof types / sizeof types[0]; }

@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <math.h>
 #include <stdlib.h>
 
 #include <cmocka.h>
@@ -51,6 +52,74 @@ static void queries_match_brute_force(void **state)
     free(xyz);
 }
 
+/* The k nearest by brute force: (distance, index) order, node `skip` out. */
+static size_t brute_nearest(const double *xyz, size_t n, const double x[3], size_t k, double tie,
+                            size_t skip, uint32_t *out, double *d)
+{
+    size_t m = 0;
+    for (size_t j = 0; j < n; ++j) {
+        if (j == skip) {
+            continue;
+        }
+        double s = 0;
+        for (int a = 0; a < 3; ++a) {
+            s += (xyz[3 * j + a] - x[a]) * (xyz[3 * j + a] - x[a]);
+        }
+        size_t p = m++;
+        while (p > 0 && (d[p - 1] > s || (d[p - 1] == s && out[p - 1] > j))) {
+            d[p] = d[p - 1];
+            out[p] = out[p - 1];
+            --p;
+        }
+        d[p] = s;
+        out[p] = (uint32_t)j;
+    }
+    size_t c = m < k ? m : k;
+    while (tie > 0 && c < m && d[c] <= d[k - 1] * (1 + tie) * (1 + tie)) {
+        c++;
+    }
+    return c;
+}
+
+static void nearest_match_brute_force(void **state)
+{
+    (void)state;
+    enum { n = 1500 };
+    double *xyz = malloc(3 * n * sizeof *xyz), *d = malloc(n * sizeof *d), dist[64];
+    uint32_t *want = malloc(n * sizeof *want), out[64];
+    tf_rng r = {5};
+    /* Half a jittered cloud, half a regular grid (ties). */
+    for (size_t i = 0; i < n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            xyz[3 * i + a] = i < n / 2 ? tf_rng_range(&r, 0, a == 2 ? 3 : 9)
+                                       : (double)((i - n / 2) / (a == 0 ? 1 : a == 1 ? 10 : 100) % 10) + 10;
+        }
+    }
+    const double radius[3] = {0.5, 0.5, 0.5};
+    tf_nbr g;
+    assert_int_equal(tf_nbr_build(&g, xyz, n, radius), 0);
+    for (size_t t = 0; t < n; t += 7) {
+        for (size_t k = 1; k <= 20; k += 19) {
+            double tie = t % 2 ? 1e-9 : 0;
+            size_t m = brute_nearest(xyz, n, xyz + 3 * t, k, tie, t, want, d);
+            size_t got = tf_nbr_nearest(&g, xyz + 3 * t, k, tie, t, out, dist, 64);
+            assert_int_equal(got, m < 64 ? m : 64);
+            for (size_t q = 0; q < got; ++q) {
+                assert_int_equal(out[q], want[q]);
+                assert_true(fabs(dist[q] - sqrt(d[q])) <= 1e-12 * (1 + dist[q]));
+            }
+        }
+    }
+    /* On the grid: 6 at distance 1 and 12 at sqrt 2; k = 16 with ties gives 18. */
+    size_t centre = n / 2 + 5 + 50 + 500;
+    assert_int_equal(tf_nbr_nearest(&g, xyz + 3 * centre, 16, 1e-9, centre, out, dist, 64), 18);
+    assert_int_equal(tf_nbr_nearest(&g, xyz + 3 * centre, 16, 0, centre, out, dist, 64), 16);
+    tf_nbr_free(&g);
+    free(xyz);
+    free(d);
+    free(want);
+}
+
 /* block48's grid with solver.support=1e-16: more bins per axis than an
  * unsigned holds were asked for (0 bins and a crash before); a support that
  * holds no node is an empty answer, with no buffer to sort. */
@@ -83,6 +152,7 @@ static void a_tiny_support_still_bins(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {cmocka_unit_test(queries_match_brute_force),
+                                       cmocka_unit_test(nearest_match_brute_force),
                                        cmocka_unit_test(a_tiny_support_still_bins)};
     return cmocka_run_group_tests_name("neighbours", tests, NULL, NULL);
 }

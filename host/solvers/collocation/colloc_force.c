@@ -1,0 +1,280 @@
+/*
+ * colloc_force.c — elastic forces of the particles (seed 004 eqs 4, 10-12).
+ *
+ * The stored energy is a sum over particles (nodal integration):
+ *
+ *   U = sum_i v_i W(F_i) + 1/2 kv v_i (det F_i - 1)^2 + U_res,i,
+ *   F_i = I + sum_k (u_k - u_i) g_ik^T                      (colloc_mls.c)
+ *
+ * W the law's energy density (SVK: eqs 4-5, 10), the second term eq 12
+ * (Müller et al.'s volume term; the seed writes it without v_i, which makes
+ * kv depend on the particle size: with v_i it is a modulus, MPa).  The
+ * force is f = -dU/du (eq 11): with P_i = dW/dF = F_i S_i (first
+ * Piola-Kirchhoff; the law's stress itself for a small-strain law),
+ *
+ *   f_k = -sum_{i: k in N_i} v_i P_i g_ik  +  v_k P_k d_k,   d_k = sum_j g_kj.
+ *
+ * U_res is ours (the seed has no such term): nodal integration sees a
+ * particle's deformation only through its MLS fit, and a displacement that
+ * the fit cannot see (on a regular grid, neighbours moving in a
+ * checkerboard) costs no energy — a zero-energy mode that a concentrated
+ * load excites without bound.  U_res penalises what the fit leaves over,
+ * the residual of eq 7 itself:
+ *
+ *   U_res,i = stab mu v_i (sum_k w_ik |r_ik|^2) / (sum_k w_ik |X_ik|^2),
+ *   r_ik = x_k - x_i - F_i X_ik,
+ *
+ * objective (r turns with the body), zero for every linear field (so the
+ * patch test is untouched) and O(h^2) for smooth ones.  Because F_i
+ * minimises sum_k w_ik |r_ik|^2 (eq 9), dU_res/dF_i = 0 and its force is
+ * just f_k = -beta_i w_ik r_ik on each neighbour, +beta_i sum_k w_ik r_ik
+ * on i (beta_i = 2 stab mu v_i / sum_k w_ik |X_ik|^2).  It is in the spirit
+ * of Ganzenmüller's hourglass control for SPH (2015), not a copy of it.
+ *
+ * Two phases, both parallel over particles and each writing only its own
+ * particle's values: phase 1 computes F_i, P_i and what particle i sends;
+ * phase 2 lets each particle gather from the particles whose supports hold
+ * it, in ascending order.  Since g_ik = A_i^-1 y_ik (y_ik = w_ik X_ik), the
+ * stress and residual forces of pair (i, k) combine into one 3 x 3 matrix
+ * per particle, Q_i = v_i P_i A_i^-1 - beta_i G_i:
+ *
+ *   force on k from i:  -Q_i y_ik + beta_i w_ik (u_i - u_k),
+ *   on i from itself:    Q_i s_i + beta_i sum_k w_ik (u_k - u_i),
+ *
+ * s_i = sum_k y_ik: 12 multiply-adds per pair in each phase.
+ */
+#include "solvers/collocation/colloc_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "materials/kinematics.h"
+
+/* Voigt stress (tensor components) -> symmetric tensor. */
+static void voigt_to_tensor(const double v[6], double t[9])
+{
+    t[0] = v[0];
+    t[4] = v[1];
+    t[8] = v[2];
+    t[5] = t[7] = v[3];
+    t[2] = t[6] = v[4];
+    t[1] = t[3] = v[5];
+}
+
+/* P += kv (J - 1) cof F (eq 12; d det F / dF = cof F); returns its energy
+ * density 1/2 kv (J - 1)^2. */
+static double volume_term(double kv, const double F[9], double P[9])
+{
+    double cof[9] = {F[4] * F[8] - F[5] * F[7], F[5] * F[6] - F[3] * F[8],
+                     F[3] * F[7] - F[4] * F[6], F[2] * F[7] - F[1] * F[8],
+                     F[0] * F[8] - F[2] * F[6], F[1] * F[6] - F[0] * F[7],
+                     F[1] * F[5] - F[2] * F[4], F[2] * F[3] - F[0] * F[5],
+                     F[0] * F[4] - F[1] * F[3]};
+    double j = F[0] * cof[0] + F[1] * cof[1] + F[2] * cof[2];
+    for (int k = 0; k < 9; ++k) {
+        P[k] += kv * (j - 1) * cof[k];
+    }
+    return 0.5 * kv * (j - 1) * (j - 1);
+}
+
+/* Energy of particle i's residual term (only when the energy is asked). */
+static double residual_energy(const tf_colloc *c, size_t i, const double *u, const double G[9])
+{
+    double e = 0;
+    const double *ui = u + 3 * i, *xi = c->X + 3 * i;
+    for (uint32_t p = c->start[i]; p < c->start[i + 1]; ++p) {
+        size_t k = c->nbr[p];
+        double x[3], r2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            x[a] = c->X[3 * k + a] - xi[a];
+        }
+        for (int a = 0; a < 3; ++a) {
+            double r = u[3 * k + a] - ui[a] - (G[3 * a] * x[0] + G[3 * a + 1] * x[1] +
+                                               G[3 * a + 2] * x[2]);
+            r2 += r * r;
+        }
+        e += c->w[p] * r2;
+    }
+    return 0.5 * c->beta[i] * e;
+}
+
+/* G_i = B_i A_i^-1, B_i = sum_k (u_k - u_i) y_ik^T (colloc_mls.c), and
+ * q_i = sum_k w_ik (u_k - u_i). */
+static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9], double q[3])
+{
+    const double *ui = u + 3 * i;
+    double B[9] = {0};
+    q[0] = q[1] = q[2] = 0;
+    for (uint32_t p = c->start[i]; p < c->start[i + 1]; ++p) {
+        const double *uk = u + 3 * (size_t)c->nbr[p], *y = c->y + 3 * (size_t)p;
+        double du0 = uk[0] - ui[0], du1 = uk[1] - ui[1], du2 = uk[2] - ui[2], w = c->w[p];
+        B[0] += du0 * y[0];
+        B[1] += du0 * y[1];
+        B[2] += du0 * y[2];
+        B[3] += du1 * y[0];
+        B[4] += du1 * y[1];
+        B[5] += du1 * y[2];
+        B[6] += du2 * y[0];
+        B[7] += du2 * y[1];
+        B[8] += du2 * y[2];
+        q[0] += w * du0;
+        q[1] += w * du1;
+        q[2] += w * du2;
+    }
+    tf_matmul3(B, c->ainv + 9 * i, G);
+}
+
+/* First Piola-Kirchhoff stress P (and the energy density in *W) of particle
+ * i at F; returns 0, or -1 when det F <= 0. */
+static int stress(tf_colloc *c, size_t i, const double F[9], double dt, double P[9], double *W)
+{
+    double S6[6], S[9];
+    if (tf_material_eval(&c->mat, F, dt, c->hold + i * c->hsize, c->hnew + i * c->hsize, S6,
+                         NULL, W) != TF_MAT_OK) {
+        return -1;
+    }
+    voigt_to_tensor(S6, S);
+    if (c->small) {
+        for (int k = 0; k < 9; ++k) {
+            P[k] = S[k];
+        }
+    } else {
+        tf_matmul3(F, S, P);
+    }
+    if (c->opts.kv > 0) {
+        double wv = volume_term(c->opts.kv, F, P);
+        if (W) {
+            *W += wv;
+        }
+    }
+    return 0;
+}
+
+/* Phase 1 for particle i: F_i = I + G_i; then what particle i sends,
+ * Q_i = v_i P_i A_i^-1 - beta_i G_i, and its own force Q_i s_i + beta_i q_i.
+ * Returns 0, or -1 when det F_i <= 0. */
+static int phase1(tf_colloc *c, size_t i, const double *u, double dt, int want_energy)
+{
+    const double *ainv = c->ainv + 9 * i;
+    double G[9], q[3], F[9], P[9], M[9], W = 0;
+    gradient(c, i, u, G, q);
+    for (int k = 0; k < 9; ++k) {
+        F[k] = G[k] + (k % 4 == 0 ? 1 : 0);
+    }
+    if (stress(c, i, F, dt, P, want_energy ? &W : NULL) != 0) {
+        return -1;
+    }
+    double *out = c->ph1 + TF_COLLOC_PH1 * i, vi = c->vol[i], bi = c->beta[i];
+    const double *s = c->s + 3 * i;
+    for (int k = 0; k < 9; ++k) {
+        P[k] *= vi;
+    }
+    tf_matmul3(P, ainv, M);
+    for (int k = 0; k < 9; ++k) {
+        out[k] = M[k] - bi * G[k];
+    }
+    for (int a = 0; a < 3; ++a) {
+        out[9 + a] = out[3 * a] * s[0] + out[3 * a + 1] * s[1] + out[3 * a + 2] * s[2] + bi * q[a];
+    }
+    if (want_energy) {
+        c->epart[i] = vi * W + residual_energy(c, i, u, G);
+    }
+    return 0;
+}
+
+/* Phase 2 for particle (or image) k: the forces of every support that
+ * holds it, -Q_i y_ik + beta_i w_ik (u_i - u_k), after its own (an image
+ * has no stress of its own). */
+static void phase2(const tf_colloc *c, size_t k, const double *u, double *f)
+{
+    const double *uk = u + 3 * k;
+    double b = c->bsum[k], f0 = -b * uk[0], f1 = -b * uk[1], f2 = -b * uk[2];
+    if (k < c->n) {
+        const double *own = c->ph1 + TF_COLLOC_PH1 * k + 9;
+        f0 += own[0];
+        f1 += own[1];
+        f2 += own[2];
+    }
+    for (uint32_t e = c->rstart[k]; e < c->rstart[k + 1]; ++e) {
+        size_t i = c->rsrc[e];
+        const double *Q = c->ph1 + TF_COLLOC_PH1 * i, *y = c->ry + 3 * (size_t)e, *ui = u + 3 * i;
+        double ce = c->rc[e];
+        f0 += ce * ui[0] - (Q[0] * y[0] + Q[1] * y[1] + Q[2] * y[2]);
+        f1 += ce * ui[1] - (Q[3] * y[0] + Q[4] * y[1] + Q[5] * y[2]);
+        f2 += ce * ui[2] - (Q[6] * y[0] + Q[7] * y[1] + Q[8] * y[2]);
+    }
+    f[3 * k] = f0;
+    f[3 * k + 1] = f1;
+    f[3 * k + 2] = f2;
+}
+
+int tf_colloc_eval(tf_colloc *c, const double *u, double dt, double *f, double *energy,
+                   char *err, size_t errlen)
+{
+    size_t n = c->n, na = c->na;
+    int want = energy != NULL, failed = 0;
+    double *fa = f;
+    if (na > n) { /* the images' displacements, and forces on them too */
+        tf_colloc_ghost_fill(c, u, c->ue);
+        u = c->ue;
+        fa = c->fe;
+    }
+#pragma omp parallel num_threads(tf_colloc_threads(c))
+    {
+#pragma omp for schedule(static) reduction(| : failed)
+        for (size_t i = 0; i < n; ++i) {
+            c->bad[i] = phase1(c, i, u, dt, want) != 0;
+            failed |= c->bad[i];
+        }
+        if (!failed) {
+#pragma omp for schedule(static)
+            for (size_t k = 0; k < na; ++k) {
+                phase2(c, k, u, fa);
+            }
+        }
+    }
+    if (failed) {
+        size_t i = 0;
+        while (!c->bad[i]) {
+            ++i;
+        }
+        snprintf(err, errlen,
+                 "particle %zu at (%g, %g, %g) mm inverted (det F <= 0): the motion is not "
+                 "physical here (step too large, or a load beyond the material)",
+                 i, c->X[3 * i], c->X[3 * i + 1], c->X[3 * i + 2]);
+        return -1;
+    }
+    if (na > n) {
+        tf_colloc_ghost_fold(c, fa, f);
+    }
+    if (want) {
+        double e = 0;
+        for (size_t i = 0; i < n; ++i) {
+            e += c->epart[i];
+        }
+        *energy = e;
+    }
+    return 0;
+}
+
+void tf_colloc_deformation(tf_colloc *c, const double *u, double *F)
+{
+    if (c->na > c->n) {
+        tf_colloc_ghost_fill(c, u, c->ue);
+        u = c->ue;
+    }
+#pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
+    for (size_t i = 0; i < c->n; ++i) {
+        double q[3], *Fi = F + 9 * i;
+        gradient(c, i, u, Fi, q);
+        Fi[0] += 1;
+        Fi[4] += 1;
+        Fi[8] += 1;
+    }
+}
+
+int tf_colloc_forces(tf_colloc *c, const double *u, double dt, double *f, double *energy,
+                     char *err, size_t errlen)
+{
+    return tf_colloc_eval(c, u, dt, f, energy, err, errlen);
+}
