@@ -38,15 +38,7 @@
 
 #include <stddef.h>
 
-#define TF_CUT_MAX_POINTS 16
-
-/* One cut as the scene gives it: a polyline of n >= 2 points (x, y) on the
- * top surface z = top, swept down by depth. */
-typedef struct tf_cut {
-    size_t n;
-    double xy[TF_CUT_MAX_POINTS][2]; /* mm */
-    double top, depth;                /* mm */
-} tf_cut;
+#include "problem/problem.h" /* tf_cut: a cut as the problem gives it */
 
 /* One rectangle of a cut. */
 typedef struct tf_cut_panel {

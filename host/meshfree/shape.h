@@ -16,6 +16,13 @@
  *   cell:  centred at the centre of the background cell holding the point;
  *          every point of a cell shares one node set and one factorised
  *          local system, which makes assembly several times faster.
+ *
+ * Cuts (tf_shape_set_cuts, cut.h): the shape functions at a point whose
+ * support meets a cut are recomputed — EFG with the weights of the
+ * enriched nodes multiplied by the enrichment of seed 001 §4, RPIM on the
+ * support nodes visible from the point (one local system per point
+ * there).  Everywhere else they are the uncut ones, bit for bit.  The
+ * support list (w->idx) stays the uncut one; a node cut off gets phi = 0.
  */
 #ifndef TF_SHAPE_H
 #define TF_SHAPE_H
@@ -23,6 +30,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "meshfree/cut.h"
 #include "meshfree/mls.h"
 #include "meshfree/neighbours.h"
 #include "meshfree/quadrature.h"
@@ -40,6 +48,9 @@ typedef struct tf_shape {
     double rcond_warn;
     double support;      /* alpha_s */
     double *mls_radius;  /* EFG: 3 n radii of influence, mm; NULL for RPIM */
+    tf_cut_set cuts;     /* no panel: uncut */
+    unsigned char *cut_node; /* EFG: 1 for a node whose domain meets a cut */
+    int cut_all;         /* treat every support as cut (tests, bench) */
 } tf_shape;
 
 /* Conditioning and size of the local systems met by one worker. */
@@ -49,6 +60,7 @@ typedef struct tf_shape_stats {
     double min_rcond;
     double worst_at[3]; /* where min_rcond occurred */
     size_t min_nodes, max_nodes;
+    size_t points, cut_points; /* shape functions evaluated, of which recomputed for a cut */
 } tf_shape_stats;
 
 typedef struct tf_shape_work {
@@ -60,6 +72,10 @@ typedef struct tf_shape_work {
     double *phi;     /* phi[p n + i] at point p */
     double *dphi;    /* dphi[(3 p + a) n + i] */
     size_t cell;     /* cell whose system is factorised (cell mode), or SIZE_MAX */
+    int cut;         /* the prepared support meets a cut */
+    uint32_t *sub;   /* RPIM cut: the visible nodes (cap) */
+    uint32_t *pos;   /* and their places in idx (cap) */
+    double *tmp;     /* 4 cap: their phi, dphi at one point */
     tf_shape_stats st;
     char err[256];
 } tf_shape_work;
@@ -75,6 +91,13 @@ void tf_shape_free(tf_shape *sh);
  * radii of influence alpha_s x their local spacing (tf_mls_radii).
  * Returns 0, or -1 with a message in err. */
 int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen);
+
+/* Cuts n cuts into sh (after tf_shape_use_efg for EFG).  Returns 0, or -1
+ * with a message (a bad cut, out of memory). */
+int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen);
+
+/* How many nodes are enriched (EFG), for reports. */
+size_t tf_shape_cut_nodes(const tf_shape *sh);
 
 void tf_shape_work_init(tf_shape_work *w);
 void tf_shape_work_free(tf_shape_work *w);

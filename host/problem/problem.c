@@ -16,6 +16,7 @@ void tf_problem_release(tf_problem *p)
     free(p->loads);
     free(p->contacts);
     free(p->outputs.nodes);
+    free(p->cuts);
     memset(p, 0, sizeof *p);
 }
 

@@ -120,6 +120,16 @@ typedef struct tf_outputs {
     size_t n_nodes;
 } tf_outputs;
 
+#define TF_CUT_MAX_POINTS 16
+
+/* An incision (meshfree/cut.h): a polyline of n >= 2 points (x, y) on the
+ * top surface z = top, swept down by depth. */
+typedef struct tf_cut {
+    size_t n;
+    double xy[TF_CUT_MAX_POINTS][2]; /* mm */
+    double top, depth;                /* mm */
+} tf_cut;
+
 typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
 typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
 typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
@@ -173,6 +183,8 @@ typedef struct tf_problem {
     size_t n_contacts;
     tf_envelope envelope;
     tf_outputs outputs;
+    tf_cut *cuts;       /* incisions; a solver without TF_SOLVER_CUTS refuses them */
+    size_t n_cuts;
     tf_solver_opts solver;
     tf_analytic analytic;
 } tf_problem;

@@ -39,6 +39,12 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
     s->problem = p;
     s->opts = *o;
     s->ctx = ctx;
+    if (p->n_cuts > 0 && !(type->caps(s) & TF_SOLVER_CUTS)) {
+        type->destroy(s);
+        tf_fail(ctx, "%s: solver %s does not support cuts (remove cuts: or choose a solver "
+                "with the CUTS capability)", p->source, type->name);
+        return NULL;
+    }
     if (s->info.t_setup == 0) {
         s->info.t_setup = omp_get_wtime() - t0;
     }

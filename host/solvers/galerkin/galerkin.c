@@ -141,6 +141,9 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     g->shape_ok = 1;
+    if (tf_shape_set_cuts(&g->sh, p->cuts, p->n_cuts, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     announce(g, p, ctx);
     tf_assembly_info ai;
     tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
@@ -211,7 +214,8 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
 
 static unsigned caps(const tf_solver *s)
 {
-    return TF_SOLVER_AFFINE | (tf_problem_unloaded(s->problem) ? TF_SOLVER_LINEAR : 0u);
+    return TF_SOLVER_AFFINE | TF_SOLVER_CUTS |
+           (tf_problem_unloaded(s->problem) ? TF_SOLVER_LINEAR : 0u);
 }
 
 /* Full load vector of one case: the problem's loads + the contact force. */
@@ -353,6 +357,12 @@ static void report(const tf_solver *s)
     tf_info(s->ctx,
             "solver: %zu local systems of %zu to %zu nodes, smallest reciprocal condition %.2g",
             in->st.systems, in->st.min_nodes, in->st.max_nodes, in->st.min_rcond);
+    if (s->problem->n_cuts > 0) {
+        tf_info(s->ctx,
+                "solver: %zu cut(s): shape functions recomputed at %zu of %zu points whose "
+                "support meets a cut",
+                s->problem->n_cuts, in->st.cut_points, in->st.points);
+    }
     if (in->st.ill > 0) {
         tf_warn(s->ctx,
                 "%s: %zu of %zu local RPIM systems are ill-conditioned (reciprocal condition "
