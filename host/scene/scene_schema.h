@@ -108,6 +108,16 @@ typedef struct sd_reference {
     double *gradient; /* 9 */
 } sd_reference;
 
+typedef struct sd_xy {
+    double v[2];
+} sd_xy;
+
+typedef struct sd_cut {
+    sd_xy *path;       /* 2 to TF_CUT_MAX_POINTS points (x, y) on the top surface */
+    unsigned path_count;
+    double depth;
+} sd_cut;
+
 typedef struct sd_fit {
     char *family;      /* a registered forward family's name (fitting/families/family.h) */
     char *contact;     /* contact site name */
@@ -127,6 +137,8 @@ typedef struct sd_scene {
     unsigned contact_count;
     sd_envelope *envelope;
     sd_outputs outputs;
+    sd_cut *cuts;
+    unsigned cuts_count;
     sd_solver *solver;
     sd_reference *reference;
     sd_fit *fit;
