@@ -130,12 +130,15 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         return TF_EXIT_FAIL;
     }
     tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
-    if (a->vtk) {
-        tf_report_vtu_displacements(vtu.fp, &s->cloud, u);
-    }
     int rc = 0;
-    if (a->out) {
+    if (a->vtk && tf_report_vtu_displacements(vtu.fp, &s->cloud, u, s->cuts, s->n_cuts) != 0) {
+        snprintf(err, sizeof err, "out of memory for the VTK cells");
+        rc = -1;
+    }
+    if (a->out && rc == 0) {
         rc = tf_afile_commit(&csv, err, sizeof err);
+    } else if (a->out) {
+        tf_afile_abort(&csv);
     }
     if (a->vtk) {
         if (rc == 0) {
