@@ -25,6 +25,7 @@
 #include <cmocka.h>
 
 #include "meshfree/shape.h"
+#include "reproduction.h"
 #include "scene/scene.h"
 
 #define PATCH "tests/solver/patch.yaml"
@@ -77,30 +78,7 @@ static double reproduction_error(const tf_shape *sh, const tf_shape_work *w, siz
                                  const double x[3])
 {
     size_t n = w->n;
-    const double *phi = w->phi + p * n, *dphi = w->dphi + 3 * p * n;
-    double s = -1, sx[3] = {-x[0], -x[1], -x[2]}, ds[3] = {0, 0, 0}, dsx[9], err;
-    for (int k = 0; k < 9; ++k) {
-        dsx[k] = -(k % 4 == 0);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        const double *xi = sh->cloud->xyz + 3 * (size_t)w->idx[i];
-        s += phi[i];
-        for (int a = 0; a < 3; ++a) {
-            sx[a] += phi[i] * xi[a];
-            ds[a] += dphi[a * n + i];
-            for (int b = 0; b < 3; ++b) {
-                dsx[3 * a + b] += dphi[a * n + i] * xi[b];
-            }
-        }
-    }
-    err = fabs(s);
-    for (int a = 0; a < 3; ++a) {
-        err = fmax(err, fmax(fabs(sx[a]) / 10, fabs(ds[a]) * 10));
-    }
-    for (int k = 0; k < 9; ++k) {
-        err = fmax(err, fabs(dsx[k]));
-    }
-    return err;
+    return tf_test_reproduction_error(sh->cloud->xyz, w->idx, n, w->phi + p * n, w->dphi + 3 * p * n, x, 10);
 }
 
 static int in_span(const double x[3])
