@@ -16,6 +16,7 @@
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_block48_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.04e-08 N (float32 path: 6.65e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 1.12e-08 N
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.479 N/mm; largest stiffness 1.28 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_IMPLEMENTATION before including it: that file holds
@@ -93,6 +94,8 @@ extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_RMS_N 1.12419e-08
 #define TFIT_BLOCK48_CONTACT_HELDOUT_REL_MAX 7.52712e-08
+#define TFIT_BLOCK48_CONTACT_STIFFNESS_MIN_N_PER_MM 0.478739 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_BLOCK48_CONTACT_STIFFNESS_MAX_N_PER_MM 1.28116 /* largest ||df/ddelta||_2 */
 #define TFIT_BLOCK48_CONTACT_CRC32 0x98757703u
 #define tfit_block48_contact tfit_block48_contact_98757703 /* this header's version of the model */
 extern const tfit_model tfit_block48_contact;

@@ -80,3 +80,12 @@ $(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+# make bench: the time to regenerate each shipped header, split into the
+# solver's setup, the load cases' solves, the fits and the header.
+REGEN_RUNS ?= 3
+.PHONY: bench-regen
+BENCHES += bench-regen
+bench-regen: $(B)/bin/tissuefit
+	@echo "== time to regenerate each shipped header: setup, solves, fits, header =="
+	@tests/bench/bench_regen.sh $(B)/bin/tissuefit $(REGEN_RUNS) $(SHIPPED_SCENES) $(ORGAN_SCENES)

@@ -8,9 +8,11 @@
 # check).  A new folder goes into this list; docs/architecture.md says what
 # each holds.
 HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify model cost \
-               fitting emit tradeoff report scene cli
+               fitting dist emit tradeoff report scene cli
 
-HOST_SRC := $(filter-out host/cli/main.c,$(shell find host -name '*.c' | LC_ALL=C sort))
+# dist/ and cli/main_mpi.c need MPI: only the MPI build (host/dist/dist.mk) compiles them.
+HOST_SRC := $(filter-out host/cli/main.c host/cli/main_mpi.c host/dist/%,\
+                         $(shell find host -name '*.c' | LC_ALL=C sort))
 HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/tfit_q31.h host/host.mk
 # -fno-tree-slp-vectorize: GCC 12.2's SLP vectorizer at -O2 drops the
 # rounding in `f[i][k] = (double)(float)f[i][k]` for k = 0, 1 of rows of
@@ -40,3 +42,5 @@ $(B)/bin/tissuefit: $(B)/native/host/cli/main.o $(B)/native/libtissuefit-host.a 
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(CC) $^ $(HOST_LIBS) -o $@
+
+include host/dist/dist.mk

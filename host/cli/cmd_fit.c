@@ -14,6 +14,8 @@
 
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
+#include "cli/cmd_fit.h"
+#include "base/clock.h"
 #include "emit/emit_header.h"
 #include "fitting/pipeline.h"
 #include "report/fit_report.h"
@@ -66,6 +68,7 @@ typedef struct fit_args {
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
     tf_sets sets;
+    double seconds_setup; /* the solver's assembly and factorisation */
 } fit_args;
 
 /* A positive finite number, or -1 with a message. */
@@ -289,59 +292,121 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     return rc;
 }
 
-static int run(tf_ctx *ctx, int argc, char **argv)
+/* The checksum every rank of an MPI run must agree on: the scene file's
+ * bytes and the overrides. */
+static uint32_t fingerprint(const fit_args *a)
 {
-    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
-    char err[1024];
-    int rc = TF_EXIT_USAGE;
-    tf_scene *s = NULL;
-    tf_solver *solver = NULL;
-    tf_fit_outcome o;
-    int have_outcome = 0;
-    tf_fit_plan plan;
-    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
-    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL ||
-        make_plan(ctx, &a, s, &plan) != 0) {
-        goto done;
+    uint32_t crc = 0;
+    if (file_crc32(a->scene, &crc) != 0) {
+        return 0;
     }
-    const tf_problem *p = &s->problem;
-    if (a.report && !tf_plot_available()) {
+    uLong c = crc;
+    for (size_t i = 0; i < a->sets.n; ++i) {
+        c = crc32(c, (const Bytef *)a->sets.item[i], (uInt)strlen(a->sets.item[i]) + 1);
+    }
+    return (uint32_t)c;
+}
+
+/* The command line, the scene, the plan and the solver: 0 when all are
+ * ready, else the exit status after the message. */
+static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s,
+                   tf_fit_plan *plan, tf_solver **solver)
+{
+    if (parse(ctx, argc, argv, a) != 0 || (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL ||
+        make_plan(ctx, a, *s, plan) != 0) {
+        return TF_EXIT_USAGE;
+    }
+    if (a->report && !tf_plot_available()) {
         tf_error(ctx,
                  "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
-        goto done;
+        return TF_EXIT_USAGE;
     }
-    rc = TF_EXIT_FAIL;
-    solver = tf_solver_create(p, NULL, ctx);
-    if (solver == NULL) {
+    const double t0 = tf_seconds();
+    *solver = tf_solver_create(&(*s)->problem, NULL, ctx);
+    a->seconds_setup = tf_seconds() - t0;
+    if (*solver == NULL) {
         tf_error(ctx, "fit: %s", ctx->err);
-        goto done;
+        return TF_EXIT_FAIL;
     }
-    int fitted = tf_fit_run(p, solver, &plan, &o);
+    return TF_EXIT_OK;
+}
+
+/* Where the time to regenerate a header goes (make bench-regen reads this
+ * line): the solver's setup (assembly, factorisation), the load cases'
+ * solves, the families' fits (orders, held-out errors), and the rest
+ * (selection sweep, golden vectors, writing). */
+static void time_split(const tf_ctx *ctx, const fit_args *a, const tf_fit_outcome *o,
+                       double total)
+{
+    double fits = 0;
+    for (size_t i = 0; i < o->n_families; ++i) {
+        fits += o->fam[i].seconds;
+    }
+    tf_info(ctx, "fit: time: setup %.3f s, solves %.3f s, fits %.3f s, header %.3f s", a->seconds_setup,
+            o->seconds_cases, fits, total - o->seconds_cases - fits);
+}
+
+/* The fit, the header and the report. */
+static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *solver,
+               const tf_fit_plan *plan)
+{
+    char err[1024];
+    tf_fit_outcome o;
+    const double t0 = tf_seconds();
+    int fitted = tf_fit_run(p, solver, plan, &o);
     if (fitted != 0) {
-        tf_error(ctx, "fit: %s: %s", a.scene, ctx->err);
-        rc = fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
-        goto done;
+        tf_error(ctx, "fit: %s: %s", a->scene, ctx->err);
+        return fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
     }
-    have_outcome = 1;
-    if (isnan(a.budget_us) && isnan(a.max_error_mm)) {
-        rc = emit(ctx, &a, p, &plan, &o, tf_fit_emitted(&o, &plan, TF_FAMILY_FORWARD),
-                  tf_fit_emitted(&o, &plan, TF_FAMILY_INVERSE), NULL);
+    int rc;
+    if (isnan(a->budget_us) && isnan(a->max_error_mm)) {
+        rc = emit(ctx, a, p, plan, &o, tf_fit_emitted(&o, plan, TF_FAMILY_FORWARD),
+                  tf_fit_emitted(&o, plan, TF_FAMILY_INVERSE), NULL);
     } else {
-        rc = emit_selected(ctx, &a, p, solver, &plan, &o);
+        rc = emit_selected(ctx, a, p, solver, plan, &o);
     }
-    if (rc == TF_EXIT_OK && a.report &&
-        tf_report_fit(a.report, a.out, p, solver, &plan, &o, err, sizeof err) != 0) {
+    if (rc == TF_EXIT_OK) {
+        time_split(ctx, a, &o, tf_seconds() - t0);
+    }
+    if (rc == TF_EXIT_OK && a->report &&
+        tf_report_fit(a->report, a->out, p, solver, plan, &o, err, sizeof err) != 0) {
         tf_error(ctx, "fit: report: %s", err);
         rc = TF_EXIT_FAIL;
     }
-done:
-    if (have_outcome) {
-        tf_fit_outcome_free(&o);
+    tf_fit_outcome_free(&o);
+    return rc;
+}
+
+int tf_cmd_fit_ranks(tf_ctx *ctx, int argc, char **argv, const tf_fit_ranks *ranks)
+{
+    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
+    char err[1024];
+    tf_scene *s = NULL;
+    tf_solver *solver = NULL;
+    tf_fit_plan plan;
+    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
+    int rc = prepare(ctx, argc, argv, &a, &s, &plan, &solver);
+    if (ranks != NULL) {
+        rc = ranks->agree(ranks->user, ctx, rc, rc == TF_EXIT_OK ? fingerprint(&a) : 0);
+        if (rc == TF_EXIT_OK && ranks->worker) {
+            rc = ranks->serve(ranks->user, solver);
+        } else if (rc == TF_EXIT_OK) {
+            plan.runner = ranks->runner;
+            rc = fit(ctx, &a, &s->problem, solver, &plan);
+            ranks->stop(ranks->user);
+        }
+    } else if (rc == TF_EXIT_OK) {
+        rc = fit(ctx, &a, &s->problem, solver, &plan);
     }
     tf_solver_destroy(solver);
     tf_scene_free(s);
     tf_sets_free(&a.sets);
     return rc;
+}
+
+static int run(tf_ctx *ctx, int argc, char **argv)
+{
+    return tf_cmd_fit_ranks(ctx, argc, argv, NULL);
 }
 
 const tf_command tf_cmd_fit = {

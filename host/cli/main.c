@@ -41,19 +41,6 @@ static void usage(FILE *out)
             "Exit status: 0 success, 1 failure while running, 2 bad usage or input.\n");
 }
 
-int tf_wants_help(int argc, char **argv)
-{
-    for (int i = 1; i < argc; ++i) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            return 1;
-        }
-        if (strcmp(argv[i], "--") == 0) {
-            break;
-        }
-    }
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
     tf_blas_pin(argv);

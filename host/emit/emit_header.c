@@ -150,6 +150,11 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->heldout_cases, m->heldout_max, output_unit(m, 0), m->heldout_rms,
                     output_unit(m, 0));
         }
+        if (m->passivity_samples > 0) {
+            fprintf(f, " *       passive over %u samples of its envelope: symmetric stiffness >= %.3g "
+                       "N/mm; largest stiffness %.3g N/mm (the device must render it)\n",
+                    m->passivity_samples, m->stiffness_min, m->stiffness_max);
+        }
     }
     char guard[TF_NAME_MAX + 8];
     upper(base, guard, sizeof guard);
@@ -199,6 +204,12 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         if (!isnan(m->heldout_rel_max)) {
             fprintf(f, "#define TFIT_%s_HELDOUT_REL_MAX %.6g\n", p, m->heldout_rel_max);
         }
+    }
+    if (m->passivity_samples > 0) {
+        fprintf(f, "#define TFIT_%s_STIFFNESS_MIN_N_PER_MM %.6g /* sym(df/ddelta), smallest eigenvalue */\n",
+                p, m->stiffness_min);
+        fprintf(f, "#define TFIT_%s_STIFFNESS_MAX_N_PER_MM %.6g /* largest ||df/ddelta||_2 */\n", p,
+                m->stiffness_max);
     }
     fprintf(f, "#define TFIT_%s_CRC32 0x%08xu\n", p, crc);
     /* The object's link name carries the CRC: a file compiled against another

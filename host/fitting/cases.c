@@ -8,7 +8,12 @@
 #include <string.h>
 
 #include "base/log.h"
+#include "fitting/case_graph.h"
+#include "fitting/case_runner.h"
+#include "fitting/families/family.h"
 #include "fitting/force_samples.h"
+
+#define TABLE_CASES (3 * TF_FAMILY_LEVELS)
 
 static void *keep(tf_cases *c, void *p)
 {
@@ -173,15 +178,16 @@ static int design(tf_cases *c, size_t n_train, size_t n_heldout, uint64_t seed)
     return rc;
 }
 
-/* Training and single-axis cases: superposed or solved. */
+/* Training and single-axis cases of an affine solver: superposed, or
+ * solved in batches (--direct). */
 static int training(tf_cases *c, size_t n_heldout, int direct)
 {
     tf_ctx *ctx = c->solver->ctx;
     const char *name = tf_solver_name(c->solver);
-    if (c->affine && unit_responses(c) != 0) {
+    if (unit_responses(c) != 0) {
         return -1;
     }
-    c->superposed = c->affine && !direct;
+    c->superposed = !direct;
     if (c->superposed) {
         tf_info(ctx,
                 "fit: the %s solver's response is affine in the contact force, so %s3 unit "
@@ -194,8 +200,7 @@ static int training(tf_cases *c, size_t n_heldout, int direct)
         }
         return 0;
     }
-    tf_info(ctx, "fit: solving all %zu training cases directly%s", c->train.n_cases,
-            c->affine ? "" : " (the solver's response is not affine in the force)");
+    tf_info(ctx, "fit: solving all %zu training cases directly", c->train.n_cases);
     int rc = solve_data(c, &c->train);
     for (int a = 0; rc == 0 && a < 3; ++a) {
         rc = solve_data(c, &c->axis[a]);
@@ -203,22 +208,136 @@ static int training(tf_cases *c, size_t n_heldout, int direct)
     return rc;
 }
 
-int tf_cases_build(const tf_problem *p, tf_solver *solver, int contact, size_t n_train,
-                   size_t n_heldout, uint64_t seed, int direct, tf_cases *c)
+/* The DOFs a case keeps: the outputs' rows, then the contact site's. */
+static void kept_dofs(const tf_cases *c, size_t *keep)
+{
+    const tf_outputs *o = &c->problem->outputs;
+    for (size_t j = 0; j < o->n_nodes; ++j) {
+        for (size_t k = 0; k < 3; ++k) {
+            keep[3 * j + k] = 3 * (size_t)o->nodes[j] + k;
+        }
+    }
+    for (size_t k = 0; k < 3; ++k) {
+        keep[3 * o->n_nodes + k] = 3 * (size_t)c->contact_node + k;
+    }
+}
+
+/* The list's kept values back into the data sets and the table. */
+static void unpack(tf_cases *c, tf_fitdata *const *sets, const double *kept)
+{
+    const size_t rows = 3 * c->problem->outputs.n_nodes, stride = rows + 3;
+    for (int s = 0; s < 5; ++s) {
+        tf_fitdata *d = sets[s];
+        for (size_t i = 0; i < d->n_cases; ++i, kept += stride) {
+            memcpy((double *)d->u + i * rows, kept, rows * sizeof *kept);
+            memcpy((double *)d->contact[i], kept + rows, 3 * sizeof *kept);
+        }
+    }
+    for (size_t i = 0; i < TABLE_CASES; ++i, kept += stride) {
+        memcpy(c->table + i * rows, kept, rows * sizeof *kept);
+    }
+}
+
+/* A solver that is not affine: every case, one by one, as one list with
+ * the anchored continuation graph, by the plan's runner. */
+static int solve_all(tf_cases *c, const tf_case_runner *runner)
+{
+    tf_fitdata *const sets[5] = {&c->train, &c->axis[0], &c->axis[1], &c->axis[2], &c->heldout};
+    static const char *const names[6] = {"training", "x-axis", "y-axis", "z-axis", "held-out",
+                                         "seed-table"};
+    const size_t rows = 3 * c->problem->outputs.n_nodes;
+    tf_case_segment seg[6];
+    size_t n = 0;
+    for (int s = 0; s < 6; ++s) {
+        seg[s] = (tf_case_segment){names[s], n};
+        n += s < 5 ? sets[s]->n_cases : TABLE_CASES;
+    }
+    double (*forces)[3] = malloc(n * sizeof *forces);
+    long *from = malloc(n * sizeof *from);
+    size_t *dofs = malloc((rows + 3) * sizeof *dofs);
+    double *kept = malloc(n * (rows + 3) * sizeof *kept);
+    c->table = keep(c, malloc(TABLE_CASES * rows * sizeof *c->table));
+    int rc = -1;
+    if (forces && from && dofs && kept && c->table) {
+        size_t i = 0;
+        for (int s = 0; s < 5; ++s) {
+            memcpy(forces + i, sets[s]->force, sets[s]->n_cases * sizeof *forces);
+            i += sets[s]->n_cases;
+        }
+        for (int a = 0; a < 3; ++a) {
+            for (int level = 1; level <= TF_FAMILY_LEVELS; ++level) {
+                tf_cases_level_force(&c->train, a, level, forces[i++]);
+            }
+        }
+        size_t anchors = tf_case_graph_anchors(n);
+        tf_case_graph_anchored((const double(*)[3])forces, n, anchors, from);
+        kept_dofs(c, dofs);
+        const tf_case_list list = {.contact = c->contact, .n = n,
+                                   .force = (const double(*)[3])forces, .from = from,
+                                   .n_keep = rows + 3, .keep = dofs, .n_seg = 6, .seg = seg};
+        tf_info(c->solver->ctx,
+                "fit: the %s solver's response is not affine in the contact force: solving all "
+                "%zu load cases one by one (%s), each from rest or from the nearest of %zu "
+                "anchor cases",
+                tf_solver_name(c->solver), n, runner != NULL ? runner->name : "here", anchors);
+        rc = tf_case_run(runner, c->solver, &list, kept);
+        if (rc == 0) {
+            unpack(c, sets, kept);
+            c->solves += n;
+        }
+    } else {
+        tf_fail(c->solver->ctx, "out of memory for %zu load cases", n);
+    }
+    free(forces);
+    free(from);
+    free(dofs);
+    free(kept);
+    return rc;
+}
+
+void tf_cases_level_force(const tf_fitdata *d, int a, int level, double f[3])
+{
+    double s = d->radius * level / TF_FAMILY_LEVELS;
+    for (int k = 0; k < 3; ++k) {
+        f[k] = (double)(float)d->centre[k];
+    }
+    f[a] = (double)(float)(d->centre[a] + s);
+}
+
+void tf_cases_level_response(const tf_cases *c, int a, int level, double *u)
+{
+    if (c->affine) {
+        double f[3];
+        tf_cases_level_force(&c->train, a, level, f);
+        superposed(c, f, u, NULL);
+        return;
+    }
+    const size_t rows = 3 * (size_t)c->train.n_out;
+    memcpy(u, c->table + ((size_t)a * TF_FAMILY_LEVELS + (size_t)(level - 1)) * rows,
+           rows * sizeof *u);
+}
+
+int tf_cases_build(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+                   tf_cases *c)
 {
     memset(c, 0, sizeof *c);
     c->solver = solver;
     c->problem = p;
-    c->contact = contact;
-    c->contact_node = p->contacts[contact].node;
+    c->contact = plan->contact;
+    c->contact_node = p->contacts[plan->contact].node;
     c->affine = (tf_solver_caps_of(solver) & TF_SOLVER_AFFINE) != 0;
-    if (design(c, n_train, n_heldout, seed) != 0) {
+    if (design(c, plan->n_train, plan->n_heldout, plan->seed) != 0) {
         tf_cases_free(c);
         return tf_fail(solver->ctx, "out of memory for the load cases");
     }
-    int rc = training(c, n_heldout, direct);
-    if (rc == 0) {
-        rc = solve_data(c, &c->heldout);
+    int rc;
+    if (c->affine) {
+        rc = training(c, plan->n_heldout, plan->direct);
+        if (rc == 0) {
+            rc = solve_data(c, &c->heldout);
+        }
+    } else {
+        rc = solve_all(c, plan->runner);
     }
     if (rc != 0) {
         tf_cases_free(c);

@@ -9,11 +9,15 @@
  * loads adding a constant), the training displacements come from
  * superposition of the unit responses, unless direct solves are asked for:
  * one solve with no contact force and three with unit forces span every
- * training case.  Any other solver solves every case.  Held-out cases are
- * always solved directly, so the held-out error also checks the
- * superposition.  Forces are rounded to float first: the firmware receives
- * float forces, and the comparison is then at exactly the input the target
- * evaluates.  Messages go to the solver's context.
+ * training case.  Held-out cases are always solved directly, so the
+ * held-out error also checks the superposition.  Any other solver solves
+ * every case, one by one, as one case list (case_runner.h: training, the
+ * three single-axis sets, held-out, the seed-table levels) with the
+ * anchored continuation graph (case_graph.h), by the plan's runner: here,
+ * or spread over MPI ranks (dist/), with the same bits.  Forces are rounded
+ * to float first: the firmware receives float forces, and the comparison is
+ * then at exactly the input the target evaluates.  Messages go to the
+ * solver's context.
  */
 #ifndef TF_FIT_CASES_H
 #define TF_FIT_CASES_H
@@ -22,6 +26,7 @@
 #include <stdint.h>
 
 #include "fitting/fitdata.h"
+#include "fitting/plan.h"
 #include "problem/problem.h"
 #include "solvers/solver.h"
 
@@ -37,19 +42,24 @@ typedef struct tf_cases {
     /* Affine solvers: unit responses at the outputs (3 n_out) and the
      * contact site (3): u(f) = base + sum_k f_k unit[k]. */
     double *base, *unit[3], base_contact[3], unit_contact[3][3];
+    /* Other solvers: the outputs at the seed-table forces
+     * (tf_cases_level_force), 3 n_out per force, axis after axis. */
+    double *table;
     /* storage behind the tf_fitdata views */
     uint32_t *node_ids;
     double (*rest)[3];
-    void *blocks[16];
+    void *blocks[24];
     int n_blocks;
 } tf_cases;
 
-/* Designs and solves the load cases of a fit (n_train >= 6) of problem p
- * (its outputs, contact site and envelope) with a solver of it.  direct != 0
- * solves every training case even when the solver is affine.  Returns 0, or
- * -1 with a message in the solver's context. */
-int tf_cases_build(const tf_problem *p, tf_solver *solver, int contact, size_t n_train,
-                   size_t n_heldout, uint64_t seed, int direct, tf_cases *c);
+/* Designs and solves the load cases of a fit of problem p (its outputs and
+ * envelope) with a solver of it, as the plan says (contact site, n_train >=
+ * 6 training and n_heldout held-out cases, seed, direct: solve every
+ * training case even when the solver is affine; runner: where the cases of
+ * a solver that is not affine are solved).  Returns 0, or -1 with a message
+ * in the solver's context. */
+int tf_cases_build(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+                   tf_cases *c);
 void tf_cases_free(tf_cases *c);
 
 /* The response to force f: u (3 n_out) and the contact-site displacement
@@ -57,5 +67,14 @@ void tf_cases_free(tf_cases *c);
  * is affine, else solved.  Returns 0, or -1 with a message in the solver's
  * context. */
 int tf_cases_response(tf_cases *c, const double f[3], double *u, double contact[3]);
+
+/* The seed's Table 3 forces (TF_FAMILY_LEVELS levels, families/family.h):
+ * the envelope centre moved by level / LEVELS of the radius along axis a,
+ * rounded to float (level 1 .. LEVELS). */
+void tf_cases_level_force(const tf_fitdata *d, int a, int level, double f[3]);
+
+/* The outputs' response (3 n_out) at tf_cases_level_force(a, level):
+ * superposed, or solved with the other cases. */
+void tf_cases_level_response(const tf_cases *c, int a, int level, double *u);
 
 #endif /* TF_FIT_CASES_H */

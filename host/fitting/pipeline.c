@@ -7,19 +7,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
+#include "base/clock.h"
 #include "base/log.h"
+#include "model/passivity.h"
 #include "model/ref_eval.h"
-
-static double seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void heldout(tf_family_result *f, const tf_fitdata *d)
 {
@@ -48,19 +42,10 @@ static int seed_table(tf_family_result *f, tf_cases *c, tf_ctx *ctx)
     for (int a = 0; a < 3; ++a) {
         double sum2[3] = {0, 0, 0};
         for (int level = 1; level <= TF_FAMILY_LEVELS; ++level) {
-            double s = d->radius * level / TF_FAMILY_LEVELS, f3[3] = {0, 0, 0};
-            f3[a] = (double)(float)(d->centre[a] + s);
-            const float in[3] = {(float)d->centre[0], (float)d->centre[1], (float)d->centre[2]};
-            float fin[3] = {in[0], in[1], in[2]};
-            fin[a] = (float)f3[a];
-            for (int k = 0; k < 3; ++k) {
-                f3[k] = (double)fin[k];
-            }
-            if (tf_cases_response(c, f3, truth, NULL) != 0) {
-                free(out);
-                free(truth);
-                return -1;
-            }
+            double s = d->radius * level / TF_FAMILY_LEVELS, f3[3];
+            tf_cases_level_force(d, a, level, f3);
+            const float fin[3] = {(float)f3[0], (float)f3[1], (float)f3[2]};
+            tf_cases_level_response(c, a, level, truth);
             tf_ref_eval(f->model, fin, out, NULL);
             for (size_t j = 0; j < d->n_out; ++j) {
                 for (int comp = 0; comp < 3; ++comp) {
@@ -96,7 +81,7 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
 {
     const tf_family *f = r->family;
     const int inverse = f->kind == TF_FAMILY_INVERSE;
-    double t0 = seconds();
+    double t0 = tf_seconds();
     untried(r);
     r->applicable = f->applicable(&o->cases, plan, r->why, sizeof r->why) == 0;
     if (!r->applicable) {
@@ -107,10 +92,15 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
         return -1;
     }
     heldout(r, &o->cases.heldout);
+    /* a contact law that creates energy somewhere in its envelope would make
+     * the haptic loop unstable: refused, never emitted (passivity.h) */
+    if (inverse && tf_passivity_require(r->model, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     if (!inverse && seed_table(r, &o->cases, ctx) != 0) {
         return -1;
     }
-    r->seconds = seconds() - t0;
+    r->seconds = tf_seconds() - t0;
     tf_info(ctx, "fit: %s: held-out max %.3g %s, rms %.3g (%.2f s)", f->name, r->heldout_max,
             inverse ? "N" : "mm", r->heldout_rms, r->seconds);
     return 0;
@@ -142,12 +132,11 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
 {
     tf_ctx *ctx = solver->ctx;
     memset(o, 0, sizeof *o);
-    double t0 = seconds();
-    if (tf_cases_build(p, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       plan->direct, &o->cases) != 0) {
+    double t0 = tf_seconds();
+    if (tf_cases_build(p, solver, plan, &o->cases) != 0) {
         return -1;
     }
-    o->seconds_cases = seconds() - t0;
+    o->seconds_cases = tf_seconds() - t0;
     warn_large(ctx, p, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
     if (plan->family->applicable(&o->cases, plan, ctx->err, sizeof ctx->err) != 0) {

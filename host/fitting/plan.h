@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 typedef struct tf_family tf_family; /* fitting/families/family.h */
+typedef struct tf_case_runner tf_case_runner; /* fitting/case_runner.h */
 
 typedef struct tf_fit_plan {
     const tf_family *family; /* forward family to emit (the registry's) */
@@ -19,6 +20,9 @@ typedef struct tf_fit_plan {
     uint32_t max_degree;  /* degrees searched (nodal, modal, contact): 0 (1) .. max */
     uint32_t max_rank;    /* ranks searched (modal): 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
+    /* where the cases of a solver that is not affine are solved: NULL here,
+     * or spread over ranks (dist/); the bits are the same */
+    const tf_case_runner *runner;
 } tf_fit_plan;
 
 /* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,

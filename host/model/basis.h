@@ -12,6 +12,9 @@
 /* phi[tf_terms(p)] = every term of total degree <= p at g. */
 void tf_basis(uint32_t p, const double g[3], double *phi);
 
+/* The basis and its gradient: dphi[k][v] = d phi[k] / d g[v]. */
+void tf_basis_grad(uint32_t p, const double g[3], double *phi, double (*dphi)[3]);
+
 /* 1-D Chebyshev polynomials: out[k] = T_k(x), k = 0..n. */
 void tf_chebyshev(uint32_t n, double x, double *out);
 

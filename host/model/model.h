@@ -29,6 +29,10 @@ typedef struct tf_model {
     double heldout_rms;      /* held-out RMS error, output units */
     double heldout_rel_max;  /* held-out max relative error (contact models) */
     uint32_t heldout_cases;  /* number of held-out load cases behind the numbers */
+    /* Contact models (passivity.h): smallest eigenvalue of the symmetric
+     * stiffness and largest ||J||_2 over the envelope, N/mm. */
+    double stiffness_min, stiffness_max;
+    uint32_t passivity_samples; /* 0: not checked */
 } tf_model;
 
 /* Floating-point operation counts of one evaluation (docs/header-format.md §6). */

@@ -59,7 +59,7 @@ static const tf_candidate *pick_contact(const tf_sweep *sw, const tf_mcu *mcu, d
     const tf_candidate *best = NULL;
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i];
-        if (usable(c) && c->family->kind == TF_FAMILY_INVERSE && c->heldout_max <= tol &&
+        if (usable(c) && c->family->kind == TF_FAMILY_INVERSE && c->passive && c->heldout_max <= tol &&
             (best == NULL || tf_candidate_us(c, mcu) < tf_candidate_us(best, mcu))) {
             best = c;
         }
@@ -96,7 +96,7 @@ int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double ma
     sel->forward = NULL;
     extremes(sw, mcu, &fast, &accurate);
     if (sel->contact == NULL || fast == NULL) {
-        snprintf(why, whylen, "no contact inverse within %g N, or no forward model", contact_tol);
+        snprintf(why, whylen, "no passive contact inverse within %g N, or no forward model", contact_tol);
         return -1;
     }
     const double contact_us = tf_candidate_us(sel->contact, mcu);

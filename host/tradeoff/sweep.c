@@ -20,6 +20,7 @@
 #include "base/log.h"
 #include "fitting/cases.h"
 #include "fitting/families/family.h"
+#include "model/passivity.h"
 #include "model/q31.h"
 #include "model/target_view.h"
 
@@ -163,6 +164,12 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     m->heldout_cases = (uint32_t)held->n_cases;
 
     const int contact = is_inverse(m);
+    char why[512];
+    const int passivity = contact ? tf_passivity_require(m, why, sizeof why) : 0;
+    if (passivity < 0) {
+        return -1;
+    }
+    c->passive = passivity == 0; /* a non-passive law stays in the sweep, never selected */
     tfit_model view;
     tf_target_view(m, &view);
     timing_job j = {.f32 = &view, .n_in = held->n_cases, .inverse = contact};
@@ -327,8 +334,9 @@ static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
     if (outputs_of(s, solver, set, plan->contact, &copy, &nodes) != 0) {
         return tf_fail(ctx, "out of memory for the output set");
     }
-    if (tf_cases_build(&copy, solver, plan->contact, plan->n_train, plan->n_heldout, plan->seed,
-                       0, &cases) != 0) {
+    tf_fit_plan superposed = *plan;
+    superposed.direct = 0;
+    if (tf_cases_build(&copy, solver, &superposed, &cases) != 0) {
         free(nodes);
         return -1;
     }

@@ -39,6 +39,7 @@ typedef struct tf_candidate {
     double ns_native;                 /* median per call, real evaluator; NAN for float64 */
     double heldout_max, heldout_rms;  /* mm (forward models) or N (contact) */
     int pareto;                       /* on the error/time front of its set and kind */
+    int passive;                      /* contact laws: passivity.h holds (forward: 1) */
     tf_model *model;                  /* float32 candidates: the model (owned) */
 } tf_candidate;
 

@@ -67,8 +67,7 @@ static int setup(void **state)
     x->plan = x->scene->fit;
     x->solver = tf_solver_create(&x->scene->problem, NULL, &x->ctx);
     if (x->solver == NULL ||
-        tf_cases_build(&x->scene->problem, x->solver, x->plan.contact, x->plan.n_train,
-                       x->plan.n_heldout, x->plan.seed, 0, &x->cases) != 0) {
+        tf_cases_build(&x->scene->problem, x->solver, &x->plan, &x->cases) != 0) {
         print_error("%s\n", x->ctx.err);
         return -1;
     }
