@@ -7,8 +7,8 @@
 # DATADIR/runs.csv (kind,level,mouth_cod,seconds).
 set -eu
 deck=$1 tool=$2 out=$3 data=$4
-CCX_LEVELS=${CCX_LEVELS:-4 8 16}
-GRIDS=${GRIDS:-16,8,8 24,12,12 32,16,16}
+CCX_LEVELS=${CCX_LEVELS-4 8 16}
+GRIDS=${GRIDS-16,8,8 24,12,12 32,16,16}
 mkdir -p "$out" "$data"
 runs="$out/runs.csv"
 echo "kind,level,mouth_cod,seconds" > "$runs"

@@ -12,7 +12,7 @@ echo "| solve | level | mouth COD (mm) | vs CalculiX n=$ref: mouth | largest alo
 echo "|---|---|---|---|---|---|"
 grep -v '^kind' "$data/runs.csv" | while IFS=, read -r kind a b c d e; do
     if [ "$kind" = ccx ]; then
-        h=$(echo "scale=4; 10 / $a" | bc)
+        h=$(awk -v n="$a" 'BEGIN { printf "%.4g", 10 / n }')
         printf '| CalculiX C3D20R, crack by duplicated nodes | n = %s (h = %s mm) | %.4f | | | %.1f |\n' "$a" "$h" "$b" "$c"
     else
         lvl="$a,$b,$c" cod=$d t=$e nx=$a
