@@ -15,7 +15,7 @@
 CUT_TOOL := $(T)/cut/cut_tool
 SLIT_DECK := $(B)/calculix/slit_deck
 CUT_CCX_LEVELS := 4 8 16
-CUT_GRIDS := 16,8,8 24,12,12 32,16,16 40,20,20
+CUT_GRIDS := 16,8,8 24,12,12 32,16,16
 CUT_DATA := tests/cut/data
 
 .PHONY: check-cut cut-validation cut-pictures

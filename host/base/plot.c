@@ -8,25 +8,44 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/atomic_file.h"
+
 int tf_plot_available(void)
 {
     FILE *gp = popen("gnuplot -e \"set terminal pngcairo\" 2>/dev/null", "r");
     return gp != NULL && pclose(gp) == 0;
 }
 
+/* A path as a gnuplot single-quoted string: a quote is doubled, so a file
+ * name cannot end the string and run gnuplot commands. */
+static void quoted(FILE *gp, const char *s)
+{
+    fputc('\'', gp);
+    for (; *s != '\0'; ++s) {
+        if (*s == '\'') {
+            fputc('\'', gp);
+        }
+        fputc(*s, gp);
+    }
+    fputc('\'', gp);
+}
+
 int tf_plot_open(tf_plot *p, const char *path, int width, int height, char *err, size_t errlen)
 {
-    snprintf(p->path, sizeof p->path, "%s", path);
-    snprintf(p->tmp, sizeof p->tmp, "%s.tmp.png", path);
+    /* the image replaces the file a link names, never a device (atomic_file.h) */
+    if (tf_afile_target(path, p->path, sizeof p->path, err, errlen) != 0) {
+        return -1;
+    }
+    snprintf(p->tmp, sizeof p->tmp, "%s.tmp.png", p->path);
     p->gp = popen("gnuplot", "w");
     if (p->gp == NULL) {
         snprintf(err, errlen, "%s: cannot run gnuplot", path);
         return -1;
     }
-    fprintf(p->gp,
-            "set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced\n"
-            "set output '%s'\n",
-            width, height, p->tmp);
+    fprintf(p->gp, "set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced\n"
+                   "set output ", width, height);
+    quoted(p->gp, p->tmp);
+    fputc('\n', p->gp);
     return 0;
 }
 

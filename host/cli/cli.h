@@ -34,4 +34,8 @@ extern const tf_command tf_cmd_verify;
 /* True when argv holds --help or -h (checked before any other parsing). */
 int tf_wants_help(int argc, char **argv);
 
+/* Flushes and closes standard output; rc, or TF_EXIT_FAIL (with a message)
+ * when rc was 0 and the output could not be written in full. */
+int tf_finish_stdout(tf_ctx *ctx, int rc);
+
 #endif /* TF_CLI_H */

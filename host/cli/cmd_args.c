@@ -3,9 +3,15 @@
  */
 #include "cli/cmd_args.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "base/atomic_file.h"
 #include "base/log.h"
 
 int tf_parse_vec3(const char *s, double v[3])
@@ -50,6 +56,36 @@ tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
     tf_scene *s = tf_scene_load(path, sets->item, sets->n, err, sizeof err);
     if (s == NULL) {
         tf_error(ctx, "%s", err);
+        return NULL;
+    }
+    for (const char *line = s->warnings; *line != '\0'; line += strcspn(line, "\n") + 1) {
+        tf_warn(ctx, "%.*s", (int)strcspn(line, "\n"), line);
     }
     return s;
+}
+
+int tf_cmd_outputs(tf_ctx *ctx, const char *cmd, const char *const *paths, size_t n)
+{
+    char err[1024];
+    for (size_t k = 0; k < n; ++k) {
+        if (paths[k] != NULL && tf_afile_check(paths[k], err, sizeof err) != 0) {
+            tf_error(ctx, "%s: %s", cmd, err);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int tf_cmd_output_dir(tf_ctx *ctx, const char *cmd, const char *dir)
+{
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        tf_error(ctx, "%s: %s: no such directory", cmd, dir);
+        return -1;
+    }
+    if (access(dir, W_OK | X_OK) != 0) {
+        tf_error(ctx, "%s: %s: cannot write in it: %s", cmd, dir, strerror(errno));
+        return -1;
+    }
+    return 0;
 }

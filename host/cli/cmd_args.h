@@ -22,6 +22,14 @@ typedef struct tf_sets {
 int tf_sets_add(tf_sets *s, const char *assignment);
 void tf_sets_free(tf_sets *s);
 
+/* Checks, before any work, that every output path (NULL entries are
+ * skipped) can be written (base/atomic_file.h: a new or regular file, or a
+ * link to one, in a writable directory).  0, or -1 after "CMD: reason". */
+int tf_cmd_outputs(tf_ctx *ctx, const char *cmd, const char *const *paths, size_t n);
+
+/* The same for a directory that files will be written into. */
+int tf_cmd_output_dir(tf_ctx *ctx, const char *cmd, const char *dir);
+
 /* The scene file with the --set overrides applied, or NULL after an error
  * message (file, line, field) through the context. */
 tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets);

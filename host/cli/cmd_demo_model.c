@@ -173,6 +173,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
 
     char err[512], base[TF_NAME_MAX], name[TF_NAME_MAX + 16];
+    if (tf_emit_check_path(path, strlen("_forward"), err, sizeof err) != 0) {
+        tf_error(ctx, "demo-model: %s", err);
+        return TF_EXIT_USAGE;
+    }
     const char *slash = strrchr(path, '/');
     snprintf(base, sizeof base, "%s", slash ? slash + 1 : path);
     base[strcspn(base, ".")] = '\0';
@@ -196,8 +200,8 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     int rc = tf_emit_header(path, &m, 1, &info, err, sizeof err);
     tf_model_free(m);
     if (rc != 0) {
-        tf_error(ctx, "demo-model: %s", err);
-        return TF_EXIT_USAGE;
+        tf_error(ctx, "demo-model: %s", err); /* the path was checked: a failure while running */
+        return TF_EXIT_FAIL;
     }
     tf_info(ctx, "demo-model: wrote %s and its golden vectors", path);
     return TF_EXIT_OK;

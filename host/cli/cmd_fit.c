@@ -17,6 +17,7 @@
 #include "cli/cmd_fit.h"
 #include "base/clock.h"
 #include "emit/emit_header.h"
+#include "fitting/discretisation.h"
 #include "fitting/pipeline.h"
 #include "report/fit_report.h"
 #include "base/log.h"
@@ -32,7 +33,8 @@ static void help(FILE *out)
     fprintf(out,
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
-            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n\n"
+            "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n"
+            "                     [--reference INDEX.csv]\n\n"
             "Solves the scene's load cases (one factorisation), fits every model family\n"
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
@@ -52,6 +54,9 @@ static void help(FILE *out)
             "                      time plus the contact inverse's fits X microseconds\n"
             "  --max-error-mm E    emit the cheapest forward model within E mm held-out\n"
             "                      (with --budget-us: the cheapest within both)\n"
+            "  --reference F.csv   a finer solution of the same physics (CalculiX, ...):\n"
+            "                      the header states the solve's error against it\n"
+            "                      beside the fit's (docs/fitting.md, format there)\n"
             "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
             "                      These three choose among every candidate of\n"
             "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
@@ -63,8 +68,9 @@ static void help(FILE *out)
 }
 
 typedef struct fit_args {
-    const char *scene, *out, *family, *contact, *report;
+    const char *scene, *out, *family, *contact, *report, *reference;
     int direct;
+    tf_discretisation phys; /* measured when reference != NULL */
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
     tf_sets sets;
@@ -90,7 +96,8 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
         {"contact", required_argument, NULL, 'c'}, {"set", required_argument, NULL, 's'},
         {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
         {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
-        {"mcu", required_argument, NULL, 'm'},     {0}};
+        {"mcu", required_argument, NULL, 'm'},     {"reference", required_argument, NULL, 'p'},
+        {0}};
     char err[256];
     int c;
     optind = 1;
@@ -117,6 +124,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
             break;
         case 'd':
             a->direct = 1;
+            break;
+        case 'p':
+            a->reference = optarg;
             break;
         case 'b':
             if (positive(ctx, "--budget-us", optarg, &a->budget_us) != 0) {
@@ -145,6 +155,18 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
     }
     a->scene = argv[optind];
     return 0;
+}
+
+/* The header, its golden file and the report directory can be written:
+ * found out before the solve, not after it. */
+static int check_outputs(tf_ctx *ctx, const fit_args *a)
+{
+    char err[1024];
+    if (tf_emit_check_path(a->out, strlen("_forward"), err, sizeof err) != 0) {
+        tf_error(ctx, "fit: %s", err);
+        return -1;
+    }
+    return a->report ? tf_cmd_output_dir(ctx, "fit", a->report) : 0;
 }
 
 /* The plan from the scene's fit: section and the options. */
@@ -215,6 +237,24 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
     }
 }
 
+/* The models' error against the physics: the forward model's displacement
+ * error bound; the contact inverse's force error from the relative error of
+ * the contact site's compliance over the largest force of the envelope. */
+static void state_physics(const tf_discretisation *d, const tf_envelope *env, tf_model *fwd,
+                          tf_model *con)
+{
+    const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
+    fwd->discretisation_max = d->max_mm;
+    con->discretisation_max = d->site_rel * biggest;
+    snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
+             "%s, %zu load case%s at %zu points, %s", d->source, d->cases, d->cases == 1 ? "" : "s",
+             d->points, d->enveloped ? "bound over the envelope (linear)" : "largest over the cases");
+    snprintf(con->discretisation_note, sizeof con->discretisation_note,
+             "%s: contact-site displacement off by %.3g %% (reference point %.3g mm from the "
+             "site), times the largest force %.3g N",
+             d->source, 100 * d->site_rel, d->site_gap, biggest);
+}
+
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
@@ -224,13 +264,13 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
         return TF_EXIT_FAIL;
     }
-    if (snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out) >= (int)sizeof base) {
-        tf_error(ctx, "fit: %s: the header name is too long for its model names", a->out);
-        return TF_EXIT_USAGE;
-    }
+    snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out); /* fits: check_outputs */
     base[strcspn(base, ".")] = '\0';
     snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
     snprintf(con->name, sizeof con->name, "%s_contact", base);
+    if (a->reference != NULL) {
+        state_physics(&a->phys, &s->envelope, fwd, con);
+    }
     uint32_t crc = 0;
     if (file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
@@ -241,12 +281,15 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         size_t k = strlen(note);
         snprintf(note + k, sizeof note - k, "\n%s", choice);
     }
+    const tf_contact *site = &s->contacts[p->contact];
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
-                               .notes = note, .golden_seed = p->seed};
+                               .notes = note, .golden_seed = p->seed,
+                               .points = s->outputs.points, .n_points = s->outputs.n_nodes,
+                               .contact_point = site->by_node ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
     if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
-        tf_error(ctx, "fit: %s", err);
-        return TF_EXIT_USAGE;
+        tf_error(ctx, "fit: %s", err); /* the path was checked: a failure while running */
+        return TF_EXIT_FAIL;
     }
     tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
             tf_family_of(fwd->family)->name);
@@ -312,8 +355,8 @@ static uint32_t fingerprint(const fit_args *a)
 static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s,
                    tf_fit_plan *plan, tf_solver **solver)
 {
-    if (parse(ctx, argc, argv, a) != 0 || (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL ||
-        make_plan(ctx, a, *s, plan) != 0) {
+    if (parse(ctx, argc, argv, a) != 0 || check_outputs(ctx, a) != 0 ||
+        (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL || make_plan(ctx, a, *s, plan) != 0) {
         return TF_EXIT_USAGE;
     }
     if (a->report && !tf_plot_available()) {
@@ -347,10 +390,20 @@ static void time_split(const tf_ctx *ctx, const fit_args *a, const tf_fit_outcom
 }
 
 /* The fit, the header and the report. */
-static int fit(tf_ctx *ctx, const fit_args *a, const tf_problem *p, tf_solver *solver,
+static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
                const tf_fit_plan *plan)
 {
     char err[1024];
+    if (a->reference != NULL) {
+        tf_info(ctx, "fit: the solve against the physics: %s", a->reference);
+        if (tf_discretisation_measure(solver, p, plan->contact, a->reference, &a->phys, err,
+                                      sizeof err) != 0) {
+            tf_error(ctx, "fit: --reference %s", err);
+            return TF_EXIT_USAGE;
+        }
+        tf_info(ctx, "fit: discretisation: max %.3g mm (%s), contact site %.3g %%", a->phys.max_mm,
+                a->phys.enveloped ? "over the envelope" : "over the cases", 100 * a->phys.site_rel);
+    }
     tf_fit_outcome o;
     const double t0 = tf_seconds();
     int fitted = tf_fit_run(p, solver, plan, &o);

@@ -21,6 +21,7 @@
 #include "base/log.h"
 #include "base/plot.h"
 #include "scene/scene.h"
+#include "solvers/probe.h"
 #include "solvers/solver.h"
 
 #define META_COLUMNS 8 /* tick, fx, fy, fz, status, contact fx, fy, fz */
@@ -118,7 +119,7 @@ static void effective_force(const tf_envelope *e, const double *in, double f[3])
  * ascending x: gnuplot draws the blocks as a surface. */
 typedef struct row_key {
     double x, y;
-    uint32_t node;
+    size_t out;
 } row_key;
 
 static int by_row(const void *a, const void *b)
@@ -130,44 +131,53 @@ static int by_row(const void *a, const void *b)
     return (p->x > q->x) - (p->x < q->x);
 }
 
-/* The output nodes in row order, or NULL when out of memory. */
-static uint32_t *rows_of(const tf_outputs *o, const double *xyz)
+/* The rest position of output j: its point, or its node. */
+static const double *output_at(const tf_problem *s, const double *xyz, size_t j)
 {
-    row_key *key = malloc((o->n_nodes + 1) * sizeof *key);
-    uint32_t *order = malloc((o->n_nodes + 1) * sizeof *order);
+    const tf_outputs *o = &s->outputs;
+    return o->points ? o->points + 3 * j : xyz + 3 * (size_t)o->nodes[j];
+}
+
+/* The outputs in row order, or NULL when out of memory. */
+static size_t *rows_of(const tf_problem *s, const double *xyz)
+{
+    const size_t n = s->outputs.n_nodes;
+    row_key *key = malloc((n + 1) * sizeof *key);
+    size_t *order = malloc((n + 1) * sizeof *order);
     if (key == NULL || order == NULL) {
         free(key);
         free(order);
         return NULL;
     }
-    for (size_t j = 0; j < o->n_nodes; ++j) {
-        const double *x = xyz + 3 * (size_t)o->nodes[j];
-        key[j] = (row_key){.x = x[0], .y = x[1], .node = o->nodes[j]};
+    for (size_t j = 0; j < n; ++j) {
+        const double *x = output_at(s, xyz, j);
+        key[j] = (row_key){.x = x[0], .y = x[1], .out = j};
     }
-    qsort(key, o->n_nodes, sizeof *key, by_row);
-    for (size_t j = 0; j < o->n_nodes; ++j) {
-        order[j] = key[j].node;
+    qsort(key, n, sizeof *key, by_row);
+    for (size_t j = 0; j < n; ++j) {
+        order[j] = key[j].out;
     }
     free(key);
     return order;
 }
 
+/* The deformed output surface; v holds the outputs' displacements. */
 static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
-                const double *u, size_t tick, const double f[3])
+                const double *v, size_t tick, const double f[3])
 {
     tf_plot p;
     char err[512];
     const double *xyz = tf_solver_coords(solver);
     const size_t n = s->outputs.n_nodes;
-    uint32_t *order = rows_of(&s->outputs, xyz);
+    size_t *order = rows_of(s, xyz);
     if (order == NULL) {
         tf_error(ctx, "replay: out of memory");
         return -1;
     }
     double lo = 0, hi = 0;
     for (size_t j = 0; j < n; ++j) {
-        lo = fmin(lo, u[3 * (size_t)order[j] + 2]);
-        hi = fmax(hi, u[3 * (size_t)order[j] + 2]);
+        lo = fmin(lo, v[3 * order[j] + 2]);
+        hi = fmax(hi, v[3 * order[j] + 2]);
     }
     if (tf_plot_open(&p, png, 1000, 750, err, sizeof err) != 0) {
         tf_error(ctx, "replay: %s", err);
@@ -186,8 +196,8 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
             tick, f[0], f[1], f[2]);
     for (int pass = 0; pass < 2; ++pass) {
         for (size_t j = 0; j < n; ++j) {
-            const double *x = xyz + 3 * (size_t)order[j], *d = u + 3 * (size_t)order[j];
-            if (j > 0 && x[1] != xyz[3 * (size_t)order[j - 1] + 1]) {
+            const double *x = output_at(s, xyz, order[j]), *d = v + 3 * order[j];
+            if (j > 0 && x[1] != output_at(s, xyz, order[j - 1])[1]) {
                 fputc('\n', p.gp);
             }
             if (pass == 0) {
@@ -226,16 +236,25 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
             effective_force(&s->envelope, row + 1, forces + 3 * i);
         }
     }
-    if (tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) != 0) {
-        tf_error(ctx, "replay: %s", ctx->err);
+    /* the solve's displacements at the outputs (nodes, or points between them) */
+    double *v = malloc(t->n * 3 * n_out * sizeof *v);
+    int rc = v ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) : -1;
+    for (size_t i = 0; rc == 0 && i < t->n; ++i) {
+        rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
+                              sizeof ctx->err);
+    }
+    free(u);
+    if (rc != 0) {
+        tf_error(ctx, "replay: %s", v ? ctx->err : "out of memory");
         free(forces);
-        free(u);
+        free(v);
         return TF_EXIT_FAIL;
     }
     double worst = 0, deepest = -1;
-    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0;
+    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0;
+    size_t first_bad = 0;
     for (size_t i = 0; i < t->n; ++i) {
-        const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *ui = u + i * dofs;
+        const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *vi = v + i * 3 * n_out;
         for (size_t j = 0; j < n_out; ++j) {
             for (int k = 0; k < 3; ++k) {
                 double logged = out[3 * j + (size_t)k];
@@ -243,7 +262,13 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
                     bad_zero += logged != 0;
                     continue;
                 }
-                double e = fabs(logged - ui[3 * (size_t)s->outputs.nodes[j] + (size_t)k]);
+                /* A NaN compares false with any bound: counted, never
+                 * silently skipped (it would hide behind a small maximum). */
+                double e = fabs(logged - vi[3 * j + (size_t)k]);
+                if (!isfinite(e)) {
+                    first_bad = not_finite++ ? first_bad : i;
+                    continue;
+                }
                 if (e > worst) {
                     worst = e;
                     worst_tick = i;
@@ -259,9 +284,15 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
-    int rc = bad_zero ? TF_EXIT_FAIL : TF_EXIT_OK;
+    if (not_finite > 0) {
+        tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
+                 "tick %zu): the deviation above covers only the finite ones",
+                 not_finite, first_bad);
+    }
+    rc = bad_zero || not_finite ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, deep_tick, forces + 3 * deep_tick) == 0
+        rc = draw(ctx, png, s, solver, v + deep_tick * 3 * n_out, deep_tick,
+                  forces + 3 * deep_tick) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {
@@ -269,7 +300,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         }
     }
     free(forces);
-    free(u);
+    free(v);
     return rc;
 }
 
@@ -303,6 +334,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     if (optind + 1 != argc || csv == NULL) {
         tf_error(ctx, "replay: expected one scene file and --ticks FILE.csv");
+        tf_sets_free(&sets);
+        return TF_EXIT_USAGE;
+    }
+    if (tf_cmd_outputs(ctx, "replay", &png, 1) != 0) {
         tf_sets_free(&sets);
         return TF_EXIT_USAGE;
     }

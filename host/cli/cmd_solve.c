@@ -13,31 +13,37 @@
 #include "report/displacement_out.h"
 #include "base/log.h"
 #include "scene/scene.h"
+#include "solvers/probe.h"
 #include "solvers/solver.h"
 
 static void help(FILE *out)
 {
     fprintf(out,
             "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
-            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n\n"
+            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n"
+            "                       [--outputs FILE.csv]\n\n"
             "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
             "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
             "The scene's loads always act; --force adds a force (N) at a contact site,\n"
-            "spread as the site's patch says.\n\n"
+            "spread as the site's patch says.  A scene with no loads and no prescribed\n"
+            "displacement needs --force (its solution would be zero).\n\n"
             "Options:\n"
             "  --force FX,FY,FZ   force at the contact site, N\n"
             "  --contact NAME     which contact site (default: the first)\n"
             "  --set KEY=VALUE    override a scene value, e.g. geometry.grid=41,41,9\n"
             "                     (repeatable; see docs/scene-format.md)\n"
             "  -o, --out FILE     CSV file (default: standard output)\n"
-            "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n\n"
+            "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n"
+            "  --outputs FILE     also write the scene's outputs (nodes, or points between\n"
+            "                     nodes through the shape functions) as\n"
+            "                     output,x,y,z,ux,uy,uz\n\n"
             "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
             "Exit status: 0 ok, 1 the solve failed, 2 bad usage or a bad scene (nothing\n"
             "written then).\n");
 }
 
 typedef struct solve_args {
-    const char *scene, *out, *vtk, *contact;
+    const char *scene, *out, *vtk, *contact, *outputs;
     double force[3];
     int has_force;
     tf_sets sets;
@@ -50,6 +56,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                                          {"set", required_argument, NULL, 's'},
                                          {"out", required_argument, NULL, 'o'},
                                          {"vtk", required_argument, NULL, 'v'},
+                                         {"outputs", required_argument, NULL, 'O'},
                                          {0}};
     int c;
     optind = 1;
@@ -78,6 +85,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
         case 'v':
             a->vtk = optarg;
             break;
+        case 'O':
+            a->outputs = optarg;
+            break;
         default:
             tf_error(ctx, "solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
             return -1;
@@ -99,6 +109,14 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
             tf_error(ctx, "solve: --contact without --force");
             return -2;
         }
+        if (tf_problem_unloaded(s)) {
+            /* The answer would be zero everywhere: almost surely a forgotten --force. */
+            tf_error(ctx,
+                     "solve: %s: nothing loads the body (no --force, no loads and no "
+                     "prescribed displacement in the scene): give --force FX,FY,FZ",
+                     a->scene);
+            return -2;
+        }
         return -1;
     }
     if (s->n_contacts == 0) {
@@ -113,38 +131,38 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return k;
 }
 
-/* Both files go to temporaries first, so a failure leaves neither. */
-static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u)
+/* The files go to temporaries first, so a failure leaves none of them. */
+static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u,
+                         const double *at_outputs)
 {
     char err[512];
-    tf_afile csv, vtu;
-    if (a->out && tf_afile_open(&csv, a->out, err, sizeof err) != 0) {
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
-    }
-    if (a->vtk && tf_afile_open(&vtu, a->vtk, err, sizeof err) != 0) {
-        if (a->out) {
-            tf_afile_abort(&csv);
-        }
-        tf_error(ctx, "solve: %s", err);
-        return TF_EXIT_FAIL;
-    }
-    tf_report_csv_displacements(a->out ? csv.fp : stdout, &s->cloud, NULL, 0, u);
+    const char *path[3] = {a->out, a->vtk, a->outputs};
+    tf_afile f[3], *files[3];
+    size_t n = 0;
     int rc = 0;
-    if (a->vtk && tf_report_vtu_displacements(vtu.fp, &s->cloud, u, s->cuts, s->n_cuts) != 0) {
-        snprintf(err, sizeof err, "out of memory for the VTK cells");
-        rc = -1;
+    for (int k = 0; k < 3 && rc == 0; ++k) {
+        if (path[k] && tf_afile_open(&f[k], path[k], err, sizeof err) != 0) {
+            rc = -1;
+        } else if (path[k]) {
+            files[n++] = &f[k];
+        }
     }
-    if (a->out && rc == 0) {
-        rc = tf_afile_commit(&csv, err, sizeof err);
-    } else if (a->out) {
-        tf_afile_abort(&csv);
+    if (rc == 0) {
+        tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
+        if (a->vtk &&
+            tf_report_vtu_displacements(f[1].fp, &s->cloud, u, s->cuts, s->n_cuts) != 0) {
+            snprintf(err, sizeof err, "out of memory for the VTK cells");
+            rc = -1;
+        }
+        if (a->outputs) {
+            tf_report_csv_outputs(f[2].fp, s, at_outputs);
+        }
     }
-    if (a->vtk) {
-        if (rc == 0) {
-            rc = tf_afile_commit(&vtu, err, sizeof err);
-        } else {
-            tf_afile_abort(&vtu);
+    if (rc == 0) {
+        rc = tf_afile_commit_all(files, n, err, sizeof err);
+    } else {
+        while (n > 0) { /* reverse order of opening (atomic_file.h) */
+            tf_afile_abort(files[--n]);
         }
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
@@ -158,7 +176,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {0};
     tf_scene *s = NULL;
-    if (parse(ctx, argc, argv, &a) != 0 || (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
+    if (parse(ctx, argc, argv, &a) != 0 ||
+        tf_cmd_outputs(ctx, "solve", (const char *[]){a.out, a.vtk, a.outputs}, 3) != 0 ||
+        (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }
@@ -172,15 +192,19 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     int rc = TF_EXIT_FAIL;
     tf_solver *sv = tf_solver_create(p, NULL, ctx);
     double *u = malloc(3 * p->cloud.n * sizeof *u);
-    if (sv == NULL || u == NULL) {
+    double *v = malloc(3 * p->outputs.n_nodes * sizeof *v);
+    if (sv == NULL || u == NULL || v == NULL) {
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
+    } else if (a.outputs && tf_solver_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
+        tf_error(ctx, "solve: %s: outputs: %s", a.scene, ctx->err);
     } else {
         tf_solver_report(sv);
-        rc = write_outputs(ctx, &a, p, u);
+        rc = write_outputs(ctx, &a, p, u, v);
     }
     free(u);
+    free(v);
     tf_solver_destroy(sv);
     tf_scene_free(s);
     return rc;

@@ -3,6 +3,7 @@
  * cost and its held-out error, the Pareto front marked (sweep.h,
  * docs/tradeoff.md).
  */
+#include <errno.h>
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,6 +76,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_sets_free(&overrides);
         return TF_EXIT_USAGE;
     }
+    if (tf_cmd_outputs(ctx, "sweep", (const char *[]){csv, md, png}, 3) != 0) {
+        tf_sets_free(&overrides);
+        return TF_EXIT_USAGE;
+    }
     tf_scene *s = tf_cmd_scene(ctx, argv[optind], &overrides);
     const tf_problem *p = s ? &s->problem : NULL;
     tf_solver *solver = NULL;
@@ -91,8 +96,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         solver = tf_solver_create(p, NULL, ctx);
         if (solver == NULL || tf_sweep_run(p, solver, &s->fit, sets, &sw) != 0) {
             tf_error(ctx, "sweep: %s", ctx->err);
+        } else if (!csv && tf_report_sweep_csv_write(&sw, stdout) != 0) {
+            tf_error(ctx, "sweep: cannot write the table to standard output: %s",
+                     strerror(errno));
         } else if ((csv && tf_report_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
-                   (!csv && tf_report_sweep_csv(&sw, "/dev/stdout", err, sizeof err) != 0) ||
                    (md && tf_report_sweep_markdown(&sw, p, md, err, sizeof err) != 0) ||
                    (png && tf_report_sweep_plot(&sw, png, err, sizeof err) != 0)) {
             tf_error(ctx, "sweep: %s", err);

@@ -29,7 +29,8 @@ static void help(FILE *out)
             "              default --vary grid, 4 levels\n"
             "  patch       tests/solver/patch.yaml: linear field on a jittered cloud;\n"
             "              default --vary gauss, 6 levels\n\n"
-            "--vary grid:  level k halves the spacing k times (cells and d_c with it; an\n"
+            "--vary grid:  level k halves the spacing k times (cells and an absolute d_c\n"
+            "              with it; a relative d_c follows by itself; an\n"
             "              axis of two nodes keeps them and shrinks instead)\n"
             "--vary gauss: level column = Gauss points per axis, 1 .. N\n\n"
             "Options:\n"
@@ -132,7 +133,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     verify_args a = {0};
     tf_verify_row rows[MAX_LEVELS];
     char err[1024];
-    if (parse(ctx, argc, argv, &a) != 0) {
+    if (parse(ctx, argc, argv, &a) != 0 || tf_cmd_outputs(ctx, "verify", &a.csv, 1) != 0) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
     }

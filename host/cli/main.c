@@ -41,12 +41,8 @@ static void usage(FILE *out)
             "Exit status: 0 success, 1 failure while running, 2 bad usage or input.\n");
 }
 
-int main(int argc, char **argv)
+static int dispatch(tf_ctx *ctx, int argc, char **argv)
 {
-    tf_blas_pin(argv);
-    tf_ctx run;
-    tf_ctx *ctx = &run;
-    tf_ctx_init(ctx);
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; ++i) {
         if (strcmp(argv[i], "-q") == 0 || strcmp(argv[i], "--quiet") == 0) {
@@ -94,4 +90,12 @@ int main(int argc, char **argv)
     }
     tf_error(ctx, "no command '%s' (try 'tissuefit --help')", name);
     return TF_EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    tf_blas_pin(argv);
+    tf_ctx run;
+    tf_ctx_init(&run);
+    return tf_finish_stdout(&run, dispatch(&run, argc, argv));
 }

@@ -98,7 +98,7 @@ int main(int argc, char **argv)
         run.sink = tf_dist_sink;
         run.sink_user = d;
     }
-    int rc = dispatch(&run, d, argc, argv);
+    int rc = tf_finish_stdout(&run, dispatch(&run, d, argc, argv));
     tf_dist_finalize(d);
     return rc;
 }

@@ -17,14 +17,30 @@ typedef struct tf_emit_info {
     uint32_t source_crc32;
     const char *notes;      /* extra banner text, '\n'-separated lines, or NULL */
     uint64_t golden_seed;   /* seed of the golden input design */
+    /* Where the outputs are when they are points between nodes (NULL: nodes,
+     * named by node_ids): n_points points, 3 coordinates each, mm; output j
+     * of a forward model (node_ids[j] = j + 1) is point j. */
+    const double *points;
+    size_t n_points;
+    const double *contact_point; /* NULL, or the contact point by position, mm */
 } tf_emit_info;
 
 /* Validates every model, then writes path and its _golden.h sibling.  The
  * file's base name (without .h) must be a C identifier in lower case; it
- * names the include guard and the IMPLEMENTATION macro.  Returns 0, or -1
- * with a message in err and nothing written. */
+ * names the include guard and the IMPLEMENTATION macro.  Both files are
+ * synced before either is renamed; the header carries the golden file's
+ * CRC and the golden file refuses to compile beside another header
+ * (header-format.md section 1).  Returns 0, or -1 with a message in err and
+ * nothing written. */
 int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
                    const tf_emit_info *info, char *err, size_t errlen);
+
+/* Checks, before any work, that path names a header tf_emit_header can
+ * write: a lower-case C identifier + ".h" that leaves room for a model name
+ * suffix of model_suffix characters (strlen("_forward")), and writable
+ * destinations for it and its golden file (atomic_file.h).  Returns 0, or
+ * -1 with a message. */
+int tf_emit_check_path(const char *path, size_t model_suffix, char *err, size_t errlen);
 
 /* The golden path for a header path: "dir/name.h" -> "dir/name_golden.h". */
 int tf_golden_path(const char *header_path, char *out, size_t outlen);

@@ -3,6 +3,7 @@
  */
 #include "fitting/cases.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "fitting/case_runner.h"
 #include "fitting/families/family.h"
 #include "fitting/force_samples.h"
+#include "solvers/probe.h"
 
 #define TABLE_CASES (3 * TF_FAMILY_LEVELS)
 
@@ -25,18 +27,20 @@ static void *keep(tf_cases *c, void *p)
     return NULL;
 }
 
-/* The output rows and the contact site of a 3N solution. */
-static void extract(const tf_cases *c, const double *full, double *u, double contact[3])
+/* The output rows and the contact site of a 3N solution (solvers/probe.h:
+ * nodal values, or the field at points between nodes). */
+static int extract(const tf_cases *c, const double *full, double *u, double contact[3])
 {
-    const tf_outputs *o = &c->problem->outputs;
-    for (size_t j = 0; u != NULL && j < o->n_nodes; ++j) {
-        for (int k = 0; k < 3; ++k) {
-            u[3 * j + (size_t)k] = full[3 * (size_t)o->nodes[j] + (size_t)k];
-        }
+    tf_ctx *ctx = c->solver->ctx;
+    if (u != NULL &&
+        tf_solver_probe_outputs(c->solver, c->problem, full, u, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
     }
-    for (int k = 0; contact != NULL && k < 3; ++k) {
-        contact[k] = full[3 * (size_t)c->contact_node + (size_t)k];
+    if (contact != NULL && tf_solver_probe_contact(c->solver, c->problem, c->contact, full, contact,
+                                            ctx->err, sizeof ctx->err) != 0) {
+        return -1;
     }
+    return 0;
 }
 
 /* Solves forces[n][3] at the contact site into output rows u (3 n_out x n)
@@ -52,7 +56,7 @@ static int solve_into(tf_cases *c, const double (*f)[3], size_t n, double *u,
     }
     int rc = tf_solver_solve(c->solver, c->contact, f, n, NULL, full);
     for (size_t i = 0; rc == 0 && i < n; ++i) {
-        extract(c, full + i * dofs, u ? u + i * rows : NULL, contact ? contact[i] : NULL);
+        rc = extract(c, full + i * dofs, u ? u + i * rows : NULL, contact ? contact[i] : NULL);
     }
     c->solves += n;
     free(full);
@@ -157,8 +161,12 @@ static int design(tf_cases *c, size_t n_train, size_t n_heldout, uint64_t seed)
     }
     const double *xyz = tf_solver_coords(c->solver);
     for (size_t j = 0; j < n_out; ++j) {
-        c->node_ids[j] = tf_problem_node_number(p, p->outputs.nodes[j]);
-        memcpy(c->rest[j], xyz + 3 * (size_t)p->outputs.nodes[j], sizeof c->rest[j]);
+        /* output points between nodes are numbered 1, 2, ... in the header */
+        const double *x = p->outputs.points ? p->outputs.points + 3 * j
+                                            : xyz + 3 * (size_t)p->outputs.nodes[j];
+        c->node_ids[j] = p->outputs.points ? (uint32_t)j + 1
+                                           : tf_problem_node_number(p, p->outputs.nodes[j]);
+        memcpy(c->rest[j], x, sizeof c->rest[j]);
     }
     tf_force_samples(p->envelope.centre, p->envelope.radius, n_train, n_heldout, seed, train,
                      held);
@@ -238,10 +246,42 @@ static void unpack(tf_cases *c, tf_fitdata *const *sets, const double *kept)
     }
 }
 
+/* The case list keeps nodal values only (kept_dofs), so a solver that is
+ * not affine cannot yet give the field at an output point or a contact
+ * point that lies between nodes (solvers/probe.h); refused rather than
+ * silently read at the nearest node.  Returns 0 when every site is a node. */
+static int sites_on_nodes(const tf_cases *c)
+{
+    const tf_problem *p = c->problem;
+    const tf_contact *k = &p->contacts[c->contact];
+    const double *xyz = tf_solver_coords(c->solver);
+    const double *at = NULL;
+    for (size_t j = 0; at == NULL && p->outputs.points != NULL && j < p->outputs.n_nodes; ++j) {
+        const double *x = p->outputs.points + 3 * j, *n = xyz + 3 * (size_t)p->outputs.nodes[j];
+        at = fabs(x[0] - n[0]) + fabs(x[1] - n[1]) + fabs(x[2] - n[2]) > 1e-9 ? x : NULL;
+    }
+    const double *n = xyz + 3 * (size_t)k->node;
+    if (at == NULL && !k->by_node &&
+        fabs(k->at[0] - n[0]) + fabs(k->at[1] - n[1]) + fabs(k->at[2] - n[2]) > 1e-9) {
+        at = k->at;
+    }
+    if (at == NULL) {
+        return 0;
+    }
+    return tf_fail(c->solver->ctx,
+                   "fit: the %s solver's response is not affine, and its load cases keep nodal "
+                   "values only: the point (%g, %g, %g) mm lies between nodes; choose a grid "
+                   "with a node there",
+                   tf_solver_name(c->solver), at[0], at[1], at[2]);
+}
+
 /* A solver that is not affine: every case, one by one, as one list with
  * the anchored continuation graph, by the plan's runner. */
 static int solve_all(tf_cases *c, const tf_case_runner *runner)
 {
+    if (sites_on_nodes(c) != 0) {
+        return -1;
+    }
     tf_fitdata *const sets[5] = {&c->train, &c->axis[0], &c->axis[1], &c->axis[2], &c->heldout};
     static const char *const names[6] = {"training", "x-axis", "y-axis", "z-axis", "held-out",
                                          "seed-table"};

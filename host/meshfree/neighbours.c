@@ -6,21 +6,33 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Bins in a grid bounded to about one per node, whatever the radius. */
+/* Bins in a grid bounded to about one per node, whatever the radius.  The
+ * counts are compared in double: a tiny radius (solver.support=1e-16) asks
+ * for more bins per axis than an unsigned holds, and converting such a
+ * count is undefined (it gave 0 bins). */
 static void choose_bins(tf_nbr *g, const double hi[3], size_t n)
 {
-    for (;;) {
-        size_t total = 1;
-        for (int a = 0; a < 3; ++a) {
-            double d = floor((hi[a] - g->lo[a]) / g->bin[a]) + 1;
-            g->dims[a] = d > 1 ? (unsigned)d : 1;
-            total *= g->dims[a];
+    const double most = 2.0 * (double)n + 64;
+    for (int a = 0; a < 3; ++a) {
+        if (!(g->bin[a] > 0 && isfinite(g->bin[a]))) {
+            g->bin[a] = hi[a] > g->lo[a] ? hi[a] - g->lo[a] : 1;
         }
-        if (total <= 2 * n + 64) {
+    }
+    for (;;) {
+        double count[3], total = 1;
+        for (int a = 0; a < 3; ++a) {
+            count[a] = fmax(floor((hi[a] - g->lo[a]) / g->bin[a]) + 1, 1);
+            total *= count[a];
+        }
+        if (total <= most) {
+            for (int a = 0; a < 3; ++a) {
+                g->dims[a] = (unsigned)count[a];
+            }
             return;
         }
+        double grow = fmax(1.25, cbrt(total / most));
         for (int a = 0; a < 3; ++a) {
-            g->bin[a] *= 1.25;
+            g->bin[a] *= grow;
         }
     }
 }
@@ -29,7 +41,7 @@ static size_t bin_of(const tf_nbr *g, const double x[3], unsigned b[3])
 {
     for (int a = 0; a < 3; ++a) {
         double t = floor((x[a] - g->lo[a]) / g->bin[a]);
-        b[a] = t < 0 ? 0 : t >= g->dims[a] ? g->dims[a] - 1 : (unsigned)t;
+        b[a] = !(t >= 0) ? 0 : t >= g->dims[a] ? g->dims[a] - 1 : (unsigned)t;
     }
     return b[0] + (size_t)g->dims[0] * (b[1] + (size_t)g->dims[1] * b[2]);
 }
@@ -124,7 +136,7 @@ size_t tf_nbr_query(const tf_nbr *g, const double x[3], uint32_t *out, size_t ca
             }
         }
     }
-    if (count <= cap) {
+    if (count <= cap && count > 1) { /* out may be NULL when nothing was found */
         qsort(out, count, sizeof *out, cmp_u32);
     }
     return count;

@@ -49,9 +49,71 @@ int tf_cells_init(tf_cells *c, const double lo[3], const double hi[3], const uns
         c->lo[a] = lo[a];
         c->n[a] = n[a];
         c->size[a] = (hi[a] - lo[a]) / n[a];
+        c->edge[a] = NULL;
     }
     c->gauss = gauss;
     return tf_gauss_legendre(gauss, c->gx, c->gw);
+}
+
+int tf_cells_init_cloud(tf_cells *c, const tf_cloud *cloud, const unsigned n[3], unsigned gauss)
+{
+    int rc = tf_cells_init(c, cloud->lo, cloud->hi, n, gauss);
+    if (rc != 0 || !cloud->graded) {
+        return rc;
+    }
+    for (int a = 0; a < 3; ++a) {
+        c->edge[a] = malloc((n[a] + 1) * sizeof *c->edge[a]);
+        if (c->edge[a] == NULL) {
+            tf_cells_free(c);
+            return -1;
+        }
+        double per = (double)(cloud->grid[a] - 1) / n[a]; /* grid intervals per cell */
+        for (unsigned k = 0; k <= n[a]; ++k) {
+            c->edge[a][k] = k == n[a] ? cloud->hi[a] : tf_cloud_from_index(cloud, a, k * per);
+        }
+    }
+    return 0;
+}
+
+void tf_cells_free(tf_cells *c)
+{
+    for (int a = 0; a < 3; ++a) {
+        free(c->edge[a]);
+        c->edge[a] = NULL;
+    }
+}
+
+unsigned tf_cells_slab(const tf_cells *c, int a, double x)
+{
+    if (c->edge[a] == NULL) {
+        double t = floor((x - c->lo[a]) / c->size[a]);
+        return t < 0 ? 0 : t >= c->n[a] ? c->n[a] - 1 : (unsigned)t;
+    }
+    return tf_cloud_lines_interval(c->edge[a], c->n[a] + 1, x);
+}
+
+double tf_cells_min_size(const tf_cells *c, int a)
+{
+    if (c->edge[a] == NULL) {
+        return c->size[a];
+    }
+    double m = INFINITY;
+    for (unsigned k = 0; k < c->n[a]; ++k) {
+        m = fmin(m, c->edge[a][k + 1] - c->edge[a][k]);
+    }
+    return m;
+}
+
+/* Centre and size of cell slab i along axis a. */
+static void slab(const tf_cells *c, int a, size_t i, double *centre, double *size)
+{
+    if (c->edge[a] == NULL) {
+        *centre = c->lo[a] + ((double)i + 0.5) * c->size[a];
+        *size = c->size[a];
+    } else {
+        *centre = 0.5 * (c->edge[a][i] + c->edge[a][i + 1]);
+        *size = c->edge[a][i + 1] - c->edge[a][i];
+    }
 }
 
 static void cell_ijk(const tf_cells *c, size_t cell, size_t ijk[3])
@@ -66,8 +128,9 @@ void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[
     size_t ijk[3];
     cell_ijk(c, cell, ijk);
     for (int a = 0; a < 3; ++a) {
-        half[a] = 0.5 * c->size[a];
-        centre[a] = c->lo[a] + ((double)ijk[a] + 0.5) * c->size[a];
+        double size;
+        slab(c, a, ijk[a], &centre[a], &size);
+        half[a] = 0.5 * size;
     }
 }
 
@@ -78,9 +141,10 @@ void tf_cells_point(const tf_cells *c, size_t cell, size_t p, double x[3], doubl
     size_t g = c->gauss, gi[3] = {p % g, p / g % g, p / (g * g)};
     double weight = 1;
     for (int a = 0; a < 3; ++a) {
-        double centre = c->lo[a] + ((double)ijk[a] + 0.5) * c->size[a];
-        x[a] = centre + 0.5 * c->size[a] * c->gx[gi[a]];
-        weight *= 0.5 * c->size[a] * c->gw[gi[a]];
+        double centre, size;
+        slab(c, a, ijk[a], &centre, &size);
+        x[a] = centre + 0.5 * size * c->gx[gi[a]];
+        weight *= 0.5 * size * c->gw[gi[a]];
     }
     *w = weight;
 }
@@ -164,7 +228,7 @@ tf_qpoint *tf_patch_points(const tf_patch *p, const tf_cloud *cloud, const tf_ce
     int u, v, axis = tf_face_axis(p->face);
     tf_face_axes(p->face, &u, &v);
     double plane = tf_cloud_face_coord(cloud, p->face);
-    double cu = cells->size[u], cv = cells->size[v];
+    double cu = tf_cells_min_size(cells, u), cv = tf_cells_min_size(cells, v);
     unsigned g2 = cells->gauss * cells->gauss, mu, mv;
     double u01[2], v01[2];
     if (p->shape == TF_PATCH_CIRCLE) {

@@ -17,18 +17,30 @@
  * ascending, exactly mirror-symmetric.  Returns 0, or -1 for a bad n. */
 int tf_gauss_legendre(unsigned n, double *x, double *w);
 
-/* Background cells: a box split into cells[0] x cells[1] x cells[2] equal
- * cells with gauss^3 points each. */
+/* Background cells: a box split into cells[0] x cells[1] x cells[2] cells
+ * with gauss^3 points each; equal cells, or on a graded cloud cells that
+ * follow its grid lines (edges equidistant in the cloud's index space, so
+ * one cell per grid interval when there are grid - 1 cells). */
 typedef struct tf_cells {
     double lo[3];
-    double size[3];    /* one cell, mm */
+    double size[3];    /* one cell, mm (equal cells); the mean cell (graded) */
     unsigned n[3];
     unsigned gauss;
     double gx[TF_GAUSS_MAX], gw[TF_GAUSS_MAX];
+    double *edge[3];   /* graded: n[a] + 1 cell edges per axis, ascending; NULL: equal cells */
 } tf_cells;
 
 int tf_cells_init(tf_cells *c, const double lo[3], const double hi[3], const unsigned n[3],
                   unsigned gauss);
+/* Cells over a cloud's box: equal cells on a uniform cloud (tf_cells_init),
+ * graded ones on a graded cloud.  Returns 0, or -1 (bad gauss, out of
+ * memory). */
+int tf_cells_init_cloud(tf_cells *c, const tf_cloud *cloud, const unsigned n[3], unsigned gauss);
+void tf_cells_free(tf_cells *c);
+/* The cell index along axis a that holds coordinate x (clamped). */
+unsigned tf_cells_slab(const tf_cells *c, int a, double x);
+/* The smallest cell size along axis a, mm. */
+double tf_cells_min_size(const tf_cells *c, int a);
 static inline size_t tf_cells_count(const tf_cells *c)
 {
     return (size_t)c->n[0] * c->n[1] * c->n[2];

@@ -13,10 +13,29 @@
  * and the derivatives solve it with the right-hand side differentiated.
  * Distances are made dimensionless by the support radius s (and the
  * polynomial centred on the support), which leaves Phi unchanged and keeps
- * the condition estimate meaningful.  The system (symmetric, indefinite) is
- * factorised once per support by LU with partial pivoting (LAPACK dgetrf)
- * and solved for any number of points in it at once (dgetrs: triangular
- * solves with many right-hand sides run as level-3 BLAS).
+ * the condition estimate meaningful.
+ *
+ * With the polynomial the system is solved in the null space of P^T (the
+ * standard method for saddle-point systems; Benzi, Golub & Liesen, Acta
+ * Numerica 2005, §6): with P = Q [R_P; 0] (Householder QR, LAPACK dgeqrf),
+ * Q = [Q1 Q2], the moment conditions P^T a = p(x) fix a = Q1 w + Q2 z with
+ * R_P^T w = p(x), and the first block row projected on Q2 gives
+ *
+ *     (Q2^T R_s Q2) z = Q2^T R(x) - (Q2^T R_s Q1) w,      Phi^T = a.
+ *
+ * Q2^T R_s Q2 is the multiquadric restricted to coefficient vectors that
+ * annihilate linear fields; for 1 < q < 2 it is positive definite (the
+ * multiquadric is conditionally positive definite of order 2).  For a flat
+ * basis (alpha_c d_c many nodal spacings) the constant and linear parts of
+ * R_s, which dominate it, are exactly what the projection removes, so the
+ * projected system is many orders better conditioned than the saddle-point
+ * matrix and the shape functions keep their digits (docs/solver.md).  It is
+ * factorised by LU with partial pivoting (dgetrf; q < 1 makes it negative
+ * definite), the condition estimate is that of this projected system (and
+ * of R_P: coplanar nodes make P rank-deficient).  Without the polynomial
+ * (the seed's eq 12) R_s itself is factorised by LU.  Either way, one
+ * factorisation per support serves any number of points at once (the
+ * triangular solves with many right-hand sides run as level-3 BLAS).
  */
 #ifndef TF_RPIM_H
 #define TF_RPIM_H
@@ -33,14 +52,19 @@ typedef struct tf_rpim {
 /* Per-thread workspace for supports of up to cap nodes. */
 typedef struct tf_rpim_work {
     size_t cap, n, m;  /* capacity, current support size, polynomial terms */
-    double centre[3], s, c2, q;
+    double centre[3], s, c2, q, c2q; /* c2 = (alpha_c d_c / s)^2, c2q = c2^q */
     double *xs;        /* 3 cap: support nodes, scaled, relative to centre */
-    double *g;         /* (cap + 4)^2: the factorised system */
+    double *g;         /* (cap + 4)^2: the factorised system (with the polynomial: n x n,
+                          Q^T R_s Q with its lower-right n - 4 block factorised) */
     int *ipiv;
+    double *qp;        /* 4 cap: the QR factorisation of P (Householder vectors, R_P) */
+    double tau[4];
+    double *pp;        /* 4 x rhs_cap: the polynomial rows of the right-hand sides */
     double *rhs;       /* (cap + 4) x rhs_cap, used as (n + m) x columns */
     size_t rhs_cap;    /* columns */
     double *work;      /* 4 (cap + 4) */
     int *iwork;
+    double *qwork;     /* 64 (cap + 4 + rhs_cap): dormqr's work */
 } tf_rpim_work;
 
 int tf_rpim_work_init(tf_rpim_work *w, size_t cap);

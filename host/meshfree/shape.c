@@ -12,6 +12,11 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
 {
     sh->cloud = cloud;
     sh->rpim.shape = o->alpha_c * o->d_c;
+    sh->alpha_c = o->alpha_c;
+    sh->d_c_spacings = o->d_c_spacings;
+    sh->xi = NULL;
+    sh->nbr.start = NULL;
+    sh->nbr.items = NULL;
     sh->rpim.q = o->q;
     sh->rpim.poly = o->polynomial;
     sh->centre = o->centre;
@@ -27,17 +32,38 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
         sh->radius[a] = o->support * cloud->spacing[a];
         sh->scale = fmax(sh->scale, sh->radius[a]);
     }
-    if (tf_cells_init(&sh->cells, lo, hi, o->cells, o->gauss) != 0) {
+    int rc = cloud->graded ? tf_cells_init_cloud(&sh->cells, cloud, o->cells, o->gauss)
+                           : tf_cells_init(&sh->cells, lo, hi, o->cells, o->gauss);
+    if (rc != 0) {
         return -1;
     }
-    return tf_nbr_build(&sh->nbr, cloud->xyz, cloud->n, sh->radius);
+    /* Supports are balls of radius alpha_s in index space. */
+    const double unit[3] = {o->support, o->support, o->support};
+    sh->xi = malloc((3 * cloud->n + 1) * sizeof *sh->xi);
+    if (sh->xi == NULL) {
+        tf_shape_free(sh);
+        return -1;
+    }
+    for (size_t i = 0; i < cloud->n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            sh->xi[3 * i + a] = tf_cloud_to_index(cloud, a, cloud->xyz[3 * i + a]);
+        }
+    }
+    if (tf_nbr_build(&sh->nbr, sh->xi, cloud->n, unit) != 0) {
+        tf_shape_free(sh);
+        return -1;
+    }
+    return 0;
 }
 
 void tf_shape_free(tf_shape *sh)
 {
     tf_nbr_free(&sh->nbr);
+    tf_cells_free(&sh->cells);
     free(sh->mls_radius);
+    free(sh->xi);
     sh->mls_radius = NULL;
+    sh->xi = NULL;
     tf_cut_set_free(&sh->cuts);
     free(sh->cut_node);
     sh->cut_node = NULL;
@@ -115,6 +141,8 @@ int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
     }
     tf_nbr_free(&sh->nbr);
     free(sh->mls_radius);
+    free(sh->xi);
+    sh->xi = NULL; /* the EFG neighbour grid is in mm */
     sh->mls_radius = rad;
     if (tf_nbr_build(&sh->nbr, c->xyz, c->n, reach) != 0) {
         snprintf(err, errlen, "out of memory for the EFG neighbour grid");
@@ -136,7 +164,7 @@ void tf_shape_stats_reset(tf_shape_stats *st)
 void tf_shape_work_init(tf_shape_work *w)
 {
     w->rw.cap = w->rw.rhs_cap = 0;
-    w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = NULL;
+    w->rw.xs = w->rw.g = w->rw.rhs = w->rw.work = w->rw.qp = w->rw.pp = w->rw.qwork = NULL;
     w->rw.ipiv = w->rw.iwork = NULL;
     w->mw.cap = 0;
     w->mw.w = w->mw.dw = w->mw.p = NULL;
@@ -208,8 +236,7 @@ size_t tf_shape_cell(const tf_shape *sh, const double x[3])
     const tf_cells *c = &sh->cells;
     size_t ijk[3];
     for (int a = 0; a < 3; ++a) {
-        double t = floor((x[a] - c->lo[a]) / c->size[a]);
-        ijk[a] = t < 0 ? 0 : t >= c->n[a] ? c->n[a] - 1 : (size_t)t;
+        ijk[a] = tf_cells_slab(c, a, x[a]);
     }
     return ijk[0] + c->n[0] * (ijk[1] + (size_t)c->n[1] * ijk[2]);
 }
@@ -229,14 +256,17 @@ static void support_centre(const tf_shape *sh, const double x[3], size_t cell, d
 
 int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
 {
-    double at[3];
+    double at[3], q[3];
     support_centre(sh, x, cell, at);
-    size_t n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+    for (int a = 0; a < 3; ++a) { /* RPIM queries in index space, EFG in mm */
+        q[a] = sh->xi ? tf_cloud_to_index(sh->cloud, a, at[a]) : at[a];
+    }
+    size_t n = tf_nbr_query(&sh->nbr, q, w->idx, w->cap);
     if (n > w->cap) {
         if (grow(w, n, w->pcap ? w->pcap : 1) != 0) {
             return -1;
         }
-        n = tf_nbr_query(&sh->nbr, at, w->idx, w->cap);
+        n = tf_nbr_query(&sh->nbr, q, w->idx, w->cap);
     }
     if (sh->mls_radius) { /* EFG: the nodes whose domain reaches x, or the cell */
         double lo[3] = {x[0], x[1], x[2]}, hi[3] = {x[0], x[1], x[2]}, half[3];
@@ -313,6 +343,28 @@ static int rpim_support_cut(const tf_shape *sh, const double x[3], size_t cell)
     return tf_cut_meets_box(&sh->cuts, lo, hi);
 }
 
+/* The support's scale s (its largest semi-axis, mm) and the multiquadric's
+ * length alpha_c d_c at support centre at: from the local nodal spacing on a
+ * graded cloud or with a relative d_c, else the fixed values (the seed's
+ * absolute d_c on a uniform grid keeps its bits). */
+static void local_scale(const tf_shape *sh, const double at[3], double *s, double *shape)
+{
+    *s = sh->scale;
+    *shape = sh->rpim.shape;
+    if (!sh->cloud->graded && !(sh->d_c_spacings > 0)) {
+        return;
+    }
+    double h[3];
+    tf_cloud_local_spacing(sh->cloud, at, h);
+    *s = 0;
+    for (int a = 0; a < 3; ++a) {
+        *s = fmax(*s, sh->support * h[a]);
+    }
+    if (sh->d_c_spacings > 0) {
+        *shape = sh->alpha_c * sh->d_c_spacings * cbrt(h[0] * h[1] * h[2]);
+    }
+}
+
 /* Factorises the support around x (cell mode: of the cell) unless the
  * cell's system is already factorised. */
 static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
@@ -329,7 +381,8 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
         w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
         return 0;
     }
-    double at[3], rcond;
+    double at[3], rcond, s;
+    tf_rpim rp = sh->rpim;
     support_centre(sh, x, cell, at);
     if (tf_shape_support(sh, w, x, cell) != 0) {
         return -1;
@@ -339,13 +392,13 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
         w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
         return 0;
     }
-    if (tf_rpim_factor(&sh->rpim, &w->rw, sh->cloud->xyz, w->idx, w->n, at, sh->scale,
-                       &rcond) != 0) {
+    local_scale(sh, at, &s, &rp.shape);
+    if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->idx, w->n, at, s, &rcond) != 0) {
         snprintf(w->err, sizeof w->err,
                  "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular to "
                  "machine precision: too few nodes or all in one plane (raise "
                  "solver.support), or a multiquadric too flat for the spacing (lower "
-                 "solver.rbf.d_c)",
+                 "solver.rbf.spacings or d_c)",
                  w->n, at[0], at[1], at[2]);
         w->cell = SIZE_MAX;
         return -1;
@@ -405,8 +458,10 @@ static int evaluate_cut(const tf_shape *sh, tf_shape_work *w, const double *x, s
                 w->pos[m++] = (uint32_t)i;
             }
         }
-        if (tf_rpim_factor(&sh->rpim, &w->rw, sh->cloud->xyz, w->sub, m, xp, sh->scale,
-                           &rcond) != 0) {
+        double sc;
+        tf_rpim rp = sh->rpim;
+        local_scale(sh, xp, &sc, &rp.shape);
+        if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->sub, m, xp, sc, &rcond) != 0) {
             snprintf(w->err, sizeof w->err,
                      "the RPIM system of the %zu nodes visible across the cut from (%g, %g, "
                      "%g) mm is singular: too few nodes on that side (raise solver.support)",

@@ -7,7 +7,9 @@
  * 001), with the same output per point (nodes, phi, dphi).
  *
  * Two choices of support domain, both an ellipsoid of semi-axes
- * alpha_s x nodal spacing per axis (EFG: every node's own domain of
+ * alpha_s x the local nodal spacing per axis, i.e. a ball of radius alpha_s
+ * in the cloud's index space (nodes.h), so that a graded cloud's supports
+ * hold as many nodes as a uniform one's (EFG: every node's own domain of
  * influence, alpha_s x its local spacing; a support is then the set of
  * nodes whose domain reaches the point, or the cell):
  *   point: centred at the evaluation point itself (the seed: "a support
@@ -16,6 +18,12 @@
  *   cell:  centred at the centre of the background cell holding the point;
  *          every point of a cell shares one node set and one factorised
  *          local system, which makes assembly several times faster.
+ *
+ * The multiquadric's length alpha_c d_c (rpim.h) is fixed (an absolute d_c,
+ * the seed's) or d_c = d_c_spacings x h, h the local nodal spacing of the
+ * support: the geometric mean of the grid intervals around its centre
+ * (tf_cloud_local_spacing), so that the basis keeps its shape relative to
+ * the nodes when the grid is refined or graded.
  *
  * Cuts (tf_shape_set_cuts, cut.h): the shape functions at a point whose
  * support meets a cut are recomputed — EFG with the weights of the
@@ -39,9 +47,11 @@
 
 typedef struct tf_shape {
     const tf_cloud *cloud;
-    tf_rpim rpim;
-    tf_nbr nbr;
-    double radius[3];  /* support semi-axes, mm */
+    tf_rpim rpim;      /* shape: alpha_c d_c for an absolute d_c */
+    double alpha_c, d_c_spacings; /* d_c_spacings > 0: d_c = d_c_spacings x local spacing */
+    tf_nbr nbr;        /* RPIM: over the nodes' index coordinates xi */
+    double *xi;        /* RPIM: 3 n index coordinates (nodes.h), NULL after tf_shape_use_efg */
+    double radius[3];  /* support semi-axes, mm (nominal spacing) */
     double scale;      /* largest semi-axis: distances are divided by it */
     tf_cells cells;
     tf_support_centre centre;

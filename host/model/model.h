@@ -33,6 +33,10 @@ typedef struct tf_model {
      * stiffness and largest ||J||_2 over the envelope, N/mm. */
     double stiffness_min, stiffness_max;
     uint32_t passivity_samples; /* 0: not checked */
+    /* The solve's own error against a reference of the physics
+     * (fitting/discretisation.h), output units; NAN: not measured. */
+    double discretisation_max;
+    char discretisation_note[512]; /* what it was measured against */
 } tf_model;
 
 /* Floating-point operation counts of one evaluation (docs/header-format.md §6). */

@@ -1,13 +1,22 @@
 /*
- * nodes.h — node clouds.  Today a box filled with a regular grid of nodes
- * (optionally jittered inside); a surface mesh with a node spacing will
- * produce the same structure.
+ * nodes.h — node clouds.  Today a box filled with a grid of nodes, uniform
+ * or graded along each axis (optionally jittered inside); a surface mesh
+ * with a node spacing will produce the same structure.
+ *
+ * Index space: a box grid's node (i, j, k) sits at index coordinates
+ * (i, j, k) (before jitter), and the map between a coordinate and its
+ * fractional index is linear between grid lines.  On a uniform grid it is
+ * (x - lo) / spacing; on a graded grid it straightens the grading, so that
+ * support domains of a fixed size in index space hold the same number of
+ * nodes everywhere (meshfree/shape.c).
  */
 #ifndef TF_NODES_H
 #define TF_NODES_H
 
 #include <stddef.h>
 #include <stdint.h>
+
+#include "problem/grading.h"
 
 /* Faces of a box, named in scene files "x-", "x+", "y-", "y+", "z-", "z+". */
 typedef enum tf_face {
@@ -27,18 +36,35 @@ void tf_face_axes(tf_face f, int *u, int *v);
 typedef struct tf_cloud {
     size_t n;          /* node count */
     double *xyz;       /* 3 n coordinates, node index order, mm */
-    double spacing[3]; /* nominal nodal spacing per axis, mm */
+    double spacing[3]; /* nominal (mean) nodal spacing per axis, mm */
     double lo[3], hi[3];
     unsigned grid[3];  /* nodes per axis */
+    double *axis[3];   /* the grid lines: grid[a] coordinates per axis, ascending, mm */
+    int graded;        /* some axis is not uniform */
 } tf_cloud;
 
 /* Fills a box [lo, hi] with grid[0] x grid[1] x grid[2] nodes (each >= 2),
- * numbered top layer first (problem.h).  Interior nodes are moved by up to
- * jitter x spacing along each axis (uniform, from seed); nodes on the
- * boundary stay on it.  Returns 0, or -1 when out of memory. */
+ * numbered top layer first (problem.h), on a uniform grid.  Interior nodes
+ * are moved by up to jitter x spacing along each axis (uniform, from seed);
+ * nodes on the boundary stay on it.  Returns 0, or -1 when out of memory. */
 int tf_cloud_box(tf_cloud *c, const double lo[3], const double hi[3], const unsigned grid[3],
                  double jitter, uint64_t seed);
+/* The same on the graded grid g describes (NULL: uniform, the same bits as
+ * tf_cloud_box); jitter is then a fraction of the smaller neighbouring
+ * interval along each axis. */
+int tf_cloud_box_graded(tf_cloud *c, const double lo[3], const double hi[3],
+                        const unsigned grid[3], double jitter, uint64_t seed,
+                        const tf_cloud_grading *g);
 void tf_cloud_free(tf_cloud *c);
+
+/* Fractional grid index of coordinate x along axis a (clamped to the box),
+ * and the coordinate of a fractional index (the index map above). */
+double tf_cloud_to_index(const tf_cloud *c, int a, double x);
+double tf_cloud_from_index(const tf_cloud *c, int a, double xi);
+
+/* The nodal spacing per axis around x: the grid interval that holds x (the
+ * nominal spacing on a uniform grid). */
+void tf_cloud_local_spacing(const tf_cloud *c, const double x[3], double h[3]);
 
 /* Index of the grid node (i, j, k), k = 0 at the bottom. */
 size_t tf_cloud_index(const tf_cloud *c, unsigned i, unsigned j, unsigned k);

@@ -3,6 +3,7 @@
  */
 #include "problem/problem.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,8 +17,25 @@ void tf_problem_release(tf_problem *p)
     free(p->loads);
     free(p->contacts);
     free(p->outputs.nodes);
+    free(p->outputs.points);
     free(p->cuts);
     memset(p, 0, sizeof *p);
+}
+
+uint32_t tf_problem_nearest_node(const tf_problem *p, const double x[3])
+{
+    uint32_t best = 0;
+    double d2 = INFINITY;
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        const double *y = p->cloud.xyz + 3 * i;
+        double e = (y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
+                   (y[2] - x[2]) * (y[2] - x[2]);
+        if (e < d2) {
+            d2 = e;
+            best = (uint32_t)i;
+        }
+    }
+    return best;
 }
 
 int tf_problem_contact(const tf_problem *p, const char *name)
@@ -71,4 +89,25 @@ int tf_problem_unloaded(const tf_problem *p)
         }
     }
     return 1;
+}
+
+void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3])
+{
+    int u, v, n = tf_face_axis(patch->face);
+    switch (patch->shape) {
+    case TF_PATCH_POINT:
+        memcpy(x, c->xyz + 3 * (size_t)patch->node, 3 * sizeof *x);
+        return;
+    case TF_PATCH_AT:
+        memcpy(x, patch->at, 3 * sizeof *x);
+        return;
+    case TF_PATCH_FACE:
+    case TF_PATCH_RECT:
+    case TF_PATCH_CIRCLE:
+        break;
+    }
+    tf_face_axes(patch->face, &u, &v);
+    x[n] = tf_cloud_face_coord(c, patch->face);
+    x[u] = patch->shape == TF_PATCH_FACE ? 0.5 * (c->lo[u] + c->hi[u]) : patch->centre[0];
+    x[v] = patch->shape == TF_PATCH_FACE ? 0.5 * (c->lo[v] + c->hi[v]) : patch->centre[1];
 }

@@ -36,6 +36,7 @@ typedef struct tf_box_geometry {
     unsigned grid[3];      /* nodes per axis */
     double jitter;         /* fraction of the spacing, interior nodes */
     uint64_t seed;         /* of the jitter */
+    tf_cloud_grading grading;    /* ratio 1 on every axis: a uniform grid (nodes.h) */
 } tf_box_geometry;
 
 typedef struct tf_geometry {
@@ -71,6 +72,8 @@ typedef enum tf_patch_shape {
     TF_PATCH_FACE,   /* uniform traction over a whole face */
     TF_PATCH_RECT,   /* uniform traction over a rectangle of a face */
     TF_PATCH_CIRCLE, /* uniform traction over a disc of a face */
+    TF_PATCH_AT,     /* a force at a point anywhere in the body, spread to the nodes by
+                        their shape functions there (the Galerkin load of a point force) */
 } tf_patch_shape;
 
 /* Where a force acts.  In-face coordinates (u, v): (x, y) on z faces,
@@ -82,6 +85,7 @@ typedef struct tf_patch {
     double centre[2];   /* RECT, CIRCLE: (u, v), mm */
     double size[2];     /* RECT: side lengths along u and v, mm */
     double radius;      /* CIRCLE, mm */
+    double at[3];       /* AT: the point, mm */
 } tf_patch;
 
 /* A load that is always applied: a total force spread over a patch, or the
@@ -92,12 +96,17 @@ typedef struct tf_load {
     int exact;
 } tf_load;
 
-/* A contact site: where the haptic force acts, and the node whose
- * displacement is the contact displacement. */
+/* A contact site: where the haptic force acts, and the point whose
+ * displacement is the contact displacement.  Given by a node number, the
+ * point is that node and its displacement the nodal value; given by
+ * position (or by its patch, whose centre it then is), the displacement is
+ * the solver's field at the point, whatever the grid. */
 typedef struct tf_contact {
     char name[TF_PROBLEM_NAME_MAX];
-    uint32_t node;  /* node index */
-    tf_patch patch; /* TF_PATCH_POINT at `node` when no patch was given */
+    uint32_t node;  /* node index: the node given, or the node nearest `at` */
+    double at[3];   /* the contact point, mm */
+    int by_node;    /* 1: given as a node number (the nodal value is the contact displacement) */
+    tf_patch patch; /* TF_PATCH_POINT at `node` (TF_PATCH_AT at `at`) when no patch was given */
 } tf_contact;
 
 /* The forces the haptic device may apply: the ball |F - centre| <= radius. */
@@ -112,12 +121,17 @@ typedef enum tf_output_kind {
     TF_OUT_BOX,
     TF_OUT_NODES,
     TF_OUT_CONTACT,
+    TF_OUT_POINTS,
 } tf_output_kind;
 
+/* The output points: nodes, or (points != NULL) points anywhere in the
+ * body whose displacements are the solver's field there (solvers/probe.h);
+ * nodes[] then holds the node nearest each point. */
 typedef struct tf_outputs {
     tf_output_kind kind;
     uint32_t *nodes; /* resolved node indices (ascending, or in list order for TF_OUT_NODES) */
-    size_t n_nodes;
+    size_t n_nodes;  /* output count */
+    double *points;  /* NULL, or 3 n_nodes coordinates, mm */
 } tf_outputs;
 
 #define TF_CUT_MAX_POINTS 16
@@ -144,7 +158,8 @@ typedef struct tf_solver_opts {
     double support;   /* alpha_s: support radius in nodal spacings (per axis) */
     tf_support_centre centre; /* support centred at each Gauss point or at its cell */
     double alpha_c;   /* RBF: R(r) = (r^2 + (alpha_c d_c)^2)^q   (seed eq 12) */
-    double d_c;       /* mm */
+    double d_c;       /* mm, when d_c_spacings is 0 (absolute, the seed's) */
+    double d_c_spacings; /* > 0: d_c = d_c_spacings x the local nodal spacing (meshfree/shape.h) */
     double q;
     int polynomial;   /* 0: none (seed eq 12); 1: linear augmentation (seed eq 11) */
     tf_volumetric volumetric; /* volumetric strain at each Gauss point, or per cell (B-bar) */
@@ -202,6 +217,12 @@ static inline uint32_t tf_problem_node_number(const tf_problem *p, size_t index)
     (void)p;
     return (uint32_t)index + 1;
 }
+
+/* The centre of a patch on its face (a point force: its point), mm. */
+void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[3]);
+
+/* Index of the node nearest x (the lowest index of equally near ones). */
+uint32_t tf_problem_nearest_node(const tf_problem *p, const double x[3]);
 
 /* The geometry's bounding box, mm. */
 void tf_problem_bounds(const tf_problem *p, double lo[3], double hi[3]);

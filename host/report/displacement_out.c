@@ -18,6 +18,18 @@ void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *id
     }
 }
 
+void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v)
+{
+    const tf_outputs *o = &p->outputs;
+    fprintf(fp, "output,x,y,z,ux,uy,uz\n");
+    for (size_t j = 0; j < o->n_nodes; ++j) {
+        const double *x = o->points ? o->points + 3 * j : p->cloud.xyz + 3 * (size_t)o->nodes[j];
+        size_t id = o->points ? j + 1 : (size_t)o->nodes[j] + 1;
+        fprintf(fp, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", id, x[0], x[1], x[2], v[3 * j],
+                v[3 * j + 1], v[3 * j + 2]);
+    }
+}
+
 /* VTK_HEXAHEDRON corners of grid cell (i, j, k): bottom face then top. */
 static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[8])
 {

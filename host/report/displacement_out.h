@@ -14,11 +14,16 @@
 #include <stdio.h>
 
 #include "meshfree/cut.h"
-#include "problem/nodes.h"
+#include "problem/problem.h"
 
 /* Rows for the n nodes idx[] (all nodes when idx is NULL, n ignored). */
 void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
                                  const double *u);
+
+/* A problem's outputs (values v[3 j + a], solvers/probe.h) with header
+ * output,x,y,z,ux,uy,uz: output is the node number for outputs at nodes,
+ * the point number 1, 2, ... for outputs at points. */
+void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v);
 
 /* The whole cloud as a VTU file, without the cells the n cuts pass
  * through.  Returns 0, or -1 (out of memory: nothing written). */

@@ -20,26 +20,32 @@ static const char *unit(const tf_candidate *c)
     return c->family->kind == TF_FAMILY_INVERSE ? "N" : "mm";
 }
 
-int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_csv_write(const tf_sweep *sw, FILE *fp)
 {
-    tf_afile f;
-    if (tf_afile_open(&f, path, err, errlen) != 0) {
-        return -1;
-    }
-    fprintf(f.fp, "outputs,n_out,model,family,precision,coefficients,table_bytes,ops,us_m4f,"
-                  "us_m4f_low,us_m7,ns_native,heldout_max,heldout_rms,unit,pareto\n");
+    fprintf(fp, "outputs,n_out,model,family,precision,coefficients,table_bytes,ops,us_m4f,"
+                "us_m4f_low,us_m7,ns_native,heldout_max,heldout_rms,unit,pareto\n");
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i];
         char ops[32] = "";
         if (c->ops > 0) {
             snprintf(ops, sizeof ops, "%llu", (unsigned long long)c->ops);
         }
-        fprintf(f.fp, "%s,%u,%s,%s,%s,%u,%u,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%s,%d\n",
+        fprintf(fp, "%s,%u,%s,%s,%s,%u,%u,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%s,%d\n",
                 tf_output_set_name(c->set), c->n_out, c->label, c->family->name,
                 tf_precision_name(c->precision), c->n_coef, c->table_bytes, ops, c->us_m4f,
                 c->us_m4f_low, c->us_m7, c->ns_native, c->heldout_max, c->heldout_rms, unit(c),
                 c->pareto);
     }
+    return fflush(fp) != 0 || ferror(fp) ? -1 : 0;
+}
+
+int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+{
+    tf_afile f;
+    if (tf_afile_open(&f, path, err, errlen) != 0) {
+        return -1;
+    }
+    tf_report_sweep_csv_write(sw, f.fp);
     return tf_afile_commit(&f, err, errlen);
 }
 

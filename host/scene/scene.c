@@ -6,14 +6,18 @@
 #include "scene/scene.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "scene/scene_build.h"
 #include "scene/scene_locate.h"
 #include "scene/scene_schema.h"
 #include "scene/scene_set.h"
+#include "scene/scene_strict.h"
 
 void tf_scene_free(tf_scene *s)
 {
@@ -32,6 +36,18 @@ static void stem(const char *path, char *out, size_t outlen)
     out[strcspn(out, ".")] = '\0';
 }
 
+/* An override as messages show it: a value of 2,000 characters would push
+ * the reason out of any message buffer. */
+static const char *shown_set(const char *set, char *buf, size_t len)
+{
+    size_t n = strlen(set);
+    if (n <= 80) {
+        return set;
+    }
+    snprintf(buf, len, "%.60s... (%zu characters)", set, n);
+    return buf;
+}
+
 /* One path covers another when either is a prefix of the other at a dot. */
 static int covers(const char *a, const char *b)
 {
@@ -44,9 +60,11 @@ static void report(const char *text, size_t len, const char *name, const char *c
                    size_t errlen)
 {
     const char *sep = is->path[0] ? ": " : "";
+    char buf[128];
     for (size_t k = n_sets; k-- > 0;) {
         if (is->path[0] && covers(set_paths[k], is->path)) {
-            snprintf(err, errlen, "--set %s: %s%s%s", sets[k], is->path, sep, is->msg);
+            snprintf(err, errlen, "--set %s: %s%s%s", shown_set(sets[k], buf, sizeof buf),
+                     is->path, sep, is->msg);
             return;
         }
     }
@@ -58,9 +76,66 @@ static void report(const char *text, size_t len, const char *name, const char *c
     }
 }
 
+/* The --set paths override the value at path (or a mapping above it). */
+static int overridden(const char (*set_paths)[128], size_t n_sets, const char *path)
+{
+    for (size_t k = 0; k < n_sets; ++k) {
+        if (covers(set_paths[k], path)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void warn_node(tf_scene *s, const char *name, const char *path, uint32_t number,
+                      const char *what)
+{
+    const tf_problem *p = &s->problem;
+    const double *x = p->cloud.xyz + 3 * (size_t)(number - 1);
+    size_t used = strlen(s->warnings);
+    snprintf(s->warnings + used, sizeof s->warnings - used,
+             "%s: %s: node %u was numbered on the file's grid; with the grid overridden it is "
+             "the node at (%g, %g, %g) mm: give %s by position to follow the grid\n",
+             name, path, number, x[0], x[1], x[2], what);
+}
+
+/* Node numbers in the file name other places once --set changes the grid
+ * (the numbering follows the grid): say so for each one not overridden too. */
+static void node_number_warnings(const sd_scene *doc, const char (*set_paths)[128],
+                                 size_t n_sets, const char *name, tf_scene *s)
+{
+    char path[128];
+    if (!overridden(set_paths, n_sets, "geometry.grid")) {
+        return;
+    }
+    for (unsigned k = 0; k < doc->contact_count; ++k) {
+        snprintf(path, sizeof path, "contact.%u.node", k);
+        if (doc->contact[k].node && !overridden(set_paths, n_sets, path)) {
+            warn_node(s, name, path, *doc->contact[k].node,
+                      "the contact point (at: [x, y, z], or its patch alone: the centre)");
+        }
+    }
+    for (unsigned k = 0; k < doc->loads_count; ++k) {
+        snprintf(path, sizeof path, "loads.%u.node", k);
+        if (doc->loads[k].node && !overridden(set_paths, n_sets, path)) {
+            warn_node(s, name, path, *doc->loads[k].node, "the point force (at: [x, y, z])");
+        }
+    }
+    if (doc->outputs.nodes_count > 0 && !overridden(set_paths, n_sets, "outputs.nodes")) {
+        warn_node(s, name, "outputs.nodes", doc->outputs.nodes[0],
+                  "the outputs (select: points)");
+    }
+}
+
 tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
                              const char *const *sets, size_t n_sets, char *err, size_t errlen)
 {
+    sd_strict_issue si;
+    if (sd_strict_check(text, len, &sd_scene_schema, "", &si) != 0) {
+        snprintf(err, errlen, "%s:%d: %s%s%s", name, si.line, si.path, si.path[0] ? ": " : "",
+                 si.msg);
+        return NULL;
+    }
     sd_log log = {.len = 0};
     cyaml_config_t cfg = sd_config(&log);
     sd_scene *doc = NULL;
@@ -80,9 +155,10 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     tf_scene *s = calloc(1, sizeof *s);
     int ok = set_paths && s;
     for (size_t k = 0; ok && k < n_sets; ++k) {
-        char msg[256];
+        char msg[512], buf[128];
         if (sd_set(doc, sets[k], set_paths[k], sizeof set_paths[k], msg, sizeof msg) != 0) {
-            snprintf(err, errlen, "--set %s: %s: %s", sets[k], set_paths[k], msg);
+            snprintf(err, errlen, "--set %s: %s: %s", shown_set(sets[k], buf, sizeof buf),
+                     set_paths[k], msg);
             ok = 0;
         }
     }
@@ -94,6 +170,8 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         if (sd_build(doc, p, &s->fit, &is) != 0) {
             report(text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err, errlen);
             ok = 0;
+        } else {
+            node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
         }
     } else if (!set_paths || !s) {
         snprintf(err, errlen, "out of memory");
@@ -107,32 +185,63 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     return s;
 }
 
+/* The bytes of a scene file.  Only a regular file is read: a FIFO would
+ * block (it is opened without waiting for a writer, then refused), a device
+ * such as /dev/zero would be read until memory runs out.  Returns the text
+ * (NUL-terminated, *len bytes), or NULL with a message. */
+static char *read_scene(const char *path, size_t *len, char *err, size_t errlen)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0) {
+        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+        }
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: not a regular file (a scene is read from a file, not a %s)",
+                 path, S_ISDIR(st.st_mode) ? "directory" : "device, FIFO or socket");
+        close(fd);
+        return NULL;
+    }
+    if (st.st_size > TF_SCENE_MAX_BYTES) {
+        snprintf(err, errlen, "%s: %lld bytes, more than the %d MiB a scene file may hold", path,
+                 (long long)st.st_size, TF_SCENE_MAX_BYTES >> 20);
+        close(fd);
+        return NULL;
+    }
+    size_t cap = (size_t)st.st_size + 1, used = 0; /* one more: a file that grew is seen */
+    char *text = malloc(cap + 1);
+    ssize_t n = 1;
+    while (text != NULL && used < cap && n > 0) {
+        n = read(fd, text + used, cap - used);
+        if (n < 0 && errno == EINTR) {
+            n = 1;
+        } else if (n > 0) {
+            used += (size_t)n;
+        }
+    }
+    int saved = errno;
+    close(fd);
+    if (text == NULL || n < 0 || used == cap) {
+        snprintf(err, errlen, "%s: cannot read: %s", path,
+                 text == NULL ? "out of memory" : n < 0 ? strerror(saved) : "it changed while read");
+        free(text);
+        return NULL;
+    }
+    text[used] = '\0';
+    *len = used;
+    return text;
+}
+
 tf_scene *tf_scene_load(const char *path, const char *const *sets, size_t n_sets, char *err,
                         size_t errlen)
 {
-    FILE *fp = fopen(path, "rb");
-    if (fp == NULL) {
-        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 1 << 16, len = 0;
-    char *text = malloc(cap);
-    while (text != NULL) {
-        len += fread(text + len, 1, cap - len, fp);
-        if (len < cap) {
-            break;
-        }
-        char *grown = realloc(text, cap *= 2);
-        if (grown == NULL) {
-            free(text);
-        }
-        text = grown;
-    }
-    int bad = text == NULL || ferror(fp);
-    fclose(fp);
-    if (bad) {
-        free(text);
-        snprintf(err, errlen, "%s: cannot read", path);
+    size_t len = 0;
+    char *text = read_scene(path, &len, err, errlen);
+    if (text == NULL) {
         return NULL;
     }
     tf_scene *s = tf_scene_load_text(text, len, path, sets, n_sets, err, errlen);

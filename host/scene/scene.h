@@ -20,7 +20,13 @@
 typedef struct tf_scene {
     tf_problem problem;
     tf_fit_plan fit;    /* the fit: section (contact -1 when there is no contact site) */
+    /* Warnings for the user, one per line ("" when none): a node number
+     * from the file when --set changed the grid that numbered it. */
+    char warnings[2048];
 } tf_scene;
+
+/* A scene file is a regular file of at most this many bytes. */
+#define TF_SCENE_MAX_BYTES (16 << 20)
 
 /* Reads a scene file, applies the overrides ("key=value", e.g.
  * "geometry.grid=41,41,9") in order, validates and resolves it.  Returns

@@ -12,6 +12,7 @@
 
 #include "fitting/families/family.h"
 #include "problem/regions.h"
+#include "scene/scene_grading.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
@@ -62,8 +63,9 @@ static int check_box(const sd_box *b, const char *path, sd_issue *is)
     return 0;
 }
 
-static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
+static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
+    const sd_geometry *g = &doc->geometry;
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;
     }
@@ -89,7 +91,12 @@ static int geometry(const sd_geometry *g, tf_problem *s, sd_issue *is)
     if (!(box->jitter >= 0 && box->jitter <= 0.4)) {
         return fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
     }
-    if (tf_cloud_box(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed) != 0) {
+    if (sd_grading(doc, box->min, box->max, &box->grading, is->msg, sizeof is->msg) != 0) {
+        snprintf(is->path, sizeof is->path, "geometry.grading");
+        return -1;
+    }
+    if (tf_cloud_box_graded(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed,
+                            &box->grading) != 0) {
         return fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
     }
     return 0;
@@ -191,6 +198,24 @@ static int node_index(uint32_t number, const tf_problem *s, const char *path, ui
     return 0;
 }
 
+/* A position given in the scene: finite and inside the body. */
+static int position(const double *x, const tf_problem *s, const char *path, double out[3],
+                    sd_issue *is)
+{
+    double tol = tf_cloud_tol(&s->cloud);
+    if (!finite_all(x, 3)) {
+        return fail(is, path, "must be three finite coordinates (mm)");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (x[a] < s->cloud.lo[a] - tol || x[a] > s->cloud.hi[a] + tol) {
+            return fail(is, path, "(%g, %g, %g) mm lies outside the body (%c in [%g, %g])", x[0],
+                        x[1], x[2], "xyz"[a], s->cloud.lo[a], s->cloud.hi[a]);
+        }
+        out[a] = x[a];
+    }
+    return 0;
+}
+
 static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     char p[128];
@@ -203,14 +228,15 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
         const sd_load *d = &doc->loads[k];
         tf_load *l = &s->loads[k];
         l->exact = d->exact && *d->exact;
-        if ((d->node != NULL) == (d->patch != NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL), "give exactly one of node or patch");
+        if ((d->node != NULL) + (d->at != NULL) + (d->patch != NULL) != 1) {
+            return fail(is, at(p, sizeof p, "loads", k, NULL),
+                        "give exactly one of node, at or patch");
         }
         if (l->exact == (d->force != NULL)) {
             return fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of force or exact: true");
         }
-        if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->node != NULL)) {
+        if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->patch == NULL)) {
             return fail(is, at(p, sizeof p, "loads", k, "exact"),
                         "exact: true needs a reference section and a patch");
         }
@@ -225,10 +251,54 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
             if (node_index(*d->node, s, at(p, sizeof p, "loads", k, "node"), &l->patch.node, is)) {
                 return -1;
             }
+        } else if (d->at) {
+            l->patch.shape = TF_PATCH_AT;
+            if (position(d->at, s, at(p, sizeof p, "loads", k, "at"), l->patch.at, is) != 0) {
+                return -1;
+            }
         } else if (sd_resolve_patch(d->patch, &s->cloud, &l->patch, is->msg, sizeof is->msg) != 0) {
             snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "loads", k, "patch"));
             return -1;
         }
+    }
+    return 0;
+}
+
+/* Where a contact site is: a node number, a point, or its patch's centre;
+ * and how its force is spread (its patch, else a point force there). */
+static int contact_site(const sd_contact *d, const tf_problem *s, size_t k, tf_contact *c,
+                        sd_issue *is)
+{
+    char p[128];
+    int forms = (d->node != NULL) + (d->at != NULL);
+    if (forms > 1 || (forms == 0 && d->patch == NULL)) {
+        return fail(is, at(p, sizeof p, "contact", k, NULL),
+                    "give the contact point as one of node or at (or neither, with a patch: "
+                    "its centre)");
+    }
+    if (d->patch && sd_resolve_patch(d->patch, &s->cloud, &c->patch, is->msg, sizeof is->msg) != 0) {
+        snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "contact", k, "patch"));
+        return -1;
+    }
+    c->by_node = d->node != NULL;
+    if (d->node) {
+        if (node_index(*d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
+            return -1;
+        }
+        memcpy(c->at, s->cloud.xyz + 3 * (size_t)c->node, sizeof c->at);
+    } else if (d->at) {
+        if (position(d->at, s, at(p, sizeof p, "contact", k, "at"), c->at, is) != 0) {
+            return -1;
+        }
+        c->node = tf_problem_nearest_node(s, c->at);
+    } else {
+        tf_problem_patch_centre(&c->patch, &s->cloud, c->at);
+        c->node = tf_problem_nearest_node(s, c->at);
+    }
+    if (d->patch == NULL) {
+        c->patch.shape = c->by_node ? TF_PATCH_POINT : TF_PATCH_AT;
+        c->patch.node = c->node;
+        memcpy(c->patch.at, c->at, sizeof c->at);
     }
     return 0;
 }
@@ -255,13 +325,7 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                             "'%s' names contact %zu already", c->name, j);
             }
         }
-        if (node_index(d->node, s, at(p, sizeof p, "contact", k, "node"), &c->node, is) != 0) {
-            return -1;
-        }
-        c->patch.shape = TF_PATCH_POINT;
-        c->patch.node = c->node;
-        if (d->patch && sd_resolve_patch(d->patch, &s->cloud, &c->patch, is->msg, sizeof is->msg) != 0) {
-            snprintf(is->path, sizeof is->path, "%s", at(p, sizeof p, "contact", k, "patch"));
+        if (contact_site(d, s, k, c, is) != 0) {
             return -1;
         }
     }
@@ -326,6 +390,11 @@ static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* The default multiquadric length: d_c relative to the local nodal spacing
+ * (docs/validation.md, the shape-parameter study); 0 would make the seed's
+ * absolute d_c = 2 mm the default. */
+#define SD_D_C_SPACINGS 8.0
+
 tf_solver_opts sd_solver_defaults(const unsigned grid[3])
 {
     tf_solver_opts o = {
@@ -334,6 +403,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .centre = TF_SUPPORT_CELL,
         .alpha_c = 1.0,
         .d_c = 2.0,
+        .d_c_spacings = SD_D_C_SPACINGS,
         .q = 1.03,
         .polynomial = 1,
         .volumetric = TF_VOLUMETRIC_CELL,
@@ -366,9 +436,18 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     o->support = d->support ? *d->support : o->support;
     o->centre = d->centre ? (tf_support_centre)*d->centre : o->centre;
     if (d->rbf) {
+        if (d->rbf->d_c && d->rbf->spacings) {
+            return fail(is, "solver.rbf",
+                        "give d_c (mm, absolute) or spacings (d_c relative to the local "
+                        "nodal spacing), not both");
+        }
         o->alpha_c = d->rbf->alpha_c ? *d->rbf->alpha_c : o->alpha_c;
         o->d_c = d->rbf->d_c ? *d->rbf->d_c : o->d_c;
+        o->d_c_spacings = d->rbf->d_c ? 0 : d->rbf->spacings ? *d->rbf->spacings : o->d_c_spacings;
         o->q = d->rbf->q ? *d->rbf->q : o->q;
+        if (d->rbf->spacings && !(isfinite(o->d_c_spacings) && o->d_c_spacings > 0)) {
+            return fail(is, "solver.rbf.spacings", "must be a positive number of nodal spacings");
+        }
     }
     o->polynomial = d->polynomial ? *d->polynomial : o->polynomial;
     o->volumetric = d->volumetric ? (tf_volumetric)*d->volumetric : o->volumetric;
@@ -490,7 +569,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (doc->name) {
         snprintf(s->name, sizeof s->name, "%s", doc->name);
     }
-    if (geometry(&doc->geometry, s, is) != 0 || material(&doc->material, s, is) != 0 ||
+    if (geometry(doc, s, is) != 0 || material(&doc->material, s, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||

@@ -28,8 +28,9 @@ static void level_sets(const tf_problem *b, tf_vary vary, unsigned k, char sets[
     snprintf(sets[0], sizeof sets[0], "geometry.grid=%u,%u,%u", grid[0], grid[1], grid[2]);
     snprintf(sets[1], sizeof sets[1], "geometry.box.max=%.17g,%.17g,%.17g", hi[0], hi[1], hi[2]);
     snprintf(sets[2], sizeof sets[2], "solver.cells=%u,%u,%u", cells[0], cells[1], cells[2]);
+    /* an absolute d_c halves with the spacing; a relative one does by itself */
     snprintf(sets[3], sizeof sets[3], "solver.rbf.d_c=%.17g", b->solver.d_c / f);
-    *n = 4;
+    *n = b->solver.d_c_spacings > 0 ? 3 : 4;
 }
 
 tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,

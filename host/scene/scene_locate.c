@@ -164,9 +164,10 @@ static void backtrace_path(const char *log, char *path, size_t pathlen)
     while (p != NULL && (p = strchr(p, '\n')) != NULL && strncmp(++p, "  in ", 5) == 0 &&
            n < SD_PATH_MAX) {
         const char *eol = p + strcspn(p, "\n"), *f = strstr(p, "field '"), *e = strstr(p, "entry '");
-        const char *q = f && f < eol ? f + 7 : e && e < eol ? e + 7 : NULL;
+        int is_field = f != NULL && f < eol; /* no arithmetic on a NULL f (UB) */
+        const char *q = is_field ? f + 7 : e != NULL && e < eol ? e + 7 : NULL;
         const char *end = q ? strchr(q, '\'') : NULL;
-        if (end != NULL && end < eol && q == f + 7) {
+        if (end != NULL && end < eol && is_field) {
             snprintf(comps[n++], sizeof comps[0], "%.*s", (int)(end - q), q);
         } else if (end != NULL && end < eol) {
             snprintf(comps[n++], sizeof comps[0], "%ld", strtol(q, NULL, 10) - 1);
@@ -240,7 +241,8 @@ static int invalid_value(const char *log, char *arg, size_t len)
 {
     const char *p = strstr(log, "Invalid ");
     const char *v = p ? strstr(p, " value: ") : NULL;
-    if (v == NULL || strchr(p, '\n') < v) {
+    const char *nl = p ? strchr(p, '\n') : NULL;
+    if (v == NULL || (nl != NULL && nl < v)) {
         return 0;
     }
     v += 8;
@@ -304,9 +306,14 @@ void sd_explain(const char *text, size_t len, const sd_log *log, const char *bas
         sscanf(arg, "%31[A-Z_]", want);
         snprintf(msg, msglen, "expected %s, got %s", type_name(want),
                  got ? event_name(got + 11) : "something else");
+    } else if (after(t, "STRING length > ", arg, sizeof arg)) {
+        snprintf(msg, msglen, "at most %ld characters", strtol(arg, NULL, 10));
+    } else if (after(t, "STRING length < ", arg, sizeof arg)) {
+        snprintf(msg, msglen, "at least %ld characters", strtol(arg, NULL, 10));
     } else if (after(t, "libyaml: ", arg, sizeof arg)) {
         snprintf(msg, msglen, "YAML syntax error: %s", arg);
-    } else if (after(t, "Load: ", arg, sizeof arg)) {
+    } else if (after(t, "Load: ", arg, sizeof arg) && arg[0] != '\0' &&
+               strncmp(arg, "Backtrace", 9) != 0) {
         snprintf(msg, msglen, "%s", arg);
     } else {
         snprintf(msg, msglen, "not a valid scene");

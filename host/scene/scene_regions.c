@@ -72,19 +72,97 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
     return -1;
 }
 
+/* Point j of a lattice: count[a] points evenly from min to max per axis
+ * (x fastest; a count of 1 sits at min, the last point exactly at max). */
+static void lattice_point(const sd_lattice *l, size_t j, double x[3])
+{
+    size_t ijk[3] = {j % l->count[0], j / l->count[0] % l->count[1],
+                     j / ((size_t)l->count[0] * l->count[1])};
+    for (int a = 0; a < 3; ++a) {
+        unsigned m = l->count[a];
+        x[a] = m == 1 || ijk[a] == 0 ? l->min[a]
+               : ijk[a] + 1 == m     ? l->max[a]
+                                     : l->min[a] + (double)ijk[a] * (l->max[a] - l->min[a]) / (m - 1);
+    }
+}
+
+/* select: points — a list of points, or a lattice of them. */
+static int output_points(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
+                         size_t msglen)
+{
+    const sd_lattice *l = d->lattice;
+    if ((d->points != NULL) == (l != NULL)) {
+        return outputs_fail(msg, msglen, "select: points takes points (a list) or lattice, not both");
+    }
+    size_t n = l ? (size_t)l->count[0] * l->count[1] * l->count[2] : d->points_count;
+    if (n == 0 || n > 100000) {
+        return outputs_fail(msg, msglen, "1 to 100000 points (a lattice counts >= 1 per axis)");
+    }
+    o->points = malloc(3 * n * sizeof *o->points);
+    o->nodes = malloc(n * sizeof *o->nodes);
+    if (o->points == NULL || o->nodes == NULL) {
+        return outputs_fail(msg, msglen, "out of memory");
+    }
+    double tol = tf_cloud_tol(&s->cloud);
+    for (size_t j = 0; j < n; ++j) {
+        double *x = o->points + 3 * j;
+        if (l) {
+            lattice_point(l, j, x);
+        } else {
+            memcpy(x, d->points[j], 3 * sizeof *x);
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (!(isfinite(x[a]) && x[a] >= s->cloud.lo[a] - tol && x[a] <= s->cloud.hi[a] + tol)) {
+                snprintf(msg, msglen, "point %zu (%g, %g, %g) mm is not inside the body", j + 1,
+                         x[0], x[1], x[2]);
+                return -1;
+            }
+        }
+        o->nodes[j] = tf_problem_nearest_node(s, x);
+    }
+    o->n_nodes = n;
+    return 0;
+}
+
+/* select: contact — the contact points (a site given by node: its node). */
+static int contact_points(const tf_problem *s, tf_outputs *o, char *msg, size_t msglen)
+{
+    int by_position = 0;
+    for (size_t k = 0; k < s->n_contacts; ++k) {
+        o->nodes[o->n_nodes++] = s->contacts[k].node;
+        by_position |= !s->contacts[k].by_node;
+    }
+    if (by_position && o->n_nodes > 0) {
+        o->points = malloc(3 * o->n_nodes * sizeof *o->points);
+        if (o->points == NULL) {
+            return outputs_fail(msg, msglen, "out of memory");
+        }
+        for (size_t k = 0; k < o->n_nodes; ++k) {
+            memcpy(o->points + 3 * k, s->contacts[k].at, 3 * sizeof *o->points);
+        }
+    }
+    return 0;
+}
+
 int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
                        size_t msglen)
 {
     o->kind = (tf_output_kind)d->select;
+    o->points = NULL;
     int has_nodes = d->nodes != NULL || d->nodes_count > 0;
+    int has_points = d->points != NULL || d->lattice != NULL;
     if (o->kind == TF_OUT_NODES && d->nodes_count == 0) {
         return outputs_fail(msg, msglen, "select: nodes needs a non-empty nodes list");
     }
     if ((d->face != NULL) != (o->kind == TF_OUT_FACE) ||
-        (d->box != NULL) != (o->kind == TF_OUT_BOX) || has_nodes != (o->kind == TF_OUT_NODES)) {
+        (d->box != NULL) != (o->kind == TF_OUT_BOX) || has_nodes != (o->kind == TF_OUT_NODES) ||
+        has_points != (o->kind == TF_OUT_POINTS)) {
         return outputs_fail(msg, msglen,
-                            "select: face takes face, box takes box, nodes takes nodes; all "
-                            "and contact take nothing else");
+                            "select: face takes face, box takes box, nodes takes nodes, points "
+                            "takes points or lattice; all and contact take nothing else");
+    }
+    if (o->kind == TF_OUT_POINTS) {
+        return output_points(d, s, o, msg, msglen);
     }
     size_t n = s->cloud.n;
     o->nodes = malloc((n > d->nodes_count ? n : d->nodes_count) * sizeof *o->nodes + 1);
@@ -117,10 +195,8 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
             }
             o->nodes[o->n_nodes++] = d->nodes[k] - 1;
         }
-    } else {
-        for (size_t k = 0; k < s->n_contacts; ++k) {
-            o->nodes[o->n_nodes++] = s->contacts[k].node;
-        }
+    } else if (contact_points(s, o, msg, msglen) != 0) {
+        return -1;
     }
     if (o->n_nodes == 0) {
         return outputs_fail(msg, msglen, "the selection holds no node: nothing to output");

@@ -29,7 +29,7 @@ static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
 static const cyaml_strval_t selects[] = {
     {"all", TF_OUT_ALL},     {"face", TF_OUT_FACE},       {"box", TF_OUT_BOX},
-    {"nodes", TF_OUT_NODES}, {"contact", TF_OUT_CONTACT},
+    {"nodes", TF_OUT_NODES}, {"contact", TF_OUT_CONTACT}, {"points", TF_OUT_POINTS},
 };
 static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", TF_SUPPORT_CELL}};
 static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
@@ -50,6 +50,7 @@ static const cyaml_schema_field_t box_fields[] = {
 static const cyaml_schema_field_t geometry_fields[] = {
     CYAML_FIELD_MAPPING_PTR("box", CYAML_FLAG_DEFAULT, sd_geometry, box, box_fields),
     CYAML_FIELD_SEQUENCE_FIXED("grid", CYAML_FLAG_DEFAULT, sd_geometry, grid, &count, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("grading", OPT_PTR, sd_geometry, grading, &real, 3),
     CYAML_FIELD_FLOAT_PTR("jitter", OPT, sd_geometry, jitter),
     CYAML_FIELD_UINT_PTR("seed", OPT, sd_geometry, seed),
     CYAML_FIELD_END,
@@ -91,6 +92,7 @@ static const cyaml_schema_field_t patch_fields[] = {
 
 static const cyaml_schema_field_t load_fields[] = {
     CYAML_FIELD_UINT_PTR("node", OPT, sd_load, node),
+    CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_load, at, &real, 3),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_load, patch, patch_fields),
     CYAML_FIELD_SEQUENCE_FIXED("force", OPT_PTR, sd_load, force, &real, 3),
     CYAML_FIELD_BOOL_PTR("exact", OPT, sd_load, exact),
@@ -101,7 +103,8 @@ static const cyaml_schema_value_t load_entry = {
 
 static const cyaml_schema_field_t contact_fields[] = {
     CYAML_FIELD_STRING_PTR("name", OPT, sd_contact, name, 1, TF_PROBLEM_NAME_MAX - 1),
-    CYAML_FIELD_UINT("node", CYAML_FLAG_DEFAULT, sd_contact, node),
+    CYAML_FIELD_UINT_PTR("node", OPT, sd_contact, node),
+    CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_contact, at, &real, 3),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_contact, patch, patch_fields),
     CYAML_FIELD_END,
 };
@@ -114,11 +117,23 @@ static const cyaml_schema_field_t envelope_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_value_t point = {
+    CYAML_VALUE_SEQUENCE_FIXED(CYAML_FLAG_DEFAULT, double, &real, 3)};
+
+static const cyaml_schema_field_t lattice_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("min", CYAML_FLAG_DEFAULT, sd_lattice, min, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("max", CYAML_FLAG_DEFAULT, sd_lattice, max, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("count", CYAML_FLAG_DEFAULT, sd_lattice, count, &count, 3),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t outputs_fields[] = {
     CYAML_FIELD_ENUM("select", CYAML_FLAG_STRICT, sd_outputs, select, selects, N(selects)),
     CYAML_FIELD_ENUM_PTR("face", STRICT_OPT, sd_outputs, face, faces, N(faces)),
     CYAML_FIELD_MAPPING_PTR("box", OPT, sd_outputs, box, box_fields),
     CYAML_FIELD_SEQUENCE("nodes", OPT_PTR, sd_outputs, nodes, &node_number, 0, CYAML_UNLIMITED),
+    CYAML_FIELD_SEQUENCE("points", OPT_PTR, sd_outputs, points, &point, 1, CYAML_UNLIMITED),
+    CYAML_FIELD_MAPPING_PTR("lattice", OPT, sd_outputs, lattice, lattice_fields),
     CYAML_FIELD_END,
 };
 
@@ -137,6 +152,7 @@ static const cyaml_schema_value_t cut_entry = {
 static const cyaml_schema_field_t rbf_fields[] = {
     CYAML_FIELD_FLOAT_PTR("alpha_c", OPT, sd_rbf, alpha_c),
     CYAML_FIELD_FLOAT_PTR("d_c", OPT, sd_rbf, d_c),
+    CYAML_FIELD_FLOAT_PTR("spacings", OPT, sd_rbf, spacings),
     CYAML_FIELD_FLOAT_PTR("q", OPT, sd_rbf, q),
     CYAML_FIELD_END,
 };

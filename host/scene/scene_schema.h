@@ -24,6 +24,7 @@ typedef struct sd_box {
 typedef struct sd_geometry {
     sd_box *box;       /* required today; `surface:` will be the alternative */
     unsigned grid[3];
+    double *grading;   /* 3: largest / smallest spacing per axis */
     double *jitter;
     uint64_t *seed;
 } sd_geometry;
@@ -57,6 +58,7 @@ typedef struct sd_patch {
 
 typedef struct sd_load {
     uint32_t *node;
+    double *at;      /* 3: a point force's position, mm */
     sd_patch *patch;
     double *force;   /* 3 */
     bool *exact;
@@ -64,7 +66,8 @@ typedef struct sd_load {
 
 typedef struct sd_contact {
     char *name;
-    uint32_t node;
+    uint32_t *node;
+    double *at;      /* 3: the contact point, mm */
     sd_patch *patch;
 } sd_contact;
 
@@ -73,17 +76,26 @@ typedef struct sd_envelope {
     double *centre;  /* 3 */
 } sd_envelope;
 
+typedef struct sd_lattice {
+    double min[3], max[3];
+    unsigned count[3];
+} sd_lattice;
+
 typedef struct sd_outputs {
     int select;      /* tf_output_kind */
     int *face;
     sd_box *box;
     uint32_t *nodes;
     unsigned nodes_count;
+    double (*points)[3];
+    unsigned points_count;
+    sd_lattice *lattice;
 } sd_outputs;
 
 typedef struct sd_rbf {
     double *alpha_c;
     double *d_c;
+    double *spacings; /* d_c in local nodal spacings */
     double *q;
 } sd_rbf;
 

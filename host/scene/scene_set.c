@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "scene/scene_locate.h"
+#include "scene/scene_strict.h"
 
 static void *mem(size_t size)
 {
@@ -40,43 +41,58 @@ static void write_count(uint8_t *base, const cyaml_schema_field_t *f, unsigned c
     memcpy(base + f->count_offset, &v, f->count_size);
 }
 
-/* Loads value text with schema v (as a top-level pointer value). */
-static void *load_value(const cyaml_schema_value_t *v, const char *path, const char *text,
-                        unsigned *count, char *err, size_t errlen)
+/* Loads value text with schema v (as a top-level pointer value), after the
+ * checks a scene file's values get (scene_strict.h). */
+static void *load_value(const cyaml_schema_value_t *v, char *path, size_t pathlen,
+                        const char *text, unsigned *count, char *err, size_t errlen)
 {
     cyaml_schema_value_t top = *v;
     top.flags = (enum cyaml_flag)(top.flags | CYAML_FLAG_POINTER);
     top.flags = (enum cyaml_flag)(top.flags & ~CYAML_FLAG_OPTIONAL);
-    char buf[1024];
     int list = v->type == CYAML_SEQUENCE || v->type == CYAML_SEQUENCE_FIXED ||
                v->type == CYAML_FLAGS;
-    snprintf(buf, sizeof buf, list && text[0] != '[' ? "[%s]" : "%s", text);
+    int bracket = list && text[0] != '[';
+    size_t len = strlen(text) + 2 * (size_t)bracket;
+    char *buf = malloc(len + 1);
+    *count = 0;
+    if (buf == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    snprintf(buf, len + 1, bracket ? "[%s]" : "%s", text);
+    sd_strict_issue si;
+    if (sd_strict_check(buf, len, v, path, &si) != 0) {
+        if (si.path[0] != '\0') {
+            snprintf(path, pathlen, "%s", si.path); /* the entry or key at fault */
+        }
+        snprintf(err, errlen, "%s", si.msg);
+        free(buf);
+        return NULL;
+    }
     sd_log log = {.len = 0};
     cyaml_config_t cfg = sd_config(&log);
     void *out = NULL;
-    *count = 0;
-    cyaml_err_t rc = cyaml_load_data((const uint8_t *)buf, strlen(buf), &cfg, &top, &out,
+    cyaml_err_t rc = cyaml_load_data((const uint8_t *)buf, len, &cfg, &top, &out,
                                      v->type == CYAML_SEQUENCE ? count : NULL);
     if (rc != CYAML_OK) {
         int line;
         char where[128], msg[256];
-        sd_explain(buf, strlen(buf), &log, path, &line, where, sizeof where, msg, sizeof msg);
+        sd_explain(buf, len, &log, path, &line, where, sizeof where, msg, sizeof msg);
         snprintf(err, errlen, "%s", log.len ? msg : cyaml_strerror(rc));
-        return NULL;
-    }
-    if (out == NULL) {
+    } else if (out == NULL) {
         snprintf(err, errlen, "no value given");
     }
+    free(buf);
     return out;
 }
 
 /* Replaces the value of field f in the mapping at base. */
-static int assign(uint8_t *base, const cyaml_schema_field_t *f, const char *path,
+static int assign(uint8_t *base, const cyaml_schema_field_t *f, char *path, size_t pathlen,
                   const char *text, char *err, size_t errlen)
 {
     const cyaml_schema_value_t *v = &f->value;
     unsigned count;
-    void *out = load_value(v, path, text, &count, err, errlen);
+    void *out = load_value(v, path, pathlen, text, &count, err, errlen);
     if (out == NULL) {
         return -1;
     }
@@ -157,7 +173,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             return -1;
         }
         if (k == n - 1) {
-            return assign(base, f, path, eq + 1, err, errlen);
+            return assign(base, f, path, pathlen, eq + 1, err, errlen);
         }
         if (f->value.type == CYAML_SEQUENCE) {
             char *end;
@@ -171,7 +187,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             if (++k == n - 1) {
                 cyaml_schema_field_t whole = {.key = f->key, .data_offset = 0,
                                               .value = *f->value.sequence.entry};
-                return assign(e, &whole, path, eq + 1, err, errlen);
+                return assign(e, &whole, path, pathlen, eq + 1, err, errlen);
             }
             base = e;
             v = f->value.sequence.entry;

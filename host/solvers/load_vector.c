@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "problem/analytic.h"
 
@@ -54,7 +55,14 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
         return 0;
     }
     size_t nq = 0;
-    tf_qpoint *q = tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
+    tf_qpoint *q = t->p->shape == TF_PATCH_AT ? malloc(sizeof *q)
+                                              : tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
+    if (q != NULL && t->p->shape == TF_PATCH_AT) {
+        /* a point force: the Galerkin load phi_I(x) F (eq 25 with a point traction) */
+        memcpy(q->x, t->p->at, sizeof q->x);
+        q->w = 1;
+        nq = 1;
+    }
     if (q == NULL) {
         snprintf(err, errlen, "out of memory");
         return -1;
@@ -88,7 +96,7 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
 int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
                   char *err, size_t errlen)
 {
-    traction t = {NULL, p, force, tf_patch_area(p, sh->cloud), 0};
+    traction t = {NULL, p, force, p->shape == TF_PATCH_AT ? 1 : tf_patch_area(p, sh->cloud), 0};
     return integrate(sh, &t, f, err, errlen);
 }
 

@@ -8,7 +8,7 @@
 # CalculiX level (the lips open, by about the right amount).
 set -eu
 deck=$1 tool=$2 out=$3 data=$4
-COARSE_BOUND=0.20
+COARSE_BOUND=0.30
 mkdir -p "$out"
 "$deck" --divisions 4 > "$out/slit_n4.inp"
 (cd "$out" && OMP_NUM_THREADS=1 ccx -i slit_n4 > slit_n4.log 2>&1) ||

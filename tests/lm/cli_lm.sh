@@ -31,6 +31,9 @@ grep -q "^b2,0.000550156" "$tmp/out" || bad "Misra1a b2 estimate"
 six_digits "Misra1a" 3
 grep -q "Misra1a start 1: stop" "$tmp/err" || bad "no progress line on stderr"
 cp "$tmp/out" "$tmp/crlf.csv"
+expect 1 "Misra1a, standard output on a full disk" -- sh -c '"$0" lm-strd "$1" --start 1 >/dev/full' \
+    "$tool" "$dir/Misra1a.dat"
+grep -q "cannot write standard output" "$tmp/err" || bad "a full standard output is not reported"
 tr -d '\r' <"$dir/Misra1a.dat" >"$tmp/Misra1a-lf.dat"
 expect 0 "Misra1a start 1 (LF)" -- "$tool" lm-strd "$tmp/Misra1a-lf.dat" --start 1
 cmp -s "$tmp/out" "$tmp/crlf.csv" || bad "LF and CRLF copies give different results"

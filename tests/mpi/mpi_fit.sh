@@ -5,14 +5,17 @@
 #   - counter-test: one ulp more on every value rank 1 solves
 #     (TF_TEST_NUDGE_RANK, tests/mpi/variant_solver.c, when MPI is the
 #     variant build) must change the header: the comparison sees the cases;
-#   - a rank that fails (TF_TEST_FAIL_RANK=2, three ranks) and a case that
+#   - a rank that fails (TF_TEST_FAIL_RANK=2, three ranks; rank 0 held back by
+#     TF_TEST_HOLD_RANK0_MS so that workers get cases on a busy machine) and a case that
 #     fails wherever it is solved (TF_TEST_FAIL_FZ) stop the run with exit
 #     1, the case and the rank named, nothing written and an existing
 #     header left as it was;
 #   - before any case: a rank that cannot build its solver
 #     (TF_TEST_FAIL_CREATE_RANK) stops every rank with exit 1 and its
 #     message; a rank that reads another scene (mpirun's MPMD form), or
-#     runs other OpenBLAS kernels, with exit 2.
+#     runs other OpenBLAS kernels, with exit 2;
+#   - (issue 19) a missing output directory refused before any case (exit
+#     2), standard output that cannot be written is a failure (exit 1).
 # Extra arguments go to every fit.  MPIRUN may carry mpirun's options.
 set -u
 serial=$1 mpi=$2 scene=$3
@@ -44,7 +47,7 @@ done
 if [ -n "${VARIANT:-}" ]; then
     mkdir -p "$tmp/nudged"
     expect 0 "mpirun -n 2, rank 1 one ulp off" -- $mpirun -n 2 --oversubscribe \
-        -x TF_TEST_NUDGE_RANK=1 "$mpi" -q fit "$scene" "$@" -o "$tmp/nudged/$name.h"
+        -x TF_TEST_NUDGE_RANK=1 -x TF_TEST_HOLD_RANK0_MS=50 "$mpi" -q fit "$scene" "$@" -o "$tmp/nudged/$name.h"
     if cmp -s "$tmp/serial/$name.h" "$tmp/nudged/$name.h"; then
         bad "one ulp more on rank 1's cases left the header unchanged: the comparison is blind"
     else
@@ -52,8 +55,8 @@ if [ -n "${VARIANT:-}" ]; then
     fi
 
     echo "keep" >"$tmp/w/kept.h"
-    expect 1 "rank 2 fails its third case" -- $mpirun -n 3 --oversubscribe \
-        -x TF_TEST_FAIL_RANK=2 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/kept.h"
+    expect 1 "rank 2 fails its first case" -- $mpirun -n 3 --oversubscribe \
+        -x TF_TEST_FAIL_RANK=2 -x TF_TEST_HOLD_RANK0_MS=50 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/kept.h"
     says "rank 2's failure" "case [0-9]* of [0-9]*, force (.*) N) on rank 2: Newton did not converge"
     expect 1 "a case that fails anywhere" -- $mpirun -n 2 --oversubscribe \
         -x TF_TEST_FAIL_FZ=-0.97 "$mpi" -q fit "$scene" "$@" -o "$tmp/w/x.h"
@@ -73,4 +76,10 @@ if [ -n "${VARIANT:-}" ]; then
     rm -f "$tmp/w/kept.h"
     nothing_written "failed runs"
 fi
+# issue 19: outputs checked before any case, standard output checked at exit
+expect 2 "mpirun -n 2 fit into a missing directory" -- $mpirun -n 2 --oversubscribe "$mpi" -q fit \
+    "$scene" "$@" -o "$tmp/missing/$name.h"
+says "missing directory" "$tmp/missing/$name.h: no directory"
+expect 1 "tissuefit-mpi --version >/dev/full" -- sh -c 'exec "$0" --version >/dev/full' "$mpi"
+says "--version >/dev/full" "cannot write standard output"
 finish "tissuefit-mpi fit of $name: 1, 2, 3 ranks"

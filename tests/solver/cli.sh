@@ -32,6 +32,30 @@ check "cantilever: 170 nodes, the free end (x = 48) deflected along +y" \
     awk -F, 'NR > 1 { n++ } $2 == 48 && $6 > 0 { tip++ } END { exit !(n == 170 && tip > 0) }' "$tmp/w/c.csv"
 rm -f "$tmp/w"/*
 
+# sites by position: outputs at points between nodes, the header names them
+A=tests/solver/block48_at.yaml
+expect 0 "solve, outputs at points between nodes" -- "$tool" -q solve $A --set geometry.grid=20,20,5 --force 0,0,-1 -o "$tmp/w/a.csv" --outputs "$tmp/w/o.csv"
+check "121 output points" test "$(wc -l <"$tmp/w/o.csv")" = 122
+check "output 61 at the top centre, pushed down" \
+    awk -F, '$1 == 61 { ok = ($2 == 24 && $3 == 24 && $4 == 6 && $7 < -2) } END { exit !ok }' "$tmp/w/o.csv"
+rm -f "$tmp/w"/*
+expect 0 "fit, outputs and contact by position" -- "$tool" -q fit $A -o "$tmp/w/b48at.h"
+check "header: 121 output points" grep -q "define TFIT_B48AT_OUTPUT_POINTS_N 121u" "$tmp/w/b48at.h"
+check "header: the contact point" grep -q "define TFIT_B48AT_CONTACT_POINT_MM" "$tmp/w/b48at.h"
+check "header: coefficients name points" grep -q "/\* point 61 z \*/" "$tmp/w/b48at.h"
+cat >"$tmp/pts.c" <<EOF
+#include "b48at.h"
+static const float points[TFIT_B48AT_OUTPUT_POINTS_N][3] = TFIT_B48AT_OUTPUT_POINTS_MM;
+static const float contact[3] = TFIT_B48AT_CONTACT_POINT_MM;
+int main(void) { return !(points[60][0] == 24.0f && points[60][2] == 6.0f && contact[1] == 24.0f); }
+EOF
+check "the point macros initialise float arrays (strict firmware flags)" sh -c \
+    "cc -std=c11 -Wall -Wextra -Werror -Wdouble-promotion -Wconversion -Wpedantic -Itarget/include -I'$tmp/w' '$tmp/pts.c' -o '$tmp/pts' && '$tmp/pts'"
+rm -f "$tmp/w"/*
+expect 0 "node number with the grid overridden" -- "$tool" solve $B --set geometry.grid=21,21,5 --force 0,0,-1 -o "$tmp/w/a.csv"
+check "warns where node 61 went" grep -q "contact.0.node: node 61 was numbered on the file's grid; with the grid overridden it is the node at (43.2, 4.8, 6) mm" "$tmp/err"
+rm -f "$tmp/w"/*
+
 expect 2 "solve without a scene" -- "$tool" solve
 says "no scene" "expected one scene file"
 expect 2 "solve with two scenes" -- "$tool" solve $B $B
@@ -44,6 +68,11 @@ expect 2 "solve, unknown contact" -- "$tool" solve $B --force 0,0,1 --contact no
 says "unknown contact" "has no contact site 'nowhere'"
 expect 2 "solve, force without a contact site" -- "$tool" solve coeffs/cantilever.yaml --force 0,0,1 -o "$tmp/w/a.csv"
 says "force without a contact site" "cantilever.yaml has no contact site for --force"
+expect 2 "solve, no load at all" -- "$tool" solve $B -o "$tmp/w/a.csv"
+says "no load at all" "nothing loads the body"
+expect 0 "solve, an explicit zero force" -- "$tool" -q solve $B --force 0,0,0 -o "$tmp/w/z.csv"
+check "zero force, zero field" awk -F, 'NR > 1 && ($5 != 0 || $6 != 0 || $7 != 0) { exit 1 }' "$tmp/w/z.csv"
+rm -f "$tmp/w"/*
 expect 2 "solve, unknown option" -- "$tool" solve $B --bogus -o "$tmp/w/a.csv"
 says "unknown option" "bad option '--bogus'"
 expect 2 "solve, missing scene file" -- "$tool" solve "$tmp/none.yaml" -o "$tmp/w/a.csv"
@@ -54,7 +83,7 @@ check "names file, line and field" grep -q "nu.yaml:9: material.nu" "$tmp/err"
 expect 2 "solve, bad --set" -- "$tool" solve $B --set solver.gauss=0 -o "$tmp/w/a.csv"
 check "names the override" grep -q "\-\-set solver.gauss=0: solver.gauss" "$tmp/err"
 nothing_written "bad input"
-expect 1 "solve into a missing directory" -- "$tool" -q solve $B --force 0,0,-1 -o "$tmp/missing/a.csv"
+expect 2 "solve into a missing directory (refused before the solve)" -- "$tool" -q solve $B --force 0,0,-1 -o "$tmp/missing/a.csv"
 check "names the output" grep -q "$tmp/missing/a.csv" "$tmp/err"
 expect 1 "solve, a body that is not held" -- "$tool" -q solve $B --set 'fixed=[{face: x-, components: [x]}]' --force 0,0,-1 -o "$tmp/w/a.csv"
 check "says why" grep -q "not positive definite" "$tmp/err"

@@ -101,6 +101,9 @@ static uint32_t top_rank(const tf_cases *c, const tf_fit_plan *plan)
     if (rmax > fold_cases) {
         rmax = (uint32_t)fold_cases;
     }
+    if (rmax > 3 * c->train.n_out) { /* no more modes than output components (3 outputs: 9) */
+        rmax = 3 * c->train.n_out;
+    }
     return rmax;
 }
 

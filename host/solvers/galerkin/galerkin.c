@@ -367,7 +367,7 @@ static void report(const tf_solver *s)
         tf_warn(s->ctx,
                 "%s: %zu of %zu local RPIM systems are ill-conditioned (reciprocal condition "
                 "below %.2g; worst %.2g near (%g, %g, %g) mm); the shape functions lose about "
-                "%.0f digits: lower solver.rbf.d_c or solver.support",
+                "%.0f digits: lower solver.rbf.spacings (or d_c) or solver.support",
                 s->problem->source, in->st.ill, in->st.systems, g->base.opts.rcond_warn,
                 in->st.min_rcond, in->st.worst_at[0], in->st.worst_at[1], in->st.worst_at[2],
                 in->st.min_rcond > 0 ? -log10(in->st.min_rcond) : 16.0);

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <cmocka.h>
+#include <zlib.h>
 
 #include "emit/emit_header.h"
 #include "model/golden.h"
@@ -219,12 +220,46 @@ static void failure_writes_nothing(void **state)
     free_models();
 }
 
+/* The header carries the CRC-32 of its golden file up to the pairing check,
+ * and the golden file compares it at compile time; hostile text copied into
+ * the banner is escaped (issue 19). */
+static void the_pair_names_each_other(void **state)
+{
+    (void)state;
+    char path[300], gpath[300];
+    make_models(5);
+    snprintf(path, sizeof path, "%s/pair.h", dir);
+    snprintf(gpath, sizeof gpath, "%s/pair_golden.h", dir);
+    char err[512];
+    const tf_emit_info hostile = {.source = "a*/b/*c?\?/\\d\ne.yaml", .notes = "x */ y /* z",
+                                  .golden_seed = 3};
+    assert_int_equal(tf_emit_header(path, two_models, 2, &hostile, err, sizeof err), 0);
+    size_t glen;
+    char *h = slurp(path, NULL), *g = slurp(gpath, &glen);
+    assert_non_null(h);
+    assert_non_null(g);
+    char *check = strstr(g, "\n/* pair.h carries the CRC-32 of this file up to here. */");
+    assert_non_null(check);
+    uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), (const Bytef *)g, (uInt)(check - g));
+    char want[96];
+    snprintf(want, sizeof want, "#define TFIT_PAIR_GOLDEN_CRC32 0x%08xu\n", crc);
+    assert_non_null(strstr(h, want));
+    snprintf(want, sizeof want, "TFIT_PAIR_GOLDEN_CRC32 != 0x%08xu\n#error", crc);
+    assert_non_null(strstr(g, want));
+    assert_non_null(strstr(h, " * source: a* /b/ *c? ?/\\x5cd\\x0ae.yaml\n"));
+    assert_non_null(strstr(h, " * x * / y / * z\n"));
+    free(h);
+    free(g);
+    free_models();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(header_content_and_exact_literals, setup, teardown),
         cmocka_unit_test_setup_teardown(emission_is_deterministic, setup, teardown),
         cmocka_unit_test_setup_teardown(failure_writes_nothing, setup, teardown),
+        cmocka_unit_test_setup_teardown(the_pair_names_each_other, setup, teardown),
     };
     return cmocka_run_group_tests_name("emit_header", tests, NULL, NULL);
 }

@@ -148,10 +148,47 @@ static void superposed_only_when_the_solver_is_affine(void **state)
     check_paths(loaded, 2);
 }
 
+/* Sites between nodes: the affine path evaluates the field there; the
+ * case list of a solver that is not affine keeps nodal values only and must
+ * refuse them, naming the point, rather than read the nearest node. */
+static void sites_between_nodes_need_an_affine_solver(void **state)
+{
+    (void)state;
+    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    const char *grid[] = {"geometry.grid=10,10,3"}; /* no node at the seed's points */
+    tf_scene *s = tf_scene_load("tests/solver/block48_at.yaml", grid, 1, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    tf_solver_ops plain = tf_galerkin_ops;
+    plain.name = "galerkin-without-caps";
+    plain.caps = no_caps;
+    tf_solver *affine = tf_solver_create(&s->problem, NULL, &ctx);
+    tf_solver *other = tf_solver_create_as(&plain, &s->problem, NULL, &ctx);
+    assert_non_null(affine);
+    assert_non_null(other);
+    tf_fit_plan plan;
+    tf_fit_plan_defaults(&plan);
+    plan.n_train = N_TRAIN;
+    plan.n_heldout = N_HELD;
+    tf_cases a, o;
+    assert_int_equal(tf_cases_build(&s->problem, affine, &plan, &a), 0);
+    assert_int_equal(tf_cases_build(&s->problem, other, &plan, &o), -1);
+    assert_non_null(strstr(ctx.err, "lies between nodes"));
+    tf_cases_free(&a);
+    tf_solver_destroy(affine);
+    tf_solver_destroy(other);
+    tf_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(superposed_only_when_the_solver_is_affine),
+        cmocka_unit_test(sites_between_nodes_need_an_affine_solver),
     };
     return cmocka_run_group_tests_name("cases", tests, NULL, NULL);
 }

@@ -51,8 +51,38 @@ static void queries_match_brute_force(void **state)
     free(xyz);
 }
 
+/* block48's grid with solver.support=1e-16: more bins per axis than an
+ * unsigned holds were asked for (0 bins and a crash before); a support that
+ * holds no node is an empty answer, with no buffer to sort. */
+static void a_tiny_support_still_bins(void **state)
+{
+    (void)state;
+    enum { nx = 11, ny = 11, nz = 3, n = nx * ny * nz };
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    for (size_t i = 0; i < n; ++i) {
+        xyz[3 * i] = 4.8 * (double)(i % nx);
+        xyz[3 * i + 1] = 4.8 * (double)(i / nx % ny);
+        xyz[3 * i + 2] = 3.0 * (double)(i / (nx * ny));
+    }
+    const double radius[3] = {4.8e-16, 4.8e-16, 3e-16};
+    tf_nbr g;
+    assert_int_equal(tf_nbr_build(&g, xyz, n, radius), 0);
+    size_t bins = (size_t)g.dims[0] * g.dims[1] * g.dims[2];
+    assert_true(bins >= 1 && bins <= 2 * n + 64);
+    uint32_t one[4];
+    for (size_t i = 0; i < n; i += 37) {
+        assert_int_equal(tf_nbr_query(&g, xyz + 3 * i, one, 4), 1);
+        assert_int_equal(one[0], i);
+    }
+    const double between[3] = {2.4, 2.4, 1.5};
+    assert_int_equal(tf_nbr_query(&g, between, NULL, 0), 0);
+    tf_nbr_free(&g);
+    free(xyz);
+}
+
 int main(void)
 {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(queries_match_brute_force)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(queries_match_brute_force),
+                                       cmocka_unit_test(a_tiny_support_still_bins)};
     return cmocka_run_group_tests_name("neighbours", tests, NULL, NULL);
 }

@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "scene/scene.h"
+#include "scene_refused.h"
 
 #define BLOCK48 "coeffs/block48.yaml"
 
@@ -96,62 +97,23 @@ static void overrides_change_every_kind_of_value(void **state)
     tf_scene_free(s);
 }
 
-/* Loads the base scene with lines line .. line + span - 1 replaced;
- * expects failure with all of the fragments in the message. */
-static const char *base_scene =
-    "name: t\n"                                      /* 1 */
-    "geometry:\n"                                    /* 2 */
-    "  box: {min: [0, 0, 0], max: [10, 10, 2]}\n"    /* 3 */
-    "  grid: [5, 5, 2]\n"                            /* 4 */
-    "material:\n"                                    /* 5 */
-    "  E: 1.0\n"                                     /* 6 */
-    "  nu: 0.3\n"                                    /* 7 */
-    "fixed:\n"                                       /* 8 */
-    "  - face: z-\n"                                 /* 9 */
-    "contact:\n"                                     /* 10 */
-    "  - node: 13\n"                                 /* 11 */
-    "outputs:\n"                                     /* 12 */
-    "  select: face\n"                               /* 13 */
-    "  face: z+\n";                                  /* 14 */
-
 static void expect_span(int line, int span, const char *replacement,
                         const char *const *fragments)
 {
-    char text[2048] = "", err[512] = "";
-    const char *p = base_scene;
-    for (int l = 1; *p; ++l) {
-        const char *nl = strchr(p, '\n');
-        size_t len = (size_t)(nl - p) + 1;
-        if (l == line) {
-            strcat(text, replacement);
-        } else if (l < line || l >= line + span) {
-            strncat(text, p, len);
-        }
-        p += len;
-    }
-    tf_scene *s = tf_scene_load_text(text, strlen(text), "t.yaml", NULL, 0, err, sizeof err);
-    if (s != NULL) {
-        tf_scene_free(s);
-        fail_msg("accepted a bad scene (line %d: %s)", line, replacement);
-    }
-    for (const char *const *f = fragments; *f; ++f) {
-        if (strstr(err, *f) == NULL) {
-            fail_msg("message '%s' lacks '%s'", err, *f);
-        }
-    }
+    tf_test_refused(line, span, replacement, fragments);
 }
 
 static void expect_error(int line, const char *replacement, const char *const *fragments)
 {
-    expect_span(line, 1, replacement, fragments);
+    tf_test_refused(line, 1, replacement, fragments);
 }
 
 static void the_base_scene_is_good(void **state)
 {
     (void)state;
     char err[512];
-    tf_scene *s = tf_scene_load_text(base_scene, strlen(base_scene), "t.yaml", NULL, 0, err,
-                                     sizeof err);
+    tf_scene *s = tf_scene_load_text(tf_test_scene, strlen(tf_test_scene), "t.yaml", NULL, 0,
+                                     err, sizeof err);
     if (s == NULL) {
         fail_msg("%s", err);
     }
@@ -175,7 +137,7 @@ static void each_bad_scene_has_its_own_message(void **state)
                  (const char *[]){"t.yaml:9:", "fixed.0", "exactly one of face, plane or box", NULL});
     expect_error(9, "  - plane: {axis: x, at: 3}\n",
                  (const char *[]){"t.yaml:9:", "fixed.0", "holds no node", NULL});
-    expect_error(8, "fixed: []\n", (const char *[]){"t.yaml:", "fixed", "few", NULL});
+    expect_span(8, 2, "fixed: []\n", (const char *[]){"t.yaml:", "fixed", "few", NULL});
     expect_error(11, "  - node: 99\n", (const char *[]){"t.yaml:11:", "contact.0.node", "1 to 50", NULL});
     expect_error(14, "  face: q\n", (const char *[]){"t.yaml:14:", "outputs.face", NULL});
     expect_span(13, 2, "  select: box\n  box: {min: [20, 20, 20], max: [30, 30, 30]}\n",

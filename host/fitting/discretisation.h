@@ -1,0 +1,45 @@
+/*
+ * discretisation.h — the solve's own error against the physics, so that a
+ * header states fit + discretisation error, not only the fit against the
+ * solve it was fitted to (issue 14).
+ *
+ * The physics is a finer reference solution of the same scene (CalculiX
+ * C3D20R for block48, docs/calculix-reference.md), given as an index CSV
+ *
+ *     fx,fy,fz,file          header line
+ *     1,0,0,block48_fx.csv   force in N at the fitted contact site; file
+ *                            relative to the index, header node,x,y,z,ux,uy,uz
+ *
+ * The solve is evaluated at the reference's points through the solver's
+ * displacement field (any cloud compares at the same points).  For a linear
+ * solver with three independent reference forces the error is linear in the
+ * force, e(F) = E F, and its largest component over the envelope
+ * |F - c| <= R is max_i (R |E_i| + |E_i . c|); otherwise it is the largest
+ * component error over the reference's cases, each of which must lie in
+ * the envelope.  The contact site's figure is the relative error of its
+ * displacement (the compliance the contact inverse inverts), at the
+ * reference point nearest the site.
+ */
+#ifndef TF_DISCRETISATION_H
+#define TF_DISCRETISATION_H
+
+#include <stddef.h>
+
+#include "solvers/solver.h"
+
+typedef struct tf_discretisation {
+    double max_mm;    /* largest displacement component error over the envelope, mm */
+    double site_rel;  /* contact-site displacement error / its magnitude, largest over cases */
+    double site_gap;  /* distance from the contact node to the nearest reference point, mm */
+    size_t cases, points;
+    int enveloped;    /* 1: max_mm bounds the whole envelope (linear); 0: the cases only */
+    char source[256]; /* the index file, as given */
+} tf_discretisation;
+
+/* Solves the reference's cases with solver s at contact site `contact` of
+ * problem p and compares.  Returns 0, or -1 with a message naming the file
+ * and line in err. */
+int tf_discretisation_measure(tf_solver *s, const tf_problem *p, int contact, const char *index,
+                              tf_discretisation *out, char *err, size_t errlen);
+
+#endif /* TF_DISCRETISATION_H */

@@ -1,0 +1,28 @@
+# physics.mk — the shipped headers' error against the physics (issue 14):
+#
+#   check-physics   block48.h's discretisation figures recomputed by
+#                   tests/physics/physics_check.c (another route than the
+#                   tool's) against the CalculiX reference: the header may not
+#                   understate them; a copy of the header with the figure
+#                   lowered by 1 % must be caught.
+PHYSICS_DATA := tests/calculix/data
+PHYSICS_CSV := $(PHYSICS_DATA)/block48_fx_h0.6.csv $(PHYSICS_DATA)/block48_fy_h0.6.csv \
+  $(PHYSICS_DATA)/block48_fz_h0.6.csv
+
+.PHONY: check-physics
+CHECKS += check-physics
+
+$(T)/physics/%: tests/physics/%.c $(B)/native/libtissuefit-host.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
+
+check-physics: $(T)/physics/physics_check
+	@echo "== shipped headers: the error against the physics is not understated =="
+	@$< coeffs/block48.yaml coeffs/block48.h $(PHYSICS_CSV)
+	@mkdir -p $(T)/physics/under
+	@awk '/_FORWARD_DISCRETISATION_MAX_MM/ {$$3 = $$3 * 0.99} {print}' coeffs/block48.h \
+	  > $(T)/physics/under/block48.h
+	@if $< coeffs/block48.yaml $(T)/physics/under/block48.h $(PHYSICS_CSV) > /dev/null 2>&1; then \
+	  echo "physics_check accepted a header whose figure is 1 % too low"; exit 1; fi
+	@echo "ok: block48.h states its discretisation error (recomputed; a 1 % understatement is caught)"

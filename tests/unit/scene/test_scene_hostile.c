@@ -1,0 +1,200 @@
+/*
+ * test_scene_hostile.c — scene files and --set values a careless user or an
+ * attacker would write (issue 19): numbers with trailing text, loose whole
+ * numbers and booleans, a second document, aliases, bad UTF-8 and binary
+ * bytes, physically absurd values, overlong --set values, and paths that are
+ * not regular files.  Each is refused with file:line:field (or the --set
+ * argument) and a message that says what is wrong.
+ */
+#include <fcntl.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "scene/scene.h"
+#include "scene_refused.h"
+
+#define BLOCK48 "coeffs/block48.yaml"
+
+/* tf_test_scene (scene_refused.h) with line `line` replaced by `with`. */
+static void refused(int line, const char *with, const char *const *fragments)
+{
+    tf_test_refused(line, 1, with, fragments);
+}
+
+static void refused_text(const char *text, size_t len, const char *const *fragments)
+{
+    tf_test_refused_text(text, len, fragments);
+}
+
+#define FRAGS(...) ((const char *const[]){__VA_ARGS__, NULL})
+
+static void numbers_with_trailing_text(void **state)
+{
+    (void)state;
+    refused(7, "  nu: 0,45\n", FRAGS("t.yaml:7: material.nu: '0,45' is not a number"));
+    refused(6, "  E: 3,2\n", FRAGS("t.yaml:6: material.E: '3,2' is not a number"));
+    refused(6, "  E: 0.32 MPa\n", FRAGS("t.yaml:6: material.E: '0.32 MPa' is not a number"));
+    refused(6, "  E: 0x1p3\n", FRAGS("t.yaml:6: material.E:", "not a number"));
+    refused(6, "  E: nan\n", FRAGS("t.yaml:6: material.E:", "not a number"));
+    refused(6, "  E: \"1 \"\n", FRAGS("t.yaml:6: material.E:", "not a number"));
+    refused(3, "  box: {min: [0, 0, 0], max: [10, 10, 2mm]}\n",
+            FRAGS("t.yaml:3: geometry.box.max.2: '2mm' is not a number"));
+}
+
+static void loose_whole_numbers_and_booleans(void **state)
+{
+    (void)state;
+    refused(4, "  grid: [011, 5, 2]\n", FRAGS("t.yaml:4: geometry.grid.0: '011' has a leading zero"));
+    refused(4, "  grid: [11.5, 5, 2]\n", FRAGS("t.yaml:4: geometry.grid.0: '11.5' is not a"));
+    refused(11, "  - node: 61.9\n", FRAGS("t.yaml:11: contact.0.node: '61.9' is not a"));
+    refused(11, "  - node: +13\n", FRAGS("t.yaml:11: contact.0.node:", "whole number"));
+    refused(1, "name: t\nfit: {seed: -1}\n", FRAGS("t.yaml:2: fit.seed: '-1' is not a non-negative"));
+    refused(9, "  - {face: z-, exact: maybe}\n", FRAGS("t.yaml:9: fixed.0.exact: 'maybe' is not true or false"));
+}
+
+static void one_document_no_aliases(void **state)
+{
+    (void)state;
+    char text[2048];
+    snprintf(text, sizeof text, "%s---\nname: other\n", tf_test_scene);
+    refused_text(text, strlen(text), FRAGS("t.yaml:15:", "second YAML document"));
+    const char *alias = "name: t\n"
+                        "geometry:\n"
+                        "  box: &b {min: [0, 0, 0], max: [10, 10, 2]}\n"
+                        "  grid: [5, 5, 2]\n"
+                        "material: {E: 1.0, nu: 0.3}\n"
+                        "fixed:\n"
+                        "  - box: *b\n"
+                        "outputs: {select: all}\n";
+    refused_text(alias, strlen(alias),
+                 FRAGS("t.yaml:7: fixed.0.box: aliases (*b) are not supported"));
+}
+
+static void syntax_errors_have_lines(void **state)
+{
+    (void)state;
+    refused_text("[1, 2]\n", 7, FRAGS("t.yaml:1: expected a mapping of keys", "got a list"));
+    refused_text("\n\nhello\n", 8, FRAGS("t.yaml:3: expected a mapping of keys"));
+    refused(2, "? [a]\n: b\ngeometry:\n", FRAGS("t.yaml:2: a key must be a plain word"));
+    refused(7, "  nu: 0.3\xff\xfe\n", FRAGS("t.yaml:7:", "YAML syntax error", "UTF-8"));
+    refused(12, "outputs:\x01\x02\x03\n", FRAGS("t.yaml:12:", "YAML syntax error", "control"));
+    const char garbage[] = "\x7f" "ELF\x02\x01\x01\x00\x00\x00\n\x00\x00";
+    refused_text(garbage, sizeof garbage - 1, FRAGS("t.yaml:1:", "YAML syntax error"));
+}
+
+static void absurd_values_fail_up_front(void **state)
+{
+    (void)state;
+    refused(6, "  E: 1e308\n", FRAGS("t.yaml:6: material.E: Young's modulus", "1e+308"));
+    refused(6, "  E: 5e-324\n", FRAGS("t.yaml:6: material.E: Young's modulus", "positive"));
+    refused(6, "  E: 1e999\n", FRAGS("t.yaml:6: material.E:", "inf"));
+    refused(1, "name: t\nenvelope: {radius: 1e308}\n",
+            FRAGS("t.yaml:2: envelope.radius: the envelope radius", "1e+308"));
+    refused(3, "  box: {min: [0, 0, 0], max: [1e300, 10, 2]}\n",
+            FRAGS("t.yaml:3: geometry.box.max.0: coordinates"));
+    refused(1, "name: t\nsolver: {penalty: 1e300}\n",
+            FRAGS("t.yaml:2: solver.penalty: numbers in a scene are 0 or between"));
+    refused(1, "name: t\nsolver: {support: 1e-16}\n", FRAGS("t.yaml:2: solver.support:"));
+}
+
+static void set_values_get_the_same_checks(void **state)
+{
+    (void)state;
+    const char *bad[][2] = {
+        {"material.nu=0,45", "--set material.nu=0,45: material.nu: '0,45' is not a number"},
+        {"material.E=1e308", "--set material.E=1e308: material.E: Young's modulus"},
+        {"material={E: 5e-324, nu: 0.3}", "material.E: Young's modulus"},
+        {"geometry.grid=011,11,3", "geometry.grid.0: '011' has a leading zero"},
+        {"fit.seed=-1", "fit.seed: '-1' is not a non-negative whole number"},
+        {"fixed=[{face: x-}, *a]", "aliases (*a)"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        char err[1024];
+        tf_scene *s = tf_scene_load(BLOCK48, &bad[k][0], 1, err, sizeof err);
+        assert_null(s);
+        if (strstr(err, bad[k][1]) == NULL) {
+            fail_msg("--set %s: message '%s' lacks '%s'", bad[k][0], err, bad[k][1]);
+        }
+    }
+}
+
+/* A value of 2,000 characters: the reason is in the message, which shows
+ * only the start of the argument; a long valid value is read whole. */
+static void long_set_values(void **state)
+{
+    (void)state;
+    char set[2100], err[1024];
+    int n = snprintf(set, sizeof set, "name=");
+    memset(set + n, 'a', 2000);
+    set[n + 2000] = '\0';
+    const char *sets[] = {set};
+    assert_null(tf_scene_load(BLOCK48, sets, 1, err, sizeof err));
+    if (strstr(err, "(2005 characters): name: at most 63 characters") == NULL) {
+        fail_msg("%s", err);
+    }
+    n = snprintf(set, sizeof set, "outputs={select: nodes, nodes: [");
+    for (int k = 0; k < 300; ++k) {
+        n += snprintf(set + n, sizeof set - (size_t)n, "%s%d", k ? ", " : "", 1 + k % 363);
+    }
+    snprintf(set + n, sizeof set - (size_t)n, "]}");
+    assert_true(strlen(set) > 1100);
+    tf_scene *s = tf_scene_load(BLOCK48, sets, 1, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    assert_int_equal(s->problem.outputs.n_nodes, 300);
+    tf_scene_free(s);
+}
+
+/* A FIFO blocked the reader forever (alarm: the test fails rather than
+ * hangs); a directory or a device is not a scene; the size is capped. */
+static void scene_paths_that_are_not_files(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/tf_hostile_XXXXXX", fifo[64], big[64], err[512];
+    assert_non_null(mkdtemp(dir));
+    snprintf(fifo, sizeof fifo, "%s/fifo.yaml", dir);
+    snprintf(big, sizeof big, "%s/big.yaml", dir);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    alarm(20);
+    assert_null(tf_scene_load(fifo, NULL, 0, err, sizeof err));
+    alarm(0);
+    assert_non_null(strstr(err, "fifo.yaml: not a regular file"));
+    assert_null(tf_scene_load(dir, NULL, 0, err, sizeof err));
+    assert_non_null(strstr(err, "not a regular file"));
+    assert_null(tf_scene_load("/dev/zero", NULL, 0, err, sizeof err));
+    assert_non_null(strstr(err, "/dev/zero: not a regular file"));
+    int fd = open(big, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    assert_true(fd >= 0);
+    assert_int_equal(ftruncate(fd, TF_SCENE_MAX_BYTES + 1), 0);
+    close(fd);
+    assert_null(tf_scene_load(big, NULL, 0, err, sizeof err));
+    assert_non_null(strstr(err, "more than the 16 MiB a scene file may hold"));
+    unlink(fifo);
+    unlink(big);
+    rmdir(dir);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(numbers_with_trailing_text),
+        cmocka_unit_test(loose_whole_numbers_and_booleans),
+        cmocka_unit_test(one_document_no_aliases),
+        cmocka_unit_test(syntax_errors_have_lines),
+        cmocka_unit_test(absurd_values_fail_up_front),
+        cmocka_unit_test(set_values_get_the_same_checks),
+        cmocka_unit_test(long_set_values),
+        cmocka_unit_test(scene_paths_that_are_not_files),
+    };
+    return cmocka_run_group_tests_name("scene: hostile input", tests, NULL, NULL);
+}
