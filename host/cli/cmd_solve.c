@@ -1,32 +1,44 @@
 /*
  * cmd_solve.c — `tissuefit solve`: one load case of a scene, every node's
- * displacement to CSV (and VTU for ParaView).
+ * displacement to CSV (and VTU for ParaView); with a `history:` section, a
+ * time series (CSV per step, ParaView .pvd + .vtu).
  */
 #include <getopt.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/atomic_file.h"
+#include "base/log.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "report/displacement_out.h"
-#include "base/log.h"
+#include "report/time_series.h"
 #include "scene/scene.h"
 #include "solvers/probe.h"
+#include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
+
+/* ParaView files a time series may write (each its own .vtu). */
+#define MAX_VTU_STEPS 1000
 
 static void help(FILE *out)
 {
     fprintf(out,
             "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
-            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu]\n"
+            "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu|.pvd]\n"
             "                       [--outputs FILE.csv]\n\n"
-            "Solves the scene with the RPIM Galerkin method (seed 000) and writes every\n"
-            "node's displacement as CSV: header node,x,y,z,ux,uy,uz, mm, %%.17g.\n"
-            "The scene's loads always act; --force adds a force (N) at a contact site,\n"
-            "spread as the site's patch says.  A scene with no loads and no prescribed\n"
-            "displacement needs --force (its solution would be zero).\n\n"
+            "Solves the scene with its solver (solver.method: RPIM or EFG Galerkin) and\n"
+            "material law, and writes every node's displacement as CSV: header\n"
+            "node,x,y,z,ux,uy,uz, mm, %%.17g.  The scene's loads always act; --force adds a\n"
+            "force (N) at a contact site, spread as the site's patch says.  A nonlinear\n"
+            "law is solved by Newton's method; a Kelvin law without a history gives the\n"
+            "fully relaxed equilibrium.\n\n"
+            "With a history: section (docs/scene-format.md) the solve follows it in time:\n"
+            "the CSV then holds step,time,node,x,y,z,ux,uy,uz for every step, and --vtk\n"
+            "FILE.pvd writes a ParaView time series (FILE.pvd and FILE_NNNN.vtu, at most\n"
+            "%d steps); --force replaces history.force.\n\n"
             "Options:\n"
             "  --force FX,FY,FZ   force at the contact site, N\n"
             "  --contact NAME     which contact site (default: the first)\n"
@@ -38,8 +50,10 @@ static void help(FILE *out)
             "                     nodes through the shape functions) as\n"
             "                     output,x,y,z,ux,uy,uz\n\n"
             "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
-            "Exit status: 0 ok, 1 the solve failed, 2 bad usage or a bad scene (nothing\n"
-            "written then).\n");
+            "Exit status: 0 ok, 1 the solve failed (Newton's method did not converge, a\n"
+            "point inverted: the message names the load step, the force and the place),\n"
+            "2 bad usage or a bad scene (nothing written then).\n",
+            MAX_VTU_STEPS);
 }
 
 typedef struct solve_args {
@@ -104,7 +118,10 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
 /* The contact site the force goes to, or -1 when there is no force. */
 static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 {
-    if (!a->has_force) {
+    if (s->history.present && !a->has_force && !a->contact) {
+        return s->history.contact;
+    }
+    if (!a->has_force && !s->history.present) {
         if (a->contact) {
             tf_error(ctx, "solve: --contact without --force");
             return -2;
@@ -123,7 +140,7 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
         tf_error(ctx, "solve: %s has no contact site for --force", a->scene);
         return -2;
     }
-    int k = a->contact ? tf_problem_contact(s, a->contact) : 0;
+    int k = a->contact ? tf_problem_contact(s, a->contact) : s->history.present ? s->history.contact : 0;
     if (k < 0) {
         tf_error(ctx, "solve: %s has no contact site '%s'", a->scene, a->contact);
         return -2;
@@ -172,6 +189,134 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     return TF_EXIT_OK;
 }
 
+static int ends_with(const char *s, const char *tail)
+{
+    size_t n = strlen(s), m = strlen(tail);
+    return n >= m && strcmp(s + n - m, tail) == 0;
+}
+
+/* The .vtu file of step k beside base.pvd: base_NNNN.vtu (its full path,
+ * and its name relative to the .pvd). */
+static void vtu_name(const char *pvd, size_t k, char *path, size_t len, const char **name)
+{
+    snprintf(path, len, "%.*s_%04zu.vtu", (int)(strlen(pvd) - 4), pvd, k + 1);
+    const char *slash = strrchr(path, '/');
+    *name = slash ? slash + 1 : path;
+}
+
+/* Every file of a time series, all or none. */
+static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, size_t n,
+                        const double *t, const double *u)
+{
+    char err[512];
+    size_t nf = (a->out ? 1 : 0) + (a->vtk ? n + 1 : 0), k = 0;
+    tf_afile *f = calloc(nf + 1, sizeof *f);
+    char(*paths)[4200] = calloc(n + 1, sizeof *paths);
+    const char **names = calloc(n + 1, sizeof *names);
+    int rc = f && paths && names ? 0 : -1;
+    if (rc != 0) {
+        snprintf(err, sizeof err, "out of memory");
+    }
+    if (rc == 0 && a->out && (rc = tf_afile_open(&f[k], a->out, err, sizeof err)) == 0) {
+        tf_report_series_csv(f[k++].fp, &p->cloud, n, t, u);
+    }
+    for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
+        vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
+        if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0 &&
+            (rc = tf_report_vtu_displacements(f[k++].fp, &p->cloud, u + 3 * p->cloud.n * s,
+                                              p->cuts, p->n_cuts)) != 0) {
+            snprintf(err, sizeof err, "out of memory for the VTK cells");
+        }
+    }
+    if (rc == 0 && a->vtk && (rc = tf_afile_open(&f[k], a->vtk, err, sizeof err)) == 0) {
+        tf_report_series_pvd(f[k++].fp, n, t, names);
+    }
+    if (rc == 0 && !a->out) {
+        tf_report_series_csv(stdout, &p->cloud, n, t, u);
+        rc = fflush(stdout) == 0 ? 0 : -1;
+        if (rc != 0) {
+            snprintf(err, sizeof err, "cannot write to standard output");
+        }
+    }
+    for (size_t q = 0; q < k; ++q) { /* every temporary written: rename them all */
+        if (rc == 0) {
+            rc = tf_afile_commit(&f[q], err, sizeof err);
+        } else {
+            tf_afile_abort(&f[q]);
+        }
+    }
+    free(f);
+    free(paths);
+    free(names);
+    if (rc != 0) {
+        tf_error(ctx, "solve: %s", err);
+        return TF_EXIT_FAIL;
+    }
+    return TF_EXIT_OK;
+}
+
+/* The problem's history, step by step: a nonlinear solver advances its
+ * state; the linear one solves each step's force (the scene's loads act
+ * throughout). */
+static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf_solver *sv,
+                       int contact)
+{
+    tf_history h = p->history;
+    if (a->has_force) {
+        if (h.table) {
+            tf_error(ctx, "solve: %s: its history has a table of forces: no --force", a->scene);
+            return TF_EXIT_USAGE;
+        }
+        memcpy(h.force, a->force, sizeof h.force);
+    }
+    tf_samples smp;
+    if (tf_history_sample(&h, &smp) != 0) {
+        tf_error(ctx, "solve: out of memory");
+        return TF_EXIT_FAIL;
+    }
+    if (a->vtk && smp.n > MAX_VTU_STEPS) {
+        tf_error(ctx, "solve: %zu steps: --vtk writes at most %d (raise history.dt)", smp.n,
+                 MAX_VTU_STEPS);
+        tf_samples_free(&smp);
+        return TF_EXIT_USAGE;
+    }
+    size_t n3 = 3 * p->cloud.n;
+    double *u = malloc(n3 * smp.n * sizeof *u);
+    tf_nonlinear_info info;
+    int nonlinear = tf_nonlinear_info_of(sv, &info) == 0, rc = u ? 0 : -1;
+    double t0 = omp_get_wtime(), shown = t0, prev = 0;
+    if (nonlinear) {
+        tf_nonlinear_reset(sv);
+    }
+    for (size_t k = 0; k < smp.n && rc == 0; ++k) {
+        double *uk = u + n3 * k;
+        if (nonlinear) {
+            rc = tf_nonlinear_advance(sv, smp.scale[k], contact, smp.force[k], smp.t[k] - prev);
+            rc = rc == 0 ? tf_nonlinear_displacements(sv, uk) : rc;
+        } else {
+            rc = tf_solver_solve(sv, contact, (const double(*)[3])smp.force[k], 1, NULL, uk);
+        }
+        prev = smp.t[k];
+        double now = omp_get_wtime();
+        if (rc == 0 && now - shown > 1) {
+            tf_info(ctx, "solve: step %zu of %zu, t = %g s (%.0f s so far)", k + 1, smp.n,
+                    smp.t[k], now - t0);
+            shown = now;
+        }
+    }
+    if (rc != 0) {
+        tf_error(ctx, "solve: %s: %s", a->scene, u ? ctx->err : "out of memory");
+        free(u);
+        tf_samples_free(&smp);
+        return TF_EXIT_FAIL;
+    }
+    tf_solver_report(sv);
+    int out = write_series(ctx, a, p, smp.n, smp.t, u);
+    free(u);
+    tf_samples_free(&smp);
+    return out;
+}
+
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {0};
@@ -189,11 +334,20 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }
+    if (a.vtk && !ends_with(a.vtk, p->history.present ? ".pvd" : ".vtu")) {
+        tf_error(ctx, "solve: --vtk %s: %s", a.vtk,
+                 p->history.present ? "a time series is a .pvd file (with .vtu files beside it)"
+                                    : "a .vtu file");
+        tf_scene_free(s);
+        return TF_EXIT_USAGE;
+    }
     int rc = TF_EXIT_FAIL;
     tf_solver *sv = tf_solver_create(p, NULL, ctx);
     double *u = malloc(3 * p->cloud.n * sizeof *u);
     double *v = malloc(3 * p->outputs.n_nodes * sizeof *v);
-    if (sv == NULL || u == NULL || v == NULL) {
+    if (sv != NULL && u != NULL && v != NULL && p->history.present) {
+        rc = run_history(ctx, &a, p, sv, contact);
+    } else if (sv == NULL || u == NULL || v == NULL) {
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);

@@ -20,6 +20,7 @@
 #include <stdint.h>
 
 #include "materials/material.h"
+#include "problem/history.h"
 #include "problem/nodes.h"
 
 #define TF_PROBLEM_NAME_MAX 64
@@ -144,11 +145,43 @@ typedef struct tf_cut {
     double top, depth;                /* mm */
 } tf_cut;
 
-typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY } tf_bc_method;
+/* Essential conditions: nodal values removed (RPIM), the seed's penalty
+ * (RPIM: eq 28 on nodal values; EFG: the weak form of seed 001 eqs 19, 23),
+ * or Nitsche's method (solvers/boundary.h). */
+typedef enum tf_bc_method { TF_BC_ELIMINATION, TF_BC_PENALTY, TF_BC_NITSCHE } tf_bc_method;
 typedef enum tf_support_centre { TF_SUPPORT_POINT, TF_SUPPORT_CELL } tf_support_centre;
 typedef enum tf_volumetric { TF_VOLUMETRIC_FULL, TF_VOLUMETRIC_CELL } tf_volumetric;
+/* Volume integration: Gauss points as they are, or with the shape-function
+ * gradients corrected per cell so that the discrete divergence theorem
+ * holds (VCI, solvers/cell_gradients.h). */
+typedef enum tf_integration { TF_INTEGRATION_GAUSS, TF_INTEGRATION_VCI } tf_integration;
 
 #define TF_SOLVER_METHOD_MAX 32
+
+/* How the nonlinear solver solves each Newton iteration's linear system
+ * (docs/solver.md): a new factorisation of the tangent every iteration; the
+ * last factorisation kept until convergence slows (modified Newton); a
+ * Krylov method (CG, or GMRES for an unsymmetric tangent) on the current
+ * tangent preconditioned by the last factorisation, refactorised when the
+ * Krylov iterations exceed krylov_max; or quasi-Newton (limited-memory
+ * BFGS) updates of the last factorisation, refactorised when they stall. */
+typedef enum tf_tangent_kind {
+    TF_TANGENT_FULL,
+    TF_TANGENT_MODIFIED,
+    TF_TANGENT_KRYLOV,
+    TF_TANGENT_BFGS,
+} tf_tangent_kind;
+
+/* Newton-Raphson and load stepping (solvers/nonlinear/). */
+typedef struct tf_newton_opts {
+    double rtol;         /* |residual| <= rtol |internal forces| ... */
+    double etol;         /* ... and |du . residual| <= etol of the step's first */
+    unsigned max_iter;   /* iterations per load step */
+    unsigned steps;      /* load steps to begin with */
+    unsigned max_cuts;   /* halvings of a load step before giving up */
+    tf_tangent_kind tangent;
+    unsigned krylov_max; /* Krylov iterations per solve before refactorising */
+} tf_newton_opts;
 
 /* Which solver (by its registered name, solvers/solver.h) and how it
  * discretises.  The meshless options are those of the RPIM Galerkin solver;
@@ -166,8 +199,12 @@ typedef struct tf_solver_opts {
     unsigned cells[3];/* background cells per axis */
     unsigned gauss;   /* Gauss-Legendre points per axis per cell */
     tf_bc_method bc;
-    double penalty;   /* lambda of seed eq 28 */
+    double penalty;   /* lambda of seed eq 28 (RPIM); alpha / ((lambda + 2 mu) / h) (EFG) */
+    double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
+    tf_integration integration;
     double rcond_warn;/* warn when a local system's reciprocal condition is below */
+    int ordering;     /* fill-reducing ordering, tf_ordering (solvers/cholmod_solve.h) */
+    tf_newton_opts newton; /* nonlinear laws */
 } tf_solver_opts;
 
 typedef enum tf_analytic_kind {
@@ -202,6 +239,7 @@ typedef struct tf_problem {
     size_t n_cuts;
     tf_solver_opts solver;
     tf_analytic analytic;
+    tf_history history;   /* how the loads change in time (present: 0 when not given) */
 } tf_problem;
 
 /* Frees what the problem owns (cloud, fixed nodes, loads, contacts, outputs)

@@ -13,12 +13,11 @@
 #include "fitting/families/family.h"
 #include "problem/regions.h"
 #include "scene/scene_grading.h"
+#include "scene/scene_history.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(sd_issue *is, const char *path, const char *fmt, ...)
+int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
 {
     va_list ap;
     snprintf(is->path, sizeof is->path, "%s", path);
@@ -52,11 +51,11 @@ static int finite_all(const double *v, size_t n)
 static int check_box(const sd_box *b, const char *path, sd_issue *is)
 {
     if (!finite_all(b->min, 3) || !finite_all(b->max, 3)) {
-        return fail(is, path, "coordinates must be finite numbers");
+        return sd_fail(is, path, "coordinates must be finite numbers");
     }
     for (int a = 0; a < 3; ++a) {
         if (!(b->min[a] < b->max[a])) {
-            return fail(is, path, "min must be below max along %c (%g >= %g)", "xyz"[a],
+            return sd_fail(is, path, "min must be below max along %c (%g >= %g)", "xyz"[a],
                         b->min[a], b->max[a]);
         }
     }
@@ -77,19 +76,19 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
         box->max[a] = g->box->max[a];
         box->grid[a] = g->grid[a];
         if (g->grid[a] < 2) {
-            return fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
+            return sd_fail(is, "geometry.grid", "at least 2 nodes per axis (got %u along %c)",
                         g->grid[a], "xyz"[a]);
         }
         nodes *= g->grid[a];
     }
     if (nodes > 2e6) {
-        return fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
+        return sd_fail(is, "geometry.grid", "%.0f nodes is more than the 2 million this tool solves",
                     nodes);
     }
     box->jitter = g->jitter ? *g->jitter : 0;
     box->seed = g->seed ? *g->seed : 1;
     if (!(box->jitter >= 0 && box->jitter <= 0.4)) {
-        return fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
+        return sd_fail(is, "geometry.jitter", "must be in [0, 0.4] (a fraction of the spacing)");
     }
     if (sd_grading(doc, box->min, box->max, &box->grading, is->msg, sizeof is->msg) != 0) {
         snprintf(is->path, sizeof is->path, "geometry.grading");
@@ -97,23 +96,78 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
     }
     if (tf_cloud_box_graded(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed,
                             &box->grading) != 0) {
-        return fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
+        return sd_fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
     }
     return 0;
 }
 
+/* The scene's key of a tf_material field tf_material_check names. */
+static const char *material_key(const char *field)
+{
+    return strcmp(field, "young") == 0 ? "E" : strcmp(field, "poisson") == 0 ? "nu" : field;
+}
+
+static int kelvin_law(tf_law law)
+{
+    return law == TF_LAW_KELVIN || law == TF_LAW_KELVIN_NH;
+}
+
 static int material(const sd_material *m, tf_problem *s, sd_issue *is)
 {
-    s->material = (tf_material){.law = TF_LAW_LINEAR, .young = m->young, .poisson = m->poisson};
-    if (!(isfinite(m->young) && m->young > 0)) {
-        return fail(is, "material.E", "Young's modulus must be a positive number of MPa (got %g)",
-                    m->young);
+    tf_material *mat = &s->material;
+    *mat = (tf_material){.law = m->law ? (tf_law)*m->law : TF_LAW_LINEAR,
+                         .poisson = m->poisson,
+                         .young = m->young ? *m->young : NAN,
+                         .k1 = m->k1 ? *m->k1 : NAN,
+                         .k2 = m->k2 ? *m->k2 : NAN,
+                         .eta = m->eta ? *m->eta : NAN,
+                         .k = m->k ? *m->k : 0};
+    const char *law = tf_law_name(mat->law);
+    if (kelvin_law(mat->law)) {
+        const char *missing = !m->k1 ? "k1" : !m->k2 ? "k2" : !m->eta ? "eta" : NULL;
+        if (missing) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", missing);
+            return sd_fail(is, path, "the %s law needs k1, k2 and eta (MPa, MPa, MPa s)", law);
+        }
+        if (m->young) {
+            return sd_fail(is, "material.E",
+                        "the %s law takes k1 (relaxed) and k2 (k1 + k2 instantaneous), not E",
+                        law);
+        }
+        /* the small-strain moduli of the initial response (B-bar, weak
+         * boundary terms): the instantaneous ones */
+        mat->young = mat->k1 + mat->k2;
+    } else {
+        if (!m->young) {
+            return sd_fail(is, "material.E", "'E' is missing: the %s law needs Young's modulus (MPa)",
+                        law);
+        }
+        const char *extra = m->k1 ? "k1" : m->k2 ? "k2" : m->eta ? "eta" : m->k ? "k" : NULL;
+        if (extra) {
+            char path[32];
+            snprintf(path, sizeof path, "material.%s", extra);
+            return sd_fail(is, path, "belongs to the kelvin laws, not to %s", law);
+        }
     }
-    if (!(m->poisson > -1 && m->poisson < 0.5)) {
-        return fail(is, "material.nu",
-                    "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
-                    "this displacement formulation cannot represent (got %g)",
-                    m->poisson);
+    if (mat->law == TF_LAW_LINEAR) {
+        if (!(isfinite(mat->young) && mat->young > 0)) {
+            return sd_fail(is, "material.E",
+                        "Young's modulus must be a positive number of MPa (got %g)", mat->young);
+        }
+        if (!(mat->poisson > -1 && mat->poisson < 0.5)) {
+            return sd_fail(is, "material.nu",
+                        "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
+                        "this displacement formulation cannot represent (got %g)",
+                        mat->poisson);
+        }
+        return 0;
+    }
+    char why[256], path[32];
+    const char *bad = tf_material_check(mat, why, sizeof why);
+    if (bad != NULL) {
+        snprintf(path, sizeof path, "material.%s", material_key(bad));
+        return sd_fail(is, path, "%s", why);
     }
     return 0;
 }
@@ -123,7 +177,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     char p[128];
     int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL);
     if (kinds != 1) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL),
                     "give exactly one of face, plane or box (got %d)", kinds);
     }
     if (d->face) {
@@ -134,7 +188,7 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
         f->where.axis = d->plane->axis;
         f->where.at = d->plane->at;
         if (!isfinite(d->plane->at)) {
-            return fail(is, at(p, sizeof p, "fixed", k, "plane"), "'at' must be finite");
+            return sd_fail(is, at(p, sizeof p, "fixed", k, "plane"), "'at' must be finite");
         }
     } else {
         f->where.kind = TF_REGION_BOX;
@@ -146,28 +200,28 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     }
     f->components = d->components ? *d->components : TF_COMP_ALL;
     if (f->components == 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, "components"), "names no component");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "components"), "names no component");
     }
     f->exact = d->exact && *d->exact;
     if (f->exact && d->displacement) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL),
                     "give displacement or exact: true, not both");
     }
     if (f->exact && s->analytic.kind == TF_ANALYTIC_NONE) {
-        return fail(is, at(p, sizeof p, "fixed", k, "exact"),
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "exact"),
                     "exact: true needs a reference section");
     }
     for (int a = 0; a < 3; ++a) {
         f->value[a] = d->displacement ? d->displacement[a] : 0;
     }
     if (!finite_all(f->value, 3)) {
-        return fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
     }
     if (tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
-        return fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
     }
     return 0;
 }
@@ -176,7 +230,7 @@ static int fixed(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     s->fixed = calloc(doc->fixed_count, sizeof *s->fixed);
     if (s->fixed == NULL) {
-        return fail(is, "fixed", "out of memory");
+        return sd_fail(is, "fixed", "out of memory");
     }
     s->n_fixed = doc->fixed_count;
     for (size_t k = 0; k < doc->fixed_count; ++k) {
@@ -191,7 +245,7 @@ static int node_index(uint32_t number, const tf_problem *s, const char *path, ui
                       sd_issue *is)
 {
     if (number < 1 || number > s->cloud.n) {
-        return fail(is, path, "node %u does not exist (nodes are numbered 1 to %zu)", number,
+        return sd_fail(is, path, "node %u does not exist (nodes are numbered 1 to %zu)", number,
                     s->cloud.n);
     }
     *index = number - 1;
@@ -204,11 +258,11 @@ static int position(const double *x, const tf_problem *s, const char *path, doub
 {
     double tol = tf_cloud_tol(&s->cloud);
     if (!finite_all(x, 3)) {
-        return fail(is, path, "must be three finite coordinates (mm)");
+        return sd_fail(is, path, "must be three finite coordinates (mm)");
     }
     for (int a = 0; a < 3; ++a) {
         if (x[a] < s->cloud.lo[a] - tol || x[a] > s->cloud.hi[a] + tol) {
-            return fail(is, path, "(%g, %g, %g) mm lies outside the body (%c in [%g, %g])", x[0],
+            return sd_fail(is, path, "(%g, %g, %g) mm lies outside the body (%c in [%g, %g])", x[0],
                         x[1], x[2], "xyz"[a], s->cloud.lo[a], s->cloud.hi[a]);
         }
         out[a] = x[a];
@@ -221,7 +275,7 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
     char p[128];
     s->loads = calloc(doc->loads_count + 1, sizeof *s->loads);
     if (s->loads == NULL) {
-        return fail(is, "loads", "out of memory");
+        return sd_fail(is, "loads", "out of memory");
     }
     s->n_loads = doc->loads_count;
     for (size_t k = 0; k < doc->loads_count; ++k) {
@@ -229,21 +283,21 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
         tf_load *l = &s->loads[k];
         l->exact = d->exact && *d->exact;
         if ((d->node != NULL) + (d->at != NULL) + (d->patch != NULL) != 1) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL),
+            return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of node, at or patch");
         }
         if (l->exact == (d->force != NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, NULL),
+            return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
                         "give exactly one of force or exact: true");
         }
         if (l->exact && (s->analytic.kind == TF_ANALYTIC_NONE || d->patch == NULL)) {
-            return fail(is, at(p, sizeof p, "loads", k, "exact"),
+            return sd_fail(is, at(p, sizeof p, "loads", k, "exact"),
                         "exact: true needs a reference section and a patch");
         }
         if (d->force) {
             memcpy(l->force, d->force, sizeof l->force);
             if (!finite_all(l->force, 3)) {
-                return fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
+                return sd_fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
             }
         }
         if (d->node) {
@@ -272,7 +326,7 @@ static int contact_site(const sd_contact *d, const tf_problem *s, size_t k, tf_c
     char p[128];
     int forms = (d->node != NULL) + (d->at != NULL);
     if (forms > 1 || (forms == 0 && d->patch == NULL)) {
-        return fail(is, at(p, sizeof p, "contact", k, NULL),
+        return sd_fail(is, at(p, sizeof p, "contact", k, NULL),
                     "give the contact point as one of node or at (or neither, with a patch: "
                     "its centre)");
     }
@@ -308,7 +362,7 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
     char p[128];
     s->contacts = calloc(doc->contact_count + 1, sizeof *s->contacts);
     if (s->contacts == NULL) {
-        return fail(is, "contact", "out of memory");
+        return sd_fail(is, "contact", "out of memory");
     }
     s->n_contacts = doc->contact_count;
     for (size_t k = 0; k < doc->contact_count; ++k) {
@@ -321,7 +375,7 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
         }
         for (size_t j = 0; j < k; ++j) {
             if (strcmp(s->contacts[j].name, c->name) == 0) {
-                return fail(is, at(p, sizeof p, "contact", k, "name"),
+                return sd_fail(is, at(p, sizeof p, "contact", k, "name"),
                             "'%s' names contact %zu already", c->name, j);
             }
         }
@@ -340,7 +394,7 @@ static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
     char p[128];
     s->cuts = calloc(doc->cuts_count + 1, sizeof *s->cuts);
     if (s->cuts == NULL) {
-        return fail(is, "cuts", "out of memory");
+        return sd_fail(is, "cuts", "out of memory");
     }
     s->n_cuts = doc->cuts_count;
     for (size_t k = 0; k < doc->cuts_count; ++k) {
@@ -348,7 +402,7 @@ static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
         tf_cut *c = &s->cuts[k];
         double h = b->max[2] - b->min[2];
         if (!(d->depth > 0 && d->depth <= h)) {
-            return fail(is, at(p, sizeof p, "cuts", k, "depth"),
+            return sd_fail(is, at(p, sizeof p, "cuts", k, "depth"),
                         "the depth must lie in (0, %g] mm, the block's height (got %g)", h,
                         d->depth);
         }
@@ -360,7 +414,7 @@ static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 c->xy[i][a] = d->path[i].v[a];
                 if (!(c->xy[i][a] >= b->min[a] && c->xy[i][a] <= b->max[a])) {
                     snprintf(p, sizeof p, "cuts.%zu.path.%zu", k, i);
-                    return fail(is, p,
+                    return sd_fail(is, p,
                                 "point (%g, %g) lies outside the top face [%g, %g] x [%g, %g] mm",
                                 d->path[i].v[0], d->path[i].v[1], b->min[0], b->max[0],
                                 b->min[1], b->max[1]);
@@ -368,7 +422,7 @@ static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
             }
             if (i > 0 && c->xy[i][0] == c->xy[i - 1][0] && c->xy[i][1] == c->xy[i - 1][1]) {
                 snprintf(p, sizeof p, "cuts.%zu.path.%zu", k, i);
-                return fail(is, p, "a segment of zero length (the point repeats the one before)");
+                return sd_fail(is, p, "a segment of zero length (the point repeats the one before)");
             }
         }
     }
@@ -382,10 +436,10 @@ static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
         s->envelope.centre[a] = e && e->centre ? e->centre[a] : 0;
     }
     if (!(isfinite(s->envelope.radius) && s->envelope.radius > 0)) {
-        return fail(is, "envelope.radius", "must be a positive number of newtons");
+        return sd_fail(is, "envelope.radius", "must be a positive number of newtons");
     }
     if (!finite_all(s->envelope.centre, 3)) {
-        return fail(is, "envelope.centre", "must be finite (N)");
+        return sd_fail(is, "envelope.centre", "must be finite (N)");
     }
     return 0;
 }
@@ -410,12 +464,50 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .gauss = 3,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
+        .nitsche = 100,
+        .integration = TF_INTEGRATION_GAUSS,
         .rcond_warn = 1e-12,
+        .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
+                   .tangent = TF_TANGENT_FULL, .krylov_max = 100},
+        .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
         o.cells[a] = grid[a] - 1;
     }
     return o;
+}
+
+static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
+{
+    if (d == NULL) {
+        return 0;
+    }
+    o->rtol = d->tolerance ? *d->tolerance : o->rtol;
+    o->etol = d->energy_tolerance ? *d->energy_tolerance : o->etol;
+    o->max_iter = d->iterations ? *d->iterations : o->max_iter;
+    o->steps = d->steps ? *d->steps : o->steps;
+    o->max_cuts = d->cuts ? *d->cuts : o->max_cuts;
+    o->tangent = d->tangent ? (tf_tangent_kind)*d->tangent : o->tangent;
+    o->krylov_max = d->krylov_iterations ? *d->krylov_iterations : o->krylov_max;
+    if (!(o->rtol > 0 && o->rtol < 1)) {
+        return sd_fail(is, "solver.newton.tolerance", "must lie in (0, 1)");
+    }
+    if (!(o->etol > 0 && o->etol < 1)) {
+        return sd_fail(is, "solver.newton.energy_tolerance", "must lie in (0, 1)");
+    }
+    if (o->max_iter < 1 || o->max_iter > 1000) {
+        return sd_fail(is, "solver.newton.iterations", "1 to 1000 iterations per load step");
+    }
+    if (o->steps < 1 || o->steps > 100000) {
+        return sd_fail(is, "solver.newton.steps", "1 to 100000 load steps to begin with");
+    }
+    if (o->max_cuts > 30) {
+        return sd_fail(is, "solver.newton.cuts", "0 to 30 halvings of a load step");
+    }
+    if (o->krylov_max < 1 || o->krylov_max > 10000) {
+        return sd_fail(is, "solver.newton.krylov_iterations", "1 to 10000 iterations");
+    }
+    return 0;
 }
 
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
@@ -429,7 +521,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         if (tf_solver_type_find(d->method) == NULL) {
             char names[256];
             tf_solver_type_names(names, sizeof names);
-            return fail(is, "solver.method", "'%s' is not one of: %s", d->method, names);
+            return sd_fail(is, "solver.method", "'%s' is not one of: %s", d->method, names);
         }
         snprintf(o->method, sizeof o->method, "%s", d->method);
     }
@@ -437,7 +529,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     o->centre = d->centre ? (tf_support_centre)*d->centre : o->centre;
     if (d->rbf) {
         if (d->rbf->d_c && d->rbf->spacings) {
-            return fail(is, "solver.rbf",
+            return sd_fail(is, "solver.rbf",
                         "give d_c (mm, absolute) or spacings (d_c relative to the local "
                         "nodal spacing), not both");
         }
@@ -446,7 +538,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         o->d_c_spacings = d->rbf->d_c ? 0 : d->rbf->spacings ? *d->rbf->spacings : o->d_c_spacings;
         o->q = d->rbf->q ? *d->rbf->q : o->q;
         if (d->rbf->spacings && !(isfinite(o->d_c_spacings) && o->d_c_spacings > 0)) {
-            return fail(is, "solver.rbf.spacings", "must be a positive number of nodal spacings");
+            return sd_fail(is, "solver.rbf.spacings", "must be a positive number of nodal spacings");
         }
     }
     o->polynomial = d->polynomial ? *d->polynomial : o->polynomial;
@@ -455,36 +547,51 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         o->cells[a] = d->cells[a];
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
-    o->bc = d->bc ? (tf_bc_method)*d->bc : o->bc;
+    int efg = strcmp(o->method, "efg-galerkin") == 0;
+    o->bc = d->bc ? (tf_bc_method)*d->bc : efg ? TF_BC_NITSCHE : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
+    o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
+    o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
+    o->ordering = d->ordering ? *d->ordering : o->ordering;
+    if (newton(d->newton, &o->newton, is) != 0) {
+        return -1;
+    }
     o->rcond_warn = d->rcond_warn ? *d->rcond_warn : o->rcond_warn;
     if (!(isfinite(o->support) && o->support > 0)) {
-        return fail(is, "solver.support", "must be a positive number of nodal spacings");
+        return sd_fail(is, "solver.support", "must be a positive number of nodal spacings");
     }
     if (!(isfinite(o->alpha_c) && o->alpha_c > 0)) {
-        return fail(is, "solver.rbf.alpha_c", "must be positive");
+        return sd_fail(is, "solver.rbf.alpha_c", "must be positive");
     }
     if (!(isfinite(o->d_c) && o->d_c > 0)) {
-        return fail(is, "solver.rbf.d_c", "must be a positive length (mm)");
+        return sd_fail(is, "solver.rbf.d_c", "must be a positive length (mm)");
     }
     if (!(isfinite(o->q) && o->q > 0) || o->q == floor(o->q)) {
-        return fail(is, "solver.rbf.q",
+        return sd_fail(is, "solver.rbf.q",
                     "must be positive and not a whole number (an integer q makes the "
                     "multiquadric a polynomial and the local systems singular)");
     }
     for (int a = 0; a < 3; ++a) {
         if (o->cells[a] < 1 || o->cells[a] > 4096) {
-            return fail(is, "solver.cells", "1 to 4096 background cells per axis");
+            return sd_fail(is, "solver.cells", "1 to 4096 background cells per axis");
         }
     }
     if (o->gauss < 1 || o->gauss > 12) {
-        return fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
+        return sd_fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
     }
     if (!(isfinite(o->penalty) && o->penalty > 0)) {
-        return fail(is, "solver.penalty", "must be a positive factor");
+        return sd_fail(is, "solver.penalty", "must be a positive factor");
+    }
+    if (!(isfinite(o->nitsche) && o->nitsche > 0)) {
+        return sd_fail(is, "solver.nitsche", "must be a positive factor");
+    }
+    if (efg && o->bc == TF_BC_ELIMINATION) {
+        return sd_fail(is, "solver.bc",
+                    "elimination needs shape functions that interpolate (rpim-galerkin); EFG "
+                    "takes penalty or nitsche");
     }
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
-        return fail(is, "solver.rcond_warn", "must lie in (0, 1)");
+        return sd_fail(is, "solver.rcond_warn", "must lie in (0, 1)");
     }
     return 0;
 }
@@ -498,20 +605,20 @@ static int reference(const sd_reference *d, tf_problem *s, sd_issue *is)
     }
     if (r->kind == TF_ANALYTIC_CANTILEVER) {
         if (d->load == NULL || !isfinite(*d->load) || d->offset || d->gradient) {
-            return fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
+            return sd_fail(is, "reference", "cantilever takes a finite load (N/mm) and nothing else");
         }
         r->load = *d->load;
         return 0;
     }
     if (d->gradient == NULL || d->load) {
-        return fail(is, "reference", "linear takes a gradient (9 numbers), an optional offset");
+        return sd_fail(is, "reference", "linear takes a gradient (9 numbers), an optional offset");
     }
     memcpy(r->gradient, d->gradient, sizeof r->gradient);
     for (int a = 0; a < 3; ++a) {
         r->offset[a] = d->offset ? d->offset[a] : 0;
     }
     if (!finite_all(r->gradient, 9) || !finite_all(r->offset, 3)) {
-        return fail(is, "reference", "values must be finite");
+        return sd_fail(is, "reference", "values must be finite");
     }
     return 0;
 }
@@ -530,7 +637,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
         if (f->family == NULL || f->family->kind != TF_FAMILY_FORWARD) {
             char names[256];
             tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
-            return fail(is, "fit.family", "'%s' is not one of the forward families: %s",
+            return sd_fail(is, "fit.family", "'%s' is not one of the forward families: %s",
                         d->family, names);
         }
     }
@@ -543,23 +650,23 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     if (d->contact) {
         f->contact = tf_problem_contact(s, d->contact);
         if (f->contact < 0) {
-            return fail(is, "fit.contact", "names no contact site of the scene");
+            return sd_fail(is, "fit.contact", "names no contact site of the scene");
         }
     }
     if (f->n_train < 6 || f->n_train > 100000) {
-        return fail(is, "fit.train", "6 to 100000 training load cases");
+        return sd_fail(is, "fit.train", "6 to 100000 training load cases");
     }
     if (f->n_heldout < 1 || f->n_heldout > 100000) {
-        return fail(is, "fit.heldout", "1 to 100000 held-out load cases");
+        return sd_fail(is, "fit.heldout", "1 to 100000 held-out load cases");
     }
     if (f->folds < 2 || f->folds > 20 || f->folds > f->n_train) {
-        return fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
+        return sd_fail(is, "fit.folds", "2 to 20 folds, and no more than the training cases");
     }
     if (f->max_degree > 8) {
-        return fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
+        return sd_fail(is, "fit.max_degree", "0 to 8 (the target's TFIT_MAX_DEGREE)");
     }
     if (f->max_rank < 1 || f->max_rank > TF_FAMILY_MAX_RANK) {
-        return fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
+        return sd_fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
     }
     return 0;
 }
@@ -574,7 +681,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||
         solver(doc->solver, s, is) != 0 ||
-        fit(doc->fit, s, plan, is) != 0) {
+        sd_history_build(doc->history, s, is) != 0 || fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }
     if (sd_resolve_outputs(&doc->outputs, s, &s->outputs, is->msg, sizeof is->msg) != 0) {

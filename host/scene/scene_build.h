@@ -23,6 +23,10 @@ typedef struct sd_issue {
  * allocations for tf_problem_release. */
 int sd_build(const sd_scene *doc, tf_problem *p, tf_fit_plan *plan, sd_issue *is);
 
+/* Records the issue (the field's path and a message) and returns -1. */
+int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
 /* Solver defaults (docs/scene-format.md) for a grid of nodes. */
 tf_solver_opts sd_solver_defaults(const unsigned grid[3]);
 

@@ -22,26 +22,30 @@ typedef struct sd_range {
     const char *pattern; /* a path; '*' stands for any one component */
     double lo, hi;
     const char *what;    /* "... in [lo, hi] (got v)" */
+    int replaces;        /* 1: this range replaces the magnitude rule (a tolerance is
+                          * compared, never multiplied, so it may be very small) */
 } sd_range;
 
 static const sd_range ranges[] = {
-    {"material.E", 1e-9, 1e12, "Young's modulus must be a positive number of MPa"},
-    {"envelope.radius", 1e-9, SD_N, "the envelope radius must be a positive number of newtons"},
-    {"envelope.centre.*", -SD_N, SD_N, "the envelope centre must be a force (N)"},
-    {"loads.*.force.*", -SD_N, SD_N, "a load must be a force (N)"},
-    {"geometry.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm"},
-    {"fixed.*.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm"},
-    {"fixed.*.plane.at", -SD_MM, SD_MM, "coordinates must be numbers of mm"},
-    {"fixed.*.displacement.*", -SD_MM, SD_MM, "displacements must be numbers of mm"},
-    {"outputs.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm"},
-    {"loads.*.patch.*.*", -SD_MM, SD_MM, "patch coordinates must be numbers of mm"},
-    {"loads.*.patch.radius", -SD_MM, SD_MM, "a patch radius must be a number of mm"},
-    {"contact.*.patch.*.*", -SD_MM, SD_MM, "patch coordinates must be numbers of mm"},
-    {"contact.*.patch.radius", -SD_MM, SD_MM, "a patch radius must be a number of mm"},
-    {"solver.support", 1e-3, 100, "the support radius must be a number of nodal spacings"},
-    {"solver.rbf.alpha_c", -1e6, 1e6, "alpha_c must be a number"},
-    {"solver.rbf.d_c", -SD_MM, SD_MM, "d_c must be a number of mm"},
-    {"solver.rbf.q", -10, 10, "the multiquadric exponent q must be a number"},
+    {"material.E", 1e-9, 1e12, "Young's modulus must be a positive number of MPa", 0},
+    {"envelope.radius", 1e-9, SD_N, "the envelope radius must be a positive number of newtons", 0},
+    {"envelope.centre.*", -SD_N, SD_N, "the envelope centre must be a force (N)", 0},
+    {"loads.*.force.*", -SD_N, SD_N, "a load must be a force (N)", 0},
+    {"geometry.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm", 0},
+    {"fixed.*.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm", 0},
+    {"fixed.*.plane.at", -SD_MM, SD_MM, "coordinates must be numbers of mm", 0},
+    {"fixed.*.displacement.*", -SD_MM, SD_MM, "displacements must be numbers of mm", 0},
+    {"outputs.box.*.*", -SD_MM, SD_MM, "coordinates must be numbers of mm", 0},
+    {"loads.*.patch.*.*", -SD_MM, SD_MM, "patch coordinates must be numbers of mm", 0},
+    {"loads.*.patch.radius", -SD_MM, SD_MM, "a patch radius must be a number of mm", 0},
+    {"contact.*.patch.*.*", -SD_MM, SD_MM, "patch coordinates must be numbers of mm", 0},
+    {"contact.*.patch.radius", -SD_MM, SD_MM, "a patch radius must be a number of mm", 0},
+    {"solver.support", 1e-3, 100, "the support radius must be a number of nodal spacings", 0},
+    {"solver.rbf.alpha_c", -1e6, 1e6, "alpha_c must be a number", 0},
+    {"solver.rbf.d_c", -SD_MM, SD_MM, "d_c must be a number of mm", 0},
+    {"solver.rbf.q", -10, 10, "the multiquadric exponent q must be a number", 0},
+    {"solver.newton.tolerance", 1e-30, 1, "a relative tolerance must be a number", 1},
+    {"solver.newton.energy_tolerance", 1e-30, 1, "a relative tolerance must be a number", 1},
 };
 
 /* Whether path matches pattern, component by component. */
@@ -62,9 +66,15 @@ int sd_range_check(const char *path, double v, char *msg, size_t msglen)
 {
     for (size_t k = 0; k < sizeof ranges / sizeof ranges[0]; ++k) {
         const sd_range *r = &ranges[k];
-        if (matches(r->pattern, path) && !(v >= r->lo && v <= r->hi)) {
+        if (!matches(r->pattern, path)) {
+            continue;
+        }
+        if (!(v >= r->lo && v <= r->hi)) {
             snprintf(msg, msglen, "%s in [%g, %g] (got %g)", r->what, r->lo, r->hi, v);
             return -1;
+        }
+        if (r->replaces) {
+            return 0;
         }
     }
     if (!(fabs(v) <= SD_HUGE) || (v != 0 && fabs(v) < SD_TINY)) {

@@ -24,6 +24,11 @@ static const cyaml_strval_t faces[] = {
     {"y+", TF_FACE_YMAX}, {"z-", TF_FACE_ZMIN}, {"z+", TF_FACE_ZMAX},
 };
 static const cyaml_strval_t axes[] = {{"x", 0}, {"y", 1}, {"z", 2}};
+static const cyaml_strval_t laws[] = {
+    {"linear", TF_LAW_LINEAR},         {"svk", TF_LAW_SVK},
+    {"neo-hookean", TF_LAW_NEOHOOKE},  {"kelvin", TF_LAW_KELVIN},
+    {"kelvin-neo-hookean", TF_LAW_KELVIN_NH},
+};
 static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, {"z", TF_COMP_Z}};
 static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
@@ -35,7 +40,16 @@ static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", T
 static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
 static const cyaml_strval_t volumetrics[] = {{"full", TF_VOLUMETRIC_FULL},
                                              {"cell", TF_VOLUMETRIC_CELL}};
-static const cyaml_strval_t bcs[] = {{"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}};
+static const cyaml_strval_t bcs[] = {
+    {"elimination", TF_BC_ELIMINATION}, {"penalty", TF_BC_PENALTY}, {"nitsche", TF_BC_NITSCHE}};
+static const cyaml_strval_t integrations[] = {{"gauss", TF_INTEGRATION_GAUSS},
+                                              {"vci", TF_INTEGRATION_VCI}};
+/* tf_ordering values (solvers/cholmod_solve.h) */
+static const cyaml_strval_t orderings[] = {{"default", 0}, {"amd", 1}, {"metis", 2}, {"nesdis", 3}};
+static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
+                                          {"modified", TF_TANGENT_MODIFIED},
+                                          {"krylov", TF_TANGENT_KRYLOV},
+                                          {"bfgs", TF_TANGENT_BFGS}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
                                             {"linear", TF_ANALYTIC_LINEAR}};
 
@@ -57,8 +71,13 @@ static const cyaml_schema_field_t geometry_fields[] = {
 };
 
 static const cyaml_schema_field_t material_fields[] = {
-    CYAML_FIELD_FLOAT("E", CYAML_FLAG_DEFAULT, sd_material, young),
+    CYAML_FIELD_ENUM_PTR("law", STRICT_OPT, sd_material, law, laws, N(laws)),
+    CYAML_FIELD_FLOAT_PTR("E", OPT, sd_material, young),
     CYAML_FIELD_FLOAT("nu", CYAML_FLAG_DEFAULT, sd_material, poisson),
+    CYAML_FIELD_FLOAT_PTR("k1", OPT, sd_material, k1),
+    CYAML_FIELD_FLOAT_PTR("k2", OPT, sd_material, k2),
+    CYAML_FIELD_FLOAT_PTR("eta", OPT, sd_material, eta),
+    CYAML_FIELD_FLOAT_PTR("k", OPT, sd_material, k),
     CYAML_FIELD_END,
 };
 
@@ -157,6 +176,17 @@ static const cyaml_schema_field_t rbf_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t newton_fields[] = {
+    CYAML_FIELD_FLOAT_PTR("tolerance", OPT, sd_newton, tolerance),
+    CYAML_FIELD_FLOAT_PTR("energy_tolerance", OPT, sd_newton, energy_tolerance),
+    CYAML_FIELD_UINT_PTR("iterations", OPT, sd_newton, iterations),
+    CYAML_FIELD_UINT_PTR("steps", OPT, sd_newton, steps),
+    CYAML_FIELD_UINT_PTR("cuts", OPT, sd_newton, cuts),
+    CYAML_FIELD_ENUM_PTR("tangent", STRICT_OPT, sd_newton, tangent, tangents, N(tangents)),
+    CYAML_FIELD_UINT_PTR("krylov_iterations", OPT, sd_newton, krylov_iterations),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_STRING_PTR("method", OPT, sd_solver, method, 1, TF_SOLVER_METHOD_MAX - 1),
     CYAML_FIELD_FLOAT_PTR("support", OPT, sd_solver, support),
@@ -170,6 +200,11 @@ static const cyaml_schema_field_t solver_fields[] = {
     CYAML_FIELD_UINT_PTR("gauss", OPT, sd_solver, gauss),
     CYAML_FIELD_ENUM_PTR("bc", STRICT_OPT, sd_solver, bc, bcs, N(bcs)),
     CYAML_FIELD_FLOAT_PTR("penalty", OPT, sd_solver, penalty),
+    CYAML_FIELD_FLOAT_PTR("nitsche", OPT, sd_solver, nitsche),
+    CYAML_FIELD_ENUM_PTR("integration", STRICT_OPT, sd_solver, integration, integrations,
+                         N(integrations)),
+    CYAML_FIELD_ENUM_PTR("ordering", STRICT_OPT, sd_solver, ordering, orderings, N(orderings)),
+    CYAML_FIELD_MAPPING_PTR("newton", OPT, sd_solver, newton, newton_fields),
     CYAML_FIELD_FLOAT_PTR("rcond_warn", OPT, sd_solver, rcond_warn),
     CYAML_FIELD_END,
 };
@@ -179,6 +214,32 @@ static const cyaml_schema_field_t reference_fields[] = {
     CYAML_FIELD_FLOAT_PTR("load", OPT, sd_reference, load),
     CYAML_FIELD_SEQUENCE_FIXED("offset", OPT_PTR, sd_reference, offset, &real, 3),
     CYAML_FIELD_SEQUENCE_FIXED("gradient", OPT_PTR, sd_reference, gradient, &real, 9),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_strval_t segment_kinds[] = {
+    {"step", TF_SEG_STEP}, {"release", TF_SEG_RELEASE}, {"ramp", TF_SEG_RAMP},
+    {"hold", TF_SEG_HOLD}, {"sinusoid", TF_SEG_SINUSOID}};
+
+static const cyaml_schema_field_t segment_fields[] = {
+    CYAML_FIELD_ENUM("kind", CYAML_FLAG_STRICT, sd_segment, kind, segment_kinds, N(segment_kinds)),
+    CYAML_FIELD_FLOAT_PTR("to", OPT, sd_segment, to),
+    CYAML_FIELD_FLOAT_PTR("time", OPT, sd_segment, time),
+    CYAML_FIELD_FLOAT_PTR("amplitude", OPT, sd_segment, amplitude),
+    CYAML_FIELD_FLOAT_PTR("period", OPT, sd_segment, period),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t segment_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_segment, segment_fields)};
+
+static const cyaml_schema_field_t history_fields[] = {
+    CYAML_FIELD_FLOAT("dt", CYAML_FLAG_DEFAULT, sd_history, dt),
+    CYAML_FIELD_FLOAT("duration", CYAML_FLAG_DEFAULT, sd_history, duration),
+    CYAML_FIELD_SEQUENCE_FIXED("force", OPT_PTR, sd_history, force, &real, 3),
+    CYAML_FIELD_STRING_PTR("contact", OPT, sd_history, contact, 1, TF_PROBLEM_NAME_MAX - 1),
+    CYAML_FIELD_SEQUENCE("segments", OPT_PTR, sd_history, segments, &segment_entry, 1,
+                         CYAML_UNLIMITED),
+    CYAML_FIELD_STRING_PTR("table", OPT, sd_history, table, 1, 4095),
     CYAML_FIELD_END,
 };
 
@@ -208,6 +269,7 @@ static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_SEQUENCE("cuts", OPT_PTR, sd_scene, cuts, &cut_entry, 0, CYAML_UNLIMITED),
     CYAML_FIELD_MAPPING_PTR("solver", OPT, sd_scene, solver, solver_fields),
     CYAML_FIELD_MAPPING_PTR("reference", OPT, sd_scene, reference, reference_fields),
+    CYAML_FIELD_MAPPING_PTR("history", OPT, sd_scene, history, history_fields),
     CYAML_FIELD_MAPPING_PTR("fit", OPT, sd_scene, fit, fit_fields),
     CYAML_FIELD_END,
 };

@@ -30,8 +30,10 @@ typedef struct sd_geometry {
 } sd_geometry;
 
 typedef struct sd_material {
-    double young;   /* key E */
+    int *law;       /* tf_law; linear when absent */
+    double *young;  /* key E (every law but the Kelvin ones) */
     double poisson; /* key nu */
+    double *k1, *k2, *eta, *k; /* Kelvin laws (materials/material.h) */
 } sd_material;
 
 typedef struct sd_plane {
@@ -99,6 +101,12 @@ typedef struct sd_rbf {
     double *q;
 } sd_rbf;
 
+typedef struct sd_newton {
+    double *tolerance, *energy_tolerance;
+    unsigned *iterations, *steps, *cuts, *krylov_iterations;
+    int *tangent; /* tf_tangent_kind */
+} sd_newton;
+
 typedef struct sd_solver {
     char *method;    /* a registered solver's name (solvers/solver.h) */
     double *support;
@@ -110,6 +118,10 @@ typedef struct sd_solver {
     unsigned *gauss;
     int *bc;         /* tf_bc_method */
     double *penalty;
+    double *nitsche;
+    int *integration; /* tf_integration */
+    int *ordering;    /* tf_ordering */
+    sd_newton *newton;
     double *rcond_warn;
 } sd_solver;
 
@@ -129,6 +141,20 @@ typedef struct sd_cut {
     unsigned path_count;
     double depth;
 } sd_cut;
+
+typedef struct sd_segment {
+    int kind;         /* tf_segment_kind */
+    double *to, *time, *amplitude, *period;
+} sd_segment;
+
+typedef struct sd_history {
+    double dt, duration;
+    double *force;    /* 3 */
+    char *contact;
+    sd_segment *segments;
+    unsigned segments_count;
+    char *table;      /* CSV file of t, fx, fy, fz */
+} sd_history;
 
 typedef struct sd_fit {
     char *family;      /* a registered forward family's name (fitting/families/family.h) */
@@ -153,6 +179,7 @@ typedef struct sd_scene {
     unsigned cuts_count;
     sd_solver *solver;
     sd_reference *reference;
+    sd_history *history;
     sd_fit *fit;
 } sd_scene;
 

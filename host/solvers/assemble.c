@@ -10,7 +10,6 @@
 #include <string.h>
 
 #include "solvers/cell_stiffness.h"
-#include "solvers/sparsity.h"
 
 /* Cells computed in parallel before they are added to K in cell order.  A
  * constant, so the result does not depend on the thread count. */
@@ -22,10 +21,43 @@ static int cmp_u32(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+static void add_support(const tf_shape_work *sw, uint32_t *mark, uint32_t stamp, uint32_t *list,
+                        size_t *n)
+{
+    for (size_t k = 0; k < sw->n; ++k) {
+        uint32_t a = sw->idx[k];
+        if (mark[a] != stamp) {
+            mark[a] = stamp;
+            list[(*n)++] = a;
+        }
+    }
+}
+
+/* The supports of the cell's boundary points and, with VCI, of its face
+ * integrals. */
+static int extra_nodes(const tf_shape *sh, const tf_assembly_extra *ex, tf_shape_work *sw,
+                       tf_grad_work *gw, uint32_t *mark, uint32_t stamp, uint32_t *list,
+                       size_t cell, size_t *n)
+{
+    for (size_t q = ex->bnd ? ex->bnd->cell_ptr[cell] : 0;
+         ex->bnd && q < ex->bnd->cell_ptr[cell + 1]; ++q) {
+        if (tf_shape_support(sh, sw, ex->bnd->pt[q].x, cell) != 0) {
+            return -1;
+        }
+        add_support(sw, mark, stamp, list, n);
+    }
+    if (ex->vci && tf_vci_cell_nodes(sh, gw, cell, mark, stamp, list, n) != 0) {
+        snprintf(sw->err, sizeof sw->err, "%s", gw->sw.err);
+        return -1;
+    }
+    return 0;
+}
+
 /* The nodes any support of the cell touches, ascending.  mark (node ->
  * stamp) and list are the thread's scratch. */
-static int cell_set(const tf_shape *sh, tf_shape_work *sw, uint32_t *mark, uint32_t *list,
-                    size_t cell, uint32_t **out, size_t *len)
+static int cell_set(const tf_shape *sh, const tf_assembly_extra *ex, tf_shape_work *sw,
+                    tf_grad_work *gw, uint32_t *mark, uint32_t *list, size_t cell, uint32_t **out,
+                    size_t *len)
 {
     size_t n = 0, np = sh->centre == TF_SUPPORT_CELL ? 1 : tf_cells_points(&sh->cells);
     uint32_t stamp = (uint32_t)cell + 1;
@@ -35,13 +67,10 @@ static int cell_set(const tf_shape *sh, tf_shape_work *sw, uint32_t *mark, uint3
         if (tf_shape_support(sh, sw, x, cell) != 0) {
             return -1;
         }
-        for (size_t k = 0; k < sw->n; ++k) {
-            uint32_t a = sw->idx[k];
-            if (mark[a] != stamp) {
-                mark[a] = stamp;
-                list[n++] = a;
-            }
-        }
+        add_support(sw, mark, stamp, list, &n);
+    }
+    if (ex != NULL && extra_nodes(sh, ex, sw, gw, mark, stamp, list, cell, &n) != 0) {
+        return -1;
     }
     qsort(list, n, sizeof *list, cmp_u32);
     *out = malloc((n + 1) * sizeof **out);
@@ -64,8 +93,8 @@ static void note_failure(size_t c, const char *why, size_t *failed, char *msg, s
     }
 }
 
-static int build_cell_sets(const tf_shape *sh, int threads, tf_nodesets *cs, char *err,
-                           size_t errlen)
+static int build_cell_sets(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
+                           tf_nodesets *cs, char *err, size_t errlen)
 {
     size_t ncell = tf_cells_count(&sh->cells), nn = sh->cloud->n, failed = SIZE_MAX;
     uint32_t **lists = calloc(ncell, sizeof *lists);
@@ -80,17 +109,22 @@ static int build_cell_sets(const tf_shape *sh, int threads, tf_nodesets *cs, cha
 #pragma omp parallel num_threads(threads)
     {
         tf_shape_work sw;
+        tf_grad_work gw;
         tf_shape_work_init(&sw);
+        int gw_ok = ex != NULL && ex->vci ? tf_grad_work_init(&gw, sh, nn) == 0 : 1;
         uint32_t *mark = calloc(nn, sizeof *mark), *list = malloc((nn + 1) * sizeof *list);
 #pragma omp for schedule(dynamic, 4)
         for (size_t c = 0; c < ncell; ++c) {
-            if (!mark || !list) {
+            if (!mark || !list || !gw_ok) {
                 note_failure(c, "out of memory", &failed, msg, sizeof msg);
-            } else if (cell_set(sh, &sw, mark, list, c, &lists[c], &len[c]) != 0) {
+            } else if (cell_set(sh, ex, &sw, &gw, mark, list, c, &lists[c], &len[c]) != 0) {
                 note_failure(c, sw.err, &failed, msg, sizeof msg);
             }
         }
         tf_shape_work_free(&sw);
+        if (ex != NULL && ex->vci && gw_ok) {
+            tf_grad_work_free(&gw);
+        }
         free(mark);
         free(list);
     }
@@ -130,7 +164,7 @@ static void scatter(tf_csc *k, const tf_nodesets *bp, const uint32_t *set, size_
 typedef struct value_pass {
     const tf_shape *sh;
     const tf_lame *l;
-    int bbar;
+    int bbar, vci;
     const tf_nodesets *cs, *bp;
     int threads;
     tf_csc *k;
@@ -152,7 +186,7 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     tf_cell_work *cw = calloc((size_t)nt, sizeof *cw);
     int ok = buf != NULL && cw != NULL;
     for (int t = 0; ok && t < nt; ++t) {
-        ok = tf_cell_work_init(&cw[t], v->sh, v->sh->cloud->n, maxm) == 0;
+        ok = tf_cell_work_init(&cw[t], v->sh, v->sh->cloud->n, maxm, v->vci) == 0;
     }
     for (size_t start = 0; ok && start < ncell && failed == SIZE_MAX; start += BATCH) {
         size_t end = start + BATCH < ncell ? start + BATCH : ncell;
@@ -176,6 +210,10 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     for (int t = 0; cw != NULL && t < nt; ++t) {
         v->t_shape += cw[t].t_shape;
         tf_shape_stats_merge(&v->st, &cw[t].sw.st);
+        if (cw[t].vci) {
+            tf_shape_stats_merge(&v->st, &cw[t].gw.sw.st);
+            tf_shape_stats_merge(&v->st, &cw[t].gw.fw.st);
+        }
         tf_cell_work_free(&cw[t]);
     }
     free(cw);
@@ -187,7 +225,27 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     return 0;
 }
 
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, int threads, tf_csc *k,
+int tf_assemble_pattern(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
+                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k, char *err,
+                        size_t errlen)
+{
+    memset(cells, 0, sizeof *cells);
+    memset(blocks, 0, sizeof *blocks);
+    memset(k, 0, sizeof *k);
+    int rc = build_cell_sets(sh, ex, threads, cells, err, errlen);
+    if (rc == 0) {
+        rc = tf_sparsity(cells, sh->cloud->n, threads, blocks, k, err, errlen);
+    }
+    if (rc != 0) {
+        tf_nodesets_free(cells);
+        tf_nodesets_free(blocks);
+        tf_csc_free(k);
+    }
+    return rc;
+}
+
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar,
+                          const tf_assembly_extra *ex, int threads, tf_csc *k,
                           tf_assembly_info *info, char *err, size_t errlen)
 {
     tf_nodesets cs = {0}, bp = {0};
@@ -197,13 +255,10 @@ int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, int th
      * on one thread each instead of spawning and spinning more. */
     openblas_set_num_threads(1);
     double t0 = omp_get_wtime();
-    int rc = build_cell_sets(sh, threads, &cs, err, errlen);
-    if (rc == 0) {
-        rc = tf_sparsity(&cs, sh->cloud->n, threads, &bp, k, err, errlen);
-    }
+    int rc = tf_assemble_pattern(sh, ex, threads, &cs, &bp, k, err, errlen);
     double t1 = omp_get_wtime();
     info->t_pattern = t1 - t0;
-    value_pass v = {sh, l, bbar, &cs, &bp, threads, k, 0, 0, {0}};
+    value_pass v = {sh, l, bbar, ex != NULL && ex->vci, &cs, &bp, threads, k, 0, 0, {0}};
     tf_shape_stats_reset(&v.st);
     if (rc == 0) {
         rc = assemble_values(&v, err, errlen);

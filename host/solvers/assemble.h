@@ -17,6 +17,8 @@
 #include "numerics/csc.h"
 #include "materials/elasticity.h"
 #include "meshfree/shape.h"
+#include "solvers/boundary.h"
+#include "solvers/sparsity.h"
 
 typedef struct tf_assembly_info {
     double t_pattern;      /* s, wall: supports of every cell and the sparsity pattern */
@@ -26,11 +28,27 @@ typedef struct tf_assembly_info {
     tf_shape_stats st;
 } tf_assembly_info;
 
+/* What K must hold beyond the Gauss points' supports. */
+typedef struct tf_assembly_extra {
+    int vci;                    /* corrected gradients (cell_gradients.h) */
+    const tf_boundary *bnd;     /* weak boundary terms' points, or NULL */
+} tf_assembly_extra;
+
+/* The node set of every cell (the supports of its Gauss points, its
+ * boundary points and, with VCI, of its face integrals; ascending) and K's
+ * pattern with zero values (sparsity.h), on `threads` OpenMP threads.
+ * ex may be NULL.  Returns 0, or -1 with a message in err. */
+int tf_assemble_pattern(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
+                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k, char *err,
+                        size_t errlen);
+
 /* Assembles K for the shape functions sh and the material l; with bbar
  * the volumetric strain is averaged over each background cell (B-bar), on
- * `threads` OpenMP threads (>= 1; the same bits for any count).  Returns
- * 0, or -1 with a message in err (a singular local system, out of memory). */
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, int threads, tf_csc *k,
+ * `threads` OpenMP threads (>= 1; the same bits for any count); ex (NULL:
+ * none) as above.  Returns 0, or -1 with a message in err (a singular
+ * local system, out of memory). */
+int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar,
+                          const tf_assembly_extra *ex, int threads, tf_csc *k,
                           tf_assembly_info *info, char *err, size_t errlen);
 
 #endif /* TF_ASSEMBLE_H */

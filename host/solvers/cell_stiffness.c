@@ -7,15 +7,23 @@
 #include <cblas.h>
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap)
+int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap, int vci)
 {
     size_t np = tf_cells_points(&sh->cells);
     memset(w, 0, sizeof *w);
     tf_shape_work_init(&w->sw);
     w->cap = cap;
+    w->vci = vci;
+    w->loc = malloc((cap + 1) * sizeof *w->loc);
+    if (w->loc == NULL || (vci && (tf_grad_work_init(&w->gw, sh, n_nodes) != 0 ||
+                                   (w->g = malloc(3 * np * cap * sizeof *w->g)) == NULL))) {
+        tf_cell_work_free(w);
+        return -1;
+    }
     w->map = malloc(n_nodes * sizeof *w->map);
     w->x = malloc(3 * np * sizeof *w->x);
     w->w = malloc(np * sizeof *w->w);
@@ -34,6 +42,13 @@ int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_
 void tf_cell_work_free(tf_cell_work *w)
 {
     tf_shape_work_free(&w->sw);
+    if (w->vci) {
+        tf_grad_work_free(&w->gw);
+    }
+    free(w->g);
+    free(w->loc);
+    w->g = NULL;
+    w->loc = NULL;
     free(w->map);
     free(w->x);
     free(w->w);
@@ -115,11 +130,61 @@ static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, int bbar, tf
     return 0;
 }
 
+/* The cell matrix from gradients shared by all np points of a cell:
+ * dphi[(3 p + a) n + k] of n nodes at local indices loc[k], weights w.
+ * With Y[g, a n + i] = sqrt(w_g) d phi_i / d x_a at point g, all sums
+ * M^ab_ij = sum_g w_g d_a phi_i d_b phi_j come from one C = Y^T Y (BLAS
+ * dsyrk), and the Lame form gives
+ * K_(3i+a)(3j+b) = lambda M^ab_ij + mu M^ba_ij + mu delta_ab sum_c M^cc_ij.
+ * The B-bar sums go in local order, which is the nodes' order here. */
+static void cell_matrix_shared(const tf_lame *l, int bbar, tf_cell_work *wk, const double *dphi,
+                               size_t n, const size_t *loc, const double *wts, size_t np,
+                               size_t dim, double *kc)
+{
+    size_t n3 = 3 * n;
+    double *y = wk->y, *c = wk->c;
+    for (size_t p = 0; p < np; ++p) {
+        double sw = sqrt(wts[p]);
+        const double *d = dphi + 3 * p * n;
+        for (size_t q = 0; q < n3; ++q) {
+            y[p + np * q] = sw * d[q];
+        }
+    }
+    cblas_dsyrk(CblasColMajor, CblasLower, CblasTrans, (int)n3, (int)np, 1.0, y, (int)np, 0.0, c,
+                (int)n3);
+    double lambda = bbar ? 0 : l->lambda, vol = 0, *sv = y; /* y is free again */
+    if (bbar) {
+        memset(sv, 0, n3 * sizeof *sv);
+        for (size_t p = 0; p < np; ++p) {
+            vol += wts[p];
+            for (size_t q = 0; q < n3; ++q) {
+                sv[q] += wts[p] * dphi[3 * p * n + q];
+            }
+        }
+    }
+#define M(a, i, b, j) c[((a) * n + (i)) >= ((b) * n + (j)) ? ((a) * n + (i)) + n3 * ((b) * n + (j)) \
+                                                           : ((b) * n + (j)) + n3 * ((a) * n + (i))]
+    for (size_t j = 0; j < n; ++j) {
+        size_t lj = loc[j];
+        for (size_t i = j; i < n; ++i) {
+            size_t li = loc[i];
+            double tr = l->mu * (M(0, i, 0, j) + M(1, i, 1, j) + M(2, i, 2, j));
+            for (size_t b = 0; b < 3; ++b) {
+                double *col = kc + dim * (3 * lj + b) + 3 * li;
+                for (size_t a = 0; a < 3; ++a) {
+                    col[a] += lambda * M(a, i, b, j) + l->mu * M(b, i, a, j) + (a == b ? tr : 0);
+                }
+            }
+        }
+    }
+#undef M
+    if (bbar) {
+        add_volumetric(l->lambda, vol, sv, n, kc); /* local order = the nodes' order */
+    }
+}
+
 /* Cell-centred supports: every Gauss point of the cell has the same n
- * nodes, so with Y[g, a n + i] = sqrt(w_g) d phi_i / d x_a at point g, all
- * sums M^ab_ij = sum_g w_g d_a phi_i d_b phi_j come from one C = Y^T Y
- * (BLAS dsyrk), and the Lame form gives
- * K_(3i+a)(3j+b) = lambda M^ab_ij + mu M^ba_ij + mu delta_ab sum_c M^cc_ij. */
+ * nodes (the cell's set, in its order). */
 static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
                             size_t cell, size_t dim, double *kc)
 {
@@ -133,46 +198,32 @@ static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, tf_c
     if (rc != 0) {
         return -1;
     }
-    size_t n = wk->sw.n, n3 = 3 * n;
-    double *y = wk->y, *c = wk->c;
-    for (size_t p = 0; p < np; ++p) {
-        double sw = sqrt(wk->w[p]);
-        const double *d = wk->sw.dphi + 3 * p * n;
-        for (size_t q = 0; q < n3; ++q) {
-            y[p + np * q] = sw * d[q];
-        }
+    size_t n = wk->sw.n;
+    for (size_t k = 0; k < n; ++k) {
+        wk->loc[k] = (size_t)wk->map[wk->sw.idx[k]];
     }
-    cblas_dsyrk(CblasColMajor, CblasLower, CblasTrans, (int)n3, (int)np, 1.0, y, (int)np, 0.0, c,
-                (int)n3);
-    double lambda = bbar ? 0 : l->lambda, vol = 0, *sv = y; /* y is free again */
-    if (bbar) {
-        memset(sv, 0, n3 * sizeof *sv);
-        for (size_t p = 0; p < np; ++p) {
-            vol += wk->w[p];
-            for (size_t q = 0; q < n3; ++q) {
-                sv[q] += wk->w[p] * wk->sw.dphi[3 * p * n + q];
-            }
-        }
+    cell_matrix_shared(l, bbar, wk, wk->sw.dphi, n, wk->loc, wk->w, np, dim, kc);
+    return 0;
+}
+
+/* VCI: corrected gradients over the cell's set (cell_gradients.h). */
+static int cell_matrix_vci(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
+                           size_t cell, const uint32_t *set, size_t m, double *kc)
+{
+    double t0 = wk->gw.t_shape;
+    int rc = tf_cell_gradients(sh, 1, &wk->gw, cell, set, m, wk->g);
+    wk->t_shape += wk->gw.t_shape - t0;
+    if (rc != 0) {
+        snprintf(wk->sw.err, sizeof wk->sw.err, "%s", wk->gw.sw.err);
+        return -1;
     }
-#define M(a, i, b, j) c[((a) * n + (i)) >= ((b) * n + (j)) ? ((a) * n + (i)) + n3 * ((b) * n + (j)) \
-                                                           : ((b) * n + (j)) + n3 * ((a) * n + (i))]
-    for (size_t j = 0; j < n; ++j) {
-        size_t lj = (size_t)wk->map[wk->sw.idx[j]];
-        for (size_t i = j; i < n; ++i) {
-            size_t li = (size_t)wk->map[wk->sw.idx[i]];
-            double tr = l->mu * (M(0, i, 0, j) + M(1, i, 1, j) + M(2, i, 2, j));
-            for (size_t b = 0; b < 3; ++b) {
-                double *col = kc + dim * (3 * lj + b) + 3 * li;
-                for (size_t a = 0; a < 3; ++a) {
-                    col[a] += lambda * M(a, i, b, j) + l->mu * M(b, i, a, j) + (a == b ? tr : 0);
-                }
-            }
-        }
+    for (size_t r = 0; r < m; ++r) {
+        wk->loc[r] = r;
     }
-#undef M
-    if (bbar) {
-        add_volumetric(l->lambda, vol, sv, n, kc); /* cell mode: local order = support order */
-    }
+    /* the gradients are dense over the set at every point (zeros where a
+     * node does not support a point), whatever the supports' centre */
+    cell_matrix_shared(l, bbar, wk, wk->g, m, wk->loc, wk->gw.w, tf_cells_points(&sh->cells),
+                       3 * m, kc);
     return 0;
 }
 
@@ -181,6 +232,9 @@ int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_wo
 {
     size_t dim = 3 * m;
     memset(kc, 0, dim * dim * sizeof *kc);
+    if (wk->vci) {
+        return cell_matrix_vci(sh, l, bbar, wk, cell, set, m, kc);
+    }
     for (size_t r = 0; r < m; ++r) {
         wk->map[set[r]] = (int)r;
     }

@@ -18,6 +18,7 @@
 
 #include "materials/elasticity.h"
 #include "meshfree/shape.h"
+#include "solvers/cell_gradients.h"
 
 /* One thread's scratch. */
 typedef struct tf_cell_work {
@@ -27,16 +28,21 @@ typedef struct tf_cell_work {
     double *y, *c;  /* scaled gradients and Y^T Y */
     size_t cap;     /* nodes per cell the buffers hold */
     double t_shape; /* seconds spent in shape functions */
+    int vci;        /* gradients corrected (cell_gradients.h) */
+    tf_grad_work gw;/* VCI: gradients over the cell's set */
+    double *g;      /* VCI: 3 np cap gradients */
+    size_t *loc;    /* cap local indices */
 } tf_cell_work;
 
-/* Scratch for n_nodes nodes and cells of up to cap nodes.  Returns 0, or
- * -1 when out of memory. */
-int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap);
+/* Scratch for n_nodes nodes and cells of up to cap nodes, with VCI's
+ * corrected gradients when vci.  Returns 0, or -1 when out of memory. */
+int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_t cap, int vci);
 void tf_cell_work_free(tf_cell_work *w);
 
 /* kc (3m x 3m, column major, zeroed here; the lower block triangle is
  * filled) for cell `cell` whose supports touch the m nodes set[] (ascending).
- * Returns 0, or -1 with a message in wk->sw.err. */
+ * Returns 0, or -1 with a message in wk->sw.err (VCI: copied there from
+ * wk->gw). */
 int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
                       size_t cell, const uint32_t *set, size_t m, double *kc);
 

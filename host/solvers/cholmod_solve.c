@@ -97,8 +97,11 @@ tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t e
     info->nnz_l = c->cm.lnz;
     info->flops = c->cm.fl;
     info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    info->rcond = cholmod_rcond(c->l, &c->cm);
     return c;
 }
+
+double tf_chol_rcond(tf_chol *c) { return cholmod_rcond(c->l, &c->cm); }
 
 int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen)
 {
@@ -120,6 +123,69 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
     memcpy(x, r->x, c->n * ncol * sizeof *x);
     cholmod_free_dense(&r, &c->cm);
     return 0;
+}
+
+tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
+                         char *err, size_t errlen)
+{
+    tf_chol *c = calloc(1, sizeof *c);
+    if (c == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    cholmod_start(&c->cm);
+    c->cm.print = 0;
+    c->n = a->n;
+    if (ldl) {
+        c->cm.supernodal = CHOLMOD_SIMPLICIAL;
+        c->cm.final_ll = 0;
+    }
+    if (ord != TF_ORDER_DEFAULT) {
+        c->cm.nmethods = 1;
+        c->cm.method[0].ordering = ord == TF_ORDER_AMD     ? CHOLMOD_AMD
+                                   : ord == TF_ORDER_METIS ? CHOLMOD_METIS
+                                                           : CHOLMOD_NESDIS;
+    }
+    cholmod_sparse s = wrap(a);
+    openblas_set_num_threads(TF_BLAS_THREADS);
+    double t0 = omp_get_wtime();
+    c->l = cholmod_analyze(&s, &c->cm);
+    info->t_analyse = omp_get_wtime() - t0;
+    info->t_factor = 0;
+    if (c->l == NULL) {
+        snprintf(err, errlen, "CHOLMOD analysis failed (status %d)%s", c->cm.status,
+                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        tf_chol_free(c);
+        return NULL;
+    }
+    info->nnz_l = c->cm.lnz;
+    info->flops = c->cm.fl;
+    info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    info->rcond = 0;
+    return c;
+}
+
+int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen)
+{
+    cholmod_sparse s = wrap(a);
+    openblas_set_num_threads(TF_BLAS_THREADS);
+    double t0 = omp_get_wtime();
+    int ok = cholmod_factorize(&s, c->l, &c->cm);
+    *t = omp_get_wtime() - t0;
+    if (c->cm.status == CHOLMOD_NOT_POSDEF || (ok && c->l->minor < c->n)) {
+        return 1;
+    }
+    if (!ok || c->cm.status != CHOLMOD_OK) {
+        snprintf(err, errlen, "CHOLMOD factorisation failed (status %d)%s", c->cm.status,
+                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        return -1;
+    }
+    return 0;
+}
+
+const char *tf_chol_ordering(const tf_chol *c)
+{
+    return ordering_name(c->cm.method[c->cm.selected].ordering);
 }
 
 void tf_chol_free(tf_chol *c)

@@ -17,12 +17,42 @@ typedef struct tf_chol_info {
     double nnz_l;               /* entries in the factor */
     double flops;               /* of the factorisation */
     const char *ordering;       /* fill-reducing ordering CHOLMOD chose */
+    double rcond;               /* CHOLMOD's rough reciprocal condition: (min/max diag L)^2 */
 } tf_chol_info;
 
 /* Factorises the symmetric positive definite A (lower triangle; A is not
  * kept).  Returns NULL with a message in err when A is not positive
  * definite or memory runs out. */
 tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t errlen);
+
+/* Fill-reducing orderings: CHOLMOD's own choice (AMD, then METIS when the
+ * fill is high: tf_chol_factor's), or one of them forced. */
+typedef enum tf_ordering {
+    TF_ORDER_DEFAULT,
+    TF_ORDER_AMD,
+    TF_ORDER_METIS,
+    TF_ORDER_NESDIS,
+} tf_ordering;
+
+/* The symbolic analysis of A's pattern only, with the given ordering
+ * (a Newton solver analyses once and refactorises many times); ldl: a
+ * simplicial LDL^T factorisation, which (without pivoting) also takes an
+ * indefinite A as long as no pivot vanishes.  Returns NULL with a
+ * message. */
+tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
+                         char *err, size_t errlen);
+
+/* Numeric factorisation of A (the pattern analysed) into c, replacing the
+ * last one.  Returns 0; 1 when A is not positive definite (LL^T) or has a
+ * zero pivot (LDL^T): c then holds no usable factor; -1 with a message on
+ * other failures.  *t gets the seconds it took. */
+int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen);
+
+/* CHOLMOD's rough reciprocal condition of the last factorisation. */
+double tf_chol_rcond(tf_chol *c);
+
+/* The ordering's name ("AMD", ...) of an analysed c. */
+const char *tf_chol_ordering(const tf_chol *c);
 
 /* Solves A X = B for ncol columns (column major, length n each).
  * Returns 0, or -1 with a message. */

@@ -10,6 +10,7 @@
 
 static const tf_solver_ops *const types[] = {
     &tf_galerkin_ops,
+    &tf_efg_galerkin_ops,
 };
 
 size_t tf_solver_type_count(void) { return sizeof types / sizeof types[0]; }

@@ -35,9 +35,13 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
     if (s == NULL) {
         return NULL;
     }
-    s->ops = type;
+    if (s->ops == NULL) { /* (a type may hand over to another implementation) */
+        s->ops = type;
+    }
     s->problem = p;
-    s->opts = *o;
+    if (s->opts.method[0] == '\0') { /* (an implementation may resolve an option: keep its) */
+        s->opts = *o;
+    }
     s->ctx = ctx;
     if (p->n_cuts > 0 && !(type->caps(s) & TF_SOLVER_CUTS)) {
         type->destroy(s);

@@ -60,7 +60,10 @@ typedef struct tf_solver_ops {
     const char *summary; /* one line: method, materials, what it assumes */
     /* Builds a solver of the problem (which must outlive it) with these
      * options; NULL with a message in ctx->err.  tf_solver_create fills
-     * the instance's struct tf_solver (ops, problem, opts, ctx) after this
+     * the instance's struct tf_solver (problem, ctx, and ops and opts
+     * unless the implementation set them: a type may hand a problem to
+     * another implementation, as the Galerkin solvers do for nonlinear
+     * laws, and resolve an option, as efg-galerkin does for bc) after this
      * returns; the implementation fills its info. */
     tf_solver *(*create)(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx);
     unsigned (*caps)(const tf_solver *s);

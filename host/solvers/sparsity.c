@@ -182,3 +182,41 @@ int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, int threads, tf_nodese
     tf_nodesets_free(&nc);
     return scalar_pattern(blocks, k, err, errlen);
 }
+
+long tf_sparsity_find(const tf_csc *k, size_t row, size_t col, size_t from)
+{
+    size_t lo = from > (size_t)k->p[col] ? from : (size_t)k->p[col], hi = (size_t)k->p[col + 1];
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if ((size_t)k->i[mid] < row) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo < (size_t)k->p[col + 1] && (size_t)k->i[lo] == row ? (long)lo : -1;
+}
+
+int tf_sparsity_add_dense(tf_csc *k, const uint32_t *idx, size_t n, const double *dense)
+{
+    size_t dim = 3 * n;
+    for (size_t j = 0; j < n; ++j) {
+        for (size_t b = 0; b < 3; ++b) {
+            size_t col = 3 * (size_t)idx[j] + b, from = 0;
+            const double *src = dense + dim * (3 * j + b);
+            for (size_t i = j; i < n; ++i) {
+                size_t a0 = i == j ? b : 0, row = 3 * (size_t)idx[i] + a0;
+                long q = tf_sparsity_find(k, row, col, from);
+                if (q < 0) {
+                    return -1;
+                }
+                /* the rows of a node's block follow one another */
+                for (size_t a = a0; a < 3; ++a) {
+                    k->x[(size_t)q + a - a0] += src[3 * i + a];
+                }
+                from = (size_t)q;
+            }
+        }
+    }
+    return 0;
+}

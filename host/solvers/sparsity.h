@@ -41,4 +41,13 @@ static inline size_t tf_sparsity_entry(const tf_csc *k, size_t a, size_t b, size
     return (size_t)k->p[3 * b + j] + (a == b ? i - j : (3 - j) + 3 * (pos - 1) + i);
 }
 
+/* Position of entry (row, col), row >= col, in K's values, searching the
+ * column's rows from position `from` on; -1 when the pattern lacks it. */
+long tf_sparsity_find(const tf_csc *k, size_t row, size_t col, size_t from);
+
+/* Adds the lower triangle of a dense matrix over the nodes idx[0 .. n)
+ * (ascending; 3n x 3n, column major, DOF 3 i + a of local node i) to K.
+ * Returns 0, or -1 (nothing further added) when the pattern lacks a pair. */
+int tf_sparsity_add_dense(tf_csc *k, const uint32_t *idx, size_t n, const double *dense);
+
 #endif /* TF_SPARSITY_H */

@@ -13,15 +13,23 @@
 #include "base/log.h"
 #include "base/peak_memory.h"
 #include "solvers/assemble.h"
+#include "solvers/boundary.h"
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
+#include "solvers/field.h"
 #include "solvers/load_vector.h"
+#include "solvers/nodal_values.h"
+#include "solvers/nonlinear/nonlinear.h"
 
 typedef struct galerkin {
     tf_solver base;    /* first: a galerkin is a tf_solver (base.opts: its options) */
     tf_shape sh;
     int shape_ok;
-    tf_csc k;          /* full stiffness, every DOF */
+    int efg;           /* MLS shape functions: the unknowns are parameters (nodal_values.h) */
+    int weak;          /* essential conditions in weak form (boundary.h) */
+    tf_boundary bnd;   /* weak: Gamma_u's points */
+    tf_nodal_map map;  /* EFG: parameters -> nodal displacements */
+    tf_csc k;          /* stiffness of the body, every DOF (weak terms not included) */
     tf_constraints bc; /* prescribed DOFs */
     double *f0;        /* 3N: the problem's loads */
     double *basis;     /* n_contacts x (3N x 3): unit forces at each site */
@@ -55,6 +63,37 @@ static int build_loads(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
+/* K plus the weak boundary terms, and the loads plus theirs. */
+static int weak_system(galerkin *g, tf_csc *a, tf_ctx *ctx)
+{
+    const tf_problem *p = g->base.problem;
+    size_t n3 = g->k.n;
+    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    double scale = tf_boundary_scale(&l, &p->cloud);
+    tf_bc_method m = g->base.opts.bc;
+    double factor = scale * (m == TF_BC_NITSCHE ? g->base.opts.nitsche : g->base.opts.penalty);
+    g->rhs0 = malloc(n3 * sizeof *g->rhs0);
+    a->n = g->k.n;
+    a->nnz = g->k.nnz;
+    a->p = malloc((n3 + 1) * sizeof *a->p);
+    a->i = malloc(g->k.nnz * sizeof *a->i);
+    a->x = malloc(g->k.nnz * sizeof *a->x);
+    if (!g->rhs0 || !a->p || !a->i || !a->x) {
+        tf_csc_free(a);
+        return tf_fail(ctx, "out of memory");
+    }
+    memcpy(g->rhs0, g->f0, n3 * sizeof *g->rhs0);
+    memcpy(a->p, g->k.p, (n3 + 1) * sizeof *a->p);
+    memcpy(a->i, g->k.i, g->k.nnz * sizeof *a->i);
+    memcpy(a->x, g->k.x, g->k.nnz * sizeof *a->x);
+    if (tf_boundary_add_linear(&g->bnd, &g->sh, m, factor, &l, a, g->rhs0, ctx->err,
+                               sizeof ctx->err) != 0) {
+        tf_csc_free(a);
+        return -1;
+    }
+    return 0;
+}
+
 /* The system matrix and the constant part of every right-hand side, then
  * the factorisation. */
 static int factorise(galerkin *g, tf_ctx *ctx)
@@ -62,7 +101,11 @@ static int factorise(galerkin *g, tf_ctx *ctx)
     size_t n3 = g->k.n;
     tf_csc a = {0};
     tf_chol_info ci;
-    if (g->base.opts.bc == TF_BC_PENALTY) {
+    if (g->weak) {
+        if (weak_system(g, &a, ctx) != 0) {
+            return -1;
+        }
+    } else if (g->base.opts.bc == TF_BC_PENALTY) {
         g->rhs0 = malloc(n3 * sizeof *g->rhs0);
         if (g->rhs0 == NULL) {
             return tf_fail(ctx, "out of memory");
@@ -91,7 +134,24 @@ static int factorise(galerkin *g, tf_ctx *ctx)
         tf_csc_free(&a);
         return tf_fail(ctx, "every degree of freedom is fixed: nothing to solve");
     }
-    g->chol = tf_chol_factor(&a, &ci, ctx->err, sizeof ctx->err);
+    if (g->base.opts.ordering == TF_ORDER_DEFAULT) { /* today's path, bit for bit */
+        g->chol = tf_chol_factor(&a, &ci, ctx->err, sizeof ctx->err);
+    } else {
+        double t = 0;
+        g->chol = tf_chol_analyse(&a, (tf_ordering)g->base.opts.ordering, 0, &ci, ctx->err,
+                                  sizeof ctx->err);
+        int rc = g->chol ? tf_chol_refactor(g->chol, &a, &t, ctx->err, sizeof ctx->err) : -1;
+        ci.t_factor = t;
+        ci.rcond = rc == 0 ? tf_chol_rcond(g->chol) : 0;
+        if (rc != 0) {
+            if (rc == 1) {
+                tf_fail(ctx, "the stiffness matrix is not positive definite: is the body held "
+                             "by its fixed regions?");
+            }
+            tf_chol_free(g->chol);
+            g->chol = NULL;
+        }
+    }
     tf_csc_free(&a);
     if (g->chol == NULL) {
         return -1;
@@ -100,6 +160,7 @@ static int factorise(galerkin *g, tf_ctx *ctx)
     g->detail.nnz_l = ci.nnz_l;
     g->detail.flops = ci.flops;
     g->detail.ordering = ci.ordering;
+    g->detail.rcond = ci.rcond;
     return 0;
 }
 
@@ -108,13 +169,16 @@ static void announce(const galerkin *g, const tf_problem *p, const tf_ctx *ctx)
     const tf_solver_opts *o = &g->base.opts;
     const tf_cells *c = &g->sh.cells;
     tf_info(ctx,
-            "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points, support %g x spacing "
+            "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points%s, support %g x spacing "
             "(%s-centred), %s, volumetric strain %s, BCs by %s",
-            p->cloud.n, 3 * p->cloud.n, tf_cells_count(c), c->gauss, o->support,
+            p->cloud.n, 3 * p->cloud.n, tf_cells_count(c), c->gauss,
+            o->integration == TF_INTEGRATION_VCI ? " (VCI)" : "", o->support,
             o->centre == TF_SUPPORT_CELL ? "cell" : "point",
-            o->polynomial ? "RBF + linear polynomial" : "RBF only",
+            g->efg ? "MLS (EFG)" : o->polynomial ? "RBF + linear polynomial" : "RBF only",
             o->volumetric == TF_VOLUMETRIC_CELL ? "averaged per cell" : "at every point",
-            o->bc == TF_BC_PENALTY ? "penalty" : "elimination");
+            o->bc == TF_BC_NITSCHE   ? "Nitsche's method"
+            : o->bc == TF_BC_PENALTY ? (g->weak ? "penalty (weak form)" : "penalty")
+                                     : "elimination");
 }
 
 static void destroy(tf_solver *s)
@@ -125,6 +189,8 @@ static void destroy(tf_solver *s)
     }
     tf_csc_free(&g->k);
     tf_constraints_release(&g->bc);
+    tf_boundary_free(&g->bnd);
+    tf_nodal_map_free(&g->map);
     free(g->f0);
     free(g->basis);
     free(g->rhs0);
@@ -141,14 +207,30 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     g->shape_ok = 1;
+    if (g->efg && tf_shape_use_efg(&g->sh, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
+    /* After tf_shape_use_efg (the enriched nodes are the MLS domains that
+     * meet a cut) and before the boundary terms, which evaluate the same
+     * shape functions on the fixed faces. */
     if (tf_shape_set_cuts(&g->sh, p->cuts, p->n_cuts, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
+    if (g->weak && tf_boundary_build(&g->bnd, p, &g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
     announce(g, p, ctx);
     tf_assembly_info ai;
     tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    tf_assembly_extra ex = {g->base.opts.integration == TF_INTEGRATION_VCI,
+                            g->weak ? &g->bnd : NULL};
+    int plain = !ex.vci && ex.bnd == NULL; /* today's path, bit for bit */
     if (tf_assemble_stiffness(&g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
-                              tf_ctx_threads(ctx), &g->k, &ai, ctx->err, sizeof ctx->err) != 0) {
+                              plain ? NULL : &ex, tf_ctx_threads(ctx), &g->k, &ai, ctx->err,
+                              sizeof ctx->err) != 0) {
+        return -1;
+    }
+    if (g->efg && tf_nodal_map_build(&g->map, &g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
     g->detail.points = ai.points;
@@ -162,12 +244,22 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
-static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+static tf_solver *create(const tf_problem *p, const tf_solver_opts *opts, tf_ctx *ctx, int efg)
 {
+    /* EFG shape functions do not interpolate: nodal values cannot be
+     * eliminated.  A scene asking for elimination with efg-galerkin is
+     * refused where it is read (scene_build.c); options made for another
+     * type (tf_solver_create_as on an RPIM problem, the conformance suite)
+     * get EFG's own way of holding the fixed regions, Nitsche's method. */
+    tf_solver_opts eo = *opts;
+    if (efg && eo.bc == TF_BC_ELIMINATION) {
+        eo.bc = TF_BC_NITSCHE;
+        tf_info(ctx, "%s: efg-galerkin holds the fixed regions by Nitsche's method (its shape "
+                     "functions do not interpolate: nothing can be eliminated)", p->name);
+    }
+    const tf_solver_opts *o = &eo;
     if (p->material.law != TF_LAW_LINEAR) {
-        tf_fail(ctx, "%s: the rpim-galerkin solver solves linear elastic materials, not %s",
-                p->name, tf_law_name(p->material.law));
-        return NULL;
+        return tf_nonlinear_create(p, o, ctx, efg);
     }
     galerkin *g = calloc(1, sizeof *g);
     if (g == NULL) {
@@ -175,6 +267,9 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
         return NULL;
     }
     g->base.opts = *o;
+    g->base.problem = p; /* (tf_solver_create_as sets it again) */
+    g->efg = efg;
+    g->weak = efg || o->bc == TF_BC_NITSCHE;
     tf_shape_stats_reset(&g->detail.st);
     if (assemble(g, p, ctx) != 0) {
         destroy(&g->base);
@@ -194,18 +289,20 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
         return NULL;
     }
     g->detail.t_loads = omp_get_wtime() - t0;
-    tf_info(ctx, "solver: factorising %zu unknowns (CHOLMOD)",
-            g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free);
+    size_t unknowns = g->weak || g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free;
+    tf_info(ctx, "solver: factorising %zu unknowns (CHOLMOD)", unknowns);
     if (factorise(g, ctx) != 0) {
         destroy(&g->base);
         return NULL;
     }
-    tf_info(ctx, "solver: factorised in %.2f s (%s ordering, %.3g entries in L)",
-            g->detail.t_factor, g->detail.ordering, g->detail.nnz_l);
+    tf_info(ctx,
+            "solver: factorised in %.2f s (%s ordering, %.3g entries in L, reciprocal "
+            "condition about %.2g)",
+            g->detail.t_factor, g->detail.ordering, g->detail.nnz_l, g->detail.rcond);
     g->base.info = (tf_solver_info){
         .nodes = p->cloud.n,
         .dofs = n3,
-        .unknowns = g->base.opts.bc == TF_BC_PENALTY ? n3 : g->bc.n_free,
+        .unknowns = unknowns,
         .t_setup = g->detail.t_pattern + g->detail.t_shape + g->detail.t_assemble +
                    g->detail.t_factor,
     };
@@ -237,7 +334,11 @@ static void rhs_of(const galerkin *g, int contact, const double *force, double *
     size_t n3 = g->k.n;
     const tf_constraints *bc = &g->bc;
     load_vector(g, contact, force, f);
-    if (g->base.opts.bc == TF_BC_PENALTY) {
+    if (g->weak) {
+        for (size_t d = 0; d < n3; ++d) {
+            rhs[d] = g->rhs0[d] + (f[d] - g->f0[d]);
+        }
+    } else if (g->base.opts.bc == TF_BC_PENALTY) {
         for (size_t d = 0; d < n3; ++d) {
             rhs[d] = bc->fixed[d] ? g->rhs0[d] : f[d];
         }
@@ -261,7 +362,7 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     galerkin *g = of(s);
     tf_ctx *ctx = s->ctx;
     const tf_constraints *bc = &g->bc;
-    size_t n3 = g->k.n, m = g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
+    size_t n3 = g->k.n, m = g->weak || g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
     double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
     double *f = malloc(n3 * sizeof *f);
     if (!b || !x || !f) {
@@ -274,7 +375,10 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
         rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
     }
     int rc = tf_chol_solve(g->chol, b, x, n, ctx->err, sizeof ctx->err);
-    for (size_t k = 0; k < n && rc == 0; ++k) {
+    if (rc == 0 && g->efg) { /* displacements at the nodes, not parameters */
+        tf_nodal_map_values(&g->map, x, u, n);
+    }
+    for (size_t k = 0; k < n && rc == 0 && !g->efg; ++k) {
         double *uk = u + k * n3;
         for (size_t d = 0; d < n3; ++d) {
             uk[d] = m == n3        ? x[k * m + d]
@@ -298,46 +402,22 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
         return tf_fail(s->ctx, "out of memory");
     }
     load_vector(g, contact, force, f);
-    tf_csc_symv(&g->k, u, r, 1);
-    for (size_t d = 0; d < n3; ++d) {
-        r[d] -= f[d];
+    tf_csc_symv(&g->k, u, r, 1); /* (RPIM: u are the nodal parameters) */
+    for (size_t q = 0; q < n3; ++q) {
+        r[q] -= f[q];
     }
     free(f);
     return 0;
 }
 
-/* u_h = sum_I phi_I u_I and its gradient, point by point (RPIM interpolant). */
+/* u_h = sum_I phi_I u_I and its gradient (RPIM interpolant; EFG: the MLS
+ * approximation of the parameters of u). */
 static int field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
                  double *grad, char *err, size_t errlen)
 {
-    const tf_shape *sh = &of_const(s)->sh;
-    tf_shape_work w;
-    tf_shape_work_init(&w);
-    int rc = 0;
-    for (size_t p = 0; p < np && rc == 0; ++p) {
-        const double *xp = x + 3 * p;
-        double *up = uh + 3 * p, *gp = grad + 9 * p;
-        rc = tf_shape_at(sh, &w, xp, tf_shape_cell(sh, xp), 1);
-        if (rc != 0) {
-            snprintf(err, errlen, "%s", w.err);
-            break;
-        }
-        for (int i = 0; i < 9; ++i) {
-            gp[i] = 0;
-        }
-        up[0] = up[1] = up[2] = 0;
-        for (size_t k = 0; k < w.n; ++k) {
-            const double *ui = u + 3 * (size_t)w.idx[k];
-            for (int i = 0; i < 3; ++i) {
-                up[i] += w.phi[k] * ui[i];
-                for (int j = 0; j < 3; ++j) {
-                    gp[3 * i + j] += w.dphi[(size_t)j * w.n + k] * ui[i];
-                }
-            }
-        }
-    }
-    tf_shape_work_free(&w);
-    return rc;
+    const galerkin *g = of_const(s);
+    return tf_nodal_field(&g->sh, g->efg ? (tf_nodal_map *)&g->map : NULL, u, x, np, uh, grad,
+                          err, errlen);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }
@@ -374,10 +454,20 @@ static void report(const tf_solver *s)
     }
 }
 
+static tf_solver *create_rpim(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return create(p, o, ctx, 0);
+}
+
+static tf_solver *create_efg(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return create(p, o, ctx, 1);
+}
+
 const tf_solver_ops tf_galerkin_ops = {
     .name = "rpim-galerkin",
     .summary = "RPIM Galerkin, linear elasticity, one CHOLMOD factorisation (seed 000 §2)",
-    .create = create,
+    .create = create_rpim,
     .caps = caps,
     .solve = solve,
     .history = NULL,
@@ -389,12 +479,36 @@ const tf_solver_ops tf_galerkin_ops = {
     .destroy = destroy,
 };
 
+const tf_solver_ops tf_efg_galerkin_ops = {
+    .name = "efg-galerkin",
+    .summary = "element-free Galerkin (MLS, seed 001 §2), linear elasticity, weak essential "
+               "conditions, one CHOLMOD factorisation",
+    .create = create_efg,
+    .caps = caps,
+    .solve = solve,
+    .history = NULL,
+    /* none: the fixed regions are held weakly, their reaction is a traction
+     * over the face whose Galerkin forces fall on every node whose support
+     * meets it, not on the region's nodes (docs/solver.md, Known limits) */
+    .reactions = NULL,
+    .field = field,
+    .node_count = node_count,
+    .coords = coords,
+    .report = report,
+    .destroy = destroy,
+};
+
+static int is_galerkin(const tf_solver *s)
+{
+    return s->ops == &tf_galerkin_ops || s->ops == &tf_efg_galerkin_ops;
+}
+
 const tf_galerkin_info *tf_galerkin_info_of(const tf_solver *s)
 {
-    return s->ops == &tf_galerkin_ops ? &of_const(s)->detail : NULL;
+    return is_galerkin(s) ? &of_const(s)->detail : NULL;
 }
 
 const tf_shape *tf_galerkin_shape(const tf_solver *s)
 {
-    return s->ops == &tf_galerkin_ops ? &of_const(s)->sh : NULL;
+    return is_galerkin(s) ? &of_const(s)->sh : NULL;
 }

@@ -1,9 +1,15 @@
 /*
- * galerkin.h — the RPIM Galerkin solver of linear elasticity (seed 000 §2),
- * registered as "rpim-galerkin": built once (nodes, supports, RPIM shape
- * functions, Galerkin assembly, essential boundary conditions, one
- * Cholesky factorisation), then solved for as many load cases as needed
- * through that one factorisation.
+ * galerkin.h — the meshless Galerkin solver of linear elasticity: RPIM shape
+ * functions (seed 000 §2), registered as "rpim-galerkin", or EFG's MLS
+ * shape functions (seed 001 §2), "efg-galerkin".  Built once (nodes,
+ * supports, shape functions, Galerkin assembly, essential boundary
+ * conditions, one Cholesky factorisation), then solved for as many load
+ * cases as needed through that one factorisation.
+ *
+ * EFG's unknowns are nodal parameters, not displacements: essential
+ * conditions go in weak form (boundary.h), and every displacement it
+ * returns is the displacement at the nodes, u(x_I) = sum_J phi_J(x_I) d_J
+ * (nodal_values.h).  RPIM may take Nitsche's weak form too.
  *
  * Its response is affine in the contact force (linear when the problem has
  * no loads and zero prescribed displacements); it gives reactions and the
@@ -21,13 +27,15 @@
 #include "meshfree/shape.h"
 #include "solvers/solver.h"
 
-extern const tf_solver_ops tf_galerkin_ops;
+extern const tf_solver_ops tf_galerkin_ops;     /* "rpim-galerkin" */
+extern const tf_solver_ops tf_efg_galerkin_ops; /* "efg-galerkin": MLS shape functions */
 
 /* The build, in detail. */
 typedef struct tf_galerkin_info {
     size_t points;        /* volume Gauss points */
     size_t nnz_k;         /* stored entries of K (lower triangle) */
     double nnz_l, flops;  /* factor entries, factorisation flops */
+    double rcond;         /* CHOLMOD's rough reciprocal condition of the factorised system */
     const char *ordering;
     /* wall-clock seconds */
     double t_pattern;     /* supports of every cell, sparsity pattern */

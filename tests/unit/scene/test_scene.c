@@ -120,6 +120,30 @@ static void the_base_scene_is_good(void **state)
     tf_scene_free(s);
 }
 
+/* Every law's parameters reach the problem; a Kelvin solid's small-strain
+ * modulus is its instantaneous one. */
+static void material_laws_and_their_parameters(void **state)
+{
+    (void)state;
+    char err[512];
+    const char *nh[] = {"material.law=neo-hookean"};
+    tf_scene *s = tf_scene_load("coeffs/block48.yaml", nh, 1, err, sizeof err);
+    assert_non_null(s);
+    assert_int_equal(s->problem.material.law, TF_LAW_NEOHOOKE);
+    assert_true(s->problem.material.young == 0.32);
+    tf_scene_free(s);
+    const char *kv[] = {"material={law: kelvin, nu: 0.45, k1: 0.2, k2: 0.1, eta: 0.5, k: 3}"};
+    s = tf_scene_load("coeffs/block48.yaml", kv, 1, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    const tf_material *m = &s->problem.material;
+    assert_int_equal(m->law, TF_LAW_KELVIN);
+    assert_true(m->k1 == 0.2 && m->k2 == 0.1 && m->eta == 0.5 && m->k == 3);
+    assert_true(m->young == 0.2 + 0.1 && m->poisson == 0.45);
+    tf_scene_free(s);
+}
+
 static void each_bad_scene_has_its_own_message(void **state)
 {
     (void)state;
@@ -130,6 +154,27 @@ static void each_bad_scene_has_its_own_message(void **state)
     expect_error(6, "\n", (const char *[]){"t.yaml:", "material", "'E' is missing", NULL});
     expect_error(6, "  E: 1\n  colour: red\n",
                  (const char *[]){"t.yaml:7:", "material.colour", "unknown key", "E, nu", NULL});
+    /* material laws and their parameters (materials/material.h) */
+    expect_error(6, "  law: rubber\n  E: 1\n",
+                 (const char *[]){"t.yaml:6:", "material.law", "neo-hookean", "kelvin", NULL});
+    expect_error(6, "  law: kelvin\n  k1: 1\n  k2: 0.5\n",
+                 (const char *[]){"t.yaml:", "material.eta", "k1, k2 and eta", NULL});
+    expect_error(6, "  law: kelvin\n  E: 1\n  k1: 1\n  k2: 0.5\n  eta: 1\n",
+                 (const char *[]){"t.yaml:7:", "material.E", "not E", NULL});
+    expect_error(6, "  law: svk\n  E: 1\n  k1: 1\n",
+                 (const char *[]){"t.yaml:8:", "material.k1", "kelvin laws", NULL});
+    expect_error(6, "  law: kelvin\n  k1: 1\n  k2: -0.5\n  eta: 1\n",
+                 (const char *[]){"t.yaml:8:", "material.k2", "not be above", NULL});
+    expect_error(6, "  law: kelvin\n  k1: 1\n  k2: 0.5\n  eta: 0\n",
+                 (const char *[]){"t.yaml:9:", "material.eta", "tau", NULL});
+    expect_error(6, "  law: kelvin\n  k1: 1\n  k2: 0.5\n  eta: 1\n  k: -2\n",
+                 (const char *[]){"t.yaml:10:", "material.k", ">= 0", NULL});
+    expect_error(6, "  law: kelvin-neo-hookean\n  k1: 1\n  k2: 0.5\n  eta: 1\n  k: 2\n",
+                 (const char *[]){"t.yaml:10:", "material.k", "must be 0", NULL});
+    expect_error(6, "  law: neo-hookean\n  E: 0\n",
+                 (const char *[]){"t.yaml:7:", "material.E", "Young", NULL});
+    expect_span(6, 2, "  law: svk\n  E: 1\n  nu: 0.5\n",
+                (const char *[]){"t.yaml:8:", "material.nu", "(-1, 0.5)", NULL});
     expect_error(4, "  grid: [5, 5]\n", (const char *[]){"t.yaml:4:", "geometry.grid", "few", NULL});
     expect_error(4, "  grid: [5, 1, 2]\n", (const char *[]){"t.yaml:4:", "geometry.grid", "at least 2", NULL});
     expect_error(9, "  - face: w+\n", (const char *[]){"t.yaml:9:", "fixed.0.face", "x-, x+", NULL});
@@ -229,6 +274,7 @@ int main(void)
         cmocka_unit_test(overrides_change_every_kind_of_value),
         cmocka_unit_test(the_base_scene_is_good),
         cmocka_unit_test(each_bad_scene_has_its_own_message),
+        cmocka_unit_test(material_laws_and_their_parameters),
         cmocka_unit_test(override_errors_name_the_override),
         cmocka_unit_test(a_missing_file_is_named),
         cmocka_unit_test(jitter_moves_only_interior_nodes),

@@ -1,0 +1,146 @@
+/*
+ * nl_internal.h — the nonlinear Galerkin solver's state, shared by the files
+ * of this folder (nonlinear.h is the public part).
+ *
+ * Total Lagrangian: the unknowns d are nodal displacements (RPIM) or nodal
+ * parameters (EFG) in the reference configuration; shape-function gradients
+ * at every Gauss point are computed once and kept per background cell.  A
+ * state is d, every point's material history, and the target (load factor,
+ * contact force) it is in equilibrium with.
+ */
+#ifndef TF_NL_INTERNAL_H
+#define TF_NL_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "materials/elasticity.h"
+#include "meshfree/shape.h"
+#include "solvers/boundary.h"
+#include "solvers/cholmod_solve.h"
+#include "solvers/constraints.h"
+#include "solvers/nodal_values.h"
+#include "solvers/solver.h"
+#include "solvers/sparsity.h"
+
+/* What loads the body: the problem's loads and prescribed displacements
+ * times scale, and a force at one contact site (contact -1: none). */
+typedef struct nl_target {
+    double scale;
+    int contact;
+    double force[3];
+} nl_target;
+
+/* Where an evaluation failed (J <= 0 at a point). */
+typedef struct nl_fault {
+    int inverted;
+    double x[3], j;
+} nl_fault;
+
+/* Counters for the report and the benchmark. */
+typedef struct nl_stats {
+    size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov, indefinite;
+    double t_residual, t_tangent, t_factor, t_solve;
+} nl_stats;
+
+typedef struct nl_solver {
+    tf_solver base; /* first */
+    tf_shape sh;
+    int shape_ok, efg, weak, small, bbar, vci, unsym;
+    tf_material mat;
+    tf_lame lin;        /* small-strain moduli of the initial response */
+    double lambda_v;    /* modulus of the volumetric correction (B-bar for finite strain) */
+    int svk_volume;     /* the correction's volume measure is tr E (SVK), else J - 1 */
+    int kelvin;         /* time-dependent law */
+    double g_inf, tau;  /* its relaxation function g(t) = g_inf + (1 - g_inf) e^(-t/tau) */
+    size_t nh, hb;      /* material history per point; history block per point */
+    double dt_relaxed;  /* a time step after which the Kelvin laws are relaxed */
+    /* cells */
+    size_t ncell, np;
+    tf_nodesets cs, bp;
+    size_t *gptr;       /* cell c's gradients at grad + gptr[c]: np x 3 x m */
+    double *grad;
+    double *wts;        /* np weights per cell */
+    size_t maxm;
+    tf_csc k;           /* tangent (its symmetric part), lower triangle */
+    double *kskew;      /* unsymmetric tangents: the skew part below the diagonal */
+    double *kbc;        /* weak boundary terms' constant part (penalty, beta), k's pattern */
+    /* state */
+    double *d;          /* 3N */
+    double *hist, *hist_new; /* hb per Gauss point */
+    double *bhist, *bhist_new; /* nh per boundary point (Nitsche) */
+    nl_target at;
+    /* boundary and loads */
+    tf_boundary bnd;
+    size_t *bptr;       /* boundary point q's support: bidx[bptr[q] ..], values and gradients */
+    uint32_t *bidx;
+    double *bphi, *bdphi;
+    double bc_factor;   /* alpha or beta, MPa/mm */
+    tf_constraints bc;  /* RPIM elimination */
+    tf_nodal_map map;   /* EFG */
+    double *f0, *basis; /* loads (3N), unit contact columns (3 x 3N per site) */
+    /* linear algebra */
+    tf_chol *chol;      /* Cholesky of the tangent */
+    tf_chol *ldl;       /* LDL^T, when the tangent is not positive definite */
+    int chol_ok;        /* holds a usable factor */
+    int use_ldl;        /* the usable factor is the LDL^T one */
+    tf_chol_info ci;
+    /* quasi-Newton (BFGS): pairs s_i = dd, y_i = dr since the last factorisation */
+    double *qs, *qy, *qrho;
+    size_t qn, qmax;
+    /* work */
+    double *r, *fint, *du, *dtrial, *rtrial, *wk; /* 3N each; wk: Krylov space */
+    size_t wk_cols;
+    nl_stats st;
+    double t_setup_shape;
+} nl_solver;
+
+/* ---- nl_model.c: cells, gradients, pattern, loads ---- */
+int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx);
+void nl_model_free(nl_solver *s);
+
+/* ---- nl_assemble.c ---- */
+/* Internal forces (plus the weak boundary terms) at d reached over dt
+ * under target t into r (3N), the body's internal forces alone into fint
+ * (may be NULL), and, when tangent, the tangent into s->k (and s->kskew);
+ * new histories into s->hist_new, s->bhist_new.  Returns 0; 1 when a point
+ * inverts (fault filled); -1 with a message in ctx. */
+int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
+                double *r, double *fint, nl_fault *fault);
+
+/* The support's force (N) on the body from fixed region `region` in the
+ * committed state, weak essential conditions.  Returns 0, or -1. */
+int nl_region_force(nl_solver *s, size_t region, double force[3]);
+
+/* External forces of a target (3N). */
+void nl_external(const nl_solver *s, const nl_target *t, double *f);
+
+/* ---- nl_linear.c: the linear systems of Newton's method ---- */
+/* Prepares the factorisation of the current s->k (after elimination rows
+ * are set).  Returns 0, 1 (not positive definite), -1 (message). */
+int nl_factor(nl_solver *s);
+/* Solves K du = -r with the strategy of the options; refactorises when the
+ * strategy says so.  Returns 0, 1 (no usable factor: the tangent is not
+ * positive definite), -1 (message). */
+int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent);
+/* Quasi-Newton: forget the pairs (a new factorisation), or remember the
+ * step s and the residual's change y of an iteration. */
+void nl_qn_reset(nl_solver *s);
+void nl_qn_update(nl_solver *s, const double *step, const double *dr);
+/* y = K x with the assembled tangent (symmetric part + skew part). */
+void nl_tangent_apply(const nl_solver *s, const double *x, double *y);
+
+/* ---- nl_newton.c ---- */
+/* Equilibrium under target `to`, reached from the current state over dt
+ * seconds (dt < 0: every step relaxed, the Kelvin laws' static
+ * equilibrium), with load stepping and cuts; commits the state.  Returns
+ * 0, or -1 with a message naming the step, the force and the place. */
+int nl_advance(nl_solver *s, const nl_target *to, double dt);
+/* The rest state (zero displacements and histories, zero load). */
+void nl_reset(nl_solver *s);
+/* One Newton solve at target t from the current d (a starting guess), no
+ * stepping; commits on success.  Returns 0, 1 (did not converge: d is then
+ * some iterate), -1.  dt < 0: relaxed, as in nl_advance. */
+int nl_polish(nl_solver *s, const nl_target *t, double dt);
+
+#endif /* TF_NL_INTERNAL_H */

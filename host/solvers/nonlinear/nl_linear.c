@@ -1,0 +1,373 @@
+/*
+ * nl_linear.c — the linear system of each Newton iteration (nl_internal.h):
+ * CHOLMOD's symbolic analysis once per solver, numeric factorisations of
+ * the tangent when the strategy (tf_newton_opts.tangent) asks, and Krylov
+ * methods preconditioned by the last factorisation: conjugate gradients for
+ * a symmetric tangent, restarted GMRES (Saad & Schultz 1986) for the Kelvin
+ * law's unsymmetric one, whose symmetric part is what CHOLMOD factorises.
+ */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "solvers/nonlinear/nl_internal.h"
+
+/* Relative residual the Krylov solves aim at (inexact Newton: the outer
+ * iteration removes the rest). */
+#define KRYLOV_RTOL 1e-8
+#define GMRES_RESTART 30
+
+static double dot(const double *a, const double *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; ++i) {
+        s += a[i] * b[i];
+    }
+    return s;
+}
+
+/* Fixed DOFs (direct elimination, RPIM): unit rows and columns. */
+static void eliminate(nl_solver *s)
+{
+    if (s->weak) {
+        return;
+    }
+    const tf_csc *k = &s->k;
+    for (size_t j = 0; j < k->n; ++j) {
+        for (int q = k->p[j]; q < k->p[j + 1]; ++q) {
+            size_t i = (size_t)k->i[q];
+            if (s->bc.fixed[i] || s->bc.fixed[j]) {
+                k->x[q] = i == j ? 1.0 : 0.0;
+                if (s->kskew) {
+                    s->kskew[q] = 0;
+                }
+            }
+        }
+    }
+}
+
+/* A tangent that is not positive definite (past a limit point, St.
+ * Venant-Kirchhoff's material instability in compression) still has an
+ * LDL^T factorisation unless a pivot vanishes; Newton's method then goes on
+ * along the load path, and the step is cut only when that fails too. */
+static int factor_indefinite(nl_solver *s)
+{
+    tf_ctx *ctx = s->base.ctx;
+    if (s->ldl == NULL) {
+        tf_chol_info ci;
+        s->ldl = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 1, &ci,
+                                 ctx->err, sizeof ctx->err);
+        if (s->ldl == NULL) {
+            return -1;
+        }
+    }
+    double t;
+    int rc = tf_chol_refactor(s->ldl, &s->k, &t, ctx->err, sizeof ctx->err);
+    s->st.factorisations++;
+    s->st.indefinite++;
+    s->st.t_factor += t;
+    s->chol_ok = rc == 0;
+    s->use_ldl = rc == 0;
+    return rc;
+}
+
+int nl_factor(nl_solver *s)
+{
+    tf_ctx *ctx = s->base.ctx;
+    eliminate(s);
+    if (s->chol == NULL) {
+        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 0, &s->ci,
+                                  ctx->err, sizeof ctx->err);
+        if (s->chol == NULL) {
+            return -1;
+        }
+    }
+    double t;
+    int rc = tf_chol_refactor(s->chol, &s->k, &t, ctx->err, sizeof ctx->err);
+    s->st.factorisations++;
+    s->st.t_factor += t;
+    s->chol_ok = rc == 0;
+    s->use_ldl = 0;
+    nl_qn_reset(s);
+    return rc == 1 ? factor_indefinite(s) : rc;
+}
+
+void nl_qn_reset(nl_solver *s) { s->qn = 0; }
+
+void nl_qn_update(nl_solver *s, const double *step, const double *dr)
+{
+    size_t n = s->k.n;
+    if (s->qmax == 0) {
+        return;
+    }
+    double ys = dot(dr, step, n);
+    if (!(ys > 1e-12 * sqrt(dot(dr, dr, n) * dot(step, step, n)))) {
+        return; /* no curvature along the step: the pair would spoil H */
+    }
+    if (s->qn == s->qmax) { /* drop the oldest */
+        memmove(s->qs, s->qs + n, (s->qmax - 1) * n * sizeof *s->qs);
+        memmove(s->qy, s->qy + n, (s->qmax - 1) * n * sizeof *s->qy);
+        memmove(s->qrho, s->qrho + 1, (s->qmax - 1) * sizeof *s->qrho);
+        s->qn--;
+    }
+    memcpy(s->qs + s->qn * n, step, n * sizeof *step);
+    memcpy(s->qy + s->qn * n, dr, n * sizeof *dr);
+    s->qrho[s->qn++] = 1 / ys;
+}
+
+static tf_chol *factor_of(nl_solver *s)
+{
+    return s->use_ldl ? s->ldl : s->chol;
+}
+
+static int precondition(nl_solver *s, const double *r, double *z)
+{
+    return tf_chol_solve(factor_of(s), r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
+}
+
+/* Limited-memory BFGS (Nocedal's two-loop recursion, the last factorisation
+ * as the initial inverse; Matthies & Strang 1979 for finite elements):
+ * x = H b. */
+static int bfgs(nl_solver *s, const double *b, double *x)
+{
+    size_t n = s->k.n, m = s->qn;
+    double alpha[64], *q = malloc(n * sizeof *q);
+    if (q == NULL) {
+        return tf_fail(s->base.ctx, "out of memory");
+    }
+    memcpy(q, b, n * sizeof *q);
+    for (size_t i = m; i-- > 0;) {
+        alpha[i] = s->qrho[i] * dot(s->qs + i * n, q, n);
+        for (size_t k = 0; k < n; ++k) {
+            q[k] -= alpha[i] * s->qy[i * n + k];
+        }
+    }
+    int rc = precondition(s, q, x);
+    free(q);
+    if (rc != 0) {
+        return -1;
+    }
+    for (size_t i = 0; i < m; ++i) {
+        double beta = s->qrho[i] * dot(s->qy + i * n, x, n);
+        for (size_t k = 0; k < n; ++k) {
+            x[k] += s->qs[i * n + k] * (alpha[i] - beta);
+        }
+    }
+    return 0;
+}
+
+void nl_tangent_apply(const nl_solver *s, const double *x, double *y)
+{
+    const tf_csc *k = &s->k;
+    tf_csc_symv(k, x, y, 1);
+    if (s->kskew == NULL) {
+        return;
+    }
+    for (size_t j = 0; j < k->n; ++j) {
+        for (int q = k->p[j]; q < k->p[j + 1]; ++q) {
+            size_t i = (size_t)k->i[q];
+            y[i] += s->kskew[q] * x[j];
+            y[j] -= s->kskew[q] * x[i];
+        }
+    }
+}
+
+/* Preconditioned conjugate gradients for K x = b, x = 0 first.  Returns the
+ * iterations (> 0) on convergence, 0 when it did not converge in max, -1
+ * on a failure. */
+static int pcg(nl_solver *s, const double *b, double *x, unsigned max)
+{
+    size_t n = s->k.n;
+    double *r = s->wk, *z = r + n, *p = z + n, *q = p + n;
+    memcpy(r, b, n * sizeof *r);
+    memset(x, 0, n * sizeof *x);
+    double bn = sqrt(dot(b, b, n));
+    if (bn == 0) {
+        return 1;
+    }
+    if (precondition(s, r, z) != 0) {
+        return -1;
+    }
+    memcpy(p, z, n * sizeof *p);
+    double rz = dot(r, z, n);
+    for (unsigned it = 1; it <= max; ++it) {
+        nl_tangent_apply(s, p, q);
+        double pq = dot(p, q, n);
+        if (!(pq > 0)) {
+            return 0; /* the tangent is not positive definite here */
+        }
+        double alpha = rz / pq;
+        for (size_t i = 0; i < n; ++i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * q[i];
+        }
+        s->st.krylov++;
+        if (sqrt(dot(r, r, n)) <= KRYLOV_RTOL * bn) {
+            return (int)it;
+        }
+        if (precondition(s, r, z) != 0) {
+            return -1;
+        }
+        double rz1 = dot(r, z, n), beta = rz1 / rz;
+        rz = rz1;
+        for (size_t i = 0; i < n; ++i) {
+            p[i] = z[i] + beta * p[i];
+        }
+    }
+    return 0;
+}
+
+/* Restarted GMRES, right-preconditioned (K M^-1 y = b, x = M^-1 y), for
+ * the unsymmetric tangent.  Returns as pcg. */
+static int gmres(nl_solver *s, const double *b, double *x, unsigned max)
+{
+    size_t n = s->k.n, m = GMRES_RESTART < s->wk_cols ? GMRES_RESTART : s->wk_cols - 1;
+    double *v = s->wk, *w = v + (m + 1) * n, *z = w + n;
+    double h[(GMRES_RESTART + 1) * GMRES_RESTART], cs[GMRES_RESTART], sn[GMRES_RESTART],
+        g[GMRES_RESTART + 1], y[GMRES_RESTART];
+    double bn = sqrt(dot(b, b, n));
+    memset(x, 0, n * sizeof *x);
+    if (bn == 0) {
+        return 1;
+    }
+    unsigned it = 0;
+    while (it < max) {
+        /* r = b - K x */
+        nl_tangent_apply(s, x, w);
+        for (size_t i = 0; i < n; ++i) {
+            v[i] = b[i] - w[i];
+        }
+        double beta = sqrt(dot(v, v, n));
+        if (beta <= KRYLOV_RTOL * bn) {
+            return (int)(it > 0 ? it : 1);
+        }
+        for (size_t i = 0; i < n; ++i) {
+            v[i] /= beta;
+        }
+        memset(g, 0, sizeof g);
+        g[0] = beta;
+        size_t k = 0;
+        for (; k < m && it < max; ++k, ++it) {
+            double *vk = v + k * n, *vn = v + (k + 1) * n;
+            if (precondition(s, vk, z) != 0) {
+                return -1;
+            }
+            nl_tangent_apply(s, z, vn);
+            s->st.krylov++;
+            for (size_t j = 0; j <= k; ++j) { /* modified Gram-Schmidt */
+                double hj = dot(vn, v + j * n, n);
+                h[j + (m + 1) * k] = hj;
+                for (size_t i = 0; i < n; ++i) {
+                    vn[i] -= hj * v[j * n + i];
+                }
+            }
+            double hn = sqrt(dot(vn, vn, n));
+            h[k + 1 + (m + 1) * k] = hn;
+            for (size_t i = 0; hn > 0 && i < n; ++i) {
+                vn[i] /= hn;
+            }
+            for (size_t j = 0; j < k; ++j) { /* Givens rotations */
+                double a = h[j + (m + 1) * k], c = h[j + 1 + (m + 1) * k];
+                h[j + (m + 1) * k] = cs[j] * a + sn[j] * c;
+                h[j + 1 + (m + 1) * k] = -sn[j] * a + cs[j] * c;
+            }
+            double a = h[k + (m + 1) * k], c = h[k + 1 + (m + 1) * k], rr = hypot(a, c);
+            cs[k] = rr > 0 ? a / rr : 1;
+            sn[k] = rr > 0 ? c / rr : 0;
+            h[k + (m + 1) * k] = rr;
+            h[k + 1 + (m + 1) * k] = 0;
+            g[k + 1] = -sn[k] * g[k];
+            g[k] = cs[k] * g[k];
+            if (fabs(g[k + 1]) <= KRYLOV_RTOL * bn) {
+                ++k;
+                ++it;
+                break;
+            }
+        }
+        for (size_t j = k; j-- > 0;) { /* back substitution */
+            double t = g[j];
+            for (size_t l = j + 1; l < k; ++l) {
+                t -= h[j + (m + 1) * l] * y[l];
+            }
+            y[j] = t / h[j + (m + 1) * j];
+        }
+        memset(w, 0, n * sizeof *w);
+        for (size_t j = 0; j < k; ++j) {
+            for (size_t i = 0; i < n; ++i) {
+                w[i] += y[j] * v[j * n + i];
+            }
+        }
+        if (precondition(s, w, z) != 0) {
+            return -1;
+        }
+        for (size_t i = 0; i < n; ++i) {
+            x[i] += z[i];
+        }
+        if (k > 0 && fabs(g[k]) <= KRYLOV_RTOL * bn) {
+            return (int)it;
+        }
+    }
+    return 0;
+}
+
+/* Krylov on the current tangent; 1 on convergence. */
+static int krylov(nl_solver *s, const double *b, double *x, int *failed)
+{
+    unsigned max = s->base.opts.newton.krylov_max;
+    int it = s->kskew ? gmres(s, b, x, max) : pcg(s, b, x, max);
+    *failed = it < 0;
+    return it > 0;
+}
+
+int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent)
+{
+    tf_ctx *ctx = s->base.ctx;
+    size_t n = s->k.n;
+    tf_tangent_kind kind = s->base.opts.newton.tangent;
+    double t0 = omp_get_wtime();
+    double *b = s->rtrial; /* -r (fixed DOFs zero) */
+    for (size_t i = 0; i < n; ++i) {
+        b[i] = s->weak || !s->bc.fixed[i] ? -r[i] : 0;
+    }
+    if (fresh_tangent) {
+        eliminate(s);
+    }
+    int rc = 0;
+    if (fresh_tangent && (kind != TF_TANGENT_KRYLOV || !s->chol_ok)) {
+        rc = nl_factor(s); /* full Newton; modified and BFGS assemble only to refactorise */
+    } else if (!s->chol_ok) {
+        rc = 1;
+    }
+    if (rc != 0) {
+        s->st.t_solve += omp_get_wtime() - t0;
+        return rc;
+    }
+    int done = 0, failed = 0;
+    if (fresh_tangent && !s->use_ldl && (kind == TF_TANGENT_KRYLOV || s->kskew != NULL)) {
+        done = krylov(s, b, du, &failed);
+        if (!done && !failed && kind == TF_TANGENT_KRYLOV) {
+            /* the old factor no longer helps: refactorise and try again */
+            rc = nl_factor(s);
+            done = rc == 0 && krylov(s, b, du, &failed);
+        }
+    } else if (kind == TF_TANGENT_BFGS && s->qn > 0) {
+        failed = bfgs(s, b, du) != 0;
+        done = !failed;
+    } else {
+        failed = tf_chol_solve(factor_of(s), b, du, 1, ctx->err, sizeof ctx->err) != 0;
+        done = !failed;
+    }
+    s->st.t_solve += omp_get_wtime() - t0;
+    if (failed) {
+        return -1;
+    }
+    if (rc > 0 || !done) {
+        return rc > 0 ? rc : 1;
+    }
+    for (size_t i = 0; !s->weak && i < n; ++i) {
+        du[i] = s->bc.fixed[i] ? 0 : du[i];
+    }
+    return 0;
+}

@@ -1,0 +1,66 @@
+/*
+ * nonlinear.h — the meshless Galerkin solver for the nonlinear material
+ * laws (St. Venant-Kirchhoff, neo-Hookean, seed 001's Kelvin law and its
+ * neo-Hookean variant; materials/material.h): total-Lagrangian
+ * Newton-Raphson with the consistent tangent, load stepping with automatic
+ * cuts and a line search (docs/solver.md, "Nonlinear laws").
+ *
+ * It is not registered by itself: rpim-galerkin and efg-galerkin
+ * (galerkin/galerkin.h) hand a problem whose law is not linear to
+ * tf_nonlinear_create, and the instance answers to the same name.
+ *
+ * Capabilities: not affine (every case is solved, continuing from the
+ * starting displacements a caller passes); the Kelvin laws are
+ * TIME_DEPENDENT: tf_solver_history follows a force history from rest, and
+ * tf_solver_solve gives the fully relaxed equilibrium.  Contact forces are
+ * dead loads: fixed direction and total, spread over the patch's reference
+ * area.
+ */
+#ifndef TF_NONLINEAR_H
+#define TF_NONLINEAR_H
+
+#include <stddef.h>
+
+#include "solvers/solver.h"
+
+/* The nonlinear solver of a problem (efg: MLS shape functions).  NULL with
+ * a message in ctx->err. */
+tf_solver *tf_nonlinear_create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx,
+                               int efg);
+
+/* What the Newton solver did so far (NULL for another kind of solver). */
+typedef struct tf_nonlinear_info {
+    size_t steps, cuts, iterations;     /* load steps converged, halvings, Newton iterations */
+    size_t residuals, tangents;         /* assemblies without and with the tangent */
+    size_t factorisations, krylov;      /* numeric factorisations, Krylov iterations */
+    double t_gradients;                 /* s: shape functions and gradients (once) */
+    double t_residual, t_tangent, t_factor, t_solve; /* s, wall */
+    double nnz_l;                       /* entries in the factor */
+    const char *ordering;
+} tf_nonlinear_info;
+
+int tf_nonlinear_info_of(const tf_solver *s, tf_nonlinear_info *info);
+
+/* ---- time stepping beyond tf_solver_history (tissuefit solve) ---- */
+
+/* Back to rest: no displacement, no history, no load. */
+int tf_nonlinear_reset(tf_solver *s);
+
+/* Equilibrium under the problem's loads and prescribed displacements
+ * times scale plus force (N) at contact site contact (-1: none), dt
+ * seconds after the current state (dt = 0: an instantaneous jump; elastic
+ * laws ignore dt).  Returns 0, or -1 with a message naming the load step,
+ * the force and the node or point. */
+int tf_nonlinear_advance(tf_solver *s, double scale, int contact, const double force[3],
+                         double dt);
+
+/* The current state's displacements at the nodes (3N). */
+int tf_nonlinear_displacements(tf_solver *s, double *u);
+
+/* The force (N) the supports of fixed region `region` (problem.h order)
+ * exert on the body in the current state: with weak essential conditions
+ * the region's boundary terms, with elimination the residual at its
+ * prescribed DOFs.  Returns 0, or -1 with a message. */
+int tf_nonlinear_region_force(tf_solver *s, size_t region, double force[3]);
+
+#endif /* TF_NONLINEAR_H */

@@ -1,0 +1,164 @@
+/*
+ * bench_nonlinear.c — speed of the nonlinear solver on block48 (issue 13,
+ * acceptance 5), for `make bench`: numbers are printed, never asserted.
+ *
+ *   bench_nonlinear GRID REPS [cases=N] [KEY=VALUE...]
+ *
+ * For each rep, in this order and in one process: one linear solve (scene
+ * read, supports, shape functions, assembly, factorisation, one case), then
+ * neo-Hookean and St. Venant-Kirchhoff cases from rest (each a fresh
+ * solver: build and Newton): 3 N along -z, 1 N along x, and both at once.
+ * Prints the medians of the wall-clock times (and of the process CPU time:
+ * this machine is shared), the Newton iterations per load step, and the
+ * ratio of the 3 N neo-Hookean case to the linear solve (the issue's goal:
+ * at most 3 at 41 x 41 x 9).  cases=N runs the first N cases only (2: the
+ * linear solve and the 3 N neo-Hookean case, the goal's pair).
+ */
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "base/context.h"
+#include "scene/scene.h"
+#include "solvers/nonlinear/nonlinear.h"
+#include "solvers/solver.h"
+
+#define MAX_REPS 9
+#define MAX_SETS 16
+#define CASES 7 /* the linear solve, then three per law */
+
+static double cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+typedef struct result {
+    double wall, cpu;
+    tf_nonlinear_info nl;
+    int nonlinear;
+} result;
+
+/* One case from a fresh solver: build, solve, and the statistics. */
+static int one_case(const char *const *sets, size_t ns, const char *law, const double f[3],
+                    result *r)
+{
+    char err[1024], set_law[64];
+    const char *all[MAX_SETS + 1];
+    memcpy(all, sets, ns * sizeof *sets);
+    snprintf(set_law, sizeof set_law, "material.law=%s", law);
+    all[ns] = set_law;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    double w0 = omp_get_wtime(), c0 = cpu_now();
+    tf_scene *s = tf_scene_load("coeffs/block48.yaml", all, ns + 1, err, sizeof err);
+    if (s == NULL) {
+        fprintf(stderr, "bench_nonlinear: %s\n", err);
+        return -1;
+    }
+    tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);
+    double *u = sv ? malloc(3 * s->problem.cloud.n * sizeof *u) : NULL;
+    const double fk[1][3] = {{f[0], f[1], f[2]}};
+    if (u == NULL || tf_solver_solve(sv, 0, fk, 1, NULL, u) != 0) {
+        fprintf(stderr, "bench_nonlinear: %s: %s\n", law, ctx.err);
+        return -1;
+    }
+    r->wall = omp_get_wtime() - w0;
+    r->cpu = cpu_now() - c0;
+    r->nonlinear = tf_nonlinear_info_of(sv, &r->nl) == 0;
+    free(u);
+    tf_solver_destroy(sv);
+    tf_scene_free(s);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    unsigned g[3];
+    int reps = argc > 2 ? atoi(argv[2]) : 0;
+    if (argc < 3 || sscanf(argv[1], "%u,%u,%u", &g[0], &g[1], &g[2]) != 3 || reps < 1 ||
+        reps > MAX_REPS || argc - 3 > MAX_SETS - 2) {
+        fprintf(stderr, "usage: bench_nonlinear NX,NY,NZ REPS (1 to %d) [KEY=VALUE...]\n",
+                MAX_REPS);
+        return 2;
+    }
+    char set_grid[64], set_node[64];
+    snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", argv[1]);
+    snprintf(set_node, sizeof set_node, "contact.0.node=%u", g[0] / 2 + g[0] * (g[1] / 2) + 1);
+    const char *sets[MAX_SETS] = {set_grid, set_node};
+    size_t ns = 2;
+    int ncases = CASES, first = 3;
+    if (argc > 3 && sscanf(argv[3], "cases=%d", &ncases) == 1) {
+        first = 4;
+        if (ncases < 1 || ncases > CASES) {
+            fprintf(stderr, "bench_nonlinear: cases=%d: from 1 to %d\n", ncases, CASES);
+            return 2;
+        }
+    }
+    for (int k = first; k < argc; ++k) {
+        sets[ns++] = argv[k];
+    }
+    const char *law[CASES] = {"linear", "neo-hookean", "neo-hookean", "neo-hookean",
+                              "svk", "svk", "svk"};
+    const double force[CASES][3] = {{0, 0, -3}, {0, 0, -3}, {1, 0, 0}, {1, 0, -3},
+                                    {0, 0, -3}, {1, 0, 0}, {1, 0, -3}};
+    double wall[CASES][MAX_REPS], cpu[CASES][MAX_REPS];
+    result last[CASES];
+    int ok[CASES];
+    for (int c = 0; c < CASES; ++c) {
+        ok[c] = c < ncases;
+    }
+    for (int r = 0; r < reps; ++r) {
+        for (int c = 0; c < ncases; ++c) {
+            result res;
+            if (!ok[c] || one_case(sets, ns, law[c], force[c], &res) != 0) {
+                ok[c] = 0;
+                continue;
+            }
+            wall[c][r] = res.wall;
+            cpu[c][r] = res.cpu;
+            last[c] = res;
+        }
+    }
+    printf("block48 %s, medians of %d runs (wall s, process CPU s):\n", argv[1], reps);
+    double lin = ok[0] ? median(wall[0], reps) : 0;
+    for (int c = 0; c < ncases; ++c) {
+        if (!ok[c]) {
+            printf("  %-12s (%g, %g, %g) N: failed (its message above)\n", law[c], force[c][0],
+                   force[c][1], force[c][2]);
+            continue;
+        }
+        double w = median(wall[c], reps), u = median(cpu[c], reps);
+        printf("  %-12s (%g, %g, %g) N: %7.2f s wall, %7.2f s CPU", law[c], force[c][0],
+               force[c][1], force[c][2], w, u);
+        if (last[c].nonlinear) {
+            const tf_nonlinear_info *in = &last[c].nl;
+            printf(", %zu load steps, %.1f Newton iterations per step, %zu factorisations, "
+                   "%.2f x the linear solve",
+                   in->steps, (double)in->iterations / (double)(in->steps ? in->steps : 1),
+                   in->factorisations, lin > 0 ? w / lin : 0);
+        }
+        printf("\n");
+    }
+    if (ok[0] && ok[1]) {
+        printf("  goal (issue 13): 3 N neo-Hookean <= 3 x one linear solve: %.2f x (%s)\n",
+               median(wall[1], reps) / lin, median(wall[1], reps) <= 3 * lin ? "met" : "not met");
+    }
+    return 0;
+}

@@ -1,0 +1,325 @@
+/*
+ * test_nonlinear.c — the nonlinear Galerkin solver: its tangent is the
+ * derivative of its residual (central differences, every law, RPIM and
+ * EFG); the small-load limit of every law is the linear solver's answer;
+ * a starting displacement is continued from; a body that inverts or an
+ * iteration that does not converge stops with a message naming the load
+ * step, the force and the place.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "base/context.h"
+#include "scene/scene.h"
+#include "solvers/nonlinear/nl_internal.h"
+#include "solvers/nonlinear/nonlinear.h"
+#include "solvers/solver.h"
+
+#define BLOCK48 "coeffs/block48.yaml"
+/* block48 on a 7 x 7 x 3 grid: node 25 is the top centre */
+#define SMALL_GRID "geometry.grid=7,7,3"
+#define SMALL_NODE "contact.0.node=25"
+
+static const char *const kelvin_k0 = "material={law: kelvin, nu: 0.45, k1: 0.2, k2: 0.12, eta: 0.3}";
+static const char *const kelvin_k = "material={law: kelvin, nu: 0.45, k1: 0.2, k2: 0.12, eta: 0.3, k: 0.8}";
+static const char *const kelvin_nh = "material={law: kelvin-neo-hookean, nu: 0.45, k1: 0.2, k2: 0.12, eta: 0.3}";
+
+typedef struct run {
+    tf_ctx ctx;
+    tf_scene *scene;
+    tf_solver *sv;
+} run;
+
+static run *open_run(const char *const *sets, size_t n)
+{
+    char err[512];
+    run *r = calloc(1, sizeof *r);
+    tf_ctx_init(&r->ctx);
+    r->ctx.level = TF_LOG_ERROR;
+    r->scene = tf_scene_load(BLOCK48, sets, n, err, sizeof err);
+    if (r->scene == NULL) {
+        fail_msg("%s", err);
+    }
+    r->sv = tf_solver_create(&r->scene->problem, NULL, &r->ctx);
+    if (r->sv == NULL) {
+        fail_msg("%s", r->ctx.err);
+    }
+    return r;
+}
+
+static void close_run(run *r)
+{
+    tf_solver_destroy(r->sv);
+    tf_scene_free(r->scene);
+    free(r);
+}
+
+/* |K v - (r(d + h v) - r(d - h v)) / 2h| / |.| at a random d. */
+static double tangent_error(run *r)
+{
+    nl_solver *s = (nl_solver *)r->sv;
+    size_t n3 = 3 * r->scene->problem.cloud.n;
+    double *d = calloc(n3, sizeof *d), *v = calloc(n3, sizeof *v), *kv = calloc(n3, sizeof *kv);
+    double *rp = calloc(n3, sizeof *rp), *rm = calloc(n3, sizeof *rm), *dp = calloc(n3, sizeof *dp);
+    uint64_t x = 12345;
+    for (size_t i = 0; i < n3; ++i) {
+        x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+        d[i] = 0.2 * ((double)(x >> 11) / 9007199254740992.0 - 0.5);
+        x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+        v[i] = (double)(x >> 11) / 9007199254740992.0 - 0.5;
+        if (!s->weak && s->bc.fixed[i]) {
+            d[i] = v[i] = 0;
+        }
+    }
+    nl_target t = {1, -1, {0, 0, 0}};
+    nl_fault f = {0};
+    double dt = 0.1, h = 1e-6;
+    assert_int_equal(nl_assemble(s, d, &t, dt, 1, rp, NULL, &f), 0);
+    nl_tangent_apply(s, v, kv);
+    for (size_t i = 0; i < n3; ++i) {
+        dp[i] = d[i] + h * v[i];
+    }
+    assert_int_equal(nl_assemble(s, dp, &t, dt, 0, rp, NULL, &f), 0);
+    for (size_t i = 0; i < n3; ++i) {
+        dp[i] = d[i] - h * v[i];
+    }
+    assert_int_equal(nl_assemble(s, dp, &t, dt, 0, rm, NULL, &f), 0);
+    double num = 0, den = 0;
+    for (size_t i = 0; i < n3; ++i) {
+        if (!s->weak && s->bc.fixed[i]) {
+            continue;
+        }
+        double fd = (rp[i] - rm[i]) / (2 * h);
+        num += (fd - kv[i]) * (fd - kv[i]);
+        den += fd * fd;
+    }
+    free(d);
+    free(v);
+    free(kv);
+    free(rp);
+    free(rm);
+    free(dp);
+    return sqrt(num / den);
+}
+
+static void tangent_is_the_derivative_of_the_residual(void **state)
+{
+    (void)state;
+    const char *laws[] = {"material.law=svk", "material.law=neo-hookean", kelvin_k0, kelvin_k,
+                          kelvin_nh};
+    const char *methods[][2] = {{"solver.method=rpim-galerkin", "solver.volumetric=cell"},
+                                {"solver.method=rpim-galerkin", "solver.volumetric=full"},
+                                {"solver.method=efg-galerkin", "solver.bc=penalty"}};
+    for (size_t l = 0; l < 5; ++l) {
+        for (size_t m = 0; m < 3; ++m) {
+            const char *sets[] = {SMALL_GRID, SMALL_NODE, laws[l], methods[m][0], methods[m][1]};
+            run *r = open_run(sets, 5);
+            double e = tangent_error(r);
+            if (!(e < 1e-7)) {
+                fail_msg("%s, %s %s: tangent error %.3g", laws[l], methods[m][0], methods[m][1],
+                         e);
+            }
+            close_run(r);
+        }
+    }
+}
+
+/* A deliberately wrong tangent (the geometric part dropped) is seen. */
+static void a_wrong_tangent_is_noticed(void **state)
+{
+    (void)state;
+    const char *sets[] = {SMALL_GRID, SMALL_NODE, "material.law=neo-hookean"};
+    run *r = open_run(sets, 3);
+    nl_solver *s = (nl_solver *)r->sv;
+    s->small = 1; /* small-strain B and no geometric stiffness with a finite-strain residual */
+    double e = tangent_error(r);
+    s->small = 0;
+    assert_true(e > 1e-3);
+    close_run(r);
+}
+
+/* u at a force of 1e-7 N against the linear solver's, relative to the
+ * largest displacement. */
+static double small_load_difference(const char *law, const char *method, const char *linear_e,
+                                    const char *linear_bc)
+{
+    const double f[1][3] = {{0.3e-7, -0.2e-7, -1e-7}};
+    const char *nl[] = {SMALL_GRID, SMALL_NODE, law, method};
+    const char *li[] = {SMALL_GRID, SMALL_NODE, linear_e, method, linear_bc};
+    run *a = open_run(nl, 4), *b = open_run(li, linear_bc ? 5 : 4);
+    size_t n3 = 3 * a->scene->problem.cloud.n;
+    double *ua = malloc(n3 * sizeof *ua), *ub = malloc(n3 * sizeof *ub);
+    assert_int_equal(tf_solver_solve(a->sv, 0, f, 1, NULL, ua), 0);
+    assert_int_equal(tf_solver_solve(b->sv, 0, f, 1, NULL, ub), 0);
+    double worst = 0, scale = 0;
+    for (size_t i = 0; i < n3; ++i) {
+        worst = fmax(worst, fabs(ua[i] - ub[i]));
+        scale = fmax(scale, fabs(ub[i]));
+    }
+    free(ua);
+    free(ub);
+    close_run(a);
+    close_run(b);
+    return worst / scale;
+}
+
+static void small_load_limit_is_the_linear_solution(void **state)
+{
+    (void)state;
+    const char *methods[] = {"solver.method=rpim-galerkin", "solver.method=efg-galerkin"};
+    /* EFG's Nitsche factor beta scales with the initial modulus, the Kelvin
+     * laws' instantaneous k1 + k2 = 0.32: the linear solve with k1 = 0.2
+     * takes the same beta */
+    const char *same_beta[] = {NULL, "solver.nitsche=160"};
+    for (int m = 0; m < 2; ++m) {
+        /* elastic laws against the linear law with the same E, nu */
+        assert_true(small_load_difference("material.law=svk", methods[m], "material.E=0.32", NULL) <
+                    1e-6);
+        assert_true(small_load_difference("material.law=neo-hookean", methods[m], "material.E=0.32",
+                                          NULL) < 1e-6);
+        /* a static solve of the Kelvin laws is the relaxed equilibrium: E = k1 */
+        const char *lin = "material={E: 0.2, nu: 0.45}";
+        assert_true(small_load_difference(kelvin_k, methods[m], lin, same_beta[m]) < 1e-6);
+        assert_true(small_load_difference(kelvin_nh, methods[m], lin, same_beta[m]) < 1e-6);
+        /* and the comparison can fail: the instantaneous modulus is not it */
+        assert_true(small_load_difference(kelvin_k, methods[m], "material={E: 0.32, nu: 0.45}",
+                                          NULL) > 0.1);
+    }
+}
+
+/* The caller's starting displacement is continued from: the solution
+ * itself needs no iteration and is returned. */
+static void a_start_is_continued_from(void **state)
+{
+    (void)state;
+    const char *sets[] = {SMALL_GRID, SMALL_NODE, "material.law=neo-hookean"};
+    run *r = open_run(sets, 3);
+    size_t n3 = 3 * r->scene->problem.cloud.n;
+    const double f[1][3] = {{0.5, 0, -1.5}};
+    double *u = malloc(n3 * sizeof *u), *v = malloc(n3 * sizeof *v);
+    assert_int_equal(tf_solver_solve(r->sv, 0, f, 1, NULL, u), 0);
+    tf_nonlinear_info a, b;
+    assert_int_equal(tf_nonlinear_info_of(r->sv, &a), 0);
+    assert_true(a.iterations >= 3);
+    assert_int_equal(tf_solver_solve(r->sv, 0, f, 1, u, v), 0);
+    assert_int_equal(tf_nonlinear_info_of(r->sv, &b), 0);
+    assert_true(b.iterations - a.iterations <= 1);
+    double worst = 0;
+    for (size_t i = 0; i < n3; ++i) {
+        worst = fmax(worst, fabs(u[i] - v[i]));
+    }
+    assert_true(worst < 1e-8);
+    assert_int_equal(tf_solver_caps_of(r->sv) & TF_SOLVER_AFFINE, 0);
+    free(u);
+    free(v);
+    close_run(r);
+}
+
+/* A cube pressed to less than nothing between its z faces. */
+static const char crushed_cube[] = "name: cube\n"
+                                   "geometry: {box: {min: [0, 0, 0], max: [10, 10, 10]}, grid: [4, 4, 4]}\n"
+                                   "material: {law: neo-hookean, E: 1.0, nu: 0.3}\n"
+                                   "fixed:\n"
+                                   "  - {face: z-}\n"
+                                   "  - {face: z+, displacement: [0, 0, -11]}\n"
+                                   "outputs: {select: all}\n"
+                                   "solver: {newton: {cuts: 4}}\n";
+
+/* Full Newton, modified Newton, Newton-Krylov and BFGS reach the same
+ * equilibrium (to the tolerance), the cheaper ones with fewer
+ * factorisations; and the Kelvin law's unsymmetric tangent (GMRES) too. */
+static void every_strategy_reaches_the_same_equilibrium(void **state)
+{
+    (void)state;
+    const char *kinds[] = {"solver.newton.tangent=full", "solver.newton.tangent=modified",
+                           "solver.newton.tangent=krylov", "solver.newton.tangent=bfgs"};
+    const char *laws[] = {"material.law=neo-hookean", kelvin_k};
+    const double f[1][3] = {{0.5, 0, -1.5}};
+    for (int l = 0; l < 2; ++l) {
+        double *ref = NULL;
+        size_t fact_full = 0;
+        for (int k = 0; k < 4; ++k) {
+            const char *sets[] = {SMALL_GRID, SMALL_NODE, laws[l], kinds[k]};
+            run *r = open_run(sets, 4);
+            size_t n3 = 3 * r->scene->problem.cloud.n;
+            double *u = malloc(n3 * sizeof *u), worst = 0, scale = 0;
+            if (tf_solver_solve(r->sv, 0, f, 1, NULL, u) != 0) {
+                fail_msg("%s %s: %s", laws[l], kinds[k], r->ctx.err);
+            }
+            tf_nonlinear_info in;
+            assert_int_equal(tf_nonlinear_info_of(r->sv, &in), 0);
+            if (k == 0) {
+                ref = u;
+                fact_full = in.factorisations;
+                close_run(r);
+                continue;
+            }
+            for (size_t i = 0; i < n3; ++i) {
+                worst = fmax(worst, fabs(u[i] - ref[i]));
+                scale = fmax(scale, fabs(ref[i]));
+            }
+            if (!(worst < 1e-7 * scale)) {
+                fail_msg("%s %s: %.3g from full Newton", laws[l], kinds[k], worst / scale);
+            }
+            assert_true(in.factorisations < fact_full);
+            free(u);
+            close_run(r);
+        }
+        free(ref);
+    }
+}
+
+static void inversion_and_divergence_are_named(void **state)
+{
+    (void)state;
+    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    tf_scene *cube = tf_scene_load_text(crushed_cube, strlen(crushed_cube), "cube.yaml", NULL, 0,
+                                        err, sizeof err);
+    assert_non_null(cube);
+    tf_solver *sv = tf_solver_create(&cube->problem, NULL, &ctx);
+    assert_non_null(sv);
+    double *uc = malloc(3 * cube->problem.cloud.n * sizeof *uc);
+    assert_int_equal(tf_solver_solve(sv, -1, NULL, 1, NULL, uc), -1);
+    assert_non_null(strstr(ctx.err, "load step"));
+    assert_non_null(strstr(ctx.err, "load factor"));
+    assert_non_null(strstr(ctx.err, "at the quadrature point ("));
+    assert_non_null(strstr(ctx.err, "<= 0"));
+    free(uc);
+    tf_solver_destroy(sv);
+    tf_scene_free(cube);
+    const char *strict[] = {SMALL_GRID, SMALL_NODE, "material.law=neo-hookean",
+                            "solver.newton.cuts=0", "solver.newton.iterations=2"};
+    run *r = open_run(strict, 5);
+    double *u = malloc(3 * r->scene->problem.cloud.n * sizeof *u);
+    const double f[1][3] = {{0, 0, -2}};
+    assert_int_equal(tf_solver_solve(r->sv, 0, f, 1, NULL, u), -1);
+    assert_non_null(strstr(r->ctx.err, "did not converge in 2 iterations"));
+    assert_non_null(strstr(r->ctx.err, "force (0, 0, -2) N"));
+    assert_non_null(strstr(r->ctx.err, "at node"));
+    free(u);
+    close_run(r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(tangent_is_the_derivative_of_the_residual),
+        cmocka_unit_test(a_wrong_tangent_is_noticed),
+        cmocka_unit_test(small_load_limit_is_the_linear_solution),
+        cmocka_unit_test(a_start_is_continued_from),
+        cmocka_unit_test(every_strategy_reaches_the_same_equilibrium),
+        cmocka_unit_test(inversion_and_divergence_are_named),
+    };
+    return cmocka_run_group_tests_name("nonlinear", tests, NULL, NULL);
+}
