@@ -11,4 +11,6 @@ set grid
 plot for [n in ccx] sprintf("%s/ccx_n%s.csv", data, n) using (10 - $1):2 with linespoints pt 4 \
          title sprintf("CalculiX C3D20R, h = 10/%s mm", n), \
      for [g in grids] sprintf("%s/meshless_%s.csv", data, g) using (10 - $1):2 with lines lw 2 \
-         title sprintf("meshless with the cut, %s nodes along x", g)
+         title sprintf("rpim-galerkin with the cut, %s nodes along x", g), \
+     for [g in grids] sprintf("%s/efg_%s.csv", data, g) using (10 - $1):2 with lines lw 2 dt 2 \
+         title sprintf("efg-galerkin with the cut, %s nodes along x", g)

@@ -2,13 +2,15 @@
 # run_validation.sh DECK CUT_TOOL OUTDIR DATADIR — the slit block's
 # crack-opening displacement (COD) along its depth at mid-width: CalculiX
 # (crack by duplicated nodes) at the element levels CCX_LEVELS and the
-# meshless solve at the node grids GRIDS (docs/cutting.md).  Writes
-# DATADIR/ccx_nN.csv and DATADIR/meshless_NX.csv (z,cod) and
-# DATADIR/runs.csv (kind,level,mouth_cod,seconds).
+# meshless solve at the node grids GRIDS, rpim-galerkin (visibility) and
+# efg-galerkin (enriched MLS weights) at EFG_GRIDS (docs/cutting.md).
+# Writes DATADIR/ccx_nN.csv, DATADIR/meshless_NX.csv and DATADIR/efg_NX.csv
+# (z,cod) and DATADIR/runs.csv (kind,level,mouth_cod,seconds).
 set -eu
 deck=$1 tool=$2 out=$3 data=$4
 CCX_LEVELS=${CCX_LEVELS-4 8 16}
 GRIDS=${GRIDS-16,8,8 24,12,12 32,16,16}
+EFG_GRIDS=${EFG_GRIDS-$GRIDS}
 mkdir -p "$out" "$data"
 runs="$out/runs.csv"
 echo "kind,level,mouth_cod,seconds" > "$runs"
@@ -34,6 +36,16 @@ for g in $GRIDS; do
     grep -v '^#' "$out/meshless_$nx.txt" > "$data/meshless_$nx.csv"
     grep '^#' "$out/meshless_$nx.txt" > "$data/meshless_$nx.info"
     echo "meshless,$g,$(sed -n 2p "$data/meshless_$nx.csv" | cut -d, -f2),$(echo "$t1 - $t0" | bc)" >> "$runs"
+done
+for g in $EFG_GRIDS; do
+    nx=${g%%,*}
+    t0=$(date +%s.%N)
+    "$tool" cod tests/cut/slit.yaml "geometry.grid=$g" "solver.cells=$g" solver.method=efg-galerkin \
+        > "$out/efg_$nx.txt"
+    t1=$(date +%s.%N)
+    grep -v '^#' "$out/efg_$nx.txt" > "$data/efg_$nx.csv"
+    grep '^#' "$out/efg_$nx.txt" > "$data/efg_$nx.info"
+    echo "efg,$g,$(sed -n 2p "$data/efg_$nx.csv" | cut -d, -f2),$(echo "$t1 - $t0" | bc)" >> "$runs"
 done
 cp "$runs" "$data/runs.csv"
 cat "$data/runs.csv"

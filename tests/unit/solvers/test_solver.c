@@ -196,7 +196,9 @@ static unsigned no_cuts(const tf_solver *s)
 }
 
 /* A problem with a cut is refused by a solver without the CUTS capability
- * (here rpim-galerkin with that bit taken away), with the solver named. */
+ * (here rpim-galerkin with that bit taken away, and rpim-galerkin handing a
+ * nonlinear law to the Newton solver, which has no cuts), with the solver
+ * named. */
 static void cuts_need_the_capability(void **state)
 {
     (void)state;
@@ -212,6 +214,10 @@ static void cuts_need_the_capability(void **state)
     tf_solver *s = tf_solver_create_as(&tf_galerkin_ops, &p, NULL, &b->ctx);
     assert_non_null(s);
     tf_solver_destroy(s);
+    p.material.law = TF_LAW_NEOHOOKE;
+    assert_null(tf_solver_create_as(&tf_galerkin_ops, &p, NULL, &b->ctx));
+    assert_non_null(strstr(b->ctx.err, "does not support cuts"));
+    assert_non_null(strstr(b->ctx.err, "Newton"));
     tf_scene_run_free(b);
 }
 
