@@ -108,9 +108,14 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
 
 /* Small-strain elasticity stops describing tissue when displacements
  * approach the body's size; the model still reproduces the solve, which is
- * what its error measures, so this is a warning, not a refusal. */
-static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_fitdata *d)
+ * what its error measures, so this is a warning, not a refusal.  A solver
+ * with a large-deformation law (not LINEAR) describes that regime. */
+static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_solver *s,
+                       const tf_fitdata *d)
 {
+    if (!(tf_solver_caps_of(s) & TF_SOLVER_LINEAR)) {
+        return;
+    }
     double biggest = 0, body = INFINITY, lo[3], hi[3];
     for (size_t i = 0; i < 3 * (size_t)d->n_out * d->n_cases; ++i) {
         biggest = fmax(biggest, fabs(d->u[i]));
@@ -137,7 +142,7 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
         return -1;
     }
     o->seconds_cases = tf_seconds() - t0;
-    warn_large(ctx, p, &o->cases.train);
+    warn_large(ctx, p, solver, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
     if (plan->family->applicable(&o->cases, plan, ctx->err, sizeof ctx->err) != 0) {
         tf_fit_outcome_free(o);
