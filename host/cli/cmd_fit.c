@@ -12,6 +12,7 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "base/file_crc.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "cli/cmd_fit.h"
@@ -23,6 +24,7 @@
 #include "base/log.h"
 #include "base/plot.h"
 #include "scene/scene.h"
+#include "problem/mesh_geometry.h"
 #include "tradeoff/select.h"
 #include "solvers/solver.h"
 
@@ -200,25 +202,6 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
     return 0;
 }
 
-/* CRC-32 of the scene file's bytes, for the header's banner. */
-static int file_crc32(const char *path, uint32_t *crc)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) {
-        return -1;
-    }
-    unsigned char buf[8192];
-    uLong c = crc32(0L, Z_NULL, 0);
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) {
-        c = crc32(c, buf, (uInt)n);
-    }
-    int bad = ferror(f);
-    fclose(f);
-    *crc = (uint32_t)c;
-    return bad ? -1 : 0;
-}
-
 /* Banner notes: what was fitted and how, with the overrides (they change the
  * result, so they belong with it). */
 static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
@@ -235,6 +218,42 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
         k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
                       a->sets.item[i]);
     }
+}
+
+/* An organ's output map (emit_header.h): the arrays are malloc'ed into m. */
+static int organ_map(const tf_problem *s, const tf_model *fwd, uint32_t contact_node,
+                     tf_emit_map *m)
+{
+    const tf_mesh_geometry *g = tf_problem_mesh(s);
+    size_t n = fwd->n_out;
+    const char *ext = strrchr(g->file, '.');
+    int vtk = ext != NULL && (strcmp(ext, ".vtk") == 0 || strcmp(ext, ".VTK") == 0);
+    uint32_t *vertex = malloc((n + 1) * sizeof *vertex);
+    double *mm = malloc((3 * n + 1) * sizeof *mm), *file = malloc((3 * n + 1) * sizeof *file);
+    *m = (tf_emit_map){.mesh_file = g->file, .mesh_crc32 = g->file_crc32, .n = n,
+                       .vertex = vertex, .rest_mm = mm, .rest_file = file,
+                       .contact_vertex = (uint32_t)g->tm.source[contact_node],
+                       .reader = vtk ? "counted in the file's point order from 0 (gmsh)"
+                                     : "counted from 0 in the order assimp 5 gives with "
+                                       "aiProcess_JoinIdenticalVertices after\n * removing every "
+                                       "attribute but positions (docs/header-format.md)"};
+    if (vertex == NULL || mm == NULL || file == NULL) {
+        return -1;
+    }
+    for (size_t j = 0; j < n; ++j) {
+        size_t node = fwd->node_ids[j] - 1; /* an output of an organ is a surface vertex */
+        vertex[j] = (uint32_t)g->tm.source[node];
+        memcpy(mm + 3 * j, g->tm.xyz + 3 * node, 3 * sizeof *mm);
+        memcpy(file + 3 * j, g->file_xyz + 3 * node, 3 * sizeof *file);
+    }
+    return 0;
+}
+
+static void organ_map_free(tf_emit_map *m)
+{
+    free((void *)m->vertex);
+    free((void *)m->rest_mm);
+    free((void *)m->rest_file);
 }
 
 /* The models' error against the physics: the forward model's displacement
@@ -272,7 +291,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         state_physics(&a->phys, &s->envelope, fwd, con);
     }
     uint32_t crc = 0;
-    if (file_crc32(a->scene, &crc) != 0) {
+    if (tf_file_crc32(a->scene, &crc) != 0) {
         tf_error(ctx, "fit: %s: cannot read it again for its checksum", a->scene);
         return TF_EXIT_FAIL;
     }
@@ -282,12 +301,24 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         snprintf(note + k, sizeof note - k, "\n%s", choice);
     }
     const tf_contact *site = &s->contacts[p->contact];
+    tf_emit_map map = {0};
+    /* An organ's outputs that are surface vertices get the vertex map; points
+     * (select: points) are named by their positions like a box's. */
+    int organ = tf_problem_mesh(s) != NULL && s->outputs.points == NULL;
+    if (organ && organ_map(s, fwd, site->node, &map) != 0) {
+        organ_map_free(&map);
+        tf_error(ctx, "fit: out of memory");
+        return TF_EXIT_FAIL;
+    }
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
                                .notes = note, .golden_seed = p->seed,
+                               .map = organ ? &map : NULL, .servo_hz = p->servo_hz,
                                .points = s->outputs.points, .n_points = s->outputs.n_nodes,
                                .contact_point = site->by_node ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
-    if (tf_emit_header(a->out, models, 2, &info, err, sizeof err) != 0) {
+    int rc = tf_emit_header(a->out, models, 2, &info, err, sizeof err);
+    organ_map_free(&map);
+    if (rc != 0) {
         tf_error(ctx, "fit: %s", err); /* the path was checked: a failure while running */
         return TF_EXIT_FAIL;
     }
@@ -340,7 +371,7 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
 static uint32_t fingerprint(const fit_args *a)
 {
     uint32_t crc = 0;
-    if (file_crc32(a->scene, &crc) != 0) {
+    if (tf_file_crc32(a->scene, &crc) != 0) {
         return 0;
     }
     uLong c = crc;

@@ -20,6 +20,8 @@
 #include "cli/cmd_args.h"
 #include "base/log.h"
 #include "base/plot.h"
+#include "report/organ_pictures.h"
+#include "report/surface_render.h"
 #include "scene/scene.h"
 #include "solvers/probe.h"
 #include "solvers/solver.h"
@@ -161,59 +163,93 @@ static size_t *rows_of(const tf_problem *s, const double *xyz)
     return order;
 }
 
-/* The deformed output surface; v holds the outputs' displacements. */
-static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
-                const double *v, size_t tick, const double f[3])
+/* Triangles over the outputs sorted into rows (rows_of; x holds the
+ * outputs' rest positions): two per quadrilateral between equal-length
+ * neighbouring rows.  Returns the count, 0 when the rows do not form a
+ * grid, or -1 when out of memory. */
+static long grid_triangles(const size_t *order, size_t n, const double *x, size_t **tri)
 {
-    tf_plot p;
-    char err[512];
+    size_t row = 0;
+    while (row < n && x[3 * order[row] + 1] == x[3 * order[0] + 1]) {
+        row++;
+    }
+    if (row < 2 || n % row != 0 || n / row < 2) {
+        return 0;
+    }
+    size_t rows = n / row, nt = 2 * (row - 1) * (rows - 1);
+    *tri = malloc(3 * nt * sizeof **tri);
+    if (*tri == NULL) {
+        return -1;
+    }
+    size_t *t = *tri;
+    for (size_t r = 0; r + 1 < rows; ++r) {
+        for (size_t i = 0; i + 1 < row; ++i) {
+            size_t a = order[r * row + i], b = order[r * row + i + 1];
+            size_t c = order[(r + 1) * row + i + 1], d = order[(r + 1) * row + i];
+            *t++ = a, *t++ = b, *t++ = c;
+            *t++ = a, *t++ = c, *t++ = d;
+        }
+    }
+    return (long)nt;
+}
+
+/* The deformed output surface in depth order (report/surface_render.h): an
+ * organ's whole surface from the nodal field u, or a box's grid of outputs
+ * (nodes, or points between them) from their displacements v, with the
+ * vertical exaggerated 4 times so that a dent of a few millimetres shows. */
+static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
+                const double *u, const double *v, size_t tick, const double f[3], int contact)
+{
+    char err[512], title[256];
+    if (tf_problem_mesh(s) != NULL) {
+        tf_report_organ_view ov = {.contact = contact, .exaggerate = 1, .azimuth = NAN,
+                                   .elevation = NAN};
+        if (tf_report_organ_deformed_png(png, s, u, f, &ov, err, sizeof err) != 0) {
+            tf_error(ctx, "replay: %s", err);
+            return -1;
+        }
+        return 0;
+    }
     const double *xyz = tf_solver_coords(solver);
     const size_t n = s->outputs.n_nodes;
-    size_t *order = rows_of(s, xyz);
-    if (order == NULL) {
-        tf_error(ctx, "replay: out of memory");
+    size_t *order = rows_of(s, xyz), *tri = NULL;
+    double *x = malloc((3 * n + 1) * sizeof *x), *uz = malloc((n + 1) * sizeof *uz);
+    for (size_t j = 0; x != NULL && j < n; ++j) {
+        memcpy(x + 3 * j, output_at(s, xyz, j), 3 * sizeof *x);
+    }
+    long nt = order && x && uz ? grid_triangles(order, n, x, &tri) : -1;
+    if (nt <= 0) {
+        tf_error(ctx, "replay: %s", nt < 0 ? "out of memory"
+                                           : "--png draws output points that form a grid of rows");
+        free(order);
+        free(x);
+        free(uz);
         return -1;
     }
     double lo = 0, hi = 0;
     for (size_t j = 0; j < n; ++j) {
-        lo = fmin(lo, v[3 * order[j] + 2]);
-        hi = fmax(hi, v[3 * order[j] + 2]);
+        uz[j] = v[3 * j + 2];
+        lo = fmin(lo, uz[j]);
+        hi = fmax(hi, uz[j]);
     }
-    if (tf_plot_open(&p, png, 1000, 750, err, sizeof err) != 0) {
+    snprintf(title, sizeof title,
+             "deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N (the solve; "
+             "displacements to scale, vertical x4)",
+             tick, f[0], f[1], f[2]);
+    tf_report_render r = {.xyz = x, .u = v, .tri = tri, .ntri = (size_t)nt, .closed = 0,
+                          .value = uz, .vmin = lo, .vmax = hi > lo ? hi : lo + 1e-9,
+                          .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
+                          .elevation = 35, .zscale = 4, .title = title, .width = 1000,
+                          .height = 750};
+    int rc = tf_report_render_png(png, &r, err, sizeof err);
+    if (rc != 0) {
         tf_error(ctx, "replay: %s", err);
-        free(order);
-        return -1;
-    }
-    fprintf(p.gp, "set cbrange [%g:%g]\n", lo, hi > lo ? hi : lo + 1e-9);
-    fprintf(p.gp,
-            "set title 'deformed output surface at tick %zu, F = (%.3g, %.3g, %.3g) N "
-            "(the solve; displacements to scale, mm)'\n"
-            "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset zlabel 'z (mm)' rotate\n"
-            "set view 55,35\nset ticslevel 0\nset cblabel 'u_z (mm)'\n"
-            "set palette rgb 33,13,10\nset pm3d depthorder border lc 'black' lw 0.5\n"
-            "splot '-' using 1:2:3:4 with pm3d title 'deformed', "
-            "'-' using 1:2:3 with lines lc 'gray' title 'rest'\n",
-            tick, f[0], f[1], f[2]);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (size_t j = 0; j < n; ++j) {
-            const double *x = output_at(s, xyz, order[j]), *d = v + 3 * order[j];
-            if (j > 0 && x[1] != output_at(s, xyz, order[j - 1])[1]) {
-                fputc('\n', p.gp);
-            }
-            if (pass == 0) {
-                fprintf(p.gp, "%g %g %g %g\n", x[0] + d[0], x[1] + d[1], x[2] + d[2], d[2]);
-            } else {
-                fprintf(p.gp, "%g %g %g\n", x[0], x[1], x[2]);
-            }
-        }
-        fprintf(p.gp, "e\n");
     }
     free(order);
-    if (tf_plot_close(&p, err, sizeof err) != 0) {
-        tf_error(ctx, "replay: %s", err);
-        return -1;
-    }
-    return 0;
+    free(tri);
+    free(x);
+    free(uz);
+    return rc;
 }
 
 /* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
@@ -243,10 +279,10 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
                               sizeof ctx->err);
     }
-    free(u);
     if (rc != 0) {
         tf_error(ctx, "replay: %s", v ? ctx->err : "out of memory");
         free(forces);
+        free(u);
         free(v);
         return TF_EXIT_FAIL;
     }
@@ -291,8 +327,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     }
     rc = bad_zero || not_finite ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(ctx, png, s, solver, v + deep_tick * 3 * n_out, deep_tick,
-                  forces + 3 * deep_tick) == 0
+        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, v + deep_tick * 3 * n_out, deep_tick,
+                  forces + 3 * deep_tick, contact) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {
@@ -300,6 +336,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         }
     }
     free(forces);
+    free(u);
     free(v);
     return rc;
 }

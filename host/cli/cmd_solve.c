@@ -4,6 +4,7 @@
  * time series (CSV per step, ParaView .pvd + .vtu).
  */
 #include <getopt.h>
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +15,9 @@
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
 #include "report/displacement_out.h"
+#include "base/log.h"
+#include "base/plot.h"
+#include "report/organ_pictures.h"
 #include "report/time_series.h"
 #include "scene/scene.h"
 #include "solvers/probe.h"
@@ -28,7 +32,8 @@ static void help(FILE *out)
     fprintf(out,
             "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
             "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu|.pvd]\n"
-            "                       [--outputs FILE.csv]\n\n"
+            "                       [--outputs FILE.csv] [--png FILE.png] [--png-rest FILE.png]\n"
+            "                       [--exaggerate K] [--view AZ,EL]\n\n"
             "Solves the scene with its solver (solver.method: RPIM or EFG Galerkin) and\n"
             "material law, and writes every node's displacement as CSV: header\n"
             "node,x,y,z,ux,uy,uz, mm, %%.17g.  The scene's loads always act; --force adds a\n"
@@ -48,7 +53,12 @@ static void help(FILE *out)
             "  --vtk FILE.vtu     also write a VTK unstructured grid for ParaView\n"
             "  --outputs FILE     also write the scene's outputs (nodes, or points between\n"
             "                     nodes through the shape functions) as\n"
-            "                     output,x,y,z,ux,uy,uz\n\n"
+            "                     output,x,y,z,ux,uy,uz\n"
+            "  --png FILE.png     an organ: its surface deformed by the solve (needs gnuplot)\n"
+            "  --png-rest FILE.png  an organ at rest with its fixed region and contact sites\n"
+            "  --exaggerate K     draw displacements K times their size (default 1: to scale)\n"
+            "  --view AZ,EL       camera azimuth about +z from +x and elevation, degrees\n"
+            "                     (default: facing the contact site, turned 35 and raised 20)\n\n"
             "Progress and the time split go to stderr (quiet with tissuefit -q).\n"
             "Exit status: 0 ok, 1 the solve failed (Newton's method did not converge, a\n"
             "point inverted: the message names the load step, the force and the place),\n"
@@ -57,8 +67,8 @@ static void help(FILE *out)
 }
 
 typedef struct solve_args {
-    const char *scene, *out, *vtk, *contact, *outputs;
-    double force[3];
+    const char *scene, *out, *vtk, *contact, *outputs, *png, *png_rest;
+    double force[3], exaggerate, view[2];
     int has_force;
     tf_sets sets;
 } solve_args;
@@ -71,6 +81,10 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                                          {"out", required_argument, NULL, 'o'},
                                          {"vtk", required_argument, NULL, 'v'},
                                          {"outputs", required_argument, NULL, 'O'},
+                                         {"png", required_argument, NULL, 'p'},
+                                         {"png-rest", required_argument, NULL, 'r'},
+                                         {"exaggerate", required_argument, NULL, 'x'},
+                                         {"view", required_argument, NULL, 'w'},
                                          {0}};
     int c;
     optind = 1;
@@ -102,6 +116,28 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
         case 'O':
             a->outputs = optarg;
             break;
+        case 'p':
+            a->png = optarg;
+            break;
+        case 'r':
+            a->png_rest = optarg;
+            break;
+        case 'w':
+            if (sscanf(optarg, "%lf,%lf", &a->view[0], &a->view[1]) != 2 ||
+                !isfinite(a->view[0]) || !isfinite(a->view[1])) {
+                tf_error(ctx, "solve: --view '%s' is not AZIMUTH,ELEVATION (degrees)", optarg);
+                return -1;
+            }
+            break;
+        case 'x': {
+            char *end;
+            a->exaggerate = strtod(optarg, &end);
+            if (*end != '\0' || !(a->exaggerate > 0) || a->exaggerate > 1e6) {
+                tf_error(ctx, "solve: --exaggerate '%s' is not a positive factor", optarg);
+                return -1;
+            }
+            break;
+        }
         default:
             tf_error(ctx, "solve: bad option '%s' (see tissuefit solve --help)", argv[optind - 1]);
             return -1;
@@ -148,6 +184,19 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return k;
 }
 
+/* The displacement field for ParaView: an organ on its tetrahedra, a box
+ * on its grid. */
+/* Returns 0, or -1 (out of memory for the cells a cut leaves). */
+static int write_vtu(FILE *fp, const tf_problem *p, const double *u)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m != NULL) {
+        tf_report_vtu_displacements_tets(fp, &p->cloud, m->tm.tet, m->tm.ntet, u);
+        return 0;
+    }
+    return tf_report_vtu_displacements(fp, &p->cloud, u, p->cuts, p->n_cuts);
+}
+
 /* The files go to temporaries first, so a failure leaves none of them. */
 static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u,
                          const double *at_outputs)
@@ -166,8 +215,7 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     }
     if (rc == 0) {
         tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
-        if (a->vtk &&
-            tf_report_vtu_displacements(f[1].fp, &s->cloud, u, s->cuts, s->n_cuts) != 0) {
+        if (a->vtk && write_vtu(f[1].fp, s, u) != 0) {
             snprintf(err, sizeof err, "out of memory for the VTK cells");
             rc = -1;
         }
@@ -184,6 +232,23 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
         tf_error(ctx, "solve: %s", rc ? err : "cannot write to standard output");
+        return TF_EXIT_FAIL;
+    }
+    return TF_EXIT_OK;
+}
+
+/* The organ pictures (--png, --png-rest). */
+static int pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s, int contact,
+                    const double *u)
+{
+    char err[512];
+    tf_report_organ_view v = {.contact = contact < 0 ? 0 : contact, .exaggerate = a->exaggerate,
+                       .azimuth = a->view[0], .elevation = a->view[1]};
+    const double zero[3] = {0, 0, 0};
+    if ((a->png_rest && tf_report_organ_rest_png(a->png_rest, s, &v, err, sizeof err) != 0) ||
+        (a->png && tf_report_organ_deformed_png(a->png, s, u, contact < 0 ? zero : a->force, &v, err,
+                                         sizeof err) != 0)) {
+        tf_error(ctx, "solve: %s", err);
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
@@ -223,8 +288,7 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
     for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
         vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
         if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0 &&
-            (rc = tf_report_vtu_displacements(f[k++].fp, &p->cloud, u + 3 * p->cloud.n * s,
-                                              p->cuts, p->n_cuts)) != 0) {
+            (rc = write_vtu(f[k++].fp, p, u + 3 * p->cloud.n * s)) != 0) {
             snprintf(err, sizeof err, "out of memory for the VTK cells");
         }
     }
@@ -253,6 +317,29 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
+}
+
+/* --png and --png-rest draw organs around a contact site, with gnuplot. */
+static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
+{
+    if (!a->png && !a->png_rest) {
+        return 0;
+    }
+    if (tf_problem_mesh(s) == NULL || s->n_contacts == 0) {
+        tf_error(ctx, "solve: --png and --png-rest draw an organ (geometry.surface) with a "
+                      "contact site");
+        return -1;
+    }
+    if (s->history.present) {
+        tf_error(ctx, "solve: --png and --png-rest draw one solve, not a history (use --vtk "
+                      "FILE.pvd)");
+        return -1;
+    }
+    if (!tf_plot_available()) {
+        tf_error(ctx, "solve: --png needs gnuplot with the pngcairo terminal (gnuplot-nox)");
+        return -1;
+    }
+    return 0;
 }
 
 /* The problem's history, step by step: a nonlinear solver advances its
@@ -319,10 +406,11 @@ static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf
 
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
-    solve_args a = {0};
+    solve_args a = {.exaggerate = 1, .view = {NAN, NAN}};
     tf_scene *s = NULL;
     if (parse(ctx, argc, argv, &a) != 0 ||
-        tf_cmd_outputs(ctx, "solve", (const char *[]){a.out, a.vtk, a.outputs}, 3) != 0 ||
+        tf_cmd_outputs(ctx, "solve", (const char *[]){a.out, a.vtk, a.outputs, a.png, a.png_rest},
+                       5) != 0 ||
         (s = tf_cmd_scene(ctx, a.scene, &a.sets)) == NULL) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
@@ -330,7 +418,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     tf_sets_free(&a.sets);
     const tf_problem *p = &s->problem;
     int contact = pick_contact(ctx, &a, p);
-    if (contact < -1) {
+    if (contact < -1 || check_pictures(ctx, &a, p) != 0) {
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }
@@ -356,6 +444,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     } else {
         tf_solver_report(sv);
         rc = write_outputs(ctx, &a, p, u, v);
+        rc = rc == TF_EXIT_OK ? pictures(ctx, &a, p, contact, u) : rc;
     }
     free(u);
     free(v);

@@ -23,4 +23,12 @@ void tf_emit_budget_banner(FILE *f, const tf_family_cost *cost);
  *   PREFIX_US_M7_480MHZ */
 void tf_emit_budget_macros(FILE *f, const tf_family_cost *cost, const char *prefix);
 
+/* The servo budget of a haptic loop at hz on a Cortex-M4F at 168 MHz
+ * against the forward model and the contact inverse evaluated once each per
+ * tick: a banner line and macros TFIT_<BASE>_SERVO_HZ,
+ * _SERVO_CYCLES_M4F (one tick) and _TICK_CYCLES_M4F (both models' bound). */
+void tf_emit_servo_banner(FILE *f, const tf_model *fwd, const tf_model *con, unsigned hz);
+void tf_emit_servo_macros(FILE *f, const char *prefix, const tf_model *fwd, const tf_model *con,
+                          unsigned hz);
+
 #endif /* TF_EMIT_BUDGET_H */

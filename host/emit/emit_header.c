@@ -191,6 +191,10 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->passivity_samples, m->stiffness_min, m->stiffness_max);
         }
     }
+    if (info->servo_hz > 0 && n_models == 2) {
+        fprintf(f, " *\n");
+        tf_emit_servo_banner(f, models[0], models[1], info->servo_hz);
+    }
     char guard[TF_NAME_MAX + 8];
     upper(base, guard, sizeof guard);
     fprintf(f, " *\n * Include this header wherever the models are used.  In exactly one .c\n"
@@ -322,14 +326,19 @@ static void write_coef(FILE *f, const tf_model *m, const char *site)
     fprintf(f, "};\n");
 }
 
-static void write_u32_table(FILE *f, const char *type, const char *name, const uint32_t *v,
-                            size_t n, int hex)
+static void write_u32_values(FILE *f, const uint32_t *v, size_t n, int hex)
 {
-    fprintf(f, "static const %s %s[%zu] = {\n", type, name, n);
     for (size_t i = 0; i < n; ++i) {
         fprintf(f, hex ? "%s0x%08xu,%s" : "%s%uu,%s", i % 8 == 0 ? "    " : " ", v[i],
                 (i % 8 == 7 || i + 1 == n) ? "\n" : "");
     }
+}
+
+static void write_u32_table(FILE *f, const char *type, const char *name, const uint32_t *v,
+                            size_t n, int hex)
+{
+    fprintf(f, "static const %s %s[%zu] = {\n", type, name, n);
+    write_u32_values(f, v, n, hex);
     fprintf(f, "};\n");
 }
 
@@ -358,6 +367,46 @@ static void write_definition(FILE *f, const tf_model *m, const uint32_t *check, 
     }
     fprintf(f, "},\n    0x%08xu\n};\n", crc);
     tf_emit_q31_definition(f, m);
+}
+
+/* The output map's macros and declarations (outside the implementation). */
+static void write_map_macros(FILE *f, const char *base, const tf_emit_map *m)
+{
+    char p[TF_NAME_MAX + 8];
+    upper(base, p, sizeof p);
+    fprintf(f,
+            "\n/* Output map (docs/header-format.md section 10): output j of tfit_%s_forward is\n"
+            " * vertex tfit_%s_vertex[j] of the mesh file, %s at rest\n"
+            " * tfit_%s_rest_mm[3j..3j+2] in the scene's frame and\n"
+            " * tfit_%s_rest_file[3j..3j+2] in the file's own frame and units. */\n",
+            base, base, m->reader, base, base);
+    fprintf(f, "#define TFIT_%s_MESH_FILE \"%s\"\n", p, m->mesh_file);
+    fprintf(f, "#define TFIT_%s_MESH_CRC32 0x%08xu\n", p, m->mesh_crc32);
+    fprintf(f, "#define TFIT_%s_MAP_N %zuu\n", p, m->n);
+    fprintf(f, "#define TFIT_%s_CONTACT_VERTEX %uu\n", p, m->contact_vertex);
+    fprintf(f, "extern const uint32_t tfit_%s_vertex[%zu];\n", base, m->n);
+    fprintf(f, "extern const float tfit_%s_rest_mm[%zu];\n", base, 3 * m->n);
+    fprintf(f, "extern const float tfit_%s_rest_file[%zu];\n", base, 3 * m->n);
+}
+
+static void write_map_tables(FILE *f, const char *base, const tf_emit_map *m)
+{
+    size_t n3 = 3 * m->n;
+    float *v = malloc((n3 + 1) * sizeof *v);
+    fprintf(f, "\nconst uint32_t tfit_%s_vertex[%zu] = {\n", base, m->n);
+    write_u32_values(f, m->vertex, m->n, 0);
+    fprintf(f, "};\n");
+    for (int which = 0; v != NULL && which < 2; ++which) {
+        const double *src = which == 0 ? m->rest_mm : m->rest_file;
+        for (size_t k = 0; k < n3; ++k) {
+            v[k] = (float)src[k];
+        }
+        fprintf(f, "const float tfit_%s_rest_%s[%zu] = {\n", base, which == 0 ? "mm" : "file",
+                n3);
+        write_floats(f, v, n3, NULL);
+        fprintf(f, "};\n");
+    }
+    free(v);
 }
 
 /* Points as a brace initialiser of float literals: {x, y, z} for one,
@@ -415,11 +464,22 @@ static void write_header(FILE *f, const char *base, tf_model *const *models,
     for (size_t i = 0; i < n; ++i) {
         write_macros(f, models[i], tf_model_crc32_checked(models[i], checks[i]));
     }
+    if (info->map != NULL) {
+        write_map_macros(f, base, info->map);
+    }
+    if (info->servo_hz > 0 && n == 2) {
+        char prefix[TF_NAME_MAX + 16];
+        snprintf(prefix, sizeof prefix, "TFIT_%s", g);
+        tf_emit_servo_macros(f, prefix, models[0], models[1], info->servo_hz);
+    }
     write_points(f, g, info);
     fprintf(f, "\n#ifdef TFIT_%s_IMPLEMENTATION\n", g);
     for (size_t i = 0; i < n; ++i) {
         write_definition(f, models[i], checks[i], tf_model_crc32_checked(models[i], checks[i]),
                          info->points ? "point" : "node");
+    }
+    if (info->map != NULL) {
+        write_map_tables(f, base, info->map);
     }
     fprintf(f, "\n#endif /* TFIT_%s_IMPLEMENTATION */\n#endif /* TFIT_%s_H */\n", g, g);
 }

@@ -11,12 +11,30 @@
 
 #include "model/model.h"
 
+/* An organ's outputs (docs/header-format.md §10): for each output point, in
+ * the forward model's order, the vertex of the mesh file it is (its index
+ * as tissuefit reads the file) and its rest position in the scene's frame
+ * (mm) and in the file's frame (file units), so that a renderer can match
+ * its own vertices by index or by position. */
+typedef struct tf_emit_map {
+    const char *mesh_file;   /* as the scene names it */
+    uint32_t mesh_crc32;     /* of its bytes */
+    const char *reader;      /* how vertex indices count (reader and its options) */
+    size_t n;
+    const uint32_t *vertex;  /* n */
+    const double *rest_mm;   /* 3 n */
+    const double *rest_file; /* 3 n */
+    uint32_t contact_vertex; /* the contact node's vertex */
+} tf_emit_map;
+
 typedef struct tf_emit_info {
     const char *source;     /* scene file path, or a description of a built-in model */
     int has_source_crc;     /* source_crc32 is the CRC-32 of the scene file's bytes */
     uint32_t source_crc32;
     const char *notes;      /* extra banner text, '\n'-separated lines, or NULL */
     uint64_t golden_seed;   /* seed of the golden input design */
+    const tf_emit_map *map; /* an organ's output map, or NULL */
+    unsigned servo_hz;      /* the haptic loop's rate: the header states the budget (0: none) */
     /* Where the outputs are when they are points between nodes (NULL: nodes,
      * named by node_ids): n_points points, 3 coordinates each, mm; output j
      * of a forward model (node_ids[j] = j + 1) is point j. */

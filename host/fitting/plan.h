@@ -20,6 +20,7 @@ typedef struct tf_fit_plan {
     uint32_t max_degree;  /* degrees searched (nodal, modal, contact): 0 (1) .. max */
     uint32_t max_rank;    /* ranks searched (modal): 1 .. max */
     int direct;           /* solve every training case even when the solver is affine */
+    unsigned servo_hz;    /* the haptic loop's rate the header states its budget at (0: none) */
     /* where the cases of a solver that is not affine are solved: NULL here,
      * or spread over ranks (dist/); the bits are the same */
     const tf_case_runner *runner;

@@ -18,7 +18,7 @@
 #define GMSH_TET 4
 #define SURFACE_TAG 1
 
-static int check_options(const tf_surface *s, const tf_mesh_options *o, tf_geom_msg *m)
+int tf_volume_mesh_check_options(const tf_surface *s, const tf_mesh_options *o, tf_geom_msg *m)
 {
     if (!(o->spacing > 0) || !isfinite(o->spacing)) {
         return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "spacing %g: must be a positive number of mm",
@@ -146,7 +146,7 @@ static void set_options(void)
     gmshOptionSetNumber("Mesh.Renumber", 0, &ierr);
 }
 
-static int build_model(const tf_surface *s, const tf_mesh_options *o)
+int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o)
 {
     int ierr = 0;
     gmshModelAdd("tissuefit", &ierr);
@@ -267,12 +267,12 @@ static int collect(const tf_surface *s, tf_tetmesh *t, tf_geom_msg *m)
 int tf_volume_mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t, tf_geom_msg *m)
 {
     memset(t, 0, sizeof *t);
-    int rc = check_options(s, o, m);
+    int rc = tf_volume_mesh_check_options(s, o, m);
     if (rc) {
         return rc;
     }
     tf_gmsh_begin();
-    if (build_model(s, o) != 0) {
+    if (tf_volume_mesh_model(s, o) != 0) {
         rc = tf_gmsh_fail(m, TF_GEOM_FAILED, "gmsh could not mesh the volume");
     } else {
         rc = collect(s, t, m);

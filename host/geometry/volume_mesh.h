@@ -38,4 +38,11 @@ typedef struct tf_mesh_options {
 int tf_volume_mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t,
                    tf_geom_msg *m);
 
+/* The two steps of tf_volume_mesh that others reuse (volume_mesh_tet10.h):
+ * the options' check (TF_GEOM_OK or TF_GEOM_BAD_INPUT with m->error), and
+ * the model built and meshed in the current gmsh session (0, or gmsh's
+ * error code). */
+int tf_volume_mesh_check_options(const tf_surface *s, const tf_mesh_options *o, tf_geom_msg *m);
+int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o);
+
 #endif /* TF_VOLUME_MESH_H */

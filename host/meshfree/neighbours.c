@@ -104,13 +104,28 @@ static int cmp_u32(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+static size_t query_radii(const tf_nbr *g, const double x[3], const double radius[3],
+                          uint32_t *out, size_t cap);
+
 size_t tf_nbr_query(const tf_nbr *g, const double x[3], uint32_t *out, size_t cap)
+{
+    return query_radii(g, x, g->radius, out, cap);
+}
+
+size_t tf_nbr_query_ball(const tf_nbr *g, const double x[3], double r, uint32_t *out, size_t cap)
+{
+    const double radius[3] = {r, r, r};
+    return query_radii(g, x, radius, out, cap);
+}
+
+static size_t query_radii(const tf_nbr *g, const double x[3], const double radius[3],
+                          uint32_t *out, size_t cap)
 {
     unsigned lo[3], hi[3], b[3];
     double xl[3], xh[3];
     for (int a = 0; a < 3; ++a) {
-        xl[a] = x[a] - g->radius[a];
-        xh[a] = x[a] + g->radius[a];
+        xl[a] = x[a] - radius[a];
+        xh[a] = x[a] + radius[a];
     }
     bin_of(g, xl, lo);
     bin_of(g, xh, hi);
@@ -123,7 +138,7 @@ size_t tf_nbr_query(const tf_nbr *g, const double x[3], uint32_t *out, size_t ca
                     const double *y = g->xyz + 3 * (size_t)g->items[p];
                     double s = 0;
                     for (int a = 0; a < 3; ++a) {
-                        double t = (y[a] - x[a]) / g->radius[a];
+                        double t = (y[a] - x[a]) / radius[a];
                         s += t * t;
                     }
                     if (s <= 1) {
@@ -140,4 +155,52 @@ size_t tf_nbr_query(const tf_nbr *g, const double x[3], uint32_t *out, size_t ca
         qsort(out, count, sizeof *out, cmp_u32);
     }
     return count;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double tf_nbr_kth_distance(const tf_nbr *g, const double x[3], size_t k)
+{
+    double r = fmax(g->bin[0], fmax(g->bin[1], g->bin[2]));
+    size_t cap = 64, n;
+    uint32_t *idx = malloc(cap * sizeof *idx);
+    for (;;) { /* grow the ball until it holds k nodes (the first guess usually does) */
+        if (idx == NULL) {
+            return -1;
+        }
+        n = tf_nbr_query_ball(g, x, r, idx, cap);
+        if (n > cap) {
+            uint32_t *grown = realloc(idx, n * sizeof *idx);
+            if (grown == NULL) {
+                free(idx);
+                return -1;
+            }
+            idx = grown;
+            cap = n;
+            continue;
+        }
+        if (n >= k || n == g->n) {
+            break;
+        }
+        r *= 2;
+    }
+    double *d = malloc((n + 1) * sizeof *d);
+    if (d == NULL) {
+        free(idx);
+        return -1;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const double *y = g->xyz + 3 * (size_t)idx[i];
+        d[i] = sqrt((y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
+                    (y[2] - x[2]) * (y[2] - x[2]));
+    }
+    qsort(d, n, sizeof *d, cmp_double);
+    double dk = d[(k < n ? k : n) - 1];
+    free(d);
+    free(idx);
+    return dk;
 }

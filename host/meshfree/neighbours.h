@@ -34,4 +34,12 @@ void tf_nbr_free(tf_nbr *g);
  * buffer when the result exceeds cap). */
 size_t tf_nbr_query(const tf_nbr *g, const double x[3], uint32_t *out, size_t cap);
 
+/* The same for the ball of radius r around x (any radius: the bins it
+ * overlaps are scanned). */
+size_t tf_nbr_query_ball(const tf_nbr *g, const double x[3], double r, uint32_t *out, size_t cap);
+
+/* Distance from x to its k-th nearest node (k >= 1, at most the node
+ * count), or -1 when out of memory. */
+double tf_nbr_kth_distance(const tf_nbr *g, const double x[3], size_t k);
+
 #endif /* TF_NEIGHBOURS_H */

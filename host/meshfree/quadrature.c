@@ -4,6 +4,8 @@
  */
 #include "meshfree/quadrature.h"
 
+#include "meshfree/tet_cells.h"
+
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -52,6 +54,10 @@ int tf_cells_init(tf_cells *c, const double lo[3], const double hi[3], const uns
         c->edge[a] = NULL;
     }
     c->gauss = gauss;
+    c->tet_xyz = NULL;
+    c->tet = NULL;
+    c->ntet = 0;
+    c->loc.start = c->loc.items = NULL;
     return tf_gauss_legendre(gauss, c->gx, c->gw);
 }
 
@@ -81,6 +87,7 @@ void tf_cells_free(tf_cells *c)
         free(c->edge[a]);
         c->edge[a] = NULL;
     }
+    tf_cells_tet_free(c);
 }
 
 unsigned tf_cells_slab(const tf_cells *c, int a, double x)
@@ -125,6 +132,10 @@ static void cell_ijk(const tf_cells *c, size_t cell, size_t ijk[3])
 
 void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[3])
 {
+    if (c->tet) {
+        tf_cells_tet_box(c, cell, centre, half);
+        return;
+    }
     size_t ijk[3];
     cell_ijk(c, cell, ijk);
     for (int a = 0; a < 3; ++a) {
@@ -136,6 +147,10 @@ void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[
 
 void tf_cells_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w)
 {
+    if (c->tet) {
+        tf_cells_tet_point(c, cell, p, x, w);
+        return;
+    }
     size_t ijk[3];
     cell_ijk(c, cell, ijk);
     size_t g = c->gauss, gi[3] = {p % g, p / g % g, p / (g * g)};
@@ -160,6 +175,8 @@ double tf_patch_area(const tf_patch *p, const tf_cloud *cloud)
         return p->size[0] * p->size[1];
     case TF_PATCH_CIRCLE:
         return M_PI * p->radius * p->radius;
+    case TF_PATCH_SURFACE:
+        return p->area;
     default:
         return 0;
     }

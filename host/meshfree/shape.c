@@ -27,6 +27,8 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
     sh->cuts.n = 0;
     sh->cut_node = NULL;
     sh->cut_all = 0;
+    sh->cell_radius = NULL;
+    sh->cell_spacing = NULL;
     sh->scale = 0;
     for (int a = 0; a < 3; ++a) {
         sh->radius[a] = o->support * cloud->spacing[a];
@@ -61,12 +63,56 @@ void tf_shape_free(tf_shape *sh)
     tf_nbr_free(&sh->nbr);
     tf_cells_free(&sh->cells);
     free(sh->mls_radius);
+    free(sh->cell_radius);
+    free(sh->cell_spacing);
     free(sh->xi);
-    sh->mls_radius = NULL;
-    sh->xi = NULL;
+    sh->mls_radius = sh->cell_radius = sh->cell_spacing = sh->xi = NULL;
     tf_cut_set_free(&sh->cuts);
     free(sh->cut_node);
     sh->cut_node = NULL;
+}
+
+int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
+                      size_t errlen)
+{
+    if (sh->mls_radius != NULL || sh->cloud->n < TF_LOCAL_K) {
+        snprintf(err, errlen, sh->mls_radius ? "EFG shape functions on tetrahedral cells are not "
+                                               "supported"
+                                             : "fewer nodes than a support needs");
+        return -1;
+    }
+    /* The neighbour grid in mm, as HEAD's organ path and EFG have it: a
+     * mesh has no grid lines, and its supports are balls of a radius per
+     * cell (query) rather than a ball of alpha_s in index space. */
+    tf_nbr_free(&sh->nbr);
+    free(sh->xi);
+    sh->xi = NULL;
+    if (tf_nbr_build(&sh->nbr, sh->cloud->xyz, sh->cloud->n, sh->radius) != 0) {
+        snprintf(err, errlen, "out of memory for the neighbour grid of %zu nodes", sh->cloud->n);
+        return -1;
+    }
+    sh->cell_radius = malloc((ntet + 1) * sizeof *sh->cell_radius);
+    sh->cell_spacing = malloc((ntet + 1) * sizeof *sh->cell_spacing);
+    if (sh->cell_radius == NULL || sh->cell_spacing == NULL ||
+        tf_cells_use_tets(&sh->cells, sh->cloud->xyz, tet, ntet, degree) != 0) {
+        snprintf(err, errlen, "out of memory for %zu tetrahedral cells (or tet_degree %u)", ntet,
+                 degree);
+        return -1;
+    }
+    for (size_t e = 0; e < ntet; ++e) {
+        double centre[3], half[3];
+        tf_cells_box(&sh->cells, e, centre, half);
+        size_t cap = TF_SUPPORT_CAP < sh->cloud->n ? TF_SUPPORT_CAP : sh->cloud->n;
+        double h = tf_nbr_kth_distance(&sh->nbr, centre, TF_LOCAL_K);
+        double most = tf_nbr_kth_distance(&sh->nbr, centre, cap);
+        if (h < 0 || most < 0) {
+            snprintf(err, errlen, "out of memory for the local spacing");
+            return -1;
+        }
+        sh->cell_radius[e] = fmin(sh->support * h, most);
+        sh->cell_spacing[e] = h;
+    }
+    return 0;
 }
 
 /* EFG: the nodes whose domain of influence meets a panel (the seed's
@@ -96,6 +142,10 @@ static int mark_cut_nodes(tf_shape *sh, char *err, size_t errlen)
 
 int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen)
 {
+    if (n > 0 && sh->cell_radius != NULL) {
+        snprintf(err, errlen, "cuts on an organ's tetrahedral cells are not supported");
+        return -1;
+    }
     tf_cut_set_free(&sh->cuts);
     if (tf_cut_set_build(&sh->cuts, cuts, n, err, errlen) != 0) {
         return -1;
@@ -114,6 +164,10 @@ size_t tf_shape_cut_nodes(const tf_shape *sh)
 
 int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
 {
+    if (sh->cell_radius != NULL) {
+        snprintf(err, errlen, "EFG shape functions on tetrahedral cells are not supported");
+        return -1;
+    }
     const tf_cloud *c = sh->cloud;
     double *rad = malloc(3 * c->n * sizeof *rad), reach[3] = {0, 0, 0}, t = 0;
     if (rad == NULL) {
@@ -234,6 +288,9 @@ static int grow(tf_shape_work *w, size_t need, size_t np)
 size_t tf_shape_cell(const tf_shape *sh, const double x[3])
 {
     const tf_cells *c = &sh->cells;
+    if (c->tet) {
+        return tf_cells_locate(c, x);
+    }
     size_t ijk[3];
     for (int a = 0; a < 3; ++a) {
         ijk[a] = tf_cells_slab(c, a, x[a]);
@@ -254,19 +311,29 @@ static void support_centre(const tf_shape *sh, const double x[3], size_t cell, d
     }
 }
 
+/* The nodes in the support domain around at: the ellipsoid of the grid's
+ * radii, or on tetrahedral cells the ball of the cell's radius. */
+static size_t query(const tf_shape *sh, const double at[3], size_t cell, uint32_t *out, size_t cap)
+{
+    if (sh->cell_radius != NULL) {
+        return tf_nbr_query_ball(&sh->nbr, at, sh->cell_radius[cell], out, cap);
+    }
+    return tf_nbr_query(&sh->nbr, at, out, cap);
+}
+
 int tf_shape_support(const tf_shape *sh, tf_shape_work *w, const double x[3], size_t cell)
 {
     double at[3], q[3];
     support_centre(sh, x, cell, at);
-    for (int a = 0; a < 3; ++a) { /* RPIM queries in index space, EFG in mm */
+    for (int a = 0; a < 3; ++a) { /* RPIM on a box queries in index space; EFG and tets in mm */
         q[a] = sh->xi ? tf_cloud_to_index(sh->cloud, a, at[a]) : at[a];
     }
-    size_t n = tf_nbr_query(&sh->nbr, q, w->idx, w->cap);
+    size_t n = query(sh, q, cell, w->idx, w->cap);
     if (n > w->cap) {
         if (grow(w, n, w->pcap ? w->pcap : 1) != 0) {
             return -1;
         }
-        n = tf_nbr_query(&sh->nbr, q, w->idx, w->cap);
+        n = query(sh, q, cell, w->idx, w->cap);
     }
     if (sh->mls_radius) { /* EFG: the nodes whose domain reaches x, or the cell */
         double lo[3] = {x[0], x[1], x[2]}, hi[3] = {x[0], x[1], x[2]}, half[3];
@@ -346,11 +413,20 @@ static int rpim_support_cut(const tf_shape *sh, const double x[3], size_t cell)
 /* The support's scale s (its largest semi-axis, mm) and the multiquadric's
  * length alpha_c d_c at support centre at: from the local nodal spacing on a
  * graded cloud or with a relative d_c, else the fixed values (the seed's
- * absolute d_c on a uniform grid keeps its bits). */
-static void local_scale(const tf_shape *sh, const double at[3], double *s, double *shape)
+ * absolute d_c on a uniform grid keeps its bits); on tetrahedral cells the
+ * cell's ball and its local spacing (TF_LOCAL_K-th nearest node). */
+static void local_scale(const tf_shape *sh, const double at[3], size_t cell, double *s,
+                        double *shape)
 {
     *s = sh->scale;
     *shape = sh->rpim.shape;
+    if (sh->cell_radius != NULL) { /* tetrahedral cells: the cell's ball and local spacing */
+        *s = sh->cell_radius[cell];
+        if (sh->d_c_spacings > 0) {
+            *shape = sh->alpha_c * sh->d_c_spacings * sh->cell_spacing[cell];
+        }
+        return;
+    }
     if (!sh->cloud->graded && !(sh->d_c_spacings > 0)) {
         return;
     }
@@ -392,7 +468,7 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
         w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
         return 0;
     }
-    local_scale(sh, at, &s, &rp.shape);
+    local_scale(sh, at, cell, &s, &rp.shape);
     if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->idx, w->n, at, s, &rcond) != 0) {
         snprintf(w->err, sizeof w->err,
                  "the RPIM system of the %zu nodes around (%g, %g, %g) mm is singular to "
@@ -460,7 +536,7 @@ static int evaluate_cut(const tf_shape *sh, tf_shape_work *w, const double *x, s
         }
         double sc;
         tf_rpim rp = sh->rpim;
-        local_scale(sh, xp, &sc, &rp.shape);
+        local_scale(sh, xp, w->cell, &sc, &rp.shape); /* (grid cells only: set_cuts) */
         if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->sub, m, xp, sc, &rcond) != 0) {
             snprintf(w->err, sizeof w->err,
                      "the RPIM system of the %zu nodes visible across the cut from (%g, %g, "

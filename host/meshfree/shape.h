@@ -9,7 +9,8 @@
  * Two choices of support domain, both an ellipsoid of semi-axes
  * alpha_s x the local nodal spacing per axis, i.e. a ball of radius alpha_s
  * in the cloud's index space (nodes.h), so that a graded cloud's supports
- * hold as many nodes as a uniform one's (EFG: every node's own domain of
+ * hold as many nodes as a uniform one's (on an organ's tetrahedra: a ball of
+ * radius alpha_s x the local spacing, tf_shape_use_tets) (EFG: every node's own domain of
  * influence, alpha_s x its local spacing; a support is then the set of
  * nodes whose domain reaches the point, or the cell):
  *   point: centred at the evaluation point itself (the seed: "a support
@@ -22,8 +23,9 @@
  * The multiquadric's length alpha_c d_c (rpim.h) is fixed (an absolute d_c,
  * the seed's) or d_c = d_c_spacings x h, h the local nodal spacing of the
  * support: the geometric mean of the grid intervals around its centre
- * (tf_cloud_local_spacing), so that the basis keeps its shape relative to
- * the nodes when the grid is refined or graded.
+ * (tf_cloud_local_spacing; on an organ's tetrahedra the distance to the
+ * TF_LOCAL_K-th nearest node of the cell's centroid), so that the basis
+ * keeps its shape relative to the nodes when the grid is refined or graded.
  *
  * Cuts (tf_shape_set_cuts, cut.h): the shape functions at a point whose
  * support meets a cut are recomputed — EFG with the weights of the
@@ -49,8 +51,8 @@ typedef struct tf_shape {
     const tf_cloud *cloud;
     tf_rpim rpim;      /* shape: alpha_c d_c for an absolute d_c */
     double alpha_c, d_c_spacings; /* d_c_spacings > 0: d_c = d_c_spacings x local spacing */
-    tf_nbr nbr;        /* RPIM: over the nodes' index coordinates xi */
-    double *xi;        /* RPIM: 3 n index coordinates (nodes.h), NULL after tf_shape_use_efg */
+    tf_nbr nbr;        /* RPIM on a box: over the nodes' index coordinates xi; EFG, tets: mm */
+    double *xi;        /* RPIM: 3 n index coordinates (nodes.h), NULL after tf_shape_use_efg/_tets */
     double radius[3];  /* support semi-axes, mm (nominal spacing) */
     double scale;      /* largest semi-axis: distances are divided by it */
     tf_cells cells;
@@ -61,6 +63,8 @@ typedef struct tf_shape {
     tf_cut_set cuts;     /* no panel: uncut */
     unsigned char *cut_node; /* EFG: 1 for a node whose domain meets a cut */
     int cut_all;         /* treat every support as cut (tests, bench) */
+    double *cell_radius; /* tetrahedral cells: each one's support radius, mm; NULL otherwise */
+    double *cell_spacing; /* tetrahedral cells: each one's local spacing h, mm (d_c = spacings x h) */
 } tf_shape;
 
 /* Conditioning and size of the local systems met by one worker. */
@@ -96,6 +100,31 @@ typedef struct tf_shape_work {
 int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const double hi[3],
                   const tf_solver_opts *o);
 void tf_shape_free(tf_shape *sh);
+
+/* Local nodal spacing at a point of an organ's cloud: the distance to its
+ * TF_LOCAL_K-th nearest node.  On a regular grid of spacing h, at a cell
+ * centre, that is the corners' distance 0.87 h; near an organ's skin,
+ * whose vertices are denser than the interior nodes, it follows the skin. */
+#define TF_LOCAL_K 6
+
+/* On tetrahedral cells a support ball holds at most about this many nodes:
+ * its radius is capped at the distance to the TF_SUPPORT_CAP-th nearest
+ * node.  Where a coarse interior meets an organ's dense skin, a ball sized
+ * by the interior's spacing would otherwise take in hundreds of skin
+ * vertices (376 measured on the liver at 10 mm, against a median of 36). */
+#define TF_SUPPORT_CAP 60
+
+/* Integrates over the ntet tetrahedra tet[] of the cloud's nodes (an
+ * organ's mesh; the array must outlive sh) with the Gauss rule of the
+ * given degree, and sizes supports from the local spacing: every Gauss
+ * point of a tetrahedron has the ball of radius alpha_s x the local
+ * spacing at the tetrahedron's centroid (capped, TF_SUPPORT_CAP), centred
+ * at the point or at the centroid (o->centre); a relative d_c
+ * (solver.rbf.spacings) is that many times the same local spacing.  The
+ * neighbour grid is rebuilt in mm.  RPIM only (EFG is refused).  Returns 0,
+ * or -1 with a message. */
+int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
+                      size_t errlen);
 
 /* Switches sh from RPIM to EFG: MLS shape functions whose nodes have the
  * radii of influence alpha_s x their local spacing (tf_mls_radii).

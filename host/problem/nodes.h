@@ -1,7 +1,8 @@
 /*
  * nodes.h — node clouds.  Today a box filled with a grid of nodes, uniform
- * or graded along each axis (optionally jittered inside); a surface mesh
- * with a node spacing will produce the same structure.
+ * or graded along each axis (optionally jittered inside); or an organ's
+ * mesh vertices (problem/mesh_geometry.c: no grid lines, its index space
+ * (x - lo) / spacing).
  *
  * Index space: a box grid's node (i, j, k) sits at index coordinates
  * (i, j, k) (before jitter), and the map between a coordinate and its
@@ -38,9 +39,12 @@ typedef struct tf_cloud {
     double *xyz;       /* 3 n coordinates, node index order, mm */
     double spacing[3]; /* nominal (mean) nodal spacing per axis, mm */
     double lo[3], hi[3];
-    unsigned grid[3];  /* nodes per axis */
-    double *axis[3];   /* the grid lines: grid[a] coordinates per axis, ascending, mm */
-    int graded;        /* some axis is not uniform */
+    unsigned grid[3];  /* nodes per axis (a box; 0 for an organ's mesh) */
+    size_t n_surface;  /* an organ's mesh: nodes 0 .. n_surface - 1 are its surface
+                          vertices; 0 for a box */
+    double *axis[3];   /* the grid lines: grid[a] coordinates per axis, ascending, mm
+                          (NULL for an organ's mesh) */
+    int graded;        /* some axis is not uniform (0 for an organ's mesh) */
 } tf_cloud;
 
 /* Fills a box [lo, hi] with grid[0] x grid[1] x grid[2] nodes (each >= 2),

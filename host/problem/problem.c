@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/mesh_geometry.h"
+
 void tf_problem_release(tf_problem *p)
 {
     tf_cloud_free(&p->cloud);
@@ -14,8 +16,18 @@ void tf_problem_release(tf_problem *p)
         free(p->fixed[k].nodes);
     }
     free(p->fixed);
+    for (size_t k = 0; p->loads && k < p->n_loads; ++k) {
+        free(p->loads[k].patch.tri);
+    }
     free(p->loads);
+    for (size_t k = 0; p->contacts && k < p->n_contacts; ++k) {
+        free(p->contacts[k].patch.tri);
+    }
     free(p->contacts);
+    if (p->geometry.kind == TF_GEOMETRY_MESH && p->geometry.as.mesh != NULL) {
+        tf_problem_mesh_free(p->geometry.as.mesh);
+        free(p->geometry.as.mesh);
+    }
     free(p->outputs.nodes);
     free(p->outputs.points);
     free(p->cuts);
@@ -56,8 +68,10 @@ void tf_problem_bounds(const tf_problem *p, double lo[3], double hi[3])
         memcpy(lo, p->geometry.as.box.min, 3 * sizeof *lo);
         memcpy(hi, p->geometry.as.box.max, 3 * sizeof *hi);
         return;
+    case TF_GEOMETRY_MESH:
+        break; /* the nodes' bounding box: the surface vertices are nodes */
     }
-    memcpy(lo, p->cloud.lo, 3 * sizeof *lo); /* not reached: every kind is listed */
+    memcpy(lo, p->cloud.lo, 3 * sizeof *lo);
     memcpy(hi, p->cloud.hi, 3 * sizeof *hi);
 }
 
@@ -100,6 +114,7 @@ void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[
         memcpy(x, c->xyz + 3 * (size_t)patch->node, 3 * sizeof *x);
         return;
     case TF_PATCH_AT:
+    case TF_PATCH_SURFACE: /* the site's centre, a surface vertex */
         memcpy(x, patch->at, 3 * sizeof *x);
         return;
     case TF_PATCH_FACE:

@@ -10,8 +10,10 @@
  * Node numbering (1-based numbers, GUIDE §5 extended to every layer): on a
  * box grid of nx × ny × nz nodes, node (i, j, k) with k = 0 at the bottom has
  * number N = i + nx j + nx ny (nz - 1 - k) + 1, so the top layer comes first
- * and block48's node 61 is the top centre.  Internal node index = N - 1
- * everywhere in host/.
+ * and block48's node 61 is the top centre.  On an organ's mesh the surface
+ * vertices come first, in the order tissuefit reads the file
+ * (geometry/surface_read.h), then the interior nodes.  Internal node index
+ * = N - 1 everywhere in host/.
  */
 #ifndef TF_PROBLEM_H
 #define TF_PROBLEM_H
@@ -19,6 +21,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "geometry/tetmesh.h"
+#include "geometry/transform.h"
+#include "geometry/volume_mesh.h"
 #include "materials/material.h"
 #include "problem/history.h"
 #include "problem/nodes.h"
@@ -28,9 +33,9 @@
 /* Displacement components, as a bit mask. */
 enum { TF_COMP_X = 1, TF_COMP_Y = 2, TF_COMP_Z = 4, TF_COMP_ALL = 7 };
 
-/* The body.  A tagged union: a box filled with a grid of nodes today; an
- * organ's tetrahedral mesh next (a new kind, member and bounds case). */
-typedef enum tf_geometry_kind { TF_GEOMETRY_BOX } tf_geometry_kind;
+/* The body.  A tagged union: a box filled with a grid of nodes, or an
+ * organ: a closed surface mesh filled with tetrahedra (problem/mesh_geometry.h). */
+typedef enum tf_geometry_kind { TF_GEOMETRY_BOX, TF_GEOMETRY_MESH } tf_geometry_kind;
 
 typedef struct tf_box_geometry {
     double min[3], max[3]; /* mm */
@@ -40,16 +45,42 @@ typedef struct tf_box_geometry {
     tf_cloud_grading grading;    /* ratio 1 on every axis: a uniform grid (nodes.h) */
 } tf_box_geometry;
 
+/* An organ (TF_GEOMETRY_MESH): the surface file, how it is placed and
+ * filled, and the result.  Nodes 0 .. tm.nsurf - 1 are the surface
+ * vertices (the renderer's mesh), interior nodes follow; the tetrahedra
+ * are the integration cells. */
+typedef struct tf_mesh_geometry {
+    char file[512];         /* as the scene names it */
+    char path[1024];        /* as opened (relative to the scene's folder) */
+    uint32_t file_crc32;    /* of the file's bytes */
+    tf_transform place;     /* file units and frame -> scene mm */
+    tf_mesh_options mesh;   /* interior spacing and grading */
+    tf_tetmesh tm;
+    double *file_xyz;       /* 3 nsurf: the surface vertices in the file's frame and units */
+    double min_winding;     /* smallest winding number of an interior node (1 when none) */
+    char notes[1024];       /* repairs made while reading, one per line */
+} tf_mesh_geometry;
+
 typedef struct tf_geometry {
     tf_geometry_kind kind;
     union {
-        tf_box_geometry box; /* TF_GEOMETRY_BOX */
+        tf_box_geometry box;     /* TF_GEOMETRY_BOX */
+        tf_mesh_geometry *mesh;  /* TF_GEOMETRY_MESH (owned) */
     } as;
 } tf_geometry;
 
-typedef enum tf_region_kind { TF_REGION_FACE, TF_REGION_PLANE, TF_REGION_BOX } tf_region_kind;
+typedef enum tf_region_kind {
+    TF_REGION_FACE,
+    TF_REGION_PLANE,
+    TF_REGION_BOX,
+    TF_REGION_SPHERE,   /* every node within radius of centre */
+    TF_REGION_SIDE,     /* every node on the side of a plane its normal points to */
+    TF_REGION_NEAR,     /* surface vertices within radius of centre (meshes) */
+    TF_REGION_VERTICES, /* surface vertices named by their index in the mesh file (meshes) */
+} tf_region_kind;
 
-/* A set of nodes: a face of the box, a plane x_axis = at, or a box. */
+/* A set of nodes: a face of the box, a plane x_axis = at, a box, a ball, a
+ * half-space, surface vertices near a point or named in a list. */
 typedef struct tf_region {
     tf_region_kind kind;
     tf_face face;   /* TF_REGION_FACE */
@@ -57,6 +88,9 @@ typedef struct tf_region {
     double at;      /* TF_REGION_PLANE, mm */
     double min[3];  /* TF_REGION_BOX, mm */
     double max[3];
+    double centre[3]; /* SPHERE, NEAR: centre; SIDE: a point of the plane, mm */
+    double normal[3]; /* SIDE */
+    double radius;    /* SPHERE, NEAR, mm */
 } tf_region;
 
 typedef struct tf_fixed {
@@ -73,6 +107,7 @@ typedef enum tf_patch_shape {
     TF_PATCH_FACE,   /* uniform traction over a whole face */
     TF_PATCH_RECT,   /* uniform traction over a rectangle of a face */
     TF_PATCH_CIRCLE, /* uniform traction over a disc of a face */
+    TF_PATCH_SURFACE,/* uniform traction over surface triangles of a mesh (a contact site) */
     TF_PATCH_AT,     /* a force at a point anywhere in the body, spread to the nodes by
                         their shape functions there (the Galerkin load of a point force) */
 } tf_patch_shape;
@@ -85,8 +120,11 @@ typedef struct tf_patch {
     tf_face face;       /* the other shapes */
     double centre[2];   /* RECT, CIRCLE: (u, v), mm */
     double size[2];     /* RECT: side lengths along u and v, mm */
-    double radius;      /* CIRCLE, mm */
-    double at[3];       /* AT: the point, mm */
+    double radius;      /* CIRCLE, SURFACE, mm */
+    double at[3];       /* AT: the point; SURFACE: the site's centre (a surface vertex), mm */
+    uint32_t *tri;      /* SURFACE: 3 node indices per triangle, outward (owned) */
+    size_t n_tri;
+    double area;        /* SURFACE: their total area, mm^2 */
 } tf_patch;
 
 /* A load that is always applied: a total force spread over a patch, or the
@@ -123,6 +161,9 @@ typedef enum tf_output_kind {
     TF_OUT_NODES,
     TF_OUT_CONTACT,
     TF_OUT_POINTS,
+    TF_OUT_SURFACE,      /* every surface vertex of a mesh */
+    TF_OUT_NEAR_CONTACT, /* surface vertices within a radius of a contact site */
+    TF_OUT_VERTICES,     /* surface vertices named by their index in the mesh file */
 } tf_output_kind;
 
 /* The output points: nodes, or (points != NULL) points anywhere in the
@@ -198,6 +239,7 @@ typedef struct tf_solver_opts {
     tf_volumetric volumetric; /* volumetric strain at each Gauss point, or per cell (B-bar) */
     unsigned cells[3];/* background cells per axis */
     unsigned gauss;   /* Gauss-Legendre points per axis per cell */
+    unsigned tet_degree; /* meshes: degree of the Gauss rule on each tetrahedron (1, 2, 5) */
     tf_bc_method bc;
     double penalty;   /* lambda of seed eq 28 (RPIM); alpha / ((lambda + 2 mu) / h) (EFG) */
     double nitsche;   /* Nitsche's beta / ((lambda + 2 mu) / h) */
@@ -248,6 +290,12 @@ void tf_problem_release(tf_problem *p);
 
 /* Index of the contact site called name, or -1. */
 int tf_problem_contact(const tf_problem *p, const char *name);
+
+/* The organ of a mesh problem, or NULL. */
+static inline const tf_mesh_geometry *tf_problem_mesh(const tf_problem *p)
+{
+    return p->geometry.kind == TF_GEOMETRY_MESH ? p->geometry.as.mesh : NULL;
+}
 
 /* The 1-based node number of a node index (the numbering above). */
 static inline uint32_t tf_problem_node_number(const tf_problem *p, size_t index)

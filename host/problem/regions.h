@@ -1,7 +1,9 @@
 /*
  * regions.h — the nodes of a region of a problem's cloud (problem.h,
- * tf_region): within tf_cloud_tol of a face or plane, inside a box with that
- * tolerance.
+ * tf_region): within tf_cloud_tol of a face or plane; inside a box, a ball or
+ * a half-space with that tolerance; surface vertices (the first n_surface
+ * nodes of an organ's cloud) within a distance of a point.  A vertex list
+ * selects nothing here: the scene resolves it.
  */
 #ifndef TF_REGIONS_H
 #define TF_REGIONS_H

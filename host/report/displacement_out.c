@@ -40,6 +40,47 @@ static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[
     }
 }
 
+/* Everything before the cells: header, point data, points. */
+static void vtu_points(FILE *fp, const tf_cloud *c, size_t nc, const double *u)
+{
+    fprintf(fp,
+            "<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n"
+            "<PointData Vectors=\"displacement\">\n"
+            "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
+            "format=\"ascii\">\n",
+            c->n, nc);
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%.17g %.17g %.17g\n", u[3 * i], u[3 * i + 1], u[3 * i + 2]);
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt32\" Name=\"node\" format=\"ascii\">\n");
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%zu\n", i + 1);
+    }
+    fprintf(fp, "</DataArray>\n</PointData>\n<Points>\n"
+                "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+    for (size_t i = 0; i < c->n; ++i) {
+        fprintf(fp, "%.17g %.17g %.17g\n", c->xyz[3 * i], c->xyz[3 * i + 1], c->xyz[3 * i + 2]);
+    }
+    fprintf(fp, "</DataArray>\n</Points>\n<Cells>\n"
+                "<DataArray type=\"UInt64\" Name=\"connectivity\" format=\"ascii\">\n");
+}
+
+/* Offsets and types of nc cells of `corners` points and VTK type `type`. */
+static void vtu_cells_end(FILE *fp, size_t nc, unsigned corners, unsigned type)
+{
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt64\" Name=\"offsets\" format=\"ascii\">\n");
+    for (size_t q = 1; q <= nc; ++q) {
+        fprintf(fp, "%zu\n", corners * q);
+    }
+    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    for (size_t q = 0; q < nc; ++q) {
+        fprintf(fp, "%u\n", type);
+    }
+    fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+}
+
 /* 1 when a cut separates two corners of the cell. */
 static int cut_through(const tf_cloud *c, const tf_cut_set *cuts, const size_t v[8])
 {
@@ -81,42 +122,24 @@ int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, co
     }
     size_t nc = kept_cells(c, &set, conn);
     tf_cut_set_free(&set);
-    fprintf(fp,
-            "<?xml version=\"1.0\"?>\n"
-            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-            "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n"
-            "<PointData Vectors=\"displacement\">\n"
-            "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
-            "format=\"ascii\">\n",
-            c->n, nc);
-    for (size_t i = 0; i < c->n; ++i) {
-        fprintf(fp, "%.17g %.17g %.17g\n", u[3 * i], u[3 * i + 1], u[3 * i + 2]);
-    }
-    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt32\" Name=\"node\" format=\"ascii\">\n");
-    for (size_t i = 0; i < c->n; ++i) {
-        fprintf(fp, "%zu\n", i + 1);
-    }
-    fprintf(fp, "</DataArray>\n</PointData>\n<Points>\n"
-                "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    for (size_t i = 0; i < c->n; ++i) {
-        fprintf(fp, "%.17g %.17g %.17g\n", c->xyz[3 * i], c->xyz[3 * i + 1], c->xyz[3 * i + 2]);
-    }
-    fprintf(fp, "</DataArray>\n</Points>\n<Cells>\n"
-                "<DataArray type=\"UInt64\" Name=\"connectivity\" format=\"ascii\">\n");
+    vtu_points(fp, c, nc, u);
     for (size_t q = 0; q < nc; ++q) {
         const size_t *v = conn + 8 * q;
         fprintf(fp, "%zu %zu %zu %zu %zu %zu %zu %zu\n", v[0], v[1], v[2], v[3], v[4], v[5], v[6],
                 v[7]);
     }
     free(conn);
-    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt64\" Name=\"offsets\" format=\"ascii\">\n");
-    for (size_t q = 1; q <= nc; ++q) {
-        fprintf(fp, "%zu\n", 8 * q);
-    }
-    fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for (size_t q = 0; q < nc; ++q) {
-        fprintf(fp, "12\n");
-    }
-    fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    vtu_cells_end(fp, nc, 8, 12);
     return 0;
+}
+
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,
+                               const double *u)
+{
+    vtu_points(fp, c, ntet, u);
+    for (size_t e = 0; e < ntet; ++e) {
+        fprintf(fp, "%zu %zu %zu %zu\n", tet[4 * e], tet[4 * e + 1], tet[4 * e + 2],
+                tet[4 * e + 3]);
+    }
+    vtu_cells_end(fp, ntet, 4, 10);
 }

@@ -75,6 +75,11 @@ int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char
             "double coefficients and arithmetic (no target evaluator, so no time).  ★ marks "
             "the error/time Pareto front of each output set.\n\n",
             p->name, p->source, sw->n_train, sw->n_heldout);
+    if (p->cloud.n_surface > 0) {
+        fprintf(f.fp, "An organ: \"all nodes\" is every surface vertex of its mesh (%zu), the "
+                      "whole surface a renderer draws.\n\n",
+                p->cloud.n_surface);
+    }
     fprintf(f.fp, "| outputs | model | precision | coefficients | table bytes | ops | M4F µs | "
                   "M7 µs | native ns | held-out max | held-out RMS | |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -14,6 +14,7 @@
 #include "problem/regions.h"
 #include "scene/scene_grading.h"
 #include "scene/scene_history.h"
+#include "scene/scene_organ.h"
 #include "scene/scene_regions.h"
 #include "solvers/solver.h"
 
@@ -26,6 +27,7 @@ int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
     va_end(ap);
     return -1;
 }
+#define fail sd_fail
 
 /* "prefix.k.key" into buf. */
 static const char *at(char *buf, size_t len, const char *prefix, size_t k, const char *key)
@@ -65,6 +67,17 @@ static int check_box(const sd_box *b, const char *path, sd_issue *is)
 static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     const sd_geometry *g = &doc->geometry;
+    if ((g->box != NULL) == (g->surface != NULL)) {
+        return sd_fail(is, "geometry",
+                       "give exactly one of box (with grid) or surface (with spacing)");
+    }
+    if (g->surface) {
+        return sd_organ_geometry(doc, s, is);
+    }
+    if (g->grid == NULL || g->spacing || g->refine) {
+        return sd_fail(is, "geometry", "a box takes grid (and grading, jitter, seed), not spacing "
+                                       "or refine");
+    }
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;
     }
@@ -172,15 +185,80 @@ static int material(const sd_material *m, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* The regions of organs: a ball, a half-space, surface vertices near a
+ * point (also usable on a box except `near`). */
+static int shaped_region(const sd_fixed *d, size_t k, const tf_problem *s, tf_region *r,
+                         sd_issue *is)
+{
+    char p[128];
+    if (d->sphere) {
+        r->kind = TF_REGION_SPHERE;
+        memcpy(r->centre, d->sphere->centre, sizeof r->centre);
+        r->radius = d->sphere->radius;
+    } else if (d->side) {
+        r->kind = TF_REGION_SIDE;
+        memcpy(r->centre, d->side->point, sizeof r->centre);
+        memcpy(r->normal, d->side->normal, sizeof r->normal);
+        if (!finite_all(r->normal, 3) ||
+            (r->normal[0] == 0 && r->normal[1] == 0 && r->normal[2] == 0)) {
+            return fail(is, at(p, sizeof p, "fixed", k, "side"),
+                        "the normal must be a finite non-zero vector");
+        }
+    } else {
+        r->kind = TF_REGION_NEAR;
+        memcpy(r->centre, d->near->point, sizeof r->centre);
+        r->radius = d->near->distance;
+        if (tf_problem_mesh(s) == NULL) {
+            return fail(is, at(p, sizeof p, "fixed", k, "near"),
+                        "near selects surface vertices of an organ (geometry.surface)");
+        }
+    }
+    if (!finite_all(r->centre, 3) || !(isfinite(r->radius) && r->radius >= 0)) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL),
+                    "needs a finite point (mm) and a finite non-negative radius or distance");
+    }
+    return 0;
+}
+
+static int vertex_list(const sd_fixed *d, size_t k, const tf_problem *s, tf_fixed *f,
+                       sd_issue *is)
+{
+    char p[128];
+    f->where.kind = TF_REGION_VERTICES;
+    f->n_nodes = d->vertices_count;
+    f->nodes = malloc((f->n_nodes + 1) * sizeof *f->nodes);
+    if (f->nodes == NULL) {
+        return fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
+    }
+    return sd_organ_vertices(d->vertices, d->vertices_count, s,
+                             at(p, sizeof p, "fixed", k, "vertices"), f->nodes, is);
+}
+
 static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd_issue *is)
 {
     char p[128];
-    int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL);
+    int kinds = (d->face != NULL) + (d->plane != NULL) + (d->box != NULL) +
+                (d->sphere != NULL) + (d->side != NULL) + (d->near != NULL) +
+                (d->vertices_count > 0);
     if (kinds != 1) {
         return sd_fail(is, at(p, sizeof p, "fixed", k, NULL),
-                    "give exactly one of face, plane or box (got %d)", kinds);
+                       "give exactly one of face, plane, box, sphere, side, near or vertices "
+                       "(got %d)",
+                       kinds);
     }
-    if (d->face) {
+    if (d->face && tf_problem_mesh(s) != NULL) {
+        return fail(is, at(p, sizeof p, "fixed", k, "face"),
+                    "an organ has no box faces: use box, sphere, side, near or vertices");
+    }
+    if (d->sphere || d->side || d->near) {
+        if (shaped_region(d, k, s, &f->where, is) != 0) {
+            return -1;
+        }
+    } else if (d->vertices_count > 0) {
+        if (vertex_list(d, k, s, f, is) != 0) {
+            return -1;
+        }
+    } else if (d->face) {
         f->where.kind = TF_REGION_FACE;
         f->where.face = (tf_face)*d->face;
     } else if (d->plane) {
@@ -217,7 +295,8 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     if (!finite_all(f->value, 3)) {
         return sd_fail(is, at(p, sizeof p, "fixed", k, "displacement"), "must be finite (mm)");
     }
-    if (tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
+    if (f->where.kind != TF_REGION_VERTICES &&
+        tf_region_nodes(&s->cloud, &f->where, &f->nodes, &f->n_nodes) != 0) {
         return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
@@ -282,9 +361,9 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
         const sd_load *d = &doc->loads[k];
         tf_load *l = &s->loads[k];
         l->exact = d->exact && *d->exact;
-        if ((d->node != NULL) + (d->at != NULL) + (d->patch != NULL) != 1) {
+        if ((d->node != NULL) + (d->at != NULL) + (d->patch != NULL) + (d->site != NULL) != 1) {
             return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
-                        "give exactly one of node, at or patch");
+                           "give exactly one of node, at, patch or site");
         }
         if (l->exact == (d->force != NULL)) {
             return sd_fail(is, at(p, sizeof p, "loads", k, NULL),
@@ -300,7 +379,13 @@ static int loads(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 return sd_fail(is, at(p, sizeof p, "loads", k, "force"), "must be finite (N)");
             }
         }
-        if (d->node) {
+        if (d->site) {
+            uint32_t node;
+            if (sd_organ_site(d->site, s, at(p, sizeof p, "loads", k, NULL), &l->patch, &node,
+                              is) != 0) {
+                return -1;
+            }
+        } else if (d->node) {
             l->patch.shape = TF_PATCH_POINT;
             if (node_index(*d->node, s, at(p, sizeof p, "loads", k, "node"), &l->patch.node, is)) {
                 return -1;
@@ -378,6 +463,21 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 return sd_fail(is, at(p, sizeof p, "contact", k, "name"),
                             "'%s' names contact %zu already", c->name, j);
             }
+        }
+        if (d->site && (d->node || d->at || d->patch)) {
+            return sd_fail(is, at(p, sizeof p, "contact", k, NULL),
+                           "give a site on an organ, or node, at or patch on a box, not both");
+        }
+        if (d->site) {
+            /* The site's centre is the surface vertex nearest its point: a
+             * node, so its nodal value is the contact displacement. */
+            if (sd_organ_site(d->site, s, at(p, sizeof p, "contact", k, NULL), &c->patch,
+                              &c->node, is) != 0) {
+                return -1;
+            }
+            c->by_node = 1;
+            memcpy(c->at, s->cloud.xyz + 3 * (size_t)c->node, sizeof c->at);
+            continue;
         }
         if (contact_site(d, s, k, c, is) != 0) {
             return -1;
@@ -462,6 +562,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .polynomial = 1,
         .volumetric = TF_VOLUMETRIC_CELL,
         .gauss = 3,
+        .tet_degree = 2,
         .bc = TF_BC_ELIMINATION,
         .penalty = 1e7,
         .nitsche = 100,
@@ -513,7 +614,15 @@ static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
 static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
 {
     tf_solver_opts *o = &s->solver;
-    *o = sd_solver_defaults(s->geometry.as.box.grid);
+    static const unsigned no_grid[3] = {2, 2, 2}; /* an organ has no background grid */
+    *o = sd_solver_defaults(s->geometry.kind == TF_GEOMETRY_BOX ? s->geometry.as.box.grid
+                                                                : no_grid);
+    if (s->geometry.kind != TF_GEOMETRY_BOX) {
+        /* An organ's default d_c is the seed's absolute 2 mm: its supports
+         * (balls of up to 60 nodes, a dense skin) leave the relative 8 h
+         * singular, 4 h ill-conditioned (docs/validation.md §14). */
+        o->d_c_spacings = 0;
+    }
     if (d == NULL) {
         return 0;
     }
@@ -547,6 +656,7 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
         o->cells[a] = d->cells[a];
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
+    o->tet_degree = d->tet_degree ? *d->tet_degree : o->tet_degree;
     int efg = strcmp(o->method, "efg-galerkin") == 0;
     o->bc = d->bc ? (tf_bc_method)*d->bc : efg ? TF_BC_NITSCHE : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
@@ -578,6 +688,11 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     }
     if (o->gauss < 1 || o->gauss > 12) {
         return sd_fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
+    }
+    if (o->tet_degree < 1 || o->tet_degree > 5) {
+        return fail(is, "solver.tet_degree",
+                    "1 to 5: the degree of the tetrahedron rule (1, 2 or 5 points sets; 3 and 4 "
+                    "use the degree-5 rule)");
     }
     if (!(isfinite(o->penalty) && o->penalty > 0)) {
         return sd_fail(is, "solver.penalty", "must be a positive factor");
@@ -647,6 +762,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     f->folds = d->folds ? *d->folds : f->folds;
     f->max_degree = d->max_degree ? *d->max_degree : f->max_degree;
     f->max_rank = d->max_rank ? *d->max_rank : f->max_rank;
+    f->servo_hz = d->servo_hz ? *d->servo_hz : f->servo_hz;
     if (d->contact) {
         f->contact = tf_problem_contact(s, d->contact);
         if (f->contact < 0) {
@@ -667,6 +783,9 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     }
     if (f->max_rank < 1 || f->max_rank > TF_FAMILY_MAX_RANK) {
         return sd_fail(is, "fit.max_rank", "1 to %d modes", TF_FAMILY_MAX_RANK);
+    }
+    if (d->servo_hz && (f->servo_hz < 1 || f->servo_hz > 100000)) {
+        return fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
     }
     return 0;
 }

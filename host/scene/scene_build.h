@@ -15,8 +15,12 @@
  * syntax) and a message. */
 typedef struct sd_issue {
     char path[128];
-    char msg[256];
+    char msg[768]; /* room for a geometry message (geom_msg.h) and its context */
 } sd_issue;
+
+/* Records the issue at path (a printf format); returns -1. */
+int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 
 /* Fills p (zeroed by the caller, its name and source set) and the plan
  * from doc.  Returns 0, or -1 with the issue; p may then hold partial

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/mesh_geometry.h"
 #include "problem/regions.h"
 
 static int patch_fail(char *msg, size_t msglen, const char *what)
@@ -70,6 +71,59 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
 {
     snprintf(msg, msglen, "%s", what);
     return -1;
+}
+
+/* The surface vertices within radius of any contact point, ascending. */
+static void near_contact(const tf_problem *s, double radius, tf_outputs *o)
+{
+    const tf_cloud *c = &s->cloud;
+    for (size_t i = 0; i < c->n_surface; ++i) {
+        const double *x = c->xyz + 3 * i;
+        for (size_t k = 0; k < s->n_contacts; ++k) {
+            const double *y = s->contacts[k].at;
+            double d2 = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+                        (x[2] - y[2]) * (x[2] - y[2]);
+            if (d2 <= radius * radius) {
+                o->nodes[o->n_nodes++] = (uint32_t)i;
+                break;
+            }
+        }
+    }
+}
+
+/* The selections of organs: every surface vertex, those near the contact
+ * sites, or a list of vertices by their index in the mesh file. */
+static int organ_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
+                         size_t msglen)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(s);
+    if (m == NULL) {
+        return outputs_fail(msg, msglen,
+                            "select: surface, near-contact and vertices need an organ "
+                            "(geometry.surface)");
+    }
+    if (o->kind == TF_OUT_SURFACE) {
+        for (size_t i = 0; i < s->cloud.n_surface; ++i) {
+            o->nodes[o->n_nodes++] = (uint32_t)i;
+        }
+    } else if (o->kind == TF_OUT_NEAR_CONTACT) {
+        if (!(isfinite(*d->radius) && *d->radius >= 0) || s->n_contacts == 0) {
+            return outputs_fail(msg, msglen,
+                                "near-contact needs a contact site and a finite radius >= 0 (mm)");
+        }
+        near_contact(s, *d->radius, o);
+    } else {
+        for (unsigned k = 0; k < d->vertices_count; ++k) {
+            long i = tf_problem_mesh_vertex_node(m, (long)d->vertices[k]);
+            if (i < 0) {
+                snprintf(msg, msglen, "vertex %u is not a vertex of the surface read from %s",
+                         d->vertices[k], m->file);
+                return -1;
+            }
+            o->nodes[o->n_nodes++] = (uint32_t)i;
+        }
+    }
+    return 0;
 }
 
 /* Point j of a lattice: count[a] points evenly from min to max per axis
@@ -149,6 +203,18 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
 {
     o->kind = (tf_output_kind)d->select;
     o->points = NULL;
+    int organ = o->kind == TF_OUT_SURFACE || o->kind == TF_OUT_NEAR_CONTACT ||
+                o->kind == TF_OUT_VERTICES;
+    if ((d->radius != NULL) != (o->kind == TF_OUT_NEAR_CONTACT) ||
+        (d->vertices_count > 0) != (o->kind == TF_OUT_VERTICES)) {
+        return outputs_fail(msg, msglen,
+                            "select: near-contact takes radius, vertices takes vertices (a "
+                            "non-empty list); the others take neither");
+    }
+    if (o->kind == TF_OUT_FACE && tf_problem_mesh(s) != NULL) {
+        return outputs_fail(msg, msglen, "an organ has no box faces: select surface, "
+                                         "near-contact, vertices or points");
+    }
     int has_nodes = d->nodes != NULL || d->nodes_count > 0;
     int has_points = d->points != NULL || d->lattice != NULL;
     if (o->kind == TF_OUT_NODES && d->nodes_count == 0) {
@@ -164,13 +230,17 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
     if (o->kind == TF_OUT_POINTS) {
         return output_points(d, s, o, msg, msglen);
     }
-    size_t n = s->cloud.n;
-    o->nodes = malloc((n > d->nodes_count ? n : d->nodes_count) * sizeof *o->nodes + 1);
+    size_t n = s->cloud.n, list = d->nodes_count + d->vertices_count;
+    o->nodes = malloc((n > list ? n : list) * sizeof *o->nodes + 1);
     if (o->nodes == NULL) {
         return outputs_fail(msg, msglen, "out of memory");
     }
     o->n_nodes = 0;
-    if (o->kind == TF_OUT_ALL) {
+    if (organ) {
+        if (organ_outputs(d, s, o, msg, msglen) != 0) {
+            return -1;
+        }
+    } else if (o->kind == TF_OUT_ALL) {
         for (size_t i = 0; i < n; ++i) {
             o->nodes[o->n_nodes++] = (uint32_t)i;
         }
@@ -200,6 +270,17 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
     }
     if (o->n_nodes == 0) {
         return outputs_fail(msg, msglen, "the selection holds no node: nothing to output");
+    }
+    /* Points (select: points, contacts by position) are the field there,
+     * wherever they lie; nodes of an organ must be surface vertices. */
+    for (size_t k = 0; tf_problem_mesh(s) != NULL && o->points == NULL && k < o->n_nodes; ++k) {
+        if (o->nodes[k] >= s->cloud.n_surface) {
+            snprintf(msg, msglen,
+                     "node %u lies inside the organ: outputs of an organ are surface vertices "
+                     "(the renderer has no vertex inside)",
+                     o->nodes[k] + 1);
+            return -1;
+        }
     }
     return 0;
 }

@@ -33,8 +33,11 @@ static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, 
 static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
 static const cyaml_strval_t selects[] = {
-    {"all", TF_OUT_ALL},     {"face", TF_OUT_FACE},       {"box", TF_OUT_BOX},
-    {"nodes", TF_OUT_NODES}, {"contact", TF_OUT_CONTACT}, {"points", TF_OUT_POINTS},
+    {"all", TF_OUT_ALL},         {"face", TF_OUT_FACE},
+    {"box", TF_OUT_BOX},         {"nodes", TF_OUT_NODES},
+    {"contact", TF_OUT_CONTACT}, {"points", TF_OUT_POINTS},
+    {"surface", TF_OUT_SURFACE}, {"near-contact", TF_OUT_NEAR_CONTACT},
+    {"vertices", TF_OUT_VERTICES},
 };
 static const cyaml_strval_t centres[] = {{"point", TF_SUPPORT_POINT}, {"cell", TF_SUPPORT_CELL}};
 static const cyaml_strval_t polynomials[] = {{"none", 0}, {"linear", 1}};
@@ -61,12 +64,38 @@ static const cyaml_schema_field_t box_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t rotate_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("axis", CYAML_FLAG_DEFAULT, sd_rotate, axis, &real, 3),
+    CYAML_FIELD_FLOAT("angle", CYAML_FLAG_DEFAULT, sd_rotate, angle),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t surface_fields[] = {
+    CYAML_FIELD_STRING_PTR("file", CYAML_FLAG_DEFAULT, sd_surface, file, 1, 511),
+    CYAML_FIELD_FLOAT_PTR("scale", OPT, sd_surface, scale),
+    CYAML_FIELD_BOOL_PTR("centre", OPT, sd_surface, centre),
+    CYAML_FIELD_MAPPING_PTR("rotate", OPT, sd_surface, rotate, rotate_fields),
+    CYAML_FIELD_SEQUENCE_FIXED("translate", OPT_PTR, sd_surface, translate, &real, 3),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t refine_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_refine, at, &real, 3),
+    CYAML_FIELD_FLOAT("spacing", CYAML_FLAG_DEFAULT, sd_refine, spacing),
+    CYAML_FIELD_FLOAT("radius", CYAML_FLAG_DEFAULT, sd_refine, radius),
+    CYAML_FIELD_FLOAT("ramp", CYAML_FLAG_DEFAULT, sd_refine, ramp),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t geometry_fields[] = {
-    CYAML_FIELD_MAPPING_PTR("box", CYAML_FLAG_DEFAULT, sd_geometry, box, box_fields),
-    CYAML_FIELD_SEQUENCE_FIXED("grid", CYAML_FLAG_DEFAULT, sd_geometry, grid, &count, 3),
+    CYAML_FIELD_MAPPING_PTR("box", OPT, sd_geometry, box, box_fields),
+    CYAML_FIELD_SEQUENCE_FIXED("grid", OPT_PTR, sd_geometry, grid, &count, 3),
     CYAML_FIELD_SEQUENCE_FIXED("grading", OPT_PTR, sd_geometry, grading, &real, 3),
     CYAML_FIELD_FLOAT_PTR("jitter", OPT, sd_geometry, jitter),
     CYAML_FIELD_UINT_PTR("seed", OPT, sd_geometry, seed),
+    CYAML_FIELD_MAPPING_PTR("surface", OPT, sd_geometry, surface, surface_fields),
+    CYAML_FIELD_FLOAT_PTR("spacing", OPT, sd_geometry, spacing),
+    CYAML_FIELD_MAPPING_PTR("refine", OPT, sd_geometry, refine, refine_fields),
     CYAML_FIELD_END,
 };
 
@@ -87,10 +116,39 @@ static const cyaml_schema_field_t plane_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t sphere_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("centre", CYAML_FLAG_DEFAULT, sd_sphere, centre, &real, 3),
+    CYAML_FIELD_FLOAT("radius", CYAML_FLAG_DEFAULT, sd_sphere, radius),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t side_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("point", CYAML_FLAG_DEFAULT, sd_side, point, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("normal", CYAML_FLAG_DEFAULT, sd_side, normal, &real, 3),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t near_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("point", CYAML_FLAG_DEFAULT, sd_near, point, &real, 3),
+    CYAML_FIELD_FLOAT("distance", CYAML_FLAG_DEFAULT, sd_near, distance),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t site_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("point", CYAML_FLAG_DEFAULT, sd_site, point, &real, 3),
+    CYAML_FIELD_FLOAT("radius", CYAML_FLAG_DEFAULT, sd_site, radius),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t fixed_fields[] = {
     CYAML_FIELD_ENUM_PTR("face", STRICT_OPT, sd_fixed, face, faces, N(faces)),
     CYAML_FIELD_MAPPING_PTR("plane", OPT, sd_fixed, plane, plane_fields),
     CYAML_FIELD_MAPPING_PTR("box", OPT, sd_fixed, box, box_fields),
+    CYAML_FIELD_MAPPING_PTR("sphere", OPT, sd_fixed, sphere, sphere_fields),
+    CYAML_FIELD_MAPPING_PTR("side", OPT, sd_fixed, side, side_fields),
+    CYAML_FIELD_MAPPING_PTR("near", OPT, sd_fixed, near, near_fields),
+    CYAML_FIELD_SEQUENCE("vertices", OPT_PTR, sd_fixed, vertices, &node_number, 0,
+                         CYAML_UNLIMITED),
     CYAML_FIELD_FLAGS_PTR("components", STRICT_OPT, sd_fixed, components, components,
                           N(components)),
     CYAML_FIELD_SEQUENCE_FIXED("displacement", OPT_PTR, sd_fixed, displacement, &real, 3),
@@ -113,6 +171,7 @@ static const cyaml_schema_field_t load_fields[] = {
     CYAML_FIELD_UINT_PTR("node", OPT, sd_load, node),
     CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_load, at, &real, 3),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_load, patch, patch_fields),
+    CYAML_FIELD_MAPPING_PTR("site", OPT, sd_load, site, site_fields),
     CYAML_FIELD_SEQUENCE_FIXED("force", OPT_PTR, sd_load, force, &real, 3),
     CYAML_FIELD_BOOL_PTR("exact", OPT, sd_load, exact),
     CYAML_FIELD_END,
@@ -125,6 +184,7 @@ static const cyaml_schema_field_t contact_fields[] = {
     CYAML_FIELD_UINT_PTR("node", OPT, sd_contact, node),
     CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_contact, at, &real, 3),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_contact, patch, patch_fields),
+    CYAML_FIELD_MAPPING_PTR("site", OPT, sd_contact, site, site_fields),
     CYAML_FIELD_END,
 };
 static const cyaml_schema_value_t contact_entry = {
@@ -153,6 +213,9 @@ static const cyaml_schema_field_t outputs_fields[] = {
     CYAML_FIELD_SEQUENCE("nodes", OPT_PTR, sd_outputs, nodes, &node_number, 0, CYAML_UNLIMITED),
     CYAML_FIELD_SEQUENCE("points", OPT_PTR, sd_outputs, points, &point, 1, CYAML_UNLIMITED),
     CYAML_FIELD_MAPPING_PTR("lattice", OPT, sd_outputs, lattice, lattice_fields),
+    CYAML_FIELD_FLOAT_PTR("radius", OPT, sd_outputs, radius),
+    CYAML_FIELD_SEQUENCE("vertices", OPT_PTR, sd_outputs, vertices, &node_number, 0,
+                         CYAML_UNLIMITED),
     CYAML_FIELD_END,
 };
 
@@ -198,6 +261,7 @@ static const cyaml_schema_field_t solver_fields[] = {
                          N(volumetrics)),
     CYAML_FIELD_SEQUENCE_FIXED("cells", OPT_PTR, sd_solver, cells, &count, 3),
     CYAML_FIELD_UINT_PTR("gauss", OPT, sd_solver, gauss),
+    CYAML_FIELD_UINT_PTR("tet_degree", OPT, sd_solver, tet_degree),
     CYAML_FIELD_ENUM_PTR("bc", STRICT_OPT, sd_solver, bc, bcs, N(bcs)),
     CYAML_FIELD_FLOAT_PTR("penalty", OPT, sd_solver, penalty),
     CYAML_FIELD_FLOAT_PTR("nitsche", OPT, sd_solver, nitsche),
@@ -252,6 +316,7 @@ static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_UINT_PTR("folds", OPT, sd_fit, folds),
     CYAML_FIELD_UINT_PTR("max_degree", OPT, sd_fit, max_degree),
     CYAML_FIELD_UINT_PTR("max_rank", OPT, sd_fit, max_rank),
+    CYAML_FIELD_UINT_PTR("servo_hz", OPT, sd_fit, servo_hz),
     CYAML_FIELD_END,
 };
 

@@ -21,12 +21,37 @@ typedef struct sd_box {
     double max[3];
 } sd_box;
 
+typedef struct sd_rotate {
+    double axis[3];
+    double angle;      /* degrees */
+} sd_rotate;
+
+/* An organ's surface mesh and how it is placed in the scene's frame. */
+typedef struct sd_surface {
+    char *file;        /* relative to the scene file's folder */
+    double *scale;     /* file units -> mm */
+    bool *centre;
+    sd_rotate *rotate;
+    double *translate; /* 3, mm */
+} sd_surface;
+
+/* An organ's local refinement (geometry.refine). */
+typedef struct sd_refine {
+    double *at;        /* 3, mm; default: the first contact site's point */
+    double spacing;
+    double radius;
+    double ramp;
+} sd_refine;
+
 typedef struct sd_geometry {
-    sd_box *box;       /* required today; `surface:` will be the alternative */
-    unsigned grid[3];
-    double *grading;   /* 3: largest / smallest spacing per axis */
+    sd_box *box;       /* a box and its grid, or */
+    unsigned *grid;    /* 3 */
+    double *grading;   /* 3, a box: largest / smallest spacing per axis */
     double *jitter;
     uint64_t *seed;
+    sd_surface *surface; /* an organ's surface, its interior spacing and grading */
+    double *spacing;
+    sd_refine *refine;
 } sd_geometry;
 
 typedef struct sd_material {
@@ -41,10 +66,36 @@ typedef struct sd_plane {
     double at;
 } sd_plane;
 
+typedef struct sd_sphere {
+    double centre[3];
+    double radius;
+} sd_sphere;
+
+typedef struct sd_side {
+    double point[3];
+    double normal[3];
+} sd_side;
+
+typedef struct sd_near {
+    double point[3];
+    double distance;
+} sd_near;
+
+/* A contact site on an organ's surface: a point and a radius. */
+typedef struct sd_site {
+    double point[3];
+    double radius;
+} sd_site;
+
 typedef struct sd_fixed {
     int *face;        /* tf_face */
     sd_plane *plane;
     sd_box *box;
+    sd_sphere *sphere;
+    sd_side *side;
+    sd_near *near;
+    uint32_t *vertices; /* surface vertices by their index in the mesh file */
+    unsigned vertices_count;
     unsigned *components; /* TF_COMP_* flags */
     double *displacement; /* 3 */
     bool *exact;
@@ -62,15 +113,17 @@ typedef struct sd_load {
     uint32_t *node;
     double *at;      /* 3: a point force's position, mm */
     sd_patch *patch;
+    sd_site *site;
     double *force;   /* 3 */
     bool *exact;
 } sd_load;
 
 typedef struct sd_contact {
     char *name;
-    uint32_t *node;
-    double *at;      /* 3: the contact point, mm */
+    uint32_t *node;  /* a box: a node, or */
+    double *at;      /* 3, a box: the contact point, mm */
     sd_patch *patch;
+    sd_site *site;   /* an organ: instead of node and patch */
 } sd_contact;
 
 typedef struct sd_envelope {
@@ -89,6 +142,9 @@ typedef struct sd_outputs {
     sd_box *box;
     uint32_t *nodes;
     unsigned nodes_count;
+    double *radius;      /* near-contact */
+    uint32_t *vertices;  /* vertices: indices in the mesh file */
+    unsigned vertices_count;
     double (*points)[3];
     unsigned points_count;
     sd_lattice *lattice;
@@ -116,6 +172,7 @@ typedef struct sd_solver {
     int *volumetric; /* tf_volumetric */
     unsigned *cells; /* 3 */
     unsigned *gauss;
+    unsigned *tet_degree;
     int *bc;         /* tf_bc_method */
     double *penalty;
     double *nitsche;
@@ -159,7 +216,7 @@ typedef struct sd_history {
 typedef struct sd_fit {
     char *family;      /* a registered forward family's name (fitting/families/family.h) */
     char *contact;     /* contact site name */
-    unsigned *train, *heldout, *folds, *max_degree, *max_rank;
+    unsigned *train, *heldout, *folds, *max_degree, *max_rank, *servo_hz;
     uint64_t *seed;
 } sd_fit;
 

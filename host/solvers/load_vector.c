@@ -55,8 +55,9 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
         return 0;
     }
     size_t nq = 0;
-    tf_qpoint *q = t->p->shape == TF_PATCH_AT ? malloc(sizeof *q)
-                                              : tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
+    tf_qpoint *q = t->p->shape == TF_PATCH_AT        ? malloc(sizeof *q)
+                   : t->p->shape == TF_PATCH_SURFACE ? tf_patch_surface_points(t->p, sh->cloud, &nq)
+                                                     : tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
     if (q != NULL && t->p->shape == TF_PATCH_AT) {
         /* a point force: the Galerkin load phi_I(x) F (eq 25 with a point traction) */
         memcpy(q->x, t->p->at, sizeof q->x);

@@ -309,7 +309,10 @@ static int outputs_of(const tf_problem *s, const tf_solver *solver, tf_output_se
     if (set == TF_SET_SCENE) {
         return 0;
     }
-    size_t n = set == TF_SET_CONTACT ? 1 : tf_solver_node_count(solver);
+    /* an organ's "every node" is every surface vertex: the renderer has no other */
+    size_t n = set == TF_SET_CONTACT      ? 1
+               : s->cloud.n_surface > 0 ? s->cloud.n_surface
+                                        : tf_solver_node_count(solver);
     *nodes = malloc(n * sizeof **nodes);
     if (*nodes == NULL) {
         return -1;

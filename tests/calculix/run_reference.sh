@@ -42,6 +42,7 @@ lock_level=$LOCK_LEVEL mesh_runs=$MESH_RUNS grid_runs=$GRID_RUNS point_levels=$P
 reuse=${REUSE:-0}
 here=$(cd "$(dirname "$0")" && pwd)
 threads=${CCX_THREADS:-1}
+. "$here/ccx_cached.sh"
 mkdir -p "$work/out"
 out=$work/out
 table=node$point
@@ -78,18 +79,7 @@ solve() {
     reused "$run" "$element" "$nu" "$n" "$layers" "$load" && return 0
     "$deck_tool" --scene "$scene" --divisions "$n" --layers "$layers" --nu "$nu" --element "$element" "$@" \
         > "$work/$run.inp.new"
-    if cmp -s "$work/$run.inp.new" "$work/$run.inp" && [ -s "$work/$run.dat" ] && [ -s "$work/$run.time" ]; then
-        rm "$work/$run.inp.new"
-        echo "calculix: $run: deck unchanged, reusing its results" >&2
-    else
-        mv "$work/$run.inp.new" "$work/$run.inp"
-        rm -f "$work/$run.dat" "$work/$run.time"
-        echo "calculix: $run: $scene ${n} divisions x $layers layers $element, nu = $nu ..." >&2
-        (cd "$work" && OMP_NUM_THREADS=$threads /usr/bin/time -f "%e %M $threads" -o "$run.time.new" \
-            ccx -i "$run" > "$run.log" 2>&1) || { echo "calculix: $run failed, see $work/$run.log" >&2; exit 1; }
-        grep -q "Job finished" "$work/$run.log" || { echo "calculix: $run did not finish, see $work/$run.log" >&2; exit 1; }
-        mv "$work/$run.time.new" "$work/$run.time"
-    fi
+    ccx_cached "$work" "$run" "$threads" "%e %M $threads" "$scene ${n} divisions x $layers layers $element, nu = $nu"
     record "$run" "$n" "$layers" "$nu" "$element" "$load"
 }
 

@@ -168,6 +168,18 @@ static void announce(const galerkin *g, const tf_problem *p, const tf_ctx *ctx)
 {
     const tf_solver_opts *o = &g->base.opts;
     const tf_cells *c = &g->sh.cells;
+    if (c->tet) {
+        tf_info(ctx,
+                "solver: %zu nodes (%zu on the surface), %zu DOFs, %zu tetrahedra x %u Gauss "
+                "points (degree %u), support %g x local spacing (%s-centred), %s, volumetric "
+                "strain %s, BCs by %s",
+                p->cloud.n, p->cloud.n_surface, 3 * p->cloud.n, c->ntet, c->rule.n,
+                c->rule.degree, o->support, o->centre == TF_SUPPORT_CELL ? "cell" : "point",
+                o->polynomial ? "RBF + linear polynomial" : "RBF only",
+                o->volumetric == TF_VOLUMETRIC_CELL ? "averaged per cell" : "at every point",
+                o->bc == TF_BC_PENALTY ? "penalty" : "elimination");
+        return;
+    }
     tf_info(ctx,
             "solver: %zu nodes, %zu DOFs, %zu cells x %u^3 Gauss points%s, support %g x spacing "
             "(%s-centred), %s, volumetric strain %s, BCs by %s",
@@ -207,6 +219,11 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     g->shape_ok = 1;
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m != NULL && tf_shape_use_tets(&g->sh, m->tm.tet, m->tm.ntet, g->base.opts.tet_degree,
+                                       ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     if (g->efg && tf_shape_use_efg(&g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }

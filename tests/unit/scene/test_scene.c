@@ -179,7 +179,7 @@ static void each_bad_scene_has_its_own_message(void **state)
     expect_error(4, "  grid: [5, 1, 2]\n", (const char *[]){"t.yaml:4:", "geometry.grid", "at least 2", NULL});
     expect_error(9, "  - face: w+\n", (const char *[]){"t.yaml:9:", "fixed.0.face", "x-, x+", NULL});
     expect_error(9, "  - {face: z-, plane: {axis: x, at: 0}}\n",
-                 (const char *[]){"t.yaml:9:", "fixed.0", "exactly one of face, plane or box", NULL});
+                 (const char *[]){"t.yaml:9:", "fixed.0", "exactly one of face, plane, box", NULL});
     expect_error(9, "  - plane: {axis: x, at: 3}\n",
                  (const char *[]){"t.yaml:9:", "fixed.0", "holds no node", NULL});
     expect_span(8, 2, "fixed: []\n", (const char *[]){"t.yaml:", "fixed", "few", NULL});

@@ -305,7 +305,7 @@ static void position_keys_are_checked(void **state)
                  "select: points takes points (a list) or lattice, not both");
     expect_error((const char *[]){"outputs.select=all"}, 1, "points takes points or lattice");
     expect_error((const char *[]){"loads.0.at=1,2,3", "loads.0.node=4", "loads.0.force=0,0,1"}, 3,
-                 "loads.0: give exactly one of node, at or patch");
+                 "loads.0: give exactly one of node, at, patch or site");
 }
 
 int main(void)

@@ -1,0 +1,417 @@
+/*
+ * organ_deck.c — writes a CalculiX input deck (.inp) for an organ scene
+ * (geometry.surface) on stdout: the same volume, fixed region and contact
+ * patch as the meshless solve, meshed by gmsh with 10-node tetrahedra
+ * (C3D10), one *STEP per unit force (1 N along x, y and z).
+ *
+ *   organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]
+ *
+ * Mesh (geometry/volume_mesh_tet10.h): the scene's surface as it is (every
+ * vertex a node), the interior at spacing H mm (--grade G: G mm within
+ * 20 mm of the contact vertex, rising linearly to H at 60 mm), then R
+ * uniform refinements (each tetrahedron into eight; the surface triangles
+ * into four on their own planes: the same polyhedron), then second order.
+ *
+ * Fixed region: every node (corner or mid-edge) the scene's fixed regions
+ * select by position (box, sphere, side; not the vertex-based near and
+ * vertices, which name the meshless cloud's nodes).  All three components.
+ *
+ * Load: CalculiX's *DLOAD has no tangential surface traction, so each unit
+ * force is applied as the consistent nodal loads of the uniform traction
+ * t = F / A over the boundary faces inside the scene's contact patch (A its
+ * area): on a flat 6-node triangle the corners get 0 and each mid-edge node
+ * A_face t / 3 (the integrals of the quadratic shape functions).  A face
+ * belongs to the patch when its centroid lies in one of the patch's
+ * triangles (refined faces subdivide them); the deck writer checks that
+ * the faces' area equals the patch's to 1e-9.
+ *
+ * Comment lines the extraction reads (CalculiX ignores lines starting **):
+ *   ** SIZE elements nodes dofs
+ *   ** STEP n case fx fy fz
+ *   ** OUT vertex ccx_node x y z     (the scene's outputs, then the contact
+ *                                    vertex if it is not one of them)
+ *   ** CONTACT vertex ccx_node
+ *
+ * Exit 0 ok, 1 meshing failed, 2 bad usage or scene (nothing written).
+ */
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geometry/volume_mesh_tet10.h"
+#include "problem/mesh_geometry.h"
+#include "problem/regions.h"
+#include "scene/scene.h"
+
+/* C3D10 faces: corners and the mid-edge nodes between them (deck order). */
+static const int face[4][6] = {
+    {0, 1, 2, 4, 5, 6}, {0, 3, 1, 7, 8, 4}, {1, 3, 2, 8, 9, 5}, {2, 3, 0, 9, 7, 6}};
+
+typedef struct options {
+    const char *scene, *solver;
+    double spacing;
+    unsigned refine;
+    double grade; /* mm near the contact vertex, 0: none */
+} options;
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n");
+    return 2;
+}
+
+static int parse(int argc, char **argv, options *o)
+{
+    static const struct option opts[] = {{"spacing", required_argument, NULL, 's'},
+                                         {"refine", required_argument, NULL, 'r'},
+                                         {"solver", required_argument, NULL, 'v'},
+                                         {"grade", required_argument, NULL, 'g'},
+                                         {0}};
+    int c;
+    char *end;
+    while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+        if (c == 's') {
+            o->spacing = strtod(optarg, &end);
+            if (*end || !(o->spacing > 0)) {
+                return -1;
+            }
+        } else if (c == 'r') {
+            o->refine = (unsigned)strtoul(optarg, &end, 10);
+            if (*end || o->refine > 3) {
+                return -1;
+            }
+        } else if (c == 'v') {
+            o->solver = optarg;
+        } else if (c == 'g') {
+            o->grade = strtod(optarg, &end);
+            if (*end || !(o->grade > 0)) {
+                return -1;
+            }
+        } else {
+            return -1;
+        }
+    }
+    if (optind + 1 != argc || !(o->spacing > 0)) {
+        return -1;
+    }
+    o->scene = argv[optind];
+    return 0;
+}
+
+/* The organ's surface as the meshless solve placed it. */
+static int surface_of(const tf_mesh_geometry *m, tf_surface *s)
+{
+    if (tf_surface_alloc(s, m->tm.nsurf, m->tm.ntri) != 0) {
+        return -1;
+    }
+    memcpy(s->xyz, m->tm.xyz, 3 * m->tm.nsurf * sizeof *s->xyz);
+    memcpy(s->tri, m->tm.tri, 3 * m->tm.ntri * sizeof *s->tri);
+    for (size_t i = 0; i < m->tm.nsurf; ++i) {
+        s->source[i] = m->tm.source[i];
+    }
+    return 0;
+}
+
+static double tri_area(const double *a, const double *b, const double *c, double n[3])
+{
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    n[0] = u[1] * v[2] - u[2] * v[1];
+    n[1] = u[2] * v[0] - u[0] * v[2];
+    n[2] = u[0] * v[1] - u[1] * v[0];
+    return 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+/* Is g inside triangle abc (in its plane, within a relative tolerance)? */
+static int in_triangle(const double *g, const double *a, const double *b, const double *c)
+{
+    double n[3], sub[3];
+    double area = tri_area(a, b, c, n), scale = sqrt(area);
+    double d = ((g[0] - a[0]) * n[0] + (g[1] - a[1]) * n[1] + (g[2] - a[2]) * n[2]) / (2 * area);
+    if (fabs(d) > 1e-9 * scale) {
+        return 0;
+    }
+    const double *p[3] = {a, b, c};
+    for (int k = 0; k < 3; ++k) { /* the sub-triangle opposite corner k has the same sense */
+        tri_area(g, p[(k + 1) % 3], p[(k + 2) % 3], sub);
+        if (sub[0] * n[0] + sub[1] * n[1] + sub[2] * n[2] < -1e-12 * area * area) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+typedef struct face_key {
+    size_t c[3]; /* sorted corners */
+    size_t tet;
+    int f;
+} face_key;
+
+static int cmp_face(const void *x, const void *y)
+{
+    const face_key *a = x, *b = y;
+    for (int k = 0; k < 3; ++k) {
+        if (a->c[k] != b->c[k]) {
+            return a->c[k] < b->c[k] ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+static void sort3(size_t *c)
+{
+    for (int i = 0; i < 2; ++i) {
+        for (int j = 0; j < 2 - i; ++j) {
+            if (c[j] > c[j + 1]) {
+                size_t t = c[j];
+                c[j] = c[j + 1];
+                c[j + 1] = t;
+            }
+        }
+    }
+}
+
+/* Nodal loads per unit traction (load[3 node] += A/3 at each mid-edge node
+ * of every boundary face in the patch); returns the loaded area, or -1. */
+static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_patch *pt,
+                          double *weight)
+{
+    face_key *k = malloc((4 * q->ntet + 1) * sizeof *k);
+    if (k == NULL) {
+        return -1;
+    }
+    for (size_t e = 0; e < q->ntet; ++e) {
+        for (int f = 0; f < 4; ++f) {
+            face_key *fk = &k[4 * e + (size_t)f];
+            for (int j = 0; j < 3; ++j) {
+                fk->c[j] = q->tet[10 * e + (size_t)face[f][j]];
+            }
+            sort3(fk->c);
+            fk->tet = e;
+            fk->f = f;
+        }
+    }
+    qsort(k, 4 * q->ntet, sizeof *k, cmp_face);
+    double area = 0;
+    for (size_t i = 0; i < 4 * q->ntet; ++i) {
+        int shared = (i > 0 && cmp_face(&k[i], &k[i - 1]) == 0) ||
+                     (i + 1 < 4 * q->ntet && cmp_face(&k[i], &k[i + 1]) == 0);
+        if (shared) {
+            continue;
+        }
+        const size_t *t = q->tet + 10 * k[i].tet;
+        const int *fc = face[k[i].f];
+        const double *a = q->xyz + 3 * t[fc[0]], *b = q->xyz + 3 * t[fc[1]],
+                     *c = q->xyz + 3 * t[fc[2]];
+        double g[3] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
+                       (a[2] + b[2] + c[2]) / 3};
+        for (size_t j = 0; j < pt->n_tri; ++j) {
+            const uint32_t *v = pt->tri + 3 * j;
+            const double *x = p->cloud.xyz;
+            if (in_triangle(g, x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2])) {
+                double n[3], fa = tri_area(a, b, c, n);
+                area += fa;
+                for (int m = 3; m < 6; ++m) {
+                    weight[t[fc[m]]] += fa / 3;
+                }
+                break;
+            }
+        }
+    }
+    free(k);
+    return area;
+}
+
+/* Nodes of the fixed regions (by position). */
+static int fixed_nodes(const tf_tet10_mesh *q, const tf_problem *p, unsigned char *fixed)
+{
+    tf_cloud c = {.n = q->nn, .xyz = q->xyz};
+    for (int a = 0; a < 3; ++a) {
+        c.lo[a] = p->cloud.lo[a];
+        c.hi[a] = p->cloud.hi[a];
+    }
+    for (size_t r = 0; r < p->n_fixed; ++r) {
+        tf_region_kind kind = p->fixed[r].where.kind;
+        if (kind == TF_REGION_NEAR || kind == TF_REGION_VERTICES || kind == TF_REGION_FACE) {
+            fprintf(stderr, "organ_deck: fixed.%zu: only box, plane, sphere and side regions "
+                            "carry over to another mesh\n", r);
+            return -1;
+        }
+        uint32_t *nodes;
+        size_t n;
+        if (tf_region_nodes(&c, &p->fixed[r].where, &nodes, &n) != 0) {
+            return -1;
+        }
+        for (size_t i = 0; i < n; ++i) {
+            fixed[nodes[i]] = 1;
+        }
+        free(nodes);
+    }
+    return 0;
+}
+
+/* A coordinate as CalculiX reads it: a field holds at most 20 characters,
+ * so %.17g (exact) when it fits, else %.14g (1e-14 relative). */
+static const char *coordinate(double v, char *buf, size_t len)
+{
+    if (snprintf(buf, len, "%.17g", v) > 20) {
+        snprintf(buf, len, "%.14g", v);
+    }
+    return buf;
+}
+
+static void write_mesh(const tf_tet10_mesh *q)
+{
+    char a[32], b[32], c[32];
+    printf("*NODE, NSET=NALL\n");
+    for (size_t i = 0; i < q->nn; ++i) {
+        printf("%zu, %s, %s, %s\n", i + 1, coordinate(q->xyz[3 * i], a, sizeof a),
+               coordinate(q->xyz[3 * i + 1], b, sizeof b), coordinate(q->xyz[3 * i + 2], c, sizeof c));
+    }
+    printf("*ELEMENT, TYPE=C3D10, ELSET=ORGAN\n");
+    for (size_t e = 0; e < q->ntet; ++e) {
+        printf("%zu", e + 1);
+        for (int k = 0; k < 10; ++k) {
+            printf(", %zu", q->tet[10 * e + (size_t)k] + 1);
+        }
+        printf("\n");
+    }
+}
+
+static void write_set(const char *name, const unsigned char *in, size_t n)
+{
+    size_t count = 0;
+    printf("*NSET, NSET=%s\n", name);
+    for (size_t i = 0; i < n; ++i) {
+        if (in[i]) {
+            printf("%zu,%s", i + 1, ++count % 8 == 0 ? "\n" : " ");
+        }
+    }
+    printf("\n");
+}
+
+/* The scene's outputs and the contact vertex, as "** OUT" lines and set OUT. */
+static void write_outputs(const tf_tet10_mesh *q, const tf_problem *p, unsigned char *out)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    uint32_t contact = p->contacts[0].node;
+    int contact_listed = 0;
+    for (size_t j = 0; j <= p->outputs.n_nodes; ++j) {
+        uint32_t v = j < p->outputs.n_nodes ? p->outputs.nodes[j] : contact;
+        if (j == p->outputs.n_nodes && contact_listed) {
+            break;
+        }
+        contact_listed |= v == contact;
+        size_t node = q->vertex_node[v];
+        out[node] = 1;
+        printf("** OUT %ld %zu %.17g %.17g %.17g\n", m->tm.source[v], node + 1, q->xyz[3 * node],
+               q->xyz[3 * node + 1], q->xyz[3 * node + 2]);
+    }
+    printf("** CONTACT %ld %zu\n", m->tm.source[contact], q->vertex_node[contact] + 1);
+}
+
+static void write_steps(const tf_problem *p, const double *weight, size_t nn, double area,
+                        const char *solver)
+{
+    static const char *const name[3] = {"fx", "fy", "fz"};
+    for (int s = 0; s < 3; ++s) {
+        printf("** STEP %d %s %d %d %d\n** load case %s: 1 N as a uniform traction over %.10g "
+               "mm^2\n*STEP\n*STATIC%s%s\n*CLOAD, OP=NEW\n",
+               s + 1, name[s], s == 0, s == 1, s == 2, name[s], area, solver ? ", SOLVER=" : "",
+               solver ? solver : "");
+        for (size_t i = 0; i < nn; ++i) {
+            if (weight[i] != 0) {
+                printf("%zu, %d, %.17g\n", i + 1, s + 1, weight[i] / area);
+            }
+        }
+        printf("*NODE PRINT, NSET=OUT\nU\n*NODE PRINT, NSET=FIXED, TOTALS=ONLY\nRF\n*END STEP\n");
+    }
+    (void)p;
+}
+
+static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh *q)
+{
+    double *weight = calloc(q->nn + 1, sizeof *weight);
+    unsigned char *fixed = calloc(q->nn + 1, 1), *out = calloc(q->nn + 1, 1);
+    if (!weight || !fixed || !out || fixed_nodes(q, p, fixed) != 0) {
+        free(weight);
+        free(fixed);
+        free(out);
+        return 2;
+    }
+    const tf_patch *pt = &p->contacts[0].patch;
+    double area = patch_loads(q, p, pt, weight);
+    if (!(fabs(area - pt->area) <= 1e-9 * pt->area)) {
+        fprintf(stderr, "organ_deck: the loaded faces' area %.12g differs from the patch's %.12g\n",
+                area, pt->area);
+        free(weight);
+        free(fixed);
+        free(out);
+        return 1;
+    }
+    size_t nfixed = 0;
+    for (size_t i = 0; i < q->nn; ++i) {
+        nfixed += fixed[i];
+    }
+    printf("** %s: CalculiX deck of tests/calculix/organ_deck.c (spacing %g mm, graded to %g mm "
+           "near the contact, refine %u)\n",
+           o->scene, o->spacing, o->grade > 0 ? o->grade : o->spacing, o->refine);
+    printf("** SIZE %zu %zu %zu\n", q->ntet, q->nn, 3 * (q->nn - nfixed));
+    write_outputs(q, p, out);
+    write_mesh(q);
+    write_set("FIXED", fixed, q->nn);
+    write_set("OUT", out, q->nn);
+    printf("*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=TISSUE\n*ELASTIC\n%.17g, %.17g\n"
+           "*SOLID SECTION, ELSET=ORGAN, MATERIAL=TISSUE\n",
+           p->material.young, p->material.poisson);
+    write_steps(p, weight, q->nn, area, o->solver);
+    free(weight);
+    free(fixed);
+    free(out);
+    return fflush(stdout) == 0 ? 0 : 1;
+}
+
+int main(int argc, char **argv)
+{
+    options o = {0};
+    char err[2048];
+    if (parse(argc, argv, &o) != 0) {
+        return usage();
+    }
+    tf_scene *sc = tf_scene_load(o.scene, NULL, 0, err, sizeof err);
+    if (sc == NULL) {
+        fprintf(stderr, "organ_deck: %s\n", err);
+        return 2;
+    }
+    const tf_problem *p = &sc->problem;
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m == NULL || p->n_contacts == 0 || p->contacts[0].patch.shape != TF_PATCH_SURFACE) {
+        fprintf(stderr, "organ_deck: %s: needs an organ with a contact site\n", o.scene);
+        tf_scene_free(sc);
+        return 2;
+    }
+    tf_surface s;
+    tf_tet10_mesh q;
+    tf_geom_msg msg;
+    tf_mesh_options mo = m->mesh;
+    mo.spacing = o.spacing;
+    mo.graded = o.grade > 0;
+    if (mo.graded) {
+        memcpy(mo.grade_at, m->tm.xyz + 3 * (size_t)p->contacts[0].node, sizeof mo.grade_at);
+        mo.grade_spacing = o.grade;
+        mo.grade_radius = 20;
+        mo.grade_ramp = 60;
+    }
+    int rc = surface_of(m, &s) != 0 ? 1 : tf_volume_mesh_tet10(&s, &mo, o.refine, &q, &msg);
+    if (rc != 0) {
+        fprintf(stderr, "organ_deck: %s\n", rc == 1 && s.xyz == NULL ? "out of memory" : msg.error);
+    } else {
+        rc = write_deck(&o, p, &q);
+        tf_tet10_mesh_free(&q);
+    }
+    tf_surface_free(&s);
+    tf_scene_free(sc);
+    return rc;
+}
