@@ -490,6 +490,10 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
  * (inside the box's x, y extent, borders included), depth in (0, height]. */
 static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
+    if (doc->cuts_count > 0 && tf_problem_mesh(s) != NULL) {
+        return sd_fail(is, "cuts", "a cut is swept down from a box's top face: an organ's mesh "
+                                   "takes none");
+    }
     const tf_box_geometry *b = &s->geometry.as.box;
     char p[128];
     s->cuts = calloc(doc->cuts_count + 1, sizeof *s->cuts);
