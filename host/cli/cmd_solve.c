@@ -186,14 +186,15 @@ static int pick_contact(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 
 /* The displacement field for ParaView: an organ on its tetrahedra, a box
  * on its grid. */
-static void write_vtu(FILE *fp, const tf_problem *p, const double *u)
+/* Returns 0, or -1 (out of memory for the cells a cut leaves). */
+static int write_vtu(FILE *fp, const tf_problem *p, const double *u)
 {
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     if (m != NULL) {
         tf_report_vtu_displacements_tets(fp, &p->cloud, m->tm.tet, m->tm.ntet, u);
-    } else {
-        tf_report_vtu_displacements(fp, &p->cloud, u);
+        return 0;
     }
+    return tf_report_vtu_displacements(fp, &p->cloud, u, p->cuts, p->n_cuts);
 }
 
 /* The files go to temporaries first, so a failure leaves none of them. */
@@ -214,12 +215,15 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     }
     if (rc == 0) {
         tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
-        if (a->vtk) {
-            write_vtu(f[1].fp, s, u);
+        if (a->vtk && write_vtu(f[1].fp, s, u) != 0) {
+            snprintf(err, sizeof err, "out of memory for the VTK cells");
+            rc = -1;
         }
         if (a->outputs) {
             tf_report_csv_outputs(f[2].fp, s, at_outputs);
         }
+    }
+    if (rc == 0) {
         rc = tf_afile_commit_all(files, n, err, sizeof err);
     } else {
         while (n > 0) { /* reverse order of opening (atomic_file.h) */
@@ -283,8 +287,9 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
     }
     for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
         vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
-        if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0) {
-            write_vtu(f[k++].fp, p, u + 3 * p->cloud.n * s);
+        if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0 &&
+            (rc = write_vtu(f[k++].fp, p, u + 3 * p->cloud.n * s)) != 0) {
+            snprintf(err, sizeof err, "out of memory for the VTK cells");
         }
     }
     if (rc == 0 && a->vtk && (rc = tf_afile_open(&f[k], a->vtk, err, sizeof err)) == 0) {

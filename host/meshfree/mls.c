@@ -29,6 +29,8 @@ double tf_mls_weight(double r, double *dw_r)
 
 int tf_mls_work_init(tf_mls_work *w, size_t cap)
 {
+    w->enrich = NULL;
+    w->enrich_ctx = NULL;
     w->cap = cap;
     w->w = malloc(cap * sizeof *w->w);
     w->dw = malloc(3 * cap * sizeof *w->dw);
@@ -65,13 +67,19 @@ static void moments(tf_mls_work *w, const double *xyz, const double *radius,
             t[a] = x[a] - xi[a];
             r2 += (t[a] / d[a]) * (t[a] / d[a]);
         }
-        double wi = tf_mls_weight(sqrt(r2), &dwr);
-        w->w[i] = wi;
+        double wi = tf_mls_weight(sqrt(r2), &dwr), e, de[3];
         p[0] = 1;
         for (int a = 0; a < 3; ++a) {
             w->dw[3 * i + a] = dwr * t[a] / (d[a] * d[a]);
             p[a + 1] = -t[a] / s;
         }
+        if (wi != 0 && w->enrich && w->enrich(w->enrich_ctx, idx[i], x, &e, de)) {
+            for (int a = 0; a < 3; ++a) { /* (w e)' = w' e + w e' */
+                w->dw[3 * i + a] = w->dw[3 * i + a] * e + wi * de[a];
+            }
+            wi *= e;
+        }
+        w->w[i] = wi;
         if (wi == 0) {
             continue; /* w and dw vanish together outside the domain (C2 spline) */
         }

@@ -40,8 +40,16 @@
  * (dw/dr)/r, which stays finite at r = 0. */
 double tf_mls_weight(double r, double *dw_r);
 
+/* An optional factor on node weights (cut.h's enrichment): returns 0 when
+ * node's weight is left alone at x, else 1 with the factor in *e and its
+ * gradient (per mm) in de. */
+typedef int (*tf_mls_enrich_fn)(const void *ctx, uint32_t node, const double x[3], double *e,
+                                double de[3]);
+
 /* Per-thread workspace for supports of up to cap nodes. */
 typedef struct tf_mls_work {
+    tf_mls_enrich_fn enrich; /* NULL: plain weights (tf_mls_work_init) */
+    const void *enrich_ctx;
     size_t cap;
     double *w;  /* cap weights at the current point */
     double *dw; /* 3 cap weight gradients, per mm */

@@ -23,6 +23,10 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
     sh->rcond_warn = o->rcond_warn;
     sh->support = o->support;
     sh->mls_radius = NULL;
+    sh->cuts.panel = NULL;
+    sh->cuts.n = 0;
+    sh->cut_node = NULL;
+    sh->cut_all = 0;
     sh->cell_radius = NULL;
     sh->cell_spacing = NULL;
     sh->scale = 0;
@@ -63,6 +67,9 @@ void tf_shape_free(tf_shape *sh)
     free(sh->cell_spacing);
     free(sh->xi);
     sh->mls_radius = sh->cell_radius = sh->cell_spacing = sh->xi = NULL;
+    tf_cut_set_free(&sh->cuts);
+    free(sh->cut_node);
+    sh->cut_node = NULL;
 }
 
 int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
@@ -108,6 +115,53 @@ int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned deg
     return 0;
 }
 
+/* EFG: the nodes whose domain of influence meets a panel (the seed's
+ * "distance less than the expansion parameter"; the ellipsoid is bounded
+ * by the ball of its largest semi-axis, so a few more nodes may be
+ * enriched than strictly needed, never fewer). */
+static int mark_cut_nodes(tf_shape *sh, char *err, size_t errlen)
+{
+    const tf_cloud *c = sh->cloud;
+    free(sh->cut_node);
+    sh->cut_node = NULL;
+    if (sh->mls_radius == NULL || sh->cuts.n == 0) {
+        return 0;
+    }
+    sh->cut_node = calloc(c->n, 1);
+    if (sh->cut_node == NULL) {
+        snprintf(err, errlen, "out of memory for the enriched nodes");
+        return -1;
+    }
+    for (size_t i = 0; i < c->n; ++i) {
+        const double *r = sh->mls_radius + 3 * i;
+        double reach = fmax(r[0], fmax(r[1], r[2]));
+        sh->cut_node[i] = tf_cut_set_distance(&sh->cuts, c->xyz + 3 * i) < reach;
+    }
+    return 0;
+}
+
+int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen)
+{
+    if (n > 0 && sh->cell_radius != NULL) {
+        snprintf(err, errlen, "cuts on an organ's tetrahedral cells are not supported");
+        return -1;
+    }
+    tf_cut_set_free(&sh->cuts);
+    if (tf_cut_set_build(&sh->cuts, cuts, n, err, errlen) != 0) {
+        return -1;
+    }
+    return mark_cut_nodes(sh, err, errlen);
+}
+
+size_t tf_shape_cut_nodes(const tf_shape *sh)
+{
+    size_t m = 0;
+    for (size_t i = 0; sh->cut_node && i < sh->cloud->n; ++i) {
+        m += sh->cut_node[i];
+    }
+    return m;
+}
+
 int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
 {
     if (sh->cell_radius != NULL) {
@@ -148,7 +202,7 @@ int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
         snprintf(err, errlen, "out of memory for the EFG neighbour grid");
         return -1;
     }
-    return 0;
+    return mark_cut_nodes(sh, err, errlen);
 }
 
 void tf_shape_stats_reset(tf_shape_stats *st)
@@ -158,6 +212,7 @@ void tf_shape_stats_reset(tf_shape_stats *st)
     st->worst_at[0] = st->worst_at[1] = st->worst_at[2] = 0;
     st->min_nodes = SIZE_MAX;
     st->max_nodes = 0;
+    st->points = st->cut_points = 0;
 }
 
 void tf_shape_work_init(tf_shape_work *w)
@@ -167,7 +222,9 @@ void tf_shape_work_init(tf_shape_work *w)
     w->rw.ipiv = w->rw.iwork = NULL;
     w->mw.cap = 0;
     w->mw.w = w->mw.dw = w->mw.p = NULL;
-    w->idx = NULL;
+    w->idx = w->sub = w->pos = NULL;
+    w->tmp = NULL;
+    w->cut = 0;
     w->phi = w->dphi = NULL;
     w->n = w->cap = w->pcap = 0;
     w->cell = SIZE_MAX;
@@ -180,6 +237,9 @@ void tf_shape_work_free(tf_shape_work *w)
     tf_rpim_work_free(&w->rw);
     tf_mls_work_free(&w->mw);
     free(w->idx);
+    free(w->sub);
+    free(w->pos);
+    free(w->tmp);
     free(w->phi);
     free(w->dphi);
     tf_shape_work_init(w);
@@ -194,9 +254,15 @@ static int grow(tf_shape_work *w, size_t need, size_t np)
         tf_rpim_work_free(&w->rw);
         tf_mls_work_free(&w->mw);
         free(w->idx);
+        free(w->sub);
+        free(w->pos);
+        free(w->tmp);
         w->idx = malloc(cap * sizeof *w->idx);
+        w->sub = malloc(cap * sizeof *w->sub);
+        w->pos = malloc(cap * sizeof *w->pos);
+        w->tmp = malloc(4 * cap * sizeof *w->tmp);
         w->cell = SIZE_MAX;
-        if (w->idx == NULL || tf_rpim_work_init(&w->rw, cap) != 0 ||
+        if (w->idx == NULL || w->sub == NULL || w->pos == NULL || w->tmp == NULL || tf_rpim_work_init(&w->rw, cap) != 0 ||
             tf_mls_work_init(&w->mw, cap) != 0) {
             w->cap = w->pcap = 0;
             snprintf(w->err, sizeof w->err, "out of memory for a support of %zu nodes", need);
@@ -305,6 +371,45 @@ static void record(const tf_shape *sh, tf_shape_stats *st, size_t systems, doubl
     st->max_nodes = n > st->max_nodes ? n : st->max_nodes;
 }
 
+/* EFG: does a node of the prepared support carry the enrichment? */
+static int efg_support_cut(const tf_shape *sh, const tf_shape_work *w)
+{
+    if (sh->cut_all) {
+        return 1;
+    }
+    for (size_t i = 0; sh->cut_node && i < w->n; ++i) {
+        if (sh->cut_node[w->idx[i]]) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* RPIM: can a segment from a point of the support's domain (x, or the cell)
+ * to one of its nodes cross a cut?  Every such segment lies in the box
+ * around the support's nodes and the domain, so no panel meeting that box
+ * means none crosses. */
+static int rpim_support_cut(const tf_shape *sh, const double x[3], size_t cell)
+{
+    if (sh->cut_all) {
+        return 1;
+    }
+    if (sh->cuts.n == 0) {
+        return 0;
+    }
+    double at[3], half[3] = {0, 0, 0}, lo[3], hi[3];
+    support_centre(sh, x, cell, at);
+    if (sh->centre == TF_SUPPORT_CELL) {
+        tf_cells_box(&sh->cells, cell, at, half);
+    }
+    for (int a = 0; a < 3; ++a) {
+        double r = fmax(half[a], sh->radius[a]);
+        lo[a] = at[a] - r;
+        hi[a] = at[a] + r;
+    }
+    return tf_cut_meets_box(&sh->cuts, lo, hi);
+}
+
 /* The support's scale s (its largest semi-axis, mm) and the multiquadric's
  * length alpha_c d_c at support centre at: from the local nodal spacing on a
  * graded cloud or with a relative d_c, else the fixed values (the seed's
@@ -348,6 +453,7 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
         if (tf_shape_support(sh, w, x, cell) != 0) {
             return -1;
         }
+        w->cut = efg_support_cut(sh, w);
         w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
         return 0;
     }
@@ -356,6 +462,11 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
     support_centre(sh, x, cell, at);
     if (tf_shape_support(sh, w, x, cell) != 0) {
         return -1;
+    }
+    w->cut = rpim_support_cut(sh, x, cell);
+    if (w->cut) { /* one system per point (evaluate_cut) */
+        w->cell = sh->centre == TF_SUPPORT_CELL ? cell : SIZE_MAX;
+        return 0;
     }
     local_scale(sh, at, cell, &s, &rp.shape);
     if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->idx, w->n, at, s, &rcond) != 0) {
@@ -394,13 +505,80 @@ static int evaluate_mls(const tf_shape *sh, tf_shape_work *w, const double *x, s
     return 0;
 }
 
+/* The enrichment hook of mls.h: ctx is the tf_shape. */
+static int enrich_node(const void *ctx, uint32_t node, const double x[3], double *e,
+                       double de[3])
+{
+    const tf_shape *sh = ctx;
+    if (sh->cut_node == NULL || !sh->cut_node[node]) {
+        return 0;
+    }
+    *e = tf_cut_enrich(&sh->cuts, sh->cloud->xyz + 3 * (size_t)node, x, de);
+    return 1;
+}
+
+/* RPIM with a cut: at each point, the system of the support nodes visible
+ * from it (the visibility criterion), scattered into the support's layout
+ * with phi = 0 for the hidden ones. */
+static int evaluate_cut(const tf_shape *sh, tf_shape_work *w, const double *x, size_t np,
+                        int deriv)
+{
+    size_t n = w->n;
+    for (size_t p = 0; p < np; ++p) {
+        const double *xp = x + 3 * p;
+        size_t m = 0;
+        double rcond, *phi = w->phi + p * n, *dphi = w->dphi + 3 * p * n;
+        for (size_t i = 0; i < n; ++i) {
+            if (tf_cut_visible(&sh->cuts, sh->cloud->xyz + 3 * (size_t)w->idx[i], xp)) {
+                w->sub[m] = w->idx[i];
+                w->pos[m++] = (uint32_t)i;
+            }
+        }
+        double sc;
+        tf_rpim rp = sh->rpim;
+        local_scale(sh, xp, w->cell, &sc, &rp.shape); /* (grid cells only: set_cuts) */
+        if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->sub, m, xp, sc, &rcond) != 0) {
+            snprintf(w->err, sizeof w->err,
+                     "the RPIM system of the %zu nodes visible across the cut from (%g, %g, "
+                     "%g) mm is singular: too few nodes on that side (raise solver.support)",
+                     m, xp[0], xp[1], xp[2]);
+            return -1;
+        }
+        record(sh, &w->st, 1, rcond, xp, m);
+        if (tf_rpim_eval(&w->rw, xp, 1, w->tmp, deriv ? w->tmp + m : NULL) != 0) {
+            snprintf(w->err, sizeof w->err, "out of memory for shape functions");
+            return -1;
+        }
+        for (size_t i = 0; i < n; ++i) {
+            phi[i] = 0;
+            for (int a = 0; deriv && a < 3; ++a) {
+                dphi[a * n + i] = 0;
+            }
+        }
+        for (size_t k = 0; k < m; ++k) {
+            phi[w->pos[k]] = w->tmp[k];
+            for (int a = 0; deriv && a < 3; ++a) {
+                dphi[a * n + w->pos[k]] = w->tmp[(1 + (size_t)a) * m + k];
+            }
+        }
+    }
+    return 0;
+}
+
 static int evaluate(const tf_shape *sh, tf_shape_work *w, const double *x, size_t np, int deriv)
 {
     if (np > w->pcap && grow(w, w->n, np) != 0) {
         return -1;
     }
+    w->st.points += np;
+    w->st.cut_points += w->cut ? np : 0;
     if (sh->mls_radius) {
+        w->mw.enrich = w->cut && sh->cut_node ? enrich_node : NULL;
+        w->mw.enrich_ctx = sh;
         return evaluate_mls(sh, w, x, np, deriv);
+    }
+    if (w->cut) {
+        return evaluate_cut(sh, w, x, np, deriv);
     }
     if (tf_rpim_eval(&w->rw, x, np, w->phi, deriv ? w->dphi : NULL) != 0) {
         snprintf(w->err, sizeof w->err, "out of memory for shape functions");
@@ -449,4 +627,6 @@ void tf_shape_stats_merge(tf_shape_stats *into, const tf_shape_stats *from)
     }
     into->min_nodes = from->min_nodes < into->min_nodes ? from->min_nodes : into->min_nodes;
     into->max_nodes = from->max_nodes > into->max_nodes ? from->max_nodes : into->max_nodes;
+    into->points += from->points;
+    into->cut_points += from->cut_points;
 }

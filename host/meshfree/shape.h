@@ -26,6 +26,13 @@
  * (tf_cloud_local_spacing; on an organ's tetrahedra the distance to the
  * TF_LOCAL_K-th nearest node of the cell's centroid), so that the basis
  * keeps its shape relative to the nodes when the grid is refined or graded.
+ *
+ * Cuts (tf_shape_set_cuts, cut.h): the shape functions at a point whose
+ * support meets a cut are recomputed — EFG with the weights of the
+ * enriched nodes multiplied by the enrichment of seed 001 §4, RPIM on the
+ * support nodes visible from the point (one local system per point
+ * there).  Everywhere else they are the uncut ones, bit for bit.  The
+ * support list (w->idx) stays the uncut one; a node cut off gets phi = 0.
  */
 #ifndef TF_SHAPE_H
 #define TF_SHAPE_H
@@ -33,6 +40,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "meshfree/cut.h"
 #include "meshfree/mls.h"
 #include "meshfree/neighbours.h"
 #include "meshfree/quadrature.h"
@@ -52,6 +60,9 @@ typedef struct tf_shape {
     double rcond_warn;
     double support;      /* alpha_s */
     double *mls_radius;  /* EFG: 3 n radii of influence, mm; NULL for RPIM */
+    tf_cut_set cuts;     /* no panel: uncut */
+    unsigned char *cut_node; /* EFG: 1 for a node whose domain meets a cut */
+    int cut_all;         /* treat every support as cut (tests, bench) */
     double *cell_radius; /* tetrahedral cells: each one's support radius, mm; NULL otherwise */
     double *cell_spacing; /* tetrahedral cells: each one's local spacing h, mm (d_c = spacings x h) */
 } tf_shape;
@@ -63,6 +74,7 @@ typedef struct tf_shape_stats {
     double min_rcond;
     double worst_at[3]; /* where min_rcond occurred */
     size_t min_nodes, max_nodes;
+    size_t points, cut_points; /* shape functions evaluated, of which recomputed for a cut */
 } tf_shape_stats;
 
 typedef struct tf_shape_work {
@@ -74,6 +86,10 @@ typedef struct tf_shape_work {
     double *phi;     /* phi[p n + i] at point p */
     double *dphi;    /* dphi[(3 p + a) n + i] */
     size_t cell;     /* cell whose system is factorised (cell mode), or SIZE_MAX */
+    int cut;         /* the prepared support meets a cut */
+    uint32_t *sub;   /* RPIM cut: the visible nodes (cap) */
+    uint32_t *pos;   /* and their places in idx (cap) */
+    double *tmp;     /* 4 cap: their phi, dphi at one point */
     tf_shape_stats st;
     char err[256];
 } tf_shape_work;
@@ -114,6 +130,13 @@ int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned deg
  * radii of influence alpha_s x their local spacing (tf_mls_radii).
  * Returns 0, or -1 with a message in err. */
 int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen);
+
+/* Cuts n cuts into sh (after tf_shape_use_efg for EFG).  Returns 0, or -1
+ * with a message (a bad cut, out of memory). */
+int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen);
+
+/* How many nodes are enriched (EFG), for reports. */
+size_t tf_shape_cut_nodes(const tf_shape *sh);
 
 void tf_shape_work_init(tf_shape_work *w);
 void tf_shape_work_free(tf_shape_work *w);

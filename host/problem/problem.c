@@ -30,6 +30,7 @@ void tf_problem_release(tf_problem *p)
     }
     free(p->outputs.nodes);
     free(p->outputs.points);
+    free(p->cuts);
     tf_history_release(&p->history);
     memset(p, 0, sizeof *p);
 }

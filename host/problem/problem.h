@@ -176,6 +176,16 @@ typedef struct tf_outputs {
     double *points;  /* NULL, or 3 n_nodes coordinates, mm */
 } tf_outputs;
 
+#define TF_CUT_MAX_POINTS 16
+
+/* An incision (meshfree/cut.h): a polyline of n >= 2 points (x, y) on the
+ * top surface z = top, swept down by depth. */
+typedef struct tf_cut {
+    size_t n;
+    double xy[TF_CUT_MAX_POINTS][2]; /* mm */
+    double top, depth;                /* mm */
+} tf_cut;
+
 /* Essential conditions: nodal values removed (RPIM), the seed's penalty
  * (RPIM: eq 28 on nodal values; EFG: the weak form of seed 001 eqs 19, 23),
  * or Nitsche's method (solvers/boundary.h). */
@@ -280,6 +290,8 @@ typedef struct tf_problem {
     size_t n_contacts;
     tf_envelope envelope;
     tf_outputs outputs;
+    tf_cut *cuts;       /* incisions; a solver without TF_SOLVER_CUTS refuses them */
+    size_t n_cuts;
     tf_solver_opts solver;
     tf_analytic analytic;
     tf_history history;   /* how the loads change in time (present: 0 when not given) */

@@ -3,6 +3,8 @@
  */
 #include "report/displacement_out.h"
 
+#include <stdlib.h>
+
 void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
                                  const double *u)
 {
@@ -79,21 +81,56 @@ static void vtu_cells_end(FILE *fp, size_t nc, unsigned corners, unsigned type)
     fprintf(fp, "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 }
 
-void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u)
+/* 1 when a cut separates two corners of the cell. */
+static int cut_through(const tf_cloud *c, const tf_cut_set *cuts, const size_t v[8])
 {
-    size_t nc = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
-    vtu_points(fp, c, nc, u);
-    for (unsigned k = 0; k + 1 < c->grid[2]; ++k) {
-        for (unsigned j = 0; j + 1 < c->grid[1]; ++j) {
-            for (unsigned i = 0; i + 1 < c->grid[0]; ++i) {
-                size_t v[8];
-                hex(c, i, j, k, v);
-                fprintf(fp, "%zu %zu %zu %zu %zu %zu %zu %zu\n", v[0], v[1], v[2], v[3], v[4],
-                        v[5], v[6], v[7]);
+    for (int p = 0; p < 8; ++p) {
+        for (int q = p + 1; q < 8; ++q) {
+            if (!tf_cut_visible(cuts, c->xyz + 3 * v[p], c->xyz + 3 * v[q])) {
+                return 1;
             }
         }
     }
+    return 0;
+}
+
+/* The cells kept, as corner lists (8 per cell); their count. */
+static size_t kept_cells(const tf_cloud *c, const tf_cut_set *cuts, size_t *conn)
+{
+    size_t nc = 0;
+    for (unsigned k = 0; k + 1 < c->grid[2]; ++k) {
+        for (unsigned j = 0; j + 1 < c->grid[1]; ++j) {
+            for (unsigned i = 0; i + 1 < c->grid[0]; ++i) {
+                hex(c, i, j, k, conn + 8 * nc);
+                nc += !cut_through(c, cuts, conn + 8 * nc);
+            }
+        }
+    }
+    return nc;
+}
+
+int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
+                                size_t n_cuts)
+{
+    size_t all = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
+    size_t *conn = malloc(8 * all * sizeof *conn);
+    tf_cut_set set;
+    char err[128];
+    if (conn == NULL || tf_cut_set_build(&set, cuts, n_cuts, err, sizeof err) != 0) {
+        free(conn);
+        return -1;
+    }
+    size_t nc = kept_cells(c, &set, conn);
+    tf_cut_set_free(&set);
+    vtu_points(fp, c, nc, u);
+    for (size_t q = 0; q < nc; ++q) {
+        const size_t *v = conn + 8 * q;
+        fprintf(fp, "%zu %zu %zu %zu %zu %zu %zu %zu\n", v[0], v[1], v[2], v[3], v[4], v[5], v[6],
+                v[7]);
+    }
+    free(conn);
     vtu_cells_end(fp, nc, 8, 12);
+    return 0;
 }
 
 void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,

@@ -2,7 +2,9 @@
  * displacement_out.h — nodal displacements to files: CSV (the format the
  * project compares with CalculiX: header node,x,y,z,ux,uy,uz, mm, %.17g)
  * and VTK XML unstructured grids for ParaView (hexahedra of the node grid,
- * or an organ's tetrahedra; point data "displacement" and "node").
+ * or an organ's tetrahedra; point data "displacement" and "node").  The
+ * grid cells a cut passes through are left out, so the cut's faces show as
+ * a gap whose two lips are the faces of the cells beside it.
  */
 #ifndef TF_DISPLACEMENT_OUT_H
 #define TF_DISPLACEMENT_OUT_H
@@ -11,6 +13,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "meshfree/cut.h"
 #include "problem/problem.h"
 
 /* Rows for the n nodes idx[] (all nodes when idx is NULL, n ignored). */
@@ -22,8 +25,10 @@ void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *id
  * the point number 1, 2, ... for outputs at points. */
 void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v);
 
-/* The whole cloud as a VTU file. */
-void tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u);
+/* The whole cloud as a VTU file, without the cells the n cuts pass
+ * through.  Returns 0, or -1 (out of memory: nothing written). */
+int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
+                                size_t n_cuts);
 
 /* An organ's cloud as a VTU file: its tetrahedra (4 node indices each). */
 void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet,

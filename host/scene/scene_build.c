@@ -487,6 +487,53 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
     return 0;
 }
 
+/* Incisions: each segment of non-zero length, every point on the top face
+ * (inside the box's x, y extent, borders included), depth in (0, height]. */
+static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
+{
+    if (doc->cuts_count > 0 && tf_problem_mesh(s) != NULL) {
+        return sd_fail(is, "cuts", "a cut is swept down from a box's top face: an organ's mesh "
+                                   "takes none");
+    }
+    const tf_box_geometry *b = &s->geometry.as.box;
+    char p[128];
+    s->cuts = calloc(doc->cuts_count + 1, sizeof *s->cuts);
+    if (s->cuts == NULL) {
+        return sd_fail(is, "cuts", "out of memory");
+    }
+    s->n_cuts = doc->cuts_count;
+    for (size_t k = 0; k < doc->cuts_count; ++k) {
+        const sd_cut *d = &doc->cuts[k];
+        tf_cut *c = &s->cuts[k];
+        double h = b->max[2] - b->min[2];
+        if (!(d->depth > 0 && d->depth <= h)) {
+            return sd_fail(is, at(p, sizeof p, "cuts", k, "depth"),
+                        "the depth must lie in (0, %g] mm, the block's height (got %g)", h,
+                        d->depth);
+        }
+        c->n = d->path_count;
+        c->top = b->max[2];
+        c->depth = d->depth;
+        for (size_t i = 0; i < c->n; ++i) {
+            for (int a = 0; a < 2; ++a) {
+                c->xy[i][a] = d->path[i].v[a];
+                if (!(c->xy[i][a] >= b->min[a] && c->xy[i][a] <= b->max[a])) {
+                    snprintf(p, sizeof p, "cuts.%zu.path.%zu", k, i);
+                    return sd_fail(is, p,
+                                "point (%g, %g) lies outside the top face [%g, %g] x [%g, %g] mm",
+                                d->path[i].v[0], d->path[i].v[1], b->min[0], b->max[0],
+                                b->min[1], b->max[1]);
+                }
+            }
+            if (i > 0 && c->xy[i][0] == c->xy[i - 1][0] && c->xy[i][1] == c->xy[i - 1][1]) {
+                snprintf(p, sizeof p, "cuts.%zu.path.%zu", k, i);
+                return sd_fail(is, p, "a segment of zero length (the point repeats the one before)");
+            }
+        }
+    }
+    return 0;
+}
+
 static int envelope(const sd_envelope *e, tf_problem *s, sd_issue *is)
 {
     s->envelope.radius = e && e->radius ? *e->radius : 1.0;
@@ -822,7 +869,8 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (geometry(doc, s, is) != 0 || material(&doc->material, s, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
-        envelope(doc->envelope, s, is) != 0 || solver(doc->solver, s, is) != 0 ||
+        envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||
+        solver(doc->solver, s, is) != 0 ||
         sd_history_build(doc->history, s, is) != 0 || fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }

@@ -219,6 +219,18 @@ static const cyaml_schema_field_t outputs_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_value_t xy_entry = {
+    CYAML_VALUE_SEQUENCE_FIXED(CYAML_FLAG_DEFAULT, double, &real, 2)};
+
+static const cyaml_schema_field_t cut_fields[] = {
+    CYAML_FIELD_SEQUENCE("path", CYAML_FLAG_POINTER, sd_cut, path, &xy_entry, 2,
+                         TF_CUT_MAX_POINTS),
+    CYAML_FIELD_FLOAT("depth", CYAML_FLAG_DEFAULT, sd_cut, depth),
+    CYAML_FIELD_END,
+};
+static const cyaml_schema_value_t cut_entry = {
+    CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_cut, cut_fields)};
+
 static const cyaml_schema_field_t rbf_fields[] = {
     CYAML_FIELD_FLOAT_PTR("alpha_c", OPT, sd_rbf, alpha_c),
     CYAML_FIELD_FLOAT_PTR("d_c", OPT, sd_rbf, d_c),
@@ -335,6 +347,7 @@ static const cyaml_schema_field_t scene_fields[] = {
                          CYAML_UNLIMITED),
     CYAML_FIELD_MAPPING_PTR("envelope", OPT, sd_scene, envelope, envelope_fields),
     CYAML_FIELD_MAPPING("outputs", CYAML_FLAG_DEFAULT, sd_scene, outputs, outputs_fields),
+    CYAML_FIELD_SEQUENCE("cuts", OPT_PTR, sd_scene, cuts, &cut_entry, 0, CYAML_UNLIMITED),
     CYAML_FIELD_MAPPING_PTR("solver", OPT, sd_scene, solver, solver_fields),
     CYAML_FIELD_MAPPING_PTR("reference", OPT, sd_scene, reference, reference_fields),
     CYAML_FIELD_MAPPING_PTR("history", OPT, sd_scene, history, history_fields),

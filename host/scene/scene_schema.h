@@ -200,6 +200,16 @@ typedef struct sd_reference {
     double *gradient; /* 9 */
 } sd_reference;
 
+typedef struct sd_xy {
+    double v[2];
+} sd_xy;
+
+typedef struct sd_cut {
+    sd_xy *path;       /* 2 to TF_CUT_MAX_POINTS points (x, y) on the top surface */
+    unsigned path_count;
+    double depth;
+} sd_cut;
+
 typedef struct sd_segment {
     int kind;         /* tf_segment_kind */
     double *to, *time, *amplitude, *period;
@@ -235,6 +245,8 @@ typedef struct sd_scene {
     unsigned contact_count;
     sd_envelope *envelope;
     sd_outputs outputs;
+    sd_cut *cuts;
+    unsigned cuts_count;
     sd_solver *solver;
     sd_reference *reference;
     sd_history *history;

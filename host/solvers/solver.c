@@ -43,6 +43,15 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
         s->opts = *o;
     }
     s->ctx = ctx;
+    /* The implementation's capabilities, not the type's: rpim-galerkin and
+     * efg-galerkin hand a nonlinear law over to the Newton solver, which
+     * has no cuts. */
+    if (p->n_cuts > 0 && !(s->ops->caps(s) & TF_SOLVER_CUTS)) {
+        tf_fail(ctx, "%s: solver %s (%s) does not support cuts (remove cuts: or choose a solver "
+                "with the CUTS capability)", p->source, s->ops->name, s->ops->summary);
+        s->ops->destroy(s);
+        return NULL;
+    }
     if (s->info.t_setup == 0) {
         s->info.t_setup = omp_get_wtime() - t0;
     }

@@ -227,6 +227,12 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     if (g->efg && tf_shape_use_efg(&g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
+    /* After tf_shape_use_efg (the enriched nodes are the MLS domains that
+     * meet a cut) and before the boundary terms, which evaluate the same
+     * shape functions on the fixed faces. */
+    if (tf_shape_set_cuts(&g->sh, p->cuts, p->n_cuts, ctx->err, sizeof ctx->err) != 0) {
+        return -1;
+    }
     if (g->weak && tf_boundary_build(&g->bnd, p, &g->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
@@ -322,7 +328,8 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *opts, tf_ctx
 
 static unsigned caps(const tf_solver *s)
 {
-    return TF_SOLVER_AFFINE | (tf_problem_unloaded(s->problem) ? TF_SOLVER_LINEAR : 0u);
+    return TF_SOLVER_AFFINE | TF_SOLVER_CUTS |
+           (tf_problem_unloaded(s->problem) ? TF_SOLVER_LINEAR : 0u);
 }
 
 /* Full load vector of one case: the problem's loads + the contact force. */
@@ -447,6 +454,12 @@ static void report(const tf_solver *s)
     tf_info(s->ctx,
             "solver: %zu local systems of %zu to %zu nodes, smallest reciprocal condition %.2g",
             in->st.systems, in->st.min_nodes, in->st.max_nodes, in->st.min_rcond);
+    if (s->problem->n_cuts > 0) {
+        tf_info(s->ctx,
+                "solver: %zu cut(s): shape functions recomputed at %zu of %zu points whose "
+                "support meets a cut",
+                s->problem->n_cuts, in->st.cut_points, in->st.points);
+    }
     if (in->st.ill > 0) {
         tf_warn(s->ctx,
                 "%s: %zu of %zu local RPIM systems are ill-conditioned (reciprocal condition "

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "meshfree/shape.h"
+#include "reproduction.h"
 #include "scene/scene.h"
 
 #define PATCH "tests/solver/patch.yaml"
@@ -65,31 +66,8 @@ static void efg_close(efg *e)
 static double reproduction_error(const efg *e, size_t p, const double x[3])
 {
     size_t n = e->w.n;
-    const double *phi = e->w.phi + p * n, *dphi = e->w.dphi + 3 * p * n;
-    double s = -1, sx[3] = {-x[0], -x[1], -x[2]}, ds[3] = {0, 0, 0}, dsx[9], err = 0;
-    for (int k = 0; k < 9; ++k) {
-        dsx[k] = -(k % 4 == 0);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        const double *xi = e->sh.cloud->xyz + 3 * (size_t)e->w.idx[i];
-        s += phi[i];
-        for (int a = 0; a < 3; ++a) {
-            sx[a] += phi[i] * xi[a];
-            ds[a] += dphi[a * n + i];
-            for (int b = 0; b < 3; ++b) {
-                dsx[3 * a + b] += dphi[a * n + i] * xi[b];
-            }
-        }
-    }
-    const double L = 10; /* the patch cloud's box edge, mm */
-    err = fabs(s);
-    for (int a = 0; a < 3; ++a) {
-        err = fmax(err, fmax(fabs(sx[a]) / L, fabs(ds[a]) * L));
-    }
-    for (int k = 0; k < 9; ++k) {
-        err = fmax(err, fabs(dsx[k]));
-    }
-    return err;
+    return tf_test_reproduction_error(e->sh.cloud->xyz, e->w.idx, n, e->w.phi + p * n,
+                                      e->w.dphi + 3 * p * n, x, 10); /* the patch cloud's box edge, mm */
 }
 
 static void reproduces_linear_fields_through_shape_c(void **state)

@@ -179,6 +179,7 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
     expect_error(SETS("outputs={select: near-contact}"), PARTS("outputs", "radius"));
     expect_error(SETS("geometry.grid=2,2,2"), PARTS("geometry", "belong to a box"));
     expect_error(SETS("contact.0.node=1"), PARTS("contact.0", "site on an organ"));
+    expect_error(SETS("cuts=[{path: [[0, 0], [1, 1]], depth: 1}]"), PARTS("cuts", "organ"));
     /* the line of the offending key: geometry.surface.file is on line 3 */
     expect_text_error("name: t\ngeometry:\n  surface: {file: open.obj}\n  spacing: 4\n"
                       "material: {E: 0.01, nu: 0.3}\nfixed:\n  - sphere: {centre: [0, 0, -10], "

@@ -210,6 +210,15 @@ static void each_bad_scene_has_its_own_message(void **state)
                  (const char *[]){"t.yaml:2:", "fit.heldout_histories", NULL});
     expect_error(1, "name: t\nfit: {history_ticks: 9}\n", (const char *[]){"t.yaml:2:", "fit.history_ticks", NULL});
     expect_error(3, "  box: {min: [0, 0, 0], max: [10, 10, 2]\n", (const char *[]){"t.yaml:", NULL});
+    /* cuts: a point off the top face, a zero-length segment, a bad depth */
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [12, 1]], depth: 1}\n",
+                 (const char *[]){"t.yaml:3:", "cuts.0.path.1", "outside the top face", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4], [4, 4]], depth: 1}\n",
+                 (const char *[]){"t.yaml:3:", "cuts.0.path.2", "zero length", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 3}\n",
+                 (const char *[]){"t.yaml:3:", "cuts.0.depth", "(0, 2]", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1]], depth: 1}\n",
+                 (const char *[]){"t.yaml:3:", "cuts.0.path", NULL});
 }
 
 static void override_errors_name_the_override(void **state)

@@ -174,7 +174,8 @@ static void capabilities_follow_the_problem(void **state)
 {
     (void)state;
     run *b = solve(NULL, 0, unit_forces, 1);
-    assert_int_equal(tf_solver_caps_of(b->solver), TF_SOLVER_AFFINE | TF_SOLVER_LINEAR);
+    assert_int_equal(tf_solver_caps_of(b->solver),
+                     TF_SOLVER_AFFINE | TF_SOLVER_LINEAR | TF_SOLVER_CUTS);
     assert_string_equal(tf_solver_name(b->solver), "rpim-galerkin");
     assert_non_null(tf_galerkin_info_of(b->solver));
     assert_true(tf_galerkin_info_of(b->solver)->nnz_k > 0);
@@ -185,14 +186,46 @@ static void capabilities_follow_the_problem(void **state)
     assert_non_null(strstr(b->ctx.err, "rpim-galerkin"));
     tf_scene_run_free(b);
     run *c = solve_on("coeffs/cantilever.yaml", NULL, 0, 0, NULL, 1);
-    assert_int_equal(tf_solver_caps_of(c->solver), TF_SOLVER_AFFINE);
+    assert_int_equal(tf_solver_caps_of(c->solver), TF_SOLVER_AFFINE | TF_SOLVER_CUTS);
     tf_scene_run_free(c);
+}
+
+static unsigned no_cuts(const tf_solver *s)
+{
+    return tf_galerkin_ops.caps(s) & ~(unsigned)TF_SOLVER_CUTS;
+}
+
+/* A problem with a cut is refused by a solver without the CUTS capability
+ * (here rpim-galerkin with that bit taken away, and rpim-galerkin handing a
+ * nonlinear law to the Newton solver, which has no cuts), with the solver
+ * named. */
+static void cuts_need_the_capability(void **state)
+{
+    (void)state;
+    run *b = solve(NULL, 0, unit_forces, 1);
+    tf_cut cut = {.n = 2, .xy = {{10, 20}, {30, 20}}, .top = 6, .depth = 3};
+    tf_problem p = *b->p;
+    p.cuts = &cut;
+    p.n_cuts = 1;
+    tf_solver_ops variant = tf_galerkin_ops;
+    variant.caps = no_cuts;
+    assert_null(tf_solver_create_as(&variant, &p, NULL, &b->ctx));
+    assert_non_null(strstr(b->ctx.err, "does not support cuts"));
+    tf_solver *s = tf_solver_create_as(&tf_galerkin_ops, &p, NULL, &b->ctx);
+    assert_non_null(s);
+    tf_solver_destroy(s);
+    p.material.law = TF_LAW_NEOHOOKE;
+    assert_null(tf_solver_create_as(&tf_galerkin_ops, &p, NULL, &b->ctx));
+    assert_non_null(strstr(b->ctx.err, "does not support cuts"));
+    assert_non_null(strstr(b->ctx.err, "Newton"));
+    tf_scene_run_free(b);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reactions_balance_a_point_force),
+        cmocka_unit_test(cuts_need_the_capability),
         cmocka_unit_test(penalty_agrees_with_elimination),
         cmocka_unit_test(many_cases_through_one_factorisation),
         cmocka_unit_test(same_bits_with_openmps_default),

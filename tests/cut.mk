@@ -1,0 +1,63 @@
+# cut.mk — cutting by enrichment (issue 17, docs/cutting.md).
+#
+#   check-cut        (make check) a cut along the load leaves the solve alone
+#                    away from it (acceptance 2: measured and printed), the
+#                    slit block's lips open, and the short real version of
+#                    the validation: CalculiX at its coarsest level and the
+#                    meshless solve at its coarsest grid reproduce the
+#                    committed data
+#   cut-validation   crack-opening displacement of the slit block against
+#                    CalculiX (crack by duplicated nodes) at the levels
+#                    below; rewrites tests/cut/data, docs/cutting-cod.png,
+#                    docs/cutting-slit.png and build/cut/table.md (about
+#                    20 minutes; not part of make check)
+
+CUT_TOOL := $(T)/cut/cut_tool
+SLIT_DECK := $(B)/calculix/slit_deck
+CUT_CCX_LEVELS := 4 8 16
+CUT_GRIDS := 16,8,8 24,12,12 32,16,16
+CUT_DATA := tests/cut/data
+
+.PHONY: check-cut cut-validation cut-pictures
+CHECKS += check-cut
+
+$(T)/cut/%: tests/cut/%.c $(B)/native/libtissuefit-host.a | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(B)/native/libtissuefit-host.a $(HOST_LIBS) -o $@
+
+$(SLIT_DECK): tests/calculix/slit_deck.c | deps-build
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 $< -o $@
+
+check-cut: $(CUT_TOOL) $(SLIT_DECK) | deps-calculix
+	@echo "== cuts: enriched vs unenriched far from the cut; the slit opens; CalculiX and meshless data reproduce =="
+	@$(CUT_TOOL) far tests/cut/slit_parallel.yaml
+	@tests/cut/check_short.sh $(SLIT_DECK) $(CUT_TOOL) $(B)/cut-check $(CUT_DATA)
+
+cut-validation: $(CUT_TOOL) $(SLIT_DECK) | deps-calculix deps-validation
+	$(Q)CCX_LEVELS="$(CUT_CCX_LEVELS)" GRIDS="$(CUT_GRIDS)" \
+	  tests/cut/run_validation.sh $(SLIT_DECK) $(CUT_TOOL) $(B)/cut $(CUT_DATA)
+	@$(MAKE) --no-print-directory cut-pictures
+
+# Table and pictures from the committed data and one solve of the slit.
+cut-pictures: $(B)/bin/tissuefit | deps-validation
+	@mkdir -p $(B)/cut
+	$(Q)tests/cut/table.sh $(CUT_DATA) > $(B)/cut/table.md
+	$(Q)gnuplot -e "data='$(CUT_DATA)'; ccx='$(CUT_CCX_LEVELS)'; \
+	  grids='$(foreach g,$(CUT_GRIDS),$(firstword $(subst $(cx_comma), ,$(g))))'; \
+	  out='docs/cutting-cod.png'" tests/cut/cod.gp
+	$(Q)$(B)/bin/tissuefit -q solve tests/cut/slit.yaml -o $(B)/cut/slit.csv --vtk $(B)/cut/slit.vtu
+	$(Q)y=$$(awk -F, 'NR > 1 { print $$3 }' $(B)/cut/slit.csv | sort -gu | sed -n 4p); \
+	  awk -F, -v y=$$y -v scale=1 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/section.dat; \
+	  awk -F, -v y=$$y -v scale=0 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/plain.dat
+	$(Q)gnuplot -e "section='$(B)/cut/section.dat'; plain='$(B)/cut/plain.dat'; out='docs/cutting-slit.png'; scale=1" \
+	  tests/cut/slit_picture.gp
+	@echo "cut: $(B)/cut/table.md, docs/cutting-cod.png, docs/cutting-slit.png, $(B)/cut/slit.vtu (ParaView)"
+
+.PHONY: bench-cut
+BENCHES += bench-cut
+bench-cut: $(T)/cut/bench_cut
+	@echo "== cuts: shape functions recomputed only where a support meets the cut =="
+	@$(T)/cut/bench_cut tests/cut/slit.yaml geometry.grid=32,16,16 solver.cells=32,16,16

@@ -1,0 +1,204 @@
+/*
+ * cut_tool.c — measurements of cut solves (docs/cutting.md).
+ *
+ *   cut_tool cod SCENE [KEY=VALUE]...
+ *       solves the scene's loads and prints the crack-opening displacement
+ *       along the depth of its first cut, at the middle of the first
+ *       segment: CSV "z,cod" with cod = (u(x + e n) - u(x - e n)) . n,
+ *       e = 1e-6 mm, n the cut's normal, at 21 depths from the top down to
+ *       the front; then a comment line with the nodes, the points whose
+ *       shape functions were recomputed and the times.
+ *   cut_tool far SCENE [KEY=VALUE]...
+ *       solves the scene with its cuts and without them, and compares the
+ *       nodal displacements at the nodes outside every affected support
+ *       (the support of every background cell whose support meets a cut,
+ *       shape.c): prints the largest difference relative to the largest
+ *       displacement, there and over all nodes, and whether the far one
+ *       meets acceptance 2 of issue 17 (1e-3); exit 1 when it exceeds
+ *       FAR_BOUND (a regression bound above the measured value).
+ *
+ * Exit 0 ok, 1 failure or a bound exceeded, 2 usage.
+ */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/context.h"
+#include "meshfree/cut.h"
+#include "scene/scene.h"
+#include "solvers/galerkin/galerkin.h"
+#include "solvers/solver.h"
+
+#define STEPS 20
+#define FAR_ACCEPT 1e-3 /* issue 17, acceptance 2 */
+#define FAR_BOUND 1e-2  /* this check's bound: measured 6.7e-3 at 16 x 8 x 8 nodes */
+
+static tf_solver *solve(const tf_problem *p, tf_ctx *ctx, double *u, double *t)
+{
+    double t0 = omp_get_wtime();
+    tf_solver *s = tf_solver_create(p, NULL, ctx);
+    if (s == NULL || tf_solver_solve(s, -1, NULL, 1, NULL, u) != 0) {
+        fprintf(stderr, "cut_tool: %s\n", ctx->err);
+        tf_solver_destroy(s);
+        return NULL;
+    }
+    *t = omp_get_wtime() - t0;
+    return s;
+}
+
+static int cod(const tf_problem *p, tf_ctx *ctx)
+{
+    if (p->n_cuts == 0) {
+        fprintf(stderr, "cut_tool: %s has no cut\n", p->source);
+        return 2;
+    }
+    double *u = malloc(3 * p->cloud.n * sizeof *u), t;
+    tf_solver *s = u ? solve(p, ctx, u, &t) : NULL;
+    if (s == NULL) {
+        free(u);
+        return 1;
+    }
+    const tf_cut *c = &p->cuts[0];
+    double dx = c->xy[1][0] - c->xy[0][0], dy = c->xy[1][1] - c->xy[0][1], len = hypot(dx, dy);
+    double n[2] = {dy / len, -dx / len}, e = 1e-6, x[6 * (STEPS + 1)], uh[6 * (STEPS + 1)],
+           grad[18 * (STEPS + 1)];
+    for (int k = 0; k <= STEPS; ++k) {
+        double z = c->top - c->depth * k / STEPS;
+        for (int side = 0; side < 2; ++side) {
+            double *q = x + 3 * (2 * k + side), sgn = side ? 1 : -1;
+            q[0] = 0.5 * (c->xy[0][0] + c->xy[1][0]) + sgn * e * n[0];
+            q[1] = 0.5 * (c->xy[0][1] + c->xy[1][1]) + sgn * e * n[1];
+            q[2] = z;
+        }
+    }
+    char err[256];
+    int rc = 0;
+    if (tf_solver_field(s, u, x, 2 * (STEPS + 1), uh, grad, err, sizeof err) != 0) {
+        fprintf(stderr, "cut_tool: %s\n", err);
+        rc = 1;
+    }
+    printf("z,cod\n");
+    for (int k = 0; rc == 0 && k <= STEPS; ++k) {
+        const double *lo = uh + 6 * k, *hi = lo + 3;
+        printf("%.6f,%.10g\n", x[6 * k + 2], (hi[0] - lo[0]) * n[0] + (hi[1] - lo[1]) * n[1]);
+    }
+    const tf_galerkin_info *in = tf_galerkin_info_of(s);
+    if (rc == 0 && in != NULL) {
+        printf("# nodes %zu, points %zu, recomputed for the cut %zu, shape functions %.3f s, "
+               "setup + solve %.3f s\n",
+               p->cloud.n, in->st.points, in->st.cut_points, in->t_shape, t);
+    }
+    tf_solver_destroy(s);
+    free(u);
+    return rc;
+}
+
+/* The nodes outside every affected support: for each background cell whose
+ * support box (shape.c, RPIM) meets a cut, every node in that box is in an
+ * affected support. */
+static unsigned char *far_nodes(const tf_problem *p, const tf_shape *sh, size_t *count)
+{
+    unsigned char *far = malloc(p->cloud.n);
+    if (far == NULL) {
+        return NULL;
+    }
+    memset(far, 1, p->cloud.n);
+    for (size_t c = 0; c < tf_cells_count(&sh->cells); ++c) {
+        double at[3], half[3], lo[3], hi[3];
+        tf_cells_box(&sh->cells, c, at, half);
+        for (int a = 0; a < 3; ++a) {
+            double r = fmax(half[a], sh->radius[a]);
+            lo[a] = at[a] - r;
+            hi[a] = at[a] + r;
+        }
+        if (!tf_cut_meets_box(&sh->cuts, lo, hi)) {
+            continue;
+        }
+        for (size_t i = 0; i < p->cloud.n; ++i) {
+            const double *x = p->cloud.xyz + 3 * i;
+            int in = 1;
+            for (int a = 0; a < 3; ++a) {
+                in = in && x[a] >= lo[a] && x[a] <= hi[a];
+            }
+            far[i] = far[i] && !in;
+        }
+    }
+    *count = 0;
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        *count += far[i];
+    }
+    return far;
+}
+
+static int far(tf_problem *p, tf_ctx *ctx)
+{
+    size_t n3 = 3 * p->cloud.n, nfar = 0, ncuts = p->n_cuts;
+    double *uc = malloc(n3 * sizeof *uc), *u0 = malloc(n3 * sizeof *u0), tc, t0;
+    tf_solver *sc = uc && u0 ? solve(p, ctx, uc, &tc) : NULL;
+    p->n_cuts = 0;
+    tf_solver *s0 = sc ? solve(p, ctx, u0, &t0) : NULL;
+    p->n_cuts = ncuts;
+    unsigned char *mask = s0 ? far_nodes(p, tf_galerkin_shape(sc), &nfar) : NULL;
+    if (mask == NULL) {
+        tf_solver_destroy(sc);
+        tf_solver_destroy(s0);
+        free(uc);
+        free(u0);
+        return 1;
+    }
+    double umax = 0, dfar = 0, dall = 0;
+    size_t at = 0;
+    for (size_t k = 0; k < n3; ++k) {
+        umax = fmax(umax, fabs(u0[k]));
+    }
+    for (size_t k = 0; k < n3; ++k) {
+        double d = fabs(uc[k] - u0[k]) / umax;
+        dall = fmax(dall, d);
+        if (mask[k / 3] && d > dfar) {
+            dfar = d;
+            at = k / 3;
+        }
+    }
+    const tf_galerkin_info *in = tf_galerkin_info_of(sc);
+    printf("%s: %zu nodes, %zu outside every affected support; cut vs uncut, largest "
+           "difference / largest displacement: %.2e there (acceptance 2 asks %.0e: %s; check bound "
+           "%.0e), %.2e over all nodes; "
+           "shape functions recomputed at %zu of %zu points; the far one at node %zu (%g, %g, "
+           "%g) mm\n",
+           p->name, p->cloud.n, nfar, dfar, FAR_ACCEPT, dfar <= FAR_ACCEPT ? "met" : "not met",
+           FAR_BOUND, dall, in->st.cut_points, in->st.points,
+           at + 1, p->cloud.xyz[3 * at], p->cloud.xyz[3 * at + 1], p->cloud.xyz[3 * at + 2]);
+    int rc = nfar > 0 && dfar <= FAR_BOUND ? 0 : 1;
+    free(mask);
+    tf_solver_destroy(sc);
+    tf_solver_destroy(s0);
+    free(uc);
+    free(u0);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || argc > 18 || (strcmp(argv[1], "cod") != 0 && strcmp(argv[1], "far") != 0)) {
+        fprintf(stderr, "usage: cut_tool cod|far SCENE [KEY=VALUE]...\n");
+        return 2;
+    }
+    const char *sets[16];
+    for (int k = 3; k < argc; ++k) {
+        sets[k - 3] = argv[k];
+    }
+    char err[1024];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    tf_scene *s = tf_scene_load(argv[2], sets, (size_t)(argc - 3), err, sizeof err);
+    if (s == NULL) {
+        fprintf(stderr, "cut_tool: %s\n", err);
+        return 2;
+    }
+    int rc = strcmp(argv[1], "cod") == 0 ? cod(&s->problem, &ctx) : far(&s->problem, &ctx);
+    tf_scene_free(s);
+    return rc;
+}
