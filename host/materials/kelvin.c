@@ -41,6 +41,7 @@
 #include "materials/elasticity.h"
 #include "materials/kinematics.h"
 #include "materials/laws.h"
+#include "materials/material.h"
 
 void tf_relax_factors(double x, double *decay, double *phi1, double *phi2)
 {

@@ -19,6 +19,7 @@
  */
 #include "materials/elasticity.h"
 #include "materials/laws.h"
+#include "materials/material.h"
 
 int tf_kelvin_nh_eval(const tf_material *m, const double F[9], double dt, const double *hold,
                       double *hnew, double S[6], double C[36])

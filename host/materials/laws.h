@@ -6,7 +6,9 @@
 #ifndef TF_LAWS_H
 #define TF_LAWS_H
 
-#include "materials/material.h"
+/* The material's parameters (material.h): declared, not included, so that
+ * material.c includes this header without a module cycle. */
+struct tf_material;
 
 /* St. Venant-Kirchhoff, Lame constants lambda, mu (svk.c). */
 int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double C[36],
@@ -18,12 +20,12 @@ int tf_neohooke_eval(double mu, double kappa, const double F[9], double S[6], do
                      double *W);
 
 /* Seed 001's small-strain Kelvin law; history [h(6), eps_n(6)] (kelvin.c). */
-void tf_kelvin_eval(const tf_material *m, const double F[9], double dt, const double *hold,
+void tf_kelvin_eval(const struct tf_material *m, const double F[9], double dt, const double *hold,
                     double *hnew, double S[6], double C[36]);
 
 /* The relaxation on a neo-Hookean base; history [h(6), S0_n(6)]
  * (kelvin_nh.c). */
-int tf_kelvin_nh_eval(const tf_material *m, const double F[9], double dt, const double *hold,
+int tf_kelvin_nh_eval(const struct tf_material *m, const double F[9], double dt, const double *hold,
                       double *hnew, double S[6], double C[36]);
 
 /* Factors of the exact one-step update of a hereditary integral with

@@ -24,6 +24,7 @@
 
 #include "materials/kinematics.h"
 #include "materials/laws.h"
+#include "materials/material.h"
 
 static void tangent(double mu, double kappa, double J, double j23, double I1, const double ci[9],
                     double C[36])

@@ -12,6 +12,7 @@
  */
 #include "materials/kinematics.h"
 #include "materials/laws.h"
+#include "materials/material.h"
 
 int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double C[36],
                 double *W)
