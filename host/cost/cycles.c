@@ -106,13 +106,23 @@ typedef enum block_id {
     NODAL_NODE,     /* loop 1: one output point, any p */
     NODAL_P0_SKIP,  /* ... minus the inner-loop set-up that p = 0 skips */
     NODAL_TERM,     /* loop 2: one basis term of the three rows */
-    MODAL_PATH,
+    MODAL_PATH,     /* outside loops, r <= 8: the rows in assembly */
+    MODAL_PATH_C,   /* outside loops, r > 8: the rows in C (loops 3, 4) */
     MODAL_AMP,      /* loop 1: one amplitude a_k */
     MODAL_AMP_P0_SKIP,
     MODAL_AMP_TERM, /* loop 2: one term of it */
-    MODAL_NODE,     /* loop 3: one output point */
-    MODAL_R1_SKIP,  /* ... minus the inner-loop set-up that r = 1 skips */
+    MODAL_NODE,     /* loop 3: one output point (r > 8) */
     MODAL_MODE,     /* loop 4: one mode of the three rows */
+    MR_DISPATCH,    /* tfit_modal_rows_asm(): the rank's function, tail call */
+    MR_PATH,        /* tfit_modal_rows_rR() outside its loop, without the r amplitude words */
+    MR_POINT_1,     /* tfit_modal_rows_rR() loop 1: one output point at rank R */
+    MR_POINT_2,
+    MR_POINT_3,
+    MR_POINT_4,
+    MR_POINT_5,
+    MR_POINT_6,
+    MR_POINT_7,
+    MR_POINT_8,
     ZHOU_PATH,
     ZHOU_AXIS,      /* loop 1: contact displacement of one force axis */
     ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a of them) */
@@ -210,17 +220,41 @@ static const block blocks[N_BLOCKS] = {
     [NODAL_P0_SKIP] = {"tfit_eval_nodal", 0, 0, SAME("alu=5")},
     [NODAL_TERM] = {"tfit_eval_nodal", 2, 2, SAME("alu=2 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [MODAL_PATH] = {"tfit_eval_modal", 0, 0,
-                    SAME("alu=28 mul=3 mla=1 load=6 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 "
-                         "branch=1 nbranch=2")},
+                    SAME("alu=23 mul=3 mla=1 load=6 store=2 ldm=2 ldm_pc=1 stm=2 words=24 branch=3 "
+                         "nbranch=1")},
+    [MODAL_PATH_C] = {"tfit_eval_modal", 0, 0,
+                      SAME("alu=31 mul=3 mla=1 load=6 ldm=2 ldm_pc=1 stm=2 words=24 fload=1 "
+                           "branch=1 nbranch=3")},
     [MODAL_AMP] = {"tfit_eval_modal", 1, 1,
-                   SAME("alu=6 fload=1 fstm=1 fwords=1 branch=1 nbranch=1")},
+                   SAME("alu=7 store=1 fload=1 fmov=1 branch=1 nbranch=1")},
     [MODAL_AMP_P0_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=3")},
     [MODAL_AMP_TERM] = {"tfit_eval_modal", 2, 2,
                         SAME("alu=2 fldm=2 fwords=2 fadd=1 fmul=1 branch=1")},
-    [MODAL_NODE] = {"tfit_eval_modal", 3, 1,
-                    SAME("alu=16 store=3 fload=3 fmul=3 fmov=3 branch=1 nbranch=1")},
-    [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
+    [MODAL_NODE] = {"tfit_eval_modal", 3, 1, SAME("alu=14 store=3 fload=3 fmul=3 fmov=3 branch=1")},
     [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    /* (objdump counts one more alu in each: the nop before the literal
+     * pool, or after the return) */
+    [MR_DISPATCH] = {"tfit_modal_rows_asm", 0, 0,
+                     {"alu=12 load=5 store=1 ldm=1 stm=1 words=6 branch=1",
+                      "alu=12 load=5 store=1 ldm=1 stm=1 words=4 branch=1"}},
+    [MR_PATH] = {"tfit_modal_rows_rR", 0, 0,
+                 SAME("alu=3 load=2 stm=1 words=1 fldm=2 fstm=1 fwords=32")},
+    /* 3r words in, 3 out; 3r multiplications, 3(r - 1) additions */
+    [MR_POINT_1] = {"tfit_modal_rows_r1", 1, 1, SAME("alu=2 fldm=1 fstm=1 fwords=6 fmul=3 branch=1")},
+    [MR_POINT_2] = {"tfit_modal_rows_r2", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=9 fadd=3 fmul=6 branch=1")},
+    [MR_POINT_3] = {"tfit_modal_rows_r3", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=12 fadd=6 fmul=9 branch=1")},
+    [MR_POINT_4] = {"tfit_modal_rows_r4", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=15 fadd=9 fmul=12 branch=1")},
+    [MR_POINT_5] = {"tfit_modal_rows_r5", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=18 fadd=12 fmul=15 branch=1")},
+    [MR_POINT_6] = {"tfit_modal_rows_r6", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=21 fadd=15 fmul=18 branch=1")},
+    [MR_POINT_7] = {"tfit_modal_rows_r7", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=24 fadd=18 fmul=21 branch=1")},
+    [MR_POINT_8] = {"tfit_modal_rows_r8", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=27 fadd=21 fmul=24 branch=1")},
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
                    {"alu=16 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2",
                     "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2"}},
@@ -379,12 +413,29 @@ static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
-/* tfit_eval_modal, called by evaluate() or tfit_prony_step */
+/* Ranks whose rows run in assembly: TFIT_MODAL_ASM_MAX_RANK of
+ * target/src/tfit_internal.h. */
+#define MODAL_ASM_MAX_RANK 8u
+
+/* The rows of a modal model of rank r <= 8 in assembly
+ * (tfit_modal_armv7em.c): the dispatch, the rank's function (its path loads
+ * the r amplitudes with one VLDM) and its loop over the output points. */
+static void modal_rows_asm_mix(tf_insn_mix *t, tf_core core, uint32_t r, uint32_t n_out)
+{
+    add_block(t, core, MR_DISPATCH, 1);
+    add_block(t, core, MR_PATH, 1);
+    t->n[TF_INSN_FWORDS] += r;
+    add_loop(t, core, (block_id)(MR_POINT_1 + (r - 1)), n_out);
+}
+
+/* tfit_eval_modal, called by evaluate() or tfit_prony_step: the basis, the
+ * r amplitudes (loops 1, 2), then the rows in assembly (r <= 8) or in C
+ * (loops 3, 4: r > 8, so the mode loop always runs) */
 static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], r = m->dims[1], terms = tf_terms(p);
     basis_mix(t, core, p);
-    add_block(t, core, MODAL_PATH, 1);
+    add_block(t, core, r <= MODAL_ASM_MAX_RANK ? MODAL_PATH : MODAL_PATH_C, 1);
     add_loop(t, core, MODAL_AMP, r);
     add_block(t, core, MODAL_AMP_TERM, (uint64_t)r * (terms - 1));
     if (p == 0) { /* skipped by a taken branch */
@@ -393,14 +444,13 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     } else {
         falls_through(t, r);
     }
+    if (r <= MODAL_ASM_MAX_RANK) {
+        modal_rows_asm_mix(t, core, r, m->n_out);
+        return;
+    }
     add_loop(t, core, MODAL_NODE, m->n_out);
     add_block(t, core, MODAL_MODE, (uint64_t)m->n_out * (r - 1));
-    if (r == 1) {
-        sub_block(t, core, MODAL_R1_SKIP, m->n_out);
-        taken(t, m->n_out);
-    } else {
-        falls_through(t, m->n_out);
-    }
+    falls_through(t, m->n_out);
 }
 
 /* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop

@@ -170,6 +170,13 @@ tfit_status tfit_degree1_one_asm(const tfit_model *m, const float in[3], float *
  * the zero rows when it is 0. */
 void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, uint32_t keep,
                            float *out);
+/* The modal family's output rows at rank r = 1 .. TFIT_MODAL_ASM_MAX_RANK
+ * (tfit_modal_armv7em.c): a[r] the amplitudes (+0.0f for a NaN/Inf input),
+ * rows the model's U, n_out >= 1 points; keep all ones, or 0 to write the
+ * +0.0f of the output mask. */
+#define TFIT_MODAL_ASM_MAX_RANK 8u
+void tfit_modal_rows_asm(uint32_t r, const float *rows, const float *a, uint32_t n_out,
+                         uint32_t keep, float *out);
 #else
 #define TFIT_DEGREE1_ASM 0
 #endif

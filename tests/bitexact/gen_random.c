@@ -187,6 +187,40 @@ static int header(uint64_t seed, const char *path)
     return 0;
 }
 
+/* Modal models of ranks 1 .. MODAL_RANKS: every rank whose rows run in
+ * assembly on Armv7E-M (TFIT_MODAL_ASM_MAX_RANK = 8) and the first above
+ * it (the C rows), each at a random degree 0 .. 4 and 1 .. 8 outputs. */
+#define MODAL_RANKS 9
+
+static int modal_ranks(uint64_t seed, const char *path)
+{
+    tf_model *models[MODAL_RANKS] = {0};
+    tf_rng r = {seed};
+    char err[512], name[32];
+    int rc = 1;
+    for (uint32_t k = 0; k < MODAL_RANKS; ++k) {
+        const uint32_t dims[2] = {tf_rng_below(&r, 5), k + 1};
+        snprintf(name, sizeof name, "modal_r%u", k + 1);
+        models[k] = tf_random_model_of(&r, name, TFIT_FAMILY_MODAL, dims, 2,
+                                       1 + tf_rng_below(&r, 8));
+        if (models[k] == NULL) {
+            goto done;
+        }
+    }
+    const tf_emit_info info = {.source = "random modal models of ranks 1-9 "
+                                         "(tests/bitexact/gen_random.c)",
+                               .golden_seed = seed};
+    rc = tf_emit_header(path, models, MODAL_RANKS, &info, err, sizeof err);
+    if (rc != 0) {
+        fprintf(stderr, "gen_random: %s\n", err);
+    }
+done:
+    for (int i = 0; i < MODAL_RANKS; ++i) {
+        tf_model_free(models[i]);
+    }
+    return rc != 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 5 && strcmp(argv[1], "bundle") == 0) {
@@ -195,6 +229,10 @@ int main(int argc, char **argv)
     if (argc == 4 && strcmp(argv[1], "header") == 0) {
         return header(strtoull(argv[2], NULL, 10), argv[3]);
     }
-    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header SEED FILE.h\n");
+    if (argc == 4 && strcmp(argv[1], "modal-ranks") == 0) {
+        return modal_ranks(strtoull(argv[2], NULL, 10), argv[3]);
+    }
+    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header SEED FILE.h | "
+                    "gen_random modal-ranks SEED FILE.h\n");
     return 2;
 }
