@@ -8,9 +8,14 @@
 #define RELEASE_END 900u
 #define BEYOND_END 950u
 #define GLITCH 950u
-#define DEPTH_N 0.8f        /* normal force at full press */
-#define SWEEP_N 0.5f        /* lateral force amplitude */
-#define BEYOND_N 3.0f       /* three times the envelope */
+/* The forces below are for block48's 1 N envelope; -DHAPTIC_FORCE_SCALE=3.0f
+ * scales them to a 3 N one (block48_nh, coeffs/demo.mk). */
+#ifndef HAPTIC_FORCE_SCALE
+#define HAPTIC_FORCE_SCALE 1.0f
+#endif
+#define DEPTH_N (0.8f * HAPTIC_FORCE_SCALE) /* normal force at full press */
+#define SWEEP_N (0.5f * HAPTIC_FORCE_SCALE) /* lateral force amplitude */
+#define BEYOND_N (3.0f * HAPTIC_FORCE_SCALE) /* three times the envelope */
 #define MM_PER_N 10.0f      /* position script: a soft spring */
 
 static float ramp(uint32_t t, uint32_t t0, uint32_t t1)
