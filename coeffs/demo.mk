@@ -31,8 +31,8 @@ demo: $(B)/bin/tissuefit $(B)/lib/libtfit.a | deps-demo
 
 # demo-nh: the same loop on block48_nh (neo-Hookean, 3 N envelope, issue
 # 14): the shipped coeffs/block48_nh.h, the script's forces scaled by 3,
-# every tick against a true nonlinear solve (about a thousand solves:
-# minutes).  Result committed in docs/reports/block48_nh_demo.txt.
+# every tick against a true nonlinear solve (a thousand solves from rest:
+# over 30 minutes on a loaded 2-core machine; no result committed yet).
 .PHONY: demo-nh
 demo-nh: $(B)/bin/tissuefit $(B)/lib/libtfit.a | deps-demo
 	@mkdir -p $(DEMO)/nh
