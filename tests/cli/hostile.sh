@@ -5,7 +5,7 @@
 set -u
 tool=$1
 . "$(dirname "$0")/expect.sh"
-B=coeffs/block48.yaml
+B=tests/solver/block48_seed.yaml
 
 # --- numbers, whole numbers, documents, syntax (details: test_scene_hostile.c)
 for v in "material.nu=0,45" "material.E=3,2" "material.E=0.32 MPa" "geometry.grid=011,11,3" \

@@ -9,22 +9,22 @@ scenes=$(dirname "$0")/scenes
 
 expect 0 "fit --help" -- "$tool" fit --help
 prints "fit --help" "forward family to emit, one of: nodal, modal, zhou2017"
-expect 2 "no -o" -- "$tool" fit coeffs/block48.yaml
+expect 2 "no -o" -- "$tool" fit tests/solver/block48_seed.yaml
 says "no -o" "expected one scene file and -o FILE.h"
 expect 2 "no contact site" -- "$tool" -q fit "$scenes/no_contact.yaml" -o "$tmp/w/a.h"
 says "no contact site" "no contact site"
-expect 2 "zero envelope" -- "$tool" -q fit coeffs/block48.yaml --set envelope.radius=0 -o "$tmp/w/a.h"
+expect 2 "zero envelope" -- "$tool" -q fit tests/solver/block48_seed.yaml --set envelope.radius=0 -o "$tmp/w/a.h"
 says "zero envelope" "envelope.radius"
 expect 2 "outputs that select nothing" -- "$tool" -q fit "$scenes/no_outputs.yaml" -o "$tmp/w/a.h"
 says "no outputs" "outputs"
 expect 2 "zhou2017 on a non-flat output set" -- "$tool" -q fit "$scenes/all_layers.yaml" \
     --family zhou2017 -o "$tmp/w/a.h"
 says "zhou2017 non-flat" "one plane"
-expect 2 "an unknown family" -- "$tool" -q fit coeffs/block48.yaml --family cubic -o "$tmp/w/a.h"
+expect 2 "an unknown family" -- "$tool" -q fit tests/solver/block48_seed.yaml --family cubic -o "$tmp/w/a.h"
 says "unknown family" "forward families"
-expect 2 "an unknown contact site" -- "$tool" -q fit coeffs/block48.yaml --contact nowhere -o "$tmp/w/a.h"
+expect 2 "an unknown contact site" -- "$tool" -q fit tests/solver/block48_seed.yaml --contact nowhere -o "$tmp/w/a.h"
 says "unknown contact site" "has no contact site 'nowhere'"
-expect 2 "a bad fit setting" -- "$tool" -q fit coeffs/block48.yaml --set fit.folds=1 -o "$tmp/w/a.h"
+expect 2 "a bad fit setting" -- "$tool" -q fit tests/solver/block48_seed.yaml --set fit.folds=1 -o "$tmp/w/a.h"
 says "bad fit setting" "fit.folds"
 nothing_written "refused fits"
 
@@ -32,9 +32,9 @@ nothing_written "refused fits"
 # differ by rounding in the training data (about 1e-15 relative), so every
 # float coefficient of both models agrees to 1e-12 of the table's largest
 # (measured: 1e-16; coefficients that should be 0 differ by ~1e-16 there).
-expect 0 "fit, superposed" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/s.h"
+expect 0 "fit, superposed" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/s.h"
 grep -q "training cases superposed from unit solves" "$tmp/w/s.h" || bad "s.h was not superposed"
-expect 0 "fit, direct" -- "$tool" -q fit coeffs/block48.yaml --direct -o "$tmp/w/d.h"
+expect 0 "fit, direct" -- "$tool" -q fit tests/solver/block48_seed.yaml --direct -o "$tmp/w/d.h"
 grep -q "every training case solved directly" "$tmp/w/d.h" || bad "d.h was not solved directly"
 # coef HEADER MODEL: the float table of tfit_MODEL, one decimal number a line
 coef() {

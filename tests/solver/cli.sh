@@ -4,7 +4,7 @@
 set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
-B=coeffs/block48.yaml
+B=tests/solver/block48_seed.yaml
 
 expect 0 "solve --help" -- "$tool" solve --help
 check "solve --help names --set" grep -q -- "--set KEY=VALUE" "$tmp/out"

@@ -57,7 +57,7 @@ static void check_paths(const char *const *sets, size_t n_sets)
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, n_sets, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, n_sets, err, sizeof err);
     if (s == NULL) {
         fail_msg("%s", err);
     }
