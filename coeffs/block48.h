@@ -96,8 +96,8 @@ extern const tfit_model tfit_block48_forward;
 #define TFIT_BLOCK48_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CONTACT_Q31_ADDED_ERROR_N 4.13422e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.51621e-08 */
-#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x240c50b6u
-#define tfit_block48_contact_q31 tfit_block48_contact_q31_240c50b6 /* this header's version of the model */
+#define TFIT_BLOCK48_CONTACT_Q31_CRC32 0x1ca9edfeu
+#define tfit_block48_contact_q31 tfit_block48_contact_q31_1ca9edfe /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_HELDOUT_CASES 50
 #define TFIT_BLOCK48_CONTACT_HELDOUT_MAX_N 5.96046e-08
@@ -107,8 +107,8 @@ extern const tfit_model_q31 tfit_block48_contact_q31;
 #define TFIT_BLOCK48_CONTACT_TOTAL_MAX_N 0.00773161 /* held-out fit + discretisation */
 #define TFIT_BLOCK48_CONTACT_STIFFNESS_MIN_N_PER_MM 0.426658 /* sym(df/ddelta), smallest eigenvalue */
 #define TFIT_BLOCK48_CONTACT_STIFFNESS_MAX_N_PER_MM 1.08378 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_CONTACT_CRC32 0x27c64682u
-#define tfit_block48_contact tfit_block48_contact_27c64682 /* this header's version of the model */
+#define TFIT_BLOCK48_CONTACT_CRC32 0xa2366a02u
+#define tfit_block48_contact tfit_block48_contact_a2366a02 /* this header's version of the model */
 extern const tfit_model tfit_block48_contact;
 
 /* The output points (mm, float): output j of the forward models
@@ -1697,7 +1697,7 @@ static const uint32_t tfit_block48_contact_dims[1] = {
     1u,
 };
 static const uint32_t tfit_block48_contact_nodes[1] = {
-    352u,
+    61u,
 };
 static const float tfit_block48_contact_coef[24] = {
     /* input map: envelope centre x0 */
@@ -1706,11 +1706,11 @@ static const float tfit_block48_contact_coef[24] = {
     0x1.1572c6p+0f, -0x1.d37bf4p-42f, 0x1.4f3a96p-41f, -0x1.25e6c4p-41f,
     0x1.1572c6p+0f, 0x1.071b6p-41f, -0x1.986748p-45f, 0x1.e5c008p-47f,
     0x1.b4e5cp-2f,
-    /* node 352 x force */
+    /* node 61 x force */
     -0x1.139d84p-55f, 0x1p+0f, -0x1.8038d2p-56f, -0x1.2c142ap-51f,
-    /* node 352 y force */
+    /* node 61 y force */
     -0x1.2059fap-58f, 0x1.376af6p-53f, 0x1p+0f, 0x1.2d3ce4p-55f,
-    /* node 352 z force */
+    /* node 61 z force */
     -0x1.666666p-58f, 0x1.344aacp-53f, 0x1.5fbbfap-56f, 0x1p+0f,
 };
 const tfit_model tfit_block48_contact = {
@@ -1723,7 +1723,7 @@ const tfit_model tfit_block48_contact = {
      0xbf086032u, 0xbf086032u, 0xbfad356fu, 0xc087a251u, 0xc0c5caa5u, 0x415abdb4u,
      0xf0ab31b9u, 0xf0f9a5e8u, 0x718a0b85u, 0xc0c7d74eu, 0x4055dedau, 0xc17056b2u,
      0xe43ad449u, 0xf745f0beu},
-    0x27c64682u
+    0xa2366a02u
 };
 static const int32_t tfit_block48_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1732,18 +1732,18 @@ static const int32_t tfit_block48_contact_q31_coef[28] = {
     581851328, 0, 0, 0, 581851328, 0,
     0, 0, 229060096,
     6,
-    /* node 352 x: shift, then 4 coefficients */
+    /* node 61 x: shift, then 4 coefficients */
     33, 0, 536870912, 0, 0,
-    /* node 352 y: shift, then 4 coefficients */
+    /* node 61 y: shift, then 4 coefficients */
     33, 0, 0, 536870912, 0,
-    /* node 352 z: shift, then 4 coefficients */
+    /* node 61 z: shift, then 4 coefficients */
     33, 0, 0, 0, 536870912,
 };
 const tfit_model_q31 tfit_block48_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_block48_contact_q31_coef, tfit_block48_contact_nodes,
     tfit_block48_contact_q31_coef + 28u, tfit_block48_contact_nodes + 1u,
-    0x240c50b6u
+    0x1ca9edfeu
 };
 
 #endif /* TFIT_BLOCK48_IMPLEMENTATION */

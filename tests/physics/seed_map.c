@@ -11,7 +11,8 @@
  *     node id is the seed scene's output j (same order);
  *   - the header's point j (TFIT_BLOCK48_OUTPUT_POINTS_MM) is where the seed
  *     grid's node node_ids[j] is, to float precision;
- *   - the contact point is the seed's contact node (61, the top centre).
+ *   - the contact point is the seed's contact node (61, the top centre),
+ *     and the contact model's id is that node's number.
  * Exit 1 naming the first output that disagrees.
  */
 #include <math.h>
@@ -72,9 +73,15 @@ int main(int argc, char **argv)
                 (double)contact[0], (double)contact[1], (double)contact[2], (unsigned)ct->node + 1);
         bad = 1;
     }
+    /* firmware finds the contact among the outputs by this id (haptic_loop.c) */
+    if (!bad && tfit_block48_contact.node_ids[0] != ct->node + 1) {
+        fprintf(stderr, "seed_map: the contact model's node id is %u, the seed's contact node %u\n",
+                (unsigned)tfit_block48_contact.node_ids[0], (unsigned)ct->node + 1);
+        bad = 1;
+    }
     if (!bad) {
         printf("%s: its %u outputs are the seed's nodes %u ... %u at their positions (within %g mm), "
-               "its contact point the seed's node %u\n", HEADER, (unsigned)m->n_out,
+               "its contact point and id the seed's node %u\n", HEADER, (unsigned)m->n_out,
                (unsigned)m->node_ids[0], (unsigned)m->node_ids[m->n_out - 1], TOL_MM,
                (unsigned)ct->node + 1);
     }
