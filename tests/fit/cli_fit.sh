@@ -34,9 +34,9 @@ nothing_written "refused fits"
 # same scene with the neo-Hookean law does not warn.
 WARN="linear (small-strain) elasticity does not describe tissue there"
 TINY="--set geometry.grid=5,5,2 --set contact.0.node=13 --set fit.train=12 --set fit.heldout=3 --set fit.max_degree=1"
-expect 0 "fit, linear, large displacements" -- "$tool" fit coeffs/block48.yaml $TINY -o "$tmp/w/lw.h"
+expect 0 "fit, linear, large displacements" -- "$tool" fit tests/solver/block48_seed.yaml $TINY -o "$tmp/w/lw.h"
 says "the small-strain warning for the linear law" "$WARN"
-expect 0 "fit, neo-Hookean, large displacements" -- "$tool" fit coeffs/block48.yaml $TINY \
+expect 0 "fit, neo-Hookean, large displacements" -- "$tool" fit tests/solver/block48_seed.yaml $TINY \
     --set material.law=neo-hookean -o "$tmp/w/nw.h"
 check "no small-strain warning for the neo-Hookean law" sh -c "! grep -q '$WARN' '$tmp/err'"
 rm -f "$tmp/w/lw.h" "$tmp/w/lw_golden.h" "$tmp/w/nw.h" "$tmp/w/nw_golden.h"
