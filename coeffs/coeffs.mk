@@ -75,7 +75,7 @@ check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
 	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 $(CONTACT_REL_BOUND); done
 	@echo "== material extremes: the stated bound holds at fresh forces =="
-	@$(T)/extremes coeffs/block48.yaml 2>/dev/null
+	@$(T)/extremes tests/solver/block48_seed.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="
 	@tests/fit/cli_fit.sh $(B)/bin/tissuefit
 	@echo "== tissuefit sweep and budget-driven choice =="

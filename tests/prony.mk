@@ -130,10 +130,10 @@ $(T)/prony/creep_fit: tests/prony/creep_fit.c $(B)/native/libtissuefit-host.a $(
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
 
-$(T)/gen/creep48.h: $(T)/prony/creep_fit coeffs/block48.yaml
+$(T)/gen/creep48.h: $(T)/prony/creep_fit tests/solver/block48_seed.yaml
 	@mkdir -p $(@D)
 	$(call say,GEN)
-	$(Q)$< coeffs/block48.yaml $(PRONY_KELVIN) $@ $(PRONY_MAX_REL) >$(T)/prony/creep48.log || \
+	$(Q)$< tests/solver/block48_seed.yaml $(PRONY_KELVIN) $@ $(PRONY_MAX_REL) >$(T)/prony/creep48.log || \
 	  { cat $(T)/prony/creep48.log; exit 1; }
 
 $(T)/prony/golden-creep48: tests/header/run_golden.c $(T)/gen/creep48.h $(B)/native/libtfit.a
@@ -153,7 +153,7 @@ CHECKS += check-prony-fit
 check-prony-fit: $(T)/prony/creep_fit $(T)/gen/creep48.h $(T)/prony/golden-creep48 $(T)/prony/probe-creep48
 	@echo "== prony: block48 creeping (synthetic linear viscoelastic histories), held-out press-hold-release within 2 % of the peak =="
 	@cat $(T)/prony/creep48.log
-	@$(T)/prony/creep_fit coeffs/block48.yaml $(PRONY_TWO_TERMS) $(T)/prony/creep2.h $(PRONY_MAX_REL)
+	@$(T)/prony/creep_fit tests/solver/block48_seed.yaml $(PRONY_TWO_TERMS) $(T)/prony/creep2.h $(PRONY_MAX_REL)
 	@$(T)/prony/golden-creep48 creep48/native
 	@tests/insncount/run.sh $(T)/prony/probe-creep48 $(T)/prony/insncount-creep48
 	@echo "ok: block48 creeping: K and the time constants recovered (one and two terms), held-out histories within $(PRONY_MAX_REL) x the peak; creep48.h's golden vectors bit-exact natively, one instruction count for every tick of its golden sequence"

@@ -37,6 +37,11 @@ typedef struct tf_cases {
     const tf_problem *problem;
     int contact;             /* contact site index */
     uint32_t contact_node;   /* its node index */
+    /* The contact model's node id: the site's node number, or, when the site
+     * is given by position and is one of the output points, that output's
+     * number (outputs by position are numbered 1 ... n), so that firmware
+     * finds the contact among the forward model's outputs by its id. */
+    uint32_t contact_id;
     int affine;              /* the solver declared itself affine: unit responses exist */
     int superposed;          /* training cases from unit responses */
     size_t solves;           /* right-hand sides solved */

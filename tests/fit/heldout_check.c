@@ -31,6 +31,41 @@ static int same(double recomputed, double header)
     return fabs(recomputed - header) <= 1e-5 * fabs(header) + 1e-30;
 }
 
+/* The solve's displacements where the header's models read them: output j
+ * (3 j ...) and the contact point (3 n_out ...).  Outputs by node (node_ids
+ * are node numbers) and a contact by node take the nodal values; outputs
+ * given as points (node_ids 1 ... n number them) and a contact given by
+ * position take the solver's field there, as the fit did. */
+static int solved_at(const tf_solver *solver, const tf_problem *p, const tf_contact *ct,
+                     const tfit_model *fwd, const double *ui, double *truth)
+{
+    char err[512];
+    double grad[9];
+    for (uint32_t j = 0; j < fwd->n_out; ++j) {
+        const size_t node = p->outputs.points ? 0 : (size_t)fwd->node_ids[j] - 1;
+        const double *x = p->outputs.points ? p->outputs.points + 3 * (size_t)j : NULL;
+        if (x != NULL && tf_solver_field(solver, ui, x, 1, truth + 3 * j, grad, err, sizeof err) != 0) {
+            fprintf(stderr, "heldout_check: %s\n", err);
+            return -1;
+        }
+        for (int k = 0; x == NULL && k < 3; ++k) {
+            truth[3 * j + (uint32_t)k] = ui[3 * node + (size_t)k];
+        }
+    }
+    double *tc = truth + 3 * fwd->n_out;
+    if (!ct->by_node && tf_solver_field(solver, ui, ct->at, 1, tc, grad, err, sizeof err) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", err);
+        return -1;
+    }
+    if (!ct->by_node) {
+        return 0;
+    }
+    for (int k = 0; k < 3; ++k) {
+        tc[k] = ui[3 * (size_t)ct->node + (size_t)k];
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     char err[1024];
@@ -67,24 +102,28 @@ int main(int argc, char **argv)
         return 1;
     }
     const tfit_model *fwd = &FORWARD, *con = &CONTACT;
-    const uint32_t contact_node = con->node_ids[0] - 1;
     float *out = malloc(3 * fwd->n_out * sizeof *out);
+    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
     double fwd_max = 0, fsum2 = 0, con_max = 0, csum2 = 0, crel = 0;
     for (size_t i = 0; i < n; ++i) {
-        const double *ui = u + i * dofs;
+        if (out == NULL || truth == NULL ||
+            solved_at(solver, p, &p->contacts[s->fit.contact], fwd, u + i * dofs, truth) != 0) {
+            fprintf(stderr, "heldout_check: no displacements at the outputs\n");
+            return 1;
+        }
         const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
         if (tfit_displacements(fwd, f, out) < 0) {
             return 1;
         }
         for (uint32_t j = 0; j < fwd->n_out; ++j) {
             for (int k = 0; k < 3; ++k) {
-                double e = (double)out[3 * j + (uint32_t)k] - ui[3 * (fwd->node_ids[j] - 1) + (uint32_t)k];
+                double e = (double)out[3 * j + (uint32_t)k] - truth[3 * j + (uint32_t)k];
                 fwd_max = fmax(fwd_max, fabs(e));
                 fsum2 += e * e;
             }
         }
-        const float d[3] = {(float)ui[3 * contact_node], (float)ui[3 * contact_node + 1],
-                            (float)ui[3 * contact_node + 2]};
+        const double *tc = truth + 3 * fwd->n_out;
+        const float d[3] = {(float)tc[0], (float)tc[1], (float)tc[2]};
         float fc[3];
         if (tfit_contact_force(con, d, fc) < 0) {
             return 1;
@@ -118,6 +157,7 @@ int main(int argc, char **argv)
     free(held);
     free(u);
     free(out);
+    free(truth);
     tf_solver_destroy(solver);
     tf_scene_free(s);
     return ok ? 0 : 1;

@@ -67,7 +67,7 @@ static int one_case(const char *const *sets, size_t ns, const char *law, const d
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double w0 = omp_get_wtime(), c0 = cpu_now();
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", all, ns + 1, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", all, ns + 1, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "bench_nonlinear: %s\n", err);
         return -1;

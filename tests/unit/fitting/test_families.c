@@ -73,7 +73,7 @@ static tf_fitdata data(void)
 /* Training cases d as the families see them (contact site: node index 6). */
 static tf_cases cases_of(const tf_fitdata *d)
 {
-    return (tf_cases){.train = *d, .contact_node = 6};
+    return (tf_cases){.train = *d, .contact_node = 6, .contact_id = 7};
 }
 
 /* The registered family's model of the given orders on every case of d. */
