@@ -21,6 +21,14 @@
  * points, the patch is a set of element faces and the output points and the
  * patch centre are mesh nodes at every level.
  *
+ * Graded meshes (--grade F:M instead of --divisions): the number of elements
+ * per quantum varies instead, F on the patch's quanta and GRADE_FACTOR times
+ * fewer per quantum of distance from the patch (rounded up, at least M),
+ * so element edges still fall on every quantum boundary (patch edges, output
+ * points); --layer-ratio R makes each layer R times thicker than the one
+ * above it (thin layers under the load).  Nodes keep their lattice numbers;
+ * positions come from per-axis coordinate tables.
+ *
  * Node numbers come from a lattice at half the element size, so a node's
  * number is a formula of its position: id = 1 + i + Kx (j + Ky k),
  * Kx = 2 N + 1, Ky = 2 Ny + 1, with i, j, k the half-step indices along x, y,
