@@ -284,6 +284,22 @@ static void coarse_forces(const tf_history_design *hd, size_t which, tf_history_
     }
 }
 
+void tf_histories_outputs(const tf_outputs *o, const double *full, size_t dofs, size_t n_ticks,
+                          size_t m, double *u)
+{
+    for (size_t n = 0; n < n_ticks; ++n, u += 3 * o->n_nodes) {
+        const size_t j = n / m;
+        const double w = (double)(n % m) / (double)m;
+        const double *a = full + j * dofs, *b = w == 0 ? a : full + (j + 1) * dofs;
+        for (size_t i = 0; i < o->n_nodes; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                const size_t d = 3 * (size_t)o->nodes[i] + (size_t)k;
+                u[3 * i + (size_t)k] = w == 0 ? a[d] : (1 - w) * a[d] + w * b[d];
+            }
+        }
+    }
+}
+
 /* One history through the solver, a step every m ticks, keeping the output
  * rows: at the solver's steps its displacements, between them the line
  * between the two steps' (the error this adds is measured in
@@ -291,8 +307,7 @@ static void coarse_forces(const tf_history_design *hd, size_t which, tf_history_
 static int solve_one(const tf_cases *c, const tf_history_design *hd, size_t which,
                      tf_history_set *s, size_t h, double tick, size_t m)
 {
-    const tf_outputs *o = &c->problem->outputs;
-    const size_t dofs = 3 * tf_solver_node_count(c->solver), rows = 3 * (size_t)s->n_out;
+    const size_t dofs = 3 * tf_solver_node_count(c->solver);
     const size_t steps = 1 + (s->n_ticks - 1 + m - 1) / m;
     double *full = malloc(dofs * steps * sizeof *full);
     double(*fs)[3] = malloc(steps * sizeof *fs);
@@ -308,17 +323,9 @@ static int solve_one(const tf_cases *c, const tf_history_design *hd, size_t whic
     }
     int rc = tf_solver_history(c->solver, c->contact, (const double(*)[3])fs, steps,
                                (double)m * tick, full);
-    for (size_t n = 0; rc == 0 && n < s->n_ticks; ++n) {
-        double *u = s->u + (h * s->n_ticks + n) * rows;
-        const size_t j = n / m;
-        const double w = (double)(n % m) / (double)m;
-        const double *a = full + j * dofs, *b = w == 0 ? a : full + (j + 1) * dofs;
-        for (size_t i = 0; i < o->n_nodes; ++i) {
-            for (int k = 0; k < 3; ++k) {
-                const size_t d = 3 * (size_t)o->nodes[i] + (size_t)k;
-                u[3 * i + (size_t)k] = w == 0 ? a[d] : (1 - w) * a[d] + w * b[d];
-            }
-        }
+    if (rc == 0) {
+        tf_histories_outputs(&c->problem->outputs, full, dofs, s->n_ticks, m,
+                             s->u + h * s->n_ticks * 3 * (size_t)s->n_out);
     }
     free(full);
     free(fs);

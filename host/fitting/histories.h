@@ -107,6 +107,12 @@ int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t
 int tf_histories_solve(const tf_cases *c, uint32_t tick_ns, size_t solve_every, size_t n_train,
                        size_t n_heldout, size_t n_ticks, uint64_t seed, tf_histories *h);
 
+/* The output rows (3 per output node, per tick) of n_ticks ticks from a
+ * solver's history `full` (dofs per step) with a step every m ticks: at a
+ * step its displacements, between two steps the line between them. */
+void tf_histories_outputs(const tf_outputs *o, const double *full, size_t dofs, size_t n_ticks,
+                          size_t m, double *u);
+
 void tf_histories_free(tf_histories *h);
 
 #endif /* TF_FIT_HISTORIES_H */

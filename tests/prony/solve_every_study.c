@@ -32,8 +32,7 @@
 static int resolve(const tf_cases *c, const tf_history_set *s, size_t h, size_t m, double tick,
                    double *out)
 {
-    const tf_outputs *o = &c->problem->outputs;
-    const size_t dofs = 3 * tf_solver_node_count(c->solver), rows = 3 * (size_t)s->n_out;
+    const size_t dofs = 3 * tf_solver_node_count(c->solver);
     const size_t steps = 1 + (s->n_ticks - 1 + m - 1) / m;
     double *full = malloc(dofs * steps * sizeof *full);
     double(*f)[3] = malloc(steps * sizeof *f);
@@ -48,16 +47,8 @@ static int resolve(const tf_cases *c, const tf_history_set *s, size_t h, size_t 
     }
     int rc = tf_solver_history(c->solver, c->contact, (const double(*)[3])f, steps,
                                (double)m * tick, full);
-    for (size_t n = 0; rc == 0 && n < s->n_ticks; ++n) {
-        const size_t j = n / m;
-        const double w = (double)(n % m) / (double)m;
-        for (size_t i = 0; i < o->n_nodes; ++i) {
-            for (size_t k = 0; k < 3; ++k) {
-                const size_t d = 3 * (size_t)o->nodes[i] + k;
-                const double a = full[j * dofs + d];
-                out[n * rows + 3 * i + k] = w == 0 ? a : (1 - w) * a + w * full[(j + 1) * dofs + d];
-            }
-        }
+    if (rc == 0) {
+        tf_histories_outputs(&c->problem->outputs, full, dofs, s->n_ticks, m, out);
     }
     free(full);
     free(f);
