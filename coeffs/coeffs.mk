@@ -20,9 +20,20 @@ export PHYSICS_block48 := tests/calculix/data/block48_physics.csv
 # the liver: CalculiX's finest organ level s20r1 at the 240 output vertices
 # (make calculix-organ-physics; docs/validation.md §14)
 export PHYSICS_liver := tests/calculix/data/liver_physics.csv
+# block48_ve (seed 001's Kelvin law, the prony family) has no reference of its
+# own physics: its header states block48's static solve's relative error at
+# the same grid against CalculiX, as an assumption (docs/fitting.md §7.6):
+# 0.103151 mm over the envelope / 2.32027 mm peak (|u_z| of node 61 at 1 N)
+# = 4.45 %; the contact site's 7.11 % (coeffs/block48.h).
+export DISCREL_block48_ve := 0.0445,0.0711
 # $$n's reference option, in the shell loops below
-physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; fi
+physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; \
+  else ref=$$(eval echo \$${DISCREL_$$n}); if [ -n "$$ref" ]; then ref="--discretisation-rel $$ref"; fi; fi
 SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
+# Every shipped header make coeffs writes and check-coeffs compares: the
+# viscoelastic block48_ve's prony model is checked by tests/prony.mk
+# (check-prony-long, check-prony-ve), not by check-fit's static bounds.
+COEFF_SCENES := $(SHIPPED_SCENES) coeffs/block48_ve.yaml
 REPORTS := docs/reports
 
 .PHONY: coeffs check-coeffs check-fit
@@ -30,13 +41,13 @@ CHECKS += check-coeffs check-fit
 
 coeffs: $(B)/bin/tissuefit | deps-demo
 	@mkdir -p $(REPORTS)
-	@set -e; for s in $(SHIPPED_SCENES); do \
+	@set -e; for s in $(COEFF_SCENES); do \
 	  echo "== $$s -> $${s%.yaml}.h"; n=$$(basename $$s .yaml); $(physics_arg); \
 	  $(B)/bin/tissuefit fit $$s -o $${s%.yaml}.h --report $(REPORTS) $$ref; done
 
 check-coeffs: $(B)/bin/tissuefit
 	@echo "== shipped headers: regenerated (1 and 2 threads) = committed, byte for byte =="
-	@set -e; for s in $(SHIPPED_SCENES); do \
+	@set -e; for s in $(COEFF_SCENES); do \
 	  h=$${s%.yaml}.h; n=$$(basename $$h .h); $(physics_arg); \
 	  for t in 1 2; do mkdir -p $(B)/coeffs/t$$t; \
 	    OMP_NUM_THREADS=$$t $(B)/bin/tissuefit -q fit $$s -o $(B)/coeffs/t$$t/$$n.h $$ref; \
@@ -109,4 +120,4 @@ REGEN_RUNS ?= 3
 BENCHES += bench-regen
 bench-regen: $(B)/bin/tissuefit
 	@echo "== time to regenerate each shipped header: setup, solves, fits, header =="
-	@tests/bench/bench_regen.sh $(B)/bin/tissuefit $(REGEN_RUNS) $(SHIPPED_SCENES)
+	@tests/bench/bench_regen.sh $(B)/bin/tissuefit $(REGEN_RUNS) $(COEFF_SCENES)

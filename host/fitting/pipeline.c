@@ -156,10 +156,11 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     }
     if (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) {
         tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
-                "of %u us", plan->hist_train, plan->hist_heldout, plan->hist_ticks,
-                plan->tick_ns / 1000);
-        if (tf_histories_solve(&o->cases, plan->tick_ns, plan->hist_train, plan->hist_heldout,
-                               plan->hist_ticks, plan->seed, &o->hist) != 0) {
+                "of %u us, a solver step every %zu ticks", plan->hist_train, plan->hist_heldout,
+                plan->hist_ticks, plan->tick_ns / 1000, plan->hist_solve_every);
+        if (tf_histories_solve(&o->cases, plan->tick_ns, plan->hist_solve_every,
+                               plan->hist_train, plan->hist_heldout, plan->hist_ticks,
+                               plan->seed, &o->hist) != 0) {
             tf_cases_free(&o->cases);
             return -1;
         }

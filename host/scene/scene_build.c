@@ -797,6 +797,10 @@ static int fit_histories(const sd_fit *d, tf_fit_plan *f, sd_issue *is)
     if (f->hist_ticks < 10 || f->hist_ticks > 10000000) {
         return sd_fail(is, "fit.history_ticks", "10 to 10000000 ticks per history");
     }
+    f->hist_solve_every = d->solve_every ? *d->solve_every : f->hist_solve_every;
+    if (f->hist_solve_every < 1 || f->hist_solve_every > f->hist_ticks / 2) {
+        return sd_fail(is, "fit.solve_every", "1 to half of history_ticks ticks per solver step");
+    }
     return 0;
 }
 

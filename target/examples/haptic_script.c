@@ -32,6 +32,29 @@ static float quiet_nan(void)
     return v.f;
 }
 
+#ifdef HAPTIC_SCRIPT_PRESS_HOLD
+/* A creeping body's script (-DHAPTIC_SCRIPT_PRESS_HOLD): press in 200 ms,
+ * hold 500 ms (the tissue creeps), release in 200 ms, rest 100 ms; a
+ * little off-axis, inside the envelope. */
+#define HOLD_FROM 200u
+#define HOLD_TO 700u
+#define REST_FROM 900u
+void haptic_script_force(uint32_t t, float f[3])
+{
+    float s = 0.0f;
+    if (t < HOLD_FROM) {
+        s = ramp(t, 0u, HOLD_FROM);
+    } else if (t < HOLD_TO) {
+        s = 1.0f;
+    } else if (t < REST_FROM) {
+        s = 1.0f - ramp(t, HOLD_TO, REST_FROM);
+    }
+    f[0] = 0.2f * s;
+    f[1] = -0.1f * s;
+    f[2] = -DEPTH_N * s;
+    (void)quiet_nan;
+}
+#else
 void haptic_script_force(uint32_t t, float f[3])
 {
     f[0] = 0.0f;
@@ -52,6 +75,7 @@ void haptic_script_force(uint32_t t, float f[3])
         f[2] = quiet_nan();
     }
 }
+#endif
 
 void haptic_script_position(uint32_t t, float d[3])
 {

@@ -26,6 +26,12 @@ expect 2 "an unknown contact site" -- "$tool" -q fit tests/solver/block48_seed.y
 says "unknown contact site" "has no contact site 'nowhere'"
 expect 2 "a bad fit setting" -- "$tool" -q fit tests/solver/block48_seed.yaml --set fit.folds=1 -o "$tmp/w/a.h"
 says "bad fit setting" "fit.folds"
+expect 2 "a discretisation fraction beyond 1" -- "$tool" -q fit coeffs/block48.yaml \
+    --discretisation-rel 2,0.07 -o "$tmp/w/a.h"
+says "a discretisation fraction beyond 1" "two fractions in (0, 1)"
+expect 2 "a solver step longer than half a history" -- "$tool" -q fit coeffs/block48_ve.yaml \
+    --set fit.solve_every=2000 -o "$tmp/w/a.h"
+says "a solver step longer than half a history" "fit.solve_every"
 nothing_written "refused fits"
 
 # The small-strain warning: a linear solve whose displacements exceed a
