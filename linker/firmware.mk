@@ -156,7 +156,8 @@ check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
 FW_TOOL_SRC := tests/firmware/insn_class.c
 FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map tfit_basis \
                  tfit_degree1_asm tfit_degree1_one_asm tfit_degree1_rows_asm \
-                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter
+                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter \
+                 tfit_displacements_cut tfit_cut_progress tfit_cut_rows
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
     host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check

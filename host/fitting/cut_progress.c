@@ -11,6 +11,7 @@
 #include "base/context.h"
 #include "base/log.h"
 #include "base/rng.h"
+#include "model/ref_eval.h"
 #include "solvers/probe.h"
 
 void tf_cut_truncate(const tf_cut *c, double s, tf_cut *out)
@@ -147,4 +148,32 @@ void tf_cut_cases_response(const tf_cut_cases *c, size_t i, const double f[3], d
         u[o] = b[o] + f[0] * b[c->rows + o] + f[1] * b[2 * c->rows + o] +
                f[2] * b[3 * c->rows + o];
     }
+}
+
+int tf_cut_cases_errors(const tf_model *m, const tf_cut_cases *c, size_t i, const tf_fitdata *d,
+                        double *max, double *sum2)
+{
+    float *out = malloc(c->rows * sizeof *out);
+    double *truth = malloc(c->rows * sizeof *truth);
+    *max = 0;
+    *sum2 = 0;
+    if (out == NULL || truth == NULL) {
+        free(out);
+        free(truth);
+        return -1;
+    }
+    for (size_t j = 0; j < d->n_cases; ++j) {
+        const float in[3] = {(float)d->force[j][0], (float)d->force[j][1], (float)d->force[j][2]};
+        const double f[3] = {in[0], in[1], in[2]};
+        tf_ref_eval_cut(m, in, c->s[i], out, NULL);
+        tf_cut_cases_response(c, i, f, truth);
+        for (size_t o = 0; o < c->rows; ++o) {
+            double e = (double)out[o] - truth[o];
+            *max = fmax(*max, fabs(e));
+            *sum2 += e * e;
+        }
+    }
+    free(out);
+    free(truth);
+    return 0;
 }

@@ -20,6 +20,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "fitting/fitdata.h"
 #include "fitting/plan.h"
 #include "problem/problem.h"
 #include "solvers/solver.h"
@@ -50,5 +51,13 @@ void tf_cut_cases_free(tf_cut_cases *c);
 
 /* u (rows) at force f and sample i: base + sum_k f_k unit[k]. */
 void tf_cut_cases_response(const tf_cut_cases *c, size_t i, const double f[3], double *u);
+
+/* Errors of a cut model (model/model.h, TFIT_FAMILY_CUT) at sample i and
+ * the forces of d, each rounded to float as the target takes it, against
+ * the superposed responses: the largest |error| and the sum of squared
+ * errors over d->n_cases x rows values.  Returns 0, or -1 out of memory. */
+struct tf_model;
+int tf_cut_cases_errors(const struct tf_model *m, const tf_cut_cases *c, size_t i,
+                        const tf_fitdata *d, double *max, double *sum2);
 
 #endif /* TF_FIT_CUT_PROGRESS_H */

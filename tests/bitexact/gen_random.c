@@ -6,8 +6,8 @@
  *                                   a bundle (bundle.h)
  *   gen_random header SEED FILE.h   two small models per stateless family, a
  *                                   contact model of degree 1 and two prony
- *                                   models (nodal and modal static maps), two cut
- *                                   models (degree 1 and another degree),
+ *                                   models (nodal and modal static maps), three
+ *                                   cut models (degrees 1, 2 and 0),
  *                                   through the real header emitter
  *                                   (FILE.h + FILE_golden.h)
  *
@@ -158,14 +158,15 @@ static tf_model *prony(uint64_t seed, const char *name, int modal)
     return NULL;
 }
 
-/* A small cut model of degree 1 (the fitter's) or of another degree, from
- * its own sequence so that the other models do not change. */
-static tf_model *cut(uint64_t seed, const char *name, int degree1)
+/* A small cut model of degree p (1: the fitter's; 0 and 2: the other
+ * paths of tfit_cut.c), from its own sequence so that the other models do
+ * not change. */
+static tf_model *cut(uint64_t seed, const char *name, uint32_t p)
 {
-    tf_rng r = {seed ^ (degree1 ? 0xc071u : 0xc072u)};
+    tf_rng r = {seed ^ (0xc071u + p)};
     for (int tries = 0; tries < 1000; ++tries) {
         tf_model *m = tf_random_model(&r, name, TFIT_FAMILY_CUT, 1);
-        if (m == NULL || (m->dims[0] == 1) == degree1) {
+        if (m == NULL || m->dims[0] == p) {
             return m;
         }
         tf_model_free(m);
@@ -173,7 +174,7 @@ static tf_model *cut(uint64_t seed, const char *name, int degree1)
     return NULL;
 }
 
-#define HEADER_MODELS 13
+#define HEADER_MODELS 14
 
 static int header(uint64_t seed, const char *path)
 {
@@ -192,9 +193,10 @@ static int header(uint64_t seed, const char *path)
     models[9] = prony(seed, "prony_a", 0);
     models[10] = prony(seed, "prony_b", 1);
     models[11] = cut(seed, "cut_a", 1);
-    models[12] = cut(seed, "cut_b", 0);
+    models[12] = cut(seed, "cut_b", 2);
+    models[13] = cut(seed, "cut_c", 0);
     if (models[8] == NULL || models[9] == NULL || models[10] == NULL || models[11] == NULL ||
-        models[12] == NULL) {
+        models[12] == NULL || models[13] == NULL) {
         return 1;
     }
     const tf_emit_info info = {.source = "random test models (tests/bitexact/gen_random.c)",

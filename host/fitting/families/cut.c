@@ -15,7 +15,6 @@
 #include "fitting/cut_progress.h"
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
-#include "model/ref_eval.h"
 
 extern const tf_family tf_family_cut;
 
@@ -91,40 +90,27 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     return model;
 }
 
-/* Errors of a cut model at the cut samples of one role and the given
- * forces (float, as the target takes them), against the superposed
- * responses.  Returns 0, or -1 when out of memory. */
+/* Errors of a cut model at the cut samples of one role and the forces
+ * of d (cut_progress.h).  Returns 0, or -1 when out of memory. */
 static int role_errors(const tf_model *m, const tf_cut_cases *cc, int role,
                        const tf_fitdata *d, double *max, double *rms, uint32_t *n)
 {
-    const size_t rows = cc->rows;
-    float *out = malloc(rows * sizeof *out);
-    double *truth = malloc(rows * sizeof *truth), emax = 0, sum2 = 0;
+    double emax = 0, sum2 = 0;
     size_t count = 0;
-    if (out == NULL || truth == NULL) {
-        free(out);
-        free(truth);
-        return -1;
-    }
     for (size_t i = 0; i < cc->n; ++i) {
-        for (size_t j = 0; cc->role[i] == role && j < d->n_cases; ++j) {
-            const float in[3] = {(float)d->force[j][0], (float)d->force[j][1],
-                                 (float)d->force[j][2]};
-            const double f[3] = {in[0], in[1], in[2]};
-            tf_ref_eval_cut(m, in, cc->s[i], out, NULL);
-            tf_cut_cases_response(cc, i, f, truth);
-            for (size_t o = 0; o < rows; ++o) {
-                double e = (double)out[o] - truth[o];
-                emax = fmax(emax, fabs(e));
-                sum2 += e * e;
-            }
-            count++;
+        double imax, isum2;
+        if (cc->role[i] != role) {
+            continue;
         }
+        if (tf_cut_cases_errors(m, cc, i, d, &imax, &isum2) != 0) {
+            return -1;
+        }
+        emax = fmax(emax, imax);
+        sum2 += isum2;
+        count += d->n_cases;
     }
-    free(out);
-    free(truth);
     *max = emax;
-    *rms = count > 0 ? sqrt(sum2 / ((double)count * rows)) : 0;
+    *rms = count > 0 ? sqrt(sum2 / ((double)count * cc->rows)) : 0;
     if (n != NULL) {
         *n = (uint32_t)count;
     }
