@@ -37,11 +37,8 @@ typedef struct tf_cut_cases {
     double seconds;    /* the solves */
 } tf_cut_cases;
 
-/* The path of cut c truncated at fraction s of its length into out (n = 0
- * when nothing is left, s <= 0 or a path shorter than 1e-9 mm). */
-void tf_cut_truncate(const tf_cut *c, double s, tf_cut *out);
-
-/* Solves problem p at every s of the plan (plan->cut_intervals knots,
+/* Solves problem p at every s of the plan (every cut truncated at s by
+ * tf_cut_truncate, meshfree/cut.h; plan->cut_intervals knots,
  * their midpoints, plan->cut_heldout held-out values) with solvers built
  * like `like` (its options), contact site plan->contact.  Returns 0, or -1
  * with a message in ctx. */

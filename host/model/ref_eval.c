@@ -411,7 +411,8 @@ tfit_status tf_ref_eval_cut(const tf_model *m, const float in[3], float s, float
     for (size_t o = 0; o < rows; ++o) {
         eval_polynomial_rows(&c, a + o * terms, 1, terms, phi, &xa);
         eval_polynomial_rows(&c, a + (rows + o) * terms, 1, terms, phi, &xb);
-        out[o] = bad ? 0.0f : f_add(&c, xa, f_mul(&c, w, f_sub(&c, xb, xa)));
+        const float v = f_add(&c, xa, f_mul(&c, w, f_sub(&c, xb, xa)));
+        out[o] = bad ? 0.0f : v;
     }
     add_ops(ops, &c);
     return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);

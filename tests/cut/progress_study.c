@@ -216,9 +216,9 @@ int main(int argc, char **argv)
             umax = fmax(umax, fabs(a[o]) + st.radius * g);
         }
     }
-    printf("%s: %u output points, %zu solves of s in %.1f s; largest displacement over the "
+    printf("%s: %u output points, %zu values of s solved; largest displacement over the "
            "envelope and s: %.4g mm\n\n",
-           argv[1], n_out, cc.n, cc.seconds, umax);
+           argv[1], n_out, cc.n, umax);
     printf("| model of s | ops per output component | M4F / M7 cycles (%u points) | table bytes | "
            "max between knots (mm) | RMS between knots | max held-out s (mm) | RMS held-out s |\n"
            "|---|---|---|---|---|---|---|---|\n", n_out);
