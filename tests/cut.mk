@@ -55,8 +55,8 @@ cut-pictures: $(B)/bin/tissuefit | deps-validation
 	  out='docs/cutting-cod.png'" tests/cut/cod.gp
 	$(Q)$(B)/bin/tissuefit -q solve tests/cut/slit.yaml -o $(B)/cut/slit.csv --vtk $(B)/cut/slit.vtu
 	$(Q)y=$$(awk -F, 'NR > 1 { print $$3 }' $(B)/cut/slit.csv | sort -gu | sed -n 4p); \
-	  awk -F, -v y=$$y -v scale=1 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/section.dat; \
-	  awk -F, -v y=$$y -v scale=0 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/plain.dat
+	  awk -F, -v y=$$y -v scale=1 -v cx=10 -v cz=5 -f tests/cut/sort.awk -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/section.dat; \
+	  awk -F, -v y=$$y -v scale=0 -v cx=10 -v cz=5 -f tests/cut/sort.awk -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/plain.dat
 	$(Q)gnuplot -e "section='$(B)/cut/section.dat'; plain='$(B)/cut/plain.dat'; out='docs/cutting-slit.png'; scale=1" \
 	  tests/cut/slit_picture.gp
 	@echo "cut: $(B)/cut/table.md, docs/cutting-cod.png, docs/cutting-slit.png, $(B)/cut/slit.vtu (ParaView)"

@@ -18,7 +18,7 @@ for s in 0 0.5 1; do
     "$tf" -q solve "$dir/progress_scene.yaml" --force $force --cut-progress $s \
         --outputs "$dir/progress_$s.csv" --vtk "$dir/progress_$s.vtu" -o /dev/null
     awk -F, -v scale=$scale -v cx=18 -v y0=14 -v y1="$(echo "14 + 20 * $s" | bc -l)" \
-        -f tests/cut/top_lattice.awk "$dir/progress_$s.csv" > "$dir/progress_$s.dat"
+        -f tests/cut/sort.awk -f tests/cut/top_lattice.awk "$dir/progress_$s.csv" > "$dir/progress_$s.dat"
 done
 gnuplot -e "d0='$dir/progress_0.dat'; d1='$dir/progress_0.5.dat'; d2='$dir/progress_1.dat'; \
   s0=0; s1=0.5; s2=1; out='$png'; scale=$scale; force='($force)'" tests/cut/progress_picture.gp

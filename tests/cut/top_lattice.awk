@@ -3,17 +3,10 @@
 # blocks of x + scale ux, y + scale uy; a line along x is broken where it
 # crosses the cut plane x = cx inside the cut's trace y0 <= y <= y1 (the
 # lips), lines along y never cross it.
-# Usage: awk -F, -v scale=S -v cx=18 -v y0=14 -v y1=24 -f top_lattice.awk out.csv
+# Usage: awk -F, -v scale=S -v cx=18 -v y0=14 -v y1=24 -f sort.awk -f top_lattice.awk out.csv
 NR > 1 {
     X[$2] = 1; Y[$3] = 1
     px[$2, $3] = $2 + scale * $5; py[$2, $3] = $3 + scale * $6
-}
-function sort(a, n,    i, j, t) {    # insertion sort, ascending (mawk has no asort)
-    for (i = 2; i <= n; ++i) {
-        t = a[i]
-        for (j = i - 1; j >= 1 && a[j] + 0 > t + 0; --j) a[j + 1] = a[j]
-        a[j + 1] = t
-    }
 }
 END {
     nx = 0; for (x in X) xs[++nx] = x
