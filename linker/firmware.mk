@@ -159,7 +159,8 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_modal_rows_asm tfit_modal_rows_r1 tfit_modal_rows_r2 tfit_modal_rows_r3 \
                  tfit_modal_rows_r4 tfit_modal_rows_r5 tfit_modal_rows_r6 tfit_modal_rows_r7 \
                  tfit_modal_rows_r8 \
-                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter
+                 tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter \
+                 tfit_displacements_cut tfit_cut_progress tfit_cut_rows
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
     host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check

@@ -154,6 +154,14 @@ typedef enum block_id {
     D1R_PATH,       /* tfit_degree1_rows_asm() outside its loops and the odd point */
     D1R_MAIN,       /* loop 1: eight pairs of output points */
     D1R_REM,        /* loop 2: one pair */
+    CUT_ENTRY,      /* tfit_displacements_cut: checks, the calls, the status */
+    CUT_PROGRESS,   /* tfit_cut_progress(): straight-line code */
+    CUT_ROWS_D1,    /* tfit_cut_rows() outside its loops, p = 1 */
+    CUT_D1_POINT,   /* loop 3: one output point at p = 1, both knots */
+    CUT_ROWS_PATH,  /* tfit_cut_rows() outside its loops, p != 1 */
+    CUT_POINT,      /* loop 1: one output point, any p */
+    CUT_P0_SKIP,    /* ... minus the inner-loop set-up that p = 0 skips */
+    CUT_TERM,       /* loop 2: one basis term of the six rows */
     N_BLOCKS
 } block_id;
 
@@ -307,6 +315,30 @@ static const block blocks[N_BLOCKS] = {
                   SAME("alu=2 fldm=8 fstm=8 fwords=240 fadd=144 fmul=144 branch=1")},
     [D1R_REM] = {"tfit_degree1_rows_asm", 2, 1,
                  SAME("alu=1 fldm=1 fstm=1 fwords=30 fadd=18 fmul=18 branch=1")},
+    [CUT_ENTRY] = {"tfit_displacements_cut", 0, 0,
+                   {"alu=33 load=9 store=4 ldm=1 ldm_pc=1 stm=1 words=16 fload=1 fldm=1 fstm=1 "
+                    "fwords=4 fother=2 branch=4 nbranch=5",
+                    "alu=33 load=9 store=4 ldm=1 ldm_pc=1 stm=1 words=16 fload=1 fldm=1 fstm=1 "
+                    "fwords=4 fother=2 branch=4 nbranch=5"}},
+    [CUT_PROGRESS] = {"tfit_cut_progress", 0, 0,
+                      SAME("alu=31 load=1 store=2 ldm_pc=1 stm=1 words=8 fstore=2 fadd=1 fmul=1 "
+                           "fother=6 fmov=8")},
+    [CUT_ROWS_D1] = {"tfit_cut_rows", 0, 0,
+                     {"alu=15 mul=4 mla=2 load=10 store=2 ldm_pc=1 stm=1 words=18 fload=3 fldm=1 "
+                      "fstm=1 fwords=16 branch=1 nbranch=1",
+                      "alu=15 mul=4 mla=2 load=10 store=2 ldm_pc=1 stm=1 words=18 fload=3 fldm=1 "
+                      "fstm=1 fwords=12 branch=1 nbranch=1"}},
+    [CUT_D1_POINT] = {"tfit_cut_rows", 3, 1,
+                      SAME("alu=8 store=3 fload=24 fadd=24 fmul=21 fmov=3 branch=1")},
+    [CUT_ROWS_PATH] = {"tfit_cut_rows", 0, 0,
+                       {"alu=28 mul=4 mla=2 load=8 store=10 ldm_pc=1 stm=1 words=18 fldm=1 fstm=1 "
+                        "fwords=16 nbranch=2",
+                        "alu=28 mul=4 mla=2 load=8 store=10 ldm_pc=1 stm=1 words=18 fldm=1 fstm=1 "
+                        "fwords=12 nbranch=2"}},
+    [CUT_POINT] = {"tfit_cut_rows", 1, 1,
+                   SAME("alu=22 load=11 store=4 fload=6 fadd=6 fmul=3 fmov=3 branch=1 nbranch=1")},
+    [CUT_P0_SKIP] = {"tfit_cut_rows", 0, 0, SAME("alu=8 load=5")},
+    [CUT_TERM] = {"tfit_cut_rows", 2, 2, SAME("alu=2 fldm=7 fwords=7 fadd=6 fmul=6 branch=1")},
 };
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
@@ -539,9 +571,39 @@ static void prony_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+/* A cut model (tfit_cut.c): the entry, the projection, the progress, the
+ * basis, then the rows of both knots per output point: at p = 1 loop 3,
+ * else loop 1 with its term loop (which p = 0 skips by a taken branch). */
+static void cut_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const uint32_t p = m->dims[0], terms = tf_terms(p);
+    add_block(t, core, CUT_ENTRY, 1);
+    add_block(t, core, INPUT_PATH, 1);
+    add_block(t, core, CUT_PROGRESS, 1);
+    basis_mix(t, core, p);
+    if (p == 1) {
+        add_block(t, core, CUT_ROWS_D1, 1);
+        add_loop(t, core, CUT_D1_POINT, m->n_out);
+        return;
+    }
+    add_block(t, core, CUT_ROWS_PATH, 1);
+    add_loop(t, core, CUT_POINT, m->n_out);
+    if (p == 0) {
+        sub_block(t, core, CUT_P0_SKIP, m->n_out);
+        taken(t, m->n_out);
+    } else {
+        add_block(t, core, CUT_TERM, (uint64_t)m->n_out * (terms - 1));
+        falls_through(t, m->n_out);
+    }
+}
+
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
+    if (m->family == TFIT_FAMILY_CUT) {
+        cut_mix(mix, core, m);
+        return;
+    }
     if (m->family == TFIT_FAMILY_PRONY) {
         prony_mix(mix, core, m);
         return;

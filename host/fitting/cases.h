@@ -31,6 +31,7 @@
 #include "solvers/solver.h"
 
 struct tf_histories; /* histories.h */
+struct tf_cut_cases; /* cut_progress.h */
 
 typedef struct tf_cases {
     tf_solver *solver;       /* what solved them (outlives the cases) */
@@ -50,6 +51,10 @@ typedef struct tf_cases {
      * time-dependent solver): what the prony family fits; NULL otherwise.
      * Not owned. */
     const struct tf_histories *hist;
+    /* Responses at a sequence of cut progress values when the plan asks
+     * for them (cut_progress.h): what the cut family fits; NULL otherwise.
+     * Not owned. */
+    const struct tf_cut_cases *cut;
     /* Affine solvers: unit responses at the outputs (3 n_out) and the
      * contact site (3): u(f) = base + sum_k f_k unit[k]. */
     double *base, *unit[3], base_contact[3], unit_contact[3][3];

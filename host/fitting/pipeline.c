@@ -167,6 +167,14 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
         o->has_hist = 1;
         o->cases.hist = &o->hist;
     }
+    if (plan->cut_intervals > 0) {
+        if (tf_cut_cases_solve(p, solver, plan, &o->cut) != 0) {
+            tf_fit_outcome_free(o);
+            return -1;
+        }
+        o->has_cut = 1;
+        o->cases.cut = &o->cut;
+    }
     o->seconds_cases = tf_seconds() - t0;
     warn_large(ctx, p, solver, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
@@ -203,6 +211,10 @@ void tf_fit_outcome_free(tf_fit_outcome *o)
     if (o->has_hist) {
         tf_histories_free(&o->hist);
         o->has_hist = 0;
+    }
+    if (o->has_cut) {
+        tf_cut_cases_free(&o->cut);
+        o->has_cut = 0;
     }
 }
 

@@ -28,6 +28,11 @@ typedef struct tf_fit_plan {
      * ticks between them are interpolated, histories.h). */
     uint32_t tick_ns;
     size_t hist_train, hist_heldout, hist_ticks, hist_solve_every;
+    /* Cut progress (cut_progress.h, the cut family): 0, or the largest
+     * number of intervals K_max in s (a power of two; the knots s = i / K_max
+     * are solved) and how many held-out s values. */
+    uint32_t cut_intervals;
+    size_t cut_heldout;
     /* where the cases of a solver that is not affine are solved: NULL here,
      * or spread over ranks (dist/); the bits are the same */
     const tf_case_runner *runner;

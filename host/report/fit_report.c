@@ -200,6 +200,35 @@ static void rank_table(FILE *f, const tf_family_result *r, const tf_fit_plan *pl
     }
 }
 
+/* The cut family (docs/cutting.md, "Cut progress"): its error by the
+ * number of intervals K at the validation s values, then the emitted
+ * model's at every solved s (training knots, validation, held-out) under
+ * the held-out forces. */
+static void cut_table(FILE *f, const tf_fit_outcome *o, const tf_family_result *r)
+{
+    static const char *const role[] = {"knot (trained)", "between knots (chose K)",
+                                       "held out"};
+    const tf_cut_cases *cc = &o->cut;
+    fprintf(f, "\n## Error against cut progress: %s\n\nIntervals K in s (knots s = k/K), "
+               "by the error at the s values between the finest knots, which no fit sees "
+               "(training forces):\n\n| K | RMS (mm) | max (mm) |\n|---|---|---|\n",
+            r->family->name);
+    for (uint32_t k = 1; k <= cc->knots && k <= TF_FAMILY_MAX_RANK; k *= 2) {
+        fprintf(f, "| %u | %.3g | %.3g |\n", k, r->cv_rank[k], r->heldout_rank[k]);
+    }
+    fprintf(f, "\nThe emitted model (K = %u) at every solved s, held-out forces (%zu):\n\n"
+               "| s | role | max (mm) | RMS (mm) |\n|---|---|---|---|\n",
+            r->model->dims[1], o->cases.heldout.n_cases);
+    for (size_t i = 0; i < cc->n; ++i) {
+        double max, sum2;
+        if (tf_cut_cases_errors(r->model, cc, i, &o->cases.heldout, &max, &sum2) != 0) {
+            return;
+        }
+        fprintf(f, "| %.4f | %s | %.3g | %.3g |\n", (double)cc->s[i], role[cc->role[i]], max,
+                sqrt(sum2 / ((double)o->cases.heldout.n_cases * (double)cc->rows)));
+    }
+}
+
 /* The CV table: one column per family that searched a degree. */
 static void cv_table(FILE *f, const tf_fit_outcome *o, const tf_fit_plan *plan)
 {
@@ -294,7 +323,9 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
     fprintf(f, "\n## Cross-validation\n\n![cross-validation](%s_cv.png)\n\n", name);
     cv_table(f, o, plan);
     for (size_t i = 0; i < o->n_families; ++i) {
-        if (searched(o->fam[i].cv_rank, TF_FAMILY_MAX_RANK + 1)) {
+        if (o->fam[i].family->id == TFIT_FAMILY_CUT && o->fam[i].applicable && o->has_cut) {
+            cut_table(f, o, &o->fam[i]);
+        } else if (searched(o->fam[i].cv_rank, TF_FAMILY_MAX_RANK + 1)) {
             rank_table(f, &o->fam[i], plan);
         }
     }

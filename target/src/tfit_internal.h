@@ -208,6 +208,14 @@ void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, flo
  * the evaluators read: family, n_out, n_dims, dims, coef, n_coef, node_ids). */
 void tfit_prony_static(const tfit_model *m, tfit_model *v);
 
+/* The cut family (tfit_cut.c, header-format.md §5.7): s -> the knot j and
+ * weight w of its interval (s clamped onto [0, 1]; returns all ones when
+ * it was clamped, *bad all ones for NaN/Inf, taken as 0); and output
+ * points first .. first + count - 1 at the basis phi, and-ed with keep. */
+uint32_t tfit_cut_progress(float s, uint32_t intervals, uint32_t *knot, float *w, uint32_t *bad);
+void tfit_cut_rows(const tfit_model *m, const float *phi, uint32_t knot, float w, uint32_t first,
+                   uint32_t count, uint32_t keep, float *out);
+
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
 

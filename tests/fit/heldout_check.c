@@ -3,7 +3,10 @@
  * independently of the fitting pipeline: the header is compiled here with
  * the target library and evaluated by tfit_displacements() /
  * tfit_contact_force() (not the host's reference evaluator), at the
- * held-out forces redesigned from the scene's seed and solved afresh.
+ * held-out forces redesigned from the scene's seed and solved afresh.  A
+ * cut forward model (family id 6) is evaluated by tfit_displacements_cut()
+ * at the held-out cut progress values, its scene solved afresh at each
+ * (fitting/cut_progress.h).
  *
  *   heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL
  *
@@ -16,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "fitting/cut_progress.h"
 #include "fitting/force_samples.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
@@ -66,6 +70,77 @@ static int solved_at(const tf_solver *solver, const tf_problem *p, const tf_cont
     return 0;
 }
 
+#if MACRO(PFX, _FORWARD_FAMILY_ID) == 6 /* TFIT_FAMILY_CUT */
+/* The cut model at every held-out s and force, against the scene solved
+ * with its cuts truncated at that s.  Returns 0, or -1 with a message. */
+static int forward_errors(const tf_scene *s, const tf_solver *solver, const double (*held)[3],
+                          size_t n, const double *u, size_t dofs, double *max, double *sum2,
+                          size_t *count)
+{
+    (void)u;
+    (void)dofs;
+    const tfit_model *fwd = &FORWARD;
+    tf_cut_cases cc;
+    if (tf_cut_cases_solve(&s->problem, solver, &s->fit, &cc) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", solver->ctx->err);
+        return -1;
+    }
+    float *out = malloc(cc.rows * sizeof *out);
+    double *truth = malloc(cc.rows * sizeof *truth);
+    for (size_t i = 0; i < cc.n; ++i) {
+        for (size_t j = 0; cc.role[i] == TF_CUT_HELDOUT && j < n; ++j) {
+            const float f[3] = {(float)held[j][0], (float)held[j][1], (float)held[j][2]};
+            if (tfit_displacements_cut(fwd, f, cc.s[i], out) < 0) {
+                return -1;
+            }
+            tf_cut_cases_response(&cc, i, held[j], truth);
+            for (size_t o = 0; o < cc.rows; ++o) {
+                double e = (double)out[o] - truth[o];
+                *max = fmax(*max, fabs(e));
+                *sum2 += e * e;
+            }
+            ++*count;
+        }
+    }
+    free(out);
+    free(truth);
+    tf_cut_cases_free(&cc);
+    return 0;
+}
+#else
+/* The forward model at every held-out force against the fresh solves u, at
+ * the points its outputs name (solved_at). */
+static int forward_errors(const tf_scene *s, const tf_solver *solver, const double (*held)[3],
+                          size_t n, const double *u, size_t dofs, double *max, double *sum2,
+                          size_t *count)
+{
+    const tf_problem *p = &s->problem;
+    const tfit_model *fwd = &FORWARD;
+    float *out = malloc(3 * fwd->n_out * sizeof *out);
+    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
+    int rc = out != NULL && truth != NULL ? 0 : -1;
+    for (size_t i = 0; rc == 0 && i < n; ++i) {
+        const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
+        if (solved_at(solver, p, &p->contacts[s->fit.contact], fwd, u + i * dofs, truth) != 0 ||
+            tfit_displacements(fwd, f, out) < 0) {
+            rc = -1;
+            break;
+        }
+        for (uint32_t j = 0; j < fwd->n_out; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                double e = (double)out[3 * j + (uint32_t)k] - truth[3 * j + (uint32_t)k];
+                *max = fmax(*max, fabs(e));
+                *sum2 += e * e;
+            }
+        }
+        ++*count;
+    }
+    free(out);
+    free(truth);
+    return rc;
+}
+#endif
+
 int main(int argc, char **argv)
 {
     char err[1024];
@@ -102,25 +177,19 @@ int main(int argc, char **argv)
         return 1;
     }
     const tfit_model *fwd = &FORWARD, *con = &CONTACT;
-    float *out = malloc(3 * fwd->n_out * sizeof *out);
-    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
     double fwd_max = 0, fsum2 = 0, con_max = 0, csum2 = 0, crel = 0;
+    size_t fwd_cases = 0;
+    if (forward_errors(s, solver, (const double(*)[3])held, n, u, dofs, &fwd_max, &fsum2,
+                       &fwd_cases) != 0) {
+        fprintf(stderr, "heldout_check: no forward errors at the outputs\n");
+        return 1;
+    }
+    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
     for (size_t i = 0; i < n; ++i) {
-        if (out == NULL || truth == NULL ||
+        if (truth == NULL ||
             solved_at(solver, p, &p->contacts[s->fit.contact], fwd, u + i * dofs, truth) != 0) {
-            fprintf(stderr, "heldout_check: no displacements at the outputs\n");
+            fprintf(stderr, "heldout_check: no displacement at the contact point\n");
             return 1;
-        }
-        const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
-        if (tfit_displacements(fwd, f, out) < 0) {
-            return 1;
-        }
-        for (uint32_t j = 0; j < fwd->n_out; ++j) {
-            for (int k = 0; k < 3; ++k) {
-                double e = (double)out[3 * j + (uint32_t)k] - truth[3 * j + (uint32_t)k];
-                fwd_max = fmax(fwd_max, fabs(e));
-                fsum2 += e * e;
-            }
         }
         const double *tc = truth + 3 * fwd->n_out;
         const float d[3] = {(float)tc[0], (float)tc[1], (float)tc[2]};
@@ -138,7 +207,7 @@ int main(int argc, char **argv)
         }
         crel = fmax(crel, sqrt(e2 / t2));
     }
-    double frms = sqrt(fsum2 / (3.0 * fwd->n_out * (double)n)), crms = sqrt(csum2 / (3.0 * (double)n));
+    double frms = sqrt(fsum2 / (3.0 * fwd->n_out * (double)fwd_cases)), crms = sqrt(csum2 / (3.0 * (double)n));
     printf("held-out, recomputed from the compiled header: forward max %.3g mm rms %.3g mm "
            "(bound %s); contact max %.3g N, rms %.3g N, relative %.3g (bound %s)\n",
            fwd_max, frms, argv[2], con_max, crms, crel, argv[3]);
@@ -153,11 +222,10 @@ int main(int argc, char **argv)
         printf("held-out error beyond its bound\n");
         ok = 0;
     }
+    free(truth);
     free(train);
     free(held);
     free(u);
-    free(out);
-    free(truth);
     tf_solver_destroy(solver);
     tf_scene_free(s);
     return ok ? 0 : 1;

@@ -83,6 +83,11 @@ static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_di
         dims[3] = (uint32_t)pow(10.0, tf_rng_range(r, 3.0, 8.0)); /* 1 us .. 0.1 s */
         *n_dims = TFIT_PRONY_DIMS;
         break;
+    case TFIT_FAMILY_CUT: /* {p, K intervals in s} */
+        dims[0] = pick(r, 0, pmax);
+        dims[1] = pick(r, 1, small ? 4 : 16);
+        *n_dims = TFIT_CUT_DIMS;
+        break;
     default:
         dims[0] = pick(r, 0, pmax);
         *n_dims = 1;

@@ -219,6 +219,18 @@ static void each_bad_scene_has_its_own_message(void **state)
                  (const char *[]){"t.yaml:3:", "cuts.0.depth", "(0, 2]", NULL});
     expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1]], depth: 1}\n",
                  (const char *[]){"t.yaml:3:", "cuts.0.path", NULL});
+    /* cut progress: a power of two on a scene with cuts; held-out values with it */
+    expect_error(1, "name: t\nfit: {cut_intervals: 4}\n",
+                 (const char *[]){"t.yaml:2:", "fit.cut_intervals", "no cuts", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_intervals: 6}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_intervals", "power of two", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_intervals: 128}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_intervals", "1 to 64", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_heldout: 3}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_heldout", "needs fit.cut_intervals", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\n"
+                    "fit: {cut_intervals: 2, cut_heldout: 0}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_heldout", "1 to 100", NULL});
 }
 
 static void override_errors_name_the_override(void **state)
