@@ -566,7 +566,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .rcond_warn = 1e-12,
         .colloc = tf_colloc_settings_default(),
         .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
-                   .tangent = TF_TANGENT_FULL, .krylov_max = 100},
+                   .tangent = TF_TANGENT_BFGS, .krylov_max = 100},
         .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
