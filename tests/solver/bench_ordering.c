@@ -50,7 +50,7 @@ static int one_ordering(const char *const *sets, size_t ns, const char *ord, dou
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", all, ns + 1, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", all, ns + 1, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "bench_ordering: %s\n", err);
         return -1;

@@ -69,7 +69,7 @@ static int cut_cases(fixture *x)
 {
     char err[512];
     const char *sets[] = {"cuts=[{path: [[18, 14], [18, 34]], depth: 3}]"};
-    x->cut_scene = tf_scene_load("coeffs/block48.yaml", sets, 1, err, sizeof err);
+    x->cut_scene = tf_scene_load("tests/solver/block48_seed.yaml", sets, 1, err, sizeof err);
     if (x->cut_scene == NULL) {
         print_error("%s\n", err);
         return -1;
