@@ -372,12 +372,12 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     }
     double e_max = 0, e2 = 0, big = 0;
     for (size_t h = 0; h < set->n; ++h) {
-        float state[TFIT_PRONY_MAX_STATE];
-        tf_ref_prony_reset(m, state);
+        float state[TFIT_RESONANT_MAX_STATE]; /* prony or resonant */
+        tf_ref_stateful_reset(m, state);
         for (size_t n = 0; n < set->n_ticks; ++n) {
             const double *f = tf_history_force(set, h, n), *u = tf_history_u(set, h, n);
             const float in[3] = {(float)f[0], (float)f[1], (float)f[2]};
-            tf_ref_prony_step(m, state, in, out, NULL);
+            tf_ref_stateful_step(m, state, in, out, NULL);
             for (size_t o = 0; o < rows; ++o) {
                 const double e = (double)out[o] - u[o];
                 e_max = fmax(e_max, fabs(e));

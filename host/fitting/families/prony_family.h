@@ -37,8 +37,8 @@ int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const t
 int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
                          size_t errlen);
 
-/* The float32 model m stepped through every history of set from rest
- * (tf_ref_prony_step), against the true displacements: the largest and RMS
+/* The float32 model m (prony or resonant) stepped through every history of
+ * set from rest (tf_ref_stateful_step), against the true displacements: the largest and RMS
  * error and the largest |displacement| (mm).  Returns 0, or -1 when out of
  * memory. */
 int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double *max,
