@@ -44,32 +44,37 @@ void tfit_resonant_filter(const tfit_model *m, const float g[3], uint32_t keep, 
     float *dst = tfit_select_ptr(keep, state, scratch);
     const uint32_t modes = m->dims[2];
     const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
-    float d[3], hh[3];
+    const float d0 = g[0] - state[0], d1 = g[1] - state[1], d2 = g[2] - state[2];
+    float h0 = g[0], h1 = g[1], h2 = g[2];
     const float *q = state + 3;
     float *qn = dst + 3;
 
-    for (uint32_t i = 0u; i < 3u; ++i) {
-        d[i] = g[i] - state[i];
-        hh[i] = g[i];
-    }
-    for (uint32_t k = 0u; k < modes; ++k) {
+    for (uint32_t k = 0u; k < modes; ++k) { /* the three axes written out, as tfit_prony.c */
         const float f11 = pt[0], f12 = pt[1], f21 = pt[2], f22 = pt[3];
-        for (uint32_t i = 0u; i < 3u; ++i) {
-            const float e1 = q[i] - d[i];
-            const float e2 = q[3u + i];
-            const float s = (f11 * e1) + (f12 * e2);
-            qn[i] = s;
-            qn[3u + i] = (f21 * e1) + (f22 * e2);
-            hh[i] = hh[i] + pt[4u + i] * s;
-        }
+        const float a0 = q[0] - d0, a1 = q[1] - d1, a2 = q[2] - d2;
+        const float v0 = q[3], v1 = q[4], v2 = q[5];
+        const float s0 = (f11 * a0) + (f12 * v0);
+        const float s1 = (f11 * a1) + (f12 * v1);
+        const float s2 = (f11 * a2) + (f12 * v2);
+        qn[0] = s0;
+        qn[1] = s1;
+        qn[2] = s2;
+        qn[3] = (f21 * a0) + (f22 * v0);
+        qn[4] = (f21 * a1) + (f22 * v1);
+        qn[5] = (f21 * a2) + (f22 * v2);
+        h0 = h0 + pt[4] * s0;
+        h1 = h1 + pt[5] * s1;
+        h2 = h2 + pt[6] * s2;
         pt += MODE_FLOATS;
         q += 6;
         qn += 6;
     }
-    for (uint32_t i = 0u; i < 3u; ++i) {
-        dst[i] = g[i];
-        h[i] = tfit_clamp_unit(hh[i]);
-    }
+    dst[0] = g[0];
+    dst[1] = g[1];
+    dst[2] = g[2];
+    h[0] = tfit_clamp_unit(h0);
+    h[1] = tfit_clamp_unit(h1);
+    h[2] = tfit_clamp_unit(h2);
 }
 
 void tfit_resonant_static(const tfit_model *m, tfit_model *v)

@@ -1,0 +1,39 @@
+# resonant.mk — the resonant family's device checks (docs/fitting.md §8,
+# docs/firmware.md §10).
+#
+#   check-resonant     resonant.h (three random resonant models: nodal
+#                      p = 1, nodal p = 3, modal) from gen_random: its golden
+#                      vectors (one tick sequence each) bit-exact in the four
+#                      compiler configurations; 10^6 ticks of a haptic force
+#                      history natively and under QEMU on Cortex-M4F and M7
+#                      against the host reference (tests/prony/long_*.c, the
+#                      prony family's runners); one instruction count for
+#                      every tick whatever the input and state (callgrind)
+
+$(T)/gen/resonant.h: $(T)/gen_random
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< header-resonant 7 $@
+
+$(eval $(call golden_runner,resonant))
+$(eval $(call prony_long,resonant))
+$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_fw,resonant,$(c))))
+$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_qemu,resonant,$(c))))
+
+$(T)/resonant/probe: tests/insncount/probe.c $(T)/gen/resonant.h $(B)/native/libtfit.a
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"resonant_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_RESONANT_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_RESONANT_GOLDEN_Q31_SETS \
+	  -DTFIT_RESONANT_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
+
+.PHONY: check-resonant
+CHECKS += check-resonant
+check-resonant: $(BITEXACT_CONFIGS:%=$(T)/golden-resonant-%) $(T)/prony/long_run-resonant \
+    $(foreach c,$(PRONY_LONG_CORES),$(FW)/$(c)/long-resonant.elf) $(T)/resonant/probe
+	@echo "== resonant models: golden tick sequences, 10^6 ticks native and QEMU (M4F, M7), one instruction count per tick =="
+	@set -e; for c in $(BITEXACT_CONFIGS); do $(T)/golden-resonant-$$c resonant/$$c; done
+	@$(T)/prony/long_run-resonant
+	@$(MAKE) --no-print-directory $(foreach c,$(PRONY_LONG_CORES),prony-long-$(c)-resonant)
+	@tests/insncount/run.sh $(T)/resonant/probe $(T)/resonant/insncount
+	@echo "ok: resonant.h bit-exact (golden, $(words $(BITEXACT_CONFIGS)) configurations; 10^6 ticks natively and under QEMU on $(PRONY_LONG_CORES)), one instruction count per tick"
