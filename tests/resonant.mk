@@ -37,3 +37,16 @@ check-resonant: $(BITEXACT_CONFIGS:%=$(T)/golden-resonant-%) $(T)/prony/long_run
 	@$(MAKE) --no-print-directory $(foreach c,$(PRONY_LONG_CORES),prony-long-$(c)-resonant)
 	@tests/insncount/run.sh $(T)/resonant/probe $(T)/resonant/insncount
 	@echo "ok: resonant.h bit-exact (golden, $(words $(BITEXACT_CONFIGS)) configurations; 10^6 ticks natively and under QEMU on $(PRONY_LONG_CORES)), one instruction count per tick"
+
+# --- the float32 recursion study (docs/fitting.md §8.3; committed result) -------
+$(T)/resonant/recursion_study: tests/resonant/recursion_study.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+.PHONY: resonant-study
+resonant-study: $(T)/resonant/recursion_study
+	@mkdir -p docs/validation
+	@echo "== resonant: float32 error of one mode's update over 10^6 ticks, by omega T and zeta =="
+	@$(T)/resonant/recursion_study 1000000 | tee docs/validation/resonant_recursion.txt
