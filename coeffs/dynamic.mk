@@ -1,11 +1,12 @@
 # dynamic.mk — the shipped dynamic scene (issue 16): block48 struck and
 # released, MLS collocation with explicit dynamics, the resonant family.
 # Apart from SHIPPED_SCENES (coeffs.mk) because its forward model is
-# stateful (check-fit's static held-out check does not apply: its
-# held-out histories are in its report) and because the firmware matrix's
-# cycle model does not describe the resonant family yet (linker/firmware.mk
-# leaves it out of FW_SHIPPED; check-resonant runs it natively and
-# `make resonant-long-qemu` under QEMU).
+# stateful: check-fit's static held-out check does not apply (its held-out
+# histories are in its report, docs/reports/block48_dyn.md).  Its header is
+# in the firmware matrix like every coeffs/*.h (linker/firmware.mk: golden
+# vectors on the QEMU boards, check-cycles); check-resonant runs its golden
+# vectors and 10^6 ticks natively, `make resonant-long-qemu` the 10^6 ticks
+# under QEMU.
 #
 #   make coeffs-dyn     coeffs/block48_dyn.h (+ _golden.h) and
 #                       docs/reports/block48_dyn.md with its plots

@@ -19,9 +19,7 @@
 # (tests/organs.mk): their golden sets exceed the micro:bit's flash.
 
 FW := $(B)/firmware
-# The dynamic headers (DYN_HEADERS, coeffs/dynamic.mk: the resonant family,
-# which the cycle model does not describe yet) run in check-resonant.
-FW_SHIPPED := $(filter-out %_golden.h $(ORGAN_HEADERS) $(DYN_HEADERS),$(wildcard coeffs/*.h))
+FW_SHIPPED := $(filter-out %_golden.h $(ORGAN_HEADERS),$(wildcard coeffs/*.h))
 FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h $(T)/gen/resonant.h \
               $(T)/gen/shapes.h
 fw_name = $(basename $(notdir $(1)))
