@@ -393,10 +393,8 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     return 0;
 }
 
-/* The held-out histories: the error of the float32 model stepped through
- * them; rel_max is the largest error over the largest displacement. */
-static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rms, double *rel_max,
-                   uint32_t *n)
+int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                        double *rel_max, uint32_t *n)
 {
     double peak;
     if (c->hist == NULL || tf_prony_history_errors(m, &c->hist->heldout, max, rms, &peak) != 0) {
@@ -407,7 +405,7 @@ static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rm
     return 0;
 }
 
-static void orders_text(const tf_model *m, int style, char *buf, size_t n)
+void tf_stateful_orders_text(const tf_model *m, int style, char *buf, size_t n)
 {
     char rank[24] = "";
     if (m->dims[1] > 0) {
@@ -428,9 +426,9 @@ const tf_family tf_family_prony = {
     .select = select_orders,
     .fit = fit,
     .candidates = candidates,
-    .orders_text = orders_text,
+    .orders_text = tf_stateful_orders_text,
     .q31 = NULL,
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,
-    .heldout = heldout,
+    .heldout = tf_stateful_heldout,
 };

@@ -44,4 +44,12 @@ int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *e
 int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double *max,
                             double *rms, double *peak);
 
+/* What the stateful families (prony, resonant) share in the registry:
+ * the held-out errors of the float32 model stepped through the cases'
+ * held-out histories (rel_max over the largest displacement there), and
+ * the orders as "p=1 [r=3] K=2 [tick=1000000ns]". */
+int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                        double *rel_max, uint32_t *n);
+void tf_stateful_orders_text(const tf_model *m, int style, char *buf, size_t n);
+
 #endif /* TF_PRONY_FAMILY_H */

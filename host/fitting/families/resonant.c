@@ -214,33 +214,6 @@ static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, siz
     return 0;
 }
 
-/* The held-out histories: the error of the float32 model stepped through
- * them; rel_max is the largest error over the largest displacement. */
-static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rms, double *rel_max,
-                   uint32_t *n)
-{
-    double peak;
-    if (c->hist == NULL || tf_prony_history_errors(m, &c->hist->heldout, max, rms, &peak) != 0) {
-        return -1;
-    }
-    *rel_max = *max / peak;
-    *n = (uint32_t)c->hist->heldout.n;
-    return 0;
-}
-
-static void orders_text(const tf_model *m, int style, char *buf, size_t n)
-{
-    char rank[24] = "";
-    if (m->dims[1] > 0) {
-        snprintf(rank, sizeof rank, " r=%u", m->dims[1]);
-    }
-    if (style == TF_ORDERS_FULL) {
-        snprintf(buf, n, "p=%u%s K=%u tick=%uns", m->dims[0], rank, m->dims[2], m->dims[3]);
-    } else {
-        snprintf(buf, n, "p=%u%s K=%u", m->dims[0], rank, m->dims[2]);
-    }
-}
-
 const tf_family tf_family_resonant = {
     .id = TFIT_FAMILY_RESONANT,
     .name = "resonant",
@@ -249,9 +222,9 @@ const tf_family tf_family_resonant = {
     .select = select_orders,
     .fit = fit,
     .candidates = candidates,
-    .orders_text = orders_text,
+    .orders_text = tf_stateful_orders_text,
     .q31 = NULL,
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,
-    .heldout = heldout,
+    .heldout = tf_stateful_heldout,
 };
