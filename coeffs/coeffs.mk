@@ -16,8 +16,8 @@ ORGAN_HEADERS := coeffs/liver.h coeffs/stomach.h coeffs/heart.h
 # A finer solution of each scene's physics, when one exists: the header then
 # states the solve's error against it (tissuefit fit --reference).
 export PHYSICS_block48 := tests/calculix/data/block48_physics.csv
-# the liver: CalculiX's finest organ level s20r1 at the 72 output vertices
-# within 30 mm of the contact (make calculix-organ-physics; docs/validation.md §14)
+# the liver: CalculiX's finest organ level s20r1 at the 240 output vertices
+# (make calculix-organ-physics; docs/validation.md §14)
 export PHYSICS_liver := tests/calculix/data/liver_physics.csv
 # $$n's reference option, in the shell loops below
 physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; fi

@@ -12,7 +12,7 @@
  *       Q31 form tfit_liver_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 1.22e-07 mm (float32 path: 7.85e-07)
  *       held-out error over 50 cases: max 5.5e-07 mm, rms 6.89e-08 mm
  *       error against the physics: fit 5.5e-07 + discretisation 0.161 = total <= 0.161 mm
- *         (discretisation: tests/calculix/data/liver_physics.csv, 3 load cases at 72 points, bound over the envelope (linear))
+ *         (discretisation: tests/calculix/data/liver_physics.csv, 3 load cases at 240 points, bound over the envelope (linear))
  *   tfit_liver_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)

@@ -315,11 +315,11 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 # --- a build that contracts a*b + c (issue 19) --------------------------------
 # GCC's GNU modes (the default -std=gnu11) and -ffp-contract=fast fuse a*b + c
 # into VFMA on the M4F, which changes bits.  The library's sources ask GCC
-# and Clang for no contraction themselves and refuse -ffast-math
+# and Clang for no contraction themselves and refuse GCC's fast-math mode
 # (tfit_internal.h).  check-contract shows (1) that the unmodified sources
 # built with -std=gnu11 or -ffp-contract=fast contain no fused multiply-add
-# and (2) that -ffast-math stops the build, then (3) that a library whose
-# compiler ignored the pragma (removed here from a copy of the sources) is
+# and (2) that fast-math stops the build (tests/firmware/refuse_fast_math.sh),
+# then (3) that a library whose compiler ignored the pragma (removed here from a copy of the sources) is
 # caught at boot: on mps2-an386 every float model whose golden vectors come
 # out with other bits fails tfit_model_check() with TFIT_ERR_ARITH.  That
 # library is the C path (-DTFIT_PORTABLE): the degree-1 assembly cannot be
@@ -357,17 +357,15 @@ $(foreach h,$(FW_HEADERS),$(eval $(call fw_contract_image,$(h))))
 CHECKS += check-contract
 check-contract: $(foreach v,gnu11 fast unguarded,$(FW_CONTRACT)/$(v)/libtfit.a) \
     $(foreach h,$(FW_HEADERS),$(FW_CONTRACT)/contract-$(call fw_name,$(h)).elf)
-	@echo "== a build that contracts a*b+c: no VFMA from the sources, -ffast-math refused, the boot check catches the rest (M4F, QEMU) =="
+	@echo "== a build that contracts a*b+c: no VFMA from the sources, fast-math refused, the boot check catches the rest (M4F, QEMU) =="
 	@set -e; for v in gnu11 fast; do \
 	  n=$$($(ARM)objdump -d $(FW_CONTRACT)/$$v/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
 	  if [ "$$n" != 0 ]; then echo "the $$v build has $$n fused multiply-adds"; exit 1; fi; done; \
 	  echo "-std=gnu11 and -ffp-contract=fast builds of target/src: 0 fused multiply-adds (the sources' pragma)"
-	@if $(ARM)gcc -std=c11 -ffast-math $(M4F_FLAGS) -Itarget/include -fsyntax-only target/src/tfit_nodal.c \
-	    2>$(FW_CONTRACT)/fast-math.err; then echo "-ffast-math was accepted"; exit 1; fi; \
-	  grep -q "tfit: -ffast-math" $(FW_CONTRACT)/fast-math.err && echo "-ffast-math: refused at compile time"
+	@tests/firmware/refuse_fast_math.sh $(ARM)gcc $(FW_CONTRACT)/fast-math.err $(M4F_FLAGS)
 	@n=$$($(ARM)objdump -d $(FW_CONTRACT)/unguarded/libtfit.a | grep -cE '\svf(n?m[as])\.' || true); \
 	  if [ "$$n" = 0 ]; then echo "the build without the pragma did not contract: the test shows nothing"; exit 1; fi; \
 	  echo "without the pragma, -std=gnu11 contracts: $$n fused multiply-adds in the library"
 	@set -e; for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
 	  tests/firmware/qemu_run.sh mps2-an386 $(FW_CONTRACT)/contract-$$h.elf; done
-	@echo "ok: no contraction from the sources, -ffast-math refused, a contracted library caught at boot"
+	@echo "ok: no contraction from the sources, fast-math refused, a contracted library caught at boot"

@@ -11,8 +11,8 @@
 #                           vertex and over the output vertices; the deck
 #                           writer's patch and counts on a coarse level
 #
-# The committed data are of the outputs within 30 mm (an earlier liver.yaml;
-# docs/validation.md §14): rerun calculix-organ for the 40 mm set.
+# The committed data are of the shipped liver's 240 outputs (within 40 mm
+# of the contact vertex), rerun on 2026-11-24 (docs/validation.md §14).
 # A level is label:spacing:refine[:grade] (organ_deck.c): the liver's
 # surface as it is with the interior at `spacing` mm (graded to `grade` mm
 # near the contact vertex), refined `refine` times (each tetrahedron into
@@ -20,7 +20,7 @@
 # tetrahedra.
 
 ORGAN_SCENE := coeffs/liver.yaml
-# s20r1 (537,042 unknowns) took 24 min and 3.6 GB with one thread; a graded
+# s20r1 (537,042 unknowns) took 13-24 min and 3.6 GB with one thread; a graded
 # refined level (g4r1:20:1:4) would be larger still and was not run.
 ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
 ORGAN_FINEST := s20r1

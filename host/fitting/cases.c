@@ -11,7 +11,6 @@
 #include "base/log.h"
 #include "fitting/case_graph.h"
 #include "fitting/case_runner.h"
-#include "fitting/families/family.h"
 #include "fitting/force_samples.h"
 #include "solvers/probe.h"
 

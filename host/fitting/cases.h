@@ -74,7 +74,10 @@ void tf_cases_free(tf_cases *c);
  * context. */
 int tf_cases_response(tf_cases *c, const double f[3], double *u, double contact[3]);
 
-/* The seed's Table 3 forces (TF_FAMILY_LEVELS levels, families/family.h):
+/* The seed's force levels of its Table 3: 0.2 .. 1.0 of the envelope. */
+#define TF_FAMILY_LEVELS 5
+
+/* The seed's Table 3 forces (TF_FAMILY_LEVELS levels):
  * the envelope centre moved by level / LEVELS of the radius along axis a,
  * rounded to float (level 1 .. LEVELS). */
 void tf_cases_level_force(const tf_fitdata *d, int a, int level, double f[3]);

@@ -31,10 +31,8 @@ typedef struct tf_fit_plan {
     const tf_case_runner *runner;
 } tf_fit_plan;
 
-/* nodal, contact site 0, 100 training and 50 held-out cases, seed 20170912,
- * 5 folds, degrees to 4, ranks to 12, superposed when the solver allows;
- * for a time-dependent solver 12 training and 6 held-out histories of
- * 5000 ticks of 1 ms. */
-void tf_fit_plan_defaults(tf_fit_plan *p);
+/* tf_fit_plan_defaults() is declared by fitting/families/family.h: the
+ * default plan names the registry's nodal family, and the registry sits
+ * above this header (family.h includes it). */
 
 #endif /* TF_FIT_PLAN_H */

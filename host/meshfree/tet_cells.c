@@ -1,6 +1,6 @@
 /*
  * tet_cells.c — tetrahedral cells: rules, geometry and point location
- * (tet_cells.h, quadrature.h).
+ * (tet_cells.h).
  */
 #include "meshfree/tet_cells.h"
 

@@ -20,6 +20,8 @@
 
 #include <stddef.h>
 
+#include "numerics/lm_callbacks.h"
+
 /* Why a fit stopped.  tf_stop_converged() says which ones are success. */
 typedef enum tf_stop {
     TF_STOP_DIRECT = 0,     /* linear model: solved directly by QR (tf_lsfit) */
@@ -49,14 +51,6 @@ typedef enum tf_stop {
 const char *tf_stop_name(tf_stop s);
 /* 1 for DIRECT, REDUCTION, STEP, GRADIENT, ZERO_RESIDUAL, PRECISION. */
 int tf_stop_converged(tf_stop s);
-
-/* r[0..m-1] = residuals at p[0..n-1].  Non-finite residuals are allowed
- * (they mark points outside the model's domain).  Return 0, or non-zero to
- * abort the fit (TF_STOP_CALLBACK). */
-typedef int (*tf_lm_residual_fn)(void *ctx, const double *p, double *r);
-/* jac[i + j*m] = d r_i / d p_j at p (column-major, m x n).  Return 0 or
- * non-zero to abort. */
-typedef int (*tf_lm_jacobian_fn)(void *ctx, const double *p, double *jac);
 
 typedef struct tf_lm_problem {
     size_t m, n;                 /* residuals, parameters (1 <= n) */

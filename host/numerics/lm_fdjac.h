@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#include "numerics/lm.h"
+#include "numerics/lm_callbacks.h"
 
 typedef struct tf_fdjac {
     tf_lm_residual_fn residual;

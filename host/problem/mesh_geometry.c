@@ -13,13 +13,6 @@
 #include "geometry/surface_read.h"
 #include "geometry/tetmesh_check.h"
 
-void tf_problem_mesh_free(tf_mesh_geometry *g)
-{
-    tf_tetmesh_free(&g->tm);
-    free(g->file_xyz);
-    g->file_xyz = NULL;
-}
-
 /* Read, clean, keep the file-frame coordinates, place, check (the steps of
  * tf_surface_load with a copy taken before the transform). */
 static int load_surface(tf_mesh_geometry *g, tf_surface *s, tf_geom_msg *m)

@@ -27,8 +27,6 @@
  * TF_GEOM_FAILED, with m->error; g owns nothing on failure. */
 int tf_problem_mesh_build(tf_mesh_geometry *g, tf_geom_msg *m);
 
-void tf_problem_mesh_free(tf_mesh_geometry *g);
-
 /* The node cloud of the organ (a copy of the mesh's nodes; spacing: the
  * interior spacing on every axis).  Returns 0, or -1 when out of memory. */
 int tf_problem_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c);

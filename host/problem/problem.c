@@ -7,7 +7,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "problem/mesh_geometry.h"
+void tf_problem_mesh_free(tf_mesh_geometry *g)
+{
+    tf_tetmesh_free(&g->tm);
+    free(g->file_xyz);
+    g->file_xyz = NULL;
+}
 
 void tf_problem_release(tf_problem *p)
 {

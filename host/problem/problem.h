@@ -61,6 +61,11 @@ typedef struct tf_mesh_geometry {
     char notes[1024];       /* repairs made while reading, one per line */
 } tf_mesh_geometry;
 
+/* Frees what g owns (its tetrahedra and file-frame vertices), not g itself;
+ * here with the type rather than in mesh_geometry.c, so that tf_problem_release
+ * does not reach up into the organ builder. */
+void tf_problem_mesh_free(tf_mesh_geometry *g);
+
 typedef struct tf_geometry {
     tf_geometry_kind kind;
     union {

@@ -19,15 +19,6 @@
 #include "solvers/collocation/colloc_solver.h"
 #include "solvers/solver.h"
 
-int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
-{
-    va_list ap;
-    snprintf(is->path, sizeof is->path, "%s", path);
-    va_start(ap, fmt);
-    vsnprintf(is->msg, sizeof is->msg, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 #define fail sd_fail
 
 /* "prefix.k.key" into buf. */

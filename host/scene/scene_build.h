@@ -9,27 +9,13 @@
 
 #include "fitting/plan.h"
 #include "problem/problem.h"
+#include "scene/scene_issue.h"
 #include "scene/scene_schema.h"
-
-/* What is wrong and where: the path of the offending value (scene_schema.h
- * syntax) and a message. */
-typedef struct sd_issue {
-    char path[128];
-    char msg[768]; /* room for a geometry message (geom_msg.h) and its context */
-} sd_issue;
-
-/* Records the issue at path (a printf format); returns -1. */
-int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
 
 /* Fills p (zeroed by the caller, its name and source set) and the plan
  * from doc.  Returns 0, or -1 with the issue; p may then hold partial
  * allocations for tf_problem_release. */
 int sd_build(const sd_scene *doc, tf_problem *p, tf_fit_plan *plan, sd_issue *is);
-
-/* Records the issue (the field's path and a message) and returns -1. */
-int sd_fail(sd_issue *is, const char *path, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
 
 /* Solver defaults (docs/scene-format.md) for a grid of nodes. */
 tf_solver_opts sd_solver_defaults(const unsigned grid[3]);

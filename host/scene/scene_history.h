@@ -7,7 +7,8 @@
 #define TF_SCENE_HISTORY_H
 
 #include "problem/problem.h"
-#include "scene/scene_build.h"
+#include "scene/scene_issue.h"
+#include "scene/scene_schema.h"
 
 /* Fills p->history from d (NULL: no history).  The contact sites must be
  * resolved already.  Returns 0, or -1 with the issue. */

@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "problem/problem.h"
-#include "scene/scene_build.h"
+#include "scene/scene_issue.h"
 #include "scene/scene_schema.h"
 
 /* geometry.surface, .spacing and .refine into s->geometry (a mesh) and

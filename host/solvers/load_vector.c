@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "meshfree/tet_cells.h"
 #include "problem/analytic.h"
 
 /* Traction at x: a uniform force per area (ncol = 1), the three unit

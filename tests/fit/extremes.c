@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fitting/families/family.h"
 #include "fitting/pipeline.h"
 #include "fitting/force_samples.h"
 #include "model/ref_eval.h"

@@ -5,7 +5,9 @@
 #     highest (host.mk's HOST_LAYERS); a subfolder belongs to its top folder;
 #   - every #include "..." names a file from DIR ("solvers/solver.h") or
 #     target/include ("tfit.h"), and no file includes a higher layer;
-#   - the include graph between files has no cycle (tsort finds it).
+#   - the include graph between files has no cycle (tsort finds it), nor
+#     the graph between modules, a .c and its .h taken as one (x.c including
+#     y.h while y.c includes x.h is a cycle of modules though no file loops).
 # Prints one line per violation and the verdict; exits 1 on any violation.
 set -u
 dir=$1 layers=$2
@@ -73,10 +75,21 @@ if [ -s "$tmp/graph" ] && ! tsort "$tmp/graph" >/dev/null 2>"$tmp/tsort"; then
     bad=1
 fi
 
+# the same graph between modules: x.c and x.h are one node
+if [ -s "$tmp/graph" ]; then
+    awk '{ a = $1; b = $2; sub(/\.[ch]$/, "", a); sub(/\.[ch]$/, "", b); if (a != b) print a, b }' \
+        "$tmp/graph" >"$tmp/modules"
+    if [ -s "$tmp/modules" ] && ! tsort "$tmp/modules" >/dev/null 2>"$tmp/tsort"; then
+        echo "include cycle between modules (a .c and its .h as one):"
+        sed -n 's/^tsort: /  /p' "$tmp/tsort" | grep -v "input contains a loop"
+        bad=1
+    fi
+fi
+
 files=$(find "$dir" -name '*.[ch]' | wc -l)
 edges=$(wc -l <"$tmp/includes")
 if [ "$bad" != 0 ]; then
     echo "FAIL: host/ include structure ($files files, $edges includes)"
     exit 1
 fi
-echo "ok: host/ include structure: $files files, $edges includes, $(echo $layers | wc -w) layers, no upward include, no cycle"
+echo "ok: host/ include structure: $files files, $edges includes, $(echo $layers | wc -w) layers, no upward include, no cycle between files or modules"

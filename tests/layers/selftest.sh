@@ -2,7 +2,7 @@
 # selftest.sh "LAYER..." MUTABLE.o CONST.o — the two structure checkers are
 # shown what they must reject, and must reject it for the right reason:
 # check_includes.sh on copies of host/ with an upward include, an include
-# cycle, a file in host/ itself and a folder outside the layer list;
+# cycle, a cycle of modules, a file in host/ itself and a folder outside the layer list;
 # check_globals.sh on an object with mutable statics (and must accept one
 # with constant tables and an OpenMP critical section).
 set -u
@@ -39,6 +39,9 @@ rejects "base/log.c including cli/cli.h" "upward include of \"cli/cli.h\"" \
 broken 'echo "#include \"base/log.h\"" >>base/context.h'
 rejects "base/context.h and base/log.h including each other" "include cycle" \
     "$here/check_includes.sh" "$tmp/host" "$layers"
+broken 'echo "#include \"base/log.h\"" >>base/context.c'
+rejects "base/context.c including base/log.h, whose .c includes base/context.h" \
+    "include cycle between modules" "$here/check_includes.sh" "$tmp/host" "$layers"
 broken 'echo "int x;" >stray.c'
 rejects "a file in host/ itself" "host/stray.c: only host.mk" \
     "$here/check_includes.sh" "$tmp/host" "$layers"

@@ -28,7 +28,6 @@
 #include "model/q31.h"
 
 #define TF_FAMILY_MAX_RANK 24 /* ranks a family with a rank (modal) searches and tabulates */
-#define TF_FAMILY_LEVELS 5    /* the seed's force levels: 0.2 .. 1.0 of the envelope */
 
 typedef struct tf_family tf_family;
 
@@ -142,5 +141,12 @@ void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *
 int tf_family_cv_error(const tf_family *f, const tf_cases *c, const uint32_t *orders,
                        unsigned folds, uint64_t seed, double *rms, double *max, char *err,
                        size_t errlen);
+
+/* The default fit plan (plan.h): nodal, contact site 0, 100 training and
+ * 50 held-out cases, seed 20170912, 5 folds, degrees to 4, ranks to 12,
+ * superposed when the solver allows; for a time-dependent solver 12
+ * training and 6 held-out histories of 5000 ticks of 1 ms.  Here rather
+ * than beside plan.h because it names a family of the registry (registry.c). */
+void tf_fit_plan_defaults(tf_fit_plan *p);
 
 #endif /* TF_FAMILY_H */

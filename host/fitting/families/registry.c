@@ -58,3 +58,11 @@ void tf_family_names(tf_family_kind kind, char *out, size_t outlen)
         }
     }
 }
+
+void tf_fit_plan_defaults(tf_fit_plan *p)
+{
+    *p = (tf_fit_plan){.family = tf_family_find("nodal"), .contact = 0, .n_train = 100,
+                       .n_heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
+                       .max_rank = 12, .tick_ns = 1000000, .hist_train = 12,
+                       .hist_heldout = 6, .hist_ticks = 5000};
+}

@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "base/rng.h"
+#include "fitting/families/family.h"
 #include "fitting/families/prony_family.h"
 #include "fitting/plan.h"
 #include "fitting/prony_terms.h"

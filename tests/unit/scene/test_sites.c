@@ -27,6 +27,7 @@
 #include <cmocka.h>
 
 #include "base/context.h"
+#include "fitting/families/family.h"
 #include "fitting/cases.h"
 #include "scene/scene.h"
 #include "solvers/probe.h"
