@@ -10,7 +10,7 @@
 
 #include "base/context.h"
 #include "base/rng.h"
-#include "model/resonant.h"
+#include "model/oscillator.h"
 
 #define MAX_RAMPS 8
 

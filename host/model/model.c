@@ -6,7 +6,7 @@
  */
 #include "model/model.h"
 
-#include "model/resonant.h"
+#include "model/oscillator.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -353,7 +353,8 @@ static int validate_prony(const tf_model *m, char *err, size_t errlen)
 static int validate_resonant(const tf_model *m, char *err, size_t errlen)
 {
     for (uint32_t k = 0; k < m->dims[2]; ++k) {
-        if (tf_resonant_mode_check(m, k, err, errlen) != 0) {
+        if (tf_resonant_floats_check(m->coef + TFIT_INPUT_MAP_FLOATS + 7 * k, m->name, k, err,
+                                     errlen) != 0) {
             return 1;
         }
     }
