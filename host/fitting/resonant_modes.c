@@ -83,6 +83,9 @@ static int project_out(fit *f, const double *p, double *r)
         }
         for (int k = 0; k < f->k; ++k) {
             f->w[k][c] = f->b[k];
+            if (!(fabs(f->b[k]) <= TF_RESONANT_MAX_WEIGHT)) {
+                return -1; /* cancelling modes, not a body's: outside the domain */
+            }
         }
         for (size_t t = 0; t < rows; ++t) {
             double s = yc[t];
@@ -206,6 +209,13 @@ int tf_resonant_fit_modes(const tf_prony_data *d, const size_t *idx, size_t n, i
                           const tf_resonant_bounds *b, tf_resonant_modes *out, char *err,
                           size_t errlen)
 {
+    return tf_resonant_fit_modes_from(d, idx, n, k, b, TF_RESONANT_STARTS, out, err, errlen);
+}
+
+int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                               const tf_resonant_bounds *b, int n_starts, tf_resonant_modes *out,
+                               char *err, size_t errlen)
+{
     if (k < 0 || k > MAXK) {
         snprintf(err, errlen, "resonant: %d modes (0 .. %d)", k, MAXK);
         return -1;
@@ -228,7 +238,7 @@ int tf_resonant_fit_modes(const tf_prony_data *d, const size_t *idx, size_t n, i
             snprintf(err, errlen, "resonant: out of memory");
             return -1;
         }
-        const int starts = have == 0 ? 1 : TF_RESONANT_STARTS;
+        const int starts = have == 0 ? 1 : n_starts;
         double level_best = INFINITY, level_p[2 * MAXK] = {0}, level_w[MAXK][3] = {{0}};
         for (int s = 0; s < starts; ++s) {
             memcpy(p, best_p, 2 * (size_t)kk * sizeof *p);

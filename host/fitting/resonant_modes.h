@@ -19,7 +19,8 @@
  * Modes are added one at a time: K modes start from the K - 1 fitted ones
  * and a new one tried at TF_RESONANT_STARTS frequencies spread log-evenly
  * over the bounds (the best after LM on all of them is kept), because the
- * residual is far from convex in a frequency.
+ * residual is far from convex in a frequency.  Weights beyond
+ * TF_RESONANT_MAX_WEIGHT in magnitude are outside the domain.
  */
 #ifndef TF_RESONANT_MODES_H
 #define TF_RESONANT_MODES_H
@@ -30,6 +31,10 @@
 #include "model/model.h"
 
 #define TF_RESONANT_STARTS 8
+/* A weight beyond this marks modes that cancel each other (a slow creep
+ * fitted by a near-static mode times 10^7, say), not a body's ringing: the
+ * point is outside the model's domain (non-finite residual) for the LM. */
+#define TF_RESONANT_MAX_WEIGHT 8.0
 
 typedef struct tf_resonant_modes {
     int n;
@@ -51,6 +56,12 @@ typedef struct tf_resonant_bounds {
 int tf_resonant_fit_modes(const tf_prony_data *d, const size_t *idx, size_t n, int k,
                           const tf_resonant_bounds *b, tf_resonant_modes *out, char *err,
                           size_t errlen);
+
+/* The same from n_starts frequencies for each new mode (cheaper, for
+ * cross-validation's many fits). */
+int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                               const tf_resonant_bounds *b, int n_starts, tf_resonant_modes *out,
+                               char *err, size_t errlen);
 
 /* RMS of h - target over histories idx[0..n) (idx NULL: all). */
 double tf_resonant_modes_rms(const tf_prony_data *d, const size_t *idx, size_t n,

@@ -31,6 +31,7 @@
 #include "fitting/resonant_modes.h"
 #include "model/basis.h"
 #include "model/resonant.h"
+#include "model/oscillator.h"
 
 extern const tf_family tf_family_resonant;
 
@@ -39,13 +40,33 @@ static const tf_family *static_family(uint32_t r)
     return tf_family_find(r == 0 ? "nodal" : "modal");
 }
 
+/* The lowest omega whose mode the float recursion carries at zeta_lo
+ * (tf_resonant_params_check; the margin grows with omega T and zeta, so
+ * every mode of the box above it passes), by bisection in log omega. */
+static double lowest_carried(double tick, double zeta_lo, double omega_hi)
+{
+    char err[512];
+    double lo = 1e-6 * omega_hi, hi = omega_hi;
+    for (int it = 0; it < 60; ++it) {
+        const double mid = sqrt(lo * hi);
+        if (tf_resonant_params_check(mid, zeta_lo, tick, err, sizeof err) == 0) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return 1.05 * hi; /* clear of the rounding's few per cent */
+}
+
 void tf_resonant_bounds_for(const tf_histories *h, tf_resonant_bounds *b)
 {
     const double length = (double)h->train.n_ticks * h->tick;
-    b->omega_hi = TF_RESONANT_MAX_WT / h->tick;
-    b->omega_lo = fmin(0.5 * b->omega_hi, 2 * 6.28318530717958647692 / length);
-    b->zeta_lo = 1e-3;
+    b->zeta_lo = TF_RESONANT_ZETA_LO;
     b->zeta_hi = 1.0;
+    b->omega_hi = TF_RESONANT_MAX_WT / h->tick;
+    b->omega_lo = fmin(0.5 * b->omega_hi,
+                       fmax(2 * 6.28318530717958647692 / length,
+                            lowest_carried(h->tick, b->zeta_lo, b->omega_hi)));
 }
 
 tf_model *tf_resonant_assemble(const tf_model *s, const tf_resonant_modes *t, uint32_t tick_ns,
@@ -128,7 +149,8 @@ int tf_resonant_select_modes(const tf_prony_data *d, const tf_histories *h,
                 }
             }
             tf_resonant_modes t;
-            if (tf_resonant_fit_modes(d, idx, nt, k, &b, &t, err, errlen) != 0) {
+            if (tf_resonant_fit_modes_from(d, idx, nt, k, &b, TF_RESONANT_CV_STARTS, &t, err,
+                                           errlen) != 0) {
                 break;
             }
             for (size_t i = 0; i < n; ++i) {

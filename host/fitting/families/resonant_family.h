@@ -14,11 +14,17 @@
 #include "fitting/resonant_modes.h"
 #include "model/model.h"
 
-/* Modes the order search tries: K = 0 .. this. */
+/* Modes the order search tries: K = 0 .. this; frequency starts per new
+ * mode in its cross-validation's fits. */
 #define TF_RESONANT_SEARCH_MODES 3
+#define TF_RESONANT_CV_STARTS 3
+#define TF_RESONANT_ZETA_LO 0.005
 
-/* omega from two periods over the history's length (or half the upper
- * bound) to TF_RESONANT_MAX_WT / T; zeta from 1e-3 to 1. */
+/* zeta from TF_RESONANT_ZETA_LO to 1; omega from two periods over the
+ * history's length, or the lowest the float recursion carries at the
+ * lowest zeta if higher (model/oscillator.h: at a 1 ms tick about 10 Hz),
+ * to TF_RESONANT_MAX_WT / T: every mode in the box is one the device can
+ * run. */
 void tf_resonant_bounds_for(const tf_histories *h, tf_resonant_bounds *b);
 
 /* K = 0 .. TF_RESONANT_SEARCH_MODES by cross-validation over the histories
