@@ -8,7 +8,8 @@
 #                  header, compiled, and fresh solves; `tissuefit fit`
 #                  refusing bad scenes
 
-SHIPPED_SCENES := coeffs/block48.yaml coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml
+SHIPPED_SCENES := coeffs/block48.yaml coeffs/block48_nh.yaml coeffs/liver.yaml coeffs/stomach.yaml \
+                  coeffs/heart.yaml coeffs/block48_cut.yaml
 # The organ headers (issue 15, tests/organs.mk): their golden files run to
 # megabytes, so the firmware matrix (linker/firmware.mk) runs them on the
 # Cortex-M4F only, in check-organs.
@@ -19,9 +20,20 @@ export PHYSICS_block48 := tests/calculix/data/block48_physics.csv
 # the liver: CalculiX's finest organ level s20r1 at the 240 output vertices
 # (make calculix-organ-physics; docs/validation.md §14)
 export PHYSICS_liver := tests/calculix/data/liver_physics.csv
+# block48_ve (seed 001's Kelvin law, the prony family) has no reference of its
+# own physics: its header states block48's static solve's relative error at
+# the same grid against CalculiX, as an assumption (docs/fitting.md §7.6):
+# 0.103151 mm over the envelope / 2.32027 mm peak (|u_z| of node 61 at 1 N)
+# = 4.45 %; the contact site's 7.11 % (coeffs/block48.h).
+export DISCREL_block48_ve := 0.0445,0.0711
 # $$n's reference option, in the shell loops below
-physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; fi
+physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; \
+  else ref=$$(eval echo \$${DISCREL_$$n}); if [ -n "$$ref" ]; then ref="--discretisation-rel $$ref"; fi; fi
 SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
+# Every shipped header make coeffs writes and check-coeffs compares: the
+# viscoelastic block48_ve's prony model is checked by tests/prony.mk
+# (check-prony-long, check-prony-ve), not by check-fit's static bounds.
+COEFF_SCENES := $(SHIPPED_SCENES) coeffs/block48_ve.yaml
 REPORTS := docs/reports
 
 .PHONY: coeffs check-coeffs check-fit
@@ -29,13 +41,13 @@ CHECKS += check-coeffs check-fit
 
 coeffs: $(B)/bin/tissuefit | deps-demo
 	@mkdir -p $(REPORTS)
-	@set -e; for s in $(SHIPPED_SCENES); do \
+	@set -e; for s in $(COEFF_SCENES); do \
 	  echo "== $$s -> $${s%.yaml}.h"; n=$$(basename $$s .yaml); $(physics_arg); \
 	  $(B)/bin/tissuefit fit $$s -o $${s%.yaml}.h --report $(REPORTS) $$ref; done
 
 check-coeffs: $(B)/bin/tissuefit
 	@echo "== shipped headers: regenerated (1 and 2 threads) = committed, byte for byte =="
-	@set -e; for s in $(SHIPPED_SCENES); do \
+	@set -e; for s in $(COEFF_SCENES); do \
 	  h=$${s%.yaml}.h; n=$$(basename $$h .h); $(physics_arg); \
 	  for t in 1 2; do mkdir -p $(B)/coeffs/t$$t; \
 	    OMP_NUM_THREADS=$$t $(B)/bin/tissuefit -q fit $$s -o $(B)/coeffs/t$$t/$$n.h $$ref; \
@@ -69,12 +81,17 @@ $(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefi
 # degree-1 inverse is exact up to the float32 evaluation's rounding, a few
 # ulps over its ~20 operations; a fit 7 times worse fails).
 CONTACT_REL_BOUND := 4.8e-7
+# A cut model's error is its interpolation in the cut progress s between
+# the solved knots (docs/cutting.md, "Cut progress"): 27 um measured at the
+# held-out s of block48_cut, of 2.36 mm; the bound is twice that.
+export FORWARD_BOUND_block48_cut := 0.055
 check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
-	  printf '%s: ' $$n; $(T)/heldout-$$n $$s 0.001 $(CONTACT_REL_BOUND); done
+	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); \
+	  printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $(CONTACT_REL_BOUND); done
 	@echo "== material extremes: the stated bound holds at fresh forces =="
-	@$(T)/extremes coeffs/block48.yaml 2>/dev/null
+	@$(T)/extremes tests/solver/block48_seed.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="
 	@tests/fit/cli_fit.sh $(B)/bin/tissuefit
 	@echo "== tissuefit sweep and budget-driven choice =="
@@ -82,12 +99,18 @@ check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T
 
 # The speed-for-accuracy sweep of each shipped scene (docs/tradeoff.md); the
 # native times are this machine's.
+# block48_nh ships a rank <= 8 model (its fit: section), but its sweep
+# shows the degrees and ranks beyond (docs/tradeoff.md §5); its scene
+# outputs only, because a nonlinear scene re-solves its 465 load cases for
+# every output set (about 6 minutes each here).
+export SWEEP_block48_nh := --set fit.max_degree=6 --set fit.max_rank=12 --outputs scene
 .PHONY: tradeoff
 tradeoff: $(B)/bin/tissuefit | deps-demo
 	@mkdir -p $(REPORTS)
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
+	  args=$$(eval echo \$${SWEEP_$$n}); \
 	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
-	    --png $(REPORTS)/$${n}_sweep.png; done
+	    --png $(REPORTS)/$${n}_sweep.png $$args; done
 
 # Material extremes through the whole pipeline (issue 7 item 3).
 $(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a | deps-check
@@ -102,4 +125,4 @@ REGEN_RUNS ?= 3
 BENCHES += bench-regen
 bench-regen: $(B)/bin/tissuefit
 	@echo "== time to regenerate each shipped header: setup, solves, fits, header =="
-	@tests/bench/bench_regen.sh $(B)/bin/tissuefit $(REGEN_RUNS) $(SHIPPED_SCENES)
+	@tests/bench/bench_regen.sh $(B)/bin/tissuefit $(REGEN_RUNS) $(COEFF_SCENES)

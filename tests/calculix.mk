@@ -119,6 +119,17 @@ CALCULIX_NL_LOAD_LEVELS := 10
 CALCULIX_NL_COMPARE := h2.4:C3D20R
 CALCULIX_NL_EXTRA :=
 CALCULIX_NL_SMALL := h2.4
+# Graded levels name:fine:least:layers:ratio, coarse to fine (box_deck
+# --grade FINE:LEAST --layers L --layer-ratio R: FINE elements per 2.4 mm
+# quantum under the patch, 0.7 times fewer per quantum away from it, at
+# least LEAST; layers thinnest at the top, each R times the one above), and
+# the runs on each (material:path[:factor], the check holding node 61 of
+# the two finest graded levels to CALCULIX_NL_GRADED_BOUND up to factor):
+# the reference the meshless curves are compared with (docs/validation.md
+# §12; docs/calculix-reference.md, "Graded levels").
+CALCULIX_NL_GRADED := g1.2:2:1:3:1.6 g0.6:4:2:4:1.6
+CALCULIX_NL_GRADED_RUNS := neohooke:a
+CALCULIX_NL_GRADED_BOUND := 0.04
 CALCULIX_NL_SMALL_FACTORS := 0.001 0.01
 # The check: node 61 of the two finest levels within CONV_BOUND (relative) at
 # every load level up to CONV_FACTOR of the force; the small-load runs within
@@ -131,7 +142,9 @@ CX_NL_LEVEL_NAMES := $(foreach l,$(CALCULIX_NL_LEVELS),$(firstword $(subst :, ,$
 CX_NL_PATH_ARGS := $(call cx_list,$(foreach p,$(CALCULIX_NL_PATHS),$(subst $(cx_comma),:,$(word 1,$(subst :, ,$(p))):$(word 2,$(subst :, ,$(p))))))
 CX_NL_CHECK_ARGS := $(call cx_list,$(CX_NL_LEVEL_NAMES)) $(call cx_list,$(CALCULIX_NL_MATERIALS)) \
                     $(CX_NL_PATH_ARGS) $(CALCULIX_NL_LOAD_LEVELS) $(CALCULIX_NL_ELEMENT) \
-                    $(CALCULIX_NL_CONV_BOUND) $(CALCULIX_NL_CONV_FACTOR) $(CALCULIX_NL_SMALL_SLOPE)
+                    $(CALCULIX_NL_CONV_BOUND) $(CALCULIX_NL_CONV_FACTOR) $(CALCULIX_NL_SMALL_SLOPE) \
+                    $(call cx_list,$(foreach g,$(CALCULIX_NL_GRADED),$(firstword $(subst :, ,$(g))))) \
+                    $(call cx_list,$(CALCULIX_NL_GRADED_RUNS)) $(CALCULIX_NL_GRADED_BOUND)
 
 .PHONY: calculix-nlgeom calculix-nlgeom-report check-calculix-nlgeom
 CHECKS += check-calculix-nlgeom
@@ -141,7 +154,8 @@ calculix-nlgeom: $(CX)/box_deck | deps-calculix
 	  NL_MATERIALS="$(CALCULIX_NL_MATERIALS)" NL_PATHS="$(CALCULIX_NL_PATHS)" \
 	  NL_LOAD_LEVELS=$(CALCULIX_NL_LOAD_LEVELS) NL_COMPARE="$(CALCULIX_NL_COMPARE)" \
 	  NL_EXTRA="$(CALCULIX_NL_EXTRA)" NL_SMALL="$(CALCULIX_NL_SMALL)" \
-	  NL_SMALL_FACTORS="$(CALCULIX_NL_SMALL_FACTORS)" \
+	  NL_SMALL_FACTORS="$(CALCULIX_NL_SMALL_FACTORS)" NL_GRADED="$(CALCULIX_NL_GRADED)" \
+	  NL_GRADED_RUNS="$(foreach r,$(CALCULIX_NL_GRADED_RUNS),$(word 1,$(subst :, ,$(r))):$(word 2,$(subst :, ,$(r))))" \
 	  tests/calculix/run_nlgeom.sh $< $(CX)/nl $(CX_DATA)
 	@$(MAKE) --no-print-directory calculix-nlgeom-report check-calculix-nlgeom
 

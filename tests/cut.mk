@@ -11,6 +11,11 @@
 #                    below; rewrites tests/cut/data, docs/cutting-cod.png,
 #                    docs/cutting-slit.png and build/cut/table.md (about
 #                    20 minutes; not part of make check)
+#   cut-progress-pictures  block48_cut's top surface at cut progress 0, 0.5
+#                    and 1 (docs/cutting-progress.png, build/cut/progress_*.vtu)
+#   cut-progress-study  ways of making the cut progress s a model input,
+#                    measured on block48_cut (tests/cut/data/progress_study.md,
+#                    about a minute; not part of make check)
 
 CUT_TOOL := $(T)/cut/cut_tool
 SLIT_DECK := $(B)/calculix/slit_deck
@@ -18,7 +23,7 @@ CUT_CCX_LEVELS := 4 8 16
 CUT_GRIDS := 16,8,8 24,12,12 32,16,16
 CUT_DATA := tests/cut/data
 
-.PHONY: check-cut cut-validation cut-pictures
+.PHONY: check-cut cut-validation cut-pictures cut-progress-pictures cut-progress-study
 CHECKS += check-cut
 
 $(T)/cut/%: tests/cut/%.c $(B)/native/libtissuefit-host.a | deps-build
@@ -50,8 +55,8 @@ cut-pictures: $(B)/bin/tissuefit | deps-validation
 	  out='docs/cutting-cod.png'" tests/cut/cod.gp
 	$(Q)$(B)/bin/tissuefit -q solve tests/cut/slit.yaml -o $(B)/cut/slit.csv --vtk $(B)/cut/slit.vtu
 	$(Q)y=$$(awk -F, 'NR > 1 { print $$3 }' $(B)/cut/slit.csv | sort -gu | sed -n 4p); \
-	  awk -F, -v y=$$y -v scale=1 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/section.dat; \
-	  awk -F, -v y=$$y -v scale=0 -v cx=10 -v cz=5 -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/plain.dat
+	  awk -F, -v y=$$y -v scale=1 -v cx=10 -v cz=5 -f tests/cut/sort.awk -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/section.dat; \
+	  awk -F, -v y=$$y -v scale=0 -v cx=10 -v cz=5 -f tests/cut/sort.awk -f tests/cut/section.awk $(B)/cut/slit.csv > $(B)/cut/plain.dat
 	$(Q)gnuplot -e "section='$(B)/cut/section.dat'; plain='$(B)/cut/plain.dat'; out='docs/cutting-slit.png'; scale=1" \
 	  tests/cut/slit_picture.gp
 	@echo "cut: $(B)/cut/table.md, docs/cutting-cod.png, docs/cutting-slit.png, $(B)/cut/slit.vtu (ParaView)"
@@ -61,3 +66,13 @@ BENCHES += bench-cut
 bench-cut: $(T)/cut/bench_cut
 	@echo "== cuts: shape functions recomputed only where a support meets the cut =="
 	@$(T)/cut/bench_cut tests/cut/slit.yaml geometry.grid=32,16,16 solver.cells=32,16,16
+
+# Cut progress (the cut family, docs/cutting.md "Cut progress").
+cut-progress-pictures: $(B)/bin/tissuefit | deps-validation
+	$(Q)tests/cut/progress_pictures.sh $(B)/bin/tissuefit coeffs/block48_cut.yaml $(B)/cut \
+	  docs/cutting-progress.png
+
+cut-progress-study: $(T)/cut/progress_study
+	$(Q)$(T)/cut/progress_study coeffs/block48_cut.yaml > $(B)/progress_study.md.tmp
+	$(Q)mv $(B)/progress_study.md.tmp $(CUT_DATA)/progress_study.md
+	@cat $(CUT_DATA)/progress_study.md

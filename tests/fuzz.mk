@@ -21,7 +21,7 @@ FUZZ_SAN := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=al
             -fno-omit-frame-pointer
 # clang has no -fno-tree-slp-vectorize (a GCC workaround, host.mk).
 FUZZ_HOST_CFLAGS := $(filter-out -fno-tree-slp-vectorize,$(HOST_CFLAGS)) -O1 -g $(FUZZ_SAN)
-FUZZ_SCENE_SEEDS := coeffs/block48.yaml coeffs/cantilever.yaml tests/solver/patch.yaml \
+FUZZ_SCENE_SEEDS := coeffs/block48.yaml tests/solver/block48_seed.yaml coeffs/cantilever.yaml tests/solver/patch.yaml \
                     $(wildcard tests/fit/scenes/*.yaml)
 DEBS_CHECK += libclang-rt-14-dev libomp-dev
 

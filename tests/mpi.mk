@@ -33,7 +33,7 @@ $(MPI_T)/tissuefit-mpi-variant: $(DIST_OBJ) $(MPI_T)/variant_solver.o \
 
 # block48 with few cases: 12 training, 6 held-out, 3 x 12 single-axis and
 # 15 seed-table cases, 69 in all, every one solved.
-MPI_SCENE := coeffs/block48.yaml
+MPI_SCENE := tests/solver/block48_seed.yaml
 MPI_SETS := --set fit.train=12 --set fit.heldout=6 --set fit.max_degree=2 --set fit.max_rank=4
 # The same scene with the neo-Hookean law (issue 13's Newton solver): every
 # case a nonlinear solve, continued from its nearest solved case.

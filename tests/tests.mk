@@ -126,6 +126,10 @@ $(T)/gen/families.h: $(T)/gen_random
 	@mkdir -p $(@D)
 	$(call say,GEN)
 	$(Q)$< header 7 $@
+$(T)/gen/modal_ranks.h: $(T)/gen_random
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< modal-ranks 14 $@
 $(T)/gen/demo.h: $(B)/bin/tissuefit
 	@mkdir -p $(@D)
 	$(call say,GEN)

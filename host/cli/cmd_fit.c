@@ -36,7 +36,7 @@ static void help(FILE *out)
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
             "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n"
-            "                     [--reference INDEX.csv]\n\n"
+            "                     [--reference INDEX.csv] [--discretisation-rel F,S]\n\n"
             "Solves the scene's load cases (one factorisation), fits every model family\n"
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
@@ -59,6 +59,10 @@ static void help(FILE *out)
             "  --reference F.csv   a finer solution of the same physics (CalculiX, ...):\n"
             "                      the header states the solve's error against it\n"
             "                      beside the fit's (docs/fitting.md, format there)\n"
+            "  --discretisation-rel F,S  without a reference: the solve's error taken\n"
+            "                      from another measurement, relative: F of the forward\n"
+            "                      model's peak displacement, S of the contact site's\n"
+            "                      (stated in the header as assumed, not measured)\n"
             "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
             "                      These three choose among every candidate of\n"
             "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
@@ -73,6 +77,7 @@ typedef struct fit_args {
     const char *scene, *out, *family, *contact, *report, *reference;
     int direct;
     tf_discretisation phys; /* measured when reference != NULL */
+    double disc_rel[2];     /* --discretisation-rel: forward, contact site; NAN: not given */
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
     tf_sets sets;
@@ -99,7 +104,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
         {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
         {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
         {"mcu", required_argument, NULL, 'm'},     {"reference", required_argument, NULL, 'p'},
-        {0}};
+        {"discretisation-rel", required_argument, NULL, 'D'}, {0}};
     char err[256];
     int c;
     optind = 1;
@@ -137,6 +142,15 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
             break;
         case 'e':
             if (positive(ctx, "--max-error-mm", optarg, &a->max_error_mm) != 0) {
+                return -1;
+            }
+            break;
+        case 'D':
+            if (sscanf(optarg, "%lf,%lf", &a->disc_rel[0], &a->disc_rel[1]) != 2 ||
+                !(a->disc_rel[0] > 0 && a->disc_rel[0] < 1) ||
+                !(a->disc_rel[1] > 0 && a->disc_rel[1] < 1)) {
+                tf_error(ctx, "fit: --discretisation-rel '%s': two fractions in (0, 1), F,S",
+                         optarg);
                 return -1;
             }
             break;
@@ -274,6 +288,35 @@ static void state_physics(const tf_discretisation *d, const tf_envelope *env, tf
              d->source, 100 * d->site_rel, d->site_gap, biggest);
 }
 
+/* --discretisation-rel: the solve's error taken as relative figures of
+ * another measurement (a viscoelastic scene's, from the static solve of the
+ * same grid against CalculiX: docs/fitting.md §7.6): the forward model's
+ * times the peak displacement of its held-out cases, the contact site's
+ * times the largest force.  Returns 0, or -1 when the forward model does
+ * not know its peak. */
+static int assume_physics(tf_ctx *ctx, const double rel[2], const tf_envelope *env, tf_model *fwd,
+                          tf_model *con)
+{
+    const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
+    if (!(fwd->heldout_rel_max > 0) || !(fwd->heldout_max > 0)) {
+        tf_error(ctx, "fit: --discretisation-rel: the forward model states no peak displacement "
+                 "(only the prony family's held-out histories do)");
+        return -1;
+    }
+    const double peak = fwd->heldout_max / fwd->heldout_rel_max;
+    fwd->discretisation_max = rel[0] * peak;
+    con->discretisation_max = rel[1] * biggest;
+    snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
+             "assumed, not measured for this law: %.3g %% (another measurement's, "
+             "--discretisation-rel) of the held-out peak displacement %.4g mm",
+             100 * rel[0], peak);
+    snprintf(con->discretisation_note, sizeof con->discretisation_note,
+             "assumed, not measured for this law: contact-site displacement off by %.3g %% "
+             "(--discretisation-rel), times the largest force %.3g N",
+             100 * rel[1], biggest);
+    return 0;
+}
+
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
@@ -289,6 +332,8 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     snprintf(con->name, sizeof con->name, "%s_contact", base);
     if (a->reference != NULL) {
         state_physics(&a->phys, &s->envelope, fwd, con);
+    } else if (!isnan(a->disc_rel[0]) && assume_physics(ctx, a->disc_rel, &s->envelope, fwd, con)) {
+        return TF_EXIT_USAGE;
     }
     uint32_t crc = 0;
     if (tf_file_crc32(a->scene, &crc) != 0) {
@@ -463,7 +508,7 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
 
 int tf_cmd_fit_ranks(tf_ctx *ctx, int argc, char **argv, const tf_fit_ranks *ranks)
 {
-    fit_args a = {.budget_us = NAN, .max_error_mm = NAN};
+    fit_args a = {.budget_us = NAN, .max_error_mm = NAN, .disc_rel = {NAN, NAN}};
     char err[1024];
     tf_scene *s = NULL;
     tf_solver *solver = NULL;

@@ -6,6 +6,10 @@
  * sides) and reports the largest deviation, and draws the deformed output
  * surface at the tick of deepest indentation.
  *
+ * A time-dependent solver (a Kelvin law: the header's prony model) is
+ * stepped through the ticks in time instead, at the scene's fit.tick_us,
+ * from rest: every tick a time step (docs/fitting.md §7.6).
+ *
  * A tick whose force left the envelope is compared with the solve at the
  * force the firmware actually used: its projection onto the envelope.  A
  * rejected tick (NaN/Inf force) must have all-zero outputs.
@@ -254,8 +258,9 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
 
 /* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
 static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int contact,
-                   const ticks *t, const char *png)
+                   const ticks *t, double tick, const char *png)
 {
+    const int timed = (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) != 0;
     const size_t n_out = s->outputs.n_nodes, dofs = 3 * tf_solver_node_count(solver);
     double *forces = malloc(t->n * 3 * sizeof *forces), *u = malloc(t->n * dofs * sizeof *u);
     if (forces == NULL || u == NULL) {
@@ -274,7 +279,9 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     }
     /* the solve's displacements at the outputs (nodes, or points between them) */
     double *v = malloc(t->n * 3 * n_out * sizeof *v);
-    int rc = v ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u) : -1;
+    int rc = v == NULL ? -1
+             : timed ? tf_solver_history(solver, contact, (const double(*)[3])forces, t->n, tick, u)
+                     : tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u);
     for (size_t i = 0; rc == 0 && i < t->n; ++i) {
         rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
                               sizeof ctx->err);
@@ -286,7 +293,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         free(v);
         return TF_EXIT_FAIL;
     }
-    double worst = 0, deepest = -1;
+    double worst = 0, deepest = -1, peak = 0;
     size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0;
     size_t first_bad = 0;
     for (size_t i = 0; i < t->n; ++i) {
@@ -301,6 +308,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
                 /* A NaN compares false with any bound: counted, never
                  * silently skipped (it would hide behind a small maximum). */
                 double e = fabs(logged - vi[3 * j + (size_t)k]);
+                peak = fmax(peak, fabs(vi[3 * j + (size_t)k]));
                 if (!isfinite(e)) {
                     first_bad = not_finite++ ? first_bad : i;
                     continue;
@@ -317,9 +325,16 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         }
         rejected += row[4] < 0;
     }
+    if (timed) {
+        printf("replay: the solver is time-dependent: the %zu ticks time-stepped from rest at "
+               "%.6g s per tick; peak displacement %.4g mm\n", t->n, tick, peak);
+    }
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
+    if (timed && peak > 0) {
+        printf("replay: that is %.3g %% of the peak displacement\n", 100 * worst / peak);
+    }
     if (not_finite > 0) {
         tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
                  "tick %zu): the deviation above covers only the finite ones",
@@ -395,7 +410,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
             tf_error(ctx, "replay: %s", ctx->err);
             rc = TF_EXIT_FAIL;
         } else {
-            rc = compare(ctx, p, solver, k, &t, png);
+            rc = compare(ctx, p, solver, k, &t, 1e-9 * s->fit.tick_ns, png);
         }
     }
     tf_solver_destroy(solver);

@@ -14,6 +14,7 @@
 #include "base/log.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
+#include "meshfree/cut.h"
 #include "report/displacement_out.h"
 #include "base/log.h"
 #include "base/plot.h"
@@ -30,7 +31,7 @@
 static void help(FILE *out)
 {
     fprintf(out,
-            "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]\n"
+            "usage: tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME] [--cut-progress S]\n"
             "                       [--set KEY=VALUE]... [--out FILE.csv] [--vtk FILE.vtu|.pvd]\n"
             "                       [--outputs FILE.csv] [--png FILE.png] [--png-rest FILE.png]\n"
             "                       [--exaggerate K] [--view AZ,EL]\n\n"
@@ -46,6 +47,8 @@ static void help(FILE *out)
             "%d steps); --force replaces history.force.\n\n"
             "Options:\n"
             "  --force FX,FY,FZ   force at the contact site, N\n"
+            "  --cut-progress S   every cut of the scene only to the fraction S in [0, 1] of its\n"
+            "                     path (0: uncut; docs/cutting.md, \"Cut progress\")\n"
             "  --contact NAME     which contact site (default: the first)\n"
             "  --set KEY=VALUE    override a scene value, e.g. geometry.grid=41,41,9\n"
             "                     (repeatable; see docs/scene-format.md)\n"
@@ -68,8 +71,8 @@ static void help(FILE *out)
 
 typedef struct solve_args {
     const char *scene, *out, *vtk, *contact, *outputs, *png, *png_rest;
-    double force[3], exaggerate, view[2];
-    int has_force;
+    double force[3], exaggerate, view[2], progress;
+    int has_force, has_progress;
     tf_sets sets;
 } solve_args;
 
@@ -85,6 +88,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                                          {"png-rest", required_argument, NULL, 'r'},
                                          {"exaggerate", required_argument, NULL, 'x'},
                                          {"view", required_argument, NULL, 'w'},
+                                         {"cut-progress", required_argument, NULL, 'P'},
                                          {0}};
     int c;
     optind = 1;
@@ -129,6 +133,16 @@ static int parse(tf_ctx *ctx, int argc, char **argv, solve_args *a)
                 return -1;
             }
             break;
+        case 'P': {
+            char *end;
+            a->progress = strtod(optarg, &end);
+            if (*end != '\0' || end == optarg || !(a->progress >= 0 && a->progress <= 1)) {
+                tf_error(ctx, "solve: --cut-progress '%s' is not a number in [0, 1]", optarg);
+                return -1;
+            }
+            a->has_progress = 1;
+            break;
+        }
         case 'x': {
             char *end;
             a->exaggerate = strtod(optarg, &end);
@@ -404,6 +418,26 @@ static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf
     return out;
 }
 
+/* --cut-progress: every cut truncated at the fraction asked for (a cut
+ * with nothing left is dropped). */
+static int progress(tf_ctx *ctx, const solve_args *a, tf_problem *p)
+{
+    if (p->n_cuts == 0) {
+        tf_error(ctx, "solve: --cut-progress: %s has no cuts", a->scene);
+        return -1;
+    }
+    size_t kept = 0;
+    for (size_t i = 0; i < p->n_cuts; ++i) {
+        tf_cut c;
+        tf_cut_truncate(&p->cuts[i], a->progress, &c);
+        if (c.n >= 2) {
+            p->cuts[kept++] = c;
+        }
+    }
+    p->n_cuts = kept;
+    return 0;
+}
+
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {.exaggerate = 1, .view = {NAN, NAN}};
@@ -416,6 +450,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         return TF_EXIT_USAGE;
     }
     tf_sets_free(&a.sets);
+    if (a.has_progress && progress(ctx, &a, &s->problem) != 0) {
+        tf_scene_free(s);
+        return TF_EXIT_USAGE;
+    }
     const tf_problem *p = &s->problem;
     int contact = pick_contact(ctx, &a, p);
     if (contact < -1 || check_pictures(ctx, &a, p) != 0) {

@@ -26,7 +26,7 @@ static void help(FILE *out)
             "operations, estimated microseconds on a 168 MHz Cortex-M4F and a 480 MHz\n"
             "Cortex-M7, native nanoseconds per call of the real evaluator (median), and\n"
             "the held-out error against true solves.  Candidates: nodal p = 0..max and\n"
-            "modal p = 1, 2 with r = 1..max_rank (float32; nodal also Q31 and float64),\n"
+            "modal p = 1..max with r = 1..max_rank (float32; nodal also Q31 and float64),\n"
             "zhou2017 at its cross-validated orders, the contact inverse p = 1..max.\n"
             "--outputs all (default) repeats the forward candidates for the contact\n"
             "site alone and for every node, to show what each output costs.\n\n"

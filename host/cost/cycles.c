@@ -106,13 +106,23 @@ typedef enum block_id {
     NODAL_NODE,     /* loop 1: one output point, any p */
     NODAL_P0_SKIP,  /* ... minus the inner-loop set-up that p = 0 skips */
     NODAL_TERM,     /* loop 2: one basis term of the three rows */
-    MODAL_PATH,
+    MODAL_PATH,     /* outside loops, r <= 8: the rows in assembly */
+    MODAL_PATH_C,   /* outside loops, r > 8: the rows in C (loops 3, 4) */
     MODAL_AMP,      /* loop 1: one amplitude a_k */
     MODAL_AMP_P0_SKIP,
     MODAL_AMP_TERM, /* loop 2: one term of it */
-    MODAL_NODE,     /* loop 3: one output point */
-    MODAL_R1_SKIP,  /* ... minus the inner-loop set-up that r = 1 skips */
+    MODAL_NODE,     /* loop 3: one output point (r > 8) */
     MODAL_MODE,     /* loop 4: one mode of the three rows */
+    MR_DISPATCH,    /* tfit_modal_rows_asm(): the rank's function, tail call */
+    MR_PATH,        /* tfit_modal_rows_rR() outside its loop, without the r amplitude words */
+    MR_POINT_1,     /* tfit_modal_rows_rR() loop 1: one output point at rank R */
+    MR_POINT_2,
+    MR_POINT_3,
+    MR_POINT_4,
+    MR_POINT_5,
+    MR_POINT_6,
+    MR_POINT_7,
+    MR_POINT_8,
     ZHOU_PATH,
     ZHOU_AXIS,      /* loop 1: contact displacement of one force axis */
     ZHOU_AXIS_STEP, /* loop 2: one Clenshaw step of it (lambda_a of them) */
@@ -150,6 +160,14 @@ typedef enum block_id {
     D1R_PATH,       /* tfit_degree1_rows_asm() outside its loops and the odd point */
     D1R_MAIN,       /* loop 1: eight pairs of output points */
     D1R_REM,        /* loop 2: one pair */
+    CUT_ENTRY,      /* tfit_displacements_cut: checks, the calls, the status */
+    CUT_PROGRESS,   /* tfit_cut_progress(): straight-line code */
+    CUT_ROWS_D1,    /* tfit_cut_rows() outside its loops, p = 1 */
+    CUT_D1_POINT,   /* loop 3: one output point at p = 1, both knots */
+    CUT_ROWS_PATH,  /* tfit_cut_rows() outside its loops, p != 1 */
+    CUT_POINT,      /* loop 1: one output point, any p */
+    CUT_P0_SKIP,    /* ... minus the inner-loop set-up that p = 0 skips */
+    CUT_TERM,       /* loop 2: one basis term of the six rows */
     N_BLOCKS
 } block_id;
 
@@ -216,17 +234,41 @@ static const block blocks[N_BLOCKS] = {
     [NODAL_P0_SKIP] = {"tfit_eval_nodal", 0, 0, SAME("alu=5")},
     [NODAL_TERM] = {"tfit_eval_nodal", 2, 2, SAME("alu=2 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [MODAL_PATH] = {"tfit_eval_modal", 0, 0,
-                    SAME("alu=28 mul=3 mla=1 load=6 ldm=1 ldm_pc=1 stm=1 words=20 fload=1 "
-                         "branch=1 nbranch=2")},
+                    SAME("alu=23 mul=3 mla=1 load=6 store=2 ldm=2 ldm_pc=1 stm=2 words=24 branch=3 "
+                         "nbranch=1")},
+    [MODAL_PATH_C] = {"tfit_eval_modal", 0, 0,
+                      SAME("alu=31 mul=3 mla=1 load=6 ldm=2 ldm_pc=1 stm=2 words=24 fload=1 "
+                           "branch=1 nbranch=3")},
     [MODAL_AMP] = {"tfit_eval_modal", 1, 1,
-                   SAME("alu=6 fload=1 fstm=1 fwords=1 branch=1 nbranch=1")},
+                   SAME("alu=7 store=1 fload=1 fmov=1 branch=1 nbranch=1")},
     [MODAL_AMP_P0_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=3")},
     [MODAL_AMP_TERM] = {"tfit_eval_modal", 2, 2,
                         SAME("alu=2 fldm=2 fwords=2 fadd=1 fmul=1 branch=1")},
-    [MODAL_NODE] = {"tfit_eval_modal", 3, 1,
-                    SAME("alu=16 store=3 fload=3 fmul=3 fmov=3 branch=1 nbranch=1")},
-    [MODAL_R1_SKIP] = {"tfit_eval_modal", 0, 0, SAME("alu=4")},
+    [MODAL_NODE] = {"tfit_eval_modal", 3, 1, SAME("alu=14 store=3 fload=3 fmul=3 fmov=3 branch=1")},
     [MODAL_MODE] = {"tfit_eval_modal", 4, 2, SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    /* (objdump counts one more alu in each: the nop before the literal
+     * pool, or after the return) */
+    [MR_DISPATCH] = {"tfit_modal_rows_asm", 0, 0,
+                     {"alu=12 load=5 store=1 ldm=1 stm=1 words=6 branch=1",
+                      "alu=12 load=5 store=1 ldm=1 stm=1 words=4 branch=1"}},
+    [MR_PATH] = {"tfit_modal_rows_rR", 0, 0,
+                 SAME("alu=3 load=2 stm=1 words=1 fldm=2 fstm=1 fwords=32")},
+    /* 3r words in, 3 out; 3r multiplications, 3(r - 1) additions */
+    [MR_POINT_1] = {"tfit_modal_rows_r1", 1, 1, SAME("alu=2 fldm=1 fstm=1 fwords=6 fmul=3 branch=1")},
+    [MR_POINT_2] = {"tfit_modal_rows_r2", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=9 fadd=3 fmul=6 branch=1")},
+    [MR_POINT_3] = {"tfit_modal_rows_r3", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=12 fadd=6 fmul=9 branch=1")},
+    [MR_POINT_4] = {"tfit_modal_rows_r4", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=15 fadd=9 fmul=12 branch=1")},
+    [MR_POINT_5] = {"tfit_modal_rows_r5", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=18 fadd=12 fmul=15 branch=1")},
+    [MR_POINT_6] = {"tfit_modal_rows_r6", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=21 fadd=15 fmul=18 branch=1")},
+    [MR_POINT_7] = {"tfit_modal_rows_r7", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=24 fadd=18 fmul=21 branch=1")},
+    [MR_POINT_8] = {"tfit_modal_rows_r8", 1, 1,
+                    SAME("alu=2 fldm=1 fstm=1 fwords=27 fadd=21 fmul=24 branch=1")},
     [ZHOU_PATH] = {"tfit_eval_zhou2017", 0, 0,
                    {"alu=16 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2",
                     "alu=17 load=3 store=5 ldm=1 ldm_pc=1 stm=1 words=20 fload=2"}},
@@ -293,6 +335,30 @@ static const block blocks[N_BLOCKS] = {
                   SAME("alu=2 fldm=8 fstm=8 fwords=240 fadd=144 fmul=144 branch=1")},
     [D1R_REM] = {"tfit_degree1_rows_asm", 2, 1,
                  SAME("alu=1 fldm=1 fstm=1 fwords=30 fadd=18 fmul=18 branch=1")},
+    [CUT_ENTRY] = {"tfit_displacements_cut", 0, 0,
+                   {"alu=33 load=9 store=4 ldm=1 ldm_pc=1 stm=1 words=16 fload=1 fldm=1 fstm=1 "
+                    "fwords=4 fother=2 branch=4 nbranch=5",
+                    "alu=33 load=9 store=4 ldm=1 ldm_pc=1 stm=1 words=16 fload=1 fldm=1 fstm=1 "
+                    "fwords=4 fother=2 branch=4 nbranch=5"}},
+    [CUT_PROGRESS] = {"tfit_cut_progress", 0, 0,
+                      SAME("alu=31 load=1 store=2 ldm_pc=1 stm=1 words=8 fstore=2 fadd=1 fmul=1 "
+                           "fother=6 fmov=8")},
+    [CUT_ROWS_D1] = {"tfit_cut_rows", 0, 0,
+                     {"alu=15 mul=4 mla=2 load=10 store=2 ldm_pc=1 stm=1 words=18 fload=3 fldm=1 "
+                      "fstm=1 fwords=16 branch=1 nbranch=1",
+                      "alu=15 mul=4 mla=2 load=10 store=2 ldm_pc=1 stm=1 words=18 fload=3 fldm=1 "
+                      "fstm=1 fwords=12 branch=1 nbranch=1"}},
+    [CUT_D1_POINT] = {"tfit_cut_rows", 3, 1,
+                      SAME("alu=8 store=3 fload=24 fadd=24 fmul=21 fmov=3 branch=1")},
+    [CUT_ROWS_PATH] = {"tfit_cut_rows", 0, 0,
+                       {"alu=28 mul=4 mla=2 load=8 store=10 ldm_pc=1 stm=1 words=18 fldm=1 fstm=1 "
+                        "fwords=16 nbranch=2",
+                        "alu=28 mul=4 mla=2 load=8 store=10 ldm_pc=1 stm=1 words=18 fldm=1 fstm=1 "
+                        "fwords=12 nbranch=2"}},
+    [CUT_POINT] = {"tfit_cut_rows", 1, 1,
+                   SAME("alu=22 load=11 store=4 fload=6 fadd=6 fmul=3 fmov=3 branch=1 nbranch=1")},
+    [CUT_P0_SKIP] = {"tfit_cut_rows", 0, 0, SAME("alu=8 load=5")},
+    [CUT_TERM] = {"tfit_cut_rows", 2, 2, SAME("alu=2 fldm=7 fwords=7 fadd=6 fmul=6 branch=1")},
 };
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
@@ -399,12 +465,29 @@ static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
-/* tfit_eval_modal, called by evaluate() or tfit_prony_step */
+/* Ranks whose rows run in assembly: TFIT_MODAL_ASM_MAX_RANK of
+ * target/src/tfit_internal.h. */
+#define MODAL_ASM_MAX_RANK 8u
+
+/* The rows of a modal model of rank r <= 8 in assembly
+ * (tfit_modal_armv7em.c): the dispatch, the rank's function (its path loads
+ * the r amplitudes with one VLDM) and its loop over the output points. */
+static void modal_rows_asm_mix(tf_insn_mix *t, tf_core core, uint32_t r, uint32_t n_out)
+{
+    add_block(t, core, MR_DISPATCH, 1);
+    add_block(t, core, MR_PATH, 1);
+    t->n[TF_INSN_FWORDS] += r;
+    add_loop(t, core, (block_id)(MR_POINT_1 + (r - 1)), n_out);
+}
+
+/* tfit_eval_modal, called by evaluate() or tfit_prony_step: the basis, the
+ * r amplitudes (loops 1, 2), then the rows in assembly (r <= 8) or in C
+ * (loops 3, 4: r > 8, so the mode loop always runs) */
 static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], r = m->dims[1], terms = tf_terms(p);
     basis_mix(t, core, p);
-    add_block(t, core, MODAL_PATH, 1);
+    add_block(t, core, r <= MODAL_ASM_MAX_RANK ? MODAL_PATH : MODAL_PATH_C, 1);
     add_loop(t, core, MODAL_AMP, r);
     add_block(t, core, MODAL_AMP_TERM, (uint64_t)r * (terms - 1));
     if (p == 0) { /* skipped by a taken branch */
@@ -413,14 +496,13 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     } else {
         falls_through(t, r);
     }
+    if (r <= MODAL_ASM_MAX_RANK) {
+        modal_rows_asm_mix(t, core, r, m->n_out);
+        return;
+    }
     add_loop(t, core, MODAL_NODE, m->n_out);
     add_block(t, core, MODAL_MODE, (uint64_t)m->n_out * (r - 1));
-    if (r == 1) {
-        sub_block(t, core, MODAL_R1_SKIP, m->n_out);
-        taken(t, m->n_out);
-    } else {
-        falls_through(t, m->n_out);
-    }
+    falls_through(t, m->n_out);
 }
 
 /* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
@@ -509,6 +591,32 @@ static void prony_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+/* A cut model (tfit_cut.c): the entry, the projection, the progress, the
+ * basis, then the rows of both knots per output point: at p = 1 loop 3,
+ * else loop 1 with its term loop (which p = 0 skips by a taken branch). */
+static void cut_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const uint32_t p = m->dims[0], terms = tf_terms(p);
+    add_block(t, core, CUT_ENTRY, 1);
+    add_block(t, core, INPUT_PATH, 1);
+    add_block(t, core, CUT_PROGRESS, 1);
+    basis_mix(t, core, p);
+    if (p == 1) {
+        add_block(t, core, CUT_ROWS_D1, 1);
+        add_loop(t, core, CUT_D1_POINT, m->n_out);
+        return;
+    }
+    add_block(t, core, CUT_ROWS_PATH, 1);
+    add_loop(t, core, CUT_POINT, m->n_out);
+    if (p == 0) {
+        sub_block(t, core, CUT_P0_SKIP, m->n_out);
+        taken(t, m->n_out);
+    } else {
+        add_block(t, core, CUT_TERM, (uint64_t)m->n_out * (terms - 1));
+        falls_through(t, m->n_out);
+    }
+}
+
 /* One tick of a resonant model (tfit_resonant.c): the path outside the
  * modes' loop for its static map's kind, the projection, K modes, then the
  * static map's evaluator (or the rows of tfit_degree1_rows_asm at p = 1). */
@@ -532,6 +640,10 @@ static void resonant_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
+    if (m->family == TFIT_FAMILY_CUT) {
+        cut_mix(mix, core, m);
+        return;
+    }
     if (m->family == TFIT_FAMILY_PRONY) {
         prony_mix(mix, core, m);
         return;

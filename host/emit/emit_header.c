@@ -92,6 +92,9 @@ static int inverse(const tf_model *m)
 
 static const char *input_desc(const tf_model *m)
 {
+    if (m->family == TFIT_FAMILY_CUT) {
+        return "force [N] and cut progress s in [0, 1] (tfit_displacements_cut)";
+    }
     return inverse(m) ? "contact displacement [mm]" : "force [N]";
 }
 
@@ -319,6 +322,14 @@ static void write_tables(FILE *f, const tf_model *m, const char *site)
         for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
             snprintf(note, sizeof note, "%s %u %c%s", inverse(m) ? "node" : site,
                      m->node_ids[o / 3], comp[o % 3], inverse(m) ? " force" : "");
+            write_floats(f, c, t, note);
+        }
+    } else if (m->family == TFIT_FAMILY_CUT) { /* a nodal table per knot s = k / K */
+        uint32_t t = tf_terms(m->dims[0]);
+        for (uint32_t o = 0; o < 3 * m->n_out * (m->dims[1] + 1); ++o, c += t) {
+            uint32_t knot = o / (3 * m->n_out), r = o % (3 * m->n_out);
+            snprintf(note, sizeof note, "s = %u/%u: %s %u %c", knot, m->dims[1], site,
+                     m->node_ids[r / 3], comp[r % 3]);
             write_floats(f, c, t, note);
         }
     } else if (m->family == TFIT_FAMILY_MODAL) {

@@ -1,5 +1,5 @@
 /*
- * emit_resonant.h — what a resonant model (docs/header-format.md §5.7)
+ * emit_resonant.h — what a resonant model (docs/header-format.md §5.8)
  * adds to the generated header: its state size, tick and the firmware's
  * tick check (shared with prony: emit_prony.h), its modes as frequencies,
  * damping ratios and weights.  Nothing for other families.

@@ -356,6 +356,23 @@ void tf_cases_level_response(const tf_cases *c, int a, int level, double *u)
            rows * sizeof *u);
 }
 
+/* tf_cases.contact_id: an output point at the contact point (1e-9 of the
+ * body's size: the same point written twice) names it; else its node. */
+static uint32_t contact_id(const tf_problem *p, int contact)
+{
+    const tf_contact *k = &p->contacts[contact];
+    const double *lo = p->cloud.lo, *hi = p->cloud.hi;
+    const double tol = 1e-9 * hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    for (size_t j = 0; !k->by_node && p->outputs.points != NULL && j < p->outputs.n_nodes; ++j) {
+        const double *x = p->outputs.points + 3 * j;
+        if (fabs(x[0] - k->at[0]) <= tol && fabs(x[1] - k->at[1]) <= tol &&
+            fabs(x[2] - k->at[2]) <= tol) {
+            return (uint32_t)j + 1;
+        }
+    }
+    return tf_problem_node_number(p, k->node);
+}
+
 int tf_cases_build(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                    tf_cases *c)
 {
@@ -364,6 +381,7 @@ int tf_cases_build(const tf_problem *p, tf_solver *solver, const tf_fit_plan *pl
     c->problem = p;
     c->contact = plan->contact;
     c->contact_node = p->contacts[plan->contact].node;
+    c->contact_id = contact_id(p, plan->contact);
     c->affine = (tf_solver_caps_of(solver) & TF_SOLVER_AFFINE) != 0;
     if (design(c, plan->n_train, plan->n_heldout, plan->seed) != 0) {
         tf_cases_free(c);

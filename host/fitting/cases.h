@@ -31,12 +31,18 @@
 #include "solvers/solver.h"
 
 struct tf_histories; /* histories.h */
+struct tf_cut_cases; /* cut_progress.h */
 
 typedef struct tf_cases {
     tf_solver *solver;       /* what solved them (outlives the cases) */
     const tf_problem *problem;
     int contact;             /* contact site index */
     uint32_t contact_node;   /* its node index */
+    /* The contact model's node id: the site's node number, or, when the site
+     * is given by position and is one of the output points, that output's
+     * number (outputs by position are numbered 1 ... n), so that firmware
+     * finds the contact among the forward model's outputs by its id. */
+    uint32_t contact_id;
     int affine;              /* the solver declared itself affine: unit responses exist */
     int superposed;          /* training cases from unit responses */
     size_t solves;           /* right-hand sides solved */
@@ -45,6 +51,10 @@ typedef struct tf_cases {
      * time-dependent solver): what the prony family fits; NULL otherwise.
      * Not owned. */
     const struct tf_histories *hist;
+    /* Responses at a sequence of cut progress values when the plan asks
+     * for them (cut_progress.h): what the cut family fits; NULL otherwise.
+     * Not owned. */
+    const struct tf_cut_cases *cut;
     /* Affine solvers: unit responses at the outputs (3 n_out) and the
      * contact site (3): u(f) = base + sum_k f_k unit[k]. */
     double *base, *unit[3], base_contact[3], unit_contact[3][3];

@@ -397,51 +397,104 @@ int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth,
     return 0;
 }
 
-/* One history through the solver, keeping the output rows. */
-static int solve_one(const tf_cases *c, tf_history_set *s, size_t h, double tick)
+/* The solver's forces of history h (design index which): the design at
+ * every m-th tick, rounded to float; the ticks between two solver steps
+ * take the force on the line between them (rounded to float: the
+ * firmware's input), so that the force the solver integrates (linear in
+ * time inside its step, docs/solver.md "Time stepping") is the one the
+ * ticks see.  steps: 1 + ceil((n_ticks - 1) / m) solver forces. */
+static void coarse_forces(const tf_history_design *hd, size_t which, tf_history_set *s, size_t h,
+                          double tick, size_t m, size_t steps, double (*fs)[3])
 {
-    const tf_outputs *o = &c->problem->outputs;
-    const size_t dofs = 3 * tf_solver_node_count(c->solver), rows = 3 * (size_t)s->n_out;
-    double *full = malloc(dofs * s->n_ticks * sizeof *full);
-    if (full == NULL) {
-        return tf_fail(c->solver->ctx, "out of memory for a history of %zu ticks", s->n_ticks);
+    for (size_t j = 0; j < steps; ++j) {
+        double f[3];
+        tf_history_design_force(hd, which, (double)(j * m) * tick, f);
+        for (int k = 0; k < 3; ++k) {
+            fs[j][k] = (double)(float)f[k];
+        }
     }
-    int rc = tf_solver_history(c->solver, c->contact,
-                               (const double(*)[3])s->force + h * s->n_ticks, s->n_ticks, tick,
-                               full);
-    for (size_t n = 0; rc == 0 && n < s->n_ticks; ++n) {
-        double *u = s->u + (h * s->n_ticks + n) * rows;
-        for (size_t j = 0; j < o->n_nodes; ++j) {
+    for (size_t n = 0; n < s->n_ticks; ++n) {
+        const size_t j = n / m;
+        const double w = (double)(n % m) / (double)m;
+        for (int k = 0; k < 3; ++k) {
+            const double f = w == 0 ? fs[j][k] : (1 - w) * fs[j][k] + w * fs[j + 1][k];
+            s->force[h * s->n_ticks + n][k] = (double)(float)f;
+        }
+    }
+}
+
+void tf_histories_outputs(const tf_outputs *o, const double *full, size_t dofs, size_t n_ticks,
+                          size_t m, double *u)
+{
+    for (size_t n = 0; n < n_ticks; ++n, u += 3 * o->n_nodes) {
+        const size_t j = n / m;
+        const double w = (double)(n % m) / (double)m;
+        const double *a = full + j * dofs, *b = w == 0 ? a : full + (j + 1) * dofs;
+        for (size_t i = 0; i < o->n_nodes; ++i) {
             for (int k = 0; k < 3; ++k) {
-                u[3 * j + (size_t)k] = full[n * dofs + 3 * (size_t)o->nodes[j] + (size_t)k];
+                const size_t d = 3 * (size_t)o->nodes[i] + (size_t)k;
+                u[3 * i + (size_t)k] = w == 0 ? a[d] : (1 - w) * a[d] + w * b[d];
             }
         }
     }
+}
+
+/* One history through the solver, a step every m ticks, keeping the output
+ * rows: at the solver's steps its displacements, between them the line
+ * between the two steps' (the error this adds is measured in
+ * docs/fitting.md §7.6). */
+static int solve_one(const tf_cases *c, const tf_history_design *hd, size_t which,
+                     tf_history_set *s, size_t h, double tick, size_t m)
+{
+    const size_t dofs = 3 * tf_solver_node_count(c->solver);
+    const size_t steps = 1 + (s->n_ticks - 1 + m - 1) / m;
+    double *full = malloc(dofs * steps * sizeof *full);
+    double(*fs)[3] = malloc(steps * sizeof *fs);
+    if (full == NULL || fs == NULL) {
+        free(full);
+        free(fs);
+        return tf_fail(c->solver->ctx, "out of memory for a history of %zu ticks", s->n_ticks);
+    }
+    if (m > 1) {
+        coarse_forces(hd, which, s, h, tick, m, steps, fs);
+    } else {
+        memcpy(fs, s->force + h * s->n_ticks, steps * sizeof *fs);
+    }
+    int rc = tf_solver_history(c->solver, c->contact, (const double(*)[3])fs, steps,
+                               (double)m * tick, full);
+    if (rc == 0) {
+        tf_histories_outputs(&c->problem->outputs, full, dofs, s->n_ticks, m,
+                             s->u + h * s->n_ticks * 3 * (size_t)s->n_out);
+    }
     free(full);
+    free(fs);
     return rc;
 }
 
-int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns, size_t n_train,
-                       size_t n_heldout, size_t n_ticks, uint64_t seed, tf_histories *h)
+int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns,
+                       size_t solve_every, size_t n_train, size_t n_heldout, size_t n_ticks,
+                       uint64_t seed, tf_histories *h)
 {
     tf_history_design *hd;
+    if (solve_every < 1 || n_ticks < 2) {
+        return tf_fail(c->solver->ctx, "histories: a solver step every %zu ticks of %zu",
+                       solve_every, n_ticks);
+    }
     if (start(h, c, kind, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
         tf_history_design_free(hd);
         tf_histories_free(h);
         return tf_fail(c->solver->ctx, "out of memory for %zu histories", n_train + n_heldout);
     }
-    tf_history_design_free(hd);
-    for (size_t i = 0; i < n_train; ++i) {
-        if (solve_one(c, &h->train, i, h->tick) != 0) {
-            tf_histories_free(h);
-            return -1;
-        }
+    int rc = 0;
+    for (size_t i = 0; rc == 0 && i < n_train + n_heldout; ++i) {
+        const int held = i >= n_train;
+        rc = solve_one(c, hd, i, held ? &h->heldout : &h->train, held ? i - n_train : i, h->tick,
+                       solve_every);
     }
-    for (size_t i = 0; i < n_heldout; ++i) {
-        if (solve_one(c, &h->heldout, i, h->tick) != 0) {
-            tf_histories_free(h);
-            return -1;
-        }
+    tf_history_design_free(hd);
+    if (rc != 0) {
+        tf_histories_free(h);
+        return -1;
     }
     return 0;
 }

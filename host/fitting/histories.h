@@ -119,11 +119,25 @@ int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth,
                               size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
                               tf_histories *h, char *err, size_t errlen);
 
-/* A design (kind) solved by a time-dependent solver, force sampled at the
- * ticks (tf_solver_history).  Returns 0, or -1 with the message in the
- * solver's context. */
-int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns, size_t n_train,
-                       size_t n_heldout, size_t n_ticks, uint64_t seed, tf_histories *h);
+/* A design (kind: press-hold-release or dynamic) solved by a
+ * time-dependent solver (tf_solver_history) with a time step of
+ * solve_every ticks.  solve_every = 1: the force
+ * sampled at every tick, each tick a solver step.  solve_every = m > 1:
+ * the design sampled every m ticks, the force linear in between (so the
+ * ticks' forces are piecewise linear, not the design's cosine ramps), and
+ * the displacements of the ticks between two solver steps interpolated
+ * linearly: m times fewer solves, at an error the caller must measure
+ * (docs/fitting.md §7.6: block48_ve's).  Returns 0, or -1 with the message
+ * in the solver's context. */
+int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns,
+                       size_t solve_every, size_t n_train, size_t n_heldout, size_t n_ticks,
+                       uint64_t seed, tf_histories *h);
+
+/* The output rows (3 per output node, per tick) of n_ticks ticks from a
+ * solver's history `full` (dofs per step) with a step every m ticks: at a
+ * step its displacements, between two steps the line between them. */
+void tf_histories_outputs(const tf_outputs *o, const double *full, size_t dofs, size_t n_ticks,
+                          size_t m, double *u);
 
 void tf_histories_free(tf_histories *h);
 

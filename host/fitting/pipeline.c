@@ -156,17 +156,26 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     }
     if (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) {
         tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
-                "of %u us", plan->hist_train, plan->hist_heldout, plan->hist_ticks,
-                plan->tick_ns / 1000);
+                "of %u us, a solver step every %zu ticks", plan->hist_train, plan->hist_heldout,
+                plan->hist_ticks, plan->tick_ns / 1000, plan->hist_solve_every);
         const tf_history_kind kind =
             plan->family == tf_family_find("resonant") ? TF_HIST_DYNAMIC : TF_HIST_PRESS;
-        if (tf_histories_solve(&o->cases, kind, plan->tick_ns, plan->hist_train, plan->hist_heldout,
-                               plan->hist_ticks, plan->seed, &o->hist) != 0) {
+        if (tf_histories_solve(&o->cases, kind, plan->tick_ns, plan->hist_solve_every,
+                               plan->hist_train, plan->hist_heldout, plan->hist_ticks,
+                               plan->seed, &o->hist) != 0) {
             tf_cases_free(&o->cases);
             return -1;
         }
         o->has_hist = 1;
         o->cases.hist = &o->hist;
+    }
+    if (plan->cut_intervals > 0) {
+        if (tf_cut_cases_solve(p, solver, plan, &o->cut) != 0) {
+            tf_fit_outcome_free(o);
+            return -1;
+        }
+        o->has_cut = 1;
+        o->cases.cut = &o->cut;
     }
     o->seconds_cases = tf_seconds() - t0;
     warn_large(ctx, p, solver, &o->cases.train);
@@ -204,6 +213,10 @@ void tf_fit_outcome_free(tf_fit_outcome *o)
     if (o->has_hist) {
         tf_histories_free(&o->hist);
         o->has_hist = 0;
+    }
+    if (o->has_cut) {
+        tf_cut_cases_free(&o->cut);
+        o->has_cut = 0;
     }
 }
 

@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "fitting/cases.h"
+#include "fitting/cut_progress.h"
 #include "fitting/families/family.h"
 #include "fitting/histories.h"
 #include "fitting/plan.h"
@@ -25,6 +26,10 @@ typedef struct tf_fit_outcome {
      * and length), which cases.hist points to; has_hist 0 otherwise. */
     tf_histories hist;
     int has_hist;
+    /* The plan's cut progress responses (cut_progress.h), which cases.cut
+     * points to; has_cut 0 otherwise. */
+    tf_cut_cases cut;
+    int has_cut;
     size_t n_families;
     tf_family_result *fam; /* one per registered family, in the registry's order */
     double seconds_cases;

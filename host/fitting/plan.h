@@ -23,9 +23,16 @@ typedef struct tf_fit_plan {
     unsigned servo_hz;    /* the haptic loop's rate the header states its budget at (0: none) */
     /* Force histories, for a time-dependent solver (histories.h): the tick
      * (the prony model's), how many training and held-out histories, and
-     * their length in ticks. */
+     * their length in ticks; the solver's time step in ticks (1: every
+     * tick solved; m > 1: the force is linear between solver steps and the
+     * ticks between them are interpolated, histories.h). */
     uint32_t tick_ns;
-    size_t hist_train, hist_heldout, hist_ticks;
+    size_t hist_train, hist_heldout, hist_ticks, hist_solve_every;
+    /* Cut progress (cut_progress.h, the cut family): 0, or the largest
+     * number of intervals K_max in s (a power of two; the knots s = i / K_max
+     * are solved) and how many held-out s values. */
+    uint32_t cut_intervals;
+    size_t cut_heldout;
     /* where the cases of a solver that is not affine are solved: NULL here,
      * or spread over ranks (dist/); the bits are the same */
     const tf_case_runner *runner;

@@ -201,3 +201,28 @@ double tf_cut_set_distance(const tf_cut_set *set, const double x[3])
     }
     return d;
 }
+
+void tf_cut_truncate(const tf_cut *c, double s, tf_cut *out)
+{
+    double total = 0;
+    for (size_t i = 1; i < c->n; ++i) {
+        total += hypot(c->xy[i][0] - c->xy[i - 1][0], c->xy[i][1] - c->xy[i - 1][1]);
+    }
+    *out = *c;
+    out->n = 0;
+    double want = s * total;
+    if (!(want > 1e-9)) {
+        return;
+    }
+    out->xy[0][0] = c->xy[0][0];
+    out->xy[0][1] = c->xy[0][1];
+    out->n = 1;
+    for (size_t i = 1; i < c->n && want > 1e-9; ++i) {
+        double dx = c->xy[i][0] - c->xy[i - 1][0], dy = c->xy[i][1] - c->xy[i - 1][1];
+        double len = hypot(dx, dy), t = want >= len ? 1.0 : want / len;
+        out->xy[out->n][0] = c->xy[i - 1][0] + t * dx;
+        out->xy[out->n][1] = c->xy[i - 1][1] + t * dy;
+        out->n++;
+        want -= len;
+    }
+}

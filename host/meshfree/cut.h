@@ -83,4 +83,9 @@ int tf_cut_meets_box(const tf_cut_set *set, const double lo[3], const double hi[
 /* Smallest distance from x to a panel (INFINITY for an empty set). */
 double tf_cut_set_distance(const tf_cut_set *set, const double x[3]);
 
+/* The cut's progress (docs/cutting.md, "Cut progress"): the path of c
+ * truncated at the fraction s of its length into out (out->n = 0 when
+ * nothing is left: s <= 0, or less than 1e-9 mm of path). */
+void tf_cut_truncate(const tf_cut *c, double s, tf_cut *out);
+
 #endif /* TF_CUT_H */

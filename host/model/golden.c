@@ -250,6 +250,9 @@ int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
                 memcpy(&bits, &st[w], sizeof bits);
                 crc = tf_crc32_u32(crc, bits);
             }
+        } else if (m->family == TFIT_FAMILY_CUT) { /* at s_k = k/4 - 1/4 (tfit_check.c) */
+            const float s = (float)k * 0.25f - 0.25f;
+            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval_cut(m, x, s, out, NULL));
         } else {
             crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval(m, x, out, NULL));
         }

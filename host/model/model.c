@@ -68,6 +68,13 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
         n += dims[1] == 0 ? 3ull * n_out * tf_terms(dims[0])
                           : (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
         break;
+    case TFIT_FAMILY_CUT: /* {p, K}: K + 1 nodal tables, knots s = k / K */
+        if (n_dims != TFIT_CUT_DIMS || dims[0] > TFIT_MAX_DEGREE || dims[1] == 0 ||
+            dims[1] > TFIT_CUT_MAX_INTERVALS) {
+            return 0;
+        }
+        n += (dims[1] + 1ull) * 3ull * n_out * tf_terms(dims[0]);
+        break;
     case TFIT_FAMILY_ZHOU2017:
         if (n_dims != TFIT_ZHOU2017_DIMS) {
             return 0;
@@ -247,9 +254,11 @@ static int validate_ranges(const tf_model *m, char *err, size_t errlen)
     if (m->family == TFIT_FAMILY_RESONANT) {
         return validate_resonant(m, err, errlen);
     }
-    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
+    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT ||
+        m->family == TFIT_FAMILY_CUT) { /* a cut model: every knot's rows */
         uint32_t t = tf_terms(m->dims[0]);
-        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+        uint32_t knots = m->family == TFIT_FAMILY_CUT ? m->dims[1] + 1 : 1;
+        for (uint32_t o = 0; o < 3 * m->n_out * knots; ++o) {
             if (bound_fail(abs_poly(c + o * t, t - 1, 1.0), "output", m, o, err, errlen)) {
                 return 1;
             }
@@ -421,7 +430,7 @@ static uint64_t series_add(uint32_t n)
 tf_opcount tf_model_ops(const tf_model *m)
 {
     if (m->family == TFIT_FAMILY_RESONANT) {
-        /* the filter (§5.7): 3 differences, then per mode and axis 5 mul
+        /* the filter (§5.8): 3 differences, then per mode and axis 5 mul
          * and 4 add; then the static map */
         tf_model v = tf_stateful_static_view(m);
         tf_opcount ops = tf_model_ops(&v);
@@ -445,6 +454,12 @@ tf_opcount tf_model_ops(const tf_model *m)
         basis_ops(m->dims[0], &ops);
         ops.mul += rows * (t - 1);
         ops.add += rows * (t - 1);
+    } else if (m->family == TFIT_FAMILY_CUT) {
+        /* §5.7: t = s K, w = t - j; two rows per output, then a + w (b - a) */
+        uint64_t t = tf_terms(m->dims[0]);
+        basis_ops(m->dims[0], &ops);
+        ops.mul += 1 + rows * (2 * (t - 1) + 1);
+        ops.add += 1 + rows * (2 * (t - 1) + 2);
     } else if (m->family == TFIT_FAMILY_MODAL) {
         uint64_t t = tf_terms(m->dims[0]), r = m->dims[1];
         basis_ops(m->dims[0], &ops);

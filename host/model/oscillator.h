@@ -1,6 +1,6 @@
 /*
  * oscillator.h — one damped mode of a resonant model (docs/header-format.md
- * §5.7) as numbers, without the model object: the unit-gain oscillator
+ * §5.8) as numbers, without the model object: the unit-gain oscillator
  *
  *     y'' + 2 zeta w y' + w^2 y = w^2 g
  *

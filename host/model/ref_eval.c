@@ -327,7 +327,7 @@ static void prony_filter(arith *c, const tf_model *m, const float g[3], int bad,
     }
 }
 
-/* The resonant filter (§5.7, tfit_resonant.c): per mode k and axis i
+/* The resonant filter (§5.8, tfit_resonant.c): per mode k and axis i
  * e1 = s - d_i, s' = (f11 e1) + (f12 v), v' = (f21 e1) + (f22 v),
  * h_i = h_i + w_ki s'; the state becomes {g, s', v'} unless the input was
  * bad. */
@@ -426,6 +426,9 @@ tfit_status tf_ref_prony_step(const tf_model *m, float *state, const float in[3]
 
 tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
 {
+    if (m->family == TFIT_FAMILY_CUT) { /* the scene's cuts in full, as its other cases */
+        return tf_ref_eval_cut(m, in, 1.0f, out, ops);
+    }
     if (tf_model_stateful(m)) { /* relaxed: the force held for ever */
         float state[TFIT_RESONANT_MAX_STATE];
         int clamped, bad;
@@ -447,8 +450,52 @@ tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opc
     return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
 }
 
+/* §5.7: s clamped onto [0, 1] (NaN/Inf: bad, taken as 0), t = s K,
+ * j = min(trunc t, K - 1), w = t - j; per output a + w (b - a) with a, b
+ * the rows of knots j and j + 1. */
+tfit_status tf_ref_eval_cut(const tf_model *m, const float in[3], float s, float *out,
+                            tf_opcount *ops)
+{
+    arith c = {{0, 0, 0}};
+    float g[3], phi[TFIT_TERMS_MAX];
+    int clamped, bad;
+    input_map(&c, m, in, g, &clamped, &bad);
+    const int s_bad = !isfinite(s);
+    float sc = s_bad ? 0.0f : s;
+    if (sc < 0.0f || sc > 1.0f) {
+        clamped = 1;
+        sc = sc < 0.0f ? 0.0f : 1.0f;
+    }
+    bad = bad || s_bad;
+    const uint32_t k = m->dims[1], p = m->dims[0], terms = tf_terms(p);
+    const float t = f_mul(&c, sc, (float)k);
+    uint32_t j = (uint32_t)floor((double)t);
+    j = j > k - 1 ? k - 1 : j;
+    const float w = f_sub(&c, t, (float)j);
+    chebyshev_basis(&c, p, g, phi);
+    const size_t rows = 3 * (size_t)m->n_out;
+    const float *a = m->coef + TFIT_INPUT_MAP_FLOATS + (size_t)j * rows * terms;
+    float xa, xb;
+    for (size_t o = 0; o < rows; ++o) {
+        eval_polynomial_rows(&c, a + o * terms, 1, terms, phi, &xa);
+        eval_polynomial_rows(&c, a + (rows + o) * terms, 1, terms, phi, &xb);
+        const float v = f_add(&c, xa, f_mul(&c, w, f_sub(&c, xb, xa)));
+        out[o] = bad ? 0.0f : v;
+    }
+    add_ops(ops, &c);
+    return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
+}
+
 void tf_ref_run(const tf_model *m, const float (*in)[3], size_t n, int32_t *status, float *out)
 {
+    if (m->family == TFIT_FAMILY_CUT) { /* at the golden progress of each vector (tfit.h) */
+        static const uint32_t s_bits[16] = TFIT_CUT_GOLDEN_S_BITS;
+        for (size_t v = 0; v < n; ++v) {
+            status[v] = (int32_t)tf_ref_eval_cut(m, in[v], float_of(s_bits[v & 15]),
+                                                 out + v * 3 * (size_t)m->n_out, NULL);
+        }
+        return;
+    }
     float state[TFIT_RESONANT_MAX_STATE];
     const size_t n_out = 3 * (size_t)m->n_out;
     if (tf_model_stateful(m)) {

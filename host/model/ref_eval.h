@@ -22,13 +22,18 @@
  * so it is its static map at g. */
 tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops);
 
+/* A cut model (TFIT_FAMILY_CUT) at the raw force in[3] and cut progress s,
+ * as tfit_displacements_cut() (docs/header-format.md §5.7). */
+tfit_status tf_ref_eval_cut(const tf_model *m, const float in[3], float s, float *out,
+                            tf_opcount *ops);
+
 /* A prony model's state (TFIT_PRONY_STATE_WORDS(K) floats) at rest, and one
  * tick (§5.6): as tfit_prony_reset and tfit_prony_step. */
 void tf_ref_prony_reset(const tf_model *m, float *state);
 tfit_status tf_ref_prony_step(const tf_model *m, float *state, const float in[3], float *out,
                               tf_opcount *ops);
 
-/* The same for either stateful family (prony, resonant: §5.7, as
+/* The same for either stateful family (prony, resonant: §5.8, as
  * tfit_resonant_reset and tfit_resonant_step); state of
  * TFIT_RESONANT_MAX_STATE floats at most. */
 void tf_ref_stateful_reset(const tf_model *m, float *state);

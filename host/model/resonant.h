@@ -1,5 +1,5 @@
 /*
- * resonant.h — the modes of a resonant model (docs/header-format.md §5.7)
+ * resonant.h — the modes of a resonant model (docs/header-format.md §5.8)
  * in its table: angular frequency omega_k, damping ratio zeta_k and
  * per-axis weights w_k of the unit-gain oscillators (model/oscillator.h)
  *

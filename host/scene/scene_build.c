@@ -566,7 +566,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .rcond_warn = 1e-12,
         .colloc = tf_colloc_settings_default(),
         .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
-                   .tangent = TF_TANGENT_FULL, .krylov_max = 100},
+                   .tangent = TF_TANGENT_BFGS, .krylov_max = 100},
         .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
@@ -797,6 +797,38 @@ static int fit_histories(const sd_fit *d, tf_fit_plan *f, sd_issue *is)
     if (f->hist_ticks < 10 || f->hist_ticks > 10000000) {
         return sd_fail(is, "fit.history_ticks", "10 to 10000000 ticks per history");
     }
+    f->hist_solve_every = d->solve_every ? *d->solve_every : f->hist_solve_every;
+    if (f->hist_solve_every < 1 || f->hist_solve_every > f->hist_ticks / 2) {
+        return sd_fail(is, "fit.solve_every", "1 to half of history_ticks ticks per solver step");
+    }
+    return 0;
+}
+
+/* The fit: section's cut progress (the cut family, docs/cutting.md): the
+ * largest number of intervals in s, a power of two up to the target's
+ * TFIT_CUT_MAX_INTERVALS, on a scene with cuts. */
+static int fit_cut(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *is)
+{
+    if (d->cut_intervals) {
+        const unsigned k = *d->cut_intervals;
+        if (k < 1 || k > TFIT_CUT_MAX_INTERVALS || (k & (k - 1)) != 0) {
+            return sd_fail(is, "fit.cut_intervals", "a power of two from 1 to %d (got %u)",
+                           TFIT_CUT_MAX_INTERVALS, k);
+        }
+        if (s->n_cuts == 0) {
+            return sd_fail(is, "fit.cut_intervals", "the scene has no cuts: to progress");
+        }
+        f->cut_intervals = k;
+    }
+    if (d->cut_heldout) {
+        if (*d->cut_heldout < 1 || *d->cut_heldout > 100) {
+            return sd_fail(is, "fit.cut_heldout", "1 to 100 held-out cut progress values");
+        }
+        if (!d->cut_intervals) {
+            return sd_fail(is, "fit.cut_heldout", "needs fit.cut_intervals");
+        }
+        f->cut_heldout = *d->cut_heldout;
+    }
     return 0;
 }
 
@@ -849,7 +881,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     if (d->servo_hz && (f->servo_hz < 1 || f->servo_hz > 100000)) {
         return sd_fail(is, "fit.servo_hz", "1 to 100000 Hz (the haptic loop's rate)");
     }
-    return fit_histories(d, f, is);
+    return fit_histories(d, f, is) != 0 ? -1 : fit_cut(d, s, f, is);
 }
 
 int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is)

@@ -333,6 +333,9 @@ static const cyaml_schema_field_t fit_fields[] = {
     CYAML_FIELD_UINT_PTR("histories", OPT, sd_fit, histories),
     CYAML_FIELD_UINT_PTR("heldout_histories", OPT, sd_fit, heldout_histories),
     CYAML_FIELD_UINT_PTR("history_ticks", OPT, sd_fit, history_ticks),
+    CYAML_FIELD_UINT_PTR("solve_every", OPT, sd_fit, solve_every),
+    CYAML_FIELD_UINT_PTR("cut_intervals", OPT, sd_fit, cut_intervals),
+    CYAML_FIELD_UINT_PTR("cut_heldout", OPT, sd_fit, cut_heldout),
     CYAML_FIELD_END,
 };
 

@@ -230,7 +230,9 @@ typedef struct sd_fit {
     unsigned *train, *heldout, *folds, *max_degree, *max_rank, *servo_hz;
     uint64_t *seed;
     /* a time-dependent solver's force histories (fitting/histories.h) */
-    unsigned *tick_us, *histories, *heldout_histories, *history_ticks;
+    unsigned *tick_us, *histories, *heldout_histories, *history_ticks, *solve_every;
+    /* cut progress (fitting/cut_progress.h, the cut family) */
+    unsigned *cut_intervals, *cut_heldout;
 } sd_fit;
 
 typedef struct sd_scene {

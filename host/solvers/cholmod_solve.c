@@ -61,46 +61,6 @@ static cholmod_sparse wrap(const tf_csc *a)
     return s;
 }
 
-tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t errlen)
-{
-    tf_chol *c = calloc(1, sizeof *c);
-    if (c == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return NULL;
-    }
-    cholmod_start(&c->cm);
-    c->cm.print = 0; /* errors come back through the status */
-    c->n = a->n;
-    cholmod_sparse s = wrap(a);
-    openblas_set_num_threads(TF_BLAS_THREADS);
-    double t0 = omp_get_wtime();
-    c->l = cholmod_analyze(&s, &c->cm);
-    double t1 = omp_get_wtime();
-    if (c->l != NULL) {
-        cholmod_factorize(&s, c->l, &c->cm);
-    }
-    info->t_analyse = t1 - t0;
-    info->t_factor = omp_get_wtime() - t1;
-    if (c->l == NULL || c->cm.status != CHOLMOD_OK) {
-        if (c->cm.status == CHOLMOD_NOT_POSDEF) {
-            snprintf(err, errlen,
-                     "the stiffness matrix is not positive definite (pivot %zu of %zu): "
-                     "is the body held by its fixed regions?",
-                     (size_t)c->l->minor, a->n);
-        } else {
-            snprintf(err, errlen, "CHOLMOD failed (status %d)%s", c->cm.status,
-                     c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
-        }
-        tf_chol_free(c);
-        return NULL;
-    }
-    info->nnz_l = c->cm.lnz;
-    info->flops = c->cm.fl;
-    info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
-    info->rcond = cholmod_rcond(c->l, &c->cm);
-    return c;
-}
-
 double tf_chol_rcond(tf_chol *c) { return cholmod_rcond(c->l, &c->cm); }
 
 int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen)
@@ -140,12 +100,10 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
         c->cm.supernodal = CHOLMOD_SIMPLICIAL;
         c->cm.final_ll = 0;
     }
-    if (ord != TF_ORDER_DEFAULT) {
-        c->cm.nmethods = 1;
-        c->cm.method[0].ordering = ord == TF_ORDER_AMD     ? CHOLMOD_AMD
-                                   : ord == TF_ORDER_METIS ? CHOLMOD_METIS
-                                                           : CHOLMOD_NESDIS;
-    }
+    c->cm.nmethods = 1;
+    c->cm.method[0].ordering = ord == TF_ORDER_AMD      ? CHOLMOD_AMD
+                               : ord == TF_ORDER_NESDIS ? CHOLMOD_NESDIS
+                                                        : CHOLMOD_METIS; /* the default */
     cholmod_sparse s = wrap(a);
     openblas_set_num_threads(TF_BLAS_THREADS);
     double t0 = omp_get_wtime();
@@ -162,6 +120,7 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
     info->flops = c->cm.fl;
     info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
     info->rcond = 0;
+    info->peak_bytes = (double)c->cm.memory_usage;
     return c;
 }
 
@@ -182,6 +141,8 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
     }
     return 0;
 }
+
+double tf_chol_peak_bytes(const tf_chol *c) { return (double)c->cm.memory_usage; }
 
 const char *tf_chol_ordering(const tf_chol *c)
 {

@@ -18,15 +18,16 @@ typedef struct tf_chol_info {
     double flops;               /* of the factorisation */
     const char *ordering;       /* fill-reducing ordering CHOLMOD chose */
     double rcond;               /* CHOLMOD's rough reciprocal condition: (min/max diag L)^2 */
+    double peak_bytes;          /* CHOLMOD's peak memory so far (analysis, factorisation) */
 } tf_chol_info;
 
-/* Factorises the symmetric positive definite A (lower triangle; A is not
- * kept).  Returns NULL with a message in err when A is not positive
- * definite or memory runs out. */
-tf_chol *tf_chol_factor(const tf_csc *a, tf_chol_info *info, char *err, size_t errlen);
-
-/* Fill-reducing orderings: CHOLMOD's own choice (AMD, then METIS when the
- * fill is high: tf_chol_factor's), or one of them forced. */
+/* Fill-reducing orderings.  The default is METIS (through CHOLMOD's
+ * partition module): on block48 at 41 x 41 x 9 it gives 9.99e7 factor
+ * entries and 3.0e11 flops against AMD's 1.30e8 and 5.6e11, NESDIS 9.85e7
+ * and 2.9e11 for twice METIS's analysis time, the solutions equal to 4e-13
+ * (docs/validation.md §6, `make bench-ordering`).  METIS seeds its random
+ * choices with a constant: the same ordering (and bits) on every run and
+ * for any thread count. */
 typedef enum tf_ordering {
     TF_ORDER_DEFAULT,
     TF_ORDER_AMD,
@@ -50,6 +51,10 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
 
 /* CHOLMOD's rough reciprocal condition of the last factorisation. */
 double tf_chol_rcond(tf_chol *c);
+
+/* CHOLMOD's peak memory (bytes) in c so far: the analysis and the
+ * factorisations, the factor included. */
+double tf_chol_peak_bytes(const tf_chol *c);
 
 /* The ordering's name ("AMD", ...) of an analysed c. */
 const char *tf_chol_ordering(const tf_chol *c);

@@ -1,7 +1,7 @@
 /*
  * sweep.c — see sweep.h.  Candidates per output set: every registered
  * family that applies gives its candidates (family.h; today nodal p = 0 ..
- * max_degree, modal p = 1, 2 and r = 1 .. max_rank, zhou2017 at its
+ * max_degree, modal p = 1 .. max_degree and r = 1 .. max_rank, zhou2017 at its
  * cross-validated orders, the contact inverse p = 1 .. max_degree), each in
  * float32 and, where the family has them, its Q31 and float64 forms.  An
  * inverse family does not depend on the output set and is swept once, with

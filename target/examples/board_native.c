@@ -121,7 +121,7 @@ int board_finish(void)
         perror("HAPTIC_CSV");
         return 1;
     }
-    return rejected == 1u ? 0 : 1;
+    return rejected == HAPTIC_SCRIPT_REJECTED ? 0 : 1;
 }
 
 void board_fail(const char *why)

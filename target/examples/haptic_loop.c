@@ -10,6 +10,8 @@
  *   HAPTIC_HEADER             "name.h"
  *   HAPTIC_FORWARD, HAPTIC_FORWARD_M(x)   first forward model and its TFIT_..._x macros
  *   HAPTIC_CONTACT, HAPTIC_CONTACT_M(x)   first contact model (either may be absent)
+ *   HAPTIC_FORWARD_PRONY      the forward model is a prony model (a creeping
+ *                             body): stepped once per tick with its state
  * and which defines TFIT_NAME_IMPLEMENTATION: this file holds the tables.
  *
  * Everything the tick does has a fixed cost (the evaluator's instruction
@@ -45,6 +47,10 @@ _Static_assert(FORWARD_CYCLES(HAPTIC_CYCLES_SUFFIX) + CONTACT_CYCLES(HAPTIC_CYCL
 #endif
 
 static float u[3u * N_POINTS];
+#ifdef HAPTIC_FORWARD_PRONY
+/* the creeping body's state: the force history the model remembers */
+static float prony_state[HAPTIC_FORWARD_M(STATE_WORDS)];
+#endif
 #if defined(HAPTIC_FORWARD) && defined(HAPTIC_CONTACT)
 static uint32_t contact_point; /* forward output point at the contact site */
 #endif
@@ -55,6 +61,9 @@ static void boot(void)
     if (tfit_model_check(&HAPTIC_FORWARD) != TFIT_OK) {
         board_fail("haptic: forward model failed its check (damaged flash?)");
     }
+#ifdef HAPTIC_FORWARD_PRONY
+    (void)tfit_prony_reset(&HAPTIC_FORWARD, prony_state); /* at rest, no force */
+#endif
 #endif
 #ifdef HAPTIC_CONTACT
     if (tfit_model_check(&HAPTIC_CONTACT) != TFIT_OK) {
@@ -79,7 +88,11 @@ static void tick(void)
 #ifdef HAPTIC_FORWARD
     float force[3];
     board_read_force(force);
+#ifdef HAPTIC_FORWARD_PRONY
+    status = tfit_prony_step(&HAPTIC_FORWARD, prony_state, force, u);
+#else
     status = tfit_displacements(&HAPTIC_FORWARD, force, u);
+#endif
 #ifdef HAPTIC_CONTACT
     (void)tfit_contact_force(&HAPTIC_CONTACT, &u[3u * contact_point], contact_force);
 #endif

@@ -8,9 +8,14 @@
 #define RELEASE_END 900u
 #define BEYOND_END 950u
 #define GLITCH 950u
-#define DEPTH_N 0.8f        /* normal force at full press */
-#define SWEEP_N 0.5f        /* lateral force amplitude */
-#define BEYOND_N 3.0f       /* three times the envelope */
+/* The forces below are for block48's 1 N envelope; -DHAPTIC_FORCE_SCALE=3.0f
+ * scales them to a 3 N one (block48_nh, coeffs/demo.mk). */
+#ifndef HAPTIC_FORCE_SCALE
+#define HAPTIC_FORCE_SCALE 1.0f
+#endif
+#define DEPTH_N (0.8f * HAPTIC_FORCE_SCALE) /* normal force at full press */
+#define SWEEP_N (0.5f * HAPTIC_FORCE_SCALE) /* lateral force amplitude */
+#define BEYOND_N (3.0f * HAPTIC_FORCE_SCALE) /* three times the envelope */
 #define MM_PER_N 10.0f      /* position script: a soft spring */
 
 static float ramp(uint32_t t, uint32_t t0, uint32_t t1)
@@ -27,6 +32,29 @@ static float quiet_nan(void)
     return v.f;
 }
 
+#ifdef HAPTIC_SCRIPT_PRESS_HOLD
+/* A creeping body's script (-DHAPTIC_SCRIPT_PRESS_HOLD): press in 200 ms,
+ * hold 500 ms (the tissue creeps), release in 200 ms, rest 100 ms; a
+ * little off-axis, inside the envelope. */
+#define HOLD_FROM 200u
+#define HOLD_TO 700u
+#define REST_FROM 900u
+void haptic_script_force(uint32_t t, float f[3])
+{
+    float s = 0.0f;
+    if (t < HOLD_FROM) {
+        s = ramp(t, 0u, HOLD_FROM);
+    } else if (t < HOLD_TO) {
+        s = 1.0f;
+    } else if (t < REST_FROM) {
+        s = 1.0f - ramp(t, HOLD_TO, REST_FROM);
+    }
+    f[0] = 0.2f * s;
+    f[1] = -0.1f * s;
+    f[2] = -DEPTH_N * s;
+    (void)quiet_nan;
+}
+#else
 void haptic_script_force(uint32_t t, float f[3])
 {
     f[0] = 0.0f;
@@ -47,6 +75,7 @@ void haptic_script_force(uint32_t t, float f[3])
         f[2] = quiet_nan();
     }
 }
+#endif
 
 void haptic_script_position(uint32_t t, float d[3])
 {

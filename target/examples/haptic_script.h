@@ -13,6 +13,14 @@
 /* Force [N] at a tick. */
 void haptic_script_force(uint32_t tick, float force[3]);
 
+/* Ticks of the script the firmware must reject: the NaN glitch, none in
+ * the creeping body's press-hold-release (-DHAPTIC_SCRIPT_PRESS_HOLD). */
+#ifdef HAPTIC_SCRIPT_PRESS_HOLD
+#define HAPTIC_SCRIPT_REJECTED 0u
+#else
+#define HAPTIC_SCRIPT_REJECTED 1u
+#endif
+
 /* Contact-site displacement [mm] at a tick (for contact-only headers). */
 void haptic_script_position(uint32_t tick, float disp[3]);
 

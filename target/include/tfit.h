@@ -76,6 +76,8 @@ extern "C" {
 #define TFIT_MODAL_DIMS 2    /* { p, r } */
 #define TFIT_ZHOU2017_DIMS 30 /* { lambda[3], then (A, B, k) for 9 (axis, component) pairs } */
 #define TFIT_PRONY_DIMS 4    /* { p, r (0: nodal rows), K terms, tick period in ns } */
+#define TFIT_CUT_DIMS 2      /* { p, K intervals in s } */
+#define TFIT_CUT_MAX_INTERVALS 64
 #define TFIT_RESONANT_DIMS 4 /* { p, r (0: nodal rows), K modes, tick period in ns } */
 
 /* Words of a prony model's caller-owned state: the previous projected
@@ -86,7 +88,7 @@ extern "C" {
 
 /* Words of a resonant model's caller-owned state: the previous projected
  * input (3), then 6 per mode (a position and a velocity per axis;
- * docs/header-format.md §5.7).  A generated header gives its model's as
+ * docs/header-format.md §5.8).  A generated header gives its model's as
  * TFIT_NAME_STATE_WORDS. */
 #define TFIT_RESONANT_STATE_WORDS(modes) (3u + 6u * (uint32_t)(modes))
 #define TFIT_RESONANT_MAX_STATE TFIT_RESONANT_STATE_WORDS(TFIT_RESONANT_MAX_MODES)
@@ -115,8 +117,11 @@ typedef enum tfit_family {
     TFIT_FAMILY_CONTACT = 4,  /* contact displacement -> contact force (one output point) */
     TFIT_FAMILY_PRONY = 5,    /* stateful: a nodal or modal map of the input filtered by
                                * exponential (Prony) terms, one step per tick */
-    TFIT_FAMILY_RESONANT = 6  /* stateful: a nodal or modal map of the input filtered by
-                               * damped second-order modes (inertia), one step per tick */
+    TFIT_FAMILY_CUT = 6,      /* forward with the cut progress s as a fourth input: nodal
+                               * tables at the knots s_k = k / K, linear in s between them */
+    TFIT_FAMILY_RESONANT = 7  /* stateful: a nodal or modal map of the input filtered by
+                               * damped second-order modes (inertia), one step per tick
+                               * (the last id: range checks use it) */
 } tfit_family;
 
 /* A model's self-test (docs/header-format.md §8): TFIT_CHECK_INPUTS inputs
@@ -200,6 +205,17 @@ tfit_status tfit_contact_force(const tfit_model *m, const float disp[3], float f
 tfit_status tfit_prony_reset(const tfit_model *m, float *state);
 tfit_status tfit_prony_step(const tfit_model *m, float *state, const float force[3], float *out);
 
+/* Cut models (TFIT_FAMILY_CUT, docs/cutting.md): the displacements under
+ * force[3] N when the incision has progressed to the fraction s of its path
+ * (0: uncut, 1: its full length).  out as tfit_displacements.  s outside
+ * [0, 1] is clamped onto it (-0.5 -> 0, 7 -> 1) and the status is
+ * TFIT_CLAMPED, as for a force outside the envelope; a NaN or Inf in s or
+ * in force gives TFIT_ERR_INPUT and +0.0f outputs.  The same instructions
+ * run for every (force, s); only the address of the two knot tables read
+ * depends on s.  TFIT_ERR_ARG for NULL, TFIT_ERR_FAMILY for another
+ * family (tfit_displacements refuses a cut model the same way). */
+tfit_status tfit_displacements_cut(const tfit_model *m, const float force[3], float s, float *out);
+
 /* Resonant models (TFIT_FAMILY_RESONANT): a body with inertia under force
  * control (a strike rings, then settles at the static response).  The same
  * contract as the prony functions above: caller-owned state of
@@ -226,10 +242,20 @@ typedef struct tfit_golden {
 
 /* Evaluates every golden vector into scratch[3 * model->n_out] and returns
  * the number of mismatching words (statuses plus output bits): 0 means
- * bit-exact.  A prony or resonant model's vectors are one tick sequence, stepped in
+ * bit-exact.  A cut model's vector v is evaluated at the cut progress
+ * s = TFIT_CUT_GOLDEN_S_BITS[v mod 16] (docs/header-format.md §7).  A
+ * prony or resonant model's vectors are one tick sequence, stepped in
  * order from a reset state (the state lives on this function's stack).
  * Returns UINT32_MAX for NULL arguments. */
 uint32_t tfit_golden_run(const tfit_golden *g, float *scratch);
+
+/* The cut progress of cut golden vector v, v mod 16 (bit patterns): 0, 1,
+ * knots and points between them, -0, the clamped -0.25, 1.5, 1e30, -1e30,
+ * and the rejected NaN, +Inf, -Inf. */
+#define TFIT_CUT_GOLDEN_S_BITS                                                                     \
+    {0x00000000u, 0x3f800000u, 0x3e800000u, 0x3f000000u, 0x3f400000u, 0x3dcccccdu, 0x3eaaaaabu,    \
+     0x3f59999au, 0x80000000u, 0xbe800000u, 0x3fc00000u, 0x7149f2cau, 0xf149f2cau, 0x7fc00000u,    \
+     0x7f800000u, 0xff800000u}
 
 #ifdef __cplusplus
 }

@@ -165,6 +165,18 @@ static int prony_ok(const tfit_model *m)
     return v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v);
 }
 
+/* A cut model's K + 1 tables as one nodal table of (K + 1) n_out points:
+ * each row's bound holds at every knot, and a + w (b - a) with w in [0, 1]
+ * stays within twice the larger, far below float's range. */
+static int cut_ok(const tfit_model *m)
+{
+    tfit_model v;
+    v.n_out = (m->dims[1] + 1u) * m->n_out;
+    v.dims = m->dims;
+    v.coef = m->coef;
+    return nodal_ok(&v);
+}
+
 /* Resonant modes: |f_ij| <= 1 and |w| <= 2^10.  The bound that keeps the
  * state finite is the host's: it refuses a model whose rounded F has a
  * spectral norm above 1 - 2^-20 (model/resonant.c), so the deviation
@@ -201,6 +213,8 @@ static int range_ok(const tfit_model *m)
     switch (m->family) {
     case TFIT_FAMILY_PRONY:
         return prony_ok(m);
+    case TFIT_FAMILY_CUT:
+        return cut_ok(m);
     case TFIT_FAMILY_RESONANT:
         return resonant_ok(m);
     case TFIT_FAMILY_MODAL:
@@ -279,7 +293,8 @@ static uint32_t far_input(uint32_t state, float in[3])
  * projected g, each folded into a CRC-32 that must equal the host's.  A
  * prony model takes the inputs as ticks from a reset state: after the
  * status, each tick's new state words, and the static map sees the
- * filtered input h. */
+ * filtered input h.  A cut model evaluates input k at the cut progress
+ * s_k = k / 4 - 1/4 (both ends clamped). */
 static tfit_status self_test(const tfit_model *m)
 {
     float in[3], g[3], h[3], out[3], st[TFIT_RESONANT_MAX_STATE];
@@ -287,6 +302,9 @@ static tfit_status self_test(const tfit_model *m)
     const int prony = m->family == TFIT_FAMILY_PRONY;
     const int resonant = m->family == TFIT_FAMILY_RESONANT;
     uint32_t state_words = 0u;
+    const int cut = m->family == TFIT_FAMILY_CUT;
+    float phi[TFIT_MAX_TERMS], sw = 0.0f;
+    uint32_t knot = 0u;
     tfit_model static_map;
     const tfit_model *eval = m;
     if (prony) {
@@ -304,7 +322,12 @@ static tfit_status self_test(const tfit_model *m)
         for (uint32_t i = 0u; i < 3u; ++i) {
             in[i] = tfit_float(m->check[3u * k + i]);
         }
-        const uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+        uint32_t clamped = tfit_input_map(m->coef, in, g, &bad);
+        if (cut) { /* at s_k = k/4 - 1/4: -0.25 (clamped), 0, ..., 1.5 (clamped) */
+            uint32_t sbad;
+            clamped |= tfit_cut_progress((float)k * 0.25f - 0.25f, m->dims[1], &knot, &sw, &sbad);
+            tfit_basis(m->dims[0], g, phi);
+        }
         crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u)); /* the status */
         if (prony | resonant) { /* the new state, then the static map at h */
             if (prony) {
@@ -320,7 +343,11 @@ static tfit_status self_test(const tfit_model *m)
             g[2] = h[2];
         }
         for (uint32_t j = 0u; j < m->n_out; ++j) {
-            point(eval, g, ~bad, j, out);
+            if (cut) {
+                tfit_cut_rows(m, phi, knot, sw, j, 1u, ~bad, out);
+            } else {
+                point(eval, g, ~bad, j, out);
+            }
             for (uint32_t i = 0u; i < 3u; ++i) {
                 crc = tfit_crc32_word(crc, tfit_bits(out[i]));
             }

@@ -13,6 +13,7 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
     }
     const tfit_model *m = gv->model;
     const uint32_t n = 3u * m->n_out;
+    static const uint32_t cut_s[16] = TFIT_CUT_GOLDEN_S_BITS;
     uint32_t mismatches = 0u;
     float state[TFIT_RESONANT_MAX_STATE]; /* a stateful model's: one tick sequence */
     if (m->family == TFIT_FAMILY_PRONY) {
@@ -29,6 +30,8 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
         }
         if (m->family == TFIT_FAMILY_PRONY) {
             s = tfit_prony_step(m, state, x, scratch);
+        } else if (m->family == TFIT_FAMILY_CUT) {
+            s = tfit_displacements_cut(m, x, tfit_float(cut_s[v & 15u]), scratch);
         } else if (m->family == TFIT_FAMILY_RESONANT) {
             s = tfit_resonant_step(m, state, x, scratch);
         } else if (m->family == TFIT_FAMILY_CONTACT) {

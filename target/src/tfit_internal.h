@@ -170,6 +170,13 @@ tfit_status tfit_degree1_one_asm(const tfit_model *m, const float in[3], float *
  * the zero rows when it is 0. */
 void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, uint32_t keep,
                            float *out);
+/* The modal family's output rows at rank r = 1 .. TFIT_MODAL_ASM_MAX_RANK
+ * (tfit_modal_armv7em.c): a[r] the amplitudes (+0.0f for a NaN/Inf input),
+ * rows the model's U, n_out >= 1 points; keep all ones, or 0 to write the
+ * +0.0f of the output mask. */
+#define TFIT_MODAL_ASM_MAX_RANK 8u
+void tfit_modal_rows_asm(uint32_t r, const float *rows, const float *a, uint32_t n_out,
+                         uint32_t keep, float *out);
 #else
 #define TFIT_DEGREE1_ASM 0
 #endif
@@ -201,6 +208,14 @@ void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, flo
  * the evaluators read: family, n_out, n_dims, dims, coef, n_coef, node_ids). */
 void tfit_prony_static(const tfit_model *m, tfit_model *v);
 
+/* The cut family (tfit_cut.c, header-format.md §5.7): s -> the knot j and
+ * weight w of its interval (s clamped onto [0, 1]; returns all ones when
+ * it was clamped, *bad all ones for NaN/Inf, taken as 0); and output
+ * points first .. first + count - 1 at the basis phi, and-ed with keep. */
+uint32_t tfit_cut_progress(float s, uint32_t intervals, uint32_t *knot, float *w, uint32_t *bad);
+void tfit_cut_rows(const tfit_model *m, const float *phi, uint32_t knot, float w, uint32_t first,
+                   uint32_t count, uint32_t keep, float *out);
+
 /* h clamped to [-1, 1] (beyond it, +-1 with h's sign) by a bitwise
  * selection: the stateful families' input to their static map. */
 static inline float tfit_clamp_unit(float h)
@@ -225,7 +240,7 @@ static inline float *tfit_select_ptr(uint32_t mask, float *a, float *b)
 void tfit_stateful_static(const tfit_model *m, uint32_t skip, tfit_model *v);
 void tfit_stateful_eval(const tfit_model *v, const float h[3], uint32_t keep, float *out);
 
-/* The resonant family's filter (tfit_resonant.c, header-format.md §5.7),
+/* The resonant family's filter (tfit_resonant.c, header-format.md §5.8),
  * as tfit_prony_filter; and its static map. */
 void tfit_resonant_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
                           float h[3]);

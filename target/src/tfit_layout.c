@@ -58,6 +58,17 @@ static uint32_t prony_coefs(const tfit_model *m)
     return TFIT_INPUT_MAP_FLOATS + 2u * terms + table;
 }
 
+/* {p, K}: K + 1 nodal tables; 0 when the count would not fit uint32_t. */
+static uint32_t cut_coefs(const tfit_model *m)
+{
+    const uint32_t p = m->dims[0], k = m->dims[1];
+    if (p > TFIT_MAX_DEGREE || k == 0u || k > TFIT_CUT_MAX_INTERVALS) {
+        return 0u;
+    }
+    const uint64_t n = (uint64_t)(k + 1u) * 3u * m->n_out * TFIT_TERMS(p) + TFIT_INPUT_MAP_FLOATS;
+    return n > 0xffffffffu ? 0u : (uint32_t)n;
+}
+
 /* {p, r, K, tick_ns}: K modes of 7 floats after the input map, then the
  * static map as for prony. */
 static uint32_t resonant_coefs(const tfit_model *m)
@@ -89,6 +100,8 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
         return m->n_dims == TFIT_ZHOU2017_DIMS ? zhou2017_coefs(m) : 0u;
     case TFIT_FAMILY_PRONY:
         return m->n_dims == TFIT_PRONY_DIMS ? prony_coefs(m) : 0u;
+    case TFIT_FAMILY_CUT:
+        return m->n_dims == TFIT_CUT_DIMS ? cut_coefs(m) : 0u;
     case TFIT_FAMILY_RESONANT:
         return m->n_dims == TFIT_RESONANT_DIMS ? resonant_coefs(m) : 0u;
     default:

@@ -6,8 +6,31 @@
  *   out[o] = U[o][0] a_0 + U[o][1] a_1 + ... (left to right)
  * The modes are evaluated one output point (three rows) per iteration,
  * sharing each amplitude; the output mask is applied as each word is stored.
+ * On Cortex-M4F/M7 ranks 1 .. 8 reconstruct in assembly
+ * (tfit_modal_armv7em.c, the same operations in the same order).
  */
 #include "tfit_internal.h"
+
+/* The reconstruction in C: any rank, every target. */
+static void rows_c(const float *u, const float *a, uint32_t r, uint32_t n_out, uint32_t keep,
+                   float *out)
+{
+    for (uint32_t j = 0u; j < n_out; ++j) {
+        const float *uy = u + r;
+        const float *uz = uy + r;
+        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
+        for (uint32_t k = 1u; k < r; ++k) {
+            x = x + u[k] * a[k];
+            y = y + uy[k] * a[k];
+            z = z + uz[k] * a[k];
+        }
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        u += 3u * r;
+        out += 3;
+    }
+}
 
 void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out)
 {
@@ -24,21 +47,15 @@ void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float
 
     tfit_basis(p, g, phi);
     for (uint32_t k = 0u; k < r; ++k) {
-        a[k] = tfit_row(amp + k * n_terms, phi, n_terms);
+        /* masked: +0.0f for a NaN/Inf input (the assembly's zero rows need
+         * it; the C rows mask their outputs anyway) */
+        a[k] = tfit_masked(tfit_row(amp + k * n_terms, phi, n_terms), keep);
     }
-    for (uint32_t j = 0u; j < m->n_out; ++j) {
-        const float *uy = u + r;
-        const float *uz = uy + r;
-        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
-        for (uint32_t k = 1u; k < r; ++k) {
-            x = x + u[k] * a[k];
-            y = y + uy[k] * a[k];
-            z = z + uz[k] * a[k];
-        }
-        out[0] = tfit_masked(x, keep);
-        out[1] = tfit_masked(y, keep);
-        out[2] = tfit_masked(z, keep);
-        u += 3u * r;
-        out += 3;
+#if TFIT_DEGREE1_ASM
+    if (r <= TFIT_MODAL_ASM_MAX_RANK) {
+        tfit_modal_rows_asm(r, u, a, m->n_out, keep, out);
+        return;
     }
+#endif
+    rows_c(u, a, r, m->n_out, keep, out);
 }

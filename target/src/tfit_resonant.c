@@ -1,7 +1,7 @@
 /*
  * tfit_resonant.c — the resonant family: a body with inertia under force
  * control, one fixed-cost step per tick with caller-owned state
- * (docs/header-format.md §5.7, docs/fitting.md §8).
+ * (docs/header-format.md §5.8, docs/fitting.md §8).
  *
  * coef = input map (12) | K modes {f11, f12, f21, f22, w0, w1, w2}
  *        | the static map's tables (nodal rows when r = 0, else modal A, U),

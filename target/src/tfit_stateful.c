@@ -1,7 +1,7 @@
 /*
  * tfit_stateful.c — what the stateful families (prony, resonant) share: the
  * static map after their own terms as a nodal or modal model, and its
- * evaluation at the filtered input h (docs/header-format.md §5.6, §5.7).
+ * evaluation at the filtered input h (docs/header-format.md §5.6, §5.8).
  */
 #include "tfit_internal.h"
 

@@ -2,10 +2,12 @@
  * gen_random.c — writes random models with their golden vectors.
  *
  *   gen_random bundle N SEED FILE   N random models of the stateless families,
- *                                   then 200 prony models, into a bundle (bundle.h)
+ *                                   then 200 prony models and 200 cut models, into
+ *                                   a bundle (bundle.h)
  *   gen_random header SEED FILE.h   two small models per stateless family, a
  *                                   contact model of degree 1 and two prony
- *                                   models (nodal and modal static maps),
+ *                                   models (nodal and modal static maps), three
+ *                                   cut models (degrees 1, 2 and 0),
  *                                   through the real header emitter
  *                                   (FILE.h + FILE_golden.h)
  *
@@ -86,6 +88,8 @@ static int write_model(FILE *f, const tf_model *m, uint64_t seed)
 /* Prony models after the stateless ones, from their own sequence (the
  * first n models are those of earlier bundles). */
 #define BUNDLE_PRONY 200
+/* Cut models after those, from a third sequence. */
+#define BUNDLE_CUT 200
 
 static int bundle(long n, uint64_t seed, const char *path)
 {
@@ -94,15 +98,16 @@ static int bundle(long n, uint64_t seed, const char *path)
         perror(path);
         return 1;
     }
-    tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u};
-    long per_family[6] = {0};
+    tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u}, rc = {seed ^ 0x637574u};
+    long per_family[7] = {0};
     put(f, TF_BUNDLE_MAGIC);
-    put(f, (uint32_t)(n + BUNDLE_PRONY));
-    for (long i = 0; i < n + BUNDLE_PRONY; ++i) {
+    put(f, (uint32_t)(n + BUNDLE_PRONY + BUNDLE_CUT));
+    for (long i = 0; i < n + BUNDLE_PRONY + BUNDLE_CUT; ++i) {
         char name[32];
         snprintf(name, sizeof name, "random%ld", i);
-        tf_model *m = i < n ? tf_random_model(&r, name, 0, 0)
-                            : tf_random_model(&rp, name, TFIT_FAMILY_PRONY, 0);
+        tf_model *m = i < n                  ? tf_random_model(&r, name, 0, 0)
+                      : i < n + BUNDLE_PRONY ? tf_random_model(&rp, name, TFIT_FAMILY_PRONY, 0)
+                                             : tf_random_model(&rc, name, TFIT_FAMILY_CUT, 0);
         if (m == NULL || write_model(f, m, seed + (uint64_t)i) != 0) {
             fclose(f);
             return 1;
@@ -114,10 +119,10 @@ static int bundle(long n, uint64_t seed, const char *path)
         perror(path);
         return 1;
     }
-    printf("gen_random: %ld models (nodal %ld, modal %ld, zhou2017 %ld, contact %ld, prony %ld) -> "
-           "%s\n",
-           n + BUNDLE_PRONY, per_family[1], per_family[2], per_family[3], per_family[4],
-           per_family[5], path);
+    printf("gen_random: %ld models (nodal %ld, modal %ld, zhou2017 %ld, contact %ld, prony %ld, "
+           "cut %ld) -> %s\n",
+           n + BUNDLE_PRONY + BUNDLE_CUT, per_family[1], per_family[2], per_family[3],
+           per_family[4], per_family[5], per_family[6], path);
     return 0;
 }
 
@@ -153,7 +158,23 @@ static tf_model *prony(uint64_t seed, const char *name, int modal)
     return NULL;
 }
 
-#define HEADER_MODELS 11
+/* A small cut model of degree p (1: the fitter's; 0 and 2: the other
+ * paths of tfit_cut.c), from its own sequence so that the other models do
+ * not change. */
+static tf_model *cut(uint64_t seed, const char *name, uint32_t p)
+{
+    tf_rng r = {seed ^ (0xc071u + p)};
+    for (int tries = 0; tries < 1000; ++tries) {
+        tf_model *m = tf_random_model(&r, name, TFIT_FAMILY_CUT, 1);
+        if (m == NULL || m->dims[0] == p) {
+            return m;
+        }
+        tf_model_free(m);
+    }
+    return NULL;
+}
+
+#define HEADER_MODELS 14
 
 /* A small resonant model: static map nodal of degree p (p = 1: the
  * degree-1 rows), or modal, with at least `modes` modes, from its own
@@ -213,7 +234,11 @@ static int header(uint64_t seed, const char *path)
     models[8] = contact_degree1(seed, "contact_p1");
     models[9] = prony(seed, "prony_a", 0);
     models[10] = prony(seed, "prony_b", 1);
-    if (models[8] == NULL || models[9] == NULL || models[10] == NULL) {
+    models[11] = cut(seed, "cut_a", 1);
+    models[12] = cut(seed, "cut_b", 2);
+    models[13] = cut(seed, "cut_c", 0);
+    if (models[8] == NULL || models[9] == NULL || models[10] == NULL || models[11] == NULL ||
+        models[12] == NULL || models[13] == NULL) {
         return 1;
     }
     const tf_emit_info info = {.source = "random test models (tests/bitexact/gen_random.c)",
@@ -229,6 +254,40 @@ static int header(uint64_t seed, const char *path)
     return 0;
 }
 
+/* Modal models of ranks 1 .. MODAL_RANKS: every rank whose rows run in
+ * assembly on Armv7E-M (TFIT_MODAL_ASM_MAX_RANK = 8) and the first above
+ * it (the C rows), each at a random degree 0 .. 4 and 1 .. 8 outputs. */
+#define MODAL_RANKS 9
+
+static int modal_ranks(uint64_t seed, const char *path)
+{
+    tf_model *models[MODAL_RANKS] = {0};
+    tf_rng r = {seed};
+    char err[512], name[32];
+    int rc = 1;
+    for (uint32_t k = 0; k < MODAL_RANKS; ++k) {
+        const uint32_t dims[2] = {tf_rng_below(&r, 5), k + 1};
+        snprintf(name, sizeof name, "modal_r%u", k + 1);
+        models[k] = tf_random_model_of(&r, name, TFIT_FAMILY_MODAL, dims, 2,
+                                       1 + tf_rng_below(&r, 8));
+        if (models[k] == NULL) {
+            goto done;
+        }
+    }
+    const tf_emit_info info = {.source = "random modal models of ranks 1-9 "
+                                         "(tests/bitexact/gen_random.c)",
+                               .golden_seed = seed};
+    rc = tf_emit_header(path, models, MODAL_RANKS, &info, err, sizeof err);
+    if (rc != 0) {
+        fprintf(stderr, "gen_random: %s\n", err);
+    }
+done:
+    for (int i = 0; i < MODAL_RANKS; ++i) {
+        tf_model_free(models[i]);
+    }
+    return rc != 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 5 && strcmp(argv[1], "bundle") == 0) {
@@ -240,6 +299,10 @@ int main(int argc, char **argv)
     if (argc == 4 && strcmp(argv[1], "header") == 0) {
         return header(strtoull(argv[2], NULL, 10), argv[3]);
     }
-    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header[-resonant] SEED FILE.h\n");
+    if (argc == 4 && strcmp(argv[1], "modal-ranks") == 0) {
+        return modal_ranks(strtoull(argv[2], NULL, 10), argv[3]);
+    }
+    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header[-resonant] SEED FILE.h | "
+                    "gen_random modal-ranks SEED FILE.h\n");
     return 2;
 }

@@ -21,6 +21,14 @@
  * points, the patch is a set of element faces and the output points and the
  * patch centre are mesh nodes at every level.
  *
+ * Graded meshes (--grade F:M instead of --divisions): the number of elements
+ * per quantum varies instead, F on the patch's quanta and GRADE_FACTOR times
+ * fewer per quantum of distance from the patch (rounded up, at least M),
+ * so element edges still fall on every quantum boundary (patch edges, output
+ * points); --layer-ratio R makes each layer R times thicker than the one
+ * above it (thin layers under the load).  Nodes keep their lattice numbers;
+ * positions come from per-axis coordinate tables.
+ *
  * Node numbers come from a lattice at half the element size, so a node's
  * number is a formula of its position: id = 1 + i + Kx (j + Ky k),
  * Kx = 2 N + 1, Ky = 2 Ny + 1, with i, j, k the half-step indices along x, y,
@@ -76,6 +84,7 @@
  * Exit 0 ok, 2 bad usage (nothing written).
  */
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -86,6 +95,12 @@
 /* Smallest increment CalculiX may cut back to, relative to the interval
  * between printed load levels, before it gives up. */
 #define MIN_FRACTION 1e-2
+/* Graded meshes (--grade): elements per quantum fall by this factor per
+ * quantum of distance from the patch, down to the given minimum. */
+#define GRADE_FACTOR 0.7
+#define MAX_DIV 400   /* elements along a side */
+#define MAX_LAYERS 100
+#define MAX_QUANTA 32 /* box side in quanta */
 
 enum { X0 = 1, X1 = 2, Y0 = 4, Y1 = 8 }; /* lateral faces */
 enum { SYM_X = 1, SYM_Y = 2 };           /* mirror planes x = xc, y = yc */
@@ -120,6 +135,10 @@ typedef struct {
     double tolerance; /* Newton residual and correction criteria (NLGEOM) */
     int cases[MAX_CASES];
     int ncases;
+    int grade_fine, grade_min; /* --grade FINE:MIN (0: uniform, --divisions) */
+    double layer_ratio;        /* --layer-ratio: each layer this times the one above */
+    int qx0[MAX_QUANTA + 1], qy0[MAX_QUANTA + 1]; /* first element of each quantum */
+    double cx[2 * MAX_DIV + 1], cy[2 * MAX_DIV + 1], cz[2 * MAX_LAYERS + 1]; /* lattice */
 } deck;
 
 static const char *const case_name[MAX_CASES] = {"fx", "fy", "fz", "path"};
@@ -134,8 +153,8 @@ static const char *const load_form[] = {"consistent nodal loads", "pressure (fz)
 static int imax(const deck *d) { return 2 * d->n; }
 static int jmax(const deck *d) { return 2 * d->ny; }
 static int kmax(const deck *d) { return 2 * d->layers; }
-static int icentre(const deck *d) { return 2 * d->m * (d->sc->px + 1); }
-static int jcentre(const deck *d) { return 2 * d->m * (d->sc->py + 1); }
+static int icentre(const deck *d) { return 2 * d->qx0[d->sc->px + 1]; }
+static int jcentre(const deck *d) { return 2 * d->qy0[d->sc->py + 1]; }
 
 /* The meshed part: lattice i <= ilast, j <= jlast. */
 static int ilast(const deck *d) { return d->symmetry & SYM_X ? icentre(d) : imax(d); }
@@ -151,9 +170,9 @@ static long node_id(const deck *d, int i, int j, int k)
  * (corner: none odd; midside of an edge: exactly one). */
 static int is_node(int i, int j, int k) { return (i & 1) + (j & 1) + (k & 1) <= 1; }
 
-static double coord_x(const deck *d, int i) { return i * (d->sc->lx / imax(d)); }
-static double coord_y(const deck *d, int j) { return j * (d->sc->ly / jmax(d)); }
-static double coord_z(const deck *d, int k) { return k * (d->sc->lz / kmax(d)); }
+static double coord_x(const deck *d, int i) { return d->cx[i]; }
+static double coord_y(const deck *d, int j) { return d->cy[j]; }
+static double coord_z(const deck *d, int k) { return d->cz[k]; }
 
 static int clamped(const deck *d, int i, int j)
 {
@@ -171,6 +190,9 @@ static int on_mirror(const deck *d, int i, int j, int plane)
 
 static int out_nx(const deck *d) { return d->sc->qx / d->sc->out_step + 1; }
 static int out_ny(const deck *d) { return d->sc->qy / d->sc->out_step + 1; }
+/* Lattice index of output column a / row b (on a quantum boundary). */
+static int out_i(const deck *d, int a) { return 2 * d->qx0[a * d->sc->out_step]; }
+static int out_j(const deck *d, int b) { return 2 * d->qy0[b * d->sc->out_step]; }
 
 static void count_nodes(const deck *d, long *nodes, long *fixed_dofs)
 {
@@ -198,16 +220,18 @@ static double share(const deck *d)
  * mirror image of a point inside. */
 static void write_outputs(const deck *d)
 {
-    int step = 2 * d->m * d->sc->out_step, nx = out_nx(d);
+    int step = d->sc->out_step, nx = out_nx(d);
     for (int b = 0; b < out_ny(d); ++b) {
         for (int a = 0; a < nx; ++a) {
-            int i = a * step, j = b * step, si = 1, sj = 1;
+            int i = out_i(d, a), j = out_j(d, b), si = 1, sj = 1, as = a, bs = b;
             if (i > ilast(d)) {
-                i = 2 * icentre(d) - i;
+                as = (2 * (d->sc->px + 1) - a * step) / step; /* the mirror image's point */
+                i = out_i(d, as);
                 si = -1;
             }
             if (j > jlast(d)) {
-                j = 2 * jcentre(d) - j;
+                bs = (2 * (d->sc->py + 1) - b * step) / step;
+                j = out_j(d, bs);
                 sj = -1;
             }
             if (si == 1 && sj == 1) {
@@ -215,8 +239,8 @@ static void write_outputs(const deck *d)
                        coord_x(d, i), coord_y(d, j), d->sc->lz);
             } else {
                 printf("** MIRROR %d %d %d %d 1 %.15g %.15g %.15g\n", a + nx * b + 1,
-                       i / step + nx * (j / step) + 1, si, sj, coord_x(d, a * step),
-                       coord_y(d, b * step), d->sc->lz);
+                       as + nx * bs + 1, si, sj, coord_x(d, out_i(d, a)),
+                       coord_y(d, out_j(d, b)), d->sc->lz);
             }
         }
     }
@@ -233,6 +257,10 @@ static void write_header(const deck *d)
     if (d->nlgeom) {
         printf("** material %s, NLGEOM, %d load levels\n", material_name[d->material],
                d->increments);
+    }
+    if (d->grade_fine != 0 || d->layer_ratio != 1) {
+        printf("** graded: %d:%d elements per quantum (patch:least, factor %g per quantum), "
+               "layer ratio %g\n", d->grade_fine, d->grade_min, GRADE_FACTOR, d->layer_ratio);
     }
     printf("** SIZE %ld %ld %ld\n", elements, nodes, 3 * nodes - fixed);
     for (int s = 0; s < d->ncases; ++s) {
@@ -327,16 +355,14 @@ static int keep_clamped(const deck *d, int i, int j, int unused)
 }
 
 /* Patch elements (top layer) of the meshed part. */
-static int patch_lo(const deck *d, int quanta) { return d->m * quanta; }
-
 static void write_patch_set(const deck *d)
 {
-    int count = 0, xhi = patch_lo(d, d->sc->px + 2), yhi = patch_lo(d, d->sc->py + 2);
+    int count = 0, xhi = d->qx0[d->sc->px + 2], yhi = d->qy0[d->sc->py + 2];
     xhi = xhi < ilast(d) / 2 ? xhi : ilast(d) / 2;
     yhi = yhi < jlast(d) / 2 ? yhi : jlast(d) / 2;
     printf("*ELSET, ELSET=PATCH\n");
-    for (int ey = patch_lo(d, d->sc->py); ey < yhi; ++ey) {
-        for (int ex = patch_lo(d, d->sc->px); ex < xhi; ++ex) {
+    for (int ey = d->qy0[d->sc->py]; ey < yhi; ++ey) {
+        for (int ex = d->qx0[d->sc->px]; ex < xhi; ++ex) {
             list_item(element_id(d, ex, ey, d->layers - 1), &count);
         }
     }
@@ -345,11 +371,11 @@ static void write_patch_set(const deck *d)
 
 static void write_output_set(const deck *d)
 {
-    int count = 0, step = 2 * d->m * d->sc->out_step;
+    int count = 0;
     printf("*NSET, NSET=OUT\n");
-    for (int j = 0; j <= jlast(d); j += step) {
-        for (int i = 0; i <= ilast(d); i += step) {
-            list_item(node_id(d, i, j, kmax(d)), &count);
+    for (int b = 0; b < out_ny(d) && out_j(d, b) <= jlast(d); ++b) {
+        for (int a = 0; a < out_nx(d) && out_i(d, a) <= ilast(d); ++a) {
+            list_item(node_id(d, out_i(d, a), out_j(d, b), kmax(d)), &count);
         }
     }
     printf("\n");
@@ -416,16 +442,16 @@ static double *patch_weights(const deck *d)
         fprintf(stderr, "box_deck: out of memory\n");
         exit(1);
     }
-    double area = (d->sc->lx / d->n) * (d->sc->ly / d->ny);
     if (d->load == LOAD_POINT) {
         w[icentre(d) + s * jcentre(d)] = patch_area(d);
         return w;
     }
-    for (int ey = patch_lo(d, d->sc->py); ey < patch_lo(d, d->sc->py + 2); ++ey) {
-        for (int ex = patch_lo(d, d->sc->px); ex < patch_lo(d, d->sc->px + 2); ++ex) {
+    for (int ey = d->qy0[d->sc->py]; ey < d->qy0[d->sc->py + 2]; ++ey) {
+        for (int ex = d->qx0[d->sc->px]; ex < d->qx0[d->sc->px + 2]; ++ex) {
             if (2 * ex >= ilast(d) || 2 * ey >= jlast(d)) {
                 continue; /* beyond a cut */
             }
+            double area = (d->cx[2 * ex + 2] - d->cx[2 * ex]) * (d->cy[2 * ey + 2] - d->cy[2 * ey]);
             for (int c = 4; c < 16; ++c) {
                 if (hex20[c][2] != 2) {
                     continue; /* only the top face's 8 nodes */
@@ -488,7 +514,8 @@ static void write_step(const deck *d, int step, const double *w)
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: box_deck [--scene block48|beam40] --divisions N --layers L [--nu V]\n"
+            "usage: box_deck [--scene block48|beam40] (--divisions N | --grade F:M) --layers L\n"
+            "                [--layer-ratio R] [--nu V]\n"
             "                [--element C3D20R|C3D20] [--cases fx,fy,fz | --force FX,FY,FZ]\n"
             "                [--pressure | --point] [--symmetry x|y|xy]\n"
             "                [--material elastic|neohooke] [--nlgeom [--increments K]\n"
@@ -496,6 +523,11 @@ static void usage(FILE *out)
             "  --scene S      block48 (default) or beam40\n"
             "  --divisions N  elements along x, a multiple of 20 (block48) or 16 (beam40)\n"
             "  --layers L     elements through the thickness\n"
+            "  --grade F:M    instead of --divisions: F elements per quantum (half the\n"
+            "                 patch side) on the patch, 0.7 times fewer per quantum\n"
+            "                 away from it, at least M\n"
+            "  --layer-ratio R  each layer R times thicker than the one above (1 to 4;\n"
+            "                 default 1, uniform)\n"
             "  --nu V         Poisson's ratio, 0 <= V < 0.5 (default 0.49)\n"
             "  --element T    C3D20R (default, 2x2x2 points) or C3D20 (3x3x3 points)\n"
             "  --cases LIST   load cases in step order (default fx,fy,fz)\n"
@@ -618,16 +650,102 @@ static int check_symmetry(const deck *d)
     return 0;
 }
 
-/* Divisions and layers: N a multiple of the box length in quanta, sizes
- * within what CalculiX can solve here. */
+/* Elements in quantum q of a side whose patch covers quanta p and p + 1:
+ * m uniform, or graded: FINE on the patch, GRADE_FACTOR times fewer per
+ * quantum of distance from it (rounded up), at least MIN. */
+static int quantum_elements(const deck *d, int q, int p)
+{
+    if (d->grade_fine == 0) {
+        return d->m;
+    }
+    int dq = q < p ? p - q : q > p + 1 ? q - p - 1 : 0;
+    int m = (int)ceil(d->grade_fine * pow(GRADE_FACTOR, dq) - 1e-9);
+    return m > d->grade_min ? m : d->grade_min;
+}
+
+/* One side's quanta -> elements (q0[q], the first element of quantum q)
+ * and lattice coordinates; returns the element count, -1 when too many. */
+static int side_lattice(const deck *d, double len, int quanta, int p, int *q0, double *c)
+{
+    double qw = len / quanta;
+    q0[0] = 0;
+    for (int q = 0; q < quanta; ++q) {
+        int m = quantum_elements(d, q, p);
+        q0[q + 1] = q0[q] + m;
+        if (q0[q + 1] > MAX_DIV) {
+            return -1;
+        }
+        for (int e = 0; e <= m; ++e) {
+            c[2 * (q0[q] + e)] = q * qw + e * (qw / m);
+        }
+    }
+    int n = q0[quanta];
+    for (int i = 0; i <= 2 * n; ++i) {
+        if (d->grade_fine == 0) {
+            c[i] = i * (len / (2 * n)); /* as before grading existed, to the last bit */
+        } else if (i & 1) {
+            c[i] = (c[i - 1] + c[i + 1]) / 2; /* midside nodes halfway */
+        }
+    }
+    return n;
+}
+
+/* Layers from the top (z = lz) down, each layer_ratio times thicker than
+ * the one above (1: uniform). */
+static void layer_lattice(deck *d)
+{
+    int k = kmax(d);
+    double r = d->layer_ratio, lz = d->sc->lz;
+    if (r == 1) {
+        for (int i = 0; i <= k; ++i) {
+            d->cz[i] = i * (lz / k);
+        }
+        return;
+    }
+    double t = lz * (r - 1) / (pow(r, d->layers) - 1); /* top layer */
+    d->cz[k] = lz;
+    for (int e = d->layers - 1; e >= 0; --e, t *= r) {
+        d->cz[2 * e] = e == 0 ? 0 : d->cz[2 * e + 2] - t;
+        d->cz[2 * e + 1] = (d->cz[2 * e] + d->cz[2 * e + 2]) / 2;
+    }
+}
+
+/* Divisions and layers: N a multiple of the box length in quanta (or a
+ * grading instead), sizes within what CalculiX can solve here. */
 static int check_mesh(deck *d)
 {
-    if (d->n <= 0 || d->n % d->sc->qx != 0 || d->n > 400 || d->layers <= 0 || d->layers > 100) {
+    if (d->sc->qx > MAX_QUANTA || d->sc->qy > MAX_QUANTA || d->layers <= 0 ||
+        d->layers > MAX_LAYERS || !(d->layer_ratio >= 1 && d->layer_ratio <= 4)) {
         return -1;
     }
-    d->m = d->n / d->sc->qx;
-    d->ny = d->m * d->sc->qy;
+    if (d->grade_fine != 0) {
+        if (d->n != 0 || d->grade_min < 1 || d->grade_min > d->grade_fine || d->grade_fine > 40) {
+            return -1;
+        }
+    } else if (d->n <= 0 || d->n % d->sc->qx != 0 || d->n > MAX_DIV) {
+        return -1;
+    } else {
+        d->m = d->n / d->sc->qx;
+    }
+    d->n = side_lattice(d, d->sc->lx, d->sc->qx, d->sc->px, d->qx0, d->cx);
+    d->ny = side_lattice(d, d->sc->ly, d->sc->qy, d->sc->py, d->qy0, d->cy);
+    if (d->n < 0 || d->ny < 0) {
+        return -1;
+    }
+    layer_lattice(d);
     return 0;
+}
+
+/* --grade FINE:MIN */
+static int parse_grade(deck *d, const char *s)
+{
+    char *end;
+    d->grade_fine = (int)strtol(s, &end, 10);
+    if (*end != ':') {
+        return -1;
+    }
+    d->grade_min = (int)strtol(end + 1, &end, 10);
+    return *end || d->grade_fine < 1 ? -1 : 0;
 }
 
 static int parse_args(deck *d, int argc, char **argv)
@@ -640,8 +758,9 @@ static int parse_args(deck *d, int argc, char **argv)
         {"force", required_argument, NULL, 'f'},     {"material", required_argument, NULL, 'm'},
         {"nlgeom", no_argument, NULL, 'g'},          {"increments", required_argument, NULL, 'i'},
         {"tolerance", required_argument, NULL, 't'}, {"scene", required_argument, NULL, 's'},
-        {"symmetry", required_argument, NULL, 'y'},  {NULL, 0, NULL, 0}};
-    *d = (deck){.sc = &scenes[0], .nu = 0.49, .element = "C3D20R"};
+        {"symmetry", required_argument, NULL, 'y'},  {"grade", required_argument, NULL, 'G'},
+        {"layer-ratio", required_argument, NULL, 'r'}, {NULL, 0, NULL, 0}};
+    *d = (deck){.sc = &scenes[0], .nu = 0.49, .element = "C3D20R", .layer_ratio = 1};
     parse_cases(d, "fx,fy,fz");
     int cases_given = 0, force_given = 0;
     char *end;
@@ -659,6 +778,8 @@ static int parse_args(deck *d, int argc, char **argv)
         case 'i': d->increments = (int)strtol(optarg, &end, 10); if (*end) return -1; break;
         case 't': d->tolerance = strtod(optarg, &end); if (*end) return -1; break;
         case 'y': if (parse_symmetry(d, optarg) != 0) return -1; break;
+        case 'G': if (parse_grade(d, optarg) != 0) return -1; break;
+        case 'r': d->layer_ratio = strtod(optarg, &end); if (*end) return -1; break;
         case 'm': if (parse_material(d, optarg) != 0) return -1; break;
         case 's': if (parse_scene(d, optarg) != 0) return -1; break;
         case 'h': usage(stdout); exit(0);

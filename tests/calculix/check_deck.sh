@@ -118,6 +118,35 @@ awk -F, '
         exit bad
     }' "$tmp/half.inp" || fails=$((fails + 1))
 
+# block48 graded, quarter: --grade 4:1 puts 4, 3, 2, 2 and then 1 elements
+# in the 2.4 mm quanta from the patch outwards (0.7 times fewer per quantum,
+# rounded up), so 17 per half side; layers thinnest at the top, each 1.6
+# times the one above; the counts and loads as for any quarter, node 61 at
+# the top centre, the element edges at the quanta and the layer ratio
+h=17 l=4
+deck graded --grade 4:1 --layers $l --layer-ratio 1.6 --symmetry xy --force 0,0,-3 --nlgeom
+nodes=$(box_nodes $h $h $l)
+clamped=$(( 2 * $(face_nodes $h $l) - (2 * l + 1) ))
+mirror=$(( 2 * ($(face_nodes $h $l) - (2 * l + 1)) ))
+expect_size "$tmp/graded.inp" $((h * h * l)) "$nodes" $((3 * (nodes - clamped) - mirror))
+expect_outputs "$tmp/graded.inp" 121 24 24
+expect_loads "$tmp/graded.inp" 1
+grep -q '^\*\* OUT 61 [0-9]* 24 24 6$' "$tmp/graded.inp" || fail "graded: output point 61 is not (24, 24, 6)"
+awk -F, '/^\*NODE,/ { on = 1; next } /^\*/ { on = 0 }
+    on && $4 == 6 && $3 == 0 { x[$2] = 1 }
+    on && $2 == 0 && $3 == 0 { z[$4] = 1 }
+    END {
+        want = "0 2.4 4.8 7.2 9.6 12 14.4 15.6 16.8 18 19.2 20 20.8 21.6 22.2 22.8 23.4 24"   # corners
+        n = split(want, w, " "); for (k = 1; k <= n; k++) if (!(w[k] in x)) { print "FAIL: graded: no corner node at x = " w[k]; bad = 1 }
+        for (v in x) c++
+        if (c != 35) { print "FAIL: graded: " c " node positions along x, expected 35 (17 elements)"; bad = 1 }
+        # corner z of 4 layers from the top, each 1.6 times the one below it
+        t = 6 * 0.6 / (1.6 ^ 4 - 1); zz = 6
+        for (k = 0; k < 4; k++) { zz -= t * 1.6 ^ k; hit = 0
+            for (v in z) if ((v - zz) ^ 2 < 1e-20) hit = 1
+            if (!hit) { print "FAIL: graded: no layer at z = " zz; bad = 1 } }
+        exit bad }' "$tmp/graded.inp" || fails=$((fails + 1))
+
 # beam40: 16k x 8k x L, clamped on x = 0 only; 9 x 5 outputs
 n=16 l=8
 deck beam --scene beam40 --divisions $n --layers $l --nu 0.45
@@ -137,12 +166,14 @@ for args in "--divisions 30 --layers 2" "--divisions 20 --layers 0" "--divisions
             "--divisions 20 --layers 2 --symmetry y" "--divisions 20 --layers 2 --symmetry x --cases fz,fx" \
             "--divisions 20 --layers 2 --symmetry xy --cases fz --point" "--divisions 20 --layers 2 --symmetry z" \
             "--scene beam40 --divisions 20 --layers 2" "--scene beam40 --divisions 16 --layers 2 --symmetry x --cases fz" \
-            "--scene liver --divisions 20 --layers 2" "--divisions 20 --layers 2 --nlgeom --tolerance 0.5"; do
+            "--scene liver --divisions 20 --layers 2" "--divisions 20 --layers 2 --nlgeom --tolerance 0.5" \
+            "--divisions 20 --grade 4:1 --layers 2" "--grade 2:3 --layers 2" "--grade 4 --layers 2" \
+            "--grade 0:1 --layers 2" "--grade 4:1 --layers 2 --layer-ratio 0.5"; do
     # shellcheck disable=SC2086
     "$tool" $args > "$tmp/bad.inp" 2> "$tmp/err"
     st=$?
     [ "$st" = 2 ] || fail "'$args' exited $st, expected 2"
     [ -s "$tmp/bad.inp" ] && fail "'$args' wrote a deck"
 done
-[ "$fails" = 0 ] && echo "box_deck: counts (whole, half, quarter, beam40), output points, load sums, NLGEOM cards, bad arguments ok"
+[ "$fails" = 0 ] && echo "box_deck: counts (whole, half, quarter, graded, beam40), output points, load sums, NLGEOM cards, bad arguments ok"
 [ "$fails" = 0 ]

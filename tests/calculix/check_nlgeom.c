@@ -25,7 +25,13 @@
  *     element (block48_nl_linear.csv) within SMALL_SLOPE x s (relative): the
  *     difference is the nonlinearity, so it must shrink with s.
  *
+ *   - graded levels (optional): every run MATERIAL:PATH[:FACTOR] on every
+ *     graded level is a study run as above, and node 61 of the two finest
+ *     graded levels changes by less than GRADED_BOUND at every load level
+ *     up to FACTOR (default 1).
+ *
  * usage: check_nlgeom DIR LEVELS MATERIALS PATHS K ELEMENT CONV_BOUND CONV_FACTOR SMALL_SLOPE
+ *                     [GRADED_LEVELS GRADED_RUNS GRADED_BOUND]
  *   LEVELS     comma list coarse to fine (h2.4,h1.2,h0.8)
  *   MATERIALS  comma list (neohooke,svk)
  *   PATHS      comma list NAME:FX:FY:FZ (a:0:0:-3,b:1:0:0,c:1:0:-3)
@@ -224,79 +230,119 @@ static void check_field_symmetry(const char *name, const field *fd, int normal)
     }
 }
 
-/* The study runs: logged, with the element and the path's force; their
- * final fields. */
+/* One study run: logged, with the element and the path's force; its final
+ * field. */
+static void check_study_run(const char *material, const path *pa, const char *level,
+                            const char *element)
+{
+    char name[NAME_LEN];
+    run_name(name, material, pa->name, level);
+    const run *r = find_run(name);
+    if (r == NULL || strcmp(r->element, element) != 0 || strcmp(r->path, pa->name) != 0 ||
+        strcmp(r->material, material) != 0 || r->levels == 0) {
+        fail("%s: missing, empty or not a %s run of path %s", name, element, pa->name);
+        return;
+    }
+    double per_unit[3];
+    for (int c = 0; c < 3; ++c) {
+        per_unit[c] = r->f[0][c] / r->factor[0];
+    }
+    if (!same_force(per_unit, pa->force)) {
+        fail("%s: the force is not path %s's", name, pa->name);
+    }
+    field fd;
+    char file[NAME_LEN + 16];
+    snprintf(file, sizeof file, "block48_%s.csv", name);
+    if (read_field(file, &block48, &fd) != 0) {
+        return;
+    }
+    const double *last = r->u[r->levels - 1];
+    if (memcmp(fd.u[60], last, sizeof fd.u[60]) != 0) {
+        fail("%s: node 61 is not the curve's last point", file);
+    }
+    check_field_symmetry(file, &fd, pa->force[0] == 0 && pa->force[1] == 0);
+}
+
+/* The study runs: every level x material x path. */
 static void check_study(char *const *levels, int nl, char *const *mats, int nm, const path *paths,
                         int np, const char *element)
 {
     for (int l = 0; l < nl; ++l) {
         for (int m = 0; m < nm; ++m) {
             for (int p = 0; p < np; ++p) {
-                char name[NAME_LEN];
-                run_name(name, mats[m], paths[p].name, levels[l]);
-                const run *r = find_run(name);
-                if (r == NULL || strcmp(r->element, element) != 0 || strcmp(r->path, paths[p].name) != 0 ||
-                    strcmp(r->material, mats[m]) != 0 || r->levels == 0) {
-                    fail("%s: missing, empty or not a %s run of path %s", name, element, paths[p].name);
-                    continue;
-                }
-                double per_unit[3];
-                for (int c = 0; c < 3; ++c) {
-                    per_unit[c] = r->f[0][c] / r->factor[0];
-                }
-                if (!same_force(per_unit, paths[p].force)) {
-                    fail("%s: the force is not path %s's", name, paths[p].name);
-                }
-                field fd;
-                char file[NAME_LEN + 16];
-                snprintf(file, sizeof file, "block48_%s.csv", name);
-                if (read_field(file, &block48, &fd) != 0) {
-                    continue;
-                }
-                const double *last = r->u[r->levels - 1];
-                if (memcmp(fd.u[60], last, sizeof fd.u[60]) != 0) {
-                    fail("%s: node 61 is not the curve's last point", file);
-                }
-                check_field_symmetry(file, &fd, paths[p].force[0] == 0 && paths[p].force[1] == 0);
+                check_study_run(mats[m], &paths[p], levels[l], element);
             }
         }
     }
 }
 
-/* Node 61 of the two finest levels at every load level both reached: held
- * to BOUND up to the load factor MAX_FACTOR, reported beyond. */
+/* Node 61 of one material and path on two levels at every load level both
+ * reached: held to BOUND up to the load factor MAX_FACTOR, reported beyond. */
+static void check_pair(const char *material, const char *path_name, const char *coarse,
+                       const char *fine, double bound, double max_factor)
+{
+    char a[NAME_LEN], b[NAME_LEN];
+    run_name(a, material, path_name, coarse);
+    run_name(b, material, path_name, fine);
+    const run *rc = find_run(a), *rf = find_run(b);
+    if (rc == NULL || rf == NULL) {
+        return; /* reported by check_study_run */
+    }
+    int n = rc->levels < rf->levels ? rc->levels : rf->levels, held = 0;
+    double worst = 0, worst_all = 0;
+    for (int k = 0; k < n; ++k) {
+        double d[3] = {rf->u[k][0] - rc->u[k][0], rf->u[k][1] - rc->u[k][1],
+                       rf->u[k][2] - rc->u[k][2]};
+        double rel = sqrt(dot3(d, d) / dot3(rf->u[k], rf->u[k]));
+        worst_all = fmax(worst_all, rel);
+        if (rf->factor[k] <= max_factor + 1e-9) {
+            worst = fmax(worst, rel);
+            ++held;
+        }
+    }
+    printf("  %s path %s, %s -> %s: node 61 changes by at most %.2f %% up to load factor %g "
+           "(bound %.3g %%), %.2f %% over all %d common load levels\n", material, path_name, coarse,
+           fine, 100 * worst, max_factor, 100 * bound, 100 * worst_all, n);
+    if (held == 0 || !(worst < bound)) {
+        fail("%s path %s: %s -> %s above the convergence bound", material, path_name, coarse, fine);
+    }
+}
+
+/* The two finest uniform levels, every material and path. */
 static void check_convergence(const char *coarse, const char *fine, char *const *mats, int nm,
                               const path *paths, int np, double bound, double max_factor)
 {
     for (int m = 0; m < nm; ++m) {
         for (int p = 0; p < np; ++p) {
-            char a[NAME_LEN], b[NAME_LEN];
-            run_name(a, mats[m], paths[p].name, coarse);
-            run_name(b, mats[m], paths[p].name, fine);
-            const run *rc = find_run(a), *rf = find_run(b);
-            if (rc == NULL || rf == NULL) {
-                continue; /* reported by check_study */
-            }
-            int n = rc->levels < rf->levels ? rc->levels : rf->levels, held = 0;
-            double worst = 0, worst_all = 0;
-            for (int k = 0; k < n; ++k) {
-                double d[3] = {rf->u[k][0] - rc->u[k][0], rf->u[k][1] - rc->u[k][1],
-                               rf->u[k][2] - rc->u[k][2]};
-                double rel = sqrt(dot3(d, d) / dot3(rf->u[k], rf->u[k]));
-                worst_all = fmax(worst_all, rel);
-                if (rf->factor[k] <= max_factor + 1e-9) {
-                    worst = fmax(worst, rel);
-                    ++held;
-                }
-            }
-            printf("  %s path %s, %s -> %s: node 61 changes by at most %.2f %% up to load factor %g "
-                   "(bound %.3g %%), %.2f %% over all %d common load levels\n", mats[m], paths[p].name,
-                   coarse, fine, 100 * worst, max_factor, 100 * bound, 100 * worst_all, n);
-            if (held == 0 || !(worst < bound)) {
-                fail("%s path %s: %s -> %s above the convergence bound", mats[m], paths[p].name, coarse,
-                     fine);
-            }
+            check_pair(mats[m], paths[p].name, coarse, fine, bound, max_factor);
         }
+    }
+}
+
+/* The graded levels (coarse to fine) and their runs MATERIAL:PATH[:FACTOR]:
+ * every run a study run, and node 61 of the two finest graded levels within
+ * BOUND up to the run's FACTOR (default 1; SVK's compressive paths stop at
+ * a limit point). */
+static void check_graded(char *const *levels, int nl, char *const *items, int ni,
+                         const path *paths, int np, const char *element, double bound)
+{
+    for (int i = 0; i < ni; ++i) {
+        char item[NAME_LEN];
+        copy_name(item, items[i]);
+        char *material = strtok(item, ":"), *path_name = strtok(NULL, ":"), *fac = strtok(NULL, ":");
+        double factor = 1;
+        const path *pa = NULL;
+        for (int p = 0; path_name != NULL && p < np; ++p) {
+            pa = strcmp(paths[p].name, path_name) == 0 ? &paths[p] : pa;
+        }
+        if (material == NULL || pa == NULL || (fac != NULL && !parse_num(fac, &factor))) {
+            fail("graded run %s: not MATERIAL:PATH[:FACTOR] of a known path", items[i]);
+            continue;
+        }
+        for (int l = 0; l < nl; ++l) {
+            check_study_run(material, pa, levels[l], element);
+        }
+        check_pair(material, pa->name, levels[nl - 2], levels[nl - 1], bound, factor);
     }
 }
 
@@ -394,17 +440,21 @@ static int parse_paths(char *s, path *paths)
 
 int main(int argc, char **argv)
 {
-    char *levels[LIST_MAX + 1], *mats[LIST_MAX + 1];
+    char *levels[LIST_MAX + 1], *mats[LIST_MAX + 1], *graded[LIST_MAX + 1], *items[LIST_MAX + 1];
     path paths[LIST_MAX];
-    double k_levels, conv_bound, conv_factor, slope;
-    int nl = argc == 10 ? split_list(argv[2], levels) : -1;
-    int nm = argc == 10 ? split_list(argv[3], mats) : -1;
-    int np = argc == 10 ? parse_paths(argv[4], paths) : -1;
+    double k_levels, conv_bound, conv_factor, slope, graded_bound = 0;
+    int args = argc == 10 || argc == 13;
+    int nl = args ? split_list(argv[2], levels) : -1;
+    int nm = args ? split_list(argv[3], mats) : -1;
+    int np = args ? parse_paths(argv[4], paths) : -1;
+    int ng = argc == 13 ? split_list(argv[10], graded) : 0;
+    int ni = argc == 13 ? split_list(argv[11], items) : 0;
     if (nl < 2 || nm < 1 || np < 1 || !parse_num(argv[5], &k_levels) || k_levels < 1 ||
         k_levels > MAX_LEVELS || !parse_num(argv[7], &conv_bound) || !parse_num(argv[8], &conv_factor) ||
-        !parse_num(argv[9], &slope)) {
+        !parse_num(argv[9], &slope) ||
+        (argc == 13 && (ng < 2 || ni < 1 || !parse_num(argv[12], &graded_bound)))) {
         fprintf(stderr, "usage: check_nlgeom DIR LEVELS MATERIALS PATHS K ELEMENT CONV_BOUND CONV_FACTOR "
-                        "SMALL_SLOPE\n");
+                        "SMALL_SLOPE [GRADED_LEVELS GRADED_RUNS GRADED_BOUND]\n");
         return 2;
     }
     data_dir = argv[1];
@@ -417,6 +467,9 @@ int main(int argc, char **argv)
     check_study(levels, nl, mats, nm, paths, np, argv[6]);
     check_convergence(levels[nl - 2], levels[nl - 1], mats, nm, paths, np, conv_bound, conv_factor);
     check_small(slope);
+    if (ng > 0) {
+        check_graded(graded, ng, items, ni, paths, np, argv[6], graded_bound);
+    }
     if (failures > 0) {
         printf("check_nlgeom: %d check(s) failed in %s\n", failures, data_dir);
         return 1;

@@ -1,5 +1,6 @@
 #!/bin/sh
 # check_nlgeom.sh CHECKER DATA TMP LEVELS MATERIALS PATHS K ELEMENT CONV_BOUND CONV_FACTOR SMALL_SLOPE
+#                [GRADED_LEVELS GRADED_RUNS GRADED_BOUND]
 #
 # Runs the NLGEOM data checker (check_nlgeom.c) on the committed data, which
 # must pass, then on copies broken in one way each, which must fail.
@@ -40,6 +41,13 @@ softer() {
 }
 stale_field() { edit "$field" 'NR == 62 { $7 *= 1.001 } 1'; }
 small_off() { edit $curves '$1 ~ /_s0.001$/ && !done { $8 *= 1.01; done = 1 } 1'; }
+# the finest graded level's first run 5 % softer (with GRADED_LEVELS given)
+graded=$(echo "$args" | awk '{ print $9 }')
+grun=nl_$(echo "$args" | awk '{ print $10 }' | cut -d, -f1 | cut -d: -f1,2 | tr : _)_${graded##*,}
+graded_softer() {
+    edit $curves '$1 == "'"$grun"'" { $6 *= 1.05; $7 *= 1.05; $8 *= 1.05 } 1'
+    edit "block48_$grun.csv" 'NR > 1 { $5 *= 1.05; $6 *= 1.05; $7 *= 1.05 } 1'
+}
 other_element() { edit block48_nl_runs.csv '$1 == r { $3 = "C3D8" } 1'; }
 asymmetric() { edit "$field" 'NR == 50 { $7 *= 1.01 } 1'; }
 
@@ -51,6 +59,11 @@ mutant "a field that is not the curve's end" stale_field
 mutant "a field 1 % off its symmetry at one point" asymmetric
 mutant "a small-load run 1 % off the linear solution" small_off
 mutant "a run logged with another element" other_element
+n=8
+if [ -n "$graded" ]; then
+    mutant "the finest graded level 5 % softer ($grun)" graded_softer
+    n=9
+fi
 rm -rf "$tmp"
 [ "$fails" = 0 ] || { echo "FAIL: $fails broken copies accepted"; exit 1; }
-echo "ok: committed NLGEOM data valid, 8 broken copies rejected"
+echo "ok: committed NLGEOM data valid, $n broken copies rejected"

@@ -20,6 +20,12 @@
 #                 on other meshes (through-thickness and in-plane refinement
 #                 apart) or with another element, named nl_MAT_PATH_DxDxL
 #                 (+ _ELEMENT when it is not the study's)
+#   NL_GRADED     "name:fine:least:layers:ratio ..." graded levels, coarse to
+#                 fine (box_deck --grade fine:least --layers L --layer-ratio R:
+#                 small elements under and around the patch, coarse towards
+#                 the clamped faces, thin layers at the top)
+#   NL_GRADED_RUNS "material:path ..." the runs on every graded level, named
+#                 nl_MAT_PATH_NAME
 #   NL_SMALL      levels of the small-load runs: each path at each factor of
 #                 NL_SMALL_FACTORS times its force, in one increment, beside
 #                 a linear run of the same mesh and element (the small-load
@@ -77,17 +83,21 @@ ccx_run() {
     rm "$work/$run.time.new"
 }
 
-# nonlinear RUN MATERIAL ELEMENT PATH FORCE SYMMETRY DIVISIONS LAYERS LEVELS
+# nonlinear RUN MATERIAL ELEMENT PATH FORCE SYMMETRY MESH LEVELS
+# (MESH: the deck tool's mesh options, "--divisions N --layers L" or a grading)
 nonlinear() {
-    run=$1 mat=$2 el=$3 path=$4 force=$5 sym=$6 n=$7 layers=$8 levels=$9
+    run=$1 mat=$2 el=$3 path=$4 force=$5 sym=$6 mesh=$7 levels=$8
     material=$mat
     [ "$mat" = svk ] && material=elastic
     symopt=""
     [ "$sym" = none ] || symopt="--symmetry $sym"
     # shellcheck disable=SC2086
-    "$deck_tool" --divisions "$n" --layers "$layers" --element "$el" --material "$material" \
+    "$deck_tool" $mesh --element "$el" --material "$material" \
         --nlgeom --increments "$levels" --force "$force" $symopt > "$work/$run.inp.new"
     ccx_run "$run"
+    # divisions (elements along x of the whole box) and layers, from the deck
+    n=$(awk 'NR == 2 { print $2; exit }' "$work/$run.inp")
+    layers=$(awk 'NR == 2 { print $6; exit }' "$work/$run.inp")
     size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5 }' "$work/$run.inp")
     sta=$(awk -f "$here/sta_summary.awk" "$work/$run.sta")
     read -r seconds kb used < "$work/$run.time"
@@ -131,7 +141,7 @@ sweep() {
             path=$(field "$p" 1) sym=$(field "$p" 3)
             force=$(field "$p" 2 | awk -F, -v s="$scale" '{ printf "%.10g,%.10g,%.10g", s * $1, s * $2, s * $3 }')
             nonlinear "nl_${mat}_${path}_$name$suffix" "$mat" "$el" "$path$( [ "$scale" = 1 ] || echo "_s$scale")" \
-                "$force" "$sym" "$n" "$layers" "$levels"
+                "$force" "$sym" "--divisions $n --layers $layers" "$levels"
         done
     done
 }
@@ -149,7 +159,21 @@ for e in $NL_EXTRA; do
     p=$(for q in $NL_PATHS; do [ "$(field "$q" 1)" != "$path" ] || echo "$q"; done)
     [ -n "$p" ] || { echo "run_nlgeom: path $path of NL_EXTRA is not in NL_PATHS" >&2; exit 2; }
     nonlinear "nl_${mat}_${path}_${n}x${n}x$layers$suffix" "$mat" "${el:-$NL_ELEMENT}" "$path" \
-        "$(field "$p" 2)" "$(field "$p" 3)" "$n" "$layers" "$NL_LOAD_LEVELS"
+        "$(field "$p" 2)" "$(field "$p" 3)" "--divisions $n --layers $layers" "$NL_LOAD_LEVELS"
+done
+# path_of NAME: the NL_PATHS entry of path NAME
+path_of() {
+    for q in $NL_PATHS; do [ "$(field "$q" 1)" != "$1" ] || { echo "$q"; return; }; done
+    echo "run_nlgeom: path $1 is not in NL_PATHS" >&2; exit 2
+}
+for g in ${NL_GRADED:-}; do
+    name=$(field "$g" 1)
+    mesh="--grade $(field "$g" 2):$(field "$g" 3) --layers $(field "$g" 4) --layer-ratio $(field "$g" 5)"
+    for r in ${NL_GRADED_RUNS:-}; do
+        mat=$(field "$r" 1) p=$(path_of "$(field "$r" 2)")
+        nonlinear "nl_${mat}_$(field "$p" 1)_$name" "$mat" "$NL_ELEMENT" "$(field "$p" 1)" \
+            "$(field "$p" 2)" "$(field "$p" 3)" "$mesh" "$NL_LOAD_LEVELS"
+    done
 done
 for s in $NL_SMALL; do
     l=$(level_of "$s")
@@ -166,6 +190,12 @@ for l in $NL_LEVELS; do
         for p in $NL_PATHS; do
             cp "$out/nl_${mat}_$(field "$p" 1)_${l%%:*}.csv" "$data/block48_nl_${mat}_$(field "$p" 1)_${l%%:*}.csv"
         done
+    done
+done
+for g in ${NL_GRADED:-}; do
+    for r in ${NL_GRADED_RUNS:-}; do
+        f=block48_nl_$(field "$r" 1)_$(field "$r" 2)_$(field "$g" 1).csv
+        cp "$out/${f#block48_}" "$data/$f"
     done
 done
 for t in runs curves linear; do cp "$out/$t.csv" "$data/block48_nl_$t.csv"; done

@@ -58,7 +58,7 @@ cmp -s "$d/pair.h" "$tmp/pair.h.1" && cmp -s "$d/pair_golden.h" "$tmp/pair_golde
     bad "a failed write changed the pair"
 no_temporaries "$d" "full disk"
 expect 1 "fit on a full disk: exit 1, not 2" -- \
-    sh -c 'trap "" XFSZ; ulimit -f 200; exec "$0" -q fit coeffs/block48.yaml -o "$1"' "$tool" "$d/fitted.h"
+    sh -c 'trap "" XFSZ; ulimit -f 200; exec "$0" -q fit tests/solver/block48_seed.yaml -o "$1"' "$tool" "$d/fitted.h"
 [ -e "$d/fitted.h" ] || [ -e "$d/fitted_golden.h" ] && bad "fit on a full disk left a file"
 no_temporaries "$d" "fit on a full disk"
 
@@ -100,7 +100,7 @@ rm -f "$d"/*
 # --- hostile text copied into generated comments
 hdir="$tmp/a*/b/*c??/"
 mkdir -p "$hdir"
-cp coeffs/block48.yaml "$hdir/scene.yaml"
+cp tests/solver/block48_seed.yaml "$hdir/scene.yaml"
 expect 0 "fit from a path with */ /* ??/ and a --set with a comment" -- "$tool" -q fit \
     "$hdir/scene.yaml" --set 'fit.train=100 #*/ junk ??/' --set 'contact.0.name=x*/y/*z??/' \
     -o "$d/hostile.h"

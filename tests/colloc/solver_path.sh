@@ -10,7 +10,7 @@ tool=$1
 core=$2
 IFS=, read -r n cx cz rest <<< "$("$core" 11,11,3 --law linear)"
 node61() { # force -> the component of node 61 along it, per newton
-  "$tool" -q solve coeffs/block48.yaml --set solver.method=mls-collocation --force "$1" |
+  "$tool" -q solve tests/solver/block48_seed.yaml --set solver.method=mls-collocation --force "$1" |
     awk -F, -v c="$2" -v f="$3" '$1 == 61 { printf "%.10g\n", $c / f }'
 }
 tx=$(node61 0.01,0,0 5 0.01)

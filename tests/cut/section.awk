@@ -2,17 +2,10 @@
 # (node,x,y,z,ux,uy,uz), deformed by `scale`, as gnuplot line blocks of
 # x + scale ux, z + scale uz; a line along x is broken where it crosses the
 # cut plane x = cx above the front z = cz (the cut's two lips).
-# Usage: awk -F, -v y=Y -v scale=S -v cx=10 -v cz=5 -f section.awk solve.csv
+# Usage: awk -F, -v y=Y -v scale=S -v cx=10 -v cz=5 -f sort.awk -f section.awk solve.csv
 NR > 1 && ($3 - y) ^ 2 < 1e-12 {
     X[$2] = 1; Z[$4] = 1    # keys are the CSV's text, values compared as numbers
     px[$2, $4] = $2 + scale * $5; pz[$2, $4] = $4 + scale * $7
-}
-function sort(a, n,    i, j, t) {    # insertion sort, ascending (mawk has no asort)
-    for (i = 2; i <= n; ++i) {
-        t = a[i]
-        for (j = i - 1; j >= 1 && a[j] + 0 > t + 0; --j) a[j + 1] = a[j]
-        a[j + 1] = t
-    }
 }
 END {
     nx = 0; for (x in X) xs[++nx] = x

@@ -97,6 +97,9 @@ static tf_model *shape_of(const char *name)
             sscanf(ord, "\"p=%u K=%u tick=%uns\"", &dims[0], &dims[2], &dims[3]) != 3) {
             return NULL;
         }
+    } else if (family == TFIT_FAMILY_CUT) { /* "p=1 K=8" */
+        n_dims = TFIT_CUT_DIMS;
+        sscanf(ord, "\"p=%u K=%u\"", &dims[0], &dims[1]);
     } else if (family == TFIT_FAMILY_MODAL) {
         n_dims = 2;
         sscanf(ord, "\"p=%u r=%u\"", &dims[0], &dims[1]);

@@ -2,7 +2,8 @@
 # haptic_config.sh HEADER.h — writes (stdout) the haptic_config.h with which
 # target/examples/haptic_loop.c is built for one generated header: the
 # header, its IMPLEMENTATION macro, and the first forward model (family
-# nodal, modal or zhou2017) and the first contact model it defines.
+# nodal, modal or zhou2017; else the first prony model, stepped with its
+# state: HAPTIC_FORWARD_PRONY) and the first contact model it defines.
 # Fails when the header has neither.
 set -eu
 header=$1
@@ -11,6 +12,11 @@ upper=$(echo "$name" | tr a-z A-Z)
 # "#define TFIT_X_FAMILY_ID n" in model order
 models=$(sed -n 's/^#define TFIT_\([A-Z0-9_]*\)_FAMILY_ID \([0-9]*\)$/\1 \2/p' "$header")
 forward=$(echo "$models" | awk '$2 >= 1 && $2 <= 3 { print $1; exit }')
+prony=
+if [ -z "$forward" ]; then
+    forward=$(echo "$models" | awk '$2 == 5 { print $1; exit }')
+    [ -z "$forward" ] || prony=1
+fi
 contact=$(echo "$models" | awk '$2 == 4 { print $1; exit }')
 if [ -z "$forward" ] && [ -z "$contact" ]; then
     echo "haptic_config.sh: $header defines no model" >&2
@@ -23,6 +29,7 @@ echo "#define TFIT_${upper}_IMPLEMENTATION"
 if [ -n "$forward" ]; then
     echo "#define HAPTIC_FORWARD tfit_$(lower "$forward")"
     echo "#define HAPTIC_FORWARD_M(x) TFIT_${forward}_##x"
+    [ -z "$prony" ] || echo "#define HAPTIC_FORWARD_PRONY"
 fi
 if [ -n "$contact" ]; then
     echo "#define HAPTIC_CONTACT tfit_$(lower "$contact")"

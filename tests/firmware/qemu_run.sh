@@ -2,10 +2,11 @@
 # qemu_run.sh MACHINE IMAGE [STATUS [TEXT]] — runs a firmware image under
 # qemu-system-arm with semihosting (its console output is printed) and
 # checks the exit status the image reported (default 0) and, when given,
-# that the output contains TEXT.  A run longer than 120 s is a failure.
+# that the output contains TEXT.  A run longer than QEMU_TIMEOUT seconds
+# (default 120) is a failure.
 set -u
 machine=$1 image=$2 want=${3:-0} text=${4:-}
-out=$(timeout 120 qemu-system-arm -M "$machine" -display none -monitor none -serial none \
+out=$(timeout "${QEMU_TIMEOUT:-120}" qemu-system-arm -M "$machine" -display none -monitor none -serial none \
     -semihosting-config enable=on,target=native -kernel "$image" 2>&1)
 status=$?
 [ -n "$out" ] && printf '%s\n' "$out"

@@ -9,23 +9,29 @@ scenes=$(dirname "$0")/scenes
 
 expect 0 "fit --help" -- "$tool" fit --help
 prints "fit --help" "forward family to emit, one of: nodal, modal, zhou2017"
-expect 2 "no -o" -- "$tool" fit coeffs/block48.yaml
+expect 2 "no -o" -- "$tool" fit tests/solver/block48_seed.yaml
 says "no -o" "expected one scene file and -o FILE.h"
 expect 2 "no contact site" -- "$tool" -q fit "$scenes/no_contact.yaml" -o "$tmp/w/a.h"
 says "no contact site" "no contact site"
-expect 2 "zero envelope" -- "$tool" -q fit coeffs/block48.yaml --set envelope.radius=0 -o "$tmp/w/a.h"
+expect 2 "zero envelope" -- "$tool" -q fit tests/solver/block48_seed.yaml --set envelope.radius=0 -o "$tmp/w/a.h"
 says "zero envelope" "envelope.radius"
 expect 2 "outputs that select nothing" -- "$tool" -q fit "$scenes/no_outputs.yaml" -o "$tmp/w/a.h"
 says "no outputs" "outputs"
 expect 2 "zhou2017 on a non-flat output set" -- "$tool" -q fit "$scenes/all_layers.yaml" \
     --family zhou2017 -o "$tmp/w/a.h"
 says "zhou2017 non-flat" "one plane"
-expect 2 "an unknown family" -- "$tool" -q fit coeffs/block48.yaml --family cubic -o "$tmp/w/a.h"
+expect 2 "an unknown family" -- "$tool" -q fit tests/solver/block48_seed.yaml --family cubic -o "$tmp/w/a.h"
 says "unknown family" "forward families"
-expect 2 "an unknown contact site" -- "$tool" -q fit coeffs/block48.yaml --contact nowhere -o "$tmp/w/a.h"
+expect 2 "an unknown contact site" -- "$tool" -q fit tests/solver/block48_seed.yaml --contact nowhere -o "$tmp/w/a.h"
 says "unknown contact site" "has no contact site 'nowhere'"
-expect 2 "a bad fit setting" -- "$tool" -q fit coeffs/block48.yaml --set fit.folds=1 -o "$tmp/w/a.h"
+expect 2 "a bad fit setting" -- "$tool" -q fit tests/solver/block48_seed.yaml --set fit.folds=1 -o "$tmp/w/a.h"
 says "bad fit setting" "fit.folds"
+expect 2 "a discretisation fraction beyond 1" -- "$tool" -q fit coeffs/block48.yaml \
+    --discretisation-rel 2,0.07 -o "$tmp/w/a.h"
+says "a discretisation fraction beyond 1" "two fractions in (0, 1)"
+expect 2 "a solver step longer than half a history" -- "$tool" -q fit coeffs/block48_ve.yaml \
+    --set fit.solve_every=2000 -o "$tmp/w/a.h"
+says "a solver step longer than half a history" "fit.solve_every"
 nothing_written "refused fits"
 
 # The small-strain warning: a linear solve whose displacements exceed a
@@ -34,9 +40,9 @@ nothing_written "refused fits"
 # same scene with the neo-Hookean law does not warn.
 WARN="linear (small-strain) elasticity does not describe tissue there"
 TINY="--set geometry.grid=5,5,2 --set contact.0.node=13 --set fit.train=12 --set fit.heldout=3 --set fit.max_degree=1"
-expect 0 "fit, linear, large displacements" -- "$tool" fit coeffs/block48.yaml $TINY -o "$tmp/w/lw.h"
+expect 0 "fit, linear, large displacements" -- "$tool" fit tests/solver/block48_seed.yaml $TINY -o "$tmp/w/lw.h"
 says "the small-strain warning for the linear law" "$WARN"
-expect 0 "fit, neo-Hookean, large displacements" -- "$tool" fit coeffs/block48.yaml $TINY \
+expect 0 "fit, neo-Hookean, large displacements" -- "$tool" fit tests/solver/block48_seed.yaml $TINY \
     --set material.law=neo-hookean -o "$tmp/w/nw.h"
 check "no small-strain warning for the neo-Hookean law" sh -c "! grep -q '$WARN' '$tmp/err'"
 rm -f "$tmp/w/lw.h" "$tmp/w/lw_golden.h" "$tmp/w/nw.h" "$tmp/w/nw_golden.h"
@@ -45,9 +51,9 @@ rm -f "$tmp/w/lw.h" "$tmp/w/lw_golden.h" "$tmp/w/nw.h" "$tmp/w/nw_golden.h"
 # differ by rounding in the training data (about 1e-15 relative), so every
 # float coefficient of both models agrees to 1e-12 of the table's largest
 # (measured: 1e-16; coefficients that should be 0 differ by ~1e-16 there).
-expect 0 "fit, superposed" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/s.h"
+expect 0 "fit, superposed" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/s.h"
 grep -q "training cases superposed from unit solves" "$tmp/w/s.h" || bad "s.h was not superposed"
-expect 0 "fit, direct" -- "$tool" -q fit coeffs/block48.yaml --direct -o "$tmp/w/d.h"
+expect 0 "fit, direct" -- "$tool" -q fit tests/solver/block48_seed.yaml --direct -o "$tmp/w/d.h"
 grep -q "every training case solved directly" "$tmp/w/d.h" || bad "d.h was not solved directly"
 # coef HEADER MODEL: the float table of tfit_MODEL, one decimal number a line
 coef() {

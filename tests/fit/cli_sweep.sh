@@ -7,7 +7,7 @@ set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
 
-expect 0 "sweep, scene outputs" -- "$tool" -q sweep coeffs/block48.yaml --outputs scene \
+expect 0 "sweep, scene outputs" -- "$tool" -q sweep tests/solver/block48_seed.yaml --outputs scene \
     --csv "$tmp/s.csv" --md "$tmp/s.md"
 head -1 "$tmp/s.csv" | grep -q '^outputs,n_out,model,family,precision' || bad "sweep CSV header"
 for m in "nodal p=1,nodal,float32" "nodal p=1,nodal,Q31" "nodal p=1,nodal,float64" \
@@ -24,30 +24,30 @@ awk -F, '$3 == "nodal p=1" && $5 == "float32" && $16 == 1 && $13 < 0.001 { ok = 
     "$tmp/s.csv" || bad "nodal p=1 float32 not on the front within 1 um"
 
 chosen() { sed -n 's/.*Chosen among every candidate.*: \(.*\) (.*us) and the contact.*/\1/p' "$1"; }
-expect 0 "budget 60 us on the M4F" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --budget-us 60
+expect 0 "budget 60 us on the M4F" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/b.h" --budget-us 60
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "60 us chose '$(chosen "$tmp/w/b.h")', not nodal p=1"
 # on the M7 nodal p=0 is cheaper than nodal p=1 (6.2 against 7.1 us): a
 # budget between them buys the mean shape
-expect 0 "budget 7 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" \
+expect 0 "budget 7 us on a 480 MHz M7" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/b.h" \
     --budget-us 7 --mcu cortex-m7@480
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=0" ] || bad "M7 7 us chose '$(chosen "$tmp/w/b.h")'"
-expect 0 "error 10 um, cheapest" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" --max-error-mm 0.01
+expect 0 "error 10 um, cheapest" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/b.h" --max-error-mm 0.01
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "10 um chose '$(chosen "$tmp/w/b.h")'"
-expect 0 "budget 15 us on a 480 MHz M7" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/b.h" \
+expect 0 "budget 15 us on a 480 MHz M7" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/b.h" \
     --budget-us 15 --mcu cortex-m7@480
 [ "$(chosen "$tmp/w/b.h")" = "nodal p=1" ] || bad "M7 15 us chose '$(chosen "$tmp/w/b.h")'"
 rm -f "$tmp"/w/*
 
-expect 2 "a budget nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 20
+expect 2 "a budget nothing meets" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --budget-us 20
 grep -q "Fastest: nodal p=1" "$tmp/err" && grep -q "Most accurate: nodal p=1" "$tmp/err" ||
     bad "the refusal does not state the best on each axis: $(cat "$tmp/err")"
-expect 2 "an error nothing meets" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --max-error-mm 1e-12
+expect 2 "an error nothing meets" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --max-error-mm 1e-12
 says "an error nothing meets" "no model fits a 1e-12 mm error on cortex-m4f@168"
 says "an error nothing meets" "Most accurate: nodal p=1, held-out max"
-expect 2 "an unknown core" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us 100 \
+expect 2 "an unknown core" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --budget-us 100 \
     --mcu cortex-m3@72
 says "an unknown core" "--mcu 'cortex-m3@72': cycle estimates exist for cortex-m4f and cortex-m7"
-expect 2 "a budget that is not a number" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/w/x.h" --budget-us fast
+expect 2 "a budget that is not a number" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --budget-us fast
 says "a budget that is not a number" "--budget-us 'fast' is not a positive number"
 [ -z "$(ls -A "$tmp/w")" ] || bad "a refused fit wrote $(ls -A "$tmp/w")"
 finish sweep

@@ -3,7 +3,10 @@
  * independently of the fitting pipeline: the header is compiled here with
  * the target library and evaluated by tfit_displacements() /
  * tfit_contact_force() (not the host's reference evaluator), at the
- * held-out forces redesigned from the scene's seed and solved afresh.
+ * held-out forces redesigned from the scene's seed and solved afresh.  A
+ * cut forward model (family id 6) is evaluated by tfit_displacements_cut()
+ * at the held-out cut progress values, its scene solved afresh at each
+ * (fitting/cut_progress.h).
  *
  *   heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL
  *
@@ -16,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "fitting/cut_progress.h"
 #include "fitting/force_samples.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
@@ -30,6 +34,112 @@ static int same(double recomputed, double header)
 {
     return fabs(recomputed - header) <= 1e-5 * fabs(header) + 1e-30;
 }
+
+/* The solve's displacements where the header's models read them: output j
+ * (3 j ...) and the contact point (3 n_out ...).  Outputs by node (node_ids
+ * are node numbers) and a contact by node take the nodal values; outputs
+ * given as points (node_ids 1 ... n number them) and a contact given by
+ * position take the solver's field there, as the fit did. */
+static int solved_at(const tf_solver *solver, const tf_problem *p, const tf_contact *ct,
+                     const tfit_model *fwd, const double *ui, double *truth)
+{
+    char err[512];
+    double grad[9];
+    for (uint32_t j = 0; j < fwd->n_out; ++j) {
+        const size_t node = p->outputs.points ? 0 : (size_t)fwd->node_ids[j] - 1;
+        const double *x = p->outputs.points ? p->outputs.points + 3 * (size_t)j : NULL;
+        if (x != NULL && tf_solver_field(solver, ui, x, 1, truth + 3 * j, grad, err, sizeof err) != 0) {
+            fprintf(stderr, "heldout_check: %s\n", err);
+            return -1;
+        }
+        for (int k = 0; x == NULL && k < 3; ++k) {
+            truth[3 * j + (uint32_t)k] = ui[3 * node + (size_t)k];
+        }
+    }
+    double *tc = truth + 3 * fwd->n_out;
+    if (!ct->by_node && tf_solver_field(solver, ui, ct->at, 1, tc, grad, err, sizeof err) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", err);
+        return -1;
+    }
+    if (!ct->by_node) {
+        return 0;
+    }
+    for (int k = 0; k < 3; ++k) {
+        tc[k] = ui[3 * (size_t)ct->node + (size_t)k];
+    }
+    return 0;
+}
+
+#if MACRO(PFX, _FORWARD_FAMILY_ID) == 6 /* TFIT_FAMILY_CUT */
+/* The cut model at every held-out s and force, against the scene solved
+ * with its cuts truncated at that s.  Returns 0, or -1 with a message. */
+static int forward_errors(const tf_scene *s, const tf_solver *solver, const double (*held)[3],
+                          size_t n, const double *u, size_t dofs, double *max, double *sum2,
+                          size_t *count)
+{
+    (void)u;
+    (void)dofs;
+    const tfit_model *fwd = &FORWARD;
+    tf_cut_cases cc;
+    if (tf_cut_cases_solve(&s->problem, solver, &s->fit, &cc) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", solver->ctx->err);
+        return -1;
+    }
+    float *out = malloc(cc.rows * sizeof *out);
+    double *truth = malloc(cc.rows * sizeof *truth);
+    for (size_t i = 0; i < cc.n; ++i) {
+        for (size_t j = 0; cc.role[i] == TF_CUT_HELDOUT && j < n; ++j) {
+            const float f[3] = {(float)held[j][0], (float)held[j][1], (float)held[j][2]};
+            if (tfit_displacements_cut(fwd, f, cc.s[i], out) < 0) {
+                return -1;
+            }
+            tf_cut_cases_response(&cc, i, held[j], truth);
+            for (size_t o = 0; o < cc.rows; ++o) {
+                double e = (double)out[o] - truth[o];
+                *max = fmax(*max, fabs(e));
+                *sum2 += e * e;
+            }
+            ++*count;
+        }
+    }
+    free(out);
+    free(truth);
+    tf_cut_cases_free(&cc);
+    return 0;
+}
+#else
+/* The forward model at every held-out force against the fresh solves u, at
+ * the points its outputs name (solved_at). */
+static int forward_errors(const tf_scene *s, const tf_solver *solver, const double (*held)[3],
+                          size_t n, const double *u, size_t dofs, double *max, double *sum2,
+                          size_t *count)
+{
+    const tf_problem *p = &s->problem;
+    const tfit_model *fwd = &FORWARD;
+    float *out = malloc(3 * fwd->n_out * sizeof *out);
+    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
+    int rc = out != NULL && truth != NULL ? 0 : -1;
+    for (size_t i = 0; rc == 0 && i < n; ++i) {
+        const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
+        if (solved_at(solver, p, &p->contacts[s->fit.contact], fwd, u + i * dofs, truth) != 0 ||
+            tfit_displacements(fwd, f, out) < 0) {
+            rc = -1;
+            break;
+        }
+        for (uint32_t j = 0; j < fwd->n_out; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                double e = (double)out[3 * j + (uint32_t)k] - truth[3 * j + (uint32_t)k];
+                *max = fmax(*max, fabs(e));
+                *sum2 += e * e;
+            }
+        }
+        ++*count;
+    }
+    free(out);
+    free(truth);
+    return rc;
+}
+#endif
 
 int main(int argc, char **argv)
 {
@@ -67,24 +177,22 @@ int main(int argc, char **argv)
         return 1;
     }
     const tfit_model *fwd = &FORWARD, *con = &CONTACT;
-    const uint32_t contact_node = con->node_ids[0] - 1;
-    float *out = malloc(3 * fwd->n_out * sizeof *out);
     double fwd_max = 0, fsum2 = 0, con_max = 0, csum2 = 0, crel = 0;
+    size_t fwd_cases = 0;
+    if (forward_errors(s, solver, (const double(*)[3])held, n, u, dofs, &fwd_max, &fsum2,
+                       &fwd_cases) != 0) {
+        fprintf(stderr, "heldout_check: no forward errors at the outputs\n");
+        return 1;
+    }
+    double *truth = malloc(3 * (fwd->n_out + 1) * sizeof *truth);
     for (size_t i = 0; i < n; ++i) {
-        const double *ui = u + i * dofs;
-        const float f[3] = {(float)held[i][0], (float)held[i][1], (float)held[i][2]};
-        if (tfit_displacements(fwd, f, out) < 0) {
+        if (truth == NULL ||
+            solved_at(solver, p, &p->contacts[s->fit.contact], fwd, u + i * dofs, truth) != 0) {
+            fprintf(stderr, "heldout_check: no displacement at the contact point\n");
             return 1;
         }
-        for (uint32_t j = 0; j < fwd->n_out; ++j) {
-            for (int k = 0; k < 3; ++k) {
-                double e = (double)out[3 * j + (uint32_t)k] - ui[3 * (fwd->node_ids[j] - 1) + (uint32_t)k];
-                fwd_max = fmax(fwd_max, fabs(e));
-                fsum2 += e * e;
-            }
-        }
-        const float d[3] = {(float)ui[3 * contact_node], (float)ui[3 * contact_node + 1],
-                            (float)ui[3 * contact_node + 2]};
+        const double *tc = truth + 3 * fwd->n_out;
+        const float d[3] = {(float)tc[0], (float)tc[1], (float)tc[2]};
         float fc[3];
         if (tfit_contact_force(con, d, fc) < 0) {
             return 1;
@@ -99,7 +207,7 @@ int main(int argc, char **argv)
         }
         crel = fmax(crel, sqrt(e2 / t2));
     }
-    double frms = sqrt(fsum2 / (3.0 * fwd->n_out * (double)n)), crms = sqrt(csum2 / (3.0 * (double)n));
+    double frms = sqrt(fsum2 / (3.0 * fwd->n_out * (double)fwd_cases)), crms = sqrt(csum2 / (3.0 * (double)n));
     printf("held-out, recomputed from the compiled header: forward max %.3g mm rms %.3g mm "
            "(bound %s); contact max %.3g N, rms %.3g N, relative %.3g (bound %s)\n",
            fwd_max, frms, argv[2], con_max, crms, crel, argv[3]);
@@ -114,10 +222,10 @@ int main(int argc, char **argv)
         printf("held-out error beyond its bound\n");
         ok = 0;
     }
+    free(truth);
     free(train);
     free(held);
     free(u);
-    free(out);
     tf_solver_destroy(solver);
     tf_scene_free(s);
     return ok ? 0 : 1;

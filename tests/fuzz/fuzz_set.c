@@ -25,10 +25,10 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
     (void)argc;
     (void)argv;
-    FILE *f = fopen("coeffs/block48.yaml", "rb");
+    FILE *f = fopen("tests/solver/block48_seed.yaml", "rb");
     scene = malloc(1 << 16);
     if (f == NULL || scene == NULL) {
-        fprintf(stderr, "fuzz_set: run from the repository root (coeffs/block48.yaml)\n");
+        fprintf(stderr, "fuzz_set: run from the repository root (tests/solver/block48_seed.yaml)\n");
         exit(2);
     }
     scene_len = fread(scene, 1, 1 << 16, f);

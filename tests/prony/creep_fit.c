@@ -1,6 +1,6 @@
 /*
  * creep_fit.c — issue 14 acceptance 2, the held-out part, on synthetic
- * histories: block48 (coeffs/block48.yaml, its static solves) as a linear
+ * histories: block48 (tests/solver/block48_seed.yaml, its static solves) as a linear
  * viscoelastic body with a constant Poisson ratio, whose response to a
  * force history is the relaxed static response of the force filtered by
  * the creep function (exact by the correspondence principle; integrated in

@@ -20,6 +20,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "base/blas_pin.h"
 #include "base/context.h"
 #include "scene/scene.h"
 #include "solvers/nonlinear/nonlinear.h"
@@ -67,7 +68,7 @@ static int one_case(const char *const *sets, size_t ns, const char *law, const d
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double w0 = omp_get_wtime(), c0 = cpu_now();
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", all, ns + 1, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", all, ns + 1, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "bench_nonlinear: %s\n", err);
         return -1;
@@ -90,6 +91,7 @@ static int one_case(const char *const *sets, size_t ns, const char *law, const d
 
 int main(int argc, char **argv)
 {
+    tf_blas_pin(argv); /* the tool's OpenBLAS kernels and one BLAS thread */
     unsigned g[3];
     int reps = argc > 2 ? atoi(argv[2]) : 0;
     if (argc < 3 || sscanf(argv[1], "%u,%u,%u", &g[0], &g[1], &g[2]) != 3 || reps < 1 ||
@@ -153,6 +155,12 @@ int main(int argc, char **argv)
                    "%.2f x the linear solve",
                    in->steps, (double)in->iterations / (double)(in->steps ? in->steps : 1),
                    in->factorisations, lin > 0 ? w / lin : 0);
+            printf("\n      %s ordering, L %.3g entries; %zu residual and %zu tangent assemblies, "
+                   "%zu Krylov iterations, %zu LDL^T (indefinite); s: gradients %.2f, residuals %.2f, tangents %.2f, "
+                   "factorisations %.2f, solves %.2f",
+                   in->ordering ? in->ordering : "-", in->nnz_l, in->residuals, in->tangents,
+                   in->krylov, in->indefinite, in->t_gradients, in->t_residual, in->t_tangent, in->t_factor,
+                   in->t_solve);
         }
         printf("\n");
     }

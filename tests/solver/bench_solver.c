@@ -57,7 +57,7 @@ int main(int argc, char **argv)
     ctx.level = TF_LOG_WARN;
     for (int r = 0; r < reps; ++r) {
         double t0 = omp_get_wtime();
-        tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, 2, err, sizeof err);
+        tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, 2, err, sizeof err);
         if (s == NULL) {
             fprintf(stderr, "bench_solver: %s\n", err);
             return 1;

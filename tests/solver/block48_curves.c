@@ -5,7 +5,7 @@
  *
  *   block48_curves GRID LAW FX,FY,FZ LEVELS [KEY=VALUE...]
  *
- * solves block48 (coeffs/block48.yaml, the grid's top-centre node as the
+ * solves block48 (tests/solver/block48_seed.yaml, the grid's top-centre node as the
  * contact) under law (svk, neo-hookean) with the force raised to
  * (FX, FY, FZ) N in LEVELS equal load levels, each continuing from the one
  * before, and prints a CSV row per level: grid,law,factor,fx,fy,fz,ux,uy,uz
@@ -49,7 +49,7 @@ int main(int argc, char **argv)
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double t0 = omp_get_wtime();
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, ns, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, ns, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "block48_curves: %s\n", err);
         return 2;

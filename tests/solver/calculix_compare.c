@@ -12,7 +12,7 @@
  * or not, compares at the same points), with the reference named in
  * DIR/block48_reference.csv (header case,level,file).  With --nu it compares
  * against DIR/block48_nu<NU>_<case>.csv instead, with material.nu = NU.  The
- * scene (default coeffs/block48.yaml) may give its contact by node (then the
+ * scene (default tests/solver/block48_seed.yaml) may give its contact by node (then the
  * grid's top-centre node is set, which needs odd counts in x and y) or by
  * position.  --set overrides apply to every level.
  *
@@ -229,7 +229,7 @@ static int parse(int argc, char **argv, options *o)
 {
     const char *levels = "11,11,3;21,21,5;41,41,9";
     o->data = "tests/calculix/data";
-    o->scene = "coeffs/block48.yaml";
+    o->scene = "tests/solver/block48_seed.yaml";
     o->check = 1;
     o->max_err61 = 0.03;
     for (int k = 1; k < argc; ++k) {

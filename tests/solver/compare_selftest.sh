@@ -11,7 +11,7 @@ fails=0
 printf 'case,level,file\n' >"$tmp/block48_reference.csv"
 for c in fx:1,0,0 fy:0,1,0 fz:0,0,-1; do
     name=${c%%:*} force=${c#*:}
-    "$tool" -q solve coeffs/block48.yaml --set geometry.grid=21,21,5 --set contact.0.node=221 \
+    "$tool" -q solve tests/solver/block48_seed.yaml --set geometry.grid=21,21,5 --set contact.0.node=221 \
         --force "$force" -o "$tmp/all.csv" || exit 1
     # the 121 nodes of the 11 x 11 grid on top, numbered N = i + 11 j + 1
     awk -F, 'NR == 1 { print; next }

@@ -36,7 +36,7 @@ int main(int argc, char **argv)
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double t0 = omp_get_wtime();
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, (size_t)argc, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, (size_t)argc, err, sizeof err);
     if (s == NULL) {
         fprintf(stderr, "node61: %s\n", err);
         return 1;

@@ -8,10 +8,10 @@ tool=$1
 K=tests/solver/kelvin_block48.yaml
 SMALL="--set geometry.grid=7,7,3 --set contact.0.node=25"
 
-expect 0 "neo-Hookean block48, 2 N down" -- "$tool" -q solve coeffs/block48.yaml $SMALL \
+expect 0 "neo-Hookean block48, 2 N down" -- "$tool" -q solve tests/solver/block48_seed.yaml $SMALL \
     --set material.law=neo-hookean --force 0,0,-2 -o "$tmp/w/nh.csv"
 check "every node" test "$(wc -l <"$tmp/w/nh.csv")" = 148
-"$tool" -q solve coeffs/block48.yaml $SMALL --force 0,0,-2 -o "$tmp/w/lin.csv"
+"$tool" -q solve tests/solver/block48_seed.yaml $SMALL --force 0,0,-2 -o "$tmp/w/lin.csv"
 check "node 25 moves down, not as far as the linear law says" sh -c "
     nl=\$(awk -F, '\$1 == 25 { print \$7 }' '$tmp/w/nh.csv')
     li=\$(awk -F, '\$1 == 25 { print \$7 }' '$tmp/w/lin.csv')

@@ -46,9 +46,9 @@ done
 say "small-load limit"
 echo "method,law,relative_difference" >"$out/small_load_limit.csv"
 limit() { # METHOD LAW-SETTING LINEAR-SETTING [EXTRA]
-    "$tool" -q solve coeffs/block48.yaml --set solver.method=$1 --set "$2" ${4:-} \
+    "$tool" -q solve tests/solver/block48_seed.yaml --set solver.method=$1 --set "$2" ${4:-} \
         --force 0.3e-7,-0.2e-7,-1e-7 -o "$tmp/n.csv"
-    "$tool" -q solve coeffs/block48.yaml --set solver.method=$1 --set "$3" ${5:-} \
+    "$tool" -q solve tests/solver/block48_seed.yaml --set solver.method=$1 --set "$3" ${5:-} \
         --force 0.3e-7,-0.2e-7,-1e-7 -o "$tmp/l.csv"
     paste -d, "$tmp/n.csv" "$tmp/l.csv" | awk -F, -v m=$1 -v l="$6" '
         NR > 1 { for (k = 5; k <= 7; ++k) { d = $k - $(k + 7); if (d < 0) d = -d; if (d > w) w = d

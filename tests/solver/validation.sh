@@ -33,17 +33,17 @@ u61() {
     shift 2
     nx=${grid%%,*}
     node=$(( nx / 2 + nx * (nx / 2) + 1 ))
-    "$tool" -q solve coeffs/block48.yaml --set geometry.grid="$grid" --set contact.0.node="$node" \
+    "$tool" -q solve tests/solver/block48_seed.yaml --set geometry.grid="$grid" --set contact.0.node="$node" \
         --force "$force" "$@" -o "$tmp/u.csv"
     awk -F, -v n="$node" '$1 == n { print $5 "," $6 "," $7 }' "$tmp/u.csv"
 }
 
 # --- penalty against elimination ---------------------------------------------
 say "penalty"
-"$tool" -q solve coeffs/block48.yaml --force 0.9,-0.7,-0.22 -o "$tmp/elim.csv"
+"$tool" -q solve tests/solver/block48_seed.yaml --force 0.9,-0.7,-0.22 -o "$tmp/elim.csv"
 echo "lambda,max_abs_difference_mm,relative" >"$out/penalty.csv"
 for lam in 2 10 100 1e3 1e5 1e7 1e9 1e11 1e13 1e16 1e20 1e50 1e100 1e300; do
-    "$tool" -q solve coeffs/block48.yaml --force 0.9,-0.7,-0.22 --set solver.bc=penalty \
+    "$tool" -q solve tests/solver/block48_seed.yaml --force 0.9,-0.7,-0.22 --set solver.bc=penalty \
         --set solver.penalty=$lam -o "$tmp/pen.csv"
     paste -d, "$tmp/elim.csv" "$tmp/pen.csv" | awk -F, -v l=$lam '
         NR > 1 { for (k = 5; k <= 7; ++k) { d = $k - $(k + 7); if (d < 0) d = -d; if (d > m) m = d
@@ -73,8 +73,8 @@ for dc in 0.5 2 8 32 128; do
 done
 echo "d_c_mm,min_rcond,warning,ux61_fx,uz61_fz" >"$out/conditioning_block48.csv"
 for dc in 0.5 2 8 24 48 96 200 400 3000; do
-    "$tool" solve coeffs/block48.yaml --force 1,0,0 --set solver.rbf.d_c=$dc -o "$tmp/x.csv" 2>"$tmp/x.err" || true
-    "$tool" -q solve coeffs/block48.yaml --force 0,0,-1 --set solver.rbf.d_c=$dc -o "$tmp/z.csv" 2>/dev/null || true
+    "$tool" solve tests/solver/block48_seed.yaml --force 1,0,0 --set solver.rbf.d_c=$dc -o "$tmp/x.csv" 2>"$tmp/x.err" || true
+    "$tool" -q solve tests/solver/block48_seed.yaml --force 0,0,-1 --set solver.rbf.d_c=$dc -o "$tmp/z.csv" 2>/dev/null || true
     rc=$(grep -o "smallest reciprocal condition [0-9.e+-]*" "$tmp/x.err" | awk '{ print $4 }')
     warn=$(grep -q "warning" "$tmp/x.err" && echo yes || echo no)
     x=$(awk -F, '$1 == 61 { print $5 }' "$tmp/x.csv" 2>/dev/null || true)

@@ -84,6 +84,11 @@ static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_di
         dims[3] = (uint32_t)pow(10.0, tf_rng_range(r, 3.0, 8.0)); /* 1 us .. 0.1 s */
         *n_dims = TFIT_PRONY_DIMS;
         break;
+    case TFIT_FAMILY_CUT: /* {p, K intervals in s} */
+        dims[0] = pick(r, 0, pmax);
+        dims[1] = pick(r, 1, small ? 4 : 16);
+        *n_dims = TFIT_CUT_DIMS;
+        break;
     case TFIT_FAMILY_RESONANT: /* {p, r (0: nodal), K, tick_ns} */
         dims[0] = pick(r, 0, pmax);
         dims[1] = tf_rng_below(r, 2) ? 0 : pick(r, 1, small ? 4 : 16);
@@ -219,9 +224,15 @@ tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int s
                                            TFIT_FAMILY_CONTACT};
     tfit_family f = family ? family : families[tf_rng_below(r, 5)];
     uint32_t dims[TFIT_ZHOU2017_DIMS], n_dims;
-    char err[256];
     random_dims(r, f, dims, &n_dims, small);
     uint32_t n_out = f == TFIT_FAMILY_CONTACT ? 1 : random_n_out(r, small);
+    return tf_random_model_of(r, name, f, dims, n_dims, n_out);
+}
+
+tf_model *tf_random_model_of(tf_rng *r, const char *name, tfit_family f, const uint32_t *dims,
+                             uint32_t n_dims, uint32_t n_out)
+{
+    char err[256];
     tf_model *m = tf_model_new(name, f, n_out, dims, n_dims, err, sizeof err);
     if (m == NULL) {
         fprintf(stderr, "random model: %s\n", err);

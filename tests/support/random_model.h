@@ -14,5 +14,8 @@
  * asked for).  small != 0 keeps tables short (for
  * emitted headers).  Returns NULL only when out of memory. */
 tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small);
+/* The same with the family, dims and n_out given (random map and tables). */
+tf_model *tf_random_model_of(tf_rng *r, const char *name, tfit_family f, const uint32_t *dims,
+                             uint32_t n_dims, uint32_t n_out);
 
 #endif /* TF_RANDOM_MODEL_H */

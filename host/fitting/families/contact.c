@@ -117,7 +117,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
         w[i] = k[i] / d->radius;
     }
     tf_model_set_map(model, x0, w);
-    model->node_ids[0] = c->contact_node + 1; /* node numbers count from 1 */
+    model->node_ids[0] = c->contact_id; /* tf_cases.contact_id */
     if (tf_family_spans(model, d->contact, idx, m, err, errlen) != 0) {
         tf_model_free(model);
         return NULL;

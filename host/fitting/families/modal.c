@@ -141,12 +141,14 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
     return res->model ? 0 : -1;
 }
 
-/* p = 1, 2 and r = 1 .. max_rank, while the cases and outputs allow. */
+/* p = 1 .. max_degree and r = 1 .. max_rank, while the cases and outputs
+ * allow: a nonlinear scene's amplitudes pay for degrees above 2 (block48_nh,
+ * docs/tradeoff.md). */
 static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
                       char *err, size_t errlen)
 {
     const tf_fitdata *d = &c->train;
-    for (uint32_t p = 1; p <= 2 && p <= plan->max_degree; ++p) {
+    for (uint32_t p = 1; p <= plan->max_degree && tf_terms(p) <= d->n_cases; ++p) {
         for (uint32_t r = 1; r <= plan->max_rank && r <= 3 * d->n_out && r <= d->n_cases; ++r) {
             const uint32_t orders[2] = {p, r};
             tf_model *m = fit(c, NULL, 0, orders, err, errlen);

@@ -10,7 +10,7 @@
 
 #include "fitting/families/family.h"
 
-#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(resonant)
+#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant)
 
 #define DECLARE(name) extern const tf_family tf_family_##name;
 FAMILIES(DECLARE)
@@ -64,5 +64,6 @@ void tf_fit_plan_defaults(tf_fit_plan *p)
     *p = (tf_fit_plan){.family = tf_family_find("nodal"), .contact = 0, .n_train = 100,
                        .n_heldout = 50, .seed = 20170912, .folds = 5, .max_degree = 4,
                        .max_rank = 12, .tick_ns = 1000000, .hist_train = 12,
-                       .hist_heldout = 6, .hist_ticks = 5000};
+                       .hist_heldout = 6, .hist_ticks = 5000, .hist_solve_every = 1,
+                       .cut_intervals = 0, .cut_heldout = 4};
 }

@@ -1,5 +1,5 @@
 /*
- * resonant.c — the resonant family (docs/header-format.md §5.7,
+ * resonant.c — the resonant family (docs/header-format.md §5.8,
  * docs/fitting.md §8): the static map (a nodal or modal model fitted to the
  * static cases, which a time-dependent solver gives at equilibrium) at the
  * force carried through K damped second-order modes (inertia), fitted to

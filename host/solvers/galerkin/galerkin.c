@@ -134,29 +134,27 @@ static int factorise(galerkin *g, tf_ctx *ctx)
         tf_csc_free(&a);
         return tf_fail(ctx, "every degree of freedom is fixed: nothing to solve");
     }
-    if (g->base.opts.ordering == TF_ORDER_DEFAULT) { /* today's path, bit for bit */
-        g->chol = tf_chol_factor(&a, &ci, ctx->err, sizeof ctx->err);
-    } else {
-        double t = 0;
-        g->chol = tf_chol_analyse(&a, (tf_ordering)g->base.opts.ordering, 0, &ci, ctx->err,
-                                  sizeof ctx->err);
-        int rc = g->chol ? tf_chol_refactor(g->chol, &a, &t, ctx->err, sizeof ctx->err) : -1;
-        ci.t_factor = t;
-        ci.rcond = rc == 0 ? tf_chol_rcond(g->chol) : 0;
-        if (rc != 0) {
-            if (rc == 1) {
-                tf_fail(ctx, "the stiffness matrix is not positive definite: is the body held "
-                             "by its fixed regions?");
-            }
-            tf_chol_free(g->chol);
-            g->chol = NULL;
+    double t = 0;
+    g->chol = tf_chol_analyse(&a, (tf_ordering)g->base.opts.ordering, 0, &ci, ctx->err,
+                              sizeof ctx->err);
+    int rc = g->chol ? tf_chol_refactor(g->chol, &a, &t, ctx->err, sizeof ctx->err) : -1;
+    ci.t_factor = t;
+    ci.rcond = rc == 0 ? tf_chol_rcond(g->chol) : 0;
+    if (rc != 0) {
+        if (rc == 1) {
+            tf_fail(ctx, "the stiffness matrix is not positive definite: is the body held "
+                         "by its fixed regions?");
         }
+        tf_chol_free(g->chol);
+        g->chol = NULL;
     }
     tf_csc_free(&a);
     if (g->chol == NULL) {
         return -1;
     }
     g->detail.t_factor = ci.t_analyse + ci.t_factor;
+    g->detail.t_analyse = ci.t_analyse;
+    g->detail.chol_mib = tf_chol_peak_bytes(g->chol) / (1024.0 * 1024.0);
     g->detail.nnz_l = ci.nnz_l;
     g->detail.flops = ci.flops;
     g->detail.ordering = ci.ordering;

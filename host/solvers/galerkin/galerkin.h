@@ -43,6 +43,8 @@ typedef struct tf_galerkin_info {
     double t_assemble;    /* stiffness values (the rest of the value pass) */
     double t_loads;       /* load vectors, boundary conditions */
     double t_factor;      /* CHOLMOD analysis + factorisation */
+    double t_analyse;     /* of which the symbolic analysis (the ordering) */
+    double chol_mib;      /* CHOLMOD's peak memory, the factor included, MiB */
     tf_shape_stats st;    /* local systems: count, conditioning, sizes */
 } tf_galerkin_info;
 

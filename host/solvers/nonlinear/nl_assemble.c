@@ -485,30 +485,37 @@ static void cell_tangent(const nl_solver *s, const double *G, const double *w, s
 }
 
 /* Adds a full dense matrix over ascending nodes idx (3n x 3n) to the
- * symmetric part (k) and, when kskew is not NULL, the skew part. */
+ * symmetric part (k) and, when kskew is not NULL, the skew part.  The
+ * entries are found by walking each column node's block list (ascending,
+ * as idx is) rather than by a binary search per entry: this runs serially
+ * between the parallel batches. */
 static void add_split(const nl_solver *s, const uint32_t *idx, size_t n, const double *kc,
                       double *kx, double *kskew)
 {
     const tf_csc *k = &s->k;
+    const tf_nodesets *bp = &s->bp;
     size_t dim = 3 * n;
     for (size_t j = 0; j < n; ++j) {
-        for (size_t bb = 0; bb < 3; ++bb) {
-            size_t col = 3 * (size_t)idx[j] + bb, from = 0, cj = 3 * j + bb;
-            for (size_t i = j; i < n; ++i) {
-                size_t a0 = i == j ? bb : 0;
-                long q = tf_sparsity_find(k, 3 * (size_t)idx[i] + a0, col, from);
-                if (q < 0) {
-                    continue; /* (the pattern holds every pair of a cell) */
-                }
-                for (size_t a = a0; a < 3; ++a) {
-                    size_t ri = 3 * i + a;
+        size_t b = idx[j], q = bp->ptr[b], end = bp->ptr[b + 1];
+        for (size_t i = j; i < n; ++i) {
+            size_t a = idx[i], at = q;
+            while (at < end && bp->nodes[at] != a) {
+                at++;
+            }
+            if (at == end) {
+                continue; /* (the pattern holds every pair of a cell) */
+            }
+            q = at;
+            for (size_t bb = 0; bb < 3; ++bb) {
+                size_t cj = 3 * j + bb;
+                for (size_t aa = a == b ? bb : 0; aa < 3; ++aa) {
+                    size_t e = tf_sparsity_entry(k, a, b, q - bp->ptr[b], aa, bb), ri = 3 * i + aa;
                     double lo = kc[ri + dim * cj], up = kc[cj + dim * ri];
-                    kx[(size_t)q + a - a0] += 0.5 * (lo + up);
+                    kx[e] += 0.5 * (lo + up);
                     if (kskew) {
-                        kskew[(size_t)q + a - a0] += 0.5 * (lo - up);
+                        kskew[e] += 0.5 * (lo - up);
                     }
                 }
-                from = (size_t)q;
             }
         }
     }

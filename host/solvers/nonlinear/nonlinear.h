@@ -33,6 +33,8 @@ typedef struct tf_nonlinear_info {
     size_t steps, cuts, iterations;     /* load steps converged, halvings, Newton iterations */
     size_t residuals, tangents;         /* assemblies without and with the tangent */
     size_t factorisations, krylov;      /* numeric factorisations, Krylov iterations */
+    size_t indefinite;                  /* of the factorisations, simplicial LDL^T ones of a
+                                         * tangent that was not positive definite */
     double t_gradients;                 /* s: shape functions and gradients (once) */
     double t_residual, t_tangent, t_factor, t_solve; /* s, wall */
     double nnz_l;                       /* entries in the factor */

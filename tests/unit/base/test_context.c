@@ -86,7 +86,7 @@ static void a_solver_logs_through_its_own_context(void **state)
 {
     (void)state;
     char err[512];
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
     assert_non_null(s);
     tf_ctx loud, quiet;
     captured heard_loud, heard_quiet;

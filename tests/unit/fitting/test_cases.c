@@ -25,6 +25,8 @@
 #define N_TRAIN 30
 #define N_HELD 10
 
+static int id_is_node; /* contact_id_of: the id was the nearest node's number */
+
 static unsigned no_caps(const tf_solver *s)
 {
     (void)s;
@@ -57,7 +59,7 @@ static void check_paths(const char *const *sets, size_t n_sets)
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", sets, n_sets, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, n_sets, err, sizeof err);
     if (s == NULL) {
         fail_msg("%s", err);
     }
@@ -184,11 +186,60 @@ static void sites_between_nodes_need_an_affine_solver(void **state)
     tf_scene_free(s);
 }
 
+/* The contact model's id for a site given by position: the number of the
+ * output point there (firmware finds the contact among the outputs by it),
+ * or, at no output point, the nearest node's number. */
+static uint32_t contact_id_of(const char *centre)
+{
+    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    const char *sets[] = {"geometry.grid=10,10,3", centre}; /* no node at the seed's points */
+    tf_scene *s = tf_scene_load("tests/solver/block48_at.yaml", sets, 2, err, sizeof err);
+    if (s == NULL) {
+        fail_msg("%s", err);
+    }
+    tf_solver *solver = tf_solver_create(&s->problem, NULL, &ctx);
+    assert_non_null(solver);
+    tf_fit_plan plan;
+    tf_fit_plan_defaults(&plan);
+    plan.n_train = N_TRAIN;
+    plan.n_heldout = N_HELD;
+    tf_cases c;
+    assert_int_equal(tf_cases_build(&s->problem, solver, &plan, &c), 0);
+    const uint32_t id = c.contact_id;
+    assert_int_equal(c.contact_node, s->problem.contacts[0].node);
+    if (id == s->problem.contacts[0].node + 1) { /* the nearest node: then no output is there */
+        id_is_node = 1;
+    }
+    tf_cases_free(&c);
+    tf_solver_destroy(solver);
+    tf_scene_free(s);
+    return id;
+}
+
+static void contact_by_position_is_named_by_its_output(void **state)
+{
+    (void)state;
+    /* output j + 1 sits at (4.8 (j mod 11), 4.8 floor(j / 11), 6) */
+    id_is_node = 0;
+    assert_int_equal(contact_id_of("contact.0.patch.centre=[24, 24]"), 61);
+    assert_false(id_is_node);
+    assert_int_equal(contact_id_of("contact.0.patch.centre=[19.2, 24]"), 60);
+    assert_int_equal(contact_id_of("contact.0.patch.centre=[24, 28.8]"), 72);
+    /* between the output points: the nearest node's number */
+    id_is_node = 0;
+    contact_id_of("contact.0.patch.centre=[22, 24]");
+    assert_true(id_is_node);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(superposed_only_when_the_solver_is_affine),
         cmocka_unit_test(sites_between_nodes_need_an_affine_solver),
+        cmocka_unit_test(contact_by_position_is_named_by_its_output),
     };
     return cmocka_run_group_tests_name("cases", tests, NULL, NULL);
 }

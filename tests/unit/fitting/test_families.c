@@ -73,7 +73,7 @@ static tf_fitdata data(void)
 /* Training cases d as the families see them (contact site: node index 6). */
 static tf_cases cases_of(const tf_fitdata *d)
 {
-    return (tf_cases){.train = *d, .contact_node = 6};
+    return (tf_cases){.train = *d, .contact_node = 6, .contact_id = 7};
 }
 
 /* The registered family's model of the given orders on every case of d. */
@@ -240,7 +240,7 @@ static void registry(void **state)
     assert_null(tf_family_find("bogus"));
     assert_null(tf_family_of((tfit_family)9));
     tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
-    assert_string_equal(names, "nodal, modal, zhou2017, prony, resonant");
+    assert_string_equal(names, "nodal, modal, zhou2017, prony, cut, resonant");
     tf_family_names(TF_FAMILY_INVERSE, names, sizeof names);
     assert_string_equal(names, "contact");
 }

@@ -38,6 +38,7 @@
 #include "base/context.h"
 #include "emit/emit_header.h"
 #include "fitting/cases.h"
+#include "fitting/cut_progress.h"
 #include "fitting/families/family.h"
 #include "fitting/histories.h"
 #include "model/q31.h"
@@ -48,16 +49,41 @@
 /* block48 and its solved cases, shared by every test.  The cases carry
  * force histories of block48 as a linear viscoelastic body (seed 001's
  * Kelvin solid with k1 = E, k2 = 0.6 k1, eta = k2 s: an illustrative
- * creep, histories.h), so that a time-dependent family (prony) applies;
- * the others ignore them. */
+ * creep, histories.h), so that a time-dependent family (prony) applies,
+ * and the responses of block48 with block48_cut's incision at a few cut
+ * progress values (cut_progress.h), so that the cut family applies; the
+ * others ignore them. */
 typedef struct fixture {
     tf_ctx ctx;
-    tf_scene *scene;
+    tf_scene *scene, *cut_scene;
     tf_solver *solver;
     tf_fit_plan plan;
     tf_cases cases;
     tf_histories hist;
+    tf_cut_cases cut;
 } fixture;
+
+/* The cut cases: block48 with a 20 mm incision, s = 0, 1/2, 1, the two
+ * midpoints and two held-out values. */
+static int cut_cases(fixture *x)
+{
+    char err[512];
+    const char *sets[] = {"cuts=[{path: [[18, 14], [18, 34]], depth: 3}]"};
+    x->cut_scene = tf_scene_load("tests/solver/block48_seed.yaml", sets, 1, err, sizeof err);
+    if (x->cut_scene == NULL) {
+        print_error("%s\n", err);
+        return -1;
+    }
+    tf_fit_plan plan = x->plan;
+    plan.cut_intervals = 2;
+    plan.cut_heldout = 2;
+    if (tf_cut_cases_solve(&x->cut_scene->problem, x->solver, &plan, &x->cut) != 0) {
+        print_error("%s\n", x->ctx.err);
+        return -1;
+    }
+    x->cases.cut = &x->cut;
+    return 0;
+}
 
 static int setup(void **state)
 {
@@ -65,7 +91,7 @@ static int setup(void **state)
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
     if (x->scene == NULL) {
         print_error("%s\n", err);
         return -1;
@@ -84,6 +110,9 @@ static int setup(void **state)
         return -1;
     }
     x->cases.hist = &x->hist;
+    if (cut_cases(x) != 0) {
+        return -1;
+    }
     *state = x;
     return 0;
 }
@@ -92,6 +121,8 @@ static int teardown(void **state)
 {
     fixture *x = *state;
     tf_histories_free(&x->hist);
+    tf_cut_cases_free(&x->cut);
+    tf_scene_free(x->cut_scene);
     tf_cases_free(&x->cases);
     tf_solver_destroy(x->solver);
     tf_scene_free(x->scene);

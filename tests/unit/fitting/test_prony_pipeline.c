@@ -11,6 +11,12 @@
  * responses times the force filtered by the creep function, the force
  * linear between steps.  This is what issue 13's solver provides for a
  * Kelvin scene; the test checks the plumbing, not that solver.
+ *
+ * A solver step every m ticks (fit.solve_every): the ticks' forces are
+ * linear between the solver's steps, the displacements at the solver's
+ * steps are those of a solve at every tick of the same forces (this
+ * solver is exact for force linear in a step), and between them within
+ * the interpolation's error.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -22,6 +28,8 @@
 
 #include <cmocka.h>
 
+#include "fitting/cases.h"
+#include "fitting/histories.h"
 #include "fitting/pipeline.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
@@ -79,7 +87,7 @@ static int setup(void **state)
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
     if (x->scene == NULL) {
         print_error("%s\n", err);
         return -1;
@@ -138,6 +146,59 @@ static void a_creeping_solver_gets_a_prony_model(void **state)
     tf_solver_destroy(s);
 }
 
+static void a_coarser_solver_step_is_interpolated(void **state)
+{
+    enum { M = 10, TICKS = 1001 };
+    fixture *x = *state;
+    tf_fit_plan plan = x->scene->fit;
+    tf_solver *s = tf_solver_create_as(&creeping, &x->scene->problem, NULL, &x->ctx);
+    tf_cases c;
+    tf_histories h;
+    assert_non_null(s);
+    assert_int_equal(tf_cases_build(&x->scene->problem, s, &plan, &c), 0);
+    assert_int_equal(tf_histories_solve(&c, TF_HIST_PRESS, 1000000, M, 2, 2, TICKS, 7, &h), 0);
+    const tf_history_set *set = &h.heldout;
+    const size_t dofs = 3 * tf_solver_node_count(s);
+    const tf_outputs *o = &x->scene->problem.outputs;
+    double *u = malloc(TICKS * dofs * sizeof *u), at_steps = 0, between = 0, peak = 0;
+    assert_non_null(u);
+    for (size_t i = 0; i < set->n; ++i) {
+        const double(*f)[3] = (const double(*)[3])set->force + i * TICKS;
+        for (size_t n = 0; n + M < TICKS; n += M) { /* linear between the steps */
+            for (size_t q = 1; q < M; ++q) {
+                for (int k = 0; k < 3; ++k) {
+                    double lin = f[n][k] + (double)q / M * (f[n + M][k] - f[n][k]);
+                    assert_true(fabs(f[n + q][k] - lin) <= 1e-6 * (1 + fabs(lin)));
+                }
+            }
+        }
+        assert_int_equal(creeping_history(s, c.contact, f, TICKS, 1e-3, u), 0);
+        for (size_t n = 0; n < TICKS; ++n) {
+            const double *fit = tf_history_u(set, i, n);
+            for (size_t j = 0; j < o->n_nodes; ++j) {
+                for (size_t k = 0; k < 3; ++k) {
+                    double e = fabs(fit[3 * j + k] - u[n * dofs + 3 * (size_t)o->nodes[j] + k]);
+                    peak = fmax(peak, fabs(fit[3 * j + k]));
+                    if (n % M == 0) {
+                        at_steps = fmax(at_steps, e);
+                    } else {
+                        between = fmax(between, e);
+                    }
+                }
+            }
+        }
+    }
+    print_message("solve_every %d: at the solver's steps %.3g mm, between them %.3g mm (peak "
+                  "%.3g mm) against every tick solved\n", M, at_steps, between, peak);
+    assert_true(peak > 0.1);
+    assert_true(at_steps < 1e-9 * peak);
+    assert_true(between < 1e-3 * peak);
+    free(u);
+    tf_histories_free(&h);
+    tf_cases_free(&c);
+    tf_solver_destroy(s);
+}
+
 static void a_static_solver_gets_none(void **state)
 {
     fixture *x = *state;
@@ -158,6 +219,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_creeping_solver_gets_a_prony_model),
+        cmocka_unit_test(a_coarser_solver_step_is_interpolated),
         cmocka_unit_test(a_static_solver_gets_none),
     };
     return cmocka_run_group_tests_name("prony_pipeline", tests, setup, teardown);

@@ -191,7 +191,7 @@ static int setup(void **state)
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
     if (x->scene == NULL) {
         print_error("%s\n", err);
         return -1;

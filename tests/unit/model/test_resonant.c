@@ -1,5 +1,5 @@
 /*
- * test_resonant.c — the resonant family (docs/header-format.md §5.7): the
+ * test_resonant.c — the resonant family (docs/header-format.md §5.8): the
  * transition matrix against its closed form; the device's update against
  * the exact step response of a damped oscillator under a held force; the
  * target's step against the host reference, bit for bit, state included;

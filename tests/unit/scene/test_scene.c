@@ -15,7 +15,7 @@
 #include "scene/scene.h"
 #include "scene_refused.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 
 static const double *node_xyz(const tf_scene *s, uint32_t number)
 {
@@ -132,13 +132,13 @@ static void material_laws_and_their_parameters(void **state)
     (void)state;
     char err[512];
     const char *nh[] = {"material.law=neo-hookean"};
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", nh, 1, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", nh, 1, err, sizeof err);
     assert_non_null(s);
     assert_int_equal(s->problem.material.law, TF_LAW_NEOHOOKE);
     assert_true(s->problem.material.young == 0.32);
     tf_scene_free(s);
     const char *kv[] = {"material={law: kelvin, nu: 0.45, k1: 0.2, k2: 0.1, eta: 0.5, k: 3}"};
-    s = tf_scene_load("coeffs/block48.yaml", kv, 1, err, sizeof err);
+    s = tf_scene_load("tests/solver/block48_seed.yaml", kv, 1, err, sizeof err);
     if (s == NULL) {
         fail_msg("%s", err);
     }
@@ -219,6 +219,18 @@ static void each_bad_scene_has_its_own_message(void **state)
                  (const char *[]){"t.yaml:3:", "cuts.0.depth", "(0, 2]", NULL});
     expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1]], depth: 1}\n",
                  (const char *[]){"t.yaml:3:", "cuts.0.path", NULL});
+    /* cut progress: a power of two on a scene with cuts; held-out values with it */
+    expect_error(1, "name: t\nfit: {cut_intervals: 4}\n",
+                 (const char *[]){"t.yaml:2:", "fit.cut_intervals", "no cuts", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_intervals: 6}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_intervals", "power of two", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_intervals: 128}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_intervals", "1 to 64", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\nfit: {cut_heldout: 3}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_heldout", "needs fit.cut_intervals", NULL});
+    expect_error(1, "name: t\ncuts:\n  - {path: [[1, 1], [4, 4]], depth: 1}\n"
+                    "fit: {cut_intervals: 2, cut_heldout: 0}\n",
+                 (const char *[]){"t.yaml:4:", "fit.cut_heldout", "1 to 100", NULL});
 }
 
 static void override_errors_name_the_override(void **state)

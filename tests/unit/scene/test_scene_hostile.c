@@ -22,7 +22,7 @@
 #include "scene/scene.h"
 #include "scene_refused.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 
 /* tf_test_scene (scene_refused.h) with line `line` replaced by `with`. */
 static void refused(int line, const char *with, const char *const *fragments)

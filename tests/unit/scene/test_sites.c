@@ -102,7 +102,7 @@ static void contact_by_position_follows_the_grid(void **state)
 
     /* Node 61 numbered on the 11 x 11 grid is (43.2, 4.8, 6) on 21 x 21 x 5:
      * the scene warns, and that contact point hardly moves under the load. */
-    tf_scene *s = load("coeffs/block48.yaml", &grids[2], 1);
+    tf_scene *s = load("tests/solver/block48_seed.yaml", &grids[2], 1);
     assert_non_null(strstr(s->warnings, "contact.0.node: node 61 was numbered on the file's grid"));
     assert_non_null(strstr(s->warnings, "(43.2, 4.8, 6) mm"));
     double wrong, at_load;
@@ -114,10 +114,10 @@ static void contact_by_position_follows_the_grid(void **state)
 
     /* the node number set with the grid, or no grid override: no warning */
     const char *both[] = {"geometry.grid=21,21,5", "contact.0.node=221"};
-    s = load("coeffs/block48.yaml", both, 2);
+    s = load("tests/solver/block48_seed.yaml", both, 2);
     assert_string_equal(s->warnings, "");
     tf_scene_free(s);
-    s = load("coeffs/block48.yaml", NULL, 0);
+    s = load("tests/solver/block48_seed.yaml", NULL, 0);
     assert_string_equal(s->warnings, "");
     tf_scene_free(s);
 }

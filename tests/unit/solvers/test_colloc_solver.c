@@ -21,7 +21,7 @@
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 #define NODE61 60 /* index of the top centre */
 
 static const double down[1][3] = {{0, 0, -0.01}}; /* small: the linear limit */

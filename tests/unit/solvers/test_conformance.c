@@ -33,7 +33,7 @@
 #include "scene_run.h"
 #include "solvers/solver.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 #define GRID 11 /* block48's default grid: 11 x 11 x 3 */
 
 static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};

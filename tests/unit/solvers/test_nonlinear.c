@@ -23,7 +23,7 @@
 #include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 /* block48 on a 7 x 7 x 3 grid: node 25 is the top centre */
 #define SMALL_GRID "geometry.grid=7,7,3"
 #define SMALL_NODE "contact.0.node=25"

@@ -23,7 +23,7 @@
 #include "solvers/galerkin/galerkin.h"
 #include "solvers/solver.h"
 
-#define BLOCK48 "coeffs/block48.yaml"
+#define BLOCK48 "tests/solver/block48_seed.yaml"
 
 static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}; /* fx, fy, fz */
 

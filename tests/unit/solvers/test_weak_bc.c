@@ -107,7 +107,7 @@ static efg_run *run_block48(const char *const *sets, size_t n_sets)
     char err[512];
     efg_run *r = calloc(1, sizeof *r);
     quiet(&r->ctx);
-    r->s = tf_scene_load("coeffs/block48.yaml", sets, n_sets, err, sizeof err);
+    r->s = tf_scene_load("tests/solver/block48_seed.yaml", sets, n_sets, err, sizeof err);
     if (r->s == NULL) {
         fail_msg("%s", err);
     }
@@ -189,11 +189,11 @@ static void scene_refuses_what_efg_cannot_do(void **state)
     (void)state;
     char err[512];
     const char *elim[] = {"solver.method=efg-galerkin", "solver.bc=elimination"};
-    assert_null(tf_scene_load("coeffs/block48.yaml", elim, 2, err, sizeof err));
+    assert_null(tf_scene_load("tests/solver/block48_seed.yaml", elim, 2, err, sizeof err));
     assert_non_null(strstr(err, "solver.bc"));
     const char *box[] = {"solver.method=efg-galerkin",
                          "fixed.4={box: {min: [0, 0, 0], max: [1, 1, 1]}}"};
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", box, 2, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", box, 2, err, sizeof err);
     assert_non_null(s);
     tf_ctx ctx;
     quiet(&ctx);

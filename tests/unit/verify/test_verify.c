@@ -126,7 +126,7 @@ static void no_reference_no_verification(void **state)
     char err[512];
     tf_ctx ctx;
     quiet(&ctx);
-    tf_scene *s = tf_scene_load("coeffs/block48.yaml", NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
     assert_non_null(s);
     tf_verify_row row;
     assert_int_equal(tf_verify_problem(&s->problem, 0, &ctx, &row), -2);
