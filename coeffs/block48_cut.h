@@ -35,7 +35,7 @@
 #endif
 
 /* CRC-32 of block48_cut_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_BLOCK48_CUT_GOLDEN_CRC32 0x2b3d3b1au
+#define TFIT_BLOCK48_CUT_GOLDEN_CRC32 0x5634fad9u
 
 /* tfit_block48_cut_forward */
 #define TFIT_BLOCK48_CUT_FORWARD_FAMILY "cut"
@@ -60,8 +60,8 @@
 #define TFIT_BLOCK48_CUT_FORWARD_HELDOUT_CASES 200
 #define TFIT_BLOCK48_CUT_FORWARD_HELDOUT_MAX_MM 0.027421
 #define TFIT_BLOCK48_CUT_FORWARD_HELDOUT_RMS_MM 0.000970659
-#define TFIT_BLOCK48_CUT_FORWARD_CRC32 0x7f37ae30u
-#define tfit_block48_cut_forward tfit_block48_cut_forward_7f37ae30 /* this header's version of the model */
+#define TFIT_BLOCK48_CUT_FORWARD_CRC32 0xb8249b7cu
+#define tfit_block48_cut_forward tfit_block48_cut_forward_b8249b7c /* this header's version of the model */
 extern const tfit_model tfit_block48_cut_forward;
 
 /* tfit_block48_cut_contact */
@@ -71,7 +71,7 @@ extern const tfit_model tfit_block48_cut_forward;
 #define TFIT_BLOCK48_CUT_CONTACT_N_OUT 1u
 #define TFIT_BLOCK48_CUT_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_BLOCK48_CUT_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_BLOCK48_CUT_CONTACT_ENVELOPE_CENTER {-9.26342363e-17, 9.10728998e-18, -4.0245586e-17}
+#define TFIT_BLOCK48_CUT_CONTACT_ENVELOPE_CENTER {-6.13224722e-17, 1.21665968e-17, -3.6082247e-17}
 #define TFIT_BLOCK48_CUT_CONTACT_OPS_ADD 23
 #define TFIT_BLOCK48_CUT_CONTACT_OPS_MUL 42
 #define TFIT_BLOCK48_CUT_CONTACT_OPS_DIV 0
@@ -86,8 +86,8 @@ extern const tfit_model tfit_block48_cut_forward;
 #define TFIT_BLOCK48_CUT_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_CUT_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
 #define TFIT_BLOCK48_CUT_CONTACT_Q31_ADDED_ERROR_N 3.86593e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.09128e-08 */
-#define TFIT_BLOCK48_CUT_CONTACT_Q31_CRC32 0x0632c5f0u
-#define tfit_block48_cut_contact_q31 tfit_block48_cut_contact_q31_0632c5f0 /* this header's version of the model */
+#define TFIT_BLOCK48_CUT_CONTACT_Q31_CRC32 0xd81bafcau
+#define tfit_block48_cut_contact_q31 tfit_block48_cut_contact_q31_d81bafca /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_cut_contact_q31;
 #define TFIT_BLOCK48_CUT_CONTACT_HELDOUT_CASES 50
 #define TFIT_BLOCK48_CUT_CONTACT_HELDOUT_MAX_N 5.96046e-08
@@ -95,8 +95,8 @@ extern const tfit_model_q31 tfit_block48_cut_contact_q31;
 #define TFIT_BLOCK48_CUT_CONTACT_HELDOUT_REL_MAX 1.11918e-07
 #define TFIT_BLOCK48_CUT_CONTACT_STIFFNESS_MIN_N_PER_MM 0.422052 /* sym(df/ddelta), smallest eigenvalue */
 #define TFIT_BLOCK48_CUT_CONTACT_STIFFNESS_MAX_N_PER_MM 1.2606 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_CUT_CONTACT_CRC32 0x8b7c65b8u
-#define tfit_block48_cut_contact tfit_block48_cut_contact_8b7c65b8 /* this header's version of the model */
+#define TFIT_BLOCK48_CUT_CONTACT_CRC32 0xf91450a5u
+#define tfit_block48_cut_contact tfit_block48_cut_contact_f91450a5 /* this header's version of the model */
 extern const tfit_model tfit_block48_cut_contact;
 
 #ifdef TFIT_BLOCK48_CUT_IMPLEMENTATION
@@ -130,6539 +130,6539 @@ static const float tfit_block48_cut_forward_coef[13080] = {
     0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1p+0f,
     /* s = 0/8: node 1 x */
-    -0x1.4cccccp-70f, -0x1.0f7b9p-21f, -0x1.58289ep-15f, 0x1.af27cap-14f,
+    -0x1.99999ap-74f, -0x1.0f7b9p-21f, -0x1.58289ep-15f, 0x1.af27cap-14f,
     /* s = 0/8: node 1 y */
-    0x1.99999ap-73f, -0x1.58289ep-15f, -0x1.0f7b9p-21f, 0x1.af27cap-14f,
+    0x1.ccccccp-71f, -0x1.58289ep-15f, -0x1.0f7b9p-21f, 0x1.af27cap-14f,
     /* s = 0/8: node 1 z */
-    -0x1.706666p-68f, 0x1.243682p-14f, 0x1.243682p-14f, 0x1.593ab6p-17f,
+    -0x1.1cp-68f, 0x1.243682p-14f, 0x1.243682p-14f, 0x1.593ab6p-17f,
     /* s = 0/8: node 2 x */
-    0x1.4cccccp-68f, -0x1.bccfdep-16f, -0x1.9c52c8p-16f, -0x1.884288p-13f,
+    0x1.333334p-69f, -0x1.bccfdep-16f, -0x1.9c52c8p-16f, -0x1.884288p-13f,
     /* s = 0/8: node 2 y */
-    0x1.2cccccp-69f, -0x1.f06ec8p-15f, -0x1.04bec4p-15f, -0x1.7c6312p-14f,
+    0x1.d66666p-68f, -0x1.f06ec8p-15f, -0x1.04bec4p-15f, -0x1.7c6312p-14f,
     /* s = 0/8: node 2 z */
-    0x1.f33334p-68f, -0x1.6fece6p-14f, -0x1.843764p-14f, 0x1.43f49p-13f,
+    0x1.0cccccp-68f, -0x1.6fece6p-14f, -0x1.843764p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 3 x */
-    0x1.333334p-67f, -0x1.83b4acp-15f, -0x1.730178p-14f, -0x1.de3dep-12f,
+    0x1.666666p-68f, -0x1.83b4acp-15f, -0x1.730178p-14f, -0x1.de3dep-12f,
     /* s = 0/8: node 3 y */
-    0x1.733334p-67f, -0x1.d8ce6ap-15f, -0x1.02c01ap-14f, -0x1.0380dp-12f,
+    0x1.8p-68f, -0x1.d8ce6ap-15f, -0x1.02c01ap-14f, -0x1.0380dp-12f,
     /* s = 0/8: node 3 z */
-    -0x0p+0f, -0x1.f398c2p-14f, -0x1.108e6ep-13f, 0x1.cfedf6p-13f,
+    0x1p-69f, -0x1.f398c2p-14f, -0x1.108e6ep-13f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 4 x */
-    0x1.666666p-68f, 0x1.d911e2p-20f, -0x1.45b1f2p-14f, -0x1.c033dap-12f,
+    0x1.59999ap-67f, 0x1.d911e2p-20f, -0x1.45b1f2p-14f, -0x1.c033dap-12f,
     /* s = 0/8: node 4 y */
-    0x1.f33334p-67f, -0x1.c5b548p-14f, -0x1.ecc526p-14f, -0x1.a5a7dcp-12f,
+    0x1.666666p-67f, -0x1.c5b548p-14f, -0x1.ecc526p-14f, -0x1.a5a7dcp-12f,
     /* s = 0/8: node 4 z */
-    0x1p-68f, -0x1.86532ep-14f, -0x1.5b4e98p-13f, 0x1.355c04p-12f,
+    0x1.99999ap-68f, -0x1.86532ep-14f, -0x1.5b4e98p-13f, 0x1.355c04p-12f,
     /* s = 0/8: node 5 x */
-    0x1.99999ap-72f, 0x1.5e447cp-16f, -0x1.6786e2p-14f, -0x1.463728p-12f,
+    0x1.333334p-69f, 0x1.5e447cp-16f, -0x1.6786e2p-14f, -0x1.463728p-12f,
     /* s = 0/8: node 5 y */
-    0x1p-68f, -0x1.52b658p-15f, -0x1.df8c4ep-13f, -0x1.3c25ecp-11f,
+    0x1.0cccccp-67f, -0x1.52b658p-15f, -0x1.df8c4ep-13f, -0x1.3c25ecp-11f,
     /* s = 0/8: node 5 z */
-    -0x1.4cccccp-68f, -0x1.883cbcp-15f, -0x1.a8f25ep-13f, 0x1.863e9p-12f,
+    0x1p-69f, -0x1.883cbcp-15f, -0x1.a8f25ep-13f, 0x1.863e9p-12f,
     /* s = 0/8: node 6 x */
-    -0x1.81e566p-66f, 0x1.c8ffecp-13f, -0x1.171d02p-57f, -0x1.bf291p-56f,
+    -0x1.a4b016p-66f, 0x1.c8ffecp-13f, 0x1.572612p-57f, 0x1.c0711p-55f,
     /* s = 0/8: node 6 y */
-    0x1.4cccccp-68f, 0x1.ee0e1ap-58f, -0x1.b8abc8p-13f, -0x1.1ae752p-11f,
+    0x1.ccccccp-69f, -0x1.519272p-57f, -0x1.b8abc8p-13f, -0x1.1ae752p-11f,
     /* s = 0/8: node 6 z */
-    -0x1.ccccccp-68f, -0x1.2638a6p-58f, -0x1.de0a18p-13f, 0x1.002676p-11f,
+    -0x1.8p-67f, 0x1.7945fep-58f, -0x1.de0a18p-13f, 0x1.002676p-11f,
     /* s = 0/8: node 7 x */
-    -0x1.8cccccp-68f, 0x1.5e447cp-16f, 0x1.6786e2p-14f, 0x1.463728p-12f,
+    -0x1.99999ap-70f, 0x1.5e447cp-16f, 0x1.6786e2p-14f, 0x1.463728p-12f,
     /* s = 0/8: node 7 y */
-    -0x1.99999ap-72f, 0x1.52b658p-15f, -0x1.df8c4ep-13f, -0x1.3c25ecp-11f,
+    0x1.333334p-68f, 0x1.52b658p-15f, -0x1.df8c4ep-13f, -0x1.3c25ecp-11f,
     /* s = 0/8: node 7 z */
-    -0x1.cp-68f, 0x1.883cbcp-15f, -0x1.a8f25ep-13f, 0x1.863e9p-12f,
+    -0x1.ccccccp-67f, 0x1.883cbcp-15f, -0x1.a8f25ep-13f, 0x1.863e9p-12f,
     /* s = 0/8: node 8 x */
-    -0x1.4p-67f, 0x1.d911e2p-20f, 0x1.45b1f2p-14f, 0x1.c033dap-12f,
+    -0x1.19999ap-67f, 0x1.d911e2p-20f, 0x1.45b1f2p-14f, 0x1.c033dap-12f,
     /* s = 0/8: node 8 y */
-    -0x1p-69f, 0x1.c5b548p-14f, -0x1.ecc526p-14f, -0x1.a5a7dcp-12f,
+    -0x0p+0f, 0x1.c5b548p-14f, -0x1.ecc526p-14f, -0x1.a5a7dcp-12f,
     /* s = 0/8: node 8 z */
-    -0x1.266666p-67f, 0x1.86532ep-14f, -0x1.5b4e98p-13f, 0x1.355c04p-12f,
+    -0x1.d9999ap-68f, 0x1.86532ep-14f, -0x1.5b4e98p-13f, 0x1.355c04p-12f,
     /* s = 0/8: node 9 x */
-    0x1.99999ap-72f, -0x1.83b4acp-15f, 0x1.730178p-14f, 0x1.de3dep-12f,
+    -0x1.99999ap-70f, -0x1.83b4acp-15f, 0x1.730178p-14f, 0x1.de3dep-12f,
     /* s = 0/8: node 9 y */
-    0x1.8p-69f, 0x1.d8ce6ap-15f, -0x1.02c01ap-14f, -0x1.0380dp-12f,
+    -0x1.19999ap-69f, 0x1.d8ce6ap-15f, -0x1.02c01ap-14f, -0x1.0380dp-12f,
     /* s = 0/8: node 9 z */
-    -0x1.266666p-67f, 0x1.f398c2p-14f, -0x1.108e6ep-13f, 0x1.cfedf6p-13f,
+    -0x1.8cccccp-67f, 0x1.f398c2p-14f, -0x1.108e6ep-13f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 10 x */
-    -0x1.666666p-70f, -0x1.bccfdep-16f, 0x1.9c52c8p-16f, 0x1.884288p-13f,
+    -0x1.19999ap-68f, -0x1.bccfdep-16f, 0x1.9c52c8p-16f, 0x1.884288p-13f,
     /* s = 0/8: node 10 y */
-    -0x1.4cccccp-69f, 0x1.f06ec8p-15f, -0x1.04bec4p-15f, -0x1.7c6312p-14f,
+    -0x1.266666p-68f, 0x1.f06ec8p-15f, -0x1.04bec4p-15f, -0x1.7c6312p-14f,
     /* s = 0/8: node 10 z */
-    -0x1.ccccccp-68f, 0x1.6fece6p-14f, -0x1.843764p-14f, 0x1.43f49p-13f,
+    -0x1.49999ap-67f, 0x1.6fece6p-14f, -0x1.843764p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 11 x */
-    0x1.0cccccp-69f, -0x1.0f7b9p-21f, 0x1.58289ep-15f, -0x1.af27cap-14f,
+    0x1.b33334p-70f, -0x1.0f7b9p-21f, 0x1.58289ep-15f, -0x1.af27cap-14f,
     /* s = 0/8: node 11 y */
-    -0x1.733334p-69f, 0x1.58289ep-15f, -0x1.0f7b9p-21f, 0x1.af27cap-14f,
+    -0x1p-69f, 0x1.58289ep-15f, -0x1.0f7b9p-21f, 0x1.af27cap-14f,
     /* s = 0/8: node 11 z */
-    0x1.6a6666p-69f, -0x1.243682p-14f, 0x1.243682p-14f, 0x1.593ab6p-17f,
+    0x1.2e6666p-67f, -0x1.243682p-14f, 0x1.243682p-14f, 0x1.593ab6p-17f,
     /* s = 0/8: node 12 x */
-    0x1.ep-69f, -0x1.04bec4p-15f, -0x1.f06ec8p-15f, -0x1.7c6312p-14f,
+    0x1.f9999ap-69f, -0x1.04bec4p-15f, -0x1.f06ec8p-15f, -0x1.7c6312p-14f,
     /* s = 0/8: node 12 y */
-    0x1.b33334p-69f, -0x1.9c52c8p-16f, -0x1.bccfdep-16f, -0x1.884288p-13f,
+    0x1.4p-68f, -0x1.9c52c8p-16f, -0x1.bccfdep-16f, -0x1.884288p-13f,
     /* s = 0/8: node 12 z */
-    0x1.f33334p-69f, -0x1.843764p-14f, -0x1.6fece6p-14f, 0x1.43f49p-13f,
+    0x1.8cccccp-69f, -0x1.843764p-14f, -0x1.6fece6p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 13 x */
-    0x1.a66666p-62f, 0x1.41d23ap-9f, 0x1.4841bcp-8f, -0x1.576ab2p-6f,
+    0x1.333334p-64f, 0x1.41d23ap-9f, 0x1.4841bcp-8f, -0x1.576ab2p-6f,
     /* s = 0/8: node 13 y */
-    -0x1.333334p-64f, 0x1.4841bcp-8f, 0x1.41d23ap-9f, -0x1.576ab2p-6f,
+    0x1.99999ap-67f, 0x1.4841bcp-8f, 0x1.41d23ap-9f, -0x1.576ab2p-6f,
     /* s = 0/8: node 13 z */
-    0x1p-62f, -0x1.4c894ep-8f, -0x1.4c894ep-8f, 0x1.6559d4p-6f,
+    -0x1.19999ap-63f, -0x1.4c894ep-8f, -0x1.4c894ep-8f, 0x1.6559d4p-6f,
     /* s = 0/8: node 14 x */
-    0x1p-60f, 0x1.2e0d78p-9f, 0x1.0a4e8ep-7f, -0x1.63c7a4p-5f,
+    0x1.ccccccp-61f, 0x1.2e0d78p-9f, 0x1.0a4e8ep-7f, -0x1.63c7a4p-5f,
     /* s = 0/8: node 14 y */
     0x1.ccccccp-62f, 0x1.5e465cp-9f, 0x1.5c48e4p-9f, -0x1.a3fc74p-5f,
     /* s = 0/8: node 14 z */
-    -0x1p-60f, 0x1.b6544p-9f, 0x1.e0649p-9f, 0x1.29793ep-4f,
+    -0x1.ccccccp-62f, 0x1.b6544p-9f, 0x1.e0649p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 15 x */
-    0x1p-63f, 0x1.7e6f72p-8f, 0x1.66d156p-7f, -0x1.650b5ep-5f,
+    0x1.333334p-64f, 0x1.7e6f72p-8f, 0x1.66d156p-7f, -0x1.650b5ep-5f,
     /* s = 0/8: node 15 y */
-    0x1p-61f, 0x1.bbfcecp-9f, 0x1.449736p-8f, -0x1.65f59p-4f,
+    0x1.2cccccp-59f, 0x1.bbfcecp-9f, 0x1.449736p-8f, -0x1.65f59p-4f,
     /* s = 0/8: node 15 z */
-    -0x1.e66666p-59f, 0x1.18063cp-7f, 0x1.bc7476p-7f, 0x1.2c3ceep-3f,
+    -0x1.8cccccp-59f, 0x1.18063cp-7f, 0x1.bc7476p-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 16 x */
-    -0x0p+0f, 0x1.cb6a96p-8f, 0x1.9ec162p-8f, -0x1.d69a1p-6f,
+    -0x1.99999ap-64f, 0x1.cb6a96p-8f, 0x1.9ec162p-8f, -0x1.d69a1p-6f,
     /* s = 0/8: node 16 y */
-    0x1.19999ap-60f, -0x1.568a0ap-9f, 0x1.2ecaeep-7f, -0x1.e593bp-4f,
+    0x1.4p-59f, -0x1.568a0ap-9f, 0x1.2ecaeep-7f, -0x1.e593bp-4f,
     /* s = 0/8: node 16 z */
-    -0x1.ccccccp-59f, 0x1.30feaep-7f, 0x1.8c855ap-6f, 0x1.a74baep-3f,
+    -0x1.e66666p-59f, 0x1.30feaep-7f, 0x1.8c855ap-6f, 0x1.a74baep-3f,
     /* s = 0/8: node 17 x */
-    -0x1.ec433p-61f, 0x1.7219b6p-7f, -0x1.ba5f7cp-52f, -0x1.4b244p-50f,
+    -0x1.0614bcp-61f, 0x1.7219b6p-7f, 0x1.d27c1p-52f, 0x1.40e60cp-49f,
     /* s = 0/8: node 17 y */
-    0x1.4p-59f, 0x1.f0977ap-50f, 0x1.9e9d14p-9f, -0x1.1bd3d2p-3f,
+    0x1.ccccccp-60f, -0x1.e7aeb2p-52f, 0x1.9e9d14p-9f, -0x1.1bd3d2p-3f,
     /* s = 0/8: node 17 z */
-    -0x1.99999ap-60f, -0x1.d221a6p-49f, 0x1.ebcc6ep-6f, 0x1.e37e22p-3f,
+    -0x1.b33334p-59f, 0x1.c9102ap-52f, 0x1.ebcc6ep-6f, 0x1.e37e22p-3f,
     /* s = 0/8: node 18 x */
-    -0x1.d9999ap-61f, 0x1.cb6a96p-8f, -0x1.9ec162p-8f, 0x1.d69a1p-6f,
+    -0x1.59999ap-60f, 0x1.cb6a96p-8f, -0x1.9ec162p-8f, 0x1.d69a1p-6f,
     /* s = 0/8: node 18 y */
-    0x1p-59f, 0x1.568a0ap-9f, 0x1.2ecaeep-7f, -0x1.e593bp-4f,
+    0x1.333334p-61f, 0x1.568a0ap-9f, 0x1.2ecaeep-7f, -0x1.e593bp-4f,
     /* s = 0/8: node 18 z */
-    -0x1.19999ap-59f, -0x1.30feaep-7f, 0x1.8c855ap-6f, 0x1.a74baep-3f,
+    -0x1.99999ap-62f, -0x1.30feaep-7f, 0x1.8c855ap-6f, 0x1.a74baep-3f,
     /* s = 0/8: node 19 x */
-    -0x1.19999ap-61f, 0x1.7e6f72p-8f, -0x1.66d156p-7f, 0x1.650b5ep-5f,
+    -0x1.d9999ap-61f, 0x1.7e6f72p-8f, -0x1.66d156p-7f, 0x1.650b5ep-5f,
     /* s = 0/8: node 19 y */
-    0x1.4p-60f, -0x1.bbfcecp-9f, 0x1.449736p-8f, -0x1.65f59p-4f,
+    0x1.cp-60f, -0x1.bbfcecp-9f, 0x1.449736p-8f, -0x1.65f59p-4f,
     /* s = 0/8: node 19 z */
-    -0x1.8cccccp-59f, -0x1.18063cp-7f, 0x1.bc7476p-7f, 0x1.2c3ceep-3f,
+    -0x1.99999ap-62f, -0x1.18063cp-7f, 0x1.bc7476p-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 20 x */
-    0x1.666666p-63f, 0x1.2e0d78p-9f, -0x1.0a4e8ep-7f, 0x1.63c7a4p-5f,
+    -0x1.133334p-60f, 0x1.2e0d78p-9f, -0x1.0a4e8ep-7f, 0x1.63c7a4p-5f,
     /* s = 0/8: node 20 y */
-    0x1.0cccccp-60f, -0x1.5e465cp-9f, 0x1.5c48e4p-9f, -0x1.a3fc74p-5f,
+    0x1.b33334p-61f, -0x1.5e465cp-9f, 0x1.5c48e4p-9f, -0x1.a3fc74p-5f,
     /* s = 0/8: node 20 z */
-    0x1.19999ap-61f, -0x1.b6544p-9f, 0x1.e0649p-9f, 0x1.29793ep-4f,
+    -0x1.4p-60f, -0x1.b6544p-9f, 0x1.e0649p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 21 x */
-    -0x1.8p-61f, 0x1.41d23ap-9f, -0x1.4841bcp-8f, 0x1.576ab2p-6f,
+    -0x1.6p-61f, 0x1.41d23ap-9f, -0x1.4841bcp-8f, 0x1.576ab2p-6f,
     /* s = 0/8: node 21 y */
-    0x1p-61f, -0x1.4841bcp-8f, 0x1.41d23ap-9f, -0x1.576ab2p-6f,
+    0x1.8p-61f, -0x1.4841bcp-8f, 0x1.41d23ap-9f, -0x1.576ab2p-6f,
     /* s = 0/8: node 21 z */
-    -0x1.19999ap-61f, 0x1.4c894ep-8f, -0x1.4c894ep-8f, 0x1.6559d4p-6f,
+    -0x1.4p-61f, 0x1.4c894ep-8f, -0x1.4c894ep-8f, 0x1.6559d4p-6f,
     /* s = 0/8: node 22 x */
-    0x1.4p-68f, -0x1.04bec4p-15f, 0x1.f06ec8p-15f, 0x1.7c6312p-14f,
+    0x1p-71f, -0x1.04bec4p-15f, 0x1.f06ec8p-15f, 0x1.7c6312p-14f,
     /* s = 0/8: node 22 y */
-    0x1.333334p-71f, 0x1.9c52c8p-16f, -0x1.bccfdep-16f, -0x1.884288p-13f,
+    -0x1.666666p-70f, 0x1.9c52c8p-16f, -0x1.bccfdep-16f, -0x1.884288p-13f,
     /* s = 0/8: node 22 z */
-    -0x1.266666p-67f, 0x1.843764p-14f, -0x1.6fece6p-14f, 0x1.43f49p-13f,
+    -0x1.4cccccp-67f, 0x1.843764p-14f, -0x1.6fece6p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 23 x */
-    0x1p-67f, -0x1.02c01ap-14f, -0x1.d8ce6ap-15f, -0x1.0380dp-12f,
+    0x1.b33334p-68f, -0x1.02c01ap-14f, -0x1.d8ce6ap-15f, -0x1.0380dp-12f,
     /* s = 0/8: node 23 y */
-    0x1.8cccccp-66f, -0x1.730178p-14f, -0x1.83b4acp-15f, -0x1.de3dep-12f,
+    0x1.d9999ap-67f, -0x1.730178p-14f, -0x1.83b4acp-15f, -0x1.de3dep-12f,
     /* s = 0/8: node 23 z */
-    0x1p-69f, -0x1.108e6ep-13f, -0x1.f398c2p-14f, 0x1.cfedf6p-13f,
+    0x1.333334p-70f, -0x1.108e6ep-13f, -0x1.f398c2p-14f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 24 x */
-    0x1.4cccccp-61f, 0x1.5c48e4p-9f, 0x1.5e465cp-9f, -0x1.a3fc74p-5f,
+    0x1.333334p-61f, 0x1.5c48e4p-9f, 0x1.5e465cp-9f, -0x1.a3fc74p-5f,
     /* s = 0/8: node 24 y */
-    0x1p-63f, 0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, -0x1.63c7a4p-5f,
+    0x1.99999ap-63f, 0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, -0x1.63c7a4p-5f,
     /* s = 0/8: node 24 z */
-    -0x1.e66666p-61f, 0x1.e0649p-9f, 0x1.b6544p-9f, 0x1.29793ep-4f,
+    -0x1.4cccccp-60f, 0x1.e0649p-9f, 0x1.b6544p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 25 x */
-    0x1.99999ap-64f, 0x1.46fe3ap-7f, 0x1.2f09e4p-7f, -0x1.933c56p-4f,
+    0x1.e66666p-60f, 0x1.46fe3ap-7f, 0x1.2f09e4p-7f, -0x1.933c56p-4f,
     /* s = 0/8: node 25 y */
-    -0x1p-61f, 0x1.2f09e4p-7f, 0x1.46fe3ap-7f, -0x1.933c56p-4f,
+    0x1.99999ap-62f, 0x1.2f09e4p-7f, 0x1.46fe3ap-7f, -0x1.933c56p-4f,
     /* s = 0/8: node 25 z */
-    -0x1.266666p-58f, 0x1.a1b93p-6f, 0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
+    -0x1.ccccccp-60f, 0x1.a1b93p-6f, 0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
     /* s = 0/8: node 26 x */
-    -0x1p-60f, 0x1.965cd4p-6f, 0x1.62d7c2p-7f, -0x1.95f4d2p-4f,
+    0x1.99999ap-63f, 0x1.965cd4p-6f, 0x1.62d7c2p-7f, -0x1.95f4d2p-4f,
     /* s = 0/8: node 26 y */
-    0x1.666666p-60f, 0x1.43bb06p-8f, 0x1.7de47ep-6f, -0x1.5893aep-3f,
+    0x1.99999ap-60f, 0x1.43bb06p-8f, 0x1.7de47ep-6f, -0x1.5893aep-3f,
     /* s = 0/8: node 26 z */
-    -0x1.59999ap-57f, 0x1.3fa76ap-5f, 0x1.bfac0ep-5f, 0x1.943ae2p-2f,
+    -0x1.e66666p-58f, 0x1.3fa76ap-5f, 0x1.bfac0ep-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 27 x */
-    -0x1.f33334p-60f, 0x1.3034p-5f, 0x1.9ca258p-7f, -0x1.f8fd3p-5f,
+    -0x1.8p-60f, 0x1.3034p-5f, 0x1.9ca258p-7f, -0x1.f8fd3p-5f,
     /* s = 0/8: node 27 y */
-    0x1.666666p-60f, 0x1.24fafap-7f, 0x1.45afa6p-5f, -0x1.ca80eap-3f,
+    0x1p-58f, 0x1.24fafap-7f, 0x1.45afa6p-5f, -0x1.ca80eap-3f,
     /* s = 0/8: node 27 z */
-    -0x1.0cccccp-57f, 0x1.b2da2p-6f, 0x1.48877p-4f, 0x1.151536p-1f,
+    -0x1.b33334p-57f, 0x1.b2da2p-6f, 0x1.48877p-4f, 0x1.151536p-1f,
     /* s = 0/8: node 28 x */
-    -0x1.ca80ecp-59f, 0x1.0b41c6p-5f, -0x1.2685d4p-51f, -0x1.cdbb1ep-48f,
+    -0x1.304a42p-58f, 0x1.0b41c6p-5f, -0x1.1ec458p-52f, -0x1.fc7464p-51f,
     /* s = 0/8: node 28 y */
-    0x1.59999ap-58f, 0x1.b69134p-49f, 0x1.cb5266p-5f, -0x1.effd1p-3f,
+    0x1.666666p-58f, -0x1.4a7068p-53f, 0x1.cb5266p-5f, -0x1.effd1p-3f,
     /* s = 0/8: node 28 z */
-    -0x1.19999ap-58f, -0x1.27a8bp-47f, 0x1.71be1cp-4f, 0x1.30c2aap-1f,
+    -0x1.333334p-58f, 0x1.f5da02p-50f, 0x1.71be1cp-4f, 0x1.30c2aap-1f,
     /* s = 0/8: node 29 x */
-    -0x1.4p-60f, 0x1.3034p-5f, -0x1.9ca258p-7f, 0x1.f8fd3p-5f,
+    -0x1.ap-59f, 0x1.3034p-5f, -0x1.9ca258p-7f, 0x1.f8fd3p-5f,
     /* s = 0/8: node 29 y */
     0x1.b33334p-59f, -0x1.24fafap-7f, 0x1.45afa6p-5f, -0x1.ca80eap-3f,
     /* s = 0/8: node 29 z */
-    -0x1.0cccccp-57f, -0x1.b2da2p-6f, 0x1.48877p-4f, 0x1.151536p-1f,
+    -0x1.a66666p-57f, -0x1.b2da2p-6f, 0x1.48877p-4f, 0x1.151536p-1f,
     /* s = 0/8: node 30 x */
-    -0x1p-61f, 0x1.965cd4p-6f, -0x1.62d7c2p-7f, 0x1.95f4d2p-4f,
+    -0x1.59999ap-59f, 0x1.965cd4p-6f, -0x1.62d7c2p-7f, 0x1.95f4d2p-4f,
     /* s = 0/8: node 30 y */
-    0x1.39999ap-58f, -0x1.43bb06p-8f, 0x1.7de47ep-6f, -0x1.5893aep-3f,
+    0x1.0cccccp-59f, -0x1.43bb06p-8f, 0x1.7de47ep-6f, -0x1.5893aep-3f,
     /* s = 0/8: node 30 z */
-    -0x1p-58f, -0x1.3fa76ap-5f, 0x1.bfac0ep-5f, 0x1.943ae2p-2f,
+    -0x1.99999ap-62f, -0x1.3fa76ap-5f, 0x1.bfac0ep-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 31 x */
-    -0x1.0cccccp-59f, 0x1.46fe3ap-7f, -0x1.2f09e4p-7f, 0x1.933c56p-4f,
+    -0x1.4cccccp-59f, 0x1.46fe3ap-7f, -0x1.2f09e4p-7f, 0x1.933c56p-4f,
     /* s = 0/8: node 31 y */
-    0x1.733334p-59f, -0x1.2f09e4p-7f, 0x1.46fe3ap-7f, -0x1.933c56p-4f,
+    0x1.0cccccp-59f, -0x1.2f09e4p-7f, 0x1.46fe3ap-7f, -0x1.933c56p-4f,
     /* s = 0/8: node 31 z */
-    -0x1.99999ap-60f, -0x1.a1b93p-6f, 0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
+    -0x1.99999ap-61f, -0x1.a1b93p-6f, 0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
     /* s = 0/8: node 32 x */
-    -0x1.cp-60f, 0x1.5c48e4p-9f, -0x1.5e465cp-9f, 0x1.a3fc74p-5f,
+    -0x1.266666p-60f, 0x1.5c48e4p-9f, -0x1.5e465cp-9f, 0x1.a3fc74p-5f,
     /* s = 0/8: node 32 y */
-    0x1.ccccccp-61f, -0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, -0x1.63c7a4p-5f,
+    0x1.466666p-60f, -0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, -0x1.63c7a4p-5f,
     /* s = 0/8: node 32 z */
-    -0x1.0cccccp-60f, -0x1.e0649p-9f, 0x1.b6544p-9f, 0x1.29793ep-4f,
+    -0x1p-60f, -0x1.e0649p-9f, 0x1.b6544p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 33 x */
-    0x1.333334p-70f, -0x1.02c01ap-14f, 0x1.d8ce6ap-15f, 0x1.0380dp-12f,
+    -0x1.99999ap-71f, -0x1.02c01ap-14f, 0x1.d8ce6ap-15f, 0x1.0380dp-12f,
     /* s = 0/8: node 33 y */
-    0x1.99999ap-71f, 0x1.730178p-14f, -0x1.83b4acp-15f, -0x1.de3dep-12f,
+    -0x1.666666p-69f, 0x1.730178p-14f, -0x1.83b4acp-15f, -0x1.de3dep-12f,
     /* s = 0/8: node 33 z */
-    -0x1.39999ap-66f, 0x1.108e6ep-13f, -0x1.f398c2p-14f, 0x1.cfedf6p-13f,
+    -0x1.866666p-67f, 0x1.108e6ep-13f, -0x1.f398c2p-14f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 34 x */
-    0x1.4p-67f, -0x1.ecc526p-14f, -0x1.c5b548p-14f, -0x1.a5a7dcp-12f,
+    0x1.ccccccp-67f, -0x1.ecc526p-14f, -0x1.c5b548p-14f, -0x1.a5a7dcp-12f,
     /* s = 0/8: node 34 y */
-    0x1.e66666p-68f, -0x1.45b1f2p-14f, 0x1.d911e2p-20f, -0x1.c033dap-12f,
+    0x1.59999ap-67f, -0x1.45b1f2p-14f, 0x1.d911e2p-20f, -0x1.c033dap-12f,
     /* s = 0/8: node 34 z */
-    0x1.1p-66f, -0x1.5b4e98p-13f, -0x1.86532ep-14f, 0x1.355c04p-12f,
+    0x1.99999ap-73f, -0x1.5b4e98p-13f, -0x1.86532ep-14f, 0x1.355c04p-12f,
     /* s = 0/8: node 35 x */
-    0x1.a66666p-60f, 0x1.449736p-8f, 0x1.bbfcecp-9f, -0x1.65f59p-4f,
+    0x1.4p-60f, 0x1.449736p-8f, 0x1.bbfcecp-9f, -0x1.65f59p-4f,
     /* s = 0/8: node 35 y */
-    -0x1.666666p-61f, 0x1.66d156p-7f, 0x1.7e6f72p-8f, -0x1.650b5ep-5f,
+    0x1.ccccccp-62f, 0x1.66d156p-7f, 0x1.7e6f72p-8f, -0x1.650b5ep-5f,
     /* s = 0/8: node 35 z */
-    -0x1.8p-60f, 0x1.bc7476p-7f, 0x1.18063cp-7f, 0x1.2c3ceep-3f,
+    -0x1.99999ap-60f, 0x1.bc7476p-7f, 0x1.18063cp-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 36 x */
-    0x1.99999ap-61f, 0x1.7de47ep-6f, 0x1.43bb06p-8f, -0x1.5893aep-3f,
+    0x1.333334p-61f, 0x1.7de47ep-6f, 0x1.43bb06p-8f, -0x1.5893aep-3f,
     /* s = 0/8: node 36 y */
-    0x1.99999ap-61f, 0x1.62d7c2p-7f, 0x1.965cd4p-6f, -0x1.95f4d2p-4f,
+    0x1.19999ap-60f, 0x1.62d7c2p-7f, 0x1.965cd4p-6f, -0x1.95f4d2p-4f,
     /* s = 0/8: node 36 z */
-    -0x1.b33334p-58f, 0x1.bfac0ep-5f, 0x1.3fa76ap-5f, 0x1.943ae2p-2f,
+    -0x1.59999ap-57f, 0x1.bfac0ep-5f, 0x1.3fa76ap-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 37 x */
-    0x1.666666p-61f, 0x1.f1d39ap-5f, 0x1.1cca0cp-6f, -0x1.584b0ep-3f,
+    -0x1p-59f, 0x1.f1d39ap-5f, 0x1.1cca0cp-6f, -0x1.584b0ep-3f,
     /* s = 0/8: node 37 y */
-    0x1.ccccccp-60f, 0x1.1cca0cp-6f, 0x1.f1d39ap-5f, -0x1.584b0ep-3f,
+    0x1.4cccccp-60f, 0x1.1cca0cp-6f, 0x1.f1d39ap-5f, -0x1.584b0ep-3f,
     /* s = 0/8: node 37 z */
-    -0x1.666666p-57f, 0x1.3e2048p-4f, 0x1.3e2048p-4f, 0x1.766db6p-1f,
+    -0x1p-56f, 0x1.3e2048p-4f, 0x1.3e2048p-4f, 0x1.766db6p-1f,
     /* s = 0/8: node 38 x */
-    -0x1.a66666p-58f, 0x1.7912aap-4f, 0x1.79a49p-7f, -0x1.ea369cp-4f,
+    -0x1.f33334p-58f, 0x1.7912aap-4f, 0x1.79a49p-7f, -0x1.ea369cp-4f,
     /* s = 0/8: node 38 y */
-    0x1.99999ap-60f, 0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, -0x1.e10136p-3f,
+    0x1.8p-59f, 0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, -0x1.e10136p-3f,
     /* s = 0/8: node 38 z */
-    -0x1.8cccccp-56f, 0x1.13df06p-4f, 0x1.f6f56ep-4f, 0x1.042886p+0f,
+    -0x1.4cccccp-56f, 0x1.13df06p-4f, 0x1.f6f56ep-4f, 0x1.042886p+0f,
     /* s = 0/8: node 39 x */
-    -0x1.d6d4cap-57f, 0x1.f67cd6p-4f, -0x1.bb0fap-51f, -0x1.0e7274p-46f,
+    -0x1.6a1652p-58f, 0x1.f67cd6p-4f, 0x1.45dcc8p-50f, 0x1.6d64d4p-49f,
     /* s = 0/8: node 39 y */
-    0x1.0cccccp-58f, 0x1.71cf04p-49f, 0x1.1cef14p-3f, -0x1.13f6e6p-2f,
+    0x1.99999ap-62f, -0x1.3100fp-50f, 0x1.1cef14p-3f, -0x1.13f6e6p-2f,
     /* s = 0/8: node 39 z */
-    -0x1.333334p-57f, -0x1.eddc8ep-47f, 0x1.2b17aap-3f, 0x1.28a008p+0f,
+    -0x1.333334p-57f, 0x1.c8f3dcp-52f, 0x1.2b17aap-3f, 0x1.28a008p+0f,
     /* s = 0/8: node 40 x */
-    -0x1.666666p-57f, 0x1.7912aap-4f, -0x1.79a49p-7f, 0x1.ea369cp-4f,
+    -0x1.266666p-58f, 0x1.7912aap-4f, -0x1.79a49p-7f, 0x1.ea369cp-4f,
     /* s = 0/8: node 40 y */
-    0x1.133334p-57f, -0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, -0x1.e10136p-3f,
+    0x1.333334p-58f, -0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, -0x1.e10136p-3f,
     /* s = 0/8: node 40 z */
-    -0x1.19999ap-57f, -0x1.13df06p-4f, 0x1.f6f56ep-4f, 0x1.042886p+0f,
+    0x1p-57f, -0x1.13df06p-4f, 0x1.f6f56ep-4f, 0x1.042886p+0f,
     /* s = 0/8: node 41 x */
-    -0x1.acccccp-58f, 0x1.f1d39ap-5f, -0x1.1cca0cp-6f, 0x1.584b0ep-3f,
+    -0x1.cp-59f, 0x1.f1d39ap-5f, -0x1.1cca0cp-6f, 0x1.584b0ep-3f,
     /* s = 0/8: node 41 y */
-    0x1.e66666p-58f, -0x1.1cca0cp-6f, 0x1.f1d39ap-5f, -0x1.584b0ep-3f,
+    0x1.19999ap-60f, -0x1.1cca0cp-6f, 0x1.f1d39ap-5f, -0x1.584b0ep-3f,
     /* s = 0/8: node 41 z */
-    -0x1.99999ap-62f, -0x1.3e2048p-4f, 0x1.3e2048p-4f, 0x1.766db6p-1f,
+    -0x1.666666p-59f, -0x1.3e2048p-4f, 0x1.3e2048p-4f, 0x1.766db6p-1f,
     /* s = 0/8: node 42 x */
-    -0x1.133334p-58f, 0x1.7de47ep-6f, -0x1.43bb06p-8f, 0x1.5893aep-3f,
+    -0x1.ccccccp-58f, 0x1.7de47ep-6f, -0x1.43bb06p-8f, 0x1.5893aep-3f,
     /* s = 0/8: node 42 y */
-    0x1.333334p-59f, -0x1.62d7c2p-7f, 0x1.965cd4p-6f, -0x1.95f4d2p-4f,
+    0x1p-59f, -0x1.62d7c2p-7f, 0x1.965cd4p-6f, -0x1.95f4d2p-4f,
     /* s = 0/8: node 42 z */
-    -0x1.666666p-59f, -0x1.bfac0ep-5f, 0x1.3fa76ap-5f, 0x1.943ae2p-2f,
+    0x1.666666p-59f, -0x1.bfac0ep-5f, 0x1.3fa76ap-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 43 x */
-    -0x1.333334p-61f, 0x1.449736p-8f, -0x1.bbfcecp-9f, 0x1.65f59p-4f,
+    -0x1.d9999ap-60f, 0x1.449736p-8f, -0x1.bbfcecp-9f, 0x1.65f59p-4f,
     /* s = 0/8: node 43 y */
-    0x1.d33334p-60f, -0x1.66d156p-7f, 0x1.7e6f72p-8f, -0x1.650b5ep-5f,
+    0x1.b33334p-61f, -0x1.66d156p-7f, 0x1.7e6f72p-8f, -0x1.650b5ep-5f,
     /* s = 0/8: node 43 z */
-    -0x1.99999ap-60f, -0x1.bc7476p-7f, 0x1.18063cp-7f, 0x1.2c3ceep-3f,
+    0x1.99999ap-63f, -0x1.bc7476p-7f, 0x1.18063cp-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 44 x */
-    0x1.266666p-67f, -0x1.ecc526p-14f, 0x1.c5b548p-14f, 0x1.a5a7dcp-12f,
+    0x1.066666p-66f, -0x1.ecc526p-14f, 0x1.c5b548p-14f, 0x1.a5a7dcp-12f,
     /* s = 0/8: node 44 y */
-    0x1.333334p-70f, 0x1.45b1f2p-14f, 0x1.d911e2p-20f, -0x1.c033dap-12f,
+    -0x1.333334p-70f, 0x1.45b1f2p-14f, 0x1.d911e2p-20f, -0x1.c033dap-12f,
     /* s = 0/8: node 44 z */
-    -0x1.633334p-66f, 0x1.5b4e98p-13f, -0x1.86532ep-14f, 0x1.355c04p-12f,
+    -0x1.033334p-66f, 0x1.5b4e98p-13f, -0x1.86532ep-14f, 0x1.355c04p-12f,
     /* s = 0/8: node 45 x */
-    0x1.f33334p-66f, -0x1.df8c4ep-13f, -0x1.52b658p-15f, -0x1.3c25ecp-11f,
+    0x1.233334p-65f, -0x1.df8c4ep-13f, -0x1.52b658p-15f, -0x1.3c25ecp-11f,
     /* s = 0/8: node 45 y */
-    0x1.f33334p-67f, -0x1.6786e2p-14f, 0x1.5e447cp-16f, -0x1.463728p-12f,
+    0x1.4cccccp-68f, -0x1.6786e2p-14f, 0x1.5e447cp-16f, -0x1.463728p-12f,
     /* s = 0/8: node 45 z */
-    0x1.a66666p-67f, -0x1.a8f25ep-13f, -0x1.883cbcp-15f, 0x1.863e9p-12f,
+    0x1.8cccccp-68f, -0x1.a8f25ep-13f, -0x1.883cbcp-15f, 0x1.863e9p-12f,
     /* s = 0/8: node 46 x */
-    0x1.e66666p-60f, 0x1.2ecaeep-7f, -0x1.568a0ap-9f, -0x1.e593bp-4f,
+    0x1.666666p-61f, 0x1.2ecaeep-7f, -0x1.568a0ap-9f, -0x1.e593bp-4f,
     /* s = 0/8: node 46 y */
-    0x1.b33334p-62f, 0x1.9ec162p-8f, 0x1.cb6a96p-8f, -0x1.d69a1p-6f,
+    -0x1.99999ap-66f, 0x1.9ec162p-8f, 0x1.cb6a96p-8f, -0x1.d69a1p-6f,
     /* s = 0/8: node 46 z */
-    -0x1.e66666p-59f, 0x1.8c855ap-6f, 0x1.30feaep-7f, 0x1.a74baep-3f,
+    -0x1.4p-58f, 0x1.8c855ap-6f, 0x1.30feaep-7f, 0x1.a74baep-3f,
     /* s = 0/8: node 47 x */
-    -0x1p-60f, 0x1.45afa6p-5f, 0x1.24fafap-7f, -0x1.ca80eap-3f,
+    -0x1.99999ap-61f, 0x1.45afa6p-5f, 0x1.24fafap-7f, -0x1.ca80eap-3f,
     /* s = 0/8: node 47 y */
-    0x1.333334p-62f, 0x1.9ca258p-7f, 0x1.3034p-5f, -0x1.f8fd3p-5f,
+    0x1.ccccccp-61f, 0x1.9ca258p-7f, 0x1.3034p-5f, -0x1.f8fd3p-5f,
     /* s = 0/8: node 47 z */
-    -0x1.266666p-57f, 0x1.48877p-4f, 0x1.b2da2p-6f, 0x1.151536p-1f,
+    -0x1.0cccccp-57f, 0x1.48877p-4f, 0x1.b2da2p-6f, 0x1.151536p-1f,
     /* s = 0/8: node 48 x */
-    -0x1p-57f, 0x1.d5fe18p-4f, 0x1.3d6b5ep-7f, -0x1.e10136p-3f,
+    -0x1.8cccccp-58f, 0x1.d5fe18p-4f, 0x1.3d6b5ep-7f, -0x1.e10136p-3f,
     /* s = 0/8: node 48 y */
-    0x1.ccccccp-60f, 0x1.79a49p-7f, 0x1.7912aap-4f, -0x1.ea369cp-4f,
+    0x1.99999ap-63f, 0x1.79a49p-7f, 0x1.7912aap-4f, -0x1.ea369cp-4f,
     /* s = 0/8: node 48 z */
-    -0x1.4p-56f, 0x1.f6f56ep-4f, 0x1.13df06p-4f, 0x1.042886p+0f,
+    -0x1.666666p-56f, 0x1.f6f56ep-4f, 0x1.13df06p-4f, 0x1.042886p+0f,
     /* s = 0/8: node 49 x */
-    -0x1.49999ap-57f, 0x1.ae2314p-3f, 0x1.df0efep-5f, -0x1.3c5918p-3f,
+    -0x1.99999ap-64f, 0x1.ae2314p-3f, 0x1.df0efep-5f, -0x1.3c5918p-3f,
     /* s = 0/8: node 49 y */
-    -0x0p+0f, 0x1.df0efep-5f, 0x1.ae2314p-3f, -0x1.3c5918p-3f,
+    -0x1.99999ap-62f, 0x1.df0efep-5f, 0x1.ae2314p-3f, -0x1.3c5918p-3f,
     /* s = 0/8: node 49 z */
-    -0x1.733334p-56f, 0x1.6cf776p-4f, 0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
+    -0x1.0cccccp-55f, 0x1.6cf776p-4f, 0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
     /* s = 0/8: node 50 x */
-    -0x1.4b1614p-57f, 0x1.f6a594p-3f, -0x1.7b3e46p-51f, -0x1.536a3ep-46f,
+    -0x1.c58c52p-56f, 0x1.f6a594p-3f, 0x1.918814p-51f, 0x1.a35e68p-50f,
     /* s = 0/8: node 50 y */
-    0x1.e66666p-58f, 0x1.f99c92p-50f, 0x1.90b0e2p-2f, -0x1.7b8ea8p-3f,
+    0x1.6cccccp-58f, 0x1.f848d8p-52f, 0x1.90b0e2p-2f, -0x1.7b8ea8p-3f,
     /* s = 0/8: node 50 z */
-    -0x1.4cccccp-56f, -0x1.519d1p-46f, 0x1.dc8cb2p-4f, 0x1.a9048ap+0f,
+    -0x1.19999ap-55f, 0x1.54ab24p-48f, 0x1.dc8cb2p-4f, 0x1.a9048ap+0f,
     /* s = 0/8: node 51 x */
-    -0x1.1e6666p-56f, 0x1.ae2314p-3f, -0x1.df0efep-5f, 0x1.3c5918p-3f,
+    -0x1.68p-56f, 0x1.ae2314p-3f, -0x1.df0efep-5f, 0x1.3c5918p-3f,
     /* s = 0/8: node 51 y */
-    0x1.2cccccp-58f, -0x1.df0efep-5f, 0x1.ae2314p-3f, -0x1.3c5918p-3f,
+    0x1.acccccp-57f, -0x1.df0efep-5f, 0x1.ae2314p-3f, -0x1.3c5918p-3f,
     /* s = 0/8: node 51 z */
-    -0x1.266666p-56f, -0x1.6cf776p-4f, 0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
+    -0x1.0cccccp-56f, -0x1.6cf776p-4f, 0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
     /* s = 0/8: node 52 x */
-    -0x1.6cccccp-56f, 0x1.d5fe18p-4f, -0x1.3d6b5ep-7f, 0x1.e10136p-3f,
+    -0x1.8p-58f, 0x1.d5fe18p-4f, -0x1.3d6b5ep-7f, 0x1.e10136p-3f,
     /* s = 0/8: node 52 y */
-    0x1.19999ap-60f, -0x1.79a49p-7f, 0x1.7912aap-4f, -0x1.ea369cp-4f,
+    0x1.133334p-58f, -0x1.79a49p-7f, 0x1.7912aap-4f, -0x1.ea369cp-4f,
     /* s = 0/8: node 52 z */
-    -0x1.99999ap-60f, -0x1.f6f56ep-4f, 0x1.13df06p-4f, 0x1.042886p+0f,
+    -0x1.99999ap-58f, -0x1.f6f56ep-4f, 0x1.13df06p-4f, 0x1.042886p+0f,
     /* s = 0/8: node 53 x */
-    -0x1.333334p-58f, 0x1.45afa6p-5f, -0x1.24fafap-7f, 0x1.ca80eap-3f,
+    -0x1.d9999ap-58f, 0x1.45afa6p-5f, -0x1.24fafap-7f, 0x1.ca80eap-3f,
     /* s = 0/8: node 53 y */
-    0x1.19999ap-59f, -0x1.9ca258p-7f, 0x1.3034p-5f, -0x1.f8fd3p-5f,
+    0x1.ccccccp-60f, -0x1.9ca258p-7f, 0x1.3034p-5f, -0x1.f8fd3p-5f,
     /* s = 0/8: node 53 z */
-    0x1.19999ap-58f, -0x1.48877p-4f, 0x1.b2da2p-6f, 0x1.151536p-1f,
+    -0x1.ccccccp-59f, -0x1.48877p-4f, 0x1.b2da2p-6f, 0x1.151536p-1f,
     /* s = 0/8: node 54 x */
-    -0x1.666666p-60f, 0x1.2ecaeep-7f, 0x1.568a0ap-9f, 0x1.e593bp-4f,
+    -0x1.b33334p-59f, 0x1.2ecaeep-7f, 0x1.568a0ap-9f, 0x1.e593bp-4f,
     /* s = 0/8: node 54 y */
-    0x1.2cccccp-60f, -0x1.9ec162p-8f, 0x1.cb6a96p-8f, -0x1.d69a1p-6f,
+    0x1.19999ap-62f, -0x1.9ec162p-8f, 0x1.cb6a96p-8f, -0x1.d69a1p-6f,
     /* s = 0/8: node 54 z */
-    -0x1.99999ap-59f, -0x1.8c855ap-6f, 0x1.30feaep-7f, 0x1.a74baep-3f,
+    -0x1p-60f, -0x1.8c855ap-6f, 0x1.30feaep-7f, 0x1.a74baep-3f,
     /* s = 0/8: node 55 x */
-    0x1.4p-67f, -0x1.df8c4ep-13f, 0x1.52b658p-15f, 0x1.3c25ecp-11f,
+    0x1.19999ap-66f, -0x1.df8c4ep-13f, 0x1.52b658p-15f, 0x1.3c25ecp-11f,
     /* s = 0/8: node 55 y */
-    -0x1.333334p-70f, 0x1.6786e2p-14f, 0x1.5e447cp-16f, -0x1.463728p-12f,
+    -0x1.8cccccp-68f, 0x1.6786e2p-14f, 0x1.5e447cp-16f, -0x1.463728p-12f,
     /* s = 0/8: node 55 z */
-    -0x1.a66666p-66f, 0x1.a8f25ep-13f, -0x1.883cbcp-15f, 0x1.863e9p-12f,
+    -0x1.8p-67f, 0x1.a8f25ep-13f, -0x1.883cbcp-15f, 0x1.863e9p-12f,
     /* s = 0/8: node 56 x */
-    0x1.ccccccp-66f, -0x1.b8abc8p-13f, 0x1.5c97b4p-57f, -0x1.1ae752p-11f,
+    0x1.2p-66f, -0x1.b8abc8p-13f, -0x1.dfd756p-59f, -0x1.1ae752p-11f,
     /* s = 0/8: node 56 y */
-    -0x1.af6c9cp-72f, -0x1.e905f6p-58f, 0x1.c8ffecp-13f, -0x1.216d74p-55f,
+    0x1.589e8ap-68f, -0x1.effd8ap-58f, 0x1.c8ffecp-13f, -0x1.756eep-55f,
     /* s = 0/8: node 56 z */
-    0x1.533334p-66f, -0x1.de0a18p-13f, 0x1.134d8cp-58f, 0x1.002676p-11f,
+    0x1.733334p-67f, -0x1.de0a18p-13f, -0x1.03be5cp-60f, 0x1.002676p-11f,
     /* s = 0/8: node 57 x */
-    0x1p-61f, 0x1.9e9d14p-9f, 0x1.21b92ep-50f, -0x1.1bd3d2p-3f,
+    0x1p-61f, 0x1.9e9d14p-9f, -0x1.0368c2p-51f, -0x1.1bd3d2p-3f,
     /* s = 0/8: node 57 y */
-    0x1.69e7fp-62f, -0x1.9d36f8p-52f, 0x1.7219b6p-7f, -0x1.83641ap-49f,
+    0x1.322376p-63f, -0x1.c00cd8p-52f, 0x1.7219b6p-7f, -0x1.bd697ap-49f,
     /* s = 0/8: node 57 z */
-    -0x1.4p-58f, 0x1.ebcc6ep-6f, -0x1.35c61p-49f, 0x1.e37e22p-3f,
+    -0x1.4p-58f, 0x1.ebcc6ep-6f, -0x1.33b97ep-53f, 0x1.e37e22p-3f,
     /* s = 0/8: node 58 x */
-    -0x1.ccccccp-60f, 0x1.cb5266p-5f, 0x1.30c242p-49f, -0x1.effd1p-3f,
+    0x1.333334p-59f, 0x1.cb5266p-5f, -0x1.d7e728p-52f, -0x1.effd1p-3f,
     /* s = 0/8: node 58 y */
-    0x1.cd9cdp-64f, -0x1.d9a6c6p-51f, 0x1.0b41c6p-5f, -0x1.e3f07p-48f,
+    0x1.a84a74p-62f, -0x1.a8c57p-52f, 0x1.0b41c6p-5f, -0x1.190636p-51f,
     /* s = 0/8: node 58 z */
-    -0x1.ccccccp-58f, 0x1.71be1cp-4f, -0x1.88472cp-48f, 0x1.30c2aap-1f,
+    -0x1.2cccccp-56f, 0x1.71be1cp-4f, 0x1.ff33b6p-51f, 0x1.30c2aap-1f,
     /* s = 0/8: node 59 x */
-    -0x1.733334p-57f, 0x1.1cef14p-3f, 0x1.63683p-50f, -0x1.13f6e6p-2f,
+    -0x1.4cccccp-58f, 0x1.1cef14p-3f, -0x1.3f6508p-50f, -0x1.13f6e6p-2f,
     /* s = 0/8: node 59 y */
-    0x1.ab28f2p-60f, -0x1.6714ep-50f, 0x1.f67cd6p-4f, -0x1.9de694p-47f,
+    0x1.c2d6cap-59f, -0x1.f683dep-56f, 0x1.f67cd6p-4f, -0x1.b5cc46p-48f,
     /* s = 0/8: node 59 z */
-    -0x1.19999ap-56f, 0x1.2b17aap-3f, -0x1.3091ap-47f, 0x1.28a008p+0f,
+    -0x1.b33334p-57f, 0x1.2b17aap-3f, -0x1.f5d8b6p-51f, 0x1.28a008p+0f,
     /* s = 0/8: node 60 x */
-    -0x1.333334p-57f, 0x1.90b0e2p-2f, 0x1.0133c6p-50f, -0x1.7b8ea8p-3f,
+    -0x1.066666p-56f, 0x1.90b0e2p-2f, -0x1.51babep-49f, -0x1.7b8ea8p-3f,
     /* s = 0/8: node 60 y */
-    0x1.2e68b6p-59f, -0x1.51130cp-51f, 0x1.f6a594p-3f, 0x1.6de86ep-51f,
+    0x1.fb7e4cp-58f, 0x1.222f4ep-52f, 0x1.f6a594p-3f, 0x1.11efa6p-47f,
     /* s = 0/8: node 60 z */
-    -0x1.e66666p-56f, 0x1.dc8cb2p-4f, -0x1.51406cp-47f, 0x1.a9048ap+0f,
+    -0x1.e66666p-56f, 0x1.dc8cb2p-4f, 0x1.02e50ep-48f, 0x1.a9048ap+0f,
     /* s = 0/8: node 61 x */
-    -0x1.674794p-55f, 0x1.9f36a6p-1f, 0x1.4454dcp-54f, -0x1.880dep-46f,
+    -0x1.02a528p-54f, 0x1.9f36a6p-1f, 0x1.f3321cp-51f, 0x1.d54f28p-49f,
     /* s = 0/8: node 61 y */
-    0x1.9f381cp-60f, 0x1.81bbc2p-52f, 0x1.9f36a6p-1f, -0x1.e6c146p-47f,
+    0x1.e91314p-57f, 0x1.9fd046p-51f, 0x1.9f36a6p-1f, 0x1.300b44p-50f,
     /* s = 0/8: node 61 z */
-    -0x1.4cccccp-55f, -0x1.56ed98p-46f, -0x1.677392p-47f, 0x1.21f5f2p+1f,
+    -0x1.b33334p-56f, 0x1.391cep-49f, 0x1.7d6cfep-49f, 0x1.21f5f2p+1f,
     /* s = 0/8: node 62 x */
-    -0x1.e9999ap-56f, 0x1.90b0e2p-2f, -0x1.e28d34p-51f, 0x1.7b8ea8p-3f,
+    -0x1p-57f, 0x1.90b0e2p-2f, -0x1.e89284p-52f, 0x1.7b8ea8p-3f,
     /* s = 0/8: node 62 y */
-    0x1.7978ecp-58f, -0x1.7e31dp-54f, 0x1.f6a594p-3f, -0x1.917e58p-50f,
+    0x1.604558p-61f, -0x1.b6d0e6p-54f, 0x1.f6a594p-3f, 0x1.fc101p-49f,
     /* s = 0/8: node 62 z */
-    -0x1.99999ap-59f, -0x1.dc8cb2p-4f, -0x1.72c87p-47f, 0x1.a9048ap+0f,
+    -0x1.99999ap-58f, -0x1.dc8cb2p-4f, 0x1.59c91ep-51f, 0x1.a9048ap+0f,
     /* s = 0/8: node 63 x */
-    -0x1.f9999ap-57f, 0x1.1cef14p-3f, -0x1.ebff6p-50f, 0x1.13f6e6p-2f,
+    -0x1.b9999ap-57f, 0x1.1cef14p-3f, 0x1.5364cep-51f, 0x1.13f6e6p-2f,
     /* s = 0/8: node 63 y */
-    0x1.94303ap-64f, 0x1.33c4b6p-50f, 0x1.f67cd6p-4f, -0x1.0fc92ap-46f,
+    0x1.56c202p-59f, 0x1.dd85a6p-51f, 0x1.f67cd6p-4f, -0x1.6e4d34p-48f,
     /* s = 0/8: node 63 z */
-    -0x1.ccccccp-57f, -0x1.2b17aap-3f, -0x1.256184p-47f, 0x1.28a008p+0f,
+    0x1.99999ap-58f, -0x1.2b17aap-3f, 0x1.3e90d8p-51f, 0x1.28a008p+0f,
     /* s = 0/8: node 64 x */
-    -0x1.19999ap-57f, 0x1.cb5266p-5f, -0x1.bb24e8p-50f, 0x1.effd1p-3f,
+    -0x1.ccccccp-58f, 0x1.cb5266p-5f, 0x1.c696fp-55f, 0x1.effd1p-3f,
     /* s = 0/8: node 64 y */
-    0x1.6ae0e6p-60f, -0x1.dd1468p-53f, 0x1.0b41c6p-5f, -0x1.607bap-49f,
+    -0x1.e5ee7cp-62f, -0x1.7ccfeep-51f, 0x1.0b41c6p-5f, 0x1.b69a54p-49f,
     /* s = 0/8: node 64 z */
-    -0x1.333334p-58f, -0x1.71be1cp-4f, -0x1.741452p-48f, 0x1.30c2aap-1f,
+    0x1.0cccccp-57f, -0x1.71be1cp-4f, -0x1.561d7ep-53f, 0x1.30c2aap-1f,
     /* s = 0/8: node 65 x */
-    -0x1.ccccccp-59f, 0x1.9e9d14p-9f, -0x1.4e350ap-50f, 0x1.1bd3d2p-3f,
+    -0x1.0cccccp-59f, 0x1.9e9d14p-9f, -0x1.d50098p-53f, 0x1.1bd3d2p-3f,
     /* s = 0/8: node 65 y */
-    -0x1.56c79cp-67f, 0x1.7871a8p-53f, 0x1.7219b6p-7f, -0x1.f395bap-49f,
+    -0x1.0a44b8p-65f, -0x1.3155ep-53f, 0x1.7219b6p-7f, 0x1.e922dep-53f,
     /* s = 0/8: node 65 z */
-    -0x1.ccccccp-60f, -0x1.ebcc6ep-6f, -0x1.ef84bap-50f, 0x1.e37e22p-3f,
+    0x1.333334p-61f, -0x1.ebcc6ep-6f, 0x1.951f04p-52f, 0x1.e37e22p-3f,
     /* s = 0/8: node 66 x */
-    0x1.ccccccp-67f, -0x1.b8abc8p-13f, -0x1.2d68ep-57f, 0x1.1ae752p-11f,
+    -0x1.666666p-69f, -0x1.b8abc8p-13f, 0x1.5c7ba6p-59f, 0x1.1ae752p-11f,
     /* s = 0/8: node 66 y */
-    0x1.d617b6p-69f, 0x1.96fe7ep-57f, 0x1.c8ffecp-13f, -0x1.9ec88ap-54f,
+    -0x1.81ba88p-74f, 0x1.8825c8p-59f, 0x1.c8ffecp-13f, -0x1.8021d8p-57f,
     /* s = 0/8: node 66 z */
-    -0x1.4p-67f, 0x1.de0a18p-13f, -0x1.f86872p-58f, 0x1.002676p-11f,
+    -0x1.533334p-65f, 0x1.de0a18p-13f, -0x1.53d9bcp-59f, 0x1.002676p-11f,
     /* s = 0/8: node 67 x */
-    0x1.8p-66f, -0x1.df8c4ep-13f, 0x1.52b658p-15f, -0x1.3c25ecp-11f,
+    0x1.066666p-66f, -0x1.df8c4ep-13f, 0x1.52b658p-15f, -0x1.3c25ecp-11f,
     /* s = 0/8: node 67 y */
-    -0x1.0cccccp-67f, 0x1.6786e2p-14f, 0x1.5e447cp-16f, 0x1.463728p-12f,
+    -0x1.8cccccp-67f, 0x1.6786e2p-14f, 0x1.5e447cp-16f, 0x1.463728p-12f,
     /* s = 0/8: node 67 z */
-    0x1.733334p-67f, -0x1.a8f25ep-13f, 0x1.883cbcp-15f, 0x1.863e9p-12f,
+    0x1.99999ap-67f, -0x1.a8f25ep-13f, 0x1.883cbcp-15f, 0x1.863e9p-12f,
     /* s = 0/8: node 68 x */
-    0x1.e66666p-60f, 0x1.2ecaeep-7f, 0x1.568a0ap-9f, -0x1.e593bp-4f,
+    -0x1.4cccccp-60f, 0x1.2ecaeep-7f, 0x1.568a0ap-9f, -0x1.e593bp-4f,
     /* s = 0/8: node 68 y */
-    -0x1p-62f, -0x1.9ec162p-8f, 0x1.cb6a96p-8f, 0x1.d69a1p-6f,
+    0x1.19999ap-62f, -0x1.9ec162p-8f, 0x1.cb6a96p-8f, 0x1.d69a1p-6f,
     /* s = 0/8: node 68 z */
-    -0x1.4p-58f, 0x1.8c855ap-6f, -0x1.30feaep-7f, 0x1.a74baep-3f,
+    -0x1p-59f, 0x1.8c855ap-6f, -0x1.30feaep-7f, 0x1.a74baep-3f,
     /* s = 0/8: node 69 x */
-    -0x1.333334p-59f, 0x1.45afa6p-5f, -0x1.24fafap-7f, -0x1.ca80eap-3f,
+    0x1.333334p-60f, 0x1.45afa6p-5f, -0x1.24fafap-7f, -0x1.ca80eap-3f,
     /* s = 0/8: node 69 y */
-    0x1.99999ap-62f, -0x1.9ca258p-7f, 0x1.3034p-5f, 0x1.f8fd3p-5f,
+    0x1p-61f, -0x1.9ca258p-7f, 0x1.3034p-5f, 0x1.f8fd3p-5f,
     /* s = 0/8: node 69 z */
-    -0x1p-57f, 0x1.48877p-4f, -0x1.b2da2p-6f, 0x1.151536p-1f,
+    -0x1.4cccccp-57f, 0x1.48877p-4f, -0x1.b2da2p-6f, 0x1.151536p-1f,
     /* s = 0/8: node 70 x */
-    -0x1.19999ap-59f, 0x1.d5fe18p-4f, -0x1.3d6b5ep-7f, -0x1.e10136p-3f,
+    -0x1.333334p-61f, 0x1.d5fe18p-4f, -0x1.3d6b5ep-7f, -0x1.e10136p-3f,
     /* s = 0/8: node 70 y */
-    -0x1.333334p-61f, -0x1.79a49p-7f, 0x1.7912aap-4f, 0x1.ea369cp-4f,
+    -0x1.b33334p-60f, -0x1.79a49p-7f, 0x1.7912aap-4f, 0x1.ea369cp-4f,
     /* s = 0/8: node 70 z */
-    -0x1.8p-57f, 0x1.f6f56ep-4f, -0x1.13df06p-4f, 0x1.042886p+0f,
+    -0x1.4cccccp-56f, 0x1.f6f56ep-4f, -0x1.13df06p-4f, 0x1.042886p+0f,
     /* s = 0/8: node 71 x */
-    -0x1.8cccccp-56f, 0x1.ae2314p-3f, -0x1.df0efep-5f, -0x1.3c5918p-3f,
+    -0x1.01999ap-56f, 0x1.ae2314p-3f, -0x1.df0efep-5f, -0x1.3c5918p-3f,
     /* s = 0/8: node 71 y */
-    0x1.ecccccp-58f, -0x1.df0efep-5f, 0x1.ae2314p-3f, 0x1.3c5918p-3f,
+    0x1.2cccccp-58f, -0x1.df0efep-5f, 0x1.ae2314p-3f, 0x1.3c5918p-3f,
     /* s = 0/8: node 71 z */
-    -0x1.a66666p-56f, 0x1.6cf776p-4f, -0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
+    -0x1.333334p-55f, 0x1.6cf776p-4f, -0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
     /* s = 0/8: node 72 x */
-    -0x1.097b38p-57f, 0x1.f6a594p-3f, 0x1.70d75cp-51f, -0x1.26dbc4p-46f,
+    -0x1.0f05ecp-56f, 0x1.f6a594p-3f, -0x1.33cc7ep-49f, 0x1.175c72p-48f,
     /* s = 0/8: node 72 y */
-    -0x1.333334p-61f, -0x1.16aefep-49f, 0x1.90b0e2p-2f, 0x1.7b8ea8p-3f,
+    0x1.f9999ap-58f, 0x1.c8829cp-53f, 0x1.90b0e2p-2f, 0x1.7b8ea8p-3f,
     /* s = 0/8: node 72 z */
-    -0x1p-55f, -0x1.3eb3eep-46f, -0x1.dc8cb2p-4f, 0x1.a9048ap+0f,
+    -0x1.333334p-56f, 0x1.c5314ap-49f, -0x1.dc8cb2p-4f, 0x1.a9048ap+0f,
     /* s = 0/8: node 73 x */
-    -0x1.2e6666p-56f, 0x1.ae2314p-3f, 0x1.df0efep-5f, 0x1.3c5918p-3f,
+    -0x1.b4ccccp-56f, 0x1.ae2314p-3f, 0x1.df0efep-5f, 0x1.3c5918p-3f,
     /* s = 0/8: node 73 y */
-    -0x1.8p-60f, 0x1.df0efep-5f, 0x1.ae2314p-3f, 0x1.3c5918p-3f,
+    -0x1p-59f, 0x1.df0efep-5f, 0x1.ae2314p-3f, 0x1.3c5918p-3f,
     /* s = 0/8: node 73 z */
-    -0x1p-58f, -0x1.6cf776p-4f, -0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
+    -0x1.333334p-58f, -0x1.6cf776p-4f, -0x1.6cf776p-4f, 0x1.6fb9a6p+0f,
     /* s = 0/8: node 74 x */
-    -0x1.d33334p-57f, 0x1.d5fe18p-4f, 0x1.3d6b5ep-7f, 0x1.e10136p-3f,
+    -0x1.59999ap-58f, 0x1.d5fe18p-4f, 0x1.3d6b5ep-7f, 0x1.e10136p-3f,
     /* s = 0/8: node 74 y */
-    -0x1.333334p-60f, 0x1.79a49p-7f, 0x1.7912aap-4f, 0x1.ea369cp-4f,
+    -0x1.733334p-59f, 0x1.79a49p-7f, 0x1.7912aap-4f, 0x1.ea369cp-4f,
     /* s = 0/8: node 74 z */
-    -0x0p+0f, -0x1.f6f56ep-4f, -0x1.13df06p-4f, 0x1.042886p+0f,
+    -0x1.99999ap-60f, -0x1.f6f56ep-4f, -0x1.13df06p-4f, 0x1.042886p+0f,
     /* s = 0/8: node 75 x */
-    -0x1.19999ap-58f, 0x1.45afa6p-5f, 0x1.24fafap-7f, 0x1.ca80eap-3f,
+    -0x1.4cccccp-57f, 0x1.45afa6p-5f, 0x1.24fafap-7f, 0x1.ca80eap-3f,
     /* s = 0/8: node 75 y */
-    -0x1.733334p-60f, 0x1.9ca258p-7f, 0x1.3034p-5f, 0x1.f8fd3p-5f,
+    -0x1.ccccccp-60f, 0x1.9ca258p-7f, 0x1.3034p-5f, 0x1.f8fd3p-5f,
     /* s = 0/8: node 75 z */
-    -0x1.4cccccp-58f, -0x1.48877p-4f, -0x1.b2da2p-6f, 0x1.151536p-1f,
+    0x1p-58f, -0x1.48877p-4f, -0x1.b2da2p-6f, 0x1.151536p-1f,
     /* s = 0/8: node 76 x */
-    -0x1.4cccccp-59f, 0x1.2ecaeep-7f, -0x1.568a0ap-9f, 0x1.e593bp-4f,
+    -0x1.0cccccp-59f, 0x1.2ecaeep-7f, -0x1.568a0ap-9f, 0x1.e593bp-4f,
     /* s = 0/8: node 76 y */
-    -0x1.4cccccp-60f, 0x1.9ec162p-8f, 0x1.cb6a96p-8f, 0x1.d69a1p-6f,
+    -0x1.666666p-61f, 0x1.9ec162p-8f, 0x1.cb6a96p-8f, 0x1.d69a1p-6f,
     /* s = 0/8: node 76 z */
-    -0x1.99999ap-63f, -0x1.8c855ap-6f, -0x1.30feaep-7f, 0x1.a74baep-3f,
+    -0x1.b33334p-59f, -0x1.8c855ap-6f, -0x1.30feaep-7f, 0x1.a74baep-3f,
     /* s = 0/8: node 77 x */
-    0x1.f33334p-67f, -0x1.df8c4ep-13f, -0x1.52b658p-15f, 0x1.3c25ecp-11f,
+    0x1.d9999ap-67f, -0x1.df8c4ep-13f, -0x1.52b658p-15f, 0x1.3c25ecp-11f,
     /* s = 0/8: node 77 y */
-    0x1.b33334p-69f, -0x1.6786e2p-14f, 0x1.5e447cp-16f, 0x1.463728p-12f,
+    0x1.666666p-70f, -0x1.6786e2p-14f, 0x1.5e447cp-16f, 0x1.463728p-12f,
     /* s = 0/8: node 77 z */
-    -0x1.4p-66f, 0x1.a8f25ep-13f, 0x1.883cbcp-15f, 0x1.863e9p-12f,
+    -0x1.ecccccp-66f, 0x1.a8f25ep-13f, 0x1.883cbcp-15f, 0x1.863e9p-12f,
     /* s = 0/8: node 78 x */
-    0x1.99999ap-67f, -0x1.ecc526p-14f, 0x1.c5b548p-14f, -0x1.a5a7dcp-12f,
+    0x1.533334p-66f, -0x1.ecc526p-14f, 0x1.c5b548p-14f, -0x1.a5a7dcp-12f,
     /* s = 0/8: node 78 y */
-    -0x1.b33334p-68f, 0x1.45b1f2p-14f, 0x1.d911e2p-20f, 0x1.c033dap-12f,
+    -0x1p-67f, 0x1.45b1f2p-14f, 0x1.d911e2p-20f, 0x1.c033dap-12f,
     /* s = 0/8: node 78 z */
-    0x1.4cccccp-67f, -0x1.5b4e98p-13f, 0x1.86532ep-14f, 0x1.355c04p-12f,
+    0x1p-68f, -0x1.5b4e98p-13f, 0x1.86532ep-14f, 0x1.355c04p-12f,
     /* s = 0/8: node 79 x */
-    0x1.0cccccp-60f, 0x1.449736p-8f, -0x1.bbfcecp-9f, -0x1.65f59p-4f,
+    0x1p-62f, 0x1.449736p-8f, -0x1.bbfcecp-9f, -0x1.65f59p-4f,
     /* s = 0/8: node 79 y */
-    0x1.99999ap-63f, -0x1.66d156p-7f, 0x1.7e6f72p-8f, 0x1.650b5ep-5f,
+    -0x1.4cccccp-61f, -0x1.66d156p-7f, 0x1.7e6f72p-8f, 0x1.650b5ep-5f,
     /* s = 0/8: node 79 z */
-    -0x1.a66666p-59f, 0x1.bc7476p-7f, -0x1.18063cp-7f, 0x1.2c3ceep-3f,
+    -0x1.99999ap-59f, 0x1.bc7476p-7f, -0x1.18063cp-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 80 x */
-    0x1.99999ap-62f, 0x1.7de47ep-6f, -0x1.43bb06p-8f, -0x1.5893aep-3f,
+    0x1p-61f, 0x1.7de47ep-6f, -0x1.43bb06p-8f, -0x1.5893aep-3f,
     /* s = 0/8: node 80 y */
-    -0x1p-61f, -0x1.62d7c2p-7f, 0x1.965cd4p-6f, 0x1.95f4d2p-4f,
+    -0x1.333334p-61f, -0x1.62d7c2p-7f, 0x1.965cd4p-6f, 0x1.95f4d2p-4f,
     /* s = 0/8: node 80 z */
-    -0x1.333334p-57f, 0x1.bfac0ep-5f, -0x1.3fa76ap-5f, 0x1.943ae2p-2f,
+    -0x1.266666p-57f, 0x1.bfac0ep-5f, -0x1.3fa76ap-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 81 x */
-    -0x1.ccccccp-60f, 0x1.f1d39ap-5f, -0x1.1cca0cp-6f, -0x1.584b0ep-3f,
+    -0x1.99999ap-63f, 0x1.f1d39ap-5f, -0x1.1cca0cp-6f, -0x1.584b0ep-3f,
     /* s = 0/8: node 81 y */
-    -0x1.666666p-61f, -0x1.1cca0cp-6f, 0x1.f1d39ap-5f, 0x1.584b0ep-3f,
+    -0x1.19999ap-59f, -0x1.1cca0cp-6f, 0x1.f1d39ap-5f, 0x1.584b0ep-3f,
     /* s = 0/8: node 81 z */
-    -0x1.4cccccp-56f, 0x1.3e2048p-4f, -0x1.3e2048p-4f, 0x1.766db6p-1f,
+    -0x1.2cccccp-56f, 0x1.3e2048p-4f, -0x1.3e2048p-4f, 0x1.766db6p-1f,
     /* s = 0/8: node 82 x */
-    -0x1.ccccccp-59f, 0x1.7912aap-4f, -0x1.79a49p-7f, -0x1.ea369cp-4f,
+    -0x1.8p-58f, 0x1.7912aap-4f, -0x1.79a49p-7f, -0x1.ea369cp-4f,
     /* s = 0/8: node 82 y */
-    -0x1.ccccccp-59f, -0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, 0x1.e10136p-3f,
+    -0x0p+0f, -0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, 0x1.e10136p-3f,
     /* s = 0/8: node 82 z */
-    -0x1.e66666p-57f, 0x1.13df06p-4f, -0x1.f6f56ep-4f, 0x1.042886p+0f,
+    -0x1.8p-56f, 0x1.13df06p-4f, -0x1.f6f56ep-4f, 0x1.042886p+0f,
     /* s = 0/8: node 83 x */
-    -0x1.b3113cp-57f, 0x1.f67cd6p-4f, 0x1.2123dep-51f, -0x1.6f1ff8p-47f,
+    -0x1.0fa42ep-58f, 0x1.f67cd6p-4f, -0x1.760beep-52f, 0x1.c9966p-49f,
     /* s = 0/8: node 83 y */
-    -0x1.19999ap-59f, -0x1.962316p-49f, 0x1.1cef14p-3f, 0x1.13f6e6p-2f,
+    0x1.99999ap-61f, 0x1.4b52e4p-51f, 0x1.1cef14p-3f, 0x1.13f6e6p-2f,
     /* s = 0/8: node 83 z */
-    -0x1.19999ap-56f, -0x1.fcdc32p-47f, -0x1.2b17aap-3f, 0x1.28a008p+0f,
+    -0x1.99999ap-57f, 0x1.074fcep-49f, -0x1.2b17aap-3f, 0x1.28a008p+0f,
     /* s = 0/8: node 84 x */
-    -0x1.4p-58f, 0x1.7912aap-4f, 0x1.79a49p-7f, 0x1.ea369cp-4f,
+    -0x1.49999ap-57f, 0x1.7912aap-4f, 0x1.79a49p-7f, 0x1.ea369cp-4f,
     /* s = 0/8: node 84 y */
-    -0x1.4p-58f, 0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, 0x1.e10136p-3f,
+    -0x1.b33334p-58f, 0x1.3d6b5ep-7f, 0x1.d5fe18p-4f, 0x1.e10136p-3f,
     /* s = 0/8: node 84 z */
-    0x1.99999ap-60f, -0x1.13df06p-4f, -0x1.f6f56ep-4f, 0x1.042886p+0f,
+    -0x0p+0f, -0x1.13df06p-4f, -0x1.f6f56ep-4f, 0x1.042886p+0f,
     /* s = 0/8: node 85 x */
-    -0x1.e66666p-58f, 0x1.f1d39ap-5f, 0x1.1cca0cp-6f, 0x1.584b0ep-3f,
+    -0x1.666666p-57f, 0x1.f1d39ap-5f, 0x1.1cca0cp-6f, 0x1.584b0ep-3f,
     /* s = 0/8: node 85 y */
-    -0x1.8p-59f, 0x1.1cca0cp-6f, 0x1.f1d39ap-5f, 0x1.584b0ep-3f,
+    -0x1.4cccccp-60f, 0x1.1cca0cp-6f, 0x1.f1d39ap-5f, 0x1.584b0ep-3f,
     /* s = 0/8: node 85 z */
-    -0x1.333334p-60f, -0x1.3e2048p-4f, -0x1.3e2048p-4f, 0x1.766db6p-1f,
+    -0x1p-58f, -0x1.3e2048p-4f, -0x1.3e2048p-4f, 0x1.766db6p-1f,
     /* s = 0/8: node 86 x */
-    -0x1.2cccccp-58f, 0x1.7de47ep-6f, 0x1.43bb06p-8f, 0x1.5893aep-3f,
+    -0x1.6cccccp-58f, 0x1.7de47ep-6f, 0x1.43bb06p-8f, 0x1.5893aep-3f,
     /* s = 0/8: node 86 y */
-    0x1.333334p-62f, 0x1.62d7c2p-7f, 0x1.965cd4p-6f, 0x1.95f4d2p-4f,
+    -0x1.ccccccp-60f, 0x1.62d7c2p-7f, 0x1.965cd4p-6f, 0x1.95f4d2p-4f,
     /* s = 0/8: node 86 z */
-    -0x1.ccccccp-59f, -0x1.bfac0ep-5f, -0x1.3fa76ap-5f, 0x1.943ae2p-2f,
+    -0x1.333334p-60f, -0x1.bfac0ep-5f, -0x1.3fa76ap-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 87 x */
-    -0x1p-62f, 0x1.449736p-8f, 0x1.bbfcecp-9f, 0x1.65f59p-4f,
+    -0x1.8cccccp-60f, 0x1.449736p-8f, 0x1.bbfcecp-9f, 0x1.65f59p-4f,
     /* s = 0/8: node 87 y */
-    -0x1.4cccccp-60f, 0x1.66d156p-7f, 0x1.7e6f72p-8f, 0x1.650b5ep-5f,
+    -0x1.6p-60f, 0x1.66d156p-7f, 0x1.7e6f72p-8f, 0x1.650b5ep-5f,
     /* s = 0/8: node 87 z */
-    -0x1p-60f, -0x1.bc7476p-7f, -0x1.18063cp-7f, 0x1.2c3ceep-3f,
+    -0x1.666666p-60f, -0x1.bc7476p-7f, -0x1.18063cp-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 88 x */
-    0x1.4p-67f, -0x1.ecc526p-14f, -0x1.c5b548p-14f, 0x1.a5a7dcp-12f,
+    0x1.333334p-68f, -0x1.ecc526p-14f, -0x1.c5b548p-14f, 0x1.a5a7dcp-12f,
     /* s = 0/8: node 88 y */
-    -0x1.99999ap-72f, -0x1.45b1f2p-14f, 0x1.d911e2p-20f, 0x1.c033dap-12f,
+    -0x1.99999ap-71f, -0x1.45b1f2p-14f, 0x1.d911e2p-20f, 0x1.c033dap-12f,
     /* s = 0/8: node 88 z */
-    -0x1.99999ap-66f, 0x1.5b4e98p-13f, 0x1.86532ep-14f, 0x1.355c04p-12f,
+    -0x1.59999ap-67f, 0x1.5b4e98p-13f, 0x1.86532ep-14f, 0x1.355c04p-12f,
     /* s = 0/8: node 89 x */
-    0x1.f33334p-68f, -0x1.02c01ap-14f, 0x1.d8ce6ap-15f, -0x1.0380dp-12f,
+    0x1.2cccccp-67f, -0x1.02c01ap-14f, 0x1.d8ce6ap-15f, -0x1.0380dp-12f,
     /* s = 0/8: node 89 y */
-    -0x1.4p-67f, 0x1.730178p-14f, -0x1.83b4acp-15f, 0x1.de3dep-12f,
+    -0x1.666666p-67f, 0x1.730178p-14f, -0x1.83b4acp-15f, 0x1.de3dep-12f,
     /* s = 0/8: node 89 z */
-    -0x1.99999ap-73f, -0x1.108e6ep-13f, 0x1.f398c2p-14f, 0x1.cfedf6p-13f,
+    0x1.a66666p-67f, -0x1.108e6ep-13f, 0x1.f398c2p-14f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 90 x */
-    0x1.99999ap-63f, 0x1.5c48e4p-9f, -0x1.5e465cp-9f, -0x1.a3fc74p-5f,
+    0x1.4p-60f, 0x1.5c48e4p-9f, -0x1.5e465cp-9f, -0x1.a3fc74p-5f,
     /* s = 0/8: node 90 y */
-    -0x0p+0f, -0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, 0x1.63c7a4p-5f,
+    0x1.99999ap-65f, -0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, 0x1.63c7a4p-5f,
     /* s = 0/8: node 90 z */
-    -0x1.666666p-60f, 0x1.e0649p-9f, -0x1.b6544p-9f, 0x1.29793ep-4f,
+    -0x1p-61f, 0x1.e0649p-9f, -0x1.b6544p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 91 x */
-    -0x1.99999ap-64f, 0x1.46fe3ap-7f, -0x1.2f09e4p-7f, -0x1.933c56p-4f,
+    -0x1p-61f, 0x1.46fe3ap-7f, -0x1.2f09e4p-7f, -0x1.933c56p-4f,
     /* s = 0/8: node 91 y */
-    0x1.99999ap-62f, -0x1.2f09e4p-7f, 0x1.46fe3ap-7f, 0x1.933c56p-4f,
+    -0x0p+0f, -0x1.2f09e4p-7f, 0x1.46fe3ap-7f, 0x1.933c56p-4f,
     /* s = 0/8: node 91 z */
-    -0x1p-58f, 0x1.a1b93p-6f, -0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
+    -0x1.d9999ap-58f, 0x1.a1b93p-6f, -0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
     /* s = 0/8: node 92 x */
-    0x1.ccccccp-61f, 0x1.965cd4p-6f, -0x1.62d7c2p-7f, -0x1.95f4d2p-4f,
+    -0x1p-60f, 0x1.965cd4p-6f, -0x1.62d7c2p-7f, -0x1.95f4d2p-4f,
     /* s = 0/8: node 92 y */
-    -0x1.99999ap-60f, -0x1.43bb06p-8f, 0x1.7de47ep-6f, 0x1.5893aep-3f,
+    -0x1.b33334p-60f, -0x1.43bb06p-8f, 0x1.7de47ep-6f, 0x1.5893aep-3f,
     /* s = 0/8: node 92 z */
-    -0x1.8p-58f, 0x1.3fa76ap-5f, -0x1.bfac0ep-5f, 0x1.943ae2p-2f,
+    -0x1.333334p-57f, 0x1.3fa76ap-5f, -0x1.bfac0ep-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 93 x */
-    -0x1.666666p-61f, 0x1.3034p-5f, -0x1.9ca258p-7f, -0x1.f8fd3p-5f,
+    -0x1.99999ap-64f, 0x1.3034p-5f, -0x1.9ca258p-7f, -0x1.f8fd3p-5f,
     /* s = 0/8: node 93 y */
-    -0x1.0cccccp-58f, -0x1.24fafap-7f, 0x1.45afa6p-5f, 0x1.ca80eap-3f,
+    -0x1.333334p-59f, -0x1.24fafap-7f, 0x1.45afa6p-5f, 0x1.ca80eap-3f,
     /* s = 0/8: node 93 z */
-    -0x1.e66666p-57f, 0x1.b2da2p-6f, -0x1.48877p-4f, 0x1.151536p-1f,
+    -0x1.8p-57f, 0x1.b2da2p-6f, -0x1.48877p-4f, 0x1.151536p-1f,
     /* s = 0/8: node 94 x */
-    -0x1.03b618p-58f, 0x1.0b41c6p-5f, 0x1.cef3a4p-51f, -0x1.ed7d28p-48f,
+    -0x1.0ed88ap-60f, 0x1.0b41c6p-5f, -0x1.57c53ep-51f, -0x1.a405e4p-53f,
     /* s = 0/8: node 94 y */
-    -0x1.666666p-58f, -0x1.e47d3ap-49f, 0x1.cb5266p-5f, 0x1.effd1p-3f,
+    -0x1.ccccccp-59f, 0x1.2580ap-52f, 0x1.cb5266p-5f, 0x1.effd1p-3f,
     /* s = 0/8: node 94 z */
-    -0x1.8cccccp-57f, -0x1.0922eep-47f, -0x1.71be1cp-4f, 0x1.30c2aap-1f,
+    -0x1.f33334p-57f, 0x1.c98168p-50f, -0x1.71be1cp-4f, 0x1.30c2aap-1f,
     /* s = 0/8: node 95 x */
-    -0x1.6cccccp-59f, 0x1.3034p-5f, 0x1.9ca258p-7f, 0x1.f8fd3p-5f,
+    -0x1.19999ap-59f, 0x1.3034p-5f, 0x1.9ca258p-7f, 0x1.f8fd3p-5f,
     /* s = 0/8: node 95 y */
-    -0x1.99999ap-59f, 0x1.24fafap-7f, 0x1.45afa6p-5f, 0x1.ca80eap-3f,
+    -0x1.266666p-58f, 0x1.24fafap-7f, 0x1.45afa6p-5f, 0x1.ca80eap-3f,
     /* s = 0/8: node 95 z */
-    -0x1.19999ap-57f, -0x1.b2da2p-6f, -0x1.48877p-4f, 0x1.151536p-1f,
+    -0x1.b33334p-58f, -0x1.b2da2p-6f, -0x1.48877p-4f, 0x1.151536p-1f,
     /* s = 0/8: node 96 x */
-    -0x1p-59f, 0x1.965cd4p-6f, 0x1.62d7c2p-7f, 0x1.95f4d2p-4f,
+    -0x1.733334p-58f, 0x1.965cd4p-6f, 0x1.62d7c2p-7f, 0x1.95f4d2p-4f,
     /* s = 0/8: node 96 y */
-    -0x1p-59f, 0x1.43bb06p-8f, 0x1.7de47ep-6f, 0x1.5893aep-3f,
+    -0x1.cp-59f, 0x1.43bb06p-8f, 0x1.7de47ep-6f, 0x1.5893aep-3f,
     /* s = 0/8: node 96 z */
     -0x1p-59f, -0x1.3fa76ap-5f, -0x1.bfac0ep-5f, 0x1.943ae2p-2f,
     /* s = 0/8: node 97 x */
-    -0x1.333334p-59f, 0x1.46fe3ap-7f, 0x1.2f09e4p-7f, 0x1.933c56p-4f,
+    -0x1.333334p-60f, 0x1.46fe3ap-7f, 0x1.2f09e4p-7f, 0x1.933c56p-4f,
     /* s = 0/8: node 97 y */
-    -0x1.19999ap-60f, 0x1.2f09e4p-7f, 0x1.46fe3ap-7f, 0x1.933c56p-4f,
+    -0x1.4cccccp-60f, 0x1.2f09e4p-7f, 0x1.46fe3ap-7f, 0x1.933c56p-4f,
     /* s = 0/8: node 97 z */
-    -0x1.19999ap-59f, -0x1.a1b93p-6f, -0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
+    -0x1.266666p-58f, -0x1.a1b93p-6f, -0x1.a1b93p-6f, 0x1.a9b3b6p-3f,
     /* s = 0/8: node 98 x */
-    -0x1.19999ap-61f, 0x1.5c48e4p-9f, 0x1.5e465cp-9f, 0x1.a3fc74p-5f,
+    -0x1.8p-61f, 0x1.5c48e4p-9f, 0x1.5e465cp-9f, 0x1.a3fc74p-5f,
     /* s = 0/8: node 98 y */
-    -0x1.c66666p-60f, 0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, 0x1.63c7a4p-5f,
+    -0x1.266666p-61f, 0x1.0a4e8ep-7f, 0x1.2e0d78p-9f, 0x1.63c7a4p-5f,
     /* s = 0/8: node 98 z */
-    -0x1.333334p-61f, -0x1.e0649p-9f, -0x1.b6544p-9f, 0x1.29793ep-4f,
+    -0x1.666666p-60f, -0x1.e0649p-9f, -0x1.b6544p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 99 x */
-    0x1.666666p-70f, -0x1.02c01ap-14f, -0x1.d8ce6ap-15f, 0x1.0380dp-12f,
+    0x1.99999ap-73f, -0x1.02c01ap-14f, -0x1.d8ce6ap-15f, 0x1.0380dp-12f,
     /* s = 0/8: node 99 y */
-    -0x1.666666p-69f, -0x1.730178p-14f, -0x1.83b4acp-15f, 0x1.de3dep-12f,
+    -0x1.ccccccp-68f, -0x1.730178p-14f, -0x1.83b4acp-15f, 0x1.de3dep-12f,
     /* s = 0/8: node 99 z */
-    -0x1.933334p-67f, 0x1.108e6ep-13f, 0x1.f398c2p-14f, 0x1.cfedf6p-13f,
+    -0x1.133334p-67f, 0x1.108e6ep-13f, 0x1.f398c2p-14f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 100 x */
-    0x1.933334p-69f, -0x1.04bec4p-15f, 0x1.f06ec8p-15f, -0x1.7c6312p-14f,
+    0x1.79999ap-69f, -0x1.04bec4p-15f, 0x1.f06ec8p-15f, -0x1.7c6312p-14f,
     /* s = 0/8: node 100 y */
-    -0x1.266666p-68f, 0x1.9c52c8p-16f, -0x1.bccfdep-16f, 0x1.884288p-13f,
+    -0x1.4cccccp-68f, 0x1.9c52c8p-16f, -0x1.bccfdep-16f, 0x1.884288p-13f,
     /* s = 0/8: node 100 z */
-    0x1.59999ap-69f, -0x1.843764p-14f, 0x1.6fece6p-14f, 0x1.43f49p-13f,
+    0x1.066666p-68f, -0x1.843764p-14f, 0x1.6fece6p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 101 x */
     0x1.333334p-64f, 0x1.41d23ap-9f, -0x1.4841bcp-8f, -0x1.576ab2p-6f,
     /* s = 0/8: node 101 y */
-    0x1.8p-62f, -0x1.4841bcp-8f, 0x1.41d23ap-9f, 0x1.576ab2p-6f,
+    0x1.99999ap-67f, -0x1.4841bcp-8f, 0x1.41d23ap-9f, 0x1.576ab2p-6f,
     /* s = 0/8: node 101 z */
-    0x1.ccccccp-63f, -0x1.4c894ep-8f, 0x1.4c894ep-8f, 0x1.6559d4p-6f,
+    0x1.666666p-62f, -0x1.4c894ep-8f, 0x1.4c894ep-8f, 0x1.6559d4p-6f,
     /* s = 0/8: node 102 x */
-    0x1.19999ap-61f, 0x1.2e0d78p-9f, -0x1.0a4e8ep-7f, -0x1.63c7a4p-5f,
+    0x1.666666p-63f, 0x1.2e0d78p-9f, -0x1.0a4e8ep-7f, -0x1.63c7a4p-5f,
     /* s = 0/8: node 102 y */
-    -0x1p-62f, -0x1.5e465cp-9f, 0x1.5c48e4p-9f, 0x1.a3fc74p-5f,
+    -0x1.19999ap-61f, -0x1.5e465cp-9f, 0x1.5c48e4p-9f, 0x1.a3fc74p-5f,
     /* s = 0/8: node 102 z */
-    -0x1.99999ap-65f, 0x1.b6544p-9f, -0x1.e0649p-9f, 0x1.29793ep-4f,
+    -0x1p-61f, 0x1.b6544p-9f, -0x1.e0649p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 103 x */
-    -0x1p-62f, 0x1.7e6f72p-8f, -0x1.66d156p-7f, -0x1.650b5ep-5f,
+    0x1.333334p-62f, 0x1.7e6f72p-8f, -0x1.66d156p-7f, -0x1.650b5ep-5f,
     /* s = 0/8: node 103 y */
-    -0x1.ccccccp-60f, -0x1.bbfcecp-9f, 0x1.449736p-8f, 0x1.65f59p-4f,
+    -0x1.4cccccp-61f, -0x1.bbfcecp-9f, 0x1.449736p-8f, 0x1.65f59p-4f,
     /* s = 0/8: node 103 z */
-    -0x1.ccccccp-59f, 0x1.18063cp-7f, -0x1.bc7476p-7f, 0x1.2c3ceep-3f,
+    -0x1.f33334p-59f, 0x1.18063cp-7f, -0x1.bc7476p-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 104 x */
-    -0x1.4p-61f, 0x1.cb6a96p-8f, -0x1.9ec162p-8f, -0x1.d69a1p-6f,
+    -0x1.0cccccp-61f, 0x1.cb6a96p-8f, -0x1.9ec162p-8f, -0x1.d69a1p-6f,
     /* s = 0/8: node 104 y */
-    -0x1.4p-59f, 0x1.568a0ap-9f, 0x1.2ecaeep-7f, 0x1.e593bp-4f,
+    -0x1.333334p-60f, 0x1.568a0ap-9f, 0x1.2ecaeep-7f, 0x1.e593bp-4f,
     /* s = 0/8: node 104 z */
-    -0x1.e66666p-59f, 0x1.30feaep-7f, -0x1.8c855ap-6f, 0x1.a74baep-3f,
+    -0x1.ccccccp-60f, 0x1.30feaep-7f, -0x1.8c855ap-6f, 0x1.a74baep-3f,
     /* s = 0/8: node 105 x */
-    -0x1.58d084p-60f, 0x1.7219b6p-7f, 0x1.580a88p-52f, -0x1.8911d4p-49f,
+    -0x1.508adp-61f, 0x1.7219b6p-7f, 0x1.616e32p-53f, -0x1.69ee8cp-51f,
     /* s = 0/8: node 105 y */
-    -0x1.99999ap-60f, -0x1.7f7bdp-50f, 0x1.9e9d14p-9f, 0x1.1bd3d2p-3f,
+    -0x1.99999ap-60f, 0x1.9d7322p-52f, 0x1.9e9d14p-9f, 0x1.1bd3d2p-3f,
     /* s = 0/8: node 105 z */
-    -0x1.19999ap-58f, -0x1.870aacp-49f, -0x1.ebcc6ep-6f, 0x1.e37e22p-3f,
+    -0x1.ccccccp-59f, 0x1.5c221ep-51f, -0x1.ebcc6ep-6f, 0x1.e37e22p-3f,
     /* s = 0/8: node 106 x */
-    -0x1.cp-61f, 0x1.cb6a96p-8f, 0x1.9ec162p-8f, 0x1.d69a1p-6f,
+    -0x1.8p-61f, 0x1.cb6a96p-8f, 0x1.9ec162p-8f, 0x1.d69a1p-6f,
     /* s = 0/8: node 106 y */
-    -0x1.0cccccp-59f, -0x1.568a0ap-9f, 0x1.2ecaeep-7f, 0x1.e593bp-4f,
+    -0x1.19999ap-60f, -0x1.568a0ap-9f, 0x1.2ecaeep-7f, 0x1.e593bp-4f,
     /* s = 0/8: node 106 z */
-    -0x1.e66666p-59f, -0x1.30feaep-7f, -0x1.8c855ap-6f, 0x1.a74baep-3f,
+    -0x1.4cccccp-59f, -0x1.30feaep-7f, -0x1.8c855ap-6f, 0x1.a74baep-3f,
     /* s = 0/8: node 107 x */
-    -0x1.99999ap-61f, 0x1.7e6f72p-8f, 0x1.66d156p-7f, 0x1.650b5ep-5f,
+    -0x1.d9999ap-61f, 0x1.7e6f72p-8f, 0x1.66d156p-7f, 0x1.650b5ep-5f,
     /* s = 0/8: node 107 y */
-    -0x1.8p-61f, 0x1.bbfcecp-9f, 0x1.449736p-8f, 0x1.65f59p-4f,
+    0x1p-62f, 0x1.bbfcecp-9f, 0x1.449736p-8f, 0x1.65f59p-4f,
     /* s = 0/8: node 107 z */
-    -0x1.666666p-60f, -0x1.18063cp-7f, -0x1.bc7476p-7f, 0x1.2c3ceep-3f,
+    -0x1.333334p-62f, -0x1.18063cp-7f, -0x1.bc7476p-7f, 0x1.2c3ceep-3f,
     /* s = 0/8: node 108 x */
-    -0x1.066666p-60f, 0x1.2e0d78p-9f, 0x1.0a4e8ep-7f, 0x1.63c7a4p-5f,
+    -0x1.333334p-62f, 0x1.2e0d78p-9f, 0x1.0a4e8ep-7f, 0x1.63c7a4p-5f,
     /* s = 0/8: node 108 y */
-    -0x1.666666p-60f, 0x1.5e465cp-9f, 0x1.5c48e4p-9f, 0x1.a3fc74p-5f,
+    -0x1.99999ap-61f, 0x1.5e465cp-9f, 0x1.5c48e4p-9f, 0x1.a3fc74p-5f,
     /* s = 0/8: node 108 z */
-    -0x1.666666p-61f, -0x1.b6544p-9f, -0x1.e0649p-9f, 0x1.29793ep-4f,
+    -0x1.99999ap-61f, -0x1.b6544p-9f, -0x1.e0649p-9f, 0x1.29793ep-4f,
     /* s = 0/8: node 109 x */
-    -0x1.266666p-62f, 0x1.41d23ap-9f, 0x1.4841bcp-8f, 0x1.576ab2p-6f,
+    -0x1.b33334p-62f, 0x1.41d23ap-9f, 0x1.4841bcp-8f, 0x1.576ab2p-6f,
     /* s = 0/8: node 109 y */
-    -0x1.466666p-61f, 0x1.4841bcp-8f, 0x1.41d23ap-9f, 0x1.576ab2p-6f,
+    -0x1.133334p-61f, 0x1.4841bcp-8f, 0x1.41d23ap-9f, 0x1.576ab2p-6f,
     /* s = 0/8: node 109 z */
-    -0x1.8cccccp-61f, 0x1.4c894ep-8f, 0x1.4c894ep-8f, 0x1.6559d4p-6f,
+    -0x1.8p-62f, 0x1.4c894ep-8f, 0x1.4c894ep-8f, 0x1.6559d4p-6f,
     /* s = 0/8: node 110 x */
-    -0x1.333334p-70f, -0x1.04bec4p-15f, -0x1.f06ec8p-15f, 0x1.7c6312p-14f,
+    0x1.e66666p-71f, -0x1.04bec4p-15f, -0x1.f06ec8p-15f, 0x1.7c6312p-14f,
     /* s = 0/8: node 110 y */
     -0x1.99999ap-71f, -0x1.9c52c8p-16f, -0x1.bccfdep-16f, 0x1.884288p-13f,
     /* s = 0/8: node 110 z */
-    -0x1.ep-68f, 0x1.843764p-14f, 0x1.6fece6p-14f, 0x1.43f49p-13f,
+    -0x1.19999ap-67f, 0x1.843764p-14f, 0x1.6fece6p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 111 x */
-    -0x1.666666p-71f, -0x1.0f7b9p-21f, 0x1.58289ep-15f, 0x1.af27cap-14f,
+    -0x1.0cccccp-69f, -0x1.0f7b9p-21f, 0x1.58289ep-15f, 0x1.af27cap-14f,
     /* s = 0/8: node 111 y */
-    -0x1.333334p-70f, 0x1.58289ep-15f, -0x1.0f7b9p-21f, -0x1.af27cap-14f,
+    -0x1.666666p-71f, 0x1.58289ep-15f, -0x1.0f7b9p-21f, -0x1.af27cap-14f,
     /* s = 0/8: node 111 z */
-    -0x1.ad3334p-68f, 0x1.243682p-14f, -0x1.243682p-14f, 0x1.593ab6p-17f,
+    -0x1.71999ap-70f, 0x1.243682p-14f, -0x1.243682p-14f, 0x1.593ab6p-17f,
     /* s = 0/8: node 112 x */
-    0x1.19999ap-68f, -0x1.bccfdep-16f, 0x1.9c52c8p-16f, -0x1.884288p-13f,
+    0x1p-69f, -0x1.bccfdep-16f, 0x1.9c52c8p-16f, -0x1.884288p-13f,
     /* s = 0/8: node 112 y */
-    -0x1.266666p-67f, 0x1.f06ec8p-15f, -0x1.04bec4p-15f, 0x1.7c6312p-14f,
+    -0x1.666666p-70f, 0x1.f06ec8p-15f, -0x1.04bec4p-15f, 0x1.7c6312p-14f,
     /* s = 0/8: node 112 z */
-    0x1.ap-68f, -0x1.6fece6p-14f, 0x1.843764p-14f, 0x1.43f49p-13f,
+    0x1.29999ap-67f, -0x1.6fece6p-14f, 0x1.843764p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 113 x */
-    0x1.133334p-66f, -0x1.83b4acp-15f, 0x1.730178p-14f, -0x1.de3dep-12f,
+    0x1p-66f, -0x1.83b4acp-15f, 0x1.730178p-14f, -0x1.de3dep-12f,
     /* s = 0/8: node 113 y */
-    -0x1.39999ap-67f, 0x1.d8ce6ap-15f, -0x1.02c01ap-14f, 0x1.0380dp-12f,
+    -0x1.b33334p-67f, 0x1.d8ce6ap-15f, -0x1.02c01ap-14f, 0x1.0380dp-12f,
     /* s = 0/8: node 113 z */
-    0x1.b33334p-69f, -0x1.f398c2p-14f, 0x1.108e6ep-13f, 0x1.cfedf6p-13f,
+    0x1.99999ap-69f, -0x1.f398c2p-14f, 0x1.108e6ep-13f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 114 x */
-    0x1.4cccccp-68f, 0x1.d911e2p-20f, 0x1.45b1f2p-14f, -0x1.c033dap-12f,
+    0x1.4cccccp-67f, 0x1.d911e2p-20f, 0x1.45b1f2p-14f, -0x1.c033dap-12f,
     /* s = 0/8: node 114 y */
-    -0x1.8p-67f, 0x1.c5b548p-14f, -0x1.ecc526p-14f, 0x1.a5a7dcp-12f,
+    -0x1.4cccccp-67f, 0x1.c5b548p-14f, -0x1.ecc526p-14f, 0x1.a5a7dcp-12f,
     /* s = 0/8: node 114 z */
-    0x1.266666p-68f, -0x1.86532ep-14f, 0x1.5b4e98p-13f, 0x1.355c04p-12f,
+    0x1p-70f, -0x1.86532ep-14f, 0x1.5b4e98p-13f, 0x1.355c04p-12f,
     /* s = 0/8: node 115 x */
-    0x1.733334p-68f, 0x1.5e447cp-16f, 0x1.6786e2p-14f, -0x1.463728p-12f,
+    0x1.99999ap-69f, 0x1.5e447cp-16f, 0x1.6786e2p-14f, -0x1.463728p-12f,
     /* s = 0/8: node 115 y */
-    -0x1.a66666p-67f, 0x1.52b658p-15f, -0x1.df8c4ep-13f, 0x1.3c25ecp-11f,
+    -0x1.d9999ap-67f, 0x1.52b658p-15f, -0x1.df8c4ep-13f, 0x1.3c25ecp-11f,
     /* s = 0/8: node 115 z */
-    0x1.733334p-68f, -0x1.883cbcp-15f, 0x1.a8f25ep-13f, 0x1.863e9p-12f,
+    -0x1.4p-68f, -0x1.883cbcp-15f, 0x1.a8f25ep-13f, 0x1.863e9p-12f,
     /* s = 0/8: node 116 x */
-    -0x1.64bd7cp-66f, 0x1.c8ffecp-13f, -0x1.f69a36p-60f, -0x1.e7f482p-58f,
+    -0x1.29fe4cp-66f, 0x1.c8ffecp-13f, -0x1.b06234p-59f, 0x1.bcbf76p-55f,
     /* s = 0/8: node 116 y */
-    -0x1p-67f, 0x1.11adeep-57f, -0x1.b8abc8p-13f, 0x1.1ae752p-11f,
+    -0x1.8p-67f, 0x1.534942p-58f, -0x1.b8abc8p-13f, 0x1.1ae752p-11f,
     /* s = 0/8: node 116 z */
-    -0x1.333334p-70f, -0x1.47894p-57f, 0x1.de0a18p-13f, 0x1.002676p-11f,
+    -0x1.666666p-68f, -0x1.05dfc4p-65f, 0x1.de0a18p-13f, 0x1.002676p-11f,
     /* s = 0/8: node 117 x */
-    -0x1.4cccccp-68f, 0x1.5e447cp-16f, -0x1.6786e2p-14f, 0x1.463728p-12f,
+    -0x1.8cccccp-68f, 0x1.5e447cp-16f, -0x1.6786e2p-14f, 0x1.463728p-12f,
     /* s = 0/8: node 117 y */
-    -0x1.e66666p-68f, -0x1.52b658p-15f, -0x1.df8c4ep-13f, 0x1.3c25ecp-11f,
+    -0x1.4p-67f, -0x1.52b658p-15f, -0x1.df8c4ep-13f, 0x1.3c25ecp-11f,
     /* s = 0/8: node 117 z */
-    -0x1.066666p-67f, 0x1.883cbcp-15f, 0x1.a8f25ep-13f, 0x1.863e9p-12f,
+    -0x1.333334p-68f, 0x1.883cbcp-15f, 0x1.a8f25ep-13f, 0x1.863e9p-12f,
     /* s = 0/8: node 118 x */
-    -0x1.333334p-69f, 0x1.d911e2p-20f, -0x1.45b1f2p-14f, 0x1.c033dap-12f,
+    -0x1.666666p-68f, 0x1.d911e2p-20f, -0x1.45b1f2p-14f, 0x1.c033dap-12f,
     /* s = 0/8: node 118 y */
-    0x1.99999ap-70f, -0x1.c5b548p-14f, -0x1.ecc526p-14f, 0x1.a5a7dcp-12f,
+    -0x1.99999ap-72f, -0x1.c5b548p-14f, -0x1.ecc526p-14f, 0x1.a5a7dcp-12f,
     /* s = 0/8: node 118 z */
-    -0x1.99999ap-67f, 0x1.86532ep-14f, 0x1.5b4e98p-13f, 0x1.355c04p-12f,
+    -0x1.19999ap-67f, 0x1.86532ep-14f, 0x1.5b4e98p-13f, 0x1.355c04p-12f,
     /* s = 0/8: node 119 x */
-    -0x1.4p-67f, -0x1.83b4acp-15f, -0x1.730178p-14f, 0x1.de3dep-12f,
+    -0x1p-68f, -0x1.83b4acp-15f, -0x1.730178p-14f, 0x1.de3dep-12f,
     /* s = 0/8: node 119 y */
-    0x1.99999ap-70f, -0x1.d8ce6ap-15f, -0x1.02c01ap-14f, 0x1.0380dp-12f,
+    -0x1.333334p-71f, -0x1.d8ce6ap-15f, -0x1.02c01ap-14f, 0x1.0380dp-12f,
     /* s = 0/8: node 119 z */
-    -0x1.59999ap-67f, 0x1.f398c2p-14f, 0x1.108e6ep-13f, 0x1.cfedf6p-13f,
+    -0x1.333334p-66f, 0x1.f398c2p-14f, 0x1.108e6ep-13f, 0x1.cfedf6p-13f,
     /* s = 0/8: node 120 x */
-    -0x1.4cccccp-69f, -0x1.bccfdep-16f, -0x1.9c52c8p-16f, 0x1.884288p-13f,
+    -0x1.ccccccp-70f, -0x1.bccfdep-16f, -0x1.9c52c8p-16f, 0x1.884288p-13f,
     /* s = 0/8: node 120 y */
-    0x1.1cccccp-68f, -0x1.f06ec8p-15f, -0x1.04bec4p-15f, 0x1.7c6312p-14f,
+    0x1.333334p-73f, -0x1.f06ec8p-15f, -0x1.04bec4p-15f, 0x1.7c6312p-14f,
     /* s = 0/8: node 120 z */
-    -0x1.033334p-67f, 0x1.6fece6p-14f, 0x1.843764p-14f, 0x1.43f49p-13f,
+    -0x1.6cccccp-68f, 0x1.6fece6p-14f, 0x1.843764p-14f, 0x1.43f49p-13f,
     /* s = 0/8: node 121 x */
-    0x1.ccccccp-71f, -0x1.0f7b9p-21f, -0x1.58289ep-15f, -0x1.af27cap-14f,
+    0x1.666666p-71f, -0x1.0f7b9p-21f, -0x1.58289ep-15f, -0x1.af27cap-14f,
     /* s = 0/8: node 121 y */
-    0x1.a66666p-69f, -0x1.58289ep-15f, -0x1.0f7b9p-21f, -0x1.af27cap-14f,
+    0x1.b33334p-68f, -0x1.58289ep-15f, -0x1.0f7b9p-21f, -0x1.af27cap-14f,
     /* s = 0/8: node 121 z */
-    0x1.50ccccp-68f, -0x1.243682p-14f, -0x1.243682p-14f, 0x1.593ab6p-17f,
+    0x1.49999ap-70f, -0x1.243682p-14f, -0x1.243682p-14f, 0x1.593ab6p-17f,
     /* s = 1/8: node 1 x */
-    -0x1.8p-70f, -0x1.8b6222p-18f, -0x1.978a16p-15f, 0x1.309974p-14f,
+    -0x1.59999ap-70f, -0x1.8b6222p-18f, -0x1.978a16p-15f, 0x1.309974p-14f,
     /* s = 1/8: node 1 y */
-    -0x1.99999ap-72f, -0x1.aaa138p-16f, 0x1.c3bb2ap-18f, 0x1.da162cp-14f,
+    0x1.733334p-69f, -0x1.aaa138p-16f, 0x1.c3bb2ap-18f, 0x1.da162cp-14f,
     /* s = 1/8: node 1 z */
-    -0x1.58p-68f, 0x1.39b27ap-14f, 0x1.21da42p-14f, 0x1.099ad4p-15f,
+    -0x1.1cccccp-69f, 0x1.39b27ap-14f, 0x1.21da42p-14f, 0x1.099ad4p-15f,
     /* s = 1/8: node 2 x */
-    0x1.ccccccp-70f, -0x1.2f8f46p-16f, -0x1.207282p-16f, -0x1.74d2aep-13f,
+    0x1.6cccccp-68f, -0x1.2f8f46p-16f, -0x1.207282p-16f, -0x1.74d2aep-13f,
     /* s = 1/8: node 2 y */
-    0x1.8p-69f, -0x1.873f08p-15f, -0x1.59251ap-16f, -0x1.4d6faap-14f,
+    0x1.f33334p-69f, -0x1.873f08p-15f, -0x1.59251ap-16f, -0x1.4d6faap-14f,
     /* s = 1/8: node 2 z */
-    -0x1.99999ap-70f, -0x1.812518p-14f, -0x1.9fe716p-14f, 0x1.35d71cp-13f,
+    0x1p-68f, -0x1.812518p-14f, -0x1.9fe716p-14f, 0x1.35d71cp-13f,
     /* s = 1/8: node 3 x */
-    0x1.99999ap-70f, -0x1.8efd82p-15f, -0x1.9b4d9ap-14f, -0x1.eba78ap-12f,
+    0x1.b33334p-68f, -0x1.8efd82p-15f, -0x1.9b4d9ap-14f, -0x1.eba78ap-12f,
     /* s = 1/8: node 3 y */
-    0x1.ccccccp-68f, -0x1.1f556cp-14f, -0x1.2f76b2p-14f, -0x1.00b0bep-12f,
+    0x1.59999ap-67f, -0x1.1f556cp-14f, -0x1.2f76b2p-14f, -0x1.00b0bep-12f,
     /* s = 1/8: node 3 z */
-    0x1.99999ap-72f, -0x1.d78338p-14f, -0x1.de0dc6p-14f, 0x1.03be08p-12f,
+    0x1.2p-67f, -0x1.d78338p-14f, -0x1.de0dc6p-14f, 0x1.03be08p-12f,
     /* s = 1/8: node 4 x */
-    0x1.666666p-69f, -0x1.a6cff6p-16f, -0x1.753a2ep-14f, -0x1.f93224p-12f,
+    0x1.8p-68f, -0x1.a6cff6p-16f, -0x1.753a2ep-14f, -0x1.f93224p-12f,
     /* s = 1/8: node 4 y */
-    0x1.f33334p-67f, -0x1.a68af8p-14f, -0x1.0188f2p-13f, -0x1.b64ffp-12f,
+    0x1.8p-67f, -0x1.a68af8p-14f, -0x1.0188f2p-13f, -0x1.b64ffp-12f,
     /* s = 1/8: node 4 z */
-    0x1.b33334p-68f, -0x1.85e48cp-14f, -0x1.69157ep-13f, 0x1.dbe9dep-13f,
+    0x1.666666p-70f, -0x1.85e48cp-14f, -0x1.69157ep-13f, 0x1.dbe9dep-13f,
     /* s = 1/8: node 5 x */
-    -0x1.4p-69f, 0x1.5e2d8p-15f, -0x1.26c8e6p-15f, -0x1.22a822p-13f,
+    -0x1.4cccccp-69f, 0x1.5e2d8p-15f, -0x1.26c8e6p-15f, -0x1.22a822p-13f,
     /* s = 1/8: node 5 y */
-    -0x1.8cccccp-70f, 0x1.298acap-15f, -0x1.1ea718p-13f, -0x1.ba14a2p-15f,
+    -0x1.cp-70f, 0x1.298acap-15f, -0x1.1ea718p-13f, -0x1.ba14a2p-15f,
     /* s = 1/8: node 5 z */
-    -0x1.59999ap-68f, -0x1.c8c99p-16f, -0x1.f0ff8ep-14f, 0x1.c26b62p-13f,
+    -0x1.0cccccp-68f, -0x1.c8c99p-16f, -0x1.f0ff8ep-14f, 0x1.c26b62p-13f,
     /* s = 1/8: node 6 x */
-    -0x1.8d3334p-67f, 0x1.978a1p-13f, -0x1.91e14p-18f, -0x1.59e68ap-16f,
+    -0x1.0e999ap-66f, 0x1.978a1p-13f, -0x1.91e14p-18f, -0x1.59e68ap-16f,
     /* s = 1/8: node 6 y */
-    0x1.99999ap-68f, -0x1.55623p-16f, -0x1.d7172p-13f, -0x1.1ca126p-11f,
+    0x1.333334p-68f, -0x1.55623p-16f, -0x1.d7172p-13f, -0x1.1ca126p-11f,
     /* s = 1/8: node 6 z */
-    -0x1.59999ap-67f, 0x1.a58174p-20f, -0x1.a80adcp-13f, 0x1.f34fd4p-12f,
+    -0x1.4p-67f, 0x1.a58174p-20f, -0x1.a80adcp-13f, 0x1.f34fd4p-12f,
     /* s = 1/8: node 7 x */
-    -0x1.4p-67f, 0x1.182988p-15f, 0x1.77bcfap-14f, 0x1.5a274cp-12f,
+    -0x1.0cccccp-67f, 0x1.182988p-15f, 0x1.77bcfap-14f, 0x1.5a274cp-12f,
     /* s = 1/8: node 7 y */
-    -0x1.0cccccp-67f, 0x1.c576dp-15f, -0x1.d26512p-13f, -0x1.39a0a8p-11f,
+    0x1.19999ap-68f, 0x1.c576dp-15f, -0x1.d26512p-13f, -0x1.39a0a8p-11f,
     /* s = 1/8: node 7 z */
-    -0x1.8p-68f, 0x1.4edc4ep-15f, -0x1.cf4088p-13f, 0x1.97b156p-12f,
+    -0x1.666666p-68f, 0x1.4edc4ep-15f, -0x1.cf4088p-13f, 0x1.97b156p-12f,
     /* s = 1/8: node 8 x */
-    -0x1.99999ap-72f, -0x1.7ffa7ap-20f, 0x1.4cb46ap-14f, 0x1.be67fcp-12f,
+    -0x1.19999ap-67f, -0x1.7ffa7ap-20f, 0x1.4cb46ap-14f, 0x1.be67fcp-12f,
     /* s = 1/8: node 8 y */
-    -0x1.99999ap-70f, 0x1.a0fdb8p-14f, -0x1.f830dcp-14f, -0x1.a82d22p-12f,
+    -0x0p+0f, 0x1.a0fdb8p-14f, -0x1.f830dcp-14f, -0x1.a82d22p-12f,
     /* s = 1/8: node 8 z */
-    -0x1.f9999ap-67f, 0x1.a966d8p-14f, -0x1.3c79f6p-13f, 0x1.397cbcp-12f,
+    -0x1.666666p-67f, 0x1.a966d8p-14f, -0x1.3c79f6p-13f, 0x1.397cbcp-12f,
     /* s = 1/8: node 9 x */
-    0x1.333334p-70f, -0x1.78d436p-15f, 0x1.6b7d48p-14f, 0x1.dbcb24p-12f,
+    -0x1.ccccccp-69f, -0x1.78d436p-15f, 0x1.6b7d48p-14f, 0x1.dbcb24p-12f,
     /* s = 1/8: node 9 y */
-    -0x1.d9999ap-68f, 0x1.ff00a8p-15f, -0x1.f390ecp-15f, -0x1.fe94a2p-13f,
+    -0x1.666666p-70f, 0x1.ff00a8p-15f, -0x1.f390ecp-15f, -0x1.fe94a2p-13f,
     /* s = 1/8: node 9 z */
-    -0x1.866666p-66f, 0x1.e65eaep-14f, -0x1.21cb0ep-13f, 0x1.cc5166p-13f,
+    -0x1.59999ap-68f, 0x1.e65eaep-14f, -0x1.21cb0ep-13f, 0x1.cc5166p-13f,
     /* s = 1/8: node 10 x */
-    -0x1.333334p-70f, -0x1.a20a0ap-16f, 0x1.b04154p-16f, 0x1.903cc2p-13f,
+    -0x1.99999ap-73f, -0x1.a20a0ap-16f, 0x1.b04154p-16f, 0x1.903cc2p-13f,
     /* s = 1/8: node 10 y */
-    -0x1.ccccccp-70f, 0x1.e0a32ep-15f, -0x1.091836p-15f, -0x1.8cfc44p-14f,
+    -0x1.733334p-69f, 0x1.e0a32ep-15f, -0x1.091836p-15f, -0x1.8cfc44p-14f,
     /* s = 1/8: node 10 z */
-    -0x1.1p-67f, 0x1.78b6c8p-14f, -0x1.771f7cp-14f, 0x1.5394fcp-13f,
+    -0x1.39999ap-68f, 0x1.78b6c8p-14f, -0x1.771f7cp-14f, 0x1.5394fcp-13f,
     /* s = 1/8: node 11 x */
-    0x1.59999ap-69f, -0x1.d5f31p-17f, 0x1.0910dcp-15f, -0x1.da2dc2p-14f,
+    0x1.b33334p-70f, -0x1.d5f31p-17f, 0x1.0910dcp-15f, -0x1.da2dc2p-14f,
     /* s = 1/8: node 11 y */
-    0x1.b33334p-71f, 0x1.3b1ee8p-15f, -0x1.d79aeep-18f, 0x1.75eed2p-14f,
+    -0x1.8cccccp-69f, 0x1.3b1ee8p-15f, -0x1.d79aeep-18f, 0x1.75eed2p-14f,
     /* s = 1/8: node 11 z */
-    0x1.7b6666p-68f, -0x1.2a94c8p-14f, 0x1.1c6a76p-14f, 0x1.8fe81p-19f,
+    0x1.3e3334p-67f, -0x1.2a94c8p-14f, 0x1.1c6a76p-14f, 0x1.8fe81p-19f,
     /* s = 1/8: node 12 x */
     0x1.19999ap-70f, -0x1.8e7c56p-16f, -0x1.f7cd9ep-15f, -0x1.884576p-14f,
     /* s = 1/8: node 12 y */
-    0x1.0cccccp-68f, -0x1.724ac4p-16f, -0x1.bb388ap-16f, -0x1.99165cp-13f,
+    0x1.4cccccp-69f, -0x1.724ac4p-16f, -0x1.bb388ap-16f, -0x1.99165cp-13f,
     /* s = 1/8: node 12 z */
-    0x1.ap-68f, -0x1.984ec8p-14f, -0x1.794346p-14f, 0x1.466a84p-13f,
+    0x1.4cccccp-68f, -0x1.984ec8p-14f, -0x1.794346p-14f, 0x1.466a84p-13f,
     /* s = 1/8: node 13 x */
-    0x1.666666p-64f, 0x1.d3ffa6p-10f, 0x1.36984cp-8f, -0x1.5c67b8p-6f,
+    0x1.733334p-62f, 0x1.d3ffa6p-10f, 0x1.36984cp-8f, -0x1.5c67b8p-6f,
     /* s = 1/8: node 13 y */
-    0x1.4cccccp-63f, 0x1.0b93cep-8f, 0x1.e04314p-10f, -0x1.6792c4p-6f,
+    0x1.99999ap-67f, 0x1.0b93cep-8f, 0x1.e04314p-10f, -0x1.6792c4p-6f,
     /* s = 1/8: node 13 z */
     -0x1.8p-63f, -0x1.40928ap-8f, -0x1.4ccd9p-8f, 0x1.64fd18p-6f,
     /* s = 1/8: node 14 x */
-    0x1.b33334p-62f, 0x1.7d04dcp-9f, 0x1.053d12p-7f, -0x1.63f76p-5f,
+    0x1.8p-61f, 0x1.7d04dcp-9f, 0x1.053d12p-7f, -0x1.63f76p-5f,
     /* s = 1/8: node 14 y */
-    0x1.b33334p-61f, 0x1.fb0e52p-9f, 0x1.17c81p-8f, -0x1.8cab14p-5f,
+    -0x0p+0f, 0x1.fb0e52p-9f, 0x1.17c81p-8f, -0x1.8cab14p-5f,
     /* s = 1/8: node 14 z */
-    -0x1.8cccccp-60f, 0x1.ac9d7ep-9f, 0x1.baf0e2p-9f, 0x1.284f22p-4f,
+    -0x1.ccccccp-61f, 0x1.ac9d7ep-9f, 0x1.baf0e2p-9f, 0x1.284f22p-4f,
     /* s = 1/8: node 15 x */
-    0x1.cp-61f, 0x1.f38cecp-9f, 0x1.37fc02p-7f, -0x1.7bac46p-5f,
+    0x1.0cccccp-61f, 0x1.f38cecp-9f, 0x1.37fc02p-7f, -0x1.7bac46p-5f,
     /* s = 1/8: node 15 y */
-    0x1.b33334p-61f, 0x1.0e71cap-9f, 0x1.32ef48p-9f, -0x1.70c93cp-4f,
+    0x1.cp-60f, 0x1.0e71cap-9f, 0x1.32ef48p-9f, -0x1.70c93cp-4f,
     /* s = 1/8: node 15 z */
-    -0x1.133334p-58f, 0x1.40d216p-7f, 0x1.e64912p-7f, 0x1.2ddff2p-3f,
+    -0x1.8cccccp-59f, 0x1.40d216p-7f, 0x1.e64912p-7f, 0x1.2ddff2p-3f,
     /* s = 1/8: node 16 x */
-    -0x1.99999ap-65f, 0x1.32044ap-7f, 0x1.fbf7d6p-8f, -0x1.aa2d78p-6f,
+    0x1p-63f, 0x1.32044ap-7f, 0x1.fbf7d6p-8f, -0x1.aa2d78p-6f,
     /* s = 1/8: node 16 y */
-    0x1.733334p-59f, -0x1.ac1502p-8f, 0x1.a69868p-8f, -0x1.eb1f86p-4f,
+    0x1.8p-59f, -0x1.ac1502p-8f, 0x1.a69868p-8f, -0x1.eb1f86p-4f,
     /* s = 1/8: node 16 z */
-    -0x1.ccccccp-59f, 0x1.653356p-7f, 0x1.a11b16p-6f, 0x1.ac2be8p-3f,
+    -0x1.4p-58f, 0x1.653356p-7f, 0x1.a11b16p-6f, 0x1.ac2be8p-3f,
     /* s = 1/8: node 17 x */
-    -0x1.246666p-61f, 0x1.9419dcp-7f, 0x1.9a10eep-14f, -0x1.08200cp-12f,
+    -0x1.3e8p-61f, 0x1.9419dcp-7f, 0x1.9a10eep-14f, -0x1.08200cp-12f,
     /* s = 1/8: node 17 y */
-    0x1.99999ap-60f, 0x1.725b58p-9f, 0x1.7443d8p-8f, -0x1.13a586p-3f,
+    0x1.4p-59f, 0x1.725b58p-9f, 0x1.7443d8p-8f, -0x1.13a586p-3f,
     /* s = 1/8: node 17 z */
-    -0x1.666666p-58f, 0x1.5cd76cp-12f, 0x1.ee7ddcp-6f, 0x1.e4551p-3f,
+    -0x1.99999ap-63f, 0x1.5cd76cp-12f, 0x1.ee7ddcp-6f, 0x1.e4551p-3f,
     /* s = 1/8: node 18 x */
-    -0x1.59999ap-61f, 0x1.d69d06p-8f, -0x1.9bba6p-8f, 0x1.f5a9eap-6f,
+    -0x1.333334p-60f, 0x1.d69d06p-8f, -0x1.9bba6p-8f, 0x1.f5a9eap-6f,
     /* s = 1/8: node 18 y */
-    0x1.333334p-61f, 0x1.029f38p-10f, 0x1.001f4p-7f, -0x1.f40c44p-4f,
+    0x1.266666p-59f, 0x1.029f38p-10f, 0x1.001f4p-7f, -0x1.f40c44p-4f,
     /* s = 1/8: node 18 z */
-    -0x1.99999ap-63f, -0x1.26b64ep-7f, 0x1.88e55p-6f, 0x1.a8e856p-3f,
+    -0x1.99999ap-60f, -0x1.26b64ep-7f, 0x1.88e55p-6f, 0x1.a8e856p-3f,
     /* s = 1/8: node 19 x */
-    -0x1.933334p-60f, 0x1.97dca8p-8f, -0x1.61675p-7f, 0x1.68fb2p-5f,
+    -0x1.6p-60f, 0x1.97dca8p-8f, -0x1.61675p-7f, 0x1.68fb2p-5f,
     /* s = 1/8: node 19 y */
-    0x1.333334p-60f, -0x1.66e406p-9f, 0x1.7b87bp-8f, -0x1.5f49cap-4f,
+    0x1.b33334p-60f, -0x1.66e406p-9f, 0x1.7b87bp-8f, -0x1.5f49cap-4f,
     /* s = 1/8: node 19 z */
-    -0x1.333334p-61f, -0x1.11cb7ap-7f, 0x1.ba220cp-7f, 0x1.2bb762p-3f,
+    -0x1.8p-60f, -0x1.11cb7ap-7f, 0x1.ba220cp-7f, 0x1.2bb762p-3f,
     /* s = 1/8: node 20 x */
-    -0x1.6cccccp-60f, 0x1.336946p-9f, -0x1.0f5eep-7f, 0x1.68d2f8p-5f,
+    -0x1.133334p-60f, 0x1.336946p-9f, -0x1.0f5eep-7f, 0x1.68d2f8p-5f,
     /* s = 1/8: node 20 y */
-    0x1p-60f, -0x1.98613ap-9f, 0x1.21f82cp-9f, -0x1.ad2504p-5f,
+    0x1.4cccccp-60f, -0x1.98613ap-9f, 0x1.21f82cp-9f, -0x1.ad2504p-5f,
     /* s = 1/8: node 20 z */
-    -0x1.99999ap-62f, -0x1.ac09bap-9f, 0x1.d0d852p-9f, 0x1.2a4356p-4f,
+    -0x1.4p-60f, -0x1.ac09bap-9f, 0x1.d0d852p-9f, 0x1.2a4356p-4f,
     /* s = 1/8: node 21 x */
-    -0x1.e66666p-62f, 0x1.54d53ap-9f, -0x1.41ee04p-8f, 0x1.564526p-6f,
+    -0x1.666666p-61f, 0x1.54d53ap-9f, -0x1.41ee04p-8f, 0x1.564526p-6f,
     /* s = 1/8: node 21 y */
-    0x1.d9999ap-61f, -0x1.480732p-8f, 0x1.48d73p-9f, -0x1.519148p-6f,
+    0x1.6cccccp-61f, -0x1.480732p-8f, 0x1.48d73p-9f, -0x1.519148p-6f,
     /* s = 1/8: node 21 z */
-    -0x1.cp-61f, 0x1.4e883ep-8f, -0x1.4cc6aep-8f, 0x1.65bb3p-6f,
+    -0x1.f33334p-62f, 0x1.4e883ep-8f, -0x1.4cc6aep-8f, 0x1.65bb3p-6f,
     /* s = 1/8: node 22 x */
-    0x1.4cccccp-71f, -0x1.2143f6p-15f, 0x1.cdf7c4p-15f, 0x1.6f09bep-14f,
+    0x1.cp-69f, -0x1.2143f6p-15f, 0x1.cdf7c4p-15f, 0x1.6f09bep-14f,
     /* s = 1/8: node 22 y */
-    -0x1.ccccccp-70f, 0x1.baa15cp-16f, -0x1.8b2eb2p-16f, -0x1.83753ep-13f,
+    -0x1.4cccccp-70f, 0x1.baa15cp-16f, -0x1.8b2eb2p-16f, -0x1.83753ep-13f,
     /* s = 1/8: node 22 z */
-    -0x1.4cccccp-68f, 0x1.821512p-14f, -0x1.6dc834p-14f, 0x1.4ed286p-13f,
+    -0x1.ccccccp-67f, 0x1.821512p-14f, -0x1.6dc834p-14f, 0x1.4ed286p-13f,
     /* s = 1/8: node 23 x */
-    0x1.266666p-68f, -0x1.0804bep-14f, -0x1.8eb9b8p-15f, -0x1.da58e2p-13f,
+    0x1.666666p-68f, -0x1.0804bep-14f, -0x1.8eb9b8p-15f, -0x1.da58e2p-13f,
     /* s = 1/8: node 23 y */
-    0x1.333334p-67f, -0x1.57fb3ep-14f, -0x1.122ebcp-15f, -0x1.cee0f6p-12f,
+    0x1.f33334p-67f, -0x1.57fb3ep-14f, -0x1.122ebcp-15f, -0x1.cee0f6p-12f,
     /* s = 1/8: node 23 z */
-    0x1.866666p-67f, -0x1.0918dap-13f, -0x1.c156e6p-14f, 0x1.e87536p-13f,
+    0x1p-67f, -0x1.0918dap-13f, -0x1.c156e6p-14f, 0x1.e87536p-13f,
     /* s = 1/8: node 24 x */
-    0x1.4cccccp-61f, 0x1.58914ap-9f, 0x1.8d1f22p-10f, -0x1.ac4adap-5f,
+    0x1.333334p-61f, 0x1.58914ap-9f, 0x1.8d1f22p-10f, -0x1.ac4adap-5f,
     /* s = 1/8: node 24 y */
-    -0x1.99999ap-66f, 0x1.171526p-7f, 0x1.5efadep-9f, -0x1.661c16p-5f,
+    -0x1.333334p-63f, 0x1.171526p-7f, 0x1.5efadep-9f, -0x1.661c16p-5f,
     /* s = 1/8: node 24 z */
-    -0x1.8p-60f, 0x1.04da6ap-8f, 0x1.b9bb16p-9f, 0x1.2a335p-4f,
+    -0x1.ccccccp-60f, 0x1.04da6ap-8f, 0x1.b9bb16p-9f, 0x1.2a335p-4f,
     /* s = 1/8: node 25 x */
-    0x1p-61f, 0x1.14c76ep-7f, 0x1.24d7aep-7f, -0x1.98ba16p-4f,
+    0x1.b33334p-60f, 0x1.14c76ep-7f, 0x1.24d7aep-7f, -0x1.98ba16p-4f,
     /* s = 1/8: node 25 y */
-    0x1.333334p-61f, 0x1.9d434cp-8f, 0x1.e258bep-8f, -0x1.a260e8p-4f,
+    0x1.333334p-60f, 0x1.9d434cp-8f, 0x1.e258bep-8f, -0x1.a260e8p-4f,
     /* s = 1/8: node 25 z */
-    -0x1.e66666p-58f, 0x1.c02e4cp-6f, 0x1.ab155ap-6f, 0x1.a893fp-3f,
+    -0x1.ccccccp-59f, 0x1.c02e4cp-6f, 0x1.ab155ap-6f, 0x1.a893fp-3f,
     /* s = 1/8: node 26 x */
-    -0x1p-61f, 0x1.d71914p-6f, 0x1.87bb18p-7f, -0x1.88db56p-4f,
+    -0x1.99999ap-63f, 0x1.d71914p-6f, 0x1.87bb18p-7f, -0x1.88db56p-4f,
     /* s = 1/8: node 26 y */
-    0x1p-59f, 0x1.10122p-7f, 0x1.af03d6p-6f, -0x1.523ddep-3f,
+    0x1.f33334p-59f, 0x1.10122p-7f, 0x1.af03d6p-6f, -0x1.523ddep-3f,
     /* s = 1/8: node 26 z */
-    -0x1.ccccccp-58f, 0x1.3db73ep-5f, 0x1.c0b9fp-5f, 0x1.96b08ep-2f,
+    -0x1p-58f, 0x1.3db73ep-5f, 0x1.c0b9fp-5f, 0x1.96b08ep-2f,
     /* s = 1/8: node 27 x */
-    -0x1p-60f, 0x1.03887ap-5f, 0x1.55d796p-8f, -0x1.1b6698p-4f,
+    -0x1.b33334p-60f, 0x1.03887ap-5f, 0x1.55d796p-8f, -0x1.1b6698p-4f,
     /* s = 1/8: node 27 y */
-    0x1.333334p-60f, 0x1.723cc6p-8f, 0x1.4826fap-5f, -0x1.cf2e6p-3f,
+    0x1p-58f, 0x1.723cc6p-8f, 0x1.4826fap-5f, -0x1.cf2e6p-3f,
     /* s = 1/8: node 27 z */
-    -0x1.19999ap-58f, 0x1.d0bbc6p-6f, 0x1.55205cp-4f, 0x1.19b53p-1f,
+    -0x1p-58f, 0x1.d0bbc6p-6f, 0x1.55205cp-4f, 0x1.19b53p-1f,
     /* s = 1/8: node 28 x */
-    -0x1.61999ap-59f, 0x1.0ee32cp-5f, -0x1.920494p-14f, 0x1.9f674ap-8f,
+    -0x1.ab3334p-59f, 0x1.0ee32cp-5f, -0x1.920494p-14f, 0x1.9f674ap-8f,
     /* s = 1/8: node 28 y */
-    0x1.4p-58f, -0x1.224798p-9f, 0x1.b72a42p-5f, -0x1.00b6a8p-2f,
+    0x1.8p-58f, -0x1.224798p-9f, 0x1.b72a42p-5f, -0x1.00b6a8p-2f,
     /* s = 1/8: node 28 z */
-    -0x1.8p-58f, 0x1.a9db3p-11f, 0x1.72e8f4p-4f, 0x1.3309c2p-1f,
+    -0x1.666666p-59f, 0x1.a9db3p-11f, 0x1.72e8f4p-4f, 0x1.3309c2p-1f,
     /* s = 1/8: node 29 x */
-    -0x1.333334p-58f, 0x1.38db92p-5f, -0x1.768ec4p-7f, 0x1.06ed1ep-4f,
+    -0x1.ep-59f, 0x1.38db92p-5f, -0x1.768ec4p-7f, 0x1.06ed1ep-4f,
     /* s = 1/8: node 29 y */
-    -0x1.19999ap-59f, -0x1.22afbp-7f, 0x1.48f892p-5f, -0x1.c80202p-3f,
+    0x1.666666p-59f, -0x1.22afbp-7f, 0x1.48f892p-5f, -0x1.c80202p-3f,
     /* s = 1/8: node 29 z */
-    -0x1.99999ap-58f, -0x1.9a474p-6f, 0x1.4c4e1p-4f, 0x1.157a98p-1f,
+    -0x1.666666p-58f, -0x1.9a474p-6f, 0x1.4c4e1p-4f, 0x1.157a98p-1f,
     /* s = 1/8: node 30 x */
-    -0x1.066666p-58f, 0x1.97844p-6f, -0x1.6ffbdep-7f, 0x1.9be2ccp-4f,
+    -0x1.39999ap-58f, 0x1.97844p-6f, -0x1.6ffbdep-7f, 0x1.9be2ccp-4f,
     /* s = 1/8: node 30 y */
-    0x1.333334p-59f, -0x1.68737ep-8f, 0x1.73f88cp-6f, -0x1.5c7708p-3f,
+    0x1.4p-59f, -0x1.68737ep-8f, 0x1.73f88cp-6f, -0x1.5c7708p-3f,
     /* s = 1/8: node 30 z */
     -0x1.99999ap-59f, -0x1.3fdb54p-5f, 0x1.ba8bfp-5f, 0x1.9464f4p-2f,
     /* s = 1/8: node 31 x */
-    -0x1.4cccccp-59f, 0x1.61763p-7f, -0x1.19d726p-7f, 0x1.980506p-4f,
+    -0x1.8cccccp-59f, 0x1.61763p-7f, -0x1.19d726p-7f, 0x1.980506p-4f,
     /* s = 1/8: node 31 y */
-    0x1.19999ap-59f, -0x1.2b1e8p-7f, 0x1.4fba1ep-7f, -0x1.8f6562p-4f,
+    0x1.f33334p-59f, -0x1.2b1e8p-7f, 0x1.4fba1ep-7f, -0x1.8f6562p-4f,
     /* s = 1/8: node 31 z */
-    -0x1p-60f, -0x1.9b30fap-6f, 0x1.a479e4p-6f, 0x1.a9b0d4p-3f,
+    0x1.99999ap-60f, -0x1.9b30fap-6f, 0x1.a479e4p-6f, 0x1.a9b0d4p-3f,
     /* s = 1/8: node 32 x */
-    -0x1.4p-60f, 0x1.26dp-9f, -0x1.a7a45p-9f, 0x1.a27c12p-5f,
+    -0x1.b33334p-61f, 0x1.26dp-9f, -0x1.a7a45p-9f, 0x1.a27c12p-5f,
     /* s = 1/8: node 32 y */
-    0x1.2cccccp-60f, -0x1.0bb158p-7f, 0x1.259dacp-9f, -0x1.66640ep-5f,
+    0x1.79999ap-60f, -0x1.0bb158p-7f, 0x1.259dacp-9f, -0x1.66640ep-5f,
     /* s = 1/8: node 32 z */
-    -0x1.b33334p-61f, -0x1.ed660ap-9f, 0x1.98565p-9f, 0x1.2917bap-4f,
+    -0x1.4cccccp-60f, -0x1.ed660ap-9f, 0x1.98565p-9f, 0x1.2917bap-4f,
     /* s = 1/8: node 33 x */
-    0x1.8p-69f, -0x1.b24804p-15f, 0x1.0c40ccp-14f, 0x1.0bb3e4p-12f,
+    0x1.b33334p-69f, -0x1.b24804p-15f, 0x1.0c40ccp-14f, 0x1.0bb3e4p-12f,
     /* s = 1/8: node 33 y */
-    -0x1.99999ap-72f, 0x1.71cc4ap-14f, -0x1.916f7p-15f, -0x1.df9cfep-12f,
+    0x1.59999ap-67f, 0x1.71cc4ap-14f, -0x1.916f7p-15f, -0x1.df9cfep-12f,
     /* s = 1/8: node 33 z */
-    -0x1.d33334p-67f, 0x1.117982p-13f, -0x1.fd28c8p-14f, 0x1.d31092p-13f,
+    -0x1.266666p-66f, 0x1.117982p-13f, -0x1.fd28c8p-14f, 0x1.d31092p-13f,
     /* s = 1/8: node 34 x */
-    0x1.4cccccp-66f, -0x1.14630ep-13f, -0x1.d0afa2p-14f, -0x1.caec4p-12f,
+    0x1.333334p-66f, -0x1.14630ep-13f, -0x1.d0afa2p-14f, -0x1.caec4p-12f,
     /* s = 1/8: node 34 y */
-    0x1.0cccccp-67f, -0x1.a1f5b4p-14f, -0x1.a2178cp-16f, -0x1.dd98fcp-12f,
+    0x1.cp-67f, -0x1.a1f5b4p-14f, -0x1.a2178cp-16f, -0x1.dd98fcp-12f,
     /* s = 1/8: node 34 z */
-    0x1.666666p-69f, -0x1.3c412cp-13f, -0x1.a7df36p-14f, 0x1.22c9b4p-12f,
+    0x1.266666p-67f, -0x1.3c412cp-13f, -0x1.a7df36p-14f, 0x1.22c9b4p-12f,
     /* s = 1/8: node 35 x */
-    0x1.666666p-61f, 0x1.f803b6p-9f, 0x1.21cf76p-8f, -0x1.63204p-4f,
+    0x1.066666p-59f, 0x1.f803b6p-9f, 0x1.21cf76p-8f, -0x1.63204p-4f,
     /* s = 1/8: node 35 y */
-    0x1.666666p-63f, 0x1.412ce6p-7f, 0x1.562dfp-8f, -0x1.6f862ep-5f,
+    0x1.266666p-61f, 0x1.412ce6p-7f, 0x1.562dfp-8f, -0x1.6f862ep-5f,
     /* s = 1/8: node 35 z */
-    -0x1.0cccccp-58f, 0x1.ec533ap-7f, 0x1.1475c2p-7f, 0x1.2bdb22p-3f,
+    -0x1.733334p-59f, 0x1.ec533ap-7f, 0x1.1475c2p-7f, 0x1.2bdb22p-3f,
     /* s = 1/8: node 36 x */
-    0x1.b33334p-60f, 0x1.7280f4p-6f, 0x1.2bfd5cp-9f, -0x1.671ccp-3f,
+    0x1p-60f, 0x1.7280f4p-6f, 0x1.2bfd5cp-9f, -0x1.671ccp-3f,
     /* s = 1/8: node 36 y */
-    0x1.99999ap-64f, 0x1.c9584ap-7f, 0x1.a0f288p-6f, -0x1.92c66ap-4f,
+    0x1p-59f, 0x1.c9584ap-7f, 0x1.a0f288p-6f, -0x1.92c66ap-4f,
     /* s = 1/8: node 36 z */
-    -0x1.266666p-57f, 0x1.c685cp-5f, 0x1.42ec22p-5f, 0x1.9b6f98p-2f,
+    -0x1.ccccccp-58f, 0x1.c685cp-5f, 0x1.42ec22p-5f, 0x1.9b6f98p-2f,
     /* s = 1/8: node 37 x */
-    -0x1.ccccccp-61f, 0x1.bc7b44p-5f, 0x1.dcb71ep-7f, -0x1.745e32p-3f,
+    -0x1.4p-59f, 0x1.bc7b44p-5f, 0x1.dcb71ep-7f, -0x1.745e32p-3f,
     /* s = 1/8: node 37 y */
-    0x1.19999ap-60f, 0x1.c32f9cp-8f, 0x1.bf130cp-5f, -0x1.61df1cp-3f,
+    0x1.666666p-61f, 0x1.c32f9cp-8f, 0x1.bf130cp-5f, -0x1.61df1cp-3f,
     /* s = 1/8: node 37 z */
-    -0x1.4p-56f, 0x1.5b417ep-4f, 0x1.4a7ad8p-4f, 0x1.7749a6p-1f,
+    -0x1.666666p-58f, 0x1.5b417ep-4f, 0x1.4a7ad8p-4f, 0x1.7749a6p-1f,
     /* s = 1/8: node 38 x */
-    -0x1.c66666p-59f, 0x1.d11912p-4f, 0x1.0f4dbp-5f, -0x1.111aeep-4f,
+    -0x1.5cccccp-58f, 0x1.d11912p-4f, 0x1.0f4dbp-5f, -0x1.111aeep-4f,
     /* s = 1/8: node 38 y */
-    -0x0p+0f, 0x1.dd5c78p-7f, 0x1.fbbd26p-4f, -0x1.ed1f68p-3f,
+    0x1p-59f, 0x1.dd5c78p-7f, 0x1.fbbd26p-4f, -0x1.ed1f68p-3f,
     /* s = 1/8: node 38 z */
     -0x1.8p-57f, 0x1.2d21bcp-4f, 0x1.112c06p-3f, 0x1.0c8726p+0f,
     /* s = 1/8: node 39 x */
-    -0x1.4b3334p-58f, 0x1.016402p-3f, 0x1.df856ep-9f, 0x1.c092d2p-9f,
+    -0x1.0fb334p-57f, 0x1.016402p-3f, 0x1.df856ep-9f, 0x1.c092d2p-9f,
     /* s = 1/8: node 39 y */
-    0x1.d9999ap-58f, -0x1.552fep-10f, 0x1.193412p-3f, -0x1.12298p-2f,
+    0x1.99999ap-62f, -0x1.552fep-10f, 0x1.193412p-3f, -0x1.12298p-2f,
     /* s = 1/8: node 39 z */
-    -0x1.b33334p-56f, 0x1.1a7a5ep-8f, 0x1.2f2dfap-3f, 0x1.29b2b6p+0f,
+    -0x1.ccccccp-56f, 0x1.1a7a5ep-8f, 0x1.2f2dfap-3f, 0x1.29b2b6p+0f,
     /* s = 1/8: node 40 x */
-    -0x1.59999ap-57f, 0x1.7f008p-4f, -0x1.5a9856p-7f, 0x1.011976p-3f,
+    -0x1.4cccccp-57f, 0x1.7f008p-4f, -0x1.5a9856p-7f, 0x1.011976p-3f,
     /* s = 1/8: node 40 y */
-    0x1.b33334p-58f, -0x1.27ebap-7f, 0x1.d83f08p-4f, -0x1.e3b7b6p-3f,
+    0x1.e66666p-58f, -0x1.27ebap-7f, 0x1.d83f08p-4f, -0x1.e3b7b6p-3f,
     /* s = 1/8: node 40 z */
-    -0x1p-58f, -0x1.12b316p-4f, 0x1.f63feep-4f, 0x1.051aap+0f,
+    -0x0p+0f, -0x1.12b316p-4f, 0x1.f63feep-4f, 0x1.051aap+0f,
     /* s = 1/8: node 41 x */
-    -0x1.d33334p-58f, 0x1.fb3de4p-5f, -0x1.0b0852p-6f, 0x1.5b966cp-3f,
+    -0x1.2p-58f, 0x1.fb3de4p-5f, -0x1.0b0852p-6f, 0x1.5b966cp-3f,
     /* s = 1/8: node 41 y */
-    0x1.a66666p-59f, -0x1.245ba6p-6f, 0x1.f2003ap-5f, -0x1.56058ap-3f,
+    0x1.39999ap-58f, -0x1.245ba6p-6f, 0x1.f2003ap-5f, -0x1.56058ap-3f,
     /* s = 1/8: node 41 z */
-    -0x1.0cccccp-57f, -0x1.38c03cp-4f, 0x1.3f6b5p-4f, 0x1.765078p-1f,
+    -0x1.333334p-58f, -0x1.38c03cp-4f, 0x1.3f6b5p-4f, 0x1.765078p-1f,
     /* s = 1/8: node 42 x */
-    -0x1.466666p-58f, 0x1.7e2e88p-6f, -0x1.660bdep-8f, 0x1.5a7e22p-3f,
+    -0x1.ccccccp-59f, 0x1.7e2e88p-6f, -0x1.660bdep-8f, 0x1.5a7e22p-3f,
     /* s = 1/8: node 42 y */
-    0x1.8p-59f, -0x1.5c9e3ap-7f, 0x1.961c7ep-6f, -0x1.9742p-4f,
+    0x1.0cccccp-58f, -0x1.5c9e3ap-7f, 0x1.961c7ep-6f, -0x1.9742p-4f,
     /* s = 1/8: node 42 z */
-    -0x1.333334p-58f, -0x1.c0ecfp-5f, 0x1.3c1454p-5f, 0x1.947d2cp-2f,
+    0x1.99999ap-61f, -0x1.c0ecfp-5f, 0x1.3c1454p-5f, 0x1.947d2cp-2f,
     /* s = 1/8: node 43 x */
-    -0x1.8p-60f, 0x1.75fc42p-8f, -0x1.5e856p-9f, 0x1.6835cep-4f,
+    -0x1.533334p-59f, 0x1.75fc42p-8f, -0x1.5e856p-9f, 0x1.6835cep-4f,
     /* s = 1/8: node 43 y */
-    0x1.d33334p-60f, -0x1.692328p-7f, 0x1.7c080ap-8f, -0x1.61f9aep-5f,
+    0x1.acccccp-60f, -0x1.692328p-7f, 0x1.7c080ap-8f, -0x1.61f9aep-5f,
     /* s = 1/8: node 43 z */
-    -0x1.ccccccp-60f, -0x1.b6c9d6p-7f, 0x1.1b1fbap-7f, 0x1.2bcba6p-3f,
+    -0x1.19999ap-60f, -0x1.b6c9d6p-7f, 0x1.1b1fbap-7f, 0x1.2bcba6p-3f,
     /* s = 1/8: node 44 x */
-    0x1.666666p-67f, -0x1.1929bcp-13f, 0x1.98e97cp-14f, 0x1.94e818p-12f,
+    0x1.b33334p-68f, -0x1.1929bcp-13f, 0x1.98e97cp-14f, 0x1.94e818p-12f,
     /* s = 1/8: node 44 y */
-    0x1.99999ap-69f, 0x1.3b22p-14f, -0x1.739b2ap-24f, -0x1.bf7a56p-12f,
+    -0x1.99999ap-72f, 0x1.3b22p-14f, -0x1.739b2ap-24f, -0x1.bf7a56p-12f,
     /* s = 1/8: node 44 z */
-    -0x1.ccccccp-66f, 0x1.6309bep-13f, -0x1.793308p-14f, 0x1.37161ep-12f,
+    -0x1.ep-67f, 0x1.6309bep-13f, -0x1.793308p-14f, 0x1.37161ep-12f,
     /* s = 1/8: node 45 x */
-    0x1.b33334p-66f, -0x1.aec686p-13f, -0x1.30231ap-15f, -0x1.2c57d8p-11f,
+    0x1.ecccccp-66f, -0x1.aec686p-13f, -0x1.30231ap-15f, -0x1.2c57d8p-11f,
     /* s = 1/8: node 45 y */
-    0x1.d9999ap-68f, -0x1.2533a8p-14f, 0x1.73f658p-15f, -0x1.413abep-12f,
+    0x1.333334p-68f, -0x1.2533a8p-14f, 0x1.73f658p-15f, -0x1.413abep-12f,
     /* s = 1/8: node 45 z */
-    0x1.4cccccp-68f, -0x1.b2cf8cp-13f, -0x1.220988p-15f, 0x1.9e9652p-12f,
+    0x1.266666p-66f, -0x1.b2cf8cp-13f, -0x1.220988p-15f, 0x1.9e9652p-12f,
     /* s = 1/8: node 46 x */
-    0x1.4p-59f, 0x1.8082acp-8f, -0x1.315d4ep-8f, -0x1.f52982p-4f,
+    0x1.333334p-61f, 0x1.8082acp-8f, -0x1.315d4ep-8f, -0x1.f52982p-4f,
     /* s = 1/8: node 46 y */
-    0x1.4cccccp-61f, 0x1.e7b1eep-8f, 0x1.eadbfcp-8f, -0x1.cbb31cp-6f,
+    0x1.ccccccp-63f, 0x1.e7b1eep-8f, 0x1.eadbfcp-8f, -0x1.cbb31cp-6f,
     /* s = 1/8: node 46 z */
-    -0x1.19999ap-58f, 0x1.a17ed4p-6f, 0x1.49e16ap-7f, 0x1.ad6b7cp-3f,
+    -0x1.59999ap-58f, 0x1.a17ed4p-6f, 0x1.49e16ap-7f, 0x1.ad6b7cp-3f,
     /* s = 1/8: node 47 x */
-    0x1.99999ap-62f, 0x1.5387bep-5f, 0x1.3ed8ep-7f, -0x1.d151dcp-3f,
+    0x1.4cccccp-59f, 0x1.5387bep-5f, 0x1.3ed8ep-7f, -0x1.d151dcp-3f,
     /* s = 1/8: node 47 y */
-    0x1.333334p-61f, 0x1.53a524p-7f, 0x1.1f6e68p-5f, -0x1.f612a8p-5f,
+    0x1.e66666p-60f, 0x1.53a524p-7f, 0x1.1f6e68p-5f, -0x1.f612a8p-5f,
     /* s = 1/8: node 47 z */
-    -0x1.ccccccp-57f, 0x1.4cf8eap-4f, 0x1.b1ebe8p-6f, 0x1.16aa58p-1f,
+    -0x1.99999ap-57f, 0x1.4cf8eap-4f, 0x1.b1ebe8p-6f, 0x1.16aa58p-1f,
     /* s = 1/8: node 48 x */
-    -0x1p-60f, 0x1.c24a12p-4f, 0x1.511384p-7f, -0x1.ea4398p-3f,
+    -0x1.99999ap-60f, 0x1.c24a12p-4f, 0x1.511384p-7f, -0x1.ea4398p-3f,
     /* s = 1/8: node 48 y */
-    0x1.99999ap-64f, 0x1.34d562p-6f, 0x1.861fp-4f, -0x1.d9d23cp-4f,
+    0x1.4p-59f, 0x1.34d562p-6f, 0x1.861fp-4f, -0x1.d9d23cp-4f,
     /* s = 1/8: node 48 z */
-    -0x1.a66666p-56f, 0x1.0296a6p-3f, 0x1.246e34p-4f, 0x1.095022p+0f,
+    -0x1.266666p-55f, 0x1.0296a6p-3f, 0x1.246e34p-4f, 0x1.095022p+0f,
     /* s = 1/8: node 49 x */
-    -0x1.a66666p-58f, 0x1.9c93ecp-3f, 0x1.944aa6p-5f, -0x1.4b589p-3f,
+    -0x1.59999ap-58f, 0x1.9c93ecp-3f, 0x1.944aa6p-5f, -0x1.4b589p-3f,
     /* s = 1/8: node 49 y */
-    -0x0p+0f, 0x1.bffc5ap-5f, 0x1.9d925p-3f, -0x1.2a7252p-3f,
+    -0x1.333334p-62f, 0x1.bffc5ap-5f, 0x1.9d925p-3f, -0x1.2a7252p-3f,
     /* s = 1/8: node 49 z */
-    -0x1.ccccccp-58f, 0x1.94bbbap-4f, 0x1.830fc4p-4f, 0x1.6e41ep+0f,
+    -0x1.e66666p-57f, 0x1.94bbbap-4f, 0x1.830fc4p-4f, 0x1.6e41ep+0f,
     /* s = 1/8: node 50 x */
-    -0x1.ebccccp-56f, 0x1.fbfe2cp-3f, 0x1.43d19ep-9f, 0x1.59ec1p-9f,
+    -0x1.327334p-56f, 0x1.fbfe2cp-3f, 0x1.43d19ep-9f, 0x1.59ec1p-9f,
     /* s = 1/8: node 50 y */
-    0x1.733334p-58f, 0x1.3134e6p-8f, 0x1.95ea8ep-2f, -0x1.7a381p-3f,
+    0x1.4p-57f, 0x1.3134e6p-8f, 0x1.95ea8ep-2f, -0x1.7a381p-3f,
     /* s = 1/8: node 50 z */
-    -0x1.666666p-56f, -0x1.2fef92p-19f, 0x1.e2b208p-4f, 0x1.aada24p+0f,
+    -0x1.e66666p-56f, -0x1.2fef92p-19f, 0x1.e2b208p-4f, 0x1.aada24p+0f,
     /* s = 1/8: node 51 x */
-    -0x1.bcccccp-57f, 0x1.b21ff8p-3f, -0x1.d9c14p-5f, 0x1.42570ep-3f,
+    -0x1.ecccccp-56f, 0x1.b21ff8p-3f, -0x1.d9c14p-5f, 0x1.42570ep-3f,
     /* s = 1/8: node 51 y */
-    0x1.b33334p-58f, -0x1.ed7886p-5f, 0x1.ae68f8p-3f, -0x1.37fe36p-3f,
+    0x1.6cccccp-57f, -0x1.ed7886p-5f, 0x1.ae68f8p-3f, -0x1.37fe36p-3f,
     /* s = 1/8: node 51 z */
-    -0x1.4cccccp-56f, -0x1.5e5968p-4f, 0x1.6d9a62p-4f, 0x1.6ff512p+0f,
+    -0x1.0cccccp-56f, -0x1.5e5968p-4f, 0x1.6d9a62p-4f, 0x1.6ff512p+0f,
     /* s = 1/8: node 52 x */
-    -0x1.066666p-57f, 0x1.d72118p-4f, -0x1.4b9bbcp-7f, 0x1.e1e84cp-3f,
+    -0x1.7p-56f, 0x1.d72118p-4f, -0x1.4b9bbcp-7f, 0x1.e1e84cp-3f,
     /* s = 1/8: node 52 y */
-    0x1.266666p-59f, -0x1.567472p-7f, 0x1.7a06c8p-4f, -0x1.e8a31p-4f,
+    0x1.4p-59f, -0x1.567472p-7f, 0x1.7a06c8p-4f, -0x1.e8a31p-4f,
     /* s = 1/8: node 52 z */
-    -0x1.99999ap-61f, -0x1.f84746p-4f, 0x1.1245e6p-4f, 0x1.043706p+0f,
+    0x1.ccccccp-58f, -0x1.f84746p-4f, 0x1.1245e6p-4f, 0x1.043706p+0f,
     /* s = 1/8: node 53 x */
-    -0x1.8p-58f, 0x1.4df064p-5f, -0x1.08d68cp-7f, 0x1.cdca56p-3f,
+    -0x1.99999ap-60f, 0x1.4df064p-5f, -0x1.08d68cp-7f, 0x1.cdca56p-3f,
     /* s = 1/8: node 53 y */
-    0x1.4cccccp-59f, -0x1.a75a06p-7f, 0x1.2f483ap-5f, -0x1.f37682p-5f,
+    0x1.2p-59f, -0x1.a75a06p-7f, 0x1.2f483ap-5f, -0x1.f37682p-5f,
     /* s = 1/8: node 53 z */
-    -0x1.e66666p-58f, -0x1.45592ep-4f, 0x1.b6116ep-6f, 0x1.150746p-1f,
+    -0x1.99999ap-60f, -0x1.45592ep-4f, 0x1.b6116ep-6f, 0x1.150746p-1f,
     /* s = 1/8: node 54 x */
-    -0x1p-59f, 0x1.19035cp-7f, 0x1.e7e7c8p-10f, 0x1.e296cap-4f,
+    -0x1.99999ap-61f, 0x1.19035cp-7f, 0x1.e7e7c8p-10f, 0x1.e296cap-4f,
     /* s = 1/8: node 54 y */
-    0x1.a66666p-61f, -0x1.93f8b2p-8f, 0x1.cfd0bcp-8f, -0x1.d462f2p-6f,
+    0x1.466666p-60f, -0x1.93f8b2p-8f, 0x1.cfd0bcp-8f, -0x1.d462f2p-6f,
     /* s = 1/8: node 54 z */
-    -0x1.333334p-59f, -0x1.90d288p-6f, 0x1.2aebe8p-7f, 0x1.a6aff6p-3f,
+    -0x1p-60f, -0x1.90d288p-6f, 0x1.2aebe8p-7f, 0x1.a6aff6p-3f,
     /* s = 1/8: node 55 x */
-    0x1.4cccccp-68f, -0x1.c5dc38p-13f, 0x1.af45fcp-15f, 0x1.3c2948p-11f,
+    -0x1.99999ap-72f, -0x1.c5dc38p-13f, 0x1.af45fcp-15f, 0x1.3c2948p-11f,
     /* s = 1/8: node 55 y */
-    -0x1p-70f, 0x1.76c88cp-14f, 0x1.cb7ceep-16f, -0x1.45db2ap-12f,
+    -0x1.b33334p-69f, 0x1.76c88cp-14f, 0x1.cb7ceep-16f, -0x1.45db2ap-12f,
     /* s = 1/8: node 55 z */
-    -0x1.866666p-66f, 0x1.a7eb74p-13f, -0x1.9cf44cp-15f, 0x1.8cf7d2p-12f,
+    -0x1.266666p-66f, 0x1.a7eb74p-13f, -0x1.9cf44cp-15f, 0x1.8cf7d2p-12f,
     /* s = 1/8: node 56 x */
-    0x1.19999ap-65f, -0x1.f918e8p-13f, -0x1.0ad684p-17f, -0x1.2200a4p-11f,
+    0x1.266666p-66f, -0x1.f918e8p-13f, -0x1.0ad684p-17f, -0x1.2200a4p-11f,
     /* s = 1/8: node 56 y */
-    -0x1.333334p-72f, 0x1.738f4cp-17f, 0x1.d94724p-13f, 0x1.afc9p-17f,
+    0x1.026666p-67f, 0x1.738f4cp-17f, 0x1.d94724p-13f, 0x1.afc9p-17f,
     /* s = 1/8: node 56 z */
-    0x1.8cccccp-67f, -0x1.cb2af6p-13f, 0x1.f629p-20f, 0x1.06106p-11f,
+    0x1.99999ap-67f, -0x1.cb2af6p-13f, 0x1.f629p-20f, 0x1.06106p-11f,
     /* s = 1/8: node 57 x */
-    0x1.99999ap-61f, 0x1.947fa4p-8f, 0x1.f37448p-11f, -0x1.1c7fcp-3f,
+    0x1.8p-60f, 0x1.947fa4p-8f, 0x1.f37448p-11f, -0x1.1c7fcp-3f,
     /* s = 1/8: node 57 y */
-    -0x1.4p-66f, 0x1.ab9d6cp-12f, 0x1.85b78ap-7f, 0x1.65829p-10f,
+    0x1.dp-63f, 0x1.ab9d6cp-12f, 0x1.85b78ap-7f, 0x1.65829p-10f,
     /* s = 1/8: node 57 z */
-    -0x1.8p-59f, 0x1.e6d006p-6f, 0x1.bbe556p-13f, 0x1.e7d642p-3f,
+    -0x1.8cccccp-58f, 0x1.e6d006p-6f, 0x1.bbe556p-13f, 0x1.e7d642p-3f,
     /* s = 1/8: node 58 x */
-    -0x1.99999ap-62f, 0x1.a77bfep-5f, -0x1.80eb8ap-11f, -0x1.f32686p-3f,
+    -0x1p-60f, 0x1.a77bfep-5f, -0x1.80eb8ap-11f, -0x1.f32686p-3f,
     /* s = 1/8: node 58 y */
-    0x1.b53334p-61f, 0x1.31c3fap-12f, 0x1.e03ebp-6f, 0x1.038332p-10f,
+    0x1.8f3334p-62f, 0x1.31c3fap-12f, 0x1.e03ebp-6f, 0x1.038332p-10f,
     /* s = 1/8: node 58 z */
-    -0x1.8p-57f, 0x1.78b204p-4f, 0x1.d9a32ep-11f, 0x1.31b9fep-1f,
+    -0x1.79999ap-56f, 0x1.78b204p-4f, 0x1.d9a32ep-11f, 0x1.31b9fep-1f,
     /* s = 1/8: node 59 x */
-    -0x1.ap-57f, 0x1.24132ap-3f, -0x1.54f028p-10f, -0x1.15d4e6p-2f,
+    0x1.99999ap-61f, 0x1.24132ap-3f, -0x1.54f028p-10f, -0x1.15d4e6p-2f,
     /* s = 1/8: node 59 y */
-    -0x1.f0ccccp-60f, 0x1.b2e724p-9f, 0x1.018366p-3f, 0x1.71b3a8p-8f,
+    0x1.1a3334p-58f, 0x1.b2e724p-9f, 0x1.018366p-3f, 0x1.71b3a8p-8f,
     /* s = 1/8: node 59 z */
-    -0x1.333334p-56f, 0x1.2bc3e2p-3f, 0x1.4ce804p-9f, 0x1.2948fcp+0f,
+    -0x1.99999ap-56f, 0x1.2bc3e2p-3f, 0x1.4ce804p-9f, 0x1.2948fcp+0f,
     /* s = 1/8: node 60 x */
-    -0x1.566666p-56f, 0x1.8fad92p-2f, 0x1.978f96p-8f, -0x1.64b226p-3f,
+    -0x1.2b3334p-55f, 0x1.8fad92p-2f, 0x1.978f96p-8f, -0x1.64b226p-3f,
     /* s = 1/8: node 60 y */
-    -0x1.8cb334p-59f, 0x1.45fcb2p-11f, 0x1.f95a8p-3f, 0x1.0e73b6p-10f,
+    0x1.8f3334p-62f, 0x1.45fcb2p-11f, 0x1.f95a8p-3f, 0x1.0e73b6p-10f,
     /* s = 1/8: node 60 z */
-    -0x1.e66666p-56f, 0x1.ddbfcep-4f, 0x1.4da84ep-11f, 0x1.a94d6cp+0f,
+    -0x1.333334p-55f, 0x1.ddbfcep-4f, 0x1.4da84ep-11f, 0x1.a94d6cp+0f,
     /* s = 1/8: node 61 x */
-    -0x1.a9ep-55f, 0x1.a0558cp-1f, -0x1.6f33a6p-9f, -0x1.b1ef6ap-9f,
+    -0x1.22e99ap-54f, 0x1.a0558cp-1f, -0x1.6f33a6p-9f, -0x1.b1ef6ap-9f,
     /* s = 1/8: node 61 y */
-    0x1.004cccp-56f, -0x1.5b2adp-9f, 0x1.a44e7ep-1f, 0x1.a5c2eap-10f,
+    0x1.8e6666p-61f, -0x1.5b2adp-9f, 0x1.a44e7ep-1f, 0x1.a5c2eap-10f,
     /* s = 1/8: node 61 z */
-    -0x1.666666p-56f, -0x1.67910ap-9f, 0x1.38a082p-10f, 0x1.23071ap+1f,
+    0x1.99999ap-59f, -0x1.67910ap-9f, 0x1.38a082p-10f, 0x1.23071ap+1f,
     /* s = 1/8: node 62 x */
-    -0x1.133334p-55f, 0x1.94f5dap-2f, 0x1.7b16aap-12f, 0x1.7d7142p-3f,
+    -0x1.04p-55f, 0x1.94f5dap-2f, 0x1.7b16aap-12f, 0x1.7d7142p-3f,
     /* s = 1/8: node 62 y */
-    0x1.89p-60f, 0x1.3642cep-9f, 0x1.fd4d0ap-3f, 0x1.1ccb92p-11f,
+    -0x1.0f4cccp-59f, 0x1.3642cep-9f, 0x1.fd4d0ap-3f, 0x1.1ccb92p-11f,
     /* s = 1/8: node 62 z */
-    -0x1.99999ap-60f, -0x1.c7f33cp-4f, 0x1.e27a0cp-13f, 0x1.a9d2fep+0f,
+    -0x1.666666p-57f, -0x1.c7f33cp-4f, 0x1.e27a0cp-13f, 0x1.a9d2fep+0f,
     /* s = 1/8: node 63 x */
-    -0x1.666666p-57f, 0x1.19f84p-3f, 0x1.22a03cp-11f, 0x1.14d92ep-2f,
+    -0x1.ccccccp-57f, 0x1.19f84p-3f, 0x1.22a03cp-11f, 0x1.14d92ep-2f,
     /* s = 1/8: node 63 y */
-    0x1.32ccccp-59f, -0x1.8f4d12p-11f, 0x1.e927bcp-4f, 0x1.14db8cp-10f,
+    -0x1.e1999ap-63f, -0x1.8f4d12p-11f, 0x1.e927bcp-4f, 0x1.14db8cp-10f,
     /* s = 1/8: node 63 z */
-    -0x1.333334p-57f, -0x1.2db202p-3f, 0x1.e2661cp-13f, 0x1.27d1b6p+0f,
+    -0x1.99999ap-60f, -0x1.2db202p-3f, 0x1.e2661cp-13f, 0x1.27d1b6p+0f,
     /* s = 1/8: node 64 x */
-    -0x1.b33334p-58f, 0x1.d4a026p-5f, -0x1.2f4d86p-12f, 0x1.efbfa6p-3f,
+    -0x1.0cccccp-58f, 0x1.d4a026p-5f, -0x1.2f4d86p-12f, 0x1.efbfa6p-3f,
     /* s = 1/8: node 64 y */
-    0x1.3fccccp-61f, 0x1.aa1d04p-11f, 0x1.19c6fcp-5f, 0x1.bb8a1cp-13f,
+    0x1.59p-62f, 0x1.aa1d04p-11f, 0x1.19c6fcp-5f, 0x1.bb8a1cp-13f,
     /* s = 1/8: node 64 z */
-    -0x1.ccccccp-59f, -0x1.6cca9ap-4f, -0x1.483f22p-13f, 0x1.316496p-1f,
+    -0x1.99999ap-59f, -0x1.6cca9ap-4f, -0x1.483f22p-13f, 0x1.316496p-1f,
     /* s = 1/8: node 65 x */
-    -0x1.b33334p-60f, 0x1.87d426p-9f, 0x1.1090d2p-11f, 0x1.1c3c18p-3f,
+    -0x1.666666p-59f, 0x1.87d426p-9f, 0x1.1090d2p-11f, 0x1.1c3c18p-3f,
     /* s = 1/8: node 65 y */
-    0x1.6e6666p-63f, -0x1.a29fbap-14f, 0x1.5ff6dap-7f, 0x1.b4df62p-12f,
+    0x1.3cccccp-65f, -0x1.a29fbap-14f, 0x1.5ff6dap-7f, 0x1.b4df62p-12f,
     /* s = 1/8: node 65 z */
-    0x1.333334p-61f, -0x1.f284bep-6f, 0x1.9216c4p-14f, 0x1.e22228p-3f,
+    -0x1.99999ap-59f, -0x1.f284bep-6f, 0x1.9216c4p-14f, 0x1.e22228p-3f,
     /* s = 1/8: node 66 x */
-    0x1p-66f, -0x1.ca09fap-13f, -0x1.8894a8p-18f, 0x1.1e10d8p-11f,
+    0x1.333334p-67f, -0x1.ca09fap-13f, -0x1.8894a8p-18f, 0x1.1e10d8p-11f,
     /* s = 1/8: node 66 y */
-    -0x1.2f3334p-71f, -0x1.9ac93cp-19f, 0x1.970f5ep-13f, 0x1.da7556p-20f,
+    0x1.348p-68f, -0x1.9ac93cp-19f, 0x1.970f5ep-13f, 0x1.da7556p-20f,
     /* s = 1/8: node 66 z */
-    -0x1p-65f, 0x1.d093fcp-13f, 0x1.9acbbp-20f, 0x1.f4995ep-12f,
+    -0x1.39999ap-66f, 0x1.d093fcp-13f, 0x1.9acbbp-20f, 0x1.f4995ep-12f,
     /* s = 1/8: node 67 x */
-    0x1.19999ap-66f, -0x1.b6cb84p-13f, 0x1.6090cep-15f, -0x1.3d19c4p-11f,
+    0x1.79999ap-66f, -0x1.b6cb84p-13f, 0x1.6090cep-15f, -0x1.3d19c4p-11f,
     /* s = 1/8: node 67 y */
-    -0x1.266666p-67f, 0x1.55b414p-14f, 0x1.d4b9cap-16f, 0x1.404d82p-12f,
+    -0x1.79999ap-67f, 0x1.55b414p-14f, 0x1.d4b9cap-16f, 0x1.404d82p-12f,
     /* s = 1/8: node 67 z */
-    0x1.2cccccp-66f, -0x1.c46d6ap-13f, 0x1.34a7aap-15f, 0x1.903a6ap-12f,
+    0x1.733334p-67f, -0x1.c46d6ap-13f, 0x1.34a7aap-15f, 0x1.903a6ap-12f,
     /* s = 1/8: node 68 x */
-    0x1.4cccccp-60f, 0x1.e7fc5ap-8f, 0x1.4dea94p-9f, -0x1.ebf418p-4f,
+    0x1.ccccccp-60f, 0x1.e7fc5ap-8f, 0x1.4dea94p-9f, -0x1.ebf418p-4f,
     /* s = 1/8: node 68 y */
-    -0x1.99999ap-65f, -0x1.8309e8p-8f, 0x1.bf5e04p-8f, 0x1.e30fa8p-6f,
+    0x1.666666p-63f, -0x1.8309e8p-8f, 0x1.bf5e04p-8f, 0x1.e30fa8p-6f,
     /* s = 1/8: node 68 z */
-    -0x1p-59f, 0x1.8cf594p-6f, -0x1.3574a6p-7f, 0x1.aa2baep-3f,
+    -0x1.0cccccp-58f, 0x1.8cf594p-6f, -0x1.3574a6p-7f, 0x1.aa2baep-3f,
     /* s = 1/8: node 69 x */
-    -0x1.333334p-61f, 0x1.51c1p-5f, -0x1.580138p-7f, -0x1.ca7064p-3f,
+    0x1.99999ap-62f, 0x1.51c1p-5f, -0x1.580138p-7f, -0x1.ca7064p-3f,
     /* s = 1/8: node 69 y */
-    0x1.0cccccp-60f, -0x1.7564bcp-7f, 0x1.368f1p-5f, 0x1.06cfep-4f,
+    -0x1.8p-61f, -0x1.7564bcp-7f, 0x1.368f1p-5f, 0x1.06cfep-4f,
     /* s = 1/8: node 69 z */
-    -0x1.a66666p-57f, 0x1.4c239ap-4f, -0x1.9458bap-6f, 0x1.15367ap-1f,
+    -0x1.e66666p-57f, 0x1.4c239ap-4f, -0x1.9458bap-6f, 0x1.15367ap-1f,
     /* s = 1/8: node 70 x */
-    -0x1.ccccccp-59f, 0x1.d43784p-4f, -0x1.114dfp-7f, -0x1.deab08p-3f,
+    -0x1.266666p-57f, 0x1.d43784p-4f, -0x1.114dfp-7f, -0x1.deab08p-3f,
     /* s = 1/8: node 70 y */
-    0x1.4cccccp-60f, -0x1.991cc2p-7f, 0x1.829dc4p-4f, 0x1.ee9388p-4f,
+    -0x1.ccccccp-60f, -0x1.991cc2p-7f, 0x1.829dc4p-4f, 0x1.ee9388p-4f,
     /* s = 1/8: node 70 z */
-    -0x1.2p-55f, 0x1.eedbcap-4f, -0x1.146a18p-4f, 0x1.054d7cp+0f,
+    -0x1.8p-56f, 0x1.eedbcap-4f, -0x1.146a18p-4f, 0x1.054d7cp+0f,
     /* s = 1/8: node 71 x */
-    -0x1.39999ap-56f, 0x1.9b59f2p-3f, -0x1.02f5bp-4f, -0x1.46d74cp-3f,
+    -0x1.ap-57f, 0x1.9b59f2p-3f, -0x1.02f5bp-4f, -0x1.46d74cp-3f,
     /* s = 1/8: node 71 y */
-    0x1.366666p-57f, -0x1.dce90cp-5f, 0x1.a627e2p-3f, 0x1.43d3b4p-3f,
+    0x1.8p-59f, -0x1.dce90cp-5f, 0x1.a627e2p-3f, 0x1.43d3b4p-3f,
     /* s = 1/8: node 71 z */
-    -0x1.59999ap-56f, 0x1.7bc71cp-4f, -0x1.6fe608p-4f, 0x1.6d5b4ap+0f,
+    -0x1.4p-55f, 0x1.7bc71cp-4f, -0x1.6fe608p-4f, 0x1.6d5b4ap+0f,
     /* s = 1/8: node 72 x */
-    -0x1.af0cccp-57f, 0x1.f8e3acp-3f, 0x1.2f165ap-8f, 0x1.f17376p-10f,
+    -0x1.be3334p-57f, 0x1.f8e3acp-3f, 0x1.2f165ap-8f, 0x1.f17376p-10f,
     /* s = 1/8: node 72 y */
-    0x1.5p-57f, 0x1.a1fb0ep-9f, 0x1.935eaap-2f, 0x1.7a97c8p-3f,
+    0x1.cp-59f, 0x1.a1fb0ep-9f, 0x1.935eaap-2f, 0x1.7a97c8p-3f,
     /* s = 1/8: node 72 z */
-    -0x1.333334p-56f, 0x1.b12f14p-10f, -0x1.da82d2p-4f, 0x1.a95bd8p+0f,
+    -0x1.19999ap-55f, 0x1.b12f14p-10f, -0x1.da82d2p-4f, 0x1.a95bd8p+0f,
     /* s = 1/8: node 73 x */
-    -0x1.ap-58f, 0x1.ae780cp-3f, 0x1.d95e8ep-5f, 0x1.3cd936p-3f,
+    -0x1.59999ap-57f, 0x1.ae780cp-3f, 0x1.d95e8ep-5f, 0x1.3cd936p-3f,
     /* s = 1/8: node 73 y */
-    -0x1.cp-59f, 0x1.d5eca8p-5f, 0x1.ae307cp-3f, 0x1.3ce85ap-3f,
+    -0x1.99999ap-61f, 0x1.d5eca8p-5f, 0x1.ae307cp-3f, 0x1.3ce85ap-3f,
     /* s = 1/8: node 73 z */
-    -0x1.0cccccp-56f, -0x1.69c4cp-4f, -0x1.693776p-4f, 0x1.6fdffp+0f,
+    -0x1.99999ap-58f, -0x1.69c4cp-4f, -0x1.693776p-4f, 0x1.6fdffp+0f,
     /* s = 1/8: node 74 x */
-    -0x1.ap-57f, 0x1.da36b2p-4f, 0x1.57c63p-7f, 0x1.e03468p-3f,
+    -0x1.d33334p-57f, 0x1.da36b2p-4f, 0x1.57c63p-7f, 0x1.e03468p-3f,
     /* s = 1/8: node 74 y */
-    0x1.666666p-61f, 0x1.a5ce2ap-7f, 0x1.7b429ap-4f, 0x1.eb1da8p-4f,
+    -0x1.ccccccp-61f, 0x1.a5ce2ap-7f, 0x1.7b429ap-4f, 0x1.eb1da8p-4f,
     /* s = 1/8: node 74 z */
-    -0x1.266666p-56f, -0x1.f3d144p-4f, -0x1.12db76p-4f, 0x1.0405d6p+0f,
+    0x1.19999ap-57f, -0x1.f3d144p-4f, -0x1.12db76p-4f, 0x1.0405d6p+0f,
     /* s = 1/8: node 75 x */
-    -0x1.cp-58f, 0x1.4334bep-5f, 0x1.244c5cp-7f, 0x1.cc22aap-3f,
+    -0x1.e66666p-59f, 0x1.4334bep-5f, 0x1.244c5cp-7f, 0x1.cc22aap-3f,
     /* s = 1/8: node 75 y */
-    -0x1.19999ap-61f, 0x1.8d115cp-7f, 0x1.2d59bp-5f, 0x1.fd34cp-5f,
+    -0x1.8p-61f, 0x1.8d115cp-7f, 0x1.2d59bp-5f, 0x1.fd34cp-5f,
     /* s = 1/8: node 75 z */
-    0x1.ccccccp-59f, -0x1.48f88ep-4f, -0x1.b2a888p-6f, 0x1.150012p-1f,
+    0x1.333334p-59f, -0x1.48f88ep-4f, -0x1.b2a888p-6f, 0x1.150012p-1f,
     /* s = 1/8: node 76 x */
-    -0x1.666666p-59f, 0x1.38ea3ap-7f, -0x1.571696p-9f, 0x1.e25faep-4f,
+    -0x1.ccccccp-60f, 0x1.38ea3ap-7f, -0x1.571696p-9f, 0x1.e25faep-4f,
     /* s = 1/8: node 76 y */
-    -0x1.19999ap-61f, 0x1.b7307p-8f, 0x1.d63326p-8f, 0x1.d8c61ap-6f,
+    -0x1.333334p-60f, 0x1.b7307p-8f, 0x1.d63326p-8f, 0x1.d8c61ap-6f,
     /* s = 1/8: node 76 z */
-    -0x0p+0f, -0x1.896abep-6f, -0x1.309f02p-7f, 0x1.a6ad7ep-3f,
+    0x1.19999ap-59f, -0x1.896abep-6f, -0x1.309f02p-7f, 0x1.a6ad7ep-3f,
     /* s = 1/8: node 77 x */
-    0x1p-66f, -0x1.d6b8cap-13f, -0x1.4d5d26p-15f, 0x1.3b6398p-11f,
+    0x1.666666p-68f, -0x1.d6b8cap-13f, -0x1.4d5d26p-15f, 0x1.3b6398p-11f,
     /* s = 1/8: node 77 y */
-    0x1.666666p-69f, -0x1.5e645cp-14f, 0x1.c8c22ep-16f, 0x1.436bd8p-12f,
+    0x1.e66666p-69f, -0x1.5e645cp-14f, 0x1.c8c22ep-16f, 0x1.436bd8p-12f,
     /* s = 1/8: node 77 z */
-    -0x1.133334p-66f, 0x1.afad3cp-13f, 0x1.833ffep-15f, 0x1.89df48p-12f,
+    -0x1.4p-66f, 0x1.afad3cp-13f, 0x1.833ffep-15f, 0x1.89df48p-12f,
     /* s = 1/8: node 78 x */
-    0x1.e66666p-67f, -0x1.1234fep-13f, 0x1.cb1394p-14f, -0x1.a4433ap-12f,
+    0x1.8cccccp-66f, -0x1.1234fep-13f, 0x1.cb1394p-14f, -0x1.a4433ap-12f,
     /* s = 1/8: node 78 y */
-    -0x1.99999ap-67f, 0x1.5f3daap-14f, -0x1.f7e09p-20f, 0x1.cbef44p-12f,
+    -0x1.4p-67f, 0x1.5f3daap-14f, -0x1.f7e09p-20f, 0x1.cbef44p-12f,
     /* s = 1/8: node 78 z */
-    -0x1.333334p-70f, -0x1.43053ap-13f, 0x1.a38834p-14f, 0x1.36d2c8p-12f,
+    0x1.3p-66f, -0x1.43053ap-13f, 0x1.a38834p-14f, 0x1.36d2c8p-12f,
     /* s = 1/8: node 79 x */
-    0x1.333334p-61f, 0x1.8c754ep-8f, -0x1.ca39dep-9f, -0x1.661332p-4f,
+    0x1.99999ap-63f, 0x1.8c754ep-8f, -0x1.ca39dep-9f, -0x1.661332p-4f,
     /* s = 1/8: node 79 y */
-    0x1.666666p-62f, -0x1.5c354ep-7f, 0x1.8e8d74p-8f, 0x1.6c2a0ep-5f,
+    0x1.ccccccp-61f, -0x1.5c354ep-7f, 0x1.8e8d74p-8f, 0x1.6c2a0ep-5f,
     /* s = 1/8: node 79 z */
-    -0x1.266666p-59f, 0x1.bcc1cap-7f, -0x1.131fc6p-7f, 0x1.2cda7ap-3f,
+    -0x1.99999ap-60f, 0x1.bcc1cap-7f, -0x1.131fc6p-7f, 0x1.2cda7ap-3f,
     /* s = 1/8: node 80 x */
-    -0x1p-61f, 0x1.6d38ccp-6f, -0x1.419728p-8f, -0x1.574e3ep-3f,
+    0x1.333334p-60f, 0x1.6d38ccp-6f, -0x1.419728p-8f, -0x1.574e3ep-3f,
     /* s = 1/8: node 80 y */
-    -0x1.4cccccp-60f, -0x1.743b46p-7f, 0x1.95a908p-6f, 0x1.95973ap-4f,
+    0x1.99999ap-63f, -0x1.743b46p-7f, 0x1.95a908p-6f, 0x1.95973ap-4f,
     /* s = 1/8: node 80 z */
-    -0x1.8cccccp-57f, 0x1.ba6cf8p-5f, -0x1.40c03ep-5f, 0x1.941fb6p-2f,
+    -0x1.99999ap-60f, 0x1.ba6cf8p-5f, -0x1.40c03ep-5f, 0x1.941fb6p-2f,
     /* s = 1/8: node 81 x */
-    -0x1.b33334p-59f, 0x1.f0c8eep-5f, -0x1.1e765p-6f, -0x1.5b4574p-3f,
+    -0x1.8cccccp-59f, 0x1.f0c8eep-5f, -0x1.1e765p-6f, -0x1.5b4574p-3f,
     /* s = 1/8: node 81 y */
-    0x1.99999ap-63f, -0x1.f4726ap-7f, 0x1.f3a0e6p-5f, 0x1.5b4064p-3f,
+    -0x1.333334p-59f, -0x1.f4726ap-7f, 0x1.f3a0e6p-5f, 0x1.5b4064p-3f,
     /* s = 1/8: node 81 z */
-    -0x1.333334p-56f, 0x1.437e02p-4f, -0x1.3d320cp-4f, 0x1.75ec82p-1f,
+    -0x1.6cccccp-56f, 0x1.437e02p-4f, -0x1.3d320cp-4f, 0x1.75ec82p-1f,
     /* s = 1/8: node 82 x */
-    -0x1.333334p-58f, 0x1.881f54p-4f, -0x1.65ac66p-7f, -0x1.e021c4p-4f,
+    -0x1.ecccccp-58f, 0x1.881f54p-4f, -0x1.65ac66p-7f, -0x1.e021c4p-4f,
     /* s = 1/8: node 82 y */
-    0x1.99999ap-60f, -0x1.6f3438p-7f, 0x1.d910f4p-4f, 0x1.e20d18p-3f,
+    -0x1.e66666p-59f, -0x1.6f3438p-7f, 0x1.d910f4p-4f, 0x1.e20d18p-3f,
     /* s = 1/8: node 82 z */
-    -0x1.8p-56f, 0x1.0f16b2p-4f, -0x1.f44d6ap-4f, 0x1.0552bcp+0f,
+    -0x1.4p-56f, 0x1.0f16b2p-4f, -0x1.f44d6ap-4f, 0x1.0552bcp+0f,
     /* s = 1/8: node 83 x */
-    -0x1.02d4ccp-56f, 0x1.ec20cp-4f, -0x1.f1704ap-10f, -0x1.bb01c4p-12f,
+    -0x1.002cccp-57f, 0x1.ec20cp-4f, -0x1.f1704ap-10f, -0x1.bb01c4p-12f,
     /* s = 1/8: node 83 y */
-    -0x1.99999ap-59f, -0x1.5d6842p-12f, 0x1.1c7a3p-3f, 0x1.136e16p-2f,
+    -0x1.19999ap-58f, -0x1.5d6842p-12f, 0x1.1c7a3p-3f, 0x1.136e16p-2f,
     /* s = 1/8: node 83 z */
-    -0x1.733334p-56f, -0x1.371edp-11f, -0x1.2ab0e6p-3f, 0x1.28177ep+0f,
+    -0x1.266666p-56f, -0x1.371edp-11f, -0x1.2ab0e6p-3f, 0x1.28177ep+0f,
     /* s = 1/8: node 84 x */
-    -0x1.19999ap-58f, 0x1.7b6dfp-4f, 0x1.99ed8p-7f, 0x1.e83f1ep-4f,
+    -0x1.7p-57f, 0x1.7b6dfp-4f, 0x1.99ed8p-7f, 0x1.e83f1ep-4f,
     /* s = 1/8: node 84 y */
-    0x1.99999ap-61f, 0x1.5ff124p-7f, 0x1.dac61cp-4f, 0x1.e1538cp-3f,
+    -0x1.333334p-61f, 0x1.5ff124p-7f, 0x1.dac61cp-4f, 0x1.e1538cp-3f,
     /* s = 1/8: node 84 z */
-    -0x1.333334p-57f, -0x1.1033d8p-4f, -0x1.f576bcp-4f, 0x1.040b4ep+0f,
+    -0x1.0cccccp-56f, -0x1.1033d8p-4f, -0x1.f576bcp-4f, 0x1.040b4ep+0f,
     /* s = 1/8: node 85 x */
-    -0x1.99999ap-58f, 0x1.ee7174p-5f, 0x1.1ba796p-6f, 0x1.591b96p-3f,
+    -0x1.333334p-58f, 0x1.ee7174p-5f, 0x1.1ba796p-6f, 0x1.591b96p-3f,
     /* s = 1/8: node 85 y */
-    -0x1.b33334p-60f, 0x1.1a7ebap-6f, 0x1.ee46dap-5f, 0x1.5873c4p-3f,
+    -0x1.f33334p-59f, 0x1.1a7ebap-6f, 0x1.ee46dap-5f, 0x1.5873c4p-3f,
     /* s = 1/8: node 85 z */
-    0x1.99999ap-59f, -0x1.3e5c12p-4f, -0x1.3df4bcp-4f, 0x1.765694p-1f,
+    -0x1.666666p-57f, -0x1.3e5c12p-4f, -0x1.3df4bcp-4f, 0x1.765694p-1f,
     /* s = 1/8: node 86 x */
-    -0x1.2cccccp-58f, 0x1.85e01ep-6f, 0x1.51c9ecp-8f, 0x1.57aa8ep-3f,
+    -0x1.a66666p-59f, 0x1.85e01ep-6f, 0x1.51c9ecp-8f, 0x1.57aa8ep-3f,
     /* s = 1/8: node 86 y */
-    -0x1.ccccccp-60f, 0x1.72645ep-7f, 0x1.9dff36p-6f, 0x1.96e016p-4f,
+    -0x1.99999ap-60f, 0x1.72645ep-7f, 0x1.9dff36p-6f, 0x1.96e016p-4f,
     /* s = 1/8: node 86 z */
-    -0x1.ccccccp-58f, -0x1.bd2d14p-5f, -0x1.3ec95ap-5f, 0x1.940c54p-2f,
+    -0x1.e66666p-58f, -0x1.bd2d14p-5f, -0x1.3ec95ap-5f, 0x1.940c54p-2f,
     /* s = 1/8: node 87 x */
-    -0x1.59999ap-59f, 0x1.34b45p-8f, 0x1.bdeb02p-9f, 0x1.67de42p-4f,
+    -0x1.333334p-59f, 0x1.34b45p-8f, 0x1.bdeb02p-9f, 0x1.67de42p-4f,
     /* s = 1/8: node 87 y */
-    -0x1.4p-61f, 0x1.63ce92p-7f, 0x1.755d12p-8f, 0x1.6693bp-5f,
+    -0x1.8p-61f, 0x1.63ce92p-7f, 0x1.755d12p-8f, 0x1.6693bp-5f,
     /* s = 1/8: node 87 z */
-    -0x1.4cccccp-60f, -0x1.bea90ep-7f, -0x1.1772a2p-7f, 0x1.2c3898p-3f,
+    -0x1.19999ap-60f, -0x1.bea90ep-7f, -0x1.1772a2p-7f, 0x1.2c3898p-3f,
     /* s = 1/8: node 88 x */
-    0x1.19999ap-67f, -0x1.e68d3ap-14f, -0x1.c03d08p-14f, 0x1.a25d92p-12f,
+    0x1.99999ap-72f, -0x1.e68d3ap-14f, -0x1.c03d08p-14f, 0x1.a25d92p-12f,
     /* s = 1/8: node 88 y */
-    0x1.99999ap-70f, -0x1.4517cep-14f, -0x1.ea97d2p-36f, 0x1.c180eap-12f,
+    -0x0p+0f, -0x1.4517cep-14f, -0x1.ea97cap-36f, 0x1.c180eap-12f,
     /* s = 1/8: node 88 z */
-    -0x1p-69f, 0x1.57c9d4p-13f, 0x1.8ad654p-14f, 0x1.3394d6p-12f,
+    -0x1.2cccccp-67f, 0x1.57c9d4p-13f, 0x1.8ad654p-14f, 0x1.3394d6p-12f,
     /* s = 1/8: node 89 x */
-    0x1.4cccccp-68f, -0x1.c66aeep-15f, 0x1.cab5c8p-15f, -0x1.07f244p-12f,
+    0x1.733334p-68f, -0x1.c66aeep-15f, 0x1.cab5c8p-15f, -0x1.07f244p-12f,
     /* s = 1/8: node 89 y */
-    -0x1.19999ap-67f, 0x1.6425aap-14f, -0x1.6f39b6p-15f, 0x1.dc7d82p-12f,
+    -0x1.59999ap-67f, 0x1.6425aap-14f, -0x1.6f39b6p-15f, 0x1.dc7d82p-12f,
     /* s = 1/8: node 89 z */
-    0x1.99999ap-69f, -0x1.1cf652p-13f, 0x1.e99098p-14f, 0x1.d2389cp-13f,
+    0x1.59999ap-68f, -0x1.1cf652p-13f, 0x1.e99098p-14f, 0x1.d2389cp-13f,
     /* s = 1/8: node 90 x */
-    0x1.ccccccp-62f, 0x1.15ac6ep-9f, -0x1.5f4f26p-9f, -0x1.a2ec66p-5f,
+    0x1.99999ap-62f, 0x1.15ac6ep-9f, -0x1.5f4f26p-9f, -0x1.a2ec66p-5f,
     /* s = 1/8: node 90 y */
-    -0x1.4cccccp-62f, -0x1.0bf9c8p-7f, 0x1.23141p-9f, 0x1.6492cep-5f,
+    0x1.8p-62f, -0x1.0bf9c8p-7f, 0x1.23141p-9f, 0x1.6492cep-5f,
     /* s = 1/8: node 90 z */
-    -0x1.4p-60f, 0x1.da5228p-9f, -0x1.b9d592p-9f, 0x1.2959eep-4f,
+    -0x1.2p-59f, 0x1.da5228p-9f, -0x1.b9d592p-9f, 0x1.2959eep-4f,
     /* s = 1/8: node 91 x */
-    0x1.333334p-60f, 0x1.579dcap-7f, -0x1.3574acp-7f, -0x1.94ac66p-4f,
+    -0x1.333334p-62f, 0x1.579dcap-7f, -0x1.3574acp-7f, -0x1.94ac66p-4f,
     /* s = 1/8: node 91 y */
     -0x1.4cccccp-60f, -0x1.0d7a8p-7f, 0x1.52d8dap-7f, 0x1.96c6ecp-4f,
     /* s = 1/8: node 91 z */
-    -0x1p-57f, 0x1.a68be2p-6f, -0x1.9df8ap-6f, 0x1.a9c9acp-3f,
+    -0x1.ccccccp-58f, 0x1.a68be2p-6f, -0x1.9df8ap-6f, 0x1.a9c9acp-3f,
     /* s = 1/8: node 92 x */
-    0x1p-61f, 0x1.977d94p-6f, -0x1.63ff3ap-7f, -0x1.9210dcp-4f,
+    0x1.99999ap-63f, 0x1.977d94p-6f, -0x1.63ff3ap-7f, -0x1.9210dcp-4f,
     /* s = 1/8: node 92 y */
-    -0x1.733334p-59f, -0x1.926f5cp-8f, 0x1.7e2f44p-6f, 0x1.59474p-3f,
+    -0x1.ccccccp-60f, -0x1.926f5cp-8f, 0x1.7e2f44p-6f, 0x1.59474p-3f,
     /* s = 1/8: node 92 z */
-    -0x1.133334p-56f, 0x1.38f9c2p-5f, -0x1.be130ap-5f, 0x1.9454ccp-2f,
+    -0x1.19999ap-57f, 0x1.38f9c2p-5f, -0x1.be130ap-5f, 0x1.9454ccp-2f,
     /* s = 1/8: node 93 x */
-    -0x1.0cccccp-59f, 0x1.218742p-5f, -0x1.ab275ep-7f, -0x1.014ae6p-4f,
+    -0x1.866666p-59f, 0x1.218742p-5f, -0x1.ab275ep-7f, -0x1.014ae6p-4f,
     /* s = 1/8: node 93 y */
-    -0x1.19999ap-59f, -0x1.f961c8p-8f, 0x1.45feeep-5f, 0x1.c9cc18p-3f,
+    -0x1.ccccccp-60f, -0x1.f961c8p-8f, 0x1.45feeep-5f, 0x1.c9cc18p-3f,
     /* s = 1/8: node 93 z */
-    -0x1p-59f, 0x1.c340c8p-6f, -0x1.484df2p-4f, 0x1.13a3b4p-1f,
+    -0x1.f33334p-57f, 0x1.c340c8p-6f, -0x1.484df2p-4f, 0x1.13a3b4p-1f,
     /* s = 1/8: node 94 x */
-    -0x1.5eecccp-59f, 0x1.16a5d8p-5f, 0x1.09990ap-10f, 0x1.afd168p-13f,
+    -0x1.27a666p-59f, 0x1.16a5d8p-5f, 0x1.09990ap-10f, 0x1.afd168p-13f,
     /* s = 1/8: node 94 y */
-    -0x1.333334p-59f, 0x1.1941e2p-11f, 0x1.cec25cp-5f, 0x1.f1a9ep-3f,
+    -0x1.99999ap-63f, 0x1.1941e2p-11f, 0x1.cec25cp-5f, 0x1.f1a9ep-3f,
     /* s = 1/8: node 94 z */
-    -0x1.ccccccp-58f, 0x1.41c19cp-11f, -0x1.70d77ap-4f, 0x1.3149fp-1f,
+    -0x1p-57f, 0x1.41c19cp-11f, -0x1.70d77ap-4f, 0x1.3149fp-1f,
     /* s = 1/8: node 95 x */
-    -0x1.066666p-59f, 0x1.2cd55ep-5f, 0x1.8bc992p-7f, 0x1.fb27b6p-5f,
+    -0x1.a66666p-59f, 0x1.2cd55ep-5f, 0x1.8bc992p-7f, 0x1.fb27b6p-5f,
     /* s = 1/8: node 95 y */
-    -0x1.333334p-61f, 0x1.1b890cp-7f, 0x1.4282f2p-5f, 0x1.ca2aeap-3f,
+    -0x1p-58f, 0x1.1b890cp-7f, 0x1.4282f2p-5f, 0x1.ca2aeap-3f,
     /* s = 1/8: node 95 z */
-    -0x1.19999ap-58f, -0x1.b5bad6p-6f, -0x1.48b09cp-4f, 0x1.150522p-1f,
+    -0x1.4cccccp-57f, -0x1.b5bad6p-6f, -0x1.48b09cp-4f, 0x1.150522p-1f,
     /* s = 1/8: node 96 x */
-    -0x1.19999ap-58f, 0x1.9ce92p-6f, 0x1.6da6ap-7f, 0x1.94ec14p-4f,
+    -0x1.2p-58f, 0x1.9ce92p-6f, 0x1.6da6ap-7f, 0x1.94ec14p-4f,
     /* s = 1/8: node 96 y */
-    -0x1.19999ap-59f, 0x1.6065p-8f, 0x1.876024p-6f, 0x1.590a38p-3f,
+    -0x1.4p-58f, 0x1.6065p-8f, 0x1.876024p-6f, 0x1.590a38p-3f,
     /* s = 1/8: node 96 z */
-    -0x1.99999ap-60f, -0x1.3d657cp-5f, -0x1.be13e2p-5f, 0x1.942bp-2f,
+    -0x1.99999ap-62f, -0x1.3d657cp-5f, -0x1.be13e2p-5f, 0x1.942bp-2f,
     /* s = 1/8: node 97 x */
-    -0x1.ccccccp-61f, 0x1.3f4546p-7f, 0x1.2c2a32p-7f, 0x1.945624p-4f,
+    -0x1.19999ap-59f, 0x1.3f4546p-7f, 0x1.2c2a32p-7f, 0x1.945624p-4f,
     /* s = 1/8: node 97 y */
-    -0x1.333334p-59f, 0x1.2a7e9ap-7f, 0x1.3e5736p-7f, 0x1.937564p-4f,
+    -0x1.333334p-60f, 0x1.2a7e9ap-7f, 0x1.3e5736p-7f, 0x1.937564p-4f,
     /* s = 1/8: node 97 z */
-    -0x1.333334p-61f, -0x1.a34ff2p-6f, -0x1.a28448p-6f, 0x1.a98ea2p-3f,
+    -0x1.99999ap-61f, -0x1.a34ff2p-6f, -0x1.a28448p-6f, 0x1.a98ea2p-3f,
     /* s = 1/8: node 98 x */
-    -0x1.666666p-60f, 0x1.7996f6p-9f, 0x1.6e4472p-9f, 0x1.a1d3acp-5f,
+    -0x1.59999ap-60f, 0x1.7996f6p-9f, 0x1.6e4472p-9f, 0x1.a1d3acp-5f,
     /* s = 1/8: node 98 y */
-    -0x1p-60f, 0x1.10b01cp-7f, 0x1.44a608p-9f, 0x1.6418d8p-5f,
+    -0x1.a66666p-60f, 0x1.10b01cp-7f, 0x1.44a608p-9f, 0x1.6418d8p-5f,
     /* s = 1/8: node 98 z */
-    -0x1.8p-60f, -0x1.d58158p-9f, -0x1.b020fp-9f, 0x1.294e88p-4f,
+    -0x1.333334p-62f, -0x1.d58158p-9f, -0x1.b020fp-9f, 0x1.294e88p-4f,
     /* s = 1/8: node 99 x */
-    -0x1.4p-68f, -0x1.103cbep-14f, -0x1.ece9dep-15f, 0x1.05c614p-12f,
+    -0x1.99999ap-71f, -0x1.103cbep-14f, -0x1.ece9dep-15f, 0x1.05c614p-12f,
     /* s = 1/8: node 99 y */
-    0x1.ccccccp-68f, -0x1.768798p-14f, -0x1.8d1358p-15f, 0x1.dcbe36p-12f,
+    0x1.99999ap-70f, -0x1.768798p-14f, -0x1.8d1358p-15f, 0x1.dcbe36p-12f,
     /* s = 1/8: node 99 z */
-    -0x1.733334p-67f, 0x1.1204f6p-13f, 0x1.f32c5ep-14f, 0x1.d532eep-13f,
+    -0x1.433334p-66f, 0x1.1204f6p-13f, 0x1.f32c5ep-14f, 0x1.d532eep-13f,
     /* s = 1/8: node 100 x */
-    0x1.09999ap-68f, -0x1.18bfc4p-15f, 0x1.000a2cp-14f, -0x1.672b0cp-14f,
+    0x1.866666p-69f, -0x1.18bfc4p-15f, 0x1.000a2cp-14f, -0x1.672b0cp-14f,
     /* s = 1/8: node 100 y */
-    -0x1.59999ap-68f, 0x1.bf9a3ep-16f, -0x1.c26de2p-16f, 0x1.85c798p-13f,
+    -0x1.4cccccp-69f, 0x1.bf9a3ep-16f, -0x1.c26de2p-16f, 0x1.85c798p-13f,
     /* s = 1/8: node 100 z */
-    -0x1.266666p-68f, -0x1.79184ep-14f, 0x1.70d55ep-14f, 0x1.470b2ap-13f,
+    0x1.89999ap-67f, -0x1.79184ep-14f, 0x1.70d55ep-14f, 0x1.470b2ap-13f,
     /* s = 1/8: node 101 x */
-    0x1.99999ap-66f, 0x1.48c3cap-9f, -0x1.500ed8p-8f, -0x1.5973c2p-6f,
+    -0x1.0cccccp-62f, 0x1.48c3cap-9f, -0x1.500ed8p-8f, -0x1.5973c2p-6f,
     /* s = 1/8: node 101 y */
-    0x1.8p-62f, -0x1.3fe122p-8f, 0x1.52d76ep-9f, 0x1.5bdaap-6f,
+    0x1p-63f, -0x1.3fe122p-8f, 0x1.52d76ep-9f, 0x1.5bdaap-6f,
     /* s = 1/8: node 101 z */
-    0x1.99999ap-62f, -0x1.4c8dfep-8f, 0x1.4ee6ecp-8f, 0x1.657a02p-6f,
+    0x1.ccccccp-63f, -0x1.4c8dfep-8f, 0x1.4ee6ecp-8f, 0x1.657a02p-6f,
     /* s = 1/8: node 102 x */
-    0x1.4p-61f, 0x1.22b0fep-9f, -0x1.08d74ep-7f, -0x1.625ed2p-5f,
+    0x1.2p-60f, 0x1.22b0fep-9f, -0x1.08d74ep-7f, -0x1.625ed2p-5f,
     /* s = 1/8: node 102 y */
-    -0x1.99999ap-65f, -0x1.bf7d78p-9f, 0x1.41b3e2p-9f, 0x1.a17b26p-5f,
+    -0x1.99999ap-62f, -0x1.bf7d78p-9f, 0x1.41b3e2p-9f, 0x1.a17b26p-5f,
     /* s = 1/8: node 102 z */
-    -0x1.8p-60f, 0x1.981f4p-9f, -0x1.e9217ap-9f, 0x1.287982p-4f,
+    -0x1.4cccccp-61f, 0x1.981f4p-9f, -0x1.e9217ap-9f, 0x1.287982p-4f,
     /* s = 1/8: node 103 x */
-    0x1.99999ap-66f, 0x1.7a5206p-8f, -0x1.68b7a4p-7f, -0x1.66a74ep-5f,
+    0x1p-62f, 0x1.7a5206p-8f, -0x1.68b7a4p-7f, -0x1.66a74ep-5f,
     /* s = 1/8: node 103 y */
-    -0x1.ccccccp-61f, -0x1.0dbb48p-9f, 0x1.58e6acp-8f, 0x1.64e794p-4f,
+    -0x1.99999ap-61f, -0x1.0dbb48p-9f, 0x1.58e6acp-8f, 0x1.64e794p-4f,
     /* s = 1/8: node 103 z */
-    -0x1.ccccccp-60f, 0x1.2445b4p-7f, -0x1.bcf198p-7f, 0x1.2b9bccp-3f,
+    -0x1.e66666p-59f, 0x1.2445b4p-7f, -0x1.bcf198p-7f, 0x1.2b9bccp-3f,
     /* s = 1/8: node 104 x */
-    0x1.19999ap-62f, 0x1.ed77c8p-8f, -0x1.967604p-8f, -0x1.cf928ep-6f,
+    -0x1.19999ap-62f, 0x1.ed77c8p-8f, -0x1.967604p-8f, -0x1.cf928ep-6f,
     /* s = 1/8: node 104 y */
-    -0x1p-60f, 0x1.9e0b16p-10f, 0x1.1f9936p-7f, 0x1.ead7ccp-4f,
+    -0x1.333334p-61f, 0x1.9e0b16p-10f, 0x1.1f9936p-7f, 0x1.ead7ccp-4f,
     /* s = 1/8: node 104 z */
-    -0x1.99999ap-58f, 0x1.23d174p-7f, -0x1.8c50ap-6f, 0x1.a91e2ap-3f,
+    -0x1.8p-59f, 0x1.23d174p-7f, -0x1.8c50ap-6f, 0x1.a91e2ap-3f,
     /* s = 1/8: node 105 x */
-    -0x1.32p-60f, 0x1.6496b2p-7f, -0x1.a2c306p-12f, -0x1.8c5aep-14f,
+    -0x1.3a199ap-61f, 0x1.6496b2p-7f, -0x1.a2c306p-12f, -0x1.8c5aep-14f,
     /* s = 1/8: node 105 y */
-    -0x1.ccccccp-60f, -0x1.5031d8p-13f, 0x1.b8cddcp-9f, 0x1.19afa2p-3f,
+    -0x1.333334p-60f, -0x1.5031d8p-13f, 0x1.b8cddcp-9f, 0x1.19afa2p-3f,
     /* s = 1/8: node 105 z */
-    -0x1.8p-59f, -0x1.e1b3d8p-13f, -0x1.eba7d6p-6f, 0x1.e246ecp-3f,
+    -0x1.99999ap-63f, -0x1.e1b3d8p-13f, -0x1.eba7d6p-6f, 0x1.e246ecp-3f,
     /* s = 1/8: node 106 x */
-    -0x1.4cccccp-61f, 0x1.d62b4ep-8f, 0x1.ae5d8ap-8f, 0x1.d655eep-6f,
+    -0x1.59999ap-61f, 0x1.d62b4ep-8f, 0x1.ae5d8ap-8f, 0x1.d655eep-6f,
     /* s = 1/8: node 106 y */
     -0x1.19999ap-60f, -0x1.2923e4p-9f, 0x1.3c7c26p-7f, 0x1.e678aap-4f,
     /* s = 1/8: node 106 z */
-    -0x1.99999ap-60f, -0x1.2c45e2p-7f, -0x1.89a53cp-6f, 0x1.a7110ap-3f,
+    -0x1.99999ap-59f, -0x1.2c45e2p-7f, -0x1.89a53cp-6f, 0x1.a7110ap-3f,
     /* s = 1/8: node 107 x */
-    -0x1.2cccccp-60f, 0x1.7345fep-8f, 0x1.628c04p-7f, 0x1.6551dep-5f,
+    -0x1.333334p-61f, 0x1.7345fep-8f, 0x1.628c04p-7f, 0x1.6551dep-5f,
     /* s = 1/8: node 107 y */
-    -0x1.0cccccp-59f, 0x1.a6d04ap-9f, 0x1.305486p-8f, 0x1.65596p-4f,
+    -0x1.f33334p-60f, 0x1.a6d04ap-9f, 0x1.305486p-8f, 0x1.65596p-4f,
     /* s = 1/8: node 107 z */
-    0x1.ccccccp-61f, -0x1.1955e2p-7f, -0x1.bd8f08p-7f, 0x1.2c2202p-3f,
+    -0x1p-59f, -0x1.1955e2p-7f, -0x1.bd8f08p-7f, 0x1.2c2202p-3f,
     /* s = 1/8: node 108 x */
-    -0x1.266666p-61f, 0x1.4322cep-9f, 0x1.0f0f48p-7f, 0x1.63113ap-5f,
+    -0x1.e66666p-62f, 0x1.4322cep-9f, 0x1.0f0f48p-7f, 0x1.63113ap-5f,
     /* s = 1/8: node 108 y */
-    -0x1.4cccccp-60f, 0x1.7b979p-9f, 0x1.8173c6p-9f, 0x1.a4d438p-5f,
+    -0x1.99999ap-61f, 0x1.7b979p-9f, 0x1.8173c6p-9f, 0x1.a4d438p-5f,
     /* s = 1/8: node 108 z */
-    -0x1.666666p-61f, -0x1.ac067ap-9f, -0x1.d62ec2p-9f, 0x1.2990dep-4f,
+    0x1.99999ap-65f, -0x1.ac067ap-9f, -0x1.d62ec2p-9f, 0x1.2990dep-4f,
     /* s = 1/8: node 109 x */
-    -0x1.4p-61f, 0x1.2ca672p-9f, 0x1.3f69aep-8f, 0x1.58edc4p-6f,
+    -0x1.333334p-61f, 0x1.2ca672p-9f, 0x1.3f69aep-8f, 0x1.58edc4p-6f,
     /* s = 1/8: node 109 y */
-    -0x1.033334p-60f, 0x1.3ef112p-8f, 0x1.2d2f24p-9f, 0x1.59018cp-6f,
+    -0x1.666666p-61f, 0x1.3ef112p-8f, 0x1.2d2f24p-9f, 0x1.59018cp-6f,
     /* s = 1/8: node 109 z */
-    -0x1.59999ap-61f, 0x1.4b8526p-8f, 0x1.4c9b48p-8f, 0x1.664582p-6f,
+    -0x1.59999ap-62f, 0x1.4b8526p-8f, 0x1.4c9b48p-8f, 0x1.664582p-6f,
     /* s = 1/8: node 110 x */
-    0x1.0cccccp-70f, -0x1.cbd952p-16f, -0x1.da116p-15f, 0x1.766682p-14f,
+    0x1.19999ap-71f, -0x1.cbd952p-16f, -0x1.da116p-15f, 0x1.766682p-14f,
     /* s = 1/8: node 110 y */
-    -0x1.8p-69f, -0x1.845cap-16f, -0x1.92646cp-16f, 0x1.88d6d6p-13f,
+    -0x1.666666p-69f, -0x1.845cap-16f, -0x1.92646cp-16f, 0x1.88d6d6p-13f,
     /* s = 1/8: node 110 z */
-    -0x1.f9999ap-68f, 0x1.8b2c64p-14f, 0x1.7484fcp-14f, 0x1.415022p-13f,
+    -0x1.ap-68f, 0x1.8b2c64p-14f, 0x1.7484fcp-14f, 0x1.415022p-13f,
     /* s = 1/8: node 111 x */
-    -0x1p-71f, -0x1.667c78p-17f, 0x1.59dd1p-15f, 0x1.9b5498p-14f,
+    -0x1.ccccccp-70f, -0x1.667c78p-17f, 0x1.59dd1p-15f, 0x1.9b5498p-14f,
     /* s = 1/8: node 111 y */
-    -0x1.333334p-71f, 0x1.e82bfap-16f, -0x1.15ce18p-17f, -0x1.a73e66p-14f,
+    -0x1.b33334p-70f, 0x1.e82bfap-16f, -0x1.15ce18p-17f, -0x1.a73e66p-14f,
     /* s = 1/8: node 111 z */
-    -0x1.7e6666p-68f, 0x1.1945f2p-14f, -0x1.199f84p-14f, 0x1.7689dap-17f,
+    -0x1.acp-68f, 0x1.1945f2p-14f, -0x1.199f84p-14f, 0x1.7689dap-17f,
     /* s = 1/8: node 112 x */
-    0x1.0cccccp-69f, -0x1.8fb9c4p-16f, 0x1.ba7384p-16f, -0x1.7f05a6p-13f,
+    0x1.6cccccp-68f, -0x1.8fb9c4p-16f, 0x1.ba7384p-16f, -0x1.7f05a6p-13f,
     /* s = 1/8: node 112 y */
-    -0x1.333334p-68f, 0x1.c8be38p-15f, -0x1.14c1bp-15f, 0x1.67fd9cp-14f,
+    -0x1.1cccccp-67f, 0x1.c8be38p-15f, -0x1.14c1bp-15f, 0x1.67fd9cp-14f,
     /* s = 1/8: node 112 z */
-    0x1.766666p-67f, -0x1.707b4cp-14f, 0x1.80aef4p-14f, 0x1.45611cp-13f,
+    0x1.ccccccp-69f, -0x1.707b4cp-14f, 0x1.80aef4p-14f, 0x1.45611cp-13f,
     /* s = 1/8: node 113 x */
-    0x1.e66666p-67f, -0x1.8cca68p-15f, 0x1.722d02p-14f, -0x1.dc65f4p-12f,
+    0x1p-68f, -0x1.8cca68p-15f, 0x1.722d02p-14f, -0x1.dc65f4p-12f,
     /* s = 1/8: node 113 y */
-    -0x1.133334p-66f, 0x1.1620eep-14f, -0x1.ddda6cp-15f, 0x1.01f0b6p-12f,
+    -0x1.a66666p-67f, 0x1.1620eep-14f, -0x1.ddda6cp-15f, 0x1.01f0b6p-12f,
     /* s = 1/8: node 113 z */
-    0x1.99999ap-69f, -0x1.f6ba7ap-14f, 0x1.0e79ap-13f, 0x1.d68da8p-13f,
+    0x1.4cccccp-68f, -0x1.f6ba7ap-14f, 0x1.0e79ap-13f, 0x1.d68da8p-13f,
     /* s = 1/8: node 114 x */
-    0x1.b33334p-68f, -0x1.795296p-18f, 0x1.417852p-14f, -0x1.ca3b62p-12f,
+    0x1.99999ap-69f, -0x1.795296p-18f, 0x1.417852p-14f, -0x1.ca3b62p-12f,
     /* s = 1/8: node 114 y */
-    -0x1.59999ap-66f, 0x1.7b09a4p-14f, -0x1.04b96ep-13f, 0x1.b08d5ap-12f,
+    -0x1.e66666p-67f, 0x1.7b09a4p-14f, -0x1.04b96ep-13f, 0x1.b08d5ap-12f,
     /* s = 1/8: node 114 z */
-    0x1.733334p-68f, -0x1.73b662p-14f, 0x1.5d9c4ep-13f, 0x1.2db20ep-12f,
+    0x1.b33334p-69f, -0x1.73b662p-14f, 0x1.5d9c4ep-13f, 0x1.2db20ep-12f,
     /* s = 1/8: node 115 x */
-    0x1.0cccccp-68f, 0x1.897ec6p-15f, 0x1.7ca9ecp-14f, -0x1.33682ep-12f,
+    0x1.99999ap-73f, 0x1.897ec6p-15f, 0x1.7ca9ecp-14f, -0x1.33682ep-12f,
     /* s = 1/8: node 115 y */
-    -0x1.d9999ap-67f, 0x1.e62252p-15f, -0x1.ce8c2ep-13f, 0x1.2f4b1p-11f,
+    -0x1.4cccccp-68f, 0x1.e62252p-15f, -0x1.ce8c2ep-13f, 0x1.2f4b1p-11f,
     /* s = 1/8: node 115 z */
-    0x1.333334p-69f, -0x1.ae8b0ep-15f, 0x1.aa980ep-13f, 0x1.976c56p-12f,
+    -0x1.333334p-70f, -0x1.ae8b0ep-15f, 0x1.aa980ep-13f, 0x1.976c56p-12f,
     /* s = 1/8: node 116 x */
-    -0x1.f73334p-69f, 0x1.9c229ep-13f, -0x1.a12288p-18f, -0x1.089ea4p-17f,
+    -0x1.21ccccp-66f, 0x1.9c229ep-13f, -0x1.a12288p-18f, -0x1.089ea4p-17f,
     /* s = 1/8: node 116 y */
-    -0x1.99999ap-69f, -0x1.0cee88p-17f, -0x1.c6b4fap-13f, 0x1.26dcccp-11f,
+    -0x1.0cccccp-66f, -0x1.0cee88p-17f, -0x1.c6b4fap-13f, 0x1.26dcccp-11f,
     /* s = 1/8: node 116 z */
-    -0x1.8p-68f, -0x1.657c24p-20f, 0x1.e0942ap-13f, 0x1.f6324cp-12f,
+    -0x1.ccccccp-68f, -0x1.657c24p-20f, 0x1.e0942ap-13f, 0x1.f6324cp-12f,
     /* s = 1/8: node 117 x */
-    -0x1.f33334p-68f, 0x1.c3bd34p-16f, -0x1.63116cp-14f, 0x1.46909ap-12f,
+    -0x1.a66666p-68f, 0x1.c3bd34p-16f, -0x1.63116cp-14f, 0x1.46909ap-12f,
     /* s = 1/8: node 117 y */
-    -0x1.733334p-67f, -0x1.50aa88p-15f, -0x1.ddc82cp-13f, 0x1.3518a8p-11f,
+    -0x1.8cccccp-67f, -0x1.50aa88p-15f, -0x1.ddc82cp-13f, 0x1.3518a8p-11f,
     /* s = 1/8: node 117 z */
-    -0x1.ccccccp-68f, 0x1.9ad35ap-15f, 0x1.a69384p-13f, 0x1.87a87ep-12f,
+    -0x1.8p-67f, 0x1.9ad35ap-15f, 0x1.a69384p-13f, 0x1.87a87ep-12f,
     /* s = 1/8: node 118 x */
-    -0x1.666666p-69f, 0x1.33d38ap-24f, -0x1.40930ap-14f, 0x1.c1769p-12f,
+    -0x1.8p-67f, 0x1.33d38ap-24f, -0x1.40930ap-14f, 0x1.c1769p-12f,
     /* s = 1/8: node 118 y */
-    -0x1.ccccccp-69f, -0x1.bb7e62p-14f, -0x1.dda23p-14f, 0x1.ab6aap-12f,
+    0x1.19999ap-68f, -0x1.bb7e62p-14f, -0x1.dda23p-14f, 0x1.ab6aap-12f,
     /* s = 1/8: node 118 z */
-    -0x1.2p-67f, 0x1.829dccp-14f, 0x1.5dacbep-13f, 0x1.364134p-12f,
+    -0x1.533334p-67f, 0x1.829dccp-14f, 0x1.5dacbep-13f, 0x1.364134p-12f,
     /* s = 1/8: node 119 x */
-    0x1.99999ap-69f, -0x1.8aa28cp-15f, -0x1.7bbb04p-14f, 0x1.dc0528p-12f,
+    0x1.ccccccp-69f, -0x1.8aa28cp-15f, -0x1.7bbb04p-14f, 0x1.dc0528p-12f,
     /* s = 1/8: node 119 y */
-    -0x0p+0f, -0x1.f31f14p-15f, -0x1.15ed9cp-14f, 0x1.006f8ap-12f,
+    -0x1.666666p-70f, -0x1.f31f14p-15f, -0x1.15ed9cp-14f, 0x1.006f8ap-12f,
     /* s = 1/8: node 119 z */
-    -0x1.39999ap-67f, 0x1.f5eab2p-14f, 0x1.0fe132p-13f, 0x1.d0f3c4p-13f,
+    -0x1.266666p-67f, 0x1.f5eab2p-14f, 0x1.0fe132p-13f, 0x1.d0f3c4p-13f,
     /* s = 1/8: node 120 x */
-    -0x1p-70f, -0x1.980696p-16f, -0x1.728494p-16f, 0x1.8b434p-13f,
+    0x1.333334p-71f, -0x1.980696p-16f, -0x1.728494p-16f, 0x1.8b434p-13f,
     /* s = 1/8: node 120 y */
-    0x1.566666p-68f, -0x1.d85414p-15f, -0x1.c1cb92p-16f, 0x1.7c4b78p-14f,
+    0x1.8p-71f, -0x1.d85414p-15f, -0x1.c1cb92p-16f, 0x1.7c4b78p-14f,
     /* s = 1/8: node 120 z */
-    -0x1.2cccccp-68f, 0x1.7695cep-14f, 0x1.8a11a6p-14f, 0x1.43f212p-13f,
+    -0x1.4p-68f, 0x1.7695cep-14f, 0x1.8a11a6p-14f, 0x1.43f212p-13f,
     /* s = 1/8: node 121 x */
-    -0x1.99999ap-73f, -0x1.48549cp-20f, -0x1.57d0cp-15f, -0x1.c0237p-14f,
+    0x1.266666p-69f, -0x1.48549cp-20f, -0x1.57d0cp-15f, -0x1.c0237p-14f,
     /* s = 1/8: node 121 y */
-    0x1.ccccccp-69f, -0x1.483cfcp-15f, -0x1.69af14p-21f, -0x1.a09a54p-14f,
+    0x1.b33334p-69f, -0x1.483cfcp-15f, -0x1.69af14p-21f, -0x1.a09a54p-14f,
     /* s = 1/8: node 121 z */
-    0x1.d8p-69f, -0x1.30d84p-14f, -0x1.2c8946p-14f, 0x1.b646d6p-17f,
+    0x1.f33334p-69f, -0x1.30d84p-14f, -0x1.2c8946p-14f, 0x1.b646d6p-17f,
     /* s = 2/8: node 1 x */
-    0x1.99999ap-72f, -0x1.215ddcp-17f, -0x1.a247ecp-16f, 0x1.acd33ap-14f,
+    -0x1.333334p-71f, -0x1.215ddcp-17f, -0x1.a247ecp-16f, 0x1.acd33ap-14f,
     /* s = 2/8: node 1 y */
-    -0x1p-71f, -0x1.92164cp-16f, 0x1.10fdeep-19f, 0x1.003394p-13f,
+    0x1.99999ap-70f, -0x1.92164cp-16f, 0x1.10fdeep-19f, 0x1.003394p-13f,
     /* s = 2/8: node 1 z */
-    -0x1.26b334p-67f, 0x1.3abfb6p-14f, 0x1.4ad5c6p-14f, 0x1.400548p-18f,
+    -0x1.1accccp-69f, 0x1.3abfb6p-14f, 0x1.4ad5c6p-14f, 0x1.400548p-18f,
     /* s = 2/8: node 2 x */
-    0x1.333334p-69f, -0x1.280c06p-16f, -0x1.ee18bcp-17f, -0x1.560f6cp-13f,
+    0x1.666666p-69f, -0x1.280c06p-16f, -0x1.ee18bcp-17f, -0x1.560f6cp-13f,
     /* s = 2/8: node 2 y */
-    0x1.666666p-69f, -0x1.6e7ddp-15f, -0x1.220fbp-16f, -0x1.56b976p-14f,
+    0x1.ep-69f, -0x1.6e7ddp-15f, -0x1.220fbp-16f, -0x1.56b976p-14f,
     /* s = 2/8: node 2 z */
-    0x1.133334p-68f, -0x1.752df6p-14f, -0x1.951d4cp-14f, 0x1.3744aep-13f,
+    0x1.acccccp-68f, -0x1.752df6p-14f, -0x1.951d4cp-14f, 0x1.3744aep-13f,
     /* s = 2/8: node 3 x */
-    0x1.4p-67f, -0x1.b56e78p-15f, -0x1.bf0ee8p-14f, -0x1.115d4ep-11f,
+    0x1.e66666p-67f, -0x1.b56e78p-15f, -0x1.bf0ee8p-14f, -0x1.115d4ep-11f,
     /* s = 2/8: node 3 y */
-    0x1.4cccccp-68f, -0x1.28222cp-14f, -0x1.1e1cbcp-14f, -0x1.1042bep-12f,
+    0x1.19999ap-67f, -0x1.28222cp-14f, -0x1.1e1cbcp-14f, -0x1.1042bep-12f,
     /* s = 2/8: node 3 z */
-    0x1.733334p-68f, -0x1.b3c578p-14f, -0x1.e3c0e2p-14f, 0x1.047414p-12f,
+    0x1.8p-69f, -0x1.b3c578p-14f, -0x1.e3c0e2p-14f, 0x1.047414p-12f,
     /* s = 2/8: node 4 x */
-    0x1.266666p-67f, -0x1.6060c8p-15f, -0x1.712528p-14f, -0x1.c351b4p-12f,
+    0x1.ccccccp-69f, -0x1.6060c8p-15f, -0x1.712528p-14f, -0x1.c351b4p-12f,
     /* s = 2/8: node 4 y */
-    0x1.066666p-66f, -0x1.c171cep-14f, -0x1.11f214p-13f, -0x1.95f862p-12f,
+    0x1.99999ap-67f, -0x1.c171cep-14f, -0x1.11f214p-13f, -0x1.95f862p-12f,
     /* s = 2/8: node 4 z */
-    0x1.e66666p-69f, -0x1.5ef2a4p-14f, -0x1.3d897ep-13f, 0x1.05b16cp-12f,
+    -0x1.266666p-68f, -0x1.5ef2a4p-14f, -0x1.3d897ep-13f, 0x1.05b16cp-12f,
     /* s = 2/8: node 5 x */
-    -0x1.6cccccp-68f, 0x1.7bab08p-15f, -0x1.6846c8p-15f, -0x1.526deep-13f,
+    0x1.b33334p-70f, 0x1.7bab08p-15f, -0x1.6846c8p-15f, -0x1.526deep-13f,
     /* s = 2/8: node 5 y */
-    -0x1.d9999ap-69f, 0x1.69751ep-15f, -0x1.ff1c2ep-14f, -0x1.269876p-14f,
+    -0x1.5p-68f, 0x1.69751ep-15f, -0x1.ff1c2ep-14f, -0x1.269876p-14f,
     /* s = 2/8: node 5 z */
-    -0x0p+0f, -0x1.5c26aep-15f, -0x1.ee0854p-14f, 0x1.d8e99ap-13f,
+    -0x1.333334p-70f, -0x1.5c26aep-15f, -0x1.ee0854p-14f, 0x1.d8e99ap-13f,
     /* s = 2/8: node 6 x */
-    -0x1.4a6666p-66f, 0x1.a619ccp-13f, -0x1.ed7f64p-23f, -0x1.258d84p-17f,
+    -0x1.07ccccp-67f, 0x1.a619ccp-13f, -0x1.ed7f64p-23f, -0x1.258d84p-17f,
     /* s = 2/8: node 6 y */
-    0x1.333334p-68f, -0x1.ceb012p-16f, -0x1.db0988p-13f, -0x1.11631cp-11f,
+    0x1.666666p-68f, -0x1.ceb012p-16f, -0x1.db0988p-13f, -0x1.11631cp-11f,
     /* s = 2/8: node 6 z */
-    -0x1.733334p-67f, 0x1.21c2cep-16f, -0x1.b482c6p-13f, 0x1.03c236p-11f,
+    -0x1.19999ap-66f, 0x1.21c2cep-16f, -0x1.b482c6p-13f, 0x1.03c236p-11f,
     /* s = 2/8: node 7 x */
-    -0x1.4p-68f, 0x1.53846ap-15f, 0x1.9c72dp-14f, 0x1.6fc354p-12f,
+    -0x1.a66666p-68f, 0x1.53846ap-15f, 0x1.9c72dp-14f, 0x1.6fc354p-12f,
     /* s = 2/8: node 7 y */
-    -0x1.99999ap-70f, 0x1.7f4122p-15f, -0x1.d809acp-13f, -0x1.3e2d4p-11f,
+    0x1p-68f, 0x1.7f4122p-15f, -0x1.d809acp-13f, -0x1.3e2d4p-11f,
     /* s = 2/8: node 7 z */
-    -0x1.cp-67f, 0x1.0249ep-15f, -0x1.bbd05ep-13f, 0x1.92bbd8p-12f,
+    -0x1.4p-67f, 0x1.0249ep-15f, -0x1.bbd05ep-13f, 0x1.92bbd8p-12f,
     /* s = 2/8: node 8 x */
-    -0x1.666666p-68f, -0x1.81c5ap-23f, 0x1.566df2p-14f, 0x1.b22b8ep-12f,
+    -0x1.4cccccp-68f, -0x1.81c5ap-23f, 0x1.566df2p-14f, 0x1.b22b8ep-12f,
     /* s = 2/8: node 8 y */
-    -0x1.266666p-67f, 0x1.b8e092p-14f, -0x1.03acacp-13f, -0x1.a967b2p-12f,
+    -0x1.99999ap-71f, 0x1.b8e092p-14f, -0x1.03acacp-13f, -0x1.a967b2p-12f,
     /* s = 2/8: node 8 z */
-    -0x1.3p-66f, 0x1.c1cde8p-14f, -0x1.440918p-13f, 0x1.466fc2p-12f,
+    -0x1.266666p-66f, 0x1.c1cde8p-14f, -0x1.440918p-13f, 0x1.466fc2p-12f,
     /* s = 2/8: node 9 x */
-    -0x1.19999ap-68f, -0x1.5e4ddap-15f, 0x1.685e3p-14f, 0x1.e7e15cp-12f,
+    -0x1.99999ap-69f, -0x1.5e4ddap-15f, 0x1.685e3p-14f, 0x1.e7e15cp-12f,
     /* s = 2/8: node 9 y */
-    -0x1.0cccccp-68f, 0x1.dc8666p-15f, -0x1.c27618p-15f, -0x1.f42734p-13f,
+    -0x1.266666p-68f, 0x1.dc8666p-15f, -0x1.c27618p-15f, -0x1.f42734p-13f,
     /* s = 2/8: node 9 z */
-    -0x1.b9999ap-67f, 0x1.e8188p-14f, -0x1.1be1b6p-13f, 0x1.c76676p-13f,
+    -0x1.266666p-66f, 0x1.e8188p-14f, -0x1.1be1b6p-13f, 0x1.c76676p-13f,
     /* s = 2/8: node 10 x */
-    0x1.19999ap-70f, -0x1.b44cccp-16f, 0x1.d1b19ep-16f, 0x1.8696bcp-13f,
+    -0x1.99999ap-70f, -0x1.b44cccp-16f, 0x1.d1b19ep-16f, 0x1.8696bcp-13f,
     /* s = 2/8: node 10 y */
-    -0x1.333334p-72f, 0x1.fe1b6cp-15f, -0x1.2e20aap-15f, -0x1.9d5eep-14f,
+    -0x1.0cccccp-69f, 0x1.fe1b6cp-15f, -0x1.2e20aap-15f, -0x1.9d5eep-14f,
     /* s = 2/8: node 10 z */
-    -0x1.e66666p-68f, 0x1.79cf3ep-14f, -0x1.6ad89cp-14f, 0x1.5b7e74p-13f,
+    -0x1p-67f, 0x1.79cf3ep-14f, -0x1.6ad89cp-14f, 0x1.5b7e74p-13f,
     /* s = 2/8: node 11 x */
-    0x1.2p-68f, -0x1.fc82d2p-17f, 0x1.36643ep-15f, -0x1.f4b95cp-14f,
+    0x1.a66666p-69f, -0x1.fc82d2p-17f, 0x1.36643ep-15f, -0x1.f4b95cp-14f,
     /* s = 2/8: node 11 y */
-    -0x1.99999ap-69f, 0x1.5dd958p-15f, -0x1.379f54p-17f, 0x1.9012ecp-14f,
+    -0x1.e66666p-69f, 0x1.5dd958p-15f, -0x1.379f54p-17f, 0x1.9012ecp-14f,
     /* s = 2/8: node 11 z */
-    0x1.35ccccp-67f, -0x1.2d5d38p-14f, 0x1.009796p-14f, -0x1.fe75d8p-18f,
+    0x1.68ccccp-68f, -0x1.2d5d38p-14f, 0x1.009796p-14f, -0x1.fe75d8p-18f,
     /* s = 2/8: node 12 x */
-    0x1.ccccccp-71f, -0x1.a9c03p-16f, -0x1.4279aep-15f, -0x1.487792p-14f,
+    0x1.666666p-69f, -0x1.a9c03p-16f, -0x1.4279aep-15f, -0x1.487792p-14f,
     /* s = 2/8: node 12 y */
-    0x1.19999ap-68f, -0x1.6ff7ep-16f, -0x1.ef80e6p-17f, -0x1.7889cap-13f,
+    0x1.666666p-70f, -0x1.6ff7ep-16f, -0x1.ef80e6p-17f, -0x1.7889cap-13f,
     /* s = 2/8: node 12 z */
-    0x1.8cccccp-69f, -0x1.835e88p-14f, -0x1.847c56p-14f, 0x1.43a4aap-13f,
+    0x1.266666p-69f, -0x1.835e88p-14f, -0x1.847c56p-14f, 0x1.43a4aap-13f,
     /* s = 2/8: node 13 x */
-    0x1p-62f, 0x1.952b5ap-10f, 0x1.e56e02p-9f, -0x1.582a6p-6f,
+    0x1.e66666p-63f, 0x1.952b5ap-10f, 0x1.e56e02p-9f, -0x1.582a6p-6f,
     /* s = 2/8: node 13 y */
-    0x1.666666p-63f, 0x1.e31424p-9f, 0x1.160b86p-10f, -0x1.5e7bf2p-6f,
+    -0x1.8p-63f, 0x1.e31424p-9f, 0x1.160b86p-10f, -0x1.5e7bf2p-6f,
     /* s = 2/8: node 13 z */
-    0x1.19999ap-63f, -0x1.374628p-8f, -0x1.2e7e32p-8f, 0x1.5deff8p-6f,
+    -0x1p-64f, -0x1.374628p-8f, -0x1.2e7e32p-8f, 0x1.5deff8p-6f,
     /* s = 2/8: node 14 x */
-    0x1.8p-62f, 0x1.3ca6a8p-9f, 0x1.0d1acap-7f, -0x1.6c52c8p-5f,
+    0x1.b33334p-61f, 0x1.3ca6a8p-9f, 0x1.0d1acap-7f, -0x1.6c52c8p-5f,
     /* s = 2/8: node 14 y */
-    0x1.8p-61f, 0x1.fb033ep-9f, 0x1.9c599cp-9f, -0x1.958298p-5f,
+    -0x1p-62f, 0x1.fb033ep-9f, 0x1.9c599cp-9f, -0x1.958298p-5f,
     /* s = 2/8: node 14 z */
-    -0x1.4cccccp-60f, 0x1.d0eeacp-9f, 0x1.f387a4p-9f, 0x1.25535cp-4f,
+    -0x1.333334p-59f, 0x1.d0eeacp-9f, 0x1.f387a4p-9f, 0x1.25535cp-4f,
     /* s = 2/8: node 15 x */
-    0x1.e66666p-62f, 0x1.0aca9ap-9f, 0x1.0f9946p-7f, -0x1.7a7ceep-5f,
+    0x1.4cccccp-61f, 0x1.0aca9ap-9f, 0x1.0f9946p-7f, -0x1.7a7ceep-5f,
     /* s = 2/8: node 15 y */
-    0x1.99999ap-60f, 0x1.3ea11p-10f, 0x1.625368p-9f, -0x1.6ed252p-4f,
+    0x1.333334p-62f, 0x1.3ea11p-10f, 0x1.625368p-9f, -0x1.6ed252p-4f,
     /* s = 2/8: node 15 z */
-    -0x1.e66666p-59f, 0x1.618e9p-7f, 0x1.11a4fap-6f, 0x1.356288p-3f,
+    -0x1.b33334p-58f, 0x1.618e9p-7f, 0x1.11a4fap-6f, 0x1.356288p-3f,
     /* s = 2/8: node 16 x */
-    -0x1.99999ap-63f, 0x1.30ee7ep-7f, 0x1.eafbccp-8f, -0x1.b6148cp-6f,
+    -0x1.333334p-63f, 0x1.30ee7ep-7f, 0x1.eafbccp-8f, -0x1.b6148cp-6f,
     /* s = 2/8: node 16 y */
-    0x1.59999ap-59f, -0x1.2aac16p-7f, 0x1.b166fep-9f, -0x1.008888p-3f,
+    0x1.ccccccp-60f, -0x1.2aac16p-7f, 0x1.b166fep-9f, -0x1.008888p-3f,
     /* s = 2/8: node 16 z */
-    -0x1.99999ap-59f, 0x1.a56c62p-7f, 0x1.c7ee92p-6f, 0x1.b27d8p-3f,
+    -0x1.4cccccp-58f, 0x1.a56c62p-7f, 0x1.c7ee92p-6f, 0x1.b27d8p-3f,
     /* s = 2/8: node 17 x */
-    -0x1.4f3334p-62f, 0x1.a6b0a4p-7f, 0x1.576988p-11f, 0x1.e28942p-11f,
+    -0x1.636666p-60f, 0x1.a6b0a4p-7f, 0x1.576988p-11f, 0x1.e28942p-11f,
     /* s = 2/8: node 17 y */
-    0x1.666666p-60f, 0x1.3b188ep-9f, 0x1.7434fp-8f, -0x1.14488ep-3f,
+    0x1.0cccccp-59f, 0x1.3b188ep-9f, 0x1.7434fp-8f, -0x1.14488ep-3f,
     /* s = 2/8: node 17 z */
-    -0x1.e66666p-59f, 0x1.630e6cp-9f, 0x1.045f96p-5f, 0x1.ed6a7ap-3f,
+    -0x1.b33334p-59f, 0x1.630e6cp-9f, 0x1.045f96p-5f, 0x1.ed6a7ap-3f,
     /* s = 2/8: node 18 x */
-    -0x1.533334p-60f, 0x1.d17458p-8f, -0x1.6e23a4p-8f, 0x1.0498f8p-5f,
+    -0x1.266666p-60f, 0x1.d17458p-8f, -0x1.6e23a4p-8f, 0x1.0498f8p-5f,
     /* s = 2/8: node 18 y */
-    0x1.333334p-61f, 0x1.d63792p-11f, 0x1.e2fc78p-8f, -0x1.f8d214p-4f,
+    -0x1.333334p-62f, 0x1.d63792p-11f, 0x1.e2fc78p-8f, -0x1.f8d214p-4f,
     /* s = 2/8: node 18 z */
-    -0x1.333334p-59f, -0x1.1382acp-7f, 0x1.95d68ap-6f, 0x1.a93d62p-3f,
+    -0x1.ccccccp-60f, -0x1.1382acp-7f, 0x1.95d68ap-6f, 0x1.a93d62p-3f,
     /* s = 2/8: node 19 x */
-    -0x1.466666p-60f, 0x1.b679aep-8f, -0x1.62cd3p-7f, 0x1.6f9f6cp-5f,
+    -0x1.59999ap-61f, 0x1.b679aep-8f, -0x1.62cd3p-7f, 0x1.6f9f6cp-5f,
     /* s = 2/8: node 19 y */
-    0x1.d9999ap-60f, -0x1.b2d204p-9f, 0x1.85bad8p-8f, -0x1.5f047cp-4f,
+    0x1.266666p-60f, -0x1.b2d204p-9f, 0x1.85bad8p-8f, -0x1.5f047cp-4f,
     /* s = 2/8: node 19 z */
-    -0x1.666666p-60f, -0x1.00e02cp-7f, 0x1.b9812ap-7f, 0x1.2cd28p-3f,
+    -0x1.666666p-61f, -0x1.00e02cp-7f, 0x1.b9812ap-7f, 0x1.2cd28p-3f,
     /* s = 2/8: node 20 x */
-    -0x1.e66666p-62f, 0x1.345abep-9f, -0x1.04d4f4p-7f, 0x1.6bdd9p-5f,
+    -0x1.333334p-60f, 0x1.345abep-9f, -0x1.04d4f4p-7f, 0x1.6bdd9p-5f,
     /* s = 2/8: node 20 y */
-    0x1.666666p-62f, -0x1.8be51cp-9f, 0x1.f4a05ap-10f, -0x1.af5a6p-5f,
+    0x1.4p-60f, -0x1.8be51cp-9f, 0x1.f4a05ap-10f, -0x1.af5a6p-5f,
     /* s = 2/8: node 20 z */
-    -0x1.99999ap-62f, -0x1.b8d30cp-9f, 0x1.ceb092p-9f, 0x1.295ca6p-4f,
+    -0x1.333334p-61f, -0x1.b8d30cp-9f, 0x1.ceb092p-9f, 0x1.295ca6p-4f,
     /* s = 2/8: node 21 x */
-    -0x1.666666p-61f, 0x1.6e90ccp-9f, -0x1.52b748p-8f, 0x1.5918aep-6f,
+    -0x1.333334p-61f, 0x1.6e90ccp-9f, -0x1.52b748p-8f, 0x1.5918aep-6f,
     /* s = 2/8: node 21 y */
-    0x1.5p-60f, -0x1.519decp-8f, 0x1.65d49ep-9f, -0x1.509fdep-6f,
+    0x1.8cccccp-62f, -0x1.519decp-8f, 0x1.65d49ep-9f, -0x1.509fdep-6f,
     /* s = 2/8: node 21 z */
-    -0x1.2cccccp-60f, 0x1.51b3b8p-8f, -0x1.516c36p-8f, 0x1.6613fep-6f,
+    -0x1.6p-61f, 0x1.51b3b8p-8f, -0x1.516c36p-8f, 0x1.6613fep-6f,
     /* s = 2/8: node 22 x */
-    0x1.6p-69f, -0x1.30df3ep-15f, 0x1.f8db8p-15f, 0x1.5acb1p-14f,
+    0x1.19999ap-69f, -0x1.30df3ep-15f, 0x1.f8db8p-15f, 0x1.5acb1p-14f,
     /* s = 2/8: node 22 y */
-    0x1.99999ap-73f, 0x1.cfda14p-16f, -0x1.ae1396p-16f, -0x1.7fe1e4p-13f,
+    0x1.ccccccp-71f, 0x1.cfda14p-16f, -0x1.ae1396p-16f, -0x1.7fe1e4p-13f,
     /* s = 2/8: node 22 z */
-    -0x1.19999ap-67f, 0x1.8a4f6ap-14f, -0x1.613a14p-14f, 0x1.56cd76p-13f,
+    -0x1.7cccccp-67f, 0x1.8a4f6ap-14f, -0x1.613a14p-14f, 0x1.56cd76p-13f,
     /* s = 2/8: node 23 x */
-    0x1p-67f, -0x1.dca9ep-15f, -0x1.5d760ep-14f, -0x1.1f8274p-12f,
+    0x1.933334p-67f, -0x1.dca9ep-15f, -0x1.5d760ep-14f, -0x1.1f8274p-12f,
     /* s = 2/8: node 23 y */
-    0x1.e66666p-68f, -0x1.521c3p-14f, -0x1.86f576p-15f, -0x1.eafa5p-12f,
+    0x1p-67f, -0x1.521c3p-14f, -0x1.86f576p-15f, -0x1.eafa5p-12f,
     /* s = 2/8: node 23 z */
-    0x1.666666p-67f, -0x1.e1408cp-14f, -0x1.b0314cp-14f, 0x1.e65dc6p-13f,
+    0x1.99999ap-72f, -0x1.e1408cp-14f, -0x1.b0314cp-14f, 0x1.e65dc6p-13f,
     /* s = 2/8: node 24 x */
-    0x1.333334p-61f, 0x1.93b48ap-10f, 0x1.8f9688p-9f, -0x1.a8dcecp-5f,
+    0x1.666666p-61f, 0x1.93b48ap-10f, 0x1.8f9688p-9f, -0x1.a8dcecp-5f,
     /* s = 2/8: node 24 y */
-    -0x1.99999ap-64f, 0x1.fe611p-8f, 0x1.389f04p-9f, -0x1.6cc40cp-5f,
+    0x1.4p-61f, 0x1.fe611p-8f, 0x1.389f04p-9f, -0x1.6cc40cp-5f,
     /* s = 2/8: node 24 z */
-    -0x1.59999ap-60f, 0x1.228f6cp-8f, 0x1.c665a4p-9f, 0x1.24f422p-4f,
+    -0x1.a66666p-60f, 0x1.228f6cp-8f, 0x1.c665a4p-9f, 0x1.24f422p-4f,
     /* s = 2/8: node 25 x */
-    0x1.333334p-61f, 0x1.bdf5e8p-8f, 0x1.65e67ap-8f, -0x1.9448ccp-4f,
+    0x1.99999ap-62f, 0x1.bdf5e8p-8f, 0x1.65e67ap-8f, -0x1.9448ccp-4f,
     /* s = 2/8: node 25 y */
-    0x1.99999ap-62f, 0x1.246774p-8f, 0x1.de0938p-8f, -0x1.97d3cap-4f,
+    -0x1.666666p-61f, 0x1.246774p-8f, 0x1.de0938p-8f, -0x1.97d3cap-4f,
     /* s = 2/8: node 25 z */
-    -0x1.f33334p-58f, 0x1.ba48bp-6f, 0x1.bf4456p-6f, 0x1.a9d99ap-3f,
+    -0x1.0cccccp-58f, 0x1.ba48bp-6f, 0x1.bf4456p-6f, 0x1.a9d99ap-3f,
     /* s = 2/8: node 26 x */
-    0x1.99999ap-63f, 0x1.bd1538p-6f, 0x1.4c607p-7f, -0x1.a06044p-4f,
+    0x1p-60f, 0x1.bd1538p-6f, 0x1.4c607p-7f, -0x1.a06044p-4f,
     /* s = 2/8: node 26 y */
-    0x1.666666p-60f, 0x1.09d81ap-7f, 0x1.6c85b8p-6f, -0x1.56857ep-3f,
+    0x1.266666p-59f, 0x1.09d81ap-7f, 0x1.6c85b8p-6f, -0x1.56857ep-3f,
     /* s = 2/8: node 26 z */
-    -0x1p-57f, 0x1.5193eep-5f, 0x1.c5d424p-5f, 0x1.8f19ap-2f,
+    -0x1.19999ap-57f, 0x1.5193eep-5f, 0x1.c5d424p-5f, 0x1.8f19ap-2f,
     /* s = 2/8: node 27 x */
-    0x1.666666p-61f, 0x1.ce31e6p-6f, 0x1.cae02p-8f, -0x1.190a36p-4f,
+    -0x1.266666p-59f, 0x1.ce31e6p-6f, 0x1.cae02p-8f, -0x1.190a36p-4f,
     /* s = 2/8: node 27 y */
-    0x1.b33334p-59f, 0x1.21523cp-9f, 0x1.3bc876p-5f, -0x1.c68294p-3f,
+    0x1.333334p-60f, 0x1.21523cp-9f, 0x1.3bc876p-5f, -0x1.c68294p-3f,
     /* s = 2/8: node 27 z */
-    -0x1.666666p-58f, 0x1.214c2p-5f, 0x1.7104ap-4f, 0x1.21fc6ap-1f,
+    -0x1.333334p-57f, 0x1.214c2p-5f, 0x1.7104ap-4f, 0x1.21fc6ap-1f,
     /* s = 2/8: node 28 x */
-    -0x1.633334p-59f, 0x1.042e9ap-5f, 0x1.411722p-11f, 0x1.254932p-7f,
+    -0x1.ca6666p-59f, 0x1.042e9ap-5f, 0x1.411722p-11f, 0x1.254932p-7f,
     /* s = 2/8: node 28 y */
-    0x1.4cccccp-59f, -0x1.b93e9p-11f, 0x1.ba2268p-5f, -0x1.052fe4p-2f,
+    -0x1.333334p-61f, -0x1.b93e9p-11f, 0x1.ba2268p-5f, -0x1.052fe4p-2f,
     /* s = 2/8: node 28 z */
-    -0x1.59999ap-57f, 0x1.9c2112p-9f, 0x1.80ac2cp-4f, 0x1.329b2p-1f,
+    -0x1.8p-58f, 0x1.9c2112p-9f, 0x1.80ac2cp-4f, 0x1.329b2p-1f,
     /* s = 2/8: node 29 x */
-    -0x1.933334p-59f, 0x1.49b662p-5f, -0x1.68ec6ep-7f, 0x1.13db94p-4f,
+    -0x1.09999ap-58f, 0x1.49b662p-5f, -0x1.68ec6ep-7f, 0x1.13db94p-4f,
     /* s = 2/8: node 29 y */
-    0x1.19999ap-59f, -0x1.702b6ap-7f, 0x1.455774p-5f, -0x1.c9b1c4p-3f,
+    0x1.4p-58f, -0x1.702b6ap-7f, 0x1.455774p-5f, -0x1.c9b1c4p-3f,
     /* s = 2/8: node 29 z */
-    -0x1.666666p-59f, -0x1.65da22p-6f, 0x1.519126p-4f, 0x1.178924p-1f,
+    -0x1.0cccccp-57f, -0x1.65da22p-6f, 0x1.519126p-4f, 0x1.178924p-1f,
     /* s = 2/8: node 30 x */
-    -0x1.ccccccp-59f, 0x1.a388cep-6f, -0x1.3f7a6ap-7f, 0x1.a22c72p-4f,
+    -0x1.99999ap-60f, 0x1.a388cep-6f, -0x1.3f7a6ap-7f, 0x1.a22c72p-4f,
     /* s = 2/8: node 30 y */
-    0x1.99999ap-59f, -0x1.3fb99ep-8f, 0x1.6d6b04p-6f, -0x1.5d600cp-3f,
+    0x1.a66666p-59f, -0x1.3fb99ep-8f, 0x1.6d6b04p-6f, -0x1.5d600cp-3f,
     /* s = 2/8: node 30 z */
-    -0x1.b33334p-58f, -0x1.4139d4p-5f, 0x1.bc5c02p-5f, 0x1.931b6cp-2f,
+    -0x1.99999ap-60f, -0x1.4139d4p-5f, 0x1.bc5c02p-5f, 0x1.931b6cp-2f,
     /* s = 2/8: node 31 x */
-    -0x1p-59f, 0x1.75ab7cp-7f, -0x1.212234p-7f, 0x1.9b84cep-4f,
+    -0x1.4cccccp-59f, 0x1.75ab7cp-7f, -0x1.212234p-7f, 0x1.9b84cep-4f,
     /* s = 2/8: node 31 y */
-    0x1.333334p-59f, -0x1.4388e8p-7f, 0x1.523508p-7f, -0x1.8f9c02p-4f,
+    0x1.19999ap-60f, -0x1.4388e8p-7f, 0x1.523508p-7f, -0x1.8f9c02p-4f,
     /* s = 2/8: node 31 z */
-    -0x0p+0f, -0x1.951c42p-6f, 0x1.9d2032p-6f, 0x1.aaa606p-3f,
+    -0x1.99999ap-61f, -0x1.951c42p-6f, 0x1.9d2032p-6f, 0x1.aaa606p-3f,
     /* s = 2/8: node 32 x */
-    -0x1.b33334p-60f, 0x1.2b407ap-9f, -0x1.61ef12p-9f, 0x1.a2a1a6p-5f,
+    -0x1p-60f, 0x1.2b407ap-9f, -0x1.61ef12p-9f, 0x1.a2a1a6p-5f,
     /* s = 2/8: node 32 y */
-    0x1.466666p-60f, -0x1.0b91eap-7f, 0x1.006b62p-9f, -0x1.67493ep-5f,
+    0x1.933334p-60f, -0x1.0b91eap-7f, 0x1.006b62p-9f, -0x1.67493ep-5f,
     /* s = 2/8: node 32 z */
-    -0x1.666666p-61f, -0x1.02ceacp-8f, 0x1.8bfc48p-9f, 0x1.27ef78p-4f,
+    -0x1.ccccccp-61f, -0x1.02ceacp-8f, 0x1.8bfc48p-9f, 0x1.27ef78p-4f,
     /* s = 2/8: node 33 x */
-    -0x1.666666p-70f, -0x1.ba7348p-15f, 0x1.d618a4p-15f, 0x1.150c64p-12f,
+    0x1.4cccccp-69f, -0x1.ba7348p-15f, 0x1.d618a4p-15f, 0x1.150c64p-12f,
     /* s = 2/8: node 33 y */
-    -0x1.333334p-70f, 0x1.7b2906p-14f, -0x1.774b9ep-15f, -0x1.e1936ap-12f,
+    0x1.333334p-69f, 0x1.7b2906p-14f, -0x1.774b9ep-15f, -0x1.e1936ap-12f,
     /* s = 2/8: node 33 z */
-    -0x1.733334p-67f, 0x1.1023b2p-13f, -0x1.f2c5ccp-14f, 0x1.ce42b6p-13f,
+    -0x1.6p-67f, 0x1.1023b2p-13f, -0x1.f2c5ccp-14f, 0x1.ce42b6p-13f,
     /* s = 2/8: node 34 x */
-    0x1.ccccccp-67f, -0x1.0beb5cp-13f, -0x1.419aaap-14f, -0x1.8acab2p-12f,
+    0x1.59999ap-67f, -0x1.0beb5cp-13f, -0x1.419aaap-14f, -0x1.8acab2p-12f,
     /* s = 2/8: node 34 y */
-    0x1.b33334p-67f, -0x1.9f8e6ap-14f, -0x1.f098d6p-16f, -0x1.cae1cap-12f,
+    0x1.59999ap-67f, -0x1.9f8e6ap-14f, -0x1.f098d6p-16f, -0x1.cae1cap-12f,
     /* s = 2/8: node 34 z */
-    0x1.6p-67f, -0x1.33f566p-13f, -0x1.361c44p-14f, 0x1.2b2a26p-12f,
+    -0x0p+0f, -0x1.33f566p-13f, -0x1.361c44p-14f, 0x1.2b2a26p-12f,
     /* s = 2/8: node 35 x */
-    0x1.333334p-62f, 0x1.08eab4p-9f, -0x1.6c02b4p-11f, -0x1.669fccp-4f,
+    0x1.666666p-60f, 0x1.08eab4p-9f, -0x1.6c02b4p-11f, -0x1.669fccp-4f,
     /* s = 2/8: node 35 y */
-    -0x1.333334p-64f, 0x1.325f26p-7f, 0x1.eedef2p-9f, -0x1.7190d2p-5f,
+    -0x1.4p-61f, 0x1.325f26p-7f, 0x1.eedef2p-9f, -0x1.7190d2p-5f,
     /* s = 2/8: node 35 z */
-    -0x1.e66666p-59f, 0x1.01619ep-6f, 0x1.46b038p-7f, 0x1.2a7cfap-3f,
+    -0x1.b33334p-60f, 0x1.01619ep-6f, 0x1.46b038p-7f, 0x1.2a7cfap-3f,
     /* s = 2/8: node 36 x */
-    -0x1p-61f, 0x1.141c72p-6f, 0x1.a6427ap-9f, -0x1.70c3f6p-3f,
+    0x1.4cccccp-60f, 0x1.141c72p-6f, 0x1.a6427ap-9f, -0x1.70c3f6p-3f,
     /* s = 2/8: node 36 y */
-    0x1.333334p-60f, 0x1.89abdap-7f, 0x1.c2e0eep-6f, -0x1.960a62p-4f,
+    0x1.99999ap-61f, 0x1.89abdap-7f, 0x1.c2e0eep-6f, -0x1.960a62p-4f,
     /* s = 2/8: node 36 z */
-    -0x1.666666p-57f, 0x1.e2786ep-5f, 0x1.3b1c5ap-5f, 0x1.97d724p-2f,
+    -0x1.4cccccp-58f, 0x1.e2786ep-5f, 0x1.3b1c5ap-5f, 0x1.97d724p-2f,
     /* s = 2/8: node 37 x */
-    0x1.4p-59f, 0x1.42f09ep-5f, 0x1.646822p-9f, -0x1.700608p-3f,
+    -0x1.19999ap-60f, 0x1.42f09ep-5f, 0x1.646822p-9f, -0x1.700608p-3f,
     /* s = 2/8: node 37 y */
-    0x1.2cccccp-58f, 0x1.8fd16p-8f, 0x1.b7ff26p-5f, -0x1.6327p-3f,
+    0x1.666666p-60f, 0x1.8fd16p-8f, 0x1.b7ff26p-5f, -0x1.6327p-3f,
     /* s = 2/8: node 37 z */
-    -0x1.4p-57f, 0x1.63aecp-4f, 0x1.7564d2p-4f, 0x1.798092p-1f,
+    -0x1.a66666p-57f, 0x1.63aecp-4f, 0x1.7564d2p-4f, 0x1.798092p-1f,
     /* s = 2/8: node 38 x */
-    -0x1.b33334p-58f, 0x1.eb54dcp-4f, 0x1.26e4acp-5f, -0x1.9b922ap-5f,
+    -0x1.2e6666p-57f, 0x1.eb54dcp-4f, 0x1.26e4acp-5f, -0x1.9b922ap-5f,
     /* s = 2/8: node 38 y */
-    0x1.266666p-58f, 0x1.1a8e62p-6f, 0x1.003a44p-3f, -0x1.0bdba2p-2f,
+    0x1.333334p-60f, 0x1.1a8e62p-6f, 0x1.003a44p-3f, -0x1.0bdba2p-2f,
     /* s = 2/8: node 38 z */
-    -0x1.333334p-57f, 0x1.7d18e2p-4f, 0x1.32bdfp-3f, 0x1.108d0cp+0f,
+    -0x1.666666p-56f, 0x1.7d18e2p-4f, 0x1.32bdfp-3f, 0x1.108d0cp+0f,
     /* s = 2/8: node 39 x */
-    -0x1.5a6666p-57f, 0x1.10f75cp-3f, 0x1.81fe78p-8f, 0x1.db237cp-7f,
+    -0x1.373334p-58f, 0x1.10f75cp-3f, 0x1.81fe78p-8f, 0x1.db237cp-7f,
     /* s = 2/8: node 39 y */
-    0x1.0cccccp-58f, -0x1.866a9cp-8f, 0x1.2199a8p-3f, -0x1.15b848p-2f,
+    0x1.99999ap-59f, -0x1.866a9cp-8f, 0x1.2199a8p-3f, -0x1.15b848p-2f,
     /* s = 2/8: node 39 z */
-    -0x1.99999ap-58f, 0x1.3a81a8p-7f, 0x1.2f06dcp-3f, 0x1.2c1a2p+0f,
+    -0x1.333334p-57f, 0x1.3a81a8p-7f, 0x1.2f06dcp-3f, 0x1.2c1a2p+0f,
     /* s = 2/8: node 40 x */
-    -0x1.633334p-57f, 0x1.9491f4p-4f, -0x1.368874p-8f, 0x1.0b9746p-3f,
+    -0x1.033334p-57f, 0x1.9491f4p-4f, -0x1.368874p-8f, 0x1.0b9746p-3f,
     /* s = 2/8: node 40 y */
-    0x1.733334p-58f, -0x1.cc813cp-8f, 0x1.cd74ep-4f, -0x1.e2d3e6p-3f,
+    0x1.59999ap-58f, -0x1.cc813cp-8f, 0x1.cd74ep-4f, -0x1.e2d3e6p-3f,
     /* s = 2/8: node 40 z */
-    -0x1.19999ap-57f, -0x1.03291ep-4f, 0x1.0446aap-3f, 0x1.05630cp+0f,
+    -0x1.59999ap-56f, -0x1.03291ep-4f, 0x1.0446aap-3f, 0x1.05630cp+0f,
     /* s = 2/8: node 41 x */
-    -0x1.133334p-57f, 0x1.02ce84p-4f, -0x1.0cb9fcp-6f, 0x1.5f79ccp-3f,
+    -0x1.b9999ap-58f, 0x1.02ce84p-4f, -0x1.0cb9fcp-6f, 0x1.5f79ccp-3f,
     /* s = 2/8: node 41 y */
-    0x1.cp-59f, -0x1.3790d6p-6f, 0x1.fddc78p-5f, -0x1.57727ap-3f,
+    0x1.e66666p-60f, -0x1.3790d6p-6f, 0x1.fddc78p-5f, -0x1.57727ap-3f,
     /* s = 2/8: node 41 z */
-    -0x1.ccccccp-59f, -0x1.39ed7ep-4f, 0x1.361496p-4f, 0x1.76982ap-1f,
+    -0x1p-58f, -0x1.39ed7ep-4f, 0x1.361496p-4f, 0x1.76982ap-1f,
     /* s = 2/8: node 42 x */
-    -0x1.333334p-58f, 0x1.9ae432p-6f, -0x1.d80dfap-9f, 0x1.5dc85p-3f,
+    -0x1.4cccccp-58f, 0x1.9ae432p-6f, -0x1.d80dfap-9f, 0x1.5dc85p-3f,
     /* s = 2/8: node 42 y */
-    0x1.333334p-62f, -0x1.447542p-7f, 0x1.86435p-6f, -0x1.957b34p-4f,
+    0x1.8cccccp-59f, -0x1.447542p-7f, 0x1.86435p-6f, -0x1.957b34p-4f,
     /* s = 2/8: node 42 z */
-    -0x1.0cccccp-57f, -0x1.bdb988p-5f, 0x1.41d128p-5f, 0x1.9411e2p-2f,
+    0x1.333334p-60f, -0x1.bdb988p-5f, 0x1.41d128p-5f, 0x1.9411e2p-2f,
     /* s = 2/8: node 43 x */
-    -0x1.133334p-59f, 0x1.503266p-8f, -0x1.dfd86p-9f, 0x1.6788b2p-4f,
+    -0x1.2p-59f, 0x1.503266p-8f, -0x1.dfd86p-9f, 0x1.6788b2p-4f,
     /* s = 2/8: node 43 y */
-    0x1.ccccccp-62f, -0x1.6eaabcp-7f, 0x1.8b0482p-8f, -0x1.61823cp-5f,
+    0x1.ap-60f, -0x1.6eaabcp-7f, 0x1.8b0482p-8f, -0x1.61823cp-5f,
     /* s = 2/8: node 43 z */
-    -0x1.19999ap-60f, -0x1.c19ddap-7f, 0x1.fd7f7ep-8f, 0x1.2b6954p-3f,
+    -0x1p-59f, -0x1.c19ddap-7f, 0x1.fd7f7ep-8f, 0x1.2b6954p-3f,
     /* s = 2/8: node 44 x */
-    0x1.266666p-67f, -0x1.0fde2cp-13f, 0x1.a4dd3p-14f, 0x1.87fc38p-12f,
+    0x1.59999ap-67f, -0x1.0fde2cp-13f, 0x1.a4dd3p-14f, 0x1.87fc38p-12f,
     /* s = 2/8: node 44 y */
-    -0x1.19999ap-68f, 0x1.2fcb9p-14f, 0x1.8d542p-19f, -0x1.c1a1dcp-12f,
+    0x1.4cccccp-68f, 0x1.2fcb9p-14f, 0x1.8d542p-19f, -0x1.c1a1dcp-12f,
     /* s = 2/8: node 44 z */
-    -0x1.ecccccp-66f, 0x1.61d9fap-13f, -0x1.8dabep-14f, 0x1.3b0daep-12f,
+    -0x1.233334p-66f, 0x1.61d9fap-13f, -0x1.8dabep-14f, 0x1.3b0daep-12f,
     /* s = 2/8: node 45 x */
-    0x1.166666p-65f, -0x1.e2926p-13f, -0x1.5beb26p-16f, -0x1.35dffcp-11f,
+    0x1.133334p-66f, -0x1.e2926p-13f, -0x1.5beb26p-16f, -0x1.35dffcp-11f,
     /* s = 2/8: node 45 y */
-    0x1.4cccccp-68f, -0x1.4e1026p-14f, 0x1.a6818ep-14f, -0x1.5990bap-12f,
+    0x1.2cccccp-67f, -0x1.4e1026p-14f, 0x1.a6818ep-14f, -0x1.5990bap-12f,
     /* s = 2/8: node 45 z */
-    0x1.cp-67f, -0x1.b54612p-13f, -0x1.3992aap-15f, 0x1.a2b786p-12f,
+    0x1.b33334p-67f, -0x1.b54612p-13f, -0x1.3992aap-15f, 0x1.a2b786p-12f,
     /* s = 2/8: node 46 x */
-    0x1.4cccccp-60f, 0x1.2736bp-8f, -0x1.e8a578p-9f, -0x1.f1bbc4p-4f,
+    0x1.ccccccp-60f, 0x1.2736bp-8f, -0x1.e8a578p-9f, -0x1.f1bbc4p-4f,
     /* s = 2/8: node 46 y */
-    -0x1.99999ap-66f, 0x1.00b432p-7f, 0x1.3f7eecp-7f, -0x1.cec19cp-6f,
+    0x1.99999ap-66f, 0x1.00b432p-7f, 0x1.3f7eecp-7f, -0x1.cec19cp-6f,
     /* s = 2/8: node 46 z */
-    -0x1.59999ap-58f, 0x1.b40c56p-6f, 0x1.3613a6p-7f, 0x1.aa87b6p-3f,
+    -0x1p-60f, 0x1.b40c56p-6f, 0x1.3613a6p-7f, 0x1.aa87b6p-3f,
     /* s = 2/8: node 47 x */
-    -0x1.99999ap-63f, 0x1.42ab2p-5f, 0x1.e9f62cp-14f, -0x1.dc979ap-3f,
+    -0x1.99999ap-60f, 0x1.42ab2p-5f, 0x1.e9f62cp-14f, -0x1.dc979ap-3f,
     /* s = 2/8: node 47 y */
-    -0x1p-62f, 0x1.50731p-7f, 0x1.b6eeaap-6f, -0x1.ec6b9p-5f,
+    0x1p-60f, 0x1.50731p-7f, 0x1.b6eeaap-6f, -0x1.ec6b9p-5f,
     /* s = 2/8: node 47 z */
-    -0x1.066666p-56f, 0x1.64b52p-4f, 0x1.ce8b9ep-6f, 0x1.190698p-1f,
+    -0x1.99999ap-57f, 0x1.64b52p-4f, 0x1.ce8b9ep-6f, 0x1.190698p-1f,
     /* s = 2/8: node 48 x */
-    -0x1.333334p-58f, 0x1.cb82eap-4f, 0x1.f62122p-7f, -0x1.f3c856p-3f,
+    -0x1.0cccccp-57f, 0x1.cb82eap-4f, 0x1.f62122p-7f, -0x1.f3c856p-3f,
     /* s = 2/8: node 48 y */
-    0x1.266666p-59f, 0x1.c32d94p-7f, 0x1.b45c94p-4f, -0x1.e4651p-4f,
+    0x1.e66666p-60f, 0x1.c32d94p-7f, 0x1.b45c94p-4f, -0x1.e4651p-4f,
     /* s = 2/8: node 48 z */
-    -0x1.8p-56f, 0x1.07bfe8p-3f, 0x1.36eb2ep-4f, 0x1.086308p+0f,
+    -0x1.4cccccp-56f, 0x1.07bfe8p-3f, 0x1.36eb2ep-4f, 0x1.086308p+0f,
     /* s = 2/8: node 49 x */
-    -0x1.b9999ap-57f, 0x1.012914p-2f, 0x1.3e9cbp-4f, -0x1.876beep-4f,
+    -0x1.333334p-57f, 0x1.012914p-2f, 0x1.3e9cbp-4f, -0x1.876beep-4f,
     /* s = 2/8: node 49 y */
-    -0x1.333334p-62f, 0x1.6fde36p-4f, 0x1.cc4a72p-3f, -0x1.2c6938p-3f,
+    -0x1.99999ap-64f, 0x1.6fde36p-4f, 0x1.cc4a72p-3f, -0x1.2c6938p-3f,
     /* s = 2/8: node 49 z */
-    -0x1.e66666p-57f, 0x1.d0dcfcp-4f, 0x1.c11aecp-4f, 0x1.7afef2p+0f,
+    -0x1.2cccccp-55f, 0x1.d0dcfcp-4f, 0x1.c11aecp-4f, 0x1.7afef2p+0f,
     /* s = 2/8: node 50 x */
-    -0x1.286666p-56f, 0x1.087782p-2f, 0x1.7bfdd4p-7f, 0x1.393e0ep-7f,
+    -0x1.98999ap-56f, 0x1.087782p-2f, 0x1.7bfdd4p-7f, 0x1.393e0ep-7f,
     /* s = 2/8: node 50 y */
-    0x1.39999ap-57f, 0x1.624ff2p-7f, 0x1.8a6b88p-2f, -0x1.693eaap-3f,
+    0x1.1cccccp-57f, 0x1.624ff2p-7f, 0x1.8a6b88p-2f, -0x1.693eaap-3f,
     /* s = 2/8: node 50 z */
-    -0x1.99999ap-56f, 0x1.d92622p-8f, 0x1.f18cb4p-4f, 0x1.aa4a28p+0f,
+    -0x1.e66666p-56f, 0x1.d92622p-8f, 0x1.f18cb4p-4f, 0x1.aa4a28p+0f,
     /* s = 2/8: node 51 x */
-    -0x1.333334p-56f, 0x1.baaa06p-3f, -0x1.aec37ap-5f, 0x1.4ea42p-3f,
+    -0x1.6cccccp-56f, 0x1.baaa06p-3f, -0x1.aec37ap-5f, 0x1.4ea42p-3f,
     /* s = 2/8: node 51 y */
-    0x1.7p-57f, -0x1.e2a2dp-5f, 0x1.b9c09cp-3f, -0x1.3a6ep-3f,
+    0x1.8cccccp-58f, -0x1.e2a2dp-5f, 0x1.b9c09cp-3f, -0x1.3a6ep-3f,
     /* s = 2/8: node 51 z */
-    -0x1.99999ap-59f, -0x1.5dbap-4f, 0x1.76cdb2p-4f, 0x1.71123cp+0f,
+    -0x1.0cccccp-56f, -0x1.5dbap-4f, 0x1.76cdb2p-4f, 0x1.71123cp+0f,
     /* s = 2/8: node 52 x */
     -0x1.933334p-57f, 0x1.e61ce4p-4f, -0x1.16482ap-7f, 0x1.e830ecp-3f,
     /* s = 2/8: node 52 y */
-    0x1.333334p-59f, -0x1.1c50b2p-7f, 0x1.70d874p-4f, -0x1.e0be88p-4f,
+    0x1p-58f, -0x1.1c50b2p-7f, 0x1.70d874p-4f, -0x1.e0be88p-4f,
     /* s = 2/8: node 52 z */
-    -0x1.8p-57f, -0x1.f480b2p-4f, 0x1.0d49c4p-4f, 0x1.03fbcep+0f,
+    -0x1.333334p-59f, -0x1.f480b2p-4f, 0x1.0d49c4p-4f, 0x1.03fbcep+0f,
     /* s = 2/8: node 53 x */
-    -0x1.cp-58f, 0x1.4b67b2p-5f, -0x1.beb344p-8f, 0x1.ce30fep-3f,
+    -0x1.b33334p-58f, 0x1.4b67b2p-5f, -0x1.beb344p-8f, 0x1.ce30fep-3f,
     /* s = 2/8: node 53 y */
-    0x1.a66666p-59f, -0x1.a6ce94p-7f, 0x1.3af912p-5f, -0x1.f55f58p-5f,
+    0x1p-59f, -0x1.a6ce94p-7f, 0x1.3af912p-5f, -0x1.f55f58p-5f,
     /* s = 2/8: node 53 z */
     0x1.333334p-60f, -0x1.48e842p-4f, 0x1.b49b34p-6f, 0x1.1517d2p-1f,
     /* s = 2/8: node 54 x */
-    -0x1.59999ap-59f, 0x1.4ee244p-7f, 0x1.baebfp-10f, 0x1.e73ef6p-4f,
+    -0x1.99999ap-59f, 0x1.4ee244p-7f, 0x1.baebfp-10f, 0x1.e73ef6p-4f,
     /* s = 2/8: node 54 y */
-    0x1.266666p-60f, -0x1.85301cp-8f, 0x1.b17e82p-8f, -0x1.cee604p-6f,
+    0x1.19999ap-61f, -0x1.85301cp-8f, 0x1.b17e82p-8f, -0x1.cee604p-6f,
     /* s = 2/8: node 54 z */
-    -0x1.333334p-59f, -0x1.8c9a72p-6f, 0x1.1b7f28p-7f, 0x1.a66664p-3f,
+    -0x1.99999ap-60f, -0x1.8c9a72p-6f, 0x1.1b7f28p-7f, 0x1.a66664p-3f,
     /* s = 2/8: node 55 x */
-    -0x1.666666p-69f, -0x1.e5f686p-13f, 0x1.aa406ap-15f, 0x1.3e3cdcp-11f,
+    0x1.59999ap-67f, -0x1.e5f686p-13f, 0x1.aa406ap-15f, 0x1.3e3cdcp-11f,
     /* s = 2/8: node 55 y */
-    -0x1.333334p-71f, 0x1.7b42b2p-14f, 0x1.6208dap-16f, -0x1.3d0134p-12f,
+    -0x1p-69f, 0x1.7b42b2p-14f, 0x1.6208dap-16f, -0x1.3d0134p-12f,
     /* s = 2/8: node 55 z */
-    -0x1.79999ap-66f, 0x1.ba3364p-13f, -0x1.9268c6p-15f, 0x1.90510cp-12f,
+    -0x1.39999ap-66f, 0x1.ba3364p-13f, -0x1.9268c6p-15f, 0x1.90510cp-12f,
     /* s = 2/8: node 56 x */
-    0x1.4p-66f, -0x1.daea5cp-13f, -0x1.b23e54p-15f, -0x1.24d868p-11f,
+    0x1.a66666p-66f, -0x1.daea5cp-13f, -0x1.b23e54p-15f, -0x1.24d868p-11f,
     /* s = 2/8: node 56 y */
-    0x1.e0ccccp-71f, 0x1.699982p-16f, 0x1.15503ap-13f, -0x1.b22072p-20f,
+    0x1.063334p-69f, 0x1.699982p-16f, 0x1.15503ap-13f, -0x1.b22072p-20f,
     /* s = 2/8: node 56 z */
-    0x1.666666p-69f, -0x1.b84046p-13f, -0x1.9ad998p-18f, 0x1.f21fc6p-12f,
+    0x1.d9999ap-67f, -0x1.b84046p-13f, -0x1.9ad998p-18f, 0x1.f21fc6p-12f,
     /* s = 2/8: node 57 x */
-    0x1.19999ap-60f, 0x1.48b42ap-8f, 0x1.ac0312p-9f, -0x1.1cb234p-3f,
+    0x1.4cccccp-59f, 0x1.48b42ap-8f, 0x1.ac0312p-9f, -0x1.1cb234p-3f,
     /* s = 2/8: node 57 y */
-    -0x1.066666p-62f, 0x1.0e7bf6p-10f, 0x1.40cf8cp-7f, 0x1.a97358p-10f,
+    0x1.19999ap-65f, 0x1.0e7bf6p-10f, 0x1.40cf8cp-7f, 0x1.a97358p-10f,
     /* s = 2/8: node 57 z */
-    -0x1.f33334p-58f, 0x1.01002cp-5f, -0x1.6e1812p-11f, 0x1.e622ecp-3f,
+    -0x1.8cccccp-58f, 0x1.01002cp-5f, -0x1.6e1812p-11f, 0x1.e622ecp-3f,
     /* s = 2/8: node 58 x */
-    -0x1p-60f, 0x1.b833eap-5f, -0x1.20ba52p-9f, -0x1.f9f804p-3f,
+    -0x1.333334p-60f, 0x1.b833eap-5f, -0x1.20ba52p-9f, -0x1.f9f804p-3f,
     /* s = 2/8: node 58 y */
-    0x1.7ep-60f, -0x1.0235f2p-9f, 0x1.2b91eep-5f, 0x1.506e52p-9f,
+    0x1.f8p-62f, -0x1.0235f2p-9f, 0x1.2b91eep-5f, 0x1.506e52p-9f,
     /* s = 2/8: node 58 z */
-    -0x1.0cccccp-56f, 0x1.7da72cp-4f, 0x1.65b114p-8f, 0x1.345dc4p-1f,
+    -0x1.ccccccp-57f, 0x1.7da72cp-4f, 0x1.65b114p-8f, 0x1.345dc4p-1f,
     /* s = 2/8: node 59 x */
-    -0x1.99999ap-58f, 0x1.2cc498p-3f, -0x1.a0a438p-12f, -0x1.0f8df6p-2f,
+    -0x1.cp-57f, 0x1.2cc498p-3f, -0x1.a0a438p-12f, -0x1.0f8df6p-2f,
     /* s = 2/8: node 59 y */
-    0x1.d5999ap-61f, 0x1.90ebfap-10f, 0x1.bd3bdp-4f, 0x1.f11f12p-10f,
+    0x1.8cp-61f, 0x1.90ebfap-10f, 0x1.bd3bdp-4f, 0x1.f11f12p-10f,
     /* s = 2/8: node 59 z */
-    -0x1.19999ap-55f, 0x1.3427b6p-3f, -0x1.e115e2p-9f, 0x1.29bc0ap+0f,
+    -0x1.8cccccp-56f, 0x1.3427b6p-3f, -0x1.e115e2p-9f, 0x1.29bc0ap+0f,
     /* s = 2/8: node 60 x */
-    -0x1.e66666p-57f, 0x1.78022p-2f, 0x1.4ab0f8p-8f, -0x1.95861ep-3f,
+    -0x1.ecccccp-57f, 0x1.78022p-2f, 0x1.4ab0f8p-8f, -0x1.95861ep-3f,
     /* s = 2/8: node 60 y */
-    0x1.ab3334p-59f, -0x1.88abf2p-11f, 0x1.0c97ecp-2f, 0x1.cc2388p-10f,
+    -0x1.62p-60f, -0x1.88abf2p-11f, 0x1.0c97ecp-2f, 0x1.cc2388p-10f,
     /* s = 2/8: node 60 z */
-    -0x1.19999ap-56f, 0x1.dc04d8p-4f, 0x1.5ad902p-7f, 0x1.a98ab2p+0f,
+    -0x1.333334p-55f, 0x1.dc04d8p-4f, 0x1.5ad902p-7f, 0x1.a98ab2p+0f,
     /* s = 2/8: node 61 x */
-    -0x1.d40cccp-55f, 0x1.968944p-1f, 0x1.b8aaa4p-8f, -0x1.5b80aap-10f,
+    -0x1.3974ccp-54f, 0x1.968944p-1f, 0x1.b8aaa4p-8f, -0x1.5b80aap-10f,
     /* s = 2/8: node 61 y */
-    0x1.618cccp-56f, 0x1.e08c82p-8f, 0x1.9bde9ep-1f, 0x1.3dae6cp-8f,
+    0x1.5bp-57f, 0x1.e08c82p-8f, 0x1.9bde9ep-1f, 0x1.3dae6cp-8f,
     /* s = 2/8: node 61 z */
-    -0x1.59999ap-55f, -0x1.0a43c6p-9f, 0x1.e5ffdap-9f, 0x1.20c48cp+1f,
+    -0x1.ccccccp-56f, -0x1.0a43c6p-9f, 0x1.e5ffdap-9f, 0x1.20c48cp+1f,
     /* s = 2/8: node 62 x */
-    -0x1.91999ap-55f, 0x1.97f70ep-2f, 0x1.14b45cp-9f, 0x1.8830e2p-3f,
+    -0x1.99999ap-56f, 0x1.97f70ep-2f, 0x1.14b45cp-9f, 0x1.8830e2p-3f,
     /* s = 2/8: node 62 y */
-    0x1.28999ap-59f, 0x1.083efcp-8f, 0x1.00b024p-2f, 0x1.5bd03cp-9f,
+    0x1.19999ap-65f, 0x1.083efcp-8f, 0x1.00b024p-2f, 0x1.5bd03cp-9f,
     /* s = 2/8: node 62 z */
-    -0x1.19999ap-55f, -0x1.c00dc6p-4f, 0x1.27723p-15f, 0x1.aa5ap+0f,
+    -0x1.666666p-56f, -0x1.c00dc6p-4f, 0x1.27723p-15f, 0x1.aa5ap+0f,
     /* s = 2/8: node 63 x */
-    -0x1.4p-58f, 0x1.19cbc8p-3f, 0x1.f5ec3ap-9f, 0x1.147edp-2f,
+    -0x1.2p-57f, 0x1.19cbc8p-3f, 0x1.f5ec3ap-9f, 0x1.147edp-2f,
     /* s = 2/8: node 63 y */
-    -0x1.79999ap-64f, 0x1.73f82cp-10f, 0x1.ee4986p-4f, 0x1.04a0c2p-9f,
+    -0x1.6a6666p-61f, 0x1.73f82cp-10f, 0x1.ee4986p-4f, 0x1.04a0c2p-9f,
     /* s = 2/8: node 63 z */
     -0x1p-57f, -0x1.3195d4p-3f, 0x1.d28de8p-12f, 0x1.27d53ep+0f,
     /* s = 2/8: node 64 x */
-    -0x1.d9999ap-58f, 0x1.e7e1fep-5f, -0x1.6eaaeep-13f, 0x1.f4b47cp-3f,
+    -0x1.4cccccp-58f, 0x1.e7e1fep-5f, -0x1.6eaaeep-13f, 0x1.f4b47cp-3f,
     /* s = 2/8: node 64 y */
-    -0x1.f5999ap-62f, 0x1.19fb46p-10f, 0x1.1a51ccp-5f, 0x1.ae99cp-11f,
+    -0x1.8p-66f, 0x1.19fb46p-10f, 0x1.1a51ccp-5f, 0x1.ae99cp-11f,
     /* s = 2/8: node 64 z */
-    -0x1.4cccccp-58f, -0x1.6a2dbap-4f, -0x1.efdfa8p-11f, 0x1.3170b4p-1f,
+    0x1.99999ap-61f, -0x1.6a2dbap-4f, -0x1.efdfa8p-11f, 0x1.3170b4p-1f,
     /* s = 2/8: node 65 x */
-    -0x1.ccccccp-61f, 0x1.730afep-10f, 0x1.6ad49ap-10f, 0x1.198614p-3f,
+    -0x1p-59f, 0x1.730afep-10f, 0x1.6ad49ap-10f, 0x1.198614p-3f,
     /* s = 2/8: node 65 y */
-    0x1.18p-63f, 0x1.5d67e2p-12f, 0x1.6883b2p-7f, 0x1.acddep-11f,
+    0x1.99999ap-65f, 0x1.5d67e2p-12f, 0x1.6883b2p-7f, 0x1.acddep-11f,
     /* s = 2/8: node 65 z */
-    0x1.99999ap-61f, -0x1.fdd04p-6f, 0x1.8063d6p-13f, 0x1.e12dcap-3f,
+    -0x1.99999ap-63f, -0x1.fdd04p-6f, 0x1.8063d6p-13f, 0x1.e12dcap-3f,
     /* s = 2/8: node 66 x */
-    -0x1.8p-68f, -0x1.a8c9ap-13f, -0x1.780b0ep-17f, 0x1.1f78cp-11f,
+    0x1.666666p-69f, -0x1.a8c9ap-13f, -0x1.780b0ep-17f, 0x1.1f78cp-11f,
     /* s = 2/8: node 66 y */
-    0x1.cf999ap-69f, 0x1.271accp-25f, 0x1.88decp-13f, -0x1.761614p-18f,
+    0x1.8e6666p-69f, 0x1.271accp-25f, 0x1.88decp-13f, -0x1.761614p-18f,
     /* s = 2/8: node 66 z */
-    -0x1.8p-67f, 0x1.bc5602p-13f, 0x1.caf8cap-19f, 0x1.ec176cp-12f,
+    -0x1.133334p-66f, 0x1.bc5602p-13f, 0x1.caf8cap-19f, 0x1.ec176cp-12f,
     /* s = 2/8: node 67 x */
-    0x1.39999ap-66f, -0x1.cd2b74p-13f, 0x1.4d8cd6p-14f, -0x1.3ac68ap-11f,
+    0x1.533334p-66f, -0x1.cd2b74p-13f, 0x1.4d8cd6p-14f, -0x1.3ac68ap-11f,
     /* s = 2/8: node 67 y */
     -0x1.8cccccp-68f, 0x1.871b7ap-14f, 0x1.b0a13cp-15f, 0x1.58c696p-12f,
     /* s = 2/8: node 67 z */
-    -0x1.99999ap-72f, -0x1.b4f582p-13f, 0x1.621e12p-15f, 0x1.9aa77ap-12f,
+    0x1.666666p-67f, -0x1.b4f582p-13f, 0x1.621e12p-15f, 0x1.9aa77ap-12f,
     /* s = 2/8: node 68 x */
-    0x1.4cccccp-60f, 0x1.08eedp-7f, -0x1.424bd6p-11f, -0x1.e9f3c2p-4f,
+    0x1.8p-60f, 0x1.08eedp-7f, -0x1.424bd6p-11f, -0x1.e9f3c2p-4f,
     /* s = 2/8: node 68 y */
-    -0x1.99999ap-66f, -0x1.7ef74ep-8f, 0x1.e632ccp-8f, 0x1.f8944ap-6f,
+    0x1.4cccccp-62f, -0x1.7ef74ep-8f, 0x1.e632ccp-8f, 0x1.f8944ap-6f,
     /* s = 2/8: node 68 z */
-    -0x1.b33334p-59f, 0x1.9937bcp-6f, -0x1.04c27ap-7f, 0x1.aaf972p-3f,
+    -0x1.ccccccp-59f, 0x1.9937bcp-6f, -0x1.04c27ap-7f, 0x1.aaf972p-3f,
     /* s = 2/8: node 69 x */
-    0x1.19999ap-59f, 0x1.54c996p-5f, -0x1.f56416p-8f, -0x1.c8d838p-3f,
+    0x1.b33334p-59f, 0x1.54c996p-5f, -0x1.f56416p-8f, -0x1.c8d838p-3f,
     /* s = 2/8: node 69 y */
-    0x1.8p-61f, -0x1.ad16f8p-7f, 0x1.23c33ep-5f, 0x1.fd09b6p-5f,
+    0x1.19999ap-61f, -0x1.ad16f8p-7f, 0x1.23c33ep-5f, 0x1.fd09b6p-5f,
     /* s = 2/8: node 69 z */
-    -0x1.b33334p-57f, 0x1.4eb776p-4f, -0x1.a1e366p-6f, 0x1.15cdaap-1f,
+    -0x1.f33334p-57f, 0x1.4eb776p-4f, -0x1.a1e366p-6f, 0x1.15cdaap-1f,
     /* s = 2/8: node 70 x */
-    -0x1.733334p-58f, 0x1.c98f82p-4f, -0x1.5d8a4cp-7f, -0x1.e735bcp-3f,
+    -0x1.4p-57f, 0x1.c98f82p-4f, -0x1.5d8a4cp-7f, -0x1.e735bcp-3f,
     /* s = 2/8: node 70 y */
-    -0x1.99999ap-60f, -0x1.1f5bbap-7f, 0x1.8514a8p-4f, 0x1.00c07ap-3f,
+    0x1.99999ap-60f, -0x1.1f5bbap-7f, 0x1.8514a8p-4f, 0x1.00c07ap-3f,
     /* s = 2/8: node 70 z */
     -0x1.4p-56f, 0x1.fd5d5ap-4f, -0x1.eb9902p-5f, 0x1.05eeb8p+0f,
     /* s = 2/8: node 71 x */
-    -0x1.29999ap-57f, 0x1.b0e676p-3f, -0x1.f0e154p-5f, -0x1.2e13cp-3f,
+    -0x1.033334p-56f, 0x1.b0e676p-3f, -0x1.f0e154p-5f, -0x1.2e13cp-3f,
     /* s = 2/8: node 71 y */
-    0x1.6p-58f, -0x1.d1b108p-5f, 0x1.a89b56p-3f, 0x1.40ae3ap-3f,
+    -0x1.333334p-62f, -0x1.d1b108p-5f, 0x1.a89b56p-3f, 0x1.40ae3ap-3f,
     /* s = 2/8: node 71 z */
-    -0x1.4cccccp-57f, 0x1.6c6578p-4f, -0x1.5fe822p-4f, 0x1.6e79f6p+0f,
+    -0x1.666666p-56f, 0x1.6c6578p-4f, -0x1.5fe822p-4f, 0x1.6e79f6p+0f,
     /* s = 2/8: node 72 x */
-    -0x1.17999ap-56f, 0x1.f299eap-3f, 0x1.4c6188p-8f, -0x1.ee3862p-10f,
+    -0x1.39b334p-57f, 0x1.f299eap-3f, 0x1.4c6188p-8f, -0x1.ee3862p-10f,
     /* s = 2/8: node 72 y */
-    0x1.666666p-59f, -0x1.1664aap-10f, 0x1.95d93p-2f, 0x1.7969fap-3f,
+    0x1.f33334p-59f, -0x1.1664aap-10f, 0x1.95d93p-2f, 0x1.7969fap-3f,
     /* s = 2/8: node 72 z */
-    -0x1.4cccccp-56f, 0x1.41cc02p-10f, -0x1.c7a348p-4f, 0x1.a94c6p+0f,
+    -0x1.b33334p-56f, 0x1.41cc02p-10f, -0x1.c7a348p-4f, 0x1.a94c6p+0f,
     /* s = 2/8: node 73 x */
-    -0x1.4p-57f, 0x1.af44e2p-3f, 0x1.f44216p-5f, 0x1.3d6e6ep-3f,
+    -0x1p-56f, 0x1.af44e2p-3f, 0x1.f44216p-5f, 0x1.3d6e6ep-3f,
     /* s = 2/8: node 73 y */
-    -0x1.99999ap-58f, 0x1.f5e538p-5f, 0x1.afd41ep-3f, 0x1.42064p-3f,
+    -0x1.c66666p-58f, 0x1.f5e538p-5f, 0x1.afd41ep-3f, 0x1.42064p-3f,
     /* s = 2/8: node 73 z */
-    -0x1p-57f, -0x1.6ea39ep-4f, -0x1.64cc4cp-4f, 0x1.70044p+0f,
+    -0x1.e66666p-57f, -0x1.6ea39ep-4f, -0x1.64cc4cp-4f, 0x1.70044p+0f,
     /* s = 2/8: node 74 x */
-    -0x1.033334p-56f, 0x1.dfb3b6p-4f, 0x1.719946p-7f, 0x1.e30ff4p-3f,
+    -0x1.133334p-57f, 0x1.dfb3b6p-4f, 0x1.719946p-7f, 0x1.e30ff4p-3f,
     /* s = 2/8: node 74 y */
-    -0x1.99999ap-60f, 0x1.8c1052p-7f, 0x1.7ec88cp-4f, 0x1.ea9c04p-4f,
+    -0x1.e66666p-60f, 0x1.8c1052p-7f, 0x1.7ec88cp-4f, 0x1.ea9c04p-4f,
     /* s = 2/8: node 74 z */
-    0x1.99999ap-59f, -0x1.f40304p-4f, -0x1.128c06p-4f, 0x1.04211ap+0f,
+    -0x1p-57f, -0x1.f40304p-4f, -0x1.128c06p-4f, 0x1.04211ap+0f,
     /* s = 2/8: node 75 x */
-    -0x1.2p-57f, 0x1.3f546ap-5f, 0x1.48ccep-7f, 0x1.cacd4ap-3f,
+    -0x1.8p-58f, 0x1.3f546ap-5f, 0x1.48ccep-7f, 0x1.cacd4ap-3f,
     /* s = 2/8: node 75 y */
-    -0x1.ccccccp-60f, 0x1.c277f6p-7f, 0x1.322bc2p-5f, 0x1.031ddp-4f,
+    -0x1.ccccccp-62f, 0x1.c277f6p-7f, 0x1.322bc2p-5f, 0x1.031ddp-4f,
     /* s = 2/8: node 75 z */
-    -0x1.333334p-57f, -0x1.4c296cp-4f, -0x1.b6eeacp-6f, 0x1.14c1b6p-1f,
+    0x1.ccccccp-59f, -0x1.4c296cp-4f, -0x1.b6eeacp-6f, 0x1.14c1b6p-1f,
     /* s = 2/8: node 76 x */
-    -0x1.266666p-59f, 0x1.5a05ep-7f, -0x1.56f638p-9f, 0x1.e6e50cp-4f,
+    -0x1.a66666p-59f, 0x1.5a05ep-7f, -0x1.56f638p-9f, 0x1.e6e50cp-4f,
     /* s = 2/8: node 76 y */
-    -0x1.19999ap-61f, 0x1.bb3d22p-8f, 0x1.da7496p-8f, 0x1.db5f1ap-6f,
+    -0x1.8cccccp-61f, 0x1.bb3d22p-8f, 0x1.da7496p-8f, 0x1.db5f1ap-6f,
     /* s = 2/8: node 76 z */
-    -0x1.8p-59f, -0x1.8802a2p-6f, -0x1.304682p-7f, 0x1.a6f38cp-3f,
+    -0x1.99999ap-62f, -0x1.8802a2p-6f, -0x1.304682p-7f, 0x1.a6f38cp-3f,
     /* s = 2/8: node 77 x */
-    0x1.ccccccp-68f, -0x1.f5e524p-13f, -0x1.3b01dcp-15f, 0x1.373112p-11f,
+    0x1.99999ap-68f, -0x1.f5e524p-13f, -0x1.3b01dcp-15f, 0x1.373112p-11f,
     /* s = 2/8: node 77 y */
-    0x1.ccccccp-70f, -0x1.7380dap-14f, 0x1.19cd1ap-15f, 0x1.46b802p-12f,
+    0x1.0cccccp-67f, -0x1.7380dap-14f, 0x1.19cd1ap-15f, 0x1.46b802p-12f,
     /* s = 2/8: node 77 z */
-    -0x1.066666p-66f, 0x1.c666c2p-13f, 0x1.b2f754p-15f, 0x1.93dc5p-12f,
+    -0x1.19999ap-66f, 0x1.c666c2p-13f, 0x1.b2f754p-15f, 0x1.93dc5p-12f,
     /* s = 2/8: node 78 x */
-    0x1.99999ap-68f, -0x1.0f8bbap-13f, 0x1.49f65cp-14f, -0x1.ade4f8p-12f,
+    0x1.2p-66f, -0x1.0f8bbap-13f, 0x1.49f65cp-14f, -0x1.ade4f8p-12f,
     /* s = 2/8: node 78 y */
-    -0x1.8p-67f, 0x1.453c6p-14f, -0x1.a5bca2p-19f, 0x1.ba5deap-12f,
+    -0x1.4cccccp-67f, 0x1.453c6p-14f, -0x1.a5bca2p-19f, 0x1.ba5deap-12f,
     /* s = 2/8: node 78 z */
-    0x1.a66666p-67f, -0x1.50740ap-13f, 0x1.a54d12p-14f, 0x1.3159aap-12f,
+    0x1.b33334p-67f, -0x1.50740ap-13f, 0x1.a54d12p-14f, 0x1.3159aap-12f,
     /* s = 2/8: node 79 x */
-    0x1.ccccccp-61f, 0x1.7f19e8p-8f, -0x1.d33f38p-10f, -0x1.64df2cp-4f,
+    0x1.8cccccp-60f, 0x1.7f19e8p-8f, -0x1.d33f38p-10f, -0x1.64df2cp-4f,
     /* s = 2/8: node 79 y */
     0x1.b33334p-62f, -0x1.737838p-7f, 0x1.6afec2p-8f, 0x1.67cd1cp-5f,
     /* s = 2/8: node 79 z */
-    -0x1.ccccccp-60f, 0x1.bc47e2p-7f, -0x1.0e6d12p-7f, 0x1.2cd196p-3f,
+    -0x1.4cccccp-58f, 0x1.bc47e2p-7f, -0x1.0e6d12p-7f, 0x1.2cd196p-3f,
     /* s = 2/8: node 80 x */
-    0x1p-59f, 0x1.670532p-6f, -0x1.a5787ap-8f, -0x1.5ac4c8p-3f,
+    0x1.8p-59f, 0x1.670532p-6f, -0x1.a5787ap-8f, -0x1.5ac4c8p-3f,
     /* s = 2/8: node 80 y */
-    -0x1.99999ap-63f, -0x1.512298p-7f, 0x1.975b1p-6f, 0x1.9f5c4cp-4f,
+    -0x1.19999ap-60f, -0x1.512298p-7f, 0x1.975b1p-6f, 0x1.9f5c4cp-4f,
     /* s = 2/8: node 80 z */
-    -0x1.666666p-57f, 0x1.c0fa34p-5f, -0x1.2f6796p-5f, 0x1.96015p-2f,
+    -0x1.f33334p-57f, 0x1.c0fa34p-5f, -0x1.2f6796p-5f, 0x1.96015p-2f,
     /* s = 2/8: node 81 x */
-    -0x1.99999ap-59f, 0x1.fe4744p-5f, -0x1.18aa8ep-6f, -0x1.55beccp-3f,
+    -0x1.4cccccp-58f, 0x1.fe4744p-5f, -0x1.18aa8ep-6f, -0x1.55beccp-3f,
     /* s = 2/8: node 81 y */
-    -0x1p-60f, -0x1.1e05fap-6f, 0x1.f20058p-5f, 0x1.577644p-3f,
+    0x1.333334p-62f, -0x1.1e05fap-6f, 0x1.f20058p-5f, 0x1.577644p-3f,
     /* s = 2/8: node 81 z */
-    -0x1.59999ap-56f, 0x1.3de02cp-4f, -0x1.3a7dccp-4f, 0x1.76474ap-1f,
+    -0x1.8cccccp-57f, 0x1.3de02cp-4f, -0x1.3a7dccp-4f, 0x1.76474ap-1f,
     /* s = 2/8: node 82 x */
-    -0x1.99999ap-59f, 0x1.73c888p-4f, -0x1.7325f4p-7f, -0x1.f6346ap-4f,
+    -0x1.ccccccp-60f, 0x1.73c888p-4f, -0x1.7325f4p-7f, -0x1.f6346ap-4f,
     /* s = 2/8: node 82 y */
-    -0x1.99999ap-60f, -0x1.61c1c2p-7f, 0x1.dc9944p-4f, 0x1.e46ccep-3f,
+    0x1.99999ap-63f, -0x1.61c1c2p-7f, 0x1.dc9944p-4f, 0x1.e46ccep-3f,
     /* s = 2/8: node 82 z */
-    -0x1.e66666p-56f, 0x1.118538p-4f, -0x1.ed1fbp-4f, 0x1.05949ep+0f,
+    -0x1.0cccccp-56f, 0x1.118538p-4f, -0x1.ed1fbp-4f, 0x1.05949ep+0f,
     /* s = 2/8: node 83 x */
-    -0x1.172666p-57f, 0x1.f081b8p-4f, -0x1.440b44p-12f, 0x1.177c66p-9f,
+    -0x1.a0999ap-57f, 0x1.f081b8p-4f, -0x1.440b44p-12f, 0x1.177c66p-9f,
     /* s = 2/8: node 83 y */
-    -0x1.ccccccp-59f, 0x1.6a17cp-9f, 0x1.1eff8ap-3f, 0x1.155d1ap-2f,
+    -0x1.266666p-58f, 0x1.6a17cp-9f, 0x1.1eff8ap-3f, 0x1.155d1ap-2f,
     /* s = 2/8: node 83 z */
-    -0x1.666666p-57f, -0x1.f100dcp-14f, -0x1.2a33dep-3f, 0x1.28a1f8p+0f,
+    -0x1.99999ap-57f, -0x1.f100dcp-14f, -0x1.2a33dep-3f, 0x1.28a1f8p+0f,
     /* s = 2/8: node 84 x */
-    -0x1.366666p-57f, 0x1.7722c8p-4f, 0x1.a79808p-7f, 0x1.e67a9ep-4f,
+    -0x1.a66666p-58f, 0x1.7722c8p-4f, 0x1.a79808p-7f, 0x1.e67a9ep-4f,
     /* s = 2/8: node 84 y */
-    -0x1.4cccccp-59f, 0x1.4687cep-7f, 0x1.dd2e9ap-4f, 0x1.de88f6p-3f,
+    -0x1.8p-59f, 0x1.4687cep-7f, 0x1.dd2e9ap-4f, 0x1.de88f6p-3f,
     /* s = 2/8: node 84 z */
-    -0x1.e66666p-57f, -0x1.12fb6p-4f, -0x1.f4053ap-4f, 0x1.03f324p+0f,
+    -0x1.19999ap-57f, -0x1.12fb6p-4f, -0x1.f4053ap-4f, 0x1.03f324p+0f,
     /* s = 2/8: node 85 x */
-    -0x1.cp-58f, 0x1.f19f14p-5f, 0x1.30b94ap-6f, 0x1.5906f4p-3f,
+    -0x1.533334p-58f, 0x1.f19f14p-5f, 0x1.30b94ap-6f, 0x1.5906f4p-3f,
     /* s = 2/8: node 85 y */
-    -0x1.a66666p-59f, 0x1.3a2852p-6f, 0x1.f81ecp-5f, 0x1.5b8366p-3f,
+    -0x1.333334p-59f, 0x1.3a2852p-6f, 0x1.f81ecp-5f, 0x1.5b8366p-3f,
     /* s = 2/8: node 85 z */
-    -0x1.333334p-60f, -0x1.3f58dp-4f, -0x1.3d5b5cp-4f, 0x1.767f32p-1f,
+    -0x1.266666p-57f, -0x1.3f58dp-4f, -0x1.3d5b5cp-4f, 0x1.767f32p-1f,
     /* s = 2/8: node 86 x */
-    -0x1.0cccccp-59f, 0x1.89ffe4p-6f, 0x1.5c7b98p-8f, 0x1.5872f6p-3f,
+    -0x1.8cccccp-59f, 0x1.89ffe4p-6f, 0x1.5c7b98p-8f, 0x1.5872f6p-3f,
     /* s = 2/8: node 86 y */
-    -0x1.666666p-61f, 0x1.68ac54p-7f, 0x1.a03b48p-6f, 0x1.95b6cap-4f,
+    -0x1.4cccccp-59f, 0x1.68ac54p-7f, 0x1.a03b48p-6f, 0x1.95b6cap-4f,
     /* s = 2/8: node 86 z */
-    -0x1p-59f, -0x1.c022f8p-5f, -0x1.3fa286p-5f, 0x1.93de8p-2f,
+    -0x1p-57f, -0x1.c022f8p-5f, -0x1.3fa286p-5f, 0x1.93de8p-2f,
     /* s = 2/8: node 87 x */
-    -0x1.cp-60f, 0x1.29393ep-8f, 0x1.f69ec6p-9f, 0x1.6668d8p-4f,
+    -0x1.f33334p-60f, 0x1.29393ep-8f, 0x1.f69ec6p-9f, 0x1.6668d8p-4f,
     /* s = 2/8: node 87 y */
-    -0x1.ccccccp-60f, 0x1.744f98p-7f, 0x1.956c08p-8f, 0x1.6a710ep-5f,
+    -0x1.2cccccp-60f, 0x1.744f98p-7f, 0x1.956c08p-8f, 0x1.6a710ep-5f,
     /* s = 2/8: node 87 z */
-    -0x1.19999ap-60f, -0x1.bff012p-7f, -0x1.134c4p-7f, 0x1.2c253cp-3f,
+    -0x0p+0f, -0x1.bff012p-7f, -0x1.134c4p-7f, 0x1.2c253cp-3f,
     /* s = 2/8: node 88 x */
-    -0x1.e66666p-68f, -0x1.d1e96ep-14f, -0x1.d341b4p-14f, 0x1.a78bc2p-12f,
+    0x1.ccccccp-68f, -0x1.d1e96ep-14f, -0x1.d341b4p-14f, 0x1.a78bc2p-12f,
     /* s = 2/8: node 88 y */
-    -0x1.99999ap-70f, -0x1.3e39fap-14f, -0x1.34be14p-18f, 0x1.be94f8p-12f,
+    0x1p-69f, -0x1.3e39fap-14f, -0x1.34be14p-18f, 0x1.be94f8p-12f,
     /* s = 2/8: node 88 z */
-    -0x1.733334p-67f, 0x1.5314d2p-13f, 0x1.8c8612p-14f, 0x1.310b64p-12f,
+    -0x1p-66f, 0x1.5314d2p-13f, 0x1.8c8612p-14f, 0x1.310b64p-12f,
     /* s = 2/8: node 89 x */
-    0x1.133334p-67f, -0x1.b6e9bep-15f, 0x1.27dcdcp-14f, -0x1.fc9948p-13f,
+    0x1.533334p-67f, -0x1.b6e9bep-15f, 0x1.27dcdcp-14f, -0x1.fc9948p-13f,
     /* s = 2/8: node 89 y */
-    -0x1.8cccccp-67f, 0x1.7a4a9ep-14f, -0x1.914264p-15f, 0x1.e5bda8p-12f,
+    -0x1.e66666p-68f, 0x1.7a4a9ep-14f, -0x1.914264p-15f, 0x1.e5bda8p-12f,
     /* s = 2/8: node 89 z */
-    0x1.133334p-66f, -0x1.1ab1fap-13f, 0x1.d9b3a6p-14f, 0x1.d42f92p-13f,
+    0x1.266666p-66f, -0x1.1ab1fap-13f, 0x1.d9b3a6p-14f, 0x1.d42f92p-13f,
     /* s = 2/8: node 90 x */
-    0x1.b33334p-61f, 0x1.03337ap-9f, -0x1.f76028p-9f, -0x1.a81cdp-5f,
+    0x1.0cccccp-60f, 0x1.03337ap-9f, -0x1.f76028p-9f, -0x1.a81cdp-5f,
     /* s = 2/8: node 90 y */
-    0x1.99999ap-61f, -0x1.05dca6p-7f, 0x1.3c00fap-9f, 0x1.6aac46p-5f,
+    0x1.333334p-62f, -0x1.05dca6p-7f, 0x1.3c00fap-9f, 0x1.6aac46p-5f,
     /* s = 2/8: node 90 z */
-    -0x1.266666p-60f, 0x1.e6e64ep-9f, -0x1.83b6cap-9f, 0x1.2b0ccp-4f,
+    -0x1.b33334p-61f, 0x1.e6e64ep-9f, -0x1.83b6cap-9f, 0x1.2b0ccp-4f,
     /* s = 2/8: node 91 x */
-    -0x1p-61f, 0x1.5dc1a6p-7f, -0x1.22e126p-7f, -0x1.915002p-4f,
+    0x1.666666p-61f, 0x1.5dc1a6p-7f, -0x1.22e126p-7f, -0x1.915002p-4f,
     /* s = 2/8: node 91 y */
-    -0x1p-60f, -0x1.319416p-7f, 0x1.52926p-7f, 0x1.9353eap-4f,
+    -0x1p-61f, -0x1.319416p-7f, 0x1.52926p-7f, 0x1.9353eap-4f,
     /* s = 2/8: node 91 z */
-    -0x1.b33334p-58f, 0x1.a11d52p-6f, -0x1.9a0b0ap-6f, 0x1.a9a422p-3f,
+    -0x1.e66666p-58f, 0x1.a11d52p-6f, -0x1.9a0b0ap-6f, 0x1.a9a422p-3f,
     /* s = 2/8: node 92 x */
-    -0x1.333334p-61f, 0x1.87b10ap-6f, -0x1.78f982p-7f, -0x1.989a22p-4f,
+    -0x1.99999ap-61f, 0x1.87b10ap-6f, -0x1.78f982p-7f, -0x1.989a22p-4f,
     /* s = 2/8: node 92 y */
-    -0x1.666666p-60f, -0x1.3ca4f2p-8f, 0x1.85ee92p-6f, 0x1.5cb8cp-3f,
+    -0x1p-59f, -0x1.3ca4f2p-8f, 0x1.85ee92p-6f, 0x1.5cb8cp-3f,
     /* s = 2/8: node 92 z */
-    -0x1.8p-58f, 0x1.3e6a9ap-5f, -0x1.b131dp-5f, 0x1.95b4f8p-2f,
+    -0x1.666666p-57f, 0x1.3e6a9ap-5f, -0x1.b131dp-5f, 0x1.95b4f8p-2f,
     /* s = 2/8: node 93 x */
-    -0x1.6p-59f, 0x1.33756p-5f, -0x1.99418ap-7f, -0x1.ecfbb2p-5f,
+    -0x1.933334p-59f, 0x1.33756p-5f, -0x1.99418ap-7f, -0x1.ecfbb2p-5f,
     /* s = 2/8: node 93 y */
-    -0x1.b33334p-59f, -0x1.f57a6ep-8f, 0x1.4db9dep-5f, 0x1.ca892ap-3f,
+    -0x1.666666p-60f, -0x1.f57a6ep-8f, 0x1.4db9dep-5f, 0x1.ca892ap-3f,
     /* s = 2/8: node 93 z */
-    -0x1.d9999ap-57f, 0x1.b48e92p-6f, -0x1.4450c6p-4f, 0x1.14322ap-1f,
+    -0x1.ccccccp-58f, 0x1.b48e92p-6f, -0x1.4450c6p-4f, 0x1.14322ap-1f,
     /* s = 2/8: node 94 x */
-    -0x1.dfp-59f, 0x1.142268p-5f, 0x1.93896ep-11f, -0x1.04826ap-10f,
+    -0x1.01e666p-59f, 0x1.142268p-5f, 0x1.93896ep-11f, -0x1.04826ap-10f,
     /* s = 2/8: node 94 y */
-    -0x1.666666p-59f, -0x1.675636p-11f, 0x1.d52cfap-5f, 0x1.f0901ap-3f,
+    -0x1.99999ap-59f, -0x1.675636p-11f, 0x1.d52cfap-5f, 0x1.f0901ap-3f,
     /* s = 2/8: node 94 z */
-    -0x1.f33334p-57f, -0x1.38105cp-12f, -0x1.6bd196p-4f, 0x1.31848cp-1f,
+    -0x1.e66666p-58f, -0x1.38105cp-12f, -0x1.6bd196p-4f, 0x1.31848cp-1f,
     /* s = 2/8: node 95 x */
-    -0x1.acccccp-59f, 0x1.326022p-5f, 0x1.a5a0ccp-7f, 0x1.ffc19cp-5f,
+    -0x1.99999ap-59f, 0x1.326022p-5f, 0x1.a5a0ccp-7f, 0x1.ffc19cp-5f,
     /* s = 2/8: node 95 y */
-    -0x1.e66666p-59f, 0x1.4005fcp-7f, 0x1.4b3438p-5f, 0x1.cd9d0ep-3f,
+    -0x1.99999ap-60f, 0x1.4005fcp-7f, 0x1.4b3438p-5f, 0x1.cd9d0ep-3f,
     /* s = 2/8: node 95 z */
-    -0x1.4p-57f, -0x1.b9974cp-6f, -0x1.46f2f2p-4f, 0x1.15753cp-1f,
+    -0x1.666666p-57f, -0x1.b9974cp-6f, -0x1.46f2f2p-4f, 0x1.15753cp-1f,
     /* s = 2/8: node 96 x */
-    -0x1.59999ap-58f, 0x1.983868p-6f, 0x1.6f12e6p-7f, 0x1.94a524p-4f,
+    -0x1.e66666p-59f, 0x1.983868p-6f, 0x1.6f12e6p-7f, 0x1.94a524p-4f,
     /* s = 2/8: node 96 y */
-    -0x1p-58f, 0x1.38b114p-8f, 0x1.89d2d2p-6f, 0x1.5786b4p-3f,
+    -0x1.333334p-59f, 0x1.38b114p-8f, 0x1.89d2d2p-6f, 0x1.5786b4p-3f,
     /* s = 2/8: node 96 z */
-    -0x1.333334p-59f, -0x1.40da6cp-5f, -0x1.bdd256p-5f, 0x1.93f0bep-2f,
+    -0x1p-58f, -0x1.40da6cp-5f, -0x1.bdd256p-5f, 0x1.93f0bep-2f,
     /* s = 2/8: node 97 x */
-    -0x1.333334p-60f, 0x1.42c534p-7f, 0x1.3def04p-7f, 0x1.9419fep-4f,
+    -0x1.266666p-59f, 0x1.42c534p-7f, 0x1.3def04p-7f, 0x1.9419fep-4f,
     /* s = 2/8: node 97 y */
-    -0x1.19999ap-60f, 0x1.467842p-7f, 0x1.53ceb4p-7f, 0x1.96da62p-4f,
+    -0x1.266666p-59f, 0x1.467842p-7f, 0x1.53ceb4p-7f, 0x1.96da62p-4f,
     /* s = 2/8: node 97 z */
-    0x1.99999ap-60f, -0x1.a40502p-6f, -0x1.a1863ep-6f, 0x1.a9a598p-3f,
+    -0x1.ccccccp-59f, -0x1.a40502p-6f, -0x1.a1863ep-6f, 0x1.a9a598p-3f,
     /* s = 2/8: node 98 x */
-    -0x1.733334p-60f, 0x1.7a1daap-9f, 0x1.5f6318p-9f, 0x1.a2505cp-5f,
+    -0x1.ccccccp-62f, 0x1.7a1daap-9f, 0x1.5f6318p-9f, 0x1.a2505cp-5f,
     /* s = 2/8: node 98 y */
-    -0x1.333334p-60f, 0x1.0f44d4p-7f, 0x1.471ce6p-9f, 0x1.636d8p-5f,
+    -0x1.333334p-61f, 0x1.0f44d4p-7f, 0x1.471ce6p-9f, 0x1.636d8p-5f,
     /* s = 2/8: node 98 z */
-    -0x1.4cccccp-61f, -0x1.d6622cp-9f, -0x1.a9f85cp-9f, 0x1.293606p-4f,
+    -0x0p+0f, -0x1.d6622cp-9f, -0x1.a9f85cp-9f, 0x1.293606p-4f,
     /* s = 2/8: node 99 x */
-    -0x1.19999ap-69f, -0x1.166614p-14f, -0x1.d02abp-15f, 0x1.0424fp-12f,
+    -0x1.99999ap-72f, -0x1.166614p-14f, -0x1.d02abp-15f, 0x1.0424fp-12f,
     /* s = 2/8: node 99 y */
-    -0x1.99999ap-72f, -0x1.7724fp-14f, -0x1.746d9ap-15f, 0x1.df04a4p-12f,
+    -0x1.19999ap-67f, -0x1.7724fp-14f, -0x1.746d9ap-15f, 0x1.df04a4p-12f,
     /* s = 2/8: node 99 z */
     -0x1.ap-67f, 0x1.198fcep-13f, 0x1.0299fap-13f, 0x1.da271p-13f,
     /* s = 2/8: node 100 x */
-    0x1.733334p-68f, -0x1.2f7ce8p-15f, 0x1.b2bf7cp-15f, -0x1.8e5826p-14f,
+    0x1.cp-68f, -0x1.2f7ce8p-15f, 0x1.b2bf7cp-15f, -0x1.8e5826p-14f,
     /* s = 2/8: node 100 y */
-    -0x1.2p-68f, 0x1.a6e8eap-16f, -0x1.30c02cp-16f, 0x1.84ab3ep-13f,
+    -0x1.19999ap-69f, 0x1.a6e8eap-16f, -0x1.30c02cp-16f, 0x1.84ab3ep-13f,
     /* s = 2/8: node 100 z */
-    0x1.666666p-70f, -0x1.6fb374p-14f, 0x1.86e9f4p-14f, 0x1.53c45ap-13f,
+    0x1.733334p-69f, -0x1.6fb374p-14f, 0x1.86e9f4p-14f, 0x1.53c45ap-13f,
     /* s = 2/8: node 101 x */
-    -0x1.333334p-64f, 0x1.666c8ep-9f, -0x1.33a9aap-8f, -0x1.5232bap-6f,
+    0x1.59999ap-62f, 0x1.666c8ep-9f, -0x1.33a9aap-8f, -0x1.5232bap-6f,
     /* s = 2/8: node 101 y */
-    0x1.666666p-64f, -0x1.5c549ap-8f, 0x1.25bc82p-9f, 0x1.539584p-6f,
+    0x1.99999ap-63f, -0x1.5c549ap-8f, 0x1.25bc82p-9f, 0x1.539584p-6f,
     /* s = 2/8: node 101 z */
-    0x1.666666p-64f, -0x1.5535fp-8f, 0x1.4c0c5ap-8f, 0x1.64cc32p-6f,
+    -0x1.ccccccp-64f, -0x1.5535fp-8f, 0x1.4c0c5ap-8f, 0x1.64cc32p-6f,
     /* s = 2/8: node 102 x */
-    0x1.4cccccp-62f, 0x1.f7070cp-10f, -0x1.19ab86p-7f, -0x1.6660fcp-5f,
+    0x1p-61f, 0x1.f7070cp-10f, -0x1.19ab86p-7f, -0x1.6660fcp-5f,
     /* s = 2/8: node 102 y */
-    -0x1.e66666p-61f, -0x1.6ad7bp-9f, 0x1.3dadeap-9f, 0x1.aa006ap-5f,
+    -0x1.666666p-60f, -0x1.6ad7bp-9f, 0x1.3dadeap-9f, 0x1.aa006ap-5f,
     /* s = 2/8: node 102 z */
-    -0x1.cp-60f, 0x1.a49b12p-9f, -0x1.c86cc6p-9f, 0x1.2a6b56p-4f,
+    -0x1.666666p-60f, 0x1.a49b12p-9f, -0x1.c86cc6p-9f, 0x1.2a6b56p-4f,
     /* s = 2/8: node 103 x */
-    -0x1.333334p-64f, 0x1.86356p-8f, -0x1.66802p-7f, -0x1.61d2c8p-5f,
+    0x1.99999ap-63f, 0x1.86356p-8f, -0x1.66802p-7f, -0x1.61d2c8p-5f,
     /* s = 2/8: node 103 y */
-    -0x1.ccccccp-61f, -0x1.abc02ep-9f, 0x1.63a4a6p-8f, 0x1.625eacp-4f,
+    -0x1.e66666p-60f, -0x1.abc02ep-9f, 0x1.63a4a6p-8f, 0x1.625eacp-4f,
     /* s = 2/8: node 103 z */
-    -0x1.b33334p-59f, 0x1.11a0cep-7f, -0x1.bcbae8p-7f, 0x1.2b4d7cp-3f,
+    -0x1.333334p-61f, 0x1.11a0cep-7f, -0x1.bcbae8p-7f, 0x1.2b4d7cp-3f,
     /* s = 2/8: node 104 x */
-    -0x1.a66666p-61f, 0x1.b43c64p-8f, -0x1.b3195ep-8f, -0x1.dd4e2ap-6f,
+    -0x1.ccccccp-63f, 0x1.b43c64p-8f, -0x1.b3195ep-8f, -0x1.dd4e2ap-6f,
     /* s = 2/8: node 104 y */
-    -0x1.ccccccp-60f, 0x1.de93a2p-10f, 0x1.196d7p-7f, 0x1.ea061ep-4f,
+    -0x1.666666p-61f, 0x1.de93a2p-10f, 0x1.196d7p-7f, 0x1.ea061ep-4f,
     /* s = 2/8: node 104 z */
-    -0x1.99999ap-59f, 0x1.27d068p-7f, -0x1.88a652p-6f, 0x1.a9403ap-3f,
+    -0x1p-58f, 0x1.27d068p-7f, -0x1.88a652p-6f, 0x1.a9403ap-3f,
     /* s = 2/8: node 105 x */
-    -0x1.bap-61f, 0x1.621968p-7f, -0x1.43311p-13f, 0x1.ac66d6p-12f,
+    -0x1.86ccccp-62f, 0x1.621968p-7f, -0x1.43311p-13f, 0x1.ac66d6p-12f,
     /* s = 2/8: node 105 y */
-    -0x1.333334p-62f, 0x1.d6a324p-11f, 0x1.f9180ap-9f, 0x1.1b96ap-3f,
+    -0x1.ccccccp-59f, 0x1.d6a324p-11f, 0x1.f9180ap-9f, 0x1.1b96ap-3f,
     /* s = 2/8: node 105 z */
-    -0x1.19999ap-58f, 0x1.1ea2cp-14f, -0x1.e9d62ap-6f, 0x1.e28d46p-3f,
+    -0x1.e66666p-58f, 0x1.1ea2cp-14f, -0x1.e9d62ap-6f, 0x1.e28d46p-3f,
     /* s = 2/8: node 106 x */
-    -0x1p-60f, 0x1.ba09a6p-8f, 0x1.a6fe0cp-8f, 0x1.d16f82p-6f,
+    -0x1.066666p-60f, 0x1.ba09a6p-8f, 0x1.a6fe0cp-8f, 0x1.d16f82p-6f,
     /* s = 2/8: node 106 y */
-    -0x1.4cccccp-60f, -0x1.6ded14p-9f, 0x1.38446p-7f, 0x1.e13b7cp-4f,
+    -0x1.0cccccp-59f, -0x1.6ded14p-9f, 0x1.38446p-7f, 0x1.e13b7cp-4f,
     /* s = 2/8: node 106 z */
-    -0x1.99999ap-62f, -0x1.2ee5cep-7f, -0x1.875cdp-6f, 0x1.a658ecp-3f,
+    -0x1p-59f, -0x1.2ee5cep-7f, -0x1.875cdp-6f, 0x1.a658ecp-3f,
     /* s = 2/8: node 107 x */
-    -0x1.8p-60f, 0x1.80d9d6p-8f, 0x1.6f0af4p-7f, 0x1.66b2f2p-5f,
+    -0x1.59999ap-61f, 0x1.80d9d6p-8f, 0x1.6f0af4p-7f, 0x1.66b2f2p-5f,
     /* s = 2/8: node 107 y */
     -0x1.333334p-60f, 0x1.083fa4p-8f, 0x1.54a5c4p-8f, 0x1.69801ap-4f,
     /* s = 2/8: node 107 z */
-    -0x1p-59f, -0x1.147b0cp-7f, -0x1.b6e25ap-7f, 0x1.2c685ap-3f,
+    -0x1.99999ap-61f, -0x1.147b0cp-7f, -0x1.b6e25ap-7f, 0x1.2c685ap-3f,
     /* s = 2/8: node 108 x */
-    -0x1.d9999ap-61f, 0x1.31918ep-9f, 0x1.0d40acp-7f, 0x1.61c348p-5f,
+    -0x1.b33334p-61f, 0x1.31918ep-9f, 0x1.0d40acp-7f, 0x1.61c348p-5f,
     /* s = 2/8: node 108 y */
-    -0x1.666666p-61f, 0x1.48d44ep-9f, 0x1.715d1cp-9f, 0x1.a0b738p-5f,
+    -0x1.ccccccp-61f, 0x1.48d44ep-9f, 0x1.715d1cp-9f, 0x1.a0b738p-5f,
     /* s = 2/8: node 108 z */
-    -0x1.b33334p-61f, -0x1.b38d9ap-9f, -0x1.cee504p-9f, 0x1.292196p-4f,
+    0x1.99999ap-63f, -0x1.b38d9ap-9f, -0x1.cee504p-9f, 0x1.292196p-4f,
     /* s = 2/8: node 109 x */
-    -0x1.a66666p-62f, 0x1.4b1a2ap-9f, 0x1.5485aap-8f, 0x1.5c5c96p-6f,
+    -0x1.8p-62f, 0x1.4b1a2ap-9f, 0x1.5485aap-8f, 0x1.5c5c96p-6f,
     /* s = 2/8: node 109 y */
-    -0x1.066666p-61f, 0x1.539d5cp-8f, 0x1.5b92ccp-9f, 0x1.5e28a8p-6f,
+    -0x1.e66666p-61f, 0x1.539d5cp-8f, 0x1.5b92ccp-9f, 0x1.5e28a8p-6f,
     /* s = 2/8: node 109 z */
-    -0x1.1p-60f, 0x1.51bba4p-8f, 0x1.57d96ep-8f, 0x1.66e6e6p-6f,
+    -0x1.233334p-60f, 0x1.51bba4p-8f, 0x1.57d96ep-8f, 0x1.66e6e6p-6f,
     /* s = 2/8: node 110 x */
-    0x1.333334p-70f, -0x1.ea926ap-16f, -0x1.fdfba8p-15f, 0x1.70fcbep-14f,
+    0x1.99999ap-72f, -0x1.ea926ap-16f, -0x1.fdfba8p-15f, 0x1.70fcbep-14f,
     /* s = 2/8: node 110 y */
     -0x1.99999ap-73f, -0x1.a2efcep-16f, -0x1.bd9e36p-16f, 0x1.84d2fcp-13f,
     /* s = 2/8: node 110 z */
-    -0x1.b9999ap-67f, 0x1.88e27cp-14f, 0x1.72033p-14f, 0x1.3f7108p-13f,
+    -0x1.acccccp-68f, 0x1.88e27cp-14f, 0x1.72033p-14f, 0x1.3f7108p-13f,
     /* s = 2/8: node 111 x */
-    0x1.333334p-72f, -0x1.c6ad34p-17f, 0x1.90878ap-16f, 0x1.87fb02p-14f,
+    -0x1.666666p-71f, -0x1.c6ad34p-17f, 0x1.90878ap-16f, 0x1.87fb02p-14f,
     /* s = 2/8: node 111 y */
-    -0x1.266666p-69f, 0x1.3af19ep-15f, -0x1.2a297ap-16f, -0x1.919c34p-14f,
+    0x1.99999ap-71f, 0x1.3af19ep-15f, -0x1.2a297ap-16f, -0x1.919c34p-14f,
     /* s = 2/8: node 111 z */
-    -0x1.d7p-69f, 0x1.f62818p-15f, -0x1.331a42p-14f, -0x1.9410cap-20f,
+    -0x1.144cccp-68f, 0x1.f62818p-15f, -0x1.331a42p-14f, -0x1.9410cap-20f,
     /* s = 2/8: node 112 x */
-    0x1.ccccccp-69f, -0x1.b72438p-16f, 0x1.7e2d6ap-16f, -0x1.89d4a6p-13f,
+    0x1.8cccccp-68f, -0x1.b72438p-16f, 0x1.7e2d6ap-16f, -0x1.89d4a6p-13f,
     /* s = 2/8: node 112 y */
-    -0x1.2p-68f, 0x1.f0b658p-15f, -0x1.e0207cp-16f, 0x1.856dbcp-14f,
+    -0x1.c9999ap-68f, 0x1.f0b658p-15f, -0x1.e0207cp-16f, 0x1.856dbcp-14f,
     /* s = 2/8: node 112 z */
-    0x1.4p-68f, -0x1.60e67p-14f, 0x1.8c461cp-14f, 0x1.52f8e2p-13f,
+    0x1.cp-69f, -0x1.60e67p-14f, 0x1.8c461cp-14f, 0x1.52f8e2p-13f,
     /* s = 2/8: node 113 x */
-    0x1.99999ap-68f, -0x1.86b214p-15f, 0x1.862e8ep-14f, -0x1.ddac9p-12f,
+    0x1.4cccccp-68f, -0x1.86b214p-15f, 0x1.862e8ep-14f, -0x1.ddac9p-12f,
     /* s = 2/8: node 113 y */
-    -0x1.b33334p-68f, 0x1.0b607cp-14f, -0x1.c7fffcp-15f, 0x1.03d7f4p-12f,
+    -0x1.8p-68f, 0x1.0b607cp-14f, -0x1.c7fffcp-15f, 0x1.03d7f4p-12f,
     /* s = 2/8: node 113 z */
-    0x1.333334p-69f, -0x1.000a9ap-13f, 0x1.113728p-13f, 0x1.d35b04p-13f,
+    0x1.cp-67f, -0x1.000a9ap-13f, 0x1.113728p-13f, 0x1.d35b04p-13f,
     /* s = 2/8: node 114 x */
-    0x1.19999ap-67f, -0x1.0d20d4p-23f, 0x1.2b36aep-14f, -0x1.bf603ap-12f,
+    0x1.266666p-67f, -0x1.0d20d4p-23f, 0x1.2b36aep-14f, -0x1.bf603ap-12f,
     /* s = 2/8: node 114 y */
-    -0x1.f33334p-67f, 0x1.86967ap-14f, -0x1.0ef98ep-13f, 0x1.a39766p-12f,
+    -0x1.99999ap-67f, 0x1.86967ap-14f, -0x1.0ef98ep-13f, 0x1.a39766p-12f,
     /* s = 2/8: node 114 z */
-    0x1.666666p-70f, -0x1.8710f8p-14f, 0x1.54af0ap-13f, 0x1.2de9c2p-12f,
+    0x1.a66666p-68f, -0x1.8710f8p-14f, 0x1.54af0ap-13f, 0x1.2de9c2p-12f,
     /* s = 2/8: node 115 x */
-    0x1.ccccccp-69f, 0x1.ffe578p-16f, 0x1.7ef294p-14f, -0x1.4c5dap-12f,
+    0x1.4p-68f, 0x1.ffe578p-16f, 0x1.7ef294p-14f, -0x1.4c5dap-12f,
     /* s = 2/8: node 115 y */
-    -0x1.19999ap-66f, 0x1.cfae0ap-15f, -0x1.c0c8d4p-13f, 0x1.3a38a2p-11f,
+    -0x1.ccccccp-69f, 0x1.cfae0ap-15f, -0x1.c0c8d4p-13f, 0x1.3a38a2p-11f,
     /* s = 2/8: node 115 z */
-    0x1.ccccccp-69f, -0x1.4db03cp-15f, 0x1.b46a76p-13f, 0x1.9be66p-12f,
+    -0x1.ccccccp-69f, -0x1.4db03cp-15f, 0x1.b46a76p-13f, 0x1.9be66p-12f,
     /* s = 2/8: node 116 x */
-    -0x1.b6d99ap-67f, 0x1.8a6806p-13f, -0x1.445c76p-18f, 0x1.870c7ap-19f,
+    -0x1.20d99ap-66f, 0x1.8a6806p-13f, -0x1.445c76p-18f, 0x1.870c7ap-19f,
     /* s = 2/8: node 116 y */
-    -0x1.333334p-69f, -0x1.ae848ep-17f, -0x1.d077a8p-13f, 0x1.1e2b68p-11f,
+    0x1.333334p-70f, -0x1.ae848ep-17f, -0x1.d077a8p-13f, 0x1.1e2b68p-11f,
     /* s = 2/8: node 116 z */
-    -0x1p-67f, -0x1.19e09p-17f, 0x1.d41352p-13f, 0x1.e7379ap-12f,
+    -0x1.ccccccp-69f, -0x1.19e09p-17f, 0x1.d41352p-13f, 0x1.e7379ap-12f,
     /* s = 2/8: node 117 x */
-    -0x1.4p-67f, 0x1.b16be6p-16f, -0x1.5f609ap-14f, 0x1.46bb0ap-12f,
+    -0x1.ap-67f, 0x1.b16be6p-16f, -0x1.5f609ap-14f, 0x1.46bb0ap-12f,
     /* s = 2/8: node 117 y */
-    0x1.99999ap-72f, -0x1.0b6702p-15f, -0x1.cfb49ep-13f, 0x1.3d8e3cp-11f,
+    -0x1.266666p-67f, -0x1.0b6702p-15f, -0x1.cfb49ep-13f, 0x1.3d8e3cp-11f,
     /* s = 2/8: node 117 z */
-    -0x1.99999ap-69f, 0x1.e5331ap-15f, 0x1.b052a8p-13f, 0x1.913138p-12f,
+    -0x1.4cccccp-68f, 0x1.e5331ap-15f, 0x1.b052a8p-13f, 0x1.913138p-12f,
     /* s = 2/8: node 118 x */
-    -0x1.19999ap-67f, -0x1.0011fp-20f, -0x1.429b34p-14f, 0x1.bdbd64p-12f,
+    -0x1.e66666p-68f, -0x1.0011fp-20f, -0x1.429b34p-14f, 0x1.bdbd64p-12f,
     /* s = 2/8: node 118 y */
-    0x1.ccccccp-69f, -0x1.e1df7ap-14f, -0x1.f829fap-14f, 0x1.9d8ffcp-12f,
+    0x1.333334p-67f, -0x1.e1df7ap-14f, -0x1.f829fap-14f, 0x1.9d8ffcp-12f,
     /* s = 2/8: node 118 z */
-    -0x1.733334p-68f, 0x1.70f8eap-14f, 0x1.5c51cep-13f, 0x1.2fd0aep-12f,
+    -0x1p-67f, 0x1.70f8eap-14f, 0x1.5c51cep-13f, 0x1.2fd0aep-12f,
     /* s = 2/8: node 119 x */
-    -0x1p-69f, -0x1.7b99a8p-15f, -0x1.729fc2p-14f, 0x1.e0fb1p-12f,
+    -0x1p-68f, -0x1.7b99a8p-15f, -0x1.729fc2p-14f, 0x1.e0fb1p-12f,
     /* s = 2/8: node 119 y */
-    0x1.333334p-69f, -0x1.c05b18p-15f, -0x1.05e2dp-14f, 0x1.0904aap-12f,
+    0x1.333334p-71f, -0x1.c05b18p-15f, -0x1.05e2dp-14f, 0x1.0904aap-12f,
     /* s = 2/8: node 119 z */
     -0x1.d9999ap-68f, 0x1.0674f4p-13f, 0x1.1a20c2p-13f, 0x1.dbefbcp-13f,
     /* s = 2/8: node 120 x */
-    0x1.333334p-70f, -0x1.c1174ep-16f, -0x1.a07e1ep-16f, 0x1.82786p-13f,
+    -0x1.4cccccp-70f, -0x1.c1174ep-16f, -0x1.a07e1ep-16f, 0x1.82786p-13f,
     /* s = 2/8: node 120 y */
-    0x1.1p-68f, -0x1.0310e8p-14f, -0x1.04675cp-15f, 0x1.650adp-14f,
+    0x1.d9999ap-70f, -0x1.0310e8p-14f, -0x1.04675cp-15f, 0x1.650adp-14f,
     /* s = 2/8: node 120 z */
-    -0x1.466666p-68f, 0x1.6f163ep-14f, 0x1.869c6cp-14f, 0x1.3e5d54p-13f,
+    -0x1.133334p-67f, 0x1.6f163ep-14f, 0x1.869c6cp-14f, 0x1.3e5d54p-13f,
     /* s = 2/8: node 121 x */
-    0x1.666666p-70f, 0x1.d80f18p-22f, -0x1.6e3d94p-15f, -0x1.b3448ep-14f,
+    -0x0p+0f, 0x1.d80f18p-22f, -0x1.6e3d94p-15f, -0x1.b3448ep-14f,
     /* s = 2/8: node 121 y */
-    0x1.79999ap-68f, -0x1.79b2a8p-15f, -0x1.9178fap-18f, -0x1.c9639ep-14f,
+    0x1.a66666p-68f, -0x1.79b2a8p-15f, -0x1.9178fap-18f, -0x1.c9639ep-14f,
     /* s = 2/8: node 121 z */
-    0x1.2f3334p-68f, -0x1.28edaep-14f, -0x1.1b7762p-14f, 0x1.f3ec04p-17f,
+    0x1.ee6666p-69f, -0x1.28edaep-14f, -0x1.1b7762p-14f, 0x1.f3ec04p-17f,
     /* s = 3/8: node 1 x */
-    -0x1.333334p-72f, 0x1.1e9252p-19f, -0x1.df6cdep-16f, 0x1.bff0bcp-14f,
+    -0x1.ccccccp-70f, 0x1.1e9252p-19f, -0x1.df6cdep-16f, 0x1.bff0bcp-14f,
     /* s = 3/8: node 1 y */
-    0x1p-71f, -0x1.cb742cp-16f, 0x1.e74ba6p-18f, 0x1.ee635ep-14f,
+    0x1.b33334p-70f, -0x1.cb742cp-16f, 0x1.e74ba6p-18f, 0x1.ee635ep-14f,
     /* s = 3/8: node 1 z */
-    -0x1.ccp-69f, 0x1.05ebc4p-14f, 0x1.1a222ap-14f, -0x1.77df5cp-17f,
+    -0x1.9b3334p-69f, 0x1.05ebc4p-14f, 0x1.1a222ap-14f, -0x1.77df5cp-17f,
     /* s = 3/8: node 2 x */
-    0x1.8cccccp-69f, -0x1.bb9a52p-16f, -0x1.43e3fap-16f, -0x1.606136p-13f,
+    0x1.d9999ap-69f, -0x1.bb9a52p-16f, -0x1.43e3fap-16f, -0x1.606136p-13f,
     /* s = 3/8: node 2 y */
-    0x1.333334p-68f, -0x1.89cda6p-15f, -0x1.11834ep-16f, -0x1.6bdaf6p-14f,
+    0x1.c9999ap-68f, -0x1.89cda6p-15f, -0x1.11834ep-16f, -0x1.6bdaf6p-14f,
     /* s = 3/8: node 2 z */
-    0x1.6cccccp-68f, -0x1.1d228p-14f, -0x1.66323ep-14f, 0x1.5c671ep-13f,
+    0x1.666666p-69f, -0x1.1d228p-14f, -0x1.66323ep-14f, 0x1.5c671ep-13f,
     /* s = 3/8: node 3 x */
-    0x1.266666p-67f, -0x1.1e6e68p-14f, -0x1.dae184p-14f, -0x1.1d1ffcp-11f,
+    0x1p-66f, -0x1.1e6e68p-14f, -0x1.dae184p-14f, -0x1.1d1ffcp-11f,
     /* s = 3/8: node 3 y */
-    0x1.666666p-67f, -0x1.19eaap-14f, -0x1.24e0eap-14f, -0x1.0ced6ap-12f,
+    0x1.19999ap-68f, -0x1.19eaap-14f, -0x1.24e0eap-14f, -0x1.0ced6ap-12f,
     /* s = 3/8: node 3 z */
-    0x1.333334p-68f, -0x1.9f48b6p-14f, -0x1.ca519ap-14f, 0x1.0aa076p-12f,
+    0x1.99999ap-70f, -0x1.9f48b6p-14f, -0x1.ca519ap-14f, 0x1.0aa076p-12f,
     /* s = 3/8: node 4 x */
-    0x1.333334p-68f, -0x1.432e22p-15f, -0x1.a0534ap-14f, -0x1.c8a9bap-12f,
+    0x1.4p-67f, -0x1.432e22p-15f, -0x1.a0534ap-14f, -0x1.c8a9bap-12f,
     /* s = 3/8: node 4 y */
-    0x1.e66666p-68f, -0x1.c8fd5ap-14f, -0x1.0d808p-13f, -0x1.9dd5b2p-12f,
+    0x1.e66666p-67f, -0x1.c8fd5ap-14f, -0x1.0d808p-13f, -0x1.9dd5b2p-12f,
     /* s = 3/8: node 4 z */
     0x1.333334p-70f, -0x1.f0396ap-15f, -0x1.2fd1b6p-13f, 0x1.0d3606p-12f,
     /* s = 3/8: node 5 x */
-    -0x1.ccccccp-70f, 0x1.1061b4p-15f, -0x1.89c89ep-15f, -0x1.6245f6p-13f,
+    -0x1.b33334p-70f, 0x1.1061b4p-15f, -0x1.89c89ep-15f, -0x1.6245f6p-13f,
     /* s = 3/8: node 5 y */
-    -0x1p-72f, 0x1.0883d2p-15f, -0x1.2a60ap-13f, -0x1.4d442cp-14f,
+    -0x1.8p-69f, 0x1.0883d2p-15f, -0x1.2a60ap-13f, -0x1.4d442cp-14f,
     /* s = 3/8: node 5 z */
-    -0x1.8cccccp-68f, -0x1.214a5p-15f, -0x1.02872ep-13f, 0x1.e795b6p-13f,
+    -0x1.99999ap-72f, -0x1.214a5p-15f, -0x1.02872ep-13f, 0x1.e795b6p-13f,
     /* s = 3/8: node 6 x */
-    -0x1.4e8p-66f, 0x1.c1eeb2p-13f, 0x1.81e9dep-19f, 0x1.19dc32p-17f,
+    -0x1.0a4cccp-66f, 0x1.c1eeb2p-13f, 0x1.81e9dep-19f, 0x1.19dc32p-17f,
     /* s = 3/8: node 6 y */
-    0x1.ccccccp-68f, -0x1.9fd3a2p-16f, -0x1.d052f8p-13f, -0x1.118ce4p-11f,
+    0x1.266666p-67f, -0x1.9fd3a2p-16f, -0x1.d052f8p-13f, -0x1.118ce4p-11f,
     /* s = 3/8: node 6 z */
-    -0x1p-67f, 0x1.eade38p-18f, -0x1.b34444p-13f, 0x1.0678bp-11f,
+    -0x1.19999ap-68f, 0x1.eade38p-18f, -0x1.b34444p-13f, 0x1.0678bp-11f,
     /* s = 3/8: node 7 x */
-    -0x1.cp-68f, 0x1.b0d848p-15f, 0x1.c96862p-14f, 0x1.80d63ap-12f,
+    -0x1.933334p-67f, 0x1.b0d848p-15f, 0x1.c96862p-14f, 0x1.80d63ap-12f,
     /* s = 3/8: node 7 y */
-    -0x1.19999ap-68f, 0x1.f4e776p-16f, -0x1.ea06e6p-13f, -0x1.43aabep-11f,
+    0x1.99999ap-69f, 0x1.f4e776p-16f, -0x1.ea06e6p-13f, -0x1.43aabep-11f,
     /* s = 3/8: node 7 z */
-    -0x1.8p-68f, 0x1.d5f0c6p-15f, -0x1.ad1dcap-13f, 0x1.a4b3eap-12f,
+    -0x1.0cccccp-66f, 0x1.d5f0c6p-15f, -0x1.ad1dcap-13f, 0x1.a4b3eap-12f,
     /* s = 3/8: node 8 x */
-    -0x1.99999ap-71f, 0x1.0f2d62p-19f, 0x1.58065ap-14f, 0x1.b26b5ep-12f,
+    -0x1.8cccccp-67f, 0x1.0f2d62p-19f, 0x1.58065ap-14f, 0x1.b26b5ep-12f,
     /* s = 3/8: node 8 y */
-    -0x1.99999ap-69f, 0x1.e1de04p-14f, -0x1.f21432p-14f, -0x1.a03adp-12f,
+    -0x1.333334p-67f, 0x1.e1de04p-14f, -0x1.f21432p-14f, -0x1.a03adp-12f,
     /* s = 3/8: node 8 z */
-    -0x1.d9999ap-68f, 0x1.a99ce4p-14f, -0x1.3cf5c2p-13f, 0x1.4d3978p-12f,
+    -0x1.29999ap-66f, 0x1.a99ce4p-14f, -0x1.3cf5c2p-13f, 0x1.4d3978p-12f,
     /* s = 3/8: node 9 x */
-    -0x1.333334p-70f, -0x1.3df2fcp-15f, 0x1.737b5ap-14f, 0x1.edb6aep-12f,
+    -0x1.4cccccp-68f, -0x1.3df2fcp-15f, 0x1.737b5ap-14f, 0x1.edb6aep-12f,
     /* s = 3/8: node 9 y */
-    -0x1.4cccccp-69f, 0x1.b8a4f6p-15f, -0x1.c7decap-15f, -0x1.fa52a4p-13f,
+    -0x1.99999ap-73f, 0x1.b8a4f6p-15f, -0x1.c7decap-15f, -0x1.fa52a4p-13f,
     /* s = 3/8: node 9 z */
-    -0x1.79999ap-66f, 0x1.11f28ep-13f, -0x1.0fb67cp-13f, 0x1.e395ap-13f,
+    -0x1.f33334p-68f, 0x1.11f28ep-13f, -0x1.0fb67cp-13f, 0x1.e395ap-13f,
     /* s = 3/8: node 10 x */
-    0x1.99999ap-70f, -0x1.cc66c2p-16f, 0x1.c424f6p-16f, 0x1.819c7p-13f,
+    -0x1.f33334p-69f, -0x1.cc66c2p-16f, 0x1.c424f6p-16f, 0x1.819c7p-13f,
     /* s = 3/8: node 10 y */
-    -0x1.733334p-69f, 0x1.10f3c8p-14f, -0x1.21111cp-15f, -0x1.88968ap-14f,
+    -0x1.0cccccp-68f, 0x1.10f3c8p-14f, -0x1.21111cp-15f, -0x1.88968ap-14f,
     /* s = 3/8: node 10 z */
-    -0x1.b66666p-67f, 0x1.8701fap-14f, -0x1.5a9bf2p-14f, 0x1.642278p-13f,
+    -0x1.99999ap-68f, 0x1.8701fap-14f, -0x1.5a9bf2p-14f, 0x1.642278p-13f,
     /* s = 3/8: node 11 x */
-    0x1.59999ap-69f, -0x1.5a63b2p-18f, 0x1.3bbc14p-15f, -0x1.f4c3f4p-14f,
+    0x1.99999ap-72f, -0x1.5a63b2p-18f, 0x1.3bbc14p-15f, -0x1.f4c3f4p-14f,
     /* s = 3/8: node 11 y */
-    -0x1.8cccccp-68f, 0x1.920da8p-15f, -0x1.ccadbep-18f, 0x1.b03b2ep-14f,
+    -0x1.79999ap-68f, 0x1.920da8p-15f, -0x1.ccadbep-18f, 0x1.b03b2ep-14f,
     /* s = 3/8: node 11 z */
-    0x1.3d3334p-68f, -0x1.3f1f2ap-14f, 0x1.e272eep-15f, -0x1.53ad3ap-17f,
+    0x1.3c999ap-67f, -0x1.3f1f2ap-14f, 0x1.e272eep-15f, -0x1.53ad3ap-17f,
     /* s = 3/8: node 12 x */
-    0x1.ccccccp-70f, -0x1.ad67f6p-16f, -0x1.8699cp-15f, -0x1.45d75ap-14f,
+    0x1.4cccccp-69f, -0x1.ad67f6p-16f, -0x1.8699cp-15f, -0x1.45d75ap-14f,
     /* s = 3/8: node 12 y */
-    0x1.59999ap-69f, -0x1.8c8f76p-16f, -0x1.45019p-16f, -0x1.78daa6p-13f,
+    0x1.8p-69f, -0x1.8c8f76p-16f, -0x1.45019p-16f, -0x1.78daa6p-13f,
     /* s = 3/8: node 12 z */
-    -0x1.ccccccp-70f, -0x1.38757ap-14f, -0x1.4e3eecp-14f, 0x1.629ad4p-13f,
+    0x1.4p-68f, -0x1.38757ap-14f, -0x1.4e3eecp-14f, 0x1.629ad4p-13f,
     /* s = 3/8: node 13 x */
-    0x1.733334p-62f, 0x1.2e0adap-10f, 0x1.eb49b8p-9f, -0x1.5ab1dep-6f,
+    0x1.e66666p-63f, 0x1.2e0adap-10f, 0x1.eb49b8p-9f, -0x1.5ab1dep-6f,
     /* s = 3/8: node 13 y */
-    0x1.99999ap-66f, 0x1.8836bp-9f, 0x1.fe2e4cp-12f, -0x1.64a8fep-6f,
+    -0x0p+0f, 0x1.8836bp-9f, 0x1.fe2e4cp-12f, -0x1.64a8fep-6f,
     /* s = 3/8: node 13 z */
-    -0x1.333334p-65f, -0x1.fa03d6p-9f, -0x1.121612p-8f, 0x1.66c4cap-6f,
+    -0x1.99999ap-66f, -0x1.fa03d6p-9f, -0x1.121612p-8f, 0x1.66c4cap-6f,
     /* s = 3/8: node 14 x */
-    0x1.666666p-61f, 0x1.581046p-10f, 0x1.e12f56p-8f, -0x1.774278p-5f,
+    0x1.99999ap-65f, 0x1.581046p-10f, 0x1.e12f56p-8f, -0x1.774278p-5f,
     /* s = 3/8: node 14 y */
-    0x1.333334p-61f, 0x1.8a5842p-12f, 0x1.0fac4ep-9f, -0x1.ae2e92p-5f,
+    0x1.99999ap-62f, 0x1.8a5842p-12f, 0x1.0fac4ep-9f, -0x1.ae2e92p-5f,
     /* s = 3/8: node 14 z */
-    -0x1.f33334p-60f, 0x1.5feea8p-8f, 0x1.2023a8p-8f, 0x1.2cbd96p-4f,
+    -0x1p-60f, 0x1.5feea8p-8f, 0x1.2023a8p-8f, 0x1.2cbd96p-4f,
     /* s = 3/8: node 15 x */
-    0x1.e66666p-62f, 0x1.984eb4p-9f, 0x1.1d33d8p-7f, -0x1.76d238p-5f,
+    0x1.99999ap-66f, 0x1.984eb4p-9f, 0x1.1d33d8p-7f, -0x1.76d238p-5f,
     /* s = 3/8: node 15 y */
-    0x1.666666p-61f, -0x1.52012ap-12f, 0x1.21b504p-10f, -0x1.707c46p-4f,
+    0x1.99999ap-62f, -0x1.52012ap-12f, 0x1.21b504p-10f, -0x1.707c46p-4f,
     /* s = 3/8: node 15 z */
-    -0x1p-59f, 0x1.da080ep-7f, 0x1.32b0cep-6f, 0x1.3c8dap-3f,
+    -0x1.cp-59f, 0x1.da080ep-7f, 0x1.32b0cep-6f, 0x1.3c8dap-3f,
     /* s = 3/8: node 16 x */
-    0x1.99999ap-66f, 0x1.1e9cf4p-7f, 0x1.eae9cep-8f, -0x1.bb0f94p-6f,
+    0x1.666666p-63f, 0x1.1e9cf4p-7f, 0x1.eae9cep-8f, -0x1.bb0f94p-6f,
     /* s = 3/8: node 16 y */
-    0x1.e66666p-60f, -0x1.47464p-7f, 0x1.d0117p-9f, -0x1.057618p-3f,
+    0x1.b33334p-59f, -0x1.47464p-7f, 0x1.d0117p-9f, -0x1.057618p-3f,
     /* s = 3/8: node 16 z */
-    -0x1.0cccccp-58f, 0x1.120b9cp-6f, 0x1.eaf574p-6f, 0x1.bbf748p-3f,
+    -0x1.e66666p-59f, 0x1.120b9cp-6f, 0x1.eaf574p-6f, 0x1.bbf748p-3f,
     /* s = 3/8: node 17 x */
-    -0x1.1eccccp-60f, 0x1.ccd7e6p-7f, 0x1.05521p-10f, 0x1.6c693ep-9f,
+    -0x1.526666p-60f, 0x1.ccd7e6p-7f, 0x1.05521p-10f, 0x1.6c693ep-9f,
     /* s = 3/8: node 17 y */
-    0x1.733334p-59f, -0x1.d8cb0cp-10f, 0x1.158b18p-8f, -0x1.1d2838p-3f,
+    0x1.8p-60f, -0x1.d8cb0cp-10f, 0x1.158b18p-8f, -0x1.1d2838p-3f,
     /* s = 3/8: node 17 z */
-    -0x1.333334p-58f, 0x1.9fd6d2p-8f, 0x1.174b42p-5f, 0x1.f6fe9cp-3f,
+    -0x1.666666p-59f, 0x1.9fd6d2p-8f, 0x1.174b42p-5f, 0x1.f6fe9cp-3f,
     /* s = 3/8: node 18 x */
-    -0x1.19999ap-60f, 0x1.12b1b4p-7f, -0x1.3766d6p-8f, 0x1.14fbeap-5f,
+    -0x1.8cccccp-61f, 0x1.12b1b4p-7f, -0x1.3766d6p-8f, 0x1.14fbeap-5f,
     /* s = 3/8: node 18 y */
-    0x1p-59f, 0x1.1e6752p-10f, 0x1.b7d83cp-8f, -0x1.fb6ce2p-4f,
+    0x1.333334p-61f, 0x1.1e6752p-10f, 0x1.b7d83cp-8f, -0x1.fb6ce2p-4f,
     /* s = 3/8: node 18 z */
-    0x1.99999ap-62f, -0x1.c8bd04p-8f, 0x1.a5c6d8p-6f, 0x1.ac228ep-3f,
+    -0x1.99999ap-63f, -0x1.c8bd04p-8f, 0x1.a5c6d8p-6f, 0x1.ac228ep-3f,
     /* s = 3/8: node 19 x */
-    -0x1.ap-60f, 0x1.fa91fp-8f, -0x1.4edabap-7f, 0x1.7f3ddcp-5f,
+    -0x1.733334p-60f, 0x1.fa91fp-8f, -0x1.4edabap-7f, 0x1.7f3ddcp-5f,
     /* s = 3/8: node 19 y */
-    0x1.4cccccp-60f, -0x1.4ee76ap-8f, 0x1.57bd12p-8f, -0x1.6677dap-4f,
+    0x1p-61f, -0x1.4ee76ap-8f, 0x1.57bd12p-8f, -0x1.6677dap-4f,
     /* s = 3/8: node 19 z */
-    -0x1.ccccccp-61f, -0x1.d71948p-8f, 0x1.c60b34p-7f, 0x1.2e782ep-3f,
+    -0x1.333334p-60f, -0x1.d71948p-8f, 0x1.c60b34p-7f, 0x1.2e782ep-3f,
     /* s = 3/8: node 20 x */
-    -0x1.d9999ap-61f, 0x1.a1ed34p-9f, -0x1.e98ae2p-8f, 0x1.7450fap-5f,
+    -0x1.0cccccp-60f, 0x1.a1ed34p-9f, -0x1.e98ae2p-8f, 0x1.7450fap-5f,
     /* s = 3/8: node 20 y */
-    0x1.666666p-60f, -0x1.86de02p-9f, 0x1.a9150cp-10f, -0x1.afd5aep-5f,
+    0x1.333334p-60f, -0x1.86de02p-9f, 0x1.a9150cp-10f, -0x1.afd5aep-5f,
     /* s = 3/8: node 20 z */
-    -0x1.333334p-62f, -0x1.9fbe58p-9f, 0x1.dd62b4p-9f, 0x1.29d3bcp-4f,
+    -0x1.266666p-60f, -0x1.9fbe58p-9f, 0x1.dd62b4p-9f, 0x1.29d3bcp-4f,
     /* s = 3/8: node 21 x */
-    -0x1.f33334p-62f, 0x1.8a9036p-9f, -0x1.490b68p-8f, 0x1.6278ecp-6f,
+    -0x1.99999ap-62f, 0x1.8a9036p-9f, -0x1.490b68p-8f, 0x1.6278ecp-6f,
     /* s = 3/8: node 21 y */
-    0x1.666666p-61f, -0x1.679dfap-8f, 0x1.4cc8e8p-9f, -0x1.58c35p-6f,
+    0x1p-60f, -0x1.679dfap-8f, 0x1.4cc8e8p-9f, -0x1.58c35p-6f,
     /* s = 3/8: node 21 z */
-    -0x1.333334p-62f, 0x1.63c92cp-8f, -0x1.446bcap-8f, 0x1.6ca594p-6f,
+    -0x1.0cccccp-61f, 0x1.63c92cp-8f, -0x1.446bcap-8f, 0x1.6ca594p-6f,
     /* s = 3/8: node 22 x */
-    0x1.d9999ap-69f, -0x1.177bfp-15f, 0x1.f558ap-15f, 0x1.4dfb1p-14f,
+    -0x1p-71f, -0x1.177bfp-15f, 0x1.f558ap-15f, 0x1.4dfb1p-14f,
     /* s = 3/8: node 22 y */
-    -0x1p-71f, 0x1.b02b74p-16f, -0x1.a6d5b6p-16f, -0x1.7fb1bap-13f,
+    -0x1.99999ap-73f, 0x1.b02b74p-16f, -0x1.a6d5b6p-16f, -0x1.7fb1bap-13f,
     /* s = 3/8: node 22 z */
-    -0x1.69999ap-67f, 0x1.a3a11ap-14f, -0x1.4d476p-14f, 0x1.62eaf2p-13f,
+    -0x1.733334p-69f, 0x1.a3a11ap-14f, -0x1.4d476p-14f, 0x1.62eaf2p-13f,
     /* s = 3/8: node 23 x */
-    0x1.d9999ap-68f, -0x1.21f0cep-14f, -0x1.324632p-14f, -0x1.326456p-12f,
+    0x1.0cccccp-68f, -0x1.21f0cep-14f, -0x1.324632p-14f, -0x1.326456p-12f,
     /* s = 3/8: node 23 y */
-    0x1.a66666p-67f, -0x1.860afcp-14f, -0x1.aadec2p-15f, -0x1.f87b28p-12f,
+    0x1.b33334p-68f, -0x1.860afcp-14f, -0x1.aadec2p-15f, -0x1.f87b28p-12f,
     /* s = 3/8: node 23 z */
-    0x1.19999ap-69f, -0x1.adb2bap-14f, -0x1.8c76d2p-14f, 0x1.fc3d5ep-13f,
+    0x1.b33334p-68f, -0x1.adb2bap-14f, -0x1.8c76d2p-14f, 0x1.fc3d5ep-13f,
     /* s = 3/8: node 24 x */
-    0x1.99999ap-62f, 0x1.db8d42p-12f, 0x1.391a22p-10f, -0x1.b2ec76p-5f,
+    0x1p-61f, 0x1.db8d42p-12f, 0x1.391a22p-10f, -0x1.b2ec76p-5f,
     /* s = 3/8: node 24 y */
-    0x1.e66666p-62f, 0x1.18579cp-8f, 0x1.ce4e72p-13f, -0x1.865e58p-5f,
+    0x1.ccccccp-62f, 0x1.18579cp-8f, 0x1.ce4e72p-13f, -0x1.865e58p-5f,
     /* s = 3/8: node 24 z */
-    -0x1.99999ap-60f, 0x1.828bbep-8f, 0x1.09de66p-8f, 0x1.29bc26p-4f,
+    -0x1.8cccccp-60f, 0x1.828bbep-8f, 0x1.09de66p-8f, 0x1.29bc26p-4f,
     /* s = 3/8: node 25 x */
-    0x1p-60f, 0x1.db249ap-9f, 0x1.bd1a32p-9f, -0x1.9f7f1ap-4f,
+    0x1.4cccccp-60f, 0x1.db249ap-9f, 0x1.bd1a32p-9f, -0x1.9f7f1ap-4f,
     /* s = 3/8: node 25 y */
-    0x1p-60f, 0x1.745676p-11f, 0x1.f5ca72p-9f, -0x1.a36464p-4f,
+    0x1.ccccccp-61f, 0x1.745676p-11f, 0x1.f5ca72p-9f, -0x1.a36464p-4f,
     /* s = 3/8: node 25 z */
-    -0x1.4cccccp-59f, 0x1.fc593p-6f, 0x1.e8293p-6f, 0x1.b2c6c8p-3f,
+    -0x1.d9999ap-58f, 0x1.fc593p-6f, 0x1.e8293p-6f, 0x1.b2c6c8p-3f,
     /* s = 3/8: node 26 x */
-    -0x1.333334p-62f, 0x1.77e076p-6f, 0x1.0592eep-7f, -0x1.af850ap-4f,
+    0x1.333334p-61f, 0x1.77e076p-6f, 0x1.0592eep-7f, -0x1.af850ap-4f,
     /* s = 3/8: node 26 y */
-    0x1.333334p-60f, -0x1.916962p-12f, 0x1.1264dp-6f, -0x1.678016p-3f,
+    0x1.19999ap-58f, -0x1.916962p-12f, 0x1.1264dp-6f, -0x1.678016p-3f,
     /* s = 3/8: node 26 z */
-    -0x1.333334p-58f, 0x1.851e64p-5f, 0x1.ee4e54p-5f, 0x1.9904d4p-2f,
+    -0x1.733334p-57f, 0x1.851e64p-5f, 0x1.ee4e54p-5f, 0x1.9904d4p-2f,
     /* s = 3/8: node 27 x */
-    -0x0p+0f, 0x1.100068p-5f, 0x1.12e2a4p-7f, -0x1.07563p-4f,
+    -0x1.0cccccp-60f, 0x1.100068p-5f, 0x1.12e2a4p-7f, -0x1.07563p-4f,
     /* s = 3/8: node 27 y */
-    0x1.ccccccp-59f, 0x1.958a1p-12f, 0x1.3ff7cep-5f, -0x1.cafa5cp-3f,
+    0x1.333334p-61f, 0x1.958a1p-12f, 0x1.3ff7cep-5f, -0x1.cafa5cp-3f,
     /* s = 3/8: node 27 z */
-    -0x1.8cccccp-57f, 0x1.78d11ap-5f, 0x1.96b20ap-4f, 0x1.29d88p-1f,
+    -0x1p-58f, 0x1.78d11ap-5f, 0x1.96b20ap-4f, 0x1.29d88p-1f,
     /* s = 3/8: node 28 x */
-    -0x1.466666p-61f, 0x1.1e90acp-5f, 0x1.d652ep-9f, 0x1.c625bap-7f,
+    -0x1.59999ap-59f, 0x1.1e90acp-5f, 0x1.d652ep-9f, 0x1.c625bap-7f,
     /* s = 3/8: node 28 y */
-    0x1.b33334p-59f, -0x1.587994p-9f, 0x1.a385b6p-5f, -0x1.0aa3p-2f,
+    0x1.19999ap-58f, -0x1.587994p-9f, 0x1.a385b6p-5f, -0x1.0aa3p-2f,
     /* s = 3/8: node 28 z */
-    -0x1.266666p-57f, 0x1.64b37ep-7f, 0x1.978facp-4f, 0x1.36f304p-1f,
+    -0x1.4cccccp-58f, 0x1.64b37ep-7f, 0x1.978facp-4f, 0x1.36f304p-1f,
     /* s = 3/8: node 29 x */
-    -0x1.59999ap-59f, 0x1.6cfd6p-5f, -0x1.071bc4p-7f, 0x1.2f8208p-4f,
+    -0x1.79999ap-59f, 0x1.6cfd6p-5f, -0x1.071bc4p-7f, 0x1.2f8208p-4f,
     /* s = 3/8: node 29 y */
-    0x1.a66666p-58f, -0x1.feed58p-7f, 0x1.363d72p-5f, -0x1.d4cd2cp-3f,
+    0x1.0cccccp-58f, -0x1.feed58p-7f, 0x1.363d72p-5f, -0x1.d4cd2cp-3f,
     /* s = 3/8: node 29 z */
-    -0x1.19999ap-58f, -0x1.2861aep-6f, 0x1.5cc38cp-4f, 0x1.1a1feep-1f,
+    0x1.99999ap-62f, -0x1.2861aep-6f, 0x1.5cc38cp-4f, 0x1.1a1feep-1f,
     /* s = 3/8: node 30 x */
-    -0x1.533334p-58f, 0x1.e1891p-6f, -0x1.e44812p-8f, 0x1.b47efp-4f,
+    -0x1.f33334p-59f, 0x1.e1891p-6f, -0x1.e44812p-8f, 0x1.b47efp-4f,
     /* s = 3/8: node 30 y */
-    0x1.e66666p-60f, -0x1.6be626p-8f, 0x1.5b745cp-6f, -0x1.5fe66cp-3f,
+    0x1.cp-59f, -0x1.6be626p-8f, 0x1.5b745cp-6f, -0x1.5fe66cp-3f,
     /* s = 3/8: node 30 z */
-    -0x1p-59f, -0x1.364e48p-5f, 0x1.c1111cp-5f, 0x1.93c4b8p-2f,
+    0x1.ccccccp-59f, -0x1.364e48p-5f, 0x1.c1111cp-5f, 0x1.93c4b8p-2f,
     /* s = 3/8: node 31 x */
-    -0x1.0cccccp-59f, 0x1.9a0df4p-7f, -0x1.01ac56p-7f, 0x1.a4d1acp-4f,
+    -0x1.e66666p-59f, 0x1.9a0df4p-7f, -0x1.01ac56p-7f, 0x1.a4d1acp-4f,
     /* s = 3/8: node 31 y */
-    0x1.b33334p-60f, -0x1.70299cp-7f, 0x1.3dab76p-7f, -0x1.9566f6p-4f,
+    0x1.4p-59f, -0x1.70299cp-7f, 0x1.3dab76p-7f, -0x1.9566f6p-4f,
     /* s = 3/8: node 31 z */
-    0x1.99999ap-62f, -0x1.95815p-6f, 0x1.9c6b1ap-6f, 0x1.aad306p-3f,
+    -0x1.99999ap-60f, -0x1.95815p-6f, 0x1.9c6b1ap-6f, 0x1.aad306p-3f,
     /* s = 3/8: node 32 x */
-    -0x1.e66666p-61f, 0x1.cea1bcp-9f, -0x1.19df34p-9f, 0x1.aa3ba8p-5f,
+    -0x1.19999ap-60f, 0x1.cea1bcp-9f, -0x1.19df34p-9f, 0x1.aa3ba8p-5f,
     /* s = 3/8: node 32 y */
-    0x1.4cccccp-61f, -0x1.1971aap-7f, 0x1.9af28p-10f, -0x1.69a66p-5f,
+    0x1.933334p-60f, -0x1.1971aap-7f, 0x1.9af28p-10f, -0x1.69a66p-5f,
     /* s = 3/8: node 32 z */
-    -0x1.19999ap-61f, -0x1.db09fp-9f, 0x1.9a8e22p-9f, 0x1.28a25p-4f,
+    -0x1.333334p-61f, -0x1.db09fp-9f, 0x1.9a8e22p-9f, 0x1.28a25p-4f,
     /* s = 3/8: node 33 x */
     0x1p-68f, -0x1.0d56d4p-14f, 0x1.c534fp-15f, 0x1.124b86p-12f,
     /* s = 3/8: node 33 y */
-    -0x1.333334p-69f, 0x1.8d06acp-14f, -0x1.77d2fcp-15f, -0x1.de9002p-12f,
+    -0x1.333334p-70f, 0x1.8d06acp-14f, -0x1.77d2fcp-15f, -0x1.de9002p-12f,
     /* s = 3/8: node 33 z */
-    -0x1.b33334p-68f, 0x1.255fcep-13f, -0x1.dc909p-14f, 0x1.e5ca04p-13f,
+    -0x1.2p-67f, 0x1.255fcep-13f, -0x1.dc909p-14f, 0x1.e5ca04p-13f,
     /* s = 3/8: node 34 x */
-    0x1.49999ap-66f, -0x1.d1a728p-14f, -0x1.5c00cap-14f, -0x1.764c12p-12f,
+    0x1.a66666p-67f, -0x1.d1a728p-14f, -0x1.5c00cap-14f, -0x1.764c12p-12f,
     /* s = 3/8: node 34 y */
-    0x1p-66f, -0x1.9f447ap-14f, -0x1.e95fe2p-16f, -0x1.c7e05ep-12f,
+    0x1.59999ap-67f, -0x1.9f447ap-14f, -0x1.e95fe2p-16f, -0x1.c7e05ep-12f,
     /* s = 3/8: node 34 z */
-    -0x1.99999ap-70f, -0x1.de5f44p-14f, -0x1.e33606p-15f, 0x1.45cbap-12f,
+    0x1.6cccccp-67f, -0x1.de5f44p-14f, -0x1.e33606p-15f, 0x1.45cbap-12f,
     /* s = 3/8: node 35 x */
-    0x1.266666p-60f, -0x1.f6429ap-9f, -0x1.5a0ddp-9f, -0x1.799aap-4f,
+    0x1.99999ap-60f, -0x1.f6429ap-9f, -0x1.5a0ddp-9f, -0x1.799aap-4f,
     /* s = 3/8: node 35 y */
-    -0x1.ccccccp-63f, 0x1.c9993cp-8f, 0x1.60bc4cp-9f, -0x1.81d66p-5f,
+    -0x1.333334p-63f, 0x1.c9993cp-8f, 0x1.60bc4cp-9f, -0x1.81d66p-5f,
     /* s = 3/8: node 35 z */
-    -0x1.333334p-59f, 0x1.3a7c1ep-6f, 0x1.79989p-7f, 0x1.2f758ep-3f,
+    -0x1.cp-59f, 0x1.3a7c1ep-6f, 0x1.79989p-7f, 0x1.2f758ep-3f,
     /* s = 3/8: node 36 x */
     0x1.99999ap-60f, 0x1.c8cb26p-9f, -0x1.b656dap-8f, -0x1.8c0cc8p-3f,
     /* s = 3/8: node 36 y */
-    0x1.666666p-61f, 0x1.fe11b2p-9f, 0x1.5c3118p-6f, -0x1.afc0bcp-4f,
+    0x1p-60f, 0x1.fe11b2p-9f, 0x1.5c3118p-6f, -0x1.afc0bcp-4f,
     /* s = 3/8: node 36 z */
-    -0x1.733334p-57f, 0x1.14baa4p-4f, 0x1.5e695cp-5f, 0x1.a0173cp-2f,
+    -0x1.59999ap-57f, 0x1.14baa4p-4f, 0x1.5e695cp-5f, 0x1.a0173cp-2f,
     /* s = 3/8: node 37 x */
-    0x1.ccccccp-59f, 0x1.ab1648p-6f, -0x1.309eap-7f, -0x1.8af79p-3f,
+    0x1.666666p-60f, 0x1.ab1648p-6f, -0x1.309eap-7f, -0x1.8af79p-3f,
     /* s = 3/8: node 37 y */
-    0x1.f33334p-59f, -0x1.1f4f64p-7f, 0x1.680d7p-5f, -0x1.75c1cep-3f,
+    0x1p-59f, -0x1.1f4f64p-7f, 0x1.680d7p-5f, -0x1.75c1cep-3f,
     /* s = 3/8: node 37 z */
-    -0x1.e66666p-57f, 0x1.c0177p-4f, 0x1.a4a87cp-4f, 0x1.8369f2p-1f,
+    -0x1.d9999ap-57f, 0x1.c0177p-4f, 0x1.a4a87cp-4f, 0x1.8369f2p-1f,
     /* s = 3/8: node 38 x */
-    -0x1.9b3334p-58f, 0x1.db8cc2p-4f, 0x1.4ee0ccp-5f, -0x1.65f4a2p-5f,
+    -0x1.00ccccp-57f, 0x1.db8cc2p-4f, 0x1.4ee0ccp-5f, -0x1.65f4a2p-5f,
     /* s = 3/8: node 38 y */
-    0x1.4cccccp-59f, 0x1.d78eb2p-7f, 0x1.fb94cp-4f, -0x1.17f3c4p-2f,
+    0x1.99999ap-59f, 0x1.d78eb2p-7f, 0x1.fb94cp-4f, -0x1.17f3c4p-2f,
     /* s = 3/8: node 38 z */
-    -0x1.0cccccp-56f, 0x1.fd7d8cp-4f, 0x1.5e15aap-3f, 0x1.19b858p+0f,
+    -0x1.99999ap-58f, 0x1.fd7d8cp-4f, 0x1.5e15aap-3f, 0x1.19b858p+0f,
     /* s = 3/8: node 39 x */
-    -0x1.ccp-57f, 0x1.2e2e98p-3f, 0x1.d426d6p-7f, 0x1.270af8p-5f,
+    -0x1.013334p-56f, 0x1.2e2e98p-3f, 0x1.d426d6p-7f, 0x1.270af8p-5f,
     /* s = 3/8: node 39 y */
-    0x1.333334p-58f, -0x1.2b70aep-6f, 0x1.184ceap-3f, -0x1.273d92p-2f,
+    0x1.b33334p-58f, -0x1.2b70aep-6f, 0x1.184ceap-3f, -0x1.273d92p-2f,
     /* s = 3/8: node 39 z */
     -0x1.99999ap-57f, 0x1.96b54ep-6f, 0x1.44a0acp-3f, 0x1.318b64p+0f,
     /* s = 3/8: node 40 x */
-    -0x1.366666p-57f, 0x1.c4f146p-4f, 0x1.7b492ep-9f, 0x1.2859aep-3f,
+    -0x1.833334p-57f, 0x1.c4f146p-4f, 0x1.7b492ep-9f, 0x1.2859aep-3f,
     /* s = 3/8: node 40 y */
-    0x1.f33334p-58f, -0x1.0e5ad8p-7f, 0x1.c52db8p-4f, -0x1.e6da54p-3f,
+    0x1.733334p-58f, -0x1.0e5ad8p-7f, 0x1.c52db8p-4f, -0x1.e6da54p-3f,
     /* s = 3/8: node 40 z */
-    -0x1.b33334p-57f, -0x1.c20cc2p-5f, 0x1.0e038cp-3f, 0x1.0727c2p+0f,
+    -0x1.333334p-59f, -0x1.c20cc2p-5f, 0x1.0e038cp-3f, 0x1.0727c2p+0f,
     /* s = 3/8: node 41 x */
-    -0x1.3p-57f, 0x1.14b1c8p-4f, -0x1.a75f74p-7f, 0x1.6d774ap-3f,
+    -0x1.59999ap-57f, 0x1.14b1c8p-4f, -0x1.a75f74p-7f, 0x1.6d774ap-3f,
     /* s = 3/8: node 41 y */
-    0x1.6p-58f, -0x1.5aaaacp-6f, 0x1.f68c1ap-5f, -0x1.5d7e32p-3f,
+    0x1.99999ap-59f, -0x1.5aaaacp-6f, 0x1.f68c1ap-5f, -0x1.5d7e32p-3f,
     /* s = 3/8: node 41 z */
-    -0x1p-58f, -0x1.35fae8p-4f, 0x1.386e92p-4f, 0x1.77af9ap-1f,
+    -0x1.0cccccp-57f, -0x1.35fae8p-4f, 0x1.386e92p-4f, 0x1.77af9ap-1f,
     /* s = 3/8: node 42 x */
-    -0x1.866666p-58f, 0x1.e3393ep-6f, -0x1.22efb4p-10f, 0x1.6694f8p-3f,
+    -0x1.99999ap-58f, 0x1.e3393ep-6f, -0x1.22efb4p-10f, 0x1.6694f8p-3f,
     /* s = 3/8: node 42 y */
-    0x1.333334p-59f, -0x1.4d1f18p-7f, 0x1.7cc02ap-6f, -0x1.957c0cp-4f,
+    0x1.a66666p-59f, -0x1.4d1f18p-7f, 0x1.7cc02ap-6f, -0x1.957c0cp-4f,
     /* s = 3/8: node 42 z */
-    0x1.99999ap-60f, -0x1.b4ce5cp-5f, 0x1.43898ap-5f, 0x1.94337ap-2f,
+    -0x1.99999ap-62f, -0x1.b4ce5cp-5f, 0x1.43898ap-5f, 0x1.94337ap-2f,
     /* s = 3/8: node 43 x */
-    -0x1.ccccccp-61f, 0x1.32ce6ep-8f, -0x1.c3557ap-9f, 0x1.69f56p-4f,
+    -0x1.b33334p-61f, 0x1.32ce6ep-8f, -0x1.c3557ap-9f, 0x1.69f56p-4f,
     /* s = 3/8: node 43 y */
-    0x1.8p-60f, -0x1.7ca9e8p-7f, 0x1.77ff3cp-8f, -0x1.657f5ap-5f,
+    0x1.ccccccp-61f, -0x1.7ca9e8p-7f, 0x1.77ff3cp-8f, -0x1.657f5ap-5f,
     /* s = 3/8: node 43 z */
-    -0x1.4p-59f, -0x1.c6e996p-7f, 0x1.f8caap-8f, 0x1.2b872p-3f,
+    -0x1.99999ap-64f, -0x1.c6e996p-7f, 0x1.f8caap-8f, 0x1.2b872p-3f,
     /* s = 3/8: node 44 x */
-    0x1.733334p-68f, -0x1.eb8e2p-14f, 0x1.9c2a6p-14f, 0x1.8450d8p-12f,
+    0x1.b33334p-68f, -0x1.eb8e2p-14f, 0x1.9c2a6p-14f, 0x1.8450d8p-12f,
     /* s = 3/8: node 44 y */
-    0x1.ccccccp-68f, 0x1.1d9122p-14f, 0x1.5e0cdcp-18f, -0x1.c67078p-12f,
+    0x1.ccccccp-69f, 0x1.1d9122p-14f, 0x1.5e0cdcp-18f, -0x1.c67078p-12f,
     /* s = 3/8: node 44 z */
-    -0x1.4p-66f, 0x1.68613p-13f, -0x1.780866p-14f, 0x1.465bcp-12f,
+    -0x1p-66f, 0x1.68613p-13f, -0x1.780866p-14f, 0x1.465bcp-12f,
     /* s = 3/8: node 45 x */
-    0x1.49999ap-65f, -0x1.03816ap-12f, -0x1.b72d64p-16f, -0x1.3a62acp-11f,
+    0x1.e66666p-66f, -0x1.03816ap-12f, -0x1.b72d64p-16f, -0x1.3a62acp-11f,
     /* s = 3/8: node 45 y */
-    0x1.733334p-67f, -0x1.91b472p-14f, 0x1.403696p-14f, -0x1.64faecp-12f,
+    0x1.19999ap-68f, -0x1.91b472p-14f, 0x1.403696p-14f, -0x1.64faecp-12f,
     /* s = 3/8: node 45 z */
-    0x1.333334p-67f, -0x1.619e6cp-13f, -0x1.45eceep-16f, 0x1.c17fp-12f,
+    0x1.99999ap-69f, -0x1.619e6cp-13f, -0x1.45eceep-16f, 0x1.c17fp-12f,
     /* s = 3/8: node 46 x */
-    0x1.666666p-60f, -0x1.4eb868p-10f, -0x1.977438p-8f, -0x1.029d78p-3f,
+    0x1p-61f, -0x1.4eb868p-10f, -0x1.977438p-8f, -0x1.029d78p-3f,
     /* s = 3/8: node 46 y */
-    -0x1p-63f, 0x1.ed04a4p-8f, 0x1.137424p-7f, -0x1.d3fbd4p-6f,
+    0x1.333334p-64f, 0x1.ed04a4p-8f, 0x1.137424p-7f, -0x1.d3fbd4p-6f,
     /* s = 3/8: node 46 z */
-    -0x1.4p-58f, 0x1.00b8a4p-5f, 0x1.80da4cp-7f, 0x1.b0959cp-3f,
+    -0x1.19999ap-58f, 0x1.00b8a4p-5f, 0x1.80da4cp-7f, 0x1.b0959cp-3f,
     /* s = 3/8: node 47 x */
-    0x1.99999ap-61f, 0x1.61a87cp-6f, -0x1.263e4ap-7f, -0x1.00ea44p-2f,
+    0x1.ccccccp-60f, 0x1.61a87cp-6f, -0x1.263e4ap-7f, -0x1.00ea44p-2f,
     /* s = 3/8: node 47 y */
-    -0x1.8p-61f, 0x1.86d504p-7f, 0x1.f2219ep-6f, -0x1.eb4308p-5f,
+    -0x1.99999ap-63f, 0x1.86d504p-7f, 0x1.f2219ep-6f, -0x1.eb4308p-5f,
     /* s = 3/8: node 47 z */
-    -0x1.666666p-57f, 0x1.8f546cp-4f, 0x1.272b1p-5f, 0x1.1ee8e2p-1f,
+    -0x1.ccccccp-57f, 0x1.8f546cp-4f, 0x1.272b1p-5f, 0x1.1ee8e2p-1f,
     /* s = 3/8: node 48 x */
-    0x1.4cccccp-59f, 0x1.de81d4p-5f, -0x1.4eda9cp-7f, -0x1.2933fp-2f,
+    0x1p-59f, 0x1.de81d4p-5f, -0x1.4eda9cp-7f, -0x1.2933fp-2f,
     /* s = 3/8: node 48 y */
-    0x1p-59f, 0x1.3d0bf4p-8f, 0x1.8735fcp-4f, -0x1.fe7d0ap-4f,
+    0x1.e66666p-59f, 0x1.3d0bf4p-8f, 0x1.8735fcp-4f, -0x1.fe7d0ap-4f,
     /* s = 3/8: node 48 z */
-    -0x1.f33334p-56f, 0x1.45b4f2p-3f, 0x1.8143eap-4f, 0x1.10f09cp+0f,
+    -0x1.e66666p-56f, 0x1.45b4f2p-3f, 0x1.8143eap-4f, 0x1.10f09cp+0f,
     /* s = 3/8: node 49 x */
-    -0x1.143334p-56f, 0x1.72af28p-2f, 0x1.198642p-3f, 0x1.84d444p-6f,
+    -0x1.96p-57f, 0x1.72af28p-2f, 0x1.198642p-3f, 0x1.84d444p-6f,
     /* s = 3/8: node 49 y */
-    0x1p-60f, 0x1.9c87eap-4f, 0x1.0403d6p-2f, -0x1.3d52bep-3f,
+    -0x1.4cccccp-60f, 0x1.9c87eap-4f, 0x1.0403d6p-2f, -0x1.3d52bep-3f,
     /* s = 3/8: node 49 z */
-    -0x1.266666p-55f, 0x1.6b4fa6p-3f, 0x1.3d9662p-3f, 0x1.93fb7ep+0f,
+    -0x1.99999ap-56f, 0x1.6b4fa6p-3f, 0x1.3d9662p-3f, 0x1.93fb7ep+0f,
     /* s = 3/8: node 50 x */
-    -0x1.686666p-56f, 0x1.2936aep-2f, 0x1.1608b2p-5f, 0x1.7b2614p-5f,
+    -0x1.293334p-56f, 0x1.2936aep-2f, 0x1.1608b2p-5f, 0x1.7b2614p-5f,
     /* s = 3/8: node 50 y */
-    0x1.f33334p-59f, 0x1.8f48fep-7f, 0x1.84ea56p-2f, -0x1.637d88p-3f,
+    0x1.4cccccp-59f, 0x1.8f48fep-7f, 0x1.84ea56p-2f, -0x1.637d88p-3f,
     /* s = 3/8: node 50 z */
-    -0x1.19999ap-55f, 0x1.a77d12p-6f, 0x1.0e1dd2p-3f, 0x1.aeaac2p+0f,
+    -0x1p-57f, 0x1.a77d12p-6f, 0x1.0e1dd2p-3f, 0x1.aeaac2p+0f,
     /* s = 3/8: node 51 x */
-    -0x1.3e6666p-56f, 0x1.d8a538p-3f, -0x1.4e913ap-5f, 0x1.73361cp-3f,
+    -0x1.38p-56f, 0x1.d8a538p-3f, -0x1.4e913ap-5f, 0x1.73361cp-3f,
     /* s = 3/8: node 51 y */
-    0x1.59999ap-57f, -0x1.cf928ap-5f, 0x1.bf8af8p-3f, -0x1.3d24c4p-3f,
+    0x1.a33334p-57f, -0x1.cf928ap-5f, 0x1.bf8af8p-3f, -0x1.3d24c4p-3f,
     /* s = 3/8: node 51 z */
-    -0x1.8p-57f, -0x1.3a28bcp-4f, 0x1.8ead18p-4f, 0x1.74ab6p+0f,
+    -0x1.2cccccp-55f, -0x1.3a28bcp-4f, 0x1.8ead18p-4f, 0x1.74ab6p+0f,
     /* s = 3/8: node 52 x */
-    -0x1.f9999ap-57f, 0x1.04d41p-3f, -0x1.9c3a5cp-9f, 0x1.fa95f4p-3f,
+    -0x1.6cccccp-57f, 0x1.04d41p-3f, -0x1.9c3a5cp-9f, 0x1.fa95f4p-3f,
     /* s = 3/8: node 52 y */
-    0x1.4p-59f, -0x1.255a98p-7f, 0x1.6ce19ep-4f, -0x1.dc56bep-4f,
+    0x1.733334p-59f, -0x1.255a98p-7f, 0x1.6ce19ep-4f, -0x1.dc56bep-4f,
     /* s = 3/8: node 52 z */
-    -0x1.99999ap-61f, -0x1.ea7de6p-4f, 0x1.0e6ad4p-4f, 0x1.042cc4p+0f,
+    0x1.333334p-58f, -0x1.ea7de6p-4f, 0x1.0e6ad4p-4f, 0x1.042cc4p+0f,
     /* s = 3/8: node 53 x */
-    -0x1.cp-58f, 0x1.61e98p-5f, -0x1.10b978p-8f, 0x1.d67b64p-3f,
+    -0x1.59999ap-58f, 0x1.61e98p-5f, -0x1.10b978p-8f, 0x1.d67b64p-3f,
     /* s = 3/8: node 53 y */
-    0x1.666666p-62f, -0x1.9420bp-7f, 0x1.3f94b4p-5f, -0x1.f73512p-5f,
+    0x1.666666p-59f, -0x1.9420bp-7f, 0x1.3f94b4p-5f, -0x1.f73512p-5f,
     /* s = 3/8: node 53 z */
-    -0x1.333334p-60f, -0x1.4745ccp-4f, 0x1.b82704p-6f, 0x1.15b41ep-1f,
+    -0x1.99999ap-62f, -0x1.4745ccp-4f, 0x1.b82704p-6f, 0x1.15b41ep-1f,
     /* s = 3/8: node 54 x */
-    -0x1.b33334p-60f, 0x1.97292ep-7f, 0x1.3b9b46p-9f, 0x1.ed086ep-4f,
+    -0x1.4p-59f, 0x1.97292ep-7f, 0x1.3b9b46p-9f, 0x1.ed086ep-4f,
     /* s = 3/8: node 54 y */
-    0x1.733334p-61f, -0x1.8e3aep-8f, 0x1.a77594p-8f, -0x1.c936fp-6f,
+    0x1.4cccccp-60f, -0x1.8e3aep-8f, 0x1.a77594p-8f, -0x1.c936fp-6f,
     /* s = 3/8: node 54 z */
     0x1.99999ap-63f, -0x1.867406p-6f, 0x1.194e4ep-7f, 0x1.a5f1d8p-3f,
     /* s = 3/8: node 55 x */
-    0x1.0cccccp-67f, -0x1.0dc8ap-12f, 0x1.789e46p-15f, 0x1.3623a2p-11f,
+    0x1.ccccccp-67f, -0x1.0dc8ap-12f, 0x1.789e46p-15f, 0x1.3623a2p-11f,
     /* s = 3/8: node 55 y */
-    -0x1.99999ap-72f, 0x1.776a8ep-14f, 0x1.0c762cp-16f, -0x1.38e2fp-12f,
+    -0x1.066666p-67f, 0x1.776a8ep-14f, 0x1.0c762cp-16f, -0x1.38e2fp-12f,
     /* s = 3/8: node 55 z */
-    -0x1.033334p-65f, 0x1.dac3f6p-13f, -0x1.5139ecp-15f, 0x1.9a059ep-12f,
+    -0x1.f33334p-67f, 0x1.dac3f6p-13f, -0x1.5139ecp-15f, 0x1.9a059ep-12f,
     /* s = 3/8: node 56 x */
-    0x1.ccccccp-67f, -0x1.ce910ap-13f, -0x1.266672p-15f, -0x1.2b11ecp-11f,
+    0x1p-65f, -0x1.ce910ap-13f, -0x1.266672p-15f, -0x1.2b11ecp-11f,
     /* s = 3/8: node 56 y */
-    0x1.ep-73f, 0x1.4397bap-16f, 0x1.ab758cp-14f, -0x1.16d704p-19f,
+    0x1.a66666p-75f, 0x1.4397bap-16f, 0x1.ab758cp-14f, -0x1.16d704p-19f,
     /* s = 3/8: node 56 z */
-    0x1.333334p-68f, -0x1.9aad2cp-13f, 0x1.a1cedp-17f, 0x1.edf526p-12f,
+    0x1.8p-67f, -0x1.9aad2cp-13f, 0x1.a1cedp-17f, 0x1.edf526p-12f,
     /* s = 3/8: node 57 x */
-    0x1p-59f, -0x1.bb653ap-11f, -0x1.7255p-10f, -0x1.24b6ccp-3f,
+    0x1.ccccccp-60f, -0x1.bb653ap-11f, -0x1.7255p-10f, -0x1.24b6ccp-3f,
     /* s = 3/8: node 57 y */
-    0x1.333334p-65f, 0x1.cb5ac6p-9f, 0x1.5c12ep-7f, 0x1.03cc04p-8f,
+    -0x1.e66666p-65f, 0x1.cb5ac6p-9f, 0x1.5c12ep-7f, 0x1.03cc04p-8f,
     /* s = 3/8: node 57 z */
-    -0x1.4p-58f, 0x1.24452ep-5f, 0x1.73b3fep-9f, 0x1.ebf02ap-3f,
+    -0x1.266666p-58f, 0x1.24452ep-5f, 0x1.73b3fep-9f, 0x1.ebf02ap-3f,
     /* s = 3/8: node 58 x */
-    -0x0p+0f, 0x1.850a06p-5f, -0x1.e5fb34p-8f, -0x1.09e67ap-2f,
+    0x1.8p-59f, 0x1.850a06p-5f, -0x1.e5fb34p-8f, -0x1.09e67ap-2f,
     /* s = 3/8: node 58 y */
-    0x1.d33334p-62f, 0x1.577528p-9f, 0x1.46d6dap-5f, 0x1.b0f29cp-8f,
+    -0x1.2p-62f, 0x1.577528p-9f, 0x1.46d6dap-5f, 0x1.b0f29cp-8f,
     /* s = 3/8: node 58 z */
-    -0x1.933334p-56f, 0x1.a911b6p-4f, 0x1.3fc58p-7f, 0x1.3a9718p-1f,
+    -0x1.d9999ap-57f, 0x1.a911b6p-4f, 0x1.3fc58p-7f, 0x1.3a9718p-1f,
     /* s = 3/8: node 59 x */
-    -0x1.533334p-57f, 0x1.333fep-3f, -0x1.e4c504p-8f, -0x1.215284p-2f,
+    -0x1.d9999ap-58f, 0x1.333fep-3f, -0x1.e4c504p-8f, -0x1.215284p-2f,
     /* s = 3/8: node 59 y */
-    0x1.79999ap-60f, 0x1.233794p-7f, 0x1.cc93f6p-4f, 0x1.09fc8ap-6f,
+    0x1.ecccccp-61f, 0x1.233794p-7f, 0x1.cc93f6p-4f, 0x1.09fc8ap-6f,
     /* s = 3/8: node 59 z */
-    -0x1.ccccccp-56f, 0x1.64246p-3f, 0x1.17ec52p-6f, 0x1.31d4bcp+0f,
+    -0x1.666666p-56f, 0x1.64246p-3f, 0x1.17ec52p-6f, 0x1.31d4bcp+0f,
     /* s = 3/8: node 60 x */
-    -0x1.cp-57f, 0x1.833aep-2f, 0x1.7baef8p-7f, -0x1.866a2cp-3f,
+    -0x1.633334p-57f, 0x1.833aep-2f, 0x1.7baef8p-7f, -0x1.866a2cp-3f,
     /* s = 3/8: node 60 y */
-    -0x1.14ccccp-59f, 0x1.d75178p-8f, 0x1.15fbccp-2f, 0x1.59d54ep-7f,
+    0x1.9cccccp-60f, 0x1.d75178p-8f, 0x1.15fbccp-2f, 0x1.59d54ep-7f,
     /* s = 3/8: node 60 z */
-    -0x1p-55f, 0x1.42d37p-3f, 0x1.4a8e5cp-5f, 0x1.b8546ap+0f,
+    -0x1.8p-56f, 0x1.42d37p-3f, 0x1.4a8e5cp-5f, 0x1.b8546ap+0f,
     /* s = 3/8: node 61 x */
-    -0x1.15ccccp-55f, 0x1.a58aecp-1f, 0x1.84969ep-6f, 0x1.c491e4p-7f,
+    -0x1.99999ap-60f, 0x1.a58aecp-1f, 0x1.84969ep-6f, 0x1.c491e4p-7f,
     /* s = 3/8: node 61 y */
-    0x1.446666p-56f, 0x1.c2435p-6f, 0x1.a4ac34p-1f, 0x1.33b6ep-6f,
+    0x1.ed999ap-57f, 0x1.c2435p-6f, 0x1.a4ac34p-1f, 0x1.33b6ep-6f,
     /* s = 3/8: node 61 z */
-    -0x1.99999ap-56f, 0x1.957fa8p-7f, 0x1.f8912ap-7f, 0x1.24f5b2p+1f,
+    -0x1.4p-55f, 0x1.957fa8p-7f, 0x1.f8912ap-7f, 0x1.24f5b2p+1f,
     /* s = 3/8: node 62 x */
-    -0x1.39999ap-56f, 0x1.a6dfacp-2f, 0x1.3d7d86p-7f, 0x1.a42f4p-3f,
+    -0x1.0cccccp-56f, 0x1.a6dfacp-2f, 0x1.3d7d86p-7f, 0x1.a42f4p-3f,
     /* s = 3/8: node 62 y */
-    -0x1.69999ap-62f, 0x1.23004cp-8f, 0x1.0471dp-2f, 0x1.3b4bc2p-8f,
+    0x1.3ap-59f, 0x1.23004cp-8f, 0x1.0471dp-2f, 0x1.3b4bc2p-8f,
     /* s = 3/8: node 62 z */
-    -0x1.99999ap-58f, -0x1.989666p-4f, 0x1.1c037cp-8f, 0x1.ade08ep+0f,
+    -0x1.99999ap-57f, -0x1.989666p-4f, 0x1.1c037cp-8f, 0x1.ade08ep+0f,
     /* s = 3/8: node 63 x */
-    -0x1.2p-57f, 0x1.25110ep-3f, 0x1.24c77ep-7f, 0x1.1a767ep-2f,
+    -0x1.8p-57f, 0x1.25110ep-3f, 0x1.24c77ep-7f, 0x1.1a767ep-2f,
     /* s = 3/8: node 63 y */
-    -0x1.633334p-62f, 0x1.67da96p-8f, 0x1.f2bd8ep-4f, 0x1.333abp-8f,
+    -0x1.cp-63f, 0x1.67da96p-8f, 0x1.f2bd8ep-4f, 0x1.333abp-8f,
     /* s = 3/8: node 63 z */
-    0x1.333334p-59f, -0x1.2f1a4ap-3f, 0x1.6f348ep-10f, 0x1.280172p+0f,
+    -0x1.99999ap-58f, -0x1.2f1a4ap-3f, 0x1.6f348ep-10f, 0x1.280172p+0f,
     /* s = 3/8: node 64 x */
-    -0x1.0cccccp-58f, 0x1.07c4e2p-4f, 0x1.0c1cf2p-9f, 0x1.ff2032p-3f,
+    -0x1.4cccccp-58f, 0x1.07c4e2p-4f, 0x1.0c1cf2p-9f, 0x1.ff2032p-3f,
     /* s = 3/8: node 64 y */
-    0x1.266666p-64f, 0x1.440a44p-10f, 0x1.2074eep-5f, 0x1.ecc0eep-10f,
+    0x1.0cccccp-65f, 0x1.440a44p-10f, 0x1.2074eep-5f, 0x1.ecc0eep-10f,
     /* s = 3/8: node 64 z */
-    -0x1.b33334p-58f, -0x1.648792p-4f, -0x1.234b2ap-10f, 0x1.326e52p-1f,
+    -0x1.99999ap-60f, -0x1.648792p-4f, -0x1.234b2ap-10f, 0x1.326e52p-1f,
     /* s = 3/8: node 65 x */
-    -0x1.19999ap-59f, 0x1.616c22p-10f, 0x1.173d06p-9f, 0x1.19025p-3f,
+    -0x1.8p-59f, 0x1.616c22p-10f, 0x1.173d06p-9f, 0x1.19025p-3f,
     /* s = 3/8: node 65 y */
-    0x1.033334p-62f, 0x1.3e564p-10f, 0x1.74144ap-7f, 0x1.9ea604p-10f,
+    0x1.19999ap-63f, 0x1.3e564p-10f, 0x1.74144ap-7f, 0x1.9ea604p-10f,
     /* s = 3/8: node 65 z */
-    -0x1.8p-59f, -0x1.fe8c82p-6f, 0x1.482972p-12f, 0x1.e03f04p-3f,
+    0x1.8p-59f, -0x1.fe8c82p-6f, 0x1.482972p-12f, 0x1.e03f04p-3f,
     /* s = 3/8: node 66 x */
-    -0x1.333334p-68f, -0x1.924bc2p-13f, -0x1.b8aea6p-17f, 0x1.248be6p-11f,
+    0x1p-68f, -0x1.924bc2p-13f, -0x1.b8aea6p-17f, 0x1.248be6p-11f,
     /* s = 3/8: node 66 y */
-    0x1.14ccccp-70f, 0x1.347c78p-18f, 0x1.84e2acp-13f, -0x1.93514p-18f,
+    0x1.78p-69f, 0x1.347c78p-18f, 0x1.84e2acp-13f, -0x1.93514p-18f,
     /* s = 3/8: node 66 z */
-    -0x1.19999ap-67f, 0x1.c2a46ep-13f, 0x1.33807p-17f, 0x1.ef7d74p-12f,
+    -0x1.ccccccp-68f, 0x1.c2a46ep-13f, 0x1.33807p-17f, 0x1.ef7d74p-12f,
     /* s = 3/8: node 67 x */
-    0x1.d9999ap-66f, -0x1.e05382p-13f, 0x1.b70f28p-15f, -0x1.340246p-11f,
+    0x1.ep-66f, -0x1.e05382p-13f, 0x1.b70f28p-15f, -0x1.340246p-11f,
     /* s = 3/8: node 67 y */
-    -0x1.d9999ap-67f, 0x1.b18468p-14f, 0x1.437dfcp-14f, 0x1.5b9e96p-12f,
+    -0x1.8cccccp-68f, 0x1.b18468p-14f, 0x1.437dfcp-14f, 0x1.5b9e96p-12f,
     /* s = 3/8: node 67 z */
-    0x1.8cccccp-67f, -0x1.7c5dacp-13f, 0x1.a7ea82p-15f, 0x1.bda98p-12f,
+    0x1.8p-67f, -0x1.7c5dacp-13f, 0x1.a7ea82p-15f, 0x1.bda98p-12f,
     /* s = 3/8: node 68 x */
-    0x1p-60f, 0x1.0ae27cp-7f, -0x1.1e9394p-10f, -0x1.ed8beap-4f,
+    0x1.333334p-62f, 0x1.0ae27cp-7f, -0x1.1e9394p-10f, -0x1.ed8beap-4f,
     /* s = 3/8: node 68 y */
-    0x1.666666p-63f, -0x1.bb9a4p-9f, 0x1.27a15p-7f, 0x1.120578p-5f,
+    0x1p-63f, -0x1.bb9a4p-9f, 0x1.27a15p-7f, 0x1.120578p-5f,
     /* s = 3/8: node 68 z */
-    -0x1.333334p-58f, 0x1.c46ce6p-6f, -0x1.8b33b4p-8f, 0x1.b04c32p-3f,
+    -0x1p-58f, 0x1.c46ce6p-6f, -0x1.8b33b4p-8f, 0x1.b04c32p-3f,
     /* s = 3/8: node 69 x */
-    -0x0p+0f, 0x1.4096ccp-5f, -0x1.3e147p-7f, -0x1.d7fe3ep-3f,
+    -0x1.666666p-60f, 0x1.4096ccp-5f, -0x1.3e147p-7f, -0x1.d7fe3ep-3f,
     /* s = 3/8: node 69 y */
-    0x1.666666p-61f, -0x1.a3975ep-7f, 0x1.2b3772p-5f, 0x1.11771ap-4f,
+    -0x1.99999ap-65f, -0x1.a3975ep-7f, 0x1.2b3772p-5f, 0x1.11771ap-4f,
     /* s = 3/8: node 69 z */
-    -0x1.266666p-56f, 0x1.6a2d1p-4f, -0x1.515722p-6f, 0x1.1a3806p-1f,
+    -0x1.4p-56f, 0x1.6a2d1p-4f, -0x1.515722p-6f, 0x1.1a3806p-1f,
     /* s = 3/8: node 70 x */
-    -0x1.666666p-58f, 0x1.c014cap-4f, -0x1.aba0cap-7f, -0x1.e5f93ap-3f,
+    -0x1.99999ap-60f, 0x1.c014cap-4f, -0x1.aba0cap-7f, -0x1.e5f93ap-3f,
     /* s = 3/8: node 70 y */
-    -0x1p-60f, -0x1.90a094p-9f, 0x1.984b9p-4f, 0x1.0f6bb4p-3f,
+    -0x1.19999ap-60f, -0x1.90a094p-9f, 0x1.984b9p-4f, 0x1.0f6bb4p-3f,
     /* s = 3/8: node 70 z */
-    -0x1.666666p-57f, 0x1.1ac8d4p-3f, -0x1.ae2e56p-5f, 0x1.0a58a2p+0f,
+    -0x1.ccccccp-57f, 0x1.1ac8d4p-3f, -0x1.ae2e56p-5f, 0x1.0a58a2p+0f,
     /* s = 3/8: node 71 x */
-    -0x1.ecccccp-57f, 0x1.c47336p-3f, -0x1.b7032cp-5f, -0x1.24f81cp-3f,
+    -0x1.1b3334p-56f, 0x1.c47336p-3f, -0x1.b7032cp-5f, -0x1.24f81cp-3f,
     /* s = 3/8: node 71 y */
-    0x1.666666p-61f, -0x1.8484dp-5f, 0x1.ada636p-3f, 0x1.476cb8p-3f,
+    0x1.29999ap-57f, -0x1.8484dp-5f, 0x1.ada636p-3f, 0x1.476cb8p-3f,
     /* s = 3/8: node 71 z */
-    -0x1.0cccccp-55f, 0x1.a0c16cp-4f, -0x1.3b774cp-4f, 0x1.72fd9cp+0f,
+    -0x1.ccccccp-57f, 0x1.a0c16cp-4f, -0x1.3b774cp-4f, 0x1.72fd9cp+0f,
     /* s = 3/8: node 72 x */
-    -0x1.4ae666p-56f, 0x1.07ac76p-2f, 0x1.c2b23ap-8f, 0x1.424ceep-8f,
+    -0x1.bcp-59f, 0x1.07ac76p-2f, 0x1.c2b23ap-8f, 0x1.424ceep-8f,
     /* s = 3/8: node 72 y */
-    -0x1.4cccccp-59f, 0x1.10a89p-9f, 0x1.9bc8bp-2f, 0x1.88d42cp-3f,
+    -0x1.333334p-58f, 0x1.10a89p-9f, 0x1.9bc8bp-2f, 0x1.88d42cp-3f,
     /* s = 3/8: node 72 z */
-    -0x1.19999ap-55f, 0x1.57ccdap-7f, -0x1.ae33b2p-4f, 0x1.af20f8p+0f,
+    -0x1.333334p-56f, 0x1.57ccdap-7f, -0x1.ae33b2p-4f, 0x1.af20f8p+0f,
     /* s = 3/8: node 73 x */
-    -0x1.a66666p-57f, 0x1.bcec88p-3f, 0x1.0ecbf8p-4f, 0x1.4e7006p-3f,
+    -0x1.18p-56f, 0x1.bcec88p-3f, 0x1.0ecbf8p-4f, 0x1.4e7006p-3f,
     /* s = 3/8: node 73 y */
-    -0x1.cp-59f, 0x1.1bb284p-4f, 0x1.b4346ep-3f, 0x1.4cc6fcp-3f,
+    -0x1p-58f, 0x1.1bb284p-4f, 0x1.b4346ep-3f, 0x1.4cc6fcp-3f,
     /* s = 3/8: node 73 z */
-    -0x1.ccccccp-57f, -0x1.5884d6p-4f, -0x1.5e645ap-4f, 0x1.715214p+0f,
+    -0x1.19999ap-57f, -0x1.5884d6p-4f, -0x1.5e645ap-4f, 0x1.715214p+0f,
     /* s = 3/8: node 74 x */
-    -0x1.133334p-57f, 0x1.f30b54p-4f, 0x1.d429d4p-7f, 0x1.ec8716p-3f,
+    -0x1p-57f, 0x1.f30b54p-4f, 0x1.d429d4p-7f, 0x1.ec8716p-3f,
     /* s = 3/8: node 74 y */
-    0x1p-61f, 0x1.c3a98p-7f, 0x1.851f94p-4f, 0x1.f49938p-4f,
+    -0x1.19999ap-60f, 0x1.c3a98p-7f, 0x1.851f94p-4f, 0x1.f49938p-4f,
     /* s = 3/8: node 74 z */
-    -0x1.4cccccp-57f, -0x1.eb684cp-4f, -0x1.0f9bd6p-4f, 0x1.0510c6p+0f,
+    -0x1.99999ap-60f, -0x1.eb684cp-4f, -0x1.0f9bd6p-4f, 0x1.0510c6p+0f,
     /* s = 3/8: node 75 x */
-    -0x1.733334p-58f, 0x1.52af12p-5f, 0x1.83bb12p-7f, 0x1.cffbc8p-3f,
+    -0x1.d9999ap-58f, 0x1.52af12p-5f, 0x1.83bb12p-7f, 0x1.cffbc8p-3f,
     /* s = 3/8: node 75 y */
-    -0x1.99999ap-62f, 0x1.09e666p-6f, 0x1.3c57fep-5f, 0x1.0b215ep-4f,
+    -0x1.cp-60f, 0x1.09e666p-6f, 0x1.3c57fep-5f, 0x1.0b215ep-4f,
     /* s = 3/8: node 75 z */
-    -0x1p-59f, -0x1.49eefcp-4f, -0x1.b99d3ep-6f, 0x1.14d17p-1f,
+    -0x1.99999ap-59f, -0x1.49eefcp-4f, -0x1.b99d3ep-6f, 0x1.14d17p-1f,
     /* s = 3/8: node 76 x */
-    -0x1.b33334p-59f, 0x1.853c6ep-7f, -0x1.0f5eaap-9f, 0x1.ec62e2p-4f,
+    -0x1.99999ap-61f, 0x1.853c6ep-7f, -0x1.0f5eaap-9f, 0x1.ec62e2p-4f,
     /* s = 3/8: node 76 y */
-    -0x1.ccccccp-63f, 0x1.e3af48p-8f, 0x1.fa0ad6p-8f, 0x1.eaef5ep-6f,
+    -0x1.a66666p-61f, 0x1.e3af48p-8f, 0x1.fa0ad6p-8f, 0x1.eaef5ep-6f,
     /* s = 3/8: node 76 z */
-    -0x1.19999ap-59f, -0x1.80fa2ep-6f, -0x1.2b4324p-7f, 0x1.a7cb34p-3f,
+    -0x1.ccccccp-60f, -0x1.80fa2ep-6f, -0x1.2b4324p-7f, 0x1.a7cb34p-3f,
     /* s = 3/8: node 77 x */
-    0x1.99999ap-71f, -0x1.07887p-12f, -0x1.57a348p-15f, 0x1.2c6ff6p-11f,
+    -0x1.99999ap-71f, -0x1.07887p-12f, -0x1.57a348p-15f, 0x1.2c6ff6p-11f,
     /* s = 3/8: node 77 y */
-    0x1.333334p-68f, -0x1.81d3eap-14f, 0x1.15d558p-15f, 0x1.45f6fep-12f,
+    0x1p-70f, -0x1.81d3eap-14f, 0x1.15d558p-15f, 0x1.45f6fep-12f,
     /* s = 3/8: node 77 z */
-    -0x1.acccccp-66f, 0x1.e16444p-13f, 0x1.f9b9ccp-15f, 0x1.a49b08p-12f,
+    -0x1.99999ap-66f, 0x1.e16444p-13f, 0x1.f9b9ccp-15f, 0x1.a49b08p-12f,
     /* s = 3/8: node 78 x */
-    0x1.f33334p-67f, -0x1.25cae8p-13f, 0x1.6d1a1ap-14f, -0x1.c0dc6ep-12f,
+    0x1.266666p-67f, -0x1.25cae8p-13f, 0x1.6d1a1ap-14f, -0x1.c0dc6ep-12f,
     /* s = 3/8: node 78 y */
-    -0x1.2p-66f, 0x1.59ce5ep-14f, -0x1.a52c16p-17f, 0x1.c20b9ep-12f,
+    -0x1.733334p-67f, 0x1.59ce5ep-14f, -0x1.a52c16p-17f, 0x1.c20b9ep-12f,
     /* s = 3/8: node 78 z */
-    0x1.acccccp-67f, -0x1.682b3ep-13f, 0x1.b3c9eep-14f, 0x1.2d82fep-12f,
+    0x1.666666p-67f, -0x1.682b3ep-13f, 0x1.b3c9eep-14f, 0x1.2d82fep-12f,
     /* s = 3/8: node 79 x */
-    0x1.ccccccp-62f, 0x1.3edb6ap-8f, -0x1.6e7c2ep-9f, -0x1.6cb4d8p-4f,
+    0x1.4p-60f, 0x1.3edb6ap-8f, -0x1.6e7c2ep-9f, -0x1.6cb4d8p-4f,
     /* s = 3/8: node 79 y */
-    0x1.ccccccp-62f, -0x1.63beecp-7f, 0x1.9b639cp-8f, 0x1.77b936p-5f,
+    0x1.e66666p-61f, -0x1.63beecp-7f, 0x1.9b639cp-8f, 0x1.77b936p-5f,
     /* s = 3/8: node 79 z */
-    -0x1p-58f, 0x1.dfcf76p-7f, -0x1.cdf3c8p-8f, 0x1.3052bep-3f,
+    -0x1.99999ap-59f, 0x1.dfcf76p-7f, -0x1.cdf3c8p-8f, 0x1.3052bep-3f,
     /* s = 3/8: node 80 x */
-    0x1.99999ap-64f, 0x1.47be8ap-6f, -0x1.d98fdap-8f, -0x1.5ebc7cp-3f,
+    0x1.ccccccp-61f, 0x1.47be8ap-6f, -0x1.d98fdap-8f, -0x1.5ebc7cp-3f,
     /* s = 3/8: node 80 y */
-    -0x1.333334p-61f, -0x1.aa7146p-8f, 0x1.bcccfap-6f, 0x1.af6e68p-4f,
+    -0x1.99999ap-64f, -0x1.aa7146p-8f, 0x1.bcccfap-6f, 0x1.af6e68p-4f,
     /* s = 3/8: node 80 z */
-    -0x1.666666p-58f, 0x1.ed547ep-5f, -0x1.178d4ep-5f, 0x1.9c4058p-2f,
+    -0x1.ccccccp-57f, 0x1.ed547ep-5f, -0x1.178d4ep-5f, 0x1.9c4058p-2f,
     /* s = 3/8: node 81 x */
-    -0x1.8p-59f, 0x1.085ce4p-4f, -0x1.1d042ep-6f, -0x1.591eb8p-3f,
+    -0x1.666666p-61f, 0x1.085ce4p-4f, -0x1.1d042ep-6f, -0x1.591eb8p-3f,
     /* s = 3/8: node 81 y */
-    -0x1.19999ap-60f, -0x1.079e9p-6f, 0x1.f8fc7ap-5f, 0x1.5dd6e8p-3f,
+    -0x1.99999ap-63f, -0x1.079e9p-6f, 0x1.f8fc7ap-5f, 0x1.5dd6e8p-3f,
     /* s = 3/8: node 81 z */
-    -0x1.866666p-56f, 0x1.520878p-4f, -0x1.22b064p-4f, 0x1.7ab208p-1f,
+    -0x1.cp-57f, 0x1.520878p-4f, -0x1.22b064p-4f, 0x1.7ab208p-1f,
     /* s = 3/8: node 82 x */
-    -0x1.e66666p-58f, 0x1.6b5ca2p-4f, -0x1.3609a2p-7f, -0x1.014c5ap-3f,
+    -0x1.466666p-58f, 0x1.6b5ca2p-4f, -0x1.3609a2p-7f, -0x1.014c5ap-3f,
     /* s = 3/8: node 82 y */
-    -0x1.666666p-60f, -0x1.a6a2c6p-8f, 0x1.ec25f8p-4f, 0x1.ee0ab2p-3f,
+    -0x1.19999ap-59f, -0x1.a6a2c6p-8f, 0x1.ec25f8p-4f, 0x1.ee0ab2p-3f,
     /* s = 3/8: node 82 z */
     -0x1.59999ap-56f, 0x1.375704p-4f, -0x1.cca816p-4f, 0x1.08e116p+0f,
     /* s = 3/8: node 83 x */
-    -0x1.7b3334p-60f, 0x1.045708p-3f, 0x1.42966ep-9f, 0x1.8fedbcp-8f,
+    -0x1.7cccccp-58f, 0x1.045708p-3f, 0x1.42966ep-9f, 0x1.8fedbcp-8f,
     /* s = 3/8: node 83 y */
-    -0x1.ccccccp-59f, 0x1.2e7dbcp-7f, 0x1.209276p-3f, 0x1.1b7dcp-2f,
+    -0x1.4cccccp-59f, 0x1.2e7dbcp-7f, 0x1.209276p-3f, 0x1.1b7dcp-2f,
     /* s = 3/8: node 83 z */
-    -0x1.59999ap-56f, 0x1.afa81p-8f, -0x1.210012p-3f, 0x1.2af3cap+0f,
+    -0x1.4cccccp-56f, 0x1.afa81p-8f, -0x1.210012p-3f, 0x1.2af3cap+0f,
     /* s = 3/8: node 84 x */
-    -0x1.733334p-58f, 0x1.7e08a8p-4f, 0x1.db7718p-7f, 0x1.f45c72p-4f,
+    -0x1.e66666p-58f, 0x1.7e08a8p-4f, 0x1.db7718p-7f, 0x1.f45c72p-4f,
     /* s = 3/8: node 84 y */
-    -0x1.0cccccp-58f, 0x1.5de54ap-7f, 0x1.e86272p-4f, 0x1.e4db08p-3f,
+    -0x1.b33334p-59f, 0x1.5de54ap-7f, 0x1.e86272p-4f, 0x1.e4db08p-3f,
     /* s = 3/8: node 84 z */
-    -0x1.19999ap-57f, -0x1.08f064p-4f, -0x1.e9e6a4p-4f, 0x1.055b2cp+0f,
+    -0x1.99999ap-57f, -0x1.08f064p-4f, -0x1.e9e6a4p-4f, 0x1.055b2cp+0f,
     /* s = 3/8: node 85 x */
-    -0x1.0cccccp-58f, 0x1.03c59ep-4f, 0x1.5169a8p-6f, 0x1.5eb11cp-3f,
+    -0x1p-57f, 0x1.03c59ep-4f, 0x1.5169a8p-6f, 0x1.5eb11cp-3f,
     /* s = 3/8: node 85 y */
-    -0x1.133334p-58f, 0x1.7b492ap-6f, 0x1.014816p-4f, 0x1.6193bap-3f,
+    -0x1.4cccccp-60f, 0x1.7b492ap-6f, 0x1.014816p-4f, 0x1.6193bap-3f,
     /* s = 3/8: node 85 z */
-    -0x1.333334p-60f, -0x1.389c12p-4f, -0x1.3bd954p-4f, 0x1.77365cp-1f,
+    -0x1.b33334p-58f, -0x1.389c12p-4f, -0x1.3bd954p-4f, 0x1.77365cp-1f,
     /* s = 3/8: node 86 x */
-    -0x1.666666p-59f, 0x1.a3d828p-6f, 0x1.9734a2p-8f, 0x1.5c366cp-3f,
+    -0x1.ccccccp-59f, 0x1.a3d828p-6f, 0x1.9734a2p-8f, 0x1.5c366cp-3f,
     /* s = 3/8: node 86 y */
-    -0x1.19999ap-60f, 0x1.83c98cp-7f, 0x1.b0ffdep-6f, 0x1.9b79bap-4f,
+    -0x1.b33334p-60f, 0x1.83c98cp-7f, 0x1.b0ffdep-6f, 0x1.9b79bap-4f,
     /* s = 3/8: node 86 z */
-    -0x1.99999ap-62f, -0x1.bcc758p-5f, -0x1.3f28ecp-5f, 0x1.947cfap-2f,
+    0x1.99999ap-62f, -0x1.bcc758p-5f, -0x1.3f28ecp-5f, 0x1.947cfap-2f,
     /* s = 3/8: node 87 x */
-    -0x1.19999ap-60f, 0x1.4c4444p-8f, 0x1.18ee22p-8f, 0x1.67736ap-4f,
+    -0x1.ccccccp-61f, 0x1.4c4444p-8f, 0x1.18ee22p-8f, 0x1.67736ap-4f,
     /* s = 3/8: node 87 y */
-    -0x1.466666p-60f, 0x1.9cfd1ap-7f, 0x1.bd5c46p-8f, 0x1.729deap-5f,
+    -0x1.133334p-59f, 0x1.9cfd1ap-7f, 0x1.bd5c46p-8f, 0x1.729deap-5f,
     /* s = 3/8: node 87 z */
-    -0x1.99999ap-60f, -0x1.b1e896p-7f, -0x1.0e1468p-7f, 0x1.2c7b5cp-3f,
+    -0x1.8p-60f, -0x1.b1e896p-7f, -0x1.0e1468p-7f, 0x1.2c7b5cp-3f,
     /* s = 3/8: node 88 x */
-    0x1.666666p-68f, -0x1.c9d33p-14f, -0x1.d60454p-14f, 0x1.ae4698p-12f,
+    -0x1.333334p-69f, -0x1.c9d33p-14f, -0x1.d60454p-14f, 0x1.ae4698p-12f,
     /* s = 3/8: node 88 y */
-    -0x1.4cccccp-68f, -0x1.3782dcp-14f, -0x1.d56d2p-18f, 0x1.be21c4p-12f,
+    0x1.99999ap-72f, -0x1.3782dcp-14f, -0x1.d56d2p-18f, 0x1.be21c4p-12f,
     /* s = 3/8: node 88 z */
-    -0x1.cp-68f, 0x1.603b6ap-13f, 0x1.989da2p-14f, 0x1.36df8cp-12f,
+    -0x1.966666p-66f, 0x1.603b6ap-13f, 0x1.989da2p-14f, 0x1.36df8cp-12f,
     /* s = 3/8: node 89 x */
-    0x1.533334p-67f, -0x1.9c9102p-15f, 0x1.06f236p-14f, -0x1.fa48a6p-13f,
+    0x1.8p-68f, -0x1.9c9102p-15f, 0x1.06f236p-14f, -0x1.fa48a6p-13f,
     /* s = 3/8: node 89 y */
-    -0x1.133334p-66f, 0x1.8dd27ap-14f, -0x1.46ea7cp-15f, 0x1.eb3ap-12f,
+    -0x1.d9999ap-67f, 0x1.8dd27ap-14f, -0x1.46ea7cp-15f, 0x1.eb3ap-12f,
     /* s = 3/8: node 89 z */
-    -0x1.4p-68f, -0x1.086c74p-13f, 0x1.e637b6p-14f, 0x1.ec3928p-13f,
+    0x1.79999ap-67f, -0x1.086c74p-13f, 0x1.e637b6p-14f, 0x1.ec3928p-13f,
     /* s = 3/8: node 90 x */
-    0x1.4cccccp-61f, 0x1.99a2ecp-10f, -0x1.025a4p-8f, -0x1.aaeed6p-5f,
+    0x1.ccccccp-62f, 0x1.99a2ecp-10f, -0x1.025a4p-8f, -0x1.aaeed6p-5f,
     /* s = 3/8: node 90 y */
-    0x1.99999ap-63f, -0x1.c56ea8p-8f, 0x1.915324p-9f, 0x1.7593aap-5f,
+    -0x1.333334p-64f, -0x1.c56ea8p-8f, 0x1.915324p-9f, 0x1.7593aap-5f,
     /* s = 3/8: node 90 z */
-    -0x1.b33334p-60f, 0x1.21fdf4p-8f, -0x1.42c616p-9f, 0x1.2ee486p-4f,
+    -0x1.733334p-60f, 0x1.21fdf4p-8f, -0x1.42c616p-9f, 0x1.2ee486p-4f,
     /* s = 3/8: node 91 x */
-    0x1.333334p-62f, 0x1.5e9ab6p-7f, -0x1.332cd6p-7f, -0x1.946126p-4f,
+    0x1.b33334p-60f, 0x1.5e9ab6p-7f, -0x1.332cd6p-7f, -0x1.946126p-4f,
     /* s = 3/8: node 91 y */
-    -0x1.333334p-62f, -0x1.3a5e02p-7f, 0x1.644354p-7f, 0x1.99f2e4p-4f,
+    -0x1p-61f, -0x1.3a5e02p-7f, 0x1.644354p-7f, 0x1.99f2e4p-4f,
     /* s = 3/8: node 91 z */
-    -0x1.0cccccp-58f, 0x1.ae9b32p-6f, -0x1.83a01p-6f, 0x1.ad4f4p-3f,
+    -0x1.ccccccp-58f, 0x1.ae9b32p-6f, -0x1.83a01p-6f, 0x1.ad4f4p-3f,
     /* s = 3/8: node 92 x */
-    0x1p-61f, 0x1.71c0dep-6f, -0x1.7edad2p-7f, -0x1.982f8cp-4f,
+    0x1.19999ap-60f, 0x1.71c0dep-6f, -0x1.7edad2p-7f, -0x1.982f8cp-4f,
     /* s = 3/8: node 92 y */
-    -0x1p-61f, -0x1.3ccaa8p-9f, 0x1.a28c52p-6f, 0x1.639b64p-3f,
+    -0x1.333334p-59f, -0x1.3ccaa8p-9f, 0x1.a28c52p-6f, 0x1.639b64p-3f,
     /* s = 3/8: node 92 z */
-    -0x1.0cccccp-57f, 0x1.5a164p-5f, -0x1.9f778cp-5f, 0x1.9aa77ap-2f,
+    -0x1.666666p-58f, 0x1.5a164p-5f, -0x1.9f778cp-5f, 0x1.9aa77ap-2f,
     /* s = 3/8: node 93 x */
-    -0x1.266666p-59f, 0x1.3d401cp-5f, -0x1.89d43cp-7f, -0x1.dfee9ap-5f,
+    -0x1.266666p-60f, 0x1.3d401cp-5f, -0x1.89d43cp-7f, -0x1.dfee9ap-5f,
     /* s = 3/8: node 93 y */
-    -0x1.b33334p-59f, -0x1.7dfa0cp-8f, 0x1.583746p-5f, 0x1.cf9742p-3f,
+    -0x1.666666p-59f, -0x1.7dfa0cp-8f, 0x1.583746p-5f, 0x1.cf9742p-3f,
     /* s = 3/8: node 93 z */
-    -0x1.0cccccp-57f, 0x1.d896dp-6f, -0x1.3ebfb6p-4f, 0x1.168212p-1f,
+    -0x1.133334p-56f, 0x1.d896dp-6f, -0x1.3ebfb6p-4f, 0x1.168212p-1f,
     /* s = 3/8: node 94 x */
-    -0x1.a63334p-61f, 0x1.0bde58p-5f, 0x1.893bccp-10f, -0x1.f2e1d8p-12f,
+    -0x1.8c7334p-59f, 0x1.0bde58p-5f, 0x1.893bccp-10f, -0x1.f2e1d8p-12f,
     /* s = 3/8: node 94 y */
-    -0x1p-59f, 0x1.f5e9b8p-11f, 0x1.e0957ep-5f, 0x1.f4d602p-3f,
+    -0x1.4cccccp-59f, 0x1.f5e9b8p-11f, 0x1.e0957ep-5f, 0x1.f4d602p-3f,
     /* s = 3/8: node 94 z */
-    -0x1.19999ap-58f, 0x1.add318p-10f, -0x1.648b64p-4f, 0x1.335aap-1f,
+    -0x1.333334p-59f, 0x1.add318p-10f, -0x1.648b64p-4f, 0x1.335aap-1f,
     /* s = 3/8: node 95 x */
-    -0x1.b33334p-59f, 0x1.436c94p-5f, 0x1.d31ec8p-7f, 0x1.060f44p-4f,
+    -0x1.2p-58f, 0x1.436c94p-5f, 0x1.d31ec8p-7f, 0x1.060f44p-4f,
     /* s = 3/8: node 95 y */
-    -0x1.666666p-59f, 0x1.be6aeap-7f, 0x1.545312p-5f, 0x1.d329ep-3f,
+    -0x1.333334p-59f, 0x1.be6aeap-7f, 0x1.545312p-5f, 0x1.d329ep-3f,
     /* s = 3/8: node 95 z */
-    -0x1.733334p-57f, -0x1.95eff6p-6f, -0x1.43d238p-4f, 0x1.163e22p-1f,
+    -0x1.59999ap-57f, -0x1.95eff6p-6f, -0x1.43d238p-4f, 0x1.163e22p-1f,
     /* s = 3/8: node 96 x */
-    -0x1p-58f, 0x1.a4825ap-6f, 0x1.89b568p-7f, 0x1.9907c6p-4f,
+    -0x1.99999ap-59f, 0x1.a4825ap-6f, 0x1.89b568p-7f, 0x1.9907c6p-4f,
     /* s = 3/8: node 96 y */
-    -0x1.cp-59f, 0x1.5c88b4p-8f, 0x1.99b9ccp-6f, 0x1.5a1a6ep-3f,
+    -0x1.e66666p-60f, 0x1.5c88b4p-8f, 0x1.99b9ccp-6f, 0x1.5a1a6ep-3f,
     /* s = 3/8: node 96 z */
-    -0x1.333334p-59f, -0x1.3d13ecp-5f, -0x1.ba3d58p-5f, 0x1.94d64ap-2f,
+    -0x1.333334p-57f, -0x1.3d13ecp-5f, -0x1.ba3d58p-5f, 0x1.94d64ap-2f,
     /* s = 3/8: node 97 x */
-    -0x1.333334p-60f, 0x1.63dd38p-7f, 0x1.517906p-7f, 0x1.96f91ap-4f,
+    -0x1.e66666p-60f, 0x1.63dd38p-7f, 0x1.517906p-7f, 0x1.96f91ap-4f,
     /* s = 3/8: node 97 y */
-    -0x1.066666p-58f, 0x1.846772p-7f, 0x1.6d5bc2p-7f, 0x1.9c9084p-4f,
+    -0x1.99999ap-59f, 0x1.846772p-7f, 0x1.6d5bc2p-7f, 0x1.9c9084p-4f,
     /* s = 3/8: node 97 z */
     -0x1.19999ap-59f, -0x1.9cc33cp-6f, -0x1.a145dcp-6f, 0x1.a9e938p-3f,
     /* s = 3/8: node 98 x */
-    -0x1.ccccccp-61f, 0x1.9d2318p-9f, 0x1.7afcc2p-9f, 0x1.a5fb92p-5f,
+    -0x1.8p-61f, 0x1.9d2318p-9f, 0x1.7afcc2p-9f, 0x1.a5fb92p-5f,
     /* s = 3/8: node 98 y */
-    -0x1.acccccp-60f, 0x1.1c588p-7f, 0x1.7aed1p-9f, 0x1.686d52p-5f,
+    -0x1.0cccccp-61f, 0x1.1c588p-7f, 0x1.7aed1p-9f, 0x1.686d52p-5f,
     /* s = 3/8: node 98 z */
-    -0x1.733334p-60f, -0x1.b2d5a4p-9f, -0x1.9318c6p-9f, 0x1.2a2e9cp-4f,
+    0x1.99999ap-65f, -0x1.b2d5a4p-9f, -0x1.9318c6p-9f, 0x1.2a2e9cp-4f,
     /* s = 3/8: node 99 x */
-    0x1.333334p-69f, -0x1.1564cap-14f, -0x1.da42cp-15f, 0x1.00e20ap-12f,
+    0x1.e66666p-69f, -0x1.1564cap-14f, -0x1.da42cp-15f, 0x1.00e20ap-12f,
     /* s = 3/8: node 99 y */
-    -0x1p-69f, -0x1.724f9p-14f, -0x1.725c52p-15f, 0x1.df79p-12f,
+    0x1.19999ap-67f, -0x1.724f9p-14f, -0x1.725c52p-15f, 0x1.df79p-12f,
     /* s = 3/8: node 99 z */
-    0x1.4cccccp-69f, 0x1.2924fcp-13f, 0x1.0f87eep-13f, 0x1.e76c4ap-13f,
+    -0x1.cp-68f, 0x1.2924fcp-13f, 0x1.0f87eep-13f, 0x1.e76c4ap-13f,
     /* s = 3/8: node 100 x */
-    0x1.266666p-67f, -0x1.5ff0ccp-15f, 0x1.b91522p-15f, -0x1.96696ap-14f,
+    0x1.e66666p-69f, -0x1.5ff0ccp-15f, 0x1.b91522p-15f, -0x1.96696ap-14f,
     /* s = 3/8: node 100 y */
-    -0x1.99999ap-70f, 0x1.ecde86p-16f, -0x1.1f1cc4p-16f, 0x1.8b56d4p-13f,
+    -0x1.0cccccp-68f, 0x1.ecde86p-16f, -0x1.1f1cc4p-16f, 0x1.8b56d4p-13f,
     /* s = 3/8: node 100 z */
-    0x1.a66666p-69f, -0x1.658262p-14f, 0x1.8a941ap-14f, 0x1.5811bap-13f,
+    0x1.933334p-68f, -0x1.658262p-14f, 0x1.8a941ap-14f, 0x1.5811bap-13f,
     /* s = 3/8: node 101 x */
-    -0x1.333334p-62f, 0x1.7ff6a6p-9f, -0x1.3d63f8p-8f, -0x1.55087ep-6f,
+    0x1.99999ap-63f, 0x1.7ff6a6p-9f, -0x1.3d63f8p-8f, -0x1.55087ep-6f,
     /* s = 3/8: node 101 y */
-    0x1.ccccccp-63f, -0x1.6e7628p-8f, 0x1.3b4348p-9f, 0x1.5a0c54p-6f,
+    -0x0p+0f, -0x1.6e7628p-8f, 0x1.3b4348p-9f, 0x1.5a0c54p-6f,
     /* s = 3/8: node 101 z */
-    0x1.333334p-63f, -0x1.52e78cp-8f, 0x1.57802p-8f, 0x1.6a1aaep-6f,
+    0x1.666666p-63f, -0x1.52e78cp-8f, 0x1.57802p-8f, 0x1.6a1aaep-6f,
     /* s = 3/8: node 102 x */
-    0x1.8p-62f, 0x1.66e2dp-10f, -0x1.20231ap-7f, -0x1.68c71cp-5f,
+    0x1p-63f, 0x1.66e2dp-10f, -0x1.20231ap-7f, -0x1.68c71cp-5f,
     /* s = 3/8: node 102 y */
-    -0x1p-62f, -0x1.79281ep-10f, 0x1.98af28p-9f, 0x1.b3da7cp-5f,
+    -0x1.99999ap-64f, -0x1.79281ep-10f, 0x1.98af28p-9f, 0x1.b3da7cp-5f,
     /* s = 3/8: node 102 z */
-    -0x1.99999ap-65f, 0x1.0835d6p-8f, -0x1.7c6f4p-9f, 0x1.2ea78p-4f,
+    -0x1.ccccccp-61f, 0x1.0835d6p-8f, -0x1.7c6f4p-9f, 0x1.2ea78p-4f,
     /* s = 3/8: node 103 x */
-    -0x1.4cccccp-62f, 0x1.8f8f88p-8f, -0x1.69a544p-7f, -0x1.6397e2p-5f,
+    0x1.666666p-63f, 0x1.8f8f88p-8f, -0x1.69a544p-7f, -0x1.6397e2p-5f,
     /* s = 3/8: node 103 y */
-    -0x1.99999ap-65f, -0x1.97f0c6p-9f, 0x1.83427p-8f, 0x1.65333p-4f,
+    -0x1.333334p-60f, -0x1.97f0c6p-9f, 0x1.83427p-8f, 0x1.65333p-4f,
     /* s = 3/8: node 103 z */
-    -0x1.733334p-59f, 0x1.276016p-7f, -0x1.9985ep-7f, 0x1.2dcafp-3f,
+    -0x1.99999ap-60f, 0x1.276016p-7f, -0x1.9985ep-7f, 0x1.2dcafp-3f,
     /* s = 3/8: node 104 x */
-    0x1.333334p-62f, 0x1.9bad3p-8f, -0x1.b1388ap-8f, -0x1.df9bf6p-6f,
+    0x1.99999ap-63f, 0x1.9bad3p-8f, -0x1.b1388ap-8f, -0x1.df9bf6p-6f,
     /* s = 3/8: node 104 y */
-    -0x1.4cccccp-60f, 0x1.a1a528p-9f, 0x1.48f94ap-7f, 0x1.f0602ap-4f,
+    -0x1.19999ap-60f, 0x1.a1a528p-9f, 0x1.48f94ap-7f, 0x1.f0602ap-4f,
     /* s = 3/8: node 104 z */
-    -0x1.666666p-58f, 0x1.53941ep-7f, -0x1.6c8aeap-6f, 0x1.ac8c02p-3f,
+    -0x1.19999ap-59f, 0x1.53941ep-7f, -0x1.6c8aeap-6f, 0x1.ac8c02p-3f,
     /* s = 3/8: node 105 x */
-    -0x1.65p-60f, 0x1.77fd42p-7f, 0x1.4eea6ep-13f, 0x1.c71b9ep-11f,
+    -0x1.35999ap-61f, 0x1.77fd42p-7f, 0x1.4eea6ep-13f, 0x1.c71b9ep-11f,
     /* s = 3/8: node 105 y */
-    -0x1.ccccccp-60f, 0x1.2baaf4p-9f, 0x1.278ecp-8f, 0x1.1e17aep-3f,
+    -0x1p-59f, 0x1.2baaf4p-9f, 0x1.278ecp-8f, 0x1.1e17aep-3f,
     /* s = 3/8: node 105 z */
-    -0x1.666666p-59f, 0x1.38d43ep-10f, -0x1.d74a6ap-6f, 0x1.e54368p-3f,
+    -0x1.99999ap-60f, 0x1.38d43ep-10f, -0x1.d74a6ap-6f, 0x1.e54368p-3f,
     /* s = 3/8: node 106 x */
-    -0x1.4cccccp-62f, 0x1.b38062p-8f, 0x1.b08892p-8f, 0x1.d65aa2p-6f,
+    -0x1.59999ap-60f, 0x1.b38062p-8f, 0x1.b08892p-8f, 0x1.d65aa2p-6f,
     /* s = 3/8: node 106 y */
-    0x1.666666p-61f, -0x1.7d92e6p-9f, 0x1.4cc45ep-7f, 0x1.e4458ep-4f,
+    -0x1.ccccccp-61f, -0x1.7d92e6p-9f, 0x1.4cc45ep-7f, 0x1.e4458ep-4f,
     /* s = 3/8: node 106 z */
-    -0x1.4cccccp-59f, -0x1.229914p-7f, -0x1.7bf646p-6f, 0x1.a8574ap-3f,
+    -0x1.333334p-60f, -0x1.229914p-7f, -0x1.7bf646p-6f, 0x1.a8574ap-3f,
     /* s = 3/8: node 107 x */
-    -0x1.6cccccp-60f, 0x1.b0e3fp-8f, 0x1.7a441ap-7f, 0x1.6aa9fp-5f,
+    -0x1.ccccccp-61f, 0x1.b0e3fp-8f, 0x1.7a441ap-7f, 0x1.6aa9fp-5f,
     /* s = 3/8: node 107 y */
-    -0x1p-61f, 0x1.6e04bap-8f, 0x1.791296p-8f, 0x1.6d6f72p-4f,
+    -0x1.f33334p-60f, 0x1.6e04bap-8f, 0x1.791296p-8f, 0x1.6d6f72p-4f,
     /* s = 3/8: node 107 z */
-    -0x1.333334p-60f, -0x1.fca298p-8f, -0x1.acfb7ep-7f, 0x1.2d5214p-3f,
+    -0x1.333334p-61f, -0x1.fca298p-8f, -0x1.acfb7ep-7f, 0x1.2d5214p-3f,
     /* s = 3/8: node 108 x */
-    -0x1.e66666p-61f, 0x1.435d38p-9f, 0x1.13bea2p-7f, 0x1.641eecp-5f,
+    -0x1.4p-61f, 0x1.435d38p-9f, 0x1.13bea2p-7f, 0x1.641eecp-5f,
     /* s = 3/8: node 108 y */
-    -0x1.666666p-62f, 0x1.42956ep-9f, 0x1.90fa84p-9f, 0x1.a309c8p-5f,
+    -0x1.8p-61f, 0x1.42956ep-9f, 0x1.90fa84p-9f, 0x1.a309c8p-5f,
     /* s = 3/8: node 108 z */
-    -0x1.99999ap-61f, -0x1.952dbp-9f, -0x1.b4d82ap-9f, 0x1.2a1bbap-4f,
+    -0x1.666666p-62f, -0x1.952dbp-9f, -0x1.b4d82ap-9f, 0x1.2a1bbap-4f,
     /* s = 3/8: node 109 x */
-    -0x1.4p-62f, 0x1.8f2bap-9f, 0x1.611e74p-8f, 0x1.5ff5p-6f,
+    -0x1p-61f, 0x1.8f2bap-9f, 0x1.611e74p-8f, 0x1.5ff5p-6f,
     /* s = 3/8: node 109 y */
-    -0x1.866666p-61f, 0x1.7f1f5p-8f, 0x1.8004aap-9f, 0x1.64467ep-6f,
+    -0x1.0cccccp-62f, 0x1.7f1f5p-8f, 0x1.8004aap-9f, 0x1.64467ep-6f,
     /* s = 3/8: node 109 z */
-    -0x1.666666p-61f, 0x1.6c8d92p-8f, 0x1.6764aep-8f, 0x1.6b79fap-6f,
+    -0x1.99999ap-61f, 0x1.6c8d92p-8f, 0x1.6764aep-8f, 0x1.6b79fap-6f,
     /* s = 3/8: node 110 x */
-    0x1p-72f, -0x1.1bbc36p-15f, -0x1.02019ep-14f, 0x1.6af6b6p-14f,
+    0x1.4p-70f, -0x1.1bbc36p-15f, -0x1.02019ep-14f, 0x1.6af6b6p-14f,
     /* s = 3/8: node 110 y */
-    -0x1.b33334p-70f, -0x1.d82a16p-16f, -0x1.bfcbe2p-16f, 0x1.81a708p-13f,
+    -0x1.666666p-70f, -0x1.d82a16p-16f, -0x1.bfcbe2p-16f, 0x1.81a708p-13f,
     /* s = 3/8: node 110 z */
-    -0x1.266666p-68f, 0x1.95f088p-14f, 0x1.7bbb56p-14f, 0x1.4a50bap-13f,
+    -0x1.3p-67f, 0x1.95f088p-14f, 0x1.7bbb56p-14f, 0x1.4a50bap-13f,
     /* s = 3/8: node 111 x */
-    0x1.99999ap-74f, -0x1.54edeap-16f, 0x1.e950ep-16f, 0x1.7a26dep-14f,
+    -0x1.99999ap-72f, -0x1.54edeap-16f, 0x1.e950ep-16f, 0x1.7a26dep-14f,
     /* s = 3/8: node 111 y */
-    -0x1.99999ap-71f, 0x1.a469cap-15f, -0x1.48ed7cp-16f, -0x1.77a00ep-14f,
+    -0x1.933334p-69f, 0x1.a469cap-15f, -0x1.48ed7cp-16f, -0x1.77a00ep-14f,
     /* s = 3/8: node 111 z */
-    -0x1.fd199ap-68f, 0x1.c33604p-15f, -0x1.306e9ep-14f, -0x1.8c3cd6p-20f,
+    -0x1.0dccccp-68f, 0x1.c33604p-15f, -0x1.306e9ep-14f, -0x1.8c3cd6p-20f,
     /* s = 3/8: node 112 x */
-    0x1.b33334p-69f, -0x1.11e8b6p-15f, 0x1.76964cp-16f, -0x1.95f056p-13f,
+    0x1.066666p-67f, -0x1.11e8b6p-15f, 0x1.76964cp-16f, -0x1.95f056p-13f,
     /* s = 3/8: node 112 y */
-    -0x1.566666p-67f, 0x1.22a77ap-14f, -0x1.ce26d8p-16f, 0x1.940814p-14f,
+    -0x1.466666p-68f, 0x1.22a77ap-14f, -0x1.ce26d8p-16f, 0x1.940814p-14f,
     /* s = 3/8: node 112 z */
-    0x1.4p-68f, -0x1.4e96aap-14f, 0x1.96b0acp-14f, 0x1.59f85ep-13f,
+    0x1.cp-69f, -0x1.4e96aap-14f, 0x1.96b0acp-14f, 0x1.59f85ep-13f,
     /* s = 3/8: node 113 x */
-    0x1.333334p-69f, -0x1.73cf9p-15f, 0x1.713d18p-14f, -0x1.dc3fc2p-12f,
+    0x1.19999ap-68f, -0x1.73cf9p-15f, 0x1.713d18p-14f, -0x1.dc3fc2p-12f,
     /* s = 3/8: node 113 y */
-    -0x1.39999ap-67f, 0x1.c40868p-15f, -0x1.c63282p-15f, 0x1.fdc1e8p-13f,
+    -0x1.8p-68f, 0x1.c40868p-15f, -0x1.c63282p-15f, 0x1.fdc1e8p-13f,
     /* s = 3/8: node 113 z */
-    0x1.ep-67f, -0x1.e678ccp-14f, 0x1.1510dp-13f, 0x1.e9c332p-13f,
+    0x1.266666p-68f, -0x1.e678ccp-14f, 0x1.1510dp-13f, 0x1.e9c332p-13f,
     /* s = 3/8: node 114 x */
-    0x1.99999ap-67f, -0x1.50f2fcp-18f, 0x1.2f0834p-14f, -0x1.cd608ep-12f,
+    0x1.666666p-68f, -0x1.50f2fcp-18f, 0x1.2f0834p-14f, -0x1.cd608ep-12f,
     /* s = 3/8: node 114 y */
-    -0x1.a66666p-67f, 0x1.b42f84p-14f, -0x1.fecb78p-14f, 0x1.aef67p-12f,
+    -0x1.133334p-66f, 0x1.b42f84p-14f, -0x1.fecb78p-14f, 0x1.aef67p-12f,
     /* s = 3/8: node 114 z */
-    0x1.333334p-69f, -0x1.a40c5p-14f, 0x1.586832p-13f, 0x1.27c56ap-12f,
+    0x1p-70f, -0x1.a40c5p-14f, 0x1.586832p-13f, 0x1.27c56ap-12f,
     /* s = 3/8: node 115 x */
-    0x1.666666p-68f, 0x1.2072bp-15f, 0x1.6afefcp-14f, -0x1.5337dep-12f,
+    0x1.8p-69f, 0x1.2072bp-15f, 0x1.6afefcp-14f, -0x1.5337dep-12f,
     /* s = 3/8: node 115 y */
-    -0x1.533334p-66f, 0x1.f24acp-15f, -0x1.ca328p-13f, 0x1.35d27cp-11f,
+    -0x1.0cccccp-66f, 0x1.f24acp-15f, -0x1.ca328p-13f, 0x1.35d27cp-11f,
     /* s = 3/8: node 115 z */
-    0x1.333334p-69f, -0x1.aab9f2p-16f, 0x1.cb51a8p-13f, 0x1.b73eap-12f,
+    -0x1.8p-68f, -0x1.aab9f2p-16f, 0x1.cb51a8p-13f, 0x1.b73eap-12f,
     /* s = 3/8: node 116 x */
-    -0x1.fc6666p-67f, 0x1.9c7f2ep-13f, -0x1.8435ap-20f, 0x1.406354p-17f,
+    -0x1.6dccccp-66f, 0x1.9c7f2ep-13f, -0x1.8435ap-20f, 0x1.406354p-17f,
     /* s = 3/8: node 116 y */
-    -0x1.99999ap-69f, -0x1.637278p-16f, -0x1.cc7978p-13f, 0x1.1e8216p-11f,
+    -0x1.666666p-67f, -0x1.637278p-16f, -0x1.cc7978p-13f, 0x1.1e8216p-11f,
     /* s = 3/8: node 116 z */
-    -0x1.99999ap-71f, -0x1.bd21b4p-18f, 0x1.dbd42ap-13f, 0x1.e2e738p-12f,
+    0x1.333334p-70f, -0x1.bd21b4p-18f, 0x1.dbd42ap-13f, 0x1.e2e738p-12f,
     /* s = 3/8: node 117 x */
-    -0x1.99999ap-68f, 0x1.be60c2p-16f, -0x1.5c5da6p-14f, 0x1.46a076p-12f,
+    -0x1.79999ap-67f, 0x1.be60c2p-16f, -0x1.5c5da6p-14f, 0x1.46a076p-12f,
     /* s = 3/8: node 117 y */
-    -0x1.ccccccp-67f, -0x1.59014ap-16f, -0x1.cf3f74p-13f, 0x1.40ffdp-11f,
+    -0x1.666666p-66f, -0x1.59014ap-16f, -0x1.cf3f74p-13f, 0x1.40ffdp-11f,
     /* s = 3/8: node 117 z */
-    -0x1.19999ap-68f, 0x1.18a17p-14f, 0x1.c38b96p-13f, 0x1.9fbf9cp-12f,
+    -0x1.ccccccp-68f, 0x1.18a17p-14f, 0x1.c38b96p-13f, 0x1.9fbf9cp-12f,
     /* s = 3/8: node 118 x */
-    -0x1.b33334p-68f, -0x1.2c47cep-20f, -0x1.3a57dcp-14f, 0x1.c2cde6p-12f,
+    -0x1.666666p-68f, -0x1.2c47cep-20f, -0x1.3a57dcp-14f, 0x1.c2cde6p-12f,
     /* s = 3/8: node 118 y */
-    0x1.333334p-70f, -0x1.0e530cp-13f, -0x1.000174p-13f, 0x1.94b108p-12f,
+    0x1.99999ap-72f, -0x1.0e530cp-13f, -0x1.000174p-13f, 0x1.94b108p-12f,
     /* s = 3/8: node 118 z */
-    -0x1.133334p-67f, 0x1.84ef04p-14f, 0x1.5faa9ep-13f, 0x1.34005p-12f,
+    -0x1.333334p-68f, 0x1.84ef04p-14f, 0x1.5faa9ep-13f, 0x1.34005p-12f,
     /* s = 3/8: node 119 x */
-    -0x1p-69f, -0x1.5f2b1cp-15f, -0x1.72ad98p-14f, 0x1.e19b44p-12f,
+    -0x1.19999ap-67f, -0x1.5f2b1cp-15f, -0x1.72ad98p-14f, 0x1.e19b44p-12f,
     /* s = 3/8: node 119 y */
-    0x1.99999ap-70f, -0x1.76f954p-15f, -0x1.088c6ep-14f, 0x1.0dbc38p-12f,
+    -0x1.666666p-70f, -0x1.76f954p-15f, -0x1.088c6ep-14f, 0x1.0dbc38p-12f,
     /* s = 3/8: node 119 z */
-    -0x1.733334p-68f, 0x1.18db2ep-13f, 0x1.2787eap-13f, 0x1.ea1ab2p-13f,
+    -0x1.266666p-66f, 0x1.18db2ep-13f, 0x1.2787eap-13f, 0x1.ea1ab2p-13f,
     /* s = 3/8: node 120 x */
-    -0x1.666666p-70f, -0x1.f86802p-16f, -0x1.a2198ap-16f, 0x1.7f57eap-13f,
+    -0x0p+0f, -0x1.f86802p-16f, -0x1.a2198ap-16f, 0x1.7f57eap-13f,
     /* s = 3/8: node 120 y */
-    0x1.19999ap-69f, -0x1.2835ap-14f, -0x1.10a032p-15f, 0x1.505ad6p-14f,
+    0x1.b9999ap-68f, -0x1.2835ap-14f, -0x1.10a032p-15f, 0x1.505ad6p-14f,
     /* s = 3/8: node 120 z */
-    -0x1.033334p-67f, 0x1.77b304p-14f, 0x1.90152cp-14f, 0x1.48678ap-13f,
+    -0x1.1p-67f, 0x1.77b304p-14f, 0x1.90152cp-14f, 0x1.48678ap-13f,
     /* s = 3/8: node 121 x */
-    0x1p-71f, -0x1.d75ed6p-22f, -0x1.724dbcp-15f, -0x1.a28cc2p-14f,
+    0x1.99999ap-72f, -0x1.d75ed6p-22f, -0x1.724dbcp-15f, -0x1.a28cc2p-14f,
     /* s = 3/8: node 121 y */
-    0x1.266666p-68f, -0x1.c1230ep-15f, -0x1.1b7a72p-17f, -0x1.d79d1cp-14f,
+    0x1.ecccccp-68f, -0x1.c1230ep-15f, -0x1.1b7a72p-17f, -0x1.d79d1cp-14f,
     /* s = 3/8: node 121 z */
-    0x1.e33334p-70f, -0x1.21677ap-14f, -0x1.1dea12p-14f, 0x1.97452cp-17f,
+    0x1.066666p-68f, -0x1.21677ap-14f, -0x1.1dea12p-14f, 0x1.97452cp-17f,
     /* s = 4/8: node 1 x */
-    0x1.0cccccp-69f, -0x1.d22a76p-16f, -0x1.6aad0cp-15f, 0x1.d1e12ep-14f,
+    -0x1.333334p-70f, -0x1.d22a76p-16f, -0x1.6aad0cp-15f, 0x1.d1e12ep-14f,
     /* s = 4/8: node 1 y */
-    -0x1.333334p-71f, -0x1.2b0f9ep-18f, 0x1.43099p-16f, 0x1.016216p-13f,
+    -0x1p-70f, -0x1.2b0f9ep-18f, 0x1.43099p-16f, 0x1.016216p-13f,
     /* s = 4/8: node 1 z */
-    -0x1.933334p-69f, 0x1.871032p-15f, 0x1.d7bd7ep-15f, -0x1.53b346p-16f,
+    -0x1.a8p-69f, 0x1.871032p-15f, 0x1.d7bd7ep-15f, -0x1.53b346p-16f,
     /* s = 4/8: node 2 x */
-    0x1.a66666p-69f, -0x1.a9b54ep-16f, -0x1.4030cep-16f, -0x1.7537c6p-13f,
+    0x1.0cccccp-68f, -0x1.a9b54ep-16f, -0x1.4030cep-16f, -0x1.7537c6p-13f,
     /* s = 4/8: node 2 y */
-    0x1.b66666p-68f, -0x1.5631cp-15f, -0x1.032678p-16f, -0x1.5b4ab2p-14f,
+    0x1.533334p-68f, -0x1.5631cp-15f, -0x1.032678p-16f, -0x1.5b4ab2p-14f,
     /* s = 4/8: node 2 z */
-    0x1.8p-70f, -0x1.0e449ep-14f, -0x1.5b5108p-14f, 0x1.67ab7p-13f,
+    -0x1.99999ap-74f, -0x1.0e449ep-14f, -0x1.5b5108p-14f, 0x1.67ab7p-13f,
     /* s = 4/8: node 3 x */
-    0x1.59999ap-67f, -0x1.e6bb58p-15f, -0x1.c3d33p-14f, -0x1.169a18p-11f,
+    0x1.333334p-67f, -0x1.e6bb58p-15f, -0x1.c3d33p-14f, -0x1.169a18p-11f,
     /* s = 4/8: node 3 y */
     0x1.19999ap-67f, -0x1.486858p-14f, -0x1.4d6b5p-14f, -0x1.0c3782p-12f,
     /* s = 4/8: node 3 z */
-    0x1.cp-68f, -0x1.94a63cp-14f, -0x1.cd372p-14f, 0x1.ffd83p-13f,
+    0x1.99999ap-73f, -0x1.94a63cp-14f, -0x1.cd372p-14f, 0x1.ffd83p-13f,
     /* s = 4/8: node 4 x */
-    0x1.0cccccp-67f, -0x1.ca471ep-15f, -0x1.d62fe2p-14f, -0x1.d3a132p-12f,
+    0x1.d9999ap-67f, -0x1.ca471ep-15f, -0x1.d62fe2p-14f, -0x1.d3a132p-12f,
     /* s = 4/8: node 4 y */
-    0x1.f33334p-67f, -0x1.aea762p-14f, -0x1.09302p-13f, -0x1.b23966p-12f,
+    0x1.666666p-67f, -0x1.aea762p-14f, -0x1.09302p-13f, -0x1.b23966p-12f,
     /* s = 4/8: node 4 z */
-    -0x1p-69f, -0x1.4fd5bp-14f, -0x1.45a648p-13f, 0x1.0baf9ep-12f,
+    0x1.ccccccp-69f, -0x1.4fd5bp-14f, -0x1.45a648p-13f, 0x1.0baf9ep-12f,
     /* s = 4/8: node 5 x */
-    -0x1.6cccccp-68f, 0x1.3b50c8p-15f, -0x1.7f4c62p-15f, -0x1.60e22ap-13f,
+    0x1.19999ap-70f, 0x1.3b50c8p-15f, -0x1.7f4c62p-15f, -0x1.60e22ap-13f,
     /* s = 4/8: node 5 y */
-    0x1.99999ap-72f, -0x1.263d92p-16f, -0x1.30a2d8p-13f, -0x1.911ffap-14f,
+    -0x1.8p-70f, -0x1.263d92p-16f, -0x1.30a2d8p-13f, -0x1.911ffap-14f,
     /* s = 4/8: node 5 z */
-    -0x1.ccccccp-69f, -0x1.2ef902p-15f, -0x1.08717cp-13f, 0x1.ee5566p-13f,
+    0x1.333334p-70f, -0x1.2ef902p-15f, -0x1.08717cp-13f, 0x1.ee5566p-13f,
     /* s = 4/8: node 6 x */
-    -0x1.9cp-67f, 0x1.99271cp-13f, 0x1.48b5c4p-18f, 0x1.3f83a6p-17f,
+    -0x1.866666p-68f, 0x1.99271cp-13f, 0x1.48b5c4p-18f, 0x1.3f83a6p-17f,
     /* s = 4/8: node 6 y */
-    0x1.666666p-68f, -0x1.45f514p-18f, -0x1.cea524p-13f, -0x1.0e942ep-11f,
+    0x1.ccccccp-69f, -0x1.45f514p-18f, -0x1.cea524p-13f, -0x1.0e942ep-11f,
     /* s = 4/8: node 6 z */
-    -0x1.59999ap-67f, 0x1.fbf5dap-17f, -0x1.a3a9bp-13f, 0x1.062214p-11f,
+    -0x1.ccccccp-68f, 0x1.fbf5dap-17f, -0x1.a3a9bp-13f, 0x1.062214p-11f,
     /* s = 4/8: node 7 x */
-    -0x1p-67f, 0x1.f4bbe4p-15f, 0x1.c9ec44p-14f, 0x1.82d074p-12f,
+    -0x1.2cccccp-67f, 0x1.f4bbe4p-15f, 0x1.c9ec44p-14f, 0x1.82d074p-12f,
     /* s = 4/8: node 7 y */
-    0x1.b33334p-68f, 0x1.58957ap-16f, -0x1.ec4f4ep-13f, -0x1.448f88p-11f,
+    0x1.99999ap-72f, 0x1.58957ap-16f, -0x1.ec4f4ep-13f, -0x1.448f88p-11f,
     /* s = 4/8: node 7 z */
-    -0x1.99999ap-67f, 0x1.ffe674p-15f, -0x1.b7ee6p-13f, 0x1.b30006p-12f,
+    -0x1.133334p-66f, 0x1.ffe674p-15f, -0x1.b7ee6p-13f, 0x1.b30006p-12f,
     /* s = 4/8: node 8 x */
-    -0x1.333334p-68f, 0x1.1fe82cp-18f, 0x1.553ee8p-14f, 0x1.bb09b6p-12f,
+    -0x1.8p-68f, 0x1.1fe82cp-18f, 0x1.553ee8p-14f, 0x1.bb09b6p-12f,
     /* s = 4/8: node 8 y */
-    -0x1.333334p-67f, 0x1.e82f3cp-14f, -0x1.e46484p-14f, -0x1.9c4f18p-12f,
+    -0x1p-68f, 0x1.e82f3cp-14f, -0x1.e46484p-14f, -0x1.9c4f18p-12f,
     /* s = 4/8: node 8 z */
-    -0x1.ep-67f, 0x1.d4c11ep-14f, -0x1.33ff64p-13f, 0x1.541b24p-12f,
+    -0x1.99999ap-67f, 0x1.d4c11ep-14f, -0x1.33ff64p-13f, 0x1.541b24p-12f,
     /* s = 4/8: node 9 x */
-    -0x0p+0f, -0x1.4cbde4p-15f, 0x1.7f39d2p-14f, 0x1.e90d74p-12f,
+    -0x1.333334p-70f, -0x1.4cbde4p-15f, 0x1.7f39d2p-14f, 0x1.e90d74p-12f,
     /* s = 4/8: node 9 y */
     0x1.333334p-71f, 0x1.c8aeaap-15f, -0x1.e2e1c8p-15f, -0x1.fb5b8p-13f,
     /* s = 4/8: node 9 z */
-    -0x1.99999ap-71f, 0x1.1c2196p-13f, -0x1.0f3cd6p-13f, 0x1.efd90cp-13f,
+    -0x1.b9999ap-67f, 0x1.1c2196p-13f, -0x1.0f3cd6p-13f, 0x1.efd90cp-13f,
     /* s = 4/8: node 10 x */
-    0x1.333334p-72f, -0x1.9272a8p-16f, 0x1.90385ep-16f, 0x1.83974ap-13f,
+    -0x1.99999ap-72f, -0x1.9272a8p-16f, 0x1.90385ep-16f, 0x1.83974ap-13f,
     /* s = 4/8: node 10 y */
-    -0x1.ep-69f, 0x1.0b29acp-14f, -0x1.f56d84p-16f, -0x1.7de758p-14f,
+    -0x1.633334p-68f, 0x1.0b29acp-14f, -0x1.f56d84p-16f, -0x1.7de758p-14f,
     /* s = 4/8: node 10 z */
-    -0x1.19999ap-67f, 0x1.a49ca4p-14f, -0x1.621c56p-14f, 0x1.707d3ap-13f,
+    -0x1.8cccccp-67f, 0x1.a49ca4p-14f, -0x1.621c56p-14f, 0x1.707d3ap-13f,
     /* s = 4/8: node 11 x */
-    0x1.4p-69f, -0x1.78254cp-17f, 0x1.f54afep-16f, -0x1.f74b46p-14f,
+    0x1.733334p-69f, -0x1.78254cp-17f, 0x1.f54afep-16f, -0x1.f74b46p-14f,
     /* s = 4/8: node 11 y */
-    -0x1.6p-68f, 0x1.855792p-15f, -0x1.0d2698p-18f, 0x1.a6d1a6p-14f,
+    -0x1.2p-68f, 0x1.855792p-15f, -0x1.0d2698p-18f, 0x1.a6d1a6p-14f,
     /* s = 4/8: node 11 z */
-    0x1.d8ccccp-68f, -0x1.44ce1p-14f, 0x1.015468p-14f, -0x1.536cfcp-17f,
+    0x1.42ccccp-67f, -0x1.44ce1p-14f, 0x1.015468p-14f, -0x1.536cfcp-17f,
     /* s = 4/8: node 12 x */
-    0x1.5p-68f, -0x1.7e8b34p-15f, -0x1.024c2ep-14f, -0x1.623e36p-14f,
+    0x1.7cccccp-68f, -0x1.7e8b34p-15f, -0x1.024c2ep-14f, -0x1.623e36p-14f,
     /* s = 4/8: node 12 y */
-    0x1.b33334p-69f, -0x1.38b55ap-15f, -0x1.97725ep-16f, -0x1.8873a2p-13f,
+    0x1.4cccccp-68f, -0x1.38b55ap-15f, -0x1.97725ep-16f, -0x1.8873a2p-13f,
     /* s = 4/8: node 12 z */
-    0x1.666666p-71f, -0x1.e8b82ep-15f, -0x1.2f0378p-14f, 0x1.730122p-13f,
+    0x1.666666p-70f, -0x1.e8b82ep-15f, -0x1.2f0378p-14f, 0x1.730122p-13f,
     /* s = 4/8: node 13 x */
-    0x1.4cccccp-63f, 0x1.fc8cd4p-10f, 0x1.1ea646p-8f, -0x1.60f5dp-6f,
+    -0x1.4cccccp-63f, 0x1.fc8cd4p-10f, 0x1.1ea646p-8f, -0x1.60f5dp-6f,
     /* s = 4/8: node 13 y */
-    0x1.666666p-64f, 0x1.4a1e36p-9f, 0x1.2d48eap-11f, -0x1.72cecep-6f,
+    0x1.19999ap-62f, 0x1.4a1e36p-9f, 0x1.2d48eap-11f, -0x1.72cecep-6f,
     /* s = 4/8: node 13 z */
-    -0x1p-64f, -0x1.ea5a5ep-9f, -0x1.191466p-8f, 0x1.70edc4p-6f,
+    -0x1.ccccccp-62f, -0x1.ea5a5ep-9f, -0x1.191466p-8f, 0x1.70edc4p-6f,
     /* s = 4/8: node 14 x */
-    0x1.333334p-63f, 0x1.c8ec74p-11f, 0x1.c048acp-8f, -0x1.76ef42p-5f,
+    0x1.cp-61f, 0x1.c8ec74p-11f, 0x1.c048acp-8f, -0x1.76ef42p-5f,
     /* s = 4/8: node 14 y */
-    -0x1.99999ap-65f, 0x1.9134f6p-10f, 0x1.443feep-9f, -0x1.af4a6p-5f,
+    0x1.333334p-61f, 0x1.9134f6p-10f, 0x1.443feep-9f, -0x1.af4a6p-5f,
     /* s = 4/8: node 14 z */
-    -0x1.0cccccp-60f, 0x1.4516b4p-8f, 0x1.26aa2ep-8f, 0x1.2d7538p-4f,
+    -0x1.4p-60f, 0x1.4516b4p-8f, 0x1.26aa2ep-8f, 0x1.2d7538p-4f,
     /* s = 4/8: node 15 x */
-    0x1.19999ap-62f, 0x1.fd2b12p-9f, 0x1.1b69fp-7f, -0x1.7277e4p-5f,
+    -0x1.99999ap-64f, 0x1.fd2b12p-9f, 0x1.1b69fp-7f, -0x1.7277e4p-5f,
     /* s = 4/8: node 15 y */
-    0x1.4cccccp-60f, -0x1.9aaf66p-10f, 0x1.40c29ep-10f, -0x1.76f1d6p-4f,
+    0x1.ccccccp-61f, -0x1.9aaf66p-10f, 0x1.40c29ep-10f, -0x1.76f1d6p-4f,
     /* s = 4/8: node 15 z */
-    -0x1.a66666p-59f, 0x1.b7c0bp-7f, 0x1.29f464p-6f, 0x1.3ff56cp-3f,
+    -0x1p-60f, 0x1.b7c0bp-7f, 0x1.29f464p-6f, 0x1.3ff56cp-3f,
     /* s = 4/8: node 16 x */
-    -0x1.666666p-62f, 0x1.2539cp-7f, 0x1.f3623cp-8f, -0x1.b9f0acp-6f,
+    -0x1.b33334p-61f, 0x1.2539cp-7f, 0x1.f3623cp-8f, -0x1.b9f0acp-6f,
     /* s = 4/8: node 16 y */
-    0x1.8p-60f, -0x1.bfac96p-8f, 0x1.90b522p-9f, -0x1.042b6cp-3f,
+    0x1.333334p-59f, -0x1.bfac96p-8f, 0x1.90b522p-9f, -0x1.042b6cp-3f,
     /* s = 4/8: node 16 z */
-    -0x1p-58f, 0x1.fc061ep-7f, 0x1.f16324p-6f, 0x1.be2a36p-3f,
+    -0x1.4p-58f, 0x1.fc061ep-7f, 0x1.f16324p-6f, 0x1.be2a36p-3f,
     /* s = 4/8: node 17 x */
-    -0x1.3e6666p-60f, 0x1.c1a676p-7f, 0x1.292754p-10f, 0x1.e22ed2p-9f,
+    -0x1.7p-61f, 0x1.c1a676p-7f, 0x1.292754p-10f, 0x1.e22ed2p-9f,
     /* s = 4/8: node 17 y */
-    0x1.19999ap-59f, -0x1.f992aep-9f, 0x1.1d6902p-8f, -0x1.1fef9ap-3f,
+    0x1.a66666p-59f, -0x1.f992aep-9f, 0x1.1d6902p-8f, -0x1.1fef9ap-3f,
     /* s = 4/8: node 17 z */
-    -0x1.666666p-60f, 0x1.c8d7fap-8f, 0x1.1b48b2p-5f, 0x1.f8fd8p-3f,
+    -0x1.e66666p-59f, 0x1.c8d7fap-8f, 0x1.1b48b2p-5f, 0x1.f8fd8p-3f,
     /* s = 4/8: node 18 x */
-    -0x1.19999ap-60f, 0x1.38f622p-7f, -0x1.4fc442p-8f, 0x1.20bb46p-5f,
+    -0x1.333334p-60f, 0x1.38f622p-7f, -0x1.4fc442p-8f, 0x1.20bb46p-5f,
     /* s = 4/8: node 18 y */
-    0x1.0cccccp-59f, -0x1.24d5b4p-11f, 0x1.a371cap-8f, -0x1.00a038p-3f,
+    0x1.333334p-60f, -0x1.24d5b4p-11f, 0x1.a371cap-8f, -0x1.00a038p-3f,
     /* s = 4/8: node 18 z */
-    -0x1.19999ap-59f, -0x1.76686p-8f, 0x1.a3dec2p-6f, 0x1.ae564ap-3f,
+    -0x1.99999ap-59f, -0x1.76686p-8f, 0x1.a3dec2p-6f, 0x1.ae564ap-3f,
     /* s = 4/8: node 19 x */
-    -0x1.b9999ap-60f, 0x1.11da74p-7f, -0x1.4295f8p-7f, 0x1.8735c8p-5f,
+    -0x1.666666p-61f, 0x1.11da74p-7f, -0x1.4295f8p-7f, 0x1.8735c8p-5f,
     /* s = 4/8: node 19 y */
-    0x1.666666p-61f, -0x1.62d1a6p-8f, 0x1.48862ep-8f, -0x1.679378p-4f,
+    0x1.b33334p-60f, -0x1.62d1a6p-8f, 0x1.48862ep-8f, -0x1.679378p-4f,
     /* s = 4/8: node 19 z */
-    -0x1p-61f, -0x1.af850cp-8f, 0x1.c9aa8cp-7f, 0x1.2e8be4p-3f,
+    -0x1.666666p-59f, -0x1.af850cp-8f, 0x1.c9aa8cp-7f, 0x1.2e8be4p-3f,
     /* s = 4/8: node 20 x */
-    -0x1.666666p-60f, 0x1.016d56p-8f, -0x1.fb3842p-8f, 0x1.7995dep-5f,
+    -0x1.6cccccp-60f, 0x1.016d56p-8f, -0x1.fb3842p-8f, 0x1.7995dep-5f,
     /* s = 4/8: node 20 y */
-    0x1.333334p-60f, -0x1.03b508p-8f, 0x1.d0fa02p-10f, -0x1.b3ddb4p-5f,
+    0x1.e66666p-61f, -0x1.03b508p-8f, 0x1.d0fa02p-10f, -0x1.b3ddb4p-5f,
     /* s = 4/8: node 20 z */
-    -0x1p-60f, -0x1.4b4ba2p-9f, 0x1.ca6552p-9f, 0x1.2aaa4cp-4f,
+    -0x1.666666p-60f, -0x1.4b4ba2p-9f, 0x1.ca6552p-9f, 0x1.2aaa4cp-4f,
     /* s = 4/8: node 21 x */
-    -0x1.a66666p-62f, 0x1.aabad6p-9f, -0x1.323c84p-8f, 0x1.667d92p-6f,
+    -0x1.133334p-61f, 0x1.aabad6p-9f, -0x1.323c84p-8f, 0x1.667d92p-6f,
     /* s = 4/8: node 21 y */
-    0x1.ccccccp-62f, -0x1.79baeap-8f, 0x1.24085ap-9f, -0x1.5cbd1cp-6f,
+    0x1.133334p-61f, -0x1.79baeap-8f, 0x1.24085ap-9f, -0x1.5cbd1cp-6f,
     /* s = 4/8: node 21 z */
-    -0x1.5cccccp-60f, 0x1.82298p-8f, -0x1.41fc22p-8f, 0x1.71ada6p-6f,
+    -0x1.8cccccp-61f, 0x1.82298p-8f, -0x1.41fc22p-8f, 0x1.71ada6p-6f,
     /* s = 4/8: node 22 x */
-    -0x1.333334p-73f, -0x1.12bb8ap-15f, 0x1.bf0948p-15f, 0x1.441abp-14f,
+    0x1.19999ap-69f, -0x1.12bb8ap-15f, 0x1.bf0948p-15f, 0x1.441abp-14f,
     /* s = 4/8: node 22 y */
-    -0x1p-70f, 0x1.b66d12p-16f, -0x1.5d13c6p-16f, -0x1.7af4acp-13f,
+    -0x1.0cccccp-69f, 0x1.b66d12p-16f, -0x1.5d13c6p-16f, -0x1.7af4acp-13f,
     /* s = 4/8: node 22 z */
-    -0x1.6p-67f, 0x1.b82828p-14f, -0x1.5685cp-14f, 0x1.6baebp-13f,
+    -0x1.29999ap-67f, 0x1.b82828p-14f, -0x1.5685cp-14f, 0x1.6baebp-13f,
     /* s = 4/8: node 23 x */
-    0x1.d9999ap-68f, -0x1.340e5cp-15f, -0x1.ae38d6p-15f, -0x1.2893c2p-12f,
+    0x1.2p-67f, -0x1.340e5cp-15f, -0x1.ae38d6p-15f, -0x1.2893c2p-12f,
     /* s = 4/8: node 23 y */
-    0x1p-67f, -0x1.84fe26p-14f, -0x1.01f744p-14f, -0x1.edfbap-12f,
+    0x1.e66666p-68f, -0x1.84fe26p-14f, -0x1.01f744p-14f, -0x1.edfbap-12f,
     /* s = 4/8: node 23 z */
-    0x1.99999ap-68f, -0x1.c9b624p-14f, -0x1.9bf0f8p-14f, 0x1.e6f5d6p-13f,
+    0x1.066666p-67f, -0x1.c9b624p-14f, -0x1.9bf0f8p-14f, 0x1.e6f5d6p-13f,
     /* s = 4/8: node 24 x */
-    0x1p-60f, -0x1.36e30cp-9f, -0x1.3b95dp-11f, -0x1.b715eap-5f,
+    0x1.333334p-61f, -0x1.36e30cp-9f, -0x1.3b95dp-11f, -0x1.b715eap-5f,
     /* s = 4/8: node 24 y */
-    0x1.666666p-61f, 0x1.91f37ap-9f, -0x1.092d3cp-12f, -0x1.8cbbcp-5f,
+    0x1.19999ap-61f, 0x1.91f37ap-9f, -0x1.092d3cp-12f, -0x1.8cbbcp-5f,
     /* s = 4/8: node 24 z */
-    -0x1.cp-60f, 0x1.c38108p-8f, 0x1.338cf4p-8f, 0x1.2c0bbp-4f,
+    -0x1.4cccccp-60f, 0x1.c38108p-8f, 0x1.338cf4p-8f, 0x1.2c0bbp-4f,
     /* s = 4/8: node 25 x */
-    0x1.666666p-60f, 0x1.be778cp-9f, 0x1.d29114p-9f, -0x1.ab6534p-4f,
+    0x1.333334p-62f, 0x1.be778cp-9f, 0x1.d29114p-9f, -0x1.ab6534p-4f,
     /* s = 4/8: node 25 y */
-    0x1.19999ap-59f, -0x1.77849cp-9f, 0x1.88967p-9f, -0x1.b342e2p-4f,
+    0x1.19999ap-60f, -0x1.77849cp-9f, 0x1.88967p-9f, -0x1.b342e2p-4f,
     /* s = 4/8: node 25 z */
-    -0x1.f33334p-58f, 0x1.137f72p-5f, 0x1.fb6e44p-6f, 0x1.bdf3a2p-3f,
+    -0x1.59999ap-58f, 0x1.137f72p-5f, 0x1.fb6e44p-6f, 0x1.bdf3a2p-3f,
     /* s = 4/8: node 26 x */
-    -0x1.ccccccp-61f, 0x1.6c4d2p-6f, 0x1.1c4ddp-7f, -0x1.b494cep-4f,
+    0x1.99999ap-63f, 0x1.6c4d2p-6f, 0x1.1c4ddp-7f, -0x1.b494cep-4f,
     /* s = 4/8: node 26 y */
-    0x1.666666p-59f, -0x1.32b664p-8f, 0x1.d15ef6p-7f, -0x1.6c52e6p-3f,
+    0x1.d33334p-58f, -0x1.32b664p-8f, 0x1.d15ef6p-7f, -0x1.6c52e6p-3f,
     /* s = 4/8: node 26 z */
-    -0x1.666666p-58f, 0x1.b29c6cp-5f, 0x1.06ee04p-4f, 0x1.9f417ap-2f,
+    -0x1.733334p-57f, 0x1.b29c6cp-5f, 0x1.06ee04p-4f, 0x1.9f417ap-2f,
     /* s = 4/8: node 27 x */
-    -0x1.d9999ap-60f, 0x1.23e3ap-5f, 0x1.04e21ap-7f, -0x1.ef11dep-5f,
+    -0x1.cp-60f, 0x1.23e3ap-5f, 0x1.04e21ap-7f, -0x1.ef11dep-5f,
     /* s = 4/8: node 27 y */
-    0x1.99999ap-59f, -0x1.952138p-9f, 0x1.430388p-5f, -0x1.d35ca2p-3f,
+    0x1.19999ap-59f, -0x1.952138p-9f, 0x1.430388p-5f, -0x1.d35ca2p-3f,
     /* s = 4/8: node 27 z */
-    -0x1.266666p-57f, 0x1.a05c82p-5f, 0x1.9c5728p-4f, 0x1.2dbfep-1f,
+    -0x1p-56f, 0x1.a05c82p-5f, 0x1.9c5728p-4f, 0x1.2dbfep-1f,
     /* s = 4/8: node 28 x */
-    -0x1.b66666p-60f, 0x1.4c81ccp-5f, 0x1.bbe99cp-9f, 0x1.405974p-6f,
+    -0x1.ce6666p-59f, 0x1.4c81ccp-5f, 0x1.bbe99cp-9f, 0x1.405974p-6f,
     /* s = 4/8: node 28 y */
-    0x1.b33334p-58f, -0x1.f24b34p-8f, 0x1.9e4946p-5f, -0x1.10046ep-2f,
+    0x1.4cccccp-58f, -0x1.f24b34p-8f, 0x1.9e4946p-5f, -0x1.10046ep-2f,
     /* s = 4/8: node 28 z */
-    -0x1p-58f, 0x1.0277dp-6f, 0x1.98376cp-4f, 0x1.3a6a9ap-1f,
+    -0x1.ccccccp-58f, 0x1.0277dp-6f, 0x1.98376cp-4f, 0x1.3a6a9ap-1f,
     /* s = 4/8: node 29 x */
-    -0x1.59999ap-59f, 0x1.76ce1ap-5f, -0x1.bbe192p-8f, 0x1.3bc4bap-4f,
+    -0x1.4p-58f, 0x1.76ce1ap-5f, -0x1.bbe192p-8f, 0x1.3bc4bap-4f,
     /* s = 4/8: node 29 y */
-    0x1.b33334p-58f, -0x1.11a65cp-6f, 0x1.3145f2p-5f, -0x1.d76d7ap-3f,
+    0x1.0cccccp-58f, -0x1.11a65cp-6f, 0x1.3145f2p-5f, -0x1.d76d7ap-3f,
     /* s = 4/8: node 29 z */
-    -0x1p-59f, -0x1.0a0242p-6f, 0x1.603198p-4f, 0x1.1a69d8p-1f,
+    -0x1.8p-58f, -0x1.0a0242p-6f, 0x1.603198p-4f, 0x1.1a69d8p-1f,
     /* s = 4/8: node 30 x */
-    -0x1.466666p-58f, 0x1.062246p-5f, -0x1.049eaep-7f, 0x1.beeb86p-4f,
+    -0x1.b33334p-59f, 0x1.062246p-5f, -0x1.049eaep-7f, 0x1.beeb86p-4f,
     /* s = 4/8: node 30 y */
     0x1.ccccccp-59f, -0x1.201ee2p-7f, 0x1.5c56b6p-6f, -0x1.640ab6p-3f,
     /* s = 4/8: node 30 z */
-    -0x1.333334p-58f, -0x1.21967cp-5f, 0x1.bc04e6p-5f, 0x1.94bafcp-2f,
+    -0x1.99999ap-60f, -0x1.21967cp-5f, 0x1.bc04e6p-5f, 0x1.94bafcp-2f,
     /* s = 4/8: node 31 x */
-    -0x1.19999ap-59f, 0x1.c8e4b2p-7f, -0x1.d375ccp-8f, 0x1.aa583ap-4f,
+    -0x1.99999ap-59f, 0x1.c8e4b2p-7f, -0x1.d375ccp-8f, 0x1.aa583ap-4f,
     /* s = 4/8: node 31 y */
-    0x1p-59f, -0x1.7f474ap-7f, 0x1.2ea58ep-7f, -0x1.967e5ap-4f,
+    0x1.ccccccp-59f, -0x1.7f474ap-7f, 0x1.2ea58ep-7f, -0x1.967e5ap-4f,
     /* s = 4/8: node 31 z */
-    0x1.99999ap-62f, -0x1.8d2ap-6f, 0x1.9e8a4cp-6f, 0x1.a99324p-3f,
+    0x1p-59f, -0x1.8d2ap-6f, 0x1.9e8a4cp-6f, 0x1.a99324p-3f,
     /* s = 4/8: node 32 x */
-    -0x1.666666p-61f, 0x1.100ae8p-8f, -0x1.625db6p-9f, 0x1.ae0214p-5f,
+    -0x1.0cccccp-60f, 0x1.100ae8p-8f, -0x1.625db6p-9f, 0x1.ae0214p-5f,
     /* s = 4/8: node 32 y */
-    0x1.a66666p-60f, -0x1.330216p-7f, 0x1.c5f78p-10f, -0x1.6c935ap-5f,
+    0x1.8p-61f, -0x1.330216p-7f, 0x1.c5f78p-10f, -0x1.6c935ap-5f,
     /* s = 4/8: node 32 z */
-    0x1.99999ap-64f, -0x1.84a418p-9f, 0x1.7cb69ap-9f, 0x1.295c7ep-4f,
+    -0x1.19999ap-61f, -0x1.84a418p-9f, 0x1.7cb69ap-9f, 0x1.295c7ep-4f,
     /* s = 4/8: node 33 x */
-    0x1p-70f, -0x1.0d21b2p-14f, 0x1.05fap-14f, 0x1.0fe588p-12f,
+    0x1.333334p-68f, -0x1.0d21b2p-14f, 0x1.05fap-14f, 0x1.0fe588p-12f,
     /* s = 4/8: node 33 y */
-    0x1.4cccccp-68f, 0x1.764de4p-14f, -0x1.938406p-15f, -0x1.df9ad6p-12f,
+    -0x1.99999ap-69f, 0x1.764de4p-14f, -0x1.938406p-15f, -0x1.df9ad6p-12f,
     /* s = 4/8: node 33 z */
-    -0x1.ccccccp-67f, 0x1.37a98ep-13f, -0x1.d9633ep-14f, 0x1.f695aep-13f,
+    -0x1.5cccccp-66f, 0x1.37a98ep-13f, -0x1.d9633ep-14f, 0x1.f695aep-13f,
     /* s = 4/8: node 34 x */
-    0x1.4cccccp-67f, -0x1.714002p-13f, -0x1.e050acp-14f, -0x1.9ad582p-12f,
+    0x1.533334p-66f, -0x1.714002p-13f, -0x1.e050acp-14f, -0x1.9ad582p-12f,
     /* s = 4/8: node 34 y */
-    0x1.cp-66f, -0x1.fde55ap-14f, -0x1.20a8fap-16f, -0x1.f3532ep-12f,
+    0x1.266666p-66f, -0x1.fde55ap-14f, -0x1.20a8fap-16f, -0x1.f3532ep-12f,
     /* s = 4/8: node 34 z */
-    0x1.ccccccp-69f, -0x1.c70358p-14f, -0x1.f69862p-15f, 0x1.614464p-12f,
+    -0x1.99999ap-72f, -0x1.c70358p-14f, -0x1.f69862p-15f, 0x1.614464p-12f,
     /* s = 4/8: node 35 x */
-    0x1p-61f, 0x1.0e9cb8p-10f, 0x1.0c1d44p-13f, -0x1.7ce162p-4f,
+    0x1.8cccccp-60f, 0x1.0e9cb8p-10f, 0x1.0c1d44p-13f, -0x1.7ce162p-4f,
     /* s = 4/8: node 35 y */
-    0x1.333334p-61f, 0x1.5c002p-8f, 0x1.61b39cp-9f, -0x1.9419bp-5f,
+    0x1.666666p-62f, 0x1.5c002p-8f, 0x1.61b39cp-9f, -0x1.9419bp-5f,
     /* s = 4/8: node 35 z */
-    -0x1.4cccccp-58f, 0x1.5e60d8p-6f, 0x1.9dcf34p-7f, 0x1.35d8d8p-3f,
+    -0x1.b33334p-60f, 0x1.5e60d8p-6f, 0x1.9dcf34p-7f, 0x1.35d8d8p-3f,
     /* s = 4/8: node 36 x */
     0x1p-59f, 0x1.b66edp-10f, -0x1.d2d64ep-8f, -0x1.8fc25p-3f,
     /* s = 4/8: node 36 y */
-    0x1.a66666p-59f, 0x1.790fcp-9f, 0x1.41881cp-6f, -0x1.aba734p-4f,
+    0x1.8p-60f, 0x1.790fcp-9f, 0x1.41881cp-6f, -0x1.aba734p-4f,
     /* s = 4/8: node 36 z */
     -0x1.8cccccp-57f, 0x1.257bfcp-4f, 0x1.779188p-5f, 0x1.a388b2p-2f,
     /* s = 4/8: node 37 x */
-    0x1.666666p-59f, 0x1.70ef82p-6f, -0x1.8bcb7cp-7f, -0x1.93c39ep-3f,
+    0x1p-60f, 0x1.70ef82p-6f, -0x1.8bcb7cp-7f, -0x1.93c39ep-3f,
     /* s = 4/8: node 37 y */
-    0x1.ccccccp-58f, -0x1.d7a79ep-7f, 0x1.5c8668p-5f, -0x1.8d69e6p-3f,
+    0x1.19999ap-58f, -0x1.d7a79ep-7f, 0x1.5c8668p-5f, -0x1.8d69e6p-3f,
     /* s = 4/8: node 37 z */
-    -0x1.e66666p-57f, 0x1.ca7f8ap-4f, 0x1.a8d3b8p-4f, 0x1.89933ap-1f,
+    -0x1.4cccccp-57f, 0x1.ca7f8ap-4f, 0x1.a8d3b8p-4f, 0x1.89933ap-1f,
     /* s = 4/8: node 38 x */
-    -0x1.7cp-57f, 0x1.fec77ep-4f, 0x1.58e5c6p-5f, -0x1.1849a6p-5f,
+    -0x1.8p-60f, 0x1.fec77ep-4f, 0x1.58e5c6p-5f, -0x1.1849a6p-5f,
     /* s = 4/8: node 38 y */
-    0x1.666666p-60f, 0x1.e571fcp-8f, 0x1.f0ef7ep-4f, -0x1.1ef84p-2f,
+    0x1.a66666p-58f, 0x1.e571fcp-8f, 0x1.f0ef7ep-4f, -0x1.1ef84p-2f,
     /* s = 4/8: node 38 z */
-    -0x1.e66666p-56f, 0x1.0ae4b6p-3f, 0x1.6aa1dcp-3f, 0x1.1cce56p+0f,
+    -0x1.8p-56f, 0x1.0ae4b6p-3f, 0x1.6aa1dcp-3f, 0x1.1cce56p+0f,
     /* s = 4/8: node 39 x */
-    -0x1.0ap-56f, 0x1.2f0bcep-3f, 0x1.16b574p-6f, 0x1.5c1362p-5f,
+    -0x1.58ccccp-57f, 0x1.2f0bcep-3f, 0x1.16b574p-6f, 0x1.5c1362p-5f,
     /* s = 4/8: node 39 y */
-    0x1.066666p-57f, -0x1.3a64dcp-6f, 0x1.14488ap-3f, -0x1.28dc3ep-2f,
+    0x1.4cccccp-57f, -0x1.3a64dcp-6f, 0x1.14488ap-3f, -0x1.28dc3ep-2f,
     /* s = 4/8: node 39 z */
-    -0x1.e66666p-57f, 0x1.27821ap-5f, 0x1.4d052ep-3f, 0x1.33f602p+0f,
+    -0x1.99999ap-58f, 0x1.27821ap-5f, 0x1.4d052ep-3f, 0x1.33f602p+0f,
     /* s = 4/8: node 40 x */
-    -0x1.2cccccp-56f, 0x1.de5078p-4f, 0x1.334334p-9f, 0x1.359cfep-3f,
+    -0x1.166666p-57f, 0x1.de5078p-4f, 0x1.334334p-9f, 0x1.359cfep-3f,
     /* s = 4/8: node 40 y */
-    0x1.333334p-58f, -0x1.041f52p-6f, 0x1.c5d3a2p-4f, -0x1.f1b9dep-3f,
+    0x1.b33334p-58f, -0x1.041f52p-6f, 0x1.c5d3a2p-4f, -0x1.f1b9dep-3f,
     /* s = 4/8: node 40 z */
-    -0x1.99999ap-57f, -0x1.89a9bcp-5f, 0x1.0c82cp-3f, 0x1.084aaep+0f,
+    0x1.99999ap-60f, -0x1.89a9bcp-5f, 0x1.0c82cp-3f, 0x1.084aaep+0f,
     /* s = 4/8: node 41 x */
-    -0x1.59999ap-57f, 0x1.2736dp-4f, -0x1.6e2afcp-7f, 0x1.77b1bep-3f,
+    -0x1.3cccccp-57f, 0x1.2736dp-4f, -0x1.6e2afcp-7f, 0x1.77b1bep-3f,
     /* s = 4/8: node 41 y */
     0x1.4cccccp-58f, -0x1.58e386p-6f, 0x1.eca116p-5f, -0x1.5da05p-3f,
     /* s = 4/8: node 41 z */
-    0x1.19999ap-58f, -0x1.265a14p-4f, 0x1.3b6994p-4f, 0x1.77e0b2p-1f,
+    -0x1.99999ap-60f, -0x1.265a14p-4f, 0x1.3b6994p-4f, 0x1.77e0b2p-1f,
     /* s = 4/8: node 42 x */
-    -0x1.8cccccp-59f, 0x1.fdb49p-6f, -0x1.d67a3p-10f, 0x1.692174p-3f,
+    -0x1.066666p-58f, 0x1.fdb49p-6f, -0x1.d67a3p-10f, 0x1.692174p-3f,
     /* s = 4/8: node 42 y */
-    0x1.8p-60f, -0x1.a3c3dep-7f, 0x1.822ab6p-6f, -0x1.9b5c8ep-4f,
+    0x1.e66666p-59f, -0x1.a3c3dep-7f, 0x1.822ab6p-6f, -0x1.9b5c8ep-4f,
     /* s = 4/8: node 42 z */
-    -0x1.99999ap-60f, -0x1.a89372p-5f, 0x1.3cdf54p-5f, 0x1.93bde2p-2f,
+    0x1p-59f, -0x1.a89372p-5f, 0x1.3cdf54p-5f, 0x1.93bde2p-2f,
     /* s = 4/8: node 43 x */
-    -0x1.4cccccp-61f, 0x1.b8b448p-8f, -0x1.5b3416p-9f, 0x1.6fa55ep-4f,
+    -0x1.066666p-59f, 0x1.b8b448p-8f, -0x1.5b3416p-9f, 0x1.6fa55ep-4f,
     /* s = 4/8: node 43 y */
-    0x1.8p-60f, -0x1.8e6642p-7f, 0x1.5d3edep-8f, -0x1.684becp-5f,
+    0x1.233334p-59f, -0x1.8e6642p-7f, 0x1.5d3edep-8f, -0x1.684becp-5f,
     /* s = 4/8: node 43 z */
-    -0x1.333334p-62f, -0x1.a8c31p-7f, 0x1.fe413cp-8f, 0x1.2b81fcp-3f,
+    -0x1.666666p-61f, -0x1.a8c31p-7f, 0x1.fe413cp-8f, 0x1.2b81fcp-3f,
     /* s = 4/8: node 44 x */
     0x1.19999ap-67f, -0x1.0fcd28p-13f, 0x1.657412p-14f, 0x1.7f0cb6p-12f,
     /* s = 4/8: node 44 y */
-    0x1p-69f, 0x1.41400cp-14f, 0x1.b992d6p-18f, -0x1.bffce2p-12f,
+    -0x1.99999ap-71f, 0x1.41400cp-14f, 0x1.b992d6p-18f, -0x1.bffce2p-12f,
     /* s = 4/8: node 44 z */
-    -0x1.d9999ap-67f, 0x1.87bf4p-13f, -0x1.6b7024p-14f, 0x1.52cde4p-12f,
+    -0x1.d66666p-66f, 0x1.87bf4p-13f, -0x1.6b7024p-14f, 0x1.52cde4p-12f,
     /* s = 4/8: node 45 x */
-    0x1.e66666p-66f, -0x1.915078p-13f, -0x1.08b5bcp-15f, -0x1.1f5278p-11f,
+    0x1p-66f, -0x1.915078p-13f, -0x1.08b5bcp-15f, -0x1.1f5278p-11f,
     /* s = 4/8: node 45 y */
-    0x1p-67f, -0x1.7a23d8p-14f, 0x1.5418e8p-16f, -0x1.07f736p-12f,
+    0x1.e66666p-68f, -0x1.7a23d8p-14f, 0x1.5418e8p-16f, -0x1.07f736p-12f,
     /* s = 4/8: node 45 z */
-    0x1.0cccccp-67f, -0x1.d2c01p-14f, -0x1.5faf58p-17f, 0x1.ceba04p-12f,
+    -0x1.99999ap-71f, -0x1.d2c01p-14f, -0x1.5faf58p-17f, 0x1.ceba04p-12f,
     /* s = 4/8: node 46 x */
-    0x1.733334p-59f, -0x1.bb24bcp-7f, -0x1.57066ep-7f, -0x1.0cfb1ap-3f,
+    0x1.a66666p-59f, -0x1.bb24bcp-7f, -0x1.57066ep-7f, -0x1.0cfb1ap-3f,
     /* s = 4/8: node 46 y */
-    0x1.0cccccp-61f, 0x1.b4b28p-9f, 0x1.50df82p-8f, -0x1.c15818p-6f,
+    0x1.8p-62f, 0x1.b4b28p-9f, 0x1.50df82p-8f, -0x1.c15818p-6f,
     /* s = 4/8: node 46 z */
-    -0x1.d9999ap-58f, 0x1.344c2p-5f, 0x1.dc76bap-7f, 0x1.afb6fap-3f,
+    -0x1.cp-58f, 0x1.344c2p-5f, 0x1.dc76bap-7f, 0x1.afb6fap-3f,
     /* s = 4/8: node 47 x */
-    0x1.19999ap-59f, 0x1.87a782p-6f, -0x1.b66096p-8f, -0x1.0af88ep-2f,
+    0x1.333334p-60f, 0x1.87a782p-6f, -0x1.b66096p-8f, -0x1.0af88ep-2f,
     /* s = 4/8: node 47 y */
-    0x1.19999ap-60f, 0x1.ac5d38p-7f, 0x1.3bf094p-5f, -0x1.105456p-4f,
+    0x1.99999ap-62f, 0x1.ac5d38p-7f, 0x1.3bf094p-5f, -0x1.105456p-4f,
     /* s = 4/8: node 47 z */
-    -0x1.f33334p-57f, 0x1.a99d9p-4f, 0x1.4f761ap-5f, 0x1.27095ap-1f,
+    -0x1.133334p-56f, 0x1.a99d9p-4f, 0x1.4f761ap-5f, 0x1.27095ap-1f,
     /* s = 4/8: node 48 x */
-    0x1.333334p-61f, 0x1.81b56cp-5f, -0x1.64b2a4p-7f, -0x1.3c655ap-2f,
+    -0x1.19999ap-59f, 0x1.81b56cp-5f, -0x1.64b2a4p-7f, -0x1.3c655ap-2f,
     /* s = 4/8: node 48 y */
-    0x1.733334p-59f, -0x1.3fc94p-10f, 0x1.5715ap-4f, -0x1.caa23ap-4f,
+    0x1.266666p-59f, -0x1.3fc94p-10f, 0x1.5715ap-4f, -0x1.caa23ap-4f,
     /* s = 4/8: node 48 z */
     -0x1.cp-56f, 0x1.80b128p-3f, 0x1.c0a63ap-4f, 0x1.17445ap+0f,
     /* s = 4/8: node 49 x */
-    -0x1.3d3334p-55f, 0x1.81f7aap-2f, 0x1.32ba28p-3f, 0x1.936304p-5f,
+    -0x1.ap-58f, 0x1.81f7aap-2f, 0x1.32ba28p-3f, 0x1.936304p-5f,
     /* s = 4/8: node 49 y */
-    -0x1.6p-58f, 0x1.6dfcb8p-4f, 0x1.13db62p-2f, -0x1.54519ap-3f,
+    0x1.99999ap-63f, 0x1.6dfcb8p-4f, 0x1.13db62p-2f, -0x1.54519ap-3f,
     /* s = 4/8: node 49 z */
-    -0x1.a66666p-55f, 0x1.dcb626p-3f, 0x1.56979ap-3f, 0x1.a38facp+0f,
+    -0x1.99999ap-55f, 0x1.dcb626p-3f, 0x1.56979ap-3f, 0x1.a38facp+0f,
     /* s = 4/8: node 50 x */
-    -0x1.74p-56f, 0x1.37da9ap-2f, 0x1.12fd02p-5f, 0x1.e950c8p-5f,
+    -0x1.a5999ap-56f, 0x1.37da9ap-2f, 0x1.12fd02p-5f, 0x1.e950c8p-5f,
     /* s = 4/8: node 50 y */
-    0x1p-58f, 0x1.7dcd88p-11f, 0x1.893766p-2f, -0x1.758086p-3f,
+    0x1.d9999ap-58f, 0x1.7dcd88p-11f, 0x1.893766p-2f, -0x1.758086p-3f,
     /* s = 4/8: node 50 z */
-    -0x1.333334p-56f, 0x1.1e136ep-5f, 0x1.04930ap-3f, 0x1.b157c8p+0f,
+    -0x1.99999ap-56f, 0x1.1e136ep-5f, 0x1.04930ap-3f, 0x1.b157c8p+0f,
     /* s = 4/8: node 51 x */
-    -0x1.39999ap-56f, 0x1.f4daep-3f, -0x1.2abebep-5f, 0x1.93da8p-3f,
+    -0x1.633334p-56f, 0x1.f4daep-3f, -0x1.2abebep-5f, 0x1.93da8p-3f,
     /* s = 4/8: node 51 y */
-    0x1p-58f, -0x1.d12d9ep-5f, 0x1.b6a126p-3f, -0x1.403986p-3f,
+    0x1.133334p-58f, -0x1.d12d9ep-5f, 0x1.b6a126p-3f, -0x1.403986p-3f,
     /* s = 4/8: node 51 z */
-    -0x1.e66666p-57f, -0x1.e8d28ep-5f, 0x1.a0d87p-4f, 0x1.76defap+0f,
+    -0x1.19999ap-56f, -0x1.e8d28ep-5f, 0x1.a0d87p-4f, 0x1.76defap+0f,
     /* s = 4/8: node 52 x */
-    -0x1.733334p-58f, 0x1.087b36p-3f, -0x1.117256p-8f, 0x1.fd3cdep-3f,
+    -0x1.b33334p-58f, 0x1.087b36p-3f, -0x1.117256p-8f, 0x1.fd3cdep-3f,
     /* s = 4/8: node 52 y */
-    0x1.59999ap-59f, -0x1.8298d2p-7f, 0x1.7540e4p-4f, -0x1.e2108ap-4f,
+    0x1.ecccccp-58f, -0x1.8298d2p-7f, 0x1.7540e4p-4f, -0x1.e2108ap-4f,
     /* s = 4/8: node 52 z */
-    0x1.333334p-59f, -0x1.e96554p-4f, 0x1.03dca4p-4f, 0x1.03901ep+0f,
+    -0x1.0cccccp-56f, -0x1.e96554p-4f, 0x1.03dca4p-4f, 0x1.03901ep+0f,
     /* s = 4/8: node 53 x */
-    -0x1.e66666p-59f, 0x1.9c3d9ep-5f, -0x1.84334cp-9f, 0x1.e2c8c4p-3f,
+    -0x1.b33334p-58f, 0x1.9c3d9ep-5f, -0x1.84334cp-9f, 0x1.e2c8c4p-3f,
     /* s = 4/8: node 53 y */
-    0x1.d9999ap-60f, -0x1.9a044cp-7f, 0x1.31e97ep-5f, -0x1.f8de5ep-5f,
+    0x1.2p-59f, -0x1.9a044cp-7f, 0x1.31e97ep-5f, -0x1.f8de5ep-5f,
     /* s = 4/8: node 53 z */
-    0x1.19999ap-58f, -0x1.324eb8p-4f, 0x1.c9f388p-6f, 0x1.167eb2p-1f,
+    -0x1.333334p-60f, -0x1.324eb8p-4f, 0x1.c9f388p-6f, 0x1.167eb2p-1f,
     /* s = 4/8: node 54 x */
-    -0x1.4cccccp-59f, 0x1.47d262p-7f, 0x1.954294p-10f, 0x1.e440b8p-4f,
+    -0x1.ccccccp-60f, 0x1.47d262p-7f, 0x1.954294p-10f, 0x1.e440b8p-4f,
     /* s = 4/8: node 54 y */
-    0x1p-60f, -0x1.b43684p-8f, 0x1.bb0258p-8f, -0x1.caeba8p-6f,
+    0x1.533334p-60f, -0x1.b43684p-8f, 0x1.bb0258p-8f, -0x1.caeba8p-6f,
     /* s = 4/8: node 54 z */
-    0x1.99999ap-60f, -0x1.8f3fb2p-6f, 0x1.01a6d4p-7f, 0x1.a31944p-3f,
+    -0x1.99999ap-60f, -0x1.8f3fb2p-6f, 0x1.01a6d4p-7f, 0x1.a31944p-3f,
     /* s = 4/8: node 55 x */
-    0x1.ccccccp-67f, -0x1.ef66d6p-13f, 0x1.d00a0cp-15f, 0x1.330c0cp-11f,
+    0x1.ccccccp-68f, -0x1.ef66d6p-13f, 0x1.d00a0cp-15f, 0x1.330c0cp-11f,
     /* s = 4/8: node 55 y */
-    -0x1.4p-68f, 0x1.57b3a4p-14f, 0x1.7a73cap-16f, -0x1.3d13d4p-12f,
+    -0x1.99999ap-70f, 0x1.57b3a4p-14f, 0x1.7a73cap-16f, -0x1.3d13d4p-12f,
     /* s = 4/8: node 55 z */
-    -0x1.2p-66f, 0x1.c3f93p-13f, -0x1.7f9edcp-15f, 0x1.9542cep-12f,
+    -0x1.866666p-66f, 0x1.c3f93p-13f, -0x1.7f9edcp-15f, 0x1.9542cep-12f,
     /* s = 4/8: node 56 x */
-    0x1.0cccccp-66f, -0x1.e80144p-13f, 0x1.a888ap-18f, -0x1.2145bep-11f,
+    0x1.f33334p-66f, -0x1.e80144p-13f, 0x1.a888ap-18f, -0x1.2145bep-11f,
     /* s = 4/8: node 56 y */
-    -0x1.85999ap-70f, 0x1.e87bcp-15f, 0x1.cf5b5ap-14f, -0x1.601378p-18f,
+    -0x1.d6ccccp-69f, 0x1.e87bcp-15f, 0x1.cf5b5ap-14f, -0x1.601378p-18f,
     /* s = 4/8: node 56 z */
     0x1.e66666p-68f, -0x1.4b5f9ep-13f, 0x1.d32ddp-16f, 0x1.f9beap-12f,
     /* s = 4/8: node 57 x */
-    0x1.0cccccp-59f, -0x1.5dc55ep-8f, -0x1.3df5eap-8f, -0x1.1d09bap-3f,
+    0x1.733334p-59f, -0x1.5dc55ep-8f, -0x1.3df5eap-8f, -0x1.1d09bap-3f,
     /* s = 4/8: node 57 y */
-    -0x1.9cccccp-61f, 0x1.b4a3acp-8f, 0x1.8bd3b8p-7f, 0x1.9cb406p-8f,
+    -0x1.6cccccp-61f, 0x1.b4a3acp-8f, 0x1.8bd3b8p-7f, 0x1.9cb406p-8f,
     /* s = 4/8: node 57 z */
-    -0x1.d9999ap-58f, 0x1.4117p-5f, 0x1.3048f6p-8f, 0x1.e7586ap-3f,
+    -0x1.4cccccp-58f, 0x1.4117p-5f, 0x1.3048f6p-8f, 0x1.e7586ap-3f,
     /* s = 4/8: node 58 x */
-    -0x1p-59f, 0x1.76175ap-6f, -0x1.a48cap-7f, -0x1.1ff708p-2f,
+    0x1.ccccccp-59f, 0x1.76175ap-6f, -0x1.a48cap-7f, -0x1.1ff708p-2f,
     /* s = 4/8: node 58 y */
-    0x1.0cccccp-61f, -0x1.ed4a74p-9f, 0x1.25f672p-5f, 0x1.fe889ap-8f,
+    0x1.433334p-61f, -0x1.ed4a74p-9f, 0x1.25f672p-5f, 0x1.fe889ap-8f,
     /* s = 4/8: node 58 z */
-    -0x1.066666p-56f, 0x1.c26a38p-4f, 0x1.0135e2p-7f, 0x1.3963ap-1f,
+    -0x1.4p-57f, 0x1.c26a38p-4f, 0x1.0135e2p-7f, 0x1.3963ap-1f,
     /* s = 4/8: node 59 x */
-    -0x1.e66666p-58f, 0x1.e82102p-4f, -0x1.e63e78p-8f, -0x1.2f945ap-2f,
+    -0x1p-57f, 0x1.e82102p-4f, -0x1.e63e78p-8f, -0x1.2f945ap-2f,
     /* s = 4/8: node 59 y */
-    -0x1.0cccccp-59f, 0x1.3b5e2ap-5f, 0x1.05b93cp-3f, 0x1.177b88p-5f,
+    -0x1.666666p-60f, 0x1.3b5e2ap-5f, 0x1.05b93cp-3f, 0x1.177b88p-5f,
     /* s = 4/8: node 59 z */
-    -0x1.99999ap-56f, 0x1.79df3cp-3f, 0x1.6b8554p-6f, 0x1.32e54ep+0f,
+    -0x1.2p-55f, 0x1.79df3cp-3f, 0x1.6b8554p-6f, 0x1.32e54ep+0f,
     /* s = 4/8: node 60 x */
-    -0x1.28ccccp-55f, 0x1.d52b28p-2f, -0x1.150a0cp-6f, -0x1.00e6dp-3f,
+    -0x1.28p-55f, 0x1.d52b28p-2f, -0x1.150a0cp-6f, -0x1.00e6dp-3f,
     /* s = 4/8: node 60 y */
-    -0x1.04p-58f, 0x1.31a3bcp-5f, 0x1.07432ap-2f, 0x1.72b952p-6f,
+    -0x1.79999ap-61f, 0x1.31a3bcp-5f, 0x1.07432ap-2f, 0x1.72b952p-6f,
     /* s = 4/8: node 60 z */
-    -0x1.733334p-55f, 0x1.8c768ep-3f, 0x1.d61292p-6f, 0x1.bc852ap+0f,
+    -0x1.a66666p-55f, 0x1.8c768ep-3f, 0x1.d61292p-6f, 0x1.bc852ap+0f,
     /* s = 4/8: node 61 x */
-    -0x1.2d6666p-54f, 0x1.a9d8ccp-1f, 0x1.4d0adp-6f, 0x1.1dfe2ep-5f,
+    -0x1.bae666p-54f, 0x1.a9d8ccp-1f, 0x1.4d0adp-6f, 0x1.1dfe2ep-5f,
     /* s = 4/8: node 61 y */
-    0x1.f86666p-57f, 0x1.44d002p-6f, 0x1.95d1fp-1f, 0x1.2ae048p-6f,
+    0x1.16ccccp-57f, 0x1.44d002p-6f, 0x1.95d1fp-1f, 0x1.2ae048p-6f,
     /* s = 4/8: node 61 z */
-    -0x1.ccccccp-56f, 0x1.347dep-5f, 0x1.240404p-6f, 0x1.254976p+1f,
+    -0x1.99999ap-58f, 0x1.347dep-5f, 0x1.240404p-6f, 0x1.254976p+1f,
     /* s = 4/8: node 62 x */
-    -0x1.1e6666p-55f, 0x1.b5641cp-2f, 0x1.868f06p-7f, 0x1.b6bdcep-3f,
+    -0x1.f9999ap-56f, 0x1.b5641cp-2f, 0x1.868f06p-7f, 0x1.b6bdcep-3f,
     /* s = 4/8: node 62 y */
-    -0x1.94ccccp-60f, 0x1.4ba3b4p-7f, 0x1.0e7adcp-2f, 0x1.c2c666p-8f,
+    0x1.ae6666p-59f, 0x1.4ba3b4p-7f, 0x1.0e7adcp-2f, 0x1.c2c666p-8f,
     /* s = 4/8: node 62 z */
-    -0x1.333334p-56f, -0x1.7eea4p-4f, 0x1.51b0f8p-8f, 0x1.afb35p+0f,
+    -0x1.666666p-56f, -0x1.7eea4p-4f, 0x1.51b0f8p-8f, 0x1.afb35p+0f,
     /* s = 4/8: node 63 x */
-    -0x1.0cccccp-56f, 0x1.33cef6p-3f, 0x1.0337cap-7f, 0x1.225b3ap-2f,
+    -0x1.3cccccp-56f, 0x1.33cef6p-3f, 0x1.0337cap-7f, 0x1.225b3ap-2f,
     /* s = 4/8: node 63 y */
-    0x1.a66666p-61f, 0x1.c865a8p-9f, 0x1.dd3414p-4f, 0x1.0711eap-8f,
+    -0x1.466666p-61f, 0x1.c865a8p-9f, 0x1.dd3414p-4f, 0x1.0711eap-8f,
     /* s = 4/8: node 63 z */
-    -0x1p-56f, -0x1.2020d8p-3f, 0x1.1076ap-10f, 0x1.284834p+0f,
+    0x1.99999ap-60f, -0x1.2020d8p-3f, 0x1.1076ap-10f, 0x1.284834p+0f,
     /* s = 4/8: node 64 x */
-    -0x1.19999ap-57f, 0x1.10a66cp-4f, 0x1.d1406cp-9f, 0x1.009c62p-2f,
+    -0x1.cp-58f, 0x1.10a66cp-4f, 0x1.d1406cp-9f, 0x1.009c62p-2f,
     /* s = 4/8: node 64 y */
-    -0x1.3cccccp-62f, 0x1.5a5102p-9f, 0x1.310972p-5f, 0x1.442776p-9f,
+    0x1.9d999ap-61f, 0x1.5a5102p-9f, 0x1.310972p-5f, 0x1.442776p-9f,
     /* s = 4/8: node 64 z */
-    -0x1.ccccccp-59f, -0x1.60147ep-4f, -0x1.74778cp-11f, 0x1.322808p-1f,
+    -0x1.666666p-57f, -0x1.60147ep-4f, -0x1.74778cp-11f, 0x1.322808p-1f,
     /* s = 4/8: node 65 x */
-    -0x1.4cccccp-59f, 0x1.4860b2p-8f, 0x1.29717cp-10f, 0x1.1de556p-3f,
+    -0x1.cp-59f, 0x1.4860b2p-8f, 0x1.29717cp-10f, 0x1.1de556p-3f,
     /* s = 4/8: node 65 y */
-    -0x1.e66666p-64f, 0x1.d06fe6p-11f, 0x1.58bdfap-7f, 0x1.9ba50ap-10f,
+    0x1.033334p-62f, 0x1.d06fe6p-11f, 0x1.58bdfap-7f, 0x1.9ba50ap-10f,
     /* s = 4/8: node 65 z */
-    0x1.666666p-60f, -0x1.e12216p-6f, -0x1.0bcb1ap-14f, 0x1.e0c25ap-3f,
+    -0x1.99999ap-63f, -0x1.e12216p-6f, -0x1.0bcb1ap-14f, 0x1.e0c25ap-3f,
     /* s = 4/8: node 66 x */
-    0x1.19999ap-68f, -0x1.d4d64ep-13f, -0x1.d5e72ep-17f, 0x1.1ca142p-11f,
+    0x1.d9999ap-67f, -0x1.d4d64ep-13f, -0x1.d5e72ep-17f, 0x1.1ca142p-11f,
     /* s = 4/8: node 66 y */
-    0x1.966666p-72f, -0x1.405f54p-21f, 0x1.5e91c2p-13f, -0x1.018e32p-18f,
+    0x1.84p-70f, -0x1.405f54p-21f, 0x1.5e91c2p-13f, -0x1.018e32p-18f,
     /* s = 4/8: node 66 z */
-    -0x1.166666p-65f, 0x1.f08ef4p-13f, 0x1.ba69fap-18f, 0x1.008cb2p-11f,
+    -0x1.733334p-66f, 0x1.f08ef4p-13f, 0x1.ba69fap-18f, 0x1.008cb2p-11f,
     /* s = 4/8: node 67 x */
-    0x1.99999ap-67f, -0x1.fe442ep-13f, -0x1.da787cp-18f, -0x1.3c807cp-11f,
+    0x1.6p-66f, -0x1.fe442ep-13f, -0x1.da787cp-18f, -0x1.3c807cp-11f,
     /* s = 4/8: node 67 y */
     -0x1.d9999ap-68f, 0x1.f96e7ep-15f, 0x1.4113c4p-14f, 0x1.5500d4p-12f,
     /* s = 4/8: node 67 z */
-    0x1.99999ap-67f, -0x1.8d31e8p-13f, 0x1.84f6a4p-15f, 0x1.bd49f6p-12f,
+    0x1.59999ap-67f, -0x1.8d31e8p-13f, 0x1.84f6a4p-15f, 0x1.bd49f6p-12f,
     /* s = 4/8: node 68 x */
-    0x1.a66666p-59f, 0x1.18b0f8p-7f, 0x1.431e08p-9f, -0x1.f753e6p-4f,
+    0x1p-61f, 0x1.18b0f8p-7f, 0x1.431e08p-9f, -0x1.f753e6p-4f,
     /* s = 4/8: node 68 y */
-    -0x1.99999ap-65f, -0x1.1aff58p-9f, 0x1.25177ap-7f, 0x1.1c58ap-5f,
+    -0x1.e66666p-62f, -0x1.1aff58p-9f, 0x1.25177ap-7f, 0x1.1c58ap-5f,
     /* s = 4/8: node 68 z */
-    -0x1.666666p-58f, 0x1.bb56fp-6f, -0x1.ee2328p-8f, 0x1.a9e13p-3f,
+    -0x1.4cccccp-58f, 0x1.bb56fp-6f, -0x1.ee2328p-8f, 0x1.a9e13p-3f,
     /* s = 4/8: node 69 x */
-    0x1.99999ap-59f, 0x1.f2f382p-6f, -0x1.729afap-7f, -0x1.e10454p-3f,
+    0x1.333334p-60f, 0x1.f2f382p-6f, -0x1.729afap-7f, -0x1.e10454p-3f,
     /* s = 4/8: node 69 y */
-    0x1.333334p-63f, -0x1.d08918p-13f, 0x1.42a1aap-5f, 0x1.26416cp-4f,
+    -0x1.19999ap-61f, -0x1.d08918p-13f, 0x1.42a1aap-5f, 0x1.26416cp-4f,
     /* s = 4/8: node 69 z */
-    -0x1.666666p-56f, 0x1.9646ccp-4f, -0x1.2b83d6p-6f, 0x1.1d833cp-1f,
+    -0x1.a66666p-57f, 0x1.9646ccp-4f, -0x1.2b83d6p-6f, 0x1.1d833cp-1f,
     /* s = 4/8: node 70 x */
-    -0x1.99999ap-59f, 0x1.e375f6p-4f, -0x1.2d5096p-6f, -0x1.e751a4p-3f,
+    -0x1p-58f, 0x1.e375f6p-4f, -0x1.2d5096p-6f, -0x1.e751a4p-3f,
     /* s = 4/8: node 70 y */
-    0x1.066666p-58f, -0x1.89150ep-6f, 0x1.8169cp-4f, 0x1.ff1a18p-4f,
+    -0x1.99999ap-64f, -0x1.89150ep-6f, 0x1.8169cp-4f, 0x1.ff1a18p-4f,
     /* s = 4/8: node 70 z */
-    -0x1.2cccccp-55f, 0x1.0fe1e2p-3f, -0x1.ef5ffap-5f, 0x1.0962e4p+0f,
+    -0x1.19999ap-57f, 0x1.0fe1e2p-3f, -0x1.ef5ffap-5f, 0x1.0962e4p+0f,
     /* s = 4/8: node 71 x */
-    -0x1.3p-56f, 0x1.c52158p-3f, -0x1.1ee1d6p-5f, -0x1.47710ap-3f,
+    -0x1.04ccccp-56f, 0x1.c52158p-3f, -0x1.1ee1d6p-5f, -0x1.47710ap-3f,
     /* s = 4/8: node 71 y */
-    0x1.b33334p-60f, -0x1.b882dcp-6f, 0x1.b83fbcp-3f, 0x1.4e6e8p-3f,
+    0x1.cp-59f, -0x1.b882dcp-6f, 0x1.b83fbcp-3f, 0x1.4e6e8p-3f,
     /* s = 4/8: node 71 z */
-    -0x1p-55f, 0x1.e61a9p-4f, -0x1.2abb66p-4f, 0x1.7bc1ccp+0f,
+    -0x1.8cccccp-56f, 0x1.e61a9p-4f, -0x1.2abb66p-4f, 0x1.7bc1ccp+0f,
     /* s = 4/8: node 72 x */
-    -0x1.a8p-57f, 0x1.1a13fep-2f, 0x1.a88066p-7f, 0x1.1028bcp-6f,
+    -0x1.66ccccp-56f, 0x1.1a13fep-2f, 0x1.a88066p-7f, 0x1.1028bcp-6f,
     /* s = 4/8: node 72 y */
-    0x1.99999ap-60f, 0x1.a3aa4ap-7f, 0x1.979d96p-2f, 0x1.98738ep-3f,
+    -0x1.99999ap-60f, 0x1.a3aa4ap-7f, 0x1.979d96p-2f, 0x1.98738ep-3f,
     /* s = 4/8: node 72 z */
-    -0x1p-57f, 0x1.7a6b7cp-6f, -0x1.a60dc2p-4f, 0x1.b1ceaep+0f,
+    -0x0p+0f, 0x1.7a6b7cp-6f, -0x1.a60dc2p-4f, 0x1.b1ceaep+0f,
     /* s = 4/8: node 73 x */
-    -0x1.9p-56f, 0x1.c66da2p-3f, 0x1.01145p-4f, 0x1.5aa38cp-3f,
+    -0x1.3b3334p-56f, 0x1.c66da2p-3f, 0x1.01145p-4f, 0x1.5aa38cp-3f,
     /* s = 4/8: node 73 y */
-    -0x1p-58f, 0x1.1de4b8p-4f, 0x1.af94ap-3f, 0x1.4d1f1ap-3f,
+    -0x1.8cccccp-59f, 0x1.1de4b8p-4f, 0x1.af94ap-3f, 0x1.4d1f1ap-3f,
     /* s = 4/8: node 73 z */
-    0x1.99999ap-58f, -0x1.4024a6p-4f, -0x1.6549e8p-4f, 0x1.72b5p+0f,
+    -0x1.4p-56f, -0x1.4024a6p-4f, -0x1.6549e8p-4f, 0x1.72b5p+0f,
     /* s = 4/8: node 74 x */
-    -0x1p-57f, 0x1.069818p-3f, 0x1.1f912ap-6f, 0x1.f4f44cp-3f,
+    -0x1.0cccccp-58f, 0x1.069818p-3f, 0x1.1f912ap-6f, 0x1.f4f44cp-3f,
     /* s = 4/8: node 74 y */
-    -0x1.ccccccp-60f, 0x1.24817p-6f, 0x1.87dcecp-4f, 0x1.fe0584p-4f,
+    -0x1.19999ap-59f, 0x1.24817p-6f, 0x1.87dcecp-4f, 0x1.fe0584p-4f,
     /* s = 4/8: node 74 z */
-    -0x1.e66666p-57f, -0x1.d9ac54p-4f, -0x1.06b9c6p-4f, 0x1.056078p+0f,
+    -0x1.99999ap-61f, -0x1.d9ac54p-4f, -0x1.06b9c6p-4f, 0x1.056078p+0f,
     /* s = 4/8: node 75 x */
-    -0x1.b33334p-58f, 0x1.6f4d3ep-5f, 0x1.474bacp-7f, 0x1.d63668p-3f,
+    -0x1.d9999ap-58f, 0x1.6f4d3ep-5f, 0x1.474bacp-7f, 0x1.d63668p-3f,
     /* s = 4/8: node 75 y */
-    -0x1.ccccccp-60f, 0x1.05f11ep-6f, 0x1.3436e2p-5f, 0x1.0ae1ecp-4f,
+    -0x1.733334p-60f, 0x1.05f11ep-6f, 0x1.3436e2p-5f, 0x1.0ae1ecp-4f,
     /* s = 4/8: node 75 z */
-    0x1.333334p-60f, -0x1.433cb2p-4f, -0x1.c86ae4p-6f, 0x1.15138ep-1f,
+    -0x1.99999ap-61f, -0x1.433cb2p-4f, -0x1.c86ae4p-6f, 0x1.15138ep-1f,
     /* s = 4/8: node 76 x */
-    -0x1.333334p-61f, 0x1.975d58p-7f, -0x1.51afc8p-16f, 0x1.eb7ff6p-4f,
+    -0x1p-59f, 0x1.975d58p-7f, -0x1.51afc8p-16f, 0x1.eb7ff6p-4f,
     /* s = 4/8: node 76 y */
-    -0x1.733334p-61f, 0x1.0df372p-7f, 0x1.038b48p-7f, 0x1.f5255p-6f,
+    -0x1.8cccccp-61f, 0x1.0df372p-7f, 0x1.038b48p-7f, 0x1.f5255p-6f,
     /* s = 4/8: node 76 z */
-    -0x1.ccccccp-60f, -0x1.6e0e44p-6f, -0x1.13743cp-7f, 0x1.a7d58ap-3f,
+    -0x1.19999ap-59f, -0x1.6e0e44p-6f, -0x1.13743cp-7f, 0x1.a7d58ap-3f,
     /* s = 4/8: node 77 x */
-    0x1.b33334p-68f, -0x1.e46dbap-13f, -0x1.bba0c4p-15f, 0x1.34388p-11f,
+    0x1.d9999ap-67f, -0x1.e46dbap-13f, -0x1.bba0c4p-15f, 0x1.34388p-11f,
     /* s = 4/8: node 77 y */
-    0x1.8p-68f, -0x1.74e2b6p-14f, 0x1.3fae02p-15f, 0x1.418d92p-12f,
+    0x1.266666p-68f, -0x1.74e2b6p-14f, 0x1.3fae02p-15f, 0x1.418d92p-12f,
     /* s = 4/8: node 77 z */
-    -0x1.0cccccp-66f, 0x1.f7724ep-13f, 0x1.23156cp-14f, 0x1.a44ae8p-12f,
+    -0x1.b9999ap-66f, 0x1.f7724ep-13f, 0x1.23156cp-14f, 0x1.a44ae8p-12f,
     /* s = 4/8: node 78 x */
-    0x1.0cccccp-67f, -0x1.c4a5cap-14f, 0x1.150698p-13f, -0x1.a4a55p-12f,
+    0x1.2cccccp-66f, -0x1.c4a5cap-14f, 0x1.150698p-13f, -0x1.a4a55p-12f,
     /* s = 4/8: node 78 y */
-    -0x1p-66f, 0x1.9b0a1ep-14f, -0x1.94560ep-16f, 0x1.b7113p-12f,
+    -0x1.4p-67f, 0x1.9b0a1ep-14f, -0x1.94560ep-16f, 0x1.b7113p-12f,
     /* s = 4/8: node 78 z */
-    0x1.ccccccp-68f, -0x1.3dcec4p-13f, 0x1.a88ddap-14f, 0x1.400bfcp-12f,
+    0x1.a66666p-68f, -0x1.3dcec4p-13f, 0x1.a88ddap-14f, 0x1.400bfcp-12f,
     /* s = 4/8: node 79 x */
-    0x1.666666p-62f, 0x1.051824p-10f, -0x1.45270ap-8f, -0x1.6dda3ap-4f,
+    0x1.ccccccp-61f, 0x1.051824p-10f, -0x1.45270ap-8f, -0x1.6dda3ap-4f,
     /* s = 4/8: node 79 y */
-    -0x0p+0f, -0x1.cb66cep-8f, 0x1.9fe5dcp-8f, 0x1.870426p-5f,
+    0x1.99999ap-65f, -0x1.cb66cep-8f, 0x1.9fe5dcp-8f, 0x1.870426p-5f,
     /* s = 4/8: node 79 z */
-    -0x1.266666p-58f, 0x1.17f23cp-6f, -0x1.cbcceep-8f, 0x1.324936p-3f,
+    -0x1.d9999ap-59f, 0x1.17f23cp-6f, -0x1.cbcceep-8f, 0x1.324936p-3f,
     /* s = 4/8: node 80 x */
-    0x1.19999ap-60f, 0x1.9f253ep-6f, -0x1.cadfcep-8f, -0x1.5eeb92p-3f,
+    0x1.4cccccp-60f, 0x1.9f253ep-6f, -0x1.cadfcep-8f, -0x1.5eeb92p-3f,
     /* s = 4/8: node 80 y */
-    -0x1.333334p-60f, -0x1.4781ccp-7f, 0x1.cf3c1cp-6f, 0x1.a8dd28p-4f,
+    -0x1.8p-60f, -0x1.4781ccp-7f, 0x1.cf3c1cp-6f, 0x1.a8dd28p-4f,
     /* s = 4/8: node 80 z */
-    -0x1.19999ap-58f, 0x1.e03facp-5f, -0x1.2488b2p-5f, 0x1.999878p-2f,
+    -0x1.e66666p-57f, 0x1.e03facp-5f, -0x1.2488b2p-5f, 0x1.999878p-2f,
     /* s = 4/8: node 81 x */
-    -0x1.a66666p-59f, 0x1.d195fep-5f, -0x1.e39876p-7f, -0x1.65493ap-3f,
+    -0x1.99999ap-63f, 0x1.d195fep-5f, -0x1.e39876p-7f, -0x1.65493ap-3f,
     /* s = 4/8: node 81 y */
-    0x1.99999ap-63f, -0x1.75d38ep-7f, 0x1.e935aap-5f, 0x1.67e216p-3f,
+    -0x1.ccccccp-60f, -0x1.75d38ep-7f, 0x1.e935aap-5f, 0x1.67e216p-3f,
     /* s = 4/8: node 81 z */
-    -0x1.466666p-56f, 0x1.7c43e8p-4f, -0x1.1b9f5ep-4f, 0x1.808ea4p-1f,
+    -0x1.4p-56f, 0x1.7c43e8p-4f, -0x1.1b9f5ep-4f, 0x1.808ea4p-1f,
     /* s = 4/8: node 82 x */
-    -0x1.333334p-60f, 0x1.91db3ep-4f, -0x1.27cf5ap-6f, -0x1.d3e984p-4f,
+    -0x1.f33334p-58f, 0x1.91db3ep-4f, -0x1.27cf5ap-6f, -0x1.d3e984p-4f,
     /* s = 4/8: node 82 y */
-    -0x0p+0f, 0x1.33f72cp-11f, 0x1.f9d86cp-4f, 0x1.fc3288p-3f,
+    0x1.99999ap-63f, 0x1.33f72cp-11f, 0x1.f9d86cp-4f, 0x1.fc3288p-3f,
     /* s = 4/8: node 82 z */
-    -0x1.19999ap-56f, 0x1.53f80ap-4f, -0x1.cb69f2p-4f, 0x1.0acb4ap+0f,
+    -0x1.333334p-58f, 0x1.53f80ap-4f, -0x1.cb69f2p-4f, 0x1.0acb4ap+0f,
     /* s = 4/8: node 83 x */
-    -0x1.63999ap-57f, 0x1.086188p-3f, 0x1.29a9dap-8f, 0x1.8e934p-8f,
+    -0x1.313334p-57f, 0x1.086188p-3f, 0x1.29a9dap-8f, 0x1.8e934p-8f,
     /* s = 4/8: node 83 y */
-    -0x1.666666p-59f, 0x1.8adf28p-7f, 0x1.282364p-3f, 0x1.1a7a3cp-2f,
+    -0x1.333334p-58f, 0x1.8adf28p-7f, 0x1.282364p-3f, 0x1.1a7a3cp-2f,
     /* s = 4/8: node 83 z */
-    -0x1.99999ap-57f, 0x1.7ca374p-7f, -0x1.1b4a08p-3f, 0x1.2d25dcp+0f,
+    -0x1.4p-55f, 0x1.7ca374p-7f, -0x1.1b4a08p-3f, 0x1.2d25dcp+0f,
     /* s = 4/8: node 84 x */
-    -0x1.2p-58f, 0x1.9c2e2ap-4f, 0x1.19fd66p-6f, 0x1.049668p-3f,
+    -0x1.4p-57f, 0x1.9c2e2ap-4f, 0x1.19fd66p-6f, 0x1.049668p-3f,
     /* s = 4/8: node 84 y */
-    -0x0p+0f, 0x1.1c7feep-6f, 0x1.e3fcd2p-4f, 0x1.efe20ep-3f,
+    -0x1.ccccccp-59f, 0x1.1c7feep-6f, 0x1.e3fcd2p-4f, 0x1.efe20ep-3f,
     /* s = 4/8: node 84 z */
-    -0x1p-56f, -0x1.ef31cap-5f, -0x1.e45204p-4f, 0x1.06a2cp+0f,
+    -0x1.ccccccp-57f, -0x1.ef31cap-5f, -0x1.e45204p-4f, 0x1.06a2cp+0f,
     /* s = 4/8: node 85 x */
-    -0x1.ccccccp-58f, 0x1.0feeeep-4f, 0x1.3e3942p-6f, 0x1.647bd6p-3f,
+    -0x1.3p-57f, 0x1.0feeeep-4f, 0x1.3e3942p-6f, 0x1.647bd6p-3f,
     /* s = 4/8: node 85 y */
-    -0x1.266666p-59f, 0x1.7cbd02p-6f, 0x1.015986p-4f, 0x1.60622cp-3f,
+    -0x1.ccccccp-59f, 0x1.7cbd02p-6f, 0x1.015986p-4f, 0x1.60622cp-3f,
     /* s = 4/8: node 85 z */
-    -0x1.666666p-57f, -0x1.30d7fep-4f, -0x1.3b9ddap-4f, 0x1.781c0ap-1f,
+    0x1.8p-58f, -0x1.30d7fep-4f, -0x1.3b9ddap-4f, 0x1.781c0ap-1f,
     /* s = 4/8: node 86 x */
-    -0x1.533334p-58f, 0x1.c9d152p-6f, 0x1.03d31ep-7f, 0x1.5eaa5ep-3f,
+    -0x1p-58f, 0x1.c9d152p-6f, 0x1.03d31ep-7f, 0x1.5eaa5ep-3f,
     /* s = 4/8: node 86 y */
-    -0x1.8p-60f, 0x1.db759cp-7f, 0x1.aed1c4p-6f, 0x1.a3ae04p-4f,
+    -0x1.b33334p-60f, 0x1.db759cp-7f, 0x1.aed1c4p-6f, 0x1.a3ae04p-4f,
     /* s = 4/8: node 86 z */
-    -0x1p-58f, -0x1.b1c506p-5f, -0x1.393206p-5f, 0x1.94ea54p-2f,
+    0x1.666666p-59f, -0x1.b1c506p-5f, -0x1.393206p-5f, 0x1.94ea54p-2f,
     /* s = 4/8: node 87 x */
-    -0x1.99999ap-60f, 0x1.9f1844p-8f, 0x1.9b1f0ap-9f, 0x1.6c1a9p-4f,
+    -0x1.e66666p-60f, 0x1.9f1844p-8f, 0x1.9b1f0ap-9f, 0x1.6c1a9p-4f,
     /* s = 4/8: node 87 y */
-    -0x1.666666p-60f, 0x1.a4d70ep-7f, 0x1.afceb8p-8f, 0x1.73ccf2p-5f,
+    -0x1.ap-60f, 0x1.a4d70ep-7f, 0x1.afceb8p-8f, 0x1.73ccf2p-5f,
     /* s = 4/8: node 87 z */
-    0x1p-61f, -0x1.986544p-7f, -0x1.11df4ep-7f, 0x1.2d4e12p-3f,
+    -0x1.ccccccp-61f, -0x1.986544p-7f, -0x1.11df4ep-7f, 0x1.2d4e12p-3f,
     /* s = 4/8: node 88 x */
-    0x1.333334p-70f, -0x1.023d2cp-13f, -0x1.9f7284p-14f, 0x1.a0c79cp-12f,
+    0x1.333334p-68f, -0x1.023d2cp-13f, -0x1.9f7284p-14f, 0x1.a0c79cp-12f,
     /* s = 4/8: node 88 y */
-    -0x1.99999ap-68f, -0x1.3b2924p-14f, -0x1.a7fa5ap-18f, 0x1.bc556p-12f,
+    -0x1.333334p-69f, -0x1.3b2924p-14f, -0x1.a7fa5ap-18f, 0x1.bc556p-12f,
     /* s = 4/8: node 88 z */
-    -0x1.a9999ap-66f, 0x1.6ff2b4p-13f, 0x1.8b469cp-14f, 0x1.40598cp-12f,
+    -0x1.633334p-66f, 0x1.6ff2b4p-13f, 0x1.8b469cp-14f, 0x1.40598cp-12f,
     /* s = 4/8: node 89 x */
-    0x1.466666p-67f, -0x1.7960cap-14f, 0x1.647984p-15f, -0x1.14b9c2p-12f,
+    0x1.19999ap-67f, -0x1.7960cap-14f, 0x1.647984p-15f, -0x1.14b9c2p-12f,
     /* s = 4/8: node 89 y */
-    -0x1.933334p-66f, 0x1.bc0f26p-14f, -0x1.f17c9ap-16f, 0x1.f3a5acp-12f,
+    -0x1.2cccccp-66f, 0x1.bc0f26p-14f, -0x1.f17c9ap-16f, 0x1.f3a5acp-12f,
     /* s = 4/8: node 89 z */
-    0x1.f33334p-68f, -0x1.f85bcp-14f, 0x1.019814p-13f, 0x1.e9773p-13f,
+    -0x1.99999ap-73f, -0x1.f85bcp-14f, 0x1.019814p-13f, 0x1.e9773p-13f,
     /* s = 4/8: node 90 x */
-    0x1.99999ap-63f, 0x1.1856dap-8f, -0x1.8224c2p-9f, -0x1.a97268p-5f,
+    -0x1.333334p-63f, 0x1.1856dap-8f, -0x1.8224c2p-9f, -0x1.a97268p-5f,
     /* s = 4/8: node 90 y */
-    0x1.333334p-64f, -0x1.d3414cp-8f, 0x1.c4abb4p-9f, 0x1.752f04p-5f,
+    0x1p-61f, -0x1.d3414cp-8f, 0x1.c4abb4p-9f, 0x1.752f04p-5f,
     /* s = 4/8: node 90 z */
     -0x1.4p-60f, 0x1.0ae4e8p-8f, -0x1.622238p-9f, 0x1.2d9514p-4f,
     /* s = 4/8: node 91 x */
-    0x1.99999ap-62f, 0x1.f5d068p-8f, -0x1.30ea4cp-7f, -0x1.9b3268p-4f,
+    0x1.99999ap-61f, 0x1.f5d068p-8f, -0x1.30ea4cp-7f, -0x1.9b3268p-4f,
     /* s = 4/8: node 91 y */
-    -0x1.666666p-60f, -0x1.d1503ap-8f, 0x1.3bac1ap-7f, 0x1.a43fc4p-4f,
+    -0x1.19999ap-60f, -0x1.d1503ap-8f, 0x1.3bac1ap-7f, 0x1.a43fc4p-4f,
     /* s = 4/8: node 91 z */
-    -0x1.b33334p-58f, 0x1.e3db2ap-6f, -0x1.83ea7ep-6f, 0x1.b419d8p-3f,
+    -0x1.733334p-58f, 0x1.e3db2ap-6f, -0x1.83ea7ep-6f, 0x1.b419d8p-3f,
     /* s = 4/8: node 92 x */
-    0x1.666666p-61f, 0x1.af7222p-6f, -0x1.b58418p-7f, -0x1.933028p-4f,
+    -0x1p-61f, 0x1.af7222p-6f, -0x1.b58418p-7f, -0x1.933028p-4f,
     /* s = 4/8: node 92 y */
-    -0x1.666666p-61f, -0x1.44279ep-9f, 0x1.bc022ap-6f, 0x1.63e722p-3f,
+    -0x1.b33334p-60f, -0x1.44279ep-9f, 0x1.bc022ap-6f, 0x1.63e722p-3f,
     /* s = 4/8: node 92 z */
-    -0x1p-58f, 0x1.5c8f24p-5f, -0x1.a0350ap-5f, 0x1.9c52dp-2f,
+    -0x1.99999ap-58f, 0x1.5c8f24p-5f, -0x1.a0350ap-5f, 0x1.9c52dp-2f,
     /* s = 4/8: node 93 x */
-    -0x1.8p-61f, 0x1.229086p-5f, -0x1.16ce4cp-7f, -0x1.011b68p-4f,
+    -0x1.19999ap-61f, 0x1.229086p-5f, -0x1.16ce4cp-7f, -0x1.011b68p-4f,
     /* s = 4/8: node 93 y */
-    -0x1.666666p-60f, -0x1.c6825p-8f, 0x1.525e26p-5f, 0x1.d0ff0ep-3f,
+    -0x0p+0f, -0x1.c6825p-8f, 0x1.525e26p-5f, 0x1.d0ff0ep-3f,
     /* s = 4/8: node 93 z */
-    -0x1.ccccccp-59f, 0x1.f2500cp-6f, -0x1.3cec2p-4f, 0x1.197aaap-1f,
+    -0x1.cp-57f, 0x1.f2500cp-6f, -0x1.3cec2p-4f, 0x1.197aaap-1f,
     /* s = 4/8: node 94 x */
-    -0x1.fcccccp-60f, 0x1.24a82cp-5f, 0x1.81d836p-10f, 0x1.72f308p-9f,
+    -0x1.eeccccp-60f, 0x1.24a82cp-5f, 0x1.81d836p-10f, 0x1.72f308p-9f,
     /* s = 4/8: node 94 y */
-    -0x1.19999ap-58f, 0x1.bd2786p-8f, 0x1.d44416p-5f, 0x1.ff5a7ep-3f,
+    -0x1.8p-58f, 0x1.bd2786p-8f, 0x1.d44416p-5f, 0x1.ff5a7ep-3f,
     /* s = 4/8: node 94 z */
-    -0x1.19999ap-58f, 0x1.239198p-8f, -0x1.65df5cp-4f, 0x1.35e9ep-1f,
+    -0x1.b33334p-58f, 0x1.239198p-8f, -0x1.65df5cp-4f, 0x1.35e9ep-1f,
     /* s = 4/8: node 95 x */
-    -0x1.866666p-59f, 0x1.4a2a26p-5f, 0x1.cd5fecp-7f, 0x1.097c7cp-4f,
+    -0x1.09999ap-58f, 0x1.4a2a26p-5f, 0x1.cd5fecp-7f, 0x1.097c7cp-4f,
     /* s = 4/8: node 95 y */
-    -0x1.e66666p-59f, 0x1.b937d2p-7f, 0x1.5dbaa6p-5f, 0x1.d1b8ccp-3f,
+    -0x1.b33334p-59f, 0x1.b937d2p-7f, 0x1.5dbaa6p-5f, 0x1.d1b8ccp-3f,
     /* s = 4/8: node 95 z */
-    -0x1.4cccccp-58f, -0x1.83ac54p-6f, -0x1.413c64p-4f, 0x1.176cb8p-1f,
+    -0x1.99999ap-58f, -0x1.83ac54p-6f, -0x1.413c64p-4f, 0x1.176cb8p-1f,
     /* s = 4/8: node 96 x */
-    -0x1.ccccccp-59f, 0x1.cd45dcp-6f, 0x1.b11d7ap-7f, 0x1.a08856p-4f,
+    -0x1.e66666p-59f, 0x1.cd45dcp-6f, 0x1.b11d7ap-7f, 0x1.a08856p-4f,
     /* s = 4/8: node 96 y */
-    -0x1.8p-60f, 0x1.29a2d6p-7f, 0x1.92b0acp-6f, 0x1.6038e4p-3f,
+    -0x1.8p-59f, 0x1.29a2d6p-7f, 0x1.92b0acp-6f, 0x1.6038e4p-3f,
     /* s = 4/8: node 96 z */
-    -0x1.333334p-59f, -0x1.31cb22p-5f, -0x1.b5aa9p-5f, 0x1.966c1cp-2f,
+    -0x1.99999ap-61f, -0x1.31cb22p-5f, -0x1.b5aa9p-5f, 0x1.966c1cp-2f,
     /* s = 4/8: node 97 x */
-    -0x1.19999ap-59f, 0x1.88a2dp-7f, 0x1.402f64p-7f, 0x1.9a8b42p-4f,
+    -0x1.8p-60f, 0x1.88a2dp-7f, 0x1.402f64p-7f, 0x1.9a8b42p-4f,
     /* s = 4/8: node 97 y */
-    -0x1.733334p-59f, 0x1.7e893p-7f, 0x1.72cd84p-7f, 0x1.9b5ea6p-4f,
+    -0x1.666666p-59f, 0x1.7e893p-7f, 0x1.72cd84p-7f, 0x1.9b5ea6p-4f,
     /* s = 4/8: node 97 z */
-    0x1.99999ap-63f, -0x1.96fa7cp-6f, -0x1.a02546p-6f, 0x1.aa876ep-3f,
+    -0x1.4cccccp-59f, -0x1.96fa7cp-6f, -0x1.a02546p-6f, 0x1.aa876ep-3f,
     /* s = 4/8: node 98 x */
-    -0x1.266666p-60f, 0x1.f29e58p-9f, 0x1.e0d516p-9f, 0x1.a89a1cp-5f,
+    -0x1.0cccccp-60f, 0x1.f29e58p-9f, 0x1.e0d516p-9f, 0x1.a89a1cp-5f,
     /* s = 4/8: node 98 y */
-    -0x1.1cccccp-59f, 0x1.41c40ap-7f, 0x1.89bf6ep-9f, 0x1.6f9c56p-5f,
+    -0x1.133334p-60f, 0x1.41c40ap-7f, 0x1.89bf6ep-9f, 0x1.6f9c56p-5f,
     /* s = 4/8: node 98 z */
-    -0x1.666666p-61f, -0x1.671ffep-9f, -0x1.73896p-9f, 0x1.2b7efep-4f,
+    -0x1.b33334p-61f, -0x1.671ffep-9f, -0x1.73896p-9f, 0x1.2b7efep-4f,
     /* s = 4/8: node 99 x */
-    -0x1.333334p-70f, -0x1.0cf70cp-14f, -0x1.15c2aap-14f, 0x1.044848p-12f,
+    -0x1.99999ap-71f, -0x1.0cf70cp-14f, -0x1.15c2aap-14f, 0x1.044848p-12f,
     /* s = 4/8: node 99 y */
-    -0x1.ccccccp-69f, -0x1.70e6c8p-14f, -0x1.846616p-15f, 0x1.de2b74p-12f,
+    -0x1.99999ap-70f, -0x1.70e6c8p-14f, -0x1.846616p-15f, 0x1.de2b74p-12f,
     /* s = 4/8: node 99 z */
-    -0x1.ap-67f, 0x1.3c2f62p-13f, 0x1.1262fcp-13f, 0x1.ef73a4p-13f,
+    -0x1.19999ap-67f, 0x1.3c2f62p-13f, 0x1.1262fcp-13f, 0x1.ef73a4p-13f,
     /* s = 4/8: node 100 x */
-    0x1.ccccccp-70f, -0x1.06e76cp-16f, 0x1.dd042ep-15f, -0x1.6ce986p-14f,
+    0x1.9p-68f, -0x1.06e76cp-16f, 0x1.dd042ep-15f, -0x1.6ce986p-14f,
     /* s = 4/8: node 100 y */
-    -0x1.733334p-68f, 0x1.36e4p-16f, -0x1.81a1ap-16f, 0x1.83723p-13f,
+    -0x1.39999ap-68f, 0x1.36e4p-16f, -0x1.81a1ap-16f, 0x1.83723p-13f,
     /* s = 4/8: node 100 z */
-    0x1.266666p-67f, -0x1.a4c08ap-14f, 0x1.79a9b2p-14f, 0x1.500438p-13f,
+    0x1.59999ap-68f, -0x1.a4c08ap-14f, 0x1.79a9b2p-14f, 0x1.500438p-13f,
     /* s = 4/8: node 101 x */
-    0x1.0cccccp-62f, 0x1.81ade8p-10f, -0x1.4550bcp-8f, -0x1.6089bap-6f,
+    0x1.8p-63f, 0x1.81ade8p-10f, -0x1.4550bcp-8f, -0x1.6089bap-6f,
     /* s = 4/8: node 101 y */
-    0x1.ccccccp-64f, -0x1.107d8ep-8f, 0x1.211752p-9f, 0x1.6ab4bp-6f,
+    -0x1.a66666p-62f, -0x1.107d8ep-8f, 0x1.211752p-9f, 0x1.6ab4bp-6f,
     /* s = 4/8: node 101 z */
-    -0x1.333334p-62f, -0x1.3f4736p-8f, 0x1.52c34cp-8f, 0x1.6e35fap-6f,
+    0x1p-62f, -0x1.3f4736p-8f, 0x1.52c34cp-8f, 0x1.6e35fap-6f,
     /* s = 4/8: node 102 x */
-    0x1.99999ap-65f, 0x1.61ac5p-9f, -0x1.208aa8p-7f, -0x1.66a932p-5f,
+    0x1.4cccccp-62f, 0x1.61ac5p-9f, -0x1.208aa8p-7f, -0x1.66a932p-5f,
     /* s = 4/8: node 102 y */
-    -0x1p-60f, -0x1.e57d2cp-10f, 0x1.120bf2p-8f, 0x1.ad1c16p-5f,
+    -0x1p-61f, -0x1.e57d2cp-10f, 0x1.120bf2p-8f, 0x1.ad1c16p-5f,
     /* s = 4/8: node 102 z */
-    -0x1.e66666p-61f, 0x1.f03f88p-9f, -0x1.77956cp-9f, 0x1.2e64a6p-4f,
+    -0x1.99999ap-60f, 0x1.f03f88p-9f, -0x1.77956cp-9f, 0x1.2e64a6p-4f,
     /* s = 4/8: node 103 x */
-    0x1.f33334p-61f, 0x1.418c2ap-8f, -0x1.5a3654p-7f, -0x1.6ab7d2p-5f,
+    -0x1.8p-62f, 0x1.418c2ap-8f, -0x1.5a3654p-7f, -0x1.6ab7d2p-5f,
     /* s = 4/8: node 103 y */
-    -0x1.19999ap-61f, -0x1.874feep-9f, 0x1.35dab8p-8f, 0x1.6d066p-4f,
+    -0x1.59999ap-60f, -0x1.874feep-9f, 0x1.35dab8p-8f, 0x1.6d066p-4f,
     /* s = 4/8: node 103 z */
-    -0x1.666666p-59f, 0x1.5a28b8p-7f, -0x1.99d0b2p-7f, 0x1.32514p-3f,
+    -0x1.d9999ap-59f, 0x1.5a28b8p-7f, -0x1.99d0b2p-7f, 0x1.32514p-3f,
     /* s = 4/8: node 104 x */
-    0x1.333334p-64f, 0x1.f4417ep-8f, -0x1.e982ap-8f, -0x1.c976ap-6f,
+    -0x1.19999ap-61f, 0x1.f4417ep-8f, -0x1.e982ap-8f, -0x1.c976ap-6f,
     /* s = 4/8: node 104 y */
-    -0x1.8p-60f, 0x1.d7285cp-8f, 0x1.5627b2p-7f, 0x1.f904bcp-4f,
+    -0x1.733334p-59f, 0x1.d7285cp-8f, 0x1.5627b2p-7f, 0x1.f904bcp-4f,
     /* s = 4/8: node 104 z */
-    -0x1p-58f, 0x1.904b2ep-7f, -0x1.64b2dcp-6f, 0x1.b097e6p-3f,
+    -0x1.8p-59f, 0x1.904b2ep-7f, -0x1.64b2dcp-6f, 0x1.b097e6p-3f,
     /* s = 4/8: node 105 x */
-    -0x1.a1999ap-61f, 0x1.6c8f46p-7f, 0x1.8914dp-12f, 0x1.27ac64p-11f,
+    -0x1.6c3334p-61f, 0x1.6c8f46p-7f, 0x1.8914dp-12f, 0x1.27ac64p-11f,
     /* s = 4/8: node 105 y */
-    -0x1.19999ap-59f, 0x1.3f9ebap-11f, 0x1.aa16d8p-8f, 0x1.1c9ceap-3f,
+    -0x1.b33334p-60f, 0x1.3f9ebap-11f, 0x1.aa16d8p-8f, 0x1.1c9ceap-3f,
     /* s = 4/8: node 105 z */
-    -0x1.ccccccp-59f, 0x1.c1e2eap-10f, -0x1.c8500cp-6f, 0x1.e8744ep-3f,
+    -0x1.333334p-58f, 0x1.c1e2eap-10f, -0x1.c8500cp-6f, 0x1.e8744ep-3f,
     /* s = 4/8: node 106 x */
-    -0x1.39999ap-60f, 0x1.081d26p-7f, 0x1.cd1a6ap-8f, 0x1.e968cap-6f,
+    -0x1.466666p-60f, 0x1.081d26p-7f, 0x1.cd1a6ap-8f, 0x1.e968cap-6f,
     /* s = 4/8: node 106 y */
-    -0x1.b33334p-60f, 0x1.12ed66p-12f, 0x1.2ee174p-7f, 0x1.f0570ap-4f,
+    -0x1.333334p-60f, 0x1.12ed66p-12f, 0x1.2ee174p-7f, 0x1.f0570ap-4f,
     /* s = 4/8: node 106 z */
-    -0x1.b33334p-59f, -0x1.f9847cp-8f, -0x1.774b3p-6f, 0x1.abdf4cp-3f,
+    0x1.333334p-59f, -0x1.f9847cp-8f, -0x1.774b3p-6f, 0x1.abdf4cp-3f,
     /* s = 4/8: node 107 x */
-    -0x1.0cccccp-60f, 0x1.bfca14p-8f, 0x1.792944p-7f, 0x1.6c279p-5f,
+    -0x1.19999ap-60f, 0x1.bfca14p-8f, 0x1.792944p-7f, 0x1.6c279p-5f,
     /* s = 4/8: node 107 y */
-    -0x1.b33334p-60f, 0x1.2b9ffp-8f, 0x1.a268dap-8f, 0x1.69ffa8p-4f,
+    -0x1.266666p-60f, 0x1.2b9ffp-8f, 0x1.a268dap-8f, 0x1.69ffa8p-4f,
     /* s = 4/8: node 107 z */
-    -0x1.19999ap-59f, -0x1.eb4dcap-8f, -0x1.a67e2p-7f, 0x1.2e4f9ap-3f,
+    -0x1.4cccccp-59f, -0x1.eb4dcap-8f, -0x1.a67e2p-7f, 0x1.2e4f9ap-3f,
     /* s = 4/8: node 108 x */
-    -0x1.8p-61f, 0x1.c057ap-9f, 0x1.1fda64p-7f, 0x1.698d64p-5f,
+    -0x1.8cccccp-61f, 0x1.c057ap-9f, 0x1.1fda64p-7f, 0x1.698d64p-5f,
     /* s = 4/8: node 108 y */
-    -0x1.266666p-60f, 0x1.0e4ac2p-8f, 0x1.7c2434p-9f, 0x1.ae1254p-5f,
+    -0x1p-60f, 0x1.0e4ac2p-8f, 0x1.7c2434p-9f, 0x1.ae1254p-5f,
     /* s = 4/8: node 108 z */
-    -0x1.99999ap-63f, -0x1.3f8b1ep-9f, -0x1.a3a05ep-9f, 0x1.2c4b8cp-4f,
+    -0x1.4cccccp-61f, -0x1.3f8b1ep-9f, -0x1.a3a05ep-9f, 0x1.2c4b8cp-4f,
     /* s = 4/8: node 109 x */
-    -0x1.99999ap-63f, 0x1.7c7f2p-9f, 0x1.5569bp-8f, 0x1.5d713ap-6f,
+    -0x1.4cccccp-62f, 0x1.7c7f2p-9f, 0x1.5569bp-8f, 0x1.5d713ap-6f,
     /* s = 4/8: node 109 y */
-    -0x1.533334p-61f, 0x1.720d7ap-8f, 0x1.70188ap-9f, 0x1.6129a2p-6f,
+    -0x1.ccccccp-62f, 0x1.720d7ap-8f, 0x1.70188ap-9f, 0x1.6129a2p-6f,
     /* s = 4/8: node 109 z */
-    -0x1.333334p-62f, 0x1.833402p-8f, 0x1.67141ep-8f, 0x1.6f5a56p-6f,
+    -0x1.cp-61f, 0x1.833402p-8f, 0x1.67141ep-8f, 0x1.6f5a56p-6f,
     /* s = 4/8: node 110 x */
-    0x1.99999ap-71f, -0x1.fe98ccp-16f, -0x1.d0a96p-15f, 0x1.74816ap-14f,
+    -0x1p-71f, -0x1.fe98ccp-16f, -0x1.d0a96p-15f, 0x1.74816ap-14f,
     /* s = 4/8: node 110 y */
-    -0x1p-70f, -0x1.a11fc2p-16f, -0x1.8df2d4p-16f, 0x1.88659cp-13f,
+    -0x1.666666p-69f, -0x1.a11fc2p-16f, -0x1.8df2d4p-16f, 0x1.88659cp-13f,
     /* s = 4/8: node 110 z */
-    -0x1.2cccccp-67f, 0x1.ba22f8p-14f, 0x1.881a2ap-14f, 0x1.5752dep-13f,
+    -0x1.79999ap-68f, 0x1.ba22f8p-14f, 0x1.881a2ap-14f, 0x1.5752dep-13f,
     /* s = 4/8: node 111 x */
-    -0x1.99999ap-72f, 0x1.5c12d8p-17f, 0x1.984e98p-15f, 0x1.bb5f78p-14f,
+    -0x1.e66666p-70f, 0x1.5c12d8p-17f, 0x1.984e98p-15f, 0x1.bb5f78p-14f,
     /* s = 4/8: node 111 y */
-    -0x1.666666p-69f, 0x1.51ae9ep-15f, -0x1.36be5cp-17f, -0x1.f1e5ep-14f,
+    -0x1.333334p-70f, 0x1.51ae9ep-15f, -0x1.36be5cp-17f, -0x1.f1e5ep-14f,
     /* s = 4/8: node 111 z */
-    -0x1.d7p-68f, 0x1.2af102p-14f, -0x1.41c872p-14f, -0x1.664324p-19f,
+    -0x1.523334p-68f, 0x1.2af102p-14f, -0x1.41c872p-14f, -0x1.664324p-19f,
     /* s = 4/8: node 112 x */
-    0x1.59999ap-68f, -0x1.96ae6ap-16f, 0x1.7271ccp-16f, -0x1.7fa902p-13f,
+    0x1.f33334p-69f, -0x1.96ae6ap-16f, 0x1.7271ccp-16f, -0x1.7fa902p-13f,
     /* s = 4/8: node 112 y */
-    -0x1.9p-68f, 0x1.ca2d0ap-15f, -0x1.76b28ep-16f, 0x1.5101a8p-14f,
+    -0x1.0e6666p-67f, 0x1.ca2d0ap-15f, -0x1.76b28ep-16f, 0x1.5101a8p-14f,
     /* s = 4/8: node 112 z */
-    0x1.333334p-67f, -0x1.77f3fcp-14f, 0x1.9d04f4p-14f, 0x1.4e179ap-13f,
+    0x1.59999ap-69f, -0x1.77f3fcp-14f, 0x1.9d04f4p-14f, 0x1.4e179ap-13f,
     /* s = 4/8: node 113 x */
-    0x1.99999ap-68f, -0x1.a648bp-15f, 0x1.3d4626p-14f, -0x1.ec9948p-12f,
+    0x1.733334p-67f, -0x1.a648bp-15f, 0x1.3d4626p-14f, -0x1.ec9948p-12f,
     /* s = 4/8: node 113 y */
-    -0x1.acccccp-67f, 0x1.ee1942p-15f, -0x1.0150b6p-14f, 0x1.14b29ap-12f,
+    -0x1.733334p-68f, 0x1.ee1942p-15f, -0x1.0150b6p-14f, 0x1.14b29ap-12f,
     /* s = 4/8: node 113 z */
-    0x1.ccccccp-68f, -0x1.e068c6p-14f, 0x1.13a69ep-13f, 0x1.f2cbd6p-13f,
+    0x1.4cccccp-67f, -0x1.e068c6p-14f, 0x1.13a69ep-13f, 0x1.f2cbd6p-13f,
     /* s = 4/8: node 114 x */
-    0x1.cp-67f, -0x1.4fd43cp-16f, 0x1.89efp-14f, -0x1.d58ddcp-12f,
+    0x1.266666p-67f, -0x1.4fd43cp-16f, 0x1.89efp-14f, -0x1.d58ddcp-12f,
     /* s = 4/8: node 114 y */
-    -0x1.333334p-66f, 0x1.00db9ap-13f, -0x1.02983cp-13f, 0x1.a4610ap-12f,
+    -0x1.866666p-66f, 0x1.00db9ap-13f, -0x1.02983cp-13f, 0x1.a4610ap-12f,
     /* s = 4/8: node 114 z */
-    0x1.0cccccp-67f, -0x1.98c7a8p-14f, 0x1.5454p-13f, 0x1.2ba3bp-12f,
+    0x1.b33334p-69f, -0x1.98c7a8p-14f, 0x1.5454p-13f, 0x1.2ba3bp-12f,
     /* s = 4/8: node 115 x */
-    -0x1.333334p-70f, 0x1.25e918p-14f, 0x1.b727a2p-15f, -0x1.313744p-12f,
+    -0x1.e66666p-69f, 0x1.25e918p-14f, 0x1.b727a2p-15f, -0x1.313744p-12f,
     /* s = 4/8: node 115 y */
-    -0x1.f33334p-67f, 0x1.4c0214p-15f, -0x1.973ce4p-13f, 0x1.3bd546p-11f,
+    -0x1.666666p-66f, 0x1.4c0214p-15f, -0x1.973ce4p-13f, 0x1.3bd546p-11f,
     /* s = 4/8: node 115 z */
-    0x1.99999ap-71f, -0x1.7ac636p-17f, 0x1.d85b96p-13f, 0x1.b43c18p-12f,
+    -0x1.99999ap-70f, -0x1.7ac636p-17f, 0x1.d85b96p-13f, 0x1.b43c18p-12f,
     /* s = 4/8: node 116 x */
-    -0x1.85e666p-67f, 0x1.7a0e2ap-13f, 0x1.18eb44p-18f, -0x1.ada26ep-19f,
+    -0x1.56999ap-67f, 0x1.7a0e2ap-13f, 0x1.18eb44p-18f, -0x1.ada26ep-19f,
     /* s = 4/8: node 116 y */
-    -0x1.333334p-67f, 0x1.4f6ab4p-19f, -0x1.f31154p-13f, 0x1.2766dp-11f,
+    -0x1.b33334p-68f, 0x1.4f6ab4p-19f, -0x1.f31154p-13f, 0x1.2766dp-11f,
     /* s = 4/8: node 116 z */
-    -0x1.59999ap-67f, -0x1.088afp-18f, 0x1.c3c0fep-13f, 0x1.f28814p-12f,
+    -0x1.19999ap-68f, -0x1.088afp-18f, 0x1.c3c0fep-13f, 0x1.f28814p-12f,
     /* s = 4/8: node 117 x */
     -0x1.6cccccp-67f, 0x1.60d0c6p-15f, -0x1.4bdbp-14f, 0x1.52f39ep-12f,
     /* s = 4/8: node 117 y */
-    -0x1.333334p-68f, -0x1.5ceaaep-15f, -0x1.b0969ap-13f, 0x1.3814e4p-11f,
+    -0x1.333334p-69f, -0x1.5ceaaep-15f, -0x1.b0969ap-13f, 0x1.3814e4p-11f,
     /* s = 4/8: node 117 z */
-    -0x1.19999ap-67f, 0x1.3086bap-14f, 0x1.df69f6p-13f, 0x1.9b9f7p-12f,
+    -0x1.333334p-69f, 0x1.3086bap-14f, 0x1.df69f6p-13f, 0x1.9b9f7p-12f,
     /* s = 4/8: node 118 x */
-    -0x1.99999ap-68f, -0x1.cdc7f4p-19f, -0x1.4b2e22p-14f, 0x1.c682aap-12f,
+    -0x1.99999ap-70f, -0x1.cdc7f4p-19f, -0x1.4b2e22p-14f, 0x1.c682aap-12f,
     /* s = 4/8: node 118 y */
-    -0x1.99999ap-70f, -0x1.d8db74p-14f, -0x1.0d1a74p-13f, 0x1.a819dp-12f,
+    -0x1p-68f, -0x1.d8db74p-14f, -0x1.0d1a74p-13f, 0x1.a819dp-12f,
     /* s = 4/8: node 118 z */
-    -0x1.ecccccp-67f, 0x1.b846dap-14f, 0x1.50295p-13f, 0x1.4256aap-12f,
+    -0x1.b33334p-67f, 0x1.b846dap-14f, 0x1.50295p-13f, 0x1.4256aap-12f,
     /* s = 4/8: node 119 x */
-    -0x1p-69f, -0x1.7553cep-15f, -0x1.643d3ap-14f, 0x1.deba46p-12f,
+    -0x1.266666p-67f, -0x1.7553cep-15f, -0x1.643d3ap-14f, 0x1.deba46p-12f,
     /* s = 4/8: node 119 y */
-    -0x1.99999ap-73f, -0x1.f7b59ap-15f, -0x1.fe979cp-15f, 0x1.fb8be6p-13f,
+    0x1.666666p-69f, -0x1.f7b59ap-15f, -0x1.fe979cp-15f, 0x1.fb8be6p-13f,
     /* s = 4/8: node 119 z */
-    -0x1.8cccccp-67f, 0x1.1c1c76p-13f, 0x1.2fe2bap-13f, 0x1.e82ccep-13f,
+    -0x1.59999ap-67f, 0x1.1c1c76p-13f, 0x1.2fe2bap-13f, 0x1.e82ccep-13f,
     /* s = 4/8: node 120 x */
-    -0x1.333334p-70f, -0x1.8d958p-16f, -0x1.ababc2p-16f, 0x1.8c0d9ep-13f,
+    -0x1.333334p-69f, -0x1.8d958p-16f, -0x1.ababc2p-16f, 0x1.8c0d9ep-13f,
     /* s = 4/8: node 120 y */
-    0x1.99999ap-69f, -0x1.fed47ep-15f, -0x1.06a26cp-15f, 0x1.77853ap-14f,
+    0x1.39999ap-68f, -0x1.fed47ep-15f, -0x1.06a26cp-15f, 0x1.77853ap-14f,
     /* s = 4/8: node 120 z */
-    -0x1.366666p-67f, 0x1.aca5fep-14f, 0x1.9554d8p-14f, 0x1.5c076ap-13f,
+    -0x1.3cccccp-67f, 0x1.aca5fep-14f, 0x1.9554d8p-14f, 0x1.5c076ap-13f,
     /* s = 4/8: node 121 x */
-    0x1p-69f, -0x1.381112p-17f, -0x1.1891ccp-15f, -0x1.bd510cp-14f,
+    0x1.333334p-70f, -0x1.381112p-17f, -0x1.1891ccp-15f, -0x1.bd510cp-14f,
     /* s = 4/8: node 121 y */
-    0x1.6cccccp-68f, -0x1.5c544p-15f, -0x1.a9a14p-17f, -0x1.af7b48p-14f,
+    0x1.8cccccp-69f, -0x1.5c544p-15f, -0x1.a9a14p-17f, -0x1.af7b48p-14f,
     /* s = 4/8: node 121 z */
-    0x1.456666p-68f, -0x1.5dee38p-14f, -0x1.39ed9p-14f, 0x1.7476d8p-19f,
+    0x1.e3ccccp-69f, -0x1.5dee38p-14f, -0x1.39ed9p-14f, 0x1.7476d8p-19f,
     /* s = 5/8: node 1 x */
-    -0x1.cp-69f, 0x1.2fc17p-19f, -0x1.217ea6p-15f, 0x1.14b9fcp-13f,
+    -0x1.19999ap-69f, 0x1.2fc17p-19f, -0x1.217ea6p-15f, 0x1.14b9fcp-13f,
     /* s = 5/8: node 1 y */
-    -0x1.b33334p-70f, -0x1.8f4548p-18f, 0x1.fabf3p-17f, 0x1.f9b00ap-14f,
+    -0x1p-71f, -0x1.8f4548p-18f, 0x1.fabf3p-17f, 0x1.f9b00ap-14f,
     /* s = 5/8: node 1 z */
-    0x1.ccccccp-72f, 0x1.eacf32p-15f, 0x1.de40f8p-15f, -0x1.ab7606p-17f,
+    -0x1.5b3334p-69f, 0x1.eacf32p-15f, 0x1.de40f8p-15f, -0x1.ab7606p-17f,
     /* s = 5/8: node 2 x */
-    0x1.99999ap-69f, -0x1.bea77ep-16f, -0x1.40ad2cp-16f, -0x1.7224ccp-13f,
+    0x1.cp-69f, -0x1.bea77ep-16f, -0x1.40ad2cp-16f, -0x1.7224ccp-13f,
     /* s = 5/8: node 2 y */
-    0x1.6p-69f, -0x1.359be8p-15f, -0x1.1104e2p-16f, -0x1.4b5ae4p-14f,
+    0x1.b9999ap-69f, -0x1.359be8p-15f, -0x1.1104e2p-16f, -0x1.4b5ae4p-14f,
     /* s = 5/8: node 2 z */
-    0x1p-69f, -0x1.c671d4p-15f, -0x1.4f8fb8p-14f, 0x1.757d2p-13f,
+    -0x1.333334p-72f, -0x1.c671d4p-15f, -0x1.4f8fb8p-14f, 0x1.757d2p-13f,
     /* s = 5/8: node 3 x */
-    0x1.266666p-67f, -0x1.71f684p-14f, -0x1.d52928p-14f, -0x1.23360ep-11f,
+    0x1.4cccccp-67f, -0x1.71f684p-14f, -0x1.d52928p-14f, -0x1.23360ep-11f,
     /* s = 5/8: node 3 y */
-    0x1.b33334p-68f, -0x1.2c59d8p-14f, -0x1.37150cp-14f, -0x1.0780f4p-12f,
+    0x1.2cccccp-67f, -0x1.2c59d8p-14f, -0x1.37150cp-14f, -0x1.0780f4p-12f,
     /* s = 5/8: node 3 z */
-    -0x1.99999ap-73f, -0x1.4238bep-14f, -0x1.bda756p-14f, 0x1.0dc474p-12f,
+    0x1.ccccccp-70f, -0x1.4238bep-14f, -0x1.bda756p-14f, 0x1.0dc474p-12f,
     /* s = 5/8: node 4 x */
-    0x1.4cccccp-67f, -0x1.69bb8cp-15f, -0x1.cca02ap-14f, -0x1.cd3174p-12f,
+    0x1.2p-66f, -0x1.69bb8cp-15f, -0x1.cca02ap-14f, -0x1.cd3174p-12f,
     /* s = 5/8: node 4 y */
-    0x1p-67f, -0x1.09fda2p-13f, -0x1.1541fep-13f, -0x1.c931fap-12f,
+    0x1.f33334p-67f, -0x1.09fda2p-13f, -0x1.1541fep-13f, -0x1.c931fap-12f,
     /* s = 5/8: node 4 z */
-    -0x1p-67f, -0x1.0d21a8p-14f, -0x1.3fa398p-13f, 0x1.125e28p-12f,
+    -0x1.333334p-68f, -0x1.0d21a8p-14f, -0x1.3fa398p-13f, 0x1.125e28p-12f,
     /* s = 5/8: node 5 x */
-    -0x1.666666p-69f, 0x1.604082p-15f, -0x1.7dcc9ap-15f, -0x1.6202dap-13f,
+    0x1.99999ap-74f, 0x1.604082p-15f, -0x1.7dcc9ap-15f, -0x1.6202dap-13f,
     /* s = 5/8: node 5 y */
-    0x1.333334p-73f, -0x1.51478ep-16f, -0x1.1f7b5ep-13f, -0x1.587c0ep-14f,
+    0x1.b33334p-71f, -0x1.51478ep-16f, -0x1.1f7b5ep-13f, -0x1.587c0ep-14f,
     /* s = 5/8: node 5 z */
-    -0x1.19999ap-69f, -0x1.c4e044p-16f, -0x1.02be56p-13f, 0x1.01cafep-12f,
+    -0x1.333334p-71f, -0x1.c4e044p-16f, -0x1.02be56p-13f, 0x1.01cafep-12f,
     /* s = 5/8: node 6 x */
-    -0x1.243334p-66f, 0x1.936976p-13f, 0x1.ab2c2p-18f, 0x1.c0b654p-17f,
+    -0x1.18p-66f, 0x1.936976p-13f, 0x1.ab2c2p-18f, 0x1.c0b654p-17f,
     /* s = 5/8: node 6 y */
-    0x1.4cccccp-68f, -0x1.891b5cp-16f, -0x1.daeb4ap-13f, -0x1.19caf2p-11f,
+    0x1.8p-68f, -0x1.891b5cp-16f, -0x1.daeb4ap-13f, -0x1.19caf2p-11f,
     /* s = 5/8: node 6 z */
-    -0x1.266666p-67f, 0x1.3225d8p-16f, -0x1.a0a3cap-13f, 0x1.068a16p-11f,
+    -0x1.f33334p-67f, 0x1.3225d8p-16f, -0x1.a0a3cap-13f, 0x1.068a16p-11f,
     /* s = 5/8: node 7 x */
-    -0x1.59999ap-67f, 0x1.55514p-14f, 0x1.cf6a1ap-14f, 0x1.8dfc2p-12f,
+    -0x1.2p-66f, 0x1.55514p-14f, 0x1.cf6a1ap-14f, 0x1.8dfc2p-12f,
     /* s = 5/8: node 7 y */
-    0x1.333334p-68f, 0x1.097a5cp-15f, -0x1.e56d3cp-13f, -0x1.3ee45ap-11f,
+    0x1.19999ap-68f, 0x1.097a5cp-15f, -0x1.e56d3cp-13f, -0x1.3ee45ap-11f,
     /* s = 5/8: node 7 z */
-    -0x1.6p-66f, 0x1.6ba3b2p-14f, -0x1.b4cc84p-13f, 0x1.c6ac42p-12f,
+    -0x1.e66666p-67f, 0x1.6ba3b2p-14f, -0x1.b4cc84p-13f, 0x1.c6ac42p-12f,
     /* s = 5/8: node 8 x */
-    -0x1p-67f, 0x1.935da4p-17f, 0x1.58df2cp-14f, 0x1.c38a74p-12f,
+    -0x1.19999ap-68f, 0x1.935da4p-17f, 0x1.58df2cp-14f, 0x1.c38a74p-12f,
     /* s = 5/8: node 8 y */
-    -0x1.333334p-68f, 0x1.aec2aap-14f, -0x1.f05f9p-14f, -0x1.a6d18p-12f,
+    -0x1.99999ap-72f, 0x1.aec2aap-14f, -0x1.f05f9p-14f, -0x1.a6d18p-12f,
     /* s = 5/8: node 8 z */
-    -0x1.0cccccp-66f, 0x1.0e1dep-13f, -0x1.3146d2p-13f, 0x1.6026e2p-12f,
+    -0x1.066666p-66f, 0x1.0e1dep-13f, -0x1.3146d2p-13f, 0x1.6026e2p-12f,
     /* s = 5/8: node 9 x */
-    -0x1p-68f, -0x1.47a884p-15f, 0x1.823de8p-14f, 0x1.e96898p-12f,
+    -0x1.99999ap-69f, -0x1.47a884p-15f, 0x1.823de8p-14f, 0x1.e96898p-12f,
     /* s = 5/8: node 9 y */
-    0x1.333334p-70f, 0x1.227a06p-14f, -0x1.d85f36p-15f, -0x1.e8d196p-13f,
+    -0x1.333334p-71f, 0x1.227a06p-14f, -0x1.d85f36p-15f, -0x1.e8d196p-13f,
     /* s = 5/8: node 9 z */
-    -0x1.266666p-68f, 0x1.3dbf52p-13f, -0x1.0c10dcp-13f, 0x1.040fdep-12f,
+    -0x1.6p-66f, 0x1.3dbf52p-13f, -0x1.0c10dcp-13f, 0x1.040fdep-12f,
     /* s = 5/8: node 10 x */
-    -0x1.99999ap-71f, -0x1.3bd4e8p-16f, 0x1.8ca48ep-16f, 0x1.899982p-13f,
+    -0x1p-70f, -0x1.3bd4e8p-16f, 0x1.8ca48ep-16f, 0x1.899982p-13f,
     /* s = 5/8: node 10 y */
-    -0x1.4cccccp-69f, 0x1.e77f9ap-15f, -0x1.ea4344p-16f, -0x1.865c64p-14f,
+    -0x1.99999ap-74f, 0x1.e77f9ap-15f, -0x1.ea4344p-16f, -0x1.865c64p-14f,
     /* s = 5/8: node 10 z */
-    -0x1.533334p-67f, 0x1.ee2f56p-14f, -0x1.60e83cp-14f, 0x1.87f0fp-13f,
+    -0x1.b9999ap-67f, 0x1.ee2f56p-14f, -0x1.60e83cp-14f, 0x1.87f0fp-13f,
     /* s = 5/8: node 11 x */
-    0x1.266666p-68f, -0x1.e875acp-17f, 0x1.c69402p-16f, -0x1.fc03a2p-14f,
+    0x1.133334p-68f, -0x1.e875acp-17f, 0x1.c69402p-16f, -0x1.fc03a2p-14f,
     /* s = 5/8: node 11 y */
-    -0x1.733334p-69f, 0x1.5ed6ecp-15f, -0x1.3e23p-18f, 0x1.9b251ep-14f,
+    -0x1.f33334p-69f, 0x1.5ed6ecp-15f, -0x1.3e23p-18f, 0x1.9b251ep-14f,
     /* s = 5/8: node 11 z */
-    0x1.18p-67f, -0x1.81eeccp-14f, 0x1.04684cp-14f, -0x1.31a0c2p-16f,
+    0x1.4cp-68f, -0x1.81eeccp-14f, 0x1.04684cp-14f, -0x1.31a0c2p-16f,
     /* s = 5/8: node 12 x */
-    0x1.666666p-72f, -0x1.0ee4a4p-15f, -0x1.dd684p-15f, -0x1.385c2p-14f,
+    0x1.acccccp-69f, -0x1.0ee4a4p-15f, -0x1.dd684p-15f, -0x1.385c2p-14f,
     /* s = 5/8: node 12 y */
-    0x1.933334p-68f, -0x1.3afdecp-15f, -0x1.79014p-16f, -0x1.866d3ap-13f,
+    0x1.8p-68f, -0x1.3afdecp-15f, -0x1.79014p-16f, -0x1.866d3ap-13f,
     /* s = 5/8: node 12 z */
-    0x1.066666p-68f, -0x1.c60d28p-15f, -0x1.2ed1a4p-14f, 0x1.778a34p-13f,
+    0x1.4cccccp-69f, -0x1.c60d28p-15f, -0x1.2ed1a4p-14f, 0x1.778a34p-13f,
     /* s = 5/8: node 13 x */
-    0x1.99999ap-64f, 0x1.d63342p-12f, 0x1.0acd06p-8f, -0x1.6fd24ep-6f,
+    0x1p-62f, 0x1.d63342p-12f, 0x1.0acd06p-8f, -0x1.6fd24ep-6f,
     /* s = 5/8: node 13 y */
-    0x1.733334p-61f, 0x1.32127cp-13f, 0x1.2edf38p-12f, -0x1.8b4b02p-6f,
+    0x1.8p-62f, 0x1.32127cp-13f, 0x1.2edf38p-12f, -0x1.8b4b02p-6f,
     /* s = 5/8: node 13 z */
-    -0x1.e66666p-63f, -0x1.3105ccp-9f, -0x1.0b69aep-8f, 0x1.7e6268p-6f,
+    -0x1.333334p-63f, -0x1.3105ccp-9f, -0x1.0b69aep-8f, 0x1.7e6268p-6f,
     /* s = 5/8: node 14 x */
-    0x1.19999ap-62f, 0x1.21edap-10f, 0x1.c66c8p-8f, -0x1.75ca7ap-5f,
+    0x1.4cccccp-62f, 0x1.21edap-10f, 0x1.c66c8p-8f, -0x1.75ca7ap-5f,
     /* s = 5/8: node 14 y */
-    0x1.4cccccp-61f, -0x1.1e1f5p-9f, 0x1.8d5d48p-10f, -0x1.c2c70ap-5f,
+    0x1.666666p-62f, -0x1.1e1f5p-9f, 0x1.8d5d48p-10f, -0x1.c2c70ap-5f,
     /* s = 5/8: node 14 z */
-    -0x1.a66666p-60f, 0x1.01d302p-7f, 0x1.41deecp-8f, 0x1.34e218p-4f,
+    -0x1.4p-60f, 0x1.01d302p-7f, 0x1.41deecp-8f, 0x1.34e218p-4f,
     /* s = 5/8: node 15 x */
-    0x1.333334p-62f, 0x1.11ea1p-8f, 0x1.1ea06ep-7f, -0x1.72f22ap-5f,
+    0x1.99999ap-62f, 0x1.11ea1p-8f, 0x1.1ea06ep-7f, -0x1.72f22ap-5f,
     /* s = 5/8: node 15 y */
-    0x1.133334p-59f, -0x1.4a0562p-8f, 0x1.5c5442p-10f, -0x1.7e3facp-4f,
+    0x1.a66666p-60f, -0x1.4a0562p-8f, 0x1.5c5442p-10f, -0x1.7e3facp-4f,
     /* s = 5/8: node 15 z */
-    -0x1.8p-59f, 0x1.376302p-6f, 0x1.32522p-6f, 0x1.4775acp-3f,
+    -0x1p-59f, 0x1.376302p-6f, 0x1.32522p-6f, 0x1.4775acp-3f,
     /* s = 5/8: node 16 x */
-    -0x1.8p-62f, 0x1.4f1b68p-7f, 0x1.01b80cp-7f, -0x1.afda2ap-6f,
+    0x1.8p-62f, 0x1.4f1b68p-7f, 0x1.01b80cp-7f, -0x1.afda2ap-6f,
     /* s = 5/8: node 16 y */
-    0x1.d9999ap-59f, -0x1.5f69fcp-7f, 0x1.e91a6p-10f, -0x1.0aebfcp-3f,
+    0x1.ccccccp-59f, -0x1.5f69fcp-7f, 0x1.e91a6p-10f, -0x1.0aebfcp-3f,
     /* s = 5/8: node 16 z */
-    -0x1.666666p-60f, 0x1.5d8598p-6f, 0x1.fe5cc4p-6f, 0x1.c73252p-3f,
+    -0x1.ccccccp-60f, 0x1.5d8598p-6f, 0x1.fe5cc4p-6f, 0x1.c73252p-3f,
     /* s = 5/8: node 17 x */
-    -0x1.04p-60f, 0x1.e68eb2p-7f, 0x1.8e0226p-10f, 0x1.322fcep-8f,
+    -0x1.b26666p-60f, 0x1.e68eb2p-7f, 0x1.8e0226p-10f, 0x1.322fcep-8f,
     /* s = 5/8: node 17 y */
-    0x1.0cccccp-59f, -0x1.a3e0eap-8f, 0x1.158466p-8f, -0x1.23a268p-3f,
+    0x1p-59f, -0x1.a3e0eap-8f, 0x1.158466p-8f, -0x1.23a268p-3f,
     /* s = 5/8: node 17 z */
-    -0x1.4cccccp-59f, 0x1.7859e6p-7f, 0x1.1fec06p-5f, 0x1.ffe292p-3f,
+    -0x1.19999ap-58f, 0x1.7859e6p-7f, 0x1.1fec06p-5f, 0x1.ffe292p-3f,
     /* s = 5/8: node 18 x */
-    -0x1.0cccccp-59f, 0x1.9973b4p-7f, -0x1.468024p-8f, 0x1.30182p-5f,
+    -0x1.d9999ap-61f, 0x1.9973b4p-7f, -0x1.468024p-8f, 0x1.30182p-5f,
     /* s = 5/8: node 18 y */
-    0x1.99999ap-60f, -0x1.37f712p-8f, 0x1.8f0acap-8f, -0x1.067ce2p-3f,
+    0x1.733334p-59f, -0x1.37f712p-8f, 0x1.8f0acap-8f, -0x1.067ce2p-3f,
     /* s = 5/8: node 18 z */
-    -0x1.4cccccp-59f, -0x1.161a34p-9f, 0x1.a80732p-6f, 0x1.b3d496p-3f,
+    -0x1.b33334p-59f, -0x1.161a34p-9f, 0x1.a80732p-6f, 0x1.b3d496p-3f,
     /* s = 5/8: node 19 x */
-    -0x1.8cccccp-60f, 0x1.47fd6p-7f, -0x1.3af854p-7f, 0x1.91f09ep-5f,
+    -0x1.4cccccp-60f, 0x1.47fd6p-7f, -0x1.3af854p-7f, 0x1.91f09ep-5f,
     /* s = 5/8: node 19 y */
-    0x1p-61f, -0x1.a4a546p-8f, 0x1.4078a6p-8f, -0x1.6b37cap-4f,
+    0x1.b33334p-61f, -0x1.a4a546p-8f, 0x1.4078a6p-8f, -0x1.6b37cap-4f,
     /* s = 5/8: node 19 z */
-    -0x1.99999ap-63f, -0x1.5196f2p-8f, 0x1.ceec1cp-7f, 0x1.30e0a6p-3f,
+    -0x1.8p-60f, -0x1.5196f2p-8f, 0x1.ceec1cp-7f, 0x1.30e0a6p-3f,
     /* s = 5/8: node 20 x */
-    -0x1.866666p-60f, 0x1.72cfdp-8f, -0x1.f952bap-8f, 0x1.82c88p-5f,
+    -0x1.533334p-60f, 0x1.72cfdp-8f, -0x1.f952bap-8f, 0x1.82c88p-5f,
     /* s = 5/8: node 20 y */
-    0x1.333334p-60f, -0x1.876be2p-8f, 0x1.ba4162p-10f, -0x1.bdf814p-5f,
+    0x1.e66666p-60f, -0x1.876be2p-8f, 0x1.ba4162p-10f, -0x1.bdf814p-5f,
     /* s = 5/8: node 20 z */
-    -0x1.4p-60f, -0x1.8585d4p-10f, 0x1.d056c2p-9f, 0x1.2da3c2p-4f,
+    -0x1.733334p-60f, -0x1.8585d4p-10f, 0x1.d056c2p-9f, 0x1.2da3c2p-4f,
     /* s = 5/8: node 21 x */
-    -0x1.99999ap-63f, 0x1.d556cp-9f, -0x1.2a771ap-8f, 0x1.6c09aep-6f,
+    -0x1.59999ap-61f, 0x1.d556cp-9f, -0x1.2a771ap-8f, 0x1.6c09aep-6f,
     /* s = 5/8: node 21 y */
-    0x1.ccccccp-61f, -0x1.956fb4p-8f, 0x1.12cf6p-9f, -0x1.63193ep-6f,
+    0x1.733334p-61f, -0x1.956fb4p-8f, 0x1.12cf6p-9f, -0x1.63193ep-6f,
     /* s = 5/8: node 21 z */
-    -0x1.066666p-61f, 0x1.b86626p-8f, -0x1.3df87ap-8f, 0x1.7b641p-6f,
+    -0x1.333334p-62f, 0x1.b86626p-8f, -0x1.3df87ap-8f, 0x1.7b641p-6f,
     /* s = 5/8: node 22 x */
-    0x1p-71f, -0x1.f15b22p-16f, 0x1.b49244p-15f, 0x1.454ff8p-14f,
+    0x1.333334p-71f, -0x1.f15b22p-16f, 0x1.b49244p-15f, 0x1.454ff8p-14f,
     /* s = 5/8: node 22 y */
-    0x1.59999ap-69f, 0x1.688d2cp-16f, -0x1.54c9dcp-16f, -0x1.80a1aap-13f,
+    0x1p-69f, 0x1.688d2cp-16f, -0x1.54c9dcp-16f, -0x1.80a1aap-13f,
     /* s = 5/8: node 22 z */
-    -0x1.033334p-66f, 0x1.fb3e2cp-14f, -0x1.58125p-14f, 0x1.81799p-13f,
+    -0x1.08p-66f, 0x1.fb3e2cp-14f, -0x1.58125p-14f, 0x1.81799p-13f,
     /* s = 5/8: node 23 x */
-    0x1.0cccccp-68f, -0x1.525beep-14f, -0x1.026bf6p-14f, -0x1.4baf36p-12f,
+    0x1.266666p-68f, -0x1.525beep-14f, -0x1.026bf6p-14f, -0x1.4baf36p-12f,
     /* s = 5/8: node 23 y */
-    0x1.4p-67f, -0x1.caf3b4p-14f, -0x1.0c64c4p-14f, -0x1.f77b78p-12f,
+    0x1.cp-67f, -0x1.caf3b4p-14f, -0x1.0c64c4p-14f, -0x1.f77b78p-12f,
     /* s = 5/8: node 23 z */
-    0x1.4cccccp-69f, -0x1.3211e4p-14f, -0x1.7ba88p-14f, 0x1.0bf046p-12f,
+    0x1p-70f, -0x1.3211e4p-14f, -0x1.7ba88p-14f, 0x1.0bf046p-12f,
     /* s = 5/8: node 24 x */
-    0x1.4cccccp-60f, -0x1.4441ep-9f, -0x1.2c695cp-12f, -0x1.b7921p-5f,
+    0x1.8cccccp-60f, -0x1.4441ep-9f, -0x1.2c695cp-12f, -0x1.b7921p-5f,
     /* s = 5/8: node 24 y */
-    0x1.ccccccp-62f, -0x1.89f38cp-10f, -0x1.fb4578p-11f, -0x1.a4547ap-5f,
+    0x1.333334p-63f, -0x1.89f38cp-10f, -0x1.fb4578p-11f, -0x1.a4547ap-5f,
     /* s = 5/8: node 24 z */
-    -0x1.19999ap-61f, 0x1.325b9ep-7f, 0x1.424a6p-8f, 0x1.321c38p-4f,
+    -0x1.666666p-59f, 0x1.325b9ep-7f, 0x1.424a6p-8f, 0x1.321c38p-4f,
     /* s = 5/8: node 25 x */
-    0x1.333334p-62f, -0x1.97b24ep-10f, 0x1.667426p-9f, -0x1.b7fd4p-4f,
+    0x1.333334p-61f, -0x1.97b24ep-10f, 0x1.667426p-9f, -0x1.b7fd4p-4f,
     /* s = 5/8: node 25 y */
-    0x1.19999ap-59f, -0x1.4217eap-7f, 0x1.0f3ca2p-9f, -0x1.c52bb4p-4f,
+    0x1.4cccccp-59f, -0x1.4217eap-7f, 0x1.0f3ca2p-9f, -0x1.c52bb4p-4f,
     /* s = 5/8: node 25 z */
-    -0x1.b33334p-59f, 0x1.4e8cecp-5f, 0x1.02d3d6p-5f, 0x1.c70de8p-3f,
+    -0x1.2p-57f, 0x1.4e8cecp-5f, 0x1.02d3d6p-5f, 0x1.c70de8p-3f,
     /* s = 5/8: node 26 x */
-    0x1p-61f, 0x1.3f99bap-6f, 0x1.1afa6p-7f, -0x1.baf878p-4f,
+    -0x1.99999ap-63f, 0x1.3f99bap-6f, 0x1.1afa6p-7f, -0x1.baf878p-4f,
     /* s = 5/8: node 26 y */
-    0x1.ccccccp-59f, -0x1.7e1fe6p-7f, 0x1.9ffdeep-7f, -0x1.756e62p-3f,
+    0x1.e66666p-59f, -0x1.7e1fe6p-7f, 0x1.9ffdeep-7f, -0x1.756e62p-3f,
     /* s = 5/8: node 26 z */
-    -0x1.4cccccp-57f, 0x1.0eb95p-4f, 0x1.0b9886p-4f, 0x1.a7feaep-2f,
+    -0x1.a66666p-57f, 0x1.0eb95p-4f, 0x1.0b9886p-4f, 0x1.a7feaep-2f,
     /* s = 5/8: node 27 x */
-    -0x1.333334p-59f, 0x1.3f3428p-5f, 0x1.223722p-7f, -0x1.dbf838p-5f,
+    -0x1.2p-59f, 0x1.3f3428p-5f, 0x1.223722p-7f, -0x1.dbf838p-5f,
     /* s = 5/8: node 27 y */
-    0x1.4p-58f, -0x1.6a2b9ap-7f, 0x1.3eafccp-5f, -0x1.de9bfap-3f,
+    0x1.d9999ap-58f, -0x1.6a2b9ap-7f, 0x1.3eafccp-5f, -0x1.de9bfap-3f,
     /* s = 5/8: node 27 z */
-    -0x1.333334p-57f, 0x1.1e75dcp-4f, 0x1.a224cap-4f, 0x1.3462c8p-1f,
+    -0x1.8cccccp-57f, 0x1.1e75dcp-4f, 0x1.a224cap-4f, 0x1.3462c8p-1f,
     /* s = 5/8: node 28 x */
-    -0x1.a66666p-59f, 0x1.92e434p-5f, 0x1.d7699p-9f, 0x1.92c13ap-6f,
+    -0x1.cp-59f, 0x1.92e434p-5f, 0x1.d7699p-9f, 0x1.92c13ap-6f,
     /* s = 5/8: node 28 y */
-    0x1.0cccccp-57f, -0x1.28f772p-6f, 0x1.99fb9p-5f, -0x1.171b3ap-2f,
+    0x1.cp-58f, -0x1.28f772p-6f, 0x1.99fb9p-5f, -0x1.171b3ap-2f,
     /* s = 5/8: node 28 z */
-    -0x1.a66666p-57f, 0x1.fb570ap-6f, 0x1.9c058ap-4f, 0x1.3fe6fep-1f,
+    -0x1.733334p-57f, 0x1.fb570ap-6f, 0x1.9c058ap-4f, 0x1.3fe6fep-1f,
     /* s = 5/8: node 29 x */
-    -0x1.d9999ap-58f, 0x1.a6bed8p-5f, -0x1.8c8d9ep-8f, 0x1.4e44b4p-4f,
+    -0x1.a66666p-58f, 0x1.a6bed8p-5f, -0x1.8c8d9ep-8f, 0x1.4e44b4p-4f,
     /* s = 5/8: node 29 y */
-    0x1.a66666p-58f, -0x1.61f3f8p-6f, 0x1.2d571ap-5f, -0x1.defb48p-3f,
+    0x1.59999ap-58f, -0x1.61f3f8p-6f, 0x1.2d571ap-5f, -0x1.defb48p-3f,
     /* s = 5/8: node 29 z */
-    -0x1.4cccccp-57f, -0x1.285f0ep-7f, 0x1.63d1d8p-4f, 0x1.1d213cp-1f,
+    -0x1.ccccccp-59f, -0x1.285f0ep-7f, 0x1.63d1d8p-4f, 0x1.1d213cp-1f,
     /* s = 5/8: node 30 x */
-    -0x1.19999ap-58f, 0x1.395dap-5f, -0x1.fb7d76p-8f, 0x1.cf7894p-4f,
+    -0x1.cp-59f, 0x1.395dap-5f, -0x1.fb7d76p-8f, 0x1.cf7894p-4f,
     /* s = 5/8: node 30 y */
-    0x1.e66666p-59f, -0x1.dc2b74p-7f, 0x1.5705bap-6f, -0x1.6b6c86p-3f,
+    0x1.4p-58f, -0x1.dc2b74p-7f, 0x1.5705bap-6f, -0x1.6b6c86p-3f,
     /* s = 5/8: node 30 z */
-    -0x0p+0f, -0x1.01dbdcp-5f, 0x1.bdf38cp-5f, 0x1.977cb8p-2f,
+    -0x1p-58f, -0x1.01dbdcp-5f, 0x1.bdf38cp-5f, 0x1.977cb8p-2f,
     /* s = 5/8: node 31 x */
-    -0x1.99999ap-60f, 0x1.15b1dap-6f, -0x1.b71d4cp-8f, 0x1.b3b91ap-4f,
+    -0x1.4cccccp-60f, 0x1.15b1dap-6f, -0x1.b71d4cp-8f, 0x1.b3b91ap-4f,
     /* s = 5/8: node 31 y */
-    0x1.e66666p-59f, -0x1.bc0e82p-7f, 0x1.25a2d6p-7f, -0x1.9c813ap-4f,
+    0x1.e66666p-60f, -0x1.bc0e82p-7f, 0x1.25a2d6p-7f, -0x1.9c813ap-4f,
     /* s = 5/8: node 31 z */
     0x1.99999ap-62f, -0x1.814f62p-6f, 0x1.a10018p-6f, 0x1.aae57ep-3f,
     /* s = 5/8: node 32 x */
-    -0x1.4p-60f, 0x1.7c3a0ap-8f, -0x1.6a1f7cp-9f, 0x1.b642dp-5f,
+    -0x1.4cccccp-60f, 0x1.7c3a0ap-8f, -0x1.6a1f7cp-9f, 0x1.b642dp-5f,
     /* s = 5/8: node 32 y */
-    0x1.466666p-60f, -0x1.72c2aep-7f, 0x1.adf374p-10f, -0x1.769a94p-5f,
+    0x1.d33334p-60f, -0x1.72c2aep-7f, 0x1.adf374p-10f, -0x1.769a94p-5f,
     /* s = 5/8: node 32 z */
-    -0x1.4p-60f, -0x1.02aca8p-9f, 0x1.7f0192p-9f, 0x1.2bfedep-4f,
+    -0x1.19999ap-60f, -0x1.02aca8p-9f, 0x1.7f0192p-9f, 0x1.2bfedep-4f,
     /* s = 5/8: node 33 x */
-    -0x1.333334p-71f, -0x1.1d4534p-14f, 0x1.0eca9ap-14f, 0x1.0dbd2p-12f,
+    -0x1.99999ap-72f, -0x1.1d4534p-14f, 0x1.0eca9ap-14f, 0x1.0dbd2p-12f,
     /* s = 5/8: node 33 y */
-    0x1.99999ap-71f, 0x1.7ec114p-14f, -0x1.926cf4p-15f, -0x1.dd279cp-12f,
+    -0x1.ccccccp-69f, 0x1.7ec114p-14f, -0x1.926cf4p-15f, -0x1.dd279cp-12f,
     /* s = 5/8: node 33 z */
-    -0x1.0cccccp-68f, 0x1.6148ccp-13f, -0x1.cf0534p-14f, 0x1.0952e6p-12f,
+    -0x1.1p-66f, 0x1.6148ccp-13f, -0x1.cf0534p-14f, 0x1.0952e6p-12f,
     /* s = 5/8: node 34 x */
-    0x1.3p-66f, -0x1.15b428p-13f, -0x1.9dcdbp-14f, -0x1.73fa16p-12f,
+    0x1.e66666p-67f, -0x1.15b428p-13f, -0x1.9dcdbp-14f, -0x1.73fa16p-12f,
     /* s = 5/8: node 34 y */
-    0x1.0cccccp-66f, -0x1.222cb4p-13f, -0x1.504536p-16f, -0x1.febb06p-12f,
+    0x1.8cccccp-66f, -0x1.222cb4p-13f, -0x1.504536p-16f, -0x1.febb06p-12f,
     /* s = 5/8: node 34 z */
-    -0x1.99999ap-70f, -0x1.3f30e6p-14f, -0x1.e05f16p-15f, 0x1.77e75ep-12f,
+    -0x1.ccccccp-70f, -0x1.3f30e6p-14f, -0x1.e05f16p-15f, 0x1.77e75ep-12f,
     /* s = 5/8: node 35 x */
-    0x1.8p-60f, -0x1.22cd18p-7f, -0x1.eb574ep-10f, -0x1.9629fap-4f,
+    0x1.0cccccp-59f, -0x1.22cd18p-7f, -0x1.eb574ep-10f, -0x1.9629fap-4f,
     /* s = 5/8: node 35 y */
-    0x1.266666p-60f, -0x1.1811d8p-9f, 0x1.b9039ap-10f, -0x1.bb2f46p-5f,
+    0x1.4cccccp-61f, -0x1.1811d8p-9f, 0x1.b9039ap-10f, -0x1.bb2f46p-5f,
     /* s = 5/8: node 35 z */
-    -0x1.cp-59f, 0x1.c35dd2p-6f, 0x1.b83336p-7f, 0x1.3d386ep-3f,
+    -0x1.b33334p-59f, 0x1.c35dd2p-6f, 0x1.b83336p-7f, 0x1.3d386ep-3f,
     /* s = 5/8: node 36 x */
-    0x1.b33334p-59f, -0x1.4230c6p-7f, -0x1.1a1c5cp-7f, -0x1.9f2e42p-3f,
+    0x1.4p-58f, -0x1.4230c6p-7f, -0x1.1a1c5cp-7f, -0x1.9f2e42p-3f,
     /* s = 5/8: node 36 y */
-    0x1.19999ap-60f, -0x1.1a60bap-7f, 0x1.1b3316p-6f, -0x1.c8063ep-4f,
+    0x1.e66666p-60f, -0x1.1a60bap-7f, 0x1.1b3316p-6f, -0x1.c8063ep-4f,
     /* s = 5/8: node 36 z */
-    -0x1.59999ap-57f, 0x1.64baccp-4f, 0x1.83c774p-5f, 0x1.aceb62p-2f,
+    -0x1.066666p-56f, 0x1.64baccp-4f, 0x1.83c774p-5f, 0x1.aceb62p-2f,
     /* s = 5/8: node 37 x */
-    -0x1.99999ap-61f, 0x1.be37dep-7f, -0x1.b1f0ecp-7f, -0x1.a083b8p-3f,
+    0x1.666666p-60f, 0x1.be37dep-7f, -0x1.b1f0ecp-7f, -0x1.a083b8p-3f,
     /* s = 5/8: node 37 y */
-    0x1.e66666p-58f, -0x1.ebd502p-6f, 0x1.41462p-5f, -0x1.a260dcp-3f,
+    0x1.4p-58f, -0x1.ebd502p-6f, 0x1.41462p-5f, -0x1.a260dcp-3f,
     /* s = 5/8: node 37 z */
-    -0x1.4cccccp-56f, 0x1.2349ccp-3f, 0x1.b63ef8p-4f, 0x1.937bbcp-1f,
+    -0x1.333334p-56f, 0x1.2349ccp-3f, 0x1.b63ef8p-4f, 0x1.937bbcp-1f,
     /* s = 5/8: node 38 x */
-    -0x1.506666p-57f, 0x1.28942cp-3f, 0x1.647258p-5f, -0x1.76a608p-6f,
+    -0x1.753334p-57f, 0x1.28942cp-3f, 0x1.647258p-5f, -0x1.76a608p-6f,
     /* s = 5/8: node 38 y */
-    0x1.a66666p-58f, -0x1.b69d66p-8f, 0x1.efeadep-4f, -0x1.273c18p-2f,
+    0x1.333334p-59f, -0x1.b69d66p-8f, 0x1.efeadep-4f, -0x1.273c18p-2f,
     /* s = 5/8: node 38 z */
-    -0x1.733334p-56f, 0x1.5e29fep-3f, 0x1.70ed9cp-3f, 0x1.24a3ep+0f,
+    -0x1.4cccccp-55f, 0x1.5e29fep-3f, 0x1.70ed9cp-3f, 0x1.24a3ep+0f,
     /* s = 5/8: node 39 x */
-    -0x1.49999ap-57f, 0x1.44b87p-3f, 0x1.2c47f2p-6f, 0x1.a065c4p-5f,
+    -0x1.bb3334p-57f, 0x1.44b87p-3f, 0x1.2c47f2p-6f, 0x1.a065c4p-5f,
     /* s = 5/8: node 39 y */
-    0x1.8cccccp-58f, -0x1.c05f44p-6f, 0x1.119c0ap-3f, -0x1.2fdea8p-2f,
+    0x1.4cccccp-57f, -0x1.c05f44p-6f, 0x1.119c0ap-3f, -0x1.2fdea8p-2f,
     /* s = 5/8: node 39 z */
-    -0x1.266666p-56f, 0x1.010ad2p-4f, 0x1.53ea94p-3f, 0x1.389642p+0f,
+    -0x1.cp-56f, 0x1.010ad2p-4f, 0x1.53ea94p-3f, 0x1.389642p+0f,
     /* s = 5/8: node 40 x */
-    -0x1.cp-58f, 0x1.12f658p-3f, 0x1.b0f6cp-9f, 0x1.4d2e1p-3f,
+    -0x1.f9999ap-57f, 0x1.12f658p-3f, 0x1.b0f6cp-9f, 0x1.4d2e1p-3f,
     /* s = 5/8: node 40 y */
-    0x1.0cccccp-57f, -0x1.ceb6fep-6f, 0x1.c3b122p-4f, -0x1.00a83cp-2f,
+    0x1.59999ap-58f, -0x1.ceb6fep-6f, 0x1.c3b122p-4f, -0x1.00a83cp-2f,
     /* s = 5/8: node 40 z */
-    -0x1.4cccccp-57f, -0x1.009c38p-5f, 0x1.0f3804p-3f, 0x1.0b6452p+0f,
+    -0x1.8p-57f, -0x1.009c38p-5f, 0x1.0f3804p-3f, 0x1.0b6452p+0f,
     /* s = 5/8: node 41 x */
-    -0x1.066666p-58f, 0x1.50115ep-4f, -0x1.48c386p-7f, 0x1.86922ap-3f,
+    -0x1.89999ap-57f, 0x1.50115ep-4f, -0x1.48c386p-7f, 0x1.86922ap-3f,
     /* s = 5/8: node 41 y */
-    0x1.466666p-58f, -0x1.8ed128p-6f, 0x1.e7b238p-5f, -0x1.633118p-3f,
+    0x1.19999ap-58f, -0x1.8ed128p-6f, 0x1.e7b238p-5f, -0x1.633118p-3f,
     /* s = 5/8: node 41 z */
-    0x1.333334p-60f, -0x1.0fe5f4p-4f, 0x1.3ecc9p-4f, 0x1.79d20ap-1f,
+    0x1.333334p-59f, -0x1.0fe5f4p-4f, 0x1.3ecc9p-4f, 0x1.79d20ap-1f,
     /* s = 5/8: node 42 x */
-    -0x1.f9999ap-58f, 0x1.3475b4p-5f, -0x1.974552p-10f, 0x1.720c84p-3f,
+    -0x1.59999ap-59f, 0x1.3475b4p-5f, -0x1.974552p-10f, 0x1.720c84p-3f,
     /* s = 5/8: node 42 y */
-    0x1.e66666p-59f, -0x1.199bc8p-6f, 0x1.7ea1c4p-6f, -0x1.a5b04p-4f,
+    0x1.4cccccp-59f, -0x1.199bc8p-6f, 0x1.7ea1c4p-6f, -0x1.a5b04p-4f,
     /* s = 5/8: node 42 z */
-    -0x1.19999ap-58f, -0x1.943444p-5f, 0x1.3dcbep-5f, 0x1.957362p-2f,
+    -0x1.4cccccp-58f, -0x1.943444p-5f, 0x1.3dcbep-5f, 0x1.957362p-2f,
     /* s = 5/8: node 43 x */
-    -0x1.666666p-59f, 0x1.23a4d8p-7f, -0x1.228178p-9f, 0x1.75e7fcp-4f,
+    -0x1.59999ap-59f, 0x1.23a4d8p-7f, -0x1.228178p-9f, 0x1.75e7fcp-4f,
     /* s = 5/8: node 43 y */
-    0x1.a66666p-61f, -0x1.b89478p-7f, 0x1.4cda5ap-8f, -0x1.6ff6d6p-5f,
+    0x1.0cccccp-60f, -0x1.b89478p-7f, 0x1.4cda5ap-8f, -0x1.6ff6d6p-5f,
     /* s = 5/8: node 43 z */
-    -0x1.333334p-61f, -0x1.87344cp-7f, 0x1.039c9ep-7f, 0x1.2ce50ep-3f,
+    -0x1.333334p-60f, -0x1.87344cp-7f, 0x1.039c9ep-7f, 0x1.2ce50ep-3f,
     /* s = 5/8: node 44 x */
-    -0x1.99999ap-73f, -0x1.27036ap-13f, 0x1.51f49ap-14f, 0x1.79c628p-12f,
+    0x1.333334p-70f, -0x1.27036ap-13f, 0x1.51f49ap-14f, 0x1.79c628p-12f,
     /* s = 5/8: node 44 y */
-    0x1p-68f, 0x1.4e015ap-14f, 0x1.2a4016p-18f, -0x1.c0580cp-12f,
+    0x1.99999ap-69f, 0x1.4e015ap-14f, 0x1.2a4016p-18f, -0x1.c0580cp-12f,
     /* s = 5/8: node 44 z */
-    -0x1.3cccccp-66f, 0x1.b0460ep-13f, -0x1.661b7ap-14f, 0x1.600f3ap-12f,
+    -0x1.933334p-66f, 0x1.b0460ep-13f, -0x1.661b7ap-14f, 0x1.600f3ap-12f,
     /* s = 5/8: node 45 x */
-    0x1.d9999ap-66f, -0x1.f7098ap-13f, -0x1.ad288p-15f, -0x1.342ec8p-11f,
+    0x1.cp-67f, -0x1.f7098ap-13f, -0x1.ad288p-15f, -0x1.342ec8p-11f,
     /* s = 5/8: node 45 y */
-    0x1.99999ap-68f, -0x1.4e327ep-14f, 0x1.5d5b2ep-16f, -0x1.013b06p-12f,
+    0x1.033334p-66f, -0x1.4e327ep-14f, 0x1.5d5b2ep-16f, -0x1.013b06p-12f,
     /* s = 5/8: node 45 z */
-    -0x1.333334p-69f, -0x1.01da7cp-14f, -0x1.ac062p-18f, 0x1.f200f8p-12f,
+    0x1.19999ap-68f, -0x1.01da7cp-14f, -0x1.ac062p-18f, 0x1.f200f8p-12f,
     /* s = 5/8: node 46 x */
-    0x1.4p-59f, -0x1.529f64p-6f, -0x1.5175dep-7f, -0x1.16ee06p-3f,
+    0x1.266666p-59f, -0x1.529f64p-6f, -0x1.5175dep-7f, -0x1.16ee06p-3f,
     /* s = 5/8: node 46 y */
-    0x1.b33334p-62f, 0x1.61f1d2p-10f, 0x1.4de428p-8f, -0x1.db26c2p-6f,
+    0x1.666666p-62f, 0x1.61f1d2p-10f, 0x1.4de428p-8f, -0x1.db26c2p-6f,
     /* s = 5/8: node 46 z */
-    -0x1.066666p-57f, 0x1.77c368p-5f, 0x1.00bfc8p-6f, 0x1.ba0182p-3f,
+    -0x1.a66666p-58f, 0x1.77c368p-5f, 0x1.00bfc8p-6f, 0x1.ba0182p-3f,
     /* s = 5/8: node 47 x */
-    0x1.4cccccp-58f, -0x1.1ec55cp-7f, -0x1.65ab48p-7f, -0x1.202236p-2f,
+    0x1.0cccccp-58f, -0x1.1ec55cp-7f, -0x1.65ab48p-7f, -0x1.202236p-2f,
     /* s = 5/8: node 47 y */
-    0x1.333334p-59f, -0x1.5e5a16p-8f, 0x1.21ef4p-5f, -0x1.3f754ap-4f,
+    0x1.ccccccp-61f, -0x1.5e5a16p-8f, 0x1.21ef4p-5f, -0x1.3f754ap-4f,
     /* s = 5/8: node 47 z */
-    -0x1.333334p-56f, 0x1.0753e8p-3f, 0x1.68a544p-5f, 0x1.2e4482p-1f,
+    -0x1.333334p-57f, 0x1.0753e8p-3f, 0x1.68a544p-5f, 0x1.2e4482p-1f,
     /* s = 5/8: node 48 x */
-    0x1.333334p-59f, 0x1.ecc004p-9f, -0x1.03ffe6p-6f, -0x1.59c73ap-2f,
+    0x1.666666p-58f, 0x1.ecc004p-9f, -0x1.03ffe6p-6f, -0x1.59c73ap-2f,
     /* s = 5/8: node 48 y */
-    0x1.2cccccp-58f, -0x1.4eab98p-6f, 0x1.3d3b3ep-4f, -0x1.f817c2p-4f,
+    0x1.333334p-60f, -0x1.4eab98p-6f, 0x1.3d3b3ep-4f, -0x1.f817c2p-4f,
     /* s = 5/8: node 48 z */
-    -0x1.6cccccp-55f, 0x1.e850fcp-3f, 0x1.d609a8p-4f, 0x1.1f9b64p+0f,
+    -0x1.2cccccp-55f, 0x1.e850fcp-3f, 0x1.d609a8p-4f, 0x1.1f9b64p+0f,
     /* s = 5/8: node 49 x */
-    -0x1.55999ap-56f, 0x1.99ccf6p-2f, 0x1.39ffe8p-3f, 0x1.174a9p-4f,
+    -0x1.ed999ap-56f, 0x1.99ccf6p-2f, 0x1.39ffe8p-3f, 0x1.174a9p-4f,
     /* s = 5/8: node 49 y */
-    -0x1.666666p-61f, 0x1.33c94p-4f, 0x1.11d718p-2f, -0x1.72413cp-3f,
+    -0x1.333334p-62f, 0x1.33c94p-4f, 0x1.11d718p-2f, -0x1.72413cp-3f,
     /* s = 5/8: node 49 z */
-    -0x1.8cccccp-55f, 0x1.428ab8p-2f, 0x1.6be036p-3f, 0x1.b09ec2p+0f,
+    -0x1.733334p-55f, 0x1.428ab8p-2f, 0x1.6be036p-3f, 0x1.b09ec2p+0f,
     /* s = 5/8: node 50 x */
-    -0x1.ep-56f, 0x1.652344p-2f, 0x1.2195dp-5f, 0x1.6c1aaep-4f,
+    -0x1.1f3334p-55f, 0x1.652344p-2f, 0x1.2195dp-5f, 0x1.6c1aaep-4f,
     /* s = 5/8: node 50 y */
-    0x1p-56f, -0x1.0378f8p-5f, 0x1.8943bep-2f, -0x1.9e8dcep-3f,
+    0x1.99999ap-61f, -0x1.0378f8p-5f, 0x1.8943bep-2f, -0x1.9e8dcep-3f,
     /* s = 5/8: node 50 z */
-    -0x1.333334p-56f, 0x1.60b00ep-4f, 0x1.0abf62p-3f, 0x1.bad86ap+0f,
+    -0x1.8p-56f, 0x1.60b00ep-4f, 0x1.0abf62p-3f, 0x1.bad86ap+0f,
     /* s = 5/8: node 51 x */
-    -0x1.6cccccp-57f, 0x1.17d9c8p-2f, -0x1.123f3ep-5f, 0x1.bda6ccp-3f,
+    -0x1.166666p-55f, 0x1.17d9c8p-2f, -0x1.123f3ep-5f, 0x1.bda6ccp-3f,
     /* s = 5/8: node 51 y */
-    0x1.21999ap-56f, -0x1.e628ecp-5f, 0x1.b35a98p-3f, -0x1.45a2cap-3f,
+    0x1.19999ap-57f, -0x1.e628ecp-5f, 0x1.b35a98p-3f, -0x1.45a2cap-3f,
     /* s = 5/8: node 51 z */
-    -0x1.733334p-56f, -0x1.3e1c16p-5f, 0x1.ae35aep-4f, 0x1.7a4af8p+0f,
+    -0x1.e66666p-57f, -0x1.3e1c16p-5f, 0x1.ae35aep-4f, 0x1.7a4af8p+0f,
     /* s = 5/8: node 52 x */
-    -0x1.ap-57f, 0x1.29fdfp-3f, -0x1.b84588p-9f, 0x1.09e38p-2f,
+    -0x1.266666p-56f, 0x1.29fdfp-3f, -0x1.b84588p-9f, 0x1.09e38p-2f,
     /* s = 5/8: node 52 y */
-    0x1.59999ap-58f, -0x1.359398p-6f, 0x1.756bfep-4f, -0x1.f0e94ap-4f,
+    0x1.c66666p-58f, -0x1.359398p-6f, 0x1.756bfep-4f, -0x1.f0e94ap-4f,
     /* s = 5/8: node 52 z */
-    -0x1.4cccccp-57f, -0x1.c47ce6p-4f, 0x1.05849p-4f, 0x1.052844p+0f,
+    -0x1.8p-57f, -0x1.c47ce6p-4f, 0x1.05849p-4f, 0x1.052844p+0f,
     /* s = 5/8: node 53 x */
-    -0x1.d9999ap-58f, 0x1.eb6fcap-5f, -0x1.c7c38p-10f, 0x1.f02272p-3f,
+    -0x1.a66666p-58f, 0x1.eb6fcap-5f, -0x1.c7c38p-10f, 0x1.f02272p-3f,
     /* s = 5/8: node 53 y */
-    0x1.19999ap-59f, -0x1.a312e2p-7f, 0x1.2d48f4p-5f, -0x1.fd3b2ap-5f,
+    0x1.59999ap-59f, -0x1.a312e2p-7f, 0x1.2d48f4p-5f, -0x1.fd3b2ap-5f,
     /* s = 5/8: node 53 z */
-    0x1.99999ap-60f, -0x1.287f1ap-4f, 0x1.d50a5ap-6f, 0x1.171b98p-1f,
+    -0x1p-59f, -0x1.287f1ap-4f, 0x1.d50a5ap-6f, 0x1.171b98p-1f,
     /* s = 5/8: node 54 x */
-    -0x1.733334p-59f, 0x1.8dad96p-7f, 0x1.6c487p-10f, 0x1.eac026p-4f,
+    -0x1.f33334p-59f, 0x1.8dad96p-7f, 0x1.6c487p-10f, 0x1.eac026p-4f,
     /* s = 5/8: node 54 y */
-    0x1.4p-60f, -0x1.0e534ep-7f, 0x1.b87082p-8f, -0x1.d8eb5p-6f,
+    0x1.b33334p-61f, -0x1.0e534ep-7f, 0x1.b87082p-8f, -0x1.d8eb5p-6f,
     /* s = 5/8: node 54 z */
-    -0x0p+0f, -0x1.78ffcp-6f, 0x1.00a83ap-7f, 0x1.a4cap-3f,
+    -0x1.333334p-61f, -0x1.78ffcp-6f, 0x1.00a83ap-7f, 0x1.a4cap-3f,
     /* s = 5/8: node 55 x */
-    0x1.d9999ap-67f, -0x1.e48ee2p-13f, 0x1.00a24cp-14f, 0x1.2fc374p-11f,
+    0x1.8p-67f, -0x1.e48ee2p-13f, 0x1.00a24cp-14f, 0x1.2fc374p-11f,
     /* s = 5/8: node 55 y */
-    0x1p-69f, 0x1.31ca1cp-14f, 0x1.cf42ccp-16f, -0x1.3e12d6p-12f,
+    -0x1p-68f, 0x1.31ca1cp-14f, 0x1.cf42ccp-16f, -0x1.3e12d6p-12f,
     /* s = 5/8: node 55 z */
-    -0x1.acccccp-66f, 0x1.00f4f2p-12f, -0x1.7bbb5ep-15f, 0x1.ac8866p-12f,
+    -0x1.4cccccp-66f, 0x1.00f4f2p-12f, -0x1.7bbb5ep-15f, 0x1.ac8866p-12f,
     /* s = 5/8: node 56 x */
-    0x1.333334p-66f, -0x1.0fa3d4p-12f, 0x1.1037e8p-17f, -0x1.264c24p-11f,
+    0x1.acccccp-66f, -0x1.0fa3d4p-12f, 0x1.1037e8p-17f, -0x1.264c24p-11f,
     /* s = 5/8: node 56 y */
-    -0x1.a66666p-72f, 0x1.a33802p-16f, 0x1.710b6p-14f, -0x1.2774ep-16f,
+    -0x1.133334p-70f, 0x1.a33802p-16f, 0x1.710b6p-14f, -0x1.2774ep-16f,
     /* s = 5/8: node 56 z */
-    0x1.333334p-67f, -0x1.936a12p-14f, 0x1.1088cp-15f, 0x1.0ea35cp-11f,
+    -0x1.99999ap-70f, -0x1.936a12p-14f, 0x1.1088cp-15f, 0x1.0ea35cp-11f,
     /* s = 5/8: node 57 x */
-    0x1.ccccccp-60f, -0x1.12731cp-6f, -0x1.876298p-8f, -0x1.2ac75ep-3f,
+    0x1.99999ap-59f, -0x1.12731cp-6f, -0x1.876298p-8f, -0x1.2ac75ep-3f,
     /* s = 5/8: node 57 y */
-    0x1.99999ap-67f, 0x1.4ae8cap-8f, 0x1.6b0a56p-7f, 0x1.63d3d6p-8f,
+    -0x1.d33334p-63f, 0x1.4ae8cap-8f, 0x1.6b0a56p-7f, 0x1.63d3d6p-8f,
     /* s = 5/8: node 57 z */
-    -0x1.99999ap-58f, 0x1.97ebb8p-5f, 0x1.a7f6dcp-8f, 0x1.f1f3acp-3f,
+    -0x1.4p-57f, 0x1.97ebb8p-5f, 0x1.a7f6dcp-8f, 0x1.f1f3acp-3f,
     /* s = 5/8: node 58 x */
-    0x1.ccccccp-59f, -0x1.67015ap-8f, -0x1.b05cf8p-7f, -0x1.37022cp-2f,
+    0x1p-58f, -0x1.67015ap-8f, -0x1.b05cf8p-7f, -0x1.37022cp-2f,
     /* s = 5/8: node 58 y */
-    0x1.99999ap-63f, 0x1.c00f3ep-8f, 0x1.4712e6p-5f, 0x1.c1cd7p-7f,
+    -0x1.333334p-64f, 0x1.c00f3ep-8f, 0x1.4712e6p-5f, 0x1.c1cd7p-7f,
     /* s = 5/8: node 58 z */
-    -0x1.133334p-56f, 0x1.19fa78p-3f, 0x1.8400cp-7f, 0x1.4400c6p-1f,
+    -0x1.39999ap-56f, 0x1.19fa78p-3f, 0x1.8400cp-7f, 0x1.4400c6p-1f,
     /* s = 5/8: node 59 x */
-    0x1.733334p-58f, 0x1.6dd1cep-6f, -0x1.ac3a52p-7f, -0x1.7065a2p-2f,
+    0x1.8p-59f, 0x1.6dd1cep-6f, -0x1.ac3a52p-7f, -0x1.7065a2p-2f,
     /* s = 5/8: node 59 y */
-    -0x1p-61f, 0x1.f02c84p-7f, 0x1.e0df62p-4f, 0x1.4c08f6p-6f,
+    0x1.3cccccp-60f, 0x1.f02c84p-7f, 0x1.e0df62p-4f, 0x1.4c08f6p-6f,
     /* s = 5/8: node 59 z */
-    -0x1.cp-56f, 0x1.0b31b8p-2f, 0x1.0711d2p-5f, 0x1.3eaeacp+0f,
+    -0x1.a66666p-56f, 0x1.0b31b8p-2f, 0x1.0711d2p-5f, 0x1.3eaeacp+0f,
     /* s = 5/8: node 60 x */
-    -0x1.ad999ap-57f, 0x1.671f84p-1f, 0x1.092f56p-7f, 0x1.1e2102p-5f,
+    -0x1.3cp-54f, 0x1.671f84p-1f, 0x1.092f56p-7f, 0x1.1e2102p-5f,
     /* s = 5/8: node 60 y */
-    -0x1.51999ap-59f, 0x1.70c6e6p-6f, 0x1.29c2ecp-2f, 0x1.f89702p-7f,
+    0x1.58p-58f, 0x1.70c6e6p-6f, 0x1.29c2ecp-2f, 0x1.f89702p-7f,
     /* s = 5/8: node 60 z */
-    -0x1.266666p-55f, 0x1.8048ap-2f, 0x1.408138p-5f, 0x1.e42fc8p+0f,
+    -0x1.333334p-55f, 0x1.8048ap-2f, 0x1.408138p-5f, 0x1.e42fc8p+0f,
     /* s = 5/8: node 61 x */
-    -0x1.04p-54f, 0x1.ce940ep-1f, 0x1.961448p-6f, 0x1.698756p-4f,
+    -0x1.c0999ap-54f, 0x1.ce940ep-1f, 0x1.961448p-6f, 0x1.698756p-4f,
     /* s = 5/8: node 61 y */
-    0x1.f1999ap-58f, 0x1.ce460ep-6f, 0x1.9074ep-1f, 0x1.b3de14p-6f,
+    0x1.a33334p-58f, 0x1.ce460ep-6f, 0x1.9074ep-1f, 0x1.b3de14p-6f,
     /* s = 5/8: node 61 z */
-    -0x1.266666p-55f, 0x1.5d8cfp-4f, 0x1.817536p-6f, 0x1.28216ap+1f,
+    -0x1p-55f, 0x1.5d8cfp-4f, 0x1.817536p-6f, 0x1.28216ap+1f,
     /* s = 5/8: node 62 x */
-    -0x1.6cccccp-56f, 0x1.dc0794p-2f, 0x1.0c267ep-6f, 0x1.eade3p-3f,
+    -0x1.0b3334p-54f, 0x1.dc0794p-2f, 0x1.0c267ep-6f, 0x1.eade3p-3f,
     /* s = 5/8: node 62 y */
-    -0x1.ap-62f, 0x1.0c483p-7f, 0x1.1214cep-2f, 0x1.c64efep-8f,
+    -0x1.a33334p-60f, 0x1.0c483p-7f, 0x1.1214cep-2f, 0x1.c64efep-8f,
     /* s = 5/8: node 62 z */
-    -0x1.333334p-57f, -0x1.08a134p-4f, 0x1.10e0f4p-7f, 0x1.b583c4p+0f,
+    -0x1p-57f, -0x1.08a134p-4f, 0x1.10e0f4p-7f, 0x1.b583c4p+0f,
     /* s = 5/8: node 63 x */
-    -0x1.266666p-58f, 0x1.5d76c6p-3f, 0x1.336b96p-7f, 0x1.307ef2p-2f,
+    -0x1.566666p-56f, 0x1.5d76c6p-3f, 0x1.336b96p-7f, 0x1.307ef2p-2f,
     /* s = 5/8: node 63 y */
-    0x1.0cccccp-61f, 0x1.95f84ep-8f, 0x1.d4f8c2p-4f, 0x1.79ce52p-8f,
+    0x1.a26666p-60f, 0x1.95f84ep-8f, 0x1.d4f8c2p-4f, 0x1.79ce52p-8f,
     /* s = 5/8: node 63 z */
-    -0x1.733334p-56f, -0x1.110baep-3f, 0x1.19067ep-9f, 0x1.28c974p+0f,
+    0x1.99999ap-60f, -0x1.110baep-3f, 0x1.19067ep-9f, 0x1.28c974p+0f,
     /* s = 5/8: node 64 x */
-    -0x1.266666p-58f, 0x1.35ac98p-4f, 0x1.3429b4p-8f, 0x1.072266p-2f,
+    -0x1.066666p-57f, 0x1.35ac98p-4f, 0x1.3429b4p-8f, 0x1.072266p-2f,
     /* s = 5/8: node 64 y */
-    -0x1.24ccccp-62f, 0x1.fd1296p-10f, 0x1.376002p-5f, 0x1.417e74p-9f,
+    0x1.e66666p-66f, 0x1.fd1296p-10f, 0x1.376002p-5f, 0x1.417e74p-9f,
     /* s = 5/8: node 64 z */
-    -0x1.333334p-58f, -0x1.51280ap-4f, -0x1.63651p-14f, 0x1.33a716p-1f,
+    -0x1.99999ap-59f, -0x1.51280ap-4f, -0x1.63651p-14f, 0x1.33a716p-1f,
     /* s = 5/8: node 65 x */
-    -0x1.666666p-59f, 0x1.30ce96p-7f, 0x1.80f6a4p-10f, 0x1.2226f6p-3f,
+    -0x1p-58f, 0x1.30ce96p-7f, 0x1.80f6a4p-10f, 0x1.2226f6p-3f,
     /* s = 5/8: node 65 y */
-    0x1.8p-64f, 0x1.6de3ap-10f, 0x1.4d1bcp-7f, 0x1.fae26cp-10f,
+    0x1.89999ap-63f, 0x1.6de3ap-10f, 0x1.4d1bcp-7f, 0x1.fae26cp-10f,
     /* s = 5/8: node 65 z */
-    0x1.333334p-60f, -0x1.cf4bd8p-6f, 0x1.7007aap-15f, 0x1.e0db9cp-3f,
+    -0x1.ccccccp-60f, -0x1.cf4bd8p-6f, 0x1.7007aap-15f, 0x1.e0db9cp-3f,
     /* s = 5/8: node 66 x */
-    0x1.4cccccp-68f, -0x1.103fc4p-12f, -0x1.6ce658p-16f, 0x1.17d20ep-11f,
+    0x1.99999ap-70f, -0x1.103fc4p-12f, -0x1.6ce658p-16f, 0x1.17d20ep-11f,
     /* s = 5/8: node 66 y */
-    0x1.966666p-72f, 0x1.285ea2p-18f, 0x1.462cbep-13f, -0x1.edd1b6p-20f,
+    0x1.4f999ap-69f, 0x1.285ea2p-18f, 0x1.462cbep-13f, -0x1.edd1b6p-20f,
     /* s = 5/8: node 66 z */
-    -0x1.133334p-65f, 0x1.133df4p-12f, 0x1.84bf62p-17f, 0x1.04c5d8p-11f,
+    -0x1.39999ap-66f, 0x1.133df4p-12f, 0x1.84bf62p-17f, 0x1.04c5d8p-11f,
     /* s = 5/8: node 67 x */
-    0x1.0cccccp-67f, -0x1.bf3268p-13f, 0x1.cf71bep-19f, -0x1.280dep-11f,
+    0x1.ep-66f, -0x1.bf3268p-13f, 0x1.cf71bep-19f, -0x1.280dep-11f,
     /* s = 5/8: node 67 y */
-    -0x1.4cccccp-67f, 0x1.416388p-14f, 0x1.44c0d4p-14f, 0x1.532e44p-12f,
+    -0x1.8p-67f, 0x1.416388p-14f, 0x1.44c0d4p-14f, 0x1.532e44p-12f,
     /* s = 5/8: node 67 z */
-    -0x0p+0f, -0x1.1f4f6cp-13f, 0x1.d1685cp-15f, 0x1.dea9acp-12f,
+    -0x1.19999ap-68f, -0x1.1f4f6cp-13f, 0x1.d1685cp-15f, 0x1.dea9acp-12f,
     /* s = 5/8: node 68 x */
-    0x1.cp-59f, -0x1.27c78ep-8f, -0x1.8355eap-12f, -0x1.098b9ap-3f,
+    0x1.4p-59f, -0x1.27c78ep-8f, -0x1.8355eap-12f, -0x1.098b9ap-3f,
     /* s = 5/8: node 68 y */
-    -0x1.ccccccp-61f, 0x1.e985eap-9f, 0x1.3b9332p-7f, 0x1.3c9556p-5f,
+    -0x1.4p-61f, 0x1.e985eap-9f, 0x1.3b9332p-7f, 0x1.3c9556p-5f,
     /* s = 5/8: node 68 z */
-    -0x1p-59f, 0x1.2cfc0ap-5f, -0x1.6610fap-8f, 0x1.b5d326p-3f,
+    -0x1.ccccccp-58f, 0x1.2cfc0ap-5f, -0x1.6610fap-8f, 0x1.b5d326p-3f,
     /* s = 5/8: node 69 x */
-    0x1.0cccccp-58f, 0x1.319494p-7f, -0x1.5e9b88p-7f, -0x1.006c54p-2f,
+    0x1.99999ap-60f, 0x1.319494p-7f, -0x1.5e9b88p-7f, -0x1.006c54p-2f,
     /* s = 5/8: node 69 y */
-    -0x1.2p-59f, 0x1.49369cp-7f, 0x1.42956ap-5f, 0x1.42d4f6p-4f,
+    -0x1.4cccccp-61f, 0x1.49369cp-7f, 0x1.42956ap-5f, 0x1.42d4f6p-4f,
     /* s = 5/8: node 69 z */
-    -0x1.19999ap-56f, 0x1.e30bf2p-4f, -0x1.1b92b2p-6f, 0x1.235f08p-1f,
+    -0x1.666666p-56f, 0x1.e30bf2p-4f, -0x1.1b92b2p-6f, 0x1.235f08p-1f,
     /* s = 5/8: node 70 x */
-    -0x1.19999ap-58f, 0x1.5b7342p-4f, -0x1.92d8a6p-6f, -0x1.07f43ep-2f,
+    0x1.99999ap-62f, 0x1.5b7342p-4f, -0x1.92d8a6p-6f, -0x1.07f43ep-2f,
     /* s = 5/8: node 70 y */
-    0x1.99999ap-64f, 0x1.feb17p-8f, 0x1.9f5d7cp-4f, 0x1.2d13c2p-3f,
+    0x1.99999ap-62f, 0x1.feb17p-8f, 0x1.9f5d7cp-4f, 0x1.2d13c2p-3f,
     /* s = 5/8: node 70 z */
-    -0x1.b33334p-57f, 0x1.88560cp-3f, -0x1.b14dc6p-5f, 0x1.1494d4p+0f,
+    -0x1.d9999ap-56f, 0x1.88560cp-3f, -0x1.b14dc6p-5f, 0x1.1494d4p+0f,
     /* s = 5/8: node 71 x */
-    -0x1.066666p-56f, 0x1.f6099ep-3f, -0x1.5830b8p-5f, -0x1.272884p-3f,
+    -0x1.4p-57f, 0x1.f6099ep-3f, -0x1.5830b8p-5f, -0x1.272884p-3f,
     /* s = 5/8: node 71 y */
-    0x1.666666p-59f, -0x1.35d764p-7f, 0x1.cfed84p-3f, 0x1.5f595ap-3f,
+    0x1.e66666p-60f, -0x1.35d764p-7f, 0x1.cfed84p-3f, 0x1.5f595ap-3f,
     /* s = 5/8: node 71 z */
-    -0x1.666666p-56f, 0x1.c11974p-3f, -0x1.00226ap-4f, 0x1.8de232p+0f,
+    -0x1.99999ap-56f, 0x1.c11974p-3f, -0x1.00226ap-4f, 0x1.8de232p+0f,
     /* s = 5/8: node 72 x */
-    -0x1.cd999ap-57f, 0x1.34b222p-2f, 0x1.29766p-6f, 0x1.3bfb8cp-5f,
+    -0x1.08ccccp-57f, 0x1.34b222p-2f, 0x1.29766p-6f, 0x1.3bfb8cp-5f,
     /* s = 5/8: node 72 y */
-    0x1.ccccccp-58f, 0x1.82fbdap-5f, 0x1.9469cp-2f, 0x1.c88a8cp-3f,
+    -0x1.8p-59f, 0x1.82fbdap-5f, 0x1.9469cp-2f, 0x1.c88a8cp-3f,
     /* s = 5/8: node 72 z */
-    -0x1.266666p-55f, 0x1.fe4e8cp-5f, -0x1.95859ep-4f, 0x1.b7058ep+0f,
+    -0x1.b33334p-56f, 0x1.fe4e8cp-5f, -0x1.95859ep-4f, 0x1.b7058ep+0f,
     /* s = 5/8: node 73 x */
-    -0x1.e66666p-57f, 0x1.035332p-2f, 0x1.095be4p-4f, 0x1.867942p-3f,
+    -0x1.54ccccp-56f, 0x1.035332p-2f, 0x1.095be4p-4f, 0x1.867942p-3f,
     /* s = 5/8: node 73 y */
-    -0x1.533334p-58f, 0x1.3969a6p-4f, 0x1.b24438p-3f, 0x1.576156p-3f,
+    -0x1.acccccp-58f, 0x1.3969a6p-4f, 0x1.b24438p-3f, 0x1.576156p-3f,
     /* s = 5/8: node 73 z */
-    -0x1.a66666p-56f, -0x1.a431d2p-5f, -0x1.55e93p-4f, 0x1.767b78p+0f,
+    -0x1.e66666p-57f, -0x1.a431d2p-5f, -0x1.55e93p-4f, 0x1.767b78p+0f,
     /* s = 5/8: node 74 x */
-    -0x1.f9999ap-57f, 0x1.211fcap-3f, 0x1.3faf4p-6f, 0x1.03624ep-2f,
+    -0x1.333334p-58f, 0x1.211fcap-3f, 0x1.3faf4p-6f, 0x1.03624ep-2f,
     /* s = 5/8: node 74 y */
-    -0x1.d9999ap-59f, 0x1.8fd2f6p-6f, 0x1.89c86ep-4f, 0x1.0811f8p-3f,
+    -0x1.ccccccp-59f, 0x1.8fd2f6p-6f, 0x1.89c86ep-4f, 0x1.0811f8p-3f,
     /* s = 5/8: node 74 z */
-    -0x1.666666p-57f, -0x1.c5ffd8p-4f, -0x1.017d0cp-4f, 0x1.060e5ap+0f,
+    -0x1p-57f, -0x1.c5ffd8p-4f, -0x1.017d0cp-4f, 0x1.060e5ap+0f,
     /* s = 5/8: node 75 x */
-    -0x1.ccccccp-58f, 0x1.cd9da2p-5f, 0x1.647deep-7f, 0x1.e4d7fcp-3f,
+    -0x1.59999ap-58f, 0x1.cd9da2p-5f, 0x1.647deep-7f, 0x1.e4d7fcp-3f,
     /* s = 5/8: node 75 y */
-    -0x1.59999ap-60f, 0x1.26fefap-6f, 0x1.339096p-5f, 0x1.1180dap-4f,
+    -0x1.f33334p-60f, 0x1.26fefap-6f, 0x1.339096p-5f, 0x1.1180dap-4f,
     /* s = 5/8: node 75 z */
-    -0x1.333334p-59f, -0x1.30fe5cp-4f, -0x1.bc9e06p-6f, 0x1.15fc42p-1f,
+    0x1.99999ap-61f, -0x1.30fe5cp-4f, -0x1.bc9e06p-6f, 0x1.15fc42p-1f,
     /* s = 5/8: node 76 x */
-    -0x1.2cccccp-58f, 0x1.99e654p-7f, 0x1.eb4aeep-13f, 0x1.ed6bbap-4f,
+    -0x1.99999ap-60f, 0x1.99e654p-7f, 0x1.eb4aeep-13f, 0x1.ed6bbap-4f,
     /* s = 5/8: node 76 y */
-    -0x1.d9999ap-60f, 0x1.3eb72cp-7f, 0x1.0921eep-7f, 0x1.030148p-5f,
+    -0x1.2cccccp-60f, 0x1.3eb72cp-7f, 0x1.0921eep-7f, 0x1.030148p-5f,
     /* s = 5/8: node 76 z */
-    -0x1.99999ap-61f, -0x1.6b7faap-6f, -0x1.0d5962p-7f, 0x1.a7c21cp-3f,
+    -0x1.8p-59f, -0x1.6b7faap-6f, -0x1.0d5962p-7f, 0x1.a7c21cp-3f,
     /* s = 5/8: node 77 x */
-    0x1.ccccccp-68f, -0x1.c4902cp-13f, -0x1.a1c98ap-15f, 0x1.329882p-11f,
+    0x1.99999ap-70f, -0x1.c4902cp-13f, -0x1.a1c98ap-15f, 0x1.329882p-11f,
     /* s = 5/8: node 77 y */
-    0x1p-69f, -0x1.50978ap-14f, 0x1.4b5a8p-15f, 0x1.46314cp-12f,
+    0x1.b33334p-68f, -0x1.50978ap-14f, 0x1.4b5a8p-15f, 0x1.46314cp-12f,
     /* s = 5/8: node 77 z */
-    -0x1.59999ap-66f, 0x1.09a11p-12f, 0x1.1b3c5cp-14f, 0x1.b4ebc8p-12f,
+    -0x1.133334p-66f, 0x1.09a11p-12f, 0x1.1b3c5cp-14f, 0x1.b4ebc8p-12f,
     /* s = 5/8: node 78 x */
-    0x1.d9999ap-67f, -0x1.39a50ap-13f, 0x1.cefc6ap-14f, -0x1.c8cd6p-12f,
+    0x1.333334p-66f, -0x1.39a50ap-13f, 0x1.cefc6ap-14f, -0x1.c8cd6p-12f,
     /* s = 5/8: node 78 y */
-    -0x1.d9999ap-67f, 0x1.def9e8p-14f, -0x1.6366bcp-18f, 0x1.cea0b4p-12f,
+    -0x1.e66666p-67f, 0x1.def9e8p-14f, -0x1.6366bcp-18f, 0x1.cea0b4p-12f,
     /* s = 5/8: node 78 z */
-    0x1.266666p-68f, -0x1.d62fa6p-14f, 0x1.c1e482p-14f, 0x1.598046p-12f,
+    0x1.4cccccp-67f, -0x1.d62fa6p-14f, 0x1.c1e482p-14f, 0x1.598046p-12f,
     /* s = 5/8: node 79 x */
-    0x1.19999ap-61f, -0x1.2eb968p-11f, -0x1.0266cp-8f, -0x1.7287a2p-4f,
+    0x1.8p-60f, -0x1.2eb968p-11f, -0x1.0266cp-8f, -0x1.7287a2p-4f,
     /* s = 5/8: node 79 y */
-    -0x1.99999ap-61f, -0x1.afab76p-10f, 0x1.c691f2p-8f, 0x1.a50d32p-5f,
+    -0x1.333334p-62f, -0x1.afab76p-10f, 0x1.c691f2p-8f, 0x1.a50d32p-5f,
     /* s = 5/8: node 79 z */
-    -0x1.19999ap-58f, 0x1.6156fcp-6f, -0x1.b69548p-8f, 0x1.37fa26p-3f,
+    -0x1.333334p-58f, 0x1.6156fcp-6f, -0x1.b69548p-8f, 0x1.37fa26p-3f,
     /* s = 5/8: node 80 x */
-    0x1.e66666p-60f, 0x1.def24ep-7f, -0x1.38fee2p-7f, -0x1.6faa0ap-3f,
+    -0x1.333334p-62f, 0x1.def24ep-7f, -0x1.38fee2p-7f, -0x1.6faa0ap-3f,
     /* s = 5/8: node 80 y */
-    -0x1.4cccccp-60f, 0x1.84598ep-11f, 0x1.de9242p-6f, 0x1.c5fe5ep-4f,
+    -0x1.99999ap-60f, 0x1.84598ep-11f, 0x1.de9242p-6f, 0x1.c5fe5ep-4f,
     /* s = 5/8: node 80 z */
-    -0x1.8p-58f, 0x1.2c5a7cp-4f, -0x1.1c105ep-5f, 0x1.a4f03ap-2f,
+    -0x1.b33334p-57f, 0x1.2c5a7cp-4f, -0x1.1c105ep-5f, 0x1.a4f03ap-2f,
     /* s = 5/8: node 81 x */
-    0x1.ccccccp-61f, 0x1.ca0144p-5f, -0x1.ff8ebp-7f, -0x1.62899ep-3f,
+    -0x1.4cccccp-60f, 0x1.ca0144p-5f, -0x1.ff8ebp-7f, -0x1.62899ep-3f,
     /* s = 5/8: node 81 y */
-    -0x1.4cccccp-60f, -0x1.15611p-10f, 0x1.097ff2p-4f, 0x1.7a81f8p-3f,
+    0x1.19999ap-60f, -0x1.15611p-10f, 0x1.097ff2p-4f, 0x1.7a81f8p-3f,
     /* s = 5/8: node 81 z */
-    -0x1.b33334p-56f, 0x1.dbf02p-4f, -0x1.13a926p-4f, 0x1.88406ap-1f,
+    -0x1.8cccccp-56f, 0x1.dbf02p-4f, -0x1.13a926p-4f, 0x1.88406ap-1f,
     /* s = 5/8: node 82 x */
-    -0x1.b9999ap-58f, 0x1.a5311p-4f, -0x1.e07232p-7f, -0x1.c3176ep-4f,
+    -0x1.6p-58f, 0x1.a5311p-4f, -0x1.e07232p-7f, -0x1.c3176ep-4f,
     /* s = 5/8: node 82 y */
-    0x1p-60f, 0x1.52b0dap-7f, 0x1.f881bep-4f, 0x1.03b178p-2f,
+    -0x1.333334p-59f, 0x1.52b0dap-7f, 0x1.f881bep-4f, 0x1.03b178p-2f,
     /* s = 5/8: node 82 z */
-    -0x1.cp-56f, 0x1.b621e2p-4f, -0x1.c5ac34p-4f, 0x1.0f4944p+0f,
+    -0x1.266666p-56f, 0x1.b621e2p-4f, -0x1.c5ac34p-4f, 0x1.0f4944p+0f,
     /* s = 5/8: node 83 x */
-    -0x1.a0ccccp-58f, 0x1.1f66p-3f, 0x1.24fb02p-8f, 0x1.d89fdcp-7f,
+    -0x1.a86666p-57f, 0x1.1f66p-3f, 0x1.24fb02p-8f, 0x1.d89fdcp-7f,
     /* s = 5/8: node 83 y */
-    -0x1.99999ap-58f, 0x1.7923b2p-6f, 0x1.2c56dp-3f, 0x1.210846p-2f,
+    -0x1.333334p-58f, 0x1.7923b2p-6f, 0x1.2c56dp-3f, 0x1.210846p-2f,
     /* s = 5/8: node 83 z */
-    -0x1.666666p-57f, 0x1.3fe35ep-5f, -0x1.16b1dap-3f, 0x1.311844p+0f,
+    -0x1.8p-56f, 0x1.3fe35ep-5f, -0x1.16b1dap-3f, 0x1.311844p+0f,
     /* s = 5/8: node 84 x */
-    -0x1.266666p-57f, 0x1.d65a26p-4f, 0x1.3503ep-6f, 0x1.179c2ep-3f,
+    -0x1.59999ap-59f, 0x1.d65a26p-4f, 0x1.3503ep-6f, 0x1.179c2ep-3f,
     /* s = 5/8: node 84 y */
-    -0x1.99999ap-59f, 0x1.f08614p-6f, 0x1.e4e88cp-4f, 0x1.ffc6d8p-3f,
+    -0x1.19999ap-58f, 0x1.f08614p-6f, 0x1.e4e88cp-4f, 0x1.ffc6d8p-3f,
     /* s = 5/8: node 84 z */
-    -0x1.19999ap-57f, -0x1.8124ep-5f, -0x1.d965d6p-4f, 0x1.08a916p+0f,
+    -0x1.e66666p-57f, -0x1.8124ep-5f, -0x1.d965d6p-4f, 0x1.08a916p+0f,
     /* s = 5/8: node 85 x */
-    -0x1.6p-58f, 0x1.3d8ec6p-4f, 0x1.4c42fep-6f, 0x1.723368p-3f,
+    -0x1.866666p-58f, 0x1.3d8ec6p-4f, 0x1.4c42fep-6f, 0x1.723368p-3f,
     /* s = 5/8: node 85 y */
-    -0x1.19999ap-59f, 0x1.c5d63p-6f, 0x1.030c32p-4f, 0x1.6785b6p-3f,
+    -0x1.866666p-58f, 0x1.c5d63p-6f, 0x1.030c32p-4f, 0x1.6785b6p-3f,
     /* s = 5/8: node 85 z */
-    -0x1.a66666p-57f, -0x1.15b652p-4f, -0x1.3697fap-4f, 0x1.79b426p-1f,
+    -0x1.4cccccp-58f, -0x1.15b652p-4f, -0x1.3697fap-4f, 0x1.79b426p-1f,
     /* s = 5/8: node 86 x */
-    -0x1.2p-58f, 0x1.0d575ep-5f, 0x1.1a9a5p-7f, 0x1.65b0c4p-3f,
+    -0x1.133334p-58f, 0x1.0d575ep-5f, 0x1.1a9a5p-7f, 0x1.65b0c4p-3f,
     /* s = 5/8: node 86 y */
-    -0x1.666666p-61f, 0x1.3522b4p-6f, 0x1.b56cd2p-6f, 0x1.ae1574p-4f,
+    -0x1.666666p-60f, 0x1.3522b4p-6f, 0x1.b56cd2p-6f, 0x1.ae1574p-4f,
     /* s = 5/8: node 86 z */
-    0x1.333334p-60f, -0x1.a6c634p-5f, -0x1.342b94p-5f, 0x1.9544b2p-2f,
+    0x1.333334p-59f, -0x1.a6c634p-5f, -0x1.342b94p-5f, 0x1.9544b2p-2f,
     /* s = 5/8: node 87 x */
-    -0x1.666666p-60f, 0x1.392cfap-7f, 0x1.c361e4p-9f, 0x1.72e71ep-4f,
+    -0x1.e66666p-60f, 0x1.392cfap-7f, 0x1.c361e4p-9f, 0x1.72e71ep-4f,
     /* s = 5/8: node 87 y */
-    -0x1.233334p-59f, 0x1.e1705cp-7f, 0x1.b55806p-8f, 0x1.7e9f94p-5f,
+    -0x1.ccccccp-60f, 0x1.e1705cp-7f, 0x1.b55806p-8f, 0x1.7e9f94p-5f,
     /* s = 5/8: node 87 z */
-    0x1.99999ap-62f, -0x1.6d5bd8p-7f, -0x1.09d974p-7f, 0x1.2e599cp-3f,
+    -0x1.ccccccp-61f, -0x1.6d5bd8p-7f, -0x1.09d974p-7f, 0x1.2e599cp-3f,
     /* s = 5/8: node 88 x */
-    0x1.99999ap-70f, -0x1.318306p-13f, -0x1.a19734p-14f, 0x1.91d0f6p-12f,
+    0x1.ccccccp-67f, -0x1.318306p-13f, -0x1.a19734p-14f, 0x1.91d0f6p-12f,
     /* s = 5/8: node 88 y */
-    -0x1.666666p-69f, -0x1.57a56cp-14f, -0x1.df62dap-19f, 0x1.b95604p-12f,
+    0x1.99999ap-71f, -0x1.57a56cp-14f, -0x1.df62dap-19f, 0x1.b95604p-12f,
     /* s = 5/8: node 88 z */
-    -0x1.433334p-66f, 0x1.aea19ep-13f, 0x1.9e87b2p-14f, 0x1.5387e8p-12f,
+    -0x1.1p-66f, 0x1.aea19ep-13f, 0x1.9e87b2p-14f, 0x1.5387e8p-12f,
     /* s = 5/8: node 89 x */
-    0x1.a66666p-67f, -0x1.45e064p-14f, 0x1.d78e64p-15f, -0x1.0b1a7cp-12f,
+    0x1.2cccccp-67f, -0x1.45e064p-14f, 0x1.d78e64p-15f, -0x1.0b1a7cp-12f,
     /* s = 5/8: node 89 y */
-    -0x1.39999ap-66f, 0x1.dfb19ap-14f, -0x1.2aa3aap-15f, 0x1.f0c11cp-12f,
+    -0x1.333334p-66f, 0x1.dfb19ap-14f, -0x1.2aa3aap-15f, 0x1.f0c11cp-12f,
     /* s = 5/8: node 89 z */
-    -0x1.99999ap-70f, -0x1.cdcdeap-14f, 0x1.f7a03p-14f, 0x1.ffba92p-13f,
+    0x1.066666p-67f, -0x1.cdcdeap-14f, 0x1.f7a03p-14f, 0x1.ffba92p-13f,
     /* s = 5/8: node 90 x */
-    0x1.ccccccp-61f, 0x1.f8ce46p-11f, -0x1.eda5a8p-9f, -0x1.bbf19cp-5f,
+    0x1p-62f, 0x1.f8ce46p-11f, -0x1.eda5a8p-9f, -0x1.bbf19cp-5f,
     /* s = 5/8: node 90 y */
-    -0x1.99999ap-63f, -0x1.a21e5cp-9f, 0x1.e0422ep-9f, 0x1.8bf6c8p-5f,
+    0x1.99999ap-62f, -0x1.a21e5cp-9f, 0x1.e0422ep-9f, 0x1.8bf6c8p-5f,
     /* s = 5/8: node 90 z */
     -0x1.8p-60f, 0x1.a9a378p-8f, -0x1.5aa5fap-9f, 0x1.347f8cp-4f,
     /* s = 5/8: node 91 x */
-    0x1p-60f, 0x1.c44d3cp-8f, -0x1.2d8212p-7f, -0x1.9bdc9p-4f,
+    0x1.b33334p-60f, 0x1.c44d3cp-8f, -0x1.2d8212p-7f, -0x1.9bdc9p-4f,
     /* s = 5/8: node 91 y */
-    -0x1.333334p-60f, -0x1.4b8a5cp-10f, 0x1.71baf8p-7f, 0x1.b490dp-4f,
+    -0x1.666666p-61f, -0x1.4b8a5cp-10f, 0x1.71baf8p-7f, 0x1.b490dp-4f,
     /* s = 5/8: node 91 z */
-    -0x1.666666p-58f, 0x1.1f1e1p-5f, -0x1.7d4bd2p-6f, 0x1.bb50acp-3f,
+    -0x1.0cccccp-58f, 0x1.1f1e1p-5f, -0x1.7d4bd2p-6f, 0x1.bb50acp-3f,
     /* s = 5/8: node 92 x */
-    -0x1.ccccccp-61f, 0x1.7ddp-6f, -0x1.b93f32p-7f, -0x1.9cde06p-4f,
+    -0x1.19999ap-60f, 0x1.7ddp-6f, -0x1.b93f32p-7f, -0x1.9cde06p-4f,
     /* s = 5/8: node 92 y */
-    -0x1.59999ap-59f, 0x1.1a7f9ap-8f, 0x1.b84f9cp-6f, 0x1.6ba2ep-3f,
+    -0x1.8p-59f, 0x1.1a7f9ap-8f, 0x1.b84f9cp-6f, 0x1.6ba2ep-3f,
     /* s = 5/8: node 92 z */
-    -0x1.19999ap-57f, 0x1.c6951cp-5f, -0x1.a13fe4p-5f, 0x1.a58756p-2f,
+    -0x1.333334p-57f, 0x1.c6951cp-5f, -0x1.a13fe4p-5f, 0x1.a58756p-2f,
     /* s = 5/8: node 93 x */
-    -0x1.466666p-59f, 0x1.1ccaaap-5f, -0x1.528904p-7f, -0x1.0011ecp-4f,
+    -0x1.4p-60f, 0x1.1ccaaap-5f, -0x1.528904p-7f, -0x1.0011ecp-4f,
     /* s = 5/8: node 93 y */
-    -0x1.59999ap-58f, 0x1.a3c3a6p-9f, 0x1.67a2fcp-5f, 0x1.dcda7ap-3f,
+    -0x1.666666p-59f, 0x1.a3c3a6p-9f, 0x1.67a2fcp-5f, 0x1.dcda7ap-3f,
     /* s = 5/8: node 93 z */
-    -0x1.ccccccp-59f, 0x1.989358p-5f, -0x1.2ed9dcp-4f, 0x1.1e7c8p-1f,
+    -0x1.733334p-57f, 0x1.989358p-5f, -0x1.2ed9dcp-4f, 0x1.1e7c8p-1f,
     /* s = 5/8: node 94 x */
-    -0x1.116666p-58f, 0x1.45dc08p-5f, 0x1.7936d4p-9f, 0x1.801a18p-8f,
+    -0x1.526666p-59f, 0x1.45dc08p-5f, 0x1.7936d4p-9f, 0x1.801a18p-8f,
     /* s = 5/8: node 94 y */
-    -0x1.8p-59f, 0x1.0251aap-6f, 0x1.e37288p-5f, 0x1.04759ep-2f,
+    -0x1.666666p-60f, 0x1.0251aap-6f, 0x1.e37288p-5f, 0x1.04759ep-2f,
     /* s = 5/8: node 94 z */
-    -0x1.8cccccp-56f, 0x1.101948p-6f, -0x1.5b7b1ep-4f, 0x1.388f78p-1f,
+    -0x1.666666p-57f, 0x1.101948p-6f, -0x1.5b7b1ep-4f, 0x1.388f78p-1f,
     /* s = 5/8: node 95 x */
-    -0x1.466666p-58f, 0x1.7a71dp-5f, 0x1.d4b348p-7f, 0x1.17ebcep-4f,
+    -0x1.cp-59f, 0x1.7a71dp-5f, 0x1.d4b348p-7f, 0x1.17ebcep-4f,
     /* s = 5/8: node 95 y */
-    -0x1.666666p-60f, 0x1.3fe4fcp-6f, 0x1.602e74p-5f, 0x1.d909d6p-3f,
+    -0x1.8p-58f, 0x1.3fe4fcp-6f, 0x1.602e74p-5f, 0x1.d909d6p-3f,
     /* s = 5/8: node 95 z */
-    -0x1.333334p-60f, -0x1.0885acp-6f, -0x1.3ceb18p-4f, 0x1.19bcf2p-1f,
+    -0x1.666666p-58f, -0x1.0885acp-6f, -0x1.3ceb18p-4f, 0x1.19bcf2p-1f,
     /* s = 5/8: node 96 x */
-    -0x1.266666p-58f, 0x1.0f0fccp-5f, 0x1.c58fdp-7f, 0x1.ad5014p-4f,
+    -0x1.ccccccp-59f, 0x1.0f0fccp-5f, 0x1.c58fdp-7f, 0x1.ad5014p-4f,
     /* s = 5/8: node 96 y */
-    -0x1.8p-59f, 0x1.d99a1ep-7f, 0x1.9e7cc4p-6f, 0x1.669e6cp-3f,
+    -0x1.2cccccp-58f, 0x1.d99a1ep-7f, 0x1.9e7cc4p-6f, 0x1.669e6cp-3f,
     /* s = 5/8: node 96 z */
-    -0x1.333334p-58f, -0x1.1ac0bap-5f, -0x1.ae63bp-5f, 0x1.979ed2p-2f,
+    0x1.99999ap-62f, -0x1.1ac0bap-5f, -0x1.ae63bp-5f, 0x1.979ed2p-2f,
     /* s = 5/8: node 97 x */
-    -0x1.666666p-60f, 0x1.f8df64p-7f, 0x1.48e56ap-7f, 0x1.a351a6p-4f,
+    -0x1.4cccccp-59f, 0x1.f8df64p-7f, 0x1.48e56ap-7f, 0x1.a351a6p-4f,
     /* s = 5/8: node 97 y */
-    -0x1.ccccccp-60f, 0x1.d17aecp-7f, 0x1.74ebd2p-7f, 0x1.a27f84p-4f,
+    -0x1.8cccccp-59f, 0x1.d17aecp-7f, 0x1.74ebd2p-7f, 0x1.a27f84p-4f,
     /* s = 5/8: node 97 z */
-    -0x1.99999ap-63f, -0x1.86b59ap-6f, -0x1.9b4078p-6f, 0x1.ab4becp-3f,
+    0x1.666666p-60f, -0x1.86b59ap-6f, -0x1.9b4078p-6f, 0x1.ab4becp-3f,
     /* s = 5/8: node 98 x */
-    -0x1.666666p-61f, 0x1.39dc52p-8f, 0x1.fe6514p-9f, 0x1.acedeep-5f,
+    -0x1.8cccccp-60f, 0x1.39dc52p-8f, 0x1.fe6514p-9f, 0x1.acedeep-5f,
     /* s = 5/8: node 98 y */
-    -0x1.b33334p-61f, 0x1.782fcep-7f, 0x1.ad98ep-9f, 0x1.78153cp-5f,
+    -0x1.266666p-59f, 0x1.782fcep-7f, 0x1.ad98ep-9f, 0x1.78153cp-5f,
     /* s = 5/8: node 98 z */
-    -0x1.4cccccp-60f, -0x1.055dfcp-9f, -0x1.58a6acp-9f, 0x1.2cb0bcp-4f,
+    -0x1.19999ap-60f, -0x1.055dfcp-9f, -0x1.58a6acp-9f, 0x1.2cb0bcp-4f,
     /* s = 5/8: node 99 x */
-    0x1.ccccccp-70f, -0x1.eef10cp-15f, -0x1.17d246p-14f, 0x1.085d28p-12f,
+    -0x1.99999ap-69f, -0x1.eef10cp-15f, -0x1.17d246p-14f, 0x1.085d28p-12f,
     /* s = 5/8: node 99 y */
-    -0x1.99999ap-71f, -0x1.69524ep-14f, -0x1.94de6ep-15f, 0x1.defbf6p-12f,
+    -0x1.b33334p-68f, -0x1.69524ep-14f, -0x1.94de6ep-15f, 0x1.defbf6p-12f,
     /* s = 5/8: node 99 z */
-    -0x1.ccccccp-70f, 0x1.5cfceep-13f, 0x1.12d132p-13f, 0x1.020c14p-12f,
+    -0x1.b9999ap-67f, 0x1.5cfceep-13f, 0x1.12d132p-13f, 0x1.020c14p-12f,
     /* s = 5/8: node 100 x */
-    0x1.99999ap-68f, -0x1.24370cp-15f, 0x1.b54182p-15f, -0x1.a86e06p-14f,
+    0x1.79999ap-68f, -0x1.24370cp-15f, 0x1.b54182p-15f, -0x1.a86e06p-14f,
     /* s = 5/8: node 100 y */
-    -0x1.19999ap-68f, 0x1.0d0fc4p-15f, -0x1.4e3966p-16f, 0x1.9b0d6p-13f,
+    -0x1.2cccccp-67f, 0x1.0d0fc4p-15f, -0x1.4e3966p-16f, 0x1.9b0d6p-13f,
     /* s = 5/8: node 100 z */
-    0x1.733334p-69f, -0x1.593a9ap-14f, 0x1.8d4a16p-14f, 0x1.652926p-13f,
+    0x1.59999ap-68f, -0x1.593a9ap-14f, 0x1.8d4a16p-14f, 0x1.652926p-13f,
     /* s = 5/8: node 101 x */
-    0x1.4cccccp-63f, 0x1.d983ap-10f, -0x1.442544p-8f, -0x1.5db802p-6f,
+    0x1.99999ap-62f, 0x1.d983ap-10f, -0x1.442544p-8f, -0x1.5db802p-6f,
     /* s = 5/8: node 101 y */
-    -0x1.e66666p-63f, -0x1.958bccp-9f, 0x1.429dd4p-9f, 0x1.74cd44p-6f,
+    -0x1.99999ap-64f, -0x1.958bccp-9f, 0x1.429dd4p-9f, 0x1.74cd44p-6f,
     /* s = 5/8: node 101 z */
-    0x1.19999ap-62f, -0x1.104e24p-8f, 0x1.5874cap-8f, 0x1.76eb42p-6f,
+    0x1.99999ap-64f, -0x1.104e24p-8f, 0x1.5874cap-8f, 0x1.76eb42p-6f,
     /* s = 5/8: node 102 x */
-    0x1.333334p-62f, 0x1.b41a6ap-10f, -0x1.27a362p-7f, -0x1.6cf1aep-5f,
+    0x1.ccccccp-63f, 0x1.b41a6ap-10f, -0x1.27a362p-7f, -0x1.6cf1aep-5f,
     /* s = 5/8: node 102 y */
-    -0x1.e66666p-61f, -0x1.199dd8p-13f, 0x1.e0cb62p-9f, 0x1.b81482p-5f,
+    -0x1.666666p-61f, -0x1.199dd8p-13f, 0x1.e0cb62p-9f, 0x1.b81482p-5f,
     /* s = 5/8: node 102 z */
-    -0x1.8cccccp-60f, 0x1.7b3526p-8f, -0x1.8b853ap-9f, 0x1.349cep-4f,
+    -0x1.ccccccp-60f, 0x1.7b3526p-8f, -0x1.8b853ap-9f, 0x1.349cep-4f,
     /* s = 5/8: node 103 x */
-    -0x1.a66666p-61f, 0x1.53d4bep-8f, -0x1.5dfeb4p-7f, -0x1.67f66cp-5f,
+    -0x0p+0f, 0x1.53d4bep-8f, -0x1.5dfeb4p-7f, -0x1.67f66cp-5f,
     /* s = 5/8: node 103 y */
-    -0x1.666666p-62f, 0x1.8f08bcp-11f, 0x1.b0fb9ep-8f, 0x1.77d762p-4f,
+    -0x1.19999ap-60f, 0x1.8f08bcp-11f, 0x1.b0fb9ep-8f, 0x1.77d762p-4f,
     /* s = 5/8: node 103 z */
-    -0x1.8p-60f, 0x1.c3263cp-7f, -0x1.901eb2p-7f, 0x1.378fb4p-3f,
+    -0x1.8p-59f, 0x1.c3263cp-7f, -0x1.901eb2p-7f, 0x1.378fb4p-3f,
     /* s = 5/8: node 104 x */
-    -0x1.4cccccp-61f, 0x1.0aaa04p-7f, -0x1.bf62dp-8f, -0x1.c1dd02p-6f,
+    -0x1.333334p-62f, 0x1.0aaa04p-7f, -0x1.bf62dp-8f, -0x1.c1dd02p-6f,
     /* s = 5/8: node 104 y */
-    -0x1.333334p-60f, 0x1.af268cp-8f, 0x1.3004f4p-7f, 0x1.f86c2ep-4f,
+    -0x1.4p-59f, 0x1.af268cp-8f, 0x1.3004f4p-7f, 0x1.f86c2ep-4f,
     /* s = 5/8: node 104 z */
-    -0x1.99999ap-60f, 0x1.de2ba6p-7f, -0x1.758f5p-6f, 0x1.b6c7ep-3f,
+    -0x1.666666p-59f, 0x1.de2ba6p-7f, -0x1.758f5p-6f, 0x1.b6c7ep-3f,
     /* s = 5/8: node 105 x */
-    -0x1.3ap-60f, 0x1.90e822p-7f, 0x1.5cc32cp-12f, 0x1.a3c336p-10f,
+    -0x1.f4p-61f, 0x1.90e822p-7f, 0x1.5cc32cp-12f, 0x1.a3c336p-10f,
     /* s = 5/8: node 105 y */
-    -0x1.266666p-59f, 0x1.0fe758p-8f, 0x1.a14596p-8f, 0x1.21ef74p-3f,
+    -0x1p-59f, 0x1.0fe758p-8f, 0x1.a14596p-8f, 0x1.21ef74p-3f,
     /* s = 5/8: node 105 z */
-    -0x1.266666p-58f, 0x1.7759b4p-8f, -0x1.ccd312p-6f, 0x1.ef8bf6p-3f,
+    -0x1.19999ap-59f, 0x1.7759b4p-8f, -0x1.ccd312p-6f, 0x1.ef8bf6p-3f,
     /* s = 5/8: node 106 x */
-    -0x1.39999ap-60f, 0x1.3971dp-7f, 0x1.e77ddap-8f, 0x1.fc724ep-6f,
+    -0x1.8cccccp-60f, 0x1.3971dp-7f, 0x1.e77ddap-8f, 0x1.fc724ep-6f,
     /* s = 5/8: node 106 y */
-    -0x1.d9999ap-59f, 0x1.b9201cp-9f, 0x1.455448p-7f, 0x1.f7652ap-4f,
+    -0x1.99999ap-60f, 0x1.b9201cp-9f, 0x1.455448p-7f, 0x1.f7652ap-4f,
     /* s = 5/8: node 106 z */
-    -0x1.ccccccp-59f, -0x1.4d7328p-8f, -0x1.70faf8p-6f, 0x1.af3a2ep-3f,
+    -0x1.99999ap-62f, -0x1.4d7328p-8f, -0x1.70faf8p-6f, 0x1.af3a2ep-3f,
     /* s = 5/8: node 107 x */
-    -0x1.6p-60f, 0x1.1bd276p-7f, 0x1.7bdbe2p-7f, 0x1.75d7cp-5f,
+    -0x1.4cccccp-60f, 0x1.1bd276p-7f, 0x1.7bdbe2p-7f, 0x1.75d7cp-5f,
     /* s = 5/8: node 107 y */
-    -0x1.8p-60f, 0x1.a1dda2p-8f, 0x1.9c8d3cp-8f, 0x1.6eb034p-4f,
+    -0x1.0cccccp-59f, 0x1.a1dda2p-8f, 0x1.9c8d3cp-8f, 0x1.6eb034p-4f,
     /* s = 5/8: node 107 z */
-    -0x1.8cccccp-59f, -0x1.81ba98p-8f, -0x1.9e0bb8p-7f, 0x1.304076p-3f,
+    -0x1.b33334p-60f, -0x1.81ba98p-8f, -0x1.9e0bb8p-7f, 0x1.304076p-3f,
     /* s = 5/8: node 108 x */
-    -0x1.b33334p-62f, 0x1.2e9e6cp-8f, 0x1.27debcp-7f, 0x1.6f39b4p-5f,
+    -0x1.4p-60f, 0x1.2e9e6cp-8f, 0x1.27debcp-7f, 0x1.6f39b4p-5f,
     /* s = 5/8: node 108 y */
-    -0x1.333334p-61f, 0x1.73657ep-8f, 0x1.ad36p-9f, 0x1.b55558p-5f,
+    -0x1.4cccccp-61f, 0x1.73657ep-8f, 0x1.ad36p-9f, 0x1.b55558p-5f,
     /* s = 5/8: node 108 z */
-    -0x1.4p-60f, -0x1.a28874p-10f, -0x1.869864p-9f, 0x1.2df032p-4f,
+    -0x1.19999ap-60f, -0x1.a28874p-10f, -0x1.869864p-9f, 0x1.2df032p-4f,
     /* s = 5/8: node 109 x */
-    -0x1.d9999ap-62f, 0x1.df7bf6p-9f, 0x1.52832p-8f, 0x1.65de0cp-6f,
+    -0x1.59999ap-62f, 0x1.df7bf6p-9f, 0x1.52832p-8f, 0x1.65de0cp-6f,
     /* s = 5/8: node 109 y */
-    -0x1.933334p-61f, 0x1.acaf02p-8f, 0x1.69c9e2p-9f, 0x1.6aefe6p-6f,
+    -0x1.19999ap-60f, 0x1.acaf02p-8f, 0x1.69c9e2p-9f, 0x1.6aefe6p-6f,
     /* s = 5/8: node 109 z */
-    -0x1.d9999ap-62f, 0x1.c12e84p-8f, 0x1.6d3ebp-8f, 0x1.78cep-6f,
+    -0x1.59999ap-61f, 0x1.c12e84p-8f, 0x1.6d3ebp-8f, 0x1.78cep-6f,
     /* s = 5/8: node 110 x */
-    0x1.b33334p-70f, -0x1.26425p-15f, -0x1.c3f36ap-15f, 0x1.6113fcp-14f,
+    0x1.99999ap-73f, -0x1.26425p-15f, -0x1.c3f36ap-15f, 0x1.6113fcp-14f,
     /* s = 5/8: node 110 y */
-    -0x1p-71f, -0x1.95bbaep-16f, -0x1.6dfcep-16f, 0x1.863768p-13f,
+    -0x1.99999ap-69f, -0x1.95bbaep-16f, -0x1.6dfcep-16f, 0x1.863768p-13f,
     /* s = 5/8: node 110 z */
-    -0x1.39999ap-68f, 0x1.eddd58p-14f, 0x1.92a234p-14f, 0x1.68fc22p-13f,
+    -0x1.966666p-67f, 0x1.eddd58p-14f, 0x1.92a234p-14f, 0x1.68fc22p-13f,
     /* s = 5/8: node 111 x */
-    -0x1.333334p-72f, -0x1.96cc46p-18f, 0x1.581afp-15f, 0x1.8a0738p-14f,
+    -0x1.99999ap-74f, -0x1.96cc46p-18f, 0x1.581afp-15f, 0x1.8a0738p-14f,
     /* s = 5/8: node 111 y */
-    -0x1.333334p-71f, 0x1.9fd4cep-16f, -0x1.10c848p-16f, -0x1.fe2f16p-14f,
+    -0x1.99999ap-73f, 0x1.9fd4cep-16f, -0x1.10c848p-16f, -0x1.fe2f16p-14f,
     /* s = 5/8: node 111 z */
-    -0x1.de6666p-69f, 0x1.0037fcp-14f, -0x1.45c4ccp-14f, -0x1.f641a8p-18f,
+    -0x1.226666p-69f, 0x1.0037fcp-14f, -0x1.45c4ccp-14f, -0x1.f641a8p-18f,
     /* s = 5/8: node 112 x */
-    0x1.4p-68f, -0x1.05f742p-15f, 0x1.78e452p-16f, -0x1.8ef7a2p-13f,
+    0x1.666666p-70f, -0x1.05f742p-15f, 0x1.78e452p-16f, -0x1.8ef7a2p-13f,
     /* s = 5/8: node 112 y */
-    -0x1.fp-68f, 0x1.c59972p-15f, -0x1.cc7e8ep-16f, 0x1.6160acp-14f,
+    -0x1.133334p-67f, 0x1.c59972p-15f, -0x1.cc7e8ep-16f, 0x1.6160acp-14f,
     /* s = 5/8: node 112 z */
-    0x1.4cccccp-68f, -0x1.4bc658p-14f, 0x1.a1828cp-14f, 0x1.5afcap-13f,
+    0x1.733334p-68f, -0x1.4bc658p-14f, 0x1.a1828cp-14f, 0x1.5afcap-13f,
     /* s = 5/8: node 113 x */
-    0x1.333334p-66f, -0x1.0005c2p-14f, 0x1.3c0704p-14f, -0x1.f48422p-12f,
+    0x1.99999ap-70f, -0x1.0005c2p-14f, 0x1.3c0704p-14f, -0x1.f48422p-12f,
     /* s = 5/8: node 113 y */
-    -0x1.8cccccp-67f, 0x1.31c358p-14f, -0x1.bac876p-15f, 0x1.14f2acp-12f,
+    -0x1.39999ap-67f, 0x1.31c358p-14f, -0x1.bac876p-15f, 0x1.14f2acp-12f,
     /* s = 5/8: node 113 z */
-    0x1.866666p-67f, -0x1.a56118p-14f, 0x1.14ee2ep-13f, 0x1.05030ep-12f,
+    0x1.133334p-67f, -0x1.a56118p-14f, 0x1.14ee2ep-13f, 0x1.05030ep-12f,
     /* s = 5/8: node 114 x */
-    0x1.4p-67f, -0x1.6d17d8p-16f, 0x1.7d0064p-14f, -0x1.d2fc5p-12f,
+    0x1.b33334p-68f, -0x1.6d17d8p-16f, 0x1.7d0064p-14f, -0x1.d2fc5p-12f,
     /* s = 5/8: node 114 y */
-    -0x1.866666p-66f, 0x1.ceaccap-14f, -0x1.2097aep-13f, 0x1.a75acap-12f,
+    -0x1.0cccccp-66f, 0x1.ceaccap-14f, -0x1.2097aep-13f, 0x1.a75acap-12f,
     /* s = 5/8: node 114 z */
-    0x1.8p-69f, -0x1.5a7aep-14f, 0x1.6269e8p-13f, 0x1.3a243p-12f,
+    0x1p-68f, -0x1.5a7aep-14f, 0x1.6269e8p-13f, 0x1.3a243p-12f,
     /* s = 5/8: node 115 x */
-    -0x1.333334p-71f, 0x1.347afep-14f, 0x1.10c54p-14f, -0x1.2439f2p-12f,
+    0x1.4cccccp-69f, 0x1.347afep-14f, 0x1.10c54p-14f, -0x1.2439f2p-12f,
     /* s = 5/8: node 115 y */
-    -0x1.666666p-67f, 0x1.50be62p-14f, -0x1.903274p-13f, 0x1.512de2p-11f,
+    -0x1p-66f, 0x1.50be62p-14f, -0x1.903274p-13f, 0x1.512de2p-11f,
     /* s = 5/8: node 115 z */
-    -0x1.4cccccp-68f, -0x1.450616p-15f, 0x1.ca8f7p-13f, 0x1.93b976p-12f,
+    0x1p-69f, -0x1.450616p-15f, 0x1.ca8f7p-13f, 0x1.93b976p-12f,
     /* s = 5/8: node 116 x */
-    -0x1.5cccccp-67f, 0x1.8ca7bp-13f, -0x1.118848p-19f, 0x1.8b9536p-17f,
+    -0x1.0ap-67f, 0x1.8ca7bp-13f, -0x1.118848p-19f, 0x1.8b9536p-17f,
     /* s = 5/8: node 116 y */
-    -0x1.19999ap-66f, 0x1.2a993cp-19f, -0x1.e8ee72p-13f, 0x1.295372p-11f,
+    -0x1.19999ap-67f, 0x1.2a993cp-19f, -0x1.e8ee72p-13f, 0x1.295372p-11f,
     /* s = 5/8: node 116 z */
-    -0x1.666666p-69f, 0x1.147b5ep-15f, 0x1.c28f94p-13f, 0x1.06d0eap-11f,
+    -0x1.99999ap-69f, 0x1.147b5ep-15f, 0x1.c28f94p-13f, 0x1.06d0eap-11f,
     /* s = 5/8: node 117 x */
-    -0x1.266666p-67f, 0x1.92258p-15f, -0x1.4bf602p-14f, 0x1.5f39ccp-12f,
+    -0x1.b33334p-67f, 0x1.92258p-15f, -0x1.4bf602p-14f, 0x1.5f39ccp-12f,
     /* s = 5/8: node 117 y */
-    -0x1.4p-67f, -0x1.5a1cd6p-15f, -0x1.be347ep-13f, 0x1.3ba918p-11f,
+    -0x1.666666p-69f, -0x1.5a1cd6p-15f, -0x1.be347ep-13f, 0x1.3ba918p-11f,
     /* s = 5/8: node 117 z */
     -0x1.ccccccp-68f, 0x1.2fa73ep-14f, 0x1.e0819cp-13f, 0x1.9a7d9cp-12f,
     /* s = 5/8: node 118 x */
-    -0x1.4cccccp-68f, 0x1.73487ep-18f, -0x1.43f04ap-14f, 0x1.ca5e5ap-12f,
+    -0x1.4p-67f, 0x1.73487ep-18f, -0x1.43f04ap-14f, 0x1.ca5e5ap-12f,
     /* s = 5/8: node 118 y */
-    -0x1.333334p-70f, -0x1.d0c114p-14f, -0x1.0088aep-13f, 0x1.a39fecp-12f,
+    -0x1.99999ap-72f, -0x1.d0c114p-14f, -0x1.0088aep-13f, 0x1.a39fecp-12f,
     /* s = 5/8: node 118 z */
-    -0x1.2cccccp-67f, 0x1.13a664p-13f, 0x1.5666d6p-13f, 0x1.5361c6p-12f,
+    -0x1.f9999ap-67f, 0x1.13a664p-13f, 0x1.5666d6p-13f, 0x1.5361c6p-12f,
     /* s = 5/8: node 119 x */
-    -0x1.99999ap-72f, -0x1.6454dp-15f, -0x1.66aa58p-14f, 0x1.e148a6p-12f,
+    -0x1.0cccccp-67f, -0x1.6454dp-15f, -0x1.66aa58p-14f, 0x1.e148a6p-12f,
     /* s = 5/8: node 119 y */
-    0x1.333334p-68f, -0x1.18df54p-14f, -0x1.0cb6ap-14f, 0x1.f7c866p-13f,
+    0x1.99999ap-71f, -0x1.18df54p-14f, -0x1.0cb6ap-14f, 0x1.f7c866p-13f,
     /* s = 5/8: node 119 z */
-    -0x1.4cccccp-67f, 0x1.3bf316p-13f, 0x1.2fdc3ap-13f, 0x1.fdb0d4p-13f,
+    -0x1.666666p-67f, 0x1.3bf316p-13f, 0x1.2fdc3ap-13f, 0x1.fdb0d4p-13f,
     /* s = 5/8: node 120 x */
-    -0x1.333334p-70f, -0x1.7c83e8p-16f, -0x1.8e2d52p-16f, 0x1.8b4146p-13f,
+    -0x1.99999ap-73f, -0x1.7c83e8p-16f, -0x1.8e2d52p-16f, 0x1.8b4146p-13f,
     /* s = 5/8: node 120 y */
-    0x1.633334p-68f, -0x1.066848p-14f, -0x1.ec3248p-16f, 0x1.6a401p-14f,
+    0x1.f9999ap-69f, -0x1.066848p-14f, -0x1.ec3248p-16f, 0x1.6a401p-14f,
     /* s = 5/8: node 120 z */
-    -0x1.79999ap-67f, 0x1.e0c714p-14f, 0x1.a120cp-14f, 0x1.6c61ccp-13f,
+    -0x1.066666p-68f, 0x1.e0c714p-14f, 0x1.a120cp-14f, 0x1.6c61ccp-13f,
     /* s = 5/8: node 121 x */
-    0x1.cp-69f, -0x1.4d34eap-16f, -0x1.1df5f6p-15f, -0x1.d6e406p-14f,
+    0x1.e66666p-70f, -0x1.4d34eap-16f, -0x1.1df5f6p-15f, -0x1.d6e406p-14f,
     /* s = 5/8: node 121 y */
-    0x1.133334p-68f, -0x1.7a421p-15f, -0x1.4e3192p-17f, -0x1.bd1d6ap-14f,
+    0x1.8cccccp-68f, -0x1.7a421p-15f, -0x1.4e3192p-17f, -0x1.bd1d6ap-14f,
     /* s = 5/8: node 121 z */
-    0x1.0aa99ap-67f, -0x1.6d3c88p-14f, -0x1.454bbap-14f, 0x1.ca1f04p-22f,
+    0x1.f7b334p-68f, -0x1.6d3c88p-14f, -0x1.454bbap-14f, 0x1.ca1f04p-22f,
     /* s = 6/8: node 1 x */
-    -0x1.39999ap-68f, 0x1.7fd89ap-17f, -0x1.2fbd9p-15f, 0x1.1ed70cp-13f,
+    -0x1.e66666p-69f, 0x1.7fd89ap-17f, -0x1.2fbd9p-15f, 0x1.1ed70cp-13f,
     /* s = 6/8: node 1 y */
-    -0x1.666666p-71f, -0x1.e18eb2p-17f, 0x1.35cfd8p-17f, 0x1.b9ac9ap-14f,
+    0x1p-71f, -0x1.e18eb2p-17f, 0x1.35cfd8p-17f, 0x1.b9ac9ap-14f,
     /* s = 6/8: node 1 z */
-    -0x1.f46666p-70f, 0x1.1e5fdap-14f, 0x1.e58958p-15f, 0x1.2670cp-22f,
+    -0x1.e34666p-69f, 0x1.1e5fdap-14f, 0x1.e58958p-15f, 0x1.2670cp-22f,
     /* s = 6/8: node 2 x */
-    0x1.19999ap-69f, -0x1.eef1bcp-16f, -0x1.4077b8p-16f, -0x1.77a234p-13f,
+    0x1.99999ap-69f, -0x1.eef1bcp-16f, -0x1.4077b8p-16f, -0x1.77a234p-13f,
     /* s = 6/8: node 2 y */
-    0x1.8p-68f, -0x1.4d544ep-15f, -0x1.12ed5ep-16f, -0x1.6fc6c2p-14f,
+    0x1.0cccccp-68f, -0x1.4d544ep-15f, -0x1.12ed5ep-16f, -0x1.6fc6c2p-14f,
     /* s = 6/8: node 2 z */
-    0x1.666666p-71f, -0x1.d8900ap-15f, -0x1.52bb48p-14f, 0x1.7370d8p-13f,
+    0x1p-69f, -0x1.d8900ap-15f, -0x1.52bb48p-14f, 0x1.7370d8p-13f,
     /* s = 6/8: node 3 x */
-    0x1.333334p-66f, -0x1.797148p-14f, -0x1.c89b5cp-14f, -0x1.25b56p-11f,
+    0x1p-67f, -0x1.797148p-14f, -0x1.c89b5cp-14f, -0x1.25b56p-11f,
     /* s = 6/8: node 3 y */
-    0x1.a66666p-68f, -0x1.21845p-14f, -0x1.27ccd6p-14f, -0x1.f18ebep-13f,
+    0x1.066666p-67f, -0x1.21845p-14f, -0x1.27ccd6p-14f, -0x1.f18ebep-13f,
     /* s = 6/8: node 3 z */
     0x1.333334p-71f, -0x1.533f2p-14f, -0x1.c16efap-14f, 0x1.18b5fep-12f,
     /* s = 6/8: node 4 x */
-    0x1.19999ap-67f, -0x1.3bdf6ep-15f, -0x1.c30cp-14f, -0x1.cbc3e2p-12f,
+    0x1.333334p-69f, -0x1.3bdf6ep-15f, -0x1.c30cp-14f, -0x1.cbc3e2p-12f,
     /* s = 6/8: node 4 y */
-    0x1.266666p-66f, -0x1.105fe6p-13f, -0x1.151abap-13f, -0x1.d39d86p-12f,
+    0x1.d9999ap-67f, -0x1.105fe6p-13f, -0x1.151abap-13f, -0x1.d39d86p-12f,
     /* s = 6/8: node 4 z */
-    -0x1.333334p-71f, -0x1.b6948cp-15f, -0x1.43c4f6p-13f, 0x1.1b19b2p-12f,
+    0x1.733334p-68f, -0x1.b6948cp-15f, -0x1.43c4f6p-13f, 0x1.1b19b2p-12f,
     /* s = 6/8: node 5 x */
-    -0x1.666666p-69f, 0x1.3f831cp-15f, -0x1.80d74ep-15f, -0x1.71a12cp-13f,
+    -0x1.99999ap-71f, 0x1.3f831cp-15f, -0x1.80d74ep-15f, -0x1.71a12cp-13f,
     /* s = 6/8: node 5 y */
-    -0x1.19999ap-71f, -0x1.2c2c12p-18f, -0x1.33bdfep-13f, -0x1.0ba3dap-14f,
+    -0x1.733334p-70f, -0x1.2c2c12p-18f, -0x1.33bdfep-13f, -0x1.0ba3dap-14f,
     /* s = 6/8: node 5 z */
-    -0x1.333334p-68f, -0x1.8af936p-16f, -0x1.08ea68p-13f, 0x1.04894ap-12f,
+    -0x1.733334p-68f, -0x1.8af936p-16f, -0x1.08ea68p-13f, 0x1.04894ap-12f,
     /* s = 6/8: node 6 x */
-    -0x1.9b999ap-66f, 0x1.975ebp-13f, 0x1.64909ep-19f, 0x1.8930d6p-16f,
+    -0x1.48ccccp-67f, 0x1.975ebp-13f, 0x1.64909ep-19f, 0x1.8930d6p-16f,
     /* s = 6/8: node 6 y */
-    0x1.4cccccp-68f, -0x1.dde732p-16f, -0x1.db0aaep-13f, -0x1.1e2b92p-11f,
+    0x1.8p-67f, -0x1.dde732p-16f, -0x1.db0aaep-13f, -0x1.1e2b92p-11f,
     /* s = 6/8: node 6 z */
-    -0x1.19999ap-67f, 0x1.3c605p-16f, -0x1.a71c4cp-13f, 0x1.08c822p-11f,
+    -0x1.8cccccp-67f, 0x1.3c605p-16f, -0x1.a71c4cp-13f, 0x1.08c822p-11f,
     /* s = 6/8: node 7 x */
-    -0x1.666666p-67f, 0x1.55a9ap-14f, 0x1.cd6cc4p-14f, 0x1.8b19a8p-12f,
+    -0x1.0cccccp-67f, 0x1.55a9ap-14f, 0x1.cd6cc4p-14f, 0x1.8b19a8p-12f,
     /* s = 6/8: node 7 y */
     0x1p-68f, 0x1.238bc6p-15f, -0x1.e3feeap-13f, -0x1.3efb5ep-11f,
     /* s = 6/8: node 7 z */
-    -0x1.8cccccp-66f, 0x1.8e4502p-14f, -0x1.be464ep-13f, 0x1.ca8d78p-12f,
+    -0x1.79999ap-66f, 0x1.8e4502p-14f, -0x1.be464ep-13f, 0x1.ca8d78p-12f,
     /* s = 6/8: node 8 x */
-    -0x1p-68f, 0x1.773108p-17f, 0x1.589e76p-14f, 0x1.c67d14p-12f,
+    -0x1.266666p-67f, 0x1.773108p-17f, 0x1.589e76p-14f, 0x1.c67d14p-12f,
     /* s = 6/8: node 8 y */
-    -0x1.4cccccp-68f, 0x1.ae2e24p-14f, -0x1.fa26a4p-14f, -0x1.a2ce44p-12f,
+    -0x1.666666p-68f, 0x1.ae2e24p-14f, -0x1.fa26a4p-14f, -0x1.a2ce44p-12f,
     /* s = 6/8: node 8 z */
-    -0x1.ecccccp-67f, 0x1.114e6cp-13f, -0x1.35c976p-13f, 0x1.64259ap-12f,
+    -0x1.133334p-66f, 0x1.114e6cp-13f, -0x1.35c976p-13f, 0x1.64259ap-12f,
     /* s = 6/8: node 9 x */
-    -0x1.99999ap-70f, -0x1.3bfae8p-15f, 0x1.7e6ffep-14f, 0x1.e9ceb8p-12f,
+    -0x1.b33334p-68f, -0x1.3bfae8p-15f, 0x1.7e6ffep-14f, 0x1.e9ceb8p-12f,
     /* s = 6/8: node 9 y */
-    -0x1.8p-68f, 0x1.254b44p-14f, -0x1.d4b94ap-15f, -0x1.ecd2e4p-13f,
+    -0x1.266666p-68f, 0x1.254b44p-14f, -0x1.d4b94ap-15f, -0x1.ecd2e4p-13f,
     /* s = 6/8: node 9 z */
-    -0x1.333334p-66f, 0x1.4a8a86p-13f, -0x1.1494a2p-13f, 0x1.0904d4p-12f,
+    -0x1.966666p-66f, 0x1.4a8a86p-13f, -0x1.1494a2p-13f, 0x1.0904d4p-12f,
     /* s = 6/8: node 10 x */
-    0x1.99999ap-71f, -0x1.3e0526p-16f, 0x1.9b361ap-16f, 0x1.87d8d4p-13f,
+    -0x1.ccccccp-70f, -0x1.3e0526p-16f, 0x1.9b361ap-16f, 0x1.87d8d4p-13f,
     /* s = 6/8: node 10 y */
-    -0x1.666666p-71f, 0x1.f18da8p-15f, -0x1.0439bcp-15f, -0x1.790dc4p-14f,
+    -0x1.d9999ap-69f, 0x1.f18da8p-15f, -0x1.0439bcp-15f, -0x1.790dc4p-14f,
     /* s = 6/8: node 10 z */
-    -0x1.6p-67f, 0x1.fb8874p-14f, -0x1.65a502p-14f, 0x1.8d34dp-13f,
+    -0x1.133334p-67f, 0x1.fb8874p-14f, -0x1.65a502p-14f, 0x1.8d34dp-13f,
     /* s = 6/8: node 11 x */
-    0x1.e66666p-70f, -0x1.cf6882p-17f, 0x1.f16f6ap-16f, -0x1.f1ced2p-14f,
+    0x1.2p-68f, -0x1.cf6882p-17f, 0x1.f16f6ap-16f, -0x1.f1ced2p-14f,
     /* s = 6/8: node 11 y */
-    -0x1.266666p-68f, 0x1.68a9f8p-15f, -0x1.d7e164p-18f, 0x1.aca502p-14f,
+    -0x1.2cccccp-68f, 0x1.68a9f8p-15f, -0x1.d7e164p-18f, 0x1.aca502p-14f,
     /* s = 6/8: node 11 z */
-    0x1.c66666p-68f, -0x1.8b248p-14f, 0x1.05bf2ap-14f, -0x1.40e73ep-16f,
+    0x1.026666p-67f, -0x1.8b248p-14f, 0x1.05bf2ap-14f, -0x1.40e73ep-16f,
     /* s = 6/8: node 12 x */
-    0x1.4cccccp-70f, -0x1.774adcp-16f, -0x1.c8919p-15f, -0x1.0c02acp-14f,
+    0x1.533334p-69f, -0x1.774adcp-16f, -0x1.c8919p-15f, -0x1.0c02acp-14f,
     /* s = 6/8: node 12 y */
-    0x1.266666p-68f, -0x1.1684a4p-15f, -0x1.556bbp-16f, -0x1.88738cp-13f,
+    0x1.4cccccp-69f, -0x1.1684a4p-15f, -0x1.556bbp-16f, -0x1.88738cp-13f,
     /* s = 6/8: node 12 z */
-    0x1.e66666p-70f, -0x1.0331c8p-14f, -0x1.31a35cp-14f, 0x1.6a8906p-13f,
+    0x1p-70f, -0x1.0331c8p-14f, -0x1.31a35cp-14f, 0x1.6a8906p-13f,
     /* s = 6/8: node 13 x */
-    0x1.99999ap-62f, 0x1.3fdd82p-13f, 0x1.0c780ap-8f, -0x1.752336p-6f,
+    0x1.a66666p-62f, 0x1.3fdd82p-13f, 0x1.0c780ap-8f, -0x1.752336p-6f,
     /* s = 6/8: node 13 y */
-    0x1.666666p-62f, 0x1.75858ep-12f, 0x1.bdae3ep-12f, -0x1.8af7eep-6f,
+    0x1.19999ap-62f, 0x1.75858ep-12f, 0x1.bdae3ep-12f, -0x1.8af7eep-6f,
     /* s = 6/8: node 13 z */
-    -0x1.8cccccp-62f, -0x1.4f9548p-9f, -0x1.135962p-8f, 0x1.7e1fcap-6f,
+    -0x1.b33334p-63f, -0x1.4f9548p-9f, -0x1.135962p-8f, 0x1.7e1fcap-6f,
     /* s = 6/8: node 14 x */
-    0x1.99999ap-61f, 0x1.7f6472p-10f, 0x1.d0fbd6p-8f, -0x1.74e706p-5f,
+    0x1.f33334p-61f, 0x1.7f6472p-10f, 0x1.d0fbd6p-8f, -0x1.74e706p-5f,
     /* s = 6/8: node 14 y */
-    0x1p-60f, -0x1.6acea8p-9f, 0x1.a078bcp-10f, -0x1.cec6ccp-5f,
+    0x1.19999ap-61f, -0x1.6acea8p-9f, 0x1.a078bcp-10f, -0x1.cec6ccp-5f,
     /* s = 6/8: node 14 z */
-    -0x1.733334p-60f, 0x1.f6522ep-8f, 0x1.2deb8cp-8f, 0x1.3775f8p-4f,
+    -0x1.4cccccp-59f, 0x1.f6522ep-8f, 0x1.2deb8cp-8f, 0x1.3775f8p-4f,
     /* s = 6/8: node 15 x */
-    0x1.ccccccp-63f, 0x1.024ed4p-8f, 0x1.278aeap-7f, -0x1.74f258p-5f,
+    0x1.0cccccp-61f, 0x1.024ed4p-8f, 0x1.278aeap-7f, -0x1.74f258p-5f,
     /* s = 6/8: node 15 y */
-    0x1.333334p-61f, -0x1.3829ecp-8f, 0x1.88ccfp-10f, -0x1.7e6694p-4f,
+    0x1.b33334p-61f, -0x1.3829ecp-8f, 0x1.88ccfp-10f, -0x1.7e6694p-4f,
     /* s = 6/8: node 15 z */
-    -0x1.4cccccp-59f, 0x1.3c7ae6p-6f, 0x1.2a06ep-6f, 0x1.48f8ccp-3f,
+    -0x1.a66666p-59f, 0x1.3c7ae6p-6f, 0x1.2a06ep-6f, 0x1.48f8ccp-3f,
     /* s = 6/8: node 16 x */
-    -0x1.266666p-61f, 0x1.3ba0f4p-7f, 0x1.fbae64p-8f, -0x1.b4e084p-6f,
+    -0x1.333334p-64f, 0x1.3ba0f4p-7f, 0x1.fbae64p-8f, -0x1.b4e084p-6f,
     /* s = 6/8: node 16 y */
-    0x1.733334p-59f, -0x1.881142p-7f, 0x1.d8674ep-9f, -0x1.0df7e6p-3f,
+    0x1.e66666p-60f, -0x1.881142p-7f, 0x1.d8674ep-9f, -0x1.0df7e6p-3f,
     /* s = 6/8: node 16 z */
-    -0x1.333334p-58f, 0x1.650e8cp-6f, 0x1.edb0a4p-6f, 0x1.c93182p-3f,
+    -0x1.99999ap-60f, 0x1.650e8cp-6f, 0x1.edb0a4p-6f, 0x1.c93182p-3f,
     /* s = 6/8: node 17 x */
-    0x1.99999ap-67f, 0x1.e7f682p-7f, 0x1.0a2e14p-10f, 0x1.4b23e6p-8f,
+    -0x1.be6666p-61f, 0x1.e7f682p-7f, 0x1.0a2e14p-10f, 0x1.4b23e6p-8f,
     /* s = 6/8: node 17 y */
-    0x1.8cccccp-59f, -0x1.d37a94p-8f, 0x1.1e88f2p-8f, -0x1.2548p-3f,
+    0x1.333334p-59f, -0x1.d37a94p-8f, 0x1.1e88f2p-8f, -0x1.2548p-3f,
     /* s = 6/8: node 17 z */
     -0x1.4p-58f, 0x1.841cdcp-7f, 0x1.1bf48ep-5f, 0x1.00dc92p-2f,
     /* s = 6/8: node 18 x */
-    -0x1.99999ap-60f, 0x1.9a6c4cp-7f, -0x1.5061aep-8f, 0x1.302474p-5f,
+    -0x1.6p-60f, 0x1.9a6c4cp-7f, -0x1.5061aep-8f, 0x1.302474p-5f,
     /* s = 6/8: node 18 y */
-    0x1.266666p-59f, -0x1.496f74p-8f, 0x1.a6de46p-8f, -0x1.06d982p-3f,
+    0x1.99999ap-60f, -0x1.496f74p-8f, 0x1.a6de46p-8f, -0x1.06d982p-3f,
     /* s = 6/8: node 18 z */
-    0x1.99999ap-62f, -0x1.b754fp-10f, 0x1.a498ap-6f, 0x1.b4beb8p-3f,
+    -0x1p-58f, -0x1.b754fp-10f, 0x1.a498ap-6f, 0x1.b4beb8p-3f,
     /* s = 6/8: node 19 x */
-    -0x1.666666p-60f, 0x1.4fbf9cp-7f, -0x1.489622p-7f, 0x1.94b806p-5f,
+    -0x1.99999ap-60f, 0x1.4fbf9cp-7f, -0x1.489622p-7f, 0x1.94b806p-5f,
     /* s = 6/8: node 19 y */
-    0x1.b33334p-60f, -0x1.d3417cp-8f, 0x1.585992p-8f, -0x1.6e46dap-4f,
+    0x1.2cccccp-59f, -0x1.d3417cp-8f, 0x1.585992p-8f, -0x1.6e46dap-4f,
     /* s = 6/8: node 19 z */
-    -0x1.99999ap-63f, -0x1.30cf8ep-8f, 0x1.c8864ep-7f, 0x1.31b57p-3f,
+    -0x1.4cccccp-60f, -0x1.30cf8ep-8f, 0x1.c8864ep-7f, 0x1.31b57p-3f,
     /* s = 6/8: node 20 x */
-    -0x1.cp-61f, 0x1.877338p-8f, -0x1.004714p-7f, 0x1.843228p-5f,
+    -0x1.e66666p-61f, 0x1.877338p-8f, -0x1.004714p-7f, 0x1.843228p-5f,
     /* s = 6/8: node 20 y */
-    0x1.b33334p-60f, -0x1.9b3a18p-8f, 0x1.d04c14p-10f, -0x1.bef2d8p-5f,
+    0x1.333334p-60f, -0x1.9b3a18p-8f, 0x1.d04c14p-10f, -0x1.bef2d8p-5f,
     /* s = 6/8: node 20 z */
-    -0x1.4p-60f, -0x1.24c944p-10f, 0x1.c68384p-9f, 0x1.2e537ap-4f,
+    -0x1.19999ap-61f, -0x1.24c944p-10f, 0x1.c68384p-9f, 0x1.2e537ap-4f,
     /* s = 6/8: node 21 x */
-    -0x1.ep-61f, 0x1.eb5ad4p-9f, -0x1.3930a6p-8f, 0x1.6f147p-6f,
+    -0x1.cp-62f, 0x1.eb5ad4p-9f, -0x1.3930a6p-8f, 0x1.6f147p-6f,
     /* s = 6/8: node 21 y */
-    0x1.59999ap-61f, -0x1.a57412p-8f, 0x1.3036aep-9f, -0x1.67466ep-6f,
+    0x1.2p-60f, -0x1.a57412p-8f, 0x1.3036aep-9f, -0x1.67466ep-6f,
     /* s = 6/8: node 21 z */
-    -0x1.d9999ap-61f, 0x1.cb621cp-8f, -0x1.47e98p-8f, 0x1.7f2cbep-6f,
+    -0x1.1cccccp-60f, 0x1.cb621cp-8f, -0x1.47e98p-8f, 0x1.7f2cbep-6f,
     /* s = 6/8: node 22 x */
-    0x1.d9999ap-70f, -0x1.f19284p-16f, 0x1.c5053ap-15f, 0x1.3f0156p-14f,
+    0x1.333334p-72f, -0x1.f19284p-16f, 0x1.c5053ap-15f, 0x1.3f0156p-14f,
     /* s = 6/8: node 22 y */
-    0x1.99999ap-69f, 0x1.56240cp-16f, -0x1.663dacp-16f, -0x1.816558p-13f,
+    0x1.4cccccp-70f, 0x1.56240cp-16f, -0x1.663dacp-16f, -0x1.816558p-13f,
     /* s = 6/8: node 22 z */
-    -0x1.a66666p-67f, 0x1.0587a4p-13f, -0x1.5d081cp-14f, 0x1.88ab66p-13f,
+    -0x1.266666p-67f, 0x1.0587a4p-13f, -0x1.5d081cp-14f, 0x1.88ab66p-13f,
     /* s = 6/8: node 23 x */
-    0x1.866666p-67f, -0x1.909ddap-14f, -0x1.06a1d2p-14f, -0x1.61f7bcp-12f,
+    0x1.433334p-66f, -0x1.909ddap-14f, -0x1.06a1d2p-14f, -0x1.61f7bcp-12f,
     /* s = 6/8: node 23 y */
-    0x1.b33334p-68f, -0x1.e73904p-14f, -0x1.f46adcp-15f, -0x1.f7e006p-12f,
+    0x1.a66666p-67f, -0x1.e73904p-14f, -0x1.f46adcp-15f, -0x1.f7e006p-12f,
     /* s = 6/8: node 23 z */
-    0x1.19999ap-68f, -0x1.2c0742p-14f, -0x1.7c4a22p-14f, 0x1.1da648p-12f,
+    0x1.4cccccp-69f, -0x1.2c0742p-14f, -0x1.7c4a22p-14f, 0x1.1da648p-12f,
     /* s = 6/8: node 24 x */
-    -0x1.333334p-62f, -0x1.d8beaap-11f, 0x1.355372p-14f, -0x1.af1dbcp-5f,
+    0x1.e66666p-61f, -0x1.d8beaap-11f, 0x1.355372p-14f, -0x1.af1dbcp-5f,
     /* s = 6/8: node 24 y */
-    0x1.99999ap-61f, -0x1.702a92p-10f, -0x1.575378p-11f, -0x1.ab7b0cp-5f,
+    0x1.333334p-62f, -0x1.702a92p-10f, -0x1.575378p-11f, -0x1.ab7b0cp-5f,
     /* s = 6/8: node 24 z */
-    -0x1.733334p-60f, 0x1.2111dcp-7f, 0x1.1f491ep-8f, 0x1.33b9c6p-4f,
+    -0x1.333334p-59f, 0x1.2111dcp-7f, 0x1.1f491ep-8f, 0x1.33b9c6p-4f,
     /* s = 6/8: node 25 x */
-    -0x1.99999ap-64f, -0x1.611324p-10f, 0x1.53c546p-9f, -0x1.b87906p-4f,
+    0x1p-59f, -0x1.611324p-10f, 0x1.53c546p-9f, -0x1.b87906p-4f,
     /* s = 6/8: node 25 y */
-    0x1.e66666p-60f, -0x1.22761p-7f, 0x1.8264e2p-9f, -0x1.c62e82p-4f,
+    0x1.b33334p-60f, -0x1.22761p-7f, 0x1.8264e2p-9f, -0x1.c62e82p-4f,
     /* s = 6/8: node 25 z */
-    -0x1.e66666p-58f, 0x1.48189p-5f, 0x1.f13d9cp-6f, 0x1.c59412p-3f,
+    -0x1.733334p-58f, 0x1.48189p-5f, 0x1.f13d9cp-6f, 0x1.c59412p-3f,
     /* s = 6/8: node 26 x */
-    0x1.99999ap-61f, 0x1.45cec6p-6f, 0x1.f9985cp-8f, -0x1.b955fp-4f,
+    0x1.4cccccp-60f, 0x1.45cec6p-6f, 0x1.f9985cp-8f, -0x1.b955fp-4f,
     /* s = 6/8: node 26 y */
-    0x1.59999ap-58f, -0x1.5dc69cp-7f, 0x1.bc8ca2p-7f, -0x1.78dd2p-3f,
+    0x1.333334p-58f, -0x1.5dc69cp-7f, 0x1.bc8ca2p-7f, -0x1.78dd2p-3f,
     /* s = 6/8: node 26 z */
-    -0x1.333334p-58f, 0x1.031d7cp-4f, 0x1.055a5ep-4f, 0x1.a7a0a4p-2f,
+    -0x1.0cccccp-57f, 0x1.031d7cp-4f, 0x1.055a5ep-4f, 0x1.a7a0a4p-2f,
     /* s = 6/8: node 27 x */
-    -0x1.4cccccp-60f, 0x1.46bc72p-5f, 0x1.1c75eap-7f, -0x1.d5bfc2p-5f,
+    -0x1.39999ap-58f, 0x1.46bc72p-5f, 0x1.1c75eap-7f, -0x1.d5bfc2p-5f,
     /* s = 6/8: node 27 y */
-    0x1.e66666p-59f, -0x1.90cad2p-7f, 0x1.4988d6p-5f, -0x1.e128f2p-3f,
+    0x1.0cccccp-58f, -0x1.90cad2p-7f, 0x1.4988d6p-5f, -0x1.e128f2p-3f,
     /* s = 6/8: node 27 z */
-    -0x1.a66666p-57f, 0x1.19d89p-4f, 0x1.9f69c8p-4f, 0x1.35048cp-1f,
+    -0x1.666666p-59f, 0x1.19d89p-4f, 0x1.9f69c8p-4f, 0x1.35048cp-1f,
     /* s = 6/8: node 28 x */
-    -0x1.19999ap-58f, 0x1.8d353cp-5f, 0x1.de324p-9f, 0x1.87c012p-6f,
+    -0x1.666666p-59f, 0x1.8d353cp-5f, 0x1.de324p-9f, 0x1.87c012p-6f,
     /* s = 6/8: node 28 y */
-    0x1.333334p-58f, -0x1.309196p-6f, 0x1.a30172p-5f, -0x1.17835cp-2f,
+    0x1.99999ap-60f, -0x1.309196p-6f, 0x1.a30172p-5f, -0x1.17835cp-2f,
     /* s = 6/8: node 28 z */
-    -0x1.59999ap-57f, 0x1.00ad66p-5f, 0x1.99a1e6p-4f, 0x1.4091f8p-1f,
+    -0x1.a66666p-57f, 0x1.00ad66p-5f, 0x1.99a1e6p-4f, 0x1.4091f8p-1f,
     /* s = 6/8: node 29 x */
-    -0x1.29999ap-58f, 0x1.a90d68p-5f, -0x1.da268cp-8f, 0x1.52cbb8p-4f,
+    -0x1.2p-58f, 0x1.a90d68p-5f, -0x1.da268cp-8f, 0x1.52cbb8p-4f,
     /* s = 6/8: node 29 y */
-    0x1.99999ap-58f, -0x1.8147aep-6f, 0x1.372678p-5f, -0x1.e2ed6ep-3f,
+    0x1.333334p-59f, -0x1.8147aep-6f, 0x1.372678p-5f, -0x1.e2ed6ep-3f,
     /* s = 6/8: node 29 z */
-    -0x1.ccccccp-58f, -0x1.0855b6p-7f, 0x1.60ef0cp-4f, 0x1.1dc784p-1f,
+    -0x1.99999ap-59f, -0x1.0855b6p-7f, 0x1.60ef0cp-4f, 0x1.1dc784p-1f,
     /* s = 6/8: node 30 x */
-    -0x1.333334p-59f, 0x1.3fe448p-5f, -0x1.0abe04p-7f, 0x1.d232d8p-4f,
+    -0x1.19999ap-58f, 0x1.3fe448p-5f, -0x1.0abe04p-7f, 0x1.d232d8p-4f,
     /* s = 6/8: node 30 y */
-    0x1.19999ap-58f, -0x1.fcfa7ep-7f, 0x1.5d9e18p-6f, -0x1.6c7314p-3f,
+    0x1.466666p-58f, -0x1.fcfa7ep-7f, 0x1.5d9e18p-6f, -0x1.6c7314p-3f,
     /* s = 6/8: node 30 z */
-    -0x1.99999ap-62f, -0x1.f525dp-6f, 0x1.beaf48p-5f, 0x1.97c894p-2f,
+    -0x1.266666p-57f, -0x1.f525dp-6f, 0x1.beaf48p-5f, 0x1.97c894p-2f,
     /* s = 6/8: node 31 x */
-    -0x1.733334p-59f, 0x1.1df8ecp-6f, -0x1.dedaecp-8f, 0x1.b5cebap-4f,
+    -0x1.59999ap-58f, 0x1.1df8ecp-6f, -0x1.dedaecp-8f, 0x1.b5cebap-4f,
     /* s = 6/8: node 31 y */
-    0x1.8p-59f, -0x1.dc2fe8p-7f, 0x1.386246p-7f, -0x1.a08478p-4f,
+    0x1p-58f, -0x1.dc2fe8p-7f, 0x1.386246p-7f, -0x1.a08478p-4f,
     /* s = 6/8: node 31 z */
-    -0x0p+0f, -0x1.795a5cp-6f, 0x1.9fb7f6p-6f, 0x1.ab4428p-3f,
+    -0x1.99999ap-63f, -0x1.795a5cp-6f, 0x1.9fb7f6p-6f, 0x1.ab4428p-3f,
     /* s = 6/8: node 32 x */
-    -0x1.666666p-61f, 0x1.99bb68p-8f, -0x1.690272p-9f, 0x1.b89288p-5f,
+    -0x1.2cccccp-59f, 0x1.99bb68p-8f, -0x1.690272p-9f, 0x1.b89288p-5f,
     /* s = 6/8: node 32 y */
-    0x1.6cccccp-60f, -0x1.82314p-7f, 0x1.d59062p-10f, -0x1.797f2ep-5f,
+    0x1.4cccccp-60f, -0x1.82314p-7f, 0x1.d59062p-10f, -0x1.797f2ep-5f,
     /* s = 6/8: node 32 z */
-    -0x1.733334p-60f, -0x1.9bd0e2p-10f, 0x1.7b96d2p-9f, 0x1.2c9a08p-4f,
+    -0x1.19999ap-61f, -0x1.9bd0e2p-10f, 0x1.7b96d2p-9f, 0x1.2c9a08p-4f,
     /* s = 6/8: node 33 x */
-    0x1.666666p-68f, -0x1.1e5c84p-14f, 0x1.0c8364p-14f, 0x1.0d2f1p-12f,
+    0x1.333334p-69f, -0x1.1e5c84p-14f, 0x1.0c8364p-14f, 0x1.0d2f1p-12f,
     /* s = 6/8: node 33 y */
-    -0x1.a66666p-67f, 0x1.8328e8p-14f, -0x1.8dfa88p-15f, -0x1.da4b58p-12f,
+    -0x1p-67f, 0x1.8328e8p-14f, -0x1.8dfa88p-15f, -0x1.da4b58p-12f,
     /* s = 6/8: node 33 z */
-    -0x1.3cccccp-66f, 0x1.6b53dap-13f, -0x1.dfae1p-14f, 0x1.0c407cp-12f,
+    -0x1.acccccp-67f, 0x1.6b53dap-13f, -0x1.dfae1p-14f, 0x1.0c407cp-12f,
     /* s = 6/8: node 34 x */
-    0x1.99999ap-67f, -0x1.fa17aap-14f, -0x1.7f6e32p-14f, -0x1.5cb91ep-12f,
+    0x1.666666p-67f, -0x1.fa17aap-14f, -0x1.7f6e32p-14f, -0x1.5cb91ep-12f,
     /* s = 6/8: node 34 y */
-    0x1.8cccccp-67f, -0x1.25036cp-13f, -0x1.55652ap-16f, -0x1.09dc52p-11f,
+    0x1.8p-67f, -0x1.25036cp-13f, -0x1.55652ap-16f, -0x1.09dc52p-11f,
     /* s = 6/8: node 34 z */
-    -0x1.ccccccp-70f, -0x1.3c8558p-14f, -0x1.f6fcc8p-15f, 0x1.6c1708p-12f,
+    0x1.99999ap-69f, -0x1.3c8558p-14f, -0x1.f6fcc8p-15f, 0x1.6c1708p-12f,
     /* s = 6/8: node 35 x */
-    0x1.e66666p-60f, -0x1.558a1p-7f, -0x1.00cc16p-9f, -0x1.9ed246p-4f,
+    0x1.19999ap-60f, -0x1.558a1p-7f, -0x1.00cc16p-9f, -0x1.9ed246p-4f,
     /* s = 6/8: node 35 y */
-    0x1.f33334p-60f, -0x1.5cd4fep-9f, 0x1.25e16p-9f, -0x1.c77748p-5f,
+    0x1p-61f, -0x1.5cd4fep-9f, 0x1.25e16p-9f, -0x1.c77748p-5f,
     /* s = 6/8: node 35 z */
-    -0x1.333334p-58f, 0x1.c9d50ap-6f, 0x1.917f72p-7f, 0x1.3f584ep-3f,
+    -0x1.99999ap-58f, 0x1.c9d50ap-6f, 0x1.917f72p-7f, 0x1.3f584ep-3f,
     /* s = 6/8: node 36 x */
-    0x1.ccccccp-59f, -0x1.156e32p-7f, -0x1.20d9c8p-7f, -0x1.a01cdp-3f,
+    0x1.666666p-59f, -0x1.156e32p-7f, -0x1.20d9c8p-7f, -0x1.a01cdp-3f,
     /* s = 6/8: node 36 y */
-    0x1.e66666p-59f, -0x1.2c849ep-7f, 0x1.2c8b2cp-6f, -0x1.d387e4p-4f,
+    0x1.8cccccp-59f, -0x1.2c849ep-7f, 0x1.2c8b2cp-6f, -0x1.d387e4p-4f,
     /* s = 6/8: node 36 z */
-    -0x1.333334p-57f, 0x1.638a14p-4f, 0x1.71a082p-5f, 0x1.b15f3ep-2f,
+    -0x1.8p-57f, 0x1.638a14p-4f, 0x1.71a082p-5f, 0x1.b15f3ep-2f,
     /* s = 6/8: node 37 x */
-    -0x1.99999ap-60f, 0x1.0a09d2p-6f, -0x1.c5ee48p-7f, -0x1.9f5d78p-3f,
+    -0x1.99999ap-61f, 0x1.0a09d2p-6f, -0x1.c5ee48p-7f, -0x1.9f5d78p-3f,
     /* s = 6/8: node 37 y */
-    0x1.266666p-57f, -0x1.0614ep-5f, 0x1.4db5bp-5f, -0x1.aa3148p-3f,
+    0x1.99999ap-58f, -0x1.0614ep-5f, 0x1.4db5bp-5f, -0x1.aa3148p-3f,
     /* s = 6/8: node 37 z */
-    -0x1.99999ap-57f, 0x1.27c1e2p-3f, 0x1.a80318p-4f, 0x1.960d2p-1f,
+    -0x1.333334p-56f, 0x1.27c1e2p-3f, 0x1.a80318p-4f, 0x1.960d2p-1f,
     /* s = 6/8: node 38 x */
-    -0x1.4d999ap-57f, 0x1.226348p-3f, 0x1.619354p-5f, -0x1.b8562ap-6f,
+    -0x1.69999ap-59f, 0x1.226348p-3f, 0x1.619354p-5f, -0x1.b8562ap-6f,
     /* s = 6/8: node 38 y */
-    0x1p-58f, -0x1.0e5a38p-7f, 0x1.00c308p-3f, -0x1.28d254p-2f,
+    0x1.b33334p-58f, -0x1.0e5a38p-7f, 0x1.00c308p-3f, -0x1.28d254p-2f,
     /* s = 6/8: node 38 z */
-    -0x1.cp-56f, 0x1.613a8ep-3f, 0x1.6710b2p-3f, 0x1.265dc6p+0f,
+    -0x1.8cccccp-56f, 0x1.613a8ep-3f, 0x1.6710b2p-3f, 0x1.265dc6p+0f,
     /* s = 6/8: node 39 x */
-    -0x1.a1999ap-57f, 0x1.45437cp-3f, 0x1.fef7dp-7f, 0x1.ba9df4p-5f,
+    -0x1.54p-56f, 0x1.45437cp-3f, 0x1.fef7dp-7f, 0x1.ba9df4p-5f,
     /* s = 6/8: node 39 y */
-    0x1.2cccccp-57f, -0x1.f46d3p-6f, 0x1.173bd4p-3f, -0x1.3443d8p-2f,
+    0x1.066666p-57f, -0x1.f46d3p-6f, 0x1.173bd4p-3f, -0x1.3443d8p-2f,
     /* s = 6/8: node 39 z */
-    -0x1.b33334p-56f, 0x1.07272ep-4f, 0x1.4efb36p-3f, 0x1.397f9ep+0f,
+    -0x1.666666p-56f, 0x1.07272ep-4f, 0x1.4efb36p-3f, 0x1.397f9ep+0f,
     /* s = 6/8: node 40 x */
-    -0x1.5cccccp-57f, 0x1.1619f4p-3f, 0x1.0c067p-9f, 0x1.50d6b6p-3f,
+    -0x1.6p-58f, 0x1.1619f4p-3f, 0x1.0c067p-9f, 0x1.50d6b6p-3f,
     /* s = 6/8: node 40 y */
-    0x1.4cccccp-58f, -0x1.f418b8p-6f, 0x1.c7f388p-4f, -0x1.01ad8ep-2f,
+    0x1.666666p-58f, -0x1.f418b8p-6f, 0x1.c7f388p-4f, -0x1.01ad8ep-2f,
     /* s = 6/8: node 40 z */
-    0x1.ccccccp-58f, -0x1.d6b44cp-6f, 0x1.0d6deap-3f, 0x1.0bf878p+0f,
+    -0x1.59999ap-56f, -0x1.d6b44cp-6f, 0x1.0d6deap-3f, 0x1.0bf878p+0f,
     /* s = 6/8: node 41 x */
-    -0x1.b33334p-58f, 0x1.553d12p-4f, -0x1.77455cp-7f, 0x1.8a4036p-3f,
+    -0x1.d9999ap-57f, 0x1.553d12p-4f, -0x1.77455cp-7f, 0x1.8a4036p-3f,
     /* s = 6/8: node 41 y */
-    0x1.f33334p-59f, -0x1.b12aa8p-6f, 0x1.f2958cp-5f, -0x1.67924p-3f,
+    0x1.ep-58f, -0x1.b12aa8p-6f, 0x1.f2958cp-5f, -0x1.67924p-3f,
     /* s = 6/8: node 41 z */
-    -0x1.99999ap-59f, -0x1.09b98p-4f, 0x1.3d8e64p-4f, 0x1.7a2668p-1f,
+    -0x1.333334p-60f, -0x1.09b98p-4f, 0x1.3d8e64p-4f, 0x1.7a2668p-1f,
     /* s = 6/8: node 42 x */
-    -0x1.266666p-58f, 0x1.403ec2p-5f, -0x1.15b602p-9f, 0x1.747ff2p-3f,
+    -0x1.a66666p-59f, 0x1.403ec2p-5f, -0x1.15b602p-9f, 0x1.747ff2p-3f,
     /* s = 6/8: node 42 y */
-    0x1.a66666p-59f, -0x1.2b1396p-6f, 0x1.84a184p-6f, -0x1.a7df2ep-4f,
+    0x1.333334p-59f, -0x1.2b1396p-6f, 0x1.84a184p-6f, -0x1.a7df2ep-4f,
     /* s = 6/8: node 42 z */
-    -0x1p-58f, -0x1.8b62e8p-5f, 0x1.3eb30cp-5f, 0x1.95884ap-2f,
+    -0x1.19999ap-58f, -0x1.8b62e8p-5f, 0x1.3eb30cp-5f, 0x1.95884ap-2f,
     /* s = 6/8: node 43 x */
-    -0x1.59999ap-60f, 0x1.2e1f5ep-7f, -0x1.52b5c8p-9f, 0x1.76649p-4f,
+    -0x1.4cccccp-59f, 0x1.2e1f5ep-7f, -0x1.52b5c8p-9f, 0x1.76649p-4f,
     /* s = 6/8: node 43 y */
-    0x1.433334p-59f, -0x1.cb1bc2p-7f, 0x1.67bb2cp-8f, -0x1.74c04ap-5f,
+    0x1.ccccccp-60f, -0x1.cb1bc2p-7f, 0x1.67bb2cp-8f, -0x1.74c04ap-5f,
     /* s = 6/8: node 43 z */
-    -0x1.333334p-62f, -0x1.785e4ap-7f, 0x1.00bbb8p-7f, 0x1.2d067p-3f,
+    -0x1.333334p-61f, -0x1.785e4ap-7f, 0x1.00bbb8p-7f, 0x1.2d067p-3f,
     /* s = 6/8: node 44 x */
-    0x1.266666p-67f, -0x1.27effep-13f, 0x1.5ae778p-14f, 0x1.7b0402p-12f,
+    0x1.8cccccp-67f, -0x1.27effep-13f, 0x1.5ae778p-14f, 0x1.7b0402p-12f,
     /* s = 6/8: node 44 y */
-    -0x1.666666p-69f, 0x1.424abp-14f, 0x1.8c03bep-19f, -0x1.c3917ep-12f,
+    0x1.b33334p-68f, 0x1.424abp-14f, 0x1.8c03bep-19f, -0x1.c3917ep-12f,
     /* s = 6/8: node 44 z */
-    -0x1.bcccccp-66f, 0x1.b7c0cep-13f, -0x1.6ac29ap-14f, 0x1.66122ep-12f,
+    -0x1.866666p-67f, 0x1.b7c0cep-13f, -0x1.6ac29ap-14f, 0x1.66122ep-12f,
     /* s = 6/8: node 45 x */
-    0x1p-69f, -0x1.075eb2p-12f, -0x1.428a62p-15f, -0x1.42852cp-11f,
+    0x1.066666p-65f, -0x1.075eb2p-12f, -0x1.428a62p-15f, -0x1.42852cp-11f,
     /* s = 6/8: node 45 y */
-    0x1.ccccccp-68f, -0x1.b1908ap-14f, 0x1.13d4f2p-15f, -0x1.082d64p-12f,
+    0x1.c66666p-67f, -0x1.b1908ap-14f, 0x1.13d4f2p-15f, -0x1.082d64p-12f,
     /* s = 6/8: node 45 z */
-    -0x1.99999ap-72f, -0x1.0f121ap-14f, -0x1.53c026p-18f, 0x1.05bacp-11f,
+    -0x1.4cccccp-68f, -0x1.0f121ap-14f, -0x1.53c026p-18f, 0x1.05bacp-11f,
     /* s = 6/8: node 46 x */
-    0x1.2cccccp-58f, -0x1.257db6p-6f, -0x1.358638p-7f, -0x1.15ac7p-3f,
+    0x1.266666p-59f, -0x1.257db6p-6f, -0x1.358638p-7f, -0x1.15ac7p-3f,
     /* s = 6/8: node 46 y */
-    0x1.4cccccp-61f, -0x1.48069ep-16f, 0x1.a1ae14p-8f, -0x1.003e4ap-5f,
+    0x1.ccccccp-63f, -0x1.48069ep-16f, 0x1.a1ae14p-8f, -0x1.003e4ap-5f,
     /* s = 6/8: node 46 z */
-    -0x1.333334p-58f, 0x1.8b5d7ep-5f, 0x1.ce3872p-7f, 0x1.c51912p-3f,
+    -0x1.e66666p-58f, 0x1.8b5d7ep-5f, 0x1.ce3872p-7f, 0x1.c51912p-3f,
     /* s = 6/8: node 47 x */
-    0x1.ccccccp-58f, -0x1.865bbp-8f, -0x1.a11ap-7f, -0x1.1f9f9ep-2f,
+    0x1.19999ap-58f, -0x1.865bbp-8f, -0x1.a11ap-7f, -0x1.1f9f9ep-2f,
     /* s = 6/8: node 47 y */
-    0x1.4p-59f, -0x1.79b758p-8f, 0x1.3297dep-5f, -0x1.4b64dcp-4f,
+    0x1.e66666p-61f, -0x1.79b758p-8f, 0x1.3297dep-5f, -0x1.4b64dcp-4f,
     /* s = 6/8: node 47 z */
-    -0x1.8p-57f, 0x1.07fc86p-3f, 0x1.42d69p-5f, 0x1.2efc6ep-1f,
+    -0x1.19999ap-57f, 0x1.07fc86p-3f, 0x1.42d69p-5f, 0x1.2efc6ep-1f,
     /* s = 6/8: node 48 x */
-    0x1.266666p-58f, 0x1.144306p-7f, -0x1.64901p-6f, -0x1.5bd2cap-2f,
+    0x1.d9999ap-58f, 0x1.144306p-7f, -0x1.64901p-6f, -0x1.5bd2cap-2f,
     /* s = 6/8: node 48 y */
-    0x1.ap-58f, -0x1.82307ep-6f, 0x1.48a014p-4f, -0x1.0e9d38p-3f,
+    0x1.2cccccp-58f, -0x1.82307ep-6f, 0x1.48a014p-4f, -0x1.0e9d38p-3f,
     /* s = 6/8: node 48 z */
-    -0x1p-55f, 0x1.e0a54ep-3f, 0x1.b94edp-4f, 0x1.210776p+0f,
+    -0x1.a66666p-55f, 0x1.e0a54ep-3f, 0x1.b94edp-4f, 0x1.210776p+0f,
     /* s = 6/8: node 49 x */
-    -0x1.ff3334p-56f, 0x1.9ac408p-2f, 0x1.2d1796p-3f, 0x1.483384p-4f,
+    -0x1.65999ap-56f, 0x1.9ac408p-2f, 0x1.2d1796p-3f, 0x1.483384p-4f,
     /* s = 6/8: node 49 y */
-    0x1.4cccccp-58f, 0x1.172e74p-4f, 0x1.14e628p-2f, -0x1.802bc8p-3f,
+    -0x1.e66666p-59f, 0x1.172e74p-4f, 0x1.14e628p-2f, -0x1.802bc8p-3f,
     /* s = 6/8: node 49 z */
-    -0x1.0cccccp-55f, 0x1.40f2ep-2f, 0x1.63917ap-3f, 0x1.b28b0ap+0f,
+    -0x1.066666p-54f, 0x1.40f2ep-2f, 0x1.63917ap-3f, 0x1.b28b0ap+0f,
     /* s = 6/8: node 50 x */
-    -0x1.21999ap-56f, 0x1.66526p-2f, 0x1.0f469ep-5f, 0x1.759a42p-4f,
+    -0x1.50ccccp-55f, 0x1.66526p-2f, 0x1.0f469ep-5f, 0x1.759a42p-4f,
     /* s = 6/8: node 50 y */
-    0x1.4cccccp-57f, -0x1.2338bcp-5f, 0x1.8ac2e6p-2f, -0x1.9db1b8p-3f,
+    0x1.1cccccp-56f, -0x1.2338bcp-5f, 0x1.8ac2e6p-2f, -0x1.9db1b8p-3f,
     /* s = 6/8: node 50 z */
-    -0x1.4p-55f, 0x1.759686p-4f, 0x1.035b66p-3f, 0x1.bc6d8ep+0f,
+    -0x1p-55f, 0x1.759686p-4f, 0x1.035b66p-3f, 0x1.bc6d8ep+0f,
     /* s = 6/8: node 51 x */
-    -0x1.c66666p-57f, 0x1.1af84p-2f, -0x1.2b4da2p-5f, 0x1.c8e244p-3f,
+    -0x1.a9999ap-56f, 0x1.1af84p-2f, -0x1.2b4da2p-5f, 0x1.c8e244p-3f,
     /* s = 6/8: node 51 y */
-    0x1.5e6666p-56f, -0x1.05cb4ep-4f, 0x1.b91fbep-3f, -0x1.4f98b2p-3f,
+    0x1.166666p-56f, -0x1.05cb4ep-4f, 0x1.b91fbep-3f, -0x1.4f98b2p-3f,
     /* s = 6/8: node 51 z */
-    -0x1.8p-56f, -0x1.1959bp-5f, 0x1.a644bcp-4f, 0x1.7b3366p+0f,
+    -0x1.99999ap-57f, -0x1.1959bp-5f, 0x1.a644bcp-4f, 0x1.7b3366p+0f,
     /* s = 6/8: node 52 x */
-    -0x1.6p-57f, 0x1.30d944p-3f, -0x1.61e2e8p-8f, 0x1.0d33c6p-2f,
+    -0x1.8cccccp-57f, 0x1.30d944p-3f, -0x1.61e2e8p-8f, 0x1.0d33c6p-2f,
     /* s = 6/8: node 52 y */
-    0x1.133334p-58f, -0x1.515334p-6f, 0x1.788a5ap-4f, -0x1.f14912p-4f,
+    0x1.99999ap-59f, -0x1.515334p-6f, 0x1.788a5ap-4f, -0x1.f14912p-4f,
     /* s = 6/8: node 52 z */
-    -0x1.666666p-58f, -0x1.b8b62p-4f, 0x1.03c202p-4f, 0x1.0548e8p+0f,
+    -0x1.99999ap-59f, -0x1.b8b62p-4f, 0x1.03c202p-4f, 0x1.0548e8p+0f,
     /* s = 6/8: node 53 x */
-    -0x1.533334p-57f, 0x1.f6f37ap-5f, -0x1.67f844p-9f, 0x1.f29862p-3f,
+    -0x1p-57f, 0x1.f6f37ap-5f, -0x1.67f844p-9f, 0x1.f29862p-3f,
     /* s = 6/8: node 53 y */
-    0x1.933334p-59f, -0x1.ce41d6p-7f, 0x1.349beep-5f, -0x1.055cfap-4f,
+    0x1.ap-59f, -0x1.ce41d6p-7f, 0x1.349beep-5f, -0x1.055cfap-4f,
     /* s = 6/8: node 53 z */
-    -0x1.99999ap-59f, -0x1.23decep-4f, 0x1.d6b19cp-6f, 0x1.17160ap-1f,
+    0x1.333334p-60f, -0x1.23decep-4f, 0x1.d6b19cp-6f, 0x1.17160ap-1f,
     /* s = 6/8: node 54 x */
-    -0x1.333334p-59f, 0x1.b322c4p-7f, 0x1.012be6p-10f, 0x1.ef226ap-4f,
+    -0x1.266666p-59f, 0x1.b322c4p-7f, 0x1.012be6p-10f, 0x1.ef226ap-4f,
     /* s = 6/8: node 54 y */
-    0x1.133334p-60f, -0x1.1efe76p-7f, 0x1.c5292ep-8f, -0x1.df7298p-6f,
+    0x1.8cccccp-61f, -0x1.1efe76p-7f, 0x1.c5292ep-8f, -0x1.df7298p-6f,
     /* s = 6/8: node 54 z */
-    -0x1.4cccccp-59f, -0x1.6df64cp-6f, 0x1.ffe28ap-8f, 0x1.a490c6p-3f,
+    -0x1.333334p-61f, -0x1.6df64cp-6f, 0x1.ffe28ap-8f, 0x1.a490c6p-3f,
     /* s = 6/8: node 55 x */
-    0x1.99999ap-67f, -0x1.e77c6ep-13f, 0x1.01f16cp-14f, 0x1.29574ep-11f,
+    0x1.066666p-66f, -0x1.e77c6ep-13f, 0x1.01f16cp-14f, 0x1.29574ep-11f,
     /* s = 6/8: node 55 y */
-    0x1.666666p-69f, 0x1.42fde8p-14f, 0x1.e5b6dap-16f, -0x1.355ab8p-12f,
+    -0x1.ccccccp-70f, 0x1.42fde8p-14f, 0x1.e5b6dap-16f, -0x1.355ab8p-12f,
     /* s = 6/8: node 55 z */
-    -0x1.09999ap-65f, 0x1.095068p-12f, -0x1.be3726p-15f, 0x1.b15384p-12f,
+    -0x1.f9999ap-66f, 0x1.095068p-12f, -0x1.be3726p-15f, 0x1.b15384p-12f,
     /* s = 6/8: node 56 x */
-    0x1.49999ap-65f, -0x1.37dcb4p-12f, -0x1.56d2a4p-17f, -0x1.40a4fp-11f,
+    0x1.066666p-65f, -0x1.37dcb4p-12f, -0x1.56d2a4p-17f, -0x1.40a4fp-11f,
     /* s = 6/8: node 56 y */
-    0x1.866666p-72f, 0x1.d96fcep-18f, 0x1.334fdcp-15f, -0x1.54fc1cp-17f,
+    0x1.666666p-72f, 0x1.d96fcep-18f, 0x1.334fdcp-15f, -0x1.54fc1cp-17f,
     /* s = 6/8: node 56 z */
-    0x1p-68f, -0x1.285af2p-14f, 0x1.ebf92p-17f, 0x1.0e35ep-11f,
+    -0x0p+0f, -0x1.285af2p-14f, 0x1.ebf92p-17f, 0x1.0e35ep-11f,
     /* s = 6/8: node 57 x */
-    0x1.d9999ap-59f, -0x1.980bdcp-6f, -0x1.00b25cp-8f, -0x1.3c406ep-3f,
+    0x1.666666p-59f, -0x1.980bdcp-6f, -0x1.00b25cp-8f, -0x1.3c406ep-3f,
     /* s = 6/8: node 57 y */
-    0x1.cp-63f, 0x1.a22976p-10f, 0x1.6317ecp-7f, 0x1.b46594p-9f,
+    -0x1.8p-63f, 0x1.a22976p-10f, 0x1.6317ecp-7f, 0x1.b46594p-9f,
     /* s = 6/8: node 57 z */
-    -0x1.266666p-57f, 0x1.cc5bdap-5f, 0x1.321164p-8f, 0x1.f9dae2p-3f,
+    -0x1.39999ap-57f, 0x1.cc5bdap-5f, 0x1.321164p-8f, 0x1.f9dae2p-3f,
     /* s = 6/8: node 58 x */
-    0x1.0cccccp-58f, 0x1.f5b15p-9f, -0x1.d40f8ep-8f, -0x1.38a9dep-2f,
+    0x1.4p-58f, 0x1.f5b15p-9f, -0x1.d40f8ep-8f, -0x1.38a9dep-2f,
     /* s = 6/8: node 58 y */
-    -0x1.b33334p-62f, 0x1.d92838p-8f, 0x1.86bb56p-5f, 0x1.e7c038p-7f,
+    -0x1.4cccccp-61f, 0x1.d92838p-8f, 0x1.86bb56p-5f, 0x1.e7c038p-7f,
     /* s = 6/8: node 58 z */
-    -0x1.cp-57f, 0x1.2aa4eap-3f, 0x1.280cf2p-7f, 0x1.50b6e4p-1f,
+    -0x1.933334p-56f, 0x1.2aa4eap-3f, 0x1.280cf2p-7f, 0x1.50b6e4p-1f,
     /* s = 6/8: node 59 x */
-    -0x1.99999ap-63f, 0x1.c8b966p-6f, -0x1.444562p-7f, -0x1.7abf5ep-2f,
+    0x1.4cccccp-59f, 0x1.c8b966p-6f, -0x1.444562p-7f, -0x1.7abf5ep-2f,
     /* s = 6/8: node 59 y */
-    0x1.8cccccp-61f, 0x1.ac89cp-8f, 0x1.e1c2cep-4f, 0x1.661d46p-6f,
+    0x1.933334p-60f, 0x1.ac89cp-8f, 0x1.e1c2cep-4f, 0x1.661d46p-6f,
     /* s = 6/8: node 59 z */
-    -0x1.066666p-55f, 0x1.1a3332p-2f, 0x1.1e6b4p-6f, 0x1.45c4bp+0f,
+    -0x1.333334p-56f, 0x1.1a3332p-2f, 0x1.1e6b4p-6f, 0x1.45c4bp+0f,
     /* s = 6/8: node 60 x */
-    -0x1.423334p-54f, 0x1.6b6902p-1f, 0x1.f45d2p-7f, 0x1.35d296p-5f,
+    -0x1.266666p-56f, 0x1.6b6902p-1f, 0x1.f45d2p-7f, 0x1.35d296p-5f,
     /* s = 6/8: node 60 y */
-    0x1.28p-58f, 0x1.103cb8p-6f, 0x1.3fd42ap-2f, 0x1.246418p-6f,
+    0x1.acccccp-59f, 0x1.103cb8p-6f, 0x1.3fd42ap-2f, 0x1.246418p-6f,
     /* s = 6/8: node 60 z */
-    -0x1.0cccccp-54f, 0x1.9db73ep-2f, 0x1.831adep-6f, 0x1.ed7dbep+0f,
+    -0x1.b33334p-56f, 0x1.9db73ep-2f, 0x1.831adep-6f, 0x1.ed7dbep+0f,
     /* s = 6/8: node 61 x */
-    -0x1.246666p-54f, 0x1.cef818p-1f, 0x1.0f5e4cp-6f, 0x1.8bb7dep-4f,
+    -0x1.c8ccccp-55f, 0x1.cef818p-1f, 0x1.0f5e4cp-6f, 0x1.8bb7dep-4f,
     /* s = 6/8: node 61 y */
-    -0x1.466666p-60f, 0x1.4285b4p-6f, 0x1.90746ep-1f, 0x1.25e92cp-6f,
+    0x1.c3999ap-57f, 0x1.4285b4p-6f, 0x1.90746ep-1f, 0x1.25e92cp-6f,
     /* s = 6/8: node 61 z */
-    -0x1.733334p-55f, 0x1.77b86ep-4f, 0x1.0a654ep-6f, 0x1.27c3e2p+1f,
+    -0x1.99999ap-56f, 0x1.77b86ep-4f, 0x1.0a654ep-6f, 0x1.27c3e2p+1f,
     /* s = 6/8: node 62 x */
-    -0x1.266666p-55f, 0x1.e68062p-2f, 0x1.65c4dp-7f, 0x1.01a39ap-2f,
+    -0x1.0e6666p-55f, 0x1.e68062p-2f, 0x1.65c4dp-7f, 0x1.01a39ap-2f,
     /* s = 6/8: node 62 y */
-    0x1.c8p-60f, 0x1.46f622p-8f, 0x1.16289ap-2f, 0x1.958334p-8f,
+    0x1.766666p-59f, 0x1.46f622p-8f, 0x1.16289ap-2f, 0x1.958334p-8f,
     /* s = 6/8: node 62 z */
-    -0x1.8p-56f, -0x1.b7ae68p-5f, 0x1.2728ap-8f, 0x1.b81c6ap+0f,
+    -0x1.4cccccp-56f, -0x1.b7ae68p-5f, 0x1.2728ap-8f, 0x1.b81c6ap+0f,
     /* s = 6/8: node 63 x */
-    -0x1.e66666p-57f, 0x1.60fba6p-3f, 0x1.cbb1dep-8f, 0x1.31b0a8p-2f,
+    -0x1.4cccccp-56f, 0x1.60fba6p-3f, 0x1.cbb1dep-8f, 0x1.31b0a8p-2f,
     /* s = 6/8: node 63 y */
-    -0x1.19999ap-65f, 0x1.44698p-8f, 0x1.d6d372p-4f, 0x1.0eb922p-8f,
+    0x1.d33334p-63f, 0x1.44698p-8f, 0x1.d6d372p-4f, 0x1.0eb922p-8f,
     /* s = 6/8: node 63 z */
-    0x1.99999ap-58f, -0x1.0fe79ep-3f, 0x1.fdbccep-10f, 0x1.27de44p+0f,
+    0x1.99999ap-61f, -0x1.0fe79ep-3f, 0x1.fdbccep-10f, 0x1.27de44p+0f,
     /* s = 6/8: node 64 x */
-    -0x1.19999ap-57f, 0x1.45c056p-4f, 0x1.7d7488p-9f, 0x1.0c0bfcp-2f,
+    -0x1.39999ap-57f, 0x1.45c056p-4f, 0x1.7d7488p-9f, 0x1.0c0bfcp-2f,
     /* s = 6/8: node 64 y */
-    0x1.34p-61f, 0x1.3173dcp-10f, 0x1.3d7594p-5f, 0x1.125fcp-9f,
+    0x1.a66666p-65f, 0x1.3173dcp-10f, 0x1.3d7594p-5f, 0x1.125fcp-9f,
     /* s = 6/8: node 64 z */
-    -0x1.4cccccp-58f, -0x1.445c4cp-4f, -0x1.d78952p-12f, 0x1.34be04p-1f,
+    -0x1.b33334p-58f, -0x1.445c4cp-4f, -0x1.d78952p-12f, 0x1.34be04p-1f,
     /* s = 6/8: node 65 x */
-    -0x1.b33334p-60f, 0x1.1de074p-7f, 0x1.789ac8p-10f, 0x1.1de826p-3f,
+    -0x1.8p-60f, 0x1.1de074p-7f, 0x1.789ac8p-10f, 0x1.1de826p-3f,
     /* s = 6/8: node 65 y */
-    0x1.59999ap-64f, 0x1.33bd5ap-10f, 0x1.52a416p-7f, 0x1.981beep-10f,
+    0x1.2cccccp-63f, 0x1.33bd5ap-10f, 0x1.52a416p-7f, 0x1.981beep-10f,
     /* s = 6/8: node 65 z */
-    -0x1.333334p-59f, -0x1.d337aap-6f, 0x1.2cf42ap-12f, 0x1.ddf96cp-3f,
+    -0x1.666666p-60f, -0x1.d337aap-6f, 0x1.2cf42ap-12f, 0x1.ddf96cp-3f,
     /* s = 6/8: node 66 x */
-    0x1.0cccccp-66f, -0x1.0f072ep-12f, -0x1.b226f8p-17f, 0x1.1f33ep-11f,
+    0x1.4cccccp-68f, -0x1.0f072ep-12f, -0x1.b226f8p-17f, 0x1.1f33ep-11f,
     /* s = 6/8: node 66 y */
-    0x1.4d999ap-69f, 0x1.00e7cap-19f, 0x1.3d3e78p-13f, -0x1.07c3cep-18f,
+    -0x1.70ccccp-69f, 0x1.00e7cap-19f, 0x1.3d3e78p-13f, -0x1.07c3cep-18f,
     /* s = 6/8: node 66 z */
-    -0x1.ccccccp-66f, 0x1.113118p-12f, 0x1.af2f98p-17f, 0x1.02d84cp-11f,
+    -0x1.d9999ap-66f, 0x1.113118p-12f, 0x1.af2f98p-17f, 0x1.02d84cp-11f,
     /* s = 6/8: node 67 x */
-    0x1.f9999ap-66f, -0x1.81eb7ap-13f, 0x1.03e3b8p-16f, -0x1.ea7374p-12f,
+    0x1.59999ap-66f, -0x1.81eb7ap-13f, 0x1.03e3b8p-16f, -0x1.ea7374p-12f,
     /* s = 6/8: node 67 y */
-    -0x1.29999ap-66f, 0x1.07c3bap-13f, 0x1.4c0f58p-14f, 0x1.7a3444p-12f,
+    -0x1.4p-66f, 0x1.07c3bap-13f, 0x1.4c0f58p-14f, 0x1.7a3444p-12f,
     /* s = 6/8: node 67 z */
-    0x1p-69f, -0x1.8d7fc6p-14f, 0x1.346664p-15f, 0x1.f9623ap-12f,
+    -0x1.99999ap-71f, -0x1.8d7fc6p-14f, 0x1.346664p-15f, 0x1.f9623ap-12f,
     /* s = 6/8: node 68 x */
-    0x1.cp-59f, -0x1.7a2ec8p-7f, 0x1.d2c296p-10f, -0x1.0b3b42p-3f,
+    0x1.4cccccp-60f, -0x1.7a2ec8p-7f, 0x1.d2c296p-10f, -0x1.0b3b42p-3f,
     /* s = 6/8: node 68 y */
-    -0x1.0cccccp-61f, 0x1.70a254p-8f, 0x1.318f0ap-7f, 0x1.588dbp-5f,
+    -0x1.8p-60f, 0x1.70a254p-8f, 0x1.318f0ap-7f, 0x1.588dbp-5f,
     /* s = 6/8: node 68 z */
-    -0x1.733334p-58f, 0x1.5bafc2p-5f, -0x1.c9d5bep-8f, 0x1.b9aad8p-3f,
+    -0x1.333334p-61f, 0x1.5bafc2p-5f, -0x1.c9d5bep-8f, 0x1.b9aad8p-3f,
     /* s = 6/8: node 69 x */
-    0x1.8p-59f, -0x1.c5db9ep-9f, 0x1.064a64p-15f, -0x1.167356p-2f,
+    0x1p-58f, -0x1.c5db9ep-9f, 0x1.064a64p-15f, -0x1.167356p-2f,
     /* s = 6/8: node 69 y */
-    0x1p-61f, 0x1.78e2dp-8f, 0x1.309522p-5f, 0x1.3ac7f4p-4f,
+    -0x1.cp-60f, 0x1.78e2dp-8f, 0x1.309522p-5f, 0x1.3ac7f4p-4f,
     /* s = 6/8: node 69 z */
-    -0x1p-56f, 0x1.f1a71cp-4f, -0x1.3049bcp-6f, 0x1.2175fcp-1f,
+    -0x1.39999ap-56f, 0x1.f1a71cp-4f, -0x1.3049bcp-6f, 0x1.2175fcp-1f,
     /* s = 6/8: node 70 x */
-    0x1.666666p-59f, 0x1.b1a48ep-5f, 0x1.06563p-10f, -0x1.17342ep-2f,
+    -0x1.333334p-59f, 0x1.b1a48ep-5f, 0x1.06563p-10f, -0x1.17342ep-2f,
     /* s = 6/8: node 70 y */
-    -0x1.466666p-58f, 0x1.31e742p-5f, 0x1.740fc2p-4f, 0x1.5a74d8p-3f,
+    -0x1.666666p-58f, 0x1.31e742p-5f, 0x1.740fc2p-4f, 0x1.5a74d8p-3f,
     /* s = 6/8: node 70 z */
-    -0x1.0cccccp-55f, 0x1.a3152ap-3f, -0x1.07138ap-4f, 0x1.15faaep+0f,
+    -0x1.4cccccp-56f, 0x1.a3152ap-3f, -0x1.07138ap-4f, 0x1.15faaep+0f,
     /* s = 6/8: node 71 x */
-    -0x1.e66666p-56f, 0x1.2cb2bep-2f, -0x1.5a8042p-4f, -0x1.fac096p-5f,
+    -0x1.d1999ap-57f, 0x1.2cb2bep-2f, -0x1.5a8042p-4f, -0x1.fac096p-5f,
     /* s = 6/8: node 71 y */
-    0x1.4p-58f, -0x1.5be43cp-6f, 0x1.f17576p-3f, 0x1.92bf94p-3f,
+    -0x1.666666p-59f, -0x1.5be43cp-6f, 0x1.f17576p-3f, 0x1.92bf94p-3f,
     /* s = 6/8: node 71 z */
-    -0x1.333334p-55f, 0x1.decc0cp-3f, -0x1.899d48p-4f, 0x1.92e90ap+0f,
+    -0x1.b33334p-55f, 0x1.decc0cp-3f, -0x1.899d48p-4f, 0x1.92e90ap+0f,
     /* s = 6/8: node 72 x */
-    -0x1.dp-56f, 0x1.3fc24ep-2f, 0x1.25c5cp-8f, 0x1.819c88p-5f,
+    -0x1.d26666p-57f, 0x1.3fc24ep-2f, 0x1.25c5cp-8f, 0x1.819c88p-5f,
     /* s = 6/8: node 72 y */
-    -0x1.e66666p-58f, 0x1.60feaap-5f, 0x1.906008p-2f, 0x1.afe23ap-3f,
+    -0x1.333334p-61f, 0x1.60feaap-5f, 0x1.906008p-2f, 0x1.afe23ap-3f,
     /* s = 6/8: node 72 z */
-    -0x1.4cccccp-56f, 0x1.3d9322p-4f, -0x1.ad6352p-4f, 0x1.b8fa3ep+0f,
+    -0x1.e66666p-56f, 0x1.3d9322p-4f, -0x1.ad6352p-4f, 0x1.b8fa3ep+0f,
     /* s = 6/8: node 73 x */
-    -0x1.266666p-58f, 0x1.0da6ep-2f, 0x1.d9ff94p-5f, 0x1.9f4f0ep-3f,
+    -0x1.79999ap-56f, 0x1.0da6ep-2f, 0x1.d9ff94p-5f, 0x1.9f4f0ep-3f,
     /* s = 6/8: node 73 y */
-    -0x1.d33334p-58f, 0x1.3d516cp-4f, 0x1.b8a30ep-3f, 0x1.623bf6p-3f,
+    -0x1.033334p-57f, 0x1.3d516cp-4f, 0x1.b8a30ep-3f, 0x1.623bf6p-3f,
     /* s = 6/8: node 73 z */
-    -0x1.b33334p-57f, -0x1.6f74a8p-5f, -0x1.6f2388p-4f, 0x1.776334p+0f,
+    -0x1.4cccccp-56f, -0x1.6f74a8p-5f, -0x1.6f2388p-4f, 0x1.776334p+0f,
     /* s = 6/8: node 74 x */
-    -0x1.4cccccp-58f, 0x1.2645b8p-3f, 0x1.1021aap-6f, 0x1.071378p-2f,
+    -0x1.f33334p-57f, 0x1.2645b8p-3f, 0x1.1021aap-6f, 0x1.071378p-2f,
     /* s = 6/8: node 74 y */
     -0x1.666666p-59f, 0x1.7d62fcp-6f, 0x1.873a44p-4f, 0x1.020e6ep-3f,
     /* s = 6/8: node 74 z */
-    -0x1.ccccccp-58f, -0x1.bb15cap-4f, -0x1.00b998p-4f, 0x1.06281ep+0f,
+    -0x1.666666p-57f, -0x1.bb15cap-4f, -0x1.00b998p-4f, 0x1.06281ep+0f,
     /* s = 6/8: node 75 x */
-    -0x1.333334p-59f, 0x1.e6273ap-5f, 0x1.2f65cap-7f, 0x1.e9959ap-3f,
+    -0x1.ccccccp-59f, 0x1.e6273ap-5f, 0x1.2f65cap-7f, 0x1.e9959ap-3f,
     /* s = 6/8: node 75 y */
-    -0x1.066666p-59f, 0x1.3095c8p-6f, 0x1.38e558p-5f, 0x1.16eed6p-4f,
+    -0x1p-59f, 0x1.3095c8p-6f, 0x1.38e558p-5f, 0x1.16eed6p-4f,
     /* s = 6/8: node 75 z */
     -0x1.99999ap-62f, -0x1.29efaap-4f, -0x1.c950eap-6f, 0x1.15e9a4p-1f,
     /* s = 6/8: node 76 x */
-    -0x1.b33334p-60f, 0x1.a57efcp-7f, 0x1.ccef9ap-14f, 0x1.f22d4cp-4f,
+    -0x1.4p-59f, 0x1.a57efcp-7f, 0x1.ccef9ap-14f, 0x1.f22d4cp-4f,
     /* s = 6/8: node 76 y */
-    -0x1.99999ap-61f, 0x1.3e1f88p-7f, 0x1.03733p-7f, 0x1.fdf4ep-6f,
+    -0x1.b33334p-61f, 0x1.3e1f88p-7f, 0x1.03733p-7f, 0x1.fdf4ep-6f,
     /* s = 6/8: node 76 z */
-    -0x1.666666p-59f, -0x1.675aep-6f, -0x1.062c12p-7f, 0x1.a72facp-3f,
+    -0x1.8p-59f, -0x1.675aep-6f, -0x1.062c12p-7f, 0x1.a72facp-3f,
     /* s = 6/8: node 77 x */
-    0x1.333334p-68f, -0x1.d71e78p-13f, -0x1.f2dd6ep-15f, 0x1.206decp-11f,
+    0x1.666666p-67f, -0x1.d71e78p-13f, -0x1.f2dd6ep-15f, 0x1.206decp-11f,
     /* s = 6/8: node 77 y */
-    0x1.8p-68f, -0x1.575ca6p-14f, 0x1.220e44p-15f, 0x1.36384p-12f,
+    0x1.8p-69f, -0x1.575ca6p-14f, 0x1.220e44p-15f, 0x1.36384p-12f,
     /* s = 6/8: node 77 z */
-    -0x1.4cccccp-65f, 0x1.0a495ap-12f, 0x1.15ad56p-14f, 0x1.bc68fcp-12f,
+    -0x1.ap-66f, 0x1.0a495ap-12f, 0x1.15ad56p-14f, 0x1.bc68fcp-12f,
     /* s = 6/8: node 78 x */
-    0x1p-69f, -0x1.6a6e9p-13f, 0x1.99922cp-14f, -0x1.08999p-11f,
+    0x1.466666p-66f, -0x1.6a6e9p-13f, 0x1.99922cp-14f, -0x1.08999p-11f,
     /* s = 6/8: node 78 y */
-    -0x1.666666p-69f, 0x1.d01a1p-14f, 0x1.78509p-20f, 0x1.e4db18p-12f,
+    -0x1.d9999ap-67f, 0x1.d01a1p-14f, 0x1.78509p-20f, 0x1.e4db18p-12f,
     /* s = 6/8: node 78 z */
-    -0x1.99999ap-71f, -0x1.c61a7p-14f, 0x1.a325bep-14f, 0x1.6ac4ap-12f,
+    0x1.8p-68f, -0x1.c61a7p-14f, 0x1.a325bep-14f, 0x1.6ac4ap-12f,
     /* s = 6/8: node 79 x */
-    -0x1.99999ap-65f, -0x1.3db30ep-11f, -0x1.848128p-10f, -0x1.7603b8p-4f,
+    0x1.e66666p-61f, -0x1.3db30ep-11f, -0x1.848128p-10f, -0x1.7603b8p-4f,
     /* s = 6/8: node 79 y */
-    -0x1.99999ap-64f, 0x1.596772p-11f, 0x1.6881a4p-8f, 0x1.b83f4ep-5f,
+    -0x1.99999ap-61f, 0x1.596772p-11f, 0x1.6881a4p-8f, 0x1.b83f4ep-5f,
     /* s = 6/8: node 79 z */
-    -0x1.d9999ap-59f, 0x1.6ab7b6p-6f, -0x1.defd72p-8f, 0x1.324c04p-3f,
+    -0x1p-58f, 0x1.6ab7b6p-6f, -0x1.defd72p-8f, 0x1.324c04p-3f,
     /* s = 6/8: node 80 x */
-    0x1.8cccccp-59f, 0x1.e3f89ap-8f, -0x1.0d1ddcp-8f, -0x1.6f06dcp-3f,
+    0x1.ccccccp-60f, 0x1.e3f89ap-8f, -0x1.0d1ddcp-8f, -0x1.6f06dcp-3f,
     /* s = 6/8: node 80 y */
-    -0x1.99999ap-63f, 0x1.08182ep-7f, 0x1.8fd9f4p-6f, 0x1.d46d58p-4f,
+    -0x1.b33334p-60f, 0x1.08182ep-7f, 0x1.8fd9f4p-6f, 0x1.d46d58p-4f,
     /* s = 6/8: node 80 z */
-    -0x1.8p-58f, 0x1.464714p-4f, -0x1.3ef9dap-5f, 0x1.a8f782p-2f,
+    -0x1.8cccccp-57f, 0x1.464714p-4f, -0x1.3ef9dap-5f, 0x1.a8f782p-2f,
     /* s = 6/8: node 81 x */
-    -0x1.99999ap-61f, 0x1.b9b128p-5f, -0x1.bf4518p-7f, -0x1.6f53f2p-3f,
+    -0x1.666666p-59f, 0x1.b9b128p-5f, -0x1.bf4518p-7f, -0x1.6f53f2p-3f,
     /* s = 6/8: node 81 y */
-    -0x1.99999ap-59f, 0x1.7be6b2p-9f, 0x1.e9014cp-5f, 0x1.7500a2p-3f,
+    -0x1.e66666p-60f, 0x1.7be6b2p-9f, 0x1.e9014cp-5f, 0x1.7500a2p-3f,
     /* s = 6/8: node 81 z */
-    -0x1.133334p-56f, 0x1.d9fd4ap-4f, -0x1.37894ep-4f, 0x1.830adcp-1f,
+    -0x1.466666p-56f, 0x1.d9fd4ap-4f, -0x1.37894ep-4f, 0x1.830adcp-1f,
     /* s = 6/8: node 82 x */
-    -0x1.6p-58f, 0x1.ab4b94p-4f, -0x1.09f032p-6f, -0x1.cc71acp-4f,
+    -0x1.79999ap-58f, 0x1.ab4b94p-4f, -0x1.09f032p-6f, -0x1.cc71acp-4f,
     /* s = 6/8: node 82 y */
-    -0x1.333334p-60f, 0x1.2b9716p-7f, 0x1.e207cp-4f, 0x1.017d4ep-2f,
+    -0x1p-58f, 0x1.2b9716p-7f, 0x1.e207cp-4f, 0x1.017d4ep-2f,
     /* s = 6/8: node 82 z */
-    -0x1.266666p-56f, 0x1.eb4e3ep-4f, -0x1.01e97ep-3f, 0x1.17499p+0f,
+    -0x1.666666p-57f, 0x1.eb4e3ep-4f, -0x1.01e97ep-3f, 0x1.17499p+0f,
     /* s = 6/8: node 83 x */
-    -0x1.30ccccp-57f, 0x1.28435p-3f, 0x1.c01564p-10f, 0x1.bb9c0ap-6f,
+    -0x1.fb3334p-57f, 0x1.28435p-3f, 0x1.c01564p-10f, 0x1.bb9c0ap-6f,
     /* s = 6/8: node 83 y */
-    -0x1.99999ap-59f, 0x1.99777cp-6f, 0x1.2cbc6ep-3f, 0x1.2b1778p-2f,
+    -0x1.4cccccp-58f, 0x1.99777cp-6f, 0x1.2cbc6ep-3f, 0x1.2b1778p-2f,
     /* s = 6/8: node 83 z */
-    -0x1.666666p-58f, 0x1.6103cp-5f, -0x1.27652ap-3f, 0x1.325076p+0f,
+    -0x1.19999ap-56f, 0x1.6103cp-5f, -0x1.27652ap-3f, 0x1.325076p+0f,
     /* s = 6/8: node 84 x */
-    -0x1.89999ap-57f, 0x1.e3dfap-4f, 0x1.c562c8p-7f, 0x1.1e0acp-3f,
+    -0x1p-57f, 0x1.e3dfap-4f, 0x1.c562c8p-7f, 0x1.1e0acp-3f,
     /* s = 6/8: node 84 y */
-    -0x1.733334p-58f, 0x1.fe8bc8p-6f, 0x1.db06a8p-4f, 0x1.fb5ed8p-3f,
+    -0x1.4p-58f, 0x1.fe8bc8p-6f, 0x1.db06a8p-4f, 0x1.fb5ed8p-3f,
     /* s = 6/8: node 84 z */
-    -0x1p-57f, -0x1.52e89p-5f, -0x1.eba902p-4f, 0x1.09e188p+0f,
+    -0x1.4cccccp-57f, -0x1.52e89p-5f, -0x1.eba902p-4f, 0x1.09e188p+0f,
     /* s = 6/8: node 85 x */
-    -0x1.5p-57f, 0x1.4b080ep-4f, 0x1.2d0944p-6f, 0x1.7b786p-3f,
+    -0x1.89999ap-57f, 0x1.4b080ep-4f, 0x1.2d0944p-6f, 0x1.7b786p-3f,
     /* s = 6/8: node 85 y */
-    -0x1.8p-58f, 0x1.d8930ap-6f, 0x1.0579f4p-4f, 0x1.6dc058p-3f,
+    -0x1.4p-59f, 0x1.d8930ap-6f, 0x1.0579f4p-4f, 0x1.6dc058p-3f,
     /* s = 6/8: node 85 z */
-    -0x1.333334p-59f, -0x1.0e42fcp-4f, -0x1.3a6472p-4f, 0x1.798198p-1f,
+    0x1p-59f, -0x1.0e42fcp-4f, -0x1.3a6472p-4f, 0x1.798198p-1f,
     /* s = 6/8: node 86 x */
-    -0x1.99999ap-59f, 0x1.168e92p-5f, 0x1.d2cd12p-8f, 0x1.68f38cp-3f,
+    -0x1.59999ap-59f, 0x1.168e92p-5f, 0x1.d2cd12p-8f, 0x1.68f38cp-3f,
     /* s = 6/8: node 86 y */
-    -0x1.59999ap-59f, 0x1.392d86p-6f, 0x1.aa1e5ap-6f, 0x1.aa0fe8p-4f,
+    -0x1.4cccccp-59f, 0x1.392d86p-6f, 0x1.aa1e5ap-6f, 0x1.aa0fe8p-4f,
     /* s = 6/8: node 86 z */
-    -0x1.99999ap-62f, -0x1.9dc084p-5f, -0x1.37625cp-5f, 0x1.95a08ep-2f,
+    -0x1.4cccccp-58f, -0x1.9dc084p-5f, -0x1.37625cp-5f, 0x1.95a08ep-2f,
     /* s = 6/8: node 87 x */
-    -0x1.4cccccp-59f, 0x1.54d9d6p-7f, 0x1.acd164p-9f, 0x1.73df6cp-4f,
+    -0x1.2cccccp-59f, 0x1.54d9d6p-7f, 0x1.acd164p-9f, 0x1.73df6cp-4f,
     /* s = 6/8: node 87 y */
-    -0x1.4cccccp-61f, 0x1.ef9ff8p-7f, 0x1.b899a8p-8f, 0x1.83acd8p-5f,
+    -0x1.6p-60f, 0x1.ef9ff8p-7f, 0x1.b899a8p-8f, 0x1.83acd8p-5f,
     /* s = 6/8: node 87 z */
-    -0x1p-60f, -0x1.5ec14p-7f, -0x1.0897c2p-7f, 0x1.2e4f62p-3f,
+    -0x1.8p-60f, -0x1.5ec14p-7f, -0x1.0897c2p-7f, 0x1.2e4f62p-3f,
     /* s = 6/8: node 88 x */
-    0x1.266666p-67f, -0x1.24d52cp-13f, -0x1.87178p-14f, 0x1.aa9c24p-12f,
+    0x1.99999ap-72f, -0x1.24d52cp-13f, -0x1.87178p-14f, 0x1.aa9c24p-12f,
     /* s = 6/8: node 88 y */
     0x1.19999ap-68f, -0x1.4d31ccp-14f, 0x1.4a497ap-21f, 0x1.c8125p-12f,
     /* s = 6/8: node 88 z */
-    -0x1.2p-66f, 0x1.be733ep-13f, 0x1.99bc04p-14f, 0x1.563b54p-12f,
+    -0x1.29999ap-66f, 0x1.be733ep-13f, 0x1.99bc04p-14f, 0x1.563b54p-12f,
     /* s = 6/8: node 89 x */
-    0x1.6p-67f, -0x1.04b3e2p-14f, 0x1.ecbe42p-15f, -0x1.cb6bd6p-13f,
+    0x1.19999ap-68f, -0x1.04b3e2p-14f, 0x1.ecbe42p-15f, -0x1.cb6bd6p-13f,
     /* s = 6/8: node 89 y */
-    -0x1.59999ap-66f, 0x1.e8a308p-14f, -0x1.5bf7p-15f, 0x1.d4a49ap-12f,
+    -0x1.19999ap-66f, 0x1.e8a308p-14f, -0x1.5bf7p-15f, 0x1.d4a49ap-12f,
     /* s = 6/8: node 89 z */
-    0x1.ccccccp-68f, -0x1.90fe92p-14f, 0x1.bf7dfcp-14f, 0x1.ed236p-13f,
+    -0x1.ccccccp-70f, -0x1.90fe92p-14f, 0x1.bf7dfcp-14f, 0x1.ed236p-13f,
     /* s = 6/8: node 90 x */
-    0x1.4cccccp-61f, -0x1.b31962p-11f, -0x1.aaec74p-9f, -0x1.b55f3ap-5f,
+    0x1.333334p-60f, -0x1.b31962p-11f, -0x1.aaec74p-9f, -0x1.b55f3ap-5f,
     /* s = 6/8: node 90 y */
-    -0x1.0cccccp-60f, -0x1.b1b392p-11f, 0x1.f39a1ap-10f, 0x1.928ed6p-5f,
+    -0x1.666666p-62f, -0x1.b1b392p-11f, 0x1.f39a1ap-10f, 0x1.928ed6p-5f,
     /* s = 6/8: node 90 z */
-    -0x1.4cccccp-60f, 0x1.f29814p-8f, -0x1.b91afcp-9f, 0x1.32f358p-4f,
+    -0x1.ccccccp-62f, 0x1.f29814p-8f, -0x1.b91afcp-9f, 0x1.32f358p-4f,
     /* s = 6/8: node 91 x */
-    0x1.99999ap-61f, 0x1.ed78c6p-8f, -0x1.0cc394p-7f, -0x1.a2c134p-4f,
+    0x1.99999ap-64f, 0x1.ed78c6p-8f, -0x1.0cc394p-7f, -0x1.a2c134p-4f,
     /* s = 6/8: node 91 y */
-    -0x1.99999ap-62f, 0x1.2d40aep-12f, 0x1.44a20cp-7f, 0x1.b4bff4p-4f,
+    -0x1.e66666p-60f, 0x1.2d40aep-12f, 0x1.44a20cp-7f, 0x1.b4bff4p-4f,
     /* s = 6/8: node 91 z */
-    -0x1.cp-58f, 0x1.12c5d6p-5f, -0x1.8e1738p-6f, 0x1.b364ecp-3f,
+    -0x1.8p-58f, 0x1.12c5d6p-5f, -0x1.8e1738p-6f, 0x1.b364ecp-3f,
     /* s = 6/8: node 92 x */
-    -0x1.99999ap-61f, 0x1.4ed44p-6f, -0x1.5e78d8p-7f, -0x1.a09276p-4f,
+    -0x1.ccccccp-61f, 0x1.4ed44p-6f, -0x1.5e78d8p-7f, -0x1.a09276p-4f,
     /* s = 6/8: node 92 y */
-    0x1.99999ap-64f, 0x1.acff1ap-8f, 0x1.7b8d9ap-6f, 0x1.7085ap-3f,
+    -0x1.a66666p-59f, 0x1.acff1ap-8f, 0x1.7b8d9ap-6f, 0x1.7085ap-3f,
     /* s = 6/8: node 92 z */
-    -0x1.8p-57f, 0x1.decd12p-5f, -0x1.c3b484p-5f, 0x1.a92ad8p-2f,
+    -0x1.19999ap-56f, 0x1.decd12p-5f, -0x1.c3b484p-5f, 0x1.a92ad8p-2f,
     /* s = 6/8: node 93 x */
-    -0x1.933334p-59f, 0x1.3345fep-5f, -0x1.7d2f4cp-7f, -0x1.db48ccp-5f,
+    -0x1.4cccccp-61f, 0x1.3345fep-5f, -0x1.7d2f4cp-7f, -0x1.db48ccp-5f,
     /* s = 6/8: node 93 y */
-    -0x1.19999ap-59f, 0x1.27ea28p-7f, 0x1.4e6f68p-5f, 0x1.f18a88p-3f,
+    -0x1.99999ap-59f, 0x1.27ea28p-7f, 0x1.4e6f68p-5f, 0x1.f18a88p-3f,
     /* s = 6/8: node 93 z */
-    -0x1.e66666p-58f, 0x1.a0f992p-5f, -0x1.493b2cp-4f, 0x1.1eb766p-1f,
+    -0x1.99999ap-57f, 0x1.a0f992p-5f, -0x1.493b2cp-4f, 0x1.1eb766p-1f,
     /* s = 6/8: node 94 x */
-    -0x1.fp-59f, 0x1.5414acp-5f, -0x1.57c9cap-10f, 0x1.fb7cd6p-8f,
+    -0x1.3f3334p-59f, 0x1.5414acp-5f, -0x1.57c9cap-10f, 0x1.fb7cd6p-8f,
     /* s = 6/8: node 94 y */
-    -0x1.4cccccp-58f, 0x1.d69808p-7f, 0x1.d2ed7ep-5f, 0x1.0330e2p-2f,
+    -0x1.333334p-60f, 0x1.d69808p-7f, 0x1.d2ed7ep-5f, 0x1.0330e2p-2f,
     /* s = 6/8: node 94 z */
-    -0x1.e66666p-57f, 0x1.4fbd44p-6f, -0x1.700a7p-4f, 0x1.3c0768p-1f,
+    -0x1p-57f, 0x1.4fbd44p-6f, -0x1.700a7p-4f, 0x1.3c0768p-1f,
     /* s = 6/8: node 95 x */
-    -0x1.0cccccp-58f, 0x1.85be48p-5f, 0x1.b2840cp-7f, 0x1.29090cp-4f,
+    -0x1.666666p-59f, 0x1.85be48p-5f, 0x1.b2840cp-7f, 0x1.29090cp-4f,
     /* s = 6/8: node 95 y */
-    -0x1p-58f, 0x1.5beb76p-6f, 0x1.5d87dep-5f, 0x1.e3e084p-3f,
+    -0x1.333334p-58f, 0x1.5beb76p-6f, 0x1.5d87dep-5f, 0x1.e3e084p-3f,
     /* s = 6/8: node 95 z */
-    -0x1.b33334p-57f, -0x1.e4e688p-7f, -0x1.453cc8p-4f, 0x1.1a1bdcp-1f,
+    -0x1.4cccccp-58f, -0x1.e4e688p-7f, -0x1.453cc8p-4f, 0x1.1a1bdcp-1f,
     /* s = 6/8: node 96 x */
-    -0x1.99999ap-58f, 0x1.164a78p-5f, 0x1.8455f8p-7f, 0x1.b3ec1cp-4f,
+    -0x1.133334p-58f, 0x1.164a78p-5f, 0x1.8455f8p-7f, 0x1.b3ec1cp-4f,
     /* s = 6/8: node 96 y */
-    -0x1.19999ap-59f, 0x1.e3ab56p-7f, 0x1.8d9586p-6f, 0x1.63c35ap-3f,
+    -0x1.333334p-59f, 0x1.e3ab56p-7f, 0x1.8d9586p-6f, 0x1.63c35ap-3f,
     /* s = 6/8: node 96 z */
-    -0x1.266666p-57f, -0x1.0eff28p-5f, -0x1.b7f5d8p-5f, 0x1.98567ep-2f,
+    -0x1p-57f, -0x1.0eff28p-5f, -0x1.b7f5d8p-5f, 0x1.98567ep-2f,
     /* s = 6/8: node 97 x */
-    -0x1.733334p-59f, 0x1.0cbd86p-6f, 0x1.3eb792p-7f, 0x1.a87066p-4f,
+    -0x1.4cccccp-60f, 0x1.0cbd86p-6f, 0x1.3eb792p-7f, 0x1.a87066p-4f,
     /* s = 6/8: node 97 y */
-    -0x1p-60f, 0x1.ee7c78p-7f, 0x1.74939ap-7f, 0x1.a9ee54p-4f,
+    -0x1.4p-59f, 0x1.ee7c78p-7f, 0x1.74939ap-7f, 0x1.a9ee54p-4f,
     /* s = 6/8: node 97 z */
-    -0x1.ccccccp-60f, -0x1.80002ap-6f, -0x1.9aa766p-6f, 0x1.aaf69ep-3f,
+    -0x1.333334p-61f, -0x1.80002ap-6f, -0x1.9aa766p-6f, 0x1.aaf69ep-3f,
     /* s = 6/8: node 98 x */
-    -0x1p-61f, 0x1.4594fcp-8f, 0x1.b720f2p-9f, 0x1.b160c2p-5f,
+    -0x1.e66666p-61f, 0x1.4594fcp-8f, 0x1.b720f2p-9f, 0x1.b160c2p-5f,
     /* s = 6/8: node 98 y */
-    -0x1.ccccccp-61f, 0x1.7efed6p-7f, 0x1.844c1cp-9f, 0x1.763966p-5f,
+    -0x1.79999ap-60f, 0x1.7efed6p-7f, 0x1.844c1cp-9f, 0x1.763966p-5f,
     /* s = 6/8: node 98 z */
-    -0x1.333334p-62f, -0x1.c06ca8p-10f, -0x1.72e03p-9f, 0x1.2dbaaap-4f,
+    -0x1.59999ap-60f, -0x1.c06ca8p-10f, -0x1.72e03p-9f, 0x1.2dbaaap-4f,
     /* s = 6/8: node 99 x */
-    0x1.8p-68f, -0x1.07964cp-14f, -0x1.147b3p-14f, 0x1.f58bfep-13f,
+    -0x1.99999ap-72f, -0x1.07964cp-14f, -0x1.147b3p-14f, 0x1.f58bfep-13f,
     /* s = 6/8: node 99 y */
-    0x1.666666p-69f, -0x1.75348cp-14f, -0x1.9b4dcep-15f, 0x1.d148eap-12f,
+    0x1.333334p-69f, -0x1.75348cp-14f, -0x1.9b4dcep-15f, 0x1.d148eap-12f,
     /* s = 6/8: node 99 z */
-    -0x1.d9999ap-67f, 0x1.629526p-13f, 0x1.0abd0ep-13f, 0x1.098e8cp-12f,
+    -0x1.533334p-66f, 0x1.629526p-13f, 0x1.0abd0ep-13f, 0x1.098e8cp-12f,
     /* s = 6/8: node 100 x */
-    0x1.99999ap-69f, -0x1.762fb4p-15f, 0x1.c84fccp-15f, -0x1.b5bf0ap-14f,
+    0x1.09999ap-67f, -0x1.762fb4p-15f, 0x1.c84fccp-15f, -0x1.b5bf0ap-14f,
     /* s = 6/8: node 100 y */
-    -0x1.a66666p-68f, 0x1.34b328p-15f, -0x1.40b452p-16f, 0x1.b565ccp-13f,
+    -0x1.4p-68f, 0x1.34b328p-15f, -0x1.40b452p-16f, 0x1.b565ccp-13f,
     /* s = 6/8: node 100 z */
-    0x1.333334p-71f, -0x1.1e4fp-14f, 0x1.6fc7c8p-14f, 0x1.83633ap-13f,
+    0x1.333334p-69f, -0x1.1e4fp-14f, 0x1.6fc7c8p-14f, 0x1.83633ap-13f,
     /* s = 6/8: node 101 x */
-    -0x1.266666p-62f, 0x1.31762p-9f, -0x1.3c15e2p-8f, -0x1.589baap-6f,
+    -0x1.333334p-63f, 0x1.31762p-9f, -0x1.3c15e2p-8f, -0x1.589baap-6f,
     /* s = 6/8: node 101 y */
-    -0x1.0cccccp-62f, -0x1.73e286p-9f, 0x1.1b697ep-9f, 0x1.76c608p-6f,
+    -0x1.e66666p-63f, -0x1.73e286p-9f, 0x1.1b697ep-9f, 0x1.76c608p-6f,
     /* s = 6/8: node 101 z */
-    0x1.19999ap-63f, -0x1.fd10d2p-9f, 0x1.3f61b8p-8f, 0x1.7658ep-6f,
+    0x1.ccccccp-63f, -0x1.fd10d2p-9f, 0x1.3f61b8p-8f, 0x1.7658ep-6f,
     /* s = 6/8: node 102 x */
-    0x1.666666p-62f, 0x1.7ab36p-10f, -0x1.15a698p-7f, -0x1.6bf682p-5f,
+    0x1.8p-62f, 0x1.7ab36p-10f, -0x1.15a698p-7f, -0x1.6bf682p-5f,
     /* s = 6/8: node 102 y */
-    -0x1p-62f, 0x1.8263f6p-10f, 0x1.bb6088p-10f, 0x1.c20054p-5f,
+    -0x1.d9999ap-60f, 0x1.8263f6p-10f, 0x1.bb6088p-10f, 0x1.c20054p-5f,
     /* s = 6/8: node 102 z */
-    -0x1.4p-59f, 0x1.b8f6dcp-8f, -0x1.161294p-8f, 0x1.3678cep-4f,
+    -0x1.4p-60f, 0x1.b8f6dcp-8f, -0x1.161294p-8f, 0x1.3678cep-4f,
     /* s = 6/8: node 103 x */
-    0x1.b33334p-62f, 0x1.9b412cp-8f, -0x1.71c0a6p-7f, -0x1.6be7bep-5f,
+    0x1.19999ap-62f, 0x1.9b412cp-8f, -0x1.71c0a6p-7f, -0x1.6be7bep-5f,
     /* s = 6/8: node 103 y */
-    -0x1.19999ap-59f, 0x1.21409ep-9f, 0x1.5b5b78p-8f, 0x1.758cb4p-4f,
+    -0x1.066666p-59f, 0x1.21409ep-9f, 0x1.5b5b78p-8f, 0x1.758cb4p-4f,
     /* s = 6/8: node 103 z */
-    -0x1.8p-58f, 0x1.b6f54ep-7f, -0x1.c47362p-7f, 0x1.373256p-3f,
+    -0x1.cp-59f, 0x1.b6f54ep-7f, -0x1.c47362p-7f, 0x1.373256p-3f,
     /* s = 6/8: node 104 x */
-    -0x1p-62f, 0x1.0c6398p-7f, -0x1.c0b33cp-8f, -0x1.de12f6p-6f,
+    -0x1.19999ap-62f, 0x1.0c6398p-7f, -0x1.c0b33cp-8f, -0x1.de12f6p-6f,
     /* s = 6/8: node 104 y */
-    -0x1.266666p-59f, 0x1.ebd702p-9f, 0x1.402c2cp-7f, 0x1.e7ee3ap-4f,
+    -0x1.19999ap-59f, 0x1.ebd702p-9f, 0x1.402c2cp-7f, 0x1.e7ee3ap-4f,
     /* s = 6/8: node 104 z */
-    -0x1.333334p-58f, 0x1.e564c6p-7f, -0x1.8dec54p-6f, 0x1.b9b066p-3f,
+    -0x1.0cccccp-58f, 0x1.e564c6p-7f, -0x1.8dec54p-6f, 0x1.b9b066p-3f,
     /* s = 6/8: node 105 x */
-    -0x1.acccccp-61f, 0x1.a65332p-7f, -0x1.353e4p-13f, 0x1.09cbd8p-8f,
+    -0x1.fp-61f, 0x1.a65332p-7f, -0x1.353e4p-13f, 0x1.09cbd8p-8f,
     /* s = 6/8: node 105 y */
-    -0x1.4p-59f, 0x1.946784p-8f, 0x1.1c1226p-8f, 0x1.2a820ep-3f,
+    -0x1.19999ap-59f, 0x1.946784p-8f, 0x1.1c1226p-8f, 0x1.2a820ep-3f,
     /* s = 6/8: node 105 z */
-    -0x1p-60f, 0x1.b32428p-8f, -0x1.e6bfa4p-6f, 0x1.f1e2fap-3f,
+    -0x1.066666p-57f, 0x1.b32428p-8f, -0x1.e6bfa4p-6f, 0x1.f1e2fap-3f,
     /* s = 6/8: node 106 x */
-    -0x1.cp-61f, 0x1.3b7ed2p-7f, 0x1.a0b04cp-8f, 0x1.fddb68p-6f,
+    -0x1.2p-60f, 0x1.3b7ed2p-7f, 0x1.a0b04cp-8f, 0x1.fddb68p-6f,
     /* s = 6/8: node 106 y */
-    -0x1.8p-60f, 0x1.83f416p-9f, 0x1.35cdb6p-7f, 0x1.f17fd4p-4f,
+    -0x1.ccccccp-61f, 0x1.83f416p-9f, 0x1.35cdb6p-7f, 0x1.f17fd4p-4f,
     /* s = 6/8: node 106 z */
-    -0x1.266666p-58f, -0x1.2421fep-8f, -0x1.82859ep-6f, 0x1.b01b64p-3f,
+    -0x1.e66666p-59f, -0x1.2421fep-8f, -0x1.82859ep-6f, 0x1.b01b64p-3f,
     /* s = 6/8: node 107 x */
     -0x1.cp-61f, 0x1.2c689cp-7f, 0x1.713cccp-7f, 0x1.823b1cp-5f,
     /* s = 6/8: node 107 y */
-    -0x1.cp-60f, 0x1.d9b02ep-8f, 0x1.8a13b8p-8f, 0x1.77999ep-4f,
+    -0x1.ccccccp-60f, 0x1.d9b02ep-8f, 0x1.8a13b8p-8f, 0x1.77999ep-4f,
     /* s = 6/8: node 107 z */
-    -0x1.666666p-60f, -0x1.60ff0ap-8f, -0x1.a7d862p-7f, 0x1.314d74p-3f,
+    -0x1.99999ap-60f, -0x1.60ff0ap-8f, -0x1.a7d862p-7f, 0x1.314d74p-3f,
     /* s = 6/8: node 108 x */
-    -0x1.6p-60f, 0x1.32de6p-8f, 0x1.18c4eap-7f, 0x1.706de2p-5f,
+    -0x1.266666p-60f, 0x1.32de6p-8f, 0x1.18c4eap-7f, 0x1.706de2p-5f,
     /* s = 6/8: node 108 y */
-    -0x1.59999ap-60f, 0x1.724664p-8f, 0x1.87f7eap-9f, 0x1.aea248p-5f,
+    -0x1p-60f, 0x1.724664p-8f, 0x1.87f7eap-9f, 0x1.aea248p-5f,
     /* s = 6/8: node 108 z */
-    -0x1.4cccccp-60f, -0x1.746122p-10f, -0x1.9ee8fap-9f, 0x1.2decf2p-4f,
+    0x1p-61f, -0x1.746122p-10f, -0x1.9ee8fap-9f, 0x1.2decf2p-4f,
     /* s = 6/8: node 109 x */
-    -0x1.333334p-62f, 0x1.0386d2p-8f, 0x1.551ee6p-8f, 0x1.706b54p-6f,
+    -0x1.666666p-62f, 0x1.0386d2p-8f, 0x1.551ee6p-8f, 0x1.706b54p-6f,
     /* s = 6/8: node 109 y */
-    -0x1.8cccccp-61f, 0x1.c32844p-8f, 0x1.6bf568p-9f, 0x1.760d0ep-6f,
+    -0x1.a66666p-61f, 0x1.c32844p-8f, 0x1.6bf568p-9f, 0x1.760d0ep-6f,
     /* s = 6/8: node 109 z */
-    -0x1.733334p-61f, 0x1.d1f7b2p-8f, 0x1.68de32p-8f, 0x1.80127p-6f,
+    -0x1.79999ap-61f, 0x1.d1f7b2p-8f, 0x1.68de32p-8f, 0x1.80127p-6f,
     /* s = 6/8: node 110 x */
-    0x1.b33334p-70f, -0x1.271058p-15f, -0x1.d89046p-15f, 0x1.5f76c2p-14f,
+    0x1.333334p-71f, -0x1.271058p-15f, -0x1.d89046p-15f, 0x1.5f76c2p-14f,
     /* s = 6/8: node 110 y */
-    -0x1.b33334p-69f, -0x1.69abaep-16f, -0x1.818bd8p-16f, 0x1.8c2c9ap-13f,
+    -0x1.19999ap-69f, -0x1.69abaep-16f, -0x1.818bd8p-16f, 0x1.8c2c9ap-13f,
     /* s = 6/8: node 110 z */
-    -0x1.0cccccp-67f, 0x1.f29704p-14f, 0x1.858976p-14f, 0x1.6a0216p-13f,
+    -0x1.233334p-67f, 0x1.f29704p-14f, 0x1.858976p-14f, 0x1.6a0216p-13f,
     /* s = 6/8: node 111 x */
-    0x1.e66666p-70f, -0x1.9f0312p-16f, 0x1.43ed62p-15f, 0x1.42998p-14f,
+    -0x1.99999ap-73f, -0x1.9f0312p-16f, 0x1.43ed62p-15f, 0x1.42998p-14f,
     /* s = 6/8: node 111 y */
-    0x1.99999ap-73f, 0x1.caacb4p-16f, -0x1.82ba5cp-16f, -0x1.8edad6p-14f,
+    -0x1.19999ap-70f, 0x1.caacb4p-16f, -0x1.82ba5cp-16f, -0x1.8edad6p-14f,
     /* s = 6/8: node 111 z */
-    -0x1.6b3334p-68f, 0x1.ffff88p-15f, -0x1.2fc878p-14f, 0x1.b7dba4p-16f,
+    -0x1.08ccccp-67f, 0x1.ffff88p-15f, -0x1.2fc878p-14f, 0x1.b7dba4p-16f,
     /* s = 6/8: node 112 x */
-    0x1.333334p-70f, -0x1.24f42cp-15f, 0x1.a254c2p-16f, -0x1.b50a4ep-13f,
+    0x1.cp-68f, -0x1.24f42cp-15f, 0x1.a254c2p-16f, -0x1.b50a4ep-13f,
     /* s = 6/8: node 112 y */
-    -0x1p-68f, 0x1.c2229ap-15f, -0x1.0aa90ep-15f, 0x1.707714p-14f,
+    -0x1.066666p-68f, 0x1.c2229ap-15f, -0x1.0aa90ep-15f, 0x1.707714p-14f,
     /* s = 6/8: node 112 z */
-    0x1.266666p-69f, -0x1.23b8e6p-14f, 0x1.7d7c86p-14f, 0x1.6db782p-13f,
+    0x1.266666p-68f, -0x1.23b8e6p-14f, 0x1.7d7c86p-14f, 0x1.6db782p-13f,
     /* s = 6/8: node 113 x */
-    0x1.59999ap-67f, -0x1.d93ap-15f, 0x1.5f7bd6p-14f, -0x1.d0858p-12f,
+    0x1.b33334p-67f, -0x1.d93ap-15f, 0x1.5f7bd6p-14f, -0x1.d0858p-12f,
     /* s = 6/8: node 113 y */
-    -0x1.a66666p-68f, 0x1.3990ap-14f, -0x1.8dc602p-15f, 0x1.fdd47p-13f,
+    -0x1.d9999ap-68f, 0x1.3990ap-14f, -0x1.8dc602p-15f, 0x1.fdd47p-13f,
     /* s = 6/8: node 113 z */
-    0x1.8cccccp-68f, -0x1.790f48p-14f, 0x1.fef448p-14f, 0x1.f8b1e6p-13f,
+    0x1.f33334p-68f, -0x1.790f48p-14f, 0x1.fef448p-14f, 0x1.f8b1e6p-13f,
     /* s = 6/8: node 114 x */
-    0x1.59999ap-67f, -0x1.ecc7e8p-17f, 0x1.6a6f38p-14f, -0x1.f7304cp-12f,
+    0x1.666666p-68f, -0x1.ecc7e8p-17f, 0x1.6a6f38p-14f, -0x1.f7304cp-12f,
     /* s = 6/8: node 114 y */
-    -0x1.666666p-67f, 0x1.92a4bap-14f, -0x1.0e88f6p-13f, 0x1.c50586p-12f,
+    -0x1.e66666p-67f, 0x1.92a4bap-14f, -0x1.0e88f6p-13f, 0x1.c50586p-12f,
     /* s = 6/8: node 114 z */
-    0x1.59999ap-67f, -0x1.2545c4p-14f, 0x1.4a70f8p-13f, 0x1.8a02d4p-12f,
+    0x1.8p-67f, -0x1.2545c4p-14f, 0x1.4a70f8p-13f, 0x1.8a02d4p-12f,
     /* s = 6/8: node 115 x */
     -0x1.99999ap-70f, 0x1.95072cp-15f, 0x1.465596p-14f, -0x1.58c32cp-12f,
     /* s = 6/8: node 115 y */
-    -0x1.0cccccp-66f, 0x1.38642ep-14f, -0x1.d15444p-13f, 0x1.14abf8p-11f,
+    -0x1.333334p-66f, 0x1.38642ep-14f, -0x1.d15444p-13f, 0x1.14abf8p-11f,
     /* s = 6/8: node 115 z */
-    0x1.ccccccp-70f, -0x1.93eb38p-15f, 0x1.c422bp-13f, 0x1.68df92p-12f,
+    0x1.0cccccp-67f, -0x1.93eb38p-15f, 0x1.c422bp-13f, 0x1.68df92p-12f,
     /* s = 6/8: node 116 x */
-    -0x1.10ccccp-66f, 0x1.b23974p-13f, -0x1.4635acp-20f, 0x1.c80ap-15f,
+    -0x1.333334p-66f, 0x1.b23974p-13f, -0x1.4635acp-20f, 0x1.c80ap-15f,
     /* s = 6/8: node 116 y */
-    -0x1.8p-68f, 0x1.298eccp-16f, -0x1.cd065ep-13f, 0x1.3ee11ep-11f,
+    -0x1p-66f, 0x1.298eccp-16f, -0x1.cd065ep-13f, 0x1.3ee11ep-11f,
     /* s = 6/8: node 116 z */
-    -0x1.cp-67f, 0x1.a302aep-15f, 0x1.c7e97ap-13f, 0x1.261898p-11f,
+    -0x1.8cccccp-67f, 0x1.a302aep-15f, 0x1.c7e97ap-13f, 0x1.261898p-11f,
     /* s = 6/8: node 117 x */
-    -0x1.8cccccp-68f, 0x1.440736p-15f, -0x1.708952p-14f, 0x1.407afap-12f,
+    -0x1.19999ap-68f, 0x1.440736p-15f, -0x1.708952p-14f, 0x1.407afap-12f,
     /* s = 6/8: node 117 y */
-    -0x1.b33334p-68f, -0x1.9749eap-15f, -0x1.cda55ep-13f, 0x1.32dfep-11f,
+    -0x1.4cccccp-67f, -0x1.9749eap-15f, -0x1.cda55ep-13f, 0x1.32dfep-11f,
     /* s = 6/8: node 117 z */
-    -0x1.4cccccp-68f, 0x1.22437ep-14f, 0x1.c373eep-13f, 0x1.a12bc2p-12f,
+    -0x1p-68f, 0x1.22437ep-14f, 0x1.c373eep-13f, 0x1.a12bc2p-12f,
     /* s = 6/8: node 118 x */
-    -0x1.333334p-67f, 0x1.f459bcp-17f, -0x1.4603b4p-14f, 0x1.e06fb4p-12f,
+    -0x1.4p-67f, 0x1.f459bcp-17f, -0x1.4603b4p-14f, 0x1.e06fb4p-12f,
     /* s = 6/8: node 118 y */
-    -0x1.99999ap-70f, -0x1.bb236p-14f, -0x1.051f6p-13f, 0x1.a11a78p-12f,
+    -0x1.99999ap-72f, -0x1.bb236p-14f, -0x1.051f6p-13f, 0x1.a11a78p-12f,
     /* s = 6/8: node 118 z */
-    -0x1.ep-67f, 0x1.19e8e4p-13f, 0x1.5e8c6p-13f, 0x1.4fcfap-12f,
+    -0x1.79999ap-67f, 0x1.19e8e4p-13f, 0x1.5e8c6p-13f, 0x1.4fcfap-12f,
     /* s = 6/8: node 119 x */
-    -0x1.266666p-67f, -0x1.77b86cp-15f, -0x1.727e1p-14f, 0x1.d8408cp-12f,
+    -0x1.666666p-69f, -0x1.77b86cp-15f, -0x1.727e1p-14f, 0x1.d8408cp-12f,
     /* s = 6/8: node 119 y */
-    0x1.666666p-69f, -0x1.1bf174p-14f, -0x1.ff61bep-15f, 0x1.0459c2p-12f,
+    0x1.333334p-71f, -0x1.1bf174p-14f, -0x1.ff61bep-15f, 0x1.0459c2p-12f,
     /* s = 6/8: node 119 z */
-    -0x1.8p-69f, 0x1.451164p-13f, 0x1.24f432p-13f, 0x1.0fca8cp-12f,
+    -0x1.5p-66f, 0x1.451164p-13f, 0x1.24f432p-13f, 0x1.0fca8cp-12f,
     /* s = 6/8: node 120 x */
-    -0x1.ccccccp-70f, -0x1.6eaa8ap-16f, -0x1.8ec94ep-16f, 0x1.8cf502p-13f,
+    -0x1.333334p-69f, -0x1.6eaa8ap-16f, -0x1.8ec94ep-16f, 0x1.8cf502p-13f,
     /* s = 6/8: node 120 y */
-    0x1.166666p-68f, -0x1.102f72p-14f, -0x1.084daep-15f, 0x1.35b50cp-14f,
+    0x1.1p-68f, -0x1.102f72p-14f, -0x1.084daep-15f, 0x1.35b50cp-14f,
     /* s = 6/8: node 120 z */
-    -0x1.9cccccp-67f, 0x1.dc8b04p-14f, 0x1.95aec4p-14f, 0x1.5f5f18p-13f,
+    -0x1.cp-67f, 0x1.dc8b04p-14f, 0x1.95aec4p-14f, 0x1.5f5f18p-13f,
     /* s = 6/8: node 121 x */
-    0x1.066666p-68f, -0x1.29d408p-16f, -0x1.37aecp-15f, -0x1.b75c98p-14f,
+    0x1.ccccccp-70f, -0x1.29d408p-16f, -0x1.37aecp-15f, -0x1.b75c98p-14f,
     /* s = 6/8: node 121 y */
-    0x1.6cccccp-68f, -0x1.8fba2ep-15f, -0x1.5d8634p-17f, -0x1.c1ed04p-14f,
+    0x1.733334p-69f, -0x1.8fba2ep-15f, -0x1.5d8634p-17f, -0x1.c1ed04p-14f,
     /* s = 6/8: node 121 z */
-    0x1.5b3334p-69f, -0x1.4c8c3ap-14f, -0x1.2ecc22p-14f, 0x1.06d3c6p-16f,
+    -0x1.99999ap-76f, -0x1.4c8c3ap-14f, -0x1.2ecc22p-14f, 0x1.06d3c6p-16f,
     /* s = 7/8: node 1 x */
-    -0x1.666666p-69f, 0x1.00db56p-17f, -0x1.34c94cp-15f, 0x1.0c933p-13f,
+    -0x1.19999ap-69f, 0x1.00db56p-17f, -0x1.34c94cp-15f, 0x1.0c933p-13f,
     /* s = 7/8: node 1 y */
-    -0x1p-71f, -0x1.68e322p-17f, 0x1.6a7e76p-17f, 0x1.e6a94ep-14f,
+    -0x1.666666p-70f, -0x1.68e322p-17f, 0x1.6a7e76p-17f, 0x1.e6a94ep-14f,
     /* s = 7/8: node 1 z */
-    -0x1.b4ccccp-69f, 0x1.082e5p-14f, 0x1.ebbb94p-15f, -0x1.112e32p-17f,
+    -0x1.ecccccp-69f, 0x1.082e5p-14f, 0x1.ebbb94p-15f, -0x1.112e32p-17f,
     /* s = 7/8: node 2 x */
-    0x1.a66666p-69f, -0x1.12f9fp-15f, -0x1.17841p-16f, -0x1.7f8f7ep-13f,
+    0x1.133334p-68f, -0x1.12f9fp-15f, -0x1.17841p-16f, -0x1.7f8f7ep-13f,
     /* s = 7/8: node 2 y */
-    0x1.866666p-68f, -0x1.531ef6p-15f, -0x1.dc37cp-17f, -0x1.63cf5cp-14f,
+    0x1.e66666p-69f, -0x1.531ef6p-15f, -0x1.dc37cp-17f, -0x1.63cf5cp-14f,
     /* s = 7/8: node 2 z */
-    -0x1.ccccccp-70f, -0x1.b20ap-15f, -0x1.569c2ap-14f, 0x1.820d56p-13f,
+    0x1.99999ap-73f, -0x1.b20ap-15f, -0x1.569c2ap-14f, 0x1.820d56p-13f,
     /* s = 7/8: node 3 x */
-    0x1.2p-66f, -0x1.7f08dp-14f, -0x1.c2e09ep-14f, -0x1.25b764p-11f,
+    0x1.cp-67f, -0x1.7f08dp-14f, -0x1.c2e09ep-14f, -0x1.25b764p-11f,
     /* s = 7/8: node 3 y */
-    0x1.99999ap-68f, -0x1.2d6478p-14f, -0x1.2539a4p-14f, -0x1.017efap-12f,
+    0x1.066666p-67f, -0x1.2d6478p-14f, -0x1.2539a4p-14f, -0x1.017efap-12f,
     /* s = 7/8: node 3 z */
-    0x1.666666p-70f, -0x1.4a6c78p-14f, -0x1.c1d0e8p-14f, 0x1.1c61cp-12f,
+    -0x1p-69f, -0x1.4a6c78p-14f, -0x1.c1d0e8p-14f, 0x1.1c61cp-12f,
     /* s = 7/8: node 4 x */
-    0x1.266666p-67f, -0x1.889784p-15f, -0x1.b5c9bap-14f, -0x1.daa1cap-12f,
+    0x1.8cccccp-67f, -0x1.889784p-15f, -0x1.b5c9bap-14f, -0x1.daa1cap-12f,
     /* s = 7/8: node 4 y */
-    0x1.39999ap-66f, -0x1.1c3bdcp-13f, -0x1.0c437cp-13f, -0x1.d093e6p-12f,
+    0x1.99999ap-68f, -0x1.1c3bdcp-13f, -0x1.0c437cp-13f, -0x1.d093e6p-12f,
     /* s = 7/8: node 4 z */
-    -0x1.99999ap-69f, -0x1.99230cp-15f, -0x1.46a43p-13f, 0x1.23c0e4p-12f,
+    -0x1.333334p-68f, -0x1.99230cp-15f, -0x1.46a43p-13f, 0x1.23c0e4p-12f,
     /* s = 7/8: node 5 x */
-    0x1.99999ap-71f, 0x1.52b79ep-15f, -0x1.8b22acp-15f, -0x1.74130cp-13f,
+    0x1.19999ap-70f, 0x1.52b79ep-15f, -0x1.8b22acp-15f, -0x1.74130cp-13f,
     /* s = 7/8: node 5 y */
-    -0x1.8p-70f, 0x1.eb642ap-19f, -0x1.3f1364p-13f, -0x1.1a633cp-14f,
+    -0x1.8p-69f, 0x1.eb642ap-19f, -0x1.3f1364p-13f, -0x1.1a633cp-14f,
     /* s = 7/8: node 5 z */
-    -0x1.4cccccp-69f, -0x1.4c836cp-16f, -0x1.0db81ep-13f, 0x1.070b26p-12f,
+    -0x1.0cccccp-68f, -0x1.4c836cp-16f, -0x1.0db81ep-13f, 0x1.070b26p-12f,
     /* s = 7/8: node 6 x */
-    -0x1.bp-69f, 0x1.a24c8ep-13f, -0x1.271fb6p-22f, 0x1.eaef1p-16f,
+    -0x1.e9999ap-68f, 0x1.a24c8ep-13f, -0x1.271fb6p-22f, 0x1.eaef1p-16f,
     /* s = 7/8: node 6 y */
-    0x1.666666p-69f, -0x1.0de654p-15f, -0x1.d805a4p-13f, -0x1.1e96bap-11f,
+    0x1.4p-67f, -0x1.0de654p-15f, -0x1.d805a4p-13f, -0x1.1e96bap-11f,
     /* s = 7/8: node 6 z */
-    -0x1.266666p-67f, 0x1.cd2e42p-16f, -0x1.b04c38p-13f, 0x1.0d9846p-11f,
+    -0x1.f33334p-67f, 0x1.cd2e42p-16f, -0x1.b04c38p-13f, 0x1.0d9846p-11f,
     /* s = 7/8: node 7 x */
-    -0x1.666666p-68f, 0x1.63a93p-14f, 0x1.c6915ep-14f, 0x1.8fb3b2p-12f,
+    -0x1.266666p-66f, 0x1.63a93p-14f, 0x1.c6915ep-14f, 0x1.8fb3b2p-12f,
     /* s = 7/8: node 7 y */
-    -0x1.666666p-68f, 0x1.0f93bp-15f, -0x1.e3e3dp-13f, -0x1.430152p-11f,
+    0x1.99999ap-69f, 0x1.0f93bp-15f, -0x1.e3e3dp-13f, -0x1.430152p-11f,
     /* s = 7/8: node 7 z */
-    -0x1.0cccccp-66f, 0x1.b0999p-14f, -0x1.c8871p-13f, 0x1.d39accp-12f,
+    -0x1.466666p-66f, 0x1.b0999p-14f, -0x1.c8871p-13f, 0x1.d39accp-12f,
     /* s = 7/8: node 8 x */
-    -0x1.19999ap-68f, 0x1.bd5f42p-17f, 0x1.54b218p-14f, 0x1.ca6e64p-12f,
+    -0x1.333334p-68f, 0x1.bd5f42p-17f, 0x1.54b218p-14f, 0x1.ca6e64p-12f,
     /* s = 7/8: node 8 y */
-    0x1.99999ap-70f, 0x1.c7e734p-14f, -0x1.034598p-13f, -0x1.9cb6p-12f,
+    0x1.99999ap-72f, 0x1.c7e734p-14f, -0x1.034598p-13f, -0x1.9cb6p-12f,
     /* s = 7/8: node 8 z */
-    -0x1.cp-67f, 0x1.244232p-13f, -0x1.40aedp-13f, 0x1.6cb576p-12f,
+    -0x1.6cccccp-66f, 0x1.244232p-13f, -0x1.40aedp-13f, 0x1.6cb576p-12f,
     /* s = 7/8: node 9 x */
-    -0x0p+0f, -0x1.2d24c6p-15f, 0x1.7b84fep-14f, 0x1.ec2d22p-12f,
+    -0x1.19999ap-68f, -0x1.2d24c6p-15f, 0x1.7b84fep-14f, 0x1.ec2d22p-12f,
     /* s = 7/8: node 9 y */
-    0x1.8p-69f, 0x1.1cedb4p-14f, -0x1.d21dfp-15f, -0x1.f1b38ap-13f,
+    -0x0p+0f, 0x1.1cedb4p-14f, -0x1.d21dfp-15f, -0x1.f1b38ap-13f,
     /* s = 7/8: node 9 z */
-    -0x1.99999ap-66f, 0x1.5ea0dcp-13f, -0x1.200202p-13f, 0x1.131f92p-12f,
+    -0x1.4cccccp-66f, 0x1.5ea0dcp-13f, -0x1.200202p-13f, 0x1.131f92p-12f,
     /* s = 7/8: node 10 x */
-    -0x1p-71f, -0x1.557944p-16f, 0x1.a8f48cp-16f, 0x1.87a0e8p-13f,
+    -0x1.99999ap-72f, -0x1.557944p-16f, 0x1.a8f48cp-16f, 0x1.87a0e8p-13f,
     /* s = 7/8: node 10 y */
-    -0x1.666666p-70f, 0x1.0effe2p-14f, -0x1.1a8dbcp-15f, -0x1.67a64p-14f,
+    -0x1.cp-70f, 0x1.0effe2p-14f, -0x1.1a8dbcp-15f, -0x1.67a64p-14f,
     /* s = 7/8: node 10 z */
-    -0x1.79999ap-67f, 0x1.07c304p-13f, -0x1.7153aep-14f, 0x1.97d23ap-13f,
+    -0x1.866666p-66f, 0x1.07c304p-13f, -0x1.7153aep-14f, 0x1.97d23ap-13f,
     /* s = 7/8: node 11 x */
-    0x1.d9999ap-69f, -0x1.3f02c4p-16f, 0x1.1788fap-15f, -0x1.fb3f52p-14f,
+    0x1.4p-68f, -0x1.3f02c4p-16f, 0x1.1788fap-15f, -0x1.fb3f52p-14f,
     /* s = 7/8: node 11 y */
-    -0x1.2cccccp-68f, 0x1.8f9584p-15f, -0x1.3ce3e6p-17f, 0x1.c14da8p-14f,
+    -0x1.666666p-70f, 0x1.8f9584p-15f, -0x1.3ce3e6p-17f, 0x1.c14da8p-14f,
     /* s = 7/8: node 11 z */
-    0x1.61999ap-69f, -0x1.8c43f6p-14f, 0x1.064efp-14f, -0x1.61ff9ep-16f,
+    0x1.aa6666p-68f, -0x1.8c43f6p-14f, 0x1.064efp-14f, -0x1.61ff9ep-16f,
     /* s = 7/8: node 12 x */
-    0x1.1p-68f, -0x1.c6e3b6p-16f, -0x1.bec4c8p-15f, -0x1.2b2648p-14f,
+    -0x1.333334p-73f, -0x1.c6e3b6p-16f, -0x1.bec4c8p-15f, -0x1.2b2648p-14f,
     /* s = 7/8: node 12 y */
-    0x1.d9999ap-68f, -0x1.3b5032p-15f, -0x1.40d7fcp-16f, -0x1.93b7f2p-13f,
+    0x1.666666p-70f, -0x1.3b5032p-15f, -0x1.40d7fcp-16f, -0x1.93b7f2p-13f,
     /* s = 7/8: node 12 z */
-    -0x1.99999ap-72f, -0x1.d63ffep-15f, -0x1.33989ep-14f, 0x1.7f4eaep-13f,
+    -0x1.666666p-71f, -0x1.d63ffep-15f, -0x1.33989ep-14f, 0x1.7f4eaep-13f,
     /* s = 7/8: node 13 x */
-    0x1.99999ap-62f, 0x1.6cbca2p-13f, 0x1.10ad4ep-8f, -0x1.73b58p-6f,
+    0x1.666666p-62f, 0x1.6cbca2p-13f, 0x1.10ad4ep-8f, -0x1.73b58p-6f,
     /* s = 7/8: node 13 y */
-    0x1.59999ap-61f, 0x1.73ce92p-15f, 0x1.f2489ap-12f, -0x1.94715p-6f,
+    0x1p-63f, 0x1.73ce92p-15f, 0x1.f2489ap-12f, -0x1.94715p-6f,
     /* s = 7/8: node 13 z */
     -0x1.8p-63f, -0x1.32b8a2p-9f, -0x1.17be58p-8f, 0x1.8402eap-6f,
     /* s = 7/8: node 14 x */
-    0x1.0cccccp-61f, 0x1.287844p-10f, 0x1.dc97c6p-8f, -0x1.77d0cep-5f,
+    0x1.8p-61f, 0x1.287844p-10f, 0x1.dc97c6p-8f, -0x1.77d0cep-5f,
     /* s = 7/8: node 14 y */
-    0x1.266666p-60f, -0x1.c4d1bep-9f, 0x1.074608p-9f, -0x1.d406fap-5f,
+    0x1.ccccccp-61f, -0x1.c4d1bep-9f, 0x1.074608p-9f, -0x1.d406fap-5f,
     /* s = 7/8: node 14 z */
-    -0x1.99999ap-60f, 0x1.1198d6p-7f, 0x1.11b07cp-8f, 0x1.3a7458p-4f,
+    -0x1.666666p-60f, 0x1.1198d6p-7f, 0x1.11b07cp-8f, 0x1.3a7458p-4f,
     /* s = 7/8: node 15 x */
-    0x1.4p-61f, 0x1.f05bbep-9f, 0x1.2d527p-7f, -0x1.75b3ap-5f,
+    0x1.666666p-61f, 0x1.f05bbep-9f, 0x1.2d527p-7f, -0x1.75b3ap-5f,
     /* s = 7/8: node 15 y */
-    0x1.19999ap-60f, -0x1.664502p-8f, 0x1.b5735ap-10f, -0x1.84786ep-4f,
+    0x1.8cccccp-60f, -0x1.664502p-8f, 0x1.b5735ap-10f, -0x1.84786ep-4f,
     /* s = 7/8: node 15 z */
-    -0x1.266666p-59f, 0x1.52bf32p-6f, 0x1.1df64cp-6f, 0x1.4ca25cp-3f,
+    -0x1.ccccccp-59f, 0x1.52bf32p-6f, 0x1.1df64cp-6f, 0x1.4ca25cp-3f,
     /* s = 7/8: node 16 x */
-    0x1.333334p-64f, 0x1.37ac26p-7f, 0x1.034e2cp-7f, -0x1.b5578cp-6f,
+    -0x1.8p-62f, 0x1.37ac26p-7f, 0x1.034e2cp-7f, -0x1.b5578cp-6f,
     /* s = 7/8: node 16 y */
-    0x1.8cccccp-59f, -0x1.c0cff4p-7f, 0x1.3447bap-8f, -0x1.112f2p-3f,
+    0x1.733334p-59f, -0x1.c0cff4p-7f, 0x1.3447bap-8f, -0x1.112f2p-3f,
     /* s = 7/8: node 16 z */
-    -0x1.4cccccp-59f, 0x1.846c1p-6f, 0x1.dc5f9p-6f, 0x1.cdf1fap-3f,
+    -0x1.4cccccp-58f, 0x1.846c1p-6f, 0x1.dc5f9p-6f, 0x1.cdf1fap-3f,
     /* s = 7/8: node 17 x */
-    -0x1.c4ccccp-60f, 0x1.fb66ecp-7f, 0x1.922822p-11f, 0x1.70776p-8f,
+    -0x1.9a6666p-60f, 0x1.fb66ecp-7f, 0x1.922822p-11f, 0x1.70776p-8f,
     /* s = 7/8: node 17 y */
-    0x1.266666p-59f, -0x1.12565p-7f, 0x1.429652p-8f, -0x1.291cf2p-3f,
+    0x1.4cccccp-58f, -0x1.12565p-7f, 0x1.429652p-8f, -0x1.291cf2p-3f,
     /* s = 7/8: node 17 z */
-    -0x1.8p-58f, 0x1.ba5b08p-7f, 0x1.155cdep-5f, 0x1.0342acp-2f,
+    -0x1.99999ap-59f, 0x1.ba5b08p-7f, 0x1.155cdep-5f, 0x1.0342acp-2f,
     /* s = 7/8: node 18 x */
-    -0x1.cp-61f, 0x1.a546aap-7f, -0x1.59ff7cp-8f, 0x1.34377p-5f,
+    -0x1.acccccp-60f, 0x1.a546aap-7f, -0x1.59ff7cp-8f, 0x1.34377p-5f,
     /* s = 7/8: node 18 y */
-    0x1.333334p-59f, -0x1.928af6p-8f, 0x1.d4c8eap-8f, -0x1.0913bep-3f,
+    0x1.d9999ap-59f, -0x1.928af6p-8f, 0x1.d4c8eap-8f, -0x1.0913bep-3f,
     /* s = 7/8: node 18 z */
-    -0x1p-59f, -0x1.83ed1cp-11f, 0x1.9d2d8ep-6f, 0x1.b78afp-3f,
+    -0x1.333334p-60f, -0x1.83ed1cp-11f, 0x1.9d2d8ep-6f, 0x1.b78afp-3f,
     /* s = 7/8: node 19 x */
-    -0x1.0cccccp-60f, 0x1.6c26a2p-7f, -0x1.58290cp-7f, 0x1.9b42eap-5f,
+    -0x1.4cccccp-60f, 0x1.6c26a2p-7f, -0x1.58290cp-7f, 0x1.9b42eap-5f,
     /* s = 7/8: node 19 y */
-    0x1.39999ap-59f, -0x1.0e8bep-7f, 0x1.7cd51p-8f, -0x1.73afc6p-4f,
+    0x1.ccccccp-60f, -0x1.0e8bep-7f, 0x1.7cd51p-8f, -0x1.73afc6p-4f,
     /* s = 7/8: node 19 z */
-    -0x1.4cccccp-60f, -0x1.0275d6p-8f, 0x1.bd94cp-7f, 0x1.33b6bcp-3f,
+    -0x1.8cccccp-59f, -0x1.0275d6p-8f, 0x1.bd94cp-7f, 0x1.33b6bcp-3f,
     /* s = 7/8: node 20 x */
-    -0x1.e66666p-60f, 0x1.9f458ap-8f, -0x1.06a756p-7f, 0x1.8801aep-5f,
+    -0x1.19999ap-60f, 0x1.9f458ap-8f, -0x1.06a756p-7f, 0x1.8801aep-5f,
     /* s = 7/8: node 20 y */
-    0x1.733334p-60f, -0x1.bad5cp-8f, 0x1.0e87bep-9f, -0x1.c39356p-5f,
+    0x1.4p-60f, -0x1.bad5cp-8f, 0x1.0e87bep-9f, -0x1.c39356p-5f,
     /* s = 7/8: node 20 z */
-    -0x1.e66666p-61f, -0x1.897a8p-11f, 0x1.acc1fp-9f, 0x1.30371ap-4f,
+    -0x1.666666p-61f, -0x1.897a8p-11f, 0x1.acc1fp-9f, 0x1.30371ap-4f,
     /* s = 7/8: node 21 x */
-    -0x1.ecccccp-61f, 0x1.174434p-8f, -0x1.4c835p-8f, 0x1.75cd76p-6f,
+    -0x1.4p-61f, 0x1.174434p-8f, -0x1.4c835p-8f, 0x1.75cd76p-6f,
     /* s = 7/8: node 21 y */
-    0x1.0cccccp-60f, -0x1.ced39cp-8f, 0x1.5e7058p-9f, -0x1.70a312p-6f,
+    0x1.666666p-63f, -0x1.ced39cp-8f, 0x1.5e7058p-9f, -0x1.70a312p-6f,
     /* s = 7/8: node 21 z */
-    -0x1.4p-60f, 0x1.eb777cp-8f, -0x1.5a5e38p-8f, 0x1.86bfb8p-6f,
+    -0x1.99999ap-60f, 0x1.eb777cp-8f, -0x1.5a5e38p-8f, 0x1.86bfb8p-6f,
     /* s = 7/8: node 22 x */
-    0x1.266666p-68f, -0x1.200af4p-15f, 0x1.dcc1fep-15f, 0x1.378d7cp-14f,
+    0x1.99999ap-69f, -0x1.200af4p-15f, 0x1.dcc1fep-15f, 0x1.378d7cp-14f,
     /* s = 7/8: node 22 y */
-    0x1.4p-69f, 0x1.78ada4p-16f, -0x1.7aef5ap-16f, -0x1.802862p-13f,
+    -0x1.ccccccp-70f, 0x1.78ada4p-16f, -0x1.7aef5ap-16f, -0x1.802862p-13f,
     /* s = 7/8: node 22 z */
-    -0x1.333334p-70f, 0x1.0ef572p-13f, -0x1.66c2b8p-14f, 0x1.94265ep-13f,
+    -0x1.f33334p-68f, 0x1.0ef572p-13f, -0x1.66c2b8p-14f, 0x1.94265ep-13f,
     /* s = 7/8: node 23 x */
-    0x1.ccccccp-68f, -0x1.8aadd2p-14f, -0x1.ff750cp-15f, -0x1.5a7cap-12f,
+    0x1.b33334p-68f, -0x1.8aadd2p-14f, -0x1.ff750cp-15f, -0x1.5a7cap-12f,
     /* s = 7/8: node 23 y */
-    0x1.266666p-67f, -0x1.fda8eap-14f, -0x1.d1cfe4p-15f, -0x1.fd96c6p-12f,
+    0x1.333334p-66f, -0x1.fda8eap-14f, -0x1.d1cfe4p-15f, -0x1.fd96c6p-12f,
     /* s = 7/8: node 23 z */
-    0x1.4cccccp-69f, -0x1.276e8ep-14f, -0x1.82bd36p-14f, 0x1.1dcbfep-12f,
+    0x1.99999ap-70f, -0x1.276e8ep-14f, -0x1.82bd36p-14f, 0x1.1dcbfep-12f,
     /* s = 7/8: node 24 x */
-    0x1.8cccccp-60f, -0x1.b88bacp-10f, 0x1.a7185cp-13f, -0x1.b957d6p-5f,
+    0x1.ccccccp-61f, -0x1.b88bacp-10f, 0x1.a7185cp-13f, -0x1.b957d6p-5f,
     /* s = 7/8: node 24 y */
-    0x1.59999ap-60f, -0x1.64e2d6p-9f, -0x1.b01d62p-13f, -0x1.ba7d94p-5f,
+    0x1.4cccccp-60f, -0x1.64e2d6p-9f, -0x1.b01d62p-13f, -0x1.ba7d94p-5f,
     /* s = 7/8: node 24 z */
-    -0x1.e66666p-61f, 0x1.3eb782p-7f, 0x1.fffc2cp-9f, 0x1.37b872p-4f,
+    -0x1.f33334p-60f, 0x1.3eb782p-7f, 0x1.fffc2cp-9f, 0x1.37b872p-4f,
     /* s = 7/8: node 25 x */
-    0x1.ccccccp-60f, -0x1.f04668p-10f, 0x1.82648ap-9f, -0x1.baea62p-4f,
+    0x1.99999ap-62f, -0x1.f04668p-10f, 0x1.82648ap-9f, -0x1.baea62p-4f,
     /* s = 7/8: node 25 y */
-    0x1.4p-59f, -0x1.6a3c3ap-7f, 0x1.cc72d4p-9f, -0x1.d3b28cp-4f,
+    0x1.266666p-59f, -0x1.6a3c3ap-7f, 0x1.cc72d4p-9f, -0x1.d3b28cp-4f,
     /* s = 7/8: node 25 z */
-    -0x1.266666p-58f, 0x1.5dd274p-5f, 0x1.da4394p-6f, 0x1.cbe582p-3f,
+    -0x1.4cccccp-58f, 0x1.5dd274p-5f, 0x1.da4394p-6f, 0x1.cbe582p-3f,
     /* s = 7/8: node 26 x */
-    0x1p-61f, 0x1.48bb22p-6f, 0x1.f6b7acp-8f, -0x1.b910f2p-4f,
+    -0x1.333334p-61f, 0x1.48bb22p-6f, 0x1.f6b7acp-8f, -0x1.b910f2p-4f,
     /* s = 7/8: node 26 y */
-    0x1.666666p-59f, -0x1.ad4dbep-7f, 0x1.d9191cp-7f, -0x1.7f9488p-3f,
+    0x1.266666p-58f, -0x1.ad4dbep-7f, 0x1.d9191cp-7f, -0x1.7f9488p-3f,
     /* s = 7/8: node 26 z */
-    -0x1.266666p-57f, 0x1.13f5dcp-4f, 0x1.f8cba4p-5f, 0x1.ac96p-2f,
+    -0x1.e66666p-58f, 0x1.13f5dcp-4f, 0x1.f8cba4p-5f, 0x1.ac96p-2f,
     /* s = 7/8: node 27 x */
-    0x1.f33334p-60f, 0x1.4be702p-5f, 0x1.11cbecp-7f, -0x1.d0d26p-5f,
+    0x1.ccccccp-62f, 0x1.4be702p-5f, 0x1.11cbecp-7f, -0x1.d0d26p-5f,
     /* s = 7/8: node 27 y */
-    0x1.99999ap-61f, -0x1.e54d72p-7f, 0x1.532696p-5f, -0x1.e7b0c4p-3f,
+    0x1.19999ap-57f, -0x1.e54d72p-7f, 0x1.532696p-5f, -0x1.e7b0c4p-3f,
     /* s = 7/8: node 27 z */
-    -0x1.333334p-57f, 0x1.2cff8ap-4f, 0x1.9630f4p-4f, 0x1.3844fep-1f,
+    -0x1.59999ap-56f, 0x1.2cff8ap-4f, 0x1.9630f4p-4f, 0x1.3844fep-1f,
     /* s = 7/8: node 28 x */
-    -0x1.51999ap-58f, 0x1.9505a8p-5f, 0x1.9c69acp-9f, 0x1.9cf9a8p-6f,
+    -0x1.2e6666p-58f, 0x1.9505a8p-5f, 0x1.9c69acp-9f, 0x1.9cf9a8p-6f,
     /* s = 7/8: node 28 y */
-    0x1.6cccccp-57f, -0x1.6a59bp-6f, 0x1.b399a8p-5f, -0x1.1b21fp-2f,
+    0x1.19999ap-57f, -0x1.6a59bp-6f, 0x1.b399a8p-5f, -0x1.1b21fp-2f,
     /* s = 7/8: node 28 z */
-    -0x1.99999ap-57f, 0x1.1f14f4p-5f, 0x1.92a6c6p-4f, 0x1.4359fap-1f,
+    -0x1.666666p-57f, 0x1.1f14f4p-5f, 0x1.92a6c6p-4f, 0x1.4359fap-1f,
     /* s = 7/8: node 29 x */
-    -0x1.1cccccp-58f, 0x1.bebd44p-5f, -0x1.1c3cep-7f, 0x1.5d3d52p-4f,
+    -0x1.066666p-57f, 0x1.bebd44p-5f, -0x1.1c3cep-7f, 0x1.5d3d52p-4f,
     /* s = 7/8: node 29 y */
-    0x1.2p-57f, -0x1.b5dacp-6f, 0x1.44fd6ap-5f, -0x1.ea790cp-3f,
+    0x1.99999ap-59f, -0x1.b5dacp-6f, 0x1.44fd6ap-5f, -0x1.ea790cp-3f,
     /* s = 7/8: node 29 z */
-    -0x1.666666p-58f, -0x1.68df76p-8f, 0x1.5c5d4p-4f, 0x1.1fd64cp-1f,
+    -0x1.b33334p-58f, -0x1.68df76p-8f, 0x1.5c5d4p-4f, 0x1.1fd64cp-1f,
     /* s = 7/8: node 30 x */
     -0x1.933334p-58f, 0x1.4c27cap-5f, -0x1.244a6p-7f, 0x1.da003ap-4f,
     /* s = 7/8: node 30 y */
-    0x1.e66666p-59f, -0x1.1eabd8p-6f, 0x1.70922p-6f, -0x1.70d17cp-3f,
+    0x1.333334p-58f, -0x1.1eabd8p-6f, 0x1.70922p-6f, -0x1.70d17cp-3f,
     /* s = 7/8: node 30 z */
-    -0x1.99999ap-60f, -0x1.e84194p-6f, 0x1.bc822ep-5f, 0x1.998d14p-2f,
+    -0x1.19999ap-58f, -0x1.e84194p-6f, 0x1.bc822ep-5f, 0x1.998d14p-2f,
     /* s = 7/8: node 31 x */
-    -0x1.e66666p-59f, 0x1.37fea6p-6f, -0x1.0d1daap-7f, 0x1.bbcd92p-4f,
+    -0x1.e66666p-60f, 0x1.37fea6p-6f, -0x1.0d1daap-7f, 0x1.bbcd92p-4f,
     /* s = 7/8: node 31 y */
-    0x1.333334p-59f, -0x1.0a062cp-6f, 0x1.55eec4p-7f, -0x1.a8191cp-4f,
+    0x1p-60f, -0x1.0a062cp-6f, 0x1.55eec4p-7f, -0x1.a8191cp-4f,
     /* s = 7/8: node 31 z */
-    -0x1.333334p-60f, -0x1.722786p-6f, 0x1.9d115cp-6f, 0x1.acd9bcp-3f,
+    -0x1.666666p-60f, -0x1.722786p-6f, 0x1.9d115cp-6f, 0x1.acd9bcp-3f,
     /* s = 7/8: node 32 x */
-    -0x1p-59f, 0x1.aad33p-8f, -0x1.768762p-9f, 0x1.bccc14p-5f,
+    -0x1.4cccccp-60f, 0x1.aad33p-8f, -0x1.768762p-9f, 0x1.bccc14p-5f,
     /* s = 7/8: node 32 y */
-    0x1.d9999ap-60f, -0x1.997af2p-7f, 0x1.1d844ep-9f, -0x1.808e2cp-5f,
+    0x1.4cccccp-60f, -0x1.997af2p-7f, 0x1.1d844ep-9f, -0x1.808e2cp-5f,
     /* s = 7/8: node 32 z */
-    -0x1.8p-60f, -0x1.475c66p-10f, 0x1.6665ccp-9f, 0x1.2e684cp-4f,
+    -0x1.99999ap-61f, -0x1.475c66p-10f, 0x1.6665ccp-9f, 0x1.2e684cp-4f,
     /* s = 7/8: node 33 x */
-    -0x1p-70f, -0x1.117844p-14f, 0x1.041e6cp-14f, 0x1.0ce1e6p-12f,
+    0x1.666666p-69f, -0x1.117844p-14f, 0x1.041e6cp-14f, 0x1.0ce1e6p-12f,
     /* s = 7/8: node 33 y */
-    0x1.333334p-69f, 0x1.7c666ap-14f, -0x1.85fb1p-15f, -0x1.db81fp-12f,
+    0x1.333334p-70f, 0x1.7c666ap-14f, -0x1.85fb1p-15f, -0x1.db81fp-12f,
     /* s = 7/8: node 33 z */
-    -0x1p-66f, 0x1.8045cp-13f, -0x1.f93b76p-14f, 0x1.160688p-12f,
+    -0x1.3p-66f, 0x1.8045cp-13f, -0x1.f93b76p-14f, 0x1.160688p-12f,
     /* s = 7/8: node 34 x */
-    0x1.4cccccp-67f, -0x1.2508b2p-13f, -0x1.608d4p-14f, -0x1.7b505ep-12f,
+    0x1.69999ap-66f, -0x1.2508b2p-13f, -0x1.608d4p-14f, -0x1.7b505ep-12f,
     /* s = 7/8: node 34 y */
-    0x1.666666p-67f, -0x1.3e54cap-13f, -0x1.eadd14p-17f, -0x1.0ede96p-11f,
+    0x1.6cccccp-66f, -0x1.3e54cap-13f, -0x1.eadd14p-17f, -0x1.0ede96p-11f,
     /* s = 7/8: node 34 z */
-    -0x1.333334p-68f, -0x1.099866p-14f, -0x1.fad148p-15f, 0x1.825bcp-12f,
+    0x1.666666p-69f, -0x1.099866p-14f, -0x1.fad148p-15f, 0x1.825bcp-12f,
     /* s = 7/8: node 35 x */
-    0x1.ccccccp-61f, -0x1.6b62b4p-7f, -0x1.4d75fcp-10f, -0x1.a07478p-4f,
+    0x1.333334p-59f, -0x1.6b62b4p-7f, -0x1.4d75fcp-10f, -0x1.a07478p-4f,
     /* s = 7/8: node 35 y */
-    0x1.19999ap-61f, -0x1.393124p-8f, 0x1.7c91aep-9f, -0x1.dfc518p-5f,
+    0x1.ccccccp-62f, -0x1.393124p-8f, 0x1.7c91aep-9f, -0x1.dfc518p-5f,
     /* s = 7/8: node 35 z */
-    -0x1.99999ap-58f, 0x1.eefc42p-6f, 0x1.69780ep-7f, 0x1.44292p-3f,
+    -0x1.933334p-58f, 0x1.eefc42p-6f, 0x1.69780ep-7f, 0x1.44292p-3f,
     /* s = 7/8: node 36 x */
-    0x1.59999ap-58f, -0x1.639244p-7f, -0x1.011404p-7f, -0x1.a6ef6ap-3f,
+    0x1.266666p-58f, -0x1.639244p-7f, -0x1.011404p-7f, -0x1.a6ef6ap-3f,
     /* s = 7/8: node 36 y */
-    0x1.b33334p-59f, -0x1.8fe46p-7f, 0x1.3a7452p-6f, -0x1.e5560ap-4f,
+    0x1.19999ap-59f, -0x1.8fe46p-7f, 0x1.3a7452p-6f, -0x1.e5560ap-4f,
     /* s = 7/8: node 36 z */
-    -0x1.0cccccp-56f, 0x1.7b5574p-4f, 0x1.56a0f6p-5f, 0x1.b7728ep-2f,
+    -0x1.99999ap-57f, 0x1.7b5574p-4f, 0x1.56a0f6p-5f, 0x1.b7728ep-2f,
     /* s = 7/8: node 37 x */
-    0x1p-59f, 0x1.d6562ep-7f, -0x1.b0f7f4p-7f, -0x1.a5f07cp-3f,
+    0x1.666666p-60f, 0x1.d6562ep-7f, -0x1.b0f7f4p-7f, -0x1.a5f07cp-3f,
     /* s = 7/8: node 37 y */
-    0x1.4cccccp-59f, -0x1.26dc52p-5f, 0x1.58a894p-5f, -0x1.b5634ep-3f,
+    0x1.99999ap-63f, -0x1.26dc52p-5f, 0x1.58a894p-5f, -0x1.b5634ep-3f,
     /* s = 7/8: node 37 z */
-    -0x1.333334p-56f, 0x1.3c5caep-3f, 0x1.923f6cp-4f, 0x1.9c5f7p-1f,
+    -0x1.0cccccp-56f, 0x1.3c5caep-3f, 0x1.923f6cp-4f, 0x1.9c5f7p-1f,
     /* s = 7/8: node 38 x */
-    -0x1.d33334p-58f, 0x1.25c936p-3f, 0x1.57b83ep-5f, -0x1.ac894ap-6f,
+    -0x1.14p-57f, 0x1.25c936p-3f, 0x1.57b83ep-5f, -0x1.ac894ap-6f,
     /* s = 7/8: node 38 y */
-    0x1.f33334p-58f, -0x1.cb6f52p-7f, 0x1.082766p-3f, -0x1.2f11f8p-2f,
+    0x1.0cccccp-57f, -0x1.cb6f52p-7f, 0x1.082766p-3f, -0x1.2f11f8p-2f,
     /* s = 7/8: node 38 z */
-    -0x1.b33334p-56f, 0x1.7c5e8ap-3f, 0x1.5995dap-3f, 0x1.2a9c44p+0f,
+    -0x1.8cccccp-56f, 0x1.7c5e8ap-3f, 0x1.5995dap-3f, 0x1.2a9c44p+0f,
     /* s = 7/8: node 39 x */
-    -0x1.89999ap-57f, 0x1.51f014p-3f, 0x1.9257ep-7f, 0x1.ecbe0ep-5f,
+    -0x1.04ccccp-56f, 0x1.51f014p-3f, 0x1.9257ep-7f, 0x1.ecbe0ep-5f,
     /* s = 7/8: node 39 y */
-    0x1.59999ap-57f, -0x1.3416cp-5f, 0x1.1eea56p-3f, -0x1.3c2c44p-2f,
+    0x1.d9999ap-58f, -0x1.3416cp-5f, 0x1.1eea56p-3f, -0x1.3c2c44p-2f,
     /* s = 7/8: node 39 z */
-    -0x1.b33334p-56f, 0x1.302822p-4f, 0x1.44dbc6p-3f, 0x1.3d1152p+0f,
+    -0x1.b33334p-57f, 0x1.302822p-4f, 0x1.44dbc6p-3f, 0x1.3d1152p+0f,
     /* s = 7/8: node 40 x */
-    -0x1.d66666p-57f, 0x1.1f4bc6p-3f, -0x1.95277ap-12f, 0x1.5bad48p-3f,
+    -0x1.29999ap-57f, 0x1.1f4bc6p-3f, -0x1.95277ap-12f, 0x1.5bad48p-3f,
     /* s = 7/8: node 40 y */
-    0x1.ccccccp-60f, -0x1.1b53ep-5f, 0x1.d22d3ap-4f, -0x1.05c8fap-2f,
+    0x1.266666p-57f, -0x1.1b53ep-5f, 0x1.d22d3ap-4f, -0x1.05c8fap-2f,
     /* s = 7/8: node 40 z */
-    -0x1.e66666p-57f, -0x1.8cdb1ep-6f, 0x1.097e4p-3f, 0x1.0dde4ap+0f,
+    -0x1.8p-57f, -0x1.8cdb1ep-6f, 0x1.097e4p-3f, 0x1.0dde4ap+0f,
     /* s = 7/8: node 41 x */
-    -0x1.6cccccp-57f, 0x1.68072cp-4f, -0x1.cba426p-7f, 0x1.937bf4p-3f,
+    -0x1.ccccccp-58f, 0x1.68072cp-4f, -0x1.cba426p-7f, 0x1.937bf4p-3f,
     /* s = 7/8: node 41 y */
-    0x1.866666p-58f, -0x1.ed206ap-6f, 0x1.014e3ap-4f, -0x1.6f6024p-3f,
+    0x1.733334p-59f, -0x1.ed206ap-6f, 0x1.014e3ap-4f, -0x1.6f6024p-3f,
     /* s = 7/8: node 41 z */
-    -0x1p-58f, -0x1.00082p-4f, 0x1.399356p-4f, 0x1.7c247ap-1f,
+    -0x1p-57f, -0x1.00082p-4f, 0x1.399356p-4f, 0x1.7c247ap-1f,
     /* s = 7/8: node 42 x */
-    -0x1.d9999ap-59f, 0x1.50279p-5f, -0x1.9513a2p-9f, 0x1.79c4c8p-3f,
+    -0x1.59999ap-58f, 0x1.50279p-5f, -0x1.9513a2p-9f, 0x1.79c4c8p-3f,
     /* s = 7/8: node 42 y */
-    0x1.4p-59f, -0x1.461e6ep-6f, 0x1.945f04p-6f, -0x1.af820cp-4f,
+    0x1.4cccccp-59f, -0x1.461e6ep-6f, 0x1.945f04p-6f, -0x1.af820cp-4f,
     /* s = 7/8: node 42 z */
-    -0x1.99999ap-59f, -0x1.8854ecp-5f, 0x1.3e7524p-5f, 0x1.96c38p-2f,
+    -0x1.e66666p-58f, -0x1.8854ecp-5f, 0x1.3e7524p-5f, 0x1.96c38p-2f,
     /* s = 7/8: node 43 x */
-    -0x1.99999ap-59f, 0x1.58c294p-7f, -0x1.b9573ap-9f, 0x1.7ad106p-4f,
+    -0x1.59999ap-59f, 0x1.58c294p-7f, -0x1.b9573ap-9f, 0x1.7ad106p-4f,
     /* s = 7/8: node 43 y */
-    0x1.b33334p-60f, -0x1.f72602p-7f, 0x1.9757a2p-8f, -0x1.801ab6p-5f,
+    0x1.433334p-59f, -0x1.f72602p-7f, 0x1.9757a2p-8f, -0x1.801ab6p-5f,
     /* s = 7/8: node 43 z */
-    -0x0p+0f, -0x1.63ed94p-7f, 0x1.ec9614p-8f, 0x1.2e9p-3f,
+    -0x1.666666p-61f, -0x1.63ed94p-7f, 0x1.ec9614p-8f, 0x1.2e9p-3f,
     /* s = 7/8: node 44 x */
-    0x1.09999ap-66f, -0x1.37ced4p-13f, 0x1.726674p-14f, 0x1.7a494p-12f,
+    0x1.066666p-66f, -0x1.37ced4p-13f, 0x1.726674p-14f, 0x1.7a494p-12f,
     /* s = 7/8: node 44 y */
-    0x1.99999ap-69f, 0x1.458f66p-14f, 0x1.a30ff4p-20f, -0x1.c484f4p-12f,
+    0x1.333334p-69f, 0x1.458f66p-14f, 0x1.a30ff4p-20f, -0x1.c484f4p-12f,
     /* s = 7/8: node 44 z */
-    -0x1.5cccccp-66f, 0x1.cf61aap-13f, -0x1.835b86p-14f, 0x1.71f79ap-12f,
+    -0x1.133334p-66f, 0x1.cf61aap-13f, -0x1.835b86p-14f, 0x1.71f79ap-12f,
     /* s = 7/8: node 45 x */
-    0x1.8p-67f, -0x1.fe5fdep-13f, -0x1.23e7cep-15f, -0x1.338b8cp-11f,
+    0x1.733334p-67f, -0x1.fe5fdep-13f, -0x1.23e7cep-15f, -0x1.338b8cp-11f,
     /* s = 7/8: node 45 y */
-    0x1.4cccccp-68f, -0x1.b8892cp-14f, 0x1.1ed0cep-15f, -0x1.09db7cp-12f,
+    0x1.79999ap-67f, -0x1.b8892cp-14f, 0x1.1ed0cep-15f, -0x1.09db7cp-12f,
     /* s = 7/8: node 45 z */
-    -0x1p-68f, -0x1.7622f2p-15f, -0x1.139c84p-16f, 0x1.1223a8p-11f,
+    -0x1.19999ap-68f, -0x1.7622f2p-15f, -0x1.139c84p-16f, 0x1.1223a8p-11f,
     /* s = 7/8: node 46 x */
-    0x1.e66666p-59f, -0x1.7504p-6f, -0x1.095aa2p-7f, -0x1.23518ap-3f,
+    0x1.533334p-58f, -0x1.7504p-6f, -0x1.095aa2p-7f, -0x1.23518ap-3f,
     /* s = 7/8: node 46 y */
-    0x1.b33334p-62f, -0x1.88e098p-9f, 0x1.e3f97ep-8f, -0x1.20b23ep-5f,
+    0x1.0cccccp-61f, -0x1.88e098p-9f, 0x1.e3f97ep-8f, -0x1.20b23ep-5f,
     /* s = 7/8: node 46 z */
-    -0x1.99999ap-58f, 0x1.ae711p-5f, 0x1.8a42d8p-7f, 0x1.cdaf8ap-3f,
+    -0x1.666666p-59f, 0x1.ae711p-5f, 0x1.8a42d8p-7f, 0x1.cdaf8ap-3f,
     /* s = 7/8: node 47 x */
-    0x1.666666p-60f, -0x1.672b2ep-7f, -0x1.666036p-7f, -0x1.26d78cp-2f,
+    0x1.19999ap-59f, -0x1.672b2ep-7f, -0x1.666036p-7f, -0x1.26d78cp-2f,
     /* s = 7/8: node 47 y */
-    0x1.6p-59f, -0x1.6384f2p-7f, 0x1.3ac47cp-5f, -0x1.69d4b2p-4f,
+    0x1.4cccccp-61f, -0x1.6384f2p-7f, 0x1.3ac47cp-5f, -0x1.69d4b2p-4f,
     /* s = 7/8: node 47 z */
-    -0x1.333334p-56f, 0x1.1cc0aep-3f, 0x1.19322p-5f, 0x1.344df4p-1f,
+    -0x1.79999ap-56f, 0x1.1cc0aep-3f, 0x1.19322p-5f, 0x1.344df4p-1f,
     /* s = 7/8: node 48 x */
-    0x1.266666p-58f, 0x1.e4e688p-9f, -0x1.404bfp-6f, -0x1.626c18p-2f,
+    0x1.333334p-59f, 0x1.e4e688p-9f, -0x1.404bfp-6f, -0x1.626c18p-2f,
     /* s = 7/8: node 48 y */
-    0x1.0cccccp-57f, -0x1.c5326cp-6f, 0x1.4ab1ep-4f, -0x1.1b70b8p-3f,
+    0x1.ccccccp-59f, -0x1.c5326cp-6f, 0x1.4ab1ep-4f, -0x1.1b70b8p-3f,
     /* s = 7/8: node 48 z */
-    -0x1.39999ap-55f, 0x1.0349ep-2f, 0x1.9342c2p-4f, 0x1.266408p+0f,
+    -0x1p-57f, 0x1.0349ep-2f, 0x1.9342c2p-4f, 0x1.266408p+0f,
     /* s = 7/8: node 49 x */
-    -0x1.61999ap-56f, 0x1.a9de54p-2f, 0x1.1e890ep-3f, 0x1.931e8ep-4f,
+    -0x1.766666p-57f, 0x1.a9de54p-2f, 0x1.1e890ep-3f, 0x1.931e8ep-4f,
     /* s = 7/8: node 49 y */
-    -0x1.99999ap-59f, 0x1.eadc1ap-5f, 0x1.19045ap-2f, -0x1.903b0cp-3f,
+    0x1.b33334p-59f, 0x1.eadc1ap-5f, 0x1.19045ap-2f, -0x1.903b0cp-3f,
     /* s = 7/8: node 49 z */
-    -0x1.b33334p-56f, 0x1.5a7384p-2f, 0x1.4a0442p-3f, 0x1.bb07f6p+0f,
+    -0x1.066666p-54f, 0x1.5a7384p-2f, 0x1.4a0442p-3f, 0x1.bb07f6p+0f,
     /* s = 7/8: node 50 x */
-    -0x1.ecccccp-56f, 0x1.7037fcp-2f, 0x1.c57bcep-6f, 0x1.a01aaap-4f,
+    -0x1.573334p-55f, 0x1.7037fcp-2f, 0x1.c57bcep-6f, 0x1.a01aaap-4f,
     /* s = 7/8: node 50 y */
-    0x1.a66666p-57f, -0x1.6296d6p-5f, 0x1.8fcac4p-2f, -0x1.aaa1dap-3f,
+    -0x1.733334p-58f, -0x1.6296d6p-5f, 0x1.8fcac4p-2f, -0x1.aaa1dap-3f,
     /* s = 7/8: node 50 z */
-    -0x1.59999ap-55f, 0x1.b0a94cp-4f, 0x1.eaf98cp-4f, 0x1.c189c4p+0f,
+    -0x1.733334p-55f, 0x1.b0a94cp-4f, 0x1.eaf98cp-4f, 0x1.c189c4p+0f,
     /* s = 7/8: node 51 x */
-    -0x1.ap-57f, 0x1.26dfa4p-2f, -0x1.5fc9fp-5f, 0x1.e119fap-3f,
+    -0x1.166666p-55f, 0x1.26dfa4p-2f, -0x1.5fc9fp-5f, 0x1.e119fap-3f,
     /* s = 7/8: node 51 y */
-    0x1.066666p-57f, -0x1.21cad2p-4f, 0x1.c0c116p-3f, -0x1.5d9bc6p-3f,
+    0x1.266666p-57f, -0x1.21cad2p-4f, 0x1.c0c116p-3f, -0x1.5d9bc6p-3f,
     /* s = 7/8: node 51 z */
-    -0x1.59999ap-56f, -0x1.9e6dep-6f, 0x1.9547fep-4f, 0x1.7e95fap+0f,
+    -0x1p-56f, -0x1.9e6dep-6f, 0x1.9547fep-4f, 0x1.7e95fap+0f,
     /* s = 7/8: node 52 x */
-    -0x1.19999ap-57f, 0x1.3cce72p-3f, -0x1.15d5c8p-7f, 0x1.147b8ap-2f,
+    -0x1.8p-59f, 0x1.3cce72p-3f, -0x1.15d5c8p-7f, 0x1.147b8ap-2f,
     /* s = 7/8: node 52 y */
-    0x1.666666p-58f, -0x1.7c2644p-6f, 0x1.7f6714p-4f, -0x1.fc44ccp-4f,
+    0x1.133334p-58f, -0x1.7c2644p-6f, 0x1.7f6714p-4f, -0x1.fc44ccp-4f,
     /* s = 7/8: node 52 z */
-    -0x1.19999ap-56f, -0x1.af6b1ep-4f, 0x1.009c0ap-4f, 0x1.0674b4p+0f,
+    -0x1.99999ap-58f, -0x1.af6b1ep-4f, 0x1.009c0ap-4f, 0x1.0674b4p+0f,
     /* s = 7/8: node 53 x */
-    -0x1.466666p-57f, 0x1.0d865cp-4f, -0x1.57042p-8f, 0x1.fba23p-3f,
+    -0x1.59999ap-57f, 0x1.0d865cp-4f, -0x1.57042p-8f, 0x1.fba23p-3f,
     /* s = 7/8: node 53 y */
-    0x1.19999ap-59f, -0x1.0f1786p-6f, 0x1.3ef362p-5f, -0x1.0f85d2p-4f,
+    0x1.666666p-60f, -0x1.0f1786p-6f, 0x1.3ef362p-5f, -0x1.0f85d2p-4f,
     /* s = 7/8: node 53 z */
-    -0x1p-59f, -0x1.1ec1cap-4f, 0x1.cf144p-6f, 0x1.182862p-1f,
+    -0x1.666666p-59f, -0x1.1ec1cap-4f, 0x1.cf144p-6f, 0x1.182862p-1f,
     /* s = 7/8: node 54 x */
-    -0x1.066666p-58f, 0x1.ce0ca2p-7f, 0x1.658952p-11f, 0x1.f51654p-4f,
+    -0x1.266666p-58f, 0x1.ce0ca2p-7f, 0x1.658952p-11f, 0x1.f51654p-4f,
     /* s = 7/8: node 54 y */
-    0x1.39999ap-60f, -0x1.383c3p-7f, 0x1.def7c8p-8f, -0x1.f0319ap-6f,
+    0x1.333334p-60f, -0x1.383c3p-7f, 0x1.def7c8p-8f, -0x1.f0319ap-6f,
     /* s = 7/8: node 54 z */
-    -0x1.99999ap-60f, -0x1.67f578p-6f, 0x1.f7db2ap-8f, 0x1.a5fcacp-3f,
+    -0x1p-59f, -0x1.67f578p-6f, 0x1.f7db2ap-8f, 0x1.a5fcacp-3f,
     /* s = 7/8: node 55 x */
-    0x1.99999ap-71f, -0x1.e8c192p-13f, 0x1.f39efp-15f, 0x1.25b2f8p-11f,
+    0x1.4p-66f, -0x1.e8c192p-13f, 0x1.f39efp-15f, 0x1.25b2f8p-11f,
     /* s = 7/8: node 55 y */
-    -0x1.0cccccp-68f, 0x1.4722f4p-14f, 0x1.f0e82p-16f, -0x1.335cf2p-12f,
+    -0x1p-70f, 0x1.4722f4p-14f, 0x1.f0e82p-16f, -0x1.335cf2p-12f,
     /* s = 7/8: node 55 z */
-    -0x1.6p-65f, 0x1.14d65ap-12f, -0x1.f3097p-15f, 0x1.be7364p-12f,
+    -0x1.666666p-66f, 0x1.14d65ap-12f, -0x1.f3097p-15f, 0x1.be7364p-12f,
     /* s = 7/8: node 56 x */
-    0x1.d9999ap-66f, -0x1.4f71f2p-12f, -0x1.2b1abap-18f, -0x1.54bc12p-11f,
+    0x1.09999ap-65f, -0x1.4f71f2p-12f, -0x1.2b1abap-18f, -0x1.54bc12p-11f,
     /* s = 7/8: node 56 y */
-    -0x1.923334p-71f, 0x1.81e18cp-17f, 0x1.264466p-15f, -0x1.6531fap-21f,
+    -0x1p-72f, 0x1.81e18cp-17f, 0x1.264466p-15f, -0x1.6531fap-21f,
     /* s = 7/8: node 56 z */
-    0x1.99999ap-72f, -0x1.9e08f2p-15f, 0x1.9c8a3p-18f, 0x1.1d1a7cp-11f,
+    -0x1.333334p-70f, -0x1.9e08f2p-15f, 0x1.9c8a3p-18f, 0x1.1d1a7cp-11f,
     /* s = 7/8: node 57 x */
-    0x1.666666p-59f, -0x1.ded576p-6f, -0x1.e2553p-11f, -0x1.44df1cp-3f,
+    0x1p-59f, -0x1.ded576p-6f, -0x1.e2553p-11f, -0x1.44df1cp-3f,
     /* s = 7/8: node 57 y */
-    0x1.bp-63f, 0x1.816be4p-11f, 0x1.793744p-7f, 0x1.3698f8p-9f,
+    -0x1.19999ap-64f, 0x1.816be4p-11f, 0x1.793744p-7f, 0x1.3698f8p-9f,
     /* s = 7/8: node 57 z */
-    -0x1p-57f, 0x1.f6a264p-5f, 0x1.086e26p-9f, 0x1.021d4ap-2f,
+    -0x1.99999ap-59f, 0x1.f6a264p-5f, 0x1.086e26p-9f, 0x1.021d4ap-2f,
     /* s = 7/8: node 58 x */
-    0x1.19999ap-58f, -0x1.74d0dep-7f, -0x1.5bbe32p-10f, -0x1.4d7b24p-2f,
+    0x1.99999ap-62f, -0x1.74d0dep-7f, -0x1.5bbe32p-10f, -0x1.4d7b24p-2f,
     /* s = 7/8: node 58 y */
-    -0x1.1p-62f, 0x1.6285eap-10f, 0x1.8e6be4p-5f, 0x1.788326p-8f,
+    0x1.7cccccp-62f, 0x1.6285eap-10f, 0x1.8e6be4p-5f, 0x1.788326p-8f,
     /* s = 7/8: node 58 z */
-    -0x1.933334p-56f, 0x1.47d8c8p-3f, 0x1.5497cep-9f, 0x1.57794p-1f,
+    -0x1.6cccccp-56f, 0x1.47d8c8p-3f, 0x1.5497cep-9f, 0x1.57794p-1f,
     /* s = 7/8: node 59 x */
-    0x1.666666p-59f, 0x1.dd75fcp-8f, -0x1.0e11d6p-9f, -0x1.98ef74p-2f,
+    0x1.99999ap-58f, 0x1.dd75fcp-8f, -0x1.0e11d6p-9f, -0x1.98ef74p-2f,
     /* s = 7/8: node 59 y */
-    0x1.966666p-59f, 0x1.62e216p-9f, 0x1.d61bbep-4f, 0x1.81c34p-7f,
+    0x1.03999ap-58f, 0x1.62e216p-9f, 0x1.d61bbep-4f, 0x1.81c34p-7f,
     /* s = 7/8: node 59 z */
-    -0x1.59999ap-55f, 0x1.36eaep-2f, 0x1.04189ep-8f, 0x1.4dc56cp+0f,
+    -0x1.cp-56f, 0x1.36eaep-2f, 0x1.04189ep-8f, 0x1.4dc56cp+0f,
     /* s = 7/8: node 60 x */
-    -0x1.026666p-55f, 0x1.75d996p-1f, 0x1.ce19ccp-9f, 0x1.b671a8p-5f,
+    -0x1.8ep-54f, 0x1.75d996p-1f, 0x1.ce19ccp-9f, 0x1.b671a8p-5f,
     /* s = 7/8: node 60 y */
-    0x1.dcccccp-61f, 0x1.4363c8p-9f, 0x1.4b65cap-2f, 0x1.b72766p-8f,
+    0x1.6cp-58f, 0x1.4363c8p-9f, 0x1.4b65cap-2f, 0x1.b72766p-8f,
     /* s = 7/8: node 60 z */
-    -0x1.d9999ap-55f, 0x1.cb7ca6p-2f, 0x1.7e4134p-9f, 0x1.fbaaeap+0f,
+    -0x1.b33334p-55f, 0x1.cb7ca6p-2f, 0x1.7e4134p-9f, 0x1.fbaaeap+0f,
     /* s = 7/8: node 61 x */
-    -0x1.40ccccp-55f, 0x1.dc8e52p-1f, 0x1.c50b2ep-10f, 0x1.f6607ep-4f,
+    -0x1.54ccccp-54f, 0x1.dc8e52p-1f, 0x1.c50b2ep-10f, 0x1.f6607ep-4f,
     /* s = 7/8: node 61 y */
-    0x1.467334p-58f, 0x1.085dacp-9f, 0x1.958ffp-1f, 0x1.fbe48ap-11f,
+    0x1.32599ap-58f, 0x1.085dacp-9f, 0x1.958ffp-1f, 0x1.fbe48ap-11f,
     /* s = 7/8: node 61 z */
-    -0x1.ccccccp-55f, 0x1.e85bbep-4f, 0x1.bd1e88p-10f, 0x1.2c40fp+1f,
+    -0x1.666666p-55f, 0x1.e85bbep-4f, 0x1.bd1e88p-10f, 0x1.2c40fp+1f,
     /* s = 7/8: node 62 x */
-    -0x1.59999ap-56f, 0x1.f67c5p-2f, 0x1.648e54p-9f, 0x1.151394p-2f,
+    -0x1.18p-55f, 0x1.f67c5p-2f, 0x1.648e54p-9f, 0x1.151394p-2f,
     /* s = 7/8: node 62 y */
-    -0x1.396666p-58f, 0x1.78069cp-9f, 0x1.18241ap-2f, 0x1.07da3ep-8f,
+    0x1.b9999ap-61f, 0x1.78069cp-9f, 0x1.18241ap-2f, 0x1.07da3ep-8f,
     /* s = 7/8: node 62 z */
-    -0x1.8p-56f, -0x1.693aecp-5f, 0x1.28ba52p-11f, 0x1.bbff76p+0f,
+    -0x1p-57f, -0x1.693aecp-5f, 0x1.28ba52p-11f, 0x1.bbff76p+0f,
     /* s = 7/8: node 63 x */
-    -0x1.ap-57f, 0x1.757a3cp-3f, 0x1.5d7424p-10f, 0x1.3c207p-2f,
+    -0x1.bcccccp-56f, 0x1.757a3cp-3f, 0x1.5d7424p-10f, 0x1.3c207p-2f,
     /* s = 7/8: node 63 y */
-    0x1.6eccccp-61f, 0x1.ea1422p-11f, 0x1.df5a28p-4f, 0x1.e272fcp-11f,
+    0x1.9a6666p-60f, 0x1.ea1422p-11f, 0x1.df5a28p-4f, 0x1.e272fcp-11f,
     /* s = 7/8: node 63 z */
-    -0x1.e66666p-57f, -0x1.0649e8p-3f, -0x1.869b0ep-12f, 0x1.297546p+0f,
+    -0x1.4p-56f, -0x1.0649e8p-3f, -0x1.869b0ep-12f, 0x1.297546p+0f,
     /* s = 7/8: node 64 x */
-    -0x1.733334p-57f, 0x1.58a934p-4f, 0x1.93e9acp-11f, 0x1.124cf2p-2f,
+    -0x1.f9999ap-57f, 0x1.58a934p-4f, 0x1.93e9acp-11f, 0x1.124cf2p-2f,
     /* s = 7/8: node 64 y */
-    0x1.45999ap-61f, 0x1.f02ea4p-11f, 0x1.3f2c72p-5f, 0x1.87c744p-10f,
+    0x1.1b3334p-61f, 0x1.f02ea4p-11f, 0x1.3f2c72p-5f, 0x1.87c744p-10f,
     /* s = 7/8: node 64 z */
-    -0x1.333334p-58f, -0x1.421732p-4f, -0x1.48881p-12f, 0x1.35adfap-1f,
+    0x1.99999ap-59f, -0x1.421732p-4f, -0x1.48881p-12f, 0x1.35adfap-1f,
     /* s = 7/8: node 65 x */
-    -0x1.cp-59f, 0x1.59aadp-7f, 0x1.a9ff9p-13f, 0x1.20cf88p-3f,
+    -0x1.19999ap-59f, 0x1.59aadp-7f, 0x1.a9ff9p-13f, 0x1.20cf88p-3f,
     /* s = 7/8: node 65 y */
-    0x1.133334p-64f, 0x1.648426p-12f, 0x1.5fd776p-7f, 0x1.84b7c6p-11f,
+    0x1.ap-65f, 0x1.648426p-12f, 0x1.5fd776p-7f, 0x1.84b7c6p-11f,
     /* s = 7/8: node 65 z */
-    0x1.99999ap-60f, -0x1.c6c02ep-6f, -0x1.fc7c66p-14f, 0x1.df96f4p-3f,
+    -0x1.666666p-59f, -0x1.c6c02ep-6f, -0x1.fc7c66p-14f, 0x1.df96f4p-3f,
     /* s = 7/8: node 66 x */
-    0x1.666666p-67f, -0x1.14d794p-12f, -0x1.1bb1f2p-18f, 0x1.1f3a46p-11f,
+    0x1.cp-67f, -0x1.14d794p-12f, -0x1.1bb1f2p-18f, 0x1.1f3a46p-11f,
     /* s = 7/8: node 66 y */
-    0x1.3e6666p-69f, -0x1.041398p-19f, 0x1.3df49ap-13f, -0x1.b9aa96p-18f,
+    0x1.14p-69f, -0x1.041398p-19f, 0x1.3df49ap-13f, -0x1.b9aa96p-18f,
     /* s = 7/8: node 66 z */
-    -0x1.0cccccp-66f, 0x1.22e3d2p-12f, 0x1.4dcc44p-19f, 0x1.0b116ep-11f,
+    -0x1.cp-67f, 0x1.22e3d2p-12f, 0x1.4dcc44p-19f, 0x1.0b116ep-11f,
     /* s = 7/8: node 67 x */
-    0x1.6cccccp-66f, -0x1.9dc08ap-13f, 0x1.64b22cp-16f, -0x1.f11232p-12f,
+    0x1.666666p-66f, -0x1.9dc08ap-13f, 0x1.64b22cp-16f, -0x1.f11232p-12f,
     /* s = 7/8: node 67 y */
-    -0x1.d33334p-67f, 0x1.092852p-13f, 0x1.0434a8p-14f, 0x1.67d48p-12f,
+    -0x1.366666p-66f, 0x1.092852p-13f, 0x1.0434a8p-14f, 0x1.67d48p-12f,
     /* s = 7/8: node 67 z */
-    -0x1.99999ap-69f, -0x1.e7a0e6p-15f, 0x1.309d0ap-16f, 0x1.0f3fd2p-11f,
+    -0x1p-68f, -0x1.e7a0e6p-15f, 0x1.309d0ap-16f, 0x1.0f3fd2p-11f,
     /* s = 7/8: node 68 x */
-    0x1.066666p-58f, -0x1.2fd99cp-6f, 0x1.5bb762p-8f, -0x1.1807p-3f,
+    0x1.ccccccp-61f, -0x1.2fd99cp-6f, 0x1.5bb762p-8f, -0x1.1807p-3f,
     /* s = 7/8: node 68 y */
-    -0x1.f33334p-61f, 0x1.809708p-8f, 0x1.15fe02p-7f, 0x1.5544c6p-5f,
+    -0x1.b33334p-61f, 0x1.809708p-8f, 0x1.15fe02p-7f, 0x1.5544c6p-5f,
     /* s = 7/8: node 68 z */
-    -0x1p-58f, 0x1.8cb85p-5f, -0x1.388e9ap-7f, 0x1.c3a766p-3f,
+    -0x1p-57f, 0x1.8cb85p-5f, -0x1.388e9ap-7f, 0x1.c3a766p-3f,
     /* s = 7/8: node 69 x */
-    0x1.a66666p-58f, -0x1.1cd5a2p-6f, 0x1.1f2338p-7f, -0x1.27d95cp-2f,
+    0x1.4cccccp-59f, -0x1.1cd5a2p-6f, 0x1.1f2338p-7f, -0x1.27d95cp-2f,
     /* s = 7/8: node 69 y */
-    -0x1.666666p-59f, 0x1.544e08p-7f, 0x1.344dccp-5f, 0x1.5b85fep-4f,
+    -0x1.4p-59f, 0x1.544e08p-7f, 0x1.344dccp-5f, 0x1.5b85fep-4f,
     /* s = 7/8: node 69 z */
-    -0x1p-56f, 0x1.131554p-3f, -0x1.9764d8p-6f, 0x1.29f374p-1f,
+    -0x1.b33334p-58f, 0x1.131554p-3f, -0x1.9764d8p-6f, 0x1.29f374p-1f,
     /* s = 7/8: node 70 x */
-    0x1p-58f, 0x1.8fdac8p-8f, 0x1.5abd76p-6f, -0x1.4b489cp-2f,
+    0x1.333334p-59f, 0x1.8fdac8p-8f, 0x1.5abd76p-6f, -0x1.4b489cp-2f,
     /* s = 7/8: node 70 y */
-    -0x1.266666p-58f, 0x1.1cc558p-5f, 0x1.5faedap-4f, 0x1.449648p-3f,
+    -0x1.e66666p-59f, 0x1.1cc558p-5f, 0x1.5faedap-4f, 0x1.449648p-3f,
     /* s = 7/8: node 70 z */
-    -0x1.8p-55f, 0x1.f82ffcp-3f, -0x1.56e5b6p-4f, 0x1.20e0e6p+0f,
+    -0x1.733334p-56f, 0x1.f82ffcp-3f, -0x1.56e5b6p-4f, 0x1.20e0e6p+0f,
     /* s = 7/8: node 71 x */
-    -0x1.31999ap-56f, 0x1.9fed46p-2f, -0x1.1483cep-3f, 0x1.63f3bcp-4f,
+    -0x1.bb3334p-56f, 0x1.9fed46p-2f, -0x1.1483cep-3f, 0x1.63f3bcp-4f,
     /* s = 7/8: node 71 y */
-    0x1.066666p-58f, -0x1.d02dc2p-5f, 0x1.1681fep-2f, 0x1.7fdc0cp-3f,
+    0x1.633334p-57f, -0x1.d02dc2p-5f, 0x1.1681fep-2f, 0x1.7fdc0cp-3f,
     /* s = 7/8: node 71 z */
-    -0x1.f33334p-55f, 0x1.4a0332p-2f, -0x1.2f8806p-3f, 0x1.b2abcep+0f,
+    -0x1.0cccccp-55f, 0x1.4a0332p-2f, -0x1.2f8806p-3f, 0x1.b2abcep+0f,
     /* s = 7/8: node 72 x */
-    -0x1.7eccccp-55f, 0x1.6a40eap-2f, -0x1.22af2ep-6f, 0x1.862032p-4f,
+    -0x1.99999ap-56f, 0x1.6a40eap-2f, -0x1.22af2ep-6f, 0x1.862032p-4f,
     /* s = 7/8: node 72 y */
-    -0x1.0cccccp-58f, 0x1.9bc07ep-5f, 0x1.8d328ep-2f, 0x1.bdcd52p-3f,
+    -0x1.666666p-60f, 0x1.9bc07ep-5f, 0x1.8d328ep-2f, 0x1.bdcd52p-3f,
     /* s = 7/8: node 72 z */
-    -0x1.19999ap-55f, 0x1.9d57c2p-4f, -0x1.d79b8ap-4f, 0x1.c058c8p+0f,
+    -0x1.ccccccp-56f, 0x1.9d57c2p-4f, -0x1.d79b8ap-4f, 0x1.c058c8p+0f,
     /* s = 7/8: node 73 x */
-    -0x1p-59f, 0x1.219f46p-2f, 0x1.870a5p-5f, 0x1.cd90cp-3f,
+    -0x1.666666p-56f, 0x1.219f46p-2f, 0x1.870a5p-5f, 0x1.cd90cp-3f,
     /* s = 7/8: node 73 y */
-    -0x1.a66666p-58f, 0x1.2c56d8p-4f, 0x1.bf36b6p-3f, 0x1.62155ap-3f,
+    -0x1.266666p-59f, 0x1.2c56d8p-4f, 0x1.bf36b6p-3f, 0x1.62155ap-3f,
     /* s = 7/8: node 73 z */
-    -0x1.4p-56f, -0x1.ef2394p-6f, -0x1.8f3468p-4f, 0x1.7c8b68p+0f,
+    -0x1.b33334p-57f, -0x1.ef2394p-6f, -0x1.8f3468p-4f, 0x1.7c8b68p+0f,
     /* s = 7/8: node 74 x */
-    -0x1.6p-57f, 0x1.3b147p-3f, 0x1.767076p-7f, 0x1.13c84cp-2f,
+    -0x1.266666p-57f, 0x1.3b147p-3f, 0x1.767076p-7f, 0x1.13c84cp-2f,
     /* s = 7/8: node 74 y */
-    -0x1.59999ap-59f, 0x1.a2d8bp-6f, 0x1.80c4dap-4f, 0x1.05225ep-3f,
+    -0x1.e66666p-60f, 0x1.a2d8bp-6f, 0x1.80c4dap-4f, 0x1.05225ep-3f,
     /* s = 7/8: node 74 z */
-    -0x1.0cccccp-56f, -0x1.af8b3ep-4f, -0x1.034c34p-4f, 0x1.07029ep+0f,
+    -0x1.8p-57f, -0x1.af8b3ep-4f, -0x1.034c34p-4f, 0x1.07029ep+0f,
     /* s = 7/8: node 75 x */
-    -0x1.e66666p-58f, 0x1.07996ap-4f, 0x1.ad98ecp-8f, 0x1.f51508p-3f,
+    -0x1.2cccccp-57f, 0x1.07996ap-4f, 0x1.ad98ecp-8f, 0x1.f51508p-3f,
     /* s = 7/8: node 75 y */
-    -0x1.666666p-60f, 0x1.1f7f0cp-6f, 0x1.3f9df6p-5f, 0x1.16702ep-4f,
+    -0x1.a66666p-60f, 0x1.1f7f0cp-6f, 0x1.3f9df6p-5f, 0x1.16702ep-4f,
     /* s = 7/8: node 75 z */
-    -0x1.99999ap-60f, -0x1.2375eap-4f, -0x1.d7527cp-6f, 0x1.173528p-1f,
+    -0x1p-58f, -0x1.2375eap-4f, -0x1.d7527cp-6f, 0x1.173528p-1f,
     /* s = 7/8: node 76 x */
-    -0x1.333334p-59f, 0x1.da2fcep-7f, -0x1.bcc09ap-12f, 0x1.fa870ap-4f,
+    -0x1.a66666p-59f, 0x1.da2fcep-7f, -0x1.bcc09ap-12f, 0x1.fa870ap-4f,
     /* s = 7/8: node 76 y */
-    -0x1.a66666p-61f, 0x1.4e346ap-7f, 0x1.ed06aap-8f, 0x1.007586p-5f,
+    -0x1.0cccccp-60f, 0x1.4e346ap-7f, 0x1.ed06aap-8f, 0x1.007586p-5f,
     /* s = 7/8: node 76 z */
-    -0x1.99999ap-59f, -0x1.645ff4p-6f, -0x1.02f74cp-7f, 0x1.a7ab68p-3f,
+    -0x1p-60f, -0x1.645ff4p-6f, -0x1.02f74cp-7f, 0x1.a7ab68p-3f,
     /* s = 7/8: node 77 x */
-    0x1.666666p-68f, -0x1.f59e74p-13f, -0x1.e7fe06p-15f, 0x1.1abe3p-11f,
+    0x1.6cccccp-66f, -0x1.f59e74p-13f, -0x1.e7fe06p-15f, 0x1.1abe3p-11f,
     /* s = 7/8: node 77 y */
-    0x1.99999ap-70f, -0x1.3be87ap-14f, 0x1.f62554p-16f, 0x1.3a44cp-12f,
+    0x1.ccccccp-70f, -0x1.3be87ap-14f, 0x1.f62554p-16f, 0x1.3a44cp-12f,
     /* s = 7/8: node 77 z */
-    -0x1.ep-66f, 0x1.18a136p-12f, 0x1.095204p-14f, 0x1.c859ap-12f,
+    -0x1.2cccccp-66f, 0x1.18a136p-12f, 0x1.095204p-14f, 0x1.c859ap-12f,
     /* s = 7/8: node 78 x */
-    0x1.39999ap-66f, -0x1.56bafp-13f, 0x1.88b2f6p-14f, -0x1.e6f09ep-12f,
+    0x1.133334p-66f, -0x1.56bafp-13f, 0x1.88b2f6p-14f, -0x1.e6f09ep-12f,
     /* s = 7/8: node 78 y */
-    -0x1.266666p-67f, 0x1.02d296p-13f, 0x1.207aa2p-18f, 0x1.ea6e4cp-12f,
+    -0x1.99999ap-67f, 0x1.02d296p-13f, 0x1.207aa2p-18f, 0x1.ea6e4cp-12f,
     /* s = 7/8: node 78 z */
-    -0x1p-68f, -0x1.42c46cp-14f, 0x1.4c827ap-14f, 0x1.8e1e7p-12f,
+    -0x1.99999ap-72f, -0x1.42c46cp-14f, 0x1.4c827ap-14f, 0x1.8e1e7p-12f,
     /* s = 7/8: node 79 x */
-    0x1.333334p-60f, -0x1.ace874p-8f, 0x1.0f9532p-11f, -0x1.8e7b12p-4f,
+    0x1.ccccccp-60f, -0x1.ace874p-8f, 0x1.0f9532p-11f, -0x1.8e7b12p-4f,
     /* s = 7/8: node 79 y */
-    -0x1.99999ap-61f, 0x1.fcf55p-9f, 0x1.0fd328p-8f, 0x1.d41d86p-5f,
+    -0x1.4p-60f, 0x1.fcf55p-9f, 0x1.0fd328p-8f, 0x1.d41d86p-5f,
     /* s = 7/8: node 79 z */
-    -0x1.6p-58f, 0x1.b03c8cp-6f, -0x1.29c7a6p-7f, 0x1.3bfe08p-3f,
+    -0x1.e66666p-60f, 0x1.b03c8cp-6f, -0x1.29c7a6p-7f, 0x1.3bfe08p-3f,
     /* s = 7/8: node 80 x */
-    0x1.666666p-59f, -0x1.61f8aep-8f, 0x1.1d1d54p-8f, -0x1.898372p-3f,
+    0x1p-60f, -0x1.61f8aep-8f, 0x1.1d1d54p-8f, -0x1.898372p-3f,
     /* s = 7/8: node 80 y */
-    -0x1.2cccccp-58f, 0x1.e783fcp-7f, 0x1.44746p-6f, 0x1.ee5f4ap-4f,
+    -0x1.333334p-60f, 0x1.e783fcp-7f, 0x1.44746p-6f, 0x1.ee5f4ap-4f,
     /* s = 7/8: node 80 z */
-    -0x1.8cccccp-57f, 0x1.6acf5p-4f, -0x1.5f1d76p-5f, 0x1.b0e606p-2f,
+    -0x1.2p-56f, 0x1.6acf5p-4f, -0x1.5f1d76p-5f, 0x1.b0e606p-2f,
     /* s = 7/8: node 81 x */
-    0x1.666666p-59f, 0x1.e63d4ep-6f, 0x1.73c49p-9f, -0x1.8e5be8p-3f,
+    0x1.b33334p-59f, 0x1.e63d4ep-6f, 0x1.73c49p-9f, -0x1.8e5be8p-3f,
     /* s = 7/8: node 81 y */
-    -0x1p-58f, 0x1.632924p-6f, 0x1.aca048p-5f, 0x1.994d8cp-3f,
+    -0x1.19999ap-59f, 0x1.632924p-6f, 0x1.aca048p-5f, 0x1.994d8cp-3f,
     /* s = 7/8: node 81 z */
-    -0x1.ccccccp-58f, 0x1.244e04p-3f, -0x1.768098p-4f, 0x1.93fe4ap-1f,
+    -0x1.d9999ap-56f, 0x1.244e04p-3f, -0x1.768098p-4f, 0x1.93fe4ap-1f,
     /* s = 7/8: node 82 x */
-    -0x1.59999ap-58f, 0x1.be41dep-4f, -0x1.2a16bap-6f, -0x1.883396p-4f,
+    -0x1.99999ap-60f, 0x1.be41dep-4f, -0x1.2a16bap-6f, -0x1.883396p-4f,
     /* s = 7/8: node 82 y */
-    -0x1p-58f, 0x1.0a9f04p-6f, 0x1.d8a2b6p-4f, 0x1.0ac22cp-2f,
+    -0x1.b33334p-59f, 0x1.0a9f04p-6f, 0x1.d8a2b6p-4f, 0x1.0ac22cp-2f,
     /* s = 7/8: node 82 z */
-    -0x1.f33334p-56f, 0x1.5eadecp-3f, -0x1.35f5b4p-3f, 0x1.25a2bcp+0f,
+    -0x1p-55f, 0x1.5eadecp-3f, -0x1.35f5b4p-3f, 0x1.25a2bcp+0f,
     /* s = 7/8: node 83 x */
-    -0x1.6p-57f, 0x1.45e232p-3f, -0x1.53bd0ep-8f, 0x1.75a014p-5f,
+    -0x1.386666p-56f, 0x1.45e232p-3f, -0x1.53bd0ep-8f, 0x1.75a014p-5f,
     /* s = 7/8: node 83 y */
-    0x1.333334p-59f, 0x1.3f1c36p-5f, 0x1.21a534p-3f, 0x1.42802cp-2f,
+    -0x1.ccccccp-58f, 0x1.3f1c36p-5f, 0x1.21a534p-3f, 0x1.42802cp-2f,
     /* s = 7/8: node 83 z */
-    -0x1.19999ap-57f, 0x1.052656p-4f, -0x1.3c7116p-3f, 0x1.397966p+0f,
+    -0x1.333334p-56f, 0x1.052656p-4f, -0x1.3c7116p-3f, 0x1.397966p+0f,
     /* s = 7/8: node 84 x */
-    -0x1.6p-57f, 0x1.12c556p-3f, 0x1.6a3b3p-8f, 0x1.471d72p-3f,
+    -0x1.b9999ap-57f, 0x1.12c556p-3f, 0x1.6a3b3p-8f, 0x1.471d72p-3f,
     /* s = 7/8: node 84 y */
-    -0x1.666666p-59f, 0x1.1b8806p-5f, 0x1.d299a2p-4f, 0x1.01c67p-2f,
+    -0x1.4cccccp-59f, 0x1.1b8806p-5f, 0x1.d299a2p-4f, 0x1.01c67p-2f,
     /* s = 7/8: node 84 z */
-    -0x1.99999ap-57f, -0x1.c7aa2cp-6f, -0x1.041646p-3f, 0x1.0d9daap+0f,
+    -0x1.666666p-56f, -0x1.c7aa2cp-6f, -0x1.041646p-3f, 0x1.0d9daap+0f,
     /* s = 7/8: node 85 x */
-    -0x1.2cccccp-57f, 0x1.617a7p-4f, 0x1.012e38p-6f, 0x1.8a39b8p-3f,
+    -0x1.f33334p-58f, 0x1.617a7p-4f, 0x1.012e38p-6f, 0x1.8a39b8p-3f,
     /* s = 7/8: node 85 y */
-    -0x1.cp-59f, 0x1.fc8d0ep-6f, 0x1.035512p-4f, 0x1.76529ap-3f,
+    -0x1.266666p-58f, 0x1.fc8d0ep-6f, 0x1.035512p-4f, 0x1.76529ap-3f,
     /* s = 7/8: node 85 z */
-    -0x1.333334p-58f, -0x1.071072p-4f, -0x1.3c44b8p-4f, 0x1.7ac9a6p-1f,
+    -0x1.0cccccp-56f, -0x1.071072p-4f, -0x1.3c44b8p-4f, 0x1.7ac9a6p-1f,
     /* s = 7/8: node 86 x */
-    -0x1.b33334p-59f, 0x1.44c8p-5f, 0x1.1edadep-8f, 0x1.763828p-3f,
+    -0x1.ccccccp-58f, 0x1.44c8p-5f, 0x1.1edadep-8f, 0x1.763828p-3f,
     /* s = 7/8: node 86 y */
-    -0x1.59999ap-59f, 0x1.4d47f8p-6f, 0x1.9a87d8p-6f, 0x1.ae3facp-4f,
+    -0x1p-58f, 0x1.4d47f8p-6f, 0x1.9a87d8p-6f, 0x1.ae3facp-4f,
     /* s = 7/8: node 86 z */
-    -0x1p-58f, -0x1.8d919cp-5f, -0x1.3ed702p-5f, 0x1.978cb2p-2f,
+    -0x1.ccccccp-59f, -0x1.8d919cp-5f, -0x1.3ed702p-5f, 0x1.978cb2p-2f,
     /* s = 7/8: node 87 x */
-    -0x1.79999ap-59f, 0x1.4ddef6p-7f, 0x1.c30e7ap-9f, 0x1.74cf02p-4f,
+    -0x1.99999ap-61f, 0x1.4ddef6p-7f, 0x1.c30e7ap-9f, 0x1.74cf02p-4f,
     /* s = 7/8: node 87 y */
-    -0x1.8cccccp-60f, 0x1.017p-6f, 0x1.a8fb74p-8f, 0x1.8a71cp-5f,
+    -0x1.733334p-60f, 0x1.017p-6f, 0x1.a8fb74p-8f, 0x1.8a71cp-5f,
     /* s = 7/8: node 87 z */
-    -0x1.666666p-61f, -0x1.66ccfp-7f, -0x1.000136p-7f, 0x1.2e0cb8p-3f,
+    0x1.19999ap-60f, -0x1.66ccfp-7f, -0x1.000136p-7f, 0x1.2e0cb8p-3f,
     /* s = 7/8: node 88 x */
-    -0x1.99999ap-72f, -0x1.1f7e14p-13f, -0x1.87bdf4p-14f, 0x1.a921c2p-12f,
+    0x1.e66666p-68f, -0x1.1f7e14p-13f, -0x1.87bdf4p-14f, 0x1.a921c2p-12f,
     /* s = 7/8: node 88 y */
-    0x1.99999ap-72f, -0x1.412c9ap-14f, 0x1.6129d8p-20f, 0x1.cc9cacp-12f,
+    -0x1.99999ap-71f, -0x1.412c9ap-14f, 0x1.6129d8p-20f, 0x1.cc9cacp-12f,
     /* s = 7/8: node 88 z */
-    -0x1.c66666p-67f, 0x1.ccd5aep-13f, 0x1.886cd8p-14f, 0x1.5fe3a6p-12f,
+    -0x1.3cccccp-66f, 0x1.ccd5aep-13f, 0x1.886cd8p-14f, 0x1.5fe3a6p-12f,
     /* s = 7/8: node 89 x */
-    0x1.d9999ap-68f, -0x1.2fdfdap-14f, 0x1.df0482p-15f, -0x1.0470e2p-12f,
+    0x1.e66666p-68f, -0x1.2fdfdap-14f, 0x1.df0482p-15f, -0x1.0470e2p-12f,
     /* s = 7/8: node 89 y */
-    -0x1.666666p-68f, 0x1.fecddcp-14f, -0x1.7ec5bcp-15f, 0x1.e66384p-12f,
+    -0x1.c66666p-66f, 0x1.fecddcp-14f, -0x1.7ec5bcp-15f, 0x1.e66384p-12f,
     /* s = 7/8: node 89 z */
-    -0x1.333334p-69f, -0x1.3a49c6p-14f, 0x1.9a61e6p-14f, 0x1.1058aap-12f,
+    0x1.466666p-67f, -0x1.3a49c6p-14f, 0x1.9a61e6p-14f, 0x1.1058aap-12f,
     /* s = 7/8: node 90 x */
-    0x1.59999ap-60f, -0x1.293f34p-9f, -0x1.7fabd2p-10f, -0x1.bd7666p-5f,
+    0x1.b33334p-61f, -0x1.293f34p-9f, -0x1.7fabd2p-10f, -0x1.bd7666p-5f,
     /* s = 7/8: node 90 y */
-    0x1.99999ap-65f, 0x1.08c5eap-9f, 0x1.77ce16p-12f, 0x1.ab1e38p-5f,
+    -0x1.266666p-60f, 0x1.08c5eap-9f, 0x1.77ce16p-12f, 0x1.ab1e38p-5f,
     /* s = 7/8: node 90 z */
-    -0x1.266666p-60f, 0x1.2b1f34p-7f, -0x1.0d2daep-8f, 0x1.39359ap-4f,
+    -0x1.8cccccp-60f, 0x1.2b1f34p-7f, -0x1.0d2daep-8f, 0x1.39359ap-4f,
     /* s = 7/8: node 91 x */
-    0x1.666666p-61f, 0x1.e8348p-10f, -0x1.5eaff8p-8f, -0x1.b7c438p-4f,
+    0x1.99999ap-61f, 0x1.e8348p-10f, -0x1.5eaff8p-8f, -0x1.b7c438p-4f,
     /* s = 7/8: node 91 y */
-    -0x1.19999ap-60f, 0x1.d0fefcp-8f, 0x1.784b4ap-8f, 0x1.cb6f4ep-4f,
+    -0x1.333334p-60f, 0x1.d0fefcp-8f, 0x1.784b4ap-8f, 0x1.cb6f4ep-4f,
     /* s = 7/8: node 91 z */
-    -0x1.0cccccp-58f, 0x1.3c4e0cp-5f, -0x1.be92eep-6f, 0x1.be48eap-3f,
+    -0x1.466666p-57f, 0x1.3c4e0cp-5f, -0x1.be92eep-6f, 0x1.be48eap-3f,
     /* s = 7/8: node 92 x */
-    0x1.99999ap-62f, 0x1.4bfa3p-6f, -0x1.6266bep-7f, -0x1.a2f91p-4f,
+    -0x1.333334p-61f, 0x1.4bfa3p-6f, -0x1.6266bep-7f, -0x1.a2f91p-4f,
     /* s = 7/8: node 92 y */
-    -0x1.d9999ap-59f, 0x1.ab437p-7f, 0x1.42fa6p-6f, 0x1.7c379ep-3f,
+    -0x1.39999ap-58f, 0x1.ab437p-7f, 0x1.42fa6p-6f, 0x1.7c379ep-3f,
     /* s = 7/8: node 92 z */
-    -0x1.4p-57f, 0x1.16ab96p-4f, -0x1.e8463p-5f, 0x1.b469e4p-2f,
+    -0x1.59999ap-57f, 0x1.16ab96p-4f, -0x1.e8463p-5f, 0x1.b469e4p-2f,
     /* s = 7/8: node 93 x */
-    0x1.4cccccp-60f, 0x1.49fc14p-5f, -0x1.80031ep-7f, -0x1.d91eap-5f,
+    -0x0p+0f, 0x1.49fc14p-5f, -0x1.80031ep-7f, -0x1.d91eap-5f,
     /* s = 7/8: node 93 y */
-    -0x1.99999ap-60f, 0x1.964d6p-7f, 0x1.48ab9p-5f, 0x1.faf1acp-3f,
+    -0x1.666666p-59f, 0x1.964d6p-7f, 0x1.48ab9p-5f, 0x1.faf1acp-3f,
     /* s = 7/8: node 93 z */
-    -0x1.266666p-57f, 0x1.043e4p-4f, -0x1.68a5a2p-4f, 0x1.27f35p-1f,
+    -0x1.8p-57f, 0x1.043e4p-4f, -0x1.68a5a2p-4f, 0x1.27f35p-1f,
     /* s = 7/8: node 94 x */
-    -0x1.00ccccp-58f, 0x1.7e2142p-5f, -0x1.d0c694p-9f, 0x1.bc4ad2p-7f,
+    -0x1.273334p-58f, 0x1.7e2142p-5f, -0x1.d0c694p-9f, 0x1.bc4ad2p-7f,
     /* s = 7/8: node 94 y */
-    -0x1.19999ap-58f, 0x1.371018p-6f, 0x1.b97d2p-5f, 0x1.0becbp-2f,
+    -0x1.b33334p-59f, 0x1.371018p-6f, 0x1.b97d2p-5f, 0x1.0becbp-2f,
     /* s = 7/8: node 94 z */
-    -0x1.ccccccp-59f, 0x1.0cca2ap-5f, -0x1.8bcb72p-4f, 0x1.42a0a2p-1f,
+    -0x1.b33334p-57f, 0x1.0cca2ap-5f, -0x1.8bcb72p-4f, 0x1.42a0a2p-1f,
     /* s = 7/8: node 95 x */
-    -0x1.09999ap-58f, 0x1.aeb126p-5f, 0x1.5eb266p-7f, 0x1.489624p-4f,
+    -0x1.19999ap-58f, 0x1.aeb126p-5f, 0x1.5eb266p-7f, 0x1.489624p-4f,
     /* s = 7/8: node 95 y */
-    -0x1.b33334p-59f, 0x1.ad2abp-6f, 0x1.4be482p-5f, 0x1.f142b2p-3f,
+    -0x1.e66666p-58f, 0x1.ad2abp-6f, 0x1.4be482p-5f, 0x1.f142b2p-3f,
     /* s = 7/8: node 95 z */
-    -0x1.99999ap-62f, -0x1.2ee6fcp-7f, -0x1.51264ap-4f, 0x1.1d4da4p-1f,
+    -0x1.ccccccp-57f, -0x1.2ee6fcp-7f, -0x1.51264ap-4f, 0x1.1d4da4p-1f,
     /* s = 7/8: node 96 x */
-    -0x1.0cccccp-58f, 0x1.3dd292p-5f, 0x1.40bfeep-7f, 0x1.ca6d9cp-4f,
+    -0x1.ap-58f, 0x1.3dd292p-5f, 0x1.40bfeep-7f, 0x1.ca6d9cp-4f,
     /* s = 7/8: node 96 y */
-    -0x1.2cccccp-58f, 0x1.166efap-6f, 0x1.79e234p-6f, 0x1.69ccecp-3f,
+    -0x1.ccccccp-59f, 0x1.166efap-6f, 0x1.79e234p-6f, 0x1.69ccecp-3f,
     /* s = 7/8: node 96 z */
-    -0x1.ccccccp-59f, -0x1.f0fd1p-6f, -0x1.c0eeb4p-5f, 0x1.9a7f84p-2f,
+    -0x1p-57f, -0x1.f0fd1p-6f, -0x1.c0eeb4p-5f, 0x1.9a7f84p-2f,
     /* s = 7/8: node 97 x */
     -0x1.0cccccp-59f, 0x1.28d162p-6f, 0x1.2534fcp-7f, 0x1.b3c18ap-4f,
     /* s = 7/8: node 97 y */
-    -0x1.4cccccp-59f, 0x1.0dfb8ep-6f, 0x1.617f3ap-7f, 0x1.b105e4p-4f,
+    -0x1.666666p-59f, 0x1.0dfb8ep-6f, 0x1.617f3ap-7f, 0x1.b105e4p-4f,
     /* s = 7/8: node 97 z */
-    -0x1p-60f, -0x1.7dacaep-6f, -0x1.9a8168p-6f, 0x1.ab3c34p-3f,
+    -0x1.666666p-60f, -0x1.7dacaep-6f, -0x1.9a8168p-6f, 0x1.ab3c34p-3f,
     /* s = 7/8: node 98 x */
-    -0x1.ccccccp-61f, 0x1.a3c4fap-8f, 0x1.6a29c6p-9f, 0x1.bc08cap-5f,
+    -0x1.666666p-60f, 0x1.a3c4fap-8f, 0x1.6a29c6p-9f, 0x1.bc08cap-5f,
     /* s = 7/8: node 98 y */
-    -0x1.866666p-60f, 0x1.997d64p-7f, 0x1.43d278p-9f, 0x1.7cf5f2p-5f,
+    -0x1.4p-60f, 0x1.997d64p-7f, 0x1.43d278p-9f, 0x1.7cf5f2p-5f,
     /* s = 7/8: node 98 z */
-    -0x1.666666p-60f, -0x1.4bc0d2p-10f, -0x1.80fac8p-9f, 0x1.2f0bb2p-4f,
+    -0x1.0cccccp-60f, -0x1.4bc0d2p-10f, -0x1.80fac8p-9f, 0x1.2f0bb2p-4f,
     /* s = 7/8: node 99 x */
-    0x1.666666p-69f, -0x1.31f74ep-14f, -0x1.fa32p-15f, 0x1.de8594p-13f,
+    0x1.99999ap-69f, -0x1.31f74ep-14f, -0x1.fa32p-15f, 0x1.de8594p-13f,
     /* s = 7/8: node 99 y */
-    0x1p-69f, -0x1.847afcp-14f, -0x1.8cded4p-15f, 0x1.d1ca62p-12f,
+    0x1.333334p-68f, -0x1.847afcp-14f, -0x1.8cded4p-15f, 0x1.d1ca62p-12f,
     /* s = 7/8: node 99 z */
-    -0x1.19999ap-66f, 0x1.7df92ap-13f, 0x1.00dbb2p-13f, 0x1.1c282ep-12f,
+    -0x1.59999ap-68f, 0x1.7df92ap-13f, 0x1.00dbb2p-13f, 0x1.1c282ep-12f,
     /* s = 7/8: node 100 x */
-    0x1.f33334p-69f, -0x1.51b0c6p-15f, 0x1.d58862p-15f, -0x1.a2a13cp-14f,
+    0x1.c66666p-68f, -0x1.51b0c6p-15f, 0x1.d58862p-15f, -0x1.a2a13cp-14f,
     /* s = 7/8: node 100 y */
-    -0x1.b33334p-68f, 0x1.42d852p-15f, -0x1.57f3eap-16f, 0x1.a5a90cp-13f,
+    -0x1.a66666p-68f, 0x1.42d852p-15f, -0x1.57f3eap-16f, 0x1.a5a90cp-13f,
     /* s = 7/8: node 100 z */
-    0x1.666666p-70f, -0x1.d68262p-15f, 0x1.44d60cp-14f, 0x1.8b9284p-13f,
+    -0x0p+0f, -0x1.d68262p-15f, 0x1.44d60cp-14f, 0x1.8b9284p-13f,
     /* s = 7/8: node 101 x */
-    0x1p-62f, 0x1.5e0c8cp-10f, -0x1.22a124p-8f, -0x1.68ec5ep-6f,
+    0x1.ccccccp-64f, 0x1.5e0c8cp-10f, -0x1.22a124p-8f, -0x1.68ec5ep-6f,
     /* s = 7/8: node 101 y */
-    0x1.99999ap-64f, -0x1.36c3fp-10f, 0x1.163cf2p-10f, 0x1.8aaf9cp-6f,
+    0x1p-63f, -0x1.36c3fp-10f, 0x1.163cf2p-10f, 0x1.8aaf9cp-6f,
     /* s = 7/8: node 101 z */
-    0x1.99999ap-65f, -0x1.84088ap-9f, 0x1.1c09dap-8f, 0x1.808088p-6f,
+    -0x1.333334p-65f, -0x1.84088ap-9f, 0x1.1c09dap-8f, 0x1.808088p-6f,
     /* s = 7/8: node 102 x */
-    0x1.266666p-60f, 0x1.75846ap-11f, -0x1.07d788p-7f, -0x1.715206p-5f,
+    0x1p-63f, 0x1.75846ap-11f, -0x1.07d788p-7f, -0x1.715206p-5f,
     /* s = 7/8: node 102 y */
-    -0x1.19999ap-60f, 0x1.c1308cp-9f, 0x1.8a063ap-10f, 0x1.d4f53ap-5f,
+    -0x1.666666p-60f, 0x1.c1308cp-9f, 0x1.8a063ap-10f, 0x1.d4f53ap-5f,
     /* s = 7/8: node 102 z */
-    -0x1p-59f, 0x1.18a2d6p-7f, -0x1.43756ep-8f, 0x1.407806p-4f,
+    -0x1.cp-59f, 0x1.18a2d6p-7f, -0x1.43756ep-8f, 0x1.407806p-4f,
     /* s = 7/8: node 103 x */
-    0x1.99999ap-65f, 0x1.4c17fep-8f, -0x1.5330a4p-7f, -0x1.76a478p-5f,
+    0x1.8p-61f, 0x1.4c17fep-8f, -0x1.5330a4p-7f, -0x1.76a478p-5f,
     /* s = 7/8: node 103 y */
-    -0x1.99999ap-60f, 0x1.387ef6p-8f, 0x1.ae178ap-9f, 0x1.771318p-4f,
+    -0x1.f33334p-60f, 0x1.387ef6p-8f, 0x1.ae178ap-9f, 0x1.771318p-4f,
     /* s = 7/8: node 103 z */
-    -0x1.4cccccp-59f, 0x1.2a024ap-6f, -0x1.0b7322p-6f, 0x1.3fb2d8p-3f,
+    -0x1.e66666p-60f, 0x1.2a024ap-6f, -0x1.0b7322p-6f, 0x1.3fb2d8p-3f,
     /* s = 7/8: node 104 x */
-    -0x1.666666p-63f, 0x1.f7ddc6p-8f, -0x1.baf074p-8f, -0x1.d890a4p-6f,
+    -0x1.ccccccp-62f, 0x1.f7ddc6p-8f, -0x1.baf074p-8f, -0x1.d890a4p-6f,
     /* s = 7/8: node 104 y */
-    -0x1.266666p-59f, 0x1.2a97a8p-7f, 0x1.044148p-7f, 0x1.fc0a8cp-4f,
+    -0x1.e66666p-59f, 0x1.2a97a8p-7f, 0x1.044148p-7f, 0x1.fc0a8cp-4f,
     /* s = 7/8: node 104 z */
-    -0x1.666666p-58f, 0x1.6fbf4ep-6f, -0x1.be16dap-6f, 0x1.c7058ap-3f,
+    -0x1.333334p-58f, 0x1.6fbf4ep-6f, -0x1.be16dap-6f, 0x1.c7058ap-3f,
     /* s = 7/8: node 105 x */
-    -0x1.d4ccccp-61f, 0x1.d935fep-7f, -0x1.eff5bp-13f, 0x1.5c34b8p-8f,
+    -0x1.5b3334p-60f, 0x1.d935fep-7f, -0x1.eff5bp-13f, 0x1.5c34b8p-8f,
     /* s = 7/8: node 105 y */
-    -0x1p-59f, 0x1.2e8a58p-7f, 0x1.d69edep-9f, 0x1.2efd22p-3f,
+    -0x1.59999ap-58f, 0x1.2e8a58p-7f, 0x1.d69edep-9f, 0x1.2efd22p-3f,
     /* s = 7/8: node 105 z */
-    -0x1.99999ap-59f, 0x1.730108p-7f, -0x1.0332cap-5f, 0x1.fd09d8p-3f,
+    -0x1.266666p-58f, 0x1.730108p-7f, -0x1.0332cap-5f, 0x1.fd09d8p-3f,
     /* s = 7/8: node 106 x */
-    -0x1.f33334p-60f, 0x1.7b0d52p-7f, 0x1.65b404p-8f, 0x1.1717f2p-5f,
+    -0x1.4p-60f, 0x1.7b0d52p-7f, 0x1.65b404p-8f, 0x1.1717f2p-5f,
     /* s = 7/8: node 106 y */
-    -0x1.b33334p-60f, 0x1.23cbaep-8f, 0x1.10c8d4p-7f, 0x1.f95da6p-4f,
+    -0x1.666666p-60f, 0x1.23cbaep-8f, 0x1.10c8d4p-7f, 0x1.f95da6p-4f,
     /* s = 7/8: node 106 z */
-    -0x1.4cccccp-59f, -0x1.7ca756p-10f, -0x1.9569c2p-6f, 0x1.b527c2p-3f,
+    -0x1.99999ap-59f, -0x1.7ca756p-10f, -0x1.9569c2p-6f, 0x1.b527c2p-3f,
     /* s = 7/8: node 107 x */
-    -0x1.99999ap-60f, 0x1.571786p-7f, 0x1.62b65ap-7f, 0x1.918ba2p-5f,
+    -0x1.e66666p-60f, 0x1.571786p-7f, 0x1.62b65ap-7f, 0x1.918ba2p-5f,
     /* s = 7/8: node 107 y */
-    -0x1.19999ap-60f, 0x1.1d4ef6p-7f, 0x1.736652p-8f, 0x1.7f3028p-4f,
+    -0x1.59999ap-59f, 0x1.1d4ef6p-7f, 0x1.736652p-8f, 0x1.7f3028p-4f,
     /* s = 7/8: node 107 z */
-    -0x1.99999ap-61f, -0x1.26b2bp-8f, -0x1.b38f7cp-7f, 0x1.331b68p-3f,
+    -0x1.333334p-59f, -0x1.26b2bp-8f, -0x1.b38f7cp-7f, 0x1.331b68p-3f,
     /* s = 7/8: node 108 x */
     -0x1.f33334p-61f, 0x1.822288p-8f, 0x1.0a3a34p-7f, 0x1.7c9d04p-5f,
     /* s = 7/8: node 108 y */
-    -0x1.266666p-60f, 0x1.9cb8b2p-8f, 0x1.468438p-9f, 0x1.b42a56p-5f,
+    -0x1.333334p-60f, 0x1.9cb8b2p-8f, 0x1.468438p-9f, 0x1.b42a56p-5f,
     /* s = 7/8: node 108 z */
-    -0x1.19999ap-61f, -0x1.c87feap-11f, -0x1.b0760ap-9f, 0x1.2f69c6p-4f,
+    -0x1.666666p-60f, -0x1.c87feap-11f, -0x1.b0760ap-9f, 0x1.2f69c6p-4f,
     /* s = 7/8: node 109 x */
-    -0x1.39999ap-61f, 0x1.0e93d2p-8f, 0x1.538a24p-8f, 0x1.77c2a4p-6f,
+    -0x1.8p-62f, 0x1.0e93d2p-8f, 0x1.538a24p-8f, 0x1.77c2a4p-6f,
     /* s = 7/8: node 109 y */
-    -0x1.acccccp-61f, 0x1.d4e7c4p-8f, 0x1.666e46p-9f, 0x1.7d237ap-6f,
+    -0x1.866666p-61f, 0x1.d4e7c4p-8f, 0x1.666e46p-9f, 0x1.7d237ap-6f,
     /* s = 7/8: node 109 z */
-    -0x1.f33334p-61f, 0x1.e7f352p-8f, 0x1.5fd034p-8f, 0x1.86bb02p-6f,
+    -0x1.0cccccp-61f, 0x1.e7f352p-8f, 0x1.5fd034p-8f, 0x1.86bb02p-6f,
     /* s = 7/8: node 110 x */
-    0x1.333334p-70f, -0x1.05860ep-15f, -0x1.ecef78p-15f, 0x1.623e2ap-14f,
+    0x1.59999ap-70f, -0x1.05860ep-15f, -0x1.ecef78p-15f, 0x1.623e2ap-14f,
     /* s = 7/8: node 110 y */
     -0x1.99999ap-70f, -0x1.5009bap-16f, -0x1.937f1p-16f, 0x1.88de02p-13f,
     /* s = 7/8: node 110 z */
-    -0x1.9cccccp-67f, 0x1.0bb2b8p-13f, 0x1.70f88ep-14f, 0x1.7eb0ep-13f,
+    -0x1.19999ap-67f, 0x1.0bb2b8p-13f, 0x1.70f88ep-14f, 0x1.7eb0ep-13f,
     /* s = 7/8: node 111 x */
-    0x1.266666p-70f, -0x1.d7ad78p-17f, 0x1.44ad7ep-15f, 0x1.589b8ep-14f,
+    -0x1.333334p-71f, -0x1.d7ad78p-17f, 0x1.44ad7ep-15f, 0x1.589b8ep-14f,
     /* s = 7/8: node 111 y */
-    -0x1.b33334p-70f, 0x1.4b1126p-16f, -0x1.e607e2p-18f, -0x1.aecff4p-14f,
+    -0x1.666666p-71f, 0x1.4b1126p-16f, -0x1.e607e2p-18f, -0x1.aecff4p-14f,
     /* s = 7/8: node 111 z */
-    -0x1.566666p-68f, 0x1.0240bap-14f, -0x1.253ce2p-14f, 0x1.2d526p-16f,
+    -0x1.433334p-68f, 0x1.0240bap-14f, -0x1.253ce2p-14f, 0x1.2d526p-16f,
     /* s = 7/8: node 112 x */
-    0x1.2cccccp-67f, -0x1.339786p-15f, 0x1.90c974p-16f, -0x1.b9d706p-13f,
+    0x1p-68f, -0x1.339786p-15f, 0x1.90c974p-16f, -0x1.b9d706p-13f,
     /* s = 7/8: node 112 y */
-    -0x1.99999ap-68f, 0x1.86152ap-15f, -0x1.706b82p-16f, 0x1.5ef87ep-14f,
+    -0x1.89999ap-68f, 0x1.86152ap-15f, -0x1.706b82p-16f, 0x1.5ef87ep-14f,
     /* s = 7/8: node 112 z */
-    0x1.4p-68f, -0x1.cc79dcp-15f, 0x1.5d9f28p-14f, 0x1.90899ep-13f,
+    0x1.19999ap-69f, -0x1.cc79dcp-15f, 0x1.5d9f28p-14f, 0x1.90899ep-13f,
     /* s = 7/8: node 113 x */
-    0x1p-67f, -0x1.335de4p-14f, 0x1.8988bcp-14f, -0x1.e5e018p-12f,
+    0x1.59999ap-67f, -0x1.335de4p-14f, 0x1.8988bcp-14f, -0x1.e5e018p-12f,
     /* s = 7/8: node 113 y */
-    -0x1.2cccccp-67f, 0x1.3015a4p-14f, -0x1.f463e6p-15f, 0x1.fe6594p-13f,
+    -0x1.ep-67f, 0x1.3015a4p-14f, -0x1.f463e6p-15f, 0x1.fe6594p-13f,
     /* s = 7/8: node 113 z */
-    0x1.8cccccp-68f, -0x1.384c66p-14f, 0x1.e748dep-14f, 0x1.1ab9acp-12f,
+    0x1.e66666p-69f, -0x1.384c66p-14f, 0x1.e748dep-14f, 0x1.1ab9acp-12f,
     /* s = 7/8: node 114 x */
-    0x1.99999ap-69f, -0x1.749bdep-15f, 0x1.cb7a18p-14f, -0x1.13afdcp-11f,
+    0x1.8p-67f, -0x1.749bdep-15f, 0x1.cb7a18p-14f, -0x1.13afdcp-11f,
     /* s = 7/8: node 114 y */
-    -0x1.666666p-69f, 0x1.0442e8p-13f, -0x1.12a6e4p-13f, 0x1.dfb878p-12f,
+    -0x1.f33334p-67f, 0x1.0442e8p-13f, -0x1.12a6e4p-13f, 0x1.dfb878p-12f,
     /* s = 7/8: node 114 z */
-    0x1.0cccccp-68f, -0x1.fae93p-15f, 0x1.28f7a6p-13f, 0x1.4b8b2ep-12f,
+    -0x1.19999ap-69f, -0x1.fae93p-15f, 0x1.28f7a6p-13f, 0x1.4b8b2ep-12f,
     /* s = 7/8: node 115 x */
-    -0x1.333334p-70f, 0x1.b84acep-16f, 0x1.6befd8p-14f, -0x1.57b92ep-12f,
+    0x1p-69f, 0x1.b84acep-16f, 0x1.6befd8p-14f, -0x1.57b92ep-12f,
     /* s = 7/8: node 115 y */
-    -0x1.533334p-66f, 0x1.8b2128p-14f, -0x1.e895fcp-13f, 0x1.28399ep-11f,
+    -0x1.666666p-66f, 0x1.8b2128p-14f, -0x1.e895fcp-13f, 0x1.28399ep-11f,
     /* s = 7/8: node 115 z */
-    -0x1p-69f, -0x1.b55f88p-16f, 0x1.b32604p-13f, 0x1.a0640ep-12f,
+    -0x1.99999ap-71f, -0x1.b55f88p-16f, 0x1.b32604p-13f, 0x1.a0640ep-12f,
     /* s = 7/8: node 116 x */
-    -0x1.7a6666p-66f, 0x1.d64ecp-13f, -0x1.c52d92p-18f, 0x1.ab5296p-15f,
+    -0x1.0d999ap-66f, 0x1.d64ecp-13f, -0x1.c52d92p-18f, 0x1.ab5296p-15f,
     /* s = 7/8: node 116 y */
-    -0x1.59999ap-67f, 0x1.d25b84p-16f, -0x1.e8faeap-13f, 0x1.3064a4p-11f,
+    -0x1.99999ap-70f, 0x1.d25b84p-16f, -0x1.e8faeap-13f, 0x1.3064a4p-11f,
     /* s = 7/8: node 116 z */
-    -0x1.b33334p-68f, 0x1.2fabdcp-15f, 0x1.cfb23cp-13f, 0x1.0eadcp-11f,
+    -0x1p-67f, 0x1.2fabdcp-15f, 0x1.cfb23cp-13f, 0x1.0eadcp-11f,
     /* s = 7/8: node 117 x */
-    -0x1.666666p-68f, 0x1.c44a7ep-15f, -0x1.8f438ap-14f, 0x1.5d8936p-12f,
+    -0x1.933334p-67f, 0x1.c44a7ep-15f, -0x1.8f438ap-14f, 0x1.5d8936p-12f,
     /* s = 7/8: node 117 y */
-    -0x1.8p-67f, -0x1.383ce2p-15f, -0x1.d2ab82p-13f, 0x1.3e01c6p-11f,
+    0x1.99999ap-72f, -0x1.383ce2p-15f, -0x1.d2ab82p-13f, 0x1.3e01c6p-11f,
     /* s = 7/8: node 117 z */
-    -0x1.a66666p-67f, 0x1.abe692p-14f, 0x1.b43818p-13f, 0x1.d82d3cp-12f,
+    -0x1.8cccccp-67f, 0x1.abe692p-14f, 0x1.b43818p-13f, 0x1.d82d3cp-12f,
     /* s = 7/8: node 118 x */
-    -0x1.0cccccp-67f, 0x1.824c4p-16f, -0x1.5c8b46p-14f, 0x1.e407c2p-12f,
+    -0x1.266666p-67f, 0x1.824c4p-16f, -0x1.5c8b46p-14f, 0x1.e407c2p-12f,
     /* s = 7/8: node 118 y */
-    0x1p-69f, -0x1.cbca6ap-14f, -0x1.0736fp-13f, 0x1.94b89p-12f,
+    -0x1.99999ap-72f, -0x1.cbca6ap-14f, -0x1.0736fp-13f, 0x1.94b89p-12f,
     /* s = 7/8: node 118 z */
-    -0x1.133334p-66f, 0x1.190d96p-13f, 0x1.53652ap-13f, 0x1.57c7eep-12f,
+    -0x1.cp-67f, 0x1.190d96p-13f, 0x1.53652ap-13f, 0x1.57c7eep-12f,
     /* s = 7/8: node 119 x */
-    -0x1.19999ap-67f, -0x1.5e1916p-15f, -0x1.721a66p-14f, 0x1.dc40aep-12f,
+    -0x1.ccccccp-69f, -0x1.5e1916p-15f, -0x1.721a66p-14f, 0x1.dc40aep-12f,
     /* s = 7/8: node 119 y */
-    0x1.99999ap-69f, -0x1.1c54c2p-14f, -0x1.e5249ap-15f, 0x1.066dcap-12f,
+    -0x1.99999ap-73f, -0x1.1c54c2p-14f, -0x1.e5249ap-15f, 0x1.066dcap-12f,
     /* s = 7/8: node 119 z */
-    -0x1.cp-67f, 0x1.629abep-13f, 0x1.1ed96ap-13f, 0x1.1d3f8cp-12f,
+    -0x1.ecccccp-67f, 0x1.629abep-13f, 0x1.1ed96ap-13f, 0x1.1d3f8cp-12f,
     /* s = 7/8: node 120 x */
-    -0x0p+0f, -0x1.69ed38p-16f, -0x1.a60c2ep-16f, 0x1.8d01a6p-13f,
+    -0x1.99999ap-69f, -0x1.69ed38p-16f, -0x1.a60c2ep-16f, 0x1.8d01a6p-13f,
     /* s = 7/8: node 120 y */
-    0x1.c66666p-69f, -0x1.168ff8p-14f, -0x1.14e29ap-15f, 0x1.2ad9f8p-14f,
+    0x1.066666p-69f, -0x1.168ff8p-14f, -0x1.14e29ap-15f, 0x1.2ad9f8p-14f,
     /* s = 7/8: node 120 z */
-    -0x1.cp-68f, 0x1.00e85cp-13f, 0x1.8097e2p-14f, 0x1.78b12ep-13f,
+    -0x1.0cccccp-68f, 0x1.00e85cp-13f, 0x1.8097e2p-14f, 0x1.78b12ep-13f,
     /* s = 7/8: node 121 x */
-    0x1.4cccccp-69f, -0x1.289d9cp-17f, -0x1.45ef18p-15f, -0x1.ab396p-14f,
+    0x1.4cccccp-70f, -0x1.289d9cp-17f, -0x1.45ef18p-15f, -0x1.ab396p-14f,
     /* s = 7/8: node 121 y */
-    0x1.f9999ap-68f, -0x1.997d9p-15f, -0x1.5a3bfap-17f, -0x1.e2e69p-14f,
+    0x1.1p-67f, -0x1.997d9p-15f, -0x1.5a3bfap-17f, -0x1.e2e69p-14f,
     /* s = 7/8: node 121 z */
-    0x1.913334p-68f, -0x1.72d3d2p-14f, -0x1.193cf2p-14f, 0x1.3d6fap-18f,
+    0x1.0cccccp-68f, -0x1.72d3d2p-14f, -0x1.193cf2p-14f, 0x1.3d6fap-18f,
     /* s = 8/8: node 1 x */
-    -0x1.133334p-68f, 0x1.5a9756p-20f, -0x1.251e6ap-15f, 0x1.03ec44p-13f,
+    -0x1.333334p-70f, 0x1.5a9756p-20f, -0x1.251e6ap-15f, 0x1.03ec44p-13f,
     /* s = 8/8: node 1 y */
-    -0x1.333334p-71f, -0x1.5fd1f6p-18f, 0x1.327e02p-17f, 0x1.102d56p-13f,
+    -0x1.8cccccp-69f, -0x1.5fd1f6p-18f, 0x1.327e02p-17f, 0x1.102d56p-13f,
     /* s = 8/8: node 1 z */
-    -0x1.08p-68f, 0x1.f44b72p-15f, 0x1.f68fa4p-15f, -0x1.fd1bc2p-17f,
+    -0x1.3a6666p-68f, 0x1.f44b72p-15f, 0x1.f68fa4p-15f, -0x1.fd1bc2p-17f,
     /* s = 8/8: node 2 x */
-    0x1.066666p-68f, -0x1.0119cp-15f, -0x1.2bdbe6p-16f, -0x1.7b256cp-13f,
+    0x1.266666p-68f, -0x1.0119cp-15f, -0x1.2bdbe6p-16f, -0x1.7b256cp-13f,
     /* s = 8/8: node 2 y */
-    0x1.1p-68f, -0x1.40347ep-15f, -0x1.0faf1ep-16f, -0x1.4dec3ep-14f,
+    0x1.3cccccp-68f, -0x1.40347ep-15f, -0x1.0faf1ep-16f, -0x1.4dec3ep-14f,
     /* s = 8/8: node 2 z */
-    0x1.99999ap-70f, -0x1.b2a828p-15f, -0x1.59230ap-14f, 0x1.88daa4p-13f,
+    -0x1.b33334p-69f, -0x1.b2a828p-15f, -0x1.59230ap-14f, 0x1.88daa4p-13f,
     /* s = 8/8: node 3 x */
     0x1.cp-67f, -0x1.73942p-14f, -0x1.c41df2p-14f, -0x1.24839cp-11f,
     /* s = 8/8: node 3 y */
-    0x1.b33334p-69f, -0x1.394c14p-14f, -0x1.19f45ep-14f, -0x1.089a54p-12f,
+    0x1.4cccccp-67f, -0x1.394c14p-14f, -0x1.19f45ep-14f, -0x1.089a54p-12f,
     /* s = 8/8: node 3 z */
-    -0x1.99999ap-73f, -0x1.462eap-14f, -0x1.c11d52p-14f, 0x1.1bd00ep-12f,
+    0x1.99999ap-71f, -0x1.462eap-14f, -0x1.c11d52p-14f, 0x1.1bd00ep-12f,
     /* s = 8/8: node 4 x */
-    0x1.333334p-67f, -0x1.9e636ep-15f, -0x1.af1f18p-14f, -0x1.de8d28p-12f,
+    0x1.59999ap-67f, -0x1.9e636ep-15f, -0x1.af1f18p-14f, -0x1.de8d28p-12f,
     /* s = 8/8: node 4 y */
-    0x1.8p-67f, -0x1.0fdd92p-13f, -0x1.107cep-13f, -0x1.c7c55ep-12f,
+    0x1.8cccccp-67f, -0x1.0fdd92p-13f, -0x1.107cep-13f, -0x1.c7c55ep-12f,
     /* s = 8/8: node 4 z */
-    0x1.8p-69f, -0x1.bfab22p-15f, -0x1.43d1dep-13f, 0x1.21f9f4p-12f,
+    -0x1.99999ap-71f, -0x1.bfab22p-15f, -0x1.43d1dep-13f, 0x1.21f9f4p-12f,
     /* s = 8/8: node 5 x */
-    -0x1.733334p-69f, 0x1.63cc1ap-15f, -0x1.926ab8p-15f, -0x1.701bc4p-13f,
+    0x1.ccccccp-71f, 0x1.63cc1ap-15f, -0x1.926ab8p-15f, -0x1.701bc4p-13f,
     /* s = 8/8: node 5 y */
-    -0x1p-69f, -0x1.b2789ap-18f, -0x1.354258p-13f, -0x1.3e08fep-14f,
+    0x1.0cccccp-69f, -0x1.b2789ap-18f, -0x1.354258p-13f, -0x1.3e08fep-14f,
     /* s = 8/8: node 5 z */
-    -0x1.8p-69f, -0x1.65e7dap-16f, -0x1.0b9a0ap-13f, 0x1.06fc82p-12f,
+    -0x1.ccccccp-70f, -0x1.65e7dap-16f, -0x1.0b9a0ap-13f, 0x1.06fc82p-12f,
     /* s = 8/8: node 6 x */
-    -0x1.38ccccp-67f, 0x1.9a9ddep-13f, 0x1.eb4bfep-21f, 0x1.aa4ad6p-16f,
+    -0x1.126666p-67f, 0x1.9a9ddep-13f, 0x1.eb4bfep-21f, 0x1.aa4ad6p-16f,
     /* s = 8/8: node 6 y */
     0x1.4cccccp-68f, -0x1.d30e52p-16f, -0x1.d95638p-13f, -0x1.1d4616p-11f,
     /* s = 8/8: node 6 z */
-    -0x1p-67f, 0x1.f9caa6p-16f, -0x1.b41386p-13f, 0x1.0e833ap-11f,
+    -0x1.e66666p-68f, 0x1.f9caa6p-16f, -0x1.b41386p-13f, 0x1.0e833ap-11f,
     /* s = 8/8: node 7 x */
-    -0x1.266666p-67f, 0x1.63cee8p-14f, 0x1.c43fd2p-14f, 0x1.8ffb18p-12f,
+    -0x1.4p-67f, 0x1.63cee8p-14f, 0x1.c43fd2p-14f, 0x1.8ffb18p-12f,
     /* s = 8/8: node 7 y */
-    0x1.333334p-69f, 0x1.0f5068p-15f, -0x1.e7efa4p-13f, -0x1.42a424p-11f,
+    0x1.333334p-70f, 0x1.0f5068p-15f, -0x1.e7efa4p-13f, -0x1.42a424p-11f,
     /* s = 8/8: node 7 z */
-    -0x1.6cccccp-66f, 0x1.ae520ep-14f, -0x1.c9c7e8p-13f, 0x1.d7b678p-12f,
+    -0x1.a66666p-67f, 0x1.ae520ep-14f, -0x1.c9c7e8p-13f, 0x1.d7b678p-12f,
     /* s = 8/8: node 8 x */
-    -0x1p-68f, 0x1.bac176p-17f, 0x1.53ca9cp-14f, 0x1.cc1eb2p-12f,
+    -0x1.333334p-68f, 0x1.bac176p-17f, 0x1.53ca9cp-14f, 0x1.cc1eb2p-12f,
     /* s = 8/8: node 8 y */
-    -0x1.333334p-67f, 0x1.c72bc4p-14f, -0x1.00e3bp-13f, -0x1.a02748p-12f,
+    -0x1.99999ap-69f, 0x1.c72bc4p-14f, -0x1.00e3bp-13f, -0x1.a02748p-12f,
     /* s = 8/8: node 8 z */
-    -0x1.066666p-66f, 0x1.2a3498p-13f, -0x1.44be9p-13f, 0x1.6f530ep-12f,
+    -0x1.6p-67f, 0x1.2a3498p-13f, -0x1.44be9p-13f, 0x1.6f530ep-12f,
     /* s = 8/8: node 9 x */
-    -0x1.99999ap-72f, -0x1.3311b2p-15f, 0x1.7e3be6p-14f, 0x1.ecb2bap-12f,
+    -0x1p-68f, -0x1.3311b2p-15f, 0x1.7e3be6p-14f, 0x1.ecb2bap-12f,
     /* s = 8/8: node 9 y */
-    -0x1.ccccccp-69f, 0x1.231e88p-14f, -0x1.e38ffep-15f, -0x1.ec6fbcp-13f,
+    0x1.ccccccp-69f, 0x1.231e88p-14f, -0x1.e38ffep-15f, -0x1.ec6fbcp-13f,
     /* s = 8/8: node 9 z */
-    -0x1.633334p-66f, 0x1.6131bcp-13f, -0x1.22c93p-13f, 0x1.175b6cp-12f,
+    -0x1.7p-66f, 0x1.6131bcp-13f, -0x1.22c93p-13f, 0x1.175b6cp-12f,
     /* s = 8/8: node 10 x */
     0x1.99999ap-73f, -0x1.47328ep-16f, 0x1.9f029ep-16f, 0x1.89b2bcp-13f,
     /* s = 8/8: node 10 y */
-    0x1.ccccccp-70f, 0x1.0c5b0ep-14f, -0x1.155b9ap-15f, -0x1.6a26ep-14f,
+    -0x1.866666p-69f, 0x1.0c5b0ep-14f, -0x1.155b9ap-15f, -0x1.6a26ep-14f,
     /* s = 8/8: node 10 z */
-    -0x1.ep-67f, 0x1.0b4648p-13f, -0x1.772feep-14f, 0x1.9bb0f8p-13f,
+    -0x1.466666p-67f, 0x1.0b4648p-13f, -0x1.772feep-14f, 0x1.9bb0f8p-13f,
     /* s = 8/8: node 11 x */
-    0x1.ccccccp-69f, -0x1.518ad6p-16f, 0x1.1b56bap-15f, -0x1.059114p-13f,
+    0x1p-68f, -0x1.518ad6p-16f, 0x1.1b56bap-15f, -0x1.059114p-13f,
     /* s = 8/8: node 11 y */
-    -0x1.59999ap-68f, 0x1.91583cp-15f, -0x1.309fd2p-17f, 0x1.c07952p-14f,
+    -0x1.866666p-68f, 0x1.91583cp-15f, -0x1.309fd2p-17f, 0x1.c07952p-14f,
     /* s = 8/8: node 11 z */
-    0x1.fd999ap-68f, -0x1.90a08ep-14f, 0x1.0c0ccp-14f, -0x1.602e98p-16f,
+    0x1.ep-68f, -0x1.90a08ep-14f, 0x1.0c0ccp-14f, -0x1.602e98p-16f,
     /* s = 8/8: node 12 x */
-    0x1.6p-69f, -0x1.0a03dp-15f, -0x1.b922bcp-15f, -0x1.4d64a6p-14f,
+    0x1.8cccccp-70f, -0x1.0a03dp-15f, -0x1.b922bcp-15f, -0x1.4d64a6p-14f,
     /* s = 8/8: node 12 y */
-    0x1.e66666p-68f, -0x1.46f798p-15f, -0x1.4af998p-16f, -0x1.98c2bap-13f,
+    0x1.a66666p-68f, -0x1.46f798p-15f, -0x1.4af998p-16f, -0x1.98c2bap-13f,
     /* s = 8/8: node 12 z */
-    -0x1.666666p-69f, -0x1.be5cc2p-15f, -0x1.3a6efep-14f, 0x1.8d04b8p-13f,
+    0x1.333334p-70f, -0x1.be5cc2p-15f, -0x1.3a6efep-14f, 0x1.8d04b8p-13f,
     /* s = 8/8: node 13 x */
-    0x1.f33334p-62f, 0x1.a9abeap-12f, 0x1.102f6ap-8f, -0x1.6f1ccp-6f,
+    0x1.99999ap-67f, 0x1.a9abeap-12f, 0x1.102f6ap-8f, -0x1.6f1ccp-6f,
     /* s = 8/8: node 13 y */
-    0x1.333334p-61f, 0x1.2c998ep-15f, 0x1.36d1d4p-11f, -0x1.9857e2p-6f,
+    0x1.333334p-63f, 0x1.2c998ep-15f, 0x1.36d1d4p-11f, -0x1.9857e2p-6f,
     /* s = 8/8: node 13 z */
-    -0x1.d9999ap-62f, -0x1.4458b2p-9f, -0x1.185206p-8f, 0x1.832d0ap-6f,
+    0x1.333334p-65f, -0x1.4458b2p-9f, -0x1.185206p-8f, 0x1.832d0ap-6f,
     /* s = 8/8: node 14 x */
-    0x1.333334p-61f, 0x1.14af92p-10f, 0x1.dfef06p-8f, -0x1.78b7fp-5f,
+    0x1.e66666p-62f, 0x1.14af92p-10f, 0x1.dfef06p-8f, -0x1.78b7fp-5f,
     /* s = 8/8: node 14 y */
-    0x1.333334p-62f, -0x1.7fd2f4p-9f, 0x1.ebd09p-10f, -0x1.d06a0cp-5f,
+    0x1.99999ap-60f, -0x1.7fd2f4p-9f, 0x1.ebd09p-10f, -0x1.d06a0cp-5f,
     /* s = 8/8: node 14 z */
-    -0x1.666666p-61f, 0x1.05429ap-7f, 0x1.15fe32p-8f, 0x1.38c99cp-4f,
+    -0x1.8cccccp-60f, 0x1.05429ap-7f, 0x1.15fe32p-8f, 0x1.38c99cp-4f,
     /* s = 8/8: node 15 x */
-    0x1.133334p-60f, 0x1.f32206p-9f, 0x1.303114p-7f, -0x1.74edd4p-5f,
+    0x1.8p-62f, 0x1.f32206p-9f, 0x1.303114p-7f, -0x1.74edd4p-5f,
     /* s = 8/8: node 15 y */
-    0x1.ccccccp-60f, -0x1.68f0f6p-8f, 0x1.c771dp-10f, -0x1.856218p-4f,
+    0x1.666666p-60f, -0x1.68f0f6p-8f, 0x1.c771dp-10f, -0x1.856218p-4f,
     /* s = 8/8: node 15 z */
-    -0x1.666666p-60f, 0x1.476406p-6f, 0x1.208fbcp-6f, 0x1.4ba858p-3f,
+    -0x1.ccccccp-59f, 0x1.476406p-6f, 0x1.208fbcp-6f, 0x1.4ba858p-3f,
     /* s = 8/8: node 16 x */
-    0x1p-63f, 0x1.3a6ae8p-7f, 0x1.009ca2p-7f, -0x1.b41afp-6f,
+    -0x1.99999ap-64f, 0x1.3a6ae8p-7f, 0x1.009ca2p-7f, -0x1.b41afp-6f,
     /* s = 8/8: node 16 y */
-    0x1p-58f, -0x1.abcdbap-7f, 0x1.2814cp-8f, -0x1.11912ep-3f,
+    0x1.b33334p-59f, -0x1.abcdbap-7f, 0x1.2814cp-8f, -0x1.11912ep-3f,
     /* s = 8/8: node 16 z */
-    -0x1.19999ap-58f, 0x1.7ab1dcp-6f, 0x1.de38f2p-6f, 0x1.ce277ep-3f,
+    -0x1.666666p-59f, 0x1.7ab1dcp-6f, 0x1.de38f2p-6f, 0x1.ce277ep-3f,
     /* s = 8/8: node 17 x */
-    -0x1.39999ap-60f, 0x1.f10164p-7f, 0x1.d6fc88p-11f, 0x1.682cp-8f,
+    -0x1.5p-61f, 0x1.f10164p-7f, 0x1.d6fc88p-11f, 0x1.682cp-8f,
     /* s = 8/8: node 17 y */
-    0x1.99999ap-59f, -0x1.12d4bap-7f, 0x1.4a72ep-8f, -0x1.296296p-3f,
+    0x1.0cccccp-58f, -0x1.12d4bap-7f, 0x1.4a72ep-8f, -0x1.296296p-3f,
     /* s = 8/8: node 17 z */
-    -0x1.4cccccp-59f, 0x1.b4138ap-7f, 0x1.15276p-5f, 0x1.039038p-2f,
+    -0x1.19999ap-59f, 0x1.b4138ap-7f, 0x1.15276p-5f, 0x1.039038p-2f,
     /* s = 8/8: node 18 x */
-    -0x1.8p-60f, 0x1.a49bfep-7f, -0x1.5fa4eep-8f, 0x1.34865ep-5f,
+    -0x1p-60f, 0x1.a49bfep-7f, -0x1.5fa4eep-8f, 0x1.34865ep-5f,
     /* s = 8/8: node 18 y */
-    0x1.0cccccp-59f, -0x1.a4c6d2p-8f, 0x1.e3834ap-8f, -0x1.0ab9ecp-3f,
+    0x1.d9999ap-59f, -0x1.a4c6d2p-8f, 0x1.e3834ap-8f, -0x1.0ab9ecp-3f,
     /* s = 8/8: node 18 z */
     -0x1p-59f, -0x1.69ce0ep-11f, 0x1.9c1facp-6f, 0x1.b8dfb6p-3f,
     /* s = 8/8: node 19 x */
-    -0x1.a66666p-60f, 0x1.6b3a6cp-7f, -0x1.58e01ap-7f, 0x1.9cc43cp-5f,
+    -0x1.8cccccp-60f, 0x1.6b3a6cp-7f, -0x1.58e01ap-7f, 0x1.9cc43cp-5f,
     /* s = 8/8: node 19 y */
-    0x1.666666p-59f, -0x1.116bdcp-7f, 0x1.7fe8cap-8f, -0x1.7504f6p-4f,
+    0x1.8p-60f, -0x1.116bdcp-7f, 0x1.7fe8cap-8f, -0x1.7504f6p-4f,
     /* s = 8/8: node 19 z */
-    -0x1p-59f, -0x1.f89c3ap-9f, 0x1.bcbb7ap-7f, 0x1.34b1c6p-3f,
+    -0x1.99999ap-64f, -0x1.f89c3ap-9f, 0x1.bcbb7ap-7f, 0x1.34b1c6p-3f,
     /* s = 8/8: node 20 x */
-    -0x1.99999ap-61f, 0x1.a41ba2p-8f, -0x1.092824p-7f, 0x1.8917c6p-5f,
+    -0x1.733334p-60f, 0x1.a41ba2p-8f, -0x1.092824p-7f, 0x1.8917c6p-5f,
     /* s = 8/8: node 20 y */
     0x1p-60f, -0x1.ca538cp-8f, 0x1.22dcdep-9f, -0x1.c725c4p-5f,
     /* s = 8/8: node 20 z */
-    -0x1.0cccccp-59f, -0x1.47b98ep-11f, 0x1.a5cc4cp-9f, 0x1.319c62p-4f,
+    -0x1.4cccccp-60f, -0x1.47b98ep-11f, 0x1.a5cc4cp-9f, 0x1.319c62p-4f,
     /* s = 8/8: node 21 x */
-    -0x1.b33334p-61f, 0x1.1954bp-8f, -0x1.4cf1bep-8f, 0x1.78cdf8p-6f,
+    -0x1.ap-61f, 0x1.1954bp-8f, -0x1.4cf1bep-8f, 0x1.78cdf8p-6f,
     /* s = 8/8: node 21 y */
-    0x1.4cccccp-60f, -0x1.d4132p-8f, 0x1.62dcb2p-9f, -0x1.751602p-6f,
+    0x1.733334p-61f, -0x1.d4132p-8f, 0x1.62dcb2p-9f, -0x1.751602p-6f,
     /* s = 8/8: node 21 z */
-    -0x1.133334p-60f, 0x1.f2eedcp-8f, -0x1.5f41ap-8f, 0x1.8a6176p-6f,
+    -0x1.a66666p-61f, 0x1.f2eedcp-8f, -0x1.5f41ap-8f, 0x1.8a6176p-6f,
     /* s = 8/8: node 22 x */
-    0x1.4p-68f, -0x1.1b3fd8p-15f, 0x1.d7de1ep-15f, 0x1.35d6dcp-14f,
+    0x1.39999ap-69f, -0x1.1b3fd8p-15f, 0x1.d7de1ep-15f, 0x1.35d6dcp-14f,
     /* s = 8/8: node 22 y */
-    -0x1.0cccccp-69f, 0x1.6ed278p-16f, -0x1.70ea24p-16f, -0x1.810a68p-13f,
+    -0x0p+0f, 0x1.6ed278p-16f, -0x1.70ea24p-16f, -0x1.810a68p-13f,
     /* s = 8/8: node 22 z */
-    -0x1.ecccccp-67f, 0x1.11f3bp-13f, -0x1.6ca15ap-14f, 0x1.9640dcp-13f,
+    -0x1.99999ap-69f, 0x1.11f3bp-13f, -0x1.6ca15ap-14f, 0x1.9640dcp-13f,
     /* s = 8/8: node 23 x */
-    0x1.333334p-67f, -0x1.625054p-14f, -0x1.06739ap-14f, -0x1.4abdccp-12f,
+    0x1.ccccccp-67f, -0x1.625054p-14f, -0x1.06739ap-14f, -0x1.4abdccp-12f,
     /* s = 8/8: node 23 y */
-    0x1.b33334p-67f, -0x1.f2264ap-14f, -0x1.be62a6p-15f, -0x1.fdf69ap-12f,
+    0x1.4cccccp-67f, -0x1.f2264ap-14f, -0x1.be62a6p-15f, -0x1.fdf69ap-12f,
     /* s = 8/8: node 23 z */
-    0x1p-70f, -0x1.347e9cp-14f, -0x1.7fbadp-14f, 0x1.1769fcp-12f,
+    -0x1.99999ap-72f, -0x1.347e9cp-14f, -0x1.7fbadp-14f, 0x1.1769fcp-12f,
     /* s = 8/8: node 24 x */
-    0x1.19999ap-61f, -0x1.259c1ep-9f, 0x1.fa8c2p-12f, -0x1.c0b84p-5f,
+    0x1.b33334p-61f, -0x1.259c1ep-9f, 0x1.fa8c2p-12f, -0x1.c0b84p-5f,
     /* s = 8/8: node 24 y */
-    0x1.b33334p-61f, -0x1.5d7922p-9f, -0x1.a4b514p-14f, -0x1.be3bfap-5f,
+    0x1.8p-60f, -0x1.5d7922p-9f, -0x1.a4b514p-14f, -0x1.be3bfap-5f,
     /* s = 8/8: node 24 z */
-    -0x1.19999ap-60f, 0x1.387be4p-7f, 0x1.f31592p-9f, 0x1.370712p-4f,
+    -0x1.333334p-60f, 0x1.387be4p-7f, 0x1.f31592p-9f, 0x1.370712p-4f,
     /* s = 8/8: node 25 x */
-    0x1.99999ap-61f, -0x1.bf8baep-10f, 0x1.9e8e96p-9f, -0x1.bb1884p-4f,
+    0x1.99999ap-60f, -0x1.bf8baep-10f, 0x1.9e8e96p-9f, -0x1.bb1884p-4f,
     /* s = 8/8: node 25 y */
-    0x1.59999ap-59f, -0x1.776dc2p-7f, 0x1.078a32p-8f, -0x1.d99d2p-4f,
+    0x1.d9999ap-59f, -0x1.776dc2p-7f, 0x1.078a32p-8f, -0x1.d99d2p-4f,
     /* s = 8/8: node 25 z */
-    -0x1.99999ap-59f, 0x1.5a5aeep-5f, 0x1.d4225ap-6f, 0x1.cc91p-3f,
+    -0x1.ccccccp-58f, 0x1.5a5aeep-5f, 0x1.d4225ap-6f, 0x1.cc91p-3f,
     /* s = 8/8: node 26 x */
-    -0x1.333334p-61f, 0x1.461fa2p-6f, 0x1.f6d032p-8f, -0x1.ba1cb2p-4f,
+    0x1.666666p-61f, 0x1.461fa2p-6f, 0x1.f6d032p-8f, -0x1.ba1cb2p-4f,
     /* s = 8/8: node 26 y */
-    0x1.866666p-58f, -0x1.bc20bcp-7f, 0x1.ef33eap-7f, -0x1.827024p-3f,
+    0x1.733334p-59f, -0x1.bc20bcp-7f, 0x1.ef33eap-7f, -0x1.827024p-3f,
     /* s = 8/8: node 26 z */
-    -0x1.333334p-58f, 0x1.14fbd2p-4f, 0x1.f19be4p-5f, 0x1.adf1cp-2f,
+    -0x1.ccccccp-58f, 0x1.14fbd2p-4f, 0x1.f19be4p-5f, 0x1.adf1cp-2f,
     /* s = 8/8: node 27 x */
-    -0x1.4cccccp-59f, 0x1.45fe4ap-5f, 0x1.18bfc4p-7f, -0x1.d49d16p-5f,
+    -0x1.ccccccp-59f, 0x1.45fe4ap-5f, 0x1.18bfc4p-7f, -0x1.d49d16p-5f,
     /* s = 8/8: node 27 y */
-    0x1.4cccccp-58f, -0x1.e2ac84p-7f, 0x1.56855ep-5f, -0x1.e94c26p-3f,
+    0x1.ccccccp-60f, -0x1.e2ac84p-7f, 0x1.56855ep-5f, -0x1.e94c26p-3f,
     /* s = 8/8: node 27 z */
-    -0x1.59999ap-57f, 0x1.2c8428p-4f, 0x1.93dcbap-4f, 0x1.38cf12p-1f,
+    -0x1.0cccccp-56f, 0x1.2c8428p-4f, 0x1.93dcbap-4f, 0x1.38cf12p-1f,
     /* s = 8/8: node 28 x */
-    -0x1.21999ap-58f, 0x1.97316ap-5f, 0x1.61b20ep-9f, 0x1.a265a8p-6f,
+    -0x1.566666p-58f, 0x1.97316ap-5f, 0x1.61b20ep-9f, 0x1.a265a8p-6f,
     /* s = 8/8: node 28 y */
-    0x1.666666p-57f, -0x1.751362p-6f, 0x1.b7b398p-5f, -0x1.1d1ba2p-2f,
+    0x1.99999ap-58f, -0x1.751362p-6f, 0x1.b7b398p-5f, -0x1.1d1ba2p-2f,
     /* s = 8/8: node 28 z */
     -0x1.4p-57f, 0x1.1e10c6p-5f, 0x1.917e62p-4f, 0x1.444b36p-1f,
     /* s = 8/8: node 29 x */
-    -0x1.2cccccp-58f, 0x1.bdebd6p-5f, -0x1.213384p-7f, 0x1.5ef5e8p-4f,
+    -0x1.1p-58f, 0x1.bdebd6p-5f, -0x1.213384p-7f, 0x1.5ef5e8p-4f,
     /* s = 8/8: node 29 y */
-    0x1.066666p-57f, -0x1.ba803ep-6f, 0x1.474f92p-5f, -0x1.ec5ce2p-3f,
+    0x1.0cccccp-57f, -0x1.ba803ep-6f, 0x1.474f92p-5f, -0x1.ec5ce2p-3f,
     /* s = 8/8: node 29 z */
-    -0x1.266666p-57f, -0x1.6693c8p-8f, 0x1.5c5fbap-4f, 0x1.20a4a6p-1f,
+    -0x1.333334p-57f, -0x1.6693c8p-8f, 0x1.5c5fbap-4f, 0x1.20a4a6p-1f,
     /* s = 8/8: node 30 x */
-    -0x1.f33334p-59f, 0x1.4d5ddep-5f, -0x1.2cc156p-7f, 0x1.db55f8p-4f,
+    -0x1.733334p-58f, 0x1.4d5ddep-5f, -0x1.2cc156p-7f, 0x1.db55f8p-4f,
     /* s = 8/8: node 30 y */
-    0x1p-58f, -0x1.299842p-6f, 0x1.76fcacp-6f, -0x1.73a4b6p-3f,
+    0x1.f33334p-59f, -0x1.299842p-6f, 0x1.76fcacp-6f, -0x1.73a4b6p-3f,
     /* s = 8/8: node 30 z */
-    -0x1p-59f, -0x1.e4dffep-6f, 0x1.bce69ep-5f, 0x1.9ad992p-2f,
+    -0x1.ccccccp-59f, -0x1.e4dffep-6f, 0x1.bce69ep-5f, 0x1.9ad992p-2f,
     /* s = 8/8: node 31 x */
-    -0x1.0cccccp-58f, 0x1.3aa5d4p-6f, -0x1.10266cp-7f, 0x1.be9318p-4f,
+    -0x1.0cccccp-59f, 0x1.3aa5d4p-6f, -0x1.10266cp-7f, 0x1.be9318p-4f,
     /* s = 8/8: node 31 y */
-    0x1.333334p-59f, -0x1.0f453ep-6f, 0x1.5ba148p-7f, -0x1.ab32fap-4f,
+    0x1.4p-59f, -0x1.0f453ep-6f, 0x1.5ba148p-7f, -0x1.ab32fap-4f,
     /* s = 8/8: node 31 z */
-    0x1.333334p-61f, -0x1.6fe3eap-6f, 0x1.9e635p-6f, 0x1.ae38bap-3f,
+    0x1.666666p-60f, -0x1.6fe3eap-6f, 0x1.9e635p-6f, 0x1.ae38bap-3f,
     /* s = 8/8: node 32 x */
-    -0x1.8cccccp-60f, 0x1.b0871p-8f, -0x1.809f32p-9f, 0x1.bd4808p-5f,
+    -0x1.333334p-62f, 0x1.b0871p-8f, -0x1.809f32p-9f, 0x1.bd4808p-5f,
     /* s = 8/8: node 32 y */
-    0x1.466666p-60f, -0x1.a2acc6p-7f, 0x1.35b92ep-9f, -0x1.846a2ep-5f,
+    0x1.133334p-59f, -0x1.a2acc6p-7f, 0x1.35b92ep-9f, -0x1.846a2ep-5f,
     /* s = 8/8: node 32 z */
-    -0x1.4cccccp-61f, -0x1.24703cp-10f, 0x1.6082acp-9f, 0x1.2fa2bep-4f,
+    -0x1.0cccccp-60f, -0x1.24703cp-10f, 0x1.6082acp-9f, 0x1.2fa2bep-4f,
     /* s = 8/8: node 33 x */
-    0x1.ccccccp-70f, -0x1.14de42p-14f, 0x1.08406ap-14f, 0x1.0e1264p-12f,
+    -0x1p-70f, -0x1.14de42p-14f, 0x1.08406ap-14f, 0x1.0e1264p-12f,
     /* s = 8/8: node 33 y */
-    -0x1.333334p-69f, 0x1.7ad87ep-14f, -0x1.8da786p-15f, -0x1.ddfe74p-12f,
+    -0x1.99999ap-71f, 0x1.7ad87ep-14f, -0x1.8da786p-15f, -0x1.ddfe74p-12f,
     /* s = 8/8: node 33 z */
-    -0x1.366666p-66f, 0x1.849cd8p-13f, -0x1.ff1e2p-14f, 0x1.1bfc6ep-12f,
+    -0x1.5cccccp-66f, 0x1.849cd8p-13f, -0x1.ff1e2p-14f, 0x1.1bfc6ep-12f,
     /* s = 8/8: node 34 x */
-    0x1.733334p-67f, -0x1.3e209ap-13f, -0x1.530aap-14f, -0x1.944d76p-12f,
+    0x1.6p-66f, -0x1.3e209ap-13f, -0x1.530aap-14f, -0x1.944d76p-12f,
     /* s = 8/8: node 34 y */
-    0x1.133334p-66f, -0x1.49b436p-13f, -0x1.92fcbep-17f, -0x1.105bdp-11f,
+    0x1.666666p-66f, -0x1.49b436p-13f, -0x1.92fcbep-17f, -0x1.105bdp-11f,
     /* s = 8/8: node 34 z */
     -0x1.333334p-69f, -0x1.f3ba54p-15f, -0x1.0ca18p-14f, 0x1.94df7ep-12f,
     /* s = 8/8: node 35 x */
-    0x1.333334p-59f, -0x1.41db3p-7f, -0x1.69945ap-10f, -0x1.9b8a3ep-4f,
+    0x1.ccccccp-60f, -0x1.41db3p-7f, -0x1.69945ap-10f, -0x1.9b8a3ep-4f,
     /* s = 8/8: node 35 y */
-    0x1.19999ap-60f, -0x1.493b3ap-8f, 0x1.acd566p-9f, -0x1.ea45b6p-5f,
+    0x1.ccccccp-61f, -0x1.493b3ap-8f, 0x1.acd566p-9f, -0x1.ea45b6p-5f,
     /* s = 8/8: node 35 z */
-    -0x1.0cccccp-58f, 0x1.e7358ep-6f, 0x1.5d6914p-7f, 0x1.4471bcp-3f,
+    -0x1.733334p-59f, 0x1.e7358ep-6f, 0x1.5d6914p-7f, 0x1.4471bcp-3f,
     /* s = 8/8: node 36 x */
-    0x1.ccccccp-60f, -0x1.5cdc22p-7f, -0x1.fae58p-8f, -0x1.a7e35cp-3f,
+    0x1.ccccccp-59f, -0x1.5cdc22p-7f, -0x1.fae58p-8f, -0x1.a7e35cp-3f,
     /* s = 8/8: node 36 y */
-    0x1.39999ap-58f, -0x1.8fb044p-7f, 0x1.414b66p-6f, -0x1.ebf71ep-4f,
+    0x1.066666p-58f, -0x1.8fb044p-7f, 0x1.414b66p-6f, -0x1.ebf71ep-4f,
     /* s = 8/8: node 36 z */
-    -0x1.59999ap-57f, 0x1.78d57cp-4f, 0x1.50d088p-5f, 0x1.b72d4p-2f,
+    -0x1.2p-56f, 0x1.78d57cp-4f, 0x1.50d088p-5f, 0x1.b72d4p-2f,
     /* s = 8/8: node 37 x */
-    0x1.666666p-59f, 0x1.c48cc2p-7f, -0x1.9f44aap-7f, -0x1.a8b7ap-3f,
+    0x1.99999ap-59f, 0x1.c48cc2p-7f, -0x1.9f44aap-7f, -0x1.a8b7ap-3f,
     /* s = 8/8: node 37 y */
-    0x1.866666p-57f, -0x1.237cb8p-5f, 0x1.5d3f2cp-5f, -0x1.b8b104p-3f,
+    0x1p-57f, -0x1.237cb8p-5f, 0x1.5d3f2cp-5f, -0x1.b8b104p-3f,
     /* s = 8/8: node 37 z */
-    -0x1.99999ap-56f, 0x1.380986p-3f, 0x1.902402p-4f, 0x1.9c8608p-1f,
+    -0x1.ccccccp-56f, 0x1.380986p-3f, 0x1.902402p-4f, 0x1.9c8608p-1f,
     /* s = 8/8: node 38 x */
-    -0x1.61999ap-57f, 0x1.29045ap-3f, 0x1.4d543p-5f, -0x1.89aa46p-6f,
+    -0x1.d33334p-58f, 0x1.29045ap-3f, 0x1.4d543p-5f, -0x1.89aa46p-6f,
     /* s = 8/8: node 38 y */
-    0x1.666666p-60f, -0x1.daff5ap-7f, 0x1.08f4f6p-3f, -0x1.3297a6p-2f,
+    0x1.d9999ap-58f, -0x1.daff5ap-7f, 0x1.08f4f6p-3f, -0x1.3297a6p-2f,
     /* s = 8/8: node 38 z */
-    -0x1.59999ap-56f, 0x1.7a31b8p-3f, 0x1.57f17ep-3f, 0x1.2b822p+0f,
+    -0x1.466666p-55f, 0x1.7a31b8p-3f, 0x1.57f17ep-3f, 0x1.2b822p+0f,
     /* s = 8/8: node 39 x */
-    -0x1.04p-56f, 0x1.512a66p-3f, 0x1.872abp-7f, 0x1.ecdedp-5f,
+    -0x1.066666p-57f, 0x1.512a66p-3f, 0x1.872abp-7f, 0x1.ecdedp-5f,
     /* s = 8/8: node 39 y */
-    0x1.d9999ap-58f, -0x1.3875f8p-5f, 0x1.207856p-3f, -0x1.3d468ap-2f,
+    0x1.ccccccp-58f, -0x1.3875f8p-5f, 0x1.207856p-3f, -0x1.3d468ap-2f,
     /* s = 8/8: node 39 z */
-    -0x1.e66666p-56f, 0x1.31c1d4p-4f, 0x1.43657p-3f, 0x1.3e1ebep+0f,
+    -0x1.b33334p-57f, 0x1.31c1d4p-4f, 0x1.43657p-3f, 0x1.3e1ebep+0f,
     /* s = 8/8: node 40 x */
-    -0x1.f9999ap-57f, 0x1.1fe922p-3f, -0x1.3396f2p-10f, 0x1.5d5d8p-3f,
+    -0x1.8cccccp-58f, 0x1.1fe922p-3f, -0x1.3396f2p-10f, 0x1.5d5d8p-3f,
     /* s = 8/8: node 40 y */
-    0x1.ccccccp-58f, -0x1.259a14p-5f, 0x1.d55792p-4f, -0x1.086ec6p-2f,
+    0x1.733334p-58f, -0x1.259a14p-5f, 0x1.d55792p-4f, -0x1.086ec6p-2f,
     /* s = 8/8: node 40 z */
-    -0x1.666666p-57f, -0x1.83ea24p-6f, 0x1.09187cp-3f, 0x1.0ed9e8p+0f,
+    -0x1.4p-56f, -0x1.83ea24p-6f, 0x1.09187cp-3f, 0x1.0ed9e8p+0f,
     /* s = 8/8: node 41 x */
-    -0x1.8p-58f, 0x1.69cf2ep-4f, -0x1.d933d2p-7f, 0x1.9693b2p-3f,
+    -0x1.39999ap-57f, 0x1.69cf2ep-4f, -0x1.d933d2p-7f, 0x1.9693b2p-3f,
     /* s = 8/8: node 41 y */
-    0x1.333334p-58f, -0x1.f93b88p-6f, 0x1.02fab6p-4f, -0x1.722ac6p-3f,
+    0x1.933334p-58f, -0x1.f93b88p-6f, 0x1.02fab6p-4f, -0x1.722ac6p-3f,
     /* s = 8/8: node 41 z */
-    -0x1.19999ap-57f, -0x1.fb18dp-5f, 0x1.3a3adcp-4f, 0x1.7d786p-1f,
+    0x1.99999ap-62f, -0x1.fb18dp-5f, 0x1.3a3adcp-4f, 0x1.7d786p-1f,
     /* s = 8/8: node 42 x */
-    -0x1.2cccccp-58f, 0x1.52da62p-5f, -0x1.bb8156p-9f, 0x1.7b055ap-3f,
+    -0x1.99999ap-58f, 0x1.52da62p-5f, -0x1.bb8156p-9f, 0x1.7b055ap-3f,
     /* s = 8/8: node 42 y */
-    0x1.ccccccp-59f, -0x1.52826ep-6f, 0x1.9b631ep-6f, -0x1.b50e24p-4f,
+    0x1.333334p-58f, -0x1.52826ep-6f, 0x1.9b631ep-6f, -0x1.b50e24p-4f,
     /* s = 8/8: node 42 z */
-    -0x1.99999ap-59f, -0x1.85b362p-5f, 0x1.3fa02p-5f, 0x1.981682p-2f,
+    -0x1.8p-58f, -0x1.85b362p-5f, 0x1.3fa02p-5f, 0x1.981682p-2f,
     /* s = 8/8: node 43 x */
-    -0x1p-59f, 0x1.61ab26p-7f, -0x1.c4448ap-9f, 0x1.7e5476p-4f,
+    -0x1.8p-61f, 0x1.61ab26p-7f, -0x1.c4448ap-9f, 0x1.7e5476p-4f,
     /* s = 8/8: node 43 y */
-    0x1.19999ap-60f, -0x1.0155c2p-6f, 0x1.a316d6p-8f, -0x1.864b9ap-5f,
+    0x1.0cccccp-60f, -0x1.0155c2p-6f, 0x1.a316d6p-8f, -0x1.864b9ap-5f,
     /* s = 8/8: node 43 z */
-    -0x1.99999ap-63f, -0x1.5b7f5cp-7f, 0x1.ecedccp-8f, 0x1.2ff5a6p-3f,
+    -0x1.b33334p-60f, -0x1.5b7f5cp-7f, 0x1.ecedccp-8f, 0x1.2ff5a6p-3f,
     /* s = 8/8: node 44 x */
-    0x1p-69f, -0x1.36c9acp-13f, 0x1.73e8c2p-14f, 0x1.7921a2p-12f,
+    0x1.333334p-69f, -0x1.36c9acp-13f, 0x1.73e8c2p-14f, 0x1.7921a2p-12f,
     /* s = 8/8: node 44 y */
-    0x1p-67f, 0x1.45473ap-14f, 0x1.7fa30cp-20f, -0x1.c3b26ap-12f,
+    -0x1.333334p-69f, 0x1.45473ap-14f, 0x1.7fa30cp-20f, -0x1.c3b26ap-12f,
     /* s = 8/8: node 44 z */
-    -0x1.a66666p-66f, 0x1.d4c338p-13f, -0x1.8b2ep-14f, 0x1.73935ep-12f,
+    -0x1.cp-67f, 0x1.d4c338p-13f, -0x1.8b2ep-14f, 0x1.73935ep-12f,
     /* s = 8/8: node 45 x */
     0x1p-66f, -0x1.e466acp-13f, -0x1.1a0294p-15f, -0x1.26a09ap-11f,
     /* s = 8/8: node 45 y */
-    0x1.1p-66f, -0x1.b4f13ep-14f, 0x1.36606ap-15f, -0x1.1b138ap-12f,
+    0x1.39999ap-67f, -0x1.b4f13ep-14f, 0x1.36606ap-15f, -0x1.1b138ap-12f,
     /* s = 8/8: node 45 z */
-    -0x1.266666p-67f, -0x1.73d2aap-15f, -0x1.04e9ccp-16f, 0x1.117c72p-11f,
+    0x1p-68f, -0x1.73d2aap-15f, -0x1.04e9ccp-16f, 0x1.117c72p-11f,
     /* s = 8/8: node 46 x */
-    0x1.19999ap-59f, -0x1.89a7f4p-6f, -0x1.e622dcp-8f, -0x1.291258p-3f,
+    0x1.d9999ap-59f, -0x1.89a7f4p-6f, -0x1.e622dcp-8f, -0x1.291258p-3f,
     /* s = 8/8: node 46 y */
-    0x1.2p-60f, -0x1.f474b8p-9f, 0x1.03e9b2p-7f, -0x1.343ef8p-5f,
+    0x1.333334p-60f, -0x1.f474b8p-9f, 0x1.03e9b2p-7f, -0x1.343ef8p-5f,
     /* s = 8/8: node 46 z */
-    -0x1.19999ap-57f, 0x1.aefb92p-5f, 0x1.71a80ep-7f, 0x1.cf3d96p-3f,
+    -0x1.733334p-57f, 0x1.aefb92p-5f, 0x1.71a80ep-7f, 0x1.cf3d96p-3f,
     /* s = 8/8: node 47 x */
     0x1.266666p-58f, -0x1.6ead4cp-7f, -0x1.504c7p-7f, -0x1.292242p-2f,
     /* s = 8/8: node 47 y */
-    0x1.733334p-59f, -0x1.95988ap-7f, 0x1.4596cep-5f, -0x1.7ac70cp-4f,
+    0x1.4cccccp-61f, -0x1.95988ap-7f, 0x1.4596cep-5f, -0x1.7ac70cp-4f,
     /* s = 8/8: node 47 z */
-    -0x1.ccccccp-56f, 0x1.1d8d24p-3f, 0x1.03279cp-5f, 0x1.362e74p-1f,
+    -0x1.e66666p-57f, 0x1.1d8d24p-3f, 0x1.03279cp-5f, 0x1.362e74p-1f,
     /* s = 8/8: node 48 x */
-    0x1.333334p-61f, 0x1.2518a2p-8f, -0x1.44fbf2p-6f, -0x1.634294p-2f,
+    0x1.333334p-59f, 0x1.2518a2p-8f, -0x1.44fbf2p-6f, -0x1.634294p-2f,
     /* s = 8/8: node 48 y */
-    0x1.533334p-58f, -0x1.e4b94ap-6f, 0x1.518ebp-4f, -0x1.26793ap-3f,
+    0x1.266666p-58f, -0x1.e4b94ap-6f, 0x1.518ebp-4f, -0x1.26793ap-3f,
     /* s = 8/8: node 48 z */
-    -0x1.266666p-55f, 0x1.04a152p-2f, 0x1.84796p-4f, 0x1.281b96p+0f,
+    -0x1.8p-56f, 0x1.04a152p-2f, 0x1.84796p-4f, 0x1.281b96p+0f,
     /* s = 8/8: node 49 x */
-    -0x1.40ccccp-55f, 0x1.a7ebb2p-2f, 0x1.1c70e2p-3f, 0x1.8c2bc6p-4f,
+    -0x1.a66666p-56f, 0x1.a7ebb2p-2f, 0x1.1c70e2p-3f, 0x1.8c2bc6p-4f,
     /* s = 8/8: node 49 y */
-    0x1.ccccccp-59f, 0x1.df802cp-5f, 0x1.1a9b2ap-2f, -0x1.927d58p-3f,
+    0x1.333334p-61f, 0x1.df802cp-5f, 0x1.1a9b2ap-2f, -0x1.927d58p-3f,
     /* s = 8/8: node 49 z */
-    -0x1.733334p-55f, 0x1.5cf742p-2f, 0x1.41c1d2p-3f, 0x1.bd82a6p+0f,
+    -0x1.59999ap-55f, 0x1.5cf742p-2f, 0x1.41c1d2p-3f, 0x1.bd82a6p+0f,
     /* s = 8/8: node 50 x */
-    -0x1.4e6666p-55f, 0x1.711bbp-2f, 0x1.a3e20cp-6f, 0x1.a75824p-4f,
+    -0x1.59999ap-56f, 0x1.711bbp-2f, 0x1.a3e20cp-6f, 0x1.a75824p-4f,
     /* s = 8/8: node 50 y */
-    0x1p-57f, -0x1.72a84p-5f, 0x1.910334p-2f, -0x1.b2ce3ep-3f,
+    -0x1.4cccccp-59f, -0x1.72a84p-5f, 0x1.910334p-2f, -0x1.b2ce3ep-3f,
     /* s = 8/8: node 50 z */
-    -0x1.19999ap-56f, 0x1.b7550ep-4f, 0x1.e46c8cp-4f, 0x1.c3b83ap+0f,
+    -0x1p-55f, 0x1.b7550ep-4f, 0x1.e46c8cp-4f, 0x1.c3b83ap+0f,
     /* s = 8/8: node 51 x */
-    -0x1.266666p-57f, 0x1.27a1aep-2f, -0x1.69007ep-5f, 0x1.e6fbbap-3f,
+    -0x1.8p-56f, 0x1.27a1aep-2f, -0x1.69007ep-5f, 0x1.e6fbbap-3f,
     /* s = 8/8: node 51 y */
-    0x1.11999ap-56f, -0x1.27956ap-4f, 0x1.c243f4p-3f, -0x1.61e962p-3f,
+    0x1.033334p-57f, -0x1.27956ap-4f, 0x1.c243f4p-3f, -0x1.61e962p-3f,
     /* s = 8/8: node 51 z */
-    -0x1.19999ap-56f, -0x1.830df8p-6f, 0x1.945c14p-4f, 0x1.805118p+0f,
+    0x1.333334p-59f, -0x1.830df8p-6f, 0x1.945c14p-4f, 0x1.805118p+0f,
     /* s = 8/8: node 52 x */
-    -0x1.1cccccp-56f, 0x1.3eeb12p-3f, -0x1.3628eap-7f, 0x1.165d9ep-2f,
+    -0x1.59999ap-57f, 0x1.3eeb12p-3f, -0x1.3628eap-7f, 0x1.165d9ep-2f,
     /* s = 8/8: node 52 y */
-    0x1.333334p-59f, -0x1.9398cep-6f, 0x1.82ae5p-4f, -0x1.02e558p-3f,
+    0x1.066666p-58f, -0x1.9398cep-6f, 0x1.82ae5p-4f, -0x1.02e558p-3f,
     /* s = 8/8: node 52 z */
-    0x1.99999ap-60f, -0x1.aa8e38p-4f, 0x1.01724ep-4f, 0x1.07736ap+0f,
+    -0x1.b33334p-57f, -0x1.aa8e38p-4f, 0x1.01724ep-4f, 0x1.07736ap+0f,
     /* s = 8/8: node 53 x */
-    -0x1.f9999ap-57f, 0x1.10e02ap-4f, -0x1.73e66cp-8f, 0x1.002748p-2f,
+    -0x1.0cccccp-57f, 0x1.10e02ap-4f, -0x1.73e66cp-8f, 0x1.002748p-2f,
     /* s = 8/8: node 53 y */
-    0x1.666666p-59f, -0x1.1ab696p-6f, 0x1.41abbep-5f, -0x1.14a0ap-4f,
+    0x1.79999ap-59f, -0x1.1ab696p-6f, 0x1.41abbep-5f, -0x1.14a0ap-4f,
     /* s = 8/8: node 53 z */
-    -0x1p-57f, -0x1.1c2114p-4f, 0x1.d3e56ep-6f, 0x1.19364ap-1f,
+    -0x1.666666p-58f, -0x1.1c2114p-4f, 0x1.d3e56ep-6f, 0x1.19364ap-1f,
     /* s = 8/8: node 54 x */
-    -0x1.8p-59f, 0x1.d69fe8p-7f, 0x1.19c074p-11f, 0x1.f5d7a6p-4f,
+    -0x1.4p-59f, 0x1.d69fe8p-7f, 0x1.19c074p-11f, 0x1.f5d7a6p-4f,
     /* s = 8/8: node 54 y */
-    0x1.ap-60f, -0x1.4743b6p-7f, 0x1.f0dfc4p-8f, -0x1.fc11fcp-6f,
+    0x1.2p-60f, -0x1.4743b6p-7f, 0x1.f0dfc4p-8f, -0x1.fc11fcp-6f,
     /* s = 8/8: node 54 z */
-    -0x1.733334p-58f, -0x1.627c04p-6f, 0x1.fa658p-8f, 0x1.a77448p-3f,
+    -0x1.99999ap-61f, -0x1.627c04p-6f, 0x1.fa658p-8f, 0x1.a77448p-3f,
     /* s = 8/8: node 55 x */
-    0x1p-67f, -0x1.e9be0cp-13f, 0x1.fa15e4p-15f, 0x1.2853aap-11f,
+    0x1.19999ap-67f, -0x1.e9be0cp-13f, 0x1.fa15e4p-15f, 0x1.2853aap-11f,
     /* s = 8/8: node 55 y */
-    0x1.ccccccp-70f, 0x1.40f082p-14f, 0x1.e7d33ap-16f, -0x1.37914ep-12f,
+    0x1p-69f, 0x1.40f082p-14f, 0x1.e7d33ap-16f, -0x1.37914ep-12f,
     /* s = 8/8: node 55 z */
-    -0x1.333334p-65f, 0x1.181ed6p-12f, -0x1.03179ep-14f, 0x1.c80988p-12f,
+    -0x1.29999ap-65f, 0x1.181ed6p-12f, -0x1.03179ep-14f, 0x1.c80988p-12f,
     /* s = 8/8: node 56 x */
-    0x1.39999ap-65f, -0x1.541ab4p-12f, 0x1.df234cp-59f, -0x1.59b6fap-11f,
+    0x1p-65f, -0x1.541ab4p-12f, -0x1.0a8e54p-58f, -0x1.59b6fap-11f,
     /* s = 8/8: node 56 y */
-    0x1.7f6802p-71f, -0x1.cd7c98p-61f, 0x1.64a74cp-15f, -0x1.44da9ep-57f,
+    -0x1.9cd64ap-76f, -0x1.b0a858p-57f, 0x1.64a74cp-15f, -0x1.6449p-55f,
     /* s = 8/8: node 56 z */
-    -0x1.ccccccp-68f, -0x1.9230b2p-15f, 0x1.42bfaap-57f, 0x1.2815b6p-11f,
+    -0x1.99999ap-69f, -0x1.9230b2p-15f, 0x1.8d8828p-59f, 0x1.2815b6p-11f,
     /* s = 8/8: node 57 x */
-    0x1.4p-58f, -0x1.cae818p-6f, 0x1.4934c2p-53f, -0x1.451fc8p-3f,
+    0x1.8p-58f, -0x1.cae818p-6f, 0x1.3cac5ap-56f, -0x1.451fc8p-3f,
     /* s = 8/8: node 57 y */
-    0x1.83ca1ep-68f, 0x1.2d13e8p-52f, 0x1.8b6fc4p-7f, 0x1.3eaa98p-49f,
+    -0x1.93387cp-69f, -0x1.4dc8cep-51f, 0x1.8b6fc4p-7f, -0x1.18d7cp-49f,
     /* s = 8/8: node 57 z */
-    -0x1.533334p-57f, 0x1.01b4c2p-4f, 0x1.9ff78ap-53f, 0x1.073162p-2f,
+    -0x1.2cccccp-57f, 0x1.01b4c2p-4f, 0x1.0cc88p-52f, 0x1.073162p-2f,
     /* s = 8/8: node 58 x */
-    0x1.99999ap-59f, -0x1.953e8p-7f, -0x1.90f8aap-53f, -0x1.51e31ep-2f,
+    0x1.266666p-57f, -0x1.953e8p-7f, -0x1.dcdd5p-52f, -0x1.51e31ep-2f,
     /* s = 8/8: node 58 y */
-    -0x1.d4911cp-61f, -0x1.db16dp-54f, 0x1.984bc2p-5f, 0x1.1d7cdep-49f,
+    0x1.0a2384p-61f, -0x1.4ca69ep-52f, 0x1.984bc2p-5f, -0x1.89ba4p-50f,
     /* s = 8/8: node 58 z */
-    -0x1.a66666p-56f, 0x1.489682p-3f, -0x1.7e9ec6p-57f, 0x1.585a3p-1f,
+    -0x1.266666p-56f, 0x1.489682p-3f, 0x1.e57b6ep-52f, 0x1.585a3p-1f,
     /* s = 8/8: node 59 x */
-    0x1.4p-57f, 0x1.4468c2p-8f, -0x1.1174d8p-51f, -0x1.a1f3fp-2f,
+    0x1.ccccccp-58f, 0x1.4468c2p-8f, -0x1.2df3b4p-50f, -0x1.a1f3fp-2f,
     /* s = 8/8: node 59 y */
-    0x1.302d78p-59f, -0x1.f2501p-51f, 0x1.ddc242p-4f, 0x1.4b6e06p-52f,
+    0x1.18375cp-61f, -0x1.392feep-51f, 0x1.ddc242p-4f, -0x1.7b2512p-50f,
     /* s = 8/8: node 59 z */
-    -0x1.466666p-55f, 0x1.35199p-2f, 0x1.353a26p-52f, 0x1.4f0ca6p+0f,
+    -0x1.8cccccp-55f, 0x1.35199p-2f, 0x1.0fba56p-49f, 0x1.4f0ca6p+0f,
     /* s = 8/8: node 60 x */
-    -0x1.0d6666p-54f, 0x1.7779dap-1f, -0x1.6484dep-50f, 0x1.fa4a56p-5f,
+    -0x1.f7999ap-55f, 0x1.7779dap-1f, 0x1.2b029cp-50f, 0x1.fa4a56p-5f,
     /* s = 8/8: node 60 y */
-    0x1.5be2e4p-58f, -0x1.ddbe46p-52f, 0x1.4c162ap-2f, 0x1.fb7102p-47f,
+    -0x1.2b199ap-60f, 0x1.0b2eaep-51f, 0x1.4c162ap-2f, 0x1.effdfp-48f,
     /* s = 8/8: node 60 z */
-    -0x1p-54f, 0x1.cbd246p-2f, 0x1.9d0dfcp-50f, 0x1.ff44e8p+0f,
+    -0x1.39999ap-54f, 0x1.cbd246p-2f, 0x1.800372p-48f, 0x1.ff44e8p+0f,
     /* s = 8/8: node 61 x */
-    -0x1.92ccccp-54f, 0x1.dcb92cp-1f, -0x1.1b0bd8p-50f, 0x1.01a18ap-3f,
+    -0x1.826666p-54f, 0x1.dcb92cp-1f, -0x1.fbe2ccp-52f, 0x1.01a18ap-3f,
     /* s = 8/8: node 61 y */
-    0x1.45ea06p-57f, -0x1.5bb0ep-50f, 0x1.9627ccp-1f, 0x1.990774p-49f,
+    -0x1.d63304p-62f, -0x1.53ba8p-51f, 0x1.9627ccp-1f, 0x1.0d6396p-48f,
     /* s = 8/8: node 61 z */
-    -0x1.d9999ap-55f, 0x1.f8571ep-4f, 0x1.1c0d52p-48f, 0x1.2de6bep+1f,
+    -0x1.8cccccp-55f, 0x1.f8571ep-4f, 0x1.1c3268p-48f, 0x1.2de6bep+1f,
     /* s = 8/8: node 62 x */
-    -0x1.9p-56f, 0x1.f9473cp-2f, 0x1.31d60ap-50f, 0x1.1a6b3ep-2f,
+    -0x1.24ccccp-55f, 0x1.f9473cp-2f, 0x1.5eff12p-51f, 0x1.1a6b3ep-2f,
     /* s = 8/8: node 62 y */
-    -0x1.537218p-59f, 0x1.791b86p-50f, 0x1.19ed42p-2f, 0x1.5d739p-47f,
+    0x1.58386ap-58f, 0x1.c25136p-51f, 0x1.19ed42p-2f, 0x1.3479d8p-47f,
     /* s = 8/8: node 62 z */
-    -0x1.0cccccp-55f, -0x1.4b9f32p-5f, 0x1.69afe6p-49f, 0x1.be8a68p+0f,
+    -0x1.8cccccp-55f, -0x1.4b9f32p-5f, 0x1.3055a4p-48f, 0x1.be8a68p+0f,
     /* s = 8/8: node 63 x */
-    -0x1.666666p-56f, 0x1.798486p-3f, -0x1.1ef9fcp-52f, 0x1.40d5f8p-2f,
+    -0x1.133334p-56f, 0x1.798486p-3f, -0x1.5302a8p-53f, 0x1.40d5f8p-2f,
     /* s = 8/8: node 63 y */
-    0x1.b8b6f8p-61f, -0x1.9c0db6p-51f, 0x1.e173cep-4f, 0x1.1363eap-49f,
+    0x1.38246ap-59f, -0x1.7d87f4p-51f, 0x1.e173cep-4f, 0x1.1c9628p-47f,
     /* s = 8/8: node 63 z */
-    -0x1.99999ap-59f, -0x1.026218p-3f, 0x1.fdb7cep-49f, 0x1.2ab49p+0f,
+    -0x1p-57f, -0x1.026218p-3f, 0x1.176eb2p-48f, 0x1.2ab49p+0f,
     /* s = 8/8: node 64 x */
-    -0x1p-59f, 0x1.5d1cc4p-4f, 0x1.6a28ecp-50f, 0x1.141d5ep-2f,
+    -0x1.99999ap-58f, 0x1.5d1cc4p-4f, 0x1.0efe6ep-50f, 0x1.141d5ep-2f,
     /* s = 8/8: node 64 y */
-    0x1.cf4cfep-61f, 0x1.a35a36p-53f, 0x1.43776ep-5f, 0x1.1c39fep-48f,
+    0x1.a5cf38p-61f, 0x1.2ccd22p-53f, 0x1.43776ep-5f, 0x1.33ddacp-48f,
     /* s = 8/8: node 64 z */
-    0x1.99999ap-62f, -0x1.3e222p-4f, 0x1.29a45ep-49f, 0x1.36dcdp-1f,
+    -0x1.e66666p-58f, -0x1.3e222p-4f, 0x1.6ba7fcp-49f, 0x1.36dcdp-1f,
     /* s = 8/8: node 65 x */
-    -0x1.e66666p-59f, 0x1.700654p-7f, 0x1.474218p-52f, 0x1.24739p-3f,
+    -0x1p-61f, 0x1.700654p-7f, 0x1.a67dcp-51f, 0x1.24739p-3f,
     /* s = 8/8: node 65 y */
-    0x1.745cdep-62f, -0x1.9bb8c6p-53f, 0x1.63cf48p-7f, 0x1.a1debp-53f,
+    0x1.047548p-64f, -0x1.f3f8b8p-53f, 0x1.63cf48p-7f, 0x1.b1f43ep-49f,
     /* s = 8/8: node 65 z */
-    -0x1.333334p-61f, -0x1.bf5c0ap-6f, 0x1.03a0c4p-50f, 0x1.e18a34p-3f,
+    -0x1.19999ap-59f, -0x1.bf5c0ap-6f, 0x1.45662ep-50f, 0x1.e18a34p-3f,
     /* s = 8/8: node 66 x */
-    0x1.933334p-66f, -0x1.16a982p-12f, -0x1.59c09ap-58f, 0x1.18ed8ap-11f,
+    0x1.4p-67f, -0x1.16a982p-12f, 0x1.12fbdep-58f, 0x1.18ed8ap-11f,
     /* s = 8/8: node 66 y */
-    -0x1.a7d9b6p-70f, -0x1.a4adf2p-58f, 0x1.3ce50ap-13f, -0x1.2577eep-55f,
+    0x1.9c9f96p-69f, -0x1.a1dc06p-57f, 0x1.3ce50ap-13f, 0x1.204768p-54f,
     /* s = 8/8: node 66 z */
-    -0x1.4p-66f, 0x1.271692p-12f, -0x1.c64696p-59f, 0x1.0d0a3p-11f,
+    -0x1.0cccccp-65f, 0x1.271692p-12f, 0x1.2412bep-60f, 0x1.0d0a3p-11f,
     /* s = 8/8: node 67 x */
-    0x1.133334p-66f, -0x1.e466acp-13f, 0x1.1a0294p-15f, -0x1.26a09ap-11f,
+    0x1.acccccp-66f, -0x1.e466acp-13f, 0x1.1a0294p-15f, -0x1.26a09ap-11f,
     /* s = 8/8: node 67 y */
-    -0x1.c66666p-67f, 0x1.b4f13ep-14f, 0x1.36606ap-15f, 0x1.1b138ap-12f,
+    -0x1.666666p-68f, 0x1.b4f13ep-14f, 0x1.36606ap-15f, 0x1.1b138ap-12f,
     /* s = 8/8: node 67 z */
-    -0x1.4cccccp-68f, -0x1.73d2aap-15f, 0x1.04e9ccp-16f, 0x1.117c72p-11f,
+    -0x1.99999ap-71f, -0x1.73d2aap-15f, 0x1.04e9ccp-16f, 0x1.117c72p-11f,
     /* s = 8/8: node 68 x */
-    0x1.d9999ap-59f, -0x1.89a7f4p-6f, 0x1.e622dcp-8f, -0x1.291258p-3f,
+    0x1.733334p-59f, -0x1.89a7f4p-6f, 0x1.e622dcp-8f, -0x1.291258p-3f,
     /* s = 8/8: node 68 y */
-    -0x1p-61f, 0x1.f474b8p-9f, 0x1.03e9b2p-7f, 0x1.343ef8p-5f,
+    -0x1.666666p-61f, 0x1.f474b8p-9f, 0x1.03e9b2p-7f, 0x1.343ef8p-5f,
     /* s = 8/8: node 68 z */
-    -0x1.ccccccp-58f, 0x1.aefb92p-5f, -0x1.71a80ep-7f, 0x1.cf3d96p-3f,
+    -0x1.666666p-58f, 0x1.aefb92p-5f, -0x1.71a80ep-7f, 0x1.cf3d96p-3f,
     /* s = 8/8: node 69 x */
-    0x1.8cccccp-58f, -0x1.6ead4cp-7f, 0x1.504c7p-7f, -0x1.292242p-2f,
+    0x1.4cccccp-58f, -0x1.6ead4cp-7f, 0x1.504c7p-7f, -0x1.292242p-2f,
     /* s = 8/8: node 69 y */
-    -0x1p-59f, 0x1.95988ap-7f, 0x1.4596cep-5f, 0x1.7ac70cp-4f,
+    -0x1.333334p-59f, 0x1.95988ap-7f, 0x1.4596cep-5f, 0x1.7ac70cp-4f,
     /* s = 8/8: node 69 z */
-    -0x1.266666p-56f, 0x1.1d8d24p-3f, -0x1.03279cp-5f, 0x1.362e74p-1f,
+    -0x1.79999ap-56f, 0x1.1d8d24p-3f, -0x1.03279cp-5f, 0x1.362e74p-1f,
     /* s = 8/8: node 70 x */
-    0x1.666666p-60f, 0x1.2518a2p-8f, 0x1.44fbf2p-6f, -0x1.634294p-2f,
+    0x1p-58f, 0x1.2518a2p-8f, 0x1.44fbf2p-6f, -0x1.634294p-2f,
     /* s = 8/8: node 70 y */
-    -0x1.19999ap-58f, 0x1.e4b94ap-6f, 0x1.518ebp-4f, 0x1.26793ap-3f,
+    -0x1.266666p-59f, 0x1.e4b94ap-6f, 0x1.518ebp-4f, 0x1.26793ap-3f,
     /* s = 8/8: node 70 z */
     -0x1.59999ap-55f, 0x1.04a152p-2f, -0x1.84796p-4f, 0x1.281b96p+0f,
     /* s = 8/8: node 71 x */
-    -0x1.ep-56f, 0x1.a7ebb2p-2f, -0x1.1c70e2p-3f, 0x1.8c2bc6p-4f,
+    -0x1.666666p-55f, 0x1.a7ebb2p-2f, -0x1.1c70e2p-3f, 0x1.8c2bc6p-4f,
     /* s = 8/8: node 71 y */
-    0x1.ccccccp-58f, -0x1.df802cp-5f, 0x1.1a9b2ap-2f, 0x1.927d58p-3f,
+    0x1.f33334p-58f, -0x1.df802cp-5f, 0x1.1a9b2ap-2f, 0x1.927d58p-3f,
     /* s = 8/8: node 71 z */
-    -0x1.666666p-55f, 0x1.5cf742p-2f, -0x1.41c1d2p-3f, 0x1.bd82a6p+0f,
+    -0x1.19999ap-55f, 0x1.5cf742p-2f, -0x1.41c1d2p-3f, 0x1.bd82a6p+0f,
     /* s = 8/8: node 72 x */
-    -0x1.08ccccp-55f, 0x1.711bbp-2f, -0x1.a3e20cp-6f, 0x1.a75824p-4f,
+    -0x1.c33334p-57f, 0x1.711bbp-2f, -0x1.a3e20cp-6f, 0x1.a75824p-4f,
     /* s = 8/8: node 72 y */
-    -0x1.e66666p-59f, 0x1.72a84p-5f, 0x1.910334p-2f, 0x1.b2ce3ep-3f,
+    0x1.0cccccp-58f, 0x1.72a84p-5f, 0x1.910334p-2f, 0x1.b2ce3ep-3f,
     /* s = 8/8: node 72 z */
-    -0x1.ccccccp-56f, 0x1.b7550ep-4f, -0x1.e46c8cp-4f, 0x1.c3b83ap+0f,
+    -0x1p-57f, 0x1.b7550ep-4f, -0x1.e46c8cp-4f, 0x1.c3b83ap+0f,
     /* s = 8/8: node 73 x */
-    -0x1.f66666p-56f, 0x1.27a1aep-2f, 0x1.69007ep-5f, 0x1.e6fbbap-3f,
+    -0x1p-55f, 0x1.27a1aep-2f, 0x1.69007ep-5f, 0x1.e6fbbap-3f,
     /* s = 8/8: node 73 y */
-    -0x1.29999ap-57f, 0x1.27956ap-4f, 0x1.c243f4p-3f, 0x1.61e962p-3f,
+    -0x1.f33334p-58f, 0x1.27956ap-4f, 0x1.c243f4p-3f, 0x1.61e962p-3f,
     /* s = 8/8: node 73 z */
-    -0x1.8p-56f, -0x1.830df8p-6f, -0x1.945c14p-4f, 0x1.805118p+0f,
+    -0x1.0cccccp-56f, -0x1.830df8p-6f, -0x1.945c14p-4f, 0x1.805118p+0f,
     /* s = 8/8: node 74 x */
-    -0x1.19999ap-57f, 0x1.3eeb12p-3f, 0x1.3628eap-7f, 0x1.165d9ep-2f,
+    -0x1.333334p-58f, 0x1.3eeb12p-3f, 0x1.3628eap-7f, 0x1.165d9ep-2f,
     /* s = 8/8: node 74 y */
-    -0x1.4p-59f, 0x1.9398cep-6f, 0x1.82ae5p-4f, 0x1.02e558p-3f,
+    -0x1.0cccccp-59f, 0x1.9398cep-6f, 0x1.82ae5p-4f, 0x1.02e558p-3f,
     /* s = 8/8: node 74 z */
-    -0x1.19999ap-56f, -0x1.aa8e38p-4f, -0x1.01724ep-4f, 0x1.07736ap+0f,
+    -0x1.666666p-58f, -0x1.aa8e38p-4f, -0x1.01724ep-4f, 0x1.07736ap+0f,
     /* s = 8/8: node 75 x */
-    -0x1p-58f, 0x1.10e02ap-4f, 0x1.73e66cp-8f, 0x1.002748p-2f,
+    -0x1.666666p-59f, 0x1.10e02ap-4f, 0x1.73e66cp-8f, 0x1.002748p-2f,
     /* s = 8/8: node 75 y */
-    -0x1.39999ap-59f, 0x1.1ab696p-6f, 0x1.41abbep-5f, 0x1.14a0ap-4f,
+    -0x1.666666p-60f, 0x1.1ab696p-6f, 0x1.41abbep-5f, 0x1.14a0ap-4f,
     /* s = 8/8: node 75 z */
-    0x1.99999ap-60f, -0x1.1c2114p-4f, -0x1.d3e56ep-6f, 0x1.19364ap-1f,
+    -0x1p-59f, -0x1.1c2114p-4f, -0x1.d3e56ep-6f, 0x1.19364ap-1f,
     /* s = 8/8: node 76 x */
-    -0x1.333334p-58f, 0x1.d69fe8p-7f, -0x1.19c074p-11f, 0x1.f5d7a6p-4f,
+    -0x1.4p-59f, 0x1.d69fe8p-7f, -0x1.19c074p-11f, 0x1.f5d7a6p-4f,
     /* s = 8/8: node 76 y */
-    -0x1p-60f, 0x1.4743b6p-7f, 0x1.f0dfc4p-8f, 0x1.fc11fcp-6f,
+    -0x1.59999ap-61f, 0x1.4743b6p-7f, 0x1.f0dfc4p-8f, 0x1.fc11fcp-6f,
     /* s = 8/8: node 76 z */
-    -0x1.666666p-60f, -0x1.627c04p-6f, -0x1.fa658p-8f, 0x1.a77448p-3f,
+    -0x1.99999ap-61f, -0x1.627c04p-6f, -0x1.fa658p-8f, 0x1.a77448p-3f,
     /* s = 8/8: node 77 x */
-    0x1p-67f, -0x1.e9be0cp-13f, -0x1.fa15e4p-15f, 0x1.2853aap-11f,
+    -0x1.ccccccp-69f, -0x1.e9be0cp-13f, -0x1.fa15e4p-15f, 0x1.2853aap-11f,
     /* s = 8/8: node 77 y */
-    0x1.8p-68f, -0x1.40f082p-14f, 0x1.e7d33ap-16f, 0x1.37914ep-12f,
+    0x1.333334p-69f, -0x1.40f082p-14f, 0x1.e7d33ap-16f, 0x1.37914ep-12f,
     /* s = 8/8: node 77 z */
-    -0x1.99999ap-66f, 0x1.181ed6p-12f, 0x1.03179ep-14f, 0x1.c80988p-12f,
+    -0x1.066666p-65f, 0x1.181ed6p-12f, 0x1.03179ep-14f, 0x1.c80988p-12f,
     /* s = 8/8: node 78 x */
-    0x1.ccccccp-67f, -0x1.3e209ap-13f, 0x1.530aap-14f, -0x1.944d76p-12f,
+    0x1.e66666p-68f, -0x1.3e209ap-13f, 0x1.530aap-14f, -0x1.944d76p-12f,
     /* s = 8/8: node 78 y */
-    -0x1.59999ap-66f, 0x1.49b436p-13f, -0x1.92fcbep-17f, 0x1.105bdp-11f,
+    -0x1.466666p-66f, 0x1.49b436p-13f, -0x1.92fcbep-17f, 0x1.105bdp-11f,
     /* s = 8/8: node 78 z */
-    0x1p-69f, -0x1.f3ba54p-15f, 0x1.0ca18p-14f, 0x1.94df7ep-12f,
+    -0x1.ccccccp-69f, -0x1.f3ba54p-15f, 0x1.0ca18p-14f, 0x1.94df7ep-12f,
     /* s = 8/8: node 79 x */
-    0x1.e66666p-60f, -0x1.41db3p-7f, 0x1.69945ap-10f, -0x1.9b8a3ep-4f,
+    0x1.266666p-59f, -0x1.41db3p-7f, 0x1.69945ap-10f, -0x1.9b8a3ep-4f,
     /* s = 8/8: node 79 y */
-    -0x1.f33334p-60f, 0x1.493b3ap-8f, 0x1.acd566p-9f, 0x1.ea45b6p-5f,
+    -0x1.a66666p-60f, 0x1.493b3ap-8f, 0x1.acd566p-9f, 0x1.ea45b6p-5f,
     /* s = 8/8: node 79 z */
-    -0x1.e66666p-60f, 0x1.e7358ep-6f, -0x1.5d6914p-7f, 0x1.4471bcp-3f,
+    -0x1.d9999ap-58f, 0x1.e7358ep-6f, -0x1.5d6914p-7f, 0x1.4471bcp-3f,
     /* s = 8/8: node 80 x */
-    0x1.ccccccp-59f, -0x1.5cdc22p-7f, 0x1.fae58p-8f, -0x1.a7e35cp-3f,
+    0x1p-59f, -0x1.5cdc22p-7f, 0x1.fae58p-8f, -0x1.a7e35cp-3f,
     /* s = 8/8: node 80 y */
     -0x1.4cccccp-59f, 0x1.8fb044p-7f, 0x1.414b66p-6f, 0x1.ebf71ep-4f,
     /* s = 8/8: node 80 z */
-    -0x1.4p-57f, 0x1.78d57cp-4f, -0x1.50d088p-5f, 0x1.b72d4p-2f,
+    -0x1.f33334p-57f, 0x1.78d57cp-4f, -0x1.50d088p-5f, 0x1.b72d4p-2f,
     /* s = 8/8: node 81 x */
-    -0x1.333334p-60f, 0x1.c48cc2p-7f, 0x1.9f44aap-7f, -0x1.a8b7ap-3f,
+    0x1.b33334p-59f, 0x1.c48cc2p-7f, 0x1.9f44aap-7f, -0x1.a8b7ap-3f,
     /* s = 8/8: node 81 y */
-    -0x1.b33334p-58f, 0x1.237cb8p-5f, 0x1.5d3f2cp-5f, 0x1.b8b104p-3f,
+    -0x1.0cccccp-57f, 0x1.237cb8p-5f, 0x1.5d3f2cp-5f, 0x1.b8b104p-3f,
     /* s = 8/8: node 81 z */
-    -0x1.8cccccp-56f, 0x1.380986p-3f, -0x1.902402p-4f, 0x1.9c8608p-1f,
+    -0x1.a66666p-56f, 0x1.380986p-3f, -0x1.902402p-4f, 0x1.9c8608p-1f,
     /* s = 8/8: node 82 x */
-    -0x1.8a6666p-57f, 0x1.29045ap-3f, -0x1.4d543p-5f, -0x1.89aa46p-6f,
+    -0x1.9p-57f, 0x1.29045ap-3f, -0x1.4d543p-5f, -0x1.89aa46p-6f,
     /* s = 8/8: node 82 y */
-    -0x1.99999ap-60f, 0x1.daff5ap-7f, 0x1.08f4f6p-3f, 0x1.3297a6p-2f,
+    -0x1.99999ap-59f, 0x1.daff5ap-7f, 0x1.08f4f6p-3f, 0x1.3297a6p-2f,
     /* s = 8/8: node 82 z */
-    -0x1p-55f, 0x1.7a31b8p-3f, -0x1.57f17ep-3f, 0x1.2b822p+0f,
+    -0x1.ap-55f, 0x1.7a31b8p-3f, -0x1.57f17ep-3f, 0x1.2b822p+0f,
     /* s = 8/8: node 83 x */
-    -0x1.30ccccp-56f, 0x1.512a66p-3f, -0x1.872abp-7f, 0x1.ecdedp-5f,
+    -0x1.28p-57f, 0x1.512a66p-3f, -0x1.872abp-7f, 0x1.ecdedp-5f,
     /* s = 8/8: node 83 y */
-    -0x1.533334p-57f, 0x1.3875f8p-5f, 0x1.207856p-3f, 0x1.3d468ap-2f,
+    -0x1.8cccccp-58f, 0x1.3875f8p-5f, 0x1.207856p-3f, 0x1.3d468ap-2f,
     /* s = 8/8: node 83 z */
-    -0x1.266666p-56f, 0x1.31c1d4p-4f, -0x1.43657p-3f, 0x1.3e1ebep+0f,
+    -0x1.2p-55f, 0x1.31c1d4p-4f, -0x1.43657p-3f, 0x1.3e1ebep+0f,
     /* s = 8/8: node 84 x */
-    -0x1.233334p-56f, 0x1.1fe922p-3f, 0x1.3396f2p-10f, 0x1.5d5d8p-3f,
+    -0x1.e66666p-58f, 0x1.1fe922p-3f, 0x1.3396f2p-10f, 0x1.5d5d8p-3f,
     /* s = 8/8: node 84 y */
-    -0x1.b33334p-59f, 0x1.259a14p-5f, 0x1.d55792p-4f, 0x1.086ec6p-2f,
+    -0x1.4cccccp-59f, 0x1.259a14p-5f, 0x1.d55792p-4f, 0x1.086ec6p-2f,
     /* s = 8/8: node 84 z */
-    -0x1.666666p-57f, -0x1.83ea24p-6f, -0x1.09187cp-3f, 0x1.0ed9e8p+0f,
+    -0x1.8p-57f, -0x1.83ea24p-6f, -0x1.09187cp-3f, 0x1.0ed9e8p+0f,
     /* s = 8/8: node 85 x */
-    -0x1.666666p-58f, 0x1.69cf2ep-4f, 0x1.d933d2p-7f, 0x1.9693b2p-3f,
+    -0x1.266666p-58f, 0x1.69cf2ep-4f, 0x1.d933d2p-7f, 0x1.9693b2p-3f,
     /* s = 8/8: node 85 y */
-    -0x1.d9999ap-59f, 0x1.f93b88p-6f, 0x1.02fab6p-4f, 0x1.722ac6p-3f,
+    -0x1.4cccccp-59f, 0x1.f93b88p-6f, 0x1.02fab6p-4f, 0x1.722ac6p-3f,
     /* s = 8/8: node 85 z */
-    -0x1p-58f, -0x1.fb18dp-5f, -0x1.3a3adcp-4f, 0x1.7d786p-1f,
+    -0x1.8cccccp-57f, -0x1.fb18dp-5f, -0x1.3a3adcp-4f, 0x1.7d786p-1f,
     /* s = 8/8: node 86 x */
-    -0x1.466666p-58f, 0x1.52da62p-5f, 0x1.bb8156p-9f, 0x1.7b055ap-3f,
+    -0x1.4p-59f, 0x1.52da62p-5f, 0x1.bb8156p-9f, 0x1.7b055ap-3f,
     /* s = 8/8: node 86 y */
-    -0x1.066666p-58f, 0x1.52826ep-6f, 0x1.9b631ep-6f, 0x1.b50e24p-4f,
+    -0x1.19999ap-58f, 0x1.52826ep-6f, 0x1.9b631ep-6f, 0x1.b50e24p-4f,
     /* s = 8/8: node 86 z */
-    -0x1p-58f, -0x1.85b362p-5f, -0x1.3fa02p-5f, 0x1.981682p-2f,
+    -0x1.99999ap-61f, -0x1.85b362p-5f, -0x1.3fa02p-5f, 0x1.981682p-2f,
     /* s = 8/8: node 87 x */
-    -0x1.333334p-59f, 0x1.61ab26p-7f, 0x1.c4448ap-9f, 0x1.7e5476p-4f,
+    -0x1.133334p-59f, 0x1.61ab26p-7f, 0x1.c4448ap-9f, 0x1.7e5476p-4f,
     /* s = 8/8: node 87 y */
-    -0x1.733334p-60f, 0x1.0155c2p-6f, 0x1.a316d6p-8f, 0x1.864b9ap-5f,
+    -0x1.4p-59f, 0x1.0155c2p-6f, 0x1.a316d6p-8f, 0x1.864b9ap-5f,
     /* s = 8/8: node 87 z */
-    -0x1.333334p-61f, -0x1.5b7f5cp-7f, -0x1.ecedccp-8f, 0x1.2ff5a6p-3f,
+    -0x1.4p-59f, -0x1.5b7f5cp-7f, -0x1.ecedccp-8f, 0x1.2ff5a6p-3f,
     /* s = 8/8: node 88 x */
-    0x1.19999ap-67f, -0x1.36c9acp-13f, -0x1.73e8c2p-14f, 0x1.7921a2p-12f,
+    -0x1.99999ap-71f, -0x1.36c9acp-13f, -0x1.73e8c2p-14f, 0x1.7921a2p-12f,
     /* s = 8/8: node 88 y */
     0x1.333334p-70f, -0x1.45473ap-14f, 0x1.7fa30cp-20f, 0x1.c3b26ap-12f,
     /* s = 8/8: node 88 z */
-    -0x1.6cccccp-67f, 0x1.d4c338p-13f, 0x1.8b2ep-14f, 0x1.73935ep-12f,
+    -0x1.833334p-66f, 0x1.d4c338p-13f, 0x1.8b2ep-14f, 0x1.73935ep-12f,
     /* s = 8/8: node 89 x */
-    0x1.2p-67f, -0x1.625054p-14f, 0x1.06739ap-14f, -0x1.4abdccp-12f,
+    0x1.6p-67f, -0x1.625054p-14f, 0x1.06739ap-14f, -0x1.4abdccp-12f,
     /* s = 8/8: node 89 y */
-    -0x1.19999ap-66f, 0x1.f2264ap-14f, -0x1.be62a6p-15f, 0x1.fdf69ap-12f,
+    -0x1p-66f, 0x1.f2264ap-14f, -0x1.be62a6p-15f, 0x1.fdf69ap-12f,
     /* s = 8/8: node 89 z */
-    -0x1.99999ap-73f, -0x1.347e9cp-14f, 0x1.7fbadp-14f, 0x1.1769fcp-12f,
+    -0x1.cp-68f, -0x1.347e9cp-14f, 0x1.7fbadp-14f, 0x1.1769fcp-12f,
     /* s = 8/8: node 90 x */
     0x1.333334p-60f, -0x1.259c1ep-9f, -0x1.fa8c2p-12f, -0x1.c0b84p-5f,
     /* s = 8/8: node 90 y */
-    -0x1.b33334p-61f, 0x1.5d7922p-9f, -0x1.a4b514p-14f, 0x1.be3bfap-5f,
+    -0x1.ccccccp-62f, 0x1.5d7922p-9f, -0x1.a4b514p-14f, 0x1.be3bfap-5f,
     /* s = 8/8: node 90 z */
     -0x1.666666p-60f, 0x1.387be4p-7f, -0x1.f31592p-9f, 0x1.370712p-4f,
     /* s = 8/8: node 91 x */
-    0x1.666666p-60f, -0x1.bf8baep-10f, -0x1.9e8e96p-9f, -0x1.bb1884p-4f,
+    0x1.333334p-61f, -0x1.bf8baep-10f, -0x1.9e8e96p-9f, -0x1.bb1884p-4f,
     /* s = 8/8: node 91 y */
-    -0x1.99999ap-61f, 0x1.776dc2p-7f, 0x1.078a32p-8f, 0x1.d99d2p-4f,
+    -0x1.8cccccp-59f, 0x1.776dc2p-7f, 0x1.078a32p-8f, 0x1.d99d2p-4f,
     /* s = 8/8: node 91 z */
-    -0x1.0cccccp-57f, 0x1.5a5aeep-5f, -0x1.d4225ap-6f, 0x1.cc91p-3f,
+    -0x1.59999ap-58f, 0x1.5a5aeep-5f, -0x1.d4225ap-6f, 0x1.cc91p-3f,
     /* s = 8/8: node 92 x */
-    -0x1.ccccccp-61f, 0x1.461fa2p-6f, -0x1.f6d032p-8f, -0x1.ba1cb2p-4f,
+    0x1.666666p-61f, 0x1.461fa2p-6f, -0x1.f6d032p-8f, -0x1.ba1cb2p-4f,
     /* s = 8/8: node 92 y */
-    -0x1.4cccccp-59f, 0x1.bc20bcp-7f, 0x1.ef33eap-7f, 0x1.827024p-3f,
+    -0x1.d9999ap-59f, 0x1.bc20bcp-7f, 0x1.ef33eap-7f, 0x1.827024p-3f,
     /* s = 8/8: node 92 z */
-    -0x1.b33334p-57f, 0x1.14fbd2p-4f, -0x1.f19be4p-5f, 0x1.adf1cp-2f,
+    -0x1.59999ap-57f, 0x1.14fbd2p-4f, -0x1.f19be4p-5f, 0x1.adf1cp-2f,
     /* s = 8/8: node 93 x */
-    -0x1.a66666p-60f, 0x1.45fe4ap-5f, -0x1.18bfc4p-7f, -0x1.d49d16p-5f,
+    -0x1.466666p-59f, 0x1.45fe4ap-5f, -0x1.18bfc4p-7f, -0x1.d49d16p-5f,
     /* s = 8/8: node 93 y */
-    -0x1.8p-59f, 0x1.e2ac84p-7f, 0x1.56855ep-5f, 0x1.e94c26p-3f,
+    -0x1.666666p-58f, 0x1.e2ac84p-7f, 0x1.56855ep-5f, 0x1.e94c26p-3f,
     /* s = 8/8: node 93 z */
-    -0x1.ccccccp-57f, 0x1.2c8428p-4f, -0x1.93dcbap-4f, 0x1.38cf12p-1f,
+    -0x1.e66666p-57f, 0x1.2c8428p-4f, -0x1.93dcbap-4f, 0x1.38cf12p-1f,
     /* s = 8/8: node 94 x */
-    -0x1.21999ap-58f, 0x1.97316ap-5f, -0x1.61b20ep-9f, 0x1.a265a8p-6f,
+    -0x1.e33334p-59f, 0x1.97316ap-5f, -0x1.61b20ep-9f, 0x1.a265a8p-6f,
     /* s = 8/8: node 94 y */
-    -0x1.666666p-58f, 0x1.751362p-6f, 0x1.b7b398p-5f, 0x1.1d1ba2p-2f,
+    -0x1.b33334p-58f, 0x1.751362p-6f, 0x1.b7b398p-5f, 0x1.1d1ba2p-2f,
     /* s = 8/8: node 94 z */
-    -0x1.8p-57f, 0x1.1e10c6p-5f, -0x1.917e62p-4f, 0x1.444b36p-1f,
+    -0x1.266666p-57f, 0x1.1e10c6p-5f, -0x1.917e62p-4f, 0x1.444b36p-1f,
     /* s = 8/8: node 95 x */
-    -0x1.4cccccp-58f, 0x1.bdebd6p-5f, 0x1.213384p-7f, 0x1.5ef5e8p-4f,
+    -0x1.333334p-58f, 0x1.bdebd6p-5f, 0x1.213384p-7f, 0x1.5ef5e8p-4f,
     /* s = 8/8: node 95 y */
-    -0x1.59999ap-58f, 0x1.ba803ep-6f, 0x1.474f92p-5f, 0x1.ec5ce2p-3f,
+    -0x1.ccccccp-59f, 0x1.ba803ep-6f, 0x1.474f92p-5f, 0x1.ec5ce2p-3f,
     /* s = 8/8: node 95 z */
-    -0x1.133334p-56f, -0x1.6693c8p-8f, -0x1.5c5fbap-4f, 0x1.20a4a6p-1f,
+    -0x1.0cccccp-56f, -0x1.6693c8p-8f, -0x1.5c5fbap-4f, 0x1.20a4a6p-1f,
     /* s = 8/8: node 96 x */
-    -0x1.333334p-59f, 0x1.4d5ddep-5f, 0x1.2cc156p-7f, 0x1.db55f8p-4f,
+    -0x1.133334p-58f, 0x1.4d5ddep-5f, 0x1.2cc156p-7f, 0x1.db55f8p-4f,
     /* s = 8/8: node 96 y */
-    -0x1.4p-58f, 0x1.299842p-6f, 0x1.76fcacp-6f, 0x1.73a4b6p-3f,
+    -0x1.99999ap-59f, 0x1.299842p-6f, 0x1.76fcacp-6f, 0x1.73a4b6p-3f,
     /* s = 8/8: node 96 z */
-    -0x1.19999ap-57f, -0x1.e4dffep-6f, -0x1.bce69ep-5f, 0x1.9ad992p-2f,
+    -0x1.4cccccp-58f, -0x1.e4dffep-6f, -0x1.bce69ep-5f, 0x1.9ad992p-2f,
     /* s = 8/8: node 97 x */
-    -0x1.99999ap-62f, 0x1.3aa5d4p-6f, 0x1.10266cp-7f, 0x1.be9318p-4f,
+    -0x1.466666p-58f, 0x1.3aa5d4p-6f, 0x1.10266cp-7f, 0x1.be9318p-4f,
     /* s = 8/8: node 97 y */
-    -0x1.ccccccp-60f, 0x1.0f453ep-6f, 0x1.5ba148p-7f, 0x1.ab32fap-4f,
+    -0x1.e66666p-59f, 0x1.0f453ep-6f, 0x1.5ba148p-7f, 0x1.ab32fap-4f,
     /* s = 8/8: node 97 z */
-    -0x1.b33334p-59f, -0x1.6fe3eap-6f, -0x1.9e635p-6f, 0x1.ae38bap-3f,
+    -0x1.666666p-60f, -0x1.6fe3eap-6f, -0x1.9e635p-6f, 0x1.ae38bap-3f,
     /* s = 8/8: node 98 x */
-    -0x1.b33334p-61f, 0x1.b0871p-8f, 0x1.809f32p-9f, 0x1.bd4808p-5f,
+    -0x1.a66666p-60f, 0x1.b0871p-8f, 0x1.809f32p-9f, 0x1.bd4808p-5f,
     /* s = 8/8: node 98 y */
-    -0x1.ccccccp-60f, 0x1.a2acc6p-7f, 0x1.35b92ep-9f, 0x1.846a2ep-5f,
+    -0x1.d9999ap-60f, 0x1.a2acc6p-7f, 0x1.35b92ep-9f, 0x1.846a2ep-5f,
     /* s = 8/8: node 98 z */
-    -0x1.8cccccp-60f, -0x1.24703cp-10f, -0x1.6082acp-9f, 0x1.2fa2bep-4f,
+    -0x1.99999ap-60f, -0x1.24703cp-10f, -0x1.6082acp-9f, 0x1.2fa2bep-4f,
     /* s = 8/8: node 99 x */
-    0x1.8p-69f, -0x1.14de42p-14f, -0x1.08406ap-14f, 0x1.0e1264p-12f,
+    -0x1p-69f, -0x1.14de42p-14f, -0x1.08406ap-14f, 0x1.0e1264p-12f,
     /* s = 8/8: node 99 y */
-    -0x1.333334p-69f, -0x1.7ad87ep-14f, -0x1.8da786p-15f, 0x1.ddfe74p-12f,
+    -0x1.99999ap-69f, -0x1.7ad87ep-14f, -0x1.8da786p-15f, 0x1.ddfe74p-12f,
     /* s = 8/8: node 99 z */
-    -0x1.133334p-66f, 0x1.849cd8p-13f, 0x1.ff1e2p-14f, 0x1.1bfc6ep-12f,
+    -0x1.4cccccp-67f, 0x1.849cd8p-13f, 0x1.ff1e2p-14f, 0x1.1bfc6ep-12f,
     /* s = 8/8: node 100 x */
-    0x1.c66666p-69f, -0x1.0a03dp-15f, 0x1.b922bcp-15f, -0x1.4d64a6p-14f,
+    0x1.066666p-68f, -0x1.0a03dp-15f, 0x1.b922bcp-15f, -0x1.4d64a6p-14f,
     /* s = 8/8: node 100 y */
-    -0x1.4p-68f, 0x1.46f798p-15f, -0x1.4af998p-16f, 0x1.98c2bap-13f,
+    -0x1p-68f, 0x1.46f798p-15f, -0x1.4af998p-16f, 0x1.98c2bap-13f,
     /* s = 8/8: node 100 z */
-    0x1.b33334p-69f, -0x1.be5cc2p-15f, 0x1.3a6efep-14f, 0x1.8d04b8p-13f,
+    0x1.99999ap-71f, -0x1.be5cc2p-15f, 0x1.3a6efep-14f, 0x1.8d04b8p-13f,
     /* s = 8/8: node 101 x */
-    0x1.b33334p-63f, 0x1.a9abeap-12f, -0x1.102f6ap-8f, -0x1.6f1ccp-6f,
+    0x1.4p-62f, 0x1.a9abeap-12f, -0x1.102f6ap-8f, -0x1.6f1ccp-6f,
     /* s = 8/8: node 101 y */
-    -0x1.333334p-62f, -0x1.2c998ep-15f, 0x1.36d1d4p-11f, 0x1.9857e2p-6f,
+    -0x1.19999ap-62f, -0x1.2c998ep-15f, 0x1.36d1d4p-11f, 0x1.9857e2p-6f,
     /* s = 8/8: node 101 z */
-    -0x1.19999ap-63f, -0x1.4458b2p-9f, 0x1.185206p-8f, 0x1.832d0ap-6f,
+    -0x1.99999ap-67f, -0x1.4458b2p-9f, 0x1.185206p-8f, 0x1.832d0ap-6f,
     /* s = 8/8: node 102 x */
-    -0x1.99999ap-65f, 0x1.14af92p-10f, -0x1.dfef06p-8f, -0x1.78b7fp-5f,
+    0x1.333334p-63f, 0x1.14af92p-10f, -0x1.dfef06p-8f, -0x1.78b7fp-5f,
     /* s = 8/8: node 102 y */
-    -0x1.8p-61f, 0x1.7fd2f4p-9f, 0x1.ebd09p-10f, 0x1.d06a0cp-5f,
+    -0x1.b33334p-61f, 0x1.7fd2f4p-9f, 0x1.ebd09p-10f, 0x1.d06a0cp-5f,
     /* s = 8/8: node 102 z */
-    -0x1.333334p-59f, 0x1.05429ap-7f, -0x1.15fe32p-8f, 0x1.38c99cp-4f,
+    -0x1.d9999ap-60f, 0x1.05429ap-7f, -0x1.15fe32p-8f, 0x1.38c99cp-4f,
     /* s = 8/8: node 103 x */
-    0x1.333334p-64f, 0x1.f32206p-9f, -0x1.303114p-7f, -0x1.74edd4p-5f,
+    0x1.8p-62f, 0x1.f32206p-9f, -0x1.303114p-7f, -0x1.74edd4p-5f,
     /* s = 8/8: node 103 y */
-    -0x1.0cccccp-60f, 0x1.68f0f6p-8f, 0x1.c771dp-10f, 0x1.856218p-4f,
+    -0x1p-60f, 0x1.68f0f6p-8f, 0x1.c771dp-10f, 0x1.856218p-4f,
     /* s = 8/8: node 103 z */
-    -0x1.79999ap-58f, 0x1.476406p-6f, -0x1.208fbcp-6f, 0x1.4ba858p-3f,
+    -0x1.666666p-59f, 0x1.476406p-6f, -0x1.208fbcp-6f, 0x1.4ba858p-3f,
     /* s = 8/8: node 104 x */
-    -0x1.99999ap-63f, 0x1.3a6ae8p-7f, -0x1.009ca2p-7f, -0x1.b41afp-6f,
+    -0x1.59999ap-61f, 0x1.3a6ae8p-7f, -0x1.009ca2p-7f, -0x1.b41afp-6f,
     /* s = 8/8: node 104 y */
-    -0x1.19999ap-59f, 0x1.abcdbap-7f, 0x1.2814cp-8f, 0x1.11912ep-3f,
+    -0x1.99999ap-59f, 0x1.abcdbap-7f, 0x1.2814cp-8f, 0x1.11912ep-3f,
     /* s = 8/8: node 104 z */
-    -0x1.59999ap-58f, 0x1.7ab1dcp-6f, -0x1.de38f2p-6f, 0x1.ce277ep-3f,
+    -0x1.333334p-58f, 0x1.7ab1dcp-6f, -0x1.de38f2p-6f, 0x1.ce277ep-3f,
     /* s = 8/8: node 105 x */
-    -0x1.04p-60f, 0x1.f10164p-7f, -0x1.d6fc88p-11f, 0x1.682cp-8f,
+    -0x1.ccp-60f, 0x1.f10164p-7f, -0x1.d6fc88p-11f, 0x1.682cp-8f,
     /* s = 8/8: node 105 y */
-    -0x1.4p-59f, 0x1.12d4bap-7f, 0x1.4a72ep-8f, 0x1.296296p-3f,
+    -0x1.b33334p-59f, 0x1.12d4bap-7f, 0x1.4a72ep-8f, 0x1.296296p-3f,
     /* s = 8/8: node 105 z */
-    -0x1.8cccccp-58f, 0x1.b4138ap-7f, -0x1.15276p-5f, 0x1.039038p-2f,
+    -0x1.99999ap-58f, 0x1.b4138ap-7f, -0x1.15276p-5f, 0x1.039038p-2f,
     /* s = 8/8: node 106 x */
-    -0x1.133334p-60f, 0x1.a49bfep-7f, 0x1.5fa4eep-8f, 0x1.34865ep-5f,
+    -0x1.4cccccp-60f, 0x1.a49bfep-7f, 0x1.5fa4eep-8f, 0x1.34865ep-5f,
     /* s = 8/8: node 106 y */
-    -0x1.4cccccp-59f, 0x1.a4c6d2p-8f, 0x1.e3834ap-8f, 0x1.0ab9ecp-3f,
+    -0x1.a66666p-59f, 0x1.a4c6d2p-8f, 0x1.e3834ap-8f, 0x1.0ab9ecp-3f,
     /* s = 8/8: node 106 z */
-    -0x1.666666p-58f, -0x1.69ce0ep-11f, -0x1.9c1facp-6f, 0x1.b8dfb6p-3f,
+    -0x1p-58f, -0x1.69ce0ep-11f, -0x1.9c1facp-6f, 0x1.b8dfb6p-3f,
     /* s = 8/8: node 107 x */
-    -0x1.39999ap-59f, 0x1.6b3a6cp-7f, 0x1.58e01ap-7f, 0x1.9cc43cp-5f,
+    -0x1.8p-61f, 0x1.6b3a6cp-7f, 0x1.58e01ap-7f, 0x1.9cc43cp-5f,
     /* s = 8/8: node 107 y */
-    -0x1.e66666p-60f, 0x1.116bdcp-7f, 0x1.7fe8cap-8f, 0x1.7504f6p-4f,
+    -0x1.d9999ap-60f, 0x1.116bdcp-7f, 0x1.7fe8cap-8f, 0x1.7504f6p-4f,
     /* s = 8/8: node 107 z */
-    -0x1.4cccccp-60f, -0x1.f89c3ap-9f, -0x1.bcbb7ap-7f, 0x1.34b1c6p-3f,
+    -0x1.8cccccp-59f, -0x1.f89c3ap-9f, -0x1.bcbb7ap-7f, 0x1.34b1c6p-3f,
     /* s = 8/8: node 108 x */
     -0x1.266666p-60f, 0x1.a41ba2p-8f, 0x1.092824p-7f, 0x1.8917c6p-5f,
     /* s = 8/8: node 108 y */
-    -0x1.8p-60f, 0x1.ca538cp-8f, 0x1.22dcdep-9f, 0x1.c725c4p-5f,
+    -0x1.19999ap-60f, 0x1.ca538cp-8f, 0x1.22dcdep-9f, 0x1.c725c4p-5f,
     /* s = 8/8: node 108 z */
-    -0x1.19999ap-61f, -0x1.47b98ep-11f, -0x1.a5cc4cp-9f, 0x1.319c62p-4f,
+    0x1p-62f, -0x1.47b98ep-11f, -0x1.a5cc4cp-9f, 0x1.319c62p-4f,
     /* s = 8/8: node 109 x */
-    -0x1p-61f, 0x1.1954bp-8f, 0x1.4cf1bep-8f, 0x1.78cdf8p-6f,
+    -0x1.39999ap-61f, 0x1.1954bp-8f, 0x1.4cf1bep-8f, 0x1.78cdf8p-6f,
     /* s = 8/8: node 109 y */
-    -0x1.19999ap-61f, 0x1.d4132p-8f, 0x1.62dcb2p-9f, 0x1.751602p-6f,
+    -0x1.ap-61f, 0x1.d4132p-8f, 0x1.62dcb2p-9f, 0x1.751602p-6f,
     /* s = 8/8: node 109 z */
-    -0x1p-61f, 0x1.f2eedcp-8f, 0x1.5f41ap-8f, 0x1.8a6176p-6f,
+    -0x1.99999ap-61f, 0x1.f2eedcp-8f, 0x1.5f41ap-8f, 0x1.8a6176p-6f,
     /* s = 8/8: node 110 x */
-    0x1.ap-69f, -0x1.1b3fd8p-15f, -0x1.d7de1ep-15f, 0x1.35d6dcp-14f,
+    -0x1.99999ap-75f, -0x1.1b3fd8p-15f, -0x1.d7de1ep-15f, 0x1.35d6dcp-14f,
     /* s = 8/8: node 110 y */
-    -0x1.4cccccp-69f, -0x1.6ed278p-16f, -0x1.70ea24p-16f, 0x1.810a68p-13f,
+    -0x1.19999ap-69f, -0x1.6ed278p-16f, -0x1.70ea24p-16f, 0x1.810a68p-13f,
     /* s = 8/8: node 110 z */
-    -0x1.acccccp-67f, 0x1.11f3bp-13f, 0x1.6ca15ap-14f, 0x1.9640dcp-13f,
+    -0x1.ccccccp-69f, 0x1.11f3bp-13f, 0x1.6ca15ap-14f, 0x1.9640dcp-13f,
     /* s = 8/8: node 111 x */
-    -0x1.59999ap-69f, 0x1.5a9756p-20f, 0x1.251e6ap-15f, 0x1.03ec44p-13f,
+    -0x1.99999ap-70f, 0x1.5a9756p-20f, 0x1.251e6ap-15f, 0x1.03ec44p-13f,
     /* s = 8/8: node 111 y */
-    0x1.8p-70f, 0x1.5fd1f6p-18f, 0x1.327e02p-17f, -0x1.102d56p-13f,
+    0x1.19999ap-70f, 0x1.5fd1f6p-18f, 0x1.327e02p-17f, -0x1.102d56p-13f,
     /* s = 8/8: node 111 z */
-    -0x1.7e6666p-69f, 0x1.f44b72p-15f, -0x1.f68fa4p-15f, -0x1.fd1bc2p-17f,
+    -0x1.266666p-69f, 0x1.f44b72p-15f, -0x1.f68fa4p-15f, -0x1.fd1bc2p-17f,
     /* s = 8/8: node 112 x */
-    0x1.59999ap-68f, -0x1.0119cp-15f, 0x1.2bdbe6p-16f, -0x1.7b256cp-13f,
+    0x1.866666p-68f, -0x1.0119cp-15f, 0x1.2bdbe6p-16f, -0x1.7b256cp-13f,
     /* s = 8/8: node 112 y */
-    -0x1.b9999ap-69f, 0x1.40347ep-15f, -0x1.0faf1ep-16f, 0x1.4dec3ep-14f,
+    -0x1.2cccccp-68f, 0x1.40347ep-15f, -0x1.0faf1ep-16f, 0x1.4dec3ep-14f,
     /* s = 8/8: node 112 z */
-    0x1.99999ap-71f, -0x1.b2a828p-15f, 0x1.59230ap-14f, 0x1.88daa4p-13f,
+    -0x1.4cccccp-69f, -0x1.b2a828p-15f, 0x1.59230ap-14f, 0x1.88daa4p-13f,
     /* s = 8/8: node 113 x */
-    0x1.2cccccp-66f, -0x1.73942p-14f, 0x1.c41df2p-14f, -0x1.24839cp-11f,
+    0x1.333334p-67f, -0x1.73942p-14f, 0x1.c41df2p-14f, -0x1.24839cp-11f,
     /* s = 8/8: node 113 y */
-    -0x1.933334p-67f, 0x1.394c14p-14f, -0x1.19f45ep-14f, 0x1.089a54p-12f,
+    -0x1.466666p-67f, 0x1.394c14p-14f, -0x1.19f45ep-14f, 0x1.089a54p-12f,
     /* s = 8/8: node 113 z */
-    0x1.99999ap-69f, -0x1.462eap-14f, 0x1.c11d52p-14f, 0x1.1bd00ep-12f,
+    -0x1.666666p-69f, -0x1.462eap-14f, 0x1.c11d52p-14f, 0x1.1bd00ep-12f,
     /* s = 8/8: node 114 x */
-    0x1.266666p-66f, -0x1.9e636ep-15f, 0x1.af1f18p-14f, -0x1.de8d28p-12f,
+    0x1.4cccccp-66f, -0x1.9e636ep-15f, 0x1.af1f18p-14f, -0x1.de8d28p-12f,
     /* s = 8/8: node 114 y */
-    -0x1.cp-66f, 0x1.0fdd92p-13f, -0x1.107cep-13f, 0x1.c7c55ep-12f,
+    -0x1.4p-66f, 0x1.0fdd92p-13f, -0x1.107cep-13f, 0x1.c7c55ep-12f,
     /* s = 8/8: node 114 z */
-    0x1.99999ap-71f, -0x1.bfab22p-15f, 0x1.43d1dep-13f, 0x1.21f9f4p-12f,
+    0x1.4cccccp-69f, -0x1.bfab22p-15f, 0x1.43d1dep-13f, 0x1.21f9f4p-12f,
     /* s = 8/8: node 115 x */
-    -0x1.333334p-72f, 0x1.63cc1ap-15f, 0x1.926ab8p-15f, -0x1.701bc4p-13f,
+    -0x1p-70f, 0x1.63cc1ap-15f, 0x1.926ab8p-15f, -0x1.701bc4p-13f,
     /* s = 8/8: node 115 y */
-    -0x1.99999ap-70f, 0x1.b2789ap-18f, -0x1.354258p-13f, 0x1.3e08fep-14f,
+    -0x1.5cccccp-68f, 0x1.b2789ap-18f, -0x1.354258p-13f, 0x1.3e08fep-14f,
     /* s = 8/8: node 115 z */
-    0x1.19999ap-69f, -0x1.65e7dap-16f, 0x1.0b9a0ap-13f, 0x1.06fc82p-12f,
+    -0x1.99999ap-73f, -0x1.65e7dap-16f, 0x1.0b9a0ap-13f, 0x1.06fc82p-12f,
     /* s = 8/8: node 116 x */
-    -0x1.31999ap-66f, 0x1.9a9ddep-13f, -0x1.eb4bfep-21f, 0x1.aa4ad6p-16f,
+    -0x1.b1999ap-67f, 0x1.9a9ddep-13f, -0x1.eb4bfep-21f, 0x1.aa4ad6p-16f,
     /* s = 8/8: node 116 y */
-    -0x1p-67f, 0x1.d30e52p-16f, -0x1.d95638p-13f, 0x1.1d4616p-11f,
+    -0x1.d9999ap-67f, 0x1.d30e52p-16f, -0x1.d95638p-13f, 0x1.1d4616p-11f,
     /* s = 8/8: node 116 z */
-    -0x1.ccccccp-69f, 0x1.f9caa6p-16f, 0x1.b41386p-13f, 0x1.0e833ap-11f,
+    -0x1.99999ap-70f, 0x1.f9caa6p-16f, 0x1.b41386p-13f, 0x1.0e833ap-11f,
     /* s = 8/8: node 117 x */
-    -0x1.4p-67f, 0x1.63cee8p-14f, -0x1.c43fd2p-14f, 0x1.8ffb18p-12f,
+    -0x1.b33334p-68f, 0x1.63cee8p-14f, -0x1.c43fd2p-14f, 0x1.8ffb18p-12f,
     /* s = 8/8: node 117 y */
-    -0x1.266666p-67f, -0x1.0f5068p-15f, -0x1.e7efa4p-13f, 0x1.42a424p-11f,
+    -0x1.8p-68f, -0x1.0f5068p-15f, -0x1.e7efa4p-13f, 0x1.42a424p-11f,
     /* s = 8/8: node 117 z */
-    -0x1.266666p-67f, 0x1.ae520ep-14f, 0x1.c9c7e8p-13f, 0x1.d7b678p-12f,
+    -0x1.4cccccp-66f, 0x1.ae520ep-14f, 0x1.c9c7e8p-13f, 0x1.d7b678p-12f,
     /* s = 8/8: node 118 x */
-    -0x1.333334p-69f, 0x1.bac176p-17f, -0x1.53ca9cp-14f, 0x1.cc1eb2p-12f,
+    -0x1.19999ap-68f, 0x1.bac176p-17f, -0x1.53ca9cp-14f, 0x1.cc1eb2p-12f,
     /* s = 8/8: node 118 y */
-    0x1.333334p-70f, -0x1.c72bc4p-14f, -0x1.00e3bp-13f, 0x1.a02748p-12f,
+    -0x1.19999ap-67f, -0x1.c72bc4p-14f, -0x1.00e3bp-13f, 0x1.a02748p-12f,
     /* s = 8/8: node 118 z */
-    -0x1.ep-67f, 0x1.2a3498p-13f, 0x1.44be9p-13f, 0x1.6f530ep-12f,
+    -0x1.633334p-66f, 0x1.2a3498p-13f, 0x1.44be9p-13f, 0x1.6f530ep-12f,
     /* s = 8/8: node 119 x */
-    -0x1.666666p-68f, -0x1.3311b2p-15f, -0x1.7e3be6p-14f, 0x1.ecb2bap-12f,
+    -0x1p-68f, -0x1.3311b2p-15f, -0x1.7e3be6p-14f, 0x1.ecb2bap-12f,
     /* s = 8/8: node 119 y */
-    0x1p-70f, -0x1.231e88p-14f, -0x1.e38ffep-15f, 0x1.ec6fbcp-13f,
+    -0x1.99999ap-72f, -0x1.231e88p-14f, -0x1.e38ffep-15f, 0x1.ec6fbcp-13f,
     /* s = 8/8: node 119 z */
-    -0x1.39999ap-67f, 0x1.6131bcp-13f, 0x1.22c93p-13f, 0x1.175b6cp-12f,
+    -0x1.cp-67f, 0x1.6131bcp-13f, 0x1.22c93p-13f, 0x1.175b6cp-12f,
     /* s = 8/8: node 120 x */
     -0x1p-69f, -0x1.47328ep-16f, -0x1.9f029ep-16f, 0x1.89b2bcp-13f,
     /* s = 8/8: node 120 y */
-    0x1.39999ap-69f, -0x1.0c5b0ep-14f, -0x1.155b9ap-15f, 0x1.6a26ep-14f,
+    0x1.733334p-69f, -0x1.0c5b0ep-14f, -0x1.155b9ap-15f, 0x1.6a26ep-14f,
     /* s = 8/8: node 120 z */
-    -0x1.8cccccp-67f, 0x1.0b4648p-13f, 0x1.772feep-14f, 0x1.9bb0f8p-13f,
+    -0x1.acccccp-67f, 0x1.0b4648p-13f, 0x1.772feep-14f, 0x1.9bb0f8p-13f,
     /* s = 8/8: node 121 x */
-    0x1.a66666p-69f, -0x1.518ad6p-16f, -0x1.1b56bap-15f, -0x1.059114p-13f,
+    0x1.0cccccp-69f, -0x1.518ad6p-16f, -0x1.1b56bap-15f, -0x1.059114p-13f,
     /* s = 8/8: node 121 y */
-    0x1.e66666p-70f, -0x1.91583cp-15f, -0x1.309fd2p-17f, -0x1.c07952p-14f,
+    0x1.99999ap-68f, -0x1.91583cp-15f, -0x1.309fd2p-17f, -0x1.c07952p-14f,
     /* s = 8/8: node 121 z */
-    0x1.346666p-67f, -0x1.90a08ep-14f, -0x1.0c0ccp-14f, -0x1.602e98p-16f,
+    0x1.1b3334p-67f, -0x1.90a08ep-14f, -0x1.0c0ccp-14f, -0x1.602e98p-16f,
 };
 const tfit_model tfit_block48_cut_forward = {
     4u, 6u, 121u, 2u, 13080u,
@@ -6674,7 +6674,7 @@ const tfit_model tfit_block48_cut_forward = {
      0xbf13cd3au, 0xbf13cd3au, 0xbf13cd3au, 0xc092ff71u, 0xc0d65cf2u, 0x40baa7b3u,
      0xf0b9898eu, 0xf1074839u, 0x70eb9782u, 0xc0d89590u, 0x4067ca04u, 0xc0cd15adu,
      0x4fb1ef56u, 0x4c4a1835u},
-    0x7f37ae30u
+    0xb8249b7cu
 };
 
 static const uint32_t tfit_block48_cut_contact_dims[1] = {
@@ -6685,17 +6685,17 @@ static const uint32_t tfit_block48_cut_contact_nodes[1] = {
 };
 static const float tfit_block48_cut_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    -0x1.ab3334p-54f, 0x1.4fffecp-57f, -0x1.733334p-55f,
+    -0x1.1accccp-54f, 0x1.c0de42p-57f, -0x1.4cccccp-55f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.14e582p+0f, 0x1.e5c66ap-50f, -0x1.d895f2p-5f, 0x1.1dbadap-49f,
-    0x1.42b6cp+0f, -0x1.d7d866p-50f, -0x1.ce918ep-5f, -0x1.3be956p-49f,
+    0x1.14e582p+0f, 0x1.fff202p-51f, -0x1.d895f2p-5f, 0x1.4793d4p-50f,
+    0x1.42b6cp+0f, -0x1.2890b4p-49f, -0x1.ce918ep-5f, -0x1.36803ep-49f,
     0x1.b53d2ep-2f,
     /* node 61 x force */
-    -0x1.a302ccp-54f, 0x1p+0f, -0x1.888dp-54f, 0x1.4d8772p-29f,
+    -0x1.ce0042p-54f, 0x1p+0f, -0x1.03cb64p-55f, 0x1.4d8882p-29f,
     /* node 61 y force */
-    0x1.4f236cp-55f, -0x1.4592bcp-52f, 0x1p+0f, 0x1.25d942p-55f,
+    -0x1.d9f928p-58f, 0x1.1b1b6cp-55f, 0x1p+0f, 0x1.9ff636p-57f,
     /* node 61 z force */
-    0x1.333334p-59f, -0x1.07caa8p-29f, 0x1.34dcf6p-55f, 0x1p+0f,
+    0x1.4cccccp-57f, -0x1.07ca6p-29f, 0x1.ba8032p-56f, 0x1p+0f,
 };
 const tfit_model tfit_block48_cut_contact = {
     4u, 4u, 1u, 1u, 24u,
@@ -6707,7 +6707,7 @@ const tfit_model tfit_block48_cut_contact = {
      0xbf1c360au, 0xbeea7e75u, 0xbfb766f8u, 0xc062c741u, 0xc0aa0c5eu, 0x415312a3u,
      0xf08f1e04u, 0xf0d6a192u, 0x718534a7u, 0xc0e375e7u, 0x4037df36u, 0xc17f30d7u,
      0xe94b8f3au, 0x6d57b715u},
-    0x8b7c65b8u
+    0xf91450a5u
 };
 static const int32_t tfit_block48_cut_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -6719,7 +6719,7 @@ static const int32_t tfit_block48_cut_contact_q31_coef[28] = {
     /* node 61 x: shift, then 4 coefficients */
     33, 0, 536870912, 0, 1,
     /* node 61 y: shift, then 4 coefficients */
-    33, 0, 0, 536870912, 0,
+    34, 0, 0, 1073741824, 0,
     /* node 61 z: shift, then 4 coefficients */
     33, 0, -1, 0, 536870912,
 };
@@ -6727,7 +6727,7 @@ const tfit_model_q31 tfit_block48_cut_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_block48_cut_contact_q31_coef, tfit_block48_cut_contact_nodes,
     tfit_block48_cut_contact_q31_coef + 28u, tfit_block48_cut_contact_nodes + 1u,
-    0x0632c5f0u
+    0xd81bafcau
 };
 
 #endif /* TFIT_BLOCK48_CUT_IMPLEMENTATION */
