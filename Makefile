@@ -40,7 +40,7 @@ RV64_FLAGS := -march=rv64imafdc -mabi=lp64d -mcmodel=medany
 # ---------------------------------------------------------------------------
 # Debian packages
 DEBS_BUILD := gcc make binutils pkg-config zlib1g-dev liblapacke-dev libopenblas-dev \
-              libsuitesparse-dev libcyaml-dev libyaml-dev libgmsh-dev libassimp-dev
+              libsuitesparse-dev libcyaml-dev libyaml-dev libgmsh-dev libassimp-dev libgsl-dev
 DEBS_CHECK := $(DEBS_BUILD) libcmocka-dev clang valgrind gcc-arm-none-eabi \
               libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 DEBS_DEMO := $(DEBS_BUILD) gnuplot-nox

@@ -20,7 +20,7 @@
 
 FW := $(B)/firmware
 FW_SHIPPED := $(filter-out %_golden.h $(ORGAN_HEADERS),$(wildcard coeffs/*.h))
-FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h \
+FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h $(T)/gen/resonant.h \
               $(T)/gen/shapes.h $(T)/gen/modal_ranks.h
 fw_name = $(basename $(notdir $(1)))
 fw_upper = $(shell echo $(1) | tr a-z A-Z)
@@ -160,6 +160,7 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_modal_rows_r4 tfit_modal_rows_r5 tfit_modal_rows_r6 tfit_modal_rows_r7 \
                  tfit_modal_rows_r8 \
                  tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter \
+                 tfit_resonant_step tfit_resonant_filter tfit_stateful_eval tfit_stateful_static \
                  tfit_displacements_cut tfit_cut_progress tfit_cut_rows
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \

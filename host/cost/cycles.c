@@ -151,6 +151,12 @@ typedef enum block_id {
     PRONY_FILTER_SETUP, /* ... the loop's set-up and exit load, which K = 0 skips */
     PRONY_FILTER_STUB,  /* ... the out-of-line code K = 0 runs instead */
     PRONY_TERM,     /* loop 1: one term, three axes */
+    RESONANT_NODAL, /* one tick of a resonant model outside the modes' loop, through
+                     * tfit_resonant_step, _filter, tfit_stateful_static and
+                     * tfit_stateful_eval to tfit_eval_nodal (p != 1), K >= 1 */
+    RESONANT_ROWS,  /* ... to tfit_degree1_rows_asm (nodal p = 1) */
+    RESONANT_MODAL, /* ... to tfit_eval_modal */
+    RESONANT_MODE,  /* tfit_resonant_filter loop 1: one mode, three axes */
     D1R_PATH,       /* tfit_degree1_rows_asm() outside its loops and the odd point */
     D1R_MAIN,       /* loop 1: eight pairs of output points */
     D1R_REM,        /* loop 2: one pair */
@@ -309,6 +315,20 @@ static const block blocks[N_BLOCKS] = {
     [PRONY_FILTER_STUB] = {"tfit_prony_filter", 0, 0, SAME("fother=1 branch=1")},
     [PRONY_TERM] = {"tfit_prony_filter", 1, 1,
                     SAME("alu=5 fload=5 fstore=3 fadd=6 fmul=6 branch=1")},
+    /* measured as the QEMU trace less the projection, the modes' loop and
+     * the static map's evaluator (resonant.h's three models); K = 0 (no
+     * test model) would skip the loop's set-up: not modelled */
+    [RESONANT_NODAL] = {"tfit_resonant_step", 0, 0,
+                       {"alu=104 load=21 store=13 ldm=3 ldm_pc=2 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=6 nbranch=8",
+                        "alu=104 load=21 store=13 ldm=3 ldm_pc=2 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=6 nbranch=8"}},
+    [RESONANT_ROWS] = {"tfit_resonant_step", 0, 0,
+                       {"alu=107 load=23 store=14 ldm=2 ldm_pc=3 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=7",
+                        "alu=107 load=23 store=14 ldm=2 ldm_pc=3 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=7"}},
+    [RESONANT_MODAL] = {"tfit_resonant_step", 0, 0,
+                       {"alu=102 load=19 store=13 ldm=3 ldm_pc=2 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=6",
+                        "alu=102 load=19 store=13 ldm=3 ldm_pc=2 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=6"}},
+    [RESONANT_MODE] = {"tfit_resonant_filter", 1, 1,
+                       SAME("alu=5 fload=13 fstore=6 fadd=12 fmul=15 branch=1")},
     [D1R_PATH] = {"tfit_degree1_rows_asm", 0, 0,
                   SAME("alu=12 load=2 ldm_pc=1 stm=1 words=8 fldm=2 fstm=1 fwords=27 nbranch=3")},
     [D1R_MAIN] = {"tfit_degree1_rows_asm", 1, 1,
@@ -597,6 +617,26 @@ static void cut_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
+/* One tick of a resonant model (tfit_resonant.c): the path outside the
+ * modes' loop for its static map's kind, the projection, K modes, then the
+ * static map's evaluator (or the rows of tfit_degree1_rows_asm at p = 1). */
+static void resonant_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const tf_model v = tf_stateful_static_view(m);
+    add_block(t, core, INPUT_PATH, 1);
+    add_loop(t, core, RESONANT_MODE, m->dims[2]);
+    if (v.family == TFIT_FAMILY_MODAL) {
+        add_block(t, core, RESONANT_MODAL, 1);
+        modal_mix(t, core, &v);
+    } else if (v.dims[0] != 1) {
+        add_block(t, core, RESONANT_NODAL, 1);
+        nodal_mix(t, core, &v);
+    } else {
+        add_block(t, core, RESONANT_ROWS, 1);
+        d1_loops(t, core, v.n_out, D1R_PATH, D1R_MAIN, D1R_REM);
+    }
+}
+
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
@@ -606,6 +646,10 @@ void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
     }
     if (m->family == TFIT_FAMILY_PRONY) {
         prony_mix(mix, core, m);
+        return;
+    }
+    if (m->family == TFIT_FAMILY_RESONANT) {
+        resonant_mix(mix, core, m);
         return;
     }
     const int contact = m->family == TFIT_FAMILY_CONTACT;

@@ -16,6 +16,7 @@
 #include "base/atomic_file.h"
 #include "emit/emit_budget.h"
 #include "emit/emit_prony.h"
+#include "emit/emit_resonant.h"
 #include "emit/emit_q31.h"
 #include "fitting/families/family.h"
 #include "model/golden.h"
@@ -174,6 +175,7 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
         tf_emit_budget_banner(f, &cost);
         tf_emit_q31_banner(f, m);
         tf_emit_prony_banner(f, m);
+        tf_emit_resonant_banner(f, m);
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
@@ -240,6 +242,7 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         tf_emit_budget_macros(f, &cost, prefix);
         tf_emit_q31_macros(f, m, prefix);
         tf_emit_prony_macros(f, m, prefix);
+        tf_emit_resonant_macros(f, m, prefix);
     }
     if (!isnan(m->heldout_max)) {
         const char *u = output_unit(m, 1);
@@ -296,6 +299,10 @@ static void write_coef(FILE *f, const tf_model *m, const char *site)
     if (m->family == TFIT_FAMILY_PRONY) {
         const tf_model v = tf_prony_static_view(m);
         tf_emit_prony_terms(f, m);
+        write_tables(f, &v, site);
+    } else if (m->family == TFIT_FAMILY_RESONANT) {
+        const tf_model v = tf_stateful_static_view(m);
+        tf_emit_resonant_modes(f, m);
         write_tables(f, &v, site);
     } else {
         write_tables(f, m, site);

@@ -45,12 +45,17 @@ void tf_emit_prony_macros(FILE *f, const tf_model *m, const char *p)
     if (m->family != TFIT_FAMILY_PRONY) {
         return;
     }
-    const uint32_t ns = m->dims[3];
     fprintf(f, "#define %s_TERMS %u\n", p, m->dims[2]);
     fprintf(f, "#define %s_STATE_WORDS %uu /* float state[]: tfit_prony_reset, _step */\n", p,
             TFIT_PRONY_STATE_WORDS(m->dims[2]));
-    fprintf(f, "#define %s_TICK_NS %uu /* the model's tick: call tfit_prony_step at %.9g Hz */\n",
-            p, ns, 1e9 / ns);
+    tf_emit_tick_macros(f, m, p, "tfit_prony_step");
+}
+
+void tf_emit_tick_macros(FILE *f, const tf_model *m, const char *p, const char *step)
+{
+    const uint32_t ns = m->dims[3];
+    fprintf(f, "#define %s_TICK_NS %uu /* the model's tick: call %s at %.9g Hz */\n", p, ns, step,
+            1e9 / ns);
     /* The firmware states its own tick as TFIT_TICK_NS or TFIT_TICK_US: a
      * model fitted for another one must not build (the discrete update is
      * exact for this period only). */

@@ -19,6 +19,11 @@ void tf_emit_prony_banner(FILE *f, const tf_model *m);
  * stop a firmware whose TFIT_TICK_NS or TFIT_TICK_US differs. */
 void tf_emit_prony_macros(FILE *f, const tf_model *m, const char *prefix);
 
+/* PREFIX_TICK_NS and the #error lines that stop a firmware whose
+ * TFIT_TICK_NS or TFIT_TICK_US differs from dims[3] (every stateful family;
+ * step names its step function in the comment). */
+void tf_emit_tick_macros(FILE *f, const tf_model *m, const char *prefix, const char *step);
+
 /* The term pairs {a_k, D_k} of the coefficient table, commented. */
 void tf_emit_prony_terms(FILE *f, const tf_model *m);
 

@@ -10,8 +10,9 @@
 
 #include "base/context.h"
 #include "base/rng.h"
+#include "model/oscillator.h"
 
-#define MAX_RAMPS 4
+#define MAX_RAMPS 8
 
 /* One history: ramps from one force to the next (cosine in time), held
  * between them; before the first ramp the force is zero. */
@@ -89,8 +90,80 @@ static void design_one(tf_rng *r, const tf_fitdata *d, double duration, int held
     add_ramp(h, t, tf_rng_range(r, 0.02, 0.5), zero);
 }
 
+/* One strike: up to level s over 1..4 ticks and straight back down over
+ * 1..4 ticks (a cosine pulse), starting at t. */
+static double strike(tf_rng *r, const tf_fitdata *d, double s, double t, double tick, history *h)
+{
+    double f[3];
+    const double zero[3] = {0, 0, 0};
+    const double up = tick * tf_rng_range(r, 1, 4), down = tick * tf_rng_range(r, 1, 4);
+    random_force(r, d, s, f);
+    add_ramp(h, t, up, f);
+    add_ramp(h, t + up, down, zero);
+    return t + up + down;
+}
+
+/* Dynamic histories for a body with inertia (the resonant family), forces
+ * at most TF_HIST_DYNAMIC_LEVEL of the radius so that the overshoot stays
+ * inside the envelope the static map is fitted on.  Training histories
+ * cycle through four kinds: a strike (a pulse of 2..8 ticks, then free
+ * ringing; sometimes a second one later), a press and release (up over
+ * 2..20 ticks, held, released over 1..10), a slow ramp up and down, and a
+ * smooth random force (cosine ramps between random levels over 3..60
+ * ticks).  Held-out histories alternate strikes and smooth random forces
+ * from another stream (other levels, directions and times). */
+static void design_dynamic(tf_rng *r, const tf_fitdata *d, double duration, double tick,
+                           size_t i, int heldout, history *h)
+{
+    const double top = TF_HIST_DYNAMIC_LEVEL, zero[3] = {0, 0, 0};
+    double f[3];
+    h->n = 0;
+    double t = tf_rng_range(r, 0.02, 0.1) * duration;
+    switch (heldout ? (i % 2 == 0 ? 0 : 3) : i % 4) {
+    case 0: /* strike */
+        t = strike(r, d, tf_rng_range(r, 0.3, 1.0) * top, t, tick, h);
+        if (tf_rng_below(r, 2) == 0) {
+            strike(r, d, tf_rng_range(r, 0.3, 1.0) * top, t + tf_rng_range(r, 0.3, 0.5) * duration,
+                   tick, h);
+        }
+        break;
+    case 1: { /* press and release */
+        const double up = tick * tf_rng_range(r, 2, 20);
+        random_force(r, d, tf_rng_range(r, 0.3, 1.0) * top, f);
+        add_ramp(h, t, up, f);
+        t += up + tf_rng_range(r, 0.1, 0.4) * duration;
+        add_ramp(h, t, tick * tf_rng_range(r, 1, 10), zero);
+        break;
+    }
+    case 2: { /* slow ramp up, hold, slow ramp down */
+        const double up = tf_rng_range(r, 0.1, 0.3) * duration;
+        random_force(r, d, tf_rng_range(r, 0.3, 1.0) * top, f);
+        add_ramp(h, t, up, f);
+        t += up + tf_rng_range(r, 0.05, 0.2) * duration;
+        add_ramp(h, t, tf_rng_range(r, 0.1, 0.3) * duration, zero);
+        break;
+    }
+    default: /* smooth random: ramps between random levels, ends at rest */
+        for (int j = 0; j < MAX_RAMPS - 1 && t < 0.8 * duration; ++j) {
+            const double dur = tick * tf_rng_range(r, 3, 60);
+            random_force(r, d, tf_rng_range(r, 0.1, 1.0) * top, f);
+            add_ramp(h, t, dur, f);
+            t += dur + tick * tf_rng_range(r, 0, 30);
+        }
+        add_ramp(h, t, tick * tf_rng_range(r, 3, 30), zero);
+        break;
+    }
+}
+
 tf_history_design *tf_history_design_new(const tf_fitdata *d, size_t n_train, size_t n_heldout,
                                          size_t n_ticks, double tick, uint64_t seed)
+{
+    return tf_history_design_kind(d, TF_HIST_PRESS, n_train, n_heldout, n_ticks, tick, seed);
+}
+
+tf_history_design *tf_history_design_kind(const tf_fitdata *d, tf_history_kind kind,
+                                          size_t n_train, size_t n_heldout, size_t n_ticks,
+                                          double tick, uint64_t seed)
 {
     tf_history_design *hd = malloc(sizeof *hd);
     if (hd == NULL) {
@@ -105,7 +178,12 @@ tf_history_design *tf_history_design_new(const tf_fitdata *d, size_t n_train, si
     tf_rng train = {seed}, held = {seed ^ 0x5eedf00dull};
     const double duration = (double)n_ticks * tick;
     for (size_t i = 0; i < hd->n; ++i) {
-        design_one(i < n_train ? &train : &held, d, duration, i >= n_train, &hd->h[i]);
+        tf_rng *r = i < n_train ? &train : &held;
+        if (kind == TF_HIST_DYNAMIC) {
+            design_dynamic(r, d, duration, tick, i, i >= n_train, &hd->h[i]);
+        } else {
+            design_one(r, d, duration, i >= n_train, &hd->h[i]);
+        }
     }
     return hd;
 }
@@ -216,13 +294,14 @@ static void creep_one(const tf_cases *c, const tf_creep *cr, const tf_history_de
     }
 }
 
-static int start(tf_histories *h, const tf_cases *c, uint32_t tick_ns, size_t n_train,
-                 size_t n_heldout, size_t n_ticks, uint64_t seed, tf_history_design **hd)
+static int start(tf_histories *h, const tf_cases *c, tf_history_kind kind, uint32_t tick_ns,
+                 size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
+                 tf_history_design **hd)
 {
     memset(h, 0, sizeof *h);
     h->tick_ns = tick_ns;
     h->tick = 1e-9 * tick_ns;
-    *hd = tf_history_design_new(&c->train, n_train, n_heldout, n_ticks, h->tick, seed);
+    *hd = tf_history_design_kind(&c->train, kind, n_train, n_heldout, n_ticks, h->tick, seed);
     if (*hd == NULL || alloc_set(&h->train, n_train, n_ticks, c->train.n_out) != 0 ||
         alloc_set(&h->heldout, n_heldout, n_ticks, c->train.n_out) != 0) {
         return -1;
@@ -241,7 +320,7 @@ int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t
         return -1;
     }
     tf_history_design *hd;
-    if (start(h, c, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
+    if (start(h, c, TF_HIST_PRESS, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
         tf_history_design_free(hd);
         tf_histories_free(h);
         snprintf(err, errlen, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
@@ -255,6 +334,66 @@ int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t
         creep_one(c, creep, hd, n_train + i, &h->heldout, i, h->tick);
     }
     tf_history_design_free(hd);
+    return 0;
+}
+
+/* One history of a linear body with the given modes, the force held over
+ * each tick (as tf_solver_history applies it): per force axis a, y_a =
+ * f_a + sum_k w_ka (x_ka - f_a), x_k the unit-gain oscillator's position,
+ * stepped exactly over the tick (the matrix exponential of the oscillator
+ * with the held force as a third, constant state; GSL via
+ * tf_resonant_transition on the deviation); u = base + sum_a unit_a y_a. */
+static void modes_one(const tf_cases *c, const tf_resonant_truth *tr, tf_history_set *s,
+                      size_t h, double tick)
+{
+    const size_t rows = 3 * (size_t)s->n_out;
+    double F[TF_RESONANT_TRUTH_MAX][4], x[TF_RESONANT_TRUTH_MAX][3] = {{0}},
+                                        v[TF_RESONANT_TRUTH_MAX][3] = {{0}};
+    for (int k = 0; k < tr->n; ++k) {
+        tf_resonant_transition(tr->omega[k] * tick, tr->zeta[k], F[k]);
+    }
+    for (size_t n = 0; n < s->n_ticks; ++n) {
+        const double *fn = tf_history_force(s, h, n);
+        double y[3];
+        for (int a = 0; a < 3; ++a) {
+            y[a] = fn[a];
+            for (int k = 0; k < tr->n; ++k) { /* deviation from the held force decays by F */
+                const double e1 = x[k][a] - fn[a], e2 = v[k][a];
+                x[k][a] = fn[a] + F[k][0] * e1 + F[k][1] * e2;
+                v[k][a] = F[k][2] * e1 + F[k][3] * e2;
+                y[a] += tr->w[k][a] * (x[k][a] - fn[a]);
+            }
+        }
+        double *u = s->u + (h * s->n_ticks + n) * rows;
+        for (size_t o = 0; o < rows; ++o) {
+            u[o] = c->base[o] + y[0] * c->unit[0][o] + y[1] * c->unit[1][o] + y[2] * c->unit[2][o];
+        }
+    }
+}
+
+int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth, uint32_t tick_ns,
+                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
+                              tf_histories *h, char *err, size_t errlen)
+{
+    if (!c->affine || c->base == NULL) {
+        snprintf(err, errlen, "linear modal histories need an affine solver's unit responses");
+        return -1;
+    }
+    tf_history_design *hd;
+    if (start(h, c, TF_HIST_DYNAMIC, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
+        tf_history_design_free(hd);
+        tf_histories_free(h);
+        snprintf(err, errlen, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
+                 n_ticks);
+        return -1;
+    }
+    tf_history_design_free(hd);
+    for (size_t i = 0; i < n_train; ++i) {
+        modes_one(c, truth, &h->train, i, h->tick);
+    }
+    for (size_t i = 0; i < n_heldout; ++i) {
+        modes_one(c, truth, &h->heldout, i, h->tick);
+    }
     return 0;
 }
 
@@ -332,15 +471,16 @@ static int solve_one(const tf_cases *c, const tf_history_design *hd, size_t whic
     return rc;
 }
 
-int tf_histories_solve(const tf_cases *c, uint32_t tick_ns, size_t solve_every, size_t n_train,
-                       size_t n_heldout, size_t n_ticks, uint64_t seed, tf_histories *h)
+int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns,
+                       size_t solve_every, size_t n_train, size_t n_heldout, size_t n_ticks,
+                       uint64_t seed, tf_histories *h)
 {
     tf_history_design *hd;
     if (solve_every < 1 || n_ticks < 2) {
         return tf_fail(c->solver->ctx, "histories: a solver step every %zu ticks of %zu",
                        solve_every, n_ticks);
     }
-    if (start(h, c, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
+    if (start(h, c, kind, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
         tf_history_design_free(hd);
         tf_histories_free(h);
         return tf_fail(c->solver->ctx, "out of memory for %zu histories", n_train + n_heldout);

@@ -81,6 +81,15 @@ static inline const double *tf_history_u(const tf_history_set *s, size_t h, size
  * tf_histories_force_at gives it at any time.  Returns 0, or -1 when out
  * of memory. */
 typedef struct tf_history_design tf_history_design;
+
+/* Which design: presses for creep (above), or dynamic histories for a body
+ * with inertia (strikes, press-release, ramps, smooth random forces up to
+ * TF_HIST_DYNAMIC_LEVEL of the radius; histories.c, docs/fitting.md §8). */
+typedef enum tf_history_kind { TF_HIST_PRESS = 0, TF_HIST_DYNAMIC = 1 } tf_history_kind;
+#define TF_HIST_DYNAMIC_LEVEL 0.5
+tf_history_design *tf_history_design_kind(const tf_fitdata *d, tf_history_kind kind,
+                                          size_t n_train, size_t n_heldout, size_t n_ticks,
+                                          double tick, uint64_t seed);
 tf_history_design *tf_history_design_new(const tf_fitdata *d, size_t n_train, size_t n_heldout,
                                          size_t n_ticks, double tick, uint64_t seed);
 void tf_history_design_free(tf_history_design *hd);
@@ -95,8 +104,24 @@ int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t
                               size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
                               tf_histories *h, char *err, size_t errlen);
 
-/* The same design solved by a time-dependent solver (tf_solver_history)
- * with a time step of solve_every ticks.  solve_every = 1: the force
+/* A linear body with damped modes (the resonant family's test substrate):
+ * the dynamic design, the force held over each tick, each force axis's
+ * response y_a = f_a + sum_k w_ka (x_ka - f_a) with x_k the unit-gain
+ * oscillator (omega_k, zeta_k) stepped exactly, then u = base + sum_a
+ * unit_a y_a (an affine solver's unit responses). */
+#define TF_RESONANT_TRUTH_MAX 8
+typedef struct tf_resonant_truth {
+    int n;
+    double omega[TF_RESONANT_TRUTH_MAX], zeta[TF_RESONANT_TRUTH_MAX];
+    double w[TF_RESONANT_TRUTH_MAX][3];
+} tf_resonant_truth;
+int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth, uint32_t tick_ns,
+                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
+                              tf_histories *h, char *err, size_t errlen);
+
+/* A design (kind: press-hold-release or dynamic) solved by a
+ * time-dependent solver (tf_solver_history) with a time step of
+ * solve_every ticks.  solve_every = 1: the force
  * sampled at every tick, each tick a solver step.  solve_every = m > 1:
  * the design sampled every m ticks, the force linear in between (so the
  * ticks' forces are piecewise linear, not the design's cosine ramps), and
@@ -104,8 +129,9 @@ int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t
  * linearly: m times fewer solves, at an error the caller must measure
  * (docs/fitting.md §7.6: block48_ve's).  Returns 0, or -1 with the message
  * in the solver's context. */
-int tf_histories_solve(const tf_cases *c, uint32_t tick_ns, size_t solve_every, size_t n_train,
-                       size_t n_heldout, size_t n_ticks, uint64_t seed, tf_histories *h);
+int tf_histories_solve(const tf_cases *c, tf_history_kind kind, uint32_t tick_ns,
+                       size_t solve_every, size_t n_train, size_t n_heldout, size_t n_ticks,
+                       uint64_t seed, tf_histories *h);
 
 /* The output rows (3 per output node, per tick) of n_ticks ticks from a
  * solver's history `full` (dofs per step) with a step every m ticks: at a

@@ -158,7 +158,9 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
         tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
                 "of %u us, a solver step every %zu ticks", plan->hist_train, plan->hist_heldout,
                 plan->hist_ticks, plan->tick_ns / 1000, plan->hist_solve_every);
-        if (tf_histories_solve(&o->cases, plan->tick_ns, plan->hist_solve_every,
+        const tf_history_kind kind =
+            plan->family == tf_family_find("resonant") ? TF_HIST_DYNAMIC : TF_HIST_PRESS;
+        if (tf_histories_solve(&o->cases, kind, plan->tick_ns, plan->hist_solve_every,
                                plan->hist_train, plan->hist_heldout, plan->hist_ticks,
                                plan->seed, &o->hist) != 0) {
             tf_cases_free(&o->cases);

@@ -227,11 +227,14 @@ int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
     if (out == NULL) {
         return -1;
     }
-    const int prony = m->family == TFIT_FAMILY_PRONY;
-    float st[TFIT_PRONY_MAX_STATE];
+    const int prony = tf_model_stateful(m); /* prony or resonant: ticks */
+    float st[TFIT_RESONANT_MAX_STATE];
+    const uint32_t words = m->family == TFIT_FAMILY_RESONANT
+                               ? TFIT_RESONANT_STATE_WORDS(m->dims[2])
+                               : TFIT_PRONY_STATE_WORDS(m->dims[2]);
     if (prony) {
         tf_golden_ticks(m, CHECK_SEED, in);
-        tf_ref_prony_reset(m, st);
+        tf_ref_stateful_reset(m, st);
     } else {
         tf_golden_inputs(m, CHECK_SEED, in);
     }
@@ -240,9 +243,9 @@ int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
         const float *x = in[prony ? check_pick_ticks[k] : check_pick[k]];
         memcpy(check + 3 * k, x, 3 * sizeof *check);
         if (prony) { /* the status, the new state, the outputs (tfit_check.c) */
-            tfit_status status = tf_ref_prony_step(m, st, x, out, NULL);
+            tfit_status status = tf_ref_stateful_step(m, st, x, out, NULL);
             crc = tf_crc32_u32(crc, (uint32_t)(int32_t)status);
-            for (uint32_t w = 0; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
+            for (uint32_t w = 0; w < words; ++w) {
                 uint32_t bits;
                 memcpy(&bits, &st[w], sizeof bits);
                 crc = tf_crc32_u32(crc, bits);
@@ -293,6 +296,5 @@ uint32_t tf_model_crc32_checked(const tf_model *m, const uint32_t check[TFIT_CHE
 
 size_t tf_golden_design(const tf_model *m, uint64_t seed, float in[][3])
 {
-    return m->family == TFIT_FAMILY_PRONY ? tf_golden_ticks(m, seed, in)
-                                          : tf_golden_inputs(m, seed, in);
+    return tf_model_stateful(m) ? tf_golden_ticks(m, seed, in) : tf_golden_inputs(m, seed, in);
 }

@@ -6,6 +6,8 @@
  */
 #include "model/model.h"
 
+#include "model/oscillator.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -54,6 +56,15 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
             return 0;
         }
         n += 2ull * dims[2];
+        n += dims[1] == 0 ? 3ull * n_out * tf_terms(dims[0])
+                          : (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
+        break;
+    case TFIT_FAMILY_RESONANT: /* {p, r, K, tick_ns}: K modes of 7, then as prony */
+        if (n_dims != TFIT_RESONANT_DIMS || dims[0] > TFIT_MAX_DEGREE ||
+            dims[1] > TFIT_MAX_RANK || dims[2] > TFIT_RESONANT_MAX_MODES || dims[3] == 0) {
+            return 0;
+        }
+        n += 7ull * dims[2];
         n += dims[1] == 0 ? 3ull * n_out * tf_terms(dims[0])
                           : (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
         break;
@@ -232,12 +243,16 @@ static int bound_fail(double b, const char *what, const tf_model *m, uint32_t in
 }
 
 static int validate_prony(const tf_model *m, char *err, size_t errlen);
+static int validate_resonant(const tf_model *m, char *err, size_t errlen);
 
 static int validate_ranges(const tf_model *m, char *err, size_t errlen)
 {
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
     if (m->family == TFIT_FAMILY_PRONY) {
         return validate_prony(m, err, errlen);
+    }
+    if (m->family == TFIT_FAMILY_RESONANT) {
+        return validate_resonant(m, err, errlen);
     }
     if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT ||
         m->family == TFIT_FAMILY_CUT) { /* a cut model: every knot's rows */
@@ -307,8 +322,13 @@ static int validate_ranges(const tf_model *m, char *err, size_t errlen)
 
 tf_model tf_prony_static_view(const tf_model *m)
 {
+    return tf_stateful_static_view(m);
+}
+
+tf_model tf_stateful_static_view(const tf_model *m)
+{
     tf_model v = *m;
-    const uint32_t skip = 2 * m->dims[2];
+    const uint32_t skip = (m->family == TFIT_FAMILY_RESONANT ? 7 : 2) * m->dims[2];
     v.family = m->dims[1] == 0 ? TFIT_FAMILY_NODAL : TFIT_FAMILY_MODAL;
     v.n_dims = m->dims[1] == 0 ? 1 : 2;
     v.coef = m->coef + skip; /* its tables at coef + 12, as the family's own */
@@ -333,6 +353,21 @@ static int validate_prony(const tf_model *m, char *err, size_t errlen)
         }
     }
     tf_model v = tf_prony_static_view(m);
+    return validate_ranges(&v, err, errlen);
+}
+
+/* Resonant modes: the device's magnitude limits (tfit_check.c), and the
+ * contraction of the rounded transition matrix that keeps the state finite
+ * (model/resonant.h); then the static map as its own family. */
+static int validate_resonant(const tf_model *m, char *err, size_t errlen)
+{
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        if (tf_resonant_floats_check(m->coef + TFIT_INPUT_MAP_FLOATS + 7 * k, m->name, k, err,
+                                     errlen) != 0) {
+            return 1;
+        }
+    }
+    tf_model v = tf_stateful_static_view(m);
     return validate_ranges(&v, err, errlen);
 }
 
@@ -394,6 +429,15 @@ static uint64_t series_add(uint32_t n)
 
 tf_opcount tf_model_ops(const tf_model *m)
 {
+    if (m->family == TFIT_FAMILY_RESONANT) {
+        /* the filter (§5.8): 3 differences, then per mode and axis 5 mul
+         * and 4 add; then the static map */
+        tf_model v = tf_stateful_static_view(m);
+        tf_opcount ops = tf_model_ops(&v);
+        ops.add += 3 + 12ull * m->dims[2];
+        ops.mul += 15ull * m->dims[2];
+        return ops;
+    }
     if (m->family == TFIT_FAMILY_PRONY) {
         /* the filter (§5.6): 3 differences, then per term 6 mul and 3 add
          * for the state and 3 subtractions for h; then the static map */

@@ -90,5 +90,13 @@ uint32_t tf_model_table_bytes(const tf_model *m);
  * tables (coef points 2K floats further, so that its tables start at
  * coef + 12 as that family's do; not an owner: never free it). */
 tf_model tf_prony_static_view(const tf_model *m);
+/* The same for either stateful family (prony, resonant). */
+tf_model tf_stateful_static_view(const tf_model *m);
+/* 1 for a stateful family (prony, resonant: a tick sequence, caller-owned
+ * state), else 0. */
+static inline int tf_model_stateful(const tf_model *m)
+{
+    return m->family == TFIT_FAMILY_PRONY || m->family == TFIT_FAMILY_RESONANT;
+}
 
 #endif /* TF_MODEL_H */

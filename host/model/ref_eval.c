@@ -327,6 +327,74 @@ static void prony_filter(arith *c, const tf_model *m, const float g[3], int bad,
     }
 }
 
+/* The resonant filter (§5.8, tfit_resonant.c): per mode k and axis i
+ * e1 = s - d_i, s' = (f11 e1) + (f12 v), v' = (f21 e1) + (f22 v),
+ * h_i = h_i + w_ki s'; the state becomes {g, s', v'} unless the input was
+ * bad. */
+static void resonant_filter(arith *c, const tf_model *m, const float g[3], int bad, float *state,
+                            float h[3])
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const uint32_t words = TFIT_RESONANT_STATE_WORDS(m->dims[2]);
+    float next[TFIT_RESONANT_MAX_STATE], d[3];
+    for (int i = 0; i < 3; ++i) {
+        d[i] = f_sub(c, g[i], state[i]);
+        h[i] = g[i];
+        next[i] = g[i];
+    }
+    for (uint32_t k = 0; k < m->dims[2]; ++k, pt += 7) {
+        const float *q = state + 3 + 6 * k;
+        float *qn = next + 3 + 6 * k;
+        for (int i = 0; i < 3; ++i) {
+            const float e1 = f_sub(c, q[i], d[i]);
+            qn[i] = f_add(c, f_mul(c, pt[0], e1), f_mul(c, pt[1], q[3 + i]));
+            qn[3 + i] = f_add(c, f_mul(c, pt[2], e1), f_mul(c, pt[3], q[3 + i]));
+            h[i] = f_add(c, h[i], f_mul(c, pt[4 + i], qn[i]));
+        }
+    }
+    for (int i = 0; i < 3; ++i) {
+        h[i] = clamp_unit(h[i]);
+    }
+    if (!bad) {
+        memcpy(state, next, words * sizeof *state);
+    }
+}
+
+void tf_ref_stateful_reset(const tf_model *m, float *state)
+{
+    const float zero[3] = {0, 0, 0};
+    int clamped, bad;
+    const uint32_t words = m->family == TFIT_FAMILY_RESONANT
+                               ? TFIT_RESONANT_STATE_WORDS(m->dims[2])
+                               : TFIT_PRONY_STATE_WORDS(m->dims[2]);
+    tf_ref_input(m, zero, state, &clamped, &bad, NULL);
+    for (uint32_t w = 3; w < words; ++w) {
+        state[w] = 0.0f;
+    }
+}
+
+tfit_status tf_ref_stateful_step(const tf_model *m, float *state, const float in[3], float *out,
+                                 tf_opcount *ops)
+{
+    if (m->family == TFIT_FAMILY_PRONY) {
+        return tf_ref_prony_step(m, state, in, out, ops);
+    }
+    arith c = {{0, 0, 0}};
+    float g[3], h[3];
+    int clamped, bad;
+    input_map(&c, m, in, g, &clamped, &bad);
+    resonant_filter(&c, m, g, bad, state, h);
+    tf_model v = tf_stateful_static_view(m);
+    eval_family(&c, &v, h, out);
+    if (bad) {
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+            out[o] = 0.0f;
+        }
+    }
+    add_ops(ops, &c);
+    return bad ? TFIT_ERR_INPUT : (clamped ? TFIT_CLAMPED : TFIT_OK);
+}
+
 void tf_ref_prony_reset(const tf_model *m, float *state)
 {
     const float zero[3] = {0, 0, 0};
@@ -361,12 +429,12 @@ tfit_status tf_ref_eval(const tf_model *m, const float in[3], float *out, tf_opc
     if (m->family == TFIT_FAMILY_CUT) { /* the scene's cuts in full, as its other cases */
         return tf_ref_eval_cut(m, in, 1.0f, out, ops);
     }
-    if (m->family == TFIT_FAMILY_PRONY) { /* relaxed: the force held for ever */
-        float state[TFIT_PRONY_MAX_STATE];
+    if (tf_model_stateful(m)) { /* relaxed: the force held for ever */
+        float state[TFIT_RESONANT_MAX_STATE];
         int clamped, bad;
-        tf_ref_prony_reset(m, state);
-        tf_ref_input(m, in, state, &clamped, &bad, NULL); /* gp = g: no increment, e_k = 0 */
-        return tf_ref_prony_step(m, state, in, out, ops);
+        tf_ref_stateful_reset(m, state);
+        tf_ref_input(m, in, state, &clamped, &bad, NULL); /* gp = g: no increment, at rest */
+        return tf_ref_stateful_step(m, state, in, out, ops);
     }
     arith c = {{0, 0, 0}};
     float g[3];
@@ -428,14 +496,14 @@ void tf_ref_run(const tf_model *m, const float (*in)[3], size_t n, int32_t *stat
         }
         return;
     }
-    float state[TFIT_PRONY_MAX_STATE];
+    float state[TFIT_RESONANT_MAX_STATE];
     const size_t n_out = 3 * (size_t)m->n_out;
-    if (m->family == TFIT_FAMILY_PRONY) {
-        tf_ref_prony_reset(m, state);
+    if (tf_model_stateful(m)) {
+        tf_ref_stateful_reset(m, state);
     }
     for (size_t v = 0; v < n; ++v) {
-        status[v] = (int32_t)(m->family == TFIT_FAMILY_PRONY
-                                  ? tf_ref_prony_step(m, state, in[v], out + v * n_out, NULL)
+        status[v] = (int32_t)(tf_model_stateful(m)
+                                  ? tf_ref_stateful_step(m, state, in[v], out + v * n_out, NULL)
                                   : tf_ref_eval(m, in[v], out + v * n_out, NULL));
     }
 }

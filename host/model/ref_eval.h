@@ -33,6 +33,13 @@ void tf_ref_prony_reset(const tf_model *m, float *state);
 tfit_status tf_ref_prony_step(const tf_model *m, float *state, const float in[3], float *out,
                               tf_opcount *ops);
 
+/* The same for either stateful family (prony, resonant: §5.8, as
+ * tfit_resonant_reset and tfit_resonant_step); state of
+ * TFIT_RESONANT_MAX_STATE floats at most. */
+void tf_ref_stateful_reset(const tf_model *m, float *state);
+tfit_status tf_ref_stateful_step(const tf_model *m, float *state, const float in[3], float *out,
+                                 tf_opcount *ops);
+
 /* Statuses and outputs (n x 3 n_out) of n inputs as the golden vectors
  * define them: each on its own, or for a prony model one tick sequence from
  * a reset state (tfit_golden_run). */

@@ -13,6 +13,7 @@
 #include "base/atomic_file.h"
 #include "cost/cycles.h"
 #include "base/plot.h"
+#include "report/history_report.h"
 
 static const char *const axis_name = "xyz";
 
@@ -383,5 +384,16 @@ int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
         return -1;
     }
     write_md(md.fp, name, header, s, solver, plan, o);
+    const tf_family_result *em = tf_fit_result_of(o, plan->family);
+    if (o->has_hist && em != NULL && em->model != NULL && tf_model_stateful(em->model)) {
+        char png[512];
+        snprintf(png, sizeof png, "%s_history.png", name);
+        snprintf(path, sizeof path, "%s/%s", dir, png);
+        if (tf_report_histories(md.fp, path, png, em->model, &o->hist,
+                                em->model->family == TFIT_FAMILY_RESONANT, err, errlen) != 0) {
+            tf_afile_abort(&md);
+            return -1;
+        }
+    }
     return tf_afile_commit(&md, err, errlen);
 }

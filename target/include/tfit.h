@@ -64,6 +64,7 @@ extern "C" {
 #endif
 #define TFIT_ZHOU_MAX_ORDER 8 /* x or y order of a zhou2017 surface */
 #define TFIT_PRONY_MAX_TERMS 8 /* exponential terms of a prony model */
+#define TFIT_RESONANT_MAX_MODES 8 /* damped modes of a resonant model */
 
 /* Number of floats at the start of every coefficient table that map the
  * raw input onto the unit ball: centre x0[3], then W[3][3] row-major. */
@@ -77,12 +78,20 @@ extern "C" {
 #define TFIT_PRONY_DIMS 4    /* { p, r (0: nodal rows), K terms, tick period in ns } */
 #define TFIT_CUT_DIMS 2      /* { p, K intervals in s } */
 #define TFIT_CUT_MAX_INTERVALS 64
+#define TFIT_RESONANT_DIMS 4 /* { p, r (0: nodal rows), K modes, tick period in ns } */
 
 /* Words of a prony model's caller-owned state: the previous projected
  * input (3), then 3 per term (docs/header-format.md §5.6).  A generated
  * header gives its model's as TFIT_NAME_STATE_WORDS. */
 #define TFIT_PRONY_STATE_WORDS(terms) (3u + 3u * (uint32_t)(terms))
 #define TFIT_PRONY_MAX_STATE TFIT_PRONY_STATE_WORDS(TFIT_PRONY_MAX_TERMS)
+
+/* Words of a resonant model's caller-owned state: the previous projected
+ * input (3), then 6 per mode (a position and a velocity per axis;
+ * docs/header-format.md §5.8).  A generated header gives its model's as
+ * TFIT_NAME_STATE_WORDS. */
+#define TFIT_RESONANT_STATE_WORDS(modes) (3u + 6u * (uint32_t)(modes))
+#define TFIT_RESONANT_MAX_STATE TFIT_RESONANT_STATE_WORDS(TFIT_RESONANT_MAX_MODES)
 
 /* Return status.  Negative values are errors; positive values are
  * successful evaluations carrying a flag. */
@@ -108,8 +117,11 @@ typedef enum tfit_family {
     TFIT_FAMILY_CONTACT = 4,  /* contact displacement -> contact force (one output point) */
     TFIT_FAMILY_PRONY = 5,    /* stateful: a nodal or modal map of the input filtered by
                                * exponential (Prony) terms, one step per tick */
-    TFIT_FAMILY_CUT = 6       /* forward with the cut progress s as a fourth input: nodal
+    TFIT_FAMILY_CUT = 6,      /* forward with the cut progress s as a fourth input: nodal
                                * tables at the knots s_k = k / K, linear in s between them */
+    TFIT_FAMILY_RESONANT = 7  /* stateful: a nodal or modal map of the input filtered by
+                               * damped second-order modes (inertia), one step per tick
+                               * (the last id: range checks use it) */
 } tfit_family;
 
 /* A model's self-test (docs/header-format.md §8): TFIT_CHECK_INPUTS inputs
@@ -204,6 +216,18 @@ tfit_status tfit_prony_step(const tfit_model *m, float *state, const float force
  * family (tfit_displacements refuses a cut model the same way). */
 tfit_status tfit_displacements_cut(const tfit_model *m, const float force[3], float s, float *out);
 
+/* Resonant models (TFIT_FAMILY_RESONANT): a body with inertia under force
+ * control (a strike rings, then settles at the static response).  The same
+ * contract as the prony functions above: caller-owned state of
+ * TFIT_NAME_STATE_WORDS floats, one call per tick of TFIT_NAME_TICK_NS,
+ * reset = at rest under zero force for all past time, TFIT_ERR_INPUT for a
+ * NaN/Inf force (outputs +0.0f, state unchanged bit for bit), the same
+ * instructions for every input and state, and no NaN or Inf output or
+ * state word for any force sequence once tfit_model_check() passed. */
+tfit_status tfit_resonant_reset(const tfit_model *m, float *state);
+tfit_status tfit_resonant_step(const tfit_model *m, float *state, const float force[3],
+                               float *out);
+
 /* Golden vectors: inputs and the exact output bits the host computed for a
  * model, emitted beside each generated header as NAME_golden.h.  Running
  * them on the device proves that the compiler, flags and FPU configuration
@@ -220,7 +244,7 @@ typedef struct tfit_golden {
  * the number of mismatching words (statuses plus output bits): 0 means
  * bit-exact.  A cut model's vector v is evaluated at the cut progress
  * s = TFIT_CUT_GOLDEN_S_BITS[v mod 16] (docs/header-format.md §7).  A
- * prony model's vectors are one tick sequence, stepped in
+ * prony or resonant model's vectors are one tick sequence, stepped in
  * order from a reset state (the state lives on this function's stack).
  * Returns UINT32_MAX for NULL arguments. */
 uint32_t tfit_golden_run(const tfit_golden *g, float *scratch);

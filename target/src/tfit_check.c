@@ -177,6 +177,34 @@ static int cut_ok(const tfit_model *m)
     return nodal_ok(&v);
 }
 
+/* Resonant modes: |f_ij| <= 1 and |w| <= 2^10.  The bound that keeps the
+ * state finite is the host's: it refuses a model whose rounded F has a
+ * spectral norm above 1 - 2^-20 (model/resonant.c), so the deviation
+ * (s - d, v) shrinks every tick and |s|, |v| stay below about 2^22 (|d| <= 2
+ * each tick over the contraction's margin 2^-20, plus rounding); the CRC
+ * makes the table the host's.  Here the magnitudes are checked again (a
+ * table within them cannot overflow in one tick), and h is clamped before
+ * the static map. */
+static int resonant_ok(const tfit_model *m)
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0u; k < m->dims[2]; ++k, pt += 7) {
+        for (uint32_t i = 0u; i < 4u; ++i) {
+            if (!within(fabs_(pt[i]), 1.0f)) {
+                return 0;
+            }
+        }
+        for (uint32_t i = 4u; i < 7u; ++i) {
+            if (!within(fabs_(pt[i]), 0x1p10f)) {
+                return 0;
+            }
+        }
+    }
+    tfit_model v;
+    tfit_resonant_static(m, &v);
+    return v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v);
+}
+
 static int range_ok(const tfit_model *m)
 {
     if (!map_ok(m->coef)) {
@@ -187,6 +215,8 @@ static int range_ok(const tfit_model *m)
         return prony_ok(m);
     case TFIT_FAMILY_CUT:
         return cut_ok(m);
+    case TFIT_FAMILY_RESONANT:
+        return resonant_ok(m);
     case TFIT_FAMILY_MODAL:
         return modal_ok(m);
     case TFIT_FAMILY_ZHOU2017:
@@ -267,9 +297,11 @@ static uint32_t far_input(uint32_t state, float in[3])
  * s_k = k / 4 - 1/4 (both ends clamped). */
 static tfit_status self_test(const tfit_model *m)
 {
-    float in[3], g[3], h[3], out[3], st[TFIT_PRONY_MAX_STATE];
+    float in[3], g[3], h[3], out[3], st[TFIT_RESONANT_MAX_STATE];
     uint32_t bad, crc = 0xffffffffu;
     const int prony = m->family == TFIT_FAMILY_PRONY;
+    const int resonant = m->family == TFIT_FAMILY_RESONANT;
+    uint32_t state_words = 0u;
     const int cut = m->family == TFIT_FAMILY_CUT;
     float phi[TFIT_MAX_TERMS], sw = 0.0f;
     uint32_t knot = 0u;
@@ -279,6 +311,12 @@ static tfit_status self_test(const tfit_model *m)
         (void)tfit_prony_reset(m, st);
         tfit_prony_static(m, &static_map);
         eval = &static_map;
+        state_words = TFIT_PRONY_STATE_WORDS(m->dims[2]);
+    } else if (resonant) {
+        (void)tfit_resonant_reset(m, st);
+        tfit_resonant_static(m, &static_map);
+        eval = &static_map;
+        state_words = TFIT_RESONANT_STATE_WORDS(m->dims[2]);
     }
     for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_INPUTS; ++k) {
         for (uint32_t i = 0u; i < 3u; ++i) {
@@ -291,9 +329,13 @@ static tfit_status self_test(const tfit_model *m)
             tfit_basis(m->dims[0], g, phi);
         }
         crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u)); /* the status */
-        if (prony) { /* the new state, then the static map at h */
-            tfit_prony_filter(m, g, ~bad, st, h);
-            for (uint32_t w = 0u; w < TFIT_PRONY_STATE_WORDS(m->dims[2]); ++w) {
+        if (prony | resonant) { /* the new state, then the static map at h */
+            if (prony) {
+                tfit_prony_filter(m, g, ~bad, st, h);
+            } else {
+                tfit_resonant_filter(m, g, ~bad, st, h);
+            }
+            for (uint32_t w = 0u; w < state_words; ++w) {
                 crc = tfit_crc32_word(crc, tfit_bits(st[w]));
             }
             g[0] = h[0];
@@ -335,7 +377,7 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_CUT) {
+    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_RESONANT) {
         return TFIT_ERR_FAMILY;
     }
     /* Sizes before the CRC: the CRC reads n_coef floats. */

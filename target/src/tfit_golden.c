@@ -15,9 +15,11 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
     const uint32_t n = 3u * m->n_out;
     static const uint32_t cut_s[16] = TFIT_CUT_GOLDEN_S_BITS;
     uint32_t mismatches = 0u;
-    float state[TFIT_PRONY_MAX_STATE]; /* a prony model's: one tick sequence */
+    float state[TFIT_RESONANT_MAX_STATE]; /* a stateful model's: one tick sequence */
     if (m->family == TFIT_FAMILY_PRONY) {
         (void)tfit_prony_reset(m, state);
+    } else if (m->family == TFIT_FAMILY_RESONANT) {
+        (void)tfit_resonant_reset(m, state);
     }
 
     for (uint32_t v = 0u; v < gv->n_vec; ++v) {
@@ -30,6 +32,8 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
             s = tfit_prony_step(m, state, x, scratch);
         } else if (m->family == TFIT_FAMILY_CUT) {
             s = tfit_displacements_cut(m, x, tfit_float(cut_s[v & 15u]), scratch);
+        } else if (m->family == TFIT_FAMILY_RESONANT) {
+            s = tfit_resonant_step(m, state, x, scratch);
         } else if (m->family == TFIT_FAMILY_CONTACT) {
             s = tfit_contact_force(m, x, scratch);
         } else {

@@ -216,6 +216,36 @@ uint32_t tfit_cut_progress(float s, uint32_t intervals, uint32_t *knot, float *w
 void tfit_cut_rows(const tfit_model *m, const float *phi, uint32_t knot, float w, uint32_t first,
                    uint32_t count, uint32_t keep, float *out);
 
+/* h clamped to [-1, 1] (beyond it, +-1 with h's sign) by a bitwise
+ * selection: the stateful families' input to their static map. */
+static inline float tfit_clamp_unit(float h)
+{
+    const uint32_t b = tfit_bits(h);
+    const uint32_t over = tfit_mask((b & 0x7fffffffu) > 0x3f800000u);
+    return tfit_float((b & ~over) | (((b & 0x80000000u) | 0x3f800000u) & over));
+}
+
+/* a when the mask is all ones, else b, for pointers (no branch): a stateful
+ * family writes its new state into the caller's state or a scratch copy. */
+static inline float *tfit_select_ptr(uint32_t mask, float *a, float *b)
+{
+    const uintptr_t m = (uintptr_t)0 - (uintptr_t)(mask & 1u);
+    return (float *)(((uintptr_t)a & m) | ((uintptr_t)b & ~m));
+}
+
+/* The static map of a stateful model (prony, resonant) whose own terms
+ * take `skip` floats after the input map, as a nodal (dims[1] = 0) or modal
+ * model *v (tfit_stateful.c); and its evaluation at h, outputs and-ed with
+ * keep (the degree-1 assembly for p = 1 nodal maps on Armv7E-M). */
+void tfit_stateful_static(const tfit_model *m, uint32_t skip, tfit_model *v);
+void tfit_stateful_eval(const tfit_model *v, const float h[3], uint32_t keep, float *out);
+
+/* The resonant family's filter (tfit_resonant.c, header-format.md §5.8),
+ * as tfit_prony_filter; and its static map. */
+void tfit_resonant_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
+                          float h[3]);
+void tfit_resonant_static(const tfit_model *m, tfit_model *v);
+
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
 

@@ -69,6 +69,21 @@ static uint32_t cut_coefs(const tfit_model *m)
     return n > 0xffffffffu ? 0u : (uint32_t)n;
 }
 
+/* {p, r, K, tick_ns}: K modes of 7 floats after the input map, then the
+ * static map as for prony. */
+static uint32_t resonant_coefs(const tfit_model *m)
+{
+    const uint32_t *dm = m->dims;
+    const uint32_t p = dm[0], r = dm[1], modes = dm[2];
+    if (p > TFIT_MAX_DEGREE || r > TFIT_MAX_RANK || modes > TFIT_RESONANT_MAX_MODES ||
+        dm[3] == 0u) {
+        return 0u;
+    }
+    const uint32_t table = r == 0u ? 3u * m->n_out * TFIT_TERMS(p)
+                                   : r * TFIT_TERMS(p) + 3u * m->n_out * r;
+    return TFIT_INPUT_MAP_FLOATS + 7u * modes + table;
+}
+
 uint32_t tfit_expected_coefs(const tfit_model *m)
 {
     if (m->n_out == 0u || m->n_out > TFIT_MAX_OUT) {
@@ -87,6 +102,8 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
         return m->n_dims == TFIT_PRONY_DIMS ? prony_coefs(m) : 0u;
     case TFIT_FAMILY_CUT:
         return m->n_dims == TFIT_CUT_DIMS ? cut_coefs(m) : 0u;
+    case TFIT_FAMILY_RESONANT:
+        return m->n_dims == TFIT_RESONANT_DIMS ? resonant_coefs(m) : 0u;
     default:
         return 0u;
     }

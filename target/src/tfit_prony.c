@@ -31,30 +31,11 @@
  */
 #include "tfit_internal.h"
 
-#define ABS_MASK 0x7fffffffu
-#define SIGN_MASK 0x80000000u
-#define BITS_ONE 0x3f800000u
-
-/* h clamped to [-1, 1]: beyond it, +-1 with h's sign. */
-static inline float clamp_unit(float h)
-{
-    const uint32_t b = tfit_bits(h);
-    const uint32_t over = tfit_mask((b & ABS_MASK) > BITS_ONE);
-    return tfit_float((b & ~over) | (((b & SIGN_MASK) | BITS_ONE) & over));
-}
-
-/* a when the mask is all ones, else b, for pointers (no branch). */
-static inline float *select_ptr(uint32_t mask, float *a, float *b)
-{
-    const uintptr_t m = (uintptr_t)0 - (uintptr_t)(mask & 1u);
-    return (float *)(((uintptr_t)a & m) | ((uintptr_t)b & ~m));
-}
-
 void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
                        float h[3])
 {
     float scratch[TFIT_PRONY_MAX_STATE];
-    float *dst = select_ptr(keep, state, scratch);
+    float *dst = tfit_select_ptr(keep, state, scratch);
     const uint32_t terms = m->dims[2];
     const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
     const float d0 = g[0] - state[0], d1 = g[1] - state[1], d2 = g[2] - state[2];
@@ -80,9 +61,9 @@ void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, flo
     dst[0] = g[0];
     dst[1] = g[1];
     dst[2] = g[2];
-    h[0] = clamp_unit(h0);
-    h[1] = clamp_unit(h1);
-    h[2] = clamp_unit(h2);
+    h[0] = tfit_clamp_unit(h0);
+    h[1] = tfit_clamp_unit(h1);
+    h[2] = tfit_clamp_unit(h2);
 }
 
 void tfit_prony_static(const tfit_model *m, tfit_model *v)

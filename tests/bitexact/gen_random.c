@@ -176,6 +176,48 @@ static tf_model *cut(uint64_t seed, const char *name, uint32_t p)
 
 #define HEADER_MODELS 14
 
+/* A small resonant model: static map nodal of degree p (p = 1: the
+ * degree-1 rows), or modal, with at least `modes` modes, from its own
+ * sequence. */
+static tf_model *resonant(uint64_t seed, const char *name, int modal, uint32_t p, uint32_t modes)
+{
+    tf_rng r = {seed ^ (0x7e50u + 16u * (uint32_t)modal + p)};
+    for (int tries = 0; tries < 10000; ++tries) {
+        tf_model *m = tf_random_model(&r, name, TFIT_FAMILY_RESONANT, 1);
+        if (m == NULL || ((m->dims[1] > 0) == modal && m->dims[2] >= modes &&
+                          (modal || p == 0 || m->dims[0] == p))) {
+            return m;
+        }
+        tf_model_free(m);
+    }
+    return NULL;
+}
+
+/* The resonant test header: three models (nodal p = 1, nodal any p, modal),
+ * apart from families.h so that its models and the cycle model's
+ * headers stay as they are. */
+static int header_resonant(uint64_t seed, const char *path)
+{
+    tf_model *models[3] = {resonant(seed, "resonant_a", 0, 1, 1),
+                           resonant(seed, "resonant_b", 0, 3, 2),
+                           resonant(seed, "resonant_c", 1, 0, 3)};
+    char err[512];
+    int rc = 1;
+    if (models[0] != NULL && models[1] != NULL && models[2] != NULL) {
+        const tf_emit_info info = {.source = "random resonant test models "
+                                             "(tests/bitexact/gen_random.c)",
+                                   .golden_seed = seed};
+        rc = tf_emit_header(path, models, 3, &info, err, sizeof err);
+        if (rc != 0) {
+            fprintf(stderr, "gen_random: %s\n", err);
+        }
+    }
+    for (int i = 0; i < 3; ++i) {
+        tf_model_free(models[i]);
+    }
+    return rc != 0;
+}
+
 static int header(uint64_t seed, const char *path)
 {
     static const char *const names[] = {"nodal_a", "nodal_b", "modal_a", "modal_b",
@@ -251,13 +293,16 @@ int main(int argc, char **argv)
     if (argc == 5 && strcmp(argv[1], "bundle") == 0) {
         return bundle(strtol(argv[2], NULL, 10), strtoull(argv[3], NULL, 10), argv[4]);
     }
+    if (argc == 4 && strcmp(argv[1], "header-resonant") == 0) {
+        return header_resonant(strtoull(argv[2], NULL, 10), argv[3]);
+    }
     if (argc == 4 && strcmp(argv[1], "header") == 0) {
         return header(strtoull(argv[2], NULL, 10), argv[3]);
     }
     if (argc == 4 && strcmp(argv[1], "modal-ranks") == 0) {
         return modal_ranks(strtoull(argv[2], NULL, 10), argv[3]);
     }
-    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header SEED FILE.h | "
+    fprintf(stderr, "usage: gen_random bundle N SEED FILE | gen_random header[-resonant] SEED FILE.h | "
                     "gen_random modal-ranks SEED FILE.h\n");
     return 2;
 }

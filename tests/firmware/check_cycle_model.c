@@ -89,7 +89,8 @@ static tf_model *shape_of(const char *name)
     }
     tfit_family family = (tfit_family)atoi(fam);
     uint32_t dims[TFIT_ZHOU2017_DIMS] = {0}, n_dims = 1;
-    if (family == TFIT_FAMILY_PRONY) { /* "p=1 K=2 tick=1000000ns", " r=3" after p if modal */
+    if (family == TFIT_FAMILY_PRONY || family == TFIT_FAMILY_RESONANT) {
+        /* "p=1 K=2 tick=1000000ns", " r=3" after p if modal */
         n_dims = TFIT_PRONY_DIMS;
         if (sscanf(ord, "\"p=%u r=%u K=%u tick=%uns\"", &dims[0], &dims[1], &dims[2],
                    &dims[3]) != 4 &&

@@ -13,8 +13,9 @@
  * the next block executed starts at the instruction after it (nbranch).
  *
  * An evaluation starts when a block at the entry of tfit_displacements,
- * tfit_displacements_cut, tfit_contact_force, tfit_prony_step (a prony
- * model's tick; its reset is not counted) or the _q31 forms executes and ends when control is
+ * tfit_displacements_cut, tfit_contact_force, tfit_prony_step,
+ * tfit_resonant_step (a stateful model's tick; its reset is not counted)
+ * or the _q31 forms executes and ends when control is
  * back in tfit_golden_run*; a golden set starts with its tfit_model_check*
  * call (qemu_golden.c).  Output, one line per set:
  *   set S: N calls, identical|DIFFERENT, mix: alu=... (of the first call)
@@ -154,7 +155,8 @@ static int is_entry(unsigned long pc)
     for (int i = 0; i < n_funcs; ++i) {
         if (func_addr[i] == pc) {
             return strcmp(f, "tfit_displacements") == 0 || strcmp(f, "tfit_contact_force") == 0 ||
-                   strcmp(f, "tfit_prony_step") == 0 || strcmp(f, "tfit_displacements_cut") == 0 ||
+                   strcmp(f, "tfit_prony_step") == 0 || strcmp(f, "tfit_resonant_step") == 0 ||
+                   strcmp(f, "tfit_displacements_cut") == 0 ||
                    strcmp(f, "tfit_displacements_q31") == 0 ||
                    strcmp(f, "tfit_contact_force_q31") == 0;
         }

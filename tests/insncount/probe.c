@@ -2,11 +2,11 @@
  * probe.c — evaluates every golden vector of every model of families.h once,
  * float and Q31 forms, under callgrind, dumping the instruction count of
  * each evaluation (CALLGRIND_DUMP_STATS_AT) so that run.sh can compare
- * them: the count must not depend on the input.  A prony model's golden
+ * them: the count must not depend on the input.  A prony or resonant model's golden
  * vectors are one tick sequence: each tick is one evaluation, stepped from
  * a reset state, so the count must depend on neither the input nor the
- * state.  Q31 sets are numbered from 20 and their family ids shifted by 5
- * (6 nodal, 9 contact).
+ * state.  Q31 sets are numbered from 20 and their family ids shifted by 10
+ * (11 nodal, 14 contact; 6 is the resonant family).
  *
  * families.h by default; another header with -DGOLDEN_H, -DGOLDEN_SETS,
  * -DGOLDEN_Q31_SETS and its -DTFIT_NAME_IMPLEMENTATION (tests/prony.mk runs
@@ -42,9 +42,11 @@ int main(void)
     for (size_t s = 0; s < sizeof sets / sizeof sets[0]; ++s) {
         const tfit_model *m = sets[s]->model;
         float *out = malloc(3 * m->n_out * sizeof *out);
-        float state[TFIT_PRONY_MAX_STATE];
+        float state[TFIT_RESONANT_MAX_STATE];
         if (m->family == TFIT_FAMILY_PRONY) {
             tfit_prony_reset(m, state);
+        } else if (m->family == TFIT_FAMILY_RESONANT) {
+            tfit_resonant_reset(m, state);
         }
         for (uint32_t v = 0; v < sets[s]->n_vec; ++v) {
             float x[3];
@@ -54,6 +56,8 @@ int main(void)
             CALLGRIND_ZERO_STATS;
             if (m->family == TFIT_FAMILY_PRONY) {
                 st = tfit_prony_step(m, state, x, out);
+            } else if (m->family == TFIT_FAMILY_RESONANT) {
+                st = tfit_resonant_step(m, state, x, out);
             } else if (m->family == TFIT_FAMILY_CONTACT) {
                 st = tfit_contact_force(m, x, out);
             } else {
@@ -76,7 +80,7 @@ int main(void)
             tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
                                                               : tfit_displacements_q31(m, x, out);
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", 20 + s,
-                     m->family + 5, v, (int)st);
+                     m->family + 10, v, (int)st);
             CALLGRIND_DUMP_STATS_AT(label);
         }
         free(out);

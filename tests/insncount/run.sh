@@ -2,7 +2,8 @@
 # run.sh PROBE OUTDIR — runs the probe under callgrind, one dump per
 # evaluation, and checks that every model executes the same number of
 # instructions for every input (in-envelope, beyond it, subnormal, NaN, Inf),
-# and a prony model for every tick of its sequence, whatever the state.
+# and a prony or resonant model for every tick of its sequence, whatever
+# the state.
 # Prints a table per model; exits 1 when a count differs.
 set -eu
 probe=$1
@@ -11,7 +12,7 @@ rm -rf "$out"
 mkdir -p "$out"
 valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" \
     --toggle-collect=tfit_displacements --toggle-collect=tfit_contact_force \
-    --toggle-collect=tfit_prony_step \
+    --toggle-collect=tfit_prony_step --toggle-collect=tfit_resonant_step \
     --toggle-collect=tfit_displacements_q31 --toggle-collect=tfit_contact_force_q31 \
     --toggle-collect=control_branchy \
     "$probe" >"$out/probe.log" 2>&1 || { cat "$out/probe.log"; exit 1; }
@@ -30,7 +31,7 @@ awk '
     if (st[2] < 0) bad[key] = ir[2]; else if (st[2] == 1) clamp[key] = ir[2]; else ok[key] = ir[2]
 }
 END {
-    split("control nodal modal zhou2017 contact prony nodal-q31 - - contact-q31", name, " ")
+    split("control nodal modal zhou2017 contact prony resonant - - - nodal-q31 - - contact-q31", name, " ")
     printf "%-4s %-11s %7s %12s %12s %12s %s\n", "set", "family", "inputs", "in-envelope", "clamped", "NaN/Inf", "verdict"
     fail = 0
     for (k = 0; k < 64; k++) {

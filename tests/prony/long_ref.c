@@ -1,5 +1,6 @@
 /*
- * long_ref.c — the expected result of a 10^6-tick run of every prony model
+ * long_ref.c — the expected result of a 10^6-tick run of every stateful
+ * (prony, resonant) model
  * of one generated header, from the host's reference evaluator
  * (host/model/ref_eval.c: float arithmetic emulated in double).  Compiled
  * per header with -DGOLDEN_H='"NAME_golden.h"' -DGOLDEN_SETS=...
@@ -50,17 +51,18 @@ static float scale_of(const tf_model *m)
 
 static uint32_t run(const tf_model *m, float scale)
 {
-    float state[TFIT_PRONY_MAX_STATE];
+    float state[TFIT_RESONANT_MAX_STATE];
     float *out = malloc(3 * m->n_out * sizeof *out);
-    const uint32_t words = TFIT_PRONY_STATE_WORDS(m->dims[2]);
+    const uint32_t words = m->family == TFIT_FAMILY_PRONY ? TFIT_PRONY_STATE_WORDS(m->dims[2])
+                                                          : TFIT_RESONANT_STATE_WORDS(m->dims[2]);
     tf_force_seq q;
     uint32_t h = TF_LONG_HASH0;
     tf_seq_init(&q, TF_LONG_SEED);
-    tf_ref_prony_reset(m, state);
+    tf_ref_stateful_reset(m, state);
     for (uint32_t n = 0; n < TF_LONG_TICKS; ++n) {
         float f[3];
         tf_seq_force(&q, scale, f);
-        tfit_status s = tf_ref_prony_step(m, state, f, out, NULL);
+        tfit_status s = tf_ref_stateful_step(m, state, f, out, NULL);
         h = tf_long_tick(h, n, (int32_t)s, state, words, out, m->n_out);
     }
     free(out);
@@ -78,7 +80,8 @@ int main(int argc, char **argv)
     uint32_t scale[sizeof sets / sizeof sets[0]], hash[sizeof sets / sizeof sets[0]];
     for (size_t i = 0; i < n; ++i) {
         scale[i] = hash[i] = 0;
-        if (sets[i]->model->family == TFIT_FAMILY_PRONY) {
+        if (sets[i]->model->family == TFIT_FAMILY_PRONY ||
+            sets[i]->model->family == TFIT_FAMILY_RESONANT) {
             tf_model *m = host_copy(sets[i]->model);
             float s = scale_of(m);
             memcpy(&scale[i], &s, sizeof s);
@@ -94,7 +97,7 @@ int main(int argc, char **argv)
         return 1;
     }
     fprintf(f, "/* %s - written by tests/prony/long_ref.c: per golden set, the force scale\n"
-               " * (float bits) and the hash of %u ticks (0, 0: not a prony model). */\n",
+               " * (float bits) and the hash of %u ticks (0, 0: not a stateful model). */\n",
             argv[1], TF_LONG_TICKS);
     fprintf(f, "static const uint32_t long_scale[%zu] = {", n);
     for (size_t i = 0; i < n; ++i) {

@@ -1,5 +1,6 @@
 /*
- * long_run.c — 10^6 ticks of every prony model of one generated header on
+ * long_run.c — 10^6 ticks of every stateful model (prony, resonant) of one
+ * generated header on
  * the target library, against the host reference's hash (NAME_long.h from
  * long_ref.c): status, every state word and a rotating output point at
  * every tick, every output each 2^16 ticks (long_hash.h), from the same
@@ -32,16 +33,23 @@ static float out[3u * MAX_OUT];
 
 static uint32_t run(const tfit_model *m, float scale)
 {
-    float state[TFIT_PRONY_MAX_STATE];
-    const uint32_t words = TFIT_PRONY_STATE_WORDS(m->dims[2]);
+    float state[TFIT_RESONANT_MAX_STATE];
+    const int prony = m->family == TFIT_FAMILY_PRONY;
+    const uint32_t words = prony ? TFIT_PRONY_STATE_WORDS(m->dims[2])
+                                 : TFIT_RESONANT_STATE_WORDS(m->dims[2]);
     tf_force_seq q;
     uint32_t h = TF_LONG_HASH0;
     tf_seq_init(&q, TF_LONG_SEED);
-    tfit_prony_reset(m, state);
+    if (prony) {
+        tfit_prony_reset(m, state);
+    } else {
+        tfit_resonant_reset(m, state);
+    }
     for (uint32_t n = 0u; n < TF_LONG_TICKS; ++n) {
         float f[3];
         tf_seq_force(&q, scale, f);
-        tfit_status s = tfit_prony_step(m, state, f, out);
+        tfit_status s = prony ? tfit_prony_step(m, state, f, out)
+                              : tfit_resonant_step(m, state, f, out);
         h = tf_long_tick(h, n, (int32_t)s, state, words, out, m->n_out);
     }
     return h;
@@ -54,7 +62,7 @@ int main(void)
     uint32_t models = 0u, failed = 0u;
     for (uint32_t i = 0u; i < n_sets; ++i) {
         const tfit_model *m = sets[i]->model;
-        if (m->family != TFIT_FAMILY_PRONY) {
+        if (m->family != TFIT_FAMILY_PRONY && m->family != TFIT_FAMILY_RESONANT) {
             continue;
         }
         ++models;
@@ -79,7 +87,7 @@ int main(void)
     }
     SAY(LABEL ": ");
     SAY_U32(models);
-    SAY(" prony models x ");
+    SAY(" stateful models x ");
     SAY_U32(TF_LONG_TICKS);
     SAY(" ticks: ");
     SAY_U32(models - failed);

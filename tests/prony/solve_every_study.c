@@ -87,7 +87,7 @@ int main(int argc, char **argv)
     tf_cases cases;
     tf_histories hist;
     if (solver == NULL || tf_cases_build(&scene->problem, solver, &plan, &cases) != 0 ||
-        tf_histories_solve(&cases, plan.tick_ns, ms[0], 2, plan.hist_heldout, plan.hist_ticks,
+        tf_histories_solve(&cases, TF_HIST_PRESS, plan.tick_ns, ms[0], 2, plan.hist_heldout, plan.hist_ticks,
                            plan.seed, &hist) != 0) {
         fprintf(stderr, "solve_every_study: %s\n", ctx.err);
         return 1;

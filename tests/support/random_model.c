@@ -8,6 +8,7 @@
 
 #include "fitting/families/zhou2017.h"
 #include "model/prony.h"
+#include "model/resonant.h"
 
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {
@@ -88,6 +89,13 @@ static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_di
         dims[1] = pick(r, 1, small ? 4 : 16);
         *n_dims = TFIT_CUT_DIMS;
         break;
+    case TFIT_FAMILY_RESONANT: /* {p, r (0: nodal), K, tick_ns} */
+        dims[0] = pick(r, 0, pmax);
+        dims[1] = tf_rng_below(r, 2) ? 0 : pick(r, 1, small ? 4 : 16);
+        dims[2] = pick(r, 0, small ? 3 : TFIT_RESONANT_MAX_MODES);
+        dims[3] = (uint32_t)pow(10.0, tf_rng_range(r, 3.0, 8.0)); /* 1 us .. 0.1 s */
+        *n_dims = TFIT_RESONANT_DIMS;
+        break;
     default:
         dims[0] = pick(r, 0, pmax);
         *n_dims = 1;
@@ -117,6 +125,29 @@ static void prony_terms(tf_rng *r, tf_model *m, int physical)
     }
 }
 
+/* Resonant modes: omega T log-uniform in [1e-2, 1.5] and zeta in
+ * [1e-3, 2], redrawn until the float recursion carries them
+ * (tf_resonant_params_check: contraction, resolution); weights either
+ * physical-looking (in [-1, 1]) or random over many binades, so that the
+ * clamp of h acts too. */
+static void resonant_modes(tf_rng *r, tf_model *m, int physical)
+{
+    char err[512];
+    const double tick = tf_resonant_tick(m);
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        double omega, zeta;
+        do {
+            omega = pow(10.0, tf_rng_range(r, -2.0, log10(1.5))) / tick;
+            zeta = pow(10.0, tf_rng_range(r, -3.0, log10(2.0)));
+        } while (tf_resonant_params_check(omega, zeta, tick, err, sizeof err) != 0);
+        double w[3];
+        for (int i = 0; i < 3; ++i) {
+            w[i] = physical ? tf_rng_range(r, -1, 1) : (double)random_coef(r, -20, 6);
+        }
+        tf_resonant_set_mode(m, k, omega, zeta, w);
+    }
+}
+
 static void fill_tables(tf_rng *r, tf_model *m)
 {
     /* binade spread: well scaled, moderately, or wildly ill-scaled */
@@ -131,6 +162,8 @@ static void fill_tables(tf_rng *r, tf_model *m)
     }
     if (m->family == TFIT_FAMILY_PRONY) {
         prony_terms(r, m, spread == 0);
+    } else if (m->family == TFIT_FAMILY_RESONANT) {
+        resonant_modes(r, m, spread == 0);
     }
     for (uint32_t i = n - n_xy; i < n; ++i) {
         uint32_t k = tf_rng_below(r, 12);
@@ -164,12 +197,14 @@ static int make_emittable(tf_model *m)
     uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
     /* a prony model's decays stay as drawn (halving its gains is harmless) */
     uint32_t n_decays = m->family == TFIT_FAMILY_PRONY ? m->dims[2] : 0;
+    /* a resonant model's transition matrices too (its weights may halve) */
+    uint32_t n_modes = m->family == TFIT_FAMILY_RESONANT ? m->dims[2] : 0;
     for (int tries = 0; tries < 400; ++tries) {
         if (tf_model_validate(m, err, sizeof err) == 0) {
             return 0;
         }
         for (uint32_t i = 0; i < n - n_xy; ++i) {
-            if (!(i < 2 * n_decays && i % 2 == 0)) {
+            if (!(i < 2 * n_decays && i % 2 == 0) && !(i < 7 * n_modes && i % 7 < 4)) {
                 c[i] = ldexpf(c[i], -2);
             }
         }

@@ -372,12 +372,12 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     }
     double e_max = 0, e2 = 0, big = 0;
     for (size_t h = 0; h < set->n; ++h) {
-        float state[TFIT_PRONY_MAX_STATE];
-        tf_ref_prony_reset(m, state);
+        float state[TFIT_RESONANT_MAX_STATE]; /* prony or resonant */
+        tf_ref_stateful_reset(m, state);
         for (size_t n = 0; n < set->n_ticks; ++n) {
             const double *f = tf_history_force(set, h, n), *u = tf_history_u(set, h, n);
             const float in[3] = {(float)f[0], (float)f[1], (float)f[2]};
-            tf_ref_prony_step(m, state, in, out, NULL);
+            tf_ref_stateful_step(m, state, in, out, NULL);
             for (size_t o = 0; o < rows; ++o) {
                 const double e = (double)out[o] - u[o];
                 e_max = fmax(e_max, fabs(e));
@@ -393,10 +393,8 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     return 0;
 }
 
-/* The held-out histories: the error of the float32 model stepped through
- * them; rel_max is the largest error over the largest displacement. */
-static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rms, double *rel_max,
-                   uint32_t *n)
+int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                        double *rel_max, uint32_t *n)
 {
     double peak;
     if (c->hist == NULL || tf_prony_history_errors(m, &c->hist->heldout, max, rms, &peak) != 0) {
@@ -407,7 +405,7 @@ static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rm
     return 0;
 }
 
-static void orders_text(const tf_model *m, int style, char *buf, size_t n)
+void tf_stateful_orders_text(const tf_model *m, int style, char *buf, size_t n)
 {
     char rank[24] = "";
     if (m->dims[1] > 0) {
@@ -428,9 +426,9 @@ const tf_family tf_family_prony = {
     .select = select_orders,
     .fit = fit,
     .candidates = candidates,
-    .orders_text = orders_text,
+    .orders_text = tf_stateful_orders_text,
     .q31 = NULL,
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,
-    .heldout = heldout,
+    .heldout = tf_stateful_heldout,
 };

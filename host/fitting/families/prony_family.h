@@ -37,11 +37,19 @@ int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const t
 int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
                          size_t errlen);
 
-/* The float32 model m stepped through every history of set from rest
- * (tf_ref_prony_step), against the true displacements: the largest and RMS
+/* The float32 model m (prony or resonant) stepped through every history of
+ * set from rest (tf_ref_stateful_step), against the true displacements: the largest and RMS
  * error and the largest |displacement| (mm).  Returns 0, or -1 when out of
  * memory. */
 int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double *max,
                             double *rms, double *peak);
+
+/* What the stateful families (prony, resonant) share in the registry:
+ * the held-out errors of the float32 model stepped through the cases'
+ * held-out histories (rel_max over the largest displacement there), and
+ * the orders as "p=1 [r=3] K=2 [tick=1000000ns]". */
+int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
+                        double *rel_max, uint32_t *n);
+void tf_stateful_orders_text(const tf_model *m, int style, char *buf, size_t n);
 
 #endif /* TF_PRONY_FAMILY_H */

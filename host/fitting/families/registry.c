@@ -10,7 +10,7 @@
 
 #include "fitting/families/family.h"
 
-#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut)
+#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant)
 
 #define DECLARE(name) extern const tf_family tf_family_##name;
 FAMILIES(DECLARE)

@@ -156,7 +156,7 @@ static void a_coarser_solver_step_is_interpolated(void **state)
     tf_histories h;
     assert_non_null(s);
     assert_int_equal(tf_cases_build(&x->scene->problem, s, &plan, &c), 0);
-    assert_int_equal(tf_histories_solve(&c, 1000000, M, 2, 2, TICKS, 7, &h), 0);
+    assert_int_equal(tf_histories_solve(&c, TF_HIST_PRESS, 1000000, M, 2, 2, TICKS, 7, &h), 0);
     const tf_history_set *set = &h.heldout;
     const size_t dofs = 3 * tf_solver_node_count(s);
     const tf_outputs *o = &x->scene->problem.outputs;
