@@ -135,6 +135,15 @@ static int scalar_pattern(const tf_nodesets *bp, tf_csc *k, char *err, size_t er
 {
     size_t nn = bp->count, nnz = 0;
     for (size_t b = 0; b < nn; ++b) {
+        /* a node in no cell has an empty list (not even itself): nothing
+         * integrates its row, and 9 (len - 1) would wrap */
+        if (bp->ptr[b + 1] == bp->ptr[b]) {
+            snprintf(err, errlen,
+                     "node %zu lies in no integration cell's support: nothing integrates its "
+                     "stiffness (a cut or the background cells leave it uncovered)",
+                     b + 1);
+            return -1;
+        }
         nnz += 6 + 9 * (bp->ptr[b + 1] - bp->ptr[b] - 1);
     }
     if (nnz > INT_MAX) {
