@@ -69,7 +69,14 @@ check-freestanding: $(T)/callgraph $(T)/recursive.elf \
 	  FLAGS="$(M4F_FLAGS)" tests/freestanding/check.sh $$b $(ARM) $(B)/$$b arm; done; \
 	for b in riscv64 riscv64-O0; do \
 	  FLAGS="$(RV64_FLAGS)" tests/freestanding/check.sh $$b $(RV) $(B)/$$b; done
-	@echo "ok: 6 target library builds freestanding; the call-graph checker rejects recursion"
+	@# the modal rows' table is the one declared indirect call: undeclared, or
+	@# declared with a target the image lacks, it must be refused
+	@if $(ARM)objdump -d $(B)/cortex-m4f-O0/image.elf | $(T)/callgraph >/dev/null; then \
+	  echo "callgraph checker accepted an undeclared indirect call"; exit 1; fi
+	@if $(ARM)objdump -d $(B)/cortex-m4f-O0/image.elf | \
+	  $(T)/callgraph tfit_modal_rows_asm=tfit_modal_rows_r1,tfit_modal_rows_r9 >/dev/null; then \
+	  echo "callgraph checker accepted a declared target that is not in the image"; exit 1; fi
+	@echo "ok: 6 target library builds freestanding; the call-graph checker rejects recursion, undeclared indirect calls and missing declared targets"
 
 # --- bit-exact: random models -------------------------------------------------
 $(T)/gen_random: tests/bitexact/gen_random.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check

@@ -5,6 +5,12 @@
  * of another, rejects indirect calls (blx rN, bx rN other than lr, ldr pc
  * / pop {pc} excluded as returns), and searches the call graph for a cycle.
  * Prints the graph's edges and exits 1 on a cycle or an indirect call.
+ *
+ * An argument FUNC=T1,T2,... declares the targets of FUNC's indirect calls
+ * (a const table of functions, e.g. the modal rows by rank): FUNC's
+ * indirect calls are then accepted, an edge FUNC -> Ti is added for each
+ * target so that the search for a cycle still covers them, and every Ti
+ * must be defined in the image.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +22,22 @@
 static char names[MAX_FUNCS][96];
 static int n_funcs;
 static int edge_from[MAX_EDGES], edge_to[MAX_EDGES], n_edges;
+static int defined[MAX_FUNCS];
+
+/* The declaration of FUNC among argv's FUNC=T1,T2,..., or NULL. */
+static const char *declared_targets(int argc, char **argv, const char *func)
+{
+    size_t n = strlen(func);
+    for (int i = 1; i < argc; ++i) {
+        if (strncmp(argv[i], func, n) == 0 && argv[i][n] == '=') {
+            return argv[i] + n + 1;
+        }
+    }
+    return NULL;
+}
+
+/* Edges func -> each declared target. */
+static void add_declared(const char *func, const char *targets);
 
 static int func_id(const char *name)
 {
@@ -85,7 +107,16 @@ static int has_cycle(void)
     return 0;
 }
 
-int main(void)
+static void add_declared(const char *func, const char *targets)
+{
+    char list[1024], *save = NULL;
+    snprintf(list, sizeof list, "%s", targets);
+    for (char *t = strtok_r(list, ",", &save); t != NULL; t = strtok_r(NULL, ",", &save)) {
+        add_edge(func_id(func), func_id(t));
+    }
+}
+
+int main(int argc, char **argv)
 {
     char line[512], current[96] = "";
     int indirect = 0;
@@ -94,7 +125,7 @@ int main(void)
         /* function header: "00000010 <tfit_basis>:" */
         if (sscanf(line, "%*x <%95[^>]>:", name) == 1) {
             snprintf(current, sizeof current, "%s", name);
-            func_id(current);
+            defined[func_id(current)] = 1;
             continue;
         }
         if (current[0] == '\0' || strchr(line, '\t') == NULL) {
@@ -107,8 +138,13 @@ int main(void)
         ++insn;
         if (strncmp(insn, "blx\tr", 5) == 0 ||
             (strncmp(insn, "bx\tr", 4) == 0) || strncmp(insn, "blx\tip", 6) == 0) {
-            printf("indirect call in %s: %s", current, insn);
-            indirect = 1;
+            const char *targets = declared_targets(argc, argv, current);
+            if (targets != NULL) {
+                add_declared(current, targets);
+            } else {
+                printf("indirect call in %s: %s", current, insn);
+                indirect = 1;
+            }
             continue;
         }
         int is_branch = insn[0] == 'b' && strchr("\t.lneglhcvmp", insn[1]) != NULL;
@@ -123,6 +159,17 @@ int main(void)
     }
     for (int i = 0; i < n_edges; ++i) {
         printf("  %s -> %s\n", names[edge_from[i]], names[edge_to[i]]);
+    }
+    for (int i = 0; i < n_funcs; ++i) { /* a declared target must exist */
+        if (!defined[i]) {
+            for (int e = 0; e < n_edges; ++e) {
+                if (edge_to[e] == i && declared_targets(argc, argv, names[edge_from[e]]) != NULL) {
+                    printf("declared indirect target %s is not in the image\n", names[i]);
+                    indirect = 1;
+                    break;
+                }
+            }
+        }
     }
     int cycle = has_cycle();
     printf("%d functions, %d call edges: %s, %s\n", n_funcs, n_edges,

@@ -25,7 +25,9 @@ entry=tfit_displacements
     -Wl,-u,tfit_model_check -Wl,-u,tfit_contact_force -Wl,-u,tfit_golden_run \
     -Wl,-u,tfit_model_crc32 $FLAGS -o "$dir/image.elf" "$lib" || fail=1
 if [ -n "$arm" ] && [ -f "$dir/image.elf" ]; then
-    "${prefix}objdump" -d "$dir/image.elf" | "$CALLGRAPH" >"$dir/callgraph.txt" || {
+    # the one indirect call: the modal rows' table by rank (tfit_modal_armv7em.c)
+    modal_rows=tfit_modal_rows_asm=tfit_modal_rows_r1,tfit_modal_rows_r2,tfit_modal_rows_r3,tfit_modal_rows_r4,tfit_modal_rows_r5,tfit_modal_rows_r6,tfit_modal_rows_r7,tfit_modal_rows_r8
+    "${prefix}objdump" -d "$dir/image.elf" | "$CALLGRAPH" "$modal_rows" >"$dir/callgraph.txt" || {
         cat "$dir/callgraph.txt"
         fail=1
     }
