@@ -93,11 +93,17 @@ CONTACT_REL_BOUND := 4.8e-7
 # the solved knots (docs/cutting.md, "Cut progress"): 27 um measured at the
 # held-out s of block48_cut, of 2.36 mm; the bound is twice that.
 export FORWARD_BOUND_block48_cut := 0.055
+# The neo-Hookean block48 is not exact at any degree: its forward bound is
+# issue 14's 1 % of the largest displacement (7.09 mm; 0.056 mm measured),
+# its contact inverse's a regression bound over the measured 5.9 % (a
+# relative error near the envelope's centre, where the force is small).
+export FORWARD_BOUND_block48_nh := 0.0709
+export CONTACT_BOUND_block48_nh := 0.075
 check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
 	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
-	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); \
-	  printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $(CONTACT_REL_BOUND); done
+	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); c=$$(eval echo \$${CONTACT_BOUND_$$n}); \
+	  printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $${c:-$(CONTACT_REL_BOUND)}; done
 	@echo "== material extremes: the stated bound holds at fresh forces =="
 	@$(T)/extremes tests/solver/block48_seed.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="
