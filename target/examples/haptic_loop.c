@@ -12,6 +12,12 @@
  *   HAPTIC_CONTACT, HAPTIC_CONTACT_M(x)   first contact model (either may be absent)
  *   HAPTIC_FORWARD_PRONY      the forward model is a prony model (a creeping
  *                             body): stepped once per tick with its state
+ *   HAPTIC_FORWARD_RESONANT   the forward model is a resonant model (a body
+ *                             with inertia): stepped the same way
+ *   HAPTIC_FORWARD_CUT        the forward model is a cut model, evaluated at
+ *                             the cut progress HAPTIC_CUT_S (default 1: the
+ *                             whole incision, the body the contact model of
+ *                             a cut scene is fitted to)
  * and which defines TFIT_NAME_IMPLEMENTATION: this file holds the tables.
  *
  * Everything the tick does has a fixed cost (the evaluator's instruction
@@ -46,10 +52,24 @@ _Static_assert(FORWARD_CYCLES(HAPTIC_CYCLES_SUFFIX) + CONTACT_CYCLES(HAPTIC_CYCL
                "HAPTIC_BUDGET_PERCENT): use a smaller model or a faster servo core");
 #endif
 
+/* A stateful forward model's reset and step (prony: a creeping body;
+ * resonant: a body with inertia). */
+#if defined(HAPTIC_FORWARD_PRONY)
+#define HAPTIC_STATE_RESET tfit_prony_reset
+#define HAPTIC_STATE_STEP tfit_prony_step
+#elif defined(HAPTIC_FORWARD_RESONANT)
+#define HAPTIC_STATE_RESET tfit_resonant_reset
+#define HAPTIC_STATE_STEP tfit_resonant_step
+#endif
+
+#if defined(HAPTIC_FORWARD_CUT) && !defined(HAPTIC_CUT_S)
+#define HAPTIC_CUT_S 1.0f
+#endif
+
 static float u[3u * N_POINTS];
-#ifdef HAPTIC_FORWARD_PRONY
-/* the creeping body's state: the force history the model remembers */
-static float prony_state[HAPTIC_FORWARD_M(STATE_WORDS)];
+#ifdef HAPTIC_STATE_STEP
+/* the body's state: the force history the model remembers */
+static float forward_state[HAPTIC_FORWARD_M(STATE_WORDS)];
 #endif
 #if defined(HAPTIC_FORWARD) && defined(HAPTIC_CONTACT)
 static uint32_t contact_point; /* forward output point at the contact site */
@@ -61,8 +81,8 @@ static void boot(void)
     if (tfit_model_check(&HAPTIC_FORWARD) != TFIT_OK) {
         board_fail("haptic: forward model failed its check (damaged flash?)");
     }
-#ifdef HAPTIC_FORWARD_PRONY
-    (void)tfit_prony_reset(&HAPTIC_FORWARD, prony_state); /* at rest, no force */
+#ifdef HAPTIC_STATE_STEP
+    (void)HAPTIC_STATE_RESET(&HAPTIC_FORWARD, forward_state); /* at rest, no force */
 #endif
 #endif
 #ifdef HAPTIC_CONTACT
@@ -88,8 +108,10 @@ static void tick(void)
 #ifdef HAPTIC_FORWARD
     float force[3];
     board_read_force(force);
-#ifdef HAPTIC_FORWARD_PRONY
-    status = tfit_prony_step(&HAPTIC_FORWARD, prony_state, force, u);
+#if defined(HAPTIC_STATE_STEP)
+    status = HAPTIC_STATE_STEP(&HAPTIC_FORWARD, forward_state, force, u);
+#elif defined(HAPTIC_FORWARD_CUT)
+    status = tfit_displacements_cut(&HAPTIC_FORWARD, force, HAPTIC_CUT_S, u);
 #else
     status = tfit_displacements(&HAPTIC_FORWARD, force, u);
 #endif

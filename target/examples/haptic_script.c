@@ -15,7 +15,9 @@
 #endif
 #define DEPTH_N (0.8f * HAPTIC_FORCE_SCALE) /* normal force at full press */
 #define SWEEP_N (0.5f * HAPTIC_FORCE_SCALE) /* lateral force amplitude */
-#define BEYOND_N (3.0f * HAPTIC_FORCE_SCALE) /* three times the envelope */
+/* ten times the envelope: beyond every shipped envelope (1 N, 3 N) even
+ * unscaled, and clamped onto the same point as any push along -z beyond it */
+#define BEYOND_N (10.0f * HAPTIC_FORCE_SCALE)
 #define MM_PER_N 10.0f      /* position script: a soft spring */
 
 static float ramp(uint32_t t, uint32_t t0, uint32_t t1)
