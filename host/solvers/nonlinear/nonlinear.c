@@ -66,6 +66,12 @@ static int solve(tf_solver *sv, int contact, const double (*forces)[3], size_t n
             memcpy(to.force, forces[k], sizeof to.force);
         }
         nl_reset(s);
+        /* and no factorisation: the case then depends on its own start
+         * alone, not on the cases this solver solved before (modified
+         * Newton and BFGS keep factors across iterations), so the bits are
+         * the same whatever the order of the cases (the MPI runner's
+         * partition; check-mpi) */
+        s->chol_ok = 0;
         int rc = 1;
         if (u0 != NULL) { /* continue from the caller's guess, at the full load */
             if (start_from(s, u0 + k * n3) != 0) {
