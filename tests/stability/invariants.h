@@ -69,7 +69,8 @@ typedef struct stab_float {
     float *y, *y_b, *y_n, *y_g;
     tfit_model in_g;
     float *coef_g;      /* in_g's coefficients */
-    float state[TFIT_PRONY_MAX_STATE]; /* a prony model's: every input is one tick from
+    float state[TFIT_PRONY_MAX_STATE > TFIT_RESONANT_MAX_STATE ? TFIT_PRONY_MAX_STATE
+                                                              : TFIT_RESONANT_MAX_STATE]; /* a prony (or resonant) model's: every input is one tick from
                                         * it, and stab_float_check advances it */
     stab_stats st;
 } stab_float;

@@ -29,10 +29,14 @@ static int finite_bits(float x)
  * advances c->state with the checked input. */
 static tfit_status eval_entry(const stab_float *c, const tfit_model *m, const float x[3], float *y)
 {
-    if (m->family == TFIT_FAMILY_PRONY) {
-        float state[TFIT_PRONY_MAX_STATE];
+    if (m->family == TFIT_FAMILY_PRONY || m->family == TFIT_FAMILY_RESONANT) {
+        float state[sizeof c->state / sizeof c->state[0]];
         memcpy(state, c->state, sizeof state);
-        return tfit_prony_step(m, state, x, y);
+        return m->family == TFIT_FAMILY_PRONY ? tfit_prony_step(m, state, x, y)
+                                              : tfit_resonant_step(m, state, x, y);
+    }
+    if (m->family == TFIT_FAMILY_CUT) { /* halfway along the incision */
+        return tfit_displacements_cut(m, x, 0.5f, y);
     }
     if (m->family == TFIT_FAMILY_CONTACT) {
         return tfit_contact_force(m, x, y);
@@ -269,6 +273,8 @@ int stab_float_init(stab_float *c, const tfit_model *m, const char *label)
     c->in_g.coef = c->coef_g;
     if (m->family == TFIT_FAMILY_PRONY) {
         tfit_prony_reset(m, c->state);
+    } else if (m->family == TFIT_FAMILY_RESONANT) {
+        tfit_resonant_reset(m, c->state);
     }
     c->scale = boundary_scale(c);
     return 0;
@@ -373,9 +379,16 @@ static int check_one(stab_float *c, const float x[3]);
 int stab_float_check(stab_float *c, const float x[3])
 {
     const int n = check_one(c, x);
-    if (c->m->family == TFIT_FAMILY_PRONY) { /* the next input meets the state this one leaves */
-        tfit_prony_step(c->m, c->state, x, c->y);
-        for (uint32_t w = 0; w < TFIT_PRONY_STATE_WORDS(c->m->dims[2]); ++w) {
+    const int prony = c->m->family == TFIT_FAMILY_PRONY;
+    if (prony || c->m->family == TFIT_FAMILY_RESONANT) { /* the next input meets the state this one leaves */
+        const uint32_t words = prony ? TFIT_PRONY_STATE_WORDS(c->m->dims[2])
+                                     : TFIT_RESONANT_STATE_WORDS(c->m->dims[2]);
+        if (prony) {
+            tfit_prony_step(c->m, c->state, x, c->y);
+        } else {
+            tfit_resonant_step(c->m, c->state, x, c->y);
+        }
+        for (uint32_t w = 0; w < words; ++w) {
             if (!finite_bits(c->state[w])) {
                 return n + fail(c, x, "a state word is NaN or Inf");
             }
