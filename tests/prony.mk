@@ -69,9 +69,9 @@ $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_lo
 
 # make check runs the small test models under QEMU (about 15 s per core);
 # the block48-shaped ones (haptic_creep, creep48: 121 points, about 30 s
-# per core each; the shipped block48_ve.h, p = 3: 34,119 instructions a
-# tick, 7 times creep48's, 613 s of wall time per core on the loaded
-# machine, so its QEMU timeout is 1500 s) run natively in make check and
+# per core each; the shipped block48_ve.h, 18,255 instructions a tick at
+# p = 2 (34,119 at the earlier p = 3: 613 s of wall time per core on the
+# loaded machine), so its QEMU timeout is 1500 s) run natively in make check and
 # under QEMU in prony-long-qemu.
 PRONY_QEMU_TIMEOUT_block48_ve := 1500
 PRONY_LONG_QEMU_CHECK := families
