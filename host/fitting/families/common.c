@@ -144,3 +144,38 @@ int tf_family_spans(const tf_model *m, const double (*x)[3], const size_t *idx, 
     }
     return 0;
 }
+
+int tf_family_history_cv(size_t n, size_t folds, int kmax, tf_family_history_fold fold, void *ctx,
+                         double *cv)
+{
+    size_t *train = malloc(2 * n * sizeof *train), *valid = train + n;
+    if (train == NULL) {
+        return -1;
+    }
+    for (int k = 0; k <= kmax; ++k) {
+        double sum2 = 0;
+        size_t count = 0;
+        cv[k] = INFINITY;
+        for (size_t f = 0; f < folds; ++f) {
+            size_t nt = 0, nv = 0;
+            for (size_t i = 0; i < n; ++i) {
+                if (i % folds != f) {
+                    train[nt++] = i;
+                } else {
+                    valid[nv++] = i;
+                }
+            }
+            double r;
+            if (fold(ctx, k, train, nt, valid, nv, &r) != 0) {
+                break;
+            }
+            sum2 += r * r * (double)nv;
+            count += nv;
+        }
+        if (count == n) {
+            cv[k] = sqrt(sum2 / (double)n);
+        }
+    }
+    free(train);
+    return 0;
+}

@@ -74,6 +74,19 @@ tf_model *tf_family_forward_model(const char *name, tfit_family family, const ui
  * show, in mm or N). */
 uint32_t tf_family_cheapest_within(const double *v, uint32_t lo, uint32_t hi);
 
+/* One fold of a stateful family's order search: fit order k on the
+ * histories train[0 .. nt-1] and return the RMS error over valid[0 .. nv-1]
+ * in *rms; non-zero when the fit fails (order k then has no CV error). */
+typedef int (*tf_family_history_fold)(void *ctx, int k, const size_t *train, size_t nt,
+                                      const size_t *valid, size_t nv, double *rms);
+
+/* k-fold cross-validation over n histories (fold f validates i = f mod
+ * folds) for orders 0 .. kmax: cv[k] the RMS over every validated history,
+ * INFINITY when a fold's fit failed.  Returns 0, or -1 when out of memory.
+ * The prony terms and the resonant modes share it. */
+int tf_family_history_cv(size_t n, size_t folds, int kmax, tf_family_history_fold fold, void *ctx,
+                         double *cv);
+
 /* Cases in one training fold of c->train under the plan's k-fold split. */
 size_t tf_family_fold_cases(const tf_cases *c, const tf_fit_plan *plan);
 

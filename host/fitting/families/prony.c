@@ -254,46 +254,37 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     return model;
 }
 
+/* One fold of the term search (tf_family_history_cv). */
+typedef struct {
+    const tf_prony_data *d;
+    double lo, hi;
+    char *err;
+    size_t errlen;
+} prony_fold_ctx;
+
+static int prony_fold(void *ctx, int k, const size_t *train, size_t nt, const size_t *valid,
+                      size_t nv, double *rms)
+{
+    const prony_fold_ctx *x = ctx;
+    tf_prony_terms t;
+    if (tf_prony_fit_terms_from(x->d, train, nt, k, x->lo, x->hi, 1, &t, x->err, x->errlen) != 0) {
+        return -1;
+    }
+    *rms = tf_prony_terms_rms(x->d, valid, nv, &t);
+    return 0;
+}
+
 int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const tf_fit_plan *plan,
                           double *cv, int *best, tf_prony_terms *terms, char *err, size_t errlen)
 {
     double lo, hi;
     tau_range(h, &lo, &hi);
     const size_t n = d->n_hist, folds = plan->folds < n ? plan->folds : n;
-    size_t *idx = malloc(n * sizeof *idx);
-    if (idx == NULL) {
+    prony_fold_ctx x = {d, lo, hi, err, errlen};
+    if (tf_family_history_cv(n, folds, TF_PRONY_SEARCH_TERMS, prony_fold, &x, cv) != 0) {
         snprintf(err, errlen, "prony: out of memory");
         return -1;
     }
-    for (int k = 0; k <= TF_PRONY_SEARCH_TERMS; ++k) { /* fold f validates histories i = f mod folds */
-        double sum2 = 0;
-        size_t count = 0;
-        cv[k] = INFINITY;
-        for (size_t f = 0; f < folds; ++f) {
-            size_t nt = 0, nv = 0;
-            for (size_t i = 0; i < n; ++i) {
-                if (i % folds != f) {
-                    idx[nt++] = i;
-                }
-            }
-            tf_prony_terms t;
-            if (tf_prony_fit_terms_from(d, idx, nt, k, lo, hi, 1, &t, err, errlen) != 0) {
-                break;
-            }
-            for (size_t i = 0; i < n; ++i) {
-                if (i % folds == f) {
-                    idx[nv++] = i;
-                }
-            }
-            const double r = tf_prony_terms_rms(d, idx, nv, &t);
-            sum2 += r * r * (double)nv;
-            count += nv;
-        }
-        if (count == n) {
-            cv[k] = sqrt(sum2 / (double)n);
-        }
-    }
-    free(idx);
     *best = (int)tf_family_cheapest_within(cv, 0, TF_PRONY_SEARCH_TERMS);
     if (!isfinite(cv[*best])) {
         snprintf(err, errlen, "%s: prony: no number of terms is determined by %zu histories",

@@ -125,6 +125,27 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     return model;
 }
 
+/* One fold of the mode search (tf_family_history_cv). */
+typedef struct {
+    const tf_prony_data *d;
+    const tf_resonant_bounds *b;
+    char *err;
+    size_t errlen;
+} resonant_fold_ctx;
+
+static int resonant_fold(void *ctx, int k, const size_t *train, size_t nt, const size_t *valid,
+                         size_t nv, double *rms)
+{
+    const resonant_fold_ctx *x = ctx;
+    tf_resonant_modes t;
+    if (tf_resonant_fit_modes_from(x->d, train, nt, k, x->b, TF_RESONANT_CV_STARTS, &t, x->err,
+                                   x->errlen) != 0) {
+        return -1;
+    }
+    *rms = tf_resonant_modes_rms(x->d, valid, nv, &t);
+    return 0;
+}
+
 int tf_resonant_select_modes(const tf_prony_data *d, const tf_histories *h,
                              const tf_fit_plan *plan, double *cv, int *best,
                              tf_resonant_modes *modes, char *err, size_t errlen)
@@ -132,41 +153,11 @@ int tf_resonant_select_modes(const tf_prony_data *d, const tf_histories *h,
     tf_resonant_bounds b;
     tf_resonant_bounds_for(h, &b);
     const size_t n = d->n_hist, folds = plan->folds < n ? plan->folds : n;
-    size_t *idx = malloc(n * sizeof *idx);
-    if (idx == NULL) {
+    resonant_fold_ctx x = {d, &b, err, errlen};
+    if (tf_family_history_cv(n, folds, TF_RESONANT_SEARCH_MODES, resonant_fold, &x, cv) != 0) {
         snprintf(err, errlen, "resonant: out of memory");
         return -1;
     }
-    for (int k = 0; k <= TF_RESONANT_SEARCH_MODES; ++k) { /* fold f validates i = f mod folds */
-        double sum2 = 0;
-        size_t count = 0;
-        cv[k] = INFINITY;
-        for (size_t f = 0; f < folds; ++f) {
-            size_t nt = 0, nv = 0;
-            for (size_t i = 0; i < n; ++i) {
-                if (i % folds != f) {
-                    idx[nt++] = i;
-                }
-            }
-            tf_resonant_modes t;
-            if (tf_resonant_fit_modes_from(d, idx, nt, k, &b, TF_RESONANT_CV_STARTS, &t, err,
-                                           errlen) != 0) {
-                break;
-            }
-            for (size_t i = 0; i < n; ++i) {
-                if (i % folds == f) {
-                    idx[nv++] = i;
-                }
-            }
-            const double r = tf_resonant_modes_rms(d, idx, nv, &t);
-            sum2 += r * r * (double)nv;
-            count += nv;
-        }
-        if (count == n) {
-            cv[k] = sqrt(sum2 / (double)n);
-        }
-    }
-    free(idx);
     *best = (int)tf_family_cheapest_within(cv, 0, TF_RESONANT_SEARCH_MODES);
     if (!isfinite(cv[*best])) {
         snprintf(err, errlen, "%s: resonant: no number of modes is determined by %zu histories",
