@@ -47,3 +47,49 @@ check-physics: $(T)/physics/physics_check $(T)/physics/seed_map $(T)/solver/calc
 	out=$$($(T)/solver/calculix_compare --scene coeffs/block48.yaml --levels "$$grid" \
 	  --max-err61 0.02) || { echo "$$out"; exit 1; }; \
 	echo "$$out" | awk -F, 'NR > 1 { printf "ok: block48 %s, %s: node 61 %.2f %% off CalculiX (u = %s, %s, %s mm; bound 2 %%)\n", $$2, $$4, 100 * $$11, $$5, $$6, $$7 }'
+
+# The nonlinear shipped headers (issue 14): block48_nh against CalculiX
+# NLGEOM (tests/calculix/data/block48_nh_physics.csv: the reference stops at
+# 0.7 of the 3 N along -z, so the figure covers forces to 70 % of the
+# envelope's radius, and says so), block48_ve against its refinement study
+# (tests/physics/data/block48_ve_physics.csv, make physics-ve-reference).
+# physics_check solves each case in load levels, another route than the
+# tool's one solve from rest; a copy of each header with its figure lowered
+# by 1 % must be caught.
+PHYSICS_NONLINEAR := block48_nh:tests/calculix/data/block48_nh_physics.csv \
+  block48_ve:tests/physics/data/block48_ve_physics.csv
+
+.PHONY: check-physics-nonlinear
+CHECKS += check-physics-nonlinear
+check-physics-nonlinear: $(T)/physics/physics_check
+	@echo "== shipped nonlinear headers: the error against the physics is not understated =="
+	@mkdir -p $(T)/physics/under
+	@set -e; for e in $(PHYSICS_NONLINEAR); do n=$${e%%:*}; ref=$${e#*:}; \
+	  $< coeffs/$$n.yaml coeffs/$$n.h $$ref; \
+	  awk '/_FORWARD_DISCRETISATION_MAX_MM/ {$$3 = $$3 * 0.99} {print}' coeffs/$$n.h \
+	    > $(T)/physics/under/$$n.h; \
+	  if $< coeffs/$$n.yaml $(T)/physics/under/$$n.h $$ref > /dev/null 2>&1; then \
+	    echo "physics_check accepted a $$n.h whose figure is 1 % too low"; exit 1; fi; \
+	  echo "ok: $$n.h states its discretisation error (recomputed; a 1 % understatement is caught)"; \
+	done
+
+# block48_ve's reference: the relaxed equilibrium (the largest displacement
+# a force reaches in the Kelvin law) under 1 N along -z on the finer cloud
+# tests/physics/block48_ve_fine.yaml, at the 121 output points (seconds;
+# the committed files are its output).  -z only: the lateral 1 N cases did
+# not converge on the finer cloud (modified or full Newton, 21 x 21 x 5
+# graded or uniform) within 4-5 minutes, so they are not measured
+# (docs/fitting.md §7.6).
+PHYSICS_VE_DATA := tests/physics/data
+.PHONY: physics-ve-reference
+physics-ve-reference: $(B)/bin/tissuefit
+	@mkdir -p $(PHYSICS_VE_DATA)
+	@set -e; printf 'fx,fy,fz,file\n' > $(PHYSICS_VE_DATA)/block48_ve_physics.csv.tmp; \
+	for c in fz:0,0,-1; do a=$${c%%:*}; f=$${c#*:}; \
+	  out=$(PHYSICS_VE_DATA)/block48_ve_fine_$$a.csv; \
+	  $(B)/bin/tissuefit -q solve tests/physics/block48_ve_fine.yaml --force $$f -o /dev/null \
+	    --outputs $$out.tmp; \
+	  sed '1s/^output,/node,/' $$out.tmp > $$out; rm -f $$out.tmp; \
+	  echo "$$f,block48_ve_fine_$$a.csv" >> $(PHYSICS_VE_DATA)/block48_ve_physics.csv.tmp; \
+	  echo "wrote $$out"; done; \
+	mv $(PHYSICS_VE_DATA)/block48_ve_physics.csv.tmp $(PHYSICS_VE_DATA)/block48_ve_physics.csv

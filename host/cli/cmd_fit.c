@@ -279,9 +279,15 @@ static void state_physics(const tf_discretisation *d, const tf_envelope *env, tf
     const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
     fwd->discretisation_max = d->max_mm;
     con->discretisation_max = d->site_rel * biggest;
+    char reach[128] = "";
+    if (!d->enveloped) { /* a nonlinear solve: only where the reference's cases reach */
+        snprintf(reach, sizeof reach, " (forces up to %.3g %% of the envelope's radius %.3g N; "
+                 "not measured beyond)", 100 * d->reach, env->radius);
+    }
     snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
-             "%s, %zu load case%s at %zu points, %s", d->source, d->cases, d->cases == 1 ? "" : "s",
-             d->points, d->enveloped ? "bound over the envelope (linear)" : "largest over the cases");
+             "%s, %zu load case%s at %zu points, %s%s", d->source, d->cases,
+             d->cases == 1 ? "" : "s", d->points,
+             d->enveloped ? "bound over the envelope (linear)" : "largest over the cases", reach);
     snprintf(con->discretisation_note, sizeof con->discretisation_note,
              "%s: contact-site displacement off by %.3g %% (reference point %.3g mm from the "
              "site), times the largest force %.3g N",

@@ -40,7 +40,7 @@ typedef struct ticks {
 static void help(FILE *out)
 {
     fprintf(out, "usage: tissuefit replay SCENE --ticks FILE.csv [--png FILE.png]\n"
-                 "                        [--contact NAME] [--set KEY=VALUE]...\n\n"
+                 "                        [--first N] [--max-error-mm X] [--contact NAME] [--set KEY=VALUE]...\n\n"
                  "Solves the force of every tick logged by the native haptic loop\n"
                  "(HAPTIC_CSV=FILE.csv) and prints the largest deviation of the logged\n"
                  "output displacements from the solve (mm).  Forces beyond the envelope\n"
@@ -48,6 +48,8 @@ static void help(FILE *out)
                  "Options:\n"
                  "  --ticks FILE.csv   the haptic loop's log\n"
                  "  --png FILE.png     the deformed output surface at the deepest tick\n"
+                 "  --first N          only the first N ticks (a short check of a long run)\n"
+                 "  --max-error-mm X   fail (exit 1) when the largest deviation exceeds X mm\n"
                  "  --contact NAME     contact site (default: the scene's fit.contact)\n"
                  "  --set KEY=VALUE    override a scene value (repeatable)\n");
 }
@@ -256,11 +258,44 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
     return rc;
 }
 
+/* A nonlinear static solver: every distinct force of the ticks solved once,
+ * in tick order, each continuing from the last distinct force's solution
+ * (a tick's force differs little from the previous tick's, so Newton's
+ * method starts near the answer; the solver falls back to load steps from
+ * rest when the polish fails, e.g. at the jump to the envelope's edge).  A
+ * tick whose force equals an earlier tick's bit for bit takes that solve.
+ * *solves: the distinct forces solved.  Returns 0, or -1 with a message. */
+static int solve_continued(tf_solver *solver, int contact, const double *forces, size_t n,
+                           double *u, size_t *solves)
+{
+    const size_t dofs = 3 * tf_solver_node_count(solver);
+    const double *prev = NULL;
+    *solves = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double *f = forces + 3 * i;
+        size_t same = i;
+        for (size_t j = 0; j < i && same == i; ++j) {
+            same = memcmp(forces + 3 * j, f, 3 * sizeof *f) == 0 ? j : i;
+        }
+        if (same < i) {
+            memcpy(u + i * dofs, u + same * dofs, dofs * sizeof *u);
+            continue;
+        }
+        if (tf_solver_solve(solver, contact, (const double(*)[3])f, 1, prev, u + i * dofs) != 0) {
+            return -1;
+        }
+        prev = u + i * dofs;
+        ++*solves;
+    }
+    return 0;
+}
+
 /* Compares every tick; fills *worst_tick, the deviation, and the deepest tick. */
 static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int contact,
-                   const ticks *t, double tick, const char *png)
+                   const ticks *t, double tick, const char *png, double bound)
 {
     const int timed = (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) != 0;
+    const int affine = (tf_solver_caps_of(solver) & TF_SOLVER_AFFINE) != 0;
     const size_t n_out = s->outputs.n_nodes, dofs = 3 * tf_solver_node_count(solver);
     double *forces = malloc(t->n * 3 * sizeof *forces), *u = malloc(t->n * dofs * sizeof *u);
     if (forces == NULL || u == NULL) {
@@ -279,9 +314,11 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     }
     /* the solve's displacements at the outputs (nodes, or points between them) */
     double *v = malloc(t->n * 3 * n_out * sizeof *v);
+    size_t solves = t->n;
     int rc = v == NULL ? -1
              : timed ? tf_solver_history(solver, contact, (const double(*)[3])forces, t->n, tick, u)
-                     : tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u);
+             : affine ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u)
+                      : solve_continued(solver, contact, forces, t->n, u, &solves);
     for (size_t i = 0; rc == 0 && i < t->n; ++i) {
         rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
                               sizeof ctx->err);
@@ -293,8 +330,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         free(v);
         return TF_EXIT_FAIL;
     }
-    double worst = 0, deepest = -1, peak = 0;
-    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0;
+    double worst = 0, deepest = -1, peak = 0, sum2 = 0;
+    size_t worst_tick = 0, deep_tick = 0, rejected = 0, bad_zero = 0, not_finite = 0, terms = 0;
     size_t first_bad = 0;
     for (size_t i = 0; i < t->n; ++i) {
         const double *row = t->v + i * t->cols, *out = row + META_COLUMNS, *vi = v + i * 3 * n_out;
@@ -313,6 +350,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
                     first_bad = not_finite++ ? first_bad : i;
                     continue;
                 }
+                sum2 += e * e;
+                terms++;
                 if (e > worst) {
                     worst = e;
                     worst_tick = i;
@@ -332,15 +371,26 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
            t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
-    if (timed && peak > 0) {
-        printf("replay: that is %.3g %% of the peak displacement\n", 100 * worst / peak);
+    if (!affine && !timed) {
+        printf("replay: the solver is nonlinear: %zu distinct forces solved, each continuing from "
+               "the previous one; peak displacement %.4g mm\n", solves, peak);
+    }
+    if (!affine && peak > 0) {
+        const double rms = terms ? sqrt(sum2 / (double)terms) : 0;
+        printf("replay: that is %.3g %% of the peak displacement; RMS over the ticks' output "
+               "components %.3g mm (%.3g %% of the peak)\n", 100 * worst / peak, rms,
+               100 * rms / peak);
     }
     if (not_finite > 0) {
         tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
                  "tick %zu): the deviation above covers only the finite ones",
                  not_finite, first_bad);
     }
-    rc = bad_zero || not_finite ? TF_EXIT_FAIL : TF_EXIT_OK;
+    if (worst > bound) {
+        tf_error(ctx, "replay: the largest deviation %.3g mm (tick %zu) exceeds --max-error-mm %g",
+                 worst, worst_tick, bound);
+    }
+    rc = bad_zero || not_finite || worst > bound ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
         rc = draw(ctx, png, s, solver, u + deep_tick * dofs, v + deep_tick * 3 * n_out, deep_tick,
                   forces + 3 * deep_tick, contact) == 0
@@ -356,13 +406,37 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     return rc;
 }
 
+/* --max-error-mm X: a positive number, the whole argument. */
+static int parse_bound(const char *arg, double *x)
+{
+    char *end;
+    *x = strtod(arg, &end);
+    return end != arg && *end == '\0' && *x > 0 && isfinite(*x) ? 0 : -1;
+}
+
+/* --first N: a positive count, the whole argument. */
+static int parse_first(const char *arg, size_t *n)
+{
+    char *end;
+    unsigned long v = strtoul(arg, &end, 10);
+    if (end == arg || *end != '\0' || arg[0] == '-' || v == 0) {
+        return -1;
+    }
+    *n = (size_t)v;
+    return 0;
+}
+
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
     static const struct option opts[] = {{"ticks", required_argument, NULL, 't'},
                                          {"png", required_argument, NULL, 'p'},
                                          {"contact", required_argument, NULL, 'c'},
                                          {"set", required_argument, NULL, 's'},
+                                         {"first", required_argument, NULL, 'n'},
+                                         {"max-error-mm", required_argument, NULL, 'm'},
                                          {0}};
+    size_t first = 0;
+    double bound = INFINITY;
     const char *csv = NULL, *png = NULL, *contact_name = NULL;
     tf_sets sets = {0};
     int c, rc = TF_EXIT_USAGE;
@@ -376,6 +450,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         } else if (c == 'c') {
             contact_name = optarg;
         } else if (c == 's' && tf_sets_add(&sets, optarg) == 0) {
+            continue;
+        } else if (c == 'n' && parse_first(optarg, &first) == 0) {
+            continue;
+        } else if (c == 'm' && parse_bound(optarg, &bound) == 0) {
             continue;
         } else {
             tf_error(ctx, "replay: bad option '%s' (see tissuefit replay --help)",
@@ -403,6 +481,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_error(ctx, "replay: %s has %zu output points, the scene's outputs %zu", csv,
                  (t.cols - META_COLUMNS) / 3, p->outputs.n_nodes);
     } else {
+        t.n = first > 0 && first < t.n ? first : t.n;
         int k = contact_name ? tf_problem_contact(p, contact_name) : s->fit.contact;
         if (k < 0) {
             tf_error(ctx, "replay: %s has no such contact site", argv[optind]);
@@ -410,7 +489,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
             tf_error(ctx, "replay: %s", ctx->err);
             rc = TF_EXIT_FAIL;
         } else {
-            rc = compare(ctx, p, solver, k, &t, 1e-9 * s->fit.tick_ns, png);
+            rc = compare(ctx, p, solver, k, &t, 1e-9 * s->fit.tick_ns, png, bound);
         }
     }
     tf_solver_destroy(solver);

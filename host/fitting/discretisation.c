@@ -229,6 +229,7 @@ static int compare(tf_solver *s, const tf_problem *p, int contact, ref_case *c, 
             rc = -1;
         } else {
             rc = case_error(s, contact, &c[k], diff[k], err, errlen);
+            out->reach = fmax(out->reach, off / p->envelope.radius);
         }
         for (size_t i = 0; rc == 0 && i < 3 * c[k].np; ++i) {
             out->max_mm = fmax(out->max_mm, fabs(diff[k][i]));

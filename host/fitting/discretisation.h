@@ -16,7 +16,9 @@
  * force, e(F) = E F, and its largest component over the envelope
  * |F - c| <= R is max_i (R |E_i| + |E_i . c|); otherwise it is the largest
  * component error over the reference's cases, each of which must lie in
- * the envelope.  The contact site's figure is the relative error of its
+ * the envelope (a reference that stops early, as CalculiX NLGEOM does under
+ * block48's patch, covers only part of it: reach says how far).  The
+ * contact site's figure is the relative error of its
  * displacement (the compliance the contact inverse inverts), at the
  * reference point nearest the site.
  */
@@ -33,6 +35,8 @@ typedef struct tf_discretisation {
     double site_gap;  /* distance from the contact node to the nearest reference point, mm */
     size_t cases, points;
     int enveloped;    /* 1: max_mm bounds the whole envelope (linear); 0: the cases only */
+    double reach;     /* the cases' largest |F - centre| / radius: how far into the
+                       * envelope a nonlinear solve's figure was measured */
     char source[256]; /* the index file, as given */
 } tf_discretisation;
 
