@@ -39,6 +39,12 @@ demo: $(B)/bin/tissuefit $(B)/lib/libtfit.a | deps-demo
 # bound for block48_nh (FORWARD_BOUND_block48_nh, coeffs/coeffs.mk); a
 # tenth of that bound must be refused.
 DEMO_NH := $(DEMO)/nh
+# $(call demo_results,DIR,NAME): a demo's haptic-loop summary (without this
+# machine's timings) and replay, and the replay's picture, committed as
+# docs/reports/NAME.txt and NAME.png.
+demo_results = mkdir -p $(REPORTS) && sed -n '1p' $(1)/haptic.txt | sed 's/; [0-9]* ns per tick.*//' | \
+  cat - $(1)/replay.txt | sed 's|$(1)/deformed.png|$(REPORTS)/$(2).png|' > $(REPORTS)/$(2).txt && \
+  cp $(1)/deformed.png $(REPORTS)/$(2).png && echo "results: $(REPORTS)/$(2).txt and .png"
 NH_CHECK_TICKS := 100
 
 $(DEMO_NH)/haptic: coeffs/block48_nh.h $(B)/lib/libtfit.a $(DEMO_LOOP) | deps-demo
@@ -56,12 +62,7 @@ demo-nh: $(B)/bin/tissuefit $(DEMO_NH)/haptic | deps-demo
 	@echo "== 3. every tick against a true nonlinear solve (continuation) =="
 	$(Q)$(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/ticks.csv \
 	  --png $(DEMO_NH)/deformed.png | tee $(DEMO_NH)/replay.txt
-	@mkdir -p $(REPORTS)
-	$(Q)sed -n '1p' $(DEMO_NH)/haptic.txt | sed 's/ [0-9]* ns per tick.*//' | \
-	  cat - $(DEMO_NH)/replay.txt | sed 's|$(DEMO_NH)/deformed.png|docs/reports/block48_nh_demo.png|' \
-	  > $(REPORTS)/block48_nh_demo.txt
-	$(Q)cp $(DEMO_NH)/deformed.png $(REPORTS)/block48_nh_demo.png
-	@echo "results: $(REPORTS)/block48_nh_demo.txt and .png"
+	$(Q)$(call demo_results,$(DEMO_NH),block48_nh_demo)
 
 CHECKS += check-demo-nh
 check-demo-nh: $(B)/bin/tissuefit $(DEMO_NH)/haptic

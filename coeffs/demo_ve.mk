@@ -9,7 +9,7 @@
 #   3. tissuefit replay: the same 1,000 forces time-stepped from rest by the
 #      Newton solver at every tick (about 1,000 steps: a minute or more of
 #      CPU) and the largest deviation of the firmware's outputs.
-# Results: docs/fitting.md §7.6.
+# Results: docs/reports/block48_ve_demo.txt and .png (committed), docs/fitting.md §7.6.
 
 DEMO_VE := $(B)/demo_ve
 
@@ -21,7 +21,8 @@ demo-ve: $(B)/bin/tissuefit $(B)/lib/libtfit.a | deps-demo
 	$(Q)$(CC) $(HOST_STRICT) -O2 -DHAPTIC_SCRIPT_PRESS_HOLD -Itarget/include -Itarget/examples \
 	  -I$(DEMO_VE) -Icoeffs $(DEMO_LOOP) $(B)/lib/libtfit.a -o $(DEMO_VE)/haptic
 	@echo "== 2. 1,000 ticks of 1 ms: press, hold (creep), release =="
-	$(Q)HAPTIC_CSV=$(DEMO_VE)/ticks.csv $(DEMO_VE)/haptic
+	$(Q)HAPTIC_CSV=$(DEMO_VE)/ticks.csv $(DEMO_VE)/haptic | tee $(DEMO_VE)/haptic.txt
 	@echo "== 3. every tick against the time-stepped solve =="
 	$(Q)$(B)/bin/tissuefit -q replay coeffs/block48_ve.yaml --ticks $(DEMO_VE)/ticks.csv \
-	  --png $(DEMO_VE)/deformed.png
+	  --png $(DEMO_VE)/deformed.png | tee $(DEMO_VE)/replay.txt
+	$(Q)$(call demo_results,$(DEMO_VE),block48_ve_demo)
