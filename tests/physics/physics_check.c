@@ -114,6 +114,23 @@ static int verdict(const char *header, const char *scene_name, double worst, dou
     return bad;
 }
 
+/* The scene and its solver, quiet but for warnings; NULL (the message
+ * printed) when the scene does not load, *solver NULL when it does not build. */
+static tf_scene *scene_and_solver(const char *path, tf_ctx *ctx, tf_solver **solver)
+{
+    char err[1024];
+    tf_scene *s = tf_scene_load(path, NULL, 0, err, sizeof err);
+    *solver = NULL;
+    if (s == NULL) {
+        fprintf(stderr, "physics_check: %s\n", err);
+        return NULL;
+    }
+    tf_ctx_init(ctx);
+    ctx->level = TF_LOG_WARN;
+    *solver = tf_solver_create(&s->problem, NULL, ctx);
+    return s;
+}
+
 /* The reference point on the contact node, or -1. */
 static long site_point(const tf_solver *sv, const tf_problem *p, const points *ref)
 {
@@ -170,7 +187,7 @@ static int nonlinear_case(tf_solver *sv, const tf_problem *p, const double f[3],
 static int check_nonlinear(const char *scene, const char *header, const char *index)
 {
     FILE *fp = fopen(index, "r");
-    char line[1024], file[512], path[1100], err[1024];
+    char line[1024], file[512], path[1100];
     const char *slash = strrchr(index, '/');
     const int dir = slash ? (int)(slash - index + 1) : 0;
     static points ref[MAX_CASES];
@@ -193,17 +210,14 @@ static int check_nonlinear(const char *scene, const char *header, const char *in
         }
     }
     fclose(fp);
-    tf_scene *s = tf_scene_load(scene, NULL, 0, err, sizeof err);
-    if (s == NULL || n == 0) {
-        fprintf(stderr, "physics_check: %s\n", s ? "no reference cases" : err);
-        tf_scene_free(s);
+    tf_ctx ctx;
+    tf_solver *sv;
+    tf_scene *s = n > 0 ? scene_and_solver(scene, &ctx, &sv) : NULL;
+    if (s == NULL) {
+        fprintf(stderr, "%s", n > 0 ? "" : "physics_check: no reference cases\n");
         return 2;
     }
     const tf_problem *p = &s->problem;
-    tf_ctx ctx;
-    tf_ctx_init(&ctx);
-    ctx.level = TF_LOG_WARN;
-    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     double worst = 0, site = 0;
     int rc = sv ? 0 : -1;
     for (size_t k = 0; rc == 0 && k < n; ++k) {
@@ -241,16 +255,13 @@ int main(int argc, char **argv)
         }
     }
     char err[1024];
-    tf_scene *s = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_solver *sv;
+    tf_scene *s = scene_and_solver(argv[1], &ctx, &sv);
     if (s == NULL) {
-        fprintf(stderr, "physics_check: %s\n", err);
         return 2;
     }
     const tf_problem *p = &s->problem;
-    tf_ctx ctx;
-    tf_ctx_init(&ctx);
-    ctx.level = TF_LOG_WARN;
-    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     const size_t dofs = 3 * p->cloud.n, np = ref[0].n;
     static const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
     double *u = malloc(3 * dofs * sizeof *u), *grad = malloc(9 * np * sizeof *grad);
