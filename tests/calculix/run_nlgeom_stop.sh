@@ -10,7 +10,8 @@
 #   NL_STOP_RUNS  "name:fine:least:layers:element:min_fraction ..." (box_deck
 #                 --grade fine:least --layers L --layer-ratio 1.6 --element E
 #                 --min-fraction M)
-# DATA (tests/calculix/data) gets, after every run ended:
+# DATA (tests/calculix/data) gets, after each run (the runs so far: a long
+# study stopped part way keeps what it measured):
 #   block48_nl_stop.csv        run,element,fine,least,layers,patch_mm,min_fraction,
 #                              dofs,increments,cutbacks,iterations,reached,seconds
 #   block48_nl_stop_field.csv  run,factor,converged,uz,centre,least (node 61's
@@ -60,6 +61,9 @@ EOT
         awk -F, -v OFS=, -v run="$run" -v reached="$reached" \
             '{ print run, $1, ($1 <= reached + 1e-9 ? 1 : 0), $2, $3, $4 }' >> "$tmp/field.csv"
     echo "calculix: $run: reached $reached" >&2
+    for f in stop field; do
+        name=block48_nl_stop.csv
+        [ "$f" = stop ] || name=block48_nl_stop_field.csv
+        cp "$tmp/$f.csv" "$data/$name.new" && mv "$data/$name.new" "$data/$name"
+    done
 done
-mv "$tmp/stop.csv" "$data/block48_nl_stop.csv"
-mv "$tmp/field.csv" "$data/block48_nl_stop_field.csv"
