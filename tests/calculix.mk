@@ -159,6 +159,20 @@ calculix-nlgeom: $(CX)/box_deck | deps-calculix
 	  tests/calculix/run_nlgeom.sh $< $(CX)/nl $(CX_DATA)
 	@$(MAKE) --no-print-directory calculix-nlgeom-report check-calculix-nlgeom
 
+# Why the graded meshes with 0.6 mm elements under the patch stop near 0.79
+# of path a (docs/calculix-reference.md, "Why the fine levels stop"): neo-Hooke
+# path a on graded meshes name:fine:least:layers:element:min_fraction, every
+# node's displacement at the printed levels, the top surface's compression
+# under the load centre (tests/calculix/run_nlgeom_stop.sh; data
+# block48_nl_stop*.csv).  About an hour of CalculiX on the loaded machine
+# (6:1, 42k DOFs, most of it).
+CALCULIX_NL_STOP_RUNS := stop_g4.1:4:1:4:C3D20:1e-2 stop_g4.1_C3D20R:4:1:4:C3D20R:1e-2 \
+  stop_g6.1:6:1:5:C3D20:1e-2
+.PHONY: calculix-nlgeom-stop
+calculix-nlgeom-stop: $(CX)/box_deck | deps-calculix
+	$(Q)NL_STOP_RUNS="$(CALCULIX_NL_STOP_RUNS)" tests/calculix/run_nlgeom_stop.sh $< $(CX)/nl_stop $(CX_DATA)
+	@awk -F, -f tests/calculix/nl_stop_table.awk $(CX_DATA)/block48_nl_stop.csv $(CX_DATA)/block48_nl_stop_field.csv
+
 # docs/calculix-nlgeom.png and build/calculix/nl_tables.md from the committed data
 calculix-nlgeom-report: | deps-calculix-plot
 	@mkdir -p $(CX)

@@ -93,7 +93,8 @@
 #define MAX_CASES 4 /* fx, fy, fz and a --force path */
 #define PATH_CASE 3
 /* Smallest increment CalculiX may cut back to, relative to the interval
- * between printed load levels, before it gives up. */
+ * between printed load levels, before it gives up (--min-fraction changes
+ * it, to tell an increment-control stop from a loss of stability). */
 #define MIN_FRACTION 1e-2
 /* Graded meshes (--grade): elements per quantum fall by this factor per
  * quantum of distance from the patch, down to the given minimum. */
@@ -133,6 +134,9 @@ typedef struct {
     int nlgeom;       /* 1: geometrically nonlinear steps */
     int increments;   /* printed load levels per step (NLGEOM) */
     double tolerance; /* Newton residual and correction criteria (NLGEOM) */
+    double min_fraction; /* smallest increment / level interval (NLGEOM) */
+    int min_given;       /* --min-fraction was given */
+    int field;        /* 1: displacements of every node at the printed levels */
     int cases[MAX_CASES];
     int ncases;
     int grade_fine, grade_min; /* --grade FINE:MIN (0: uniform, --divisions) */
@@ -473,8 +477,9 @@ static void write_step(const deck *d, int step, const double *w)
         /* automatic increments of at most one load level; INC caps their
          * number (default 100) */
         double dt = 1.0 / d->increments;
-        printf("*STEP, NLGEOM, INC=%d\n*STATIC\n%.15g,1.,%.15g,%.15g\n", 100 * d->increments, dt,
-               dt * MIN_FRACTION, dt);
+        double inc = 100.0 * d->increments * fmax(1.0, MIN_FRACTION / d->min_fraction);
+        printf("*STEP, NLGEOM, INC=%d\n*STATIC\n%.15g,1.,%.15g,%.15g\n", (int)fmin(inc, 1e6), dt,
+               dt * d->min_fraction, dt);
         printf("*CONTROLS, PARAMETERS=FIELD\n%.3e,%.3e,,,%.3e\n", d->tolerance, d->tolerance,
                d->tolerance);
     } else {
@@ -508,6 +513,9 @@ static void write_step(const deck *d, int step, const double *w)
             printf("*NODE PRINT, NSET=SYM%c, TOTALS=ONLY%s\nRF\n", plane == SYM_X ? 'X' : 'Y', points);
         }
     }
+    if (d->field) {
+        printf("*NODE FILE%s\nU\n", points);
+    }
     printf("*END STEP\n");
 }
 
@@ -519,7 +527,7 @@ static void usage(FILE *out)
             "                [--element C3D20R|C3D20] [--cases fx,fy,fz | --force FX,FY,FZ]\n"
             "                [--pressure | --point] [--symmetry x|y|xy]\n"
             "                [--material elastic|neohooke] [--nlgeom [--increments K]\n"
-            "                [--tolerance T]]   > deck.inp\n"
+            "                [--tolerance T] [--min-fraction M]] [--field]   > deck.inp\n"
             "  --scene S      block48 (default) or beam40\n"
             "  --divisions N  elements along x, a multiple of 20 (block48) or 16 (beam40)\n"
             "  --layers L     elements through the thickness\n"
@@ -540,7 +548,11 @@ static void usage(FILE *out)
             "                 neohooke (C10 = mu/2, D1 = 2/K; needs --nlgeom)\n"
             "  --nlgeom       large deformation, the load ramped from zero\n"
             "  --increments K printed load levels per step (default 10; with --nlgeom)\n"
-            "  --tolerance T  Newton residual and correction ratios (default 1e-6)\n");
+            "  --tolerance T  Newton residual and correction ratios (default 1e-6)\n"
+            "  --min-fraction M  smallest increment CalculiX may cut to, as a fraction\n"
+            "                 of a load level (default 1e-2; with --nlgeom)\n"
+            "  --field        every node's displacement to the .frd (at the printed\n"
+            "                 levels with --nlgeom)\n");
 }
 
 static int parse_cases(deck *d, const char *list)
@@ -620,14 +632,17 @@ static int parse_symmetry(deck *d, const char *s)
  * and a load path excludes the unit cases. */
 static int check_nonlinear(deck *d, int cases_and_force)
 {
-    if (cases_and_force || ((d->increments != 0 || d->tolerance != 0) && !d->nlgeom) ||
+    if (cases_and_force ||
+        ((d->increments != 0 || d->tolerance != 0 || d->min_given) && !d->nlgeom) ||
         (d->material == MAT_NEOHOOKE && !d->nlgeom) || (d->nlgeom && d->load == LOAD_PRESSURE)) {
         return -1;
     }
     if (d->nlgeom) {
         d->increments = d->increments == 0 ? 10 : d->increments;
         d->tolerance = d->tolerance == 0 ? 1e-6 : d->tolerance;
-        if (d->increments < 1 || d->increments > 1000 || !(d->tolerance > 0 && d->tolerance < 0.1)) {
+        d->min_fraction = d->min_given ? d->min_fraction : MIN_FRACTION;
+        if (d->increments < 1 || d->increments > 1000 || !(d->tolerance > 0 && d->tolerance < 0.1) ||
+            !(d->min_fraction >= 1e-9 && d->min_fraction <= 1)) {
             return -1;
         }
     }
@@ -759,7 +774,8 @@ static int parse_args(deck *d, int argc, char **argv)
         {"nlgeom", no_argument, NULL, 'g'},          {"increments", required_argument, NULL, 'i'},
         {"tolerance", required_argument, NULL, 't'}, {"scene", required_argument, NULL, 's'},
         {"symmetry", required_argument, NULL, 'y'},  {"grade", required_argument, NULL, 'G'},
-        {"layer-ratio", required_argument, NULL, 'r'}, {NULL, 0, NULL, 0}};
+        {"layer-ratio", required_argument, NULL, 'r'}, {"min-fraction", required_argument, NULL, 'M'},
+        {"field", no_argument, NULL, 'F'},           {NULL, 0, NULL, 0}};
     *d = (deck){.sc = &scenes[0], .nu = 0.49, .element = "C3D20R", .layer_ratio = 1};
     parse_cases(d, "fx,fy,fz");
     int cases_given = 0, force_given = 0;
@@ -777,6 +793,8 @@ static int parse_args(deck *d, int argc, char **argv)
         case 'g': d->nlgeom = 1; break;
         case 'i': d->increments = (int)strtol(optarg, &end, 10); if (*end) return -1; break;
         case 't': d->tolerance = strtod(optarg, &end); if (*end) return -1; break;
+        case 'M': d->min_fraction = strtod(optarg, &end); if (*end) return -1; d->min_given = 1; break;
+        case 'F': d->field = 1; break;
         case 'y': if (parse_symmetry(d, optarg) != 0) return -1; break;
         case 'G': if (parse_grade(d, optarg) != 0) return -1; break;
         case 'r': d->layer_ratio = strtod(optarg, &end); if (*end) return -1; break;

@@ -118,6 +118,20 @@ awk -F, '
         exit bad
     }' "$tmp/half.inp" || fails=$((fails + 1))
 
+# the smallest increment, a fraction of a load level (default 1e-2,
+# --min-fraction), and every node's displacement at the levels (--field)
+deck minf --divisions $n --layers $l --symmetry xy --force 0,0,-3 --nlgeom --min-fraction 1e-4 --field
+for f in half:7:0.01:0 minf:10:0.0001:1; do
+    IFS=: read -r name k frac field <<EOT
+$f
+EOT
+    awk -F, -v k="$k" -v frac="$frac" -v field="$field" '
+        /^\*STATIC/ { getline; d = $3 / ($1 * frac) - 1; ok = $1 == $4 && d * d < 1e-20 && $1 * k > 0.999 && $1 * k < 1.001 }
+        /^\*NODE FILE, TIME POINTS=RAMP/ { getline; nf = $1 == "U" }
+        END { if (!ok || nf != field) { print "FAIL: " FILENAME ": smallest increment not " frac " of a level, or --field " (nf ? "written" : "missing"); exit 1 } }' \
+        "$tmp/$name.inp" || fails=$((fails + 1))
+done
+
 # block48 graded, quarter: --grade 4:1 puts 4, 3, 2, 2 and then 1 elements
 # in the 2.4 mm quanta from the patch outwards (0.7 times fewer per quantum,
 # rounded up), so 17 per half side; layers thinnest at the top, each 1.6
@@ -168,7 +182,9 @@ for args in "--divisions 30 --layers 2" "--divisions 20 --layers 0" "--divisions
             "--scene beam40 --divisions 20 --layers 2" "--scene beam40 --divisions 16 --layers 2 --symmetry x --cases fz" \
             "--scene liver --divisions 20 --layers 2" "--divisions 20 --layers 2 --nlgeom --tolerance 0.5" \
             "--divisions 20 --grade 4:1 --layers 2" "--grade 2:3 --layers 2" "--grade 4 --layers 2" \
-            "--grade 0:1 --layers 2" "--grade 4:1 --layers 2 --layer-ratio 0.5"; do
+            "--grade 0:1 --layers 2" "--grade 4:1 --layers 2 --layer-ratio 0.5" \
+            "--divisions 20 --layers 2 --min-fraction 1e-4" "--divisions 20 --layers 2 --nlgeom --min-fraction 0" \
+            "--divisions 20 --layers 2 --nlgeom --min-fraction 2" "--divisions 20 --layers 2 --nlgeom --min-fraction x"; do
     # shellcheck disable=SC2086
     "$tool" $args > "$tmp/bad.inp" 2> "$tmp/err"
     st=$?
