@@ -142,6 +142,31 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
     return 0;
 }
 
+tf_chol *tf_chol_copy(const tf_chol *c, char *err, size_t errlen)
+{
+    tf_chol *d = calloc(1, sizeof *d);
+    if (d == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    cholmod_start(&d->cm);
+    d->cm.print = 0;
+    d->cm.supernodal = c->cm.supernodal;
+    d->cm.final_ll = c->cm.final_ll;
+    d->cm.nmethods = 1;
+    d->cm.method[0] = c->cm.method[0];
+    d->cm.selected = c->cm.selected;
+    d->n = c->n;
+    d->l = cholmod_copy_factor(c->l, &d->cm);
+    if (d->l == NULL) {
+        snprintf(err, errlen, "CHOLMOD could not copy a factor (status %d)%s", d->cm.status,
+                 d->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        tf_chol_free(d);
+        return NULL;
+    }
+    return d;
+}
+
 double tf_chol_peak_bytes(const tf_chol *c) { return (double)c->cm.memory_usage; }
 
 const char *tf_chol_ordering(const tf_chol *c)
