@@ -85,6 +85,7 @@ typedef struct nl_solver {
     tf_chol *spare;     /* a second Cholesky handle (nl_linear.c: keeps_factor) */
     tf_chol *ldl;       /* LDL^T, when the tangent is not positive definite */
     int indef_kept;     /* the last tangent was not positive definite: an older factor kept */
+    int eager;          /* a load step of this case failed: BFGS refreshes sooner */
     int chol_ok;        /* holds a usable factor */
     int use_ldl;        /* the usable factor is the LDL^T one */
     tf_chol_info ci;
