@@ -85,8 +85,8 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
     return 0;
 }
 
-tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
-                         char *err, size_t errlen)
+/* A handle for n unknowns with CHOLMOD started, quiet; NULL with a message. */
+static tf_chol *chol_new(size_t n, char *err, size_t errlen)
 {
     tf_chol *c = calloc(1, sizeof *c);
     if (c == NULL) {
@@ -95,7 +95,17 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
     }
     cholmod_start(&c->cm);
     c->cm.print = 0;
-    c->n = a->n;
+    c->n = n;
+    return c;
+}
+
+tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
+                         char *err, size_t errlen)
+{
+    tf_chol *c = chol_new(a->n, err, errlen);
+    if (c == NULL) {
+        return NULL;
+    }
     if (ldl) {
         c->cm.supernodal = CHOLMOD_SIMPLICIAL;
         c->cm.final_ll = 0;
@@ -140,6 +150,27 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
         return -1;
     }
     return 0;
+}
+
+tf_chol *tf_chol_copy(const tf_chol *c, char *err, size_t errlen)
+{
+    tf_chol *d = chol_new(c->n, err, errlen);
+    if (d == NULL) {
+        return NULL;
+    }
+    d->cm.supernodal = c->cm.supernodal;
+    d->cm.final_ll = c->cm.final_ll;
+    d->cm.nmethods = 1;
+    d->cm.method[0] = c->cm.method[0];
+    d->cm.selected = c->cm.selected;
+    d->l = cholmod_copy_factor(c->l, &d->cm);
+    if (d->l == NULL) {
+        snprintf(err, errlen, "CHOLMOD could not copy a factor (status %d)%s", d->cm.status,
+                 d->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        tf_chol_free(d);
+        return NULL;
+    }
+    return d;
 }
 
 double tf_chol_peak_bytes(const tf_chol *c) { return (double)c->cm.memory_usage; }

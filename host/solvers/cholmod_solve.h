@@ -49,6 +49,12 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
  * other failures.  *t gets the seconds it took. */
 int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen);
 
+/* A copy of c's factor (its analysis with it): a second handle to
+ * refactorise into while c's factor stays usable, so that a matrix that
+ * turns out not positive definite costs no factor (a Newton solver keeps
+ * its last positive definite one).  Returns NULL with a message. */
+tf_chol *tf_chol_copy(const tf_chol *c, char *err, size_t errlen);
+
 /* CHOLMOD's rough reciprocal condition of the last factorisation. */
 double tf_chol_rcond(tf_chol *c);
 

@@ -156,17 +156,20 @@ int main(int argc, char **argv)
                    in->steps, (double)in->iterations / (double)(in->steps ? in->steps : 1),
                    in->factorisations, lin > 0 ? w / lin : 0);
             printf("\n      %s ordering, L %.3g entries; %zu residual and %zu tangent assemblies, "
-                   "%zu Krylov iterations, %zu LDL^T (indefinite); s: gradients %.2f, residuals %.2f, tangents %.2f, "
+                   "%zu Krylov iterations, %zu LDL^T, %zu indefinite kept; s: gradients %.2f, residuals %.2f, tangents %.2f, "
                    "factorisations %.2f, solves %.2f",
                    in->ordering ? in->ordering : "-", in->nnz_l, in->residuals, in->tangents,
-                   in->krylov, in->indefinite, in->t_gradients, in->t_residual, in->t_tangent, in->t_factor,
+                   in->krylov, in->indefinite, in->kept, in->t_gradients, in->t_residual, in->t_tangent, in->t_factor,
                    in->t_solve);
         }
         printf("\n");
     }
     if (ok[0] && ok[1]) {
-        printf("  goal (issue 13): 3 N neo-Hookean <= 3 x one linear solve: %.2f x (%s)\n",
-               median(wall[1], reps) / lin, median(wall[1], reps) <= 3 * lin ? "met" : "not met");
+        double lc = median(cpu[0], reps), nc = median(cpu[1], reps);
+        printf("  goal (issue 13): 3 N neo-Hookean <= 3 x one linear solve: %.2f x wall (%s), "
+               "%.2f x CPU (%s; the guide on a shared machine)\n",
+               median(wall[1], reps) / lin, median(wall[1], reps) <= 3 * lin ? "met" : "not met",
+               nc / lc, nc <= 3 * lc ? "met" : "not met");
     }
     return 0;
 }

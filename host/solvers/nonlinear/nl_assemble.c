@@ -157,15 +157,20 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
     for (size_t p = 0; p < np; ++p) {
         double *pt = b->pt + p * PT_STRIDE, *F = pt + PT_F;
         const double *Gp = G + 3 * p * m;
-        for (int a = 0; a < 3; ++a) {
-            for (int bb = 0; bb < 3; ++bb) {
-                double h = 0;
-                const double *g = Gp + (size_t)bb * m;
-                for (size_t i = 0; i < m; ++i) {
-                    h += b->dl[3 * i + (size_t)a] * g[i];
-                }
-                F[3 * a + bb] = h + (a == bb);
+        /* one pass over each gradient row for the three displacement
+         * components (the residual's hottest loop; each entry's sum is in
+         * the same order as one entry at a time, so the same bits) */
+        for (int bb = 0; bb < 3; ++bb) {
+            double h0 = 0, h1 = 0, h2 = 0;
+            const double *g = Gp + (size_t)bb * m, *dl = b->dl;
+            for (size_t i = 0; i < m; ++i) {
+                h0 += dl[3 * i] * g[i];
+                h1 += dl[3 * i + 1] * g[i];
+                h2 += dl[3 * i + 2] * g[i];
             }
+            F[bb] = h0 + (bb == 0);
+            F[3 + bb] = h1 + (bb == 1);
+            F[6 + bb] = h2 + (bb == 2);
         }
         double det = tf_det3(F);
         const double *hold = s->hist + (c * np + p) * s->hb;

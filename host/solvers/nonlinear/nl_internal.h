@@ -40,6 +40,7 @@ typedef struct nl_fault {
 /* Counters for the report and the benchmark. */
 typedef struct nl_stats {
     size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov, indefinite;
+    size_t kept; /* tangents found not positive definite while an older factor was kept */
     double t_residual, t_tangent, t_factor, t_solve;
 } nl_stats;
 
@@ -81,7 +82,10 @@ typedef struct nl_solver {
     double *f0, *basis; /* loads (3N), unit contact columns (3 x 3N per site) */
     /* linear algebra */
     tf_chol *chol;      /* Cholesky of the tangent */
+    tf_chol *spare;     /* a second Cholesky handle (nl_linear.c: keeps_factor) */
     tf_chol *ldl;       /* LDL^T, when the tangent is not positive definite */
+    int indef_kept;     /* the last tangent was not positive definite: an older factor kept */
+    int eager;          /* a load step of this case failed: BFGS refreshes sooner */
     int chol_ok;        /* holds a usable factor */
     int use_ldl;        /* the usable factor is the LDL^T one */
     tf_chol_info ci;

@@ -279,6 +279,7 @@ void nl_model_free(nl_solver *s)
     tf_constraints_release(&s->bc);
     tf_nodal_map_free(&s->map);
     tf_chol_free(s->chol);
+    tf_chol_free(s->spare);
     tf_chol_free(s->ldl);
     void *bufs[] = {s->gptr,  s->grad,  s->wts,       s->kskew, s->kbc,  s->d,      s->hist,
                     s->hist_new, s->bhist, s->bhist_new, s->bptr, s->bidx, s->bphi, s->bdphi,

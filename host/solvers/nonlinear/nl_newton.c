@@ -30,8 +30,14 @@
  * the laws, times a bulk modulus fifty times the shear one).  Once the
  * correction's energy is below ROUNDING_ENERGY of the first and the
  * residual has stopped falling, the iteration has converged as far as the
- * arithmetic allows. */
+ * arithmetic allows: with the residual within the tolerance, when it fell
+ * by less than half in the last iteration; above it, only when it has not
+ * come below the smallest of the step's earlier iterations
+ * STALL_ITERATIONS times in a row (BFGS with an older factor converges
+ * linearly with bumps, and the first rule alone stopped it at 1.2e-7 of
+ * the forces). */
 #define ROUNDING_ENERGY 1e-14
+#define STALL_ITERATIONS 3
 
 enum { WHY_ITER = 1, WHY_INVERTED, WHY_INDEFINITE };
 
@@ -68,6 +74,7 @@ void nl_reset(nl_solver *s)
     memset(s->hist, 0, s->ncell * s->np * s->hb * sizeof *s->hist);
     memset(s->bhist, 0, s->bnd.n * s->nh * sizeof *s->bhist);
     s->at = (nl_target){0, -1, {0, 0, 0}};
+    s->eager = 0;
 }
 
 /* Residual r(d) = internal + boundary - external, fixed DOFs zeroed; the
@@ -134,6 +141,20 @@ static int line_search(nl_solver *s, const double *d, const double *du, double s
     return residual(s, s->dtrial, t, dt, 0, fext, rt, ref, fault);
 }
 
+/* BFGS refactorises BFGS_PATIENCE iterations after its last factorisation
+ * at the earliest, and only when the correction's energy fell by less than
+ * a factor BFGS_STALL in the last iteration.  On the 3 N neo-Hookean
+ * block48 case (docs/validation.md §13) a tangent assembly and
+ * factorisation cost about as much as 10 (21 x 21 x 5) to 35 (41 x 41 x 9)
+ * BFGS iterations, so a refresh must save that many; measured (patience,
+ * stall): (4, 0.5) 3 factorisations and 22 iterations at 21 x 21 x 5, 4 and
+ * 34 at 31 x 31 x 7; (10, 0.9) 2 and 30, 3 and 33.  Once a step of the
+ * case has failed (a cut), the quicker rule (4, 0.5) again: the patient
+ * one failed test_homogeneous.c's cubes, whose steps are cut near a limit
+ * point. */
+#define BFGS_PATIENCE 10
+#define BFGS_STALL 0.9
+
 /* Does this iteration assemble a tangent?  Full Newton and Krylov always.
  * Modified Newton and BFGS keep their factorisation while it pays: they
  * assemble (and refactorise) when they have none, or when, at least
@@ -145,7 +166,8 @@ static int line_search(nl_solver *s, const double *d, const double *du, double s
  * so while the factorisation is the LDL^T of an indefinite one it takes
  * full Newton steps (St. Venant-Kirchhoff compressed to half its length
  * missed the closed form by 2e-8 otherwise, above test_homogeneous.c's
- * 1e-9). */
+ * 1e-9).  An indefinite tangent met while a Cholesky factor is held does
+ * not get that LDL^T at once (nl_linear.c: keeps_factor). */
 static int wants_tangent(const nl_solver *s, unsigned since, double ratio_e)
 {
     tf_tangent_kind k = s->base.opts.newton.tangent;
@@ -153,7 +175,11 @@ static int wants_tangent(const nl_solver *s, unsigned since, double ratio_e)
         return !s->chol_ok || (since >= 2 && ratio_e > 0.25);
     }
     if (k == TF_TANGENT_BFGS) {
-        return !s->chol_ok || s->use_ldl || (since >= 4 && ratio_e > 0.5);
+        if (s->eager) { /* a step failed in this case: main's quicker rule */
+            return !s->chol_ok || s->use_ldl || (since >= 4 && ratio_e > 0.5);
+        }
+        return !s->chol_ok || s->use_ldl ||
+               (since >= BFGS_PATIENCE && ratio_e > BFGS_STALL);
     }
     return 1;
 }
@@ -186,13 +212,14 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             d[i] = t->scale * s->bc.ubar[i];
         }
     }
-    double e0 = 0, e = 0, e_prev = 0, ref = 0, rn = 0;
-    unsigned since = 0;
+    double e0 = 0, e = 0, e_prev = 0, ref = 0, rn = 0, least = INFINITY;
+    unsigned since = 0, flat = 0;
     int have_r = 0, rc = 0, conv = 0;
     unsigned it;
     for (it = 0; it <= o->max_iter; ++it) {
         int tangent = it < o->max_iter && wants_tangent(s, since, e_prev > 0 ? e / e_prev : 0);
         double before = rn;
+        least = it > 0 ? fmin(least, rn) : least; /* of the earlier iterations */
         since = tangent ? 0 : since + 1;
         if (!have_r || tangent) {
             rc = residual(s, d, t, dt, tangent, fext, s->r, &ref, &f->fault);
@@ -204,7 +231,10 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             break;
         }
         rn = norm(s->r, n3);
-        int stalled = it >= 2 && rn > 0.5 * before && e <= ROUNDING_ENERGY * e0;
+        int at_floor = it >= 2 && e <= ROUNDING_ENERGY * e0;
+        flat = at_floor && rn >= least ? flat + 1 : 0;
+        int stalled = at_floor && ((rn <= o->rtol * ref && rn > 0.5 * before) ||
+                                   flat >= STALL_ITERATIONS);
         if ((rn <= o->rtol * ref && (it == 0 || e <= o->etol * e0)) || stalled) {
             conv = 1;
             break;
@@ -358,6 +388,12 @@ int nl_advance(nl_solver *s, const nl_target *to, double dt)
             step = iters <= 3 ? fmin(2 * dth, 1.0) : dth;
         } else if (rc == 1 && 0.5 * dth >= smallest * (1 - 1e-12)) {
             memcpy(s->d, saved, n3 * sizeof *saved);
+            s->eager = 1;
+            if (s->indef_kept) {
+                /* the kept factor did not lead to equilibrium: the next try
+                 * factorises its first tangent afresh (LDL^T if indefinite) */
+                s->chol_ok = 0;
+            }
             s->st.cuts++;
             step = 0.5 * dth;
             rc = 0;

@@ -275,6 +275,7 @@ int tf_nonlinear_info_of(const tf_solver *sv, tf_nonlinear_info *info)
         .tangents = st->tangents,
         .factorisations = st->factorisations,
         .indefinite = st->indefinite,
+        .kept = st->kept,
         .krylov = st->krylov,
         .t_gradients = s->t_setup_shape,
         .t_residual = st->t_residual,

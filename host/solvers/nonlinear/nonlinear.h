@@ -35,6 +35,8 @@ typedef struct tf_nonlinear_info {
     size_t factorisations, krylov;      /* numeric factorisations, Krylov iterations */
     size_t indefinite;                  /* of the factorisations, simplicial LDL^T ones of a
                                          * tangent that was not positive definite */
+    size_t kept;                        /* of the factorisations, attempts that found the tangent
+                                         * not positive definite: the older factor kept */
     double t_gradients;                 /* s: shape functions and gradients (once) */
     double t_residual, t_tangent, t_factor, t_solve; /* s, wall */
     double nnz_l;                       /* entries in the factor */

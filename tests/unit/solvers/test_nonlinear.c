@@ -277,6 +277,57 @@ static void every_strategy_reaches_the_same_equilibrium(void **state)
     }
 }
 
+/* BFGS and modified Newton keep their positive definite factor through a
+ * tangent that is not (nl_linear.c: keeps_factor): the attempt is counted,
+ * the factor and its solutions do not change; only a second indefinite
+ * tangent in a row gets the LDL^T factorisation; a positive definite one
+ * replaces the factor. */
+static void an_indefinite_tangent_keeps_the_factor(void **state)
+{
+    (void)state;
+    const char *sets[] = {SMALL_GRID, SMALL_NODE, "material.law=neo-hookean",
+                          "solver.newton.tangent=bfgs"};
+    run *r = open_run(sets, 4);
+    nl_solver *s = (nl_solver *)r->sv;
+    size_t n3 = 3 * r->scene->problem.cloud.n;
+    const double f[1][3] = {{0, 0, -0.5}};
+    double *u = malloc(n3 * sizeof *u), *b = malloc(n3 * sizeof *b);
+    double *x0 = malloc(n3 * sizeof *x0), *x1 = malloc(n3 * sizeof *x1);
+    assert_int_equal(tf_solver_solve(r->sv, 0, f, 1, NULL, u), 0);
+    assert_true(s->chol_ok && !s->use_ldl);
+    for (size_t i = 0; i < n3; ++i) {
+        b[i] = 1e-3 * (double)(i % 7) - 2e-3;
+    }
+    nl_qn_reset(s);
+    assert_int_equal(nl_linear_solve(s, b, x0, 0), 0);
+    size_t fact = s->st.factorisations, ldl = s->st.indefinite;
+    const tf_chol *held = s->chol;
+    for (size_t q = 0; q < s->k.nnz; ++q) { /* the tangent, negated: negative definite */
+        s->k.x[q] = -s->k.x[q];
+    }
+    assert_int_equal(nl_factor(s), 0);
+    assert_int_equal(s->st.kept, 1);
+    assert_int_equal(s->st.factorisations, fact + 1);
+    assert_int_equal(s->st.indefinite, ldl);
+    assert_ptr_equal(s->chol, held);
+    assert_true(s->chol_ok && !s->use_ldl);
+    assert_int_equal(nl_linear_solve(s, b, x1, 0), 0);
+    assert_memory_equal(x0, x1, n3 * sizeof *x0);
+    assert_int_equal(nl_factor(s), 0); /* indefinite again: now LDL^T */
+    assert_int_equal(s->st.indefinite, ldl + 1);
+    assert_true(s->use_ldl);
+    for (size_t q = 0; q < s->k.nnz; ++q) { /* positive definite again: a new Cholesky */
+        s->k.x[q] = -s->k.x[q];
+    }
+    assert_int_equal(nl_factor(s), 0);
+    assert_true(s->chol_ok && !s->use_ldl && !s->indef_kept);
+    free(u);
+    free(b);
+    free(x0);
+    free(x1);
+    close_run(r);
+}
+
 static void inversion_and_divergence_are_named(void **state)
 {
     (void)state;
@@ -319,6 +370,7 @@ int main(void)
         cmocka_unit_test(small_load_limit_is_the_linear_solution),
         cmocka_unit_test(a_start_is_continued_from),
         cmocka_unit_test(every_strategy_reaches_the_same_equilibrium),
+        cmocka_unit_test(an_indefinite_tangent_keeps_the_factor),
         cmocka_unit_test(inversion_and_divergence_are_named),
     };
     return cmocka_run_group_tests_name("nonlinear", tests, NULL, NULL);
