@@ -145,8 +145,8 @@ $(T)/gen/creep48.h: $(T)/prony/creep_fit tests/solver/block48_seed.yaml
 $(T)/prony/golden-creep48: tests/header/run_golden.c $(T)/gen/creep48.h $(B)/native/libtfit.a
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"creep48_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DTFIT_CREEP48_IMPLEMENTATION $< \
-	  $(B)/native/libtfit.a -o $@
+	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_CREEP48_GOLDEN_Q31_SETS \
+	  -DTFIT_CREEP48_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
 
 $(T)/prony/probe-creep48: tests/insncount/probe.c $(T)/gen/creep48.h $(B)/native/libtfit.a
 	$(call say,BUILD)
@@ -228,8 +228,8 @@ $(T)/prony/golden-block48_ve: tests/header/run_golden.c $(T)/gen/block48_ve.h $(
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"block48_ve_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DTFIT_BLOCK48_VE_IMPLEMENTATION $< \
-	  $(B)/native/libtfit.a -o $@
+	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_BLOCK48_VE_GOLDEN_Q31_SETS \
+	  -DTFIT_BLOCK48_VE_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
 
 $(T)/prony/probe-block48_ve: tests/insncount/probe.c $(T)/gen/block48_ve.h $(B)/native/libtfit.a
 	@mkdir -p $(@D)

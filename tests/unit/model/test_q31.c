@@ -198,6 +198,12 @@ static void check_rejects_damage(void **state)
         const tf_family *f = tf_family_at(i);
         tf_model *any = tf_random_model(&r, f->name, f->id, 1);
         tf_q31 *form = tf_q31_quantise(any, err, sizeof err);
+        if (f->id == TFIT_FAMILY_PRONY && form == NULL) { /* a modal static map, a slow term */
+            assert_non_null(strstr(err, "no Q31 form"));
+            assert_null(strstr(err, "no Q31 form for family"));
+            tf_model_free(any);
+            continue;
+        }
         assert_int_equal(form != NULL, f->q31 != NULL);
         if (form == NULL) {
             assert_non_null(strstr(err, "no Q31 form for family"));
