@@ -40,6 +40,7 @@ $(T)/prony/long_ref-$(1): tests/prony/long_ref.c tests/prony/long_hash.h tests/s
 	$$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -I$(T)/gen -Itests/prony -DGOLDEN_H='"$(1)_golden.h"' \
 	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  $$< $(call host_test_link,native) -o $$@
 $(T)/gen/$(1)_long.h: $(T)/prony/long_ref-$(1)
 	$$(call say,GEN)
@@ -49,6 +50,7 @@ $(T)/prony/long_run-$(1): tests/prony/long_run.c $(T)/gen/$(1)_long.h $(B)/nativ
 	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(T)/gen -Itests/prony -Itests/support \
 	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
 	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION -DLABEL='"$(1)/native"' \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  $$< $(B)/native/libtfit.a -o $$@
 endef
 $(foreach h,$(PRONY_LONG),$(eval $(call prony_long,$(h))))
@@ -62,6 +64,7 @@ $(FW)/$(2)/long-$(1).elf: tests/prony/long_run.c $(T)/gen/$(1)_long.h $(FW_START
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) -I$(T)/gen -Itests/prony -Itests/support -DLONG_QEMU \
 	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
 	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  -DLABEL='"$(1)/$(FW_QEMU_$(2))"' $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) \
 	  -T $(FW_LD_$(2)) -o $$@
 endef

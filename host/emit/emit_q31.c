@@ -92,9 +92,11 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
     fprintf(f, "#define %s_Q31_OUT_EXP %d /* output value = word * 2^(%d - 31), %s */\n", p,
             q->out_exp, q->out_exp, unit(m, 0));
     fprintf(f,
-            "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u envelope points; "
+            "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u %s; "
             "float32: %.6g */\n",
-            p, unit(m, 1), q->added_error, q->error_cases, q->float_error);
+            p, unit(m, 1), q->added_error, q->error_cases,
+            q->terms > 0 ? "ticks of a press-hold-release history" : "envelope points",
+            q->float_error);
     if (q->terms > 0) {
         fprintf(f,
                 "#define %s_Q31_STATE_WORDS %uu /* int32 state[]: tfit_prony_reset_q31, _step_q31 "
