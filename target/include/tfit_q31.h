@@ -3,8 +3,9 @@
  * (Cortex-M0+, Cortex-M3): integer-only, in the style of CMSIS-DSP's Q31
  * functions, bit-exact against the host's integer reference.
  *
- * A tfit_model_q31 is the host's quantisation of a nodal or contact model
- * (the families whose outputs are polynomial rows; modal and zhou2017 have
+ * A tfit_model_q31 is the host's quantisation of a nodal, contact or prony model
+ * (the families whose outputs are polynomial rows, and prony models with a
+ * nodal static map, section 8 of q31-format.md; modal and zhou2017 have
  * no Q31 form).  Every generated header holds one beside each such float
  * model, named tfit_NAME_q31, with its scales and the error the
  * quantisation adds (docs/q31-format.md):
