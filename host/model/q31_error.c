@@ -103,21 +103,47 @@ static void envelope_point(const tf_model *m, const double inv[9], tf_rng *r, do
     }
 }
 
+/* The errors of one evaluation: the Q31 and the float32 outputs against
+ * the exact ones, into the running maxima. */
+typedef struct error_run {
+    const tf_q31 *q;
+    size_t n;
+    double *exact;
+    float *fl;
+    int32_t *yq;
+    double qmax, fmax;
+} error_run;
+
+static void words_of(const tf_q31 *q, const float x[3], int32_t xq[3])
+{
+    for (int i = 0; i < 3; ++i) {
+        xq[i] = tf_q31_from_value((double)x[i], q->in_exp);
+    }
+}
+
+static void account(error_run *e)
+{
+    for (size_t o = 0; o < e->n; ++o) {
+        e->qmax = fmax(e->qmax, fabs(tf_q31_to_value(e->yq[o], e->q->out_exp) - e->exact[o]));
+        e->fmax = fmax(e->fmax, fabs((double)e->fl[o] - e->exact[o]));
+    }
+}
+
 /* The prony model over a press-hold-release history from rest: a new
  * target every PRONY_SEGMENT ticks (three in four inside the envelope,
  * uniform in its volume, one in four on its boundary; every fourth back
  * to the centre), ramped over PRONY_RAMP ticks and held. */
 #define PRONY_SEGMENT 1500u
 #define PRONY_RAMP 100u
-static void measure_prony(tf_q31 *q, const tf_model *m, const double inv[9], tf_rng *r,
-                          uint32_t n_ticks, double *exact, float *fl, int32_t *yq)
+static void measure_prony(error_run *e, const tf_model *m, const double inv[9], tf_rng *r,
+                          uint32_t n_ticks)
 {
-    const size_t n = 3 * (size_t)m->n_out;
+    const tf_q31 *q = e->q;
     double se[TFIT_PRONY_MAX_STATE];
     float sf[TFIT_PRONY_MAX_STATE];
     int32_t sq[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
     float from[3] = {m->coef[0], m->coef[1], m->coef[2]}, to[3];
-    double qmax = 0, fmax_ = 0, x0[3] = {0, 0, 0};
+    double x0[3] = {0, 0, 0};
     memcpy(to, from, sizeof to);
     tf_ref_stateful_reset(m, sf);
     tf_q31_ref_prony_reset(q, sq);
@@ -144,20 +170,13 @@ static void measure_prony(tf_q31 *q, const tf_model *m, const double inv[9], tf_
             x[i] = (float)((double)from[i] + s * ((double)to[i] - (double)from[i]));
         }
         const double xd[3] = {x[0], x[1], x[2]};
-        const int32_t xq[3] = {tf_q31_from_value(xd[0], q->in_exp),
-                               tf_q31_from_value(xd[1], q->in_exp),
-                               tf_q31_from_value(xd[2], q->in_exp)};
-        exact_prony_step(m, se, xd, exact);
-        tf_ref_stateful_step(m, sf, x, fl, NULL);
-        tf_q31_ref_prony_step(q, sq, xq, yq);
-        for (size_t o = 0; o < n; ++o) {
-            qmax = fmax(qmax, fabs(tf_q31_to_value(yq[o], q->out_exp) - exact[o]));
-            fmax_ = fmax(fmax_, fabs((double)fl[o] - exact[o]));
-        }
+        int32_t xq[3];
+        words_of(q, x, xq);
+        exact_prony_step(m, se, xd, e->exact);
+        tf_ref_stateful_step(m, sf, x, e->fl, NULL);
+        tf_q31_ref_prony_step(q, sq, xq, e->yq);
+        account(e);
     }
-    q->added_error = qmax;
-    q->float_error = fmax_;
-    q->error_cases = n_ticks;
 }
 
 void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
@@ -173,30 +192,25 @@ void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_case
         free(exact), free(fl), free(yq);
         return;
     }
+    error_run e = {.q = q, .n = n, .exact = exact, .fl = fl, .yq = yq, .qmax = 0, .fmax = 0};
     if (m->family == TFIT_FAMILY_PRONY) {
-        measure_prony(q, m, inv, &r, n_cases * TF_Q31_PRONY_TICKS_PER_CASE, exact, fl, yq);
-        free(exact), free(fl), free(yq);
-        return;
+        n_cases *= TF_Q31_PRONY_TICKS_PER_CASE;
+        measure_prony(&e, m, inv, &r, n_cases);
     }
-    double qmax = 0, fmax_ = 0;
-    for (uint32_t c = 0; c < n_cases; ++c) {
+    for (uint32_t c = 0; m->family != TFIT_FAMILY_PRONY && c < n_cases; ++c) {
         float x[3];
+        int32_t xq[3];
         /* three in four uniform in the volume, one in four on the boundary */
         envelope_point(m, inv, &r, c % 4 == 3 ? 1.0 : cbrt(tf_rng_uniform(&r)), x);
         const double xd[3] = {x[0], x[1], x[2]};
-        const int32_t xq[3] = {tf_q31_from_value(xd[0], q->in_exp),
-                               tf_q31_from_value(xd[1], q->in_exp),
-                               tf_q31_from_value(xd[2], q->in_exp)};
+        words_of(q, x, xq);
         exact_eval(m, xd, exact);
         tf_ref_eval(m, x, fl, NULL);
         tf_q31_ref_eval(q, xq, yq, NULL);
-        for (size_t o = 0; o < n; ++o) {
-            qmax = fmax(qmax, fabs(tf_q31_to_value(yq[o], q->out_exp) - exact[o]));
-            fmax_ = fmax(fmax_, fabs((double)fl[o] - exact[o]));
-        }
+        account(&e);
     }
-    q->added_error = qmax;
-    q->float_error = fmax_;
+    q->added_error = e.qmax;
+    q->float_error = e.fmax;
     q->error_cases = n_cases;
     free(exact), free(fl), free(yq);
 }
