@@ -249,6 +249,13 @@ check-prony-ve: $(T)/gen/block48_ve.h $(T)/prony/golden-block48_ve $(T)/prony/pr
 	@echo "== prony: the shipped block48_ve.h (seed 001's Kelvin law, 11 x 11 x 3, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
 	@sed -n 's/^ \*       \(stateful\|held-out cases are\|error against the physics\|Q31 form tfit_block48_ve_forward\)/  \1/p' $<
 	@grep -q '^#define TFIT_BLOCK48_VE_FORWARD_Q31_STATE_WORDS' $< || { echo "block48_ve.h has no Q31 form of its prony model"; exit 1; }
+	@q=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM \([^ ]*\).*/\1/p' $<); \
+	  mx=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_MAX_MM //p' $<); \
+	  rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \
+	  awk -v q="$$q" -v m="$$mx" -v r="$$rel" -v b=$(PRONY_MAX_REL) 'BEGIN { \
+	    if (q == "" || m == "" || r == "") exit 1; peak = m / r; \
+	    printf "  Q31 form against the held-out solves: max %g mm, %.3g %% of the peak %.4g mm (bound %g %%)\n", q, 100 * q / peak, peak, 100 * b; \
+	    exit !(q / peak <= b) }' || { echo "block48_ve: the Q31 form's held-out error is missing or beyond $(PRONY_MAX_REL) of the peak"; exit 1; }
 	@$(T)/prony/golden-block48_ve block48_ve/native
 	@tests/insncount/run.sh $(T)/prony/probe-block48_ve $(T)/prony/insncount-block48_ve
 	@rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \

@@ -70,11 +70,11 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
                 "history from rest against the float coefficients stepped in double; state %u "
                 "int32 words, tfit_prony_reset_q31, tfit_prony_step_q31)\n",
                 q->error_cases, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
-        if (!isnan(m->heldout_max)) {
+        if (!isnan(m->heldout_q31_max)) {
             fprintf(f,
-                    " *         Q31 against the held-out solves: <= %.3g %s (the float model's "
-                    "%.3g + what Q31 adds)\n",
-                    m->heldout_max + q->added_error, unit(m, 0), m->heldout_max);
+                    " *         Q31 against the held-out solves: max %.3g %s over %u histories (the "
+                    "float model's %.3g)\n",
+                    m->heldout_q31_max, unit(m, 0), m->heldout_cases, m->heldout_max);
         }
     }
     tf_q31_free(q);
@@ -102,10 +102,11 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
                 "#define %s_Q31_STATE_WORDS %uu /* int32 state[]: tfit_prony_reset_q31, _step_q31 "
                 "*/\n",
                 p, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
-        if (!isnan(m->heldout_max)) {
+        if (!isnan(m->heldout_q31_max)) {
             fprintf(f,
-                    "#define %s_Q31_HELDOUT_MAX_%s %.6g /* bound: held-out max + Q31 added */\n",
-                    p, unit(m, 1), m->heldout_max + q->added_error);
+                    "#define %s_Q31_HELDOUT_MAX_%s %.6g /* the Q31 form's held-out max, measured "
+                    "*/\n",
+                    p, unit(m, 1), m->heldout_q31_max);
         }
     }
     fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
