@@ -26,18 +26,6 @@
 
 #define MAX_STATE TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)
 
-static int32_t random_word(tf_rng *r)
-{
-    switch (tf_rng_below(r, 4)) {
-    case 0:
-        return (int32_t)(uint32_t)tf_rng_next(r); /* anywhere */
-    case 1:
-        return tf_rng_below(r, 2) ? INT32_MAX : INT32_MIN;
-    default:
-        return (int32_t)((uint32_t)tf_rng_next(r) >> 2) - (1 << 29); /* |x| < 2^29 */
-    }
-}
-
 /* A prony model with a nodal static map of degree p, n_out points, and K
  * terms of decay a (float) and weight w each. */
 static tf_model *prony_model(tf_rng *r, uint32_t p, uint32_t n_out, uint32_t terms, float a,
@@ -87,7 +75,7 @@ static void target_matches_reference(void **state)
         for (size_t v = 0; v < ng + 200; ++v) {
             int32_t x[3];
             for (int k = 0; k < 3; ++k) {
-                x[k] = v < ng ? golden[v][k] : random_word(&r);
+                x[k] = v < ng ? golden[v][k] : tf_random_q31_word(&r);
             }
             tfit_status st = tfit_prony_step_q31(&t, sa, x, a);
             assert_int_equal(st, tf_q31_ref_prony_step(q, sb, x, b));
@@ -168,9 +156,10 @@ static void damaged_state_is_defined(void **state)
     const uint32_t words = TFIT_PRONY_Q31_STATE_WORDS(3);
     for (int trial = 0; trial < 2000; ++trial) {
         for (uint32_t w = 0; w < words; ++w) {
-            sa[w] = sb[w] = random_word(&r);
+            sa[w] = sb[w] = tf_random_q31_word(&r);
         }
-        const int32_t x[3] = {random_word(&r), random_word(&r), random_word(&r)};
+        const int32_t x[3] = {tf_random_q31_word(&r), tf_random_q31_word(&r),
+                              tf_random_q31_word(&r)};
         assert_int_equal(tfit_prony_step_q31(&t, sa, x, a), tf_q31_ref_prony_step(q, sb, x, b));
         assert_memory_equal(a, b, sizeof a);
         assert_memory_equal(sa, sb, words * sizeof *sa);
