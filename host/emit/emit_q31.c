@@ -64,7 +64,7 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
             "%.3g %s (float32 path: %.3g)\n",
             m->name, q->in_exp, in_unit(m), q->out_exp, unit(m, 0), q->added_error, unit(m, 0),
             q->float_error);
-    if (q->terms > 0) {
+    if (q->family == TFIT_FAMILY_PRONY) {
         fprintf(f,
                 " *         (prony, q31-format.md section 8: %u ticks of a press-hold-release "
                 "history from rest against the float coefficients stepped in double; state %u "
@@ -95,9 +95,9 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
             "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u %s; "
             "float32: %.6g */\n",
             p, unit(m, 1), q->added_error, q->error_cases,
-            q->terms > 0 ? "ticks of a press-hold-release history" : "envelope points",
+            q->family == TFIT_FAMILY_PRONY ? "ticks of a press-hold-release history" : "envelope points",
             q->float_error);
-    if (q->terms > 0) {
+    if (q->family == TFIT_FAMILY_PRONY) {
         fprintf(f,
                 "#define %s_Q31_STATE_WORDS %uu /* int32 state[]: tfit_prony_reset_q31, _step_q31 "
                 "*/\n",
@@ -148,7 +148,7 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
     write_i32(f, q->q + 3, 9, "W (row-major), then the projection's headroom H");
     write_i32(f, q->q + 12, 1, NULL);
     const int32_t *rows = q->q + TFIT_Q31_MAP_WORDS;
-    if (q->terms > 0) {
+    if (q->family == TFIT_FAMILY_PRONY) {
         write_i32(f, rows, 1, "prony: K, then {a_k (Q31), D_k (Q30)} per term");
         write_i32(f, rows + 1, 2 * q->terms, NULL);
         rows += 1 + 2 * q->terms;
@@ -183,11 +183,11 @@ int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
         return -1;
     }
     int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
-    if (q->terms > 0) { /* one tick sequence from rest */
+    if (q->family == TFIT_FAMILY_PRONY) { /* one tick sequence from rest */
         tf_q31_ref_prony_reset(q, state);
     }
     for (size_t v = 0; v < n_vec; ++v) {
-        status[v] = (int32_t)(q->terms > 0 ? tf_q31_ref_prony_step(q, state, in[v], out + v * n_out)
+        status[v] = (int32_t)(q->family == TFIT_FAMILY_PRONY ? tf_q31_ref_prony_step(q, state, in[v], out + v * n_out)
                                            : tf_q31_ref_eval(q, in[v], out + v * n_out, NULL));
     }
     char upper[TF_NAME_MAX];
