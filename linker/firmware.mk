@@ -275,7 +275,7 @@ $(foreach h,$(FW_HEADERS),$(eval $(call fw_haptic_native,$(h))))
 # library build along its call graph (tests/freestanding/callgraph.c).
 FW_PUBLIC := tfit_model_check tfit_model_crc32 tfit_displacements tfit_contact_force tfit_golden_run
 FW_PUBLIC_Q31 := tfit_model_check_q31 tfit_model_crc32_q31 tfit_displacements_q31 \
-                 tfit_contact_force_q31 tfit_golden_run_q31
+                 tfit_contact_force_q31 tfit_golden_run_q31 tfit_prony_reset_q31 tfit_prony_step_q31
 FW_STACK_LIBS := $(foreach c,$(FW_CORES),$(FW)/$(c)/libtfit.elf) \
                  $(foreach c,$(FW_Q31_CORES),$(FW)/$(c)/libtfit_q31.elf)
 fw_stack_tables = linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \

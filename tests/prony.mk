@@ -40,6 +40,7 @@ $(T)/prony/long_ref-$(1): tests/prony/long_ref.c tests/prony/long_hash.h tests/s
 	$$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -I$(T)/gen -Itests/prony -DGOLDEN_H='"$(1)_golden.h"' \
 	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  $$< $(call host_test_link,native) -o $$@
 $(T)/gen/$(1)_long.h: $(T)/prony/long_ref-$(1)
 	$$(call say,GEN)
@@ -49,6 +50,7 @@ $(T)/prony/long_run-$(1): tests/prony/long_run.c $(T)/gen/$(1)_long.h $(B)/nativ
 	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(T)/gen -Itests/prony -Itests/support \
 	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
 	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION -DLABEL='"$(1)/native"' \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  $$< $(B)/native/libtfit.a -o $$@
 endef
 $(foreach h,$(PRONY_LONG),$(eval $(call prony_long,$(h))))
@@ -62,6 +64,7 @@ $(FW)/$(2)/long-$(1).elf: tests/prony/long_run.c $(T)/gen/$(1)_long.h $(FW_START
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) -I$(T)/gen -Itests/prony -Itests/support -DLONG_QEMU \
 	  -DGOLDEN_H='"$(1)_golden.h"' -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
 	  -DLONG_H='"$(1)_long.h"' -DTFIT_$(call upper,$(1))_IMPLEMENTATION \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
 	  -DLABEL='"$(1)/$(FW_QEMU_$(2))"' $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) \
 	  -T $(FW_LD_$(2)) -o $$@
 endef
@@ -70,9 +73,11 @@ $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_lo
 # make check runs the small test models under QEMU (about 15 s per core);
 # the block48-shaped ones (haptic_creep, creep48: 121 points, about 30 s
 # per core each; the shipped block48_ve.h, 18,255 instructions a tick at
-# p = 2 (34,119 at the earlier p = 3: 613 s of wall time per core on the
-# loaded machine), so its QEMU timeout is 1500 s) run natively in make check and
-# under QEMU in prony-long-qemu.
+# p = 2: 82 s on M4F, 196 s on M7 for the float step (34,119 at the
+# earlier p = 3: 613 s per core on the loaded machine), so its QEMU
+# timeout is 1500 s) run natively in make check and under QEMU in
+# prony-long-qemu.  Each run steps the header's Q31 prony models too
+# (docs/q31-format.md §8).
 PRONY_QEMU_TIMEOUT_block48_ve := 1500
 PRONY_LONG_QEMU_CHECK := families
 PRONY_LONG_QEMU_RUNS := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=prony-long-$(c)-%))
@@ -145,8 +150,8 @@ $(T)/gen/creep48.h: $(T)/prony/creep_fit tests/solver/block48_seed.yaml
 $(T)/prony/golden-creep48: tests/header/run_golden.c $(T)/gen/creep48.h $(B)/native/libtfit.a
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"creep48_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DTFIT_CREEP48_IMPLEMENTATION $< \
-	  $(B)/native/libtfit.a -o $@
+	  -DGOLDEN_SETS=TFIT_CREEP48_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_CREEP48_GOLDEN_Q31_SETS \
+	  -DTFIT_CREEP48_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
 
 $(T)/prony/probe-creep48: tests/insncount/probe.c $(T)/gen/creep48.h $(B)/native/libtfit.a
 	$(call say,BUILD)
@@ -228,8 +233,8 @@ $(T)/prony/golden-block48_ve: tests/header/run_golden.c $(T)/gen/block48_ve.h $(
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"block48_ve_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DTFIT_BLOCK48_VE_IMPLEMENTATION $< \
-	  $(B)/native/libtfit.a -o $@
+	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_BLOCK48_VE_GOLDEN_Q31_SETS \
+	  -DTFIT_BLOCK48_VE_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
 
 $(T)/prony/probe-block48_ve: tests/insncount/probe.c $(T)/gen/block48_ve.h $(B)/native/libtfit.a
 	@mkdir -p $(@D)
@@ -242,7 +247,15 @@ $(T)/prony/probe-block48_ve: tests/insncount/probe.c $(T)/gen/block48_ve.h $(B)/
 CHECKS += check-prony-ve
 check-prony-ve: $(T)/gen/block48_ve.h $(T)/prony/golden-block48_ve $(T)/prony/probe-block48_ve
 	@echo "== prony: the shipped block48_ve.h (seed 001's Kelvin law, 11 x 11 x 3, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
-	@sed -n 's/^ \*       \(stateful\|held-out cases are\|error against the physics\)/  \1/p' $<
+	@sed -n 's/^ \*       \(stateful\|held-out cases are\|error against the physics\|Q31 form tfit_block48_ve_forward\)/  \1/p' $<
+	@grep -q '^#define TFIT_BLOCK48_VE_FORWARD_Q31_STATE_WORDS' $< || { echo "block48_ve.h has no Q31 form of its prony model"; exit 1; }
+	@q=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM \([^ ]*\).*/\1/p' $<); \
+	  mx=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_MAX_MM //p' $<); \
+	  rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \
+	  awk -v q="$$q" -v m="$$mx" -v r="$$rel" -v b=$(PRONY_MAX_REL) 'BEGIN { \
+	    if (q == "" || m == "" || r == "") exit 1; peak = m / r; \
+	    printf "  Q31 form against the held-out solves: max %g mm, %.3g %% of the peak %.4g mm (bound %g %%)\n", q, 100 * q / peak, peak, 100 * b; \
+	    exit !(q / peak <= b) }' || { echo "block48_ve: the Q31 form's held-out error is missing or beyond $(PRONY_MAX_REL) of the peak"; exit 1; }
 	@$(T)/prony/golden-block48_ve block48_ve/native
 	@tests/insncount/run.sh $(T)/prony/probe-block48_ve $(T)/prony/insncount-block48_ve
 	@rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \
@@ -250,4 +263,4 @@ check-prony-ve: $(T)/gen/block48_ve.h $(T)/prony/golden-block48_ve $(T)/prony/pr
 	  awk -v r="$$rel" -v b=$(PRONY_MAX_REL) 'BEGIN { exit !(r != "" && r + 0 <= b + 0) }' || \
 	  { echo "block48_ve: held-out error $$rel of the peak is beyond $(PRONY_MAX_REL)"; exit 1; }; \
 	  [ -n "$$tot" ] || { echo "block48_ve.h states no total error (fit + discretisation)"; exit 1; }; \
-	  echo "ok: block48_ve: held-out error $$rel of the peak displacement <= $(PRONY_MAX_REL) against the time-stepped solves; total stated $$tot mm; golden vectors bit-exact natively, one instruction count per tick"
+	  echo "ok: block48_ve: held-out error $$rel of the peak displacement <= $(PRONY_MAX_REL) against the time-stepped solves; total stated $$tot mm; golden vectors (float and Q31) bit-exact natively, one instruction count per tick for each form"

@@ -64,6 +64,19 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
             "%.3g %s (float32 path: %.3g)\n",
             m->name, q->in_exp, in_unit(m), q->out_exp, unit(m, 0), q->added_error, unit(m, 0),
             q->float_error);
+    if (q->family == TFIT_FAMILY_PRONY) {
+        fprintf(f,
+                " *         (prony, q31-format.md section 8: %u ticks of a press-hold-release "
+                "history from rest against the float coefficients stepped in double; state %u "
+                "int32 words, tfit_prony_reset_q31, tfit_prony_step_q31)\n",
+                q->error_cases, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
+        if (!isnan(m->heldout_q31_max)) {
+            fprintf(f,
+                    " *         Q31 against the held-out solves: max %.3g %s over %u histories (the "
+                    "float model's %.3g)\n",
+                    m->heldout_q31_max, unit(m, 0), m->heldout_cases, m->heldout_max);
+        }
+    }
     tf_q31_free(q);
 }
 
@@ -79,9 +92,23 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
     fprintf(f, "#define %s_Q31_OUT_EXP %d /* output value = word * 2^(%d - 31), %s */\n", p,
             q->out_exp, q->out_exp, unit(m, 0));
     fprintf(f,
-            "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u envelope points; "
+            "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u %s; "
             "float32: %.6g */\n",
-            p, unit(m, 1), q->added_error, q->error_cases, q->float_error);
+            p, unit(m, 1), q->added_error, q->error_cases,
+            q->family == TFIT_FAMILY_PRONY ? "ticks of a press-hold-release history" : "envelope points",
+            q->float_error);
+    if (q->family == TFIT_FAMILY_PRONY) {
+        fprintf(f,
+                "#define %s_Q31_STATE_WORDS %uu /* int32 state[]: tfit_prony_reset_q31, _step_q31 "
+                "*/\n",
+                p, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
+        if (!isnan(m->heldout_q31_max)) {
+            fprintf(f,
+                    "#define %s_Q31_HELDOUT_MAX_%s %.6g /* the Q31 form's held-out max, measured "
+                    "*/\n",
+                    p, unit(m, 1), m->heldout_q31_max);
+        }
+    }
     fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
     fprintf(f, "#define tfit_%s_q31 tfit_%s_q31_%08x /* this header's version of the model */\n",
             m->name, m->name, tf_q31_crc32(q));
@@ -120,10 +147,16 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
     write_i32(f, q->q, 3, "Q31 input map: centre (Q30 of 2^IN_EXP)");
     write_i32(f, q->q + 3, 9, "W (row-major), then the projection's headroom H");
     write_i32(f, q->q + 12, 1, NULL);
+    const int32_t *rows = q->q + TFIT_Q31_MAP_WORDS;
+    if (q->family == TFIT_FAMILY_PRONY) {
+        write_i32(f, rows, 1, "prony: K, then {a_k (Q31), D_k (Q30)} per term");
+        write_i32(f, rows + 1, 2 * q->terms, NULL);
+        rows += 1 + 2 * q->terms;
+    }
     for (uint32_t o = 0; o < 3 * q->n_out; ++o) {
         snprintf(note, sizeof note, "node %u %c: shift, then %u coefficients", m->node_ids[o / 3],
                  comp[o % 3], t);
-        write_i32(f, q->q + TFIT_Q31_MAP_WORDS + o * (t + 1), t + 1, note);
+        write_i32(f, rows + o * (t + 1), t + 1, note);
     }
     fprintf(f, "};\n");
     fprintf(f,
@@ -149,8 +182,13 @@ int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
         tf_q31_free(q);
         return -1;
     }
+    int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+    if (q->family == TFIT_FAMILY_PRONY) { /* one tick sequence from rest */
+        tf_q31_ref_prony_reset(q, state);
+    }
     for (size_t v = 0; v < n_vec; ++v) {
-        status[v] = (int32_t)tf_q31_ref_eval(q, in[v], out + v * n_out, NULL);
+        status[v] = (int32_t)(q->family == TFIT_FAMILY_PRONY ? tf_q31_ref_prony_step(q, state, in[v], out + v * n_out)
+                                           : tf_q31_ref_eval(q, in[v], out + v * n_out, NULL));
     }
     char upper[TF_NAME_MAX];
     size_t k = 0;

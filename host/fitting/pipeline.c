@@ -10,6 +10,7 @@
 
 #include "fitting/families/common.h"
 #include "fitting/families/family.h"
+#include "fitting/families/prony_family.h"
 #include "base/clock.h"
 #include "base/log.h"
 #include "model/passivity.h"
@@ -33,6 +34,7 @@ static int heldout(tf_family_result *f, const tf_cases *c, tf_ctx *ctx)
     f->model->heldout_rms = f->heldout_rms;
     f->model->heldout_rel_max = f->heldout_rel_max;
     f->model->heldout_cases = n;
+    f->model->heldout_q31_max = tf_prony_q31_heldout(f->model, c); /* NAN but for prony */
     return 0;
 }
 

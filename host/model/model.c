@@ -132,7 +132,7 @@ tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, con
     m->coef = coef;
     m->node_ids = ids;
     m->envelope_radius = 0.0;
-    m->heldout_max = m->heldout_rms = m->heldout_rel_max = NAN;
+    m->heldout_max = m->heldout_rms = m->heldout_rel_max = m->heldout_q31_max = NAN;
     m->stiffness_min = m->stiffness_max = m->discretisation_max = NAN;
     const double zero[3] = {0, 0, 0};
     tf_model_set_ball(m, zero, 1.0);

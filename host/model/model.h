@@ -29,6 +29,7 @@ typedef struct tf_model {
     double heldout_rms;      /* held-out RMS error, output units */
     double heldout_rel_max;  /* held-out max relative error (contact models) */
     uint32_t heldout_cases;  /* number of held-out load cases behind the numbers */
+    double heldout_q31_max;  /* prony: the Q31 form's held-out max abs error (q31-format.md §8) */
     /* Contact models (passivity.h): smallest eigenvalue of the symmetric
      * stiffness and largest ||J||_2 over the envelope, N/mm. */
     double stiffness_min, stiffness_max;

@@ -1,5 +1,5 @@
 /*
- * q31.h — the Q31 form of a nodal or contact model (docs/q31-format.md):
+ * q31.h — the Q31 form of a nodal, contact or prony model (docs/q31-format.md):
  * host-side quantisation, the integer reference evaluator that golden
  * vectors come from (written from the specification, independently of
  * target/src/tfit_q31_*.c), and the error the quantisation adds.
@@ -16,6 +16,7 @@
 typedef struct tf_q31 {
     tfit_family family;
     uint32_t n_out, degree, n_words;
+    uint32_t terms;           /* prony: K (q[13]); else 0 */
     int32_t *q;               /* owned: the table of tfit_model_q31.q */
     const uint32_t *node_ids; /* the float model's */
     int in_exp;               /* input value = x * 2^(in_exp - 31) */
@@ -29,7 +30,8 @@ typedef struct tf_q31 {
 } tf_q31;
 
 /* Quantises m.  Returns NULL and a reason in err when m has no Q31 form
- * (modal and zhou2017 families; an envelope so elongated that the
+ * (modal and zhou2017 families, a prony model with a modal static map or a
+ * term too slow for §8's bound; an envelope so elongated that the
  * projection's headroom exceeds 14 bits). */
 tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen);
 void tf_q31_free(tf_q31 *q);
@@ -44,14 +46,23 @@ uint32_t tf_q31_crc32(const tf_q31 *q);
  * g_out (may be NULL) receives the projected input in Q30. */
 tfit_status tf_q31_ref_eval(const tf_q31 *q, const int32_t in[3], int32_t *out, int32_t g_out[3]);
 
+/* The prony family's integer reference (q31-format.md §8): state of
+ * TFIT_PRONY_Q31_STATE_WORDS(q->terms) words. */
+void tf_q31_ref_prony_reset(const tf_q31 *q, int32_t *state);
+tfit_status tf_q31_ref_prony_step(const tf_q31 *q, int32_t *state, const int32_t in[3],
+                                  int32_t *out);
+
 /* Value <-> Q31 word with exponent e (value = word * 2^(e - 31)); the
  * conversion rounds to nearest and saturates. */
 int32_t tf_q31_from_value(double v, int e);
 double tf_q31_to_value(int32_t w, int e);
 
 /* Sets added_error, float_error and error_cases from n_cases seeded points
- * (inside the envelope, uniform in its volume, and on its boundary). */
+ * (inside the envelope, uniform in its volume, and on its boundary); for a
+ * prony model n_cases ticks of a seeded press-hold-release history from
+ * rest, against the float coefficients stepped in double. */
 void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
+#define TF_Q31_PRONY_TICKS_PER_CASE 6u /* 2,000 cases: 12,000 ticks, eight 1.5 s segments */
 
 /* Basis terms of the largest degree, T(TFIT_MAX_DEGREE). */
 #define TFIT_Q31_MAX_DEGREE_TERMS 165

@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "model/basis.h"
 #include "model/golden.h"
@@ -20,9 +21,25 @@
 /* The exact model at x: g = W (x - x0), projected when |g| > 1, rows
  * summed over the Chebyshev terms T_a(g0) T_b(g1) T_c(g2) in the basis
  * order (tf_basis). */
-static void exact_eval(const tf_model *m, const double x[3], double *out)
+static void exact_rows(const tf_model *m, const float *c, const double g[3], double *out)
 {
-    double g[3], n2 = 0;
+    const int p = (int)m->dims[0];
+    const uint32_t t = tf_terms((uint32_t)p);
+    double phi[TFIT_Q31_MAX_DEGREE_TERMS];
+    tf_basis((uint32_t)p, g, phi);
+    for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+        double s = 0;
+        for (uint32_t i = 0; i < t; ++i) {
+            s += (double)c[o * t + i] * phi[i];
+        }
+        out[o] = s;
+    }
+}
+
+/* g = W (x - x0), projected onto the unit ball. */
+static void exact_project(const tf_model *m, const double x[3], double g[3])
+{
+    double n2 = 0;
     for (int i = 0; i < 3; ++i) {
         g[i] = 0;
         for (int j = 0; j < 3; ++j) {
@@ -35,18 +52,35 @@ static void exact_eval(const tf_model *m, const double x[3], double *out)
             g[i] /= sqrt(n2);
         }
     }
-    const int p = (int)m->dims[0];
-    const uint32_t t = tf_terms((uint32_t)p);
-    double phi[TFIT_Q31_MAX_DEGREE_TERMS];
-    tf_basis((uint32_t)p, g, phi);
-    const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
-    for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
-        double s = 0;
-        for (uint32_t i = 0; i < t; ++i) {
-            s += (double)c[o * t + i] * phi[i];
+}
+
+static void exact_eval(const tf_model *m, const double x[3], double *out)
+{
+    double g[3];
+    exact_project(m, x, g);
+    exact_rows(m, m->coef + TFIT_INPUT_MAP_FLOATS, g, out);
+}
+
+/* One tick of the exact prony model (header-format.md §5.6 in double, the
+ * float a_k and D_k): state = gp[3] | z[K][3]. */
+static void exact_prony_step(const tf_model *m, double *state, const double x[3], double *out)
+{
+    double g[3], h[3];
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    exact_project(m, x, g);
+    for (int i = 0; i < 3; ++i) {
+        h[i] = g[i];
+        for (uint32_t k = 0; k < m->dims[2]; ++k) {
+            double *z = &state[3 + 3 * k + (uint32_t)i];
+            *z = (double)pt[2 * k] * *z + (double)pt[2 * k + 1] * (g[i] - state[i]);
+            h[i] -= *z;
         }
-        out[o] = s;
+        h[i] = fmax(-1.0, fmin(1.0, h[i]));
     }
+    for (int i = 0; i < 3; ++i) {
+        state[i] = g[i];
+    }
+    exact_rows(m, pt + 2 * m->dims[2], h, out);
 }
 
 /* A point of the envelope x0 + W^-1 u, |u| = radius. */
@@ -69,6 +103,82 @@ static void envelope_point(const tf_model *m, const double inv[9], tf_rng *r, do
     }
 }
 
+/* The errors of one evaluation: the Q31 and the float32 outputs against
+ * the exact ones, into the running maxima. */
+typedef struct error_run {
+    const tf_q31 *q;
+    size_t n;
+    double *exact;
+    float *fl;
+    int32_t *yq;
+    double qmax, fmax;
+} error_run;
+
+static void words_of(const tf_q31 *q, const float x[3], int32_t xq[3])
+{
+    for (int i = 0; i < 3; ++i) {
+        xq[i] = tf_q31_from_value((double)x[i], q->in_exp);
+    }
+}
+
+static void account(error_run *e)
+{
+    for (size_t o = 0; o < e->n; ++o) {
+        e->qmax = fmax(e->qmax, fabs(tf_q31_to_value(e->yq[o], e->q->out_exp) - e->exact[o]));
+        e->fmax = fmax(e->fmax, fabs((double)e->fl[o] - e->exact[o]));
+    }
+}
+
+/* The prony model over a press-hold-release history from rest: a new
+ * target every PRONY_SEGMENT ticks (three in four inside the envelope,
+ * uniform in its volume, one in four on its boundary; every fourth back
+ * to the centre), ramped over PRONY_RAMP ticks and held. */
+#define PRONY_SEGMENT 1500u
+#define PRONY_RAMP 100u
+static void measure_prony(error_run *e, const tf_model *m, const double inv[9], tf_rng *r,
+                          uint32_t n_ticks)
+{
+    const tf_q31 *q = e->q;
+    double se[TFIT_PRONY_MAX_STATE];
+    float sf[TFIT_PRONY_MAX_STATE];
+    int32_t sq[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+    float from[3] = {m->coef[0], m->coef[1], m->coef[2]}, to[3];
+    double x0[3] = {0, 0, 0};
+    memcpy(to, from, sizeof to);
+    tf_ref_stateful_reset(m, sf);
+    tf_q31_ref_prony_reset(q, sq);
+    for (int i = 0; i < 3; ++i) {
+        se[i] = 0;
+    }
+    exact_project(m, x0, se);
+    for (uint32_t w = 0; w < 3 * m->dims[2]; ++w) {
+        se[3 + w] = 0;
+    }
+    for (uint32_t t = 0; t < n_ticks; ++t) {
+        const uint32_t seg = t / PRONY_SEGMENT, in_seg = t % PRONY_SEGMENT;
+        if (in_seg == 0) {
+            memcpy(from, to, sizeof to);
+            if (seg % 4 == 3) {
+                to[0] = m->coef[0], to[1] = m->coef[1], to[2] = m->coef[2];
+            } else {
+                envelope_point(m, inv, r, seg % 4 == 2 ? 1.0 : cbrt(tf_rng_uniform(r)), to);
+            }
+        }
+        const double s = in_seg >= PRONY_RAMP ? 1.0 : (double)(in_seg + 1) / PRONY_RAMP;
+        float x[3];
+        for (int i = 0; i < 3; ++i) {
+            x[i] = (float)((double)from[i] + s * ((double)to[i] - (double)from[i]));
+        }
+        const double xd[3] = {x[0], x[1], x[2]};
+        int32_t xq[3];
+        words_of(q, x, xq);
+        exact_prony_step(m, se, xd, e->exact);
+        tf_ref_stateful_step(m, sf, x, e->fl, NULL);
+        tf_q31_ref_prony_step(q, sq, xq, e->yq);
+        account(e);
+    }
+}
+
 void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
 {
     double inv[9];
@@ -82,25 +192,25 @@ void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_case
         free(exact), free(fl), free(yq);
         return;
     }
-    double qmax = 0, fmax_ = 0;
-    for (uint32_t c = 0; c < n_cases; ++c) {
+    error_run e = {.q = q, .n = n, .exact = exact, .fl = fl, .yq = yq, .qmax = 0, .fmax = 0};
+    if (m->family == TFIT_FAMILY_PRONY) {
+        n_cases *= TF_Q31_PRONY_TICKS_PER_CASE;
+        measure_prony(&e, m, inv, &r, n_cases);
+    }
+    for (uint32_t c = 0; m->family != TFIT_FAMILY_PRONY && c < n_cases; ++c) {
         float x[3];
+        int32_t xq[3];
         /* three in four uniform in the volume, one in four on the boundary */
         envelope_point(m, inv, &r, c % 4 == 3 ? 1.0 : cbrt(tf_rng_uniform(&r)), x);
         const double xd[3] = {x[0], x[1], x[2]};
-        const int32_t xq[3] = {tf_q31_from_value(xd[0], q->in_exp),
-                               tf_q31_from_value(xd[1], q->in_exp),
-                               tf_q31_from_value(xd[2], q->in_exp)};
+        words_of(q, x, xq);
         exact_eval(m, xd, exact);
         tf_ref_eval(m, x, fl, NULL);
         tf_q31_ref_eval(q, xq, yq, NULL);
-        for (size_t o = 0; o < n; ++o) {
-            qmax = fmax(qmax, fabs(tf_q31_to_value(yq[o], q->out_exp) - exact[o]));
-            fmax_ = fmax(fmax_, fabs((double)fl[o] - exact[o]));
-        }
+        account(&e);
     }
-    q->added_error = qmax;
-    q->float_error = fmax_;
+    q->added_error = e.qmax;
+    q->float_error = e.fmax;
     q->error_cases = n_cases;
     free(exact), free(fl), free(yq);
 }
@@ -116,7 +226,7 @@ static void put(int32_t in[][3], size_t *n, int32_t a, int32_t b, int32_t c)
 size_t tf_q31_golden_inputs(const tf_q31 *q, const tf_model *m, uint64_t seed, int32_t in[][3])
 {
     float fin[TF_GOLDEN_MAX][3];
-    size_t nf = tf_golden_inputs(m, seed, fin), n = 0;
+    size_t nf = tf_golden_design(m, seed, fin), n = 0; /* prony: one tick sequence */
     for (size_t v = 0; v < nf; ++v) {
         if (isfinite(fin[v][0]) && isfinite(fin[v][1]) && isfinite(fin[v][2])) {
             put(in, &n, tf_q31_from_value(fin[v][0], q->in_exp),

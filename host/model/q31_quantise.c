@@ -14,6 +14,8 @@
 #include <zlib.h>
 
 #define MAX_H 14
+/* The largest a_k word: 2^31 - 2^14 (tfit_q31_check.c). */
+#define TFIT_Q31_PRONY_A_MAX 2147467264.0
 
 /* Smallest integer e with v <= 2^e (v > 0). */
 static int ceil_log2(double v)
@@ -122,11 +124,86 @@ static void quantise_rows(const tf_model *m, tf_q31 *q)
     free(f);
 }
 
+/* A prony model's terms (q31-format.md §8): a_k = round(a 2^31) (exact for
+ * a float a >= 1/2), D_k = round(D 2^30); -1 when a term is outside the
+ * range whose bound §8 proves. */
+static int quantise_terms(const tf_model *m, int32_t *t, char *err, size_t errlen)
+{
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0; k < m->dims[2]; ++k) {
+        const double a = rint(ldexp((double)pt[2 * k], 31));
+        const double d = rint(ldexp((double)pt[2 * k + 1], 30));
+        if (!(a >= 0 && a <= TFIT_Q31_PRONY_A_MAX && fabs(d) <= 0x1p30)) {
+            snprintf(err, errlen,
+                     "model '%s': no Q31 form: term %u (a = %.9g, D = %.9g) outside 0 <= a <= 1 - "
+                     "2^-17, |D| <= 1",
+                     m->name, k, (double)pt[2 * k], (double)pt[2 * k + 1]);
+            return -1;
+        }
+        t[2 * k] = (int32_t)a;
+        t[2 * k + 1] = (int32_t)d;
+    }
+    return 0;
+}
+
+/* The prony form: the static map's nodal form with K and the terms
+ * inserted after the input map. */
+static tf_q31 *quantise_prony(const tf_model *m, char *err, size_t errlen)
+{
+    if (m->dims[1] != 0) {
+        snprintf(err, errlen, "model '%s': no Q31 form for a prony model with a modal static map",
+                 m->name);
+        return NULL;
+    }
+    const uint32_t terms = m->dims[2], extra = 1 + 2 * terms;
+    /* the nodal model of the input map and the static rows (the static
+     * view's own first 12 floats are not the input map) */
+    tf_model v = tf_prony_static_view(m);
+    float *coef = malloc(v.n_coef * sizeof *coef);
+    if (coef == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    memcpy(coef, m->coef, TFIT_INPUT_MAP_FLOATS * sizeof *coef);
+    memcpy(coef + TFIT_INPUT_MAP_FLOATS, v.coef + TFIT_INPUT_MAP_FLOATS,
+           (v.n_coef - TFIT_INPUT_MAP_FLOATS) * sizeof *coef);
+    v.coef = coef;
+    tf_q31 *q = tf_q31_quantise(&v, err, errlen);
+    free(coef);
+    if (q == NULL) {
+        return NULL;
+    }
+    q->node_ids = m->node_ids;
+    int32_t *t = calloc(q->n_words + extra, sizeof *t);
+    if (t == NULL || quantise_terms(m, t + TFIT_Q31_MAP_WORDS + 1, err, errlen) != 0) {
+        if (t == NULL) {
+            snprintf(err, errlen, "out of memory");
+        }
+        free(t);
+        tf_q31_free(q);
+        return NULL;
+    }
+    memcpy(t, q->q, TFIT_Q31_MAP_WORDS * sizeof *t);
+    t[TFIT_Q31_MAP_WORDS] = (int32_t)terms;
+    memcpy(t + TFIT_Q31_MAP_WORDS + extra, q->q + TFIT_Q31_MAP_WORDS,
+           (q->n_words - TFIT_Q31_MAP_WORDS) * sizeof *t);
+    free(q->q);
+    q->q = t;
+    q->n_words += extra;
+    q->terms = terms;
+    q->family = TFIT_FAMILY_PRONY;
+    return q;
+}
+
 tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen)
 {
+    if (m->family == TFIT_FAMILY_PRONY) {
+        return quantise_prony(m, err, errlen);
+    }
     if (m->family != TFIT_FAMILY_NODAL && m->family != TFIT_FAMILY_CONTACT) {
-        snprintf(err, errlen, "model '%s': no Q31 form for family %d (nodal and contact only)",
-                 m->name, (int)m->family);
+        snprintf(err, errlen,
+                 "model '%s': no Q31 form for family %d (nodal, contact and prony only)", m->name,
+                 (int)m->family);
         return NULL;
     }
     tf_q31 *q = calloc(1, sizeof *q);

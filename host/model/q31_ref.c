@@ -101,13 +101,12 @@ static void basis(uint32_t p, const int32_t g[3], int32_t *phi)
     }
 }
 
-tfit_status tf_q31_ref_eval(const tf_q31 *q, const int32_t in[3], int32_t *out, int32_t g_out[3])
+/* §4-§5: the rows starting at row, at g. */
+static void rows(const tf_q31 *q, const int32_t *row, const int32_t g[3], int32_t *out)
 {
-    int32_t g[3], phi[TFIT_Q31_MAX_DEGREE_TERMS];
+    int32_t phi[TFIT_Q31_MAX_DEGREE_TERMS];
     const uint32_t t = tf_terms(q->degree);
-    int clamped = project(q, in, g);
     basis(q->degree, g, phi);
-    const int32_t *row = q->q + TFIT_Q31_MAP_WORDS;
     for (uint32_t o = 0; o < 3 * q->n_out; ++o, row += t + 1) {
         __int128 acc = 0;
         for (uint32_t k = 0; k < t; ++k) {
@@ -115,10 +114,55 @@ tfit_status tf_q31_ref_eval(const tf_q31 *q, const int32_t in[3], int32_t *out, 
         }
         out[o] = (int32_t)round_shift(acc, row[0]); /* §5 */
     }
+}
+
+tfit_status tf_q31_ref_eval(const tf_q31 *q, const int32_t in[3], int32_t *out, int32_t g_out[3])
+{
+    int32_t g[3];
+    int clamped = project(q, in, g);
+    rows(q, q->q + TFIT_Q31_MAP_WORDS, g, out);
     if (g_out != NULL) {
         for (int i = 0; i < 3; ++i) {
             g_out[i] = g[i];
         }
     }
+    return clamped ? TFIT_CLAMPED : TFIT_OK;
+}
+
+/* §8: state = gp[3] (Q30) | z[K][3] (Q29); a_k in Q31, D_k in Q30. */
+void tf_q31_ref_prony_reset(const tf_q31 *q, int32_t *state)
+{
+    const int32_t zero[3] = {0, 0, 0};
+    project(q, zero, state);
+    for (uint32_t w = 0; w < 3 * q->terms; ++w) {
+        state[3 + w] = 0;
+    }
+}
+
+/* z_ki <- round((a_k z_ki + D_k (g_i - gp_i)) / 2^31), kept modulo 2^32
+ * (never needed for a state reached from rest: §8's bound);
+ * h_i = g_i - 2 sum_k z_ki saturated to [-2^30, 2^30]; the rows at h. */
+tfit_status tf_q31_ref_prony_step(const tf_q31 *q, int32_t *state, const int32_t in[3],
+                                  int32_t *out)
+{
+    int32_t g[3], h[3];
+    const int clamped = project(q, in, g);
+    const int32_t *terms = q->q + TFIT_Q31_MAP_WORDS + 1;
+    for (int i = 0; i < 3; ++i) {
+        int64_t hi = g[i];
+        for (uint32_t k = 0; k < q->terms; ++k) {
+            const int64_t a = terms[2 * k], d = terms[2 * k + 1];
+            int32_t *z = &state[3 + 3 * k + (uint32_t)i];
+            const __int128 acc = (__int128)a * *z + (__int128)d * ((int64_t)g[i] - state[i]);
+            *z = (int32_t)(uint32_t)(uint64_t)round_shift(acc, 31);
+            hi -= 2 * (int64_t)*z;
+        }
+        const int64_t one = (int64_t)1 << 30;
+        h[i] = (int32_t)(hi > one ? one : (hi < -one ? -one : hi));
+    }
+    for (int i = 0; i < 3; ++i) {
+        state[i] = g[i];
+    }
+    rows(q, q->q + TFIT_Q31_MAP_WORDS + 1 + 2 * q->terms, h, out);
     return clamped ? TFIT_CLAMPED : TFIT_OK;
 }

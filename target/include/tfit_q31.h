@@ -3,8 +3,9 @@
  * (Cortex-M0+, Cortex-M3): integer-only, in the style of CMSIS-DSP's Q31
  * functions, bit-exact against the host's integer reference.
  *
- * A tfit_model_q31 is the host's quantisation of a nodal or contact model
- * (the families whose outputs are polynomial rows; modal and zhou2017 have
+ * A tfit_model_q31 is the host's quantisation of a nodal, contact or prony model
+ * (the families whose outputs are polynomial rows, and prony models with a
+ * nodal static map, section 8 of q31-format.md; modal and zhou2017 have
  * no Q31 form).  Every generated header holds one beside each such float
  * model, named tfit_NAME_q31, with its scales and the error the
  * quantisation adds (docs/q31-format.md):
@@ -47,11 +48,12 @@ extern "C" {
 
 typedef struct tfit_model_q31 {
     uint32_t api_version;     /* TFIT_Q31_API_VERSION */
-    uint32_t family;          /* TFIT_FAMILY_NODAL or TFIT_FAMILY_CONTACT */
+    uint32_t family;          /* TFIT_FAMILY_NODAL, _CONTACT or _PRONY */
     uint32_t n_out;           /* output points; outputs are 3 x n_out words */
     uint32_t degree;          /* total degree p of the rows */
-    uint32_t n_words;         /* entries in q[]: 13 + 3 n_out (T(p) + 1) */
-    const int32_t *q;         /* input map, then per row: shift, T(p) coefficients */
+    uint32_t n_words;         /* entries in q[]: 13 + 3 n_out (T(p) + 1); prony: + 1 + 2 K */
+    const int32_t *q;         /* input map, [prony: K, K pairs {a_k, D_k}], then per row:
+                                 shift, T(p) coefficients */
     const uint32_t *node_ids; /* n_out scene node numbers */
     /* q + n_words and node_ids + n_out: a damaged pointer no longer matches
      * its end, and tfit_model_check_q31() finds it without reading through it
@@ -80,9 +82,22 @@ tfit_status tfit_displacements_q31(const tfit_model_q31 *m, const int32_t force[
 tfit_status tfit_contact_force_q31(const tfit_model_q31 *m, const int32_t disp[3],
                                    int32_t force[3]);
 
+/* Prony models in Q31 (TFIT_FAMILY_PRONY, docs/q31-format.md §8): the
+ * float prony step (tfit_prony_step) with a caller-owned int32 state of
+ * TFIT_PRONY_Q31_STATE_WORDS(K) words (the header's
+ * TFIT_NAME_Q31_STATE_WORDS): the previous tick's projected input (Q30),
+ * then each term's three components (Q29).  Same tick period as the float
+ * model (TFIT_NAME_TICK_NS).  There is no NaN in Q31: every int32 force is
+ * valid; TFIT_CLAMPED when it was projected onto the envelope. */
+#define TFIT_PRONY_Q31_STATE_WORDS(terms) (3u + 3u * (uint32_t)(terms))
+tfit_status tfit_prony_reset_q31(const tfit_model_q31 *m, int32_t *state);
+tfit_status tfit_prony_step_q31(const tfit_model_q31 *m, int32_t *state, const int32_t force[3],
+                                int32_t *out);
+
 /* Golden vectors of a Q31 model (NAME_golden.h, TFIT_NAME_GOLDEN_Q31_SETS,
  * a null-terminated list): inputs, statuses and output words computed by
- * the host's integer reference. */
+ * the host's integer reference.  A prony model's vectors are one tick
+ * sequence stepped from tfit_prony_reset_q31(). */
 typedef struct tfit_golden_q31 {
     const tfit_model_q31 *model;
     uint32_t n_vec;

@@ -58,10 +58,38 @@ static int map_ok(const int32_t *map)
     return map[12] >= 2 && map[12] <= 14;
 }
 
+/* K of a prony model (q[13], read once n_words >= 14 is known), else 0. */
+static uint32_t prony_terms(const tfit_model_q31 *m)
+{
+    if (m->family != (uint32_t)TFIT_FAMILY_PRONY || m->n_words <= TFIT_Q31_PRONY_K_WORD) {
+        return 0u;
+    }
+    return (uint32_t)m->q[TFIT_Q31_PRONY_K_WORD];
+}
+
+static const int32_t *first_row(const tfit_model_q31 *m)
+{
+    return m->family == (uint32_t)TFIT_FAMILY_PRONY ? q_prony_rows(m->q, prony_terms(m))
+                                                      : m->q + TFIT_Q31_MAP_WORDS;
+}
+
+/* Each term: 0 <= a <= 2^31 - 2^14 (the rounding drift of z stays below
+ * 2^16 units, §8) and |D| <= 2^30 (|D| <= 1). */
+static int terms_ok(const tfit_model_q31 *m)
+{
+    const int32_t *pt = m->q + TFIT_Q31_PRONY_K_WORD + 1;
+    for (uint32_t k = 0u; k < prony_terms(m); ++k, pt += 2) {
+        if (pt[0] < 0 || pt[0] > TFIT_Q31_PRONY_MAX_A || magnitude(pt[1]) > TFIT_Q31_PRONY_MAX_D) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static int rows_ok(const tfit_model_q31 *m)
 {
     const uint32_t n_terms = q_terms(m->degree);
-    const int32_t *r = m->q + TFIT_Q31_MAP_WORDS;
+    const int32_t *r = first_row(m);
     for (uint32_t o = 0u; o < 3u * m->n_out; ++o, r += n_terms + 1u) {
         if (r[0] < 33 || r[0] > 62) {
             return 0;
@@ -96,16 +124,20 @@ tfit_status tfit_model_check_q31(const tfit_model_q31 *m)
     if (m->api_version != (uint32_t)TFIT_Q31_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family != (uint32_t)TFIT_FAMILY_NODAL && m->family != (uint32_t)TFIT_FAMILY_CONTACT) {
+    if (m->family != (uint32_t)TFIT_FAMILY_NODAL && m->family != (uint32_t)TFIT_FAMILY_CONTACT &&
+        m->family != (uint32_t)TFIT_FAMILY_PRONY) {
         return TFIT_ERR_FAMILY;
     }
+    const uint32_t terms = prony_terms(m);
+    const uint32_t extra = m->family == (uint32_t)TFIT_FAMILY_PRONY ? 1u + 2u * terms : 0u;
     if (m->degree > TFIT_Q31_MAX_DEGREE || m->n_out == 0u || m->n_out > TFIT_Q31_MAX_OUT ||
         (m->family == (uint32_t)TFIT_FAMILY_CONTACT && m->n_out != 1u) ||
-        m->n_words != tfit_q31_expected_words(m->n_out, m->degree)) {
+        terms > TFIT_PRONY_MAX_TERMS ||
+        m->n_words != tfit_q31_expected_words(m->n_out, m->degree) + extra) {
         return TFIT_ERR_SIZE;
     }
     if (tfit_model_crc32_q31(m) != m->crc32) {
         return TFIT_ERR_CORRUPT;
     }
-    return (map_ok(m->q) && rows_ok(m)) ? TFIT_OK : TFIT_ERR_RANGE;
+    return (map_ok(m->q) && terms_ok(m) && rows_ok(m)) ? TFIT_OK : TFIT_ERR_RANGE;
 }

@@ -77,19 +77,24 @@ static int32_t row(const int32_t *r, const int32_t *phi, uint32_t n_terms)
     return q_sra32(q_hi(acc) + (1u << (s - 33u)), s - 32u);
 }
 
-static tfit_status evaluate_q31(const tfit_model_q31 *m, const int32_t in[3], int32_t *out)
+void tfit_q31_rows(const tfit_model_q31 *m, const int32_t *r, const int32_t g[3], int32_t *out)
 {
-    int32_t g[3];
     int32_t phi[TFIT_Q31_MAX_TERMS];
     const uint32_t n_terms = q_terms(m->degree);
-    const int32_t *r = m->q + TFIT_Q31_MAP_WORDS;
-    const uint32_t clamped = tfit_q31_input_map(m->q, in, g);
 
     tfit_q31_basis(m->degree, g, phi);
     for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
         out[o] = row(r, phi, n_terms);
         r += n_terms + 1u;
     }
+}
+
+static tfit_status evaluate_q31(const tfit_model_q31 *m, const int32_t in[3], int32_t *out)
+{
+    int32_t g[3];
+    const uint32_t clamped = tfit_q31_input_map(m->q, in, g);
+
+    tfit_q31_rows(m, m->q + TFIT_Q31_MAP_WORDS, g, out);
     return (tfit_status)(int)(clamped & 1u);
 }
 

@@ -12,10 +12,20 @@ uint32_t tfit_golden_run_q31(const tfit_golden_q31 *gv, int32_t *scratch)
     }
     const tfit_model_q31 *m = gv->model;
     const uint32_t n = 3u * m->n_out;
+    const int prony = m->family == (uint32_t)TFIT_FAMILY_PRONY;
+    int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
     uint32_t mismatches = 0u;
+    if (prony && (m->n_words <= TFIT_Q31_PRONY_K_WORD || m->q[TFIT_Q31_PRONY_K_WORD] < 0 ||
+                  m->q[TFIT_Q31_PRONY_K_WORD] > (int32_t)TFIT_PRONY_MAX_TERMS)) {
+        return UINT32_MAX;
+    }
+    if (prony) { /* the vectors are one tick sequence from rest */
+        (void)tfit_prony_reset_q31(m, state);
+    }
     for (uint32_t v = 0u; v < gv->n_vec; ++v) {
         const int32_t *x = gv->in + 3u * v;
-        tfit_status s = m->family == (uint32_t)TFIT_FAMILY_CONTACT
+        tfit_status s = prony ? tfit_prony_step_q31(m, state, x, scratch)
+                        : m->family == (uint32_t)TFIT_FAMILY_CONTACT
                             ? tfit_contact_force_q31(m, x, scratch)
                             : tfit_displacements_q31(m, x, scratch);
         mismatches += (uint32_t)((int32_t)s != gv->status[v]);

@@ -137,6 +137,18 @@ static inline uint32_t q_terms(uint32_t p)
 uint32_t tfit_q31_input_map(const int32_t *map, const int32_t x[3], int32_t g[3]);
 void tfit_q31_basis(uint32_t p, const int32_t g[3], int32_t *phi);
 uint32_t tfit_q31_expected_words(uint32_t n_out, uint32_t degree);
+/* The rows starting at r (q-format §5) at the normalised input g (Q30). */
+void tfit_q31_rows(const tfit_model_q31 *m, const int32_t *r, const int32_t g[3], int32_t *out);
+
+/* A prony model's table (q-format §8): K at q[13], then K pairs {a_k, D_k},
+ * then the rows. */
+#define TFIT_Q31_PRONY_K_WORD TFIT_Q31_MAP_WORDS
+#define TFIT_Q31_PRONY_MAX_A 0x7fffc000 /* 2^31 - 2^14: 1 - a >= 2^-17 */
+#define TFIT_Q31_PRONY_MAX_D 0x40000000u /* 2^30: |D| <= 1 */
+static inline const int32_t *q_prony_rows(const int32_t *q, uint32_t terms)
+{
+    return q + TFIT_Q31_MAP_WORDS + 1u + 2u * terms;
+}
 
 /* CRC-32 (IEEE, reflected) of one little-endian word, bitwise
  * (tfit_crc_word.c; shared with the float library's tfit_model_crc32). */

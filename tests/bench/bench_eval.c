@@ -106,13 +106,20 @@ static void q31_models(int timed, long calls, double *t, double overhead)
         const tfit_model_q31 *m = sets[s]->model;
         int32_t *out = malloc(3 * m->n_out * sizeof *out);
         const int contact = m->family == TFIT_FAMILY_CONTACT;
+        const int prony = m->family == TFIT_FAMILY_PRONY; /* one tick per call */
+        int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+        if (prony) {
+            tfit_prony_reset_q31(m, state);
+        }
         if (!timed) {
             CALLGRIND_ZERO_STATS;
         }
         for (long i = 0; i < calls; ++i) {
             const int32_t *x = sets[s]->in + 3 * (i % IN_ENVELOPE);
             double t0 = timed ? now_ns() : 0;
-            if (contact) {
+            if (prony) {
+                tfit_prony_step_q31(m, state, x, out);
+            } else if (contact) {
                 tfit_contact_force_q31(m, x, out);
             } else {
                 tfit_displacements_q31(m, x, out);

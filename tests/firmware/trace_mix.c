@@ -158,7 +158,8 @@ static int is_entry(unsigned long pc)
                    strcmp(f, "tfit_prony_step") == 0 || strcmp(f, "tfit_resonant_step") == 0 ||
                    strcmp(f, "tfit_displacements_cut") == 0 ||
                    strcmp(f, "tfit_displacements_q31") == 0 ||
-                   strcmp(f, "tfit_contact_force_q31") == 0;
+                   strcmp(f, "tfit_contact_force_q31") == 0 ||
+                   strcmp(f, "tfit_prony_step_q31") == 0;
         }
     }
     return 0;

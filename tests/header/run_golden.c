@@ -4,8 +4,9 @@
  * per compiler configuration with
  *   -DGOLDEN_H='"NAME_golden.h"' -DGOLDEN_SETS=TFIT_NAME_GOLDEN_SETS
  *   -DTFIT_NAME_IMPLEMENTATION
- * Prints "N passed, M failed" (sets of vectors) and exits non-zero on any
- * mismatch or failed model check.
+ * and optionally -DGOLDEN_Q31_SETS=TFIT_NAME_GOLDEN_Q31_SETS (the Q31 forms'
+ * vectors too).  Prints "N passed, M failed" (sets of vectors) and exits
+ * non-zero on any mismatch or failed model check.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +32,22 @@ int main(int argc, char **argv)
             passed++;
         }
     }
+#ifdef GOLDEN_Q31_SETS
+    static const tfit_golden_q31 *const q31[] = GOLDEN_Q31_SETS; /* null-terminated */
+    for (size_t i = 0; q31[i] != NULL; ++i) {
+        int32_t *scratch = malloc(3 * q31[i]->model->n_out * sizeof *scratch);
+        tfit_status st = tfit_model_check_q31(q31[i]->model);
+        uint32_t bad = tfit_golden_run_q31(q31[i], scratch);
+        free(scratch);
+        if (st != TFIT_OK || bad != 0) {
+            fprintf(stderr, "%s: q31 set %zu: model check %d, %u mismatching words\n", label, i,
+                    (int)st, bad);
+            failed++;
+        } else {
+            passed++;
+        }
+    }
+#endif
     printf("%-16s %u passed, %u failed\n", label, passed, failed);
     return failed == 0 ? 0 : 1;
 }

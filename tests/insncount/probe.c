@@ -6,7 +6,7 @@
  * vectors are one tick sequence: each tick is one evaluation, stepped from
  * a reset state, so the count must depend on neither the input nor the
  * state.  Q31 sets are numbered from 20 and their family ids shifted by 10
- * (11 nodal, 14 contact; 6 is the resonant family).
+ * (11 nodal, 14 contact, 15 prony; 6 is the resonant family).
  *
  * families.h by default; another header with -DGOLDEN_H, -DGOLDEN_SETS,
  * -DGOLDEN_Q31_SETS and its -DTFIT_NAME_IMPLEMENTATION (tests/prony.mk runs
@@ -73,12 +73,17 @@ int main(void)
     for (size_t s = 0; q31[s] != NULL; ++s) {
         const tfit_model_q31 *m = q31[s]->model;
         int32_t *out = malloc(3 * m->n_out * sizeof *out);
+        int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+        if (m->family == TFIT_FAMILY_PRONY) {
+            tfit_prony_reset_q31(m, state);
+        }
         for (uint32_t v = 0; v < q31[s]->n_vec; ++v) {
             char label[64];
             const int32_t *x = q31[s]->in + 3 * v;
             CALLGRIND_ZERO_STATS;
-            tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
-                                                              : tfit_displacements_q31(m, x, out);
+            tfit_status st = m->family == TFIT_FAMILY_PRONY     ? tfit_prony_step_q31(m, state, x, out)
+                             : m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(m, x, out)
+                                                                : tfit_displacements_q31(m, x, out);
             snprintf(label, sizeof label, "set=%zu family=%u vec=%u status=%d", 20 + s,
                      m->family + 10, v, (int)st);
             CALLGRIND_DUMP_STATS_AT(label);

@@ -14,6 +14,7 @@ valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" \
     --toggle-collect=tfit_displacements --toggle-collect=tfit_contact_force \
     --toggle-collect=tfit_prony_step --toggle-collect=tfit_resonant_step \
     --toggle-collect=tfit_displacements_q31 --toggle-collect=tfit_contact_force_q31 \
+    --toggle-collect=tfit_prony_step_q31 \
     --toggle-collect=control_branchy \
     "$probe" >"$out/probe.log" 2>&1 || { cat "$out/probe.log"; exit 1; }
 # Every dump file: "desc: Trigger: Client Request: set=S family=F vec=V status=X" and "totals: N".
@@ -31,7 +32,7 @@ awk '
     if (st[2] < 0) bad[key] = ir[2]; else if (st[2] == 1) clamp[key] = ir[2]; else ok[key] = ir[2]
 }
 END {
-    split("control nodal modal zhou2017 contact prony resonant - - - nodal-q31 - - contact-q31", name, " ")
+    split("control nodal modal zhou2017 contact prony resonant - - - - nodal-q31 - - contact-q31 prony-q31", name, " ")
     printf "%-4s %-11s %7s %12s %12s %12s %s\n", "set", "family", "inputs", "in-envelope", "clamped", "NaN/Inf", "verdict"
     fail = 0
     for (k = 0; k < 64; k++) {

@@ -20,6 +20,7 @@
 #include "force_sequence.h"
 #include "long_hash.h"
 #include "model/model.h"
+#include "model/q31.h"
 #include "model/ref_eval.h"
 
 /* The header's model as a host model (tables copied). */
@@ -69,6 +70,34 @@ static uint32_t run(const tf_model *m, float scale)
     return h;
 }
 
+#ifdef GOLDEN_Q31_SETS
+/* The header's Q31 prony model through the host's integer reference. */
+static uint32_t run_q31(const tfit_model_q31 *t)
+{
+    tf_q31 q = {.family = (tfit_family)t->family, .n_out = t->n_out, .degree = t->degree,
+                .n_words = t->n_words, .terms = (uint32_t)t->q[TFIT_Q31_MAP_WORDS],
+                .q = (int32_t *)(uintptr_t)t->q, .node_ids = t->node_ids};
+    int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+    int32_t *out = malloc(3 * t->n_out * sizeof *out);
+    tf_force_seq s;
+    uint32_t h = TF_LONG_HASH0;
+    tf_seq_init(&s, TF_LONG_SEED);
+    tf_q31_ref_prony_reset(&q, state);
+    for (uint32_t n = 0; n < TF_LONG_TICKS; ++n) {
+        int32_t v[3], x[3];
+        const int bad = tf_seq_tick(&s, v);
+        for (uint32_t i = 0; i < 3; ++i) {
+            x[i] = tf_long_word_q31(v[i], bad, i);
+        }
+        tfit_status st = tf_q31_ref_prony_step(&q, state, x, out);
+        h = tf_long_tick_q31(h, n, (int32_t)st, state, TFIT_PRONY_Q31_STATE_WORDS(q.terms), out,
+                             t->n_out);
+    }
+    free(out);
+    return h;
+}
+#endif
+
 int main(int argc, char **argv)
 {
     static const tfit_golden *const sets[] = GOLDEN_SETS;
@@ -108,6 +137,16 @@ int main(int argc, char **argv)
         fprintf(f, "%s0x%08xu", i ? ", " : "", hash[i]);
     }
     fprintf(f, "};\n");
+#ifdef GOLDEN_Q31_SETS
+    static const tfit_golden_q31 *const q31[] = GOLDEN_Q31_SETS; /* null-terminated */
+    const size_t nq = sizeof q31 / sizeof q31[0];
+    fprintf(f, "static const uint32_t long_hash_q31[%zu] = {", nq);
+    for (size_t i = 0; i < nq; ++i) {
+        const int prony = q31[i] != NULL && q31[i]->model->family == TFIT_FAMILY_PRONY;
+        fprintf(f, "%s0x%08xu", i ? ", " : "", prony ? run_q31(q31[i]->model) : 0u);
+    }
+    fprintf(f, "};\n");
+#endif
     if (fclose(f) != 0 || rename(tmp, argv[1]) != 0) {
         perror(argv[1]);
         return 1;

@@ -17,8 +17,23 @@ static uint32_t terms(uint32_t p)
     return (p + 1) * (p + 2) * (p + 3) / 6;
 }
 
+/* The first output row: after a prony model's K and terms
+ * (q31-format.md §8). */
+static const int32_t *first_row(const tfit_model_q31 *m)
+{
+    return m->family == TFIT_FAMILY_PRONY ? m->q + MAP_WORDS + 1 + 2 * m->q[MAP_WORDS]
+                                          : m->q + MAP_WORDS;
+}
+
+/* A prony model is evaluated as one tick from rest (its reset state), as
+ * the float invariants do from their state. */
 tfit_status stab_q31_eval(const stab_q31 *c, const int32_t x[3], int32_t *y)
 {
+    if (c->m->family == TFIT_FAMILY_PRONY) {
+        int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+        tfit_prony_reset_q31(c->m, state);
+        return tfit_prony_step_q31(c->m, state, x, y);
+    }
     if (c->m->family == TFIT_FAMILY_CONTACT) {
         return tfit_contact_force_q31(c->m, x, y);
     }
@@ -69,7 +84,7 @@ static void row_bounds(stab_q31 *c)
     const uint32_t t = terms(c->m->degree);
     double largest = 0;
     for (uint32_t o = 0; o < 3 * c->m->n_out; ++o) {
-        const int32_t *row = c->m->q + MAP_WORDS + o * (t + 1);
+        const int32_t *row = first_row(c->m) + o * (t + 1);
         double sum = 0;
         for (uint32_t k = 0; k < t; ++k) {
             sum += fabs((double)row[1 + k]);

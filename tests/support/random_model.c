@@ -250,3 +250,18 @@ tf_model *tf_random_model_of(tf_rng *r, const char *name, tfit_family f, const u
     }
     return m;
 }
+
+int32_t tf_random_q31_word(tf_rng *r)
+{
+    switch (tf_rng_below(r, 6)) {
+    case 0:
+        return (int32_t)(uint32_t)tf_rng_next(r); /* anywhere */
+    case 1:
+        return (int32_t)(tf_rng_next(r) >> 40) - (1 << 23); /* near zero */
+    case 2:
+        return tf_rng_below(r, 2) ? INT32_MAX - (int32_t)tf_rng_below(r, 4)
+                                  : INT32_MIN + (int32_t)tf_rng_below(r, 4);
+    default:
+        return (int32_t)((uint32_t)tf_rng_next(r) >> 2) - (1 << 29); /* |x| < 2^29 */
+    }
+}

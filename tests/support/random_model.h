@@ -18,4 +18,8 @@ tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int s
 tf_model *tf_random_model_of(tf_rng *r, const char *name, tfit_family f, const uint32_t *dims,
                              uint32_t n_dims, uint32_t n_out);
 
+/* A random Q31 input word: anywhere, near zero, at the int32 limits, or
+ * within 2^29 (the Q31 tests). */
+int32_t tf_random_q31_word(tf_rng *r);
+
 #endif /* TF_RANDOM_MODEL_H */

@@ -384,6 +384,37 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     return 0;
 }
 
+double tf_prony_q31_heldout(const tf_model *m, const tf_cases *c)
+{
+    if (c->hist == NULL) {
+        return NAN;
+    }
+    const tf_history_set *set = &c->hist->heldout;
+    char err[256];
+    tf_q31 *q = m->family == TFIT_FAMILY_PRONY ? tf_q31_quantise(m, err, sizeof err) : NULL;
+    const size_t rows = 3 * (size_t)m->n_out;
+    int32_t *out = malloc(rows * sizeof *out);
+    double e_max = NAN;
+    for (size_t h = 0; q != NULL && out != NULL && h < set->n; ++h) {
+        int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
+        tf_q31_ref_prony_reset(q, state);
+        e_max = h == 0 ? 0 : e_max;
+        for (size_t n = 0; n < set->n_ticks; ++n) {
+            const double *f = tf_history_force(set, h, n), *u = tf_history_u(set, h, n);
+            const int32_t in[3] = {tf_q31_from_value((double)(float)f[0], q->in_exp),
+                                   tf_q31_from_value((double)(float)f[1], q->in_exp),
+                                   tf_q31_from_value((double)(float)f[2], q->in_exp)};
+            tf_q31_ref_prony_step(q, state, in, out);
+            for (size_t o = 0; o < rows; ++o) {
+                e_max = fmax(e_max, fabs(tf_q31_to_value(out[o], q->out_exp) - u[o]));
+            }
+        }
+    }
+    free(out);
+    tf_q31_free(q);
+    return e_max;
+}
+
 int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
                         double *rel_max, uint32_t *n)
 {
@@ -418,7 +449,7 @@ const tf_family tf_family_prony = {
     .fit = fit,
     .candidates = candidates,
     .orders_text = tf_stateful_orders_text,
-    .q31 = NULL,
+    .q31 = tf_q31_quantise, /* nodal static maps (q31-format.md §8) */
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,
     .heldout = tf_stateful_heldout,

@@ -48,6 +48,12 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
  * the held-out errors of the float32 model stepped through the cases'
  * held-out histories (rel_max over the largest displacement there), and
  * the orders as "p=1 [r=3] K=2 [tick=1000000ns]". */
+/* The largest error of a prony model's Q31 form (q31-format.md §8) over
+ * the held-out histories, each stepped from rest with the forces as Q31
+ * words, against the solves; NAN when the model has no Q31 form or there
+ * are no histories. */
+double tf_prony_q31_heldout(const tf_model *m, const tf_cases *c);
+
 int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
                         double *rel_max, uint32_t *n);
 void tf_stateful_orders_text(const tf_model *m, int style, char *buf, size_t n);

@@ -25,21 +25,6 @@
 #include "random_model.h"
 #include "model/target_view.h"
 
-static int32_t random_word(tf_rng *r)
-{
-    switch (tf_rng_below(r, 6)) {
-    case 0:
-        return (int32_t)(uint32_t)tf_rng_next(r); /* anywhere */
-    case 1:
-        return (int32_t)(tf_rng_next(r) >> 40) - (1 << 23); /* near zero */
-    case 2:
-        return tf_rng_below(r, 2) ? INT32_MAX - (int32_t)tf_rng_below(r, 4)
-                                  : INT32_MIN + (int32_t)tf_rng_below(r, 4);
-    default:
-        return (int32_t)((uint32_t)tf_rng_next(r) >> 2) - (1 << 29); /* |x| < 2^29 */
-    }
-}
-
 static void portable_multiplies_are_exact(void **state)
 {
     (void)state;
@@ -100,7 +85,7 @@ static void target_matches_reference(void **state)
         for (size_t v = 0; v < ng + 40; ++v) {
             int32_t x[3], g[3];
             for (int k = 0; k < 3; ++k) {
-                x[k] = v < ng ? golden[v][k] : random_word(&r);
+                x[k] = v < ng ? golden[v][k] : tf_random_q31_word(&r);
             }
             tfit_status st = m->family == TFIT_FAMILY_CONTACT ? tfit_contact_force_q31(&t, x, a)
                                                               : tfit_displacements_q31(&t, x, a);
@@ -198,6 +183,12 @@ static void check_rejects_damage(void **state)
         const tf_family *f = tf_family_at(i);
         tf_model *any = tf_random_model(&r, f->name, f->id, 1);
         tf_q31 *form = tf_q31_quantise(any, err, sizeof err);
+        if (f->id == TFIT_FAMILY_PRONY && form == NULL) { /* a modal static map, a slow term */
+            assert_non_null(strstr(err, "no Q31 form"));
+            assert_null(strstr(err, "no Q31 form for family"));
+            tf_model_free(any);
+            continue;
+        }
         assert_int_equal(form != NULL, f->q31 != NULL);
         if (form == NULL) {
             assert_non_null(strstr(err, "no Q31 form for family"));
