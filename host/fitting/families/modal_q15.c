@@ -129,12 +129,6 @@ static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take
     return 0;
 }
 
-static void orders_text(const tf_model *m, int style, char *buf, size_t n)
-{
-    (void)style;
-    snprintf(buf, n, "p=%u r=%u", m->dims[0], m->dims[1]);
-}
-
 const tf_family tf_family_modal_q15 = {
     .id = TFIT_FAMILY_MODAL_Q15,
     .name = "modal_q15",
@@ -143,7 +137,7 @@ const tf_family tf_family_modal_q15 = {
     .select = select_orders,
     .fit = fit,
     .candidates = candidates,
-    .orders_text = orders_text,
+    .orders_text = tf_family_rank_text,
     .q31 = NULL,
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,
