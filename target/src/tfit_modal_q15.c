@@ -20,7 +20,7 @@
  */
 #include "tfit_internal.h"
 
-#if !TFIT_DEGREE1_ASM
+#if !TFIT_Q15_ASM
 /* The signed halves of a word, without an implementation-defined cast. */
 static int32_t half_lo(uint32_t w)
 {
@@ -94,7 +94,7 @@ void tfit_eval_modal_q15(const tfit_model *m, const float g[3], uint32_t keep, f
     const float *rows = m->coef + (m->n_coef - 3u * TFIT_MODAL_Q15_WORDS * m->n_out);
 
     tfit_basis(m->dims[0], g, phi);
-#if TFIT_DEGREE1_ASM
+#if TFIT_Q15_ASM
     tfit_q15_amp_asm(at, phi, n_terms, v, keep, c);
     tfit_q15_rows_asm(rows, c, m->n_out, v[TFIT_MODAL_Q15_RANK], out);
 #else

@@ -22,7 +22,7 @@
  */
 #include "tfit_internal.h"
 
-#if TFIT_DEGREE1_ASM
+#if TFIT_Q15_ASM
 
 /* r0 At, r1 phi + 1, r2 terms left (n_terms >= 2: p >= 1), r3 v, r4 keep,
  * r5 c.  After the loop the products a_k v_k are converted (VCVT rounds
