@@ -161,7 +161,8 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_modal_rows_r8 \
                  tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter \
                  tfit_resonant_step tfit_resonant_filter tfit_stateful_eval tfit_stateful_static \
-                 tfit_displacements_cut tfit_cut_progress tfit_cut_rows
+                 tfit_displacements_cut tfit_cut_progress tfit_cut_rows \
+                 tfit_eval_modal_q15 tfit_q15_amp_asm tfit_q15_rows_asm
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
     host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check

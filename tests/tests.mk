@@ -198,9 +198,18 @@ $(T)/probe: tests/insncount/probe.c $(T)/gen/families.h $(B)/native/libtfit.a
 	$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen $(filter %.c %.a,$^) -o $@
 
-check-insncount: $(T)/probe
+# modal_ranks.h too: the float modal ranks 1-9 and the modal_q15 models
+# (their C path here: branch-free saturation and integer sums)
+$(T)/probe-modal_ranks: tests/insncount/probe.c $(T)/gen/modal_ranks.h $(B)/native/libtfit.a
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"modal_ranks_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_MODAL_RANKS_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_MODAL_RANKS_GOLDEN_Q31_SETS \
+	  -DTFIT_MODAL_RANKS_IMPLEMENTATION $(filter %.c %.a,$^) -o $@
+
+check-insncount: $(T)/probe $(T)/probe-modal_ranks
 	@echo "== instructions per evaluation (callgrind), every golden input =="
 	@tests/insncount/run.sh $(T)/probe $(T)/insncount
+	@tests/insncount/run.sh $(T)/probe-modal_ranks $(T)/insncount-modal_ranks
 	@echo "ok: one instruction count per entry point and model, whatever the input"
 
 check-cli: $(B)/bin/tissuefit

@@ -168,6 +168,13 @@ typedef enum block_id {
     CUT_POINT,      /* loop 1: one output point, any p */
     CUT_P0_SKIP,    /* ... minus the inner-loop set-up that p = 0 skips */
     CUT_TERM,       /* loop 2: one basis term of the six rows */
+    EVAL_MODAL_Q15, /* evaluate(): the modal_q15 case */
+    MQ_PATH,        /* tfit_eval_modal_q15(): the basis, the two assembly calls */
+    MQA_PATH,       /* tfit_q15_amp_asm() outside its loop: set-up, conversion, packing */
+    MQA_TERM,       /* loop 1: one basis term of the eight amplitudes */
+    MQR_PATH,       /* tfit_q15_rows_asm() outside its loop, without the odd point */
+    MQR_POINT,      /* the odd output point */
+    MQR_PAIR,       /* loop 1: two output points */
     N_BLOCKS
 } block_id;
 
@@ -359,6 +366,25 @@ static const block blocks[N_BLOCKS] = {
                    SAME("alu=22 load=11 store=4 fload=6 fadd=6 fmul=3 fmov=3 branch=1 nbranch=1")},
     [CUT_P0_SKIP] = {"tfit_cut_rows", 0, 0, SAME("alu=8 load=5")},
     [CUT_TERM] = {"tfit_cut_rows", 2, 2, SAME("alu=2 fldm=7 fwords=7 fadd=6 fmul=6 branch=1")},
+    /* modal_q15 (tfit_modal_q15.c, tfit_modal_q15_armv7em.c); objdump
+     * counts one more alu in each path: the nop after the return */
+    /* forward_other() instead of evaluate(), reached by the branch of
+     * tfit_displacements' family test that families 1-3 fall through */
+    [EVAL_MODAL_Q15] = {"forward_other", 0, 0, SAME("alu=16 load=4 ldm_pc=1 stm=1 words=8 branch=3")},
+    [MQ_PATH] = {"tfit_eval_modal_q15", 0, 0,
+                 {"alu=22 mul=2 mla=1 load=7 store=2 ldm_pc=1 stm=1 words=16 fload=1 branch=3",
+                  "alu=22 mul=2 mla=1 load=7 store=2 ldm_pc=1 stm=1 words=18 fload=1 branch=3"}},
+    [MQA_PATH] = {"tfit_q15_amp_asm", 0, 0,
+                  SAME("alu=24 ldm=2 stm=2 words=21 fldm=3 fstm=1 fwords=32 fmul=8 fother=9 "
+                       "fmov=7 branch=1")},
+    [MQA_TERM] = {"tfit_q15_amp_asm", 1, 1, SAME("alu=1 fldm=2 fwords=9 fadd=8 fmul=8 branch=1")},
+    /* both skips (no odd point, no pair) counted as falling through */
+    [MQR_PATH] = {"tfit_q15_rows_asm", 0, 0,
+                  SAME("alu=4 load=1 ldm=2 ldm_pc=1 stm=1 words=22 nbranch=2")},
+    [MQR_POINT] = {"tfit_q15_rows_asm", 0, 0,
+                   SAME("alu=12 ldm=3 words=12 fstm=1 fwords=3 fmul=3 fother=3 fmov=3")},
+    [MQR_PAIR] = {"tfit_q15_rows_asm", 1, 1,
+                  SAME("alu=25 ldm=6 words=24 fstm=2 fwords=6 fmul=6 fother=6 fmov=6 branch=1")},
 };
 
 static void add_mix(tf_insn_mix *total, const char *text, uint64_t times)
@@ -503,6 +529,24 @@ static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     add_loop(t, core, MODAL_NODE, m->n_out);
     add_block(t, core, MODAL_MODE, (uint64_t)m->n_out * (r - 1));
     falls_through(t, m->n_out);
+}
+
+/* tfit_eval_modal_q15: the basis (p >= 1), the amplitudes term by term
+ * (T - 1 iterations), then the rows: the odd point, then n_out / 2 pairs,
+ * each part skipped by a taken branch when empty. */
+static void modal_q15_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+{
+    const uint32_t p = m->dims[0], pairs = m->n_out >> 1;
+    basis_mix(t, core, p);
+    add_block(t, core, MQ_PATH, 1);
+    add_block(t, core, MQA_PATH, 1);
+    add_loop(t, core, MQA_TERM, tf_terms(p) - 1);
+    add_block(t, core, MQR_PATH, 1);
+    if (m->n_out & 1u) {
+        add_block(t, core, MQR_POINT, 1);
+    }
+    add_loop(t, core, MQR_PAIR, pairs);
+    taken(t, !(m->n_out & 1u) + (pairs == 0));
 }
 
 /* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
@@ -675,6 +719,10 @@ void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
         break;
     case TFIT_FAMILY_ZHOU2017:
         zhou_mix(mix, core, m);
+        break;
+    case TFIT_FAMILY_MODAL_Q15:
+        add_block(mix, core, EVAL_MODAL_Q15, 1);
+        modal_q15_mix(mix, core, m);
         break;
     default:
         add_block(mix, core, EVAL_NODAL, 1);

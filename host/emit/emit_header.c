@@ -343,6 +343,20 @@ static void write_tables(FILE *f, const tf_model *m, const char *site)
                      comp[o % 3]);
             write_floats(f, c, r, note);
         }
+    } else if (m->family == TFIT_FAMILY_MODAL_Q15) { /* header-format.md §5.9 */
+        uint32_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
+        for (uint32_t j = 0; j < t; ++j, c += r) {
+            snprintf(note, sizeof note, "term %u of the 8 mode amplitudes", j);
+            write_floats(f, c, r, note);
+        }
+        write_floats(f, c, r, "Q15 amplitude scales v_k");
+        write_floats(f, c + r, 1, "output scale S (mm)");
+        c += r + 1;
+        for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += TFIT_MODAL_Q15_WORDS) {
+            snprintf(note, sizeof note, "Q15 modes at %s %u %c (word bits: q[2j] | q[2j+1] + 16384)",
+                     site, m->node_ids[o / 3], comp[o % 3]);
+            write_floats(f, c, TFIT_MODAL_Q15_WORDS, note);
+        }
     } else {
         for (int a = 0; a < 3; ++a) {
             snprintf(note, sizeof note, "contact displacement %c(g%c), then its scale", comp[a],

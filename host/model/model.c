@@ -50,6 +50,14 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
         }
         n += (uint64_t)dims[1] * tf_terms(dims[0]) + 3ull * n_out * dims[1];
         break;
+    case TFIT_FAMILY_MODAL_Q15: /* {p >= 1, 8}: At[T][8], v[8], S, 3 n_out rows of 4 words */
+        if (n_dims != TFIT_MODAL_Q15_DIMS || dims[0] == 0 || dims[0] > TFIT_MAX_DEGREE ||
+            dims[1] != TFIT_MODAL_Q15_RANK) {
+            return 0;
+        }
+        n += (uint64_t)TFIT_MODAL_Q15_RANK * (tf_terms(dims[0]) + 1) + 1 +
+             3ull * n_out * TFIT_MODAL_Q15_WORDS;
+        break;
     case TFIT_FAMILY_PRONY: /* {p, r, K, tick_ns}: K pairs, then nodal (r = 0) or modal */
         if (n_dims != TFIT_PRONY_DIMS || dims[0] > TFIT_MAX_DEGREE || dims[1] > TFIT_MAX_RANK ||
             dims[2] > TFIT_PRONY_MAX_TERMS || dims[3] == 0) {
@@ -245,9 +253,55 @@ static int bound_fail(double b, const char *what, const tf_model *m, uint32_t in
 static int validate_prony(const tf_model *m, char *err, size_t errlen);
 static int validate_resonant(const tf_model *m, char *err, size_t errlen);
 
+/* modal_q15 (header-format.md §5.9): the amplitudes bounded as modal's,
+ * the scales finite (a_k v_k may overflow to +-Inf: it saturates), S in
+ * [0, 2^64], every row word's halves within [-16255, 16255] (so that the
+ * sums cannot overflow and no word is a NaN or Inf pattern). */
+static int validate_modal_q15(const tf_model *m, char *err, size_t errlen)
+{
+    const uint32_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
+    const float *at = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const float *v = at + (size_t)r * t;
+    for (uint32_t k = 0; k < r; ++k) {
+        double b = 0;
+        for (uint32_t j = 0; j < t; ++j) {
+            b += fabs((double)at[(size_t)j * r + k]);
+        }
+        if (bound_fail(b, "mode amplitude", m, k, err, errlen)) {
+            return 1;
+        }
+        if (!(fabs((double)v[k]) <= BOUND_LIMIT)) {
+            snprintf(err, errlen, "model '%s': Q15 scale of mode %u is %g (not finite)", m->name,
+                     k, (double)v[k]);
+            return 1;
+        }
+    }
+    if (!(v[r] >= 0.0f && v[r] <= 0x1p64f)) {
+        snprintf(err, errlen, "model '%s': Q15 output scale %g outside [0, 2^64]", m->name,
+                 (double)v[r]);
+        return 1;
+    }
+    const float *rows = v + r + 1;
+    for (uint32_t i = 0; i < 3 * m->n_out * TFIT_MODAL_Q15_WORDS; ++i) {
+        uint32_t w;
+        memcpy(&w, &rows[i], sizeof w);
+        const int32_t lo = (int32_t)(int16_t)(uint16_t)(w & 0xffffu);
+        const int32_t hi = (int32_t)(w >> 16) - 16384;
+        if (lo < -16255 || lo > 16255 || hi < -16255 || hi > 16255) {
+            snprintf(err, errlen, "model '%s': Q15 row word %u holds %d, %d beyond +-16255",
+                     m->name, i, lo, hi);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static int validate_ranges(const tf_model *m, char *err, size_t errlen)
 {
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
+    if (m->family == TFIT_FAMILY_MODAL_Q15) {
+        return validate_modal_q15(m, err, errlen);
+    }
     if (m->family == TFIT_FAMILY_PRONY) {
         return validate_prony(m, err, errlen);
     }
@@ -465,6 +519,13 @@ tf_opcount tf_model_ops(const tf_model *m)
         basis_ops(m->dims[0], &ops);
         ops.mul += r * (t - 1) + rows * r;
         ops.add += r * (t - 1) + rows * (r - 1);
+    } else if (m->family == TFIT_FAMILY_MODAL_Q15) {
+        /* float operations only: the amplitudes, a_k v_k, and S per output
+         * (the mode sums are integer) */
+        uint64_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
+        basis_ops(m->dims[0], &ops);
+        ops.mul += r * (t - 1) + r + rows;
+        ops.add += r * (t - 1);
     } else {
         for (int a = 0; a < 3; ++a) {
             ops.mul += m->dims[a] + 2; /* the series, then t_a = d_a s_a */

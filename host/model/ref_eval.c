@@ -223,6 +223,38 @@ static void eval_modal(arith *c, const tf_model *m, const float *phi, float *out
     }
 }
 
+/* modal_q15 (§5.9): the amplitudes term by term (each mode's operations in
+ * tfit_row's order), c_k = trunc(a_k v_k) saturated to [-8192, 8191], the
+ * integer sums exactly (|sum| < 2^31 by the layout), one conversion and one
+ * product by S per output.  The bias and the +16384 of the high halves
+ * cancel, so the sum is taken directly over the decoded q. */
+static void eval_modal_q15(arith *c, const tf_model *m, const float *phi, float *out)
+{
+    const uint32_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
+    const float *at = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const float *v = at + (size_t)r * t;
+    const float *rows = m->coef + m->n_coef - 3 * (size_t)m->n_out * TFIT_MODAL_Q15_WORDS;
+    int32_t q[TFIT_MODAL_Q15_RANK];
+    for (uint32_t k = 0; k < r; ++k) {
+        float a = at[k];
+        for (uint32_t j = 1; j < t; ++j) {
+            a = f_add(c, a, f_mul(c, at[(size_t)j * r + k], phi[j]));
+        }
+        const float x = f_mul(c, a, v[k]);
+        q[k] = x >= 8191.0f ? 8191 : x <= -8192.0f ? -8192 : (int32_t)x;
+    }
+    for (uint32_t o = 0; o < 3 * m->n_out; ++o) {
+        int64_t s = 0;
+        for (uint32_t j = 0; j < TFIT_MODAL_Q15_WORDS; ++j) {
+            const uint32_t w = bits_of(rows[(size_t)o * TFIT_MODAL_Q15_WORDS + j]);
+            const int32_t lo = (int32_t)(int16_t)(uint16_t)(w & 0xffffu);
+            const int32_t hi = (int32_t)(w >> 16) - 16384;
+            s += (int64_t)lo * q[2 * j] + (int64_t)hi * q[2 * j + 1];
+        }
+        out[o] = f_mul(c, (float)(int32_t)s, v[r]);
+    }
+}
+
 /* zhou2017: p coefficients for every (axis, component) pair first, then the
  * nodes; the per-output sum order is S_x, + S_y, + S_z (§5.3). */
 static void eval_zhou2017(arith *c, const tf_model *m, const float g[3], float *out)
@@ -276,6 +308,8 @@ static void eval_family(arith *c, const tf_model *m, const float g[3], float *ou
         chebyshev_basis(c, m->dims[0], g, phi);
         if (m->family == TFIT_FAMILY_MODAL) {
             eval_modal(c, m, phi, out);
+        } else if (m->family == TFIT_FAMILY_MODAL_Q15) {
+            eval_modal_q15(c, m, phi, out);
         } else {
             eval_polynomial_rows(c, m->coef + TFIT_INPUT_MAP_FLOATS, 3 * m->n_out,
                                  tf_terms(m->dims[0]), phi, out);

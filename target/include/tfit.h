@@ -79,6 +79,10 @@ extern "C" {
 #define TFIT_CUT_DIMS 2      /* { p, K intervals in s } */
 #define TFIT_CUT_MAX_INTERVALS 64
 #define TFIT_RESONANT_DIMS 4 /* { p, r (0: nodal rows), K modes, tick period in ns } */
+#define TFIT_MODAL_Q15_DIMS 2 /* { p >= 1, r = TFIT_MODAL_Q15_RANK } */
+#define TFIT_MODAL_Q15_RANK 8u
+/* Words of one output row of a modal_q15 model: two Q15 modes a word. */
+#define TFIT_MODAL_Q15_WORDS (TFIT_MODAL_Q15_RANK / 2u)
 
 /* Words of a prony model's caller-owned state: the previous projected
  * input (3), then 3 per term (docs/header-format.md §5.6).  A generated
@@ -119,8 +123,10 @@ typedef enum tfit_family {
                                * exponential (Prony) terms, one step per tick */
     TFIT_FAMILY_CUT = 6,      /* forward with the cut progress s as a fourth input: nodal
                                * tables at the knots s_k = k / K, linear in s between them */
-    TFIT_FAMILY_RESONANT = 7  /* stateful: a nodal or modal map of the input filtered by
-                               * damped second-order modes (inertia), one step per tick
+    TFIT_FAMILY_RESONANT = 7, /* stateful: a nodal or modal map of the input filtered by
+                               * damped second-order modes (inertia), one step per tick */
+    TFIT_FAMILY_MODAL_Q15 = 8 /* modal at rank 8 with its modes in Q15 and the products
+                               * summed in integers (dual 16-bit MACs on Armv7E-M)
                                * (the last id: range checks use it) */
 } tfit_family;
 

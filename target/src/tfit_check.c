@@ -102,6 +102,41 @@ static int modal_ok(const tfit_model *m)
     return 1;
 }
 
+/* modal_q15 (header-format.md §5.9): the amplitudes bounded as modal's
+ * (At transposed); v_k finite (a_k v_k may still overflow to +-Inf: the
+ * conversion saturates it); 0 <= S <= 2^64, so |sum| S < 2^95; every row
+ * word's halves within +-16255, which bounds every sum below 2^31 and
+ * keeps the word from being a NaN or Inf pattern. */
+static int modal_q15_ok(const tfit_model *m)
+{
+    const uint32_t n_terms = TFIT_TERMS(m->dims[0]);
+    const float *at = m->coef + TFIT_INPUT_MAP_FLOATS;
+    const float *v = at + TFIT_MODAL_Q15_RANK * n_terms;
+    const float *rows = v + TFIT_MODAL_Q15_RANK + 1u;
+    for (uint32_t k = 0u; k < TFIT_MODAL_Q15_RANK; ++k) {
+        float b = 0.0f;
+        for (uint32_t t = 0u; t < n_terms; ++t) {
+            b = b + fabs_(at[t * TFIT_MODAL_Q15_RANK + k]);
+        }
+        if (!within(b, BOUND_LIMIT) || !within(fabs_(v[k]), BOUND_LIMIT)) {
+            return 0;
+        }
+    }
+    const float s = v[TFIT_MODAL_Q15_RANK];
+    if (!(s >= 0.0f && s <= 0x1p64f)) {
+        return 0;
+    }
+    for (uint32_t i = 0u; i < 3u * m->n_out * TFIT_MODAL_Q15_WORDS; ++i) {
+        const uint32_t w = tfit_bits(rows[i]);
+        const uint32_t lo = (w + 16255u) & 0xffffu; /* q + 16255 for q in range */
+        const uint32_t hi = w >> 16;                /* q + 16384 */
+        if (lo > 32510u || hi < 129u || hi > 32639u) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static int zhou2017_ok(const tfit_model *m)
 {
     const uint32_t *dm = m->dims;
@@ -219,6 +254,8 @@ static int range_ok(const tfit_model *m)
         return resonant_ok(m);
     case TFIT_FAMILY_MODAL:
         return modal_ok(m);
+    case TFIT_FAMILY_MODAL_Q15:
+        return modal_q15_ok(m);
     case TFIT_FAMILY_ZHOU2017:
         return zhou2017_ok(m);
     default:
@@ -259,6 +296,10 @@ static void point(const tfit_model *m, const float g[3], uint32_t keep, uint32_t
     case TFIT_FAMILY_MODAL:
         v.n_coef = m->n_coef - 3u * m->dims[1] * after;
         tfit_eval_modal(&v, g, keep, out);
+        break;
+    case TFIT_FAMILY_MODAL_Q15: /* the rows end the table, as modal's U */
+        v.n_coef = m->n_coef - 3u * TFIT_MODAL_Q15_WORDS * after;
+        tfit_eval_modal_q15(&v, g, keep, out);
         break;
     case TFIT_FAMILY_ZHOU2017:
         v.n_coef = m->n_coef - 2u * after;
@@ -377,7 +418,7 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_RESONANT) {
+    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_MODAL_Q15) {
         return TFIT_ERR_FAMILY;
     }
     /* Sizes before the CRC: the CRC reads n_coef floats. */

@@ -177,8 +177,24 @@ void tfit_degree1_rows_asm(const float *rows, const float g[3], uint32_t n_out, 
 #define TFIT_MODAL_ASM_MAX_RANK 8u
 void tfit_modal_rows_asm(uint32_t r, const float *rows, const float *a, uint32_t n_out,
                          uint32_t keep, float *out);
+/* The modal_q15 family in assembly (tfit_modal_q15_armv7em.c), in an
+ * optimised build only: without optimisation r7 is the Thumb frame
+ * pointer, which the assembly uses (-O0 takes the C, bit for bit the
+ * same).  The
+ * amplitudes, their Q15 words and the bias word into c[5] (and-ed with
+ * keep); the rows of n_out >= 1 points (header-format.md §5.9). */
+#if defined(__OPTIMIZE__)
+#define TFIT_Q15_ASM 1
+#else
+#define TFIT_Q15_ASM 0
+#endif
+void tfit_q15_amp_asm(const float *at, const float *phi, uint32_t n_terms, const float *v,
+                      uint32_t keep, uint32_t c[5]);
+void tfit_q15_rows_asm(const float *rows, const uint32_t c[5], uint32_t n_out, float scale,
+                       float *out);
 #else
 #define TFIT_DEGREE1_ASM 0
+#define TFIT_Q15_ASM 0
 #endif
 
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
@@ -196,6 +212,7 @@ void tfit_basis(uint32_t p, const float g[3], float *phi);
 void tfit_eval_nodal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
+void tfit_eval_modal_q15(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 
 /* The prony family's filter (tfit_prony.c, header-format.md §5.6): the
  * projected input g of this tick -> h, the input of the static map; the new

@@ -24,6 +24,17 @@ static uint32_t modal_coefs(const tfit_model *m)
     return TFIT_INPUT_MAP_FLOATS + r * TFIT_TERMS(p) + 3u * m->n_out * r;
 }
 
+/* map | At[T][8] | v[8] | S | rows: 3 n_out x 4 words (§5.9) */
+static uint32_t modal_q15_coefs(const tfit_model *m)
+{
+    uint32_t p = m->dims[0];
+    if (p == 0u || p > TFIT_MAX_DEGREE || m->dims[1] != TFIT_MODAL_Q15_RANK) {
+        return 0u;
+    }
+    return TFIT_INPUT_MAP_FLOATS + TFIT_MODAL_Q15_RANK * TFIT_TERMS(p) + TFIT_MODAL_Q15_RANK + 1u +
+           3u * m->n_out * TFIT_MODAL_Q15_WORDS;
+}
+
 static uint32_t zhou2017_coefs(const tfit_model *m)
 {
     const uint32_t *dm = m->dims;
@@ -104,6 +115,8 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
         return m->n_dims == TFIT_CUT_DIMS ? cut_coefs(m) : 0u;
     case TFIT_FAMILY_RESONANT:
         return m->n_dims == TFIT_RESONANT_DIMS ? resonant_coefs(m) : 0u;
+    case TFIT_FAMILY_MODAL_Q15:
+        return m->n_dims == TFIT_MODAL_Q15_DIMS ? modal_q15_coefs(m) : 0u;
     default:
         return 0u;
     }

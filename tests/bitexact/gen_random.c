@@ -90,6 +90,8 @@ static int write_model(FILE *f, const tf_model *m, uint64_t seed)
 #define BUNDLE_PRONY 200
 /* Cut models after those, from a third sequence. */
 #define BUNDLE_CUT 200
+/* modal_q15 models after those, from a fourth sequence. */
+#define BUNDLE_Q15 100
 
 static int bundle(long n, uint64_t seed, const char *path)
 {
@@ -98,16 +100,20 @@ static int bundle(long n, uint64_t seed, const char *path)
         perror(path);
         return 1;
     }
-    tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u}, rc = {seed ^ 0x637574u};
-    long per_family[7] = {0};
+    tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u}, rc = {seed ^ 0x637574u},
+           rq = {seed ^ 0x513135u};
+    long per_family[TFIT_FAMILY_MODAL_Q15 + 1] = {0};
+    const long total = n + BUNDLE_PRONY + BUNDLE_CUT + BUNDLE_Q15;
     put(f, TF_BUNDLE_MAGIC);
-    put(f, (uint32_t)(n + BUNDLE_PRONY + BUNDLE_CUT));
-    for (long i = 0; i < n + BUNDLE_PRONY + BUNDLE_CUT; ++i) {
+    put(f, (uint32_t)total);
+    for (long i = 0; i < total; ++i) {
         char name[32];
         snprintf(name, sizeof name, "random%ld", i);
         tf_model *m = i < n                  ? tf_random_model(&r, name, 0, 0)
                       : i < n + BUNDLE_PRONY ? tf_random_model(&rp, name, TFIT_FAMILY_PRONY, 0)
-                                             : tf_random_model(&rc, name, TFIT_FAMILY_CUT, 0);
+                      : i < n + BUNDLE_PRONY + BUNDLE_CUT
+                          ? tf_random_model(&rc, name, TFIT_FAMILY_CUT, 0)
+                          : tf_random_model(&rq, name, TFIT_FAMILY_MODAL_Q15, 0);
         if (m == NULL || write_model(f, m, seed + (uint64_t)i) != 0) {
             fclose(f);
             return 1;
@@ -120,9 +126,9 @@ static int bundle(long n, uint64_t seed, const char *path)
         return 1;
     }
     printf("gen_random: %ld models (nodal %ld, modal %ld, zhou2017 %ld, contact %ld, prony %ld, "
-           "cut %ld) -> %s\n",
-           n + BUNDLE_PRONY + BUNDLE_CUT, per_family[1], per_family[2], per_family[3],
-           per_family[4], per_family[5], per_family[6], path);
+           "cut %ld, modal_q15 %ld) -> %s\n",
+           total, per_family[1], per_family[2], per_family[3], per_family[4], per_family[5],
+           per_family[6], per_family[TFIT_FAMILY_MODAL_Q15], path);
     return 0;
 }
 
@@ -258,10 +264,11 @@ static int header(uint64_t seed, const char *path)
  * assembly on Armv7E-M (TFIT_MODAL_ASM_MAX_RANK = 8) and the first above
  * it (the C rows), each at a random degree 0 .. 4 and 1 .. 8 outputs. */
 #define MODAL_RANKS 9
+#define MODAL_Q15_SHAPES 3
 
 static int modal_ranks(uint64_t seed, const char *path)
 {
-    tf_model *models[MODAL_RANKS] = {0};
+    tf_model *models[MODAL_RANKS + MODAL_Q15_SHAPES] = {0};
     tf_rng r = {seed};
     char err[512], name[32];
     int rc = 1;
@@ -274,15 +281,28 @@ static int modal_ranks(uint64_t seed, const char *path)
             goto done;
         }
     }
-    const tf_emit_info info = {.source = "random modal models of ranks 1-9 "
-                                         "(tests/bitexact/gen_random.c)",
+    /* then modal_q15 models (rank 8) of 1, 2 and 7 output points: the
+     * assembly's odd point alone, one pair alone, both; degrees 1, 2, 4 */
+    static const uint32_t q15_n_out[MODAL_Q15_SHAPES] = {1, 2, 7};
+    static const uint32_t q15_p[MODAL_Q15_SHAPES] = {1, 2, 4};
+    for (uint32_t k = 0; k < MODAL_Q15_SHAPES; ++k) {
+        const uint32_t dims[2] = {q15_p[k], TFIT_MODAL_Q15_RANK};
+        snprintf(name, sizeof name, "modal_q15_n%u", q15_n_out[k]);
+        models[MODAL_RANKS + k] = tf_random_model_of(&r, name, TFIT_FAMILY_MODAL_Q15, dims, 2,
+                                                     q15_n_out[k]);
+        if (models[MODAL_RANKS + k] == NULL) {
+            goto done;
+        }
+    }
+    const tf_emit_info info = {.source = "random modal models of ranks 1-9, and modal_q15 "
+                                         "models (tests/bitexact/gen_random.c)",
                                .golden_seed = seed};
-    rc = tf_emit_header(path, models, MODAL_RANKS, &info, err, sizeof err);
+    rc = tf_emit_header(path, models, MODAL_RANKS + MODAL_Q15_SHAPES, &info, err, sizeof err);
     if (rc != 0) {
         fprintf(stderr, "gen_random: %s\n", err);
     }
 done:
-    for (int i = 0; i < MODAL_RANKS; ++i) {
+    for (int i = 0; i < MODAL_RANKS + MODAL_Q15_SHAPES; ++i) {
         tf_model_free(models[i]);
     }
     return rc != 0;

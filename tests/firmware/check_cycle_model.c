@@ -100,7 +100,7 @@ static tf_model *shape_of(const char *name)
     } else if (family == TFIT_FAMILY_CUT) { /* "p=1 K=8" */
         n_dims = TFIT_CUT_DIMS;
         sscanf(ord, "\"p=%u K=%u\"", &dims[0], &dims[1]);
-    } else if (family == TFIT_FAMILY_MODAL) {
+    } else if (family == TFIT_FAMILY_MODAL || family == TFIT_FAMILY_MODAL_Q15) {
         n_dims = 2;
         sscanf(ord, "\"p=%u r=%u\"", &dims[0], &dims[1]);
     } else if (family == TFIT_FAMILY_ZHOU2017) {

@@ -2,7 +2,7 @@
 # haptic_config.sh HEADER.h — writes (stdout) the haptic_config.h with which
 # target/examples/haptic_loop.c is built for one generated header: the
 # header, its IMPLEMENTATION macro, and the first forward model (family
-# nodal, modal or zhou2017; else the first prony model, stepped with its
+# nodal, modal, zhou2017 or modal_q15; else the first prony model, stepped with its
 # state: HAPTIC_FORWARD_PRONY; else the first resonant model, the same way:
 # HAPTIC_FORWARD_RESONANT; else the first cut model, at the whole incision:
 # HAPTIC_FORWARD_CUT) and the first contact model it defines.
@@ -13,7 +13,7 @@ name=$(basename "$header" .h)
 upper=$(echo "$name" | tr a-z A-Z)
 # "#define TFIT_X_FAMILY_ID n" in model order
 models=$(sed -n 's/^#define TFIT_\([A-Z0-9_]*\)_FAMILY_ID \([0-9]*\)$/\1 \2/p' "$header")
-forward=$(echo "$models" | awk '$2 >= 1 && $2 <= 3 { print $1; exit }')
+forward=$(echo "$models" | awk '($2 >= 1 && $2 <= 3) || $2 == 8 { print $1; exit }')
 prony= resonant= cut=
 if [ -z "$forward" ]; then
     forward=$(echo "$models" | awk '$2 == 5 { print $1; exit }')

@@ -6,7 +6,7 @@
  * vectors are one tick sequence: each tick is one evaluation, stepped from
  * a reset state, so the count must depend on neither the input nor the
  * state.  Q31 sets are numbered from 20 and their family ids shifted by 10
- * (11 nodal, 14 contact, 15 prony; 6 is the resonant family).
+ * (11 nodal, 14 contact, 15 prony).
  *
  * families.h by default; another header with -DGOLDEN_H, -DGOLDEN_SETS,
  * -DGOLDEN_Q31_SETS and its -DTFIT_NAME_IMPLEMENTATION (tests/prony.mk runs

@@ -4,6 +4,7 @@
 #include "random_model.h"
 
 #include <math.h>
+#include <string.h>
 #include <stdio.h>
 
 #include "fitting/families/zhou2017.h"
@@ -67,6 +68,11 @@ static void random_dims(tf_rng *r, tfit_family f, uint32_t *dims, uint32_t *n_di
         dims[0] = pick(r, 0, pmax);
         dims[1] = tf_rng_below(r, 10) == 0 ? TFIT_MAX_RANK : pick(r, 1, small ? 4 : 16);
         *n_dims = 2;
+        break;
+    case TFIT_FAMILY_MODAL_Q15: /* {p >= 1, 8} */
+        dims[0] = pick(r, 1, pmax);
+        dims[1] = TFIT_MODAL_Q15_RANK;
+        *n_dims = TFIT_MODAL_Q15_DIMS;
         break;
     case TFIT_FAMILY_ZHOU2017:
         for (int a = 0; a < 3; ++a) {
@@ -148,6 +154,30 @@ static void resonant_modes(tf_rng *r, tf_model *m, int physical)
     }
 }
 
+/* The words after a modal_q15 model's amplitudes: scales v_k over many
+ * binades (so that some a_k v_k saturate), S, and row words whose halves
+ * are random within +-16255, a tenth of them at the extremes. */
+static uint32_t q15_half(tf_rng *r)
+{
+    uint32_t k = tf_rng_below(r, 20);
+    int32_t q = k == 0 ? 16255 : k == 1 ? -16255 : (int32_t)tf_rng_below(r, 32511) - 16255;
+    return (uint32_t)q;
+}
+
+static void q15_tables(tf_rng *r, tf_model *m)
+{
+    float *v = tf_model_tables(m) + TFIT_MODAL_Q15_RANK * tf_terms(m->dims[0]);
+    for (uint32_t k = 0; k < TFIT_MODAL_Q15_RANK; ++k) {
+        v[k] = (float)pow(10.0, tf_rng_range(r, -3.0, 6.0)) * (tf_rng_below(r, 2) ? 1.0f : -1.0f);
+    }
+    v[TFIT_MODAL_Q15_RANK] = (float)pow(10.0, tf_rng_range(r, -12.0, 3.0));
+    float *rows = v + TFIT_MODAL_Q15_RANK + 1;
+    for (uint32_t i = 0; i < 3 * m->n_out * TFIT_MODAL_Q15_WORDS; ++i) {
+        const uint32_t w = (q15_half(r) & 0xffffu) | ((q15_half(r) + 16384u) << 16);
+        memcpy(&rows[i], &w, sizeof w);
+    }
+}
+
 static void fill_tables(tf_rng *r, tf_model *m)
 {
     /* binade spread: well scaled, moderately, or wildly ill-scaled */
@@ -164,6 +194,8 @@ static void fill_tables(tf_rng *r, tf_model *m)
         prony_terms(r, m, spread == 0);
     } else if (m->family == TFIT_FAMILY_RESONANT) {
         resonant_modes(r, m, spread == 0);
+    } else if (m->family == TFIT_FAMILY_MODAL_Q15) {
+        q15_tables(r, m);
     }
     for (uint32_t i = n - n_xy; i < n; ++i) {
         uint32_t k = tf_rng_below(r, 12);
@@ -199,6 +231,10 @@ static int make_emittable(tf_model *m)
     uint32_t n_decays = m->family == TFIT_FAMILY_PRONY ? m->dims[2] : 0;
     /* a resonant model's transition matrices too (its weights may halve) */
     uint32_t n_modes = m->family == TFIT_FAMILY_RESONANT ? m->dims[2] : 0;
+    /* a modal_q15 model's scales and row words stay as drawn (valid) */
+    if (m->family == TFIT_FAMILY_MODAL_Q15) {
+        n_xy = TFIT_MODAL_Q15_RANK + 1 + 3 * m->n_out * TFIT_MODAL_Q15_WORDS;
+    }
     for (int tries = 0; tries < 400; ++tries) {
         if (tf_model_validate(m, err, sizeof err) == 0) {
             return 0;

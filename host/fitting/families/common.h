@@ -118,6 +118,8 @@ int tf_family_always(const tf_cases *c, const tf_fit_plan *plan, char *why, size
 
 /* "p=2": the degree dims[0]. */
 void tf_family_degree_text(const tf_model *m, int style, char *buf, size_t n);
+/* "p=2 r=3": the degree and the rank, dims[0] and dims[1] (modal families). */
+void tf_family_rank_text(const tf_model *m, int style, char *buf, size_t n);
 
 /* tf_family.f64_errors of the polynomial families: the same least squares
  * on every training case, kept in double, against the held-out cases. */

@@ -160,12 +160,6 @@ static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take
     return 0;
 }
 
-static void orders_text(const tf_model *m, int style, char *buf, size_t n)
-{
-    (void)style;
-    snprintf(buf, n, "p=%u r=%u", m->dims[0], m->dims[1]);
-}
-
 const tf_family tf_family_modal = {
     .id = TFIT_FAMILY_MODAL,
     .name = "modal",
@@ -174,7 +168,7 @@ const tf_family tf_family_modal = {
     .select = select_orders,
     .fit = fit,
     .candidates = candidates,
-    .orders_text = orders_text,
+    .orders_text = tf_family_rank_text,
     .q31 = NULL, /* no Q31 form (docs/q31-format.md §1) */
     .f64_errors = NULL,
     .cost = tf_family_layout_cost,

@@ -10,7 +10,7 @@
 
 #include "fitting/families/family.h"
 
-#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant)
+#define FAMILIES(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant) X(modal_q15)
 
 #define DECLARE(name) extern const tf_family tf_family_##name;
 FAMILIES(DECLARE)

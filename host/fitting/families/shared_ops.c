@@ -26,6 +26,12 @@ void tf_family_degree_text(const tf_model *m, int style, char *buf, size_t n)
     snprintf(buf, n, "p=%u", m->dims[0]);
 }
 
+void tf_family_rank_text(const tf_model *m, int style, char *buf, size_t n)
+{
+    (void)style;
+    snprintf(buf, n, "p=%u r=%u", m->dims[0], m->dims[1]);
+}
+
 /* The model's inputs and its truth at case i of d, by the family's kind. */
 static const double *input_of(int inverse, const tf_fitdata *d, size_t i)
 {

@@ -240,7 +240,7 @@ static void registry(void **state)
     assert_null(tf_family_find("bogus"));
     assert_null(tf_family_of((tfit_family)9));
     tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
-    assert_string_equal(names, "nodal, modal, zhou2017, prony, cut, resonant");
+    assert_string_equal(names, "nodal, modal, zhou2017, prony, cut, resonant, modal_q15");
     tf_family_names(TF_FAMILY_INVERSE, names, sizeof names);
     assert_string_equal(names, "contact");
 }

@@ -183,7 +183,7 @@ static void check_rejections(void **state)
     tf_target_view(m, &t);
     t.family = 0;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_FAMILY);
-    t.family = TFIT_FAMILY_RESONANT + 1; /* the first id no family has */
+    t.family = TFIT_FAMILY_MODAL_Q15 + 1; /* the first id no family has */
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_FAMILY);
 
     tf_target_view(m, &t);
@@ -265,6 +265,59 @@ static void zhou_and_modal_rejections(void **state)
     tf_model_free(md);
 }
 
+/* modal_q15 (header-format.md §5.9): a valid random model passes; a row
+ * word with a half beyond +-16255 (sums that could overflow), a
+ * non-finite scale v_k, a negative S, p = 0 or a rank other than 8 are
+ * refused by the target and by the host's validation. */
+static void modal_q15_rejections(void **state)
+{
+    (void)state;
+    tf_rng r = {7};
+    tf_model *q = tf_random_model(&r, "q", TFIT_FAMILY_MODAL_Q15, 1);
+    char err[256];
+    tfit_model t;
+    tf_target_view(q, &t);
+    assert_int_equal(tfit_model_check(&t), TFIT_OK);
+    float *v = tf_model_tables(q) + TFIT_MODAL_Q15_RANK * tf_terms(q->dims[0]);
+    float *row = v + TFIT_MODAL_Q15_RANK + 1;
+    const float keep_row = row[0], keep_v = v[3], keep_s = v[TFIT_MODAL_Q15_RANK];
+    static const uint32_t bad_words[] = {
+        (16256u & 0xffffu) | (16384u << 16),          /* low half 16256 */
+        ((uint32_t)-16256 & 0xffffu) | (16384u << 16), /* low half -16256 */
+        (16384u + 16256u) << 16,                       /* high half 16256 */
+        (16384u - 16256u) << 16,                       /* high half -16256 */
+        0x7f800000u,                                   /* +Inf's bits */
+    };
+    for (size_t i = 0; i < sizeof bad_words / sizeof bad_words[0]; ++i) {
+        memcpy(&row[0], &bad_words[i], sizeof bad_words[i]);
+        tf_target_view(q, &t); /* CRC matches the altered table */
+        assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
+        assert_int_not_equal(tf_model_validate(q, err, sizeof err), 0);
+    }
+    const uint32_t edge = (16255u & 0xffffu) | ((16384u - 16255u) << 16); /* +-16255: valid */
+    memcpy(&row[0], &edge, sizeof edge);
+    tf_target_view(q, &t);
+    assert_int_not_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
+    row[0] = keep_row;
+    v[3] = INFINITY;
+    tf_target_view(q, &t);
+    assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
+    v[3] = keep_v;
+    v[TFIT_MODAL_Q15_RANK] = -keep_s;
+    tf_target_view(q, &t);
+    assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
+    v[TFIT_MODAL_Q15_RANK] = keep_s;
+    tf_target_view(q, &t);
+    uint32_t dims[2] = {0, TFIT_MODAL_Q15_RANK};
+    t.dims = dims; /* p = 0 */
+    t.dims_end = dims + 2;
+    assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
+    dims[0] = q->dims[0];
+    dims[1] = 7;
+    assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
+    tf_model_free(q);
+}
+
 static void golden_run_counts_mismatches(void **state)
 {
     (void)state;
@@ -296,6 +349,7 @@ int main(void)
         cmocka_unit_test(arguments_and_families),
         cmocka_unit_test(check_rejections),
         cmocka_unit_test(zhou_and_modal_rejections),
+        cmocka_unit_test(modal_q15_rejections),
         cmocka_unit_test(golden_run_counts_mismatches),
     };
     return cmocka_run_group_tests_name("target_api", tests, NULL, NULL);
