@@ -24,8 +24,10 @@ row() { # label scene grid extra-settings...
         /outside every affected support/ {
             match($0, /: [0-9]+ nodes, [0-9]+ outside/); split(substr($0, RSTART + 2, RLENGTH), a, " ")
             nodes = a[1]; far = a[3]
-            match($0, /displacement: [-0-9.e+]+ there, [-0-9.e+]+ over/); split(substr($0, RSTART, RLENGTH), b, " ")
-            dfar = b[2]; dall = b[4]
+            match($0, /displacement: [^ ]+ there/); split(substr($0, RSTART, RLENGTH), b, " ")
+            dfar = b[2]
+            match($0, /[-0-9.e+]+ over all nodes/); split(substr($0, RSTART, RLENGTH), c, " ")
+            dall = c[1]
         }
         /u_reference/ { n = split($0, c, " "); e0 = c[n - 2]; sub(",", "", e0); ec = c[n] }
         END {
