@@ -15,7 +15,7 @@
 #                    20 minutes; not part of make check)
 #   cut-far-study    acceptance 2 by method, integration, grid, Gauss points
 #                    and cut placement (tests/cut/data/far_study.md; about
-#                    15 minutes; not part of make check)
+#                    20 minutes on the shared machine; not part of make check)
 #   cut-progress-pictures  block48_cut's top surface at cut progress 0, 0.5
 #                    and 1 (docs/cutting-progress.png, build/cut/progress_*.vtu)
 #   cut-progress-study  ways of making the cut progress s a model input,
