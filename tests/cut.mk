@@ -1,7 +1,9 @@
 # cut.mk — cutting by enrichment (issue 17, docs/cutting.md).
 #
 #   check-cut        (make check) a cut along the load leaves the solve alone
-#                    away from it (acceptance 2: measured and printed), the
+#                    away from it (acceptance 2, 1e-3: rpim-galerkin with
+#                    Gauss points printed against it, rpim-galerkin with VCI
+#                    and efg-galerkin with Gauss points held to it), the
 #                    slit block's lips open, and the short real version of
 #                    the validation: CalculiX at its coarsest level and the
 #                    meshless solve at its coarsest grid reproduce the
@@ -11,6 +13,9 @@
 #                    below; rewrites tests/cut/data, docs/cutting-cod.png,
 #                    docs/cutting-slit.png and build/cut/table.md (about
 #                    20 minutes; not part of make check)
+#   cut-far-study    acceptance 2 by method, integration, grid, Gauss points
+#                    and cut placement (tests/cut/data/far_study.md; about
+#                    20 minutes on the shared machine; not part of make check)
 #   cut-progress-pictures  block48_cut's top surface at cut progress 0, 0.5
 #                    and 1 (docs/cutting-progress.png, build/cut/progress_*.vtu)
 #   cut-progress-study  ways of making the cut progress s a model input,
@@ -23,7 +28,7 @@ CUT_CCX_LEVELS := 4 8 16
 CUT_GRIDS := 16,8,8 24,12,12 32,16,16
 CUT_DATA := tests/cut/data
 
-.PHONY: check-cut cut-validation cut-pictures cut-progress-pictures cut-progress-study
+.PHONY: check-cut cut-validation cut-pictures cut-progress-pictures cut-progress-study cut-far-study
 CHECKS += check-cut
 
 $(T)/cut/%: tests/cut/%.c $(B)/native/libtissuefit-host.a | deps-build
@@ -39,12 +44,17 @@ $(SLIT_DECK): tests/calculix/slit_deck.c | deps-build
 check-cut: $(CUT_TOOL) $(SLIT_DECK) | deps-calculix
 	@echo "== cuts: enriched vs unenriched far from the cut; the slit opens; CalculiX and meshless data reproduce =="
 	@$(CUT_TOOL) far tests/cut/slit_parallel.yaml
+	@$(CUT_TOOL) far --bound=1e-3 tests/cut/slit_parallel.yaml solver.integration=vci
+	@$(CUT_TOOL) far --bound-all=1e-3 tests/cut/slit_parallel_weak.yaml
 	@tests/cut/check_short.sh $(SLIT_DECK) $(CUT_TOOL) $(B)/cut-check $(CUT_DATA)
 
 cut-validation: $(CUT_TOOL) $(SLIT_DECK) | deps-calculix deps-validation
 	$(Q)CCX_LEVELS="$(CUT_CCX_LEVELS)" GRIDS="$(CUT_GRIDS)" \
 	  tests/cut/run_validation.sh $(SLIT_DECK) $(CUT_TOOL) $(B)/cut $(CUT_DATA)
 	@$(MAKE) --no-print-directory cut-pictures
+
+cut-far-study: $(CUT_TOOL)
+	$(Q)tests/cut/far_study.sh $(CUT_TOOL) $(CUT_DATA)/far_study.md
 
 # Table and pictures from the committed data and one solve of the slit.
 cut-pictures: $(B)/bin/tissuefit | deps-validation

@@ -163,6 +163,19 @@ double tf_cut_enrich(const tf_cut_set *set, const double xi[3], const double x[3
     return e;
 }
 
+int tf_cut_on_panel(const tf_cut_set *set, const double x[3], double tol)
+{
+    for (size_t k = 0; k < set->n; ++k) {
+        const tf_cut_panel *p = &set->panel[k];
+        double r[3] = {x[0] - p->a[0], x[1] - p->a[1], x[2] - p->a[2]}, f = dot3(p->t, r);
+        if (fabs(dot3(p->n, r)) <= tol && f >= -tol && f <= p->len + tol && x[2] >= p->zlo - tol &&
+            x[2] <= p->zhi + tol) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* Liang-Barsky: does the horizontal segment of p meet [lo, hi] in x, y? */
 static int segment_meets_rect(const tf_cut_panel *p, const double lo[3], const double hi[3])
 {

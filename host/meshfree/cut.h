@@ -77,6 +77,12 @@ int tf_cut_visible(const tf_cut_set *set, const double a[3], const double b[3]);
 double tf_cut_enrich(const tf_cut_set *set, const double xi[3], const double x[3],
                      double grad[3]);
 
+/* 1 when x lies on a panel: within tol (mm) of its plane and inside its
+ * span.  Such a point has no side (tf_cut_h and the visibility put it on
+ * the + side); an integration point of a cell face lying on a cut must be
+ * moved into its cell to see that cell's side. */
+int tf_cut_on_panel(const tf_cut_set *set, const double x[3], double tol);
+
 /* 1 when some panel meets the box [lo, hi]. */
 int tf_cut_meets_box(const tf_cut_set *set, const double lo[3], const double hi[3]);
 

@@ -55,9 +55,17 @@ void tf_grad_work_free(tf_grad_work *w)
 }
 
 /* The face points of a cell, face by face (x-, x+, y-, y+, z-, z+), each
- * face's points contiguous: w->nf of them. */
-static void face_points(const tf_cells *c, size_t cell, tf_grad_work *w)
+ * face's points contiguous: w->nf of them.  A point on a cut (a cut along
+ * the cells' faces) is moved into the cell by ON_CUT_NUDGE of the cell's
+ * half-width, so that its shape functions are this cell's side's (on the
+ * panel itself the + side's), and has no neighbour: the cut is a boundary
+ * of both cells, each integrating its own side's trace. */
+#define ON_CUT_TOL 1e-12   /* of the cell's half-width: a point on the panel */
+#define ON_CUT_NUDGE 1e-10 /* of the cell's half-width: clear of ON_CUT_TOL and of rounding */
+
+static void face_points(const tf_shape *sh, size_t cell, tf_grad_work *w)
 {
+    const tf_cells *c = &sh->cells;
     double centre[3], half[3];
     size_t ijk[3] = {cell % c->n[0], cell / c->n[0] % c->n[1], cell / c->n[0] / c->n[1]};
     size_t stride[3] = {1, c->n[0], (size_t)c->n[0] * c->n[1]};
@@ -83,6 +91,11 @@ static void face_points(const tf_cells *c, size_t cell, tf_grad_work *w)
                         n[axis] = hi ? 1 : -1;
                         w->fwt[k] = 0.25 * du * dv * c->gw[a] * c->gw[b];
                         w->fnb[k] = nb;
+                        if (sh->cuts.n > 0 &&
+                            tf_cut_on_panel(&sh->cuts, x, ON_CUT_TOL * half[axis])) {
+                            x[axis] -= n[axis] * ON_CUT_NUDGE * half[axis];
+                            w->fnb[k] = SIZE_MAX;
+                        }
                         k++;
                     }
                 }
@@ -90,6 +103,19 @@ static void face_points(const tf_cells *c, size_t cell, tf_grad_work *w)
         }
     }
     w->nf = k;
+}
+
+/* The neighbour across face f (SIZE_MAX on the box, or where a cut covers
+ * the whole face). */
+static size_t face_neighbour(const tf_grad_work *w, size_t f)
+{
+    size_t per_face = w->nf / 6;
+    for (size_t p = f * per_face; p < (f + 1) * per_face; ++p) {
+        if (w->fnb[p] != SIZE_MAX) {
+            return w->fnb[p];
+        }
+    }
+    return SIZE_MAX;
 }
 
 /* RPIM with cell-centred supports: phi jumps between cells, and a shared
@@ -114,18 +140,19 @@ static void add_support(const tf_shape_work *s, uint32_t *mark, uint32_t stamp, 
 int tf_vci_cell_nodes(const tf_shape *sh, tf_grad_work *w, size_t cell, uint32_t *mark,
                       uint32_t stamp, uint32_t *list, size_t *len)
 {
-    face_points(&sh->cells, cell, w);
+    face_points(sh, cell, w);
     size_t per_face = w->nf / 6;
     for (size_t k = 0; k < w->nf; ++k) {
         const double *x = w->fx + 3 * k;
+        size_t nb = k % per_face == 0 ? face_neighbour(w, k / per_face) : SIZE_MAX;
         if (sh->centre == TF_SUPPORT_POINT) {
             if (tf_shape_support(sh, &w->fw, x, cell) != 0) {
                 snprintf(w->sw.err, sizeof w->sw.err, "%s", w->fw.err);
                 return -1;
             }
             add_support(&w->fw, mark, stamp, list, len);
-        } else if (averages_faces(sh) && k % per_face == 0 && w->fnb[k] != SIZE_MAX) {
-            if (tf_shape_support(sh, &w->fw, x, w->fnb[k]) != 0) {
+        } else if (averages_faces(sh) && nb != SIZE_MAX) {
+            if (tf_shape_support(sh, &w->fw, x, nb) != 0) {
                 snprintf(w->sw.err, sizeof w->sw.err, "%s", w->fw.err);
                 return -1;
             }
@@ -136,14 +163,19 @@ int tf_vci_cell_nodes(const tf_shape *sh, tf_grad_work *w, size_t cell, uint32_t
 }
 
 /* Adds scale * phi_i * n * wt of points first .. first + np of the face
- * list to b (3 m, b[a m + i]); their shape functions are rows row0 ..
- * row0 + np of the evaluation s. */
+ * list to b (3 m, b[a m + i]), scale = alone at a point with no neighbour
+ * (the box, a cut), shared at the others; their shape functions are rows
+ * row0 .. row0 + np of the evaluation s. */
 static void add_face_values(const tf_grad_work *w, const tf_shape_work *s, size_t first,
-                            size_t row0, size_t np, double scale, size_t m, double *b)
+                            size_t row0, size_t np, double alone, double shared, size_t m,
+                            double *b)
 {
     for (size_t p = 0; p < np; ++p) {
         const double *n = w->fn + 3 * (first + p);
-        double wt = scale * w->fwt[first + p];
+        double wt = (w->fnb[first + p] == SIZE_MAX ? alone : shared) * w->fwt[first + p];
+        if (wt == 0) {
+            continue;
+        }
         for (size_t k = 0; k < s->n; ++k) {
             size_t i = (size_t)w->map[s->idx[k]];
             double v = wt * s->phi[(row0 + p) * s->n + k];
@@ -158,14 +190,14 @@ static void add_face_values(const tf_grad_work *w, const tf_shape_work *s, size_
 static int face_integrals(const tf_shape *sh, tf_grad_work *w, size_t cell, size_t m, double *b)
 {
     memset(b, 0, 3 * m * sizeof *b);
-    face_points(&sh->cells, cell, w);
+    face_points(sh, cell, w);
     size_t per_face = w->nf / 6;
     if (sh->centre == TF_SUPPORT_POINT) {
         for (size_t k = 0; k < w->nf; ++k) {
             if (tf_shape_at(sh, &w->fw, w->fx + 3 * k, cell, 0) != 0) {
                 return -1;
             }
-            add_face_values(w, &w->fw, k, 0, 1, 1.0, m, b);
+            add_face_values(w, &w->fw, k, 0, 1, 1.0, 1.0, m, b);
         }
         return 0;
     }
@@ -173,23 +205,22 @@ static int face_integrals(const tf_shape *sh, tf_grad_work *w, size_t cell, size
         return -1;
     }
     if (!averages_faces(sh)) {
-        add_face_values(w, &w->fw, 0, 0, w->nf, 1.0, m, b);
+        add_face_values(w, &w->fw, 0, 0, w->nf, 1.0, 1.0, m, b);
         return 0;
     }
     for (size_t f = 0; f < 6; ++f) {
         size_t first = f * per_face;
-        add_face_values(w, &w->fw, first, first, per_face,
-                        w->fnb[first] == SIZE_MAX ? 1.0 : 0.5, m, b);
+        add_face_values(w, &w->fw, first, first, per_face, 1.0, 0.5, m, b);
     }
     for (size_t f = 0; f < 6; ++f) {
-        size_t first = f * per_face, nb = w->fnb[first];
+        size_t first = f * per_face, nb = face_neighbour(w, f);
         if (nb == SIZE_MAX) {
             continue;
         }
         if (tf_shape_cell_points(sh, &w->fw, nb, w->fx + 3 * first, per_face, 0) != 0) {
             return -1;
         }
-        add_face_values(w, &w->fw, first, 0, per_face, 0.5, m, b);
+        add_face_values(w, &w->fw, first, 0, per_face, 0.0, 0.5, m, b);
     }
     return 0;
 }

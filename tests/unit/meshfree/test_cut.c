@@ -40,6 +40,14 @@ static void side_and_distance(void **state)
     assert_true(tf_cut_h(p, b, NULL) == 0);
     double on_line[3] = {0, 7, 9};
     assert_true(fabs(tf_cut_h(p, on_line, NULL) - 0.5) < 1e-15);
+    /* on the panel: within tol of its plane and in its span (edges included) */
+    const double on[3] = {1e-13, 4.9, 6}, edge[3] = {0, 5, 10}, off[3] = {1e-11, 0, 8},
+                 past[3] = {0, 5.1, 8}, under[3] = {0, 0, 5.9};
+    assert_true(tf_cut_on_panel(&s, on, 1e-12));
+    assert_true(tf_cut_on_panel(&s, edge, 1e-12));
+    assert_false(tf_cut_on_panel(&s, off, 1e-12));
+    assert_false(tf_cut_on_panel(&s, past, 1e-12));
+    assert_false(tf_cut_on_panel(&s, under, 1e-12));
     tf_cut_set_free(&s);
 }
 
