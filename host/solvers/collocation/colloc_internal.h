@@ -4,10 +4,13 @@
  *
  * Layout, chosen for the step (colloc_force.c, docs/collocation.md "Speed"):
  *   forward pairs  particle i's neighbours k at start[i] .. start[i+1]:
- *                  nbr (index), y = w_ik X_ik (3), w (kernel);
+ *                  nbr (index), y = w_ik X_ik (3), w (kernel), and the two
+ *                  side by side for the step, yw (y, w: 4 doubles, one
+ *                  32-byte record per pair);
  *   reverse pairs  the pairs (i, k) grouped by k, ascending i, at
- *                  rstart[k] .. rstart[k+1]: rsrc (i), ry (y of the pair,
- *                  3), rc (beta_i w_ik): what particle k gathers in a step;
+ *                  rstart[k] .. rstart[k+1]: rsrc (i), ryc (y of the pair,
+ *                  3, then beta_i w_ik: one record of 4): what particle k
+ *                  gathers in a step;
  *   per particle   ainv (A_i^-1, 9), s = sum_k y_ik, beta (residual energy
  *                  factor), bsum = sum of rc over k's reverse pairs (also
  *                  for images), and per step the values phase 1 leaves for
@@ -37,6 +40,8 @@ struct tf_colloc {
     unsigned char *fixed;
     tf_material mat;
     int small; /* small-strain law: P = sigma */
+    int svk;   /* St. Venant-Kirchhoff: the step evaluates it inline */
+    double lame_lambda, lame_mu;
     size_t hsize;
     double density;
     tf_colloc_opts opts;
@@ -53,14 +58,14 @@ struct tf_colloc {
 
     /* supports */
     uint32_t *start, *nbr;
-    double *y, *w;
+    double *y, *w, *yw;
     double *h, *rbar, *rmin;
     double *vol, *mass;
     double *ainv, *s, *beta, *bsum;
     double rcond;
     size_t rcond_at;
     uint32_t *rstart, *rsrc;
-    double *ry, *rc;
+    double *ryc;
 
     /* state */
     double *u, *v, *fext, *ubar, *f;
