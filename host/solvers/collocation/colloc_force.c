@@ -239,6 +239,7 @@ static int phase1(tf_colloc *c, size_t i, const double *u, double dt, int want_e
     }
     for (int a = 0; a < 3; ++a) {
         out[9 + a] = out[3 * a] * s[0] + out[3 * a + 1] * s[1] + out[3 * a + 2] * s[2] + bi * q[a];
+        out[12 + a] = u[3 * i + (size_t)a];
     }
     if (want_energy) {
         c->epart[i] = vi * W + residual_energy(c, i, u, G);
@@ -261,7 +262,7 @@ static void phase2(const tf_colloc *c, size_t k, const double *u, double *f)
     }
     for (uint32_t e = c->rstart[k]; e < c->rstart[k + 1]; ++e) {
         size_t i = c->rsrc[e];
-        const double *Q = c->ph1 + TF_COLLOC_PH1 * i, *y = c->ryc + 4 * (size_t)e, *ui = u + 3 * i;
+        const double *Q = c->ph1 + TF_COLLOC_PH1 * i, *y = c->ryc + 4 * (size_t)e, *ui = Q + 12;
         double ce = y[3];
         f0 += ce * ui[0] - (Q[0] * y[0] + Q[1] * y[1] + Q[2] * y[2]);
         f1 += ce * ui[1] - (Q[3] * y[0] + Q[4] * y[1] + Q[5] * y[2]);

@@ -22,8 +22,10 @@
 #include "solvers/collocation/colloc.h"
 
 /* Values per particle that phase 1 of a force evaluation leaves:
- * Q = v P A^-1 - beta G (9), the particle's own force (3). */
-enum { TF_COLLOC_PH1 = 12 };
+ * Q = v P A^-1 - beta G (9), the particle's own force (3), its
+ * displacement (3: what phase 2 reads of particle i beside Q_i, so one
+ * record of two cache lines holds it all), one unused. */
+enum { TF_COLLOC_PH1 = 16 };
 
 typedef struct tf_colloc_ball {
     int on;

@@ -313,7 +313,7 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
         !NEW(c->s, 3 * n) || !NEW(c->beta, n) || !NEW(c->u, 3 * n) || !NEW(c->v, 3 * n) ||
         !NEW(c->fext, 3 * n) || !NEW(c->ubar, 3 * n) || !NEW(c->f, 3 * n) ||
         !NEW(c->hold, c->hsize * n) || !NEW(c->hnew, c->hsize * n) ||
-        !NEW(c->ph1, TF_COLLOC_PH1 * n) || !NEW(c->epart, n) || !NEW(c->bad, n)) {
+        !(c->ph1 = aligned_alloc(64, TF_COLLOC_PH1 * (n + 1) * sizeof *c->ph1)) || !NEW(c->epart, n) || !NEW(c->bad, n)) {
         snprintf(err, errlen, "out of memory for %zu particles", n);
         tf_colloc_free(c);
         return NULL;
