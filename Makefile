@@ -13,6 +13,9 @@ SHELL := /bin/bash
 .SUFFIXES:
 
 VERSION := 0.1.0
+# Cores for the parallel parts of `make check` (the builds of each check,
+# the unit tests, the two fuzzers).
+NPROC := $(shell nproc 2>/dev/null || echo 1)
 PREFIX ?= /usr/local
 B := build
 
@@ -94,15 +97,23 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 # "ok: ..." last, once its work is done (tests/check_guard.sh): a check
 # whose rule lost its recipe, or that stopped after its heading, must fail
 # rather than pass silently.  The guard is first shown such a log.
+# Each check's make builds what the check needs $(NPROC) jobs at a time,
+# unless make was given -j (then the checks share its jobserver); the
+# checks themselves run one after another, and the slowest are listed last.
+CHECK_JOBS = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(NPROC))
 check: | deps-check
 	@mkdir -p $(B)/check
 	@printf '== a check that stopped after its heading ==\n' >$(B)/check/guard-selftest.log
 	@if tests/check_guard.sh guard-selftest $(B)/check/guard-selftest.log >/dev/null; then \
 	  echo "tests/check_guard.sh accepted a log without a result line"; exit 1; fi
-	@set -e; for c in $(CHECKS); do \
-	  $(MAKE) --no-print-directory $$c 2>&1 | tee $(B)/check/$$c.log; \
+	@set -e; : >$(B)/check/seconds; for c in $(CHECKS); do \
+	  s=$$(date +%s); \
+	  $(MAKE) --no-print-directory $(CHECK_JOBS) $$c 2>&1 | tee $(B)/check/$$c.log; \
 	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
+	  echo "$$(( $$(date +%s) - s )) $$c" >>$(B)/check/seconds; \
 	done
+	@sort -rn $(B)/check/seconds | awk '{ t += $$1; if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
+	  END { print "slowest checks: " top "; all " t " s" }'
 	@echo "== make check: all passed ($(words $(CHECKS)) checks, each with its result line) =="
 
 bench: | deps-bench

@@ -5,7 +5,7 @@
 # host library; a crash, leak, undefined behaviour or an input slower than
 # FUZZ_TIMEOUT seconds is a finding, written to $(FZ)/artifacts/.
 #
-#   check-fuzz   (make check) each target FUZZ_CHECK_SECONDS (60 s) from the
+#   check-fuzz   (make check) both targets at once, FUZZ_CHECK_SECONDS (60 s), from the
 #                seeds and the regression inputs (tests/fuzz/regress/: inputs
 #                that found bugs; they must stay harmless)
 #   make fuzz    each target FUZZ_SECONDS (default 1800 s), corpus kept in
@@ -60,8 +60,11 @@ CHECKS += check-fuzz
 check-fuzz: $(FZ)/fuzz_scene $(FZ)/fuzz_set
 	@echo "== fuzzing the scene reader and --set values (ASan + UBSan, $(FUZZ_CHECK_SECONDS) s each) =="
 	@rm -rf $(FZ)/check-corpus
-	@$(call fuzz_run,scene,$(FUZZ_CHECK_SECONDS),$(FZ)/check-corpus/scene)
-	@$(call fuzz_run,set,$(FUZZ_CHECK_SECONDS),$(FZ)/check-corpus/set)
+	@# the two targets at once, one core each; their lines printed in order
+	@r=0; ( $(call fuzz_run,scene,$(FUZZ_CHECK_SECONDS),$(FZ)/check-corpus/scene) ) \
+	  >$(FZ)/check-scene.out 2>&1 & p=$$!; \
+	( $(call fuzz_run,set,$(FUZZ_CHECK_SECONDS),$(FZ)/check-corpus/set) ) >$(FZ)/check-set.out 2>&1 || r=1; \
+	wait $$p || r=1; cat $(FZ)/check-scene.out $(FZ)/check-set.out; exit $$r
 
 fuzz: $(FZ)/fuzz_scene $(FZ)/fuzz_set
 	@echo "== fuzzing the scene reader and --set values (ASan + UBSan, $(FUZZ_SECONDS) s each) =="
