@@ -12,9 +12,10 @@
  *                  3, then beta_i w_ik: one record of 4): what particle k
  *                  gathers in a step;
  *   per particle   ainv (A_i^-1, 9), s = sum_k y_ik, beta (residual energy
- *                  factor), bsum = sum of rc over k's reverse pairs (also
+ *                  factor), bsum = sum of beta_i w_ik over k's reverse pairs (also
  *                  for images), and per step the values phase 1 leaves for
- *                  phase 2 (ph1: Q_i, 9, and the particle's own force, 3).
+ *                  phase 2 (ph1: Q_i, 9, the particle's own force, 3, and its
+ *                  displacement, 3: a record of 16, 64-byte aligned).
  */
 #ifndef TF_COLLOC_INTERNAL_H
 #define TF_COLLOC_INTERNAL_H
