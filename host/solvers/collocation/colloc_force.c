@@ -50,6 +50,17 @@
 
 #include "materials/kinematics.h"
 
+/* a b for 3 x 3 matrices: tf_matmul3's operations in its order (the same
+ * bits), inlined because the step calls it three times per particle. */
+static inline void mul3(const double a[9], const double b[9], double ab[9])
+{
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            ab[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+        }
+    }
+}
+
 /* Voigt stress (tensor components) -> symmetric tensor. */
 static void voigt_to_tensor(const double v[6], double t[9])
 {
@@ -99,29 +110,77 @@ static double residual_energy(const tf_colloc *c, size_t i, const double *u, con
 }
 
 /* G_i = B_i A_i^-1, B_i = sum_k (u_k - u_i) y_ik^T (colloc_mls.c), and
- * q_i = sum_k w_ik (u_k - u_i). */
+ * q_i = sum_k w_ik (u_k - u_i).  Two passes over the pairs (rows x, y of
+ * B and q, then row z): twelve sums at once do not fit the 16 registers,
+ * and the spilled ones made the loop wait on memory (perf: 35 % of a step);
+ * each sum keeps its order, so the bits are those of one pass. */
 static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9], double q[3])
 {
-    const double *ui = u + 3 * i;
-    double B[9] = {0};
-    q[0] = q[1] = q[2] = 0;
-    for (uint32_t p = c->start[i]; p < c->start[i + 1]; ++p) {
-        const double *uk = u + 3 * (size_t)c->nbr[p], *y = c->y + 3 * (size_t)p;
-        double du0 = uk[0] - ui[0], du1 = uk[1] - ui[1], du2 = uk[2] - ui[2], w = c->w[p];
-        B[0] += du0 * y[0];
-        B[1] += du0 * y[1];
-        B[2] += du0 * y[2];
-        B[3] += du1 * y[0];
-        B[4] += du1 * y[1];
-        B[5] += du1 * y[2];
-        B[6] += du2 * y[0];
-        B[7] += du2 * y[1];
-        B[8] += du2 * y[2];
-        q[0] += w * du0;
-        q[1] += w * du1;
-        q[2] += w * du2;
+    const double *ui = u + 3 * i, *yw = c->yw;
+    const uint32_t *nbr = c->nbr;
+    uint32_t p0 = c->start[i], p1 = c->start[i + 1];
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0, b5 = 0, q0 = 0, q1 = 0;
+    for (uint32_t p = p0; p < p1; ++p) {
+        const double *uk = u + 3 * (size_t)nbr[p], *y = yw + 4 * (size_t)p;
+        double du0 = uk[0] - ui[0], du1 = uk[1] - ui[1];
+        b0 += du0 * y[0];
+        b1 += du0 * y[1];
+        b2 += du0 * y[2];
+        b3 += du1 * y[0];
+        b4 += du1 * y[1];
+        b5 += du1 * y[2];
+        q0 += y[3] * du0;
+        q1 += y[3] * du1;
     }
-    tf_matmul3(B, c->ainv + 9 * i, G);
+    double b6 = 0, b7 = 0, b8 = 0, q2 = 0;
+    for (uint32_t p = p0; p < p1; ++p) {
+        const double *uk = u + 3 * (size_t)nbr[p], *y = yw + 4 * (size_t)p;
+        double du2 = uk[2] - ui[2];
+        b6 += du2 * y[0];
+        b7 += du2 * y[1];
+        b8 += du2 * y[2];
+        q2 += y[3] * du2;
+    }
+    double B[9] = {b0, b1, b2, b3, b4, b5, b6, b7, b8};
+    q[0] = q0;
+    q[1] = q1;
+    q[2] = q2;
+    mul3(B, c->ainv + 9 * i, G);
+}
+
+/* St. Venant-Kirchhoff's S (eqs 4-5) for the step, without the call
+ * through tf_material_eval, the Voigt round trip and the Lame constants
+ * per call: tf_svk_eval's and tf_green_lagrange's operations in their
+ * order, so the same bits (materials/svk.c is the reference; the unit
+ * tests compare the solver's forces with its energy).  Returns -1 when
+ * det F <= 0. */
+static int svk_stress(const tf_colloc *c, const double F[9], double S[9], double *W)
+{
+    if (!(tf_det3(F) > 0)) {
+        return -1;
+    }
+    double H[9], E[9], lambda = c->lame_lambda, mu = c->lame_mu;
+    for (int k = 0; k < 9; ++k) {
+        H[k] = F[k] - (k % 4 == 0);
+    }
+    for (int i = 0; i < 3; ++i) {
+        for (int j = i; j < 3; ++j) {
+            double hh = H[i] * H[j] + H[3 + i] * H[3 + j] + H[6 + i] * H[6 + j];
+            E[3 * i + j] = E[3 * j + i] = 0.5 * (H[3 * i + j] + H[3 * j + i] + hh);
+        }
+    }
+    double tr = E[0] + E[4] + E[8];
+    for (int k = 0; k < 9; ++k) {
+        S[k] = 2 * mu * E[k] + (k % 4 == 0 ? lambda * tr : 0);
+    }
+    if (W) {
+        double ee = 0;
+        for (int k = 0; k < 9; ++k) {
+            ee += E[k] * E[k];
+        }
+        *W = 0.5 * lambda * tr * tr + mu * ee;
+    }
+    return 0;
 }
 
 /* First Piola-Kirchhoff stress P (and the energy density in *W) of particle
@@ -129,17 +188,22 @@ static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9],
 static int stress(tf_colloc *c, size_t i, const double F[9], double dt, double P[9], double *W)
 {
     double S6[6], S[9];
-    if (tf_material_eval(&c->mat, F, dt, c->hold + i * c->hsize, c->hnew + i * c->hsize, S6,
-                         NULL, W) != TF_MAT_OK) {
+    if (c->svk) {
+        if (svk_stress(c, F, S, W) != 0) {
+            return -1;
+        }
+    } else if (tf_material_eval(&c->mat, F, dt, c->hold + i * c->hsize, c->hnew + i * c->hsize,
+                                S6, NULL, W) != TF_MAT_OK) {
         return -1;
+    } else {
+        voigt_to_tensor(S6, S);
     }
-    voigt_to_tensor(S6, S);
     if (c->small) {
         for (int k = 0; k < 9; ++k) {
             P[k] = S[k];
         }
     } else {
-        tf_matmul3(F, S, P);
+        mul3(F, S, P);
     }
     if (c->opts.kv > 0) {
         double wv = volume_term(c->opts.kv, F, P);
@@ -169,12 +233,13 @@ static int phase1(tf_colloc *c, size_t i, const double *u, double dt, int want_e
     for (int k = 0; k < 9; ++k) {
         P[k] *= vi;
     }
-    tf_matmul3(P, ainv, M);
+    mul3(P, ainv, M);
     for (int k = 0; k < 9; ++k) {
         out[k] = M[k] - bi * G[k];
     }
     for (int a = 0; a < 3; ++a) {
         out[9 + a] = out[3 * a] * s[0] + out[3 * a + 1] * s[1] + out[3 * a + 2] * s[2] + bi * q[a];
+        out[12 + a] = u[3 * i + (size_t)a];
     }
     if (want_energy) {
         c->epart[i] = vi * W + residual_energy(c, i, u, G);
@@ -197,8 +262,8 @@ static void phase2(const tf_colloc *c, size_t k, const double *u, double *f)
     }
     for (uint32_t e = c->rstart[k]; e < c->rstart[k + 1]; ++e) {
         size_t i = c->rsrc[e];
-        const double *Q = c->ph1 + TF_COLLOC_PH1 * i, *y = c->ry + 3 * (size_t)e, *ui = u + 3 * i;
-        double ce = c->rc[e];
+        const double *Q = c->ph1 + TF_COLLOC_PH1 * i, *y = c->ryc + 4 * (size_t)e, *ui = Q + 12;
+        double ce = y[3];
         f0 += ce * ui[0] - (Q[0] * y[0] + Q[1] * y[1] + Q[2] * y[2]);
         f1 += ce * ui[1] - (Q[3] * y[0] + Q[4] * y[1] + Q[5] * y[2]);
         f2 += ce * ui[2] - (Q[6] * y[0] + Q[7] * y[1] + Q[8] * y[2]);

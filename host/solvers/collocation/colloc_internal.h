@@ -4,14 +4,18 @@
  *
  * Layout, chosen for the step (colloc_force.c, docs/collocation.md "Speed"):
  *   forward pairs  particle i's neighbours k at start[i] .. start[i+1]:
- *                  nbr (index), y = w_ik X_ik (3), w (kernel);
+ *                  nbr (index), y = w_ik X_ik (3), w (kernel), and the two
+ *                  side by side for the step, yw (y, w: 4 doubles, one
+ *                  32-byte record per pair);
  *   reverse pairs  the pairs (i, k) grouped by k, ascending i, at
- *                  rstart[k] .. rstart[k+1]: rsrc (i), ry (y of the pair,
- *                  3), rc (beta_i w_ik): what particle k gathers in a step;
+ *                  rstart[k] .. rstart[k+1]: rsrc (i), ryc (y of the pair,
+ *                  3, then beta_i w_ik: one record of 4): what particle k
+ *                  gathers in a step;
  *   per particle   ainv (A_i^-1, 9), s = sum_k y_ik, beta (residual energy
- *                  factor), bsum = sum of rc over k's reverse pairs (also
+ *                  factor), bsum = sum of beta_i w_ik over k's reverse pairs (also
  *                  for images), and per step the values phase 1 leaves for
- *                  phase 2 (ph1: Q_i, 9, and the particle's own force, 3).
+ *                  phase 2 (ph1: Q_i, 9, the particle's own force, 3, and its
+ *                  displacement, 3: a record of 16, 64-byte aligned).
  */
 #ifndef TF_COLLOC_INTERNAL_H
 #define TF_COLLOC_INTERNAL_H
@@ -19,8 +23,10 @@
 #include "solvers/collocation/colloc.h"
 
 /* Values per particle that phase 1 of a force evaluation leaves:
- * Q = v P A^-1 - beta G (9), the particle's own force (3). */
-enum { TF_COLLOC_PH1 = 12 };
+ * Q = v P A^-1 - beta G (9), the particle's own force (3), its
+ * displacement (3: what phase 2 reads of particle i beside Q_i, so one
+ * record of two cache lines holds it all), one unused. */
+enum { TF_COLLOC_PH1 = 16 };
 
 typedef struct tf_colloc_ball {
     int on;
@@ -37,6 +43,8 @@ struct tf_colloc {
     unsigned char *fixed;
     tf_material mat;
     int small; /* small-strain law: P = sigma */
+    int svk;   /* St. Venant-Kirchhoff: the step evaluates it inline */
+    double lame_lambda, lame_mu;
     size_t hsize;
     double density;
     tf_colloc_opts opts;
@@ -53,14 +61,14 @@ struct tf_colloc {
 
     /* supports */
     uint32_t *start, *nbr;
-    double *y, *w;
+    double *y, *w, *yw;
     double *h, *rbar, *rmin;
     double *vol, *mass;
     double *ainv, *s, *beta, *bsum;
     double rcond;
     size_t rcond_at;
     uint32_t *rstart, *rsrc;
-    double *ry, *rc;
+    double *ryc;
 
     /* state */
     double *u, *v, *fext, *ubar, *f;

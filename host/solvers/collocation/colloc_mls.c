@@ -79,17 +79,18 @@ static double particle(tf_colloc *c, size_t i, double mu)
 }
 
 /* The pairs grouped by the neighbour (particle or image) that receives
- * their force, in ascending order of the particle whose stress makes it. */
+ * their force, in ascending order of the particle whose stress makes it;
+ * and the forward pairs' y and w side by side (colloc_internal.h). */
 static int reverse(tf_colloc *c)
 {
     size_t n = c->n, na = c->na, nnz = c->start[n];
     c->rstart = calloc(na + 1, sizeof *c->rstart);
     c->rsrc = malloc((nnz + 1) * sizeof *c->rsrc);
-    c->ry = malloc((3 * nnz + 1) * sizeof *c->ry);
-    c->rc = malloc((nnz + 1) * sizeof *c->rc);
+    c->ryc = malloc((4 * nnz + 1) * sizeof *c->ryc);
+    c->yw = malloc((4 * nnz + 1) * sizeof *c->yw);
     c->bsum = calloc(na + 1, sizeof *c->bsum);
     uint32_t *fill = malloc((na + 1) * sizeof *fill);
-    if (!c->rstart || !c->rsrc || !c->ry || !c->rc || !c->bsum || !fill) {
+    if (!c->rstart || !c->rsrc || !c->ryc || !c->yw || !c->bsum || !fill) {
         free(fill);
         return -1;
     }
@@ -105,12 +106,14 @@ static int reverse(tf_colloc *c)
     for (size_t i = 0; i < n; ++i) {
         for (uint32_t p = c->start[i]; p < c->start[i + 1]; ++p) {
             uint32_t k = c->nbr[p], e = fill[k]++;
+            double *r = c->ryc + 4 * (size_t)e, *f = c->yw + 4 * (size_t)p;
             c->rsrc[e] = (uint32_t)i;
-            c->rc[e] = c->beta[i] * c->w[p];
-            c->bsum[k] += c->rc[e]; /* ascending i: a fixed order */
+            r[3] = c->beta[i] * c->w[p];
+            c->bsum[k] += r[3]; /* ascending i: a fixed order */
             for (int a = 0; a < 3; ++a) {
-                c->ry[3 * (size_t)e + a] = c->y[3 * (size_t)p + a];
+                r[a] = f[a] = c->y[3 * (size_t)p + a];
             }
+            f[3] = c->w[p];
         }
     }
     free(fill);

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "materials/elasticity.h"
 #include "meshfree/neighbours.h"
 
 /* A neighbour at the same distance as the k-th (relative): regular grids. */
@@ -296,6 +297,10 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
     c->mat = b->material;
     c->small = tf_material_kinematics(&b->material) == TF_KIN_SMALL;
     c->hsize = tf_material_history_size(&b->material);
+    c->svk = b->material.law == TF_LAW_SVK; /* the step's own path (colloc_force.c) */
+    tf_lame lame = tf_lame_from(b->material.young, b->material.poisson);
+    c->lame_lambda = lame.lambda;
+    c->lame_mu = lame.mu;
     c->density = b->density;
     c->opts = *o;
     c->na = n;
@@ -308,7 +313,7 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
         !NEW(c->s, 3 * n) || !NEW(c->beta, n) || !NEW(c->u, 3 * n) || !NEW(c->v, 3 * n) ||
         !NEW(c->fext, 3 * n) || !NEW(c->ubar, 3 * n) || !NEW(c->f, 3 * n) ||
         !NEW(c->hold, c->hsize * n) || !NEW(c->hnew, c->hsize * n) ||
-        !NEW(c->ph1, TF_COLLOC_PH1 * n) || !NEW(c->epart, n) || !NEW(c->bad, n)) {
+        !(c->ph1 = aligned_alloc(64, TF_COLLOC_PH1 * (n + 1) * sizeof *c->ph1)) || !NEW(c->epart, n) || !NEW(c->bad, n)) {
         snprintf(err, errlen, "out of memory for %zu particles", n);
         tf_colloc_free(c);
         return NULL;
@@ -353,7 +358,7 @@ void tf_colloc_free(tf_colloc *c)
     }
     void *all[] = {c->X,   c->fixed, c->start, c->nbr,  c->y,    c->w,    c->h,    c->rbar,
                    c->rmin, c->vol,  c->mass,  c->ainv, c->s,    c->beta, c->rstart, c->rsrc,
-                   c->ry,  c->rc,    c->bsum,  c->u,    c->v,    c->fext, c->ubar, c->f,    c->hold,
+                   c->ryc, c->yw,     c->bsum,  c->u,    c->v,    c->fext, c->ubar, c->f,    c->hold,
                    c->hnew, c->ph1,  c->epart, c->bad, c->mdr, c->u0, c->f0, c->res,
                    c->gsrc, c->gstart, c->gsign, c->ue, c->fe};
     for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) {
