@@ -6,25 +6,25 @@
  * every training case solved directly; orders by 5-fold cross-validation (seed 20170912).
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
- *   tfit_block48_ve_forward: prony p=2 K=1 tick=1000000ns, 121 output points, force [N] -> displacement [mm]
- *       3296 add, 3312 mul, 0 div per evaluation; 15076 table bytes
- *       18255 instructions; Cortex-M4F <= 26967 cycles (160.52 us at 168 MHz), Cortex-M7 ~20966 (43.68 us at 480 MHz)
- *       Q31 form tfit_block48_ve_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 8.13e-08 mm (float32 path: 1.4e-06)
+ *   tfit_block48_ve_forward: prony p=3 K=1 tick=1000000ns, 121 output points, force [N] -> displacement [mm]
+ *       6929 add, 6952 mul, 0 div per evaluation; 29596 table bytes
+ *       34119 instructions; Cortex-M4F <= 51371 cycles (305.78 us at 168 MHz), Cortex-M7 ~40486 (84.34 us at 480 MHz)
+ *       Q31 form tfit_block48_ve_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 9.21e-08 mm (float32 path: 1.36e-06)
  *         (prony, q31-format.md section 8: 12000 ticks of a press-hold-release history from rest against the float coefficients stepped in double; state 6 int32 words, tfit_prony_reset_q31, tfit_prony_step_q31)
- *         Q31 against the held-out solves: max 0.0186 mm over 6 histories (the float model's 0.0186)
- *       stateful: tick 1000000 ns, state 6 floats (tfit_prony_reset, tfit_prony_step); creep J(t)/J(inf) = 1 - 0.3337 exp(-t/1.501 s)
- *       held-out cases are force histories stepped from rest: largest error 1.67 % of the largest displacement
- *       held-out error over 6 cases: max 0.0186 mm, rms 0.00121 mm
- *       error against the physics: fit 0.0186 + discretisation 0.0969 = total <= 0.115 mm
+ *         Q31 against the held-out solves: max 0.00447 mm over 6 histories (the float model's 0.00447)
+ *       stateful: tick 1000000 ns, state 6 floats (tfit_prony_reset, tfit_prony_step); creep J(t)/J(inf) = 1 - 0.3334 exp(-t/1.499 s)
+ *       held-out cases are force histories stepped from rest: largest error 0.401 % of the largest displacement
+ *       held-out error over 6 cases: max 0.00447 mm, rms 0.000232 mm
+ *       error against the physics: fit 0.00447 + discretisation 0.0969 = total <= 0.101 mm
  *         (discretisation: tests/physics/data/block48_ve_physics.csv, 1 load case at 121 points, largest over the cases (forces up to 100 % of the envelope's radius 1 N; not measured beyond))
- *   tfit_block48_ve_contact: contact p=2, 1 output point, contact displacement [mm] -> contact force [N]
- *       47 add, 66 mul, 0 div per evaluation; 176 table bytes
- *       593 instructions; Cortex-M4F <= 853 cycles (5.08 us at 168 MHz), Cortex-M7 ~636 (1.32 us at 480 MHz)
- *       Q31 form tfit_block48_ve_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.46e-08 N (float32 path: 2.16e-07)
- *       held-out error over 15 cases: max 0.0156 N, rms 0.00413 N
- *       error against the physics: fit 0.0156 + discretisation 0.00395 = total <= 0.0195 N
+ *   tfit_block48_ve_contact: contact p=3, 1 output point, contact displacement [mm] -> contact force [N]
+ *       80 add, 106 mul, 0 div per evaluation; 296 table bytes
+ *       857 instructions; Cortex-M4F <= 1257 cycles (7.48 us at 168 MHz), Cortex-M7 ~956 (1.99 us at 480 MHz)
+ *       Q31 form tfit_block48_ve_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.24e-08 N (float32 path: 2.5e-07)
+ *       held-out error over 15 cases: max 0.00435 N, rms 0.00121 N
+ *       error against the physics: fit 0.00435 + discretisation 0.00395 = total <= 0.0083 N
  *         (discretisation: tests/physics/data/block48_ve_physics.csv: contact-site displacement off by 0.395 % (reference point 0 mm from the site), times the largest force 1 N)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.406 N/mm; largest stiffness 1.35 N/mm (the device must render it)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.402 N/mm; largest stiffness 1.35 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_VE_IMPLEMENTATION before including it: that file holds
@@ -41,35 +41,35 @@
 #endif
 
 /* CRC-32 of block48_ve_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_BLOCK48_VE_GOLDEN_CRC32 0x1651bde1u
+#define TFIT_BLOCK48_VE_GOLDEN_CRC32 0x4569e61cu
 
 /* tfit_block48_ve_forward */
 #define TFIT_BLOCK48_VE_FORWARD_FAMILY "prony"
 #define TFIT_BLOCK48_VE_FORWARD_FAMILY_ID 5
-#define TFIT_BLOCK48_VE_FORWARD_ORDERS "p=2 K=1 tick=1000000ns"
+#define TFIT_BLOCK48_VE_FORWARD_ORDERS "p=3 K=1 tick=1000000ns"
 #define TFIT_BLOCK48_VE_FORWARD_N_OUT 121u
 #define TFIT_BLOCK48_VE_FORWARD_INPUT "force [N]"
 #define TFIT_BLOCK48_VE_FORWARD_OUTPUT "displacement [mm]"
 #define TFIT_BLOCK48_VE_FORWARD_ENVELOPE_RADIUS 1 /* N, ball around the centre */
 #define TFIT_BLOCK48_VE_FORWARD_ENVELOPE_CENTER {0, 0, 0}
-#define TFIT_BLOCK48_VE_FORWARD_OPS_ADD 3296
-#define TFIT_BLOCK48_VE_FORWARD_OPS_MUL 3312
+#define TFIT_BLOCK48_VE_FORWARD_OPS_ADD 6929
+#define TFIT_BLOCK48_VE_FORWARD_OPS_MUL 6952
 #define TFIT_BLOCK48_VE_FORWARD_OPS_DIV 0
-#define TFIT_BLOCK48_VE_FORWARD_OPS 6608
-#define TFIT_BLOCK48_VE_FORWARD_TABLE_BYTES 15076
-#define TFIT_BLOCK48_VE_FORWARD_INSNS_ARMV7EM 18255 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F 26967u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F_MIN 23828u
-#define TFIT_BLOCK48_VE_FORWARD_US_M4F_168MHZ 160.52
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M7 20966u /* estimate, +-30 % */
-#define TFIT_BLOCK48_VE_FORWARD_US_M7_480MHZ 43.68
+#define TFIT_BLOCK48_VE_FORWARD_OPS 13881
+#define TFIT_BLOCK48_VE_FORWARD_TABLE_BYTES 29596
+#define TFIT_BLOCK48_VE_FORWARD_INSNS_ARMV7EM 34119 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F 51371u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F_MIN 45790u
+#define TFIT_BLOCK48_VE_FORWARD_US_M4F_168MHZ 305.78
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M7 40486u /* estimate, +-30 % */
+#define TFIT_BLOCK48_VE_FORWARD_US_M7_480MHZ 84.34
 #define TFIT_BLOCK48_VE_FORWARD_Q31_IN_EXP 1 /* input word x = value * 2^(31 - 1), N */
 #define TFIT_BLOCK48_VE_FORWARD_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), mm */
-#define TFIT_BLOCK48_VE_FORWARD_Q31_ADDED_ERROR_MM 8.12598e-08 /* max |Q31 - exact| at 12000 ticks of a press-hold-release history; float32: 1.40046e-06 */
+#define TFIT_BLOCK48_VE_FORWARD_Q31_ADDED_ERROR_MM 9.21429e-08 /* max |Q31 - exact| at 12000 ticks of a press-hold-release history; float32: 1.3553e-06 */
 #define TFIT_BLOCK48_VE_FORWARD_Q31_STATE_WORDS 6u /* int32 state[]: tfit_prony_reset_q31, _step_q31 */
-#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM 0.0185877 /* the Q31 form's held-out max, measured */
-#define TFIT_BLOCK48_VE_FORWARD_Q31_CRC32 0x6ad856dfu
-#define tfit_block48_ve_forward_q31 tfit_block48_ve_forward_q31_6ad856df /* this header's version of the model */
+#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM 0.00446534 /* the Q31 form's held-out max, measured */
+#define TFIT_BLOCK48_VE_FORWARD_Q31_CRC32 0x02d1bf91u
+#define tfit_block48_ve_forward_q31 tfit_block48_ve_forward_q31_02d1bf91 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_ve_forward_q31;
 #define TFIT_BLOCK48_VE_FORWARD_TERMS 1
 #define TFIT_BLOCK48_VE_FORWARD_STATE_WORDS 6u /* float state[]: tfit_prony_reset, _step */
@@ -81,56 +81,56 @@ extern const tfit_model_q31 tfit_block48_ve_forward_q31;
 #error "block48_ve_forward: fitted for a 1000000 ns tick, the firmware's TFIT_TICK_US differs: refit with that tick"
 #endif
 #define TFIT_BLOCK48_VE_FORWARD_HELDOUT_CASES 6
-#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_MAX_MM 0.0185878
-#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_RMS_MM 0.00121054
-#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX 0.0166753
+#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_MAX_MM 0.00446543
+#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_RMS_MM 0.000231815
+#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX 0.00400598
 #define TFIT_BLOCK48_VE_FORWARD_DISCRETISATION_MAX_MM 0.0968789 /* the solve against the physics */
-#define TFIT_BLOCK48_VE_FORWARD_TOTAL_MAX_MM 0.115467 /* held-out fit + discretisation */
-#define TFIT_BLOCK48_VE_FORWARD_CRC32 0xb1f90216u
-#define tfit_block48_ve_forward tfit_block48_ve_forward_b1f90216 /* this header's version of the model */
+#define TFIT_BLOCK48_VE_FORWARD_TOTAL_MAX_MM 0.101344 /* held-out fit + discretisation */
+#define TFIT_BLOCK48_VE_FORWARD_CRC32 0x43ebb276u
+#define tfit_block48_ve_forward tfit_block48_ve_forward_43ebb276 /* this header's version of the model */
 extern const tfit_model tfit_block48_ve_forward;
 
 /* tfit_block48_ve_contact */
 #define TFIT_BLOCK48_VE_CONTACT_FAMILY "contact"
 #define TFIT_BLOCK48_VE_CONTACT_FAMILY_ID 4
-#define TFIT_BLOCK48_VE_CONTACT_ORDERS "p=2"
+#define TFIT_BLOCK48_VE_CONTACT_ORDERS "p=3"
 #define TFIT_BLOCK48_VE_CONTACT_N_OUT 1u
 #define TFIT_BLOCK48_VE_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_BLOCK48_VE_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_BLOCK48_VE_CONTACT_ENVELOPE_CENTER {0.00208391203, -0.000959743455, -0.0526182391}
-#define TFIT_BLOCK48_VE_CONTACT_OPS_ADD 47
-#define TFIT_BLOCK48_VE_CONTACT_OPS_MUL 66
+#define TFIT_BLOCK48_VE_CONTACT_ENVELOPE_CENTER {0.0018478178, -0.00142568967, -0.0473929085}
+#define TFIT_BLOCK48_VE_CONTACT_OPS_ADD 80
+#define TFIT_BLOCK48_VE_CONTACT_OPS_MUL 106
 #define TFIT_BLOCK48_VE_CONTACT_OPS_DIV 0
-#define TFIT_BLOCK48_VE_CONTACT_OPS 113
-#define TFIT_BLOCK48_VE_CONTACT_TABLE_BYTES 176
-#define TFIT_BLOCK48_VE_CONTACT_INSNS_ARMV7EM 593 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F 853u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F_MIN 755u
-#define TFIT_BLOCK48_VE_CONTACT_US_M4F_168MHZ 5.08
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M7 636u /* estimate, +-30 % */
-#define TFIT_BLOCK48_VE_CONTACT_US_M7_480MHZ 1.32
+#define TFIT_BLOCK48_VE_CONTACT_OPS 186
+#define TFIT_BLOCK48_VE_CONTACT_TABLE_BYTES 296
+#define TFIT_BLOCK48_VE_CONTACT_INSNS_ARMV7EM 857 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F 1257u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F_MIN 1117u
+#define TFIT_BLOCK48_VE_CONTACT_US_M4F_168MHZ 7.48
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M7 956u /* estimate, +-30 % */
+#define TFIT_BLOCK48_VE_CONTACT_US_M7_480MHZ 1.99
 #define TFIT_BLOCK48_VE_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_VE_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
-#define TFIT_BLOCK48_VE_CONTACT_Q31_ADDED_ERROR_N 4.46273e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 2.15541e-07 */
-#define TFIT_BLOCK48_VE_CONTACT_Q31_CRC32 0x668459b6u
-#define tfit_block48_ve_contact_q31 tfit_block48_ve_contact_q31_668459b6 /* this header's version of the model */
+#define TFIT_BLOCK48_VE_CONTACT_Q31_ADDED_ERROR_N 4.24357e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 2.49522e-07 */
+#define TFIT_BLOCK48_VE_CONTACT_Q31_CRC32 0x73fe7517u
+#define tfit_block48_ve_contact_q31 tfit_block48_ve_contact_q31_73fe7517 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_ve_contact_q31;
 #define TFIT_BLOCK48_VE_CONTACT_HELDOUT_CASES 15
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_MAX_N 0.0155835
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_RMS_N 0.00413238
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_REL_MAX 0.0179561
-#define TFIT_BLOCK48_VE_CONTACT_DISCRETISATION_MAX_N 0.00395022 /* the solve against the physics */
-#define TFIT_BLOCK48_VE_CONTACT_TOTAL_MAX_N 0.0195337 /* held-out fit + discretisation */
-#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.406147 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 1.34511 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_VE_CONTACT_CRC32 0xed675d1du
-#define tfit_block48_ve_contact tfit_block48_ve_contact_ed675d1d /* this header's version of the model */
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_MAX_N 0.00434679
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_RMS_N 0.00120773
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_REL_MAX 0.00518094
+#define TFIT_BLOCK48_VE_CONTACT_DISCRETISATION_MAX_N 0.00395019 /* the solve against the physics */
+#define TFIT_BLOCK48_VE_CONTACT_TOTAL_MAX_N 0.00829698 /* held-out fit + discretisation */
+#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.40165 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 1.35344 /* largest ||df/ddelta||_2 */
+#define TFIT_BLOCK48_VE_CONTACT_CRC32 0xcff6cc1cu
+#define tfit_block48_ve_contact tfit_block48_ve_contact_cff6cc1c /* this header's version of the model */
 extern const tfit_model tfit_block48_ve_contact;
 
 #ifdef TFIT_BLOCK48_VE_IMPLEMENTATION
 
 static const uint32_t tfit_block48_ve_forward_dims[4] = {
-    2u, 0u, 1u, 1000000u,
+    3u, 0u, 1u, 1000000u,
 };
 static const uint32_t tfit_block48_ve_forward_nodes[121] = {
     1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u,
@@ -150,1481 +150,2207 @@ static const uint32_t tfit_block48_ve_forward_nodes[121] = {
     113u, 114u, 115u, 116u, 117u, 118u, 119u, 120u,
     121u,
 };
-static const float tfit_block48_ve_forward_coef[3644] = {
+static const float tfit_block48_ve_forward_coef[7274] = {
     /* input map: envelope centre x0 */
     0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* input map: W (row-major), g = W (x - x0) */
     0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1p+0f,
-    /* prony term 0: decay a, gain D (tau 1.50082 s, weight 0.333718) */
-    0x1.ffa8b2p-1f, 0x1.559d12p-2f,
+    /* prony term 0: decay a, gain D (tau 1.49947 s, weight 0.333373) */
+    0x1.ffa89ep-1f, 0x1.554298p-2f,
     /* node 1 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 1 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 1 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 2 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 2 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 2 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 3 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 3 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 3 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 4 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 4 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 4 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 5 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 5 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 5 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 6 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 6 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 6 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 7 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 7 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 7 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 8 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 8 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 8 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 9 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 9 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 9 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 10 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 10 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 10 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 11 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 11 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 11 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 12 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 12 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 12 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 13 x */
-    0x1.75e972p-11f, 0x1.65998p-10f, 0x1.035f62p-8f, -0x1.8d0708p-6f,
-    0x1.f7befap-14f, 0x1.8faba6p-15f, 0x1.125352p-12f, 0x1.77feb8p-14f,
-    -0x1.242d08p-11f, 0x1.b544cep-12f,
+    0x1.902a8cp-11f, 0x1.5d6f0cp-10f, 0x1.ff6fbcp-9f, -0x1.8ee31p-6f,
+    0x1.7f7a7cp-13f, 0x1.1293ecp-16f, 0x1.090bfp-12f, 0x1.483f1p-13f,
+    -0x1.7a4e98p-12f, 0x1.c174d2p-12f, 0x1.f29cf2p-18f, 0x1.e043a6p-15f,
+    -0x1.c5fd42p-14f, -0x1.ae22b2p-15f, 0x1.689904p-13f, -0x1.0e7434p-19f,
+    0x1.5bcd82p-17f, -0x1.f909dep-14f, -0x1.79256ap-14f, -0x1.121bfep-15f,
     /* node 13 y */
-    0x1.78cf84p-11f, 0x1.0092a8p-8f, 0x1.72d872p-10f, -0x1.8ce6ecp-6f,
-    0x1.9058e6p-14f, 0x1.aa1e2p-15f, -0x1.b8c374p-12f, 0x1.0802d2p-13f,
-    0x1.040c16p-13f, 0x1.bdae1ep-12f,
+    0x1.9328fp-11f, 0x1.00dd02p-8f, 0x1.5bb52ep-10f, -0x1.8e25ep-6f,
+    0x1.4fba4p-13f, 0x1.e83f64p-16f, -0x1.77c6fcp-12f, 0x1.876144p-13f,
+    0x1.19d008p-12f, 0x1.c2a5e6p-12f, 0x1.c96f14p-17f, -0x1.9e9242p-17f,
+    -0x1.39c78ep-13f, 0x1.f40492p-16f, 0x1.d0c5f8p-14f, -0x1.46b59p-15f,
+    0x1.ef4288p-18f, -0x1.f2d602p-16f, -0x1.9b919p-15f, -0x1.c37efp-16f,
     /* node 13 z */
-    -0x1.8882eap-11f, -0x1.99a03ap-8f, -0x1.99fcbp-8f, 0x1.326a2cp-6f,
-    -0x1.608d9p-13f, -0x1.cba55ap-14f, 0x1.1c7076p-16f, -0x1.64041p-13f,
-    0x1.ee2da2p-17f, -0x1.a05e1cp-12f,
+    -0x1.8fa4f8p-11f, -0x1.99913cp-8f, -0x1.986402p-8f, 0x1.344c4ep-6f,
+    -0x1.7fe6dap-13f, -0x1.75d8cp-14f, -0x1.0d3352p-17f, -0x1.7e2272p-13f,
+    -0x1.1ac026p-17f, -0x1.a514d6p-12f, -0x1.640a4p-17f, -0x1.f18ff8p-18f,
+    0x1.741dd8p-14f, -0x1.e15eeap-17f, -0x1.07f044p-14f, 0x1.976be8p-16f,
+    -0x1.2df5dp-17f, 0x1.1d3e3ep-14f, 0x1.3b094p-15f, 0x1.931646p-17f,
     /* node 14 x */
-    0x1.6251c8p-10f, 0x1.9f5a94p-9f, 0x1.e96b2ap-8f, -0x1.8f61bap-5f,
-    0x1.117ce4p-11f, 0x1.34d56ap-12f, -0x1.986858p-12f, 0x1.3dc2dcp-11f,
-    0x1.9da836p-11f, 0x1.c9002p-12f,
+    0x1.420604p-10f, 0x1.9ffa88p-9f, 0x1.eb4e0ep-8f, -0x1.940ef2p-5f,
+    0x1.873e64p-12f, 0x1.e5d5d8p-13f, -0x1.6ba9f2p-12f, 0x1.caa972p-12f,
+    0x1.87e798p-12f, 0x1.bbc0cap-12f, -0x1.77d4fep-19f, -0x1.2c27bp-14f,
+    -0x1.72fc6ap-13f, 0x1.bc82dap-14f, -0x1.243aeap-11f, -0x1.0acc68p-14f,
+    -0x1.2d44cap-17f, -0x1.47e5e6p-12f, -0x1.bc3836p-16f, 0x1.6a89b8p-15f,
     /* node 14 y */
-    0x1.31291cp-10f, 0x1.67bf3cp-9f, 0x1.cbc4a8p-9f, -0x1.b891fap-5f,
-    0x1.649f48p-11f, 0x1.1a8bdep-13f, 0x1.793372p-10f, 0x1.d4064p-12f,
-    -0x1.96882p-11f, 0x1.d13cdep-13f,
+    0x1.14d2b6p-10f, 0x1.53d56ep-9f, 0x1.d45eeep-9f, -0x1.bea24p-5f,
+    0x1.13d0eap-11f, 0x1.01aep-14f, 0x1.601d8cp-10f, 0x1.32b552p-12f,
+    -0x1.28253p-10f, 0x1.ea31d2p-13f, -0x1.c863a6p-16f, 0x1.bf115ap-14f,
+    -0x1.19ae52p-12f, -0x1.0bad8ep-13f, -0x1.44536ap-13f, -0x1.5734f4p-21f,
+    0x1.66117cp-17f, -0x1.b602aep-12f, -0x1.937d04p-13f, 0x1.bf4c4ap-17f,
     /* node 14 z */
-    -0x1.0119d4p-10f, 0x1.e1fe3cp-9f, 0x1.ecf79ap-9f, 0x1.2df828p-4f,
-    -0x1.34d34ep-11f, -0x1.336a16p-13f, 0x1.211868p-13f, -0x1.168ed2p-11f,
-    0x1.9439d6p-14f, -0x1.29cf26p-15f,
+    -0x1.cae8b8p-11f, 0x1.e18e78p-9f, 0x1.ea40b8p-9f, 0x1.306cbcp-4f,
+    -0x1.de66bap-12f, -0x1.6408b6p-14f, 0x1.716c02p-13f, -0x1.985332p-12f,
+    0x1.b2e2ccp-12f, -0x1.16a79p-15f, 0x1.28498p-19f, -0x1.5bf7cp-19f,
+    0x1.ad743cp-13f, -0x1.122852p-15f, 0x1.d7c40ep-12f, 0x1.4baddcp-19f,
+    -0x1.3a9578p-19f, 0x1.646302p-12f, 0x1.bc27eep-14f, -0x1.41b778p-16f,
     /* node 15 x */
-    0x1.6957dap-10f, 0x1.bb3e6ep-8f, 0x1.6093a4p-7f, -0x1.873b82p-5f,
-    0x1.dae24p-13f, 0x1.1f13eap-14f, 0x1.a0aab4p-15f, 0x1.211c2ep-12f,
-    -0x1.3b78e8p-11f, 0x1.c2c222p-11f,
+    0x1.67a7bp-10f, 0x1.c7ec96p-8f, 0x1.621af6p-7f, -0x1.864ee2p-5f,
+    0x1.d9daacp-13f, 0x1.71dfb2p-14f, -0x1.36a348p-14f, 0x1.2a92bep-12f,
+    -0x1.0a6fecp-11f, 0x1.c4fbc6p-11f, 0x1.3bb234p-15f, 0x1.efaf4ap-15f,
+    0x1.d28edcp-13f, 0x1.112524p-14f, -0x1.433c9cp-14f, 0x1.ba76bcp-14f,
+    0x1.0565c6p-16f, -0x1.78497cp-14f, -0x1.37217p-16f, -0x1.b07704p-19f,
     /* node 15 y */
-    0x1.4354b8p-10f, 0x1.d9da6cp-9f, 0x1.18563p-8f, -0x1.7a7e38p-4f,
-    0x1.884cecp-12f, 0x1.ce6514p-11f, -0x1.acdaap-9f, 0x1.aa4ebep-11f,
-    0x1.054182p-10f, 0x1.99597ap-13f,
+    0x1.312a22p-10f, 0x1.f3dafcp-9f, 0x1.18183cp-8f, -0x1.7b4886p-4f,
+    0x1.4c5602p-12f, 0x1.ab97bcp-11f, -0x1.85b0d4p-9f, 0x1.75e29ep-11f,
+    0x1.524eaap-11f, 0x1.4c3ab8p-13f, 0x1.e8505p-15f, -0x1.050326p-12f,
+    -0x1.f165e8p-14f, 0x1.a6ec1ep-12f, -0x1.b39936p-11f, -0x1.7b514ap-13f,
+    -0x1.9fb82ap-17f, -0x1.d546c4p-16f, 0x1.baf04cp-13f, 0x1.9e765cp-15f,
     /* node 15 z */
-    -0x1.df249ep-10f, 0x1.0ce42p-7f, 0x1.b5541ap-7f, 0x1.306d3p-3f,
-    -0x1.b03914p-11f, -0x1.a2c48ap-15f, 0x1.cca8b8p-11f, -0x1.cf56e4p-11f,
-    -0x1.f249cep-14f, -0x1.f78a8ep-12f,
+    -0x1.a7c2c6p-10f, 0x1.02fafcp-7f, 0x1.aceaa8p-7f, 0x1.311ab8p-3f,
+    -0x1.25caecp-11f, -0x1.9b6d34p-16f, 0x1.dd9776p-11f, -0x1.3bb626p-11f,
+    0x1.4b39d4p-11f, -0x1.e48368p-12f, -0x1.3b7f8ap-14f, 0x1.346c0ep-15f,
+    -0x1.006c64p-12f, -0x1.4f407p-12f, 0x1.9484aep-11f, 0x1.2b155p-18f,
+    -0x1.84c456p-16f, 0x1.1a1c9ap-12f, -0x1.7d28f2p-14f, -0x1.7ff13ap-14f,
     /* node 16 x */
-    0x1.69a85p-10f, 0x1.190472p-7f, 0x1.bbf1d8p-8f, -0x1.00c8aap-5f,
-    0x1.557714p-11f, -0x1.099efp-12f, 0x1.0a1b3p-12f, 0x1.e904dcp-12f,
-    -0x1.0c1122p-11f, 0x1.1bf57ap-12f,
+    0x1.68488cp-10f, 0x1.17f5a2p-7f, 0x1.b1e49ep-8f, -0x1.08799p-5f,
+    0x1.47bc5ep-11f, -0x1.29c22ap-12f, 0x1.af801cp-15f, 0x1.e1bd3ep-12f,
+    -0x1.66c374p-12f, 0x1.422ea2p-12f, -0x1.4ed8bep-16f, 0x1.71789p-13f,
+    -0x1.97fe7ap-12f, -0x1.127ccap-13f, 0x1.9b2bd8p-12f, 0x1.72e02p-14f,
+    0x1.8122a8p-17f, -0x1.785648p-11f, -0x1.c153e2p-12f, -0x1.53fd22p-14f,
     /* node 16 y */
-    0x1.894ef4p-11f, -0x1.66145ap-11f, 0x1.5f949cp-7f, -0x1.f3aad8p-4f,
-    0x1.ee2962p-11f, -0x1.da41e8p-11f, 0x1.286c5ep-8f, 0x1.d82b5p-12f,
-    -0x1.0de37ep-8f, -0x1.5d28dep-12f,
+    0x1.d5eb4cp-12f, 0x1.8e6dccp-12f, 0x1.67e208p-7f, -0x1.f08354p-4f,
+    0x1.266102p-11f, -0x1.646696p-11f, 0x1.9850eap-9f, 0x1.437a44p-13f,
+    -0x1.1a84f2p-8f, -0x1.340d1cp-12f, 0x1.1a6186p-13f, 0x1.5e5f84p-12f,
+    0x1.c240a2p-10f, -0x1.0b7cb2p-14f, -0x1.27d5bep-11f, 0x1.1638bep-10f,
+    0x1.4fbbb4p-14f, -0x1.256aeap-12f, -0x1.b4fff4p-12f, 0x1.e19a1ap-14f,
     /* node 16 z */
-    -0x1.91ab12p-9f, 0x1.195b8p-7f, 0x1.74031cp-6f, 0x1.abcb4ep-3f,
-    -0x1.1ee52ep-9f, 0x1.c3cd28p-12f, -0x1.6351bap-9f, -0x1.5f01fcp-10f,
-    0x1.6fd79cp-10f, -0x1.2d2288p-14f,
+    -0x1.5eb74cp-9f, 0x1.020008p-7f, 0x1.7542a4p-6f, 0x1.aeb9c6p-3f,
+    -0x1.b6a6bep-10f, 0x1.a80c7ap-12f, -0x1.adb8cep-10f, -0x1.cf422cp-11f,
+    0x1.090bb2p-9f, -0x1.fac262p-14f, -0x1.a7e4f8p-14f, -0x1.352154p-12f,
+    -0x1.a640cep-12f, -0x1.98fb88p-15f, 0x1.b3b0cep-11f, -0x1.44541ap-11f,
+    -0x1.6717fap-15f, 0x1.7ac586p-10f, 0x1.dc55a4p-11f, -0x1.395c9cp-16f,
     /* node 17 x */
-    0x1.1ed9c2p-17f, 0x1.63eabap-7f, -0x1.580814p-19f, -0x1.767f1ep-16f,
-    0x1.8a1db8p-22f, 0x1.6e0c62p-12f, -0x1.c0519ap-10f, 0x1.dc0d32p-19f,
-    0x1.eb21f4p-19f, 0x1.bd0d92p-17f,
+    0x1.1eee24p-18f, 0x1.60b172p-7f, 0x1.4f7098p-15f, -0x1.acb576p-16f,
+    0x1.43500cp-19f, 0x1.97718cp-12f, -0x1.a46fdap-10f, 0x1.7e9af6p-18f,
+    -0x1.4455c2p-15f, 0x1.25df6ap-19f, -0x1.81b5bcp-16f, 0x1.420836p-15f,
+    -0x1.5fcafcp-15f, 0x1.cb27dcp-14f, -0x1.8d21c8p-12f, -0x1.ae13f6p-13f,
+    0x1.e2c3eep-18f, 0x1.4c8ee4p-17f, 0x1.082162p-17f, -0x1.72c546p-19f,
     /* node 17 y */
-    0x1.ffdd28p-9f, -0x1.0b342ep-13f, 0x1.197a3ap-8f, -0x1.2217p-3f,
-    0x1.3cd3f6p-8f, 0x1.02e7dep-12f, 0x1.25e358p-10f, 0x1.c2027ep-9f,
-    -0x1.cf745ep-10f, -0x1.a0feeap-9f,
+    0x1.a4991ep-9f, -0x1.1aa306p-13f, 0x1.dd88aep-9f, -0x1.302e9ap-3f,
+    0x1.ecea92p-9f, 0x1.c3a0e6p-15f, -0x1.326a6ep-12f, 0x1.4916bcp-9f,
+    -0x1.af8306p-9f, -0x1.8a9fc8p-9f, 0x1.3d754p-19f, 0x1.b74532p-11f,
+    -0x1.f41682p-10f, -0x1.62e0d4p-12f, 0x1.4a963ep-15f, 0x1.70f8d8p-13f,
+    -0x1.3a6f24p-18f, -0x1.41921ap-8f, -0x1.606a56p-9f, -0x1.aab766p-12f,
     /* node 17 z */
-    -0x1.382fcap-8f, 0x1.236358p-15f, 0x1.dc340ap-6f, 0x1.e42d6p-3f,
-    -0x1.02f824p-8f, -0x1.6ad0eap-12f, -0x1.869e4ep-11f, -0x1.4e72e6p-9f,
-    0x1.39fba4p-9f, 0x1.a2935p-11f,
+    -0x1.1151ep-8f, -0x1.508e18p-13f, 0x1.dcb4b2p-6f, 0x1.ed5a5cp-3f,
+    -0x1.989fbcp-9f, -0x1.094fa6p-12f, 0x1.1785fap-12f, -0x1.d8b916p-10f,
+    0x1.de7ec2p-9f, 0x1.731572p-11f, -0x1.c4c9cep-18f, -0x1.5f98b2p-11f,
+    0x1.9bb306p-11f, -0x1.729228p-16f, 0x1.d3b922p-11f, -0x1.d7e2eep-14f,
+    -0x1.2f315ep-15f, 0x1.cc8646p-9f, 0x1.9dd956p-10f, 0x1.5f6a92p-13f,
     /* node 18 x */
-    -0x1.6d5536p-10f, 0x1.1a3498p-7f, -0x1.bc192cp-8f, 0x1.00d9dcp-5f,
-    -0x1.577026p-11f, -0x1.68865cp-12f, 0x1.735e04p-16f, -0x1.eb83f6p-12f,
-    0x1.fd6508p-12f, -0x1.28f75cp-12f,
+    -0x1.6a3292p-10f, 0x1.180732p-7f, -0x1.b195cep-8f, 0x1.088c18p-5f,
+    -0x1.49d42ep-11f, -0x1.28d4dp-12f, 0x1.6a6e24p-13f, -0x1.e47bd4p-12f,
+    0x1.6b2c6ap-12f, -0x1.4672acp-12f, -0x1.85e1d4p-16f, -0x1.841d6p-13f,
+    0x1.a916e2p-12f, 0x1.64a97cp-18f, 0x1.b0628ap-17f, -0x1.6a208p-15f,
+    -0x1.d1e7fap-17f, 0x1.750042p-11f, 0x1.cf405ap-12f, 0x1.5832bp-14f,
     /* node 18 y */
-    0x1.81aaa4p-11f, 0x1.36ea6ep-11f, 0x1.5e0e3cp-7f, -0x1.f4448p-4f,
-    0x1.e4de34p-11f, 0x1.024482p-11f, -0x1.9b7fe6p-9f, 0x1.e26782p-12f,
-    -0x1.fc4764p-9f, -0x1.25ca86p-12f,
+    0x1.df709ap-12f, 0x1.ce54f8p-13f, 0x1.6f497ap-7f, -0x1.f0f0f2p-4f,
+    0x1.283f1ep-11f, 0x1.1732bp-10f, -0x1.dba8d6p-9f, 0x1.8110f6p-13f,
+    -0x1.2be2ecp-8f, -0x1.30677cp-12f, -0x1.303b9p-13f, 0x1.157c06p-11f,
+    0x1.876c08p-10f, 0x1.76dee4p-12f, -0x1.90ea84p-10f, -0x1.b2dc12p-11f,
+    0x1.eb491cp-14f, -0x1.97b64ep-13f, -0x1.6b2e34p-12f, 0x1.be4dep-14f,
     /* node 18 z */
-    -0x1.9001f2p-9f, -0x1.1802bap-7f, 0x1.74845cp-6f, 0x1.abf816p-3f,
-    -0x1.1d6b12p-9f, -0x1.48ffb4p-11f, 0x1.852ea4p-10f, -0x1.604078p-10f,
-    0x1.50ca58p-10f, -0x1.9bf666p-14f,
+    -0x1.5f423cp-9f, -0x1.109882p-7f, 0x1.734782p-6f, 0x1.aed4a6p-3f,
+    -0x1.b6dab6p-10f, -0x1.d3f9fcp-11f, 0x1.0c9624p-9f, -0x1.d7af92p-11f,
+    0x1.1d8a04p-9f, -0x1.00378p-13f, 0x1.b2709cp-14f, -0x1.a3ad2cp-12f,
+    -0x1.233ap-12f, -0x1.c75c34p-13f, 0x1.382ecep-10f, 0x1.02b334p-11f,
+    -0x1.06c064p-14f, 0x1.6c534ap-10f, 0x1.c88b32p-11f, -0x1.033d4ap-16f,
     /* node 19 x */
-    -0x1.68013cp-10f, 0x1.bcd108p-8f, -0x1.607cc2p-7f, 0x1.87666cp-5f,
-    -0x1.cd0344p-13f, 0x1.56dfb2p-14f, -0x1.93a1f6p-14f, -0x1.1e1aaep-12f,
-    0x1.49186ep-11f, -0x1.c32d5ap-11f,
+    -0x1.661e9p-10f, 0x1.c0c992p-8f, -0x1.62db46p-7f, 0x1.865746p-5f,
+    -0x1.d39f38p-13f, 0x1.81e526p-17f, -0x1.bfce6cp-21f, -0x1.2b2aep-12f,
+    0x1.15d0cep-11f, -0x1.c33092p-11f, 0x1.3a9106p-15f, -0x1.1217cap-14f,
+    -0x1.c490b4p-13f, 0x1.58ca82p-18f, 0x1.98a278p-13f, 0x1.0dff8cp-14f,
+    -0x1.22ebc2p-16f, 0x1.78f556p-14f, -0x1.0e77f8p-19f, 0x1.8b416cp-19f,
     /* node 19 y */
-    0x1.3f0498p-10f, -0x1.d27292p-9f, 0x1.176ccep-8f, -0x1.7a472ep-4f,
-    0x1.949628p-12f, -0x1.33cf94p-11f, 0x1.9431dp-9f, 0x1.acf8d8p-11f,
-    0x1.00619ep-10f, 0x1.4a9b0cp-13f,
+    0x1.2c0b2ep-10f, -0x1.dc752cp-9f, 0x1.131decp-8f, -0x1.7b0ae6p-4f,
+    0x1.412ffap-12f, -0x1.5b531ap-11f, 0x1.950d6ap-9f, 0x1.6dfec6p-11f,
+    0x1.732ep-11f, 0x1.344dc2p-13f, -0x1.647548p-15f, -0x1.6209c2p-12f,
+    -0x1.2595b6p-15f, -0x1.fed238p-14f, 0x1.cce344p-15f, 0x1.98a03p-14f,
+    -0x1.e626a6p-16f, -0x1.45d72ep-15f, 0x1.bfd3dcp-13f, 0x1.e044aap-15f,
     /* node 19 z */
-    -0x1.e080bep-10f, -0x1.0f5ceap-7f, 0x1.b597f6p-7f, 0x1.3072b8p-3f,
-    -0x1.b1fb38p-11f, -0x1.e68b08p-13f, -0x1.0df11ap-10f, -0x1.d1cd32p-11f,
-    -0x1.52f002p-15f, -0x1.f4c102p-12f,
+    -0x1.a570cp-10f, -0x1.0dfccp-7f, 0x1.acb0ap-7f, 0x1.31182cp-3f,
+    -0x1.234d94p-11f, -0x1.329f96p-12f, -0x1.de4f7ap-11f, -0x1.3a938ep-11f,
+    0x1.5386e8p-11f, -0x1.deb46p-12f, 0x1.fd7e96p-15f, 0x1.85dd5ep-15f,
+    -0x1.013daap-12f, -0x1.e580cp-14f, 0x1.dde92ep-11f, 0x1.96089ep-14f,
+    -0x1.71e2bp-16f, 0x1.162a94p-12f, -0x1.cd25dap-14f, -0x1.8641ecp-14f,
     /* node 20 x */
-    -0x1.62175ep-10f, 0x1.95fefp-9f, -0x1.e92922p-8f, 0x1.8f4314p-5f,
-    -0x1.143e86p-11f, 0x1.a82de8p-17f, -0x1.673fp-12f, -0x1.3f89e4p-11f,
-    -0x1.a7ec5cp-11f, -0x1.c4e9c8p-12f,
+    -0x1.42820cp-10f, 0x1.8e4a78p-9f, -0x1.ea253cp-8f, 0x1.93fcep-5f,
+    -0x1.8830f8p-12f, 0x1.4071cp-14f, -0x1.8479e4p-12f, -0x1.c9b69cp-12f,
+    -0x1.8f4b22p-12f, -0x1.bcc3e2p-12f, -0x1.69f5d4p-17f, 0x1.50bbcap-14f,
+    0x1.6a4d8p-13f, -0x1.aa53c4p-14f, 0x1.54f0fap-12f, 0x1.88aceap-18f,
+    0x1.60d76p-17f, 0x1.41147ep-12f, 0x1.3a847p-15f, -0x1.727aaap-15f,
     /* node 20 y */
-    0x1.307aaep-10f, -0x1.5f6786p-9f, 0x1.cd493ap-9f, -0x1.b8c3fcp-5f,
-    0x1.5d87d2p-11f, 0x1.1071fap-15f, -0x1.719a58p-10f, 0x1.cac712p-12f,
-    -0x1.b4c96ap-11f, 0x1.ecc6e6p-13f,
+    0x1.181bap-10f, -0x1.4f20d4p-9f, 0x1.db47f2p-9f, -0x1.bef122p-5f,
+    0x1.176166p-11f, -0x1.bc3206p-19f, -0x1.6b4276p-10f, 0x1.3c997ap-12f,
+    -0x1.32dfc8p-10f, 0x1.f96b6ap-13f, 0x1.00b094p-15f, 0x1.6048bcp-13f,
+    -0x1.52f6a6p-12f, 0x1.59255ap-13f, -0x1.7762ep-13f, -0x1.30ca2ep-18f,
+    0x1.63c9c6p-16f, -0x1.ad50a6p-12f, -0x1.985634p-13f, 0x1.1ca982p-17f,
     /* node 20 z */
-    -0x1.fdb2c4p-11f, -0x1.e91274p-9f, 0x1.ed3c4p-9f, 0x1.2df91ap-4f,
-    -0x1.32df9ep-11f, -0x1.2a7048p-14f, -0x1.368112p-13f, -0x1.1540e2p-11f,
-    0x1.67a9b6p-14f, -0x1.22152ap-15f,
+    -0x1.cd1afep-11f, -0x1.edbb8cp-9f, 0x1.e9c8p-9f, 0x1.307016p-4f,
+    -0x1.e086dp-12f, -0x1.31521cp-15f, -0x1.60187ep-13f, -0x1.9ac5c4p-12f,
+    0x1.c1933ep-12f, -0x1.2a3a22p-15f, -0x1.02fd14p-17f, -0x1.dfbbbcp-17f,
+    0x1.ce14f8p-13f, -0x1.9ddbfp-14f, 0x1.4a7c2p-13f, 0x1.2e6c36p-15f,
+    -0x1.2d30aep-18f, 0x1.591e6ap-12f, 0x1.d9b8c8p-14f, -0x1.3dc19ep-16f,
     /* node 21 x */
-    -0x1.7421bcp-11f, 0x1.6a3ffp-10f, -0x1.03d7aap-8f, 0x1.8d36dp-6f,
-    -0x1.d15c64p-14f, 0x1.8bc198p-15f, 0x1.0bc1f4p-12f, -0x1.5d83d2p-14f,
-    0x1.4f5e9cp-11f, -0x1.b62062p-12f,
+    -0x1.8fb57ap-11f, 0x1.62a2d2p-10f, -0x1.011becp-8f, 0x1.8f0c6ep-6f,
+    -0x1.7f41dp-13f, 0x1.77614cp-15f, 0x1.2fa834p-12f, -0x1.4c0346p-13f,
+    0x1.85cd0cp-12f, -0x1.c100fp-12f, 0x1.06e42cp-17f, -0x1.257c08p-14f,
+    0x1.e80dap-14f, 0x1.884a3ap-16f, -0x1.5e2a02p-13f, -0x1.e2060ep-15f,
+    -0x1.b1eb46p-17f, 0x1.075fdep-13f, 0x1.4b101ep-14f, 0x1.1ef174p-15f,
     /* node 21 y */
-    0x1.77ca72p-11f, -0x1.017878p-8f, 0x1.740a98p-10f, -0x1.8ced02p-6f,
-    0x1.7ce032p-14f, -0x1.98a4e8p-16f, 0x1.979dbp-12f, 0x1.fcd21ep-14f,
-    0x1.f87a4ep-15f, 0x1.b92a1ep-12f,
+    0x1.90d75p-11f, -0x1.0189a4p-8f, 0x1.599354p-10f, -0x1.8e0964p-6f,
+    0x1.4b4774p-13f, -0x1.3e9f7cp-15f, 0x1.80a866p-12f, 0x1.82b796p-13f,
+    0x1.250e98p-12f, 0x1.c0025ap-12f, -0x1.978a56p-17f, -0x1.d35c4ep-16f,
+    -0x1.18cdb8p-13f, -0x1.b3fae8p-15f, 0x1.01c87ap-13f, 0x1.e0ff92p-15f,
+    0x1.56122p-18f, -0x1.3e0848p-15f, -0x1.675e58p-15f, -0x1.bb3c66p-16f,
     /* node 21 z */
-    -0x1.89856p-11f, 0x1.99a9e2p-8f, -0x1.9a55ecp-8f, 0x1.328ba2p-6f,
-    -0x1.575246p-13f, 0x1.23303ep-14f, -0x1.ba4c6ap-17f, -0x1.5c6342p-13f,
-    0x1.4ca66p-14f, -0x1.a1831cp-12f,
+    -0x1.8f006ap-11f, 0x1.986af6p-8f, -0x1.98cfaap-8f, 0x1.345ad2p-6f,
+    -0x1.7ee5a4p-13f, 0x1.3007aap-14f, 0x1.2232e4p-17f, -0x1.7e5f18p-13f,
+    -0x1.f22a52p-18f, -0x1.a45774p-12f, 0x1.1f6d6ap-17f, -0x1.1f09p-17f,
+    0x1.725142p-14f, 0x1.9b3eecp-21f, 0x1.50f58cp-15f, -0x1.076e3ap-15f,
+    -0x1.3c210cp-17f, 0x1.3230c2p-14f, 0x1.097beap-15f, 0x1.a8cec6p-17f,
     /* node 22 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 22 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 22 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 23 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 23 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 23 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 24 x */
-    0x1.36fbf2p-10f, 0x1.e0aa14p-9f, 0x1.5529bap-9f, -0x1.b8630cp-5f,
-    0x1.dbe818p-12f, 0x1.a4c466p-13f, -0x1.5ca952p-10f, 0x1.73ecc2p-11f,
-    0x1.f54f14p-10f, 0x1.0efbdp-12f,
+    0x1.1ae07ep-10f, 0x1.d687ecp-9f, 0x1.573c7p-9f, -0x1.bd4f0ap-5f,
+    0x1.461324p-12f, 0x1.d3cdap-14f, -0x1.15b8p-10f, 0x1.19431ep-11f,
+    0x1.5b6b92p-10f, 0x1.f64c5cp-13f, 0x1.44067ep-16f, -0x1.60c8dap-13f,
+    -0x1.277c74p-12f, 0x1.8ffc0ap-13f, -0x1.6e9d2ap-12f, -0x1.0bba5ep-12f,
+    -0x1.922f9ap-16f, -0x1.dd2e5ap-13f, 0x1.42bac6p-14f, 0x1.13e306p-15f,
     /* node 24 y */
-    0x1.5f775ap-10f, 0x1.f45eaep-8f, 0x1.8bdaa8p-9f, -0x1.8f7816p-5f,
-    0x1.30bf54p-11f, 0x1.4b86bap-12f, 0x1.2acfa2p-12f, 0x1.1526c6p-11f,
-    0x1.a1c72cp-14f, 0x1.c8268ap-12f,
+    0x1.417ad2p-10f, 0x1.ed5d94p-8f, 0x1.9cbe0ep-9f, -0x1.942c5ep-5f,
+    0x1.cd8d7p-12f, 0x1.cb1328p-13f, 0x1.a1ca04p-12f, 0x1.808938p-12f,
+    -0x1.784994p-12f, 0x1.ba5ecep-12f, -0x1.16d6aap-17f, -0x1.1234b4p-16f,
+    -0x1.d887e8p-13f, 0x1.a473fep-15f, -0x1.1fbf26p-11f, -0x1.fe0fc2p-14f,
+    -0x1.d9ba44p-19f, -0x1.2326bp-12f, 0x1.49f006p-15f, 0x1.68cd6ep-15f,
     /* node 24 z */
-    -0x1.01345ep-10f, 0x1.da31fep-9f, 0x1.f1db18p-9f, 0x1.2dfafap-4f,
-    -0x1.0fe24cp-11f, -0x1.8eda42p-13f, 0x1.22313ap-11f, -0x1.3ab72cp-11f,
-    -0x1.22c454p-12f, -0x1.a51cbcp-15f,
+    -0x1.cf73a6p-11f, 0x1.e5b3bcp-9f, 0x1.e25c56p-9f, 0x1.302ebap-4f,
+    -0x1.a21d08p-12f, -0x1.7ad016p-14f, 0x1.84644cp-12f, -0x1.de9758p-12f,
+    0x1.7b017p-13f, -0x1.21966cp-15f, -0x1.f76ffap-18f, 0x1.e2e1bap-15f,
+    0x1.f9a01cp-13f, -0x1.ce511ap-14f, 0x1.1c06f6p-11f, 0x1.74d23p-13f,
+    0x1.042726p-20f, 0x1.ef4456p-13f, -0x1.7546aap-14f, -0x1.dd2256p-16f,
     /* node 25 x */
-    0x1.57b4bp-11f, 0x1.5d3102p-7f, 0x1.530f7cp-7f, -0x1.924ddp-4f,
-    0x1.b5dca2p-12f, 0x1.0bb35ep-12f, 0x1.eedcf4p-12f, 0x1.bb67e8p-13f,
-    -0x1.125eap-9f, 0x1.607e76p-15f,
+    0x1.47d4eap-11f, 0x1.652ad4p-7f, 0x1.5fbe0cp-7f, -0x1.903c7cp-4f,
+    0x1.9a213ap-12f, 0x1.5222fap-12f, 0x1.72ae0ap-12f, 0x1.855d24p-13f,
+    -0x1.18a462p-9f, 0x1.4846b2p-15f, 0x1.a3cea2p-16f, 0x1.c8b1ccp-13f,
+    0x1.8825c6p-12f, 0x1.a8856ap-14f, -0x1.d61ab4p-13f, 0x1.85bfe6p-13f,
+    0x1.29b5cep-14f, 0x1.0f468p-12f, 0x1.56561cp-13f, 0x1.2e4cf2p-14f,
     /* node 25 y */
-    0x1.68b7bp-11f, 0x1.546d8cp-7f, 0x1.5b7746p-7f, -0x1.9231cap-4f,
-    0x1.dc6abep-13f, 0x1.0b5a78p-12f, -0x1.27c96ap-9f, 0x1.d9505p-12f,
-    0x1.36140cp-11f, 0x1.24875cp-14f,
+    0x1.5306b6p-11f, 0x1.64f8ccp-7f, 0x1.615edap-7f, -0x1.8fbce8p-4f,
+    0x1.a38958p-13f, 0x1.7ae8bp-12f, -0x1.233b7p-9f, 0x1.a7285cp-12f,
+    0x1.ddc6a8p-12f, 0x1.7bfe12p-15f, 0x1.2ff4a4p-14f, -0x1.276144p-14f,
+    0x1.b4d20cp-12f, 0x1.c147a8p-12f, -0x1.842a5ep-12f, 0x1.f87968p-14f,
+    0x1.28b93cp-15f, 0x1.6e3aa8p-12f, 0x1.0285b4p-12f, 0x1.69a058p-14f,
     /* node 25 z */
-    -0x1.240aeep-10f, 0x1.9edf6cp-6f, 0x1.a376fap-6f, 0x1.b99edep-3f,
-    -0x1.9c33fp-11f, 0x1.dab4a4p-12f, 0x1.13c27ep-10f, -0x1.a4c7cap-11f,
-    0x1.4d332p-14f, 0x1.792d96p-14f,
+    -0x1.d4c87ap-11f, 0x1.99621p-6f, 0x1.9bfc76p-6f, 0x1.b9a79ep-3f,
+    -0x1.07631ap-11f, 0x1.9def64p-12f, 0x1.0f0a28p-10f, -0x1.03cc0ap-11f,
+    0x1.0131b8p-10f, 0x1.d6c69cp-14f, -0x1.06c3b8p-14f, -0x1.db3036p-15f,
+    -0x1.40c944p-12f, -0x1.abc986p-12f, 0x1.739a8ep-11f, 0x1.626d7cp-17f,
+    -0x1.1502bcp-14f, -0x1.3e53d8p-14f, -0x1.89d912p-13f, -0x1.258446p-13f,
     /* node 26 x */
-    0x1.5a9524p-9f, 0x1.8c9cf6p-6f, 0x1.4af2dep-7f, -0x1.941c44p-4f,
-    0x1.869eccp-10f, 0x1.4c2926p-10f, -0x1.d89bb8p-12f, 0x1.b23114p-10f,
-    0x1.c83a6ep-9f, -0x1.97ea4ap-13f,
+    0x1.4b15bp-9f, 0x1.7dd532p-6f, 0x1.3c0e8ep-7f, -0x1.9f70bap-4f,
+    0x1.5d771p-10f, 0x1.d573b8p-11f, 0x1.926282p-13f, 0x1.76053ap-10f,
+    0x1.6cb142p-9f, -0x1.ada3dap-13f, -0x1.0d6a5ep-13f, -0x1.200ecp-12f,
+    -0x1.e9172p-10f, -0x1.23d7fcp-14f, -0x1.689652p-11f, -0x1.8e19d8p-11f,
+    -0x1.4947aap-14f, -0x1.4ffe02p-10f, -0x1.b02c6cp-12f, -0x1.846808p-15f,
     /* node 26 y */
-    0x1.194132p-9f, 0x1.fae304p-9f, 0x1.9cafd6p-6f, -0x1.5d63fp-3f,
-    0x1.cceddap-10f, 0x1.40747p-11f, 0x1.147172p-8f, 0x1.3a74f8p-10f,
-    -0x1.807706p-9f, -0x1.77b51p-11f,
+    0x1.1294dep-9f, 0x1.bb38d2p-9f, 0x1.a0845ap-6f, -0x1.605d0ap-3f,
+    0x1.b8d336p-10f, 0x1.5dc6b4p-12f, 0x1.14fbcp-8f, 0x1.228a2p-10f,
+    -0x1.9711e8p-9f, -0x1.672cdcp-11f, -0x1.108b7ep-14f, 0x1.42636ap-12f,
+    -0x1.a5d87ap-11f, -0x1.b949p-12f, -0x1.079f1cp-17f, -0x1.773df4p-16f,
+    0x1.7bb73ap-15f, -0x1.bf070ep-11f, -0x1.920b84p-13f, -0x1.ccbac8p-16f,
     /* node 26 z */
-    -0x1.0a1188p-8f, 0x1.47d2fcp-5f, 0x1.c6bb78p-5f, 0x1.9ecf42p-2f,
-    -0x1.71023cp-9f, -0x1.0f8e04p-11f, -0x1.12e542p-10f, -0x1.535dbap-9f,
-    -0x1.60bc0cp-10f, 0x1.65ce12p-11f,
+    -0x1.e9853p-9f, 0x1.4d1e52p-5f, 0x1.c4e2cep-5f, 0x1.a1a096p-2f,
+    -0x1.38b23cp-9f, -0x1.1c4a16p-13f, -0x1.aee2d4p-10f, -0x1.0ffb36p-9f,
+    0x1.b4fec6p-13f, 0x1.71fbd6p-11f, 0x1.053972p-14f, 0x1.d1c174p-14f,
+    0x1.802996p-10f, -0x1.0f40e8p-13f, 0x1.4f0b22p-10f, 0x1.5dc94ap-11f,
+    -0x1.024902p-18f, 0x1.478a2p-10f, 0x1.e75c14p-15f, -0x1.d6cbd8p-15f,
     /* node 27 x */
-    0x1.301968p-12f, 0x1.47df58p-5f, 0x1.a44d8ep-7f, -0x1.dc046p-5f,
-    -0x1.9e0348p-10f, 0x1.c4a41ep-10f, -0x1.6489d4p-8f, 0x1.7429c8p-13f,
-    0x1.09ef18p-8f, 0x1.eee326p-10f,
+    0x1.3e6ec6p-13f, 0x1.4d30ap-5f, 0x1.c2602p-7f, -0x1.c0c7a6p-5f,
+    -0x1.98fffcp-10f, 0x1.dae258p-10f, -0x1.1e4722p-8f, 0x1.891a4ep-17f,
+    0x1.948d3ap-9f, 0x1.b76c32p-10f, 0x1.097d1p-14f, -0x1.d69c4p-11f,
+    0x1.563fa4p-10f, 0x1.408f18p-10f, -0x1.cfcd4cp-9f, -0x1.2987fep-12f,
+    0x1.6fa496p-16f, 0x1.5cd3fcp-9f, 0x1.13fa9ap-9f, 0x1.12289p-11f,
     /* node 27 y */
-    0x1.a42776p-9f, 0x1.08c23ap-7f, 0x1.39d7c4p-5f, -0x1.d0550ap-3f,
-    0x1.bfb248p-11f, 0x1.561684p-9f, -0x1.8f3b86p-8f, 0x1.1a0f04p-9f,
-    0x1.e437fp-9f, 0x1.ff7808p-14f,
+    0x1.bbd858p-9f, 0x1.d1dd92p-8f, 0x1.3a01c8p-5f, -0x1.d450e2p-3f,
+    0x1.1813cp-10f, 0x1.32ca94p-9f, -0x1.2fe232p-8f, 0x1.29e428p-9f,
+    0x1.cca41ep-9f, 0x1.924cap-14f, -0x1.023d04p-13f, -0x1.621a1p-13f,
+    -0x1.fa9796p-10f, 0x1.0320ep-12f, 0x1.81cffep-11f, -0x1.28998p-10f,
+    -0x1.ef81cap-15f, -0x1.65f8ccp-11f, 0x1.83654ep-12f, -0x1.20b29cp-13f,
     /* node 27 z */
-    -0x1.a40092p-9f, 0x1.adc40ep-6f, 0x1.4aa958p-4f, 0x1.198148p-1f,
-    -0x1.95095ap-10f, -0x1.1b8dd8p-9f, 0x1.d3e252p-8f, -0x1.6edd68p-9f,
-    -0x1.68aefcp-8f, -0x1.45a5d6p-14f,
+    -0x1.57597ap-9f, 0x1.c1f71p-6f, 0x1.46293cp-4f, 0x1.1aa02ep-1f,
+    -0x1.9dc46cp-11f, -0x1.04ca94p-9f, 0x1.5fd09p-8f, -0x1.e84826p-10f,
+    -0x1.0c81dep-9f, 0x1.13ea64p-14f, 0x1.95b6a8p-13f, 0x1.a5a19ep-13f,
+    0x1.c0bd0cp-10f, -0x1.07321ep-10f, 0x1.ad2d32p-9f, 0x1.ee6da4p-10f,
+    -0x1.0c49f8p-14f, -0x1.1fa2p-14f, -0x1.93ec14p-11f, -0x1.827d28p-12f,
     /* node 28 x */
-    -0x1.8653fcp-17f, 0x1.31f0dap-5f, -0x1.5462f8p-17f, 0x1.3fedf2p-13f,
-    0x1.4af83cp-15f, -0x1.75fa9p-9f, 0x1.968278p-8f, 0x1.436b6p-16f,
-    0x1.df2852p-14f, -0x1.d7a0e8p-15f,
+    -0x1.c8e8c8p-18f, 0x1.36a666p-5f, -0x1.5828cep-13f, 0x1.394bcp-14f,
+    -0x1.1bb3aap-18f, -0x1.8f499cp-9f, 0x1.79d2ep-8f, -0x1.5c3af8p-16f,
+    0x1.55c3eep-13f, -0x1.03b01ep-18f, 0x1.4464e4p-13f, -0x1.0d846p-13f,
+    0x1.0872ep-13f, -0x1.a1a4aep-12f, 0x1.d57d82p-10f, 0x1.f2369ap-11f,
+    -0x1.c8f6bp-16f, -0x1.d524a8p-16f, -0x1.05e256p-14f, 0x1.643906p-18f,
     /* node 28 y */
-    -0x1.2b9404p-12f, 0x1.17ecaap-13f, 0x1.fa907p-5f, -0x1.f1fda6p-3f,
-    -0x1.2c91ep-8f, -0x1.86118ap-12f, -0x1.bc288ap-10f, -0x1.a942eep-10f,
-    -0x1.ac84dep-9f, 0x1.c7389ep-9f,
+    0x1.481b3cp-10f, 0x1.152764p-13f, 0x1.00bc18p-4f, -0x1.e23be2p-3f,
+    -0x1.3ac16ep-9f, -0x1.91661cp-12f, 0x1.4128ap-12f, 0x1.7189aap-12f,
+    0x1.e032bap-11f, 0x1.bb3352p-9f, 0x1.bc62d8p-16f, -0x1.19b92cp-12f,
+    0x1.5528a8p-11f, 0x1.d49a48p-15f, 0x1.519142p-9f, 0x1.4fa12ap-13f,
+    0x1.168ddep-12f, 0x1.71796cp-8f, 0x1.8be51cp-9f, 0x1.96399cp-13f,
     /* node 28 z */
-    -0x1.240d28p-10f, -0x1.f3f4bcp-12f, 0x1.668602p-4f, 0x1.34b536p-1f,
-    0x1.ff368ap-10f, -0x1.6c4114p-11f, 0x1.9919e8p-10f, -0x1.49cb78p-10f,
-    -0x1.618b0cp-7f, -0x1.404f6ep-9f,
+    -0x1.b0e9e8p-11f, -0x1.61cad4p-11f, 0x1.61c6e2p-4f, 0x1.3211bp-1f,
+    0x1.113808p-9f, -0x1.431c9ap-11f, -0x1.b86a96p-11f, -0x1.82772ep-11f,
+    -0x1.038746p-7f, -0x1.1111a6p-9f, -0x1.3f6f6p-15f, 0x1.102e36p-9f,
+    -0x1.237f34p-10f, -0x1.b63798p-10f, 0x1.41f47p-8f, 0x1.e42c48p-11f,
+    0x1.a10086p-17f, -0x1.5f43aep-8f, -0x1.d19b76p-9f, -0x1.0864a8p-10f,
     /* node 29 x */
-    -0x1.0e141ep-12f, 0x1.444aa4p-5f, -0x1.a26fd2p-7f, 0x1.db31p-5f,
-    0x1.933772p-10f, 0x1.187aa2p-10f, -0x1.03f212p-8f, -0x1.aba0f4p-13f,
-    -0x1.2453bp-8f, -0x1.e0c118p-10f,
+    -0x1.105c3ep-13f, 0x1.45775p-5f, -0x1.bc7cbap-7f, 0x1.bfd8dep-5f,
+    0x1.9c9034p-10f, 0x1.17ce2ap-10f, -0x1.44ed4cp-8f, 0x1.9e83d4p-17f,
+    -0x1.a20c3p-9f, -0x1.b40428p-10f, 0x1.bb6cfcp-16f, 0x1.15c0f4p-10f,
+    -0x1.77a4b4p-10f, -0x1.11a508p-11f, 0x1.f66672p-10f, 0x1.ed9b6ep-12f,
+    0x1.05037p-17f, -0x1.5e96aap-9f, -0x1.0ee8d2p-9f, -0x1.1a920ep-11f,
     /* node 29 y */
-    0x1.aab152p-9f, -0x1.02d494p-7f, 0x1.3a505ep-5f, -0x1.cffcf2p-3f,
-    0x1.d1db68p-11f, -0x1.cdfd8ep-10f, 0x1.300178p-8f, 0x1.1a26cep-9f,
-    0x1.b14452p-9f, 0x1.184102p-14f,
+    0x1.b92edap-9f, -0x1.e158cap-8f, 0x1.381026p-5f, -0x1.d41db8p-3f,
+    0x1.165c7ep-10f, -0x1.47283ep-9f, 0x1.3c557ap-8f, 0x1.2533dap-9f,
+    0x1.f51606p-9f, 0x1.691c6ap-14f, 0x1.21f03p-13f, -0x1.a10444p-12f,
+    -0x1.b84218p-10f, -0x1.edebeep-12f, 0x1.aa02b6p-11f, 0x1.34ea3ep-10f,
+    -0x1.a35924p-14f, -0x1.a52934p-11f, 0x1.4de2e6p-12f, -0x1.114d0cp-13f,
     /* node 29 z */
-    -0x1.a9ad6p-9f, -0x1.b970a8p-6f, 0x1.4a6acap-4f, 0x1.196286p-1f,
-    -0x1.a17f4cp-10f, 0x1.e6e61p-12f, -0x1.699b62p-8f, -0x1.6fca0cp-9f,
-    -0x1.51f626p-8f, -0x1.e38cbap-18f,
+    -0x1.563806p-9f, -0x1.c8f4eap-6f, 0x1.475df6p-4f, 0x1.1a9258p-1f,
+    -0x1.9d030cp-11f, 0x1.2b6cccp-10f, -0x1.85e2fap-8f, -0x1.de5ddep-10f,
+    -0x1.3b503ep-9f, 0x1.2399e2p-14f, -0x1.d5540ap-13f, 0x1.d714bap-12f,
+    0x1.7c07cep-10f, -0x1.e03ab8p-12f, 0x1.1a869cp-9f, -0x1.dacf2p-11f,
+    -0x1.1bdf5ap-16f, 0x1.918b5ep-15f, -0x1.604474p-11f, -0x1.8723cap-12f,
     /* node 30 x */
-    -0x1.5a96c2p-9f, 0x1.89a952p-6f, -0x1.4c7586p-7f, 0x1.93cd0ap-4f,
-    -0x1.847b04p-10f, 0x1.2c6d0ep-12f, 0x1.93fd86p-13f, -0x1.adbb6ep-10f,
-    -0x1.a176cp-9f, 0x1.bf4738p-13f,
+    -0x1.4ceb36p-9f, 0x1.7f1f0ep-6f, -0x1.39d02p-7f, 0x1.9f614cp-4f,
+    -0x1.5fffc2p-10f, 0x1.91259p-11f, -0x1.15fa7cp-16f, -0x1.752c5cp-10f,
+    -0x1.798404p-9f, 0x1.9b56aep-13f, -0x1.36f4c8p-13f, 0x1.440ff8p-12f,
+    0x1.dbad7ap-10f, -0x1.9b1ffcp-13f, -0x1.2c3bdp-12f, -0x1.38d588p-11f,
+    0x1.62901cp-14f, 0x1.58142ep-10f, 0x1.e35da4p-12f, 0x1.a125cep-15f,
     /* node 30 y */
-    0x1.198c2ep-9f, -0x1.e85a9cp-9f, 0x1.9d205ep-6f, -0x1.5d7a26p-3f,
-    0x1.c69124p-10f, -0x1.b95d5ap-13f, -0x1.2a998ap-8f, 0x1.36a9fcp-10f,
-    -0x1.975596p-9f, -0x1.662da2p-11f,
+    0x1.16ec42p-9f, -0x1.b7eee6p-9f, 0x1.a2620ep-6f, -0x1.60835cp-3f,
+    0x1.bdb0fp-10f, -0x1.6544c8p-12f, -0x1.1a8ffap-8f, 0x1.28867cp-10f,
+    -0x1.a1ffb8p-9f, -0x1.5cc998p-11f, 0x1.44d7ecp-14f, 0x1.d4fba6p-12f,
+    -0x1.e0be5ap-11f, 0x1.8620d2p-12f, 0x1.3cb03cp-14f, 0x1.b03d78p-14f,
+    0x1.26daaep-14f, -0x1.b4769p-11f, -0x1.ad9e8ap-13f, -0x1.42c168p-15f,
     /* node 30 z */
-    -0x1.0ba11p-8f, -0x1.4a7956p-5f, 0x1.c65014p-5f, 0x1.9ecc7p-2f,
-    -0x1.6ed3a4p-9f, -0x1.70376p-11f, 0x1.c7c0ccp-10f, -0x1.515972p-9f,
-    -0x1.d3b43p-11f, 0x1.5f85dep-11f,
+    -0x1.ebd9b6p-9f, -0x1.5042b4p-5f, 0x1.c49fb2p-5f, 0x1.a1a95cp-2f,
+    -0x1.3a4d6p-9f, -0x1.7f1228p-12f, 0x1.8441f4p-10f, -0x1.112794p-9f,
+    0x1.93065p-13f, 0x1.6c18d4p-11f, -0x1.97046ep-14f, 0x1.201a94p-14f,
+    0x1.849e02p-10f, -0x1.2e1eb2p-11f, 0x1.5d3ccp-10f, -0x1.905424p-12f,
+    -0x1.c77d4p-17f, 0x1.4e4e44p-10f, 0x1.1fd48ap-14f, -0x1.8cd9b6p-15f,
     /* node 31 x */
-    -0x1.589a48p-11f, 0x1.5aad2ep-7f, -0x1.52cc6p-7f, 0x1.9269f4p-4f,
-    -0x1.b4a4b4p-12f, 0x1.1208f2p-12f, 0x1.015552p-11f, -0x1.c1103cp-13f,
-    0x1.0967f8p-9f, -0x1.b4c494p-15f,
+    -0x1.48413cp-11f, 0x1.5dac1ep-7f, -0x1.60e1bp-7f, 0x1.905344p-4f,
+    -0x1.99a52ap-12f, 0x1.66d8acp-13f, 0x1.dfe6fcp-12f, -0x1.8f05c4p-13f,
+    0x1.1d806cp-9f, -0x1.48f772p-15f, 0x1.a5a22p-16f, -0x1.0464b8p-12f,
+    -0x1.6257d4p-12f, -0x1.d2b044p-14f, 0x1.3283dp-11f, 0x1.7f095p-13f,
+    -0x1.3e23ccp-14f, -0x1.17d22ap-12f, -0x1.6bac4ep-13f, -0x1.23f14ep-14f,
     /* node 31 y */
-    0x1.6b39e2p-11f, -0x1.532fbep-7f, 0x1.5aabbep-7f, -0x1.92256ap-4f,
-    0x1.017c22p-12f, -0x1.a94146p-13f, 0x1.2b8578p-9f, 0x1.e761c8p-12f,
-    0x1.80dd8cp-11f, 0x1.d63adcp-15f,
+    0x1.4892b2p-11f, -0x1.5c5a76p-7f, 0x1.5f8c3p-7f, -0x1.8f91dap-4f,
+    0x1.8c1f7ep-13f, -0x1.5b9fdcp-13f, 0x1.250972p-9f, 0x1.9b31d8p-12f,
+    0x1.00ca3cp-11f, 0x1.18ae66p-15f, -0x1.162eb6p-14f, -0x1.2ea30ep-13f,
+    0x1.f06a0ep-12f, -0x1.9fb968p-14f, -0x1.748bdcp-11f, -0x1.83bc46p-13f,
+    0x1.828332p-16f, 0x1.6652bep-12f, 0x1.10b2d4p-12f, 0x1.823432p-14f,
     /* node 31 z */
-    -0x1.2abc9ep-10f, -0x1.a11ff8p-6f, 0x1.a39ad6p-6f, 0x1.b9a4a8p-3f,
-    -0x1.a3df94p-11f, -0x1.6ffe74p-11f, -0x1.2449ep-10f, -0x1.aaa82ap-11f,
-    0x1.7dc132p-14f, 0x1.62e508p-14f,
+    -0x1.d1570ep-11f, -0x1.9f886cp-6f, 0x1.9c2c5ap-6f, 0x1.b9a6fap-3f,
+    -0x1.050c8p-11f, -0x1.8beeaep-11f, -0x1.0e5a22p-10f, -0x1.01e14ep-11f,
+    0x1.ffb6ecp-11f, 0x1.e8528ap-14f, 0x1.b7fa66p-15f, -0x1.42d9dap-15f,
+    -0x1.48d6ap-12f, -0x1.1b3266p-13f, 0x1.79455cp-10f, 0x1.5302b6p-13f,
+    -0x1.049c32p-14f, -0x1.2cce38p-14f, -0x1.96fdacp-13f, -0x1.27b722p-13f,
     /* node 32 x */
-    -0x1.3a237ep-10f, 0x1.d8642ap-9f, -0x1.560ab6p-9f, 0x1.b83afap-5f,
-    -0x1.e0d14cp-12f, -0x1.abad76p-14f, -0x1.347c42p-10f, -0x1.73a512p-11f,
-    -0x1.cecc7p-10f, -0x1.05ecb2p-12f,
+    -0x1.19914cp-10f, 0x1.cea68ep-9f, -0x1.4f9d88p-9f, 0x1.bd0a6cp-5f,
+    -0x1.440992p-12f, -0x1.5d6bf4p-17f, -0x1.33343cp-10f, -0x1.15a084p-11f,
+    -0x1.66dbcep-10f, -0x1.f07dc6p-13f, 0x1.5283e2p-17f, 0x1.d5d7eap-13f,
+    0x1.e84ca8p-13f, -0x1.0ac204p-17f, 0x1.6eb2eap-12f, -0x1.131f9ap-13f,
+    0x1.0b8608p-15f, 0x1.f0527ap-13f, -0x1.1bc8a6p-14f, -0x1.3437e6p-15f,
     /* node 32 y */
-    0x1.5f2a3ap-10f, -0x1.eded78p-8f, 0x1.8cb9c6p-9f, -0x1.8f70e2p-5f,
-    0x1.2eb51ap-11f, -0x1.65f0ap-16f, -0x1.ddc36p-12f, 0x1.1381ep-11f,
-    0x1.60207cp-16f, 0x1.c8972cp-12f,
+    0x1.42d278p-10f, -0x1.e48c24p-8f, 0x1.9e199ap-9f, -0x1.943c04p-5f,
+    0x1.d1100ap-12f, -0x1.5faccep-14f, -0x1.8a67a2p-12f, 0x1.8372cep-12f,
+    -0x1.7dceaep-12f, 0x1.bd9662p-12f, 0x1.21bc6ep-16f, -0x1.409cdep-20f,
+    -0x1.f03658p-13f, 0x1.4a8d68p-13f, -0x1.5cec42p-12f, 0x1.b747d6p-15f,
+    -0x1.8d24p-22f, -0x1.21b352p-12f, 0x1.2804a2p-15f, 0x1.5b2c56p-15f,
     /* node 32 z */
-    -0x1.00b37ap-10f, -0x1.e45696p-9f, 0x1.f0fabap-9f, 0x1.2df0f4p-4f,
-    -0x1.0dffdcp-11f, -0x1.8b0e22p-14f, -0x1.8c16fep-12f, -0x1.389aa2p-11f,
-    -0x1.5076e4p-13f, -0x1.74742p-15f,
+    -0x1.cf8352p-11f, -0x1.f489b4p-9f, 0x1.e3e236p-9f, 0x1.302602p-4f,
+    -0x1.a2f3cep-12f, -0x1.2482d2p-15f, -0x1.c9349p-12f, -0x1.dda97cp-12f,
+    0x1.63d102p-13f, -0x1.23b5bep-15f, -0x1.ad45d6p-19f, 0x1.1fd21ep-14f,
+    0x1.dfd65p-13f, -0x1.bc58bep-14f, 0x1.0622f2p-12f, -0x1.662c4ap-14f,
+    0x1.f272b2p-20f, 0x1.f636d2p-13f, -0x1.6b3856p-14f, -0x1.e506acp-16f,
     /* node 33 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 33 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 33 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 34 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 34 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 34 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 35 x */
-    0x1.38df14p-10f, 0x1.1da8c6p-8f, 0x1.cd6b86p-9f, -0x1.7aa59ep-4f,
-    0x1.9296c8p-11f, 0x1.af9356p-11f, 0x1.b632b4p-11f, 0x1.752346p-12f,
-    -0x1.813944p-9f, 0x1.1e033cp-13f,
+    0x1.278bd2p-10f, 0x1.19df86p-8f, 0x1.e822b8p-9f, -0x1.7c338ep-4f,
+    0x1.6bc68ep-11f, 0x1.8654a4p-11f, 0x1.465a96p-11f, 0x1.2fa892p-12f,
+    -0x1.8740dcp-9f, 0x1.35029ap-13f, -0x1.66536ap-16f, 0x1.1cd46cp-12f,
+    -0x1.ee5014p-14f, -0x1.701178p-13f, -0x1.20a7dap-11f, 0x1.42c31ap-13f,
+    0x1.89f8a4p-15f, -0x1.1e9392p-12f, -0x1.3a5114p-13f, 0x1.8d7b46p-16f,
     /* node 35 y */
-    0x1.689b42p-10f, 0x1.6132bcp-7f, 0x1.bd100ep-8f, -0x1.872764p-5f,
-    0x1.268da6p-12f, 0x1.139f86p-14f, -0x1.397eb2p-11f, 0x1.e7201ep-13f,
-    0x1.688284p-14f, 0x1.c9864cp-11f,
+    0x1.69c738p-10f, 0x1.6511d2p-7f, 0x1.c3ce2p-8f, -0x1.8595a4p-5f,
+    0x1.319f14p-12f, 0x1.9bb294p-14f, -0x1.0a8e9cp-11f, 0x1.e15e6p-13f,
+    0x1.287f0cp-19f, 0x1.c4a1fap-11f, 0x1.46685ep-16f, -0x1.5969fep-16f,
+    -0x1.4ad5d8p-16f, 0x1.5c968ap-13f, -0x1.e9c282p-13f, -0x1.b9ed4ap-16f,
+    0x1.59a096p-15f, 0x1.078bdp-12f, 0x1.136712p-13f, 0x1.87e14cp-17f,
     /* node 35 z */
-    -0x1.db84aap-10f, 0x1.ac52fep-7f, 0x1.13f7e8p-7f, 0x1.306cdep-3f,
-    -0x1.c54dccp-11f, -0x1.bea2f6p-16f, 0x1.6de3d8p-11f, -0x1.b77b38p-11f,
-    -0x1.34cf22p-15f, -0x1.f950b8p-12f,
+    -0x1.a84adap-10f, 0x1.a7e1fap-7f, 0x1.077dd2p-7f, 0x1.30f5e4p-3f,
+    -0x1.41044ep-11f, -0x1.27bb3cp-16f, 0x1.39f456p-11f, -0x1.2193fep-11f,
+    0x1.bf8b06p-11f, -0x1.e11012p-12f, -0x1.d490e8p-16f, 0x1.c688fp-23f,
+    0x1.2d92bcp-14f, -0x1.325674p-12f, 0x1.e509fap-11f, 0x1.509838p-14f,
+    -0x1.37936ap-14f, -0x1.0b0ca2p-13f, -0x1.80dae6p-13f, -0x1.b91912p-14f,
     /* node 36 x */
-    0x1.2152bp-9f, 0x1.9ee62ap-6f, 0x1.e7b46ap-9f, -0x1.5d45dep-3f,
-    0x1.3eb82p-10f, 0x1.5d3682p-11f, -0x1.c57af4p-9f, 0x1.e1c694p-10f,
-    0x1.2a6bccp-8f, -0x1.5432d8p-11f,
+    0x1.187332p-9f, 0x1.a0a8a6p-6f, 0x1.c317dep-9f, -0x1.5fd532p-3f,
+    0x1.2bfa3ep-10f, 0x1.d58464p-12f, -0x1.8b886cp-9f, 0x1.bec7eap-10f,
+    0x1.1039dap-8f, -0x1.5f82f8p-11f, 0x1.106ec4p-14f, -0x1.8abda8p-12f,
+    -0x1.83032p-11f, 0x1.6ee86ep-12f, -0x1.28becp-12f, -0x1.c494a6p-13f,
+    -0x1.05fd2p-14f, -0x1.4fa1cep-11f, 0x1.d2e42p-18f, 0x1.dc4f1cp-23f,
     /* node 36 y */
-    0x1.58468p-9f, 0x1.5257cap-7f, 0x1.87c8b4p-6f, -0x1.9447ap-4f,
-    0x1.a17feep-10f, 0x1.555748p-10f, 0x1.5bb314p-9f, 0x1.884676p-10f,
-    0x1.241116p-12f, -0x1.e4dfb8p-13f,
+    0x1.4760b6p-9f, 0x1.359c7ep-7f, 0x1.806636p-6f, -0x1.a0a618p-4f,
+    0x1.733636p-10f, 0x1.acaa44p-11f, 0x1.7bf4dp-9f, 0x1.5657a8p-10f,
+    -0x1.2a70bcp-14f, -0x1.b51feep-13f, -0x1.5236e4p-14f, 0x1.32e2c6p-15f,
+    -0x1.7c52bcp-10f, -0x1.c75d32p-12f, -0x1.08263p-12f, -0x1.f1da9cp-12f,
+    -0x1.2ff756p-13f, -0x1.086f64p-9f, -0x1.74eaf6p-11f, -0x1.68f9eep-14f,
     /* node 36 z */
-    -0x1.0b4ce8p-8f, 0x1.c2eabcp-5f, 0x1.4c4cf2p-5f, 0x1.9ece52p-2f,
-    -0x1.4d3336p-9f, -0x1.eeadp-12f, 0x1.a7f1ap-12f, -0x1.78b2eap-9f,
-    -0x1.62e80cp-9f, 0x1.6aa9e6p-11f,
+    -0x1.e87df8p-9f, 0x1.c45828p-5f, 0x1.4df50ap-5f, 0x1.a1c23p-2f,
+    -0x1.11c6e8p-9f, -0x1.03c82p-13f, 0x1.4f78a8p-13f, -0x1.35e1b6p-9f,
+    -0x1.806de8p-10f, 0x1.70b4c8p-11f, -0x1.89b206p-17f, 0x1.ca75fap-13f,
+    0x1.2ad3fcp-10f, -0x1.c3ee6ep-13f, 0x1.14eddep-10f, 0x1.5e5d4cp-12f,
+    0x1.48f9f8p-14f, 0x1.c2a792p-10f, 0x1.ba0b26p-12f, -0x1.27b10cp-15f,
     /* node 37 x */
-    0x1.840746p-10f, 0x1.0307eep-4f, 0x1.5fbd6ep-6f, -0x1.4c7dbcp-3f,
-    0x1.21beb2p-10f, -0x1.289812p-17f, 0x1.c973dap-9f, 0x1.84f504p-14f,
-    -0x1.86690cp-8f, 0x1.aad93cp-11f,
+    0x1.14f31cp-10f, 0x1.0b02a2p-4f, 0x1.77d9c6p-6f, -0x1.477458p-3f,
+    0x1.29030cp-11f, 0x1.d0ca26p-12f, 0x1.0dc0d6p-9f, -0x1.7ce4ecp-12f,
+    -0x1.bac624p-8f, 0x1.af4ffep-11f, 0x1.1b14d8p-12f, 0x1.90b04ep-11f,
+    0x1.7dedc8p-9f, 0x1.cef5f4p-12f, -0x1.25f124p-11f, 0x1.9be4cp-10f,
+    0x1.ae27cep-13f, 0x1.aed83ap-11f, 0x1.b3bb36p-12f, 0x1.594598p-12f,
     /* node 37 y */
-    0x1.8c5ed4p-10f, 0x1.684de8p-6f, 0x1.022a42p-4f, -0x1.4c5e7ep-3f,
-    0x1.17a886p-13f, 0x1.664b2cp-14f, -0x1.dd6f8ep-8f, 0x1.311ae6p-10f,
-    0x1.397892p-8f, 0x1.fd013p-11f,
+    0x1.3221b6p-10f, 0x1.8366a4p-6f, 0x1.0945d4p-4f, -0x1.45a47ap-3f,
+    -0x1.2d8b7cp-12f, 0x1.378478p-11f, -0x1.bc081p-8f, 0x1.482faap-11f,
+    0x1.52ea4cp-9f, 0x1.b7f084p-11f, 0x1.fbb79ap-13f, -0x1.00be7cp-12f,
+    0x1.8fc386p-10f, 0x1.b586d2p-10f, -0x1.03d87ep-9f, 0x1.34a344p-12f,
+    0x1.474a1cp-12f, 0x1.a2f572p-9f, 0x1.e8868p-10f, 0x1.e21478p-12f,
     /* node 37 z */
-    -0x1.787136p-8f, 0x1.32cc52p-4f, 0x1.36de84p-4f, 0x1.7a85f4p-1f,
-    -0x1.c2dd9cp-9f, -0x1.02ed58p-15f, 0x1.85427ep-9f, -0x1.d2a854p-9f,
-    -0x1.cb46dap-13f, -0x1.e20ec6p-14f,
+    -0x1.478a4p-8f, 0x1.2bad8cp-4f, 0x1.2ea8c4p-4f, 0x1.7a8bcp-1f,
+    -0x1.4d71e8p-9f, 0x1.5fc1aep-14f, 0x1.725dd6p-9f, -0x1.485e7cp-9f,
+    0x1.6c6f24p-9f, -0x1.7fc5c4p-16f, -0x1.5e052cp-12f, -0x1.9288p-13f,
+    -0x1.a978c2p-11f, -0x1.80a68cp-10f, 0x1.85866cp-9f, -0x1.4d264ap-11f,
+    -0x1.46561ap-12f, -0x1.d81b56p-12f, -0x1.30348ep-10f, -0x1.3ecdb4p-11f,
     /* node 38 x */
-    0x1.1a25f6p-7f, 0x1.62929cp-4f, 0x1.645708p-7f, -0x1.f9474cp-4f,
-    0x1.77dd2p-8f, -0x1.78d6a4p-10f, 0x1.10cd88p-7f, 0x1.b72b2ap-9f,
-    -0x1.81814cp-8f, -0x1.bf357p-10f,
+    0x1.32b036p-7f, 0x1.5e7a3ep-4f, 0x1.1dc262p-7f, -0x1.0d0ca6p-3f,
+    0x1.acb9dp-8f, -0x1.18bacap-9f, 0x1.c47f8p-8f, 0x1.1c144ep-8f,
+    -0x1.b227aap-10f, -0x1.57095p-10f, -0x1.6f66ecp-13f, 0x1.6796ccp-10f,
+    -0x1.1b2cd6p-8f, -0x1.1a8508p-9f, 0x1.8d6c88p-8f, 0x1.a48f6cp-11f,
+    0x1.a063f4p-15f, -0x1.a8260cp-8f, -0x1.dbdab4p-9f, -0x1.2e08e8p-10f,
     /* node 38 y */
-    0x1.740bdap-8f, 0x1.32668ap-7f, 0x1.dbeea8p-4f, -0x1.d3da06p-3f,
-    0x1.2f9028p-8f, 0x1.a6765ep-9f, 0x1.301df2p-6f, 0x1.12ab64p-9f,
-    -0x1.8eb3aep-8f, 0x1.3a0586p-16f,
+    0x1.3679a6p-8f, 0x1.4c31b2p-7f, 0x1.d8fcbcp-4f, -0x1.dbbcaep-3f,
+    0x1.c4340ep-9f, 0x1.74d4a4p-9f, 0x1.023adep-6f, 0x1.1830a4p-10f,
+    -0x1.bd478ep-8f, 0x1.11316ep-13f, 0x1.06f956p-15f, 0x1.60d16ap-11f,
+    0x1.3b7a14p-10f, -0x1.41a46p-10f, -0x1.926d68p-11f, 0x1.06fa1cp-9f,
+    -0x1.5826a8p-12f, -0x1.25d842p-8f, -0x1.4608d8p-9f, 0x1.260a02p-12f,
     /* node 38 z */
-    -0x1.d9e2d4p-7f, 0x1.0f6f7ep-4f, 0x1.f7719p-4f, 0x1.05d46cp+0f,
-    -0x1.5b8fe6p-7f, 0x1.5fd3b4p-10f, -0x1.18b46ep-6f, -0x1.d3ba88p-8f,
-    0x1.9237bcp-10f, 0x1.c7f456p-10f,
+    -0x1.b4c5e6p-7f, 0x1.02debcp-4f, 0x1.f9fc04p-4f, 0x1.072e02p+0f,
+    -0x1.2b3432p-7f, 0x1.b617e8p-10f, -0x1.b79558p-7f, -0x1.7da93ep-8f,
+    0x1.4fb3f4p-9f, 0x1.951256p-10f, -0x1.ee46ep-12f, -0x1.50fad6p-12f,
+    -0x1.b5e09ap-10f, 0x1.7e3806p-12f, -0x1.c429fap-14f, -0x1.a8e92ep-9f,
+    0x1.b6c066p-14f, 0x1.830316p-8f, 0x1.3afd44p-9f, 0x1.5a928ep-15f,
     /* node 39 x */
-    0x1.64027p-15f, 0x1.ef1bp-4f, 0x1.02f684p-16f, -0x1.45c6f2p-12f,
-    -0x1.ff0efp-15f, 0x1.3cb644p-8f, -0x1.7a353cp-6f, -0x1.3bb222p-16f,
-    -0x1.0ee56ap-13f, 0x1.1c7d78p-13f,
+    0x1.7a8c5ap-15f, 0x1.ead276p-4f, 0x1.0df0eap-11f, -0x1.320e9p-12f,
+    0x1.8b678ep-16f, 0x1.55d96p-8f, -0x1.6712bep-6f, 0x1.15413ap-14f,
+    -0x1.baf252p-12f, 0x1.99c188p-16f, -0x1.dea316p-13f, 0x1.efb402p-12f,
+    -0x1.cb815cp-12f, 0x1.27a666p-10f, -0x1.eceaeep-9f, -0x1.1a72a6p-9f,
+    0x1.57b658p-14f, 0x1.301a76p-14f, 0x1.dc8578p-14f, -0x1.185714p-15f,
     /* node 39 y */
-    0x1.79ac62p-6f, 0x1.a5ae1p-11f, 0x1.1784fcp-3f, -0x1.1036a6p-2f,
-    0x1.4ee88p-7f, 0x1.840d54p-9f, -0x1.83db9p-10f, 0x1.c4de2cp-7f,
-    0x1.3b0886p-6f, 0x1.05b8ecp-9f,
+    0x1.5ff01cp-6f, 0x1.41fe98p-9f, 0x1.1eeaf2p-3f, -0x1.181fc8p-2f,
+    0x1.1603e4p-7f, 0x1.f4d5ccp-10f, 0x1.59061ep-13f, 0x1.791278p-7f,
+    0x1.aba01ap-7f, 0x1.d5c3c8p-10f, 0x1.5cb8p-13f, -0x1.5ee3e6p-11f,
+    -0x1.9a8e78p-9f, 0x1.8828e6p-9f, -0x1.2f5658p-7f, -0x1.a49732p-12f,
+    0x1.90c25ep-11f, -0x1.ca05a8p-9f, 0x1.615c56p-9f, 0x1.429234p-11f,
     /* node 39 z */
-    -0x1.6f0612p-6f, 0x1.5f9c2ap-16f, 0x1.30036ep-3f, 0x1.2b66e2p+0f,
-    -0x1.12ad08p-6f, -0x1.c3bb0ap-10f, -0x1.223b16p-11f, -0x1.58bc1ap-7f,
-    0x1.372696p-6f, 0x1.33508ap-8f,
+    -0x1.6e44f2p-6f, -0x1.a10218p-11f, 0x1.2ee94p-3f, 0x1.2fc12ap+0f,
+    -0x1.1004bep-6f, -0x1.57e4d4p-12f, 0x1.7c89acp-10f, -0x1.56cb8p-7f,
+    0x1.09f1acp-6f, 0x1.0fc158p-8f, -0x1.7d05p-14f, -0x1.efcc8p-9f,
+    0x1.bdb3dep-8f, 0x1.c83d9ap-11f, -0x1.060ed6p-8f, -0x1.b9ec5p-10f,
+    -0x1.50f498p-11f, 0x1.bb8bbp-7f, 0x1.28c25cp-8f, 0x1.556faap-10f,
     /* node 40 x */
-    -0x1.1baaa4p-7f, 0x1.64fd86p-4f, -0x1.67e71ep-7f, 0x1.f9ee6p-4f,
-    -0x1.72e5fcp-8f, -0x1.f8bc82p-10f, 0x1.db89cap-8f, -0x1.b024dep-9f,
-    0x1.a7f806p-8f, 0x1.a4fe74p-10f,
+    -0x1.349606p-7f, 0x1.610e2p-4f, -0x1.277ac2p-7f, 0x1.0d7dep-3f,
+    -0x1.af148cp-8f, -0x1.52fa2ep-10f, 0x1.11dde8p-7f, -0x1.1f37cep-8f,
+    0x1.dd72bep-10f, 0x1.4e3c46p-10f, -0x1.823aecp-13f, -0x1.b7524p-10f,
+    0x1.2bd506p-8f, 0x1.10f714p-11f, -0x1.df48a8p-9f, -0x1.441e3ep-10f,
+    -0x1.be2692p-14f, 0x1.a90e64p-8f, 0x1.d87afp-9f, 0x1.36fce4p-10f,
     /* node 40 y */
-    0x1.6cd71cp-8f, -0x1.348f6p-7f, 0x1.db8326p-4f, -0x1.d43e72p-3f,
-    0x1.2d01bp-8f, -0x1.9067e4p-9f, -0x1.082f7p-6f, 0x1.14093p-9f,
-    -0x1.53ee34p-8f, 0x1.6c0c3p-14f,
+    0x1.3ac962p-8f, -0x1.5d5746p-7f, 0x1.db242cp-4f, -0x1.dc46dep-3f,
+    0x1.c80f78p-9f, -0x1.8472cep-9f, -0x1.11180ap-6f, 0x1.2ce0aap-10f,
+    -0x1.e0b7ap-8f, 0x1.59fb28p-13f, -0x1.92ef54p-14f, 0x1.430fd4p-10f,
+    0x1.5a0db8p-11f, 0x1.1c692p-16f, 0x1.151dbep-11f, -0x1.8da36ap-10f,
+    -0x1.f307cep-13f, -0x1.189fb8p-8f, -0x1.3ffd7p-9f, 0x1.059c0ap-12f,
     /* node 40 z */
-    -0x1.d901a6p-7f, -0x1.0ebb32p-4f, 0x1.f7d70ep-4f, 0x1.05f3fep+0f,
-    -0x1.58e56cp-7f, -0x1.34583ap-9f, 0x1.c884f8p-7f, -0x1.d379eep-8f,
-    0x1.53feb2p-10f, 0x1.9fa8eep-10f,
+    -0x1.b5e8f2p-7f, -0x1.0a0a02p-4f, 0x1.f706e6p-4f, 0x1.0744f8p+0f,
+    -0x1.2b8ffap-7f, -0x1.90008p-9f, 0x1.f92bb8p-7f, -0x1.83a17ep-8f,
+    0x1.b449ap-9f, 0x1.90e198p-10f, 0x1.f1dc48p-12f, -0x1.f9c634p-11f,
+    -0x1.07367ep-10f, -0x1.c8fc88p-12f, 0x1.94da68p-9f, 0x1.cc54c6p-10f,
+    -0x1.ea3796p-18f, 0x1.753812p-8f, 0x1.2149e2p-9f, 0x1.28641cp-14f,
     /* node 41 x */
-    -0x1.7a11e8p-10f, 0x1.02df4ap-4f, -0x1.5ded48p-6f, 0x1.4cc80ep-3f,
-    -0x1.2425bap-10f, 0x1.8d4a2ap-11f, 0x1.2259c6p-9f, -0x1.07ebd4p-13f,
-    0x1.588deap-8f, -0x1.b8651p-11f,
+    -0x1.104f1ep-10f, 0x1.080d6cp-4f, -0x1.7aee16p-6f, 0x1.478ef4p-3f,
+    -0x1.2125a4p-11f, 0x1.a29c62p-17f, 0x1.4d38f6p-9f, 0x1.6b5b86p-12f,
+    0x1.cb7f2p-8f, -0x1.a8f1eap-11f, 0x1.233c62p-12f, -0x1.d9215ap-11f,
+    -0x1.682196p-9f, -0x1.5d3b9cp-17f, 0x1.53e012p-10f, 0x1.6a23a4p-10f,
+    -0x1.dc705p-13f, -0x1.e04222p-11f, -0x1.07ae5ap-11f, -0x1.5c9922p-12f,
     /* node 41 y */
-    0x1.82abe6p-10f, -0x1.6295cp-6f, 0x1.01e552p-4f, -0x1.4c6046p-3f,
-    0x1.383fb8p-13f, -0x1.d1cc66p-13f, 0x1.c34f6cp-8f, 0x1.31debap-10f,
-    0x1.5bf94cp-8f, 0x1.e0563ep-11f,
+    0x1.20e7ap-10f, -0x1.7327dep-6f, 0x1.08490cp-4f, -0x1.454af8p-3f,
+    -0x1.57a646p-12f, 0x1.52a08ep-14f, 0x1.ded8d8p-8f, 0x1.32030ep-11f,
+    0x1.635c46p-9f, 0x1.a3455ep-11f, -0x1.8c1fcap-13f, -0x1.17a358p-11f,
+    0x1.c92fbap-10f, 0x1.09e0cep-16f, -0x1.2bd78ap-9f, -0x1.e3263ep-11f,
+    0x1.12a1f4p-12f, 0x1.a15572p-9f, 0x1.eef4fep-10f, 0x1.fc7e9ep-12f,
     /* node 41 z */
-    -0x1.778dd6p-8f, -0x1.355bdap-4f, 0x1.373ea2p-4f, 0x1.7a8cd6p-1f,
-    -0x1.c751f4p-9f, -0x1.1a32fep-10f, -0x1.558d2ap-9f, -0x1.d70ac8p-9f,
-    -0x1.524886p-11f, -0x1.ab3238p-14f,
+    -0x1.45859p-8f, -0x1.31b32p-4f, 0x1.2ebafap-4f, 0x1.7a85b4p-1f,
+    -0x1.4a72eep-9f, -0x1.41ddf8p-10f, -0x1.92f22ap-9f, -0x1.46b7c2p-9f,
+    0x1.741888p-9f, -0x1.9ab88ap-19f, 0x1.f3899p-13f, -0x1.3766cp-13f,
+    -0x1.af3ec2p-11f, -0x1.138fc4p-11f, 0x1.827844p-9f, 0x1.20df4ep-10f,
+    -0x1.37dc18p-12f, -0x1.051cdep-11f, -0x1.382976p-10f, -0x1.45f79p-11f,
     /* node 42 x */
-    -0x1.22149p-9f, 0x1.9df262p-6f, -0x1.e75f34p-9f, 0x1.5d3974p-3f,
-    -0x1.401d2p-10f, 0x1.3e8ee6p-14f, -0x1.9bb6fcp-9f, -0x1.e01ad4p-10f,
-    -0x1.21cef4p-8f, 0x1.600c2ap-11f,
+    -0x1.16b4cap-9f, 0x1.9fbbbp-6f, -0x1.ae9814p-9f, 0x1.5fa54ep-3f,
+    -0x1.2a564cp-10f, 0x1.571cd2p-12f, -0x1.a06eeep-9f, -0x1.ba47b8p-10f,
+    -0x1.158d86p-8f, 0x1.63985ap-11f, 0x1.6e8abep-15f, 0x1.10c34p-11f,
+    0x1.4b2248p-11f, 0x1.8de62p-13f, 0x1.115c18p-13f, -0x1.308be6p-13f,
+    0x1.5ab18p-14f, 0x1.4e1008p-11f, 0x1.6942b2p-16f, -0x1.b8458p-17f,
     /* node 42 y */
-    0x1.567ce2p-9f, -0x1.4ede7ap-7f, 0x1.88a6eep-6f, -0x1.9444aap-4f,
-    0x1.979a8ap-10f, -0x1.02594p-11f, -0x1.88338ep-9f, 0x1.80f2cep-10f,
-    -0x1.d571f6p-13f, -0x1.e29984p-13f,
+    0x1.498caep-9f, -0x1.3c1a6p-7f, 0x1.822c9ep-6f, -0x1.a0e7a6p-4f,
+    0x1.76c77ap-10f, -0x1.be8ae4p-11f, -0x1.84eb46p-9f, 0x1.5a3938p-10f,
+    -0x1.bbc7fep-14f, -0x1.9edfa6p-13f, 0x1.6213eap-14f, 0x1.195c7ep-13f,
+    -0x1.8b1206p-10f, 0x1.2a0404p-13f, 0x1.1d68dap-11f, 0x1.29781p-11f,
+    -0x1.0681c6p-13f, -0x1.0b90e6p-9f, -0x1.6a74eep-11f, -0x1.95ef24p-14f,
     /* node 42 z */
-    -0x1.0b8bf4p-8f, -0x1.c48a96p-5f, 0x1.4c0ea4p-5f, 0x1.9ed2cap-2f,
-    -0x1.4a3d08p-9f, -0x1.4ef87p-11f, -0x1.96626ep-13f, -0x1.7628ecp-9f,
-    -0x1.355a78p-9f, 0x1.69ffc6p-11f,
+    -0x1.e91ed2p-9f, -0x1.c6d596p-5f, 0x1.4db95cp-5f, 0x1.a1c9c2p-2f,
+    -0x1.125f16p-9f, -0x1.5bbb5p-12f, -0x1.90c926p-13f, -0x1.36954cp-9f,
+    -0x1.7bc7b8p-10f, 0x1.6f3abap-11f, -0x1.968b0cp-17f, 0x1.9988eep-13f,
+    0x1.32459ap-10f, -0x1.00f364p-12f, 0x1.2772bp-10f, -0x1.8c1a7ep-13f,
+    0x1.2b430ap-14f, 0x1.c5600cp-10f, 0x1.b0c38p-12f, -0x1.fd5b66p-16f,
     /* node 43 x */
-    -0x1.311662p-10f, 0x1.189476p-8f, -0x1.ccf77ep-9f, 0x1.7ab956p-4f,
-    -0x1.8ac626p-11f, 0x1.8036b8p-11f, 0x1.b0f326p-11f, -0x1.6ed5d2p-12f,
-    0x1.779172p-9f, -0x1.2b7f62p-13f,
+    -0x1.2b4b88p-10f, 0x1.128eecp-8f, -0x1.f3a0ap-9f, 0x1.7c6556p-4f,
+    -0x1.6f8ae8p-11f, 0x1.6608dcp-11f, 0x1.6f9476p-11f, -0x1.3cd69ep-12f,
+    0x1.9019b4p-9f, -0x1.469f48p-13f, -0x1.bde094p-16f, -0x1.7effe2p-12f,
+    0x1.9895cap-13f, -0x1.02079p-12f, -0x1.14205p-12f, 0x1.f11882p-14f,
+    -0x1.000aacp-14f, 0x1.0afaap-12f, 0x1.3338bcp-13f, -0x1.30e2b6p-16f,
     /* node 43 y */
-    0x1.68e304p-10f, -0x1.6028d4p-7f, 0x1.bcf99cp-8f, -0x1.872756p-5f,
-    0x1.276adp-12f, -0x1.08e3ep-16f, 0x1.0e8a9ep-11f, 0x1.e6ba76p-13f,
-    0x1.621034p-14f, 0x1.c7f21cp-11f,
+    0x1.68cbdep-10f, -0x1.608b7ep-7f, 0x1.c2be9ap-8f, -0x1.8582cp-5f,
+    0x1.2eede6p-12f, 0x1.e566f6p-18f, 0x1.25e44cp-11f, 0x1.dbeb9p-13f,
+    0x1.a27964p-17f, 0x1.c36cep-11f, -0x1.914d9cp-17f, -0x1.47ebeep-15f,
+    -0x1.a47774p-18f, 0x1.a986bep-15f, -0x1.3bd5bp-12f, -0x1.61eb98p-15f,
+    0x1.3c8114p-15f, 0x1.04c408p-12f, 0x1.147476p-13f, 0x1.a33ad4p-17f,
     /* node 43 z */
-    -0x1.dc67a6p-10f, -0x1.b1645p-7f, 0x1.13f3bep-7f, 0x1.3071f6p-3f,
-    -0x1.c4e2f8p-11f, -0x1.266c0ep-12f, -0x1.3bb8eap-11f, -0x1.b743e2p-11f,
-    -0x1.85c886p-17f, -0x1.fcad64p-12f,
+    -0x1.a899bp-10f, -0x1.b36306p-7f, 0x1.075126p-7f, 0x1.30f9ep-3f,
+    -0x1.40eb08p-11f, -0x1.478e7cp-12f, -0x1.70b408p-11f, -0x1.220ab6p-11f,
+    0x1.c277f6p-11f, -0x1.e16bccp-12f, 0x1.19a63ep-17f, -0x1.85e38ep-18f,
+    0x1.58c924p-14f, -0x1.2dc132p-12f, 0x1.060b8ap-10f, 0x1.1a40ccp-13f,
+    -0x1.3855eap-14f, -0x1.0d6e3ap-13f, -0x1.800fp-13f, -0x1.b15494p-14f,
     /* node 44 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 44 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 44 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 45 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 45 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 45 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 46 x */
-    0x1.8cb6ap-11f, 0x1.6c3b6p-7f, -0x1.8e16b6p-11f, -0x1.f36804p-4f,
-    0x1.f5273ep-12f, -0x1.6416c2p-11f, -0x1.51b574p-8f, 0x1.03d332p-10f,
-    0x1.61c1b6p-8f, -0x1.6c1516p-13f,
+    0x1.1bd406p-11f, 0x1.79dfc8p-7f, 0x1.54f194p-15f, -0x1.ed0d0ap-4f,
+    0x1.cc187cp-13f, -0x1.0647f6p-11f, -0x1.1b1d7cp-8f, 0x1.414c26p-11f,
+    0x1.d8c796p-9f, -0x1.283962p-12f, 0x1.d55ccap-14f, -0x1.546ee8p-11f,
+    0x1.01885p-11f, 0x1.236a18p-10f, -0x1.ddea48p-10f, -0x1.366646p-11f,
+    0x1.5e27acp-13f, 0x1.ecce6p-10f, 0x1.6197aep-10f, 0x1.ee3f4p-13f,
     /* node 46 y */
-    0x1.66c4d2p-10f, 0x1.c128b8p-8f, 0x1.198532p-7f, -0x1.00d482p-5f,
-    0x1.e31294p-12f, -0x1.19b31ep-13f, -0x1.80f534p-11f, 0x1.52fad2p-11f,
-    0x1.62010cp-12f, 0x1.4a50d2p-12f,
+    0x1.6dac58p-10f, 0x1.b18dap-8f, 0x1.1a9038p-7f, -0x1.07556ep-5f,
+    0x1.f102aap-12f, -0x1.2b7a84p-12f, -0x1.e8d248p-13f, 0x1.4c2ed6p-11f,
+    0x1.06a82ep-14f, 0x1.43c12ap-12f, 0x1.7f36p-16f, -0x1.5f32e2p-15f,
+    -0x1.636ffep-11f, 0x1.1413cep-13f, 0x1.353b24p-13f, -0x1.8e52eap-12f,
+    -0x1.ffe092p-17f, -0x1.18ae56p-12f, 0x1.84b668p-14f, -0x1.d58d94p-15f,
     /* node 46 z */
-    -0x1.8da7d2p-9f, 0x1.6a9cep-6f, 0x1.210662p-7f, 0x1.abc978p-3f,
-    -0x1.5a1a7ap-10f, 0x1.36a82ep-13f, 0x1.908dc2p-9f, -0x1.211572p-9f,
-    -0x1.103576p-8f, -0x1.bed774p-13f,
+    -0x1.691a16p-9f, 0x1.6ef92ap-6f, 0x1.06160ep-7f, 0x1.ad5adp-3f,
+    -0x1.ef8146p-11f, 0x1.59a246p-12f, 0x1.db6e68p-10f, -0x1.beaacap-10f,
+    -0x1.fc1c16p-10f, -0x1.066568p-13f, -0x1.55c4bap-14f, 0x1.8df9acp-12f,
+    0x1.aac176p-11f, -0x1.dbe164p-11f, 0x1.f5354ep-10f, 0x1.1eb6e8p-10f,
+    -0x1.096a6ap-13f, -0x1.1485e6p-11f, -0x1.fcf9f8p-11f, -0x1.0d000ap-13f,
     /* node 47 x */
-    0x1.a0eccep-9f, 0x1.38e698p-5f, 0x1.061e26p-7f, -0x1.d07ddep-3f,
-    0x1.133264p-9f, 0x1.362b04p-9f, 0x1.0e11e4p-8f, 0x1.ab8c88p-11f,
-    -0x1.93677ep-8f, -0x1.9f4dbap-16f,
+    0x1.b09af4p-9f, 0x1.369298p-5f, 0x1.e54506p-8f, -0x1.d5d83cp-3f,
+    0x1.223c5cp-9f, 0x1.13b10ep-9f, 0x1.d5ec94p-9f, 0x1.0b37d8p-10f,
+    -0x1.4285d8p-8f, 0x1.412058p-14f, -0x1.7d39bap-14f, 0x1.8fecaep-11f,
+    -0x1.589e9ap-10f, -0x1.bbbfeep-11f, 0x1.a5665cp-10f, 0x1.30efc4p-11f,
+    -0x1.261d1cp-13f, -0x1.148a9cp-9f, -0x1.668646p-10f, -0x1.db600ep-13f,
     /* node 47 y */
-    0x1.3edd88p-12f, 0x1.a2463ap-7f, 0x1.451e7p-5f, -0x1.dc309p-5f,
-    0x1.79fa7p-14f, 0x1.5e0384p-10f, 0x1.15aae2p-8f, -0x1.8ecbb8p-10f,
-    -0x1.5b508cp-8f, 0x1.bc8258p-10f,
+    0x1.752a48p-15f, 0x1.cd4cccp-7f, 0x1.47ade4p-5f, -0x1.c7a38ap-5f,
+    -0x1.af0a14p-15f, 0x1.b7e8fap-10f, 0x1.40f5bap-9f, -0x1.aa0266p-10f,
+    -0x1.1f113ap-8f, 0x1.b57654p-10f, -0x1.2d6384p-15f, 0x1.b37fa6p-13f,
+    0x1.647e1cp-9f, -0x1.4a9dccp-13f, -0x1.292d5cp-9f, 0x1.ad2fdep-10f,
+    0x1.625b7ap-15f, 0x1.3d1692p-12f, 0x1.aead14p-19f, 0x1.934b4ap-12f,
     /* node 47 z */
-    -0x1.a8c384p-9f, 0x1.47e24ep-4f, 0x1.bff3ecp-6f, 0x1.198aecp-1f,
-    -0x1.657b14p-9f, -0x1.005a34p-9f, -0x1.6c4746p-9f, -0x1.989e84p-10f,
-    0x1.1eb738p-8f, 0x1.4dff72p-14f,
+    -0x1.4ae4p-9f, 0x1.4780d6p-4f, 0x1.bf7c22p-6f, 0x1.1b24dep-1f,
+    -0x1.dc82b4p-10f, -0x1.c6c3d6p-10f, -0x1.039ep-9f, -0x1.76d61p-11f,
+    0x1.7fe4fcp-8f, 0x1.35375cp-14f, -0x1.08bdfep-17f, -0x1.403de4p-11f,
+    -0x1.3ced58p-13f, 0x1.8beab2p-16f, 0x1.edbdd6p-10f, -0x1.530ddap-13f,
+    0x1.a5bcc6p-13f, 0x1.7c922p-9f, 0x1.5e801ap-10f, -0x1.dd13ap-13f,
     /* node 48 x */
-    0x1.713504p-8f, 0x1.e2392ep-4f, 0x1.20f8a2p-7f, -0x1.d39016p-3f,
-    0x1.0ed0a2p-9f, 0x1.09ca6cp-8f, -0x1.33b096p-7f, 0x1.3b1254p-8f,
-    0x1.6280dap-6f, 0x1.bb6d46p-12f,
+    0x1.47d90ap-8f, 0x1.d8f4fcp-4f, 0x1.63d06p-7f, -0x1.d6d838p-3f,
+    0x1.469ce4p-10f, 0x1.c8602ap-9f, -0x1.748466p-8f, 0x1.d67e58p-9f,
+    0x1.082938p-6f, 0x1.452144p-13f, -0x1.edf02p-13f, -0x1.28f4fep-10f,
+    -0x1.5f1adp-9f, 0x1.550b5ep-10f, -0x1.faeebp-9f, -0x1.8c7d76p-9f,
+    0x1.dcd06ep-14f, 0x1.0b2bbep-9f, 0x1.6f3ee8p-9f, 0x1.467698p-11f,
     /* node 48 y */
-    0x1.194d36p-7f, 0x1.5c493ep-7f, 0x1.66971ep-4f, -0x1.f91622p-4f,
-    0x1.bc6bb8p-9f, -0x1.47a262p-11f, -0x1.27d258p-8f, 0x1.79ec3ep-8f,
-    0x1.a82e2cp-8f, -0x1.64c5fp-10f,
+    0x1.389506p-7f, 0x1.1bb2c6p-7f, 0x1.617a8cp-4f, -0x1.0a4a48p-3f,
+    0x1.238abp-8f, -0x1.0bb75ap-9f, -0x1.5743f8p-11f, 0x1.b30fcp-8f,
+    0x1.d8c556p-8f, -0x1.56b83p-10f, 0x1.657ddep-13f, -0x1.23db4p-11f,
+    -0x1.c5334ep-8f, 0x1.171c3p-12f, 0x1.fdedeap-9f, -0x1.408706p-9f,
+    -0x1.50bd84p-13f, -0x1.31aafcp-9f, 0x1.c424f8p-17f, -0x1.dbaceap-11f,
     /* node 48 z */
-    -0x1.d67626p-7f, 0x1.ef94e6p-4f, 0x1.119b86p-4f, 0x1.05d03p+0f,
-    -0x1.ccbcc6p-8f, 0x1.6dad98p-11f, 0x1.863cbep-8f, -0x1.61b582p-7f,
-    -0x1.64ec36p-6f, 0x1.4d5666p-10f,
+    -0x1.bf020ap-7f, 0x1.f2024p-4f, 0x1.0693b6p-4f, 0x1.06769cp+0f,
+    -0x1.8c4926p-8f, 0x1.5407dcp-10f, 0x1.e1145cp-10f, -0x1.2fc74ep-7f,
+    -0x1.ea9a72p-7f, 0x1.93891ep-10f, -0x1.33f98ep-14f, 0x1.cc0a28p-10f,
+    0x1.0ddf1cp-8f, -0x1.48f538p-9f, 0x1.1e3e9cp-8f, 0x1.3a32e4p-9f,
+    -0x1.1ae046p-11f, -0x1.8e03c8p-9f, -0x1.fa7bf2p-9f, -0x1.b5bc2ep-12f,
     /* node 49 x */
-    0x1.7f96e6p-10f, 0x1.b2a1c2p-3f, 0x1.07d6e8p-4f, -0x1.1eadfcp-3f,
-    -0x1.88cd26p-8f, 0x1.07b58p-7f, -0x1.a543f2p-7f, 0x1.3fa53cp-12f,
-    0x1.79fd9cp-7f, 0x1.0c5e74p-7f,
+    0x1.6b2d28p-11f, 0x1.b5af4ap-3f, 0x1.11f6acp-4f, -0x1.0dc5ecp-3f,
+    -0x1.b1861ap-8f, 0x1.0ccc4cp-7f, -0x1.5df604p-7f, -0x1.69393p-11f,
+    0x1.d0b7e6p-8f, 0x1.f9606ep-8f, 0x1.e1490ep-12f, -0x1.e6d9a8p-11f,
+    0x1.c35668p-9f, 0x1.bab278p-9f, -0x1.650cep-7f, -0x1.5d5d18p-10f,
+    0x1.318d2ep-12f, 0x1.cd0df6p-8f, 0x1.ab3bcep-9f, 0x1.c953dep-10f,
     /* node 49 y */
-    0x1.8a3772p-10f, 0x1.097b2cp-4f, 0x1.afb5dcp-3f, -0x1.1ed73p-3f,
-    0x1.454e68p-14f, 0x1.f502aap-8f, 0x1.321cecp-7f, -0x1.841a42p-8f,
-    -0x1.62d2e8p-7f, 0x1.ffbbccp-8f,
+    0x1.0260f4p-11f, 0x1.109072p-4f, 0x1.b478bap-3f, -0x1.10cf9ep-3f,
+    -0x1.ab719cp-11f, 0x1.139f3ep-7f, 0x1.735e02p-8f, -0x1.b8e21ap-8f,
+    -0x1.70bd4ap-7f, 0x1.fb0c4ep-8f, 0x1.61ab0ap-14f, 0x1.a8678p-10f,
+    0x1.07aee8p-7f, 0x1.1e90bap-12f, -0x1.fc6016p-8f, 0x1.82ac94p-10f,
+    0x1.f59d8cp-12f, 0x1.64a8eap-11f, -0x1.f19338p-13f, 0x1.72c54ep-10f,
     /* node 49 z */
-    0x1.d9ce12p-11f, 0x1.56995ap-4f, 0x1.666dbcp-4f, 0x1.6edcc4p+0f,
-    -0x1.f41422p-9f, -0x1.66239p-7f, 0x1.d75c4cp-7f, -0x1.f52538p-9f,
-    0x1.4eaefep-9f, 0x1.f5b4dcp-9f,
+    0x1.e080fcp-9f, 0x1.6fdee6p-4f, 0x1.5c7502p-4f, 0x1.71e44p+0f,
+    0x1.02fefep-14f, -0x1.4a76a2p-7f, 0x1.86b064p-7f, 0x1.37bd84p-14f,
+    0x1.d5aceep-7f, 0x1.065f3ap-8f, 0x1.a4368cp-11f, -0x1.343f02p-9f,
+    0x1.d293c2p-9f, 0x1.c5c26p-15f, 0x1.9901f2p-8f, 0x1.6cc756p-8f,
+    0x1.3fee66p-11f, 0x1.98f152p-8f, 0x1.7320dap-9f, -0x1.68028p-10f,
     /* node 50 x */
-    0x1.a36b4p-15f, 0x1.c7c2aep-3f, -0x1.8d0596p-14f, 0x1.35231cp-11f,
-    0x1.cf6506p-13f, -0x1.04e968p-6f, 0x1.a37532p-6f, 0x1.13ced8p-13f,
-    0x1.3c695ap-14f, -0x1.db511ap-13f,
+    -0x1.419a54p-14f, 0x1.c8779ep-3f, -0x1.98efc8p-11f, 0x1.a2b58p-12f,
+    -0x1.5ff4a2p-15f, -0x1.0c41f6p-6f, 0x1.79b05cp-6f, -0x1.c085b8p-14f,
+    0x1.66bd76p-11f, -0x1.7244c6p-15f, -0x1.23b5acp-13f, -0x1.77a6b8p-11f,
+    0x1.4ab728p-11f, -0x1.8ba91ep-9f, 0x1.4f3edcp-8f, 0x1.cbf80ep-9f,
+    -0x1.12f674p-13f, -0x1.003d16p-13f, -0x1.6fd534p-13f, 0x1.31fbf6p-15f,
     /* node 50 y */
-    0x1.5d2bb2p-5f, 0x1.7b3eaep-14f, 0x1.960f36p-2f, -0x1.87c98cp-3f,
-    0x1.3dff3cp-7f, 0x1.02fd2cp-9f, -0x1.0167aap-8f, 0x1.2bfffap-6f,
-    0x1.1bdf3ap-6f, 0x1.310282p-7f,
+    0x1.7ad954p-5f, -0x1.5fae08p-10f, 0x1.8d1e3p-2f, -0x1.9ffe06p-3f,
+    0x1.ded912p-7f, -0x1.7a8c3ep-10f, 0x1.2df6a2p-10f, 0x1.745258p-6f,
+    0x1.ea8a0cp-6f, 0x1.37ca1cp-7f, 0x1.149eaap-14f, -0x1.31b84ap-9f,
+    -0x1.0dd28ap-6f, -0x1.908e54p-10f, 0x1.319e52p-7f, 0x1.df6c24p-12f,
+    -0x1.c9ff28p-11f, -0x1.2cb66p-8f, -0x1.d1322p-9f, -0x1.bfb1e6p-10f,
     /* node 50 z */
-    -0x1.836fdp-7f, -0x1.f18c82p-10f, 0x1.c0034cp-4f, 0x1.9f2c02p+0f,
-    0x1.c36eecp-8f, -0x1.4fb56p-10f, 0x1.1e9cc6p-8f, -0x1.c9e01ap-7f,
-    -0x1.434018p-4f, -0x1.3679c8p-7f,
+    -0x1.411638p-7f, -0x1.8bc7bp-9f, 0x1.a2a99cp-4f, 0x1.995576p+0f,
+    0x1.28720cp-7f, -0x1.411acp-9f, -0x1.00a83p-8f, -0x1.52dc38p-7f,
+    -0x1.f6b0dcp-5f, -0x1.0b7e9p-7f, -0x1.a04f2ep-13f, 0x1.e1280cp-8f,
+    -0x1.29fb4cp-8f, -0x1.ee553cp-8f, 0x1.584458p-6f, 0x1.0f9268p-8f,
+    -0x1.50b53cp-10f, -0x1.b724f8p-6f, -0x1.cd3868p-7f, -0x1.0cc35ep-8f,
     /* node 51 x */
-    -0x1.60a7fap-10f, 0x1.b03c9cp-3f, -0x1.06d4a8p-4f, 0x1.1dd542p-3f,
-    0x1.7d57b4p-8f, 0x1.f732e2p-8f, -0x1.774fap-7f, -0x1.d09028p-12f,
-    -0x1.95946ep-7f, -0x1.0487d4p-7f,
+    -0x1.340bcap-11f, 0x1.b4669cp-3f, -0x1.0fd422p-4f, 0x1.0d0d78p-3f,
+    0x1.b60428p-8f, 0x1.d33d28p-8f, -0x1.a266cap-7f, 0x1.94bbc6p-11f,
+    -0x1.e26612p-8f, -0x1.f521fep-8f, 0x1.eb8266p-12f, 0x1.7b30a4p-10f,
+    -0x1.f50766p-9f, -0x1.97822cp-13f, 0x1.9bae3cp-9f, 0x1.a515f6p-10f,
+    -0x1.8969ep-13f, -0x1.d03dccp-8f, -0x1.a33da2p-9f, -0x1.d4c1fcp-10f,
     /* node 51 y */
-    0x1.5d506p-10f, -0x1.085bc4p-4f, 0x1.af2bacp-3f, -0x1.1e4488p-3f,
-    0x1.e6a87ap-13f, -0x1.113384p-7f, -0x1.6cd008p-8f, -0x1.77ab6ep-8f,
-    -0x1.27d4a4p-7f, 0x1.f8fb8ep-8f,
+    0x1.cde666p-12f, -0x1.0ac032p-4f, 0x1.b539c6p-3f, -0x1.10e56ep-3f,
+    -0x1.ba9efp-11f, -0x1.bee5e6p-8f, -0x1.eb193p-8f, -0x1.b84f7p-8f,
+    -0x1.769036p-7f, 0x1.f92672p-8f, -0x1.f58058p-13f, 0x1.e1ed88p-10f,
+    0x1.04f528p-7f, 0x1.34fe5ap-11f, -0x1.786066p-11f, -0x1.5719fep-10f,
+    0x1.059a6ap-11f, 0x1.72a334p-11f, -0x1.afa3p-15f, 0x1.712906p-10f,
     /* node 51 z */
-    0x1.a0291ep-11f, -0x1.5cb624p-4f, 0x1.6600dap-4f, 0x1.6ea574p+0f,
-    -0x1.07bd14p-8f, 0x1.17b83ep-7f, -0x1.d8eb2p-7f, -0x1.fff73ap-9f,
-    0x1.9ba554p-9f, 0x1.09e792p-8f,
+    0x1.e29914p-9f, -0x1.603c6p-4f, 0x1.607254p-4f, 0x1.71c964p+0f,
+    0x1.9d5244p-15f, 0x1.61697cp-7f, -0x1.b11fcap-7f, 0x1.8abeeep-13f,
+    0x1.b2f224p-7f, 0x1.069ef6p-8f, -0x1.45eec6p-11f, -0x1.92bb64p-10f,
+    0x1.6771a2p-9f, 0x1.3232p-10f, 0x1.84381cp-11f, -0x1.65c1eap-9f,
+    0x1.85e886p-11f, 0x1.ab02b2p-8f, 0x1.9cca28p-9f, -0x1.6fc164p-10f,
     /* node 52 x */
-    -0x1.770ab4p-8f, 0x1.ddb122p-4f, -0x1.23ba46p-7f, 0x1.d2ea4ep-3f,
-    -0x1.16bac2p-9f, 0x1.a3a1e8p-10f, -0x1.76fbbcp-8f, -0x1.3b3dbep-8f,
-    -0x1.54ea92p-6f, -0x1.6ede6p-12f,
+    -0x1.48605ep-8f, 0x1.d79d56p-4f, -0x1.4f6152p-7f, 0x1.d63de6p-3f,
+    -0x1.4a87e2p-10f, 0x1.57b52cp-9f, -0x1.e2ad42p-8f, -0x1.cfba4ep-9f,
+    -0x1.102b9ap-6f, -0x1.553224p-13f, -0x1.5736fap-12f, 0x1.ac1f2ap-10f,
+    0x1.26e58p-9f, -0x1.fb1d56p-11f, 0x1.2f9c7ep-9f, -0x1.52732cp-10f,
+    -0x1.92a2aap-15f, -0x1.0233eep-9f, -0x1.5465f8p-9f, -0x1.540996p-11f,
     /* node 52 y */
-    0x1.1eb71ap-7f, -0x1.59c5b8p-7f, 0x1.67631cp-4f, -0x1.f90c7ep-4f,
-    0x1.b51f3ap-9f, 0x1.425296p-9f, 0x1.140526p-10f, 0x1.73af52p-8f,
-    0x1.020992p-8f, -0x1.695fcp-10f,
+    0x1.384034p-7f, -0x1.394da4p-7f, 0x1.5f8d46p-4f, -0x1.09ebap-3f,
+    0x1.23f50cp-8f, 0x1.2b8eecp-10f, 0x1.cc407cp-10f, 0x1.b06e2cp-8f,
+    0x1.f00b1cp-8f, -0x1.57dd54p-10f, -0x1.f66f7ap-15f, -0x1.041dbep-10f,
+    -0x1.af5c6ep-8f, -0x1.d2ab46p-11f, 0x1.ab82d8p-10f, 0x1.3fe3dcp-9f,
+    -0x1.b3bed4p-13f, -0x1.41c05ep-9f, -0x1.40a36ap-14f, -0x1.d456fap-11f,
     /* node 52 z */
-    -0x1.d9e7dcp-7f, -0x1.f55ab4p-4f, 0x1.10ee0cp-4f, 0x1.05d2c6p+0f,
-    -0x1.c82d6p-8f, -0x1.0917a8p-8f, -0x1.6ddc74p-10f, -0x1.5ea1bp-7f,
-    -0x1.4c3e74p-6f, 0x1.4a0ebp-10f,
+    -0x1.bf11fcp-7f, -0x1.fc288ep-4f, 0x1.08025cp-4f, 0x1.066d44p+0f,
+    -0x1.8ca588p-8f, -0x1.ac9ac2p-9f, -0x1.dfa94ap-9f, -0x1.2eedep-7f,
+    -0x1.f3e7cep-7f, 0x1.92833ap-10f, -0x1.348f18p-13f, 0x1.0fed24p-9f,
+    0x1.f7ebcep-9f, -0x1.0ee886p-9f, 0x1.bee158p-8f, -0x1.579f3p-11f,
+    -0x1.077b88p-11f, -0x1.80248cp-9f, -0x1.f08fd4p-9f, -0x1.bef21p-12f,
     /* node 53 x */
-    -0x1.9af232p-9f, 0x1.3969dp-5f, -0x1.06b7a2p-7f, 0x1.d0ade2p-3f,
-    -0x1.0cbe4ap-9f, 0x1.36e23cp-9f, 0x1.03fb84p-8f, -0x1.97469ap-11f,
-    0x1.849b7p-8f, -0x1.6fb866p-21f,
+    -0x1.b2cfa2p-9f, 0x1.3c22eap-5f, -0x1.ed9c44p-8f, 0x1.d5fec6p-3f,
+    -0x1.23b32ep-9f, 0x1.62db1ep-9f, 0x1.fd55dp-9f, -0x1.0f96bap-10f,
+    0x1.46e5b6p-8f, -0x1.704896p-14f, -0x1.10e0fp-14f, -0x1.cf204cp-11f,
+    0x1.6c7c18p-10f, 0x1.4922acp-12f, -0x1.7f3ddep-10f, 0x1.24e982p-13f,
+    0x1.f5e26cp-14f, 0x1.16579ap-9f, 0x1.6179cp-10f, 0x1.e926dp-13f,
     /* node 53 y */
-    0x1.ca1b32p-13f, -0x1.a02f0ep-7f, 0x1.44127ep-5f, -0x1.dc502p-5f,
-    0x1.13704p-13f, -0x1.91863ap-10f, -0x1.ab51d6p-9f, -0x1.7d49ecp-10f,
-    -0x1.fcdc94p-9f, 0x1.c23a12p-10f,
+    0x1.fe1488p-15f, -0x1.b0419ap-7f, 0x1.4a2208p-5f, -0x1.c896d8p-5f,
+    -0x1.982b24p-15f, -0x1.17b7cep-10f, -0x1.9c8ec6p-9f, -0x1.a19eep-10f,
+    -0x1.2f7986p-8f, 0x1.b7c3f2p-10f, 0x1.3c1438p-17f, 0x1.0603bcp-11f,
+    0x1.457358p-9f, 0x1.568098p-11f, -0x1.aa1d9ep-11f, -0x1.64a126p-10f,
+    0x1.4d6fap-14f, 0x1.a07d2cp-12f, 0x1.9a30b8p-15f, 0x1.881b38p-12f,
     /* node 53 z */
-    -0x1.a3a5f6p-9f, -0x1.489948p-4f, 0x1.c047f2p-6f, 0x1.198b14p-1f,
-    -0x1.64f8eep-9f, 0x1.47805ep-10f, 0x1.e21b52p-10f, -0x1.9ab158p-10f,
-    0x1.15b898p-8f, 0x1.7daac2p-14f,
+    -0x1.49c168p-9f, -0x1.476b9ep-4f, 0x1.bc9302p-6f, 0x1.1b2d0ep-1f,
+    -0x1.dc45c8p-10f, 0x1.709eecp-10f, 0x1.35026p-9f, -0x1.7c847ap-11f,
+    0x1.84bf56p-8f, 0x1.44a98cp-14f, 0x1.480ca8p-15f, -0x1.7e4f66p-11f,
+    -0x1.a02fdp-14f, 0x1.264486p-19f, 0x1.333318p-10f, 0x1.13982p-12f,
+    0x1.7d7dc2p-13f, 0x1.804302p-9f, 0x1.4a1268p-10f, -0x1.ce386ap-13f,
     /* node 54 x */
-    -0x1.a8a21cp-11f, 0x1.641e4ap-7f, 0x1.8f00bp-11f, 0x1.f33838p-4f,
-    -0x1.0a222cp-11f, -0x1.17c3d4p-10f, -0x1.2be47ep-8f, -0x1.072d8cp-10f,
-    -0x1.4f6332p-8f, 0x1.8e637ap-13f,
+    -0x1.14ea9p-11f, 0x1.5cc1dp-7f, 0x1.65fda4p-13f, 0x1.ec99d2p-4f,
+    -0x1.b87cb4p-13f, -0x1.40f07cp-10f, -0x1.341148p-8f, -0x1.36cec4p-11f,
+    -0x1.e6f82ep-9f, 0x1.31bd58p-12f, 0x1.24f00ep-14f, 0x1.b3c1dap-11f,
+    -0x1.40356cp-11f, -0x1.84f636p-12f, 0x1.3c7b2p-9f, -0x1.e4efc8p-15f,
+    -0x1.23970cp-13f, -0x1.ef7f32p-10f, -0x1.54639cp-10f, -0x1.018526p-12f,
     /* node 54 y */
-    0x1.6d66cp-10f, -0x1.bd24d6p-8f, 0x1.1a6cecp-7f, -0x1.00c86p-5f,
-    0x1.dda21ep-12f, 0x1.bb41p-12f, 0x1.41f944p-12f, 0x1.4d66bap-11f,
-    -0x1.3716aap-16f, 0x1.4631acp-12f,
+    0x1.6ce7e4p-10f, -0x1.b19cdep-8f, 0x1.18dba6p-7f, -0x1.073746p-5f,
+    0x1.f0d44cp-12f, 0x1.198ea6p-12f, 0x1.6bbe1p-12f, 0x1.4931dcp-11f,
+    0x1.d3c7ccp-14f, 0x1.41f668p-12f, -0x1.f9f9d6p-18f, -0x1.8996bcp-14f,
+    -0x1.4e5ad4p-11f, -0x1.ffb774p-15f, -0x1.cdbecp-13f, 0x1.5e8cp-12f,
+    -0x1.6a1dd8p-16f, -0x1.30310ap-12f, 0x1.682f62p-14f, -0x1.d14d2p-15f,
     /* node 54 z */
-    -0x1.9381e4p-9f, -0x1.7044b4p-6f, 0x1.1f651ep-7f, 0x1.abb4a4p-3f,
-    -0x1.58dc4ep-10f, -0x1.178ea4p-10f, -0x1.10b78ep-9f, -0x1.1f1784p-9f,
-    -0x1.bbd7dp-9f, -0x1.92cbf4p-13f,
+    -0x1.67c1d2p-9f, -0x1.7a1aa4p-6f, 0x1.0a08e4p-7f, 0x1.ad3f46p-3f,
+    -0x1.ed97d8p-11f, -0x1.f4b428p-11f, -0x1.2c19e4p-9f, -0x1.bb0028p-10f,
+    -0x1.0c5f2p-9f, -0x1.f40ebcp-14f, 0x1.aa9f2ap-16f, 0x1.07f578p-11f,
+    0x1.749788p-11f, -0x1.c819d8p-12f, 0x1.0e4174p-9f, -0x1.0a892ap-11f,
+    -0x1.cbc898p-14f, -0x1.fd1d2ep-12f, -0x1.f632c4p-11f, -0x1.10dd5ap-13f,
     /* node 55 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 55 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 55 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 56 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 56 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 56 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 57 x */
-    0x1.eceebcp-9f, 0x1.64de54p-8f, -0x1.2fdf6ep-11f, -0x1.222d0ep-3f,
-    0x1.c0054ap-9f, 0x1.0cf6acp-10f, -0x1.54ca18p-8f, 0x1.364516p-8f,
-    0x1.102842p-8f, -0x1.845512p-9f,
+    0x1.b0b388p-9f, 0x1.aef916p-9f, 0x1.5da246p-11f, -0x1.2e55f4p-3f,
+    0x1.540694p-9f, 0x1.3bc3f8p-13f, -0x1.200212p-9f, 0x1.ef953ap-9f,
+    -0x1.740cbp-12f, -0x1.8cdb94p-9f, 0x1.d07ffap-15f, 0x1.bbb7ccp-14f,
+    -0x1.1744ccp-8f, 0x1.90861ep-11f, -0x1.52496p-10f, -0x1.81c76ep-9f,
+    0x1.8b733p-16f, -0x1.8e75aep-10f, 0x1.53cddcp-11f, -0x1.e949e2p-13f,
     /* node 57 y */
-    -0x1.4d4514p-20f, -0x1.728782p-19f, 0x1.63c0f2p-7f, -0x1.0b8b5p-15f,
-    0x1.5575acp-17f, 0x1.62678cp-12f, 0x1.1689cap-14f, -0x1.2b913ap-16f,
-    -0x1.be8022p-10f, -0x1.dce1cep-18f,
+    -0x1.3e69acp-17f, -0x1.660728p-15f, 0x1.63d652p-7f, -0x1.4ee716p-13f,
+    -0x1.3971fp-18f, 0x1.5f138cp-12f, 0x1.848e52p-19f, -0x1.b69eap-18f,
+    -0x1.ac038ap-10f, -0x1.0bd7a8p-18f, -0x1.ab7e64p-20f, 0x1.9dabfp-13f,
+    -0x1.8a32e4p-15f, -0x1.aaaecp-15f, -0x1.9c33d6p-13f, 0x1.ea5d08p-19f,
+    -0x1.5842b2p-16f, -0x1.078794p-13f, -0x1.927812p-13f, -0x1.d27a44p-17f,
     /* node 57 z */
-    -0x1.3352dep-8f, 0x1.cc75c8p-6f, 0x1.e30e3p-12f, 0x1.e42cbap-3f,
-    -0x1.4e2a64p-9f, -0x1.a0bb34p-11f, 0x1.4c1b82p-8f, -0x1.01cdfep-8f,
-    -0x1.ad2838p-9f, 0x1.4887c4p-11f,
+    -0x1.16d73ep-8f, 0x1.dc4dc8p-6f, -0x1.18e166p-11f, 0x1.ebe434p-3f,
+    -0x1.ec63e2p-10f, -0x1.0dc38p-12f, 0x1.80325ap-9f, -0x1.9b15e8p-9f,
+    0x1.54b4d8p-13f, 0x1.7874ap-11f, -0x1.58b8cap-14f, 0x1.4d9602p-15f,
+    0x1.71de16p-9f, -0x1.098836p-10f, 0x1.15d40cp-9f, 0x1.e94f3p-10f,
+    -0x1.272f88p-15f, 0x1.54c2bap-11f, -0x1.5106fap-11f, 0x1.bda8acp-16f,
     /* node 58 x */
-    -0x1.8c9892p-14f, 0x1.e9f368p-5f, 0x1.4e0e0cp-10f, -0x1.f1ee42p-3f,
-    -0x1.ac73d2p-10f, -0x1.202624p-10f, 0x1.6646f2p-9f, -0x1.2492ep-8f,
-    -0x1.f6e4bep-8f, 0x1.aa272ap-9f,
+    0x1.2dde04p-10f, 0x1.0281f6p-4f, -0x1.c083dcp-11f, -0x1.e4907ep-3f,
+    0x1.12763ep-12f, -0x1.dd4c84p-12f, -0x1.cf28d6p-12f, -0x1.3cc35ap-9f,
+    0x1.2a142ap-12f, 0x1.bf6986p-9f, 0x1.cc88ep-13f, 0x1.b642ccp-13f,
+    0x1.01a1a6p-8f, -0x1.bfc55ap-11f, 0x1.1930acp-8f, 0x1.096978p-8f,
+    -0x1.ddcb8ap-16f, 0x1.130acap-10f, -0x1.331c4ep-10f, -0x1.f7f9bep-16f,
     /* node 58 y */
-    0x1.067e06p-15f, 0x1.463d32p-16f, 0x1.31b6dp-5f, 0x1.e830f2p-13f,
-    0x1.ca8446p-17f, -0x1.76c64cp-9f, -0x1.18c456p-12f, 0x1.2006cp-13f,
-    0x1.a58ba8p-8f, 0x1.2663e8p-16f,
+    0x1.438124p-15f, 0x1.c5648cp-13f, 0x1.32a192p-5f, 0x1.5afe64p-11f,
+    0x1.20771ep-16f, -0x1.6e6f6cp-9f, -0x1.4620d8p-18f, 0x1.b1e77p-16f,
+    0x1.82f224p-8f, 0x1.00b0e2p-16f, 0x1.fbe18cp-18f, -0x1.a376f4p-11f,
+    0x1.38ec24p-13f, 0x1.1b5236p-12f, 0x1.27f236p-10f, -0x1.09e23cp-15f,
+    0x1.1f801ap-13f, 0x1.25fa48p-11f, 0x1.b25e92p-11f, 0x1.d39424p-15f,
     /* node 58 z */
-    -0x1.384228p-10f, 0x1.66f84ap-4f, 0x1.bf87ccp-12f, 0x1.34b9c6p-1f,
-    -0x1.17645ep-10f, -0x1.d7ed78p-19f, -0x1.492c44p-7f, 0x1.dccee8p-10f,
-    0x1.b044e4p-11f, -0x1.126392p-9f,
+    -0x1.463326p-11f, 0x1.5f5192p-4f, 0x1.c0931ap-11f, 0x1.32e18ap-1f,
+    -0x1.47e08cp-11f, -0x1.28982ap-11f, -0x1.abae32p-8f, 0x1.20fde2p-9f,
+    -0x1.d1a74p-12f, -0x1.12ebc8p-9f, 0x1.a7edf2p-14f, 0x1.8c2c5cp-12f,
+    -0x1.538526p-8f, 0x1.601552p-11f, 0x1.1d96cep-9f, -0x1.5992a8p-9f,
+    0x1.a48f0ap-15f, 0x1.1cdd2cp-11f, 0x1.2c72dp-11f, -0x1.6e9cbcp-11f,
     /* node 59 x */
-    0x1.79f39ep-6f, 0x1.1c0b86p-3f, -0x1.946172p-10f, -0x1.100568p-2f,
-    0x1.bbdfdep-7f, 0x1.a7977cp-9f, 0x1.868b94p-7f, 0x1.5d3512p-7f,
-    0x1.895288p-8f, 0x1.fc974ap-10f,
+    0x1.5df578p-6f, 0x1.22f27ep-3f, 0x1.6937a8p-13f, -0x1.18df08p-2f,
+    0x1.7a6366p-7f, 0x1.ac981ap-10f, 0x1.a04ef6p-7f, 0x1.1034b4p-7f,
+    0x1.4969d8p-12f, 0x1.cc75c8p-10f, 0x1.9ad13cp-11f, -0x1.4b9decp-11f,
+    -0x1.64d8eap-9f, 0x1.62e6ap-9f, -0x1.0d15f4p-7f, 0x1.4b886ap-10f,
+    0x1.4deb3ap-15f, -0x1.3493f2p-8f, 0x1.c2873p-11f, 0x1.0f5572p-11f,
     /* node 59 y */
-    -0x1.79229p-14f, -0x1.698abep-15f, 0x1.ef2876p-4f, -0x1.0d18ccp-11f,
-    -0x1.7e01bp-16f, 0x1.2ced78p-8f, 0x1.613e6p-11f, -0x1.40b5e8p-12f,
-    -0x1.7e8074p-6f, -0x1.382ed2p-14f,
+    -0x1.ae144p-14f, -0x1.e23ef6p-12f, 0x1.ef4b5ep-4f, -0x1.c93646p-10f,
+    -0x1.8049fp-15f, 0x1.25427ap-8f, -0x1.b6fcfcp-16f, -0x1.27e2b6p-14f,
+    -0x1.6bc0ep-6f, -0x1.4458ecp-15f, -0x1.bedc76p-17f, 0x1.0d7428p-9f,
+    -0x1.caa94ap-12f, -0x1.3f7e3cp-11f, -0x1.24ca32p-9f, 0x1.abfb2p-14f,
+    -0x1.865d08p-13f, -0x1.799abap-10f, -0x1.f79d4ap-10f, -0x1.3aa74ep-13f,
     /* node 59 z */
-    -0x1.6db9bap-6f, 0x1.2ccd0ep-3f, -0x1.6f33bcp-14f, 0x1.2b612cp+0f,
-    -0x1.5749aep-7f, -0x1.867df8p-9f, 0x1.642614p-6f, -0x1.163ecp-6f,
-    -0x1.a65698p-9f, 0x1.0ab0b4p-8f,
+    -0x1.73b1d6p-6f, 0x1.2d6e58p-3f, -0x1.bec2fp-10f, 0x1.2f28fep+0f,
+    -0x1.5fd2dep-7f, -0x1.6e3972p-15f, 0x1.c761bcp-7f, -0x1.11a38ep-6f,
+    0x1.6b8b6p-11f, 0x1.11eb7ep-8f, -0x1.cc28fap-11f, -0x1.e5f8d6p-12f,
+    0x1.bc11f4p-7f, -0x1.c496d4p-9f, 0x1.1cb30ap-11f, 0x1.a30e9cp-9f,
+    -0x1.24ab2ap-13f, 0x1.087cbep-8f, -0x1.7ede16p-10f, 0x1.a420e8p-11f,
     /* node 60 x */
-    0x1.5addc8p-5f, 0x1.926f8ap-2f, 0x1.4aa836p-9f, -0x1.88ff54p-3f,
-    0x1.1dd1ap-6f, 0x1.206d78p-9f, 0x1.b8b75p-6f, 0x1.39c43ep-7f,
-    -0x1.12074ap-6f, 0x1.2544a2p-7f,
+    0x1.78ce9p-5f, 0x1.8d6a02p-2f, -0x1.864f8cp-9f, -0x1.a43e44p-3f,
+    0x1.717936p-6f, -0x1.d8691p-11f, 0x1.c5427ep-6f, 0x1.dad2acp-7f,
+    -0x1.20aebap-13f, 0x1.3a7a82p-7f, -0x1.a7e4fap-11f, 0x1.69532ap-11f,
+    -0x1.3fdce8p-7f, -0x1.60dd8ep-8f, 0x1.c1cb1p-7f, -0x1.a1c074p-13f,
+    -0x1.55be5ep-13f, -0x1.c3afd6p-7f, -0x1.f88688p-9f, -0x1.1ef2bcp-9f,
     /* node 60 y */
-    0x1.729814p-12f, 0x1.78ac98p-15f, 0x1.c787cep-3f, 0x1.25fbf6p-10f,
-    0x1.1c9b54p-12f, -0x1.f70768p-7f, -0x1.537772p-10f, 0x1.7beed4p-11f,
-    0x1.a6468ap-6f, 0x1.d0459ep-13f,
+    0x1.5c932ap-13f, 0x1.b5d5p-11f, 0x1.c49a92p-3f, 0x1.70ad04p-9f,
+    0x1.4389fcp-14f, -0x1.f50f46p-7f, 0x1.b9dc0ep-15f, 0x1.e08878p-14f,
+    0x1.800b48p-6f, 0x1.eed952p-15f, 0x1.bd27bap-16f, -0x1.2f6e5cp-8f,
+    0x1.6630e8p-11f, 0x1.0f8ad8p-10f, 0x1.464e4ap-9f, -0x1.f404d6p-14f,
+    -0x1.b1271cp-13f, 0x1.33cdfp-9f, 0x1.995e58p-9f, 0x1.f05fbp-13f,
     /* node 60 z */
-    -0x1.8e9fcp-7f, 0x1.bfd9cep-4f, 0x1.6f7e68p-9f, 0x1.9f36c2p+0f,
-    -0x1.b5662p-7f, 0x1.84cd5ep-22f, -0x1.1f31cp-4f, 0x1.b4c098p-8f,
-    -0x1.b409eap-10f, -0x1.0b2c38p-7f,
+    -0x1.23028p-7f, 0x1.96d1dcp-4f, 0x1.1026b2p-8f, 0x1.9b4478p+0f,
+    -0x1.43020cp-7f, -0x1.3ea21p-9f, -0x1.bfda36p-5f, 0x1.3a2378p-7f,
+    -0x1.df27c8p-10f, -0x1.0eb716p-7f, -0x1.e11636p-11f, 0x1.74b5f2p-10f,
+    -0x1.9bb3ep-6f, 0x1.4c13bep-10f, 0x1.016be8p-7f, -0x1.5446dep-7f,
+    0x1.f13a8ep-13f, 0x1.4c43d2p-9f, 0x1.a0fd78p-9f, -0x1.57d94cp-9f,
     /* node 61 x */
-    -0x1.a3fd5cp-16f, 0x1.b5b17ap-1f, 0x1.a1953ap-12f, -0x1.cc2cb8p-12f,
-    -0x1.51999ap-12f, -0x1.ce74ap-12f, -0x1.f177p-4f, -0x1.65ce24p-13f,
-    -0x1.9a95d6p-9f, 0x1.edb1ccp-13f,
+    0x1.c78e5p-13f, 0x1.b9e642p-1f, 0x1.266f18p-9f, -0x1.565236p-10f,
+    0x1.0db5c8p-13f, 0x1.a7332p-11f, -0x1.ed3abap-4f, 0x1.0cd394p-12f,
+    -0x1.0d5a7p-10f, 0x1.0e0006p-13f, 0x1.07a7b8p-10f, 0x1.0d558ep-9f,
+    -0x1.78d702p-10f, 0x1.90ed12p-8f, -0x1.e14604p-12f, 0x1.9970ep-9f,
+    0x1.4c5754p-12f, -0x1.5e2a52p-13f, 0x1.b1dc58p-12f, -0x1.acea38p-13f,
     /* node 61 y */
-    -0x1.dc9dd2p-11f, 0x1.300f22p-11f, 0x1.b5d0dp-1f, -0x1.b6222p-10f,
-    -0x1.06a8f4p-10f, -0x1.fd9f34p-12f, -0x1.2660cap-9f, -0x1.42ccccp-10f,
-    -0x1.f726b6p-4f, -0x1.000646p-12f,
+    -0x1.ab0598p-13f, -0x1.beb9acp-14f, 0x1.bb0874p-1f, -0x1.2813bap-8f,
+    -0x1.548efp-14f, -0x1.8f5eep-10f, -0x1.a78f96p-11f, -0x1.3e92eep-13f,
+    -0x1.ed1e04p-4f, -0x1.3917b2p-15f, 0x1.eaa808p-16f, 0x1.08c07ap-7f,
+    -0x1.16fe34p-10f, -0x1.148e6cp-10f, 0x1.1215f8p-9f, 0x1.c9e47cp-11f,
+    0x1.389578p-10f, -0x1.f4f0f8p-9f, 0x1.d2c11ep-9f, -0x1.ce6d3ap-12f,
     /* node 61 z */
-    -0x1.d9ae62p-4f, -0x1.110f48p-10f, -0x1.6655aap-8f, 0x1.2e5a18p+1f,
-    -0x1.a18becp-5f, -0x1.7f724ep-7f, 0x1.c14d34p-7f, -0x1.ac519p-5f,
-    0x1.01b1e8p-5f, -0x1.25e5fp-9f,
+    -0x1.f774fep-4f, -0x1.3db146p-9f, 0x1.8c50aap-10f, 0x1.36a5b8p+1f,
+    -0x1.f61006p-5f, 0x1.621514p-12f, 0x1.bd15ccp-10f, -0x1.f47b72p-5f,
+    0x1.257a2ep-10f, -0x1.b09ca8p-9f, -0x1.16379cp-11f, -0x1.161314p-9f,
+    0x1.9beacap-5f, 0x1.08188cp-9f, -0x1.3e6e78p-6f, -0x1.530c66p-8f,
+    -0x1.0c461p-14f, 0x1.4f3d7cp-5f, 0x1.c3b6b4p-9f, 0x1.dab578p-8f,
     /* node 62 x */
-    -0x1.59de68p-5f, 0x1.92f34p-2f, -0x1.9be008p-9f, 0x1.89a664p-3f,
-    -0x1.15d566p-6f, -0x1.517036p-9f, 0x1.05f9eap-5f, -0x1.2d7bfcp-7f,
-    0x1.55cdcep-6f, -0x1.288b4ep-7f,
+    -0x1.79cba4p-5f, 0x1.8c5ddep-2f, 0x1.a0ac1ap-10f, 0x1.a5e12ep-3f,
+    -0x1.730252p-6f, 0x1.00385ap-11f, 0x1.09e44ap-5f, -0x1.dfbf06p-7f,
+    0x1.00a49cp-11f, -0x1.3d2104p-7f, -0x1.df526ap-11f, -0x1.de9116p-10f,
+    0x1.53b5bp-7f, 0x1.3b4c18p-11f, -0x1.bf2396p-7f, -0x1.dea584p-8f,
+    -0x1.11d834p-15f, 0x1.d07cd6p-7f, 0x1.c8bf3ap-9f, 0x1.313c78p-9f,
     /* node 62 y */
-    0x1.56cfdap-11f, 0x1.2eb58ep-14f, 0x1.c7af5p-3f, 0x1.fc23e8p-11f,
-    0x1.6590fp-12f, 0x1.247976p-6f, -0x1.c4e7dep-11f, 0x1.94ed9ap-11f,
-    0x1.9fd0bep-6f, 0x1.954b2ep-12f,
+    0x1.aa77bp-13f, 0x1.18920cp-10f, 0x1.c4aa5ep-3f, 0x1.65ebb4p-9f,
+    0x1.545a3ep-14f, 0x1.20173ep-6f, 0x1.2bea6ep-18f, 0x1.06024p-13f,
+    0x1.80633cp-6f, 0x1.45503ap-14f, 0x1.a9eb1cp-16f, -0x1.288f02p-8f,
+    0x1.4367bep-11f, 0x1.4e3d4ap-10f, -0x1.97f02cp-8f, -0x1.1a4166p-13f,
+    -0x1.b0042p-13f, 0x1.31e884p-9f, 0x1.8fa68ap-9f, 0x1.c4fd6cp-13f,
     /* node 62 z */
-    -0x1.85aef6p-7f, -0x1.bb4808p-4f, 0x1.b03362p-9f, 0x1.9f771ep+0f,
-    -0x1.b32762p-7f, 0x1.3f9d0ap-9f, 0x1.c82c2p-5f, 0x1.a8c40cp-8f,
-    -0x1.393208p-8f, -0x1.1683dp-7f,
+    -0x1.27124ep-7f, -0x1.b261dcp-4f, 0x1.8a13bcp-10f, 0x1.9b955ap+0f,
+    -0x1.43b48ap-7f, -0x1.a8789ep-9f, 0x1.fe1b06p-5f, 0x1.3046bep-7f,
+    0x1.0decdcp-11f, -0x1.10a538p-7f, 0x1.4548fap-10f, -0x1.0a7c0ep-10f,
+    -0x1.78154p-6f, -0x1.679202p-9f, 0x1.0bafcap-7f, 0x1.970c44p-8f,
+    -0x1.e66f3p-14f, 0x1.f96b5ep-10f, 0x1.54b73ap-9f, -0x1.45f26ep-9f,
     /* node 63 x */
-    -0x1.7cad7p-6f, 0x1.191d3p-3f, 0x1.d8fbb8p-10f, 0x1.100e72p-2f,
-    -0x1.c330b2p-7f, -0x1.0e9b88p-9f, 0x1.d1909ep-7f, -0x1.6469e6p-7f,
-    -0x1.a5c56p-8f, -0x1.076e24p-9f,
+    -0x1.5ec7ep-6f, 0x1.1b23f2p-3f, -0x1.d5ec7cp-12f, 0x1.1913d8p-2f,
+    -0x1.7ac952p-7f, -0x1.d9947ap-10f, 0x1.a0be2cp-7f, -0x1.11b826p-7f,
+    0x1.99224p-14f, -0x1.d1f0a8p-10f, 0x1.2ad3eep-11f, 0x1.0747fap-12f,
+    0x1.a2898cp-9f, -0x1.019b9ap-9f, 0x1.15fff4p-7f, 0x1.09bacep-9f,
+    -0x1.70f7bcp-14f, 0x1.25b1fep-8f, -0x1.a70ddep-11f, -0x1.058da6p-11f,
     /* node 63 y */
-    -0x1.40671p-12f, -0x1.cbf474p-15f, 0x1.eeebacp-4f, -0x1.9f006p-12f,
-    -0x1.0b8166p-14f, -0x1.8b2decp-8f, 0x1.3ced34p-12f, -0x1.5dd75ap-12f,
-    -0x1.78cbcep-6f, -0x1.98ebb2p-13f,
+    -0x1.012b2cp-13f, -0x1.41d724p-11f, 0x1.ef5994p-4f, -0x1.c0faa2p-10f,
+    -0x1.a71ap-15f, -0x1.801806p-8f, -0x1.80f6a8p-21f, -0x1.486e7ep-14f,
+    -0x1.6bd888p-6f, -0x1.909a9ap-15f, -0x1.f2dfe2p-17f, 0x1.09f496p-9f,
+    -0x1.9dd178p-12f, -0x1.80b50ep-11f, 0x1.26a282p-8f, 0x1.4ebae2p-14f,
+    -0x1.8d1026p-13f, -0x1.7b322ep-10f, -0x1.edd9e6p-10f, -0x1.1f7eap-13f,
     /* node 63 z */
-    -0x1.6f93d6p-6f, -0x1.2fd356p-3f, -0x1.781e94p-13f, 0x1.2b5a08p+0f,
-    -0x1.56c5d4p-7f, -0x1.24a9aap-9f, -0x1.c5dc96p-7f, -0x1.14aeccp-6f,
-    -0x1.d80accp-12f, 0x1.16a8cap-8f,
+    -0x1.71835cp-6f, -0x1.2df644p-3f, -0x1.31f974p-11f, 0x1.2f024ep+0f,
+    -0x1.5dc27ap-7f, 0x1.6a208ep-12f, -0x1.157a38p-6f, -0x1.0f5fd2p-6f,
+    0x1.a8927ap-17f, 0x1.17186p-8f, 0x1.013d2p-11f, 0x1.5bff56p-11f,
+    0x1.a092a4p-7f, 0x1.452d0ep-10f, 0x1.20cc8ep-12f, -0x1.e9ffcap-10f,
+    0x1.5ba332p-16f, 0x1.1103e8p-8f, -0x1.6115d2p-10f, 0x1.7acdecp-11f,
     /* node 64 x */
-    0x1.4f06b2p-12f, 0x1.f0bea6p-5f, -0x1.20f4a6p-10f, 0x1.f27262p-3f,
-    0x1.bdb32cp-10f, 0x1.1f923p-10f, 0x1.4e0364p-11f, 0x1.25a94cp-8f,
-    0x1.6e178p-8f, -0x1.aa249ep-9f,
+    -0x1.1cd74ep-10f, 0x1.02669p-4f, 0x1.3a7d1ap-11f, 0x1.e484acp-3f,
+    -0x1.c34acap-13f, 0x1.de7ed2p-12f, 0x1.14e02ap-10f, 0x1.3bbf84p-9f,
+    0x1.794546p-15f, -0x1.ba4748p-9f, 0x1.2d35bep-12f, -0x1.6331b6p-12f,
+    -0x1.f4e856p-9f, 0x1.6629c2p-10f, -0x1.27704ep-8f, 0x1.fa1b54p-10f,
+    0x1.1cea66p-16f, -0x1.31d2f4p-10f, 0x1.0561d8p-10f, 0x1.da1148p-17f,
     /* node 64 y */
-    0x1.1b336ap-13f, 0x1.fa5e06p-16f, 0x1.31f29ap-5f, 0x1.6d5b5ap-13f,
-    0x1.0d916p-15f, 0x1.c4afccp-9f, -0x1.b028e6p-14f, 0x1.3933fap-13f,
-    0x1.9a6f4p-8f, 0x1.40a56ep-14f,
+    0x1.b4d80ap-15f, 0x1.48872ep-12f, 0x1.3294d6p-5f, 0x1.51a058p-11f,
+    0x1.46ebd6p-16f, 0x1.bd730ep-9f, -0x1.384d46p-16f, 0x1.002bb4p-15f,
+    0x1.831a68p-8f, 0x1.69e06ap-16f, 0x1.1310e4p-17f, -0x1.97ad3p-11f,
+    0x1.046dfap-13f, 0x1.75cb2p-12f, -0x1.072736p-9f, -0x1.b150fcp-16f,
+    0x1.219cd6p-13f, 0x1.28ccf2p-11f, 0x1.a414ep-11f, 0x1.91e7eep-15f,
     /* node 64 z */
-    -0x1.1c7dc6p-10f, -0x1.66b23cp-4f, 0x1.1de64ap-11f, 0x1.34d0eap-1f,
-    -0x1.155442p-10f, -0x1.4005e4p-17f, 0x1.f15238p-8f, 0x1.ce636cp-10f,
-    -0x1.b2792cp-11f, -0x1.1ec47cp-9f,
+    -0x1.5c9446p-11f, -0x1.656138p-4f, 0x1.2e3406p-13f, 0x1.330da6p-1f,
+    -0x1.4ea47ap-11f, -0x1.9f2af8p-11f, 0x1.092a6ap-7f, 0x1.16aa2cp-9f,
+    0x1.862ae8p-14f, -0x1.15ff1ep-9f, -0x1.753254p-16f, -0x1.273396p-12f,
+    -0x1.3045e6p-8f, -0x1.34da0ap-10f, 0x1.2590f2p-9f, 0x1.f2da4ep-10f,
+    -0x1.650b02p-15f, 0x1.b8e7d4p-12f, 0x1.c4e6ccp-12f, -0x1.59f5dcp-11f,
     /* node 65 x */
-    -0x1.ff5154p-9f, 0x1.43234ap-8f, 0x1.bdf7a8p-12f, 0x1.21fb14p-3f,
-    -0x1.bdc7fcp-9f, -0x1.7cdd8p-11f, -0x1.8f33e2p-9f, -0x1.3284bap-8f,
-    -0x1.0633acp-9f, 0x1.87e398p-9f,
+    -0x1.b35a7ep-9f, 0x1.d57e88p-9f, -0x1.042996p-12f, 0x1.2e16a2p-3f,
+    -0x1.56a77p-9f, -0x1.41f072p-15f, -0x1.b6bc9ep-9f, -0x1.ebd36ep-9f,
+    0x1.9ca9ccp-15f, 0x1.8b466ap-9f, -0x1.088a2cp-15f, 0x1.cce2a8p-13f,
+    0x1.08968ap-8f, -0x1.cb591p-13f, 0x1.74a2a4p-10f, -0x1.df1fb8p-10f,
+    0x1.b1b716p-17f, 0x1.a1defep-10f, -0x1.078dacp-11f, 0x1.d476dp-13f,
     /* node 65 y */
-    -0x1.645bdcp-16f, -0x1.760d6ap-18f, 0x1.639532p-7f, -0x1.741832p-16f,
-    0x1.bca438p-18f, -0x1.ed2376p-12f, 0x1.17143ep-15f, -0x1.56f05cp-16f,
-    -0x1.b55576p-10f, -0x1.3085dap-16f,
+    -0x1.8964f6p-17f, -0x1.0e99dep-14f, 0x1.640476p-7f, -0x1.4c5b7ap-13f,
+    -0x1.4b65acp-18f, -0x1.d85138p-12f, 0x1.f05492p-18f, -0x1.0170f2p-17f,
+    -0x1.abfe24p-10f, -0x1.3e1032p-18f, -0x1.d5f90ap-20f, 0x1.989c58p-13f,
+    -0x1.5275e4p-15f, -0x1.1897fp-14f, 0x1.b9c426p-12f, -0x1.5bca4p-21f,
+    -0x1.5848dcp-16f, -0x1.0fa652p-13f, -0x1.82a908p-13f, -0x1.926468p-17f,
     /* node 65 z */
-    -0x1.380a12p-8f, -0x1.d4cdcap-6f, 0x1.89f7f2p-12f, 0x1.e405b2p-3f,
-    -0x1.4d7aecp-9f, -0x1.64968ep-11f, -0x1.bd2884p-9f, -0x1.ff90a2p-9f,
-    -0x1.0f506ep-9f, 0x1.5b5bccp-11f,
+    -0x1.1655dep-8f, -0x1.e0adaep-6f, -0x1.20849p-12f, 0x1.ebb8ecp-3f,
+    -0x1.eca598p-10f, -0x1.9add96p-13f, -0x1.f6a83ep-9f, -0x1.97825cp-9f,
+    -0x1.ef4f3p-15f, 0x1.7aa7eap-11f, 0x1.84a2c4p-20f, 0x1.24f642p-12f,
+    0x1.5a25cap-9f, -0x1.55ed6cp-12f, 0x1.108ad4p-9f, -0x1.e0833cp-11f,
+    -0x1.a115a4p-19f, 0x1.7c5638p-11f, -0x1.335eaep-11f, 0x1.4a579ep-16f,
     /* node 66 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 66 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 66 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 67 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 67 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 67 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 68 x */
-    0x1.7bde68p-11f, 0x1.6a1a92p-7f, 0x1.e1d68cp-12f, -0x1.f42382p-4f,
-    0x1.2ac56p-11f, 0x1.31b026p-11f, -0x1.2c53fep-8f, 0x1.cc5abap-11f,
-    -0x1.14e8f4p-9f, -0x1.fcb98cp-13f,
+    0x1.f01656p-12f, 0x1.6ecc9ep-7f, 0x1.20173cp-11f, -0x1.f117fap-4f,
+    0x1.8b4ebap-13f, 0x1.bfb608p-11f, -0x1.17ce36p-8f, 0x1.2a5918p-11f,
+    -0x1.bf6458p-9f, -0x1.484286p-12f, 0x1.a314f6p-14f, 0x1.61dc7ep-12f,
+    0x1.f7b7c2p-13f, 0x1.76cc8p-11f, -0x1.d4a1d4p-10f, -0x1.28802cp-11f,
+    -0x1.94bafcp-14f, 0x1.183342p-10f, -0x1.a0495ap-12f, 0x1.41ca92p-13f,
     /* node 68 y */
-    -0x1.67f814p-10f, -0x1.c12dd4p-8f, 0x1.19be86p-7f, 0x1.00f182p-5f,
-    -0x1.e4045ep-12f, -0x1.cc5bc6p-12f, 0x1.5fd892p-11f, -0x1.501cfep-11f,
-    -0x1.bad21ep-14f, -0x1.46c99ap-12f,
+    -0x1.6d759p-10f, -0x1.b18eb8p-8f, 0x1.15ef88p-7f, 0x1.0798p-5f,
+    -0x1.efb7f2p-12f, -0x1.347be6p-12f, 0x1.ef9b54p-13f, -0x1.4b69a2p-11f,
+    0x1.2a3e3ep-13f, -0x1.441b5ap-12f, -0x1.78304ep-16f, -0x1.7a848ep-14f,
+    0x1.7020cap-11f, -0x1.25b03ap-13f, 0x1.8967eap-13f, 0x1.9706f8p-12f,
+    -0x1.b419acp-16f, 0x1.262ae8p-12f, -0x1.6a1816p-16f, 0x1.ee5f6ap-15f,
     /* node 68 z */
-    -0x1.8abe0ap-9f, 0x1.6b4b5p-6f, -0x1.0f58b2p-7f, 0x1.abfe22p-3f,
-    -0x1.687a8ap-10f, -0x1.c4e522p-11f, 0x1.696ac6p-9f, -0x1.187b6cp-9f,
-    -0x1.4aa54ap-16f, -0x1.705148p-13f,
+    -0x1.63a898p-9f, 0x1.729f0ep-6f, -0x1.19ae7p-7f, 0x1.ae8814p-3f,
+    -0x1.e5b9bp-11f, -0x1.7e7972p-11f, 0x1.d0890ap-10f, -0x1.b7cc36p-10f,
+    0x1.f7bbecp-10f, -0x1.bdc03cp-14f, -0x1.34d612p-14f, -0x1.f928b2p-14f,
+    0x1.f5aa68p-11f, -0x1.5a5a56p-11f, 0x1.bfc344p-10f, 0x1.1d3d0cp-10f,
+    0x1.2243a4p-14f, -0x1.bc6e8p-15f, 0x1.813dd8p-15f, -0x1.581dd6p-14f,
     /* node 69 x */
-    0x1.ab3fdap-9f, 0x1.399096p-5f, -0x1.02d58p-7f, -0x1.d00aa2p-3f,
-    0x1.07bb54p-9f, -0x1.d87ea6p-10f, 0x1.c0962ap-9f, 0x1.fdf854p-11f,
-    0x1.127046p-8f, 0x1.513918p-14f,
+    0x1.bb3334p-9f, 0x1.39c86ap-5f, -0x1.fb69a2p-8f, -0x1.d398fp-3f,
+    0x1.26eb84p-9f, -0x1.280b92p-9f, 0x1.cf0e52p-9f, 0x1.18ea86p-10f,
+    0x1.3c6ad8p-8f, 0x1.ce3356p-14f, -0x1.46cdcep-14f, -0x1.1cf5dep-11f,
+    -0x1.0f7566p-10f, -0x1.a108cap-12f, 0x1.841e76p-11f, 0x1.24569p-11f,
+    0x1.bb29cp-14f, -0x1.3c3a7ap-10f, 0x1.9fec8p-11f, -0x1.218f86p-13f,
     /* node 69 y */
-    -0x1.804998p-12f, -0x1.a07d04p-7f, 0x1.478614p-5f, 0x1.da3dcep-5f,
-    -0x1.a3022cp-13f, 0x1.8ee71cp-10f, -0x1.1d3c66p-8f, 0x1.6778cep-10f,
-    -0x1.229794p-8f, -0x1.bd1654p-10f,
+    -0x1.0a8bccp-14f, -0x1.ce4ea4p-7f, 0x1.4cea38p-5f, 0x1.c3bf38p-5f,
+    0x1.678dfp-15f, 0x1.0b0162p-10f, -0x1.4c19c2p-9f, 0x1.a61ee4p-10f,
+    -0x1.4350ecp-8f, -0x1.b6271cp-10f, 0x1.307e16p-15f, 0x1.79173p-11f,
+    -0x1.745afcp-9f, 0x1.482a8ap-15f, 0x1.06c2d4p-10f, -0x1.98e13cp-10f,
+    0x1.10d1d6p-14f, -0x1.6d8144p-11f, 0x1.bc41bap-13f, -0x1.c3164cp-12f,
     /* node 69 z */
-    -0x1.b147dap-9f, 0x1.4770dep-4f, -0x1.a82acp-6f, 0x1.1963cep-1f,
-    -0x1.584e0ep-9f, 0x1.fb9e02p-12f, -0x1.fe3826p-10f, -0x1.ca87c4p-10f,
-    -0x1.09bffcp-7f, -0x1.113dc8p-16f,
+    -0x1.572272p-9f, 0x1.4557b4p-4f, -0x1.bb3f7ep-6f, 0x1.1a76d8p-1f,
+    -0x1.e73a22p-10f, 0x1.b5ea06p-11f, -0x1.f0383ap-10f, -0x1.963d08p-11f,
+    -0x1.7e5a9ap-8f, 0x1.11b0ecp-15f, -0x1.b614b6p-16f, 0x1.7d7e92p-11f,
+    -0x1.de403p-12f, -0x1.28e0fcp-11f, 0x1.0a5298p-9f, -0x1.2d8058p-13f,
+    -0x1.8fd10ep-13f, 0x1.d43a98p-10f, -0x1.3927cep-10f, -0x1.5dd854p-12f,
     /* node 70 x */
-    0x1.62d9f4p-8f, 0x1.e1a9dap-4f, -0x1.4b5edep-7f, -0x1.d4424ap-3f,
-    0x1.19c086p-9f, -0x1.8c8dcep-9f, -0x1.0c21fap-7f, 0x1.29a0a4p-8f,
-    -0x1.8a209p-7f, 0x1.6ad01p-13f,
+    0x1.3e67bcp-8f, 0x1.d65a6cp-4f, -0x1.1f3b1p-7f, -0x1.daf5bap-3f,
+    0x1.357ae8p-10f, -0x1.a5d8ecp-9f, -0x1.6fb616p-8f, 0x1.c9ec1cp-9f,
+    -0x1.117bdap-6f, 0x1.91500ep-14f, -0x1.0a8c78p-12f, 0x1.2de25ep-10f,
+    -0x1.a71aa8p-9f, 0x1.2d3f44p-11f, -0x1.8a08dep-11f, -0x1.877fb8p-9f,
+    0x1.95ae7p-17f, 0x1.b351acp-12f, -0x1.1148e6p-11f, 0x1.de20eep-12f,
     /* node 70 y */
-    -0x1.14875ep-7f, -0x1.5fe272p-7f, 0x1.609c84p-4f, 0x1.fad41ap-4f,
-    -0x1.9e5018p-9f, -0x1.65b174p-9f, 0x1.30666ep-8f, -0x1.673342p-8f,
-    0x1.35b8f6p-7f, 0x1.6d6216p-10f,
+    -0x1.37b104p-7f, -0x1.1ddee6p-7f, 0x1.5d455ep-4f, 0x1.0bcb7ap-3f,
+    -0x1.229b24p-8f, -0x1.2a13c2p-10f, 0x1.b9bd18p-11f, -0x1.b18b52p-8f,
+    0x1.04760ep-7f, 0x1.567dap-10f, -0x1.72ce74p-13f, -0x1.6339bcp-10f,
+    0x1.d3db9ep-8f, -0x1.699d64p-13f, -0x1.0c123ep-9f, 0x1.2d291p-9f,
+    -0x1.d0186ep-13f, 0x1.7ebcacp-9f, -0x1.86f372p-12f, 0x1.018176p-10f,
     /* node 70 z */
-    -0x1.d1e308p-7f, 0x1.f05ca6p-4f, -0x1.0c4c3ap-4f, 0x1.05fbcep+0f,
-    -0x1.d69e98p-8f, -0x1.6214acp-9f, 0x1.308596p-8f, -0x1.5445a6p-7f,
-    0x1.346d14p-7f, 0x1.768a72p-10f,
+    -0x1.b84626p-7f, 0x1.f6c794p-4f, -0x1.0f331p-4f, 0x1.073e22p+0f,
+    -0x1.866166p-8f, -0x1.11e60ap-9f, 0x1.b82504p-10f, -0x1.2b6ddap-7f,
+    0x1.dea3p-7f, 0x1.ab187p-10f, -0x1.1b755ep-15f, -0x1.9c1912p-11f,
+    0x1.3d9bdcp-8f, -0x1.3c2674p-10f, 0x1.3beb5ep-8f, 0x1.342df4p-9f,
+    0x1.697ee4p-12f, -0x1.0705dap-11f, 0x1.2b0ca2p-11f, -0x1.697648p-13f,
     /* node 71 x */
-    0x1.9b8e18p-10f, 0x1.b27b06p-3f, -0x1.0c09f2p-4f, -0x1.1d5e74p-3f,
-    -0x1.610082p-8f, -0x1.12333cp-7f, -0x1.8f408ap-7f, 0x1.5a2006p-11f,
-    -0x1.9f7d7cp-11f, 0x1.05ca5cp-7f,
+    0x1.551d8p-11f, 0x1.b5894p-3f, -0x1.068b6cp-4f, -0x1.0edd7ep-3f,
+    -0x1.b22d3cp-8f, -0x1.e41ae6p-8f, -0x1.5d0fc8p-7f, -0x1.763778p-11f,
+    -0x1.a2739cp-8f, 0x1.f7b51cp-8f, 0x1.e15bdep-12f, -0x1.6746bp-13f,
+    0x1.bb1c44p-9f, 0x1.9bba58p-9f, -0x1.b56b68p-9f, -0x1.381568p-10f,
+    -0x1.41e364p-19f, 0x1.ad74fcp-8f, 0x1.9d82fep-11f, 0x1.ba58a6p-10f,
     /* node 71 y */
-    -0x1.cb8176p-10f, -0x1.08de4p-4f, 0x1.b3aeap-3f, 0x1.1cd758p-3f,
-    -0x1.2cff98p-11f, 0x1.fc665p-8f, -0x1.25bddap-7f, 0x1.5cb87ep-8f,
-    -0x1.d1a56ap-7f, -0x1.021c92p-7f,
+    -0x1.164dfap-11f, -0x1.107398p-4f, 0x1.b6ca42p-3f, 0x1.0e1734p-3f,
+    0x1.9e2e66p-11f, 0x1.b3daeap-8f, -0x1.8669d8p-8f, 0x1.b64bdp-8f,
+    -0x1.87e414p-7f, -0x1.faa35cp-8f, -0x1.527146p-14f, 0x1.2632dp-9f,
+    -0x1.149224p-7f, -0x1.cfa594p-12f, 0x1.904ebp-10f, -0x1.565824p-10f,
+    0x1.00c44ap-11f, -0x1.c9700ap-10f, 0x1.bd01aap-12f, -0x1.95385cp-10f,
     /* node 71 z */
-    0x1.7ae594p-11f, 0x1.5507acp-4f, -0x1.4d230ap-4f, 0x1.6e91aep+0f,
-    -0x1.de0fdp-9f, 0x1.009c3ap-7f, 0x1.14a73ap-6f, -0x1.271222p-8f,
-    -0x1.b59afp-6f, 0x1.da942ap-9f,
+    0x1.ba84bcp-9f, 0x1.68f2f8p-4f, -0x1.6769fep-4f, 0x1.70d67ep+0f,
+    -0x1.bb3b5ep-15f, 0x1.1c0936p-7f, 0x1.8b73b4p-7f, -0x1.c7b388p-14f,
+    -0x1.869858p-7f, 0x1.fce792p-9f, 0x1.87d6d2p-11f, 0x1.0a55f2p-10f,
+    0x1.6554cp-9f, -0x1.f9ad7ap-10f, 0x1.b00058p-9f, 0x1.77b19cp-8f,
+    -0x1.72e81cp-11f, 0x1.5f30f4p-9f, -0x1.273802p-8f, -0x1.bc5a0ep-10f,
     /* node 72 x */
-    0x1.66923cp-12f, 0x1.c7a716p-3f, -0x1.0c5822p-16f, 0x1.acccc6p-12f,
-    0x1.2b0b1cp-12f, 0x1.18b392p-6f, 0x1.ad5dc6p-6f, 0x1.69ff3ep-13f,
-    -0x1.5fe868p-12f, -0x1.14e2ecp-14f,
+    -0x1.42ca28p-14f, 0x1.c847ap-3f, -0x1.82ca36p-11f, 0x1.550836p-12f,
+    -0x1.097ef4p-15f, 0x1.080c94p-6f, 0x1.79d886p-6f, -0x1.d220bap-14f,
+    0x1.77a2bcp-11f, -0x1.595f9cp-15f, -0x1.24e88ep-13f, -0x1.8da7e2p-11f,
+    0x1.57f332p-11f, -0x1.960a46p-9f, -0x1.34ba68p-8f, 0x1.cc7de8p-9f,
+    -0x1.f41d56p-14f, -0x1.b680aap-13f, -0x1.744c22p-14f, 0x1.55cc5ep-15f,
     /* node 72 y */
-    -0x1.553b68p-5f, -0x1.9f7f98p-11f, 0x1.8eabb8p-2f, 0x1.8b2d88p-3f,
-    -0x1.0b7f1p-7f, -0x1.665936p-9f, 0x1.dd8f4cp-8f, -0x1.17d46p-6f,
-    0x1.6d6e76p-5f, -0x1.2f3006p-7f,
+    -0x1.7aad64p-5f, 0x1.549ffep-11f, 0x1.8bfdf8p-2f, 0x1.a39154p-3f,
+    -0x1.decf3p-7f, 0x1.0d7818p-9f, -0x1.d6cbaep-13f, -0x1.73edp-6f,
+    0x1.e5eaa8p-6f, -0x1.391b0ap-7f, -0x1.f938d8p-14f, -0x1.9708dep-9f,
+    0x1.11e744p-6f, 0x1.be5a2cp-10f, -0x1.38f2fap-7f, -0x1.562a3cp-10f,
+    -0x1.04deap-10f, 0x1.999f3ap-8f, -0x1.095cbcp-8f, 0x1.f5e60ap-10f,
     /* node 72 z */
-    -0x1.769e02p-7f, -0x1.49d398p-10f, -0x1.b7d6c2p-4f, 0x1.9f820ap+0f,
-    0x1.86ee9ep-8f, 0x1.cec95cp-9f, -0x1.ecfca2p-12f, -0x1.adf95ep-7f,
-    0x1.64f026p-5f, -0x1.1d35b4p-7f,
+    -0x1.2c1a64p-7f, 0x1.410f6ap-12f, -0x1.c0ddc4p-4f, 0x1.9bb44p+0f,
+    0x1.30e4fcp-7f, 0x1.92b30ep-10f, -0x1.13d032p-8f, -0x1.4535a6p-7f,
+    0x1.d86b12p-5f, -0x1.028f54p-7f, -0x1.9b106p-14f, -0x1.a99bfap-10f,
+    -0x1.3dd4f4p-9f, -0x1.d7283ap-9f, 0x1.e9fb9ep-7f, 0x1.ee3fcep-9f,
+    0x1.564b92p-11f, -0x1.37d0c6p-6f, 0x1.32b824p-11f, -0x1.b6b45p-9f,
     /* node 73 x */
-    -0x1.f39eeep-10f, 0x1.b08006p-3f, 0x1.0c8d7ap-4f, 0x1.1d1094p-3f,
-    0x1.4ec8cap-8f, -0x1.d95124p-8f, -0x1.a99552p-7f, -0x1.c5cb8p-11f,
-    0x1.2b4742p-11f, -0x1.060a92p-7f,
+    -0x1.229c88p-11f, 0x1.b4a706p-3f, 0x1.086ddp-4f, 0x1.0e6fccp-3f,
+    0x1.b5d7c4p-8f, -0x1.fe5a4cp-8f, -0x1.a26468p-7f, 0x1.a2b6cap-11f,
+    0x1.8d3cfap-8f, -0x1.f3e4f8p-8f, 0x1.ee785ap-12f, 0x1.6e672ep-11f,
+    -0x1.eaf47ep-9f, 0x1.543dap-14f, 0x1.5724b4p-7f, 0x1.7eeadcp-10f,
+    0x1.869cb4p-14f, -0x1.a8c61ap-8f, -0x1.a47a7p-11f, -0x1.c409a4p-10f,
     /* node 73 y */
-    -0x1.0bd27ep-9f, 0x1.08e8c4p-4f, 0x1.b3faep-3f, 0x1.1cc2d6p-3f,
-    -0x1.b6b352p-11f, -0x1.f87e28p-8f, 0x1.56ebc6p-8f, 0x1.4b803ap-8f,
-    -0x1.f8ca6ap-7f, -0x1.06f67p-7f,
+    -0x1.108d68p-11f, 0x1.09e5eep-4f, 0x1.b5ec98p-3f, 0x1.0e7de2p-3f,
+    0x1.a973f4p-11f, -0x1.25647cp-7f, 0x1.dd510ap-8f, 0x1.b502f2p-8f,
+    -0x1.8392dap-7f, -0x1.fa13c2p-8f, 0x1.01d636p-12f, 0x1.f33b9ep-10f,
+    -0x1.0eb07p-7f, -0x1.044f3ep-10f, 0x1.140f52p-7f, 0x1.85ac76p-10f,
+    0x1.e7e98ap-12f, -0x1.c0d146p-10f, 0x1.3d52eep-12f, -0x1.8c21c4p-10f,
     /* node 73 z */
-    0x1.10a2fcp-12f, -0x1.5e3852p-4f, -0x1.4df9p-4f, 0x1.6e68f4p+0f,
-    -0x1.00b2e8p-8f, -0x1.e077b4p-7f, -0x1.9db774p-7f, -0x1.2efc5ap-8f,
-    -0x1.a23328p-6f, 0x1.de0bdap-9f,
+    0x1.b96e3cp-9f, -0x1.67bb32p-4f, -0x1.63741p-4f, 0x1.70bd6ep+0f,
+    -0x1.4787ccp-14f, -0x1.84dac8p-7f, -0x1.acec64p-7f, -0x1.0bab06p-19f,
+    -0x1.a9773ep-7f, 0x1.fb7724p-9f, -0x1.6520aap-11f, 0x1.e1f18cp-10f,
+    0x1.f53cc2p-10f, -0x1.e824fp-11f, 0x1.2f6cb6p-7f, -0x1.53918p-9f,
+    -0x1.340966p-11f, 0x1.856b26p-9f, -0x1.13a926p-8f, -0x1.c30c6ap-10f,
     /* node 74 x */
-    -0x1.6ee7ap-8f, 0x1.de5232p-4f, 0x1.4737dap-7f, 0x1.d3cd16p-3f,
-    -0x1.237ce2p-9f, -0x1.c0e1d8p-9f, -0x1.cecea6p-8f, -0x1.29f5d8p-8f,
-    0x1.a97588p-7f, -0x1.45261p-13f,
+    -0x1.3f1b5ap-8f, 0x1.da89a2p-4f, 0x1.30babep-7f, 0x1.da9e6ep-3f,
+    -0x1.39dacp-10f, -0x1.5268eep-9f, -0x1.e5a02p-8f, -0x1.c2c914p-9f,
+    0x1.08e762p-6f, -0x1.bb6788p-14f, -0x1.3e5de4p-12f, -0x1.7605ap-11f,
+    0x1.74a08p-9f, -0x1.a7f3acp-13f, 0x1.486e5ep-9f, -0x1.5420e2p-10f,
+    0x1.ad238cp-15f, -0x1.18376ap-12f, 0x1.6e9bfcp-11f, -0x1.f3fb7ep-12f,
     /* node 74 y */
-    -0x1.1563cep-7f, 0x1.56438p-7f, 0x1.5ff426p-4f, 0x1.fa8184p-4f,
-    -0x1.9356fp-9f, 0x1.20c52ep-10f, -0x1.57bcfp-11f, -0x1.5fabe8p-8f,
-    0x1.814d1cp-7f, 0x1.85d822p-10f,
+    -0x1.371906p-7f, 0x1.39d992p-7f, 0x1.5f12ep-4f, 0x1.0b62cap-3f,
+    -0x1.22bec8p-8f, 0x1.37de72p-9f, -0x1.a0dfb4p-10f, -0x1.aea5dap-8f,
+    0x1.f23cfcp-8f, 0x1.5876fp-10f, 0x1.cf0616p-15f, -0x1.ea1eeep-11f,
+    0x1.bc5a78p-8f, 0x1.0b7b04p-10f, -0x1.174adcp-8f, -0x1.4dce52p-9f,
+    -0x1.6621aep-13f, 0x1.8eab3ap-9f, -0x1.352ee8p-12f, 0x1.f72912p-11f,
     /* node 74 z */
-    -0x1.cf93eap-7f, -0x1.f4790ep-4f, -0x1.0ccc76p-4f, 0x1.05f8ep+0f,
-    -0x1.cfda2p-8f, 0x1.1c9b78p-9f, -0x1.3d91d4p-9f, -0x1.505f98p-7f,
-    0x1.5c5accp-7f, 0x1.8cf826p-10f,
+    -0x1.b78eccp-7f, -0x1.f68fd4p-4f, -0x1.0de804p-4f, 0x1.07351ap+0f,
+    -0x1.869074p-8f, 0x1.6cc604p-9f, -0x1.f6ac3p-9f, -0x1.2a3fdap-7f,
+    0x1.d511bcp-7f, 0x1.acaa78p-10f, -0x1.ba872p-14f, -0x1.c7c604p-12f,
+    0x1.29237ep-8f, -0x1.3382a4p-11f, 0x1.0f3754p-9f, -0x1.68593ap-11f,
+    0x1.90dfa8p-12f, -0x1.775a5ep-12f, 0x1.31a07ep-11f, -0x1.9770fap-13f,
     /* node 75 x */
-    -0x1.a4f1eap-9f, 0x1.38a8bcp-5f, 0x1.025cd2p-7f, 0x1.d0370cp-3f,
-    -0x1.006b86p-9f, -0x1.8ed764p-9f, 0x1.2faf26p-8f, -0x1.e83c84p-11f,
-    -0x1.1deb2ap-8f, -0x1.c45842p-14f,
+    -0x1.be1638p-9f, 0x1.383588p-5f, 0x1.f6554p-8f, 0x1.d39ab2p-3f,
+    -0x1.28a002p-9f, -0x1.4e229ep-9f, 0x1.008a9cp-8f, -0x1.1e5282p-10f,
+    -0x1.3687fap-8f, -0x1.043916p-13f, -0x1.5b5c2ep-14f, 0x1.dd856cp-12f,
+    0x1.1e3c64p-10f, -0x1.90f85ep-13f, -0x1.749e38p-11f, 0x1.1f972ap-13f,
+    -0x1.0c3666p-13f, 0x1.32d682p-10f, -0x1.a1ddap-11f, 0x1.2b4e8p-13f,
     /* node 75 y */
-    -0x1.8b40a6p-12f, 0x1.a1e4f6p-7f, 0x1.4859cep-5f, 0x1.dad206p-5f,
-    -0x1.10ee06p-12f, -0x1.7f2e1cp-10f, 0x1.878162p-9f, 0x1.52c7d4p-10f,
-    -0x1.75fce6p-8f, -0x1.d0b444p-10f,
+    -0x1.6f718ap-14f, 0x1.adac1p-7f, 0x1.4a6928p-5f, 0x1.c5042ap-5f,
+    0x1.3be9f2p-15f, -0x1.fe3eacp-10f, 0x1.9442acp-9f, 0x1.9d158ap-10f,
+    -0x1.33b99ep-8f, -0x1.b9648ap-10f, -0x1.23708p-17f, 0x1.ae30d8p-12f,
+    -0x1.51e3aep-9f, -0x1.a70d1cp-11f, 0x1.51823ep-9f, 0x1.76071ap-10f,
+    0x1.b29294p-16f, -0x1.9714c2p-11f, 0x1.70491cp-13f, -0x1.b09708p-12f,
     /* node 75 z */
-    -0x1.b3ed7ep-9f, -0x1.491d88p-4f, -0x1.a809e2p-6f, 0x1.19671ap-1f,
-    -0x1.58e67p-9f, -0x1.6099eep-9f, 0x1.505c4p-9f, -0x1.ce96eap-10f,
-    -0x1.0a3f5ap-7f, -0x1.53b442p-15f,
+    -0x1.57ccf4p-9f, -0x1.4a202p-4f, -0x1.bd8ab6p-6f, 0x1.1a7892p-1f,
+    -0x1.e756eap-10f, -0x1.3812fap-9f, 0x1.3ecfcep-9f, -0x1.9f1718p-11f,
+    -0x1.782f28p-8f, 0x1.f3bbccp-16f, 0x1.242b9ep-16f, 0x1.3eae64p-11f,
+    -0x1.a963a2p-12f, -0x1.716712p-11f, 0x1.80d1bep-9f, 0x1.1d410cp-12f,
+    -0x1.b84b06p-13f, 0x1.cf257ap-10f, -0x1.43a9b2p-10f, -0x1.5348fep-12f,
     /* node 76 x */
-    -0x1.7f700ap-11f, 0x1.66d582p-7f, -0x1.d6fc9ap-12f, 0x1.f3e57p-4f,
-    -0x1.37c55ep-11f, 0x1.4423eep-10f, -0x1.4b189cp-8f, -0x1.d01456p-11f,
-    0x1.2a65fcp-9f, 0x1.2c0b2p-12f,
+    -0x1.d7f2p-12f, 0x1.6bf81cp-7f, -0x1.9cd998p-12f, 0x1.f0dba6p-4f,
+    -0x1.75bbc2p-13f, 0x1.fc33bp-11f, -0x1.372e84p-8f, -0x1.1ca1ecp-11f,
+    0x1.aeb2e2p-9f, 0x1.55521cp-12f, 0x1.6533ap-14f, -0x1.63ccacp-13f,
+    -0x1.7f8744p-12f, 0x1.ee866cp-14f, 0x1.0e0f5p-10f, -0x1.eb5ed6p-15f,
+    0x1.046054p-13f, -0x1.0d241p-10f, 0x1.ab8816p-12f, -0x1.5fd332p-13f,
     /* node 76 y */
-    -0x1.688f06p-10f, 0x1.bd1fbp-8f, 0x1.190c6p-7f, 0x1.00c906p-5f,
-    -0x1.d9c23ap-12f, 0x1.7a7e2ap-13f, -0x1.5bc63p-12f, -0x1.490bacp-11f,
-    0x1.c4602ap-13f, -0x1.35910ap-12f,
+    -0x1.6c4e4ep-10f, 0x1.b22628p-8f, 0x1.17a5cap-7f, 0x1.075ec4p-5f,
+    -0x1.eec862p-12f, 0x1.315608p-12f, -0x1.6fbd26p-12f, -0x1.482cp-11f,
+    0x1.99a08p-14f, -0x1.41c0b8p-12f, 0x1.02da62p-17f, -0x1.32d2e2p-15f,
+    0x1.56c544p-11f, 0x1.d5af0ap-15f, -0x1.8942f8p-13f, -0x1.51330ap-12f,
+    -0x1.4126a4p-16f, 0x1.37654ap-12f, -0x1.09c396p-16f, 0x1.d882dcp-15f,
     /* node 76 z */
-    -0x1.8e81b4p-9f, -0x1.6f734ep-6f, -0x1.10e664p-7f, 0x1.abe7dap-3f,
-    -0x1.66f9eap-10f, 0x1.1a8e6p-11f, -0x1.330014p-9f, -0x1.163a7ep-9f,
-    0x1.6f236p-11f, -0x1.2fb0cap-13f,
+    -0x1.61c0f4p-9f, -0x1.757e0ep-6f, -0x1.169986p-7f, 0x1.ae7dbep-3f,
+    -0x1.e3ac4ep-11f, 0x1.3d2a36p-11f, -0x1.30bf58p-9f, -0x1.b36232p-10f,
+    0x1.d7f9c8p-10f, -0x1.9e6a2cp-14f, 0x1.273134p-15f, -0x1.17bf3p-18f,
+    0x1.c080bp-11f, -0x1.2cc03ep-13f, 0x1.7296b6p-10f, -0x1.07ee42p-11f,
+    0x1.68d2bap-14f, 0x1.2a9b3ep-16f, 0x1.569c4p-15f, -0x1.638c4p-14f,
     /* node 77 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 77 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 77 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 78 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 78 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 78 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 79 x */
-    0x1.3f36f6p-10f, 0x1.1d3948p-8f, -0x1.de98e4p-9f, -0x1.7a3316p-4f,
-    0x1.9e55e4p-11f, -0x1.27715p-11f, 0x1.639e3p-11f, 0x1.bc20aap-12f,
-    0x1.b3882cp-9f, 0x1.511048p-13f,
+    0x1.2b0c22p-10f, 0x1.1be8b4p-8f, -0x1.f57978p-9f, -0x1.7b01aap-4f,
+    0x1.6f44dp-11f, -0x1.53e144p-11f, 0x1.5f7618p-11f, 0x1.3b1022p-12f,
+    0x1.8fd724p-9f, 0x1.388f7ap-13f, -0x1.5646a8p-16f, -0x1.8ca3d2p-12f,
+    -0x1.67c64ap-16f, -0x1.d448e4p-14f, 0x1.69c812p-14f, 0x1.08b9f8p-13f,
+    -0x1.f14d74p-15f, -0x1.9f0aa4p-15f, 0x1.34a224p-13f, 0x1.a84aa4p-15f,
     /* node 79 y */
-    -0x1.68ab32p-10f, -0x1.60f46cp-7f, 0x1.babaf8p-8f, 0x1.87559ep-5f,
-    -0x1.2d1a8p-12f, 0x1.06d4c8p-14f, 0x1.3048fp-11f, -0x1.cddddap-13f,
-    -0x1.cbb1cep-15f, -0x1.cacad6p-11f,
+    -0x1.684ac6p-10f, -0x1.63c87cp-7f, 0x1.beb57ep-8f, 0x1.8645bcp-5f,
+    -0x1.2fa13cp-12f, 0x1.80ac8cp-15f, 0x1.07e384p-11f, -0x1.db361p-13f,
+    -0x1.324158p-15f, -0x1.c2fefcp-11f, -0x1.2f591cp-16f, 0x1.bac44cp-16f,
+    0x1.cdb24ep-16f, -0x1.d921fep-14f, 0x1.27297ep-12f, 0x1.12fc9ep-16f,
+    0x1.f52728p-16f, -0x1.670156p-13f, 0x1.1c386cp-24f, -0x1.4178acp-18f,
     /* node 79 z */
-    -0x1.e0087ep-10f, 0x1.ac7eb2p-7f, -0x1.086f4p-7f, 0x1.3067eap-3f,
-    -0x1.d20d9cp-11f, -0x1.3a08f4p-12f, 0x1.85be48p-11f, -0x1.bcc4b6p-11f,
-    -0x1.d9b52ap-10f, -0x1.04e16p-11f,
+    -0x1.a6fed6p-10f, 0x1.a96698p-7f, -0x1.0c45e6p-7f, 0x1.310c4ap-3f,
+    -0x1.4004c4p-11f, -0x1.0a6522p-12f, 0x1.29ab24p-11f, -0x1.2089ap-11f,
+    -0x1.db5e5ep-11f, -0x1.dc53f8p-12f, -0x1.b682aap-16f, 0x1.455d3ep-13f,
+    0x1.268f8cp-14f, -0x1.03ed4ep-12f, 0x1.04e57p-10f, 0x1.68e5c6p-14f,
+    0x1.f7e11p-15f, -0x1.5e0bb4p-14f, -0x1.198e88p-13f, -0x1.ae11c6p-14f,
     /* node 80 x */
-    0x1.1609b2p-9f, 0x1.9fb44p-6f, -0x1.fa1c14p-9f, -0x1.5d9p-3f,
-    0x1.2a0a5cp-10f, -0x1.e46c3ap-14f, -0x1.d4d7ep-9f, 0x1.c3c37cp-10f,
-    -0x1.0fd058p-8f, -0x1.655c2cp-11f,
+    0x1.1664aap-9f, 0x1.a0b3ecp-6f, -0x1.a7541ep-9f, -0x1.6081eep-3f,
+    0x1.29a314p-10f, -0x1.5acdap-12f, -0x1.94248ap-9f, 0x1.bb4d34p-10f,
+    -0x1.1c21cap-8f, -0x1.5f551cp-11f, 0x1.1a1286p-14f, 0x1.17ca6cp-11f,
+    -0x1.bdfc66p-11f, 0x1.4762d4p-12f, 0x1.7a4ffep-14f, -0x1.76b31ap-13f,
+    0x1.63c66ap-14f, -0x1.d464aap-11f, 0x1.505148p-14f, -0x1.ffb392p-16f,
     /* node 80 y */
-    -0x1.512192p-9f, -0x1.550532p-7f, 0x1.8dcbc4p-6f, 0x1.942db6p-4f,
-    -0x1.82176p-10f, 0x1.0dda1p-13f, -0x1.1d07f4p-9f, -0x1.85d0bap-10f,
-    -0x1.e94ed4p-12f, 0x1.c8ff9cp-13f,
+    -0x1.4b1fbp-9f, -0x1.3cb318p-7f, 0x1.82d51p-6f, 0x1.9f0e34p-4f,
+    -0x1.762604p-10f, 0x1.5c6098p-11f, -0x1.73b46p-9f, -0x1.5af7dep-10f,
+    0x1.3a218ap-14f, 0x1.93e898p-13f, 0x1.2c57fp-14f, -0x1.084b4ap-15f,
+    0x1.69349ep-10f, 0x1.bf6ff8p-13f, -0x1.6de32ap-12f, 0x1.e5c10ap-12f,
+    -0x1.012eep-13f, 0x1.b8eb8ap-10f, -0x1.084a98p-11f, 0x1.dde1c8p-15f,
     /* node 80 z */
-    -0x1.07e75cp-8f, 0x1.c231acp-5f, -0x1.466766p-5f, 0x1.9ee0cep-2f,
-    -0x1.3e855p-9f, -0x1.c6a3e6p-11f, 0x1.c806aap-11f, -0x1.708e08p-9f,
-    0x1.4bfb7p-12f, 0x1.5fcbbcp-11f,
+    -0x1.e9e6dep-9f, 0x1.c32c4ep-5f, -0x1.4e23e8p-5f, 0x1.a1b7bcp-2f,
+    -0x1.12504cp-9f, -0x1.a01e6cp-12f, 0x1.0bf634p-12f, -0x1.369ec4p-9f,
+    0x1.923064p-10f, 0x1.6b371p-11f, -0x1.3626bap-16f, -0x1.3bd5f2p-13f,
+    0x1.2ca0a8p-10f, -0x1.42728p-12f, 0x1.375b04p-10f, 0x1.22b834p-12f,
+    -0x1.5efd2ap-14f, 0x1.b8504p-10f, -0x1.1a768cp-11f, -0x1.141bfp-15f,
     /* node 81 x */
-    0x1.af41f8p-10f, 0x1.02576ep-4f, -0x1.6b9b3p-6f, -0x1.4c1cp-3f,
-    0x1.4c9a32p-10f, -0x1.113712p-11f, 0x1.0b81e6p-8f, 0x1.140e4ep-12f,
-    0x1.06c30ap-7f, 0x1.c9a47ap-11f,
+    0x1.1a00d6p-10f, 0x1.0ac4bap-4f, -0x1.80cdp-6f, -0x1.4654eep-3f,
+    0x1.31665p-11f, 0x1.97b3bep-21f, 0x1.1b3816p-9f, -0x1.68034ap-12f,
+    0x1.d6c77cp-8f, 0x1.aeb03cp-11f, 0x1.16ad9cp-12f, -0x1.28bce8p-10f,
+    0x1.9bda7p-9f, 0x1.b8777ep-12f, -0x1.bcc416p-10f, 0x1.9331dcp-10f,
+    -0x1.e37f12p-13f, 0x1.3b792p-10f, -0x1.60ecdcp-11f, 0x1.93d96p-12f,
     /* node 81 y */
-    -0x1.98ea44p-10f, -0x1.656f72p-6f, 0x1.043156p-4f, 0x1.4c811ap-3f,
-    -0x1.7c914ap-12f, 0x1.0a99ep-10f, 0x1.9c4e8ap-8f, -0x1.2d6098p-10f,
-    0x1.3b54ecp-11f, -0x1.d85bccp-11f,
+    -0x1.1e2eb8p-10f, -0x1.7afeeap-6f, 0x1.063f9ap-4f, 0x1.47a9bcp-3f,
+    0x1.4d1b16p-12f, 0x1.698e9ap-12f, 0x1.b32a82p-8f, -0x1.2f93f2p-11f,
+    0x1.39247cp-9f, -0x1.a369ccp-11f, -0x1.d2c9fp-13f, 0x1.6751c8p-15f,
+    -0x1.5b2f48p-10f, -0x1.2a2adep-10f, 0x1.e59f54p-10f, -0x1.21697cp-12f,
+    0x1.c3eb1cp-13f, -0x1.34464ap-9f, 0x1.a0bb3ep-11f, -0x1.93ffcp-12f,
     /* node 81 z */
-    -0x1.7f8128p-8f, 0x1.3357ccp-4f, -0x1.310664p-4f, 0x1.7a785cp-1f,
-    -0x1.df109p-9f, -0x1.13e0bcp-10f, 0x1.4578dep-9f, -0x1.df191ap-9f,
-    -0x1.813432p-8f, -0x1.0c8eap-13f,
+    -0x1.45cc86p-8f, 0x1.2ceea8p-4f, -0x1.303df4p-4f, 0x1.7aa28p-1f,
+    -0x1.4c2a66p-9f, -0x1.10e3b2p-10f, 0x1.5a3036p-9f, -0x1.4680b2p-9f,
+    -0x1.75d3dap-9f, -0x1.a6081ap-20f, -0x1.512fd8p-12f, 0x1.2a37dp-11f,
+    -0x1.ac93bp-11f, -0x1.465702p-10f, 0x1.7477f4p-9f, -0x1.1b1524p-11f,
+    0x1.10e038p-12f, -0x1.254804p-12f, 0x1.7b6e7cp-12f, -0x1.3dc41cp-11f,
     /* node 82 x */
-    0x1.1a29ccp-7f, 0x1.63a3dep-4f, -0x1.443aa6p-7f, -0x1.f9ae8ep-4f,
-    0x1.5ce4f2p-8f, 0x1.b0f00ap-9f, 0x1.885168p-8f, 0x1.ae3472p-9f,
-    -0x1.82d3cp-9f, -0x1.6a2adap-10f,
+    0x1.35f408p-7f, 0x1.603694p-4f, -0x1.569c76p-7f, -0x1.0a5a86p-3f,
+    0x1.af47dp-8f, 0x1.c5d0ap-10f, 0x1.c1342cp-8f, 0x1.20918cp-8f,
+    0x1.21e20cp-10f, -0x1.4b980ap-10f, -0x1.510614p-13f, -0x1.0bf42cp-11f,
+    -0x1.06b144p-8f, -0x1.b092c2p-10f, 0x1.85ac44p-9f, 0x1.8af524p-11f,
+    -0x1.b07df6p-13f, -0x1.6124f2p-8f, 0x1.f739cap-11f, -0x1.117044p-10f,
     /* node 82 y */
-    -0x1.77972ap-8f, -0x1.395e3cp-7f, 0x1.e37f3p-4f, 0x1.d309f4p-3f,
-    -0x1.23d81cp-8f, 0x1.ba9b9cp-10f, -0x1.18ac1ap-6f, -0x1.2ef93ap-9f,
-    -0x1.1a9e78p-7f, -0x1.665a8ep-13f,
+    -0x1.3f602ep-8f, -0x1.65d872p-7f, 0x1.de3944p-4f, 0x1.d790ccp-3f,
+    -0x1.cb252ap-9f, 0x1.20dcb2p-9f, -0x1.01619cp-6f, -0x1.2efe3cp-10f,
+    -0x1.bcc83cp-8f, -0x1.9166ecp-13f, -0x1.e95d2ep-15f, 0x1.b872fp-11f,
+    -0x1.a8230ap-10f, 0x1.2e5d6ep-12f, 0x1.01de14p-11f, -0x1.f4e38ep-10f,
+    -0x1.6be736p-13f, 0x1.670dcap-9f, -0x1.4c5126p-10f, -0x1.d27aap-12f,
     /* node 82 z */
-    -0x1.da73b8p-7f, 0x1.0edb8p-4f, -0x1.ee962ap-4f, 0x1.05de6p+0f,
-    -0x1.50cefp-7f, -0x1.150e0ap-8f, -0x1.04e572p-6f, -0x1.ce4ed4p-8f,
-    -0x1.0c019ep-8f, 0x1.8df476p-10f,
+    -0x1.b78794p-7f, 0x1.00d4b4p-4f, -0x1.effcbap-4f, 0x1.06e6eap+0f,
+    -0x1.2c7f7ep-7f, -0x1.b91736p-9f, -0x1.b05618p-7f, -0x1.8157f8p-8f,
+    -0x1.b27f4ap-9f, 0x1.87e022p-10f, -0x1.01b0aep-11f, 0x1.d4a85ep-11f,
+    -0x1.00cd8cp-9f, -0x1.3952bcp-14f, 0x1.ebabap-9f, -0x1.b55e5ep-9f,
+    0x1.636982p-15f, 0x1.4ae8eep-8f, -0x1.6a9582p-12f, -0x1.84edcp-15f,
     /* node 83 x */
-    -0x1.6246fcp-13f, 0x1.ef3a7ap-4f, -0x1.742bbp-15f, -0x1.754edep-13f,
-    -0x1.a05a06p-14f, -0x1.76388ap-8f, -0x1.81cf42p-6f, -0x1.6a5998p-15f,
-    0x1.dddbb4p-13f, 0x1.2280ep-16f,
+    0x1.78519ep-15f, 0x1.eae352p-4f, 0x1.10f0d2p-11f, -0x1.12bd1ap-12f,
+    0x1.03ab2ep-16f, -0x1.41f0ecp-8f, -0x1.6723ap-6f, 0x1.14ecfp-14f,
+    -0x1.c8c75ap-12f, 0x1.88e466p-16f, -0x1.e2e5bcp-13f, 0x1.120c7ep-11f,
+    -0x1.d03904p-12f, 0x1.3355d6p-10f, 0x1.d2fa4ep-9f, -0x1.1f22fep-9f,
+    0x1.300de2p-14f, 0x1.beb4ccp-14f, 0x1.123518p-14f, -0x1.18dbc4p-15f,
     /* node 83 y */
-    -0x1.7d891ep-6f, -0x1.5b3faap-11f, 0x1.1e3c92p-3f, 0x1.0fe73p-2f,
-    -0x1.637a98p-7f, -0x1.2801ecp-9f, 0x1.1fa62ap-10f, -0x1.cc22a6p-7f,
-    0x1.92fc72p-8f, -0x1.060bdp-9f,
+    -0x1.5de33ap-6f, -0x1.b43f62p-10f, 0x1.1d13e2p-3f, 0x1.19d08ap-2f,
+    -0x1.140d54p-7f, -0x1.5f8374p-10f, -0x1.e7c886p-12f, -0x1.764e56p-7f,
+    0x1.a4bd2p-7f, -0x1.c51b96p-10f, -0x1.1d7f98p-13f, 0x1.2f3bfap-11f,
+    0x1.e03eb6p-9f, -0x1.337008p-9f, 0x1.01ee42p-7f, 0x1.33e56cp-11f,
+    0x1.350d22p-11f, 0x1.363086p-8f, 0x1.82d9aap-12f, -0x1.026d6ep-11f,
     /* node 83 z */
-    -0x1.7268bep-6f, -0x1.da6f56p-14f, -0x1.2da938p-3f, 0x1.2b4e92p+0f,
-    -0x1.0f1bccp-6f, -0x1.ca0f8ap-9f, 0x1.3a6804p-9f, -0x1.610494p-7f,
-    -0x1.a71ce8p-7f, 0x1.10bc04p-8f,
+    -0x1.70d886p-6f, -0x1.12cb88p-10f, -0x1.29f5dep-3f, 0x1.2f0f0ap+0f,
+    -0x1.111634p-6f, -0x1.28cc42p-10f, 0x1.240f5ap-10f, -0x1.5abf64p-7f,
+    -0x1.e16246p-7f, 0x1.0d119cp-8f, -0x1.8201f8p-14f, 0x1.13b224p-9f,
+    0x1.8c98a4p-8f, 0x1.ebffe6p-13f, -0x1.49e4bep-9f, -0x1.61c51ap-10f,
+    0x1.9de0d4p-11f, 0x1.73d388p-7f, -0x1.afcbd4p-12f, 0x1.12f3bp-10f,
     /* node 84 x */
-    -0x1.173aa4p-7f, 0x1.63df8ep-4f, 0x1.41c622p-7f, 0x1.fa09dp-4f,
-    -0x1.563c7p-8f, 0x1.fb1d4cp-13f, 0x1.440662p-7f, -0x1.a4d12p-9f,
-    0x1.b17284p-9f, 0x1.635462p-10f,
+    -0x1.37ca24p-7f, 0x1.5f6932p-4f, 0x1.4b771cp-7f, 0x1.0acb9p-3f,
+    -0x1.b15f7ep-8f, 0x1.892672p-10f, 0x1.1356a2p-7f, -0x1.239de2p-8f,
+    -0x1.eb093ap-11f, 0x1.42af64p-10f, -0x1.9f3336p-13f, 0x1.4b2162p-13f,
+    0x1.173b28p-8f, 0x1.4e533cp-17f, -0x1.52f1cep-8f, -0x1.303106p-10f,
+    0x1.3f70bp-13f, 0x1.61dc2ep-8f, -0x1.0037e6p-10f, 0x1.195d6cp-10f,
     /* node 84 y */
-    -0x1.76b236p-8f, 0x1.2d8408p-7f, 0x1.e3bf28p-4f, 0x1.d39ae4p-3f,
-    -0x1.223f02p-8f, -0x1.121b62p-8f, 0x1.1e28b6p-6f, -0x1.30d9fcp-9f,
-    -0x1.33fc82p-7f, -0x1.350444p-12f,
+    -0x1.447848p-8f, 0x1.43ad3cp-7f, 0x1.dbbd9ep-4f, 0x1.d85b92p-3f,
+    -0x1.cef4d6p-9f, -0x1.060ebep-8f, 0x1.1292aap-6f, -0x1.43dab4p-10f,
+    -0x1.9b40cp-8f, -0x1.e6743ap-13f, 0x1.390c14p-14f, 0x1.86e82cp-13f,
+    -0x1.0935p-10f, -0x1.0648b8p-10f, 0x1.20c1ep-9f, 0x1.b246b2p-10f,
+    -0x1.1324fep-12f, 0x1.54375ap-9f, -0x1.546452p-10f, -0x1.a68f66p-12f,
     /* node 84 z */
-    -0x1.d3f386p-7f, -0x1.0f75d6p-4f, -0x1.edff5ap-4f, 0x1.05f6b6p+0f,
-    -0x1.4d1b44p-7f, 0x1.9504d8p-10f, 0x1.fe167ep-7f, -0x1.ccb282p-8f,
-    -0x1.2f525p-8f, 0x1.7eebaep-10f,
+    -0x1.b8e3f6p-7f, -0x1.0c473cp-4f, -0x1.f2f078p-4f, 0x1.06fc9p+0f,
+    -0x1.2c87c6p-7f, 0x1.03981p-10f, 0x1.0070f6p-6f, -0x1.876694p-8f,
+    -0x1.4c0812p-9f, 0x1.836d2ep-10f, 0x1.e15e74p-12f, 0x1.76f45cp-13f,
+    -0x1.4d998cp-10f, -0x1.ff0ea8p-11f, 0x1.892dc6p-11f, 0x1.c3dbccp-10f,
+    -0x1.d3485cp-15f, 0x1.3a84c8p-8f, -0x1.e64f76p-12f, -0x1.742cbp-17f,
     /* node 85 x */
-    -0x1.9a936p-10f, 0x1.038312p-4f, 0x1.6d9b16p-6f, 0x1.4c5658p-3f,
-    -0x1.4d5c62p-10f, 0x1.a81f32p-12f, 0x1.c679e4p-10f, -0x1.32f968p-12f,
-    -0x1.204eeap-7f, -0x1.cb168ap-11f,
+    -0x1.160e22p-10f, 0x1.08365ep-4f, 0x1.7db63p-6f, 0x1.4666dcp-3f,
+    -0x1.275cbep-11f, -0x1.108366p-11f, 0x1.3fa9ccp-9f, 0x1.560d84p-12f,
+    -0x1.c5767cp-8f, -0x1.a8b666p-11f, 0x1.28ed06p-12f, 0x1.f9f33cp-11f,
+    -0x1.85b3fap-9f, -0x1.08ac46p-15f, 0x1.c75a48p-11f, 0x1.79f596p-10f,
+    0x1.c0d00cp-13f, -0x1.597e8p-10f, 0x1.430522p-11f, -0x1.962e1ap-12f,
     /* node 85 y */
-    -0x1.83fdp-10f, 0x1.65ac24p-6f, 0x1.0480acp-4f, 0x1.4c7858p-3f,
-    -0x1.852b66p-12f, 0x1.0e8356p-11f, -0x1.00863p-7f, -0x1.2cb32ap-10f,
-    0x1.74372p-21f, -0x1.af1e4ap-11f,
+    -0x1.0a64a4p-10f, 0x1.7cef6ap-6f, 0x1.072f4cp-4f, 0x1.474b08p-3f,
+    0x1.78ad16p-12f, 0x1.ab1ba8p-16f, -0x1.e8be1ap-8f, -0x1.172876p-11f,
+    0x1.28e342p-9f, -0x1.8cb6a2p-11f, 0x1.b6031ep-13f, 0x1.6b0a64p-12f,
+    -0x1.9aaf5p-10f, 0x1.3226cep-11f, 0x1.0367eep-10f, 0x1.f2867ap-11f,
+    0x1.172de8p-12f, -0x1.3170ecp-9f, 0x1.862e2ep-11f, -0x1.b5b6dcp-12f,
     /* node 85 z */
-    -0x1.7e389p-8f, -0x1.34d29cp-4f, -0x1.309f4p-4f, 0x1.7a7cf6p-1f,
-    -0x1.e3bbeap-9f, 0x1.1e3384p-11f, -0x1.955074p-9f, -0x1.e3e824p-9f,
-    -0x1.9da3e8p-8f, -0x1.c5153cp-14f,
+    -0x1.4384ap-8f, -0x1.30783cp-4f, -0x1.300ab6p-4f, 0x1.7a9c5p-1f,
+    -0x1.4928c8p-9f, 0x1.334a8ap-12f, -0x1.a8d9dp-9f, -0x1.44efc6p-9f,
+    -0x1.6e9ceap-9f, 0x1.705b84p-16f, 0x1.069874p-12f, 0x1.4e34c4p-11f,
+    -0x1.ab4abep-11f, -0x1.226e28p-12f, 0x1.610b2ap-9f, 0x1.32393ep-10f,
+    0x1.1fb5cp-12f, -0x1.5d5dap-12f, 0x1.60d8d8p-12f, -0x1.430e12p-11f,
     /* node 86 x */
-    -0x1.180198p-9f, 0x1.9d24b8p-6f, 0x1.f9ef6ap-9f, 0x1.5d87ep-3f,
-    -0x1.2badd2p-10f, -0x1.3c5daap-11f, -0x1.8d09bp-9f, -0x1.c210f4p-10f,
-    0x1.194bc6p-8f, 0x1.6ebcd8p-11f,
+    -0x1.14cc54p-9f, 0x1.9fbe56p-6f, 0x1.bbcb1ap-9f, 0x1.605b4ep-3f,
+    -0x1.27fd5ep-10f, -0x1.652ddp-12f, -0x1.969998p-9f, -0x1.b6d4ccp-10f,
+    0x1.168054p-8f, 0x1.638ba8p-11f, 0x1.669b6p-15f, -0x1.9cfa44p-12f,
+    0x1.8c0f98p-11f, 0x1.da1d3ep-13f, 0x1.0ac87ep-14f, -0x1.73e352p-13f,
+    -0x1.0c11e2p-14f, 0x1.d6e2e8p-11f, -0x1.932c06p-15f, 0x1.56c51cp-16f,
     /* node 86 y */
-    -0x1.56d9bp-9f, 0x1.4bf93ep-7f, 0x1.8ca1d2p-6f, 0x1.945194p-4f,
-    -0x1.7a71aep-10f, -0x1.96d47ap-10f, 0x1.bc08eap-9f, -0x1.7fc024p-10f,
-    0x1.15a88cp-13f, 0x1.817c18p-13f,
+    -0x1.4e61acp-9f, 0x1.33533ep-7f, 0x1.810172p-6f, 0x1.9f66b4p-4f,
+    -0x1.79ffeep-10f, -0x1.1a0486p-10f, 0x1.8ea5ecp-9f, -0x1.5f90f4p-10f,
+    0x1.be4ab4p-14f, 0x1.761094p-13f, -0x1.86d352p-14f, -0x1.3a5f36p-13f,
+    0x1.7dbc92p-10f, -0x1.b1353p-12f, 0x1.3c98cap-11f, -0x1.2ed698p-11f,
+    -0x1.2b4af6p-13f, 0x1.bf81cap-10f, -0x1.09dce6p-11f, 0x1.333e6ep-14f,
     /* node 86 z */
-    -0x1.08009ep-8f, -0x1.c5475ep-5f, -0x1.46a952p-5f, 0x1.9ee68cp-2f,
-    -0x1.3b317ep-9f, -0x1.4914ccp-11f, 0x1.2d7918p-12f, -0x1.6da0d4p-9f,
-    0x1.5be9a8p-11f, 0x1.5f130ep-11f,
+    -0x1.eaea36p-9f, -0x1.c8088ep-5f, -0x1.4e68ep-5f, 0x1.a1c0aep-2f,
+    -0x1.12de0ap-9f, -0x1.bd7a0cp-13f, -0x1.a02666p-14f, -0x1.37565cp-9f,
+    0x1.97546ap-10f, 0x1.6900fcp-11f, -0x1.31e304p-16f, -0x1.7f83d6p-13f,
+    0x1.34d146p-10f, -0x1.74317p-12f, 0x1.2a0ba2p-10f, -0x1.e4044cp-13f,
+    -0x1.786884p-14f, 0x1.bb1c0ap-10f, -0x1.1c885p-11f, -0x1.c8f5cp-16f,
     /* node 87 x */
-    -0x1.4495cp-10f, 0x1.190094p-8f, 0x1.dd1732p-9f, 0x1.7a671ep-4f,
-    -0x1.9b99b6p-11f, -0x1.d159ep-11f, 0x1.d824b4p-11f, -0x1.bbd828p-12f,
-    -0x1.b318fp-9f, -0x1.97b694p-13f,
+    -0x1.2f81f4p-10f, 0x1.0f7b06p-8f, 0x1.e94daep-9f, 0x1.7b58p-4f,
+    -0x1.73d44ep-11f, -0x1.bbc718p-11f, 0x1.602c1p-11f, -0x1.4951bep-12f,
+    -0x1.887e6cp-9f, -0x1.4c37f8p-13f, -0x1.c4bd5ap-16f, 0x1.223fb8p-12f,
+    0x1.fa8ac4p-14f, -0x1.479efp-12f, 0x1.86d278p-11f, 0x1.1870bcp-13f,
+    0x1.6fd598p-15f, 0x1.88bcccp-15f, -0x1.38493ap-13f, -0x1.5023c4p-15f,
     /* node 87 y */
-    -0x1.6716dcp-10f, 0x1.607edcp-7f, 0x1.baed44p-8f, 0x1.874ffp-5f,
-    -0x1.2cb94p-12f, -0x1.a96644p-16f, -0x1.13377p-11f, -0x1.cb5f4cp-13f,
-    -0x1.16332cp-14f, -0x1.c71deep-11f,
+    -0x1.66debcp-10f, 0x1.625d5cp-7f, 0x1.bf91b2p-8f, 0x1.863566p-5f,
+    -0x1.2cee0ep-12f, -0x1.25257p-15f, -0x1.299dfep-11f, -0x1.d40d58p-13f,
+    -0x1.9098f8p-15f, -0x1.c1747ap-11f, 0x1.c488b2p-17f, 0x1.94123cp-15f,
+    0x1.5aeda8p-17f, 0x1.1332fp-16f, 0x1.4da3c6p-13f, 0x1.1a9cd8p-15f,
+    0x1.16654p-15f, -0x1.58aecep-13f, -0x1.bc5a88p-18f, -0x1.c081d4p-18f,
     /* node 87 z */
-    -0x1.df19cep-10f, -0x1.b12206p-7f, -0x1.0861d4p-7f, 0x1.306b58p-3f,
-    -0x1.d1c7a2p-11f, 0x1.227b98p-16f, -0x1.1b4b12p-11f, -0x1.bc881cp-11f,
-    -0x1.d8da9p-10f, -0x1.041f6ep-11f,
+    -0x1.a6d9f8p-10f, -0x1.b1366p-7f, -0x1.0cc62ep-7f, 0x1.3118a6p-3f,
+    -0x1.400c3ep-11f, 0x1.73a24cp-16f, -0x1.7e673ep-11f, -0x1.208374p-11f,
+    -0x1.dbaf68p-11f, -0x1.dc0554p-12f, 0x1.690ac2p-17f, 0x1.34c34cp-13f,
+    0x1.5eee6ep-14f, -0x1.d598b2p-13f, 0x1.c25e18p-11f, 0x1.245da4p-13f,
+    0x1.f1ac6ep-15f, -0x1.2cf2p-14f, -0x1.29a16ap-13f, -0x1.a5cb1ep-14f,
     /* node 88 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 88 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 88 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 89 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 89 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 89 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 90 x */
-    0x1.2c7e7ap-10f, 0x1.e272bap-9f, -0x1.70e66ep-9f, -0x1.b8f65p-5f,
-    0x1.b4ed2p-12f, 0x1.57da9ap-14f, -0x1.607f42p-10f, 0x1.580e14p-11f,
-    -0x1.e4c492p-11f, 0x1.f9ae1ap-13f,
+    0x1.1873cep-10f, 0x1.d3461cp-9f, -0x1.436658p-9f, -0x1.beb5e8p-5f,
+    0x1.40da12p-12f, -0x1.b1a1f6p-17f, -0x1.1a940ep-10f, 0x1.15868ap-11f,
+    -0x1.6ec384p-10f, 0x1.f29b3ep-13f, 0x1.3fa5a6p-16f, 0x1.9e17fep-13f,
+    -0x1.5fa97ep-12f, 0x1.41ac58p-13f, -0x1.d782d4p-13f, -0x1.0186bap-12f,
+    0x1.30f6p-15f, -0x1.7b3346p-12f, 0x1.0e63a8p-14f, 0x1.2b1854p-16f,
     /* node 90 y */
-    -0x1.5f3842p-10f, -0x1.f47fa2p-8f, 0x1.aa3e26p-9f, 0x1.8f47ap-5f,
-    -0x1.3301ccp-11f, -0x1.f2d3a6p-17f, -0x1.17bee6p-12f, -0x1.1af942p-11f,
-    -0x1.cc744ep-11f, -0x1.c5dcdcp-12f,
+    -0x1.41e186p-10f, -0x1.ee1584p-8f, 0x1.97531p-9f, 0x1.93cea8p-5f,
+    -0x1.cda86ap-12f, 0x1.0d592cp-14f, -0x1.ab42dp-12f, -0x1.8187ecp-12f,
+    -0x1.7c5feep-12f, -0x1.bad782p-12f, 0x1.08ef82p-17f, 0x1.a5f8cp-15f,
+    0x1.d0b796p-13f, -0x1.36d864p-14f, 0x1.57db8ap-12f, 0x1.16e882p-13f,
+    -0x1.c0d33ap-18f, 0x1.ec1732p-13f, -0x1.45bbfap-14f, -0x1.8bb002p-15f,
     /* node 90 z */
-    -0x1.f85ff2p-11f, 0x1.da22f8p-9f, -0x1.d8e916p-9f, 0x1.2e0588p-4f,
-    -0x1.0b70ep-11f, -0x1.ca0a94p-14f, 0x1.24016cp-11f, -0x1.338bd8p-11f,
-    -0x1.3bc8e8p-11f, -0x1.4e1b56p-15f,
+    -0x1.cd57b8p-11f, 0x1.e7bb3ep-9f, -0x1.edaba2p-9f, 0x1.30590cp-4f,
+    -0x1.9fa0f2p-12f, -0x1.edded2p-16f, 0x1.7f7bdp-12f, -0x1.dbcbd4p-12f,
+    -0x1.477332p-13f, -0x1.16a94ep-15f, -0x1.e26208p-18f, -0x1.7cc2aap-16f,
+    0x1.0dc76ap-12f, -0x1.a477e2p-14f, 0x1.a3e738p-13f, 0x1.817bdp-13f,
+    -0x1.f8e118p-18f, 0x1.1633b4p-12f, -0x1.7a8b52p-15f, -0x1.ae2946p-16f,
     /* node 91 x */
-    0x1.7a60c6p-11f, 0x1.5bc39cp-7f, -0x1.550c4ap-7f, -0x1.91fa34p-4f,
-    0x1.fe734ep-12f, -0x1.01a91p-12f, 0x1.46eca2p-11f, 0x1.28205ep-12f,
-    0x1.3b0bcp-9f, 0x1.09718p-14f,
+    0x1.4aaafap-11f, 0x1.6463cp-7f, -0x1.615dfep-7f, -0x1.8fb80ep-4f,
+    0x1.9eaa98p-12f, -0x1.756278p-13f, 0x1.97e4f8p-12f, 0x1.90e8cap-13f,
+    0x1.2a9484p-9f, 0x1.3a82dcp-15f, 0x1.824a48p-16f, -0x1.66c4aap-12f,
+    0x1.be7578p-12f, 0x1.7388f8p-14f, -0x1.676facp-11f, 0x1.6da95ap-13f,
+    -0x1.1d488p-14f, 0x1.6e346ep-12f, -0x1.95a4b2p-14f, 0x1.611a26p-14f,
     /* node 91 y */
-    -0x1.6c4dd8p-11f, -0x1.53c4bap-7f, 0x1.5cd55ap-7f, 0x1.924f6ap-4f,
-    -0x1.04922ap-12f, 0x1.52542p-12f, 0x1.15981ap-9f, -0x1.ccc18p-12f,
-    0x1.70bfd6p-12f, -0x1.0531bap-14f,
+    -0x1.4d5e5cp-11f, -0x1.635b08p-7f, 0x1.5e6f1ep-7f, 0x1.9068aap-4f,
+    -0x1.9bab06p-13f, 0x1.bab034p-13f, 0x1.25038cp-9f, -0x1.a004c2p-12f,
+    0x1.8f83d2p-12f, -0x1.5b1306p-15f, -0x1.27e308p-14f, -0x1.31d716p-16f,
+    -0x1.8bb2d2p-12f, -0x1.74bc42p-12f, 0x1.592308p-11f, -0x1.2455d4p-13f,
+    0x1.5a97bcp-17f, -0x1.bc96ap-13f, 0x1.9f9dfap-14f, -0x1.2ec02cp-14f,
     /* node 91 z */
-    -0x1.30f9ccp-10f, 0x1.9f2eacp-6f, -0x1.9c8a28p-6f, 0x1.b992dcp-3f,
-    -0x1.b25dc2p-11f, -0x1.7ff73ap-11f, 0x1.07016ap-10f, -0x1.b62c68p-11f,
-    -0x1.031588p-9f, 0x1.1289aap-14f,
+    -0x1.d4ac14p-11f, 0x1.99fd72p-6f, -0x1.9dab46p-6f, 0x1.b9adf4p-3f,
+    -0x1.07ac6ep-11f, -0x1.851e78p-11f, 0x1.0a6fbap-10f, -0x1.03d9dcp-11f,
+    -0x1.161c14p-10f, 0x1.de3126p-14f, -0x1.fa925p-15f, 0x1.a1bcfp-13f,
+    -0x1.414838p-12f, -0x1.8ea758p-12f, 0x1.7af522p-10f, 0x1.6051a4p-16f,
+    0x1.911ac6p-15f, -0x1.1735p-14f, -0x1.21bbd8p-14f, -0x1.26002ap-13f,
     /* node 92 x */
-    0x1.4ad99p-9f, 0x1.8e54a8p-6f, -0x1.54368p-7f, -0x1.949b3p-4f,
-    0x1.5f1276p-10f, -0x1.41ca22p-12f, -0x1.098e16p-10f, 0x1.942706p-10f,
-    -0x1.37dcb8p-9f, -0x1.af0776p-13f,
+    0x1.4ad862p-9f, 0x1.7ee21ap-6f, -0x1.33a404p-7f, -0x1.a00eaap-4f,
+    0x1.5c9fb4p-10f, -0x1.9c4048p-11f, 0x1.0ce2a4p-13f, 0x1.7574b6p-10f,
+    -0x1.8be82cp-9f, -0x1.a7dfdap-13f, -0x1.04dfap-13f, 0x1.9d0f7ep-12f,
+    -0x1.f59274p-10f, -0x1.bf674ep-15f, 0x1.941c3cp-12f, -0x1.764d02p-11f,
+    0x1.899aa4p-14f, -0x1.6ff3ecp-10f, 0x1.3a301cp-11f, -0x1.107b16p-14f,
     /* node 92 y */
-    -0x1.1cbeaap-9f, -0x1.fa1da8p-9f, 0x1.9f7becp-6f, 0x1.5d3f74p-3f,
-    -0x1.cb893ap-10f, -0x1.c2e8dcp-15f, -0x1.095a5ep-8f, -0x1.46906p-10f,
-    -0x1.bfa10cp-9f, 0x1.6180dp-11f,
+    -0x1.14e716p-9f, -0x1.bd09dp-9f, 0x1.a29746p-6f, 0x1.5fa138p-3f,
+    -0x1.ba7de6p-10f, 0x1.146248p-12f, -0x1.19bf9ap-8f, -0x1.261bbcp-10f,
+    -0x1.955b5ep-9f, 0x1.6575ep-11f, 0x1.13b90ep-14f, 0x1.90c17cp-12f,
+    0x1.77bf04p-11f, 0x1.5a2c54p-12f, -0x1.f51e22p-18f, 0x1.8632ccp-14f,
+    0x1.409a4ap-14f, 0x1.228462p-11f, -0x1.228ff2p-13f, -0x1.dddd7p-18f,
     /* node 92 z */
-    -0x1.06d818p-8f, 0x1.47835ap-5f, -0x1.c12b74p-5f, 0x1.9ee414p-2f,
-    -0x1.65d2bap-9f, -0x1.af85b4p-11f, -0x1.8d7a7ap-11f, -0x1.4b5f5p-9f,
-    -0x1.a55094p-10f, 0x1.5e79p-11f,
+    -0x1.e91a52p-9f, 0x1.4d2138p-5f, -0x1.c68872p-5f, 0x1.a1b788p-2f,
+    -0x1.385f84p-9f, -0x1.51587ap-12f, -0x1.a98e2cp-10f, -0x1.0fc9ecp-9f,
+    -0x1.34dc1p-13f, 0x1.721f4p-11f, 0x1.02448cp-14f, 0x1.449096p-15f,
+    0x1.86516ap-10f, -0x1.c820ecp-14f, 0x1.421004p-10f, 0x1.54dcd2p-11f,
+    -0x1.e8375ap-18f, 0x1.5b2dacp-10f, -0x1.da4d64p-12f, -0x1.8c7d0ap-15f,
     /* node 93 x */
-    0x1.27d666p-12f, 0x1.46b32ep-5f, -0x1.a68058p-7f, -0x1.db9b76p-5f,
-    -0x1.58e5aep-10f, -0x1.0530d2p-9f, -0x1.0efc2ep-8f, 0x1.a95d4ap-13f,
-    -0x1.e74cf8p-10f, 0x1.bc7092p-10f,
+    0x1.5d602cp-14f, 0x1.4ac6e4p-5f, -0x1.a68d2p-7f, -0x1.c859cep-5f,
+    -0x1.a05a6ap-10f, -0x1.6c1c7cp-10f, -0x1.1bb334p-8f, -0x1.288b2ep-15f,
+    -0x1.6559f8p-9f, 0x1.afc63ap-10f, 0x1.c59f02p-15f, 0x1.b5b5ap-12f,
+    0x1.18f636p-10f, 0x1.cc902p-11f, -0x1.65146ep-10f, -0x1.0daec8p-12f,
+    0x1.5abdcap-14f, 0x1.f4364ep-10f, -0x1.7c5206p-11f, 0x1.d3818ep-12f,
     /* node 93 y */
-    -0x1.986c4ap-9f, -0x1.0807fep-7f, 0x1.3855bcp-5f, 0x1.d0b8b2p-3f,
-    -0x1.9877c8p-11f, 0x1.3766acp-9f, 0x1.7a3f62p-8f, -0x1.08c73cp-9f,
-    0x1.103002p-8f, -0x1.e40084p-15f,
+    -0x1.b9ea2p-9f, -0x1.ce890ep-8f, 0x1.36d294p-5f, 0x1.d50a9cp-3f,
+    -0x1.15cb86p-10f, 0x1.4b1464p-9f, 0x1.3514a2p-8f, -0x1.285ab6p-9f,
+    0x1.fdaf16p-9f, -0x1.8c7f12p-14f, 0x1.0805bp-13f, -0x1.3806c8p-11f,
+    0x1.0aa774p-9f, -0x1.4bc6fap-13f, -0x1.058ccp-10f, 0x1.20c1cap-10f,
+    -0x1.c1e364p-14f, 0x1.fac68p-11f, 0x1.6a9ebcp-12f, 0x1.64f5e2p-13f,
     /* node 93 z */
-    -0x1.9f12ep-9f, 0x1.adcc94p-6f, -0x1.45b9a8p-4f, 0x1.1983f2p-1f,
-    -0x1.9b5456p-10f, 0x1.2d5518p-10f, 0x1.d1533ap-8f, -0x1.6c247cp-9f,
-    -0x1.218bc6p-10f, -0x1.148f7ap-15f,
+    -0x1.5543aep-9f, 0x1.c3a94ep-6f, -0x1.4a932p-4f, 0x1.1ad044p-1f,
+    -0x1.9a2cbep-11f, 0x1.4efc8cp-10f, 0x1.60093ap-8f, -0x1.e5a33p-10f,
+    0x1.31adeep-9f, 0x1.3c8c0ep-14f, 0x1.9e325ap-13f, -0x1.3789eep-13f,
+    0x1.d3328p-10f, -0x1.bfcf04p-11f, 0x1.0726ep-9f, 0x1.e6012cp-10f,
+    -0x1.2e5758p-15f, 0x1.02b8ecp-12f, -0x1.0100dcp-11f, -0x1.5db1e2p-12f,
     /* node 94 x */
-    0x1.7650eep-14f, 0x1.31ca0ap-5f, 0x1.4b52e2p-16f, 0x1.5c95a2p-14f,
-    0x1.d6ef14p-15f, 0x1.be0a44p-9f, 0x1.a596bp-8f, 0x1.e515bep-16f,
-    -0x1.024212p-14f, 0x1.4514eep-20f,
+    -0x1.e6d21ep-18f, 0x1.36784p-5f, -0x1.56d4d6p-13f, 0x1.daf1ccp-15f,
+    0x1.47180ap-21f, 0x1.893d08p-9f, 0x1.7a42b6p-8f, -0x1.686558p-16f,
+    0x1.66ed94p-13f, -0x1.b03aep-19f, 0x1.46a042p-13f, -0x1.4e3c2ap-13f,
+    0x1.18c9dap-13f, -0x1.c48ac6p-12f, -0x1.cf8096p-10f, 0x1.fae62ep-11f,
+    -0x1.6b2f12p-16f, -0x1.b1f08ep-15f, -0x1.e55298p-16f, 0x1.bbf6aap-18f,
     /* node 94 y */
-    0x1.1b03b6p-12f, 0x1.18228ap-12f, 0x1.e1df12p-5f, 0x1.f25556p-3f,
-    0x1.17bbacp-8f, 0x1.c9278ep-10f, -0x1.c01778p-11f, 0x1.b9da8ap-10f,
-    0x1.672a8ep-8f, -0x1.ab0b14p-9f,
+    -0x1.2c07ep-10f, 0x1.4569e6p-11f, 0x1.fdce38p-5f, 0x1.e49f9p-3f,
+    0x1.3f27d4p-9f, 0x1.3015d4p-10f, -0x1.03c428p-11f, -0x1.327856p-12f,
+    0x1.18b60ap-12f, -0x1.b389a2p-9f, 0x1.132f34p-20f, -0x1.9a6ff2p-15f,
+    -0x1.1388c2p-11f, 0x1.962838p-11f, -0x1.b3c4c6p-9f, -0x1.88b42p-13f,
+    0x1.a7ce3cp-13f, -0x1.2a176p-8f, 0x1.38f522p-9f, -0x1.d2dc02p-14f,
     /* node 94 z */
-    -0x1.0a5c2ep-10f, -0x1.2e0f72p-12f, -0x1.65e6e2p-4f, 0x1.34d922p-1f,
-    0x1.bf9074p-10f, 0x1.5e63fap-11f, -0x1.afad42p-12f, -0x1.1cfc98p-10f,
-    0x1.4b1816p-8f, -0x1.1976f8p-9f,
+    -0x1.66e056p-11f, -0x1.77916ep-14f, -0x1.687248p-4f, 0x1.332648p-1f,
+    0x1.187ce6p-9f, 0x1.f38f22p-13f, -0x1.a6ed7p-11f, -0x1.501458p-11f,
+    0x1.d050bep-8f, -0x1.09ed96p-9f, -0x1.74a78cp-16f, -0x1.be26fep-11f,
+    -0x1.45f9eap-11f, -0x1.cc731ap-11f, 0x1.dcdaeep-9f, 0x1.91e36cp-11f,
+    -0x1.578f28p-13f, -0x1.d6d88p-9f, 0x1.41f118p-11f, -0x1.b24668p-11f,
     /* node 95 x */
-    -0x1.68b28ap-12f, 0x1.458a46p-5f, 0x1.a77b5p-7f, 0x1.db436cp-5f,
-    0x1.4962dcp-10f, -0x1.12a2d6p-10f, -0x1.656372p-8f, -0x1.f7e432p-13f,
-    0x1.a447aap-10f, -0x1.bbef84p-10f,
+    -0x1.0c17e6p-14f, 0x1.47df5ap-5f, 0x1.ac6174p-7f, 0x1.c7ac26p-5f,
+    0x1.a32b06p-10f, -0x1.6f0292p-10f, -0x1.46d488p-8f, 0x1.ef970ap-15f,
+    0x1.565c3cp-9f, -0x1.aca3a8p-10f, 0x1.30baeep-15f, -0x1.043842p-12f,
+    -0x1.37c5fap-10f, -0x1.6b8acep-13f, 0x1.7c15dep-9f, 0x1.cab532p-12f,
+    -0x1.d16824p-15f, -0x1.f1fe6ap-10f, 0x1.8b2eb6p-11f, -0x1.e0e294p-12f,
     /* node 95 y */
-    -0x1.9e5cbap-9f, 0x1.03d0d6p-7f, 0x1.37e3e6p-5f, 0x1.d06062p-3f,
-    -0x1.a68458p-11f, -0x1.6f7104p-9f, -0x1.49a79cp-8f, -0x1.084cdp-9f,
-    0x1.2d3c9cp-8f, -0x1.cba1a8p-19f,
+    -0x1.b6cb72p-9f, 0x1.e40038p-8f, 0x1.392858p-5f, 0x1.d4b0dep-3f,
+    -0x1.14ecfp-10f, -0x1.1c3ebcp-9f, -0x1.398e7p-8f, -0x1.23bd76p-9f,
+    0x1.d8020ap-9f, -0x1.5ecdeep-14f, -0x1.263222p-13f, -0x1.3a208cp-12f,
+    0x1.c83a76p-10f, 0x1.2eb8a8p-11f, -0x1.ea347p-11f, -0x1.449318p-10f,
+    -0x1.27c02cp-14f, 0x1.1407ecp-10f, 0x1.89e702p-12f, 0x1.454972p-13f,
     /* node 95 z */
-    -0x1.ac180cp-9f, -0x1.b90d3ap-6f, -0x1.460742p-4f, 0x1.196a64p-1f,
-    -0x1.a98778p-10f, -0x1.49dacp-9f, -0x1.78fa4cp-8f, -0x1.6dab78p-9f,
-    -0x1.48c5e6p-11f, 0x1.cd9576p-19f,
+    -0x1.536c0ep-9f, -0x1.c6cb0cp-6f, -0x1.494832p-4f, 0x1.1abdp-1f,
+    -0x1.9c4352p-11f, -0x1.c604b6p-10f, -0x1.88103ep-8f, -0x1.db675p-10f,
+    0x1.0414bcp-9f, 0x1.4f6134p-14f, -0x1.d645cap-13f, 0x1.5d4e3p-13f,
+    0x1.8363ccp-10f, -0x1.0b7ae6p-12f, 0x1.978e6ap-9f, -0x1.fc3586p-11f,
+    0x1.d0a9fap-19f, 0x1.78f932p-12f, -0x1.cd655ep-12f, -0x1.6c15d4p-12f,
     /* node 96 x */
-    -0x1.522e78p-9f, 0x1.8820fcp-6f, 0x1.5213bep-7f, 0x1.947a7p-4f,
-    -0x1.5efa92p-10f, -0x1.9cdadap-10f, 0x1.4ab614p-11f, -0x1.909a9ap-10f,
-    0x1.6bd06ep-9f, 0x1.92811cp-13f,
+    -0x1.4c9cbcp-9f, 0x1.7e6bdp-6f, 0x1.35849ap-7f, 0x1.a01b08p-4f,
+    -0x1.5ff1d2p-10f, -0x1.c463d2p-11f, 0x1.9023ep-15f, -0x1.74741cp-10f,
+    0x1.7df25p-9f, 0x1.94d89p-13f, -0x1.4013acp-13f, -0x1.6e4e98p-12f,
+    0x1.e91fa6p-10f, -0x1.82d00cp-13f, 0x1.5ea9c8p-11f, -0x1.56024cp-11f,
+    -0x1.804412p-14f, 0x1.7dd68cp-10f, -0x1.2c889ap-11f, 0x1.1ed64ep-14f,
     /* node 96 y */
-    -0x1.1e6318p-9f, 0x1.e90e98p-9f, 0x1.9ef8fcp-6f, 0x1.5d5ac8p-3f,
-    -0x1.c5a39ep-10f, -0x1.645478p-11f, 0x1.3521bp-8f, -0x1.42d548p-10f,
-    -0x1.a6fd64p-9f, 0x1.4d1df4p-11f,
+    -0x1.1956d8p-9f, 0x1.b62912p-9f, 0x1.a08de2p-6f, 0x1.5fd748p-3f,
+    -0x1.bf9666p-10f, -0x1.fd7312p-12f, 0x1.16b5p-8f, -0x1.2c21e6p-10f,
+    -0x1.8bbbb2p-9f, 0x1.5ae70ap-11f, -0x1.3f46c2p-14f, 0x1.e9cbe8p-13f,
+    0x1.bb3794p-11f, -0x1.dc5d7p-12f, 0x1.12adfp-12f, -0x1.539994p-15f,
+    0x1.a6ea2cp-15f, 0x1.204b48p-11f, -0x1.0b67f2p-13f, 0x1.d374b8p-18f,
     /* node 96 z */
-    -0x1.0846fcp-8f, -0x1.4ac43p-5f, -0x1.c19b9ap-5f, 0x1.9ee344p-2f,
-    -0x1.635214p-9f, -0x1.317aacp-11f, 0x1.0a769ap-9f, -0x1.48f458p-9f,
-    -0x1.2e4a42p-10f, 0x1.57fbep-11f,
+    -0x1.eb8064p-9f, -0x1.5024d4p-5f, -0x1.c6e65cp-5f, 0x1.a1c406p-2f,
+    -0x1.3a1298p-9f, -0x1.fa2f1ap-14f, 0x1.88bf32p-10f, -0x1.10dffep-9f,
+    -0x1.5c7cdcp-13f, 0x1.6bbd3ep-11f, -0x1.99d54ep-14f, -0x1.138b5p-17f,
+    0x1.8b3ffep-10f, -0x1.1f626ep-11f, 0x1.49f1ap-10f, -0x1.9e096cp-12f,
+    -0x1.2c6522p-16f, 0x1.64a014p-10f, -0x1.d7f89ep-12f, -0x1.45ff5ap-15f,
     /* node 97 x */
-    -0x1.6fbde2p-11f, 0x1.5c1b08p-7f, 0x1.5582c2p-7f, 0x1.9209bp-4f,
-    -0x1.f908f6p-12f, -0x1.a29442p-13f, 0x1.8b44bcp-12f, -0x1.283312p-12f,
-    -0x1.48d20ap-9f, -0x1.03d66cp-14f,
+    -0x1.4ac464p-11f, 0x1.5eae98p-7f, 0x1.6008eep-7f, 0x1.8fc054p-4f,
+    -0x1.9da718p-12f, -0x1.58dcb6p-12f, 0x1.aee41p-12f, -0x1.994452p-13f,
+    -0x1.250c34p-9f, -0x1.3f1854p-15f, 0x1.bd6158p-16f, 0x1.4433acp-12f,
+    -0x1.a4e91p-12f, -0x1.a32624p-14f, 0x1.397c04p-12f, 0x1.a6f67ep-13f,
+    0x1.09a7dp-14f, -0x1.7c4806p-12f, 0x1.5ede06p-14f, -0x1.633f6ep-14f,
     /* node 97 y */
-    -0x1.631642p-11f, 0x1.53d4dp-7f, 0x1.5dd63p-7f, 0x1.923576p-4f,
-    -0x1.134fep-12f, -0x1.8a8d0cp-13f, -0x1.386e84p-9f, -0x1.d7fb4p-12f,
-    0x1.68d87ap-13f, -0x1.35f22ap-15f,
+    -0x1.42d79cp-11f, 0x1.5e23ap-7f, 0x1.60357p-7f, 0x1.902a08p-4f,
+    -0x1.8248d2p-13f, -0x1.202406p-12f, -0x1.24f2cap-9f, -0x1.93837ap-12f,
+    0x1.7360bcp-12f, -0x1.f5bb2p-16f, 0x1.1d194cp-14f, 0x1.c6ad98p-15f,
+    -0x1.d4f5d8p-12f, 0x1.579d9cp-13f, 0x1.d3456cp-13f, 0x1.76fd14p-13f,
+    0x1.8d203ep-16f, -0x1.bf9cc4p-13f, 0x1.6a464p-14f, -0x1.535434p-14f,
     /* node 97 z */
-    -0x1.2c0098p-10f, -0x1.a0da18p-6f, -0x1.9c2578p-6f, 0x1.b987acp-3f,
-    -0x1.b621f4p-11f, 0x1.082132p-11f, -0x1.1e7efcp-10f, -0x1.ba2ce4p-11f,
-    -0x1.0a7a12p-9f, 0x1.64adacp-14f,
+    -0x1.cffb34p-11f, -0x1.9eed72p-6f, -0x1.9d44d2p-6f, 0x1.b99b6ap-3f,
+    -0x1.04d6e8p-11f, 0x1.b8c4fcp-12f, -0x1.164258p-10f, -0x1.01c584p-11f,
+    -0x1.14f4d2p-10f, 0x1.f3bcbp-14f, 0x1.c1b156p-15f, 0x1.e234bep-13f,
+    -0x1.5c0028p-12f, -0x1.bd467ep-14f, 0x1.6a4402p-11f, 0x1.67275cp-13f,
+    0x1.b82a48p-15f, -0x1.4eaba8p-14f, -0x1.3870e2p-14f, -0x1.2f97d6p-13f,
     /* node 98 x */
-    -0x1.2fa004p-10f, 0x1.d6a406p-9f, 0x1.7004dp-9f, 0x1.b8cde4p-5f,
-    -0x1.b98bbap-12f, -0x1.3427c2p-13f, -0x1.3124a8p-10f, -0x1.57b48ep-11f,
-    0x1.19677p-10f, -0x1.e7604p-13f,
+    -0x1.170e2ep-10f, 0x1.d2052p-9f, 0x1.4b55dcp-9f, 0x1.be6e34p-5f,
+    -0x1.3ec16ap-12f, -0x1.94219p-15f, -0x1.2e5e0cp-10f, -0x1.11e434p-11f,
+    0x1.63765ap-10f, -0x1.ec2f8p-13f, 0x1.5b4826p-17f, -0x1.2445dep-13f,
+    0x1.2c5516p-12f, 0x1.046a96p-15f, 0x1.f69116p-13f, -0x1.29078p-13f,
+    -0x1.dbc29ap-16f, 0x1.839ecp-12f, -0x1.ce5886p-15f, -0x1.6b574p-16f,
     /* node 98 y */
-    -0x1.62d55ap-10f, 0x1.edc732p-8f, 0x1.a8c292p-9f, 0x1.8f5526p-5f,
-    -0x1.329784p-11f, -0x1.50d7f4p-12f, 0x1.dcb73cp-12f, -0x1.1a365p-11f,
-    -0x1.9907c2p-11f, -0x1.cec5c2p-12f,
+    -0x1.439362p-10f, 0x1.e3925ep-8f, 0x1.9544cap-9f, 0x1.93fe56p-5f,
+    -0x1.d19a22p-12f, -0x1.0a331cp-12f, 0x1.884a26p-12f, -0x1.84bdf2p-12f,
+    -0x1.7bb726p-12f, -0x1.bea54ap-12f, -0x1.20d3bcp-16f, 0x1.dfd694p-16f,
+    0x1.fa42ccp-13f, -0x1.835d9ap-13f, 0x1.2f80e4p-11f, -0x1.5d84bp-15f,
+    -0x1.548bdp-17f, 0x1.f8de48p-13f, -0x1.30717ep-14f, -0x1.6e5d42p-15f,
     /* node 98 z */
-    -0x1.007ae2p-10f, -0x1.e46252p-9f, -0x1.da92f6p-9f, 0x1.2e08bcp-4f,
-    -0x1.0b4844p-11f, -0x1.3d7e7p-13f, -0x1.a4e572p-12f, -0x1.32504p-11f,
-    -0x1.e0f4fep-12f, -0x1.72671cp-15f,
+    -0x1.ce1fa6p-11f, -0x1.f2f13cp-9f, -0x1.ecbd8cp-9f, 0x1.30604ap-4f,
+    -0x1.a0e7a8p-12f, -0x1.596e3p-14f, -0x1.c7932p-12f, -0x1.db1f08p-12f,
+    -0x1.67aafp-13f, -0x1.1d869cp-15f, -0x1.457bb4p-19f, -0x1.216752p-16f,
+    0x1.09e31p-12f, -0x1.9e4264p-14f, 0x1.063a2cp-11f, -0x1.4e11acp-14f,
+    -0x1.cd4128p-18f, 0x1.215206p-12f, -0x1.5f1166p-15f, -0x1.96708cp-16f,
     /* node 99 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 99 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 99 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 100 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 100 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 100 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 101 x */
-    0x1.762458p-11f, 0x1.6677acp-10f, -0x1.fbd958p-9f, -0x1.8d13ccp-6f,
-    0x1.cd85bp-14f, 0x1.8dcdfcp-17f, 0x1.a8944ep-13f, 0x1.71a002p-14f,
-    0x1.537ed4p-13f, 0x1.bf5d3ep-12f,
+    0x1.918c9ap-11f, 0x1.5f791cp-10f, -0x1.033e9p-8f, -0x1.8e3c64p-6f,
+    0x1.83224p-13f, -0x1.7d9418p-15f, 0x1.0651c8p-12f, 0x1.4d3b44p-13f,
+    0x1.7ee904p-12f, 0x1.c23e02p-12f, 0x1.04facp-17f, -0x1.55e444p-15f,
+    -0x1.7745ecp-14f, -0x1.9e73eep-15f, 0x1.02633ep-13f, 0x1.20bd3ep-18f,
+    -0x1.dd5792p-17f, -0x1.8fe8eep-14f, 0x1.0558fap-16f, -0x1.ed3f74p-16f,
     /* node 101 y */
-    -0x1.71d95p-11f, -0x1.011c88p-8f, 0x1.59f21ap-10f, 0x1.8d615p-6f,
-    -0x1.41a7f6p-14f, 0x1.595e74p-17f, 0x1.f81c3ep-12f, -0x1.b8067ap-14f,
-    0x1.f1c978p-12f, -0x1.c00056p-12f,
+    -0x1.91f682p-11f, -0x1.005986p-8f, 0x1.59c19ep-10f, 0x1.8ef59cp-6f,
+    -0x1.4e6dcap-13f, 0x1.fc8756p-15f, 0x1.828e1ep-12f, -0x1.84ed3ap-13f,
+    0x1.2518fep-12f, -0x1.c1fd24p-12f, -0x1.ca4c38p-17f, -0x1.7c12e2p-15f,
+    0x1.44c9dcp-13f, -0x1.9dd194p-18f, -0x1.07f184p-13f, 0x1.a0bd8cp-16f,
+    0x1.33dfaep-18f, 0x1.44e75ap-14f, -0x1.a92e64p-16f, 0x1.0952e8p-15f,
     /* node 101 z */
-    -0x1.879016p-11f, -0x1.99ec96p-8f, 0x1.98a526p-8f, 0x1.32a974p-6f,
-    -0x1.4bb5aep-13f, 0x1.30496ap-15f, 0x1.f5a976p-15f, -0x1.514ff4p-13f,
-    0x1.012baap-14f, -0x1.a75326p-12f,
+    -0x1.8fae52p-11f, -0x1.998626p-8f, 0x1.98c41ap-8f, 0x1.346f28p-6f,
+    -0x1.80793p-13f, 0x1.596b82p-14f, -0x1.12b364p-18f, -0x1.7eb16p-13f,
+    0x1.6547f2p-17f, -0x1.a524c6p-12f, -0x1.680cecp-17f, 0x1.f30bb2p-20f,
+    0x1.67f34ap-14f, -0x1.cf853ep-18f, 0x1.a1a74ep-15f, 0x1.2d2ep-16f,
+    0x1.1f71ecp-17f, 0x1.4c7f5p-14f, -0x1.c198eap-16f, 0x1.b0f9a8p-17f,
     /* node 102 x */
-    0x1.5d20f8p-10f, 0x1.a1aac6p-9f, -0x1.f86b5cp-8f, -0x1.8f7d1ap-5f,
-    0x1.05fb6p-11f, 0x1.1f15cep-19f, -0x1.ffd4d6p-12f, 0x1.352e7p-11f,
-    0x1.049fccp-15f, 0x1.c72296p-12f,
+    0x1.420458p-10f, 0x1.a2445cp-9f, -0x1.e7b5bep-8f, -0x1.94296cp-5f,
+    0x1.868896p-12f, -0x1.1d1042p-14f, -0x1.74c3c4p-12f, 0x1.ca4c7ap-12f,
+    -0x1.9743f2p-12f, 0x1.bcc19ep-12f, -0x1.b92f4ep-20f, 0x1.1f222p-15f,
+    -0x1.873656p-13f, 0x1.f7998ap-14f, -0x1.3ff172p-12f, -0x1.f4bbdap-15f,
+    0x1.0fd68ap-16f, -0x1.4e9e12p-12f, 0x1.0fcd6p-13f, 0x1.5b6aecp-15f,
     /* node 102 y */
-    -0x1.34c574p-10f, -0x1.69df6ap-9f, 0x1.ea3accp-9f, 0x1.b84d1cp-5f,
-    -0x1.5ed012p-11f, -0x1.5e2648p-13f, -0x1.4a7e98p-10f, -0x1.eb17ecp-12f,
-    -0x1.9e505ap-10f, -0x1.04e18cp-12f,
+    -0x1.17bad2p-10f, -0x1.57fadap-9f, 0x1.dc0214p-9f, 0x1.bd3a82p-5f,
+    -0x1.163d0ep-11f, -0x1.561e0ap-15f, -0x1.6467dp-10f, -0x1.3adf96p-12f,
+    -0x1.26f806p-10f, -0x1.f16566p-13f, 0x1.bbf85p-16f, 0x1.42acfp-13f,
+    0x1.d8ad5p-13f, 0x1.32798p-14f, 0x1.04cbap-12f, 0x1.4bececp-16f,
+    0x1.79b2aap-16f, 0x1.211d2ap-12f, -0x1.79f9c8p-13f, -0x1.dea8e6p-16f,
     /* node 102 z */
-    -0x1.fb5562p-11f, 0x1.df7e98p-9f, -0x1.d35b08p-9f, 0x1.2df5d6p-4f,
-    -0x1.29908cp-11f, -0x1.244be8p-13f, 0x1.303caep-12f, -0x1.136616p-11f,
-    -0x1.8d93aap-11f, -0x1.6f2ce2p-15f,
+    -0x1.cce7b2p-11f, 0x1.de38a6p-9f, -0x1.eaefe4p-9f, 0x1.30343cp-4f,
+    -0x1.dfcc6ap-12f, -0x1.d23c74p-15f, 0x1.77dddp-13f, -0x1.9b2312p-12f,
+    -0x1.a79e08p-12f, -0x1.26a54p-15f, 0x1.f574e8p-21f, 0x1.f59052p-16f,
+    0x1.91e666p-13f, -0x1.eb8ddep-15f, 0x1.7b30bep-13f, 0x1.81a7p-20f,
+    0x1.8b42d8p-19f, 0x1.36b1f8p-12f, -0x1.2d6fe8p-13f, -0x1.886df2p-16f,
     /* node 103 x */
-    0x1.6c9c64p-10f, 0x1.bab42ap-8f, -0x1.60c1cep-7f, -0x1.872606p-5f,
-    0x1.e7f546p-13f, -0x1.abd44p-17f, 0x1.f9505ep-15f, 0x1.2c421cp-12f,
-    0x1.e38604p-12f, 0x1.c76672p-11f,
+    0x1.682798p-10f, 0x1.c84304p-8f, -0x1.647ba8p-7f, -0x1.85f26cp-5f,
+    0x1.dd5ffcp-13f, -0x1.5379e4p-18f, -0x1.3a8adcp-14f, 0x1.2c763ap-12f,
+    0x1.2377aep-11f, 0x1.c55afcp-11f, 0x1.3e9d0ep-15f, -0x1.797c86p-14f,
+    0x1.f953cp-13f, 0x1.184a8p-14f, -0x1.0736f6p-12f, 0x1.cdb5dep-14f,
+    -0x1.0815eap-16f, -0x1.f65c9ep-15f, -0x1.f7e372p-16f, 0x1.10d726p-20f,
     /* node 103 y */
-    -0x1.3375a2p-10f, -0x1.dae90cp-9f, 0x1.1f605ap-8f, 0x1.7abb0ep-4f,
-    -0x1.764526p-12f, 0x1.7effdep-11f, 0x1.a841acp-9f, -0x1.8b8382p-11f,
-    0x1.dcfa14p-12f, -0x1.424858p-13f,
+    -0x1.2d1d6ep-10f, -0x1.f0ba86p-9f, 0x1.0e49a4p-8f, 0x1.7c4184p-4f,
+    -0x1.440612p-12f, 0x1.74cfdp-11f, 0x1.8957cep-9f, -0x1.6fdfbcp-11f,
+    0x1.6e8de4p-11f, -0x1.45960ep-13f, -0x1.ec941ep-15f, -0x1.1ef37cp-12f,
+    0x1.8517bap-13f, -0x1.726658p-12f, -0x1.44300ap-13f, 0x1.4c9518p-13f,
+    -0x1.443736p-15f, 0x1.ce916ep-13f, 0x1.1d4b1ap-14f, -0x1.dea178p-16f,
     /* node 103 z */
-    -0x1.e0cb0ep-10f, 0x1.0cfeb2p-7f, -0x1.a84eb2p-7f, 0x1.30709ep-3f,
-    -0x1.b27682p-11f, -0x1.4e96c4p-12f, 0x1.cbd18ep-11f, -0x1.cdca5ap-11f,
-    -0x1.684c3ep-10f, -0x1.fee486p-12f,
+    -0x1.a77296p-10f, 0x1.02951p-7f, -0x1.ad5d18p-7f, 0x1.311ea2p-3f,
+    -0x1.25cf4p-11f, -0x1.2e4178p-12f, 0x1.e36eeep-11f, -0x1.3b6274p-11f,
+    -0x1.5a7638p-11f, -0x1.e50d6p-12f, -0x1.407ca4p-14f, 0x1.1a50eep-14f,
+    -0x1.021de2p-12f, -0x1.4e3406p-12f, 0x1.ec5578p-11f, -0x1.4645a8p-17f,
+    0x1.a2ea24p-17f, 0x1.250022p-12f, -0x1.0e431ap-15f, -0x1.7d0b6cp-14f,
     /* node 104 x */
-    0x1.6ad148p-10f, 0x1.1a3b78p-7f, -0x1.beb11cp-8f, -0x1.00da0ap-5f,
-    0x1.38f158p-11f, 0x1.0ef3bcp-11f, -0x1.4b2f5ap-14f, 0x1.e5bc8ep-12f,
-    0x1.3ed76p-13f, 0x1.4c5536p-12f,
+    0x1.6bda8p-10f, 0x1.19ce2ap-7f, -0x1.b8af8cp-8f, -0x1.071cacp-5f,
+    0x1.4aa994p-11f, 0x1.6f65d4p-12f, 0x1.795838p-15f, 0x1.eb75ep-12f,
+    0x1.2469e6p-12f, 0x1.47fccap-12f, -0x1.2fdef8p-16f, -0x1.c7e784p-14f,
+    -0x1.6d0e26p-12f, -0x1.168562p-14f, -0x1.8df4dcp-14f, 0x1.6283dep-14f,
+    -0x1.5ffb4ep-16f, -0x1.3096bap-11f, 0x1.0e3f5p-12f, -0x1.1bbe32p-14f,
     /* node 104 y */
-    -0x1.bbc784p-11f, 0x1.6853fep-11f, 0x1.6fe4f6p-7f, 0x1.f322ep-4f,
-    -0x1.fe03f2p-11f, -0x1.1f4eap-10f, -0x1.1866fap-8f, -0x1.21e9dcp-11f,
-    -0x1.5189d6p-8f, 0x1.fcb656p-13f,
+    -0x1.eee1d4p-12f, -0x1.ec969cp-12f, 0x1.7b83fp-7f, 0x1.ee7f4p-4f,
+    -0x1.2d872p-11f, -0x1.336aeap-10f, -0x1.9cfe3p-9f, -0x1.6af206p-13f,
+    -0x1.362774p-8f, 0x1.2b5eeap-12f, -0x1.226402p-13f, 0x1.87066ep-11f,
+    -0x1.e3c956p-10f, -0x1.f8e0b6p-15f, 0x1.d819bap-10f, -0x1.10ca56p-10f,
+    0x1.e1d248p-14f, -0x1.f49272p-14f, -0x1.5c16c6p-13f, -0x1.50048p-13f,
     /* node 104 z */
-    -0x1.940714p-9f, 0x1.16afa8p-7f, -0x1.68743p-6f, 0x1.abba46p-3f,
-    -0x1.125074p-9f, -0x1.4d070cp-10f, -0x1.f9a5e4p-10f, -0x1.64075ap-10f,
-    -0x1.81db7p-9f, -0x1.72dccep-13f,
+    -0x1.62c57cp-9f, 0x1.f9353ep-8f, -0x1.6e5fbap-6f, 0x1.add24cp-3f,
+    -0x1.ba8e4p-10f, -0x1.0af6ap-10f, -0x1.a63cc4p-10f, -0x1.dae09ep-11f,
+    -0x1.1a0552p-9f, -0x1.1ad68ep-13f, -0x1.c7dd0cp-14f, 0x1.e56e12p-12f,
+    -0x1.160dcap-11f, -0x1.ab44fep-13f, 0x1.890ac2p-10f, -0x1.50087ap-11f,
+    0x1.1d651p-14f, 0x1.2075cp-10f, -0x1.4aee76p-11f, -0x1.ccbad2p-15f,
     /* node 105 x */
-    -0x1.6bddb2p-17f, 0x1.640efep-7f, -0x1.11cac4p-17f, -0x1.484c5ap-17f,
-    -0x1.7b717ep-19f, -0x1.d1746cp-12f, -0x1.cd4a8cp-10f, 0x1.943d68p-20f,
-    0x1.50ff3ap-15f, 0x1.50f314p-19f,
+    0x1.71bc4cp-18f, 0x1.60ee18p-7f, 0x1.67632ep-15f, -0x1.831e4ap-16f,
+    0x1.801a7ep-20f, -0x1.7784c4p-12f, -0x1.a473aep-10f, 0x1.8af524p-18f,
+    -0x1.53c08p-15f, 0x1.735302p-19f, -0x1.875e98p-16f, 0x1.979bd2p-15f,
+    -0x1.673be8p-15f, 0x1.03b31p-13f, 0x1.6c387ap-12f, -0x1.bf4194p-13f,
+    0x1.8be694p-18f, 0x1.d446e8p-17f, -0x1.4c1dcap-24f, -0x1.9ca574p-19f,
     /* node 105 y */
-    -0x1.f8dad6p-9f, -0x1.4536cp-13f, 0x1.79c192p-8f, 0x1.221174p-3f,
-    -0x1.25b5eep-8f, -0x1.816362p-10f, 0x1.38d988p-10f, -0x1.bd9038p-9f,
-    -0x1.30ffbep-8f, 0x1.8156ccp-9f,
+    -0x1.afebecp-9f, -0x1.178ffep-12f, 0x1.11c14ap-8f, 0x1.2dde62p-3f,
+    -0x1.f07a72p-9f, -0x1.4ffb22p-11f, 0x1.48de46p-12f, -0x1.50535cp-9f,
+    -0x1.5533eap-9f, 0x1.855f7ap-9f, -0x1.00c006p-16f, 0x1.81eddep-12f,
+    0x1.c3cc5cp-10f, -0x1.c62bd2p-13f, 0x1.215f96p-11f, -0x1.e53774p-15f,
+    0x1.1932ep-14f, 0x1.ff8984p-9f, -0x1.beea9ep-10f, 0x1.47ae54p-12f,
     /* node 105 z */
-    -0x1.38c328p-8f, -0x1.dc7b2ep-14f, -0x1.c7f532p-6f, 0x1.e40a68p-3f,
-    -0x1.ee939ap-9f, -0x1.1e2d24p-10f, 0x1.39aca2p-11f, -0x1.524d1ap-9f,
-    -0x1.425d18p-8f, 0x1.4d8e14p-11f,
+    -0x1.156112p-8f, -0x1.e6d65cp-12f, -0x1.d5fc86p-6f, 0x1.eba6a8p-3f,
+    -0x1.9b9cb6p-9f, -0x1.48579cp-11f, 0x1.38bae4p-12f, -0x1.e36b92p-10f,
+    -0x1.b04596p-9f, 0x1.64c074p-11f, -0x1.197a6ep-16f, 0x1.044304p-11f,
+    0x1.3c7d46p-11f, -0x1.972188p-12f, 0x1.70d318p-10f, -0x1.362954p-14f,
+    0x1.1b091p-14f, 0x1.706b5cp-9f, -0x1.08294p-10f, 0x1.a1668p-14f,
     /* node 106 x */
-    -0x1.688578p-10f, 0x1.18f352p-7f, 0x1.bef498p-8f, 0x1.00ce76p-5f,
-    -0x1.389c5ep-11f, 0x1.054ee8p-14f, 0x1.9ed184p-12f, -0x1.e5676ep-12f,
-    -0x1.bdd88p-13f, -0x1.4c69d6p-12f,
+    -0x1.6d8326p-10f, 0x1.1649dep-7f, 0x1.b8ec1cp-8f, 0x1.0717c8p-5f,
+    -0x1.4c65bcp-11f, 0x1.cc71bep-13f, 0x1.6c6a5ep-13f, -0x1.edee8p-12f,
+    -0x1.1bf6aap-12f, -0x1.4c02ep-12f, -0x1.aa8184p-16f, 0x1.9da70cp-14f,
+    0x1.77b97cp-12f, -0x1.eed102p-15f, -0x1.08f238p-12f, -0x1.307748p-15f,
+    0x1.3f17e6p-16f, 0x1.2a1962p-11f, -0x1.ff9facp-13f, 0x1.18c98ep-14f,
     /* node 106 y */
-    -0x1.9d4074p-11f, -0x1.3ee464p-11f, 0x1.71c5dp-7f, 0x1.f39e1ap-4f,
-    -0x1.f2f9bp-11f, 0x1.02e3b2p-10f, 0x1.d34686p-9f, -0x1.257cf4p-11f,
-    -0x1.69743p-8f, 0x1.c45adap-13f,
+    -0x1.00ad2cp-11f, -0x1.60b5bcp-12f, 0x1.72e008p-7f, 0x1.ef1858p-4f,
+    -0x1.2cc366p-11f, 0x1.b7951ap-12f, 0x1.da3fa2p-9f, -0x1.aa2478p-13f,
+    -0x1.2542b6p-8f, 0x1.242c2p-12f, 0x1.31bc2ep-13f, 0x1.ef54cap-12f,
+    -0x1.a0a2acp-10f, -0x1.22115ap-11f, 0x1.b36d52p-11f, 0x1.d86716p-11f,
+    0x1.646cdap-14f, -0x1.9c45e4p-13f, -0x1.939dep-13f, -0x1.2f410ap-13f,
     /* node 106 z */
-    -0x1.90702cp-9f, -0x1.1afae4p-7f, -0x1.67e4b4p-6f, 0x1.abe1c2p-3f,
-    -0x1.10cabep-9f, 0x1.03822p-12f, 0x1.33484ap-9f, -0x1.65135ap-10f,
-    -0x1.9818d8p-9f, -0x1.96cecep-13f,
+    -0x1.63e20ap-9f, -0x1.166408p-7f, -0x1.70a2cp-6f, 0x1.adfb16p-3f,
+    -0x1.ba2adcp-10f, 0x1.a9c746p-13f, 0x1.126a38p-9f, -0x1.e37fcp-11f,
+    -0x1.064e56p-9f, -0x1.20e436p-13f, 0x1.9d1dc4p-14f, 0x1.4fe752p-12f,
+    -0x1.952b8ap-12f, -0x1.a8c1d2p-12f, 0x1.2a0418p-10f, 0x1.03510ep-11f,
+    0x1.b1f04cp-15f, 0x1.13fbfep-10f, -0x1.536f24p-11f, -0x1.8bc4ep-15f,
     /* node 107 x */
-    -0x1.698c2ap-10f, 0x1.bd2554p-8f, 0x1.60e95cp-7f, 0x1.87464ep-5f,
-    -0x1.d83c0cp-13f, -0x1.472eap-16f, -0x1.616c5cp-14f, -0x1.28b0f8p-12f,
-    -0x1.d75c0cp-12f, -0x1.c5da16p-11f,
+    -0x1.66f338p-10f, 0x1.bfe7dap-8f, 0x1.63b434p-7f, 0x1.85fb3p-5f,
+    -0x1.d5dd26p-13f, -0x1.a1bc9ep-14f, 0x1.0710cp-19f, -0x1.2d60c2p-12f,
+    -0x1.17be32p-11f, -0x1.c3d14ep-11f, 0x1.3a3662p-15f, 0x1.3ffa5ap-14f,
+    -0x1.e5a732p-13f, -0x1.1f917ap-17f, 0x1.6ce8fep-14f, 0x1.0eb112p-14f,
+    0x1.f48e22p-17f, 0x1.e24db2p-15f, 0x1.134736p-16f, -0x1.060938p-21f,
     /* node 107 y */
-    -0x1.3c01fp-10f, 0x1.d1d918p-9f, 0x1.1f52eap-8f, 0x1.7aa462p-4f,
-    -0x1.8bd8aap-12f, -0x1.a94864p-11f, -0x1.a4429ep-9f, -0x1.90ebc4p-11f,
-    0x1.20dc6ep-11f, -0x1.2b3274p-13f,
+    -0x1.286044p-10f, 0x1.df83cep-9f, 0x1.1360ap-8f, 0x1.7c1ef4p-4f,
+    -0x1.3a0ac6p-12f, -0x1.808984p-11f, -0x1.8fb504p-9f, -0x1.68324ap-11f,
+    0x1.496a1p-11f, -0x1.2d7ec4p-13f, 0x1.694c9ep-15f, -0x1.80598cp-13f,
+    0x1.eb526ep-14f, 0x1.6fabc2p-13f, 0x1.43c2f8p-11f, -0x1.035ccep-13f,
+    -0x1.7c0106p-16f, 0x1.007286p-12f, 0x1.106944p-14f, -0x1.1126c8p-15f,
     /* node 107 z */
-    -0x1.e0628ap-10f, -0x1.0f657ap-7f, -0x1.a7f488p-7f, 0x1.3072b6p-3f,
-    -0x1.b45fc4p-11f, 0x1.a24826p-15f, -0x1.0596fap-10f, -0x1.d072b2p-11f,
-    -0x1.59edbep-10f, -0x1.f73fb2p-12f,
+    -0x1.a59bcp-10f, -0x1.0ea476p-7f, -0x1.adb3dep-7f, 0x1.31217cp-3f,
+    -0x1.22e5c4p-11f, -0x1.08c33p-15f, -0x1.d48d6p-11f, -0x1.3a6f28p-11f,
+    -0x1.536c9ep-11f, -0x1.dfbaap-12f, 0x1.fc230cp-15f, 0x1.0f426cp-14f,
+    -0x1.f3a53ep-13f, -0x1.0e8c2cp-13f, 0x1.861a2p-11f, 0x1.7adc96p-14f,
+    0x1.f6b0f2p-17f, 0x1.2360aap-12f, -0x1.5fc234p-15f, -0x1.7a022ep-14f,
     /* node 108 x */
-    -0x1.60bf22p-10f, 0x1.93d322p-9f, 0x1.f85f1p-8f, 0x1.8f73d8p-5f,
-    -0x1.0a4378p-11f, -0x1.623a76p-12f, -0x1.16cb5cp-12f, -0x1.37c302p-11f,
-    -0x1.0373eep-15f, -0x1.cb5b0ap-12f,
+    -0x1.42b22p-10f, 0x1.8c3d18p-9f, 0x1.e895bap-8f, 0x1.94345ap-5f,
+    -0x1.87ebb4p-12f, -0x1.f8d3c6p-13f, -0x1.75ac1ap-12f, -0x1.c960a8p-12f,
+    0x1.8b5aacp-12f, -0x1.be02aap-12f, -0x1.7ec04ap-17f, -0x1.e5503cp-16f,
+    0x1.8bdb54p-13f, -0x1.e094ccp-14f, 0x1.225d48p-11f, 0x1.353b54p-19f,
+    -0x1.f62888p-17f, 0x1.501bbap-12f, -0x1.f5f2aap-14f, -0x1.576f2p-15f,
     /* node 108 y */
-    -0x1.341e74p-10f, 0x1.5d3e98p-9f, 0x1.e8b3a4p-9f, 0x1.b87edep-5f,
-    -0x1.57a82ap-11f, -0x1.dcd80ep-13f, 0x1.9ff3eep-10f, -0x1.e1c9dcp-12f,
-    -0x1.8eb066p-10f, -0x1.12b0fap-12f,
+    -0x1.1af78p-10f, 0x1.4acddep-9f, 0x1.d53bd8p-9f, 0x1.bd89c6p-5f,
+    -0x1.19d31ep-11f, -0x1.2007b8p-13f, 0x1.673712p-10f, -0x1.44da78p-12f,
+    -0x1.1c4908p-10f, -0x1.002d2ep-12f, -0x1.07c3bap-15f, 0x1.870d66p-14f,
+    0x1.26c9e6p-12f, -0x1.c8ec38p-13f, 0x1.2e39dep-12f, 0x1.645a9p-16f,
+    0x1.8e8106p-17f, 0x1.180296p-12f, -0x1.74caf4p-13f, -0x1.8a19f8p-16f,
     /* node 108 z */
-    -0x1.0026p-10f, -0x1.eb6264p-9f, -0x1.d3dffep-9f, 0x1.2e044cp-4f,
-    -0x1.2940c2p-11f, -0x1.a63bbcp-13f, -0x1.a7ff66p-16f, -0x1.12e5bap-11f,
-    -0x1.84fa0ep-11f, -0x1.bb2952p-15f,
+    -0x1.cf8824p-11f, -0x1.f0ccb8p-9f, -0x1.ebe282p-9f, 0x1.3045fep-4f,
+    -0x1.e25efep-12f, -0x1.d539cep-14f, -0x1.4f4546p-13f, -0x1.9d970cp-12f,
+    -0x1.9d1b48p-12f, -0x1.3c61eep-15f, -0x1.1bdc48p-17f, 0x1.02375cp-16f,
+    0x1.c0503ep-13f, -0x1.02d5dp-13f, 0x1.027fd4p-11f, 0x1.2b7454p-15f,
+    0x1.2cc8fcp-21f, 0x1.335d18p-12f, -0x1.20cb02p-13f, -0x1.6bca8p-16f,
     /* node 109 x */
-    -0x1.74190cp-11f, 0x1.6944e6p-10f, 0x1.fae5d8p-9f, 0x1.8d43d4p-6f,
-    -0x1.a5e172p-14f, -0x1.6fe39ep-15f, 0x1.4b6054p-12f, -0x1.560eaep-14f,
-    -0x1.4e91a8p-14f, -0x1.c02c26p-12f,
+    -0x1.9141e6p-11f, 0x1.602e3p-10f, 0x1.01cf86p-8f, 0x1.8e5f22p-6f,
+    -0x1.82ad84p-13f, -0x1.81b9fp-16f, 0x1.30ebb8p-12f, -0x1.5110fep-13f,
+    -0x1.726702p-12f, -0x1.c2095ap-12f, 0x1.f1a4d6p-18f, 0x1.bd581p-16f,
+    0x1.96d242p-14f, 0x1.359f22p-16f, -0x1.2bbac2p-13f, -0x1.04c89ep-14f,
+    0x1.8be04p-17f, 0x1.9fd628p-14f, -0x1.ae3c1ep-16f, 0x1.02052cp-15f,
     /* node 109 y */
-    -0x1.707872p-11f, 0x1.00fd46p-8f, 0x1.58b7cap-10f, 0x1.8d6954p-6f,
-    -0x1.2c685ep-14f, -0x1.4b8882p-15f, -0x1.598e54p-12f, -0x1.a33c8p-14f,
-    0x1.1a5e9p-11f, -0x1.bb54bap-12f,
+    -0x1.8f7fc4p-11f, 0x1.024c3ap-8f, 0x1.5bc724p-10f, 0x1.8ed012p-6f,
+    -0x1.49e152p-13f, 0x1.d4046p-19f, -0x1.7892fap-12f, -0x1.7fd4f2p-13f,
+    0x1.1ae08cp-12f, -0x1.bf4f38p-12f, 0x1.94e314p-17f, -0x1.e15052p-16f,
+    0x1.1f03a8p-13f, 0x1.442522p-14f, -0x1.33479p-13f, -0x1.242092p-14f,
+    0x1.cecf3ep-18f, 0x1.653446p-14f, -0x1.1514p-15f, 0x1.004b54p-15f,
     /* node 109 z */
-    -0x1.8511c8p-11f, 0x1.995818p-8f, 0x1.986f08p-8f, 0x1.32b844p-6f,
-    -0x1.401674p-13f, -0x1.9a9adep-14f, 0x1.5e0764p-15f, -0x1.485ba6p-13f,
-    0x1.e2bfp-14f, -0x1.a4843ap-12f,
+    -0x1.8ed824p-11f, 0x1.988a92p-8f, 0x1.9862f8p-8f, 0x1.34735p-6f,
+    -0x1.7f1d3p-13f, -0x1.50f212p-14f, 0x1.899b56p-17f, -0x1.7ec548p-13f,
+    0x1.a08bb4p-17f, -0x1.a437bcp-12f, 0x1.19b862p-17f, 0x1.65f132p-20f,
+    0x1.6157eap-14f, 0x1.362578p-17f, -0x1.1c96e2p-14f, -0x1.3ace94p-15f,
+    0x1.15bb34p-17f, 0x1.5bd13ap-14f, -0x1.11bb2ap-15f, 0x1.bcaedep-17f,
     /* node 110 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 110 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 110 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 111 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 111 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 111 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 112 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 112 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 112 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 113 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 113 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 113 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 114 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 114 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 114 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 115 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 115 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 115 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 116 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 116 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 116 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 117 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 117 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 117 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 118 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 118 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 118 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 119 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 119 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 119 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 120 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 120 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 120 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 121 x */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 121 y */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
     /* node 121 z */
-    -0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
-    -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
-    0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, -0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, -0x0p+0f,
+    -0x0p+0f, -0x0p+0f, 0x0p+0f, -0x0p+0f,
+    0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
+    0x0p+0f, 0x0p+0f, -0x0p+0f, 0x0p+0f,
 };
 const tfit_model tfit_block48_ve_forward = {
-    4u, 5u, 121u, 4u, 3644u,
+    4u, 5u, 121u, 4u, 7274u,
     tfit_block48_ve_forward_dims, tfit_block48_ve_forward_coef, tfit_block48_ve_forward_nodes,
-    tfit_block48_ve_forward_dims + 4u, tfit_block48_ve_forward_coef + 3644u, tfit_block48_ve_forward_nodes + 121u,
+    tfit_block48_ve_forward_dims + 4u, tfit_block48_ve_forward_coef + 7274u, tfit_block48_ve_forward_nodes + 121u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
     {0x3daef22bu, 0xbd435a39u, 0x3ca98809u, 0x3e2ef22bu, 0xbdc35a39u, 0x3d298809u,
      0x3e8335a0u, 0xbe1283abu, 0x3d7e4c0du, 0x3eaef22bu, 0xbe435a39u, 0x3da98809u,
      0x3f5aaeb5u, 0xbef430c8u, 0x3e53ea0bu, 0xbc0385e1u, 0x3c4abad3u, 0xbc524702u,
      0x7fc00000u, 0x00000000u, 0x00000000u, 0x7042b648u, 0xf0a13b57u, 0xf132a595u,
-     0x11dcceccu, 0x4c4a1835u},
-    0xb1f90216u
+     0xb7326989u, 0x4c4a1835u},
+    0x43ebb276u
 };
-static const int32_t tfit_block48_ve_forward_q31_coef[4009] = {
+static const int32_t tfit_block48_ve_forward_q31_coef[7639] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     0, 0, 0,
     /* W (row-major), then the projection's headroom H */
@@ -1633,1164 +2359,1902 @@ static const int32_t tfit_block48_ve_forward_q31_coef[4009] = {
     4,
     /* prony: K, then {a_k (Q31), D_k (Q30)} per term */
     1,
-    2146053248, 358207776,
-    /* node 1 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 1 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 1 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 2 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 2 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 2 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 3 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 3 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 3 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 4 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 4 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 4 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 5 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 5 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 5 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 6 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 6 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 6 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 7 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 7 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 7 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 8 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 8 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 8 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 9 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 9 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 9 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 10 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 10 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 10 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 11 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 11 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 11 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 12 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 12 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 12 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 13 x: shift, then 10 coefficients */
-    39, 12252345, 23435648, 67992968, -416313472, 2063344,
-    818525, 4494548, 1540076, -9574020, 7164212,
-    /* node 13 y: shift, then 10 coefficients */
-    39, 12347330, 67259040, 24303730, -416181952, 1639822,
-    872689, -7221469, 2162778, 2130307, 7302024,
-    /* node 13 z: shift, then 10 coefficients */
-    39, -12861813, -107380968, -107475648, 321299136, -2888114,
-    -1882710, 291266, -2916482, 253019, -6821767,
-    /* node 14 x: shift, then 10 coefficients */
-    38, 11610340, 27220628, 64149076, -418782112, 4480825,
-    2529965, -3345675, 5206199, 6777358, 3743748,
-    /* node 14 y: shift, then 10 coefficients */
-    38, 9999502, 23576380, 30131368, -461971360, 5842898,
-    1157310, 12360121, 3834056, -6660616, 1905614,
-    /* node 14 z: shift, then 10 coefficients */
-    38, -8424682, 31587900, 32307098, 633275648, -5059796,
-    -1259169, 1184134, -4563892, 827855, -304957,
-    /* node 15 x: shift, then 10 coefficients */
-    38, 11840493, 58096860, 92425872, -410236960, 1945124,
-    587935, 426667, 2368390, -5168698, 7385224,
-    /* node 15 y: shift, then 10 coefficients */
-    38, 10594908, 31054444, 36744288, -793757440, 3213726,
-    7575877, -28105376, 6984624, 8560833, 1676696,
-    /* node 15 z: shift, then 10 coefficients */
-    37, -7850280, 35244096, 57321524, 638428672, -3540770,
-    -214409, 3773719, -3795676, -510247, -2062505,
-    /* node 16 x: shift, then 10 coefficients */
-    39, 23701584, 147334032, 116377440, -538514752, 11189130,
-    -4351932, 4359884, 8012087, -8784017, 4652382,
-    /* node 16 y: shift, then 10 coefficients */
-    37, 3221982, -2933387, 46082360, -523939200, 4048172,
-    -3885117, 19426398, 1934005, -17687422, -1430158,
-    /* node 16 z: shift, then 10 coefficients */
-    36, -6580932, 18439040, 48760376, 448574688, -4700492,
-    925289, -5821550, -2875456, 3013364, -154181,
-    /* node 17 x: shift, then 10 coefficients */
-    41, 587470, 746411840, -176144, -1533938, 25223,
-    23989346, -117524072, 243738, 251460, 911469,
-    /* node 17 y: shift, then 10 coefficients */
-    37, 16772756, -547233, 18446906, -608362496, 20763638,
-    1060478, 4815062, 14745919, -7593240, -13664117,
-    /* node 17 z: shift, then 10 coefficients */
-    36, -10229733, 74595, 62416916, 507696640, -8485906,
-    -743047, -1599973, -5479610, 5144297, 1714485,
-    /* node 18 x: shift, then 10 coefficients */
-    39, -23942454, 147956928, -116417712, 538655616, -11253779,
-    -5906839, 380280, -8052990, 8345922, -4865495,
-    /* node 18 y: shift, then 10 coefficients */
-    37, 3159380, 2547022, 45882488, -524568576, 3972038,
-    2115728, -13484019, 1975928, -16655282, -1203368,
-    /* node 18 z: shift, then 10 coefficients */
-    36, -6553724, -18350778, 48826552, 448758112, -4676292,
-    -1347579, 3188180, -2885647, 2758987, -210925,
-    /* node 19 x: shift, then 10 coefficients */
-    38, -11796638, 58302992, -92402440, 410412736, -1888308,
-    702206, -826640, -2343766, 5391900, -7392086,
-    /* node 19 y: shift, then 10 coefficients */
-    38, 10453580, -30569106, 36624796, -793306560, 3314373,
-    -5043173, 26489296, 7028278, 8401103, 1354161,
-    /* node 19 z: shift, then 10 coefficients */
-    37, -7872560, -35568084, 57356268, 638473984, -3555175,
-    -996440, -4422726, -3815846, -173536, -2051088,
-    /* node 20 x: shift, then 10 coefficients */
-    38, -11602863, 26607344, -64115268, 418656576, -4525986,
-    108590, -2942944, -5235321, -6945559, -3710265,
-    /* node 20 y: shift, then 10 coefficients */
-    38, 9977175, -23029638, 30230842, -462176192, 5726708,
-    278984, -12111148, 3758306, -7156314, 2018414,
-    /* node 20 z: shift, then 10 coefficients */
-    38, -8350897, -32051828, 32324672, 633283392, -5027816,
-    -611202, -1271825, -4542520, 736590, -297045,
-    /* node 21 x: shift, then 10 coefficients */
-    39, -12194014, 23740400, -68116136, 416509184, -1906118,
-    810509, 4386941, -1431613, 10989390, -7178264,
-    /* node 21 y: shift, then 10 coefficients */
-    39, 12313913, -67494368, 24382104, -416206880, 1560067,
-    -418452, 6678380, 2084130, 1033170, 7228040,
-    /* node 21 z: shift, then 10 coefficients */
-    39, -12894896, 107390856, -107567024, 321436192, -2812489,
-    1192708, -226457, -2853992, 1362534, -6840519,
-    /* node 22 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 22 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 22 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 23 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 23 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 23 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 24 x: shift, then 10 coefficients */
-    38, 10190329, 31500820, 22358458, -461779136, 3898627,
-    1723462, -11424937, 6093616, 16426890, 2219898,
-    /* node 24 y: shift, then 10 coefficients */
-    38, 11516845, 65584476, 25942696, -418873696, 4992981,
-    2715863, 2447860, 4540850, 855609, 3736785,
-    /* node 24 z: shift, then 10 coefficients */
-    38, -8428079, 31076862, 32627480, 633298752, -4454547,
-    -1633700, 4754510, -5156299, -2381962, -431219,
-    /* node 25 x: shift, then 10 coefficients */
-    38, 5631276, 91538440, 88882672, -843692544, 3586964,
-    2193004, 4053918, 1816190, -17981088, 360954,
-    /* node 25 y: shift, then 10 coefficients */
-    38, 5909996, 89241136, 91086104, -843462976, 1951404,
-    2190159, -19384682, 3877386, 5080323, 599099,
-    /* node 25 z: shift, then 10 coefficients */
-    36, -2392414, 54378200, 54980084, 463072736, -1688383,
-    972197, 2259024, -1723517, 170598, 193115,
-    /* node 26 x: shift, then 10 coefficients */
-    37, 11356818, 103969752, 43378108, -423740480, 6399923,
-    5442122, -1935804, 7113797, 14949687, -835410,
-    /* node 26 y: shift, then 10 coefficients */
-    37, 9216153, 16609666, 108183384, -732724736, 7551862,
-    2625166, 18116978, 5152062, -12598147, -3077794,
-    /* node 26 z: shift, then 10 coefficients */
-    35, -4359266, 42968568, 59602672, 434959392, -3022920,
-    -556144, -1125972, -2780087, -1444801, 732785,
-    /* node 27 x: shift, then 10 coefficients */
-    37, 1245590, 171899584, 55089948, -249570048, -6783186,
-    7416072, -23366100, 762190, 17428248, 8108234,
-    /* node 27 y: shift, then 10 coefficients */
-    36, 6883806, 17351226, 82272016, -486887584, 1833764,
-    5604769, -13082051, 4621249, 7933436, 261872,
-    /* node 27 z: shift, then 10 coefficients */
-    35, -3440658, 28165134, 86680928, 590358784, -1659030,
-    -2322875, 7665812, -3005357, -5909439, -83366,
-    /* node 28 x: shift, then 10 coefficients */
-    39, -199848, 641604416, -174278, 2620862, 677826,
-    -49018144, 106564064, 331182, 1962629, -965895,
-    /* node 28 y: shift, then 10 coefficients */
-    36, -613536, 286643, 132792768, -522181216, -9849072,
-    -798860, -3638545, -3483742, -7020856, 7458344,
-    /* node 28 z: shift, then 10 coefficients */
-    35, -1196242, -511955, 93984776, 647407296, 2093929,
-    -745993, 1675678, -1350840, -11584902, -2623982,
-    /* node 29 x: shift, then 10 coefficients */
-    38, -2212484, 340044352, -109690696, 498274304, 13212601,
-    9190737, -34071588, -1751567, -38315872, -15753356,
-    /* node 29 y: shift, then 10 coefficients */
-    36, 6990932, -16962708, 82395512, -486526752, 1908150,
-    -3784626, 9961660, 4622772, 7098644, 143490,
-    /* node 29 z: shift, then 10 coefficients */
-    35, -3487148, -28930216, 86616872, 590106816, -1710069,
-    498584, -5924568, -3012930, -5537162, -7737,
-    /* node 30 x: shift, then 10 coefficients */
-    37, -11357025, 103195976, -43576076, 423415968, -6364865,
-    1230545, 827372, -7040732, -13679456, 916026,
-    /* node 30 y: shift, then 10 coefficients */
-    37, 9225751, -16002382, 108298616, -732906688, 7447625,
-    -903915, -19569034, 5089919, -13347531, -2934196,
-    /* node 30 z: shift, then 10 coefficients */
-    35, -4384836, -43315884, 59547688, 434947840, -3005044,
-    -754107, 1866765, -2763566, -957858, 719919,
-    /* node 31 x: shift, then 10 coefficients */
-    38, -5645970, 90879160, -88813952, 843923072, -3576982,
-    2244894, 4216148, -1839364, 17393656, -447250,
-    /* node 31 y: shift, then 10 coefficients */
-    38, 5951096, -88915704, 90877688, -843361600, 2109316,
-    -1741844, 19629432, 3992633, 6305635, 481515,
-    /* node 31 z: shift, then 10 coefficients */
-    36, -2447252, -54673392, 54998444, 463096448, -1719801,
-    -1507303, -2394428, -1747587, 195458, 181706,
-    /* node 32 x: shift, then 10 coefficients */
-    38, -10293695, 30958634, -22416054, 461615008, -3938858,
-    -875884, -10108449, -6089028, -15164984, -2145686,
-    /* node 32 y: shift, then 10 coefficients */
-    38, 11506973, -64740080, 25999814, -418844192, 4959558,
-    -183265, -3913836, 4513912, 180289, 3740390,
-    /* node 32 z: shift, then 10 coefficients */
-    38, -8411581, -31741590, 32570042, 633216640, -4423671,
-    -809073, -3244768, -5121704, -1378158, -381392,
-    /* node 33 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 33 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 33 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 34 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 34 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 34 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 35 x: shift, then 10 coefficients */
-    38, 10252170, 37441932, 30239622, -794080192, 6596018,
-    7070934, 7179437, 3056745, -25246020, 1171508,
-    /* node 35 y: shift, then 10 coefficients */
-    38, 11816353, 92588784, 58335260, -410154560, 2412981,
-    564476, -5136300, 1995266, 738324, 7496083,
-    /* node 35 z: shift, then 10 coefficients */
-    37, -7790890, 56141308, 36171728, 638426048, -3713466,
-    -114339, 2997371, -3600231, -158110, -2069772,
-    /* node 36 x: shift, then 10 coefficients */
-    37, 9480536, 108763304, 15981109, -732478400, 5221896,
-    2860752, -14859642, 7893413, 19557324, -2786907,
-    /* node 36 y: shift, then 10 coefficients */
-    37, 11281216, 44347284, 102703824, -423918080, 6840316,
-    5592530, 11393418, 6427038, 1196305, -993022,
-    /* node 36 z: shift, then 10 coefficients */
-    35, -4379450, 59102584, 43555300, 434955552, -2729575,
-    -506548, 434118, -3085917, -2907394, 742735,
-    /* node 37 x: shift, then 10 coefficients */
-    36, 3178729, 135806832, 46103260, -348642240, 2373590,
-    -18982, 7494902, 199146, -12792966, 1748372,
-    /* node 37 y: shift, then 10 coefficients */
-    36, 3247066, 47225808, 135352848, -348514272, 286370,
-    183446, -15644615, 2499421, 10271817, 2084883,
-    /* node 37 z: shift, then 10 coefficients */
-    35, -6167630, 80425288, 81492496, 793820800, -3693492,
-    -33143, 3188816, -3822858, -235150, -123407,
-    /* node 38 x: shift, then 10 coefficients */
-    36, 18490870, 185898208, 23353096, -264911456, 12316304,
-    -3087060, 17878408, 7195338, -12632230, -3663534,
-    /* node 38 y: shift, then 10 coefficients */
-    36, 12191213, 20080266, 249525568, -490578016, 9947156,
-    6921624, 39861220, 4500185, -13064663, 40195,
-    /* node 38 z: shift, then 10 coefficients */
-    34, -7764149, 35577596, 65987360, 549096832, -5694458,
-    720542, -9198135, -3831633, 823742, 933795,
-    /* node 39 x: shift, then 10 coefficients */
-    37, 182277, 519155712, 66295, -1334383, -261662,
-    20756036, -99144944, -80818, -554795, 582636,
-    /* node 39 y: shift, then 10 coefficients */
-    36, 49502404, 1727201, 293097408, -570873024, 21948544,
-    6357845, -3177330, 29679148, 41292044, 4288059,
-    /* node 39 z: shift, then 10 coefficients */
-    34, -12026633, 11252, 79695288, 627891264, -9000580,
-    -925144, -297196, -5648134, 10195787, 2517521,
-    /* node 40 x: shift, then 10 coefficients */
-    36, -18590372, 187165744, -23586590, 265253632, -12153598,
-    -4134800, 15582437, -7080248, 13892611, 3448782,
-    /* node 40 y: shift, then 10 coefficients */
-    36, 11955086, -20221792, 249305392, -490989344, 9863384,
-    -6560249, -34627296, 4522572, -11138842, 186392,
-    /* node 40 z: shift, then 10 coefficients */
-    34, -7749738, -35485284, 66039324, 549355456, -5650779,
-    -1262980, 7479614, -3829566, 696310, 851271,
-    /* node 41 x: shift, then 10 coefficients */
-    36, -3097149, 135723600, -45865616, 348946656, -2393271,
-    1627299, 4757106, -270255, 11290357, -1803857,
-    /* node 41 y: shift, then 10 coefficients */
-    36, 3167613, -46476160, 135211664, -348521568, 319743,
-    -476978, 14788534, 2505687, 11402406, 1967460,
-    /* node 41 z: shift, then 10 coefficients */
-    35, -6153078, -81096552, 81590920, 793877184, -3729982,
-    -1155888, -2797989, -3858777, -692804, -109362,
-    /* node 42 x: shift, then 10 coefficients */
-    37, -9505352, 108513672, -15970202, 732376704, -5244744,
-    326204, -13491070, -7866037, -18992884, 2883973,
-    /* node 42 y: shift, then 10 coefficients */
-    37, 11222641, -43891956, 102931384, -423905952, 6678178,
-    -2116392, -12851655, 6306996, -961424, -988364,
-    /* node 42 z: shift, then 10 coefficients */
-    35, -4383485, -59315500, 43523400, 434973856, -2705313,
-    -686020, -208069, -3065118, -2534223, 741374,
-    /* node 43 x: shift, then 10 coefficients */
-    38, -9997105, 36776172, -30209918, 794241728, -6467978,
-    6294958, 7093450, -3005114, 24613234, -1226742,
-    /* node 43 y: shift, then 10 coefficients */
-    38, 11825538, -92316496, 58323768, -410154336, 2420058,
-    -135624, 4432552, 1993639, 725122, 7470215,
-    /* node 43 z: shift, then 10 coefficients */
-    37, -7805418, -56805536, 36169596, 638467776, -3710047,
-    -1205953, -2586397, -3598460, -49892, -2083542,
-    /* node 44 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 44 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 44 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 45 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 45 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 45 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 46 x: shift, then 10 coefficients */
-    37, 3249876, 47740608, -3261143, -523665472, 2052724,
-    -2917080, -22132084, 4256972, 23183798, -745641,
-    /* node 46 y: shift, then 10 coefficients */
-    39, 23512274, 117744352, 147597712, -538611776, 7914661,
-    -2307684, -12614298, 11107689, 5800003, 5411892,
-    /* node 46 z: shift, then 10 coefficients */
-    36, -6515188, 47528384, 18941538, 448567168, -2835279,
-    318113, 6562672, -4736348, -8919739, -457566,
-    /* node 47 x: shift, then 10 coefficients */
-    36, 6830900, 82025056, 17178150, -487054816, 4508825,
-    5081793, 8849650, 1751240, -13218751, -53159,
-    /* node 47 y: shift, then 10 coefficients */
-    37, 1306072, 54824052, 170455936, -249660544, 387050,
-    5734625, 18197218, -6533870, -22761612, 7282838,
-    /* node 47 z: shift, then 10 coefficients */
-    35, -3479664, 85952824, 29357036, 590437760, -2928482,
-    -2100038, -2984169, -1673704, 4697550, 85503,
-    /* node 48 x: shift, then 10 coefficients */
-    36, 12098178, 252823920, 18938018, -490275168, 4437032,
-    8709430, -20164758, 10324266, 46465460, 908138,
-    /* node 48 y: shift, then 10 coefficients */
-    36, 18435382, 22825278, 188004592, -264810768, 7281390,
-    -1341990, -9693484, 12383775, 13899542, -2922686,
-    /* node 48 z: shift, then 10 coefficients */
-    34, -7708042, 64956876, 35862284, 549062144, -3774361,
-    374454, 3196824, -5795168, -11695643, 682675,
-    /* node 49 x: shift, then 10 coefficients */
-    36, 3142365, 455744544, 138327872, -300605376, -12871315,
-    17282432, -27608050, 654634, 24771996, 17587828,
-    /* node 49 y: shift, then 10 coefficients */
-    36, 3229422, 139188576, 452681152, -300774144, 166557,
-    16417109, 20061420, -12717345, -23253736, 16768486,
-    /* node 49 z: shift, then 10 coefficients */
-    34, 485176, 44905140, 46979960, 769366144, -2048322,
-    -5867748, 7722771, -2052692, 1370864, 2054990,
-    /* node 50 x: shift, then 10 coefficients */
-    36, 107371, 477899488, -203275, 1266226, 474516,
-    -34198224, 54979172, 282427, 162003, -486724,
-    /* node 50 y: shift, then 10 coefficients */
-    35, 45766500, 97087, 425784160, -205409376, 10420126,
-    2121638, -4217322, 19660794, 18603834, 9994561,
-    /* node 50 z: shift, then 10 coefficients */
-    34, -6347764, -1018980, 58721944, 870678592, 3698142,
-    -687531, 2347929, -7501830, -42369072, -5086834,
-    /* node 51 x: shift, then 10 coefficients */
-    36, -2888959, 453233088, -137798976, 299717664, 12495834,
-    16488817, -24596384, -951425, -26580078, -17074132,
-    /* node 51 y: shift, then 10 coefficients */
-    36, 2861580, -138599968, 452115136, -300173440, 498338,
-    -17904516, -11954180, -12309943, -19387556, 16547271,
-    /* node 51 z: shift, then 10 coefficients */
-    34, 426148, -45706312, 46924212, 768913024, -2160546,
-    4582928, -7748296, -2097012, 1686101, 2178290,
-    /* node 52 x: shift, then 10 coefficients */
-    36, -12289370, 250448144, -19118662, 489596128, -4566704,
-    3437629, -12287454, -10329823, -44684580, -751347,
-    /* node 52 y: shift, then 10 coefficients */
-    37, 37580340, -45321072, 376844736, -529582048, 14323613,
-    10561867, 4522314, 24358738, 16910738, -5920752,
-    /* node 52 z: shift, then 10 coefficients */
-    34, -7764471, -65713512, 35773464, 549083328, -3737004,
-    -2171637, -749284, -5744748, -10886970, 675958,
-    /* node 53 x: shift, then 10 coefficients */
-    36, -6732940, 82159424, -17217442, 487251488, -4403090,
-    5093519, 8519106, -1668202, 12733880, -1471,
-    /* node 53 y: shift, then 10 coefficients */
-    38, 1876403, -109100088, 339814368, -499450368, 1128196,
-    -13157149, -28004822, -12494070, -33348756, 14753033,
-    /* node 53 z: shift, then 10 coefficients */
-    35, -3437759, -86140192, 29378546, 590439040, -2924318,
-    1341446, 1974709, -1682198, 4550182, 97707,
-    /* node 54 x: shift, then 10 coefficients */
-    37, -3478596, 46677140, 3268630, 523469696, -2180166,
-    -4583669, -19653758, -4311907, -21979954, 815900,
-    /* node 54 y: shift, then 10 coefficients */
-    39, 23946944, -116691800, 148072288, -538512384, 7825544,
-    7262272, 5275217, 10924893, -318555, 5344363,
-    /* node 54 z: shift, then 10 coefficients */
-    36, -6611065, -48269672, 18834718, 448481856, -2825098,
-    -2290132, -4468196, -4703713, -7271924, -412464,
-    /* node 55 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 55 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 55 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 56 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 56 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 56 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 57 x: shift, then 10 coefficients */
-    37, 16152414, 23387732, -2489326, -608543168, 14680741,
-    4406699, -22333976, 20333846, 17836098, -12724873,
-    /* node 57 y: shift, then 10 coefficients */
-    41, -85317, -189711, 746069568, -2191722, 699309,
-    23226252, 4563570, -1227028, -117047432, -488327,
-    /* node 57 z: shift, then 10 coefficients */
-    36, -10070383, 60353424, 989298, 507693984, -5474969,
-    -1706931, 10882497, -8447743, -7031310, 1345660,
-    /* node 58 x: shift, then 10 coefficients */
-    36, -203057, 128437664, 2736578, -522118176, -3509882,
-    -2360516, 5870012, -9587056, -16478815, 6982090,
-    /* node 58 y: shift, then 10 coefficients */
-    39, 537584, 334069, 641128960, 3999262, 234761,
-    -49122456, -4600086, 2359512, 110505632, 301456,
-    /* node 58 z: shift, then 10 coefficients */
-    35, -1279010, 94101800, 458271, 647444672, -1144390,
-    -3775, -10786338, 1953006, 885287, -2247794,
-    /* node 59 x: shift, then 10 coefficients */
-    36, 49538876, 297842784, -3312686, -570469632, 29089758,
-    6940127, 25594772, 22885650, 12888388, 4166377,
-    /* node 59 y: shift, then 10 coefficients */
-    37, -386186, -185109, 519210848, -2204442, -97794,
-    19721592, 2893772, -1313630, -100270544, -319675,
-    /* node 59 z: shift, then 10 coefficients */
-    34, -11984093, 78853176, -47002, 627844480, -5624428,
-    -1599456, 11670282, -9117536, -1729898, 2184726,
-    /* node 60 x: shift, then 10 coefficients */
-    35, 45464464, 421984416, 2708743, -206043808, 18731424,
-    2362799, 28882768, 10281503, -17958730, 9609809,
-    /* node 60 y: shift, then 10 coefficients */
-    36, 758977, 96429, 477658336, 2408319, 582875,
-    -32966504, -2780910, 1556205, 55348500, 475414,
-    /* node 60 z: shift, then 10 coefficients */
-    34, -6531056, 58700700, 1505254, 870766656, -7166344,
-    194, -37643136, 3577875, -893007, -4377358,
-    /* node 61 x: shift, then 10 coefficients */
-    35, -26879, 917909312, 427605, -471219, -345702,
-    -473554, -130407424, -183196, -3363515, 252772,
-    /* node 61 y: shift, then 10 coefficients */
-    35, -976111, 622713, 918166016, -1794594, -1075855,
-    -521853, -2411545, -1322189, -131898072, -262169,
-    /* node 61 z: shift, then 10 coefficients */
-    33, -31043170, -279613, -1467739, 634077952, -13682166,
-    -3141194, 3680678, -14035144, 8444148, -601904,
-    /* node 62 x: shift, then 10 coefficients */
-    35, -45333712, 422523904, -3374081, 206385952, -18208102,
-    -2764295, 34337748, -9879038, 22400462, -9717159,
-    /* node 62 y: shift, then 10 coefficients */
-    36, 1404158, 154987, 477820160, 2081342, 732296,
-    38335212, -1855102, 1658586, 54501756, 830041,
-    /* node 62 z: shift, then 10 coefficients */
-    34, -6384574, -58101776, 1770294, 871293888, -7129560,
-    1309137, 29895712, 3479682, -2565697, -4563188,
-    /* node 63 x: shift, then 10 coefficients */
-    36, -49896160, 294769408, 3874679, 570543680, -29569202,
-    -4433634, 30511262, -23357926, -13820592, -4316041,
-    /* node 63 y: shift, then 10 coefficients */
-    37, -1312369, -235497, 518961856, -1699846, -273926,
-    -25898476, 1298131, -1432950, -98774840, -837470,
-    /* node 63 z: shift, then 10 coefficients */
-    34, -12044779, -79646040, -96287, 627785984, -5615989,
-    -1198747, -7436070, -9066342, -241686, 2282777,
-    /* node 64 x: shift, then 10 coefficients */
-    36, 686134, 130218648, -2367125, 522659360, 3651174,
-    2355782, 1368118, 9622694, 11996096, -6981928,
-    /* node 64 y: shift, then 10 coefficients */
-    39, 2319981, 518520, 641618752, 2993003, 552075,
-    59334552, -1770126, 2565759, 107592960, 1313367,
-    /* node 64 z: shift, then 10 coefficients */
-    35, -1165276, -94030064, 585522, 647634240, -1135940,
-    -10241, 8148110, 1893943, -889801, -2349200,
-    /* node 65 x: shift, then 10 coefficients */
-    37, -16754858, 21177162, 1826682, 608133760, -14607358,
-    -3120048, -13081073, -20087994, -8591830, 12841420,
-    /* node 65 y: shift, then 10 coefficients */
-    41, -1459646, -383030, 745711168, -1524099, 455313,
-    -32318326, 2286216, -1404678, -114644440, -1247326,
-    /* node 65 z: shift, then 10 coefficients */
-    36, -10224905, -61447060, 806848, 507534112, -5463739,
-    -1460585, -7293473, -8381480, -4445212, 1422781,
-    /* node 66 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 66 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 66 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 67 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 67 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 67 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 68 x: shift, then 10 coefficients */
-    37, 3111885, 47461668, 1973609, -524433440, 2447532,
-    2504197, -19682302, 3771223, -9073786, -1041868,
-    /* node 68 y: shift, then 10 coefficients */
-    39, -23590932, -117749584, 147715120, 538849344, -7930136,
-    -7542514, 11529289, -11013759, -1813794, -5354086,
-    /* node 68 z: shift, then 10 coefficients */
-    37, -12934917, 95235392, -35565924, 897565760, -5906082,
-    -3710116, 11842915, -9190838, -84645, -754314,
-    /* node 69 x: shift, then 10 coefficients */
-    36, 7000054, 82199128, -16962944, -486582816, 4320981,
-    -3870677, 7349642, 2088837, 8992803, 172658,
-    /* node 69 y: shift, then 10 coefficients */
-    38, -3148083, -109179920, 343433536, 497278176, -1716259,
-    13071246, -37386444, 11779175, -38088488, -14584618,
-    /* node 69 z: shift, then 10 coefficients */
-    35, -3549435, 85836664, -27798208, 590117312, -2820546,
-    519800, -2089858, -1878140, -8708094, -17487,
-    /* node 70 x: shift, then 10 coefficients */
-    36, 11627770, 252530384, -21716702, -491005088, 4616226,
-    -6497140, -17572346, 9752658, -25829520, 371520,
-    /* node 70 y: shift, then 10 coefficients */
-    36, -18122590, -23061106, 184869920, 265724112, -6788102,
-    -5860445, 9974583, -11770273, 20297974, 2993219,
-    /* node 70 z: shift, then 10 coefficients */
-    34, -7633090, 65059148, -35166324, 549419456, -3855315,
-    -1450315, 2494643, -5575018, 5053253, 767060,
-    /* node 71 x: shift, then 10 coefficients */
-    36, 3371459, 455585888, -140529552, -299231040, -11567169,
-    -17969980, -26165386, 1417728, -1701848, 17156700,
-    /* node 71 y: shift, then 10 coefficients */
-    36, -3764271, -138867200, 456845824, 298677632, -1232890,
-    16659240, -19250650, 11426879, -30516586, -16915602,
-    /* node 71 z: shift, then 10 coefficients */
-    34, 387990, 44699480, -43664916, 768751040, -1958141,
-    4204302, 9065373, -2417220, -14339448, 1943875,
-    /* node 72 x: shift, then 10 coefficients */
-    36, 734354, 477786464, -34348, 878182, 612441,
-    36792100, 56277900, 370685, -720707, -141766,
-    /* node 72 y: shift, then 10 coefficients */
-    35, -44725968, -850941, 418036608, 207187008, -8765320,
-    -2935591, 7824339, -18338912, 47897836, -9934851,
-    /* node 72 z: shift, then 10 coefficients */
-    34, -6137728, -675485, -57650564, 871383360, 3202516,
-    1895574, -252409, -7044696, 23392294, -4672877,
-    /* node 73 x: shift, then 10 coefficients */
-    36, -4092894, 453509216, 140798928, 298912064, 10970213,
-    -15509650, -27891026, -1858744, 1225844, -17173138,
-    /* node 73 y: shift, then 10 coefficients */
-    36, -4388000, 138888736, 457158144, 298593632, -1796917,
-    -16531220, 11236835, 10862621, -33081962, -17233520,
-    /* node 73 z: shift, then 10 coefficients */
-    34, 139590, -45904036, -43774464, 768417408, -2102877,
-    -7871981, -6778333, -2482059, -13703572, 1958078,
-    /* node 74 x: shift, then 10 coefficients */
-    36, -12022736, 250778000, 21444570, 490525024, -4775736,
-    -7354486, -15165267, -9763564, 27882888, -332952,
-    /* node 74 y: shift, then 10 coefficients */
-    36, -18179022, 22430592, 184525104, 265554976, -6608316,
-    2365606, -1407951, -11523572, 25251100, 3193604,
-    /* node 74 z: shift, then 10 coefficients */
-    34, -7595258, -65597980, -35231980, 549395456, -3799876,
-    1165752, -1300765, -5511142, 5707443, 812993,
-    /* node 75 x: shift, then 10 coefficients */
-    36, -6896762, 81961712, 16932050, 486764736, -4201186,
-    -6534617, 9951123, -1999816, -9368981, -231601,
-    /* node 75 y: shift, then 10 coefficients */
-    38, -3237909, 109548504, 344300768, 497885280, -2235841,
-    -12556046, 25657698, 11101162, -49019340, -15227426,
-    /* node 75 z: shift, then 10 coefficients */
-    35, -3571120, -86275616, -27789794, 590144320, -2825422,
-    -2888510, 2755464, -1894767, -8724397, -43482,
-    /* node 76 x: shift, then 10 coefficients */
-    37, -3141121, 47033092, -1929162, 524179200, -2554028,
-    5310716, -21698716, -3801739, 9777918, 1228978,
-    /* node 76 y: shift, then 10 coefficients */
-    39, -23629574, 116686528, 147350272, 538517696, -7762062,
-    3100613, -5697932, -10782166, 3705861, -5071938,
-    /* node 76 z: shift, then 10 coefficients */
-    37, -13058266, -96324920, -35769544, 897383232, -5881466,
-    2314700, -10059786, -9116991, 3007596, -621958,
-    /* node 77 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 77 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 77 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 78 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 78 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 78 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 79 x: shift, then 10 coefficients */
-    38, 10460027, 37384848, -31365348, -793141952, 6788473,
-    -4840532, 5826444, 3638293, 28543020, 1380612,
-    /* node 79 y: shift, then 10 coefficients */
-    38, -11818393, -92524976, 58029552, 410343904, -2466640,
-    538278, 4985404, -1891806, -470727, -7516854,
-    /* node 79 z: shift, then 10 coefficients */
-    37, -7864864, 56163684, -34659968, 638385472, -3817908,
-    -1286287, 3192777, -3643543, -7761226, -2137132,
-    /* node 80 x: shift, then 10 coefficients */
-    37, 9110745, 108974336, -16584202, -733085696, 4883095,
-    -496049, -15363056, 7401695, -17813592, -2927494,
-    /* node 80 y: shift, then 10 coefficients */
-    37, -11047113, -44698212, 104279824, 423811936, -6325720,
-    552656, -9339898, -6386734, -2004205, 935933,
-    /* node 80 z: shift, then 10 coefficients */
-    35, -4323799, 59007832, -42782412, 435031264, -2609322,
-    -931103, 933941, -3019201, 339950, 720478,
-    /* node 81 x: shift, then 10 coefficients */
-    36, 3532863, 135445360, -47658592, -348241920, 2724678,
-    -1119089, 8765683, 565362, 17220362, 1874504,
-    /* node 81 y: shift, then 10 coefficients */
-    36, -3349832, -46849764, 136415920, 348656032, -779402,
-    2183996, 13510469, -2468883, 1291599, -1934781,
-    /* node 81 z: shift, then 10 coefficients */
-    35, -6283338, 80568112, -79960464, 793709440, -3924498,
-    -1129996, 2666268, -3924771, -6311180, -137501,
-    /* node 82 x: shift, then 10 coefficients */
-    36, 18491852, 186457840, -21248678, -265122928, 11432569,
-    7093250, 12855476, 7048476, -6337776, -2966875,
-    /* node 82 y: shift, then 10 coefficients */
-    36, -12307349, -20536892, 253491584, 489725760, -9563150,
-    3625844, -36788276, -4963918, -18521720, -366954,
-    /* node 82 z: shift, then 10 coefficients */
-    34, -7773422, 35501824, -64826452, 549178368, -5518268,
-    -2269633, -8549049, -3787226, -2195508, 815012,
-    /* node 83 x: shift, then 10 coefficients */
-    37, -725560, 519284640, -190551, -764535, -426344,
-    -24524938, -101137672, -185523, 978654, 74369,
-    /* node 83 y: shift, then 10 coefficients */
-    36, -50008636, -1422331, 300140832, 570222080, -23296664,
-    -4849787, 2356421, -30155430, 13205049, -4293364,
-    /* node 83 z: shift, then 10 coefficients */
-    34, -12137567, -60728, -79078624, 627692096, -8883686,
-    -1876217, 1287808, -5783845, -6932282, 2234240,
-    /* node 84 x: shift, then 10 coefficients */
-    36, -18299556, 186580080, 21087778, 265309824, -11214392,
-    519285, 21235298, -6894664, 7101601, 2910860,
-    /* node 84 y: shift, then 10 coefficients */
-    36, -12278043, 19760136, 253622592, 490319424, -9510785,
-    -8981937, 37507436, -4994687, -20184194, -632866,
-    /* node 84 z: shift, then 10 coefficients */
-    34, -7666914, -35580844, -64749236, 549377728, -5457617,
-    829479, 8357280, -3774032, -2484810, 784221,
-    /* node 85 x: shift, then 10 coefficients */
-    36, -3363436, 136059024, 47920684, 348480896, -2730892,
-    868602, 3723068, -628683, -18894570, -1880425,
-    /* node 85 y: shift, then 10 coefficients */
-    36, -3178400, 46880840, 136578400, 348620160, -797019,
-    1108021, -16811568, -2463333, 1489, -1765861,
-    /* node 85 z: shift, then 10 coefficients */
-    35, -6262308, -80956016, -79854848, 793747136, -3962749,
-    586140, -3320334, -3964164, -6777082, -115989,
-    /* node 86 x: shift, then 10 coefficients */
-    37, -9175244, 108303072, 16578485, 733019136, -4909940,
-    -2591669, -13010136, -7373885, 18435014, 3004315,
-    /* node 86 y: shift, then 10 coefficients */
-    37, -11234520, 43512444, 103974728, 423958848, -6200428,
-    -6665502, 14550133, -6287369, 568644, 789473,
-    /* node 86 z: shift, then 10 coefficients */
-    35, -4325416, -59412156, -42816164, 435054784, -2582064,
-    -673958, 308708, -2995226, 712525, 719000,
-    /* node 87 x: shift, then 10 coefficients */
-    38, -10636000, 36831528, 31266610, 793568192, -6743662,
-    -7624312, 7735597, -3635973, -28514544, -1669993,
-    /* node 87 y: shift, then 10 coefficients */
-    38, -11766638, 92404592, 58055304, 410320640, -2463528,
-    -217805, -4509148, -1881589, -569753, -7456636,
-    /* node 87 z: shift, then 10 coefficients */
-    37, -7849588, -56771596, -34653096, 638413568, -3815668,
-    74364, -2320738, -3641604, -7747236, -2130926,
-    /* node 88 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 88 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 88 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 89 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 89 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 89 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 90 x: shift, then 10 coefficients */
-    38, 9846589, 31617722, -24176238, -462382336, 3579300,
-    704213, -11550625, 5636997, -7942436, 2071266,
-    /* node 90 y: shift, then 10 coefficients */
-    38, -11508769, -65601348, 27934246, 418675200, -5030003,
-    -127700, -2291677, -4636240, -7544084, -3718044,
-    /* node 90 z: shift, then 10 coefficients */
-    38, -8263676, 31073016, -30992662, 633385216, -4381752,
-    -938069, 4784219, -5038838, -5173818, -342125,
-    /* node 91 x: shift, then 10 coefficients */
-    38, 6199346, 91164272, -89403688, -843007616, 4181610,
-    -2110754, 5356328, 2425868, 20646848, 543628,
-    /* node 91 y: shift, then 10 coefficients */
-    38, -5968758, -89068264, 91444584, 843705664, -2134597,
-    2771588, 18192410, -3774512, 3020795, -534926,
-    /* node 91 z: shift, then 10 coefficients */
-    36, -2498362, 54418776, -54072400, 463023552, -1779164,
-    -1572724, 2154541, -1794758, -4244834, 140563,
-    /* node 92 x: shift, then 10 coefficients */
-    37, 10841288, 104420000, -44592384, -424260352, 5751966,
-    -1318050, -4350854, 6621634, -10219100, -882748,
-    /* node 92 y: shift, then 10 coefficients */
-    37, -9330517, -16584404, 108916656, 732425856, -7529038,
-    -230866, -17390174, -5350424, -14667910, 2895898,
-    /* node 92 z: shift, then 10 coefficients */
-    35, -4306438, 42927796, -58873576, 435044672, -2931287,
-    -883758, -814036, -2714602, -1725705, 717768,
-    /* node 93 x: shift, then 10 coefficients */
-    38, 2423501, 342569696, -110756192, -498710368, -11301591,
-    -17117394, -35518556, 1742293, -15967868, 14563401,
-    /* node 93 y: shift, then 10 coefficients */
-    36, -6691602, -17303550, 81876720, 487295776, -1673084,
-    5101995, 12394417, -4338127, 8919041, -123905,
-    /* node 93 z: shift, then 10 coefficients */
-    35, -3400284, 28167316, -85386912, 590380608, -1684805,
-    1234258, 7623886, -2983056, -1185980, -35400,
-    /* node 94 x: shift, then 10 coefficients */
-    39, 1533199, 641286464, 339276, 1427802, 964473,
-    58463368, 110516928, 496727, -1057825, 20805,
-    /* node 94 y: shift, then 10 coefficients */
-    36, 579614, 573716, 126319688, 522540384, 9166294,
-    3745010, -1835384, 3619665, 11769159, -6996677,
-    /* node 94 z: shift, then 10 coefficients */
-    35, -1091011, -309310, -93821832, 647701568, 1833223,
-    717600, -442037, -1167306, 5424646, -2305759,
-    /* node 95 x: shift, then 10 coefficients */
-    38, -2954833, 341353568, 111013184, 498349760, 10793326,
-    -8999275, -46843620, -2063939, 13771733, -14546882,
-    /* node 95 y: shift, then 10 coefficients */
-    36, -6788910, 17027286, 81760152, 486934048, -1730630,
-    -6020161, -10802126, -4330292, 9870926, -7354,
-    /* node 95 z: shift, then 10 coefficients */
-    35, -3506946, -28904762, -85466376, 590171264, -1742968,
-    -2702168, -6176403, -2995567, -673327, 3693,
-    /* node 96 x: shift, then 10 coefficients */
-    37, -11081532, 102794224, 44312444, 424126208, -5750436,
-    -6764214, 2709186, -6563494, 11921463, 824329,
-    /* node 96 y: shift, then 10 coefficients */
-    37, -9384332, 16025420, 108782576, 732649728, -7432424,
-    -2919055, 20259248, -5289298, -13860530, 2728894,
-    /* node 96 z: shift, then 10 coefficients */
-    35, -4329919, -43354208, -58930996, 435041344, -2910786,
-    -625621, 2182867, -2694795, -1238180, 704479,
-    /* node 97 x: shift, then 10 coefficients */
-    38, -6025080, 91253792, 89525000, 843134464, -4137247,
-    -1714500, 3238040, -2426466, -21549578, -532147,
-    /* node 97 y: shift, then 10 coefficients */
-    38, -5817744, 89084736, 91707584, 843493056, -2255356,
-    -1616081, -20475524, -3866472, 1478024, -317385,
-    /* node 97 z: shift, then 10 coefficients */
-    36, -2457619, -54637616, -54020848, 462977728, -1794591,
-    1081875, -2346976, -1811150, -4365956, 182619,
-    /* node 98 x: shift, then 10 coefficients */
-    38, -9949186, 30843910, 24118480, 462216768, -3617143,
-    -1262204, -9998932, -5631268, 9221048, -1996292,
-    /* node 98 y: shift, then 10 coefficients */
-    38, -11627181, 64720484, 27837074, 418730592, -5023201,
-    -2759422, 3905256, -4623764, -6701552, -3791032,
-    /* node 98 z: shift, then 10 coefficients */
-    38, -8404337, -31744594, -31101686, 633411456, -4379153,
-    -1300455, -3447982, -5018640, -3940000, -379292,
-    /* node 99 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 99 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 99 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 100 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 100 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 100 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 101 x: shift, then 10 coefficients */
-    40, 24519768, 46985048, -133129568, -832731520, 3780790,
-    407352, 6956308, 3027968, 5562293, 14659231,
-    /* node 101 y: shift, then 10 coefficients */
-    39, -12119208, -67400224, 22671898, 416683264, -1317503,
-    176829, 8259344, -1802344, 8155742, -7340054,
-    /* node 101 z: shift, then 10 coefficients */
-    39, -12830731, -107459160, 107123864, 321558336, -2717366,
-    623179, 1027404, -2763262, 1053371, -6935754,
-    /* node 102 x: shift, then 10 coefficients */
-    38, 11440252, 27372230, -66115256, -418894240, 4292312,
-    18373, -4192923, 5065628, 266879, 3728467,
-    /* node 102 y: shift, then 10 coefficients */
-    38, -10117818, -23715690, 32127692, 461689280, -5747716,
-    -1434212, -10829644, -4023038, -13576237, -2137138,
-    /* node 102 z: shift, then 10 coefficients */
-    38, -8312152, 31424152, -30628616, 633256640, -4875299,
-    -1197246, 2492310, -4512134, -6513898, -375988,
-    /* node 103 x: shift, then 10 coefficients */
-    38, 11947570, 58026068, -92473144, -410148960, 1998676,
-    -109524, 517441, 2459716, 3961024, 7461276,
-    /* node 103 y: shift, then 10 coefficients */
-    38, -10074833, -31123724, 37666996, 794255808, -3066021,
-    6275064, 27804076, -6480096, 3907394, -1320070,
-    /* node 103 z: shift, then 10 coefficients */
-    37, -7877316, 35257700, -55614820, 638456768, -3559120,
-    -1370476, 3766834, -3782987, -5903120, -2092616,
-    /* node 104 x: shift, then 10 coefficients */
-    39, 23777608, 147971008, -117097584, -538657088, 10254508,
-    8878558, -1356534, 7958308, 2611948, 5444942,
-    /* node 104 y: shift, then 10 coefficients */
-    37, -3635440, 2951808, 48220652, 523382272, -4178046,
-    -4707240, -18376442, -2374972, -22120918, 1041843,
-    /* node 104 z: shift, then 10 coefficients */
-    36, -6619589, 18263976, -47245408, 448504928, -4494365,
-    -2728162, -4142268, -2916587, -6321884, -379763,
-    /* node 105 x: shift, then 10 coefficients */
-    41, -745198, 746708928, -560726, -672355, -194275,
-    -30504044, -120924720, 103485, 2760679, 172518,
-    /* node 105 y: shift, then 10 coefficients */
-    37, -16543083, -666038, 24756626, 608317056, -19248622,
-    -6314200, 5125730, -14600220, -19988414, 12626790,
-    /* node 105 z: shift, then 10 coefficients */
-    36, -10248596, -243958, -59763300, 507553408, -8103142,
-    -2344356, 1284810, -5542726, -10563212, 1366241,
-    /* node 106 x: shift, then 10 coefficients */
-    39, -23627128, 147298960, 117166688, 538562240, -10243631,
-    1070318, 6796385, -7952860, -3652368, -5446262,
-    /* node 106 y: shift, then 10 coefficients */
-    37, -3385358, -2612364, 48466848, 523887008, -4087606,
-    4241644, 15311683, -2404254, -23688240, 926423,
-    /* node 106 z: shift, then 10 coefficients */
-    36, -6560779, -18545380, -47171944, 448666656, -4469424,
-    531473, 5034514, -2925163, -6686262, -416571,
-    /* node 107 x: shift, then 10 coefficients */
-    38, -11847189, 58346152, 92513648, 410281184, -1934273,
-    -167517, -723811, -2430495, -3861378, -7435910,
-    /* node 107 y: shift, then 10 coefficients */
-    38, -10354936, 30529816, 37660116, 794070080, -3242773,
-    -6967833, -27542174, -6568689, 4732700, -1225511,
-    /* node 107 z: shift, then 10 coefficients */
-    37, -7870626, -35572468, -55568656, 638473920, -3574776,
-    214160, -4285886, -3804758, -5667696, -2061307,
-    /* node 108 x: shift, then 10 coefficients */
-    38, -11558801, 26465058, 66108960, 418856320, -4362462,
-    -2901839, -2283884, -5107904, -265680, -3763041,
-    /* node 108 y: shift, then 10 coefficients */
-    38, -10096442, 22888088, 32027556, 461893088, -5630474,
-    -1953153, 13629943, -3946812, -13064243, -2250271,
-    /* node 108 z: shift, then 10 coefficients */
-    38, -8393472, -32203364, -30662654, 633375104, -4870192,
-    -1729468, -217087, -4503918, -6372996, -453797,
-    /* node 109 x: shift, then 10 coefficients */
-    39, -12192902, 23676134, 66440112, 416562496, -1728023,
-    -753437, 5429269, -1401067, -1370394, -7342858,
-    /* node 109 y: shift, then 10 coefficients */
-    39, -12074041, 67368216, 22591434, 416716096, -1230470,
-    -678980, -5661589, -1717192, 9252680, -7263534,
-    /* node 109 z: shift, then 10 coefficients */
-    39, -12749028, 107307104, 107068448, 321619008, -2622158,
-    -1681838, 716859, -2689909, 1977328, -6889742,
-    /* node 110 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 110 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 110 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 111 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 111 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 111 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 112 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 112 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 112 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 113 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 113 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 113 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 114 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 114 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 114 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 115 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 115 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 115 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 116 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 116 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 116 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 117 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 117 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 117 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 118 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 118 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 118 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 119 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 119 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 119 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 120 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 120 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 120 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 121 x: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 121 y: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
-    /* node 121 z: shift, then 10 coefficients */
-    62, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0,
+    2146051968, 357837184,
+    /* node 1 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 1 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 1 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 2 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 2 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 2 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 3 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 3 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 3 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 4 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 4 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 4 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 5 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 5 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 5 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 6 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 6 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 6 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 7 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 7 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 7 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 8 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 8 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 8 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 9 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 9 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 9 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 10 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 10 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 10 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 11 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 11 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 11 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 12 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 12 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 12 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 13 x: shift, then 20 coefficients */
+    39, 13112646, 22900492, 67035000, -418263296, 3141456,
+    281168, 4342524, 2688994, -6198182, 7363892, 127645,
+    983581, -1859540, -880918, 2954016, -34618, 178075,
+    -2068638, -1544791, -561376,
+    /* node 13 y: shift, then 20 coefficients */
+    39, 13210744, 67335176, 22787374, -417488384, 2750280,
+    499966, -6156735, 3206184, 4617218, 7383418, 234206,
+    -212261, -2570482, 512018, 1903712, -669100, 126787,
+    -510808, -842892, -462332,
+    /* node 13 z: shift, then 20 coefficients */
+    39, -13095548, -107365616, -107057160, 323273952, -3144923,
+    -1531276, -137831, -3130446, -144768, -6898998, -182292,
+    -127376, 1524190, -246462, -1081092, 417200, -154604,
+    1168356, 645194, 206381,
+    /* node 14 x: shift, then 20 coefficients */
+    38, 10552066, 27261576, 64396316, -423685920, 3205068,
+    1989982, -2979134, 3757358, 3210483, 3635225, -24053,
+    -614718, -1519559, 910359, -4787898, -546403, -77125,
+    -2686141, -227440, 371239,
+    /* node 14 y: shift, then 20 coefficients */
+    38, 9070939, 22271342, 30695150, -468329472, 4518970,
+    527728, 11538118, 2512554, -9704088, 2007837, -233671,
+    915595, -2307530, -1096409, -1328439, -5491, 91665,
+    -3588182, -1652688, 114508,
+    /* node 14 z: shift, then 20 coefficients */
+    38, -7518766, 31559288, 32129208, 638424960, -3919063,
+    -729158, 1513152, -3344998, 3562586, -285342, 18962,
+    -22270, 1759044, -280737, 3864706, 21227, -20133,
+    2919520, 909631, -164719,
+    /* node 15 x: shift, then 20 coefficients */
+    38, 11785176, 59758892, 92826584, -409267744, 1940907,
+    757502, -636186, 2445912, -4365307, 7421682, 323273,
+    507581, 1911022, 559401, -661989, 906166, 133836,
+    -770636, -159299, -27678,
+    /* node 15 y: shift, then 20 coefficients */
+    38, 9999633, 32758524, 36712568, -795414720, 2722496,
+    7005679, -25538772, 6125736, 5542826, 1360812, 500033,
+    -2138213, -1018671, 3464580, -7136846, -1553685, -106424,
+    -240270, 1814277, 424409,
+    /* node 15 z: shift, then 20 coefficients */
+    37, -6942898, 33945080, 56218960, 639850240, -2406750,
+    -105325, 3912431, -2586309, 2713402, -1984566, -323070,
+    157912, -1050310, -1373191, 3313814, 19141, -99524,
+    1155530, -390308, -393157,
+    /* node 16 x: shift, then 20 coefficients */
+    39, 23611532, 146779408, 113742456, -554643968, 10739247,
+    -4878474, 883713, 7892816, -5877981, 5278632, -342883,
+    3026706, -6684574, -2248601, 6736630, 1519106, 197189,
+    -12331812, -7361784, -1392594,
+    /* node 16 y: shift, then 20 coefficients */
+    37, 1924789, 1631965, 47170576, -520631616, 2411552,
+    -2919635, 13379701, 662482, -18515186, -1261778, 578316,
+    1435128, 7376936, -273907, -2423480, 4558384, 343791,
+    -1201839, -1789951, 493160,
+    /* node 16 z: shift, then 20 coefficients */
+    36, -5746131, 16908296, 48923976, 451648608, -3593432,
+    868452, -3520282, -1897507, 4342508, -259461, -217034,
+    -633099, -864774, -104700, 1784589, -1328450, -91928,
+    3102897, 1951066, -40110,
+    /* node 17 x: shift, then 20 coefficients */
+    41, 293817, 739651136, 2747923, -1755991, 165536,
+    26702220, -110215016, 391788, -2656952, 150463, -1579868,
+    2638087, -2881888, 7522807, -26026440, -14092795, 494352,
+    681079, 540939, -189835,
+    /* node 17 y: shift, then 20 coefficients */
+    37, 13782159, -578840, 15647831, -637915968, 16151881,
+    231234, -1255079, 10783582, -14139779, -12931044, 10159,
+    3598502, -8193440, -1453581, 169260, 755655, -20124,
+    -21074458, -11547947, -1747830,
+    /* node 17 z: shift, then 20 coefficients */
+    36, -8956144, -344632, 62482788, 517318080, -6694895,
+    -543357, 572464, -3872547, 7839664, 1519959, -14489,
+    -1440139, 1686320, -47433, 1915794, -241606, -77617,
+    7545234, 3390251, 359850,
+    /* node 18 x: shift, then 20 coefficients */
+    39, -23736978, 146815376, -113661752, 554795776, -10807831,
+    -4863284, 2969028, -7937781, 5950234, -5348523, -399239,
+    -3179436, 6964664, 91305, 221381, -741636, -238544,
+    12222497, 7589910, 1409835,
+    /* node 18 y: shift, then 20 coefficients */
+    37, 1963786, 946856, 48141044, -521080608, 2426852,
+    4574380, -15586411, 788616, -19653356, -1246840, -623068,
+    2273153, 6413058, 1535470, -6568609, -3562370, 503076,
+    -834994, -1487587, 457016,
+    /* node 18 z: shift, then 20 coefficients */
+    36, -5755023, -17864834, 48664324, 451758688, -3595095,
+    -1916832, 4400521, -1932025, 4678273, -262366, 222433,
+    -859497, -596432, -466289, 2557402, 1059635, -134529,
+    2984553, 1870003, -33183,
+    /* node 19 x: shift, then 20 coefficients */
+    38, -11734856, 58823460, -93023512, 409302112, -1915380,
+    98789, -7165, -2450780, 4551732, -7392292, 322116,
+    -561342, -1853707, 44133, 1673768, 552956, -148952,
+    772011, -17310, 25296,
+    /* node 19 y: shift, then 20 coefficients */
+    38, 9831831, -31225132, 36060120, -794909888, 2631167,
+    -5690566, 26545514, 5996466, 6081408, 1262812, -365013,
+    -2900280, -300631, -1046162, 471949, 836866, -248909,
+    -333661, 1834302, 491795,
+    /* node 19 z: shift, then 20 coefficients */
+    37, -6904880, -35387776, 56189248, 639829376, -2386354,
+    -1255929, -3918319, -2577010, 2781405, -1960774, 260861,
+    199611, -1053659, -497155, 3915046, 415778, -94691,
+    1139369, -472215, -399624,
+    /* node 20 x: shift, then 20 coefficients */
+    38, -10567942, 26102392, -64244344, 423611904, -3212831,
+    656270, -3182396, -3749588, -3271012, -3643516, -92662,
+    689630, 1483992, -873118, 2792991, 50262, 90327,
+    2630288, 322066, -379371,
+    /* node 20 y: shift, then 20 coefficients */
+    38, 9178576, -21962964, 31148018, -468652576, 4577370,
+    -28429, -11903291, 2593583, -10055652, 2070199, 262850,
+    1442956, -2776789, 1413718, -1537582, -39013, 182164,
+    -3516949, -1672547, 72874,
+    /* node 20 z: shift, then 20 coefficients */
+    38, -7554752, -32357260, 32098304, 638452416, -3936474,
+    -312648, -1442184, -3365048, 3682920, -305385, -66301,
+    -122812, 1892688, -847584, 1353666, 309681, -38552,
+    2827213, 970182, -162691,
+    /* node 21 x: shift, then 20 coefficients */
+    39, -13097661, 23241426, -67399600, 418432736, -3139642,
+    768778, 4975117, -2719849, 6386499, -7356476, 134600,
+    -1202112, 1999066, 401705, -2868544, -987184, -222167,
+    2157564, 1356034, 587660,
+    /* node 21 y: shift, then 20 coefficients */
+    39, 13134760, -67511952, 22647636, -417371712, 2713838,
+    -652540, 6302234, 3167987, 4801446, 7340182, -208661,
+    -478577, -2300343, -892887, 2111759, 985085, 87570,
+    -651330, -735987, -453874,
+    /* node 21 z: shift, then 20 coefficients */
+    39, -13074485, 107064280, -107167400, 323333408, -3136692,
+    1245307, 148582, -3132387, -127530, -6886877, 147163,
+    -146962, 1516820, 13160, 690092, -539506, -161858,
+    1254156, 543711, 217502,
+    /* node 22 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 22 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 22 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 23 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 23 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 23 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 24 x: shift, then 20 coefficients */
+    38, 9269311, 30836716, 22494320, -466940064, 2671204,
+    958061, -9100288, 4608200, 11384265, 2057414, 165901,
+    -1445006, -2420622, 1638337, -3003301, -2193228, -205919,
+    -1954534, 660950, 282508,
+    /* node 24 y: shift, then 20 coefficients */
+    38, 10534249, 64666408, 27049486, -423806432, 3781038,
+    1880370, 3422528, 3150119, -3082546, 3623898, -71383,
+    -140393, -1935486, 430544, -4714442, -1044606, -30319,
+    -2385110, 337856, 369462,
+    /* node 24 z: shift, then 20 coefficients */
+    38, -7593194, 31830972, 31611990, 637916992, -3425185,
+    -775809, 3181706, -3920619, 1552407, -296538, -64440,
+    494471, 2071042, -946825, 4653502, 1527075, 8325,
+    2028613, -764469, -244293,
+    /* node 25 x: shift, then 20 coefficients */
+    37, 2685597, 46814632, 46103576, -419678144, 1679892,
+    1385008, 1518305, 797417, -9196081, 168077, 107471,
+    935310, 1606236, 434710, -962774, 798207, 304855,
+    1111144, 701105, 309556,
+    /* node 25 y: shift, then 20 coefficients */
+    37, 2777303, 46789016, 46316980, -419155584, 859211,
+    1552011, -9543096, 1733254, 1956970, 194556, 311251,
+    -302469, 1789217, 1840250, -1589926, 516582, 151922,
+    1500074, 1058907, 370305,
+    /* node 25 z: shift, then 20 coefficients */
+    36, -1920136, 53658656, 53999852, 463108576, -1078834,
+    847739, 2220357, -1064129, 2106935, 241037, -134535,
+    -121648, -656970, -876108, 1522089, 22683, -141829,
+    -162984, -403300, -300561,
+    /* node 26 x: shift, then 20 coefficients */
+    37, 10848984, 100095176, 41426204, -435620768, 5725636,
+    3845751, 824084, 6127950, 11950241, -879903, -551763,
+    -1179884, -8013256, -298848, -2953930, -3261243, -337183,
+    -5504896, -1770183, -198864,
+    /* node 26 y: shift, then 20 coefficients */
+    37, 8997487, 14523497, 109187432, -738959680, 7222478,
+    1432683, 18152384, 4760200, -13338868, -2942364, -279086,
+    1320503, -3455759, -1807504, -33744, -96062, 194414,
+    -3662050, -823388, -117947,
+    /* node 26 z: shift, then 20 coefficients */
+    35, -4010150, 43662500, 59360668, 437913952, -2561608,
+    -145556, -1764909, -2228071, 223742, 757727, 66873,
+    119233, 1573529, -138882, 1372338, 716362, -4133,
+    1341602, 62382, -60262,
+    /* node 27 x: shift, then 20 coefficients */
+    37, 652150, 174687488, 59031616, -235289904, -6701055,
+    7780502, -18761506, 50317, 13256349, 7199500, 271860,
+    -3855240, 5607401, 5252038, -15197862, -1218688, 94117,
+    11430398, 9043277, 2245906,
+    /* node 27 y: shift, then 20 coefficients */
+    36, 7271958, 15265481, 82315040, -491064864, 2294392,
+    5026469, -9957657, 4880650, 7547144, 205977, -264436,
+    -362600, -4150003, 530695, 1580288, -2429744, -126850,
+    -1466253, 793386, -295626,
+    /* node 27 z: shift, then 20 coefficients */
+    35, -2812719, 29488912, 85501168, 592709056, -847395,
+    -2136402, 5764132, -2000002, -2199612, 70634, 207725,
+    215875, 1838033, -1078050, 3515814, 2025178, -68682,
+    -73634, -827233, -395765,
+    /* node 28 x: shift, then 20 coefficients */
+    39, -116969, 651480256, -2819354, 1283260, -72628,
+    -52335416, 99044224, -356588, 2799742, -66480, 2657436,
+    -2207884, 2166364, -6842668, 30768514, 16325453, -467931,
+    -480403, -1072677, 91193,
+    /* node 28 y: shift, then 20 coefficients */
+    36, 2687848, 283806, 134602944, -505658912, -5156956,
+    -822065, 657733, 756813, 1966892, 7261396, 56881,
+    -576969, 1397386, 119962, 5530704, 343685, 570479,
+    12106934, 6486343, 415974,
+    /* node 28 z: shift, then 20 coefficients */
+    35, -886607, -724567, 92740488, 641873408, 2238209,
+    -661733, -901973, -791481, -8504227, -2236981, -40888,
+    2229703, -1193971, -1794938, 5274908, 991586, 13344,
+    -5755116, -3814255, -1082954,
+    /* node 29 x: shift, then 20 coefficients */
+    37, -557794, 170637952, -58259828, 234800880, 6759437,
+    4584330, -21294412, 53058, -13698584, -7143690, 113517,
+    4550717, -6154541, -2241697, 8231324, 2021815, 33410,
+    -11488085, -8877161, -2314818,
+    /* node 29 y: shift, then 20 coefficients */
+    36, 7228342, -15772773, 81805464, -490855296, 2280336,
+    -5360144, 10365629, 4803830, 8209794, 184889, 296897,
+    -854050, -3606595, -1011551, 1744939, 2530632, -214706,
+    -1725075, 683799, -279860,
+    /* node 29 z: shift, then 20 coefficients */
+    35, -2803457, -29947114, 85817304, 592595712, -845848,
+    1226445, -6387902, -1959390, -2583048, 74650, -240296,
+    482387, 1556605, -491755, 2314452, -972409, -18168,
+    51398, -721444, -400527,
+    /* node 30 x: shift, then 20 coefficients */
+    37, -10909083, 100432952, -41132096, 435557568, -5767152,
+    3286194, -71162, -6114071, -12370434, 842421, -636838,
+    1327360, 7793502, -841984, -1229757, -2562737, 363072,
+    5637388, 1979866, 213580,
+    /* node 30 y: shift, then 20 coefficients */
+    37, 9139745, -14415731, 109676600, -739273600, 7302204,
+    -1463372, -18518010, 4858271, -13696988, -2857267, 332640,
+    1920954, -3938251, 1597965, 324289, 442614, 301931,
+    -3575506, -879860, -165251,
+    /* node 30 z: shift, then 20 coefficients */
+    35, -4029239, -44074344, 59326308, 437949888, -2574764,
+    -392265, 1590303, -2237682, 206349, 745671, -104196,
+    73755, 1591776, -618742, 1430476, -409937, -14576,
+    1369316, 73685, -50797,
+    /* node 31 x: shift, then 20 coefficients */
+    37, -2689064, 45832252, -46252896, 419771456, -1677907,
+    734917, 1965680, -817198, 9355318, -168431, 107938,
+    -1066572, -1451389, -477889, 2510970, 784458, -325775,
+    -1146147, -744802, -298949,
+    /* node 31 y: shift, then 20 coefficients */
+    37, 2691670, -45659372, 46078048, -418979232, 811260,
+    -711935, 9602233, 1684254, 2103624, 143709, -284859,
+    -619800, 2033313, -425702, -3051900, -794082, 98947,
+    1467692, 1116973, 395473,
+    /* node 31 z: shift, then 20 coefficients */
+    36, -1906033, -54464728, 54024372, 463105952, -1069256,
+    -1621739, -2214724, -1056277, 2095983, 250021, 112634,
+    -82650, -673461, -289994, 3090604, 347147, -133432,
+    -154012, -416759, -302813,
+    /* node 32 x: shift, then 20 coefficients */
+    38, -9226406, 30320270, -21994888, 466659008, -2654514,
+    -89452, -10066462, -4548641, -11759079, -2033628, 86660,
+    1924479, 2000074, -68290, 3003997, -1126906, 273944,
+    2032936, -581189, -315616,
+    /* node 32 y: shift, then 20 coefficients */
+    38, 10578236, -63510600, 27138458, -423870528, 3809793,
+    -720230, -3230964, 3173978, -3127766, 3650252, 148345,
+    -10260, -2032486, 1353942, -2858376, 449823, -3177,
+    -2373226, 303123, 355505,
+    /* node 32 z: shift, then 20 coefficients */
+    38, -7594196, -32803252, 31711798, 637845568, -3432058,
+    -299531, -3745426, -3913008, 1457424, -298711, -27473,
+    589457, 1965413, -910022, 2147422, -733538, 15950,
+    2057069, -743875, -248333,
+    /* node 33 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 33 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 33 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 34 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 34 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 34 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 35 x: shift, then 20 coefficients */
+    38, 9684457, 36945676, 31990456, -797340096, 5960100,
+    6395177, 5346982, 2487570, -25641180, 1265706, -183463,
+    2333326, -1012353, -1507608, -4729334, 1322034, 403427,
+    -2347634, -1287441, 203511,
+    /* node 35 y: shift, then 20 coefficients */
+    38, 11854748, 93603656, 59219008, -408508992, 2503650,
+    843157, -4367271, 1971686, 18976, 7415934, 167121,
+    -176852, -169388, 1427817, -2006056, -226267, 353922,
+    2158970, 1128049, 100321,
+    /* node 35 z: shift, then 20 coefficients */
+    37, -6951606, 55559156, 34536356, 639548544, -2629770,
+    -75707, 2571915, -2372224, 3666273, -1970433, -119953,
+    909, 308811, -1254759, 3973439, 344673, -319054,
+    -546917, -788183, -451684,
+    /* node 36 x: shift, then 20 coefficients */
+    37, 9189785, 109224600, 14781423, -737846848, 4914832,
+    1923142, -12960822, 7320058, 17840602, -2879583, 278971,
+    -1616858, -3170404, 1502855, -1215468, -926885, -268276,
+    -2749498, 29881, 953,
+    /* node 36 y: shift, then 20 coefficients */
+    37, 10727515, 40581372, 100767960, -436887936, 6081934,
+    3511624, 12450408, 5608938, -305603, -895231, -346332,
+    157126, -6231215, -1865171, -1081955, -2039210, -622523,
+    -8665010, -3054943, -369640,
+    /* node 36 z: shift, then 20 coefficients */
+    35, -4001727, 59289680, 43772436, 438051584, -2242781,
+    -133008, 171761, -2538551, -1574622, 755110, -12598,
+    234732, 1224000, -231389, 1134302, 358773, 84218,
+    1845881, 452653, -37849,
+    /* node 37 x: shift, then 20 coefficients */
+    36, 2268772, 139990288, 49263500, -343360896, 1216561,
+    951889, 4419638, -780071, -14508818, 1766656, 579751,
+    1641221, 6257522, 948144, -1203986, 3374232, 440479,
+    1764740, 892378, 707117,
+    /* node 37 y: shift, then 20 coefficients */
+    36, 2507831, 50777416, 139079328, -341460896, -617564,
+    1275976, -14550024, 1344251, 5552787, 1801992, 519902,
+    -525812, 3274865, 3584218, -4257312, 632090, 670289,
+    6864220, 4002000, 987300,
+    /* node 37 z: shift, then 20 coefficients */
+    35, -5366416, 78558768, 79340304, 793868288, -2731581,
+    90050, 3034043, -2690000, 2985444, -24561, -358421,
+    -206096, -871366, -1575529, 3190990, -682290, -334168,
+    -483437, -1246025, -652910,
+    /* node 38 x: shift, then 20 coefficients */
+    36, 20099126, 183751152, 18727522, -282118752, 14048488,
+    -4599474, 14827456, 9308711, -3556597, -2810154, -376220,
+    2945754, -9279083, -4628802, 13022788, 1722615, 106596,
+    -13898502, -7796397, -2474269,
+    /* node 38 y: shift, then 20 coefficients */
+    36, 10173651, 21770674, 247981536, -498846432, 7408900,
+    6108457, 33846716, 2295316, -14590919, 279750, 67321,
+    1445143, 2584386, -2634892, -1648342, 4308615, -704821,
+    -9628705, -5341750, 602192,
+    /* node 38 z: shift, then 20 coefficients */
+    34, -7156090, 33930616, 66320392, 551927872, -4902156,
+    897215, -7202134, -3126568, 1375039, 829587, -253070,
+    -172534, -896773, 195696, -57877, -1740435, 56160,
+    3170403, 1290196, 22181,
+    /* node 39 x: shift, then 20 coefficients */
+    37, 193817, 514664288, 2211357, -1253609, 101224,
+    22403424, -94128888, 283909, -1814309, 104898, -980249,
+    2030400, -1882134, 4843930, -16151927, -9255251, 351961,
+    311402, 487958, -143534,
+    /* node 39 y: shift, then 20 coefficients */
+    36, 46129208, 5275558, 300855072, -587462912, 18220004,
+    4102842, 353304, 24711800, 28024858, 3848313, 357088,
+    -1437246, -6726558, 6425146, -19879512, -861370, 1641510,
+    -7504234, 5789462, 1321251,
+    /* node 39 z: shift, then 20 coefficients */
+    34, -12001913, -427016, 79406336, 637019456, -8913503,
+    -176074, 779341, -5616352, 8714454, 2226219, -48770,
+    -2030792, 3651196, 467190, -2146779, -905058, -345042,
+    7267052, 2431052, 699261,
+    /* node 40 x: shift, then 20 coefficients */
+    36, -20223494, 185102592, -19364546, 282582528, -14125638,
+    -2776902, 17948136, -9411559, 3911256, 2738057, -395500,
+    -3598920, 9824899, 1118065, -7852586, -2655176, -228429,
+    13928242, 7741116, 2547612,
+    /* node 40 y: shift, then 20 coefficients */
+    36, 10314929, -22894406, 249110880, -499412448, 7472094,
+    -6364340, -35794964, 2464789, -15752144, 354285, -206303,
+    2646522, 1417436, 36405, 1135068, -3257453, -511007,
+    -9195484, -5242716, 535776,
+    /* node 40 z: shift, then 20 coefficients */
+    34, -7174716, -34870276, 65932748, 552115968, -4908030,
+    -1638408, 8276718, -3175472, 1787034, 821005, 254905,
+    -517913, -539060, -233977, 1658278, 942758, -3922,
+    3057410, 1184926, 37938,
+    /* node 41 x: shift, then 20 coefficients */
+    36, -2230756, 138439520, -49667116, 343469888, -1184346,
+    26791, 5459518, 744156, 15056784, -1740575, 596451,
+    -1937942, -5900390, -22351, 2784258, 2966644, -487873,
+    -1967138, -1080038, -713929,
+    /* node 41 y: shift, then 20 coefficients */
+    36, 2366708, -48648124, 138561632, -341094272, -703794,
+    173377, 15690860, 1253425, 5822226, 1717334, -405631,
+    -1145398, 3745271, 34032, -4912610, -1978980, 562448,
+    6837596, 4054688, 1041397,
+    /* node 41 z: shift, then 20 coefficients */
+    35, -5333348, -80137344, 79358952, 793818752, -2707038,
+    -1318368, -3300933, -2676472, 3048209, -3286, 255763,
+    -159438, -883190, -564350, 3165960, 1183221, -319344,
+    -534759, -1278615, -667580,
+    /* node 42 x: shift, then 20 coefficients */
+    37, -9132645, 108981952, -14109706, 737454528, -4887955,
+    1405389, -13645687, -7246318, -18189702, 2913035, 187669,
+    2234472, 2712649, 814897, 559841, -623711, 355014,
+    2736641, 92483, -56355,
+    /* node 42 y: shift, then 20 coefficients */
+    37, 10798679, -41432256, 101233272, -437156448, 6140382,
+    -3658076, -12744099, 5672526, -454432, -849661, 362576,
+    576228, -6472834, 610336, 2338075, 2436866, -537614,
+    -8767603, -2969246, -415677,
+    /* node 42 z: shift, then 20 coefficients */
+    35, -4006874, -59616044, 43741880, 438082592, -2247651,
+    -356077, -205202, -2544298, -1555580, 752086, -13009,
+    209682, 1254490, -263118, 1210155, -202805, 76611,
+    1857025, 443150, -32599,
+    /* node 43 x: shift, then 20 coefficients */
+    38, -9807300, 35986904, -32743584, 797747904, -6021818,
+    5866039, 6022430, -2595540, 26220980, -1337844, -228289,
+    -3137532, 1673565, -2113778, -2262026, 1018052, -524373,
+    2187092, 1258380, -156101,
+    /* node 43 y: shift, then 20 coefficients */
+    38, 11822575, -92417528, 59079988, -408431616, 2481597,
+    62131, 4815123, 1949369, 107129, 7396152, -102734,
+    -335792, -53820, 435739, -2587318, -362414, 324100,
+    2136193, 1132359, 107323,
+    /* node 43 z: shift, then 20 coefficients */
+    37, -6956652, -57067020, 34513484, 639581184, -2628961,
+    -1341672, -3020417, -2376023, 3690239, -1971901, 36051,
+    -24953, 353061, -1235987, 4293346, 578054, -319832,
+    -551794, -786552, -443730,
+    /* node 44 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 44 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 44 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 45 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 45 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 45 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 46 x: shift, then 20 coefficients */
+    37, 2325121, 49528720, 174563, -517001376, 942276,
+    -2148607, -18554236, 2632069, 15492043, -1213334, 480627,
+    -2788829, 2109706, 4774534, -7830162, -2542793, 717117,
+    8074136, 5793260, 1012218,
+    /* node 46 y: shift, then 20 coefficients */
+    39, 23964760, 113653376, 148144576, -552250816, 8143018,
+    -4906657, -4004425, 10884971, 1075843, 5304394, 392408,
+    -719255, -11646975, 2261626, 2533220, -6526138, -262081,
+    -4598678, 1592166, -961645,
+    /* node 46 z: shift, then 20 coefficients */
+    36, -5916294, 48099924, 17176078, 450211072, -2029588,
+    707858, 3894733, -3659097, -4162435, -268694, -174985,
+    815053, 1747991, -1949206, 4105898, 2348765, -271786,
+    -1132638, -2084768, -275456,
+    /* node 47 x: shift, then 20 coefficients */
+    36, 7087805, 81414752, 15901315, -492667840, 4755223,
+    4516932, 7699237, 2189051, -10568428, 164417, -195187,
+    1638091, -2823123, -1817599, 3452108, 1249020, -301172,
+    -4530855, -2937033, -486784,
+    /* node 47 y: shift, then 20 coefficients */
+    37, 191061, 60463512, 171798304, -238885968, -220692,
+    7207486, 10517213, -6979738, -18813242, 7167381, -154311,
+    891901, 11681550, -677102, -9737902, 7031800, 181431,
+    1298793, 13782, 1651893,
+    /* node 47 z: shift, then 20 coefficients */
+    35, -2710656, 85853016, 29326370, 593796032, -1951787,
+    -1862717, -2126784, -767664, 6289727, 79159, -8472,
+    -655855, -162267, 25339, 2022365, -173596, 215930,
+    3117636, 1435650, -244263,
+    /* node 48 x: shift, then 20 coefficients */
+    36, 10742917, 247965664, 23318624, -493716352, 2675612,
+    7477258, -12206643, 7708566, 34624112, 332933, -505792,
+    -2432672, -5752500, 2793836, -8305580, -6496094, 244129,
+    4377328, 6016954, 1337194,
+    /* node 48 y: shift, then 20 coefficients */
+    36, 20485382, 18592454, 185324640, -279225472, 9553240,
+    -4386262, -1406016, 14256096, 15491755, -2807558, 366071,
+    -1195444, -14850471, 571618, 8354682, -5251522, -344822,
+    -5008063, 28937, -1948367,
+    /* node 48 z: shift, then 20 coefficients */
+    34, -7323778, 65275008, 34416492, 550425472, -3246373,
+    696383, 985251, -4977108, -8038044, 826441, -39421,
+    942161, 2210788, -1347412, 2344916, 1286958, -289665,
+    -1630268, -2074559, -224120,
+    /* node 49 x: shift, then 20 coefficients */
+    36, 1487570, 458945696, 143635808, -282877632, -14205709,
+    17615948, -22935044, -1479571, 15227891, 16560183, 985672,
+    -1994138, 7394714, 7253150, -23399648, -2861987, 625769,
+    15107835, 6999796, 3746428,
+    /* node 49 y: shift, then 20 coefficients */
+    36, 1058319, 142902160, 457673632, -286063072, -1750810,
+    18063166, 12168961, -14446861, -24165706, 16614951, 181078,
+    3476720, 17280744, 586886, -16658443, 3167634, 1027308,
+    1460879, -509517, 3037354,
+    /* node 49 z: shift, then 20 coefficients */
+    34, 1968144, 48217548, 45672964, 775718912, 33151,
+    -5414312, 6401049, 39903, 7695164, 2149351, 430298,
+    -1262576, 1911100, 29041, 3350590, 2988267, 327610,
+    3350058, 1520142, -737300,
+    /* node 50 x: shift, then 20 coefficients */
+    36, -164661, 478640608, -1675004, 857516, -90101,
+    -35161068, 49504440, -229643, 1469399, -94789, -298711,
+    -1538668, 1354610, -6482504, 10985326, 7536132, -281562,
+    -262388, -376661, 78332,
+    /* node 50 y: shift, then 20 coefficients */
+    35, 49656488, -1440480, 416408320, -218099760, 15690889,
+    -1550532, 1236842, 24400472, 32147980, 10216718, 70815,
+    -2504457, -17683082, -1640677, 10014505, 490929, -937977,
+    -4926872, -3810884, -1833758,
+    /* node 50 z: shift, then 20 coefficients */
+    34, -5260686, -1621115, 54874936, 858435264, 4856963,
+    -1315244, -2102534, -5551886, -32944348, -4382628, -106575,
+    3941634, -2441066, -4049576, 11280940, 2224717, -689578,
+    -14389884, -7556634, -2201708,
+    /* node 51 x: shift, then 20 coefficients */
+    36, -1261757, 457599424, -142516496, 282122112, 14352916,
+    15310484, -27420362, 1657788, -15807241, -16421119, 1006611,
+    3106324, -8208858, -417289, 6744975, 3449535, -402856,
+    -15212262, -6868840, -3840064,
+    /* node 51 y: shift, then 20 coefficients */
+    36, 945971, -139854224, 458464352, -286152416, -1812975,
+    -14643955, -16092312, -14428088, -24547382, 16552761, -513537,
+    3947953, 17102120, 1265638, -1541638, -2810688, 1071527,
+    1518131, -110499, 3024161,
+    /* node 51 z: shift, then 20 coefficients */
+    34, 1976721, -46168256, 46195880, 775498880, 26453,
+    5790303, -7096306, 101055, 7126153, 2151391, -333755,
+    -824795, 1472282, 627088, 397536, -1465375, 399266,
+    3498070, 1690786, -753163,
+    /* node 52 x: shift, then 20 coefficients */
+    36, -10760239, 247261872, -21979474, 493084256, -2707708,
+    5631307, -15816353, -7597716, -35673908, -349385, -702904,
+    3507173, 4831584, -2077141, 4974368, -2772582, -103075,
+    -4230396, -5577086, -1392793,
+    /* node 52 y: shift, then 20 coefficients */
+    36, 20463668, -20532644, 184314416, -278837760, 9566854,
+    2453982, 3770384, 14169878, 16254350, -2816938, -128623,
+    -2130872, -14134839, -1911476, 3502171, 5241079, -446203,
+    -5271576, -164167, -1918320,
+    /* node 52 z: shift, then 20 coefficients */
+    34, -7324799, -66605340, 34604216, 550348928, -3249329,
+    -1755564, -1964693, -4963192, -8190452, 824346, -78991,
+    1113810, 2064061, -1109640, 3660843, -351869, -269806,
+    -1573449, -2033917, -228836,
+    /* node 53 x: shift, then 20 coefficients */
+    36, -7123944, 82873256, -16174626, 492825696, -4779212,
+    5813960, 8344948, -2224855, 10711771, -188561, -139714,
+    -1896965, 2985859, 674069, -3139516, 299942, 256965,
+    4560358, 2895672, 500891,
+    /* node 53 y: shift, then 20 coefficients */
+    37, 261161, -56656692, 173084736, -239384256, -208982,
+    -4582900, -13518691, -6842296, -19888518, 7205116, 40458,
+    2146424, 10664364, 2805779, -3490740, -5843018, 341438,
+    1705939, 210017, 1606068,
+    /* node 53 z: shift, then 20 coefficients */
+    35, -2701357, -85831288, 29135618, 593863104, -1950812,
+    1509871, 2531404, -779300, 6369238, 83114, 41990,
+    -782971, -106544, 2354, 1258290, 282208, 195324,
+    3147872, 1351974, -236657,
+    /* node 54 x: shift, then 20 coefficients */
+    37, -2268498, 45712288, 733165, 516529440, -902118,
+    -5258271, -20189512, -2546136, -15957015, 1252310, 299968,
+    3569723, -2623150, -1593187, 10370448, -248288, -597176,
+    -8118220, -5576935, -1054802,
+    /* node 54 y: shift, then 20 coefficients */
+    39, 23914468, -113668984, 147250480, -552003776, 8140051,
+    4613034, 5959556, 10787054, 1916029, 5275034, -129530,
+    -1612140, -10956138, -1047996, -3782616, 5743360, -370807,
+    -4983874, 1475318, -952937,
+    /* node 54 z: shift, then 20 coefficients */
+    36, -5894260, -49558856, 17434852, 450098272, -2021758,
+    -2050882, -4916857, -3629061, -4397000, -256029, 54608,
+    1081176, 1526136, -934095, 4427869, -1091731, -235409,
+    -1042665, -2057004, -279413,
+    /* node 55 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 55 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 55 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 56 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 56 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 56 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 57 x: shift, then 20 coefficients */
+    37, 14178756, 14122123, 2864201, -634044032, 11141962,
+    646688, -9437449, 16239261, -1523915, -13004234, 237824,
+    454367, -18302156, 3281092, -5542488, -12641207, 101235,
+    -6528364, 2783676, -1002063,
+    /* node 57 y: shift, then 20 coefficients */
+    41, -652109, -2932965, 746244672, -10974091, -320968,
+    23008140, 198941, -449146, -112201256, -274271, -109438,
+    13555192, -3229276, -3495384, -13507051, 251066, -1410091,
+    -8635338, -13188105, -955346,
+    /* node 57 z: shift, then 20 coefficients */
+    36, -9137055, 62430096, -1150486, 515785536, -4033660,
+    -552476, 6294678, -6735226, 348883, 1541962, -176498,
+    85398, 6059910, -2175239, 4551939, 4008422, -75568,
+    1395756, -1380464, 57044,
+    /* node 58 x: shift, then 20 coefficients */
+    36, 2472896, 135532464, -1837118, -508102624, 562098,
+    -977508, -948551, -5189846, 610465, 7330402, 471588,
+    448779, 8442067, -1834070, 9214038, 8697020, -61158,
+    2253145, -2515850, -64509,
+    /* node 58 y: shift, then 20 coefficients */
+    39, 662537, 3714194, 643052096, 11370290, 295388,
+    -48029400, -83489, 444318, 101435536, 262852, 130018,
+    -13745018, 2563460, 4641934, 19395126, -544530, 2355203,
+    9633060, 14233417, 957601,
+    /* node 58 z: shift, then 20 coefficients */
+    35, -668057, 92096072, 918681, 643576128, -671492,
+    -607425, -7007116, 2367420, -476829, -2252153, 108526,
+    405681, -5562698, 721067, 2339546, -2830933, 53832,
+    583401, 615318, -750822,
+    /* node 59 x: shift, then 20 coefficients */
+    36, 45869808, 305080288, 369887, -589029632, 24798054,
+    3511043, 27283190, 17839284, 674639, 3772089, 1682708,
+    -1358303, -5846586, 5814696, -17634804, 2715917, 85483,
+    -10111481, 1845363, 1111383,
+    /* node 59 y: shift, then 20 coefficients */
+    37, -440401, -1975279, 519353824, -7490962, -196756,
+    19219066, -112381, -302987, -95355776, -166066, -57198,
+    8829460, -1878677, -2617288, -9594137, 438252, -799464,
+    -6186670, -8251218, -644410,
+    /* node 59 z: shift, then 20 coefficients */
+    34, -12179691, 79018336, -914968, 635772864, -5764280,
+    -23438, 7460975, -8966599, 372270, 2243952, -471204,
+    -248818, 7275645, -1853805, 291532, 1716458, -74923,
+    2166680, -784113, 430212,
+    /* node 60 x: shift, then 20 coefficients */
+    35, 49388832, 416718880, -3197426, -220328480, 24213814,
+    -967496, 29704830, 15558998, -147805, 10304833, -868136,
+    739993, -10481268, -5781348, 14738824, -213889, -174973,
+    -14800875, -4133073, -2350680,
+    /* node 60 y: shift, then 20 coefficients */
+    36, 356941, 1793360, 474589472, 6040385, 165652,
+    -32837446, 113116, 246033, 50337424, 126681, 56980,
+    -9942830, 1467150, 2224475, 5346194, -256010, -443548,
+    5043068, 6707094, 508287,
+    /* node 60 z: shift, then 20 coefficients */
+    34, -4767904, 53322680, 2229462, 862490368, -5292163,
+    -1305121, -29350454, 5146846, -981310, -4435398, -492633,
+    763312, -13490672, 680094, 4217594, -5575096, 127291,
+    1360957, 1707992, -1408405,
+    /* node 61 x: shift, then 20 coefficients */
+    34, 116622, 463365152, 1206002, -701074, 69046,
+    433356, -64648564, 137639, -551636, 69120, 539966,
+    1103193, -771768, 3284386, -246412, 1677070, 170159,
+    -89642, 222137, -109802,
+    /* node 61 y: shift, then 20 coefficients */
+    34, -109318, -57181, 464553792, -2425463, -43591,
+    -817911, -433726, -81555, -64633864, -20038, 15701,
+    4337694, -571378, -566387, 1122656, 468882, 640172,
+    -2051856, 1911826, -236762,
+    /* node 61 z: shift, then 20 coefficients */
+    33, -32994558, -650634, 405827, 651474688, -16451587,
+    90645, 455767, -16399801, 300521, -885989, -142447,
+    -569497, 13497701, 540868, -5217182, -1388742, -17170,
+    10985150, 925110, 1944408,
+    /* node 62 x: shift, then 20 coefficients */
+    35, -49518408, 415620576, 1706690, 221186416, -24314450,
+    524739, 34850964, -15720323, 525605, -10391682, -981651,
+    -1960209, 11131608, 645729, -14651851, -7842145, -35052,
+    15220331, 3741671, 2500495,
+    /* node 62 y: shift, then 20 coefficients */
+    36, 436703, 2298434, 474654176, 5864173, 174260,
+    37760636, 9597, 268297, 50382456, 166560, 54518,
+    -9717633, 1324668, 2738089, -13367318, -289030, -442384,
+    5012001, 6547874, 463862,
+    /* node 62 z: shift, then 20 coefficients */
+    34, -4834452, -56935352, 807070, 863152960, -5303586,
+    -1738634, 33430278, 4985264, 276403, -4467022, 666184,
+    -545760, -12323488, -1472800, 4385778, 3334536, -62264,
+    1035099, 1395572, -1335079,
+    /* node 63 x: shift, then 20 coefficients */
+    36, -45977536, 296894240, -962404, 589462272, -24824146,
+    -3879567, 27311660, -17938470, 209476, -3816981, 1223999,
+    539200, 6857315, -4220646, 18218996, 4353716, -188911,
+    9623807, -1732830, -1071322,
+    /* node 63 y: shift, then 20 coefficients */
+    37, -526681, -2636516, 519412032, -7356072, -216628,
+    -25171974, -3080, -336314, -95380000, -205109, -63856,
+    8714827, -1695000, -3151522, 19309186, 342764, -813185,
+    -6212748, -8091258, -588789,
+    /* node 63 z: shift, then 20 coefficients */
+    34, -12108206, -79157520, -313318, 635455936, -5730462,
+    185409, -9092380, -8892393, 6793, 2286348, 263412,
+    356349, 6825129, 665960, 147865, -1003518, 11124,
+    2236541, -723119, 387896,
+    /* node 64 x: shift, then 20 coefficients */
+    36, -2333418, 135476352, 1288146, 508054208, -462123,
+    979959, 2268165, 5173217, 96581, -7246290, 616878,
+    -727438, -8206870, 2934072, -9680935, 4146026, 36469,
+    -2505310, 2141243, 30340,
+    /* node 64 y: shift, then 20 coefficients */
+    39, 894656, 5382604, 642947776, 11063340, 334767,
+    58385948, -319797, 524638, 101476768, 370562, 140834,
+    -13358744, 2133439, 6124232, -34492012, -443716, 2372507,
+    9725561, 13765232, 823103,
+    /* node 64 z: shift, then 20 coefficients */
+    35, -713890, -93684960, 154728, 643937472, -685348,
+    -850264, 8688949, 2282822, 99883, -2277348, -23885,
+    -302286, -4985210, -1265057, 2404894, 2043301, -45702,
+    451487, 463771, -708527,
+    /* node 65 x: shift, then 20 coefficients */
+    37, -14265663, 15384388, -1065625, 633525312, -11228088,
+    -164833, -14376527, -16116151, 211284, 12952373, -135444,
+    943893, 17340042, -940744, 6105257, -7849966, 55516,
+    6846400, -2159030, 959414,
+    /* node 65 y: shift, then 20 coefficients */
+    41, -805672, -4433528, 746622656, -10890685, -339351,
+    -30953784, 508242, -527240, -112195728, -325697, -120313,
+    13389356, -2772668, -4597244, 28951590, -44517, -1410190,
+    -8901417, -12670084, -824099,
+    /* node 65 z: shift, then 20 coefficients */
+    36, -9120495, -63003484, -590884, 515608256, -4035763,
+    -420726, -8235536, -6676631, -126799, 1550975, 3109,
+    599986, 5671282, -700267, 4465333, -1968180, -6673,
+    1557860, -1258987, 42284,
+    /* node 66 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 66 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 66 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 67 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 67 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 67 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 68 x: shift, then 20 coefficients */
+    37, 2031973, 48077116, 2360040, -521240480, 809590,
+    3667649, -18337334, 2444067, -14660140, -1344552, 429140,
+    1449416, 1031614, 3070352, -7678069, -2428934, -414444,
+    4590800, -1705110, 659029,
+    /* node 68 y: shift, then 20 coefficients */
+    39, -23950736, -113654496, 145718336, 552796160, -8121852,
+    -5054202, 4060010, -10859729, 2443208, -5310166, -385217,
+    -1550409, 12062821, -2405895, 3222781, 6668734, -446567,
+    4819642, -370784, 1012475,
+    /* node 68 z: shift, then 20 coefficients */
+    36, -5827110, 48578076, -18460272, 451445056, -1989531,
+    -1566615, 3805473, -3602823, 4126590, -228224, -158124,
+    -258641, 2054822, -1418661, 3668072, 2336674, 148615,
+    -113774, 98622, -176188,
+    /* node 69 x: shift, then 20 coefficients */
+    36, 7261389, 82256296, -16626897, -490311424, 4831969,
+    -4850404, 7586708, 2301265, 10368364, 236647, -167324,
+    -1167198, -2223789, -854086, 1589735, 1197417, 226900,
+    -2590543, 1703624, -296510,
+    /* node 69 y: shift, then 20 coefficients */
+    37, -272943, -60595528, 174543296, 236845504, 184092,
+    4374616, -10882273, 6916025, -21188844, -7178695, 155900,
+    3089126, -12201342, 168021, 4305077, -6699087, 279367,
+    -2994216, 909838, -1847653,
+    /* node 69 z: shift, then 20 coefficients */
+    35, -2810958, 85286608, -29048702, 592370432, -1995682,
+    896848, -2032516, -831976, -6264486, 35032, -28037,
+    781301, -489729, -608008, 2181715, -154369, -204706,
+    1917866, -1282685, -358241,
+    /* node 70 x: shift, then 20 coefficients */
+    36, 10433502, 246600544, -18823952, -498031520, 2535261,
+    -6911547, -12049163, 7502599, -35846068, 205472, -545892,
+    2473036, -6932138, 1233908, -1613966, -6414318, 25964,
+    891533, -1119374, 979207,
+    /* node 70 y: shift, then 20 coefficients */
+    36, -20427012, -18734822, 183118576, 280803232, -9522578,
+    -2441848, 1809362, -14206377, 17069582, 2805684, -379706,
+    -2910008, 15330767, -370294, -4392080, 4934212, -475234,
+    6270763, -800668, 2109487,
+    /* node 70 z: shift, then 20 coefficients */
+    34, -7213450, 65900328, -35546656, 552059968, -3197997,
+    -1121889, 901416, -4905846, 7841984, 874692, -18141,
+    -421988, 2601852, -647476, 2588012, 1262303, 185086,
+    -269335, 306227, -92534,
+    /* node 71 x: shift, then 20 coefficients */
+    36, 1397208, 458789888, -137648992, -284022752, -14227102,
+    -15863155, -22876104, -1532792, -13711822, 16505486, 985823,
+    -367899, 7259921, 6745750, -7166682, -2556589, -5150,
+    14072446, 1693744, 3623701,
+    /* node 71 y: shift, then 20 coefficients */
+    36, -1139936, -142843072, 460104736, 283210560, 1696486,
+    14282101, -12793068, 14362088, -25682964, -16601518, -173283,
+    4820148, -18125348, -949549, 3279318, -2804484, 1051717,
+    -3747329, 911373, -3319564,
+    /* node 71 z: shift, then 20 coefficients */
+    34, 1812556, 47310320, -47109116, 773509056, -28367,
+    4653646, 6479085, -58330, -6399510, 2084473, 401243,
+    545456, 1463628, -1035628, 1769478, 3077684, -379808,
+    1438479, -2418432, -910032,
+    /* node 72 x: shift, then 20 coefficients */
+    36, -165268, 478444032, -1584291, 698434, -67967,
+    34609448, 49525004, -238657, 1538604, -88416, -299938,
+    -1628798, 1408819, -6652562, -10116404, 7544698, -256059,
+    -449027, -190616, 87500,
+    /* node 72 y: shift, then 20 coefficients */
+    35, -49633992, 697600, 415227776, 219974304, -15689624,
+    2207491, -241047, -24374528, 31845032, -10259845, -129337,
+    -3334428, 17950532, 1828259, -10254717, -1401508, -1068522,
+    6711246, -4347695, 2055777,
+    /* node 72 z: shift, then 20 coefficients */
+    34, -4916889, 164383, -58833800, 863406080, 4995391,
+    824728, -2259462, -5328234, 30960402, -4236245, -52616,
+    -871648, -1301839, -1929860, 8027880, 2024445, 350510,
+    -10217571, 314081, -1796933,
+    /* node 73 x: shift, then 20 coefficients */
+    36, -1190344, 457863264, 138636928, 283573440, 14347234,
+    -16723238, -27419752, 1715053, 13016701, -16380540, 1012675,
+    1500787, -8043808, 174203, 22488244, 3136860, 199993,
+    -13918989, -1722279, -3703092,
+    /* node 73 y: shift, then 20 coefficients */
+    36, -1116374, 139407216, 459196800, 283631136, 1742655,
+    -19227772, 15640709, 14319993, -25400026, -16583137, 528050,
+    4089716, -17739888, -2132456, 18091858, 3192207, 999244,
+    -3676713, 649879, -3245112,
+    /* node 73 z: shift, then 20 coefficients */
+    34, 1808100, -47150692, -46589984, 773303744, -41924,
+    -6370994, -7027481, -1071, -6970832, 2078578, -365699,
+    987020, 1026534, -499860, 4971310, -1390872, -315430,
+    1595058, -2258213, -923747,
+    /* node 74 x: shift, then 20 coefficients */
+    36, -10456493, 248794384, 19970750, 497673952, -2571096,
+    -5544508, -15912976, -7385669, 34721476, -227023, -652015,
+    -1531994, 6105120, -434127, 5381016, -2786332, 109860,
+    -573883, 1501632, -1023964,
+    /* node 74 y: shift, then 20 coefficients */
+    36, -20388102, 20568466, 184063744, 280374432, -9527140,
+    5109660, -3415030, -14111469, 16326270, 2821854, 118534,
+    -2007535, 14560572, 2191200, -9151854, -5469076, -366727,
+    6531790, -633207, 2060945,
+    /* node 74 z: shift, then 20 coefficients */
+    34, -7201715, -65871784, -35377160, 551985984, -3199502,
+    1494112, -2058947, -4886518, 7685231, 877908, -56644,
+    -233356, 2434160, -314891, 1110901, -368997, 205247,
+    -192181, 312962, -104305,
+    /* node 75 x: shift, then 20 coefficients */
+    36, -7308686, 81843744, 16460448, 490318624, -4859904,
+    -5474472, 8406350, -2345552, -10175485, -266468, -177848,
+    977963, 2344844, -410593, -1526244, 294493, -274650,
+    2513616, -1711578, 306490,
+    /* node 75 y: shift, then 20 coefficients */
+    37, -376262, 56317984, 173230400, 237510992, 161748,
+    -8359851, 13246806, 6767970, -20167070, -7231778, -37304,
+    1762062, -11071959, -3465636, 11059487, 6128070, 111251,
+    -3334808, 754249, -1771888,
+    /* node 75 z: shift, then 20 coefficients */
+    35, -2816414, -86540416, -29199030, 592384576, -1996143,
+    -2556511, 2611706, -850105, -6163402, 31983, 18699,
+    652659, -435599, -756537, 3152440, 292100, -225430,
+    1897048, -1325723, -347428,
+    /* node 76 x: shift, then 20 coefficients */
+    37, -1933088, 47706168, -1691034, 520993376, -765406,
+    4163190, -20393604, -2331710, 14113137, 1398050, 365774,
+    -728677, -1570932, 506394, 4424660, -251582, 533251,
+    -4409604, 1751169, -720538,
+    /* node 76 y: shift, then 20 coefficients */
+    39, -23875150, 113809568, 146615888, 552327296, -8106520,
+    5002626, -6025034, -10753536, 1677832, -5271598, 132533,
+    -628375, 11231906, 961912, -3221599, -5524674, -328859,
+    5101906, -272142, 967703,
+    /* node 76 z: shift, then 20 coefficients */
+    36, -5795901, -48954396, -18258310, 451402720, -1981125,
+    1299107, -4992982, -3566662, 3866425, -212180, 75569,
+    -8952, 1837067, -307969, 3035863, -1081060, 184741,
+    38222, 87708, -182040,
+    /* node 77 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 77 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 77 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 78 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 78 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 78 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 79 x: shift, then 20 coefficients */
+    38, 9799185, 37212520, -32864632, -794834240, 6017332,
+    -5568593, 5758342, 2580996, 26203940, 1280248, -175245,
+    -3249274, -184205, -959047, 740929, 1084320, -509238,
+    -425003, 1264162, 434475,
+    /* node 79 y: shift, then 20 coefficients */
+    38, -11806051, -93266416, 58551036, 409230272, -2487336,
+    393906, 4323553, -1946465, -313605, -7389119, -155314,
+    226697, 236389, -968976, 2417968, 140793, 256590,
+    -1470485, 568, -41148,
+    /* node 79 z: shift, then 20 coefficients */
+    37, -6930358, 55758128, -35163084, 639732032, -2621592,
+    -1091154, 2438500, -2363700, -3894220, -1951040, -112259,
+    666346, 301630, -1064661, 4274524, 369559, 257986,
+    -358447, -576628, -440391,
+    /* node 80 x: shift, then 20 coefficients */
+    37, 9122389, 109236144, -13871631, -739261888, 4876485,
+    -1420506, -13242949, 7263053, -18620874, -2878116, 288842,
+    2292046, -3653517, 1340973, 387392, -767385, 364314,
+    -3837077, 344389, -130996,
+    /* node 80 y: shift, then 20 coefficients */
+    37, -10850264, -41510448, 101405760, 435217216, -6130049,
+    2853907, -12180016, -5684728, 321670, 827205, 307552,
+    -135319, 5917992, 916352, -1498675, 1989649, -526711,
+    7224034, -2165075, 244676,
+    /* node 80 z: shift, then 20 coefficients */
+    35, -4013276, 59136156, -43796432, 438008768, -2247178,
+    -426106, 274393, -2544600, 1647366, 743864, -19850,
+    -161708, 1231370, -330186, 1275312, 297697, -89853,
+    1803524, -578484, -35342,
+    /* node 81 x: shift, then 20 coefficients */
+    36, 2310171, 139863504, -50436608, -342183648, 1250917,
+    1631, 4640262, -737306, 15426494, 1764100, 570733,
+    -2430877, 6747804, 902076, -3643523, 3302972, -495100,
+    2584356, -1445582, 827083,
+    /* node 81 y: shift, then 20 coefficients */
+    36, -2344407, -49675732, 137493712, 343579584, 682201,
+    740469, 14259521, -1243455, 5130527, -1717917, -477992,
+    91986, -2844137, -2442588, 3978218, -592716, 462764,
+    -5050770, 1706932, -827390,
+    /* node 81 z: shift, then 20 coefficients */
+    35, -5337890, 78887584, -79755216, 794054656, -2721101,
+    -1117755, 2835975, -2674710, -3062395, -1688, -345279,
+    610750, -877726, -1336688, 3051262, -579753, 279425,
+    -300320, 388538, -650785,
+    /* node 82 x: shift, then 20 coefficients */
+    36, 20313096, 184661152, -22453366, -279292000, 14132200,
+    3717652, 14719510, 9455814, 2374722, -2716417, -345112,
+    -1097539, -8607906, -3543640, 6384401, 1617746, -442872,
+    -11571833, 2061213, -2240008,
+    /* node 82 y: shift, then 20 coefficients */
+    36, -10465303, -23451762, 250726944, 494472384, -7522634,
+    4732716, -33735480, -2482120, -14574622, -411036, -125277,
+    1804079, -3474529, 619243, 1056225, -4103282, -372637,
+    5882738, -2722341, -955349,
+    /* node 82 z: shift, then 20 coefficients */
+    34, -7201253, 33663336, -65010036, 551345472, -4923360,
+    -1806707, -7083398, -3156735, -1779701, 802561, -263875,
+    479905, -1051865, -40105, 2013882, -1791462, 22746,
+    2710814, -185643, -24891,
+    /* node 83 x: shift, then 20 coefficients */
+    37, 192675, 514733344, 2235930, -1125330, 66475,
+    -21098732, -94146176, 283572, -1870966, 100580, -988974,
+    2245008, -1901456, 5035382, 15301927, -9408895, 311352,
+    457427, 280788, -143800,
+    /* node 83 y: shift, then 20 coefficients */
+    36, -45860468, -3573740, 298925600, 591008064, -18091348,
+    -2879598, -998980, -24530518, 27573536, -3711859, -292350,
+    1242048, 7868334, -5037058, 16903746, 1261143, 1265874,
+    10164291, 792269, -1058519,
+    /* node 83 z: shift, then 20 coefficients */
+    34, -12086339, -562780, -78108536, 635560256, -8948506,
+    -607842, 598139, -5681113, -7886994, 2204212, -49409,
+    1129250, 3248916, 125952, -1351244, -724521, 423811,
+    6092002, -221080, 563102,
+    /* node 84 x: shift, then 20 coefficients */
+    36, -20433444, 184240528, 21722908, 279755008, -14200767,
+    3220686, 18044578, -9555697, -2011284, 2643436, -425165,
+    339078, 9149844, 21397, -11106535, -2491937, 327107,
+    11595287, -2098941, 2304942,
+    /* node 84 y: shift, then 20 coefficients */
+    36, -10632228, 21212476, 249425136, 495302944, -7585078,
+    -8587103, 35988820, -2653014, -13475936, -498129, 160280,
+    400289, -2172576, -2148631, 4731000, 3557590, -563496,
+    5574102, -2788490, -865403,
+    /* node 84 z: shift, then 20 coefficients */
+    34, -7223550, -35163768, -65396976, 551522816, -4923890,
+    531648, 8403067, -3206354, -1360001, 793449, 246461,
+    95988, -683212, -523323, 402615, 925406, -29906,
+    2576537, -248991, -5955,
+    /* node 85 x: shift, then 20 coefficients */
+    36, -2277828, 138523376, 50031712, 342257088, -1209804,
+    -1116214, 5237363, 700524, -14859070, -1739622, 608104,
+    2072372, -6384894, -67756, 1865124, 3096243, 459584,
+    -2830288, 1323090, -831857,
+    /* node 85 y: shift, then 20 coefficients */
+    36, -2182292, 49929940, 137984608, 343191680, 771433,
+    54670, -16015117, -1143431, 4864208, -1624938, 448524,
+    743507, -3364330, 1253997, 2125054, 2041960, 571759,
+    -5004347, 1598179, -896439,
+    /* node 85 z: shift, then 20 coefficients */
+    35, -5300520, -79814896, -79702744, 794003968, -2696473,
+    314666, -3480378, -2661881, -3003293, 23575, 268898,
+    684454, -875094, -297401, 2892133, 1254292, 294615,
+    -357750, 361315, -661617,
+    /* node 86 x: shift, then 20 coefficients */
+    37, -9070122, 108984664, 14542221, 738945472, -4849496,
+    -1463005, -13323468, -7189811, 18251860, 2912629, 183607,
+    -1691556, 3244531, 970986, 273186, -761627, -274504,
+    3857501, -206424, 87749,
+    /* node 86 y: shift, then 20 coefficients */
+    37, -10957014, 40281724, 100926920, 435579712, -6193148,
+    -4620578, 13062902, -5760061, 457003, 766085, -400205,
+    -643834, 6254372, -1774419, 2593561, -2480851, -612952,
+    7331954, -2177949, 314618,
+    /* node 86 z: shift, then 20 coefficients */
+    35, -4021575, -59773212, -43831744, 438045408, -2251713,
+    -228084, -106534, -2550476, 1668423, 739336, -19577,
+    -196360, 1264916, -381126, 1220794, -247817, -96361,
+    1814977, -582722, -29245,
+    /* node 87 x: shift, then 20 coefficients */
+    38, -9945338, 35583500, 32066990, 795541504, -6092052,
+    -7270854, 5769988, -2697784, -25722476, -1360768, -231803,
+    2377719, 1037398, -2683870, 6403230, 1148684, 376662,
+    402163, -1279124, -344207,
+    /* node 87 y: shift, then 20 coefficients */
+    38, -11759454, 92894576, 58663780, 409163360, -2465218,
+    -300182, -4876160, -1917142, -410212, -7363870, 115849,
+    413769, 88814, 140902, 1366588, 289395, 285077,
+    -1411821, -56877, -57409,
+    /* node 87 z: shift, then 20 coefficients */
+    37, -6927998, -56782016, -35228764, 639833280, -2621832,
+    95138, -3132648, -2363502, -3896813, -1949781, 46213,
+    632346, 359354, -961734, 3689411, 598765, 254809,
+    -308168, -609547, -431916,
+    /* node 88 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 88 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 88 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 89 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 89 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 89 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 90 x: shift, then 20 coefficients */
+    38, 9189863, 30623260, -21194328, -468409984, 2628418,
+    -111010, -9259527, 4546978, -12018114, 2042292, 163659,
+    1696128, -2880816, 1317574, -1931309, -2109655, 312280,
+    -3106409, 553757, 153137,
+    /* node 90 y: shift, then 20 coefficients */
+    38, -10547395, -64760584, 26694416, 423422592, -3781901,
+    551625, -3500122, -3158270, -3116030, -3627760, 67824,
+    432099, 1903481, -636611, 2816881, 1142408, -57450,
+    2015603, -667104, -405184,
+    /* node 90 z: shift, then 20 coefficients */
+    38, -7558638, 31963966, -32353186, 638263680, -3404830,
+    -252862, 3141498, -3897722, -1341235, -285349, -61745,
+    -194949, 2210029, -861119, 1719924, 1578941, -64625,
+    2279030, -387629, -220243,
+    /* node 91 x: shift, then 20 coefficients */
+    37, 2708831, 46712704, -46316540, -419135712, 1698474,
+    -764692, 1670736, 821062, 9783874, 161030, 98890,
+    -1469515, 1828696, 380452, -2944502, 748875, -292130,
+    1499975, -415379, 361577,
+    /* node 91 y: shift, then 20 coefficients */
+    37, -2730956, -46577168, 45932092, 419859104, -843096,
+    906626, 9601478, -1704012, 1636413, -177702, -302988,
+    -78295, -1620781, -1526724, 2827361, -598703, 44364,
+    -910517, 425592, -310017,
+    /* node 91 z: shift, then 20 coefficients */
+    36, -1919681, 53738212, -54220428, 463134528, -1080007,
+    -1593832, 2182647, -1064350, -2278274, 244834, -129682,
+    427764, -657986, -816443, 3104420, 45097, 102683,
+    -142954, -148344, -301057,
+    /* node 92 x: shift, then 20 coefficients */
+    37, 10841137, 100370536, -40323080, -436267680, 5711853,
+    -3377161, 550677, 6118702, -12973078, -868095, -534269,
+    1691896, -8217757, -229071, 1655236, -3066272, 403051,
+    -6028539, 2573828, -279020,
+    /* node 92 y: shift, then 20 coefficients */
+    37, -9073547, -14583016, 109731096, 737421056, -7249786,
+    1132068, -18464666, -4818671, -13282735, 2928316, 282340,
+    1641496, 3078112, 1417925, -32072, 399563, 328297,
+    2379916, -595072, -30583,
+    /* node 92 z: shift, then 20 coefficients */
+    35, -4006730, 43663984, -59576548, 438007936, -2558960,
+    -345442, -1743075, -2226494, -158136, 758010, 66117,
+    41544, 1598743, -116769, 1319168, 698087, -7811,
+    1422043, -485686, -50751,
+    /* node 93 x: shift, then 20 coefficients */
+    37, 357761, 173422368, -55384640, -239259248, -6821530,
+    -5965599, -18592564, -151830, -11709692, 7074190, 232254,
+    1792858, 4603278, 3772932, -5850396, -1104620, 355063,
+    8195476, -3115585, 1914905,
+    /* node 93 y: shift, then 20 coefficients */
+    36, -7240328, -15156359, 81480272, 491825600, -2275697,
+    5424409, 10127953, -4855470, 8350662, -203006, 270359,
+    -1278060, 4368861, -339740, -2142616, 2365497, -230343,
+    2075752, 742646, 365528,
+    /* node 93 z: shift, then 20 coefficients */
+    35, -2795638, 29600078, -86658176, 593102976, -840038,
+    1372105, 5767758, -1989171, 2504126, 81036, 212069,
+    -159508, 1913640, -917112, 2155740, 1990675, -38700,
+    264932, -526343, -358088,
+    /* node 94 x: shift, then 20 coefficients */
+    39, -124626, 651102208, -2808475, 972686, 10467,
+    51542544, 99158744, -369045, 2940338, -55325, 2675720,
+    -2738053, 2300219, -7414450, -30376086, 16610071, -371900,
+    -888708, -496970, 113655,
+    /* node 94 y: shift, then 20 coefficients */
+    36, -2457852, 1332894, 133642464, 508164352, 5229045,
+    2491066, -1064002, -627651, 574896, -7135848, 2201,
+    -105072, -1128588, 1663620, -7139634, -402128, 433977,
+    -9767856, 5127496, -239032,
+    /* node 94 z: shift, then 20 coefficients */
+    35, -734979, -96145, -94488864, 644139264, 2297757,
+    255774, -866156, -688291, 7607344, -2178483, -23850,
+    -913720, -667599, -943001, 3906398, 823067, -175902,
+    -3857168, 659337, -889395,
+    /* node 95 x: shift, then 20 coefficients */
+    37, -274528, 171899600, 56148712, 238903600, 6867650,
+    -6013092, -21419144, 253742, 11218462, -7022826, 156022,
+    -1065860, -5108094, -744534, 12454639, 1878867, -238288,
+    -8159130, 3237335, -1969705,
+    /* node 95 y: shift, then 20 coefficients */
+    36, -7189212, 15859740, 82092384, 491458016, -2268574,
+    -4657071, -10274616, -4779870, 7733378, -179612, -301257,
+    -643332, 3737423, 1239946, -2007879, -2658915, -151424,
+    2261246, 806712, 333094,
+    /* node 95 z: shift, then 20 coefficients */
+    35, -2780546, -29805324, -86319304, 592945152, -844315,
+    -1859659, -6423568, -1947253, 2130584, 85857, -240780,
+    178844, 1586749, -273900, 3338701, -1040812, 3717,
+    386021, -472469, -372823,
+    /* node 96 x: shift, then 20 coefficients */
+    37, -10899038, 100249408, 40569140, 436318336, -5766260,
+    -3705978, 204872, -6102279, 12515624, 829124, -655517,
+    -1500394, 8013802, -792192, 2872633, -2801738, -393488,
+    6256035, -2461971, 293721,
+    /* node 96 y: shift, then 20 coefficients */
+    37, -9218924, 14357641, 109197192, 737863936, -7333274,
+    -2086705, 18265344, -4917370, -12967385, 2841825, -326939,
+    1003103, 3630834, -1951191, 1125087, -173875, 216532,
+    2361705, -547648, 29917,
+    /* node 96 z: shift, then 20 coefficients */
+    35, -4026380, -44059048, -59624632, 438059104, -2572883,
+    -129583, 1608691, -2235392, -178426, 744938, -104917,
+    -8817, 1618944, -588563, 1351450, -423974, -19225,
+    1460737, -483298, -41728,
+    /* node 97 x: shift, then 20 coefficients */
+    37, -2709644, 45964592, 46141916, 419169600, -1694322,
+    -1412555, 1764929, -838179, -9602586, -163377, 114017,
+    1327931, -1724049, -429209, 1284032, 866228, 272031,
+    -1557632, 359288, -363774,
+    /* node 97 y: shift, then 20 coefficients */
+    38, -5289447, 91786880, 92329408, 839205120, -1582221,
+    -2360449, -19198666, -3305583, 3042328, -256886, 583882,
+    465590, -3841723, 1407450, 1913943, 1535953, 203328,
+    -1833420, 741938, -694946,
+    /* node 97 z: shift, then 20 coefficients */
+    36, -1900467, -54385380, -54167972, 463058592, -1068398,
+    902696, -2279499, -1055832, -2268826, 255865, 115121,
+    493779, -712705, -227981, 1483840, 367773, 112682,
+    -171351, -159970, -310879,
+    /* node 98 x: shift, then 20 coefficients */
+    38, -9144087, 30541088, 21714396, 468116288, -2611245,
+    -413830, -9907974, -4487437, 11647789, -2015992, 88904,
+    -1197150, 2460323, 266666, 2058513, -1216632, -243589,
+    3175384, -473442, -186030,
+    /* node 98 y: shift, then 20 coefficients */
+    38, -10602929, 63382716, 26559690, 423617888, -3814212,
+    -2180708, 3213637, -3184574, -3110629, -3658921, -147879,
+    245677, 2073645, -1586650, 4972601, -357907, -87180,
+    2067940, -623500, -375157,
+    /* node 98 z: shift, then 20 coefficients */
+    38, -7571434, -32698684, -32292236, 638323008, -3415285,
+    -707442, -3732068, -3892193, -1473199, -292378, -20831,
+    -148175, 2178146, -848403, 4296331, -684173, -59041,
+    2370113, -359494, -208097,
+    /* node 99 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 99 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 99 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 100 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 100 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 100 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 101 x: shift, then 20 coefficients */
+    39, 13157965, 23034140, -67959360, -417580608, 3171400,
+    -781473, 4297842, 2729832, 6273601, 7376768, 133622,
+    -700194, -1537119, -848799, 2116712, 73917, -244399,
+    -1638031, 267620, -505086,
+    /* node 101 y: shift, then 20 coefficients */
+    39, -13171521, -67200536, 22659486, 418339264, -2739641,
+    1041467, 6333320, -3186087, 4802112, -7372617, -234648,
+    -778391, 2660668, -105938, -2162224, 426742, 78816,
+    1330806, -435386, 543383,
+    /* node 101 z: shift, then 20 coefficients */
+    39, -13096745, -107354264, 107155560, 323416704, -3149606,
+    1414840, -70323, -3135020, 182928, -6900018, -184346,
+    31939, 1474357, -118661, 855354, 308408, 147172,
+    1361909, -460388, 221683,
+    /* node 102 x: shift, then 20 coefficients */
+    38, 10551852, 27411548, -63925116, -423794368, 3199251,
+    -583810, -3053688, 3754383, -3336318, 3643444, -14118,
+    294024, -1602405, 1031372, -2620974, -512751, 139181,
+    -2741186, 1113302, 355756,
+    /* node 102 y: shift, then 20 coefficients */
+    38, -9166185, -22543066, 31195668, 466855968, -4558660,
+    -350328, -11678696, -2579443, -9665539, -2037334, 227313,
+    1321679, 1936085, 627660, 2136436, 169946, 193381,
+    2368421, -1548188, -245074,
+    /* node 102 z: shift, then 20 coefficients */
+    38, -7551468, 31340710, -32174052, 637962112, -3930509,
+    -477426, 1539549, -3368034, -3470273, -301717, 8023,
+    256801, 1646182, -503351, 1553164, 12341, 25297,
+    2545215, -1234686, -200924,
+    /* node 103 x: shift, then 20 coefficients */
+    38, 11801548, 59803144, -93449888, -408889024, 1955328,
+    -43453, -644183, 2461383, 4775404, 7427775, 326260,
+    -773092, 2069820, 574036, -2156255, 945583, -135212,
+    -514418, -257991, 8731,
+    /* node 103 y: shift, then 20 coefficients */
+    38, -9866935, -32553606, 35427144, 797454464, -2654402,
+    6108148, 25778126, -6027247, 6005625, -1333601, -504400,
+    -2350704, 1593724, -3034315, -1327873, 1362258, -331997,
+    1894679, 584281, -245059,
+    /* node 103 z: shift, then 20 coefficients */
+    37, -6937766, 33892896, -56277552, 639882304, -2406888,
+    -1238040, 3960286, -2583630, -2838215, -1986774, -328179,
+    289092, -1057246, -1368896, 4033199, -41763, 53621,
+    1200130, -138374, -390190,
+    /* node 104 x: shift, then 20 coefficients */
+    39, 23845504, 147747152, -115523120, -551785856, 10835146,
+    6019445, 772802, 8052088, 4790906, 5373746, -311164,
+    -1867384, -5981066, -1140822, -1630030, 1452094, -360429,
+    -9980765, 4427732, -1162211,
+    /* node 104 y: shift, then 20 coefficients */
+    37, -2027037, -2017642, 49743840, 518517760, -2470116,
+    -5036730, -13532952, -743312, -20326260, 1226223, -594720,
+    3203278, -7926358, -258497, 7734894, -4469398, 493385,
+    -512586, -712886, -688164,
+    /* node 104 z: shift, then 20 coefficients */
+    36, -5812575, 16554655, -48021364, 450700480, -3625416,
+    -2186964, -3458968, -1945098, -4620628, -289626, -233402,
+    994161, -1138909, -437524, 3219800, -1376392, 146122,
+    2363064, -1355495, -117947,
+    /* node 105 x: shift, then 20 coefficients */
+    41, 378609, 740147968, 2944102, -1585637, 98330,
+    -24609988, -110218936, 404437, -2783248, 190118, -1603050,
+    3339130, -2942845, 8509832, 23869562, -14655690, 405402,
+    959031, -5314, -211275,
+    /* node 105 y: shift, then 20 coefficients */
+    37, -14153206, -1145088, 17940810, 633064512, -16268601,
+    -2752356, 1347044, -11020718, -11180533, 12758973, -65728,
+    1580766, 7402263, -930143, 2370547, -248431, 287948,
+    16762050, -7322280, 1342181,
+    /* node 105 z: shift, then 20 coefficients */
+    36, -9089161, -997043, -61602060, 515533440, -6743854,
+    -1344890, 640471, -3960178, -7082342, 1461255, -36029,
+    1066032, 1296340, -833804, 3021411, -158803, 144914,
+    6036183, -2164008, 213709,
+    /* node 106 x: shift, then 20 coefficients */
+    39, -23954214, 145903344, 115585136, 551745792, -10891998,
+    3771960, 2985292, -8092576, -4652458, -5439672, -436742,
+    1694321, 6155871, -1013384, -4340878, -623546, 326752,
+    9768113, -4191222, 1150105,
+    /* node 106 y: shift, then 20 coefficients */
+    37, -2102694, -1444700, 48611344, 519144832, -2463853,
+    1800530, 15540177, -872740, -19219126, 1196738, 626145,
+    2028877, -6826155, -2376235, 3567018, 3869923, 364979,
+    -844335, -826607, -621064,
+    /* node 106 z: shift, then 20 coefficients */
+    36, -5830786, -18244616, -48317824, 450867552, -3622236,
+    435997, 4496014, -1980412, -4297622, -295825, 211516,
+    687931, -829788, -869903, 2441347, 1062161, 111088,
+    2260864, -1390322, -101317,
+    /* node 107 x: shift, then 20 coefficients */
+    38, -11762076, 58707892, 93245648, 408924928, -1924562,
+    -855525, 16836, -2468888, -4583308, -7402580, 321754,
+    655315, -1989235, -73617, 747336, 554377, 128142,
+    493879, 140942, -4193,
+    /* node 107 y: shift, then 20 coefficients */
+    38, -9711650, 31425486, 36094272, 797171328, -2572633,
+    -6300257, -26195204, -5901458, 5397124, -1234924, 369970,
+    -1574297, 1006227, 1505980, 5304510, -1062349, -194562,
+    2100817, 557898, -279707,
+    /* node 107 z: shift, then 20 coefficients */
+    37, -6907632, -35473644, -56321980, 639905664, -2383032,
+    -135558, -3838380, -2575845, -2780564, -1964970, 260166,
+    277770, -1023274, -554081, 3195716, 387954, 64344,
+    1193483, -180100, -387081,
+    /* node 108 x: shift, then 20 coefficients */
+    38, -10574096, 25967896, 64039796, 423839136, -3210614,
+    -2067772, -3061123, -3746837, 3238742, -3653717, -97984,
+    -248480, 1621429, -984230, 4757330, 19791, -128553,
+    2753399, -1027989, -351676,
+    /* node 108 y: shift, then 20 coefficients */
+    38, -9272256, 21679582, 30751704, 467180640, -4617416,
+    -1179772, 11770761, -2661199, -9315460, -2098598, -270095,
+    800875, 2414909, -1871556, 2475836, 182453, 102017,
+    2293843, -1526959, -201780,
+    /* node 108 z: shift, then 20 coefficients */
+    38, -7594505, -32558264, -32236162, 638107584, -3951584,
+    -960974, -1373268, -3388130, -3384169, -323976, -72668,
+    132207, 1836292, -1060189, 4235253, 306641, 4813,
+    2517923, -1182896, -186261,
+    /* node 109 x: shift, then 20 coefficients */
+    39, -13148403, 23080496, 67583512, 417722912, -3167664,
+    -394984, 4995822, -2761248, -6068672, -7373398, 127397,
+    456032, 1666340, 317053, -2455384, -1068170, 202688,
+    1703266, -440560, 528425,
+    /* node 109 y: shift, then 20 coefficients */
+    39, -13090786, 67711208, 22791972, 418185504, -2702378,
+    59906, -6169790, -3144350, 4634659, -7328718, 207302,
+    -492865, 2351221, 1327698, -2517234, -1196553, 118479,
+    1463108, -567456, 524891,
+    /* node 109 z: shift, then 20 coefficients */
+    39, -13069330, 107096648, 107056096, 323433728, -3138470,
+    -1380129, 201527, -3135657, 213271, -6884847, 144241,
+    22908, 1447295, 158795, -1165678, -644725, 142198,
+    1424660, -560601, 227678,
+    /* node 110 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 110 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 110 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 111 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 111 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 111 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 112 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 112 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 112 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 113 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 113 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 113 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 114 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 114 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 114 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 115 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 115 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 115 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 116 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 116 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 116 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 117 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 117 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 117 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 118 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 118 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 118 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 119 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 119 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 119 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 120 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 120 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 120 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 121 x: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 121 y: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
+    /* node 121 z: shift, then 20 coefficients */
+    62, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0,
+    0, 0, 0,
 };
 const tfit_model_q31 tfit_block48_ve_forward_q31 = {
-    3u, 5u, 121u, 2u, 4009u,
+    3u, 5u, 121u, 3u, 7639u,
     tfit_block48_ve_forward_q31_coef, tfit_block48_ve_forward_nodes,
-    tfit_block48_ve_forward_q31_coef + 4009u, tfit_block48_ve_forward_nodes + 121u,
-    0x6ad856dfu
+    tfit_block48_ve_forward_q31_coef + 7639u, tfit_block48_ve_forward_nodes + 121u,
+    0x02d1bf91u
 };
 
 static const uint32_t tfit_block48_ve_contact_dims[1] = {
-    2u,
+    3u,
 };
 static const uint32_t tfit_block48_ve_contact_nodes[1] = {
     61u,
 };
-static const float tfit_block48_ve_contact_coef[42] = {
+static const float tfit_block48_ve_contact_coef[72] = {
     /* input map: envelope centre x0 */
-    0x1.11247cp-9f, -0x1.f72e96p-11f, -0x1.af0c72p-5f,
+    0x1.e464f4p-10f, -0x1.75bc6ap-10f, -0x1.843e22p-5f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.2e2392p+0f, -0x1.a55744p-7f, 0x1.f4104ap-9f, -0x1.a5413ap-7f,
-    0x1.29235p+0f, 0x1.c56018p-10f, 0x1.6737bep-9f, 0x1.cbcca8p-8f,
-    0x1.b09af2p-2f,
+    0x1.2e267ep+0f, -0x1.981a58p-7f, 0x1.ce6302p-9f, -0x1.a23368p-7f,
+    0x1.295ab6p+0f, 0x1.27b77ep-10f, 0x1.344e9ap-9f, 0x1.c9e0b8p-9f,
+    0x1.b32cp-2f,
     /* node 61 x force */
-    0x1.d0f284p-10f, 0x1.fd4ep-1f, 0x1.69dcfp-7f, -0x1.f65106p-8f,
-    0x1.0edcp-13f, 0x1.f815c6p-12f, 0x1.280aeep-3f, 0x1.4fba68p-13f,
-    0x1.d1406p-10f, -0x1.05cdbp-10f,
+    0x1.64677cp-10f, 0x1.ff6798p-1f, 0x1.14a0acp-7f, -0x1.b97b2cp-8f,
+    -0x1.6142bcp-13f, -0x1.a9fe28p-11f, 0x1.1eb8f6p-3f, -0x1.0cf8c2p-12f,
+    0x1.563d6ap-9f, -0x1.55b5e8p-11f, 0x1.68b18p-11f, -0x1.07f4aep-9f,
+    0x1.691688p-10f, -0x1.4ddffp-9f, -0x1.70ede4p-15f, 0x1.af15c2p-8f,
+    -0x1.3e15fap-12f, 0x1.ddcea8p-13f, -0x1.d93dcp-12f, 0x1.4d2af2p-13f,
     /* node 61 y force */
-    -0x1.9b7378p-10f, 0x1.6cc33ep-7f, 0x1.02f2f4p+0f, -0x1.555d9ap-9f,
-    0x1.af48d8p-13f, 0x1.e1e0b6p-10f, 0x1.40246ep-11f, 0x1.0858b6p-11f,
-    0x1.2d84bp-3f, -0x1.21cebep-12f,
+    -0x1.9803eap-10f, 0x1.a1d7cep-7f, 0x1.02dd16p+0f, 0x1.8b61dcp-9f,
+    0x1.706c8ep-13f, 0x1.3274dcp-9f, 0x1.94487cp-10f, 0x1.63148p-13f,
+    0x1.24d048p-3f, -0x1.a5376p-15f, 0x1.c944dcp-18f, -0x1.7d99dep-8f,
+    0x1.841dep-10f, 0x1.48dedap-9f, -0x1.25b8a8p-8f, -0x1.e2dd66p-12f,
+    0x1.2a0ae2p-11f, 0x1.448c56p-8f, 0x1.781aa2p-8f, 0x1.de4b38p-12f,
     /* node 61 z force */
-    0x1.d39dbcp-6f, -0x1.546772p-9f, -0x1.172d6ep-8f, 0x1.00f05p+0f,
-    0x1.6c05f4p-6f, 0x1.48742ap-9f, -0x1.a5e91cp-8f, 0x1.7b45b6p-6f,
-    -0x1.f2802cp-7f, 0x1.50d196p-9f,
+    0x1.021936p-5f, -0x1.007928p-8f, -0x1.c2a2fp-9f, 0x1.f656cep-1f,
+    0x1.9d06dp-6f, 0x1.882ea4p-12f, -0x1.16448ap-11f, 0x1.aceb1ep-6f,
+    -0x1.e36bccp-10f, 0x1.5f0796p-10f, 0x1.46a34p-13f, 0x1.04b936p-9f,
+    -0x1.0612d6p-6f, -0x1.d5fd28p-9f, 0x1.2e7ba6p-6f, 0x1.c709dap-10f,
+    -0x1.7fabbp-13f, -0x1.4ca69ap-7f, -0x1.147074p-9f, -0x1.80033cp-9f,
 };
 const tfit_model tfit_block48_ve_contact = {
-    4u, 4u, 1u, 1u, 42u,
+    4u, 4u, 1u, 1u, 72u,
     tfit_block48_ve_contact_dims, tfit_block48_ve_contact_coef, tfit_block48_ve_contact_nodes,
-    tfit_block48_ve_contact_dims + 1u, tfit_block48_ve_contact_coef + 42u, tfit_block48_ve_contact_nodes + 1u,
+    tfit_block48_ve_contact_dims + 1u, tfit_block48_ve_contact_coef + 72u, tfit_block48_ve_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x3f2c025eu, 0xbec15e17u, 0x3ed0158du, 0xbdd96a36u, 0x3f1e112fu, 0xbf48b8b0u,
-     0x3f21c7b2u, 0x3d181156u, 0x3f896ae0u, 0xbead9919u, 0xbdd4a921u, 0xbf3d4055u,
-     0xbef9f241u, 0xbf007533u, 0xbfb430d1u, 0xc07feb15u, 0xc0bacc49u, 0x415e0919u,
-     0xf0a19761u, 0xf0ebbbc3u, 0x718ca7cau, 0xc0b4cc80u, 0x40451426u, 0xc173cc06u,
-     0x94b4728bu, 0x16c1328eu},
-    0xed675d1du
+    {0x3f2c025cu, 0xbec15e1eu, 0x3ed015e0u, 0xbddac37eu, 0x3f1dbc01u, 0xbf44fd74u,
+     0x3f21c944u, 0x3d184300u, 0x3f895979u, 0xbeadc925u, 0xbdd62470u, 0xbf3b2c9du,
+     0xbefa2550u, 0xbf00a794u, 0xbfb3164eu, 0xc07f8b83u, 0xc0ba6dfau, 0x415bf84eu,
+     0xf0a1589fu, 0xf0eb3fe9u, 0x718b4c91u, 0xc0b4f729u, 0x40446bc2u, 0xc171f3ecu,
+     0xc6ab6ae9u, 0xd2adb97eu},
+    0xcff6cc1cu
 };
-static const int32_t tfit_block48_ve_contact_q31_coef[46] = {
+static const int32_t tfit_block48_ve_contact_q31_coef[76] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
-    279698, -128815, -7062300,
+    248010, -191353, -6360968,
     /* W (row-major), then the projection's headroom H */
-    633631296, -6903249, 2048261, -6901838, 623143424, 928513,
-    1471356, 3766677, 226809744,
+    633655232, -6686358, 1893936, -6851802, 623597248, 605628,
+    1262826, 1875468, 228155392,
     6,
-    /* node 61 x: shift, then 10 coefficients */
-    33, 952212, 534044672, 5928764, -4114977, 69340,
-    258092, 77605816, 85946, 952835, -536174,
-    /* node 61 y: shift, then 10 coefficients */
-    33, -842652, 5976272, 543055488, -1398234, 110409,
-    986886, 327826, 270691, 79041216, -148381,
-    /* node 61 z: shift, then 10 coefficients */
-    33, 15322846, -1394295, -2287022, 538839552, 11928314,
-    1345347, -3456292, 12427995, -8167435, 1379609,
+    /* node 61 x: shift, then 20 coefficients */
+    33, 729916, 536246656, 4532267, -3616614, -90435,
+    -436217, 75162584, -137714, 1401815, -349912, 369350,
+    -1081163, 739508, -1367551, -23611, 3531448, -162860,
+    122319, -242300, 85291,
+    /* node 61 y: shift, then 20 coefficients */
+    33, -835615, 6845940, 542876352, 1619486, 94317,
+    1255246, 827972, 90900, 76759328, -26958, 3658,
+    -3126076, 794863, 1347054, -2406165, -247227, 305196,
+    2658699, 3081044, 244886,
+    /* node 61 z: shift, then 20 coefficients */
+    33, 16914742, -2101029, -1845807, 526740704, 13534056,
+    200797, -284946, 14054799, -990046, 718909, 83619,
+    1067923, -8587627, -1925074, 9911763, 931919, -98220,
+    -5450150, -1132295, -1572916,
 };
 const tfit_model_q31 tfit_block48_ve_contact_q31 = {
-    3u, 4u, 1u, 2u, 46u,
+    3u, 4u, 1u, 3u, 76u,
     tfit_block48_ve_contact_q31_coef, tfit_block48_ve_contact_nodes,
-    tfit_block48_ve_contact_q31_coef + 46u, tfit_block48_ve_contact_nodes + 1u,
-    0x668459b6u
+    tfit_block48_ve_contact_q31_coef + 76u, tfit_block48_ve_contact_nodes + 1u,
+    0x73fe7517u
 };
 
 #endif /* TFIT_BLOCK48_VE_IMPLEMENTATION */
