@@ -390,7 +390,8 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
         tf_error(ctx, "fit: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
-    /* the contact inverse: within 1e-4 of the envelope radius (the bound) */
+    /* the contact inverse: within 1e-4 of the envelope radius (the issue's
+     * bound for linear scenes), else the most accurate passive one */
     if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope.radius, &sel,
                   err, sizeof err) != 0) {
         tf_error(ctx, "fit: %s: %s; nothing written", a->scene, err);
@@ -406,11 +407,17 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
         snprintf(limits + k, sizeof limits - k, "%sa held-out error <= %.3g mm", k ? " and " : "",
                  a->max_error_mm);
     }
+    char contact_note[160] = "";
+    if (!sel.contact_within_tol) {
+        snprintf(contact_note, sizeof contact_note,
+                 ", the most accurate passive one (held-out %.3g N; none within %.3g N)",
+                 sel.contact->heldout_max, 1e-4 * s->envelope.radius);
+    }
     snprintf(choice, sizeof choice,
              "Chosen among every candidate for %s on %s: %s (%.2f us) and the contact inverse "
-             "%s (%.2f us).",
+             "%s (%.2f us%s).",
              limits, a->mcu.name, sel.forward->label, tf_candidate_us(sel.forward, &a->mcu),
-             sel.contact->label, tf_candidate_us(sel.contact, &a->mcu));
+             sel.contact->label, tf_candidate_us(sel.contact, &a->mcu), contact_note);
     tf_info(ctx, "fit: %s", choice);
     int rc = emit(ctx, a, s, p, o, sel.forward->model, sel.contact->model, choice);
     tf_sweep_free(&sw);

@@ -54,17 +54,30 @@ static int usable(const tf_candidate *c)
     return c->precision == TF_PREC_F32 && c->set == TF_SET_SCENE && c->model != NULL;
 }
 
-static const tf_candidate *pick_contact(const tf_sweep *sw, const tf_mcu *mcu, double tol)
+/* The contact inverse: the cheapest passive candidate within tol (N,
+ * held-out max); when none is (a nonlinear contact law, whose best fit is
+ * far above a tolerance made for linear scenes), the most accurate passive
+ * one, as the order search would ship.  *within says which. */
+static const tf_candidate *pick_contact(const tf_sweep *sw, const tf_mcu *mcu, double tol,
+                                        int *within)
 {
-    const tf_candidate *best = NULL;
+    const tf_candidate *best = NULL, *closest = NULL;
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_candidate *c = &sw->c[i];
-        if (usable(c) && c->family->kind == TF_FAMILY_INVERSE && c->passive && c->heldout_max <= tol &&
-            (best == NULL || tf_candidate_us(c, mcu) < tf_candidate_us(best, mcu))) {
+        if (!usable(c) || c->family->kind != TF_FAMILY_INVERSE || !c->passive) {
+            continue;
+        }
+        const double us = tf_candidate_us(c, mcu);
+        if (c->heldout_max <= tol && (best == NULL || us < tf_candidate_us(best, mcu))) {
             best = c;
         }
+        if (closest == NULL || c->heldout_max < closest->heldout_max ||
+            (c->heldout_max == closest->heldout_max && us < tf_candidate_us(closest, mcu))) {
+            closest = c;
+        }
     }
-    return best;
+    *within = best != NULL;
+    return best != NULL ? best : closest;
 }
 
 /* The fastest and the most accurate forward candidates, for messages. */
@@ -92,11 +105,11 @@ int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double ma
               double contact_tol, tf_selection *sel, char *why, size_t whylen)
 {
     const tf_candidate *fast, *accurate;
-    sel->contact = pick_contact(sw, mcu, contact_tol);
+    sel->contact = pick_contact(sw, mcu, contact_tol, &sel->contact_within_tol);
     sel->forward = NULL;
     extremes(sw, mcu, &fast, &accurate);
     if (sel->contact == NULL || fast == NULL) {
-        snprintf(why, whylen, "no passive contact inverse within %g N, or no forward model", contact_tol);
+        snprintf(why, whylen, "no passive contact inverse, or no forward model");
         return -1;
     }
     const double contact_us = tf_candidate_us(sel->contact, mcu);

@@ -27,10 +27,12 @@ double tf_candidate_us(const tf_candidate *c, const tf_mcu *mcu);
 
 typedef struct tf_selection {
     const tf_candidate *forward, *contact;
+    int contact_within_tol; /* 0: no passive contact was within contact_tol; the closest is taken */
 } tf_selection;
 
 /* Among the float32 candidates of the scene's outputs: the contact inverse
- * is the cheapest within contact_tol (N, held-out max); the forward model is
+ * is the cheapest passive one within contact_tol (N, held-out max), else the
+ * most accurate passive one (contact_within_tol says which); the forward model is
  * the most accurate whose time plus the contact's fits budget_us, or (when
  * budget_us is NAN) the cheapest within max_error_mm; with both, the
  * cheapest within the error that fits the budget.  Returns 0, or -1 with a

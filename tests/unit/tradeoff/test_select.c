@@ -1,0 +1,105 @@
+/*
+ * test_select.c — tf_select (host/tradeoff/select.c), the choice behind
+ * `tissuefit fit --budget-us / --max-error-mm`, on made-up candidates:
+ * the contact inverse within the tolerance when one is, else the most
+ * accurate passive one (a nonlinear scene's contact law is far from a
+ * tolerance made for linear scenes: block48_nh was refused outright), and
+ * the budget counting the contact's time.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "fitting/families/family.h"
+#include "tradeoff/select.h"
+
+/* A float32 candidate of the scene's outputs; model only needs to be set. */
+static tf_candidate cand(const char *family, double us, double err, int passive)
+{
+    static int dummy_model;
+    tf_candidate c;
+    memset(&c, 0, sizeof c);
+    snprintf(c.label, sizeof c.label, "%s %g us", family, us);
+    c.family = tf_family_find(family);
+    c.precision = TF_PREC_F32;
+    c.set = TF_SET_SCENE;
+    c.us_m4f = us;
+    c.us_m7 = us / 3;
+    c.heldout_max = err;
+    c.passive = passive;
+    c.model = (tf_model *)&dummy_model;
+    return c;
+}
+
+static tf_mcu m4f(void)
+{
+    tf_mcu m;
+    char err[128];
+    assert_int_equal(tf_mcu_parse("cortex-m4f@168", &m, err, sizeof err), 0);
+    return m;
+}
+
+static void contact_within_the_tolerance_is_the_cheapest_there(void **state)
+{
+    (void)state;
+    tf_candidate c[] = {cand("contact", 10, 1e-5, 1), cand("contact", 5, 2e-5, 1),
+                        cand("contact", 2, 1e-5, 0), cand("nodal", 20, 0.1, 1)};
+    tf_sweep sw = {.c = c, .n = 4, .cap = 4};
+    tf_mcu m = m4f();
+    tf_selection sel;
+    char why[512];
+    assert_int_equal(tf_select(&sw, &m, 50, NAN, 1e-4, &sel, why, sizeof why), 0);
+    assert_ptr_equal(sel.contact, &c[1]); /* c[2] is cheaper but not passive */
+    assert_true(sel.contact_within_tol);
+    assert_ptr_equal(sel.forward, &c[3]);
+}
+
+static void no_contact_within_the_tolerance_takes_the_most_accurate_passive(void **state)
+{
+    (void)state;
+    /* block48_nh's situation: the contact laws are 0.13-0.14 N off */
+    tf_candidate c[] = {cand("contact", 7.5, 0.138, 1), cand("contact", 10.9, 0.133, 1),
+                        cand("contact", 3, 0.01, 0),    cand("modal", 35.3, 0.175, 1),
+                        cand("modal", 40.2, 0.068, 1),  cand("nodal", 26, 0.41, 1)};
+    tf_sweep sw = {.c = c, .n = 6, .cap = 6};
+    tf_mcu m = m4f();
+    tf_selection sel;
+    char why[512];
+    assert_int_equal(tf_select(&sw, &m, 50, NAN, 3e-4, &sel, why, sizeof why), 0);
+    assert_ptr_equal(sel.contact, &c[1]);
+    assert_false(sel.contact_within_tol);
+    /* the budget counts the contact: 40.2 + 10.9 > 50, 35.3 + 10.9 fits */
+    assert_ptr_equal(sel.forward, &c[3]);
+    assert_int_equal(tf_select(&sw, &m, 52, NAN, 3e-4, &sel, why, sizeof why), 0);
+    assert_ptr_equal(sel.forward, &c[4]);
+    /* nothing fits: refused, with the best achievable on each axis */
+    assert_int_equal(tf_select(&sw, &m, 20, NAN, 3e-4, &sel, why, sizeof why), -1);
+    assert_non_null(strstr(why, "no model fits a 20 us budget"));
+}
+
+static void no_passive_contact_is_refused(void **state)
+{
+    (void)state;
+    tf_candidate c[] = {cand("contact", 7.5, 1e-6, 0), cand("nodal", 20, 0.1, 1)};
+    tf_sweep sw = {.c = c, .n = 2, .cap = 2};
+    tf_mcu m = m4f();
+    tf_selection sel;
+    char why[512];
+    assert_int_equal(tf_select(&sw, &m, 50, NAN, 1e-4, &sel, why, sizeof why), -1);
+    assert_non_null(strstr(why, "no passive contact inverse"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(contact_within_the_tolerance_is_the_cheapest_there),
+        cmocka_unit_test(no_contact_within_the_tolerance_takes_the_most_accurate_passive),
+        cmocka_unit_test(no_passive_contact_is_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
