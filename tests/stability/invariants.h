@@ -52,6 +52,7 @@ typedef struct stab_stats {
     uint64_t ok, clamped, bad_input;
     uint64_t failures; /* invariant violations */
     uint64_t sensitive; /* float clamps beyond STAB_FLOAT_TOL_ULPS, within the projection allowance */
+    uint64_t unasserted; /* float clamps beyond it of a saturating modal_q15 (not asserted) */
     double worst;      /* largest deviation: ulps (float) or LSB (Q31) */
     double worst_ratio; /* float, beyond STAB_FLOAT_TOL_ULPS: largest deviation / (that + allowance) */
     uint32_t worst_in[3]; /* its input (float bits or int32 words) */
@@ -66,6 +67,8 @@ typedef struct stab_float {
     const char *label;
     double x0[3], w[9]; /* the input map, from coef[0..11] */
     double scale;       /* output magnitude on the envelope (see above) */
+    double quantum;     /* modal_q15: ulps one truncation step of every amplitude can move an output */
+    int saturates;      /* modal_q15 whose amplitudes can saturate inside the envelope */
     float *y, *y_b, *y_n, *y_g;
     tfit_model in_g;
     float *coef_g;      /* in_g's coefficients */

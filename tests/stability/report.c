@@ -25,5 +25,10 @@ void stab_print(int q31, const char *label, const stab_stats *st, double tol, do
         printf("; %llu within the projection allowance (worst %.2f of its tolerance)",
                (unsigned long long)st->sensitive, st->worst_ratio);
     }
+    if (st->unasserted > 0) {
+        printf("; %llu beyond it from a modal_q15 that saturates inside its envelope (continuity "
+               "not asserted)",
+               (unsigned long long)st->unasserted);
+    }
     printf("; %.2f s%s\n", seconds, st->failures ? "  FAILED" : "");
 }

@@ -24,7 +24,8 @@
 
 static const char *family_name(uint32_t f)
 {
-    static const char *const names[] = {"?", "nodal", "modal", "zhou2017", "contact", "prony"};
+    static const char *const names[] = {"?",     "nodal", "modal",    "zhou2017", "contact",
+                                        "prony", "cut",   "resonant", "modal_q15"};
     return f < sizeof names / sizeof names[0] ? names[f] : "?";
 }
 
