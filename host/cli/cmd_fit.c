@@ -382,7 +382,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
 static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf_solver *solver,
                          const tf_fit_plan *p, tf_fit_outcome *o)
 {
-    char err[1024], choice[512];
+    char err[1024], choice[1280]; /* every part at its longest: -Wformat-truncation */
     tf_sweep sw;
     tf_selection sel;
     tf_info(ctx, "fit: measuring every candidate for the choice (tissuefit sweep)");
