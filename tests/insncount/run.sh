@@ -32,7 +32,7 @@ awk '
     if (st[2] < 0) bad[key] = ir[2]; else if (st[2] == 1) clamp[key] = ir[2]; else ok[key] = ir[2]
 }
 END {
-    # name[id + 1]: the family ids of tfit.h; a Q31 set's id is shifted by 10 (probe.c)
+    # name[id + 1]: the family ids of tfit.h; the id of a Q31 set is shifted by 10 (probe.c)
     split("control nodal modal zhou2017 contact prony cut resonant modal_q15 - - nodal-q31 - - contact-q31 prony-q31", name, " ")
     printf "%-4s %-11s %7s %12s %12s %12s %s\n", "set", "family", "inputs", "in-envelope", "clamped", "NaN/Inf", "verdict"
     fail = 0
