@@ -72,10 +72,11 @@ $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_lo
 
 # make check runs the small test models under QEMU (about 15 s per core);
 # the block48-shaped ones (haptic_creep, creep48: 121 points, about 30 s
-# per core each; the shipped block48_ve.h, 18,255 instructions a tick at
-# p = 2: 82 s on M4F, 196 s on M7 for the float step (34,119 at the
-# earlier p = 3: 613 s per core on the loaded machine), so its QEMU
-# timeout is 1500 s) run natively in make check and under QEMU in
+# per core each; the shipped block48_ve.h, prony p = 3, 34,119
+# instructions a tick and 46,208 for its Q31 form: 69 s on M4F, 101 s on
+# M7 for both forms at a load of about 3, 613 s per core for the float
+# step alone on a loaded machine, so its QEMU timeout is 1500 s) run
+# natively in make check and under QEMU in
 # prony-long-qemu.  Each run steps the header's Q31 prony models too
 # (docs/q31-format.md §8).
 PRONY_QEMU_TIMEOUT_block48_ve := 1500
