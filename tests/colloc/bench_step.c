@@ -9,8 +9,9 @@
  *   bench_step [BATCHES [STEPS]]
  *
  * The body: a 20 x 20 x 15 grid (6,000 particles, 1 mm spacing), bottom
- * clamped, St. Venant-Kirchhoff, k = 16 (18 with ties), a rigid sphere
- * pressing on the top and a force on one corner so that every term works.
+ * clamped, St. Venant-Kirchhoff, the default supports (k = 10: 18 with
+ * ties), a rigid sphere pressing on the top and a force on one corner so
+ * that every term works.
  * Each batch runs STEPS steps; the medians of BATCHES batches per thread
  * count are printed, as wall time and as processor time (the sum over
  * threads: on a shared machine the wall time of a thread that waits for a

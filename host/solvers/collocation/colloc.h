@@ -32,11 +32,11 @@
 #include "materials/material.h"
 
 typedef struct tf_colloc_opts {
-    unsigned neighbours; /* k nearest (default 16), plus ties at the k-th distance */
-    double support;      /* h_i = support x mean distance to the neighbours (default 2) */
+    unsigned neighbours; /* k nearest (default 10), plus ties at the k-th distance */
+    double support;      /* h_i = support x mean distance to the neighbours (default 1.5) */
     double rcond_min;    /* smallest reciprocal condition of a moment matrix (1e-6) */
     double kv;           /* volume-conservation constant of eq 12, MPa (default 0) */
-    double stab;         /* weight of the fit-residual energy (ours, default 0.3; see
+    double stab;         /* weight of the fit-residual energy (ours, default 0.2; see
                           * docs/collocation.md: 0 is the seed's method) */
     int threads;         /* OpenMP threads of the parallel loops; 0: OpenMP's default */
 } tf_colloc_opts;

@@ -23,11 +23,15 @@
 
 void tf_colloc_defaults(tf_colloc_opts *o)
 {
-    o->neighbours = 16;
-    o->support = 2.0;
+    /* k = 10, support 1.5, stab 0.2: the smallest supports that keep the
+     * Hertz test within 5 % and put block48's in-plane static limit within
+     * 2 % of CalculiX (docs/collocation.md, "Defaults"); seed 004 uses
+     * k = 16 and gives no support factor. */
+    o->neighbours = 10;
+    o->support = 1.5;
     o->rcond_min = 1e-6;
     o->kv = 0;
-    o->stab = 0.3;
+    o->stab = 0.2;
     o->threads = 0;
 }
 
