@@ -27,15 +27,20 @@ done
 for l in 5 6 8; do   # levels 7 is in the convergence runs
   run --label "size" --law linear --cells 8 --levels "$l"
 done
+# Each option against the defaults (k = 10, support 1.5, stab 0.2: the
+# convergence runs at 8 cells), and the former defaults (k = 16, support 2,
+# stab 0.3).
 for s in 0 0.1 0.3 1; do
   run --label "stab" --law linear --cells 8 --levels 7 --stab "$s"
 done
-for k in 8 26; do
+for k in 6 16 26; do
   run --label "neighbours" --law linear --cells 8 --levels 7 --neighbours "$k"
 done
-for s in 1.5 3; do
+for s in 2 3; do
   run --label "support" --law linear --cells 8 --levels 7 --support "$s"
 done
+run --label "former-defaults" --law linear --cells 8 --levels 7 --neighbours 16 --support 2 \
+  --stab 0.3
 run --label "seed-volumes" --law linear --cells 8 --levels 7 --volumes seed
 run --label "uniform" --law linear --cells 16 --levels 1 --core 20
 
