@@ -10,17 +10,17 @@
  *       1142 add, 1167 mul, 0 div per evaluation; 6440 table bytes
  *       2859 instructions; Cortex-M4F <= 4949 cycles (29.46 us at 168 MHz), Cortex-M7 ~3767 (7.85 us at 480 MHz)
  *       model 'block48_dyn_forward': no Q31 form for the resonant family
- *       stateful: tick 1000000 ns, state 21 floats (tfit_resonant_reset, tfit_resonant_step); 3 damped modes: 75.81 Hz zeta 0.0421 w (0.0042 0.00379 0.992); 131 Hz zeta 0.0255 w (0.145 0.144 0.0024); 170.7 Hz zeta 0.559 w (-0.673 -0.682 -0.0205)
- *       held-out cases are force histories stepped from rest: largest error 15.4 % of the largest displacement
- *       held-out error over 6 cases: max 0.187 mm, rms 0.00491 mm
+ *       stateful: tick 1000000 ns, state 21 floats (tfit_resonant_reset, tfit_resonant_step); 3 damped modes: 84.38 Hz zeta 0.0375 w (-0.0127 -0.0178 0.958); 140.8 Hz zeta 0.0193 w (0.123 0.119 0.00068); 238.7 Hz zeta 0.0384 w (0.279 0.272 0.0054)
+ *       held-out cases are force histories stepped from rest: largest error 29.5 % of the largest displacement
+ *       held-out error over 6 cases: max 0.388 mm, rms 0.00611 mm
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *   tfit_block48_dyn_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
- *       Q31 form tfit_block48_dyn_contact_q31: input 2^3 mm, output 2^4 N full scale; adds 2e-08 N (float32 path: 6.89e-08)
- *       held-out error over 10 cases: max 5.96e-08 N, rms 1.77e-08 N
+ *       Q31 form tfit_block48_dyn_contact_q31: input 2^3 mm, output 2^4 N full scale; adds 2e-08 N (float32 path: 6.97e-08)
+ *       held-out error over 10 cases: max 5.96e-08 N, rms 1.25e-08 N
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.487 N/mm; largest stiffness 0.492 N/mm (the device must render it)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.4 N/mm; largest stiffness 0.582 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_DYN_IMPLEMENTATION before including it: that file holds
@@ -37,7 +37,7 @@
 #endif
 
 /* CRC-32 of block48_dyn_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_BLOCK48_DYN_GOLDEN_CRC32 0xe445301au
+#define TFIT_BLOCK48_DYN_GOLDEN_CRC32 0x0c2582ddu
 
 /* tfit_block48_dyn_forward */
 #define TFIT_BLOCK48_DYN_FORWARD_FAMILY "resonant"
@@ -69,11 +69,11 @@
 #error "block48_dyn_forward: fitted for a 1000000 ns tick, the firmware's TFIT_TICK_US differs: refit with that tick"
 #endif
 #define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_CASES 6
-#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_MAX_MM 0.186634
-#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_RMS_MM 0.004912
-#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_REL_MAX 0.153766
-#define TFIT_BLOCK48_DYN_FORWARD_CRC32 0xc730a6cdu
-#define tfit_block48_dyn_forward tfit_block48_dyn_forward_c730a6cd /* this header's version of the model */
+#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_MAX_MM 0.388485
+#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_RMS_MM 0.0061087
+#define TFIT_BLOCK48_DYN_FORWARD_HELDOUT_REL_MAX 0.294578
+#define TFIT_BLOCK48_DYN_FORWARD_CRC32 0xff4c3999u
+#define tfit_block48_dyn_forward tfit_block48_dyn_forward_ff4c3999 /* this header's version of the model */
 extern const tfit_model tfit_block48_dyn_forward;
 
 /* tfit_block48_dyn_contact */
@@ -83,7 +83,7 @@ extern const tfit_model tfit_block48_dyn_forward;
 #define TFIT_BLOCK48_DYN_CONTACT_N_OUT 1u
 #define TFIT_BLOCK48_DYN_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_BLOCK48_DYN_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_BLOCK48_DYN_CONTACT_ENVELOPE_CENTER {2.4998894e-12, -5.37938671e-13, 1.09402765e-10}
+#define TFIT_BLOCK48_DYN_CONTACT_ENVELOPE_CENTER {2.31164762e-12, -4.97615675e-13, 1.18123691e-10}
 #define TFIT_BLOCK48_DYN_CONTACT_OPS_ADD 23
 #define TFIT_BLOCK48_DYN_CONTACT_OPS_MUL 42
 #define TFIT_BLOCK48_DYN_CONTACT_OPS_DIV 0
@@ -97,18 +97,18 @@ extern const tfit_model tfit_block48_dyn_forward;
 #define TFIT_BLOCK48_DYN_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_BLOCK48_DYN_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_DYN_CONTACT_Q31_OUT_EXP 4 /* output value = word * 2^(4 - 31), N */
-#define TFIT_BLOCK48_DYN_CONTACT_Q31_ADDED_ERROR_N 2.00154e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.89363e-08 */
-#define TFIT_BLOCK48_DYN_CONTACT_Q31_CRC32 0x83b81526u
-#define tfit_block48_dyn_contact_q31 tfit_block48_dyn_contact_q31_83b81526 /* this header's version of the model */
+#define TFIT_BLOCK48_DYN_CONTACT_Q31_ADDED_ERROR_N 2.00012e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 6.97196e-08 */
+#define TFIT_BLOCK48_DYN_CONTACT_Q31_CRC32 0x0b586ae9u
+#define tfit_block48_dyn_contact_q31 tfit_block48_dyn_contact_q31_0b586ae9 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_dyn_contact_q31;
 #define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_CASES 10
 #define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_MAX_N 5.96046e-08
-#define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_RMS_N 1.77e-08
-#define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_REL_MAX 1.05474e-07
-#define TFIT_BLOCK48_DYN_CONTACT_STIFFNESS_MIN_N_PER_MM 0.486666 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_BLOCK48_DYN_CONTACT_STIFFNESS_MAX_N_PER_MM 0.491815 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_DYN_CONTACT_CRC32 0x2b69ae47u
-#define tfit_block48_dyn_contact tfit_block48_dyn_contact_2b69ae47 /* this header's version of the model */
+#define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_RMS_N 1.24672e-08
+#define TFIT_BLOCK48_DYN_CONTACT_HELDOUT_REL_MAX 7.02622e-08
+#define TFIT_BLOCK48_DYN_CONTACT_STIFFNESS_MIN_N_PER_MM 0.400276 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_BLOCK48_DYN_CONTACT_STIFFNESS_MAX_N_PER_MM 0.581855 /* largest ||df/ddelta||_2 */
+#define TFIT_BLOCK48_DYN_CONTACT_CRC32 0x19a9064bu
+#define tfit_block48_dyn_contact tfit_block48_dyn_contact_19a9064b /* this header's version of the model */
 extern const tfit_model tfit_block48_dyn_contact;
 
 #ifdef TFIT_BLOCK48_DYN_IMPLEMENTATION
@@ -141,12 +141,12 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1p+0f,
-    /* resonant mode 0: F (2 x 2, row-major), weights x y z (75.8065 Hz, zeta 0.042062) */
-    0x1.c7c328p-1f, 0x1.cc38eep-2f, -0x1.cc38eep-2f, 0x1.b46788p-1f, 0x1.1355c2p-8f, 0x1.f142a6p-9f, 0x1.fbea06p-1f,
-    /* resonant mode 1: F (2 x 2, row-major), weights x y z (130.99 Hz, zeta 0.0254706) */
-    0x1.5e66p-1f, 0x1.6fa57p-1f, -0x1.6fa57p-1f, 0x1.4bab8ap-1f, 0x1.28516ep-3f, 0x1.278238p-3f, 0x1.3ad596p-9f,
-    /* resonant mode 2: F (2 x 2, row-major), weights x y z (170.713 Hz, zeta 0.559211) */
-    0x1.4447c8p-1f, 0x1.0743d4p-1f, -0x1.0743d4p-1f, 0x1.dd6da2p-5f, -0x1.5853bap-1f, -0x1.5d0e46p-1f, -0x1.4f3d14p-6f,
+    /* resonant mode 0: F (2 x 2, row-major), weights x y z (84.384 Hz, zeta 0.0375451) */
+    0x1.ba9fe6p-1f, 0x1.fbabc2p-2f, -0x1.fbabc2p-2f, 0x1.a79066p-1f, -0x1.a0e9c8p-7f, -0x1.234434p-6f, 0x1.eaba4cp-1f,
+    /* resonant mode 1: F (2 x 2, row-major), weights x y z (140.835 Hz, zeta 0.0193329) */
+    0x1.46616ep-1f, 0x1.85827p-1f, -0x1.85827p-1f, 0x1.3751e4p-1f, 0x1.f6f9d4p-4f, 0x1.e918f8p-4f, 0x1.645d3ep-11f,
+    /* resonant mode 2: F (2 x 2, row-major), weights x y z (238.732 Hz, zeta 0.0384425) */
+    0x1.aa24e2p-4f, 0x1.e26b4p-1f, -0x1.e26b4p-1f, 0x1.02d5d4p-5f, 0x1.1d3baap-2f, 0x1.16c642p-2f, 0x1.6206ep-8f,
     /* node 1 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 1 y */
@@ -220,59 +220,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 12 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 13 x */
-    -0x1.91db32p-40f, 0x1.4da1acp-11f, 0x1.a84cd8p-11f, -0x1.a32e84p-7f,
+    -0x1.386694p-41f, -0x1.ec95c4p-12f, 0x1.453c68p-10f, -0x1.c6d1dp-9f,
     /* node 13 y */
-    -0x1.9ed552p-40f, 0x1.a84cd8p-11f, 0x1.4da1acp-11f, -0x1.a32e84p-7f,
+    -0x1.3cd152p-41f, 0x1.453c68p-10f, -0x1.ec95c4p-12f, -0x1.c6d1dp-9f,
     /* node 13 z */
-    0x1.43b676p-39f, -0x1.f5c02ep-10f, -0x1.f5c02ep-10f, 0x1.13ccb6p-6f,
+    0x1.6f4bb6p-43f, -0x1.22865cp-8f, -0x1.22865cp-8f, -0x1.d5e14ep-8f,
     /* node 14 x */
-    -0x1.30fc9p-38f, 0x1.004b0ep-12f, 0x1.536756p-9f, -0x1.894b54p-5f,
+    -0x1.c30f3ap-39f, 0x1.1d3064p-11f, 0x1.131a96p-7f, -0x1.a1eca2p-6f,
     /* node 14 y */
-    -0x1.cb794ep-39f, -0x1.5f3f32p-8f, -0x1.cad9b8p-7f, -0x1.1c9f78p-5f,
+    -0x1.fd3ad6p-40f, 0x1.0ded18p-10f, -0x1.c3bc2p-12f, -0x1.c2b38p-7f,
     /* node 14 z */
-    0x1.f60282p-38f, 0x1.2484fcp-8f, 0x1.e2c2p-8f, 0x1.15cc5p-4f,
+    0x1.011982p-38f, -0x1.58ea7ep-8f, 0x1.c3256ep-11f, 0x1.33c228p-6f,
     /* node 15 x */
-    -0x1.1a205p-38f, 0x1.ac74ccp-9f, 0x1.7e4178p-8f, -0x1.a0c802p-5f,
+    -0x1.9e7ffep-39f, -0x1.70397p-9f, 0x1.d432aap-9f, -0x1.01973ep-5f,
     /* node 15 y */
-    -0x1.ac59c8p-38f, 0x1.38fef2p-9f, 0x1.0071c4p-8f, -0x1.1b64fep-4f,
+    -0x1.c7889cp-39f, -0x1.0437c4p-10f, -0x1.31bacep-9f, -0x1.e7800cp-6f,
     /* node 15 z */
-    0x1.d44102p-37f, 0x1.5394e2p-7f, 0x1.695fdep-6f, 0x1.2479aep-3f,
+    0x1.40e33cp-37f, 0x1.e035e8p-8f, 0x1.226142p-7f, 0x1.17f06ep-4f,
     /* node 16 x */
-    -0x1.277388p-39f, 0x1.7df0dcp-9f, -0x1.c8c63cp-9f, -0x1.0d369p-5f,
+    -0x1.aa3bcep-40f, 0x1.276c4ap-8f, 0x1.e9b63cp-8f, -0x1.8c83dap-6f,
     /* node 16 y */
-    -0x1.1a4208p-37f, -0x1.f99338p-9f, -0x1.35a69p-5f, -0x1.958966p-4f,
+    -0x1.2b31ep-38f, -0x1.9c77fap-11f, -0x1.02bf92p-8f, -0x1.5886bap-5f,
     /* node 16 z */
-    0x1.3bd2a6p-36f, 0x1.040178p-7f, 0x1.37b4cp-5f, 0x1.ac3924p-3f,
+    0x1.babe04p-37f, 0x1.d6253ep-8f, 0x1.27eddcp-6f, 0x1.d7493cp-4f,
     /* node 17 x */
-    0x1.5e1e46p-41f, -0x1.3e3b0ap-7f, 0x1.04f73p-39f, -0x1.a649c2p-41f,
+    0x1.e0edecp-42f, -0x1.224046p-7f, 0x1.667cacp-40f, -0x1.21f898p-41f,
     /* node 17 y */
-    -0x1.28c6d4p-37f, -0x1.1e5c8p-35f, 0x1.77778ep-7f, -0x1.c785e8p-4f,
+    -0x1.3dca7ap-38f, -0x1.1210c4p-36f, -0x1.8bcee4p-11f, -0x1.c2d49p-5f,
     /* node 17 z */
-    0x1.4dd6cep-36f, 0x1.4a2c26p-34f, 0x1.7b6358p-5f, 0x1.dfae9ep-3f,
+    0x1.db8354p-37f, 0x1.ab2c3ap-35f, 0x1.d46ddap-6f, 0x1.2e2b2ep-3f,
     /* node 18 x */
-    0x1.a2440ep-39f, 0x1.7df0dcp-9f, 0x1.c8c63cp-9f, 0x1.0d369p-5f,
+    0x1.2ad0f6p-39f, 0x1.276c4ap-8f, -0x1.e9b63cp-8f, 0x1.8c83dap-6f,
     /* node 18 y */
-    -0x1.018e14p-37f, 0x1.f99338p-9f, -0x1.35a69p-5f, -0x1.958966p-4f,
+    -0x1.137f42p-38f, 0x1.9c77fap-11f, -0x1.02bf92p-8f, -0x1.5886bap-5f,
     /* node 18 z */
-    0x1.1f7452p-36f, -0x1.040178p-7f, 0x1.37b4cp-5f, 0x1.ac3924p-3f,
+    0x1.8de5f4p-37f, -0x1.d6253ep-8f, 0x1.27eddcp-6f, 0x1.d7493cp-4f,
     /* node 19 x */
-    0x1.1f2156p-38f, 0x1.ac74ccp-9f, -0x1.7e4178p-8f, 0x1.a0c802p-5f,
+    0x1.a13d62p-39f, -0x1.70396ep-9f, -0x1.d432aap-9f, 0x1.01973ep-5f,
     /* node 19 y */
-    -0x1.66145ap-38f, -0x1.38fef2p-9f, 0x1.0071c4p-8f, -0x1.1b64fep-4f,
+    -0x1.8397f6p-39f, 0x1.0437c4p-10f, -0x1.31bacep-9f, -0x1.e7800cp-6f,
     /* node 19 z */
-    0x1.84630ap-37f, -0x1.5394e2p-7f, 0x1.695fdep-6f, 0x1.2479aep-3f,
+    0x1.01bd1ep-37f, -0x1.e035e6p-8f, 0x1.226142p-7f, 0x1.17f06ep-4f,
     /* node 20 x */
-    0x1.0680b4p-38f, 0x1.004b1p-12f, -0x1.536756p-9f, 0x1.894b54p-5f,
+    0x1.7f0884p-39f, 0x1.1d3064p-11f, -0x1.131a96p-7f, 0x1.a1eca2p-6f,
     /* node 20 y */
-    -0x1.60704p-39f, 0x1.5f3f32p-8f, -0x1.cad9b8p-7f, -0x1.1c9f78p-5f,
+    -0x1.91df8ap-40f, -0x1.0ded18p-10f, -0x1.c3bc2p-12f, -0x1.c2b38p-7f,
     /* node 20 z */
-    0x1.7863fap-38f, -0x1.2484fcp-8f, 0x1.e2c2p-8f, 0x1.15cc5p-4f,
+    0x1.5d1b58p-39f, 0x1.58ea7ep-8f, 0x1.c3256ep-11f, 0x1.33c228p-6f,
     /* node 21 x */
-    0x1.285d16p-40f, 0x1.4da1acp-11f, -0x1.a84cd8p-11f, 0x1.a32e84p-7f,
+    0x1.d0418ap-42f, -0x1.ec95c2p-12f, -0x1.453c68p-10f, 0x1.c6d1dp-9f,
     /* node 21 y */
-    -0x1.1ffdacp-40f, -0x1.a84cd8p-11f, 0x1.4da1acp-11f, -0x1.a32e84p-7f,
+    -0x1.ca40e4p-42f, -0x1.453c68p-10f, -0x1.ec95c4p-12f, -0x1.c6d1dp-9f,
     /* node 21 z */
-    0x1.9b1bf8p-40f, 0x1.f5c02ep-10f, -0x1.f5c02ep-10f, 0x1.13ccb6p-6f,
+    -0x1.440926p-43f, 0x1.22865cp-8f, -0x1.22865cp-8f, -0x1.d5e14ep-8f,
     /* node 22 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 22 y */
@@ -286,59 +286,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 23 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 24 x */
-    -0x1.c946e8p-39f, -0x1.cad9b8p-7f, -0x1.5f3f32p-8f, -0x1.1c9f78p-5f,
+    -0x1.fa06a6p-40f, -0x1.c3bc2p-12f, 0x1.0ded18p-10f, -0x1.c2b38p-7f,
     /* node 24 y */
-    -0x1.4364e8p-38f, 0x1.536756p-9f, 0x1.004b0ep-12f, -0x1.894b54p-5f,
+    -0x1.d5934cp-39f, 0x1.131a96p-7f, 0x1.1d3064p-11f, -0x1.a1eca2p-6f,
     /* node 24 z */
-    0x1.0168fep-37f, 0x1.e2c2p-8f, 0x1.2484fcp-8f, 0x1.15cc5p-4f,
+    0x1.032988p-38f, 0x1.c3257p-11f, -0x1.58ea7ep-8f, 0x1.33c228p-6f,
     /* node 25 x */
-    -0x1.30247p-37f, 0x1.daf27ep-8f, 0x1.02f6dep-6f, -0x1.a8a2fp-4f,
+    -0x1.2638aap-37f, 0x1.c7681ep-9f, 0x1.94abd8p-6f, -0x1.395d18p-4f,
     /* node 25 y */
-    -0x1.3ba9aep-37f, 0x1.02f6dep-6f, 0x1.daf27ep-8f, -0x1.a8a2fp-4f,
+    -0x1.2fd06ep-37f, 0x1.94abd8p-6f, 0x1.c7681ep-9f, -0x1.395d18p-4f,
     /* node 25 z */
-    0x1.4b36ep-36f, 0x1.a7faf8p-6f, 0x1.a7faf8p-6f, 0x1.96b4bcp-3f,
+    0x1.07821cp-36f, 0x1.c19aa8p-7f, 0x1.c19aa8p-7f, 0x1.c5b7acp-4f,
     /* node 26 x */
-    -0x1.0c8c18p-37f, 0x1.24dca6p-7f, 0x1.36296ep-8f, -0x1.c8394ap-4f,
+    -0x1.03a628p-37f, 0x1.9ecf2cp-7f, 0x1.ec8d76p-8f, -0x1.53f516p-4f,
     /* node 26 y */
-    -0x1.f044b2p-37f, -0x1.620528p-10f, 0x1.bcd8b4p-7f, -0x1.6f3924p-3f,
+    -0x1.fbb74ap-37f, 0x1.92674cp-9f, 0x1.7386d2p-7f, -0x1.232988p-3f,
     /* node 26 z */
-    0x1.1da10ep-35f, 0x1.6385d6p-5f, 0x1.d982e6p-5f, 0x1.868a2ep-2f,
+    0x1.086272p-35f, 0x1.0761ep-5f, 0x1.139beep-5f, 0x1.0e709cp-2f,
     /* node 27 x */
-    -0x1.14262cp-38f, 0x1.1405bap-5f, 0x1.b977bcp-6f, -0x1.3c8672p-4f,
+    -0x1.0d1964p-38f, 0x1.b18998p-6f, 0x1.35d514p-5f, -0x1.1bf28p-4f,
     /* node 27 y */
-    -0x1.36e1f2p-36f, 0x1.028de4p-6f, 0x1.4e9e22p-6f, -0x1.ec36cep-3f,
+    -0x1.4414dep-36f, 0x1.931e54p-6f, 0x1.9bf57p-7f, -0x1.a4ce68p-3f,
     /* node 27 z */
-    0x1.75c208p-35f, 0x1.31c24cp-5f, 0x1.537becp-4f, 0x1.16afe2p-1f,
+    0x1.5e5446p-35f, 0x1.317f42p-5f, 0x1.0f1168p-4f, 0x1.92c3c4p-2f,
     /* node 28 x */
-    0x1.499ce4p-40f, 0x1.0de284p-4f, 0x1.eb6afep-39f, -0x1.8d821ap-40f,
+    0x1.2337cep-40f, 0x1.598298p-5f, 0x1.b2167ap-39f, -0x1.5f20a2p-40f,
     /* node 28 y */
-    -0x1.458fp-36f, -0x1.2b1168p-34f, 0x1.75cbb6p-6f, -0x1.107ceep-2f,
+    -0x1.567a8ep-36f, -0x1.1cdfeap-34f, 0x1.27201ap-5f, -0x1.f5542p-3f,
     /* node 28 z */
-    0x1.89495ap-35f, 0x1.7a3296p-33f, 0x1.85aa7cp-4f, 0x1.36e0c6p-1f,
+    0x1.751c9ep-35f, 0x1.45f9c8p-33f, 0x1.46955ap-4f, 0x1.ff5adcp-2f,
     /* node 29 x */
-    0x1.8a27cap-38f, 0x1.1405bap-5f, -0x1.b977bcp-6f, 0x1.3c8672p-4f,
+    0x1.765188p-38f, 0x1.b18998p-6f, -0x1.35d514p-5f, 0x1.1bf28p-4f,
     /* node 29 y */
-    -0x1.20f9a8p-36f, -0x1.028de4p-6f, 0x1.4e9e22p-6f, -0x1.ec36cep-3f,
+    -0x1.2d8d4ap-36f, -0x1.931e54p-6f, 0x1.9bf57p-7f, -0x1.a4ce68p-3f,
     /* node 29 z */
-    0x1.574148p-35f, -0x1.31c24cp-5f, 0x1.537becp-4f, 0x1.16afe2p-1f,
+    0x1.408bcep-35f, -0x1.317f42p-5f, 0x1.0f1168p-4f, 0x1.92c3c4p-2f,
     /* node 30 x */
-    0x1.13977cp-37f, 0x1.24dca6p-7f, -0x1.36296ep-8f, 0x1.c8394ap-4f,
+    0x1.085a56p-37f, 0x1.9ecf2cp-7f, -0x1.ec8d76p-8f, 0x1.53f516p-4f,
     /* node 30 y */
-    -0x1.ae9a68p-37f, 0x1.620526p-10f, 0x1.bcd8b4p-7f, -0x1.6f3924p-3f,
+    -0x1.b9846ep-37f, -0x1.92674cp-9f, 0x1.7386d2p-7f, -0x1.232988p-3f,
     /* node 30 z */
-    0x1.e3778ap-36f, -0x1.6385d6p-5f, 0x1.d982e6p-5f, 0x1.868a2ep-2f,
+    0x1.bb4b86p-36f, -0x1.0761ep-5f, 0x1.139beep-5f, 0x1.0e709cp-2f,
     /* node 31 x */
-    0x1.08ff88p-37f, 0x1.daf27ep-8f, -0x1.02f6dep-6f, 0x1.a8a2fp-4f,
+    0x1.ffd17ap-38f, 0x1.c7681ep-9f, -0x1.94abd8p-6f, 0x1.395d18p-4f,
     /* node 31 y */
-    -0x1.018eeap-37f, -0x1.02f6dep-6f, 0x1.daf27ep-8f, -0x1.a8a2fp-4f,
+    -0x1.f36faap-38f, -0x1.94abd8p-6f, 0x1.c7681ep-9f, -0x1.395d18p-4f,
     /* node 31 z */
-    0x1.02f4eep-36f, -0x1.a7faf8p-6f, 0x1.a7faf8p-6f, 0x1.96b4bcp-3f,
+    0x1.942ac8p-37f, -0x1.c19aa8p-7f, 0x1.c19aa8p-7f, 0x1.c5b7acp-4f,
     /* node 32 x */
-    0x1.61d962p-39f, -0x1.cad9b8p-7f, 0x1.5f3f32p-8f, 0x1.1c9f78p-5f,
+    0x1.93ede2p-40f, -0x1.c3bc2p-12f, -0x1.0ded18p-10f, 0x1.c2b38p-7f,
     /* node 32 y */
-    -0x1.f5335ap-39f, -0x1.536756p-9f, 0x1.004b1p-12f, -0x1.894b54p-5f,
+    -0x1.7317d6p-39f, -0x1.131a96p-7f, 0x1.1d3064p-11f, -0x1.a1eca2p-6f,
     /* node 32 z */
-    0x1.701d7ap-38f, -0x1.e2c2p-8f, 0x1.2484fcp-8f, 0x1.15cc5p-4f,
+    0x1.5a76acp-39f, -0x1.c3256ep-11f, -0x1.58ea7ep-8f, 0x1.33c228p-6f,
     /* node 33 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 33 y */
@@ -352,59 +352,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 34 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 35 x */
-    -0x1.b95fcap-38f, 0x1.0071c4p-8f, 0x1.38fef2p-9f, -0x1.1b64fep-4f,
+    -0x1.d0aefap-39f, -0x1.31bacep-9f, -0x1.0437c4p-10f, -0x1.e7800cp-6f,
     /* node 35 y */
-    -0x1.45e5ecp-38f, 0x1.7e4178p-8f, 0x1.ac74ccp-9f, -0x1.a0c802p-5f,
+    -0x1.d5d378p-39f, 0x1.d432aap-9f, -0x1.70397p-9f, -0x1.01973ep-5f,
     /* node 35 z */
-    0x1.f0312ep-37f, 0x1.695fdep-6f, 0x1.5394e2p-7f, 0x1.2479aep-3f,
+    0x1.4dffccp-37f, 0x1.226142p-7f, 0x1.e035e6p-8f, 0x1.17f06ep-4f,
     /* node 36 x */
-    -0x1.ebfb08p-37f, 0x1.bcd8b4p-7f, -0x1.620526p-10f, -0x1.6f3924p-3f,
+    -0x1.f789d6p-37f, 0x1.7386d2p-7f, 0x1.92674cp-9f, -0x1.232988p-3f,
     /* node 36 y */
-    -0x1.30564p-37f, 0x1.36296ep-8f, 0x1.24dca6p-7f, -0x1.c8394ap-4f,
+    -0x1.23164cp-37f, 0x1.ec8d76p-8f, 0x1.9ecf2cp-7f, -0x1.53f516p-4f,
     /* node 36 z */
-    0x1.270862p-35f, 0x1.d982e6p-5f, 0x1.6385d6p-5f, 0x1.868a2ep-2f,
+    0x1.0fadfcp-35f, 0x1.139beep-5f, 0x1.0761ep-5f, 0x1.0e709cp-2f,
     /* node 37 x */
-    -0x1.aa946ap-37f, 0x1.2f9dfap-4f, 0x1.109556p-6f, -0x1.7e2d4p-3f,
+    -0x1.b04ef2p-37f, 0x1.b100e8p-5f, -0x1.e7b49cp-9f, -0x1.3e78e6p-3f,
     /* node 37 y */
-    -0x1.d642acp-37f, 0x1.109556p-6f, 0x1.2f9dfap-4f, -0x1.7e2d4p-3f,
+    -0x1.d8cc3ep-37f, -0x1.e7b49cp-9f, 0x1.b100e8p-5f, -0x1.3e78e6p-3f,
     /* node 37 z */
-    0x1.e9fc98p-35f, 0x1.581f4ep-4f, 0x1.581f4ep-4f, 0x1.684504p-1f,
+    0x1.f88e3p-35f, 0x1.29c8a8p-4f, 0x1.29c8a8p-4f, 0x1.204046p-1f,
     /* node 38 x */
-    -0x1.b2d848p-38f, 0x1.983c8cp-4f, -0x1.c36a6ap-6f, -0x1.08c978p-3f,
+    -0x1.c260d6p-38f, 0x1.273bcep-4f, 0x1.ac97c4p-9f, -0x1.f5d20cp-4f,
     /* node 38 y */
-    -0x1.23ce5ep-36f, -0x1.991ea2p-6f, 0x1.dd24b4p-5f, -0x1.233bc2p-2f,
+    -0x1.2b5fdcp-36f, -0x1.40a8ccp-10f, 0x1.ec2d5p-5f, -0x1.b5b54cp-3f,
     /* node 38 z */
-    0x1.3b4754p-34f, 0x1.1cdd22p-4f, 0x1.3dc44cp-3f, 0x1.ff57aap-1f,
+    0x1.4841ecp-34f, 0x1.281276p-4f, 0x1.b46362p-4f, 0x1.a66d3ap-1f,
     /* node 39 x */
-    0x1.01afe4p-39f, 0x1.8d673ap-5f, 0x1.802c22p-38f, -0x1.36dc76p-39f,
+    0x1.d42f44p-40f, 0x1.ff6968p-4f, 0x1.5d050ep-38f, -0x1.1a586cp-39f,
     /* node 39 y */
-    -0x1.3103cap-36f, -0x1.022f34p-34f, 0x1.de18c8p-3f, -0x1.5f2298p-2f,
+    -0x1.3be92cp-36f, -0x1.e41496p-35f, 0x1.202b54p-2f, -0x1.2db9dep-2f,
     /* node 39 z */
-    0x1.4ae7p-34f, 0x1.34338p-32f, 0x1.a2c3b2p-3f, 0x1.1ef44cp+0f,
+    0x1.5c5446p-34f, 0x1.265a1p-32f, 0x1.63b222p-3f, 0x1.0be158p+0f,
     /* node 40 x */
-    0x1.36ddd8p-37f, 0x1.983c8cp-4f, 0x1.c36a6ap-6f, 0x1.08c978p-3f,
+    0x1.366982p-37f, 0x1.273bcep-4f, -0x1.ac97c4p-9f, 0x1.f5d20cp-4f,
     /* node 40 y */
-    -0x1.109242p-36f, 0x1.991ea2p-6f, 0x1.dd24b4p-5f, -0x1.233bc2p-2f,
+    -0x1.184fd6p-36f, 0x1.40a8cap-10f, 0x1.ec2d5p-5f, -0x1.b5b54cp-3f,
     /* node 40 z */
-    0x1.2320eep-34f, -0x1.1cdd22p-4f, 0x1.3dc44cp-3f, 0x1.ff57aap-1f,
+    0x1.2f17d6p-34f, -0x1.281276p-4f, 0x1.b46362p-4f, 0x1.a66d3ap-1f,
     /* node 41 x */
-    0x1.b8748cp-37f, 0x1.2f9dfap-4f, -0x1.109556p-6f, 0x1.7e2d4p-3f,
+    0x1.baa06p-37f, 0x1.b100e8p-5f, 0x1.e7b49cp-9f, 0x1.3e78e6p-3f,
     /* node 41 y */
-    -0x1.9c40b8p-37f, -0x1.109556p-6f, 0x1.2f9dfap-4f, -0x1.7e2d4p-3f,
+    -0x1.a07b12p-37f, 0x1.e7b49cp-9f, 0x1.b100e8p-5f, -0x1.3e78e6p-3f,
     /* node 41 z */
-    0x1.a39a6p-35f, -0x1.581f4ep-4f, 0x1.581f4ep-4f, 0x1.684504p-1f,
+    0x1.af9842p-35f, -0x1.29c8a8p-4f, 0x1.29c8a8p-4f, 0x1.204046p-1f,
     /* node 42 x */
-    0x1.b16094p-37f, 0x1.bcd8b4p-7f, 0x1.620526p-10f, 0x1.6f3924p-3f,
+    0x1.bc35cp-37f, 0x1.7386d2p-7f, -0x1.92674cp-9f, 0x1.232988p-3f,
     /* node 42 y */
-    -0x1.f8f3a8p-38f, -0x1.36296ep-8f, 0x1.24dca6p-7f, -0x1.c8394ap-4f,
+    -0x1.e81b2ap-38f, -0x1.ec8d76p-8f, 0x1.9ecf2cp-7f, -0x1.53f516p-4f,
     /* node 42 z */
-    0x1.d751e2p-36f, -0x1.d982e6p-5f, 0x1.6385d6p-5f, 0x1.868a2ep-2f,
+    0x1.b1e04ap-36f, -0x1.139beep-5f, 0x1.0761ep-5f, 0x1.0e709cp-2f,
     /* node 43 x */
-    0x1.5dadf8p-38f, 0x1.0071c4p-8f, -0x1.38fef2p-9f, 0x1.1b64fep-4f,
+    0x1.7db156p-39f, -0x1.31bacep-9f, 0x1.0437c4p-10f, 0x1.e7800cp-6f,
     /* node 43 y */
-    -0x1.02defp-38f, -0x1.7e4178p-8f, 0x1.ac74ccp-9f, -0x1.a0c802p-5f,
+    -0x1.7d851ep-39f, -0x1.d432aap-9f, -0x1.70397p-9f, -0x1.01973ep-5f,
     /* node 43 z */
-    0x1.725abap-37f, -0x1.695fdep-6f, 0x1.5394e2p-7f, 0x1.2479aep-3f,
+    0x1.f28cdcp-38f, -0x1.226142p-7f, 0x1.e035e6p-8f, 0x1.17f06ep-4f,
     /* node 44 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 44 y */
@@ -418,59 +418,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 45 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 46 x */
-    -0x1.2fcd1p-37f, -0x1.35a69p-5f, -0x1.f99338p-9f, -0x1.958966p-4f,
+    -0x1.3dc97ep-38f, -0x1.02bf92p-8f, -0x1.9c77fap-11f, -0x1.5886bap-5f,
     /* node 46 y */
-    -0x1.a2a022p-39f, -0x1.c8c63cp-9f, 0x1.7df0dcp-9f, -0x1.0d369p-5f,
+    -0x1.296e36p-39f, 0x1.e9b63cp-8f, 0x1.276c4ap-8f, -0x1.8c83dap-6f,
     /* node 46 z */
-    0x1.5d318cp-36f, 0x1.37b4cp-5f, 0x1.040178p-7f, 0x1.ac3924p-3f,
+    0x1.e4b4fp-37f, 0x1.27eddep-6f, 0x1.d6253ep-8f, 0x1.d7493cp-4f,
     /* node 47 x */
-    -0x1.3fbca8p-36f, 0x1.4e9e22p-6f, 0x1.028de4p-6f, -0x1.ec36cep-3f,
+    -0x1.4d3a46p-36f, 0x1.9bf57p-7f, 0x1.931e54p-6f, -0x1.a4ce68p-3f,
     /* node 47 y */
-    -0x1.80f92p-38f, 0x1.b977bcp-6f, 0x1.1405bap-5f, -0x1.3c8672p-4f,
+    -0x1.6f5bd8p-38f, 0x1.35d514p-5f, 0x1.b18998p-6f, -0x1.1bf28p-4f,
     /* node 47 z */
-    0x1.922058p-35f, 0x1.537becp-4f, 0x1.31c24cp-5f, 0x1.16afe2p-1f,
+    0x1.77d1b8p-35f, 0x1.0f1168p-4f, 0x1.317f42p-5f, 0x1.92c3c4p-2f,
     /* node 48 x */
-    -0x1.1247fep-36f, 0x1.dd24b4p-5f, -0x1.991ea2p-6f, -0x1.233bc2p-2f,
+    -0x1.1b6a84p-36f, 0x1.ec2d5p-5f, -0x1.40a8cap-10f, -0x1.b5b54cp-3f,
     /* node 48 y */
-    -0x1.26ddf6p-37f, -0x1.c36a6ap-6f, 0x1.983c8cp-4f, -0x1.08c978p-3f,
+    -0x1.298062p-37f, 0x1.ac97c4p-9f, 0x1.273bcep-4f, -0x1.f5d20cp-4f,
     /* node 48 z */
-    0x1.481616p-34f, 0x1.3dc44cp-3f, 0x1.1cdd22p-4f, 0x1.ff57aap-1f,
+    0x1.55a3a2p-34f, 0x1.b46362p-4f, 0x1.281276p-4f, 0x1.a66d3ap-1f,
     /* node 49 x */
-    -0x1.15f70ep-37f, 0x1.41ae06p-3f, 0x1.d0ad32p-4f, -0x1.2c6756p-3f,
+    -0x1.27e24ep-37f, 0x1.88ef0cp-4f, 0x1.ed0376p-4f, -0x1.ac0b1ep-3f,
     /* node 49 y */
-    -0x1.6c03d2p-37f, 0x1.d0ad32p-4f, 0x1.41ae06p-3f, -0x1.2c6756p-3f,
+    -0x1.78615ep-37f, 0x1.ed0376p-4f, 0x1.88ef0cp-4f, -0x1.ac0b1ep-3f,
     /* node 49 z */
-    0x1.a2a6f8p-34f, 0x1.2427d4p-4f, 0x1.2427d4p-4f, 0x1.75a64ap+0f,
+    0x1.ba0b4ep-34f, 0x1.28e4cep-3f, 0x1.28e4cep-3f, 0x1.2f5fc4p+0f,
     /* node 50 x */
-    0x1.46947ep-39f, 0x1.d0dbfep-3f, 0x1.e6d8f2p-38f, -0x1.89deaap-39f,
+    0x1.2c4c8p-39f, 0x1.92af16p-3f, 0x1.bfb318p-38f, -0x1.6a213p-39f,
     /* node 50 y */
-    -0x1.7c66acp-37f, -0x1.0c44d4p-35f, 0x1.587796p-3f, -0x1.41b3p-3f,
+    -0x1.8d79fep-37f, -0x1.fdcf2ep-36f, 0x1.a2bb0cp-3f, -0x1.6786a8p-3f,
     /* node 50 z */
-    0x1.b6dfccp-34f, 0x1.8a14c6p-32f, 0x1.36beap-4f, 0x1.ad7a5ep+0f,
+    0x1.d4aebp-34f, 0x1.7ca0d4p-32f, 0x1.a545c2p-4f, 0x1.97ae0cp+0f,
     /* node 51 x */
-    0x1.8d2446p-37f, 0x1.41ae06p-3f, -0x1.d0ad32p-4f, 0x1.2c6756p-3f,
+    0x1.95822ap-37f, 0x1.88ef0cp-4f, -0x1.ed0376p-4f, 0x1.ac0b1ep-3f,
     /* node 51 y */
-    -0x1.55927p-37f, -0x1.d0ad32p-4f, 0x1.41ae06p-3f, -0x1.2c6756p-3f,
+    -0x1.618742p-37f, -0x1.ed0376p-4f, 0x1.88ef0cp-4f, -0x1.ac0b1ep-3f,
     /* node 51 z */
-    0x1.83d37ap-34f, -0x1.2427d4p-4f, 0x1.2427d4p-4f, 0x1.75a64ap+0f,
+    0x1.999a84p-34f, -0x1.28e4cep-3f, 0x1.28e4cep-3f, 0x1.2f5fc4p+0f,
     /* node 52 x */
-    0x1.1be40ap-36f, 0x1.dd24b4p-5f, 0x1.991ea2p-6f, 0x1.233bc2p-2f,
+    0x1.229db6p-36f, 0x1.ec2d5p-5f, 0x1.40a8cap-10f, 0x1.b5b54cp-3f,
     /* node 52 y */
-    -0x1.04dcd2p-37f, 0x1.c36a6ap-6f, 0x1.983c8cp-4f, -0x1.08c978p-3f,
+    -0x1.07b8bap-37f, -0x1.ac97c4p-9f, 0x1.273bcep-4f, -0x1.f5d20cp-4f,
     /* node 52 z */
-    0x1.1adbbep-34f, -0x1.3dc44cp-3f, 0x1.1cdd22p-4f, 0x1.ff57aap-1f,
+    0x1.267352p-34f, -0x1.b46362p-4f, 0x1.281276p-4f, 0x1.a66d3ap-1f,
     /* node 53 x */
-    0x1.1b41c4p-36f, 0x1.4e9e22p-6f, -0x1.028de4p-6f, 0x1.ec36cep-3f,
+    0x1.27a4b6p-36f, 0x1.9bf57p-7f, -0x1.931e54p-6f, 0x1.a4ce68p-3f,
     /* node 53 y */
-    -0x1.43e0d2p-38f, -0x1.b977bcp-6f, 0x1.1405bap-5f, -0x1.3c8672p-4f,
+    -0x1.36dc1cp-38f, -0x1.35d514p-5f, 0x1.b18998p-6f, -0x1.1bf28p-4f,
     /* node 53 z */
-    0x1.44ef9p-35f, -0x1.537becp-4f, 0x1.31c24cp-5f, 0x1.16afe2p-1f,
+    0x1.301634p-35f, -0x1.0f1168p-4f, 0x1.317f42p-5f, 0x1.92c3c4p-2f,
     /* node 54 x */
-    0x1.e74be4p-38f, -0x1.35a69p-5f, 0x1.f99338p-9f, 0x1.958966p-4f,
+    0x1.077ea2p-38f, -0x1.02bf92p-8f, 0x1.9c77fap-11f, 0x1.5886bap-5f,
     /* node 54 y */
-    -0x1.52c17p-39f, 0x1.c8c63cp-9f, 0x1.7df0dcp-9f, -0x1.0d369p-5f,
+    -0x1.e8c3f2p-40f, -0x1.e9b63cp-8f, 0x1.276c4ap-8f, -0x1.8c83dap-6f,
     /* node 54 z */
-    0x1.09e94ep-36f, -0x1.37b4cp-5f, 0x1.040178p-7f, 0x1.ac3924p-3f,
+    0x1.72cfcep-37f, -0x1.27eddcp-6f, 0x1.d6253ep-8f, 0x1.d7493cp-4f,
     /* node 55 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 55 y */
@@ -484,59 +484,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 56 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 57 x */
-    -0x1.505fecp-37f, 0x1.77778ep-7f, 0x1.b9e5a8p-37f, -0x1.c785e8p-4f,
+    -0x1.619344p-38f, -0x1.8bcee4p-11f, 0x1.9b6af4p-38f, -0x1.c2d49p-5f,
     /* node 57 y */
-    -0x1.2d6cccp-43f, 0x1.04f212p-39f, -0x1.3e3b0ap-7f, 0x1.61f094p-40f,
+    -0x1.9dddc2p-44f, 0x1.668ebep-40f, -0x1.224046p-7f, 0x1.e63ec6p-41f,
     /* node 57 z */
-    0x1.84e27ap-36f, 0x1.7b6358p-5f, -0x1.da946ep-36f, 0x1.dfae9ep-3f,
+    0x1.13e756p-36f, 0x1.d46ddap-6f, -0x1.1b106cp-36f, 0x1.2e2b2ep-3f,
     /* node 58 x */
-    -0x1.5d5488p-36f, 0x1.75cbb6p-6f, 0x1.076646p-35f, -0x1.107ceep-2f,
+    -0x1.6f17b8p-36f, 0x1.27201ap-5f, 0x1.d9dc1p-36f, -0x1.f5542p-3f,
     /* node 58 y */
-    -0x1.1bca74p-42f, 0x1.eb6a8cp-39f, 0x1.0de284p-4f, 0x1.4d2ad8p-39f,
+    -0x1.f566ecp-43f, 0x1.b21a84p-39f, 0x1.598298p-5f, 0x1.265614p-39f,
     /* node 58 z */
-    0x1.bc135ep-35f, 0x1.85aa7cp-4f, -0x1.26965p-34f, 0x1.36e0c6p-1f,
+    0x1.a4b8e6p-35f, 0x1.46955cp-4f, -0x1.d6e46ap-35f, 0x1.ff5adcp-2f,
     /* node 59 x */
-    -0x1.2a8e54p-36f, 0x1.de18c8p-3f, 0x1.1580c4p-35f, -0x1.5f2298p-2f,
+    -0x1.3702d8p-36f, 0x1.202b54p-2f, 0x1.f14f5ap-36f, -0x1.2db9dep-2f,
     /* node 59 y */
-    -0x1.bb86acp-42f, 0x1.8021ccp-38f, 0x1.8d673ap-5f, 0x1.04798ap-38f,
+    -0x1.9345dap-42f, 0x1.5d0634p-38f, 0x1.ff6968p-4f, 0x1.d94768p-39f,
     /* node 59 z */
-    0x1.689364p-34f, 0x1.a2c3b2p-3f, -0x1.05d3b8p-33f, 0x1.1ef44cp+0f,
+    0x1.7b803ep-34f, 0x1.63b222p-3f, -0x1.d493a6p-34f, 0x1.0be158p+0f,
     /* node 60 x */
-    -0x1.2e39a4p-37f, 0x1.587796p-3f, 0x1.a51658p-36f, -0x1.41b3p-3f,
+    -0x1.453ccap-37f, 0x1.a2bb0cp-3f, 0x1.80e3bep-36f, -0x1.6786a8p-3f,
     /* node 60 y */
-    -0x1.1920e2p-41f, 0x1.e6d6b4p-38f, 0x1.d0dbfep-3f, 0x1.4a1824p-38f,
+    -0x1.02986ep-41f, 0x1.bfb36p-38f, 0x1.92af16p-3f, 0x1.2f8c3cp-38f,
     /* node 60 z */
-    0x1.cb1038p-34f, 0x1.36beap-4f, -0x1.6fc25ep-33f, 0x1.ad7a5ep+0f,
+    0x1.ea1666p-34f, 0x1.a545c2p-4f, -0x1.51a192p-33f, 0x1.97ae0cp+0f,
     /* node 61 x */
-    0x1.5fd4fp-39f, 0x1.0703a2p+1f, 0x1.0640cp-37f, -0x1.a857bp-39f,
+    0x1.4555e2p-39f, 0x1.b7f8eep+0f, 0x1.e5025ep-38f, -0x1.88438ap-39f,
     /* node 61 y */
-    -0x1.2ef1fp-41f, 0x1.063d16p-37f, 0x1.0703a2p+1f, 0x1.639e9p-38f,
+    -0x1.1821fap-41f, 0x1.e5016p-38f, 0x1.b7f8eep+0f, 0x1.48e678p-38f,
     /* node 61 z */
-    0x1.e1289p-34f, 0x1.9f172ep-32f, -0x1.aadd7cp-33f, 0x1.0442acp+1f,
+    0x1.03c1bap-33f, 0x1.941704p-32f, -0x1.901d72p-33f, 0x1.3fc78ap+1f,
     /* node 62 x */
-    0x1.aee072p-37f, 0x1.587796p-3f, -0x1.ca944cp-37f, 0x1.41b3p-3f,
+    0x1.bc1ee8p-37f, 0x1.a2bb0cp-3f, -0x1.9f4eacp-37f, 0x1.6786a8p-3f,
     /* node 62 y */
-    -0x1.19362ap-41f, 0x1.e6dceap-38f, 0x1.d0dbfep-3f, 0x1.4a198ap-38f,
+    -0x1.029cacp-41f, 0x1.bfb05cp-38f, 0x1.92af16p-3f, 0x1.2f8e02p-38f,
     /* node 62 z */
-    0x1.a9d66cp-34f, -0x1.36beap-4f, -0x1.a14aaap-33f, 0x1.ad7a5ep+0f,
+    0x1.c6dc52p-34f, -0x1.a545c2p-4f, -0x1.862508p-33f, 0x1.97ae0cp+0f,
     /* node 63 x */
-    0x1.352e98p-36f, 0x1.de18c8p-3f, -0x1.05aa16p-35f, 0x1.5f2298p-2f,
+    0x1.3f138cp-36f, 0x1.202b54p-2f, -0x1.d94098p-36f, 0x1.2db9dep-2f,
     /* node 63 y */
-    -0x1.bbbcbap-42f, 0x1.8025b2p-38f, 0x1.8d673ap-5f, 0x1.04772cp-38f,
+    -0x1.932538p-42f, 0x1.5d05b4p-38f, 0x1.ff6968p-4f, 0x1.d95076p-39f,
     /* node 63 z */
-    0x1.37bde6p-34f, -0x1.a2c3b2p-3f, -0x1.4ea0aep-33f, 0x1.1ef44cp+0f,
+    0x1.48338cp-34f, -0x1.63b222p-3f, -0x1.36c41ep-33f, 0x1.0be158p+0f,
     /* node 64 x */
-    0x1.3635a2p-36f, 0x1.75cbb6p-6f, -0x1.41b7eap-35f, 0x1.107ceep-2f,
+    0x1.469502p-36f, 0x1.27201ap-5f, -0x1.2952d8p-35f, 0x1.f5542p-3f,
     /* node 64 y */
-    -0x1.1bdd32p-42f, 0x1.eb66bcp-39f, 0x1.0de284p-4f, 0x1.4d2bfp-39f,
+    -0x1.f508b6p-43f, 0x1.b214e6p-39f, 0x1.598298p-5f, 0x1.2649f8p-39f,
     /* node 64 z */
-    0x1.687d2ep-35f, -0x1.85aa7cp-4f, -0x1.a331e2p-34f, 0x1.36e0c6p-1f,
+    0x1.565daap-35f, -0x1.46955ap-4f, -0x1.60436p-34f, 0x1.ff5adcp-2f,
     /* node 65 x */
-    0x1.0f3688p-37f, 0x1.77778ep-7f, -0x1.3e13cap-36f, 0x1.c785e8p-4f,
+    0x1.26ab8p-38f, -0x1.8bcee4p-11f, -0x1.258f12p-37f, 0x1.c2d49p-5f,
     /* node 65 y */
-    -0x1.2d74bcp-43f, 0x1.04f8fp-39f, -0x1.3e3b0ap-7f, 0x1.61d95p-40f,
+    -0x1.9df0a4p-44f, 0x1.66853ap-40f, -0x1.224046p-7f, 0x1.e63ce2p-41f,
     /* node 65 z */
-    0x1.2a4c46p-36f, -0x1.7b6358p-5f, -0x1.7458c6p-35f, 0x1.dfae9ep-3f,
+    0x1.aa4326p-37f, -0x1.d46ddap-6f, -0x1.d63962p-36f, 0x1.2e2b2ep-3f,
     /* node 66 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 66 y */
@@ -550,59 +550,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 67 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 68 x */
-    -0x1.351e4ep-37f, -0x1.35a69p-5f, 0x1.f99338p-9f, -0x1.958966p-4f,
+    -0x1.42e284p-38f, -0x1.02bf92p-8f, 0x1.9c77fap-11f, -0x1.5886bap-5f,
     /* node 68 y */
-    0x1.882d96p-39f, 0x1.c8c63cp-9f, 0x1.7df0dcp-9f, 0x1.0d369p-5f,
+    0x1.16fb12p-39f, -0x1.e9b63cp-8f, 0x1.276c4ap-8f, 0x1.8c83dap-6f,
     /* node 68 z */
-    0x1.634ddcp-36f, 0x1.37b4cp-5f, -0x1.040178p-7f, 0x1.ac3924p-3f,
+    0x1.ee5a02p-37f, 0x1.27eddep-6f, -0x1.d6253ep-8f, 0x1.d7493cp-4f,
     /* node 69 x */
-    -0x1.44730ep-36f, 0x1.4e9e22p-6f, -0x1.028de4p-6f, -0x1.ec36cep-3f,
+    -0x1.5214c8p-36f, 0x1.9bf57p-7f, -0x1.931e54p-6f, -0x1.a4ce68p-3f,
     /* node 69 y */
-    0x1.67928p-38f, -0x1.b977bcp-6f, 0x1.1405bap-5f, 0x1.3c8672p-4f,
+    0x1.58b5f8p-38f, -0x1.35d514p-5f, 0x1.b18998p-6f, 0x1.1bf28p-4f,
     /* node 69 z */
-    0x1.98b022p-35f, 0x1.537becp-4f, -0x1.31c24cp-5f, 0x1.16afe2p-1f,
+    0x1.7e3b1p-35f, 0x1.0f1168p-4f, -0x1.317f42p-5f, 0x1.92c3c4p-2f,
     /* node 70 x */
-    -0x1.166b4cp-36f, 0x1.dd24b4p-5f, 0x1.991ea2p-6f, -0x1.233bc2p-2f,
+    -0x1.1f8574p-36f, 0x1.ec2d5p-5f, 0x1.40a8cap-10f, -0x1.b5b54cp-3f,
     /* node 70 y */
-    0x1.12bf9p-37f, 0x1.c36a6ap-6f, 0x1.983c8cp-4f, 0x1.08c978p-3f,
+    0x1.17285p-37f, -0x1.ac97c4p-9f, 0x1.273bcep-4f, 0x1.f5d20cp-4f,
     /* node 70 z */
-    0x1.4d48b2p-34f, 0x1.3dc44cp-3f, -0x1.1cdd22p-4f, 0x1.ff57aap-1f,
+    0x1.5b0ee4p-34f, 0x1.b46362p-4f, -0x1.281276p-4f, 0x1.a66d3ap-1f,
     /* node 71 x */
-    -0x1.1accbap-37f, 0x1.41ae06p-3f, -0x1.d0ad32p-4f, -0x1.2c6756p-3f,
+    -0x1.2ccbecp-37f, 0x1.88ef0cp-4f, -0x1.ed0376p-4f, -0x1.ac0b1ep-3f,
     /* node 71 y */
-    0x1.525cdap-37f, -0x1.d0ad32p-4f, 0x1.41ae06p-3f, 0x1.2c6756p-3f,
+    0x1.60c828p-37f, -0x1.ed0376p-4f, 0x1.88ef0cp-4f, 0x1.ac0b1ep-3f,
     /* node 71 z */
-    0x1.a9498p-34f, 0x1.2427d4p-4f, -0x1.2427d4p-4f, 0x1.75a64ap+0f,
+    0x1.c10762p-34f, 0x1.28e4cep-3f, -0x1.28e4cep-3f, 0x1.2f5fc4p+0f,
     /* node 72 x */
-    0x1.468e48p-39f, 0x1.d0dbfep-3f, 0x1.e6d9a6p-38f, -0x1.89db88p-39f,
+    0x1.2c4b5ap-39f, 0x1.92af16p-3f, 0x1.bfad1ap-38f, -0x1.6a1f6p-39f,
     /* node 72 y */
-    0x1.60b46ap-37f, 0x1.6c29f6p-35f, 0x1.587796p-3f, 0x1.41b3p-3f,
+    0x1.73e282p-37f, 0x1.5785d6p-35f, 0x1.a2bb0cp-3f, 0x1.6786a8p-3f,
     /* node 72 z */
-    0x1.be0704p-34f, 0x1.7150cep-32f, -0x1.36beap-4f, 0x1.ad7a5ep+0f,
+    0x1.dc4356p-34f, 0x1.625f2ap-32f, -0x1.a545c2p-4f, 0x1.97ae0cp+0f,
     /* node 73 x */
-    0x1.91f8e8p-37f, 0x1.41ae06p-3f, 0x1.d0ad32p-4f, 0x1.2c6756p-3f,
+    0x1.9a6cf2p-37f, 0x1.88ef0cp-4f, 0x1.ed0376p-4f, 0x1.ac0b1ep-3f,
     /* node 73 y */
-    0x1.3bebbcp-37f, 0x1.d0ad32p-4f, 0x1.41ae06p-3f, 0x1.2c6756p-3f,
+    0x1.49ef14p-37f, 0x1.ed0376p-4f, 0x1.88ef0cp-4f, 0x1.ac0b1ep-3f,
     /* node 73 z */
-    0x1.8a7604p-34f, -0x1.2427d4p-4f, -0x1.2427d4p-4f, 0x1.75a64ap+0f,
+    0x1.a09682p-34f, -0x1.28e4cep-3f, -0x1.28e4cep-3f, 0x1.2f5fc4p+0f,
     /* node 74 x */
-    0x1.2007dap-36f, 0x1.dd24b4p-5f, -0x1.991ea2p-6f, 0x1.233bc2p-2f,
+    0x1.26b974p-36f, 0x1.ec2d5p-5f, -0x1.40a8cap-10f, 0x1.b5b54cp-3f,
     /* node 74 y */
-    0x1.e17d84p-38f, -0x1.c36a6ap-6f, 0x1.983c8cp-4f, 0x1.08c978p-3f,
+    0x1.eabf78p-38f, 0x1.ac97c4p-9f, 0x1.273bcep-4f, 0x1.f5d20cp-4f,
     /* node 74 z */
-    0x1.200e9ap-34f, -0x1.3dc44cp-3f, -0x1.1cdd22p-4f, 0x1.ff57aap-1f,
+    0x1.2bddd4p-34f, -0x1.b46362p-4f, -0x1.281276p-4f, 0x1.a66d3ap-1f,
     /* node 75 x */
-    0x1.1ff902p-36f, 0x1.4e9e22p-6f, 0x1.028de4p-6f, 0x1.ec36cep-3f,
+    0x1.2c7e64p-36f, 0x1.9bf57p-7f, 0x1.931e54p-6f, 0x1.a4ce68p-3f,
     /* node 75 y */
-    0x1.2a7c3cp-38f, 0x1.b977bcp-6f, 0x1.1405bap-5f, 0x1.3c8672p-4f,
+    0x1.2035dap-38f, 0x1.35d514p-5f, 0x1.b18998p-6f, 0x1.1bf28p-4f,
     /* node 75 z */
-    0x1.4b8122p-35f, -0x1.537becp-4f, -0x1.31c24cp-5f, 0x1.16afe2p-1f,
+    0x1.367da6p-35f, -0x1.0f1168p-4f, -0x1.317f42p-5f, 0x1.92c3c4p-2f,
     /* node 76 x */
-    0x1.f1ed5ap-38f, -0x1.35a69p-5f, -0x1.f99338p-9f, 0x1.958966p-4f,
+    0x1.0c9498p-38f, -0x1.02bf92p-8f, -0x1.9c77fap-11f, 0x1.5886bap-5f,
     /* node 76 y */
-    0x1.384cf6p-39f, -0x1.c8c63cp-9f, 0x1.7df0dcp-9f, 0x1.0d369p-5f,
+    0x1.c3db1p-40f, 0x1.e9b63cp-8f, 0x1.276c4ap-8f, 0x1.8c83dap-6f,
     /* node 76 z */
-    0x1.1003bp-36f, -0x1.37b4cp-5f, -0x1.040178p-7f, 0x1.ac3924p-3f,
+    0x1.7c74f8p-37f, -0x1.27eddcp-6f, -0x1.d6253ep-8f, 0x1.d7493cp-4f,
     /* node 77 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 77 y */
@@ -616,59 +616,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 78 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 79 x */
-    -0x1.c87fbap-38f, 0x1.0071c4p-8f, -0x1.38fef2p-9f, -0x1.1b64fep-4f,
+    -0x1.df4baep-39f, -0x1.31bacep-9f, 0x1.0437c4p-10f, -0x1.e7800cp-6f,
     /* node 79 y */
-    0x1.44d046p-38f, -0x1.7e4178p-8f, 0x1.ac74ccp-9f, 0x1.a0c802p-5f,
+    0x1.d5398cp-39f, -0x1.d432aap-9f, -0x1.70397p-9f, 0x1.01973ep-5f,
     /* node 79 z */
-    0x1.00b024p-36f, 0x1.695fdep-6f, -0x1.5394e2p-7f, 0x1.2479aep-3f,
+    0x1.5b98a2p-37f, 0x1.226142p-7f, -0x1.e035e8p-8f, 0x1.17f06ep-4f,
     /* node 80 x */
-    -0x1.fa1e4p-37f, 0x1.bcd8b4p-7f, 0x1.620526p-10f, -0x1.6f3924p-3f,
+    -0x1.02e4cep-36f, 0x1.7386d2p-7f, -0x1.92674cp-9f, -0x1.232988p-3f,
     /* node 80 y */
-    0x1.2ed208p-37f, -0x1.36296ep-8f, 0x1.24dca6p-7f, 0x1.c8394ap-4f,
+    0x1.2212fap-37f, -0x1.ec8d76p-8f, 0x1.9ecf2cp-7f, 0x1.53f516p-4f,
     /* node 80 z */
-    0x1.307c14p-35f, 0x1.d982e6p-5f, -0x1.6385d6p-5f, 0x1.868a2ep-2f,
+    0x1.18e138p-35f, 0x1.139beep-5f, -0x1.0761ep-5f, 0x1.0e709cp-2f,
     /* node 81 x */
-    -0x1.b7102ep-37f, 0x1.2f9dfap-4f, -0x1.109556p-6f, -0x1.7e2d4p-3f,
+    -0x1.bc6ef4p-37f, 0x1.b100e8p-5f, 0x1.e7b49cp-9f, -0x1.3e78e6p-3f,
     /* node 81 y */
-    0x1.d3445ap-37f, -0x1.109556p-6f, 0x1.2f9dfap-4f, 0x1.7e2d4p-3f,
+    0x1.d69582p-37f, 0x1.e7b49cp-9f, 0x1.b100e8p-5f, 0x1.3e78e6p-3f,
     /* node 81 z */
-    0x1.f922f8p-35f, 0x1.581f4ep-4f, -0x1.581f4ep-4f, 0x1.684504p-1f,
+    0x1.042164p-34f, 0x1.29c8a8p-4f, -0x1.29c8a8p-4f, 0x1.204046p-1f,
     /* node 82 x */
-    -0x1.c17bccp-38f, 0x1.983c8cp-4f, 0x1.c36a6ap-6f, -0x1.08c978p-3f,
+    -0x1.d0ed56p-38f, 0x1.273bcep-4f, -0x1.ac97c4p-9f, -0x1.f5d20cp-4f,
     /* node 82 y */
-    0x1.21bccap-36f, 0x1.991ea2p-6f, 0x1.dd24b4p-5f, 0x1.233bc2p-2f,
+    0x1.29d45p-36f, 0x1.40a8ccp-10f, 0x1.ec2d5p-5f, 0x1.b5b54cp-3f,
     /* node 82 z */
-    0x1.450316p-34f, 0x1.1cdd22p-4f, -0x1.3dc44cp-3f, 0x1.ff57aap-1f,
+    0x1.526a66p-34f, 0x1.281276p-4f, -0x1.b46362p-4f, 0x1.a66d3ap-1f,
     /* node 83 x */
-    0x1.01b14ep-39f, 0x1.8d673ap-5f, 0x1.802c98p-38f, -0x1.36cdb8p-39f,
+    0x1.d4397p-40f, 0x1.ff6968p-4f, 0x1.5d011cp-38f, -0x1.1a582p-39f,
     /* node 83 y */
-    0x1.2eb98cp-36f, 0x1.0a1b42p-34f, 0x1.de18c8p-3f, 0x1.5f2298p-2f,
+    0x1.3a2c78p-36f, 0x1.f01bf4p-35f, 0x1.202b54p-2f, 0x1.2db9dep-2f,
     /* node 83 z */
-    0x1.556a7ep-34f, 0x1.0fcd18p-32f, -0x1.a2c3b2p-3f, 0x1.1ef44cp+0f,
+    0x1.675f3ap-34f, 0x1.001cbcp-32f, -0x1.63b222p-3f, 0x1.0be158p+0f,
     /* node 84 x */
-    0x1.3e2fa6p-37f, 0x1.983c8cp-4f, -0x1.c36a6ap-6f, 0x1.08c978p-3f,
+    0x1.3daeb4p-37f, 0x1.273bcep-4f, 0x1.ac97c4p-9f, 0x1.f5d20cp-4f,
     /* node 84 y */
-    0x1.0e816ep-36f, -0x1.991ea2p-6f, 0x1.dd24b4p-5f, 0x1.233bc2p-2f,
+    0x1.16c3bp-36f, -0x1.40a8cap-10f, 0x1.ec2d5p-5f, 0x1.b5b54cp-3f,
     /* node 84 z */
-    0x1.2cdd5p-34f, -0x1.1cdd22p-4f, -0x1.3dc44cp-3f, 0x1.ff57aap-1f,
+    0x1.393fbap-34f, -0x1.281276p-4f, -0x1.b46362p-4f, 0x1.a66d3ap-1f,
     /* node 85 x */
-    0x1.c4f0a4p-37f, 0x1.2f9dfap-4f, 0x1.109556p-6f, 0x1.7e2d4p-3f,
+    0x1.c6befap-37f, 0x1.b100e8p-5f, -0x1.e7b49cp-9f, 0x1.3e78e6p-3f,
     /* node 85 y */
-    0x1.9943b2p-37f, 0x1.109556p-6f, 0x1.2f9dfap-4f, 0x1.7e2d4p-3f,
+    0x1.9e424ap-37f, -0x1.e7b49cp-9f, 0x1.b100e8p-5f, 0x1.3e78e6p-3f,
     /* node 85 z */
-    0x1.b2c014p-35f, -0x1.581f4ep-4f, -0x1.581f4ep-4f, 0x1.684504p-1f,
+    0x1.bf4d04p-35f, -0x1.29c8a8p-4f, -0x1.29c8a8p-4f, 0x1.204046p-1f,
     /* node 86 x */
-    0x1.bf8408p-37f, 0x1.bcd8b4p-7f, -0x1.620526p-10f, 0x1.6f3924p-3f,
+    0x1.ca758p-37f, 0x1.7386d2p-7f, 0x1.92674cp-9f, 0x1.232988p-3f,
     /* node 86 y */
-    0x1.f5ed34p-38f, 0x1.36296ep-8f, 0x1.24dca6p-7f, 0x1.c8394ap-4f,
+    0x1.e6112ep-38f, 0x1.ec8d76p-8f, 0x1.9ecf2cp-7f, 0x1.53f516p-4f,
     /* node 86 z */
-    0x1.ea359ep-36f, -0x1.d982e6p-5f, -0x1.6385d6p-5f, 0x1.868a2ep-2f,
+    0x1.c446ap-36f, -0x1.139beep-5f, -0x1.0761ep-5f, 0x1.0e709cp-2f,
     /* node 87 x */
-    0x1.6ccb8p-38f, 0x1.0071c4p-8f, 0x1.38fef2p-9f, 0x1.1b64fep-4f,
+    0x1.8c51e6p-39f, -0x1.31bacep-9f, -0x1.0437c4p-10f, 0x1.e7800cp-6f,
     /* node 87 y */
-    0x1.01cdp-38f, 0x1.7e4178p-8f, 0x1.ac74ccp-9f, 0x1.a0c802p-5f,
+    0x1.7cea2ap-39f, 0x1.d432aap-9f, -0x1.70397p-9f, 0x1.01973ep-5f,
     /* node 87 z */
-    0x1.838ba4p-37f, -0x1.695fdep-6f, -0x1.5394e2p-7f, 0x1.2479aep-3f,
+    0x1.06deb4p-37f, -0x1.226142p-7f, -0x1.e035e8p-8f, 0x1.17f06ep-4f,
     /* node 88 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 88 y */
@@ -682,59 +682,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 89 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 90 x */
-    -0x1.e0551ep-39f, -0x1.cad9b8p-7f, 0x1.5f3f32p-8f, -0x1.1c9f78p-5f,
+    -0x1.089028p-39f, -0x1.c3bc2p-12f, -0x1.0ded18p-10f, -0x1.c2b38p-7f,
     /* node 90 y */
-    0x1.4c8bcp-38f, -0x1.536756p-9f, 0x1.004b0ep-12f, 0x1.894b54p-5f,
+    0x1.e43774p-39f, -0x1.131a96p-7f, 0x1.1d3064p-11f, 0x1.a1eca2p-6f,
     /* node 90 z */
-    0x1.0ef14cp-37f, 0x1.e2c2p-8f, -0x1.2484fcp-8f, 0x1.15cc5p-4f,
+    0x1.14ed28p-38f, 0x1.c3257p-11f, 0x1.58ea7ep-8f, 0x1.33c228p-6f,
     /* node 91 x */
-    -0x1.3ca52p-37f, 0x1.daf27ep-8f, -0x1.02f6dep-6f, -0x1.a8a2fp-4f,
+    -0x1.31dce8p-37f, 0x1.c7681ep-9f, -0x1.94abd8p-6f, -0x1.395d18p-4f,
     /* node 91 y */
-    0x1.44170cp-37f, -0x1.02f6dep-6f, 0x1.daf27ep-8f, 0x1.a8a2fp-4f,
+    0x1.380f78p-37f, -0x1.94abd8p-6f, 0x1.c7681ep-9f, 0x1.395d18p-4f,
     /* node 91 z */
-    0x1.5ac58ep-36f, 0x1.a7faf8p-6f, -0x1.a7faf8p-6f, 0x1.96b4bcp-3f,
+    0x1.14bb0ep-36f, 0x1.c19aa8p-7f, -0x1.c19aa8p-7f, 0x1.c5b7acp-4f,
     /* node 92 x */
-    -0x1.17b4f8p-37f, 0x1.24dca6p-7f, -0x1.36296ep-8f, -0x1.c8394ap-4f,
+    -0x1.0dc492p-37f, 0x1.9ecf2cp-7f, -0x1.ec8d76p-8f, -0x1.53f516p-4f,
     /* node 92 y */
-    0x1.fce2e8p-37f, 0x1.620528p-10f, 0x1.bcd8b4p-7f, 0x1.6f3924p-3f,
+    0x1.043d8cp-36f, -0x1.92674cp-9f, 0x1.7386d2p-7f, 0x1.232988p-3f,
     /* node 92 z */
-    0x1.2a6862p-35f, 0x1.6385d6p-5f, -0x1.d982e6p-5f, 0x1.868a2ep-2f,
+    0x1.142a12p-35f, 0x1.0761ep-5f, -0x1.139beep-5f, 0x1.0e709cp-2f,
     /* node 93 x */
-    -0x1.214e4p-38f, 0x1.1405bap-5f, -0x1.b977bcp-6f, -0x1.3c8672p-4f,
+    -0x1.1944b4p-38f, 0x1.b18998p-6f, -0x1.35d514p-5f, -0x1.1bf28p-4f,
     /* node 93 y */
-    0x1.3ebb8p-36f, -0x1.028de4p-6f, 0x1.4e9e22p-6f, 0x1.ec36cep-3f,
+    0x1.4c2c32p-36f, -0x1.931e54p-6f, 0x1.9bf57p-7f, 0x1.a4ce68p-3f,
     /* node 93 z */
-    0x1.865fe6p-35f, 0x1.31c24cp-5f, -0x1.537becp-4f, 0x1.16afe2p-1f,
+    0x1.6dc3dap-35f, 0x1.317f42p-5f, -0x1.0f1168p-4f, 0x1.92c3c4p-2f,
     /* node 94 x */
-    0x1.499c7ep-40f, 0x1.0de284p-4f, 0x1.eb62eep-39f, -0x1.8d74ep-40f,
+    0x1.232ce6p-40f, 0x1.598298p-5f, 0x1.b21516p-39f, -0x1.5f225p-40f,
     /* node 94 y */
-    0x1.4dfaeep-36f, 0x1.0de8aap-34f, 0x1.75cbb6p-6f, 0x1.107ceep-2f,
+    0x1.5f32dcp-36f, 0x1.fd5b44p-35f, 0x1.27201ap-5f, 0x1.f5542p-3f,
     /* node 94 z */
-    0x1.9b47d4p-35f, 0x1.3be4b2p-33f, -0x1.85aa7cp-4f, 0x1.36e0c6p-1f,
+    0x1.85fa54p-35f, 0x1.0b915ap-33f, -0x1.46955cp-4f, 0x1.ff5adcp-2f,
     /* node 95 x */
-    0x1.974f2ep-38f, 0x1.1405bap-5f, 0x1.b977bcp-6f, 0x1.3c8672p-4f,
+    0x1.827a5ap-38f, 0x1.b18998p-6f, 0x1.35d514p-5f, 0x1.1bf28p-4f,
     /* node 95 y */
-    0x1.28d3ap-36f, 0x1.028de4p-6f, 0x1.4e9e22p-6f, 0x1.ec36cep-3f,
+    0x1.35a47ap-36f, 0x1.931e54p-6f, 0x1.9bf57p-7f, 0x1.a4ce68p-3f,
     /* node 95 z */
-    0x1.67de58p-35f, -0x1.31c24cp-5f, -0x1.537becp-4f, 0x1.16afe2p-1f,
+    0x1.4ffc3p-35f, -0x1.317f42p-5f, -0x1.0f1168p-4f, 0x1.92c3c4p-2f,
     /* node 96 x */
-    0x1.1ec0eap-37f, 0x1.24dca6p-7f, 0x1.36296ep-8f, 0x1.c8394ap-4f,
+    0x1.1279b4p-37f, 0x1.9ecf2cp-7f, 0x1.ec8d76p-8f, 0x1.53f516p-4f,
     /* node 96 y */
-    0x1.bb37e8p-37f, -0x1.620526p-10f, 0x1.bcd8b4p-7f, 0x1.6f3924p-3f,
+    0x1.c64a12p-37f, 0x1.92674cp-9f, 0x1.7386d2p-7f, 0x1.232988p-3f,
     /* node 96 z */
-    0x1.fd0942p-36f, -0x1.6385d6p-5f, -0x1.d982e6p-5f, 0x1.868a2ep-2f,
+    0x1.d2dc5ep-36f, -0x1.0761ep-5f, -0x1.139beep-5f, 0x1.0e709cp-2f,
     /* node 97 x */
-    0x1.158198p-37f, 0x1.daf27ep-8f, 0x1.02f6dep-6f, 0x1.a8a2fp-4f,
+    0x1.0b8d74p-37f, 0x1.c7681ep-9f, 0x1.94abd8p-6f, 0x1.395d18p-4f,
     /* node 97 y */
-    0x1.09fb3p-37f, 0x1.02f6dep-6f, 0x1.daf27ep-8f, 0x1.a8a2fp-4f,
+    0x1.01f696p-37f, 0x1.94abd8p-6f, 0x1.c7681ep-9f, 0x1.395d18p-4f,
     /* node 97 z */
-    0x1.128374p-36f, -0x1.a7faf8p-6f, -0x1.a7faf8p-6f, 0x1.96b4bcp-3f,
+    0x1.ae9de6p-37f, -0x1.c19aa8p-7f, -0x1.c19aa8p-7f, 0x1.c5b7acp-4f,
     /* node 98 x */
-    0x1.78e8c6p-39f, -0x1.cad9b8p-7f, -0x1.5f3f32p-8f, 0x1.1c9f78p-5f,
+    0x1.ab0d96p-40f, -0x1.c3bc2p-12f, 0x1.0ded18p-10f, 0x1.c2b38p-7f,
     /* node 98 y */
-    0x1.03c2cap-38f, 0x1.536756p-9f, 0x1.004b0ep-12f, 0x1.894b54p-5f,
+    0x1.81bbb6p-39f, 0x1.131a96p-7f, 0x1.1d3064p-11f, 0x1.a1eca2p-6f,
     /* node 98 z */
-    0x1.8b2226p-38f, -0x1.e2c2p-8f, -0x1.2484fcp-8f, 0x1.15cc5p-4f,
+    0x1.7e08aep-39f, -0x1.c3256ep-11f, 0x1.58ea7ep-8f, 0x1.33c228p-6f,
     /* node 99 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 99 y */
@@ -748,59 +748,59 @@ static const float tfit_block48_dyn_forward_coef[1485] = {
     /* node 100 z */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 101 x */
-    -0x1.ad27e8p-40f, 0x1.4da1acp-11f, -0x1.a84cd8p-11f, -0x1.a32e84p-7f,
+    -0x1.4b327ep-41f, -0x1.ec95c4p-12f, -0x1.453c68p-10f, -0x1.c6d1dp-9f,
     /* node 101 y */
-    0x1.b592a2p-40f, -0x1.a84cd8p-11f, 0x1.4da1acp-11f, 0x1.a32e84p-7f,
+    0x1.4e2876p-41f, -0x1.453c68p-10f, -0x1.ec95c4p-12f, 0x1.c6d1dp-9f,
     /* node 101 z */
-    0x1.5d19b2p-39f, -0x1.f5c02ep-10f, 0x1.f5c02ep-10f, 0x1.13ccb6p-6f,
+    0x1.023364p-42f, -0x1.22865cp-8f, 0x1.22865cp-8f, -0x1.d5e14ep-8f,
     /* node 102 x */
-    -0x1.40a8aap-38f, 0x1.004b0ep-12f, -0x1.536756p-9f, -0x1.894b54p-5f,
+    -0x1.d84592p-39f, 0x1.1d3064p-11f, -0x1.131a96p-7f, -0x1.a1eca2p-6f,
     /* node 102 y */
-    0x1.e1bba2p-39f, 0x1.5f3f32p-8f, -0x1.cad9b8p-7f, 0x1.1c9f78p-5f,
+    0x1.0995ep-39f, -0x1.0ded18p-10f, -0x1.c3bc2p-12f, 0x1.c2b38p-7f,
     /* node 102 z */
-    0x1.0acabcp-37f, 0x1.2484fcp-8f, -0x1.e2c2p-8f, 0x1.15cc5p-4f,
+    0x1.139838p-38f, -0x1.58ea7ep-8f, -0x1.c3257p-11f, 0x1.33c228p-6f,
     /* node 103 x */
-    -0x1.288fdap-38f, 0x1.ac74ccp-9f, -0x1.7e4178p-8f, -0x1.a0c802p-5f,
+    -0x1.b18304p-39f, -0x1.70397p-9f, -0x1.d432aap-9f, -0x1.01973ep-5f,
     /* node 103 y */
-    0x1.c01808p-38f, -0x1.38fef2p-9f, 0x1.0071c4p-8f, 0x1.1b64fep-4f,
+    0x1.d9629ap-39f, 0x1.0437c4p-10f, -0x1.31bacep-9f, 0x1.e7800cp-6f,
     /* node 103 z */
-    0x1.ef5e06p-37f, 0x1.5394e2p-7f, -0x1.695fdep-6f, 0x1.2479aep-3f,
+    0x1.53235p-37f, 0x1.e035e8p-8f, -0x1.226142p-7f, 0x1.17f06ep-4f,
     /* node 104 x */
-    -0x1.38a656p-39f, 0x1.7df0dcp-9f, 0x1.c8c63cp-9f, -0x1.0d369p-5f,
+    -0x1.c10cb2p-40f, 0x1.276c4ap-8f, -0x1.e9b63cp-8f, -0x1.8c83dap-6f,
     /* node 104 y */
-    0x1.2734acp-37f, 0x1.f99338p-9f, -0x1.35a69p-5f, 0x1.958966p-4f,
+    0x1.36dee8p-38f, 0x1.9c77fap-11f, -0x1.02bf92p-8f, 0x1.5886bap-5f,
     /* node 104 z */
-    0x1.4dc168p-36f, 0x1.040178p-7f, -0x1.37b4cp-5f, 0x1.ac3924p-3f,
+    0x1.d3417cp-37f, 0x1.d6253ep-8f, -0x1.27eddep-6f, 0x1.d7493cp-4f,
     /* node 105 x */
-    0x1.5e30f6p-41f, -0x1.3e3b0ap-7f, 0x1.04f7ecp-39f, -0x1.a64e12p-41f,
+    0x1.e10acp-42f, -0x1.224046p-7f, 0x1.667f1ap-40f, -0x1.222458p-41f,
     /* node 105 y */
-    0x1.36cep-37f, 0x1.db98cep-36f, 0x1.77778ep-7f, 0x1.c785e8p-4f,
+    0x1.4a773p-38f, 0x1.cc4bb8p-37f, -0x1.8bcee4p-11f, 0x1.c2d49p-5f,
     /* node 105 z */
-    0x1.6156ep-36f, 0x1.06a49cp-34f, -0x1.7b6358p-5f, 0x1.dfae9ep-3f,
+    0x1.f688d8p-37f, 0x1.4d96eap-35f, -0x1.d46ddap-6f, 0x1.2e2b2ep-3f,
     /* node 106 x */
-    0x1.b378c2p-39f, 0x1.7df0dcp-9f, -0x1.c8c63cp-9f, 0x1.0d369p-5f,
+    0x1.363e62p-39f, 0x1.276c4ap-8f, 0x1.e9b63cp-8f, 0x1.8c83dap-6f,
     /* node 106 y */
-    0x1.0e8066p-37f, -0x1.f99338p-9f, -0x1.35a69p-5f, 0x1.958966p-4f,
+    0x1.1f2bf8p-38f, -0x1.9c77fap-11f, -0x1.02bf92p-8f, 0x1.5886bap-5f,
     /* node 106 z */
-    0x1.31645ep-36f, -0x1.040178p-7f, -0x1.37b4cp-5f, 0x1.ac3924p-3f,
+    0x1.a667e2p-37f, -0x1.d6253ep-8f, -0x1.27eddep-6f, 0x1.d7493cp-4f,
     /* node 107 x */
-    0x1.2d8f3ep-38f, 0x1.ac74ccp-9f, 0x1.7e4178p-8f, 0x1.a0c802p-5f,
+    0x1.b43a9ep-39f, -0x1.70396ep-9f, 0x1.d432aap-9f, 0x1.01973ep-5f,
     /* node 107 y */
-    0x1.79d458p-38f, 0x1.38fef2p-9f, 0x1.0071c4p-8f, 0x1.1b64fep-4f,
+    0x1.9572d8p-39f, -0x1.0437c4p-10f, -0x1.31bacep-9f, 0x1.e7800cp-6f,
     /* node 107 z */
-    0x1.9f7adcp-37f, -0x1.5394e2p-7f, -0x1.695fdep-6f, 0x1.2479aep-3f,
+    0x1.13f7c6p-37f, -0x1.e035e6p-8f, -0x1.226142p-7f, 0x1.17f06ep-4f,
     /* node 108 x */
-    0x1.162d2cp-38f, 0x1.004b1p-12f, 0x1.536756p-9f, 0x1.894b54p-5f,
+    0x1.94399ep-39f, 0x1.1d3064p-11f, 0x1.131a96p-7f, 0x1.a1eca2p-6f,
     /* node 108 y */
-    0x1.76b2fap-39f, -0x1.5f3f32p-8f, -0x1.cad9b8p-7f, 0x1.1c9f78p-5f,
+    0x1.a7d8e6p-40f, 0x1.0ded18p-10f, -0x1.c3bc2p-12f, 0x1.c2b38p-7f,
     /* node 108 z */
-    0x1.97fb56p-38f, -0x1.2484fcp-8f, -0x1.e2c2p-8f, 0x1.15cc5p-4f,
+    0x1.822016p-39f, 0x1.58ea7ep-8f, -0x1.c3257p-11f, 0x1.33c228p-6f,
     /* node 109 x */
-    0x1.43b0acp-40f, 0x1.4da1acp-11f, 0x1.a84cd8p-11f, 0x1.a32e84p-7f,
+    0x1.f60a7p-42f, -0x1.ec95c4p-12f, 0x1.453c68p-10f, 0x1.c6d1dp-9f,
     /* node 109 y */
-    0x1.36a772p-40f, 0x1.a84cd8p-11f, 0x1.4da1acp-11f, 0x1.a32e84p-7f,
+    0x1.ed11e8p-42f, 0x1.453c68p-10f, -0x1.ec95c4p-12f, 0x1.c6d1dp-9f,
     /* node 109 z */
-    0x1.cdebf8p-40f, 0x1.f5c02ep-10f, 0x1.f5c02ep-10f, 0x1.13ccb6p-6f,
+    -0x1.5f02eap-44f, 0x1.22865cp-8f, 0x1.22865cp-8f, -0x1.d5e14ep-8f,
     /* node 110 x */
     -0x0p+0f, -0x0p+0f, 0x0p+0f, 0x0p+0f,
     /* node 110 y */
@@ -883,8 +883,8 @@ const tfit_model tfit_block48_dyn_forward = {
      0x3e8335a0u, 0xbe1283abu, 0x3d7e4c0du, 0x3eaef22bu, 0xbe435a39u, 0x3da98809u,
      0x3f5aaeb5u, 0xbef430c8u, 0x3e53ea0bu, 0xbc0385e1u, 0x3c4abad3u, 0xbc524702u,
      0x7fc00000u, 0x00000000u, 0x00000000u, 0x7042b648u, 0xf0a13b57u, 0xf132a595u,
-     0x4834171bu, 0x4c4a1835u},
-    0xc730a6cdu
+     0x30aec78bu, 0x4c4a1835u},
+    0xff4c3999u
 };
 
 static const uint32_t tfit_block48_dyn_contact_dims[1] = {
@@ -895,36 +895,36 @@ static const uint32_t tfit_block48_dyn_contact_nodes[1] = {
 };
 static const float tfit_block48_dyn_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    0x1.5fd402p-39f, -0x1.2ed522p-41f, 0x1.e1289p-34f,
+    0x1.4555e2p-39f, -0x1.1821fap-41f, 0x1.03c1bap-33f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.f25884p-2f, -0x1.f0e794p-40f, 0x1.9644eap-41f, -0x1.f0e11ap-40f,
-    0x1.f25884p-2f, -0x1.5478d4p-40f, -0x1.8d682ep-34f, 0x1.98ae1p-35f,
-    0x1.f79e5ep-2f,
+    0x1.29e8dcp-1f, -0x1.48678ep-39f, 0x1.6d6fcep-41f, -0x1.4866e8p-39f,
+    0x1.29e8dcp-1f, -0x1.3268c8p-40f, -0x1.78743ap-34f, 0x1.74c03ep-35f,
+    0x1.99e1ecp-2f,
     /* node 61 x force */
-    -0x1.cad554p-56f, 0x1p+0f, -0x1.62a9e6p-59f, -0x1.b50228p-59f,
+    -0x1.cf559p-58f, 0x1p+0f, 0x1.958336p-56f, -0x1.07a724p-55f,
     /* node 61 y force */
-    0x1.85f87cp-55f, -0x1.bc0e2ap-58f, 0x1p+0f, 0x1.ad0702p-54f,
+    -0x1.d8b114p-55f, -0x1.0d1b36p-54f, 0x1p+0f, -0x1.138e3cp-55f,
     /* node 61 z force */
-    0x1.5e26bap-55f, -0x1.aa360ep-56f, 0x1.367c04p-55f, 0x1p+0f,
+    -0x1.7af6aap-61f, 0x1.aa361p-58f, 0x1.11aee4p-55f, 0x1p+0f,
 };
 const tfit_model tfit_block48_dyn_contact = {
     4u, 4u, 1u, 1u, 24u,
     tfit_block48_dyn_contact_dims, tfit_block48_dyn_contact_coef, tfit_block48_dyn_contact_nodes,
     tfit_block48_dyn_contact_dims + 1u, tfit_block48_dyn_contact_coef + 24u, tfit_block48_dyn_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x3fd1a91bu, 0xbf6a1dc7u, 0x3ec90b5du, 0xbe91b444u, 0x3fbcd223u, 0xbf1ebe5cu,
-     0x3fc4860du, 0x3da02624u, 0x3f78b0a6u, 0xbf5479acu, 0xbe748632u, 0xbf17db70u,
-     0xbf97d9efu, 0xbf97d9efu, 0xbf9642edu, 0xc1170682u, 0xc15c3c87u, 0x413dc2eeu,
-     0xf13e9ef2u, 0xf18afd1du, 0x716f833bu, 0xc15e84b9u, 0x40ee23d4u, 0xc1507f6du,
-     0x6c88a0d9u, 0xa346b546u},
-    0x2b69ae47u
+    {0x3faf5c6bu, 0xbf43d0deu, 0x3ef70571u, 0xbe73bc36u, 0x3f9dee3au, 0xbf430bf5u,
+     0x3fa45f8bu, 0x3d85f306u, 0x3f98c810u, 0xbf31b71au, 0xbe4c8566u, 0xbf3a95deu,
+     0xbf7e04a7u, 0xbf7e04a7u, 0xbfb89fefu, 0xc0fca2fau, 0xc13834eau, 0x41692875u,
+     0xf11f6fa6u, 0xf1688065u, 0x719324b6u, 0xc13a1d8au, 0x40c72e68u, 0xc18016eeu,
+     0x0dbb2b5eu, 0xe4417c9eu},
+    0x19a9064bu
 };
 static const int32_t tfit_block48_dyn_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     0, 0, 0,
     /* W (row-major), then the projection's headroom H */
-    522553408, 0, 0, 0, 522553408, 0,
-    0, 0, 528082400,
+    624761728, 0, 0, 0, 624761728, 0,
+    0, 0, 429792960,
     5,
     /* node 61 x: shift, then 4 coefficients */
     33, 0, 1073741824, 0, 0,
@@ -937,7 +937,7 @@ const tfit_model_q31 tfit_block48_dyn_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_block48_dyn_contact_q31_coef, tfit_block48_dyn_contact_nodes,
     tfit_block48_dyn_contact_q31_coef + 28u, tfit_block48_dyn_contact_nodes + 1u,
-    0x83b81526u
+    0x0b586ae9u
 };
 
 #endif /* TFIT_BLOCK48_DYN_IMPLEMENTATION */
