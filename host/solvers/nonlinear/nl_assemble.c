@@ -817,7 +817,13 @@ static int cells_pass(pass *ps, double *fi, nl_fault *fault)
         return tf_fail(s->base.ctx, "out of memory for the cell matrices");
     }
     memset(fi, 0, n3 * sizeof *fi);
-    if (ps->tangent) {
+    if (ps->only) { /* the patch's cells add to A's columns only (nl_patch.c reads them) */
+        for (size_t j = 0; j < s->k.n; ++j) {
+            for (int q = s->k.p[j]; s->patch.dof[j] && q < s->k.p[j + 1]; ++q) {
+                s->k.x[q] = s->kbc ? s->kbc[q] : 0;
+            }
+        }
+    } else if (ps->tangent) {
         if (s->kbc) {
             memcpy(s->k.x, s->kbc, s->k.nnz * sizeof *s->k.x);
         } else {

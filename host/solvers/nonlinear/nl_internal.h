@@ -132,9 +132,10 @@ void nl_model_free(nl_solver *s);
 int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
                 double *r, double *fint, nl_fault *fault);
 
-/* The tangent on the patch's cells only (s->patch.cell) into s->k, at d
- * over dt (the cells' histories into s->hist_new); the rest of s->k is the
- * constant part.  Returns as nl_assemble. */
+/* The tangent on the patch's cells only (s->patch.cell) into s->k's
+ * columns of the patch's DOFs, at d over dt (the cells' histories into
+ * s->hist_new); the other columns keep what they held.  Returns as
+ * nl_assemble. */
 int nl_assemble_patch(nl_solver *s, const double *d, double dt, nl_fault *fault);
 
 /* The support's force (N) on the body from fixed region `region` in the
