@@ -415,6 +415,13 @@ static void the_patch_update_factorises_the_patched_matrix(void **state)
     free(x);
     free(y);
     close_run(r);
+    /* weak essential conditions (EFG): no patch, the strategy is BFGS */
+    const char *efg[] = {"geometry.grid=9,9,3", "contact.0.node=41", "material.law=neo-hookean",
+                         "solver.newton.tangent=patch", "solver.method=efg-galerkin"};
+    r = open_run(efg, 5);
+    s = (nl_solver *)r->sv;
+    assert_true(s->weak && !s->patch.on && s->patch.m == 0 && s->qmax > 0);
+    close_run(r);
 }
 
 static void inversion_and_divergence_are_named(void **state)
