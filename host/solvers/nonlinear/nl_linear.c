@@ -86,6 +86,14 @@ static int factor_indefinite(nl_solver *s)
 static int keeps_factor(const nl_solver *s)
 {
     tf_tangent_kind k = s->base.opts.newton.tangent;
+    if (k == TF_TANGENT_PATCH && s->patch.on) {
+        /* the patch tangent keeps its factor through any number of
+         * indefinite tangents: at 41 x 41 x 9 both bfgs and patch met two
+         * in a row in the 3 N case and spent over 10 CPU minutes in the
+         * LDL^T before they were stopped; a failed load step still drops
+         * the factor (nl_advance), and the retry factorises afresh */
+        return s->chol_ok && !s->use_ldl;
+    }
     return (k == TF_TANGENT_BFGS || k == TF_TANGENT_MODIFIED || k == TF_TANGENT_PATCH) &&
            s->chol_ok && !s->use_ldl && !s->indef_kept;
 }
@@ -112,6 +120,7 @@ static int factor_into_spare(nl_solver *s)
         tf_chol *c = s->chol;
         s->chol = s->spare;
         s->spare = c;
+        s->indef_kept = 0;
         nl_qn_reset(s);
         return nl_patch_base(s);
     }
