@@ -89,7 +89,7 @@ static int keeps_factor(const nl_solver *s)
     if (k == TF_TANGENT_PATCH && s->patch.on) {
         /* the patch tangent keeps its factor through any number of
          * indefinite tangents: at 41 x 41 x 9 both bfgs and patch met two
-         * in a row in the 3 N case and spent over 10 CPU minutes in the
+         * in a row in the 3 N case and spent 14.5 and 9 CPU minutes in the
          * LDL^T before they were stopped; a failed load step still drops
          * the factor (nl_advance), and the retry factorises afresh */
         return s->chol_ok && !s->use_ldl;

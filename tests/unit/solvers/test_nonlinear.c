@@ -333,7 +333,7 @@ static void an_indefinite_tangent_keeps_the_factor(void **state)
     free(x1);
     close_run(r);
     /* the patch tangent keeps its factor through indefinite tangents in a
-     * row: no LDL^T (at 41 x 41 x 9 it took over 10 CPU minutes) */
+     * row: no LDL^T (at 41 x 41 x 9 it took minutes of CPU time) */
     const char *patch[] = {SMALL_GRID, SMALL_NODE, "material.law=neo-hookean",
                            "solver.newton={tangent: patch, patch_radius: 10}"};
     r = open_run(patch, 4);
