@@ -210,7 +210,8 @@ static void announce(const nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
     static const char *tangents[] = {"full Newton", "modified Newton", "Newton-Krylov",
-                                    "quasi-Newton (BFGS)"};
+                                    "quasi-Newton (BFGS)",
+                                    "quasi-Newton (BFGS), the patch tangent where it applies"};
     tf_info(ctx,
             "solver: %s law, %s kinematics, %zu nodes, %zu cells x %u^3 Gauss points%s, %s, "
             "volumetric %s, BCs by %s, %s",
