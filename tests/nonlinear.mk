@@ -42,8 +42,8 @@ bench-nonlinear: $(T)/solver/bench_nonlinear
 NL_TANGENT_GRIDS ?= 21,21,5 41,41,9
 .PHONY: bench-nonlinear-tangents
 bench-nonlinear-tangents: $(T)/solver/bench_nonlinear
-	@echo "== nonlinear solver: full Newton, modified Newton, BFGS, Krylov on the 3 N neo-Hookean case =="
-	@for g in $(NL_TANGENT_GRIDS); do for t in full modified bfgs krylov; do \
+	@echo "== nonlinear solver: full Newton, modified Newton, BFGS, Krylov, patch on the 3 N neo-Hookean case =="
+	@for g in $(NL_TANGENT_GRIDS); do for t in full modified bfgs krylov patch; do \
 	  echo "-- $$g, tangent $$t"; \
 	  $(T)/solver/bench_nonlinear $$g 1 cases=2 solver.newton.tangent=$$t || exit 1; done; done
 

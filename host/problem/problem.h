@@ -222,12 +222,16 @@ typedef struct tf_colloc_settings {
  * Krylov method (CG, or GMRES for an unsymmetric tangent) on the current
  * tangent preconditioned by the last factorisation, refactorised when the
  * Krylov iterations exceed krylov_max; or quasi-Newton (limited-memory
- * BFGS) updates of the last factorisation, refactorised when they stall. */
+ * BFGS) updates of the last factorisation, refactorised when they stall;
+ * or BFGS whose factor is kept up to date near the contact sites (the
+ * patch tangent: the DOFs within patch_radius of a contact site ordered
+ * last, their block of the factor refreshed every iteration). */
 typedef enum tf_tangent_kind {
     TF_TANGENT_FULL,
     TF_TANGENT_MODIFIED,
     TF_TANGENT_KRYLOV,
     TF_TANGENT_BFGS,
+    TF_TANGENT_PATCH,
 } tf_tangent_kind;
 
 /* Newton-Raphson and load stepping (solvers/nonlinear/). */
@@ -239,6 +243,7 @@ typedef struct tf_newton_opts {
     unsigned max_cuts;   /* halvings of a load step before giving up */
     tf_tangent_kind tangent;
     unsigned krylov_max; /* Krylov iterations per solve before refactorising */
+    double patch_radius; /* mm: the patch tangent's DOFs, around each contact site */
 } tf_newton_opts;
 
 /* Which solver (by its registered name, solvers/solver.h) and how it

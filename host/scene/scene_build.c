@@ -566,7 +566,8 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .rcond_warn = 1e-12,
         .colloc = tf_colloc_settings_default(),
         .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
-                   .tangent = TF_TANGENT_BFGS, .krylov_max = 100},
+                   .tangent = TF_TANGENT_BFGS, .krylov_max = 100,
+                   .patch_radius = 4},
         .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
@@ -625,6 +626,7 @@ static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
     o->max_cuts = d->cuts ? *d->cuts : o->max_cuts;
     o->tangent = d->tangent ? (tf_tangent_kind)*d->tangent : o->tangent;
     o->krylov_max = d->krylov_iterations ? *d->krylov_iterations : o->krylov_max;
+    o->patch_radius = d->patch_radius ? *d->patch_radius : o->patch_radius;
     if (!(o->rtol > 0 && o->rtol < 1)) {
         return sd_fail(is, "solver.newton.tolerance", "must lie in (0, 1)");
     }
@@ -642,6 +644,9 @@ static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
     }
     if (o->krylov_max < 1 || o->krylov_max > 10000) {
         return sd_fail(is, "solver.newton.krylov_iterations", "1 to 10000 iterations");
+    }
+    if (!(o->patch_radius > 0 && o->patch_radius < 1e6)) {
+        return sd_fail(is, "solver.newton.patch_radius", "must be a positive length in mm");
     }
     return 0;
 }

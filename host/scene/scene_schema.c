@@ -52,7 +52,8 @@ static const cyaml_strval_t orderings[] = {{"default", 0}, {"amd", 1}, {"metis",
 static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
                                           {"modified", TF_TANGENT_MODIFIED},
                                           {"krylov", TF_TANGENT_KRYLOV},
-                                          {"bfgs", TF_TANGENT_BFGS}};
+                                          {"bfgs", TF_TANGENT_BFGS},
+                                          {"patch", TF_TANGENT_PATCH}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
                                             {"linear", TF_ANALYTIC_LINEAR}};
 
@@ -258,6 +259,7 @@ static const cyaml_schema_field_t newton_fields[] = {
     CYAML_FIELD_UINT_PTR("cuts", OPT, sd_newton, cuts),
     CYAML_FIELD_ENUM_PTR("tangent", STRICT_OPT, sd_newton, tangent, tangents, N(tangents)),
     CYAML_FIELD_UINT_PTR("krylov_iterations", OPT, sd_newton, krylov_iterations),
+    CYAML_FIELD_FLOAT_PTR("patch_radius", OPT, sd_newton, patch_radius),
     CYAML_FIELD_END,
 };
 

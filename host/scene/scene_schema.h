@@ -168,7 +168,7 @@ typedef struct sd_colloc {
 } sd_colloc;
 
 typedef struct sd_newton {
-    double *tolerance, *energy_tolerance;
+    double *tolerance, *energy_tolerance, *patch_radius;
     unsigned *iterations, *steps, *cuts, *krylov_iterations;
     int *tangent; /* tf_tangent_kind */
 } sd_newton;

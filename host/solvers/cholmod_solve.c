@@ -37,6 +37,8 @@ static const char *ordering_name(int ord)
         return "NESDIS";
     case CHOLMOD_COLAMD:
         return "COLAMD";
+    case CHOLMOD_GIVEN:
+        return "given";
     default:
         return "other";
     }
@@ -99,6 +101,36 @@ static tf_chol *chol_new(size_t n, char *err, size_t errlen)
     return c;
 }
 
+static int cholmod_ordering(tf_ordering ord)
+{
+    return ord == TF_ORDER_AMD      ? CHOLMOD_AMD
+           : ord == TF_ORDER_NESDIS ? CHOLMOD_NESDIS
+                                    : CHOLMOD_METIS; /* the default */
+}
+
+/* c->l = the analysis of a with c->cm's method (perm: CHOLMOD_GIVEN's). */
+static int analyse(tf_chol *c, const tf_csc *a, int *perm, tf_chol_info *info, char *err,
+                   size_t errlen)
+{
+    cholmod_sparse s = wrap(a);
+    openblas_set_num_threads(TF_BLAS_THREADS);
+    double t0 = omp_get_wtime();
+    c->l = perm ? cholmod_analyze_p(&s, perm, NULL, 0, &c->cm) : cholmod_analyze(&s, &c->cm);
+    info->t_analyse += omp_get_wtime() - t0;
+    info->t_factor = 0;
+    if (c->l == NULL) {
+        snprintf(err, errlen, "CHOLMOD analysis failed (status %d)%s", c->cm.status,
+                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+        return -1;
+    }
+    info->nnz_l = c->cm.lnz;
+    info->flops = c->cm.fl;
+    info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
+    info->rcond = 0;
+    info->peak_bytes = (double)c->cm.memory_usage;
+    return 0;
+}
+
 tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
                          char *err, size_t errlen)
 {
@@ -111,27 +143,63 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
         c->cm.final_ll = 0;
     }
     c->cm.nmethods = 1;
-    c->cm.method[0].ordering = ord == TF_ORDER_AMD      ? CHOLMOD_AMD
-                               : ord == TF_ORDER_NESDIS ? CHOLMOD_NESDIS
-                                                        : CHOLMOD_METIS; /* the default */
-    cholmod_sparse s = wrap(a);
-    openblas_set_num_threads(TF_BLAS_THREADS);
-    double t0 = omp_get_wtime();
-    c->l = cholmod_analyze(&s, &c->cm);
-    info->t_analyse = omp_get_wtime() - t0;
-    info->t_factor = 0;
-    if (c->l == NULL) {
-        snprintf(err, errlen, "CHOLMOD analysis failed (status %d)%s", c->cm.status,
-                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+    c->cm.method[0].ordering = cholmod_ordering(ord);
+    info->t_analyse = 0;
+    if (analyse(c, a, NULL, info, err, errlen) != 0) {
         tf_chol_free(c);
         return NULL;
     }
-    info->nnz_l = c->cm.lnz;
-    info->flops = c->cm.fl;
-    info->ordering = ordering_name(c->cm.method[c->cm.selected].ordering);
-    info->rcond = 0;
-    info->peak_bytes = (double)c->cm.memory_usage;
     return c;
+}
+
+tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned char *last,
+                              tf_chol_info *info, char *err, size_t errlen)
+{
+    tf_chol *c = tf_chol_analyse(a, ord, 0, info, err, errlen);
+    int *perm = c ? malloc(a->n * sizeof *perm) : NULL;
+    if (perm == NULL) {
+        if (c != NULL) {
+            snprintf(err, errlen, "out of memory");
+        }
+        tf_chol_free(c);
+        return NULL;
+    }
+    const int *p0 = c->l->Perm;
+    size_t k = 0;
+    for (int pass = 0; pass < 2; ++pass) { /* the rest in the ordering's order, then `last` */
+        for (size_t j = 0; j < a->n; ++j) {
+            if ((last[p0[j]] != 0) == (pass == 1)) {
+                perm[k++] = p0[j];
+            }
+        }
+    }
+    cholmod_free_factor(&c->l, &c->cm);
+    c->cm.method[0].ordering = CHOLMOD_GIVEN;
+    int rc = analyse(c, a, perm, info, err, errlen);
+    free(perm);
+    if (rc != 0) {
+        tf_chol_free(c);
+        return NULL;
+    }
+    return c;
+}
+
+double *tf_chol_trailing(tf_chol *c, size_t m, size_t *ld, const int **perm)
+{
+    cholmod_factor *l = c->l;
+    if (l == NULL || !l->is_super || !l->is_ll || l->x == NULL || l->nsuper == 0 || m > c->n) {
+        return NULL;
+    }
+    const int *super = l->super, *pi = l->pi, *px = l->px;
+    size_t k = l->nsuper - 1, k1 = (size_t)super[k], ncol = (size_t)super[k + 1] - k1;
+    size_t nrow = (size_t)(pi[k + 1] - pi[k]);
+    if ((size_t)super[k + 1] != c->n || ncol < m || nrow != ncol) {
+        return NULL; /* the last supernode is not the dense trailing block */
+    }
+    *ld = nrow;
+    *perm = l->Perm;
+    size_t off = ncol - m; /* A's first column within the supernode */
+    return (double *)l->x + (size_t)px[k] + off + off * nrow;
 }
 
 int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen)

@@ -43,6 +43,24 @@ typedef enum tf_ordering {
 tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
                          char *err, size_t errlen);
 
+/* As tf_chol_analyse (LL^T), with the DOFs i where last[i] != 0 moved to
+ * the end of the fill-reducing ordering (the others in the ordering's
+ * order), given to CHOLMOD as its ordering (CHOLMOD_GIVEN; CHOLMOD may
+ * still postorder it).  With those m DOFs last, the factor's trailing
+ * m x m block L_AA satisfies L_AA L_AA^T = the Schur complement of the
+ * rest onto them: a matrix that differs only in that block has the
+ * factor with L_AA replaced (tf_chol_trailing).  NULL with a message. */
+tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned char *last,
+                              tf_chol_info *info, char *err, size_t errlen);
+
+/* The trailing m x m block of c's last factorisation (supernodal LL^T),
+ * column major with leading dimension *ld, its lower triangle L's entries
+ * in place (writable: a caller may replace the block by the factor of
+ * another trailing Schur complement); *perm gets the factor's ordering
+ * (factor position -> row of A).  NULL when the factor is not supernodal
+ * LL^T or the last supernode does not hold the last m columns. */
+double *tf_chol_trailing(tf_chol *c, size_t m, size_t *ld, const int **perm);
+
 /* Numeric factorisation of A (the pattern analysed) into c, replacing the
  * last one.  Returns 0; 1 when A is not positive definite (LL^T) or has a
  * zero pivot (LDL^T): c then holds no usable factor; -1 with a message on

@@ -161,6 +161,11 @@ int main(int argc, char **argv)
                    in->ordering ? in->ordering : "-", in->nnz_l, in->residuals, in->tangents,
                    in->krylov, in->indefinite, in->kept, in->t_gradients, in->t_residual, in->t_tangent, in->t_factor,
                    in->t_solve);
+            if (in->patch_dofs > 0) {
+                printf("\n      patch tangent: %zu DOFs, %zu block updates (%zu not positive "
+                       "definite), %.2f s",
+                       in->patch_dofs, in->patches, in->patch_kept, in->t_patch);
+            }
         }
         printf("\n");
     }

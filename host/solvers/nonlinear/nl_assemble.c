@@ -711,6 +711,7 @@ typedef struct pass {
     const double *d;
     double dt;
     int tangent;
+    const unsigned char *only; /* cells to assemble (NULL: all) */
     double *fl, *kc; /* batch slices */
     size_t batch;
     size_t fstride, kstride;
@@ -759,6 +760,9 @@ static int all_cells(pass *ps, double *fint, nl_fault *fault)
 #pragma omp parallel for num_threads(nt) schedule(dynamic, 1)
         for (size_t c = start; c < end; ++c) {
             nl_fault f = {0};
+            if (ps->only && !ps->only[c]) {
+                continue;
+            }
             if (cell_work(ps, c, &bufs[omp_get_thread_num()], ps->fl + (c - start) * ps->fstride,
                           ps->kc + (c - start) * ps->kstride, &f) != 0) {
 #pragma omp critical(tf_nl_fault)
@@ -769,6 +773,9 @@ static int all_cells(pass *ps, double *fint, nl_fault *fault)
             }
         }
         for (size_t c = start; c < end && failed == SIZE_MAX; ++c) {
+            if (ps->only && !ps->only[c]) {
+                continue;
+            }
             const uint32_t *set = s->cs.nodes + s->cs.ptr[c];
             size_t m = s->cs.ptr[c + 1] - s->cs.ptr[c];
             const double *fl = ps->fl + (c - start) * ps->fstride;
@@ -789,27 +796,34 @@ static int all_cells(pass *ps, double *fint, nl_fault *fault)
     return failed == SIZE_MAX ? 0 : 1;
 }
 
-int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
-                double *r, double *fint, nl_fault *fault)
+/* The cells of ps (forces into fi, the tangent into s->k when asked) in
+ * batches.  Returns as all_cells. */
+static int cells_pass(pass *ps, double *fi, nl_fault *fault)
 {
+    nl_solver *s = ps->s;
     size_t n3 = 3 * s->sh.cloud->n, m = s->maxm;
-    double t0 = omp_get_wtime();
-    pass ps = {.s = s, .d = d, .dt = dt, .tangent = tangent, .batch = s->ncell,
-               .fstride = 3 * m, .kstride = tangent ? 9 * m * m : 0};
-    if (tangent) {
-        double fit = TANGENT_BATCH_BYTES / (8.0 * (double)ps.kstride);
-        ps.batch = fit < 32 ? 32 : fit > (double)s->ncell ? s->ncell : (size_t)fit;
+    ps->batch = s->ncell;
+    ps->fstride = 3 * m;
+    ps->kstride = ps->tangent ? 9 * m * m : 0;
+    if (ps->tangent) {
+        double fit = TANGENT_BATCH_BYTES / (8.0 * (double)ps->kstride);
+        ps->batch = fit < 32 ? 32 : fit > (double)s->ncell ? s->ncell : (size_t)fit;
     }
-    ps.fl = malloc(ps.batch * ps.fstride * sizeof *ps.fl);
-    ps.kc = tangent ? malloc(ps.batch * ps.kstride * sizeof *ps.kc) : NULL;
-    double *fi = fint ? fint : s->fint;
-    if (ps.fl == NULL || (tangent && ps.kc == NULL)) {
-        free(ps.fl);
-        free(ps.kc);
+    ps->fl = malloc(ps->batch * ps->fstride * sizeof *ps->fl);
+    ps->kc = ps->tangent ? malloc(ps->batch * ps->kstride * sizeof *ps->kc) : NULL;
+    if (ps->fl == NULL || (ps->tangent && ps->kc == NULL)) {
+        free(ps->fl);
+        free(ps->kc);
         return tf_fail(s->base.ctx, "out of memory for the cell matrices");
     }
     memset(fi, 0, n3 * sizeof *fi);
-    if (tangent) {
+    if (ps->only) { /* the patch's cells add to A's columns only (nl_patch.c reads them) */
+        for (size_t j = 0; j < s->k.n; ++j) {
+            for (int q = s->k.p[j]; s->patch.dof[j] && q < s->k.p[j + 1]; ++q) {
+                s->k.x[q] = s->kbc ? s->kbc[q] : 0;
+            }
+        }
+    } else if (ps->tangent) {
         if (s->kbc) {
             memcpy(s->k.x, s->kbc, s->k.nnz * sizeof *s->k.x);
         } else {
@@ -819,9 +833,20 @@ int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, in
             memset(s->kskew, 0, s->k.nnz * sizeof *s->kskew);
         }
     }
-    int rc = all_cells(&ps, fi, fault);
-    free(ps.fl);
-    free(ps.kc);
+    int rc = all_cells(ps, fi, fault);
+    free(ps->fl);
+    free(ps->kc);
+    return rc;
+}
+
+int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
+                double *r, double *fint, nl_fault *fault)
+{
+    size_t n3 = 3 * s->sh.cloud->n;
+    double t0 = omp_get_wtime();
+    pass ps = {.s = s, .d = d, .dt = dt, .tangent = tangent};
+    double *fi = fint ? fint : s->fint;
+    int rc = cells_pass(&ps, fi, fault);
     if (rc == 0) {
         memcpy(r, fi, n3 * sizeof *r);
         rc = s->weak ? boundary_terms(s, d, t, dt, tangent, r, fault) : 0;
@@ -834,6 +859,20 @@ int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, in
         s->st.residuals++;
         s->st.t_residual += el;
     }
+    return rc;
+}
+
+int nl_assemble_patch(nl_solver *s, const double *d, double dt, nl_fault *fault)
+{
+    double t0 = omp_get_wtime();
+    pass ps = {.s = s, .d = d, .dt = dt, .tangent = 1, .only = s->patch.cell};
+    double *fi = malloc(3 * s->sh.cloud->n * sizeof *fi); /* (the forces are not kept) */
+    if (fi == NULL) {
+        return tf_fail(s->base.ctx, "out of memory");
+    }
+    int rc = cells_pass(&ps, fi, fault);
+    free(fi);
+    s->st.t_patch += omp_get_wtime() - t0;
     return rc;
 }
 

@@ -41,8 +41,27 @@ typedef struct nl_fault {
 typedef struct nl_stats {
     size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov, indefinite;
     size_t kept; /* tangents found not positive definite while an older factor was kept */
-    double t_residual, t_tangent, t_factor, t_solve;
+    size_t patches, patch_kept; /* patch tangent updates; of them, not positive definite */
+    double t_residual, t_tangent, t_factor, t_solve, t_patch;
 } nl_stats;
+
+/* The patch tangent (nl_patch.c): the m DOFs A within the patch radius of
+ * a contact site come last in the factor, whose trailing block L_AA is
+ * replaced every iteration by chol(S0 + K_t,AA - K0,AA), S0 = L_AA0
+ * L_AA0^T of the last full factorisation (of K0), K_t,AA and K0,AA the
+ * tangents of the patch's cells alone. */
+typedef struct nl_patch {
+    int on;              /* the strategy is patch and it applies to this problem */
+    size_t m;            /* |A| */
+    unsigned char *dof;  /* 3N: in A */
+    unsigned char *cell; /* per cell: its support holds a node of A */
+    uint32_t *list;      /* A's DOFs, in the factor's order (once a base is set) */
+    int *pos;            /* 3N: position in A's block, or -1 */
+    double *s0, *k0, *w; /* m x m: S0, K0's AA block, work (lower triangles) */
+    int base;            /* s0, k0, list belong to the factor in s->chol */
+    int want_k0;         /* a new base factor: k0 at its state still to assemble */
+    size_t fallbacks;    /* factors whose last supernode did not hold A: BFGS instead */
+} nl_patch;
 
 typedef struct nl_solver {
     tf_solver base; /* first */
@@ -89,6 +108,7 @@ typedef struct nl_solver {
     int chol_ok;        /* holds a usable factor */
     int use_ldl;        /* the usable factor is the LDL^T one */
     tf_chol_info ci;
+    nl_patch patch;
     /* quasi-Newton (BFGS): pairs s_i = dd, y_i = dr since the last factorisation */
     double *qs, *qy, *qrho;
     size_t qn, qmax;
@@ -112,6 +132,12 @@ void nl_model_free(nl_solver *s);
 int nl_assemble(nl_solver *s, const double *d, const nl_target *t, double dt, int tangent,
                 double *r, double *fint, nl_fault *fault);
 
+/* The tangent on the patch's cells only (s->patch.cell) into s->k's
+ * columns of the patch's DOFs, at d over dt (the cells' histories into
+ * s->hist_new); the other columns keep what they held.  Returns as
+ * nl_assemble. */
+int nl_assemble_patch(nl_solver *s, const double *d, double dt, nl_fault *fault);
+
 /* The support's force (N) on the body from fixed region `region` in the
  * committed state, weak essential conditions.  Returns 0, or -1. */
 int nl_region_force(nl_solver *s, size_t region, double force[3]);
@@ -127,12 +153,35 @@ int nl_factor(nl_solver *s);
  * strategy says so.  Returns 0, 1 (no usable factor: the tangent is not
  * positive definite), -1 (message). */
 int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent);
+/* fresh_tangent: NL_TANGENT_NONE, _ALL or _PATCH (the patch's block only). */
 /* Quasi-Newton: forget the pairs (a new factorisation), or remember the
  * step s and the residual's change y of an iteration. */
 void nl_qn_reset(nl_solver *s);
 void nl_qn_update(nl_solver *s, const double *step, const double *dr);
 /* y = K x with the assembled tangent (symmetric part + skew part). */
 void nl_tangent_apply(const nl_solver *s, const double *x, double *y);
+
+/* ---- nl_patch.c: the patch tangent ---- */
+/* What a Newton iteration assembles: nothing new, the whole tangent, or
+ * the tangent on the patch's cells (nl_assemble_patch). */
+enum { NL_TANGENT_NONE = 0, NL_TANGENT_ALL = 1, NL_TANGENT_PATCH = 2 };
+/* Chooses A and its cells when the strategy is patch and the problem
+ * allows it (a symmetric, time-independent law with the fixed DOFs
+ * eliminated); else leaves the patch off (BFGS).  Returns 0, or -1. */
+int nl_patch_init(nl_solver *s);
+void nl_patch_free(nl_patch *p);
+/* After a full Cholesky factorisation of s->k into s->chol: S0 from it
+ * (then want_k0: nl_patch_k0 at the state of that tangent); a factor whose
+ * last supernode does not hold A turns the patch off (counted).  Returns 0,
+ * or -1. */
+int nl_patch_base(nl_solver *s);
+/* K0's block: the patch cells' tangent at d (the base's state) over dt,
+ * through s->k.  Returns as nl_assemble. */
+int nl_patch_k0(nl_solver *s, const double *d, double dt, nl_fault *fault);
+/* The factor's trailing block for the patch tangent now in s->k's AA
+ * block.  Returns 0; 1 when S0 + dK is not positive definite (the factor
+ * is unchanged). */
+int nl_patch_update(nl_solver *s);
 
 /* ---- nl_newton.c ---- */
 /* Equilibrium under target `to`, reached from the current state over dt

@@ -86,8 +86,16 @@ static int factor_indefinite(nl_solver *s)
 static int keeps_factor(const nl_solver *s)
 {
     tf_tangent_kind k = s->base.opts.newton.tangent;
-    return (k == TF_TANGENT_BFGS || k == TF_TANGENT_MODIFIED) && s->chol_ok && !s->use_ldl &&
-           !s->indef_kept;
+    if (k == TF_TANGENT_PATCH && s->patch.on) {
+        /* the patch tangent keeps its factor through any number of
+         * indefinite tangents: at 41 x 41 x 9 both bfgs and patch met two
+         * in a row in the 3 N case and spent 14.5 and 9 CPU minutes in the
+         * LDL^T before they were stopped; a failed load step still drops
+         * the factor (nl_advance), and the retry factorises afresh */
+        return s->chol_ok && !s->use_ldl;
+    }
+    return (k == TF_TANGENT_BFGS || k == TF_TANGENT_MODIFIED || k == TF_TANGENT_PATCH) &&
+           s->chol_ok && !s->use_ldl && !s->indef_kept;
 }
 
 static int factor_into_spare(nl_solver *s)
@@ -112,7 +120,9 @@ static int factor_into_spare(nl_solver *s)
         tf_chol *c = s->chol;
         s->chol = s->spare;
         s->spare = c;
+        s->indef_kept = 0;
         nl_qn_reset(s);
+        return nl_patch_base(s);
     }
     return rc;
 }
@@ -125,8 +135,10 @@ int nl_factor(nl_solver *s)
         return factor_into_spare(s);
     }
     if (s->chol == NULL) {
-        s->chol = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 0, &s->ci,
-                                  ctx->err, sizeof ctx->err);
+        tf_ordering ord = (tf_ordering)s->base.opts.ordering;
+        s->chol = s->patch.on ? tf_chol_analyse_last(&s->k, ord, s->patch.dof, &s->ci, ctx->err,
+                                                     sizeof ctx->err)
+                              : tf_chol_analyse(&s->k, ord, 0, &s->ci, ctx->err, sizeof ctx->err);
         if (s->chol == NULL) {
             return -1;
         }
@@ -139,6 +151,10 @@ int nl_factor(nl_solver *s)
     s->use_ldl = 0;
     s->indef_kept = 0;
     nl_qn_reset(s);
+    if (rc == 0) {
+        return nl_patch_base(s);
+    }
+    s->patch.base = 0;
     return rc == 1 ? factor_indefinite(s) : rc;
 }
 
@@ -379,10 +395,21 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
     for (size_t i = 0; i < n; ++i) {
         b[i] = s->weak || !s->bc.fixed[i] ? -r[i] : 0;
     }
+    int rc = 0;
+    if (fresh_tangent == NL_TANGENT_PATCH) {
+        /* the block of the factor near the contact: the old one stays when
+         * the new is not positive definite (an iterate far from
+         * equilibrium; BFGS's refresh rule still watches the progress).
+         * BFGS's pairs are kept: a changing initial matrix, as in L-BFGS
+         * with a scaled one; forgetting them at each update (as at a
+         * refactorisation) took 42 iterations and 4 factorisations at
+         * 21 x 21 x 5 against 26 and 2 (docs/validation.md §13). */
+        (void)nl_patch_update(s);
+        fresh_tangent = NL_TANGENT_NONE;
+    }
     if (fresh_tangent) {
         eliminate(s);
     }
-    int rc = 0;
     if (fresh_tangent && (kind != TF_TANGENT_KRYLOV || !s->chol_ok)) {
         rc = nl_factor(s); /* full Newton; modified and BFGS assemble only to refactorise */
     } else if (!s->chol_ok) {
@@ -400,7 +427,7 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
             rc = nl_factor(s);
             done = rc == 0 && krylov(s, b, du, &failed);
         }
-    } else if (kind == TF_TANGENT_BFGS && s->qn > 0) {
+    } else if ((kind == TF_TANGENT_BFGS || kind == TF_TANGENT_PATCH) && s->qn > 0) {
         failed = bfgs(s, b, du) != 0;
         done = !failed;
     } else {

@@ -206,7 +206,8 @@ static int allocate_state(nl_solver *s, tf_ctx *ctx)
         s->wk_cols = 40;
         s->wk = malloc((s->wk_cols + 6) * n3 * sizeof *s->wk);
     }
-    if (s->base.opts.newton.tangent == TF_TANGENT_BFGS) {
+    if (s->base.opts.newton.tangent == TF_TANGENT_BFGS ||
+        s->base.opts.newton.tangent == TF_TANGENT_PATCH) {
         s->qmax = 30;
         s->qs = malloc(s->qmax * n3 * sizeof *s->qs);
         s->qy = malloc(s->qmax * n3 * sizeof *s->qy);
@@ -264,7 +265,10 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     if (s->efg && tf_nodal_map_build(&s->map, &s->sh, ctx->err, sizeof ctx->err) != 0) {
         return -1;
     }
-    return allocate_state(s, ctx);
+    if (allocate_state(s, ctx) != 0) {
+        return -1;
+    }
+    return nl_patch_init(s);
 }
 
 void nl_model_free(nl_solver *s)
@@ -281,6 +285,7 @@ void nl_model_free(nl_solver *s)
     tf_chol_free(s->chol);
     tf_chol_free(s->spare);
     tf_chol_free(s->ldl);
+    nl_patch_free(&s->patch);
     void *bufs[] = {s->gptr,  s->grad,  s->wts,       s->kskew, s->kbc,  s->d,      s->hist,
                     s->hist_new, s->bhist, s->bhist_new, s->bptr, s->bidx, s->bphi, s->bdphi,
                     s->f0,    s->basis, s->r,         s->fint,  s->du,   s->dtrial, s->rtrial,

@@ -174,14 +174,22 @@ static int wants_tangent(const nl_solver *s, unsigned since, double ratio_e)
     if (k == TF_TANGENT_MODIFIED) {
         return !s->chol_ok || (since >= 2 && ratio_e > 0.25);
     }
-    if (k == TF_TANGENT_BFGS) {
+    if (k == TF_TANGENT_BFGS || k == TF_TANGENT_PATCH) {
+        int all;
         if (s->eager) { /* a step failed in this case: main's quicker rule */
-            return !s->chol_ok || s->use_ldl || (since >= 4 && ratio_e > 0.5);
+            all = !s->chol_ok || s->use_ldl || (since >= 4 && ratio_e > 0.5);
+        } else {
+            all = !s->chol_ok || s->use_ldl ||
+                  (since >= BFGS_PATIENCE && ratio_e > BFGS_STALL);
         }
-        return !s->chol_ok || s->use_ldl ||
-               (since >= BFGS_PATIENCE && ratio_e > BFGS_STALL);
+        /* the patch tangent: the factor's block near the contact every
+         * iteration that does not refactorise */
+        if (s->patch.on && s->patch.base && !all) {
+            return NL_TANGENT_PATCH;
+        }
+        return all ? NL_TANGENT_ALL : NL_TANGENT_NONE;
     }
-    return 1;
+    return NL_TANGENT_ALL;
 }
 
 /* Newton iterations for one load step from s->d.  Returns 0 (converged:
@@ -193,11 +201,12 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
     const tf_newton_opts *o = &s->base.opts.newton;
     double *fext = malloc(n3 * sizeof *fext), *d = malloc(n3 * sizeof *d);
     double *rt = malloc(n3 * sizeof *rt), *qs = NULL, *qy = NULL;
-    if (o->tangent == TF_TANGENT_BFGS) {
+    int quasi = o->tangent == TF_TANGENT_BFGS || o->tangent == TF_TANGENT_PATCH;
+    if (quasi) {
         qs = malloc(n3 * sizeof *qs);
         qy = malloc(n3 * sizeof *qy);
     }
-    if (!fext || !d || !rt || (o->tangent == TF_TANGENT_BFGS && (!qs || !qy))) {
+    if (!fext || !d || !rt || (quasi && (!qs || !qy))) {
         free(fext);
         free(d);
         free(rt);
@@ -217,12 +226,13 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
     int have_r = 0, rc = 0, conv = 0;
     unsigned it;
     for (it = 0; it <= o->max_iter; ++it) {
-        int tangent = it < o->max_iter && wants_tangent(s, since, e_prev > 0 ? e / e_prev : 0);
+        int tangent = it < o->max_iter ? wants_tangent(s, since, e_prev > 0 ? e / e_prev : 0)
+                                       : NL_TANGENT_NONE;
         double before = rn;
         least = it > 0 ? fmin(least, rn) : least; /* of the earlier iterations */
-        since = tangent ? 0 : since + 1;
-        if (!have_r || tangent) {
-            rc = residual(s, d, t, dt, tangent, fext, s->r, &ref, &f->fault);
+        since = tangent == NL_TANGENT_ALL ? 0 : since + 1;
+        if (!have_r || tangent == NL_TANGENT_ALL) {
+            rc = residual(s, d, t, dt, tangent == NL_TANGENT_ALL, fext, s->r, &ref, &f->fault);
         } else {
             memcpy(s->r, rt, n3 * sizeof *rt);
         }
@@ -242,9 +252,20 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
         if (it == o->max_iter) {
             break;
         }
+        rc = tangent == NL_TANGENT_PATCH ? nl_assemble_patch(s, d, dt, &f->fault) : 0;
+        if (rc != 0) {
+            f->why = WHY_INVERTED;
+            break;
+        }
         rc = nl_linear_solve(s, s->r, s->du, tangent);
         if (rc != 0) {
             f->why = WHY_INDEFINITE;
+            break;
+        }
+        /* a new factor for the patch tangent: its cells' tangent at d */
+        rc = s->patch.want_k0 ? nl_patch_k0(s, d, dt, &f->fault) : 0;
+        if (rc != 0) {
+            f->why = WHY_INVERTED;
             break;
         }
         double s0 = dot(s->du, s->r, n3);

@@ -210,7 +210,8 @@ static void announce(const nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
     static const char *tangents[] = {"full Newton", "modified Newton", "Newton-Krylov",
-                                    "quasi-Newton (BFGS)"};
+                                    "quasi-Newton (BFGS)",
+                                    "quasi-Newton (BFGS), the patch tangent where it applies"};
     tf_info(ctx,
             "solver: %s law, %s kinematics, %zu nodes, %zu cells x %u^3 Gauss points%s, %s, "
             "volumetric %s, BCs by %s, %s",
@@ -277,6 +278,10 @@ int tf_nonlinear_info_of(const tf_solver *sv, tf_nonlinear_info *info)
         .indefinite = st->indefinite,
         .kept = st->kept,
         .krylov = st->krylov,
+        .patch_dofs = s->patch.m,
+        .patches = st->patches,
+        .patch_kept = st->patch_kept,
+        .t_patch = st->t_patch,
         .t_gradients = s->t_setup_shape,
         .t_residual = st->t_residual,
         .t_tangent = st->t_tangent,
