@@ -7,7 +7,9 @@
 #
 # Each entry runs `TOOL GRID STEPS KEY=VALUE...` (tests/solver/stability_path.c)
 # into OUTDIR/stability_GRID.csv (written to a temporary file and renamed);
-# then OUTDIR/stability.png plots mu_1 against the force for every CSV there.
+# then OUTDIR/stability.png plots mu_1 against the force for every CSV there
+# (log scale: a mu_1 <= 0 would leave its point out; the CSV holds it).  No
+# entries: the plot only.
 set -euo pipefail
 tool=$1 out=$2 entries=$3
 mkdir -p "$out"
@@ -33,8 +35,10 @@ set output "$out/stability.png.tmp"
 set xlabel "contact force along -z (N)"
 set ylabel "least eigenvalue mu_1 of K_t v = mu K_0 v"
 set title "block48, neo-Hookean: stability along the load path"
-set key right top
-set xzeroaxis lw 2
+set key left bottom
+set logscale y
+set yrange [1e-5:1]
+set format y "%g"
 plot $plots
 GP
 mv "$out/stability.png.tmp" "$out/stability.png"
