@@ -12,7 +12,9 @@
  * this machine is shared), the Newton iterations per load step, and the
  * ratio of the 3 N neo-Hookean case to the linear solve (the issue's goal:
  * at most 3 at 41 x 41 x 9).  cases=N runs the first N cases only (2: the
- * linear solve and the 3 N neo-Hookean case, the goal's pair).
+ * linear solve and the 3 N neo-Hookean case, the goal's pair); scale=S
+ * multiplies every case's force (0.8: the goal's case below the critical
+ * point of the 41 x 41 x 9 body, docs/validation.md §13).
  */
 #include <omp.h>
 #include <stdio.h>
@@ -96,7 +98,7 @@ int main(int argc, char **argv)
     int reps = argc > 2 ? atoi(argv[2]) : 0;
     if (argc < 3 || sscanf(argv[1], "%u,%u,%u", &g[0], &g[1], &g[2]) != 3 || reps < 1 ||
         reps > MAX_REPS || argc - 3 > MAX_SETS - 2) {
-        fprintf(stderr, "usage: bench_nonlinear NX,NY,NZ REPS (1 to %d) [KEY=VALUE...]\n",
+        fprintf(stderr, "usage: bench_nonlinear NX,NY,NZ REPS (1 to %d) [cases=N] [scale=S] [KEY=VALUE...]\n",
                 MAX_REPS);
         return 2;
     }
@@ -106,10 +108,18 @@ int main(int argc, char **argv)
     const char *sets[MAX_SETS] = {set_grid, set_node};
     size_t ns = 2;
     int ncases = CASES, first = 3;
-    if (argc > 3 && sscanf(argv[3], "cases=%d", &ncases) == 1) {
-        first = 4;
+    double scale = 1;
+    if (argc > first && sscanf(argv[first], "cases=%d", &ncases) == 1) {
+        first++;
         if (ncases < 1 || ncases > CASES) {
             fprintf(stderr, "bench_nonlinear: cases=%d: from 1 to %d\n", ncases, CASES);
+            return 2;
+        }
+    }
+    if (argc > first && sscanf(argv[first], "scale=%lf", &scale) == 1) {
+        first++;
+        if (!(scale > 0 && scale <= 10)) {
+            fprintf(stderr, "bench_nonlinear: scale=%g: from 0 to 10\n", scale);
             return 2;
         }
     }
@@ -118,8 +128,13 @@ int main(int argc, char **argv)
     }
     const char *law[CASES] = {"linear", "neo-hookean", "neo-hookean", "neo-hookean",
                               "svk", "svk", "svk"};
-    const double force[CASES][3] = {{0, 0, -3}, {0, 0, -3}, {1, 0, 0}, {1, 0, -3},
-                                    {0, 0, -3}, {1, 0, 0}, {1, 0, -3}};
+    double force[CASES][3] = {{0, 0, -3}, {0, 0, -3}, {1, 0, 0}, {1, 0, -3},
+                              {0, 0, -3}, {1, 0, 0}, {1, 0, -3}};
+    for (int c = 0; c < CASES; ++c) {
+        for (int a = 0; a < 3; ++a) {
+            force[c][a] *= scale;
+        }
+    }
     double wall[CASES][MAX_REPS], cpu[CASES][MAX_REPS];
     result last[CASES];
     int ok[CASES];
@@ -171,9 +186,10 @@ int main(int argc, char **argv)
     }
     if (ok[0] && ok[1]) {
         double lc = median(cpu[0], reps), nc = median(cpu[1], reps);
-        printf("  goal (issue 13): 3 N neo-Hookean <= 3 x one linear solve: %.2f x wall (%s), "
+        printf("  goal (issue 13): %g N neo-Hookean <= 3 x one linear solve: %.2f x wall (%s), "
                "%.2f x CPU (%s; the guide on a shared machine)\n",
-               median(wall[1], reps) / lin, median(wall[1], reps) <= 3 * lin ? "met" : "not met",
+               -force[1][2], median(wall[1], reps) / lin,
+               median(wall[1], reps) <= 3 * lin ? "met" : "not met",
                nc / lc, nc <= 3 * lc ? "met" : "not met");
     }
     return 0;

@@ -20,7 +20,6 @@
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
 #include "solvers/nodal_values.h"
-#include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
 #include "solvers/sparsity.h"
 
@@ -167,7 +166,8 @@ void nl_eliminate(nl_solver *s);
 
 /* ---- nl_stability.c ---- */
 /* tf_nonlinear_stability_of on the solver's current state. */
-int nl_stability(nl_solver *s, double tol, tf_nonlinear_stability *out);
+struct tf_nonlinear_stability; /* nonlinear.h; not included: nonlinear.c includes us */
+int nl_stability(nl_solver *s, double tol, struct tf_nonlinear_stability *out);
 
 /* ---- nl_patch.c: the patch tangent ---- */
 /* What a Newton iteration assembles: nothing new, the whole tangent, or

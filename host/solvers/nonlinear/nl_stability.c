@@ -30,6 +30,7 @@
 
 #include "numerics/csc.h"
 #include "solvers/nonlinear/nl_internal.h"
+#include "solvers/nonlinear/nonlinear.h"
 
 #define MAX_EXPANSIONS 40 /* doublings of the bracket before giving up */
 #define INVERSE_ITERATIONS 30
