@@ -83,7 +83,7 @@ $(T)/fresh/%.h: coeffs/%.yaml $(B)/bin/tissuefit
 	  if [ $$t1.h -nt $(B)/bin/tissuefit ] && [ $$t1.h -nt $< ] && [ $${t1}_golden.h -nt $< ]; then \
 	    cp $$t1.h $@ && cp $${t1}_golden.h $(@D)/$*_golden.h; \
 	  else $(B)/bin/tissuefit -q fit $< -o $@; fi
-$(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a \
+$(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
@@ -135,7 +135,7 @@ tradeoff: $(B)/bin/tissuefit | deps-demo
 	    --png $(REPORTS)/$${n}_sweep.png $$args; done
 
 # Material extremes through the whole pipeline (issue 7 item 3).
-$(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a | deps-check
+$(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@

@@ -74,7 +74,7 @@ FW_TAG_m4f-O3 := (-O3)
 DEBS_CHECK += qemu-system-arm
 
 # The block48-shaped test header (tests/firmware/gen_haptic.c).
-$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
@@ -165,11 +165,11 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_eval_modal_q15 tfit_q15_amp_asm tfit_q15_rows_asm
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
-    host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check
+    host/cost/cycles.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(FW_TOOL_SRC) $(call host_test_link,native) -o $@
-$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a | deps-check
+$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
