@@ -109,9 +109,11 @@ export FORWARD_BOUND_block48_nh := 0.0709
 export CONTACT_BOUND_block48_nh := 0.075
 check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
-	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
+	@# the scenes $(NPROC) at a time, their lines in this order
+	@for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
 	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); c=$$(eval echo \$${CONTACT_BOUND_$$n}); \
-	  printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $${c:-$(CONTACT_REL_BOUND)}; done
+	  echo "printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $${c:-$(CONTACT_REL_BOUND)}"; done | \
+	  tests/run_lines.sh $(NPROC) $(T)/heldout-logs
 	@echo "== material extremes: the stated bound holds at fresh forces =="
 	@$(T)/extremes tests/solver/block48_seed.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="

@@ -118,8 +118,10 @@ $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: 
 CHECKS += check-qemu
 check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
 	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit); the C path and -O0/-Os/-O3 builds on M4F/M7 =="
-	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
-	    tests/firmware/qemu_run.sh $(FW_QEMU_$(c)) $(FW)/$(c)/golden-$$h.elf; done;)
+	@# the runs $(NPROC) at a time (one core each), their outputs in this order
+	@printf 'tests/firmware/qemu_run.sh %s %s\n' $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),\
+	  $(foreach h,$(FW_HEADERS),$(FW_QEMU_$(c)) $(FW)/$(c)/golden-$(call fw_name,$(h)).elf)) | \
+	  tests/run_lines.sh $(NPROC) $(FW)/qemu-golden
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
