@@ -47,6 +47,18 @@ bench-nonlinear-tangents: $(T)/solver/bench_nonlinear
 	  echo "-- $$g, tangent $$t"; \
 	  $(T)/solver/bench_nonlinear $$g 1 cases=2 solver.newton.tangent=$$t || exit 1; done; done
 
+# The stability of the equilibria along the 3 N neo-Hookean load path: the
+# least eigenvalue of K_t v = mu K_0 v after each of STEPS load steps
+# (tests/solver/stability_path.c; docs/validation.md §13).  41 x 41 x 9 runs
+# with the patch tangent (BFGS met CHOLMOD's simplicial LDL^T there) and
+# takes about half an hour; the unit test (test_stability.c) checks the
+# probe against LAPACK's dense eigensolver in make check.
+NL_STABILITY ?= 11,11,3:10 21,21,5:10 31,31,7:10 41,41,9:10:tol=0.03125:solver.newton.tangent=patch
+.PHONY: nl-stability
+nl-stability: $(T)/solver/stability_path | deps-validation
+	@echo "== nonlinear solver: stability along block48's 3 N neo-Hookean load path =="
+	@tests/solver/stability_study.sh $(T)/solver/stability_path docs/validation/nonlinear "$(NL_STABILITY)"
+
 # CHOLMOD's fill-reducing orderings on the linear stiffness (METIS twice: the
 # same hash shows it is deterministic).
 .PHONY: bench-ordering

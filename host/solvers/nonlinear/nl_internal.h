@@ -20,6 +20,7 @@
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
 #include "solvers/nodal_values.h"
+#include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
 #include "solvers/sparsity.h"
 
@@ -160,6 +161,13 @@ void nl_qn_reset(nl_solver *s);
 void nl_qn_update(nl_solver *s, const double *step, const double *dr);
 /* y = K x with the assembled tangent (symmetric part + skew part). */
 void nl_tangent_apply(const nl_solver *s, const double *x, double *y);
+
+/* Fixed DOFs (direct elimination): unit rows and columns of s->k. */
+void nl_eliminate(nl_solver *s);
+
+/* ---- nl_stability.c ---- */
+/* tf_nonlinear_stability_of on the solver's current state. */
+int nl_stability(nl_solver *s, double tol, tf_nonlinear_stability *out);
 
 /* ---- nl_patch.c: the patch tangent ---- */
 /* What a Newton iteration assembles: nothing new, the whole tangent, or

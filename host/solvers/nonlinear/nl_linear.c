@@ -28,8 +28,7 @@ static double dot(const double *a, const double *b, size_t n)
     return s;
 }
 
-/* Fixed DOFs (direct elimination, RPIM): unit rows and columns. */
-static void eliminate(nl_solver *s)
+void nl_eliminate(nl_solver *s)
 {
     if (s->weak) {
         return;
@@ -130,7 +129,7 @@ static int factor_into_spare(nl_solver *s)
 int nl_factor(nl_solver *s)
 {
     tf_ctx *ctx = s->base.ctx;
-    eliminate(s);
+    nl_eliminate(s);
     if (keeps_factor(s)) {
         return factor_into_spare(s);
     }
@@ -408,7 +407,7 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
         fresh_tangent = NL_TANGENT_NONE;
     }
     if (fresh_tangent) {
-        eliminate(s);
+        nl_eliminate(s);
     }
     if (fresh_tangent && (kind != TF_TANGENT_KRYLOV || !s->chol_ok)) {
         rc = nl_factor(s); /* full Newton; modified and BFGS assemble only to refactorise */

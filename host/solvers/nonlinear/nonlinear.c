@@ -356,3 +356,14 @@ int tf_nonlinear_region_force(tf_solver *sv, size_t region, double force[3])
     free(fext);
     return rc == 0 ? 0 : tf_fail(sv->ctx, "the reactions could not be evaluated");
 }
+
+int tf_nonlinear_stability_of(tf_solver *sv, double tol, tf_nonlinear_stability *out)
+{
+    if (!is_nonlinear(sv)) {
+        return tf_fail(sv->ctx, "solver %s is not the nonlinear solver", sv->ops->name);
+    }
+    if (!(tol > 0)) {
+        return tf_fail(sv->ctx, "stability: the tolerance must be positive");
+    }
+    return nl_stability(of(sv), tol, out);
+}

@@ -70,4 +70,25 @@ int tf_nonlinear_displacements(tf_solver *s, double *u);
  * prescribed DOFs.  Returns 0, or -1 with a message. */
 int tf_nonlinear_region_force(tf_solver *s, size_t region, double force[3]);
 
+/* ---- stability of the current state (nl_stability.c) ---- */
+
+/* The least eigenvalue mu_1 of K_t v = mu K_0 v (K_t the tangent at the
+ * current state, K_0 at rest): 1 at rest, <= 0 at or past a limit or
+ * bifurcation point.  Bracketed by Cholesky factorisations of
+ * K_t - sigma K_0 (positive definite exactly when sigma < mu_1). */
+typedef struct tf_nonlinear_stability {
+    double lo, hi;         /* lo < mu_1 <= hi, hi - lo <= tol */
+    double mu;             /* the Rayleigh quotient of the mode (inverse iteration) */
+    int definite;          /* K_t itself is positive definite (mu_1 > 0) */
+    size_t node;           /* the node that moves most in the mode */
+    double dir[3];         /* the unit direction it moves in (sign arbitrary) */
+    size_t factorisations; /* of the probe (the Newton solver's counters are unchanged) */
+    double seconds;        /* wall */
+} tf_nonlinear_stability;
+
+/* The stability of the current state to within tol in mu (elastic laws
+ * only; the state and the Newton solver's factors are unchanged).  Returns
+ * 0, or -1 with a message. */
+int tf_nonlinear_stability_of(tf_solver *s, double tol, tf_nonlinear_stability *out);
+
 #endif /* TF_NONLINEAR_H */
