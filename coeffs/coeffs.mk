@@ -83,7 +83,7 @@ $(T)/fresh/%.h: coeffs/%.yaml $(B)/bin/tissuefit
 	  if [ $$t1.h -nt $(B)/bin/tissuefit ] && [ $$t1.h -nt $< ] && [ $${t1}_golden.h -nt $< ]; then \
 	    cp $$t1.h $@ && cp $${t1}_golden.h $(@D)/$*_golden.h; \
 	  else $(B)/bin/tissuefit -q fit $< -o $@; fi
-$(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a \
+$(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
@@ -109,9 +109,11 @@ export FORWARD_BOUND_block48_nh := 0.0709
 export CONTACT_BOUND_block48_nh := 0.075
 check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
 	@echo "== fitted headers: held-out errors recomputed from the compiled header =="
-	@set -e; for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
+	@# the scenes $(NPROC) at a time, their lines in this order
+	@for s in $(SHIPPED_SCENES); do n=$$(basename $$s .yaml); \
 	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); c=$$(eval echo \$${CONTACT_BOUND_$$n}); \
-	  printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $${c:-$(CONTACT_REL_BOUND)}; done
+	  echo "printf '%s: ' $$n; $(T)/heldout-$$n $$s $${b:-0.001} $${c:-$(CONTACT_REL_BOUND)}"; done | \
+	  tests/run_lines.sh $(NPROC) $(T)/heldout-logs
 	@echo "== material extremes: the stated bound holds at fresh forces =="
 	@$(T)/extremes tests/solver/block48_seed.yaml 2>/dev/null
 	@echo "== tissuefit fit: scenes it must refuse =="
@@ -135,7 +137,7 @@ tradeoff: $(B)/bin/tissuefit | deps-demo
 	    --png $(REPORTS)/$${n}_sweep.png $$args; done
 
 # Material extremes through the whole pipeline (issue 7 item 3).
-$(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a | deps-check
+$(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@

@@ -74,7 +74,7 @@ FW_TAG_m4f-O3 := (-O3)
 DEBS_CHECK += qemu-system-arm
 
 # The block48-shaped test header (tests/firmware/gen_haptic.c).
-$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+$(T)/gen_haptic: tests/firmware/gen_haptic.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
@@ -118,8 +118,10 @@ $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: 
 CHECKS += check-qemu
 check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
 	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit); the C path and -O0/-Os/-O3 builds on M4F/M7 =="
-	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
-	    tests/firmware/qemu_run.sh $(FW_QEMU_$(c)) $(FW)/$(c)/golden-$$h.elf; done;)
+	@# the runs $(NPROC) at a time (one core each), their outputs in this order
+	@printf 'tests/firmware/qemu_run.sh %s %s\n' $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),\
+	  $(foreach h,$(FW_HEADERS),$(FW_QEMU_$(c)) $(FW)/$(c)/golden-$(call fw_name,$(h)).elf)) | \
+	  tests/run_lines.sh $(NPROC) $(FW)/qemu-golden
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpdscr_reject.elf 3 "startup: FPDSCR" \
@@ -165,11 +167,11 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_eval_modal_q15 tfit_q15_amp_asm tfit_q15_rows_asm
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
-    host/cost/cycles.h $(B)/native/libtissuefit-host.a | deps-check
+    host/cost/cycles.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(FW_TOOL_SRC) $(call host_test_link,native) -o $@
-$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a | deps-check
+$(T)/check_cycle_model: tests/firmware/check_cycle_model.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@

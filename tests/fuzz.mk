@@ -5,16 +5,20 @@
 # host library; a crash, leak, undefined behaviour or an input slower than
 # FUZZ_TIMEOUT seconds is a finding, written to $(FZ)/artifacts/.
 #
-#   check-fuzz   (make check) both targets at once, FUZZ_CHECK_SECONDS (60 s), from the
+#   check-fuzz   (make check) both targets at once, FUZZ_CHECK_SECONDS (25 s), from the
 #                seeds and the regression inputs (tests/fuzz/regress/: inputs
-#                that found bugs; they must stay harmless)
+#                that found bugs; they must stay harmless).  25 s is a short
+#                real run: on the 2-core machine each target executes well
+#                over 10^5 inputs and reaches about 97 % of the coverage 60 s
+#                reached (docs/architecture.md, "make check's time"); the
+#                campaign is make fuzz's
 #   make fuzz    each target FUZZ_SECONDS (default 1800 s), corpus kept in
 #                $(FZ)/corpus between runs
 #
 # Seeds: the shipped and test scenes, and tests/fuzz/seeds/set/.
 
 FZ := $(B)/fuzz
-FUZZ_CHECK_SECONDS ?= 60
+FUZZ_CHECK_SECONDS ?= 25
 FUZZ_SECONDS ?= 1800
 FUZZ_TIMEOUT ?= 20
 FUZZ_SAN := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \

@@ -20,7 +20,7 @@ ORGAN_NAMES := $(ORGAN_SCENES:coeffs/%.yaml=%)
 CHECKS += check-organs
 BENCHES += bench-organs
 
-$(T)/organs/map-%: tests/organs/map_check.c coeffs/%.h $(B)/native/libtissuefit-host.a \
+$(T)/organs/map-%: tests/organs/map_check.c coeffs/%.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
@@ -67,7 +67,7 @@ bench-organs: $(foreach h,$(ORGAN_HEADERS),$(B)/bench/bench-$(call fw_name,$(h))
 	@echo "== organ models: native speed and instructions per evaluation =="
 	@set -e; $(foreach h,$(ORGAN_HEADERS),tests/bench/run.sh $(B)/bench/bench-$(call fw_name,$(h)) $(h) $(BENCH_CALLS);)
 
-$(T)/organs/subset_report: tests/organs/subset_report.c $(B)/native/libtissuefit-host.a \
+$(T)/organs/subset_report: tests/organs/subset_report.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-build
 	@mkdir -p $(@D)
 	$(call say,BUILD)

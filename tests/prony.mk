@@ -35,7 +35,7 @@ upper = $(shell echo $(1) | tr a-z A-Z)
 # $(call prony_long,NAME): the host's expectation and the native runner
 define prony_long
 $(T)/prony/long_ref-$(1): tests/prony/long_ref.c tests/prony/long_hash.h tests/support/force_sequence.h \
-    $(T)/gen/$(1).h $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+    $(T)/gen/$(1).h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $$(@D)
 	$$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -I$(T)/gen -Itests/prony -DGOLDEN_H='"$(1)_golden.h"' \
@@ -103,7 +103,7 @@ prony-long-qemu: $(PRONY_LONG_QEMU_ALL)
 
 # --- studies (docs/fitting.md §7; results committed in docs/validation/) --------
 $(T)/prony/recursion_study $(T)/prony/structure_study: $(T)/prony/%: tests/prony/%.c \
-    tests/support/force_sequence.h $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+    tests/support/force_sequence.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
@@ -137,7 +137,7 @@ PRONY_KELVIN := kelvin:0.32,0.192,0.192
 PRONY_TWO_TERMS := two:0.25,0.3,0.2,3
 PRONY_MAX_REL := 0.02
 
-$(T)/prony/creep_fit: tests/prony/creep_fit.c $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+$(T)/prony/creep_fit: tests/prony/creep_fit.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
@@ -208,7 +208,7 @@ endif
 # prony-ve-study re-solves the held-out histories at every tick and at 5
 # ticks and states the difference (docs/fitting.md §7.6; about 10 min of CPU,
 # results in docs/validation/prony_solve_every.txt).
-$(T)/prony/solve_every_study: tests/prony/solve_every_study.c $(B)/native/libtissuefit-host.a | deps-check
+$(T)/prony/solve_every_study: tests/prony/solve_every_study.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@

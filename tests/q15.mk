@@ -10,7 +10,7 @@
 
 Q15_T := $(T)/q15
 
-$(Q15_T)/q15_study: tests/q15/q15_study.c $(B)/native/libtissuefit-host.a \
+$(Q15_T)/q15_study: tests/q15/q15_study.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)

@@ -60,7 +60,7 @@ check-resonant: $(BITEXACT_CONFIGS:%=$(T)/golden-resonant-%) $(T)/prony/long_run
 	@echo "ok: resonant.h bit-exact (golden, $(words $(BITEXACT_CONFIGS)) configurations; 10^6 ticks natively and under QEMU on $(PRONY_LONG_CORES)), one instruction count per tick; $(RESONANT_SHIPPED): golden and 10^6 ticks natively"
 
 # --- the float32 recursion study (docs/fitting.md §8.3; committed result) -------
-$(T)/resonant/recursion_study: tests/resonant/recursion_study.c $(B)/native/libtissuefit-host.a \
+$(T)/resonant/recursion_study: tests/resonant/recursion_study.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)

@@ -87,7 +87,7 @@ check-stability-sanitize: $(STAB_NAMES:%=$(STAB_T)/asan/run_invariants-%)
 	  echo "$$n: no report"; done
 
 $(STAB_T)/random_models: tests/stability/random_models.c $(STAB_CHECK_SRC) $(STAB_INV_HDR) \
-    $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+    $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) -O2 -Itests/stability $< $(STAB_CHECK_SRC) $(call host_test_link,native) -o $@

@@ -19,14 +19,32 @@ UNIT_NAMES := $(UNIT_SRC:tests/unit/%.c=%)
 BITEXACT_CONFIGS := gcc-O0 gcc-O2 gcc-O3-native clang-O2
 T := $(B)/tests
 
-# Link line of a host test: $(call host_test_link,VARIANT)
-host_test_link = $(SUPPORT_SRC) $(B)/$(1)/libtissuefit-host.a $(B)/$(1)/libtfit.a -lcmocka $(HOST_LIBS)
+# Link line of a host test: $(call host_test_link,VARIANT); a rule that
+# uses it lists $(B)/VARIANT/libtest-support.a among its prerequisites.
+host_test_link = $(B)/$(1)/libtest-support.a $(B)/$(1)/libtissuefit-host.a $(B)/$(1)/libtfit.a \
+                 -lcmocka $(HOST_LIBS)
 
-$(T)/unit/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+# tests/support/*.c compiled once per variant into an archive that every
+# host test links, rather than once per test program (make check links
+# about 150 of them: 62 unit tests twice, and the tools of the other checks).
+# $(call test_support_lib,VARIANT,FLAGS)
+define test_support_lib
+$(B)/$(1)/test-support/%.o: tests/support/%.c $(wildcard tests/support/*.h) $(HOST_HDR) | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,CC)
+	$(Q)$(CC) $(TEST_CFLAGS) $(2) -c $$< -o $$@
+$(B)/$(1)/libtest-support.a: $(SUPPORT_SRC:tests/support/%.c=$(B)/$(1)/test-support/%.o)
+	$$(call say,AR)
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
+endef
+$(eval $(call test_support_lib,native,))
+$(eval $(call test_support_lib,asan,$(SANITIZE)))
+
+$(T)/unit/%: tests/unit/%.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
-$(T)/asan/%: tests/unit/%.c $(SUPPORT_SRC) $(B)/asan/libtissuefit-host.a $(B)/asan/libtfit.a | deps-check
+$(T)/asan/%: tests/unit/%.c $(B)/asan/libtissuefit-host.a $(B)/asan/libtest-support.a $(B)/asan/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
@@ -86,7 +104,7 @@ check-freestanding: $(T)/callgraph $(T)/recursive.elf \
 	@echo "ok: 6 target library builds freestanding; the call-graph checker rejects recursion, undeclared indirect calls and missing declared targets"
 
 # --- bit-exact: random models -------------------------------------------------
-$(T)/gen_random: tests/bitexact/gen_random.c $(SUPPORT_SRC) $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+$(T)/gen_random: tests/bitexact/gen_random.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
