@@ -234,6 +234,18 @@ typedef enum tf_tangent_kind {
     TF_TANGENT_PATCH,
 } tf_tangent_kind;
 
+/* What a Cholesky factorisation that finds the tangent not positive
+ * definite does next (solvers/nonlinear/nl_linear.c): an LDL^T
+ * factorisation of the tangent itself (Newton's method follows the path
+ * past a limit point, onto unstable equilibria too), or a Cholesky
+ * factorisation of the tangent with its diagonal raised by a factor
+ * 1 + sigma, the least of 1e-3 x 4^k that is positive definite (the
+ * iterates go downhill in energy: to a stable equilibrium, across a snap). */
+typedef enum tf_indefinite_kind {
+    TF_INDEFINITE_LDL,
+    TF_INDEFINITE_SHIFT,
+} tf_indefinite_kind;
+
 /* Newton-Raphson and load stepping (solvers/nonlinear/). */
 typedef struct tf_newton_opts {
     double rtol;         /* |residual| <= rtol |internal forces| ... */
@@ -244,6 +256,7 @@ typedef struct tf_newton_opts {
     tf_tangent_kind tangent;
     unsigned krylov_max; /* Krylov iterations per solve before refactorising */
     double patch_radius; /* mm: the patch tangent's DOFs, around each contact site */
+    tf_indefinite_kind indefinite;
 } tf_newton_opts;
 
 /* Which solver (by its registered name, solvers/solver.h) and how it

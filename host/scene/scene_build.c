@@ -567,7 +567,7 @@ tf_solver_opts sd_solver_defaults(const unsigned grid[3])
         .colloc = tf_colloc_settings_default(),
         .newton = {.rtol = 1e-9, .etol = 1e-18, .max_iter = 50, .steps = 1, .max_cuts = 10,
                    .tangent = TF_TANGENT_BFGS, .krylov_max = 100,
-                   .patch_radius = 4},
+                   .patch_radius = 4, .indefinite = TF_INDEFINITE_LDL},
         .ordering = 0,
     };
     for (int a = 0; a < 3; ++a) {
@@ -627,6 +627,7 @@ static int newton(const sd_newton *d, tf_newton_opts *o, sd_issue *is)
     o->tangent = d->tangent ? (tf_tangent_kind)*d->tangent : o->tangent;
     o->krylov_max = d->krylov_iterations ? *d->krylov_iterations : o->krylov_max;
     o->patch_radius = d->patch_radius ? *d->patch_radius : o->patch_radius;
+    o->indefinite = d->indefinite ? (tf_indefinite_kind)*d->indefinite : o->indefinite;
     if (!(o->rtol > 0 && o->rtol < 1)) {
         return sd_fail(is, "solver.newton.tolerance", "must lie in (0, 1)");
     }

@@ -54,6 +54,8 @@ static const cyaml_strval_t tangents[] = {{"full", TF_TANGENT_FULL},
                                           {"krylov", TF_TANGENT_KRYLOV},
                                           {"bfgs", TF_TANGENT_BFGS},
                                           {"patch", TF_TANGENT_PATCH}};
+static const cyaml_strval_t indefinites[] = {{"ldl", TF_INDEFINITE_LDL},
+                                             {"shift", TF_INDEFINITE_SHIFT}};
 static const cyaml_strval_t references[] = {{"cantilever", TF_ANALYTIC_CANTILEVER},
                                             {"linear", TF_ANALYTIC_LINEAR}};
 
@@ -260,6 +262,8 @@ static const cyaml_schema_field_t newton_fields[] = {
     CYAML_FIELD_ENUM_PTR("tangent", STRICT_OPT, sd_newton, tangent, tangents, N(tangents)),
     CYAML_FIELD_UINT_PTR("krylov_iterations", OPT, sd_newton, krylov_iterations),
     CYAML_FIELD_FLOAT_PTR("patch_radius", OPT, sd_newton, patch_radius),
+    CYAML_FIELD_ENUM_PTR("indefinite", STRICT_OPT, sd_newton, indefinite, indefinites,
+                         N(indefinites)),
     CYAML_FIELD_END,
 };
 

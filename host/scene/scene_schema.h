@@ -171,6 +171,7 @@ typedef struct sd_newton {
     double *tolerance, *energy_tolerance, *patch_radius;
     unsigned *iterations, *steps, *cuts, *krylov_iterations;
     int *tangent; /* tf_tangent_kind */
+    int *indefinite; /* tf_indefinite_kind */
 } sd_newton;
 
 typedef struct sd_solver {

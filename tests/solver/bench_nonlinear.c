@@ -171,11 +171,11 @@ int main(int argc, char **argv)
                    in->steps, (double)in->iterations / (double)(in->steps ? in->steps : 1),
                    in->factorisations, lin > 0 ? w / lin : 0);
             printf("\n      %s ordering, L %.3g entries; %zu residual and %zu tangent assemblies, "
-                   "%zu Krylov iterations, %zu LDL^T, %zu indefinite kept; s: gradients %.2f, residuals %.2f, tangents %.2f, "
-                   "factorisations %.2f, solves %.2f",
+                   "%zu Krylov iterations, %zu LDL^T, %zu indefinite kept, %zu shifted (last %.3g); "
+                   "s: gradients %.2f, residuals %.2f, tangents %.2f, factorisations %.2f, solves %.2f",
                    in->ordering ? in->ordering : "-", in->nnz_l, in->residuals, in->tangents,
-                   in->krylov, in->indefinite, in->kept, in->t_gradients, in->t_residual, in->t_tangent, in->t_factor,
-                   in->t_solve);
+                   in->krylov, in->indefinite, in->kept, in->shifted, in->shift, in->t_gradients,
+                   in->t_residual, in->t_tangent, in->t_factor, in->t_solve);
             if (in->patch_dofs > 0) {
                 printf("\n      patch tangent: %zu DOFs, %zu block updates (%zu not positive "
                        "definite), %.2f s",

@@ -42,6 +42,8 @@ typedef struct nl_stats {
     size_t steps, cuts, iterations, residuals, tangents, factorisations, krylov, indefinite;
     size_t kept; /* tangents found not positive definite while an older factor was kept */
     size_t patches, patch_kept; /* patch tangent updates; of them, not positive definite */
+    size_t shifted;             /* factorisations of a shifted tangent (nl_linear.c) */
+    double shift;               /* the last positive definite shift */
     double t_residual, t_tangent, t_factor, t_solve, t_patch;
 } nl_stats;
 
@@ -107,6 +109,8 @@ typedef struct nl_solver {
     int eager;          /* a load step of this case failed: BFGS refreshes sooner */
     int chol_ok;        /* holds a usable factor */
     int use_ldl;        /* the usable factor is the LDL^T one */
+    double shift;       /* the last positive definite shift (indefinite: shift), 0: none yet */
+    int shifted;        /* the usable factor is of a shifted tangent */
     tf_chol_info ci;
     nl_patch patch;
     /* quasi-Newton (BFGS): pairs s_i = dd, y_i = dr since the last factorisation */

@@ -72,6 +72,66 @@ static int factor_indefinite(nl_solver *s)
     return rc;
 }
 
+/* solver.newton.indefinite: shift.  Cholesky factorisations of the tangent
+ * with its diagonal raised by a factor 1 + sigma, sigma = SHIFT_FIRST x 4^k
+ * (from a quarter of the last shift that worked), until one is positive
+ * definite.  The step -(K + sigma diag K)^-1 r then goes downhill in
+ * energy, and the line search takes it along: a Levenberg-Marquardt
+ * damping of Newton's method, which crosses a snap-through to the stable
+ * equilibrium beyond it, where the LDL^T path follows the unstable branch
+ * (docs/solver.md; docs/validation.md §13).  Each failed attempt costs up
+ * to a factorisation (CHOLMOD stops at the first non-positive pivot). */
+#define SHIFT_FIRST 1e-3
+#define SHIFT_TRIES 12 /* 1e-3 x 4^11 = 4.2e3: a matrix that still fails is not an elastic tangent */
+
+static int factor_shifted(nl_solver *s)
+{
+    tf_ctx *ctx = s->base.ctx;
+    size_t n = s->k.n;
+    size_t *at = malloc(n * sizeof *at);
+    double *diag = malloc(n * sizeof *diag);
+    if (at == NULL || diag == NULL) {
+        free(at);
+        free(diag);
+        return tf_fail(ctx, "out of memory");
+    }
+    const int *cp = s->k.p, *ri = s->k.i;
+    for (size_t j = 0; j < n; ++j) {
+        at[j] = SIZE_MAX;
+        for (int q = cp[j]; q < cp[j + 1]; ++q) {
+            at[j] = (size_t)ri[q] == j ? (size_t)q : at[j];
+        }
+        if (at[j] == SIZE_MAX) {
+            free(at);
+            free(diag);
+            return tf_fail(ctx, "shifted tangent: column %zu has no diagonal entry", j);
+        }
+        diag[j] = s->k.x[at[j]];
+    }
+    double sigma = s->shift > 0 ? fmax(SHIFT_FIRST, 0.25 * s->shift) : SHIFT_FIRST;
+    int rc = 1;
+    for (int k = 0; k < SHIFT_TRIES && rc == 1; ++k, sigma *= 4) {
+        for (size_t j = 0; j < n; ++j) {
+            s->k.x[at[j]] = diag[j] + sigma * fabs(diag[j]);
+        }
+        double t;
+        rc = tf_chol_refactor(s->chol, &s->k, &t, ctx->err, sizeof ctx->err);
+        s->st.factorisations++;
+        s->st.shifted++;
+        s->st.t_factor += t;
+        s->shift = rc == 0 ? sigma : s->shift;
+    }
+    for (size_t j = 0; j < n; ++j) { /* the tangent itself stays in s->k */
+        s->k.x[at[j]] = diag[j];
+    }
+    free(at);
+    free(diag);
+    s->chol_ok = rc == 0;
+    s->shifted = rc == 0;
+    s->st.shift = rc == 0 ? s->shift : s->st.shift;
+    return rc;
+}
+
 /* Modified Newton and BFGS only need some positive definite matrix near
  * the tangent: while they hold a Cholesky factor they factorise a new
  * tangent into a spare handle and keep the old factor when the new tangent
@@ -120,6 +180,7 @@ static int factor_into_spare(nl_solver *s)
         s->chol = s->spare;
         s->spare = c;
         s->indef_kept = 0;
+        s->shifted = 0;
         nl_qn_reset(s);
         return nl_patch_base(s);
     }
@@ -149,11 +210,15 @@ int nl_factor(nl_solver *s)
     s->chol_ok = rc == 0;
     s->use_ldl = 0;
     s->indef_kept = 0;
+    s->shifted = 0;
     nl_qn_reset(s);
     if (rc == 0) {
         return nl_patch_base(s);
     }
     s->patch.base = 0;
+    if (rc == 1 && s->base.opts.newton.indefinite == TF_INDEFINITE_SHIFT && !s->patch.on) {
+        return factor_shifted(s);
+    }
     return rc == 1 ? factor_indefinite(s) : rc;
 }
 
@@ -409,7 +474,12 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
     if (fresh_tangent) {
         nl_eliminate(s);
     }
-    if (fresh_tangent && (kind != TF_TANGENT_KRYLOV || !s->chol_ok)) {
+    /* Krylov refactorises a fresh tangent only when its factor is no
+     * preconditioner of it: none, shifted, or the LDL^T of an earlier
+     * indefinite one (kept, it led a solve started past stability to
+     * invert the body: test_indefinite.c) */
+    if (fresh_tangent &&
+        (kind != TF_TANGENT_KRYLOV || !s->chol_ok || s->shifted || s->use_ldl)) {
         rc = nl_factor(s); /* full Newton; modified and BFGS assemble only to refactorise */
     } else if (!s->chol_ok) {
         rc = 1;
@@ -419,7 +489,10 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
         return rc;
     }
     int done = 0, failed = 0;
-    if (fresh_tangent && !s->use_ldl && (kind == TF_TANGENT_KRYLOV || s->kskew != NULL)) {
+    /* (a shifted factor is used as it is: the tangent it stands for is
+     * indefinite, where CG has no descent to offer) */
+    if (fresh_tangent && !s->use_ldl && !s->shifted &&
+        (kind == TF_TANGENT_KRYLOV || s->kskew != NULL)) {
         done = krylov(s, b, du, &failed);
         if (!done && !failed && kind == TF_TANGENT_KRYLOV) {
             /* the old factor no longer helps: refactorise and try again */

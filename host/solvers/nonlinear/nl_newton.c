@@ -75,6 +75,7 @@ void nl_reset(nl_solver *s)
     memset(s->bhist, 0, s->bnd.n * s->nh * sizeof *s->bhist);
     s->at = (nl_target){0, -1, {0, 0, 0}};
     s->eager = 0;
+    s->shift = 0; /* (a case depends on its own start alone: nonlinear.c, solve) */
 }
 
 /* Residual r(d) = internal + boundary - external, fixed DOFs zeroed; the

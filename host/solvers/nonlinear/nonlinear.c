@@ -277,6 +277,8 @@ int tf_nonlinear_info_of(const tf_solver *sv, tf_nonlinear_info *info)
         .factorisations = st->factorisations,
         .indefinite = st->indefinite,
         .kept = st->kept,
+        .shifted = st->shifted,
+        .shift = st->shift,
         .krylov = st->krylov,
         .patch_dofs = s->patch.m,
         .patches = st->patches,

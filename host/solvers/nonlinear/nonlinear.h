@@ -37,6 +37,9 @@ typedef struct tf_nonlinear_info {
                                          * tangent that was not positive definite */
     size_t kept;                        /* of the factorisations, attempts that found the tangent
                                          * not positive definite: the older factor kept */
+    size_t shifted;                     /* of the factorisations, those of a shifted tangent
+                                         * (solver.newton.indefinite: shift), failed ones too */
+    double shift;                       /* the last shift that was positive definite (0: none) */
     size_t patch_dofs, patches;         /* the patch tangent: |A|, block updates */
     size_t patch_kept;                  /* of the updates, not positive definite */
     double t_patch;                     /* s: its cell tangents and block updates */
