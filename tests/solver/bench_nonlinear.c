@@ -55,6 +55,7 @@ typedef struct result {
     double wall, cpu;
     tf_nonlinear_info nl;
     int nonlinear;
+    double uc[3]; /* mm: the contact node's displacement (the answer, to compare runs) */
 } result;
 
 /* One case from a fresh solver: build, solve, and the statistics. */
@@ -85,6 +86,7 @@ static int one_case(const char *const *sets, size_t ns, const char *law, const d
     r->wall = omp_get_wtime() - w0;
     r->cpu = cpu_now() - c0;
     r->nonlinear = tf_nonlinear_info_of(sv, &r->nl) == 0;
+    memcpy(r->uc, u + 3 * (size_t)s->problem.contacts[0].node, sizeof r->uc);
     free(u);
     tf_solver_destroy(sv);
     tf_scene_free(s);
@@ -162,8 +164,9 @@ int main(int argc, char **argv)
             continue;
         }
         double w = median(wall[c], reps), u = median(cpu[c], reps);
-        printf("  %-12s (%g, %g, %g) N: %7.2f s wall, %7.2f s CPU", law[c], force[c][0],
-               force[c][1], force[c][2], w, u);
+        printf("  %-12s (%g, %g, %g) N: %7.2f s wall, %7.2f s CPU, contact node u (%.4f, %.4f, "
+               "%.4f) mm", law[c], force[c][0], force[c][1], force[c][2], w, u, last[c].uc[0],
+               last[c].uc[1], last[c].uc[2]);
         if (last[c].nonlinear) {
             const tf_nonlinear_info *in = &last[c].nl;
             printf(", %zu load steps, %.1f Newton iterations per step, %zu factorisations, "
