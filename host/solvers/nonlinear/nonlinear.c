@@ -81,8 +81,9 @@ static int solve(tf_solver *sv, int contact, const double (*forces)[3], size_t n
             if (rc < 0) {
                 return -1;
             }
-            if (rc == 1) {
+            if (rc == 1) { /* from rest, with no factor of the start that failed */
                 nl_reset(s);
+                s->chol_ok = 0;
             }
         }
         if (rc == 1 && nl_advance(s, &to, -1) != 0) {
