@@ -43,7 +43,6 @@ typedef struct nl_stats {
     size_t kept; /* tangents found not positive definite while an older factor was kept */
     size_t patches, patch_kept; /* patch tangent updates; of them, not positive definite */
     size_t shifted;             /* factorisations of a shifted tangent (nl_linear.c) */
-    double shift;               /* the last positive definite shift */
     double t_residual, t_tangent, t_factor, t_solve, t_patch;
 } nl_stats;
 

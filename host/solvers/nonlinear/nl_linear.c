@@ -88,31 +88,24 @@ static int factor_shifted(nl_solver *s)
 {
     tf_ctx *ctx = s->base.ctx;
     size_t n = s->k.n;
-    size_t *at = malloc(n * sizeof *at);
-    double *diag = malloc(n * sizeof *diag);
-    if (at == NULL || diag == NULL) {
-        free(at);
-        free(diag);
-        return tf_fail(ctx, "out of memory");
-    }
-    const int *cp = s->k.p, *ri = s->k.i;
+    const int *cp = s->k.p; /* lower triangle, rows ascending: the diagonal first (csc.h) */
     for (size_t j = 0; j < n; ++j) {
-        at[j] = SIZE_MAX;
-        for (int q = cp[j]; q < cp[j + 1]; ++q) {
-            at[j] = (size_t)ri[q] == j ? (size_t)q : at[j];
-        }
-        if (at[j] == SIZE_MAX) {
-            free(at);
-            free(diag);
+        if (cp[j] == cp[j + 1] || (size_t)s->k.i[cp[j]] != j) {
             return tf_fail(ctx, "shifted tangent: column %zu has no diagonal entry", j);
         }
-        diag[j] = s->k.x[at[j]];
+    }
+    double *diag = malloc(n * sizeof *diag);
+    if (diag == NULL) {
+        return tf_fail(ctx, "out of memory");
+    }
+    for (size_t j = 0; j < n; ++j) {
+        diag[j] = s->k.x[cp[j]];
     }
     double sigma = s->shift > 0 ? fmax(SHIFT_FIRST, 0.25 * s->shift) : SHIFT_FIRST;
     int rc = 1;
     for (int k = 0; k < SHIFT_TRIES && rc == 1; ++k, sigma *= 4) {
         for (size_t j = 0; j < n; ++j) {
-            s->k.x[at[j]] = diag[j] + sigma * fabs(diag[j]);
+            s->k.x[cp[j]] = diag[j] + sigma * fabs(diag[j]);
         }
         double t;
         rc = tf_chol_refactor(s->chol, &s->k, &t, ctx->err, sizeof ctx->err);
@@ -122,13 +115,11 @@ static int factor_shifted(nl_solver *s)
         s->shift = rc == 0 ? sigma : s->shift;
     }
     for (size_t j = 0; j < n; ++j) { /* the tangent itself stays in s->k */
-        s->k.x[at[j]] = diag[j];
+        s->k.x[cp[j]] = diag[j];
     }
-    free(at);
     free(diag);
     s->chol_ok = rc == 0;
     s->shifted = rc == 0;
-    s->st.shift = rc == 0 ? s->shift : s->st.shift;
     return rc;
 }
 

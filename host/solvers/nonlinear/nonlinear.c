@@ -279,7 +279,7 @@ int tf_nonlinear_info_of(const tf_solver *sv, tf_nonlinear_info *info)
         .indefinite = st->indefinite,
         .kept = st->kept,
         .shifted = st->shifted,
-        .shift = st->shift,
+        .shift = s->shift,
         .krylov = st->krylov,
         .patch_dofs = s->patch.m,
         .patches = st->patches,

@@ -39,7 +39,8 @@ typedef struct tf_nonlinear_info {
                                          * not positive definite: the older factor kept */
     size_t shifted;                     /* of the factorisations, those of a shifted tangent
                                          * (solver.newton.indefinite: shift), failed ones too */
-    double shift;                       /* the last shift that was positive definite (0: none) */
+    double shift;                       /* the current case's last positive definite shift
+                                         * (0: none) */
     size_t patch_dofs, patches;         /* the patch tangent: |A|, block updates */
     size_t patch_kept;                  /* of the updates, not positive definite */
     double t_patch;                     /* s: its cell tangents and block updates */
