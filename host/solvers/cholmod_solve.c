@@ -175,6 +175,10 @@ tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned c
     }
     cholmod_free_factor(&c->l, &c->cm);
     c->cm.method[0].ordering = CHOLMOD_GIVEN;
+    /* no postorder of the etree: it keeps descendants before ancestors but
+     * may interleave `last` with subtrees that hang off it (with fixed DOFs
+     * as isolated unit columns it did, and A was no longer last) */
+    c->cm.postorder = 0;
     int rc = analyse(c, a, perm, info, err, errlen);
     free(perm);
     if (rc != 0) {

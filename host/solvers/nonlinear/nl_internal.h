@@ -86,6 +86,8 @@ typedef struct nl_solver {
     tf_csc k;           /* tangent (its symmetric part), lower triangle */
     double *kskew;      /* unsymmetric tangents: the skew part below the diagonal */
     double *kbc;        /* weak boundary terms' constant part (penalty, beta), k's pattern */
+    tf_csc kf;          /* what CHOLMOD factorises: k without the fixed DOFs' couplings */
+    size_t *kf_at;      /* kf's entry q is k's entry kf_at[q] (NULL: kf is k, weak BCs) */
     /* state */
     double *d;          /* 3N */
     double *hist, *hist_new; /* hb per Gauss point */
@@ -166,6 +168,9 @@ void nl_tangent_apply(const nl_solver *s, const double *x, double *y);
 
 /* Fixed DOFs (direct elimination): unit rows and columns of s->k. */
 void nl_eliminate(nl_solver *s);
+/* The eliminated tangent as CHOLMOD factorises it (nl_linear.c): k's values
+ * gathered into kf's pattern, or k itself. */
+const tf_csc *nl_factored(nl_solver *s);
 
 /* ---- nl_stability.c ---- */
 /* tf_nonlinear_stability_of on the solver's current state. */

@@ -47,6 +47,17 @@ void nl_eliminate(nl_solver *s)
     }
 }
 
+const tf_csc *nl_factored(nl_solver *s)
+{
+    if (s->kf_at == NULL) {
+        return &s->k;
+    }
+    for (size_t q = 0; q < s->kf.nnz; ++q) {
+        s->kf.x[q] = s->k.x[s->kf_at[q]];
+    }
+    return &s->kf;
+}
+
 /* A tangent that is not positive definite (past a limit point, St.
  * Venant-Kirchhoff's material instability in compression) still has an
  * LDL^T factorisation unless a pivot vanishes; Newton's method then goes on
@@ -56,14 +67,14 @@ static int factor_indefinite(nl_solver *s)
     tf_ctx *ctx = s->base.ctx;
     if (s->ldl == NULL) {
         tf_chol_info ci;
-        s->ldl = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 1, &ci,
+        s->ldl = tf_chol_analyse(nl_factored(s), (tf_ordering)s->base.opts.ordering, 1, &ci,
                                  ctx->err, sizeof ctx->err);
         if (s->ldl == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->ldl, &s->k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->ldl, nl_factored(s), &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.indefinite++;
     s->st.t_factor += t;
@@ -108,7 +119,7 @@ static int factor_shifted(nl_solver *s)
             s->k.x[cp[j]] = diag[j] + sigma * fabs(diag[j]);
         }
         double t;
-        rc = tf_chol_refactor(s->chol, &s->k, &t, ctx->err, sizeof ctx->err);
+        rc = tf_chol_refactor(s->chol, nl_factored(s), &t, ctx->err, sizeof ctx->err);
         s->st.factorisations++;
         s->st.shifted++;
         s->st.t_factor += t;
@@ -158,7 +169,7 @@ static int factor_into_spare(nl_solver *s)
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->spare, &s->k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->spare, nl_factored(s), &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.t_factor += t;
     if (rc == 1) { /* not positive definite: the old factor and its pairs stay */
@@ -187,15 +198,16 @@ int nl_factor(nl_solver *s)
     }
     if (s->chol == NULL) {
         tf_ordering ord = (tf_ordering)s->base.opts.ordering;
-        s->chol = s->patch.on ? tf_chol_analyse_last(&s->k, ord, s->patch.dof, &s->ci, ctx->err,
-                                                     sizeof ctx->err)
-                              : tf_chol_analyse(&s->k, ord, 0, &s->ci, ctx->err, sizeof ctx->err);
+        const tf_csc *k = nl_factored(s);
+        s->chol = s->patch.on
+                      ? tf_chol_analyse_last(k, ord, s->patch.dof, &s->ci, ctx->err, sizeof ctx->err)
+                      : tf_chol_analyse(k, ord, 0, &s->ci, ctx->err, sizeof ctx->err);
         if (s->chol == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->chol, &s->k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->chol, nl_factored(s), &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.t_factor += t;
     s->chol_ok = rc == 0;

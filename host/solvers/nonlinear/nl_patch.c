@@ -67,7 +67,9 @@ static size_t choose(nl_solver *s, double radius)
             p->cell[c] = r2 <= radius * radius;
         }
         for (size_t q = s->cs.ptr[c]; q < s->cs.ptr[c + 1] && p->cell[c]; ++q) {
-            memset(p->dof + 3 * (size_t)s->cs.nodes[q], 1, 3);
+            for (size_t a = 3 * (size_t)s->cs.nodes[q], e = a + 3; a < e; ++a) {
+                p->dof[a] = !s->bc.fixed[a]; /* (a fixed DOF is alone in the factor: nl_model.c) */
+            }
         }
     }
     size_t m = 0;
@@ -110,8 +112,8 @@ int nl_patch_init(nl_solver *s)
     return 0;
 }
 
-/* The eliminated tangent's AA block (the matrix CHOLMOD factorised: unit
- * rows and columns at fixed DOFs) into a, lower triangle, A's order. */
+/* The tangent's AA block (A holds no fixed DOF) into a, lower triangle,
+ * A's order. */
 static void block_of_k(const nl_solver *s, double *a)
 {
     const nl_patch *p = &s->patch;
@@ -126,9 +128,8 @@ static void block_of_k(const nl_solver *s, double *a)
             if (ii < 0) {
                 continue;
             }
-            double v = s->bc.fixed[i] || s->bc.fixed[j] ? (i == j ? 1.0 : 0.0) : k->x[q];
             size_t r = (size_t)ii > jj ? (size_t)ii : jj, c = (size_t)ii > jj ? jj : (size_t)ii;
-            a[r + m * c] = v;
+            a[r + m * c] = k->x[q];
         }
     }
 }

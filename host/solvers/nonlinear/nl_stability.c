@@ -61,7 +61,7 @@ static int definite_at(probe *p, double sigma, int *pd)
     }
     double t;
     tf_ctx *ctx = p->s->base.ctx;
-    int rc = tf_chol_refactor(p->c, k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(p->c, nl_factored(p->s), &t, ctx->err, sizeof ctx->err);
     p->factorisations++;
     if (rc < 0) {
         return -1;
@@ -223,7 +223,7 @@ int nl_stability(nl_solver *s, double tol, tf_nonlinear_stability *out)
         rc = tangents(s, kt, k0);
     }
     if (rc == 0) {
-        p.c = tf_chol_analyse(&s->k, (tf_ordering)s->base.opts.ordering, 0, &(tf_chol_info){0},
+        p.c = tf_chol_analyse(nl_factored(s), (tf_ordering)s->base.opts.ordering, 0, &(tf_chol_info){0},
                               s->base.ctx->err, sizeof s->base.ctx->err);
         rc = p.c ? bracket(&p, tol, &out->lo, &out->hi, &out->definite) : -1;
     }
