@@ -224,21 +224,27 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
     return 0;
 }
 
-tf_chol *tf_chol_copy(const tf_chol *c, char *err, size_t errlen)
+tf_chol *tf_chol_twin(const tf_chol *c, const tf_csc *a, char *err, size_t errlen)
 {
     tf_chol *d = chol_new(c->n, err, errlen);
-    if (d == NULL) {
+    int *perm = d ? malloc(c->n * sizeof *perm) : NULL;
+    if (perm == NULL) {
+        if (d != NULL) {
+            snprintf(err, errlen, "out of memory");
+        }
+        tf_chol_free(d);
         return NULL;
     }
+    memcpy(perm, c->l->Perm, c->n * sizeof *perm);
     d->cm.supernodal = c->cm.supernodal;
     d->cm.final_ll = c->cm.final_ll;
     d->cm.nmethods = 1;
-    d->cm.method[0] = c->cm.method[0];
-    d->cm.selected = c->cm.selected;
-    d->l = cholmod_copy_factor(c->l, &d->cm);
-    if (d->l == NULL) {
-        snprintf(err, errlen, "CHOLMOD could not copy a factor (status %d)%s", d->cm.status,
-                 d->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
+    d->cm.method[0].ordering = CHOLMOD_GIVEN;
+    d->cm.postorder = 0; /* c's permutation is final (postordered, or kept as given) */
+    tf_chol_info info = {0};
+    int rc = analyse(d, a, perm, &info, err, errlen);
+    free(perm);
+    if (rc != 0) {
         tf_chol_free(d);
         return NULL;
     }

@@ -163,7 +163,7 @@ static int factor_into_spare(nl_solver *s)
 {
     tf_ctx *ctx = s->base.ctx;
     if (s->spare == NULL) {
-        s->spare = tf_chol_copy(s->chol, ctx->err, sizeof ctx->err);
+        s->spare = tf_chol_twin(s->chol, nl_factored(s), ctx->err, sizeof ctx->err);
         if (s->spare == NULL) {
             return -1;
         }
