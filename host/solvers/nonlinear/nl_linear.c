@@ -62,19 +62,19 @@ const tf_csc *nl_factored(nl_solver *s)
  * Venant-Kirchhoff's material instability in compression) still has an
  * LDL^T factorisation unless a pivot vanishes; Newton's method then goes on
  * along the load path, and the step is cut only when that fails too. */
-static int factor_indefinite(nl_solver *s)
+static int factor_indefinite(nl_solver *s, const tf_csc *k)
 {
     tf_ctx *ctx = s->base.ctx;
     if (s->ldl == NULL) {
         tf_chol_info ci;
-        s->ldl = tf_chol_analyse(nl_factored(s), (tf_ordering)s->base.opts.ordering, 1, &ci,
-                                 ctx->err, sizeof ctx->err);
+        s->ldl = tf_chol_analyse(k, (tf_ordering)s->base.opts.ordering, 1, &ci, ctx->err,
+                                 sizeof ctx->err);
         if (s->ldl == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->ldl, nl_factored(s), &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->ldl, k, &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.indefinite++;
     s->st.t_factor += t;
@@ -159,17 +159,17 @@ static int keeps_factor(const nl_solver *s)
            s->chol_ok && !s->use_ldl && !s->indef_kept;
 }
 
-static int factor_into_spare(nl_solver *s)
+static int factor_into_spare(nl_solver *s, const tf_csc *k)
 {
     tf_ctx *ctx = s->base.ctx;
     if (s->spare == NULL) {
-        s->spare = tf_chol_twin(s->chol, nl_factored(s), ctx->err, sizeof ctx->err);
+        s->spare = tf_chol_twin(s->chol, k, ctx->err, sizeof ctx->err);
         if (s->spare == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->spare, nl_factored(s), &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->spare, k, &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.t_factor += t;
     if (rc == 1) { /* not positive definite: the old factor and its pairs stay */
@@ -193,12 +193,12 @@ int nl_factor(nl_solver *s)
 {
     tf_ctx *ctx = s->base.ctx;
     nl_eliminate(s);
+    const tf_csc *k = nl_factored(s); /* gathered once for the analysis and the factorisation */
     if (keeps_factor(s)) {
-        return factor_into_spare(s);
+        return factor_into_spare(s, k);
     }
     if (s->chol == NULL) {
         tf_ordering ord = (tf_ordering)s->base.opts.ordering;
-        const tf_csc *k = nl_factored(s);
         s->chol = s->patch.on
                       ? tf_chol_analyse_last(k, ord, s->patch.dof, &s->ci, ctx->err, sizeof ctx->err)
                       : tf_chol_analyse(k, ord, 0, &s->ci, ctx->err, sizeof ctx->err);
@@ -207,7 +207,7 @@ int nl_factor(nl_solver *s)
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->chol, nl_factored(s), &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(s->chol, k, &t, ctx->err, sizeof ctx->err);
     s->st.factorisations++;
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
@@ -222,7 +222,7 @@ int nl_factor(nl_solver *s)
     if (rc == 1 && s->base.opts.newton.indefinite == TF_INDEFINITE_SHIFT && !s->patch.on) {
         return factor_shifted(s);
     }
-    return rc == 1 ? factor_indefinite(s) : rc;
+    return rc == 1 ? factor_indefinite(s, k) : rc;
 }
 
 void nl_qn_reset(nl_solver *s) { s->qn = 0; }

@@ -238,19 +238,11 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
     if (s->weak) {
         return 0;
     }
-    size_t nnz = 0;
-    for (size_t j = 0; j < k->n; ++j) {
-        for (int q = k->p[j]; q < k->p[j + 1]; ++q) {
-            size_t i = (size_t)k->i[q];
-            nnz += i == j || (!fixed[i] && !fixed[j]);
-        }
-    }
-    s->kf.n = k->n;
-    s->kf.nnz = nnz;
+    s->kf.n = k->n; /* k's sizes bound kf's: one pass */
     s->kf.p = malloc((k->n + 1) * sizeof *s->kf.p);
-    s->kf.i = malloc((nnz + 1) * sizeof *s->kf.i);
-    s->kf.x = malloc((nnz + 1) * sizeof *s->kf.x);
-    s->kf_at = malloc((nnz + 1) * sizeof *s->kf_at);
+    s->kf.i = malloc((k->nnz + 1) * sizeof *s->kf.i);
+    s->kf.x = malloc((k->nnz + 1) * sizeof *s->kf.x);
+    s->kf_at = malloc((k->nnz + 1) * sizeof *s->kf_at);
     if (!s->kf.p || !s->kf.i || !s->kf.x || !s->kf_at) {
         return tf_fail(ctx, "out of memory");
     }
@@ -266,6 +258,7 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
         }
     }
     s->kf.p[k->n] = (int)e;
+    s->kf.nnz = e;
     return 0;
 }
 
