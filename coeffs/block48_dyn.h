@@ -8,7 +8,7 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_dyn_forward: resonant p=1 K=3 tick=1000000ns, 121 output points, force [N] -> displacement [mm]
  *       1142 add, 1167 mul, 0 div per evaluation; 6440 table bytes
- *       2859 instructions; Cortex-M4F <= 4949 cycles (29.46 us at 168 MHz), Cortex-M7 ~3767 (7.85 us at 480 MHz)
+ *       2871 instructions; Cortex-M4F <= 4983 cycles (29.66 us at 168 MHz), Cortex-M7 ~3787 (7.89 us at 480 MHz)
  *       model 'block48_dyn_forward': no Q31 form for the resonant family
  *       stateful: tick 1000000 ns, state 21 floats (tfit_resonant_reset, tfit_resonant_step); 3 damped modes: 84.38 Hz zeta 0.0375 w (-0.0127 -0.0178 0.958); 140.8 Hz zeta 0.0193 w (0.123 0.119 0.00068); 238.7 Hz zeta 0.0384 w (0.279 0.272 0.0054)
  *       held-out cases are force histories stepped from rest: largest error 29.5 % of the largest displacement
@@ -53,12 +53,12 @@
 #define TFIT_BLOCK48_DYN_FORWARD_OPS_DIV 0
 #define TFIT_BLOCK48_DYN_FORWARD_OPS 2309
 #define TFIT_BLOCK48_DYN_FORWARD_TABLE_BYTES 6440
-#define TFIT_BLOCK48_DYN_FORWARD_INSNS_ARMV7EM 2859 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M4F 4949u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M4F_MIN 4781u
-#define TFIT_BLOCK48_DYN_FORWARD_US_M4F_168MHZ 29.46
-#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M7 3767u /* estimate, +-30 % */
-#define TFIT_BLOCK48_DYN_FORWARD_US_M7_480MHZ 7.85
+#define TFIT_BLOCK48_DYN_FORWARD_INSNS_ARMV7EM 2871 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M4F 4983u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M4F_MIN 4805u
+#define TFIT_BLOCK48_DYN_FORWARD_US_M4F_168MHZ 29.66
+#define TFIT_BLOCK48_DYN_FORWARD_CYCLES_M7 3787u /* estimate, +-30 % */
+#define TFIT_BLOCK48_DYN_FORWARD_US_M7_480MHZ 7.89
 #define TFIT_BLOCK48_DYN_FORWARD_MODES 3
 #define TFIT_BLOCK48_DYN_FORWARD_STATE_WORDS 21u /* float state[]: tfit_resonant_reset, _step */
 #define TFIT_BLOCK48_DYN_FORWARD_TICK_NS 1000000u /* the model's tick: call tfit_resonant_step at 1000 Hz */

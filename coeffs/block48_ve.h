@@ -8,7 +8,7 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_ve_forward: prony p=3 K=1 tick=1000000ns, 121 output points, force [N] -> displacement [mm]
  *       6929 add, 6952 mul, 0 div per evaluation; 29596 table bytes
- *       34119 instructions; Cortex-M4F <= 51371 cycles (305.78 us at 168 MHz), Cortex-M7 ~40486 (84.34 us at 480 MHz)
+ *       34144 instructions; Cortex-M4F <= 51429 cycles (306.12 us at 168 MHz), Cortex-M7 ~40524 (84.42 us at 480 MHz)
  *       Q31 form tfit_block48_ve_forward_q31: input 2^1 N, output 2^6 mm full scale; adds 9.21e-08 mm (float32 path: 1.36e-06)
  *         (prony, q31-format.md section 8: 12000 ticks of a press-hold-release history from rest against the float coefficients stepped in double; state 6 int32 words, tfit_prony_reset_q31, tfit_prony_step_q31)
  *         Q31 against the held-out solves: max 0.00447 mm over 6 histories (the float model's 0.00447)
@@ -57,12 +57,12 @@
 #define TFIT_BLOCK48_VE_FORWARD_OPS_DIV 0
 #define TFIT_BLOCK48_VE_FORWARD_OPS 13881
 #define TFIT_BLOCK48_VE_FORWARD_TABLE_BYTES 29596
-#define TFIT_BLOCK48_VE_FORWARD_INSNS_ARMV7EM 34119 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F 51371u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F_MIN 45790u
-#define TFIT_BLOCK48_VE_FORWARD_US_M4F_168MHZ 305.78
-#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M7 40486u /* estimate, +-30 % */
-#define TFIT_BLOCK48_VE_FORWARD_US_M7_480MHZ 84.34
+#define TFIT_BLOCK48_VE_FORWARD_INSNS_ARMV7EM 34144 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F 51429u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M4F_MIN 45831u
+#define TFIT_BLOCK48_VE_FORWARD_US_M4F_168MHZ 306.12
+#define TFIT_BLOCK48_VE_FORWARD_CYCLES_M7 40524u /* estimate, +-30 % */
+#define TFIT_BLOCK48_VE_FORWARD_US_M7_480MHZ 84.42
 #define TFIT_BLOCK48_VE_FORWARD_Q31_IN_EXP 1 /* input word x = value * 2^(31 - 1), N */
 #define TFIT_BLOCK48_VE_FORWARD_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), mm */
 #define TFIT_BLOCK48_VE_FORWARD_Q31_ADDED_ERROR_MM 9.21429e-08 /* max |Q31 - exact| at 12000 ticks of a press-hold-release history; float32: 1.3553e-06 */

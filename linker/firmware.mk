@@ -162,7 +162,8 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_modal_rows_r4 tfit_modal_rows_r5 tfit_modal_rows_r6 tfit_modal_rows_r7 \
                  tfit_modal_rows_r8 \
                  tfit_eval_nodal tfit_eval_modal tfit_eval_zhou2017 tfit_prony_step tfit_prony_filter \
-                 tfit_resonant_step tfit_resonant_filter tfit_stateful_eval tfit_stateful_static \
+                 tfit_resonant_step tfit_resonant_filter tfit_stateful_step tfit_stateful_eval \
+                 tfit_stateful_static \
                  tfit_displacements_cut tfit_cut_progress tfit_cut_rows \
                  tfit_eval_modal_q15 tfit_q15_amp_asm tfit_q15_rows_asm
 

@@ -142,20 +142,20 @@ typedef enum block_id {
     ZHOU_Y_PART,    /* ... the Y tail in loop 7's body outside loop 9 (B = 0 skips it) */
     ZHOU_SUM,       /* ... the superposition in loop 7's body (force axis x skips it) */
     STEP_ENTRY,     /* a Clenshaw loop is entered past its first instruction */
-    PRONY_STEP,     /* tfit_prony_step: checks, projection and filter calls, the static
-                     * map's view, status (nodal p != 1 path without its dispatch) */
-    PRONY_NODAL,    /* ... dispatch to tfit_eval_nodal (p != 1) */
-    PRONY_ROWS,     /* ... dispatch to tfit_degree1_rows_asm (nodal p = 1) */
-    PRONY_MODAL,    /* ... dispatch to tfit_eval_modal */
+    STATEFUL_NODAL, /* one tick of a stateful model outside its filter and static map:
+                     * tfit_prony_step or tfit_resonant_step (checks, tail call),
+                     * tfit_stateful_step (projection and filter calls, the static
+                     * map's view, status), tfit_stateful_eval to tfit_eval_nodal (p != 1) */
+    STATEFUL_ROWS,  /* ... to tfit_degree1_rows_asm (nodal p = 1) */
+    STATEFUL_MODAL, /* ... to tfit_eval_modal */
+    PRONY_DISPATCH, /* tfit_stateful_step's call of the prony filter */
     PRONY_FILTER,   /* tfit_prony_filter() outside its loop, K >= 1 */
     PRONY_FILTER_SETUP, /* ... the loop's set-up and exit load, which K = 0 skips */
     PRONY_FILTER_STUB,  /* ... the out-of-line code K = 0 runs instead */
     PRONY_TERM,     /* loop 1: one term, three axes */
-    RESONANT_NODAL, /* one tick of a resonant model outside the modes' loop, through
-                     * tfit_resonant_step, _filter, tfit_stateful_static and
-                     * tfit_stateful_eval to tfit_eval_nodal (p != 1), K >= 1 */
-    RESONANT_ROWS,  /* ... to tfit_degree1_rows_asm (nodal p = 1) */
-    RESONANT_MODAL, /* ... to tfit_eval_modal */
+    RESONANT_DISPATCH, /* tfit_stateful_step's call of the resonant filter */
+    RESONANT_FILTER, /* tfit_resonant_filter() outside its loop, K >= 1 (K = 0, no test
+                      * model, would skip the loop's set-up: not modelled) */
     RESONANT_MODE,  /* tfit_resonant_filter loop 1: one mode, three axes */
     D1R_PATH,       /* tfit_degree1_rows_asm() outside its loops and the odd point */
     D1R_MAIN,       /* loop 1: eight pairs of output points */
@@ -309,12 +309,21 @@ static const block blocks[N_BLOCKS] = {
                      SAME("alu=1 fload=1 fadd=3 fmul=1 fother=2 branch=1")},
     [ZHOU_SUM] = {"tfit_eval_zhou2017", 0, 0, SAME("fload=1 fadd=1")},
     [STEP_ENTRY] = {"tfit_eval_zhou2017", 0, 0, SAME("fother=1")},
-    [PRONY_STEP] = {"tfit_prony_step", 0, 0,
-                    {"alu=44 load=11 store=8 ldm=1 ldm_pc=1 stm=1 words=16 branch=2 nbranch=5",
-                     "alu=44 load=11 store=6 ldm=1 ldm_pc=1 stm=2 words=18 branch=2 nbranch=5"}},
-    [PRONY_NODAL] = {"tfit_prony_step", 0, 0, SAME("alu=5 load=1 branch=1 nbranch=2")},
-    [PRONY_ROWS] = {"tfit_prony_step", 0, 0, SAME("alu=4 load=1 store=1 branch=3 nbranch=1")},
-    [PRONY_MODAL] = {"tfit_prony_step", 0, 0, SAME("alu=4 branch=3")},
+    /* measured as the QEMU trace less the projection, the filter and the
+     * static map's evaluator, the same for every stateful test model of
+     * each kind of static map */
+    [STATEFUL_NODAL] = {"tfit_stateful_step", 0, 0,
+                        {"alu=53 mul=1 load=23 store=6 ldm=3 ldm_pc=1 stm=5 words=28 branch=6 nbranch=7",
+                         "alu=53 mul=1 load=23 store=8 ldm=3 ldm_pc=1 stm=4 words=24 branch=6 nbranch=7"}},
+    [STATEFUL_ROWS] = {"tfit_stateful_step", 0, 0,
+                       {"alu=56 mul=1 load=25 store=7 ldm=2 ldm_pc=2 stm=5 words=28 branch=7 nbranch=6",
+                        "alu=56 mul=1 load=25 store=9 ldm=2 ldm_pc=2 stm=4 words=24 branch=7 nbranch=6"}},
+    [STATEFUL_MODAL] = {"tfit_stateful_step", 0, 0,
+                        {"alu=51 mul=1 load=21 store=6 ldm=3 ldm_pc=1 stm=5 words=28 branch=7 nbranch=5",
+                         "alu=51 mul=1 load=21 store=8 ldm=3 ldm_pc=1 stm=4 words=24 branch=7 nbranch=5"}},
+    /* the family test falls through to the prony filter's call, and
+     * branches to the resonant one's and back */
+    [PRONY_DISPATCH] = {"tfit_stateful_step", 0, 0, SAME("branch=1 nbranch=1")},
     [PRONY_FILTER] = {"tfit_prony_filter", 0, 0,
                       SAME("alu=52 load=4 store=5 ldm=1 ldm_pc=1 stm=1 words=10 fload=7 fstore=1 "
                            "fadd=3 fmov=3 nbranch=1")},
@@ -322,18 +331,10 @@ static const block blocks[N_BLOCKS] = {
     [PRONY_FILTER_STUB] = {"tfit_prony_filter", 0, 0, SAME("fother=1 branch=1")},
     [PRONY_TERM] = {"tfit_prony_filter", 1, 1,
                     SAME("alu=5 fload=5 fstore=3 fadd=6 fmul=6 branch=1")},
-    /* measured as the QEMU trace less the projection, the modes' loop and
-     * the static map's evaluator (resonant.h's three models); K = 0 (no
-     * test model) would skip the loop's set-up: not modelled */
-    [RESONANT_NODAL] = {"tfit_resonant_step", 0, 0,
-                       {"alu=104 load=21 store=13 ldm=3 ldm_pc=2 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=6 nbranch=8",
-                        "alu=104 load=21 store=13 ldm=3 ldm_pc=2 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=6 nbranch=8"}},
-    [RESONANT_ROWS] = {"tfit_resonant_step", 0, 0,
-                       {"alu=107 load=23 store=14 ldm=2 ldm_pc=3 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=7",
-                        "alu=107 load=23 store=14 ldm=2 ldm_pc=3 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=7"}},
-    [RESONANT_MODAL] = {"tfit_resonant_step", 0, 0,
-                       {"alu=102 load=19 store=13 ldm=3 ldm_pc=2 stm=4 words=29 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=6",
-                        "alu=102 load=19 store=13 ldm=3 ldm_pc=2 stm=4 words=31 fload=7 fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 branch=7 nbranch=6"}},
+    [RESONANT_DISPATCH] = {"tfit_stateful_step", 0, 0, SAME("branch=3")},
+    [RESONANT_FILTER] = {"tfit_resonant_filter", 0, 0,
+                         SAME("alu=52 load=4 store=5 ldm=1 ldm_pc=1 stm=1 words=10 fload=7 "
+                              "fstore=1 fldm=1 fstm=1 fwords=8 fadd=3 fmov=3 nbranch=1")},
     [RESONANT_MODE] = {"tfit_resonant_filter", 1, 1,
                        SAME("alu=5 fload=13 fstore=6 fadd=12 fmul=15 branch=1")},
     [D1R_PATH] = {"tfit_degree1_rows_asm", 0, 0,
@@ -475,7 +476,7 @@ static void basis_mix(tf_insn_mix *t, tf_core core, uint32_t p)
     falls_through(t, (uint64_t)(p + 1) * (p + 2) / 2);
 }
 
-/* tfit_eval_nodal, called by evaluate() or tfit_prony_step */
+/* tfit_eval_nodal, called by evaluate() or tfit_stateful_eval */
 static void nodal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
     uint32_t p = m->dims[0], terms = tf_terms(p);
@@ -506,7 +507,7 @@ static void modal_rows_asm_mix(tf_insn_mix *t, tf_core core, uint32_t r, uint32_
     add_loop(t, core, (block_id)(MR_POINT_1 + (r - 1)), n_out);
 }
 
-/* tfit_eval_modal, called by evaluate() or tfit_prony_step: the basis, the
+/* tfit_eval_modal, called by evaluate() or tfit_stateful_eval: the basis, the
  * r amplitudes (loops 1, 2), then the rows in assembly (r <= 8) or in C
  * (loops 3, 4: r > 8, so the mode loop always runs) */
 static void modal_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
@@ -606,31 +607,37 @@ static void zhou_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
-/* One tick of a prony model (tfit_prony.c): the step's path and its
- * dispatch, the projection, the filter (its loop over K terms; K = 0 jumps
- * past it), then the static map as its own family's evaluator, or at p = 1
- * the rows of tfit_degree1_rows_asm. */
-static void prony_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
+/* One tick of a stateful model (tfit_stateful.c): the entry point and the
+ * step's path for its static map's kind, the projection, the filter (the
+ * dispatch, its function's path and loop), then the static map's
+ * evaluator, or at p = 1 the rows of tfit_degree1_rows_asm. */
+static void stateful_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
 {
-    const tf_model v = tf_prony_static_view(m);
+    const tf_model v = tf_stateful_static_view(m);
     const uint32_t terms = m->dims[2];
-    add_block(t, core, PRONY_STEP, 1);
     add_block(t, core, INPUT_PATH, 1);
-    add_block(t, core, PRONY_FILTER, 1);
-    add_loop(t, core, PRONY_TERM, terms);
-    if (terms == 0) {
-        sub_block(t, core, PRONY_FILTER_SETUP, 1);
-        add_block(t, core, PRONY_FILTER_STUB, 1);
-        taken(t, 1);
+    if (m->family == TFIT_FAMILY_PRONY) {
+        add_block(t, core, PRONY_DISPATCH, 1);
+        add_block(t, core, PRONY_FILTER, 1);
+        add_loop(t, core, PRONY_TERM, terms);
+        if (terms == 0) {
+            sub_block(t, core, PRONY_FILTER_SETUP, 1);
+            add_block(t, core, PRONY_FILTER_STUB, 1);
+            taken(t, 1);
+        }
+    } else {
+        add_block(t, core, RESONANT_DISPATCH, 1);
+        add_block(t, core, RESONANT_FILTER, 1);
+        add_loop(t, core, RESONANT_MODE, terms);
     }
     if (v.family == TFIT_FAMILY_MODAL) {
-        add_block(t, core, PRONY_MODAL, 1);
+        add_block(t, core, STATEFUL_MODAL, 1);
         modal_mix(t, core, &v);
     } else if (v.dims[0] != 1) {
-        add_block(t, core, PRONY_NODAL, 1);
+        add_block(t, core, STATEFUL_NODAL, 1);
         nodal_mix(t, core, &v);
     } else {
-        add_block(t, core, PRONY_ROWS, 1);
+        add_block(t, core, STATEFUL_ROWS, 1);
         d1_loops(t, core, v.n_out, D1R_PATH, D1R_MAIN, D1R_REM);
     }
 }
@@ -661,26 +668,6 @@ static void cut_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
     }
 }
 
-/* One tick of a resonant model (tfit_resonant.c): the path outside the
- * modes' loop for its static map's kind, the projection, K modes, then the
- * static map's evaluator (or the rows of tfit_degree1_rows_asm at p = 1). */
-static void resonant_mix(tf_insn_mix *t, tf_core core, const tf_model *m)
-{
-    const tf_model v = tf_stateful_static_view(m);
-    add_block(t, core, INPUT_PATH, 1);
-    add_loop(t, core, RESONANT_MODE, m->dims[2]);
-    if (v.family == TFIT_FAMILY_MODAL) {
-        add_block(t, core, RESONANT_MODAL, 1);
-        modal_mix(t, core, &v);
-    } else if (v.dims[0] != 1) {
-        add_block(t, core, RESONANT_NODAL, 1);
-        nodal_mix(t, core, &v);
-    } else {
-        add_block(t, core, RESONANT_ROWS, 1);
-        d1_loops(t, core, v.n_out, D1R_PATH, D1R_MAIN, D1R_REM);
-    }
-}
-
 void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
     memset(mix, 0, sizeof *mix);
@@ -688,12 +675,8 @@ void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
         cut_mix(mix, core, m);
         return;
     }
-    if (m->family == TFIT_FAMILY_PRONY) {
-        prony_mix(mix, core, m);
-        return;
-    }
-    if (m->family == TFIT_FAMILY_RESONANT) {
-        resonant_mix(mix, core, m);
+    if (m->family == TFIT_FAMILY_PRONY || m->family == TFIT_FAMILY_RESONANT) {
+        stateful_mix(mix, core, m);
         return;
     }
     const int contact = m->family == TFIT_FAMILY_CONTACT;

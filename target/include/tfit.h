@@ -126,9 +126,14 @@ typedef enum tfit_family {
     TFIT_FAMILY_RESONANT = 7, /* stateful: a nodal or modal map of the input filtered by
                                * damped second-order modes (inertia), one step per tick */
     TFIT_FAMILY_MODAL_Q15 = 8 /* modal at rank 8 with its modes in Q15 and the products
-                               * summed in integers (dual 16-bit MACs on Armv7E-M)
-                               * (the last id: range checks use it) */
+                               * summed in integers (dual 16-bit MACs on Armv7E-M) */
 } tfit_family;
+
+/* The first and the last family id: every id from FIRST to LAST is a
+ * family the library evaluates (range checks and the host's per-family
+ * tests run over them). */
+#define TFIT_FAMILY_FIRST TFIT_FAMILY_NODAL
+#define TFIT_FAMILY_LAST TFIT_FAMILY_MODAL_Q15
 
 /* A model's self-test (docs/header-format.md §8): TFIT_CHECK_INPUTS inputs
  * (3 words of bits each); the CRC-32 of the status and of every output's

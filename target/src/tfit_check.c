@@ -18,13 +18,6 @@
 #define BOUND_LIMIT 0x1p100f
 #define X0_LIMIT 0x1p64f
 #define W_LIMIT 0x1p56f
-#define PRONY_A_LIMIT (1.0f - 0x1p-20f)
-#define PRONY_D_LIMIT 0x1p64f
-
-static float fabs_(float x)
-{
-    return tfit_float(tfit_bits(x) & 0x7fffffffu);
-}
 
 static int within(float b, float limit)
 {
@@ -35,7 +28,7 @@ static float abs_sum(const float *c, uint32_t n)
 {
     float s = 0.0f;
     for (uint32_t i = 0u; i < n; ++i) {
-        s = s + fabs_(c[i]);
+        s = s + tfit_abs(c[i]);
     }
     return s;
 }
@@ -43,9 +36,9 @@ static float abs_sum(const float *c, uint32_t n)
 /* sum_k |c_k| tau^k (Horner on the magnitudes), tau >= 1. */
 static float abs_poly(const float *c, uint32_t n, float tau)
 {
-    float s = fabs_(c[n]);
+    float s = tfit_abs(c[n]);
     for (uint32_t i = n; i > 0u; --i) {
-        s = s * tau + fabs_(c[i - 1u]);
+        s = s * tau + tfit_abs(c[i - 1u]);
     }
     return s;
 }
@@ -53,12 +46,12 @@ static float abs_poly(const float *c, uint32_t n, float tau)
 static int map_ok(const float *map)
 {
     for (uint32_t i = 0u; i < 3u; ++i) {
-        if (!within(fabs_(map[i]), X0_LIMIT)) {
+        if (!within(tfit_abs(map[i]), X0_LIMIT)) {
             return 0;
         }
     }
     for (uint32_t i = 3u; i < TFIT_INPUT_MAP_FLOATS; ++i) {
-        if (!within(fabs_(map[i]), W_LIMIT)) {
+        if (!within(tfit_abs(map[i]), W_LIMIT)) {
             return 0;
         }
     }
@@ -93,7 +86,7 @@ static int modal_ok(const tfit_model *m)
     for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
         float b = 0.0f;
         for (uint32_t k = 0u; k < r; ++k) {
-            b = b + fabs_(modes[o * r + k]) * amax[k];
+            b = b + tfit_abs(modes[o * r + k]) * amax[k];
         }
         if (!within(b, BOUND_LIMIT)) {
             return 0;
@@ -116,9 +109,9 @@ static int modal_q15_ok(const tfit_model *m)
     for (uint32_t k = 0u; k < TFIT_MODAL_Q15_RANK; ++k) {
         float b = 0.0f;
         for (uint32_t t = 0u; t < n_terms; ++t) {
-            b = b + fabs_(at[t * TFIT_MODAL_Q15_RANK + k]);
+            b = b + tfit_abs(at[t * TFIT_MODAL_Q15_RANK + k]);
         }
-        if (!within(b, BOUND_LIMIT) || !within(fabs_(v[k]), BOUND_LIMIT)) {
+        if (!within(b, BOUND_LIMIT) || !within(tfit_abs(v[k]), BOUND_LIMIT)) {
             return 0;
         }
     }
@@ -146,14 +139,14 @@ static int zhou2017_ok(const tfit_model *m)
     float comp_bound[3] = {0.0f, 0.0f, 0.0f};
 
     for (uint32_t j = 0u; j < 2u * m->n_out; ++j) {
-        if (!within(fabs_(xy[j]), 1.0f)) {
+        if (!within(tfit_abs(xy[j]), 1.0f)) {
             return 0;
         }
     }
     for (uint32_t a = 0u; a < 3u; ++a) {
         float d = abs_sum(c, dm[a] + 1u);
         c += dm[a] + 1u;
-        float t = d * fabs_(c[0]);
+        float t = d * tfit_abs(c[0]);
         c += 1;
         if (!within(d, BOUND_LIMIT) || !within(t, BOUND_LIMIT)) {
             return 0;
@@ -180,26 +173,6 @@ static int zhou2017_ok(const tfit_model *m)
     return 1;
 }
 
-/* Prony terms: 0 <= a_k <= 1 - 2^-20 and |D_k| <= 2^64.  Then the state
- * stays finite for every input sequence: |d_i| <= 2 (1 + 2^-20) after the
- * projection, so |z| <= (1 + 2^-24)^2 (a |z| + 2.0001 |D|) at every step,
- * whose fixed point is below 2^23 |D| <= 2^87 because
- * 1 - a (1 + 2^-24)^2 > 2^-21; h is the clamped g - sum z.  The static map
- * then sees |h_i| <= 1, as the nodal and modal proofs assume. */
-static int prony_ok(const tfit_model *m)
-{
-    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
-    for (uint32_t k = 0u; k < m->dims[2]; ++k) {
-        const float a = pt[2u * k], dk = fabs_(pt[2u * k + 1u]);
-        if (!(a >= 0.0f && a <= PRONY_A_LIMIT) || !within(dk, PRONY_D_LIMIT)) {
-            return 0;
-        }
-    }
-    tfit_model v;
-    tfit_prony_static(m, &v);
-    return v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v);
-}
-
 /* A cut model's K + 1 tables as one nodal table of (K + 1) n_out points:
  * each row's bound holds at every knot, and a + w (b - a) with w in [0, 1]
  * stays within twice the larger, far below float's range. */
@@ -212,32 +185,14 @@ static int cut_ok(const tfit_model *m)
     return nodal_ok(&v);
 }
 
-/* Resonant modes: |f_ij| <= 1 and |w| <= 2^10.  The bound that keeps the
- * state finite is the host's: it refuses a model whose rounded F has a
- * spectral norm above 1 - 2^-20 (model/resonant.c), so the deviation
- * (s - d, v) shrinks every tick and |s|, |v| stay below about 2^22 (|d| <= 2
- * each tick over the contraction's margin 2^-20, plus rounding); the CRC
- * makes the table the host's.  Here the magnitudes are checked again (a
- * table within them cannot overflow in one tick), and h is clamped before
- * the static map. */
-static int resonant_ok(const tfit_model *m)
+/* A stateful model: its filter's terms (tfit_prony.c, tfit_resonant.c
+ * give the bounds that keep the state finite), then its static map as its
+ * own family: h is clamped to [-1, 1] before it. */
+static int stateful_ok(const tfit_model *m)
 {
-    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
-    for (uint32_t k = 0u; k < m->dims[2]; ++k, pt += 7) {
-        for (uint32_t i = 0u; i < 4u; ++i) {
-            if (!within(fabs_(pt[i]), 1.0f)) {
-                return 0;
-            }
-        }
-        for (uint32_t i = 4u; i < 7u; ++i) {
-            if (!within(fabs_(pt[i]), 0x1p10f)) {
-                return 0;
-            }
-        }
-    }
     tfit_model v;
-    tfit_resonant_static(m, &v);
-    return v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v);
+    tfit_stateful_static(m, &v);
+    return tfit_stateful_terms_ok(m) && (v.family == TFIT_FAMILY_NODAL ? nodal_ok(&v) : modal_ok(&v));
 }
 
 static int range_ok(const tfit_model *m)
@@ -247,11 +202,10 @@ static int range_ok(const tfit_model *m)
     }
     switch (m->family) {
     case TFIT_FAMILY_PRONY:
-        return prony_ok(m);
+    case TFIT_FAMILY_RESONANT:
+        return stateful_ok(m);
     case TFIT_FAMILY_CUT:
         return cut_ok(m);
-    case TFIT_FAMILY_RESONANT:
-        return resonant_ok(m);
     case TFIT_FAMILY_MODAL:
         return modal_ok(m);
     case TFIT_FAMILY_MODAL_Q15:
@@ -332,32 +286,26 @@ static uint32_t far_input(uint32_t state, float in[3])
 /* The self-test: at each carried input the status and every output, point
  * by point (no buffer of 3 n_out floats), and at the far inputs the
  * projected g, each folded into a CRC-32 that must equal the host's.  A
- * prony model takes the inputs as ticks from a reset state: after the
- * status, each tick's new state words, and the static map sees the
- * filtered input h.  A cut model evaluates input k at the cut progress
+ * stateful model (prony, resonant) takes the inputs as ticks from a reset
+ * state: after the status, each tick's new state words, and the static map
+ * sees the filtered input h.  A cut model evaluates input k at the cut progress
  * s_k = k / 4 - 1/4 (both ends clamped). */
 static tfit_status self_test(const tfit_model *m)
 {
-    float in[3], g[3], h[3], out[3], st[TFIT_RESONANT_MAX_STATE];
+    float in[3], g[3], h[3], out[3], st[TFIT_STATEFUL_MAX_STATE];
     uint32_t bad, crc = 0xffffffffu;
-    const int prony = m->family == TFIT_FAMILY_PRONY;
-    const int resonant = m->family == TFIT_FAMILY_RESONANT;
+    const int stateful = tfit_filter_of(m->family) != 0;
     uint32_t state_words = 0u;
     const int cut = m->family == TFIT_FAMILY_CUT;
     float phi[TFIT_MAX_TERMS], sw = 0.0f;
     uint32_t knot = 0u;
     tfit_model static_map;
     const tfit_model *eval = m;
-    if (prony) {
-        (void)tfit_prony_reset(m, st);
-        tfit_prony_static(m, &static_map);
+    if (stateful) {
+        (void)tfit_stateful_reset(m->family, m, st);
+        tfit_stateful_static(m, &static_map);
         eval = &static_map;
-        state_words = TFIT_PRONY_STATE_WORDS(m->dims[2]);
-    } else if (resonant) {
-        (void)tfit_resonant_reset(m, st);
-        tfit_resonant_static(m, &static_map);
-        eval = &static_map;
-        state_words = TFIT_RESONANT_STATE_WORDS(m->dims[2]);
+        state_words = tfit_stateful_words(m);
     }
     for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_INPUTS; ++k) {
         for (uint32_t i = 0u; i < 3u; ++i) {
@@ -370,12 +318,8 @@ static tfit_status self_test(const tfit_model *m)
             tfit_basis(m->dims[0], g, phi);
         }
         crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u)); /* the status */
-        if (prony | resonant) { /* the new state, then the static map at h */
-            if (prony) {
-                tfit_prony_filter(m, g, ~bad, st, h);
-            } else {
-                tfit_resonant_filter(m, g, ~bad, st, h);
-            }
+        if (stateful) { /* the new state, then the static map at h */
+            tfit_stateful_filter(m, g, ~bad, st, h);
             for (uint32_t w = 0u; w < state_words; ++w) {
                 crc = tfit_crc32_word(crc, tfit_bits(st[w]));
             }
@@ -418,7 +362,7 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_MODAL_Q15) {
+    if (m->family < (uint32_t)TFIT_FAMILY_FIRST || m->family > (uint32_t)TFIT_FAMILY_LAST) {
         return TFIT_ERR_FAMILY;
     }
     /* Sizes before the CRC: the CRC reads n_coef floats. */

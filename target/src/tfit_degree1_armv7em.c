@@ -26,7 +26,7 @@
  *   - the projection with its integer selections as conditional moves.
  *
  * tfit_degree1_rows_asm() runs the rows alone, at a g the caller projected
- * and filtered (the prony family's static map at p = 1, tfit_prony.c).
+ * and filtered (a stateful model's static map at p = 1, tfit_stateful.c).
  *
  * Registers: g in s0-s2, a pair in s3-s26 (s16-s26 are callee-saved: the
  * compiler saves them, because they are clobbered); core r0 rows pointer,

@@ -15,11 +15,10 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
     const uint32_t n = 3u * m->n_out;
     static const uint32_t cut_s[16] = TFIT_CUT_GOLDEN_S_BITS;
     uint32_t mismatches = 0u;
-    float state[TFIT_RESONANT_MAX_STATE]; /* a stateful model's: one tick sequence */
-    if (m->family == TFIT_FAMILY_PRONY) {
-        (void)tfit_prony_reset(m, state);
-    } else if (m->family == TFIT_FAMILY_RESONANT) {
-        (void)tfit_resonant_reset(m, state);
+    float state[TFIT_STATEFUL_MAX_STATE]; /* a stateful model's: one tick sequence */
+    const int stateful = tfit_filter_of(m->family) != 0;
+    if (stateful) {
+        (void)tfit_stateful_reset(m->family, m, state);
     }
 
     for (uint32_t v = 0u; v < gv->n_vec; ++v) {
@@ -28,12 +27,12 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
         for (uint32_t i = 0u; i < 3u; ++i) {
             x[i] = tfit_float(gv->in[3u * v + i]);
         }
-        if (m->family == TFIT_FAMILY_PRONY) {
+        if (m->family == TFIT_FAMILY_PRONY) { /* the public entry points, as firmware calls them */
             s = tfit_prony_step(m, state, x, scratch);
-        } else if (m->family == TFIT_FAMILY_CUT) {
-            s = tfit_displacements_cut(m, x, tfit_float(cut_s[v & 15u]), scratch);
         } else if (m->family == TFIT_FAMILY_RESONANT) {
             s = tfit_resonant_step(m, state, x, scratch);
+        } else if (m->family == TFIT_FAMILY_CUT) {
+            s = tfit_displacements_cut(m, x, tfit_float(cut_s[v & 15u]), scratch);
         } else if (m->family == TFIT_FAMILY_CONTACT) {
             s = tfit_contact_force(m, x, scratch);
         } else {

@@ -81,6 +81,12 @@ static inline float tfit_masked(float x, uint32_t keep)
     return tfit_float(tfit_bits(x) & keep);
 }
 
+/* |x|, by clearing the sign bit. */
+static inline float tfit_abs(float x)
+{
+    return tfit_float(tfit_bits(x) & 0x7fffffffu);
+}
+
 static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
 {
     return a ^ ((a ^ b) & tfit_mask(a < b));
@@ -214,17 +220,6 @@ void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float
 void tfit_eval_zhou2017(const tfit_model *m, const float g[3], float *out);
 void tfit_eval_modal_q15(const tfit_model *m, const float g[3], uint32_t keep, float *out);
 
-/* The prony family's filter (tfit_prony.c, header-format.md §5.6): the
- * projected input g of this tick -> h, the input of the static map; the new
- * state is written over state when keep is all ones, else into a scratch
- * copy (state keeps every bit). */
-void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
-                       float h[3]);
-
-/* The static map of a prony model as a nodal or modal model *v (the fields
- * the evaluators read: family, n_out, n_dims, dims, coef, n_coef, node_ids). */
-void tfit_prony_static(const tfit_model *m, tfit_model *v);
-
 /* The cut family (tfit_cut.c, header-format.md §5.7): s -> the knot j and
  * weight w of its interval (s clamped onto [0, 1]; returns all ones when
  * it was clamped, *bad all ones for NaN/Inf, taken as 0); and output
@@ -250,18 +245,81 @@ static inline float *tfit_select_ptr(uint32_t mask, float *a, float *b)
     return (float *)(((uintptr_t)a & m) | ((uintptr_t)b & ~m));
 }
 
-/* The static map of a stateful model (prony, resonant) whose own terms
- * take `skip` floats after the input map, as a nodal (dims[1] = 0) or modal
- * model *v (tfit_stateful.c); and its evaluation at h, outputs and-ed with
- * keep (the degree-1 assembly for p = 1 nodal maps on Armv7E-M). */
-void tfit_stateful_static(const tfit_model *m, uint32_t skip, tfit_model *v);
-void tfit_stateful_eval(const tfit_model *v, const float h[3], uint32_t keep, float *out);
+/* ---- the stateful forms (tfit_stateful.c, docs/header-format.md §5.6, §5.8):
+ * one stepping path, a filter per form.  A filter's K terms take `floats`
+ * table floats each after the input map (the static map's tables follow
+ * them) and `words` state words each after gp[3]. */
+typedef struct tfit_filter {
+    uint32_t floats;    /* table floats per term */
+    uint32_t words;     /* state words per term */
+    uint32_t max_terms; /* K at most */
+} tfit_filter;
 
-/* The resonant family's filter (tfit_resonant.c, header-format.md §5.8),
- * as tfit_prony_filter; and its static map. */
+/* The filters (tfit_prony.c, tfit_resonant.c): the projected input g of
+ * this tick -> h, the input of the static map; the new state is written
+ * over state when keep is all ones, else into a scratch copy (state keeps
+ * every bit).  _terms_ok: the terms within the bounds that keep the state
+ * finite (tfit_model_check). */
+extern const tfit_filter tfit_filter_prony, tfit_filter_resonant;
+void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
+                       float h[3]);
 void tfit_resonant_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
                           float h[3]);
-void tfit_resonant_static(const tfit_model *m, tfit_model *v);
+int tfit_prony_terms_ok(const tfit_model *m);
+int tfit_resonant_terms_ok(const tfit_model *m);
+
+/* The filter of a stateful family, or NULL for any other family (inline:
+ * each tick asks it for the static map's offset). */
+static inline const tfit_filter *tfit_filter_of(uint32_t family)
+{
+    switch (family) {
+    case TFIT_FAMILY_PRONY:
+        return &tfit_filter_prony;
+    case TFIT_FAMILY_RESONANT:
+        return &tfit_filter_resonant;
+    default:
+        return 0;
+    }
+}
+/* For a stateful model only: its filter (by its family); its terms within
+ * their bounds (1, else 0); its state words, gp included; its static map
+ * as a nodal (dims[1] = 0) or modal model *v (the fields the evaluators
+ * read: family, n_out, n_dims, dims, coef, n_coef, node_ids); and that map
+ * at h, outputs and-ed with keep (the degree-1 assembly for p = 1 nodal
+ * maps on Armv7E-M). */
+void tfit_stateful_filter(const tfit_model *m, const float g[3], uint32_t keep, float *state,
+                          float h[3]);
+int tfit_stateful_terms_ok(const tfit_model *m);
+uint32_t tfit_stateful_words(const tfit_model *m);
+void tfit_stateful_static(const tfit_model *m, tfit_model *v);
+void tfit_stateful_eval(const tfit_model *v, const float h[3], uint32_t keep, float *out);
+/* A stateful form's public reset, for a model of the given family
+ * (tfit.h: TFIT_ERR_ARG for a NULL argument or table, TFIT_ERR_FAMILY for
+ * another family). */
+tfit_status tfit_stateful_reset(uint32_t family, const tfit_model *m, float *state);
+/* The checks of a stateful form's public step, in the order of tfit.h:
+ * TFIT_ERR_ARG for a NULL argument or table, TFIT_ERR_FAMILY for a model
+ * of another family, else TFIT_OK.  Inline, so that the step goes on to
+ * tfit_stateful_step() as a tail call. */
+static inline tfit_status tfit_stateful_refuse(uint32_t family, const tfit_model *m,
+                                               const float *state, const float *force,
+                                               const float *out)
+{
+    if ((m == 0) | (state == 0) | (force == 0) | (out == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    return m->family != family ? TFIT_ERR_FAMILY : TFIT_OK;
+}
+/* One tick of a checked stateful model (docs/header-format.md §5.6, §5.8). */
+tfit_status tfit_stateful_step(const tfit_model *m, float *state, const float force[3],
+                               float *out);
+/* State words of any stateful model, at most. */
+#define TFIT_STATEFUL_MAX_STATE TFIT_RESONANT_MAX_STATE
+_Static_assert(TFIT_PRONY_MAX_STATE <= TFIT_STATEFUL_MAX_STATE, "stateful state capacity");
+_Static_assert(TFIT_PRONY_DIMS == TFIT_RESONANT_DIMS, "the stateful forms share their dims");
 
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);

@@ -55,18 +55,20 @@ static uint32_t zhou2017_coefs(const tfit_model *m)
     return n;
 }
 
-/* {p, r, K, tick_ns}: K pairs {a_k, D_k} after the input map, then nodal
- * rows (r = 0) or a modal table of rank r; a tick of at least 1 ns. */
-static uint32_t prony_coefs(const tfit_model *m)
+/* {p, r, K, tick_ns}: K terms of the form's filter after the input map
+ * (tfit_stateful.c), then nodal rows (r = 0) or a modal table of rank r; a
+ * tick of at least 1 ns. */
+static uint32_t stateful_coefs(const tfit_model *m)
 {
+    const tfit_filter *f = tfit_filter_of(m->family);
     const uint32_t *dm = m->dims;
     const uint32_t p = dm[0], r = dm[1], terms = dm[2];
-    if (p > TFIT_MAX_DEGREE || r > TFIT_MAX_RANK || terms > TFIT_PRONY_MAX_TERMS || dm[3] == 0u) {
+    if (p > TFIT_MAX_DEGREE || r > TFIT_MAX_RANK || terms > f->max_terms || dm[3] == 0u) {
         return 0u;
     }
     const uint32_t table = r == 0u ? 3u * m->n_out * TFIT_TERMS(p)
                                    : r * TFIT_TERMS(p) + 3u * m->n_out * r;
-    return TFIT_INPUT_MAP_FLOATS + 2u * terms + table;
+    return TFIT_INPUT_MAP_FLOATS + f->floats * terms + table;
 }
 
 /* {p, K}: K + 1 nodal tables; 0 when the count would not fit uint32_t. */
@@ -78,21 +80,6 @@ static uint32_t cut_coefs(const tfit_model *m)
     }
     const uint64_t n = (uint64_t)(k + 1u) * 3u * m->n_out * TFIT_TERMS(p) + TFIT_INPUT_MAP_FLOATS;
     return n > 0xffffffffu ? 0u : (uint32_t)n;
-}
-
-/* {p, r, K, tick_ns}: K modes of 7 floats after the input map, then the
- * static map as for prony. */
-static uint32_t resonant_coefs(const tfit_model *m)
-{
-    const uint32_t *dm = m->dims;
-    const uint32_t p = dm[0], r = dm[1], modes = dm[2];
-    if (p > TFIT_MAX_DEGREE || r > TFIT_MAX_RANK || modes > TFIT_RESONANT_MAX_MODES ||
-        dm[3] == 0u) {
-        return 0u;
-    }
-    const uint32_t table = r == 0u ? 3u * m->n_out * TFIT_TERMS(p)
-                                   : r * TFIT_TERMS(p) + 3u * m->n_out * r;
-    return TFIT_INPUT_MAP_FLOATS + 7u * modes + table;
 }
 
 uint32_t tfit_expected_coefs(const tfit_model *m)
@@ -110,11 +97,10 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
     case TFIT_FAMILY_ZHOU2017:
         return m->n_dims == TFIT_ZHOU2017_DIMS ? zhou2017_coefs(m) : 0u;
     case TFIT_FAMILY_PRONY:
-        return m->n_dims == TFIT_PRONY_DIMS ? prony_coefs(m) : 0u;
+    case TFIT_FAMILY_RESONANT:
+        return m->n_dims == TFIT_PRONY_DIMS ? stateful_coefs(m) : 0u;
     case TFIT_FAMILY_CUT:
         return m->n_dims == TFIT_CUT_DIMS ? cut_coefs(m) : 0u;
-    case TFIT_FAMILY_RESONANT:
-        return m->n_dims == TFIT_RESONANT_DIMS ? resonant_coefs(m) : 0u;
     case TFIT_FAMILY_MODAL_Q15:
         return m->n_dims == TFIT_MODAL_Q15_DIMS ? modal_q15_coefs(m) : 0u;
     default:

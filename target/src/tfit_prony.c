@@ -1,7 +1,7 @@
 /*
- * tfit_prony.c — the prony family: viscoelastic creep under force control,
- * one fixed-cost step per tick with caller-owned state
- * (docs/header-format.md §5.6).
+ * tfit_prony.c — the prony form's filter: viscoelastic creep under force
+ * control, one fixed-cost step per tick with caller-owned state
+ * (docs/header-format.md §5.6), stepped by tfit_stateful.c.
  *
  * coef = input map (12) | K pairs {a_k, D_k} | the static map's tables
  * (nodal rows when r = 0, else modal A and U), dims = {p, r, K, tick_ns}.
@@ -24,7 +24,8 @@
  * No branch on the input or the state: a NaN/Inf tick writes its new state
  * into a scratch copy instead of the caller's (a pointer selected with a
  * mask), so the caller's state keeps every bit; the clamp of h is a bitwise
- * selection.  The clamp only acts on rounding: with w_k >= 0 and
+ * selection.  The projection, the static map and the public entry points'
+ * checks are the stateful forms' one stepping path (tfit_stateful.c).  The clamp only acts on rounding: with w_k >= 0 and
  * sum w_k <= 1 (the host fits them so) h is a weighted mean of past inputs,
  * inside the unit ball; it makes the static map's overflow proof
  * (tfit_check.c) hold for every state.
@@ -66,76 +67,34 @@ void tfit_prony_filter(const tfit_model *m, const float g[3], uint32_t keep, flo
     h[2] = tfit_clamp_unit(h2);
 }
 
-void tfit_prony_static(const tfit_model *m, tfit_model *v)
+/* Terms (header-format.md §8): 0 <= a_k <= 1 - 2^-20 and |D_k| <= 2^64.
+ * Then the state stays finite for every input sequence: |d_i| <= 2 (1 +
+ * 2^-20) after the projection, so |z| <= (1 + 2^-24)^2 (a |z| + 2.0001 |D|)
+ * at every step, whose fixed point is below 2^23 |D| <= 2^87 because
+ * 1 - a (1 + 2^-24)^2 > 2^-21; h is the clamped g - sum z.  The static map
+ * then sees |h_i| <= 1, as the nodal and modal proofs assume. */
+int tfit_prony_terms_ok(const tfit_model *m)
 {
-    const uint32_t skip = 2u * m->dims[2];
-    v->family = m->dims[1] == 0u ? TFIT_FAMILY_NODAL : TFIT_FAMILY_MODAL;
-    v->n_out = m->n_out;
-    v->n_dims = m->dims[1] == 0u ? TFIT_NODAL_DIMS : TFIT_MODAL_DIMS;
-    v->dims = m->dims;
-    v->coef = m->coef + skip;
-    v->n_coef = m->n_coef - skip;
-    v->node_ids = m->node_ids;
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0u; k < m->dims[2]; ++k) {
+        const float a = pt[2u * k], dk = tfit_abs(pt[2u * k + 1u]);
+        if (!(a >= 0.0f && a <= 1.0f - 0x1p-20f) || !(dk <= 0x1p64f)) {
+            return 0;
+        }
+    }
+    return 1;
 }
 
-/* The static map of a p = 1 model: the assembly of tfit_degree1_armv7em.c
- * on Cortex-M4F/M7, else the same operations in C. */
-static void degree1_rows(const float *rows, const float h[3], uint32_t n_out, uint32_t keep,
-                         float *out)
-{
-#if TFIT_DEGREE1_ASM
-    tfit_degree1_rows_asm(rows, h, n_out, keep, out);
-#else
-    tfit_rows_degree1(rows, h, n_out, keep, out);
-#endif
-}
+/* A term is {a_k, D_k}; its state is z_k[3]. */
+const tfit_filter tfit_filter_prony = {2u, 3u, TFIT_PRONY_MAX_TERMS};
 
 tfit_status tfit_prony_reset(const tfit_model *m, float *state)
 {
-    if ((m == 0) | (state == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if ((m->dims == 0) | (m->coef == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if (m->family != TFIT_FAMILY_PRONY) {
-        return TFIT_ERR_FAMILY;
-    }
-    const float zero[3] = {0.0f, 0.0f, 0.0f};
-    uint32_t bad;
-    /* volatile: GCC would make the zeroing loop a call to memset, which a
-     * freestanding library cannot make (check-freestanding: nm -u) */
-    volatile float *terms = state + 3;
-    (void)tfit_input_map(m->coef, zero, state, &bad); /* the projected zero force */
-    for (uint32_t w = 0u; w < 3u * m->dims[2]; ++w) {
-        terms[w] = 0.0f;
-    }
-    return TFIT_OK;
+    return tfit_stateful_reset(TFIT_FAMILY_PRONY, m, state);
 }
 
 tfit_status tfit_prony_step(const tfit_model *m, float *state, const float force[3], float *out)
 {
-    if ((m == 0) | (state == 0) | (force == 0) | (out == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if ((m->dims == 0) | (m->coef == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if (m->family != TFIT_FAMILY_PRONY) {
-        return TFIT_ERR_FAMILY;
-    }
-    float g[3], h[3];
-    uint32_t bad;
-    tfit_model v;
-    const uint32_t clamped = tfit_input_map(m->coef, force, g, &bad);
-    tfit_prony_filter(m, g, ~bad, state, h);
-    tfit_prony_static(m, &v);
-    if (v.family == TFIT_FAMILY_MODAL) {
-        tfit_eval_modal(&v, h, ~bad, out);
-    } else if (m->dims[0] != 1u) {
-        tfit_eval_nodal(&v, h, ~bad, out);
-    } else { /* p = 1: rows of {1, h0, h1, h2} (docs/firmware.md §5.4) */
-        degree1_rows(v.coef + TFIT_INPUT_MAP_FLOATS, h, m->n_out, ~bad, out);
-    }
-    return (tfit_status)((int)(clamped & ~bad & 1u) - (int)(bad & 1u));
+    const tfit_status refused = tfit_stateful_refuse(TFIT_FAMILY_PRONY, m, state, force, out);
+    return refused != TFIT_OK ? refused : tfit_stateful_step(m, state, force, out);
 }

@@ -1,7 +1,8 @@
 /*
- * tfit_resonant.c — the resonant family: a body with inertia under force
- * control, one fixed-cost step per tick with caller-owned state
- * (docs/header-format.md §5.8, docs/fitting.md §8).
+ * tfit_resonant.c — the resonant form's filter: a body with inertia under
+ * force control, one fixed-cost step per tick with caller-owned state
+ * (docs/header-format.md §5.8, docs/fitting.md §8), stepped by
+ * tfit_stateful.c.
  *
  * coef = input map (12) | K modes {f11, f12, f21, f22, w0, w1, w2}
  *        | the static map's tables (nodal rows when r = 0, else modal A, U),
@@ -77,51 +78,42 @@ void tfit_resonant_filter(const tfit_model *m, const float g[3], uint32_t keep, 
     h[2] = tfit_clamp_unit(h2);
 }
 
-void tfit_resonant_static(const tfit_model *m, tfit_model *v)
+/* Modes: |f_ij| <= 1 and |w| <= 2^10.  The bound that keeps the state
+ * finite is the host's: it refuses a model whose rounded F has a spectral
+ * norm above 1 - 2^-20 (host/model/forms/resonant.c), so the deviation
+ * (s - d, v) shrinks every tick and |s|, |v| stay below about 2^22 (|d| <= 2
+ * each tick over the contraction's margin 2^-20, plus rounding); the CRC
+ * makes the table the host's.  Here the magnitudes are checked again (a
+ * table within them cannot overflow in one tick), and h is clamped before
+ * the static map. */
+int tfit_resonant_terms_ok(const tfit_model *m)
 {
-    tfit_stateful_static(m, MODE_FLOATS * m->dims[2], v);
+    const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
+    for (uint32_t k = 0u; k < m->dims[2]; ++k, pt += MODE_FLOATS) {
+        for (uint32_t i = 0u; i < 4u; ++i) {
+            if (!(tfit_abs(pt[i]) <= 1.0f)) {
+                return 0;
+            }
+        }
+        for (uint32_t i = 4u; i < MODE_FLOATS; ++i) {
+            if (!(tfit_abs(pt[i]) <= 0x1p10f)) {
+                return 0;
+            }
+        }
+    }
+    return 1;
 }
+
+/* A mode is {f11, f12, f21, f22, w0, w1, w2}; its state is s[3], v[3]. */
+const tfit_filter tfit_filter_resonant = {MODE_FLOATS, 6u, TFIT_RESONANT_MAX_MODES};
 
 tfit_status tfit_resonant_reset(const tfit_model *m, float *state)
 {
-    if ((m == 0) | (state == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if ((m->dims == 0) | (m->coef == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if (m->family != TFIT_FAMILY_RESONANT) {
-        return TFIT_ERR_FAMILY;
-    }
-    const float zero[3] = {0.0f, 0.0f, 0.0f};
-    uint32_t bad;
-    /* volatile: no memset call in a freestanding library (as tfit_prony.c) */
-    volatile float *modes = state + 3;
-    (void)tfit_input_map(m->coef, zero, state, &bad); /* the projected zero force */
-    for (uint32_t w = 0u; w < 6u * m->dims[2]; ++w) {
-        modes[w] = 0.0f;
-    }
-    return TFIT_OK;
+    return tfit_stateful_reset(TFIT_FAMILY_RESONANT, m, state);
 }
 
-tfit_status tfit_resonant_step(const tfit_model *m, float *state, const float force[3],
-                               float *out)
+tfit_status tfit_resonant_step(const tfit_model *m, float *state, const float force[3], float *out)
 {
-    if ((m == 0) | (state == 0) | (force == 0) | (out == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if ((m->dims == 0) | (m->coef == 0)) {
-        return TFIT_ERR_ARG;
-    }
-    if (m->family != TFIT_FAMILY_RESONANT) {
-        return TFIT_ERR_FAMILY;
-    }
-    float g[3], h[3];
-    uint32_t bad;
-    tfit_model v;
-    const uint32_t clamped = tfit_input_map(m->coef, force, g, &bad);
-    tfit_resonant_filter(m, g, ~bad, state, h);
-    tfit_resonant_static(m, &v);
-    tfit_stateful_eval(&v, h, ~bad, out);
-    return (tfit_status)((int)(clamped & ~bad & 1u) - (int)(bad & 1u));
+    const tfit_status refused = tfit_stateful_refuse(TFIT_FAMILY_RESONANT, m, state, force, out);
+    return refused != TFIT_OK ? refused : tfit_stateful_step(m, state, force, out);
 }
