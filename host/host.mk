@@ -7,7 +7,7 @@
 # before it, never a later one (tests/layers/check_includes.sh, in make
 # check).  A new folder goes into this list; docs/architecture.md says what
 # each holds.
-HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify model cost \
+HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify cost model \
                fitting dist emit tradeoff report scene cli
 
 # dist/ and cli/main_mpi.c need MPI: only the MPI build (host/dist/dist.mk) compiles them.

@@ -1,13 +1,17 @@
 /*
- * cycles.h — estimated cycles of one evaluation on Cortex-M4F and Cortex-M7
- * (docs/firmware.md, "Cycle estimates").
+ * cycles.h — the cycle model of the compiled evaluator on Cortex-M4F and
+ * Cortex-M7 (docs/firmware.md, "Cycle estimates"): instruction classes and
+ * mixes, the blocks of the compiled code, and the cycles of a mix.
  *
  * The estimate is instruction mix x cycles per instruction class.  The mix
  * comes from the structure of the compiled evaluator (arm-none-eabi-gcc -O2):
  * per loop iteration and per call, instructions counted by class from
  * arm-none-eabi-objdump (tests/firmware/insn_mix.c checks that the compiled
  * code still has exactly these mixes, and the QEMU runs check the total
- * instruction count per call).  The cycles per class come from the Cortex-M4
+ * instruction count per call).  A block is a piece of the compiled code: a
+ * loop body or a path outside loops.  The blocks several forms run are in
+ * cost/evaluator.h; each form adds its own and composes a call's mix
+ * from them (model/forms/form.h); nothing here knows a model.  The cycles per class come from the Cortex-M4
  * technical reference manual (Arm DDI 0439B, table 3-1 "Cortex-M4
  * instruction set summary" and table 7-1 "FPU instruction set"); the
  * Cortex-M7 manual (Arm DDI 0489) gives no such table, so its costs are a
@@ -18,8 +22,6 @@
 
 #include <stddef.h>
 #include <stdint.h>
-
-#include "model/model.h"
 
 typedef enum tf_insn_class {
     TF_INSN_ALU,    /* data processing, moves, compares, IT */
@@ -72,20 +74,36 @@ typedef struct tf_cycles {
 double tf_core_mhz(tf_core core);
 const char *tf_core_name(tf_core core); /* "M4F", "M7" */
 
-/* The instructions one call executes, by class (the model's prediction of
- * what QEMU traces). */
-void tf_cycles_mix(const tf_model *m, tf_core core, tf_insn_mix *mix);
-
-/* Cycles of a given instruction mix (e.g. one traced under QEMU). */
+/* Cycles of a given instruction mix (e.g. one traced under QEMU, or a
+ * model's: tf_model_cycles, model/model.h). */
 tf_cycles tf_cycles_of_mix(const tf_insn_mix *mix, tf_core core);
 
-/* Estimate for one evaluation of m (tfit_displacements or
- * tfit_contact_force, including the call from C). */
-tf_cycles tf_cycles_estimate(const tf_model *m, tf_core core);
+/* A block of the compiled evaluator: a loop body ("loop K" of FUNCTION, K
+ * counted by address as tests/firmware/insn_mix.c numbers them, at nesting
+ * depth D; its own instructions, without nested loops) or a path through
+ * code outside loops (loop 0), with its mix on each core ("alu=4 fload=12
+ * ...": the M4F build, the M7 build). */
+typedef struct tf_block {
+    const char *function;
+    int loop, depth;
+    const char *mix[TF_CORES];
+} tf_block;
+#define TF_SAME(s) {s, s} /* one mix on both cores */
 
-/* The loop mixes the estimate assumes, one line per loop in the format of
- * tests/firmware/insn_mix.c ("FUNCTION loop K depth D: mix"), for the
- * objdump cross-check.  Writes at most n bytes; returns the length needed. */
-size_t tf_cycles_loop_table(tf_core core, char *buf, size_t n);
+/* Adds (subtracts) block b, run `times` times, to the mix t. */
+void tf_insn_add(tf_insn_mix *t, const tf_block *b, tf_core core, uint64_t times);
+void tf_insn_sub(tf_insn_mix *t, const tf_block *b, tf_core core, uint64_t times);
+/* A loop block run n times: its back edge falls through the last time. */
+void tf_insn_loop(tf_insn_mix *t, const tf_block *b, tf_core core, uint64_t n);
+/* n conditional branches that fall through instead of being taken (a
+ * loop's last back edge, a skip not taken), or the reverse. */
+void tf_insn_falls_through(tf_insn_mix *t, uint64_t n);
+void tf_insn_taken(tf_insn_mix *t, uint64_t n);
+
+/* The loop blocks of blocks[0..n), one line each in the format of
+ * tests/firmware/insn_mix.c ("FUNCTION loop K depth D: mix"), written at
+ * buf + at (at most len bytes in all); returns at plus the length needed. */
+size_t tf_insn_loop_lines(const tf_block *blocks, size_t n, tf_core core, char *buf, size_t len,
+                          size_t at);
 
 #endif /* TF_CYCLES_H */

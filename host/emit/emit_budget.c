@@ -35,8 +35,8 @@ void tf_emit_budget_macros(FILE *f, const tf_family_cost *cost, const char *p)
 static void servo(const tf_model *fwd, const tf_model *con, unsigned hz, double *use,
                   double *tick)
 {
-    *use = ceil(tf_cycles_estimate(fwd, TF_CORE_M4F).cycles) +
-           ceil(tf_cycles_estimate(con, TF_CORE_M4F).cycles);
+    *use = ceil(tf_model_cycles(fwd, TF_CORE_M4F).cycles) +
+           ceil(tf_model_cycles(con, TF_CORE_M4F).cycles);
     *tick = floor(tf_core_mhz(TF_CORE_M4F) * 1e6 / hz);
 }
 

@@ -15,10 +15,9 @@
 
 #include "base/atomic_file.h"
 #include "emit/emit_budget.h"
-#include "emit/emit_prony.h"
-#include "emit/emit_resonant.h"
 #include "emit/emit_q31.h"
 #include "fitting/families/family.h"
+#include "model/forms/form.h"
 #include "model/golden.h"
 #include "model/ref_eval.h"
 
@@ -90,12 +89,15 @@ static int inverse(const tf_model *m)
     return family(m)->kind == TF_FAMILY_INVERSE;
 }
 
+/* The model's form (check_models refuses a model without one). */
+static const tf_form *form(const tf_model *m)
+{
+    return tf_form_of(m->family);
+}
+
 static const char *input_desc(const tf_model *m)
 {
-    if (m->family == TFIT_FAMILY_CUT) {
-        return "force [N] and cut progress s in [0, 1] (tfit_displacements_cut)";
-    }
-    return inverse(m) ? "contact displacement [mm]" : "force [N]";
+    return form(m)->input;
 }
 
 static const char *output_desc(const tf_model *m)
@@ -174,8 +176,9 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                 (unsigned long long)cost.ops.div, cost.table_bytes);
         tf_emit_budget_banner(f, &cost);
         tf_emit_q31_banner(f, m);
-        tf_emit_prony_banner(f, m);
-        tf_emit_resonant_banner(f, m);
+        if (form(m)->emit_banner != NULL) {
+            form(m)->emit_banner(f, m);
+        }
         if (isnan(m->heldout_max)) {
             fprintf(f, " *       held-out error: not measured\n");
         } else {
@@ -241,8 +244,9 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
         snprintf(prefix, sizeof prefix, "TFIT_%s", p);
         tf_emit_budget_macros(f, &cost, prefix);
         tf_emit_q31_macros(f, m, prefix);
-        tf_emit_prony_macros(f, m, prefix);
-        tf_emit_resonant_macros(f, m, prefix);
+        if (form(m)->emit_macros != NULL) {
+            form(m)->emit_macros(f, m, prefix);
+        }
     }
     if (!isnan(m->heldout_max)) {
         const char *u = output_unit(m, 1);
@@ -275,105 +279,17 @@ static void write_macros(FILE *f, const tf_model *m, uint32_t crc)
     fprintf(f, "extern const tfit_model tfit_%s;\n", m->name);
 }
 
-static void write_floats(FILE *f, const float *v, size_t n, const char *comment)
-{
-    if (comment != NULL) {
-        fprintf(f, "    /* %s */\n", comment);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        fprintf(f, "%s%af,%s", i % 4 == 0 ? "    " : " ", (double)v[i],
-                (i % 4 == 3 || i + 1 == n) ? "\n" : "");
-    }
-}
-
 /* The coefficient table with a comment per block, so the header documents
- * its own layout (docs/header-format.md §3). */
-static void write_tables(FILE *f, const tf_model *m, const char *site);
-
+ * its own layout (docs/header-format.md §3): the input map, then the form's
+ * tables. */
 static void write_coef(FILE *f, const tf_model *m, const char *site)
 {
     const float *c = m->coef;
     fprintf(f, "static const float tfit_%s_coef[%u] = {\n", m->name, m->n_coef);
-    write_floats(f, c, 3, "input map: envelope centre x0");
-    write_floats(f, c + 3, 9, "input map: W (row-major), g = W (x - x0)");
-    if (m->family == TFIT_FAMILY_PRONY) {
-        const tf_model v = tf_prony_static_view(m);
-        tf_emit_prony_terms(f, m);
-        write_tables(f, &v, site);
-    } else if (m->family == TFIT_FAMILY_RESONANT) {
-        const tf_model v = tf_stateful_static_view(m);
-        tf_emit_resonant_modes(f, m);
-        write_tables(f, &v, site);
-    } else {
-        write_tables(f, m, site);
-    }
+    tf_form_write_floats(f, c, 3, "input map: envelope centre x0");
+    tf_form_write_floats(f, c + 3, 9, "input map: W (row-major), g = W (x - x0)");
+    form(m)->emit_tables(f, m, site);
     fprintf(f, "};\n");
-}
-
-/* The family's tables after the input map (a prony model's static map is
- * written as its own family). */
-static void write_tables(FILE *f, const tf_model *m, const char *site)
-{
-    static const char comp[] = "xyz";
-    char note[128];
-    const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
-    if (m->family == TFIT_FAMILY_NODAL || m->family == TFIT_FAMILY_CONTACT) {
-        uint32_t t = tf_terms(m->dims[0]);
-        for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += t) {
-            snprintf(note, sizeof note, "%s %u %c%s", inverse(m) ? "node" : site,
-                     m->node_ids[o / 3], comp[o % 3], inverse(m) ? " force" : "");
-            write_floats(f, c, t, note);
-        }
-    } else if (m->family == TFIT_FAMILY_CUT) { /* a nodal table per knot s = k / K */
-        uint32_t t = tf_terms(m->dims[0]);
-        for (uint32_t o = 0; o < 3 * m->n_out * (m->dims[1] + 1); ++o, c += t) {
-            uint32_t knot = o / (3 * m->n_out), r = o % (3 * m->n_out);
-            snprintf(note, sizeof note, "s = %u/%u: %s %u %c", knot, m->dims[1], site,
-                     m->node_ids[r / 3], comp[r % 3]);
-            write_floats(f, c, t, note);
-        }
-    } else if (m->family == TFIT_FAMILY_MODAL) {
-        uint32_t t = tf_terms(m->dims[0]), r = m->dims[1];
-        for (uint32_t k = 0; k < r; ++k, c += t) {
-            snprintf(note, sizeof note, "amplitude of mode %u", k);
-            write_floats(f, c, t, note);
-        }
-        for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += r) {
-            snprintf(note, sizeof note, "modes at %s %u %c", site, m->node_ids[o / 3],
-                     comp[o % 3]);
-            write_floats(f, c, r, note);
-        }
-    } else if (m->family == TFIT_FAMILY_MODAL_Q15) { /* header-format.md §5.9 */
-        uint32_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
-        for (uint32_t j = 0; j < t; ++j, c += r) {
-            snprintf(note, sizeof note, "term %u of the 8 mode amplitudes", j);
-            write_floats(f, c, r, note);
-        }
-        write_floats(f, c, r, "Q15 amplitude scales v_k");
-        write_floats(f, c + r, 1, "output scale S (mm)");
-        c += r + 1;
-        for (uint32_t o = 0; o < 3 * m->n_out; ++o, c += TFIT_MODAL_Q15_WORDS) {
-            snprintf(note, sizeof note, "Q15 modes at %s %u %c (word bits: q[2j] | q[2j+1] + 16384)",
-                     site, m->node_ids[o / 3], comp[o % 3]);
-            write_floats(f, c, TFIT_MODAL_Q15_WORDS, note);
-        }
-    } else {
-        for (int a = 0; a < 3; ++a) {
-            snprintf(note, sizeof note, "contact displacement %c(g%c), then its scale", comp[a],
-                     comp[a]);
-            write_floats(f, c, m->dims[a] + 2, note);
-            c += m->dims[a] + 2;
-        }
-        for (int pair = 0; pair < 9; ++pair) {
-            const uint32_t *o = m->dims + 3 + 3 * pair;
-            uint32_t n = (o[0] + o[1] + 1) * (o[2] + 1);
-            snprintf(note, sizeof note, "surface u%c under force %c: beta[%u][%u]",
-                     comp[pair % 3], comp[pair / 3], o[0] + o[1] + 1, o[2] + 1);
-            write_floats(f, c, n, note);
-            c += n;
-        }
-        write_floats(f, c, 2 * m->n_out, "normalised node coordinates X, Y");
-    }
 }
 
 static void write_u32_values(FILE *f, const uint32_t *v, size_t n, int hex)
@@ -453,7 +369,7 @@ static void write_map_tables(FILE *f, const char *base, const tf_emit_map *m)
         }
         fprintf(f, "const float tfit_%s_rest_%s[%zu] = {\n", base, which == 0 ? "mm" : "file",
                 n3);
-        write_floats(f, v, n3, NULL);
+        tf_form_write_floats(f, v, n3, NULL);
         fprintf(f, "};\n");
     }
     free(v);
@@ -657,7 +573,7 @@ static int check_models(const char *base, tf_model *const *models, size_t n, cha
                 return -1;
             }
         }
-        if (tf_family_of(models[i]->family) == NULL) {
+        if (tf_family_of(models[i]->family) == NULL || tf_form_of(models[i]->family) == NULL) {
             snprintf(err, errlen, "model '%s': family %d is not registered", models[i]->name,
                      (int)models[i]->family);
             return -1;

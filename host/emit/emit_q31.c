@@ -11,6 +11,7 @@
 #include <stdlib.h>
 
 #include "fitting/families/family.h"
+#include "model/forms/form.h"
 #include "model/q31.h"
 
 #define ERROR_SEED 0x51u /* fixed: the same header every time */
@@ -31,15 +32,20 @@ static const char *in_unit(const tf_model *m)
     return inverse(m) ? "mm" : "N";
 }
 
-/* The Q31 form by the model's family, or NULL with the reason. */
+/* The Q31 form of the model's form (form.h), or NULL with the reason. */
+static const tf_form_q31 *form_q31(const tf_model *m)
+{
+    return tf_form_of(m->family)->q31;
+}
+
 static tf_q31 *quantised(const tf_model *m, char *err, size_t errlen)
 {
-    const tf_family *f = tf_family_of(m->family);
+    const tf_form *f = tf_form_of(m->family);
     if (f->q31 == NULL) {
         snprintf(err, errlen, "model '%s': no Q31 form for the %s family", m->name, f->name);
         return NULL;
     }
-    return f->q31(m, err, errlen);
+    return f->q31->quantise(m, err, errlen);
 }
 
 static tf_q31 *measured(const tf_model *m, char *err, size_t errlen)
@@ -64,18 +70,8 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
             "%.3g %s (float32 path: %.3g)\n",
             m->name, q->in_exp, in_unit(m), q->out_exp, unit(m, 0), q->added_error, unit(m, 0),
             q->float_error);
-    if (q->family == TFIT_FAMILY_PRONY) {
-        fprintf(f,
-                " *         (prony, q31-format.md section 8: %u ticks of a press-hold-release "
-                "history from rest against the float coefficients stepped in double; state %u "
-                "int32 words, tfit_prony_reset_q31, tfit_prony_step_q31)\n",
-                q->error_cases, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
-        if (!isnan(m->heldout_q31_max)) {
-            fprintf(f,
-                    " *         Q31 against the held-out solves: max %.3g %s over %u histories (the "
-                    "float model's %.3g)\n",
-                    m->heldout_q31_max, unit(m, 0), m->heldout_cases, m->heldout_max);
-        }
+    if (form_q31(m)->emit_banner != NULL) {
+        form_q31(m)->emit_banner(f, q, m);
     }
     tf_q31_free(q);
 }
@@ -94,44 +90,16 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
     fprintf(f,
             "#define %s_Q31_ADDED_ERROR_%s %.6g /* max |Q31 - exact| at %u %s; "
             "float32: %.6g */\n",
-            p, unit(m, 1), q->added_error, q->error_cases,
-            q->family == TFIT_FAMILY_PRONY ? "ticks of a press-hold-release history" : "envelope points",
+            p, unit(m, 1), q->added_error, q->error_cases, form_q31(m)->error_cases,
             q->float_error);
-    if (q->family == TFIT_FAMILY_PRONY) {
-        fprintf(f,
-                "#define %s_Q31_STATE_WORDS %uu /* int32 state[]: tfit_prony_reset_q31, _step_q31 "
-                "*/\n",
-                p, TFIT_PRONY_Q31_STATE_WORDS(q->terms));
-        if (!isnan(m->heldout_q31_max)) {
-            fprintf(f,
-                    "#define %s_Q31_HELDOUT_MAX_%s %.6g /* the Q31 form's held-out max, measured "
-                    "*/\n",
-                    p, unit(m, 1), m->heldout_q31_max);
-        }
+    if (form_q31(m)->emit_macros != NULL) {
+        form_q31(m)->emit_macros(f, q, m, p);
     }
     fprintf(f, "#define %s_Q31_CRC32 0x%08xu\n", p, tf_q31_crc32(q));
     fprintf(f, "#define tfit_%s_q31 tfit_%s_q31_%08x /* this header's version of the model */\n",
             m->name, m->name, tf_q31_crc32(q));
     fprintf(f, "extern const tfit_model_q31 tfit_%s_q31;\n", m->name);
     tf_q31_free(q);
-}
-
-static void write_i32(FILE *f, const int32_t *v, size_t n, const char *comment)
-{
-    if (comment != NULL) {
-        fprintf(f, "    /* %s */\n", comment);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        const char *sep = i % 6 == 0 ? "    " : " ";
-        if (v[i] == INT32_MIN) {
-            fprintf(f, "%s(-2147483647 - 1),", sep);
-        } else {
-            fprintf(f, "%s%d,", sep, v[i]);
-        }
-        if (i % 6 == 5 || i + 1 == n) {
-            fprintf(f, "\n");
-        }
-    }
 }
 
 void tf_emit_q31_definition(FILE *f, const tf_model *m)
@@ -144,19 +112,17 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
     }
     const uint32_t t = tf_terms(q->degree);
     fprintf(f, "static const int32_t tfit_%s_q31_coef[%u] = {\n", m->name, q->n_words);
-    write_i32(f, q->q, 3, "Q31 input map: centre (Q30 of 2^IN_EXP)");
-    write_i32(f, q->q + 3, 9, "W (row-major), then the projection's headroom H");
-    write_i32(f, q->q + 12, 1, NULL);
+    tf_q31_write_words(f, q->q, 3, "Q31 input map: centre (Q30 of 2^IN_EXP)");
+    tf_q31_write_words(f, q->q + 3, 9, "W (row-major), then the projection's headroom H");
+    tf_q31_write_words(f, q->q + 12, 1, NULL);
     const int32_t *rows = q->q + TFIT_Q31_MAP_WORDS;
-    if (q->family == TFIT_FAMILY_PRONY) {
-        write_i32(f, rows, 1, "prony: K, then {a_k (Q31), D_k (Q30)} per term");
-        write_i32(f, rows + 1, 2 * q->terms, NULL);
-        rows += 1 + 2 * q->terms;
+    if (form_q31(m)->emit_words != NULL) { /* a form's words before the rows */
+        rows += form_q31(m)->emit_words(f, q);
     }
     for (uint32_t o = 0; o < 3 * q->n_out; ++o) {
         snprintf(note, sizeof note, "node %u %c: shift, then %u coefficients", m->node_ids[o / 3],
                  comp[o % 3], t);
-        write_i32(f, rows + o * (t + 1), t + 1, note);
+        tf_q31_write_words(f, rows + o * (t + 1), t + 1, note);
     }
     fprintf(f, "};\n");
     fprintf(f,
@@ -182,14 +148,7 @@ int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
         tf_q31_free(q);
         return -1;
     }
-    int32_t state[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
-    if (q->family == TFIT_FAMILY_PRONY) { /* one tick sequence from rest */
-        tf_q31_ref_prony_reset(q, state);
-    }
-    for (size_t v = 0; v < n_vec; ++v) {
-        status[v] = (int32_t)(q->family == TFIT_FAMILY_PRONY ? tf_q31_ref_prony_step(q, state, in[v], out + v * n_out)
-                                           : tf_q31_ref_eval(q, in[v], out + v * n_out, NULL));
-    }
+    form_q31(m)->run(q, (const int32_t(*)[3])in, n_vec, status, out);
     char upper[TF_NAME_MAX];
     size_t k = 0;
     for (; m->name[k] != '\0' && k + 1 < sizeof upper; ++k) {
@@ -198,12 +157,12 @@ int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
     upper[k] = '\0';
     fprintf(f, "\n#define TFIT_%s_Q31_GOLDEN_N %zu\n", upper, n_vec);
     fprintf(f, "static const int32_t tfit_%s_q31_golden_in[%zu] = {\n", m->name, 3 * n_vec);
-    write_i32(f, &in[0][0], 3 * n_vec, NULL);
+    tf_q31_write_words(f, &in[0][0], 3 * n_vec, NULL);
     fprintf(f, "};\nstatic const int32_t tfit_%s_q31_golden_status[%zu] = {\n", m->name, n_vec);
-    write_i32(f, status, n_vec, NULL);
+    tf_q31_write_words(f, status, n_vec, NULL);
     fprintf(f, "};\nstatic const int32_t tfit_%s_q31_golden_out[%zu] = {\n", m->name,
             n_vec * n_out);
-    write_i32(f, out, n_vec * n_out, NULL);
+    tf_q31_write_words(f, out, n_vec * n_out, NULL);
     fprintf(f,
             "};\nstatic const tfit_golden_q31 tfit_%s_q31_golden = {\n    &tfit_%s_q31, %zuu, "
             "tfit_%s_q31_golden_in, tfit_%s_q31_golden_status, tfit_%s_q31_golden_out\n};\n",

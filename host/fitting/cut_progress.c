@@ -12,7 +12,7 @@
 #include "base/log.h"
 #include "base/rng.h"
 #include "meshfree/cut.h"
-#include "model/ref_eval.h"
+#include "model/forms/cut.h"
 #include "solvers/probe.h"
 
 /* One s: the problem with every cut truncated at s, a solver of it, the
@@ -141,7 +141,7 @@ int tf_cut_cases_errors(const tf_model *m, const tf_cut_cases *c, size_t i, cons
     for (size_t j = 0; j < d->n_cases; ++j) {
         const float in[3] = {(float)d->force[j][0], (float)d->force[j][1], (float)d->force[j][2]};
         const double f[3] = {in[0], in[1], in[2]};
-        tf_ref_eval_cut(m, in, c->s[i], out, NULL);
+        tf_cut_ref_eval(m, in, c->s[i], out, NULL);
         tf_cut_cases_response(c, i, f, truth);
         for (size_t o = 0; o < c->rows; ++o) {
             double e = (double)out[o] - truth[o];

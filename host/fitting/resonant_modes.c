@@ -11,7 +11,7 @@
 #include <lapacke.h>
 
 #include "fitting/families/common.h"
-#include "model/resonant.h"
+#include "model/forms/resonant.h"
 #include "numerics/lm.h"
 
 #define MAXK TFIT_RESONANT_MAX_MODES

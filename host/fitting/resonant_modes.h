@@ -5,7 +5,7 @@
  * The data are those of the prony family (prony_terms.h, tf_prony_data):
  * per history and tick the projected input g the device computes and the
  * target h, the input at which the static map gives the true displacements.
- * The model is the device's filter in double (model/resonant.h, zero-order
+ * The model is the device's filter in double (model/forms/resonant.h, zero-order
  * hold), per axis i:
  *
  *     h_i[n] = g_i[n] + sum_k w_ki s_ki[n],

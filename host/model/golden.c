@@ -13,6 +13,8 @@
 #include <zlib.h>
 
 #include "base/rng.h"
+#include "model/forms/form.h"
+#include "model/forms/stateful.h"
 #include "model/ref_eval.h"
 
 /* Inverse of the model's W (3x3, from its float entries) by cofactors. */
@@ -212,49 +214,39 @@ size_t tf_golden_ticks(const tf_model *m, uint64_t seed, float in[][3])
  * Newton step and the power-of-two scalings).  At each the target folds
  * the status and every output into one CRC; at TFIT_CHECK_FAR generated
  * inputs far beyond it, the projected g into a second (tfit_check.c). */
-static const size_t check_pick[TFIT_CHECK_INPUTS] = {2, 3, 4, 5, 32, 44, 45, 46};
-/* A prony model's, a tick sequence from rest (tf_golden_ticks): the press
- * from 0.1 to 0.4 of the radius, the boundary, a random point, a NaN tick
- * (the skip), and the 10x and 1e30x points beyond the envelope. */
-static const size_t check_pick_ticks[TFIT_CHECK_INPUTS] = {1, 2, 3, 4, 11, 29, 42, 47};
+const size_t tf_golden_pick_points[TFIT_CHECK_INPUTS] = {2, 3, 4, 5, 32, 44, 45, 46};
+/* A stateful model's, a tick sequence from rest (tf_golden_ticks): the
+ * press from 0.1 to 0.4 of the radius, the boundary, a random point, a NaN
+ * tick (the skip), and the 10x and 1e30x points beyond the envelope. */
+const size_t tf_golden_pick_ticks[TFIT_CHECK_INPUTS] = {1, 2, 3, 4, 11, 29, 42, 47};
 #define CHECK_SEED 0x7466u
 
 int tf_check_vector(const tf_model *m, uint32_t check[TFIT_CHECK_WORDS])
 {
     float in[TF_GOLDEN_MAX][3];
+    const tf_form *f = tf_form_of(m->family);
     const size_t n = 3 * (size_t)m->n_out;
     float *out = malloc(n * sizeof *out);
     if (out == NULL) {
         return -1;
     }
-    const int prony = tf_model_stateful(m); /* prony or resonant: ticks */
-    float st[TFIT_RESONANT_MAX_STATE];
-    const uint32_t words = m->family == TFIT_FAMILY_RESONANT
-                               ? TFIT_RESONANT_STATE_WORDS(m->dims[2])
-                               : TFIT_PRONY_STATE_WORDS(m->dims[2]);
-    if (prony) {
-        tf_golden_ticks(m, CHECK_SEED, in);
-        tf_ref_stateful_reset(m, st);
-    } else {
-        tf_golden_inputs(m, CHECK_SEED, in);
+    /* a stateful model's state (tfit_check.c folds its words in) */
+    float st[TF_STATEFUL_MAX_STATE];
+    const uint32_t words = f->filter != NULL ? tf_stateful_words(m) : 0;
+    f->golden_inputs(m, CHECK_SEED, in);
+    if (words > 0) {
+        tf_stateful_reset(m, st);
     }
     uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0);
     for (int k = 0; k < TFIT_CHECK_INPUTS; ++k) {
-        const float *x = in[prony ? check_pick_ticks[k] : check_pick[k]];
+        const float *x = in[f->check_pick[k]];
         memcpy(check + 3 * k, x, 3 * sizeof *check);
-        if (prony) { /* the status, the new state, the outputs (tfit_check.c) */
-            tfit_status status = tf_ref_stateful_step(m, st, x, out, NULL);
-            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)status);
-            for (uint32_t w = 0; w < words; ++w) {
-                uint32_t bits;
-                memcpy(&bits, &st[w], sizeof bits);
-                crc = tf_crc32_u32(crc, bits);
-            }
-        } else if (m->family == TFIT_FAMILY_CUT) { /* at s_k = k/4 - 1/4 (tfit_check.c) */
-            const float s = (float)k * 0.25f - 0.25f;
-            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval_cut(m, x, s, out, NULL));
-        } else {
-            crc = tf_crc32_u32(crc, (uint32_t)(int32_t)tf_ref_eval(m, x, out, NULL));
+        /* the status, a stateful model's new state, the outputs */
+        crc = tf_crc32_u32(crc, (uint32_t)(int32_t)f->check_step(m, st, k, x, out));
+        for (uint32_t w = 0; w < words; ++w) {
+            uint32_t bits;
+            memcpy(&bits, &st[w], sizeof bits);
+            crc = tf_crc32_u32(crc, bits);
         }
         for (size_t o = 0; o < n; ++o) {
             uint32_t w;
@@ -296,5 +288,5 @@ uint32_t tf_model_crc32_checked(const tf_model *m, const uint32_t check[TFIT_CHE
 
 size_t tf_golden_design(const tf_model *m, uint64_t seed, float in[][3])
 {
-    return tf_model_stateful(m) ? tf_golden_ticks(m, seed, in) : tf_golden_inputs(m, seed, in);
+    return tf_form_of(m->family)->golden_inputs(m, seed, in);
 }

@@ -17,14 +17,20 @@
 /* Fills in[][3] (capacity TF_GOLDEN_MAX) and returns the count. */
 size_t tf_golden_inputs(const tf_model *m, uint64_t seed, float in[][3]);
 
-/* A prony model's golden design: one tick sequence from rest (press to the
- * envelope's boundary, hold, release, rest, random forces inside, NaN/Inf
- * ticks between equal forces, forces beyond the envelope, the largest and
- * subnormal floats), at most TF_GOLDEN_MAX ticks.  Returns the count. */
+/* A stateful model's golden design: one tick sequence from rest (press to
+ * the envelope's boundary, hold, release, rest, random forces inside,
+ * NaN/Inf ticks between equal forces, forces beyond the envelope, the
+ * largest and subnormal floats), at most TF_GOLDEN_MAX ticks.  Returns the
+ * count. */
 size_t tf_golden_ticks(const tf_model *m, uint64_t seed, float in[][3]);
 
-/* The golden design of any model: tf_golden_ticks for a prony model, else
- * tf_golden_inputs. */
+/* The self-test inputs' indices in each design (a form names its design
+ * and these: model/forms/form.h). */
+extern const size_t tf_golden_pick_points[TFIT_CHECK_INPUTS];
+extern const size_t tf_golden_pick_ticks[TFIT_CHECK_INPUTS];
+
+/* The golden design of any model: its form's (tf_golden_ticks for a
+ * stateful model, else tf_golden_inputs). */
 size_t tf_golden_design(const tf_model *m, uint64_t seed, float in[][3]);
 
 /* The self-test every emitted model carries (docs/header-format.md §8;

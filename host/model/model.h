@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "cost/cycles.h"
 #include "tfit.h"
 
 #define TF_NAME_MAX 64
@@ -50,7 +51,8 @@ typedef struct tf_opcount {
 /* Terms of the total-degree-p basis in 3 variables. */
 uint32_t tf_terms(uint32_t p);
 
-/* coef[] length for a family, its dims and n_out; 0 if invalid. */
+/* coef[] length for a family, its dims and n_out, by its form
+ * (model/forms/form.h); 0 if invalid. */
 uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims, uint32_t n_dims);
 
 /* Allocates a model with zeroed tables and identity input map, metadata NAN.
@@ -80,24 +82,18 @@ uint32_t tf_crc32_u32(uint32_t crc, uint32_t w);
  * index at fault.  Returns 0 when the model is emittable. */
 int tf_model_validate(const tf_model *m, char *err, size_t errlen);
 
-/* Operation count of one evaluation, from the family's formulas. */
+/* Operation count of one evaluation, from its form's formulas. */
 tf_opcount tf_model_ops(const tf_model *m);
+
+/* The instructions one call of the compiled evaluator executes on a core,
+ * by class (its form's blocks: the prediction of what QEMU traces), and
+ * the cycles of that mix (tfit_displacements, tfit_contact_force,
+ * tfit_displacements_cut or a stateful step, the call from C included). */
+void tf_model_insn_mix(const tf_model *m, tf_core core, tf_insn_mix *mix);
+tf_cycles tf_model_cycles(const tf_model *m, tf_core core);
 
 /* Bytes of the model's const tables (coef, dims, node ids), without the
  * descriptor struct whose size depends on the target's pointer width. */
 uint32_t tf_model_table_bytes(const tf_model *m);
-
-/* A prony model's static map as a nodal (r = 0) or modal model sharing its
- * tables (coef points 2K floats further, so that its tables start at
- * coef + 12 as that family's do; not an owner: never free it). */
-tf_model tf_prony_static_view(const tf_model *m);
-/* The same for either stateful family (prony, resonant). */
-tf_model tf_stateful_static_view(const tf_model *m);
-/* 1 for a stateful family (prony, resonant: a tick sequence, caller-owned
- * state), else 0. */
-static inline int tf_model_stateful(const tf_model *m)
-{
-    return m->family == TFIT_FAMILY_PRONY || m->family == TFIT_FAMILY_RESONANT;
-}
 
 #endif /* TF_MODEL_H */

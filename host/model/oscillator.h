@@ -7,7 +7,7 @@
  * stepped over a tick T with the input held (zero-order hold) by the
  * transition matrix F = exp(T w [[0, 1], [-1, -2 zeta]]) of the scaled
  * state (y, y'/w), computed by GSL's scaling and squaring (Moler and Van
- * Loan 1978) and rounded to float once by the model (model/resonant.h).
+ * Loan 1978) and rounded to float once by the model (model/forms/resonant.h).
  *
  * The float recursion keeps its state finite and its error bounded only
  * when the rounded F still contracts: its spectral norm (in double, of the

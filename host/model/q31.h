@@ -9,7 +9,9 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
+#include "model/forms/form.h"
 #include "model/model.h"
 #include "tfit_q31.h"
 
@@ -29,11 +31,24 @@ typedef struct tf_q31 {
     uint32_t error_cases;
 } tf_q31;
 
-/* Quantises m.  Returns NULL and a reason in err when m has no Q31 form
- * (modal and zhou2017 families, a prony model with a modal static map or a
- * term too slow for §8's bound; an envelope so elongated that the
- * projection's headroom exceeds 14 bits). */
+/* Quantises m by its form's Q31 form (model/forms/form.h).  Returns NULL
+ * and a reason in err when m has no Q31 form (a form without one, a prony
+ * model with a modal static map or a term too slow for §8's bound; an
+ * envelope so elongated that the projection's headroom exceeds 14 bits). */
 tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen);
+
+/* The Q31 forms (q31_forms.c): of the nodal layout (nodal and contact:
+ * §2-§5) and of the prony form (§8). */
+extern const tf_form_q31 tf_q31_rows, tf_q31_prony;
+/* Their quantisers and error measurements (q31_quantise.c, q31_error.c). */
+tf_q31 *tf_q31_quantise_rows(const tf_model *m, char *err, size_t errlen);
+tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen);
+void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
+void tf_q31_measure_ticks(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
+
+/* Q31 words as a block of the header's table: six a line, after their
+ * comment (NULL: none). */
+void tf_q31_write_words(FILE *f, const int32_t *v, size_t n, const char *comment);
 void tf_q31_free(tf_q31 *q);
 
 /* W^-1 of the model's input map (LAPACK); -1 when W is singular. */
@@ -57,10 +72,12 @@ tfit_status tf_q31_ref_prony_step(const tf_q31 *q, int32_t *state, const int32_t
 int32_t tf_q31_from_value(double v, int e);
 double tf_q31_to_value(int32_t w, int e);
 
-/* Sets added_error, float_error and error_cases from n_cases seeded points
- * (inside the envelope, uniform in its volume, and on its boundary); for a
- * prony model n_cases ticks of a seeded press-hold-release history from
- * rest, against the float coefficients stepped in double. */
+/* Sets added_error, float_error and error_cases (by the form: measure)
+ * from n_cases seeded points (inside the envelope, uniform in its volume,
+ * and on its boundary: tf_q31_measure_points); for a prony model
+ * n_cases x TF_Q31_PRONY_TICKS_PER_CASE ticks of a seeded
+ * press-hold-release history from rest, against the float coefficients
+ * stepped in double (tf_q31_measure_ticks). */
 void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
 #define TF_Q31_PRONY_TICKS_PER_CASE 6u /* 2,000 cases: 12,000 ticks, eight 1.5 s segments */
 

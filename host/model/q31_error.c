@@ -13,10 +13,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/rng.h"
 #include "model/basis.h"
+#include "model/forms/form.h"
+#include "model/forms/stateful.h"
 #include "model/golden.h"
 #include "model/ref_eval.h"
-#include "base/rng.h"
 
 /* The exact model at x: g = W (x - x0), projected when |g| > 1, rows
  * summed over the Chebyshev terms T_a(g0) T_b(g1) T_c(g2) in the basis
@@ -140,12 +142,12 @@ static void measure_prony(error_run *e, const tf_model *m, const double inv[9], 
 {
     const tf_q31 *q = e->q;
     double se[TFIT_PRONY_MAX_STATE];
-    float sf[TFIT_PRONY_MAX_STATE];
+    float sf[TF_STATEFUL_MAX_STATE];
     int32_t sq[TFIT_PRONY_Q31_STATE_WORDS(TFIT_PRONY_MAX_TERMS)];
     float from[3] = {m->coef[0], m->coef[1], m->coef[2]}, to[3];
     double x0[3] = {0, 0, 0};
     memcpy(to, from, sizeof to);
-    tf_ref_stateful_reset(m, sf);
+    tf_stateful_reset(m, sf);
     tf_q31_ref_prony_reset(q, sq);
     for (int i = 0; i < 3; ++i) {
         se[i] = 0;
@@ -173,46 +175,75 @@ static void measure_prony(error_run *e, const tf_model *m, const double inv[9], 
         int32_t xq[3];
         words_of(q, x, xq);
         exact_prony_step(m, se, xd, e->exact);
-        tf_ref_stateful_step(m, sf, x, e->fl, NULL);
+        tf_stateful_step(m, sf, x, e->fl, NULL);
         tf_q31_ref_prony_step(q, sq, xq, e->yq);
         account(e);
     }
 }
 
+/* The measurement's buffers (the exact, float32 and Q31 outputs) and W^-1;
+ * -1 (the errors NAN) when out of memory or W is singular. */
+static int run_open(error_run *e, tf_q31 *q, const tf_model *m, double inv[9])
+{
+    const size_t n = 3 * (size_t)m->n_out;
+    q->added_error = q->float_error = NAN;
+    *e = (error_run){.q = q, .n = n, .exact = malloc(n * sizeof *e->exact),
+                     .fl = malloc(n * sizeof *e->fl), .yq = malloc(n * sizeof *e->yq),
+                     .qmax = 0, .fmax = 0};
+    if (e->exact == NULL || e->fl == NULL || e->yq == NULL || tf_envelope_inverse(m, inv) != 0) {
+        free(e->exact), free(e->fl), free(e->yq);
+        return -1;
+    }
+    return 0;
+}
+
+static void run_close(error_run *e, tf_q31 *q, uint32_t n_cases)
+{
+    q->added_error = e->qmax;
+    q->float_error = e->fmax;
+    q->error_cases = n_cases;
+    free(e->exact), free(e->fl), free(e->yq);
+}
+
 void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
 {
+    tf_form_of(m->family)->q31->measure(q, m, seed, n_cases);
+}
+
+void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
+{
     double inv[9];
-    const size_t n = 3 * (size_t)m->n_out;
-    double *exact = malloc(n * sizeof *exact);
-    float *fl = malloc(n * sizeof *fl);
-    int32_t *yq = malloc(n * sizeof *yq);
+    error_run e;
     tf_rng r = {seed};
-    q->added_error = q->float_error = NAN;
-    if (exact == NULL || fl == NULL || yq == NULL || tf_envelope_inverse(m, inv) != 0) {
-        free(exact), free(fl), free(yq);
+    if (run_open(&e, q, m, inv) != 0) {
         return;
     }
-    error_run e = {.q = q, .n = n, .exact = exact, .fl = fl, .yq = yq, .qmax = 0, .fmax = 0};
-    if (m->family == TFIT_FAMILY_PRONY) {
-        n_cases *= TF_Q31_PRONY_TICKS_PER_CASE;
-        measure_prony(&e, m, inv, &r, n_cases);
-    }
-    for (uint32_t c = 0; m->family != TFIT_FAMILY_PRONY && c < n_cases; ++c) {
+    for (uint32_t c = 0; c < n_cases; ++c) {
         float x[3];
         int32_t xq[3];
         /* three in four uniform in the volume, one in four on the boundary */
         envelope_point(m, inv, &r, c % 4 == 3 ? 1.0 : cbrt(tf_rng_uniform(&r)), x);
         const double xd[3] = {x[0], x[1], x[2]};
         words_of(q, x, xq);
-        exact_eval(m, xd, exact);
-        tf_ref_eval(m, x, fl, NULL);
-        tf_q31_ref_eval(q, xq, yq, NULL);
+        exact_eval(m, xd, e.exact);
+        tf_ref_eval(m, x, e.fl, NULL);
+        tf_q31_ref_eval(q, xq, e.yq, NULL);
         account(&e);
     }
-    q->added_error = e.qmax;
-    q->float_error = e.fmax;
-    q->error_cases = n_cases;
-    free(exact), free(fl), free(yq);
+    run_close(&e, q, n_cases);
+}
+
+void tf_q31_measure_ticks(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
+{
+    double inv[9];
+    error_run e;
+    tf_rng r = {seed};
+    if (run_open(&e, q, m, inv) != 0) {
+        return;
+    }
+    n_cases *= TF_Q31_PRONY_TICKS_PER_CASE;
+    measure_prony(&e, m, inv, &r, n_cases);
+    run_close(&e, q, n_cases);
 }
 
 static void put(int32_t in[][3], size_t *n, int32_t a, int32_t b, int32_t c)

@@ -1,5 +1,5 @@
 /*
- * q31_quantise.c — a nodal or contact model to its Q31 table
+ * q31_quantise.c — a nodal, contact or prony model to its Q31 table
  * (docs/q31-format.md §2): the input and output exponents, the projection's
  * headroom H, W and the centre in their fixed-point formats, and each row's
  * coefficients with the shift that brings its sum to the output format.
@@ -12,6 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
+
+#include "model/forms/form.h"
+#include "model/forms/stateful.h"
 
 #define MAX_H 14
 /* The largest a_k word: 2^31 - 2^14 (tfit_q31_check.c). */
@@ -148,7 +151,7 @@ static int quantise_terms(const tf_model *m, int32_t *t, char *err, size_t errle
 
 /* The prony form: the static map's nodal form with K and the terms
  * inserted after the input map. */
-static tf_q31 *quantise_prony(const tf_model *m, char *err, size_t errlen)
+tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen)
 {
     if (m->dims[1] != 0) {
         snprintf(err, errlen, "model '%s': no Q31 form for a prony model with a modal static map",
@@ -158,7 +161,7 @@ static tf_q31 *quantise_prony(const tf_model *m, char *err, size_t errlen)
     const uint32_t terms = m->dims[2], extra = 1 + 2 * terms;
     /* the nodal model of the input map and the static rows (the static
      * view's own first 12 floats are not the input map) */
-    tf_model v = tf_prony_static_view(m);
+    tf_model v = tf_stateful_static_view(m);
     float *coef = malloc(v.n_coef * sizeof *coef);
     if (coef == NULL) {
         snprintf(err, errlen, "out of memory");
@@ -168,7 +171,7 @@ static tf_q31 *quantise_prony(const tf_model *m, char *err, size_t errlen)
     memcpy(coef + TFIT_INPUT_MAP_FLOATS, v.coef + TFIT_INPUT_MAP_FLOATS,
            (v.n_coef - TFIT_INPUT_MAP_FLOATS) * sizeof *coef);
     v.coef = coef;
-    tf_q31 *q = tf_q31_quantise(&v, err, errlen);
+    tf_q31 *q = tf_q31_quantise_rows(&v, err, errlen);
     free(coef);
     if (q == NULL) {
         return NULL;
@@ -191,21 +194,23 @@ static tf_q31 *quantise_prony(const tf_model *m, char *err, size_t errlen)
     q->q = t;
     q->n_words += extra;
     q->terms = terms;
-    q->family = TFIT_FAMILY_PRONY;
+    q->family = m->family; /* the prony model's: its rows were quantised as a nodal model */
     return q;
 }
 
 tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen)
 {
-    if (m->family == TFIT_FAMILY_PRONY) {
-        return quantise_prony(m, err, errlen);
-    }
-    if (m->family != TFIT_FAMILY_NODAL && m->family != TFIT_FAMILY_CONTACT) {
-        snprintf(err, errlen,
-                 "model '%s': no Q31 form for family %d (nodal, contact and prony only)", m->name,
-                 (int)m->family);
+    const tf_form *f = tf_form_of(m->family);
+    if (f == NULL || f->q31 == NULL) {
+        snprintf(err, errlen, "model '%s': no Q31 form for family %d (its form has none)",
+                 m->name, (int)m->family);
         return NULL;
     }
+    return f->q31->quantise(m, err, errlen);
+}
+
+tf_q31 *tf_q31_quantise_rows(const tf_model *m, char *err, size_t errlen)
+{
     tf_q31 *q = calloc(1, sizeof *q);
     if (q == NULL) {
         snprintf(err, errlen, "out of memory");

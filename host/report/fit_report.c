@@ -11,8 +11,9 @@
 #include <string.h>
 
 #include "base/atomic_file.h"
-#include "cost/cycles.h"
 #include "base/plot.h"
+#include "cost/cycles.h"
+#include "model/forms/stateful.h"
 #include "report/history_report.h"
 
 static const char *const axis_name = "xyz";
@@ -385,7 +386,7 @@ int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
     }
     write_md(md.fp, name, header, s, solver, plan, o);
     const tf_family_result *em = tf_fit_result_of(o, plan->family);
-    if (o->has_hist && em != NULL && em->model != NULL && tf_model_stateful(em->model)) {
+    if (o->has_hist && em != NULL && em->model != NULL && tf_stateful(em->model)) {
         char png[512];
         snprintf(png, sizeof png, "%s_history.png", name);
         snprintf(path, sizeof path, "%s/%s", dir, png);

@@ -7,19 +7,19 @@
 #include <stdlib.h>
 
 #include "base/plot.h"
-#include "model/ref_eval.h"
+#include "model/forms/stateful.h"
 
 /* The model stepped through held-out history i from rest: outputs of every
  * tick into out (n_ticks x 3 n_out floats). */
 static void step_through(const tf_model *m, const tf_history_set *s, size_t i, float *out)
 {
-    float state[TFIT_RESONANT_MAX_STATE];
+    float state[TF_STATEFUL_MAX_STATE];
     const size_t rows = 3 * (size_t)m->n_out;
-    tf_ref_stateful_reset(m, state);
+    tf_stateful_reset(m, state);
     for (size_t n = 0; n < s->n_ticks; ++n) {
         const double *f = tf_history_force(s, i, n);
         const float in[3] = {(float)f[0], (float)f[1], (float)f[2]};
-        (void)tf_ref_stateful_step(m, state, in, out + n * rows, NULL);
+        (void)tf_stateful_step(m, state, in, out + n * rows, NULL);
     }
 }
 

@@ -174,7 +174,7 @@ static void cycles_of(tfit_family fam, uint32_t p, uint32_t k, uint32_t n_out, c
     const uint32_t dims[2] = {p, k};
     tf_model *m = tf_model_new("x", fam, n_out, dims, fam == TFIT_FAMILY_CUT ? 2 : 1, err,
                                sizeof err);
-    tf_cycles c4 = tf_cycles_estimate(m, TF_CORE_M4F), c7 = tf_cycles_estimate(m, TF_CORE_M7);
+    tf_cycles c4 = tf_model_cycles(m, TF_CORE_M4F), c7 = tf_model_cycles(m, TF_CORE_M7);
     snprintf(buf, n, "%.0f / %.0f", c4.cycles, c7.cycles);
     tf_model_free(m);
 }

@@ -155,7 +155,7 @@ int main(int argc, char **argv)
 {
     if (argc == 3 && strcmp(argv[1], "loops") == 0) {
         char buf[8192];
-        tf_cycles_loop_table(core_of(argv[2]), buf, sizeof buf);
+        tf_form_loop_table(core_of(argv[2]), buf, sizeof buf);
         fputs(buf, stdout);
         return 0;
     }
@@ -211,8 +211,8 @@ int main(int argc, char **argv)
             tf_model_free(m);
             continue;
         }
-        tf_cycles_mix(m, core, &predicted);
-        tf_cycles c = tf_cycles_estimate(m, core);
+        tf_model_insn_mix(m, core, &predicted);
+        tf_cycles c = tf_model_cycles(m, core);
         int same = memcmp(&traced, &predicted, sizeof traced) == 0;
         /* The header's own number (emit_budget.c) must be what ran. */
         const char *insns = macro(name, "INSNS_ARMV7EM");

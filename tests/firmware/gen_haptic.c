@@ -33,7 +33,7 @@
 
 #include "base/rng.h"
 #include "emit/emit_header.h"
-#include "model/prony.h"
+#include "model/forms/prony.h"
 
 #define GRID 11
 #define SPACING 4.8        /* mm */
@@ -84,7 +84,7 @@ static tf_model *creep(const tf_model *fwd, char *err, size_t errlen)
     tf_model_set_ball(m, centre, FORCE_RADIUS);
     tf_prony_set_term(m, 0, 0.25, 0.3);
     tf_prony_set_term(m, 1, 2.5, 0.2);
-    const tf_model v = tf_prony_static_view(m);
+    const tf_model v = tf_stateful_static_view(m);
     for (uint32_t i = 0; i < fwd->n_coef - TFIT_INPUT_MAP_FLOATS; ++i) {
         v.coef[TFIT_INPUT_MAP_FLOATS + i] = fwd->coef[TFIT_INPUT_MAP_FLOATS + i];
     }
@@ -140,7 +140,7 @@ static tf_model *shaped(const char *name, tfit_family f, uint32_t n_out, const u
         }
     }
     for (uint32_t k = 0; f == TFIT_FAMILY_PRONY && k < dims[2]; ++k) { /* tau 2^k ticks */
-        tf_prony_set_term(m, k, ldexp(tf_prony_tick(m), (int)k), 0.1);
+        tf_prony_set_term(m, k, ldexp(tf_stateful_tick(m), (int)k), 0.1);
     }
     for (uint32_t j = 0; j < n_out; ++j) {
         m->node_ids[j] = j + 1;

@@ -24,7 +24,7 @@
 #include "fitting/families/family.h"
 #include "fitting/families/prony_family.h"
 #include "fitting/histories.h"
-#include "model/prony.h"
+#include "model/forms/prony.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -108,7 +108,7 @@ int main(int argc, char **argv)
         const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS + 2 * k;
         printf("    term %u: weight %.4g, time constant %.4g s (realised by a = %a)\n", k,
                (double)pt[1] / tf_prony_hold_gain(pt[0]),
-               tf_prony_realised_tau(tf_prony_tick(m), pt[0]), (double)pt[0]);
+               tf_prony_realised_tau(tf_stateful_tick(m), pt[0]), (double)pt[0]);
     }
     double train_max, train_rms, peak;
     tf_prony_history_errors(m, &hist.train, &train_max, &train_rms, &peak);

@@ -2,7 +2,7 @@
  * long_ref.c — the expected result of a 10^6-tick run of every stateful
  * (prony, resonant) model
  * of one generated header, from the host's reference evaluator
- * (host/model/ref_eval.c: float arithmetic emulated in double).  Compiled
+ * (host/model/forms/stateful.c: float arithmetic emulated in double).  Compiled
  * per header with -DGOLDEN_H='"NAME_golden.h"' -DGOLDEN_SETS=...
  * -DTFIT_NAME_IMPLEMENTATION (it reads the models from the header itself),
  * writes NAME_long.h for long_run.c: per golden set, the force scale and
@@ -19,9 +19,9 @@
 
 #include "force_sequence.h"
 #include "long_hash.h"
+#include "model/forms/stateful.h"
 #include "model/model.h"
 #include "model/q31.h"
-#include "model/ref_eval.h"
 
 /* The header's model as a host model (tables copied). */
 static tf_model *host_copy(const tfit_model *t)
@@ -59,11 +59,11 @@ static uint32_t run(const tf_model *m, float scale)
     tf_force_seq q;
     uint32_t h = TF_LONG_HASH0;
     tf_seq_init(&q, TF_LONG_SEED);
-    tf_ref_stateful_reset(m, state);
+    tf_stateful_reset(m, state);
     for (uint32_t n = 0; n < TF_LONG_TICKS; ++n) {
         float f[3];
         tf_seq_force(&q, scale, f);
-        tfit_status s = tf_ref_stateful_step(m, state, f, out, NULL);
+        tfit_status s = tf_stateful_step(m, state, f, out, NULL);
         h = tf_long_tick(h, n, (int32_t)s, state, words, out, m->n_out);
     }
     free(out);

@@ -25,7 +25,7 @@
 
 #include "force_sequence.h"
 #include "model/model.h"
-#include "model/prony.h"
+#include "model/forms/prony.h"
 #include "model/target_view.h"
 #include "tfit.h"
 

@@ -24,7 +24,7 @@ static double cycles(tfit_family f, uint32_t p, uint32_t r, uint32_t n_out)
         fprintf(stderr, "q15_study: %s\n", err);
         exit(1);
     }
-    double c = tf_cycles_estimate(m, TF_CORE_M4F).cycles;
+    double c = tf_model_cycles(m, TF_CORE_M4F).cycles;
     tf_model_free(m);
     return c;
 }

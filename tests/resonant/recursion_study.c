@@ -19,7 +19,7 @@
 
 #include "base/rng.h"
 #include "model/ref_eval.h"
-#include "model/resonant.h"
+#include "model/forms/resonant.h"
 #include "model/target_view.h"
 
 static tf_model *one_mode(double omega_t, double zeta)
@@ -91,13 +91,13 @@ int main(int argc, char **argv)
             }
             const double margin = 1 - tf_resonant_norm2(Ff);
             float st[TFIT_RESONANT_MAX_STATE], out[3];
-            tf_ref_stateful_reset(m, st);
+            tf_stateful_reset(m, st);
             gen g = {{0x5eed + a * 16 + b}, 0, 0, 0, 0, {0}, {0}, {0}};
             double s[3] = {0, 0, 0}, v[3] = {0, 0, 0}, prev[3] = {0, 0, 0}, worst = 0, peak = 0;
             for (long n = 0; n < ticks; ++n) {
                 float f[3];
                 next_force(&g, f);
-                (void)tf_ref_stateful_step(m, st, f, out, NULL);
+                (void)tf_stateful_step(m, st, f, out, NULL);
                 for (int c = 0; c < 3; ++c) {
                     const double e1 = s[c] - ((double)f[c] - prev[c]);
                     s[c] = F[0] * e1 + F[1] * v[c];

@@ -8,8 +8,8 @@
 #include <stdio.h>
 
 #include "fitting/families/zhou2017.h"
-#include "model/prony.h"
-#include "model/resonant.h"
+#include "model/forms/prony.h"
+#include "model/forms/resonant.h"
 
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {
@@ -139,7 +139,7 @@ static void prony_terms(tf_rng *r, tf_model *m, int physical)
 static void resonant_modes(tf_rng *r, tf_model *m, int physical)
 {
     char err[512];
-    const double tick = tf_resonant_tick(m);
+    const double tick = tf_stateful_tick(m);
     for (uint32_t k = 0; k < m->dims[2]; ++k) {
         double omega, zeta;
         do {

@@ -13,7 +13,7 @@
  * TF_PRONY_SEARCH_TERMS by cross-validation over the training histories
  * (folds of whole histories, the RMS of the static map's input h), the
  * cheapest within 2 % of the best.  Held-out errors are those of the
- * float32 model stepped through the held-out histories (tf_ref_prony_step)
+ * float32 model stepped through the held-out histories (tf_stateful_step)
  * against the truth, relative to the largest displacement there.
  */
 #include <math.h>
@@ -27,8 +27,8 @@
 #include "fitting/histories.h"
 #include "fitting/prony_terms.h"
 #include "model/basis.h"
-#include "model/prony.h"
-#include "model/ref_eval.h"
+#include "model/forms/prony.h"
+#include "model/forms/stateful.h"
 
 extern const tf_family tf_family_prony;
 
@@ -363,12 +363,12 @@ int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double
     }
     double e_max = 0, e2 = 0, big = 0;
     for (size_t h = 0; h < set->n; ++h) {
-        float state[TFIT_RESONANT_MAX_STATE]; /* prony or resonant */
-        tf_ref_stateful_reset(m, state);
+        float state[TF_STATEFUL_MAX_STATE];
+        tf_stateful_reset(m, state);
         for (size_t n = 0; n < set->n_ticks; ++n) {
             const double *f = tf_history_force(set, h, n), *u = tf_history_u(set, h, n);
             const float in[3] = {(float)f[0], (float)f[1], (float)f[2]};
-            tf_ref_stateful_step(m, state, in, out, NULL);
+            tf_stateful_step(m, state, in, out, NULL);
             for (size_t o = 0; o < rows; ++o) {
                 const double e = (double)out[o] - u[o];
                 e_max = fmax(e_max, fabs(e));

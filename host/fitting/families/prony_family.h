@@ -33,12 +33,12 @@ int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const t
                           double *cv, int *best, tf_prony_terms *terms, char *err, size_t errlen);
 
 /* 0 when every time constant of t is within TF_PRONY_MAX_TAU_TICKS ticks
- * of h (model/prony.h); else -1 with a message naming the tick it needs. */
+ * of h (model/forms/prony.h); else -1 with a message naming the tick it needs. */
 int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
                          size_t errlen);
 
 /* The float32 model m (prony or resonant) stepped through every history of
- * set from rest (tf_ref_stateful_step), against the true displacements: the largest and RMS
+ * set from rest (tf_stateful_step), against the true displacements: the largest and RMS
  * error and the largest |displacement| (mm).  Returns 0, or -1 when out of
  * memory. */
 int tf_prony_history_errors(const tf_model *m, const tf_history_set *set, double *max,

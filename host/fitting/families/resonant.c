@@ -30,7 +30,7 @@
 #include "fitting/histories.h"
 #include "fitting/resonant_modes.h"
 #include "model/basis.h"
-#include "model/resonant.h"
+#include "model/forms/resonant.h"
 #include "model/oscillator.h"
 
 extern const tf_family tf_family_resonant;

@@ -96,6 +96,6 @@ void tf_family_layout_cost(const tf_model *m, tf_family_cost *out)
 {
     out->ops = tf_model_ops(m);
     out->table_bytes = tf_model_table_bytes(m);
-    out->m4f = tf_cycles_estimate(m, TF_CORE_M4F);
-    out->m7 = tf_cycles_estimate(m, TF_CORE_M7);
+    out->m4f = tf_model_cycles(m, TF_CORE_M4F);
+    out->m7 = tf_model_cycles(m, TF_CORE_M7);
 }

@@ -62,8 +62,8 @@ static void pair_cost_is_the_trm_sum(void **state)
     (void)state;
     tf_model *a = shape(TFIT_FAMILY_NODAL, 121, 1, 0), *b = shape(TFIT_FAMILY_NODAL, 123, 1, 0);
     tf_model *c = shape(TFIT_FAMILY_NODAL, 137, 1, 0);
-    tf_cycles ca = tf_cycles_estimate(a, TF_CORE_M4F), cb = tf_cycles_estimate(b, TF_CORE_M4F);
-    tf_cycles cc = tf_cycles_estimate(c, TF_CORE_M4F);
+    tf_cycles ca = tf_model_cycles(a, TF_CORE_M4F), cb = tf_model_cycles(b, TF_CORE_M4F);
+    tf_cycles cc = tf_model_cycles(c, TF_CORE_M4F);
     assert_int_equal(cb.instructions - ca.instructions, 40);
     assert_true(fabs(cb.cycles - ca.cycles - 73.0) < 1e-9);
     assert_true(fabs(cb.cycles_low - ca.cycles_low - 71.0) < 1e-9);
@@ -95,7 +95,7 @@ static void minimum_charges_taken_branches_two(void **state)
     for (uint32_t p = 0; p <= 3; ++p) {
         tf_model *m = shape(TFIT_FAMILY_NODAL, 5, p, 0);
         tf_insn_mix mix;
-        tf_cycles_mix(m, TF_CORE_M4F, &mix);
+        tf_model_insn_mix(m, TF_CORE_M4F, &mix);
         tf_insn_mix one = mix;
         one.n[TF_INSN_NBRANCH] += one.n[TF_INSN_BRANCH];
         one.n[TF_INSN_BRANCH] = 0;
@@ -117,8 +117,8 @@ static void counts_follow_the_loop_structure(void **state)
             continue;
         }
         tf_model *a = shape(TFIT_FAMILY_NODAL, 5, p, 0), *b = shape(TFIT_FAMILY_NODAL, 6, p, 0);
-        uint64_t per_node = tf_cycles_estimate(b, TF_CORE_M4F).instructions -
-                            tf_cycles_estimate(a, TF_CORE_M4F).instructions;
+        uint64_t per_node = tf_model_cycles(b, TF_CORE_M4F).instructions -
+                            tf_model_cycles(a, TF_CORE_M4F).instructions;
         assert_int_equal(per_node, 29 + 13 * (tf_terms(p) - 1) - (p == 0 ? 5 : 0));
         tf_model_free(a);
         tf_model_free(b);
@@ -128,15 +128,15 @@ static void counts_follow_the_loop_structure(void **state)
      * rows (ranks <= 8: its words come with the same VLDM), or a 12-
      * instruction pass of the C mode loop above rank 8 */
     tf_model *a = shape(TFIT_FAMILY_MODAL, 4, 2, 3), *b = shape(TFIT_FAMILY_MODAL, 4, 2, 4);
-    uint64_t per_mode = tf_cycles_estimate(b, TF_CORE_M4F).instructions -
-                        tf_cycles_estimate(a, TF_CORE_M4F).instructions;
+    uint64_t per_mode = tf_model_cycles(b, TF_CORE_M4F).instructions -
+                        tf_model_cycles(a, TF_CORE_M4F).instructions;
     assert_int_equal(per_mode, 12 + 9 * 7 + 4 * 6);
     tf_model_free(a);
     tf_model_free(b);
     a = shape(TFIT_FAMILY_MODAL, 4, 2, 9);
     b = shape(TFIT_FAMILY_MODAL, 4, 2, 10);
-    per_mode = tf_cycles_estimate(b, TF_CORE_M4F).instructions -
-               tf_cycles_estimate(a, TF_CORE_M4F).instructions;
+    per_mode = tf_model_cycles(b, TF_CORE_M4F).instructions -
+               tf_model_cycles(a, TF_CORE_M4F).instructions;
     assert_int_equal(per_mode, 12 + 9 * 7 + 4 * 12);
     tf_model_free(a);
     tf_model_free(b);
@@ -144,19 +144,19 @@ static void counts_follow_the_loop_structure(void **state)
      * one tests family and degree (15 instructions), the forward one the
      * degree-1 fast path, then the family range (22): 7 fewer */
     tf_model *c = shape(TFIT_FAMILY_CONTACT, 1, 2, 0), *n = shape(TFIT_FAMILY_NODAL, 1, 2, 0);
-    assert_int_equal(tf_cycles_estimate(n, TF_CORE_M4F).instructions -
-                         tf_cycles_estimate(c, TF_CORE_M4F).instructions,
+    assert_int_equal(tf_model_cycles(n, TF_CORE_M4F).instructions -
+                         tf_model_cycles(c, TF_CORE_M4F).instructions,
                      7);
     /* p = 1: the one-point routine skips the pair loops' set-up (ldr n_out,
      * vpush/vpop, 9 loop tests) and its entry is 3 instructions shorter */
     tf_model *c1 = shape(TFIT_FAMILY_CONTACT, 1, 1, 0), *n1 = shape(TFIT_FAMILY_NODAL, 1, 1, 0);
-    assert_int_equal(tf_cycles_estimate(n1, TF_CORE_M4F).instructions -
-                         tf_cycles_estimate(c1, TF_CORE_M4F).instructions,
+    assert_int_equal(tf_model_cycles(n1, TF_CORE_M4F).instructions -
+                         tf_model_cycles(c1, TF_CORE_M4F).instructions,
                      15);
     tf_model_free(c1);
     tf_model_free(n1);
     /* the M7 model is faster per cycle, and not slower in time */
-    tf_cycles m4 = tf_cycles_estimate(n, TF_CORE_M4F), m7 = tf_cycles_estimate(n, TF_CORE_M7);
+    tf_cycles m4 = tf_model_cycles(n, TF_CORE_M4F), m7 = tf_model_cycles(n, TF_CORE_M7);
     assert_true(m7.cycles < m4.cycles);
     assert_true(m7.cycles_low <= m7.cycles && m4.cycles_low <= m4.cycles);
     tf_model_free(c);
@@ -179,7 +179,7 @@ static void header_carries_the_estimate(void **state)
     size_t len = fread(text, 1, sizeof text - 1, f);
     text[len] = '\0';
     fclose(f);
-    tf_cycles c4 = tf_cycles_estimate(m, TF_CORE_M4F), c7 = tf_cycles_estimate(m, TF_CORE_M7);
+    tf_cycles c4 = tf_model_cycles(m, TF_CORE_M4F), c7 = tf_model_cycles(m, TF_CORE_M7);
     snprintf(want, sizeof want, "#define TFIT_BLOCK_FORWARD_CYCLES_M4F %.0fu", ceil(c4.cycles));
     assert_non_null(strstr(text, want));
     snprintf(want, sizeof want, "#define TFIT_BLOCK_FORWARD_CYCLES_M7 %.0fu", ceil(c7.cycles));

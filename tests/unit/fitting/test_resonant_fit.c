@@ -27,7 +27,7 @@
 #include "fitting/families/resonant_family.h"
 #include "fitting/pipeline.h"
 #include "fitting/resonant_modes.h"
-#include "model/resonant.h"
+#include "model/forms/resonant.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 

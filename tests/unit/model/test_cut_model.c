@@ -17,6 +17,7 @@
 
 #include <cmocka.h>
 
+#include "model/forms/cut.h"
 #include "model/ref_eval.h"
 #include "model/target_view.h"
 #include "random_model.h"
@@ -58,7 +59,7 @@ static void target_agrees_with_reference(void **state)
                                 (float)tf_rng_range(&r, -scale, scale),
                                 k % 11 == 0 ? NAN : (float)tf_rng_range(&r, -scale, scale)};
             const float s = pick_s(&r, k);
-            tfit_status s1 = tf_ref_eval_cut(m, f, s, want, NULL);
+            tfit_status s1 = tf_cut_ref_eval(m, f, s, want, NULL);
             tfit_status s2 = tfit_displacements_cut(&t, f, s, got);
             bad += s1 != s2 || memcmp(want, got, n * sizeof *got) != 0;
             calls++;
@@ -198,7 +199,7 @@ static void op_counts_match_formulas(void **state)
         const float s[] = {0.3f, 2.0f, NAN, 1.0f};
         for (int k = 0; k < 4; ++k) {
             tf_opcount got = {0, 0, 0};
-            tf_ref_eval_cut(m, inputs[k], s[k], out, &got);
+            tf_cut_ref_eval(m, inputs[k], s[k], out, &got);
             assert_int_equal(got.add, want.add);
             assert_int_equal(got.mul, want.mul);
         }

@@ -19,7 +19,7 @@
 
 #include "force_sequence.h"
 #include "model/ref_eval.h"
-#include "model/resonant.h"
+#include "model/forms/resonant.h"
 #include "model/target_view.h"
 #include "random_model.h"
 
@@ -157,7 +157,7 @@ static unsigned long compare_run(const tf_model *m, uint32_t seed, unsigned long
     const size_t n_out = 3 * (size_t)m->n_out, words = TFIT_RESONANT_STATE_WORDS(m->dims[2]);
     float *want = malloc(n_out * sizeof *want), *got = malloc(n_out * sizeof *got);
     float s_ref[TFIT_RESONANT_MAX_STATE], s_dev[TFIT_RESONANT_MAX_STATE];
-    tf_ref_stateful_reset(m, s_ref);
+    tf_stateful_reset(m, s_ref);
     assert_int_equal(tfit_resonant_reset(&t, s_dev), TFIT_OK);
     assert_memory_equal(s_ref, s_dev, words * sizeof *s_ref);
     tf_force_seq q;
@@ -168,7 +168,7 @@ static unsigned long compare_run(const tf_model *m, uint32_t seed, unsigned long
     for (unsigned long k = 0; k < n; ++k) {
         float f[3];
         tf_seq_force(&q, scale, f);
-        tfit_status s1 = tf_ref_stateful_step(m, s_ref, f, want, NULL);
+        tfit_status s1 = tf_stateful_step(m, s_ref, f, want, NULL);
         tfit_status s2 = tfit_resonant_step(&t, s_dev, f, got);
         bad += s1 != s2 || memcmp(want, got, n_out * sizeof *got) != 0 ||
                memcmp(s_ref, s_dev, words * sizeof *s_ref) != 0;
@@ -312,11 +312,11 @@ static void op_counts_match_formulas(void **state)
         tf_opcount want = tf_model_ops(m);
         float st[TFIT_RESONANT_MAX_STATE];
         float *out = malloc(3 * m->n_out * sizeof *out);
-        tf_ref_stateful_reset(m, st);
+        tf_stateful_reset(m, st);
         const float inputs[][3] = {{0, 0, 0}, {1e30f, 0, 0}, {NAN, 1, 1}, {0.1f, 0.2f, 0.3f}};
         for (int k = 0; k < 4; ++k) {
             tf_opcount got = {0, 0, 0};
-            tf_ref_stateful_step(m, st, inputs[k], out, &got);
+            tf_stateful_step(m, st, inputs[k], out, &got);
             assert_int_equal(got.add, want.add);
             assert_int_equal(got.mul, want.mul);
         }

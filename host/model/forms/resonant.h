@@ -1,6 +1,8 @@
 /*
- * resonant.h — the modes of a resonant model (docs/header-format.md §5.8)
- * in its table: angular frequency omega_k, damping ratio zeta_k and
+ * resonant.h — the resonant form (forms/resonant.c, paired with
+ * target/src/tfit_resonant.c): a stateful form (stateful.h) whose filter is
+ * K damped modes, a body with inertia (docs/header-format.md §5.8).  The
+ * modes in its table: angular frequency omega_k, damping ratio zeta_k and
  * per-axis weights w_k of the unit-gain oscillators (model/oscillator.h)
  *
  *     y'' + 2 zeta w y' + w^2 y = w^2 g,   h = g + sum_k w_k (y_k - g),
@@ -9,12 +11,13 @@
  * as tf_solver_history applies a history's forces; tfit_resonant.c gives
  * the update): F rounded to float once, then the weights.
  */
-#ifndef TF_RESONANT_H
-#define TF_RESONANT_H
+#ifndef TF_RESONANT_FORM_H
+#define TF_RESONANT_FORM_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "model/forms/stateful.h"
 #include "model/model.h"
 #include "model/oscillator.h"
 
@@ -31,7 +34,4 @@ void tf_resonant_get_mode(const tf_model *m, uint32_t k, double *omega, double *
 /* tf_resonant_floats_check (oscillator.h) of mode k of m. */
 int tf_resonant_mode_check(const tf_model *m, uint32_t k, char *err, size_t errlen);
 
-/* The tick of m in seconds. */
-double tf_resonant_tick(const tf_model *m);
-
-#endif /* TF_RESONANT_H */
+#endif /* TF_RESONANT_FORM_H */

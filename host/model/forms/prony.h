@@ -1,7 +1,9 @@
 /*
- * prony.h — the terms of a prony model (docs/header-format.md §5.6) from
- * their continuous-time description: time constant tau_k and weight w_k of
- * the normalised creep function
+ * prony.h — the prony form (forms/prony.c, paired with
+ * target/src/tfit_prony.c): a stateful form (stateful.h) whose filter is K
+ * exponential terms, viscoelastic creep (docs/header-format.md §5.6).  Its
+ * terms from their continuous-time description: time constant tau_k and
+ * weight w_k of the normalised creep function
  *
  *     J(t) / J(inf) = 1 - sum_k w_k exp(-t / tau_k),   w_k >= 0, sum w_k <= 1,
  *
@@ -17,11 +19,12 @@
  * terms, so the host fits with the rate the device has rather than the one
  * it asked for.
  */
-#ifndef TF_PRONY_H
-#define TF_PRONY_H
+#ifndef TF_PRONY_FORM_H
+#define TF_PRONY_FORM_H
 
 #include <stdint.h>
 
+#include "model/forms/stateful.h"
 #include "model/model.h"
 
 /* The slowest time constant a model may have, in ticks: beyond it the
@@ -43,7 +46,8 @@ double tf_prony_hold_gain(float decay);
  * model's tick (dims[3] ns).  Returns the realised time constant (s). */
 double tf_prony_set_term(tf_model *m, uint32_t k, double tau, double weight);
 
-/* The tick period of m in seconds (dims[3] is in ns). */
-double tf_prony_tick(const tf_model *m);
+/* Term k of m as the device realises it: its time constant (s) and its
+ * weight in the normalised creep function. */
+void tf_prony_get_term(const tf_model *m, uint32_t k, double *tau, double *weight);
 
-#endif /* TF_PRONY_H */
+#endif /* TF_PRONY_FORM_H */
