@@ -111,7 +111,7 @@ int main(int argc, char **argv)
                tf_prony_realised_tau(tf_stateful_tick(m), pt[0]), (double)pt[0]);
     }
     double train_max, train_rms, peak;
-    tf_prony_history_errors(m, &hist.train, &train_max, &train_rms, &peak);
+    tf_stateful_history_errors(m, &hist.train, &train_max, &train_rms, &peak);
     printf("  training histories: max error %.3g mm, rms %.3g mm (peak %.3g mm)\n", train_max,
            train_rms, peak);
     printf("  held-out histories: max error %.3g mm, rms %.3g mm: %.3g %% of the peak "
