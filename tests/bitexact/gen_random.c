@@ -102,7 +102,7 @@ static int bundle(long n, uint64_t seed, const char *path)
     }
     tf_rng r = {seed}, rp = {seed ^ 0x9e3779b9u}, rc = {seed ^ 0x637574u},
            rq = {seed ^ 0x513135u};
-    long per_family[TFIT_FAMILY_MODAL_Q15 + 1] = {0};
+    long per_family[TFIT_FAMILY_LAST + 1] = {0};
     const long total = n + BUNDLE_PRONY + BUNDLE_CUT + BUNDLE_Q15;
     put(f, TF_BUNDLE_MAGIC);
     put(f, (uint32_t)total);

@@ -2,9 +2,10 @@
  * test_bitflip.c — acceptance: every single-bit flip in a small model's
  * tables (dims, coefficients, node ids) and in every field of its
  * descriptor (scalars, the six table pointers, the self-test vector, the
- * CRC) is caught by tfit_model_check(), for every family, without a read
- * through a damaged pointer (the pointers are checked against their ends
- * first; a fault here would crash the test).
+ * CRC) is caught by tfit_model_check(), for every form from
+ * TFIT_FAMILY_FIRST to TFIT_FAMILY_LAST (model/forms/form.h), without a
+ * read through a damaged pointer (the pointers are checked against their
+ * ends first; a fault here would crash the test).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -16,8 +17,9 @@
 
 #include <cmocka.h>
 
-#include "random_model.h"
+#include "model/forms/form.h"
 #include "model/target_view.h"
+#include "random_model.h"
 
 /* Flips each bit of a pointer field (its bytes, memcpy'd) in turn; returns
  * how many flips passed the check. */
@@ -54,8 +56,11 @@ static void every_flip_is_caught(void **state)
 {
     (void)state;
     tf_rng r = {2026};
-    for (int family = 1; family <= TFIT_FAMILY_PRONY; ++family) {
-        tf_model *m = tf_random_model(&r, "small", (tfit_family)family, 1);
+    for (int id = TFIT_FAMILY_FIRST; id <= TFIT_FAMILY_LAST; ++id) {
+        const tf_form *f = tf_form_of((tfit_family)id);
+        assert_non_null(f); /* every id has its form */
+        tf_model *m = tf_random_model(&r, "small", f->id, 1);
+        assert_non_null(m);
         tfit_model t;
         tf_target_view(m, &t);
         assert_int_equal(tfit_model_check(&t), TFIT_OK);
@@ -73,8 +78,8 @@ static void every_flip_is_caught(void **state)
         for (size_t i = 0; i < sizeof pointers / sizeof pointers[0]; ++i) {
             missed += flip_pointer(&t, pointers[i], &tried);
         }
-        printf("family %d: %u coefficients, %u single-bit flips, %u missed\n", family, m->n_coef,
-               tried, missed);
+        printf("%-9s (family %d): %u coefficients, %u single-bit flips, %u missed\n", f->name, id,
+               m->n_coef, tried, missed);
         assert_int_equal(missed, 0);
         assert_int_equal(tfit_model_check(&t), TFIT_OK); /* restored */
         tf_model_free(m);
