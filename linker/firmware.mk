@@ -148,10 +148,10 @@ check-q31: $(FW_LIB_m3) $(FW_LIB_m0)
 	@echo "ok: the Q31 libraries for Cortex-M3 and Cortex-M0+ are freestanding, without soft float"
 
 # --- cycle model: static loop mixes and traced instruction mixes -------------
-# check-cycles proves, on both cores, that host/cost/cycles.c describes the
-# compiled evaluator: (1) the loop bodies of the evaluation functions in the
-# linked library have exactly the instruction mixes the model assumes
-# (objdump), and (2) for every golden set of every header, every input
+# check-cycles proves, on both cores, that the cycle model (host/cost/, each
+# form's blocks in host/model/forms/) describes the compiled evaluator: (1)
+# the loop bodies of the evaluation functions in the linked library have
+# exactly the instruction mixes the model assumes (objdump), and (2) for every golden set of every header, every input
 # executed the same instructions under QEMU, and exactly the mix the model
 # predicts from the model's shape (so the header's cycle estimates are sums
 # over the real instruction stream).
@@ -218,9 +218,9 @@ check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
 	  $(T)/insn_mix $(FW_EVAL_FUNCS) <$(FW)/$$c/libtfit.dis | grep ' loop ' | sort >$(FW)/$$c/loops.txt; \
 	  $(T)/check_cycle_model loops $$c | sort >$(FW)/$$c/loops-model.txt; \
 	  if ! diff $(FW)/$$c/loops-model.txt $(FW)/$$c/loops.txt >$(FW)/$$c/loops.diff; then \
-	    echo "$$c: compiled loops differ from host/cost/cycles.c (< model, > objdump):"; \
+	    echo "$$c: compiled loops differ from the cycle model (< model, > objdump):"; \
 	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
-	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match host/cost/cycles.c"; done
+	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match the cycle model"; done
 	@set -e; for c in $(FW_CORES) $(FW_Q31_CORES); do for h in $(FW_HEADERS); do \
 	  n=$$(basename $$h .h); \
 	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt | sed "s|^|$$c |"; done; done

@@ -31,7 +31,7 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
     if (f == NULL || n_dims != f->n_dims || n_out == 0 || n_out > (1u << 20)) {
         return 0;
     }
-    const uint64_t n = f->coefs(n_out, dims);
+    const uint64_t n = f->coefs(f, n_out, dims);
     return n > UINT32_MAX ? 0 : (uint32_t)n;
 }
 

@@ -210,7 +210,10 @@ void tf_q31_measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_case
     tf_form_of(m->family)->q31->measure(q, m, seed, n_cases);
 }
 
-void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
+/* The errors over n_cases seeded points of the envelope (three in four
+ * uniform in its volume, one in four on its boundary), or for a prony
+ * model n_cases ticks of a press-hold-release history from rest. */
+static void measure(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases, int ticks)
 {
     double inv[9];
     error_run e;
@@ -218,10 +221,12 @@ void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t
     if (run_open(&e, q, m, inv) != 0) {
         return;
     }
-    for (uint32_t c = 0; c < n_cases; ++c) {
+    if (ticks) {
+        measure_prony(&e, m, inv, &r, n_cases);
+    }
+    for (uint32_t c = 0; !ticks && c < n_cases; ++c) {
         float x[3];
         int32_t xq[3];
-        /* three in four uniform in the volume, one in four on the boundary */
         envelope_point(m, inv, &r, c % 4 == 3 ? 1.0 : cbrt(tf_rng_uniform(&r)), x);
         const double xd[3] = {x[0], x[1], x[2]};
         words_of(q, x, xq);
@@ -233,17 +238,14 @@ void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t
     run_close(&e, q, n_cases);
 }
 
+void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
+{
+    measure(q, m, seed, n_cases, 0);
+}
+
 void tf_q31_measure_ticks(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases)
 {
-    double inv[9];
-    error_run e;
-    tf_rng r = {seed};
-    if (run_open(&e, q, m, inv) != 0) {
-        return;
-    }
-    n_cases *= TF_Q31_PRONY_TICKS_PER_CASE;
-    measure_prony(&e, m, inv, &r, n_cases);
-    run_close(&e, q, n_cases);
+    measure(q, m, seed, n_cases * TF_Q31_PRONY_TICKS_PER_CASE, 1);
 }
 
 static void put(int32_t in[][3], size_t *n, int32_t a, int32_t b, int32_t c)

@@ -18,7 +18,7 @@
  * model applies it, tf_solver_history), and the outputs are the state at
  * the tick's end.  Then the deviation q - (g, 0) decays by
  * F = exp(T w [[0, 1], [-1, -2 zeta]]) (computed by the host,
- * model/resonant.c) and one tick is, per axis i, with d = g_i - gp_i:
+ * host/model/forms/resonant.c) and one tick is, per axis i, with d = g_i - gp_i:
  *   e1 = s_i - d,  e2 = v_i
  *   s_i <- (f11 e1) + (f12 e2)                (y at the tick's end less g_i)
  *   v_i <- (f21 e1) + (f22 e2)

@@ -15,9 +15,10 @@
 /* The nodal form's layout, bounds, evaluation and operations. */
 extern const tf_form tf_form_nodal;
 
-static uint64_t coefs(uint32_t n_out, const uint32_t *dims)
+static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 {
-    return n_out == 1 ? tf_form_nodal.coefs(n_out, dims) : 0;
+    (void)f;
+    return n_out == 1 ? tf_form_nodal.coefs(&tf_form_nodal, n_out, dims) : 0;
 }
 
 static int bounds(const tf_model *m, char *err, size_t errlen)
@@ -77,11 +78,7 @@ const tf_form tf_form_contact = {
     .coefs = coefs,
     .bounds = bounds,
     .ref_map = ref_map,
-    .ref_eval = tf_form_ref_eval,
-    .golden_inputs = tf_golden_inputs,
-    .check_pick = tf_golden_pick_points,
-    .golden_run = tf_form_run_each,
-    .check_step = tf_form_check_each,
+    TF_FORM_EACH_INPUT,
     .ops = ops,
     .insn_mix = insn_mix,
     .blocks = blocks,

@@ -13,8 +13,9 @@
 #include "model/golden.h"
 #include "model/ref_arith.h"
 
-static uint64_t coefs(uint32_t n_out, const uint32_t *dims)
+static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 {
+    (void)f;
     if (dims[0] > TFIT_MAX_DEGREE || dims[1] == 0 || dims[1] > TFIT_CUT_MAX_INTERVALS) {
         return 0;
     }

@@ -64,8 +64,9 @@ typedef struct tf_form {
 
     /* ---- layout (docs/header-format.md §3, §8) ---- */
     /* coef[] length for n_out and dims, 0 when invalid or beyond the
-     * target's capacity (n_out and n_dims already checked). */
-    uint64_t (*coefs)(uint32_t n_out, const uint32_t *dims);
+     * target's capacity (n_out and n_dims already checked); f is the form
+     * itself. */
+    uint64_t (*coefs)(const struct tf_form *f, uint32_t n_out, const uint32_t *dims);
     /* What tfit_model_check() proves of the tables beyond the input map:
      * 0, or 1 with a message naming the table and index at fault. */
     int (*bounds)(const tf_model *m, char *err, size_t errlen);
@@ -127,6 +128,14 @@ const tf_form *tf_form_of(tfit_family id);
 size_t tf_form_loop_table(tf_core core, char *buf, size_t n);
 
 /* ---- shared by the forms (shared.c) ---------------------------------- */
+
+/* The evaluation fields of a stateless form evaluated at its projected
+ * input (its ref_map), whose golden vectors and self-test inputs are
+ * evaluated each on its own (tf_golden_inputs' design; model/golden.h). */
+#define TF_FORM_EACH_INPUT                                                                         \
+    .ref_eval = tf_form_ref_eval, .golden_inputs = tf_golden_inputs,                               \
+    .check_pick = tf_golden_pick_points, .golden_run = tf_form_run_each,                           \
+    .check_step = tf_form_check_each
 
 /* A stateless form's model at the raw input: the projection, its ref_map,
  * the output mask (a NaN/Inf input gives +0 outputs). */

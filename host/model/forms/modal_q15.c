@@ -17,8 +17,9 @@
 #include "model/model.h"
 #include "model/ref_arith.h"
 
-static uint64_t coefs(uint32_t n_out, const uint32_t *dims)
+static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 {
+    (void)f;
     if (dims[0] == 0 || dims[0] > TFIT_MAX_DEGREE || dims[1] != TFIT_MODAL_Q15_RANK) {
         return 0;
     }
@@ -196,11 +197,7 @@ const tf_form tf_form_modal_q15 = {
     .coefs = coefs,
     .bounds = bounds,
     .ref_map = ref_map,
-    .ref_eval = tf_form_ref_eval,
-    .golden_inputs = tf_golden_inputs,
-    .check_pick = tf_golden_pick_points,
-    .golden_run = tf_form_run_each,
-    .check_step = tf_form_check_each,
+    TF_FORM_EACH_INPUT,
     .ops = ops,
     .insn_mix = insn_mix,
     .blocks = blocks,

@@ -159,31 +159,13 @@ static const tf_filter filter = {
     .emit_term = emit_term,
 };
 
-static uint64_t coefs(uint32_t n_out, const uint32_t *dims)
-{
-    return tf_stateful_coefs(&filter, n_out, dims);
-}
-
 const tf_form tf_form_prony = {
     .id = TFIT_FAMILY_PRONY,
     .name = "prony",
     .n_dims = TFIT_PRONY_DIMS,
-    .coefs = coefs,
-    .bounds = tf_stateful_bounds,
-    .ref_map = NULL,
-    .ref_eval = tf_stateful_ref_eval,
-    .golden_inputs = tf_golden_ticks,
-    .check_pick = tf_golden_pick_ticks,
-    .golden_run = tf_stateful_run,
-    .check_step = tf_stateful_check_step,
-    .ops = tf_stateful_ops,
-    .insn_mix = tf_stateful_insn_mix,
+    TF_STATEFUL_FORM,
     .blocks = blocks,
     .n_blocks = N_BLOCKS,
-    .input = "force [N]",
-    .emit_tables = tf_stateful_emit_tables,
-    .emit_banner = tf_stateful_emit_banner,
-    .emit_macros = tf_stateful_emit_macros,
     .q31 = &tf_q31_prony,
     .filter = &filter,
 };

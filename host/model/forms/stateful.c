@@ -64,14 +64,15 @@ tf_model *tf_stateful_new(tfit_family id, const char *name, const tf_model *s, u
 
 /* {p, r, K, tick_ns}: K terms, then nodal rows (r = 0) or a modal table;
  * a tick of at least 1 ns. */
-uint64_t tf_stateful_coefs(const tf_filter *f, uint32_t n_out, const uint32_t *dims)
+uint64_t tf_stateful_coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 {
-    if (dims[0] > TFIT_MAX_DEGREE || dims[1] > TFIT_MAX_RANK || dims[2] > f->max_terms ||
+    const tf_filter *fl = f->filter;
+    if (dims[0] > TFIT_MAX_DEGREE || dims[1] > TFIT_MAX_RANK || dims[2] > fl->max_terms ||
         dims[3] == 0) {
         return 0;
     }
     const uint64_t t = tf_terms(dims[0]);
-    return TFIT_INPUT_MAP_FLOATS + (uint64_t)f->floats * dims[2] +
+    return TFIT_INPUT_MAP_FLOATS + (uint64_t)fl->floats * dims[2] +
            (dims[1] == 0 ? 3ull * n_out * t : dims[1] * t + 3ull * n_out * dims[1]);
 }
 

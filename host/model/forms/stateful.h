@@ -86,7 +86,21 @@ tfit_status tf_stateful_step(const tf_model *m, float *state, const float in[3],
                              tf_opcount *ops);
 
 /* ---- the form operations every stateful form shares (tf_form) ---------- */
-uint64_t tf_stateful_coefs(const tf_filter *f, uint32_t n_out, const uint32_t *dims);
+
+/* The fields of a stateful form's tf_form beside its id, name, dims, own
+ * blocks, Q31 form and filter: the stateful layer's operations, and one
+ * tick sequence from rest as its golden vectors (tf_golden_ticks;
+ * model/golden.h). */
+#define TF_STATEFUL_FORM                                                                           \
+    .coefs = tf_stateful_coefs, .bounds = tf_stateful_bounds, .ref_map = NULL,                     \
+    .ref_eval = tf_stateful_ref_eval, .golden_inputs = tf_golden_ticks,                            \
+    .check_pick = tf_golden_pick_ticks, .golden_run = tf_stateful_run,                             \
+    .check_step = tf_stateful_check_step, .ops = tf_stateful_ops,                                  \
+    .insn_mix = tf_stateful_insn_mix, .input = "force [N]",                                        \
+    .emit_tables = tf_stateful_emit_tables, .emit_banner = tf_stateful_emit_banner,                \
+    .emit_macros = tf_stateful_emit_macros
+
+uint64_t tf_stateful_coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims);
 int tf_stateful_bounds(const tf_model *m, char *err, size_t errlen);
 /* The relaxed response: the force held for ever (the state {g, 0}, then one
  * tick), the equilibrium a time-dependent solver's static solve gives;

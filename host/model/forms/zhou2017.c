@@ -23,8 +23,9 @@ static uint32_t surface_rows(const uint32_t *dims, int pair)
     return dims[3 + 3 * pair] + dims[4 + 3 * pair] + 1;
 }
 
-static uint64_t coefs(uint32_t n_out, const uint32_t *dims)
+static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 {
+    (void)f;
     uint64_t n = TFIT_INPUT_MAP_FLOATS;
     for (int a = 0; a < 3; ++a) {
         if (dims[a] > TFIT_MAX_DEGREE) {
@@ -210,21 +211,6 @@ static const tf_block blocks[N_BLOCKS] = {
     [STEP_ENTRY] = {"tfit_eval_zhou2017", 0, 0, TF_SAME("fother=1")},
 };
 
-static void add(tf_insn_mix *t, tf_core core, block_id b, uint64_t times)
-{
-    tf_insn_add(t, &blocks[b], core, times);
-}
-
-static void sub(tf_insn_mix *t, tf_core core, block_id b, uint64_t times)
-{
-    tf_insn_sub(t, &blocks[b], core, times);
-}
-
-static void loop(tf_insn_mix *t, tf_core core, block_id b, uint64_t n)
-{
-    tf_insn_loop(t, &blocks[b], core, n);
-}
-
 /* One inlined Clenshaw series of order n (tfit_cheb): the enclosing loop
  * body holds the set-up of its step loop; n >= 1 runs n steps, entering the
  * loop past its first instruction (a register move); n = 0 branches past
@@ -234,13 +220,13 @@ static void clenshaw_mix(tf_insn_mix *t, tf_core core, uint32_t n, uint64_t time
                          block_id setup, block_id stub)
 {
     if (n == 0) {
-        sub(t, core, setup, times);
-        add(t, core, stub, times);
+        tf_insn_sub(t, &blocks[setup], core, times);
+        tf_insn_add(t, &blocks[stub], core, times);
         tf_insn_taken(t, times);
         return;
     }
-    add(t, core, step, times * n);
-    sub(t, core, STEP_ENTRY, times);
+    tf_insn_add(t, &blocks[step], core, times * n);
+    tf_insn_sub(t, &blocks[STEP_ENTRY], core, times);
     tf_insn_falls_through(t, times);
 }
 
@@ -251,35 +237,35 @@ static void insn_mix(const tf_model *m, tf_core core, tf_insn_mix *t)
     const uint64_t n = m->n_out;
     tf_insn_input(t, core);
     tf_insn_displacements(t, core, d[0]);
-    add(t, core, EVAL_ZHOU, 1);
-    loop(t, core, MASK_WORD, 3 * n);
-    add(t, core, ZHOU_PATH, 1);
-    loop(t, core, ZHOU_AXIS, 3);
-    loop(t, core, ZHOU_SURF_AXIS, 3);
+    tf_insn_add(t, &blocks[EVAL_ZHOU], core, 1);
+    tf_insn_loop(t, &blocks[MASK_WORD], core, 3 * n);
+    tf_insn_add(t, &blocks[ZHOU_PATH], core, 1);
+    tf_insn_loop(t, &blocks[ZHOU_AXIS], core, 3);
+    tf_insn_loop(t, &blocks[ZHOU_SURF_AXIS], core, 3);
     for (int a = 0; a < 3; ++a) {
         clenshaw_mix(t, core, d[a], 1, ZHOU_AXIS_STEP, ZHOU_AXIS_SETUP, ZHOU_AXIS_STUB);
     }
     for (int pair = 0; pair < 9; ++pair) {
         uint32_t ax = d[3 + 3 * pair], by = d[4 + 3 * pair], k = d[5 + 3 * pair];
         uint64_t rows = (uint64_t)ax + by + 1;
-        add(t, core, ZHOU_PAIR, 1);
+        tf_insn_add(t, &blocks[ZHOU_PAIR], core, 1);
         if (pair % 3 == 2) { /* the pair loop's back edge, once per force axis */
             tf_insn_falls_through(t, 1);
         }
-        loop(t, core, ZHOU_ROW, rows);
+        tf_insn_loop(t, &blocks[ZHOU_ROW], core, rows);
         clenshaw_mix(t, core, k, rows, ZHOU_ROW_STEP, ZHOU_ROW_SETUP, ZHOU_ROW_STUB);
-        loop(t, core, ZHOU_NODE, n);
+        tf_insn_loop(t, &blocks[ZHOU_NODE], core, n);
         clenshaw_mix(t, core, ax, n, ZHOU_X_STEP, ZHOU_X_SETUP, ZHOU_X_STUB);
         if (by == 0) { /* the Y part skipped by a taken branch */
-            sub(t, core, ZHOU_Y_PART, n);
+            tf_insn_sub(t, &blocks[ZHOU_Y_PART], core, n);
             tf_insn_taken(t, n);
         } else {
-            add(t, core, ZHOU_Y_STEP, n * by);
-            sub(t, core, STEP_ENTRY, n);
+            tf_insn_add(t, &blocks[ZHOU_Y_STEP], core, n * by);
+            tf_insn_sub(t, &blocks[STEP_ENTRY], core, n);
             tf_insn_falls_through(t, n);
         }
         if (pair < 3) { /* force axis x stores instead of adding: a taken branch */
-            sub(t, core, ZHOU_SUM, n);
+            tf_insn_sub(t, &blocks[ZHOU_SUM], core, n);
             tf_insn_taken(t, n);
         }
     }
@@ -315,11 +301,7 @@ const tf_form tf_form_zhou2017 = {
     .coefs = coefs,
     .bounds = bounds,
     .ref_map = ref_map,
-    .ref_eval = tf_form_ref_eval,
-    .golden_inputs = tf_golden_inputs,
-    .check_pick = tf_golden_pick_points,
-    .golden_run = tf_form_run_each,
-    .check_step = tf_form_check_each,
+    TF_FORM_EACH_INPUT,
     .ops = ops,
     .insn_mix = insn_mix,
     .blocks = blocks,
