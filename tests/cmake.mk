@@ -12,6 +12,7 @@
 #                refused; and docs/versions.md's table against the versions
 #                the Makefile and tfit.h state (tests/cmake/check_versions.sh)
 
+# gcc-arm-none-eabi and qemu-system-arm are in DEBS_CHECK already (Makefile, linker/firmware.mk).
 DEBS_CHECK += cmake
 
 CMAKE_T := $(T)/cmake
