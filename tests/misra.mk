@@ -21,6 +21,8 @@ MISRA_T := $(T)/misra
 CHECKS += check-misra
 check-misra: | deps-check
 	@echo "== MISRA C:2012 (cppcheck's addon) and clang-tidy over libtfit: every finding in docs/misra.md =="
+	@echo "tools: $$(cppcheck --version), $$(clang-tidy --version | grep -o 'LLVM version [0-9.]*')" \
+	  "(docs/misra.md records their findings; other versions find other things)"
 	@tests/misra/analyse.sh . $(MISRA_T)/findings
 	@tests/misra/selftest.sh $(MISRA_T)/selftest $(MISRA_T)/findings/findings.txt
 	@tests/misra/judge.py suppressions docs/misra.md | diff -u tests/misra/suppressions.txt - \
