@@ -192,6 +192,17 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     return s;
 }
 
+void tf_scene_key_values(const char *path, char *out, size_t outlen)
+{
+    sd_schema schema;
+    out[0] = '\0';
+    const cyaml_schema_value_t *v =
+        sd_schema_init(&schema) == 0 ? sd_schema_at(&schema.root, path) : NULL;
+    if (v != NULL && (v->type == CYAML_ENUM || v->type == CYAML_FLAGS)) {
+        sd_names(v, out, outlen);
+    }
+}
+
 /* The bytes of a scene file.  Only a regular file is read: a FIFO would
  * block (it is opened without waiting for a writer, then refused), a device
  * such as /dev/zero would be read until memory runs out.  Returns the text
