@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -151,6 +152,53 @@ static void material_laws_and_their_parameters(void **state)
     tf_material_moduli(m, &young, &nu);
     assert_true(young == 0.2 + 0.1 && nu == 0.45);
     tf_scene_free(s);
+}
+
+/* The material section comes from the law registry: every registered name
+ * is accepted, an unknown one is refused at its line naming them all, and
+ * an unknown key names every law's keys; each law's parameters reach the
+ * material by their keys, in a file and through --set. */
+static void laws_and_keys_come_from_the_registry(void **state)
+{
+    (void)state;
+    const char *unknown[16] = {"t.yaml:6:", "material.law", "'rubber'"};
+    size_t n = 3;
+    for (size_t i = 0; i < tf_law_count() && n + 1 < 16; ++i) {
+        unknown[n++] = tf_law_at(i)->name;
+    }
+    unknown[n] = NULL;
+    expect_error(6, "  law: rubber\n  E: 1\n", unknown);
+    const char *keys[24] = {"t.yaml:7:", "material.colour", "unknown key", "law"};
+    n = 4;
+    for (size_t k = 0; k < tf_law_key_count() && n + 1 < 24; ++k) {
+        keys[n++] = tf_law_key_at(k);
+    }
+    keys[n] = NULL;
+    expect_error(6, "  E: 1\n  colour: red\n", keys);
+    char err[512], params[256];
+    for (size_t i = 0; i < tf_law_count(); ++i) {
+        const tf_law_ops *l = tf_law_at(i);
+        /* a valid value of every parameter: the registry test's samples */
+        size_t used = (size_t)snprintf(params, sizeof params, "material={law: %s", l->name);
+        for (size_t p = 0; p < l->n_params; ++p) {
+            const char *key = l->params[p].key;
+            double v = !strcmp(key, "nu") ? 0.45 : !strcmp(key, "k") ? 0 : 0.5 + (double)p / 8;
+            used += (size_t)snprintf(params + used, sizeof params - used, ", %s: %.17g", key, v);
+        }
+        snprintf(params + used, sizeof params - used, "}");
+        const char *sets[] = {params};
+        tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, 1, err, sizeof err);
+        if (s == NULL) {
+            fail_msg("%s: %s", l->name, err);
+        }
+        assert_ptr_equal(s->problem.material.law, l);
+        for (size_t p = 0; p < l->n_params; ++p) {
+            const char *key = l->params[p].key;
+            double v = !strcmp(key, "nu") ? 0.45 : !strcmp(key, "k") ? 0 : 0.5 + (double)p / 8;
+            assert_true(tf_material_get(&s->problem.material, key) == v);
+        }
+        tf_scene_free(s);
+    }
 }
 
 static void each_bad_scene_has_its_own_message(void **state)
@@ -302,6 +350,7 @@ int main(void)
         cmocka_unit_test(the_base_scene_is_good),
         cmocka_unit_test(each_bad_scene_has_its_own_message),
         cmocka_unit_test(material_laws_and_their_parameters),
+        cmocka_unit_test(laws_and_keys_come_from_the_registry),
         cmocka_unit_test(override_errors_name_the_override),
         cmocka_unit_test(a_missing_file_is_named),
         cmocka_unit_test(jitter_moves_only_interior_nodes),
