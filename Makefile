@@ -119,8 +119,20 @@ check: | deps-check
 bench: | deps-bench
 	@$(MAKE) --no-print-directory $(BENCHES)
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
+# INSTALL_CORES: cross-built libraries installed beside the native one, as
+# lib/tfit/CORE/libtfit.a (the name the linker scripts place by), for
+# find_package(tfit) in a cross build (docs/firmware.md §11), e.g.
+# `make install PREFIX=/opt/tfit INSTALL_CORES="cortex-m4f cortex-m7"`.
+INSTALL_CORES ?=
+INSTALL_CORES_KNOWN := cortex-m4f cortex-m7 riscv64
+$(if $(filter-out $(INSTALL_CORES_KNOWN),$(INSTALL_CORES)),\
+  $(error INSTALL_CORES: unknown core(s) $(filter-out $(INSTALL_CORES_KNOWN),$(INSTALL_CORES)); known: $(INSTALL_CORES_KNOWN)))
+INSTALL_CMAKE := $(DESTDIR)$(PREFIX)/lib/cmake/tfit
+INSTALL_SHARE := $(DESTDIR)$(PREFIX)/share/tfit
+
+install: all $(INSTALL_CORES:%=$(B)/%/libtfit.a)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include \
+	  $(INSTALL_CMAKE) $(INSTALL_SHARE)/cmake $(INSTALL_SHARE)/linker
 	install -m 755 $(B)/bin/tissuefit $(DESTDIR)$(PREFIX)/bin/tissuefit
 	install -m 644 $(B)/lib/libtfit.a $(DESTDIR)$(PREFIX)/lib/libtfit.a
 	install -m 644 target/include/tfit.h $(DESTDIR)$(PREFIX)/include/tfit.h
@@ -128,6 +140,14 @@ install: all
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' target/tfit.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
 	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
+	install -m 644 cmake/tfitConfig.cmake cmake/tfitTargets.cmake cmake/tfitGenerate.cmake $(INSTALL_CMAKE)
+	sed -e 's|@VERSION@|$(VERSION)|g' cmake/tfitConfigVersion.cmake.in > $(INSTALL_CMAKE)/tfitConfigVersion.cmake
+	chmod 644 $(INSTALL_CMAKE)/tfitConfigVersion.cmake
+	install -m 644 cmake/arm-none-eabi-m4f.cmake $(INSTALL_SHARE)/cmake
+	install -m 644 linker/*.ld linker/startup.c linker/startup.h linker/semihost.c linker/semihost.h \
+	  $(INSTALL_SHARE)/linker
+	$(foreach c,$(INSTALL_CORES),install -d $(DESTDIR)$(PREFIX)/lib/tfit/$(c) && \
+	  install -m 644 $(B)/$(c)/libtfit.a $(DESTDIR)$(PREFIX)/lib/tfit/$(c)/libtfit.a;)
 
 clean:
 	rm -rf $(B)
@@ -137,5 +157,6 @@ help:
 	@echo "make demo       the main job, end to end"
 	@echo "make check      every test (installs missing Debian packages when root)"
 	@echo "make bench      speed and size measurements (medians, ratios, instruction counts)"
-	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file"
+	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file, CMake package"
+	@echo "                (INSTALL_CORES=\"cortex-m4f cortex-m7\": their libraries too)"
 	@echo "make clean      remove build/"

@@ -12,14 +12,29 @@
 #include "base/atomic_file.h"
 #include "base/log.h"
 #include "cli/cmd_verify_hertz.h"
+#include "materials/material.h"
 #include "verify/hertz.h"
 
 #define MAX_COUNTS 8
 
+/* "linear, svk, ...": the registered laws with parameters E and nu. */
+static void elastic_laws(char *out, size_t len)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (size_t i = 0; i < tf_law_count() && used < len; ++i) {
+        const tf_law_ops *l = tf_law_at(i);
+        if (tf_law_param_index(l, "E") >= 0 && tf_law_param_index(l, "nu") >= 0) {
+            int w = snprintf(out + used, len - used, "%s%s", used ? ", " : "", l->name);
+            used += w > 0 ? (size_t)w : 0;
+        }
+    }
+}
+
 void tf_verify_hertz_help(FILE *out)
 {
     fprintf(out,
-            "usage: tissuefit verify hertz [--cells C1,C2,..] [--law linear|svk|neohooke]\n"
+            "usage: tissuefit verify hertz [--cells C1,C2,..] [--law NAME]\n"
             "                              [--csv FILE]\n\n"
             "Presses a rigid sphere (R = 100 mm) into a block of E = 1 MPa, nu = 0.3 with\n"
             "the MLS collocation solver (docs/collocation.md) at d/R = 1e-4, 2.5e-4, 4e-4,\n"
@@ -30,15 +45,18 @@ void tf_verify_hertz_help(FILE *out)
             "particles).  Prints particles,h0,d,a,F,F_theory,d_theory,d_error for every\n"
             "indentation and the L2 errors of each run.\n\n"
             "  --cells LIST  cells per nested grid, 2 to 32 each, up to %d values\n"
-            "  --law NAME    material law (default linear; svk is seed 004's)\n"
-            "  --csv FILE    also write the rows to FILE\n",
+            "  --law NAME    a material law with parameters E and nu (default linear;\n"
+            "                svk is seed 004's): ",
             MAX_COUNTS);
+    char names[256];
+    elastic_laws(names, sizeof names);
+    fprintf(out, "%s\n  --csv FILE    also write the rows to FILE\n", names);
 }
 
 typedef struct hertz_args {
     int cells[MAX_COUNTS];
     size_t n;
-    tf_law law;
+    const tf_law_ops *law;
     const char *csv;
 } hertz_args;
 
@@ -65,7 +83,7 @@ static int parse(tf_ctx *ctx, int argc, char **argv, hertz_args *a)
                                          {"law", required_argument, NULL, 'l'},
                                          {"csv", required_argument, NULL, 'o'},
                                          {0}};
-    *a = (hertz_args){.cells = {4, 6, 8}, .n = 3, .law = TF_LAW_LINEAR};
+    *a = (hertz_args){.cells = {4, 6, 8}, .n = 3, .law = tf_law_find("linear")};
     int c;
     optind = 1;
     opterr = 0;
@@ -75,13 +93,15 @@ static int parse(tf_ctx *ctx, int argc, char **argv, hertz_args *a)
                 return -1;
             }
         } else if (c == 'l') {
-            if (strcmp(optarg, "linear") && strcmp(optarg, "svk") && strcmp(optarg, "neohooke")) {
-                tf_error(ctx, "verify hertz: --law '%s' is not linear, svk or neohooke", optarg);
+            const tf_law_ops *law = tf_law_find(optarg);
+            if (law == NULL || tf_law_param_index(law, "E") < 0 ||
+                tf_law_param_index(law, "nu") < 0) {
+                char names[256];
+                elastic_laws(names, sizeof names);
+                tf_error(ctx, "verify hertz: --law '%s' is not one of %s", optarg, names);
                 return -1;
             }
-            a->law = !strcmp(optarg, "linear") ? TF_LAW_LINEAR
-                     : !strcmp(optarg, "svk")  ? TF_LAW_SVK
-                                               : TF_LAW_NEOHOOKE;
+            a->law = law;
         } else if (c == 'o') {
             a->csv = optarg;
         } else {

@@ -8,6 +8,9 @@
 #include "base/blas_pin.h"
 #include "cli/cli.h"
 #include "base/log.h"
+#include "materials/material.h"
+#include "scene/scene.h"
+#include "solvers/solver.h"
 #include "tfit.h"
 
 static const tf_command *const commands[] = {
@@ -21,6 +24,49 @@ static const tf_command *const commands[] = {
 };
 #define N_COMMANDS (sizeof commands / sizeof commands[0])
 
+/* "  name" and text from column 22, in lines of at most 79 characters. */
+static void entry(FILE *out, const char *name, const char *text)
+{
+    int col = fprintf(out, "  %s", name);
+    if (col > 21) {
+        fputc('\n', out);
+        col = 0;
+    }
+    for (const char *p = text + strspn(text, " "); *p != '\0'; p += strspn(p, " ")) {
+        int w = (int)strcspn(p, " ");
+        if (col > 22 && col + 1 + w > 79) {
+            fputc('\n', out);
+            col = 0;
+        }
+        col += fprintf(out, "%*s%.*s", col < 22 ? 22 - col : 1, "", w, p);
+        p += w;
+    }
+    fputc('\n', out);
+}
+
+/* Every registered solver and material law, and the Newton tangents, from
+ * their registries (the scene schema for the tangents). */
+static void registries(FILE *out)
+{
+    char text[512];
+    fprintf(out, "\nSolvers (scene key solver.method):\n");
+    for (size_t i = 0; i < tf_solver_type_count(); ++i) {
+        const tf_solver_ops *t = tf_solver_type_at(i);
+        entry(out, t->name, t->summary);
+    }
+    fprintf(out, "\nMaterial laws (scene key material.law; its parameters are keys of material):\n");
+    for (size_t i = 0; i < tf_law_count(); ++i) {
+        const tf_law_ops *l = tf_law_at(i);
+        char params[128];
+        tf_law_param_list(l, 0, params, sizeof params);
+        snprintf(text, sizeof text, "%s. Parameters: %s.", l->summary, params);
+        entry(out, l->name, text);
+    }
+    tf_scene_key_values("solver.newton.tangent", text, sizeof text);
+    fprintf(out, "\nNewton tangents (scene key solver.newton.tangent, the Newton solvers):\n  %s\n",
+            text);
+}
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -33,6 +79,7 @@ static void usage(FILE *out)
     for (size_t i = 0; i < N_COMMANDS; ++i) {
         fprintf(out, "  %-12s %s\n", commands[i]->name, commands[i]->summary);
     }
+    registries(out);
     fprintf(out,
             "\nGlobal options:\n"
             "  -q, --quiet   no progress messages on stderr (errors are still shown)\n"

@@ -37,11 +37,11 @@
  * has no potential).  For k = 0 it is (k1 + k2 phi1) D(1, nu).
  */
 #include <math.h>
+#include <stdio.h>
 
 #include "materials/elasticity.h"
 #include "materials/kinematics.h"
 #include "materials/laws.h"
-#include "materials/material.h"
 
 void tf_relax_factors(double x, double *decay, double *phi1, double *phi2)
 {
@@ -100,12 +100,13 @@ typedef struct kelvin_step {
     double eps[9], en[9], de[9];
 } kelvin_step;
 
-static void step_init(const tf_material *m, const double F[9], double dt, const double *hold,
+static void step_init(const double *p, const double F[9], double dt, const double *hold,
                       kelvin_step *st)
 {
-    st->inf = tf_lame_from(m->k1, m->poisson);
-    st->two = tf_lame_from(m->k2, m->poisson);
-    double x = m->k2 > 0 ? dt * m->k2 / m->eta : 0;
+    double k2 = p[TF_KELVIN_K2];
+    st->inf = tf_lame_from(p[TF_KELVIN_K1], p[TF_KELVIN_NU]);
+    st->two = tf_lame_from(k2, p[TF_KELVIN_NU]);
+    double x = k2 > 0 ? dt * k2 / p[TF_KELVIN_ETA] : 0;
     tf_relax_factors(x, &st->decay, &st->phi1, &st->phi2);
     tf_small_strain(F, st->eps);
     sym_from_voigt(hold + 6, st->en);
@@ -114,7 +115,7 @@ static void step_init(const tf_material *m, const double F[9], double dt, const 
     }
 }
 
-static void tangent(const tf_material *m, const kelvin_step *st, double C[36])
+static void tangent(double k, const kelvin_step *st, double C[36])
 {
     double y[9];
     for (int q = 0; q < 9; ++q) {
@@ -124,8 +125,8 @@ static void tangent(const tf_material *m, const kelvin_step *st, double C[36])
         double unit[6] = {0, 0, 0, 0, 0, 0}, dx[9], dn[9], dh[9], ds[9] = {0};
         unit[c] = 1; /* engineering shear: the tensor gets 1/2 */
         tf_tensor_strain(unit, dx);
-        adjust(1, m->k, st->eps, dx, dn);
-        adjust(st->phi1, m->k, y, dx, dh);
+        adjust(1, k, st->eps, dx, dn);
+        adjust(st->phi1, k, y, dx, dh);
         add_iso(&st->inf, dn, ds);
         add_iso(&st->two, dh, ds);
         for (int r = 0; r < 6; ++r) {
@@ -134,26 +135,105 @@ static void tangent(const tf_material *m, const kelvin_step *st, double C[36])
     }
 }
 
-void tf_kelvin_eval(const tf_material *m, const double F[9], double dt, const double *hold,
-                    double *hnew, double S[6], double C[36])
+static int eval(const double *p, const double F[9], double dt, const double *hold, double *hnew,
+                double S[6], double C[36], double *W)
 {
+    (void)W; /* none: the law has no stored energy */
+    const double k = p[TF_KELVIN_K];
     kelvin_step st;
-    step_init(m, F, dt, hold, &st);
+    step_init(p, F, dt, hold, &st);
     double h[9], n[9], inc[9], dd[9], s[9] = {0};
     sym_from_voigt(hold, h);
     tf_matmul3(st.eps, st.eps, n);
-    adjust(1, m->k, st.en, st.de, inc);
+    adjust(1, k, st.en, st.de, inc);
     tf_matmul3(st.de, st.de, dd);
     for (int q = 0; q < 9; ++q) {
-        n[q] = st.eps[q] + m->k * n[q]; /* N(eps), eq 10 */
-        h[q] = st.decay * h[q] + st.phi1 * inc[q] + 2 * m->k * st.phi2 * dd[q];
+        n[q] = st.eps[q] + k * n[q]; /* N(eps), eq 10 */
+        h[q] = st.decay * h[q] + st.phi1 * inc[q] + 2 * k * st.phi2 * dd[q];
     }
     if (C) {
-        tangent(m, &st, C); /* before hnew is written: hold may be hnew */
+        tangent(k, &st, C); /* before hnew is written: hold may be hnew */
     }
     add_iso(&st.inf, n, s);
     add_iso(&st.two, h, s);
     tf_voigt_stress(s, S);
     tf_voigt_stress(h, hnew);
     tf_voigt_stress(st.eps, hnew + 6);
+    return TF_MAT_OK;
 }
+
+/* ---- the Kelvin solid's parameters, shared with kelvin_nh.c ---- */
+
+const tf_law_param tf_kelvin_params[TF_KELVIN_PARAMS] = {
+    [TF_KELVIN_NU] = {"nu", "Poisson's ratio", NAN},
+    [TF_KELVIN_K1] = {"k1", "the relaxed modulus E_inf, MPa (Fig. 2's spring K1)", NAN},
+    [TF_KELVIN_K2] = {"k2", "the Maxwell arm's spring, MPa: E_0 = k1 + k2 (K2)", NAN},
+    [TF_KELVIN_ETA] = {"eta", "the dashpot, MPa s: tau = eta / k2", NAN},
+    [TF_KELVIN_K] = {"k", "the adjustment N(eps) = eps + k eps^2 (eq 10)", 0},
+};
+
+void tf_kelvin_moduli(const double *p, double *young, double *poisson)
+{
+    *young = p[TF_KELVIN_K1] + p[TF_KELVIN_K2];
+    *poisson = p[TF_KELVIN_NU];
+}
+
+void tf_kelvin_relaxation(const double *p, double *g_inf, double *tau)
+{
+    double k1 = p[TF_KELVIN_K1], k2 = p[TF_KELVIN_K2], e0 = k1 + k2;
+    *g_inf = k1 / e0;
+    *tau = k2 > 0 ? p[TF_KELVIN_ETA] / k2 : INFINITY;
+}
+
+const char *tf_kelvin_check(const double *p, char *msg, size_t len)
+{
+    double k1 = p[TF_KELVIN_K1], k2 = p[TF_KELVIN_K2], eta = p[TF_KELVIN_ETA];
+    double k = p[TF_KELVIN_K];
+    const char *bad = tf_poisson_check(p[TF_KELVIN_NU], msg, len);
+    if (bad != NULL) {
+        return bad;
+    }
+    if (!isfinite(k1) || !(k1 > 0)) {
+        return tf_law_bad(msg, len, "k1", k1,
+                          "the relaxed modulus k1 must be a finite number > 0 MPa");
+    }
+    if (!isfinite(k2) || !(k2 >= 0)) {
+        char why[160];
+        snprintf(why, sizeof why,
+                 "the relaxed modulus k1 = %g MPa must not be above the instantaneous one "
+                 "k1 + k2 (k2 a finite number >= 0 MPa)",
+                 k1);
+        return tf_law_bad(msg, len, "k2", k2, why);
+    }
+    if (k2 > 0 && (!isfinite(eta) || !(eta > 0) || !isfinite(eta / k2))) {
+        return tf_law_bad(msg, len, "eta", eta,
+                          "the dashpot eta must be a finite number > 0 MPa s (tau = eta/k2 > 0)");
+    }
+    if (!isfinite(k) || !(k >= 0)) {
+        return tf_law_bad(msg, len, "k", k, "the adjustment k of N = eps + k eps^2 must be >= 0");
+    }
+    return NULL;
+}
+
+/* sigma = D N(eps) has no potential: with k != 0 its tangent is not
+ * symmetric (above). */
+static unsigned caps_at(const double *p)
+{
+    return p[TF_KELVIN_K] != 0 ? TF_MATERIAL_UNSYMMETRIC : 0u;
+}
+
+const tf_law_ops tf_law_kelvin = {
+    .name = "kelvin",
+    .summary = "seed 001's nonlinear Kelvin solid (eqs 9-13): relaxation modulus "
+               "k1 + k2 exp(-t/tau) on N(eps) = eps + k eps^2, small strain",
+    .caps = TF_MATERIAL_HISTORY,
+    .caps_at = caps_at,
+    .volume = TF_VOLUME_JACOBIAN,
+    .n_params = TF_KELVIN_PARAMS,
+    .params = tf_kelvin_params,
+    .history = 12, /* [h(6), eps_n(6)] */
+    .moduli = tf_kelvin_moduli,
+    .relaxation = tf_kelvin_relaxation,
+    .check = tf_kelvin_check,
+    .eval = eval,
+};

@@ -13,24 +13,25 @@
  *
  * exact when S0 is linear in time inside the step.  The neo-Hookean energy
  * supplies the strain stiffening, so seed 001's adjustment k is not used
- * (tf_material_check refuses k != 0 for this law).  S depends on C = F^T F
+ * (its check refuses k != 0).  S depends on C = F^T F
  * only (objective), and the tangent (g_inf + (1 - g_inf) phi1) C0 is
  * symmetric.  At small strain it is the KELVIN law with k = 0.
  */
 #include "materials/elasticity.h"
 #include "materials/laws.h"
-#include "materials/material.h"
 
-int tf_kelvin_nh_eval(const tf_material *m, const double F[9], double dt, const double *hold,
-                      double *hnew, double S[6], double C[36])
+static int eval(const double *p, const double F[9], double dt, const double *hold, double *hnew,
+                double S[6], double C[36], double *W)
 {
-    double e0 = m->k1 + m->k2, ginf = m->k1 / e0, s0[6];
-    tf_lame l = tf_lame_from(e0, m->poisson);
+    (void)W; /* none: the law has no stored energy */
+    double k1 = p[TF_KELVIN_K1], k2 = p[TF_KELVIN_K2];
+    double e0 = k1 + k2, ginf = k1 / e0, s0[6];
+    tf_lame l = tf_lame_from(e0, p[TF_KELVIN_NU]);
     int rc = tf_neohooke_eval(l.mu, l.lambda + 2 * l.mu / 3, F, s0, C, NULL);
     if (rc != TF_MAT_OK) {
         return rc;
     }
-    double decay, phi1, phi2, x = m->k2 > 0 ? dt * m->k2 / m->eta : 0;
+    double decay, phi1, phi2, x = k2 > 0 ? dt * k2 / p[TF_KELVIN_ETA] : 0;
     tf_relax_factors(x, &decay, &phi1, &phi2);
     for (int v = 0; v < 6; ++v) {
         double h = decay * hold[v] + phi1 * (s0[v] - hold[6 + v]);
@@ -46,3 +47,29 @@ int tf_kelvin_nh_eval(const tf_material *m, const double F[9], double dt, const 
     }
     return TF_MAT_OK;
 }
+
+static const char *check(const double *p, char *msg, size_t len)
+{
+    const char *bad = tf_kelvin_check(p, msg, len);
+    if (bad == NULL && p[TF_KELVIN_K] != 0) {
+        bad = tf_law_bad(msg, len, "k", p[TF_KELVIN_K],
+                         "the neo-Hookean Kelvin law takes its nonlinearity from the energy: k "
+                         "must be 0");
+    }
+    return bad;
+}
+
+const tf_law_ops tf_law_kelvin_nh = {
+    .name = "kelvin-neo-hookean",
+    .summary = "ours: the kelvin law's relaxation g(t) on the neo-Hookean S of the "
+               "instantaneous moduli, finite strain (k must be 0)",
+    .caps = TF_MATERIAL_FINITE | TF_MATERIAL_HISTORY,
+    .volume = TF_VOLUME_JACOBIAN,
+    .n_params = TF_KELVIN_PARAMS,
+    .params = tf_kelvin_params,
+    .history = 12, /* [h(6), S0_n(6)] */
+    .moduli = tf_kelvin_moduli,
+    .relaxation = tf_kelvin_relaxation,
+    .check = check,
+    .eval = eval,
+};

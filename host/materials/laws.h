@@ -1,14 +1,44 @@
 /*
- * laws.h — the individual material laws behind material.h (internal to
- * host/materials; the solver calls tf_material_eval).  Arguments as in
- * tf_material_eval; C and W may be NULL.
+ * laws.h — what the laws in host/materials share (internal to this folder:
+ * the rest of the program reaches a law through the registry and
+ * material.h).  Each law file defines its `const tf_law_ops tf_law_NAME`,
+ * which only registry.c names.
  */
 #ifndef TF_LAWS_H
 #define TF_LAWS_H
 
-/* The material's parameters (material.h): declared, not included, so that
- * material.c includes this header without a module cycle. */
-struct tf_material;
+#include <stddef.h>
+
+#include "materials/material.h"
+
+/* A sentence for parameter key = v (why, then the value), and the key:
+ * what a law's check returns. */
+const char *tf_law_bad(char *msg, size_t len, const char *key, double v, const char *why);
+
+/* ---- the isotropic elastic parameters (elastic_params.c) ---- */
+
+/* (E, nu), in this order: linear, svk, neo-hookean. */
+enum { TF_ELASTIC_E, TF_ELASTIC_NU, TF_ELASTIC_PARAMS };
+extern const tf_law_param tf_elastic_params[TF_ELASTIC_PARAMS];
+void tf_elastic_moduli(const double *p, double *young, double *poisson);
+/* E finite and > 0, -1 < nu < 0.5. */
+const char *tf_elastic_check(const double *p, char *msg, size_t len);
+/* nu alone (the Kelvin laws have no E). */
+const char *tf_poisson_check(double nu, char *msg, size_t len);
+
+/* ---- the Kelvin solid's parameters (kelvin.c) ---- */
+
+/* (nu, k1, k2, eta, k), in this order: kelvin, kelvin-neo-hookean. */
+enum { TF_KELVIN_NU, TF_KELVIN_K1, TF_KELVIN_K2, TF_KELVIN_ETA, TF_KELVIN_K, TF_KELVIN_PARAMS };
+extern const tf_law_param tf_kelvin_params[TF_KELVIN_PARAMS];
+/* The instantaneous moduli E_0 = k1 + k2, nu. */
+void tf_kelvin_moduli(const double *p, double *young, double *poisson);
+/* g_inf = k1 / (k1 + k2), tau = eta / k2 (infinite when k2 = 0). */
+void tf_kelvin_relaxation(const double *p, double *g_inf, double *tau);
+/* nu, k1 > 0, 0 <= k2, eta > 0 with tau finite when k2 > 0, k >= 0. */
+const char *tf_kelvin_check(const double *p, char *msg, size_t len);
+
+/* ---- evaluations one law borrows from another ---- */
 
 /* St. Venant-Kirchhoff, Lame constants lambda, mu (svk.c). */
 int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double C[36],
@@ -19,20 +49,8 @@ int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double
 int tf_neohooke_eval(double mu, double kappa, const double F[9], double S[6], double C[36],
                      double *W);
 
-/* Seed 001's small-strain Kelvin law; history [h(6), eps_n(6)] (kelvin.c). */
-void tf_kelvin_eval(const struct tf_material *m, const double F[9], double dt, const double *hold,
-                    double *hnew, double S[6], double C[36]);
-
-/* The relaxation on a neo-Hookean base; history [h(6), S0_n(6)]
- * (kelvin_nh.c). */
-int tf_kelvin_nh_eval(const struct tf_material *m, const double F[9], double dt, const double *hold,
-                      double *hnew, double S[6], double C[36]);
-
-/* Factors of the exact one-step update of a hereditary integral with
- * kernel exp(-t/tau) over a step of x = dt/tau in which the driving
- * quantity is linear (phi1) or has a quadratic part (phi2) in time:
- * decay = exp(-x), phi1 = (1 - exp(-x))/x, phi2 = (x - 1 + exp(-x))/x^2,
- * with their limits 1 and 1/2 at x = 0 (kelvin.c). */
-void tf_relax_factors(double x, double *decay, double *phi1, double *phi2);
+/* CalculiX's NEO HOOKE constants for E, nu: C10 = mu/2, D1 = 2/K
+ * (neohooke.c). */
+void tf_neohooke_constants(double young, double poisson, double *c10, double *d1);
 
 #endif /* TF_LAWS_H */

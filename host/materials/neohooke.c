@@ -22,9 +22,9 @@
  */
 #include <math.h>
 
+#include "materials/elasticity.h"
 #include "materials/kinematics.h"
 #include "materials/laws.h"
-#include "materials/material.h"
 
 static void tangent(double mu, double kappa, double J, double j23, double I1, const double ci[9],
                     double C[36])
@@ -65,3 +65,33 @@ int tf_neohooke_eval(double mu, double kappa, const double F[9], double S[6], do
     }
     return TF_MAT_OK;
 }
+
+void tf_neohooke_constants(double young, double poisson, double *c10, double *d1)
+{
+    tf_lame l = tf_lame_from(young, poisson);
+    *c10 = l.mu / 2;
+    *d1 = 2 / (l.lambda + 2 * l.mu / 3);
+}
+
+static int eval(const double *p, const double F[9], double dt, const double *hold, double *hnew,
+                double S[6], double C[36], double *W)
+{
+    (void)dt;
+    (void)hold;
+    (void)hnew;
+    tf_lame l = tf_lame_from(p[TF_ELASTIC_E], p[TF_ELASTIC_NU]);
+    return tf_neohooke_eval(l.mu, l.lambda + 2 * l.mu / 3, F, S, C, W);
+}
+
+const tf_law_ops tf_law_neohooke = {
+    .name = "neo-hookean",
+    .summary = "compressible neo-Hookean, CalculiX's NEO HOOKE energy with C10 = mu/2, "
+               "D1 = 2/K of E and nu",
+    .caps = TF_MATERIAL_FINITE | TF_MATERIAL_ENERGY,
+    .volume = TF_VOLUME_JACOBIAN,
+    .n_params = TF_ELASTIC_PARAMS,
+    .params = tf_elastic_params,
+    .moduli = tf_elastic_moduli,
+    .check = tf_elastic_check,
+    .eval = eval,
+};

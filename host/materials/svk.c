@@ -12,7 +12,6 @@
  */
 #include "materials/kinematics.h"
 #include "materials/laws.h"
-#include "materials/material.h"
 
 int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double C[36],
                 double *W)
@@ -46,3 +45,28 @@ int tf_svk_eval(double lambda, double mu, const double F[9], double S[6], double
     }
     return TF_MAT_OK;
 }
+
+static int eval(const double *p, const double F[9], double dt, const double *hold, double *hnew,
+                double S[6], double C[36], double *W)
+{
+    (void)dt;
+    (void)hold;
+    (void)hnew;
+    tf_lame l = tf_lame_from(p[TF_ELASTIC_E], p[TF_ELASTIC_NU]);
+    return tf_svk_eval(l.lambda, l.mu, F, S, C, W);
+}
+
+/* Its volumetric energy is lambda (tr E)^2 / 2: a volumetric correction
+ * averages tr E (docs/solver.md, "Nonlinear laws"). */
+const tf_law_ops tf_law_svk = {
+    .name = "svk",
+    .summary = "St. Venant-Kirchhoff: S = lambda tr(E) I + 2 mu E in the Green strain "
+               "(seed 004 eqs 4-5)",
+    .caps = TF_MATERIAL_FINITE | TF_MATERIAL_ENERGY | TF_MATERIAL_HOOKE,
+    .volume = TF_VOLUME_GREEN_TRACE,
+    .n_params = TF_ELASTIC_PARAMS,
+    .params = tf_elastic_params,
+    .moduli = tf_elastic_moduli,
+    .check = tf_elastic_check,
+    .eval = eval,
+};

@@ -7,11 +7,11 @@
 
 static void cantilever(const tf_problem *p, const double at[3], double u[3], double g[9])
 {
-    const tf_material *m = &p->material;
-    double lo[3], hi[3];
+    double young, poisson, lo[3], hi[3];
+    tf_material_moduli(&p->material, &young, &poisson);
     tf_problem_bounds(p, lo, hi);
-    double e = m->young / (1 - m->poisson * m->poisson);
-    double nu = m->poisson / (1 - m->poisson);
+    double e = young / (1 - poisson * poisson);
+    double nu = poisson / (1 - poisson);
     double len = hi[0] - lo[0], d = hi[1] - lo[1];
     double x = at[0] - lo[0], y = at[1] - 0.5 * (lo[1] + hi[1]);
     double c = p->analytic.load / (6 * e * (d * d * d / 12)); /* P / (6 E I) */
@@ -47,7 +47,7 @@ void tf_analytic_eval(const tf_problem *p, const double x[3], double u[3], doubl
 void tf_analytic_traction(const tf_problem *p, tf_face face, const double x[3], double t[3])
 {
     double u[3], g[9], sigma[9];
-    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    tf_lame l = tf_material_lame(&p->material);
     tf_analytic_eval(p, x, u, g);
     tf_stress(&l, g, sigma);
     int a = tf_face_axis(face);

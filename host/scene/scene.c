@@ -55,9 +55,9 @@ static int covers(const char *a, const char *b)
     return strncmp(a, b, m) == 0 && (la == lb || (la < lb ? b[la] : a[lb]) == '.');
 }
 
-static void report(const char *text, size_t len, const char *name, const char *const *sets,
-                   const char (*set_paths)[128], size_t n_sets, const sd_issue *is, char *err,
-                   size_t errlen)
+static void report(const cyaml_schema_value_t *root, const char *text, size_t len,
+                   const char *name, const char *const *sets, const char (*set_paths)[128],
+                   size_t n_sets, const sd_issue *is, char *err, size_t errlen)
 {
     const char *sep = is->path[0] ? ": " : "";
     char buf[128];
@@ -68,7 +68,7 @@ static void report(const char *text, size_t len, const char *name, const char *c
             return;
         }
     }
-    int line = is->path[0] ? sd_locate(text, len, is->path) : 0;
+    int line = is->path[0] ? sd_locate(root, text, len, is->path) : 0;
     if (line > 0) {
         snprintf(err, errlen, "%s:%d: %s%s%s", name, line, is->path, sep, is->msg);
     } else {
@@ -130,8 +130,15 @@ static void node_number_warnings(const sd_scene *doc, const char (*set_paths)[12
 tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
                              const char *const *sets, size_t n_sets, char *err, size_t errlen)
 {
+    sd_schema schema;
+    if (sd_schema_init(&schema) != 0) {
+        snprintf(err, errlen, "%s: the material laws have more parameter keys than a scene holds "
+                              "(SD_MATERIAL_KEYS)", name);
+        return NULL;
+    }
+    const cyaml_schema_value_t *root = &schema.root;
     sd_strict_issue si;
-    if (sd_strict_check(text, len, &sd_scene_schema, "", &si) != 0) {
+    if (sd_strict_check(text, len, root, "", &si) != 0) {
         snprintf(err, errlen, "%s:%d: %s%s%s", name, si.line, si.path, si.path[0] ? ": " : "",
                  si.msg);
         return NULL;
@@ -139,11 +146,10 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     sd_log log = {.len = 0};
     cyaml_config_t cfg = sd_config(&log);
     sd_scene *doc = NULL;
-    if (cyaml_load_data((const uint8_t *)text, len, &cfg, &sd_scene_schema, (void **)&doc, NULL) !=
-        CYAML_OK) {
+    if (cyaml_load_data((const uint8_t *)text, len, &cfg, root, (void **)&doc, NULL) != CYAML_OK) {
         int line;
         char path[128], msg[256];
-        sd_explain(text, len, &log, "", &line, path, sizeof path, msg, sizeof msg);
+        sd_explain(root, text, len, &log, "", &line, path, sizeof path, msg, sizeof msg);
         snprintf(err, errlen, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", msg);
         return NULL;
     }
@@ -156,7 +162,7 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
     int ok = set_paths && s;
     for (size_t k = 0; ok && k < n_sets; ++k) {
         char msg[512], buf[128];
-        if (sd_set(doc, sets[k], set_paths[k], sizeof set_paths[k], msg, sizeof msg) != 0) {
+        if (sd_set(root, doc, sets[k], set_paths[k], sizeof set_paths[k], msg, sizeof msg) != 0) {
             snprintf(err, errlen, "--set %s: %s: %s", shown_set(sets[k], buf, sizeof buf),
                      set_paths[k], msg);
             ok = 0;
@@ -168,7 +174,8 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         snprintf(p->source, sizeof p->source, "%s", name);
         stem(name, p->name, sizeof p->name);
         if (sd_build(doc, p, &s->fit, &is) != 0) {
-            report(text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err, errlen);
+            report(root, text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err,
+                   errlen);
             ok = 0;
         } else {
             node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
@@ -177,12 +184,23 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         snprintf(err, errlen, "out of memory");
     }
     free(set_paths);
-    sd_scene_free(doc);
+    sd_scene_free(root, doc);
     if (!ok) {
         tf_scene_free(s);
         return NULL;
     }
     return s;
+}
+
+void tf_scene_key_values(const char *path, char *out, size_t outlen)
+{
+    sd_schema schema;
+    out[0] = '\0';
+    const cyaml_schema_value_t *v =
+        sd_schema_init(&schema) == 0 ? sd_schema_at(&schema.root, path) : NULL;
+    if (v != NULL && (v->type == CYAML_ENUM || v->type == CYAML_FLAGS)) {
+        sd_names(v, out, outlen);
+    }
 }
 
 /* The bytes of a scene file.  Only a regular file is read: a FIFO would

@@ -41,4 +41,9 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
 
 void tf_scene_free(tf_scene *s);
 
+/* "full, modified, ...": the values a key of named values accepts (path as
+ * for --set, e.g. "solver.newton.tangent"), or "" when the key is not
+ * one. */
+void tf_scene_key_values(const char *path, char *out, size_t outlen);
+
 #endif /* TF_SCENE_H */

@@ -14,6 +14,7 @@
 #include "problem/regions.h"
 #include "scene/scene_grading.h"
 #include "scene/scene_history.h"
+#include "scene/scene_material.h"
 #include "scene/scene_organ.h"
 #include "scene/scene_regions.h"
 #include "solvers/collocation/colloc_solver.h"
@@ -102,77 +103,6 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
     if (tf_cloud_box_graded(&s->cloud, box->min, box->max, box->grid, box->jitter, box->seed,
                             &box->grading) != 0) {
         return sd_fail(is, "geometry.grid", "out of memory for %.0f nodes", nodes);
-    }
-    return 0;
-}
-
-/* The scene's key of a tf_material field tf_material_check names. */
-static const char *material_key(const char *field)
-{
-    return strcmp(field, "young") == 0 ? "E" : strcmp(field, "poisson") == 0 ? "nu" : field;
-}
-
-static int kelvin_law(tf_law law)
-{
-    return law == TF_LAW_KELVIN || law == TF_LAW_KELVIN_NH;
-}
-
-static int material(const sd_material *m, tf_problem *s, sd_issue *is)
-{
-    tf_material *mat = &s->material;
-    *mat = (tf_material){.law = m->law ? (tf_law)*m->law : TF_LAW_LINEAR,
-                         .poisson = m->poisson,
-                         .young = m->young ? *m->young : NAN,
-                         .k1 = m->k1 ? *m->k1 : NAN,
-                         .k2 = m->k2 ? *m->k2 : NAN,
-                         .eta = m->eta ? *m->eta : NAN,
-                         .k = m->k ? *m->k : 0};
-    const char *law = tf_law_name(mat->law);
-    if (kelvin_law(mat->law)) {
-        const char *missing = !m->k1 ? "k1" : !m->k2 ? "k2" : !m->eta ? "eta" : NULL;
-        if (missing) {
-            char path[32];
-            snprintf(path, sizeof path, "material.%s", missing);
-            return sd_fail(is, path, "the %s law needs k1, k2 and eta (MPa, MPa, MPa s)", law);
-        }
-        if (m->young) {
-            return sd_fail(is, "material.E",
-                        "the %s law takes k1 (relaxed) and k2 (k1 + k2 instantaneous), not E",
-                        law);
-        }
-        /* the small-strain moduli of the initial response (B-bar, weak
-         * boundary terms): the instantaneous ones */
-        mat->young = mat->k1 + mat->k2;
-    } else {
-        if (!m->young) {
-            return sd_fail(is, "material.E", "'E' is missing: the %s law needs Young's modulus (MPa)",
-                        law);
-        }
-        const char *extra = m->k1 ? "k1" : m->k2 ? "k2" : m->eta ? "eta" : m->k ? "k" : NULL;
-        if (extra) {
-            char path[32];
-            snprintf(path, sizeof path, "material.%s", extra);
-            return sd_fail(is, path, "belongs to the kelvin laws, not to %s", law);
-        }
-    }
-    if (mat->law == TF_LAW_LINEAR) {
-        if (!(isfinite(mat->young) && mat->young > 0)) {
-            return sd_fail(is, "material.E",
-                        "Young's modulus must be a positive number of MPa (got %g)", mat->young);
-        }
-        if (!(mat->poisson > -1 && mat->poisson < 0.5)) {
-            return sd_fail(is, "material.nu",
-                        "Poisson's ratio must lie in (-1, 0.5); 0.5 is incompressible, which "
-                        "this displacement formulation cannot represent (got %g)",
-                        mat->poisson);
-        }
-        return 0;
-    }
-    char why[256], path[32];
-    const char *bad = tf_material_check(mat, why, sizeof why);
-    if (bad != NULL) {
-        snprintf(path, sizeof path, "material.%s", material_key(bad));
-        return sd_fail(is, path, "%s", why);
     }
     return 0;
 }
@@ -698,8 +628,9 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     }
     o->gauss = d->gauss ? *d->gauss : o->gauss;
     o->tet_degree = d->tet_degree ? *d->tet_degree : o->tet_degree;
-    int efg = strcmp(o->method, "efg-galerkin") == 0;
-    o->bc = d->bc ? (tf_bc_method)*d->bc : efg ? TF_BC_NITSCHE : o->bc;
+    const tf_solver_ops *type = tf_solver_type_find(o->method);
+    int weak = type != NULL && type->weak_bc; /* (an unknown method was refused above) */
+    o->bc = d->bc ? (tf_bc_method)*d->bc : weak ? TF_BC_NITSCHE : o->bc;
     o->penalty = d->penalty ? *d->penalty : o->penalty;
     o->nitsche = d->nitsche ? *d->nitsche : o->nitsche;
     o->integration = d->integration ? (tf_integration)*d->integration : o->integration;
@@ -741,10 +672,11 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
     if (!(isfinite(o->nitsche) && o->nitsche > 0)) {
         return sd_fail(is, "solver.nitsche", "must be a positive factor");
     }
-    if (efg && o->bc == TF_BC_ELIMINATION) {
+    if (weak && o->bc == TF_BC_ELIMINATION) {
         return sd_fail(is, "solver.bc",
-                    "elimination needs shape functions that interpolate (rpim-galerkin); EFG "
-                    "takes penalty or nitsche");
+                       "elimination needs shape functions that interpolate (rpim-galerkin); %s "
+                       "takes penalty or nitsche",
+                       o->method);
     }
     if (!(o->rcond_warn > 0 && o->rcond_warn < 1)) {
         return sd_fail(is, "solver.rcond_warn", "must lie in (0, 1)");
@@ -895,7 +827,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (doc->name) {
         snprintf(s->name, sizeof s->name, "%s", doc->name);
     }
-    if (geometry(doc, s, is) != 0 || material(&doc->material, s, is) != 0 ||
+    if (geometry(doc, s, is) != 0 || sd_build_material(&doc->material, &s->material, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||

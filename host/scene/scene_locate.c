@@ -124,19 +124,20 @@ static int backtrace_line(const char *log)
     return l ? atoi(l + 7) : 0;
 }
 
-static int locate_mode(const char *text, size_t len, const char *path, int entry_only)
+static int locate_mode(const cyaml_schema_value_t *root, const char *text, size_t len,
+                       const char *path, int entry_only)
 {
     char buf[256], *comp[SD_PATH_MAX];
     snprintf(buf, sizeof buf, "%s", path);
     int n = sd_path_split(buf, comp), line = 0;
     arena a = {.n = 0};
     cyaml_schema_value_t top;
-    if (n > 0 && poison_path(&a, &sd_scene_schema, comp, n, entry_only, &top) == 0) {
+    if (n > 0 && poison_path(&a, root, comp, n, entry_only, &top) == 0) {
         sd_log log = {.len = 0};
         cyaml_config_t cfg = sd_config(&log);
         void *data = NULL;
         if (cyaml_load_data((const uint8_t *)text, len, &cfg, &top, &data, NULL) == CYAML_OK) {
-            cyaml_free(&cfg, &sd_scene_schema, data, 0); /* the path is not in the text */
+            cyaml_free(&cfg, root, data, 0); /* the path is not in the text */
         } else {
             line = backtrace_line(log.text);
         }
@@ -145,9 +146,9 @@ static int locate_mode(const char *text, size_t len, const char *path, int entry
     return line;
 }
 
-int sd_locate(const char *text, size_t len, const char *path)
+int sd_locate(const cyaml_schema_value_t *root, const char *text, size_t len, const char *path)
 {
-    return locate_mode(text, len, path, 1);
+    return locate_mode(root, text, len, path, 1);
 }
 
 /* Path of the value a backtrace points at: its lines run innermost first,
@@ -255,8 +256,9 @@ static int invalid_value(const char *log, char *arg, size_t len)
     return 1;
 }
 
-void sd_explain(const char *text, size_t len, const sd_log *log, const char *base, int *line,
-                char *path, size_t pathlen, char *msg, size_t msglen)
+void sd_explain(const cyaml_schema_value_t *root, const char *text, size_t len,
+                const sd_log *log, const char *base, int *line, char *path, size_t pathlen,
+                char *msg, size_t msglen)
 {
     const char *t = log->text;
     char arg[160], names[256], rel[128];
@@ -264,14 +266,14 @@ void sd_explain(const char *text, size_t len, const sd_log *log, const char *bas
     backtrace_path(t, rel, sizeof rel);
     snprintf(path, pathlen, "%s%s%s", base, base[0] && rel[0] ? "." : "", rel);
     if (after(t, "Unexpected key: ", arg, sizeof arg)) {
-        const cyaml_schema_value_t *v = path[0] ? sd_schema_at(path) : &sd_scene_schema;
+        const cyaml_schema_value_t *v = path[0] ? sd_schema_at(root, path) : root;
         names[0] = '\0';
         if (v != NULL) {
             sd_names(v, names, sizeof names);
         }
         size_t used = strlen(path);
         snprintf(path + used, pathlen - used, "%s%s", used ? "." : "", arg);
-        int exact = locate_mode(text, len, path, 0);
+        int exact = locate_mode(root, text, len, path, 0);
         *line = exact ? exact : *line;
         snprintf(msg, msglen, "unknown key '%s' (known keys here: %s)", arg, names);
     } else if (after(t, "Missing required mapping field: ", arg, sizeof arg)) {
@@ -280,7 +282,7 @@ void sd_explain(const char *text, size_t len, const sd_log *log, const char *bas
     } else if (after(t, "Mapping field already seen: ", arg, sizeof arg)) {
         snprintf(msg, msglen, "key given twice");
     } else if (invalid_value(t, arg, sizeof arg) || after(t, "Unknown flag: ", arg, sizeof arg)) {
-        const cyaml_schema_value_t *v = sd_schema_at(path);
+        const cyaml_schema_value_t *v = sd_schema_at(root, path);
         names[0] = '\0';
         if (v != NULL) {
             sd_names(v, names, sizeof names);

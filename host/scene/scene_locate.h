@@ -16,14 +16,17 @@
 
 #include "scene/scene_schema.h"
 
-/* Line (1-based) of the value at path in the YAML text, or 0 when the text
- * has no such value (an absent optional key, for instance). */
-int sd_locate(const char *text, size_t len, const char *path);
+/* Line (1-based) of the value at path in the YAML text of a scene (schema
+ * root), or 0 when the text has no such value (an absent optional key, for
+ * instance). */
+int sd_locate(const cyaml_schema_value_t *root, const char *text, size_t len, const char *path);
 
 /* Rewords a failed load: writes the innermost line to *line, the path of
  * the offending value to path ("" at the top), and a message to msg.  The
- * text holds the value at path base ("" for a whole scene). */
-void sd_explain(const char *text, size_t len, const sd_log *log, const char *base, int *line,
-                char *path, size_t pathlen, char *msg, size_t msglen);
+ * text holds the value at path base ("" for a whole scene) of a scene of
+ * schema root. */
+void sd_explain(const cyaml_schema_value_t *root, const char *text, size_t len,
+                const sd_log *log, const char *base, int *line, char *path, size_t pathlen,
+                char *msg, size_t msglen);
 
 #endif /* TF_SCENE_LOCATE_H */

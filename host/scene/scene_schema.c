@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "materials/material.h"
 #include "problem/problem.h"
 
 #define OPT CYAML_FLAG_OPTIONAL
@@ -24,11 +25,6 @@ static const cyaml_strval_t faces[] = {
     {"y+", TF_FACE_YMAX}, {"z-", TF_FACE_ZMIN}, {"z+", TF_FACE_ZMAX},
 };
 static const cyaml_strval_t axes[] = {{"x", 0}, {"y", 1}, {"z", 2}};
-static const cyaml_strval_t laws[] = {
-    {"linear", TF_LAW_LINEAR},         {"svk", TF_LAW_SVK},
-    {"neo-hookean", TF_LAW_NEOHOOKE},  {"kelvin", TF_LAW_KELVIN},
-    {"kelvin-neo-hookean", TF_LAW_KELVIN_NH},
-};
 static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, {"z", TF_COMP_Z}};
 static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
@@ -99,17 +95,6 @@ static const cyaml_schema_field_t geometry_fields[] = {
     CYAML_FIELD_MAPPING_PTR("surface", OPT, sd_geometry, surface, surface_fields),
     CYAML_FIELD_FLOAT_PTR("spacing", OPT, sd_geometry, spacing),
     CYAML_FIELD_MAPPING_PTR("refine", OPT, sd_geometry, refine, refine_fields),
-    CYAML_FIELD_END,
-};
-
-static const cyaml_schema_field_t material_fields[] = {
-    CYAML_FIELD_ENUM_PTR("law", STRICT_OPT, sd_material, law, laws, N(laws)),
-    CYAML_FIELD_FLOAT_PTR("E", OPT, sd_material, young),
-    CYAML_FIELD_FLOAT("nu", CYAML_FLAG_DEFAULT, sd_material, poisson),
-    CYAML_FIELD_FLOAT_PTR("k1", OPT, sd_material, k1),
-    CYAML_FIELD_FLOAT_PTR("k2", OPT, sd_material, k2),
-    CYAML_FIELD_FLOAT_PTR("eta", OPT, sd_material, eta),
-    CYAML_FIELD_FLOAT_PTR("k", OPT, sd_material, k),
     CYAML_FIELD_END,
 };
 
@@ -348,7 +333,8 @@ static const cyaml_schema_field_t fit_fields[] = {
 static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_STRING_PTR("name", OPT, sd_scene, name, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_MAPPING("geometry", CYAML_FLAG_DEFAULT, sd_scene, geometry, geometry_fields),
-    CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_scene, material, material_fields),
+    /* its fields come from the law registry (sd_schema_init) */
+    CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_scene, material, NULL),
     CYAML_FIELD_SEQUENCE("fixed", CYAML_FLAG_POINTER, sd_scene, fixed, &fixed_entry, 1,
                          CYAML_UNLIMITED),
     CYAML_FIELD_SEQUENCE("loads", OPT_PTR, sd_scene, loads, &load_entry, 0, CYAML_UNLIMITED),
@@ -364,8 +350,43 @@ static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_END,
 };
 
-const cyaml_schema_value_t sd_scene_schema = {
-    CYAML_VALUE_MAPPING(CYAML_FLAG_POINTER, sd_scene, scene_fields)};
+_Static_assert(N(scene_fields) == SD_SCENE_KEYS + 1, "SD_SCENE_KEYS counts scene_fields");
+
+/* material: law, a name the registry knows (scene_build.c looks it up), and
+ * every parameter key of every law, each a number into its slot. */
+static void material_fields(cyaml_schema_field_t *f, size_t nkeys)
+{
+    static const cyaml_schema_field_t law =
+        CYAML_FIELD_STRING_PTR("law", OPT, sd_material, law, 1, 63);
+    static const cyaml_schema_field_t param =
+        CYAML_FIELD_FLOAT_PTR("", OPT, sd_material, param[0]);
+    static const cyaml_schema_field_t end = CYAML_FIELD_END;
+    f[0] = law;
+    for (size_t k = 0; k < nkeys; ++k) {
+        f[1 + k] = param;
+        f[1 + k].key = tf_law_key_at(k);
+        f[1 + k].data_offset += (uint32_t)(k * sizeof(double *));
+    }
+    f[1 + nkeys] = end;
+}
+
+int sd_schema_init(sd_schema *s)
+{
+    size_t nkeys = tf_law_key_count();
+    if (nkeys > SD_MATERIAL_KEYS) {
+        return -1;
+    }
+    memcpy(s->scene, scene_fields, sizeof scene_fields);
+    for (size_t k = 0; k < SD_SCENE_KEYS; ++k) {
+        if (strcmp(s->scene[k].key, "material") == 0) {
+            s->scene[k].value.mapping.fields = s->material;
+        }
+    }
+    material_fields(s->material, nkeys);
+    s->root = (cyaml_schema_value_t){
+        CYAML_VALUE_MAPPING(CYAML_FLAG_POINTER, sd_scene, s->scene)};
+    return 0;
+}
 
 static void collect(cyaml_log_t level, void *ctx, const char *fmt, va_list args)
 {
@@ -394,10 +415,10 @@ cyaml_config_t sd_config(sd_log *log)
     return c;
 }
 
-void sd_scene_free(sd_scene *doc)
+void sd_scene_free(const cyaml_schema_value_t *root, sd_scene *doc)
 {
     cyaml_config_t c = sd_config(NULL);
-    cyaml_free(&c, &sd_scene_schema, doc, 0);
+    cyaml_free(&c, root, doc, 0);
 }
 
 int sd_path_split(char *buf, char **comp)
@@ -426,12 +447,12 @@ const cyaml_schema_field_t *sd_field(const cyaml_schema_value_t *mapping, const 
     return NULL;
 }
 
-const cyaml_schema_value_t *sd_schema_at(const char *path)
+const cyaml_schema_value_t *sd_schema_at(const cyaml_schema_value_t *root, const char *path)
 {
     char buf[256], *comp[SD_PATH_MAX];
     snprintf(buf, sizeof buf, "%s", path);
     int n = sd_path_split(buf, comp);
-    const cyaml_schema_value_t *v = &sd_scene_schema;
+    const cyaml_schema_value_t *v = root;
     for (int k = 0; k < n && v != NULL; ++k) {
         if (v->type == CYAML_SEQUENCE || v->type == CYAML_SEQUENCE_FIXED) {
             char *end;

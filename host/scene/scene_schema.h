@@ -54,11 +54,14 @@ typedef struct sd_geometry {
     sd_refine *refine;
 } sd_geometry;
 
+/* Parameter keys over the registered laws (materials/material.h), at
+ * most. */
+#define SD_MATERIAL_KEYS 16
+
 typedef struct sd_material {
-    int *law;       /* tf_law; linear when absent */
-    double *young;  /* key E (every law but the Kelvin ones) */
-    double poisson; /* key nu */
-    double *k1, *k2, *eta, *k; /* Kelvin laws (materials/material.h) */
+    char *law; /* a registered law's name; the registry's first when absent */
+    /* param[k]: the value of key tf_law_key_at(k), NULL when absent */
+    double *param[SD_MATERIAL_KEYS];
 } sd_material;
 
 typedef struct sd_plane {
@@ -256,8 +259,23 @@ typedef struct sd_scene {
     sd_fit *fit;
 } sd_scene;
 
-/* Top-level schema (a pointer to sd_scene). */
-extern const cyaml_schema_value_t sd_scene_schema;
+/* Keys of a scene's top level. */
+#define SD_SCENE_KEYS 13
+
+/* The schema of a scene file (a pointer to sd_scene): the fixed keys, and
+ * under material the law registry's names and parameter keys.  Built by
+ * sd_schema_init; it points into itself, so it is used where it was built
+ * and never copied.  Every function below takes its root. */
+typedef struct sd_schema {
+    cyaml_schema_value_t root;
+    cyaml_schema_field_t scene[SD_SCENE_KEYS + 1];
+    cyaml_schema_field_t material[SD_MATERIAL_KEYS + 2]; /* law, the keys, the end */
+} sd_schema;
+
+/* Builds the schema.  Returns 0, or -1 when the registry holds more
+ * parameter keys than SD_MATERIAL_KEYS (tests/unit/scene checks it never
+ * does). */
+int sd_schema_init(sd_schema *s);
 
 /* libcyaml's error messages and backtraces, collected for rewording. */
 typedef struct sd_log {
@@ -280,14 +298,14 @@ int sd_path_split(char *buf, char **comp);
 /* The mapping field called key, or NULL. */
 const cyaml_schema_field_t *sd_field(const cyaml_schema_value_t *mapping, const char *key);
 
-/* The schema of the value at path (NULL when the path names nothing).
- * Sequence indices are not checked against a document. */
-const cyaml_schema_value_t *sd_schema_at(const char *path);
+/* The schema of the value at path below root (NULL when the path names
+ * nothing).  Sequence indices are not checked against a document. */
+const cyaml_schema_value_t *sd_schema_at(const cyaml_schema_value_t *root, const char *path);
 
 /* "E, nu": the keys of a mapping, or the names of an enumeration. */
 void sd_names(const cyaml_schema_value_t *v, char *out, size_t outlen);
 
-/* Frees a document loaded with sd_scene_schema. */
-void sd_scene_free(sd_scene *doc);
+/* Frees a document loaded with the schema of root. */
+void sd_scene_free(const cyaml_schema_value_t *root, sd_scene *doc);
 
 #endif /* TF_SCENE_SCHEMA_H */

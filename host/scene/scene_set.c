@@ -43,8 +43,9 @@ static void write_count(uint8_t *base, const cyaml_schema_field_t *f, unsigned c
 
 /* Loads value text with schema v (as a top-level pointer value), after the
  * checks a scene file's values get (scene_strict.h). */
-static void *load_value(const cyaml_schema_value_t *v, char *path, size_t pathlen,
-                        const char *text, unsigned *count, char *err, size_t errlen)
+static void *load_value(const cyaml_schema_value_t *root, const cyaml_schema_value_t *v,
+                        char *path, size_t pathlen, const char *text, unsigned *count, char *err,
+                        size_t errlen)
 {
     cyaml_schema_value_t top = *v;
     top.flags = (enum cyaml_flag)(top.flags | CYAML_FLAG_POINTER);
@@ -77,7 +78,7 @@ static void *load_value(const cyaml_schema_value_t *v, char *path, size_t pathle
     if (rc != CYAML_OK) {
         int line;
         char where[128], msg[256];
-        sd_explain(buf, len, &log, path, &line, where, sizeof where, msg, sizeof msg);
+        sd_explain(root, buf, len, &log, path, &line, where, sizeof where, msg, sizeof msg);
         snprintf(err, errlen, "%s", log.len ? msg : cyaml_strerror(rc));
     } else if (out == NULL) {
         snprintf(err, errlen, "no value given");
@@ -87,12 +88,12 @@ static void *load_value(const cyaml_schema_value_t *v, char *path, size_t pathle
 }
 
 /* Replaces the value of field f in the mapping at base. */
-static int assign(uint8_t *base, const cyaml_schema_field_t *f, char *path, size_t pathlen,
-                  const char *text, char *err, size_t errlen)
+static int assign(const cyaml_schema_value_t *root, uint8_t *base, const cyaml_schema_field_t *f,
+                  char *path, size_t pathlen, const char *text, char *err, size_t errlen)
 {
     const cyaml_schema_value_t *v = &f->value;
     unsigned count;
-    void *out = load_value(v, path, pathlen, text, &count, err, errlen);
+    void *out = load_value(root, v, path, pathlen, text, &count, err, errlen);
     if (out == NULL) {
         return -1;
     }
@@ -149,8 +150,8 @@ static uint8_t *entry(uint8_t *base, const cyaml_schema_field_t *f, unsigned lon
     return arr + k * es;
 }
 
-int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, char *err,
-           size_t errlen)
+int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment, char *path,
+           size_t pathlen, char *err, size_t errlen)
 {
     const char *eq = strchr(assignment, '=');
     char buf[256], *comp[SD_PATH_MAX];
@@ -162,7 +163,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
     snprintf(path, pathlen, "%.*s", (int)(eq - assignment), assignment);
     snprintf(buf, sizeof buf, "%s", path);
     int n = sd_path_split(buf, comp);
-    const cyaml_schema_value_t *v = &sd_scene_schema;
+    const cyaml_schema_value_t *v = root;
     uint8_t *base = (uint8_t *)doc;
     for (int k = 0; k < n; ++k) {
         const cyaml_schema_field_t *f = sd_field(v, comp[k]);
@@ -173,7 +174,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             return -1;
         }
         if (k == n - 1) {
-            return assign(base, f, path, pathlen, eq + 1, err, errlen);
+            return assign(root, base, f, path, pathlen, eq + 1, err, errlen);
         }
         if (f->value.type == CYAML_SEQUENCE) {
             char *end;
@@ -187,7 +188,7 @@ int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, ch
             if (++k == n - 1) {
                 cyaml_schema_field_t whole = {.key = f->key, .data_offset = 0,
                                               .value = *f->value.sequence.entry};
-                return assign(e, &whole, path, pathlen, eq + 1, err, errlen);
+                return assign(root, e, &whole, path, pathlen, eq + 1, err, errlen);
             }
             base = e;
             v = f->value.sequence.entry;

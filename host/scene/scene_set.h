@@ -15,10 +15,11 @@
 
 #include "scene/scene_schema.h"
 
-/* Applies one "key=value" and writes the key's path to path.  Returns 0,
- * or -1 with a message in err; the value is then unchanged, though empty
- * optional mappings or an appended entry on the way may remain. */
-int sd_set(sd_scene *doc, const char *assignment, char *path, size_t pathlen, char *err,
-           size_t errlen);
+/* Applies one "key=value" to a document of schema root and writes the
+ * key's path to path.  Returns 0, or -1 with a message in err; the value is
+ * then unchanged, though empty optional mappings or an appended entry on
+ * the way may remain. */
+int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment, char *path,
+           size_t pathlen, char *err, size_t errlen);
 
 #endif /* TF_SCENE_SET_H */

@@ -7,11 +7,14 @@
 
 #include "solvers/collocation/colloc_solver.h"
 #include "solvers/galerkin/galerkin.h"
+#include "solvers/nonlinear/nonlinear.h"
 #include "solvers/solver.h"
 
 static const tf_solver_ops *const types[] = {
     &tf_galerkin_ops,
     &tf_efg_galerkin_ops,
+    &tf_rpim_newton_ops,
+    &tf_efg_newton_ops,
     &tf_colloc_ops,
 };
 

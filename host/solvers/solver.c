@@ -9,6 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/log.h"
+
 tf_solver *tf_solver_create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
 {
     if (o == NULL) {
@@ -30,6 +32,16 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
     if (o == NULL) {
         o = &p->solver;
     }
+    /* A scene asking for elimination with such a type is refused where it
+     * is read (scene_build.c); options made for another type (the
+     * conformance suite's) get its own way of holding the fixed regions. */
+    tf_solver_opts weak = *o;
+    if (type->weak_bc && o->bc == TF_BC_ELIMINATION) {
+        weak.bc = TF_BC_NITSCHE;
+        o = &weak;
+        tf_info(ctx, "%s: %s holds the fixed regions by Nitsche's method (its shape functions "
+                     "do not interpolate: nothing can be eliminated)", p->name, type->name);
+    }
     double t0 = omp_get_wtime();
     tf_solver *s = type->create(p, o, ctx);
     if (s == NULL) {
@@ -44,8 +56,8 @@ tf_solver *tf_solver_create_as(const tf_solver_ops *type, const tf_problem *p,
     }
     s->ctx = ctx;
     /* The implementation's capabilities, not the type's: rpim-galerkin and
-     * efg-galerkin hand a nonlinear law over to the Newton solver, which
-     * has no cuts. */
+     * efg-galerkin hand a nonlinear law over to the Newton solvers, which
+     * have no cuts. */
     if (p->n_cuts > 0 && !(s->ops->caps(s) & TF_SOLVER_CUTS)) {
         tf_fail(ctx, "%s: solver %s (%s) does not support cuts (remove cuts: or choose a solver "
                 "with the CUTS capability)", p->source, s->ops->name, s->ops->summary);

@@ -58,13 +58,18 @@ typedef struct tf_solver tf_solver;
 typedef struct tf_solver_ops {
     const char *name;    /* the scene's solver.method */
     const char *summary; /* one line: method, materials, what it assumes */
+    /* Its shape functions do not interpolate, so it holds the fixed regions
+     * in weak form: a scene's solver.bc defaults to nitsche and refuses
+     * elimination, and options asking for elimination (made for another
+     * type) get Nitsche's method. */
+    int weak_bc;
     /* Builds a solver of the problem (which must outlive it) with these
      * options; NULL with a message in ctx->err.  tf_solver_create fills
      * the instance's struct tf_solver (problem, ctx, and ops and opts
      * unless the implementation set them: a type may hand a problem to
-     * another implementation, as the Galerkin solvers do for nonlinear
-     * laws, and resolve an option, as efg-galerkin does for bc) after this
-     * returns; the implementation fills its info. */
+     * another registered type, as the Galerkin solvers hand every material
+     * but a linear elastic one to the Newton solvers, and resolve an
+     * option) after this returns; the implementation fills its info. */
     tf_solver *(*create)(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx);
     unsigned (*caps)(const tf_solver *s);
     /* n static load cases at one contact site (arguments already checked);

@@ -108,8 +108,9 @@ int tf_error_norms(const tf_solver *s, const double *u, unsigned order, double *
     if (tf_cells_init(&q, lo, hi, s->opts.cells, order) != 0) {
         return tf_fail(s->ctx, "bad quadrature order %u", order);
     }
-    double d[36];
-    tf_dmatrix(p->material.young, p->material.poisson, d);
+    double d[36], young, poisson;
+    tf_material_moduli(&p->material, &young, &poisson);
+    tf_dmatrix(young, poisson, d);
     size_t nc = tf_cells_count(&q);
     sums *per = calloc(nc, sizeof *per);
     if (per == NULL) {

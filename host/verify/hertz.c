@@ -11,7 +11,7 @@
 
 void tf_hertz_defaults(tf_hertz_opts *o)
 {
-    *o = (tf_hertz_opts){.law = TF_LAW_LINEAR, .young = 1, .nu = 0.3, .radius = 100,
+    *o = (tf_hertz_opts){.law = tf_law_find("linear"), .young = 1, .nu = 0.3, .radius = 100,
                          .core = 5, .cells = 8, .levels = 7, .ratio = 2,
                          .indent = {1e-4, 2.5e-4, 4e-4, 6.25e-4}, .n_indent = 4, .tol = 1e-6};
     tf_colloc_defaults(&o->colloc);
@@ -25,6 +25,11 @@ static int check(const tf_hertz_opts *o, tf_ctx *ctx)
         return tf_fail(ctx, "hertz: cells >= 2, levels 1..40, ratio 1.2..4, core, radius and E "
                             "> 0, -1 < nu < 0.5, 1..%d indentations, tolerance in (0, 1)",
                        TF_HERTZ_MAX_INDENT);
+    }
+    if (o->law == NULL || tf_law_param_index(o->law, "E") < 0 ||
+        tf_law_param_index(o->law, "nu") < 0) {
+        return tf_fail(ctx, "hertz: the law must have a Young's modulus E and a Poisson's ratio "
+                            "nu%s%s", o->law ? ": not " : "", o->law ? o->law->name : "");
     }
     for (size_t k = 0; k < o->n_indent; ++k) {
         if (!(o->indent[k] > 0 && o->indent[k] < 0.5)) {
@@ -40,8 +45,10 @@ static tf_colloc *body(const tf_hertz_opts *o, const tf_hertz_cloud *hc, tf_ctx 
     tf_colloc_body b = {.n = hc->n, .X = hc->X, .fixed = hc->fixed,
                         .volume = o->seed_volumes ? NULL : hc->volume,
                         .total_volume = hc->volume_total,
-                        .material = {.law = o->law, .young = o->young, .poisson = o->nu},
+                        .material = tf_material_of(o->law),
                         .density = 1e-9, .mirrors = mirrors, .n_mirrors = 2};
+    tf_material_set(&b.material, "E", o->young); /* (check: the law has both) */
+    tf_material_set(&b.material, "nu", o->nu);
     char err[512];
     tf_colloc *c = tf_colloc_new(&b, &o->colloc, err, sizeof err);
     if (c == NULL) {

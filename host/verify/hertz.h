@@ -23,7 +23,7 @@
 #define TF_HERTZ_MAX_INDENT 16
 
 typedef struct tf_hertz_opts {
-    tf_law law;
+    const tf_law_ops *law; /* a registered law with parameters E and nu */
     double young, nu;    /* MPa, - */
     double radius;       /* R, mm */
     double core;         /* L0: half-width of the finest grid's box, mm */

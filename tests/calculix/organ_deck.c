@@ -363,9 +363,11 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
     write_mesh(q);
     write_set("FIXED", fixed, q->nn);
     write_set("OUT", out, q->nn);
+    double young, poisson;
+    tf_material_moduli(&p->material, &young, &poisson);
     printf("*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=TISSUE\n*ELASTIC\n%.17g, %.17g\n"
            "*SOLID SECTION, ELSET=ORGAN, MATERIAL=TISSUE\n",
-           p->material.young, p->material.poisson);
+           young, poisson);
     write_steps(p, weight, q->nn, area, o->solver);
     free(weight);
     free(fixed);

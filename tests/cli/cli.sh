@@ -7,6 +7,13 @@ tool=$1
 
 expect 0 "global --help" -- "$tool" --help
 grep -q "demo-model" "$tmp/out" || bad "--help does not list demo-model"
+# every registered solver (host/solvers/registry.c) and material law
+# (host/materials/registry.c), and the Newton tangents, each on its own line
+for name in rpim-galerkin efg-galerkin rpim-newton efg-newton mls-collocation \
+            linear svk neo-hookean kelvin kelvin-neo-hookean; do
+  grep -q "^  $name  " "$tmp/out" || bad "--help does not list $name"
+done
+grep -q "^  full, modified, krylov, bfgs, patch$" "$tmp/out" || bad "--help lacks the Newton tangents"
 expect 0 "--version" -- "$tool" --version
 prints "--version" "^tissuefit [0-9][0-9.]* (tfit API [0-9]"
 expect 0 "demo-model --help" -- "$tool" demo-model --help

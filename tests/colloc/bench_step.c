@@ -84,8 +84,10 @@ static tf_colloc *body(double *X, unsigned char *fixed, double *vol)
         }
     }
     tf_colloc_body b = {.n = n, .X = X, .fixed = fixed, .volume = vol,
-                        .material = {.law = TF_LAW_SVK, .young = 0.32, .poisson = 0.45},
+                        .material = tf_material_of(tf_law_find("svk")),
                         .density = 1e-9};
+    tf_material_set(&b.material, "E", 0.32);
+    tf_material_set(&b.material, "nu", 0.45);
     char err[256];
     tf_colloc *c = tf_colloc_new(&b, NULL, err, sizeof err);
     if (c == NULL) {

@@ -33,12 +33,12 @@ static double overlap(double a, double h)
 typedef struct opts {
     unsigned g[3], neighbours;
     double load, stab, support, tol;
-    tf_law law;
+    const char *law;
 } opts;
 
 static int parse(int argc, char **argv, opts *o)
 {
-    *o = (opts){.load = 0.01, .stab = -1, .support = -1, .tol = 1e-9, .law = TF_LAW_SVK};
+    *o = (opts){.load = 0.01, .stab = -1, .support = -1, .tol = 1e-9, .law = "svk"};
     if (argc < 2 || sscanf(argv[1], "%u,%u,%u", &o->g[0], &o->g[1], &o->g[2]) != 3 ||
         o->g[0] < 3 || o->g[1] < 3 || o->g[2] < 2) {
         return -1;
@@ -49,7 +49,7 @@ static int parse(int argc, char **argv, opts *o)
             if (strcmp(v, "svk") && strcmp(v, "linear")) {
                 return -1;
             }
-            o->law = strcmp(v, "svk") ? TF_LAW_LINEAR : TF_LAW_SVK;
+            o->law = v;
             continue;
         }
         char *end;
@@ -109,8 +109,10 @@ int main(int argc, char **argv)
     }
     size_t top = nx / 2 + nx * (ny / 2 + ny * (nz - 1));
     tf_colloc_body body = {.n = n, .X = X, .fixed = fixed, .volume = vol,
-                           .material = {.law = op.law, .young = 0.32, .poisson = 0.49},
+                           .material = tf_material_of(tf_law_find(op.law)),
                            .density = 1e-9};
+    tf_material_set(&body.material, "E", 0.32);
+    tf_material_set(&body.material, "nu", 0.49);
     tf_colloc_opts o;
     tf_colloc_defaults(&o);
     o.stab = op.stab >= 0 ? op.stab : o.stab;

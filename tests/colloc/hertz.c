@@ -5,7 +5,7 @@
  * the defaults.
  *
  *   hertz [--cells C] [--levels N] [--ratio Q] [--core L0] [--radius R]
- *         [--young E] [--nu NU] [--law svk|linear|neohooke] [--indent d1,d2,..]
+ *         [--young E] [--nu NU] [--law NAME] [--indent d1,d2,..]
  *         [--stab S] [--neighbours K] [--support S] [--volumes grid|seed]
  *         [--tol T] [--csv FILE] [--label TEXT] [--check MAXERR]
  *
@@ -66,14 +66,9 @@ static int parse(int argc, char **argv, args *a)
             }
             h->seed_volumes = !strcmp(v, "seed");
         } else if (!strcmp(o, "--law")) {
-            if (!strcmp(v, "svk")) {
-                h->law = TF_LAW_SVK;
-            } else if (!strcmp(v, "linear")) {
-                h->law = TF_LAW_LINEAR;
-            } else if (!strcmp(v, "neohooke")) {
-                h->law = TF_LAW_NEOHOOKE;
-            } else {
-                return usage("--law takes svk, linear or neohooke, not ", v);
+            h->law = tf_law_find(v); /* (one without E and nu: tf_hertz_run refuses it) */
+            if (h->law == NULL) {
+                return usage("--law takes a registered law (svk, linear, neo-hookean), not ", v);
             }
         } else if (!strcmp(o, "--indent")) {
             h->n_indent = 0;
@@ -133,7 +128,7 @@ static void report(const args *a, const tf_hertz_row *r, FILE *csv)
             fprintf(csv,
                     "%s,%s,%g,%u,%g,%zu,%zu,%d,%d,%g,%g,%g,%g,%g,%g,%.17g,%.17g,%.17g,%.6g,%zu,"
                     "%zu,%.3f\n",
-                    a->label, tf_law_name(h->law), h->colloc.stab, h->colloc.neighbours,
+                    a->label, h->law->name, h->colloc.stab, h->colloc.neighbours,
                     h->colloc.support, x->particles, x->images, h->cells, h->levels, x->h0, x->L,
                     h->radius, h->nu, x->d, x->a, x->F, x->F_theory, x->d_theory,
                     x->d / x->d_theory - 1, x->contacts, x->steps, x->seconds);
@@ -158,7 +153,7 @@ int main(int argc, char **argv)
     const tf_hertz_opts *h = &a.h;
     printf("== Hertz: cells %d, levels %d (ratio %g), core %g mm, R = %g mm, %s E = %g MPa, "
            "nu = %g, %u neighbours, support %g, stab %g, %s volumes ==\n",
-           h->cells, h->levels, h->ratio, h->core, h->radius, tf_law_name(h->law), h->young,
+           h->cells, h->levels, h->ratio, h->core, h->radius, h->law->name, h->young,
            h->nu, h->colloc.neighbours, h->colloc.support, h->colloc.stab,
            h->seed_volumes ? "eqs 2-3" : "Voronoi");
     if (tf_hertz_run(h, r, &ctx) != 0) {

@@ -225,12 +225,7 @@ double tf_colloc_critical_dt(tf_colloc *c, char *err, size_t errlen)
 
 double tf_colloc_wave_dt(const tf_colloc *c)
 {
-    double e = c->mat.young;
-    if (c->mat.law == TF_LAW_KELVIN || c->mat.law == TF_LAW_KELVIN_NH) {
-        double einf, tau;
-        tf_kelvin_moduli(&c->mat, &e, &einf, &tau);
-    }
-    tf_lame l = tf_lame_from(e, c->mat.poisson);
+    tf_lame l = tf_material_lame(&c->mat); /* the initial (fastest) response's */
     double cp = sqrt((l.lambda + 2 * l.mu) / c->density), r = INFINITY;
     for (size_t i = 0; i < c->n; ++i) {
         r = fmin(r, c->rmin[i]);

@@ -148,13 +148,15 @@ static void gradient(const tf_colloc *c, size_t i, const double *u, double G[9],
     mul3(B, c->ainv + 9 * i, G);
 }
 
-/* St. Venant-Kirchhoff's S (eqs 4-5) for the step, without the call
- * through tf_material_eval, the Voigt round trip and the Lame constants
- * per call: tf_svk_eval's and tf_green_lagrange's operations in their
- * order, so the same bits (materials/svk.c is the reference; the unit
- * tests compare the solver's forces with its energy).  Returns -1 when
+/* S = lambda tr(E) I + 2 mu E of a HOOKE material at finite strain
+ * (St. Venant-Kirchhoff's form, seed 004 eqs 4-5) for the step, without
+ * the call through tf_material_eval, the Voigt round trip and the Lame
+ * constants per call: the operations of materials/svk.c (tf_svk_eval,
+ * tf_green_lagrange) in their order, so the same bits as the svk law (the
+ * unit tests compare the solver's forces with its energy, and a law
+ * registered in a test with the same capabilities).  Returns -1 when
  * det F <= 0. */
-static int svk_stress(const tf_colloc *c, const double F[9], double S[9], double *W)
+static int hooke_stress(const tf_colloc *c, const double F[9], double S[9], double *W)
 {
     if (!(tf_det3(F) > 0)) {
         return -1;
@@ -188,8 +190,8 @@ static int svk_stress(const tf_colloc *c, const double F[9], double S[9], double
 static int stress(tf_colloc *c, size_t i, const double F[9], double dt, double P[9], double *W)
 {
     double S6[6], S[9];
-    if (c->svk) {
-        if (svk_stress(c, F, S, W) != 0) {
+    if (c->hooke) {
+        if (hooke_stress(c, F, S, W) != 0) {
             return -1;
         }
     } else if (tf_material_eval(&c->mat, F, dt, c->hold + i * c->hsize, c->hnew + i * c->hsize,

@@ -43,7 +43,8 @@ struct tf_colloc {
     unsigned char *fixed;
     tf_material mat;
     int small; /* small-strain law: P = sigma */
-    int svk;   /* St. Venant-Kirchhoff: the step evaluates it inline */
+    int hooke; /* HOOKE at finite strain (St. Venant-Kirchhoff's form, materials/material.h):
+                * the step evaluates S = lambda tr(E) I + 2 mu E inline */
     double lame_lambda, lame_mu;
     size_t hsize;
     double density;

@@ -35,12 +35,7 @@ static double norm1(const double a[9])
  * (instantaneous) one. */
 static double shear_modulus(const tf_material *m)
 {
-    double e = m->young;
-    if (m->law == TF_LAW_KELVIN || m->law == TF_LAW_KELVIN_NH) {
-        double einf, tau;
-        tf_kelvin_moduli(m, &e, &einf, &tau);
-    }
-    return tf_lame_from(e, m->poisson).mu;
+    return tf_material_lame(m).mu;
 }
 
 /* Particle i: A_i (in coordinates divided by h_i, which makes the

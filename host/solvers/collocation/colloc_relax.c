@@ -56,12 +56,8 @@ void tf_colloc_relax_defaults(tf_colloc_relax_opts *o)
 /* The residual's rounding floor (see above), N. */
 static double floor_of(const tf_colloc *c)
 {
-    double e = c->mat.young, s = 0;
-    if (c->mat.law == TF_LAW_KELVIN || c->mat.law == TF_LAW_KELVIN_NH) {
-        double einf, tau;
-        tf_kelvin_moduli(&c->mat, &e, &einf, &tau);
-    }
-    tf_lame l = tf_lame_from(e, c->mat.poisson);
+    double s = 0;
+    tf_lame l = tf_material_lame(&c->mat); /* the initial response's */
     for (size_t i = 0; i < c->n; ++i) {
         s += (c->vol[i] / c->h[i]) * (c->vol[i] / c->h[i]);
     }

@@ -299,10 +299,13 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
     size_t n = b->n;
     c->n = n;
     c->mat = b->material;
-    c->small = tf_material_kinematics(&b->material) == TF_KIN_SMALL;
+    unsigned caps = tf_material_caps(&b->material);
+    c->small = !(caps & TF_MATERIAL_FINITE);
     c->hsize = tf_material_history_size(&b->material);
-    c->svk = b->material.law == TF_LAW_SVK; /* the step's own path (colloc_force.c) */
-    tf_lame lame = tf_lame_from(b->material.young, b->material.poisson);
+    /* the step's own path (colloc_force.c) */
+    c->hooke = (caps & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) ==
+               (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE);
+    tf_lame lame = tf_material_lame(&b->material);
     c->lame_lambda = lame.lambda;
     c->lame_mu = lame.mu;
     c->density = b->density;

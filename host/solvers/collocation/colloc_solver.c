@@ -154,7 +154,7 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
     tf_info(ctx, "solver: MLS collocation, %zu particles (%u neighbours, support %g x mean "
                  "distance, stabilisation %g), %s, static cases by dynamic relaxation",
             p->cloud.n, o->colloc.neighbours, o->colloc.support, o->colloc.stabilisation,
-            tf_law_name(p->material.law));
+            tf_material_name(&p->material));
     return &cs->base;
 }
 

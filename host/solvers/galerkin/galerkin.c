@@ -68,7 +68,7 @@ static int weak_system(galerkin *g, tf_csc *a, tf_ctx *ctx)
 {
     const tf_problem *p = g->base.problem;
     size_t n3 = g->k.n;
-    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    tf_lame l = tf_material_lame(&p->material);
     double scale = tf_boundary_scale(&l, &p->cloud);
     tf_bc_method m = g->base.opts.bc;
     double factor = scale * (m == TF_BC_NITSCHE ? g->base.opts.nitsche : g->base.opts.penalty);
@@ -236,7 +236,7 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     }
     announce(g, p, ctx);
     tf_assembly_info ai;
-    tf_lame l = tf_lame_from(p->material.young, p->material.poisson);
+    tf_lame l = tf_material_lame(&p->material);
     tf_assembly_extra ex = {g->base.opts.integration == TF_INTEGRATION_VCI,
                             g->weak ? &g->bnd : NULL};
     int plain = !ex.vci && ex.bnd == NULL; /* today's path, bit for bit */
@@ -259,21 +259,22 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
-static tf_solver *create(const tf_problem *p, const tf_solver_opts *opts, tf_ctx *ctx, int efg)
+/* Whether the material is linear elastic: S = D eps with the constant D
+ * of its moduli, at small strain (then K is assembled once from D). */
+static int linear_elastic(const tf_material *m)
 {
-    /* EFG shape functions do not interpolate: nodal values cannot be
-     * eliminated.  A scene asking for elimination with efg-galerkin is
-     * refused where it is read (scene_build.c); options made for another
-     * type (tf_solver_create_as on an RPIM problem, the conformance suite)
-     * get EFG's own way of holding the fixed regions, Nitsche's method. */
-    tf_solver_opts eo = *opts;
-    if (efg && eo.bc == TF_BC_ELIMINATION) {
-        eo.bc = TF_BC_NITSCHE;
-        tf_info(ctx, "%s: efg-galerkin holds the fixed regions by Nitsche's method (its shape "
-                     "functions do not interpolate: nothing can be eliminated)", p->name);
-    }
-    const tf_solver_opts *o = &eo;
-    if (p->material.law != TF_LAW_LINEAR) {
+    return (tf_material_caps(m) & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) == TF_MATERIAL_HOOKE;
+}
+
+/* (EFG's fixed regions are weak whatever the options say: tf_solver_create_as
+ * turned elimination into Nitsche's method.) */
+static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx, int efg)
+{
+    if (!linear_elastic(&p->material)) {
+        const tf_solver_ops *from = efg ? &tf_efg_galerkin_ops : &tf_galerkin_ops;
+        const tf_solver_ops *to = efg ? &tf_efg_newton_ops : &tf_rpim_newton_ops;
+        tf_info(ctx, "%s: the %s law is not linear elastic: %s hands it to %s", p->name,
+                tf_material_name(&p->material), from->name, to->name);
         return tf_nonlinear_create(p, o, ctx, efg);
     }
     galerkin *g = calloc(1, sizeof *g);
@@ -481,7 +482,8 @@ static tf_solver *create_efg(const tf_problem *p, const tf_solver_opts *o, tf_ct
 
 const tf_solver_ops tf_galerkin_ops = {
     .name = "rpim-galerkin",
-    .summary = "RPIM Galerkin, linear elasticity, one CHOLMOD factorisation (seed 000 §2)",
+    .summary = "RPIM Galerkin (seed 000 §2): a linear elastic law by one CHOLMOD "
+               "factorisation, any other law by rpim-newton",
     .create = create_rpim,
     .caps = caps,
     .solve = solve,
@@ -496,8 +498,9 @@ const tf_solver_ops tf_galerkin_ops = {
 
 const tf_solver_ops tf_efg_galerkin_ops = {
     .name = "efg-galerkin",
-    .summary = "element-free Galerkin (MLS, seed 001 §2), linear elasticity, weak essential "
-               "conditions, one CHOLMOD factorisation",
+    .summary = "element-free Galerkin (MLS, seed 001 §2), weak essential conditions: a linear "
+               "elastic law by one CHOLMOD factorisation, any other law by efg-newton",
+    .weak_bc = 1,
     .create = create_efg,
     .caps = caps,
     .solve = solve,

@@ -20,14 +20,15 @@
  *     Jbar = sum_g w_g J_g / V  (the cell's deformed volume ratio),
  * which linearises to exactly the linear B-bar (so the small-load limit is
  * the linear solver's answer) and vanishes for a homogeneous deformation.
- * St. Venant-Kirchhoff takes U of tr E instead of J - 1: its own
- * volumetric energy is lambda (tr E)^2 / 2, and subtracting U(J) from it
- * left a point energy that is not convex at a few per cent of strain
- * (block48's tangent lost definiteness at 0.3 N tangential); with tr E the
- * remainder is mu E:E.
- * Its force is sum_g w_g q_g dJ_g with q_g = U'(Jbar) - U'(J_g); for the
- * Kelvin laws q relaxes with the law's g(t) (a per-point history), and for
- * small-strain laws J = 1 + div u.
+ * A law whose volumetric energy is quadratic in tr E instead (its volume
+ * measure TF_VOLUME_GREEN_TRACE: St. Venant-Kirchhoff, lambda (tr E)^2 / 2)
+ * takes U of tr E: subtracting U(J) from its energy left a point energy
+ * that is not convex at a few per cent of strain (block48's tangent lost
+ * definiteness at 0.3 N tangential); with tr E the remainder is mu E:E.
+ * Its force is sum_g w_g q_g dJ_g with q_g = U'(Jbar) - U'(J_g); for a
+ * time-dependent law (TF_MATERIAL_HISTORY: the Kelvin laws) q relaxes with
+ * the law's g(t) (a per-point history), and for small-strain laws
+ * J = 1 + div u.
  */
 #include <cblas.h>
 #include <math.h>
@@ -37,7 +38,6 @@
 #include <string.h>
 
 #include "materials/kinematics.h"
-#include "materials/laws.h"
 #include "solvers/assemble.h"
 #include "solvers/nonlinear/nl_internal.h"
 
@@ -186,11 +186,11 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
             return 1;
         }
         double *dj = b->dj + p * m3, *hv = b->hv + p * m3;
-        pt[PT_J] = s->svk_volume ? green_trace(F) : jacobian_minus_one(F, s->small);
+        pt[PT_J] = s->trace_volume ? green_trace(F) : jacobian_minus_one(F, s->small);
         double *cv = pt + PT_CV;
         cv[0] = cv[1] = cv[2] = 1; /* d tr E, d div u: c = (1, 1, 1, 0, 0, 0) */
         cv[3] = cv[4] = cv[5] = 0;
-        if (s->svk_volume) { /* d tr E = (F G_i)_a */
+        if (s->trace_volume) { /* d tr E = (F G_i)_a */
             for (size_t i = 0; i < m; ++i) {
                 for (size_t a = 0; a < 3; ++a) {
                     dj[3 * i + a] = F[3 * a] * Gp[i] + F[3 * a + 1] * Gp[m + i] +
@@ -236,7 +236,7 @@ static void cell_correction(const nl_solver *s, size_t c, const double *w, doubl
     }
     jbar /= vol;
     double decay = 1, phi1 = 1, phi2;
-    if (s->kelvin) {
+    if (s->relaxes) {
         tf_relax_factors(dt / s->tau, &decay, &phi1, &phi2);
     }
     for (size_t p = 0; p < np; ++p) {
@@ -244,7 +244,7 @@ static void cell_correction(const nl_solver *s, size_t c, const double *w, doubl
         double q = s->lambda_v * (jbar - pt[PT_J]);
         pt[PT_Q] = q;
         pt[PT_KAPPA] = 1;
-        if (s->kelvin && s->lambda_v != 0) {
+        if (s->relaxes && s->lambda_v != 0) {
             const double *hold = s->hist + (c * np + p) * s->hb + s->nh;
             double *hnew = s->hist_new + (c * np + p) * s->hb + s->nh;
             double h = decay * hold[1] + phi1 * (q - hold[0]);
@@ -288,7 +288,7 @@ static void cell_forces(const nl_solver *s, const double *G, const double *w, si
 static void material_matrix(const nl_solver *s, const double *pt, double ce[36])
 {
     const double *C = pt + PT_C, *cv = pt + PT_CV;
-    double j = s->small || s->svk_volume ? 1 : 1 + pt[PT_J];
+    double j = s->small || s->trace_volume ? 1 : 1 + pt[PT_J];
     double f = s->lambda_v * pt[PT_KAPPA] * j * j;
     for (int k = 0; k < 36; ++k) {
         ce[k] = C[k] - f * cv[k / 6] * cv[k % 6];
@@ -392,7 +392,7 @@ static void geometric(const nl_solver *s, const double *G, const double *w, size
     for (size_t p = 0; p < np; ++p) {
         double St[9];
         tensor_of_voigt(b->pt + p * PT_STRIDE + PT_S, St);
-        if (s->svk_volume) { /* the correction's second derivative: q~ tr(dF1^T dF2) */
+        if (s->trace_volume) { /* the correction's second derivative: q~ tr(dF1^T dF2) */
             double q = b->pt[p * PT_STRIDE + PT_Q];
             St[0] += q;
             St[4] += q;
@@ -437,7 +437,7 @@ static void correction_tangent(const nl_solver *s, const double *w, size_t m, ce
      * matrix (material_matrix) */
     double f = kappa * s->lambda_v;
     cblas_dger(CblasColMajor, (int)m3, (int)m3, f / vol, b->sv, 1, b->sv, 1, kc, (int)m3);
-    if (s->small || s->svk_volume) {
+    if (s->small || s->trace_volume) {
         return;
     }
     /* sum_g w q~ J (h h^T - blockwise transpose), the second derivative of J */

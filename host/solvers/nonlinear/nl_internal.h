@@ -71,11 +71,12 @@ typedef struct nl_solver {
     tf_material mat;
     tf_lame lin;        /* small-strain moduli of the initial response */
     double lambda_v;    /* modulus of the volumetric correction (B-bar for finite strain) */
-    int svk_volume;     /* the correction's volume measure is tr E (SVK), else J - 1 */
-    int kelvin;         /* time-dependent law */
+    int trace_volume;   /* the correction's volume measure is tr E (TF_VOLUME_GREEN_TRACE),
+                         * else J - 1 */
+    int relaxes;        /* time-dependent law (TF_MATERIAL_HISTORY) */
     double g_inf, tau;  /* its relaxation function g(t) = g_inf + (1 - g_inf) e^(-t/tau) */
     size_t nh, hb;      /* material history per point; history block per point */
-    double dt_relaxed;  /* a time step after which the Kelvin laws are relaxed */
+    double dt_relaxed;  /* a time step after which a time-dependent law is relaxed */
     /* cells */
     size_t ncell, np;
     tf_nodesets cs, bp;

@@ -163,29 +163,22 @@ static int build_boundary(nl_solver *s, tf_ctx *ctx)
     return rc;
 }
 
-/* The law's constants the solver needs. */
+/* What the solver needs to know of the material: its capabilities and the
+ * quantities it provides (materials/material.h), never which law it is. */
 static void law_constants(nl_solver *s)
 {
     const tf_material *m = &s->mat;
-    s->kelvin = m->law == TF_LAW_KELVIN || m->law == TF_LAW_KELVIN_NH;
-    double e0 = m->young, einf, tau;
-    if (s->kelvin) {
-        tf_kelvin_moduli(m, &e0, &einf, &tau);
-        s->g_inf = einf / e0;
-        s->tau = tau;
-        s->dt_relaxed = isfinite(tau) ? 1e15 * tau : 0;
-    } else {
-        s->g_inf = 1;
-        s->tau = INFINITY;
-        s->dt_relaxed = 0;
-    }
-    s->lin = tf_lame_from(e0, m->poisson);
+    unsigned caps = tf_material_caps(m);
+    s->relaxes = (caps & TF_MATERIAL_HISTORY) != 0;
+    tf_material_relaxation(m, &s->g_inf, &s->tau);
+    s->dt_relaxed = s->relaxes && isfinite(s->tau) ? 1e15 * s->tau : 0;
+    s->lin = tf_material_lame(m);
     s->lambda_v = s->bbar ? s->lin.lambda : 0;
-    s->small = tf_material_kinematics(m) == TF_KIN_SMALL;
-    s->svk_volume = m->law == TF_LAW_SVK;
-    s->unsym = m->law == TF_LAW_KELVIN && m->k != 0;
+    s->small = !(caps & TF_MATERIAL_FINITE);
+    s->trace_volume = !s->small && tf_material_volume(m) == TF_VOLUME_GREEN_TRACE;
+    s->unsym = (caps & TF_MATERIAL_UNSYMMETRIC) != 0;
     s->nh = tf_material_history_size(m);
-    s->hb = s->nh + (s->kelvin && s->bbar ? 2 : 0);
+    s->hb = s->nh + (s->relaxes && s->bbar ? 2 : 0);
 }
 
 static int allocate_state(nl_solver *s, tf_ctx *ctx)

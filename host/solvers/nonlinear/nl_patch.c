@@ -85,7 +85,7 @@ int nl_patch_init(nl_solver *s)
     const tf_newton_opts *o = &s->base.opts.newton;
     size_t n3 = 3 * s->sh.cloud->n;
     memset(p, 0, sizeof *p);
-    if (o->tangent != TF_TANGENT_PATCH || s->weak || s->kelvin || s->unsym ||
+    if (o->tangent != TF_TANGENT_PATCH || s->weak || s->relaxes || s->unsym ||
         s->base.problem->n_contacts == 0) {
         return 0; /* BFGS */
     }

@@ -201,7 +201,7 @@ static int tangents(nl_solver *s, double *kt, double *k0)
 
 int nl_stability(nl_solver *s, double tol, tf_nonlinear_stability *out)
 {
-    if (s->kelvin || s->kskew != NULL) {
+    if (s->relaxes || s->kskew != NULL) {
         return tf_fail(s->base.ctx, "stability: only for the elastic laws (a symmetric, "
                                     "time-independent tangent)");
     }

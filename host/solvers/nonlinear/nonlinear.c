@@ -26,7 +26,7 @@ static void destroy(tf_solver *s)
 
 static unsigned caps(const tf_solver *s)
 {
-    return of_const(s)->kelvin ? TF_SOLVER_TIME_DEPENDENT : 0u;
+    return of_const(s)->relaxes ? TF_SOLVER_TIME_DEPENDENT : 0u;
 }
 
 /* The current state's nodal displacements. */
@@ -113,8 +113,8 @@ static int history(tf_solver *sv, int contact, const double (*forces)[3], size_t
     return 0;
 }
 
-/* r = internal forces - loads, at the current histories, relaxed for the
- * Kelvin laws (the state a static solve leaves). */
+/* r = internal forces - loads, at the current histories, relaxed for a
+ * time-dependent law (the state a static solve leaves). */
 static int reactions(const tf_solver *sv, int contact, const double force[3], const double *u,
                      double *r)
 {
@@ -135,7 +135,7 @@ static int reactions(const tf_solver *sv, int contact, const double force[3], co
     int rc = start_from(s, u);
     if (rc == 0) {
         double *tmp = malloc(n3 * sizeof *tmp);
-        rc = tmp ? nl_assemble(s, s->d, &t, s->kelvin ? s->dt_relaxed : 0, 0, tmp, r, &f) : -1;
+        rc = tmp ? nl_assemble(s, s->d, &t, s->relaxes ? s->dt_relaxed : 0, 0, tmp, r, &f) : -1;
         free(tmp);
         if (rc == 1) {
             rc = tf_fail(sv->ctx, "J = %g <= 0 at (%g, %g, %g) mm", f.j, f.x[0], f.x[1], f.x[2]);
@@ -177,9 +177,21 @@ static void report(const tf_solver *sv)
             st->t_solve - st->t_factor, tf_peak_mib());
 }
 
-static const tf_solver_ops rpim_ops = {
-    .name = "rpim-galerkin",
-    .summary = "RPIM Galerkin, nonlinear laws: total-Lagrangian Newton-Raphson",
+static tf_solver *create_rpim(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return tf_nonlinear_create(p, o, ctx, 0);
+}
+
+static tf_solver *create_efg(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
+{
+    return tf_nonlinear_create(p, o, ctx, 1);
+}
+
+const tf_solver_ops tf_rpim_newton_ops = {
+    .name = "rpim-newton",
+    .summary = "RPIM Galerkin, total-Lagrangian Newton-Raphson for any law (rpim-galerkin "
+               "hands it every law but the linear one)",
+    .create = create_rpim,
     .caps = caps,
     .solve = solve,
     .history = history,
@@ -191,13 +203,16 @@ static const tf_solver_ops rpim_ops = {
     .destroy = destroy,
 };
 
-static const tf_solver_ops efg_ops = {
-    .name = "efg-galerkin",
-    .summary = "EFG (MLS) Galerkin, nonlinear laws: total-Lagrangian Newton-Raphson",
+const tf_solver_ops tf_efg_newton_ops = {
+    .name = "efg-newton",
+    .summary = "EFG (MLS) Galerkin, total-Lagrangian Newton-Raphson for any law, weak "
+               "essential conditions (efg-galerkin hands it every law but the linear one)",
+    .weak_bc = 1,
+    .create = create_efg,
     .caps = caps,
     .solve = solve,
     .history = history,
-    .reactions = NULL, /* weak fixed regions (tf_efg_galerkin_ops) */
+    .reactions = NULL, /* weak fixed regions (as tf_efg_galerkin_ops) */
     .field = field,
     .node_count = node_count,
     .coords = coords,
@@ -205,7 +220,10 @@ static const tf_solver_ops efg_ops = {
     .destroy = destroy,
 };
 
-static int is_nonlinear(const tf_solver *s) { return s->ops == &rpim_ops || s->ops == &efg_ops; }
+static int is_nonlinear(const tf_solver *s)
+{
+    return s->ops == &tf_rpim_newton_ops || s->ops == &tf_efg_newton_ops;
+}
 
 static void announce(const nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
@@ -214,9 +232,9 @@ static void announce(const nl_solver *s, const tf_problem *p, tf_ctx *ctx)
                                     "quasi-Newton (BFGS)",
                                     "quasi-Newton (BFGS), the patch tangent where it applies"};
     tf_info(ctx,
-            "solver: %s law, %s kinematics, %zu nodes, %zu cells x %u^3 Gauss points%s, %s, "
-            "volumetric %s, BCs by %s, %s",
-            tf_law_name(p->material.law), s->small ? "small-strain" : "total-Lagrangian",
+            "solver: %s, %s law, %s kinematics, %zu nodes, %zu cells x %u^3 Gauss points%s, "
+            "%s, volumetric %s, BCs by %s, %s",
+            s->base.ops->name, tf_material_name(&p->material), s->small ? "small-strain" : "total-Lagrangian",
             p->cloud.n, s->ncell, s->sh.cells.gauss, s->vci ? " (VCI)" : "",
             s->efg ? "MLS (EFG)" : "RPIM", s->bbar ? "averaged per cell" : "at every point",
             o->bc == TF_BC_NITSCHE   ? "Nitsche's method"
@@ -230,8 +248,8 @@ tf_solver *tf_nonlinear_create(const tf_problem *p, const tf_solver_opts *o, tf_
 {
     if (!efg && o->bc == TF_BC_PENALTY) {
         tf_fail(ctx,
-                "%s: the seed's nodal penalty (eq 28) is for the linear law; nonlinear laws "
-                "with rpim-galerkin take solver.bc elimination or nitsche",
+                "%s: the seed's nodal penalty (eq 28) is for the linear law and rpim-galerkin; "
+                "rpim-newton takes solver.bc elimination or nitsche",
                 p->name);
         return NULL;
     }
@@ -240,7 +258,7 @@ tf_solver *tf_nonlinear_create(const tf_problem *p, const tf_solver_opts *o, tf_
         tf_fail(ctx, "out of memory");
         return NULL;
     }
-    s->base.ops = efg ? &efg_ops : &rpim_ops;
+    s->base.ops = efg ? &tf_efg_newton_ops : &tf_rpim_newton_ops;
     s->base.problem = p;
     s->base.opts = *o;
     s->base.ctx = ctx;

@@ -1,20 +1,26 @@
 /*
- * nonlinear.h — the meshless Galerkin solver for the nonlinear material
- * laws (St. Venant-Kirchhoff, neo-Hookean, seed 001's Kelvin law and its
- * neo-Hookean variant; materials/material.h): total-Lagrangian
- * Newton-Raphson with the consistent tangent, load stepping with automatic
- * cuts and a line search (docs/solver.md, "Nonlinear laws").
+ * nonlinear.h — the meshless Galerkin solver for any material law
+ * (materials/material.h; the nonlinear ones are what it is for):
+ * total-Lagrangian Newton-Raphson with the consistent tangent, load
+ * stepping with automatic cuts and a line search (docs/solver.md,
+ * "Nonlinear laws").  Registered as "rpim-newton" (RPIM shape functions)
+ * and "efg-newton" (MLS, essential conditions in weak form);
+ * rpim-galerkin and efg-galerkin (galerkin/galerkin.h) hand it every
+ * problem whose material is not linear elastic, and the instance then
+ * answers to the Newton solver's name.
  *
- * It is not registered by itself: rpim-galerkin and efg-galerkin
- * (galerkin/galerkin.h) hand a problem whose law is not linear to
- * tf_nonlinear_create, and the instance answers to the same name.
+ * It asks the material only for its capabilities and quantities: its
+ * kinematics, whether its tangent may be unsymmetric (GMRES instead of
+ * Cholesky), its history and relaxation function, its volume measure (the
+ * volumetric correction) and its initial moduli (the correction's modulus,
+ * the weak boundary terms' scale).
  *
  * Capabilities: not affine (every case is solved, continuing from the
- * starting displacements a caller passes); the Kelvin laws are
- * TIME_DEPENDENT: tf_solver_history follows a force history from rest, and
- * tf_solver_solve gives the fully relaxed equilibrium.  Contact forces are
- * dead loads: fixed direction and total, spread over the patch's reference
- * area.
+ * starting displacements a caller passes); a material with history makes
+ * it TIME_DEPENDENT: tf_solver_history follows a force history from rest,
+ * and tf_solver_solve gives the fully relaxed equilibrium.  Contact forces
+ * are dead loads: fixed direction and total, spread over the patch's
+ * reference area.
  */
 #ifndef TF_NONLINEAR_H
 #define TF_NONLINEAR_H
@@ -23,8 +29,11 @@
 
 #include "solvers/solver.h"
 
-/* The nonlinear solver of a problem (efg: MLS shape functions).  NULL with
- * a message in ctx->err. */
+extern const tf_solver_ops tf_rpim_newton_ops; /* "rpim-newton" */
+extern const tf_solver_ops tf_efg_newton_ops;  /* "efg-newton": MLS shape functions */
+
+/* The nonlinear solver of a problem (efg: MLS shape functions), with the
+ * type above.  NULL with a message in ctx->err. */
 tf_solver *tf_nonlinear_create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx,
                                int efg);
 

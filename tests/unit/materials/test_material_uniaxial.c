@@ -24,6 +24,10 @@
 
 #include "materials/elasticity.h"
 #include "materials/material.h"
+#include "material_of.h"
+
+/* A material's parameter by its key. */
+#define PARAM(m, key) tf_material_get(m, key)
 
 /* Newton on the free diagonal entries f[a] (fixed[a] == 0) of F = diag(f)
  * until S[a] = target[a] there, in a step of dt from history h (NULL for
@@ -126,7 +130,7 @@ static double neohooke_force(double mu, double kappa, double lam, double l)
  * the largest relative error of P and of the lateral stretch. */
 static double uniaxial_curve_error(const tf_material *m)
 {
-    tf_lame lm = tf_lame_from(m->young, m->poisson);
+    tf_lame lm = tf_lame_from(PARAM(m, "E"), PARAM(m, "nu"));
     double kappa = lm.lambda + 2 * lm.mu / 3, err = 0, f[3] = {1, 1, 1};
     for (int j = 0; j <= 15; ++j) {
         double lam = (5 + j) / 10.0, S[6], P, l;
@@ -135,10 +139,10 @@ static double uniaxial_curve_error(const tf_material *m)
         }
         f[0] = lam;
         drive(m, f, (const int[3]){1, 0, 0}, (const double[3]){0, 0, 0}, 0, NULL, S);
-        if (m->law == TF_LAW_SVK) {
+        if (tf_material_caps(m) & TF_MATERIAL_HOOKE) {
             /* S_11 = E E_11, E_22 = -nu E_11: P = E lam (lam^2 - 1)/2 */
-            P = m->young * lam * (lam * lam - 1) / 2;
-            l = sqrt(1 - m->poisson * (lam * lam - 1));
+            P = PARAM(m, "E") * lam * (lam * lam - 1) / 2;
+            l = sqrt(1 - PARAM(m, "nu") * (lam * lam - 1));
         } else {
             l = neohooke_lateral(lm.mu, kappa, lam);
             P = neohooke_force(lm.mu, kappa, lam, l);
@@ -156,25 +160,24 @@ static void hyperelastic_uniaxial_stress_to_half_and_double_length(void **state)
     /* SVK needs nu < 1/3 to reach stretch 2: its lateral stretch is
      * sqrt(1 - nu (lam^2 - 1)). */
     const tf_material cases[] = {
-        {.law = TF_LAW_SVK, .young = 1.0, .poisson = 0.3},
-        {.law = TF_LAW_SVK, .young = 0.32, .poisson = 0.0},
-        {.law = TF_LAW_NEOHOOKE, .young = 1.0, .poisson = 0.3},
-        {.law = TF_LAW_NEOHOOKE, .young = 0.32, .poisson = 0.45},
-        {.law = TF_LAW_NEOHOOKE, .young = 0.32, .poisson = 0.49},
+        tf_test_material("svk", "E=1 nu=0.3"),
+        tf_test_material("svk", "E=0.32 nu=0"),
+        tf_test_material("neo-hookean", "E=1 nu=0.3"),
+        tf_test_material("neo-hookean", "E=0.32 nu=0.45"),
+        tf_test_material("neo-hookean", "E=0.32 nu=0.49"),
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
         double err = uniaxial_curve_error(&cases[c]);
         printf("  %-8s nu = %.2f: force-stretch 0.5..2.0 vs closed form: max relative error "
                "%.1e\n",
-               tf_law_name(cases[c].law), cases[c].poisson, err);
+               tf_material_name(&cases[c]), PARAM(&cases[c], "nu"), err);
         assert_true(err < 1e-6);
     }
 }
 
 /* --- Kelvin -------------------------------------------------------------- */
 
-static const tf_material kelvin = {
-    .law = TF_LAW_KELVIN, .poisson = 0.3, .k1 = 1.0, .k2 = 2.0, .eta = 3.0, .k = 0};
+#define KELVIN "nu=0.3 k1=1 k2=2 eta=3 k=0"
 
 static double adjusted(double k, double e) { return e + k * e * e; }
 
@@ -187,7 +190,7 @@ static double unadjusted(double k, double n)
 /* Relaxation modulus E(t) = k1 + k2 exp(-t/tau). */
 static double relaxation(const tf_material *m, double t)
 {
-    return m->k1 + m->k2 * exp(-t * m->k2 / m->eta);
+    return PARAM(m, "k1") + PARAM(m, "k2") * exp(-t * PARAM(m, "k2") / PARAM(m, "eta"));
 }
 
 /* Creep compliance of the same solid: N(eps(t)) = sigma0 J(t) under a
@@ -195,8 +198,8 @@ static double relaxation(const tf_material *m, double t)
  * tau_c = eta (k1 + k2)/(k1 k2) (Fung, Biomechanics, ch. 2). */
 static double creep(const tf_material *m, double t)
 {
-    double tc = m->eta * (m->k1 + m->k2) / (m->k1 * m->k2);
-    return 1 / m->k1 - m->k2 / (m->k1 * (m->k1 + m->k2)) * exp(-t / tc);
+    double tc = PARAM(m, "eta") * (PARAM(m, "k1") + PARAM(m, "k2")) / (PARAM(m, "k1") * PARAM(m, "k2"));
+    return 1 / PARAM(m, "k1") - PARAM(m, "k2") / (PARAM(m, "k1") * (PARAM(m, "k1") + PARAM(m, "k2"))) * exp(-t / tc);
 }
 
 static void kelvin_relaxation_under_a_step_strain(void **state)
@@ -204,8 +207,8 @@ static void kelvin_relaxation_under_a_step_strain(void **state)
     (void)state;
     const double eps0 = 0.05, dt = 0.3;
     for (int kk = 0; kk < 2; ++kk) {
-        tf_material m = kelvin;
-        m.k = kk ? 5.0 : 0.0;
+        tf_material m = tf_test_material("kelvin", KELVIN);
+        tf_material_set(&m, "k", kk ? 5.0 : 0.0);
         double h[12], f[3] = {1 + eps0, 1, 1}, S[6], err = 0;
         tf_material_history_init(&m, h);
         const int fixed[3] = {1, 0, 0};
@@ -215,13 +218,13 @@ static void kelvin_relaxation_under_a_step_strain(void **state)
             if (n > 0) {
                 drive(&m, f, fixed, zero, dt, h, S);
             }
-            double want = relaxation(&m, n * dt) * adjusted(m.k, eps0);
+            double want = relaxation(&m, n * dt) * adjusted(PARAM(&m, "k"), eps0);
             /* lateral: N(eps_l) = -nu N(eps0), constant in time */
-            double lat = unadjusted(m.k, -m.poisson * adjusted(m.k, eps0));
+            double lat = unadjusted(PARAM(&m, "k"), -PARAM(&m, "nu") * adjusted(PARAM(&m, "k"), eps0));
             err = fmax(err, fabs(S[0] - want) / want);
             err = fmax(err, fabs(f[1] - 1 - lat) / fabs(lat));
         }
-        printf("  kelvin k = %g: relaxation after a strain step: max relative error %.1e\n", m.k,
+        printf("  kelvin k = %g: relaxation after a strain step: max relative error %.1e\n", PARAM(&m, "k"),
                err);
         assert_true(err < 1e-10); /* the update is exact for piecewise-constant strain */
     }
@@ -246,12 +249,12 @@ static void kelvin_creep_under_a_step_stress_converges_in_dt(void **state)
     (void)state;
     const double sigma0 = 0.05, T = 5.0;
     for (int kk = 0; kk < 2; ++kk) {
-        tf_material m = kelvin;
-        m.k = kk ? 5.0 : 0.0;
-        double want = unadjusted(m.k, sigma0 * creep(&m, T)), prev = 0, order = 0;
-        double at0 = creep_strain(&m, sigma0, T, 0), want0 = unadjusted(m.k, sigma0 * creep(&m, 0));
+        tf_material m = tf_test_material("kelvin", KELVIN);
+        tf_material_set(&m, "k", kk ? 5.0 : 0.0);
+        double want = unadjusted(PARAM(&m, "k"), sigma0 * creep(&m, T)), prev = 0, order = 0;
+        double at0 = creep_strain(&m, sigma0, T, 0), want0 = unadjusted(PARAM(&m, "k"), sigma0 * creep(&m, 0));
         assert_true(fabs(at0 - want0) <= 1e-13 * want0); /* the instantaneous response */
-        printf("  kelvin k = %g: creep strain at t = %g s vs closed form %.6f:\n", m.k, T, want);
+        printf("  kelvin k = %g: creep strain at t = %g s vs closed form %.6f:\n", PARAM(&m, "k"), T, want);
         for (int n = 5; n <= 1280; n *= 2) {
             double err = fabs(creep_strain(&m, sigma0, T, n) - want) / want;
             if (prev > 0) {
@@ -274,13 +277,13 @@ static void kelvin_creep_under_a_step_stress_converges_in_dt(void **state)
  * and sigma_11 = (1 - nu)/((1 + nu)(1 - 2 nu)) times that, sigma_22 = nu/(1 - nu) sigma_11. */
 static double ramp_stress(const tf_material *m, double r, double tr, double t)
 {
-    double tau = m->eta / m->k2, te = fmin(t, tr), e1 = -expm1(-te / tau);
-    double H = r * tau * e1 + 2 * m->k * r * r * (tau * te - tau * tau * e1);
+    double tau = PARAM(m, "eta") / PARAM(m, "k2"), te = fmin(t, tr), e1 = -expm1(-te / tau);
+    double H = r * tau * e1 + 2 * PARAM(m, "k") * r * r * (tau * te - tau * tau * e1);
     if (t > tr) {
         H *= exp(-(t - tr) / tau);
     }
-    double nu = m->poisson, c = (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-    return c * (m->k1 * adjusted(m->k, r * te) + m->k2 * H);
+    double nu = PARAM(m, "nu"), c = (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    return c * (PARAM(m, "k1") * adjusted(PARAM(m, "k"), r * te) + PARAM(m, "k2") * H);
 }
 
 static void kelvin_strain_ramp_is_integrated_exactly(void **state)
@@ -288,8 +291,8 @@ static void kelvin_strain_ramp_is_integrated_exactly(void **state)
     (void)state;
     const double r = 0.04, tr = 1.0, dt = 0.125;
     for (int kk = 0; kk < 2; ++kk) {
-        tf_material m = kelvin;
-        m.k = kk ? 5.0 : 0.0;
+        tf_material m = tf_test_material("kelvin", KELVIN);
+        tf_material_set(&m, "k", kk ? 5.0 : 0.0);
         double h[12], S[6], err = 0;
         tf_material_history_init(&m, h);
         for (int n = 1; n <= 40; ++n) {
@@ -297,10 +300,10 @@ static void kelvin_strain_ramp_is_integrated_exactly(void **state)
             assert_int_equal(tf_material_eval(&m, F, dt, h, h, S, NULL, NULL), TF_MAT_OK);
             double want = ramp_stress(&m, r, tr, t);
             err = fmax(err, fabs(S[0] - want) / want);
-            err = fmax(err, fabs(S[1] - m.poisson / (1 - m.poisson) * want) / want);
+            err = fmax(err, fabs(S[1] - PARAM(&m, "nu") / (1 - PARAM(&m, "nu")) * want) / want);
         }
         printf("  kelvin k = %g: ramp and hold in uniaxial strain: max relative error %.1e\n",
-               m.k, err);
+               PARAM(&m, "k"), err);
         assert_true(err < 1e-12);
     }
 }
@@ -311,9 +314,8 @@ static void kelvin_strain_ramp_is_integrated_exactly(void **state)
 static void kelvin_neohooke_relaxation_under_a_stretch_step(void **state)
 {
     (void)state;
-    const tf_material m = {.law = TF_LAW_KELVIN_NH, .poisson = 0.45, .k1 = 0.1, .k2 = 0.22,
-                           .eta = 0.5};
-    tf_lame l0 = tf_lame_from(m.k1 + m.k2, m.poisson);
+    const tf_material m = tf_test_material("kelvin-neo-hookean", "nu=0.45 k1=0.1 k2=0.22 eta=0.5");
+    tf_lame l0 = tf_lame_from(PARAM(&m, "k1") + PARAM(&m, "k2"), PARAM(&m, "nu"));
     double kappa = l0.lambda + 2 * l0.mu / 3, err = 0;
     for (int c = 0; c < 2; ++c) {
         double lam = c ? 2.0 : 0.5, h[12], f[3] = {lam, 1, 1}, S[6];
@@ -326,7 +328,7 @@ static void kelvin_neohooke_relaxation_under_a_stretch_step(void **state)
             if (n > 0) {
                 drive(&m, f, fixed, zero, 0.4, h, S);
             }
-            double g = relaxation(&m, 0.4 * n) / (m.k1 + m.k2);
+            double g = relaxation(&m, 0.4 * n) / (PARAM(&m, "k1") + PARAM(&m, "k2"));
             err = fmax(err, fabs(S[0] - g * s0) / fabs(g * s0));
             err = fmax(err, fabs(f[1] - l) / l);
         }

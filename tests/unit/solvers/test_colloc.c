@@ -15,15 +15,16 @@
 #include "assert_close.h"
 #include "base/rng.h"
 #include "box_cloud.h"
+#include "material_of.h"
 #include "solvers/collocation/colloc.h"
 
-static tf_colloc *make(const box_cloud *b, tf_law law, const tf_colloc_opts *o, int volumes)
+static tf_colloc *make(const box_cloud *b, const char *law, const tf_colloc_opts *o, int volumes)
 {
     tf_colloc_body body = {.n = b->n,
                            .X = b->X,
                            .fixed = b->fixed,
                            .volume = volumes ? b->volume : NULL,
-                           .material = {.law = law, .young = 2.0, .poisson = 0.3},
+                           .material = tf_test_material(law, "E=2.0 nu=0.3"),
                            .density = 1e-9};
     char err[512];
     tf_colloc *c = tf_colloc_new(&body, o, err, sizeof err);
@@ -47,7 +48,7 @@ static void linear_field_gives_exact_gradient(void **state)
     (void)state;
     box_cloud b;
     jittered(&b, 0.3);
-    tf_colloc *c = make(&b, TF_LAW_SVK, NULL, 1);
+    tf_colloc *c = make(&b, "svk", NULL, 1);
     const double H[9] = {0.1, -0.2, 0.05, 0.3, 0.02, -0.1, 0.04, 0.2, -0.15}, t[3] = {1, -2, 3};
     double *u = malloc(3 * b.n * sizeof *u), *F = malloc(9 * b.n * sizeof *F);
     for (size_t i = 0; i < b.n; ++i) {
@@ -70,7 +71,7 @@ static void linear_field_gives_exact_gradient(void **state)
 
 /* f = -dU/du (eq 11) for the nonlinear laws, the volume term (eq 12) and
  * the residual term, by central differences of the energy. */
-static void check_gradient(const box_cloud *b, tf_law law, const tf_colloc_mirror *mirrors,
+static void check_gradient(const box_cloud *b, const char *law, const tf_colloc_mirror *mirrors,
                            size_t n_mirrors)
 {
     tf_colloc_opts o;
@@ -83,7 +84,7 @@ static void check_gradient(const box_cloud *b, tf_law law, const tf_colloc_mirro
     o.support = 2;
     tf_colloc_body body = {.n = b->n, .X = b->X, .fixed = b->fixed, .volume = NULL,
                            .total_volume = 60,
-                           .material = {.law = law, .young = 2.0, .poisson = 0.3},
+                           .material = tf_test_material(law, "E=2.0 nu=0.3"),
                            .density = 1e-9, .mirrors = mirrors, .n_mirrors = n_mirrors};
     char err[512];
     tf_colloc *c = tf_colloc_new(&body, &o, err, sizeof err);
@@ -124,12 +125,12 @@ static void forces_are_minus_energy_gradient(void **state)
     (void)state;
     box_cloud b;
     jittered(&b, 0.3);
-    check_gradient(&b, TF_LAW_SVK, NULL, 0);
-    check_gradient(&b, TF_LAW_NEOHOOKE, NULL, 0);
-    check_gradient(&b, TF_LAW_LINEAR, NULL, 0);
+    check_gradient(&b, "svk", NULL, 0);
+    check_gradient(&b, "neo-hookean", NULL, 0);
+    check_gradient(&b, "linear", NULL, 0);
     /* With mirror planes x = 0 and y = 0: the reduced energy's gradient. */
     const tf_colloc_mirror m[2] = {{0, 0}, {1, 0}};
-    check_gradient(&b, TF_LAW_SVK, m, 2);
+    check_gradient(&b, "svk", m, 2);
     box_cloud_free(&b);
 }
 
@@ -144,7 +145,7 @@ static void rigid_motion_costs_nothing(void **state)
     tf_colloc_defaults(&o);
     o.kv = 1;
     o.stab = 1;
-    tf_colloc *c = make(&b, TF_LAW_SVK, &o, 1);
+    tf_colloc *c = make(&b, "svk", &o, 1);
     double th = 0.7, ax[3] = {0.48, 0.6, 0.64}, Rm[9]; /* |ax| = 1 */
     const double K[9] = {0, -ax[2], ax[1], ax[2], 0, -ax[0], -ax[1], ax[0], 0};
     for (int i = 0; i < 3; ++i) { /* Rodrigues: cos I + (1 - cos) a a^T + sin [a]x */
@@ -191,7 +192,7 @@ static void mirror_images_equal_the_whole_body(void **state)
     tf_colloc_opts o;
     tf_colloc_defaults(&o);
     tf_colloc_body bw = {.n = whole.n, .X = whole.X, .fixed = whole.fixed, .total_volume = 192,
-                         .material = {.law = TF_LAW_SVK, .young = 2, .poisson = 0.3},
+                         .material = tf_test_material("svk", "E=2 nu=0.3"),
                          .density = 1e-9};
     tf_colloc_body bq = bw;
     const tf_colloc_mirror m[2] = {{0, 0}, {1, 0}};
@@ -260,7 +261,7 @@ static void seed_volumes_sum_to_the_body(void **state)
     box_cloud b;
     jittered(&b, 0);
     tf_colloc_body body = {.n = b.n, .X = b.X, .fixed = b.fixed, .total_volume = 60,
-                           .material = {.law = TF_LAW_SVK, .young = 2, .poisson = 0.3},
+                           .material = tf_test_material("svk", "E=2 nu=0.3"),
                            .density = 1e-9};
     char err[256];
     tf_colloc *c = tf_colloc_new(&body, NULL, err, sizeof err);
@@ -290,7 +291,7 @@ static void flat_supports_are_refused(void **state)
         b.X[3 * i + 2] = 0; /* one plane: every support flat */
     }
     tf_colloc_body body = {.n = b.n, .X = b.X, .volume = b.volume,
-                           .material = {.law = TF_LAW_SVK, .young = 2, .poisson = 0.3},
+                           .material = tf_test_material("svk", "E=2 nu=0.3"),
                            .density = 1e-9};
     char err[512];
     assert_null(tf_colloc_new(&body, NULL, err, sizeof err));
@@ -302,9 +303,9 @@ static void flat_supports_are_refused(void **state)
     o.neighbours = 2;
     assert_null(tf_colloc_new(&body, &o, err, sizeof err));
     assert_non_null(strstr(err, "neighbours = 2"));
-    body.material.poisson = 0.5;
+    tf_material_set(&body.material, "nu", 0.5);
     assert_null(tf_colloc_new(&body, NULL, err, sizeof err));
-    assert_non_null(strstr(err, "material.poisson"));
+    assert_non_null(strstr(err, "material.nu"));
     box_cloud_free(&b);
 }
 

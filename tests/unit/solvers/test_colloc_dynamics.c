@@ -16,10 +16,11 @@
 #include "assert_close.h"
 #include "base/rng.h"
 #include "box_cloud.h"
+#include "material_of.h"
 #include "solvers/collocation/colloc.h"
 
 /* A jittered 7 x 6 x 5 block [0,6] x [0,5] x [-4,0], bottom clamped. */
-static tf_colloc *block(box_cloud *b, tf_law law, double jitter)
+static tf_colloc *block(box_cloud *b, const char *law, double jitter)
 {
     const size_t dims[3] = {7, 6, 5};
     const double lo[3] = {0, 0, -4}, hi[3] = {6, 5, 0};
@@ -28,7 +29,7 @@ static tf_colloc *block(box_cloud *b, tf_law law, double jitter)
         b->fixed[i] = b->X[3 * i + 2] == -4 ? TF_COLLOC_FIX_ALL : 0;
     }
     tf_colloc_body body = {.n = b->n, .X = b->X, .fixed = b->fixed, .volume = b->volume,
-                           .material = {.law = law, .young = 0.5, .poisson = 0.45},
+                           .material = tf_test_material(law, "E=0.5 nu=0.45"),
                            .density = 1e-9};
     char err[512];
     tf_colloc *c = tf_colloc_new(&body, NULL, err, sizeof err);
@@ -54,7 +55,7 @@ static void stable_step_is_the_boundary(void **state)
     char err[512];
     double growth[2];
     for (int above = 0; above < 2; ++above) {
-        tf_colloc *c = block(&b, TF_LAW_LINEAR, 0.2);
+        tf_colloc *c = block(&b, "linear", 0.2);
         double dt = tf_colloc_critical_dt(c, err, sizeof err);
         assert_true(dt > 0);
         double ratio = dt / tf_colloc_wave_dt(c);
@@ -84,7 +85,7 @@ static void undamped_motion_keeps_its_energy(void **state)
     (void)state;
     box_cloud b;
     char err[512];
-    tf_colloc *c = block(&b, TF_LAW_SVK, 0.2);
+    tf_colloc *c = block(&b, "svk", 0.2);
     double dt = 0.3 * tf_colloc_critical_dt(c, err, sizeof err);
     double *u = tf_colloc_u(c), *v = tf_colloc_v(c), *f = malloc(3 * b.n * sizeof *f);
     const double *m = tf_colloc_masses(c);
@@ -121,7 +122,7 @@ static void same_bits_for_any_thread_count(void **state)
     double fref = 0;
     for (int threads = 1; threads <= 3; ++threads) {
         omp_set_num_threads(threads);
-        tf_colloc *c = block(&b, TF_LAW_SVK, 0.2);
+        tf_colloc *c = block(&b, "svk", 0.2);
         tf_colloc_sphere s = {.centre = {3, 2.5, 5}, .dir = {0, 0, -1}, .radius = 5,
                               .drive = TF_COLLOC_INDENT};
         assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);
@@ -157,7 +158,7 @@ static void relaxation_balances_the_load(void **state)
     (void)state;
     box_cloud b;
     char err[512];
-    tf_colloc *c = block(&b, TF_LAW_LINEAR, 0.2);
+    tf_colloc *c = block(&b, "linear", 0.2);
     double *fext = tf_colloc_fext(c), load = 0;
     for (size_t i = 0; i < b.n; ++i) {
         if (b.X[3 * i + 2] == 0) {
@@ -196,7 +197,7 @@ static void sphere_drives_agree(void **state)
     (void)state;
     box_cloud b;
     char err[512];
-    tf_colloc *c = block(&b, TF_LAW_SVK, 0.2);
+    tf_colloc *c = block(&b, "svk", 0.2);
     tf_colloc_sphere s = {.centre = {3, 2.5, 8}, .dir = {0, 0, -1}, .radius = 8,
                           .drive = TF_COLLOC_INDENT};
     assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);

@@ -1,0 +1,11 @@
+# docs.mk — the documents' links.
+#
+#   check-docs   every relative Markdown link in README.md and docs/ resolves to
+#                a file and, with an anchor, to one of its headings (GitHub's
+#                slugs); the checker is first shown broken links it must reject.
+
+.PHONY: check-docs
+CHECKS += check-docs
+
+check-docs:
+	@tests/docs/check_links.sh --selftest
