@@ -40,7 +40,7 @@ NL_GRIDS ?= 11,11,3:3 41,41,9:1:cases=2:scale=0.8 \
 .PHONY: bench-nonlinear
 BENCHES += bench-nonlinear
 bench-nonlinear: $(T)/solver/bench_nonlinear
-	@echo "== nonlinear solver: block48 cases from rest (issue 13: 3 N neo-Hookean at 41x41x9 <= 3 x one linear solve) =="
+	@echo "== nonlinear solver: block48 cases from rest (3 N neo-Hookean at 41x41x9 <= 3 x one linear solve) =="
 	@for g in $(NL_GRIDS); do $(T)/solver/bench_nonlinear $${g//:/ } || exit 1; done
 
 # The Newton tangent strategies (solver.newton.tangent) on the 3 N

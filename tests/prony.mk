@@ -194,7 +194,7 @@ $(T)/prony/golden-kelvin_small: tests/header/run_golden.c $(T)/gen/kelvin_small.
 .PHONY: check-prony-kelvin
 CHECKS += check-prony-kelvin
 check-prony-kelvin: $(T)/gen/kelvin_small.h $(T)/prony/golden-kelvin_small
-	@echo "== prony: block48 (5 x 5 x 2) in seed 001's Kelvin law, fitted on time-stepped solves, held-out press-hold-release within 2 % of the peak =="
+	@echo "== prony: block48 (5 x 5 x 2) in [EFG-Kelvin]'s Kelvin law, fitted on time-stepped solves, held-out press-hold-release within 2 % of the peak =="
 	@sed -n 's/^ \*       \(stateful\|held-out cases are\)/  \1/p' $<
 	@$(T)/prony/golden-kelvin_small kelvin_small/native
 	@rel=$$(sed -n 's/^#define TFIT_KELVIN_SMALL_FORWARD_HELDOUT_REL_MAX //p' $<); \
@@ -247,7 +247,7 @@ $(T)/prony/probe-block48_ve: tests/insncount/probe.c $(T)/gen/block48_ve.h $(B)/
 .PHONY: check-prony-ve
 CHECKS += check-prony-ve
 check-prony-ve: $(T)/gen/block48_ve.h $(T)/prony/golden-block48_ve $(T)/prony/probe-block48_ve
-	@echo "== prony: the shipped block48_ve.h (seed 001's Kelvin law, 11 x 11 x 3, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
+	@echo "== prony: the shipped block48_ve.h ([EFG-Kelvin]'s Kelvin law, 11 x 11 x 3, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
 	@sed -n 's/^ \*       \(stateful\|held-out cases are\|error against the physics\|Q31 form tfit_block48_ve_forward\)/  \1/p' $<
 	@grep -q '^#define TFIT_BLOCK48_VE_FORWARD_Q31_STATE_WORDS' $< || { echo "block48_ve.h has no Q31 form of its prony model"; exit 1; }
 	@q=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM \([^ ]*\).*/\1/p' $<); \

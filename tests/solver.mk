@@ -50,7 +50,7 @@ check-solver-calculix: $(B)/bin/tissuefit $(T)/solver/calculix_compare
 	@echo "ok: block48 within 1 % of the CalculiX reference at 41x41x9, RMS error falling over four levels"
 
 bench-solver: $(T)/solver/bench_solver
-	@echo "== solver speed: block48 (GUIDE §7: <= 0.5 s at 11x11x3, <= 30 s at 41x41x9) =="
+	@echo "== solver speed: block48 (targets: <= 0.5 s at 11x11x3, <= 30 s at 41x41x9) =="
 	@$(T)/solver/bench_solver 11,11,3 7
 	@$(T)/solver/bench_solver 21,21,5 5
 	@$(T)/solver/bench_solver 41,41,9 3

@@ -46,7 +46,7 @@ void tf_verify_hertz_help(FILE *out)
             "indentation and the L2 errors of each run.\n\n"
             "  --cells LIST  cells per nested grid, 2 to 32 each, up to %d values\n"
             "  --law NAME    a material law with parameters E and nu (default linear;\n"
-            "                svk is seed 004's): ",
+            "                svk is [Aras-MLS]'s): ",
             MAX_COUNTS);
     char names[256];
     elastic_laws(names, sizeof names);

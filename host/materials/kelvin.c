@@ -224,7 +224,7 @@ static unsigned caps_at(const double *p)
 
 const tf_law_ops tf_law_kelvin = {
     .name = "kelvin",
-    .summary = "seed 001's nonlinear Kelvin solid (eqs 9-13): relaxation modulus "
+    .summary = "[EFG-Kelvin]'s nonlinear Kelvin solid (eqs 9-13): relaxation modulus "
                "k1 + k2 exp(-t/tau) on N(eps) = eps + k eps^2, small strain",
     .caps = TF_MATERIAL_HISTORY,
     .caps_at = caps_at,

@@ -37,7 +37,7 @@ static int eval(const double *p, const double F[9], double dt, const double *hol
 
 const tf_law_ops tf_law_linear = {
     .name = "linear",
-    .summary = "linear elasticity, small strain: S = D(E, nu) eps (seed 000 eq 7)",
+    .summary = "linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)",
     .caps = TF_MATERIAL_ENERGY | TF_MATERIAL_HOOKE,
     .volume = TF_VOLUME_JACOBIAN,
     .n_params = TF_ELASTIC_PARAMS,

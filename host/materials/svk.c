@@ -61,7 +61,7 @@ static int eval(const double *p, const double F[9], double dt, const double *hol
 const tf_law_ops tf_law_svk = {
     .name = "svk",
     .summary = "St. Venant-Kirchhoff: S = lambda tr(E) I + 2 mu E in the Green strain "
-               "(seed 004 eqs 4-5)",
+               "([Aras-MLS] eqs 4-5)",
     .caps = TF_MATERIAL_FINITE | TF_MATERIAL_ENERGY | TF_MATERIAL_HOOKE,
     .volume = TF_VOLUME_GREEN_TRACE,
     .n_params = TF_ELASTIC_PARAMS,

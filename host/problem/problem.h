@@ -210,7 +210,7 @@ typedef struct tf_colloc_settings {
     unsigned neighbours;    /* k nearest (ties at the k-th distance included) */
     double support;         /* support radius / mean neighbour distance */
     double stabilisation;   /* weight of the fit-residual energy */
-    double volume_constant; /* k_v of seed 004 eq 12, MPa */
+    double volume_constant; /* k_v of [Aras-MLS] eq 12, MPa */
     double density;         /* t/mm^3 (1e-9: 1000 kg/m^3) */
     double damping;         /* mass-proportional damping of load histories, 1/s */
     double tolerance;       /* of the dynamic relaxation (relative residual) */

@@ -333,7 +333,7 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
     }
     fprintf(f, "\n## The seed's Table 3 view\n\nRMS error of the output displacements under "
                "forces of 0.2, 0.4, ... 1.0 × the envelope radius along each axis, divided by "
-               "the force (mm/N), as seed 000 Table 3 reports it.\n");
+               "the force (mm/N), as [Zhou2017] Table 3 reports it.\n");
     for (size_t i = 0; i < o->n_families; ++i) {
         const tf_family_result *r = &o->fam[i];
         if (r->applicable && r->family->kind == TF_FAMILY_FORWARD) {
@@ -343,7 +343,7 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
             fprintf(f, "\nOrders: `%s`.\n", ord);
         }
     }
-    fprintf(f, "\n**Seed 000, Table 3** (its own RPIM solution, point load, raw-mm basis):\n\n"
+    fprintf(f, "\n**[Zhou2017], Table 3** (its own RPIM solution, point load, raw-mm basis):\n\n"
                "| force along | RMS x | RMS y | RMS z |\n|---|---|---|---|\n");
     for (int a = 0; a < 3; ++a) {
         fprintf(f, "| %c | %.3g | %.3g | %.3g |\n", "XYZ"[a], seed_table3[a][0], seed_table3[a][1],

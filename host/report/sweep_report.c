@@ -137,10 +137,10 @@ int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t
             "set xlabel 'native time per evaluation (ns)'\n"
             "set ylabel 'held-out max error (mm)'\n"
             "set title 'forward models: error against time (filled: Pareto front)'\n"
-            "set label 1 'seed 000 (0.1509 s, 0.5 mm)' at %g,%g offset -12,1.5\n",
+            "set label 1 '[Zhou2017] (0.1509 s, 0.5 mm)' at %g,%g offset -12,1.5\n",
             SEED_NS, SEED_MM);
     /* one series per forward family and precision that has points */
-    fprintf(p.gp, "plot '-' w p pt 3 ps 2 lc 'black' t 'seed 000'");
+    fprintf(p.gp, "plot '-' w p pt 3 ps 2 lc 'black' t '[Zhou2017]'");
     for (size_t fam = 0; fam < n_fam; ++fam) {
         for (int prec = 0; prec < 3; ++prec) {
             if (tf_family_at(fam)->kind == TF_FAMILY_FORWARD && series_present(sw, fam, prec)) {

@@ -117,7 +117,7 @@ typedef struct {
 } scene;
 
 static const scene scenes[] = {
-    {"block48", "block48 (GUIDE 5)", 48, 48, 6, 20, 20, 9, 9, 2, X0 | X1 | Y0 | Y1, SYM_X | SYM_Y},
+    {"block48", "block48 (docs/validation.md)", 48, 48, 6, 20, 20, 9, 9, 2, X0 | X1 | Y0 | Y1, SYM_X | SYM_Y},
     {"beam40", "beam40 (docs/calculix-reference.md)", 40, 20, 20, 16, 8, 11, 3, 2, X0, SYM_Y},
 };
 

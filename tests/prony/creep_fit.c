@@ -39,7 +39,7 @@ static int parse_creep(const char *s, tf_creep *c, char *what, size_t n)
     double a, b, d, e;
     if (sscanf(s, "kelvin:%lf,%lf,%lf", &a, &b, &d) == 3) {
         *c = tf_creep_kelvin(a, b, d);
-        snprintf(what, n, "seed 001's Kelvin solid k1 = %g MPa, k2 = %g MPa, eta = %g MPa s", a, b,
+        snprintf(what, n, "[EFG-Kelvin]'s Kelvin solid k1 = %g MPa, k2 = %g MPa, eta = %g MPa s", a, b,
                  d);
         return 0;
     }

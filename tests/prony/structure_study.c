@@ -110,7 +110,7 @@ int main(void)
     double *g = calloc(3 * ticks, sizeof *g), *target = calloc(3 * ticks, sizeof *target);
     char err[256];
     printf("# Wiener (terms on the static map's input: the prony family) against Hammerstein\n"
-           "# (terms on its output) at a material point of seed 001's Kelvin law under stress,\n"
+           "# (terms on its output) at a material point of [EFG-Kelvin]'s Kelvin law under stress,\n"
            "# k1 = %g MPa, k2 = %g MPa, eta = %g MPa s, stress to %g MPa; %d training and %d\n"
            "# held-out press-hold-release histories of %d ticks of %g ms.  Largest held-out\n"
            "# strain error relative to the largest strain, K terms fitted by prony_terms.c\n",

@@ -129,7 +129,7 @@ set output "$out/weak_bc_factor.png"
 set xlabel "factor (alpha or beta over (lambda + 2 mu) / h)"
 set ylabel "cantilever L2 error, level 3 (EFG)"
 set title "Weak essential conditions: accuracy against the factor"
-plot "< grep '^penalty' $out/weak_bc_factor.csv | grep -v positive" using 2:3 with linespoints title "penalty (seed 001 eqs 19, 23)", \
+plot "< grep '^penalty' $out/weak_bc_factor.csv | grep -v positive" using 2:3 with linespoints title "penalty ([EFG-Kelvin] eqs 19, 23)", \
      "< grep '^nitsche' $out/weak_bc_factor.csv | grep -v positive" using 2:3 with linespoints title "Nitsche"
 
 set output "$out/efg_patch.png"

@@ -46,7 +46,7 @@ int tf_zhou_applicable(const tf_fitdata *d, char *err, size_t errlen)
     }
     if (zhi - zlo > 1e-9 * fmax(span, 1.0)) {
         snprintf(err, errlen,
-                 "family zhou2017 needs the output points on one plane z = const (seed 000 §3.2 "
+                 "family zhou2017 needs the output points on one plane z = const ([Zhou2017] §3.2 "
                  "fits surfaces in x and y only); these span z = %g .. %g mm",
                  zlo, zhi);
         return -1;

@@ -270,7 +270,7 @@ static void report(const tf_solver *s)
 
 const tf_solver_ops tf_colloc_ops = {
     .name = "mls-collocation",
-    .summary = "MLS collocation with nodal integration and explicit dynamics (seed 004); "
+    .summary = "MLS collocation with nodal integration and explicit dynamics ([Aras-MLS]); "
                "any material law; static cases by dynamic relaxation",
     .create = create,
     .caps = caps,

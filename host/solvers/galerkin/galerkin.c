@@ -482,7 +482,7 @@ static tf_solver *create_efg(const tf_problem *p, const tf_solver_opts *o, tf_ct
 
 const tf_solver_ops tf_galerkin_ops = {
     .name = "rpim-galerkin",
-    .summary = "RPIM Galerkin (seed 000 §2): a linear elastic law by one CHOLMOD "
+    .summary = "RPIM Galerkin ([Zhou2017] §2): a linear elastic law by one CHOLMOD "
                "factorisation, any other law by rpim-newton",
     .create = create_rpim,
     .caps = caps,
@@ -498,7 +498,7 @@ const tf_solver_ops tf_galerkin_ops = {
 
 const tf_solver_ops tf_efg_galerkin_ops = {
     .name = "efg-galerkin",
-    .summary = "element-free Galerkin (MLS, seed 001 §2), weak essential conditions: a linear "
+    .summary = "element-free Galerkin (MLS, [EFG-Kelvin] §2), weak essential conditions: a linear "
                "elastic law by one CHOLMOD factorisation, any other law by efg-newton",
     .weak_bc = 1,
     .create = create_efg,
