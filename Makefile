@@ -89,7 +89,7 @@ include tests/tests.mk
 include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildcard */*.mk)))
 
 # ---------------------------------------------------------------------------
-.PHONY: all demo check bench install clean help
+.PHONY: all demo check check-quick bench install clean help
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 
@@ -101,20 +101,35 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 # unless make was given -j (then the checks share its jobserver); the
 # checks themselves run one after another, and the slowest are listed last.
 CHECK_JOBS = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(NPROC))
+
+# $(call run_checks,LIST,NAME): runs each check of LIST in turn, its output
+# in $(B)/check/CHECK.log, guarded, and prints the slowest and the total.
+define run_checks
+	@mkdir -p $(B)/check
+	@set -e; : >$(B)/check/$(2).seconds; for c in $(1); do \
+	  s=$$(date +%s); \
+	  $(MAKE) --no-print-directory $(CHECK_JOBS) $$c 2>&1 | tee $(B)/check/$$c.log; \
+	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
+	  echo "$$(( $$(date +%s) - s )) $$c" >>$(B)/check/$(2).seconds; \
+	done
+	@sort -rn $(B)/check/$(2).seconds | awk '{ t += $$1; if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
+	  END { print "slowest checks: " top "; all " t " s" }'
+endef
+
 check: | deps-check
 	@mkdir -p $(B)/check
 	@printf '== a check that stopped after its heading ==\n' >$(B)/check/guard-selftest.log
 	@if tests/check_guard.sh guard-selftest $(B)/check/guard-selftest.log >/dev/null; then \
 	  echo "tests/check_guard.sh accepted a log without a result line"; exit 1; fi
-	@set -e; : >$(B)/check/seconds; for c in $(CHECKS); do \
-	  s=$$(date +%s); \
-	  $(MAKE) --no-print-directory $(CHECK_JOBS) $$c 2>&1 | tee $(B)/check/$$c.log; \
-	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
-	  echo "$$(( $$(date +%s) - s )) $$c" >>$(B)/check/seconds; \
-	done
-	@sort -rn $(B)/check/seconds | awk '{ t += $$1; if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
-	  END { print "slowest checks: " top "; all " t " s" }'
+	$(call run_checks,$(CHECKS),check)
 	@echo "== make check: all passed ($(words $(CHECKS)) checks, each with its result line) =="
+
+# The edit-test loop: the unit tests, the layer rule, the freestanding
+# library and one bit-exact configuration (`make check` runs them all).
+QUICK_CHECKS := check-unit check-host-layers check-freestanding check-bitexact-quick
+check-quick: | deps-check
+	$(call run_checks,$(QUICK_CHECKS),check-quick)
+	@echo "== make check-quick: all passed ($(words $(QUICK_CHECKS)) checks; make check runs $(words $(CHECKS))) =="
 
 bench: | deps-bench
 	@$(MAKE) --no-print-directory $(BENCHES)
@@ -156,6 +171,7 @@ help:
 	@echo "make            build/bin/tissuefit and build/lib/libtfit.a"
 	@echo "make demo       the main job, end to end"
 	@echo "make check      every test (installs missing Debian packages when root)"
+	@echo "make check-quick  unit tests, layers, freestanding, one bit-exact configuration"
 	@echo "make bench      speed and size measurements (medians, ratios, instruction counts)"
 	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file, CMake package"
 	@echo "                (INSTALL_CORES=\"cortex-m4f cortex-m7\": their libraries too)"

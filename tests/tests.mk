@@ -153,6 +153,14 @@ check-bitexact: $(T)/random.bundle $(BITEXACT_CONFIGS:%=$(T)/run_bundle-%) $(T)/
 	[ "$${k:-0}" -gt 0 ] || { echo "the FMA build passed every boot self-test"; exit 1; }
 	@echo "ok: 1000 random models bit-exact in $(words $(BITEXACT_CONFIGS)) compiler configurations; a contracted build mismatches and fails its self-test"
 
+# One configuration of check-bitexact, for make check-quick.
+BITEXACT_QUICK := $(word 2,$(BITEXACT_CONFIGS))
+.PHONY: check-bitexact-quick
+check-bitexact-quick: $(T)/random.bundle $(T)/run_bundle-$(BITEXACT_QUICK)
+	@echo "== bit-exact: random models, every family, $(BITEXACT_QUICK) only =="
+	@$(T)/run_bundle-$(BITEXACT_QUICK) $(BITEXACT_QUICK) $(T)/random.bundle
+	@echo "ok: 1000 random models bit-exact in $(BITEXACT_QUICK) (make check-bitexact runs $(words $(BITEXACT_CONFIGS)) configurations and the FMA counter-test)"
+
 # --- generated headers --------------------------------------------------------
 $(T)/gen/families.h: $(T)/gen_random
 	@mkdir -p $(@D)
