@@ -66,16 +66,18 @@ const char *tf_api_scene_contact_name(const tf_api_scene *s, size_t k);
 
 /* ---- solving --------------------------------------------------------------- */
 
-/* `tissuefit solve SCENE [--force F] [--contact NAME] --outputs ...`: the
- * displacement of every node into u (3 n_nodes) and at the scene's outputs
- * into at_outputs (3 n_outputs; NULL: not wanted), the same bits as the
- * tool's CSV files.  force NULL: no --force (the scene's own loads);
- * contact NULL: the first site.  The solver is built at the first solve and
- * kept for the next ones (each solve is one load case from rest, as the
- * tool's).  A scene with a history: section is refused (`tissuefit solve`
- * writes its time series). */
+/* `tissuefit solve SCENE [--force F] [--contact NAME] [--cut-progress S]
+ * --outputs ...`: the displacement of every node into u (3 n_nodes) and at
+ * the scene's outputs into at_outputs (3 n_outputs; NULL: not wanted), the
+ * same bits as the tool's CSV files.  force NULL: no --force (the scene's
+ * own loads); contact NULL: the first site; cut_progress NaN: no
+ * --cut-progress (the scene's cuts whole), else S in [0, 1].  The solver is
+ * built at the first solve and kept for the next ones at the same cut
+ * progress (each solve is one load case from rest, as the tool's).  A scene
+ * with a history: section is refused (`tissuefit solve` writes its time
+ * series). */
 int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double *force,
-                 double *u, double *at_outputs);
+                 double cut_progress, double *u, double *at_outputs);
 
 /* The displacement field of a solution u (from tf_api_solve of this scene)
  * at np points xyz (3 np, mm) into out (3 np): what an output at those

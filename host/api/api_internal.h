@@ -9,12 +9,16 @@
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
-/* The scene as the tool reads it, its path for messages, and the solver
- * built at its first solve. */
+/* The scene as the tool reads it, its path for messages, the solver
+ * built at its first solve, and the scene's cuts whole (the problem's are
+ * truncated to the cut progress of the solver's build). */
 struct tf_api_scene {
     tf_scene *scene;
     tf_solver *solver; /* NULL until the first tf_api_solve */
     char *path;        /* the scene file, as messages name it */
+    tf_cut *cuts;      /* a copy of the scene's n_cuts cuts */
+    size_t n_cuts;
+    double progress;   /* the cut progress the problem's cuts are at; NaN: whole */
 };
 
 /* ctx->err becomes the formatted prefix, ": " and its previous text (the

@@ -3,6 +3,7 @@
  * them (cli/cmd_args.c, the --set overrides), and what the Python side
  * needs to know of them.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,16 +26,21 @@ tf_api_scene *tf_api_scene_load(tf_ctx *ctx, const char *path, const char *const
     ctx->err[0] = '\0';
     tf_scene *sc = s && name ? tf_cmd_scene(ctx, path, &list) : NULL;
     tf_sets_free(&list);
-    if (sc == NULL) {
-        if (s == NULL || name == NULL) {
+    size_t nc = sc ? sc->problem.n_cuts : 0;
+    tf_cut *cuts = sc ? malloc((nc + 1) * sizeof *cuts) : NULL;
+    if (cuts == NULL) {
+        if (s == NULL || name == NULL || sc != NULL) {
             tf_fail(ctx, "out of memory");
         }
+        tf_scene_free(sc);
         free(s);
         free(name);
         return NULL;
     }
-    s->scene = sc;
-    s->path = name;
+    if (nc > 0) {
+        memcpy(cuts, sc->problem.cuts, nc * sizeof *cuts);
+    }
+    *s = (tf_api_scene){.scene = sc, .path = name, .cuts = cuts, .n_cuts = nc, .progress = NAN};
     return s;
 }
 
@@ -44,6 +50,7 @@ void tf_api_scene_free(tf_api_scene *s)
         tf_solver_destroy(s->solver);
         tf_scene_free(s->scene);
         free(s->path);
+        free(s->cuts);
         free(s);
     }
 }

@@ -4,9 +4,12 @@
  * names, one tf_solver_solve of the force at the contact site, the outputs
  * probed from the nodal values (solvers/probe.h).
  */
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "api/api_internal.h"
+#include "cli/cmd_args.h"
 #include "solvers/probe.h"
 
 /* The contact site as `tissuefit solve` picks it (cmd_solve.c,
@@ -40,10 +43,32 @@ static int pick_contact(tf_ctx *ctx, const tf_api_scene *s, const char *contact,
     return k;
 }
 
-/* The solver, built once per scene handle (the tool builds one per run). */
-static int ensure_solver(tf_ctx *ctx, tf_api_scene *s)
+/* The solver, built once per scene handle and cut progress (the tool
+ * builds one per run); the problem's cuts truncated to the progress as
+ * the tool's --cut-progress does. */
+static int ensure_solver(tf_ctx *ctx, tf_api_scene *s, double progress)
 {
+    tf_problem *p = &s->scene->problem;
+    if (!(isnan(progress) || (progress >= 0 && progress <= 1))) {
+        return tf_fail(ctx, "solve: --cut-progress '%g' is not a number in [0, 1]", progress);
+    }
+    if (s->solver != NULL && !(isnan(progress) && isnan(s->progress)) && progress != s->progress) {
+        tf_solver_destroy(s->solver);
+        s->solver = NULL;
+    }
     if (s->solver == NULL) {
+        if (s->n_cuts > 0) {
+            memcpy(p->cuts, s->cuts, s->n_cuts * sizeof *s->cuts);
+        }
+        p->n_cuts = s->n_cuts;
+        s->progress = NAN;
+        if (!isnan(progress)) {
+            ctx->err[0] = '\0';
+            if (tf_cmd_cut_progress(ctx, s->path, p, progress) != 0) {
+                return -1;
+            }
+            s->progress = progress;
+        }
         s->solver = tf_solver_create(&s->scene->problem, NULL, ctx);
         if (s->solver == NULL) {
             return tf_api_fail_on(ctx, "solve: %s", s->path);
@@ -53,7 +78,7 @@ static int ensure_solver(tf_ctx *ctx, tf_api_scene *s)
 }
 
 int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double *force,
-                 double *u, double *at_outputs)
+                 double cut_progress, double *u, double *at_outputs)
 {
     const tf_problem *p = &s->scene->problem;
     if (p->history.present) {
@@ -63,7 +88,7 @@ int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double
     }
     const double none[3] = {0, 0, 0};
     int k = pick_contact(ctx, s, contact, force != NULL);
-    if (k < -1 || ensure_solver(ctx, s) != 0) {
+    if (k < -1 || ensure_solver(ctx, s, cut_progress) != 0) {
         return -1;
     }
     if (tf_solver_solve(s->solver, k, (const double(*)[3])(force ? force : none), 1, NULL, u) !=

@@ -59,42 +59,47 @@ class Scene:
             raise _native.Error(f"{self.path}: the scene was closed")
         return self._p
 
-    def solve(self, force=None, contact=None, points=None):
-        """`tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]`: one
-        load case from rest, the same bits as the tool's CSV files.
+    def solve(self, force=None, contact=None, points=None, cut_progress=None):
+        """`tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]
+        [--cut-progress S]`: one load case from rest, the same bits as the
+        tool's CSV files.
 
         force: (3,) N at the contact site (None: only the scene's loads);
         contact: a site's name (None: the first); points: (P, 3) mm where
-        the displacement field is also wanted.  Returns a Solution.  The
-        solver is built at the first solve and kept for the next."""
+        the displacement field is also wanted; cut_progress: S in [0, 1],
+        every cut of the scene to that fraction of its path (None: whole).
+        Returns a Solution.  The solver is built at the first solve and kept
+        for the next ones at the same cut progress."""
         f = None if force is None else _native.as_doubles(force, (3,), "force").reshape(3)
         u = np.empty((len(self.nodes), 3))
         v = np.empty((len(self.outputs), 3))
         self._ctx.check(lib.tf_api_solve(self._ctx.p, self._handle(),
                                          None if contact is None else contact.encode(), ptr(f),
+                                         float("nan") if cut_progress is None else float(cut_progress),
                                          ptr(u), ptr(v)))
         sol = Solution(self, None if f is None else f.copy(), contact, u, v)
+        sol.cut_progress = cut_progress
         if points is not None:
             sol.points = _native.as_doubles(points, (3,), "points").reshape(-1, 3).copy()
             sol.at_points = sol.at(sol.points)
         return sol
 
-    def solve_many(self, forces, contact=None):
+    def solve_many(self, forces, contact=None, cut_progress=None):
         """One solve per force of forces (K, 3): the nodes' displacements
         (K, N, 3) and the outputs' (K, M, 3)."""
         fs = _native.as_doubles(forces, (3,), "forces").reshape(-1, 3)
         u = np.empty((len(fs), len(self.nodes), 3))
         v = np.empty((len(fs), len(self.outputs), 3))
         for k, f in enumerate(fs):
-            s = self.solve(f, contact)
+            s = self.solve(f, contact, cut_progress=cut_progress)
             u[k], v[k] = s.u, s.outputs
         return u, v
 
     def cells(self):
         """The cells of the VTU file `tissuefit solve --vtk` writes:
         ("hexahedron", (C, 8)) for a box's grid (without the cells a cut
-        passes through) or ("tetra", (C, 4)) for an organ; node indices
-        from 0."""
+        passes through, at the cut progress of the last solve) or
+        ("tetra", (C, 4)) for an organ; node indices from 0."""
         n, k = ctypes.c_size_t(), ctypes.c_uint()
         self._ctx.check(lib.tf_api_cells(self._ctx.p, self._handle(), ctypes.byref(n), ctypes.byref(k),
                                          None))
@@ -109,6 +114,7 @@ class Solution:
 
       force     (3,) N, or None
       contact   the site's name as given (None: the first)
+      cut_progress  as given to solve (None: the cuts whole)
       u         (N, 3) displacement of every node, mm
       outputs   (M, 3) displacement at the scene's outputs, mm
       points, at_points  (P, 3) the points asked for and the field there"""
@@ -121,6 +127,7 @@ class Solution:
         self.outputs = outputs
         self.points = None
         self.at_points = None
+        self.cut_progress = None
 
     def at(self, points):
         """The displacement field (mm) at points (P, 3) mm, as an output at
