@@ -5,8 +5,10 @@
 #
 #   make install PREFIX=/usr/local   also installs the package into
 #                                    PREFIX/$(PYTHON_SITE)/tissuefit
-#   make python-example              docs/examples/block48_profile.py: the
-#                                    figure of docs/validation.md §3.1's data
+#   make python-example              docs/examples/cut_progress.py from a
+#                                    staged install: docs/cutting-progress.png
+#                                    redrawn as build/python-example/
+#                                    cutting-progress.png
 
 # Debian's interpreter: the pyenv python3 first on this machine's PATH lacks
 # the Debian packages (numpy, meshio, pytest).
@@ -22,8 +24,8 @@ PYTHON_SITE ?= lib/python$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.v
 PY_PKG_SRC := $(wildcard python/tissuefit/*.py) python/tissuefit/tfit_shim.c
 PY_PKG_LIBS := $(B)/native/libtissuefit.so $(B)/native-pic/libtfit.a
 
-.PHONY: install-python python-example deps-python
-deps-python: ; $(call ensure_debs,$(DEBS_BUILD_PYTHON))
+.PHONY: install-python python-example deps-python-example
+deps-python-example: ; $(call ensure_debs,$(DEBS_BUILD_PYTHON) gnuplot-nox)
 install: install-python
 install-python: $(PY_PKG_LIBS)
 	$(eval PYDIR := $(DESTDIR)$(PREFIX)/$(PYTHON_SITE)/tissuefit)
@@ -35,9 +37,9 @@ install-python: $(PY_PKG_LIBS)
 
 # The example runs from a staged install, as a user's script would.
 PY_EXAMPLE_T := $(B)/python-example
-python-example: $(PY_PKG_LIBS) | deps-python
+python-example: $(PY_PKG_LIBS) | deps-python-example
 	@rm -rf $(PY_EXAMPLE_T) && mkdir -p $(PY_EXAMPLE_T)
 	@$(MAKE) --no-print-directory install-python DESTDIR=$(abspath $(PY_EXAMPLE_T))/stage PREFIX=/usr \
 	  >$(PY_EXAMPLE_T)/install.log 2>&1 || { cat $(PY_EXAMPLE_T)/install.log; exit 1; }
-	PYTHONPATH=$(abspath $(PY_EXAMPLE_T))/stage/usr/$(PYTHON_SITE) $(PYTHON) docs/examples/block48_profile.py \
-	  coeffs/block48.yaml $(PY_EXAMPLE_T)
+	PYTHONPATH=$(abspath $(PY_EXAMPLE_T))/stage/usr/$(PYTHON_SITE) $(PYTHON) docs/examples/cut_progress.py \
+	  coeffs/block48_cut.yaml $(PY_EXAMPLE_T)
