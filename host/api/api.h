@@ -99,7 +99,8 @@ int tf_api_cells(tf_ctx *ctx, const tf_api_scene *s, size_t *count, unsigned *co
  * --set KEY=VALUE, ...).  Returns 0 when the header and its golden file
  * were written, else -1 with the message; *status (when not NULL) is the
  * tool's exit status (0; 1 a failure while running; 2 bad usage or a scene
- * that cannot be fitted, nothing written). */
+ * that cannot be fitted, nothing written).  The command parses its words
+ * with getopt, whose state is the process's: one fit at a time. */
 int tf_api_fit(tf_ctx *ctx, const char *const *args, size_t n_args, int *status);
 
 #endif /* TF_API_H */
