@@ -23,7 +23,7 @@ check-python: $(B)/bin/tissuefit $(PY_PKG_LIBS) | deps-check
 	@$(MAKE) --no-print-directory install DESTDIR=$(abspath $(PY_T))/install PREFIX=/usr \
 	  >$(PY_T)/install.log 2>&1 || { cat $(PY_T)/install.log; exit 1; }
 	@cd $(PY_T) && PYTHONPATH=$(PY_SITE_T) $(PYTHON) -c "import tissuefit; print('imported', tissuefit.__file__)"
-	@PYTHONPATH=$(PY_SITE_T):tests/python TISSUEFIT_SITE=$(PY_SITE_T) TISSUEFIT_ROOT=$(CURDIR) \
+	@PYTHONDONTWRITEBYTECODE=1 PYTHONPATH=$(PY_SITE_T):tests/python TISSUEFIT_SITE=$(PY_SITE_T) TISSUEFIT_ROOT=$(CURDIR) \
 	  TISSUEFIT_TOOL=$(abspath $(B))/bin/tissuefit $(PYTHON) -m pytest -q -p no:cacheprovider \
 	  --basetemp=$(abspath $(PY_T))/tmp tests/python 2>&1 | tee $(PY_T)/pytest.log
 	@grep -q ' passed' $(PY_T)/pytest.log && ! grep -qE ' (failed|error|skipped)' $(PY_T)/pytest.log
