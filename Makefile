@@ -173,6 +173,7 @@ help:
 	@echo "make check      every test (installs missing Debian packages when root)"
 	@echo "make check-quick  unit tests, layers, freestanding, one bit-exact configuration"
 	@echo "make bench      speed and size measurements (medians, ratios, instruction counts)"
-	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file, CMake package"
+	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file, CMake package,"
+	@echo "                Python module (docs/python.md; make python-example runs its example)"
 	@echo "                (INSTALL_CORES=\"cortex-m4f cortex-m7\": their libraries too)"
 	@echo "make clean      remove build/"

@@ -8,7 +8,7 @@
 # check).  A new folder goes into this list; docs/architecture.md says what
 # each holds.
 HOST_LAYERS := base numerics materials geometry problem meshfree solvers verify cost model \
-               fitting dist emit tradeoff report scene cli
+               fitting dist emit tradeoff report scene cli api
 
 # dist/ and cli/main_mpi.c need MPI: only the MPI build (host/dist/dist.mk) compiles them.
 HOST_SRC := $(filter-out host/cli/main.c host/cli/main_mpi.c host/dist/%,\
@@ -39,6 +39,23 @@ $(eval $(call host_lib,native,-O2 -g))
 # and the unit tests under them (check-sanitize) run about a third faster
 # than at -O1 (docs/architecture.md, "make check's time").
 $(eval $(call host_lib,asan,-O2 -g $(SANITIZE)))
+
+# Position-independent objects for the shared library the Python module
+# loads (python/python.mk); -fno-semantic-interposition lets GCC inline
+# across functions as in the native build (no result depends on it: the
+# Python tests compare solves with the tool's to the last bit).
+$(eval $(call host_lib,pic,-O2 -g -fPIC -fno-semantic-interposition))
+
+# The flat API of host/api/ as a shared library: the API's objects, the
+# rest of the host library and a position-independent libtfit (the tool's
+# sweep times the target evaluator) inside; it exports tf_api_* only.
+HOST_API_OBJ := $(patsubst host/%.c,$(B)/pic/host/%.o,$(wildcard host/api/*.c))
+$(B)/native/libtissuefit.so: $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/native-pic/libtfit.a \
+                             host/api/libtissuefit.map
+	@mkdir -p $(@D)
+	$(call say,LINK)
+	$(Q)$(CC) -shared -Wl,--no-undefined -Wl,--version-script=host/api/libtissuefit.map \
+	  $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/native-pic/libtfit.a $(HOST_LIBS) -o $@
 
 # The tool links the native target library to time it (tissuefit sweep).
 $(B)/bin/tissuefit: $(B)/native/host/cli/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a

@@ -31,6 +31,11 @@ $(B)/lib/libtfit.a: $(B)/native/libtfit.a
 	@mkdir -p $(@D)
 	$(Q)cp $< $@
 
+# The same, position-independent: inside the Python module's shared
+# library (host/host.mk) and the evaluators it compiles from generated
+# headers (python/tissuefit/header.py).
+$(eval $(call tfit_lib,native-pic,$(CC),-O2 -g -fPIC,,build))
+
 # Cross builds: the freestanding proof, and the libraries the firmware images
 # link (linker/firmware.mk).  The STM32H743 has a double-precision FPU; the
 # library is float-only, so fpv5-d16 and fpv5-sp-d16 give the same code.

@@ -10,7 +10,7 @@
 
 #define PIN_MARK "TISSUEFIT_BLAS_PINNED"
 
-static const char *wanted_coretype(void)
+const char *tf_blas_wanted_coretype(void)
 {
 #if defined(__x86_64__)
     __builtin_cpu_init();
@@ -31,7 +31,7 @@ const char *tf_blas_coretype(void)
 
 void tf_blas_pin(char **argv)
 {
-    const char *core = wanted_coretype();
+    const char *core = tf_blas_wanted_coretype();
     const char *have_core = getenv("OPENBLAS_CORETYPE");
     const char *have_threads = getenv("OPENBLAS_NUM_THREADS");
     int pinned = (core == NULL || (have_core != NULL && strcmp(have_core, core) == 0)) &&

@@ -22,6 +22,11 @@
  * a re-exec if needed); on failure to re-exec, warns and continues. */
 void tf_blas_pin(char **argv);
 
+/* The kernel family the tool pins on this CPU (TF_BLAS_CORETYPE or the
+ * fallback), or NULL on other architectures (one family per build).  The
+ * Python module (host/api/) compares it with the family OpenBLAS loaded. */
+const char *tf_blas_wanted_coretype(void);
+
 /* The kernel family in use, for banners and reports. */
 const char *tf_blas_coretype(void);
 

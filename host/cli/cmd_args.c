@@ -13,6 +13,7 @@
 
 #include "base/atomic_file.h"
 #include "base/log.h"
+#include "meshfree/cut.h"
 
 int tf_parse_vec3(const char *s, double v[3])
 {
@@ -87,5 +88,23 @@ int tf_cmd_output_dir(tf_ctx *ctx, const char *cmd, const char *dir)
         tf_error(ctx, "%s: %s: cannot write in it: %s", cmd, dir, strerror(errno));
         return -1;
     }
+    return 0;
+}
+
+int tf_cmd_cut_progress(tf_ctx *ctx, const char *scene, tf_problem *p, double s)
+{
+    if (p->n_cuts == 0) {
+        tf_error(ctx, "solve: --cut-progress: %s has no cuts", scene);
+        return -1;
+    }
+    size_t kept = 0;
+    for (size_t i = 0; i < p->n_cuts; ++i) {
+        tf_cut c;
+        tf_cut_truncate(&p->cuts[i], s, &c);
+        if (c.n >= 2) {
+            p->cuts[kept++] = c;
+        }
+    }
+    p->n_cuts = kept;
     return 0;
 }

@@ -34,4 +34,9 @@ int tf_cmd_output_dir(tf_ctx *ctx, const char *cmd, const char *dir);
  * message (file, line, field) through the context. */
 tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets);
 
+/* --cut-progress S: every cut of problem p truncated at the fraction S of
+ * its path (a cut with nothing left is dropped).  0, or -1 after a message
+ * when the scene (named `scene`) has no cuts. */
+int tf_cmd_cut_progress(tf_ctx *ctx, const char *scene, tf_problem *p, double s);
+
 #endif /* TF_CMD_ARGS_H */

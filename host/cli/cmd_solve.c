@@ -14,7 +14,6 @@
 #include "base/log.h"
 #include "cli/cli.h"
 #include "cli/cmd_args.h"
-#include "meshfree/cut.h"
 #include "report/displacement_out.h"
 #include "base/log.h"
 #include "base/plot.h"
@@ -419,26 +418,6 @@ static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf
     return out;
 }
 
-/* --cut-progress: every cut truncated at the fraction asked for (a cut
- * with nothing left is dropped). */
-static int progress(tf_ctx *ctx, const solve_args *a, tf_problem *p)
-{
-    if (p->n_cuts == 0) {
-        tf_error(ctx, "solve: --cut-progress: %s has no cuts", a->scene);
-        return -1;
-    }
-    size_t kept = 0;
-    for (size_t i = 0; i < p->n_cuts; ++i) {
-        tf_cut c;
-        tf_cut_truncate(&p->cuts[i], a->progress, &c);
-        if (c.n >= 2) {
-            p->cuts[kept++] = c;
-        }
-    }
-    p->n_cuts = kept;
-    return 0;
-}
-
 static int run(tf_ctx *ctx, int argc, char **argv)
 {
     solve_args a = {.exaggerate = 1, .view = {NAN, NAN}};
@@ -451,7 +430,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         return TF_EXIT_USAGE;
     }
     tf_sets_free(&a.sets);
-    if (a.has_progress && progress(ctx, &a, &s->problem) != 0) {
+    if (a.has_progress && tf_cmd_cut_progress(ctx, a.scene, &s->problem, a.progress) != 0) {
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }

@@ -109,19 +109,30 @@ static size_t kept_cells(const tf_cloud *c, const tf_cut_set *cuts, size_t *conn
     return nc;
 }
 
+int tf_report_grid_cells(const tf_cloud *c, const tf_cut *cuts, size_t n_cuts, size_t **conn,
+                         size_t *nc)
+{
+    size_t all = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
+    tf_cut_set set;
+    char err[128];
+    *conn = malloc(8 * all * sizeof **conn);
+    if (*conn == NULL || tf_cut_set_build(&set, cuts, n_cuts, err, sizeof err) != 0) {
+        free(*conn);
+        *conn = NULL;
+        return -1;
+    }
+    *nc = kept_cells(c, &set, *conn);
+    tf_cut_set_free(&set);
+    return 0;
+}
+
 int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
                                 size_t n_cuts)
 {
-    size_t all = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
-    size_t *conn = malloc(8 * all * sizeof *conn);
-    tf_cut_set set;
-    char err[128];
-    if (conn == NULL || tf_cut_set_build(&set, cuts, n_cuts, err, sizeof err) != 0) {
-        free(conn);
+    size_t *conn, nc;
+    if (tf_report_grid_cells(c, cuts, n_cuts, &conn, &nc) != 0) {
         return -1;
     }
-    size_t nc = kept_cells(c, &set, conn);
-    tf_cut_set_free(&set);
     vtu_points(fp, c, nc, u);
     for (size_t q = 0; q < nc; ++q) {
         const size_t *v = conn + 8 * q;

@@ -25,6 +25,13 @@ void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *id
  * the point number 1, 2, ... for outputs at points. */
 void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v);
 
+/* The hexahedra of a box's grid that the VTU file has: 8 node indices per
+ * cell in VTK_HEXAHEDRON order, without the cells the n cuts pass through,
+ * malloc'ed into *conn (free() it); their count in *nc.  Returns 0, or -1
+ * (out of memory). */
+int tf_report_grid_cells(const tf_cloud *c, const tf_cut *cuts, size_t n_cuts, size_t **conn,
+                         size_t *nc);
+
 /* The whole cloud as a VTU file, without the cells the n cuts pass
  * through.  Returns 0, or -1 (out of memory: nothing written). */
 int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
