@@ -16,7 +16,7 @@ sed -e 's/^  select: face.*/  select: points/' \
     "$scene" > "$dir/progress_scene.yaml"
 for s in 0 0.5 1; do
     "$tf" -q solve "$dir/progress_scene.yaml" --force $force --cut-progress $s \
-        --outputs "$dir/progress_$s.csv" --vtk "$dir/progress_$s.vtu" -o /dev/null
+        --outputs "$dir/progress_$s.csv" --vtk "$dir/progress_$s.vtu" -o "$dir/progress_$s.txt"
     awk -F, -v scale=$scale -v cx=18 -v y0=14 -v y1="$(echo "14 + 20 * $s" | bc -l)" \
         -f tests/cut/sort.awk -f tests/cut/top_lattice.awk "$dir/progress_$s.csv" > "$dir/progress_$s.dat"
 done
