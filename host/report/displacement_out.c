@@ -115,8 +115,9 @@ int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, co
     size_t all = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
     size_t *conn = malloc(8 * all * sizeof *conn);
     tf_cut_set set;
-    char err[128];
-    if (conn == NULL || tf_cut_set_build(&set, cuts, n_cuts, err, sizeof err) != 0) {
+    tf_ctx scratch; /* the only failure here is out of memory, reported as -1 */
+    tf_ctx_init(&scratch);
+    if (conn == NULL || tf_cut_set_build(&scratch, &set, cuts, n_cuts) != 0) {
         free(conn);
         return -1;
     }
