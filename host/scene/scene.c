@@ -149,9 +149,9 @@ tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const ch
     sd_scene *doc = NULL;
     if (cyaml_load_data((const uint8_t *)text, len, &cfg, root, (void **)&doc, NULL) != CYAML_OK) {
         int line;
-        char path[128];
-        sd_explain(root, text, len, &log, "", &line, path, sizeof path, ctx->err, sizeof ctx->err);
-        tf_fail(ctx, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", ctx->err);
+        char path[128], msg[256];
+        sd_explain(root, text, len, &log, "", &line, path, sizeof path, msg, sizeof msg);
+        tf_fail(ctx, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", msg);
         return NULL;
     }
     if (doc == NULL) {

@@ -153,8 +153,8 @@ int tf_solver_reactions(const tf_solver *s, int contact, const double force[3], 
                         double *r);
 
 /* The displacement field at points (see tf_solver_ops.field; thread-safe
- * with a context per thread, the message in ctx->err).  Returns 0, or -1 (no field from this solver, a
- * failed evaluation). */
+ * with a context per thread, the message in ctx->err).  Returns 0, or -1
+ * (no field from this solver, a failed evaluation). */
 int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
                     double *uh, double *grad);
 
