@@ -96,7 +96,7 @@ int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double
         return tf_api_fail_on(ctx, "solve: %s", s->path);
     }
     if (at_outputs != NULL &&
-        tf_solver_probe_outputs(s->solver, p, u, at_outputs, ctx->err, sizeof ctx->err) != 0) {
+        tf_solver_probe_outputs(ctx, s->solver, p, u, at_outputs) != 0) {
         return tf_api_fail_on(ctx, "solve: %s: outputs", s->path);
     }
     tf_solver_report(s->solver);
@@ -115,7 +115,7 @@ int tf_api_field(tf_ctx *ctx, tf_api_scene *s, const double *u, const double *xy
     at.outputs.points = (double *)xyz;
     at.outputs.n_nodes = np;
     at.outputs.nodes = NULL;
-    if (tf_solver_probe_outputs(s->solver, &at, u, out, ctx->err, sizeof ctx->err) != 0) {
+    if (tf_solver_probe_outputs(ctx, s->solver, &at, u, out) != 0) {
         return tf_api_fail_on(ctx, "field: %s", s->path);
     }
     return 0;

@@ -25,54 +25,47 @@ static void dir_of(const char *path, char *dir, size_t n)
     }
 }
 
-int tf_afile_target(const char *path, char *dst, size_t dstlen, char *err, size_t errlen)
+int tf_afile_target(tf_ctx *ctx, const char *path, char *dst, size_t dstlen)
 {
     struct stat st;
     size_t len = strlen(path);
     if (len == 0 || path[len - 1] == '/') {
-        snprintf(err, errlen, "'%s' is not a file name", path);
-        return -1;
+        return tf_fail(ctx, "'%s' is not a file name", path);
     }
     if (snprintf(dst, dstlen, "%s", path) >= (int)dstlen) {
-        snprintf(err, errlen, "%s: path too long", path);
-        return -1;
+        return tf_fail(ctx, "%s: path too long", path);
     }
     if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
         char *real = realpath(path, NULL); /* written through, as cp does */
         if (real == NULL) {
-            snprintf(err, errlen, "%s: a symbolic link to nothing (%s): not writing through it",
-                     path, strerror(errno));
-            return -1;
+            return tf_fail(ctx, "%s: a symbolic link to nothing (%s): not writing through it", path,
+                           strerror(errno));
         }
         int fits = snprintf(dst, dstlen, "%s", real) < (int)dstlen;
         free(real);
         if (!fits) {
-            snprintf(err, errlen, "%s: path too long", path);
-            return -1;
+            return tf_fail(ctx, "%s: path too long", path);
         }
     }
     if (stat(dst, &st) == 0 && !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "%s: exists and is not a regular file (%s): not replacing it",
-                 path, S_ISDIR(st.st_mode) ? "a directory" : "a device, FIFO or socket");
-        return -1;
+        return tf_fail(ctx, "%s: exists and is not a regular file (%s): not replacing it", path,
+                       S_ISDIR(st.st_mode) ? "a directory" : "a device, FIFO or socket");
     }
     char dir[sizeof ((tf_afile *)0)->dst];
     dir_of(dst, dir, sizeof dir);
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: no directory %s", path, dir);
-        return -1;
+        return tf_fail(ctx, "%s: no directory %s", path, dir);
     }
     if (access(dir, W_OK | X_OK) != 0) {
-        snprintf(err, errlen, "%s: cannot write in %s: %s", path, dir, strerror(errno));
-        return -1;
+        return tf_fail(ctx, "%s: cannot write in %s: %s", path, dir, strerror(errno));
     }
     return 0;
 }
 
-int tf_afile_check(const char *path, char *err, size_t errlen)
+int tf_afile_check(tf_ctx *ctx, const char *path)
 {
     char dst[sizeof ((tf_afile *)0)->dst];
-    return tf_afile_target(path, dst, sizeof dst, err, errlen);
+    return tf_afile_target(ctx, path, dst, sizeof dst);
 }
 
 /* SIGINT, SIGTERM and SIGHUP: held back while a temporary exists. */
@@ -109,22 +102,21 @@ static void release_interrupts(tf_afile *const *files, size_t n)
     pthread_sigmask(SIG_UNBLOCK, &release, NULL);
 }
 
-int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
+int tf_afile_open(tf_ctx *ctx, tf_afile *a, const char *path)
 {
     a->fp = NULL;
     a->tmp[0] = '\0';
-    if (tf_afile_target(path, a->dst, sizeof a->dst, err, errlen) != 0) {
+    if (tf_afile_target(ctx, path, a->dst, sizeof a->dst) != 0) {
         return -1;
     }
     if (snprintf(a->tmp, sizeof a->tmp, "%s.tmp.XXXXXX", a->dst) >= (int)sizeof a->tmp) {
-        snprintf(err, errlen, "%s: path too long", path);
-        return -1;
+        return tf_fail(ctx, "%s: path too long", path);
     }
     hold_interrupts(a);
     tf_afile *self[1] = {a};
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
-        snprintf(err, errlen, "%s: cannot create a temporary file: %s", path, strerror(errno));
+        tf_fail(ctx, "%s: cannot create a temporary file: %s", path, strerror(errno));
         a->tmp[0] = '\0';
         release_interrupts(self, 1);
         return -1;
@@ -133,7 +125,7 @@ int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen)
     mode_t mask = umask(0);
     umask(mask);
     if (fchmod(fd, 0666 & ~mask) != 0 || (a->fp = fdopen(fd, "w")) == NULL) {
-        snprintf(err, errlen, "%s: %s", a->tmp, strerror(errno));
+        tf_fail(ctx, "%s: %s", a->tmp, strerror(errno));
         close(fd);
         unlink(a->tmp);
         a->tmp[0] = '\0';
@@ -186,7 +178,7 @@ static int rename_all(tf_afile *const *files, size_t n, size_t *bad)
     return code;
 }
 
-int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errlen)
+int tf_afile_commit_all(tf_ctx *ctx, tf_afile *const *files, size_t n)
 {
     int code = 0;
     size_t bad = 0;
@@ -201,7 +193,7 @@ int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errl
         code = rename_all(files, n, &bad);
     }
     if (code != 0) {
-        snprintf(err, errlen, "%s: write failed: %s", files[bad]->dst, strerror(code));
+        tf_fail(ctx, "%s: write failed: %s", files[bad]->dst, strerror(code));
         for (size_t k = 0; k < n; ++k) {
             if (files[k]->tmp[0] != '\0') {
                 unlink(files[k]->tmp);
@@ -213,10 +205,10 @@ int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errl
     return code != 0 ? -1 : 0;
 }
 
-int tf_afile_commit(tf_afile *a, char *err, size_t errlen)
+int tf_afile_commit(tf_ctx *ctx, tf_afile *a)
 {
     tf_afile *one[1] = {a};
-    return tf_afile_commit_all(one, 1, err, errlen);
+    return tf_afile_commit_all(ctx, one, 1);
 }
 
 void tf_afile_abort(tf_afile *a)

@@ -25,6 +25,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "base/context.h"
+
 typedef struct tf_afile {
     FILE *fp;
     sigset_t before; /* the thread's signal mask before open held interrupts back */
@@ -37,18 +39,18 @@ typedef struct tf_afile {
  * its directory exists and is writable.  Commands call this on every output
  * before they start work, so a bad path is reported before the solve.
  * Returns 0, or -1 with a message naming path. */
-int tf_afile_check(const char *path, char *err, size_t errlen);
+int tf_afile_check(tf_ctx *ctx, const char *path);
 
 /* The same, writing the file replaced to dst. */
-int tf_afile_target(const char *path, char *dst, size_t dstlen, char *err, size_t errlen);
+int tf_afile_target(tf_ctx *ctx, const char *path, char *dst, size_t dstlen);
 
 /* Opens a temporary file next to the destination.  Returns 0, or -1 with a
  * message (nothing is left behind). */
-int tf_afile_open(tf_afile *a, const char *path, char *err, size_t errlen);
+int tf_afile_open(tf_ctx *ctx, tf_afile *a, const char *path);
 
 /* Flushes, syncs and renames over the destination.  On failure the
  * temporary file is removed and the destination left untouched. */
-int tf_afile_commit(tf_afile *a, char *err, size_t errlen);
+int tf_afile_commit(tf_ctx *ctx, tf_afile *a);
 
 /* Commits n files together: every one is written out and synced before the
  * first rename, then they are renamed in order and their directories
@@ -56,7 +58,7 @@ int tf_afile_commit(tf_afile *a, char *err, size_t errlen);
  * destination changes.  A crash between two renames can still leave the
  * first file new and the next one old: files that must match say so in
  * their content (header-format.md §1). */
-int tf_afile_commit_all(tf_afile *const *files, size_t n, char *err, size_t errlen);
+int tf_afile_commit_all(tf_ctx *ctx, tf_afile *const *files, size_t n);
 
 /* Discards the temporary file.  Abort files in the reverse order of their
  * opening: interrupts held back since the first one are released with it. */

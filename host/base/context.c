@@ -19,11 +19,15 @@ int tf_ctx_threads(const tf_ctx *ctx)
     return ctx->threads > 0 ? ctx->threads : omp_get_max_threads();
 }
 
+/* Formats into a copy first, so that a caller may wrap the message a callee
+ * left: tf_fail(ctx, "%s: %s", where, ctx->err). */
 int tf_fail(tf_ctx *ctx, const char *fmt, ...)
 {
+    char msg[sizeof ctx->err];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(ctx->err, sizeof ctx->err, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    memcpy(ctx->err, msg, sizeof msg);
     return -1;
 }

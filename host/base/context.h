@@ -3,11 +3,22 @@
  * of global variables: where messages go and how many of them, how many
  * threads the parallel loops use, and the message of the last failure.
  *
- * One context per run (cli/main.c makes it; a test makes its own), used by
- * one thread at a time, like CHOLMOD's cholmod_common.  A function that takes
- * a context reports a failure by returning non-zero with the message in
- * ctx->err (tf_fail); a leaf function without a context keeps the
- * (char *err, size_t errlen) pair.
+ * One context per run (cli/main.c makes it; a test makes its own), like
+ * CHOLMOD's cholmod_common.  Every fallible host function takes it first
+ * (tf_ctx *ctx) and reports a failure by returning -1 (or NULL) with the
+ * message in ctx->err: `return tf_fail(ctx, ...)`.  A caller that puts its
+ * own words around a callee's message passes ctx->err back in
+ * (tf_fail(ctx, "%s: %s", where, ctx->err)), which tf_fail allows.  A
+ * solver reports in the context it was created with (solver->ctx).
+ *
+ * A context is written by one thread at a time.  Where the threads of a
+ * parallel region call fallible functions (verify/error_norm.c: the error
+ * integral's cells), each thread has a context of its own, and after the
+ * region the message of the lowest failing item is copied into the caller's.
+ * The assembly and gradient loops of solvers/ keep such a message per thread
+ * in their shape work buffers (meshfree/shape.h).  An answer that is not a
+ * failure (a Q31 form a family does not have, a bound being searched for)
+ * may use a scratch context whose message is dropped.
  */
 #ifndef TF_CONTEXT_H
 #define TF_CONTEXT_H

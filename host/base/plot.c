@@ -30,17 +30,16 @@ static void quoted(FILE *gp, const char *s)
     fputc('\'', gp);
 }
 
-int tf_plot_open(tf_plot *p, const char *path, int width, int height, char *err, size_t errlen)
+int tf_plot_open(tf_ctx *ctx, tf_plot *p, const char *path, int width, int height)
 {
     /* the image replaces the file a link names, never a device (atomic_file.h) */
-    if (tf_afile_target(path, p->path, sizeof p->path, err, errlen) != 0) {
+    if (tf_afile_target(ctx, path, p->path, sizeof p->path) != 0) {
         return -1;
     }
     snprintf(p->tmp, sizeof p->tmp, "%s.tmp.png", p->path);
     p->gp = popen("gnuplot", "w");
     if (p->gp == NULL) {
-        snprintf(err, errlen, "%s: cannot run gnuplot", path);
-        return -1;
+        return tf_fail(ctx, "%s: cannot run gnuplot", path);
     }
     fprintf(p->gp, "set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced\n"
                    "set output ", width, height);
@@ -49,15 +48,14 @@ int tf_plot_open(tf_plot *p, const char *path, int width, int height, char *err,
     return 0;
 }
 
-int tf_plot_close(tf_plot *p, char *err, size_t errlen)
+int tf_plot_close(tf_ctx *ctx, tf_plot *p)
 {
     fprintf(p->gp, "unset output\n");
     int status = pclose(p->gp);
     p->gp = NULL;
     if (status != 0 || rename(p->tmp, p->path) != 0) {
         unlink(p->tmp);
-        snprintf(err, errlen, "%s: gnuplot failed (status %d)", p->path, status);
-        return -1;
+        return tf_fail(ctx, "%s: gnuplot failed (status %d)", p->path, status);
     }
     return 0;
 }

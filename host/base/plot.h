@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "base/context.h"
+
 typedef struct tf_plot {
     FILE *gp;
     char path[4096], tmp[4200];
@@ -19,9 +21,9 @@ int tf_plot_available(void);
 
 /* Starts a width x height PNG at path; write gnuplot commands to p->gp.
  * Returns 0, or -1 with a message. */
-int tf_plot_open(tf_plot *p, const char *path, int width, int height, char *err, size_t errlen);
+int tf_plot_open(tf_ctx *ctx, tf_plot *p, const char *path, int width, int height);
 
 /* Finishes the plot; returns 0, or -1 with a message (nothing left behind). */
-int tf_plot_close(tf_plot *p, char *err, size_t errlen);
+int tf_plot_close(tf_ctx *ctx, tf_plot *p);
 
 #endif /* TF_PLOT_H */

@@ -53,10 +53,9 @@ void tf_sets_free(tf_sets *s)
 
 tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
 {
-    char err[1024];
-    tf_scene *s = tf_scene_load(path, sets->item, sets->n, err, sizeof err);
+    tf_scene *s = tf_scene_load(ctx, path, sets->item, sets->n);
     if (s == NULL) {
-        tf_error(ctx, "%s", err);
+        tf_error(ctx, "%s", ctx->err);
         return NULL;
     }
     for (const char *line = s->warnings; *line != '\0'; line += strcspn(line, "\n") + 1) {
@@ -67,10 +66,9 @@ tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
 
 int tf_cmd_outputs(tf_ctx *ctx, const char *cmd, const char *const *paths, size_t n)
 {
-    char err[1024];
     for (size_t k = 0; k < n; ++k) {
-        if (paths[k] != NULL && tf_afile_check(paths[k], err, sizeof err) != 0) {
-            tf_error(ctx, "%s: %s", cmd, err);
+        if (paths[k] != NULL && tf_afile_check(ctx, paths[k]) != 0) {
+            tf_error(ctx, "%s: %s", cmd, ctx->err);
             return -1;
         }
     }

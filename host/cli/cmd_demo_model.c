@@ -65,10 +65,10 @@ static void exact(const double f[3], int node, double u[3])
     }
 }
 
-static tf_model *build(const char *name, double radius, char *err, size_t errlen)
+static tf_model *build(tf_ctx *ctx, const char *name, double radius)
 {
     const uint32_t dims[1] = {1};
-    tf_model *m = tf_model_new(name, TFIT_FAMILY_NODAL, GRID * GRID, dims, 1, err, errlen);
+    tf_model *m = tf_model_new(ctx, name, TFIT_FAMILY_NODAL, GRID * GRID, dims, 1);
     if (m == NULL) {
         return NULL;
     }
@@ -172,9 +172,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         return TF_EXIT_USAGE;
     }
 
-    char err[512], base[TF_NAME_MAX], name[TF_NAME_MAX + 16];
-    if (tf_emit_check_path(path, strlen("_forward"), err, sizeof err) != 0) {
-        tf_error(ctx, "demo-model: %s", err);
+    char base[TF_NAME_MAX], name[TF_NAME_MAX + 16];
+    if (tf_emit_check_path(ctx, path, strlen("_forward")) != 0) {
+        tf_error(ctx, "demo-model: %s", ctx->err);
         return TF_EXIT_USAGE;
     }
     const char *slash = strrchr(path, '/');
@@ -182,9 +182,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     base[strcspn(base, ".")] = '\0';
     snprintf(name, sizeof name, "%s_forward", base);
 
-    tf_model *m = build(name, radius, err, sizeof err);
+    tf_model *m = build(ctx, name, radius);
     if (m == NULL) {
-        tf_error(ctx, "demo-model: %s", err);
+        tf_error(ctx, "demo-model: %s", ctx->err);
         return TF_EXIT_USAGE;
     }
     measure(m, radius);
@@ -197,10 +197,11 @@ static int run(tf_ctx *ctx, int argc, char **argv)
                  "Held-out error: float32 evaluation against the double-precision formula.",
         .golden_seed = 1,
     };
-    int rc = tf_emit_header(path, &m, 1, &info, err, sizeof err);
+    int rc = tf_emit_header(ctx, path, &m, 1, &info);
     tf_model_free(m);
     if (rc != 0) {
-        tf_error(ctx, "demo-model: %s", err); /* the path was checked: a failure while running */
+        /* the path was checked: a failure while running */
+        tf_error(ctx, "demo-model: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     tf_info(ctx, "demo-model: wrote %s and its golden vectors", path);

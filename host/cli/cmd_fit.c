@@ -105,7 +105,6 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
         {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
         {"mcu", required_argument, NULL, 'm'},     {"reference", required_argument, NULL, 'p'},
         {"discretisation-rel", required_argument, NULL, 'D'}, {0}};
-    char err[256];
     int c;
     optind = 1;
     opterr = 0;
@@ -155,8 +154,8 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
             }
             break;
         case 'm':
-            if (tf_mcu_parse(optarg, &a->mcu, err, sizeof err) != 0) {
-                tf_error(ctx, "fit: %s", err);
+            if (tf_mcu_parse(ctx, optarg, &a->mcu) != 0) {
+                tf_error(ctx, "fit: %s", ctx->err);
                 return -1;
             }
             break;
@@ -177,9 +176,8 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
  * found out before the solve, not after it. */
 static int check_outputs(tf_ctx *ctx, const fit_args *a)
 {
-    char err[1024];
-    if (tf_emit_check_path(a->out, strlen("_forward"), err, sizeof err) != 0) {
-        tf_error(ctx, "fit: %s", err);
+    if (tf_emit_check_path(ctx, a->out, strlen("_forward")) != 0) {
+        tf_error(ctx, "fit: %s", ctx->err);
         return -1;
     }
     return a->report ? tf_cmd_output_dir(ctx, "fit", a->report) : 0;
@@ -326,7 +324,7 @@ static int assume_physics(tf_ctx *ctx, const double rel[2], const tf_envelope *e
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
-    char base[TF_NAME_MAX - 8], err[512], note[1024];
+    char base[TF_NAME_MAX - 8], note[1024];
     const char *slash = strrchr(a->out, '/');
     if (fwd == NULL || con == NULL) {
         tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
@@ -367,10 +365,10 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
                                .points = s->outputs.points, .n_points = s->outputs.n_nodes,
                                .contact_point = site->by_node ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
-    int rc = tf_emit_header(a->out, models, 2, &info, err, sizeof err);
+    int rc = tf_emit_header(ctx, a->out, models, 2, &info);
     organ_map_free(&map);
     if (rc != 0) {
-        tf_error(ctx, "fit: %s", err); /* the path was checked: a failure while running */
+        tf_error(ctx, "fit: %s", ctx->err); /* the path was checked: a failure while running */
         return TF_EXIT_FAIL;
     }
     tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
@@ -382,19 +380,19 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
 static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf_solver *solver,
                          const tf_fit_plan *p, tf_fit_outcome *o)
 {
-    char err[1024], choice[1280]; /* every part at its longest: -Wformat-truncation */
+    char choice[1280]; /* every part at its longest: -Wformat-truncation */
     tf_sweep sw;
     tf_selection sel;
     tf_info(ctx, "fit: measuring every candidate for the choice (tissuefit sweep)");
-    if (tf_sweep_run(s, solver, p, 1u << TF_SET_SCENE, &sw) != 0) {
+    if (tf_sweep_run(ctx, s, solver, p, 1u << TF_SET_SCENE, &sw) != 0) {
         tf_error(ctx, "fit: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     /* the contact inverse: within 1e-4 of the envelope radius (the issue's
      * bound for linear scenes), else the most accurate passive one */
-    if (tf_select(&sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope.radius, &sel,
-                  err, sizeof err) != 0) {
-        tf_error(ctx, "fit: %s: %s; nothing written", a->scene, err);
+    if (tf_select(ctx, &sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope.radius,
+                  &sel) != 0) {
+        tf_error(ctx, "fit: %s: %s; nothing written", a->scene, ctx->err);
         tf_sweep_free(&sw);
         return TF_EXIT_USAGE;
     }
@@ -482,12 +480,10 @@ static void time_split(const tf_ctx *ctx, const fit_args *a, const tf_fit_outcom
 static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
                const tf_fit_plan *plan)
 {
-    char err[1024];
     if (a->reference != NULL) {
         tf_info(ctx, "fit: the solve against the physics: %s", a->reference);
-        if (tf_discretisation_measure(solver, p, plan->contact, a->reference, &a->phys, err,
-                                      sizeof err) != 0) {
-            tf_error(ctx, "fit: --reference %s", err);
+        if (tf_discretisation_measure(ctx, solver, p, plan->contact, a->reference, &a->phys) != 0) {
+            tf_error(ctx, "fit: --reference %s", ctx->err);
             return TF_EXIT_USAGE;
         }
         tf_info(ctx, "fit: discretisation: max %.3g mm (%s), contact site %.3g %%", a->phys.max_mm,
@@ -495,7 +491,7 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
     }
     tf_fit_outcome o;
     const double t0 = tf_seconds();
-    int fitted = tf_fit_run(p, solver, plan, &o);
+    int fitted = tf_fit_run(ctx, p, solver, plan, &o);
     if (fitted != 0) {
         tf_error(ctx, "fit: %s: %s", a->scene, ctx->err);
         return fitted == -2 ? TF_EXIT_USAGE : TF_EXIT_FAIL;
@@ -511,8 +507,8 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
         time_split(ctx, a, &o, tf_seconds() - t0);
     }
     if (rc == TF_EXIT_OK && a->report &&
-        tf_report_fit(a->report, a->out, p, solver, plan, &o, err, sizeof err) != 0) {
-        tf_error(ctx, "fit: report: %s", err);
+        tf_report_fit(ctx, a->report, a->out, p, solver, plan, &o) != 0) {
+        tf_error(ctx, "fit: report: %s", ctx->err);
         rc = TF_EXIT_FAIL;
     }
     tf_fit_outcome_free(&o);
@@ -522,11 +518,10 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
 int tf_cmd_fit_ranks(tf_ctx *ctx, int argc, char **argv, const tf_fit_ranks *ranks)
 {
     fit_args a = {.budget_us = NAN, .max_error_mm = NAN, .disc_rel = {NAN, NAN}};
-    char err[1024];
     tf_scene *s = NULL;
     tf_solver *solver = NULL;
     tf_fit_plan plan;
-    tf_mcu_parse("cortex-m4f@168", &a.mcu, err, sizeof err);
+    tf_mcu_parse(ctx, "cortex-m4f@168", &a.mcu);
     int rc = prepare(ctx, argc, argv, &a, &s, &plan, &solver);
     if (ranks != NULL) {
         rc = ranks->agree(ranks->user, ctx, rc, rc == TF_EXIT_OK ? fingerprint(&a) : 0);

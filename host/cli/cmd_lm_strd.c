@@ -76,15 +76,14 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         return TF_EXIT_USAGE;
     }
     const char *path = argv[optind];
-    char err[1024];
     tf_nist d;
-    if (tf_nist_read(path, &d, err, sizeof err) != 0) {
-        tf_error(ctx, "lm-strd: %s", err);
+    if (tf_nist_read(ctx, path, &d) != 0) {
+        tf_error(ctx, "lm-strd: %s", ctx->err);
         return TF_EXIT_USAGE;
     }
-    const tf_nist_model *model = tf_nist_match(&d, path, err, sizeof err);
+    const tf_nist_model *model = tf_nist_match(ctx, &d, path);
     if (model == NULL) {
-        tf_error(ctx, "lm-strd: %s", err);
+        tf_error(ctx, "lm-strd: %s", ctx->err);
         tf_nist_free(&d);
         return TF_EXIT_USAGE;
     }
@@ -92,8 +91,8 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     tf_nist_options(&o, d.n_par);
     o.lm.central_diff = central;
     tf_nist_score s;
-    if (tf_nist_fit(&d, model, start, &o, finite_diff, &s, err, sizeof err) != 0) {
-        tf_error(ctx, "lm-strd: %s: %s", path, err);
+    if (tf_nist_fit(ctx, &d, model, start, &o, finite_diff, &s) != 0) {
+        tf_error(ctx, "lm-strd: %s: %s", path, ctx->err);
         tf_nist_free(&d);
         return TF_EXIT_FAIL;
     }

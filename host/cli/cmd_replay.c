@@ -206,12 +206,12 @@ static long grid_triangles(const size_t *order, size_t n, const double *x, size_
 static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solver *solver,
                 const double *u, const double *v, size_t tick, const double f[3], int contact)
 {
-    char err[512], title[256];
+    char title[256];
     if (tf_problem_mesh(s) != NULL) {
         tf_report_organ_view ov = {.contact = contact, .exaggerate = 1, .azimuth = NAN,
                                    .elevation = NAN};
-        if (tf_report_organ_deformed_png(png, s, u, f, &ov, err, sizeof err) != 0) {
-            tf_error(ctx, "replay: %s", err);
+        if (tf_report_organ_deformed_png(ctx, png, s, u, f, &ov) != 0) {
+            tf_error(ctx, "replay: %s", ctx->err);
             return -1;
         }
         return 0;
@@ -247,9 +247,9 @@ static int draw(tf_ctx *ctx, const char *png, const tf_problem *s, const tf_solv
                           .palette = "rgb 33,13,10", .cblabel = "u_z (mm)", .azimuth = -125,
                           .elevation = 35, .zscale = 4, .title = title, .width = 1000,
                           .height = 750};
-    int rc = tf_report_render_png(png, &r, err, sizeof err);
+    int rc = tf_report_render_png(ctx, png, &r);
     if (rc != 0) {
-        tf_error(ctx, "replay: %s", err);
+        tf_error(ctx, "replay: %s", ctx->err);
     }
     free(order);
     free(tri);
@@ -320,8 +320,7 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
              : affine ? tf_solver_solve(solver, contact, (const double(*)[3])forces, t->n, NULL, u)
                       : solve_continued(solver, contact, forces, t->n, u, &solves);
     for (size_t i = 0; rc == 0 && i < t->n; ++i) {
-        rc = tf_solver_probe_outputs(solver, s, u + i * dofs, v + i * 3 * n_out, ctx->err,
-                              sizeof ctx->err);
+        rc = tf_solver_probe_outputs(ctx, solver, s, u + i * dofs, v + i * 3 * n_out);
     }
     if (rc != 0) {
         tf_error(ctx, "replay: %s", v ? ctx->err : "out of memory");

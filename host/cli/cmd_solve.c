@@ -215,13 +215,12 @@ static int write_vtu(FILE *fp, const tf_problem *p, const double *u)
 static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, const double *u,
                          const double *at_outputs)
 {
-    char err[512];
     const char *path[3] = {a->out, a->vtk, a->outputs};
     tf_afile f[3], *files[3];
     size_t n = 0;
     int rc = 0;
     for (int k = 0; k < 3 && rc == 0; ++k) {
-        if (path[k] && tf_afile_open(&f[k], path[k], err, sizeof err) != 0) {
+        if (path[k] && tf_afile_open(ctx, &f[k], path[k]) != 0) {
             rc = -1;
         } else if (path[k]) {
             files[n++] = &f[k];
@@ -230,7 +229,7 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
     if (rc == 0) {
         tf_report_csv_displacements(a->out ? f[0].fp : stdout, &s->cloud, NULL, 0, u);
         if (a->vtk && write_vtu(f[1].fp, s, u) != 0) {
-            snprintf(err, sizeof err, "out of memory for the VTK cells");
+            tf_fail(ctx, "out of memory for the VTK cells");
             rc = -1;
         }
         if (a->outputs) {
@@ -238,14 +237,14 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
         }
     }
     if (rc == 0) {
-        rc = tf_afile_commit_all(files, n, err, sizeof err);
+        rc = tf_afile_commit_all(ctx, files, n);
     } else {
         while (n > 0) { /* reverse order of opening (atomic_file.h) */
             tf_afile_abort(files[--n]);
         }
     }
     if (rc != 0 || (!a->out && fflush(stdout) != 0)) {
-        tf_error(ctx, "solve: %s", rc ? err : "cannot write to standard output");
+        tf_error(ctx, "solve: %s", rc ? ctx->err : "cannot write to standard output");
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
@@ -255,14 +254,13 @@ static int write_outputs(tf_ctx *ctx, const solve_args *a, const tf_problem *s, 
 static int pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s, int contact,
                     const double *u)
 {
-    char err[512];
     tf_report_organ_view v = {.contact = contact < 0 ? 0 : contact, .exaggerate = a->exaggerate,
                        .azimuth = a->view[0], .elevation = a->view[1]};
     const double zero[3] = {0, 0, 0};
-    if ((a->png_rest && tf_report_organ_rest_png(a->png_rest, s, &v, err, sizeof err) != 0) ||
-        (a->png && tf_report_organ_deformed_png(a->png, s, u, contact < 0 ? zero : a->force, &v, err,
-                                         sizeof err) != 0)) {
-        tf_error(ctx, "solve: %s", err);
+    if ((a->png_rest && tf_report_organ_rest_png(ctx, a->png_rest, s, &v) != 0) ||
+        (a->png &&
+         tf_report_organ_deformed_png(ctx, a->png, s, u, contact < 0 ? zero : a->force, &v) != 0)) {
+        tf_error(ctx, "solve: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
@@ -287,38 +285,37 @@ static void vtu_name(const char *pvd, size_t k, char *path, size_t len, const ch
 static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, size_t n,
                         const double *t, const double *u)
 {
-    char err[512];
     size_t nf = (a->out ? 1 : 0) + (a->vtk ? n + 1 : 0), k = 0;
     tf_afile *f = calloc(nf + 1, sizeof *f);
     char(*paths)[4200] = calloc(n + 1, sizeof *paths);
     const char **names = calloc(n + 1, sizeof *names);
     int rc = f && paths && names ? 0 : -1;
     if (rc != 0) {
-        snprintf(err, sizeof err, "out of memory");
+        tf_fail(ctx, "out of memory");
     }
-    if (rc == 0 && a->out && (rc = tf_afile_open(&f[k], a->out, err, sizeof err)) == 0) {
+    if (rc == 0 && a->out && (rc = tf_afile_open(ctx, &f[k], a->out)) == 0) {
         tf_report_series_csv(f[k++].fp, &p->cloud, n, t, u);
     }
     for (size_t s = 0; rc == 0 && a->vtk && s < n; ++s) {
         vtu_name(a->vtk, s, paths[s], sizeof paths[s], &names[s]);
-        if ((rc = tf_afile_open(&f[k], paths[s], err, sizeof err)) == 0 &&
+        if ((rc = tf_afile_open(ctx, &f[k], paths[s])) == 0 &&
             (rc = write_vtu(f[k++].fp, p, u + 3 * p->cloud.n * s)) != 0) {
-            snprintf(err, sizeof err, "out of memory for the VTK cells");
+            tf_fail(ctx, "out of memory for the VTK cells");
         }
     }
-    if (rc == 0 && a->vtk && (rc = tf_afile_open(&f[k], a->vtk, err, sizeof err)) == 0) {
+    if (rc == 0 && a->vtk && (rc = tf_afile_open(ctx, &f[k], a->vtk)) == 0) {
         tf_report_series_pvd(f[k++].fp, n, t, names);
     }
     if (rc == 0 && !a->out) {
         tf_report_series_csv(stdout, &p->cloud, n, t, u);
         rc = fflush(stdout) == 0 ? 0 : -1;
         if (rc != 0) {
-            snprintf(err, sizeof err, "cannot write to standard output");
+            tf_fail(ctx, "cannot write to standard output");
         }
     }
     for (size_t q = 0; q < k; ++q) { /* every temporary written: rename them all */
         if (rc == 0) {
-            rc = tf_afile_commit(&f[q], err, sizeof err);
+            rc = tf_afile_commit(ctx, &f[q]);
         } else {
             tf_afile_abort(&f[q]);
         }
@@ -327,7 +324,7 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
     free(paths);
     free(names);
     if (rc != 0) {
-        tf_error(ctx, "solve: %s", err);
+        tf_error(ctx, "solve: %s", ctx->err);
         return TF_EXIT_FAIL;
     }
     return TF_EXIT_OK;
@@ -457,7 +454,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_error(ctx, "solve: %s: %s", a.scene, sv ? "out of memory" : ctx->err);
     } else if (tf_solver_solve(sv, contact, (const double(*)[3])a.force, 1, NULL, u) != 0) {
         tf_error(ctx, "solve: %s: %s", a.scene, ctx->err);
-    } else if (a.outputs && tf_solver_probe_outputs(sv, p, u, v, ctx->err, sizeof ctx->err) != 0) {
+    } else if (a.outputs && tf_solver_probe_outputs(ctx, sv, p, u, v) != 0) {
         tf_error(ctx, "solve: %s: outputs: %s", a.scene, ctx->err);
     } else {
         tf_solver_report(sv);

@@ -50,7 +50,6 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     const char *csv = NULL, *md = NULL, *png = NULL;
     unsigned sets = TF_SWEEP_ALL_SETS;
     tf_sets overrides = {0};
-    char err[1024];
     int c, rc = TF_EXIT_USAGE;
     optind = 1;
     opterr = 0;
@@ -94,15 +93,15 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     } else {
         rc = TF_EXIT_FAIL;
         solver = tf_solver_create(p, NULL, ctx);
-        if (solver == NULL || tf_sweep_run(p, solver, &s->fit, sets, &sw) != 0) {
+        if (solver == NULL || tf_sweep_run(ctx, p, solver, &s->fit, sets, &sw) != 0) {
             tf_error(ctx, "sweep: %s", ctx->err);
         } else if (!csv && tf_report_sweep_csv_write(&sw, stdout) != 0) {
             tf_error(ctx, "sweep: cannot write the table to standard output: %s",
                      strerror(errno));
-        } else if ((csv && tf_report_sweep_csv(&sw, csv, err, sizeof err) != 0) ||
-                   (md && tf_report_sweep_markdown(&sw, p, md, err, sizeof err) != 0) ||
-                   (png && tf_report_sweep_plot(&sw, png, err, sizeof err) != 0)) {
-            tf_error(ctx, "sweep: %s", err);
+        } else if ((csv && tf_report_sweep_csv(ctx, &sw, csv) != 0) ||
+                   (md && tf_report_sweep_markdown(ctx, &sw, p, md) != 0) ||
+                   (png && tf_report_sweep_plot(ctx, &sw, png) != 0)) {
+            tf_error(ctx, "sweep: %s", ctx->err);
         } else {
             tf_info(ctx, "sweep: %zu candidates measured", sw.n);
             rc = TF_EXIT_OK;

@@ -141,7 +141,6 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     verify_args a = {0};
     tf_verify_row rows[MAX_LEVELS];
-    char err[1024];
     if (parse(ctx, argc, argv, &a) != 0 || tf_cmd_outputs(ctx, "verify", &a.csv, 1) != 0) {
         tf_sets_free(&a.sets);
         return TF_EXIT_USAGE;
@@ -149,10 +148,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     int rc = TF_EXIT_OK;
     for (unsigned k = 0; k < a.levels && rc == TF_EXIT_OK; ++k) {
         unsigned label;
-        tf_scene *s = tf_scene_level(a.scene, a.sets.item, a.sets.n, a.vary, k, &label, err,
-                                     sizeof err);
+        tf_scene *s = tf_scene_level(ctx, a.scene, a.sets.item, a.sets.n, a.vary, k, &label);
         if (s == NULL) {
-            tf_error(ctx, "verify: %s", err);
+            tf_error(ctx, "verify: %s", ctx->err);
             rc = TF_EXIT_USAGE;
             break;
         }
@@ -176,13 +174,13 @@ static int run(tf_ctx *ctx, int argc, char **argv)
     }
     if (a.csv) {
         tf_afile f;
-        if (tf_afile_open(&f, a.csv, err, sizeof err) != 0) {
-            tf_error(ctx, "verify: %s", err);
+        if (tf_afile_open(ctx, &f, a.csv) != 0) {
+            tf_error(ctx, "verify: %s", ctx->err);
             return TF_EXIT_FAIL;
         }
         print_table(f.fp, rows, a.levels);
-        if (tf_afile_commit(&f, err, sizeof err) != 0) {
-            tf_error(ctx, "verify: %s", err);
+        if (tf_afile_commit(ctx, &f) != 0) {
+            tf_error(ctx, "verify: %s", ctx->err);
             return TF_EXIT_FAIL;
         }
     }

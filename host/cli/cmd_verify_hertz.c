@@ -151,18 +151,17 @@ int tf_verify_hertz(tf_ctx *ctx, int argc, char **argv)
                 rows[k][0].particles, l2F, l2d, worst);
     }
     if (a.csv) {
-        char err[512];
         tf_afile f;
-        if (tf_afile_open(&f, a.csv, err, sizeof err) != 0) {
-            tf_error(ctx, "verify hertz: %s", err);
+        if (tf_afile_open(ctx, &f, a.csv) != 0) {
+            tf_error(ctx, "verify hertz: %s", ctx->err);
             return 1;
         }
         fputs(header, f.fp);
         for (size_t k = 0; k < a.n; ++k) {
             print_rows(f.fp, rows[k], o.n_indent);
         }
-        if (tf_afile_commit(&f, err, sizeof err) != 0) {
-            tf_error(ctx, "verify hertz: %s", err);
+        if (tf_afile_commit(ctx, &f) != 0) {
+            tf_error(ctx, "verify hertz: %s", ctx->err);
             return 1;
         }
     }

@@ -85,14 +85,13 @@ static int dispatch(tf_ctx *ctx, tf_dist *d, int argc, char **argv)
 int main(int argc, char **argv)
 {
     tf_blas_pin(argv);
-    char err[256];
-    tf_dist *d = tf_dist_init(&argc, &argv, err, sizeof err);
-    if (d == NULL) {
-        fprintf(stderr, "tissuefit-mpi: error: %s\n", err);
-        return TF_EXIT_FAIL;
-    }
     tf_ctx run;
     tf_ctx_init(&run);
+    tf_dist *d = tf_dist_init(&run, &argc, &argv);
+    if (d == NULL) {
+        fprintf(stderr, "tissuefit-mpi: error: %s\n", run.err);
+        return TF_EXIT_FAIL;
+    }
     if (tf_dist_rank(d) > 0) { /* silent; the last error goes to rank 0 */
         run.level = TF_LOG_ERROR;
         run.sink = tf_dist_sink;

@@ -33,9 +33,9 @@
 
 typedef struct tf_dist tf_dist;
 
-/* MPI_Init_thread (FUNNELED) and the session; NULL with a message in err
+/* MPI_Init_thread (FUNNELED) and the session; NULL with a message in ctx->err
  * (MPI_Finalize already called then). */
-tf_dist *tf_dist_init(int *argc, char ***argv, char *err, size_t errlen);
+tf_dist *tf_dist_init(tf_ctx *ctx, int *argc, char ***argv);
 
 /* MPI_Finalize and the session's memory. */
 void tf_dist_finalize(tf_dist *d);

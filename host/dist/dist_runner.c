@@ -333,7 +333,7 @@ int dist_run(const tf_case_runner *r, tf_solver *s, const tf_case_list *l, doubl
     pthread_cond_destroy(&sc.me.cv);
     int rc = 0;
     if (sc.failed) {
-        snprintf(s->ctx->err, sizeof s->ctx->err, "%s", sc.why);
+        tf_fail(s->ctx, "%s", sc.why);
         rc = tf_case_failed(s->ctx, l, sc.failed_case, sc.failed_rank);
     } else {
         summary(&sc, omp_get_wtime() - t0);

@@ -11,18 +11,19 @@
 #include "base/log.h"
 #include "dist/dist_internal.h"
 
-tf_dist *tf_dist_init(int *argc, char ***argv, char *err, size_t errlen)
+tf_dist *tf_dist_init(tf_ctx *ctx, int *argc, char ***argv)
 {
     int provided = 0;
     if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
-        snprintf(err, errlen, "MPI_Init_thread failed");
+        tf_fail(ctx, "MPI_Init_thread failed");
         return NULL;
     }
     tf_dist *d = calloc(1, sizeof *d);
     if (d == NULL || provided < MPI_THREAD_FUNNELED) {
-        snprintf(err, errlen, d ? "this MPI library gives no MPI_THREAD_FUNNELED support (rank 0 "
-                                  "solves cases in a thread of its own)"
-                                : "out of memory");
+        tf_fail(ctx, "%s",
+                d ? "this MPI library gives no MPI_THREAD_FUNNELED support (rank 0 solves cases "
+                    "in a thread of its own)"
+                  : "out of memory");
         free(d);
         MPI_Finalize();
         return NULL;

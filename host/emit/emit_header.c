@@ -554,31 +554,26 @@ static char *golden_text(const char *base, tf_model *const *models, size_t n,
     return buf;
 }
 
-static int check_models(const char *base, tf_model *const *models, size_t n, char *err,
-                        size_t errlen)
+static int check_models(tf_ctx *ctx, const char *base, tf_model *const *models, size_t n)
 {
     if (n == 0) {
-        snprintf(err, errlen, "%s.h: no model to emit", base);
-        return -1;
+        return tf_fail(ctx, "%s.h: no model to emit", base);
     }
     for (size_t i = 0; i < n; ++i) {
         if (!is_identifier(models[i]->name)) {
-            snprintf(err, errlen, "model name '%s' is not a lower-case C identifier",
-                     models[i]->name);
-            return -1;
+            return tf_fail(ctx, "model name '%s' is not a lower-case C identifier",
+                           models[i]->name);
         }
         for (size_t k = 0; k < i; ++k) {
             if (strcmp(models[i]->name, models[k]->name) == 0) {
-                snprintf(err, errlen, "two models are named '%s'", models[i]->name);
-                return -1;
+                return tf_fail(ctx, "two models are named '%s'", models[i]->name);
             }
         }
         if (tf_family_of(models[i]->family) == NULL || tf_form_of(models[i]->family) == NULL) {
-            snprintf(err, errlen, "model '%s': family %d is not registered", models[i]->name,
-                     (int)models[i]->family);
-            return -1;
+            return tf_fail(ctx, "model '%s': family %d is not registered", models[i]->name,
+                           (int)models[i]->family);
         }
-        if (tf_model_validate(models[i], err, errlen) != 0) {
+        if (tf_model_validate(ctx, models[i]) != 0) {
             return -1;
         }
     }
@@ -586,40 +581,37 @@ static int check_models(const char *base, tf_model *const *models, size_t n, cha
 }
 
 /* The base name and golden path of a header path, or -1 with a message. */
-static int names_of(const char *path, char *base, size_t baselen, char *gpath, size_t glen,
-                    char *err, size_t errlen)
+static int names_of(tf_ctx *ctx, const char *path, char *base, size_t baselen, char *gpath,
+                    size_t glen)
 {
     if (base_name(path, base, baselen) != 0 || !is_identifier(base) ||
         tf_golden_path(path, gpath, glen) != 0) {
-        snprintf(err, errlen,
-                 "%s: the header name must be a lower-case C identifier followed by .h", path);
-        return -1;
+        return tf_fail(ctx, "%s: the header name must be a lower-case C identifier followed by .h",
+                       path);
     }
     return 0;
 }
 
-int tf_emit_check_path(const char *path, size_t model_suffix, char *err, size_t errlen)
+int tf_emit_check_path(tf_ctx *ctx, const char *path, size_t model_suffix)
 {
     char base[TF_NAME_MAX], gpath[4096];
-    if (names_of(path, base, sizeof base, gpath, sizeof gpath, err, errlen) != 0) {
+    if (names_of(ctx, path, base, sizeof base, gpath, sizeof gpath) != 0) {
         return -1;
     }
     if (strlen(base) + model_suffix >= TF_NAME_MAX) {
-        snprintf(err, errlen, "%s: the header name is too long for its model names", path);
-        return -1;
+        return tf_fail(ctx, "%s: the header name is too long for its model names", path);
     }
-    return tf_afile_check(path, err, errlen) != 0 || tf_afile_check(gpath, err, errlen) != 0 ? -1
-                                                                                            : 0;
+    return tf_afile_check(ctx, path) != 0 || tf_afile_check(ctx, gpath) != 0 ? -1 : 0;
 }
 
-int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
-                   const tf_emit_info *info, char *err, size_t errlen)
+int tf_emit_header(tf_ctx *ctx, const char *path, tf_model *const *models, size_t n_models,
+                   const tf_emit_info *info)
 {
     char base[TF_NAME_MAX], gpath[4096];
-    if (names_of(path, base, sizeof base, gpath, sizeof gpath, err, errlen) != 0) {
+    if (names_of(ctx, path, base, sizeof base, gpath, sizeof gpath) != 0) {
         return -1;
     }
-    if (check_models(base, models, n_models, err, errlen) != 0) {
+    if (check_models(ctx, base, models, n_models) != 0) {
         return -1;
     }
     uint32_t(*checks)[TFIT_CHECK_WORDS] = malloc(n_models * sizeof *checks);
@@ -633,21 +625,20 @@ int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
     char *golden = checks ? golden_text(base, models, n_models, info, &glen) : NULL;
     if (golden == NULL) {
         free(checks);
-        snprintf(err, errlen, "%s: out of memory while computing the golden vectors", path);
-        return -1;
+        return tf_fail(ctx, "%s: out of memory while computing the golden vectors", path);
     }
     uint32_t gcrc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), (const Bytef *)golden, (uInt)glen);
     tf_afile h, g;
     int rc = -1;
-    if (tf_afile_open(&h, path, err, errlen) == 0) {
-        if (tf_afile_open(&g, gpath, err, errlen) == 0) {
+    if (tf_afile_open(ctx, &h, path) == 0) {
+        if (tf_afile_open(ctx, &g, gpath) == 0) {
             fwrite(golden, 1, glen, g.fp);
             write_golden_check(g.fp, base, gcrc);
             write_header(h.fp, base, models, checks, n_models, info, gcrc);
             /* Both written and synced before either is renamed; golden
              * first, so a header never appears without its vectors. */
             tf_afile *pair[2] = {&g, &h};
-            rc = tf_afile_commit_all(pair, 2, err, errlen);
+            rc = tf_afile_commit_all(ctx, pair, 2);
         } else {
             tf_afile_abort(&h);
         }

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "model/model.h"
 
 /* An organ's outputs (docs/header-format.md §10): for each output point, in
@@ -48,17 +49,17 @@ typedef struct tf_emit_info {
  * names the include guard and the IMPLEMENTATION macro.  Both files are
  * synced before either is renamed; the header carries the golden file's
  * CRC and the golden file refuses to compile beside another header
- * (header-format.md section 1).  Returns 0, or -1 with a message in err and
+ * (header-format.md section 1).  Returns 0, or -1 with a message in ctx->err and
  * nothing written. */
-int tf_emit_header(const char *path, tf_model *const *models, size_t n_models,
-                   const tf_emit_info *info, char *err, size_t errlen);
+int tf_emit_header(tf_ctx *ctx, const char *path, tf_model *const *models, size_t n_models,
+                   const tf_emit_info *info);
 
 /* Checks, before any work, that path names a header tf_emit_header can
  * write: a lower-case C identifier + ".h" that leaves room for a model name
  * suffix of model_suffix characters (strlen("_forward")), and writable
  * destinations for it and its golden file (atomic_file.h).  Returns 0, or
  * -1 with a message. */
-int tf_emit_check_path(const char *path, size_t model_suffix, char *err, size_t errlen);
+int tf_emit_check_path(tf_ctx *ctx, const char *path, size_t model_suffix);
 
 /* The golden path for a header path: "dir/name.h" -> "dir/name_golden.h". */
 int tf_golden_path(const char *header_path, char *out, size_t outlen);

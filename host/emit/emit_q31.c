@@ -38,19 +38,19 @@ static const tf_form_q31 *form_q31(const tf_model *m)
     return tf_form_of(m->family)->q31;
 }
 
-static tf_q31 *quantised(const tf_model *m, char *err, size_t errlen)
+static tf_q31 *quantised(tf_ctx *ctx, const tf_model *m)
 {
     const tf_form *f = tf_form_of(m->family);
     if (f->q31 == NULL) {
-        snprintf(err, errlen, "model '%s': no Q31 form for the %s family", m->name, f->name);
+        tf_fail(ctx, "model '%s': no Q31 form for the %s family", m->name, f->name);
         return NULL;
     }
-    return f->q31->quantise(m, err, errlen);
+    return f->q31->quantise(ctx, m);
 }
 
-static tf_q31 *measured(const tf_model *m, char *err, size_t errlen)
+static tf_q31 *measured(tf_ctx *ctx, const tf_model *m)
 {
-    tf_q31 *q = quantised(m, err, errlen);
+    tf_q31 *q = quantised(ctx, m);
     if (q != NULL) {
         tf_q31_measure(q, m, ERROR_SEED, TF_Q31_ERROR_CASES);
     }
@@ -59,10 +59,11 @@ static tf_q31 *measured(const tf_model *m, char *err, size_t errlen)
 
 void tf_emit_q31_banner(FILE *f, const tf_model *m)
 {
-    char err[256];
-    tf_q31 *q = measured(m, err, sizeof err);
+    tf_ctx why; /* no Q31 form is not a failure: the banner says why */
+    tf_ctx_init(&why);
+    tf_q31 *q = measured(&why, m);
     if (q == NULL) {
-        fprintf(f, " *       %s\n", err);
+        fprintf(f, " *       %s\n", why.err);
         return;
     }
     fprintf(f,
@@ -78,8 +79,9 @@ void tf_emit_q31_banner(FILE *f, const tf_model *m)
 
 void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
 {
-    char err[256];
-    tf_q31 *q = measured(m, err, sizeof err);
+    tf_ctx scratch; /* no Q31 form: nothing to write, no failure */
+    tf_ctx_init(&scratch);
+    tf_q31 *q = measured(&scratch, m);
     if (q == NULL) {
         return;
     }
@@ -104,9 +106,11 @@ void tf_emit_q31_macros(FILE *f, const tf_model *m, const char *p)
 
 void tf_emit_q31_definition(FILE *f, const tf_model *m)
 {
-    char err[256], note[96];
+    char note[96];
     static const char comp[] = "xyz";
-    tf_q31 *q = quantised(m, err, sizeof err);
+    tf_ctx scratch; /* no Q31 form: nothing to write, no failure */
+    tf_ctx_init(&scratch);
+    tf_q31 *q = quantised(&scratch, m);
     if (q == NULL) {
         return;
     }
@@ -136,8 +140,9 @@ void tf_emit_q31_definition(FILE *f, const tf_model *m)
 
 int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
 {
-    char err[256];
-    tf_q31 *q = quantised(m, err, sizeof err);
+    tf_ctx scratch; /* no Q31 form: nothing to write, no failure */
+    tf_ctx_init(&scratch);
+    tf_q31 *q = quantised(&scratch, m);
     if (q == NULL) {
         return 0;
     }
@@ -174,10 +179,11 @@ int tf_emit_q31_golden(FILE *f, const tf_model *m, uint64_t seed)
 
 void tf_emit_q31_sets(FILE *f, const char *base_upper, tf_model *const *models, size_t n)
 {
-    char err[256];
+    tf_ctx scratch; /* no Q31 form: not in the list, no failure */
+    tf_ctx_init(&scratch);
     fprintf(f, "#define TFIT_%s_GOLDEN_Q31_SETS {", base_upper);
     for (size_t i = 0; i < n; ++i) {
-        tf_q31 *q = quantised(models[i], err, sizeof err);
+        tf_q31 *q = quantised(&scratch, models[i]);
         if (q != NULL) {
             fprintf(f, "&tfit_%s_q31_golden, ", models[i]->name);
         }

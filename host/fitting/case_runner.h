@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "solvers/solver.h"
 
 /* A named run of consecutive cases ("training", "held-out"), for messages. */

@@ -31,12 +31,11 @@ static void *keep(tf_cases *c, void *p)
 static int extract(const tf_cases *c, const double *full, double *u, double contact[3])
 {
     tf_ctx *ctx = c->solver->ctx;
-    if (u != NULL &&
-        tf_solver_probe_outputs(c->solver, c->problem, full, u, ctx->err, sizeof ctx->err) != 0) {
+    if (u != NULL && tf_solver_probe_outputs(ctx, c->solver, c->problem, full, u) != 0) {
         return -1;
     }
-    if (contact != NULL && tf_solver_probe_contact(c->solver, c->problem, c->contact, full, contact,
-                                            ctx->err, sizeof ctx->err) != 0) {
+    if (contact != NULL &&
+        tf_solver_probe_contact(ctx, c->solver, c->problem, c->contact, full, contact) != 0) {
         return -1;
     }
     return 0;

@@ -45,8 +45,7 @@ static int solve_at(const tf_problem *p, const tf_solver *like, int contact, dou
     int rc = full == NULL ? tf_fail(ctx, "out of memory for the cut progress solves")
                           : tf_solver_solve(sv, contact, f, 4, NULL, full);
     for (int k = 0; rc == 0 && k < 4; ++k) {
-        rc = tf_solver_probe_outputs(sv, &q, full + k * dofs, resp + k * rows, ctx->err,
-                                     sizeof ctx->err);
+        rc = tf_solver_probe_outputs(ctx, sv, &q, full + k * dofs, resp + k * rows);
     }
     for (int k = 1; rc == 0 && k < 4; ++k) {
         for (size_t o = 0; o < rows; ++o) {

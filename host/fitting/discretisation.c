@@ -25,18 +25,17 @@ static void dir_of(const char *path, char *dir, size_t len)
 }
 
 /* One case file: header node,x,y,z,ux,uy,uz then rows. */
-static int read_points(const char *path, ref_case *c, char *err, size_t errlen)
+static int read_points(tf_ctx *ctx, const char *path, ref_case *c)
 {
     FILE *fp = fopen(path, "r");
     if (fp == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return -1;
+        return tf_fail(ctx, "%s: %s", path, strerror(errno));
     }
     char line[512];
     size_t cap = 0, lineno = 1;
     int rc = 0;
     if (fgets(line, sizeof line, fp) == NULL || strncmp(line, "node,x,y,z,ux,uy,uz", 19) != 0) {
-        snprintf(err, errlen, "%s:1: expected the header node,x,y,z,ux,uy,uz", path);
+        tf_fail(ctx, "%s:1: expected the header node,x,y,z,ux,uy,uz", path);
         rc = -1;
     }
     while (rc == 0 && fgets(line, sizeof line, fp) != NULL) {
@@ -45,8 +44,7 @@ static int read_points(const char *path, ref_case *c, char *err, size_t errlen)
         long node;
         if (sscanf(line, "%ld,%lf,%lf,%lf,%lf,%lf,%lf", &node, &v[0], &v[1], &v[2], &v[3], &v[4],
                    &v[5]) != 7 || !isfinite(v[0] + v[1] + v[2] + v[3] + v[4] + v[5])) {
-            snprintf(err, errlen, "%s:%zu: expected node,x,y,z,ux,uy,uz (7 finite numbers)", path,
-                     lineno);
+            tf_fail(ctx, "%s:%zu: expected node,x,y,z,ux,uy,uz (7 finite numbers)", path, lineno);
             rc = -1;
             break;
         }
@@ -57,7 +55,7 @@ static int read_points(const char *path, ref_case *c, char *err, size_t errlen)
                 c->x = x;
             }
             if (u == NULL) {
-                snprintf(err, errlen, "%s: out of memory", path);
+                tf_fail(ctx, "%s: out of memory", path);
                 rc = -1;
                 break;
             }
@@ -69,26 +67,25 @@ static int read_points(const char *path, ref_case *c, char *err, size_t errlen)
     }
     fclose(fp);
     if (rc == 0 && c->np == 0) {
-        snprintf(err, errlen, "%s: no points", path);
+        tf_fail(ctx, "%s: no points", path);
         rc = -1;
     }
     return rc;
 }
 
 /* The index: header fx,fy,fz,file then one case per line. */
-static int read_index(const char *index, ref_case *cases, size_t *n, char *err, size_t errlen)
+static int read_index(tf_ctx *ctx, const char *index, ref_case *cases, size_t *n)
 {
     FILE *fp = fopen(index, "r");
     if (fp == NULL) {
-        snprintf(err, errlen, "%s: %s", index, strerror(errno));
-        return -1;
+        return tf_fail(ctx, "%s: %s", index, strerror(errno));
     }
     char line[1024], dir[512], path[1024], file[512];
     dir_of(index, dir, sizeof dir);
     size_t lineno = 1;
     int rc = 0;
     if (fgets(line, sizeof line, fp) == NULL || strncmp(line, "fx,fy,fz,file", 13) != 0) {
-        snprintf(err, errlen, "%s:1: expected the header fx,fy,fz,file", index);
+        tf_fail(ctx, "%s:1: expected the header fx,fy,fz,file", index);
         rc = -1;
     }
     *n = 0;
@@ -96,41 +93,40 @@ static int read_index(const char *index, ref_case *cases, size_t *n, char *err, 
         ++lineno;
         ref_case *c = &cases[*n];
         if (*n == MAX_CASES) {
-            snprintf(err, errlen, "%s:%zu: more than %d cases", index, lineno, MAX_CASES);
+            tf_fail(ctx, "%s:%zu: more than %d cases", index, lineno, MAX_CASES);
             rc = -1;
         } else if (sscanf(line, "%lf,%lf,%lf,%511[^\r\n]", &c->force[0], &c->force[1],
                           &c->force[2], file) != 4 ||
                    !isfinite(c->force[0] + c->force[1] + c->force[2])) {
-            snprintf(err, errlen, "%s:%zu: expected fx,fy,fz,file (forces in N)", index, lineno);
+            tf_fail(ctx, "%s:%zu: expected fx,fy,fz,file (forces in N)", index, lineno);
             rc = -1;
         } else {
             snprintf(path, sizeof path, "%s%s", file[0] == '/' ? "" : dir, file);
             ++*n;
-            rc = read_points(path, c, err, errlen);
+            rc = read_points(ctx, path, c);
         }
     }
     fclose(fp);
     if (rc == 0 && *n == 0) {
-        snprintf(err, errlen, "%s: no cases", index);
+        tf_fail(ctx, "%s: no cases", index);
         rc = -1;
     }
     return rc;
 }
 
 /* diff = solve - reference at the case's points (3 np). */
-static int case_error(tf_solver *s, int contact, const ref_case *c, double *diff, char *err,
-                      size_t errlen)
+static int case_error(tf_ctx *ctx, tf_solver *s, int contact, const ref_case *c, double *diff)
 {
     const size_t dofs = 3 * tf_solver_node_count(s);
     double *u = malloc(dofs * sizeof *u), *grad = malloc(9 * c->np * sizeof *grad);
     int rc = -1;
     if (u == NULL || grad == NULL) {
-        snprintf(err, errlen, "out of memory for the reference comparison");
+        tf_fail(ctx, "out of memory for the reference comparison");
     } else if (tf_solver_solve(s, contact, (const double(*)[3])c->force, 1, NULL, u) != 0) {
-        snprintf(err, errlen, "the reference case (%g, %g, %g) N did not solve", c->force[0],
-                 c->force[1], c->force[2]);
+        tf_fail(ctx, "the reference case (%g, %g, %g) N did not solve", c->force[0], c->force[1],
+                c->force[2]);
     } else {
-        rc = tf_solver_field(s, u, c->x, c->np, diff, grad, err, errlen);
+        rc = tf_solver_field(ctx, s, u, c->x, c->np, diff, grad);
         for (size_t i = 0; rc == 0 && i < 3 * c->np; ++i) {
             diff[i] -= c->u[i];
         }
@@ -211,8 +207,8 @@ static void site_error(const tf_solver *s, const tf_problem *p, int contact, con
     out->site_rel = fmax(out->site_rel, rel);
 }
 
-static int compare(tf_solver *s, const tf_problem *p, int contact, ref_case *c, size_t n,
-                   tf_discretisation *out, char *err, size_t errlen)
+static int compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact, ref_case *c,
+                   size_t n, tf_discretisation *out)
 {
     double *diff[MAX_CASES] = {0}, inv[9];
     int rc = 0;
@@ -221,14 +217,14 @@ static int compare(tf_solver *s, const tf_problem *p, int contact, ref_case *c, 
         const double off = hypot(hypot(f[0] - ctr[0], f[1] - ctr[1]), f[2] - ctr[2]);
         diff[k] = malloc(3 * c[k].np * sizeof *diff[k]);
         if (diff[k] == NULL) {
-            snprintf(err, errlen, "out of memory for the reference comparison");
+            tf_fail(ctx, "out of memory for the reference comparison");
             rc = -1;
         } else if (!(tf_solver_caps_of(s) & TF_SOLVER_LINEAR) && off > p->envelope.radius * (1 + 1e-9)) {
-            snprintf(err, errlen, "%s: case %zu's force (%g, %g, %g) N lies outside the envelope",
-                     out->source, k + 1, f[0], f[1], f[2]);
+            tf_fail(ctx, "%s: case %zu's force (%g, %g, %g) N lies outside the envelope",
+                    out->source, k + 1, f[0], f[1], f[2]);
             rc = -1;
         } else {
-            rc = case_error(s, contact, &c[k], diff[k], err, errlen);
+            rc = case_error(ctx, s, contact, &c[k], diff[k]);
             out->reach = fmax(out->reach, off / p->envelope.radius);
         }
         for (size_t i = 0; rc == 0 && i < 3 * c[k].np; ++i) {
@@ -251,21 +247,20 @@ static int compare(tf_solver *s, const tf_problem *p, int contact, ref_case *c, 
     return rc;
 }
 
-int tf_discretisation_measure(tf_solver *s, const tf_problem *p, int contact, const char *index,
-                              tf_discretisation *out, char *err, size_t errlen)
+int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                              const char *index, tf_discretisation *out)
 {
     memset(out, 0, sizeof *out);
     snprintf(out->source, sizeof out->source, "%s", index);
     if (contact < 0 || (size_t)contact >= p->n_contacts) {
-        snprintf(err, errlen, "%s: a discretisation reference needs a contact site", index);
-        return -1;
+        return tf_fail(ctx, "%s: a discretisation reference needs a contact site", index);
     }
     ref_case cases[MAX_CASES] = {0};
     size_t n = 0;
-    int rc = read_index(index, cases, &n, err, errlen);
+    int rc = read_index(ctx, index, cases, &n);
     out->cases = n;
     if (rc == 0) {
-        rc = compare(s, p, contact, cases, n, out, err, errlen);
+        rc = compare(ctx, s, p, contact, cases, n, out);
     }
     for (size_t k = 0; k < MAX_CASES; ++k) {
         free(cases[k].x);

@@ -27,6 +27,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "solvers/solver.h"
 
 typedef struct tf_discretisation {
@@ -42,8 +43,8 @@ typedef struct tf_discretisation {
 
 /* Solves the reference's cases with solver s at contact site `contact` of
  * problem p and compares.  Returns 0, or -1 with a message naming the file
- * and line in err. */
-int tf_discretisation_measure(tf_solver *s, const tf_problem *p, int contact, const char *index,
-                              tf_discretisation *out, char *err, size_t errlen);
+ * and line in ctx->err. */
+int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                              const char *index, tf_discretisation *out);
 
 #endif /* TF_DISCRETISATION_H */

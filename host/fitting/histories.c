@@ -311,21 +311,19 @@ static int start(tf_histories *h, const tf_cases *c, tf_history_kind kind, uint3
     return 0;
 }
 
-int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t tick_ns,
-                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
-                              tf_histories *h, char *err, size_t errlen)
+int tf_histories_linear_creep(tf_ctx *ctx, const tf_cases *c, const tf_creep *creep,
+                              uint32_t tick_ns, size_t n_train, size_t n_heldout, size_t n_ticks,
+                              uint64_t seed, tf_histories *h)
 {
     if (!c->affine || c->base == NULL) {
-        snprintf(err, errlen, "linear creep histories need an affine solver's unit responses");
-        return -1;
+        return tf_fail(ctx, "linear creep histories need an affine solver's unit responses");
     }
     tf_history_design *hd;
     if (start(h, c, TF_HIST_PRESS, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
         tf_history_design_free(hd);
         tf_histories_free(h);
-        snprintf(err, errlen, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
-                 n_ticks);
-        return -1;
+        return tf_fail(ctx, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
+                       n_ticks);
     }
     for (size_t i = 0; i < n_train; ++i) {
         creep_one(c, creep, hd, i, &h->train, i, h->tick);
@@ -371,21 +369,19 @@ static void modes_one(const tf_cases *c, const tf_resonant_truth *tr, tf_history
     }
 }
 
-int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth, uint32_t tick_ns,
-                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
-                              tf_histories *h, char *err, size_t errlen)
+int tf_histories_linear_modes(tf_ctx *ctx, const tf_cases *c, const tf_resonant_truth *truth,
+                              uint32_t tick_ns, size_t n_train, size_t n_heldout, size_t n_ticks,
+                              uint64_t seed, tf_histories *h)
 {
     if (!c->affine || c->base == NULL) {
-        snprintf(err, errlen, "linear modal histories need an affine solver's unit responses");
-        return -1;
+        return tf_fail(ctx, "linear modal histories need an affine solver's unit responses");
     }
     tf_history_design *hd;
     if (start(h, c, TF_HIST_DYNAMIC, tick_ns, n_train, n_heldout, n_ticks, seed, &hd) != 0) {
         tf_history_design_free(hd);
         tf_histories_free(h);
-        snprintf(err, errlen, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
-                 n_ticks);
-        return -1;
+        return tf_fail(ctx, "out of memory for %zu histories of %zu ticks", n_train + n_heldout,
+                       n_ticks);
     }
     tf_history_design_free(hd);
     for (size_t i = 0; i < n_train; ++i) {

@@ -30,6 +30,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "fitting/cases.h"
 
 #define TF_HIST_SUBSTEPS 64
@@ -100,9 +101,9 @@ void tf_history_design_force(const tf_history_design *hd, size_t h, double t, do
  * the (affine) cases hold: u(t) = base + sum_k unit_k y_k(t), y = the force
  * filtered by the creep function in continuous time.  tick_ns: the tick in
  * ns.  Returns 0, or -1 with a message (cases not affine, no memory). */
-int tf_histories_linear_creep(const tf_cases *c, const tf_creep *creep, uint32_t tick_ns,
-                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
-                              tf_histories *h, char *err, size_t errlen);
+int tf_histories_linear_creep(tf_ctx *ctx, const tf_cases *c, const tf_creep *creep,
+                              uint32_t tick_ns, size_t n_train, size_t n_heldout, size_t n_ticks,
+                              uint64_t seed, tf_histories *h);
 
 /* A linear body with damped modes (the resonant family's test substrate):
  * the dynamic design, the force held over each tick, each force axis's
@@ -115,9 +116,9 @@ typedef struct tf_resonant_truth {
     double omega[TF_RESONANT_TRUTH_MAX], zeta[TF_RESONANT_TRUTH_MAX];
     double w[TF_RESONANT_TRUTH_MAX][3];
 } tf_resonant_truth;
-int tf_histories_linear_modes(const tf_cases *c, const tf_resonant_truth *truth, uint32_t tick_ns,
-                              size_t n_train, size_t n_heldout, size_t n_ticks, uint64_t seed,
-                              tf_histories *h, char *err, size_t errlen);
+int tf_histories_linear_modes(tf_ctx *ctx, const tf_cases *c, const tf_resonant_truth *truth,
+                              uint32_t tick_ns, size_t n_train, size_t n_heldout, size_t n_ticks,
+                              uint64_t seed, tf_histories *h);
 
 /* A design (kind: press-hold-release or dynamic) solved by a
  * time-dependent solver (tf_solver_history) with a time step of

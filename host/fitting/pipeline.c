@@ -22,9 +22,9 @@ static int heldout(tf_family_result *f, const tf_cases *c, tf_ctx *ctx)
 {
     uint32_t n = (uint32_t)c->heldout.n_cases;
     if (f->family->heldout != NULL) {
-        if (f->family->heldout(f->model, c, &f->heldout_max, &f->heldout_rms,
+        if (f->family->heldout(ctx, f->model, c, &f->heldout_max, &f->heldout_rms,
                                &f->heldout_rel_max, &n) != 0) {
-            return tf_fail(ctx, "%s: out of memory for its held-out errors", f->family->name);
+            return -1;
         }
     } else {
         tf_family_errors(f->model, &c->heldout, NULL, c->heldout.n_cases, &f->heldout_max,
@@ -96,12 +96,14 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
     const int inverse = f->kind == TF_FAMILY_INVERSE;
     double t0 = tf_seconds();
     untried(r);
-    r->applicable = f->applicable(&o->cases, plan, r->why, sizeof r->why) == 0;
+    r->applicable = f->applicable(ctx, &o->cases, plan) == 0;
     if (!r->applicable) {
+        /* skipped, not failed: the reason, cut to fit */
+        snprintf(r->why, sizeof r->why, "%.*s", (int)sizeof r->why - 1, ctx->err);
         return 0;
     }
     tf_info(ctx, "fit: %s: choosing orders by %u-fold cross-validation", f->name, plan->folds);
-    if (f->select(&o->cases, plan, r, ctx->err, sizeof ctx->err) != 0) {
+    if (f->select(ctx, &o->cases, plan, r) != 0) {
         return -1;
     }
     if (heldout(r, &o->cases, ctx) != 0) {
@@ -109,7 +111,7 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
     }
     /* a contact law that creates energy somewhere in its envelope would make
      * the haptic loop unstable: refused, never emitted (passivity.h) */
-    if (inverse && tf_passivity_require(r->model, ctx->err, sizeof ctx->err) != 0) {
+    if (inverse && tf_passivity_require(ctx, r->model) != 0) {
         return -1;
     }
     if (!inverse && seed_table(r, &o->cases, ctx) != 0) {
@@ -147,14 +149,24 @@ static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_solver *
     }
 }
 
-int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+/* The steps that solve (cases, histories, cut progress) report in the
+ * solver's context, the one it was created with; when the caller's is
+ * another, it gets their message too. */
+static int relayed(tf_ctx *ctx, const tf_solver *solver, int rc)
+{
+    if (rc != 0 && ctx != solver->ctx) {
+        tf_fail(ctx, "%s", solver->ctx->err);
+    }
+    return rc;
+}
+
+int tf_fit_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *o)
 {
-    tf_ctx *ctx = solver->ctx;
     memset(o, 0, sizeof *o);
     double t0 = tf_seconds();
     if (tf_cases_build(p, solver, plan, &o->cases) != 0) {
-        return -1;
+        return relayed(ctx, solver, -1);
     }
     if (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT) {
         tf_info(ctx, "fit: the solver is time-dependent: %zu + %zu force histories of %zu ticks "
@@ -166,7 +178,7 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                                plan->hist_train, plan->hist_heldout, plan->hist_ticks,
                                plan->seed, &o->hist) != 0) {
             tf_cases_free(&o->cases);
-            return -1;
+            return relayed(ctx, solver, -1);
         }
         o->has_hist = 1;
         o->cases.hist = &o->hist;
@@ -174,7 +186,7 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     if (plan->cut_intervals > 0) {
         if (tf_cut_cases_solve(p, solver, plan, &o->cut) != 0) {
             tf_fit_outcome_free(o);
-            return -1;
+            return relayed(ctx, solver, -1);
         }
         o->has_cut = 1;
         o->cases.cut = &o->cut;
@@ -182,7 +194,7 @@ int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
     o->seconds_cases = tf_seconds() - t0;
     warn_large(ctx, p, solver, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
-    if (plan->family->applicable(&o->cases, plan, ctx->err, sizeof ctx->err) != 0) {
+    if (plan->family->applicable(ctx, &o->cases, plan) != 0) {
         tf_fit_outcome_free(o);
         return -2;
     }

@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "fitting/cases.h"
 #include "fitting/cut_progress.h"
 #include "fitting/families/family.h"
@@ -39,8 +40,9 @@ typedef struct tf_fit_outcome {
  * is time-dependent, its force histories).  A family that does
  * not apply to the problem is marked so (why[]).  Returns 0; -2 when the
  * plan's forward family does not apply (a problem the user must change); -1
- * on any other failure; with the message in the solver's context. */
-int tf_fit_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+ * on any other failure; with the message in ctx->err (usually the context
+ * the solver was created with). */
+int tf_fit_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *out);
 void tf_fit_outcome_free(tf_fit_outcome *out);
 

@@ -179,31 +179,27 @@ static int by_tau(const void *x, const void *y)
     return (a[0] > b[0]) - (a[0] < b[0]);
 }
 
-int tf_prony_fit_terms(const tf_prony_data *d, const size_t *idx, size_t n, int k, double tau_lo,
-                       double tau_hi, tf_prony_terms *out, char *err, size_t errlen)
+int tf_prony_fit_terms(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                       double tau_lo, double tau_hi, tf_prony_terms *out)
 {
-    return tf_prony_fit_terms_from(d, idx, n, k, tau_lo, tau_hi, 3, out, err, errlen);
+    return tf_prony_fit_terms_from(ctx, d, idx, n, k, tau_lo, tau_hi, 3, out);
 }
 
-int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out,
-                            char *err, size_t errlen)
+int tf_prony_fit_terms_from(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out)
 {
     fit f;
     memset(out, 0, sizeof *out);
     if (k < 0 || k > TFIT_PRONY_MAX_TERMS || !(tau_lo > 0 && tau_lo < tau_hi)) {
-        snprintf(err, errlen, "prony terms: K = %d, time constants in [%g, %g] s", k, tau_lo,
-                 tau_hi);
-        return -1;
+        return tf_fail(ctx, "prony terms: K = %d, time constants in [%g, %g] s", k, tau_lo, tau_hi);
     }
     if (setup(&f, d, idx, n, k) != 0) {
-        snprintf(err, errlen, "prony terms: out of memory for %zu histories", n);
-        return -1;
+        return tf_fail(ctx, "prony terms: out of memory for %zu histories", n);
     }
     out->n = k;
     double *r = malloc(f.m * sizeof *r);
     if (r == NULL) {
-        snprintf(err, errlen, "prony terms: out of memory");
+        tf_fail(ctx, "prony terms: out of memory");
         free(f.e);
         free(f.y);
         return -1;
@@ -232,7 +228,7 @@ int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n,
         tf_lm_result res;
         memset(&res, 0, sizeof res);
         start(k, tau_lo, tau_hi, shifts[s], p);
-        if (tf_lm_solve(&pb, &opt, p, &res, err, errlen) != 0) {
+        if (tf_lm_solve(ctx, &pb, &opt, p, &res) != 0) {
             free(r);
             free(f.e);
             free(f.y);
@@ -251,9 +247,10 @@ int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n,
     free(f.e);
     free(f.y);
     if (!isfinite(best_rss)) {
-        snprintf(err, errlen, "%s: %d prony terms: the histories do not separate their time "
-                 "constants", TF_FAMILY_UNDETERMINED, k);
-        return -1;
+        return tf_fail(ctx,
+                       "%s: %d prony terms: the histories do not separate their time "
+                       "constants",
+                       TF_FAMILY_UNDETERMINED, k);
     }
     qsort(best, (size_t)k, sizeof best[0], by_tau);
     double sum = 0;
@@ -263,10 +260,10 @@ int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n,
         sum += out->w[j];
     }
     if (sum > 1 + 1e-6) {
-        snprintf(err, errlen, "%s: %d prony terms: weights summing to %.6g > 1 (the histories "
-                 "creep more than the relaxed static response allows)", TF_FAMILY_UNDETERMINED,
-                 k, sum);
-        return -1;
+        return tf_fail(ctx,
+                       "%s: %d prony terms: weights summing to %.6g > 1 (the histories "
+                       "creep more than the relaxed static response allows)",
+                       TF_FAMILY_UNDETERMINED, k, sum);
     }
     out->rms = sqrt(best_rss / (double)f.m);
     return 0;

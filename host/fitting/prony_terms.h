@@ -26,6 +26,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "model/model.h"
 
 typedef struct tf_prony_data {
@@ -47,14 +48,13 @@ typedef struct tf_prony_terms {
  * NULL: all), time constants within [tau_lo, tau_hi] s.  Returns 0, or -1
  * with a message (TF_FAMILY_UNDETERMINED first when the histories cannot
  * determine K terms). */
-int tf_prony_fit_terms(const tf_prony_data *d, const size_t *idx, size_t n, int k, double tau_lo,
-                       double tau_hi, tf_prony_terms *out, char *err, size_t errlen);
+int tf_prony_fit_terms(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                       double tau_lo, double tau_hi, tf_prony_terms *out);
 
 /* The same from `starts` (1 to 3) starting points (cheaper, for
  * cross-validation's many fits). */
-int tf_prony_fit_terms_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out,
-                            char *err, size_t errlen);
+int tf_prony_fit_terms_from(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                            double tau_lo, double tau_hi, int starts, tf_prony_terms *out);
 
 /* RMS of h - target over histories idx[0..n) (idx NULL: all). */
 double tf_prony_terms_rms(const tf_prony_data *d, const size_t *idx, size_t n,

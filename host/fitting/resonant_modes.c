@@ -120,8 +120,7 @@ static double rss_of(const double *r, size_t m)
 
 /* LM from p (2k parameters) inside the log bounds; returns the RSS (inf on
  * failure) and leaves the point in p. */
-static double run_lm(fit *f, const tf_resonant_bounds *b, double *p, double *r, char *err,
-                     size_t errlen)
+static double run_lm(tf_ctx *ctx, fit *f, const tf_resonant_bounds *b, double *p, double *r)
 {
     double lo[2 * MAXK], hi[2 * MAXK];
     for (int k = 0; k < f->k; ++k) {
@@ -142,7 +141,7 @@ static double run_lm(fit *f, const tf_resonant_bounds *b, double *p, double *r, 
     o.ftol = o.xtol = 1e-9;
     o.max_evals = 60 * (pb.n + 1);
     tf_lm_result res = {0};
-    if (tf_lm_solve(&pb, &o, p, &res, err, errlen) != 0) {
+    if (tf_lm_solve(ctx, &pb, &o, p, &res) != 0) {
         return INFINITY;
     }
     residual(f, p, r);
@@ -205,20 +204,18 @@ static void free_fit(fit *f)
     free(f->b);
 }
 
-int tf_resonant_fit_modes(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                          const tf_resonant_bounds *b, tf_resonant_modes *out, char *err,
-                          size_t errlen)
+int tf_resonant_fit_modes(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                          const tf_resonant_bounds *b, tf_resonant_modes *out)
 {
-    return tf_resonant_fit_modes_from(d, idx, n, k, b, TF_RESONANT_STARTS, out, err, errlen);
+    return tf_resonant_fit_modes_from(ctx, d, idx, n, k, b, TF_RESONANT_STARTS, out);
 }
 
-int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                               const tf_resonant_bounds *b, int n_starts, tf_resonant_modes *out,
-                               char *err, size_t errlen)
+int tf_resonant_fit_modes_from(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n,
+                               int k, const tf_resonant_bounds *b, int n_starts,
+                               tf_resonant_modes *out)
 {
     if (k < 0 || k > MAXK) {
-        snprintf(err, errlen, "resonant: %d modes (0 .. %d)", k, MAXK);
-        return -1;
+        return tf_fail(ctx, "resonant: %d modes (0 .. %d)", k, MAXK);
     }
     double p[2 * MAXK], best_p[2 * MAXK];
     double best = INFINITY;
@@ -229,14 +226,12 @@ int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t
         fit f;
         if (alloc_fit(&f, d, idx, n, have) != 0) {
             free_fit(&f);
-            snprintf(err, errlen, "resonant: out of memory");
-            return -1;
+            return tf_fail(ctx, "resonant: out of memory");
         }
         double *r = malloc(3 * f.rows * sizeof *r);
         if (r == NULL) {
             free_fit(&f);
-            snprintf(err, errlen, "resonant: out of memory");
-            return -1;
+            return tf_fail(ctx, "resonant: out of memory");
         }
         const int starts = have == 0 ? 1 : n_starts;
         double level_best = INFINITY, level_p[2 * MAXK] = {0}, level_w[MAXK][3] = {{0}};
@@ -247,7 +242,7 @@ int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t
                 p[2 * (have - 1)] = log(b->omega_lo) + u * (log(b->omega_hi) - log(b->omega_lo));
                 p[2 * (have - 1) + 1] = log(fmin(fmax(0.05, b->zeta_lo), b->zeta_hi));
             }
-            const double rss = run_lm(&f, b, p, r, err, errlen);
+            const double rss = run_lm(ctx, &f, b, p, r);
             if (rss < level_best) {
                 level_best = rss;
                 memcpy(level_p, p, 2 * (size_t)have * sizeof *p);
@@ -258,9 +253,8 @@ int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t
         free(r);
         free_fit(&f);
         if (!isfinite(level_best)) {
-            snprintf(err, errlen, "%s: resonant: %zu histories do not determine %d modes",
-                     TF_FAMILY_UNDETERMINED, idx != NULL ? n : d->n_hist, have);
-            return -1;
+            return tf_fail(ctx, "%s: resonant: %zu histories do not determine %d modes",
+                           TF_FAMILY_UNDETERMINED, idx != NULL ? n : d->n_hist, have);
         }
         memcpy(best_p, level_p, 2 * (size_t)have * sizeof *p);
         kk = have;

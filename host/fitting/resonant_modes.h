@@ -27,6 +27,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "fitting/prony_terms.h"
 #include "model/model.h"
 
@@ -53,15 +54,14 @@ typedef struct tf_resonant_bounds {
 /* K modes (0 <= K <= TFIT_RESONANT_MAX_MODES) on histories idx[0..n) (idx
  * NULL: all).  Returns 0, or -1 with a message (TF_FAMILY_UNDETERMINED first
  * when the histories cannot determine K modes). */
-int tf_resonant_fit_modes(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                          const tf_resonant_bounds *b, tf_resonant_modes *out, char *err,
-                          size_t errlen);
+int tf_resonant_fit_modes(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n, int k,
+                          const tf_resonant_bounds *b, tf_resonant_modes *out);
 
 /* The same from n_starts frequencies for each new mode (cheaper, for
  * cross-validation's many fits). */
-int tf_resonant_fit_modes_from(const tf_prony_data *d, const size_t *idx, size_t n, int k,
-                               const tf_resonant_bounds *b, int n_starts, tf_resonant_modes *out,
-                               char *err, size_t errlen);
+int tf_resonant_fit_modes_from(tf_ctx *ctx, const tf_prony_data *d, const size_t *idx, size_t n,
+                               int k, const tf_resonant_bounds *b, int n_starts,
+                               tf_resonant_modes *out);
 
 /* RMS of h - target over histories idx[0..n) (idx NULL: all). */
 double tf_resonant_modes_rms(const tf_prony_data *d, const size_t *idx, size_t n,

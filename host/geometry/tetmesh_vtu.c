@@ -55,10 +55,17 @@ void tf_tetmesh_write_vtu(FILE *fp, const tf_tetmesh *t)
 
 int tf_tetmesh_save_vtu(const char *path, const tf_tetmesh *t, tf_geom_msg *m)
 {
+    tf_ctx ctx; /* the atomic file's message goes into m->error, as geometry reports */
+    tf_ctx_init(&ctx);
     tf_afile a;
-    if (tf_afile_open(&a, path, m->error, sizeof m->error) != 0) {
+    if (tf_afile_open(&ctx, &a, path) != 0) {
+        snprintf(m->error, sizeof m->error, "%.*s", (int)sizeof m->error - 1, ctx.err);
         return TF_GEOM_FAILED;
     }
     tf_tetmesh_write_vtu(a.fp, t);
-    return tf_afile_commit(&a, m->error, sizeof m->error) == 0 ? TF_GEOM_OK : TF_GEOM_FAILED;
+    if (tf_afile_commit(&ctx, &a) != 0) {
+        snprintf(m->error, sizeof m->error, "%.*s", (int)sizeof m->error - 1, ctx.err);
+        return TF_GEOM_FAILED;
+    }
+    return TF_GEOM_OK;
 }

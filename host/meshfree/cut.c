@@ -8,16 +8,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-int tf_cut_set_build(tf_cut_set *set, const tf_cut *cuts, size_t n, char *err, size_t errlen)
+int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n)
 {
     size_t total = 0;
     set->panel = NULL;
     set->n = 0;
     for (size_t c = 0; c < n; ++c) {
         if (cuts[c].n < 2 || cuts[c].n > TF_CUT_MAX_POINTS || !(cuts[c].depth > 0)) {
-            snprintf(err, errlen, "cut %zu: needs 2 to %d points and a positive depth", c + 1,
-                     TF_CUT_MAX_POINTS);
-            return -1;
+            return tf_fail(ctx, "cut %zu: needs 2 to %d points and a positive depth", c + 1,
+                           TF_CUT_MAX_POINTS);
         }
         total += cuts[c].n - 1;
     }
@@ -26,8 +25,7 @@ int tf_cut_set_build(tf_cut_set *set, const tf_cut *cuts, size_t n, char *err, s
     }
     set->panel = calloc(total, sizeof *set->panel);
     if (set->panel == NULL) {
-        snprintf(err, errlen, "out of memory for %zu cut panels", total);
-        return -1;
+        return tf_fail(ctx, "out of memory for %zu cut panels", total);
     }
     for (size_t c = 0; c < n; ++c) {
         const tf_cut *k = &cuts[c];
@@ -36,7 +34,7 @@ int tf_cut_set_build(tf_cut_set *set, const tf_cut *cuts, size_t n, char *err, s
             double dx = k->xy[i + 1][0] - k->xy[i][0], dy = k->xy[i + 1][1] - k->xy[i][1];
             p->len = hypot(dx, dy);
             if (!(p->len > 0)) {
-                snprintf(err, errlen, "cut %zu: segment %zu has zero length", c + 1, i + 1);
+                tf_fail(ctx, "cut %zu: segment %zu has zero length", c + 1, i + 1);
                 tf_cut_set_free(set);
                 return -1;
             }

@@ -38,6 +38,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "problem/problem.h" /* tf_cut: a cut as the problem gives it */
 
 /* One rectangle of a cut. */
@@ -56,7 +57,7 @@ typedef struct tf_cut_set {
 /* The panels of n cuts.  Returns 0, or -1 with a message (a segment of
  * zero length, a non-positive depth, out of memory).  An empty set (n = 0)
  * is valid. */
-int tf_cut_set_build(tf_cut_set *set, const tf_cut *cuts, size_t n, char *err, size_t errlen);
+int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n);
 void tf_cut_set_free(tf_cut_set *set);
 
 /* Side function: the signed normal coordinate s of x, mm. */

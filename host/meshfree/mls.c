@@ -233,12 +233,11 @@ static void nearest(const double *xyz, size_t n, size_t i, const double h[3],
     }
 }
 
-int tf_mls_radii(const double *xyz, size_t n, const double spacing[3], double scale,
-                 double *radius, char *err, size_t errlen)
+int tf_mls_radii(tf_ctx *ctx, const double *xyz, size_t n, const double spacing[3], double scale,
+                 double *radius)
 {
     if (n <= NEAREST) {
-        snprintf(err, errlen, "EFG needs at least %d nodes (the cloud has %zu)", NEAREST + 1, n);
-        return -1;
+        return tf_fail(ctx, "EFG needs at least %d nodes (the cloud has %zu)", NEAREST + 1, n);
     }
     tf_nbr g;
     double rad[3];
@@ -249,8 +248,7 @@ int tf_mls_radii(const double *xyz, size_t n, const double spacing[3], double sc
     uint32_t *cand = malloc(cap * sizeof *cand);
     if (cand == NULL || tf_nbr_build(&g, xyz, n, rad) != 0) {
         free(cand);
-        snprintf(err, errlen, "out of memory for the radii of influence");
-        return -1;
+        return tf_fail(ctx, "out of memory for the radii of influence");
     }
     int rc = 0;
     for (size_t i = 0; i < n && rc == 0; ++i) {
@@ -258,7 +256,7 @@ int tf_mls_radii(const double *xyz, size_t n, const double spacing[3], double sc
         if (nc > cap) {
             uint32_t *grown = realloc(cand, nc * sizeof *cand);
             if (grown == NULL) {
-                snprintf(err, errlen, "out of memory for the radii of influence");
+                tf_fail(ctx, "out of memory for the radii of influence");
                 rc = -1;
                 break;
             }
@@ -274,11 +272,11 @@ int tf_mls_radii(const double *xyz, size_t n, const double spacing[3], double sc
                 c = fmax(c, fabs(xyz[3 * (size_t)bj[k] + a] - xyz[3 * i + a]));
             }
             if (!(c > 0)) {
-                snprintf(err, errlen,
-                         "node at (%g, %g, %g) mm: its %d nearest neighbours lie in the plane "
-                         "%c = %g, no spacing along %c for its radius of influence",
-                         xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], NEAREST, 'x' + a,
-                         xyz[3 * i + a], 'x' + a);
+                tf_fail(ctx,
+                        "node at (%g, %g, %g) mm: its %d nearest neighbours lie in the plane "
+                        "%c = %g, no spacing along %c for its radius of influence",
+                        xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], NEAREST, 'x' + a,
+                        xyz[3 * i + a], 'x' + a);
                 rc = -1;
             }
             radius[3 * i + a] = scale * c;

@@ -36,6 +36,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
+
 /* Cubic spline weight at the scaled distance r >= 0 (eq 8); *dw_r receives
  * (dw/dr)/r, which stays finite at r = 0. */
 double tf_mls_weight(double r, double *dw_r);
@@ -80,8 +82,8 @@ int tf_mls_eval(tf_mls_work *w, const double *xyz, const double *radius, const u
  * the grid spacing of each axis, at faces, edges and corners too).
  * Returns 0, or -1 with a message (fewer than seven nodes, a node whose
  * neighbours all lie in one plane through it, out of memory). */
-int tf_mls_radii(const double *xyz, size_t n, const double spacing[3], double scale,
-                 double *radius, char *err, size_t errlen);
+int tf_mls_radii(tf_ctx *ctx, const double *xyz, size_t n, const double spacing[3], double scale,
+                 double *radius);
 
 /* Keeps, in order, those of the n nodes idx[] whose domain of influence
  * reaches into the box [lo, hi] (a point when lo == hi), i.e. that have a

@@ -74,14 +74,12 @@ void tf_shape_free(tf_shape *sh)
     sh->cut_node = NULL;
 }
 
-int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
-                      size_t errlen)
+int tf_shape_use_tets(tf_ctx *ctx, tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree)
 {
     if (sh->mls_radius != NULL || sh->cloud->n < TF_LOCAL_K) {
-        snprintf(err, errlen, sh->mls_radius ? "EFG shape functions on tetrahedral cells are not "
-                                               "supported"
-                                             : "fewer nodes than a support needs");
-        return -1;
+        return tf_fail(ctx, sh->mls_radius ? "EFG shape functions on tetrahedral cells are not "
+                                             "supported"
+                                           : "fewer nodes than a support needs");
     }
     /* The neighbour grid in mm, as HEAD's organ path and EFG have it: a
      * mesh has no grid lines, and its supports are balls of a radius per
@@ -90,16 +88,14 @@ int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned deg
     free(sh->xi);
     sh->xi = NULL;
     if (tf_nbr_build(&sh->nbr, sh->cloud->xyz, sh->cloud->n, sh->radius) != 0) {
-        snprintf(err, errlen, "out of memory for the neighbour grid of %zu nodes", sh->cloud->n);
-        return -1;
+        return tf_fail(ctx, "out of memory for the neighbour grid of %zu nodes", sh->cloud->n);
     }
     sh->cell_radius = malloc((ntet + 1) * sizeof *sh->cell_radius);
     sh->cell_spacing = malloc((ntet + 1) * sizeof *sh->cell_spacing);
     if (sh->cell_radius == NULL || sh->cell_spacing == NULL ||
         tf_cells_use_tets(&sh->cells, sh->cloud->xyz, tet, ntet, degree) != 0) {
-        snprintf(err, errlen, "out of memory for %zu tetrahedral cells (or tet_degree %u)", ntet,
-                 degree);
-        return -1;
+        return tf_fail(ctx, "out of memory for %zu tetrahedral cells (or tet_degree %u)", ntet,
+                       degree);
     }
     for (size_t e = 0; e < ntet; ++e) {
         double centre[3], half[3];
@@ -108,8 +104,7 @@ int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned deg
         double h = tf_nbr_kth_distance(&sh->nbr, centre, TF_LOCAL_K);
         double most = tf_nbr_kth_distance(&sh->nbr, centre, cap);
         if (h < 0 || most < 0) {
-            snprintf(err, errlen, "out of memory for the local spacing");
-            return -1;
+            return tf_fail(ctx, "out of memory for the local spacing");
         }
         sh->cell_radius[e] = fmin(sh->support * h, most);
         sh->cell_spacing[e] = h;
@@ -121,7 +116,7 @@ int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned deg
  * "distance less than the expansion parameter"; the ellipsoid is bounded
  * by the ball of its largest semi-axis, so a few more nodes may be
  * enriched than strictly needed, never fewer). */
-static int mark_cut_nodes(tf_shape *sh, char *err, size_t errlen)
+static int mark_cut_nodes(tf_ctx *ctx, tf_shape *sh)
 {
     const tf_cloud *c = sh->cloud;
     free(sh->cut_node);
@@ -131,8 +126,7 @@ static int mark_cut_nodes(tf_shape *sh, char *err, size_t errlen)
     }
     sh->cut_node = calloc(c->n, 1);
     if (sh->cut_node == NULL) {
-        snprintf(err, errlen, "out of memory for the enriched nodes");
-        return -1;
+        return tf_fail(ctx, "out of memory for the enriched nodes");
     }
     for (size_t i = 0; i < c->n; ++i) {
         const double *r = sh->mls_radius + 3 * i;
@@ -142,17 +136,16 @@ static int mark_cut_nodes(tf_shape *sh, char *err, size_t errlen)
     return 0;
 }
 
-int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen)
+int tf_shape_set_cuts(tf_ctx *ctx, tf_shape *sh, const tf_cut *cuts, size_t n)
 {
     if (n > 0 && sh->cell_radius != NULL) {
-        snprintf(err, errlen, "cuts on an organ's tetrahedral cells are not supported");
-        return -1;
+        return tf_fail(ctx, "cuts on an organ's tetrahedral cells are not supported");
     }
     tf_cut_set_free(&sh->cuts);
-    if (tf_cut_set_build(&sh->cuts, cuts, n, err, errlen) != 0) {
+    if (tf_cut_set_build(ctx, &sh->cuts, cuts, n) != 0) {
         return -1;
     }
-    return mark_cut_nodes(sh, err, errlen);
+    return mark_cut_nodes(ctx, sh);
 }
 
 size_t tf_shape_cut_nodes(const tf_shape *sh)
@@ -164,19 +157,17 @@ size_t tf_shape_cut_nodes(const tf_shape *sh)
     return m;
 }
 
-int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
+int tf_shape_use_efg(tf_ctx *ctx, tf_shape *sh)
 {
     if (sh->cell_radius != NULL) {
-        snprintf(err, errlen, "EFG shape functions on tetrahedral cells are not supported");
-        return -1;
+        return tf_fail(ctx, "EFG shape functions on tetrahedral cells are not supported");
     }
     const tf_cloud *c = sh->cloud;
     double *rad = malloc(3 * c->n * sizeof *rad), reach[3] = {0, 0, 0}, t = 0;
     if (rad == NULL) {
-        snprintf(err, errlen, "out of memory for the radii of influence");
-        return -1;
+        return tf_fail(ctx, "out of memory for the radii of influence");
     }
-    if (tf_mls_radii(c->xyz, c->n, c->spacing, sh->support, rad, err, errlen) != 0) {
+    if (tf_mls_radii(ctx, c->xyz, c->n, c->spacing, sh->support, rad) != 0) {
         free(rad);
         return -1;
     }
@@ -201,10 +192,9 @@ int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen)
     sh->xi = NULL; /* the EFG neighbour grid is in mm */
     sh->mls_radius = rad;
     if (tf_nbr_build(&sh->nbr, c->xyz, c->n, reach) != 0) {
-        snprintf(err, errlen, "out of memory for the EFG neighbour grid");
-        return -1;
+        return tf_fail(ctx, "out of memory for the EFG neighbour grid");
     }
-    return mark_cut_nodes(sh, err, errlen);
+    return mark_cut_nodes(ctx, sh);
 }
 
 void tf_shape_stats_reset(tf_shape_stats *st)

@@ -40,6 +40,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "meshfree/cut.h"
 #include "meshfree/mls.h"
 #include "meshfree/neighbours.h"
@@ -123,17 +124,16 @@ void tf_shape_free(tf_shape *sh);
  * (solver.rbf.spacings) is that many times the same local spacing.  The
  * neighbour grid is rebuilt in mm.  RPIM only (EFG is refused).  Returns 0,
  * or -1 with a message. */
-int tf_shape_use_tets(tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree, char *err,
-                      size_t errlen);
+int tf_shape_use_tets(tf_ctx *ctx, tf_shape *sh, const size_t *tet, size_t ntet, unsigned degree);
 
 /* Switches sh from RPIM to EFG: MLS shape functions whose nodes have the
  * radii of influence alpha_s x their local spacing (tf_mls_radii).
- * Returns 0, or -1 with a message in err. */
-int tf_shape_use_efg(tf_shape *sh, char *err, size_t errlen);
+ * Returns 0, or -1 with a message in ctx->err. */
+int tf_shape_use_efg(tf_ctx *ctx, tf_shape *sh);
 
 /* Cuts n cuts into sh (after tf_shape_use_efg for EFG).  Returns 0, or -1
  * with a message (a bad cut, out of memory). */
-int tf_shape_set_cuts(tf_shape *sh, const tf_cut *cuts, size_t n, char *err, size_t errlen);
+int tf_shape_set_cuts(tf_ctx *ctx, tf_shape *sh, const tf_cut *cuts, size_t n);
 
 /* How many nodes are enriched (EFG), for reports. */
 size_t tf_shape_cut_nodes(const tf_shape *sh);

@@ -35,17 +35,17 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
     return n > UINT32_MAX ? 0 : (uint32_t)n;
 }
 
-tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, const uint32_t *dims,
-                       uint32_t n_dims, char *err, size_t errlen)
+tf_model *tf_model_new(tf_ctx *ctx, const char *name, tfit_family family, uint32_t n_out,
+                       const uint32_t *dims, uint32_t n_dims)
 {
     uint32_t n_coef = tf_model_ncoef(family, n_out, dims, n_dims);
     if (n_coef == 0) {
-        snprintf(err, errlen, "model '%s': invalid shape for family %d (n_out %u, %u dims)", name,
-                 (int)family, n_out, n_dims);
+        tf_fail(ctx, "model '%s': invalid shape for family %d (n_out %u, %u dims)", name,
+                (int)family, n_out, n_dims);
         return NULL;
     }
     if (strlen(name) >= TF_NAME_MAX) {
-        snprintf(err, errlen, "model name '%s' longer than %d characters", name, TF_NAME_MAX - 1);
+        tf_fail(ctx, "model name '%s' longer than %d characters", name, TF_NAME_MAX - 1);
         return NULL;
     }
     tf_model *m = calloc(1, sizeof *m);
@@ -55,7 +55,7 @@ tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, con
         free(m);
         free(coef);
         free(ids);
-        snprintf(err, errlen, "out of memory for model '%s' (%u coefficients)", name, n_coef);
+        tf_fail(ctx, "out of memory for model '%s' (%u coefficients)", name, n_coef);
         return NULL;
     }
     snprintf(m->name, sizeof m->name, "%s", name);
@@ -154,28 +154,28 @@ uint32_t tf_model_crc32(const tf_model *m)
     return crc;
 }
 
-int tf_model_validate(const tf_model *m, char *err, size_t errlen)
+int tf_model_validate(tf_ctx *ctx, const tf_model *m)
 {
     if (tf_model_ncoef(m->family, m->n_out, m->dims, m->n_dims) != m->n_coef) {
-        snprintf(err, errlen, "model '%s': table size %u does not match its family and orders",
-                 m->name, m->n_coef);
+        tf_fail(ctx, "model '%s': table size %u does not match its family and orders", m->name,
+                m->n_coef);
         return 1;
     }
     for (int i = 0; i < TFIT_INPUT_MAP_FLOATS; ++i) {
         double v = fabs((double)m->coef[i]);
         if (!(v <= (i < 3 ? X0_LIMIT : W_LIMIT))) {
-            snprintf(err, errlen, "model '%s': input map entry %d is %g (envelope degenerate?)",
-                     m->name, i, (double)m->coef[i]);
+            tf_fail(ctx, "model '%s': input map entry %d is %g (envelope degenerate?)", m->name, i,
+                    (double)m->coef[i]);
             return 1;
         }
     }
     for (uint32_t i = 0; i < m->n_coef; ++i) {
         if (!isfinite(m->coef[i])) {
-            snprintf(err, errlen, "model '%s': coefficient %u is not finite", m->name, i);
+            tf_fail(ctx, "model '%s': coefficient %u is not finite", m->name, i);
             return 1;
         }
     }
-    return tf_form_of(m->family)->bounds(m, err, errlen);
+    return tf_form_of(m->family)->bounds(ctx, m);
 }
 
 tf_opcount tf_model_ops(const tf_model *m)

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "cost/cycles.h"
 #include "tfit.h"
 
@@ -56,9 +57,9 @@ uint32_t tf_terms(uint32_t p);
 uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims, uint32_t n_dims);
 
 /* Allocates a model with zeroed tables and identity input map, metadata NAN.
- * Returns NULL (and a message in err) when the shape is invalid. */
-tf_model *tf_model_new(const char *name, tfit_family family, uint32_t n_out, const uint32_t *dims,
-                       uint32_t n_dims, char *err, size_t errlen);
+ * Returns NULL (and a message in ctx->err) when the shape is invalid. */
+tf_model *tf_model_new(tf_ctx *ctx, const char *name, tfit_family family, uint32_t n_out,
+                       const uint32_t *dims, uint32_t n_dims);
 void tf_model_free(tf_model *m);
 tf_model *tf_model_clone(const tf_model *m);
 
@@ -80,7 +81,7 @@ uint32_t tf_crc32_u32(uint32_t crc, uint32_t w);
 /* Checks what tfit_model_check() will check on the device (sizes, finite
  * coefficients, no reachable overflow), with a message naming the table and
  * index at fault.  Returns 0 when the model is emittable. */
-int tf_model_validate(const tf_model *m, char *err, size_t errlen);
+int tf_model_validate(tf_ctx *ctx, const tf_model *m);
 
 /* Operation count of one evaluation, from its form's formulas. */
 tf_opcount tf_model_ops(const tf_model *m);

@@ -67,40 +67,39 @@ static double tick_needed(double omega, double zeta, double tick)
     return ceil(hi / scale) * scale;
 }
 
-int tf_resonant_params_check(double omega, double zeta, double tick, char *err, size_t errlen)
+int tf_resonant_params_check(tf_ctx *ctx, double omega, double zeta, double tick)
 {
     const double wt = omega * tick, hz = omega / (2 * PI);
     if (!(omega > 0) || !(zeta > 0) || !(zeta <= TF_RESONANT_MAX_ZETA)) {
-        snprintf(err, errlen,
-                 "resonant: mode at %.6g Hz with damping ratio %.4g is outside the family's "
-                 "limits (omega > 0, 0 < zeta <= %g)",
-                 hz, zeta, TF_RESONANT_MAX_ZETA);
+        tf_fail(ctx,
+                "resonant: mode at %.6g Hz with damping ratio %.4g is outside the family's "
+                "limits (omega > 0, 0 < zeta <= %g)",
+                hz, zeta, TF_RESONANT_MAX_ZETA);
         return 1;
     }
     if (wt > TF_RESONANT_MAX_WT) {
-        snprintf(err, errlen,
-                 "resonant: mode at %.6g Hz is %.3g ticks per period of %.6g s: the tick does not "
-                 "resolve it (omega T <= %g, docs/fitting.md §8); fit with a tick of at most "
-                 "%.3g us",
-                 hz, 2 * PI / wt, tick, TF_RESONANT_MAX_WT, 1e6 * TF_RESONANT_MAX_WT / omega);
+        tf_fail(ctx,
+                "resonant: mode at %.6g Hz is %.3g ticks per period of %.6g s: the tick does not "
+                "resolve it (omega T <= %g, docs/fitting.md §8); fit with a tick of at most "
+                "%.3g us",
+                hz, 2 * PI / wt, tick, TF_RESONANT_MAX_WT, 1e6 * TF_RESONANT_MAX_WT / omega);
         return 1;
     }
     const double margin = 1 - rounded_norm(wt, zeta);
     if (!(margin >= TF_RESONANT_MIN_MARGIN)) {
         const double need = tick_needed(omega, zeta, tick);
-        snprintf(err, errlen,
-                 "resonant: mode at %.6g Hz with damping ratio %.4g at a %.6g s tick: its float "
-                 "transition matrix contracts by %.3g per tick, below 2^-20 (the float32 "
-                 "recursion would drift or grow, docs/fitting.md §8); fit with a tick of at "
-                 "least %.3g us",
-                 hz, zeta, tick, margin, 1e6 * need);
+        tf_fail(ctx,
+                "resonant: mode at %.6g Hz with damping ratio %.4g at a %.6g s tick: its float "
+                "transition matrix contracts by %.3g per tick, below 2^-20 (the float32 "
+                "recursion would drift or grow, docs/fitting.md §8); fit with a tick of at "
+                "least %.3g us",
+                hz, zeta, tick, margin, 1e6 * need);
         return 1;
     }
     return 0;
 }
 
-int tf_resonant_floats_check(const float pt[7], const char *name, uint32_t k, char *err,
-                             size_t errlen)
+int tf_resonant_floats_check(tf_ctx *ctx, const float pt[7], const char *name, uint32_t k)
 {
     double f[4];
     for (int i = 0; i < 4; ++i) {
@@ -112,10 +111,10 @@ int tf_resonant_floats_check(const float pt[7], const char *name, uint32_t k, ch
     }
     const double margin = 1 - tf_resonant_norm2(f);
     if (bad || !(margin >= TF_RESONANT_MIN_MARGIN)) {
-        snprintf(err, errlen,
-                 "model '%s': resonant mode %u has F = [%g %g; %g %g], weights %g %g %g "
-                 "(|F_ij| <= 1, 1 - |F|_2 >= 2^-20 and |w| <= 2^10 keep the state finite)",
-                 name, k, f[0], f[1], f[2], f[3], (double)pt[4], (double)pt[5], (double)pt[6]);
+        tf_fail(ctx,
+                "model '%s': resonant mode %u has F = [%g %g; %g %g], weights %g %g %g "
+                "(|F_ij| <= 1, 1 - |F|_2 >= 2^-20 and |w| <= 2^10 keep the state finite)",
+                name, k, f[0], f[1], f[2], f[3], (double)pt[4], (double)pt[5], (double)pt[6]);
         return 1;
     }
     return 0;

@@ -24,6 +24,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
+
 #define TF_RESONANT_MIN_MARGIN 0x1p-20 /* 1 - |F|_2 at least this */
 #define TF_RESONANT_MAX_WT 1.5        /* omega T at most this */
 #define TF_RESONANT_MAX_ZETA 2.0      /* zeta at most this */
@@ -38,12 +40,11 @@ double tf_resonant_norm2(const double f[4]);
  * recursion carries (w T <= TF_RESONANT_MAX_WT, the rounded F's norm at
  * most 1 - TF_RESONANT_MIN_MARGIN); else 1 with a message naming the
  * mode, its frequency and damping and what the tick would have to be. */
-int tf_resonant_params_check(double omega, double zeta, double tick, char *err, size_t errlen);
+int tf_resonant_params_check(tf_ctx *ctx, double omega, double zeta, double tick);
 
 /* 0 when a mode's seven table floats {f11, f12, f21, f22, w0, w1, w2} are
  * ones the device carries (|F_ij| <= 1, |w| <= 2^10, 1 - |F|_2 >= 2^-20);
  * else 1 with a message naming model `name` and mode k. */
-int tf_resonant_floats_check(const float pt[7], const char *name, uint32_t k, char *err,
-                             size_t errlen);
+int tf_resonant_floats_check(tf_ctx *ctx, const float pt[7], const char *name, uint32_t k);
 
 #endif /* TF_OSCILLATOR_H */

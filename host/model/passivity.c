@@ -83,12 +83,11 @@ static void to_delta(const tf_model *m, const double g[3], double delta[3])
     }
 }
 
-int tf_passivity_measure(const tf_model *m, tf_passivity *out, char *err, size_t errlen)
+int tf_passivity_measure(tf_ctx *ctx, const tf_model *m, tf_passivity *out)
 {
     memset(out, 0, sizeof *out);
     if (m->family != TFIT_FAMILY_CONTACT) {
-        snprintf(err, errlen, "passivity: %s is not a contact model", m->name);
-        return -1;
+        return tf_fail(ctx, "passivity: %s is not a contact model", m->name);
     }
     const int n = (int)lround(1 / GRID_STEP);
     int rc = 0;
@@ -110,30 +109,29 @@ int tf_passivity_measure(const tf_model *m, tf_passivity *out, char *err, size_t
         rc = sample(m, g, out);
     }
     if (rc != 0) {
-        snprintf(err, errlen, "passivity: LAPACK failed on the stiffness of %s", m->name);
-        return -1;
+        return tf_fail(ctx, "passivity: LAPACK failed on the stiffness of %s", m->name);
     }
     to_delta(m, out->worst_g, out->worst_delta);
     return 0;
 }
 
-int tf_passivity_require(tf_model *m, char *err, size_t errlen)
+int tf_passivity_require(tf_ctx *ctx, tf_model *m)
 {
     tf_passivity p;
-    if (tf_passivity_measure(m, &p, err, errlen) != 0) {
+    if (tf_passivity_measure(ctx, m, &p) != 0) {
         return -1;
     }
     m->stiffness_min = p.min_eig;
     m->stiffness_max = p.max_stiffness;
     m->passivity_samples = p.samples;
     if (!(p.min_eig > 0)) {
-        snprintf(err, errlen,
-                 "contact model %s is not passive: the symmetric part of its stiffness has "
-                 "eigenvalue %.4g N/mm at contact displacement (%.4g, %.4g, %.4g) mm (one of %u "
-                 "samples of the envelope), so the haptic loop would create energy there; "
-                 "refusing to emit it (fit a lower degree or a smaller force envelope)",
-                 m->name, p.min_eig, p.worst_delta[0], p.worst_delta[1], p.worst_delta[2],
-                 p.samples);
+        tf_fail(ctx,
+                "contact model %s is not passive: the symmetric part of its stiffness has "
+                "eigenvalue %.4g N/mm at contact displacement (%.4g, %.4g, %.4g) mm (one of %u "
+                "samples of the envelope), so the haptic loop would create energy there; "
+                "refusing to emit it (fit a lower degree or a smaller force envelope)",
+                m->name, p.min_eig, p.worst_delta[0], p.worst_delta[1], p.worst_delta[2],
+                p.samples);
         return 1;
     }
     return 0;

@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "model/model.h"
 
 typedef struct tf_passivity {
@@ -28,14 +29,14 @@ typedef struct tf_passivity {
 } tf_passivity;
 
 /* Samples the envelope of a contact model (TFIT_FAMILY_CONTACT).  Returns 0
- * when measured (passive or not: see out->min_eig), -1 with a message in err
+ * when measured (passive or not: see out->min_eig), -1 with a message in ctx->err
  * when the model is not a contact model or LAPACK fails. */
-int tf_passivity_measure(const tf_model *m, tf_passivity *out, char *err, size_t errlen);
+int tf_passivity_measure(tf_ctx *ctx, const tf_model *m, tf_passivity *out);
 
 /* Measures, stores the result in the model's metadata (it goes into the
  * header) and refuses a non-passive law: returns 0 when passive, 1 with a
  * message naming the model, the point and the eigenvalue when not, -1 on
  * failure. */
-int tf_passivity_require(tf_model *m, char *err, size_t errlen);
+int tf_passivity_require(tf_ctx *ctx, tf_model *m);
 
 #endif /* TF_PASSIVITY_H */

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "base/context.h"
 #include "model/forms/form.h"
 #include "model/model.h"
 #include "tfit_q31.h"
@@ -32,17 +33,17 @@ typedef struct tf_q31 {
 } tf_q31;
 
 /* Quantises m by its form's Q31 form (model/forms/form.h).  Returns NULL
- * and a reason in err when m has no Q31 form (a form without one, a prony
+ * and a reason in ctx->err when m has no Q31 form (a form without one, a prony
  * model with a modal static map or a term too slow for §8's bound; an
  * envelope so elongated that the projection's headroom exceeds 14 bits). */
-tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen);
+tf_q31 *tf_q31_quantise(tf_ctx *ctx, const tf_model *m);
 
 /* The Q31 forms (q31_forms.c): of the nodal layout (nodal and contact:
  * §2-§5) and of the prony form (§8). */
 extern const tf_form_q31 tf_q31_rows, tf_q31_prony;
 /* Their quantisers and error measurements (q31_quantise.c, q31_error.c). */
-tf_q31 *tf_q31_quantise_rows(const tf_model *m, char *err, size_t errlen);
-tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen);
+tf_q31 *tf_q31_quantise_rows(tf_ctx *ctx, const tf_model *m);
+tf_q31 *tf_q31_quantise_prony(tf_ctx *ctx, const tf_model *m);
 void tf_q31_measure_points(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
 void tf_q31_measure_ticks(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
 

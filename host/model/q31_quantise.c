@@ -54,12 +54,11 @@ static int box_half_widths(const tf_model *m, double r[3])
     return 0;
 }
 
-static int quantise_map(const tf_model *m, tf_q31 *q, char *err, size_t errlen)
+static int quantise_map(tf_ctx *ctx, const tf_model *m, tf_q31 *q)
 {
     double r[3], box = 0, wsum = 0;
     if (box_half_widths(m, r) != 0) {
-        snprintf(err, errlen, "model '%s': no Q31 form: envelope matrix W is singular", m->name);
-        return -1;
+        return tf_fail(ctx, "model '%s': no Q31 form: envelope matrix W is singular", m->name);
     }
     for (int j = 0; j < 3; ++j) {
         box = fmax(box, fabs((double)m->coef[j]) + r[j]);
@@ -76,11 +75,11 @@ static int quantise_map(const tf_model *m, tf_q31 *q, char *err, size_t errlen)
     int h = ceil_log2(wsum * (1.5 + 0x1p-30) * ldexp(1.0, q->in_exp)) + 2;
     h = h < 2 ? 2 : h;
     if (h > MAX_H) {
-        snprintf(err, errlen,
-                 "model '%s': no Q31 form: the envelope is too elongated for the projection's "
-                 "%d-bit headroom (needs %d)",
-                 m->name, MAX_H, h);
-        return -1;
+        return tf_fail(
+            ctx,
+            "model '%s': no Q31 form: the envelope is too elongated for the projection's "
+            "%d-bit headroom (needs %d)",
+            m->name, MAX_H, h);
     }
     int32_t *map = q->q;
     const int sw = q->in_exp + 32 - h;
@@ -90,8 +89,7 @@ static int quantise_map(const tf_model *m, tf_q31 *q, char *err, size_t errlen)
     for (int i = 0; i < 9; ++i) {
         double v = rint(ldexp((double)m->coef[3 + i], sw));
         if (fabs(v) > 0x1p30) {
-            snprintf(err, errlen, "model '%s': no Q31 form: W entry %d out of range", m->name, i);
-            return -1;
+            return tf_fail(ctx, "model '%s': no Q31 form: W entry %d out of range", m->name, i);
         }
         map[3 + i] = (int32_t)v;
     }
@@ -130,18 +128,18 @@ static void quantise_rows(const tf_model *m, tf_q31 *q)
 /* A prony model's terms (q31-format.md §8): a_k = round(a 2^31) (exact for
  * a float a >= 1/2), D_k = round(D 2^30); -1 when a term is outside the
  * range whose bound §8 proves. */
-static int quantise_terms(const tf_model *m, int32_t *t, char *err, size_t errlen)
+static int quantise_terms(tf_ctx *ctx, const tf_model *m, int32_t *t)
 {
     const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS;
     for (uint32_t k = 0; k < m->dims[2]; ++k) {
         const double a = rint(ldexp((double)pt[2 * k], 31));
         const double d = rint(ldexp((double)pt[2 * k + 1], 30));
         if (!(a >= 0 && a <= TFIT_Q31_PRONY_A_MAX && fabs(d) <= 0x1p30)) {
-            snprintf(err, errlen,
-                     "model '%s': no Q31 form: term %u (a = %.9g, D = %.9g) outside 0 <= a <= 1 - "
-                     "2^-17, |D| <= 1",
-                     m->name, k, (double)pt[2 * k], (double)pt[2 * k + 1]);
-            return -1;
+            return tf_fail(
+                ctx,
+                "model '%s': no Q31 form: term %u (a = %.9g, D = %.9g) outside 0 <= a <= 1 - "
+                "2^-17, |D| <= 1",
+                m->name, k, (double)pt[2 * k], (double)pt[2 * k + 1]);
         }
         t[2 * k] = (int32_t)a;
         t[2 * k + 1] = (int32_t)d;
@@ -151,11 +149,10 @@ static int quantise_terms(const tf_model *m, int32_t *t, char *err, size_t errle
 
 /* The prony form: the static map's nodal form with K and the terms
  * inserted after the input map. */
-tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen)
+tf_q31 *tf_q31_quantise_prony(tf_ctx *ctx, const tf_model *m)
 {
     if (m->dims[1] != 0) {
-        snprintf(err, errlen, "model '%s': no Q31 form for a prony model with a modal static map",
-                 m->name);
+        tf_fail(ctx, "model '%s': no Q31 form for a prony model with a modal static map", m->name);
         return NULL;
     }
     const uint32_t terms = m->dims[2], extra = 1 + 2 * terms;
@@ -164,23 +161,23 @@ tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen)
     tf_model v = tf_stateful_static_view(m);
     float *coef = malloc(v.n_coef * sizeof *coef);
     if (coef == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     memcpy(coef, m->coef, TFIT_INPUT_MAP_FLOATS * sizeof *coef);
     memcpy(coef + TFIT_INPUT_MAP_FLOATS, v.coef + TFIT_INPUT_MAP_FLOATS,
            (v.n_coef - TFIT_INPUT_MAP_FLOATS) * sizeof *coef);
     v.coef = coef;
-    tf_q31 *q = tf_q31_quantise_rows(&v, err, errlen);
+    tf_q31 *q = tf_q31_quantise_rows(ctx, &v);
     free(coef);
     if (q == NULL) {
         return NULL;
     }
     q->node_ids = m->node_ids;
     int32_t *t = calloc(q->n_words + extra, sizeof *t);
-    if (t == NULL || quantise_terms(m, t + TFIT_Q31_MAP_WORDS + 1, err, errlen) != 0) {
+    if (t == NULL || quantise_terms(ctx, m, t + TFIT_Q31_MAP_WORDS + 1) != 0) {
         if (t == NULL) {
-            snprintf(err, errlen, "out of memory");
+            tf_fail(ctx, "out of memory");
         }
         free(t);
         tf_q31_free(q);
@@ -198,22 +195,22 @@ tf_q31 *tf_q31_quantise_prony(const tf_model *m, char *err, size_t errlen)
     return q;
 }
 
-tf_q31 *tf_q31_quantise(const tf_model *m, char *err, size_t errlen)
+tf_q31 *tf_q31_quantise(tf_ctx *ctx, const tf_model *m)
 {
     const tf_form *f = tf_form_of(m->family);
     if (f == NULL || f->q31 == NULL) {
-        snprintf(err, errlen, "model '%s': no Q31 form for family %d (its form has none)",
-                 m->name, (int)m->family);
+        tf_fail(ctx, "model '%s': no Q31 form for family %d (its form has none)", m->name,
+                (int)m->family);
         return NULL;
     }
-    return f->q31->quantise(m, err, errlen);
+    return f->q31->quantise(ctx, m);
 }
 
-tf_q31 *tf_q31_quantise_rows(const tf_model *m, char *err, size_t errlen)
+tf_q31 *tf_q31_quantise_rows(tf_ctx *ctx, const tf_model *m)
 {
     tf_q31 *q = calloc(1, sizeof *q);
     if (q == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     q->family = m->family;
@@ -223,9 +220,9 @@ tf_q31 *tf_q31_quantise_rows(const tf_model *m, char *err, size_t errlen)
     q->q = calloc(q->n_words, sizeof *q->q);
     q->node_ids = m->node_ids;
     q->added_error = q->float_error = NAN;
-    if (q->q == NULL || quantise_map(m, q, err, errlen) != 0) {
+    if (q->q == NULL || quantise_map(ctx, m, q) != 0) {
         if (q->q == NULL) {
-            snprintf(err, errlen, "out of memory");
+            tf_fail(ctx, "out of memory");
         }
         tf_q31_free(q);
         return NULL;

@@ -184,20 +184,18 @@ static int lm_alloc(lm *s)
     return 0;
 }
 
-static int check_problem(const tf_lm_problem *pb, char *err, size_t errlen)
+static int check_problem(tf_ctx *ctx, const tf_lm_problem *pb)
 {
     if (pb->n == 0 || pb->m == 0 || pb->residual == NULL || pb->m > (size_t)INT_MAX ||
         pb->n > (size_t)INT_MAX || pb->m * pb->n > (size_t)INT_MAX) {
-        snprintf(err, errlen, "bad least-squares problem (%zu residuals, %zu parameters)", pb->m,
-                 pb->n);
-        return -1;
+        return tf_fail(ctx, "bad least-squares problem (%zu residuals, %zu parameters)", pb->m,
+                       pb->n);
     }
     for (size_t j = 0; j < pb->n; ++j) {
         double lo = pb->lower != NULL ? pb->lower[j] : -INFINITY;
         double hi = pb->upper != NULL ? pb->upper[j] : INFINITY;
         if (isnan(lo) || isnan(hi) || lo > hi || lo == INFINITY || hi == -INFINITY) {
-            snprintf(err, errlen, "parameter %zu: bounds [%g, %g] hold no value", j, lo, hi);
-            return -1;
+            return tf_fail(ctx, "parameter %zu: bounds [%g, %g] hold no value", j, lo, hi);
         }
     }
     return 0;
@@ -563,16 +561,15 @@ static void final_jacobian(lm *s, tf_lm_result *res)
     }
 }
 
-int tf_lm_solve(const tf_lm_problem *pb, const tf_lm_options *opt, double *p, tf_lm_result *res,
-                char *err, size_t errlen)
+int tf_lm_solve(tf_ctx *ctx, const tf_lm_problem *pb, const tf_lm_options *opt, double *p,
+                tf_lm_result *res)
 {
-    if (check_problem(pb, err, errlen) != 0) {
+    if (check_problem(ctx, pb) != 0) {
         return -1;
     }
     lm s = {.pb = pb, .opt = opt, .m = pb->m, .n = pb->n};
     if (lm_alloc(&s) != 0) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t j = 0; j < s.n; ++j) {
         s.p[j] = tf_lm_box_clamp(p[j], lower(&s, j), upper(&s, j));

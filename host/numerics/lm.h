@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "numerics/lm_callbacks.h"
 
 /* Why a fit stopped.  tf_stop_converged() says which ones are success. */
@@ -91,9 +92,9 @@ typedef struct tf_lm_result {
 
 /* Runs LM from p (clamped into the box first) and leaves the best point
  * found in p.  Returns 0 when the solver ran (res->stop says how it ended,
- * converged or not), -1 with a message in err on bad arguments (sizes,
+ * converged or not), -1 with a message in ctx->err on bad arguments (sizes,
  * lower > upper, NaN bound) or no memory. */
-int tf_lm_solve(const tf_lm_problem *pb, const tf_lm_options *opt, double *p, tf_lm_result *res,
-                char *err, size_t errlen);
+int tf_lm_solve(tf_ctx *ctx, const tf_lm_problem *pb, const tf_lm_options *opt, double *p,
+                tf_lm_result *res);
 
 #endif /* TF_LM_H */

@@ -80,35 +80,34 @@ static void finish_statistics(tf_lsfit_result *res)
 /* ------------------------------------------------------------------------ */
 /* Linear: one factorisation, all data columns solved together. */
 
-static int fit_linear(const tf_lsfit_model *model, const tf_lsfit_data *data,
-                      const tf_lsfit_options *o, tf_lsfit_result *res, char *err, size_t errlen)
+static int fit_linear(tf_ctx *ctx, const tf_lsfit_model *model, const tf_lsfit_data *data,
+                      const tf_lsfit_options *o, tf_lsfit_result *res)
 {
     const size_t m = data->n_obs, n = model->n_par, k = data->n_rhs;
     double *a = malloc(m * n * sizeof *a);
     if (a == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     if (model->design(model->ctx, m, n, a, m) != 0) {
-        snprintf(err, errlen, "the design-matrix callback failed");
+        tf_fail(ctx, "the design-matrix callback failed");
         free(a);
         return -1;
     }
-    tf_lsq *f = tf_lsq_factor(m, n, a, m, data->weight, o->rank_tol, err, errlen);
+    tf_lsq *f = tf_lsq_factor(ctx, m, n, a, m, data->weight, o->rank_tol);
     free(a);
     if (f == NULL) {
         return -1;
     }
     if (result_alloc(res, n, k, m) != 0) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         tf_lsq_free(f);
         return -1;
     }
     size_t ldy = data->ldy != 0 ? data->ldy : m;
-    if (tf_lsq_solve(f, k, data->y, ldy, res->par, n, res->rss, err, errlen) != 0 ||
+    if (tf_lsq_solve(ctx, f, k, data->y, ldy, res->par, n, res->rss) != 0 ||
         tf_lsq_cov(f, res->cov) != 0) {
-        if (err[0] == '\0') {
-            snprintf(err, errlen, "out of memory");
+        if (ctx->err[0] == '\0') {
+            tf_fail(ctx, "out of memory");
         }
         tf_lsq_free(f);
         tf_lsfit_result_free(res);
@@ -167,8 +166,8 @@ static int nl_jacobian(void *ctx, const double *p, double *jac)
 }
 
 /* Covariance of the free parameters from the Jacobian columns in idx. */
-static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_lsfit_result *res,
-                           double rank_tol, char *err, size_t errlen)
+static int free_covariance(tf_ctx *ctx, const double *jac, const size_t *idx, size_t nf,
+                           tf_lsfit_result *res, double rank_tol)
 {
     const size_t m = res->n_obs, n = res->n_par;
     double *a = malloc(m * nf * sizeof *a), *c = malloc(nf * nf * sizeof *c);
@@ -177,9 +176,9 @@ static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_l
         for (size_t q = 0; q < nf; ++q) {
             memcpy(a + q * m, jac + idx[q] * m, m * sizeof *a);
         }
-        f = tf_lsq_factor(m, nf, a, m, NULL, rank_tol, err, errlen);
+        f = tf_lsq_factor(ctx, m, nf, a, m, NULL, rank_tol);
     } else {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
     }
     int rc = f != NULL && tf_lsq_cov(f, c) == 0 ? 0 : -1;
     if (rc == 0) {
@@ -193,7 +192,7 @@ static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_l
             }
         }
     } else if (f != NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
     }
     tf_lsq_free(f);
     free(a);
@@ -205,8 +204,8 @@ static int free_covariance(const double *jac, const size_t *idx, size_t nf, tf_l
  * parameters not held by a bound (a held parameter was not estimated, so
  * its column says nothing about its uncertainty).  Without a finite
  * Jacobian there (a fit that could not start) they are all NAN. */
-static int nonlinear_statistics(const double *jac, const signed char *active, tf_lsfit_result *res,
-                                double rank_tol, char *err, size_t errlen)
+static int nonlinear_statistics(tf_ctx *ctx, const double *jac, const signed char *active,
+                                tf_lsfit_result *res, double rank_tol)
 {
     const size_t m = res->n_obs, n = res->n_par;
     int finite = 1;
@@ -215,8 +214,7 @@ static int nonlinear_statistics(const double *jac, const signed char *active, tf
     }
     size_t nf = 0, *idx = malloc(n * sizeof *idx);
     if (idx == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t j = 0; j < n; ++j) {
         res->state[j] = active[j] < 0 ? TF_PAR_LOWER : active[j] > 0 ? TF_PAR_UPPER : TF_PAR_FREE;
@@ -231,7 +229,7 @@ static int nonlinear_statistics(const double *jac, const signed char *active, tf
             res->cov[i] = NAN;
         }
     } else if (nf > 0) {
-        rc = free_covariance(jac, idx, nf, res, rank_tol, err, errlen);
+        rc = free_covariance(ctx, jac, idx, nf, res, rank_tol);
     }
     free(idx);
     if (rc == 0) {
@@ -254,20 +252,18 @@ static double weighted_norm(const double *y, const double *sqrt_w, size_t m)
     return scale * sqrt(s);
 }
 
-static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
-                         const tf_lsfit_options *o, tf_lsfit_result *res, char *err, size_t errlen)
+static int fit_nonlinear(tf_ctx *ctx, const tf_lsfit_model *model, const tf_lsfit_data *data,
+                         const tf_lsfit_options *o, tf_lsfit_result *res)
 {
     const size_t m = data->n_obs, n = model->n_par;
     if (data->n_rhs != 1 || o->start == NULL) {
-        snprintf(err, errlen, "a nonlinear fit needs one data column and starting values");
-        return -1;
+        return tf_fail(ctx, "a nonlinear fit needs one data column and starting values");
     }
     for (size_t i = 0; i < m; ++i) {
         double w = data->weight != NULL ? data->weight[i] : 1.0;
         if (!isfinite(data->y[i]) || !isfinite(w) || !(w >= 0)) {
-            snprintf(err, errlen, "observation %zu: value %g, weight %g (need finite, weight >= 0)",
-                     i, data->y[i], w);
-            return -1;
+            return tf_fail(ctx, "observation %zu: value %g, weight %g (need finite, weight >= 0)",
+                           i, data->y[i], w);
         }
     }
     nl_ctx c = {model, data->y, NULL, m, n, 0};
@@ -276,7 +272,7 @@ static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
     c.sqrt_w = data->weight != NULL ? malloc(m * sizeof *c.sqrt_w) : NULL;
     if (jac == NULL || active == NULL || (data->weight != NULL && c.sqrt_w == NULL) ||
         result_alloc(res, n, 1, m) != 0) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         free(jac);
         free(active);
         free(c.sqrt_w);
@@ -289,9 +285,9 @@ static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
                         o->lower, o->upper, weighted_norm(data->y, c.sqrt_w, m)};
     tf_lm_result lr = {.jac = jac, .active = active};
     memcpy(res->par, o->start, n * sizeof *res->par);
-    int rc = tf_lm_solve(&pb, &o->lm, res->par, &lr, err, errlen);
+    int rc = tf_lm_solve(ctx, &pb, &o->lm, res->par, &lr);
     if (rc == 0 && c.failed) {
-        snprintf(err, errlen, "the model callback failed");
+        tf_fail(ctx, "the model callback failed");
         rc = -1;
     }
     if (rc == 0) {
@@ -301,7 +297,7 @@ static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
         res->evals = lr.evals;
         res->jac_evals = lr.jac_evals;
         double tol = model->jacobian != NULL ? o->rank_tol : fmax(o->rank_tol, FD_RANK_TOL);
-        rc = nonlinear_statistics(jac, active, res, tol, err, errlen);
+        rc = nonlinear_statistics(ctx, jac, active, res, tol);
     }
     free(jac);
     free(active);
@@ -312,20 +308,17 @@ static int fit_nonlinear(const tf_lsfit_model *model, const tf_lsfit_data *data,
     return rc;
 }
 
-int tf_lsfit(const tf_lsfit_model *model, const tf_lsfit_data *data, const tf_lsfit_options *opt,
-           tf_lsfit_result *res, char *err, size_t errlen)
+int tf_lsfit(tf_ctx *ctx, const tf_lsfit_model *model, const tf_lsfit_data *data,
+             const tf_lsfit_options *opt, tf_lsfit_result *res)
 {
     memset(res, 0, sizeof *res);
-    if (err != NULL && errlen > 0) {
-        err[0] = '\0';
-    }
+    ctx->err[0] = '\0'; /* fit_linear tells its own failures from tf_lsq_cov's by it */
     int linear = model->design != NULL, nonlinear = model->value != NULL;
     if (linear == nonlinear || model->n_par == 0 || data->n_obs == 0 || data->n_rhs == 0 ||
         data->y == NULL || (data->ldy != 0 && data->ldy < data->n_obs)) {
-        snprintf(err, errlen, "bad fit description (give exactly one of design or value, "
-                              "parameters, observations and data)");
-        return -1;
+        return tf_fail(ctx, "bad fit description (give exactly one of design or value, "
+                            "parameters, observations and data)");
     }
-    return linear ? fit_linear(model, data, opt, res, err, errlen)
-                  : fit_nonlinear(model, data, opt, res, err, errlen);
+    return linear ? fit_linear(ctx, model, data, opt, res)
+                  : fit_nonlinear(ctx, model, data, opt, res);
 }

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "numerics/lm.h"
 
 /* Linear models: fill the m x n design matrix, a[i + j*lda] = d f_i / d p_j
@@ -75,11 +76,11 @@ typedef struct tf_lsfit_result {
 } tf_lsfit_result;
 
 /* Fits model to data.  Returns 0 when a result was produced (for nonlinear
- * models check tf_stop_converged(res->stop)), or -1 with a message in err
+ * models check tf_stop_converged(res->stop)), or -1 with a message in ctx->err
  * (bad arguments, non-finite data, a callback that failed, no memory); res
  * then holds nothing to free.  Release a result with tf_lsfit_result_free(). */
-int tf_lsfit(const tf_lsfit_model *model, const tf_lsfit_data *data, const tf_lsfit_options *opt,
-           tf_lsfit_result *res, char *err, size_t errlen);
+int tf_lsfit(tf_ctx *ctx, const tf_lsfit_model *model, const tf_lsfit_data *data,
+             const tf_lsfit_options *opt, tf_lsfit_result *res);
 
 void tf_lsfit_result_free(tf_lsfit_result *res);
 

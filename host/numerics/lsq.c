@@ -44,13 +44,11 @@ void tf_lsq_free(tf_lsq *f)
 }
 
 /* Copies W^1/2 A into f->qr and scales its columns to unit norm. */
-static int load_scaled(tf_lsq *f, const double *a, size_t lda, const double *w, char *err,
-                       size_t errlen)
+static int load_scaled(tf_ctx *ctx, tf_lsq *f, const double *a, size_t lda, const double *w)
 {
     for (size_t i = 0; w != NULL && i < f->m; ++i) {
         if (!(w[i] >= 0) || !isfinite(w[i])) {
-            snprintf(err, errlen, "weight %zu is %g (weights must be finite and >= 0)", i, w[i]);
-            return -1;
+            return tf_fail(ctx, "weight %zu is %g (weights must be finite and >= 0)", i, w[i]);
         }
         f->sqrt_w[i] = sqrt(w[i]);
     }
@@ -59,8 +57,7 @@ static int load_scaled(tf_lsq *f, const double *a, size_t lda, const double *w, 
         for (size_t i = 0; i < f->m; ++i) {
             double v = a[i + j * lda];
             if (!isfinite(v)) {
-                snprintf(err, errlen, "design matrix entry (%zu, %zu) is %g", i, j, v);
-                return -1;
+                return tf_fail(ctx, "design matrix entry (%zu, %zu) is %g", i, j, v);
             }
             col[i] = w != NULL ? v * f->sqrt_w[i] : v;
         }
@@ -73,21 +70,21 @@ static int load_scaled(tf_lsq *f, const double *a, size_t lda, const double *w, 
     return 0;
 }
 
-tf_lsq *tf_lsq_factor(size_t m, size_t n, const double *a, size_t lda, const double *w,
-                      double rank_tol, char *err, size_t errlen)
+tf_lsq *tf_lsq_factor(tf_ctx *ctx, size_t m, size_t n, const double *a, size_t lda, const double *w,
+                      double rank_tol)
 {
     if (m == 0 || n == 0 || lda < m || !fits_lapack(m) || !fits_lapack(n) ||
         !fits_lapack(m * n)) {
-        snprintf(err, errlen, "bad least-squares size %zu x %zu (lda %zu)", m, n, lda);
+        tf_fail(ctx, "bad least-squares size %zu x %zu (lda %zu)", m, n, lda);
         return NULL;
     }
     if (!(rank_tol >= 0 && rank_tol < 1)) {
-        snprintf(err, errlen, "rank tolerance %g is not in [0, 1)", rank_tol);
+        tf_fail(ctx, "rank tolerance %g is not in [0, 1)", rank_tol);
         return NULL;
     }
     tf_lsq *f = calloc(1, sizeof *f);
     if (f == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     f->m = m;
@@ -100,18 +97,18 @@ tf_lsq *tf_lsq_factor(size_t m, size_t n, const double *a, size_t lda, const dou
     f->sqrt_w = w != NULL ? malloc(m * sizeof *f->sqrt_w) : NULL;
     if (f->qr == NULL || f->tau == NULL || f->scale == NULL || f->piv == NULL ||
         (w != NULL && f->sqrt_w == NULL)) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         tf_lsq_free(f);
         return NULL;
     }
-    if (load_scaled(f, a, lda, w, err, errlen) != 0) {
+    if (load_scaled(ctx, f, a, lda, w) != 0) {
         tf_lsq_free(f);
         return NULL;
     }
     lapack_int info = LAPACKE_dgeqp3(LAPACK_COL_MAJOR, (lapack_int)m, (lapack_int)n, f->qr,
                                      (lapack_int)m, f->piv, f->tau);
     if (info != 0) {
-        snprintf(err, errlen, "LAPACK dgeqp3 failed (info %d)", (int)info);
+        tf_fail(ctx, "LAPACK dgeqp3 failed (info %d)", (int)info);
         tf_lsq_free(f);
         return NULL;
     }
@@ -150,27 +147,25 @@ static void unpivot(const tf_lsq *f, const double *z, double *x)
     }
 }
 
-int tf_lsq_solve(const tf_lsq *f, size_t k, const double *y, size_t ldy, double *x, size_t ldx,
-                 double *rss, char *err, size_t errlen)
+int tf_lsq_solve(tf_ctx *ctx, const tf_lsq *f, size_t k, const double *y, size_t ldy, double *x,
+                 size_t ldx, double *rss)
 {
     const size_t m = f->m;
     if (k == 0) {
         return 0;
     }
     if (!fits_lapack(k) || !fits_lapack(m * k) || ldy < m || ldx < f->n) {
-        snprintf(err, errlen, "bad right-hand side size %zu (ldy %zu, ldx %zu)", k, ldy, ldx);
-        return -1;
+        return tf_fail(ctx, "bad right-hand side size %zu (ldy %zu, ldx %zu)", k, ldy, ldx);
     }
     double *c = malloc(m * k * sizeof *c);
     if (c == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t col = 0; col < k; ++col) {
         for (size_t i = 0; i < m; ++i) {
             double v = y[i + col * ldy];
             if (!isfinite(v)) {
-                snprintf(err, errlen, "data value (%zu, column %zu) is %g", i, col, v);
+                tf_fail(ctx, "data value (%zu, column %zu) is %g", i, col, v);
                 free(c);
                 return -1;
             }
@@ -186,7 +181,7 @@ int tf_lsq_solve(const tf_lsq *f, size_t k, const double *y, size_t ldy, double 
                               f->qr, (lapack_int)m, c, (lapack_int)m);
     }
     if (info != 0) {
-        snprintf(err, errlen, "LAPACK solve failed (info %d)", (int)info);
+        tf_fail(ctx, "LAPACK solve failed (info %d)", (int)info);
         free(c);
         return -1;
     }

@@ -16,14 +16,16 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
+
 typedef struct tf_lsq tf_lsq;
 
 /* Factors the m x n matrix A (column-major, a[i + j*lda]), each row i
  * multiplied by sqrt(w[i]) when w is not NULL (w[i] >= 0, finite).
  * m < n is allowed (the rank is then at most m).  Returns NULL with a
- * message in err on bad arguments, a non-finite entry or no memory. */
-tf_lsq *tf_lsq_factor(size_t m, size_t n, const double *a, size_t lda, const double *w,
-                      double rank_tol, char *err, size_t errlen);
+ * message in ctx->err on bad arguments, a non-finite entry or no memory. */
+tf_lsq *tf_lsq_factor(tf_ctx *ctx, size_t m, size_t n, const double *a, size_t lda, const double *w,
+                      double rank_tol);
 void tf_lsq_free(tf_lsq *f);
 
 /* Numerical rank found by the factorisation. */
@@ -36,8 +38,8 @@ int tf_lsq_dependent(const tf_lsq *f, size_t j);
  * y is m x k (y[i + c*ldy]), x is n x k (x[j + c*ldx]), rss (k entries, may
  * be NULL) receives each column's weighted residual sum of squares.
  * Returns 0, or -1 with a message (non-finite data, no memory). */
-int tf_lsq_solve(const tf_lsq *f, size_t k, const double *y, size_t ldy, double *x, size_t ldx,
-                 double *rss, char *err, size_t errlen);
+int tf_lsq_solve(tf_ctx *ctx, const tf_lsq *f, size_t k, const double *y, size_t ldy, double *x,
+                 size_t ldx, double *rss);
 
 /* The unscaled covariance (A^T W A)^-1 of the independent parameters, in
  * the original parameter order, into cov (n x n, column-major); rows and

@@ -80,13 +80,11 @@ static int jacobian(void *ctx, const double *q, double *jac)
     return 0;
 }
 
-int tf_mgh_fit(const tf_mgh_run *r, const tf_lm_options *o, const double *scale,
-               tf_mgh_score *s, char *err, size_t errlen)
+int tf_mgh_fit(tf_ctx *ctx, const tf_mgh_run *r, const tf_lm_options *o, const double *scale,
+               tf_mgh_score *s)
 {
     if (r->n < 1 || r->n > TF_MGH_MAX_N || r->m < r->n || r->m > TF_MGH_MAX_M) {
-        snprintf(err, errlen, "MGH problem %d: bad size n = %zu, m = %zu", r->problem, r->n,
-                 r->m);
-        return -1;
+        return tf_fail(ctx, "MGH problem %d: bad size n = %zu, m = %zu", r->problem, r->n, r->m);
     }
     scaled c = {.run = r, .scale = scale};
     double q[TF_MGH_MAX_N];
@@ -96,7 +94,7 @@ int tf_mgh_fit(const tf_mgh_run *r, const tf_lm_options *o, const double *scale,
     }
     tf_lm_problem pb = {r->m, r->n, residual, jacobian, &c, NULL, NULL, 0};
     tf_lm_result res = {0};
-    if (tf_lm_solve(&pb, o, q, &res, err, errlen) != 0) {
+    if (tf_lm_solve(ctx, &pb, o, q, &res) != 0) {
         return -1;
     }
     memset(s, 0, sizeof *s);

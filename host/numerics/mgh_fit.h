@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "numerics/lm.h"
 #include "numerics/mgh_problems.h"
 
@@ -38,7 +39,7 @@ void tf_mgh_describe(const tf_mgh_run *r, int minimum, char *buf, size_t len);
  * scale (n values, or NULL) the solver sees the parameters q = x / scale:
  * residual f(scale * q), Jacobian J diag(scale), start x0 / scale; the
  * score reports x = scale * q.  Returns 0, or -1 with a message. */
-int tf_mgh_fit(const tf_mgh_run *r, const tf_lm_options *o, const double *scale,
-               tf_mgh_score *s, char *err, size_t errlen);
+int tf_mgh_fit(tf_ctx *ctx, const tf_mgh_run *r, const tf_lm_options *o, const double *scale,
+               tf_mgh_score *s);
 
 #endif /* TF_MGH_FIT_H */

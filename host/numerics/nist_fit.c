@@ -39,31 +39,31 @@ double tf_nist_rss_resolution(const tf_nist *d, const tf_nist_model *model)
     return 2 * sqrt(d->certified_rss) * delta + delta * delta;
 }
 
-const tf_nist_model *tf_nist_match(const tf_nist *d, const char *path, char *err, size_t errlen)
+const tf_nist_model *tf_nist_match(tf_ctx *ctx, const tf_nist *d, const char *path)
 {
     const tf_nist_model *m = tf_nist_model_find(d->model);
     if (m == NULL) {
-        snprintf(err, errlen, "%s:%zu: unknown model '%s' (not one of the NIST StRD models)",
-                 path, d->model_line, d->model);
+        tf_fail(ctx, "%s:%zu: unknown model '%s' (not one of the NIST StRD models)", path,
+                d->model_line, d->model);
     } else if (m->n_par != d->n_par || m->n_x != d->n_x) {
-        snprintf(err, errlen,
-                 "%s:%zu: the model '%s' has %zu parameters and %zu predictors, the file %zu "
-                 "and %zu",
-                 path, d->model_line, d->model, m->n_par, m->n_x, d->n_par, d->n_x);
+        tf_fail(ctx,
+                "%s:%zu: the model '%s' has %zu parameters and %zu predictors, the file %zu "
+                "and %zu",
+                path, d->model_line, d->model, m->n_par, m->n_x, d->n_par, d->n_x);
         m = NULL;
     }
     return m;
 }
 
-int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_model **model,
-                 char *err, size_t errlen)
+int tf_nist_load(tf_ctx *ctx, const char *dir, const char *name, tf_nist *d,
+                 const tf_nist_model **model)
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s.dat", dir, name);
-    if (tf_nist_read(path, d, err, errlen) != 0) {
+    if (tf_nist_read(ctx, path, d) != 0) {
         return -1;
     }
-    *model = tf_nist_match(d, path, err, errlen);
+    *model = tf_nist_match(ctx, d, path);
     if (*model == NULL) {
         tf_nist_free(d);
         return -1;
@@ -127,17 +127,15 @@ static void score(const tf_nist *d, const tf_lsfit_result *r, tf_nist_score *s)
     s->jac_evals = r->jac_evals;
 }
 
-int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_lsfit_options *o,
-                int finite_diff, tf_nist_score *s, char *err, size_t errlen)
+int tf_nist_fit(tf_ctx *ctx, const tf_nist *d, const tf_nist_model *model, int start,
+                const tf_lsfit_options *o, int finite_diff, tf_nist_score *s)
 {
     if (start != 1 && start != 2) {
-        snprintf(err, errlen, "start must be 1 or 2, not %d", start);
-        return -1;
+        return tf_fail(ctx, "start must be 1 or 2, not %d", start);
     }
     double *y = malloc(d->n_obs * sizeof *y);
     if (y == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t i = 0; i < d->n_obs; ++i) {
         y[i] = response(model, d->y[i]);
@@ -149,7 +147,7 @@ int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const t
     tf_lsfit_options opt = *o;
     opt.start = d->start[start - 1];
     tf_lsfit_result r;
-    int rc = tf_lsfit(&fm, &data, &opt, &r, err, errlen);
+    int rc = tf_lsfit(ctx, &fm, &data, &opt, &r);
     free(y);
     if (rc != 0) {
         return -1;

@@ -7,6 +7,7 @@
 #ifndef TF_NIST_FIT_H
 #define TF_NIST_FIT_H
 
+#include "base/context.h"
 #include "numerics/lsfit.h"
 #include "numerics/nist_models.h"
 #include "numerics/nist_strd.h"
@@ -35,13 +36,13 @@ double tf_nist_rss_resolution(const tf_nist *d, const tf_nist_model *model);
 /* LRE of estimate against certified, in [0, TF_LRE_CAP]; 0 when not finite. */
 double tf_lre(double estimate, double certified);
 
-/* The model for d's text; NULL with "PATH:LINE: ..." in err when unknown or
+/* The model for d's text; NULL with "PATH:LINE: ..." in ctx->err when unknown or
  * when the file's parameter or predictor count disagrees with it. */
-const tf_nist_model *tf_nist_match(const tf_nist *d, const char *path, char *err, size_t errlen);
+const tf_nist_model *tf_nist_match(tf_ctx *ctx, const tf_nist *d, const char *path);
 
 /* Reads DIR/NAME.dat and matches its model: 0, or -1 with a message. */
-int tf_nist_load(const char *dir, const char *name, tf_nist *d, const tf_nist_model **model,
-                 char *err, size_t errlen);
+int tf_nist_load(tf_ctx *ctx, const char *dir, const char *name, tf_nist *d,
+                 const tf_nist_model **model);
 
 /* Tolerances of the certification runs (docs/lm.md): ftol = xtol = 1e-15,
  * gtol = 0, 10000 evaluations. */
@@ -49,7 +50,7 @@ void tf_nist_options(tf_lsfit_options *o, size_t n_par);
 
 /* Fits d with model from start 1 or 2 using o (analytic Jacobian unless
  * finite_diff).  Returns 0 with the score, -1 with a message. */
-int tf_nist_fit(const tf_nist *d, const tf_nist_model *model, int start, const tf_lsfit_options *o,
-                int finite_diff, tf_nist_score *s, char *err, size_t errlen);
+int tf_nist_fit(tf_ctx *ctx, const tf_nist *d, const tf_nist_model *model, int start,
+                const tf_lsfit_options *o, int finite_diff, tf_nist_score *s);
 
 #endif /* TF_NIST_FIT_H */

@@ -23,8 +23,7 @@ typedef struct reader {
     char *text;    /* the file, NUL-terminated lines in place */
     char **line;   /* line[1..n] */
     size_t n;
-    char *err;
-    size_t errlen;
+    tf_ctx *ctx; /* where a failure's message goes */
 } reader;
 
 static int fail(reader *rd, size_t line, const char *fmt, ...)
@@ -38,9 +37,9 @@ static int fail(reader *rd, size_t line, const char *fmt, ...)
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     if (line > 0) {
-        snprintf(rd->err, rd->errlen, "%s:%zu: %s", rd->path, line, msg);
+        tf_fail(rd->ctx, "%s:%zu: %s", rd->path, line, msg);
     } else {
-        snprintf(rd->err, rd->errlen, "%s: %s", rd->path, msg);
+        tf_fail(rd->ctx, "%s: %s", rd->path, msg);
     }
     return -1;
 }
@@ -359,10 +358,10 @@ void tf_nist_free(tf_nist *d)
     d->y = d->x = NULL;
 }
 
-int tf_nist_read(const char *path, tf_nist *d, char *err, size_t errlen)
+int tf_nist_read(tf_ctx *ctx, const char *path, tf_nist *d)
 {
     memset(d, 0, sizeof *d);
-    reader rd = {.path = path, .err = err, .errlen = errlen};
+    reader rd = {.path = path, .ctx = ctx};
     size_t n_par = 0, n_obs_header = 0, n_obs_cert = 0;
     int rc = load_lines(&rd);
     rc = rc != 0 ? rc : read_name(&rd, d);

@@ -10,6 +10,8 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
+
 #define TF_NIST_MAX_PAR 16
 #define TF_NIST_MAX_X 4
 
@@ -27,9 +29,9 @@ typedef struct tf_nist {
     double *x;                  /* n_obs * n_x predictors, x[i * n_x + k] */
 } tf_nist;
 
-/* Reads path into d.  Returns 0, or -1 with "PATH:LINE: what" in err (or
+/* Reads path into d.  Returns 0, or -1 with "PATH:LINE: what" in ctx->err (or
  * "PATH: what" when no line applies); d then holds nothing to free. */
-int tf_nist_read(const char *path, tf_nist *d, char *err, size_t errlen);
+int tf_nist_read(tf_ctx *ctx, const char *path, tf_nist *d);
 void tf_nist_free(tf_nist *d);
 
 #endif /* TF_NIST_STRD_H */

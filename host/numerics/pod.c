@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int tf_pod_compute(const double *data, int m, int n, tf_pod *pod, char *err, size_t errlen)
+int tf_pod_compute(tf_ctx *ctx, const double *data, int m, int n, tf_pod *pod)
 {
     int k = m < n ? m : n;
     double *a = malloc((size_t)m * n * sizeof *a);
@@ -23,8 +23,7 @@ int tf_pod_compute(const double *data, int m, int n, tf_pod *pod, char *err, siz
         free(a);
         free(vt);
         tf_pod_free(pod);
-        snprintf(err, errlen, "POD: out of memory for a %d x %d data matrix", m, n);
-        return -1;
+        return tf_fail(ctx, "POD: out of memory for a %d x %d data matrix", m, n);
     }
     memcpy(a, data, (size_t)m * n * sizeof *a);
     lapack_int info = LAPACKE_dgesdd(LAPACK_COL_MAJOR, 'S', m, n, a, m, pod->sigma, pod->modes, m,
@@ -33,8 +32,7 @@ int tf_pod_compute(const double *data, int m, int n, tf_pod *pod, char *err, siz
     free(vt);
     if (info != 0) {
         tf_pod_free(pod);
-        snprintf(err, errlen, "POD: LAPACK dgesdd failed (info %d)", (int)info);
-        return -1;
+        return tf_fail(ctx, "POD: LAPACK dgesdd failed (info %d)", (int)info);
     }
     return 0;
 }

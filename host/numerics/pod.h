@@ -9,6 +9,8 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
+
 typedef struct tf_pod {
     int m, n, k;   /* data rows, columns, k = min(m, n) */
     double *modes; /* m x k, column-major, orthonormal columns (left singular vectors) */
@@ -17,7 +19,7 @@ typedef struct tf_pod {
 
 /* Decomposes data (m x n, column-major, not modified).  Returns 0, or -1
  * with a message when LAPACK fails or memory runs out. */
-int tf_pod_compute(const double *data, int m, int n, tf_pod *pod, char *err, size_t errlen);
+int tf_pod_compute(tf_ctx *ctx, const double *data, int m, int n, tf_pod *pod);
 
 void tf_pod_free(tf_pod *pod);
 

@@ -114,9 +114,10 @@ int tf_report_grid_cells(const tf_cloud *c, const tf_cut *cuts, size_t n_cuts, s
 {
     size_t all = (size_t)(c->grid[0] - 1) * (c->grid[1] - 1) * (c->grid[2] - 1);
     tf_cut_set set;
-    char err[128];
+    tf_ctx scratch; /* the only failure here is out of memory, reported as -1 */
+    tf_ctx_init(&scratch);
     *conn = malloc(8 * all * sizeof **conn);
-    if (*conn == NULL || tf_cut_set_build(&set, cuts, n_cuts, err, sizeof err) != 0) {
+    if (*conn == NULL || tf_cut_set_build(&scratch, &set, cuts, n_cuts) != 0) {
         free(*conn);
         *conn = NULL;
         return -1;

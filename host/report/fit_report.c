@@ -90,11 +90,11 @@ static void data_block(FILE *gp, const char *name, const double *x, const double
 
 /* Left: the CV error by degree of every family that searched a degree;
  * right: the CV and held-out errors by rank of every family with a rank. */
-static int cv_plot(const char *path, const tf_fit_outcome *o, char *err, size_t errlen)
+static int cv_plot(tf_ctx *ctx, const char *path, const tf_fit_outcome *o)
 {
     static const int point[] = {7, 5, 9, 11, 13};
     tf_plot p;
-    if (tf_plot_open(&p, path, 1000, 420, err, errlen) != 0) {
+    if (tf_plot_open(ctx, &p, path, 1000, 420) != 0) {
         return -1;
     }
     double deg[TFIT_MAX_DEGREE + 1], rank[TF_FAMILY_MAX_RANK + 1];
@@ -144,16 +144,16 @@ static int cv_plot(const char *path, const tf_fit_outcome *o, char *err, size_t 
         }
     }
     fprintf(p.gp, "%s0.010 w l dt 2 t '10 um'\nunset multiplot\n", sep);
-    return tf_plot_close(&p, err, errlen);
+    return tf_plot_close(ctx, &p);
 }
 
 /* 3 x 3 panels: mean deviation (model - solve) of each component under a
  * force along each axis, over the output points seen from above. */
-static int error_map(const char *path, const tf_fitdata *d, const tf_family_result *ff,
-                     const char *family, char *err, size_t errlen)
+static int error_map(tf_ctx *ctx, const char *path, const tf_fitdata *d, const tf_family_result *ff,
+                     const char *family)
 {
     tf_plot p;
-    if (tf_plot_open(&p, path, 1200, 1100, err, errlen) != 0) {
+    if (tf_plot_open(ctx, &p, path, 1200, 1100) != 0) {
         return -1;
     }
     fprintf(p.gp, "set multiplot layout 3,3 title '%s: mean deviation from the solve (mm), "
@@ -178,7 +178,7 @@ static int error_map(const char *path, const tf_fitdata *d, const tf_family_resu
         }
     }
     fprintf(p.gp, "unset multiplot\n");
-    return tf_plot_close(&p, err, errlen);
+    return tf_plot_close(ctx, &p);
 }
 
 /* The rank table of a family with a rank (modal). */
@@ -359,14 +359,13 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
     }
 }
 
-int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
-                  const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *o,
-                  char *err, size_t errlen)
+int tf_report_fit(tf_ctx *ctx, const char *dir, const char *header, const tf_problem *s,
+                  const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *o)
 {
     char name[256], path[4096];
     stem(header, name, sizeof name);
     snprintf(path, sizeof path, "%s/%s_cv.png", dir, name);
-    if (cv_plot(path, o, err, errlen) != 0) {
+    if (cv_plot(ctx, path, o) != 0) {
         return -1;
     }
     for (size_t i = 0; i < o->n_families; ++i) {
@@ -375,13 +374,13 @@ int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
             continue;
         }
         snprintf(path, sizeof path, "%s/%s_errors_%s.png", dir, name, r->family->name);
-        if (error_map(path, &o->cases.train, r, r->family->name, err, errlen) != 0) {
+        if (error_map(ctx, path, &o->cases.train, r, r->family->name) != 0) {
             return -1;
         }
     }
     tf_afile md;
     snprintf(path, sizeof path, "%s/%s.md", dir, name);
-    if (tf_afile_open(&md, path, err, errlen) != 0) {
+    if (tf_afile_open(ctx, &md, path) != 0) {
         return -1;
     }
     write_md(md.fp, name, header, s, solver, plan, o);
@@ -390,11 +389,11 @@ int tf_report_fit(const char *dir, const char *header, const tf_problem *s,
         char png[512];
         snprintf(png, sizeof png, "%s_history.png", name);
         snprintf(path, sizeof path, "%s/%s", dir, png);
-        if (tf_report_histories(md.fp, path, png, em->model, &o->hist,
-                                em->model->family == TFIT_FAMILY_RESONANT, err, errlen) != 0) {
+        if (tf_report_histories(ctx, md.fp, path, png, em->model, &o->hist,
+                                em->model->family == TFIT_FAMILY_RESONANT) != 0) {
             tf_afile_abort(&md);
             return -1;
         }
     }
-    return tf_afile_commit(&md, err, errlen);
+    return tf_afile_commit(ctx, &md);
 }

@@ -23,13 +23,13 @@ static void step_through(const tf_model *m, const tf_history_set *s, size_t i, f
     }
 }
 
-static int plot_history(const char *path, const tf_model *m, const tf_histories *h, size_t i,
-                        const float *out, size_t row, char *err, size_t errlen)
+static int plot_history(tf_ctx *ctx, const char *path, const tf_model *m, const tf_histories *h,
+                        size_t i, const float *out, size_t row)
 {
     const tf_history_set *s = &h->heldout;
     const size_t rows = 3 * (size_t)m->n_out;
     tf_plot p;
-    if (tf_plot_open(&p, path, 1000, 560, err, errlen) != 0) {
+    if (tf_plot_open(ctx, &p, path, 1000, 560) != 0) {
         return -1;
     }
     fprintf(p.gp, "$u << EOD\n");
@@ -49,18 +49,17 @@ static int plot_history(const char *path, const tf_model *m, const tf_histories 
             "plot $u u 1:4 w l t 'x', $u u 1:5 w l t 'y', $u u 1:6 w l t 'z'\n"
             "unset multiplot\n",
             i, m->node_ids[row / 3], "xyz"[row % 3]);
-    return tf_plot_close(&p, err, errlen);
+    return tf_plot_close(ctx, &p);
 }
 
-int tf_report_histories(FILE *f, const char *png_path, const char *png_name, const tf_model *m,
-                        const tf_histories *h, int dynamic, char *err, size_t errlen)
+int tf_report_histories(tf_ctx *ctx, FILE *f, const char *png_path, const char *png_name,
+                        const tf_model *m, const tf_histories *h, int dynamic)
 {
     const tf_history_set *s = &h->heldout;
     const size_t rows = 3 * (size_t)m->n_out;
     float *out = malloc(s->n_ticks * rows * sizeof *out);
     if (out == NULL) {
-        snprintf(err, errlen, "report: out of memory for a history");
-        return -1;
+        return tf_fail(ctx, "report: out of memory for a history");
     }
     fprintf(f, "\n## Held-out force histories\n\nThe float32 model stepped from rest through "
                "each held-out history (never fitted) at its %u ns tick, against the solve: the "
@@ -96,7 +95,7 @@ int tf_report_histories(FILE *f, const char *png_path, const char *png_name, con
         }
     }
     step_through(m, s, show, out);
-    const int rc = plot_history(png_path, m, h, show, out, show_row, err, errlen);
+    const int rc = plot_history(ctx, png_path, m, h, show, out, show_row);
     free(out);
     if (rc == 0) {
         fprintf(f, "\n![held-out history %zu](%s)\n", show, png_name);

@@ -10,6 +10,7 @@
 
 #include <stdio.h>
 
+#include "base/context.h"
 #include "fitting/histories.h"
 #include "model/model.h"
 
@@ -17,7 +18,7 @@
  * and the plot at png_path; kinds: the dynamic design's held-out kinds are
  * named (strike, smooth random) when dynamic != 0.  Returns 0, or -1 with
  * a message (no memory, gnuplot failed). */
-int tf_report_histories(FILE *f, const char *png_path, const char *png_name, const tf_model *m,
-                        const tf_histories *h, int dynamic, char *err, size_t errlen);
+int tf_report_histories(tf_ctx *ctx, FILE *f, const char *png_path, const char *png_name,
+                        const tf_model *m, const tf_histories *h, int dynamic);
 
 #endif /* TF_HISTORY_REPORT_H */

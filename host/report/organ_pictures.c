@@ -49,8 +49,8 @@ static void base(const tf_problem *p, const tf_report_organ_view *v, tf_report_r
     camera_for(p, v, r);
 }
 
-int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_report_organ_view *v, char *err,
-                      size_t errlen)
+int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
+                             const tf_report_organ_view *v)
 {
     tf_report_render r;
     char title[512];
@@ -60,8 +60,7 @@ int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_rep
     if (value == NULL || fixed == NULL) {
         free(fixed);
         free(value);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t k = 0; k < p->n_fixed; ++k) {
         for (size_t q = 0; q < p->fixed[k].n_nodes; ++q) {
@@ -95,14 +94,14 @@ int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_rep
                 "1.5 '#d83020', 2 '#d83020')";
     r.cblabel = NULL;
     r.title = title;
-    int rc = tf_report_render_png(path, &r, err, errlen);
+    int rc = tf_report_render_png(ctx, path, &r);
     free(value);
     return rc;
 }
 
-int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
-                          const double force[3], const tf_report_organ_view *v, char *err,
-                          size_t errlen)
+int tf_report_organ_deformed_png(tf_ctx *ctx, const char *path, const tf_problem *p,
+                                 const double *u, const double force[3],
+                                 const tf_report_organ_view *v)
 {
     tf_report_render r;
     char title[512];
@@ -111,8 +110,7 @@ int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const do
     if (value == NULL || drawn == NULL) {
         free(value);
         free(drawn);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     double top = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -140,7 +138,7 @@ int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const do
     r.palette = "defined (0 '#e0b890', 0.35 '#f0a040', 0.7 '#d83020', 1 '#601010')";
     r.cblabel = "|u| (mm)";
     r.title = title;
-    int rc = tf_report_render_png(path, &r, err, errlen);
+    int rc = tf_report_render_png(ctx, path, &r);
     free(value);
     free(drawn);
     return rc;

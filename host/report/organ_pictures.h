@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "problem/problem.h"
 
 typedef struct tf_report_organ_view {
@@ -20,13 +21,13 @@ typedef struct tf_report_organ_view {
 } tf_report_organ_view;
 
 /* The rest surface: tissue, fixed nodes (blue) and contact patches (red). */
-int tf_report_organ_rest_png(const char *path, const tf_problem *p, const tf_report_organ_view *v, char *err,
-                      size_t errlen);
+int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
+                             const tf_report_organ_view *v);
 
 /* The surface moved by u (3 per node), coloured by |u|; force is what
  * caused it (N, for the title). */
-int tf_report_organ_deformed_png(const char *path, const tf_problem *p, const double *u,
-                          const double force[3], const tf_report_organ_view *v, char *err,
-                          size_t errlen);
+int tf_report_organ_deformed_png(tf_ctx *ctx, const char *path, const tf_problem *p,
+                                 const double *u, const double force[3],
+                                 const tf_report_organ_view *v);
 
 #endif /* TF_ORGAN_PICTURES_H */

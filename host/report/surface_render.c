@@ -100,7 +100,7 @@ static void settings(FILE *gp, const tf_report_render *r)
     fputs("'\n", gp);
 }
 
-int tf_report_render_png(const char *path, const tf_report_render *r, char *err, size_t errlen)
+int tf_report_render_png(tf_ctx *ctx, const char *path, const tf_report_render *r)
 {
     double basis[3][3];
     camera(r, basis[0], basis[1], basis[2]);
@@ -108,11 +108,10 @@ int tf_report_render_png(const char *path, const tf_report_render *r, char *err,
     facet *f = order(r, basis, &n);
     if (f == NULL || n == 0) {
         free(f);
-        snprintf(err, errlen, "%s: %s", path, f ? "no facet faces the camera" : "out of memory");
-        return -1;
+        return tf_fail(ctx, "%s: %s", path, f ? "no facet faces the camera" : "out of memory");
     }
     tf_plot p;
-    if (tf_plot_open(&p, path, r->width, r->height, err, errlen) != 0) {
+    if (tf_plot_open(ctx, &p, path, r->width, r->height) != 0) {
         free(f);
         return -1;
     }
@@ -132,5 +131,5 @@ int tf_report_render_png(const char *path, const tf_report_render *r, char *err,
     }
     fprintf(p.gp, "e\n");
     free(f);
-    return tf_plot_close(&p, err, errlen);
+    return tf_plot_close(ctx, &p);
 }

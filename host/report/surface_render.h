@@ -19,6 +19,8 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
+
 typedef struct tf_report_render {
     const double *xyz;     /* node coordinates, mm */
     const double *u;       /* displacements (3 per node) added to xyz, or NULL */
@@ -38,6 +40,6 @@ typedef struct tf_report_render {
 
 /* Writes the PNG (temporary file renamed on success).  Returns 0, or -1
  * with a message. */
-int tf_report_render_png(const char *path, const tf_report_render *r, char *err, size_t errlen);
+int tf_report_render_png(tf_ctx *ctx, const char *path, const tf_report_render *r);
 
 #endif /* TF_SURFACE_RENDER_H */

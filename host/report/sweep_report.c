@@ -39,14 +39,14 @@ int tf_report_sweep_csv_write(const tf_sweep *sw, FILE *fp)
     return fflush(fp) != 0 || ferror(fp) ? -1 : 0;
 }
 
-int tf_report_sweep_csv(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_csv(tf_ctx *ctx, const tf_sweep *sw, const char *path)
 {
     tf_afile f;
-    if (tf_afile_open(&f, path, err, errlen) != 0) {
+    if (tf_afile_open(ctx, &f, path) != 0) {
         return -1;
     }
     tf_report_sweep_csv_write(sw, f.fp);
-    return tf_afile_commit(&f, err, errlen);
+    return tf_afile_commit(ctx, &f);
 }
 
 static void number(FILE *f, double v, const char *fmt)
@@ -58,11 +58,10 @@ static void number(FILE *f, double v, const char *fmt)
     }
 }
 
-int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char *path, char *err,
-                             size_t errlen)
+int tf_report_sweep_markdown(tf_ctx *ctx, const tf_sweep *sw, const tf_problem *p, const char *path)
 {
     tf_afile f;
-    if (tf_afile_open(&f, path, err, errlen) != 0) {
+    if (tf_afile_open(ctx, &f, path) != 0) {
         return -1;
     }
     fprintf(f.fp,
@@ -100,7 +99,7 @@ int tf_report_sweep_markdown(const tf_sweep *sw, const tf_problem *p, const char
         fprintf(f.fp, " | %.3g %s | %.3g %s | %s |\n", c->heldout_max, unit(c), c->heldout_rms,
                 unit(c), c->pareto ? "★" : "");
     }
-    return tf_afile_commit(&f, err, errlen);
+    return tf_afile_commit(ctx, &f);
 }
 
 /* A plotted series: the forward family at registry position fam in one
@@ -121,14 +120,14 @@ static int series_present(const tf_sweep *sw, size_t fam, int prec)
     return 0;
 }
 
-int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t errlen)
+int tf_report_sweep_plot(tf_ctx *ctx, const tf_sweep *sw, const char *path)
 {
     static const char *const colour[] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
                                          "#e377c2"};
     static const int point[] = {7, 5, 9};
     const size_t n_fam = tf_family_count(), n_colour = sizeof colour / sizeof colour[0];
     tf_plot p;
-    if (tf_plot_open(&p, path, 1000, 700, err, errlen) != 0) {
+    if (tf_plot_open(ctx, &p, path, 1000, 700) != 0) {
         return -1;
     }
     fprintf(p.gp,
@@ -189,5 +188,5 @@ int tf_report_sweep_plot(const tf_sweep *sw, const char *path, char *err, size_t
         fprintf(p.gp, "%g %g\n", SEED_NS, SEED_MM);
     }
     fprintf(p.gp, "e\n");
-    return tf_plot_close(&p, err, errlen);
+    return tf_plot_close(ctx, &p);
 }

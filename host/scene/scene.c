@@ -55,24 +55,24 @@ static int covers(const char *a, const char *b)
     return strncmp(a, b, m) == 0 && (la == lb || (la < lb ? b[la] : a[lb]) == '.');
 }
 
-static void report(const cyaml_schema_value_t *root, const char *text, size_t len,
+static void report(tf_ctx *ctx, const cyaml_schema_value_t *root, const char *text, size_t len,
                    const char *name, const char *const *sets, const char (*set_paths)[128],
-                   size_t n_sets, const sd_issue *is, char *err, size_t errlen)
+                   size_t n_sets, const sd_issue *is)
 {
     const char *sep = is->path[0] ? ": " : "";
     char buf[128];
     for (size_t k = n_sets; k-- > 0;) {
         if (is->path[0] && covers(set_paths[k], is->path)) {
-            snprintf(err, errlen, "--set %s: %s%s%s", shown_set(sets[k], buf, sizeof buf),
-                     is->path, sep, is->msg);
+            tf_fail(ctx, "--set %s: %s%s%s", shown_set(sets[k], buf, sizeof buf), is->path, sep,
+                    is->msg);
             return;
         }
     }
     int line = is->path[0] ? sd_locate(root, text, len, is->path) : 0;
     if (line > 0) {
-        snprintf(err, errlen, "%s:%d: %s%s%s", name, line, is->path, sep, is->msg);
+        tf_fail(ctx, "%s:%d: %s%s%s", name, line, is->path, sep, is->msg);
     } else {
-        snprintf(err, errlen, "%s: %s%s%s", name, is->path, sep, is->msg);
+        tf_fail(ctx, "%s: %s%s%s", name, is->path, sep, is->msg);
     }
 }
 
@@ -127,20 +127,21 @@ static void node_number_warnings(const sd_scene *doc, const char (*set_paths)[12
     }
 }
 
-tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
-                             const char *const *sets, size_t n_sets, char *err, size_t errlen)
+tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const char *name,
+                             const char *const *sets, size_t n_sets)
 {
     sd_schema schema;
     if (sd_schema_init(&schema) != 0) {
-        snprintf(err, errlen, "%s: the material laws have more parameter keys than a scene holds "
-                              "(SD_MATERIAL_KEYS)", name);
+        tf_fail(ctx,
+                "%s: the material laws have more parameter keys than a scene holds "
+                "(SD_MATERIAL_KEYS)",
+                name);
         return NULL;
     }
     const cyaml_schema_value_t *root = &schema.root;
     sd_strict_issue si;
     if (sd_strict_check(text, len, root, "", &si) != 0) {
-        snprintf(err, errlen, "%s:%d: %s%s%s", name, si.line, si.path, si.path[0] ? ": " : "",
-                 si.msg);
+        tf_fail(ctx, "%s:%d: %s%s%s", name, si.line, si.path, si.path[0] ? ": " : "", si.msg);
         return NULL;
     }
     sd_log log = {.len = 0};
@@ -150,21 +151,21 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         int line;
         char path[128], msg[256];
         sd_explain(root, text, len, &log, "", &line, path, sizeof path, msg, sizeof msg);
-        snprintf(err, errlen, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", msg);
+        tf_fail(ctx, "%s:%d: %s%s%s", name, line, path, path[0] ? ": " : "", msg);
         return NULL;
     }
     if (doc == NULL) {
-        snprintf(err, errlen, "%s: empty scene file", name);
+        tf_fail(ctx, "%s: empty scene file", name);
         return NULL;
     }
     char (*set_paths)[128] = calloc(n_sets + 1, sizeof *set_paths);
     tf_scene *s = calloc(1, sizeof *s);
     int ok = set_paths && s;
     for (size_t k = 0; ok && k < n_sets; ++k) {
-        char msg[512], buf[128];
-        if (sd_set(root, doc, sets[k], set_paths[k], sizeof set_paths[k], msg, sizeof msg) != 0) {
-            snprintf(err, errlen, "--set %s: %s: %s", shown_set(sets[k], buf, sizeof buf),
-                     set_paths[k], msg);
+        char buf[128];
+        if (sd_set(ctx, root, doc, sets[k], set_paths[k], sizeof set_paths[k]) != 0) {
+            tf_fail(ctx, "--set %s: %s: %s", shown_set(sets[k], buf, sizeof buf), set_paths[k],
+                    ctx->err);
             ok = 0;
         }
     }
@@ -174,14 +175,13 @@ tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
         snprintf(p->source, sizeof p->source, "%s", name);
         stem(name, p->name, sizeof p->name);
         if (sd_build(doc, p, &s->fit, &is) != 0) {
-            report(root, text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is, err,
-                   errlen);
+            report(ctx, root, text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is);
             ok = 0;
         } else {
             node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
         }
     } else if (!set_paths || !s) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
     }
     free(set_paths);
     sd_scene_free(root, doc);
@@ -207,26 +207,26 @@ void tf_scene_key_values(const char *path, char *out, size_t outlen)
  * block (it is opened without waiting for a writer, then refused), a device
  * such as /dev/zero would be read until memory runs out.  Returns the text
  * (NUL-terminated, *len bytes), or NULL with a message. */
-static char *read_scene(const char *path, size_t *len, char *err, size_t errlen)
+static char *read_scene(tf_ctx *ctx, const char *path, size_t *len)
 {
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st;
     if (fd < 0 || fstat(fd, &st) != 0) {
-        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        tf_fail(ctx, "%s: cannot open: %s", path, strerror(errno));
         if (fd >= 0) {
             close(fd);
         }
         return NULL;
     }
     if (!S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "%s: not a regular file (a scene is read from a file, not a %s)",
-                 path, S_ISDIR(st.st_mode) ? "directory" : "device, FIFO or socket");
+        tf_fail(ctx, "%s: not a regular file (a scene is read from a file, not a %s)", path,
+                S_ISDIR(st.st_mode) ? "directory" : "device, FIFO or socket");
         close(fd);
         return NULL;
     }
     if (st.st_size > TF_SCENE_MAX_BYTES) {
-        snprintf(err, errlen, "%s: %lld bytes, more than the %d MiB a scene file may hold", path,
-                 (long long)st.st_size, TF_SCENE_MAX_BYTES >> 20);
+        tf_fail(ctx, "%s: %lld bytes, more than the %d MiB a scene file may hold", path,
+                (long long)st.st_size, TF_SCENE_MAX_BYTES >> 20);
         close(fd);
         return NULL;
     }
@@ -244,8 +244,10 @@ static char *read_scene(const char *path, size_t *len, char *err, size_t errlen)
     int saved = errno;
     close(fd);
     if (text == NULL || n < 0 || used == cap) {
-        snprintf(err, errlen, "%s: cannot read: %s", path,
-                 text == NULL ? "out of memory" : n < 0 ? strerror(saved) : "it changed while read");
+        tf_fail(ctx, "%s: cannot read: %s", path,
+                text == NULL ? "out of memory"
+                : n < 0      ? strerror(saved)
+                             : "it changed while read");
         free(text);
         return NULL;
     }
@@ -254,15 +256,14 @@ static char *read_scene(const char *path, size_t *len, char *err, size_t errlen)
     return text;
 }
 
-tf_scene *tf_scene_load(const char *path, const char *const *sets, size_t n_sets, char *err,
-                        size_t errlen)
+tf_scene *tf_scene_load(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets)
 {
     size_t len = 0;
-    char *text = read_scene(path, &len, err, errlen);
+    char *text = read_scene(ctx, path, &len);
     if (text == NULL) {
         return NULL;
     }
-    tf_scene *s = tf_scene_load_text(text, len, path, sets, n_sets, err, errlen);
+    tf_scene *s = tf_scene_load_text(ctx, text, len, path, sets, n_sets);
     free(text);
     return s;
 }

@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "fitting/plan.h"
 #include "problem/problem.h"
 
@@ -31,13 +32,12 @@ typedef struct tf_scene {
 /* Reads a scene file, applies the overrides ("key=value", e.g.
  * "geometry.grid=41,41,9") in order, validates and resolves it.  Returns
  * NULL with a message naming file, line and field (or the --set argument)
- * in err. */
-tf_scene *tf_scene_load(const char *path, const char *const *sets, size_t n_sets, char *err,
-                        size_t errlen);
+ * in ctx->err. */
+tf_scene *tf_scene_load(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets);
 
 /* The same from YAML text in memory; `name` stands for the file in messages. */
-tf_scene *tf_scene_load_text(const char *text, size_t len, const char *name,
-                             const char *const *sets, size_t n_sets, char *err, size_t errlen);
+tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const char *name,
+                             const char *const *sets, size_t n_sets);
 
 void tf_scene_free(tf_scene *s);
 

@@ -33,10 +33,10 @@ static void level_sets(const tf_problem *b, tf_vary vary, unsigned k, char sets[
     *n = b->solver.d_c_spacings > 0 ? 3 : 4;
 }
 
-tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
-                         unsigned k, unsigned *label, char *err, size_t errlen)
+tf_scene *tf_scene_level(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets,
+                         tf_vary vary, unsigned k, unsigned *label)
 {
-    tf_scene *base = tf_scene_load(path, sets, n_sets, err, errlen);
+    tf_scene *base = tf_scene_load(ctx, path, sets, n_sets);
     if (base == NULL) {
         return NULL;
     }
@@ -46,7 +46,7 @@ tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_set
     tf_scene_free(base);
     const char **all = malloc((n_sets + n_extra) * sizeof *all);
     if (all == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     for (size_t i = 0; i < n_sets; ++i) {
@@ -55,7 +55,7 @@ tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_set
     for (size_t i = 0; i < n_extra; ++i) {
         all[n_sets + i] = extra[i];
     }
-    tf_scene *s = tf_scene_load(path, all, n_sets + n_extra, err, errlen);
+    tf_scene *s = tf_scene_load(ctx, path, all, n_sets + n_extra);
     free(all);
     if (s != NULL) {
         *label = vary == TF_VARY_GAUSS ? s->problem.solver.gauss : k;

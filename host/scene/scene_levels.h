@@ -16,14 +16,15 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "scene/scene.h"
 
 typedef enum tf_vary { TF_VARY_GRID, TF_VARY_GAUSS } tf_vary;
 
 /* Level k of the study of a scene file, with the user's overrides applied
  * first; *label is the level's name in a table (grid: k; gauss: the Gauss
- * order).  Returns NULL with a message (a bad scene) in err. */
-tf_scene *tf_scene_level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
-                         unsigned k, unsigned *label, char *err, size_t errlen);
+ * order).  Returns NULL with a message (a bad scene) in ctx->err. */
+tf_scene *tf_scene_level(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets,
+                         tf_vary vary, unsigned k, unsigned *label);
 
 #endif /* TF_SCENE_LEVELS_H */

@@ -43,9 +43,9 @@ static void write_count(uint8_t *base, const cyaml_schema_field_t *f, unsigned c
 
 /* Loads value text with schema v (as a top-level pointer value), after the
  * checks a scene file's values get (scene_strict.h). */
-static void *load_value(const cyaml_schema_value_t *root, const cyaml_schema_value_t *v,
-                        char *path, size_t pathlen, const char *text, unsigned *count, char *err,
-                        size_t errlen)
+static void *load_value(tf_ctx *ctx, const cyaml_schema_value_t *root,
+                        const cyaml_schema_value_t *v, char *path, size_t pathlen, const char *text,
+                        unsigned *count)
 {
     cyaml_schema_value_t top = *v;
     top.flags = (enum cyaml_flag)(top.flags | CYAML_FLAG_POINTER);
@@ -57,7 +57,7 @@ static void *load_value(const cyaml_schema_value_t *root, const cyaml_schema_val
     char *buf = malloc(len + 1);
     *count = 0;
     if (buf == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     snprintf(buf, len + 1, bracket ? "[%s]" : "%s", text);
@@ -66,7 +66,7 @@ static void *load_value(const cyaml_schema_value_t *root, const cyaml_schema_val
         if (si.path[0] != '\0') {
             snprintf(path, pathlen, "%s", si.path); /* the entry or key at fault */
         }
-        snprintf(err, errlen, "%s", si.msg);
+        tf_fail(ctx, "%s", si.msg);
         free(buf);
         return NULL;
     }
@@ -79,21 +79,21 @@ static void *load_value(const cyaml_schema_value_t *root, const cyaml_schema_val
         int line;
         char where[128], msg[256];
         sd_explain(root, buf, len, &log, path, &line, where, sizeof where, msg, sizeof msg);
-        snprintf(err, errlen, "%s", log.len ? msg : cyaml_strerror(rc));
+        tf_fail(ctx, "%s", log.len ? msg : cyaml_strerror(rc));
     } else if (out == NULL) {
-        snprintf(err, errlen, "no value given");
+        tf_fail(ctx, "no value given");
     }
     free(buf);
     return out;
 }
 
 /* Replaces the value of field f in the mapping at base. */
-static int assign(const cyaml_schema_value_t *root, uint8_t *base, const cyaml_schema_field_t *f,
-                  char *path, size_t pathlen, const char *text, char *err, size_t errlen)
+static int assign(tf_ctx *ctx, const cyaml_schema_value_t *root, uint8_t *base,
+                  const cyaml_schema_field_t *f, char *path, size_t pathlen, const char *text)
 {
     const cyaml_schema_value_t *v = &f->value;
     unsigned count;
-    void *out = load_value(root, v, path, pathlen, text, &count, err, errlen);
+    void *out = load_value(ctx, root, v, path, pathlen, text, &count);
     if (out == NULL) {
         return -1;
     }
@@ -117,8 +117,7 @@ static int assign(const cyaml_schema_value_t *root, uint8_t *base, const cyaml_s
     void *old = mem(size);
     if (old == NULL) {
         cyaml_free(&cfg, &boxed, out, 0);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     memcpy(old, dst, size);
     cyaml_free(&cfg, &boxed, old, 0);
@@ -150,15 +149,14 @@ static uint8_t *entry(uint8_t *base, const cyaml_schema_field_t *f, unsigned lon
     return arr + k * es;
 }
 
-int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment, char *path,
-           size_t pathlen, char *err, size_t errlen)
+int sd_set(tf_ctx *ctx, const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment,
+           char *path, size_t pathlen)
 {
     const char *eq = strchr(assignment, '=');
     char buf[256], *comp[SD_PATH_MAX];
     if (eq == NULL || eq == assignment || (size_t)(eq - assignment) >= sizeof buf) {
         snprintf(path, pathlen, "%s", assignment);
-        snprintf(err, errlen, "expected key=value");
-        return -1;
+        return tf_fail(ctx, "expected key=value");
     }
     snprintf(path, pathlen, "%.*s", (int)(eq - assignment), assignment);
     snprintf(buf, sizeof buf, "%s", path);
@@ -170,25 +168,24 @@ int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignme
         if (f == NULL) {
             char names[256] = "";
             sd_names(v, names, sizeof names);
-            snprintf(err, errlen, "no key '%s' here (known keys: %s)", comp[k], names);
-            return -1;
+            return tf_fail(ctx, "no key '%s' here (known keys: %s)", comp[k], names);
         }
         if (k == n - 1) {
-            return assign(root, base, f, path, pathlen, eq + 1, err, errlen);
+            return assign(ctx, root, base, f, path, pathlen, eq + 1);
         }
         if (f->value.type == CYAML_SEQUENCE) {
             char *end;
             unsigned long idx = strtoul(comp[k + 1], &end, 10);
             uint8_t *e = *end == '\0' ? entry(base, f, idx) : NULL;
             if (e == NULL) {
-                snprintf(err, errlen, "'%s' has %u entries: index '%s' is not one of them or the next",
-                         f->key, read_count(base, f), comp[k + 1]);
-                return -1;
+                return tf_fail(ctx,
+                               "'%s' has %u entries: index '%s' is not one of them or the next",
+                               f->key, read_count(base, f), comp[k + 1]);
             }
             if (++k == n - 1) {
                 cyaml_schema_field_t whole = {.key = f->key, .data_offset = 0,
                                               .value = *f->value.sequence.entry};
-                return assign(root, e, &whole, path, pathlen, eq + 1, err, errlen);
+                return assign(ctx, root, e, &whole, path, pathlen, eq + 1);
             }
             base = e;
             v = f->value.sequence.entry;
@@ -197,18 +194,15 @@ int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignme
             if (f->value.flags & CYAML_FLAG_POINTER) {
                 memcpy(&sub, base + f->data_offset, sizeof sub);
                 if (sub == NULL && (sub = mem(f->value.data_size)) == NULL) {
-                    snprintf(err, errlen, "out of memory");
-                    return -1;
+                    return tf_fail(ctx, "out of memory");
                 }
                 memcpy(base + f->data_offset, &sub, sizeof sub);
             }
             base = sub;
             v = &f->value;
         } else {
-            snprintf(err, errlen, "'%s' holds a value, not keys", f->key);
-            return -1;
+            return tf_fail(ctx, "'%s' holds a value, not keys", f->key);
         }
     }
-    snprintf(err, errlen, "expected key=value");
-    return -1;
+    return tf_fail(ctx, "expected key=value");
 }

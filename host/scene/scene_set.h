@@ -13,13 +13,14 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "scene/scene_schema.h"
 
 /* Applies one "key=value" to a document of schema root and writes the
- * key's path to path.  Returns 0, or -1 with a message in err; the value is
+ * key's path to path.  Returns 0, or -1 with a message in ctx->err; the value is
  * then unchanged, though empty optional mappings or an appended entry on
  * the way may remain. */
-int sd_set(const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment, char *path,
-           size_t pathlen, char *err, size_t errlen);
+int sd_set(tf_ctx *ctx, const cyaml_schema_value_t *root, sd_scene *doc, const char *assignment,
+           char *path, size_t pathlen);
 
 #endif /* TF_SCENE_SET_H */

@@ -93,8 +93,8 @@ static void note_failure(size_t c, const char *why, size_t *failed, char *msg, s
     }
 }
 
-static int build_cell_sets(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
-                           tf_nodesets *cs, char *err, size_t errlen)
+static int build_cell_sets(tf_ctx *ctx, const tf_shape *sh, const tf_assembly_extra *ex,
+                           int threads, tf_nodesets *cs)
 {
     size_t ncell = tf_cells_count(&sh->cells), nn = sh->cloud->n, failed = SIZE_MAX;
     uint32_t **lists = calloc(ncell, sizeof *lists);
@@ -103,8 +103,7 @@ static int build_cell_sets(const tf_shape *sh, const tf_assembly_extra *ex, int 
     if (!lists || !len) {
         free(lists);
         free(len);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
 #pragma omp parallel num_threads(threads)
     {
@@ -132,8 +131,7 @@ static int build_cell_sets(const tf_shape *sh, const tf_assembly_extra *ex, int 
     free(lists);
     free(len);
     if (failed != SIZE_MAX || rc != 0) {
-        snprintf(err, errlen, "%s", msg);
-        return -1;
+        return tf_fail(ctx, "%s", msg);
     }
     return 0;
 }
@@ -172,7 +170,7 @@ typedef struct value_pass {
     tf_shape_stats st;
 } value_pass;
 
-static int assemble_values(value_pass *v, char *err, size_t errlen)
+static int assemble_values(tf_ctx *ctx, value_pass *v)
 {
     const tf_nodesets *cs = v->cs;
     size_t ncell = cs->count, maxm = 0, failed = SIZE_MAX;
@@ -219,22 +217,20 @@ static int assemble_values(value_pass *v, char *err, size_t errlen)
     free(cw);
     free(buf);
     if (!ok || failed != SIZE_MAX) {
-        snprintf(err, errlen, "%s", ok ? msg : "out of memory for the cell matrices");
-        return -1;
+        return tf_fail(ctx, "%s", ok ? msg : "out of memory for the cell matrices");
     }
     return 0;
 }
 
-int tf_assemble_pattern(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
-                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k, char *err,
-                        size_t errlen)
+int tf_assemble_pattern(tf_ctx *ctx, const tf_shape *sh, const tf_assembly_extra *ex, int threads,
+                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k)
 {
     memset(cells, 0, sizeof *cells);
     memset(blocks, 0, sizeof *blocks);
     memset(k, 0, sizeof *k);
-    int rc = build_cell_sets(sh, ex, threads, cells, err, errlen);
+    int rc = build_cell_sets(ctx, sh, ex, threads, cells);
     if (rc == 0) {
-        rc = tf_sparsity(cells, sh->cloud->n, threads, blocks, k, err, errlen);
+        rc = tf_sparsity(ctx, cells, sh->cloud->n, threads, blocks, k);
     }
     if (rc != 0) {
         tf_nodesets_free(cells);
@@ -244,9 +240,9 @@ int tf_assemble_pattern(const tf_shape *sh, const tf_assembly_extra *ex, int thr
     return rc;
 }
 
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar,
+int tf_assemble_stiffness(tf_ctx *ctx, const tf_shape *sh, const tf_lame *l, int bbar,
                           const tf_assembly_extra *ex, int threads, tf_csc *k,
-                          tf_assembly_info *info, char *err, size_t errlen)
+                          tf_assembly_info *info)
 {
     tf_nodesets cs = {0}, bp = {0};
     memset(k, 0, sizeof *k);
@@ -255,13 +251,13 @@ int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar,
      * on one thread each instead of spawning and spinning more. */
     openblas_set_num_threads(1);
     double t0 = omp_get_wtime();
-    int rc = tf_assemble_pattern(sh, ex, threads, &cs, &bp, k, err, errlen);
+    int rc = tf_assemble_pattern(ctx, sh, ex, threads, &cs, &bp, k);
     double t1 = omp_get_wtime();
     info->t_pattern = t1 - t0;
     value_pass v = {sh, l, bbar, ex != NULL && ex->vci, &cs, &bp, threads, k, 0, 0, {0}};
     tf_shape_stats_reset(&v.st);
     if (rc == 0) {
-        rc = assemble_values(&v, err, errlen);
+        rc = assemble_values(ctx, &v);
     }
     info->t_values = omp_get_wtime() - t1;
     info->shape_fraction = v.t_all > 0 ? v.t_shape / v.t_all : 0;

@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "numerics/csc.h"
 #include "materials/elasticity.h"
 #include "meshfree/shape.h"
@@ -37,18 +38,17 @@ typedef struct tf_assembly_extra {
 /* The node set of every cell (the supports of its Gauss points, its
  * boundary points and, with VCI, of its face integrals; ascending) and K's
  * pattern with zero values (sparsity.h), on `threads` OpenMP threads.
- * ex may be NULL.  Returns 0, or -1 with a message in err. */
-int tf_assemble_pattern(const tf_shape *sh, const tf_assembly_extra *ex, int threads,
-                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k, char *err,
-                        size_t errlen);
+ * ex may be NULL.  Returns 0, or -1 with a message in ctx->err. */
+int tf_assemble_pattern(tf_ctx *ctx, const tf_shape *sh, const tf_assembly_extra *ex, int threads,
+                        tf_nodesets *cells, tf_nodesets *blocks, tf_csc *k);
 
 /* Assembles K for the shape functions sh and the material l; with bbar
  * the volumetric strain is averaged over each background cell (B-bar), on
  * `threads` OpenMP threads (>= 1; the same bits for any count); ex (NULL:
- * none) as above.  Returns 0, or -1 with a message in err (a singular
+ * none) as above.  Returns 0, or -1 with a message in ctx->err (a singular
  * local system, out of memory). */
-int tf_assemble_stiffness(const tf_shape *sh, const tf_lame *l, int bbar,
+int tf_assemble_stiffness(tf_ctx *ctx, const tf_shape *sh, const tf_lame *l, int bbar,
                           const tf_assembly_extra *ex, int threads, tf_csc *k,
-                          tf_assembly_info *info, char *err, size_t errlen);
+                          tf_assembly_info *info);
 
 #endif /* TF_ASSEMBLE_H */

@@ -32,8 +32,8 @@ static int region_face(const tf_region *r, const tf_cloud *c)
 
 /* Appends the points of fixed region k's face to b->pt (room for them is
  * made here). */
-static int add_region(tf_boundary *b, const tf_problem *p, const tf_shape *sh, size_t k,
-                      int face, char *err, size_t errlen)
+static int add_region(tf_ctx *ctx, tf_boundary *b, const tf_problem *p, const tf_shape *sh,
+                      size_t k, int face)
 {
     const tf_fixed *fx = &p->fixed[k];
     tf_patch patch = {.shape = TF_PATCH_FACE, .face = (tf_face)face};
@@ -42,8 +42,7 @@ static int add_region(tf_boundary *b, const tf_problem *p, const tf_shape *sh, s
     tf_bpoint *grown = q ? realloc(b->pt, (b->n + nq + 1) * sizeof *b->pt) : NULL;
     if (grown == NULL) {
         free(q);
-        snprintf(err, errlen, "out of memory for the boundary points");
-        return -1;
+        return tf_fail(ctx, "out of memory for the boundary points");
     }
     b->pt = grown;
     int axis = tf_face_axis((tf_face)face);
@@ -98,29 +97,28 @@ static int sort_by_cell(tf_boundary *b, size_t n_cells)
     return 0;
 }
 
-int tf_boundary_build(tf_boundary *b, const tf_problem *p, const tf_shape *sh, char *err,
-                      size_t errlen)
+int tf_boundary_build(tf_ctx *ctx, tf_boundary *b, const tf_problem *p, const tf_shape *sh)
 {
     memset(b, 0, sizeof *b);
     for (size_t k = 0; k < p->n_fixed; ++k) {
         int face = region_face(&p->fixed[k].where, &p->cloud);
         if (face < 0) {
-            snprintf(err, errlen,
-                     "fixed region %zu is not a face of the box: weak essential conditions "
-                     "(solver.bc: penalty or nitsche with efg-galerkin, nitsche with "
-                     "rpim-galerkin) integrate over faces; use rpim-galerkin with "
-                     "bc: elimination for a box or an interior plane",
-                     k);
+            tf_fail(ctx,
+                    "fixed region %zu is not a face of the box: weak essential conditions "
+                    "(solver.bc: penalty or nitsche with efg-galerkin, nitsche with "
+                    "rpim-galerkin) integrate over faces; use rpim-galerkin with "
+                    "bc: elimination for a box or an interior plane",
+                    k);
             tf_boundary_free(b);
             return -1;
         }
-        if (add_region(b, p, sh, k, face, err, errlen) != 0) {
+        if (add_region(ctx, b, p, sh, k, face) != 0) {
             tf_boundary_free(b);
             return -1;
         }
     }
     if (sort_by_cell(b, tf_cells_count(&sh->cells)) != 0) {
-        snprintf(err, errlen, "out of memory for the boundary points");
+        tf_fail(ctx, "out of memory for the boundary points");
         tf_boundary_free(b);
         return -1;
     }
@@ -194,9 +192,9 @@ static void point_terms(const tf_bpoint *q, const tf_shape_work *w, tf_bc_method
     }
 }
 
-int tf_boundary_add_linear(const tf_boundary *b, const tf_shape *sh, tf_bc_method method,
-                           double factor, const tf_lame *l, tf_csc *k, double *rhs, char *err,
-                           size_t errlen)
+int tf_boundary_add_linear(tf_ctx *ctx, const tf_boundary *b, const tf_shape *sh,
+                           tf_bc_method method, double factor, const tf_lame *l, tf_csc *k,
+                           double *rhs)
 {
     tf_shape_work w;
     tf_shape_work_init(&w);
@@ -206,8 +204,7 @@ int tf_boundary_add_linear(const tf_boundary *b, const tf_shape *sh, tf_bc_metho
     for (size_t p = 0; p < b->n && rc == 0; ++p) {
         const tf_bpoint *q = &b->pt[p];
         if (tf_shape_at(sh, &w, q->x, q->cell, method == TF_BC_NITSCHE) != 0) {
-            snprintf(err, errlen, "boundary point (%g, %g, %g) mm: %s", q->x[0], q->x[1],
-                     q->x[2], w.err);
+            tf_fail(ctx, "boundary point (%g, %g, %g) mm: %s", q->x[0], q->x[1], q->x[2], w.err);
             rc = -1;
             break;
         }
@@ -218,7 +215,7 @@ int tf_boundary_add_linear(const tf_boundary *b, const tf_shape *sh, tf_bc_metho
             kl = malloc(9 * cap * cap * sizeof *kl);
             t = malloc(9 * cap * sizeof *t);
             if (kl == NULL || t == NULL) {
-                snprintf(err, errlen, "out of memory");
+                tf_fail(ctx, "out of memory");
                 rc = -1;
                 break;
             }
@@ -226,10 +223,10 @@ int tf_boundary_add_linear(const tf_boundary *b, const tf_shape *sh, tf_bc_metho
         memset(kl, 0, 9 * w.n * w.n * sizeof *kl);
         point_terms(q, &w, method, factor, l, kl, t, rhs);
         if (tf_sparsity_add_dense(k, w.idx, w.n, kl) != 0) {
-            snprintf(err, errlen,
-                     "boundary point (%g, %g, %g) mm: a node pair of its support is not in "
-                     "the stiffness pattern",
-                     q->x[0], q->x[1], q->x[2]);
+            tf_fail(ctx,
+                    "boundary point (%g, %g, %g) mm: a node pair of its support is not in "
+                    "the stiffness pattern",
+                    q->x[0], q->x[1], q->x[2]);
             rc = -1;
         }
     }

@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "materials/elasticity.h"
 #include "meshfree/shape.h"
 #include "numerics/csc.h"
@@ -52,8 +53,7 @@ typedef struct tf_boundary {
 /* The points of every fixed region's face (the same rule as a load patch
  * covering the face, quadrature.h), sorted by cell.  Returns 0, or -1 with
  * a message (a region that is not a face of the box, out of memory). */
-int tf_boundary_build(tf_boundary *b, const tf_problem *p, const tf_shape *sh, char *err,
-                      size_t errlen);
+int tf_boundary_build(tf_ctx *ctx, tf_boundary *b, const tf_problem *p, const tf_shape *sh);
 void tf_boundary_free(tf_boundary *b);
 
 /* The factor's scale (lambda + 2 mu) / h of the problem's small-strain
@@ -64,8 +64,8 @@ double tf_boundary_scale(const tf_lame *l, const tf_cloud *c);
  * alpha; TF_BC_NITSCHE: beta; both in MPa/mm, already scaled) to K (lower
  * triangle; its pattern must hold every pair of nodes that support one
  * boundary point) and to rhs (3N).  Returns 0, or -1 with a message. */
-int tf_boundary_add_linear(const tf_boundary *b, const tf_shape *sh, tf_bc_method method,
-                           double factor, const tf_lame *l, tf_csc *k, double *rhs, char *err,
-                           size_t errlen);
+int tf_boundary_add_linear(tf_ctx *ctx, const tf_boundary *b, const tf_shape *sh,
+                           tf_bc_method method, double factor, const tf_lame *l, tf_csc *k,
+                           double *rhs);
 
 #endif /* TF_BOUNDARY_H */

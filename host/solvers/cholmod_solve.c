@@ -65,7 +65,7 @@ static cholmod_sparse wrap(const tf_csc *a)
 
 double tf_chol_rcond(tf_chol *c) { return cholmod_rcond(c->l, &c->cm); }
 
-int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen)
+int tf_chol_solve(tf_ctx *ctx, tf_chol *c, const double *b, double *x, size_t ncol)
 {
     cholmod_dense d;
     memset(&d, 0, sizeof d);
@@ -79,8 +79,7 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
     d.dtype = CHOLMOD_DOUBLE;
     cholmod_dense *r = cholmod_solve(CHOLMOD_A, c->l, &d, &c->cm);
     if (r == NULL) {
-        snprintf(err, errlen, "CHOLMOD solve failed (status %d)", c->cm.status);
-        return -1;
+        return tf_fail(ctx, "CHOLMOD solve failed (status %d)", c->cm.status);
     }
     memcpy(x, r->x, c->n * ncol * sizeof *x);
     cholmod_free_dense(&r, &c->cm);
@@ -88,11 +87,11 @@ int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err
 }
 
 /* A handle for n unknowns with CHOLMOD started, quiet; NULL with a message. */
-static tf_chol *chol_new(size_t n, char *err, size_t errlen)
+static tf_chol *chol_new(tf_ctx *ctx, size_t n)
 {
     tf_chol *c = calloc(1, sizeof *c);
     if (c == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     cholmod_start(&c->cm);
@@ -109,8 +108,7 @@ static int cholmod_ordering(tf_ordering ord)
 }
 
 /* c->l = the analysis of a with c->cm's method (perm: CHOLMOD_GIVEN's). */
-static int analyse(tf_chol *c, const tf_csc *a, int *perm, tf_chol_info *info, char *err,
-                   size_t errlen)
+static int analyse(tf_ctx *ctx, tf_chol *c, const tf_csc *a, int *perm, tf_chol_info *info)
 {
     cholmod_sparse s = wrap(a);
     openblas_set_num_threads(TF_BLAS_THREADS);
@@ -119,9 +117,8 @@ static int analyse(tf_chol *c, const tf_csc *a, int *perm, tf_chol_info *info, c
     info->t_analyse += omp_get_wtime() - t0;
     info->t_factor = 0;
     if (c->l == NULL) {
-        snprintf(err, errlen, "CHOLMOD analysis failed (status %d)%s", c->cm.status,
-                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
-        return -1;
+        return tf_fail(ctx, "CHOLMOD analysis failed (status %d)%s", c->cm.status,
+                       c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
     }
     info->nnz_l = c->cm.lnz;
     info->flops = c->cm.fl;
@@ -131,10 +128,9 @@ static int analyse(tf_chol *c, const tf_csc *a, int *perm, tf_chol_info *info, c
     return 0;
 }
 
-tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
-                         char *err, size_t errlen)
+tf_chol *tf_chol_analyse(tf_ctx *ctx, const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info)
 {
-    tf_chol *c = chol_new(a->n, err, errlen);
+    tf_chol *c = chol_new(ctx, a->n);
     if (c == NULL) {
         return NULL;
     }
@@ -145,21 +141,21 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
     c->cm.nmethods = 1;
     c->cm.method[0].ordering = cholmod_ordering(ord);
     info->t_analyse = 0;
-    if (analyse(c, a, NULL, info, err, errlen) != 0) {
+    if (analyse(ctx, c, a, NULL, info) != 0) {
         tf_chol_free(c);
         return NULL;
     }
     return c;
 }
 
-tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned char *last,
-                              tf_chol_info *info, char *err, size_t errlen)
+tf_chol *tf_chol_analyse_last(tf_ctx *ctx, const tf_csc *a, tf_ordering ord,
+                              const unsigned char *last, tf_chol_info *info)
 {
-    tf_chol *c = tf_chol_analyse(a, ord, 0, info, err, errlen);
+    tf_chol *c = tf_chol_analyse(ctx, a, ord, 0, info);
     int *perm = c ? malloc(a->n * sizeof *perm) : NULL;
     if (perm == NULL) {
         if (c != NULL) {
-            snprintf(err, errlen, "out of memory");
+            tf_fail(ctx, "out of memory");
         }
         tf_chol_free(c);
         return NULL;
@@ -179,7 +175,7 @@ tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned c
      * may interleave `last` with subtrees that hang off it (with fixed DOFs
      * as isolated unit columns it did, and A was no longer last) */
     c->cm.postorder = 0;
-    int rc = analyse(c, a, perm, info, err, errlen);
+    int rc = analyse(ctx, c, a, perm, info);
     free(perm);
     if (rc != 0) {
         tf_chol_free(c);
@@ -206,7 +202,7 @@ double *tf_chol_trailing(tf_chol *c, size_t m, size_t *ld, const int **perm)
     return (double *)l->x + (size_t)px[k] + off + off * nrow;
 }
 
-int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen)
+int tf_chol_refactor(tf_ctx *ctx, tf_chol *c, const tf_csc *a, double *t)
 {
     cholmod_sparse s = wrap(a);
     openblas_set_num_threads(TF_BLAS_THREADS);
@@ -217,20 +213,19 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
         return 1;
     }
     if (!ok || c->cm.status != CHOLMOD_OK) {
-        snprintf(err, errlen, "CHOLMOD factorisation failed (status %d)%s", c->cm.status,
-                 c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
-        return -1;
+        return tf_fail(ctx, "CHOLMOD factorisation failed (status %d)%s", c->cm.status,
+                       c->cm.status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory" : "");
     }
     return 0;
 }
 
-tf_chol *tf_chol_twin(const tf_chol *c, const tf_csc *a, char *err, size_t errlen)
+tf_chol *tf_chol_twin(tf_ctx *ctx, const tf_chol *c, const tf_csc *a)
 {
-    tf_chol *d = chol_new(c->n, err, errlen);
+    tf_chol *d = chol_new(ctx, c->n);
     int *perm = d ? malloc(c->n * sizeof *perm) : NULL;
     if (perm == NULL) {
         if (d != NULL) {
-            snprintf(err, errlen, "out of memory");
+            tf_fail(ctx, "out of memory");
         }
         tf_chol_free(d);
         return NULL;
@@ -242,7 +237,7 @@ tf_chol *tf_chol_twin(const tf_chol *c, const tf_csc *a, char *err, size_t errle
     d->cm.method[0].ordering = CHOLMOD_GIVEN;
     d->cm.postorder = 0; /* c's permutation is final (postordered, or kept as given) */
     tf_chol_info info = {0};
-    int rc = analyse(d, a, perm, &info, err, errlen);
+    int rc = analyse(ctx, d, a, perm, &info);
     free(perm);
     if (rc != 0) {
         tf_chol_free(d);

@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "solvers/assemble.h"
 
 typedef struct tf_chol tf_chol;
@@ -40,8 +41,8 @@ typedef enum tf_ordering {
  * simplicial LDL^T factorisation, which (without pivoting) also takes an
  * indefinite A as long as no pivot vanishes.  Returns NULL with a
  * message. */
-tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info *info,
-                         char *err, size_t errlen);
+tf_chol *tf_chol_analyse(tf_ctx *ctx, const tf_csc *a, tf_ordering ord, int ldl,
+                         tf_chol_info *info);
 
 /* As tf_chol_analyse (LL^T), with the DOFs i where last[i] != 0 moved to
  * the end of the fill-reducing ordering (the others in the ordering's
@@ -50,8 +51,8 @@ tf_chol *tf_chol_analyse(const tf_csc *a, tf_ordering ord, int ldl, tf_chol_info
  * m x m block L_AA satisfies L_AA L_AA^T = the Schur complement of the
  * rest onto them: a matrix that differs only in that block has the
  * factor with L_AA replaced (tf_chol_trailing).  NULL with a message. */
-tf_chol *tf_chol_analyse_last(const tf_csc *a, tf_ordering ord, const unsigned char *last,
-                              tf_chol_info *info, char *err, size_t errlen);
+tf_chol *tf_chol_analyse_last(tf_ctx *ctx, const tf_csc *a, tf_ordering ord,
+                              const unsigned char *last, tf_chol_info *info);
 
 /* The trailing m x m block of c's last factorisation (supernodal LL^T),
  * column major with leading dimension *ld, its lower triangle L's entries
@@ -65,7 +66,7 @@ double *tf_chol_trailing(tf_chol *c, size_t m, size_t *ld, const int **perm);
  * last one.  Returns 0; 1 when A is not positive definite (LL^T) or has a
  * zero pivot (LDL^T): c then holds no usable factor; -1 with a message on
  * other failures.  *t gets the seconds it took. */
-int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t errlen);
+int tf_chol_refactor(tf_ctx *ctx, tf_chol *c, const tf_csc *a, double *t);
 
 /* A second handle with c's analysis (a, of c's pattern, analysed under
  * c's permutation; no values yet) to refactorise into while c's factor
@@ -74,7 +75,7 @@ int tf_chol_refactor(tf_chol *c, const tf_csc *a, double *t, char *err, size_t e
  * Not a copy of c: cholmod_copy_factor took 2.4 s for the 1.01e8 entries
  * of block48 at 41 x 41 x 9, this analysis 0.15 s.  Returns NULL with a
  * message. */
-tf_chol *tf_chol_twin(const tf_chol *c, const tf_csc *a, char *err, size_t errlen);
+tf_chol *tf_chol_twin(tf_ctx *ctx, const tf_chol *c, const tf_csc *a);
 
 /* CHOLMOD's rough reciprocal condition of the last factorisation. */
 double tf_chol_rcond(tf_chol *c);
@@ -88,7 +89,7 @@ const char *tf_chol_ordering(const tf_chol *c);
 
 /* Solves A X = B for ncol columns (column major, length n each).
  * Returns 0, or -1 with a message. */
-int tf_chol_solve(tf_chol *c, const double *b, double *x, size_t ncol, char *err, size_t errlen);
+int tf_chol_solve(tf_ctx *ctx, tf_chol *c, const double *b, double *x, size_t ncol);
 
 void tf_chol_free(tf_chol *c);
 

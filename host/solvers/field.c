@@ -5,8 +5,8 @@
 
 #include <stdio.h>
 
-int tf_shape_field(const tf_shape *sh, const double *d, const double *x, size_t np, double *uh,
-                   double *grad, char *err, size_t errlen)
+int tf_shape_field(tf_ctx *ctx, const tf_shape *sh, const double *d, const double *x, size_t np,
+                   double *uh, double *grad)
 {
     tf_shape_work w;
     tf_shape_work_init(&w);
@@ -16,7 +16,7 @@ int tf_shape_field(const tf_shape *sh, const double *d, const double *x, size_t 
         double *up = uh + 3 * p, *gp = grad + 9 * p;
         rc = tf_shape_at(sh, &w, xp, tf_shape_cell(sh, xp), 1);
         if (rc != 0) {
-            snprintf(err, errlen, "%s", w.err);
+            tf_fail(ctx, "%s", w.err);
             break;
         }
         for (int i = 0; i < 9; ++i) {
@@ -37,11 +37,11 @@ int tf_shape_field(const tf_shape *sh, const double *d, const double *x, size_t 
     return rc;
 }
 
-int tf_nodal_field(const tf_shape *sh, tf_nodal_map *map, const double *u, const double *x,
-                   size_t np, double *uh, double *grad, char *err, size_t errlen)
+int tf_nodal_field(tf_ctx *ctx, const tf_shape *sh, tf_nodal_map *map, const double *u,
+                   const double *x, size_t np, double *uh, double *grad)
 {
-    if (map != NULL && (u = tf_nodal_map_params_of(map, u, err, errlen)) == NULL) {
+    if (map != NULL && (u = tf_nodal_map_params_of(ctx, map, u)) == NULL) {
         return -1;
     }
-    return tf_shape_field(sh, u, x, np, uh, grad, err, errlen);
+    return tf_shape_field(ctx, sh, u, x, np, uh, grad);
 }

@@ -39,7 +39,7 @@ static void traction_at(const traction *t, const double x[3], double out[9], siz
     }
 }
 
-static int integrate(const tf_shape *sh, const traction *t, double *f, char *err, size_t errlen)
+static int integrate(tf_ctx *ctx, const tf_shape *sh, const traction *t, double *f)
 {
     size_t n3 = 3 * sh->cloud->n;
     if (t->p->shape == TF_PATCH_POINT) {
@@ -66,8 +66,7 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
         nq = 1;
     }
     if (q == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     tf_shape_work w;
     tf_shape_work_init(&w);
@@ -75,7 +74,7 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
     for (size_t k = 0; k < nq && rc == 0; ++k) {
         rc = tf_shape_at(sh, &w, q[k].x, tf_shape_cell(sh, q[k].x), 0);
         if (rc != 0) {
-            snprintf(err, errlen, "load patch: %s", w.err);
+            tf_fail(ctx, "load patch: %s", w.err);
             break;
         }
         double tr[9];
@@ -95,16 +94,16 @@ static int integrate(const tf_shape *sh, const traction *t, double *f, char *err
     return rc;
 }
 
-int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
-                  char *err, size_t errlen)
+int tf_load_patch(tf_ctx *ctx, const tf_shape *sh, const tf_patch *p, const double *force,
+                  double *f)
 {
     traction t = {NULL, p, force, p->shape == TF_PATCH_AT ? 1 : tf_patch_area(p, sh->cloud), 0};
-    return integrate(sh, &t, f, err, errlen);
+    return integrate(ctx, sh, &t, f);
 }
 
-int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
-                  char *err, size_t errlen)
+int tf_load_exact(tf_ctx *ctx, const tf_shape *sh, const tf_problem *pr, const tf_patch *p,
+                  double *f)
 {
     traction t = {pr, p, NULL, tf_patch_area(p, sh->cloud), 1};
-    return integrate(sh, &t, f, err, errlen);
+    return integrate(ctx, sh, &t, f);
 }

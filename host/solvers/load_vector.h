@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "problem/problem.h"
 #include "meshfree/shape.h"
 
@@ -16,11 +17,11 @@
  * the patch.  With ncol = 3 and force = NULL it writes instead the three
  * unit-force columns (column a: 1 N along axis a) into f (3N x 3, column
  * major, added to).  Returns 0, or -1 with a message. */
-int tf_load_patch(const tf_shape *sh, const tf_patch *p, const double *force, double *f,
-                  char *err, size_t errlen);
+int tf_load_patch(tf_ctx *ctx, const tf_shape *sh, const tf_patch *p, const double *force,
+                  double *f);
 
 /* Adds to f the problem's analytic traction sigma n over the patch. */
-int tf_load_exact(const tf_shape *sh, const tf_problem *pr, const tf_patch *p, double *f,
-                  char *err, size_t errlen);
+int tf_load_exact(tf_ctx *ctx, const tf_shape *sh, const tf_problem *pr, const tf_patch *p,
+                  double *f);
 
 #endif /* TF_LOAD_VECTOR_H */

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <umfpack.h>
 
-int tf_nodal_map_build(tf_nodal_map *m, const tf_shape *sh, char *err, size_t errlen)
+int tf_nodal_map_build(tf_ctx *ctx, tf_nodal_map *m, const tf_shape *sh)
 {
     const tf_cloud *c = sh->cloud;
     memset(m, 0, sizeof *m);
@@ -24,7 +24,7 @@ int tf_nodal_map_build(tf_nodal_map *m, const tf_shape *sh, char *err, size_t er
     for (size_t i = 0; i < c->n && rc == 0; ++i) {
         const double *x = c->xyz + 3 * i;
         if (tf_shape_at(sh, &w, x, tf_shape_cell(sh, x), 0) != 0) {
-            snprintf(err, errlen, "node %zu: %s", i + 1, w.err);
+            tf_fail(ctx, "node %zu: %s", i + 1, w.err);
             rc = -2;
             break;
         }
@@ -50,7 +50,7 @@ int tf_nodal_map_build(tf_nodal_map *m, const tf_shape *sh, char *err, size_t er
     }
     tf_shape_work_free(&w);
     if (rc == -1) {
-        snprintf(err, errlen, "out of memory for the nodal values of %zu nodes", c->n);
+        tf_fail(ctx, "out of memory for the nodal values of %zu nodes", c->n);
     }
     if (rc != 0) {
         tf_nodal_map_free(m);
@@ -98,13 +98,12 @@ void tf_nodal_map_values(const tf_nodal_map *m, const double *d, double *u, size
 
 /* Row I of Lambda is column I of Lambda^T: the arrays are Lambda^T in
  * compressed columns, and UMFPACK_At solves with its transpose, Lambda. */
-static int factorise(tf_nodal_map *m, char *err, size_t errlen)
+static int factorise(tf_ctx *ctx, tf_nodal_map *m)
 {
     int n = (int)m->n;
     int *ap = malloc((m->n + 1) * sizeof *ap);
     if (ap == NULL) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t i = 0; i <= m->n; ++i) {
         ap[i] = (int)m->ptr[i];
@@ -115,18 +114,18 @@ static int factorise(tf_nodal_map *m, char *err, size_t errlen)
     }
     free(ap);
     if (st != UMFPACK_OK) {
-        snprintf(err, errlen,
-                 "the EFG shape functions at the nodes form a singular matrix (UMFPACK status "
-                 "%d): nodal displacements cannot be turned into parameters",
-                 st);
-        return -1;
+        return tf_fail(
+            ctx,
+            "the EFG shape functions at the nodes form a singular matrix (UMFPACK status "
+            "%d): nodal displacements cannot be turned into parameters",
+            st);
     }
     return 0;
 }
 
-int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, size_t errlen)
+int tf_nodal_map_params(tf_ctx *ctx, tf_nodal_map *m, const double *u, double *d)
 {
-    if (m->numeric == NULL && factorise(m, err, errlen) != 0) {
+    if (m->numeric == NULL && factorise(ctx, m) != 0) {
         return -1;
     }
     double *b = malloc(2 * m->n * sizeof *b);
@@ -134,8 +133,7 @@ int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, 
     if (b == NULL || ap == NULL) {
         free(b);
         free(ap);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return tf_fail(ctx, "out of memory");
     }
     for (size_t i = 0; i <= m->n; ++i) {
         ap[i] = (int)m->ptr[i];
@@ -154,14 +152,12 @@ int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, 
     free(b);
     free(ap);
     if (st != UMFPACK_OK) {
-        snprintf(err, errlen, "UMFPACK solve failed (status %d)", st);
-        return -1;
+        return tf_fail(ctx, "UMFPACK solve failed (status %d)", st);
     }
     return 0;
 }
 
-const double *tf_nodal_map_params_of(tf_nodal_map *m, const double *u, char *err,
-                                     size_t errlen)
+const double *tf_nodal_map_params_of(tf_ctx *ctx, tf_nodal_map *m, const double *u)
 {
     size_t n3 = 3 * m->n;
     const double *d = NULL;
@@ -172,12 +168,12 @@ const double *tf_nodal_map_params_of(tf_nodal_map *m, const double *u, char *err
             m->u_cache = malloc(n3 * sizeof *m->u_cache);
         }
         if (m->d_cache == NULL || m->u_cache == NULL) {
-            snprintf(err, errlen, "out of memory");
+            tf_fail(ctx, "out of memory");
         } else if (m->cache_ok && memcmp(m->u_cache, u, n3 * sizeof *u) == 0) {
             d = m->d_cache;
         } else {
             m->cache_ok = 0;
-            if (tf_nodal_map_params(m, u, m->d_cache, err, errlen) == 0) {
+            if (tf_nodal_map_params(ctx, m, u, m->d_cache) == 0) {
                 memcpy(m->u_cache, u, n3 * sizeof *u);
                 m->cache_ok = 1;
                 d = m->d_cache;

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "meshfree/shape.h"
 
 typedef struct tf_nodal_map {
@@ -26,7 +27,7 @@ typedef struct tf_nodal_map {
 
 /* Lambda of the shape functions sh at their own nodes.  Returns 0, or -1
  * with a message. */
-int tf_nodal_map_build(tf_nodal_map *m, const tf_shape *sh, char *err, size_t errlen);
+int tf_nodal_map_build(tf_ctx *ctx, tf_nodal_map *m, const tf_shape *sh);
 void tf_nodal_map_free(tf_nodal_map *m);
 
 /* u = Lambda d for ncol columns of 3N (u and d distinct). */
@@ -35,13 +36,12 @@ void tf_nodal_map_values(const tf_nodal_map *m, const double *d, double *u, size
 /* d = Lambda^-1 u (one column of 3N).  Returns 0, or -1 with a message
  * (Lambda singular, out of memory).  Not reentrant: the first call
  * factorises. */
-int tf_nodal_map_params(tf_nodal_map *m, const double *u, double *d, char *err, size_t errlen);
+int tf_nodal_map_params(tf_ctx *ctx, tf_nodal_map *m, const double *u, double *d);
 
 /* The parameters of u through a one-entry cache: the same u asked again
  * (the field of one solution at many points, from many threads at once)
  * costs a comparison.  Thread-safe; the pointer stays valid until a
- * different u is asked for.  Returns NULL with a message in err. */
-const double *tf_nodal_map_params_of(tf_nodal_map *m, const double *u, char *err,
-                                     size_t errlen);
+ * different u is asked for.  Returns NULL with a message in ctx->err. */
+const double *tf_nodal_map_params_of(tf_ctx *ctx, tf_nodal_map *m, const double *u);
 
 #endif /* TF_NODAL_VALUES_H */

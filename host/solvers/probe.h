@@ -11,16 +11,17 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "solvers/solver.h"
 
 /* Problem p's outputs (p: the solver's problem, or a copy of it with other
  * outputs) from nodal values u (3N):
- * out[3 j + a], j over outputs.  Returns 0, or -1 with a message in err. */
-int tf_solver_probe_outputs(const tf_solver *s, const tf_problem *p, const double *u, double *out,
-                     char *err, size_t errlen);
+ * out[3 j + a], j over outputs.  Returns 0, or -1 with a message in ctx->err. */
+int tf_solver_probe_outputs(tf_ctx *ctx, const tf_solver *s, const tf_problem *p, const double *u,
+                            double *out);
 
 /* The displacement of p's contact site k.  Returns 0, or -1 with a message. */
-int tf_solver_probe_contact(const tf_solver *s, const tf_problem *p, int k, const double *u,
-                     double out[3], char *err, size_t errlen);
+int tf_solver_probe_contact(tf_ctx *ctx, const tf_solver *s, const tf_problem *p, int k,
+                            const double *u, double out[3]);
 
 #endif /* TF_PROBE_H */

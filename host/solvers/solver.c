@@ -163,13 +163,12 @@ int tf_solver_reactions(const tf_solver *s, int contact, const double force[3], 
     return s->ops->reactions(s, contact, force, u, r);
 }
 
-int tf_solver_field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
-                    double *grad, char *err, size_t errlen)
+int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
+                    double *uh, double *grad)
 {
     if (s->ops->field == NULL) {
-        snprintf(err, errlen, "solver %s gives no displacement field between its nodes",
-                 s->ops->name);
-        return -1;
+        return tf_fail(ctx, "solver %s gives no displacement field between its nodes",
+                       s->ops->name);
     }
-    return s->ops->field(s, u, x, np, uh, grad, err, errlen);
+    return s->ops->field(ctx, s, u, x, np, uh, grad);
 }

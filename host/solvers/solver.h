@@ -89,10 +89,11 @@ typedef struct tf_solver_ops {
                      double *r);
     /* The displacement field of nodal values u at np points x (3 np):
      * uh (3 np) and its gradient grad (9 np, row-major du_i/dx_j per point).
-     * Callable from several threads at once, so a failure's message goes to
-     * err, not the context.  NULL when not available. */
-    int (*field)(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
-                 double *grad, char *err, size_t errlen);
+     * Callable from several threads at once, each passing a context of its
+     * own (base/context.h): a failure's message goes to that ctx, not the
+     * solver's.  NULL when not available. */
+    int (*field)(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
+                 double *uh, double *grad);
     size_t (*node_count)(const tf_solver *s);
     const double *(*coords)(const tf_solver *s); /* 3 per node, mm */
     /* The time split and any warnings, through the context's log. */
@@ -151,11 +152,11 @@ int tf_solver_history(tf_solver *s, int contact, const double (*forces)[3], size
 int tf_solver_reactions(const tf_solver *s, int contact, const double force[3], const double *u,
                         double *r);
 
-/* The displacement field at points (see tf_solver_ops.field; thread-safe,
- * the message in err).  Returns 0, or -1 (no field from this solver, a
- * failed evaluation). */
-int tf_solver_field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
-                    double *grad, char *err, size_t errlen);
+/* The displacement field at points (see tf_solver_ops.field; thread-safe
+ * with a context per thread, the message in ctx->err).  Returns 0, or -1
+ * (no field from this solver, a failed evaluation). */
+int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
+                    double *uh, double *grad);
 
 size_t tf_solver_node_count(const tf_solver *s);
 const double *tf_solver_coords(const tf_solver *s);

@@ -131,25 +131,23 @@ static int block_pattern(const tf_nodesets *cs, const tf_nodesets *nc, tf_nodese
     return oom ? -1 : rc;
 }
 
-static int scalar_pattern(const tf_nodesets *bp, tf_csc *k, char *err, size_t errlen)
+static int scalar_pattern(tf_ctx *ctx, const tf_nodesets *bp, tf_csc *k)
 {
     size_t nn = bp->count, nnz = 0;
     for (size_t b = 0; b < nn; ++b) {
         /* a node in no cell has an empty list (not even itself): nothing
          * integrates its row, and 9 (len - 1) would wrap */
         if (bp->ptr[b + 1] == bp->ptr[b]) {
-            snprintf(err, errlen,
-                     "node %zu lies in no integration cell's support: nothing integrates its "
-                     "stiffness (a cut or the background cells leave it uncovered)",
-                     b + 1);
-            return -1;
+            return tf_fail(ctx,
+                           "node %zu lies in no integration cell's support: nothing integrates its "
+                           "stiffness (a cut or the background cells leave it uncovered)",
+                           b + 1);
         }
         nnz += 6 + 9 * (bp->ptr[b + 1] - bp->ptr[b] - 1);
     }
     if (nnz > INT_MAX) {
-        snprintf(err, errlen, "the stiffness matrix has %zu entries, more than this build handles",
-                 nnz);
-        return -1;
+        return tf_fail(ctx, "the stiffness matrix has %zu entries, more than this build handles",
+                       nnz);
     }
     k->n = 3 * nn;
     k->nnz = nnz;
@@ -157,8 +155,7 @@ static int scalar_pattern(const tf_nodesets *bp, tf_csc *k, char *err, size_t er
     k->i = malloc(nnz * sizeof *k->i);
     k->x = calloc(nnz, sizeof *k->x);
     if (!k->p || !k->i || !k->x) {
-        snprintf(err, errlen, "out of memory for a stiffness matrix of %zu entries", nnz);
-        return -1;
+        return tf_fail(ctx, "out of memory for a stiffness matrix of %zu entries", nnz);
     }
     size_t q = 0;
     for (size_t b = 0; b < nn; ++b) {
@@ -178,18 +175,17 @@ static int scalar_pattern(const tf_nodesets *bp, tf_csc *k, char *err, size_t er
     return 0;
 }
 
-int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, int threads, tf_nodesets *blocks,
-                tf_csc *k, char *err, size_t errlen)
+int tf_sparsity(tf_ctx *ctx, const tf_nodesets *cells, size_t n_nodes, int threads,
+                tf_nodesets *blocks, tf_csc *k)
 {
     tf_nodesets nc = {0};
     memset(k, 0, sizeof *k);
     if (invert(cells, n_nodes, &nc) != 0 || block_pattern(cells, &nc, blocks, threads) != 0) {
         tf_nodesets_free(&nc);
-        snprintf(err, errlen, "out of memory for the sparsity pattern");
-        return -1;
+        return tf_fail(ctx, "out of memory for the sparsity pattern");
     }
     tf_nodesets_free(&nc);
-    return scalar_pattern(blocks, k, err, errlen);
+    return scalar_pattern(ctx, blocks, k);
 }
 
 long tf_sparsity_find(const tf_csc *k, size_t row, size_t col, size_t from)

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "numerics/csc.h"
 
 /* Lists of nodes in compressed rows: list k is nodes[ptr[k] .. ptr[k+1]). */
@@ -30,8 +31,8 @@ int tf_nodesets_pack(tf_nodesets *s, uint32_t **lists, const size_t *len, size_t
  * 3b + j .. 3b + 2, then 3a .. 3a + 2 for each node a > b, on `threads`
  * OpenMP threads (the same result for any count).  Returns 0, or -1 with a
  * message. */
-int tf_sparsity(const tf_nodesets *cells, size_t n_nodes, int threads, tf_nodesets *blocks,
-                tf_csc *k, char *err, size_t errlen);
+int tf_sparsity(tf_ctx *ctx, const tf_nodesets *cells, size_t n_nodes, int threads,
+                tf_nodesets *blocks, tf_csc *k);
 
 /* Position of entry (3a + i, 3b + j), a >= b and i >= j when a == b, in
  * K's values; pos is the index of a in b's block list (0 for b itself). */

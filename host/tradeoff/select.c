@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int tf_mcu_parse(const char *text, tf_mcu *mcu, char *err, size_t errlen)
+int tf_mcu_parse(tf_ctx *ctx, const char *text, tf_mcu *mcu)
 {
     char core[32];
     const char *at = strchr(text, '@');
@@ -24,20 +24,17 @@ int tf_mcu_parse(const char *text, tf_mcu *mcu, char *err, size_t errlen)
     } else if (strcmp(core, "cortex-m7") == 0) {
         mcu->core = TF_CORE_M7;
     } else {
-        snprintf(err, errlen,
-                 "--mcu '%s': cycle estimates exist for cortex-m4f and cortex-m7 "
-                 "(e.g. cortex-m4f@168)",
-                 text);
-        return -1;
+        return tf_fail(ctx,
+                       "--mcu '%s': cycle estimates exist for cortex-m4f and cortex-m7 "
+                       "(e.g. cortex-m4f@168)",
+                       text);
     }
     mcu->mhz = tf_core_mhz(mcu->core);
     if (at != NULL) {
         char *end;
         mcu->mhz = strtod(at + 1, &end);
         if (*end != '\0' || !(mcu->mhz > 0) || !isfinite(mcu->mhz)) {
-            snprintf(err, errlen, "--mcu '%s': the clock after @ is a positive number of MHz",
-                     text);
-            return -1;
+            return tf_fail(ctx, "--mcu '%s': the clock after @ is a positive number of MHz", text);
         }
     }
     return 0;
@@ -101,16 +98,15 @@ static void extremes(const tf_sweep *sw, const tf_mcu *mcu, const tf_candidate *
     }
 }
 
-int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double max_error_mm,
-              double contact_tol, tf_selection *sel, char *why, size_t whylen)
+int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_us,
+              double max_error_mm, double contact_tol, tf_selection *sel)
 {
     const tf_candidate *fast, *accurate;
     sel->contact = pick_contact(sw, mcu, contact_tol, &sel->contact_within_tol);
     sel->forward = NULL;
     extremes(sw, mcu, &fast, &accurate);
     if (sel->contact == NULL || fast == NULL) {
-        snprintf(why, whylen, "no passive contact inverse, or no forward model");
-        return -1;
+        return tf_fail(ctx, "no passive contact inverse, or no forward model");
     }
     const double contact_us = tf_candidate_us(sel->contact, mcu);
     for (size_t i = 0; i < sw->n; ++i) {
@@ -147,12 +143,11 @@ int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double ma
     } else {
         snprintf(what, sizeof what, "a %.3g mm error", max_error_mm);
     }
-    snprintf(why, whylen,
-             "no model fits %s on %s (estimated upper bounds).  Fastest: %s, %.2f us plus "
-             "%.2f us for the contact inverse, held-out max %.3g mm.  Most accurate: %s, "
-             "held-out max %.3g mm, %.2f us plus %.2f us",
-             what, mcu->name, fast->label, tf_candidate_us(fast, mcu), contact_us,
-             fast->heldout_max, accurate->label, accurate->heldout_max,
-             tf_candidate_us(accurate, mcu), contact_us);
-    return -1;
+    return tf_fail(ctx,
+                   "no model fits %s on %s (estimated upper bounds).  Fastest: %s, %.2f us plus "
+                   "%.2f us for the contact inverse, held-out max %.3g mm.  Most accurate: %s, "
+                   "held-out max %.3g mm, %.2f us plus %.2f us",
+                   what, mcu->name, fast->label, tf_candidate_us(fast, mcu), contact_us,
+                   fast->heldout_max, accurate->label, accurate->heldout_max,
+                   tf_candidate_us(accurate, mcu), contact_us);
 }

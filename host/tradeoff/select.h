@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "cost/cycles.h"
 #include "tradeoff/sweep.h"
 
@@ -20,7 +21,7 @@ typedef struct tf_mcu {
 
 /* "cortex-m4f@168", "cortex-m7@480" (MHz after @; the default clock when
  * omitted).  Returns 0, or -1 with a message. */
-int tf_mcu_parse(const char *text, tf_mcu *mcu, char *err, size_t errlen);
+int tf_mcu_parse(tf_ctx *ctx, const char *text, tf_mcu *mcu);
 
 /* Estimated microseconds of a float32 candidate on mcu (upper bound). */
 double tf_candidate_us(const tf_candidate *c, const tf_mcu *mcu);
@@ -37,7 +38,7 @@ typedef struct tf_selection {
  * budget_us is NAN) the cheapest within max_error_mm; with both, the
  * cheapest within the error that fits the budget.  Returns 0, or -1 with a
  * message that states the best achievable on each axis. */
-int tf_select(const tf_sweep *sw, const tf_mcu *mcu, double budget_us, double max_error_mm,
-              double contact_tol, tf_selection *sel, char *why, size_t whylen);
+int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_us,
+              double max_error_mm, double contact_tol, tf_selection *sel);
 
 #endif /* TF_SELECT_H */

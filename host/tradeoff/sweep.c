@@ -140,7 +140,7 @@ static void fill_common(tf_candidate *c, const tf_model *m, const char *label, t
     c->us_m4f = c->us_m4f_low = c->us_m7 = c->ns_native = NAN;
 }
 
-static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set set,
+static int add_f32(tf_ctx *ctx, tf_sweep *sw, tf_model *m, const char *label, tf_output_set set,
                    const tf_fitdata *held)
 {
     if (grow(sw) != 0) {
@@ -164,8 +164,7 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
     m->heldout_cases = (uint32_t)held->n_cases;
 
     const int contact = is_inverse(m);
-    char why[512];
-    const int passivity = contact ? tf_passivity_require(m, why, sizeof why) : 0;
+    const int passivity = contact ? tf_passivity_require(ctx, m) : 0;
     if (passivity < 0) {
         return -1;
     }
@@ -192,11 +191,10 @@ static int add_f32(tf_sweep *sw, tf_model *m, const char *label, tf_output_set s
 }
 
 /* The Q31 form of a float32 candidate (families that have one). */
-static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
-                   const tf_fitdata *held)
+static int add_q31(tf_ctx *ctx, tf_sweep *sw, const tf_model *m, const char *label,
+                   tf_output_set set, const tf_fitdata *held)
 {
-    char err[256];
-    tf_q31 *q = tf_family_of(m->family)->q31(m, err, sizeof err);
+    tf_q31 *q = tf_family_of(m->family)->q31(ctx, m);
     if (q == NULL) {
         return 0; /* no Q31 form: not a candidate */
     }
@@ -245,18 +243,17 @@ static int add_q31(tf_sweep *sw, const tf_model *m, const char *label, tf_output
 }
 
 /* The float64 form of a float32 candidate (families that have one). */
-static int add_f64(tf_sweep *sw, const tf_model *m, const char *label, tf_output_set set,
-                   const tf_cases *cases, char *err, size_t errlen)
+static int add_f64(tf_ctx *ctx, tf_sweep *sw, const tf_model *m, const char *label,
+                   tf_output_set set, const tf_cases *cases)
 {
     if (grow(sw) != 0) {
-        snprintf(err, errlen, "out of memory for the candidates");
-        return -1;
+        return tf_fail(ctx, "out of memory for the candidates");
     }
     tf_candidate *c = &sw->c[sw->n];
     fill_common(c, m, label, TF_PREC_F64, set);
     c->n_coef = m->n_coef;
     c->table_bytes = 8 * m->n_coef + 4 * (m->n_dims + m->n_out);
-    if (c->family->f64_errors(m, cases, &c->heldout_max, &c->heldout_rms, err, errlen) != 0) {
+    if (c->family->f64_errors(ctx, m, cases, &c->heldout_max, &c->heldout_rms) != 0) {
         return -1;
     }
     ++sw->n;
@@ -269,8 +266,7 @@ typedef struct measure_job {
     tf_sweep *sw;
     tf_output_set set;
     const tf_cases *cases;
-    char *err;
-    size_t errlen;
+    tf_ctx *ctx;
 } measure_job;
 
 static int measure(void *arg, tf_model *m)
@@ -281,16 +277,16 @@ static int measure(void *arg, tf_model *m)
     f->orders_text(m, TF_ORDERS_SHORT, orders, sizeof orders);
     snprintf(label, sizeof label, "%s %s", f->name, orders);
     int rc = 0;
-    if (f->q31 != NULL && add_q31(j->sw, m, label, j->set, &j->cases->heldout) != 0) {
-        snprintf(j->err, j->errlen, "out of memory for the candidates");
+    if (f->q31 != NULL && add_q31(j->ctx, j->sw, m, label, j->set, &j->cases->heldout) != 0) {
+        tf_fail(j->ctx, "out of memory for the candidates");
         rc = -1;
     }
     if (rc == 0 && f->f64_errors != NULL &&
-        add_f64(j->sw, m, label, j->set, j->cases, j->err, j->errlen) != 0) {
+        add_f64(j->ctx, j->sw, m, label, j->set, j->cases) != 0) {
         rc = -1;
     }
-    if (rc == 0 && add_f32(j->sw, m, label, j->set, &j->cases->heldout) != 0) {
-        snprintf(j->err, j->errlen, "out of memory for the candidates");
+    if (rc == 0 && add_f32(j->ctx, j->sw, m, label, j->set, &j->cases->heldout) != 0) {
+        tf_fail(j->ctx, "out of memory for the candidates");
         rc = -1;
     }
     if (rc != 0) {
@@ -325,12 +321,9 @@ static int outputs_of(const tf_problem *s, const tf_solver *solver, tf_output_se
     return 0;
 }
 
-static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
+static int sweep_set(tf_ctx *ctx, tf_sweep *sw, const tf_problem *s, tf_solver *solver,
                      const tf_fit_plan *plan, tf_output_set set)
 {
-    tf_ctx *ctx = solver->ctx;
-    char *err = ctx->err;
-    const size_t errlen = sizeof ctx->err;
     tf_problem copy;
     uint32_t *nodes;
     tf_cases cases;
@@ -341,19 +334,21 @@ static int sweep_set(tf_sweep *sw, const tf_problem *s, tf_solver *solver,
     superposed.direct = 0;
     if (tf_cases_build(&copy, solver, &superposed, &cases) != 0) {
         free(nodes);
+        if (ctx != solver->ctx) { /* the solves report in the solver's context */
+            tf_fail(ctx, "%s", solver->ctx->err);
+        }
         return -1;
     }
-    measure_job job = {.sw = sw, .set = set, .cases = &cases, .err = err, .errlen = errlen};
+    measure_job job = {.sw = sw, .set = set, .cases = &cases, .ctx = ctx};
     int rc = 0;
     tf_info(ctx, "sweep: %s (%u output points)", tf_output_set_name(set), cases.train.n_out);
     for (size_t i = 0; rc == 0 && i < tf_family_count(); ++i) {
         const tf_family *f = tf_family_at(i);
-        char why[320];
         if ((f->kind == TF_FAMILY_INVERSE && set != TF_SET_SCENE) ||
-            f->applicable(&cases, plan, why, sizeof why) != 0) {
+            f->applicable(ctx, &cases, plan) != 0) { /* the reason, in ctx->err, is not a failure */
             continue;
         }
-        rc = f->candidates(&cases, plan, measure, &job, err, errlen);
+        rc = f->candidates(ctx, &cases, plan, measure, &job);
     }
     tf_cases_free(&cases);
     free(nodes);
@@ -381,14 +376,14 @@ static void mark_pareto(tf_sweep *sw)
     }
 }
 
-int tf_sweep_run(const tf_problem *s, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
-                 tf_sweep *sw)
+int tf_sweep_run(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, const tf_fit_plan *plan,
+                 unsigned sets, tf_sweep *sw)
 {
     memset(sw, 0, sizeof *sw);
     sw->n_train = plan->n_train;
     sw->n_heldout = plan->n_heldout;
     for (int set = 0; set < TF_SET_COUNT; ++set) {
-        if ((sets & (1u << set)) && sweep_set(sw, s, solver, plan, (tf_output_set)set) != 0) {
+        if ((sets & (1u << set)) && sweep_set(ctx, sw, s, solver, plan, (tf_output_set)set) != 0) {
             tf_sweep_free(sw);
             return -1;
         }

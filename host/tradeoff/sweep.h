@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "fitting/families/family.h"
 #include "fitting/plan.h"
 #include "model/model.h"
@@ -53,9 +54,10 @@ typedef struct tf_sweep {
 #define TF_SWEEP_ALL_SETS ((1u << TF_SET_COUNT) - 1u)
 
 /* Fits and measures every candidate of problem p with a solver of it.
- * Returns 0, or -1 with a message in the solver's context. */
-int tf_sweep_run(const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan, unsigned sets,
-                 tf_sweep *out);
+ * Returns 0, or -1 with a message in ctx->err (usually the context the
+ * solver was created with). */
+int tf_sweep_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
+                 unsigned sets, tf_sweep *out);
 void tf_sweep_free(tf_sweep *sw);
 
 const char *tf_precision_name(tf_precision p);

@@ -19,10 +19,11 @@ typedef struct sums {
     double e2, u2, ee, ue;
 } sums;
 
-/* A thread's buffers for the points of one cell. */
+/* A thread's buffers for the points of one cell, and its own context: the
+ * threads must not write the caller's (context.h). */
 typedef struct cell_buf {
     double *x, *w, *uh, *gh;
-    char err[256];
+    tf_ctx ctx;
 } cell_buf;
 
 static double energy_density(const double d[36], const double g[9])
@@ -44,7 +45,7 @@ static int cell_sums(const tf_solver *s, const double *u, const tf_cells *q, con
     for (size_t p = 0; p < np; ++p) {
         tf_cells_point(q, cell, p, b->x + 3 * p, &b->w[p]);
     }
-    if (tf_solver_field(s, u, b->x, np, b->uh, b->gh, b->err, sizeof b->err) != 0) {
+    if (tf_solver_field(&b->ctx, s, u, b->x, np, b->uh, b->gh) != 0) {
         return -1;
     }
     for (size_t p = 0; p < np; ++p) {
@@ -64,18 +65,22 @@ static int cell_sums(const tf_solver *s, const double *u, const tf_cells *q, con
     return 0;
 }
 
-/* Every cell's sums, in parallel; the lowest failing cell's message in err. */
-static int all_cells(const tf_solver *s, const double *u, const tf_cells *q, const double d[36],
-                     sums *per, char *err, size_t errlen)
+/* Every cell's sums, in parallel; the lowest failing cell's message in ctx->err. */
+static int all_cells(tf_ctx *ctx, const tf_solver *s, const double *u, const tf_cells *q,
+                     const double d[36], sums *per)
 {
     const size_t nc = tf_cells_count(q), np = tf_cells_points(q);
     size_t failed = nc;
     openblas_set_num_threads(1); /* LAPACK inside OpenMP threads: one thread each */
 #pragma omp parallel num_threads(tf_ctx_threads(s->ctx))
     {
-        cell_buf b = {.x = malloc(3 * np * sizeof(double)), .w = malloc(np * sizeof(double)),
-                      .uh = malloc(3 * np * sizeof(double)), .gh = malloc(9 * np * sizeof(double)),
-                      .err = "out of memory"};
+        cell_buf b = {.x = malloc(3 * np * sizeof(double)),
+                      .w = malloc(np * sizeof(double)),
+                      .uh = malloc(3 * np * sizeof(double)),
+                      .gh = malloc(9 * np * sizeof(double))};
+        tf_ctx_init(&b.ctx);
+        tf_fail(&b.ctx, "out of memory"); /* the message when an allocation failed */
+        b.ctx.threads = 1;                /* loops below this one run on its thread alone */
         int ok = b.x && b.w && b.uh && b.gh;
 #pragma omp for schedule(dynamic, 8)
         for (size_t c = 0; c < nc; ++c) {
@@ -83,7 +88,7 @@ static int all_cells(const tf_solver *s, const double *u, const tf_cells *q, con
 #pragma omp critical(tf_error_norm_fail)
                 if (c < failed) {
                     failed = c;
-                    snprintf(err, errlen, "%s", b.err);
+                    tf_fail(ctx, "%s", b.ctx.err); /* the lowest failing cell's */
                 }
             }
         }
@@ -116,10 +121,9 @@ int tf_error_norms(const tf_solver *s, const double *u, unsigned order, double *
     if (per == NULL) {
         return tf_fail(s->ctx, "out of memory");
     }
-    char why[256];
-    if (all_cells(s, u, &q, d, per, why, sizeof why) != 0) {
+    if (all_cells(s->ctx, s, u, &q, d, per) != 0) {
         free(per);
-        return tf_fail(s->ctx, "the error integral: %s", why);
+        return tf_fail(s->ctx, "the error integral: %s", s->ctx->err);
     }
     /* Summed in cell order: the same bits whatever the thread count. */
     sums t = {0, 0, 0, 0};

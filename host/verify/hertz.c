@@ -49,17 +49,16 @@ static tf_colloc *body(const tf_hertz_opts *o, const tf_hertz_cloud *hc, tf_ctx 
                         .density = 1e-9, .mirrors = mirrors, .n_mirrors = 2};
     tf_material_set(&b.material, "E", o->young); /* (check: the law has both) */
     tf_material_set(&b.material, "nu", o->nu);
-    char err[512];
-    tf_colloc *c = tf_colloc_new(&b, &o->colloc, err, sizeof err);
+    tf_colloc *c = tf_colloc_new(ctx, &b, &o->colloc);
     if (c == NULL) {
-        tf_fail(ctx, "hertz: %s", err);
+        tf_fail(ctx, "hertz: %s", ctx->err);
         return NULL;
     }
     tf_colloc_sphere s = {.centre = {0, 0, o->radius}, .dir = {0, 0, -1}, .radius = o->radius,
                           .drive = TF_COLLOC_INDENT};
-    if (tf_colloc_set_sphere(c, &s, err, sizeof err) != 0) {
+    if (tf_colloc_set_sphere(ctx, c, &s) != 0) {
         tf_colloc_free(c);
-        tf_fail(ctx, "hertz: %s", err);
+        tf_fail(ctx, "hertz: %s", ctx->err);
         return NULL;
     }
     return c;
@@ -84,16 +83,15 @@ int tf_hertz_run(const tf_hertz_opts *o, tf_hertz_row *rows, tf_ctx *ctx)
     tf_colloc_relax_opts ro;
     tf_colloc_relax_defaults(&ro);
     ro.tol = o->tol;
-    char err[512];
     int rc = 0;
     for (size_t k = 0; k < o->n_indent && rc == 0; ++k) {
         double d = o->indent[k] * o->radius, t0 = omp_get_wtime();
         tf_colloc_set_travel(c, d);
         tf_colloc_relax_stats st;
-        int q = tf_colloc_relax(c, &ro, &st, err, sizeof err);
+        int q = tf_colloc_relax(ctx, c, &ro, &st);
         if (q != 0) {
             rc = tf_fail(ctx, "hertz: d/R = %g: %s", o->indent[k],
-                         q < 0 ? err : "the relaxation did not converge");
+                         q < 0 ? ctx->err : "the relaxation did not converge");
             break;
         }
         double F = 4 * tf_colloc_contact_force(c); /* the quarter's, times 4 */

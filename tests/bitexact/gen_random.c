@@ -207,15 +207,16 @@ static int header_resonant(uint64_t seed, const char *path)
     tf_model *models[3] = {resonant(seed, "resonant_a", 0, 1, 1),
                            resonant(seed, "resonant_b", 0, 3, 2),
                            resonant(seed, "resonant_c", 1, 0, 3)};
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int rc = 1;
     if (models[0] != NULL && models[1] != NULL && models[2] != NULL) {
         const tf_emit_info info = {.source = "random resonant test models "
                                              "(tests/bitexact/gen_random.c)",
                                    .golden_seed = seed};
-        rc = tf_emit_header(path, models, 3, &info, err, sizeof err);
+        rc = tf_emit_header(&ctx, path, models, 3, &info);
         if (rc != 0) {
-            fprintf(stderr, "gen_random: %s\n", err);
+            fprintf(stderr, "gen_random: %s\n", ctx.err);
         }
     }
     for (int i = 0; i < 3; ++i) {
@@ -230,7 +231,8 @@ static int header(uint64_t seed, const char *path)
                                         "zhou_a", "zhou_b", "contact_a", "contact_b"};
     tf_model *models[HEADER_MODELS];
     tf_rng r = {seed};
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (int i = 0; i < 8; ++i) {
         models[i] = tf_random_model(&r, names[i], (tfit_family)(1 + i / 2), 1);
         if (models[i] == NULL) {
@@ -249,12 +251,12 @@ static int header(uint64_t seed, const char *path)
     }
     const tf_emit_info info = {.source = "random test models (tests/bitexact/gen_random.c)",
                                .golden_seed = seed};
-    int rc = tf_emit_header(path, models, HEADER_MODELS, &info, err, sizeof err);
+    int rc = tf_emit_header(&ctx, path, models, HEADER_MODELS, &info);
     for (int i = 0; i < HEADER_MODELS; ++i) {
         tf_model_free(models[i]);
     }
     if (rc != 0) {
-        fprintf(stderr, "gen_random: %s\n", err);
+        fprintf(stderr, "gen_random: %s\n", ctx.err);
         return 1;
     }
     return 0;
@@ -270,7 +272,9 @@ static int modal_ranks(uint64_t seed, const char *path)
 {
     tf_model *models[MODAL_RANKS + MODAL_Q15_SHAPES] = {0};
     tf_rng r = {seed};
-    char err[512], name[32];
+    char name[32];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int rc = 1;
     for (uint32_t k = 0; k < MODAL_RANKS; ++k) {
         const uint32_t dims[2] = {tf_rng_below(&r, 5), k + 1};
@@ -297,9 +301,9 @@ static int modal_ranks(uint64_t seed, const char *path)
     const tf_emit_info info = {.source = "random modal models of ranks 1-9, and modal_q15 "
                                          "models (tests/bitexact/gen_random.c)",
                                .golden_seed = seed};
-    rc = tf_emit_header(path, models, MODAL_RANKS + MODAL_Q15_SHAPES, &info, err, sizeof err);
+    rc = tf_emit_header(&ctx, path, models, MODAL_RANKS + MODAL_Q15_SHAPES, &info);
     if (rc != 0) {
-        fprintf(stderr, "gen_random: %s\n", err);
+        fprintf(stderr, "gen_random: %s\n", ctx.err);
     }
 done:
     for (int i = 0; i < MODAL_RANKS + MODAL_Q15_SHAPES; ++i) {

@@ -91,13 +91,12 @@ static double norm3(const double *v)
 static int meshless(const char *scene, const char *const *sets, size_t n_sets, const rows *ref,
                     rows *cand)
 {
-    char err[2048];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load(scene, sets, n_sets, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, scene, sets, n_sets);
     if (s == NULL) {
-        fprintf(stderr, "organ_compare: %s\n", err);
+        fprintf(stderr, "organ_compare: %s\n", ctx.err);
         return -1;
     }
     const tf_problem *p = &s->problem;

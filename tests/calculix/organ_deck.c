@@ -378,13 +378,14 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
 int main(int argc, char **argv)
 {
     options o = {0};
-    char err[2048];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     if (parse(argc, argv, &o) != 0) {
         return usage();
     }
-    tf_scene *sc = tf_scene_load(o.scene, NULL, 0, err, sizeof err);
+    tf_scene *sc = tf_scene_load(&ctx, o.scene, NULL, 0);
     if (sc == NULL) {
-        fprintf(stderr, "organ_deck: %s\n", err);
+        fprintf(stderr, "organ_deck: %s\n", ctx.err);
         return 2;
     }
     const tf_problem *p = &sc->problem;

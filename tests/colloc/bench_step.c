@@ -88,15 +88,16 @@ static tf_colloc *body(double *X, unsigned char *fixed, double *vol)
                         .density = 1e-9};
     tf_material_set(&b.material, "E", 0.32);
     tf_material_set(&b.material, "nu", 0.45);
-    char err[256];
-    tf_colloc *c = tf_colloc_new(&b, NULL, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *c = tf_colloc_new(&ctx, &b, NULL);
     if (c == NULL) {
-        fprintf(stderr, "bench_step: %s\n", err);
+        fprintf(stderr, "bench_step: %s\n", ctx.err);
         exit(1);
     }
     tf_colloc_sphere s = {.centre = {9.5, 9.5, 10}, .dir = {0, 0, -1}, .radius = 10,
                           .drive = TF_COLLOC_INDENT};
-    tf_colloc_set_sphere(c, &s, err, sizeof err);
+    tf_colloc_set_sphere(&ctx, c, &s);
     tf_colloc_set_travel(c, 0.5);
     tf_colloc_fext(c)[3 * (n - 1)] = 1e-3;
     return c;
@@ -118,25 +119,26 @@ int main(int argc, char **argv)
         a[i] = 1.0 / (1 + i % 17);
         a[NREF * NREF + i] = 1.0 / (1 + i % 13);
     }
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int maxt = omp_get_max_threads();
     printf("== collocation: time per explicit step at 6,000 particles ([Aras-MLS]: 20.11 ms; "
            "goal <= 1 ms) ==\n");
     for (int threads = 1; threads <= (maxt < 2 ? 2 : maxt); ++threads) {
         omp_set_num_threads(threads);
         tf_colloc *c = body(X, fixed, vol);
-        double dcrit = tf_colloc_critical_dt(c, err, sizeof err), dt = 0.9 * dcrit;
+        double dcrit = tf_colloc_critical_dt(&ctx, c), dt = 0.9 * dcrit;
         if (threads == 1) {
             printf("stable step: %.4g s (Lanczos), wave bound min r / c_p %.4g s, ratio %.2f; "
                    "steps of 0.9 of it\n", dcrit, tf_colloc_wave_dt(c),
                    dcrit / tf_colloc_wave_dt(c));
         }
-        tf_colloc_run(c, dt, 5, 0, err, sizeof err); /* warm up */
+        tf_colloc_run(&ctx, c, dt, 5, 0); /* warm up */
         for (int k = 0; k < batches; ++k) {
             r[k] = reference(a, a + NREF * NREF, a + 2 * NREF * NREF, &rc[k]);
             double t0 = omp_get_wtime(), c0 = cpu_time();
-            if (tf_colloc_run(c, dt, (size_t)steps, 10, err, sizeof err) != 0) {
-                fprintf(stderr, "bench_step: %s\n", err);
+            if (tf_colloc_run(&ctx, c, dt, (size_t)steps, 10) != 0) {
+                fprintf(stderr, "bench_step: %s\n", ctx.err);
                 return 1;
             }
             t[k] = (omp_get_wtime() - t0) / steps;

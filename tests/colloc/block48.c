@@ -118,12 +118,13 @@ int main(int argc, char **argv)
     o.stab = op.stab >= 0 ? op.stab : o.stab;
     o.support = op.support > 0 ? op.support : o.support;
     o.neighbours = op.neighbours ? op.neighbours : o.neighbours;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double t0 = omp_get_wtime(), out[2];
     size_t steps[2];
-    tf_colloc *c = tf_colloc_new(&body, &o, err, sizeof err);
+    tf_colloc *c = tf_colloc_new(&ctx, &body, &o);
     if (c == NULL) {
-        fprintf(stderr, "block48: %s\n", err);
+        fprintf(stderr, "block48: %s\n", ctx.err);
         return 1;
     }
     for (int load = 0; load < 2; ++load) { /* +x, then -z */
@@ -138,8 +139,8 @@ int main(int argc, char **argv)
         ro.tol = op.tol;
         ro.max_steps = 2000000;
         tf_colloc_relax_stats st;
-        if (tf_colloc_relax(c, &ro, &st, err, sizeof err) != 0) {
-            fprintf(stderr, "block48: %s\n", st.converged ? err : "no convergence");
+        if (tf_colloc_relax(&ctx, c, &ro, &st) != 0) {
+            fprintf(stderr, "block48: %s\n", st.converged ? ctx.err : "no convergence");
             return 1;
         }
         out[load] = (load ? -u[3 * top + 2] : u[3 * top]) / op.load * (load ? -1 : 1);

@@ -52,11 +52,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: bench_cut SCENE [KEY=VALUE]...\n");
         return 2;
     }
-    char err[1024];
-    tf_scene *s = tf_scene_load(argv[1], (const char *const *)argv + 2, (size_t)(argc - 2), err,
-                                sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, argv[1], (const char *const *)argv + 2, (size_t)(argc - 2));
     if (s == NULL) {
-        fprintf(stderr, "bench_cut: %s\n", err);
+        fprintf(stderr, "bench_cut: %s\n", ctx.err);
         return 2;
     }
     const tf_problem *p = &s->problem;
@@ -68,7 +68,7 @@ int main(int argc, char **argv)
         tf_shape sh;
         double t[REPS];
         if (tf_shape_init(&sh, &p->cloud, lo, hi, &p->solver) != 0 ||
-            (m > 0 && tf_shape_set_cuts(&sh, p->cuts, p->n_cuts, err, sizeof err) != 0)) {
+            (m > 0 && tf_shape_set_cuts(&ctx, &sh, p->cuts, p->n_cuts) != 0)) {
             fprintf(stderr, "bench_cut: cannot build the shape functions\n");
             return 1;
         }

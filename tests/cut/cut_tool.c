@@ -76,10 +76,9 @@ static int cod(const tf_problem *p, tf_ctx *ctx)
             q[2] = z;
         }
     }
-    char err[256];
     int rc = 0;
-    if (tf_solver_field(s, u, x, 2 * (STEPS + 1), uh, grad, err, sizeof err) != 0) {
-        fprintf(stderr, "cut_tool: %s\n", err);
+    if (tf_solver_field(ctx, s, u, x, 2 * (STEPS + 1), uh, grad) != 0) {
+        fprintf(stderr, "cut_tool: %s\n", ctx->err);
         rc = 1;
     }
     printf("z,cod\n");
@@ -250,13 +249,12 @@ int main(int argc, char **argv)
     for (int k = first + 1; k < argc; ++k) {
         sets[k - first - 1] = argv[k];
     }
-    char err[1024];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load(argv[first], sets, (size_t)(argc - first - 1), err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, argv[first], sets, (size_t)(argc - first - 1));
     if (s == NULL) {
-        fprintf(stderr, "cut_tool: %s\n", err);
+        fprintf(stderr, "cut_tool: %s\n", ctx.err);
         return 2;
     }
     int rc = strcmp(argv[1], "cod") == 0 ? cod(&s->problem, &ctx) : far(&s->problem, &ctx, bound, all);

@@ -170,10 +170,10 @@ static void row(const study *st, const char *what, int kind, uint32_t order, con
 static void cycles_of(tfit_family fam, uint32_t p, uint32_t k, uint32_t n_out, char *buf,
                       size_t n)
 {
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const uint32_t dims[2] = {p, k};
-    tf_model *m = tf_model_new("x", fam, n_out, dims, fam == TFIT_FAMILY_CUT ? 2 : 1, err,
-                               sizeof err);
+    tf_model *m = tf_model_new(&ctx, "x", fam, n_out, dims, fam == TFIT_FAMILY_CUT ? 2 : 1);
     tf_cycles c4 = tf_model_cycles(m, TF_CORE_M4F), c7 = tf_model_cycles(m, TF_CORE_M7);
     snprintf(buf, n, "%.0f / %.0f", c4.cycles, c7.cycles);
     tf_model_free(m);
@@ -185,14 +185,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: progress_study SCENE [KEY=VALUE]...\n");
         return 2;
     }
-    char err[1024];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *sc = tf_scene_load(argv[1], (const char **)argv + 2, (size_t)(argc - 2), err,
-                                 sizeof err);
+    tf_scene *sc = tf_scene_load(&ctx, argv[1], (const char **)argv + 2, (size_t)(argc - 2));
     if (sc == NULL) {
-        fprintf(stderr, "progress_study: %s\n", err);
+        fprintf(stderr, "progress_study: %s\n", ctx.err);
         return 2;
     }
     tf_fit_plan plan = sc->fit;

@@ -117,9 +117,9 @@ static tf_model *shape_of(const char *name)
     } else {
         sscanf(ord, "\"p=%u\"", &dims[0]);
     }
-    char err[256];
-    return tf_model_new(name, family, (uint32_t)strtoul(nout, NULL, 10), dims, n_dims, err,
-                        sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    return tf_model_new(&ctx, name, family, (uint32_t)strtoul(nout, NULL, 10), dims, n_dims);
 }
 
 static tf_core core_of(const char *s)

@@ -43,11 +43,10 @@
 #define FORCE_RADIUS 1.0   /* N */
 #define CONTACT_NODE 61
 
-static tf_model *forward(char *err, size_t errlen)
+static tf_model *forward(tf_ctx *ctx)
 {
     const uint32_t dims[1] = {1};
-    tf_model *m = tf_model_new("haptic_forward", TFIT_FAMILY_NODAL, GRID * GRID, dims, 1, err,
-                               errlen);
+    tf_model *m = tf_model_new(ctx, "haptic_forward", TFIT_FAMILY_NODAL, GRID * GRID, dims, 1);
     if (m == NULL) {
         return NULL;
     }
@@ -72,11 +71,11 @@ static tf_model *forward(char *err, size_t errlen)
 }
 
 /* The forward model's compliance as the relaxed map of a creeping body. */
-static tf_model *creep(const tf_model *fwd, char *err, size_t errlen)
+static tf_model *creep(tf_ctx *ctx, const tf_model *fwd)
 {
     const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, 2, 1000000};
-    tf_model *m = tf_model_new("haptic_creep", TFIT_FAMILY_PRONY, fwd->n_out, dims,
-                               TFIT_PRONY_DIMS, err, errlen);
+    tf_model *m =
+        tf_model_new(ctx, "haptic_creep", TFIT_FAMILY_PRONY, fwd->n_out, dims, TFIT_PRONY_DIMS);
     if (m == NULL) {
         return NULL;
     }
@@ -94,12 +93,12 @@ static tf_model *creep(const tf_model *fwd, char *err, size_t errlen)
     return m;
 }
 
-static tf_model *contact(uint32_t p, char *err, size_t errlen)
+static tf_model *contact(tf_ctx *ctx, uint32_t p)
 {
     char name[32];
     snprintf(name, sizeof name, "haptic_contact_p%u", p);
     const uint32_t dims[1] = {p};
-    tf_model *m = tf_model_new(name, TFIT_FAMILY_CONTACT, 1, dims, 1, err, errlen);
+    tf_model *m = tf_model_new(ctx, name, TFIT_FAMILY_CONTACT, 1, dims, 1);
     if (m == NULL) {
         return NULL;
     }
@@ -122,10 +121,10 @@ static tf_model *contact(uint32_t p, char *err, size_t errlen)
 
 /* A model of the given shape with small deterministic coefficients: every
  * bound of tf_model_validate stays far below its limit. */
-static tf_model *shaped(const char *name, tfit_family f, uint32_t n_out, const uint32_t *dims,
-                        uint32_t n_dims, tf_rng *r, char *err, size_t errlen)
+static tf_model *shaped(tf_ctx *ctx, const char *name, tfit_family f, uint32_t n_out,
+                        const uint32_t *dims, uint32_t n_dims, tf_rng *r)
 {
-    tf_model *m = tf_model_new(name, f, n_out, dims, n_dims, err, errlen);
+    tf_model *m = tf_model_new(ctx, name, f, n_out, dims, n_dims);
     if (m == NULL) {
         return NULL;
     }
@@ -183,28 +182,29 @@ static int shapes(const char *path)
     enum { N_LIST = sizeof list / sizeof list[0] };
     tf_model *models[N_LIST + 1] = {NULL};
     tf_rng r = {77};
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int rc = 1;
     size_t n = 0;
     for (; n < N_LIST; ++n) {
-        models[n] = shaped(list[n].name, list[n].f, list[n].n_out, list[n].dims, list[n].n_dims,
-                           &r, err, sizeof err);
+        models[n] =
+            shaped(&ctx, list[n].name, list[n].f, list[n].n_out, list[n].dims, list[n].n_dims, &r);
         if (models[n] == NULL) {
             goto done;
         }
     }
-    models[n] = shaped("zhou_edges", TFIT_FAMILY_ZHOU2017, 3, zhou_dims, TFIT_ZHOU2017_DIMS, &r,
-                       err, sizeof err);
+    models[n] =
+        shaped(&ctx, "zhou_edges", TFIT_FAMILY_ZHOU2017, 3, zhou_dims, TFIT_ZHOU2017_DIMS, &r);
     if (models[n++] == NULL) {
         goto done;
     }
     const tf_emit_info info = {
         .source = "loop-structure edge cases for the cycle model (tests/firmware/gen_haptic.c)",
         .golden_seed = 5};
-    rc = tf_emit_header(path, models, n, &info, err, sizeof err) != 0;
+    rc = tf_emit_header(&ctx, path, models, n, &info) != 0;
 done:
     if (rc != 0) {
-        fprintf(stderr, "gen_haptic: %s\n", err);
+        fprintf(stderr, "gen_haptic: %s\n", ctx.err);
     }
     for (size_t i = 0; i < n; ++i) {
         tf_model_free(models[i]);
@@ -221,23 +221,24 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: gen_haptic FILE.h | gen_haptic shapes FILE.h\n");
         return 2;
     }
-    char err[512];
-    tf_model *models[5] = {forward(err, sizeof err), NULL, NULL, NULL, NULL};
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *models[5] = {forward(&ctx), NULL, NULL, NULL, NULL};
     for (uint32_t p = 1; p <= 3 && models[p - 1] != NULL; ++p) {
-        models[p] = contact(p, err, sizeof err);
+        models[p] = contact(&ctx, p);
     }
     if (models[3] != NULL) {
-        models[4] = creep(models[0], err, sizeof err);
+        models[4] = creep(&ctx, models[0]);
     }
     int rc = 1;
     if (models[4] != NULL) {
         const tf_emit_info info = {
             .source = "synthetic block48-shaped test models (tests/firmware/gen_haptic.c)",
             .golden_seed = 48};
-        rc = tf_emit_header(argv[1], models, 5, &info, err, sizeof err) != 0;
+        rc = tf_emit_header(&ctx, argv[1], models, 5, &info) != 0;
     }
     if (rc != 0) {
-        fprintf(stderr, "gen_haptic: %s\n", err);
+        fprintf(stderr, "gen_haptic: %s\n", ctx.err);
     }
     for (int i = 0; i < 5; ++i) {
         tf_model_free(models[i]);

@@ -29,23 +29,23 @@ typedef struct material {
 
 static int check(const char *path, const material *mat)
 {
-    char nu[64], young[64], err[1024];
+    char nu[64], young[64];
     snprintf(nu, sizeof nu, "material.nu=%s", mat->nu);
     snprintf(young, sizeof young, "material.E=%s", mat->young);
     const char *sets[] = {nu, young};
     tf_ctx ctx;
     tf_ctx_init(&ctx);
-    tf_scene *s = tf_scene_load(path, sets, 2, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, path, sets, 2);
     const tf_problem *p = s ? &s->problem : NULL;
     tf_solver *solver = s ? tf_solver_create(p, NULL, &ctx) : NULL;
     tf_fit_plan plan;
     tf_fit_outcome o;
     if (solver == NULL) {
-        printf("nu %s E %s: %s\n", mat->nu, mat->young, s ? ctx.err : err);
+        printf("nu %s E %s: %s\n", mat->nu, mat->young, ctx.err);
         return 1;
     }
     tf_fit_plan_defaults(&plan);
-    if (tf_fit_run(p, solver, &plan, &o) != 0) {
+    if (tf_fit_run(&ctx, p, solver, &plan, &o) != 0) {
         printf("nu %s E %s: fit failed: %s\n", mat->nu, mat->young, ctx.err);
         return 1;
     }
@@ -110,11 +110,12 @@ int main(int argc, char **argv)
     /* the limits the scene reader enforces */
     const char *refused[][2] = {{"material.nu=0.5", "material.nu"}, {"material.E=0", "material.E"}};
     for (size_t i = 0; i < 2; ++i) {
-        char err[1024];
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
         const char *sets[] = {refused[i][0]};
-        tf_scene *s = tf_scene_load(argv[1], sets, 1, err, sizeof err);
-        printf("--set %s: %s\n", refused[i][0], s ? "ACCEPTED" : err);
-        failures += s != NULL || strstr(err, refused[i][1]) == NULL;
+        tf_scene *s = tf_scene_load(&ctx, argv[1], sets, 1);
+        printf("--set %s: %s\n", refused[i][0], s ? "ACCEPTED" : ctx.err);
+        failures += s != NULL || strstr(ctx.err, refused[i][1]) == NULL;
         tf_scene_free(s);
     }
     return failures ? 1 : 0;

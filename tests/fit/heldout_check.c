@@ -43,13 +43,14 @@ static int same(double recomputed, double header)
 static int solved_at(const tf_solver *solver, const tf_problem *p, const tf_contact *ct,
                      const tfit_model *fwd, const double *ui, double *truth)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double grad[9];
     for (uint32_t j = 0; j < fwd->n_out; ++j) {
         const size_t node = p->outputs.points ? 0 : (size_t)fwd->node_ids[j] - 1;
         const double *x = p->outputs.points ? p->outputs.points + 3 * (size_t)j : NULL;
-        if (x != NULL && tf_solver_field(solver, ui, x, 1, truth + 3 * j, grad, err, sizeof err) != 0) {
-            fprintf(stderr, "heldout_check: %s\n", err);
+        if (x != NULL && tf_solver_field(&ctx, solver, ui, x, 1, truth + 3 * j, grad) != 0) {
+            fprintf(stderr, "heldout_check: %s\n", ctx.err);
             return -1;
         }
         for (int k = 0; x == NULL && k < 3; ++k) {
@@ -57,8 +58,8 @@ static int solved_at(const tf_solver *solver, const tf_problem *p, const tf_cont
         }
     }
     double *tc = truth + 3 * fwd->n_out;
-    if (!ct->by_node && tf_solver_field(solver, ui, ct->at, 1, tc, grad, err, sizeof err) != 0) {
-        fprintf(stderr, "heldout_check: %s\n", err);
+    if (!ct->by_node && tf_solver_field(&ctx, solver, ui, ct->at, 1, tc, grad) != 0) {
+        fprintf(stderr, "heldout_check: %s\n", ctx.err);
         return -1;
     }
     if (!ct->by_node) {
@@ -143,7 +144,6 @@ static int forward_errors(const tf_scene *s, const tf_solver *solver, const doub
 
 int main(int argc, char **argv)
 {
-    char err[1024];
     if (argc != 4) {
         fprintf(stderr, "usage: heldout_check SCENE MAX_FORWARD_MM MAX_CONTACT_REL\n");
         return 2;
@@ -151,9 +151,9 @@ int main(int argc, char **argv)
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, argv[1], NULL, 0);
     if (s == NULL) {
-        fprintf(stderr, "heldout_check: %s\n", err);
+        fprintf(stderr, "heldout_check: %s\n", ctx.err);
         return 1;
     }
     const tf_problem *p = &s->problem;

@@ -13,9 +13,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char err[1024];
-    tf_scene *s = tf_scene_load_text((const char *)data, size, "fuzz.yaml", NULL, 0, err,
-                                     sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load_text(&ctx, (const char *)data, size, "fuzz.yaml", NULL, 0);
     tf_scene_free(s);
     return 0;
 }

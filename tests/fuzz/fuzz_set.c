@@ -38,7 +38,9 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *text = malloc(size + 1), err[1024];
+    char *text = malloc(size + 1);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[MAX_SETS];
     size_t n = 0;
     if (text == NULL) {
@@ -53,7 +55,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             *p++ = '\0';
         }
     }
-    tf_scene_free(tf_scene_load_text(scene, scene_len, "block48.yaml", sets, n, err, sizeof err));
+    tf_scene_free(tf_scene_load_text(&ctx, scene, scene_len, "block48.yaml", sets, n));
     free(text);
     return 0;
 }

@@ -108,9 +108,10 @@ static outcome run_ours(const problem *p, int start)
     tf_lsfit_options o;
     tf_nist_options(&o, p->d.n_par);
     tf_nist_score s;
-    char err[256];
-    if (tf_nist_fit(&p->d, p->model, start, &o, 0, &s, err, sizeof err) != 0) {
-        fprintf(stderr, "bench_gsl: %s\n", err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_nist_fit(&ctx, &p->d, p->model, start, &o, 0, &s) != 0) {
+        fprintf(stderr, "bench_gsl: %s\n", ctx.err);
         exit(1);
     }
     outcome r = {digits(p, s.estimate, s.rss), s.evals, s.jac_evals};
@@ -158,9 +159,10 @@ static void load_all(problem *pr, size_t *np)
 {
     const char *const *names = tf_nist_suite(np);
     for (size_t k = 0; k < *np; ++k) {
-        char err[512];
-        if (tf_nist_load(DIR, names[k], &pr[k].d, &pr[k].model, err, sizeof err) != 0) {
-            fprintf(stderr, "bench_gsl: %s\n", err);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (tf_nist_load(&ctx, DIR, names[k], &pr[k].d, &pr[k].model) != 0) {
+            fprintf(stderr, "bench_gsl: %s\n", ctx.err);
             exit(1);
         }
         pr[k].y = malloc(pr[k].d.n_obs * sizeof *pr[k].y);

@@ -77,9 +77,10 @@ static outcome run_ours(const tf_mgh_run *r)
     tf_lm_options o;
     tf_mgh_options(&o, r->n);
     tf_mgh_score s;
-    char err[256];
-    if (tf_mgh_fit(r, &o, NULL, &s, err, sizeof err) != 0) {
-        fprintf(stderr, "bench_mgh_gsl: %s\n", err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_mgh_fit(&ctx, r, &o, NULL, &s) != 0) {
+        fprintf(stderr, "bench_mgh_gsl: %s\n", ctx.err);
         exit(1);
     }
     outcome a = {tf_stop_converged(s.stop), s.minimum, s.evals, s.jac_evals};

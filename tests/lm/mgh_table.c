@@ -68,9 +68,10 @@ int main(int argc, char **argv)
             scales(scale, r->n, s);
         }
         tf_mgh_score sc;
-        char err[256];
-        if (tf_mgh_fit(r, &o, scale != NULL ? s : NULL, &sc, err, sizeof err) != 0) {
-            fprintf(stderr, "mgh_table: %s\n", err);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (tf_mgh_fit(&ctx, r, &o, scale != NULL ? s : NULL, &sc) != 0) {
+            fprintf(stderr, "mgh_table: %s\n", ctx.err);
             return 1;
         }
         int ok = tf_stop_converged(sc.stop);

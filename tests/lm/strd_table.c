@@ -40,9 +40,10 @@ static void one_run(const tf_nist *d, const tf_nist_model *model, int start,
                     const tf_lsfit_options *o, int fd, int rows, totals *t)
 {
     tf_nist_score s;
-    char err[512];
-    if (tf_nist_fit(d, model, start, o, fd, &s, err, sizeof err) != 0) {
-        fprintf(stderr, "strd_table: %s\n", err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_nist_fit(&ctx, d, model, start, o, fd, &s) != 0) {
+        fprintf(stderr, "strd_table: %s\n", ctx.err);
         exit(1);
     }
     double par = min_of(s.lre, d->n_par), se = min_of(s.se_lre, d->n_par);
@@ -102,9 +103,10 @@ int main(int argc, char **argv)
     for (size_t k = 0; k < n; ++k) {
         tf_nist d;
         const tf_nist_model *model;
-        char err[512];
-        if (tf_nist_load(DIR, names[k], &d, &model, err, sizeof err) != 0) {
-            fprintf(stderr, "strd_table: %s\n", err);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (tf_nist_load(&ctx, DIR, names[k], &d, &model) != 0) {
+            fprintf(stderr, "strd_table: %s\n", ctx.err);
             return 1;
         }
         tf_lsfit_options o;

@@ -46,14 +46,15 @@ static double d2(const double *a, const float *b)
 
 int main(int argc, char **argv)
 {
-    char err[2048];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     if (argc != 2) {
         fprintf(stderr, "usage: map_check SCENE\n");
         return 2;
     }
-    tf_scene *sc = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_scene *sc = tf_scene_load(&ctx, argv[1], NULL, 0);
     if (sc == NULL) {
-        fprintf(stderr, "map_check: %s\n", err);
+        fprintf(stderr, "map_check: %s\n", ctx.err);
         return 1;
     }
     const tf_mesh_geometry *m = tf_problem_mesh(&sc->problem);

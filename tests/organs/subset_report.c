@@ -24,13 +24,12 @@ static double norm3(const double *v)
 
 static int report(const char *path)
 {
-    char err[2048];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load(path, NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, path, NULL, 0);
     if (s == NULL) {
-        fprintf(stderr, "subset_report: %s\n", err);
+        fprintf(stderr, "subset_report: %s\n", ctx.err);
         return -1;
     }
     const tf_problem *p = &s->problem;

@@ -118,11 +118,10 @@ static int verdict(const char *header, const char *scene_name, double worst, dou
  * printed) when the scene does not load, *solver NULL when it does not build. */
 static tf_scene *scene_and_solver(const char *path, tf_ctx *ctx, tf_solver **solver)
 {
-    char err[1024];
-    tf_scene *s = tf_scene_load(path, NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(ctx, path, NULL, 0);
     *solver = NULL;
     if (s == NULL) {
-        fprintf(stderr, "physics_check: %s\n", err);
+        fprintf(stderr, "physics_check: %s\n", ctx->err);
         return NULL;
     }
     tf_ctx_init(ctx);
@@ -152,7 +151,8 @@ static int nonlinear_case(tf_solver *sv, const tf_problem *p, const double f[3],
     const size_t dofs = 3 * p->cloud.n;
     double *u = malloc(LEVELS * dofs * sizeof *u), *grad = malloc(9 * ref->n * sizeof *grad);
     double *uh = malloc(3 * ref->n * sizeof *uh), level[LEVELS][3];
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (int l = 0; l < LEVELS; ++l) {
         for (int k = 0; k < 3; ++k) {
             level[l][k] = f[k] * (l + 1) / LEVELS;
@@ -163,8 +163,8 @@ static int nonlinear_case(tf_solver *sv, const tf_problem *p, const double f[3],
         rc = tf_solver_solve(sv, 0, (const double(*)[3])level[l], 1, l ? u + (size_t)(l - 1) * dofs : NULL,
                              u + (size_t)l * dofs);
     }
-    rc = rc ? rc : tf_solver_field(sv, u + (LEVELS - 1) * dofs, &ref->x[0][0], ref->n, uh, grad, err,
-                                   sizeof err);
+    rc = rc ? rc
+            : tf_solver_field(&ctx, sv, u + (LEVELS - 1) * dofs, &ref->x[0][0], ref->n, uh, grad);
     const long at = rc == 0 ? site_point(sv, p, ref) : -1;
     for (size_t j = 0; rc == 0 && j < ref->n; ++j) {
         double e[3];
@@ -254,7 +254,6 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    char err[1024];
     tf_ctx ctx;
     tf_solver *sv;
     tf_scene *s = scene_and_solver(argv[1], &ctx, &sv);
@@ -268,8 +267,8 @@ int main(int argc, char **argv)
     static double d[3][MAXP][3];
     int rc = sv && u && grad ? tf_solver_solve(sv, 0, unit, 3, NULL, u) : -1;
     for (int a = 0; rc == 0 && a < 3; ++a) {
-        rc = tf_solver_field(sv, u + (size_t)a * dofs, &ref[a].x[0][0], np, &d[a][0][0], grad, err,
-                             sizeof err);
+        rc =
+            tf_solver_field(&ctx, sv, u + (size_t)a * dofs, &ref[a].x[0][0], np, &d[a][0][0], grad);
         for (size_t j = 0; j < np; ++j) {
             for (int k = 0; k < 3; ++k) {
                 d[a][j][k] -= ref[a].u[j][k];

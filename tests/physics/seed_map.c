@@ -37,10 +37,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: seed_map SEED_SCENE\n");
         return 2;
     }
-    char err[1024];
-    tf_scene *s = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, argv[1], NULL, 0);
     if (s == NULL) {
-        fprintf(stderr, "seed_map: %s\n", err);
+        fprintf(stderr, "seed_map: %s\n", ctx.err);
         return 2;
     }
     const tf_problem *p = &s->problem;

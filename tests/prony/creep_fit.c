@@ -53,7 +53,7 @@ static int parse_creep(const char *s, tf_creep *c, char *what, size_t n)
 
 int main(int argc, char **argv)
 {
-    char err[1024], what[256];
+    char what[256];
     tf_creep creep;
     if (argc != 5 || parse_creep(argv[2], &creep, what, sizeof what) != 0) {
         fprintf(stderr, "usage: creep_fit SCENE kelvin:K1,K2,ETA|two:W1,TAU1,W2,TAU2 OUT.h MAX_REL\n");
@@ -63,9 +63,9 @@ int main(int argc, char **argv)
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *scene = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_scene *scene = tf_scene_load(&ctx, argv[1], NULL, 0);
     if (scene == NULL) {
-        fprintf(stderr, "creep_fit: %s\n", err);
+        fprintf(stderr, "creep_fit: %s\n", ctx.err);
         return 1;
     }
     tf_fit_plan plan = scene->fit;
@@ -76,9 +76,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "creep_fit: %s\n", ctx.err);
         return 1;
     }
-    if (tf_histories_linear_creep(&cases, &creep, TICK_NS, N_TRAIN, N_HELDOUT, N_TICKS, SEED,
-                                  &hist, err, sizeof err) != 0) {
-        fprintf(stderr, "creep_fit: %s\n", err);
+    if (tf_histories_linear_creep(&ctx, &cases, &creep, TICK_NS, N_TRAIN, N_HELDOUT, N_TICKS, SEED,
+                                  &hist) != 0) {
+        fprintf(stderr, "creep_fit: %s\n", ctx.err);
         return 1;
     }
     cases.hist = &hist;
@@ -93,14 +93,14 @@ int main(int argc, char **argv)
     tf_family_result r;
     memset(&r, 0, sizeof r);
     r.family = f;
-    if (f->select(&cases, &plan, &r, err, sizeof err) != 0) {
-        fprintf(stderr, "creep_fit: %s\n", err);
+    if (f->select(&ctx, &cases, &plan, &r) != 0) {
+        fprintf(stderr, "creep_fit: %s\n", ctx.err);
         return 1;
     }
     tf_model *m = r.model;
     double max, rms, rel;
     uint32_t n_hist;
-    f->heldout(m, &cases, &max, &rms, &rel, &n_hist);
+    f->heldout(&ctx, m, &cases, &max, &rms, &rel, &n_hist);
     char orders[128];
     f->orders_text(m, TF_ORDERS_FULL, orders, sizeof orders);
     printf("  fitted: %s\n", orders);
@@ -126,9 +126,9 @@ int main(int argc, char **argv)
                                          "histories (tests/prony/creep_fit.c)",
                                .golden_seed = 14};
     tf_model *one[1] = {m};
-    int rc = tf_emit_header(argv[3], one, 1, &info, err, sizeof err);
+    int rc = tf_emit_header(&ctx, argv[3], one, 1, &info);
     if (rc != 0) {
-        fprintf(stderr, "creep_fit: %s\n", err);
+        fprintf(stderr, "creep_fit: %s\n", ctx.err);
     }
     const int ok = rc == 0 && rel <= max_rel;
     printf("%s: held-out error %.3g %% of the peak %s %.3g %%\n", ok ? "ok" : "FAIL", 100 * rel,

@@ -26,11 +26,11 @@
 /* The header's model as a host model (tables copied). */
 static tf_model *host_copy(const tfit_model *t)
 {
-    char err[256];
-    tf_model *m = tf_model_new("m", (tfit_family)t->family, t->n_out, t->dims, t->n_dims, err,
-                               sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "m", (tfit_family)t->family, t->n_out, t->dims, t->n_dims);
     if (m == NULL) {
-        fprintf(stderr, "long_ref: %s\n", err);
+        fprintf(stderr, "long_ref: %s\n", ctx.err);
         exit(1);
     }
     memcpy(m->coef, t->coef, t->n_coef * sizeof *m->coef);

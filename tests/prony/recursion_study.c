@@ -54,8 +54,9 @@ static double press(long n, long hold)
 static errors run(double r, long ticks, int random_input)
 {
     const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, 1, 1000000};
-    char err[256];
-    tf_model *m = tf_model_new("s", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "s", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS);
     const double tau = TICK / r;
     tf_prony_set_term(m, 0, tau, 1.0);
     float *rows = tf_model_tables(m) + 2;

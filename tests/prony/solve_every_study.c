@@ -57,7 +57,6 @@ static int resolve(const tf_cases *c, const tf_history_set *s, size_t h, size_t 
 
 int main(int argc, char **argv)
 {
-    char err[1024];
     size_t ms[MAX_M], nm = 0;
     if (argc != 3) {
         fprintf(stderr, "usage: solve_every_study SCENE M1,M2,...\n");
@@ -75,9 +74,9 @@ int main(int argc, char **argv)
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *scene = tf_scene_load(argv[1], NULL, 0, err, sizeof err);
+    tf_scene *scene = tf_scene_load(&ctx, argv[1], NULL, 0);
     if (scene == NULL) {
-        fprintf(stderr, "solve_every_study: %s\n", err);
+        fprintf(stderr, "solve_every_study: %s\n", ctx.err);
         return 2;
     }
     tf_fit_plan plan = scene->fit;

@@ -108,7 +108,8 @@ int main(void)
     const size_t n = N_TRAIN + N_HELD, ticks = n * N_TICKS;
     double *sigma = malloc(ticks * sizeof *sigma), *eps = malloc(ticks * sizeof *eps);
     double *g = calloc(3 * ticks, sizeof *g), *target = calloc(3 * ticks, sizeof *target);
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     printf("# Wiener (terms on the static map's input: the prony family) against Hammerstein\n"
            "# (terms on its output) at a material point of [EFG-Kelvin]'s Kelvin law under stress,\n"
            "# k1 = %g MPa, k2 = %g MPa, eta = %g MPa s, stress to %g MPa; %d training and %d\n"
@@ -142,9 +143,9 @@ int main(void)
                     train[h] = h;
                 }
                 tf_prony_terms t;
-                if (tf_prony_fit_terms(&d, train, N_TRAIN, K, TICK, N_TICKS * TICK, &t, err,
-                                       sizeof err) != 0) {
-                    fprintf(stderr, "structure_study: %s\n", err);
+                if (tf_prony_fit_terms(&ctx, &d, train, N_TRAIN, K, TICK, N_TICKS * TICK, &t) !=
+                    0) {
+                    fprintf(stderr, "structure_study: %s\n", ctx.err);
                     return 1;
                 }
                 double peak = 0;

@@ -17,11 +17,12 @@
 
 static double cycles(tfit_family f, uint32_t p, uint32_t r, uint32_t n_out)
 {
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     uint32_t dims[2] = {p, r};
-    tf_model *m = tf_model_new("study", f, n_out, dims, 2, err, sizeof err);
+    tf_model *m = tf_model_new(&ctx, "study", f, n_out, dims, 2);
     if (m == NULL) {
-        fprintf(stderr, "q15_study: %s\n", err);
+        fprintf(stderr, "q15_study: %s\n", ctx.err);
         exit(1);
     }
     double c = tf_model_cycles(m, TF_CORE_M4F).cycles;

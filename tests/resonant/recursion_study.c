@@ -26,9 +26,9 @@ static tf_model *one_mode(double omega_t, double zeta)
 {
     const uint32_t dims[TFIT_RESONANT_DIMS] = {1, 0, 1, 1000000};
     const double origin[3] = {0, 0, 0}, w[3] = {1, 1, 1};
-    char err[256];
-    tf_model *m = tf_model_new("s", TFIT_FAMILY_RESONANT, 1, dims, TFIT_RESONANT_DIMS, err,
-                               sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "s", TFIT_FAMILY_RESONANT, 1, dims, TFIT_RESONANT_DIMS);
     tf_model_set_ball(m, origin, 1.0);
     float *rows = tf_model_tables(m) + 7;
     for (int c = 0; c < 3; ++c) {
@@ -82,8 +82,9 @@ int main(int argc, char **argv)
     for (size_t a = 0; a < sizeof wts / sizeof *wts; ++a) {
         for (size_t b = 0; b < sizeof zetas / sizeof *zetas; ++b) {
             tf_model *m = one_mode(wts[a], zetas[b]);
-            char err[512];
-            const int ok = tf_resonant_params_check(wts[a] / 1e-3, zetas[b], 1e-3, err, sizeof err) == 0;
+            tf_ctx ctx;
+            tf_ctx_init(&ctx);
+            const int ok = tf_resonant_params_check(&ctx, wts[a] / 1e-3, zetas[b], 1e-3) == 0;
             double F[4], Ff[4];
             tf_resonant_transition(wts[a], zetas[b], F);
             for (int i = 0; i < 4; ++i) {

@@ -62,7 +62,7 @@ typedef struct result {
 static int one_case(const char *const *sets, size_t ns, const char *law, const double f[3],
                     result *r)
 {
-    char err[1024], set_law[64];
+    char set_law[64];
     const char *all[MAX_SETS + 1];
     memcpy(all, sets, ns * sizeof *sets);
     snprintf(set_law, sizeof set_law, "material.law=%s", law);
@@ -71,9 +71,9 @@ static int one_case(const char *const *sets, size_t ns, const char *law, const d
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double w0 = omp_get_wtime(), c0 = cpu_now();
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", all, ns + 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", all, ns + 1);
     if (s == NULL) {
-        fprintf(stderr, "bench_nonlinear: %s\n", err);
+        fprintf(stderr, "bench_nonlinear: %s\n", ctx.err);
         return -1;
     }
     tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);

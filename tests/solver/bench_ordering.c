@@ -42,7 +42,7 @@ static uint64_t hash_bits(const double *u, size_t n)
 static int one_ordering(const char *const *sets, size_t ns, const char *ord, double **u,
                         size_t *n3, tf_galerkin_info *gi)
 {
-    char err[1024], set_ord[64];
+    char set_ord[64];
     const char *all[8];
     memcpy(all, sets, ns * sizeof *sets);
     snprintf(set_ord, sizeof set_ord, "solver.ordering=%s", ord);
@@ -50,9 +50,9 @@ static int one_ordering(const char *const *sets, size_t ns, const char *ord, dou
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", all, ns + 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", all, ns + 1);
     if (s == NULL) {
-        fprintf(stderr, "bench_ordering: %s\n", err);
+        fprintf(stderr, "bench_ordering: %s\n", ctx.err);
         return -1;
     }
     const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};

@@ -44,7 +44,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: bench_solver NX,NY,NZ REPS (1 to %d)\n", MAX_REPS);
         return 2;
     }
-    char set_grid[64], set_node[64], err[1024];
+    char set_grid[64], set_node[64];
     snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", argv[1]);
     snprintf(set_node, sizeof set_node, "contact.0.node=%u", g[0] / 2 + g[0] * (g[1] / 2) + 1);
     const char *sets[] = {set_grid, set_node};
@@ -57,9 +57,9 @@ int main(int argc, char **argv)
     ctx.level = TF_LOG_WARN;
     for (int r = 0; r < reps; ++r) {
         double t0 = omp_get_wtime();
-        tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, 2, err, sizeof err);
+        tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, 2);
         if (s == NULL) {
-            fprintf(stderr, "bench_solver: %s\n", err);
+            fprintf(stderr, "bench_solver: %s\n", ctx.err);
             return 1;
         }
         tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);

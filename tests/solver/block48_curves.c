@@ -35,7 +35,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: block48_curves NX,NY,NZ LAW FX,FY,FZ LEVELS [KEY=VALUE...]\n");
         return 2;
     }
-    char set_grid[64], set_node[64], set_law[64], err[1024];
+    char set_grid[64], set_node[64], set_law[64];
     unsigned node = g[0] / 2 + g[0] * (g[1] / 2) + 1;
     snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", argv[1]);
     snprintf(set_node, sizeof set_node, "contact.0.node=%u", node);
@@ -49,9 +49,9 @@ int main(int argc, char **argv)
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double t0 = omp_get_wtime();
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, ns, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, ns);
     if (s == NULL) {
-        fprintf(stderr, "block48_curves: %s\n", err);
+        fprintf(stderr, "block48_curves: %s\n", ctx.err);
         return 2;
     }
     tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);

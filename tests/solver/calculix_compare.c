@@ -157,7 +157,9 @@ static void compare(const double (*u)[3], const reference *r, result *out)
 /* The scene at one grid; a contact given by node moves to the top centre. */
 static tf_scene *level_scene(const options *o, const char *grid)
 {
-    char set_grid[64], set_node[64], set_nu[64], err[1024];
+    char set_grid[64], set_node[64], set_nu[64];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[MAX_SETS + 3];
     int n = 0;
     snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", grid);
@@ -167,7 +169,7 @@ static tf_scene *level_scene(const options *o, const char *grid)
     for (int k = 0; k < o->n_sets; ++k) {
         sets[n++] = o->sets[k];
     }
-    tf_scene *s = tf_scene_load(o->scene, sets, (size_t)n, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, o->scene, sets, (size_t)n);
     if (s != NULL && s->problem.n_contacts > 0 && s->problem.contacts[0].by_node) {
         const unsigned *g = s->problem.cloud.grid;
         if (g[0] % 2 == 0 || g[1] % 2 == 0) {
@@ -180,10 +182,10 @@ static tf_scene *level_scene(const options *o, const char *grid)
         snprintf(set_node, sizeof set_node, "contact.0.node=%u", g[0] / 2 + g[0] * (g[1] / 2) + 1);
         sets[n++] = set_node;
         tf_scene_free(s);
-        s = tf_scene_load(o->scene, sets, (size_t)n, err, sizeof err);
+        s = tf_scene_load(&ctx, o->scene, sets, (size_t)n);
     }
     if (s == NULL) {
-        fprintf(stderr, "calculix_compare: %s\n", err);
+        fprintf(stderr, "calculix_compare: %s\n", ctx.err);
     }
     return s;
 }
@@ -214,8 +216,8 @@ static int solve_level(const options *o, const char *grid, const reference *ref,
     *rcond = gi ? gi->st.min_rcond : NAN;
     double grad[TOP * 9];
     for (int c = 0; rc == 0 && c < 3; ++c) {
-        rc = tf_solver_field(sv, full + (size_t)c * 3 * p->cloud.n, &ref[c].x[0][0], TOP, &u[c][0][0],
-                             grad, ctx.err, sizeof ctx.err);
+        rc = tf_solver_field(&ctx, sv, full + (size_t)c * 3 * p->cloud.n, &ref[c].x[0][0], TOP,
+                             &u[c][0][0], grad);
     }
     if (rc != 0) {
         fprintf(stderr, "calculix_compare: %s\n", full || !sv ? ctx.err : "out of memory");

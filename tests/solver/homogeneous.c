@@ -33,12 +33,13 @@ typedef struct opened {
 static int open_cube(opened *o, const char *method, const char *mat, int stretch, double lam,
                      double force)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_ctx_init(&o->ctx);
     o->ctx.level = TF_LOG_ERROR;
-    o->s = homog_scene(method, mat, stretch, lam, force, NULL, 0, err, sizeof err);
+    o->s = homog_scene(&ctx, method, mat, stretch, lam, force, NULL, 0);
     if (o->s == NULL) {
-        fprintf(stderr, "homogeneous: %s\n", err);
+        fprintf(stderr, "homogeneous: %s\n", ctx.err);
         return -1;
     }
     o->sv = tf_solver_create(&o->s->problem, NULL, &o->ctx);

@@ -23,7 +23,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: node61 NX,NY,NZ [KEY=VALUE]...\n");
         return 2;
     }
-    char set_grid[64], set_node[64], err[1024];
+    char set_grid[64], set_node[64];
     unsigned centre = g[0] / 2 + g[0] * (g[1] / 2); /* index of the top centre */
     snprintf(set_grid, sizeof set_grid, "geometry.grid=%s", argv[1]);
     snprintf(set_node, sizeof set_node, "contact.0.node=%u", centre + 1);
@@ -36,9 +36,9 @@ int main(int argc, char **argv)
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
     double t0 = omp_get_wtime();
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, (size_t)argc, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, (size_t)argc);
     if (s == NULL) {
-        fprintf(stderr, "node61: %s\n", err);
+        fprintf(stderr, "node61: %s\n", ctx.err);
         return 1;
     }
     const tf_problem *p = &s->problem;

@@ -118,13 +118,12 @@ int main(int argc, char **argv)
     if (rc != 0) {
         return rc;
     }
-    char err[1024];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", a.sets, a.ns, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", a.sets, a.ns);
     if (s == NULL) {
-        fprintf(stderr, "stability_path: %s\n", err);
+        fprintf(stderr, "stability_path: %s\n", ctx.err);
         return 2;
     }
     tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);

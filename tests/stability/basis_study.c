@@ -126,7 +126,8 @@ static double condition(int k, stab_basis s, int scaled)
 static int fit(int which, int k, double *b)
 {
     double a[GRID * (MAX_ORDER + 1)], y[GRID];
-    char err[256] = "";
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (int i = 0; i < GRID; ++i) {
         const double t = (node_x(i) - STAB_CENTRE) / STAB_HALF;
         for (int j = 0; j <= k; ++j) {
@@ -134,11 +135,11 @@ static int fit(int which, int k, double *b)
         }
         y[i] = profile(which, node_x(i));
     }
-    tf_lsq *f = tf_lsq_factor(GRID, (size_t)k + 1, a, GRID, NULL, 0, err, sizeof err);
-    int rc = f == NULL || tf_lsq_solve(f, 1, y, GRID, b, (size_t)k + 1, NULL, err, sizeof err);
+    tf_lsq *f = tf_lsq_factor(&ctx, GRID, (size_t)k + 1, a, GRID, NULL, 0);
+    int rc = f == NULL || tf_lsq_solve(&ctx, f, 1, y, GRID, b, (size_t)k + 1, NULL);
     tf_lsq_free(f);
     if (rc != 0) {
-        fprintf(stderr, "basis_study: fit of order %d: %s\n", k, err);
+        fprintf(stderr, "basis_study: fit of order %d: %s\n", k, ctx.err);
         return -1;
     }
     return 0;

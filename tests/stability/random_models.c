@@ -57,8 +57,9 @@ static uint64_t float_form(const tf_model *m, const char *label, uint64_t n, uin
 static uint64_t q31_form(const tf_model *m, const char *label, uint64_t n, uint64_t seed,
                          tally *t)
 {
-    char err[256];
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_q31 *q = tf_q31_quantise(&ctx, m);
     if (q == NULL) { /* modal, zhou2017, or an envelope beyond the headroom */
         return 0;
     }

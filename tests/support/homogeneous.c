@@ -47,9 +47,8 @@ int homog_uniaxial(const tf_material *m, double lam, double *lateral, double *p)
     return 0;
 }
 
-tf_scene *homog_scene(const char *method, const char *material, int stretch, double lam_max,
-                      double force_max, const char *const *sets, size_t n_sets, char *err,
-                      size_t errlen)
+tf_scene *homog_scene(tf_ctx *ctx, const char *method, const char *material, int stretch,
+                      double lam_max, double force_max, const char *const *sets, size_t n_sets)
 {
     char text[2048];
     double L = HOMOG_L;
@@ -82,7 +81,7 @@ tf_scene *homog_scene(const char *method, const char *material, int stretch, dou
              "  bc: nitsche\n"
              "  newton: {tolerance: 1.0e-11, energy_tolerance: 1.0e-22}\n",
              method);
-    return tf_scene_load_text(text, strlen(text), "cube.yaml", sets, n_sets, err, errlen);
+    return tf_scene_load_text(ctx, text, strlen(text), "cube.yaml", sets, n_sets);
 }
 
 double homog_field_error(const tf_problem *p, const double *u, double lam, double lat)

@@ -33,9 +33,8 @@ int homog_uniaxial(const tf_material *m, double lam, double *lateral, double *p)
  * YAML flow text, stretch control (x+ moved by (lam_max - 1) L times the
  * load factor) or force control (a traction of total force_max N along x
  * on x+ times the load factor), extra "--set" overrides. */
-tf_scene *homog_scene(const char *method, const char *material, int stretch, double lam_max,
-                      double force_max, const char *const *sets, size_t n_sets, char *err,
-                      size_t errlen);
+tf_scene *homog_scene(tf_ctx *ctx, const char *method, const char *material, int stretch,
+                      double lam_max, double force_max, const char *const *sets, size_t n_sets);
 
 /* Largest |u - u_exact| over the nodes relative to the largest |u_exact|,
  * u_exact the homogeneous field of axial stretch lam and lateral stretch

@@ -138,14 +138,15 @@ static void prony_terms(tf_rng *r, tf_model *m, int physical)
  * clamp of h acts too. */
 static void resonant_modes(tf_rng *r, tf_model *m, int physical)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const double tick = tf_stateful_tick(m);
     for (uint32_t k = 0; k < m->dims[2]; ++k) {
         double omega, zeta;
         do {
             omega = pow(10.0, tf_rng_range(r, -2.0, log10(1.5))) / tick;
             zeta = pow(10.0, tf_rng_range(r, -3.0, log10(2.0)));
-        } while (tf_resonant_params_check(omega, zeta, tick, err, sizeof err) != 0);
+        } while (tf_resonant_params_check(&ctx, omega, zeta, tick) != 0);
         double w[3];
         for (int i = 0; i < 3; ++i) {
             w[i] = physical ? tf_rng_range(r, -1, 1) : (double)random_coef(r, -20, 6);
@@ -223,7 +224,8 @@ static void zhou_scales(tf_model *m)
  * zhou2017 scales are kept by the rule: halving a law doubles its scale). */
 static int make_emittable(tf_model *m)
 {
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     float *c = tf_model_tables(m);
     uint32_t n = m->n_coef - TFIT_INPUT_MAP_FLOATS;
     uint32_t n_xy = m->family == TFIT_FAMILY_ZHOU2017 ? 2 * m->n_out : 0;
@@ -236,7 +238,7 @@ static int make_emittable(tf_model *m)
         n_xy = TFIT_MODAL_Q15_RANK + 1 + 3 * m->n_out * TFIT_MODAL_Q15_WORDS;
     }
     for (int tries = 0; tries < 400; ++tries) {
-        if (tf_model_validate(m, err, sizeof err) == 0) {
+        if (tf_model_validate(&ctx, m) == 0) {
             return 0;
         }
         for (uint32_t i = 0; i < n - n_xy; ++i) {
@@ -268,10 +270,11 @@ tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int s
 tf_model *tf_random_model_of(tf_rng *r, const char *name, tfit_family f, const uint32_t *dims,
                              uint32_t n_dims, uint32_t n_out)
 {
-    char err[256];
-    tf_model *m = tf_model_new(name, f, n_out, dims, n_dims, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, name, f, n_out, dims, n_dims);
     if (m == NULL) {
-        fprintf(stderr, "random model: %s\n", err);
+        fprintf(stderr, "random model: %s\n", ctx.err);
         return NULL;
     }
     random_map(r, m);

@@ -31,15 +31,16 @@ const char *const tf_test_scene =
 
 void tf_test_refused_text(const char *text, size_t len, const char *const *fragments)
 {
-    char err[1024] = "";
-    tf_scene *s = tf_scene_load_text(text, len, "t.yaml", NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load_text(&ctx, text, len, "t.yaml", NULL, 0);
     if (s != NULL) {
         tf_scene_free(s);
         fail_msg("accepted a bad scene: %.*s", (int)len, text);
     }
     for (const char *const *f = fragments; *f; ++f) {
-        if (strstr(err, *f) == NULL) {
-            fail_msg("message '%s' lacks '%s'", err, *f);
+        if (strstr(ctx.err, *f) == NULL) {
+            fail_msg("message '%s' lacks '%s'", ctx.err, *f);
         }
     }
 }

@@ -15,14 +15,15 @@ tf_scene_run *tf_scene_run_solve(const char *scene, const tf_solver_ops *type,
                                  const char *const *sets, size_t n_sets, int threads,
                                  const double (*forces)[3], size_t n)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_scene_run *r = calloc(1, sizeof *r);
     tf_ctx_init(&r->ctx);
     r->ctx.level = TF_LOG_ERROR;
     r->ctx.threads = threads;
-    r->scene = tf_scene_load(scene, sets, n_sets, err, sizeof err);
+    r->scene = tf_scene_load(&ctx, scene, sets, n_sets);
     if (r->scene == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     r->p = &r->scene->problem;
     r->solver = type ? tf_solver_create_as(type, r->p, NULL, &r->ctx)

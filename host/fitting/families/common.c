@@ -67,23 +67,23 @@ double *tf_family_gather_u(const tf_fitdata *d, const size_t *idx, size_t m)
     return y;
 }
 
-int tf_family_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
-                  char *err, size_t errlen)
+int tf_family_lsq(tf_ctx *ctx, const double *a, size_t m, size_t n, const double *y, size_t k,
+                  double *x)
 {
-    tf_lsq *f = tf_lsq_factor(m, n, a, m, NULL, FIT_RANK_TOL, err, errlen);
+    tf_lsq *f = tf_lsq_factor(ctx, m, n, a, m, NULL, FIT_RANK_TOL);
     if (f == NULL) {
         return -1;
     }
     if (tf_lsq_rank(f) < n) {
-        snprintf(err, errlen,
-                 TF_FAMILY_UNDETERMINED
-                 ": %zu cases determine only %zu of %zu coefficients "
-                 "(repeated or collinear load cases, or too few for this order)",
-                 m, tf_lsq_rank(f), n);
+        tf_fail(ctx,
+                TF_FAMILY_UNDETERMINED
+                ": %zu cases determine only %zu of %zu coefficients "
+                "(repeated or collinear load cases, or too few for this order)",
+                m, tf_lsq_rank(f), n);
         tf_lsq_free(f);
         return -1;
     }
-    int rc = tf_lsq_solve(f, k, y, m, x, n, NULL, err, errlen);
+    int rc = tf_lsq_solve(ctx, f, k, y, m, x, n, NULL);
     tf_lsq_free(f);
     return rc;
 }
@@ -94,16 +94,16 @@ void tf_family_forward_setup(tf_model *model, const tf_fitdata *d)
     tf_model_set_ball(model, d->centre, d->radius);
 }
 
-tf_model *tf_family_forward_model(const char *name, tfit_family family, const uint32_t *dims,
-                                  uint32_t n_dims, uint32_t p, const tf_fitdata *d,
-                                  const size_t *idx, size_t m, char *err, size_t errlen)
+tf_model *tf_family_forward_model(tf_ctx *ctx, const char *name, tfit_family family,
+                                  const uint32_t *dims, uint32_t n_dims, uint32_t p,
+                                  const tf_fitdata *d, const size_t *idx, size_t m)
 {
-    tf_model *model = tf_model_new(name, family, d->n_out, dims, n_dims, err, errlen);
+    tf_model *model = tf_model_new(ctx, name, family, d->n_out, dims, n_dims);
     if (model == NULL) {
         return NULL;
     }
     tf_family_forward_setup(model, d);
-    if (p > 0 && tf_family_spans(model, d->force, idx, m, err, errlen) != 0) {
+    if (p > 0 && tf_family_spans(ctx, model, d->force, idx, m) != 0) {
         tf_model_free(model);
         return NULL;
     }
@@ -112,8 +112,8 @@ tf_model *tf_family_forward_model(const char *name, tfit_family family, const ui
 
 #define SPAN_MIN 1e-3 /* RMS extent, as a fraction of the envelope radius */
 
-int tf_family_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
-                    size_t errlen)
+int tf_family_spans(tf_ctx *ctx, const tf_model *m, const double (*x)[3], const size_t *idx,
+                    size_t n)
 {
     double mom[9] = {0}, eig[3];
     for (size_t i = 0; i < n; ++i) {
@@ -130,17 +130,15 @@ int tf_family_spans(const tf_model *m, const double (*x)[3], const size_t *idx, 
         }
     }
     if (LAPACKE_dsyev(LAPACK_ROW_MAJOR, 'V', 'U', 3, mom, 3, eig) != 0) {
-        snprintf(err, errlen, "the spread of the load cases could not be computed");
-        return -1;
+        return tf_fail(ctx, "the spread of the load cases could not be computed");
     }
     if (!(eig[0] >= SPAN_MIN * SPAN_MIN)) { /* ascending: eig[0] is the smallest */
-        snprintf(err, errlen,
-                 TF_FAMILY_UNDETERMINED
-                 ": the %zu load cases barely move along (%.3f, %.3f, %.3f) "
-                 "of the normalised envelope (RMS extent %.2g of its radius): the fit would "
-                 "extrapolate there",
-                 n, mom[0], mom[3], mom[6], sqrt(fmax(eig[0], 0)));
-        return -1;
+        return tf_fail(ctx,
+                       TF_FAMILY_UNDETERMINED
+                       ": the %zu load cases barely move along (%.3f, %.3f, %.3f) "
+                       "of the normalised envelope (RMS extent %.2g of its radius): the fit would "
+                       "extrapolate there",
+                       n, mom[0], mom[3], mom[6], sqrt(fmax(eig[0], 0)));
     }
     return 0;
 }

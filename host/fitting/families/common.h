@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "fitting/families/family.h"
 #include "fitting/fitdata.h"
 #include "model/model.h"
@@ -46,16 +47,16 @@ double *tf_family_gather_u(const tf_fitdata *d, const size_t *idx, size_t m);
  * A design of rank below n is refused (repeated or collinear load cases, or
  * too few cases for the order): -1 and a TF_FAMILY_UNDETERMINED message, never
  * a basic solution with coefficients silently set to zero. */
-int tf_family_lsq(const double *a, size_t m, size_t n, const double *y, size_t k, double *x,
-                  char *err, size_t errlen);
+int tf_family_lsq(tf_ctx *ctx, const double *a, size_t m, size_t n, const double *y, size_t k,
+                  double *x);
 
 /* Whether the selected inputs, normalised by the model's input map, cover
  * the envelope: their second-moment matrix (1/n) sum g g^T must have no
  * direction with RMS extent below 1e-3 (of the envelope radius).  Else -1 and
  * a TF_FAMILY_UNDETERMINED message naming the direction: a fit would be
  * determined by the cases but extrapolate wildly across the envelope. */
-int tf_family_spans(const tf_model *m, const double (*x)[3], const size_t *idx, size_t n, char *err,
-                    size_t errlen);
+int tf_family_spans(tf_ctx *ctx, const tf_model *m, const double (*x)[3], const size_t *idx,
+                    size_t n);
 
 /* Copies node ids and sets the ball map of the data's force envelope. */
 void tf_family_forward_setup(tf_model *model, const tf_fitdata *d);
@@ -63,9 +64,9 @@ void tf_family_forward_setup(tf_model *model, const tf_fitdata *d);
 /* A forward model of the given shape set up for d (tf_family_forward_setup),
  * refusing load cases that do not cover the envelope when its degree p > 0
  * (tf_family_spans).  NULL with a message on failure. */
-tf_model *tf_family_forward_model(const char *name, tfit_family family, const uint32_t *dims,
-                                  uint32_t n_dims, uint32_t p, const tf_fitdata *d,
-                                  const size_t *idx, size_t m, char *err, size_t errlen);
+tf_model *tf_family_forward_model(tf_ctx *ctx, const char *name, tfit_family family,
+                                  const uint32_t *dims, uint32_t n_dims, uint32_t p,
+                                  const tf_fitdata *d, const size_t *idx, size_t m);
 
 /* ---- order search ---------------------------------------------------- */
 
@@ -95,26 +96,26 @@ size_t tf_family_fold_cases(const tf_cases *c, const tf_fit_plan *plan);
  * range, or more terms than a training fold has cases), the choice in
  * *best.  Returns 0, or -1 with a message (also when no degree is
  * determined). */
-int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
-                            uint32_t lo, uint32_t extra, double *cv, uint32_t *best, char *err,
-                            size_t errlen);
+int tf_family_select_degree(tf_ctx *ctx, const tf_family *f, const tf_cases *c,
+                            const tf_fit_plan *plan, uint32_t lo, uint32_t extra, double *cv,
+                            uint32_t *best);
 
 /* tf_family.select of a family searched by degree alone (orders {p}): the
  * degree p >= lo by cross-validation, then f's fit at p on every training
  * case into r->model. */
-int tf_family_select_by_degree(const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
-                               tf_family_result *r, char *err, size_t errlen);
+int tf_family_select_by_degree(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
+                               tf_family_result *r);
 
 /* tf_family.candidates of such a family: its fit at every degree p = lo ..
  * plan->max_degree whose terms the training cases determine. */
-int tf_family_degree_candidates(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
-                                uint32_t lo, tf_family_take take, void *arg, char *err,
-                                size_t errlen);
+int tf_family_degree_candidates(tf_ctx *ctx, const tf_family *f, const tf_cases *c,
+                                const tf_fit_plan *plan, uint32_t lo, tf_family_take take,
+                                void *arg);
 
 /* ---- operations shared by several families ------------------------------ */
 
 /* tf_family.applicable of a family that describes any cases. */
-int tf_family_always(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen);
+int tf_family_always(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan);
 
 /* "p=2": the degree dims[0]. */
 void tf_family_degree_text(const tf_model *m, int style, char *buf, size_t n);
@@ -123,8 +124,8 @@ void tf_family_rank_text(const tf_model *m, int style, char *buf, size_t n);
 
 /* tf_family.f64_errors of the polynomial families: the same least squares
  * on every training case, kept in double, against the held-out cases. */
-int tf_family_poly_f64_errors(const tf_model *m, const tf_cases *c, double *max, double *rms,
-                              char *err, size_t errlen);
+int tf_family_poly_f64_errors(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max,
+                              double *rms);
 
 /* tf_family.cost from the model's layout: model.h's operation count and
  * table bytes, cost/cycles.h's estimates. */

@@ -41,15 +41,14 @@ static double inverse3(const double c[9], double k[9])
 }
 
 /* delta = delta0 + C f over the selected cases. */
-static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, double delta0[3],
-                             double c[9], char *err, size_t errlen)
+static int linear_compliance(tf_ctx *ctx, const tf_fitdata *d, const size_t *idx, size_t m,
+                             double delta0[3], double c[9])
 {
     double *a = malloc(m * 4 * sizeof *a), *y = malloc(m * 3 * sizeof *y), x[12];
     if (a == NULL || y == NULL) {
         free(a);
         free(y);
-        snprintf(err, errlen, "contact: out of memory");
-        return -1;
+        return tf_fail(ctx, "contact: out of memory");
     }
     for (size_t i = 0; i < m; ++i) {
         size_t n = tf_family_case(idx, i);
@@ -59,7 +58,7 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
             y[i + (size_t)k * m] = d->contact[n][k];
         }
     }
-    int rc = tf_family_lsq(a, m, 4, y, 3, x, err, errlen);
+    int rc = tf_family_lsq(ctx, a, m, 4, y, 3, x);
     free(a);
     free(y);
     if (rc == 0) {
@@ -73,8 +72,8 @@ static int linear_compliance(const tf_fitdata *d, const size_t *idx, size_t m, d
     return rc;
 }
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0];
@@ -84,7 +83,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     double delta0[3], cm[9], k[9], w[9], x0[3];
     double(*g)[3] = malloc(m * sizeof *g);
     if (g == NULL) {
-        snprintf(err, errlen, "contact: out of memory");
+        tf_fail(ctx, "contact: out of memory");
         return NULL;
     }
     for (size_t i = 0; i < m; ++i) { /* forces normalised to the envelope */
@@ -92,18 +91,17 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
             g[i][a] = (d->force[tf_family_case(idx, i)][a] - d->centre[a]) / d->radius;
         }
     }
-    int spans = tf_family_spans(NULL, (const double(*)[3])g, NULL, m, err, errlen);
+    int spans = tf_family_spans(ctx, NULL, (const double(*)[3])g, NULL, m);
     free(g);
-    if (spans != 0 || linear_compliance(d, idx, m, delta0, cm, err, errlen) != 0) {
+    if (spans != 0 || linear_compliance(ctx, d, idx, m, delta0, cm) != 0) {
         return NULL;
     }
     if (inverse3(cm, k) < 1e-12) {
-        snprintf(err, errlen,
-                 "contact: the contact site's compliance is singular (the site does not move "
-                 "under some force direction): no impedance model");
+        tf_fail(ctx, "contact: the contact site's compliance is singular (the site does not move "
+                     "under some force direction): no impedance model");
         return NULL;
     }
-    tf_model *model = tf_model_new("contact", TFIT_FAMILY_CONTACT, 1, &p, 1, err, errlen);
+    tf_model *model = tf_model_new(ctx, "contact", TFIT_FAMILY_CONTACT, 1, &p, 1);
     if (model == NULL) {
         return NULL;
     }
@@ -118,7 +116,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     }
     tf_model_set_map(model, x0, w);
     model->node_ids[0] = c->contact_id; /* tf_cases.contact_id */
-    if (tf_family_spans(model, d->contact, idx, m, err, errlen) != 0) {
+    if (tf_family_spans(ctx, model, d->contact, idx, m) != 0) {
         tf_model_free(model);
         return NULL;
     }
@@ -132,9 +130,9 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
                 y[i + (size_t)j * m] = d->force[tf_family_case(idx, i)][j];
             }
         }
-        rc = tf_family_lsq(a, m, t, y, 3, x, err, errlen);
+        rc = tf_family_lsq(ctx, a, m, t, y, 3, x);
     } else {
-        snprintf(err, errlen, "contact: out of memory");
+        tf_fail(ctx, "contact: out of memory");
     }
     if (rc == 0) {
         float *coef = tf_model_tables(model);
@@ -154,16 +152,16 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
 }
 
 /* The degree by cross-validation, p >= 1 (p = 0 would be a constant force: no impedance). */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
-                         size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
-    return tf_family_select_by_degree(c, plan, 1, r, err, errlen);
+    return tf_family_select_by_degree(ctx, c, plan, 1, r);
 }
 
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
-    return tf_family_degree_candidates(&tf_family_contact, c, plan, 1, take, arg, err, errlen);
+    return tf_family_degree_candidates(ctx, &tf_family_contact, c, plan, 1, take, arg);
 }
 
 const tf_family tf_family_contact = {

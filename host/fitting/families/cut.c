@@ -20,20 +20,19 @@ extern const tf_family tf_family_cut;
 
 #define CUT_DEGREE 1 /* exact per s for linear elasticity (the affine solvers it needs) */
 
-static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+static int applicable(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     (void)plan;
     if (c->cut == NULL) {
-        snprintf(why, whylen, "cut: needs a scene with cuts and fit.cut_intervals (the cut "
-                              "progress values to solve)");
-        return -1;
+        return tf_fail(ctx, "cut: needs a scene with cuts and fit.cut_intervals (the cut "
+                            "progress values to solve)");
     }
     return 0;
 }
 
 /* Knot k of a K-interval model: sample k K_max / K of the cut cases. */
-static int fit_knot(const tf_cases *c, const size_t *idx, size_t m, tf_model *model, uint32_t k,
-                    char *err, size_t errlen)
+static int fit_knot(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m, tf_model *model,
+                    uint32_t k)
 {
     const tf_cut_cases *cc = c->cut;
     const tf_fitdata *d = &c->train;
@@ -50,9 +49,9 @@ static int fit_knot(const tf_cases *c, const size_t *idx, size_t m, tf_model *mo
         }
     }
     if (rc != 0) {
-        snprintf(err, errlen, "cut: out of memory");
+        tf_fail(ctx, "cut: out of memory");
     } else {
-        rc = tf_family_lsq(a, m, t, y, rows, x, err, errlen);
+        rc = tf_family_lsq(ctx, a, m, t, y, rows, x);
     }
     float *coef = tf_model_tables(model) + (size_t)k * rows * t;
     for (size_t o = 0; rc == 0 && o < rows; ++o) {
@@ -67,22 +66,22 @@ static int fit_knot(const tf_cases *c, const size_t *idx, size_t m, tf_model *mo
     return rc;
 }
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     const uint32_t p = orders[0], k = orders[1];
     if (c->cut == NULL || k == 0 || c->cut->knots % k != 0) {
-        snprintf(err, errlen, "cut: %u intervals are not a divisor of the %u solved", k,
-                 c->cut ? c->cut->knots : 0);
+        tf_fail(ctx, "cut: %u intervals are not a divisor of the %u solved", k,
+                c->cut ? c->cut->knots : 0);
         return NULL;
     }
     if (idx == NULL) {
         m = c->train.n_cases;
     }
-    tf_model *model = tf_family_forward_model("cut", TFIT_FAMILY_CUT, orders, TFIT_CUT_DIMS, p,
-                                              &c->train, idx, m, err, errlen);
+    tf_model *model = tf_family_forward_model(ctx, "cut", TFIT_FAMILY_CUT, orders, TFIT_CUT_DIMS, p,
+                                              &c->train, idx, m);
     for (uint32_t j = 0; model != NULL && j <= k; ++j) {
-        if (fit_knot(c, idx, m, model, j, err, errlen) != 0) {
+        if (fit_knot(ctx, c, idx, m, model, j) != 0) {
             tf_model_free(model);
             model = NULL;
         }
@@ -119,8 +118,8 @@ static int role_errors(const tf_model *m, const tf_cut_cases *cc, int role,
 
 /* K = K_max, K_max / 2, ..., 1 by the RMS error at the validation s values
  * (cv_rank[K]); the cheapest within 2 % of the best (common.h). */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
     (void)plan;
     double v[TFIT_CUT_MAX_INTERVALS + 1];
@@ -129,7 +128,7 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
     }
     for (uint32_t k = 1; k <= c->cut->knots; k *= 2) {
         const uint32_t orders[2] = {CUT_DEGREE, k};
-        tf_model *m = fit(c, NULL, 0, orders, err, errlen);
+        tf_model *m = fit(ctx, c, NULL, 0, orders);
         double max, rms;
         if (m == NULL) {
             return -1;
@@ -137,8 +136,7 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
         int rc = role_errors(m, c->cut, TF_CUT_VALIDATE, &c->train, &max, &rms, NULL);
         tf_model_free(m);
         if (rc != 0) {
-            snprintf(err, errlen, "cut: out of memory");
-            return -1;
+            return tf_fail(ctx, "cut: out of memory");
         }
         v[k] = rms;
         if (k <= TF_FAMILY_MAX_RANK) {
@@ -148,17 +146,17 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
     }
     const uint32_t orders[2] = {CUT_DEGREE, tf_family_cheapest_within(v, 1, c->cut->knots)};
     r->cv[CUT_DEGREE] = v[orders[1]];
-    r->model = fit(c, NULL, 0, orders, err, errlen);
+    r->model = fit(ctx, c, NULL, 0, orders);
     return r->model ? 0 : -1;
 }
 
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
     (void)plan;
     for (uint32_t k = 1; k <= c->cut->knots; k *= 2) {
         const uint32_t orders[2] = {CUT_DEGREE, k};
-        tf_model *m = fit(c, NULL, 0, orders, err, errlen);
+        tf_model *m = fit(ctx, c, NULL, 0, orders);
         if (m == NULL) {
             return -1;
         }
@@ -176,11 +174,14 @@ static void orders_text(const tf_model *m, int style, char *buf, size_t n)
 }
 
 /* Held-out: every held-out s value at every held-out force. */
-static int heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
+static int heldout(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max, double *rms,
                    double *rel_max, uint32_t *n)
 {
     *rel_max = NAN;
-    return role_errors(m, c->cut, TF_CUT_HELDOUT, &c->heldout, max, rms, n);
+    if (role_errors(m, c->cut, TF_CUT_HELDOUT, &c->heldout, max, rms, n) != 0) {
+        return tf_fail(ctx, "cut: out of memory for its held-out errors");
+    }
+    return 0;
 }
 
 const tf_family tf_family_cut = {

@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "cost/cycles.h"
 #include "fitting/cases.h"
 #include "fitting/plan.h"
@@ -78,38 +79,37 @@ struct tf_family {
     const char *name; /* scene key fit.family, --family, the header's FAMILY */
     tf_family_kind kind;
     /* 0 when the family can describe the cases; else -1 with the reason
-     * in why (not a failure: the family is skipped). */
-    int (*applicable)(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen);
+     * in ctx->err (not a failure: the family is skipped). */
+    int (*applicable)(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan);
     /* Order search: the orders by cross-validation on c->train within the
      * plan's limits, then the model on every training case, into r (model,
      * cv curves).  Returns 0, or -1 with a message. */
-    int (*select)(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
-                  size_t errlen);
+    int (*select)(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r);
     /* The model of the given orders on training cases idx[0..m) (idx NULL:
      * all of c->train).  NULL with a message. */
-    tf_model *(*fit)(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen);
+    tf_model *(*fit)(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders);
     /* The sweep's candidates (tradeoff/sweep.h): every order the plan
      * allows, each fitted on every training case and given to take.
      * Returns 0, or -1 with a message (or take's non-zero). */
-    int (*candidates)(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen);
+    int (*candidates)(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg);
     void (*orders_text)(const tf_model *m, int style, char *buf, size_t n);
     /* The Q31 form of a model (model/q31.h), or NULL when the family has none. */
-    tf_q31 *(*q31)(const tf_model *m, char *err, size_t errlen);
+    tf_q31 *(*q31)(tf_ctx *ctx, const tf_model *m);
     /* Held-out errors of the same fit with coefficients and arithmetic in
      * double (what the fit achieves before float32 rounding); NULL when the
      * family has no such form.  Returns 0, or -1 with a message. */
-    int (*f64_errors)(const tf_model *m, const tf_cases *c, double *max, double *rms, char *err,
-                      size_t errlen);
+    int (*f64_errors)(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max, double *rms);
     /* Operations, table bytes and cycles of one evaluation. */
     void (*cost)(const tf_model *m, tf_family_cost *out);
     /* The held-out errors the family is judged on, when they are not the
      * static held-out cases' (NULL: tf_family_errors on c->heldout): the
      * largest and RMS error, the largest error relative to the largest
      * true value (NAN when not meaningful), and how many held-out cases
-     * (or histories) behind them.  Returns 0, or -1 when out of memory. */
-    int (*heldout)(const tf_model *m, const tf_cases *c, double *max, double *rms,
+     * (or histories) behind them.  Returns 0, or -1 with a message when out
+     * of memory. */
+    int (*heldout)(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max, double *rms,
                    double *rel_max, uint32_t *n);
 };
 
@@ -138,9 +138,8 @@ void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *
  * c->train (and the largest validation error in *max when not NULL):
  * infinite when the folds' cases cannot determine the order.  Returns -1
  * with a message when a fold fails otherwise. */
-int tf_family_cv_error(const tf_family *f, const tf_cases *c, const uint32_t *orders,
-                       unsigned folds, uint64_t seed, double *rms, double *max, char *err,
-                       size_t errlen);
+int tf_family_cv_error(tf_ctx *ctx, const tf_family *f, const tf_cases *c, const uint32_t *orders,
+                       unsigned folds, uint64_t seed, double *rms, double *max);
 
 /* The default fit plan (plan.h): nodal, contact site 0, 100 training and
  * 50 held-out cases, seed 20170912, 5 folds, degrees to 4, ranks to 12,

@@ -14,8 +14,8 @@
 #include "fitting/families/family.h"
 #include "numerics/pod.h"
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0], r = orders[1];
@@ -24,12 +24,11 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     }
     const size_t rows = 3 * (size_t)d->n_out;
     if (r > m || r > rows) {
-        snprintf(err, errlen, "modal r=%u: more modes than the %zu cases or %zu outputs", r, m,
-                 rows);
+        tf_fail(ctx, "modal r=%u: more modes than the %zu cases or %zu outputs", r, m, rows);
         return NULL;
     }
     tf_model *model =
-        tf_family_forward_model("modal", TFIT_FAMILY_MODAL, orders, 2, p, d, idx, m, err, errlen);
+        tf_family_forward_model(ctx, "modal", TFIT_FAMILY_MODAL, orders, 2, p, d, idx, m);
     if (model == NULL) {
         return NULL;
     }
@@ -47,9 +46,9 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
                 data[o + i * rows] = y[i + o * m];
             }
         }
-        rc = tf_pod_compute(data, (int)rows, (int)m, &pod, err, errlen);
+        rc = tf_pod_compute(ctx, data, (int)rows, (int)m, &pod);
     } else {
-        snprintf(err, errlen, "modal p=%u r=%u: out of memory", p, r);
+        tf_fail(ctx, "modal p=%u r=%u: out of memory", p, r);
     }
     if (rc == 0) {
         for (size_t i = 0; i < m; ++i) { /* amplitudes: U_r^T u_i */
@@ -61,7 +60,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
                 amp[i + k * m] = s;
             }
         }
-        rc = tf_family_lsq(a, m, t, amp, r, x, err, errlen);
+        rc = tf_family_lsq(ctx, a, m, t, amp, r, x);
     }
     if (rc == 0) {
         float *coef = tf_model_tables(model);
@@ -109,12 +108,12 @@ static uint32_t top_rank(const tf_cases *c, const tf_fit_plan *plan)
 
 /* The degree at the top rank, then the rank at that degree; the held-out
  * error of every rank for the report. */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *res,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *res)
 {
     const uint32_t rmax = top_rank(c, plan);
     uint32_t p;
-    if (tf_family_select_degree(res->family, c, plan, 0, rmax, res->cv, &p, err, errlen) != 0) {
+    if (tf_family_select_degree(ctx, res->family, c, plan, 0, rmax, res->cv, &p) != 0) {
         return -1;
     }
     res->cv_rank[0] = res->heldout_rank[0] = INFINITY;
@@ -124,11 +123,11 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
         if (r > rmax) {
             continue;
         }
-        if (tf_family_cv_error(res->family, c, orders, plan->folds, plan->seed, &res->cv_rank[r],
-                               NULL, err, errlen) != 0) {
+        if (tf_family_cv_error(ctx, res->family, c, orders, plan->folds, plan->seed,
+                               &res->cv_rank[r], NULL) != 0) {
             return -1;
         }
-        tf_model *m = fit(c, NULL, 0, orders, err, errlen);
+        tf_model *m = fit(ctx, c, NULL, 0, orders);
         if (m == NULL) {
             return -1;
         }
@@ -137,21 +136,21 @@ static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_r
         tf_model_free(m);
     }
     const uint32_t orders[2] = {p, tf_family_cheapest_within(res->cv_rank, 1, rmax)};
-    res->model = fit(c, NULL, 0, orders, err, errlen);
+    res->model = fit(ctx, c, NULL, 0, orders);
     return res->model ? 0 : -1;
 }
 
 /* p = 1 .. max_degree and r = 1 .. max_rank, while the cases and outputs
  * allow: a nonlinear scene's amplitudes pay for degrees above 2 (block48_nh,
  * docs/tradeoff.md). */
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
     const tf_fitdata *d = &c->train;
     for (uint32_t p = 1; p <= plan->max_degree && tf_terms(p) <= d->n_cases; ++p) {
         for (uint32_t r = 1; r <= plan->max_rank && r <= 3 * d->n_out && r <= d->n_cases; ++r) {
             const uint32_t orders[2] = {p, r};
-            tf_model *m = fit(c, NULL, 0, orders, err, errlen);
+            tf_model *m = fit(ctx, c, NULL, 0, orders);
             if (m == NULL || take(arg, m) != 0) {
                 return -1;
             }

@@ -24,11 +24,11 @@ extern const tf_family tf_family_modal_q15;
 #define C_MAX 8191.0  /* |c_k| the scale S aims the largest amplitude bound at */
 
 /* The Q15 layout of a float modal model of rank 8. */
-static tf_model *quantise(const tf_model *f, char *err, size_t errlen)
+static tf_model *quantise(tf_ctx *ctx, const tf_model *f)
 {
     const uint32_t p = f->dims[0], r = TFIT_MODAL_Q15_RANK, t = tf_terms(p);
     const uint32_t dims[2] = {p, r};
-    tf_model *m = tf_model_new("modal_q15", TFIT_FAMILY_MODAL_Q15, f->n_out, dims, 2, err, errlen);
+    tf_model *m = tf_model_new(ctx, "modal_q15", TFIT_FAMILY_MODAL_Q15, f->n_out, dims, 2);
     if (m == NULL) {
         return NULL;
     }
@@ -67,53 +67,51 @@ static tf_model *quantise(const tf_model *f, char *err, size_t errlen)
     return m;
 }
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     const uint32_t o[2] = {orders[0], TFIT_MODAL_Q15_RANK};
-    tf_model *f = tf_family_modal.fit(c, idx, m, o, err, errlen);
+    tf_model *f = tf_family_modal.fit(ctx, c, idx, m, o);
     if (f == NULL) {
         return NULL;
     }
-    tf_model *q = quantise(f, err, errlen);
+    tf_model *q = quantise(ctx, f);
     tf_model_free(f);
     return q;
 }
 
-static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+static int applicable(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     if (plan->family != &tf_family_modal_q15) {
-        snprintf(why, whylen, "fitted when the scene asks for it (fit.family: modal_q15)");
-        return -1;
+        return tf_fail(ctx, "fitted when the scene asks for it (fit.family: modal_q15)");
     }
     if (3 * c->train.n_out < TFIT_MODAL_Q15_RANK || c->train.n_cases < TFIT_MODAL_Q15_RANK) {
-        snprintf(why, whylen, "rank 8 needs at least 8 output components and 8 training cases");
-        return -1;
+        return tf_fail(ctx, "rank 8 needs at least 8 output components and 8 training cases");
     }
     return 0;
 }
 
 /* The degree by cross-validation at rank 8 (p >= 1: the amplitude loop
  * runs at least once); the held-out error at rank 8 for the report. */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *res,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *res)
 {
     uint32_t p;
-    if (tf_family_select_degree(res->family, c, plan, 1, TFIT_MODAL_Q15_RANK, res->cv, &p, err,
-                                errlen) != 0) {
+    if (tf_family_select_degree(ctx, res->family, c, plan, 1, TFIT_MODAL_Q15_RANK, res->cv, &p) !=
+        0) {
         return -1;
     }
     for (uint32_t r = 0; r <= TF_FAMILY_MAX_RANK; ++r) {
         res->cv_rank[r] = res->heldout_rank[r] = INFINITY;
     }
     const uint32_t orders[2] = {p, TFIT_MODAL_Q15_RANK};
-    res->model = fit(c, NULL, 0, orders, err, errlen);
+    res->model = fit(ctx, c, NULL, 0, orders);
     return res->model ? 0 : -1;
 }
 
 /* p = 1 .. max_degree at rank 8, while the cases determine the terms. */
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
     const tf_fitdata *d = &c->train;
     if (3 * d->n_out < TFIT_MODAL_Q15_RANK || d->n_cases < TFIT_MODAL_Q15_RANK) {
@@ -121,7 +119,7 @@ static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take
     }
     for (uint32_t p = 1; p <= plan->max_degree && tf_terms(p) <= d->n_cases; ++p) {
         const uint32_t orders[2] = {p, TFIT_MODAL_Q15_RANK};
-        tf_model *m = fit(c, NULL, 0, orders, err, errlen);
+        tf_model *m = fit(ctx, c, NULL, 0, orders);
         if (m == NULL || take(arg, m) != 0) {
             return -1;
         }

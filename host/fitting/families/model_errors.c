@@ -51,9 +51,9 @@ void tf_family_errors(const tf_model *model, const tf_fitdata *d, const size_t *
     }
 }
 
-int tf_family_cv_error(const tf_family *family, const tf_cases *c, const uint32_t *orders,
-                       unsigned folds, uint64_t seed, double *rms, double *max, char *err,
-                       size_t errlen)
+int tf_family_cv_error(tf_ctx *ctx, const tf_family *family, const tf_cases *c,
+                       const uint32_t *orders, unsigned folds, uint64_t seed, double *rms,
+                       double *max)
 {
     const tf_fitdata *d = &c->train;
     const size_t n = d->n_cases;
@@ -63,7 +63,7 @@ int tf_family_cv_error(const tf_family *family, const tf_cases *c, const uint32_
     size_t count = 0;
     int rc = 0;
     if (fold == NULL || train == NULL || test == NULL) {
-        snprintf(err, errlen, "cross-validation: out of memory");
+        tf_fail(ctx, "cross-validation: out of memory");
         rc = -1;
     }
     if (rc == 0) {
@@ -72,9 +72,9 @@ int tf_family_cv_error(const tf_family *family, const tf_cases *c, const uint32_
     for (unsigned f = 0; rc == 0 && f < folds; ++f) {
         size_t n_train = tf_cv_select(fold, n, f, 0, train);
         size_t n_test = tf_cv_select(fold, n, f, 1, test);
-        tf_model *m = family->fit(c, train, n_train, orders, err, errlen);
+        tf_model *m = family->fit(ctx, c, train, n_train, orders);
         if (m == NULL &&
-            strncmp(err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
+            strncmp(ctx->err, TF_FAMILY_UNDETERMINED, strlen(TF_FAMILY_UNDETERMINED)) == 0) {
             sum2 = emax = INFINITY; /* the folds cannot determine this order */
             count = 1;
             break;

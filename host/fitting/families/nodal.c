@@ -11,16 +11,15 @@
 
 extern const tf_family tf_family_nodal;
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     const tf_fitdata *d = &c->train;
     const uint32_t p = orders[0];
     if (idx == NULL) {
         m = d->n_cases;
     }
-    tf_model *model =
-        tf_family_forward_model("nodal", TFIT_FAMILY_NODAL, &p, 1, p, d, idx, m, err, errlen);
+    tf_model *model = tf_family_forward_model(ctx, "nodal", TFIT_FAMILY_NODAL, &p, 1, p, d, idx, m);
     if (model == NULL) {
         return NULL;
     }
@@ -29,7 +28,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
     double *a = tf_family_design(model, d->force, idx, m, p);
     double *y = tf_family_gather_u(d, idx, m);
     double *x = malloc(t * rows * sizeof *x);
-    int rc = (a && y && x) ? tf_family_lsq(a, m, t, y, rows, x, err, errlen) : -1;
+    int rc = (a && y && x) ? tf_family_lsq(ctx, a, m, t, y, rows, x) : -1;
     if (rc == 0) {
         float *coef = tf_model_tables(model);
         for (size_t o = 0; o < rows; ++o) {
@@ -38,7 +37,7 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
             }
         }
     } else if (!(a && y && x)) {
-        snprintf(err, errlen, "nodal p=%u: out of memory", p);
+        tf_fail(ctx, "nodal p=%u: out of memory", p);
     }
     free(a);
     free(y);
@@ -51,16 +50,16 @@ static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint3
 }
 
 /* The degree by cross-validation, p >= 0. */
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r, char *err,
-                         size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
-    return tf_family_select_by_degree(c, plan, 0, r, err, errlen);
+    return tf_family_select_by_degree(ctx, c, plan, 0, r);
 }
 
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
-    return tf_family_degree_candidates(&tf_family_nodal, c, plan, 0, take, arg, err, errlen);
+    return tf_family_degree_candidates(ctx, &tf_family_nodal, c, plan, 0, take, arg);
 }
 
 const tf_family tf_family_nodal = {

@@ -32,9 +32,9 @@ size_t tf_family_fold_cases(const tf_cases *c, const tf_fit_plan *plan)
     return n - (n + plan->folds - 1) / plan->folds;
 }
 
-int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
-                            uint32_t lo, uint32_t extra, double *cv, uint32_t *best, char *err,
-                            size_t errlen)
+int tf_family_select_degree(tf_ctx *ctx, const tf_family *f, const tf_cases *c,
+                            const tf_fit_plan *plan, uint32_t lo, uint32_t extra, double *cv,
+                            uint32_t *best)
 {
     const size_t fold_cases = tf_family_fold_cases(c, plan);
     uint32_t hi = lo;
@@ -44,43 +44,42 @@ int tf_family_select_degree(const tf_family *f, const tf_cases *c, const tf_fit_
             continue;
         }
         const uint32_t orders[2] = {p, extra};
-        if (tf_family_cv_error(f, c, orders, plan->folds, plan->seed, &cv[p], NULL, err,
-                               errlen) != 0) {
+        if (tf_family_cv_error(ctx, f, c, orders, plan->folds, plan->seed, &cv[p], NULL) != 0) {
             return -1;
         }
         hi = p;
     }
     *best = tf_family_cheapest_within(cv, lo, hi);
     if (!isfinite(cv[*best])) {
-        snprintf(err, errlen,
-                 "%s: no degree is determined by the %zu training cases (repeated or collinear "
-                 "load cases?)",
-                 TF_FAMILY_UNDETERMINED, c->train.n_cases);
-        return -1;
+        return tf_fail(
+            ctx,
+            "%s: no degree is determined by the %zu training cases (repeated or collinear "
+            "load cases?)",
+            TF_FAMILY_UNDETERMINED, c->train.n_cases);
     }
     return 0;
 }
 
-int tf_family_select_by_degree(const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
-                               tf_family_result *r, char *err, size_t errlen)
+int tf_family_select_by_degree(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, uint32_t lo,
+                               tf_family_result *r)
 {
     uint32_t p;
-    if (tf_family_select_degree(r->family, c, plan, lo, 0, r->cv, &p, err, errlen) != 0) {
+    if (tf_family_select_degree(ctx, r->family, c, plan, lo, 0, r->cv, &p) != 0) {
         return -1;
     }
-    r->model = r->family->fit(c, NULL, 0, &p, err, errlen);
+    r->model = r->family->fit(ctx, c, NULL, 0, &p);
     return r->model ? 0 : -1;
 }
 
-int tf_family_degree_candidates(const tf_family *f, const tf_cases *c, const tf_fit_plan *plan,
-                                uint32_t lo, tf_family_take take, void *arg, char *err,
-                                size_t errlen)
+int tf_family_degree_candidates(tf_ctx *ctx, const tf_family *f, const tf_cases *c,
+                                const tf_fit_plan *plan, uint32_t lo, tf_family_take take,
+                                void *arg)
 {
     for (uint32_t p = lo; p <= plan->max_degree; ++p) {
         if (tf_terms(p) > c->train.n_cases) {
             continue;
         }
-        tf_model *m = f->fit(c, NULL, 0, &p, err, errlen);
+        tf_model *m = f->fit(ctx, c, NULL, 0, &p);
         if (m == NULL || take(arg, m) != 0) {
             return -1;
         }

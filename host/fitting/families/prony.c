@@ -36,18 +36,17 @@ static void tau_range(const tf_histories *h, double *lo, double *hi)
     *hi = fmax(2 * h->tick, (double)h->train.n_ticks * h->tick);
 }
 
-int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
-                         size_t errlen)
+int tf_prony_tick_allows(tf_ctx *ctx, const tf_prony_terms *t, const tf_histories *h)
 {
     for (int k = 0; k < t->n; ++k) {
         if (t->tau[k] > TF_PRONY_MAX_TAU_TICKS * h->tick) {
-            snprintf(err, errlen,
-                     "prony: the creep time constant %.4g s is %.3g ticks of %u ns: beyond %.0e "
-                     "ticks the float32 update loses more than 0.1 %% of the peak over 10^6 "
-                     "ticks (docs/fitting.md §7); fit with a tick of at least %.3g us",
-                     t->tau[k], t->tau[k] / h->tick, h->tick_ns, TF_PRONY_MAX_TAU_TICKS,
-                     1e6 * t->tau[k] / TF_PRONY_MAX_TAU_TICKS);
-            return -1;
+            return tf_fail(
+                ctx,
+                "prony: the creep time constant %.4g s is %.3g ticks of %u ns: beyond %.0e "
+                "ticks the float32 update loses more than 0.1 %% of the peak over 10^6 "
+                "ticks (docs/fitting.md §7); fit with a tick of at least %.3g us",
+                t->tau[k], t->tau[k] / h->tick, h->tick_ns, TF_PRONY_MAX_TAU_TICKS,
+                1e6 * t->tau[k] / TF_PRONY_MAX_TAU_TICKS);
         }
     }
     return 0;
@@ -56,13 +55,13 @@ int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *e
 /* ---- the filter fit -------------------------------------------------------- */
 
 /* Three starts for a model, one for each of cross-validation's folds. */
-static int fit_terms(const tf_prony_data *d, const tf_histories *h, const size_t *idx, size_t n,
-                     int k, int cv, void *terms, char *err, size_t errlen)
+static int fit_terms(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h, const size_t *idx,
+                     size_t n, int k, int cv, void *terms)
 {
     double lo, hi;
     tau_range(h, &lo, &hi);
-    return cv ? tf_prony_fit_terms_from(d, idx, n, k, lo, hi, 1, terms, err, errlen)
-              : tf_prony_fit_terms(d, idx, n, k, lo, hi, terms, err, errlen);
+    return cv ? tf_prony_fit_terms_from(ctx, d, idx, n, k, lo, hi, 1, terms)
+              : tf_prony_fit_terms(ctx, d, idx, n, k, lo, hi, terms);
 }
 
 static double rms(const tf_prony_data *d, const size_t *idx, size_t n, const void *terms)
@@ -73,15 +72,13 @@ static double rms(const tf_prony_data *d, const size_t *idx, size_t n, const voi
 /* The prony model of static map s and terms t at the histories' tick: s's
  * input map and tables after the terms' pairs (model/forms/prony.h); a term
  * too slow for the tick is refused. */
-static tf_model *assemble(const tf_model *s, const void *terms, const tf_histories *h, char *err,
-                          size_t errlen)
+static tf_model *assemble(tf_ctx *ctx, const tf_model *s, const void *terms, const tf_histories *h)
 {
     const tf_prony_terms *t = terms;
-    if (tf_prony_tick_allows(t, h, err, errlen) != 0) {
+    if (tf_prony_tick_allows(ctx, t, h) != 0) {
         return NULL;
     }
-    tf_model *m = tf_stateful_new(TFIT_FAMILY_PRONY, "prony", s, (uint32_t)t->n, h->tick_ns, err,
-                                  errlen);
+    tf_model *m = tf_stateful_new(ctx, TFIT_FAMILY_PRONY, "prony", s, (uint32_t)t->n, h->tick_ns);
     for (int k = 0; m != NULL && k < t->n; ++k) {
         tf_prony_set_term(m, (uint32_t)k, t->tau[k], t->w[k]);
     }
@@ -99,39 +96,38 @@ static const tf_filter_fit prony_fit = {
     .assemble = assemble,
 };
 
-int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const tf_fit_plan *plan,
-                          double *cv, int *best, tf_prony_terms *terms, char *err, size_t errlen)
+int tf_prony_select_terms(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h,
+                          const tf_fit_plan *plan, double *cv, int *best, tf_prony_terms *terms)
 {
-    return tf_stateful_select_terms(&prony_fit, d, h, plan, cv, best, terms, err, errlen);
+    return tf_stateful_select_terms(ctx, &prony_fit, d, h, plan, cv, best, terms);
 }
 
 /* ---- the family ----------------------------------------------------------- */
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
-    return tf_stateful_fit(&prony_fit, c, idx, m, orders, err, errlen);
+    return tf_stateful_fit(ctx, &prony_fit, c, idx, m, orders);
 }
 
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
-    return tf_stateful_select(&prony_fit, c, plan, r, err, errlen);
+    return tf_stateful_select(ctx, &prony_fit, c, plan, r);
 }
 
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
-    return tf_stateful_candidates(&prony_fit, c, plan, take, arg, err, errlen);
+    return tf_stateful_candidates(ctx, &prony_fit, c, plan, take, arg);
 }
 
-static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+static int applicable(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     (void)plan;
     if (c->hist == NULL) {
-        snprintf(why, whylen, "the problem does not creep: its solver is not time-dependent, so "
-                              "there are no force histories to fit time constants to");
-        return -1;
+        return tf_fail(ctx, "the problem does not creep: its solver is not time-dependent, so "
+                            "there are no force histories to fit time constants to");
     }
     return 0;
 }
@@ -142,8 +138,9 @@ double tf_prony_q31_heldout(const tf_model *m, const tf_cases *c)
         return NAN;
     }
     const tf_history_set *set = &c->hist->heldout;
-    char err[256];
-    tf_q31 *q = m->family == TFIT_FAMILY_PRONY ? tf_q31_quantise(m, err, sizeof err) : NULL;
+    tf_ctx scratch; /* no Q31 form gives NAN: its message is not wanted */
+    tf_ctx_init(&scratch);
+    tf_q31 *q = m->family == TFIT_FAMILY_PRONY ? tf_q31_quantise(&scratch, m) : NULL;
     const size_t rows = 3 * (size_t)m->n_out;
     int32_t *out = malloc(rows * sizeof *out);
     double e_max = NAN;

@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "fitting/families/stateful_family.h"
 #include "fitting/histories.h"
 #include "fitting/plan.h"
@@ -24,14 +25,13 @@
  * d (tf_stateful_select_terms): cv[K] the validation RMS of h, *best the
  * cheapest K within 2 % of the best, terms fitted with it on every
  * history.  Returns 0, or -1 with a message. */
-int tf_prony_select_terms(const tf_prony_data *d, const tf_histories *h, const tf_fit_plan *plan,
-                          double *cv, int *best, tf_prony_terms *terms, char *err, size_t errlen);
+int tf_prony_select_terms(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h,
+                          const tf_fit_plan *plan, double *cv, int *best, tf_prony_terms *terms);
 
 /* 0 when every time constant of t is within TF_PRONY_MAX_TAU_TICKS ticks
  * of h (model/forms/prony.h); else -1 with a message naming the tick it
  * needs. */
-int tf_prony_tick_allows(const tf_prony_terms *t, const tf_histories *h, char *err,
-                         size_t errlen);
+int tf_prony_tick_allows(tf_ctx *ctx, const tf_prony_terms *t, const tf_histories *h);
 
 /* The largest error of a prony model's Q31 form (q31-format.md §8) over
  * the held-out histories, each stepped from rest with the forces as Q31

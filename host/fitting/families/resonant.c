@@ -35,11 +35,12 @@ extern const tf_family tf_family_resonant;
  * every mode of the box above it passes), by bisection in log omega. */
 static double lowest_carried(double tick, double zeta_lo, double omega_hi)
 {
-    char err[512];
+    tf_ctx scratch; /* a test, not a failure: the message is not wanted */
+    tf_ctx_init(&scratch);
     double lo = 1e-6 * omega_hi, hi = omega_hi;
     for (int it = 0; it < 60; ++it) {
         const double mid = sqrt(lo * hi);
-        if (tf_resonant_params_check(mid, zeta_lo, tick, err, sizeof err) == 0) {
+        if (tf_resonant_params_check(&scratch, mid, zeta_lo, tick) == 0) {
             hi = mid;
         } else {
             lo = mid;
@@ -59,16 +60,16 @@ void tf_resonant_bounds_for(const tf_histories *h, tf_resonant_bounds *b)
                             lowest_carried(h->tick, b->zeta_lo, b->omega_hi)));
 }
 
-tf_model *tf_resonant_assemble(const tf_model *s, const tf_resonant_modes *t, uint32_t tick_ns,
-                               char *err, size_t errlen)
+tf_model *tf_resonant_assemble(tf_ctx *ctx, const tf_model *s, const tf_resonant_modes *t,
+                               uint32_t tick_ns)
 {
     for (int k = 0; k < t->n; ++k) {
-        if (tf_resonant_params_check(t->omega[k], t->zeta[k], 1e-9 * tick_ns, err, errlen) != 0) {
+        if (tf_resonant_params_check(ctx, t->omega[k], t->zeta[k], 1e-9 * tick_ns) != 0) {
             return NULL;
         }
     }
-    tf_model *m = tf_stateful_new(TFIT_FAMILY_RESONANT, "resonant", s, (uint32_t)t->n, tick_ns,
-                                  err, errlen);
+    tf_model *m =
+        tf_stateful_new(ctx, TFIT_FAMILY_RESONANT, "resonant", s, (uint32_t)t->n, tick_ns);
     for (int k = 0; m != NULL && k < t->n; ++k) {
         tf_resonant_set_mode(m, (uint32_t)k, t->omega[k], t->zeta[k], t->w[k]);
     }
@@ -79,14 +80,13 @@ tf_model *tf_resonant_assemble(const tf_model *s, const tf_resonant_modes *t, ui
 
 /* TF_RESONANT_STARTS frequencies for each new mode of a model,
  * TF_RESONANT_CV_STARTS in cross-validation's folds. */
-static int fit_modes(const tf_prony_data *d, const tf_histories *h, const size_t *idx, size_t n,
-                     int k, int cv, void *modes, char *err, size_t errlen)
+static int fit_modes(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h, const size_t *idx,
+                     size_t n, int k, int cv, void *modes)
 {
     tf_resonant_bounds b;
     tf_resonant_bounds_for(h, &b);
-    return cv ? tf_resonant_fit_modes_from(d, idx, n, k, &b, TF_RESONANT_CV_STARTS, modes, err,
-                                           errlen)
-              : tf_resonant_fit_modes(d, idx, n, k, &b, modes, err, errlen);
+    return cv ? tf_resonant_fit_modes_from(ctx, d, idx, n, k, &b, TF_RESONANT_CV_STARTS, modes)
+              : tf_resonant_fit_modes(ctx, d, idx, n, k, &b, modes);
 }
 
 static double rms(const tf_prony_data *d, const size_t *idx, size_t n, const void *modes)
@@ -94,10 +94,9 @@ static double rms(const tf_prony_data *d, const size_t *idx, size_t n, const voi
     return tf_resonant_modes_rms(d, idx, n, modes);
 }
 
-static tf_model *assemble(const tf_model *s, const void *modes, const tf_histories *h, char *err,
-                          size_t errlen)
+static tf_model *assemble(tf_ctx *ctx, const tf_model *s, const void *modes, const tf_histories *h)
 {
-    return tf_resonant_assemble(s, modes, h->tick_ns, err, errlen);
+    return tf_resonant_assemble(ctx, s, modes, h->tick_ns);
 }
 
 static const tf_filter_fit resonant_fit = {
@@ -111,44 +110,42 @@ static const tf_filter_fit resonant_fit = {
     .assemble = assemble,
 };
 
-int tf_resonant_select_modes(const tf_prony_data *d, const tf_histories *h,
+int tf_resonant_select_modes(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h,
                              const tf_fit_plan *plan, double *cv, int *best,
-                             tf_resonant_modes *modes, char *err, size_t errlen)
+                             tf_resonant_modes *modes)
 {
-    return tf_stateful_select_terms(&resonant_fit, d, h, plan, cv, best, modes, err, errlen);
+    return tf_stateful_select_terms(ctx, &resonant_fit, d, h, plan, cv, best, modes);
 }
 
 /* ---- the family ----------------------------------------------------------- */
 
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
-    return tf_stateful_fit(&resonant_fit, c, idx, m, orders, err, errlen);
+    return tf_stateful_fit(ctx, &resonant_fit, c, idx, m, orders);
 }
 
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
-    return tf_stateful_select(&resonant_fit, c, plan, r, err, errlen);
+    return tf_stateful_select(ctx, &resonant_fit, c, plan, r);
 }
 
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
-    return tf_stateful_candidates(&resonant_fit, c, plan, take, arg, err, errlen);
+    return tf_stateful_candidates(ctx, &resonant_fit, c, plan, take, arg);
 }
 
-static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+static int applicable(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     if (c->hist == NULL) {
-        snprintf(why, whylen, "the problem has no inertia to fit: its solver is not "
-                              "time-dependent, so there are no force histories");
-        return -1;
+        return tf_fail(ctx, "the problem has no inertia to fit: its solver is not "
+                            "time-dependent, so there are no force histories");
     }
     if (plan->family != &tf_family_resonant) {
-        snprintf(why, whylen, "fitted only when asked for (fit.family: resonant), which "
-                              "designs dynamic histories (strikes) for it");
-        return -1;
+        return tf_fail(ctx, "fitted only when asked for (fit.family: resonant), which "
+                            "designs dynamic histories (strikes) for it");
     }
     return 0;
 }

@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "fitting/histories.h"
 #include "fitting/plan.h"
 #include "fitting/resonant_modes.h"
@@ -31,14 +32,14 @@ void tf_resonant_bounds_for(const tf_histories *h, tf_resonant_bounds *b);
  * of d (plan->folds folds of whole histories): cv[K] the validation RMS of
  * h, *best the cheapest K within 2 % of the best, modes fitted with it on
  * every history.  Returns 0, or -1 with a message. */
-int tf_resonant_select_modes(const tf_prony_data *d, const tf_histories *h,
+int tf_resonant_select_modes(tf_ctx *ctx, const tf_prony_data *d, const tf_histories *h,
                              const tf_fit_plan *plan, double *cv, int *best,
-                             tf_resonant_modes *modes, char *err, size_t errlen);
+                             tf_resonant_modes *modes);
 
 /* The resonant model of static map s (nodal or modal) and modes t at
  * tick_ns; NULL with a message when a mode is one the float recursion
  * cannot carry at that tick (tf_resonant_params_check). */
-tf_model *tf_resonant_assemble(const tf_model *s, const tf_resonant_modes *t, uint32_t tick_ns,
-                               char *err, size_t errlen);
+tf_model *tf_resonant_assemble(tf_ctx *ctx, const tf_model *s, const tf_resonant_modes *t,
+                               uint32_t tick_ns);
 
 #endif /* TF_RESONANT_FAMILY_H */

@@ -11,12 +11,11 @@
 #include "fitting/families/common.h"
 #include "model/basis.h"
 
-int tf_family_always(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+int tf_family_always(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
+    (void)ctx;
     (void)c;
     (void)plan;
-    (void)why;
-    (void)whylen;
     return 0;
 }
 
@@ -43,8 +42,8 @@ static const double *truth_of(int inverse, const tf_fitdata *d, size_t i, size_t
     return inverse ? d->force[i] : d->u + rows * i;
 }
 
-int tf_family_poly_f64_errors(const tf_model *m, const tf_cases *c, double *max, double *rms,
-                              char *err, size_t errlen)
+int tf_family_poly_f64_errors(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max,
+                              double *rms)
 {
     const tf_family *f = tf_family_of(m->family);
     const int inverse = f != NULL && f->kind == TF_FAMILY_INVERSE;
@@ -56,7 +55,7 @@ int tf_family_poly_f64_errors(const tf_model *m, const tf_cases *c, double *max,
     double *x = malloc(t * rows * sizeof *x), *phi = malloc(t * sizeof *phi);
     int rc = (a && y && x && phi) ? 0 : -1;
     if (rc != 0) {
-        snprintf(err, errlen, "%s float64 form: out of memory", m->name);
+        tf_fail(ctx, "%s float64 form: out of memory", m->name);
     }
     for (size_t i = 0; rc == 0 && i < n; ++i) {
         for (size_t o = 0; o < rows; ++o) {
@@ -64,7 +63,7 @@ int tf_family_poly_f64_errors(const tf_model *m, const tf_cases *c, double *max,
         }
     }
     if (rc == 0) {
-        rc = tf_family_lsq(a, n, t, y, rows, x, err, errlen);
+        rc = tf_family_lsq(ctx, a, n, t, y, rows, x);
     }
     double emax = 0, sum2 = 0;
     for (size_t i = 0; rc == 0 && i < held->n_cases; ++i) {

@@ -116,8 +116,8 @@ void tf_prony_data_free(tf_prony_data *d)
     d->g = d->target = NULL;
 }
 
-int tf_prony_data_build(const tf_model *s, const tf_history_set *set, double tick,
-                        tf_prony_data *d, char *err, size_t errlen)
+int tf_prony_data_build(tf_ctx *ctx, const tf_model *s, const tf_history_set *set, double tick,
+                        tf_prony_data *d)
 {
     const size_t ticks = set->n * set->n_ticks, rows = 3 * (size_t)s->n_out;
     double *g = malloc(3 * ticks * sizeof *g), *h = malloc(3 * ticks * sizeof *h);
@@ -126,8 +126,7 @@ int tf_prony_data_build(const tf_model *s, const tf_history_set *set, double tic
         free(g);
         free(h);
         free(work);
-        snprintf(err, errlen, "prony: out of memory for %zu ticks", ticks);
-        return -1;
+        return tf_fail(ctx, "prony: out of memory for %zu ticks", ticks);
     }
     *d = (tf_prony_data){.n_hist = set->n, .n_ticks = set->n_ticks, .g = g, .target = h,
                          .tick = tick};
@@ -157,32 +156,31 @@ static const tf_family *static_family(uint32_t r)
 
 /* The terms of the model (the caller's buffer of ff->size bytes), freed
  * by the caller. */
-static void *terms_buffer(const tf_filter_fit *ff, char *err, size_t errlen)
+static void *terms_buffer(tf_ctx *ctx, const tf_filter_fit *ff)
 {
     void *t = malloc(ff->size);
     if (t == NULL) {
-        snprintf(err, errlen, "%s: out of memory", ff->name);
+        tf_fail(ctx, "%s: out of memory", ff->name);
     }
     return t;
 }
 
-tf_model *tf_stateful_fit(const tf_filter_fit *ff, const tf_cases *c, const size_t *idx, size_t m,
-                          const uint32_t *orders, char *err, size_t errlen)
+tf_model *tf_stateful_fit(tf_ctx *ctx, const tf_filter_fit *ff, const tf_cases *c,
+                          const size_t *idx, size_t m, const uint32_t *orders)
 {
     const tf_histories *h = c->hist;
     if (h == NULL) {
-        snprintf(err, errlen, "%s: no force histories (the solver is not time-dependent)",
-                 ff->name);
+        tf_fail(ctx, "%s: no force histories (the solver is not time-dependent)", ff->name);
         return NULL;
     }
     const uint32_t static_orders[2] = {orders[0], orders[1]};
-    tf_model *s = static_family(orders[1])->fit(c, idx, m, static_orders, err, errlen);
-    void *t = s != NULL ? terms_buffer(ff, err, errlen) : NULL;
+    tf_model *s = static_family(orders[1])->fit(ctx, c, idx, m, static_orders);
+    void *t = s != NULL ? terms_buffer(ctx, ff) : NULL;
     tf_model *model = NULL;
     tf_prony_data d;
-    if (t != NULL && tf_prony_data_build(s, &h->train, h->tick, &d, err, errlen) == 0) {
-        if (ff->fit(&d, h, NULL, 0, (int)orders[2], 0, t, err, errlen) == 0) {
-            model = ff->assemble(s, t, h, err, errlen);
+    if (t != NULL && tf_prony_data_build(ctx, s, &h->train, h->tick, &d) == 0) {
+        if (ff->fit(ctx, &d, h, NULL, 0, (int)orders[2], 0, t) == 0) {
+            model = ff->assemble(ctx, s, t, h);
         }
         tf_prony_data_free(&d);
     }
@@ -198,60 +196,57 @@ typedef struct {
     const tf_prony_data *d;
     const tf_histories *h;
     void *terms;
-    char *err;
-    size_t errlen;
+    tf_ctx *ctx;
 } fold_ctx;
 
 static int fold(void *ctx, int k, const size_t *train, size_t nt, const size_t *valid, size_t nv,
                 double *rms)
 {
     const fold_ctx *x = ctx;
-    if (x->ff->fit(x->d, x->h, train, nt, k, 1, x->terms, x->err, x->errlen) != 0) {
+    if (x->ff->fit(x->ctx, x->d, x->h, train, nt, k, 1, x->terms) != 0) {
         return -1;
     }
     *rms = x->ff->rms(x->d, valid, nv, x->terms);
     return 0;
 }
 
-int tf_stateful_select_terms(const tf_filter_fit *ff, const tf_prony_data *d,
+int tf_stateful_select_terms(tf_ctx *ctx, const tf_filter_fit *ff, const tf_prony_data *d,
                              const tf_histories *h, const tf_fit_plan *plan, double *cv, int *best,
-                             void *terms, char *err, size_t errlen)
+                             void *terms)
 {
     const size_t n = d->n_hist, folds = plan->folds < n ? plan->folds : n;
-    fold_ctx x = {ff, d, h, terms, err, errlen};
+    fold_ctx x = {ff, d, h, terms, ctx};
     if (tf_family_history_cv(n, folds, ff->search, fold, &x, cv) != 0) {
-        snprintf(err, errlen, "%s: out of memory", ff->name);
-        return -1;
+        return tf_fail(ctx, "%s: out of memory", ff->name);
     }
     *best = (int)tf_family_cheapest_within(cv, 0, (uint32_t)ff->search);
     if (!isfinite(cv[*best])) {
-        snprintf(err, errlen, "%s: %s: no number of %s is determined by %zu histories",
-                 TF_FAMILY_UNDETERMINED, ff->name, ff->terms, n);
-        return -1;
+        return tf_fail(ctx, "%s: %s: no number of %s is determined by %zu histories",
+                       TF_FAMILY_UNDETERMINED, ff->name, ff->terms, n);
     }
-    return ff->fit(d, h, NULL, 0, *best, 0, terms, err, errlen);
+    return ff->fit(ctx, d, h, NULL, 0, *best, 0, terms);
 }
 
-int tf_stateful_select(const tf_filter_fit *ff, const tf_cases *c, const tf_fit_plan *plan,
-                       tf_family_result *r, char *err, size_t errlen)
+int tf_stateful_select(tf_ctx *ctx, const tf_filter_fit *ff, const tf_cases *c,
+                       const tf_fit_plan *plan, tf_family_result *r)
 {
     uint32_t p;
     const tf_family *nodal = static_family(0);
-    if (tf_family_select_degree(nodal, c, plan, 0, 0, r->cv, &p, err, errlen) != 0) {
+    if (tf_family_select_degree(ctx, nodal, c, plan, 0, 0, r->cv, &p) != 0) {
         return -1;
     }
-    tf_model *s = nodal->fit(c, NULL, 0, &p, err, errlen);
-    void *t = s != NULL ? terms_buffer(ff, err, errlen) : NULL;
+    tf_model *s = nodal->fit(ctx, c, NULL, 0, &p);
+    void *t = s != NULL ? terms_buffer(ctx, ff) : NULL;
     if (t != NULL) {
         tf_prony_data d;
         double cv[TF_STATEFUL_MAX_SEARCH + 1];
-        int k, rc = tf_prony_data_build(s, &c->hist->train, c->hist->tick, &d, err, errlen);
+        int k, rc = tf_prony_data_build(ctx, s, &c->hist->train, c->hist->tick, &d);
         if (rc == 0) {
-            rc = tf_stateful_select_terms(ff, &d, c->hist, plan, cv, &k, t, err, errlen);
+            rc = tf_stateful_select_terms(ctx, ff, &d, c->hist, plan, cv, &k, t);
             tf_prony_data_free(&d);
         }
         if (rc == 0) {
-            r->model = ff->assemble(s, t, c->hist, err, errlen);
+            r->model = ff->assemble(ctx, s, t, c->hist);
         }
     }
     free(t);
@@ -259,8 +254,8 @@ int tf_stateful_select(const tf_filter_fit *ff, const tf_cases *c, const tf_fit_
     return r->model != NULL ? 0 : -1;
 }
 
-int tf_stateful_candidates(const tf_filter_fit *ff, const tf_cases *c, const tf_fit_plan *plan,
-                           tf_family_take take, void *arg, char *err, size_t errlen)
+int tf_stateful_candidates(tf_ctx *ctx, const tf_filter_fit *ff, const tf_cases *c,
+                           const tf_fit_plan *plan, tf_family_take take, void *arg)
 {
     for (uint32_t p = 0; p <= plan->max_degree; ++p) {
         for (uint32_t k = 0; k <= (uint32_t)ff->search; ++k) {
@@ -268,7 +263,7 @@ int tf_stateful_candidates(const tf_filter_fit *ff, const tf_cases *c, const tf_
                 return 0;
             }
             const uint32_t orders[TFIT_PRONY_DIMS] = {p, 0, k, c->hist->tick_ns};
-            tf_model *m = tf_stateful_fit(ff, c, NULL, 0, orders, err, errlen);
+            tf_model *m = tf_stateful_fit(ctx, ff, c, NULL, 0, orders);
             if (m == NULL || take(arg, m) != 0) {
                 return -1;
             }
@@ -310,12 +305,13 @@ int tf_stateful_history_errors(const tf_model *m, const tf_history_set *set, dou
     return 0;
 }
 
-int tf_stateful_heldout(const tf_model *m, const tf_cases *c, double *max, double *rms,
-                        double *rel_max, uint32_t *n)
+int tf_stateful_heldout(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max,
+                        double *rms, double *rel_max, uint32_t *n)
 {
     double peak;
     if (c->hist == NULL || tf_stateful_history_errors(m, &c->hist->heldout, max, rms, &peak) != 0) {
-        return -1;
+        return tf_fail(ctx, "%s: out of memory for its held-out errors",
+                       tf_family_of(m->family)->name);
     }
     *rel_max = *max / peak;
     *n = (uint32_t)c->hist->heldout.n;

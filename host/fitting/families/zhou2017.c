@@ -36,7 +36,7 @@ static void plane_coordinates(const tf_fitdata *d, double *xy)
     }
 }
 
-int tf_zhou_applicable(const tf_fitdata *d, char *err, size_t errlen)
+int tf_zhou_applicable(tf_ctx *ctx, const tf_fitdata *d)
 {
     double zlo = INFINITY, zhi = -INFINITY, span = 0;
     for (uint32_t j = 0; j < d->n_out; ++j) {
@@ -45,25 +45,25 @@ int tf_zhou_applicable(const tf_fitdata *d, char *err, size_t errlen)
         span = fmax(span, fmax(fabs(d->rest[j][0]), fabs(d->rest[j][1])));
     }
     if (zhi - zlo > 1e-9 * fmax(span, 1.0)) {
-        snprintf(err, errlen,
-                 "family zhou2017 needs the output points on one plane z = const ([Zhou2017] §3.2 "
-                 "fits surfaces in x and y only); these span z = %g .. %g mm",
-                 zlo, zhi);
-        return -1;
+        return tf_fail(
+            ctx,
+            "family zhou2017 needs the output points on one plane z = const ([Zhou2017] §3.2 "
+            "fits surfaces in x and y only); these span z = %g .. %g mm",
+            zlo, zhi);
     }
     if (d->centre[0] != 0 || d->centre[1] != 0 || d->centre[2] != 0) {
-        snprintf(err, errlen,
-                 "family zhou2017 needs a force envelope centred at zero (its contact law is a "
-                 "polynomial of each force component alone); the centre is (%g, %g, %g) N",
-                 d->centre[0], d->centre[1], d->centre[2]);
-        return -1;
+        return tf_fail(
+            ctx,
+            "family zhou2017 needs a force envelope centred at zero (its contact law is a "
+            "polynomial of each force component alone); the centre is (%g, %g, %g) N",
+            d->centre[0], d->centre[1], d->centre[2]);
     }
     return 0;
 }
 
 /* Stage 1 on cases idx: d_a = r(g_a), returns the coefficients in r[]. */
-static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, uint32_t lambda,
-                       double *r, char *err, size_t errlen)
+static int contact_law(tf_ctx *ctx, const tf_fitdata *d, int a, const size_t *idx, size_t m,
+                       uint32_t lambda, double *r)
 {
     double *design = malloc(m * (lambda + 1) * sizeof *design), *y = malloc(m * sizeof *y);
     int rc = -1;
@@ -77,7 +77,7 @@ static int contact_law(const tf_fitdata *d, int a, const size_t *idx, size_t m, 
             }
             y[i] = d->contact[n][a];
         }
-        rc = tf_family_lsq(design, m, lambda + 1, y, 1, r, err, errlen);
+        rc = tf_family_lsq(ctx, design, m, lambda + 1, y, 1, r);
     }
     free(design);
     free(y);
@@ -106,9 +106,9 @@ static double *surface_design(const double *xy, const size_t *pts, size_t np, ui
 }
 
 /* Stage 2: p (rows x m, column per case) of component c over points pts. */
-static int surfaces(const tf_fitdata *d, int c, const size_t *cases, size_t m, const double *xy,
-                    const size_t *pts, size_t np, uint32_t A, uint32_t B, double *p, char *err,
-                    size_t errlen)
+static int surfaces(tf_ctx *ctx, const tf_fitdata *d, int c, const size_t *cases, size_t m,
+                    const double *xy, const size_t *pts, size_t np, uint32_t A, uint32_t B,
+                    double *p)
 {
     double *s = surface_design(xy, pts, np, A, B);
     double *y = malloc(np * m * sizeof *y);
@@ -120,7 +120,7 @@ static int surfaces(const tf_fitdata *d, int c, const size_t *cases, size_t m, c
                 y[q + i * np] = u[3 * tf_family_case(pts, q) + (size_t)c];
             }
         }
-        rc = tf_family_lsq(s, np, A + B + 1, y, m, p, err, errlen);
+        rc = tf_family_lsq(ctx, s, np, A + B + 1, y, m, p);
     }
     free(s);
     free(y);
@@ -128,8 +128,8 @@ static int surfaces(const tf_fitdata *d, int c, const size_t *cases, size_t m, c
 }
 
 /* Stage 3: beta (k+1 x rows) from p (rows x m) against t (m). */
-static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, uint32_t k,
-                    double *beta, char *err, size_t errlen)
+static int beta_fit(tf_ctx *ctx, const double *t, size_t m, const double *p, uint32_t rows,
+                    uint32_t k, double *beta)
 {
     double *design = malloc(m * (k + 1) * sizeof *design), *y = malloc(m * rows * sizeof *y);
     int rc = -1;
@@ -144,7 +144,7 @@ static int beta_fit(const double *t, size_t m, const double *p, uint32_t rows, u
                 y[i + r * m] = p[r + i * rows];
             }
         }
-        rc = tf_family_lsq(design, m, k + 1, y, rows, beta, err, errlen);
+        rc = tf_family_lsq(ctx, design, m, k + 1, y, rows, beta);
     }
     free(design);
     free(y);
@@ -177,11 +177,10 @@ float tf_zhou_scale(const float *r, uint32_t lambda)
     return s;
 }
 
-static int contact_scale(const tf_fitdata *d, int a, uint32_t lambda, double *scale, char *err,
-                         size_t errlen)
+static int contact_scale(tf_ctx *ctx, const tf_fitdata *d, int a, uint32_t lambda, double *scale)
 {
     double r[TFIT_MAX_DEGREE + 1];
-    if (contact_law(d, a, NULL, d->n_cases, lambda, r, err, errlen) != 0) {
+    if (contact_law(ctx, d, a, NULL, d->n_cases, lambda, r) != 0) {
         return -1;
     }
     float rf[TFIT_MAX_DEGREE + 1];
@@ -192,8 +191,8 @@ static int contact_scale(const tf_fitdata *d, int a, uint32_t lambda, double *sc
     return 0;
 }
 
-static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o, const double *xy,
-                     float *out, char *err, size_t errlen)
+static int fill_pair(tf_ctx *ctx, const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
+                     const double *xy, float *out)
 {
     const int pair = 3 * a + c;
     const uint32_t A = o->a[pair], B = o->b[pair], k = o->k[pair], rows = A + B + 1;
@@ -203,16 +202,16 @@ static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
     double scale = 1;
     int rc = -1;
     if (p && t && beta) {
-        rc = contact_scale(d, a, o->lambda[a], &scale, err, errlen);
+        rc = contact_scale(ctx, d, a, o->lambda[a], &scale);
     }
     if (rc == 0) {
-        rc = surfaces(d, c, NULL, m, xy, NULL, d->n_out, A, B, p, err, errlen);
+        rc = surfaces(ctx, d, c, NULL, m, xy, NULL, d->n_out, A, B, p);
     }
     if (rc == 0) {
         for (size_t i = 0; i < m; ++i) {
             t[i] = d->contact[i][a] * scale;
         }
-        rc = beta_fit(t, m, p, rows, k, beta, err, errlen);
+        rc = beta_fit(ctx, t, m, p, rows, k, beta);
     }
     if (rc == 0) {
         for (uint32_t r = 0; r < rows; ++r) {
@@ -227,8 +226,8 @@ static int fill_pair(const tf_fitdata *d, int a, int c, const tf_zhou_orders *o,
     return rc;
 }
 
-tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, const char *name,
-                      char *err, size_t errlen)
+tf_model *tf_zhou_fit(tf_ctx *ctx, const tf_fitdata *const axis[3], const tf_zhou_orders *o,
+                      const char *name)
 {
     const tf_fitdata *d0 = axis[0];
     uint32_t dims[TFIT_ZHOU2017_DIMS];
@@ -240,8 +239,8 @@ tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, 
         dims[4 + 3 * pair] = o->b[pair];
         dims[5 + 3 * pair] = o->k[pair];
     }
-    tf_model *model = tf_model_new(name, TFIT_FAMILY_ZHOU2017, d0->n_out, dims,
-                                   TFIT_ZHOU2017_DIMS, err, errlen);
+    tf_model *model =
+        tf_model_new(ctx, name, TFIT_FAMILY_ZHOU2017, d0->n_out, dims, TFIT_ZHOU2017_DIMS);
     double *xy = malloc(2 * d0->n_out * sizeof *xy);
     if (model == NULL || xy == NULL) {
         tf_model_free(model);
@@ -254,18 +253,18 @@ tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, 
     int rc = 0;
     for (int a = 0; rc == 0 && a < 3; ++a) {
         double r[TFIT_MAX_DEGREE + 1];
-        rc = contact_law(axis[a], a, NULL, axis[a]->n_cases, o->lambda[a], r, err, errlen);
+        rc = contact_law(ctx, axis[a], a, NULL, axis[a]->n_cases, o->lambda[a], r);
         for (uint32_t k = 0; rc == 0 && k <= o->lambda[a]; ++k) {
             *c++ = (float)r[k];
         }
         double scale = 1;
         if (rc == 0) {
-            rc = contact_scale(axis[a], a, o->lambda[a], &scale, err, errlen);
+            rc = contact_scale(ctx, axis[a], a, o->lambda[a], &scale);
         }
         *c++ = (float)scale;
     }
     for (int pair = 0; rc == 0 && pair < 9; ++pair) {
-        rc = fill_pair(axis[pair / 3], pair / 3, pair % 3, o, xy, c, err, errlen);
+        rc = fill_pair(ctx, axis[pair / 3], pair / 3, pair % 3, o, xy, c);
         c += (o->a[pair] + o->b[pair] + 1) * (o->k[pair] + 1);
     }
     for (uint32_t j = 0; rc == 0 && j < 2 * d0->n_out; ++j) {
@@ -312,9 +311,8 @@ static int undetermined(int rc, const char *err, double *out)
 }
 
 /* CV over load cases of the contact law of axis a at order lambda. */
-static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned *fold,
-                     unsigned folds, size_t *tr, size_t *te, double *out, char *err,
-                     size_t errlen)
+static int cv_lambda(tf_ctx *ctx, const tf_fitdata *d, int a, uint32_t lambda, const unsigned *fold,
+                     unsigned folds, size_t *tr, size_t *te, double *out)
 {
     double sum2 = 0;
     size_t count = 0;
@@ -322,8 +320,8 @@ static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned
         size_t nt = tf_cv_select(fold, d->n_cases, f, 0, tr);
         size_t nv = tf_cv_select(fold, d->n_cases, f, 1, te);
         double r[TFIT_MAX_DEGREE + 1], pw[TFIT_MAX_DEGREE + 1];
-        int rc = contact_law(d, a, tr, nt, lambda, r, err, errlen);
-        if (undetermined(rc, err, out)) {
+        int rc = contact_law(ctx, d, a, tr, nt, lambda, r);
+        if (undetermined(rc, ctx->err, out)) {
             return 0;
         }
         if (rc != 0) {
@@ -345,9 +343,9 @@ static int cv_lambda(const tf_fitdata *d, int a, uint32_t lambda, const unsigned
 }
 
 /* CV over output points of the surfaces of component c at orders (A, B). */
-static int cv_surface(const tf_fitdata *d, int c, const double *xy, uint32_t A, uint32_t B,
-                      const unsigned *fold, unsigned folds, size_t *tr, size_t *te, double *out,
-                      char *err, size_t errlen)
+static int cv_surface(tf_ctx *ctx, const tf_fitdata *d, int c, const double *xy, uint32_t A,
+                      uint32_t B, const unsigned *fold, unsigned folds, size_t *tr, size_t *te,
+                      double *out)
 {
     const size_t m = d->n_cases, rows = A + B + 1;
     double *p = malloc(rows * m * sizeof *p);
@@ -361,8 +359,8 @@ static int cv_surface(const tf_fitdata *d, int c, const double *xy, uint32_t A, 
             sum2 = INFINITY;
             break;
         }
-        rc = surfaces(d, c, NULL, m, xy, tr, nt, A, B, p, err, errlen);
-        if (undetermined(rc, err, out)) {
+        rc = surfaces(ctx, d, c, NULL, m, xy, tr, nt, A, B, p);
+        if (undetermined(rc, ctx->err, out)) {
             free(p);
             return 0;
         }
@@ -387,9 +385,9 @@ static int cv_surface(const tf_fitdata *d, int c, const double *xy, uint32_t A, 
 }
 
 /* CV over load cases of the beta polynomials of order k for one pair. */
-static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t lambda,
-                   uint32_t A, uint32_t B, uint32_t k, const unsigned *fold, unsigned folds, size_t *tr, size_t *te,
-                   double *out, char *err, size_t errlen)
+static int cv_beta(tf_ctx *ctx, const tf_fitdata *d, int a, int c, const double *xy,
+                   uint32_t lambda, uint32_t A, uint32_t B, uint32_t k, const unsigned *fold,
+                   unsigned folds, size_t *tr, size_t *te, double *out)
 {
     const size_t m = d->n_cases, rows = A + B + 1;
     double *p = malloc(rows * m * sizeof *p), *ptr = malloc(rows * m * sizeof *ptr);
@@ -398,9 +396,9 @@ static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t
     double scale = 1;
     double sum2 = 0;
     size_t count = 0;
-    int rc = (p && ptr && t && beta && s) ? contact_scale(d, a, lambda, &scale, err, errlen) : -1;
+    int rc = (p && ptr && t && beta && s) ? contact_scale(ctx, d, a, lambda, &scale) : -1;
     if (rc == 0) {
-        rc = surfaces(d, c, NULL, m, xy, NULL, d->n_out, A, B, p, err, errlen);
+        rc = surfaces(ctx, d, c, NULL, m, xy, NULL, d->n_out, A, B, p);
     }
     for (unsigned f = 0; rc == 0 && f < folds; ++f) {
         size_t nt = tf_cv_select(fold, m, f, 0, tr);
@@ -409,8 +407,8 @@ static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t
             t[i] = d->contact[tr[i]][a] * scale;
             memcpy(ptr + i * rows, p + tr[i] * rows, rows * sizeof *p);
         }
-        rc = beta_fit(t, nt, ptr, (uint32_t)rows, k, beta, err, errlen);
-        if (undetermined(rc, err, &sum2)) {
+        rc = beta_fit(ctx, t, nt, ptr, (uint32_t)rows, k, beta);
+        if (undetermined(rc, ctx->err, &sum2)) {
             rc = 0;
             count = 1;
             break;
@@ -445,8 +443,8 @@ static int cv_beta(const tf_fitdata *d, int a, int c, const double *xy, uint32_t
     return rc;
 }
 
-int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t seed,
-                   tf_zhou_orders *o, tf_zhou_cv *cv, char *err, size_t errlen)
+int tf_zhou_select(tf_ctx *ctx, const tf_fitdata *const axis[3], unsigned folds, uint64_t seed,
+                   tf_zhou_orders *o, tf_zhou_cv *cv)
 {
     const uint32_t n_out = axis[0]->n_out;
     size_t most = n_out;
@@ -460,7 +458,7 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
     tf_zhou_cv *c = cv ? cv : own;
     int rc = (xy && tr && te && cfold && pfold && c) ? 0 : -1;
     if (rc != 0) {
-        snprintf(err, errlen, "zhou2017: out of memory");
+        tf_fail(ctx, "zhou2017: out of memory");
     } else {
         plane_coordinates(axis[0], xy);
         tf_cv_folds(n_out, folds, seed ^ 0x5bd1e995u, pfold);
@@ -472,7 +470,7 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
         for (uint32_t l = 0; rc == 0 && l <= TFIT_MAX_DEGREE; ++l) {
             c->lambda_rms[a][l] = INFINITY;
             if (l <= top) {
-                rc = cv_lambda(d, a, l, cfold, folds, tr, te, &c->lambda_rms[a][l], err, errlen);
+                rc = cv_lambda(ctx, d, a, l, cfold, folds, tr, te, &c->lambda_rms[a][l]);
             }
         }
         o->lambda[a] = pick(c->lambda_rms[a], top + 1);
@@ -481,8 +479,8 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
             double best = INFINITY;
             for (uint32_t A = 0; rc == 0 && A <= TFIT_ZHOU_MAX_ORDER; ++A) {
                 for (uint32_t B = 0; rc == 0 && B <= TFIT_ZHOU_MAX_ORDER; ++B) {
-                    rc = cv_surface(d, comp, xy, A, B, pfold, folds, tr, te,
-                                    &c->surface_rms[pair][A][B], err, errlen);
+                    rc = cv_surface(ctx, d, comp, xy, A, B, pfold, folds, tr, te,
+                                    &c->surface_rms[pair][A][B]);
                     best = fmin(best, c->surface_rms[pair][A][B]);
                 }
             }
@@ -503,8 +501,8 @@ int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t see
             for (uint32_t k = 0; rc == 0 && k <= BETA_MAX; ++k) {
                 c->beta_rms[pair][k] = INFINITY;
                 if (k <= ktop) {
-                    rc = cv_beta(d, a, comp, xy, o->lambda[a], ba, bb, k, cfold, folds, tr, te,
-                                 &c->beta_rms[pair][k], err, errlen);
+                    rc = cv_beta(ctx, d, a, comp, xy, o->lambda[a], ba, bb, k, cfold, folds, tr, te,
+                                 &c->beta_rms[pair][k]);
                 }
             }
             o->k[pair] = pick(c->beta_rms[pair], ktop + 1);
@@ -534,59 +532,58 @@ static void orders_of(const uint32_t *dims, tf_zhou_orders *o)
 }
 
 /* The fit uses the single-axis cases, all of them: no selection. */
-static tf_model *fit(const tf_cases *c, const size_t *idx, size_t m, const uint32_t *orders,
-                     char *err, size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
+                     const uint32_t *orders)
 {
     (void)m;
     if (idx != NULL) {
-        snprintf(err, errlen, "zhou2017 fits every single-axis case: no selection of cases");
+        tf_fail(ctx, "zhou2017 fits every single-axis case: no selection of cases");
         return NULL;
     }
     const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
     tf_zhou_orders o;
     orders_of(orders, &o);
-    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+    return tf_zhou_fit(ctx, axis, &o, "zhou2017");
 }
 
 /* The seed's model needs the outputs on one plane and a centred envelope,
  * and its surface orders are cross-validated over the output points: at
  * least one per fold. */
-static int applicable(const tf_cases *c, const tf_fit_plan *plan, char *why, size_t whylen)
+static int applicable(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     if (c->train.n_out < plan->folds) {
-        snprintf(why, whylen,
-                 "family zhou2017 cross-validates its surfaces over the output points: it needs "
-                 "at least %u (the folds), not %u",
-                 plan->folds, c->train.n_out);
-        return -1;
+        return tf_fail(
+            ctx,
+            "family zhou2017 cross-validates its surfaces over the output points: it needs "
+            "at least %u (the folds), not %u",
+            plan->folds, c->train.n_out);
     }
-    return tf_zhou_applicable(&c->train, why, whylen);
+    return tf_zhou_applicable(ctx, &c->train);
 }
 
 /* Orders by cross-validation (tf_zhou_select), then the model. */
-static tf_model *cross_validated(const tf_cases *c, const tf_fit_plan *plan, char *err,
-                                 size_t errlen)
+static tf_model *cross_validated(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan)
 {
     const tf_fitdata *axis[3] = {&c->axis[0], &c->axis[1], &c->axis[2]};
     tf_zhou_orders o;
-    if (tf_zhou_select(axis, plan->folds, plan->seed, &o, NULL, err, errlen) != 0) {
+    if (tf_zhou_select(ctx, axis, plan->folds, plan->seed, &o, NULL) != 0) {
         return NULL;
     }
-    return tf_zhou_fit(axis, &o, "zhou2017", err, errlen);
+    return tf_zhou_fit(ctx, axis, &o, "zhou2017");
 }
 
-static int select_orders(const tf_cases *c, const tf_fit_plan *plan, tf_family_result *r,
-                         char *err, size_t errlen)
+static int select_orders(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan,
+                         tf_family_result *r)
 {
-    r->model = cross_validated(c, plan, err, errlen);
+    r->model = cross_validated(ctx, c, plan);
     return r->model ? 0 : -1;
 }
 
 /* One candidate: the cross-validated orders. */
-static int candidates(const tf_cases *c, const tf_fit_plan *plan, tf_family_take take, void *arg,
-                      char *err, size_t errlen)
+static int candidates(tf_ctx *ctx, const tf_cases *c, const tf_fit_plan *plan, tf_family_take take,
+                      void *arg)
 {
-    tf_model *m = cross_validated(c, plan, err, errlen);
+    tf_model *m = cross_validated(ctx, c, plan);
     return (m == NULL || take(arg, m) != 0) ? -1 : 0;
 }
 

@@ -19,6 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "fitting/fitdata.h"
 #include "model/model.h"
 
@@ -41,14 +42,14 @@ typedef struct tf_zhou_cv {
 
 /* Refuses data the seed's model cannot describe: output points off one
  * plane z = const, or an envelope not centred at zero force. */
-int tf_zhou_applicable(const tf_fitdata *d, char *err, size_t errlen);
+int tf_zhou_applicable(tf_ctx *ctx, const tf_fitdata *d);
 
 /* axis[a]: load cases with the force along axis a only (same outputs). */
-tf_model *tf_zhou_fit(const tf_fitdata *const axis[3], const tf_zhou_orders *o, const char *name,
-                      char *err, size_t errlen);
+tf_model *tf_zhou_fit(tf_ctx *ctx, const tf_fitdata *const axis[3], const tf_zhou_orders *o,
+                      const char *name);
 
 /* Chooses the orders by k-fold cross-validation; cv may be NULL. */
-int tf_zhou_select(const tf_fitdata *const axis[3], unsigned folds, uint64_t seed,
-                   tf_zhou_orders *o, tf_zhou_cv *cv, char *err, size_t errlen);
+int tf_zhou_select(tf_ctx *ctx, const tf_fitdata *const axis[3], unsigned folds, uint64_t seed,
+                   tf_zhou_orders *o, tf_zhou_cv *cv);
 
 #endif /* TF_ZHOU2017_H */

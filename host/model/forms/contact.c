@@ -21,9 +21,9 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
     return n_out == 1 ? tf_form_nodal.coefs(&tf_form_nodal, n_out, dims) : 0;
 }
 
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
-    return tf_form_nodal.bounds(m, err, errlen);
+    return tf_form_nodal.bounds(ctx, m);
 }
 
 static void ref_map(tf_arith *c, const tf_model *m, const float g[3], float *out)

@@ -24,11 +24,10 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 
 /* Every knot's rows: a + w (b - a), w in [0, 1], stays within twice the
  * larger. */
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
-    return tf_form_rows_bounds(m, m->coef + TFIT_INPUT_MAP_FLOATS,
-                               3ull * m->n_out * (m->dims[1] + 1), tf_terms(m->dims[0]), err,
-                               errlen);
+    return tf_form_rows_bounds(ctx, m, m->coef + TFIT_INPUT_MAP_FLOATS,
+                               3ull * m->n_out * (m->dims[1] + 1), tf_terms(m->dims[0]));
 }
 
 /* s clamped onto [0, 1] (NaN/Inf: bad, taken as 0), t = s K,

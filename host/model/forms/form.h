@@ -23,6 +23,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "base/context.h"
 #include "cost/cycles.h"
 #include "tfit.h"
 
@@ -40,7 +41,7 @@ typedef struct tf_filter tf_filter;
 /* A form's Q31 fixed-point form (docs/q31-format.md; model/q31.h). */
 typedef struct tf_form_q31 {
     /* The Q31 table of m, or NULL with the reason. */
-    tf_q31 *(*quantise)(const tf_model *m, char *err, size_t errlen);
+    tf_q31 *(*quantise)(tf_ctx *ctx, const tf_model *m);
     /* Sets q's added_error, float_error and error_cases (q31.h). */
     void (*measure)(tf_q31 *q, const tf_model *m, uint64_t seed, uint32_t n_cases);
     /* What the error was measured over, for the header ("envelope points"). */
@@ -69,7 +70,7 @@ typedef struct tf_form {
     uint64_t (*coefs)(const struct tf_form *f, uint32_t n_out, const uint32_t *dims);
     /* What tfit_model_check() proves of the tables beyond the input map:
      * 0, or 1 with a message naming the table and index at fault. */
-    int (*bounds)(const tf_model *m, char *err, size_t errlen);
+    int (*bounds)(tf_ctx *ctx, const tf_model *m);
 
     /* ---- the reference evaluation (model/ref_eval.h, ref_arith.h) ---- */
     /* The form's part (§5) at the projected input g into out[3 n_out],
@@ -154,12 +155,11 @@ tfit_status tf_form_check_each(const tf_model *m, float *state, int k, const flo
 double tf_form_abs_poly(const float *c, uint32_t order, double tau);
 /* 0 when b <= TF_FORM_BOUND_LIMIT; else 1 with a message naming `what`
  * and its index. */
-int tf_form_bound_fail(double b, const char *what, const tf_model *m, uint32_t index, char *err,
-                       size_t errlen);
+int tf_form_bound_fail(tf_ctx *ctx, double b, const char *what, const tf_model *m, uint32_t index);
 /* n_rows rows of n_terms coefficients at c, each bounded on the unit ball
  * (nodal, contact, cut): 0, or 1 with a message. */
-int tf_form_rows_bounds(const tf_model *m, const float *c, uint64_t n_rows, uint32_t n_terms,
-                        char *err, size_t errlen);
+int tf_form_rows_bounds(tf_ctx *ctx, const tf_model *m, const float *c, uint64_t n_rows,
+                        uint32_t n_terms);
 
 /* Operations (§6): the projection (§4), and the basis of degree p (§5.1). */
 void tf_form_input_ops(tf_opcount *ops);

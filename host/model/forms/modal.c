@@ -25,14 +25,14 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 
 /* Each amplitude on the unit ball, then each output as the modes weighted
  * by those bounds. */
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
     const uint32_t t = tf_terms(m->dims[0]), r = m->dims[1];
     double amax[TFIT_MAX_RANK];
     for (uint32_t k = 0; k < r; ++k) {
         amax[k] = tf_form_abs_poly(c + k * t, t - 1, 1.0);
-        if (tf_form_bound_fail(amax[k], "mode amplitude", m, k, err, errlen)) {
+        if (tf_form_bound_fail(ctx, amax[k], "mode amplitude", m, k)) {
             return 1;
         }
     }
@@ -42,7 +42,7 @@ static int bounds(const tf_model *m, char *err, size_t errlen)
         for (uint32_t k = 0; k < r; ++k) {
             b += fabs((double)u[o * r + k]) * amax[k];
         }
-        if (tf_form_bound_fail(b, "output", m, o, err, errlen)) {
+        if (tf_form_bound_fail(ctx, b, "output", m, o)) {
             return 1;
         }
     }

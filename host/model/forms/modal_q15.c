@@ -31,7 +31,7 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
  * overflow to +-Inf: it saturates), S in [0, 2^64], every row word's
  * halves within [-16255, 16255] (so that the sums cannot overflow and no
  * word is a NaN or Inf pattern). */
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
     const uint32_t t = tf_terms(m->dims[0]), r = TFIT_MODAL_Q15_RANK;
     const float *at = m->coef + TFIT_INPUT_MAP_FLOATS;
@@ -41,18 +41,17 @@ static int bounds(const tf_model *m, char *err, size_t errlen)
         for (uint32_t j = 0; j < t; ++j) {
             b += fabs((double)at[(size_t)j * r + k]);
         }
-        if (tf_form_bound_fail(b, "mode amplitude", m, k, err, errlen)) {
+        if (tf_form_bound_fail(ctx, b, "mode amplitude", m, k)) {
             return 1;
         }
         if (!(fabs((double)v[k]) <= TF_FORM_BOUND_LIMIT)) {
-            snprintf(err, errlen, "model '%s': Q15 scale of mode %u is %g (not finite)", m->name,
-                     k, (double)v[k]);
+            tf_fail(ctx, "model '%s': Q15 scale of mode %u is %g (not finite)", m->name, k,
+                    (double)v[k]);
             return 1;
         }
     }
     if (!(v[r] >= 0.0f && v[r] <= 0x1p64f)) {
-        snprintf(err, errlen, "model '%s': Q15 output scale %g outside [0, 2^64]", m->name,
-                 (double)v[r]);
+        tf_fail(ctx, "model '%s': Q15 output scale %g outside [0, 2^64]", m->name, (double)v[r]);
         return 1;
     }
     const float *rows = v + r + 1;
@@ -62,8 +61,8 @@ static int bounds(const tf_model *m, char *err, size_t errlen)
         const int32_t lo = (int32_t)(int16_t)(uint16_t)(w & 0xffffu);
         const int32_t hi = (int32_t)(w >> 16) - 16384;
         if (lo < -16255 || lo > 16255 || hi < -16255 || hi > 16255) {
-            snprintf(err, errlen, "model '%s': Q15 row word %u holds %d, %d beyond +-16255",
-                     m->name, i, lo, hi);
+            tf_fail(ctx, "model '%s': Q15 row word %u holds %d, %d beyond +-16255", m->name, i, lo,
+                    hi);
             return 1;
         }
     }

@@ -22,10 +22,10 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
     return TFIT_INPUT_MAP_FLOATS + 3ull * n_out * tf_terms(dims[0]);
 }
 
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
-    return tf_form_rows_bounds(m, m->coef + TFIT_INPUT_MAP_FLOATS, 3ull * m->n_out,
-                               tf_terms(m->dims[0]), err, errlen);
+    return tf_form_rows_bounds(ctx, m, m->coef + TFIT_INPUT_MAP_FLOATS, 3ull * m->n_out,
+                               tf_terms(m->dims[0]));
 }
 
 /* §5.1, §5.2: the basis, then every row summed left to right. */

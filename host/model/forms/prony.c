@@ -73,15 +73,15 @@ static void ref_terms(tf_arith *c, const tf_model *m, const float d[3], const fl
 
 /* header-format.md §8: 0 <= a_k <= 1 - 2^-19 (the target's limit is
  * 1 - 2^-20: a bit of margin) and |D_k| <= 2^63. */
-static int term_check(const tf_model *m, uint32_t k, char *err, size_t errlen)
+static int term_check(tf_ctx *ctx, const tf_model *m, uint32_t k)
 {
     const float *pt = m->coef + TFIT_INPUT_MAP_FLOATS + 2 * k;
     const double a = pt[0], d = fabs((double)pt[1]);
     if (!(a >= 0 && a <= 1 - 0x1p-19) || !(d <= 0x1p63)) {
-        snprintf(err, errlen,
-                 "model '%s': prony term %u has decay %g and gain %g (decay in [0, 1 - 2^-19] "
-                 "and |gain| <= 2^63 keep the state finite)",
-                 m->name, k, a, (double)pt[1]);
+        tf_fail(ctx,
+                "model '%s': prony term %u has decay %g and gain %g (decay in [0, 1 - 2^-19] "
+                "and |gain| <= 2^63 keep the state finite)",
+                m->name, k, a, (double)pt[1]);
         return 1;
     }
     return 0;

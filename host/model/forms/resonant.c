@@ -55,10 +55,10 @@ void tf_resonant_get_mode(const tf_model *m, uint32_t k, double *omega, double *
     }
 }
 
-int tf_resonant_mode_check(const tf_model *m, uint32_t k, char *err, size_t errlen)
+int tf_resonant_mode_check(tf_ctx *ctx, const tf_model *m, uint32_t k)
 {
-    return tf_resonant_floats_check(m->coef + TFIT_INPUT_MAP_FLOATS + MODE_FLOATS * k, m->name, k,
-                                    err, errlen);
+    return tf_resonant_floats_check(ctx, m->coef + TFIT_INPUT_MAP_FLOATS + MODE_FLOATS * k, m->name,
+                                    k);
 }
 
 /* ---- the filter ---------------------------------------------------------- */
@@ -81,9 +81,9 @@ static void ref_terms(tf_arith *c, const tf_model *m, const float d[3], const fl
 
 /* The device's magnitude limits (tfit_check.c), and the contraction of the
  * rounded transition matrix that keeps the state finite (oscillator.h). */
-static int term_check(const tf_model *m, uint32_t k, char *err, size_t errlen)
+static int term_check(tf_ctx *ctx, const tf_model *m, uint32_t k)
 {
-    return tf_resonant_mode_check(m, k, err, errlen);
+    return tf_resonant_mode_check(ctx, m, k);
 }
 
 typedef enum block_id {

@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "model/forms/stateful.h"
 #include "model/model.h"
 #include "model/oscillator.h"
@@ -32,6 +33,6 @@ void tf_resonant_get_mode(const tf_model *m, uint32_t k, double *omega, double *
                           double w[3]);
 
 /* tf_resonant_floats_check (oscillator.h) of mode k of m. */
-int tf_resonant_mode_check(const tf_model *m, uint32_t k, char *err, size_t errlen);
+int tf_resonant_mode_check(tf_ctx *ctx, const tf_model *m, uint32_t k);
 
 #endif /* TF_RESONANT_FORM_H */

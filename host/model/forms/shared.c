@@ -76,25 +76,24 @@ double tf_form_abs_poly(const float *c, uint32_t order, double tau)
     return s;
 }
 
-int tf_form_bound_fail(double b, const char *what, const tf_model *m, uint32_t index, char *err,
-                       size_t errlen)
+int tf_form_bound_fail(tf_ctx *ctx, double b, const char *what, const tf_model *m, uint32_t index)
 {
     if (b <= TF_FORM_BOUND_LIMIT) {
         return 0;
     }
-    snprintf(err, errlen,
-             "model '%s': %s %u can reach %g, beyond the float-safe bound 2^99 (non-finite or "
-             "ill-scaled coefficients)",
-             m->name, what, index, b);
+    tf_fail(ctx,
+            "model '%s': %s %u can reach %g, beyond the float-safe bound 2^99 (non-finite or "
+            "ill-scaled coefficients)",
+            m->name, what, index, b);
     return 1;
 }
 
-int tf_form_rows_bounds(const tf_model *m, const float *c, uint64_t n_rows, uint32_t n_terms,
-                        char *err, size_t errlen)
+int tf_form_rows_bounds(tf_ctx *ctx, const tf_model *m, const float *c, uint64_t n_rows,
+                        uint32_t n_terms)
 {
     for (uint64_t o = 0; o < n_rows; ++o) {
-        if (tf_form_bound_fail(tf_form_abs_poly(c + o * n_terms, n_terms - 1, 1.0), "output", m,
-                               (uint32_t)o, err, errlen)) {
+        if (tf_form_bound_fail(ctx, tf_form_abs_poly(c + o * n_terms, n_terms - 1, 1.0), "output",
+                               m, (uint32_t)o)) {
             return 1;
         }
     }

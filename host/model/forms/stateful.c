@@ -44,12 +44,12 @@ tf_model tf_stateful_static_view(const tf_model *m)
     return v;
 }
 
-tf_model *tf_stateful_new(tfit_family id, const char *name, const tf_model *s, uint32_t terms,
-                          uint32_t tick_ns, char *err, size_t errlen)
+tf_model *tf_stateful_new(tf_ctx *ctx, tfit_family id, const char *name, const tf_model *s,
+                          uint32_t terms, uint32_t tick_ns)
 {
     const uint32_t r = s->dims[1] * (s->n_dims > 1); /* a nodal map has no rank */
     const uint32_t dims[TFIT_PRONY_DIMS] = {s->dims[0], r, terms, tick_ns}; /* every stateful form's */
-    tf_model *m = tf_model_new(name, id, s->n_out, dims, TFIT_PRONY_DIMS, err, errlen);
+    tf_model *m = tf_model_new(ctx, name, id, s->n_out, dims, TFIT_PRONY_DIMS);
     if (m == NULL) {
         return NULL;
     }
@@ -78,16 +78,16 @@ uint64_t tf_stateful_coefs(const tf_form *f, uint32_t n_out, const uint32_t *dim
 
 /* Every term within the device's bounds, then the static map as its own
  * form (h is clamped to [-1, 1] before it). */
-int tf_stateful_bounds(const tf_model *m, char *err, size_t errlen)
+int tf_stateful_bounds(tf_ctx *ctx, const tf_model *m)
 {
     const tf_filter *f = tf_stateful_filter(m);
     for (uint32_t k = 0; k < m->dims[2]; ++k) {
-        if (f->term_check(m, k, err, errlen) != 0) {
+        if (f->term_check(ctx, m, k) != 0) {
             return 1;
         }
     }
     const tf_model v = tf_stateful_static_view(m);
-    return tf_form_of(v.family)->bounds(&v, err, errlen);
+    return tf_form_of(v.family)->bounds(ctx, &v);
 }
 
 /* The filter (§5.6, §5.8): d_i = g_i - gp_i, h_i = g_i, the terms; h

@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "base/context.h"
 #include "model/forms/form.h"
 #include "model/model.h"
 #include "model/ref_arith.h"
@@ -41,7 +42,7 @@ struct tf_filter {
                       float *zn, float h[3]);
     /* Term k within the device's bounds (tfit_check.c): 0, or 1 with a
      * message naming it. */
-    int (*term_check)(const tf_model *m, uint32_t k, char *err, size_t errlen);
+    int (*term_check)(tf_ctx *ctx, const tf_model *m, uint32_t k);
     /* Adds the instructions of the filter's function for K terms, its
      * dispatch in tfit_stateful_filter included. */
     void (*insn_mix)(tf_insn_mix *t, tf_core core, uint32_t terms);
@@ -73,8 +74,8 @@ tf_model tf_stateful_static_view(const tf_model *m);
  * or modal model: its input map, tables, node ids and envelope radius) and
  * K zero terms at tick_ns; the caller sets the terms.  NULL with a message
  * when the shape is invalid or out of memory. */
-tf_model *tf_stateful_new(tfit_family id, const char *name, const tf_model *s, uint32_t terms,
-                          uint32_t tick_ns, char *err, size_t errlen);
+tf_model *tf_stateful_new(tf_ctx *ctx, tfit_family id, const char *name, const tf_model *s,
+                          uint32_t terms, uint32_t tick_ns);
 
 /* The state at rest (the projected zero force, zero terms) and one tick
  * (§5.6, §5.8), as tfit_prony_reset/_step and tfit_resonant_reset/_step:
@@ -101,7 +102,7 @@ tfit_status tf_stateful_step(const tf_model *m, float *state, const float in[3],
     .emit_macros = tf_stateful_emit_macros
 
 uint64_t tf_stateful_coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims);
-int tf_stateful_bounds(const tf_model *m, char *err, size_t errlen);
+int tf_stateful_bounds(tf_ctx *ctx, const tf_model *m);
 /* The relaxed response: the force held for ever (the state {g, 0}, then one
  * tick), the equilibrium a time-dependent solver's static solve gives;
  * h = g there, so it is the static map at g. */

@@ -46,7 +46,7 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 /* The contact laws and their scales on the unit ball; the surfaces as
  * Chebyshev series in |t| <= tau, where |T_k|, |U_k| <= (2 tau)^k
  * (header-format.md §8); the node coordinates in [-1, 1]. */
-static int bounds(const tf_model *m, char *err, size_t errlen)
+static int bounds(tf_ctx *ctx, const tf_model *m)
 {
     const float *c = m->coef + TFIT_INPUT_MAP_FLOATS;
     double tau[3], comp[3] = {0, 0, 0};
@@ -54,9 +54,8 @@ static int bounds(const tf_model *m, char *err, size_t errlen)
         double d = tf_form_abs_poly(c, m->dims[a], 1.0);
         c += m->dims[a] + 1;
         double t = d * fabs((double)*c++);
-        if (tf_form_bound_fail(d, "contact displacement of axis", m, (uint32_t)a, err, errlen) ||
-            tf_form_bound_fail(t, "normalised contact displacement of axis", m, (uint32_t)a, err,
-                               errlen)) {
+        if (tf_form_bound_fail(ctx, d, "contact displacement of axis", m, (uint32_t)a) ||
+            tf_form_bound_fail(ctx, t, "normalised contact displacement of axis", m, (uint32_t)a)) {
             return 1;
         }
         tau[a] = 2 * (t > 1 ? t : 1);
@@ -69,13 +68,13 @@ static int bounds(const tf_model *m, char *err, size_t errlen)
     }
     for (uint32_t j = 0; j < 2 * m->n_out; ++j) {
         if (!(fabs((double)c[j]) <= 1.0)) {
-            snprintf(err, errlen, "model '%s': normalised node coordinate %u is %g, outside [-1, 1]",
-                     m->name, j, (double)c[j]);
+            tf_fail(ctx, "model '%s': normalised node coordinate %u is %g, outside [-1, 1]",
+                    m->name, j, (double)c[j]);
             return 1;
         }
     }
     for (uint32_t k = 0; k < 3; ++k) {
-        if (tf_form_bound_fail(comp[k], "displacement component", m, k, err, errlen)) {
+        if (tf_form_bound_fail(ctx, comp[k], "displacement component", m, k)) {
             return 1;
         }
     }

@@ -29,6 +29,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "materials/material.h"
 
 typedef struct tf_colloc_opts {
@@ -83,8 +84,7 @@ typedef struct tf_colloc tf_colloc;
  * gradient weights (reference configuration).  Returns NULL with a message
  * (a bad option or material, a moment matrix near singular: the particle,
  * its position and neighbour count). */
-tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char *err,
-                         size_t errlen);
+tf_colloc *tf_colloc_new(tf_ctx *ctx, const tf_colloc_body *b, const tf_colloc_opts *o);
 void tf_colloc_free(tf_colloc *c);
 
 /* ---- the particles (read-only) ---------------------------------------- */
@@ -116,8 +116,8 @@ double *tf_colloc_ubar(tf_colloc *c);
  * negative).  dt is the material's time step (0 for elastic laws); the
  * history is read, not advanced.  Returns 0, or -1 with a message when a
  * particle's deformation gradient has det F <= 0. */
-int tf_colloc_forces(tf_colloc *c, const double *u, double dt, double *f, double *energy,
-                     char *err, size_t errlen);
+int tf_colloc_forces(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, double *f,
+                     double *energy);
 
 /* Every particle's deformation gradient F_i = I + grad u|_i (eqs 6-9;
  * 9 per particle, row major dx_a/dX_b) at displacement u. */
@@ -144,7 +144,7 @@ typedef struct tf_colloc_sphere {
  * into the sphere is put back on its surface along the radius and loses
  * its velocity into the sphere (docs/collocation.md).  Returns 0, or -1
  * with a message. */
-int tf_colloc_set_sphere(tf_colloc *c, const tf_colloc_sphere *s, char *err, size_t errlen);
+int tf_colloc_set_sphere(tf_ctx *ctx, tf_colloc *c, const tf_colloc_sphere *s);
 void tf_colloc_remove_sphere(tf_colloc *c);
 /* The sphere's travel along dir (mm): set (indentation drive) or read. */
 void tf_colloc_set_travel(tf_colloc *c, double travel);
@@ -166,7 +166,7 @@ size_t tf_colloc_contacts(const tf_colloc *c);
  * over the free components (K the stiffness at the reference
  * configuration; Lanczos, 40 steps).  Returns it (s), or a negative value
  * with a message. */
-double tf_colloc_critical_dt(tf_colloc *c, char *err, size_t errlen);
+double tf_colloc_critical_dt(tf_ctx *ctx, tf_colloc *c);
 
 /* The same bound from the P-wave speed: min_i r_i / c_p, r_i the distance
  * to the nearest neighbour, c_p = sqrt((lambda + 2 mu) / rho). */
@@ -178,7 +178,7 @@ double tf_colloc_wave_dt(const tf_colloc *c);
  * `fext` acts throughout; a history law's state advances every step.
  * Returns 0, or -1 with a message (a particle inverted, the motion not
  * finite: the step was too large). */
-int tf_colloc_run(tf_colloc *c, double dt, size_t steps, double alpha, char *err, size_t errlen);
+int tf_colloc_run(tf_ctx *ctx, tf_colloc *c, double dt, size_t steps, double alpha);
 
 /* Simulated time so far (s). */
 double tf_colloc_time(const tf_colloc *c);
@@ -204,7 +204,7 @@ void tf_colloc_relax_defaults(tf_colloc_relax_opts *o);
  * lowest mode (docs/collocation.md).  Velocities are zero afterwards.
  * Returns 0 (converged), 1 (not converged within max_steps: the state is
  * the last iterate), or -1 with a message. */
-int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax_stats *st,
-                    char *err, size_t errlen);
+int tf_colloc_relax(tf_ctx *ctx, tf_colloc *c, const tf_colloc_relax_opts *o,
+                    tf_colloc_relax_stats *st);
 
 #endif /* TF_COLLOC_H */

@@ -27,18 +27,16 @@
 /* Particles with a distance to the centre up to R (1 + this) touch. */
 #define TOUCH 1e-9
 
-int tf_colloc_set_sphere(tf_colloc *c, const tf_colloc_sphere *s, char *err, size_t errlen)
+int tf_colloc_set_sphere(tf_ctx *ctx, tf_colloc *c, const tf_colloc_sphere *s)
 {
     double len = sqrt(s->dir[0] * s->dir[0] + s->dir[1] * s->dir[1] + s->dir[2] * s->dir[2]);
     if (!(s->radius > 0) || !isfinite(s->radius) || !(len > 0) || !isfinite(len)) {
-        snprintf(err, errlen, "sphere: radius %g mm and |dir| %g must be finite and > 0",
-                 s->radius, len);
-        return -1;
+        return tf_fail(ctx, "sphere: radius %g mm and |dir| %g must be finite and > 0", s->radius,
+                       len);
     }
     if (s->drive == TF_COLLOC_FORCE && (!(s->mass >= 0) || !isfinite(s->force))) {
-        snprintf(err, errlen, "sphere: force %g N must be finite and mass %g t >= 0", s->force,
-                 s->mass);
-        return -1;
+        return tf_fail(ctx, "sphere: force %g N must be finite and mass %g t >= 0", s->force,
+                       s->mass);
     }
     c->ball = (tf_colloc_ball){0};
     c->ball.on = 1;

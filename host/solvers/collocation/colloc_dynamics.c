@@ -75,19 +75,17 @@ static int all_finite(const double *x, size_t n)
     return s == 0;
 }
 
-int tf_colloc_run(tf_colloc *c, double dt, size_t steps, double alpha, char *err, size_t errlen)
+int tf_colloc_run(tf_ctx *ctx, tf_colloc *c, double dt, size_t steps, double alpha)
 {
     if (!(dt > 0) || !isfinite(dt) || !(alpha >= 0) || !isfinite(alpha)) {
-        snprintf(err, errlen, "time step %g s must be > 0 and damping %g 1/s >= 0", dt, alpha);
-        return -1;
+        return tf_fail(ctx, "time step %g s must be > 0 and damping %g 1/s >= 0", dt, alpha);
     }
     if (c->ball.on && c->ball.s.drive == TF_COLLOC_FORCE && !(c->ball.s.mass > 0)) {
-        snprintf(err, errlen, "sphere: a force-driven indenter needs a mass > 0 in dynamics");
-        return -1;
+        return tf_fail(ctx, "sphere: a force-driven indenter needs a mass > 0 in dynamics");
     }
     tf_colloc_impose(c, c->u, c->v);
     for (size_t k = 0; k < steps; ++k) {
-        if (tf_colloc_eval(c, c->u, dt, c->f, NULL, err, errlen) != 0) {
+        if (tf_colloc_eval(ctx, c, c->u, dt, c->f, NULL) != 0) {
             return -1;
         }
         tf_colloc_kick_drift(c, c->mass, dt, alpha);
@@ -97,18 +95,18 @@ int tf_colloc_run(tf_colloc *c, double dt, size_t steps, double alpha, char *err
         c->hnew = t;
         c->time += dt;
         if ((k % 16 == 15 || k + 1 == steps) && !all_finite(c->u, 3 * c->n)) {
-            snprintf(err, errlen,
-                     "the motion is no longer finite after %zu steps of %g s: the step is "
-                     "above the stable one (tf_colloc_critical_dt)", k + 1, dt);
-            return -1;
+            return tf_fail(ctx,
+                           "the motion is no longer finite after %zu steps of %g s: the step is "
+                           "above the stable one (tf_colloc_critical_dt)",
+                           k + 1, dt);
         }
     }
     return 0;
 }
 
 /* y = K x over the free components (K at the reference configuration). */
-static int stiffness_times(tf_colloc *c, const double *x, double *y, double *up, double *fp,
-                           double *fm, char *err, size_t errlen)
+static int stiffness_times(tf_ctx *ctx, tf_colloc *c, const double *x, double *y, double *up,
+                           double *fp, double *fm)
 {
     size_t n3 = 3 * c->n;
     double big = 0, hmean = 0;
@@ -122,13 +120,13 @@ static int stiffness_times(tf_colloc *c, const double *x, double *y, double *up,
     for (size_t q = 0; q < n3; ++q) {
         up[q] = eps * x[q];
     }
-    if (tf_colloc_eval(c, up, 0, fp, NULL, err, errlen) != 0) {
+    if (tf_colloc_eval(ctx, c, up, 0, fp, NULL) != 0) {
         return -1;
     }
     for (size_t q = 0; q < n3; ++q) {
         up[q] = -eps * x[q];
     }
-    if (tf_colloc_eval(c, up, 0, fm, NULL, err, errlen) != 0) {
+    if (tf_colloc_eval(ctx, c, up, 0, fm, NULL) != 0) {
         return -1;
     }
     for (size_t q = 0; q < n3; ++q) {
@@ -146,13 +144,12 @@ static double dot(const double *a, const double *b, size_t n)
     return s;
 }
 
-double tf_colloc_omega2_max(tf_colloc *c, const double *m, char *err, size_t errlen)
+double tf_colloc_omega2_max(tf_ctx *ctx, tf_colloc *c, const double *m)
 {
     size_t n3 = 3 * c->n;
     double *buf = malloc(6 * n3 * sizeof *buf);
     if (buf == NULL) {
-        snprintf(err, errlen, "out of memory for the stable-step estimate");
-        return -1;
+        return tf_fail(ctx, "out of memory for the stable-step estimate");
     }
     double *q = buf, *qold = buf + n3, *x = buf + 2 * n3, *w = buf + 3 * n3, *up = buf + 4 * n3,
            *fp = buf + 5 * n3;
@@ -168,8 +165,7 @@ double tf_colloc_omega2_max(tf_colloc *c, const double *m, char *err, size_t err
     if (fm == NULL || !(nq > 0)) {
         free(buf);
         free(fm);
-        snprintf(err, errlen, fm ? "no free component: nothing moves" : "out of memory");
-        return -1;
+        return tf_fail(ctx, fm ? "no free component: nothing moves" : "out of memory");
     }
     for (size_t k = 0; k < n3; ++k) {
         q[k] /= nq;
@@ -178,7 +174,7 @@ double tf_colloc_omega2_max(tf_colloc *c, const double *m, char *err, size_t err
         for (size_t k = 0; k < n3; ++k) {
             x[k] = q[k] / sqrt(m[k / 3]);
         }
-        if (stiffness_times(c, x, w, up, fp, fm, err, errlen) != 0) {
+        if (stiffness_times(ctx, c, x, w, up, fp, fm) != 0) {
             rc = -1;
             break;
         }
@@ -205,18 +201,17 @@ double tf_colloc_omega2_max(tf_colloc *c, const double *m, char *err, size_t err
         return -1;
     }
     if (LAPACKE_dstev(LAPACK_COL_MAJOR, 'N', steps, alpha, beta, NULL, 1) != 0) {
-        snprintf(err, errlen, "dstev failed on the Lanczos matrix");
-        return -1;
+        return tf_fail(ctx, "dstev failed on the Lanczos matrix");
     }
     return alpha[steps - 1]; /* ascending */
 }
 
-double tf_colloc_critical_dt(tf_colloc *c, char *err, size_t errlen)
+double tf_colloc_critical_dt(tf_ctx *ctx, tf_colloc *c)
 {
-    double w2 = tf_colloc_omega2_max(c, c->mass, err, errlen);
+    double w2 = tf_colloc_omega2_max(ctx, c, c->mass);
     if (!(w2 > 0)) {
         if (w2 >= 0) {
-            snprintf(err, errlen, "the stiffness has no positive eigenvalue");
+            tf_fail(ctx, "the stiffness has no positive eigenvalue");
         }
         return -1;
     }

@@ -275,8 +275,7 @@ static void phase2(const tf_colloc *c, size_t k, const double *u, double *f)
     f[3 * k + 2] = f2;
 }
 
-int tf_colloc_eval(tf_colloc *c, const double *u, double dt, double *f, double *energy,
-                   char *err, size_t errlen)
+int tf_colloc_eval(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, double *f, double *energy)
 {
     size_t n = c->n, na = c->na;
     int want = energy != NULL, failed = 0;
@@ -305,11 +304,10 @@ int tf_colloc_eval(tf_colloc *c, const double *u, double dt, double *f, double *
         while (!c->bad[i]) {
             ++i;
         }
-        snprintf(err, errlen,
-                 "particle %zu at (%g, %g, %g) mm inverted (det F <= 0): the motion is not "
-                 "physical here (step too large, or a load beyond the material)",
-                 i, c->X[3 * i], c->X[3 * i + 1], c->X[3 * i + 2]);
-        return -1;
+        return tf_fail(ctx,
+                       "particle %zu at (%g, %g, %g) mm inverted (det F <= 0): the motion is not "
+                       "physical here (step too large, or a load beyond the material)",
+                       i, c->X[3 * i], c->X[3 * i + 1], c->X[3 * i + 2]);
     }
     if (na > n) {
         tf_colloc_ghost_fold(c, fa, f);
@@ -340,8 +338,8 @@ void tf_colloc_deformation(tf_colloc *c, const double *u, double *F)
     }
 }
 
-int tf_colloc_forces(tf_colloc *c, const double *u, double dt, double *f, double *energy,
-                     char *err, size_t errlen)
+int tf_colloc_forces(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, double *f,
+                     double *energy)
 {
-    return tf_colloc_eval(c, u, dt, f, energy, err, errlen);
+    return tf_colloc_eval(ctx, c, u, dt, f, energy);
 }

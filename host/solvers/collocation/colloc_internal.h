@@ -20,6 +20,7 @@
 #ifndef TF_COLLOC_INTERNAL_H
 #define TF_COLLOC_INTERNAL_H
 
+#include "base/context.h"
 #include "solvers/collocation/colloc.h"
 
 /* Values per particle that phase 1 of a force evaluation leaves:
@@ -87,7 +88,7 @@ struct tf_colloc {
 
 /* Mirror images (colloc_mirror.c): made from the first supports' reach
  * (the largest k-th neighbour distance); ue from u; fe folded into f. */
-int tf_colloc_make_ghosts(tf_colloc *c, const double *reach, char *err, size_t errlen);
+int tf_colloc_make_ghosts(tf_ctx *ctx, tf_colloc *c, const double *reach);
 /* Drops the images no support holds; renumbers the k-nearest lists (cnt[i]
  * entries at lists + i cap).  Returns 0, or -1 when out of memory. */
 int tf_colloc_drop_ghosts(tf_colloc *c, uint32_t *lists, const size_t *cnt, size_t cap);
@@ -105,12 +106,12 @@ double tf_colloc_kernel(double r);
 
 /* Moment matrices, gradient weights, residual factors and reverse pairs
  * (colloc_mls.c). */
-int tf_colloc_setup_mls(tf_colloc *c, char *err, size_t errlen);
+int tf_colloc_setup_mls(tf_ctx *ctx, tf_colloc *c);
 
 /* Phase 1 and 2 of a force evaluation (colloc_force.c); the history goes
  * from hold to hnew. */
-int tf_colloc_eval(tf_colloc *c, const double *u, double dt, double *f, double *energy,
-                   char *err, size_t errlen);
+int tf_colloc_eval(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, double *f,
+                   double *energy);
 
 /* Puts displacement components back on their prescribed values and zeroes
  * their velocity (colloc_dynamics.c). */
@@ -137,6 +138,6 @@ double tf_colloc_contact_static(tf_colloc *c, double *res);
 
 /* Largest eigenvalue of M^-1 K (free components, reference configuration)
  * by Lanczos (colloc_dynamics.c); negative on failure. */
-double tf_colloc_omega2_max(tf_colloc *c, const double *m, char *err, size_t errlen);
+double tf_colloc_omega2_max(tf_ctx *ctx, tf_colloc *c, const double *m);
 
 #endif /* TF_COLLOC_INTERNAL_H */

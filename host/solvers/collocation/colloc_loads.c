@@ -105,16 +105,15 @@ static void add_traction(void *user, size_t node, const double x[3], double w)
     }
 }
 
-int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double *force,
-                           double *f, char *err, size_t errlen)
+int tf_colloc_patch_forces(tf_ctx *ctx, const tf_problem *pr, const tf_patch *p,
+                           const double *force, double *f)
 {
     size_t n = pr->cloud.n, n3 = 3 * n;
     if (p->shape == TF_PATCH_AT) {
         /* A point force between particles would need the MLS shape
          * functions at that point; not provided (no field either). */
-        snprintf(err, errlen, "mls-collocation: a force at a point between particles is not "
-                              "supported; give a node or a face patch");
-        return -1;
+        return tf_fail(ctx, "mls-collocation: a force at a point between particles is not "
+                            "supported; give a node or a face patch");
     }
     if (p->shape == TF_PATCH_POINT) {
         for (int a = 0; a < 3; ++a) {
@@ -128,15 +127,13 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
     }
     double *area = calloc(n + 1, sizeof *area);
     if (area == NULL) {
-        snprintf(err, errlen, "out of memory for a patch load");
-        return -1;
+        return tf_fail(ctx, "out of memory for a patch load");
     }
     uniform s = {.f = area};
     double total = sample_patch(pr, p, add_area, &s);
     if (!(total > 0)) {
         free(area);
-        snprintf(err, errlen, "a load patch covers no particle's share of its face");
-        return -1;
+        return tf_fail(ctx, "a load patch covers no particle's share of its face");
     }
     for (size_t i = 0; i < n; ++i) {
         for (int a = 0; area[i] > 0 && a < 3; ++a) {
@@ -151,17 +148,14 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
     return 0;
 }
 
-int tf_colloc_exact_forces(const tf_problem *pr, const tf_patch *p, double *f, char *err,
-                           size_t errlen)
+int tf_colloc_exact_forces(tf_ctx *ctx, const tf_problem *pr, const tf_patch *p, double *f)
 {
     if (p->shape == TF_PATCH_POINT || p->shape == TF_PATCH_AT) {
-        snprintf(err, errlen, "an analytic traction needs a patch, not a point");
-        return -1;
+        return tf_fail(ctx, "an analytic traction needs a patch, not a point");
     }
     exact s = {.pr = pr, .face = p->face, .f = f};
     if (!(sample_patch(pr, p, add_traction, &s) > 0)) {
-        snprintf(err, errlen, "a load patch covers no particle's share of its face");
-        return -1;
+        return tf_fail(ctx, "a load patch covers no particle's share of its face");
     }
     return 0;
 }

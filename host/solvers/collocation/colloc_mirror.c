@@ -23,15 +23,14 @@ static double depth(const tf_colloc *c, size_t i, size_t p)
     return fabs(c->X[3 * i + (size_t)c->mirror[p].axis] - c->mirror[p].at);
 }
 
-static int check_planes(const tf_colloc *c, double tol, char *err, size_t errlen)
+static int check_planes(tf_ctx *ctx, const tf_colloc *c, double tol)
 {
     for (size_t p = 0; p < c->n_mirrors; ++p) {
         int a = c->mirror[p].axis, below = 0, above = 0;
         for (size_t q = 0; q < p; ++q) {
             if (c->mirror[q].axis == a) {
-                snprintf(err, errlen, "mirror planes %zu and %zu are both normal to %c", q, p,
-                         'x' + a);
-                return -1;
+                return tf_fail(ctx, "mirror planes %zu and %zu are both normal to %c", q, p,
+                               'x' + a);
             }
         }
         for (size_t i = 0; i < c->n; ++i) {
@@ -40,15 +39,14 @@ static int check_planes(const tf_colloc *c, double tol, char *err, size_t errlen
             above |= t > tol;
         }
         if (below && above) {
-            snprintf(err, errlen, "mirror plane %c = %g: particles lie on both sides of it",
-                     'x' + a, c->mirror[p].at);
-            return -1;
+            return tf_fail(ctx, "mirror plane %c = %g: particles lie on both sides of it", 'x' + a,
+                           c->mirror[p].at);
         }
     }
     return 0;
 }
 
-int tf_colloc_make_ghosts(tf_colloc *c, const double *reach, char *err, size_t errlen)
+int tf_colloc_make_ghosts(tf_ctx *ctx, tf_colloc *c, const double *reach)
 {
     size_t n = c->n, np = c->n_mirrors, subsets = (size_t)1 << np;
     double lo = INFINITY, hi = -INFINITY, D[3] = {0, 0, 0};
@@ -57,7 +55,7 @@ int tf_colloc_make_ghosts(tf_colloc *c, const double *reach, char *err, size_t e
         hi = fmax(hi, c->X[q]);
     }
     double tol = c->mtol = 1e-9 * (hi - lo);
-    if (check_planes(c, tol, err, errlen) != 0) {
+    if (check_planes(ctx, c, tol) != 0) {
         return -1;
     }
     /* An image is someone's neighbour only if it is nearer than the reach. */
@@ -115,8 +113,7 @@ int tf_colloc_make_ghosts(tf_colloc *c, const double *reach, char *err, size_t e
         c->gsign = malloc(3 * (ng + 1) * sizeof *c->gsign);
         c->gstart = malloc((n + 1) * sizeof *c->gstart);
         if (!X || !c->gsrc || !c->gsign || !c->gstart) {
-            snprintf(err, errlen, "out of memory for %zu mirror images", ng);
-            return -1;
+            return tf_fail(ctx, "out of memory for %zu mirror images", ng);
         }
     }
     c->na = n + ng;

@@ -115,13 +115,12 @@ static int reverse(tf_colloc *c)
     return 0;
 }
 
-int tf_colloc_setup_mls(tf_colloc *c, char *err, size_t errlen)
+int tf_colloc_setup_mls(tf_ctx *ctx, tf_colloc *c)
 {
     double mu = shear_modulus(&c->mat);
     double *rc = malloc(c->n * sizeof *rc);
     if (rc == NULL) {
-        snprintf(err, errlen, "out of memory for the moment matrices");
-        return -1;
+        return tf_fail(ctx, "out of memory for the moment matrices");
     }
 #pragma omp parallel for schedule(static) num_threads(tf_colloc_threads(c))
     for (size_t i = 0; i < c->n; ++i) {
@@ -137,17 +136,15 @@ int tf_colloc_setup_mls(tf_colloc *c, char *err, size_t errlen)
     free(rc);
     if (c->rcond < c->opts.rcond_min) {
         size_t i = c->rcond_at;
-        snprintf(err, errlen,
-                 "particle %zu at (%g, %g, %g) mm: its moment matrix (eq 9) is near singular "
-                 "(reciprocal condition %.3g < %g) with %u neighbours: they lie close to a "
-                 "plane or a line; use more neighbours or a cloud without flat clusters",
-                 i, c->X[3 * i], c->X[3 * i + 1], c->X[3 * i + 2], c->rcond, c->opts.rcond_min,
-                 (unsigned)(c->start[i + 1] - c->start[i]));
-        return -1;
+        return tf_fail(ctx,
+                       "particle %zu at (%g, %g, %g) mm: its moment matrix (eq 9) is near singular "
+                       "(reciprocal condition %.3g < %g) with %u neighbours: they lie close to a "
+                       "plane or a line; use more neighbours or a cloud without flat clusters",
+                       i, c->X[3 * i], c->X[3 * i + 1], c->X[3 * i + 2], c->rcond,
+                       c->opts.rcond_min, (unsigned)(c->start[i + 1] - c->start[i]));
     }
     if (reverse(c) != 0) {
-        snprintf(err, errlen, "out of memory for the reverse supports");
-        return -1;
+        return tf_fail(ctx, "out of memory for the reverse supports");
     }
     return 0;
 }

@@ -64,7 +64,7 @@ static double floor_of(const tf_colloc *c)
     return 16 * DBL_EPSILON * (l.lambda + 2 * l.mu + c->opts.kv) * sqrt(s);
 }
 
-static int fictitious_masses(tf_colloc *c, char *err, size_t errlen)
+static int fictitious_masses(tf_ctx *ctx, tf_colloc *c)
 {
     size_t n = c->n;
     c->mdr = calloc(n, sizeof *c->mdr);
@@ -72,16 +72,15 @@ static int fictitious_masses(tf_colloc *c, char *err, size_t errlen)
     c->f0 = malloc(3 * n * sizeof *c->f0);
     c->res = malloc(3 * n * sizeof *c->res);
     if (!c->mdr || !c->u0 || !c->f0 || !c->res) {
-        snprintf(err, errlen, "out of memory for the relaxation");
-        return -1;
+        return tf_fail(ctx, "out of memory for the relaxation");
     }
     for (size_t i = 0; i < n; ++i) {
         c->mdr[i] = c->vol[i] / (c->h[i] * c->h[i]);
     }
-    double w2 = tf_colloc_omega2_max(c, c->mdr, err, errlen);
+    double w2 = tf_colloc_omega2_max(ctx, c, c->mdr);
     if (!(w2 > 0)) {
         if (w2 >= 0) {
-            snprintf(err, errlen, "the stiffness has no positive eigenvalue");
+            tf_fail(ctx, "the stiffness has no positive eigenvalue");
         }
         free(c->mdr);
         c->mdr = NULL;
@@ -142,8 +141,8 @@ static double adapt(const tf_colloc *c, double alpha)
     return alpha;
 }
 
-int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax_stats *st,
-                    char *err, size_t errlen)
+int tf_colloc_relax(tf_ctx *ctx, tf_colloc *c, const tf_colloc_relax_opts *o,
+                    tf_colloc_relax_stats *st)
 {
     tf_colloc_relax_opts def;
     tf_colloc_relax_stats dummy;
@@ -154,10 +153,9 @@ int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax
     st = st ? st : &dummy;
     *st = (tf_colloc_relax_stats){0};
     if (!(o->tol > 0)) {
-        snprintf(err, errlen, "relaxation tolerance %g must be > 0", o->tol);
-        return -1;
+        return tf_fail(ctx, "relaxation tolerance %g must be > 0", o->tol);
     }
-    if (c->mdr == NULL && fictitious_masses(c, err, errlen) != 0) {
+    if (c->mdr == NULL && fictitious_masses(ctx, c) != 0) {
         return -1;
     }
     size_t n3 = 3 * c->n;
@@ -166,7 +164,7 @@ int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax
     tf_colloc_impose(c, c->u, NULL);
     tf_colloc_contact(c, c->mdr, 1, 0, 0); /* particles inside the sphere onto it */
     memcpy(c->u0, c->u, n3 * sizeof *c->u0);
-    if (tf_colloc_eval(c, c->u, 0, c->f0, NULL, err, errlen) != 0) {
+    if (tf_colloc_eval(ctx, c, c->u, 0, c->f0, NULL) != 0) {
         return -1;
     }
     double alpha = 0, mmax = 0, floor = floor_of(c);
@@ -174,7 +172,7 @@ int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax
         mmax = fmax(mmax, c->mdr[i]);
     }
     for (size_t k = 0;; ++k) {
-        if (tf_colloc_eval(c, c->u, 0, c->f, NULL, err, errlen) != 0) {
+        if (tf_colloc_eval(ctx, c, c->u, 0, c->f, NULL) != 0) {
             return -1;
         }
         double rnorm, scale;
@@ -182,8 +180,7 @@ int tf_colloc_relax(tf_colloc *c, const tf_colloc_relax_opts *o, tf_colloc_relax
         st->steps = k;
         st->residual = scale > 0 ? rnorm / scale : rnorm;
         if (!isfinite(st->residual)) {
-            snprintf(err, errlen, "the relaxation diverged after %zu steps", k);
-            return -1;
+            return tf_fail(ctx, "the relaxation diverged after %zu steps", k);
         }
         double tol = scale > 0 ? fmax(o->tol, floor / scale) : o->tol; /* the floor's */
         if (rnorm <= tol * scale && at_rest(c, tol)) {

@@ -50,62 +50,55 @@ double tf_colloc_kernel(double r)
     return t * t * t;
 }
 
-static int check_opts(const tf_colloc_body *b, const tf_colloc_opts *o, char *err, size_t errlen)
+static int check_opts(tf_ctx *ctx, const tf_colloc_body *b, const tf_colloc_opts *o)
 {
     char msg[256];
     const char *field = tf_material_check(&b->material, msg, sizeof msg);
     if (field) {
-        snprintf(err, errlen, "material.%s: %s", field, msg);
-        return -1;
+        return tf_fail(ctx, "material.%s: %s", field, msg);
     }
     if (o->neighbours < 4 || o->neighbours > 256) {
-        snprintf(err, errlen, "neighbours = %u: need 4 .. 256 (3 for a gradient, and more)",
-                 o->neighbours);
-        return -1;
+        return tf_fail(ctx, "neighbours = %u: need 4 .. 256 (3 for a gradient, and more)",
+                       o->neighbours);
     }
     if (!(o->support > 1 && o->support <= 10)) {
-        snprintf(err, errlen, "support = %g: the support radius factor must be in (1, 10]",
-                 o->support);
-        return -1;
+        return tf_fail(ctx, "support = %g: the support radius factor must be in (1, 10]",
+                       o->support);
     }
     if (o->threads < 0 || !(o->rcond_min > 0 && o->rcond_min < 1) ||
         !(o->kv >= 0 && isfinite(o->kv)) ||
         !(o->stab >= 0 && isfinite(o->stab))) {
-        snprintf(err, errlen, "rcond_min in (0, 1), kv >= 0 and stab >= 0 required "
-                              "(got %g, %g, %g)", o->rcond_min, o->kv, o->stab);
-        return -1;
+        return tf_fail(ctx,
+                       "rcond_min in (0, 1), kv >= 0 and stab >= 0 required "
+                       "(got %g, %g, %g)",
+                       o->rcond_min, o->kv, o->stab);
     }
     if (!(b->density > 0 && isfinite(b->density))) {
-        snprintf(err, errlen, "density = %g t/mm^3: must be > 0 (water: 1e-9)", b->density);
-        return -1;
+        return tf_fail(ctx, "density = %g t/mm^3: must be > 0 (water: 1e-9)", b->density);
     }
     if (b->n_mirrors > 3) {
-        snprintf(err, errlen, "%zu mirror planes: at most 3", b->n_mirrors);
-        return -1;
+        return tf_fail(ctx, "%zu mirror planes: at most 3", b->n_mirrors);
     }
     for (size_t p = 0; p < b->n_mirrors; ++p) {
         if (b->mirrors[p].axis < 0 || b->mirrors[p].axis > 2 || !isfinite(b->mirrors[p].at)) {
-            snprintf(err, errlen, "mirror plane %zu: axis %d must be 0, 1 or 2 and the "
-                     "coordinate finite", p, b->mirrors[p].axis);
-            return -1;
+            return tf_fail(ctx,
+                           "mirror plane %zu: axis %d must be 0, 1 or 2 and the "
+                           "coordinate finite",
+                           p, b->mirrors[p].axis);
         }
     }
     if (b->n <= o->neighbours) {
-        snprintf(err, errlen, "%zu particles: need more than neighbours = %u", b->n,
-                 o->neighbours);
-        return -1;
+        return tf_fail(ctx, "%zu particles: need more than neighbours = %u", b->n, o->neighbours);
     }
     for (size_t i = 0; i < 3 * b->n; ++i) {
         if (!isfinite(b->X[i])) {
-            snprintf(err, errlen, "particle %zu: coordinate %c is not finite", i / 3,
-                     (int)('x' + i % 3));
-            return -1;
+            return tf_fail(ctx, "particle %zu: coordinate %c is not finite", i / 3,
+                           (int)('x' + i % 3));
         }
     }
     for (size_t i = 0; b->volume && i < b->n; ++i) {
         if (!(b->volume[i] > 0 && isfinite(b->volume[i]))) {
-            snprintf(err, errlen, "particle %zu: volume %g mm^3 must be > 0", i, b->volume[i]);
-            return -1;
+            return tf_fail(ctx, "particle %zu: volume %g mm^3 must be > 0", i, b->volume[i]);
         }
     }
     return 0;
@@ -156,8 +149,8 @@ static int nearest_all(const tf_colloc *c, size_t npts, uint32_t *tmp, double *d
 }
 
 /* Neighbour lists in CSR form from the k-nearest lists; rbar, rmin, h. */
-static int fill_supports(tf_colloc *c, const uint32_t *tmp, const double *dist,
-                         const size_t *cnt, size_t cap, char *err, size_t errlen)
+static int fill_supports(tf_ctx *ctx, tf_colloc *c, const uint32_t *tmp, const double *dist,
+                         const size_t *cnt, size_t cap)
 {
     size_t n = c->n;
     c->start = malloc((n + 1) * sizeof *c->start);
@@ -182,10 +175,10 @@ static int fill_supports(tf_colloc *c, const uint32_t *tmp, const double *dist,
         c->rmin[i] = dist[i * cap];
         c->h[i] = c->opts.support * c->rbar[i];
         if (!(dist[i * cap + cnt[i] - 1] < c->h[i])) {
-            snprintf(err, errlen,
-                     "particle %zu: its farthest neighbour (%g mm) lies outside its support "
-                     "radius %g mm = %g x the mean neighbour distance: raise support", i,
-                     dist[i * cap + cnt[i] - 1], c->h[i], c->opts.support);
+            tf_fail(ctx,
+                    "particle %zu: its farthest neighbour (%g mm) lies outside its support "
+                    "radius %g mm = %g x the mean neighbour distance: raise support",
+                    i, dist[i * cap + cnt[i] - 1], c->h[i], c->opts.support);
             return -2;
         }
     }
@@ -194,7 +187,7 @@ static int fill_supports(tf_colloc *c, const uint32_t *tmp, const double *dist,
 
 /* k-nearest supports; with mirror planes, first among the particles (for
  * the reach that decides which images are needed), then with the images. */
-static int supports(tf_colloc *c, char *err, size_t errlen)
+static int supports(tf_ctx *ctx, tf_colloc *c)
 {
     size_t n = c->n, cap = 2 * (size_t)c->opts.neighbours + 8;
     uint32_t *tmp = malloc(n * cap * sizeof *tmp);
@@ -206,7 +199,7 @@ static int supports(tf_colloc *c, char *err, size_t errlen)
         for (size_t i = 0; rc == 0 && i < n; ++i) {
             reach[i] = dist[i * cap + cnt[i] - 1] * (1 + TIE);
         }
-        if (rc == 0 && tf_colloc_make_ghosts(c, reach, err, errlen) != 0) {
+        if (rc == 0 && tf_colloc_make_ghosts(ctx, c, reach) != 0) {
             rc = -2;
         }
     }
@@ -217,10 +210,10 @@ static int supports(tf_colloc *c, char *err, size_t errlen)
         rc = tf_colloc_drop_ghosts(c, tmp, cnt, cap);
     }
     if (rc == 0) {
-        rc = fill_supports(c, tmp, dist, cnt, cap, err, errlen);
+        rc = fill_supports(ctx, c, tmp, dist, cnt, cap);
     }
     if (rc == -1) {
-        snprintf(err, errlen, "out of memory for the supports of %zu particles", n);
+        tf_fail(ctx, "out of memory for the supports of %zu particles", n);
     }
     free(tmp);
     free(dist);
@@ -280,20 +273,19 @@ static void seed_volumes(tf_colloc *c, double total)
     }
 }
 
-tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char *err,
-                         size_t errlen)
+tf_colloc *tf_colloc_new(tf_ctx *ctx, const tf_colloc_body *b, const tf_colloc_opts *o)
 {
     tf_colloc_opts def;
     if (o == NULL) {
         tf_colloc_defaults(&def);
         o = &def;
     }
-    if (check_opts(b, o, err, errlen) != 0) {
+    if (check_opts(ctx, b, o) != 0) {
         return NULL;
     }
     tf_colloc *c = calloc(1, sizeof *c);
     if (c == NULL) {
-        snprintf(err, errlen, "out of memory");
+        tf_fail(ctx, "out of memory");
         return NULL;
     }
     size_t n = b->n;
@@ -321,7 +313,7 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
         !NEW(c->fext, 3 * n) || !NEW(c->ubar, 3 * n) || !NEW(c->f, 3 * n) ||
         !NEW(c->hold, c->hsize * n) || !NEW(c->hnew, c->hsize * n) ||
         !(c->ph1 = aligned_alloc(64, TF_COLLOC_PH1 * (n + 1) * sizeof *c->ph1)) || !NEW(c->epart, n) || !NEW(c->bad, n)) {
-        snprintf(err, errlen, "out of memory for %zu particles", n);
+        tf_fail(ctx, "out of memory for %zu particles", n);
         tf_colloc_free(c);
         return NULL;
     }
@@ -333,12 +325,12 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
         tf_material_history_init(&c->mat, c->hold + i * c->hsize);
         tf_material_history_init(&c->mat, c->hnew + i * c->hsize);
     }
-    if (supports(c, err, errlen) != 0) {
+    if (supports(ctx, c) != 0) {
         tf_colloc_free(c);
         return NULL;
     }
     if (c->na > c->n && (!NEW(c->ue, 3 * c->na) || !NEW(c->fe, 3 * c->na))) {
-        snprintf(err, errlen, "out of memory for %zu mirror images", c->na - c->n);
+        tf_fail(ctx, "out of memory for %zu mirror images", c->na - c->n);
         tf_colloc_free(c);
         return NULL;
     }
@@ -351,7 +343,7 @@ tf_colloc *tf_colloc_new(const tf_colloc_body *b, const tf_colloc_opts *o, char 
     } else {
         seed_volumes(c, b->total_volume);
     }
-    if (tf_colloc_setup_mls(c, err, errlen) != 0) {
+    if (tf_colloc_setup_mls(ctx, c) != 0) {
         tf_colloc_free(c);
         return NULL;
     }

@@ -74,17 +74,15 @@ static int build_loads(csolver *cs, const tf_problem *p, tf_ctx *ctx)
 {
     for (size_t k = 0; k < p->n_loads; ++k) {
         const tf_load *ld = &p->loads[k];
-        int rc = ld->exact ? tf_colloc_exact_forces(p, &ld->patch, cs->f0, ctx->err,
-                                                    sizeof ctx->err)
-                           : tf_colloc_patch_forces(p, &ld->patch, ld->force, cs->f0, ctx->err,
-                                                    sizeof ctx->err);
+        int rc = ld->exact ? tf_colloc_exact_forces(ctx, p, &ld->patch, cs->f0)
+                           : tf_colloc_patch_forces(ctx, p, &ld->patch, ld->force, cs->f0);
         if (rc != 0) {
             return -1;
         }
     }
     for (size_t k = 0; k < p->n_contacts; ++k) {
-        if (tf_colloc_patch_forces(p, &p->contacts[k].patch, NULL, cs->unit + 3 * cs->n3 * k,
-                                   ctx->err, sizeof ctx->err) != 0) {
+        if (tf_colloc_patch_forces(ctx, p, &p->contacts[k].patch, NULL,
+                                   cs->unit + 3 * cs->n3 * k) != 0) {
             return -1;
         }
     }
@@ -113,15 +111,14 @@ static int build_body(csolver *cs, const tf_problem *p, const tf_solver_opts *o,
     co.stab = o->colloc.stabilisation;
     co.kv = o->colloc.volume_constant;
     co.threads = tf_ctx_threads(ctx);
-    char err[512];
-    cs->c = tf_colloc_new(&b, &co, err, sizeof err);
+    cs->c = tf_colloc_new(ctx, &b, &co);
     if (cs->c) {
         memcpy(tf_colloc_ubar(cs->c), bc.ubar, cs->n3 * sizeof(double));
         cs->base.info.unknowns = bc.n_free;
     }
     tf_constraints_release(&bc);
     free(mask);
-    return cs->c ? 0 : tf_fail(ctx, "mls-collocation: %s", err);
+    return cs->c ? 0 : tf_fail(ctx, "mls-collocation: %s", ctx->err);
 }
 
 static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx)
@@ -189,7 +186,6 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     tf_colloc_relax_opts ro;
     tf_colloc_relax_defaults(&ro);
     ro.tol = s->opts.colloc.tolerance;
-    char err[512];
     for (size_t k = 0; k < n; ++k) {
         external(cs, contact, forces ? forces[k] : NULL);
         double *uc = tf_colloc_u(cs->c);
@@ -199,10 +195,10 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
             memset(uc, 0, cs->n3 * sizeof *uc);
         }
         tf_colloc_relax_stats st;
-        int rc = tf_colloc_relax(cs->c, &ro, &st, err, sizeof err);
+        int rc = tf_colloc_relax(s->ctx, cs->c, &ro, &st);
         if (rc != 0) {
             return tf_fail(s->ctx, "mls-collocation, case %zu: %s", k + 1,
-                           rc < 0 ? err : "the relaxation did not converge");
+                           rc < 0 ? s->ctx->err : "the relaxation did not converge");
         }
         cs->relax_steps += st.steps;
         cs->relax_cases++;
@@ -215,12 +211,11 @@ static int history(tf_solver *s, int contact, const double (*forces)[3], size_t 
                    double *u)
 {
     csolver *cs = of(s);
-    char err[512];
     if (cs->dt_crit == 0) {
-        cs->dt_crit = tf_colloc_critical_dt(cs->c, err, sizeof err);
+        cs->dt_crit = tf_colloc_critical_dt(s->ctx, cs->c);
         if (!(cs->dt_crit > 0)) {
             cs->dt_crit = 0;
-            return tf_fail(s->ctx, "mls-collocation: %s", err);
+            return tf_fail(s->ctx, "mls-collocation: %s", s->ctx->err);
         }
     }
     double steps = ceil(dt / (0.9 * cs->dt_crit));
@@ -229,8 +224,8 @@ static int history(tf_solver *s, int contact, const double (*forces)[3], size_t 
     memset(tf_colloc_v(cs->c), 0, cs->n3 * sizeof(double));
     for (size_t k = 0; k < n; ++k) {
         external(cs, contact, forces ? forces[k] : NULL);
-        if (tf_colloc_run(cs->c, dt / steps, m, s->opts.colloc.damping, err, sizeof err) != 0) {
-            return tf_fail(s->ctx, "mls-collocation, history step %zu: %s", k + 1, err);
+        if (tf_colloc_run(s->ctx, cs->c, dt / steps, m, s->opts.colloc.damping) != 0) {
+            return tf_fail(s->ctx, "mls-collocation, history step %zu: %s", k + 1, s->ctx->err);
         }
         cs->history_steps += m;
         memcpy(u + k * cs->n3, tf_colloc_u(cs->c), cs->n3 * sizeof *u);
@@ -242,10 +237,9 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
                      double *r)
 {
     csolver *cs = (csolver *)of_const(s); /* the solver's scratch; results unchanged */
-    char err[512];
     external(cs, contact, force);
-    if (tf_colloc_forces(cs->c, u, 0, r, NULL, err, sizeof err) != 0) {
-        return tf_fail(s->ctx, "mls-collocation: %s", err);
+    if (tf_colloc_forces(s->ctx, cs->c, u, 0, r, NULL) != 0) {
+        return tf_fail(s->ctx, "mls-collocation: %s", s->ctx->err);
     }
     const double *fext = tf_colloc_fext(cs->c);
     for (size_t d = 0; d < cs->n3; ++d) {

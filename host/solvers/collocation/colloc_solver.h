@@ -18,6 +18,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "problem/problem.h"
 #include "solvers/solver.h"
 
@@ -29,11 +30,10 @@ tf_colloc_settings tf_colloc_settings_default(void);
 /* Adds to f (3N) the nodal forces of a total force spread uniformly over
  * the patch; with force NULL writes the three unit columns instead (3N x 3,
  * column major, added to).  Returns 0, or -1 with a message. */
-int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double *force,
-                           double *f, char *err, size_t errlen);
+int tf_colloc_patch_forces(tf_ctx *ctx, const tf_problem *pr, const tf_patch *p,
+                           const double *force, double *f);
 
 /* Adds to f the problem's analytic traction over the patch. */
-int tf_colloc_exact_forces(const tf_problem *pr, const tf_patch *p, double *f, char *err,
-                           size_t errlen);
+int tf_colloc_exact_forces(tf_ctx *ctx, const tf_problem *pr, const tf_patch *p, double *f);
 
 #endif /* TF_COLLOC_SOLVER_H */

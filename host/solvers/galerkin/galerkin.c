@@ -46,17 +46,14 @@ static int build_loads(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     size_t n3 = g->k.n;
     for (size_t k = 0; k < p->n_loads; ++k) {
         const tf_load *ld = &p->loads[k];
-        int rc = ld->exact
-                     ? tf_load_exact(&g->sh, p, &ld->patch, g->f0, ctx->err, sizeof ctx->err)
-                     : tf_load_patch(&g->sh, &ld->patch, ld->force, g->f0, ctx->err,
-                                     sizeof ctx->err);
+        int rc = ld->exact ? tf_load_exact(ctx, &g->sh, p, &ld->patch, g->f0)
+                           : tf_load_patch(ctx, &g->sh, &ld->patch, ld->force, g->f0);
         if (rc != 0) {
             return -1;
         }
     }
     for (size_t c = 0; c < p->n_contacts; ++c) {
-        if (tf_load_patch(&g->sh, &p->contacts[c].patch, NULL, g->basis + 3 * n3 * c, ctx->err,
-                          sizeof ctx->err) != 0) {
+        if (tf_load_patch(ctx, &g->sh, &p->contacts[c].patch, NULL, g->basis + 3 * n3 * c) != 0) {
             return -1;
         }
     }
@@ -86,8 +83,7 @@ static int weak_system(galerkin *g, tf_csc *a, tf_ctx *ctx)
     memcpy(a->p, g->k.p, (n3 + 1) * sizeof *a->p);
     memcpy(a->i, g->k.i, g->k.nnz * sizeof *a->i);
     memcpy(a->x, g->k.x, g->k.nnz * sizeof *a->x);
-    if (tf_boundary_add_linear(&g->bnd, &g->sh, m, factor, &l, a, g->rhs0, ctx->err,
-                               sizeof ctx->err) != 0) {
+    if (tf_boundary_add_linear(ctx, &g->bnd, &g->sh, m, factor, &l, a, g->rhs0) != 0) {
         tf_csc_free(a);
         return -1;
     }
@@ -135,9 +131,8 @@ static int factorise(galerkin *g, tf_ctx *ctx)
         return tf_fail(ctx, "every degree of freedom is fixed: nothing to solve");
     }
     double t = 0;
-    g->chol = tf_chol_analyse(&a, (tf_ordering)g->base.opts.ordering, 0, &ci, ctx->err,
-                              sizeof ctx->err);
-    int rc = g->chol ? tf_chol_refactor(g->chol, &a, &t, ctx->err, sizeof ctx->err) : -1;
+    g->chol = tf_chol_analyse(ctx, &a, (tf_ordering)g->base.opts.ordering, 0, &ci);
+    int rc = g->chol ? tf_chol_refactor(ctx, g->chol, &a, &t) : -1;
     ci.t_factor = t;
     ci.rcond = rc == 0 ? tf_chol_rcond(g->chol) : 0;
     if (rc != 0) {
@@ -218,20 +213,20 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     }
     g->shape_ok = 1;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
-    if (m != NULL && tf_shape_use_tets(&g->sh, m->tm.tet, m->tm.ntet, g->base.opts.tet_degree,
-                                       ctx->err, sizeof ctx->err) != 0) {
+    if (m != NULL &&
+        tf_shape_use_tets(ctx, &g->sh, m->tm.tet, m->tm.ntet, g->base.opts.tet_degree) != 0) {
         return -1;
     }
-    if (g->efg && tf_shape_use_efg(&g->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (g->efg && tf_shape_use_efg(ctx, &g->sh) != 0) {
         return -1;
     }
     /* After tf_shape_use_efg (the enriched nodes are the MLS domains that
      * meet a cut) and before the boundary terms, which evaluate the same
      * shape functions on the fixed faces. */
-    if (tf_shape_set_cuts(&g->sh, p->cuts, p->n_cuts, ctx->err, sizeof ctx->err) != 0) {
+    if (tf_shape_set_cuts(ctx, &g->sh, p->cuts, p->n_cuts) != 0) {
         return -1;
     }
-    if (g->weak && tf_boundary_build(&g->bnd, p, &g->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (g->weak && tf_boundary_build(ctx, &g->bnd, p, &g->sh) != 0) {
         return -1;
     }
     announce(g, p, ctx);
@@ -240,12 +235,11 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     tf_assembly_extra ex = {g->base.opts.integration == TF_INTEGRATION_VCI,
                             g->weak ? &g->bnd : NULL};
     int plain = !ex.vci && ex.bnd == NULL; /* today's path, bit for bit */
-    if (tf_assemble_stiffness(&g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
-                              plain ? NULL : &ex, tf_ctx_threads(ctx), &g->k, &ai, ctx->err,
-                              sizeof ctx->err) != 0) {
+    if (tf_assemble_stiffness(ctx, &g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
+                              plain ? NULL : &ex, tf_ctx_threads(ctx), &g->k, &ai) != 0) {
         return -1;
     }
-    if (g->efg && tf_nodal_map_build(&g->map, &g->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (g->efg && tf_nodal_map_build(ctx, &g->map, &g->sh) != 0) {
         return -1;
     }
     g->detail.points = ai.points;
@@ -390,7 +384,7 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
     for (size_t k = 0; k < n; ++k) {
         rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
     }
-    int rc = tf_chol_solve(g->chol, b, x, n, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_solve(ctx, g->chol, b, x, n);
     if (rc == 0 && g->efg) { /* displacements at the nodes, not parameters */
         tf_nodal_map_values(&g->map, x, u, n);
     }
@@ -428,12 +422,11 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
 
 /* u_h = sum_I phi_I u_I and its gradient (RPIM interpolant; EFG: the MLS
  * approximation of the parameters of u). */
-static int field(const tf_solver *s, const double *u, const double *x, size_t np, double *uh,
-                 double *grad, char *err, size_t errlen)
+static int field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
+                 double *uh, double *grad)
 {
     const galerkin *g = of_const(s);
-    return tf_nodal_field(&g->sh, g->efg ? (tf_nodal_map *)&g->map : NULL, u, x, np, uh, grad,
-                          err, errlen);
+    return tf_nodal_field(ctx, &g->sh, g->efg ? (tf_nodal_map *)&g->map : NULL, u, x, np, uh, grad);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }

@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/context.h"
 #include "materials/elasticity.h"
 #include "meshfree/shape.h"
 #include "solvers/boundary.h"

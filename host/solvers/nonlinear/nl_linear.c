@@ -67,14 +67,13 @@ static int factor_indefinite(nl_solver *s, const tf_csc *k)
     tf_ctx *ctx = s->base.ctx;
     if (s->ldl == NULL) {
         tf_chol_info ci;
-        s->ldl = tf_chol_analyse(k, (tf_ordering)s->base.opts.ordering, 1, &ci, ctx->err,
-                                 sizeof ctx->err);
+        s->ldl = tf_chol_analyse(ctx, k, (tf_ordering)s->base.opts.ordering, 1, &ci);
         if (s->ldl == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->ldl, k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(ctx, s->ldl, k, &t);
     s->st.factorisations++;
     s->st.indefinite++;
     s->st.t_factor += t;
@@ -119,7 +118,7 @@ static int factor_shifted(nl_solver *s)
             s->k.x[cp[j]] = diag[j] + sigma * fabs(diag[j]);
         }
         double t;
-        rc = tf_chol_refactor(s->chol, nl_factored(s), &t, ctx->err, sizeof ctx->err);
+        rc = tf_chol_refactor(ctx, s->chol, nl_factored(s), &t);
         s->st.factorisations++;
         s->st.shifted++;
         s->st.t_factor += t;
@@ -163,13 +162,13 @@ static int factor_into_spare(nl_solver *s, const tf_csc *k)
 {
     tf_ctx *ctx = s->base.ctx;
     if (s->spare == NULL) {
-        s->spare = tf_chol_twin(s->chol, k, ctx->err, sizeof ctx->err);
+        s->spare = tf_chol_twin(ctx, s->chol, k);
         if (s->spare == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->spare, k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(ctx, s->spare, k, &t);
     s->st.factorisations++;
     s->st.t_factor += t;
     if (rc == 1) { /* not positive definite: the old factor and its pairs stay */
@@ -199,15 +198,14 @@ int nl_factor(nl_solver *s)
     }
     if (s->chol == NULL) {
         tf_ordering ord = (tf_ordering)s->base.opts.ordering;
-        s->chol = s->patch.on
-                      ? tf_chol_analyse_last(k, ord, s->patch.dof, &s->ci, ctx->err, sizeof ctx->err)
-                      : tf_chol_analyse(k, ord, 0, &s->ci, ctx->err, sizeof ctx->err);
+        s->chol = s->patch.on ? tf_chol_analyse_last(ctx, k, ord, s->patch.dof, &s->ci)
+                              : tf_chol_analyse(ctx, k, ord, 0, &s->ci);
         if (s->chol == NULL) {
             return -1;
         }
     }
     double t;
-    int rc = tf_chol_refactor(s->chol, k, &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(ctx, s->chol, k, &t);
     s->st.factorisations++;
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
@@ -255,7 +253,7 @@ static tf_chol *factor_of(nl_solver *s)
 
 static int precondition(nl_solver *s, const double *r, double *z)
 {
-    return tf_chol_solve(factor_of(s), r, z, 1, s->base.ctx->err, sizeof s->base.ctx->err);
+    return tf_chol_solve(s->base.ctx, factor_of(s), r, z, 1);
 }
 
 /* Limited-memory BFGS (Nocedal's two-loop recursion, the last factorisation
@@ -506,7 +504,7 @@ int nl_linear_solve(nl_solver *s, const double *r, double *du, int fresh_tangent
         failed = bfgs(s, b, du) != 0;
         done = !failed;
     } else {
-        failed = tf_chol_solve(factor_of(s), b, du, 1, ctx->err, sizeof ctx->err) != 0;
+        failed = tf_chol_solve(ctx, factor_of(s), b, du, 1) != 0;
         done = !failed;
     }
     s->st.t_solve += omp_get_wtime() - t0;

@@ -76,16 +76,14 @@ static int build_loads(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     }
     for (size_t k = 0; k < p->n_loads; ++k) {
         const tf_load *ld = &p->loads[k];
-        int rc = ld->exact ? tf_load_exact(&s->sh, p, &ld->patch, s->f0, ctx->err, sizeof ctx->err)
-                           : tf_load_patch(&s->sh, &ld->patch, ld->force, s->f0, ctx->err,
-                                           sizeof ctx->err);
+        int rc = ld->exact ? tf_load_exact(ctx, &s->sh, p, &ld->patch, s->f0)
+                           : tf_load_patch(ctx, &s->sh, &ld->patch, ld->force, s->f0);
         if (rc != 0) {
             return -1;
         }
     }
     for (size_t c = 0; c < p->n_contacts; ++c) {
-        if (tf_load_patch(&s->sh, &p->contacts[c].patch, NULL, s->basis + 3 * n3 * c, ctx->err,
-                          sizeof ctx->err) != 0) {
+        if (tf_load_patch(ctx, &s->sh, &p->contacts[c].patch, NULL, s->basis + 3 * n3 * c) != 0) {
             return -1;
         }
     }
@@ -268,18 +266,17 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     s->shape_ok = 1;
-    if (s->efg && tf_shape_use_efg(&s->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (s->efg && tf_shape_use_efg(ctx, &s->sh) != 0) {
         return -1;
     }
-    if (s->weak && tf_boundary_build(&s->bnd, p, &s->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (s->weak && tf_boundary_build(ctx, &s->bnd, p, &s->sh) != 0) {
         return -1;
     }
     s->ncell = tf_cells_count(&s->sh.cells);
     s->np = tf_cells_points(&s->sh.cells);
     tf_assembly_extra ex = {s->vci, s->weak ? &s->bnd : NULL};
     openblas_set_num_threads(1);
-    if (tf_assemble_pattern(&s->sh, &ex, tf_ctx_threads(ctx), &s->cs, &s->bp, &s->k, ctx->err,
-                            sizeof ctx->err) != 0) {
+    if (tf_assemble_pattern(ctx, &s->sh, &ex, tf_ctx_threads(ctx), &s->cs, &s->bp, &s->k) != 0) {
         return -1;
     }
     if (build_gradients(s, ctx) != 0 || build_loads(s, p, ctx) != 0) {
@@ -296,7 +293,7 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     if (s->weak && build_boundary(s, ctx) != 0) {
         return -1;
     }
-    if (s->efg && tf_nodal_map_build(&s->map, &s->sh, ctx->err, sizeof ctx->err) != 0) {
+    if (s->efg && tf_nodal_map_build(ctx, &s->map, &s->sh) != 0) {
         return -1;
     }
     if (allocate_state(s, ctx) != 0) {

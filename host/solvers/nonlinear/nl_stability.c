@@ -61,7 +61,7 @@ static int definite_at(probe *p, double sigma, int *pd)
     }
     double t;
     tf_ctx *ctx = p->s->base.ctx;
-    int rc = tf_chol_refactor(p->c, nl_factored(p->s), &t, ctx->err, sizeof ctx->err);
+    int rc = tf_chol_refactor(ctx, p->c, nl_factored(p->s), &t);
     p->factorisations++;
     if (rc < 0) {
         return -1;
@@ -145,7 +145,7 @@ static int mode(probe *p, double lo, double *x, double *mu)
     tf_ctx *ctx = s->base.ctx;
     for (int it = 0; it < INVERSE_ITERATIONS; ++it) {
         tf_csc_symv(&k0, x, y, 1);
-        if (tf_chol_solve(p->c, y, x, 1, ctx->err, sizeof ctx->err) != 0) {
+        if (tf_chol_solve(ctx, p->c, y, x, 1) != 0) {
             free(y);
             return -1;
         }
@@ -223,8 +223,8 @@ int nl_stability(nl_solver *s, double tol, tf_nonlinear_stability *out)
         rc = tangents(s, kt, k0);
     }
     if (rc == 0) {
-        p.c = tf_chol_analyse(nl_factored(s), (tf_ordering)s->base.opts.ordering, 0, &(tf_chol_info){0},
-                              s->base.ctx->err, sizeof s->base.ctx->err);
+        p.c = tf_chol_analyse(s->base.ctx, nl_factored(s), (tf_ordering)s->base.opts.ordering, 0,
+                              &(tf_chol_info){0});
         rc = p.c ? bracket(&p, tol, &out->lo, &out->hi, &out->definite) : -1;
     }
     if (rc == 0) {

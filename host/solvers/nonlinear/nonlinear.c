@@ -47,7 +47,7 @@ static int start_from(nl_solver *s, const double *u)
         memcpy(s->d, u, n3 * sizeof *u);
         return 0;
     }
-    const double *d = tf_nodal_map_params_of(&s->map, u, s->base.ctx->err, sizeof s->base.ctx->err);
+    const double *d = tf_nodal_map_params_of(s->base.ctx, &s->map, u);
     if (d == NULL) {
         return -1;
     }
@@ -151,11 +151,11 @@ static int reactions(const tf_solver *sv, int contact, const double force[3], co
     return rc;
 }
 
-static int field(const tf_solver *sv, const double *u, const double *x, size_t np, double *uh,
-                 double *grad, char *err, size_t errlen)
+static int field(tf_ctx *ctx, const tf_solver *sv, const double *u, const double *x, size_t np,
+                 double *uh, double *grad)
 {
     nl_solver *s = (nl_solver *)of_const(sv);
-    return tf_nodal_field(&s->sh, s->efg ? &s->map : NULL, u, x, np, uh, grad, err, errlen);
+    return tf_nodal_field(ctx, &s->sh, s->efg ? &s->map : NULL, u, x, np, uh, grad);
 }
 
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }

@@ -27,6 +27,7 @@
 
 #include <stddef.h>
 
+#include "base/context.h"
 #include "solvers/solver.h"
 
 extern const tf_solver_ops tf_rpim_newton_ops; /* "rpim-newton" */

@@ -62,16 +62,15 @@ static void solve_is_the_solvers(void **state)
     const double f[3] = {0.9, -0.7, -0.22};
     assert_int_equal(tf_api_solve(ctx, s, NULL, f, NAN, u, v), 0);
 
-    char err[1024];
     tf_ctx plain;
     tf_ctx_init(&plain);
     plain.level = TF_LOG_WARN;
-    tf_scene *sc = tf_scene_load(SEED, NULL, 0, err, sizeof err);
+    tf_scene *sc = tf_scene_load(&plain, SEED, NULL, 0);
     tf_solver *sv = tf_solver_create(&sc->problem, NULL, &plain);
     assert_non_null(sv);
     assert_int_equal(tf_solver_solve(sv, 0, (const double(*)[3])f, 1, NULL, w), 0);
     assert_memory_equal(u, w, 3 * n * sizeof *u);
-    assert_int_equal(tf_solver_probe_outputs(sv, &sc->problem, w, pos, err, sizeof err), 0);
+    assert_int_equal(tf_solver_probe_outputs(&plain, sv, &sc->problem, w, pos), 0);
     assert_memory_equal(v, pos, 3 * m * sizeof *v);
     assert_true(u[3 * 60] > 0.5); /* node 61 follows the force */
     tf_solver_destroy(sv);

@@ -1,8 +1,9 @@
 /*
  * test_context.c — the run's context replaces global state: messages go to
  * the context's sink and stop at its level, failures leave their message in
- * its buffer, and a solver built with a context logs through it (two
- * contexts, two different sinks, no cross-talk).
+ * its buffer (a caller may wrap a callee's message in it), and a solver
+ * built with a context logs through it (two contexts, two different sinks,
+ * no cross-talk).
  */
 #include <omp.h>
 #include <setjmp.h>
@@ -80,13 +81,37 @@ static void a_failure_leaves_its_message(void **state)
     assert_int_equal(tf_ctx_threads(&ctx), 3);
 }
 
+/* A caller that says where a failure happened wraps the callee's message,
+ * passing ctx->err back to tf_fail, which reads it before writing it; a
+ * message longer than the buffer is cut, never overrun. */
+static void a_caller_wraps_its_callees_message(void **state)
+{
+    (void)state;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_null(tf_scene_load(&ctx, "no/such/scene.yaml", NULL, 0));
+    char inner[sizeof ctx.err], want[sizeof ctx.err + 32];
+    memcpy(inner, ctx.err, sizeof inner);
+    assert_non_null(strstr(inner, "no/such/scene.yaml"));
+    assert_int_equal(tf_fail(&ctx, "fit: %s: %s", "block48.yaml", ctx.err), -1);
+    snprintf(want, sizeof want, "fit: block48.yaml: %s", inner);
+    assert_string_equal(ctx.err, want);
+    memset(inner, 'x', sizeof inner - 1);
+    inner[sizeof inner - 1] = '\0';
+    tf_fail(&ctx, "%s", inner);
+    assert_int_equal(tf_fail(&ctx, "%s+%s", ctx.err, ctx.err), -1);
+    assert_int_equal(strlen(ctx.err), sizeof ctx.err - 1);
+    assert_int_equal(strspn(ctx.err, "x"), sizeof ctx.err - 1);
+}
+
 /* Two solvers, each with its own context: each context's sink hears its own
  * solver's progress, and a quiet context hears nothing. */
 static void a_solver_logs_through_its_own_context(void **state)
 {
     (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", NULL, 0);
     assert_non_null(s);
     tf_ctx loud, quiet;
     captured heard_loud, heard_quiet;
@@ -116,6 +141,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(messages_stop_at_the_level),
         cmocka_unit_test(a_failure_leaves_its_message),
+        cmocka_unit_test(a_caller_wraps_its_callees_message),
         cmocka_unit_test(a_solver_logs_through_its_own_context),
     };
     return cmocka_run_group_tests_name("context", tests, NULL, NULL);

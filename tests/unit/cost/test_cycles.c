@@ -24,10 +24,10 @@
 
 static tf_model *shape(tfit_family f, uint32_t n_out, uint32_t p, uint32_t r)
 {
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     uint32_t dims[2] = {p, r};
-    tf_model *m = tf_model_new("shape", f, n_out, dims, f == TFIT_FAMILY_MODAL ? 2 : 1, err,
-                               sizeof err);
+    tf_model *m = tf_model_new(&ctx, "shape", f, n_out, dims, f == TFIT_FAMILY_MODAL ? 2 : 1);
     assert_non_null(m);
     return m;
 }
@@ -166,13 +166,15 @@ static void counts_follow_the_loop_structure(void **state)
 static void header_carries_the_estimate(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/tfit_cycles_XXXXXX", path[300], gpath[300], err[512], want[160];
+    char dir[] = "/tmp/tfit_cycles_XXXXXX", path[300], gpath[300], want[160];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     assert_non_null(mkdtemp(dir));
     snprintf(path, sizeof path, "%s/budget.h", dir);
     tf_model *m = shape(TFIT_FAMILY_NODAL, 121, 1, 0);
     snprintf(m->name, sizeof m->name, "block_forward");
     const tf_emit_info info = {.source = "test", .golden_seed = 1};
-    assert_int_equal(tf_emit_header(path, &m, 1, &info, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, path, &m, 1, &info), 0);
     FILE *f = fopen(path, "r");
     assert_non_null(f);
     static char text[1 << 20];

@@ -100,10 +100,12 @@ static const tf_emit_info info = {.source = "scene.yaml", .has_source_crc = 1,
 static void header_content_and_exact_literals(void **state)
 {
     (void)state;
-    char path[300], err[512];
+    char path[300];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     snprintf(path, sizeof path, "%s/alpha.h", dir);
     make_models(1);
-    assert_int_equal(tf_emit_header(path, two_models, 2, &info, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, path, two_models, 2, &info), 0);
     char *h = slurp(path, NULL);
     assert_non_null(h);
     assert_non_null(strstr(h, "#ifndef TFIT_ALPHA_H"));
@@ -151,7 +153,9 @@ static void header_content_and_exact_literals(void **state)
 static void emission_is_deterministic(void **state)
 {
     (void)state;
-    char da[300], db[300], a[320], b[320], ga[340], gb[340], err[512];
+    char da[300], db[300], a[320], b[320], ga[340], gb[340];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     snprintf(da, sizeof da, "%s/first", dir);
     snprintf(db, sizeof db, "%s/second", dir);
     assert_int_equal(mkdir(da, 0700), 0);
@@ -159,12 +163,12 @@ static void emission_is_deterministic(void **state)
     snprintf(a, sizeof a, "%s/same.h", da);
     snprintf(b, sizeof b, "%s/same.h", db);
     make_models(2);
-    assert_int_equal(tf_emit_header(a, two_models, 2, &info, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, a, two_models, 2, &info), 0);
     size_t la, lb, lga, lgb;
     char *h1 = slurp(a, &la);
     tf_golden_path(a, ga, sizeof ga);
     char *g1 = slurp(ga, &lga);
-    assert_int_equal(tf_emit_header(b, two_models, 2, &info, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, b, two_models, 2, &info), 0);
     char *h2 = slurp(b, &lb);
     tf_golden_path(b, gb, sizeof gb);
     char *g2 = slurp(gb, &lgb);
@@ -184,38 +188,39 @@ static void emission_is_deterministic(void **state)
 static void failure_writes_nothing(void **state)
 {
     (void)state;
-    char path[300], err[512];
+    char path[300];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int before = files_in_dir();
 
     make_models(3);
     snprintf(path, sizeof path, "%s/Bad-Name.h", dir);
-    assert_int_equal(tf_emit_header(path, two_models, 2, &info, err, sizeof err), -1);
-    assert_non_null(strstr(err, "C identifier"));
+    assert_int_equal(tf_emit_header(&ctx, path, two_models, 2, &info), -1);
+    assert_non_null(strstr(ctx.err, "C identifier"));
     assert_int_equal(files_in_dir(), before);
 
     /* An existing header survives a failed regeneration untouched. */
     snprintf(path, sizeof path, "%s/keep.h", dir);
-    assert_int_equal(tf_emit_header(path, two_models, 2, &info, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, path, two_models, 2, &info), 0);
     char *old = slurp(path, NULL);
     int with_old = files_in_dir();
     two_models[1]->coef[TFIT_INPUT_MAP_FLOATS + 2] = NAN;
-    assert_int_equal(tf_emit_header(path, two_models, 2, &info, err, sizeof err), -1);
-    assert_non_null(strstr(err, "alpha_contact"));
-    assert_non_null(strstr(err, "not finite"));
+    assert_int_equal(tf_emit_header(&ctx, path, two_models, 2, &info), -1);
+    assert_non_null(strstr(ctx.err, "alpha_contact"));
+    assert_non_null(strstr(ctx.err, "not finite"));
     char *now = slurp(path, NULL);
     assert_string_equal(old, now);
     assert_int_equal(files_in_dir(), with_old);
     free(old);
     free(now);
 
-    assert_int_equal(tf_emit_header("/nonexistent-dir/x.h", two_models, 1, &info, err, sizeof err),
-                     -1);
-    assert_non_null(strstr(err, "/nonexistent-dir/x.h"));
+    assert_int_equal(tf_emit_header(&ctx, "/nonexistent-dir/x.h", two_models, 1, &info), -1);
+    assert_non_null(strstr(ctx.err, "/nonexistent-dir/x.h"));
 
     tf_model *dup[2] = {two_models[0], two_models[0]};
     snprintf(path, sizeof path, "%s/dup.h", dir);
-    assert_int_equal(tf_emit_header(path, dup, 2, &info, err, sizeof err), -1);
-    assert_non_null(strstr(err, "two models"));
+    assert_int_equal(tf_emit_header(&ctx, path, dup, 2, &info), -1);
+    assert_non_null(strstr(ctx.err, "two models"));
     assert_int_equal(files_in_dir(), with_old);
     free_models();
 }
@@ -230,10 +235,11 @@ static void the_pair_names_each_other(void **state)
     make_models(5);
     snprintf(path, sizeof path, "%s/pair.h", dir);
     snprintf(gpath, sizeof gpath, "%s/pair_golden.h", dir);
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const tf_emit_info hostile = {.source = "a*/b/*c?\?/\\d\ne.yaml", .notes = "x */ y /* z",
                                   .golden_seed = 3};
-    assert_int_equal(tf_emit_header(path, two_models, 2, &hostile, err, sizeof err), 0);
+    assert_int_equal(tf_emit_header(&ctx, path, two_models, 2, &hostile), 0);
     size_t glen;
     char *h = slurp(path, NULL), *g = slurp(gpath, &glen);
     assert_non_null(h);

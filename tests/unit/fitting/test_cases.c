@@ -55,13 +55,12 @@ static double max_diff(const double *a, const double *b, size_t n)
  * superposition's constant term is not zero). */
 static void check_paths(const char *const *sets, size_t n_sets)
 {
-    char err[512];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, n_sets, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, n_sets);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     const tf_problem *p = &s->problem;
     tf_solver_ops plain = tf_galerkin_ops;
@@ -156,14 +155,13 @@ static void superposed_only_when_the_solver_is_affine(void **state)
 static void sites_between_nodes_need_an_affine_solver(void **state)
 {
     (void)state;
-    char err[512];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
     const char *grid[] = {"geometry.grid=10,10,3"}; /* no node at the seed's points */
-    tf_scene *s = tf_scene_load("tests/solver/block48_at.yaml", grid, 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_at.yaml", grid, 1);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     tf_solver_ops plain = tf_galerkin_ops;
     plain.name = "galerkin-without-caps";
@@ -191,14 +189,13 @@ static void sites_between_nodes_need_an_affine_solver(void **state)
  * or, at no output point, the nearest node's number. */
 static uint32_t contact_id_of(const char *centre)
 {
-    char err[512];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
     const char *sets[] = {"geometry.grid=10,10,3", centre}; /* no node at the seed's points */
-    tf_scene *s = tf_scene_load("tests/solver/block48_at.yaml", sets, 2, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_at.yaml", sets, 2);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     tf_solver *solver = tf_solver_create(&s->problem, NULL, &ctx);
     assert_non_null(solver);

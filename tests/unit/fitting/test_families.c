@@ -77,20 +77,19 @@ static tf_cases cases_of(const tf_fitdata *d)
 }
 
 /* The registered family's model of the given orders on every case of d. */
-static tf_model *fit(const char *family, const tf_fitdata *d, const uint32_t *orders, char *err,
-                     size_t errlen)
+static tf_model *fit(tf_ctx *ctx, const char *family, const tf_fitdata *d, const uint32_t *orders)
 {
     const tf_family *f = tf_family_find(family);
     assert_non_null(f);
     tf_cases c = cases_of(d);
-    return f->fit(&c, NULL, 0, orders, err, errlen);
+    return f->fit(ctx, &c, NULL, 0, orders);
 }
 
-static int cv(const char *family, const tf_fitdata *d, const uint32_t *orders, double *rms,
-              char *err, size_t errlen)
+static int cv(tf_ctx *ctx, const char *family, const tf_fitdata *d, const uint32_t *orders,
+              double *rms)
 {
     tf_cases c = cases_of(d);
-    return tf_family_cv_error(tf_family_find(family), &c, orders, 5, 1, rms, NULL, err, errlen);
+    return tf_family_cv_error(ctx, tf_family_find(family), &c, orders, 5, 1, rms, NULL);
 }
 
 static void nodal_orders(void **state)
@@ -98,11 +97,12 @@ static void nodal_orders(void **state)
     (void)state;
     make_data();
     tf_fitdata d = data();
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double max1, max2, rms1, rms2;
     uint32_t p1 = 1, p2 = 2;
-    tf_model *m1 = fit("nodal", &d, &p1, err, sizeof err);
-    tf_model *m2 = fit("nodal", &d, &p2, err, sizeof err);
+    tf_model *m1 = fit(&ctx, "nodal", &d, &p1);
+    tf_model *m2 = fit(&ctx, "nodal", &d, &p2);
     assert_non_null(m1);
     assert_non_null(m2);
     tf_family_errors(m1, &d, NULL, NC, &max1, &rms1, NULL);
@@ -113,9 +113,9 @@ static void nodal_orders(void **state)
 
     double cv1, cv2, cv3;
     uint32_t p3 = 3;
-    assert_int_equal(cv("nodal", &d, &p1, &cv1, err, sizeof err), 0);
-    assert_int_equal(cv("nodal", &d, &p2, &cv2, err, sizeof err), 0);
-    assert_int_equal(cv("nodal", &d, &p3, &cv3, err, sizeof err), 0);
+    assert_int_equal(cv(&ctx, "nodal", &d, &p1, &cv1), 0);
+    assert_int_equal(cv(&ctx, "nodal", &d, &p2, &cv2), 0);
+    assert_int_equal(cv(&ctx, "nodal", &d, &p3, &cv3), 0);
     assert_true(cv2 < 1e-3 * cv1);
     assert_true(cv3 < 1e-3 * cv1);
     tf_model_free(m1);
@@ -127,10 +127,11 @@ static void modal_rank(void **state)
     (void)state;
     make_data();
     tf_fitdata d = data();
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const uint32_t r2[2] = {2, 2}, r3[2] = {2, 3};
-    tf_model *m2 = fit("modal", &d, r2, err, sizeof err);
-    tf_model *m3 = fit("modal", &d, r3, err, sizeof err);
+    tf_model *m2 = fit(&ctx, "modal", &d, r2);
+    tf_model *m3 = fit(&ctx, "modal", &d, r3);
     assert_non_null(m2);
     assert_non_null(m3);
     double max2, max3;
@@ -139,8 +140,8 @@ static void modal_rank(void **state)
     assert_true(max2 > 0.01); /* the third mode is missing */
     assert_true(max3 < 2e-6);
     const uint32_t too_many[2] = {1, NC + 1};
-    assert_null(fit("modal", &d, too_many, err, sizeof err));
-    assert_non_null(strstr(err, "more modes"));
+    assert_null(fit(&ctx, "modal", &d, too_many));
+    assert_non_null(strstr(ctx.err, "more modes"));
     tf_model_free(m2);
     tf_model_free(m3);
 }
@@ -150,10 +151,11 @@ static void contact_inverse(void **state)
     (void)state;
     make_data();
     tf_fitdata d = data();
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     uint32_t p1 = 1, p3 = 3;
-    tf_model *lin = fit("contact", &d, &p1, err, sizeof err);
-    tf_model *cub = fit("contact", &d, &p3, err, sizeof err);
+    tf_model *lin = fit(&ctx, "contact", &d, &p1);
+    tf_model *cub = fit(&ctx, "contact", &d, &p3);
     assert_non_null(lin);
     assert_non_null(cub);
     double rel1, rel3;
@@ -167,7 +169,7 @@ static void contact_inverse(void **state)
     for (int i = 0; i < NC; ++i) {
         contact[i][2] = 11.0 * force[i][2];
     }
-    tf_model *exact = fit("contact", &d, &p1, err, sizeof err);
+    tf_model *exact = fit(&ctx, "contact", &d, &p1);
     double rel;
     tf_family_errors(exact, &d, NULL, NC, NULL, NULL, &rel);
     assert_true(rel < 1e-5);
@@ -176,8 +178,8 @@ static void contact_inverse(void **state)
     for (int i = 0; i < NC; ++i) {
         contact[i][2] = 0;
     }
-    assert_null(fit("contact", &d, &p1, err, sizeof err));
-    assert_non_null(strstr(err, "singular"));
+    assert_null(fit(&ctx, "contact", &d, &p1));
+    assert_non_null(strstr(ctx.err, "singular"));
     tf_model_free(lin);
     tf_model_free(cub);
     tf_model_free(exact);
@@ -191,22 +193,23 @@ static void near_singular_cases(void **state)
     (void)state;
     make_data();
     tf_fitdata d = data();
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (int i = 5; i < NC; ++i) { /* repeat the first five cases */
         memcpy(force[i], force[i % 5], sizeof force[i]);
         memcpy(u[i], u[i % 5], sizeof u[i]);
         memcpy(contact[i], contact[i % 5], sizeof contact[i]);
     }
     uint32_t p1 = 1, p2 = 2;
-    tf_model *m1 = fit("nodal", &d, &p1, err, sizeof err);
+    tf_model *m1 = fit(&ctx, "nodal", &d, &p1);
     assert_non_null(m1); /* 4 coefficients, 5 distinct forces */
     tf_model_free(m1);
-    assert_null(fit("nodal", &d, &p2, err, sizeof err));
-    assert_non_null(strstr(err, "undetermined"));
-    assert_non_null(strstr(err, "of 10 coefficients"));
+    assert_null(fit(&ctx, "nodal", &d, &p2));
+    assert_non_null(strstr(ctx.err, "undetermined"));
+    assert_non_null(strstr(ctx.err, "of 10 coefficients"));
     double cv1, cv2;
-    assert_int_equal(cv("nodal", &d, &p1, &cv1, err, sizeof err), 0);
-    assert_int_equal(cv("nodal", &d, &p2, &cv2, err, sizeof err), 0);
+    assert_int_equal(cv(&ctx, "nodal", &d, &p1, &cv1), 0);
+    assert_int_equal(cv(&ctx, "nodal", &d, &p2, &cv2), 0);
     assert_true(isfinite(cv1));
     assert_true(isinf(cv2));
 
@@ -218,10 +221,10 @@ static void near_singular_cases(void **state)
         force[i][1] = 1e-12 * tf_rng_range(&r, -1, 1);
         force[i][2] = 1e-12 * tf_rng_range(&r, -1, 1);
     }
-    assert_null(fit("nodal", &d, &p1, err, sizeof err));
-    assert_non_null(strstr(err, "undetermined"));
-    assert_null(fit("contact", &d, &p1, err, sizeof err));
-    assert_non_null(strstr(err, "undetermined"));
+    assert_null(fit(&ctx, "nodal", &d, &p1));
+    assert_non_null(strstr(ctx.err, "undetermined"));
+    assert_null(fit(&ctx, "contact", &d, &p1));
+    assert_non_null(strstr(ctx.err, "undetermined"));
 }
 
 static void registry(void **state)

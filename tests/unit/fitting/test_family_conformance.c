@@ -67,11 +67,12 @@ typedef struct fixture {
  * midpoints and two held-out values. */
 static int cut_cases(fixture *x)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[] = {"cuts=[{path: [[18, 14], [18, 34]], depth: 3}]"};
-    x->cut_scene = tf_scene_load("tests/solver/block48_seed.yaml", sets, 1, err, sizeof err);
+    x->cut_scene = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, 1);
     if (x->cut_scene == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
         return -1;
     }
     tf_fit_plan plan = x->plan;
@@ -87,13 +88,14 @@ static int cut_cases(fixture *x)
 
 static int setup(void **state)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", NULL, 0);
     if (x->scene == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
         return -1;
     }
     x->plan = x->scene->fit;
@@ -104,9 +106,9 @@ static int setup(void **state)
         return -1;
     }
     const tf_creep creep = tf_creep_kelvin(0.32, 0.192, 0.192);
-    if (tf_histories_linear_creep(&x->cases, &creep, 1000000, 8, 4, 1500, x->plan.seed, &x->hist,
-                                  err, sizeof err) != 0) {
-        print_error("%s\n", err);
+    if (tf_histories_linear_creep(&ctx, &x->cases, &creep, 1000000, 8, 4, 1500, x->plan.seed,
+                                  &x->hist) != 0) {
+        print_error("%s\n", ctx.err);
         return -1;
     }
     x->cases.hist = &x->hist;
@@ -133,7 +135,6 @@ static int teardown(void **state)
 /* The family's model of block48 by its own order search. */
 static tf_model *selected(const fixture *x, const tf_family *f, tf_family_result *r)
 {
-    char err[512];
     memset(r, 0, sizeof *r);
     r->family = f;
     for (int p = 0; p <= TFIT_MAX_DEGREE; ++p) {
@@ -142,14 +143,15 @@ static tf_model *selected(const fixture *x, const tf_family *f, tf_family_result
     for (int k = 0; k <= TF_FAMILY_MAX_RANK; ++k) {
         r->cv_rank[k] = r->heldout_rank[k] = INFINITY;
     }
-    char why[320];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_fit_plan plan = x->plan; /* asked for by name (the resonant family applies only so) */
     plan.family = f->kind == TF_FAMILY_FORWARD ? f : plan.family;
-    if (f->applicable(&x->cases, &plan, why, sizeof why) != 0) {
-        fail_msg("%s does not apply to block48: %s", f->name, why);
+    if (f->applicable(&ctx, &x->cases, &plan) != 0) {
+        fail_msg("%s does not apply to block48: %s", f->name, ctx.err);
     }
-    if (f->select(&x->cases, &plan, r, err, sizeof err) != 0) {
-        fail_msg("%s: %s", f->name, err);
+    if (f->select(&ctx, &x->cases, &plan, r) != 0) {
+        fail_msg("%s: %s", f->name, ctx.err);
     }
     return r->model;
 }
@@ -180,9 +182,11 @@ static void order_search_gives_a_valid_model(void **state)
         const tf_family *f = tf_family_at(i);
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
-        char err[512], orders[256];
-        if (tf_model_validate(m, err, sizeof err) != 0) {
-            fail_msg("%s: %s", f->name, err);
+        char orders[256];
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (tf_model_validate(&ctx, m) != 0) {
+            fail_msg("%s: %s", f->name, ctx.err);
         }
         assert_int_equal(m->family, f->id);
         assert_int_equal(m->n_out, f->kind == TF_FAMILY_INVERSE ? 1 : x->cases.train.n_out);
@@ -255,15 +259,16 @@ static void exact_data_is_reproduced_and_cross_validated(void **state)
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
         tf_cases c;
-        char err[512];
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
         const double big = exact_cases(&x->cases, m, inverse, &c);
         /* a family that stores its model in integers reproduces to its
          * quantisation: modal_q15's 8 amplitudes of 13 bits each
          * (header-format.md §5.9), 8 / 8191 of the largest value */
         const double tol = f->id == TFIT_FAMILY_MODAL_Q15 ? 8.0 / 8191.0 : 1e-5;
-        tf_model *again = f->fit(&c, NULL, 0, m->dims, err, sizeof err);
+        tf_model *again = f->fit(&ctx, &c, NULL, 0, m->dims);
         if (again == NULL) {
-            fail_msg("%s: refit on its own predictions: %s", f->name, err);
+            fail_msg("%s: refit on its own predictions: %s", f->name, ctx.err);
         }
         double fit_max, cv_rms;
         tf_family_errors(again, &c.train, NULL, c.train.n_cases, &fit_max, NULL, NULL);
@@ -274,10 +279,10 @@ static void exact_data_is_reproduced_and_cross_validated(void **state)
         for (size_t k = 0; k < 50; ++k) {
             half[k] = 2 * k;
         }
-        tf_model *part = f->fit(&c, half, 50, m->dims, err, sizeof err);
+        tf_model *part = f->fit(&ctx, &c, half, 50, m->dims);
         if (part != NULL) { /* a fit on a selection: k-fold CV applies */
-            assert_int_equal(tf_family_cv_error(f, &c, m->dims, x->plan.folds, x->plan.seed,
-                                                &cv_rms, NULL, err, sizeof err),
+            assert_int_equal(tf_family_cv_error(&ctx, f, &c, m->dims, x->plan.folds, x->plan.seed,
+                                                &cv_rms, NULL),
                              0);
             print_message("%-9s CV on its own predictions: RMS %.3g of the largest value\n",
                           f->name, cv_rms / big);
@@ -287,7 +292,7 @@ static void exact_data_is_reproduced_and_cross_validated(void **state)
             tf_family_result rr;
             memset(&rr, 0, sizeof rr);
             rr.family = f;
-            assert_int_equal(f->select(&c, &x->plan, &rr, err, sizeof err), 0);
+            assert_int_equal(f->select(&ctx, &c, &x->plan, &rr), 0);
             tf_family_errors(rr.model, &c.train, NULL, c.train.n_cases, &fit_max, NULL, NULL);
             print_message("%-9s no fit on a selection; its order search on its own "
                           "predictions: max error %.3g of the largest value\n",
@@ -335,12 +340,14 @@ static void q31_form_and_cost_match_the_header(void **state)
         const tf_family *f = tf_family_at(i);
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
-        char err[512], path[64], golden[80];
+        char path[64], golden[80];
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
         snprintf(m->name, sizeof m->name, "conf");
         snprintf(path, sizeof path, "%s/conf.h", dir);
         const tf_emit_info info = {.source = "test", .notes = NULL, .golden_seed = 1};
         tf_model *one[1] = {m};
-        assert_int_equal(tf_emit_header(path, one, 1, &info, err, sizeof err), 0);
+        assert_int_equal(tf_emit_header(&ctx, path, one, 1, &info), 0);
         char *h = slurp(path);
         tf_family_cost cost;
         f->cost(m, &cost);
@@ -358,9 +365,9 @@ static void q31_form_and_cost_match_the_header(void **state)
         assert_int_equal(counted.div, cost.ops.div);
         free(out);
         if (f->q31 != NULL) {
-            tf_q31 *q = f->q31(m, err, sizeof err);
+            tf_q31 *q = f->q31(&ctx, m);
             if (q == NULL) {
-                fail_msg("%s declares a Q31 form: %s", f->name, err);
+                fail_msg("%s declares a Q31 form: %s", f->name, ctx.err);
             }
             tf_q31_measure(q, m, 7, 2000);
             const double lsb = ldexp(1, q->out_exp - 31);

@@ -73,8 +73,9 @@ static void terms_are_recovered_from_exact_data(void **state)
     make_data(&truth, g, h, 1);
     const tf_prony_data d = data_of(g, h);
     tf_prony_terms t;
-    char err[256];
-    assert_int_equal(tf_prony_fit_terms(&d, NULL, 0, 2, TICK, 3.0, &t, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_prony_fit_terms(&ctx, &d, NULL, 0, 2, TICK, 3.0, &t), 0);
     for (int j = 0; j < 2; ++j) {
         print_message("term %d: tau %.9g (truth %g), w %.9g (truth %g)\n", j, t.tau[j],
                       truth.tau[j], t.w[j], truth.w[j]);
@@ -103,8 +104,9 @@ static void cross_validation_finds_the_number_of_terms(void **state)
         double cv[TF_PRONY_SEARCH_TERMS + 1];
         int k;
         tf_prony_terms t;
-        char err[256];
-        assert_int_equal(tf_prony_select_terms(&d, &hist, &plan, cv, &k, &t, err, sizeof err), 0);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        assert_int_equal(tf_prony_select_terms(&ctx, &d, &hist, &plan, cv, &k, &t), 0);
         print_message("truth K = %d: CV RMS by K %.3g %.3g %.3g %.3g %.3g: K = %d\n", cases[c].n,
                       cv[0], cv[1], cv[2], cv[3], cv[4], k);
         assert_int_equal(k, cases[c].n);
@@ -123,10 +125,11 @@ static void weights_beyond_one_are_refused(void **state)
     make_data(&truth, g, h, 3);
     const tf_prony_data d = data_of(g, h);
     tf_prony_terms t;
-    char err[256];
-    assert_int_equal(tf_prony_fit_terms(&d, NULL, 0, 1, TICK, 3.0, &t, err, sizeof err), -1);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "weights summing to 1.4"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_prony_fit_terms(&ctx, &d, NULL, 0, 1, TICK, 3.0, &t), -1);
+    print_message("%s\n", ctx.err);
+    assert_non_null(strstr(ctx.err, "weights summing to 1.4"));
     free(g);
     free(h);
 }
@@ -136,13 +139,14 @@ static void a_tick_too_short_is_refused(void **state)
     (void)state;
     const tf_prony_terms t = {1, {4.8}, {0.3}, 0};
     tf_histories h = {.tick = 1e-5, .tick_ns = 10000};
-    char err[512];
-    assert_int_equal(tf_prony_tick_allows(&t, &h, err, sizeof err), -1);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "fit with a tick of at least 48 us"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_prony_tick_allows(&ctx, &t, &h), -1);
+    print_message("%s\n", ctx.err);
+    assert_non_null(strstr(ctx.err, "fit with a tick of at least 48 us"));
     h.tick = 1e-4;
     h.tick_ns = 100000;
-    assert_int_equal(tf_prony_tick_allows(&t, &h, err, sizeof err), 0);
+    assert_int_equal(tf_prony_tick_allows(&ctx, &t, &h), 0);
 }
 
 int main(void)

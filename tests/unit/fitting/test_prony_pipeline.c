@@ -83,13 +83,14 @@ typedef struct fixture {
 
 static int setup(void **state)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", NULL, 0);
     if (x->scene == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
         return -1;
     }
     rpim = tf_solver_type_find("rpim-galerkin");
@@ -123,7 +124,7 @@ static void a_creeping_solver_gets_a_prony_model(void **state)
     tf_solver *s = tf_solver_create_as(&creeping, &x->scene->problem, NULL, &x->ctx);
     assert_non_null(s);
     tf_fit_outcome o;
-    assert_int_equal(tf_fit_run(&x->scene->problem, s, &plan, &o), 0);
+    assert_int_equal(tf_fit_run(&x->ctx, &x->scene->problem, s, &plan, &o), 0);
     assert_true(o.has_hist && o.cases.hist == &o.hist);
     assert_int_equal(o.hist.train.n, 8);
     assert_int_equal(o.hist.heldout.n_ticks, 3000);
@@ -205,7 +206,7 @@ static void a_static_solver_gets_none(void **state)
     tf_fit_plan plan = x->scene->fit;
     tf_solver *s = tf_solver_create(&x->scene->problem, NULL, &x->ctx);
     tf_fit_outcome o;
-    assert_int_equal(tf_fit_run(&x->scene->problem, s, &plan, &o), 0);
+    assert_int_equal(tf_fit_run(&x->ctx, &x->scene->problem, s, &plan, &o), 0);
     assert_false(o.has_hist);
     assert_null(o.cases.hist);
     const tf_family_result *r = prony_of(&o);

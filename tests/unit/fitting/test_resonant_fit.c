@@ -88,8 +88,9 @@ static void modes_are_recovered_from_exact_data(void **state)
     make_data(&truth, g, h, 1);
     const tf_prony_data d = data_of(g, h);
     tf_resonant_modes t;
-    char err[256];
-    assert_int_equal(tf_resonant_fit_modes(&d, NULL, 0, 2, &bounds, &t, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_resonant_fit_modes(&ctx, &d, NULL, 0, 2, &bounds, &t), 0);
     for (int j = 0; j < 2; ++j) {
         print_message("mode %d: %.9g Hz (truth %g), zeta %.9g (truth %g), w %.6g %.6g %.6g\n", j,
                       t.omega[j] / TWO_PI, truth.omega[j] / TWO_PI, t.zeta[j], truth.zeta[j],
@@ -123,9 +124,9 @@ static void cross_validation_finds_the_number_of_modes(void **state)
         double cv[TF_RESONANT_SEARCH_MODES + 1];
         int k;
         tf_resonant_modes t;
-        char err[256];
-        assert_int_equal(tf_resonant_select_modes(&d, &hist, &plan, cv, &k, &t, err, sizeof err),
-                         0);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        assert_int_equal(tf_resonant_select_modes(&ctx, &d, &hist, &plan, cv, &k, &t), 0);
         print_message("truth K = %d: CV RMS by K %.3g %.3g %.3g %.3g: K = %d\n", cases[c].n, cv[0],
                       cv[1], cv[2], cv[3], k);
         assert_int_equal(k, cases[c].n);
@@ -187,13 +188,14 @@ typedef struct fixture {
 
 static int setup(void **state)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     fixture *x = calloc(1, sizeof *x);
     tf_ctx_init(&x->ctx);
     x->ctx.level = TF_LOG_ERROR;
-    x->scene = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
+    x->scene = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", NULL, 0);
     if (x->scene == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
         return -1;
     }
     rpim = tf_solver_type_find("rpim-galerkin");
@@ -223,7 +225,7 @@ static void a_ringing_solver_gets_a_resonant_model(void **state)
     tf_solver *s = tf_solver_create_as(&ringing, &x->scene->problem, NULL, &x->ctx);
     assert_non_null(s);
     tf_fit_outcome o;
-    assert_int_equal(tf_fit_run(&x->scene->problem, s, &plan, &o), 0);
+    assert_int_equal(tf_fit_run(&x->ctx, &x->scene->problem, s, &plan, &o), 0);
     assert_true(o.has_hist);
     /* the dynamic design: every history starts and ends at rest, and one
      * training history in four is a strike of at most 8 ticks */
@@ -267,7 +269,7 @@ static void not_fitted_unless_asked(void **state)
     plan.hist_ticks = 100;
     tf_solver *s = tf_solver_create_as(&ringing, &x->scene->problem, NULL, &x->ctx);
     tf_fit_outcome o;
-    assert_int_equal(tf_fit_run(&x->scene->problem, s, &plan, &o), 0);
+    assert_int_equal(tf_fit_run(&x->ctx, &x->scene->problem, s, &plan, &o), 0);
     const tf_family_result *r = tf_fit_result_of(&o, tf_family_find("resonant"));
     assert_false(r->applicable);
     assert_non_null(strstr(r->why, "fit.family: resonant"));

@@ -92,9 +92,10 @@ static void recovers_a_separable_field(void **state)
     build(axis, &combined);
     const tf_fitdata *ax[3] = {&axis[0], &axis[1], &axis[2]};
     tf_zhou_orders o;
-    char err[256];
-    assert_int_equal(tf_zhou_applicable(&axis[0], err, sizeof err), 0);
-    assert_int_equal(tf_zhou_select(ax, 5, 1, &o, NULL, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_zhou_applicable(&ctx, &axis[0]), 0);
+    assert_int_equal(tf_zhou_select(&ctx, ax, 5, 1, &o, NULL), 0);
     for (int a = 0; a < 3; ++a) {
         assert_int_equal(o.lambda[a], 1); /* linear contact law */
     }
@@ -103,7 +104,7 @@ static void recovers_a_separable_field(void **state)
         assert_int_equal(o.b[pair], 3); /* y^3 */
         assert_int_equal(o.k[pair], 1); /* p linear in t */
     }
-    tf_model *m = tf_zhou_fit(ax, &o, "z", err, sizeof err);
+    tf_model *m = tf_zhou_fit(&ctx, ax, &o, "z");
     assert_non_null(m);
     double max;
     tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL); /* superposed forces */
@@ -119,9 +120,10 @@ static void cannot_hold_a_cross_term(void **state)
     build(axis, &combined);
     const tf_fitdata *ax[3] = {&axis[0], &axis[1], &axis[2]};
     tf_zhou_orders o;
-    char err[256];
-    assert_int_equal(tf_zhou_select(ax, 5, 1, &o, NULL, err, sizeof err), 0);
-    tf_model *m = tf_zhou_fit(ax, &o, "z", err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_zhou_select(&ctx, ax, 5, 1, &o, NULL), 0);
+    tf_model *m = tf_zhou_fit(&ctx, ax, &o, "z");
     double max;
     tf_family_errors(m, &combined, NULL, NC, &max, NULL, NULL);
     assert_true(max > 0.1); /* separable surfaces miss x*y */
@@ -134,14 +136,15 @@ static void refuses_what_it_cannot_model(void **state)
     tf_fitdata axis[3], combined;
     cross_term = 0;
     build(axis, &combined);
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     rest[5][2] = 5.0;
-    assert_int_equal(tf_zhou_applicable(&axis[0], err, sizeof err), -1);
-    assert_non_null(strstr(err, "one plane"));
+    assert_int_equal(tf_zhou_applicable(&ctx, &axis[0]), -1);
+    assert_non_null(strstr(ctx.err, "one plane"));
     rest[5][2] = 6.0;
     axis[0].centre[2] = -0.5;
-    assert_int_equal(tf_zhou_applicable(&axis[0], err, sizeof err), -1);
-    assert_non_null(strstr(err, "centred at zero"));
+    assert_int_equal(tf_zhou_applicable(&ctx, &axis[0]), -1);
+    assert_non_null(strstr(ctx.err, "centred at zero"));
 }
 
 int main(void)

@@ -18,8 +18,9 @@ static tf_cut_set slit(void)
 {
     tf_cut c = {.n = 2, .xy = {{0, -5}, {0, 5}}, .top = 10, .depth = 4};
     tf_cut_set s;
-    char err[128];
-    assert_int_equal(tf_cut_set_build(&s, &c, 1, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_cut_set_build(&ctx, &s, &c, 1), 0);
     assert_int_equal(s.n, 1);
     return s;
 }
@@ -106,10 +107,11 @@ static void box_and_refusals(void **state)
     tf_cut_set_free(&s);
     tf_cut zero = {.n = 2, .xy = {{1, 1}, {1, 1}}, .top = 10, .depth = 4};
     tf_cut flat = {.n = 2, .xy = {{0, 0}, {1, 1}}, .top = 10, .depth = 0};
-    char err[128];
-    assert_int_equal(tf_cut_set_build(&s, &zero, 1, err, sizeof err), -1);
-    assert_non_null(strstr(err, "zero length"));
-    assert_int_equal(tf_cut_set_build(&s, &flat, 1, err, sizeof err), -1);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_cut_set_build(&ctx, &s, &zero, 1), -1);
+    assert_non_null(strstr(ctx.err, "zero length"));
+    assert_int_equal(tf_cut_set_build(&ctx, &s, &flat, 1), -1);
 }
 
 int main(void)

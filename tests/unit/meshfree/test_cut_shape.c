@@ -41,25 +41,27 @@ typedef struct pair {
 static void shape_of(tf_shape *sh, const tf_problem *p, int efg)
 {
     double lo[3], hi[3];
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_problem_bounds(p, lo, hi);
     assert_int_equal(tf_shape_init(sh, &p->cloud, lo, hi, &p->solver), 0);
-    if (efg && tf_shape_use_efg(sh, err, sizeof err) != 0) {
-        fail_msg("%s", err);
+    if (efg && tf_shape_use_efg(&ctx, sh) != 0) {
+        fail_msg("%s", ctx.err);
     }
 }
 
 static void pair_open(pair *q, int efg)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[] = {"geometry.grid=11,11,11"};
-    q->scene = tf_scene_load(PATCH, sets, 1, err, sizeof err);
+    q->scene = tf_scene_load(&ctx, PATCH, sets, 1);
     if (q->scene == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     shape_of(&q->cut, &q->scene->problem, efg);
     shape_of(&q->plain, &q->scene->problem, efg);
-    assert_int_equal(tf_shape_set_cuts(&q->cut, &SLIT, 1, err, sizeof err), 0);
+    assert_int_equal(tf_shape_set_cuts(&ctx, &q->cut, &SLIT, 1), 0);
     tf_shape_work_init(&q->wc);
     tf_shape_work_init(&q->wp);
 }

@@ -35,7 +35,8 @@ static int setup(void **state)
     fixture *f = calloc(1, sizeof *f);
     const double lo[3] = {0, 0, 0}, hi[3] = {L, L, L};
     const unsigned grid[3] = {7, 7, 7};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     if (tf_cloud_box(&f->cloud, lo, hi, grid, 0.3, 20170912) != 0) {
         return -1;
     }
@@ -46,7 +47,7 @@ static int setup(void **state)
     f->dphi = malloc(3 * n * sizeof *f->dphi);
     f->pp = malloc(n * sizeof *f->pp);
     f->pm = malloc(n * sizeof *f->pm);
-    if (tf_mls_radii(f->cloud.xyz, n, f->cloud.spacing, 2.0, f->radius, err, sizeof err) != 0 ||
+    if (tf_mls_radii(&ctx, f->cloud.xyz, n, f->cloud.spacing, 2.0, f->radius) != 0 ||
         tf_mls_work_init(&f->w, n) != 0) {
         return -1;
     }
@@ -288,10 +289,11 @@ static void radii_follow_the_grid_spacing(void **state)
     tf_cloud c;
     const double lo[3] = {0, 0, 0}, hi[3] = {48, 48, 6};
     const unsigned grid[3] = {11, 11, 3};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     assert_int_equal(tf_cloud_box(&c, lo, hi, grid, 0, 1), 0);
     double *rad = malloc(3 * c.n * sizeof *rad);
-    assert_int_equal(tf_mls_radii(c.xyz, c.n, c.spacing, 2.5, rad, err, sizeof err), 0);
+    assert_int_equal(tf_mls_radii(&ctx, c.xyz, c.n, c.spacing, 2.5, rad), 0);
     for (size_t i = 0; i < c.n; ++i) {
         assert_true(fabs(rad[3 * i] - 12) < 1e-12 && fabs(rad[3 * i + 1] - 12) < 1e-12 &&
                     fabs(rad[3 * i + 2] - 7.5) < 1e-12);
@@ -304,8 +306,8 @@ static void radii_follow_the_grid_spacing(void **state)
         plane[3 * k + 2] = 0;
     }
     const double sp[3] = {12, 12, 12};
-    assert_int_equal(tf_mls_radii(plane, 25, sp, 2.5, rad, err, sizeof err), -1);
-    assert_non_null(strstr(err, "no spacing along z"));
+    assert_int_equal(tf_mls_radii(&ctx, plane, 25, sp, 2.5, rad), -1);
+    assert_non_null(strstr(ctx.err, "no spacing along z"));
     free(rad);
     tf_cloud_free(&c);
 }

@@ -40,16 +40,18 @@ static int shape_of(tf_shape *sh, const tf_problem *p)
 
 static void efg_open(efg *e, const char *centre)
 {
-    char err[512], set[64];
+    char set[64];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     snprintf(set, sizeof set, "solver.centre=%s", centre);
     const char *sets[] = {set};
-    e->scene = tf_scene_load(PATCH, sets, 1, err, sizeof err);
+    e->scene = tf_scene_load(&ctx, PATCH, sets, 1);
     if (e->scene == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     assert_int_equal(shape_of(&e->sh, &e->scene->problem), 0);
-    if (tf_shape_use_efg(&e->sh, err, sizeof err) != 0) {
-        fail_msg("%s", err);
+    if (tf_shape_use_efg(&ctx, &e->sh) != 0) {
+        fail_msg("%s", ctx.err);
     }
     tf_shape_work_init(&e->w);
 }
@@ -146,14 +148,15 @@ static void cell_and_point_supports_give_the_same_shape_functions(void **state)
 static void a_support_too_small_is_refused_with_the_place(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[] = {"solver.support=0.3", "solver.centre=point"};
-    tf_scene *s = tf_scene_load(PATCH, sets, 2, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, PATCH, sets, 2);
     assert_non_null(s);
     tf_shape sh;
     tf_shape_work w;
     assert_int_equal(shape_of(&sh, &s->problem), 0);
-    assert_int_equal(tf_shape_use_efg(&sh, err, sizeof err), 0);
+    assert_int_equal(tf_shape_use_efg(&ctx, &sh), 0);
     tf_shape_work_init(&w);
     /* at a node only that node's domain (0.3 spacings; jitter keeps nodes
      * 0.4 spacings apart) reaches: A has rank 1 */

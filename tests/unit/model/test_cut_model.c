@@ -76,9 +76,10 @@ static void target_agrees_with_reference(void **state)
  * the rows are ux = k, uy = g0, uz = -k g2. */
 static tf_model *ramp(void)
 {
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const uint32_t dims[2] = {1, 4};
-    tf_model *m = tf_model_new("ramp", TFIT_FAMILY_CUT, 1, dims, 2, err, sizeof err);
+    tf_model *m = tf_model_new(&ctx, "ramp", TFIT_FAMILY_CUT, 1, dims, 2);
     assert_non_null(m);
     const double c[3] = {0, 0, 0};
     tf_model_set_ball(m, c, 1.0);
@@ -180,10 +181,11 @@ static void check_refuses_bad_shapes(void **state)
     dims[0] = 1;
     dims[1] = 4;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_SIZE);
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const uint32_t zero[2] = {1, 0}, big[2] = {1, TFIT_CUT_MAX_INTERVALS + 1};
-    assert_null(tf_model_new("x", TFIT_FAMILY_CUT, 1, zero, 2, err, sizeof err));
-    assert_null(tf_model_new("x", TFIT_FAMILY_CUT, 1, big, 2, err, sizeof err));
+    assert_null(tf_model_new(&ctx, "x", TFIT_FAMILY_CUT, 1, zero, 2));
+    assert_null(tf_model_new(&ctx, "x", TFIT_FAMILY_CUT, 1, big, 2));
     tf_model_free(m);
 }
 

@@ -40,12 +40,13 @@ static void every_id_has_its_form(void **state)
         assert_true(f->ref_eval != tf_form_ref_eval || f->ref_map != NULL);
         /* stateful exactly when its golden vectors are a tick sequence */
         assert_int_equal(f->filter != NULL, f->golden_inputs == tf_golden_ticks);
-        char err[256];
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
         tf_model *m = tf_random_model(&r, f->name, f->id, 1);
         assert_non_null(m);
         assert_int_equal(m->n_dims, f->n_dims);
         assert_int_equal(tf_model_ncoef(f->id, m->n_out, m->dims, m->n_dims), m->n_coef);
-        assert_int_equal(tf_model_validate(m, err, sizeof err), 0);
+        assert_int_equal(tf_model_validate(&ctx, m), 0);
         tfit_model t;
         tf_target_view(m, &t);
         assert_int_equal(tfit_model_check(&t), TFIT_OK);

@@ -41,8 +41,9 @@ static void block48_nodal_operation_count(void **state)
 {
     (void)state;
     const uint32_t p1[1] = {1};
-    char err[128];
-    tf_model *m = tf_model_new("b", TFIT_FAMILY_NODAL, 121, p1, 1, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "b", TFIT_FAMILY_NODAL, 121, p1, 1);
     tf_opcount ops = tf_model_ops(m);
     /* projection 14 add, 33 mul, no division; the degree-1 Chebyshev basis
      * {1, g0, g1, g2} costs nothing (API 2 counted 3 products g_v * 1);
@@ -58,19 +59,20 @@ static void host_validation_matches_target_check(void **state)
 {
     (void)state;
     tf_rng r = {41};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int rejected = 0;
     for (int i = 0; i < 300; ++i) {
         tf_model *m = tf_random_model(&r, "v", 0, 0);
         tfit_model t;
         tf_target_view(m, &t);
-        assert_int_equal(tf_model_validate(m, err, sizeof err), 0);
+        assert_int_equal(tf_model_validate(&ctx, m), 0);
         assert_int_equal(tfit_model_check(&t), TFIT_OK);
         /* Blow one table entry up: both sides must refuse. */
         uint32_t k = TFIT_INPUT_MAP_FLOATS + tf_rng_below(&r, m->n_coef - TFIT_INPUT_MAP_FLOATS);
         m->coef[k] = (float)(tf_rng_below(&r, 2) ? NAN : 3e38);
         tf_target_view(m, &t);
-        int host_bad = tf_model_validate(m, err, sizeof err) != 0;
+        int host_bad = tf_model_validate(&ctx, m) != 0;
         int target_bad = tfit_model_check(&t) == TFIT_ERR_RANGE;
         assert_int_equal(host_bad, 1);
         assert_int_equal(target_bad, 1);

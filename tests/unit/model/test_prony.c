@@ -81,8 +81,9 @@ static void target_agrees_with_reference_over_long_histories(void **state)
 static tf_model *identity_model(uint32_t terms, const double centre[3], double radius)
 {
     const uint32_t dims[TFIT_PRONY_DIMS] = {1, 0, terms, 1000000}; /* 1 ms */
-    char err[256];
-    tf_model *m = tf_model_new("i", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "i", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS);
     tf_model_set_ball(m, centre, radius);
     float *rows = tf_model_tables(m) + 2 * terms;
     for (int c = 0; c < 3; ++c) {
@@ -217,8 +218,9 @@ static void clamp_keeps_h_on_the_cube(void **state)
 {
     (void)state;
     const uint32_t dims[TFIT_PRONY_DIMS] = {8, 0, 1, 1000};
-    char err[256];
-    tf_model *m = tf_model_new("k", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "k", TFIT_FAMILY_PRONY, 1, dims, TFIT_PRONY_DIMS);
     float *pt = tf_model_tables(m);
     pt[0] = 1.0f - 0x1p-19f;
     pt[1] = -0x1p40f;
@@ -253,20 +255,21 @@ static void check_refuses_what_could_overflow(void **state)
         tf_model_free(m);
         m = tf_random_model(&r, "p", TFIT_FAMILY_PRONY, 1);
     }
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     float *pt = tf_model_tables(m);
     const float keep = pt[0];
     const float bad_decays[] = {1.0f, 1.0f - 0x1p-21f, -0x1p-30f, NAN};
     for (size_t i = 0; i < sizeof bad_decays / sizeof *bad_decays; ++i) {
         pt[0] = bad_decays[i];
-        assert_int_not_equal(tf_model_validate(m, err, sizeof err), 0);
+        assert_int_not_equal(tf_model_validate(&ctx, m), 0);
         tfit_model t;
         tf_target_view(m, &t);
         assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
     }
     pt[0] = keep;
     pt[1] = 0x1p65f;
-    assert_int_not_equal(tf_model_validate(m, err, sizeof err), 0);
+    assert_int_not_equal(tf_model_validate(&ctx, m), 0);
     tfit_model t;
     tf_target_view(m, &t);
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);

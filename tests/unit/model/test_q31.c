@@ -58,7 +58,8 @@ static void target_matches_reference(void **state)
 {
     (void)state;
     tf_rng r = {2026};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int models = 0, refused = 0;
     int64_t inputs = 0, clamped = 0;
     int32_t gmax = 0;
@@ -69,9 +70,9 @@ static void target_matches_reference(void **state)
         tf_model *m = tf_random_model(&r, name, i % 3 ? TFIT_FAMILY_NODAL : TFIT_FAMILY_CONTACT,
                                       i % 4 != 0);
         assert_non_null(m);
-        tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+        tf_q31 *q = tf_q31_quantise(&ctx, m);
         if (q == NULL) { /* only a too elongated envelope may refuse */
-            assert_non_null(strstr(err, "elongated"));
+            assert_non_null(strstr(ctx.err, "elongated"));
             ++refused;
             tf_model_free(m);
             continue;
@@ -113,10 +114,10 @@ static void target_matches_reference(void **state)
 
 static tf_model *ball_model(tfit_family f, uint32_t p, double radius, uint64_t seed)
 {
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     uint32_t dims[1] = {p};
-    tf_model *m = tf_model_new("ball", f, f == TFIT_FAMILY_CONTACT ? 1 : 5, dims, 1, err,
-                               sizeof err);
+    tf_model *m = tf_model_new(&ctx, "ball", f, f == TFIT_FAMILY_CONTACT ? 1 : 5, dims, 1);
     const double centre[3] = {0.1 * radius, -0.2 * radius, 0.05 * radius};
     tf_model_set_ball(m, centre, radius);
     tf_rng r = {seed};
@@ -130,9 +131,10 @@ static tf_model *ball_model(tfit_family f, uint32_t p, double radius, uint64_t s
 static void check_rejects_damage(void **state)
 {
     (void)state;
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_model *m = ball_model(TFIT_FAMILY_NODAL, 2, 1.0, 1);
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = tf_q31_quantise(&ctx, m);
     assert_non_null(q);
     tfit_model_q31 t;
     tf_target_view_q31(q, &t);
@@ -182,16 +184,16 @@ static void check_rejects_damage(void **state)
     for (size_t i = 0; i < tf_family_count(); ++i) {
         const tf_family *f = tf_family_at(i);
         tf_model *any = tf_random_model(&r, f->name, f->id, 1);
-        tf_q31 *form = tf_q31_quantise(any, err, sizeof err);
+        tf_q31 *form = tf_q31_quantise(&ctx, any);
         if (f->id == TFIT_FAMILY_PRONY && form == NULL) { /* a modal static map, a slow term */
-            assert_non_null(strstr(err, "no Q31 form"));
-            assert_null(strstr(err, "no Q31 form for family"));
+            assert_non_null(strstr(ctx.err, "no Q31 form"));
+            assert_null(strstr(ctx.err, "no Q31 form for family"));
             tf_model_free(any);
             continue;
         }
         assert_int_equal(form != NULL, f->q31 != NULL);
         if (form == NULL) {
-            assert_non_null(strstr(err, "no Q31 form for family"));
+            assert_non_null(strstr(ctx.err, "no Q31 form for family"));
         }
         tf_q31_free(form);
         tf_model_free(any);
@@ -203,10 +205,11 @@ static void check_rejects_damage(void **state)
 static void added_error_is_small(void **state)
 {
     (void)state;
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (uint32_t p = 0; p <= 4; ++p) {
         tf_model *m = ball_model(p % 2 ? TFIT_FAMILY_NODAL : TFIT_FAMILY_CONTACT, p, 2.5, p);
-        tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+        tf_q31 *q = tf_q31_quantise(&ctx, m);
         assert_non_null(q);
         tf_q31_measure(q, m, 7, 2000);
         double lsb = ldexp(1.0, q->out_exp - 31);

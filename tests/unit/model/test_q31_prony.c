@@ -47,16 +47,17 @@ static void target_matches_reference(void **state)
 {
     (void)state;
     tf_rng r = {1414};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int models = 0, refused = 0;
     long ticks = 0, clamped = 0;
     for (int i = 0; i < 600; ++i) {
         tf_model *m = tf_random_model(&r, "p", TFIT_FAMILY_PRONY, i % 4 != 0);
         assert_non_null(m);
-        tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+        tf_q31 *q = tf_q31_quantise(&ctx, m);
         if (q == NULL) { /* a modal static map, a term beyond §8's range, an elongated envelope */
-            assert_true(strstr(err, "modal static map") || strstr(err, "outside 0 <= a") ||
-                        strstr(err, "elongated"));
+            assert_true(strstr(ctx.err, "modal static map") || strstr(ctx.err, "outside 0 <= a") ||
+                        strstr(ctx.err, "elongated"));
             ++refused;
             tf_model_free(m);
             continue;
@@ -103,7 +104,8 @@ static void state_within_its_bound(void **state)
 {
     (void)state;
     tf_rng r = {17};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const float slow = 1.0f - 0x1p-17f; /* word 2^31 - 2^14, the largest */
     const struct {
         float a;
@@ -112,7 +114,7 @@ static void state_within_its_bound(void **state)
     } cases[] = {{0.5f, 1.0, 64}, {0.999f, 1.0, 20000}, {slow, 1.0, 1u << 20}};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
         tf_model *m = prony_model(&r, 1, 2, 1, cases[c].a, cases[c].w);
-        tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+        tf_q31 *q = tf_q31_quantise(&ctx, m);
         assert_non_null(q);
         tfit_model_q31 t;
         tf_target_view_q31(q, &t);
@@ -146,9 +148,10 @@ static void damaged_state_is_defined(void **state)
 {
     (void)state;
     tf_rng r = {23};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_model *m = prony_model(&r, 2, 3, 3, 0.99f, 0.3);
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = tf_q31_quantise(&ctx, m);
     assert_non_null(q);
     tfit_model_q31 t;
     tf_target_view_q31(q, &t);
@@ -172,9 +175,10 @@ static void check_and_quantiser_refuse(void **state)
 {
     (void)state;
     tf_rng r = {31};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_model *m = prony_model(&r, 2, 4, 2, 0.9f, 0.4);
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = tf_q31_quantise(&ctx, m);
     assert_non_null(q);
     tfit_model_q31 t;
     tf_target_view_q31(q, &t);
@@ -214,11 +218,11 @@ static void check_and_quantiser_refuse(void **state)
     tf_q31_free(q);
     /* a term slower than the bound allows, a weight beyond 1: refused */
     m->coef[TFIT_INPUT_MAP_FLOATS] = 1.0f - 0x1p-19f;
-    assert_null(tf_q31_quantise(m, err, sizeof err));
-    assert_non_null(strstr(err, "outside 0 <= a"));
+    assert_null(tf_q31_quantise(&ctx, m));
+    assert_non_null(strstr(ctx.err, "outside 0 <= a"));
     m->coef[TFIT_INPUT_MAP_FLOATS] = 0.9f;
     m->coef[TFIT_INPUT_MAP_FLOATS + 1] = 1.5f;
-    assert_null(tf_q31_quantise(m, err, sizeof err));
+    assert_null(tf_q31_quantise(&ctx, m));
     tf_model_free(m);
 }
 
@@ -229,9 +233,10 @@ static void added_error_is_small(void **state)
 {
     (void)state;
     tf_rng r = {41};
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_model *m = prony_model(&r, 2, 8, 2, 0.999f, 0.3);
-    tf_q31 *q = tf_q31_quantise(m, err, sizeof err);
+    tf_q31 *q = tf_q31_quantise(&ctx, m);
     assert_non_null(q);
     tf_q31_measure(q, m, 7, 2000);
     const double lsb = ldexp(1.0, q->out_exp - 31);

@@ -46,8 +46,9 @@ static void basis_order_is_graded_lexicographic(void **state)
 {
     (void)state;
     const uint32_t p = 4, n_terms = 35, dims[1] = {p};
-    char err[256];
-    tf_model *m = tf_model_new("b", TFIT_FAMILY_NODAL, 12, dims, 1, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "b", TFIT_FAMILY_NODAL, 12, dims, 1);
     float *c = tf_model_tables(m);
     for (uint32_t o = 0; o < n_terms; ++o) {
         c[o * n_terms + o] = 1.0f;
@@ -76,8 +77,9 @@ static void projection_is_radial(void **state)
 {
     (void)state;
     const uint32_t dims[1] = {0};
-    char err[256];
-    tf_model *m = tf_model_new("p", TFIT_FAMILY_NODAL, 1, dims, 1, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "p", TFIT_FAMILY_NODAL, 1, dims, 1);
     const double centre[3] = {1.0, -2.0, 0.5};
     tf_model_set_ball(m, centre, 0.75);
     tf_rng r = {17};

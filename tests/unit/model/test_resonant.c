@@ -58,9 +58,9 @@ static tf_model *identity_model(uint32_t modes, uint32_t tick_ns)
 {
     const uint32_t dims[TFIT_RESONANT_DIMS] = {1, 0, modes, tick_ns};
     const double origin[3] = {0, 0, 0};
-    char err[256];
-    tf_model *m = tf_model_new("i", TFIT_FAMILY_RESONANT, 1, dims, TFIT_RESONANT_DIMS, err,
-                               sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "i", TFIT_FAMILY_RESONANT, 1, dims, TFIT_RESONANT_DIMS);
     tf_model_set_ball(m, origin, 1.0);
     float *rows = tf_model_tables(m) + 7 * modes;
     for (int c = 0; c < 3; ++c) {
@@ -133,20 +133,21 @@ static void realised_mode_is_the_asked_one(void **state)
 static void ticks_the_float_recursion_cannot_carry_are_refused(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const double omega = 2 * 3.14159265358979 * 20, zeta = 0.01;
-    assert_int_equal(tf_resonant_params_check(omega, zeta, 1e-3, err, sizeof err), 0);
-    assert_int_equal(tf_resonant_params_check(omega, zeta, 1e-5, err, sizeof err), 1);
-    print_message("%s\n", err);
-    const char *at = strstr(err, "fit with a tick of at least ");
+    assert_int_equal(tf_resonant_params_check(&ctx, omega, zeta, 1e-3), 0);
+    assert_int_equal(tf_resonant_params_check(&ctx, omega, zeta, 1e-5), 1);
+    print_message("%s\n", ctx.err);
+    const char *at = strstr(ctx.err, "fit with a tick of at least ");
     assert_non_null(at);
     const double need = 1e-6 * strtod(at + strlen("fit with a tick of at least "), NULL);
     assert_true(need > 1e-5 && need < 1e-3);
-    assert_int_equal(tf_resonant_params_check(omega, zeta, need, err, sizeof err), 0);
-    assert_int_equal(tf_resonant_params_check(omega, zeta, need * 0.75, err, sizeof err), 1);
-    assert_int_equal(tf_resonant_params_check(2000.0, 0.1, 1e-3, err, sizeof err), 1);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "does not resolve it"));
+    assert_int_equal(tf_resonant_params_check(&ctx, omega, zeta, need), 0);
+    assert_int_equal(tf_resonant_params_check(&ctx, omega, zeta, need * 0.75), 1);
+    assert_int_equal(tf_resonant_params_check(&ctx, 2000.0, 0.1, 1e-3), 1);
+    print_message("%s\n", ctx.err);
+    assert_non_null(strstr(ctx.err, "does not resolve it"));
 }
 
 static unsigned long compare_run(const tf_model *m, uint32_t seed, unsigned long n)
@@ -256,23 +257,24 @@ static void check_refuses_what_could_overflow(void **state)
     tf_model *m = identity_model(1, 1000000);
     const double w[3] = {1, 1, 1};
     tf_resonant_set_mode(m, 0, 90.0, 0.05, w);
-    char err[512];
-    assert_int_equal(tf_model_validate(m, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_model_validate(&ctx, m), 0);
     float *pt = tf_model_tables(m);
     const float keep = pt[0];
     pt[0] = 1.0f + 0x1p-10f; /* beyond the device's magnitude limit */
-    assert_int_not_equal(tf_model_validate(m, err, sizeof err), 0);
+    assert_int_not_equal(tf_model_validate(&ctx, m), 0);
     tfit_model t;
     tf_target_view(m, &t);
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
     pt[0] = keep;
     pt[3] = 1.0f; /* within magnitude, but F no longer contracts: the host refuses */
-    assert_int_not_equal(tf_model_validate(m, err, sizeof err), 0);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "keep the state finite"));
+    assert_int_not_equal(tf_model_validate(&ctx, m), 0);
+    print_message("%s\n", ctx.err);
+    assert_non_null(strstr(ctx.err, "keep the state finite"));
     pt[3] = tf_model_tables(m)[3];
     pt[4] = 0x1p11f;
-    assert_int_not_equal(tf_model_validate(m, err, sizeof err), 0);
+    assert_int_not_equal(tf_model_validate(&ctx, m), 0);
     tf_target_view(m, &t);
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
     tf_model_free(m);

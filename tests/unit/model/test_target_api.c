@@ -30,8 +30,9 @@ static uint32_t bits(float x)
 static tf_model *linear_model(uint32_t n, double radius)
 {
     const uint32_t dims[1] = {1};
-    char err[256];
-    tf_model *m = tf_model_new("lin", TFIT_FAMILY_NODAL, n, dims, 1, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_model *m = tf_model_new(&ctx, "lin", TFIT_FAMILY_NODAL, n, dims, 1);
     const double centre[3] = {0, 0, 0};
     tf_model_set_ball(m, centre, radius);
     float *c = tf_model_tables(m);
@@ -142,9 +143,10 @@ static void arguments_and_families(void **state)
     for (uint32_t p = 0; p <= 2; ++p) {
         for (int table = 0; table < 2; ++table) {
             const uint32_t dims[1] = {p};
-            char err[256];
-            tf_model *n = tf_model_new("n", TFIT_FAMILY_NODAL, 3, dims, 1, err, sizeof err);
-            tf_model *c = tf_model_new("c", TFIT_FAMILY_CONTACT, 1, dims, 1, err, sizeof err);
+            tf_ctx ctx;
+            tf_ctx_init(&ctx);
+            tf_model *n = tf_model_new(&ctx, "n", TFIT_FAMILY_NODAL, 3, dims, 1);
+            tf_model *c = tf_model_new(&ctx, "c", TFIT_FAMILY_CONTACT, 1, dims, 1);
             tfit_model v[2];
             tf_target_view(n, &v[0]);
             tf_target_view(c, &v[1]);
@@ -282,7 +284,8 @@ static void modal_q15_rejections(void **state)
     (void)state;
     tf_rng r = {7};
     tf_model *q = tf_random_model(&r, "q", TFIT_FAMILY_MODAL_Q15, 1);
-    char err[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tfit_model t;
     tf_target_view(q, &t);
     assert_int_equal(tfit_model_check(&t), TFIT_OK);
@@ -300,7 +303,7 @@ static void modal_q15_rejections(void **state)
         memcpy(&row[0], &bad_words[i], sizeof bad_words[i]);
         tf_target_view(q, &t); /* CRC matches the altered table */
         assert_int_equal(tfit_model_check(&t), TFIT_ERR_RANGE);
-        assert_int_not_equal(tf_model_validate(q, err, sizeof err), 0);
+        assert_int_not_equal(tf_model_validate(&ctx, q), 0);
     }
     const uint32_t edge = (16255u & 0xffffu) | ((16384u - 16255u) << 16); /* +-16255: valid */
     memcpy(&row[0], &edge, sizeof edge);

@@ -80,8 +80,9 @@ static tf_lm_result solve1(size_t m, tf_lm_residual_fn r, tf_lm_jacobian_fn j, t
         o.ftol = ftol;
     }
     tf_lm_result res = {0};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, b, &res), 0);
     return res;
 }
 
@@ -234,10 +235,11 @@ static tf_lm_result solve_rosenbrock(trace *t, size_t max_evals, double *b)
     tf_lm_default_options(&o, 2);
     o.max_evals = max_evals;
     tf_lm_result res = {0};
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     b[0] = -1.2;
     b[1] = 1;
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), 0);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, b, &res), 0);
     return res;
 }
 
@@ -285,15 +287,16 @@ static void bad_problems_are_refused(void **state)
     tf_lm_options o;
     tf_lm_default_options(&o, 2);
     tf_lm_result res = {0};
-    char err[128] = "";
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), -1);
-    assert_non_null(strstr(err, "parameter 1"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, b, &res), -1);
+    assert_non_null(strstr(ctx.err, "parameter 1"));
     pb.lower = nan_lo;
     pb.upper = NULL;
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), -1);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, b, &res), -1);
     pb.lower = NULL;
     pb.n = 0;
-    assert_int_equal(tf_lm_solve(&pb, &o, b, &res, err, sizeof err), -1);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, b, &res), -1);
     assert_int_equal(t.n, 0);
 }
 
@@ -373,8 +376,9 @@ static void fit_decay(decay *d, const double *lo, const double *hi, const double
     o.lower = lo;
     o.upper = hi;
     o.lm.ftol = o.lm.xtol = 1e-14;
-    char err[256];
-    assert_int_equal(tf_lsfit(&m, &data, &o, r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lsfit(&ctx, &m, &data, &o, r), 0);
     assert_true(tf_stop_converged(r->stop));
     assert_int_equal(d->outside, 0);
 }
@@ -488,14 +492,15 @@ static void large_residual_fit_ends_at_the_gauss_newton_point(void **state)
     tf_lm_default_options(&o, 3);
     o.ftol = o.xtol = 1e-15;
     tf_lm_result res = {.jac = jac};
-    char err[128];
-    assert_int_equal(tf_lm_solve(&pb, &o, p, &res, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, p, &res), 0);
     assert_true(tf_stop_converged(res.stop));
     assert_true(res.rss > 1); /* the residuals are large */
     noisy_residual(&d, p, r);
-    tf_lsq *f = tf_lsq_factor(NL, 3, jac, NL, NULL, 0, err, sizeof err);
+    tf_lsq *f = tf_lsq_factor(&ctx, NL, 3, jac, NL, NULL, 0);
     assert_non_null(f);
-    assert_int_equal(tf_lsq_solve(f, 1, r, NL, step, 3, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_lsq_solve(&ctx, f, 1, r, NL, step, 3, NULL), 0);
     tf_lsq_free(f);
     for (int j = 0; j < 3; ++j) {
         assert_close(step[j], 0, 1e-12 * fabs(p[j]));
@@ -573,8 +578,9 @@ static void small_residual_fit_ends_at_the_gauss_newton_point(void **state)
     o.start = start;
     o.lm.ftol = o.lm.xtol = 1e-15;
     tf_lsfit_result res;
-    char err[128];
-    assert_int_equal(tf_lsfit(&model, &data, &o, &res, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &res), 0);
     assert_true(tf_stop_converged(res.stop));
     assert_true(res.rss[0] < 1e-7); /* the residuals are small */
     double jac[6 * NZ], r[NZ], step[6];
@@ -582,9 +588,9 @@ static void small_residual_fit_ends_at_the_gauss_newton_point(void **state)
         r[i] = lanczos_model(res.par, d.x[i]) - d.y[i]; /* without the jitter */
     }
     lanczos_jacobian(&d, res.par, jac);
-    tf_lsq *f = tf_lsq_factor(NZ, 6, jac, NZ, NULL, 0, err, sizeof err);
+    tf_lsq *f = tf_lsq_factor(&ctx, NZ, 6, jac, NZ, NULL, 0);
     assert_non_null(f);
-    assert_int_equal(tf_lsq_solve(f, 1, r, NZ, step, 6, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_lsq_solve(&ctx, f, 1, r, NZ, step, 6, NULL), 0);
     tf_lsq_free(f);
     for (int j = 0; j < 6; ++j) {
         assert_close(step[j], 0, 1e-10 * fabs(res.par[j]));
@@ -619,8 +625,9 @@ static double difference_error(int central)
     tf_lm_default_options(&o, 2);
     o.central_diff = central;
     tf_lm_result res = {.jac = fd};
-    char err[64];
-    assert_int_equal(tf_lm_solve(&pb, &o, p, &res, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, p, &res), 0);
     assert_int_equal(res.stop, TF_STOP_ZERO_RESIDUAL);
     assert_true(p[0] == p_star[0] && p[1] == p_star[1]);
     assert_int_equal(res.evals, 1 + (central ? 4 : 2));

@@ -60,14 +60,14 @@ static double noise(int i, int k)
     return 1e-3 * (((i * 37 + k * 11) % 13) - 6);
 }
 
-static int fit_linear(poly *p, size_t n, size_t k, const double *y, const double *w,
-                      tf_lsfit_result *r, char *err, size_t errlen)
+static int fit_linear(tf_ctx *ctx, poly *p, size_t n, size_t k, const double *y, const double *w,
+                      tf_lsfit_result *r)
 {
     tf_lsfit_model model = {.n_par = n, .design = poly_design, .ctx = p};
     tf_lsfit_data data = {M, k, y, M, w};
     tf_lsfit_options o;
     tf_lsfit_default_options(&o, n);
-    return tf_lsfit(&model, &data, &o, r, err, errlen);
+    return tf_lsfit(ctx, &model, &data, &o, r);
 }
 
 static void many_columns_in_one_factorisation(void **state)
@@ -90,8 +90,9 @@ static void many_columns_in_one_factorisation(void **state)
         }
     }
     tf_lsfit_result r;
-    char err[128];
-    assert_int_equal(fit_linear(&p, N, K, y, NULL, &r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(fit_linear(&ctx, &p, N, K, y, NULL, &r), 0);
     assert_int_equal(r.stop, TF_STOP_DIRECT);
     assert_int_equal(r.rank, N);
     for (int k = 0; k < K; ++k) {
@@ -101,7 +102,7 @@ static void many_columns_in_one_factorisation(void **state)
         assert_true(r.rss[k] < 1e-24);
         /* Each column alone gives the same answer. */
         tf_lsfit_result one;
-        assert_int_equal(fit_linear(&p, N, 1, y + k * M, NULL, &one, err, sizeof err), 0);
+        assert_int_equal(fit_linear(&ctx, &p, N, 1, y + k * M, NULL, &one), 0);
         for (int j = 0; j < N; ++j) {
             assert_close(one.par[j], r.par[j + k * N], 1e-13);
         }
@@ -129,8 +130,9 @@ static void line_covariance_is_the_textbook_one(void **state)
         sxx += (p.t[i] - mean) * (p.t[i] - mean);
     }
     tf_lsfit_result r;
-    char err[128];
-    assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, NULL, &r), 0);
     double s2 = r.rss[0] / (M - 2);
     assert_close(r.sigma2[0], s2, 1e-18);
     assert_close(r.se[1], sqrt(s2 / sxx), 1e-12);
@@ -158,9 +160,10 @@ static void weights_act_as_repeated_rows(void **state)
     memcpy(y2, y, sizeof y);
     y2[20] = y[5];
     tf_lsfit_result a, b;
-    char err[128];
-    assert_int_equal(fit_linear(&p, 3, 1, y, w, &a, err, sizeof err), 0);
-    assert_int_equal(fit_linear(&q, 3, 1, y2, NULL, &b, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(fit_linear(&ctx, &p, 3, 1, y, w, &a), 0);
+    assert_int_equal(fit_linear(&ctx, &q, 3, 1, y2, NULL, &b), 0);
     for (int j = 0; j < 3; ++j) {
         assert_close(a.par[j], b.par[j], 1e-13);
     }
@@ -183,10 +186,11 @@ static void rank_deficient_linear_fit(void **state)
         y[i] = 0.5 + 3 * p.t[i] + noise(i, 2);
     }
     tf_lsfit_result full, reduced;
-    char err[128];
-    assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &reduced, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, NULL, &reduced), 0);
     p.dup = 1;
-    assert_int_equal(fit_linear(&p, 3, 1, y, NULL, &full, err, sizeof err), 0);
+    assert_int_equal(fit_linear(&ctx, &p, 3, 1, y, NULL, &full), 0);
     assert_int_equal(full.rank, 2);
     assert_int_equal(full.state[0], TF_PAR_FREE);
     int dep = full.state[1] == TF_PAR_DEPENDENT ? 1 : 2, kept = 3 - dep;
@@ -220,8 +224,9 @@ static void rank_decision_ignores_units(void **state)
         y[i] = 1 + 2 * p.t[i];
     }
     tf_lsfit_result r;
-    char err[128];
-    assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, NULL, &r), 0);
     assert_int_equal(r.rank, 2);
     assert_close(r.par[1], 2e12, 1e-1);
     tf_lsfit_result_free(&r);
@@ -237,24 +242,25 @@ static void bad_linear_input_is_refused(void **state)
         w[i] = 1;
     }
     tf_lsfit_result r;
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     p.poison = 1;
-    assert_int_equal(fit_linear(&p, 2, 1, y, NULL, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "design matrix entry (3, 0)"));
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, NULL, &r), -1);
+    assert_non_null(strstr(ctx.err, "design matrix entry (3, 0)"));
     p.poison = 0;
     w[4] = -1;
-    assert_int_equal(fit_linear(&p, 2, 1, y, w, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "weight 4"));
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, w, &r), -1);
+    assert_non_null(strstr(ctx.err, "weight 4"));
     w[4] = 1;
     y[7] = INFINITY;
-    assert_int_equal(fit_linear(&p, 2, 1, y, w, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "data value (7"));
+    assert_int_equal(fit_linear(&ctx, &p, 2, 1, y, w, &r), -1);
+    assert_non_null(strstr(ctx.err, "data value (7"));
     tf_lsfit_model both = {.n_par = 2, .design = poly_design, .value = NULL, .ctx = &p};
     tf_lsfit_data data = {M, 1, y, 0, NULL};
     tf_lsfit_options o;
     tf_lsfit_default_options(&o, 2);
     both.n_par = 0;
-    assert_int_equal(tf_lsfit(&both, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&ctx, &both, &data, &o, &r), -1);
 }
 
 /* More parameters than observations: the rank is at most the number of
@@ -273,8 +279,9 @@ static void underdetermined_fit(void **state)
     tf_lsfit_options o;
     tf_lsfit_default_options(&o, 5);
     tf_lsfit_result r;
-    char err[128];
-    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &r), 0);
     assert_int_equal(r.rank, 3);
     assert_true(r.rss[0] < 1e-28);
     assert_true(isnan(r.sigma2[0]));
@@ -325,8 +332,9 @@ static void fit_expo(expo *e, int joint, int analytic, tf_lsfit_result *r)
     tf_lsfit_default_options(&o, model.n_par);
     o.start = joint ? start3 : start2;
     o.lm.ftol = o.lm.xtol = 1e-14;
-    char err[128];
-    assert_int_equal(tf_lsfit(&model, &data, &o, r, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, r), 0);
     assert_true(tf_stop_converged(r->stop));
 }
 
@@ -385,18 +393,19 @@ static void nonlinear_misuse_is_refused(void **state)
     tf_lsfit_options o;
     tf_lsfit_default_options(&o, 2);
     tf_lsfit_result r;
-    char err[128];
-    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1); /* no start */
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &r), -1); /* no start */
     o.start = start;
-    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "callback failed"));
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &r), -1);
+    assert_non_null(strstr(ctx.err, "callback failed"));
     model.value = expo_value;
     w[2] = NAN;
-    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "observation 2"));
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &r), -1);
+    assert_non_null(strstr(ctx.err, "observation 2"));
     w[2] = 1;
     data.n_rhs = 2;
-    assert_int_equal(tf_lsfit(&model, &data, &o, &r, err, sizeof err), -1);
+    assert_int_equal(tf_lsfit(&ctx, &model, &data, &o, &r), -1);
 }
 
 int main(void)

@@ -168,9 +168,10 @@ static tf_mgh_score fit(const tf_mgh_run *r, const double *scale)
     tf_lm_options o;
     tf_mgh_options(&o, r->n);
     tf_mgh_score s;
-    char err[256];
-    if (tf_mgh_fit(r, &o, scale, &s, err, sizeof err) != 0) {
-        fail_msg("%s", err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_mgh_fit(&ctx, r, &o, scale, &s) != 0) {
+        fail_msg("%s", ctx.err);
     }
     return s;
 }

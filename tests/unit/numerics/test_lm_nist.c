@@ -45,9 +45,10 @@ static void require_data(void)
 
 static void load(const char *name, tf_nist *d, const tf_nist_model **model)
 {
-    char err[512];
-    if (tf_nist_load(DIR, name, d, model, err, sizeof err) != 0) {
-        fail_msg("%s", err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_nist_load(&ctx, DIR, name, d, model) != 0) {
+        fail_msg("%s", ctx.err);
     }
     assert_string_equal(d->name, name);
 }
@@ -80,8 +81,9 @@ static void all_54_runs_reach_six_digits(void **state)
             tf_lsfit_options o;
             tf_nist_options(&o, d.n_par);
             tf_nist_score s;
-            char err[256];
-            assert_int_equal(tf_nist_fit(&d, model, start, &o, 0, &s, err, sizeof err), 0);
+            tf_ctx ctx;
+            tf_ctx_init(&ctx);
+            assert_int_equal(tf_nist_fit(&ctx, &d, model, start, &o, 0, &s), 0);
             ++runs;
             int bad = !tf_stop_converged(s.stop);
             for (size_t j = 0; j < d.n_par; ++j) {
@@ -256,10 +258,12 @@ static void crlf_and_lf_read_the_same(void **state)
     require_data();
     tf_nist a, b;
     const tf_nist_model *m;
-    char path[256], err[512];
+    char path[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     load("ENSO", &a, &m);
     edited_copy("ENSO", 0, NULL, 1, path, sizeof path);
-    assert_int_equal(tf_nist_read(path, &b, err, sizeof err), 0);
+    assert_int_equal(tf_nist_read(&ctx, path, &b), 0);
     unlink(path);
     assert_string_equal(a.model, b.model);
     assert_int_equal(a.n_obs, b.n_obs);
@@ -274,18 +278,20 @@ static void crlf_and_lf_read_the_same(void **state)
 static void expect_error(const char *name, size_t line, const char *text, const char *where,
                          const char *what)
 {
-    char path[256], err[512], want[300];
+    char path[256], want[300];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_nist d;
     edited_copy(name, line, text, 0, path, sizeof path);
-    int rc = tf_nist_read(path, &d, err, sizeof err);
+    int rc = tf_nist_read(&ctx, path, &d);
     if (rc == 0) {
-        rc = tf_nist_match(&d, path, err, sizeof err) == NULL ? -1 : 0;
+        rc = tf_nist_match(&ctx, &d, path) == NULL ? -1 : 0;
         tf_nist_free(&d);
     }
     unlink(path);
     snprintf(want, sizeof want, "%s%s", path, where);
-    if (rc == 0 || strstr(err, want) == NULL || strstr(err, what) == NULL) {
-        fail_msg("line %zu edited: got '%s', wanted '%s' ... '%s'", line, rc ? err : "success",
+    if (rc == 0 || strstr(ctx.err, want) == NULL || strstr(ctx.err, what) == NULL) {
+        fail_msg("line %zu edited: got '%s', wanted '%s' ... '%s'", line, rc ? ctx.err : "success",
                  want, what);
     }
 }
@@ -310,12 +316,14 @@ static void damaged_files_name_the_line(void **state)
     expect_error("Nelson", 41, "  b1 =    2           2.5          2.5906836021E+00", ":41:",
                  "b1 = start1");
 
-    char err[512], missing[512], said[560];
+    char missing[512], said[560];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_nist d;
     snprintf(missing, sizeof missing, "%s/NoSuch.dat", DIR);
     snprintf(said, sizeof said, "%s: cannot open", missing);
-    assert_int_equal(tf_nist_read(missing, &d, err, sizeof err), -1);
-    assert_non_null(strstr(err, said));
+    assert_int_equal(tf_nist_read(&ctx, missing, &d), -1);
+    assert_non_null(strstr(ctx.err, said));
 }
 
 int main(void)

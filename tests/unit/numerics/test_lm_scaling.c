@@ -57,8 +57,9 @@ static void fits_the_line_from(double p1, double p2)
         tf_lm_options o;
         tf_lm_default_options(&o, 2);
         tf_lm_result res = {0};
-        char err[128];
-        assert_int_equal(tf_lm_solve(&pb, &o, p, &res, err, sizeof err), 0);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        assert_int_equal(tf_lm_solve(&ctx, &pb, &o, p, &res), 0);
         assert_true(tf_stop_converged(res.stop));
         assert_close(p[1], slope_fit, 1e-9);
         assert_true(res.rss < 3 && res.evals <= 10);
@@ -109,9 +110,10 @@ static void overflowing_cosine_is_no_gradient_stop(void **state)
     tf_lm_options o;
     tf_lm_default_options(&o, 1);
     tf_lm_result res = {0};
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double p = 1;
-    assert_int_equal(tf_lm_solve(&pb, &o, &p, &res, err, sizeof err), 0);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, &p, &res), 0);
     assert_true(tf_stop_converged(res.stop));
     assert_int_not_equal(res.stop, TF_STOP_GRADIENT);
     assert_close(p, 0.5, 1e-15);

@@ -112,9 +112,10 @@ static void underflow_is_reported_as_such(void **state)
     tf_lm_default_options(&o, 1);
     o.ftol = o.xtol = 1e-15;
     tf_lm_result res = {0};
-    char err[128];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double p = p_start;
-    assert_int_equal(tf_lm_solve(&pb, &o, &p, &res, err, sizeof err), 0);
+    assert_int_equal(tf_lm_solve(&ctx, &pb, &o, &p, &res), 0);
     assert_int_equal(res.stop, TF_STOP_UNDERFLOW);
     assert_string_equal(tf_stop_name(res.stop), "underflow");
     assert_false(tf_stop_converged(res.stop));

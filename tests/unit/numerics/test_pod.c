@@ -56,8 +56,9 @@ static void recovers_rank_three(void **state)
         }
     }
     tf_pod pod;
-    char err[128];
-    assert_int_equal(tf_pod_compute(&data[0][0], M, N, &pod, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_pod_compute(&ctx, &data[0][0], M, N, &pod), 0);
     assert_int_equal(pod.k, N);
     assert_true(pod.sigma[2] > 0.1);
     assert_true(pod.sigma[3] < 1e-12 * pod.sigma[0]);

@@ -102,12 +102,14 @@ static void ratio_one_is_the_uniform_cloud(void **state)
 
 static tf_scene *block48(const char *grading)
 {
-    char err[1024], set[64];
+    char set[64];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     snprintf(set, sizeof set, "geometry.grading=%s", grading);
     const char *sets[] = {"geometry.grid=13,13,5", set};
-    tf_scene *s = tf_scene_load("tests/solver/block48_at.yaml", sets, 2, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_at.yaml", sets, 2);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     return s;
 }
@@ -152,16 +154,15 @@ static void supports_hold_the_same_nodes(void **state)
 static void graded_patch_test(void **state)
 {
     (void)state;
-    char err[1024];
     const char *sets[] = {"geometry.jitter=0", "geometry.grading=3,3,3"};
-    tf_scene *s = tf_scene_load("tests/solver/patch.yaml", sets, 2, err, sizeof err);
-    if (s == NULL) {
-        fail_msg("%s", err);
-    }
-    assert_true(s->problem.cloud.graded);
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/patch.yaml", sets, 2);
+    if (s == NULL) {
+        fail_msg("%s", ctx.err);
+    }
+    assert_true(s->problem.cloud.graded);
     tf_verify_row row;
     assert_int_equal(tf_verify_problem(&s->problem, 0, &ctx, &row), 0);
     print_message("patch test on a graded regular grid (ratio 3): L2 %.2e, energy %.2e\n",

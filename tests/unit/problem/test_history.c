@@ -77,10 +77,11 @@ static const char *scene =
 static void scene_history_and_its_checks(void **state)
 {
     (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load_text(scene, strlen(scene), "t.yaml", NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load_text(&ctx, scene, strlen(scene), "t.yaml", NULL, 0);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     const tf_history *h = &s->problem.history;
     assert_true(h->present && h->dt == 0.1 && h->duration == 2 && h->n_seg == 2);
@@ -99,13 +100,13 @@ static void scene_history_and_its_checks(void **state)
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
         const char *sets[] = {bad[k].set};
-        s = tf_scene_load_text(scene, strlen(scene), "t.yaml", sets, 1, err, sizeof err);
+        s = tf_scene_load_text(&ctx, scene, strlen(scene), "t.yaml", sets, 1);
         if (s != NULL) {
             tf_scene_free(s);
             fail_msg("accepted %s", bad[k].set);
         }
-        if (strstr(err, bad[k].fragment) == NULL) {
-            fail_msg("%s: message '%s' lacks '%s'", bad[k].set, err, bad[k].fragment);
+        if (strstr(ctx.err, bad[k].fragment) == NULL) {
+            fail_msg("%s: message '%s' lacks '%s'", bad[k].set, ctx.err, bad[k].fragment);
         }
     }
 }

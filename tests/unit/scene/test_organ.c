@@ -71,19 +71,19 @@ static const char *base =
     "    site: {point: [0, 0, 11], radius: 3}\n"
     "outputs: {select: near-contact, radius: 8}\n";
 
-static tf_scene *load(const char *text, const char *const *sets, size_t n_sets, char *err,
-                      size_t errlen)
+static tf_scene *load(tf_ctx *ctx, const char *text, const char *const *sets, size_t n_sets)
 {
-    return tf_scene_load_text(text, strlen(text), scene_path, sets, n_sets, err, errlen);
+    return tf_scene_load_text(ctx, text, strlen(text), scene_path, sets, n_sets);
 }
 
 static void the_organ_scene_is_built_as_written(void **state)
 {
     (void)state;
-    char err[1024];
-    tf_scene *s = load(base, NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = load(&ctx, base, NULL, 0);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     const tf_problem *p = &s->problem;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
@@ -133,15 +133,16 @@ static void the_organ_scene_is_built_as_written(void **state)
 static void expect_refusal(const char *text, const char *const *sets, size_t n,
                            const char *const *parts)
 {
-    char err[1024];
-    tf_scene *s = load(text, sets, n, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = load(&ctx, text, sets, n);
     if (s != NULL) {
         tf_scene_free(s);
         fail_msg("accepted: %s", n > 0 ? sets[0] : text);
     }
     for (const char *const *p = parts; *p != NULL; ++p) {
-        if (strstr(err, *p) == NULL) {
-            fail_msg("message '%s' lacks '%s'", err, *p);
+        if (strstr(ctx.err, *p) == NULL) {
+            fail_msg("message '%s' lacks '%s'", ctx.err, *p);
         }
     }
 }
@@ -199,19 +200,18 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
 static void tetrahedral_cells_pass_the_patch_test(void **state)
 {
     (void)state;
-    char err[1024];
     const char *sets[] = {
         "reference={kind: linear, offset: [0.1, -0.2, 0.05], gradient: [0.01, 0.002, -0.003, "
         "0.004, -0.02, 0.001, 0.003, 0.002, 0.015]}",
         "fixed=[{near: {point: [0, 0, 0], distance: 20}, exact: true}]"};
-    tf_scene *s = load(base, sets, 2, err, sizeof err);
-    if (s == NULL) {
-        fail_msg("%s", err);
-    }
-    const tf_problem *p = &s->problem;
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
+    tf_scene *s = load(&ctx, base, sets, 2);
+    if (s == NULL) {
+        fail_msg("%s", ctx.err);
+    }
+    const tf_problem *p = &s->problem;
     tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     assert_non_null(sv);
     double *u = malloc(3 * p->cloud.n * sizeof *u);
@@ -245,13 +245,12 @@ static void tetrahedral_cells_pass_the_patch_test(void **state)
 static void a_linear_field_has_the_exact_energy(void **state)
 {
     (void)state;
-    char err[1024];
-    tf_scene *s = load(base, NULL, 0, err, sizeof err);
-    assert_non_null(s);
-    const tf_problem *p = &s->problem;
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_WARN;
+    tf_scene *s = load(&ctx, base, NULL, 0);
+    assert_non_null(s);
+    const tf_problem *p = &s->problem;
     tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     assert_non_null(sv);
     const double g[9] = {0.01, 0.002, -0.003, 0.004, -0.02, 0.001, 0.003, 0.002, 0.015};
@@ -294,8 +293,9 @@ static void a_linear_field_has_the_exact_energy(void **state)
 static void a_contact_site_applies_the_whole_force(void **state)
 {
     (void)state;
-    char err[1024];
-    tf_scene *s = load(base, NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = load(&ctx, base, NULL, 0);
     assert_non_null(s);
     const tf_problem *p = &s->problem;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
@@ -303,11 +303,11 @@ static void a_contact_site_applies_the_whole_force(void **state)
     double lo[3], hi[3];
     tf_problem_bounds(p, lo, hi);
     assert_int_equal(tf_shape_init(&sh, &p->cloud, lo, hi, &p->solver), 0);
-    assert_int_equal(tf_shape_use_tets(&sh, m->tm.tet, m->tm.ntet, 2, err, sizeof err), 0);
+    assert_int_equal(tf_shape_use_tets(&ctx, &sh, m->tm.tet, m->tm.ntet, 2), 0);
     size_t n3 = 3 * p->cloud.n;
     double *f = calloc(n3, sizeof *f);
     const double force[3] = {0.3, -0.2, 0.7};
-    assert_int_equal(tf_load_patch(&sh, &p->contacts[0].patch, force, f, err, sizeof err), 0);
+    assert_int_equal(tf_load_patch(&ctx, &sh, &p->contacts[0].patch, force, f), 0);
     double sum[3] = {0, 0, 0};
     for (size_t i = 0; i < p->cloud.n; ++i) {
         for (int a = 0; a < 3; ++a) {
@@ -329,19 +329,18 @@ static void a_contact_site_applies_the_whole_force(void **state)
 static void an_organ_takes_an_absolute_d_c_by_default(void **state)
 {
     (void)state;
-    char err[1024];
     const char *const sets[][1] = {{"solver.rbf.spacings=8"}, {"solver.rbf.spacings=1"}};
-    tf_scene *s = load(base, NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    tf_scene *s = load(&ctx, base, NULL, 0);
     assert_non_null(s);
     assert_true(s->problem.solver.d_c_spacings == 0 && s->problem.solver.d_c == 2.0);
     tf_scene_free(s);
     for (int k = 0; k < 2; ++k) {
-        s = load(base, sets[k], 1, err, sizeof err);
+        s = load(&ctx, base, sets[k], 1);
         assert_non_null(s);
         assert_true(s->problem.solver.d_c_spacings == (k == 0 ? 8.0 : 1.0));
-        tf_ctx ctx;
-        tf_ctx_init(&ctx);
-        ctx.level = TF_LOG_ERROR;
         tf_solver *sv = tf_solver_create(&s->problem, NULL, &ctx);
         if (k == 0) {
             assert_null(sv);

@@ -26,8 +26,9 @@ static const double *node_xyz(const tf_scene *s, uint32_t number)
 static void block48_as_the_guide_defines_it(void **state)
 {
     (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load(BLOCK48, NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, BLOCK48, NULL, 0);
     assert_non_null(s);
     assert_string_equal(s->problem.name, "block48");
     assert_int_equal(s->problem.cloud.n, 363);
@@ -76,13 +77,14 @@ static void block48_as_the_guide_defines_it(void **state)
 static void overrides_change_every_kind_of_value(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[] = {"geometry.grid=21,21,5", "contact.0.node=221", "solver.rbf.q=0.5",
                           "fixed.0.components=x,z", "solver.bc=penalty", "name=b21",
                           "fixed.4.face=z-", "outputs={select: contact}",
                           "solver.volumetric=full", "fit.tick_us=20000", "fit.histories=8",
                           "fit.heldout_histories=3", "fit.history_ticks=250"};
-    tf_scene *s = tf_scene_load(BLOCK48, sets, sizeof sets / sizeof sets[0], err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, BLOCK48, sets, sizeof sets / sizeof sets[0]);
     assert_non_null(s);
     assert_int_equal(s->fit.tick_ns, 20000000);
     assert_int_equal(s->fit.hist_train, 8);
@@ -118,11 +120,11 @@ static void expect_error(int line, const char *replacement, const char *const *f
 static void the_base_scene_is_good(void **state)
 {
     (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load_text(tf_test_scene, strlen(tf_test_scene), "t.yaml", NULL, 0,
-                                     err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load_text(&ctx, tf_test_scene, strlen(tf_test_scene), "t.yaml", NULL, 0);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     tf_scene_free(s);
 }
@@ -132,17 +134,18 @@ static void the_base_scene_is_good(void **state)
 static void material_laws_and_their_parameters(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *nh[] = {"material.law=neo-hookean"};
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", nh, 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", nh, 1);
     assert_non_null(s);
     assert_string_equal(tf_material_name(&s->problem.material), "neo-hookean");
     assert_true(tf_material_get(&s->problem.material, "E") == 0.32);
     tf_scene_free(s);
     const char *kv[] = {"material={law: kelvin, nu: 0.45, k1: 0.2, k2: 0.1, eta: 0.5, k: 3}"};
-    s = tf_scene_load("tests/solver/block48_seed.yaml", kv, 1, err, sizeof err);
+    s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", kv, 1);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     const tf_material *m = &s->problem.material;
     assert_string_equal(tf_material_name(m), "kelvin");
@@ -175,7 +178,9 @@ static void laws_and_keys_come_from_the_registry(void **state)
     }
     keys[n] = NULL;
     expect_error(6, "  E: 1\n  colour: red\n", keys);
-    char err[512], params[256];
+    char params[256];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     for (size_t i = 0; i < tf_law_count(); ++i) {
         const tf_law_ops *l = tf_law_at(i);
         /* a valid value of every parameter: the registry test's samples */
@@ -187,9 +192,9 @@ static void laws_and_keys_come_from_the_registry(void **state)
         }
         snprintf(params + used, sizeof params - used, "}");
         const char *sets[] = {params};
-        tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", sets, 1, err, sizeof err);
+        tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, 1);
         if (s == NULL) {
-            fail_msg("%s: %s", l->name, err);
+            fail_msg("%s: %s", l->name, ctx.err);
         }
         assert_ptr_equal(s->problem.material.law, l);
         for (size_t p = 0; p < l->n_params; ++p) {
@@ -288,7 +293,8 @@ static void each_bad_scene_has_its_own_message(void **state)
 static void override_errors_name_the_override(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *bad[][2] = {
         {"material.E=-3", "--set material.E=-3: material.E"},
         {"solver.gauss=x", "not a non-negative whole number"},
@@ -299,10 +305,10 @@ static void override_errors_name_the_override(void **state)
         {"material.E.x=1", "holds a value"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
-        tf_scene *s = tf_scene_load(BLOCK48, &bad[k][0], 1, err, sizeof err);
+        tf_scene *s = tf_scene_load(&ctx, BLOCK48, &bad[k][0], 1);
         assert_null(s);
-        if (strstr(err, bad[k][1]) == NULL) {
-            fail_msg("--set %s: message '%s' lacks '%s'", bad[k][0], err, bad[k][1]);
+        if (strstr(ctx.err, bad[k][1]) == NULL) {
+            fail_msg("--set %s: message '%s' lacks '%s'", bad[k][0], ctx.err, bad[k][1]);
         }
     }
 }
@@ -310,16 +316,18 @@ static void override_errors_name_the_override(void **state)
 static void a_missing_file_is_named(void **state)
 {
     (void)state;
-    char err[512];
-    assert_null(tf_scene_load("no/such/scene.yaml", NULL, 0, err, sizeof err));
-    assert_non_null(strstr(err, "no/such/scene.yaml"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_null(tf_scene_load(&ctx, "no/such/scene.yaml", NULL, 0));
+    assert_non_null(strstr(ctx.err, "no/such/scene.yaml"));
 }
 
 static void jitter_moves_only_interior_nodes(void **state)
 {
     (void)state;
-    char err[512];
-    tf_scene *s = tf_scene_load("tests/solver/patch.yaml", NULL, 0, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/patch.yaml", NULL, 0);
     assert_non_null(s);
     size_t moved = 0;
     for (unsigned k = 0; k < 6; ++k) {

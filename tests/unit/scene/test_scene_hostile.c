@@ -118,11 +118,12 @@ static void set_values_get_the_same_checks(void **state)
         {"fixed=[{face: x-}, *a]", "aliases (*a)"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
-        char err[1024];
-        tf_scene *s = tf_scene_load(BLOCK48, &bad[k][0], 1, err, sizeof err);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        tf_scene *s = tf_scene_load(&ctx, BLOCK48, &bad[k][0], 1);
         assert_null(s);
-        if (strstr(err, bad[k][1]) == NULL) {
-            fail_msg("--set %s: message '%s' lacks '%s'", bad[k][0], err, bad[k][1]);
+        if (strstr(ctx.err, bad[k][1]) == NULL) {
+            fail_msg("--set %s: message '%s' lacks '%s'", bad[k][0], ctx.err, bad[k][1]);
         }
     }
 }
@@ -132,14 +133,16 @@ static void set_values_get_the_same_checks(void **state)
 static void long_set_values(void **state)
 {
     (void)state;
-    char set[2100], err[1024];
+    char set[2100];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     int n = snprintf(set, sizeof set, "name=");
     memset(set + n, 'a', 2000);
     set[n + 2000] = '\0';
     const char *sets[] = {set};
-    assert_null(tf_scene_load(BLOCK48, sets, 1, err, sizeof err));
-    if (strstr(err, "(2005 characters): name: at most 63 characters") == NULL) {
-        fail_msg("%s", err);
+    assert_null(tf_scene_load(&ctx, BLOCK48, sets, 1));
+    if (strstr(ctx.err, "(2005 characters): name: at most 63 characters") == NULL) {
+        fail_msg("%s", ctx.err);
     }
     n = snprintf(set, sizeof set, "outputs={select: nodes, nodes: [");
     for (int k = 0; k < 300; ++k) {
@@ -147,9 +150,9 @@ static void long_set_values(void **state)
     }
     snprintf(set + n, sizeof set - (size_t)n, "]}");
     assert_true(strlen(set) > 1100);
-    tf_scene *s = tf_scene_load(BLOCK48, sets, 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, BLOCK48, sets, 1);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     assert_int_equal(s->problem.outputs.n_nodes, 300);
     tf_scene_free(s);
@@ -160,25 +163,27 @@ static void long_set_values(void **state)
 static void scene_paths_that_are_not_files(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/tf_hostile_XXXXXX", fifo[64], big[64], err[512];
+    char dir[] = "/tmp/tf_hostile_XXXXXX", fifo[64], big[64];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     assert_non_null(mkdtemp(dir));
     snprintf(fifo, sizeof fifo, "%s/fifo.yaml", dir);
     snprintf(big, sizeof big, "%s/big.yaml", dir);
     assert_int_equal(mkfifo(fifo, 0600), 0);
     alarm(20);
-    assert_null(tf_scene_load(fifo, NULL, 0, err, sizeof err));
+    assert_null(tf_scene_load(&ctx, fifo, NULL, 0));
     alarm(0);
-    assert_non_null(strstr(err, "fifo.yaml: not a regular file"));
-    assert_null(tf_scene_load(dir, NULL, 0, err, sizeof err));
-    assert_non_null(strstr(err, "not a regular file"));
-    assert_null(tf_scene_load("/dev/zero", NULL, 0, err, sizeof err));
-    assert_non_null(strstr(err, "/dev/zero: not a regular file"));
+    assert_non_null(strstr(ctx.err, "fifo.yaml: not a regular file"));
+    assert_null(tf_scene_load(&ctx, dir, NULL, 0));
+    assert_non_null(strstr(ctx.err, "not a regular file"));
+    assert_null(tf_scene_load(&ctx, "/dev/zero", NULL, 0));
+    assert_non_null(strstr(ctx.err, "/dev/zero: not a regular file"));
     int fd = open(big, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     assert_true(fd >= 0);
     assert_int_equal(ftruncate(fd, TF_SCENE_MAX_BYTES + 1), 0);
     close(fd);
-    assert_null(tf_scene_load(big, NULL, 0, err, sizeof err));
-    assert_non_null(strstr(err, "more than the 16 MiB a scene file may hold"));
+    assert_null(tf_scene_load(&ctx, big, NULL, 0));
+    assert_non_null(strstr(ctx.err, "more than the 16 MiB a scene file may hold"));
     unlink(fifo);
     unlink(big);
     rmdir(dir);

@@ -37,10 +37,11 @@
 
 static tf_scene *load(const char *path, const char *const *sets, size_t n)
 {
-    char err[1024];
-    tf_scene *s = tf_scene_load(path, sets, n, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, path, sets, n);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     return s;
 }
@@ -68,7 +69,7 @@ static void contact_compliance(const tf_scene *s, double *site, double *at_load)
     const double down[1][3] = {{0, 0, -1}}, centre[3] = {24, 24, 6};
     double *u = malloc(3 * p->cloud.n * sizeof *u), uh[3], grad[9];
     assert_int_equal(tf_solver_solve(sv, 0, down, 1, NULL, u), 0);
-    assert_int_equal(tf_solver_field(sv, u, centre, 1, uh, grad, ctx.err, sizeof ctx.err), 0);
+    assert_int_equal(tf_solver_field(&ctx, sv, u, centre, 1, uh, grad), 0);
     *at_load = uh[2];
     free(u);
     tf_cases_free(&c);
@@ -137,7 +138,7 @@ static void outputs_of(const char *grid, const double dir[3], double *at_points,
     const double f[1][3] = {{dir[0], dir[1], dir[2]}};
     assert_int_equal(tf_solver_solve(sv, 0, f, 1, NULL, u), 0);
     assert_int_equal(p->outputs.n_nodes, 121);
-    assert_int_equal(tf_solver_probe_outputs(sv, p, u, at_points, ctx.err, sizeof ctx.err), 0);
+    assert_int_equal(tf_solver_probe_outputs(&ctx, sv, p, u, at_points), 0);
     for (size_t j = 0; j < 121; ++j) {
         memcpy(nearest + 3 * j, u + 3 * (size_t)p->outputs.nodes[j], 3 * sizeof *nearest);
     }
@@ -272,22 +273,24 @@ static void point_force_by_position(void **state)
     tf_scene_free(sp);
     tf_scene_free(sq);
 
-    char err[1024];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *bad[] = {"contact.0.at=24,24,9"};
-    assert_null(tf_scene_load(AT, bad, 1, err, sizeof err));
-    assert_non_null(strstr(err, "contact.0.at: (24, 24, 9) mm lies outside the body"));
+    assert_null(tf_scene_load(&ctx, AT, bad, 1));
+    assert_non_null(strstr(ctx.err, "contact.0.at: (24, 24, 9) mm lies outside the body"));
     const char *two[] = {"contact.0.at=24,24,6", "contact.0.node=61"};
-    assert_null(tf_scene_load(AT, two, 2, err, sizeof err));
-    assert_non_null(strstr(err, "give the contact point as one of node or at"));
+    assert_null(tf_scene_load(&ctx, AT, two, 2));
+    assert_non_null(strstr(ctx.err, "give the contact point as one of node or at"));
 }
 
 /* The new keys' errors name the field and say what is wrong. */
 static void expect_error(const char *const *sets, size_t n, const char *what)
 {
-    char err[1024];
-    tf_scene *s = tf_scene_load(AT, sets, n, err, sizeof err);
-    if (s != NULL || strstr(err, what) == NULL) {
-        fail_msg("expected an error with '%s', got: %s", what, s ? "(loaded)" : err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_load(&ctx, AT, sets, n);
+    if (s != NULL || strstr(ctx.err, what) == NULL) {
+        fail_msg("expected an error with '%s', got: %s", what, s ? "(loaded)" : ctx.err);
     }
 }
 

@@ -26,10 +26,11 @@ static tf_colloc *make(const box_cloud *b, const char *law, const tf_colloc_opts
                            .volume = volumes ? b->volume : NULL,
                            .material = tf_test_material(law, "E=2.0 nu=0.3"),
                            .density = 1e-9};
-    char err[512];
-    tf_colloc *c = tf_colloc_new(&body, o, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *c = tf_colloc_new(&ctx, &body, o);
     if (c == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
     }
     assert_non_null(c);
     return c;
@@ -86,10 +87,11 @@ static void check_gradient(const box_cloud *b, const char *law, const tf_colloc_
                            .total_volume = 60,
                            .material = tf_test_material(law, "E=2.0 nu=0.3"),
                            .density = 1e-9, .mirrors = mirrors, .n_mirrors = n_mirrors};
-    char err[512];
-    tf_colloc *c = tf_colloc_new(&body, &o, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *c = tf_colloc_new(&ctx, &body, &o);
     if (c == NULL) {
-        print_error("%s\n", err);
+        print_error("%s\n", ctx.err);
     }
     assert_non_null(c);
     size_t n3 = 3 * b->n;
@@ -99,7 +101,7 @@ static void check_gradient(const box_cloud *b, const char *law, const tf_colloc_
         u[q] = tf_rng_range(&r, -0.05, 0.05); /* strains of order 0.1 */
     }
     double U;
-    assert_int_equal(tf_colloc_forces(c, u, 0, f, &U, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, f, &U), 0);
     double fmax = 0;
     for (size_t q = 0; q < n3; ++q) {
         fmax = fmax > fabs(f[q]) ? fmax : fabs(f[q]);
@@ -108,9 +110,9 @@ static void check_gradient(const box_cloud *b, const char *law, const tf_colloc_
         size_t q = tf_rng_below(&r, (uint32_t)n3);
         double h = 1e-6, save = u[q], up, um;
         u[q] = save + h;
-        assert_int_equal(tf_colloc_forces(c, u, 0, g, &up, err, sizeof err), 0);
+        assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, g, &up), 0);
         u[q] = save - h;
-        assert_int_equal(tf_colloc_forces(c, u, 0, g, &um, err, sizeof err), 0);
+        assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, g, &um), 0);
         u[q] = save;
         assert_close(f[q], -(up - um) / (2 * h), 1e-6 * fmax);
     }
@@ -160,8 +162,9 @@ static void rigid_motion_costs_nothing(void **state)
             u[3 * i + a] = Rm[3 * a] * x[0] + Rm[3 * a + 1] * x[1] + Rm[3 * a + 2] * x[2] - x[a] + 2;
         }
     }
-    char err[256];
-    assert_int_equal(tf_colloc_forces(c, u, 0, f, &U, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, f, &U), 0);
     for (size_t q = 0; q < 3 * b.n; ++q) {
         assert_close(f[q], 0, 1e-12); /* E h^2 ~ 2: forces of a unit strain ~ 1 */
     }
@@ -170,7 +173,7 @@ static void rigid_motion_costs_nothing(void **state)
     for (size_t q = 0; q < 3 * b.n; ++q) {
         u[q] += 0.01 * b.X[q];
     }
-    assert_int_equal(tf_colloc_forces(c, u, 0, f, &U, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, f, &U), 0);
     assert_true(U > 1e-4);
     free(u);
     free(f);
@@ -202,9 +205,9 @@ static void mirror_images_equal_the_whole_body(void **state)
     bq.total_volume = 48;
     bq.mirrors = m;
     bq.n_mirrors = 2;
-    char err[512];
-    tf_colloc *cw = tf_colloc_new(&bw, &o, err, sizeof err), *cq = tf_colloc_new(&bq, &o, err,
-                                                                                   sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *cw = tf_colloc_new(&ctx, &bw, &o), *cq = tf_colloc_new(&ctx, &bq, &o);
     assert_non_null(cw);
     assert_non_null(cq);
     assert_true(tf_colloc_ghosts(cq) > 0);
@@ -222,8 +225,8 @@ static void mirror_images_equal_the_whole_body(void **state)
             u[3 * i + 2] = -0.1 * exp(-r2 / 5) * (1 + x[2] / 3) + 0.01 * x[2];
         }
     }
-    assert_int_equal(tf_colloc_forces(cw, uw, 0, fw, NULL, err, sizeof err), 0);
-    assert_int_equal(tf_colloc_forces(cq, uq, 0, fq, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_forces(&ctx, cw, uw, 0, fw, NULL), 0);
+    assert_int_equal(tf_colloc_forces(&ctx, cq, uq, 0, fq, NULL), 0);
     double fmax = 0;
     for (size_t q = 0; q < 3 * whole.n; ++q) {
         fmax = fmax > fabs(fw[q]) ? fmax : fabs(fw[q]);
@@ -263,8 +266,9 @@ static void seed_volumes_sum_to_the_body(void **state)
     tf_colloc_body body = {.n = b.n, .X = b.X, .fixed = b.fixed, .total_volume = 60,
                            .material = tf_test_material("svk", "E=2 nu=0.3"),
                            .density = 1e-9};
-    char err[256];
-    tf_colloc *c = tf_colloc_new(&body, NULL, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *c = tf_colloc_new(&ctx, &body, NULL);
     assert_non_null(c);
     const double *v = tf_colloc_volumes(c), *m = tf_colloc_masses(c);
     double sum = 0;
@@ -293,19 +297,20 @@ static void flat_supports_are_refused(void **state)
     tf_colloc_body body = {.n = b.n, .X = b.X, .volume = b.volume,
                            .material = tf_test_material("svk", "E=2 nu=0.3"),
                            .density = 1e-9};
-    char err[512];
-    assert_null(tf_colloc_new(&body, NULL, err, sizeof err));
-    assert_non_null(strstr(err, "particle 0 at (0, 0, 0) mm"));
-    assert_non_null(strstr(err, "moment matrix"));
-    assert_non_null(strstr(err, "neighbours"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_null(tf_colloc_new(&ctx, &body, NULL));
+    assert_non_null(strstr(ctx.err, "particle 0 at (0, 0, 0) mm"));
+    assert_non_null(strstr(ctx.err, "moment matrix"));
+    assert_non_null(strstr(ctx.err, "neighbours"));
     tf_colloc_opts o;
     tf_colloc_defaults(&o);
     o.neighbours = 2;
-    assert_null(tf_colloc_new(&body, &o, err, sizeof err));
-    assert_non_null(strstr(err, "neighbours = 2"));
+    assert_null(tf_colloc_new(&ctx, &body, &o));
+    assert_non_null(strstr(ctx.err, "neighbours = 2"));
     tf_material_set(&body.material, "nu", 0.5);
-    assert_null(tf_colloc_new(&body, NULL, err, sizeof err));
-    assert_non_null(strstr(err, "material.nu"));
+    assert_null(tf_colloc_new(&ctx, &body, NULL));
+    assert_non_null(strstr(ctx.err, "material.nu"));
     box_cloud_free(&b);
 }
 

@@ -31,8 +31,9 @@ static tf_colloc *block(box_cloud *b, const char *law, double jitter)
     tf_colloc_body body = {.n = b->n, .X = b->X, .fixed = b->fixed, .volume = b->volume,
                            .material = tf_test_material(law, "E=0.5 nu=0.45"),
                            .density = 1e-9};
-    char err[512];
-    tf_colloc *c = tf_colloc_new(&body, NULL, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_colloc *c = tf_colloc_new(&ctx, &body, NULL);
     assert_non_null(c);
     return c;
 }
@@ -52,11 +53,12 @@ static void stable_step_is_the_boundary(void **state)
 {
     (void)state;
     box_cloud b;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double growth[2];
     for (int above = 0; above < 2; ++above) {
         tf_colloc *c = block(&b, "linear", 0.2);
-        double dt = tf_colloc_critical_dt(c, err, sizeof err);
+        double dt = tf_colloc_critical_dt(&ctx, c);
         assert_true(dt > 0);
         double ratio = dt / tf_colloc_wave_dt(c);
         assert_true(ratio > 0.3 && ratio < 3); /* the same order as the wave bound */
@@ -65,11 +67,11 @@ static void stable_step_is_the_boundary(void **state)
         for (size_t q = 0; q < 3 * b.n; ++q) {
             v[q] = b.fixed[q / 3] ? 0 : tf_rng_range(&r, -1e-3, 1e-3);
         }
-        int rc = tf_colloc_run(c, dt * (above ? 1.02 : 0.98), 2000, 0, err, sizeof err);
+        int rc = tf_colloc_run(&ctx, c, dt * (above ? 1.02 : 0.98), 2000, 0);
         double u = max_abs(tf_colloc_u(c), 3 * b.n);
         growth[above] = rc != 0 ? INFINITY : u / (1e-3 * dt);
         if (rc != 0) {
-            assert_non_null(strstr(err, "no longer finite"));
+            assert_non_null(strstr(ctx.err, "no longer finite"));
         }
         tf_colloc_free(c);
         box_cloud_free(&b);
@@ -84,9 +86,10 @@ static void undamped_motion_keeps_its_energy(void **state)
 {
     (void)state;
     box_cloud b;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_colloc *c = block(&b, "svk", 0.2);
-    double dt = 0.3 * tf_colloc_critical_dt(c, err, sizeof err);
+    double dt = 0.3 * tf_colloc_critical_dt(&ctx, c);
     double *u = tf_colloc_u(c), *v = tf_colloc_v(c), *f = malloc(3 * b.n * sizeof *f);
     const double *m = tf_colloc_masses(c);
     for (size_t i = 0; i < b.n; ++i) { /* a smooth initial bend */
@@ -97,12 +100,12 @@ static void undamped_motion_keeps_its_energy(void **state)
     double e[2];
     for (int k = 0; k < 2; ++k) {
         double U, T = 0;
-        assert_int_equal(tf_colloc_forces(c, u, 0, f, &U, err, sizeof err), 0);
+        assert_int_equal(tf_colloc_forces(&ctx, c, u, 0, f, &U), 0);
         for (size_t q = 0; q < 3 * b.n; ++q) {
             T += 0.5 * m[q / 3] * v[q] * v[q];
         }
         e[k] = U + T;
-        assert_int_equal(tf_colloc_run(c, dt, 1500, 0, err, sizeof err), 0);
+        assert_int_equal(tf_colloc_run(&ctx, c, dt, 1500, 0), 0);
     }
     assert_true(e[0] > 0);
     assert_close(e[1], e[0], 0.02 * e[0]); /* T at half steps: O(dt^2) offset */
@@ -117,7 +120,8 @@ static void same_bits_for_any_thread_count(void **state)
 {
     (void)state;
     box_cloud b;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     double *ref = NULL;
     double fref = 0;
     for (int threads = 1; threads <= 3; ++threads) {
@@ -125,15 +129,15 @@ static void same_bits_for_any_thread_count(void **state)
         tf_colloc *c = block(&b, "svk", 0.2);
         tf_colloc_sphere s = {.centre = {3, 2.5, 5}, .dir = {0, 0, -1}, .radius = 5,
                               .drive = TF_COLLOC_INDENT};
-        assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);
+        assert_int_equal(tf_colloc_set_sphere(&ctx, c, &s), 0);
         tf_colloc_set_travel(c, 0.2);
         tf_colloc_fext(c)[3 * box_cloud_at(&b, 6, 5, 4)] = 1e-3;
-        double dt = 0.5 * tf_colloc_critical_dt(c, err, sizeof err);
-        assert_int_equal(tf_colloc_run(c, dt, 50, 100, err, sizeof err), 0);
+        double dt = 0.5 * tf_colloc_critical_dt(&ctx, c);
+        assert_int_equal(tf_colloc_run(&ctx, c, dt, 50, 100), 0);
         tf_colloc_relax_opts o;
         tf_colloc_relax_defaults(&o);
         o.max_steps = 200;
-        assert_true(tf_colloc_relax(c, &o, NULL, err, sizeof err) >= 0);
+        assert_true(tf_colloc_relax(&ctx, c, &o, NULL) >= 0);
         const double *u = tf_colloc_u(c);
         if (ref == NULL) {
             ref = malloc(3 * b.n * sizeof *ref);
@@ -157,7 +161,8 @@ static void relaxation_balances_the_load(void **state)
 {
     (void)state;
     box_cloud b;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_colloc *c = block(&b, "linear", 0.2);
     double *fext = tf_colloc_fext(c), load = 0;
     for (size_t i = 0; i < b.n; ++i) {
@@ -171,10 +176,10 @@ static void relaxation_balances_the_load(void **state)
     tf_colloc_relax_defaults(&o);
     o.tol = 1e-8;
     tf_colloc_relax_stats st;
-    assert_int_equal(tf_colloc_relax(c, &o, &st, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_relax(&ctx, c, &o, &st), 0);
     assert_true(st.converged && st.residual <= 1e-8 && st.steps > 10);
     double *f = malloc(3 * b.n * sizeof *f), react = 0, resid = 0;
-    assert_int_equal(tf_colloc_forces(c, tf_colloc_u(c), 0, f, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_forces(&ctx, c, tf_colloc_u(c), 0, f, NULL), 0);
     for (size_t i = 0; i < b.n; ++i) {
         if (b.fixed[i]) {
             react += f[3 * i] + fext[3 * i]; /* minus the support's force */
@@ -196,31 +201,32 @@ static void sphere_drives_agree(void **state)
 {
     (void)state;
     box_cloud b;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     tf_colloc *c = block(&b, "svk", 0.2);
     tf_colloc_sphere s = {.centre = {3, 2.5, 8}, .dir = {0, 0, -1}, .radius = 8,
                           .drive = TF_COLLOC_INDENT};
-    assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_set_sphere(&ctx, c, &s), 0);
     tf_colloc_set_travel(c, 0.3);
     tf_colloc_relax_opts o;
     tf_colloc_relax_defaults(&o);
     o.tol = 1e-9;
-    assert_int_equal(tf_colloc_relax(c, &o, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_relax(&ctx, c, &o, NULL), 0);
     double F = tf_colloc_contact_force(c);
     assert_true(F > 0 && tf_colloc_contacts(c) >= 3);
     s.drive = TF_COLLOC_FORCE;
     s.force = F;
-    assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_set_sphere(&ctx, c, &s), 0);
     memset(tf_colloc_u(c), 0, 3 * b.n * sizeof(double));
-    assert_int_equal(tf_colloc_relax(c, &o, NULL, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_relax(&ctx, c, &o, NULL), 0);
     assert_close(tf_colloc_travel(c), 0.3, 1e-5);
     /* Dynamics at the same indentation, damped until at rest. */
     s.drive = TF_COLLOC_INDENT;
-    assert_int_equal(tf_colloc_set_sphere(c, &s, err, sizeof err), 0);
+    assert_int_equal(tf_colloc_set_sphere(&ctx, c, &s), 0);
     tf_colloc_set_travel(c, 0.3);
     memset(tf_colloc_u(c), 0, 3 * b.n * sizeof(double));
-    double dt = 0.9 * tf_colloc_critical_dt(c, err, sizeof err);
-    assert_int_equal(tf_colloc_run(c, dt, 20000, 0.02 / dt, err, sizeof err), 0);
+    double dt = 0.9 * tf_colloc_critical_dt(&ctx, c);
+    assert_int_equal(tf_colloc_run(&ctx, c, dt, 20000, 0.02 / dt), 0);
     assert_close(tf_colloc_contact_force(c), F, 1e-4 * F);
     tf_colloc_free(c);
     box_cloud_free(&b);

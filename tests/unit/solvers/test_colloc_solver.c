@@ -35,15 +35,16 @@ typedef struct run {
 
 static run *open_block48(int threads, const char *extra)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     run *r = calloc(1, sizeof *r);
     tf_ctx_init(&r->ctx);
     r->ctx.level = TF_LOG_ERROR;
     r->ctx.threads = threads;
     const char *sets[2] = {"solver.method=mls-collocation", extra};
-    r->scene = tf_scene_load(BLOCK48, sets, extra ? 2 : 1, err, sizeof err);
+    r->scene = tf_scene_load(&ctx, BLOCK48, sets, extra ? 2 : 1);
     if (r->scene == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     r->solver = tf_solver_create(&r->scene->problem, NULL, &r->ctx);
     if (r->solver == NULL) {
@@ -144,16 +145,17 @@ static void same_bits_on_one_and_two_threads(void **state)
 static void bad_keys_are_named(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *bad[][2] = {{"solver.collocation.density=0", "solver.collocation.density"},
                             {"solver.collocation.neighbours=2", "solver.collocation.neighbours"},
                             {"solver.collocation.support=0.5", "solver.collocation.support"},
                             {"solver.collocation.tolerance=2", "solver.collocation.tolerance"}};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
         const char *sets[2] = {"solver.method=mls-collocation", bad[k][0]};
-        tf_scene *s = tf_scene_load(BLOCK48, sets, 2, err, sizeof err);
+        tf_scene *s = tf_scene_load(&ctx, BLOCK48, sets, 2);
         assert_null(s);
-        assert_non_null(strstr(err, bad[k][1]));
+        assert_non_null(strstr(ctx.err, bad[k][1]));
     }
 }
 

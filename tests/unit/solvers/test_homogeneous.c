@@ -31,14 +31,15 @@ typedef struct cube {
 static cube *open_cube(const char *method, const char *mat, int stretch, double lam, double force,
                        const char *set)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     cube *c = calloc(1, sizeof *c);
     tf_ctx_init(&c->ctx);
     c->ctx.level = TF_LOG_ERROR;
     const char *sets[] = {set};
-    c->s = homog_scene(method, mat, stretch, lam, force, sets, set ? 1 : 0, err, sizeof err);
+    c->s = homog_scene(&ctx, method, mat, stretch, lam, force, sets, set ? 1 : 0);
     if (c->s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     c->sv = tf_solver_create(&c->s->problem, NULL, &c->ctx);
     if (c->sv == NULL) {

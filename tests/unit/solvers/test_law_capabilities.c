@@ -68,21 +68,20 @@ typedef struct solved {
  * steps when steps > 1. */
 static solved solve(const char *const *sets, size_t n_sets, const tf_law_ops *law, int steps)
 {
-    char err[512];
     const char *all[8] = {SMALL_GRID, SMALL_NODE};
     for (size_t k = 0; k < n_sets; ++k) {
         all[2 + k] = sets[k];
     }
-    tf_scene *sc = tf_scene_load(BLOCK48, all, 2 + n_sets, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_ERROR;
+    tf_scene *sc = tf_scene_load(&ctx, BLOCK48, all, 2 + n_sets);
     if (sc == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     if (law != NULL) {
         sc->problem.material.law = law; /* the same parameters, in the same order */
     }
-    tf_ctx ctx;
-    tf_ctx_init(&ctx);
-    ctx.level = TF_LOG_ERROR;
     tf_solver *s = tf_solver_create(&sc->problem, NULL, &ctx);
     if (s == NULL) {
         fail_msg("%s", ctx.err);

@@ -42,13 +42,14 @@ typedef struct run {
 
 static run *open_run(const char *const *sets, size_t n)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     run *r = calloc(1, sizeof *r);
     tf_ctx_init(&r->ctx);
     r->ctx.level = TF_LOG_ERROR;
-    r->scene = tf_scene_load(BLOCK48, sets, n, err, sizeof err);
+    r->scene = tf_scene_load(&ctx, BLOCK48, sets, n);
     if (r->scene == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     r->sv = tf_solver_create(&r->scene->problem, NULL, &r->ctx);
     if (r->sv == NULL) {
@@ -399,10 +400,11 @@ static void the_factor_holds_no_fixed_couplings(void **state)
     tf_csc kr = {0};
     assert_int_equal(tf_constraints_reduce(&s->bc, &s->k, &kr), 0);
     tf_chol_info full = {0}, reduced = {0}, used = {0};
-    char err[256];
-    tf_chol *cf = tf_chol_analyse(&s->k, TF_ORDER_AMD, 0, &full, err, sizeof err);
-    tf_chol *cr = tf_chol_analyse(&kr, TF_ORDER_AMD, 0, &reduced, err, sizeof err);
-    tf_chol *cu = tf_chol_analyse(kf, TF_ORDER_AMD, 0, &used, err, sizeof err);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_chol *cf = tf_chol_analyse(&ctx, &s->k, TF_ORDER_AMD, 0, &full);
+    tf_chol *cr = tf_chol_analyse(&ctx, &kr, TF_ORDER_AMD, 0, &reduced);
+    tf_chol *cu = tf_chol_analyse(&ctx, kf, TF_ORDER_AMD, 0, &used);
     assert_non_null(cf);
     assert_non_null(cr);
     assert_non_null(cu);
@@ -463,9 +465,9 @@ static void the_patch_update_factorises_the_patched_matrix(void **state)
         kh[e] += s->k.x[e];                          /* + the patch cells at d1 */
     }
     double *x0 = malloc(n3 * sizeof *x0), differ = 0, big = 0;
-    assert_int_equal(tf_chol_solve(s->chol, b, x0, 1, r->ctx.err, sizeof r->ctx.err), 0);
+    assert_int_equal(tf_chol_solve(&r->ctx, s->chol, b, x0, 1), 0);
     assert_int_equal(nl_patch_update(s), 0);
-    assert_int_equal(tf_chol_solve(s->chol, b, x, 1, r->ctx.err, sizeof r->ctx.err), 0);
+    assert_int_equal(tf_chol_solve(&r->ctx, s->chol, b, x, 1), 0);
     for (size_t i = 0; i < n3; ++i) { /* the patch made a difference: K0's factor is not it */
         differ = fmax(differ, fabs(x[i] - x0[i]));
         big = fmax(big, fabs(x[i]));
@@ -488,7 +490,7 @@ static void the_patch_update_factorises_the_patched_matrix(void **state)
         fail_msg("patched factor: |K x - b| / |b| = %.3g", sqrt(num / den));
     }
     assert_int_equal(nl_factor(s), 0); /* a full factorisation of K0 + dK: the same x */
-    assert_int_equal(tf_chol_solve(s->chol, b, y, 1, r->ctx.err, sizeof r->ctx.err), 0);
+    assert_int_equal(tf_chol_solve(&r->ctx, s->chol, b, y, 1), 0);
     for (size_t i = 0; i < n3; ++i) {
         same = fmax(same, fabs(x[i] - y[i]));
     }
@@ -515,12 +517,11 @@ static void the_patch_update_factorises_the_patched_matrix(void **state)
 static void inversion_and_divergence_are_named(void **state)
 {
     (void)state;
-    char err[512];
     tf_ctx ctx;
     tf_ctx_init(&ctx);
     ctx.level = TF_LOG_ERROR;
-    tf_scene *cube = tf_scene_load_text(crushed_cube, strlen(crushed_cube), "cube.yaml", NULL, 0,
-                                        err, sizeof err);
+    tf_scene *cube =
+        tf_scene_load_text(&ctx, crushed_cube, strlen(crushed_cube), "cube.yaml", NULL, 0);
     assert_non_null(cube);
     tf_solver *sv = tf_solver_create(&cube->problem, NULL, &ctx);
     assert_non_null(sv);

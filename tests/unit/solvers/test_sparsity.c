@@ -15,12 +15,12 @@
 #include "solvers/sparsity.h"
 
 /* Two cells over nodes {0, 1, 2} and {1, 2, 3}, with n_nodes nodes. */
-static int pattern(size_t n_nodes, tf_nodesets *blocks, tf_csc *k, char *err, size_t errlen)
+static int pattern(tf_ctx *ctx, size_t n_nodes, tf_nodesets *blocks, tf_csc *k)
 {
     size_t ptr[] = {0, 3, 6};
     uint32_t nodes[] = {0, 1, 2, 1, 2, 3};
     tf_nodesets cells = {2, ptr, nodes};
-    return tf_sparsity(&cells, n_nodes, 1, blocks, k, err, errlen);
+    return tf_sparsity(ctx, &cells, n_nodes, 1, blocks, k);
 }
 
 static void every_node_covered(void **state)
@@ -28,8 +28,9 @@ static void every_node_covered(void **state)
     (void)state;
     tf_nodesets blocks = {0};
     tf_csc k;
-    char err[256] = "";
-    assert_int_equal(pattern(4, &blocks, &k, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(pattern(&ctx, 4, &blocks, &k), 0);
     assert_int_equal(k.n, 12);
     /* node 0: 6 + 9 * 2 (nodes 1, 2); 1: 6 + 9 * 2 (2, 3); 2: 6 + 9; 3: 6 */
     assert_int_equal(k.nnz, 24 + 24 + 15 + 6);
@@ -43,9 +44,10 @@ static void uncovered_node_is_named(void **state)
     (void)state;
     tf_nodesets blocks = {0};
     tf_csc k;
-    char err[256] = "";
-    assert_int_equal(pattern(5, &blocks, &k, err, sizeof err), -1);
-    assert_non_null(strstr(err, "node 5 lies in no integration cell"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(pattern(&ctx, 5, &blocks, &k), -1);
+    assert_non_null(strstr(ctx.err, "node 5 lies in no integration cell"));
     tf_csc_free(&k);
     tf_nodesets_free(&blocks);
 }

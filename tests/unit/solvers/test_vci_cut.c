@@ -41,11 +41,12 @@ static int cmp_u32(const void *a, const void *b)
 static void vci_across_the_slit(void **state)
 {
     (void)state;
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     const char *sets[] = {"geometry.grid=11,11,11"};
-    tf_scene *s = tf_scene_load(PATCH, sets, 1, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, PATCH, sets, 1);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     const tf_problem *p = &s->problem;
     tf_shape sh;
@@ -53,7 +54,7 @@ static void vci_across_the_slit(void **state)
     tf_problem_bounds(p, lo, hi);
     assert_int_equal(tf_shape_init(&sh, &p->cloud, lo, hi, &p->solver), 0);
     assert_int_equal(sh.centre, TF_SUPPORT_CELL);
-    assert_int_equal(tf_shape_set_cuts(&sh, &SLIT, 1, err, sizeof err), 0);
+    assert_int_equal(tf_shape_set_cuts(&ctx, &sh, &SLIT, 1), 0);
     const double at[3] = {4.5, 1.5, 7.5};
     size_t cell = tf_shape_cell(&sh, at), n = p->cloud.n, m = 0;
     double centre[3], half[3];

@@ -35,13 +35,12 @@ static void quiet(tf_ctx *ctx)
 static tf_verify_row level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
                            unsigned k)
 {
-    char err[512];
     unsigned label;
     tf_ctx ctx;
     quiet(&ctx);
-    tf_scene *s = tf_scene_level(path, sets, n_sets, vary, k, &label, err, sizeof err);
+    tf_scene *s = tf_scene_level(&ctx, path, sets, n_sets, vary, k, &label);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     tf_verify_row row;
     if (tf_verify_problem(&s->problem, label, &ctx, &row) != 0) {
@@ -104,12 +103,13 @@ typedef struct efg_run {
 
 static efg_run *run_block48(const char *const *sets, size_t n_sets)
 {
-    char err[512];
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
     efg_run *r = calloc(1, sizeof *r);
     quiet(&r->ctx);
-    r->s = tf_scene_load("tests/solver/block48_seed.yaml", sets, n_sets, err, sizeof err);
+    r->s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", sets, n_sets);
     if (r->s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     r->sv = tf_solver_create(&r->s->problem, NULL, &r->ctx);
     if (r->sv == NULL) {
@@ -141,8 +141,9 @@ static void efg_returns_displacements_at_the_nodes(void **state)
     const tf_cloud *c = &r->s->problem.cloud;
     size_t n3 = 3 * c->n;
     double *uh = malloc(n3 * sizeof *uh), *g = malloc(3 * n3 * sizeof *g), scale = 0, worst = 0;
-    char err[256];
-    assert_int_equal(tf_solver_field(r->sv, r->u, c->xyz, c->n, uh, g, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_solver_field(&ctx, r->sv, r->u, c->xyz, c->n, uh, g), 0);
     for (size_t d = 0; d < n3; ++d) {
         scale = fmax(scale, fabs(r->u[d]));
         worst = fmax(worst, fabs(uh[d] - r->u[d]));
@@ -187,16 +188,15 @@ static void penalty_error_falls_with_its_factor(void **state)
 static void scene_refuses_what_efg_cannot_do(void **state)
 {
     (void)state;
-    char err[512];
     const char *elim[] = {"solver.method=efg-galerkin", "solver.bc=elimination"};
-    assert_null(tf_scene_load("tests/solver/block48_seed.yaml", elim, 2, err, sizeof err));
-    assert_non_null(strstr(err, "solver.bc"));
-    const char *box[] = {"solver.method=efg-galerkin",
-                         "fixed.4={box: {min: [0, 0, 0], max: [1, 1, 1]}}"};
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", box, 2, err, sizeof err);
-    assert_non_null(s);
     tf_ctx ctx;
     quiet(&ctx);
+    assert_null(tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", elim, 2));
+    assert_non_null(strstr(ctx.err, "solver.bc"));
+    const char *box[] = {"solver.method=efg-galerkin",
+                         "fixed.4={box: {min: [0, 0, 0], max: [1, 1, 1]}}"};
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", box, 2);
+    assert_non_null(s);
     assert_null(tf_solver_create(&s->problem, NULL, &ctx));
     assert_non_null(strstr(ctx.err, "fixed region 4 is not a face"));
     tf_scene_free(s);

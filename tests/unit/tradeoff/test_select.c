@@ -39,8 +39,9 @@ static tf_candidate cand(const char *family, double us, double err, int passive)
 static tf_mcu m4f(void)
 {
     tf_mcu m;
-    char err[128];
-    assert_int_equal(tf_mcu_parse("cortex-m4f@168", &m, err, sizeof err), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_mcu_parse(&ctx, "cortex-m4f@168", &m), 0);
     return m;
 }
 
@@ -52,8 +53,9 @@ static void contact_within_the_tolerance_is_the_cheapest_there(void **state)
     tf_sweep sw = {.c = c, .n = 4, .cap = 4};
     tf_mcu m = m4f();
     tf_selection sel;
-    char why[512];
-    assert_int_equal(tf_select(&sw, &m, 50, NAN, 1e-4, &sel, why, sizeof why), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 1e-4, &sel), 0);
     assert_ptr_equal(sel.contact, &c[1]); /* c[2] is cheaper but not passive */
     assert_true(sel.contact_within_tol);
     assert_ptr_equal(sel.forward, &c[3]);
@@ -69,17 +71,18 @@ static void no_contact_within_the_tolerance_takes_the_most_accurate_passive(void
     tf_sweep sw = {.c = c, .n = 6, .cap = 6};
     tf_mcu m = m4f();
     tf_selection sel;
-    char why[512];
-    assert_int_equal(tf_select(&sw, &m, 50, NAN, 3e-4, &sel, why, sizeof why), 0);
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 3e-4, &sel), 0);
     assert_ptr_equal(sel.contact, &c[1]);
     assert_false(sel.contact_within_tol);
     /* the budget counts the contact: 40.2 + 10.9 > 50, 35.3 + 10.9 fits */
     assert_ptr_equal(sel.forward, &c[3]);
-    assert_int_equal(tf_select(&sw, &m, 52, NAN, 3e-4, &sel, why, sizeof why), 0);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 52, NAN, 3e-4, &sel), 0);
     assert_ptr_equal(sel.forward, &c[4]);
     /* nothing fits: refused, with the best achievable on each axis */
-    assert_int_equal(tf_select(&sw, &m, 20, NAN, 3e-4, &sel, why, sizeof why), -1);
-    assert_non_null(strstr(why, "no model fits a 20 us budget"));
+    assert_int_equal(tf_select(&ctx, &sw, &m, 20, NAN, 3e-4, &sel), -1);
+    assert_non_null(strstr(ctx.err, "no model fits a 20 us budget"));
 }
 
 static void no_passive_contact_is_refused(void **state)
@@ -89,9 +92,10 @@ static void no_passive_contact_is_refused(void **state)
     tf_sweep sw = {.c = c, .n = 2, .cap = 2};
     tf_mcu m = m4f();
     tf_selection sel;
-    char why[512];
-    assert_int_equal(tf_select(&sw, &m, 50, NAN, 1e-4, &sel, why, sizeof why), -1);
-    assert_non_null(strstr(why, "no passive contact inverse"));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 1e-4, &sel), -1);
+    assert_non_null(strstr(ctx.err, "no passive contact inverse"));
 }
 
 int main(void)

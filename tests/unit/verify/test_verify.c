@@ -33,13 +33,12 @@ static void quiet(tf_ctx *ctx)
 static tf_verify_row level(const char *path, const char *const *sets, size_t n_sets, tf_vary vary,
                            unsigned k)
 {
-    char err[512];
     unsigned label;
     tf_ctx ctx;
     quiet(&ctx);
-    tf_scene *s = tf_scene_level(path, sets, n_sets, vary, k, &label, err, sizeof err);
+    tf_scene *s = tf_scene_level(&ctx, path, sets, n_sets, vary, k, &label);
     if (s == NULL) {
-        fail_msg("%s", err);
+        fail_msg("%s", ctx.err);
     }
     tf_verify_row row;
     if (tf_verify_problem(&s->problem, label, &ctx, &row) != 0) {
@@ -95,10 +94,9 @@ static void patch_error_falls_with_the_gauss_order(void **state)
 static void exact_nodal_values_have_no_error(void **state)
 {
     (void)state;
-    char err[512];
     tf_ctx ctx;
     quiet(&ctx);
-    tf_scene *s = tf_scene_load("tests/solver/patch.yaml", NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/patch.yaml", NULL, 0);
     assert_non_null(s);
     const tf_problem *p = &s->problem;
     tf_solver *sv = tf_solver_create(p, NULL, &ctx);
@@ -123,10 +121,9 @@ static void exact_nodal_values_have_no_error(void **state)
 static void no_reference_no_verification(void **state)
 {
     (void)state;
-    char err[512];
     tf_ctx ctx;
     quiet(&ctx);
-    tf_scene *s = tf_scene_load("tests/solver/block48_seed.yaml", NULL, 0, err, sizeof err);
+    tf_scene *s = tf_scene_load(&ctx, "tests/solver/block48_seed.yaml", NULL, 0);
     assert_non_null(s);
     tf_verify_row row;
     assert_int_equal(tf_verify_problem(&s->problem, 0, &ctx, &row), -2);
