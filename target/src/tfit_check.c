@@ -13,7 +13,7 @@
  * far enough under FLT_MAX (2^128) that rounding cannot matter.  With no Inf
  * reachable, no NaN is reachable either (no 0*Inf, Inf-Inf; divisors >= 1).
  */
-#include "tfit_internal.h"
+#include "tfit_region.h"
 
 #define BOUND_LIMIT 0x1p100f
 #define X0_LIMIT 0x1p64f
@@ -242,6 +242,9 @@ static int resonant_ok(const tfit_model *m)
 
 static int range_ok(const tfit_model *m)
 {
+    if (m->family == TFIT_FAMILY_REGION || m->family == TFIT_FAMILY_REGION_SURFACE) {
+        return tfit_region_range_ok(m); /* their first 12 floats are a chart */
+    }
     if (!map_ok(m->coef)) {
         return 0;
     }
@@ -319,7 +322,7 @@ static void point(const tfit_model *m, const float g[3], uint32_t keep, uint32_t
  * linear congruential sequence gives three signed 24-bit integers, exact as
  * floats, times 2^77 (exact): beyond 2^64, so §4 scales them, and beyond any
  * envelope, so the Newton step runs. */
-static uint32_t far_input(uint32_t state, float in[3])
+uint32_t tfit_far_input(uint32_t state, float in[3])
 {
     for (uint32_t i = 0u; i < 3u; ++i) {
         state = state * 1664525u + 1013904223u;
@@ -396,7 +399,7 @@ static tfit_status self_test(const tfit_model *m)
     }
     uint32_t state = 1u, far = 0xffffffffu;
     for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_FAR; ++k) {
-        state = far_input(state, in);
+        state = tfit_far_input(state, in);
         (void)tfit_input_map(m->coef, in, g, &bad);
         for (uint32_t i = 0u; i < 3u; ++i) {
             far = tfit_crc32_word(far, tfit_bits(g[i]));
@@ -418,7 +421,8 @@ tfit_status tfit_model_check(const tfit_model *m)
     if (m->api_version != (uint32_t)TFIT_API_VERSION) {
         return TFIT_ERR_VERSION;
     }
-    if (m->family < (uint32_t)TFIT_FAMILY_NODAL || m->family > (uint32_t)TFIT_FAMILY_MODAL_Q15) {
+    if (m->family < (uint32_t)TFIT_FAMILY_NODAL ||
+        m->family > (uint32_t)TFIT_FAMILY_REGION_SURFACE) {
         return TFIT_ERR_FAMILY;
     }
     /* Sizes before the CRC: the CRC reads n_coef floats. */
@@ -431,6 +435,9 @@ tfit_status tfit_model_check(const tfit_model *m)
     }
     if (!range_ok(m)) {
         return TFIT_ERR_RANGE;
+    }
+    if (m->family == TFIT_FAMILY_REGION || m->family == TFIT_FAMILY_REGION_SURFACE) {
+        return tfit_region_self_test(m);
     }
     return self_test(m);
 }

@@ -86,6 +86,31 @@ static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
     return a ^ ((a ^ b) & tfit_mask(a < b));
 }
 
+static inline uint32_t tfit_umin(uint32_t a, uint32_t b)
+{
+    return a ^ ((a ^ b) & tfit_mask(b < a));
+}
+
+/* 1/sqrt(s) for a positive normal float s: a start from the bit pattern of
+ * s (relative error <= 3.5 % for every positive float), then three Newton
+ * steps y <- (y/2)(3 - s y y), each squaring the error (header-format.md §4
+ * step 8). */
+static inline float tfit_rsqrt_step(float s, float y)
+{
+    float t = s * y;
+    t = t * y;
+    t = 3.0f - t;
+    return (0.5f * y) * t;
+}
+
+static inline float tfit_rsqrt(float s)
+{
+    float y = tfit_float(0x5f3759dfu - (tfit_bits(s) >> 1));
+    y = tfit_rsqrt_step(s, y);
+    y = tfit_rsqrt_step(s, y);
+    return tfit_rsqrt_step(s, y);
+}
+
 /* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x), by
  * Clenshaw's recurrence (docs/header-format.md §5.4):
  *   h = x + x; b_{n+1} = b_{n+2} = +0;
@@ -197,6 +222,12 @@ void tfit_q15_rows_asm(const float *rows, const uint32_t c[5], uint32_t n_out, f
 #define TFIT_Q15_ASM 0
 #endif
 
+/* Steps 6-9 of the input map alone (header-format.md §4): v onto the unit
+ * ball, into out; returns an all-ones mask when it was projected, and
+ * *factor = 2^-e(m) y (step 6's power of two times step 9's factor, or 1),
+ * so that out_i = v_i factor (rounded once either way).  Any finite v. */
+uint32_t tfit_unit_ball(const float v[3], float out[3], float *factor);
+
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
  * mask when the input was projected; *bad is all ones when the input held a
  * NaN or Inf (g is then computed from a zero input). */
@@ -265,6 +296,11 @@ void tfit_resonant_static(const tfit_model *m, tfit_model *v);
 
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
+
+/* Far input k of the self-test (tfit_check.c, header-format.md §8): the
+ * next three signed 24-bit integers of a linear congruential sequence,
+ * times 2^77 (exact), into in; returns the sequence's new state. */
+uint32_t tfit_far_input(uint32_t state, float in[3]);
 
 /* Expected coef[] length for the model's family, dims and n_out, or 0 when
  * they are invalid or beyond this build's capacity (tfit_layout.c). */

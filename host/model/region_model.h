@@ -1,0 +1,103 @@
+/*
+ * region_model.h — region models on the host (docs/header-format.md §3,
+ * §5.10-§5.12): their table layout, a builder of the law and surface tables
+ * from raw arrays (chart, grid, control values, modes) for the fitting side,
+ * the checks tfit_model_check() will make on the device (with a message
+ * naming the entry at fault), the self-test vector and golden design.
+ *
+ * Layout, written from the header-format text (the target's is in
+ * target/src/tfit_region.h):
+ *   law:     o[3] R[9] | 1/ha 1/hb ha hb s_u 1/s_u mu |
+ *            (nx+2)(ny+2) control points {h, e_1 .. e_T}, T = T(P) - 4
+ *   surface: o[3] R[9] | the law's 7 scalars, 1/R_F | force map (x0 = 0,
+ *            W = R / R_F) | (nx+2)(ny+2) control points {A[r][T(p) - 1],
+ *            Phi_site[3][r] when has_site_modes} | Phi[3 n_out][r]
+ * Control point (i, j), i = -1 .. nx, j = -1 .. ny, is block
+ * (j + 1)(nx + 2) + (i + 1).
+ */
+#ifndef TF_REGION_MODEL_H
+#define TF_REGION_MODEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/context.h"
+#include "model/model.h"
+
+#define TF_REGION_CHART 12u
+#define TF_REGION_LAW_SCALARS 7u
+#define TF_REGION_SURFACE_SCALARS 8u
+#define TF_REGION_LAW_CTRL (TF_REGION_CHART + TF_REGION_LAW_SCALARS)
+#define TF_REGION_FORCE_MAP (TF_REGION_CHART + TF_REGION_SURFACE_SCALARS)
+#define TF_REGION_SURFACE_CTRL (TF_REGION_FORCE_MAP + TFIT_INPUT_MAP_FLOATS)
+/* indices into the scalars (after the chart) */
+enum { TF_REGION_INV_HA, TF_REGION_INV_HB, TF_REGION_HA, TF_REGION_HB, TF_REGION_SU,
+       TF_REGION_U_SCALE, TF_REGION_MU, TF_REGION_INV_RF };
+
+/* The chart and grid of a region (spec: a height field over a plane). */
+typedef struct tf_region_chart {
+    double origin[3]; /* o, mm, scene frame */
+    double rot[9];    /* R, rows e1, e2, n (outward), orthonormal */
+    uint32_t nx, ny;  /* sites per side, >= 2 */
+    double ha, hb;    /* site spacing, mm */
+} tf_region_chart;
+
+/* Terms of the law's potential (degrees 2 .. P) and of the surface's
+ * amplitude polynomials (degrees 1 .. p); floats per control point. */
+uint32_t tf_region_law_terms(uint32_t degree);
+uint32_t tf_region_surface_terms(uint32_t degree);
+uint32_t tf_region_law_stride(const uint32_t *dims);
+uint32_t tf_region_surface_stride(const uint32_t *dims);
+
+/* coef[] length of a region family for its dims and n_out; 0 if invalid. */
+uint32_t tf_region_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims,
+                         uint32_t n_dims);
+
+/* A law (TFIT_FAMILY_REGION, dims {nx, ny, P}): ctrl holds the
+ * (nx+2)(ny+2) control blocks {h, e_1 .. e_T} (mm; the potential's
+ * coefficients in N mm), s_u = 1 / the displacement scale (1/mm), mu the
+ * friction coefficient; node_ids[0] = region.  The model is checked
+ * (tf_region_validate).  NULL with the message in ctx on failure. */
+tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+                            uint32_t degree, double s_u, double mu, const double *ctrl,
+                            uint32_t region);
+
+/* A surface (TFIT_FAMILY_REGION_SURFACE, dims {nx, ny, r, p, site_modes}):
+ * ctrl the control blocks {A[r][T(p) - 1], Phi_site[3][r] when site_modes}
+ * (amplitudes per normalised chart-frame force f = F / R_F, monomials of
+ * degrees 1 .. p), modes Phi[3 n_out][r] (mm, scene frame), node_ids[n_out];
+ * s_u and mu as the law's (repeated so that the model stands alone). */
+tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+                                double s_u, double mu, double force_radius, uint32_t rank,
+                                uint32_t degree, int site_modes, const double *ctrl,
+                                const double *modes, uint32_t n_out, const uint32_t *node_ids);
+
+/* What tfit_model_check() checks of a region model (sizes, chart,
+ * scalars, the overflow bounds of header-format.md §8), and for a law that
+ * every control point's potential is convex on the unit ball (the blend is
+ * then convex: the law is passive).  0, or -1 with the entry named. */
+int tf_region_validate(tf_ctx *ctx, const tf_model *m);
+
+/* A law and a surface of one region: the same grid, chart and scalars. */
+int tf_region_agree(tf_ctx *ctx, const tf_model *law, const tf_model *surf);
+
+/* The self-test vector (§8) of a region model, from region_ref.c. */
+int tf_region_check_vector(tf_ctx *ctx, const tf_model *m, uint32_t check[TFIT_CHECK_WORDS]);
+
+/* The golden design (§7): a law's tick sequence of tool-tip positions
+ * (pressing, sliding, off the edge, lifting, NaN/Inf, far, huge and
+ * subnormal tips); a surface's forces (the input design of golden.c over
+ * its force map).  At most TF_GOLDEN_MAX (golden.h); returns the count. */
+size_t tf_region_golden_design(const tf_model *m, uint64_t seed, float in[][3]);
+
+/* The law's rest surface point x(g) and its normalised potential's
+ * coefficients at grid coordinates g, blended in double (for designing
+ * inputs and for the property tests): x in the chart frame; e[T] may be
+ * NULL. */
+void tf_region_rest_point(const tf_model *law, const double g[2], double x[3], double *e);
+
+/* A tfit_model descriptor of a region model for the target library (its
+ * tables shared, the self-test and CRC computed). */
+int tf_region_target_view(tf_ctx *ctx, const tf_model *m, tfit_model *t);
+
+#endif /* TF_REGION_MODEL_H */

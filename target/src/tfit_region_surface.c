@@ -1,0 +1,146 @@
+/*
+ * tfit_region_surface.c — the surface for the current contact of a region
+ * (TFIT_FAMILY_REGION_SURFACE, docs/header-format.md §5.11).
+ *
+ * coef = o[3] R[9] | the law's 7 scalars, 1/R_F | force map (12: x0 = 0,
+ * W = R / R_F) | (nx+2)(ny+2) control points {A[r][T], Phi_site[3][r] when
+ * has_site_modes} | Phi[3 n_out][r]; dims = {nx, ny, r, p, has_site_modes}.
+ *
+ *   f = the force map's projection of the force (§4): the chart-frame force
+ *       over the envelope radius R_F, on the unit ball
+ *   a_k = sum_t A_kt(g) phi_t(f), phi_t the monomials of degrees 1 .. p,
+ *       A_kt(g) blended by the splines at the state's proxy site g
+ *   out = Phi a (the modes shared by every site; rank r)
+ * Memory grows with r, not with sites x outputs.  Phi_site(g) (3 x r) are
+ * the modes' patch-averaged values at the site: Phi_site(g1) A(g2) / R_F is
+ * the compliance that couples two instruments (tfit_region_pair.c).
+ */
+#include "tfit_region.h"
+
+void tfit_region_state_site(const uint32_t *dims, const float *state, tfit_region_site *at,
+                            float g[2])
+{
+    g[0] = tfit_region_clamp(state[0], (float)(dims[0] - 1u));
+    g[1] = tfit_region_clamp(state[1], (float)(dims[1] - 1u));
+    tfit_region_at(dims, g[0], g[1], at);
+}
+
+void tfit_region_monomials(uint32_t lo, uint32_t hi, const float v[3], float *m)
+{
+    float pw[3][TFIT_REGION_MAX_DEGREE + 1];
+    for (uint32_t c = 0u; c < 3u; ++c) {
+        pw[c][0] = 1.0f;
+        pw[c][1] = v[c];
+        for (uint32_t n = 2u; n <= hi; ++n) {
+            pw[c][n] = pw[c][n - 1u] * v[c];
+        }
+    }
+    uint32_t t = 0u;
+    for (uint32_t d = lo; d <= hi; ++d) {
+        for (uint32_t e = 0u; e <= d; ++e) {
+            for (uint32_t k = 0u; k <= e; ++k, ++t) {
+                m[t] = pw[0][d - e] * (pw[1][e - k] * pw[2][k]);
+            }
+        }
+    }
+}
+
+void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, const float f[3],
+                            uint32_t keep, float *a)
+{
+    float phi[TFIT_REGION_MAX_SURFACE_TERMS], coef[TFIT_REGION_MAX_SURFACE_TERMS];
+    const uint32_t r = m->dims[2], p = m->dims[3];
+    const uint32_t n_t = TFIT_REGION_SURFACE_TERMS(p);
+    const uint32_t stride = r * n_t + 3u * r * m->dims[4];
+    const float *ctrl = m->coef + TFIT_REGION_SURFACE_CTRL;
+    tfit_region_monomials(1u, p, f, phi);
+    for (uint32_t k = 0u; k < r; ++k) {
+        tfit_region_blend(ctrl + k * n_t, stride, at, n_t, coef);
+        a[k] = tfit_masked(tfit_region_dot(coef, phi, n_t), keep);
+    }
+}
+
+/* The modes end the table: output point j's rows are found from the end,
+ * so that a view holding fewer points (the self-test's) finds them too. */
+void tfit_region_rows(const tfit_model *m, const float *a, uint32_t first, uint32_t count,
+                      uint32_t keep, float *out)
+{
+    const uint32_t r = m->dims[2];
+    const float *u = m->coef + (m->n_coef - 3u * r * m->n_out) + 3u * r * first;
+    for (uint32_t j = 0u; j < count; ++j) {
+        const float *uy = u + r;
+        const float *uz = uy + r;
+        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
+        for (uint32_t k = 1u; k < r; ++k) {
+            x = x + u[k] * a[k];
+            y = y + uy[k] * a[k];
+            z = z + uz[k] * a[k];
+        }
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        u += 3u * r;
+        out += 3;
+    }
+}
+
+static tfit_status arguments(const tfit_model *m, const void *state, const float *force,
+                             const float *out)
+{
+    if ((m == 0) | (state == 0) | (force == 0) | (out == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    if ((m->dims == 0) | (m->coef == 0)) {
+        return TFIT_ERR_ARG;
+    }
+    return m->family == TFIT_FAMILY_REGION_SURFACE ? TFIT_OK : TFIT_ERR_FAMILY;
+}
+
+/* -1 for a NaN/Inf force, else 1 when it was projected, else 0. */
+static tfit_status status_of(uint32_t clamped, uint32_t bad)
+{
+    return (tfit_status)((int)(clamped & ~bad & 1u) - (int)(bad & 1u));
+}
+
+tfit_status tfit_region_surface(const tfit_model *m, const float *state, const float force[3],
+                                float *out)
+{
+    const tfit_status s = arguments(m, state, force, out);
+    if (s != TFIT_OK) {
+        return s;
+    }
+    float f[3], g[2], a[TFIT_REGION_MAX_RANK];
+    uint32_t bad;
+    tfit_region_site at;
+    const uint32_t clamped = tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force, f, &bad);
+    tfit_region_state_site(m->dims, state, &at, g);
+    tfit_region_amplitudes(m, &at, f, ~bad, a);
+    tfit_region_rows(m, a, 0u, m->n_out, ~bad, out);
+    return status_of(clamped, bad);
+}
+
+tfit_status tfit_region_surface_pair(const tfit_model *m, const float *state2,
+                                     const float force2[6], float *out)
+{
+    const tfit_status s = arguments(m, state2, force2, out);
+    if (s != TFIT_OK) {
+        return s;
+    }
+    if (m->dims[3] != 1u) { /* superposition holds for affine models only */
+        return TFIT_ERR_FAMILY;
+    }
+    float f[3], g[2], a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK];
+    uint32_t bad, bad2;
+    tfit_region_site at;
+    uint32_t clamped = tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force2, f, &bad);
+    tfit_region_state_site(m->dims, state2, &at, g);
+    tfit_region_amplitudes(m, &at, f, ~bad, a);
+    clamped |= tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f, &bad2);
+    tfit_region_state_site(m->dims, state2 + TFIT_REGION_STATE_WORDS, &at, g);
+    tfit_region_amplitudes(m, &at, f, ~bad2, b);
+    for (uint32_t k = 0u; k < m->dims[2]; ++k) {
+        a[k] = a[k] + b[k];
+    }
+    tfit_region_rows(m, a, 0u, m->n_out, ~(bad | bad2), out);
+    return status_of(clamped, bad | bad2);
+}
