@@ -90,7 +90,7 @@ static float clamp_grid(float x, float hi)
 
 /* --- the splines (§5.10 "Splines") ---------------------------------------- */
 typedef struct site {
-    float w[4][4], wa[4][4], wb[4][4];
+    float b[2][4], d[2][4]; /* B_k and dB_k/dt in a (0) and b (1) */
     size_t first, row;
 } site;
 
@@ -112,7 +112,6 @@ static void spline_weights(float t, float b[4], float d[4])
 static void site_at(const uint32_t *dims, float ga, float gb, site *st)
 {
     uint32_t cell[2];
-    float b[2][4], d[2][4];
     const float g[2] = {ga, gb};
     for (int a = 0; a < 2; ++a) {
         uint32_t i = (uint32_t)floorf(g[a]);
@@ -120,33 +119,32 @@ static void site_at(const uint32_t *dims, float ga, float gb, site *st)
             i = dims[a] - 2;
         }
         cell[a] = i;
-        spline_weights(sub(g[a], (float)i), b[a], d[a]);
-    }
-    for (int l = 0; l < 4; ++l) {
-        for (int k = 0; k < 4; ++k) {
-            st->w[l][k] = mul(b[1][l], b[0][k]);
-            st->wa[l][k] = mul(b[1][l], d[0][k]);
-            st->wb[l][k] = mul(d[1][l], b[0][k]);
-        }
+        spline_weights(sub(g[a], (float)i), st->b[a], st->d[a]);
     }
     st->row = dims[0] + 2;
     st->first = (size_t)cell[1] * st->row + cell[0];
 }
 
-/* Quantity q of the control blocks (stride floats each) blended with w:
- * w_00 c_00, then + w_lk c_lk, l outer, k inner. */
-static float blend(const float *ctrl, size_t stride, const site *st, const float w[4][4],
-                   size_t q)
+/* ((w0 x0 + w1 x1) + w2 x2) + w3 x3 */
+static float sum4(const float w[4], const float x[4])
 {
-    float acc = 0.0f;
+    return add(add(add(mul(w[0], x[0]), mul(w[1], x[1])), mul(w[2], x[2])), mul(w[3], x[3]));
+}
+
+/* Quantity q of the control blocks (stride floats each): the rows' sums
+ * in a with the weights wa, then their sum in b with wb (§5.10). */
+static float blend(const float *ctrl, size_t stride, const site *st, const float wa[4],
+                   const float wb[4], size_t q)
+{
+    float r[4];
     for (int l = 0; l < 4; ++l) {
+        float c[4];
         for (int k = 0; k < 4; ++k) {
-            const float c = ctrl[(st->first + (size_t)l * st->row + (size_t)k) * stride + q];
-            const float term = mul(w[l][k], c);
-            acc = (l == 0 && k == 0) ? term : add(acc, term);
+            c[k] = ctrl[(st->first + (size_t)l * st->row + (size_t)k) * stride + q];
         }
+        r[l] = sum4(wa, c);
     }
-    return acc;
+    return sum4(wb, r);
 }
 
 /* --- the potential (§5.10 "Potential") ------------------------------------ */
@@ -276,7 +274,7 @@ static void law_step(const tf_model *m, const float *state, const float tip[3], 
     gt[0] = clamp_grid(gt[0], ga_max);
     gt[1] = clamp_grid(gt[1], gb_max);
     site_at(dims, gt[0], gt[1], &st);
-    const float ht = blend(ctrl, S, &st, st.w, 0);
+    const float ht = blend(ctrl, S, &st, st.b[0], st.b[1], 0);
     t->touch = sub(ht, qc[2]) > 0.0f;
     /* the proxy */
     const int was = bits(state[2]) == bits(1.0f);
@@ -293,9 +291,9 @@ static void law_step(const tf_model *m, const float *state, const float tip[3], 
     float qa[MAX_LAW_T + 1], qb[MAX_LAW_T + 1];
     site_at(dims, gp[0], gp[1], &st);
     for (size_t q = 0; q < S; ++q) {
-        at_p.q[q] = blend(ctrl, S, &st, st.w, q);
-        qa[q] = blend(ctrl, S, &st, st.wa, q);
-        qb[q] = blend(ctrl, S, &st, st.wb, q);
+        at_p.q[q] = blend(ctrl, S, &st, st.b[0], st.b[1], q);
+        qa[q] = blend(ctrl, S, &st, st.d[0], st.b[1], q);
+        qb[q] = blend(ctrl, S, &st, st.b[0], st.d[1], q);
     }
     law_eval(m, qc, gp[0], gp[1], &at_p);
     const float *f = at_p.f;
@@ -350,7 +348,7 @@ static void law_step(const tf_model *m, const float *state, const float tip[3], 
     }
     site_at(dims, gn[0], gn[1], &st);
     for (size_t q = 0; q < S; ++q) {
-        at_n.q[q] = blend(ctrl, S, &st, st.w, q);
+        at_n.q[q] = blend(ctrl, S, &st, st.b[0], st.b[1], q);
     }
     law_eval(m, qc, gn[0], gn[1], &at_n);
     const float shrink = at_n.factor < at_p.factor ? at_n.factor : at_p.factor;
@@ -425,7 +423,8 @@ static void amplitudes(const tf_model *m, const float *state, const float force[
     for (uint32_t k = 0; k < r; ++k) {
         float coef[MAX_SURF_T] = {0};
         for (int t = 0; t < n_t; ++t) {
-            coef[t] = blend(ctrl, stride, &st, st.w, (size_t)k * (size_t)n_t + (size_t)t);
+            coef[t] = blend(ctrl, stride, &st, st.b[0], st.b[1],
+                            (size_t)k * (size_t)n_t + (size_t)t);
         }
         a[k] = *bad ? 0.0f : series(coef, phi, 1, n_t);
     }
@@ -462,7 +461,7 @@ tfit_status tf_region_ref_surface_pair(const tf_model *surf, const float *state2
     amplitudes(surf, state2, force2, a, &cl1, &bad1);
     amplitudes(surf, state2 + 3, force2 + 3, b, &cl2, &bad2);
     for (uint32_t k = 0; k < surf->dims[2]; ++k) {
-        a[k] = add(a[k], b[k]);
+        a[k] = (bad1 || bad2) ? 0.0f : add(a[k], b[k]);
     }
     rows(surf, a, !(bad1 || bad2), out);
     return (bad1 || bad2) ? TFIT_ERR_INPUT : (cl1 || cl2) ? TFIT_CLAMPED : TFIT_OK;
@@ -533,7 +532,8 @@ tfit_status tf_region_ref_pair(const tf_model *law, const tf_model *surf, float 
         site_at(surf->dims, clamp_grid(t[i].state[0], (float)(surf->dims[0] - 1)),
                 clamp_grid(t[i].state[1], (float)(surf->dims[1] - 1)), &st);
         for (size_t q = 0; q < stride; ++q) {
-            blk[i][q] = blend(surf->coef + TF_REGION_SURFACE_CTRL, stride, &st, st.w, q);
+            blk[i][q] = blend(surf->coef + TF_REGION_SURFACE_CTRL, stride, &st, st.b[0], st.b[1],
+                              q);
         }
     }
     const float inv_rf = surf->coef[TF_REGION_CHART + TF_REGION_INV_RF];

@@ -38,6 +38,14 @@
  */
 #include "tfit_region.h"
 
+/* The P = 2 copies of the potential below have their sizes as constants
+ * only when the generic code is inlined into them. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
 #define EXP_MASK 0x7f800000u
 #define ABS_MASK 0x7fffffffu
 #define SIGN_MASK 0x80000000u
@@ -69,37 +77,79 @@ void tfit_region_to_scene(const float *chart, const float f[3], uint32_t keep, f
     }
 }
 
-void tfit_region_monomials_grad(uint32_t lo, uint32_t hi, const float v[3], float *m, float *ma,
-                                float *mb, float *mc)
+/* The exponents (a, b, c) of the monomials of degrees 0 .. 4 in graded
+ * order: by degree, then decreasing a, then decreasing b (the basis order
+ * of §5.1); degree d starts at T(d - 1) = d (d + 1) (d + 2) / 6. */
+static const uint8_t exponents[TFIT_TERMS(TFIT_REGION_MAX_DEGREE)][3] = {
+    {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1},
+    {0, 2, 0}, {0, 1, 1}, {0, 0, 2}, {3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {1, 2, 0},
+    {1, 1, 1}, {1, 0, 2}, {0, 3, 0}, {0, 2, 1}, {0, 1, 2}, {0, 0, 3}, {4, 0, 0},
+    {3, 1, 0}, {3, 0, 1}, {2, 2, 0}, {2, 1, 1}, {2, 0, 2}, {1, 3, 0}, {1, 2, 1},
+    {1, 1, 2}, {1, 0, 3}, {0, 4, 0}, {0, 3, 1}, {0, 2, 2}, {0, 1, 3}, {0, 0, 4}};
+
+/* v^n for n = 0 .. hi: 1, v, then (v^(n-1)) v. */
+static ALWAYS_INLINE void powers(const float v[3], uint32_t hi,
+                          float pw[3][TFIT_REGION_MAX_DEGREE + 1])
 {
-    float pw[3][TFIT_REGION_MAX_DEGREE + 1], dp[3][TFIT_REGION_MAX_DEGREE + 1];
-    for (uint32_t c = 0u; c < 3u; ++c) { /* v^n and n v^(n-1) */
-        pw[c][0] = 1.0f;
-        pw[c][1] = v[c];
-        dp[c][0] = 0.0f;
-        dp[c][1] = 1.0f;
-        for (uint32_t n = 2u; n <= hi; ++n) {
-            pw[c][n] = pw[c][n - 1u] * v[c];
-            dp[c][n] = (float)n * pw[c][n - 1u];
-        }
-    }
-    uint32_t t = 0u;
-    for (uint32_t d = lo; d <= hi; ++d) {
-        for (uint32_t e = 0u; e <= d; ++e) { /* e = j + k: i = d - e from d down */
-            const uint32_t i = d - e;
-            for (uint32_t k = 0u; k <= e; ++k, ++t) { /* j = e - k from e down */
-                const uint32_t j = e - k;
-                const float bc = pw[1][j] * pw[2][k];
-                m[t] = pw[0][i] * bc;
-                ma[t] = dp[0][i] * bc;
-                mb[t] = pw[0][i] * (dp[1][j] * pw[2][k]);
-                mc[t] = pw[0][i] * (pw[1][j] * dp[2][k]);
-            }
-        }
+    const float x = v[0], y = v[1], z = v[2];
+    pw[0][0] = 1.0f;
+    pw[1][0] = 1.0f;
+    pw[2][0] = 1.0f;
+    pw[0][1] = x;
+    pw[1][1] = y;
+    pw[2][1] = z;
+    for (uint32_t n = 2u; n <= hi; ++n) {
+        pw[0][n] = pw[0][n - 1u] * x;
+        pw[1][n] = pw[1][n - 1u] * y;
+        pw[2][n] = pw[2][n - 1u] * z;
     }
 }
 
-float tfit_region_dot(const float *c, const float *m, uint32_t n)
+static ALWAYS_INLINE uint32_t monomials(uint32_t lo, uint32_t hi, const float v[3], float *m)
+{
+    float pw[3][TFIT_REGION_MAX_DEGREE + 1];
+    powers(v, hi, pw);
+    const uint32_t first = TFIT_TERMS(lo - 1u), n = TFIT_TERMS(hi) - first;
+    uint32_t t = 0u;
+    do { /* n >= 1 */
+        const uint8_t *e = exponents[first + t];
+        m[t] = pw[0][e[0]] * (pw[1][e[1]] * pw[2][e[2]]);
+    } while (++t < n);
+    return n;
+}
+
+static ALWAYS_INLINE uint32_t monomials_grad(uint32_t lo, uint32_t hi, const float v[3], float *m,
+                                      float *ma, float *mb, float *mc)
+{
+    float pw[3][TFIT_REGION_MAX_DEGREE + 1], dp[3][TFIT_REGION_MAX_DEGREE + 1];
+    powers(v, hi, pw);
+    dp[0][0] = 0.0f; /* n v^(n-1) */
+    dp[1][0] = 0.0f;
+    dp[2][0] = 0.0f;
+    dp[0][1] = 1.0f;
+    dp[1][1] = 1.0f;
+    dp[2][1] = 1.0f;
+    for (uint32_t n = 2u; n <= hi; ++n) {
+        const float fn = (float)n;
+        dp[0][n] = fn * pw[0][n - 1u];
+        dp[1][n] = fn * pw[1][n - 1u];
+        dp[2][n] = fn * pw[2][n - 1u];
+    }
+    const uint32_t first = TFIT_TERMS(lo - 1u), n = TFIT_TERMS(hi) - first;
+    uint32_t t = 0u;
+    do { /* n >= 1 */
+        const uint8_t *e = exponents[first + t];
+        const float a = pw[0][e[0]], b = pw[1][e[1]], c = pw[2][e[2]];
+        const float bc = b * c;
+        m[t] = a * bc;
+        ma[t] = dp[0][e[0]] * bc;
+        mb[t] = a * (dp[1][e[1]] * c);
+        mc[t] = a * (b * dp[2][e[2]]);
+    } while (++t < n);
+    return n;
+}
+
+static ALWAYS_INLINE float dot(const float *c, const float *m, uint32_t n)
 {
     float acc = c[0] * m[0];
     for (uint32_t t = 1u; t < n; ++t) {
@@ -108,37 +158,152 @@ float tfit_region_dot(const float *c, const float *m, uint32_t n)
     return acc;
 }
 
+void tfit_region_monomials(uint32_t lo, uint32_t hi, const float v[3], float *m)
+{
+    (void)monomials(lo, hi, v, m);
+}
+
+float tfit_region_dot(const float *c, const float *m, uint32_t n)
+{
+    return dot(c, m, n);
+}
+
+/* The potential's sums at v (§5.10): the energy sum_t e_t m_t, its
+ * gradient in v (sum_t e_t dm_t/dv), and sum_t ea_t m_t, sum_t eb_t m_t
+ * (ea, eb: the coefficients' derivatives in g; NULL: not wanted).  Inline,
+ * so that the P = 2 caller below gets it with its loops over constants. */
+static ALWAYS_INLINE void potential(uint32_t P, const float *e, const float *ea, const float *eb,
+                             const float v[3], float *energy, float grad[3], float *e_a,
+                             float *e_b)
+{
+    float m[TFIT_REGION_MAX_LAW_TERMS], ma[TFIT_REGION_MAX_LAW_TERMS];
+    float mb[TFIT_REGION_MAX_LAW_TERMS], mc[TFIT_REGION_MAX_LAW_TERMS];
+    const uint32_t T = monomials_grad(2u, P, v, m, ma, mb, mc);
+    *energy = dot(e, m, T);
+    grad[0] = dot(e, ma, T);
+    grad[1] = dot(e, mb, T);
+    grad[2] = dot(e, mc, T);
+    if (ea != 0) {
+        *e_a = dot(ea, m, T);
+        *e_b = dot(eb, m, T);
+    }
+}
+
+static ALWAYS_INLINE float energy_only(uint32_t P, const float *e, const float v[3])
+{
+    float m[TFIT_REGION_MAX_LAW_TERMS];
+    const uint32_t T = monomials(2u, P, v, m);
+    return dot(e, m, T);
+}
+
+/* P = 2 (linear elasticity, the two-instrument form) written out: the
+ * operations of potential() for the terms (2,0,0) (1,1,0) (1,0,1) (0,2,0)
+ * (0,1,1) (0,0,2), without its products by 1 (exact: the same bits) and
+ * with its products by 0 (they decide the sign of a sum that is zero).  On
+ * the Cortex-M4F this halves the potential's cost (docs/firmware.md §11). */
+static inline void terms_p2(const float v[3], float m[6], float ma[6], float mb[6], float mc[6])
+{
+    const float x = v[0], y = v[1], z = v[2];
+    const float yz = y * z;
+    m[0] = x * x;
+    m[1] = x * y;
+    m[2] = x * z;
+    m[3] = y * y;
+    m[4] = yz;
+    m[5] = z * z;
+    ma[0] = 2.0f * x;
+    ma[1] = y;
+    ma[2] = z;
+    ma[3] = 0.0f * m[3];
+    ma[4] = 0.0f * yz;
+    ma[5] = 0.0f * m[5];
+    mb[0] = m[0] * 0.0f;
+    mb[1] = x;
+    mb[2] = x * (0.0f * z);
+    mb[3] = 2.0f * y;
+    mb[4] = z;
+    mb[5] = 0.0f * m[5];
+    mc[0] = m[0] * 0.0f;
+    mc[1] = x * (y * 0.0f);
+    mc[2] = x;
+    mc[3] = m[3] * 0.0f;
+    mc[4] = y;
+    mc[5] = 2.0f * z;
+}
+
+static inline float dot6(const float *c, const float m[6])
+{
+    return ((((c[0] * m[0] + c[1] * m[1]) + c[2] * m[2]) + c[3] * m[3]) + c[4] * m[4]) +
+           c[5] * m[5];
+}
+
+static void potential_p2(const float *e, const float *ea, const float *eb, const float v[3],
+                         float *energy, float grad[3], float *e_a, float *e_b)
+{
+    float m[6], ma[6], mb[6], mc[6];
+    terms_p2(v, m, ma, mb, mc);
+    *energy = dot6(e, m);
+    grad[0] = dot6(e, ma);
+    grad[1] = dot6(e, mb);
+    grad[2] = dot6(e, mc);
+    if (ea != 0) {
+        *e_a = dot6(ea, m);
+        *e_b = dot6(eb, m);
+    }
+}
+
+static void potential_any(uint32_t P, const float *e, const float *ea, const float *eb,
+                          const float v[3], float *energy, float grad[3], float *e_a, float *e_b)
+{
+    if (P == 2u) { /* the model's degree, not an input */
+        potential_p2(e, ea, eb, v, energy, grad, e_a, e_b);
+    } else {
+        potential(P, e, ea, eb, v, energy, grad, e_a, e_b);
+    }
+}
+
+static float energy_p2(const float *e, const float v[3])
+{
+    const float x = v[0], y = v[1], z = v[2];
+    const float m[6] = {x * x, x * y, x * z, y * y, y * z, z * z};
+    return dot6(e, m);
+}
+
+static float energy_any(uint32_t P, const float *e, const float v[3])
+{
+    return P == 2u ? energy_p2(e, v) : energy_only(P, e, v);
+}
+
 /* The law at one site (§5.10 step 7): the rest point x from the blended
  * height, the normalised displacement w = s_u (q - x) and v, w onto the
- * unit ball (*clamped; v = k w), the force (chart frame).  q are the blended
- * quantities {h, e_1 .. e_T}; m, ma, mb, mc receive the monomials at v and
- * their gradients.  Returns k. */
-static float law_at(const float *sc, uint32_t P, uint32_t T, const float qc[3], const float g[2],
-                    const float *q, float w[3], float v[3], uint32_t *clamped, float f[3],
-                    float *m, float *ma, float *mb, float *mc)
+ * unit ball (*clamped; v = k w), the force (chart frame), and with qa, qb
+ * (the quantities' derivatives in g) the sums of G.  q are the blended
+ * quantities {h, e_1 .. e_T}.  Returns k. */
+static float law_at(const float *sc, uint32_t P, const float qc[3], const float g[2],
+                    const float *q, const float *qa, const float *qb, float w[3], float v[3],
+                    uint32_t *clamped, float f[3], float *e_a, float *e_b)
 {
     const float x[3] = {g[0] * sc[TFIT_REGION_HA], g[1] * sc[TFIT_REGION_HB], q[0]};
     const float su = sc[TFIT_REGION_SU];
-    float k;
+    float k, energy, grad[3];
     for (uint32_t i = 0u; i < 3u; ++i) {
         w[i] = (qc[i] - x[i]) * su;
     }
     *clamped = tfit_unit_ball(w, v, &k);
-    tfit_region_monomials_grad(2u, P, v, m, ma, mb, mc);
-    f[0] = su * tfit_region_dot(q + 1, ma, T);
-    f[1] = su * tfit_region_dot(q + 1, mb, T);
-    f[2] = su * tfit_region_dot(q + 1, mc, T);
+    potential_any(P, q + 1, qa == 0 ? 0 : qa + 1, qb == 0 ? 0 : qb + 1, v, &energy, grad, e_a,
+                  e_b);
+    f[0] = su * grad[0];
+    f[1] = su * grad[1];
+    f[2] = su * grad[2];
     return k;
 }
 
 /* The energy sum_t e_t m_t(c w) of the displacement w shrunk by c (the
- * passivity guard's, §5.10 step 10); m is scratch. */
-static float energy_at(uint32_t P, uint32_t T, const float *e, float c, const float w[3],
-                       float *m)
+ * passivity guard's, §5.10 step 10). */
+static float energy_at(uint32_t P, const float *e, float c, const float w[3])
 {
     const float cw[3] = {c * w[0], c * w[1], c * w[2]};
-    tfit_region_monomials(2u, P, cw, m);
-    return tfit_region_dot(e, m, T);
+    return energy_any(P, e, cw);
 }
 
 /* The Gauss-Newton step dg = -H^-1 G, H = J^T K2 J: J's columns
@@ -193,12 +358,10 @@ void tfit_region_step(const tfit_model *m, const float *state, const float tip[3
 {
     float qs[TFIT_REGION_MAX_LAW_TERMS + 1u], qa[TFIT_REGION_MAX_LAW_TERMS + 1u];
     float qb[TFIT_REGION_MAX_LAW_TERMS + 1u], qn[TFIT_REGION_MAX_LAW_TERMS + 1u];
-    float mo[TFIT_REGION_MAX_LAW_TERMS], ma[TFIT_REGION_MAX_LAW_TERMS];
-    float mb[TFIT_REGION_MAX_LAW_TERMS], mc[TFIT_REGION_MAX_LAW_TERMS];
     tfit_region_site at;
     const float *o = m->coef, *r = m->coef + 3, *sc = m->coef + TFIT_REGION_CHART;
     const float *ctrl = m->coef + TFIT_REGION_LAW_CTRL;
-    const uint32_t P = m->dims[2], T = TFIT_REGION_LAW_TERMS(P), S = T + 1u;
+    const uint32_t P = m->dims[2], S = TFIT_REGION_LAW_TERMS(P) + 1u;
     const float ga_max = (float)(m->dims[0] - 1u), gb_max = (float)(m->dims[1] - 1u);
 
     /* 1-2: a NaN/Inf tip is taken as 0; coordinates beyond 2^30 clamped */
@@ -236,11 +399,11 @@ void tfit_region_step(const tfit_model *m, const float *state, const float tip[3
     uint32_t cl;
     tfit_region_at(m->dims, gp[0], gp[1], &at);
     tfit_region_blend_grad(ctrl, S, &at, S, qs, qa, qb);
-    const float k = law_at(sc, P, T, qc, gp, qs, w, v, &cl, f, mo, ma, mb, mc);
+    float e_a, e_b, unused;
+    const float k = law_at(sc, P, qc, gp, qs, qa, qb, w, v, &cl, f, &e_a, &e_b);
     /* G = dE/dg = sum_t (de_t/dg) m_t - J^T F */
-    const float G[2] = {
-        tfit_region_dot(qa + 1, mo, T) - (sc[TFIT_REGION_HA] * f[0] + qa[0] * f[2]),
-        tfit_region_dot(qb + 1, mo, T) - (sc[TFIT_REGION_HB] * f[1] + qb[0] * f[2])};
+    const float G[2] = {e_a - (sc[TFIT_REGION_HA] * f[0] + qa[0] * f[2]),
+                        e_b - (sc[TFIT_REGION_HB] * f[1] + qb[0] * f[2])};
     /* 8-9: the step, limited to one cell, shortened by friction */
     float dg[2];
     newton_step(sc, qs + 1, qa[0], qb[0], G, dg);
@@ -255,10 +418,10 @@ void tfit_region_step(const tfit_model *m, const float *state, const float tip[3
     uint32_t cln;
     tfit_region_at(m->dims, gn[0], gn[1], &at);
     tfit_region_blend(ctrl, S, &at, S, qn);
-    const float kn = law_at(sc, P, T, qc, gn, qn, wn, vn, &cln, fn, mo, ma, mb, mc);
+    const float kn = law_at(sc, P, qc, gn, qn, 0, 0, wn, vn, &cln, fn, &unused, &unused);
     const float c = tfit_select(tfit_mask(kn < k), kn, k);
-    const float energy = energy_at(P, T, qs + 1, c, w, mo);
-    const float energy_n = energy_at(P, T, qn + 1, c, wn, mo);
+    const float energy = energy_at(P, qs + 1, c, w);
+    const float energy_n = energy_at(P, qn + 1, c, wn);
     const uint32_t acc = tfit_mask(energy_n <= energy);
     const uint32_t keep = touch & ~bad;
     for (uint32_t i = 0u; i < 3u; ++i) {

@@ -42,12 +42,11 @@ static inline uint32_t tfit_select_u(uint32_t mask, uint32_t a, uint32_t b)
     return (a & mask) | (b & ~mask);
 }
 
-/* The weights of a site g: w[4 l + k] = B_l(tb) B_k(ta), wa and wb their
- * derivatives in ga and gb, and the index of control point (ia-1, jb-1). */
+/* The weights of a site g: B_k(ta), B_l(tb) and their derivatives, and
+ * the index of control point (ia-1, jb-1). */
 typedef struct tfit_region_site {
-    float w[16];
-    float wa[16];
-    float wb[16];
+    float ba[4], da[4];
+    float bb[4], db[4];
     uint32_t first;
     uint32_t row; /* nx + 2 control points per row */
 } tfit_region_site;
@@ -66,10 +65,8 @@ void tfit_region_blend_grad(const float *ctrl, uint32_t stride, const tfit_regio
                             uint32_t nq, float *q, float *qa, float *qb);
 
 /* The monomials v_a^i v_b^j v_c^k of degrees lo .. hi in graded order
- * (header-format.md §5.10) into m; _grad also their partial derivatives. */
+ * (header-format.md §5.10) into m. */
 void tfit_region_monomials(uint32_t lo, uint32_t hi, const float v[3], float *m);
-void tfit_region_monomials_grad(uint32_t lo, uint32_t hi, const float v[3], float *m,
-                                float *ma, float *mb, float *mc);
 /* c_0 m_0 + c_1 m_1 + ... + c_{n-1} m_{n-1}, left to right, n >= 1. */
 float tfit_region_dot(const float *c, const float *m, uint32_t n);
 

@@ -25,26 +25,6 @@ void tfit_region_state_site(const uint32_t *dims, const float *state, tfit_regio
     tfit_region_at(dims, g[0], g[1], at);
 }
 
-void tfit_region_monomials(uint32_t lo, uint32_t hi, const float v[3], float *m)
-{
-    float pw[3][TFIT_REGION_MAX_DEGREE + 1];
-    for (uint32_t c = 0u; c < 3u; ++c) {
-        pw[c][0] = 1.0f;
-        pw[c][1] = v[c];
-        for (uint32_t n = 2u; n <= hi; ++n) {
-            pw[c][n] = pw[c][n - 1u] * v[c];
-        }
-    }
-    uint32_t t = 0u;
-    for (uint32_t d = lo; d <= hi; ++d) {
-        for (uint32_t e = 0u; e <= d; ++e) {
-            for (uint32_t k = 0u; k <= e; ++k, ++t) {
-                m[t] = pw[0][d - e] * (pw[1][e - k] * pw[2][k]);
-            }
-        }
-    }
-}
-
 void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, const float f[3],
                             uint32_t keep, float *a)
 {
@@ -61,12 +41,21 @@ void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, con
 }
 
 /* The modes end the table: output point j's rows are found from the end,
- * so that a view holding fewer points (the self-test's) finds them too. */
+ * so that a view holding fewer points (the self-test's) finds them too.
+ * The rows are the modal family's (§5.3): on Cortex-M4F/M7 ranks 1 .. 8 in
+ * its assembly (tfit_modal_armv7em.c), whose zero rows need the amplitudes
+ * masked with keep as well (they are: tfit_region_amplitudes). */
 void tfit_region_rows(const tfit_model *m, const float *a, uint32_t first, uint32_t count,
                       uint32_t keep, float *out)
 {
     const uint32_t r = m->dims[2];
     const float *u = m->coef + (m->n_coef - 3u * r * m->n_out) + 3u * r * first;
+#if TFIT_DEGREE1_ASM
+    if (r <= TFIT_MODAL_ASM_MAX_RANK) {
+        tfit_modal_rows_asm(r, u, a, count, keep, out);
+        return;
+    }
+#endif
     for (uint32_t j = 0u; j < count; ++j) {
         const float *uy = u + r;
         const float *uz = uy + r;
@@ -138,8 +127,8 @@ tfit_status tfit_region_surface_pair(const tfit_model *m, const float *state2,
     clamped |= tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f, &bad2);
     tfit_region_state_site(m->dims, state2 + TFIT_REGION_STATE_WORDS, &at, g);
     tfit_region_amplitudes(m, &at, f, ~bad2, b);
-    for (uint32_t k = 0u; k < m->dims[2]; ++k) {
-        a[k] = a[k] + b[k];
+    for (uint32_t k = 0u; k < m->dims[2]; ++k) { /* masked: the rows' assembly needs it */
+        a[k] = tfit_masked(a[k] + b[k], ~(bad | bad2));
     }
     tfit_region_rows(m, a, 0u, m->n_out, ~(bad | bad2), out);
     return status_of(clamped, bad | bad2);

@@ -7,7 +7,7 @@
  *                                   two-instrument sequences) into a bundle
  *                                   (region_bundle.h)
  *   gen_region header SEED FILE.h   a C header for the firmware runner
- *                                   (qemu_region.c): four random regions and
+ *                                   (qemu_region.c): five random regions and
  *                                   the cycle-measurement models (a block48-
  *                                   sized law, P = 2 on 17 x 17 sites, and a
  *                                   liver-sized surface, 400 outputs at rank 20
@@ -168,7 +168,14 @@ static void write_pairs(FILE *f, const tf_model *surf, const pairs *p)
 
 /* A random region's law and surface: every third affine (P = 2, p = 1,
  * site modes: the two-instrument forms); the others of any degree. */
-static int random_pair(tf_ctx *ctx, tf_rng *r, long i, tf_model **law, tf_model **surf)
+/* The shape of a region's models; 0 (-1 for site) draws at random. */
+typedef struct shape {
+    uint32_t degree, rank, p;
+    int site;
+} shape;
+
+static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model **law,
+                       tf_model **surf)
 {
     tf_random_region g;
     char name[32];
@@ -177,15 +184,27 @@ static int random_pair(tf_ctx *ctx, tf_rng *r, long i, tf_model **law, tf_model 
     if (aff) {
         g.degree = 2;
     }
-    const uint32_t rank = tf_rng_below(r, 8) == 0 ? TFIT_REGION_MAX_RANK : 1 + tf_rng_below(r, 12);
-    const uint32_t p = aff ? 1 : 1 + tf_rng_below(r, TFIT_REGION_SURFACE_MAX_DEGREE);
-    const int site = aff || tf_rng_below(r, 2);
+    if (sh->degree != 0) {
+        g.degree = sh->degree;
+    }
+    uint32_t rank = tf_rng_below(r, 8) == 0 ? TFIT_REGION_MAX_RANK : 1 + tf_rng_below(r, 12);
+    uint32_t p = aff ? 1 : 1 + tf_rng_below(r, TFIT_REGION_SURFACE_MAX_DEGREE);
+    int site = aff || tf_rng_below(r, 2);
+    rank = sh->rank != 0 ? sh->rank : rank;
+    p = sh->p != 0 ? sh->p : p;
+    site = sh->site >= 0 ? sh->site : site;
     const uint32_t n_out = tf_rng_below(r, 10) == 0 ? 60 + tf_rng_below(r, 60) : 1 + tf_rng_below(r, 12);
     snprintf(name, sizeof name, "law%ld", i);
     *law = tf_random_region_law(ctx, &g, name);
     snprintf(name, sizeof name, "surface%ld", i);
     *surf = *law == NULL ? NULL : tf_random_region_surface(ctx, r, &g, name, rank, p, site, n_out);
     return *surf == NULL ? -1 : 0;
+}
+
+static int random_pair(tf_ctx *ctx, tf_rng *r, long i, tf_model **law, tf_model **surf)
+{
+    const shape any = {0, 0, 0, -1};
+    return shaped_pair(ctx, r, i, &any, law, surf);
 }
 
 static int bundle(long n, uint64_t seed, const char *path)
@@ -326,7 +345,7 @@ static int header_pairs(tf_ctx *ctx, FILE *f, const tf_model *surf, const pairs 
         return tf_fail(ctx, "out of memory");
     }
     snprintf(name, sizeof name, "%s_ptip", tag);
-    floats(f, name, &p->tip[0][0], 6 * p->n);
+    words(f, "uint32_t", name, (const uint32_t *)(const void *)&p->tip[0][0], 6 * p->n);
     snprintf(name, sizeof name, "%s_pstatus", tag);
     statuses(f, name, p->status, p->n);
     snprintf(name, sizeof name, "%s_pforce", tag);
@@ -334,9 +353,9 @@ static int header_pairs(tf_ctx *ctx, FILE *f, const tf_model *surf, const pairs 
     snprintf(name, sizeof name, "%s_pstate", tag);
     words(f, "uint32_t", name, (const uint32_t *)(const void *)&p->state[0][0], 6 * p->n);
     snprintf(name, sizeof name, "%s_sstate", tag);
-    floats(f, name, &p->sstate[0][0], 6 * p->ns);
+    words(f, "uint32_t", name, (const uint32_t *)(const void *)&p->sstate[0][0], 6 * p->ns);
     snprintf(name, sizeof name, "%s_sforce", tag);
-    floats(f, name, &p->sforce[0][0], 6 * p->ns);
+    words(f, "uint32_t", name, (const uint32_t *)(const void *)&p->sforce[0][0], 6 * p->ns);
     snprintf(name, sizeof name, "%s_sstatus", tag);
     statuses(f, name, p->sstatus, p->ns);
     snprintf(name, sizeof name, "%s_sout", tag);
@@ -345,7 +364,9 @@ static int header_pairs(tf_ctx *ctx, FILE *f, const tf_model *surf, const pairs 
     return 0;
 }
 
-#define HEADER_REGIONS 4
+/* Regions 0, 2, 3 affine (the two-instrument forms), 1 and 4 of higher
+ * degrees; then the cycle models (cases 5 and 6, groups 20-27). */
+#define HEADER_REGIONS 5
 #define HEADER_MAX_VEC 12 /* golden vectors kept of the liver-sized surfaces */
 
 /* The cycle models: a block48-sized law and liver-sized surfaces. */
@@ -378,9 +399,11 @@ static int header(uint64_t seed, const char *path)
     for (int i = 0; i < HEADER_REGIONS + 1 && rc == 0; ++i) {
         tf_model *law = NULL, *surf[2] = {NULL, NULL};
         const int cycles = i == HEADER_REGIONS;
-        /* regions 0, 2, 3 affine (the two-instrument forms), 1 of any degree */
+        static const shape shapes[HEADER_REGIONS] = {
+            {0, 0, 0, -1}, {4, 6, 2, 0}, {0, 5, 0, -1}, {0, 0, 0, -1}, {3, 9, 3, 1}};
         rc = cycles ? cycle_models(&ctx, &r, &law, surf)
-                    : random_pair(&ctx, &r, i == 1 ? 1 : 3 * i, &law, &surf[0]);
+                    : shaped_pair(&ctx, &r, (i == 1 || i == 4) ? 1 : 3 * i, &shapes[i], &law,
+                                  &surf[0]);
         for (int s = 0; s < (cycles ? 2 : 1) && rc == 0; ++s) {
             vectors vl = {0}, vs = {0};
             pairs *p = calloc(1, sizeof *p);
