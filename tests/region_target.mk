@@ -127,3 +127,9 @@ check-qemu-region: $(foreach c,$(REGION_FW_CORES),$(FW)/$(c)/region.elf) \
 	echo "law tick: $$law M4F cycles, within the budget of $(REGION_BUDGET_LAW) (30 us at 168 MHz)"
 	@echo "ok: region models bit-exact under QEMU on every build; every call of an entry point executes one instruction mix"
 .SECONDARY: $(foreach c,m4f m7,$(FW)/$(c)/region-trace.txt $(FW)/$(c)/region.dis)
+
+# --- properties of the contact (tests/region/properties.c) -------------------------
+check-region-properties: $(RG)/properties
+	@echo "== region law properties: continuity, closed-path work, passivity with friction, finiteness, stuck contact =="
+	@$<
+	@echo "ok: the region law is continuous, conservative without friction and passive with it, finite for every input and state, and the site law when stuck"
