@@ -23,56 +23,6 @@
 /* Floats per control point of a law, at most: h and T(4) - 4 terms. */
 #define MAX_LAW_STRIDE 32
 
-uint32_t tf_region_law_terms(uint32_t degree)
-{
-    return tf_terms(degree) - 4;
-}
-
-uint32_t tf_region_surface_terms(uint32_t degree)
-{
-    return tf_terms(degree) - 1;
-}
-
-uint32_t tf_region_law_stride(const uint32_t *dims)
-{
-    return 1 + tf_region_law_terms(dims[2]);
-}
-
-uint32_t tf_region_surface_stride(const uint32_t *dims)
-{
-    return dims[2] * tf_region_surface_terms(dims[3]) + 3 * dims[2] * dims[4];
-}
-
-static uint32_t control_points(const uint32_t *dims)
-{
-    return (dims[0] + 2) * (dims[1] + 2);
-}
-
-uint32_t tf_region_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims,
-                         uint32_t n_dims)
-{
-    const uint32_t want = family == TFIT_FAMILY_REGION ? TFIT_REGION_DIMS
-                          : family == TFIT_FAMILY_REGION_SURFACE ? TFIT_REGION_SURFACE_DIMS
-                                                                 : 0;
-    if (want == 0 || n_dims != want || n_out == 0 || n_out > (1u << 20) || dims[0] < 2 ||
-        dims[1] < 2 || dims[0] > TFIT_REGION_MAX_GRID || dims[1] > TFIT_REGION_MAX_GRID) {
-        return 0;
-    }
-    if (family == TFIT_FAMILY_REGION) {
-        if (n_out != 1 || dims[2] < 2 || dims[2] > TFIT_REGION_MAX_DEGREE) {
-            return 0;
-        }
-        return TF_REGION_LAW_CTRL + control_points(dims) * tf_region_law_stride(dims);
-    }
-    if (dims[2] == 0 || dims[2] > TFIT_REGION_MAX_RANK || dims[3] == 0 ||
-        dims[3] > TFIT_REGION_SURFACE_MAX_DEGREE || dims[4] > 1) {
-        return 0;
-    }
-    const uint64_t n = (uint64_t)control_points(dims) * tf_region_surface_stride(dims) +
-                       3ull * n_out * dims[2] + TF_REGION_SURFACE_CTRL;
-    return n > UINT32_MAX ? 0 : (uint32_t)n;
-}
-
 /* A zeroed model of the shape (tf_model_new's, for the region families). */
 static tf_model *alloc_model(tf_ctx *ctx, const char *name, tfit_family family, uint32_t n_out,
                              const uint32_t *dims, uint32_t n_dims)
@@ -139,7 +89,7 @@ tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart
         return NULL;
     }
     put_chart(m->coef, chart, s_u, mu);
-    const size_t n = (size_t)control_points(dims) * tf_region_law_stride(dims);
+    const size_t n = (size_t)tf_region_control_points(dims) * tf_region_law_stride(dims);
     for (size_t i = 0; i < n; ++i) {
         m->coef[TF_REGION_LAW_CTRL + i] = (float)ctrl[i];
     }
@@ -167,7 +117,7 @@ tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_c
     for (int i = 0; i < 9; ++i) {
         map[3 + i] = (float)(chart->rot[i] / force_radius);
     }
-    const size_t n = (size_t)control_points(dims) * tf_region_surface_stride(dims);
+    const size_t n = (size_t)tf_region_control_points(dims) * tf_region_surface_stride(dims);
     for (size_t i = 0; i < n; ++i) {
         m->coef[TF_REGION_SURFACE_CTRL + i] = (float)ctrl[i];
     }
@@ -286,7 +236,7 @@ static void potential_hessian(uint32_t P, const float *e, const double v[3], dou
 static int convexity_check(tf_ctx *ctx, const tf_model *m)
 {
     const uint32_t P = m->dims[2], S = tf_region_law_stride(m->dims);
-    const size_t points = control_points(m->dims);
+    const size_t points = tf_region_control_points(m->dims);
     for (size_t j = 0; j < points; ++j) {
         const float *e = m->coef + TF_REGION_LAW_CTRL + j * S + 1;
         for (int s = 0; s < (P == 2 ? 1 : 53); ++s) {
@@ -317,7 +267,7 @@ static int convexity_check(tf_ctx *ctx, const tf_model *m)
 
 static int law_check(tf_ctx *ctx, const tf_model *m)
 {
-    const size_t points = control_points(m->dims);
+    const size_t points = tf_region_control_points(m->dims);
     const uint32_t S = tf_region_law_stride(m->dims), P = m->dims[2];
     const float *sc = m->coef + TF_REGION_CHART, *ctrl = m->coef + TF_REGION_LAW_CTRL;
     const double bh = 2 * max_abs(ctrl, points, S);
@@ -350,7 +300,7 @@ static int law_check(tf_ctx *ctx, const tf_model *m)
 
 static int surface_check(tf_ctx *ctx, const tf_model *m)
 {
-    const size_t points = control_points(m->dims);
+    const size_t points = tf_region_control_points(m->dims);
     const uint32_t r = m->dims[2], n_t = tf_region_surface_terms(m->dims[3]);
     const uint32_t S = tf_region_surface_stride(m->dims);
     const float *ctrl = m->coef + TF_REGION_SURFACE_CTRL, *map = m->coef + TF_REGION_FORCE_MAP;

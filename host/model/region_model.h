@@ -4,16 +4,8 @@
  * from raw arrays (chart, grid, control values, modes) for the fitting side,
  * the checks tfit_model_check() will make on the device (with a message
  * naming the entry at fault), the self-test vector and golden design.
- *
- * Layout, written from the header-format text (the target's is in
- * target/src/tfit_region.h):
- *   law:     o[3] R[9] | 1/ha 1/hb ha hb s_u 1/s_u mu |
- *            (nx+2)(ny+2) control points {h, e_1 .. e_T}, T = T(P) - 4
- *   surface: o[3] R[9] | the law's 7 scalars, 1/R_F | force map (x0 = 0,
- *            W = R / R_F) | (nx+2)(ny+2) control points {A[r][T(p) - 1],
- *            Phi_site[3][r] when has_site_modes} | Phi[3 n_out][r]
- * Control point (i, j), i = -1 .. nx, j = -1 .. ny, is block
- * (j + 1)(nx + 2) + (i + 1).
+
+ * The table layout: region_layout.h.
  */
 #ifndef TF_REGION_MODEL_H
 #define TF_REGION_MODEL_H
@@ -23,16 +15,7 @@
 
 #include "base/context.h"
 #include "model/model.h"
-
-#define TF_REGION_CHART 12u
-#define TF_REGION_LAW_SCALARS 7u
-#define TF_REGION_SURFACE_SCALARS 8u
-#define TF_REGION_LAW_CTRL (TF_REGION_CHART + TF_REGION_LAW_SCALARS)
-#define TF_REGION_FORCE_MAP (TF_REGION_CHART + TF_REGION_SURFACE_SCALARS)
-#define TF_REGION_SURFACE_CTRL (TF_REGION_FORCE_MAP + TFIT_INPUT_MAP_FLOATS)
-/* indices into the scalars (after the chart) */
-enum { TF_REGION_INV_HA, TF_REGION_INV_HB, TF_REGION_HA, TF_REGION_HB, TF_REGION_SU,
-       TF_REGION_U_SCALE, TF_REGION_MU, TF_REGION_INV_RF };
+#include "model/region_layout.h"
 
 /* The chart and grid of a region (spec: a height field over a plane). */
 typedef struct tf_region_chart {
@@ -41,17 +24,6 @@ typedef struct tf_region_chart {
     uint32_t nx, ny;  /* sites per side, >= 2 */
     double ha, hb;    /* site spacing, mm */
 } tf_region_chart;
-
-/* Terms of the law's potential (degrees 2 .. P) and of the surface's
- * amplitude polynomials (degrees 1 .. p); floats per control point. */
-uint32_t tf_region_law_terms(uint32_t degree);
-uint32_t tf_region_surface_terms(uint32_t degree);
-uint32_t tf_region_law_stride(const uint32_t *dims);
-uint32_t tf_region_surface_stride(const uint32_t *dims);
-
-/* coef[] length of a region family for its dims and n_out; 0 if invalid. */
-uint32_t tf_region_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims,
-                         uint32_t n_dims);
 
 /* A law (TFIT_FAMILY_REGION, dims {nx, ny, P}): ctrl holds the
  * (nx+2)(ny+2) control blocks {h, e_1 .. e_T} (mm; the potential's

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "model/ref_eval.h"
-#include "model/region_model.h"
+#include "model/region_layout.h"
 
 #define MAXD 4                             /* TFIT_REGION_MAX_DEGREE */
 #define MAX_LAW_T (35 - 4)                 /* T(4) - 4 */

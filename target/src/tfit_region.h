@@ -31,7 +31,8 @@
 #define TFIT_REGION_LAW_TERMS(P) (TFIT_TERMS(P) - 4u)
 #define TFIT_REGION_SURFACE_TERMS(p) (TFIT_TERMS(p) - 1u)
 #define TFIT_REGION_MAX_LAW_TERMS TFIT_REGION_LAW_TERMS((uint32_t)TFIT_REGION_MAX_DEGREE)
-#define TFIT_REGION_MAX_SURFACE_TERMS TFIT_REGION_SURFACE_TERMS((uint32_t)TFIT_REGION_SURFACE_MAX_DEGREE)
+#define TFIT_REGION_MAX_SURFACE_TERMS                                                              \
+    TFIT_REGION_SURFACE_TERMS((uint32_t)TFIT_REGION_SURFACE_MAX_DEGREE)
 /* Tip coordinates beyond +-2^30 mm are clamped there (no overflow in the
  * chart map; such a tip is far off any region). */
 #define TFIT_REGION_TIP_LIMIT_BITS 0x4e800000u

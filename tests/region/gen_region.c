@@ -193,7 +193,8 @@ static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model
     rank = sh->rank != 0 ? sh->rank : rank;
     p = sh->p != 0 ? sh->p : p;
     site = sh->site >= 0 ? sh->site : site;
-    const uint32_t n_out = tf_rng_below(r, 10) == 0 ? 60 + tf_rng_below(r, 60) : 1 + tf_rng_below(r, 12);
+    const uint32_t n_out =
+        tf_rng_below(r, 10) == 0 ? 60 + tf_rng_below(r, 60) : 1 + tf_rng_below(r, 12);
     snprintf(name, sizeof name, "law%ld", i);
     *law = tf_random_region_law(ctx, &g, name);
     snprintf(name, sizeof name, "surface%ld", i);
@@ -375,8 +376,12 @@ static int cycle_models(tf_ctx *ctx, tf_rng *r, tf_model **law, tf_model *surf[2
     tf_random_region g;
     tf_random_region_block(&g, 17, 2.4, 0.5, 1.2, 0.3, 0.5, 2, 0.3);
     *law = tf_random_region_law(ctx, &g, "block48_law");
-    surf[0] = *law == NULL ? NULL : tf_random_region_surface(ctx, r, &g, "liver_r20", 20, 1, 1, 400);
-    surf[1] = surf[0] == NULL ? NULL : tf_random_region_surface(ctx, r, &g, "liver_r40", 40, 1, 1, 400);
+    if (*law == NULL) {
+        return -1;
+    }
+    surf[0] = tf_random_region_surface(ctx, r, &g, "liver_r20", 20, 1, 1, 400);
+    surf[1] = surf[0] == NULL ? NULL
+                              : tf_random_region_surface(ctx, r, &g, "liver_r40", 40, 1, 1, 400);
     return surf[1] == NULL ? -1 : 0;
 }
 

@@ -309,10 +309,10 @@ static void finiteness(int n_regions, int ticks)
             g.degree = 2;
         }
         tf_model *law = tf_random_region_law(&ctx, &g, "law");
+        const uint32_t rank = 1 + tf_rng_below(&rng, 12);
+        const uint32_t p = affine ? 1 : 1 + tf_rng_below(&rng, 3);
         tf_model *surf = law == NULL ? NULL
-                                     : tf_random_region_surface(&ctx, &rng, &g, "surface",
-                                                                1 + tf_rng_below(&rng, 12),
-                                                                affine ? 1 : 1 + tf_rng_below(&rng, 3),
+                                     : tf_random_region_surface(&ctx, &rng, &g, "surface", rank, p,
                                                                 affine, 1 + tf_rng_below(&rng, 20));
         tfit_model lt, st;
         if (surf == NULL || tf_region_target_view(&ctx, law, &lt) != 0 ||
@@ -326,8 +326,8 @@ static void finiteness(int n_regions, int ticks)
         tfit_region_reset(&lt, state + 3);
         for (int k = 0; k < ticks; ++k) {
             for (int j = 0; j < 6; ++j) {
-                tip[j] = tf_rng_below(&rng, 2) ? random_word(&rng)
-                                               : (float)(lt.coef[j % 3] + tf_rng_range(&rng, -30, 30));
+                const double near = lt.coef[j % 3] + tf_rng_range(&rng, -30, 30);
+                tip[j] = tf_rng_below(&rng, 2) ? random_word(&rng) : (float)near;
             }
             if (tf_rng_below(&rng, 8) == 0) { /* a caller's state of any bits */
                 for (int j = 0; j < 6; ++j) {

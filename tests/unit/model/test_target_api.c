@@ -183,7 +183,7 @@ static void check_rejections(void **state)
     tf_target_view(m, &t);
     t.family = 0;
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_FAMILY);
-    t.family = TFIT_FAMILY_MODAL_Q15 + 1; /* the first id no family has */
+    t.family = TFIT_FAMILY_REGION_SURFACE + 1; /* the first id no family has */
     assert_int_equal(tfit_model_check(&t), TFIT_ERR_FAMILY);
 
     tf_target_view(m, &t);

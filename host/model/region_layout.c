@@ -1,0 +1,56 @@
+/*
+ * region_layout.c — see region_layout.h.
+ */
+#include "model/region_layout.h"
+
+#include "model/model.h"
+
+uint32_t tf_region_law_terms(uint32_t degree)
+{
+    return tf_terms(degree) - 4;
+}
+
+uint32_t tf_region_surface_terms(uint32_t degree)
+{
+    return tf_terms(degree) - 1;
+}
+
+uint32_t tf_region_law_stride(const uint32_t *dims)
+{
+    return 1 + tf_region_law_terms(dims[2]);
+}
+
+uint32_t tf_region_surface_stride(const uint32_t *dims)
+{
+    return dims[2] * tf_region_surface_terms(dims[3]) + 3 * dims[2] * dims[4];
+}
+
+uint32_t tf_region_control_points(const uint32_t *dims)
+{
+    return (dims[0] + 2) * (dims[1] + 2);
+}
+
+uint32_t tf_region_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims,
+                         uint32_t n_dims)
+{
+    const uint32_t want = family == TFIT_FAMILY_REGION ? TFIT_REGION_DIMS
+                          : family == TFIT_FAMILY_REGION_SURFACE ? TFIT_REGION_SURFACE_DIMS
+                                                                 : 0;
+    if (want == 0 || n_dims != want || n_out == 0 || n_out > (1u << 20) || dims[0] < 2 ||
+        dims[1] < 2 || dims[0] > TFIT_REGION_MAX_GRID || dims[1] > TFIT_REGION_MAX_GRID) {
+        return 0;
+    }
+    if (family == TFIT_FAMILY_REGION) {
+        if (n_out != 1 || dims[2] < 2 || dims[2] > TFIT_REGION_MAX_DEGREE) {
+            return 0;
+        }
+        return TF_REGION_LAW_CTRL + tf_region_control_points(dims) * tf_region_law_stride(dims);
+    }
+    if (dims[2] == 0 || dims[2] > TFIT_REGION_MAX_RANK || dims[3] == 0 ||
+        dims[3] > TFIT_REGION_SURFACE_MAX_DEGREE || dims[4] > 1) {
+        return 0;
+    }
+    const uint64_t n = (uint64_t)tf_region_control_points(dims) * tf_region_surface_stride(dims) +
+                       3ull * n_out * dims[2] + TF_REGION_SURFACE_CTRL;
+    return n > UINT32_MAX ? 0 : (uint32_t)n;
+}
