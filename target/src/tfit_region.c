@@ -12,8 +12,8 @@
  * h(g)) the rest surface point), v = s_u u, m_t the monomials of degrees
  * 2 .. P; the force is its gradient F = s_u grad_v E, exactly a gradient
  * field at a fixed proxy.  Why a potential (Maxwell-Betti: the patch-
- * averaged displacement is the work-conjugate of the total force) and how
- * the host fits it: the region design in docs/fitting.md.
+ * averaged displacement is the work-conjugate of the total force):
+ * docs/header-format.md §5.10.
  *
  * The proxy g_p is where on the region the contact sits.  Each tick it
  * takes one Gauss-Newton step towards a stationary point of E over g,

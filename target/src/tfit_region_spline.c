@@ -21,8 +21,8 @@
  * Every sum of four runs left to right from its k = 0 (l = 0) product.
  * The sums are taken row by row (the tensor product's separable form): the
  * eight weights stay in registers, and no 4 x 4 table of weight products
- * is formed (on the Cortex-M4F this took the law's tick from about 11,000
- * to ... cycles, docs/firmware.md §11).
+ * is formed (on the Cortex-M4F this took the law's tick from 11,031 to
+ * 7,229 cycles, docs/firmware.md §11).
  */
 #include "tfit_region.h"
 

@@ -6,7 +6,8 @@
  * 0.5 / 0.5 / 1.2 N/mm varying smoothly by +-30 %, P = 2) and a curved one
  * (the same with a height field of 3 mm amplitude), both with a
  * displacement scale 1/s_u of 5 mm (the law's envelope |u| <= 5 mm covers
- * every path below: beyond it the force is the envelope's, docs/fitting.md).
+ * every path below: beyond it the force is the envelope's, and not a
+ * gradient field: docs/header-format.md §5.10).
  * Prints the measured margins; exits 1 when one is beyond its bound:
  *
  *  (a) continuity: over 10^4 random paths sampled every 0.01 mm (a press
