@@ -172,6 +172,7 @@ static void write_pairs(FILE *f, const tf_model *surf, const pairs *p)
 typedef struct shape {
     uint32_t degree, rank, p;
     int site;
+    uint32_t n_out;
 } shape;
 
 static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model **law,
@@ -193,8 +194,8 @@ static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model
     rank = sh->rank != 0 ? sh->rank : rank;
     p = sh->p != 0 ? sh->p : p;
     site = sh->site >= 0 ? sh->site : site;
-    const uint32_t n_out =
-        tf_rng_below(r, 10) == 0 ? 60 + tf_rng_below(r, 60) : 1 + tf_rng_below(r, 12);
+    uint32_t n_out = tf_rng_below(r, 10) == 0 ? 60 + tf_rng_below(r, 60) : 1 + tf_rng_below(r, 12);
+    n_out = sh->n_out != 0 ? sh->n_out : n_out;
     snprintf(name, sizeof name, "law%ld", i);
     *law = tf_random_region_law(ctx, &g, name);
     snprintf(name, sizeof name, "surface%ld", i);
@@ -204,7 +205,7 @@ static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model
 
 static int random_pair(tf_ctx *ctx, tf_rng *r, long i, tf_model **law, tf_model **surf)
 {
-    const shape any = {0, 0, 0, -1};
+    const shape any = {0, 0, 0, -1, 0};
     return shaped_pair(ctx, r, i, &any, law, surf);
 }
 
@@ -368,7 +369,11 @@ static int header_pairs(tf_ctx *ctx, FILE *f, const tf_model *surf, const pairs 
 /* Regions 0, 2, 3 affine (the two-instrument forms), 1 and 4 of higher
  * degrees; then the cycle models (cases 5 and 6, groups 20-27). */
 #define HEADER_REGIONS 5
-#define HEADER_MAX_VEC 12 /* golden vectors kept of the liver-sized surfaces */
+/* The cycle cases keep a few vectors of each kind (the traces under QEMU
+ * log every block executed): the law's 80 ticks, 4 surface vectors, 16
+ * two-instrument ticks, 4 surface pairs. */
+#define HEADER_MAX_VEC 4
+#define HEADER_MAX_PAIRS 16
 
 /* The cycle models: a block48-sized law and liver-sized surfaces. */
 static int cycle_models(tf_ctx *ctx, tf_rng *r, tf_model **law, tf_model *surf[2])
@@ -404,8 +409,13 @@ static int header(uint64_t seed, const char *path)
     for (int i = 0; i < HEADER_REGIONS + 1 && rc == 0; ++i) {
         tf_model *law = NULL, *surf[2] = {NULL, NULL};
         const int cycles = i == HEADER_REGIONS;
-        static const shape shapes[HEADER_REGIONS] = {
-            {0, 0, 0, -1}, {4, 6, 2, 0}, {0, 5, 0, -1}, {0, 0, 0, -1}, {3, 9, 3, 1}};
+        /* small ones (the traces log every block): ranks 1-8 run the modal
+         * rows' assembly, 9 and 11 its C loop */
+        static const shape shapes[HEADER_REGIONS] = {{0, 6, 0, -1, 9},
+                                                     {4, 6, 2, 0, 5},
+                                                     {0, 3, 0, -1, 7},
+                                                     {0, 11, 0, -1, 4},
+                                                     {3, 9, 3, 1, 6}};
         rc = cycles ? cycle_models(&ctx, &r, &law, surf)
                     : shaped_pair(&ctx, &r, (i == 1 || i == 4) ? 1 : 3 * i, &shapes[i], &law,
                                   &surf[0]);
@@ -418,6 +428,7 @@ static int header(uint64_t seed, const char *path)
             if (rc == 0 && cycles) { /* the liver-sized surfaces: a few vectors */
                 vs.n = vs.n < HEADER_MAX_VEC ? vs.n : HEADER_MAX_VEC;
                 p->ns = p->ns < HEADER_MAX_VEC ? p->ns : HEADER_MAX_VEC;
+                p->n = p->n < HEADER_MAX_PAIRS ? p->n : HEADER_MAX_PAIRS;
             }
             if (rc == 0 && s == 0) {
                 snprintf(tag, sizeof tag, "region%d_law", i);
