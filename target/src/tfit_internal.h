@@ -94,7 +94,9 @@ static inline uint32_t tfit_umin(uint32_t a, uint32_t b)
 /* 1/sqrt(s) for a positive normal float s: a start from the bit pattern of
  * s (relative error <= 3.5 % for every positive float), then three Newton
  * steps y <- (y/2)(3 - s y y), each squaring the error (header-format.md §4
- * step 8). */
+ * step 8).  For the region models; tfit_input.c keeps its own copy, so that
+ * the input map's code, whose instructions the cycle model counts
+ * (host/cost/cycles.c), stays as it is. */
 static inline float tfit_rsqrt_step(float s, float y)
 {
     float t = s * y;
@@ -221,12 +223,6 @@ void tfit_q15_rows_asm(const float *rows, const uint32_t c[5], uint32_t n_out, f
 #define TFIT_DEGREE1_ASM 0
 #define TFIT_Q15_ASM 0
 #endif
-
-/* Steps 6-9 of the input map alone (header-format.md §4): v onto the unit
- * ball, into out; returns an all-ones mask when it was projected, and
- * *factor = 2^-e(m) y (step 6's power of two times step 9's factor, or 1),
- * so that out_i = v_i factor (rounded once either way).  Any finite v. */
-uint32_t tfit_unit_ball(const float v[3], float out[3], float *factor);
 
 /* Maps the raw input onto the unit ball (tfit_input.c).  Returns an all-ones
  * mask when the input was projected; *bad is all ones when the input held a

@@ -53,6 +53,33 @@
 #define DET_MIN 0x1p-60f    /* below it the proxy does not move */
 #define TANGENT_MIN 0x1p-100f /* |F_t|^2 floor: 1/|F_t| stays finite */
 
+/* Steps 6-9 of the input map (header-format.md §4) on v, into out: beyond
+ * the unit cube a power of two brings the largest magnitude into [1, 2),
+ * then outside the unit ball v / |v|.  Returns an all-ones mask when v was
+ * projected, and the factor k = 2^-e y (or 1), so that out_i = v_i k
+ * (rounded once either way: 2^-e is a power of two).  Kept apart from
+ * tfit_input_map (tfit_input.c) so that its code, whose instructions the
+ * cycle model counts, stays as it is. */
+static uint32_t unit_ball(const float v[3], float out[3], float *factor)
+{
+    const uint32_t gmax = tfit_umax(tfit_umax(tfit_bits(v[0]) & ABS_MASK,
+                                              tfit_bits(v[1]) & ABS_MASK),
+                                    tfit_bits(v[2]) & ABS_MASK);
+    const uint32_t far = tfit_mask(gmax > BITS_ONE);
+    /* 2^(127 - E) for the biased exponent E of gmax: exact, normal here */
+    const uint32_t scale = (254u - (gmax >> 23)) << 23;
+    const float to_unit = tfit_float((scale & far) | (BITS_ONE & ~far));
+    const float g[3] = {v[0] * to_unit, v[1] * to_unit, v[2] * to_unit};
+    const float s = (g[0] * g[0] + g[1] * g[1]) + g[2] * g[2];
+    const uint32_t outside = far | tfit_mask(s > 1.0f);
+    const float y = tfit_select(outside, tfit_rsqrt(tfit_select(outside, s, 1.0f)), 1.0f);
+    out[0] = g[0] * y;
+    out[1] = g[1] * y;
+    out[2] = g[2] * y;
+    *factor = to_unit * y;
+    return outside;
+}
+
 /* The tip coordinate clamped onto [-2^30, 2^30] (bitwise); *far is set to
  * all ones when it was beyond. */
 static float clamp_tip(float x, uint32_t *far)
@@ -289,7 +316,7 @@ static float law_at(const float *sc, uint32_t P, const float qc[3], const float 
     for (uint32_t i = 0u; i < 3u; ++i) {
         w[i] = (qc[i] - x[i]) * su;
     }
-    *clamped = tfit_unit_ball(w, v, &k);
+    *clamped = unit_ball(w, v, &k);
     potential_any(P, q + 1, qa == 0 ? 0 : qa + 1, qb == 0 ? 0 : qb + 1, v, &energy, grad, e_a,
                   e_b);
     f[0] = su * grad[0];
