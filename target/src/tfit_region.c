@@ -116,7 +116,7 @@ static const uint8_t exponents[TFIT_TERMS(TFIT_REGION_MAX_DEGREE)][3] = {
 
 /* v^n for n = 0 .. hi: 1, v, then (v^(n-1)) v. */
 static ALWAYS_INLINE void powers(const float v[3], uint32_t hi,
-                          float pw[3][TFIT_REGION_MAX_DEGREE + 1])
+                                 float pw[3][TFIT_REGION_MAX_DEGREE + 1])
 {
     const float x = v[0], y = v[1], z = v[2];
     pw[0][0] = 1.0f;
@@ -145,8 +145,8 @@ static ALWAYS_INLINE uint32_t monomials(uint32_t lo, uint32_t hi, const float v[
     return n;
 }
 
-static ALWAYS_INLINE uint32_t monomials_grad(uint32_t lo, uint32_t hi, const float v[3], float *m,
-                                      float *ma, float *mb, float *mc)
+static ALWAYS_INLINE uint32_t monomials_grad(uint32_t lo, uint32_t hi, const float v[3],
+                                             float *m, float *ma, float *mb, float *mc)
 {
     float pw[3][TFIT_REGION_MAX_DEGREE + 1], dp[3][TFIT_REGION_MAX_DEGREE + 1];
     powers(v, hi, pw);
@@ -199,9 +199,9 @@ float tfit_region_dot(const float *c, const float *m, uint32_t n)
  * gradient in v (sum_t e_t dm_t/dv), and sum_t ea_t m_t, sum_t eb_t m_t
  * (ea, eb: the coefficients' derivatives in g; NULL: not wanted).  Inline,
  * so that the P = 2 caller below gets it with its loops over constants. */
-static ALWAYS_INLINE void potential(uint32_t P, const float *e, const float *ea, const float *eb,
-                             const float v[3], float *energy, float grad[3], float *e_a,
-                             float *e_b)
+static ALWAYS_INLINE void potential(uint32_t P, const float *e, const float *ea,
+                                    const float *eb, const float v[3], float *energy,
+                                    float grad[3], float *e_a, float *e_b)
 {
     float m[TFIT_REGION_MAX_LAW_TERMS], ma[TFIT_REGION_MAX_LAW_TERMS];
     float mb[TFIT_REGION_MAX_LAW_TERMS], mc[TFIT_REGION_MAX_LAW_TERMS];
