@@ -7,6 +7,7 @@
 #include "model/model.h"
 
 #include "model/oscillator.h"
+#include "model/region_layout.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -102,6 +103,9 @@ uint32_t tf_model_ncoef(tfit_family family, uint32_t n_out, const uint32_t *dims
         }
         n += 2ull * n_out;
         break;
+    case TFIT_FAMILY_REGION: /* region_layout.c */
+    case TFIT_FAMILY_REGION_SURFACE:
+        return tf_region_ncoef(family, n_out, dims, n_dims);
     default:
         return 0;
     }

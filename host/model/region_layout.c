@@ -3,16 +3,21 @@
  */
 #include "model/region_layout.h"
 
-#include "model/model.h"
+/* T(p) = (p+1)(p+2)(p+3)/6 terms of total degree <= p (model.h's
+ * tf_terms; not included: model.c includes this file's header) */
+static uint32_t terms(uint32_t p)
+{
+    return (p + 1) * (p + 2) * (p + 3) / 6;
+}
 
 uint32_t tf_region_law_terms(uint32_t degree)
 {
-    return tf_terms(degree) - 4;
+    return terms(degree) - 4;
 }
 
 uint32_t tf_region_surface_terms(uint32_t degree)
 {
-    return tf_terms(degree) - 1;
+    return terms(degree) - 1;
 }
 
 uint32_t tf_region_law_stride(const uint32_t *dims)

@@ -23,40 +23,14 @@
 /* Floats per control point of a law, at most: h and T(4) - 4 terms. */
 #define MAX_LAW_STRIDE 32
 
-/* A zeroed model of the shape (tf_model_new's, for the region families). */
+/* A zeroed model of the shape; NULL with the message in ctx. */
 static tf_model *alloc_model(tf_ctx *ctx, const char *name, tfit_family family, uint32_t n_out,
                              const uint32_t *dims, uint32_t n_dims)
 {
-    const uint32_t n_coef = tf_region_ncoef(family, n_out, dims, n_dims);
-    if (n_coef == 0) {
-        tf_fail(ctx, "region model '%s': invalid shape (grid %u x %u, %u outputs)", name, dims[0],
-                dims[1], n_out);
-        return NULL;
+    tf_model *m = tf_model_new(name, family, n_out, dims, n_dims, ctx->err, sizeof ctx->err);
+    if (m != NULL) {
+        m->envelope_radius = 0.0; /* set_ball's: the law has no ball, the surface its R_F */
     }
-    if (strlen(name) >= TF_NAME_MAX) {
-        tf_fail(ctx, "model name '%s' longer than %d characters", name, TF_NAME_MAX - 1);
-        return NULL;
-    }
-    tf_model *m = calloc(1, sizeof *m);
-    float *coef = calloc(n_coef, sizeof *coef);
-    uint32_t *ids = calloc(n_out, sizeof *ids);
-    if (m == NULL || coef == NULL || ids == NULL) {
-        free(m);
-        free(coef);
-        free(ids);
-        tf_fail(ctx, "out of memory for region model '%s' (%u coefficients)", name, n_coef);
-        return NULL;
-    }
-    snprintf(m->name, sizeof m->name, "%s", name);
-    m->family = family;
-    m->n_out = n_out;
-    m->n_dims = n_dims;
-    memcpy(m->dims, dims, n_dims * sizeof *dims);
-    m->n_coef = n_coef;
-    m->coef = coef;
-    m->node_ids = ids;
-    m->heldout_max = m->heldout_rms = m->heldout_rel_max = m->heldout_q31_max = NAN;
-    m->stiffness_min = m->stiffness_max = m->discretisation_max = NAN;
     return m;
 }
 

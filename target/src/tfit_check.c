@@ -90,7 +90,12 @@ static int modal_ok(const tfit_model *m)
             return 0;
         }
     }
-    for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
+    return tfit_modes_bounded(modes, amax, r, 3u * m->n_out);
+}
+
+int tfit_modes_bounded(const float *modes, const float *amax, uint32_t r, uint32_t rows)
+{
+    for (uint32_t o = 0u; o < rows; ++o) {
         float b = 0.0f;
         for (uint32_t k = 0u; k < r; ++k) {
             b = b + fabs_(modes[o * r + k]) * amax[k];

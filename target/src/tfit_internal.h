@@ -152,6 +152,30 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
     return acc;
 }
 
+/* The modal rows in C (header-format.md §5.3), any rank, every target: per
+ * output point, out = ((U[0] a_0 + U[1] a_1) + ...) for its three rows,
+ * which share each amplitude; the output mask (§5.5) applied as each word
+ * is stored.  The modal family's, and the region surfaces' (§5.11). */
+static inline void tfit_modal_rows_c(const float *u, const float *a, uint32_t r, uint32_t n_out,
+                                     uint32_t keep, float *out)
+{
+    for (uint32_t j = 0u; j < n_out; ++j) {
+        const float *uy = u + r;
+        const float *uz = uy + r;
+        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
+        for (uint32_t k = 1u; k < r; ++k) {
+            x = x + u[k] * a[k];
+            y = y + uy[k] * a[k];
+            z = z + uz[k] * a[k];
+        }
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        u += 3u * r;
+        out += 3;
+    }
+}
+
 /* Degree-1 rows (nodal and contact p = 1, header-format.md §5.2): per output
  * point, out = ((C0 + C1 g0) + C2 g1) + C3 g2 for its three rows.  The basis
  * {1, g0, g1, g2} is g itself (phi_k = g_v * 1.0f is exact), so g is used
@@ -292,6 +316,11 @@ void tfit_resonant_static(const tfit_model *m, tfit_model *v);
 
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
+
+/* 1 when every one of `rows` rows of r modes, weighted by the amplitude
+ * bounds amax[r], sums to at most 2^100 in magnitude (tfit_check.c: the
+ * modal family's output bound, the region surfaces' too). */
+int tfit_modes_bounded(const float *modes, const float *amax, uint32_t r, uint32_t rows);
 
 /* Far input k of the self-test (tfit_check.c, header-format.md §8): the
  * next three signed 24-bit integers of a linear congruential sequence,

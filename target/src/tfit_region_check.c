@@ -160,16 +160,7 @@ static int surface_ok(const tfit_model *m)
             return 0;
         }
     }
-    for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
-        float b = 0.0f;
-        for (uint32_t k = 0u; k < r; ++k) {
-            b = b + fabs_(phi[o * r + k]) * ba[k];
-        }
-        if (!within(b, BOUND_LIMIT)) {
-            return 0;
-        }
-    }
-    return 1;
+    return tfit_modes_bounded(phi, ba, r, 3u * m->n_out);
 }
 
 int tfit_region_range_ok(const tfit_model *m)

@@ -56,21 +56,7 @@ void tfit_region_rows(const tfit_model *m, const float *a, uint32_t first, uint3
         return;
     }
 #endif
-    for (uint32_t j = 0u; j < count; ++j) {
-        const float *uy = u + r;
-        const float *uz = uy + r;
-        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
-        for (uint32_t k = 1u; k < r; ++k) {
-            x = x + u[k] * a[k];
-            y = y + uy[k] * a[k];
-            z = z + uz[k] * a[k];
-        }
-        out[0] = tfit_masked(x, keep);
-        out[1] = tfit_masked(y, keep);
-        out[2] = tfit_masked(z, keep);
-        u += 3u * r;
-        out += 3;
-    }
+    tfit_modal_rows_c(u, a, r, count, keep, out);
 }
 
 static tfit_status arguments(const tfit_model *m, const void *state, const float *force,
