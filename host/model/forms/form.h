@@ -94,6 +94,16 @@ typedef struct tf_form {
      * the run's (a stateful form's, reset before input 0). */
     tfit_status (*check_step)(const tf_model *m, float *state, int k, const float in[3],
                               float *out);
+    /* A form whose state is not a filter's (the region law's proxy): the
+     * state words the self-test folds after each status, the state zero
+     * at the start (0: none; a stateful form's come from its filter). */
+    uint32_t state_words;
+    /* The self-test's far inputs (§8) when they are not far forces through
+     * the input map at coef[0..12) (NULL): far input x (tfit_check.c's
+     * sequence) and the state after the carried inputs; returns crc
+     * continued over the words the target folds for it. */
+    uint32_t (*check_far)(const tf_model *m, float *state, const uint32_t *check,
+                          const float x[3], uint32_t crc);
 
     /* ---- cost (§6; docs/firmware.md, cost/cycles.h) ---- */
     /* Adds the operations of one evaluation. */
