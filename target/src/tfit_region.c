@@ -473,15 +473,15 @@ void tfit_region_step(const tfit_model *m, const float *state, const float tip[3
     t->bad = bad;
 }
 
-tfit_status tfit_region_reset(const tfit_model *m, float *state)
+tfit_status tfit_region_reset(const tfit_model *law, float *state)
 {
-    if ((m == 0) | (state == 0)) {
+    if ((law == 0) | (state == 0)) {
         return TFIT_ERR_ARG;
     }
-    if ((m->dims == 0) | (m->coef == 0)) {
+    if ((law->dims == 0) | (law->coef == 0)) {
         return TFIT_ERR_ARG;
     }
-    if (m->family != TFIT_FAMILY_REGION) {
+    if (law->family != TFIT_FAMILY_REGION) {
         return TFIT_ERR_FAMILY;
     }
     state[0] = 0.0f;
@@ -490,21 +490,21 @@ tfit_status tfit_region_reset(const tfit_model *m, float *state)
     return TFIT_OK;
 }
 
-tfit_status tfit_region_force(const tfit_model *m, float *state, const float tip[3],
+tfit_status tfit_region_force(const tfit_model *law, float *state, const float tip[3],
                               float force[3])
 {
-    if ((m == 0) | (state == 0) | (tip == 0) | (force == 0)) {
+    if ((law == 0) | (state == 0) | (tip == 0) | (force == 0)) {
         return TFIT_ERR_ARG;
     }
-    if ((m->dims == 0) | (m->coef == 0)) {
+    if ((law->dims == 0) | (law->coef == 0)) {
         return TFIT_ERR_ARG;
     }
-    if (m->family != TFIT_FAMILY_REGION) {
+    if (law->family != TFIT_FAMILY_REGION) {
         return TFIT_ERR_FAMILY;
     }
     tfit_region_tick t;
-    tfit_region_step(m, state, tip, &t);
-    tfit_region_to_scene(m->coef, t.force, t.touch & ~t.bad, force);
+    tfit_region_step(law, state, tip, &t);
+    tfit_region_to_scene(law->coef, t.force, t.touch & ~t.bad, force);
     state[0] = t.state[0];
     state[1] = t.state[1];
     state[2] = t.state[2];

@@ -81,7 +81,7 @@ typedef struct tfit_region_tick {
     uint32_t bad;    /* all ones for a NaN/Inf tip */
     uint32_t status; /* the tfit_status, as a word */
 } tfit_region_tick;
-void tfit_region_step(const tfit_model *law, const float *state, const float tip[3],
+void tfit_region_step(const tfit_model *m, const float *state, const float tip[3],
                       tfit_region_tick *t);
 /* force (chart frame) -> out (scene frame): R^T force, and-ed with keep
  * (after the rotation: the rotated zeros may be -0). */
@@ -90,9 +90,9 @@ void tfit_region_to_scene(const float *chart, const float f[3], uint32_t keep, f
 /* The amplitudes a[r] of a surface model at its normalised force f (on the
  * unit ball) and site, and-ed with keep (§5.11); and its rows first ..
  * first + count - 1 at a, and-ed with keep. */
-void tfit_region_amplitudes(const tfit_model *surf, const tfit_region_site *at, const float f[3],
+void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, const float f[3],
                             uint32_t keep, float *a);
-void tfit_region_rows(const tfit_model *surf, const float *a, uint32_t first, uint32_t count,
+void tfit_region_rows(const tfit_model *m, const float *a, uint32_t first, uint32_t count,
                       uint32_t keep, float *out);
 /* The clamped proxy site of a state (NaN as 0, beyond the region as its
  * edge) for a model's dims {nx, ny}. */

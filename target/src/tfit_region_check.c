@@ -68,7 +68,7 @@ uint32_t tfit_region_coefs(const tfit_model *m)
         return 0u;
     }
     const uint64_t n = (uint64_t)points * (r * TFIT_REGION_SURFACE_TERMS(p) + 3u * r * d[4]) +
-                       3ull * m->n_out * r + TFIT_REGION_SURFACE_CTRL;
+                       3ULL * m->n_out * r + TFIT_REGION_SURFACE_CTRL;
     return n > 0xffffffffu ? 0u : (uint32_t)n;
 }
 

@@ -77,45 +77,45 @@ static tfit_status status_of(uint32_t clamped, uint32_t bad)
     return (tfit_status)((int)(clamped & ~bad & 1u) - (int)(bad & 1u));
 }
 
-tfit_status tfit_region_surface(const tfit_model *m, const float *state, const float force[3],
+tfit_status tfit_region_surface(const tfit_model *surf, const float *state, const float force[3],
                                 float *out)
 {
-    const tfit_status s = arguments(m, state, force, out);
+    const tfit_status s = arguments(surf, state, force, out);
     if (s != TFIT_OK) {
         return s;
     }
     float f[3], g[2], a[TFIT_REGION_MAX_RANK];
     uint32_t bad;
     tfit_region_site at;
-    const uint32_t clamped = tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force, f, &bad);
-    tfit_region_state_site(m->dims, state, &at, g);
-    tfit_region_amplitudes(m, &at, f, ~bad, a);
-    tfit_region_rows(m, a, 0u, m->n_out, ~bad, out);
+    const uint32_t clamped = tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force, f, &bad);
+    tfit_region_state_site(surf->dims, state, &at, g);
+    tfit_region_amplitudes(surf, &at, f, ~bad, a);
+    tfit_region_rows(surf, a, 0u, surf->n_out, ~bad, out);
     return status_of(clamped, bad);
 }
 
-tfit_status tfit_region_surface_pair(const tfit_model *m, const float *state2,
+tfit_status tfit_region_surface_pair(const tfit_model *surf, const float *state2,
                                      const float force2[6], float *out)
 {
-    const tfit_status s = arguments(m, state2, force2, out);
+    const tfit_status s = arguments(surf, state2, force2, out);
     if (s != TFIT_OK) {
         return s;
     }
-    if (m->dims[3] != 1u) { /* superposition holds for affine models only */
+    if (surf->dims[3] != 1u) { /* superposition holds for affine models only */
         return TFIT_ERR_FAMILY;
     }
     float f[3], g[2], a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK];
     uint32_t bad, bad2;
     tfit_region_site at;
-    uint32_t clamped = tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force2, f, &bad);
-    tfit_region_state_site(m->dims, state2, &at, g);
-    tfit_region_amplitudes(m, &at, f, ~bad, a);
-    clamped |= tfit_input_map(m->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f, &bad2);
-    tfit_region_state_site(m->dims, state2 + TFIT_REGION_STATE_WORDS, &at, g);
-    tfit_region_amplitudes(m, &at, f, ~bad2, b);
-    for (uint32_t k = 0u; k < m->dims[2]; ++k) { /* masked: the rows' assembly needs it */
+    uint32_t clamped = tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force2, f, &bad);
+    tfit_region_state_site(surf->dims, state2, &at, g);
+    tfit_region_amplitudes(surf, &at, f, ~bad, a);
+    clamped |= tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f, &bad2);
+    tfit_region_state_site(surf->dims, state2 + TFIT_REGION_STATE_WORDS, &at, g);
+    tfit_region_amplitudes(surf, &at, f, ~bad2, b);
+    for (uint32_t k = 0u; k < surf->dims[2]; ++k) { /* masked: the rows' assembly needs it */
         a[k] = tfit_masked(a[k] + b[k], ~(bad | bad2));
     }
-    tfit_region_rows(m, a, 0u, m->n_out, ~(bad | bad2), out);
+    tfit_region_rows(surf, a, 0u, surf->n_out, ~(bad | bad2), out);
     return status_of(clamped, bad | bad2);
 }

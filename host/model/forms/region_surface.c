@@ -97,7 +97,8 @@ static const tf_block blocks[N_BLOCKS] = {
     [AMP_MODE] = {"tfit_region_amplitudes", 1, 1, TF_SAME("alu=9 load=2 store=2 fmov=1 branch=3")},
     [ROWS_POINT] = {"tfit_region_rows", 1, 1,
                     TF_SAME("alu=13 load=1 store=3 fload=4 fmul=3 fmov=3 branch=1")},
-    [ROWS_MODE] = {"tfit_region_rows", 2, 2, TF_SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    [ROWS_MODE] = {"tfit_region_rows", 2, 2,
+                   TF_SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
 };
 
 /* Ranks whose rows run in the modal assembly (TFIT_MODAL_ASM_MAX_RANK). */
