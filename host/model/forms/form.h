@@ -32,6 +32,7 @@ typedef struct tf_model tf_model;
 typedef struct tf_opcount tf_opcount;
 typedef struct tf_arith tf_arith;
 typedef struct tf_q31 tf_q31;
+typedef struct tf_ctx tf_ctx; /* base/context.h */
 
 /* A stateful form's filter (model/forms/stateful.h): the per-tick
  * recurrence and its coefficients.  NULL for a stateless form. */
@@ -170,6 +171,18 @@ int tf_form_bound_fail(double b, const char *what, const tf_model *m, uint32_t i
  * (nodal, contact, cut): 0, or 1 with a message. */
 int tf_form_rows_bounds(const tf_model *m, const float *c, uint64_t n_rows, uint32_t n_terms,
                         char *err, size_t errlen);
+
+/* The float operations of the M4F's instruction mix of one call (fadd,
+ * fmul, fdiv): the operations of a form whose cost model is its traced
+ * paths (the region forms). */
+void tf_form_mix_ops(const tf_model *m, tf_opcount *ops);
+/* A form's bounds from a validator in the context convention
+ * (check(ctx, m): 0, or -1 with the message in ctx): 0, or 1 with the
+ * message in err. */
+int tf_form_ctx_bounds(int (*check)(tf_ctx *ctx, const tf_model *m), const tf_model *m,
+                       char *err, size_t errlen);
+/* crc continued over the bits of n floats (tf_crc32_u32). */
+uint32_t tf_form_crc_floats(uint32_t crc, const float *x, size_t n);
 
 /* Operations (§6): the projection (§4), and the basis of degree p (§5.1). */
 void tf_form_input_ops(tf_opcount *ops);

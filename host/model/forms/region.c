@@ -34,13 +34,7 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 
 static int bounds(const tf_model *m, char *err, size_t errlen)
 {
-    tf_ctx ctx;
-    tf_ctx_init(&ctx);
-    if (tf_region_law_validate(&ctx, m) != 0) {
-        snprintf(err, errlen, "%s", ctx.err);
-        return 1;
-    }
-    return 0;
+    return tf_form_ctx_bounds(tf_region_law_validate, m, err, errlen);
 }
 
 /* ---- cost (§6) ---- */
@@ -79,19 +73,6 @@ static void insn_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
     tf_insn_add(mix, &blocks[TICK_P2 + (m->dims[2] - 2)], core, 1);
 }
 
-/* The float operations one tick executes (the M4F build's; the same on
- * the M7): additions, multiplications, divisions (none: the reciprocals
- * are Newton steps). */
-static void law_ops(const tf_model *m, tf_opcount *ops)
-{
-    tf_insn_mix mix;
-    memset(&mix, 0, sizeof mix);
-    insn_mix(m, TF_CORE_M4F, &mix);
-    ops->add += mix.n[TF_INSN_FADD];
-    ops->mul += mix.n[TF_INSN_FMUL];
-    ops->div += mix.n[TF_INSN_FDIV];
-}
-
 /* The law's static response: one tick from the reset state (no contact
  * before it), i.e. the force of a fresh press at the tip. */
 static tfit_status ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
@@ -99,7 +80,7 @@ static tfit_status ref_eval(const tf_model *m, const float in[3], float *out, tf
     float state[TFIT_REGION_STATE_WORDS];
     tf_region_ref_reset(state);
     if (ops != NULL) {
-        law_ops(m, ops);
+        tf_form_mix_ops(m, ops);
     }
     return tf_region_ref_force(m, state, in, out);
 }
@@ -126,16 +107,6 @@ static tfit_status check_step(const tf_model *m, float *state, int k, const floa
  * elsewhere.  Check input 1 is pressed in: the far ticks slide about it. */
 static const size_t check_pick[TFIT_CHECK_INPUTS] = {2, 5, 10, 19, 24, 29, 37, 45};
 
-static uint32_t crc_floats(uint32_t crc, const float *x, size_t n)
-{
-    for (size_t i = 0; i < n; ++i) {
-        uint32_t w;
-        memcpy(&w, &x[i], sizeof w);
-        crc = tf_crc32_u32(crc, w);
-    }
-    return crc;
-}
-
 /* A far tick: check input 1 plus x 2^-100 (offsets of at most 1 mm in
  * steps of 2^-23 mm; the float sum rounded once, as the target's); its
  * status, new state and force. */
@@ -150,8 +121,8 @@ static uint32_t check_far(const tf_model *m, float *state, const uint32_t *check
     }
     const tfit_status s = tf_region_ref_force(m, state, tip, f);
     crc = tf_crc32_u32(crc, (uint32_t)(int32_t)s);
-    crc = crc_floats(crc, state, TFIT_REGION_STATE_WORDS);
-    return crc_floats(crc, f, 3);
+    crc = tf_form_crc_floats(crc, state, TFIT_REGION_STATE_WORDS);
+    return tf_form_crc_floats(crc, f, 3);
 }
 
 /* The control points' blocks {h, e_1 .. e_T}, after the chart's scalars. */
@@ -187,7 +158,7 @@ const tf_form tf_form_region = {
     .check_step = check_step,
     .state_words = TFIT_REGION_STATE_WORDS,
     .check_far = check_far,
-    .ops = law_ops,
+    .ops = tf_form_mix_ops,
     .insn_mix = insn_mix,
     .blocks = blocks,
     .n_blocks = N_BLOCKS,

@@ -34,13 +34,7 @@ static uint64_t coefs(const tf_form *f, uint32_t n_out, const uint32_t *dims)
 
 static int bounds(const tf_model *m, char *err, size_t errlen)
 {
-    tf_ctx ctx;
-    tf_ctx_init(&ctx);
-    if (tf_region_surface_validate(&ctx, m) != 0) {
-        snprintf(err, errlen, "%s", ctx.err);
-        return 1;
-    }
-    return 0;
+    return tf_form_ctx_bounds(tf_region_surface_validate, m, err, errlen);
 }
 
 /* ---- cost (§6) ---- */
@@ -131,23 +125,12 @@ static void insn_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
     }
 }
 
-/* The float operations one call executes (the M4F build's). */
-static void surface_ops(const tf_model *m, tf_opcount *ops)
-{
-    tf_insn_mix mix;
-    memset(&mix, 0, sizeof mix);
-    insn_mix(m, TF_CORE_M4F, &mix);
-    ops->add += mix.n[TF_INSN_FADD];
-    ops->mul += mix.n[TF_INSN_FMUL];
-    ops->div += mix.n[TF_INSN_FDIV];
-}
-
 /* The surface's static response: the contact at the grid's centre site. */
 static tfit_status ref_eval(const tf_model *m, const float in[3], float *out, tf_opcount *ops)
 {
     const float state[3] = {(float)(m->dims[0] - 1) * 0.5f, (float)(m->dims[1] - 1) * 0.5f, 1.0f};
     if (ops != NULL) {
-        surface_ops(m, ops);
+        tf_form_mix_ops(m, ops);
     }
     return tf_region_ref_surface(m, state, in, out);
 }
@@ -183,12 +166,7 @@ static uint32_t check_far(const tf_model *m, float *state, const uint32_t *check
     int clamped, bad;
     map.coef = m->coef + TF_REGION_FORCE_MAP;
     tf_ref_input(&map, x, f, &clamped, &bad, NULL);
-    for (int i = 0; i < 3; ++i) {
-        uint32_t w;
-        memcpy(&w, &f[i], sizeof w);
-        crc = tf_crc32_u32(crc, w);
-    }
-    return crc;
+    return tf_form_crc_floats(crc, f, 3);
 }
 
 /* The scalars, the force map, the control points' blocks {A[r][T(p) - 1],
@@ -233,7 +211,7 @@ const tf_form tf_form_region_surface = {
     .check_step = check_step,
     .state_words = 0,
     .check_far = check_far,
-    .ops = surface_ops,
+    .ops = tf_form_mix_ops,
     .insn_mix = insn_mix,
     .blocks = blocks,
     .n_blocks = N_BLOCKS,

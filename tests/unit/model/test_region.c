@@ -3,9 +3,9 @@
  * §5.10-§5.12, tfit.h): the host builder's refusals, tfit_model_check()'s
  * rejections, the entry points' arguments, families, NaN and no-contact
  * outputs and state, the surface's state sanitising and superposition, and
- * the two-instrument forces against the linear system they solve; and, as
- * test_bitflip.c does for the other families, that every single-bit flip
- * of a small region model's tables and descriptor is caught.
+ * the two-instrument forces against the linear system they solve (every
+ * single-bit flip of their tables and descriptors: test_bitflip.c, which
+ * runs every form).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -315,69 +315,6 @@ static void pair_solves_the_coupling(void **state)
     tf_model_free(surf);
 }
 
-/* Flips each bit of n words (or of a pointer's bytes) in turn; returns how
- * many flips passed the check. */
-static unsigned flip_words(tfit_model *t, uint32_t *words, uint32_t n, unsigned *tried)
-{
-    unsigned missed = 0;
-    for (uint32_t w = 0; w < n; ++w) {
-        for (int b = 0; b < 32; ++b) {
-            words[w] ^= 1u << b;
-            missed += tfit_model_check(t) == TFIT_OK;
-            words[w] ^= 1u << b;
-            ++*tried;
-        }
-    }
-    return missed;
-}
-
-static unsigned flip_bytes(tfit_model *t, unsigned char *bytes, size_t n, unsigned *tried)
-{
-    unsigned missed = 0;
-    for (size_t b = 0; b < 8 * n; ++b) {
-        bytes[b / 8] ^= (unsigned char)(1u << (b % 8));
-        missed += tfit_model_check(t) == TFIT_OK;
-        bytes[b / 8] ^= (unsigned char)(1u << (b % 8));
-        ++*tried;
-    }
-    return missed;
-}
-
-static void every_flip_is_caught(void **state)
-{
-    (void)state;
-    tf_rng r = {9};
-    tf_random_region g;
-    tf_random_region_draw(&r, 2, &g); /* a 2 x 2 grid */
-    g.bump = 0.5;
-    tf_model *models[2] = {tf_random_region_law(&ctx, &g, "law"), NULL};
-    models[1] = tf_random_region_surface(&ctx, &r, &g, "surface", 2, 1, 1, 2);
-    for (int k = 0; k < 2; ++k) {
-        tf_model *m = models[k];
-        tfit_model t;
-        view(m, &t);
-        unsigned tried = 0, missed = 0;
-        missed += flip_words(&t, m->dims, m->n_dims, &tried);
-        missed += flip_words(&t, (uint32_t *)(void *)m->coef, m->n_coef, &tried);
-        missed += flip_words(&t, m->node_ids, m->n_out, &tried);
-        uint32_t *scalars[] = {&t.api_version, &t.family, &t.n_out, &t.n_dims, &t.n_coef, &t.crc32};
-        for (size_t i = 0; i < sizeof scalars / sizeof scalars[0]; ++i) {
-            missed += flip_words(&t, scalars[i], 1, &tried);
-        }
-        missed += flip_words(&t, t.check, TFIT_CHECK_WORDS, &tried);
-        void *pointers[] = {&t.dims, &t.coef, &t.node_ids, &t.dims_end, &t.coef_end,
-                            &t.node_ids_end};
-        for (size_t i = 0; i < sizeof pointers / sizeof pointers[0]; ++i) {
-            missed += flip_bytes(&t, pointers[i], sizeof(void *), &tried);
-        }
-        print_message("%s: %u coefficients, %u single-bit flips, %u missed\n", m->name, m->n_coef,
-                      tried, missed);
-        assert_int_equal(missed, 0);
-        assert_int_equal(tfit_model_check(&t), TFIT_OK); /* restored */
-        tf_model_free(m);
-    }
-}
-
 int main(void)
 {
     tf_ctx_init(&ctx);
@@ -390,7 +327,6 @@ int main(void)
         cmocka_unit_test(ticks),
         cmocka_unit_test(surface),
         cmocka_unit_test(pair_solves_the_coupling),
-        cmocka_unit_test(every_flip_is_caught),
     };
     return cmocka_run_group_tests_name("region", tests, NULL, NULL);
 }
