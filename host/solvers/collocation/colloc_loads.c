@@ -33,6 +33,7 @@ static int in_patch(const tf_patch *p, double u, double v)
     case TF_PATCH_POINT:
     case TF_PATCH_AT:
     case TF_PATCH_SURFACE: /* an organ's patch: create() admits boxes only */
+    case TF_PATCH_POINTS:
         return 0;
     }
     return 0;
