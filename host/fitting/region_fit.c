@@ -16,8 +16,8 @@
 
 tf_region_targets tf_region_targets_default(void)
 {
-    return (tf_region_targets){.force = 0.01, .surface = 0.05, .max_sites = 33, .max_rank = TF_REGION_MAX_RANK,
-                               .levels = 0};
+    return (tf_region_targets){.force = 0.01, .surface = 0.05, .coupling = 0.02, .max_sites = 33,
+                               .max_rank = TF_REGION_MAX_RANK, .levels = 0};
 }
 
 double tf_mat3_norm2(const double M[9])
@@ -88,6 +88,7 @@ void tf_region_result_free(tf_region_result *res)
     for (unsigned k = 0; k < res->n_levels; ++k) {
         tf_region_law_free(&res->level[k].law);
         tf_region_surface_free(&res->level[k].surface_model);
+        tf_region_modes_free(&res->level[k].modes);
         free(res->level[k].train);
     }
     tf_region_sites_free(&res->sites);
@@ -110,7 +111,7 @@ static long find_site(const tf_region_sites *t, double a, double b, double tol)
 /* Indices of the points ab (2 n) among the solved sites, solving those not
  * yet solved. */
 static int sites_for(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_contact_region *r,
-                     const double *ab, size_t n, tf_region_sites *all, size_t *idx)
+                     const double *ab, size_t n, double radius, tf_region_sites *all, size_t *idx)
 {
     double tol = 1e-9 * (r->chart.len[0] + r->chart.len[1]);
     double *todo = malloc((2 * n + 1) * sizeof *todo);
@@ -128,7 +129,8 @@ static int sites_for(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
     int rc = 0;
     if (nt > 0) {
         tf_region_sites fresh;
-        rc = tf_region_sites_solve(ctx, s, p, r, todo, nt, &fresh);
+        rc = tf_region_sites_solve(ctx, s, p, r, todo, nt, radius > 0 ? all : NULL, radius,
+                                   &fresh);
         if (rc == 0) {
             rc = tf_region_sites_append(ctx, all, &fresh);
         }
@@ -210,61 +212,128 @@ static void law_errors(const tf_region_law *law, const tf_region_chart *chart,
     }
 }
 
-/* The surface of rank r and its error at the check sites. */
-static int surface_at_rank(tf_ctx *ctx, const tf_region_modes *m, const tf_region_sites *t,
-                           const size_t *chk, size_t nc, double R_F, double peak,
-                           const tf_region_level *lv, unsigned r, double *work,
-                           tf_region_surface *sf, double *err)
+/* Whether site i is among idx (n of them). */
+static int among(size_t i, const size_t *idx, size_t n)
 {
-    if (tf_region_surface_fit(ctx, m, lv->nx, lv->ny, lv->h, R_F, r, sf) != 0) {
-        return -1;
-    }
-    *err = 0;
-    for (size_t i = 0; i < nc; ++i) {
-        *err = fmax(*err, surface_error(sf, t, chk[i], work) / peak);
+    for (size_t k = 0; k < n; ++k) {
+        if (idx[k] == i) {
+            return 1;
+        }
     }
     return 0;
 }
 
-/* The rank: the smallest meeting the surface target at the check sites,
- * searched by doubling (1, 2, 4, ... and the largest) and then bisection
- * between the last two ranks tried (the error is not monotone in the
- * rank, so this is the smallest of those tried); when none meets it, the
- * rank of the smallest error tried.  The surface is fitted into lv. */
-static int choose_rank(tf_ctx *ctx, const tf_region_modes *m, const tf_region_sites *t,
-                       const size_t *chk, size_t nc, double R_F, double target, double peak,
-                       tf_region_level *lv)
+/* The pairs recorded between this spacing's grid sites and its cell
+ * centres (indices into t's pairs). */
+static size_t level_pairs(const tf_region_sites *t, const tf_region_level *lv, const size_t *chk,
+                          size_t nc, size_t *out)
 {
-    double *work = malloc(9 * t->n_out * sizeof *work), e;
-    if (work == NULL) {
-        return tf_fail(ctx, "out of memory");
+    size_t m = 0, n = (size_t)lv->nx * lv->ny;
+    for (size_t k = 0; k < t->n_pairs; ++k) {
+        if (among(t->pair[2 * k], lv->train, n) && among(t->pair[2 * k + 1], chk, nc)) {
+            out[m++] = k;
+        }
     }
-    unsigned lo = 0, hi = 0, best = 0;
-    double best_e = INFINITY;
-    int rc = 0;
-    for (unsigned r = 1; rc == 0; r = r * 2 < m->r_max ? r * 2 : m->r_max) {
+    return m;
+}
+
+/* The coupling error of a surface: over the pairs, the force error the
+ * cross compliance's error makes in the two-instrument solve (spec §5),
+ * to first order ||K_i (C_model(i, j) - C(i, j))||_2 (|F_j| = R_F, as a
+ * fraction of R_F), both ways (C(j, i) = C(i, j)^T). */
+static double coupling_error(const tf_region_surface *sf, const tf_region_law *law,
+                             const tf_region_sites *t, const size_t *pk, size_t np)
+{
+    double worst = 0;
+    for (size_t q = 0; q < np; ++q) {
+        size_t k = pk[q];
+        const double *gi = t->ab + 2 * t->pair[2 * k], *gj = t->ab + 2 * t->pair[2 * k + 1];
+        const double *C = t->cross + 9 * k;
+        for (int way = 0; way < 2; ++way) {
+            const double *g1 = way ? gj : gi, *g2 = way ? gi : gj;
+            double Cm[9], K[9], D[9], M[9];
+            tf_region_surface_cross(sf, g1[0], g1[1], g2[0], g2[1], Cm);
+            tf_region_law_stiffness(law, g1[0], g1[1], K);
+            for (int a = 0; a < 3; ++a) {
+                for (int b = 0; b < 3; ++b) {
+                    D[3 * a + b] = Cm[3 * a + b] - (way ? C[3 * b + a] : C[3 * a + b]);
+                }
+            }
+            for (int a = 0; a < 3; ++a) {
+                for (int b = 0; b < 3; ++b) {
+                    M[3 * a + b] = K[3 * a] * D[b] + K[3 * a + 1] * D[3 + b] + K[3 * a + 2] * D[6 + b];
+                }
+            }
+            worst = fmax(worst, tf_mat3_norm2(M));
+        }
+    }
+    return worst;
+}
+
+/* What a rank is judged on at one spacing. */
+typedef struct rank_judge {
+    const tf_region_modes *m;
+    const tf_region_sites *t;
+    const size_t *chk;
+    size_t nc;
+    const size_t *pairs;
+    size_t np;
+    double R_F, peak;
+    const tf_region_targets *tg;
+    double *work;
+} rank_judge;
+
+/* The surface of rank r, its surface and coupling errors at the check
+ * sites, and whether both meet their targets. */
+static int surface_at_rank(tf_ctx *ctx, const rank_judge *j, const tf_region_level *lv,
+                           unsigned r, tf_region_surface *sf, double *err, double *cpl, int *met)
+{
+    if (tf_region_surface_fit(ctx, j->m, lv->nx, lv->ny, lv->h, j->R_F, r, sf) != 0) {
+        return -1;
+    }
+    *err = 0;
+    for (size_t i = 0; i < j->nc; ++i) {
+        *err = fmax(*err, surface_error(sf, j->t, j->chk[i], j->work) / j->peak);
+    }
+    *cpl = coupling_error(sf, &lv->law, j->t, j->pairs, j->np);
+    *met = *err <= j->tg->surface && *cpl <= j->tg->coupling;
+    return 0;
+}
+
+/* The rank: the smallest meeting the surface and coupling targets at the
+ * check sites, searched by doubling (1, 2, 4, ... and the largest) and then
+ * bisection between the last two ranks tried (the errors are not monotone
+ * in the rank, so this is the smallest of those tried); when none meets
+ * them, the rank of the smallest surface error tried.  The surface is
+ * fitted into lv. */
+static int choose_rank(tf_ctx *ctx, const rank_judge *jd, tf_region_level *lv)
+{
+    unsigned lo = 0, hi = 0, best = 0, r_max = jd->m->r_max;
+    double best_e = INFINITY, e, c;
+    int rc = 0, met = 0;
+    for (unsigned r = 1; rc == 0; r = r * 2 < r_max ? r * 2 : r_max) {
         tf_region_surface sf;
-        rc = surface_at_rank(ctx, m, t, chk, nc, R_F, peak, lv, r, work, &sf, &e);
+        rc = surface_at_rank(ctx, jd, lv, r, &sf, &e, &c, &met);
         tf_region_surface_free(&sf);
         if (rc == 0 && e < best_e) {
             best_e = e;
             best = r;
         }
-        if (rc != 0 || e <= target) {
+        if (rc != 0 || met) {
             hi = r;
             break;
         }
         lo = r;
-        if (r == m->r_max) {
+        if (r == r_max) {
             break;
         }
     }
-    while (rc == 0 && hi > 0 && hi - lo > 1) { /* the target is met at hi, not at lo */
+    while (rc == 0 && hi > 0 && hi - lo > 1) { /* the targets are met at hi, not at lo */
         unsigned mid = lo + (hi - lo) / 2;
         tf_region_surface sf;
-        rc = surface_at_rank(ctx, m, t, chk, nc, R_F, peak, lv, mid, work, &sf, &e);
+        rc = surface_at_rank(ctx, jd, lv, mid, &sf, &e, &c, &met);
         tf_region_surface_free(&sf);
-        if (rc == 0 && e <= target) {
+        if (rc == 0 && met) {
             hi = mid;
         } else {
             lo = mid;
@@ -273,10 +342,9 @@ static int choose_rank(tf_ctx *ctx, const tf_region_modes *m, const tf_region_si
     if (rc == 0) {
         lv->rank = hi > 0 ? hi : best;
         tf_region_surface_free(&lv->surface_model);
-        rc = surface_at_rank(ctx, m, t, chk, nc, R_F, peak, lv, lv->rank, work, &lv->surface_model,
-                             &lv->surface);
+        rc = surface_at_rank(ctx, jd, lv, lv->rank, &lv->surface_model, &lv->surface,
+                             &lv->coupling, &met);
     }
-    free(work);
     return rc;
 }
 
@@ -310,28 +378,44 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
         return tf_fail(ctx, "out of memory");
     }
     grid_points(lv->nx, lv->ny, lv->h, pts, pts + 2 * n);
-    int rc = sites_for(ctx, s, p, r, pts, n, &res->sites, lv->train);
+    /* the cell centres' cross compliances with their neighbours among the
+     * grid's sites: what the two-instrument coupling is judged on */
+    double w[2];
+    tf_region_tip_extent(r, w);
+    int rc = sites_for(ctx, s, p, r, pts, n, 0, &res->sites, lv->train);
     if (rc == 0) {
-        rc = sites_for(ctx, s, p, r, pts + 2 * n, nc, &res->sites, chk);
+        rc = sites_for(ctx, s, p, r, pts + 2 * n, nc, TF_REGION_PAIR_REACH * fmax(w[0], w[1]),
+                       &res->sites, chk);
     }
     double solves = tf_solver_info_of(s)->t_setup, t1 = omp_get_wtime();
     for (size_t i = 0; rc == 0 && i < n + nc; ++i) {
         solves += res->sites.seconds[i < n ? lv->train[i] : chk[i - n]];
     }
-    tf_region_modes modes = {0};
+    tf_region_modes *modes = &lv->modes;
     double s_u = tf_region_scale(&res->sites, lv->train, n, R_F);
     if (rc == 0) {
         rc = tf_region_law_fit(ctx, &res->sites, lv->train, lv->nx, lv->ny, lv->h, &r->chart, s_u,
                                r->friction, &lv->law);
     }
     if (rc == 0) {
-        rc = tf_region_modes_build(ctx, s, &res->sites, lv->train, n, R_F, tg->max_rank, &modes);
+        rc = tf_region_modes_build(ctx, s, &res->sites, lv->train, n, R_F, tg->max_rank, modes);
     }
     if (rc == 0) {
         double peak_t = peak_of(&res->sites, lv->train, n, R_F);
         double peak_c = peak_of(&res->sites, chk, nc, R_F);
         lv->peak = fmax(peak_t, peak_c);
-        rc = choose_rank(ctx, &modes, &res->sites, chk, nc, R_F, tg->surface, lv->peak, lv);
+        size_t *pk = malloc((res->sites.n_pairs + 1) * sizeof *pk);
+        double *work = malloc(9 * res->sites.n_out * sizeof *work);
+        if (!pk || !work) {
+            rc = tf_fail(ctx, "out of memory");
+        } else {
+            rank_judge jd = {modes, &res->sites, chk, nc, pk, 0, R_F, lv->peak, tg, work};
+            jd.np = level_pairs(&res->sites, lv, chk, nc, pk);
+            lv->pairs = jd.np;
+            rc = choose_rank(ctx, &jd, lv);
+        }
+        free(pk);
+        free(work);
     }
     if (rc == 0) {
         law_errors(&lv->law, &r->chart, &res->sites, chk, nc, &lv->force, &lv->height);
@@ -345,10 +429,10 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
         }
         lv->law_floats = tf_region_law_floats(&lv->law);
         lv->surface_floats = tf_region_surface_floats(&lv->surface_model);
-        lv->met = lv->force <= tg->force && lv->surface <= tg->surface;
+        lv->met = lv->force <= tg->force && lv->surface <= tg->surface &&
+                  lv->coupling <= tg->coupling;
         lv->seconds = solves + (omp_get_wtime() - t1); /* (the fit includes the r solves) */
     }
-    tf_region_modes_free(&modes);
     free(pts);
     free(chk);
     return rc;
@@ -392,9 +476,11 @@ int tf_region_fit(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
         }
         tf_info(ctx,
                 "region %s: %u x %u sites (spacing %.3g x %.3g mm): force %.3g %%, surface %.3g "
-                "%% at rank %u (held out at %u cell centres), height %.2g mm",
+                "%% and coupling %.3g %% at rank %u (held out at %u cell centres, %zu pairs), "
+                "height %.2g mm",
                 p->contacts[contact].name, nx, ny, lv->h[0], lv->h[1], 100 * lv->force,
-                100 * lv->surface, lv->rank, (nx - 1) * (ny - 1), lv->height);
+                100 * lv->surface, 100 * lv->coupling, lv->rank, (nx - 1) * (ny - 1), lv->pairs,
+                lv->height);
         if (!(lv->min_stiffness > 0)) {
             tf_region_result_free(res);
             return tf_fail(ctx, "region %s: the blended stiffness is not positive definite "
@@ -405,20 +491,23 @@ int tf_region_fit(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
         if (tg->levels == 0 && lv->met) {
             snprintf(res->why, sizeof res->why,
                      "target met at spacing %.3g x %.3g mm (%u x %u sites): force %.2g %% <= %.2g "
-                     "%%, surface %.2g %% <= %.2g %% at rank %u", lv->h[0], lv->h[1], nx, ny,
-                     100 * lv->force, 100 * tg->force, 100 * lv->surface, 100 * tg->surface,
-                     lv->rank);
+                     "%%, surface %.2g %% <= %.2g %%, coupling %.2g %% <= %.2g %% at rank %u",
+                     lv->h[0], lv->h[1], nx, ny, 100 * lv->force, 100 * tg->force,
+                     100 * lv->surface, 100 * tg->surface, 100 * lv->coupling,
+                     100 * tg->coupling, lv->rank);
             break;
         }
         if (2 * nx - 1 > tg->max_sites || 2 * ny - 1 > tg->max_sites || k + 1 == levels) {
             snprintf(res->why, sizeof res->why,
                      "%s at spacing %.3g x %.3g mm (%u x %u sites): force %.2g %% (target %.2g "
-                     "%%), surface %.2g %% (target %.2g %%) at rank %u",
+                     "%%), surface %.2g %% (target %.2g %%), coupling %.2g %% (target %.2g %%) "
+                     "at rank %u",
                      r->spacing > 0          ? "the scene's spacing"
                      : tg->levels > 0        ? "the spacings asked for end"
                                              : "the cap of the site count",
                      lv->h[0], lv->h[1], nx, ny, 100 * lv->force, 100 * tg->force,
-                     100 * lv->surface, 100 * tg->surface, lv->rank);
+                     100 * lv->surface, 100 * tg->surface, 100 * lv->coupling,
+                     100 * tg->coupling, lv->rank);
             break;
         }
         nx = 2 * nx - 1;

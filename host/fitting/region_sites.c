@@ -97,6 +97,8 @@ void tf_region_sites_free(tf_region_sites *t)
     free(t->C);
     free(t->U);
     free(t->seconds);
+    free(t->pair);
+    free(t->cross);
     memset(t, 0, sizeof *t);
 }
 
@@ -160,10 +162,55 @@ static double compliance(const double *f, const double *u, size_t n3, double C[9
     return norm > 0 ? sqrt(asym / norm) : 0;
 }
 
+/* Whether the tips at (a1, b1) and (a2, b2) overlap. */
+static int tips_overlap(const tf_contact_region *r, const double g1[2], const double g2[2])
+{
+    double w[2], da = fabs(g1[0] - g2[0]), db = fabs(g1[1] - g2[1]);
+    tf_region_tip_extent(r, w);
+    return r->tip == TF_TIP_RECT ? da < 2 * w[0] && db < 2 * w[1] : hypot(da, db) < 2 * w[0];
+}
+
+/* Records C(j, s) for the partners j of new site s (global index gs), its
+ * displacements u (3N x 3). */
+static int record_pairs(const tf_region_sites *partners, double radius, const tf_contact_region *r,
+                        const double g[2], size_t gs, const double *u, size_t n3,
+                        tf_region_sites *t)
+{
+    for (size_t j = 0; partners != NULL && j < partners->n; ++j) {
+        const double *gj = partners->ab + 2 * j;
+        if (hypot(gj[0] - g[0], gj[1] - g[1]) > radius || tips_overlap(r, gj, g)) {
+            continue;
+        }
+        size_t *pair = realloc(t->pair, 2 * (t->n_pairs + 1) * sizeof *pair);
+        t->pair = pair ? pair : t->pair;
+        double *cross = realloc(t->cross, 9 * (t->n_pairs + 1) * sizeof *cross);
+        t->cross = cross ? cross : t->cross;
+        if (!pair || !cross) {
+            return -1;
+        }
+        const tf_region_load *l = &partners->L[j];
+        double *C = t->cross + 9 * t->n_pairs;
+        for (int k = 0; k < 3; ++k) {
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0;
+                for (size_t m = 0; m < l->n; ++m) {
+                    sum += l->val[3 * m + (size_t)k] * u[(size_t)c * n3 + l->dof[m]];
+                }
+                C[3 * k + c] = sum;
+            }
+        }
+        t->pair[2 * t->n_pairs] = j;
+        t->pair[2 * t->n_pairs + 1] = gs;
+        t->n_pairs++;
+    }
+    return 0;
+}
+
 /* One batch: sites [b0, b0 + nb) of t. */
 static int solve_batch(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
                        const tf_contact_region *r, const double *base, size_t b0, size_t nb,
-                       double *f, double *u, tf_region_sites *t)
+                       const tf_region_sites *partners, double radius, double *f, double *u,
+                       tf_region_sites *t)
 {
     size_t n3 = 3 * p->cloud.n, n_out = t->n_out;
     int failed = 0;
@@ -197,9 +244,14 @@ static int solve_batch(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
             u[c * n3 + d] -= base[d];
         }
     }
+    size_t g0 = partners != NULL ? partners->n : 0;
     for (size_t i = 0; i < nb; ++i) {
         double a = compliance(f + 3 * n3 * i, u + 3 * n3 * i, n3, t->C + 9 * (b0 + i));
         t->asym = fmax(t->asym, a);
+        if (record_pairs(partners, radius, r, t->ab + 2 * (b0 + i), g0 + b0 + i,
+                         u + 3 * n3 * i, n3, t) != 0) {
+            return tf_fail(ctx, "out of memory");
+        }
     }
 #pragma omp parallel for schedule(dynamic) num_threads(tf_ctx_threads(ctx))
     for (size_t c = 0; c < 3 * nb; ++c) {
@@ -220,7 +272,7 @@ static int solve_batch(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
 
 int tf_region_sites_solve(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
                           const tf_contact_region *r, const double *ab, size_t n,
-                          tf_region_sites *out)
+                          const tf_region_sites *partners, double radius, tf_region_sites *out)
 {
     size_t n3 = 3 * p->cloud.n;
     if (alloc_sites(out, n, p->outputs.n_nodes) != 0) {
@@ -235,7 +287,7 @@ int tf_region_sites_solve(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
     for (size_t b0 = 0; rc == 0 && b0 < n; b0 += BATCH) {
         size_t nb = n - b0 < BATCH ? n - b0 : BATCH;
         double tb = omp_get_wtime();
-        rc = solve_batch(ctx, s, p, r, base, b0, nb, f, u, out);
+        rc = solve_batch(ctx, s, p, r, base, b0, nb, partners, radius, f, u, out);
         double now = omp_get_wtime();
         for (size_t i = 0; i < nb; ++i) {
             out->seconds[b0 + i] = (now - tb) / (double)nb;
@@ -286,6 +338,19 @@ int tf_region_sites_append(tf_ctx *ctx, tf_region_sites *dst, tf_region_sites *s
     memcpy(dst->seconds + dst->n, src->seconds, src->n * sizeof *sec);
     dst->asym = fmax(dst->asym, src->asym);
     dst->n = n;
+    if (src->n_pairs > 0) {
+        size_t np = dst->n_pairs + src->n_pairs;
+        size_t *pair = realloc(dst->pair, 2 * np * sizeof *pair);
+        dst->pair = pair ? pair : dst->pair;
+        double *cross = realloc(dst->cross, 9 * np * sizeof *cross);
+        dst->cross = cross ? cross : dst->cross;
+        if (!pair || !cross) {
+            return tf_fail(ctx, "out of memory");
+        }
+        memcpy(dst->pair + 2 * dst->n_pairs, src->pair, 2 * src->n_pairs * sizeof *pair);
+        memcpy(dst->cross + 9 * dst->n_pairs, src->cross, 9 * src->n_pairs * sizeof *cross);
+        dst->n_pairs = np;
+    }
     free(src->L); /* (its loads moved) */
     src->L = NULL;
     src->n = 0;

@@ -48,13 +48,25 @@ typedef struct tf_region_sites {
     tf_region_load *L;  /* n */
     double *seconds;    /* n: wall time each site took (its share of its batch) */
     double asym;        /* largest ||C - C^T||_F / ||C||_F */
+    /* Cross compliances recorded while solving (partners, below): for pair
+     * k, C(i, j) (3 x 3, row-major, chart frame) is the patch-averaged
+     * displacement at site i = pair[2k] per unit force at site j =
+     * pair[2k + 1]. */
+    size_t n_pairs;
+    size_t *pair;
+    double *cross;
 } tf_region_sites;
 
 /* Solves the n sites ab (2 n) of contact region r of problem p with solver
- * s (affine, built from p).  Returns 0, or -1 with the message in ctx. */
+ * s (affine, built from p).  With partners (may be NULL): for every new
+ * site and every partner site within `radius` of it whose tip does not
+ * overlap its tip, the cross compliance C(partner, new site) is recorded
+ * (reciprocity: L_partner^T U_new, while U_new is at hand); the new sites
+ * are counted from partners->n, as when they are appended to partners.
+ * Returns 0, or -1 with the message in ctx. */
 int tf_region_sites_solve(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
                           const tf_contact_region *r, const double *ab, size_t n,
-                          tf_region_sites *out);
+                          const tf_region_sites *partners, double radius, tf_region_sites *out);
 
 void tf_region_sites_free(tf_region_sites *t);
 
