@@ -9,6 +9,8 @@
 #   region-study   the tables over site spacing and rank for block48's top
 #                  face and the liver's anterior surface (200 held-out sites
 #                  x 5 forces, 50 two-instrument cases each; minutes)
+#   region-nonlinear neo-Hookean block48: (site, force) cases through the
+#                  case runner, per-site potentials of degree 2 to 4
 
 REGION_STUDY := $(T)/region/region_study
 
@@ -34,3 +36,19 @@ region-study: $(REGION_STUDY)
 	@$(REGION_STUDY) tests/region/block48_region.yaml --levels 2 --pairs 0 geometry.grading=3,3,2
 	@echo "== contact regions: the liver's anterior surface, 80 x 80 mm, 8 mm probe =="
 	@$(REGION_STUDY) tests/region/liver_region.yaml --levels 3
+
+# A region whose response is not affine: block48_nh's (site, force) cases
+# through the case runner, per-site potentials of degree 2 to 4 (minutes).
+REGION_NONLINEAR := $(T)/region/region_nonlinear
+
+$(REGION_NONLINEAR): tests/region/region_nonlinear.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+.PHONY: region-nonlinear
+region-nonlinear: $(REGION_NONLINEAR)
+	@echo "== contact regions, neo-Hookean block48: 19.2 mm square of the top face, 4 x 4 sites =="
+	@$(REGION_NONLINEAR) tests/region/block48_nh_region.yaml --rect 14.4,33.6,14.4,33.6 \
+	  --grid 4 --centres 3 --train 24 --heldout 6

@@ -212,29 +212,34 @@ static void law_errors(const tf_region_law *law, const tf_region_chart *chart,
     }
 }
 
-/* Whether site i is among idx (n of them). */
-static int among(size_t i, const size_t *idx, size_t n)
-{
-    for (size_t k = 0; k < n; ++k) {
-        if (idx[k] == i) {
-            return 1;
-        }
-    }
-    return 0;
-}
-
 /* The pairs recorded between this spacing's grid sites and its cell
- * centres (indices into t's pairs). */
+ * centres (indices into t's pairs), every k-th of them so that at most
+ * TF_REGION_PAIRS_JUDGED are judged. */
 static size_t level_pairs(const tf_region_sites *t, const tf_region_level *lv, const size_t *chk,
                           size_t nc, size_t *out)
 {
     size_t m = 0, n = (size_t)lv->nx * lv->ny;
+    unsigned char *role = calloc(t->n + 1, 1); /* 1: a grid site, 2: a cell centre */
+    if (role == NULL) {
+        return 0;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        role[lv->train[i]] = 1;
+    }
+    for (size_t i = 0; i < nc; ++i) {
+        role[chk[i]] = 2;
+    }
     for (size_t k = 0; k < t->n_pairs; ++k) {
-        if (among(t->pair[2 * k], lv->train, n) && among(t->pair[2 * k + 1], chk, nc)) {
+        if (role[t->pair[2 * k]] == 1 && role[t->pair[2 * k + 1]] == 2) {
             out[m++] = k;
         }
     }
-    return m;
+    free(role);
+    size_t step = (m + TF_REGION_PAIRS_JUDGED - 1) / TF_REGION_PAIRS_JUDGED, kept = 0;
+    for (size_t q = 0; step > 1 && q < m; q += step) {
+        out[kept++] = out[q];
+    }
+    return step > 1 ? kept : m;
 }
 
 /* The coupling error of a surface: over the pairs, the force error the

@@ -22,7 +22,8 @@
  *            make (spec §5), to first order ||K_i (C_model(i, j) -
  *            C(i, j))||_2 (a fraction of R_F), both ways, over every pair of
  *            a cell centre and a grid site whose tips do not overlap within
- *            TF_REGION_PAIR_REACH tip half-extents (the true C(i, j) is
+ *            TF_REGION_PAIR_REACH tip half-extents (at most
+ *            TF_REGION_PAIRS_JUDGED of them, evenly; the true C(i, j) is
  *            recorded while the cell centre's solve is at hand);
  *   height   the largest |h(g) - h| of the spline's rest surface (mm).
  *
@@ -61,8 +62,10 @@ tf_region_targets tf_region_targets_default(void);
 #define TF_REGION_MAX_LEVELS 8
 
 /* Pairs judged for the coupling: sites within this many tip half-extents
- * (the strongly coupled ones: beyond, the coupling and its error fade). */
+ * (the strongly coupled ones: beyond, the coupling and its error fade),
+ * every k-th of them so that at most TF_REGION_PAIRS_JUDGED are. */
 #define TF_REGION_PAIR_REACH 6.0
+#define TF_REGION_PAIRS_JUDGED 4000
 
 typedef struct tf_region_level {
     unsigned nx, ny;

@@ -181,12 +181,15 @@ static int record_pairs(const tf_region_sites *partners, double radius, const tf
         if (hypot(gj[0] - g[0], gj[1] - g[1]) > radius || tips_overlap(r, gj, g)) {
             continue;
         }
-        size_t *pair = realloc(t->pair, 2 * (t->n_pairs + 1) * sizeof *pair);
-        t->pair = pair ? pair : t->pair;
-        double *cross = realloc(t->cross, 9 * (t->n_pairs + 1) * sizeof *cross);
-        t->cross = cross ? cross : t->cross;
-        if (!pair || !cross) {
-            return -1;
+        if ((t->n_pairs & (t->n_pairs - 1)) == 0) { /* room doubles at powers of two */
+            size_t cap = t->n_pairs ? 2 * t->n_pairs : 1;
+            size_t *pair = realloc(t->pair, 2 * cap * sizeof *pair);
+            t->pair = pair ? pair : t->pair;
+            double *cross = realloc(t->cross, 9 * cap * sizeof *cross);
+            t->cross = cross ? cross : t->cross;
+            if (!pair || !cross) {
+                return -1;
+            }
         }
         const tf_region_load *l = &partners->L[j];
         double *C = t->cross + 9 * t->n_pairs;

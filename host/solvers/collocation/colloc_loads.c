@@ -117,6 +117,11 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
                               "supported; give a node or a face patch");
         return -1;
     }
+    if (p->shape == TF_PATCH_POINTS) {
+        snprintf(err, errlen, "mls-collocation: a contact region's probe (a patch given by "
+                              "quadrature points) is not supported; give a face patch");
+        return -1;
+    }
     if (p->shape == TF_PATCH_POINT) {
         for (int a = 0; a < 3; ++a) {
             if (force) {
