@@ -14,6 +14,7 @@
 #include "model/golden.h"
 #include "model/ref_eval.h"
 #include "model/region_ref.h"
+#include "numerics/grid_spline.h"
 
 /* One bit of margin under the device's limits (tfit_region_check.c): the
  * device bounds in float, the host in double. */
@@ -371,41 +372,18 @@ int tf_region_agree(tf_ctx *ctx, const tf_model *law, const tf_model *surf)
 }
 
 /* --- double-precision rest surface (design of inputs, property tests) ------- */
-static void bspline(double t, double b[4])
-{
-    const double s = 1 - t;
-    b[0] = s * s * s / 6;
-    b[1] = (3 * t * t * t - 6 * t * t + 4) / 6;
-    b[2] = (3 * s * s * s - 6 * s * s + 4) / 6;
-    b[3] = t * t * t / 6;
-}
-
-void tf_region_rest_point(const tf_model *law, const double g_in[2], double x[3], double *e)
+void tf_region_rest_point(const tf_model *law, const double g[2], double x[3], double *e)
 {
     const uint32_t S = tf_region_law_stride(law->dims);
     const float *sc = law->coef + TF_REGION_CHART, *ctrl = law->coef + TF_REGION_LAW_CTRL;
-    double g[2], b[2][4];
-    uint32_t cell[2];
-    for (int a = 0; a < 2; ++a) {
-        const double hi = law->dims[a] - 1.0;
-        g[a] = fmin(fmax(g_in[a], 0.0), hi);
-        cell[a] = (uint32_t)fmin(floor(g[a]), hi - 1);
-        bspline(g[a] - cell[a], b[a]);
+    double q[MAX_LAW_STRIDE], t[2];
+    unsigned cell[2];
+    for (int a = 0; a < 2; ++a) { /* g clamped onto the grid, as the blend clamps it */
+        tf_bspline_cell(g[a], law->dims[a], &cell[a], &t[a]);
     }
-    double q[MAX_LAW_STRIDE];
-    for (uint32_t i = 0; i < S; ++i) {
-        q[i] = 0;
-    }
-    for (int l = 0; l < 4; ++l) {
-        for (int k = 0; k < 4; ++k) {
-            const float *c = ctrl + ((size_t)(cell[1] + l) * (law->dims[0] + 2) + cell[0] + k) * S;
-            for (uint32_t i = 0; i < S; ++i) {
-                q[i] += b[1][l] * b[0][k] * c[i];
-            }
-        }
-    }
-    x[0] = g[0] * sc[TF_REGION_HA];
-    x[1] = g[1] * sc[TF_REGION_HB];
+    tf_spline_eval_float(law->dims[0], law->dims[1], S, ctrl, g[0], g[1], q, NULL, NULL);
+    x[0] = (cell[0] + t[0]) * sc[TF_REGION_HA];
+    x[1] = (cell[1] + t[1]) * sc[TF_REGION_HB];
     x[2] = q[0];
     if (e != NULL) {
         memcpy(e, q + 1, (S - 1) * sizeof *e);

@@ -173,3 +173,32 @@ int tf_solver_field(const tf_solver *s, const double *u, const double *x, size_t
     }
     return s->ops->field(s, u, x, np, uh, grad, err, errlen);
 }
+
+int tf_solver_patch_loads(const tf_solver *s, const tf_patch *p, double *f, char *err,
+                          size_t errlen)
+{
+    if (s->ops->patch_loads == NULL) {
+        snprintf(err, errlen,
+                 "solver %s gives no load vectors whose product with its displacements is a "
+                 "patch average (a contact region needs rpim-galerkin)",
+                 s->ops->name);
+        return -1;
+    }
+    return s->ops->patch_loads(s, p, f, err, errlen);
+}
+
+int tf_solver_solve_loads(tf_solver *s, const double *f, size_t n, double *u)
+{
+    if (s->ops->solve_loads == NULL) {
+        return tf_fail(s->ctx, "solver %s solves no arbitrary load vectors (it keeps no "
+                       "factorisation: its response is not affine)", s->ops->name);
+    }
+    if (n == 0) {
+        return 0;
+    }
+    double t0 = omp_get_wtime();
+    int rc = s->ops->solve_loads(s, f, n, u);
+    s->info.t_solve += omp_get_wtime() - t0;
+    s->info.solves += rc == 0 ? n : 0;
+    return rc;
+}

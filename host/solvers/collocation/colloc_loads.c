@@ -33,6 +33,7 @@ static int in_patch(const tf_patch *p, double u, double v)
     case TF_PATCH_POINT:
     case TF_PATCH_AT:
     case TF_PATCH_SURFACE: /* an organ's patch: create() admits boxes only */
+    case TF_PATCH_POINTS:
         return 0;
     }
     return 0;
@@ -114,6 +115,11 @@ int tf_colloc_patch_forces(const tf_problem *pr, const tf_patch *p, const double
          * functions at that point; not provided (no field either). */
         snprintf(err, errlen, "mls-collocation: a force at a point between particles is not "
                               "supported; give a node or a face patch");
+        return -1;
+    }
+    if (p->shape == TF_PATCH_POINTS) {
+        snprintf(err, errlen, "mls-collocation: a contact region's probe (a patch given by "
+                              "quadrature points) is not supported; give a face patch");
         return -1;
     }
     if (p->shape == TF_PATCH_POINT) {
