@@ -142,12 +142,11 @@ static int sites_for(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
     return rc;
 }
 
-/* The largest output displacement an envelope force makes at the sites. */
-static double peak_of(const tf_region_sites *t, const size_t *idx, size_t n, double R_F)
+double tf_region_peak(const tf_region_sites *t, const size_t *idx, size_t n, double R_F)
 {
     double peak = 0;
     for (size_t s = 0; s < n; ++s) {
-        const double *U = t->U + 9 * t->n_out * idx[s];
+        const double *U = t->U + 9 * t->n_out * (idx != NULL ? idx[s] : s);
         size_t rows = 3 * t->n_out;
         for (size_t j = 0; j < t->n_out; ++j) {
             double M[9];
@@ -406,8 +405,8 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
         rc = tf_region_modes_build(ctx, s, &res->sites, lv->train, n, R_F, tg->max_rank, modes);
     }
     if (rc == 0) {
-        double peak_t = peak_of(&res->sites, lv->train, n, R_F);
-        double peak_c = peak_of(&res->sites, chk, nc, R_F);
+        double peak_t = tf_region_peak(&res->sites, lv->train, n, R_F);
+        double peak_c = tf_region_peak(&res->sites, chk, nc, R_F);
         lv->peak = fmax(peak_t, peak_c);
         size_t *pk = malloc((res->sites.n_pairs + 1) * sizeof *pk);
         double *work = malloc(9 * res->sites.n_out * sizeof *work);

@@ -114,6 +114,10 @@ int tf_region_law_fit(tf_ctx *ctx, const tf_region_sites *t, const size_t *idx, 
 /* The displacement scale's reciprocal: 1 / (R_F times the largest
  * eigenvalue of the sites' compliances). */
 double tf_region_scale(const tf_region_sites *t, const size_t *idx, size_t n, double R_F);
+/* The largest output displacement an envelope force (|F| = R_F) makes at
+ * sites idx[0..n) of t (idx NULL: the first n): R_F times the largest
+ * spectral norm of an output's 3 x 3 response. */
+double tf_region_peak(const tf_region_sites *t, const size_t *idx, size_t n, double R_F);
 
 /* Spectral norm of a 3 x 3 matrix. */
 double tf_mat3_norm2(const double M[9]);

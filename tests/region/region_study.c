@@ -120,26 +120,6 @@ static void mat_mul(const double A[9], const double B[9], double C[9])
     }
 }
 
-/* The largest output displacement an envelope force makes at the sites. */
-static double peak_of(const tf_region_sites *t, double R_F)
-{
-    double peak = 0;
-    size_t rows = 3 * t->n_out;
-    for (size_t s = 0; s < t->n; ++s) {
-        const double *U = t->U + 9 * t->n_out * s;
-        for (size_t j = 0; j < t->n_out; ++j) {
-            double M[9];
-            for (int a = 0; a < 3; ++a) {
-                for (int l = 0; l < 3; ++l) {
-                    M[3 * a + l] = U[(size_t)l * rows + 3 * j + (size_t)a];
-                }
-            }
-            peak = fmax(peak, R_F * tf_mat3_norm2(M));
-        }
-    }
-    return peak;
-}
-
 static void heldout_errors(const tf_region_level *lv, const tf_region_chart *chart,
                            const tf_region_sites *h, const double (*force)[3], unsigned nf,
                            double R_F, double peak, errors *e)
@@ -443,7 +423,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", ctx.err);
         return 1;
     }
-    double peak = peak_of(&held, R_F);
+    double peak = tf_region_peak(&held, NULL, held.n, R_F);
     printf("held out: %u random sites x %u random forces in the envelope, solved in %.1f s; peak "
            "displacement %.4g mm\n\n",
            o.sites, o.forces, omp_get_wtime() - th, peak);
