@@ -247,6 +247,11 @@ static void modal_rows_asm(tf_insn_mix *t, tf_core core, uint32_t r, uint32_t n_
     loop(t, core, (block_id)(MR_POINT_1 + (r - 1)), n_out);
 }
 
+void tf_insn_modal_rows_asm(tf_insn_mix *t, tf_core core, uint32_t r, uint32_t n_out)
+{
+    modal_rows_asm(t, core, r, n_out);
+}
+
 /* The basis, the r amplitudes (loops 1, 2), then the rows in assembly
  * (r <= 8) or in C (loops 3, 4: r > 8, so the mode loop always runs). */
 void tf_insn_modal(tf_insn_mix *t, tf_core core, uint32_t p, uint32_t r, uint32_t n_out)

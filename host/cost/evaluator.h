@@ -36,6 +36,11 @@ void tf_insn_nodal(tf_insn_mix *t, tf_core core, uint32_t p, uint32_t n_out);
 /* tfit_eval_modal: the basis of degree p, r amplitudes, n_out points. */
 void tf_insn_modal(tf_insn_mix *t, tf_core core, uint32_t p, uint32_t r, uint32_t n_out);
 
+/* The modal rows in assembly (tfit_modal_armv7em.c), rank r <= 8: the
+ * dispatch, the rank's function and its loop over n_out output points (the
+ * region surfaces' rows too). */
+void tf_insn_modal_rows_asm(tf_insn_mix *t, tf_core core, uint32_t r, uint32_t n_out);
+
 /* tfit_degree1_asm() outside its entry: the projection, n_out points of
  * degree-1 rows (tfit_displacements' nodal p = 1 path). */
 void tf_insn_degree1(tf_insn_mix *t, tf_core core, uint32_t n_out);

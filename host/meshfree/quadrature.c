@@ -176,6 +176,7 @@ double tf_patch_area(const tf_patch *p, const tf_cloud *cloud)
     case TF_PATCH_CIRCLE:
         return M_PI * p->radius * p->radius;
     case TF_PATCH_SURFACE:
+    case TF_PATCH_POINTS:
         return p->area;
     default:
         return 0;

@@ -14,6 +14,15 @@ void tf_problem_mesh_free(tf_mesh_geometry *g)
     g->file_xyz = NULL;
 }
 
+void tf_patch_release(tf_patch *p)
+{
+    free(p->tri);
+    free(p->pts);
+    p->tri = NULL;
+    p->pts = NULL;
+    p->n_tri = p->n_pts = 0;
+}
+
 void tf_problem_release(tf_problem *p)
 {
     tf_cloud_free(&p->cloud);
@@ -22,11 +31,15 @@ void tf_problem_release(tf_problem *p)
     }
     free(p->fixed);
     for (size_t k = 0; p->loads && k < p->n_loads; ++k) {
-        free(p->loads[k].patch.tri);
+        tf_patch_release(&p->loads[k].patch);
     }
     free(p->loads);
     for (size_t k = 0; p->contacts && k < p->n_contacts; ++k) {
-        free(p->contacts[k].patch.tri);
+        tf_patch_release(&p->contacts[k].patch);
+        tf_region_chart *ch = &p->contacts[k].region.chart;
+        free(ch->tri);
+        free(ch->q);
+        free(ch->graph);
     }
     free(p->contacts);
     if (p->geometry.kind == TF_GEOMETRY_MESH && p->geometry.as.mesh != NULL) {
@@ -120,6 +133,7 @@ void tf_problem_patch_centre(const tf_patch *patch, const tf_cloud *c, double x[
         return;
     case TF_PATCH_AT:
     case TF_PATCH_SURFACE: /* the site's centre, a surface vertex */
+    case TF_PATCH_POINTS:  /* the site's point on the surface */
         memcpy(x, patch->at, 3 * sizeof *x);
         return;
     case TF_PATCH_FACE:

@@ -25,6 +25,7 @@
 #include "geometry/transform.h"
 #include "geometry/volume_mesh.h"
 #include "materials/material.h"
+#include "problem/contact_region.h"
 #include "problem/history.h"
 #include "problem/nodes.h"
 
@@ -115,6 +116,8 @@ typedef enum tf_patch_shape {
     TF_PATCH_SURFACE,/* uniform traction over surface triangles of a mesh (a contact site) */
     TF_PATCH_AT,     /* a force at a point anywhere in the body, spread to the nodes by
                         their shape functions there (the Galerkin load of a point force) */
+    TF_PATCH_POINTS, /* uniform traction over an area given by its quadrature points (a
+                        probe's patch clipped from an organ's surface, region_chart.h) */
 } tf_patch_shape;
 
 /* Where a force acts.  In-face coordinates (u, v): (x, y) on z faces,
@@ -129,8 +132,13 @@ typedef struct tf_patch {
     double at[3];       /* AT: the point; SURFACE: the site's centre (a surface vertex), mm */
     uint32_t *tri;      /* SURFACE: 3 node indices per triangle, outward (owned) */
     size_t n_tri;
-    double area;        /* SURFACE: their total area, mm^2 */
+    double area;        /* SURFACE: their total area; POINTS: the weights' sum, mm^2 */
+    double *pts;        /* POINTS: 4 per point: x, y, z (mm) and weight (mm^2) (owned) */
+    size_t n_pts;
 } tf_patch;
+
+/* Frees what a patch owns (its triangles or points) and clears them. */
+void tf_patch_release(tf_patch *p);
 
 /* A load that is always applied: a total force spread over a patch, or the
  * analytic solution's traction (exact). */
@@ -151,6 +159,10 @@ typedef struct tf_contact {
     double at[3];   /* the contact point, mm */
     int by_node;    /* 1: given as a node number (the nodal value is the contact displacement) */
     tf_patch patch; /* TF_PATCH_POINT at `node` (TF_PATCH_AT at `at`) when no patch was given */
+    /* A region (kind != NONE): the tool may touch anywhere on it.  Point,
+     * node and patch are then those of the probe at the region's centre,
+     * so that what fits one site still has one. */
+    tf_contact_region region;
 } tf_contact;
 
 /* The forces the haptic device may apply: the ball |F - centre| <= radius. */

@@ -12,6 +12,7 @@
 
 #include "fitting/families/family.h"
 #include "problem/regions.h"
+#include "scene/scene_contact_region.h"
 #include "scene/scene_grading.h"
 #include "scene/scene_history.h"
 #include "scene/scene_material.h"
@@ -385,6 +386,12 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 return sd_fail(is, at(p, sizeof p, "contact", k, "name"),
                             "'%s' names contact %zu already", c->name, j);
             }
+        }
+        if (sd_contact_is_region(d)) {
+            if (sd_contact_region(doc, k, s, c, is) != 0) {
+                return -1;
+            }
+            continue;
         }
         if (d->site && (d->node || d->at || d->patch)) {
             return sd_fail(is, at(p, sizeof p, "contact", k, NULL),

@@ -88,6 +88,12 @@ int sd_grading(const sd_scene *doc, const double lo[3], const double hi[3], tf_c
         if (doc->contact[k].patch) {
             patch(g, doc->contact[k].patch, lo, hi);
         }
+        const sd_region *r = doc->contact[k].region;
+        if (r && r->face) { /* the probe goes anywhere on it: only its face's plane */
+            int n = tf_face_axis((tf_face)*r->face);
+            double plane = tf_face_is_max((tf_face)*r->face) ? hi[n] : lo[n];
+            tf_cloud_grading_add(g, n, plane, plane, lo[n], hi[n]);
+        }
         if (doc->contact[k].at) {
             point(g, doc->contact[k].at, lo, hi);
         }

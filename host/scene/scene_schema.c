@@ -28,6 +28,7 @@ static const cyaml_strval_t axes[] = {{"x", 0}, {"y", 1}, {"z", 2}};
 static const cyaml_strval_t components[] = {{"x", TF_COMP_X}, {"y", TF_COMP_Y}, {"z", TF_COMP_Z}};
 static const cyaml_strval_t shapes[] = {
     {"face", TF_PATCH_FACE}, {"rect", TF_PATCH_RECT}, {"circle", TF_PATCH_CIRCLE}};
+static const cyaml_strval_t tips[] = {{"disc", TF_TIP_DISC}, {"rect", TF_TIP_RECT}};
 static const cyaml_strval_t selects[] = {
     {"all", TF_OUT_ALL},         {"face", TF_OUT_FACE},
     {"box", TF_OUT_BOX},         {"nodes", TF_OUT_NODES},
@@ -167,12 +168,32 @@ static const cyaml_schema_field_t load_fields[] = {
 static const cyaml_schema_value_t load_entry = {
     CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_load, load_fields)};
 
+static const cyaml_schema_field_t region_fields[] = {
+    CYAML_FIELD_ENUM_PTR("face", STRICT_OPT, sd_region, face, faces, N(faces)),
+    CYAML_FIELD_SEQUENCE_FIXED("rect", OPT_PTR, sd_region, rect, &real, 4),
+    CYAML_FIELD_SEQUENCE_FIXED("centre", OPT_PTR, sd_region, centre, &real, 3),
+    CYAML_FIELD_FLOAT_PTR("radius", OPT, sd_region, radius),
+    CYAML_FIELD_SEQUENCE_FIXED("size", OPT_PTR, sd_region, size, &real, 2),
+    CYAML_FIELD_END,
+};
+
+static const cyaml_schema_field_t tip_fields[] = {
+    CYAML_FIELD_ENUM_PTR("shape", STRICT_OPT, sd_tip, shape, tips, N(tips)),
+    CYAML_FIELD_FLOAT_PTR("radius", OPT, sd_tip, radius),
+    CYAML_FIELD_SEQUENCE_FIXED("size", OPT_PTR, sd_tip, size, &real, 2),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t contact_fields[] = {
     CYAML_FIELD_STRING_PTR("name", OPT, sd_contact, name, 1, TF_PROBLEM_NAME_MAX - 1),
     CYAML_FIELD_UINT_PTR("node", OPT, sd_contact, node),
     CYAML_FIELD_SEQUENCE_FIXED("at", OPT_PTR, sd_contact, at, &real, 3),
     CYAML_FIELD_MAPPING_PTR("patch", OPT, sd_contact, patch, patch_fields),
     CYAML_FIELD_MAPPING_PTR("site", OPT, sd_contact, site, site_fields),
+    CYAML_FIELD_MAPPING_PTR("region", OPT, sd_contact, region, region_fields),
+    CYAML_FIELD_MAPPING_PTR("tip", OPT, sd_contact, tip, tip_fields),
+    CYAML_FIELD_FLOAT_PTR("friction", OPT, sd_contact, friction),
+    CYAML_FIELD_FLOAT_PTR("spacing", OPT, sd_contact, spacing),
     CYAML_FIELD_END,
 };
 static const cyaml_schema_value_t contact_entry = {

@@ -121,12 +121,33 @@ typedef struct sd_load {
     bool *exact;
 } sd_load;
 
+/* A contact region: a rectangle of a box face, or of an organ's surface
+ * around a point (a square of side 2 radius, or size). */
+typedef struct sd_region {
+    int *face;       /* tf_face */
+    double *rect;    /* 4: a0, a1, b0, b1 (the face's in-face coordinates), mm */
+    double *centre;  /* 3, mm */
+    double *radius;
+    double *size;    /* 2, mm */
+} sd_region;
+
+/* The probe's patch around each site of a region. */
+typedef struct sd_tip {
+    int *shape;      /* tf_tip_shape: disc, rect */
+    double *radius;
+    double *size;    /* 2, mm */
+} sd_tip;
+
 typedef struct sd_contact {
     char *name;
     uint32_t *node;  /* a box: a node, or */
     double *at;      /* 3, a box: the contact point, mm */
     sd_patch *patch;
     sd_site *site;   /* an organ: instead of node and patch */
+    sd_region *region; /* instead of all of those: a region */
+    sd_tip *tip;       /* a region's probe */
+    double *friction;
+    double *spacing;   /* a region's site spacing, mm */
 } sd_contact;
 
 typedef struct sd_envelope {

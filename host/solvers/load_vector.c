@@ -39,6 +39,18 @@ static void traction_at(const traction *t, const double x[3], double out[9], siz
     }
 }
 
+/* A TF_PATCH_POINTS patch's own quadrature points, copied. */
+static tf_qpoint *given_points(const tf_patch *p, size_t *n)
+{
+    tf_qpoint *q = malloc((p->n_pts + 1) * sizeof *q);
+    for (size_t k = 0; q != NULL && k < p->n_pts; ++k) {
+        memcpy(q[k].x, p->pts + 4 * k, sizeof q[k].x);
+        q[k].w = p->pts[4 * k + 3];
+    }
+    *n = q != NULL ? p->n_pts : 0;
+    return q;
+}
+
 static int integrate(tf_ctx *ctx, const tf_shape *sh, const traction *t, double *f)
 {
     size_t n3 = 3 * sh->cloud->n;
@@ -58,6 +70,7 @@ static int integrate(tf_ctx *ctx, const tf_shape *sh, const traction *t, double 
     size_t nq = 0;
     tf_qpoint *q = t->p->shape == TF_PATCH_AT        ? malloc(sizeof *q)
                    : t->p->shape == TF_PATCH_SURFACE ? tf_patch_surface_points(t->p, sh->cloud, &nq)
+                   : t->p->shape == TF_PATCH_POINTS  ? given_points(t->p, &nq)
                                                      : tf_patch_points(t->p, sh->cloud, &sh->cells, &nq);
     if (q != NULL && t->p->shape == TF_PATCH_AT) {
         /* a point force: the Galerkin load phi_I(x) F (eq 25 with a point traction) */

@@ -172,3 +172,30 @@ int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const doub
     }
     return s->ops->field(ctx, s, u, x, np, uh, grad);
 }
+
+int tf_solver_patch_loads(tf_ctx *ctx, const tf_solver *s, const tf_patch *p, double *f)
+{
+    if (s->ops->patch_loads == NULL) {
+        return tf_fail(ctx,
+                       "solver %s gives no load vectors whose product with its displacements "
+                       "is a patch average (a contact region needs rpim-galerkin)",
+                       s->ops->name);
+    }
+    return s->ops->patch_loads(ctx, s, p, f);
+}
+
+int tf_solver_solve_loads(tf_solver *s, const double *f, size_t n, double *u)
+{
+    if (s->ops->solve_loads == NULL) {
+        return tf_fail(s->ctx, "solver %s solves no arbitrary load vectors (it keeps no "
+                       "factorisation: its response is not affine)", s->ops->name);
+    }
+    if (n == 0) {
+        return 0;
+    }
+    double t0 = omp_get_wtime();
+    int rc = s->ops->solve_loads(s, f, n, u);
+    s->info.t_solve += omp_get_wtime() - t0;
+    s->info.solves += rc == 0 ? n : 0;
+    return rc;
+}

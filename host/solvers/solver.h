@@ -99,6 +99,19 @@ typedef struct tf_solver_ops {
     /* The time split and any warnings, through the context's log. */
     void (*report)(const tf_solver *s);
     void (*destroy)(tf_solver *s);
+    /* Loads anywhere (contact regions: a probe's patch at any site).  The
+     * three unit-force load vectors of a patch (3N x 3, column a: 1 N along
+     * axis a spread as a uniform traction over it), overwriting f, such
+     * that f^T u of a displacement u this solver returns is the patch's
+     * average displacement (the work-conjugate of the force: the returned
+     * displacements are the unknowns the vectors weight).  Callable from
+     * several threads at once, each with its own context.  NULL when not
+     * available. */
+    int (*patch_loads)(tf_ctx *ctx, const tf_solver *s, const tf_patch *p, double *f);
+    /* n nodal load vectors f (3N x n), each added to the problem's loads,
+     * into displacements u (3N x n) through the factorisation the solver
+     * holds.  NULL for a solver that does not keep one (not affine). */
+    int (*solve_loads)(tf_solver *s, const double *f, size_t n, double *u);
 } tf_solver_ops;
 
 /* The part every instance shares (an implementation's struct starts with
@@ -157,6 +170,15 @@ int tf_solver_reactions(const tf_solver *s, int contact, const double force[3], 
  * (no field from this solver, a failed evaluation). */
 int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
                     double *uh, double *grad);
+
+/* A patch's unit-force load vectors (see tf_solver_ops.patch_loads;
+ * thread-safe with a context per thread).  Returns 0, or -1 (not available
+ * from this solver, a failed evaluation). */
+int tf_solver_patch_loads(tf_ctx *ctx, const tf_solver *s, const tf_patch *p, double *f);
+
+/* n nodal load vectors (3N x n) into displacements u (3N x n) (see
+ * tf_solver_ops.solve_loads).  Returns 0, or -1 with a message. */
+int tf_solver_solve_loads(tf_solver *s, const double *f, size_t n, double *u);
 
 size_t tf_solver_node_count(const tf_solver *s);
 const double *tf_solver_coords(const tf_solver *s);

@@ -84,6 +84,25 @@ extern "C" {
 /* Words of one output row of a modal_q15 model: two Q15 modes a word. */
 #define TFIT_MODAL_Q15_WORDS (TFIT_MODAL_Q15_RANK / 2u)
 
+/* Region models (docs/header-format.md §5.10-§5.12).  A region is a
+ * height field over a chart plane with nx x ny sites at the grid nodes;
+ * every per-site quantity is a tensor-product cubic B-spline over
+ * (nx + 2)(ny + 2) control points. */
+#define TFIT_REGION_DIMS 3         /* law: { nx, ny, P } */
+#define TFIT_REGION_SURFACE_DIMS 5 /* surface: { nx, ny, r, p, has_site_modes } */
+#define TFIT_REGION_MAX_GRID 128   /* nx, ny: sites per side (at least 2) */
+#define TFIT_REGION_MAX_DEGREE 4   /* P: the law's potential, degree 2 .. P */
+#define TFIT_REGION_SURFACE_MAX_DEGREE 3 /* p: the surface amplitudes' degree in the force */
+#define TFIT_REGION_MAX_RANK 48    /* r: modes of a surface model */
+/* Floats after the chart (o[3], R[9]): the law's {1/ha, 1/hb, ha, hb, s_u,
+ * 1/s_u, mu}; a surface model repeats them and adds 1/R_F, then its force
+ * map (12 floats, as the input map of §4). */
+#define TFIT_REGION_SCALARS 7
+#define TFIT_REGION_SURFACE_SCALARS 8
+/* Words of a region model's caller-owned state: the proxy's grid
+ * coordinates (ga, gb) and the contact word (1.0f in contact, else 0). */
+#define TFIT_REGION_STATE_WORDS 3u
+
 /* Words of a prony model's caller-owned state: the previous projected
  * input (3), then 3 per term (docs/header-format.md §5.6).  A generated
  * header gives its model's as TFIT_NAME_STATE_WORDS. */
@@ -102,6 +121,8 @@ extern "C" {
 typedef enum tfit_status {
     TFIT_OK = 0,
     TFIT_CLAMPED = 1,      /* input was outside the envelope and was projected onto its boundary */
+    TFIT_NO_CONTACT = 2,   /* region models: the tool tip does not touch the region; every
+                            * force is +0.0f (tfit_region_force, tfit_region_pair) */
     TFIT_ERR_INPUT = -1,   /* NaN or Inf in the input; every output is +0.0f */
     TFIT_ERR_ARG = -2,     /* NULL pointer */
     TFIT_ERR_FAMILY = -3,  /* unknown family, or a family this entry point does not evaluate */
@@ -125,15 +146,21 @@ typedef enum tfit_family {
                                * tables at the knots s_k = k / K, linear in s between them */
     TFIT_FAMILY_RESONANT = 7, /* stateful: a nodal or modal map of the input filtered by
                                * damped second-order modes (inertia), one step per tick */
-    TFIT_FAMILY_MODAL_Q15 = 8 /* modal at rank 8 with its modes in Q15 and the products
-                               * summed in integers (dual 16-bit MACs on Armv7E-M) */
+    TFIT_FAMILY_MODAL_Q15 = 8, /* modal at rank 8 with its modes in Q15 and the products
+                                * summed in integers (dual 16-bit MACs on Armv7E-M) */
+    TFIT_FAMILY_REGION = 9,    /* the contact law over a surface region: tool-tip position
+                                * -> contact force, with a caller-owned proxy (friction,
+                                * sliding); tfit_region_force() */
+    TFIT_FAMILY_REGION_SURFACE = 10 /* the surface for the current contact of a region: the
+                                     * proxy site and the contact force -> displacements,
+                                     * rank r; tfit_region_surface() */
 } tfit_family;
 
 /* The first and the last family id: every id from FIRST to LAST is a
  * family the library evaluates (range checks and the host's per-family
  * tests run over them). */
 #define TFIT_FAMILY_FIRST TFIT_FAMILY_NODAL
-#define TFIT_FAMILY_LAST TFIT_FAMILY_MODAL_Q15
+#define TFIT_FAMILY_LAST TFIT_FAMILY_REGION_SURFACE
 
 /* A model's self-test (docs/header-format.md §8): TFIT_CHECK_INPUTS inputs
  * (3 words of bits each); the CRC-32 of the status and of every output's
@@ -239,6 +266,70 @@ tfit_status tfit_resonant_reset(const tfit_model *m, float *state);
 tfit_status tfit_resonant_step(const tfit_model *m, float *state, const float force[3],
                                float *out);
 
+/* Region models: palpation anywhere on a surface region
+ * (docs/header-format.md §5.10-§5.12, docs/firmware.md §12).  A region's
+ * header holds two models: NAME_law (TFIT_FAMILY_REGION), the contact law
+ * over the region, and NAME_surface (TFIT_FAMILY_REGION_SURFACE), the
+ * surface for the current contact.  The caller owns the state of each
+ * instrument, float state[TFIT_REGION_STATE_WORDS] (the proxy: where on
+ * the region the contact sits, and whether there is one):
+ *
+ *     static float state[TFIT_REGION_STATE_WORDS];
+ *     tfit_region_reset(&tfit_liver_law, state);                 // no contact
+ *     every tick: s = tfit_region_force(&tfit_liver_law, state, tip, f);
+ *                 render -f (f is the force the tool applies to the tissue)
+ *     at the display rate: tfit_region_surface(&tfit_liver_surface, state, f, u);
+ *
+ * tfit_region_force() takes the tool-tip position tip[3] (mm, scene frame)
+ * and writes force[3] (N, scene frame): the gradient of the law's potential
+ * at the proxy, the proxy moved by one Gauss-Newton step towards the
+ * energy's minimum over the region, shortened by Coulomb friction, and
+ * accepted only when it does not raise the stored energy (passive by
+ * construction).  Statuses: TFIT_OK; TFIT_CLAMPED (in contact, but the tip
+ * is beyond the region's edge or the contact displacement beyond the law's
+ * envelope: the output is the envelope's); TFIT_NO_CONTACT (force +0.0f,
+ * contact word cleared); TFIT_ERR_INPUT (NaN/Inf in tip: force +0.0f, the
+ * state left unchanged, bit for bit).  tfit_region_reset() puts the proxy at
+ * (0, 0), not in contact.
+ *
+ * tfit_region_surface() writes out[3 n_out] (mm, scene frame, as
+ * tfit_displacements) for the contact at the state's proxy site under
+ * force[3] (N, scene frame; what tfit_region_force returned).  The force is
+ * projected onto the model's force envelope (TFIT_CLAMPED); NaN/Inf gives
+ * +0.0f outputs and TFIT_ERR_INPUT.  A state word that is not finite is
+ * taken as the region's nearest edge (NaN as 0): no state makes an output
+ * NaN.
+ *
+ * Two instruments (affine models: P = 2, surface p = 1 with site modes;
+ * TFIT_ERR_FAMILY otherwise): state2 holds the two states one after the
+ * other (2 TFIT_REGION_STATE_WORDS floats), tip2 and force2 two 3-vectors
+ * each.  tfit_region_pair() steps both proxies as tfit_region_force() does,
+ * then, when both touch, solves the elastic coupling of the two contacts (a
+ * 3x3 system); when that system is not well posed (its determinant outside
+ * [2^-10, 4], or a coupled force beyond 2^64 N) the uncoupled forces are
+ * kept and the status is TFIT_CLAMPED.  The status is TFIT_ERR_INPUT when
+ * either tip is NaN/Inf (that instrument's force is +0.0f and its state is
+ * unchanged; the other is evaluated uncoupled), TFIT_NO_CONTACT when neither
+ * touches, TFIT_CLAMPED when either is clamped, else TFIT_OK.
+ * tfit_region_surface_pair() writes the surface under both forces (their
+ * amplitudes summed); NaN/Inf in either force gives +0.0f outputs and
+ * TFIT_ERR_INPUT.
+ *
+ * Every function returns TFIT_ERR_ARG for a NULL argument (or a model whose
+ * dims or coef is NULL) and TFIT_ERR_FAMILY for a model of another family;
+ * each runs the same instructions for every input and state, and for a
+ * model that passed tfit_model_check() no input or state makes an output or
+ * a state word NaN or Inf. */
+tfit_status tfit_region_reset(const tfit_model *law, float *state);
+tfit_status tfit_region_force(const tfit_model *law, float *state, const float tip[3],
+                              float force[3]);
+tfit_status tfit_region_surface(const tfit_model *surf, const float *state, const float force[3],
+                                float *out);
+tfit_status tfit_region_pair(const tfit_model *law, const tfit_model *surf, float *state2,
+                             const float tip2[6], float force2[6]);
+tfit_status tfit_region_surface_pair(const tfit_model *surf, const float *state2,
+                                     const float force2[6], float *out);
+
 /* Golden vectors: inputs and the exact output bits the host computed for a
  * model, emitted beside each generated header as NAME_golden.h.  Running
  * them on the device proves that the compiler, flags and FPU configuration
@@ -256,8 +347,12 @@ typedef struct tfit_golden {
  * bit-exact.  A cut model's vector v is evaluated at the cut progress
  * s = TFIT_CUT_GOLDEN_S_BITS[v mod 16] (docs/header-format.md §7).  A
  * prony or resonant model's vectors are one tick sequence, stepped in
- * order from a reset state (the state lives on this function's stack).
- * Returns UINT32_MAX for NULL arguments. */
+ * order from a reset state (the state lives on this function's stack).  A
+ * region law's vectors are tool-tip positions, one tick sequence from a
+ * reset state, and its outputs the forces; a region surface's vector v is
+ * evaluated with the proxy at ga = TFIT_CUT_GOLDEN_S_BITS[v mod 16] (nx-1),
+ * gb = TFIT_CUT_GOLDEN_S_BITS[(7 v + 3) mod 16] (ny-1), in contact
+ * (docs/header-format.md §7).  Returns UINT32_MAX for NULL arguments. */
 uint32_t tfit_golden_run(const tfit_golden *g, float *scratch);
 
 /* The cut progress of cut golden vector v, v mod 16 (bit patterns): 0, 1,

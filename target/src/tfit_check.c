@@ -13,7 +13,7 @@
  * far enough under FLT_MAX (2^128) that rounding cannot matter.  With no Inf
  * reachable, no NaN is reachable either (no 0*Inf, Inf-Inf; divisors >= 1).
  */
-#include "tfit_internal.h"
+#include "tfit_region.h"
 
 #define BOUND_LIMIT 0x1p100f
 #define X0_LIMIT 0x1p64f
@@ -83,7 +83,12 @@ static int modal_ok(const tfit_model *m)
             return 0;
         }
     }
-    for (uint32_t o = 0u; o < 3u * m->n_out; ++o) {
+    return tfit_modes_bounded(modes, amax, r, 3u * m->n_out);
+}
+
+int tfit_modes_bounded(const float *modes, const float *amax, uint32_t r, uint32_t rows)
+{
+    for (uint32_t o = 0u; o < rows; ++o) {
         float b = 0.0f;
         for (uint32_t k = 0u; k < r; ++k) {
             b = b + tfit_abs(modes[o * r + k]) * amax[k];
@@ -197,6 +202,9 @@ static int stateful_ok(const tfit_model *m)
 
 static int range_ok(const tfit_model *m)
 {
+    if (m->family == TFIT_FAMILY_REGION || m->family == TFIT_FAMILY_REGION_SURFACE) {
+        return tfit_region_range_ok(m); /* their first 12 floats are a chart */
+    }
     if (!map_ok(m->coef)) {
         return 0;
     }
@@ -273,7 +281,7 @@ static void point(const tfit_model *m, const float g[3], uint32_t keep, uint32_t
  * linear congruential sequence gives three signed 24-bit integers, exact as
  * floats, times 2^77 (exact): beyond 2^64, so §4 scales them, and beyond any
  * envelope, so the Newton step runs. */
-static uint32_t far_input(uint32_t state, float in[3])
+uint32_t tfit_far_input(uint32_t state, float in[3])
 {
     for (uint32_t i = 0u; i < 3u; ++i) {
         state = state * 1664525u + 1013904223u;
@@ -340,7 +348,7 @@ static tfit_status self_test(const tfit_model *m)
     }
     uint32_t state = 1u, far = 0xffffffffu;
     for (uint32_t k = 0u; k < (uint32_t)TFIT_CHECK_FAR; ++k) {
-        state = far_input(state, in);
+        state = tfit_far_input(state, in);
         (void)tfit_input_map(m->coef, in, g, &bad);
         for (uint32_t i = 0u; i < 3u; ++i) {
             far = tfit_crc32_word(far, tfit_bits(g[i]));
@@ -375,6 +383,9 @@ tfit_status tfit_model_check(const tfit_model *m)
     }
     if (!range_ok(m)) {
         return TFIT_ERR_RANGE;
+    }
+    if (m->family == TFIT_FAMILY_REGION || m->family == TFIT_FAMILY_REGION_SURFACE) {
+        return tfit_region_self_test(m);
     }
     return self_test(m);
 }

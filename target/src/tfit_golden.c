@@ -3,7 +3,7 @@
  * mismatching words, so that the bit-for-bit contract can be verified on the
  * device itself, not only on the host.
  */
-#include "tfit_internal.h"
+#include "tfit_region.h"
 
 uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
 {
@@ -19,6 +19,8 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
     const int stateful = tfit_filter_of(m->family) != 0;
     if (stateful) {
         (void)tfit_stateful_reset(m->family, m, state);
+    } else if (m->family == TFIT_FAMILY_REGION) { /* a region law's: one tick sequence too */
+        (void)tfit_region_reset(m, state);
     }
 
     for (uint32_t v = 0u; v < gv->n_vec; ++v) {
@@ -35,6 +37,15 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
             s = tfit_displacements_cut(m, x, tfit_float(cut_s[v & 15u]), scratch);
         } else if (m->family == TFIT_FAMILY_CONTACT) {
             s = tfit_contact_force(m, x, scratch);
+        } else if (m->family == TFIT_FAMILY_REGION) {
+            s = tfit_region_force(m, state, x, scratch);
+        } else if (m->family == TFIT_FAMILY_REGION_SURFACE) {
+            /* the proxy of vector v: fractions of the grid from the cut table */
+            const float st[3] = {tfit_float(cut_s[v & 15u]) * (float)(m->dims[0] - 1u),
+                                 tfit_float(cut_s[(7u * v + 3u) & 15u]) *
+                                     (float)(m->dims[1] - 1u),
+                                 1.0f};
+            s = tfit_region_surface(m, st, x, scratch);
         } else {
             s = tfit_displacements(m, x, scratch);
         }

@@ -92,6 +92,33 @@ static inline uint32_t tfit_umax(uint32_t a, uint32_t b)
     return a ^ ((a ^ b) & tfit_mask(a < b));
 }
 
+static inline uint32_t tfit_umin(uint32_t a, uint32_t b)
+{
+    return a ^ ((a ^ b) & tfit_mask(b < a));
+}
+
+/* 1/sqrt(s) for a positive normal float s: a start from the bit pattern of
+ * s (relative error <= 3.5 % for every positive float), then three Newton
+ * steps y <- (y/2)(3 - s y y), each squaring the error (header-format.md §4
+ * step 8).  For the region models; tfit_input.c keeps its own copy, so that
+ * the input map's code, whose instructions the cycle model counts
+ * (host/cost/cycles.c), stays as it is. */
+static inline float tfit_rsqrt_step(float s, float y)
+{
+    float t = s * y;
+    t = t * y;
+    t = 3.0f - t;
+    return (0.5f * y) * t;
+}
+
+static inline float tfit_rsqrt(float s)
+{
+    float y = tfit_float(0x5f3759dfu - (tfit_bits(s) >> 1));
+    y = tfit_rsqrt_step(s, y);
+    y = tfit_rsqrt_step(s, y);
+    return tfit_rsqrt_step(s, y);
+}
+
 /* Chebyshev series without its constant term, sum_{k=1..n} c_k T_k(x), by
  * Clenshaw's recurrence (docs/header-format.md §5.4):
  *   h = x + x; b_{n+1} = b_{n+2} = +0;
@@ -129,6 +156,30 @@ static inline float tfit_row(const float *c, const float *phi, uint32_t n)
         acc = acc + c[t] * phi[t];
     }
     return acc;
+}
+
+/* The modal rows in C (header-format.md §5.3), any rank, every target: per
+ * output point, out = ((U[0] a_0 + U[1] a_1) + ...) for its three rows,
+ * which share each amplitude; the output mask (§5.5) applied as each word
+ * is stored.  The modal family's, and the region surfaces' (§5.11). */
+static inline void tfit_modal_rows_c(const float *u, const float *a, uint32_t r, uint32_t n_out,
+                                     uint32_t keep, float *out)
+{
+    for (uint32_t j = 0u; j < n_out; ++j) {
+        const float *uy = u + r;
+        const float *uz = uy + r;
+        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
+        for (uint32_t k = 1u; k < r; ++k) {
+            x = x + u[k] * a[k];
+            y = y + uy[k] * a[k];
+            z = z + uz[k] * a[k];
+        }
+        out[0] = tfit_masked(x, keep);
+        out[1] = tfit_masked(y, keep);
+        out[2] = tfit_masked(z, keep);
+        u += 3u * r;
+        out += 3;
+    }
 }
 
 /* Degree-1 rows (nodal and contact p = 1, header-format.md §5.2): per output
@@ -323,6 +374,16 @@ _Static_assert(TFIT_PRONY_DIMS == TFIT_RESONANT_DIMS, "the stateful forms share 
 
 /* CRC-32 (IEEE, reflected) of one little-endian word (tfit_crc_word.c). */
 uint32_t tfit_crc32_word(uint32_t crc, uint32_t w);
+
+/* 1 when every one of `rows` rows of r modes, weighted by the amplitude
+ * bounds amax[r], sums to at most 2^100 in magnitude (tfit_check.c: the
+ * modal family's output bound, the region surfaces' too). */
+int tfit_modes_bounded(const float *modes, const float *amax, uint32_t r, uint32_t rows);
+
+/* Far input k of the self-test (tfit_check.c, header-format.md §8): the
+ * next three signed 24-bit integers of a linear congruential sequence,
+ * times 2^77 (exact), into in; returns the sequence's new state. */
+uint32_t tfit_far_input(uint32_t state, float in[3]);
 
 /* Expected coef[] length for the model's family, dims and n_out, or 0 when
  * they are invalid or beyond this build's capacity (tfit_layout.c). */

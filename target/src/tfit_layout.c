@@ -3,7 +3,7 @@
  * family, dims and n_out (docs/header-format.md §3).  Used by
  * tfit_model_check() before it reads any table.
  */
-#include "tfit_internal.h"
+#include "tfit_region.h"
 
 static uint32_t nodal_coefs(const tfit_model *m)
 {
@@ -103,6 +103,9 @@ uint32_t tfit_expected_coefs(const tfit_model *m)
         return m->n_dims == TFIT_CUT_DIMS ? cut_coefs(m) : 0u;
     case TFIT_FAMILY_MODAL_Q15:
         return m->n_dims == TFIT_MODAL_Q15_DIMS ? modal_q15_coefs(m) : 0u;
+    case TFIT_FAMILY_REGION:
+    case TFIT_FAMILY_REGION_SURFACE:
+        return tfit_region_coefs(m); /* tfit_region_check.c */
     default:
         return 0u;
     }

@@ -11,27 +11,6 @@
  */
 #include "tfit_internal.h"
 
-/* The reconstruction in C: any rank, every target. */
-static void rows_c(const float *u, const float *a, uint32_t r, uint32_t n_out, uint32_t keep,
-                   float *out)
-{
-    for (uint32_t j = 0u; j < n_out; ++j) {
-        const float *uy = u + r;
-        const float *uz = uy + r;
-        float x = u[0] * a[0], y = uy[0] * a[0], z = uz[0] * a[0];
-        for (uint32_t k = 1u; k < r; ++k) {
-            x = x + u[k] * a[k];
-            y = y + uy[k] * a[k];
-            z = z + uz[k] * a[k];
-        }
-        out[0] = tfit_masked(x, keep);
-        out[1] = tfit_masked(y, keep);
-        out[2] = tfit_masked(z, keep);
-        u += 3u * r;
-        out += 3;
-    }
-}
-
 void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float *out)
 {
     float phi[TFIT_MAX_TERMS];
@@ -57,5 +36,5 @@ void tfit_eval_modal(const tfit_model *m, const float g[3], uint32_t keep, float
         return;
     }
 #endif
-    rows_c(u, a, r, m->n_out, keep, out);
+    tfit_modal_rows_c(u, a, r, m->n_out, keep, out);
 }

@@ -14,10 +14,12 @@
  *
  * An evaluation starts when a block at the entry of tfit_displacements,
  * tfit_displacements_cut, tfit_contact_force, tfit_prony_step,
- * tfit_resonant_step (a stateful model's tick; its reset is not counted)
- * or the _q31 forms executes and ends when control is
- * back in tfit_golden_run*; a golden set starts with its tfit_model_check*
- * call (qemu_golden.c).  Output, one line per set:
+ * tfit_resonant_step (a stateful model's tick; its reset is not counted),
+ * the _q31 forms or the region entry points (tfit_region_force,
+ * tfit_region_surface, tfit_region_pair, tfit_region_surface_pair) executes
+ * and ends when control is back in tfit_golden_run* (or region_golden_run*,
+ * tests/region/qemu_region.c's loops); a golden set starts with its
+ * tfit_model_check* call (qemu_golden.c).  Output, one line per set:
  *   set S: N calls, identical|DIFFERENT, mix: alu=... (of the first call)
  * Exit status 1 when the calls of a set did not all execute the same mix.
  */
@@ -159,7 +161,10 @@ static int is_entry(unsigned long pc)
                    strcmp(f, "tfit_displacements_cut") == 0 ||
                    strcmp(f, "tfit_displacements_q31") == 0 ||
                    strcmp(f, "tfit_contact_force_q31") == 0 ||
-                   strcmp(f, "tfit_prony_step_q31") == 0;
+                   strcmp(f, "tfit_prony_step_q31") == 0 ||
+                   strcmp(f, "tfit_region_force") == 0 || strcmp(f, "tfit_region_surface") == 0 ||
+                   strcmp(f, "tfit_region_pair") == 0 ||
+                   strcmp(f, "tfit_region_surface_pair") == 0;
         }
     }
     return 0;
@@ -258,7 +263,8 @@ int main(int argc, char **argv)
             in_call = 1;
             entry = fn;
             memset(&mix, 0, sizeof mix);
-        } else if (in_call && starts_with(fn, "tfit_golden_run")) {
+        } else if (in_call && (starts_with(fn, "tfit_golden_run") ||
+                               starts_with(fn, "region_golden_run"))) {
             finish_call(&mix, entry);
             in_call = 0;
         }

@@ -10,6 +10,7 @@
 #include "fitting/families/zhou2017.h"
 #include "model/forms/prony.h"
 #include "model/forms/resonant.h"
+#include "random_region.h"
 
 static uint32_t pick(tf_rng *r, uint32_t lo, uint32_t hi)
 {
@@ -253,8 +254,31 @@ static int make_emittable(tf_model *m)
     return -1;
 }
 
+/* A region law or surface (random_region.c: a random chart, grid and
+ * stiffness field; a surface of random rank, degree, site modes and
+ * outputs), built and checked by model/region_model.c. */
+static tf_model *random_region_model(tf_rng *r, const char *name, tfit_family family, int small)
+{
+    tf_ctx ctx;
+    tf_random_region g;
+    tf_ctx_init(&ctx);
+    tf_random_region_draw(r, small ? 5 : 16, &g);
+    tf_model *m = family == TFIT_FAMILY_REGION
+                      ? tf_random_region_law(&ctx, &g, name)
+                      : tf_random_region_surface(&ctx, r, &g, name, pick(r, 1, small ? 4 : 16),
+                                                 pick(r, 1, TFIT_REGION_SURFACE_MAX_DEGREE),
+                                                 (int)tf_rng_below(r, 2), random_n_out(r, small));
+    if (m == NULL) {
+        fprintf(stderr, "random region model: %s\n", ctx.err);
+    }
+    return m;
+}
+
 tf_model *tf_random_model(tf_rng *r, const char *name, tfit_family family, int small)
 {
+    if (family == TFIT_FAMILY_REGION || family == TFIT_FAMILY_REGION_SURFACE) {
+        return random_region_model(r, name, family, small);
+    }
     /* family 0: the stateless families (their sequences predate prony,
      * which is drawn only when asked for) */
     static const tfit_family families[] = {TFIT_FAMILY_NODAL, TFIT_FAMILY_NODAL,

@@ -2,7 +2,8 @@
  * random_model.h — random models for the bit-exact and property tests:
  * every family, sizes up to the build's capacity, ellipsoidal envelopes with
  * offsets, and coefficients spread over many binades (down to subnormals),
- * scaled by powers of two until the model is emittable.
+ * scaled by powers of two until the model is emittable; region laws and
+ * surfaces through random_region.h.
  */
 #ifndef TF_RANDOM_MODEL_H
 #define TF_RANDOM_MODEL_H

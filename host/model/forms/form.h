@@ -33,6 +33,7 @@ typedef struct tf_model tf_model;
 typedef struct tf_opcount tf_opcount;
 typedef struct tf_arith tf_arith;
 typedef struct tf_q31 tf_q31;
+typedef struct tf_ctx tf_ctx; /* base/context.h */
 
 /* A stateful form's filter (model/forms/stateful.h): the per-tick
  * recurrence and its coefficients.  NULL for a stateless form. */
@@ -95,6 +96,16 @@ typedef struct tf_form {
      * the run's (a stateful form's, reset before input 0). */
     tfit_status (*check_step)(const tf_model *m, float *state, int k, const float in[3],
                               float *out);
+    /* A form whose state is not a filter's (the region law's proxy): the
+     * state words the self-test folds after each status, the state zero
+     * at the start (0: none; a stateful form's come from its filter). */
+    uint32_t state_words;
+    /* The self-test's far inputs (§8) when they are not far forces through
+     * the input map at coef[0..12) (NULL): far input x (tfit_check.c's
+     * sequence) and the state after the carried inputs; returns crc
+     * continued over the words the target folds for it. */
+    uint32_t (*check_far)(const tf_model *m, float *state, const uint32_t *check,
+                          const float x[3], uint32_t crc);
 
     /* ---- cost (§6; docs/firmware.md, cost/cycles.h) ---- */
     /* Adds the operations of one evaluation. */
@@ -160,6 +171,13 @@ int tf_form_bound_fail(tf_ctx *ctx, double b, const char *what, const tf_model *
  * (nodal, contact, cut): 0, or 1 with a message. */
 int tf_form_rows_bounds(tf_ctx *ctx, const tf_model *m, const float *c, uint64_t n_rows,
                         uint32_t n_terms);
+
+/* The float operations of the M4F's instruction mix of one call (fadd,
+ * fmul, fdiv): the operations of a form whose cost model is its traced
+ * paths (the region forms). */
+void tf_form_mix_ops(const tf_model *m, tf_opcount *ops);
+/* crc continued over the bits of n floats (tf_crc32_u32). */
+uint32_t tf_form_crc_floats(uint32_t crc, const float *x, size_t n);
 
 /* Operations (§6): the projection (§4), and the basis of degree p (§5.1). */
 void tf_form_input_ops(tf_opcount *ops);

@@ -12,7 +12,9 @@
 #include "cost/evaluator.h"
 #include "model/forms/stateful.h"
 
-#define FORMS(X) X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant) X(modal_q15)
+#define FORMS(X)                                                                                   \
+    X(nodal) X(modal) X(zhou2017) X(contact) X(prony) X(cut) X(resonant) X(modal_q15) X(region)   \
+        X(region_surface)
 
 #define DECLARE(name) extern const tf_form tf_form_##name;
 FORMS(DECLARE)

@@ -7,6 +7,9 @@
 #include "model/forms/form.h"
 
 #include <math.h>
+#include <string.h>
+
+#include "base/context.h"
 
 #include "model/model.h"
 #include "model/ref_arith.h"
@@ -118,4 +121,24 @@ void tf_form_basis_ops(uint32_t p, tf_opcount *ops)
         ops->add += 3 * (1 + (uint64_t)(p - 1));
         ops->mul += 3 * (uint64_t)(p - 1) + (uint64_t)p * (p - 1) / 2 + tf_terms(p - 1) - p;
     }
+}
+
+void tf_form_mix_ops(const tf_model *m, tf_opcount *ops)
+{
+    tf_insn_mix mix;
+    memset(&mix, 0, sizeof mix);
+    tf_form_of(m->family)->insn_mix(m, TF_CORE_M4F, &mix);
+    ops->add += mix.n[TF_INSN_FADD];
+    ops->mul += mix.n[TF_INSN_FMUL];
+    ops->div += mix.n[TF_INSN_FDIV];
+}
+
+uint32_t tf_form_crc_floats(uint32_t crc, const float *x, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        uint32_t w;
+        memcpy(&w, &x[i], sizeof w);
+        crc = tf_crc32_u32(crc, w);
+    }
+    return crc;
 }

@@ -33,6 +33,7 @@ static int in_patch(const tf_patch *p, double u, double v)
     case TF_PATCH_POINT:
     case TF_PATCH_AT:
     case TF_PATCH_SURFACE: /* an organ's patch: create() admits boxes only */
+    case TF_PATCH_POINTS:
         return 0;
     }
     return 0;
@@ -114,6 +115,10 @@ int tf_colloc_patch_forces(tf_ctx *ctx, const tf_problem *pr, const tf_patch *p,
          * functions at that point; not provided (no field either). */
         return tf_fail(ctx, "mls-collocation: a force at a point between particles is not "
                             "supported; give a node or a face patch");
+    }
+    if (p->shape == TF_PATCH_POINTS) {
+        return tf_fail(ctx, "mls-collocation: a contact region's probe (a patch given by "
+                            "quadrature points) is not supported; give a face patch");
     }
     if (p->shape == TF_PATCH_POINT) {
         for (int a = 0; a < 3; ++a) {

@@ -338,12 +338,12 @@ static void load_vector(const galerkin *g, int contact, const double *force, dou
     }
 }
 
-/* Right-hand side of one case in the factorised system's DOFs. */
-static void rhs_of(const galerkin *g, int contact, const double *force, double *f, double *rhs)
+/* Right-hand side, in the factorised system's DOFs, of the full load
+ * vector f (the problem's loads included). */
+static void rhs_of_vector(const galerkin *g, const double *f, double *rhs)
 {
     size_t n3 = g->k.n;
     const tf_constraints *bc = &g->bc;
-    load_vector(g, contact, force, f);
     if (g->weak) {
         for (size_t d = 0; d < n3; ++d) {
             rhs[d] = g->rhs0[d] + (f[d] - g->f0[d]);
@@ -361,29 +361,28 @@ static void rhs_of(const galerkin *g, int contact, const double *force, double *
     }
 }
 
-/* One CHOLMOD solve with n right-hand sides; u0 is not needed (linear). */
-static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
-                 const double *u0, double *u)
+/* Right-hand side of one case in the factorised system's DOFs. */
+static void rhs_of(const galerkin *g, int contact, const double *force, double *f, double *rhs)
 {
-    (void)u0;
-    if (n == 0) {
-        return 0; /* (the interface never asks; this tells the compiler b is filled) */
-    }
-    galerkin *g = of(s);
-    tf_ctx *ctx = s->ctx;
+    load_vector(g, contact, force, f);
+    rhs_of_vector(g, f, rhs);
+}
+
+/* Size of the factorised system: every DOF, or the free ones when the
+ * prescribed DOFs are eliminated. */
+static size_t system_size(const galerkin *g)
+{
+    return g->weak || g->base.opts.bc == TF_BC_PENALTY ? g->k.n : g->bc.n_free;
+}
+
+/* Solves n right-hand sides b (system size) into x and the displacements u
+ * (3N x n): the nodal values of the solution (EFG: mapped from its
+ * parameters), prescribed DOFs at their values. */
+static int solve_rhs(galerkin *g, const double *b, double *x, size_t n, double *u)
+{
+    tf_ctx *ctx = g->base.ctx;
     const tf_constraints *bc = &g->bc;
-    size_t n3 = g->k.n, m = g->weak || g->base.opts.bc == TF_BC_PENALTY ? n3 : bc->n_free;
-    double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
-    double *f = malloc(n3 * sizeof *f);
-    if (!b || !x || !f) {
-        free(b);
-        free(x);
-        free(f);
-        return tf_fail(ctx, "out of memory for %zu load cases of %zu DOFs", n, n3);
-    }
-    for (size_t k = 0; k < n; ++k) {
-        rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
-    }
+    size_t n3 = g->k.n, m = system_size(g);
     int rc = tf_chol_solve(ctx, g->chol, b, x, n);
     if (rc == 0 && g->efg) { /* displacements at the nodes, not parameters */
         tf_nodal_map_values(&g->map, x, u, n);
@@ -396,10 +395,72 @@ static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
                                    : x[k * m + (size_t)bc->free_index[d]];
         }
     }
+    return rc;
+}
+
+/* One CHOLMOD solve with n right-hand sides; u0 is not needed (linear). */
+static int solve(tf_solver *s, int contact, const double (*forces)[3], size_t n,
+                 const double *u0, double *u)
+{
+    (void)u0;
+    if (n == 0) {
+        return 0; /* (the interface never asks; this tells the compiler b is filled) */
+    }
+    galerkin *g = of(s);
+    tf_ctx *ctx = s->ctx;
+    size_t n3 = g->k.n, m = system_size(g);
+    double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
+    double *f = malloc(n3 * sizeof *f);
+    if (!b || !x || !f) {
+        free(b);
+        free(x);
+        free(f);
+        return tf_fail(ctx, "out of memory for %zu load cases of %zu DOFs", n, n3);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        rhs_of(g, contact, contact >= 0 ? forces[k] : NULL, f, b + k * m);
+    }
+    int rc = solve_rhs(g, b, x, n, u);
     free(b);
     free(x);
     free(f);
     return rc;
+}
+
+/* n nodal load vectors (3N x n) added to the problem's loads, one CHOLMOD
+ * solve with n right-hand sides. */
+static int solve_loads(tf_solver *s, const double *fl, size_t n, double *u)
+{
+    galerkin *g = of(s);
+    size_t n3 = g->k.n, m = system_size(g);
+    double *b = malloc(m * n * sizeof *b), *x = malloc(m * n * sizeof *x);
+    double *f = malloc(n3 * sizeof *f);
+    if (!b || !x || !f) {
+        free(b);
+        free(x);
+        free(f);
+        return tf_fail(s->ctx, "out of memory for %zu load vectors of %zu DOFs", n, n3);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        for (size_t d = 0; d < n3; ++d) {
+            f[d] = g->f0[d] + fl[k * n3 + d];
+        }
+        rhs_of_vector(g, f, b + k * m);
+    }
+    int rc = solve_rhs(g, b, x, n, u);
+    free(b);
+    free(x);
+    free(f);
+    return rc;
+}
+
+/* The unit-force load vectors of a patch with this solver's shape
+ * functions, as build_loads makes a contact site's. */
+static int patch_loads(tf_ctx *ctx, const tf_solver *s, const tf_patch *p, double *f)
+{
+    const galerkin *g = of_const(s);
+    memset(f, 0, 3 * g->k.n * sizeof *f);
+    return tf_load_patch(ctx, &g->sh, p, NULL, f);
 }
 
 static int reactions(const tf_solver *s, int contact, const double force[3], const double *u,
@@ -487,6 +548,8 @@ const tf_solver_ops tf_galerkin_ops = {
     .coords = coords,
     .report = report,
     .destroy = destroy,
+    .patch_loads = patch_loads,
+    .solve_loads = solve_loads,
 };
 
 const tf_solver_ops tf_efg_galerkin_ops = {
@@ -507,6 +570,10 @@ const tf_solver_ops tf_efg_galerkin_ops = {
     .coords = coords,
     .report = report,
     .destroy = destroy,
+    /* no patch_loads: its displacements are nodal values, not the parameters
+     * the load vectors weight, so f^T u would not be a patch average */
+    .patch_loads = NULL,
+    .solve_loads = solve_loads,
 };
 
 static int is_galerkin(const tf_solver *s)

@@ -17,6 +17,7 @@
 #include "model/forms/form.h"
 #include "model/golden.h"
 #include "model/ref_eval.h"
+#include "model/region_layout.h"
 #include "random_model.h"
 
 static float float_of(uint32_t u)
@@ -44,7 +45,15 @@ static void covers_every_input_class(void **state)
         int32_t status[TF_GOLDEN_MAX];
         const size_t n = tf_golden_design(m, 77, in), n_out = 3 * (size_t)m->n_out;
         int zero = 0, nan = 0, pinf = 0, ninf = 0, subnormal = 0, huge = 0, on_edge = 0;
-        int status_seen[3] = {0, 0, 0}, nonfinite = 0;
+        int status_seen[3] = {0, 0, 0}, nonfinite = 0, no_contact = 0;
+        /* the input map the inputs go through: a region surface's force
+         * map follows its chart and scalars; a region law's tips have none
+         * (they are tool-tip positions on a chart: no boundary to test) */
+        const int law = f->id == TFIT_FAMILY_REGION;
+        tf_model map = *m;
+        if (f->id == TFIT_FAMILY_REGION_SURFACE) {
+            map.coef = m->coef + TF_REGION_FORCE_MAP;
+        }
         float *out = malloc(n * n_out * sizeof *out);
         assert_true(n >= 60 && n <= TF_GOLDEN_MAX);
         tf_ref_run(m, (const float(*)[3])in, n, status, out);
@@ -62,10 +71,14 @@ static void covers_every_input_class(void **state)
             zero += in[v][0] == 0 && in[v][1] == 0 && in[v][2] == 0;
             float g[3];
             int clamped, bad;
-            tf_ref_input(m, in[v], g, &clamped, &bad, NULL);
+            tf_ref_input(&map, in[v], g, &clamped, &bad, NULL);
             double gn = sqrt((double)g[0] * g[0] + (double)g[1] * g[1] + (double)g[2] * g[2]);
-            on_edge += !bad && fabs(gn - 1.0) < 1e-6;
+            on_edge += !law && !bad && fabs(gn - 1.0) < 1e-6;
             const int s = status[v];
+            if (s == TFIT_NO_CONTACT) { /* a region law's tip off the surface */
+                ++no_contact;
+                continue;
+            }
             status_seen[s == TFIT_OK ? 0 : (s == TFIT_CLAMPED ? 1 : 2)]++;
             /* NaN/Inf in the input, or in a cut model's progress, and only
              * then: TFIT_ERR_INPUT and +0.0f outputs */
@@ -79,14 +92,25 @@ static void covers_every_input_class(void **state)
                 }
             }
         }
-        print_message("%-9s: %zu inputs: %d in, %d clamped, %d rejected; %d on the boundary\n",
-                      f->name, n, status_seen[0], status_seen[1], status_seen[2], on_edge);
+        print_message("%-9s: %zu inputs: %d in, %d clamped, %d rejected, %d not in contact; %d "
+                      "on the boundary\n",
+                      f->name, n, status_seen[0], status_seen[1], status_seen[2], no_contact,
+                      on_edge);
         assert_true(zero >= 1);
         assert_true(nan >= 4);
-        /* both infinities (the tick design has one +Inf among its ticks) */
-        assert_true(pinf >= 1 && ninf >= 1 && pinf + ninf >= 3);
+        /* both infinities (the tick designs have one +Inf among their ticks) */
+        assert_true(pinf >= 1 && ninf >= 1 && pinf + ninf >= (law ? 2 : 3));
         assert_true(subnormal >= 3);
         assert_true(huge >= 3);
+        if (law) { /* tips above the surface, lifting off, away */
+            assert_true(no_contact >= 8);
+            assert_true(status_seen[0] >= 10 && status_seen[1] >= 10);
+            assert_true(nonfinite >= 6 && status_seen[2] == nonfinite);
+            free(out);
+            tf_model_free(m);
+            continue;
+        }
+        assert_int_equal(no_contact, 0);
         assert_true(on_edge >= 14);
         /* beyond the envelope: 10x, 1e30x and the largest floats (fewer ticks) */
         assert_true(status_seen[0] >= 20 && status_seen[1] >= (f->golden_inputs == tf_golden_ticks ? 7 : 10));

@@ -1,0 +1,145 @@
+# region_target.mk — the region models on the device (docs/header-format.md
+# §5.10-§5.12, docs/firmware.md §12): the law over a region, the surface for
+# the current contact, two instruments.
+#
+#   check-bitexact-region    random regions (laws of degree 2-4, surfaces of
+#                            degree 1-3, the two-instrument sequences) x the
+#                            bit-exact compiler matrix: target == host reference;
+#                            a contracted (FMA) build must mismatch and fail its
+#                            self-test
+#   check-insncount-region   callgrind: one instruction count per tick of
+#                            tfit_region_force, per call of tfit_region_surface,
+#                            tfit_region_pair and tfit_region_surface_pair
+#   check-region-properties  continuity, passivity, finiteness and the stuck
+#                            law on a block-like and a curved region (margins)
+#   check-qemu-region        golden and two-instrument vectors on Cortex-M4F and
+#                            M7 under QEMU, and the instructions and cycles of a
+#                            block48-sized law and liver-sized surfaces
+
+RG := $(T)/region
+
+$(RG)/gen_region $(RG)/properties: $(RG)/%: tests/region/%.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -Itests/region $< $(call host_test_link,native) -o $@
+
+$(RG)/regions.bundle: $(RG)/gen_region
+	$(call say,GEN)
+	$(Q)$< bundle 300 20261206 $@
+
+REGION_RUNNER := tests/region/run_region.c tests/region/region_read.h tests/region/region_bundle.h
+$(RG)/run_region-fma: $(REGION_RUNNER) $(T)/fma/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/region $< $(T)/fma/libtfit.a -o $@
+$(RG)/run_region-%: $(REGION_RUNNER) $(B)/bitexact-%/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/region $< $(B)/bitexact-$*/libtfit.a -o $@
+
+.PHONY: check-bitexact-region check-insncount-region check-region-properties check-qemu-region
+CHECKS += check-bitexact-region check-insncount-region check-region-properties check-qemu-region
+
+check-bitexact-region: $(RG)/regions.bundle $(BITEXACT_CONFIGS:%=$(RG)/run_region-%) \
+    $(RG)/run_region-fma
+	@echo "== bit-exact: random region models (law, surface, two instruments), $(words $(BITEXACT_CONFIGS)) compiler configurations =="
+	@set -e; for c in $(BITEXACT_CONFIGS); do $(RG)/run_region-$$c $$c $(RG)/regions.bundle; done
+	@if $(RG)/run_region-fma fma-contracted $(RG)/regions.bundle >$(RG)/fma.log 2>&1; then \
+	  tail -n 1 $(RG)/fma.log; echo "the FMA-contracted library matched every region word"; exit 1; fi; \
+	tail -n 1 $(RG)/fma.log; \
+	n=$$(sed -n 's/.* \([0-9][0-9]*\) mismatches.*/\1/p' $(RG)/fma.log); \
+	k=$$(sed -n 's/.* \([0-9][0-9]*\) failed checks.*/\1/p' $(RG)/fma.log); \
+	[ "$${n:-0}" -gt 0 ] || { echo "the FMA build gave no mismatching region word"; exit 1; }; \
+	[ "$${k:-0}" -gt 0 ] || { echo "the FMA build passed every region self-test"; exit 1; }
+	@echo "ok: 300 random regions bit-exact in $(words $(BITEXACT_CONFIGS)) compiler configurations; a contracted build mismatches and fails its self-test"
+
+# --- one instruction count per call (callgrind) ----------------------------------
+$(RG)/probe_region: tests/region/probe_region.c tests/region/region_read.h \
+    tests/region/region_bundle.h $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/region $< $(B)/native/libtfit.a -o $@
+$(RG)/probe.bundle: $(RG)/gen_region
+	$(call say,GEN)
+	$(Q)$< bundle 12 20261207 $@ >/dev/null
+
+check-insncount-region: $(RG)/probe_region $(RG)/probe.bundle
+	@echo "== instructions per call of the region entry points (callgrind), every golden input and state =="
+	@tests/region/insncount.sh $(RG)/probe_region $(RG)/probe.bundle $(RG)/insncount
+	@echo "ok: one instruction count per region model and entry point, whatever the tip, force and state"
+
+# --- on the device: QEMU (M4F, M7 and the other builds of check-qemu) --------------
+$(RG)/gen/regions.h: $(RG)/gen_region
+	@mkdir -p $(@D)
+	$(call say,GEN)
+	$(Q)$< header 20261208 $@ $(RG)/gen/regions-mix.txt >/dev/null
+$(RG)/gen/regions-mix.txt: $(RG)/gen/regions.h
+
+REGION_FW_CORES := m4f m7 m4f-c m7-c m4f-O0 m4f-Os m4f-O3
+# $(call region_fw,CORE)
+define region_fw
+$(FW)/$(1)/region.elf: tests/region/qemu_region.c $(RG)/gen/regions.h $(FW_STARTUP) $(FW_SEMIHOST) \
+    $(FW_LIB_$(1)) linker/$(FW_LD_$(1)) linker/sections.ld | deps-check
+	@mkdir -p $$(@D)
+	$$(call say,LINK)
+	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(1)) -I$(RG)/gen -DREGION_H='"regions.h"' \
+	  -DLABEL='"regions/$(FW_QEMU_$(1))$(FW_TAG_$(1))"' $$(filter %.c,$$^) $(FW_LIB_$(1)) \
+	  $(FW_LDFLAGS) -T $(FW_LD_$(1)) -o $$@
+endef
+$(foreach c,$(REGION_FW_CORES),$(eval $(call region_fw,$(c))))
+
+# The executed instruction mix of every call (trace_mix: one mix per group of
+# calls, or DIFFERENT), and its cycles by the cycle model's per-class costs
+# (host/cost/cycles.c: the Cortex-M4 TRM's table; M7 a dual-issue estimate).
+$(FW)/%/region-trace.txt: $(FW)/%/region.elf $(FW)/%/region.dis $(T)/trace_mix
+	$(call say,TRACE)
+	$(Q)timeout 600 qemu-system-arm -M $(FW_QEMU_$*) -display none -monitor none -serial none \
+	  -semihosting-config enable=on,target=native -kernel $< \
+	  -d in_asm,exec,nochain -D $(@:.txt=.log) >/dev/null 2>&1 || { echo "$<: run failed"; exit 1; }
+	$(Q)$(T)/trace_mix $(word 2,$^) $(@:.txt=.log) >$@.tmp || { cat $@.tmp; rm -f $@.tmp; exit 1; }
+	$(Q)rm -f $(@:.txt=.log) && mv $@.tmp $@
+$(FW)/%/region-cycles.txt: $(FW)/%/region-trace.txt $(T)/check_cycle_model
+	$(Q)$(T)/check_cycle_model cost $* $< >$@
+
+# The cycle models are the header's last two cases (gen_region.c): case 5 =
+# groups 20-23 (the block48-sized law, the rank-20 surface, their pairs),
+# case 6 = groups 24-27 (the law again, the rank-40 surface, their pairs).
+REGION_BUDGET_LAW := 5040
+REGION_BUDGET_SURFACE := 50400
+check-qemu-region: $(foreach c,$(REGION_FW_CORES),$(FW)/$(c)/region.elf) \
+    $(FW)/m4f/region-cycles.txt $(FW)/m7/region-cycles.txt $(RG)/gen/regions-mix.txt
+	@echo "== region models under QEMU: golden and two-instrument vectors on M4F and M7 (and the C path, -O0/-Os/-O3), one instruction mix per call, cycles =="
+	@printf 'tests/firmware/qemu_run.sh %s %s\n' $(foreach c,$(REGION_FW_CORES),$(FW_QEMU_$(c)) $(FW)/$(c)/region.elf) | \
+	  tests/run_lines.sh $(NPROC) $(FW)/qemu-region
+	@for c in m4f m7; do echo "$$c: $$(grep -c identical $(FW)/$$c/region-trace.txt) groups of calls, each one instruction mix"; done
+	@set -e; for c in m4f m7; do awk -v core=$$c ' \
+	  { split($$0, w, ":"); s = substr(w[1], 5) + 0 } \
+	  s == 20 { printf "%s tfit_region_force, block48-sized law (P = 2, 17 x 17 sites): %s\n", core, substr($$0, index($$0, ":") + 2) } \
+	  s == 21 { printf "%s tfit_region_surface, 400 outputs, rank 20: %s\n", core, substr($$0, index($$0, ":") + 2) } \
+	  s == 25 { printf "%s tfit_region_surface, 400 outputs, rank 40: %s\n", core, substr($$0, index($$0, ":") + 2) } \
+	  s == 22 { printf "%s tfit_region_pair (two ticks and the coupling, rank 20): %s\n", core, substr($$0, index($$0, ":") + 2) } \
+	  s == 26 { printf "%s tfit_region_pair (two ticks and the coupling, rank 40): %s\n", core, substr($$0, index($$0, ":") + 2) } \
+	  s == 23 { printf "%s tfit_region_surface_pair, rank 20: %s\n", core, substr($$0, index($$0, ":") + 2) }' \
+	  $(FW)/$$c/region-cycles.txt; done
+	@set -e; for c in m4f m7; do \
+	  grep "^$$c set " $(RG)/gen/regions-mix.txt | sed "s/^$$c //" | sort >$(FW)/$$c/region-mix-model.txt; \
+	  sed -n 's/^\(set [0-9]*\) ([a-z_]*): .* mix: \(.*\)$$/\1: \2/p' $(FW)/$$c/region-trace.txt | \
+	    awk -F': ' 'NR == FNR { k[$$1] = 1; next } ($$1 in k)' $(FW)/$$c/region-mix-model.txt - | \
+	    sort >$(FW)/$$c/region-mix-traced.txt; \
+	  if ! diff $(FW)/$$c/region-mix-model.txt $(FW)/$$c/region-mix-traced.txt >$(FW)/$$c/region-mix.diff; then \
+	    echo "$$c: the region forms' cycle model differs from the traced calls (< model, > trace):"; \
+	    cat $(FW)/$$c/region-mix.diff; exit 1; fi; \
+	  echo "$$c: $$(wc -l <$(FW)/$$c/region-mix-model.txt) law and surface sets: the cycle model's mix is the traced one"; done
+	@law=$$(awk '/^set 20:/ { print $$6 }' $(FW)/m4f/region-cycles.txt); \
+	[ -n "$$law" ] && [ "$$law" -le $(REGION_BUDGET_LAW) ] || \
+	  { echo "the law's tick takes $$law M4F cycles, beyond its budget of $(REGION_BUDGET_LAW)"; exit 1; }; \
+	echo "law tick: $$law M4F cycles, within the budget of $(REGION_BUDGET_LAW) (30 us at 168 MHz)"
+	@echo "ok: region models bit-exact under QEMU on every build; every call of an entry point executes one instruction mix"
+.SECONDARY: $(foreach c,m4f m7,$(FW)/$(c)/region-trace.txt $(FW)/$(c)/region.dis)
+
+# --- properties of the contact (tests/region/properties.c) -------------------------
+check-region-properties: $(RG)/properties
+	@echo "== region law properties: continuity, closed-path work, passivity with friction, finiteness, stuck contact =="
+	@$<
+	@echo "ok: the region law is continuous, conservative without friction and passive with it, finite for every input and state, and the site law when stuck"
