@@ -11,7 +11,9 @@
 #                real run: on the 2-core machine each target executes well
 #                over 10^5 inputs and reaches about 97 % of the coverage 60 s
 #                reached (docs/architecture.md, "make check's time"); the
-#                campaign is make fuzz's
+#                campaign is make fuzz's; first, every registered law solved
+#                by every registered solver on a small box over the same
+#                clang library (tests/fuzz/ubsan_solve.c)
 #   make fuzz    each target FUZZ_SECONDS (default 1800 s), corpus kept in
 #                $(FZ)/corpus between runs
 #
@@ -42,6 +44,14 @@ $(FZ)/fuzz_%: tests/fuzz/fuzz_%.c $(FZ)/libtissuefit-host.a $(B)/native/libtfit.
 	$(Q)$(CLANG) $(FUZZ_HOST_CFLAGS) -fsanitize=fuzzer $< $(FZ)/libtissuefit-host.a \
 	  $(B)/native/libtfit.a $(HOST_LIBS) -o $@
 
+# A small solve of every (law, solver) pair over the same clang library
+# (tests/fuzz/ubsan_solve.c): the fuzzers never solve, and GCC's UBSan
+# (check-sanitize) lacks clang's null-pointer-offset check.
+$(FZ)/ubsan_solve: tests/fuzz/ubsan_solve.c $(FZ)/libtissuefit-host.a $(B)/native/libtfit.a | deps-check
+	$(call say,LINK)
+	$(Q)$(CLANG) $(filter-out -fsanitize=fuzzer-no-link%,$(FUZZ_HOST_CFLAGS)) \
+	  -fsanitize=address,undefined $< $(FZ)/libtissuefit-host.a $(B)/native/libtfit.a $(HOST_LIBS) -o $@
+
 # $(call fuzz_run,TARGET,SECONDS,CORPUS-DIR): the seeds and regression
 # inputs first, then SECONDS of fuzzing; prints one result line and fails
 # on a finding.
@@ -61,7 +71,9 @@ endef
 
 .PHONY: check-fuzz fuzz
 CHECKS += check-fuzz
-check-fuzz: $(FZ)/fuzz_scene $(FZ)/fuzz_set
+check-fuzz: $(FZ)/fuzz_scene $(FZ)/fuzz_set $(FZ)/ubsan_solve
+	@echo "== every law solved by every solver under clang ASan + UBSan =="
+	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 $(FZ)/ubsan_solve
 	@echo "== fuzzing the scene reader and --set values (ASan + UBSan, $(FUZZ_CHECK_SECONDS) s each) =="
 	@rm -rf $(FZ)/check-corpus
 	@# the two targets at once, one core each; their lines printed in order

@@ -763,8 +763,10 @@ static int all_cells(pass *ps, double *fint, nl_fault *fault)
             if (ps->only && !ps->only[c]) {
                 continue;
             }
+            /* no tangent: kc is NULL, and NULL + 0 is undefined in C */
+            double *kc = ps->kc ? ps->kc + (c - start) * ps->kstride : NULL;
             if (cell_work(ps, c, &bufs[omp_get_thread_num()], ps->fl + (c - start) * ps->fstride,
-                          ps->kc + (c - start) * ps->kstride, &f) != 0) {
+                          kc, &f) != 0) {
 #pragma omp critical(tf_nl_fault)
                 if (c < failed) {
                     failed = c;
