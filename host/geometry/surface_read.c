@@ -3,10 +3,10 @@
  */
 #include "geometry/surface_read.h"
 
-#include <errno.h>
-#include <stdio.h>
 #include <string.h>
 #include <strings.h>
+
+#include "base/input_file.h"
 
 typedef int (*reader)(const char *, tf_surface *, tf_geom_msg *);
 
@@ -36,12 +36,15 @@ int tf_surface_read(const char *path, tf_surface *s, tf_geom_msg *m)
                             "'%s': unknown mesh format '.%s' (read: .obj .stl .ply .off .vtk)",
                             path, ext);
     }
-    /* gmsh takes a missing file for a new, empty model: ask first */
-    FILE *fp = fopen(path, "rb");
-    if (fp == NULL) {
-        return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path,
-                            strerror(errno));
+    /* gmsh takes a missing file for a new, empty model, a FIFO would block
+     * either library, and nothing bounds their time on a huge mesh: the
+     * file is checked first (base/input_file.h) */
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    if (tf_input_file_check(&ctx, path, "surface mesh", TF_SURFACE_MAX_BYTES) != 0) {
+        size_t n = strlen(path); /* the message begins "PATH: " */
+        const char *why = strncmp(ctx.err, path, n) == 0 ? ctx.err + n + 2 : ctx.err;
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path, why);
     }
-    fclose(fp);
     return read(path, s, m);
 }

@@ -18,9 +18,16 @@
 #include "geometry/geom_msg.h"
 #include "geometry/surface.h"
 
-/* By extension (case-insensitive).  Returns TF_GEOM_OK, TF_GEOM_BAD_INPUT
- * (unreadable file, unknown format, faces that are not triangles, no
- * triangles) or TF_GEOM_FAILED (out of memory), with m->error set. */
+/* The largest mesh file read: 16 MiB holds about 300,000 triangles as OBJ,
+ * ten times the vertices a tissue model's cloud uses (the shipped organs'
+ * files are under 1 MiB). */
+#define TF_SURFACE_MAX_BYTES ((size_t)16 << 20)
+
+/* By extension (case-insensitive).  Only a regular file of at most
+ * TF_SURFACE_MAX_BYTES is handed to a reader.  Returns TF_GEOM_OK,
+ * TF_GEOM_BAD_INPUT (unreadable file, not a regular file, too large,
+ * unknown format, faces that are not triangles, no triangles) or
+ * TF_GEOM_FAILED (out of memory), with m->error set. */
 int tf_surface_read(const char *path, tf_surface *s, tf_geom_msg *m);
 
 int tf_surface_read_assimp(const char *path, tf_surface *s, tf_geom_msg *m);

@@ -274,6 +274,9 @@ typedef struct tf_newton_opts {
 /* Which solver (by its registered name, solvers/solver.h) and how it
  * discretises.  The meshless options are those of the RPIM Galerkin solver;
  * a solver ignores what it does not use. */
+/* The most background cells a scene may ask for (solver.cells' product). */
+#define TF_SOLVER_MAX_CELLS 1000000
+
 typedef struct tf_solver_opts {
     char method[TF_SOLVER_METHOD_MAX]; /* registered solver name, e.g. "rpim-galerkin" */
     double support;   /* alpha_s: support radius in nodal spacings (per axis) */

@@ -5,14 +5,11 @@
  */
 #include "scene/scene.h"
 
-#include <errno.h>
-#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "base/input_file.h"
 #include "scene/scene_build.h"
 #include "scene/scene_locate.h"
 #include "scene/scene_schema.h"
@@ -203,57 +200,12 @@ void tf_scene_key_values(const char *path, char *out, size_t outlen)
     }
 }
 
-/* The bytes of a scene file.  Only a regular file is read: a FIFO would
- * block (it is opened without waiting for a writer, then refused), a device
- * such as /dev/zero would be read until memory runs out.  Returns the text
- * (NUL-terminated, *len bytes), or NULL with a message. */
+/* The bytes of a scene file (base/input_file.h: a regular file of at most
+ * TF_SCENE_MAX_BYTES).  Returns the text (NUL-terminated, *len bytes), or
+ * NULL with a message. */
 static char *read_scene(tf_ctx *ctx, const char *path, size_t *len)
 {
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    struct stat st;
-    if (fd < 0 || fstat(fd, &st) != 0) {
-        tf_fail(ctx, "%s: cannot open: %s", path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-        }
-        return NULL;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        tf_fail(ctx, "%s: not a regular file (a scene is read from a file, not a %s)", path,
-                S_ISDIR(st.st_mode) ? "directory" : "device, FIFO or socket");
-        close(fd);
-        return NULL;
-    }
-    if (st.st_size > TF_SCENE_MAX_BYTES) {
-        tf_fail(ctx, "%s: %lld bytes, more than the %d MiB a scene file may hold", path,
-                (long long)st.st_size, TF_SCENE_MAX_BYTES >> 20);
-        close(fd);
-        return NULL;
-    }
-    size_t cap = (size_t)st.st_size + 1, used = 0; /* one more: a file that grew is seen */
-    char *text = malloc(cap + 1);
-    ssize_t n = 1;
-    while (text != NULL && used < cap && n > 0) {
-        n = read(fd, text + used, cap - used);
-        if (n < 0 && errno == EINTR) {
-            n = 1;
-        } else if (n > 0) {
-            used += (size_t)n;
-        }
-    }
-    int saved = errno;
-    close(fd);
-    if (text == NULL || n < 0 || used == cap) {
-        tf_fail(ctx, "%s: cannot read: %s", path,
-                text == NULL ? "out of memory"
-                : n < 0      ? strerror(saved)
-                             : "it changed while read");
-        free(text);
-        return NULL;
-    }
-    text[used] = '\0';
-    *len = used;
-    return text;
+    return tf_input_file_read(ctx, path, "scene", TF_SCENE_MAX_BYTES, len);
 }
 
 tf_scene *tf_scene_load(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets)

@@ -665,6 +665,13 @@ static int solver(const sd_solver *d, tf_problem *s, sd_issue *is)
             return sd_fail(is, "solver.cells", "1 to 4096 background cells per axis");
         }
     }
+    /* each cell's Gauss points hold their shape functions: 10^6 cells is
+     * past what memory holds at any support (41 x 41 x 9 nodes use 12,800) */
+    double cells = (double)o->cells[0] * o->cells[1] * o->cells[2];
+    if (cells > TF_SOLVER_MAX_CELLS) {
+        return sd_fail(is, "solver.cells", "%u x %u x %u = %.0f background cells, more than %d",
+                       o->cells[0], o->cells[1], o->cells[2], cells, TF_SOLVER_MAX_CELLS);
+    }
     if (o->gauss < 1 || o->gauss > 12) {
         return sd_fail(is, "solver.gauss", "1 to 12 Gauss points per axis");
     }

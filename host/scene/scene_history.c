@@ -4,12 +4,12 @@
  */
 #include "scene/scene_history.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/input_file.h"
 
 /* Which fields a segment kind takes: to, time, amplitude, period. */
 static const unsigned char takes[5][4] = {
@@ -58,52 +58,102 @@ static void table_path(const char *source, const char *file, char *out, size_t l
     }
 }
 
-/* Rows "t, fx, fy, fz" (a first line that is not four numbers is a
- * header; blank lines and # comments are skipped). */
+/* The largest table force taken, N: beyond it a value is a unit or typing
+ * error (tissue envelopes are a few newtons), and differences of forces
+ * near the double range overflow when the table is interpolated. */
+#define TABLE_FORCE_MAX 1e6
+#define TABLE_MAX_BYTES ((size_t)64 << 20)
+
+/* Whether a row's first cell begins with a number (after blanks and a
+ * quote): such a row is data, never a header. */
+static int starts_numeric(const char *line)
+{
+    line += strspn(line, " \t\"'");
+    char *end;
+    (void)strtod(line, &end);
+    return end != line;
+}
+
+/* One data row "t, fx, fy, fz" into r (first: the table's first line,
+ * which would have been its header); -1 with the message in is. */
+static int table_row(const char *path, int lineno, int first, const char *line,
+                     const tf_history *h, double r[4], sd_issue *is)
+{
+    char tail;
+    if (sscanf(line, "%lf , %lf , %lf , %lf %c", &r[0], &r[1], &r[2], &r[3], &tail) != 4) {
+        return sd_fail(is, "history.table",
+                       "%s:%d: expected four numbers t,fx,fy,fz (s, N)%s", path, lineno,
+                       first ? " (a header row's first cell is not a number)" : "");
+    }
+    if (!isfinite(r[0]) || r[0] < 0 || (h->n_rows > 0 && !(r[0] > h->table[4 * (h->n_rows - 1)]))) {
+        return sd_fail(is, "history.table", "%s:%d: times must be finite, >= 0 and increasing",
+                       path, lineno);
+    }
+    for (int a = 1; a < 4; ++a) {
+        if (!(fabs(r[a]) <= TABLE_FORCE_MAX)) {
+            return sd_fail(is, "history.table",
+                           "%s:%d: force %g N: forces must be finite and at most %g N in size",
+                           path, lineno, r[a], TABLE_FORCE_MAX);
+        }
+    }
+    return 0;
+}
+
+static int append_row(tf_history *h, size_t *cap, const double r[4], sd_issue *is)
+{
+    if (h->n_rows == *cap) {
+        *cap = 2 * *cap + 64;
+        double *t = realloc(h->table, 4 * *cap * sizeof *t);
+        if (t == NULL) {
+            return sd_fail(is, "history.table", "out of memory");
+        }
+        h->table = t;
+    }
+    memcpy(h->table + 4 * h->n_rows++, r, 4 * sizeof *r);
+    return 0;
+}
+
+/* Rows "t, fx, fy, fz" of a text file (base/input_file.h: a regular file
+ * of at most TABLE_MAX_BYTES).  A UTF-8 byte-order mark is skipped; blank
+ * lines and # comments are skipped; the first other line is a header when
+ * its first cell is not a number (a malformed first data row is an error,
+ * never dropped as a header). */
 static int read_table(const char *path, tf_history *h, sd_issue *is)
 {
-    FILE *fp = fopen(path, "r");
-    if (fp == NULL) {
-        return sd_fail(is, "history.table", "cannot read %s: %s", path, strerror(errno));
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    size_t len;
+    char *text = tf_input_file_read(&ctx, path, "load-history table", TABLE_MAX_BYTES, &len);
+    if (text == NULL) {
+        return sd_fail(is, "history.table", "%s", ctx.err);
     }
-    char line[512];
+    if (strlen(text) != len) {
+        free(text);
+        return sd_fail(is, "history.table", "%s: holds a NUL byte: not a text table", path);
+    }
+    char *line = strncmp(text, "\xEF\xBB\xBF", 3) == 0 ? text + 3 : text;
     size_t cap = 0;
-    int rc = 0, lineno = 0;
-    while (rc == 0 && fgets(line, sizeof line, fp) != NULL) {
+    int rc = 0, lineno = 0, seen = 0;
+    while (rc == 0 && line != NULL && *line != '\0') {
+        char *next = strchr(line, '\n');
+        if (next != NULL) {
+            *next++ = '\0';
+        }
         lineno++;
         double r[4];
-        char tail;
-        if (line[0] == '#' || strspn(line, " \t\r\n") == strlen(line)) {
+        if (line[0] == '#' || strspn(line, " \t\r") == strlen(line)) {
+            line = next;
             continue;
         }
-        int got = sscanf(line, "%lf , %lf , %lf , %lf %c", &r[0], &r[1], &r[2], &r[3], &tail);
-        if (got != 4) {
-            if (lineno == 1 && h->n_rows == 0) {
-                continue; /* header */
-            }
-            rc = sd_fail(is, "history.table", "%s:%d: expected four numbers t,fx,fy,fz (s, N)",
-                      path, lineno);
-            break;
+        if (!seen++ && !starts_numeric(line)) {
+            line = next;
+            continue; /* header */
         }
-        if (!isfinite(r[0]) || !isfinite(r[1]) || !isfinite(r[2]) || !isfinite(r[3]) ||
-            r[0] < 0 || (h->n_rows > 0 && !(r[0] > h->table[4 * (h->n_rows - 1)]))) {
-            rc = sd_fail(is, "history.table",
-                      "%s:%d: times must be finite, >= 0 and increasing, forces finite", path,
-                      lineno);
-            break;
-        }
-        if (h->n_rows == cap) {
-            cap = 2 * cap + 64;
-            double *t = realloc(h->table, 4 * cap * sizeof *t);
-            if (t == NULL) {
-                rc = sd_fail(is, "history.table", "out of memory");
-                break;
-            }
-            h->table = t;
-        }
-        memcpy(h->table + 4 * h->n_rows++, r, sizeof r);
+        rc = table_row(path, lineno, seen == 1, line, h, r, is);
+        rc = rc == 0 ? append_row(h, &cap, r, is) : rc;
+        line = next;
     }
-    fclose(fp);
+    free(text);
     if (rc == 0 && h->n_rows == 0) {
         rc = sd_fail(is, "history.table", "%s holds no row of t,fx,fy,fz", path);
     }

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -337,7 +338,22 @@ static void unreadable_files_say_why(void **state)
     assert_contains(m.error, "cannot read mesh");
     assert_contains(m.error, "none.obj");
     assert_int_equal(tf_surface_read(file("none.vtk"), &s, &m), TF_GEOM_BAD_INPUT);
-    assert_contains(m.error, "none.vtk': No such file or directory");
+    assert_contains(m.error, "none.vtk': cannot open: No such file or directory");
+    /* a FIFO would block either library, a device would be read without end */
+    assert_int_equal(mkfifo(file("fifo.obj"), 0600), 0);
+    alarm(20);
+    assert_int_equal(tf_surface_read(file("fifo.obj"), &s, &m), TF_GEOM_BAD_INPUT);
+    alarm(0);
+    assert_contains(m.error, "fifo.obj': not a regular file");
+    unlink(file("fifo.obj"));
+    assert_int_equal(tf_surface_read("/dev/zero.obj", &s, &m), TF_GEOM_BAD_INPUT);
+    FILE *big = fopen(file("big.obj"), "w");
+    assert_non_null(big);
+    assert_int_equal(ftruncate(fileno(big), (off_t)TF_SURFACE_MAX_BYTES + 1), 0);
+    fclose(big);
+    assert_int_equal(tf_surface_read(file("big.obj"), &s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "more than the 16 MiB a surface mesh file may hold");
+    unlink(file("big.obj"));
     FILE *fp = fopen(file("bad.vtk"), "w");
     fprintf(fp, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0\n");
     fclose(fp);

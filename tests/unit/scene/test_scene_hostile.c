@@ -2,8 +2,8 @@
  * test_scene_hostile.c — scene files and --set values a careless user or an
  * attacker would write (issue 19): numbers with trailing text, loose whole
  * numbers and booleans, a second document, aliases, bad UTF-8 and binary
- * bytes, physically absurd values, overlong --set values, and paths that are
- * not regular files.  Each is refused with file:line:field (or the --set
+ * bytes, physically absurd values, overlong --set values, paths that are
+ * not regular files, and load-history tables gone wrong.  Each is refused with file:line:field (or the --set
  * argument) and a message that says what is wrong.
  */
 #include <fcntl.h>
@@ -116,6 +116,9 @@ static void set_values_get_the_same_checks(void **state)
         {"geometry.grid=011,11,3", "geometry.grid.0: '011' has a leading zero"},
         {"fit.seed=-1", "fit.seed: '-1' is not a non-negative whole number"},
         {"fixed=[{face: x-}, *a]", "aliases (*a)"},
+        /* each axis within its range, the product past what memory holds */
+        {"solver.cells=4096,4096,8",
+         "solver.cells: 4096 x 4096 x 8 = 134217728 background cells, more than 1000000"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
         tf_ctx ctx;
@@ -189,10 +192,111 @@ static void scene_paths_that_are_not_files(void **state)
     rmdir(dir);
 }
 
+/* A load-history table written to dir/table.csv (len bytes of text), read
+ * through a scene beside it: returns the scene (NULL: refused, the message
+ * in ctx). */
+static tf_scene *with_table(tf_ctx *ctx, const char *dir, const char *table, const char *text,
+                            size_t len)
+{
+    char scene[128], path[128];
+    snprintf(scene, sizeof scene, "%s/t.yaml", dir);
+    FILE *f = fopen(scene, "w");
+    assert_non_null(f);
+    fprintf(f, "name: t\n"
+               "geometry: {box: {min: [0, 0, 0], max: [48, 48, 6]}, grid: [5, 5, 2]}\n"
+               "material: {E: 0.32, nu: 0.49}\n"
+               "fixed: [{face: x-}]\n"
+               "contact: [{name: top, node: 13}]\n"
+               "outputs: {select: face, face: z+}\n"
+               "history: {dt: 0.5, duration: 2, table: %s}\n",
+            table);
+    fclose(f);
+    if (text != NULL) {
+        snprintf(path, sizeof path, "%s/%s", dir, table);
+        f = fopen(path, "wb");
+        assert_non_null(f);
+        assert_int_equal(fwrite(text, 1, len, f), len);
+        fclose(f);
+    }
+    tf_ctx_init(ctx);
+    alarm(20); /* a reader that blocks or loops fails the test rather than hangs it */
+    tf_scene *s = tf_scene_load(ctx, scene, NULL, 0);
+    alarm(0);
+    return s;
+}
+
+/* Refused, the message holding fragment. */
+static void table_refused(const char *dir, const char *text, size_t len, const char *fragment)
+{
+    tf_ctx ctx;
+    tf_scene *s = with_table(&ctx, dir, "table.csv", text, len);
+    if (s != NULL) {
+        tf_scene_free(s);
+        fail_msg("a table of %zu bytes beginning '%.20s' was accepted", len, text);
+    }
+    if (strstr(ctx.err, fragment) == NULL) {
+        fail_msg("'%s' lacks '%s'", ctx.err, fragment);
+    }
+}
+
+/* Accepted with rows rows, the first at time t0. */
+static void table_rows(const char *dir, const char *text, size_t rows, double t0)
+{
+    tf_ctx ctx;
+    tf_scene *s = with_table(&ctx, dir, "table.csv", text, strlen(text));
+    if (s == NULL) {
+        fail_msg("%s", ctx.err);
+    }
+    assert_int_equal(s->problem.history.n_rows, rows);
+    assert_true(s->problem.history.table[0] == t0);
+    tf_scene_free(s);
+}
+
+#define TEXT(t) t, sizeof t - 1
+
+/* Load-history tables: a device, a FIFO, a binary file; a malformed first
+ * data row (never dropped as a header); a line longer than any buffer; a
+ * force beyond the double range's use; a byte-order mark. */
+static void history_tables(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/tf_table_XXXXXX", fifo[64];
+    tf_ctx ctx;
+    assert_non_null(mkdtemp(dir));
+    assert_null(with_table(&ctx, dir, "/dev/zero", NULL, 0));
+    assert_non_null(strstr(ctx.err, "/dev/zero: not a regular file"));
+    snprintf(fifo, sizeof fifo, "%s/fifo.csv", dir);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    assert_null(with_table(&ctx, dir, "fifo.csv", NULL, 0));
+    assert_non_null(strstr(ctx.err, "fifo.csv: not a regular file"));
+    unlink(fifo);
+    table_refused(dir, TEXT("0,0,0,-1\n1,0\0,0,-1\n"), "holds a NUL byte");
+    /* a first row that is data gone wrong: a typo, a unit, three numbers,
+     * a quoted decimal comma */
+    table_refused(dir, TEXT("0, 0, 0, -1x\n1, 0, 0, -1\n"), "table.csv:1: expected four numbers");
+    table_refused(dir, TEXT("0 s, 0 N, 0 N, -1 N\n"), "table.csv:1: expected four numbers");
+    table_refused(dir, TEXT("0, 0, -1\n1, 0, 0, -1\n"), "table.csv:1: expected four numbers");
+    table_refused(dir, TEXT("\"0,5\", 0, 0, -1\n"), "table.csv:1: expected four numbers");
+    table_refused(dir, TEXT("t,fx,fy,fz\n0, 0, 0, -1e308\n"), "table.csv:2: force -1e+308 N");
+    /* two rows' numbers on one 600-byte line are one bad row */
+    char line[700];
+    int n = snprintf(line, sizeof line, "0, 0, 0, -1%*s1, 0, 0, -1\n", 580, "");
+    table_refused(dir, line, (size_t)n, "table.csv:1: expected four numbers");
+    table_rows(dir, "\xEF\xBB\xBF" "0.5, 0, 0, -1\n1, 0, 0, -1\n", 2, 0.5);
+    table_rows(dir, "# a comment\ntime_s,fx_N,fy_N,fz_N\n0.25, 0, 0, -1\n", 1, 0.25);
+    char path[128];
+    snprintf(path, sizeof path, "%s/t.yaml", dir);
+    unlink(path);
+    snprintf(path, sizeof path, "%s/table.csv", dir);
+    unlink(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(numbers_with_trailing_text),
+        cmocka_unit_test(history_tables),
         cmocka_unit_test(loose_whole_numbers_and_booleans),
         cmocka_unit_test(one_document_no_aliases),
         cmocka_unit_test(syntax_errors_have_lines),
