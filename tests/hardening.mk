@@ -10,11 +10,16 @@
 #                   tests/cli/rename_fault.c), non-regular
 #                   destinations, links written through, hostile text in
 #                   generated comments compiled by gcc and clang
+#   check-interrupts  (not in make check: about a minute) tests/cli/interrupts.sh:
+#                   INTERRUPTS (50) SIGINT/SIGTERM/SIGKILL sent to fit's process at
+#                   random moments around its writes (check-outputs sends
+#                   them at chosen points, deterministically)
 #   (the fuzz targets: tests/fuzz.mk; unit tests: test_scene_hostile.c,
 #   test_neighbours.c, test_emit.c)
 
-.PHONY: check-hostile check-outputs
+.PHONY: check-hostile check-outputs check-interrupts
 CHECKS += check-hostile check-outputs
+INTERRUPTS ?= 50
 
 $(T)/rename_fault.so: tests/cli/rename_fault.c | deps-check
 	@mkdir -p $(@D)
@@ -28,3 +33,7 @@ check-hostile: $(B)/bin/tissuefit
 check-outputs: $(B)/bin/tissuefit $(B)/native/libtfit.a $(T)/rename_fault.so
 	@echo "== outputs that belong together: header and golden file =="
 	@tests/cli/outputs.sh $(B)/bin/tissuefit $(B)/native/libtfit.a $(T)/rename_fault.so
+
+check-interrupts: $(B)/bin/tissuefit
+	@echo "== $(INTERRUPTS) signals at random moments of fit =="
+	@tests/cli/interrupts.sh $(B)/bin/tissuefit $(INTERRUPTS)

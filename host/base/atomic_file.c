@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "base/interrupts.h"
+
 /* The directory part of path ("." when there is none). */
 static void dir_of(const char *path, char *dir, size_t n)
 {
@@ -77,17 +79,26 @@ static void interrupts(sigset_t *set)
     sigaddset(set, SIGHUP);
 }
 
-static void hold_interrupts(tf_afile *a)
+static void hold_interrupts(tf_ctx *ctx, tf_afile *a)
 {
     sigset_t hold;
     interrupts(&hold);
     pthread_sigmask(SIG_BLOCK, &hold, &a->before);
+    a->guard = ctx->interrupts;
+    if (a->guard != NULL) {
+        tf_interrupts_hold(a->guard);
+    }
 }
 
 /* Releases the interrupts that were not held before any of files[0..n)
  * was opened (a pending one is delivered now, its temporaries gone). */
 static void release_interrupts(tf_afile *const *files, size_t n)
 {
+    for (size_t k = 0; k < n; ++k) {
+        if (files[k]->guard != NULL) {
+            tf_interrupts_release(files[k]->guard);
+        }
+    }
     sigset_t hold, release;
     interrupts(&hold);
     sigemptyset(&release);
@@ -112,7 +123,7 @@ int tf_afile_open(tf_ctx *ctx, tf_afile *a, const char *path)
     if (snprintf(a->tmp, sizeof a->tmp, "%s.tmp.XXXXXX", a->dst) >= (int)sizeof a->tmp) {
         return tf_fail(ctx, "%s: path too long", path);
     }
-    hold_interrupts(a);
+    hold_interrupts(ctx, a);
     tf_afile *self[1] = {a};
     int fd = mkstemp(a->tmp);
     if (fd < 0) {

@@ -13,10 +13,13 @@
  * to temporaries that are all synced before the first rename
  * (tf_afile_commit_all), so a full disk or a failed write changes none of
  * them.  An interrupt (SIGINT, SIGTERM, SIGHUP) is held back from the
- * moment a temporary exists until it is renamed or removed (the tool is
- * single-threaded: OPENBLAS_NUM_THREADS=1), so no exit path leaves a
- * temporary behind and no interrupt falls between two renames.  Only
- * SIGKILL or a crash can (header-format.md §1).
+ * moment a temporary exists until it is renamed or removed, so no exit
+ * path leaves a temporary behind and no interrupt falls between two
+ * renames.  Only SIGKILL or a crash can (header-format.md §1).  The tool
+ * has threads (OpenMP's workers), and a signal sent to the process may go
+ * to any of them: it holds interrupts back through the run's watcher
+ * (ctx->interrupts, base/interrupts.h); without one (a library user), in
+ * the writing thread only.
  */
 #ifndef TF_ATOMIC_FILE_H
 #define TF_ATOMIC_FILE_H
@@ -27,9 +30,12 @@
 
 #include "base/context.h"
 
+struct tf_interrupts;
+
 typedef struct tf_afile {
     FILE *fp;
     sigset_t before; /* the thread's signal mask before open held interrupts back */
+    struct tf_interrupts *guard; /* the run's watcher (ctx->interrupts), or NULL */
     char tmp[4096];
     char dst[4096]; /* the file replaced: the path, or the file its link names */
 } tf_afile;

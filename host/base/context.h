@@ -37,11 +37,16 @@ typedef void (*tf_log_sink)(void *user, tf_log_level level, const char *msg);
 
 #define TF_CTX_ERR_MAX 1024
 
+struct tf_interrupts;
+
 typedef struct tf_ctx {
     tf_log_level level;  /* most verbose level shown */
     tf_log_sink sink;    /* NULL: standard error with the tool's prefixes */
     void *sink_user;
     int threads;         /* OpenMP threads of parallel loops; 0: OpenMP's default */
+    /* The run's signal watcher (base/interrupts.h), which holds interrupts
+     * back while outputs are written; NULL: the writing thread's mask only. */
+    struct tf_interrupts *interrupts;
     char err[TF_CTX_ERR_MAX]; /* message of the last failure ("" before any) */
 } tf_ctx;
 

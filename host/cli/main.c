@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/blas_pin.h"
+#include "base/interrupts.h"
 #include "cli/cli.h"
 #include "base/log.h"
 #include "materials/material.h"
@@ -144,5 +145,9 @@ int main(int argc, char **argv)
     tf_blas_pin(argv);
     tf_ctx run;
     tf_ctx_init(&run);
+    /* before any thread: interrupts wait while outputs are written, whichever
+     * thread the kernel would hand them to (base/interrupts.h) */
+    tf_interrupts watch;
+    run.interrupts = tf_interrupts_start(&watch) == 0 ? &watch : NULL;
     return tf_finish_stdout(&run, dispatch(&run, argc, argv));
 }

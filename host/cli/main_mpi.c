@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "base/blas_pin.h"
+#include "base/interrupts.h"
 #include "base/log.h"
 #include "cli/cli.h"
 #include "cli/cmd_fit.h"
@@ -87,6 +88,10 @@ int main(int argc, char **argv)
     tf_blas_pin(argv);
     tf_ctx run;
     tf_ctx_init(&run);
+    /* before MPI's and OpenMP's threads: interrupts wait while outputs are
+     * written (base/interrupts.h) */
+    tf_interrupts watch;
+    run.interrupts = tf_interrupts_start(&watch) == 0 ? &watch : NULL;
     tf_dist *d = tf_dist_init(&run, &argc, &argv);
     if (d == NULL) {
         fprintf(stderr, "tissuefit-mpi: error: %s\n", run.err);

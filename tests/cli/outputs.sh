@@ -80,6 +80,18 @@ no_temporaries "$d" "SIGTERM while writing"
 golden_runs "$d" pair || bad "the pair after SIGTERM while writing does not run: $(head -5 "$tmp/cc")"
 cp "$tmp/pair.h.1" "$d/pair.h" && cp "$tmp/pair_golden.h.1" "$d/pair_golden.h"
 
+# --- SIGINT and SIGTERM sent to the process while fit writes, as a shell
+# sends them: the kernel hands them to any thread that does not block them,
+# and fit's OpenMP workers exist; held back all the same
+for sig in 2:130 15:143; do
+    expect "${sig#*:}" "signal ${sig%:*} sent to fit's process while writing" -- \
+        env LD_PRELOAD="$fault" TF_MKSTEMP_KILL="2:${sig%:*}" OMP_NUM_THREADS=2 \
+        "$tool" -q fit tests/solver/block48_seed.yaml -o "$d/pair.h"
+    no_temporaries "$d" "signal ${sig%:*} sent to the process"
+    golden_runs "$d" pair || bad "the pair after signal ${sig%:*} does not run: $(head -5 "$tmp/cc")"
+done
+cp "$tmp/pair.h.1" "$d/pair.h" && cp "$tmp/pair_golden.h.1" "$d/pair_golden.h"
+
 # --- killed between the two renames: a new golden file beside the old
 # header, which the golden runner refuses to compile
 expect 137 "SIGKILL between the renames" -- env LD_PRELOAD="$fault" TF_RENAME_FAULT=2:9 \

@@ -5,7 +5,11 @@
  *   TF_RENAME_FAULT=N:SIG   raises signal SIG just before the N-th call of
  *                           rename(2) in the process;
  *   TF_MKSTEMP_FAULT=N:SIG  raises SIG just after the N-th call of
- *                           mkstemp(3), when that temporary exists.
+ *                           mkstemp(3), when that temporary exists;
+ *   TF_MKSTEMP_KILL=N:SIG   the same, but sent to the process (kill(2), as
+ *                           a shell or a terminal sends it), not to the
+ *                           calling thread: the kernel hands it to any
+ *                           thread that does not block it.
  *
  * (The tool re-executes itself once to pin OpenBLAS; the counts start in
  * each process image.)  With SIGKILL at the second rename of `tissuefit
@@ -17,21 +21,27 @@
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
-/* Raises the signal of the spec in variable var at the at-th call. */
-static void maybe_raise(const char *var, int *calls)
+/* Raises the signal of the spec in variable var at the at-th call (to the
+ * calling thread, or to the process when process is set). */
+static void maybe_raise(const char *var, int *calls, int process)
 {
     const char *spec = getenv(var);
     int at = 0, sig = 0;
     if (spec != NULL && sscanf(spec, "%d:%d", &at, &sig) == 2 && ++*calls == at) {
-        raise(sig);
+        if (process) {
+            kill(getpid(), sig);
+        } else {
+            raise(sig);
+        }
     }
 }
 
 int rename(const char *from, const char *to)
 {
     static int calls;
-    maybe_raise("TF_RENAME_FAULT", &calls);
+    maybe_raise("TF_RENAME_FAULT", &calls, 0);
     int (*real)(const char *, const char *) =
         (int (*)(const char *, const char *))dlsym(RTLD_NEXT, "rename");
     return real(from, to);
@@ -41,7 +51,9 @@ int mkstemp(char *tmpl)
 {
     static int calls;
     int (*real)(char *) = (int (*)(char *))dlsym(RTLD_NEXT, "mkstemp");
+    static int killed;
     int fd = real(tmpl);
-    maybe_raise("TF_MKSTEMP_FAULT", &calls);
+    maybe_raise("TF_MKSTEMP_FAULT", &calls, 0);
+    maybe_raise("TF_MKSTEMP_KILL", &killed, 1);
     return fd;
 }
