@@ -42,6 +42,12 @@ static int placement(const sd_surface *d, tf_transform *t, sd_issue *is)
         if (!finite3(t->axis) || !isfinite(t->angle_deg)) {
             return fail(is, "geometry.surface.rotate", "axis and angle must be finite");
         }
+        double n2 = t->axis[0] * t->axis[0] + t->axis[1] * t->axis[1] + t->axis[2] * t->axis[2];
+        if (!(n2 > 0) || !isfinite(n2)) { /* a zero axis was skipped without a word */
+            return fail(is, "geometry.surface.rotate.axis",
+                        "[%g, %g, %g] gives no direction: a rotation needs a non-zero axis",
+                        t->axis[0], t->axis[1], t->axis[2]);
+        }
     }
     if (d->translate) {
         memcpy(t->translate, d->translate, sizeof t->translate);

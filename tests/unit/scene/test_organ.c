@@ -170,6 +170,8 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
     expect_error(SETS("geometry.surface.scale=0.01"),
                  PARTS("geometry.surface.scale", "absurd size"));
     expect_error(SETS("geometry.spacing=-1"), PARTS("geometry.spacing", "positive"));
+    expect_error(SETS("geometry.surface.rotate={axis: [0, 0, 0], angle: 90}"),
+                 PARTS("geometry.surface.rotate.axis", "non-zero axis"));
     expect_error(SETS("contact.0.site.radius=0.5"),
                  PARTS("contact.0.site", "no surface triangle", "raise the radius"));
     expect_error(SETS("fixed.0.sphere.centre=[0, 0, 50]"), PARTS("fixed.0", "holds no node"));
