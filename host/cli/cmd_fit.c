@@ -82,6 +82,7 @@ typedef struct fit_args {
     tf_mcu mcu;
     tf_sets sets;
     double seconds_setup; /* the solver's assembly and factorisation */
+    const char *warnings; /* the scene's ("" or lines), recorded in the header */
 } fit_args;
 
 /* A positive finite number, or -1 with a message. */
@@ -230,6 +231,12 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
         k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
                       a->sets.item[i]);
     }
+    if (a->warnings != NULL && a->warnings[0] != '\0' && k > 0 && (size_t)k < n) {
+        /* what the tool warned about the scene stays with what it made */
+        size_t len = strlen(a->warnings);
+        len -= len > 0 && a->warnings[len - 1] == '\n';
+        snprintf(buf + k, n - (size_t)k, "\nWarnings (the scene):\n%.*s", (int)len, a->warnings);
+    }
 }
 
 /* An organ's output map (emit_header.h): the arrays are malloc'ed into m. */
@@ -324,7 +331,7 @@ static int assume_physics(tf_ctx *ctx, const double rel[2], const tf_envelope *e
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
-    char base[TF_NAME_MAX - 8], note[1024];
+    char base[TF_NAME_MAX - 8], note[4096];
     const char *slash = strrchr(a->out, '/');
     if (fwd == NULL || con == NULL) {
         tf_error(ctx, "fit: %s: no %s model to emit", a->scene, fwd ? "inverse" : "forward");
@@ -446,6 +453,7 @@ static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s
         (*s = tf_cmd_scene(ctx, a->scene, &a->sets)) == NULL || make_plan(ctx, a, *s, plan) != 0) {
         return TF_EXIT_USAGE;
     }
+    a->warnings = (*s)->warnings;
     if (a->report && !tf_plot_available()) {
         tf_error(ctx,
                  "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");

@@ -5,6 +5,8 @@
  */
 #include "scene/scene.h"
 
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -124,6 +126,71 @@ static void node_number_warnings(const sd_scene *doc, const char (*set_paths)[12
     }
 }
 
+/* A warning line into s->warnings. */
+static void warn(tf_scene *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void warn(tf_scene *s, const char *fmt, ...)
+{
+    size_t used = strlen(s->warnings);
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(s->warnings + used, sizeof s->warnings - used, fmt, ap);
+    va_end(ap);
+    if (n >= 0 && used + (size_t)n + 1 < sizeof s->warnings) {
+        strcat(s->warnings, "\n");
+    }
+}
+
+/* Legal values a tissue model hardly ever has, said rather than refused: a
+ * modulus stiffer than 1 GPa (bone is 10 to 20 GPa; soft tissue 10^-3 to 1
+ * MPa: E in Pa rather than MPa?), an organ under 1 cm or over 1 m across
+ * (a mesh in other units than its scale says?), a contact point farther
+ * from the organ than its site's radius (it acts at the nearest vertex). */
+static void plausibility_warnings(const sd_scene *doc, const char *name, tf_scene *s)
+{
+    const tf_problem *p = &s->problem;
+    double young = NAN, nu;
+    if (p->material.law != NULL && p->material.law->moduli != NULL) {
+        p->material.law->moduli(p->material.p, &young, &nu);
+    }
+    if (young > 1000) {
+        warn(s, "%s: material: Young's modulus %g MPa, stiffer than 1 GPa (soft tissue: 0.001 to 1 "
+                "MPa): the unit is MPa, not Pa",
+             name, young);
+    }
+    if (tf_problem_mesh(p) == NULL) {
+        return;
+    }
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = fmin(lo[a], p->cloud.xyz[3 * i + a]);
+            hi[a] = fmax(hi[a], p->cloud.xyz[3 * i + a]);
+        }
+    }
+    double span = hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    if (span < 10 || span > 1000) {
+        warn(s, "%s: geometry.surface: the organ is %.4g mm across (its box's diagonal), %s than any "
+                "organ (%s): is "
+                "geometry.surface.scale right (mm per file unit)?",
+             name, span, span < 10 ? "smaller" : "larger",
+             span < 10 ? "1 cm" : "1 m");
+    }
+    for (unsigned k = 0; k < doc->contact_count && k < p->n_contacts; ++k) {
+        const sd_site *site = doc->contact[k].site;
+        if (site == NULL) {
+            continue;
+        }
+        const double *x = p->cloud.xyz + 3 * (size_t)p->contacts[k].node;
+        double d = hypot(hypot(x[0] - site->point[0], x[1] - site->point[1]),
+                         x[2] - site->point[2]);
+        if (d > site->radius) {
+            warn(s, "%s: contact.%u.site.point: %.4g mm from the organ's surface, more than the "
+                    "site's radius %g mm: the contact acts at the nearest vertex (%g, %g, %g) mm",
+                 name, k, d, site->radius, x[0], x[1], x[2]);
+        }
+    }
+}
+
 tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const char *name,
                              const char *const *sets, size_t n_sets)
 {
@@ -176,6 +243,7 @@ tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const ch
             ok = 0;
         } else {
             node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
+            plausibility_warnings(doc, name, s);
         }
     } else if (!set_paths || !s) {
         tf_fail(ctx, "out of memory");

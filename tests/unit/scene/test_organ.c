@@ -195,6 +195,42 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
                       PARTS("t.yaml:5:", "fixed.0.near", "organ"));
 }
 
+/* Legal but implausible values are said, not refused: a contact point far
+ * off the organ, a modulus in Pa, an organ in other units than its scale. */
+static void implausible_values_are_warned(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *set, *says;
+    } cases[] = {
+        {"contact.0.site.point=[0, 0, 400]", "contact.0.site.point: 390 mm from the organ's surface"},
+        {"material.E=5000", "Young's modulus 5000 MPa, stiffer than 1 GPa"},
+        {"geometry.surface.scale=0.1", "the organ is 3.464 mm across (its box's diagonal), smaller than any organ"},
+    };
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = load(&ctx, base, NULL, 0);
+    assert_non_null(s);
+    assert_string_equal(s->warnings, ""); /* the plausible base says nothing */
+    tf_scene_free(s);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        /* the small organ (scale 0.1): everything at a tenth of the size */
+        const char *sets[] = {cases[k].set, "geometry.spacing=0.4",
+                              "fixed.0.sphere={centre: [0, 0, -1], radius: 0.6}",
+                              "contact.0.site={point: [0, 0, 1.1], radius: 0.3}",
+                              "outputs.radius=0.8"};
+        size_t n = strstr(cases[k].set, "scale") ? 5 : 1;
+        s = load(&ctx, base, sets, n);
+        if (s == NULL) {
+            fail_msg("%s: %s", cases[k].set, ctx.err);
+        }
+        if (strstr(s->warnings, cases[k].says) == NULL) {
+            fail_msg("--set %s: warnings '%s' lack '%s'", cases[k].set, s->warnings, cases[k].says);
+        }
+        tf_scene_free(s);
+    }
+}
+
 /* The patch test on tetrahedral cells: every surface vertex held at a
  * linear field u = a + G x; the interior nodes must follow it.  RPIM with
  * the linear polynomial reproduces a linear field exactly; what remains is
@@ -360,6 +396,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(the_organ_scene_is_built_as_written),
         cmocka_unit_test(each_bad_organ_scene_has_its_own_message),
+        cmocka_unit_test(implausible_values_are_warned),
         cmocka_unit_test(tetrahedral_cells_pass_the_patch_test),
         cmocka_unit_test(a_linear_field_has_the_exact_energy),
         cmocka_unit_test(a_contact_site_applies_the_whole_force),
