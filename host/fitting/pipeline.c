@@ -188,9 +188,10 @@ static int region_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver,
     const double t0 = tf_seconds();
     tf_info(ctx, "fit: contact '%s' is a region: its law and surface (%s)", c->name,
             plan->family->name);
-    if (plan->family->region(ctx, solver, p, plan, m, &n) != 0) {
+    const int rc = plan->family->region(ctx, solver, p, plan, m, &n);
+    if (rc != 0) {
         tf_fit_outcome_free(o);
-        return -1;
+        return rc; /* -2: a region it cannot fit */
     }
     for (size_t k = 0; k < n; ++k) {
         tf_family_result *r = NULL;

@@ -90,16 +90,18 @@ int tf_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact
     const double *x0 = p->envelope.centre;
     *law = *surf = NULL;
     if (!(tf_solver_caps_of(s) & TF_SOLVER_AFFINE)) {
-        return tf_fail(ctx, "contact region '%s': not yet: a region's models are fitted for an "
+        tf_fail(ctx, "contact region '%s': not yet: a region's models are fitted for an "
                             "affine solve (linear elasticity); this scene's solver is not affine "
                             "(a nonlinear law: make region-nonlinear studies its (site, force) "
                             "cases)",
-                       c->name);
+                c->name);
+        return -2;
     }
     if (x0[0] != 0 || x0[1] != 0 || x0[2] != 0) {
-        return tf_fail(ctx, "contact region '%s': not yet: a region's surface takes forces in "
-                            "the ball |F| <= radius about zero; envelope.centre is (%g, %g, %g) N",
-                       c->name, x0[0], x0[1], x0[2]);
+        tf_fail(ctx, "contact region '%s': not yet: a region's surface takes forces in the "
+                     "ball |F| <= radius about zero; envelope.centre is (%g, %g, %g) N",
+                c->name, x0[0], x0[1], x0[2]);
+        return -2;
     }
     tf_region_targets tg = tf_region_targets_default();
     /* The device's rule: at most the modes a device surface holds (tfit.h),

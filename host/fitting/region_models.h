@@ -33,8 +33,9 @@
  * default targets) and builds its law and surface (names law_name and
  * surf_name).  Refuses, with a "not yet: ..." message, what the region
  * fit does not cover: a solver that is not affine (a nonlinear law), an
- * envelope not centred on zero.  Returns 0 with *law and *surf owned by
- * the caller, or -1 with the message. */
+ * envelope not centred on zero (-2 then: a scene the tool cannot fit).
+ * Returns 0 with *law and *surf owned by the caller, or -1 with the
+ * message. */
 int tf_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                      const char *law_name, const char *surf_name, tf_model **law,
                      tf_model **surf);

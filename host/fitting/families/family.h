@@ -119,7 +119,8 @@ struct tf_family {
      * of region plan->contact of p with solver s, one per family of the
      * region (the law and the surface), into models[0 .. *n) (at most
      * TF_FAMILY_REGION_MODELS, owned by the caller).  Such a family is never
-     * applicable to load cases.  Returns 0, or -1 with the message. */
+     * applicable to load cases.  Returns 0, or -1 with the message (-2: a
+     * region this family cannot fit, a problem the user must change). */
     int (*region)(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_fit_plan *plan,
                   tf_model **models, size_t *n);
 };

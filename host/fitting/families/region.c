@@ -57,9 +57,10 @@ int tf_family_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p,
                             const tf_fit_plan *plan, tf_model **models, size_t *n)
 {
     *n = 0;
-    if (tf_region_models(ctx, s, p, plan->contact, "region_law", "region_surface", &models[1],
-                         &models[0]) != 0) {
-        return -1;
+    const int rc = tf_region_models(ctx, s, p, plan->contact, "region_law", "region_surface",
+                                    &models[1], &models[0]);
+    if (rc != 0) {
+        return rc;
     }
     *n = 2;
     return 0;
