@@ -35,7 +35,7 @@ export PHYSICS_block48_ve := tests/physics/data/block48_ve_physics.csv
 physics_arg = ref=$$(eval echo \$${PHYSICS_$$n}); if [ -n "$$ref" ]; then ref="--reference $$ref"; \
   else ref=$$(eval echo \$${DISCREL_$$n}); if [ -n "$$ref" ]; then ref="--discretisation-rel $$ref"; fi; fi
 SHIPPED_HEADERS := $(SHIPPED_SCENES:.yaml=.h)
-# Contact regions (docs/fitting.md §8): a law and a surface per header (no
+# Contact regions (docs/fitting.md §9): a law and a surface per header (no
 # report: tissuefit fit --report does not take a region yet), no forward
 # model or contact inverse, so not in check-fit's held-out check (the
 # header states its errors at sites never fitted; check-region measures them
