@@ -8,7 +8,10 @@
  * these operations, and never switch on a family.  A forward family maps
  * the contact force [N] to the output points' displacements [mm]; an
  * inverse one maps the contact site's displacement [mm] to the contact
- * force [N] (the haptic impedance).
+ * force [N] (the haptic impedance).  The two families of a contact region
+ * (region.c: the law, tool-tip position -> force, an inverse family;
+ * region_surface.c: force -> the outputs' displacements, a forward one) are
+ * fitted together from the region's site solves (`region` below).
  *
  * Orders are the model's dims (model.h): nodal and contact {p}, modal
  * {p, r}, zhou2017 its 30 orders.  Messages of fits that the cases cannot
