@@ -185,20 +185,11 @@ $(T)/golden-$(1)-%: tests/header/run_golden.c $(T)/gen/$(1).h $(B)/bitexact-%/li
 endef
 $(eval $(call golden_runner,families))
 $(eval $(call golden_runner,demo))
-# The shipped contact regions' headers (coeffs.mk's REGION_HEADERS): no
-# native haptic loop runs them, so their golden vectors run here.
-GOLDEN_REGIONS := $(basename $(notdir $(REGION_HEADERS)))
-define golden_runner_shipped
-$(T)/golden-$(1)-%: tests/header/run_golden.c coeffs/$(1).h coeffs/$(1)_golden.h $(B)/bitexact-%/libtfit.a
-	$$(call say,BUILD)
-	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Icoeffs -DGOLDEN_H='"$(1)_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(shell echo $(1) | tr a-z A-Z)_GOLDEN_SETS \
-	  -DTFIT_$(shell echo $(1) | tr a-z A-Z)_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
-endef
-$(foreach h,$(GOLDEN_REGIONS),$(eval $(call golden_runner_shipped,$(h))))
-GOLDEN_HEADERS := families demo $(GOLDEN_REGIONS)
+# and the shipped contact regions' headers (GOLDEN_REGIONS: tests/region_target.mk,
+# read after coeffs.mk, adds them and their runners as prerequisites)
+GOLDEN_HEADERS = families demo $(GOLDEN_REGIONS)
 
-check-golden: $(foreach h,$(GOLDEN_HEADERS),$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%))
+check-golden: $(foreach h,families demo,$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%))
 	@echo "== golden vectors of generated headers and the shipped contact regions' =="
 	@set -e; for h in $(GOLDEN_HEADERS); do for c in $(BITEXACT_CONFIGS); do \
 	  $(T)/golden-$$h-$$c $$h/$$c; done; done
