@@ -187,7 +187,8 @@ static int check_outputs(tf_ctx *ctx, const fit_args *a)
 
 /* A contact region's fit (families with a region operation) takes the
  * scene and -o alone: the options about load cases, the choice among
- * candidates, the physics and the report are refused, not ignored. */
+ * candidates, the physics, the report and the servo budget (a tick of the
+ * forward and contact models) are refused, not ignored. */
 static int region_options(tf_ctx *ctx, const fit_args *a, const tf_scene *sc,
                           const tf_fit_plan *p)
 {
@@ -197,6 +198,7 @@ static int region_options(tf_ctx *ctx, const fit_args *a, const tf_scene *sc,
                       : a->reference != NULL         ? "--reference"
                       : !isnan(a->disc_rel[0])       ? "--discretisation-rel"
                       : a->report != NULL            ? "--report"
+                      : p->servo_hz > 0              ? "fit.servo_hz"
                                                      : NULL;
     if (opt != NULL) {
         tf_error(ctx, "fit: %s: contact '%s' is a contact region: not yet: %s (a region's law "
@@ -398,8 +400,7 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
                                .notes = note, .golden_seed = p->seed,
                                .map = organ ? &map : NULL,
-                               /* a region's surface is not a servo tick's */
-                               .servo_hz = region ? 0 : p->servo_hz,
+                               .servo_hz = p->servo_hz, /* 0 for a region: region_options */
                                .points = s->outputs.points, .n_points = s->outputs.n_nodes,
                                .contact_point = site->by_node || region ? NULL : site->at};
     tf_model *models[2] = {fwd, con};

@@ -40,6 +40,9 @@ says "a region with a point family" "would emit a point model"
 expect 2 "a region with --budget-us" -- "$tool" -q fit coeffs/block48_region.yaml \
     --budget-us 100 -o "$tmp/w/a.h"
 says "a region with --budget-us" "not yet: --budget-us"
+expect 2 "a region with a servo budget" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --set fit.servo_hz=1000 -o "$tmp/w/a.h"
+says "a region with a servo budget" "not yet: fit.servo_hz"
 expect 2 "a region of a nonlinear law" -- "$tool" -q fit tests/region/block48_nh_region.yaml \
     -o "$tmp/w/a.h"
 says "a region of a nonlinear law" "not yet: a region's models are fitted for an affine solve"
