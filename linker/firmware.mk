@@ -22,6 +22,11 @@ FW := $(B)/firmware
 FW_SHIPPED := $(filter-out %_golden.h $(ORGAN_HEADERS),$(wildcard coeffs/*.h))
 FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.h $(T)/gen/resonant.h \
               $(T)/gen/shapes.h $(T)/gen/modal_ranks.h
+# The headers of contact sites: the haptic-loop example, the stability
+# invariants and the benches evaluate their forward and contact models; a
+# contact region's law and surface (REGION_HEADERS, coeffs.mk) run their
+# golden vectors here and have their own tests (tests/region_target.mk).
+FW_POINT_HEADERS := $(filter-out $(REGION_HEADERS),$(FW_HEADERS))
 fw_name = $(basename $(notdir $(1)))
 fw_upper = $(shell echo $(1) | tr a-z A-Z)
 
@@ -261,9 +266,9 @@ $(FW)/$(2)/haptic-qemu-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) $(FW_SCRIPT) targ
 	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
 	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
-FW_HAPTIC_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
-FW_HAPTIC_QEMU := $(foreach c,$(FW_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/haptic-qemu-$(call fw_name,$(h)).elf))
+$(foreach h,$(FW_POINT_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
+FW_HAPTIC_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_POINT_HEADERS),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
+FW_HAPTIC_QEMU := $(foreach c,$(FW_CORES),$(foreach h,$(FW_POINT_HEADERS),$(FW)/$(c)/haptic-qemu-$(call fw_name,$(h)).elf))
 
 # Native build of the same loop (the fitting issue's `make demo` runs it over
 # its header): $(FW)/native/haptic-NAME
@@ -275,7 +280,7 @@ $(FW)/native/haptic-$(call fw_name,$(1)): $(FW_EXAMPLE) $(FW_SCRIPT) target/exam
 	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -Itarget/examples \
 	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) $$(filter %.c,$$^) $(B)/lib/libtfit.a -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(eval $(call fw_haptic_native,$(h))))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call fw_haptic_native,$(h))))
 
 # Worst-case stack of the public functions: -fstack-usage frames of the
 # library build along its call graph (tests/freestanding/callgraph.c).
@@ -308,7 +313,7 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "$(words $(FW_HAPTIC_IMAGES)) images linked with --no-undefined; no _sbrk/malloc in any map"
 	@set -e; for c in $(FW_CORES); do \
 	  case $$c in m4f) m=$(FW_QEMU_m4f);; m7) m=$(FW_QEMU_m7);; esac; \
-	  for h in $(foreach h,$(FW_HEADERS),$(call fw_name,$(h))); do \
+	  for h in $(foreach h,$(FW_POINT_HEADERS),$(call fw_name,$(h))); do \
 	    printf '%-9s %-11s ' $$h $$m; \
 	    tests/firmware/qemu_run.sh $$m $(FW)/$$c/haptic-qemu-$$h.elf; done; done
 	@$(FW)/native/haptic-haptic

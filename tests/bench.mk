@@ -1,6 +1,6 @@
 # bench.mk — `make bench`: speed of every shipped model (native timing,
 # instructions per call, firmware estimates); numbers are printed, never
-# asserted (GUIDE §7).  Headers: linker/firmware.mk's FW_HEADERS.
+# asserted (GUIDE §7).  Headers: linker/firmware.mk's FW_POINT_HEADERS.
 BENCH_CALLS ?= 100000
 DEBS_BENCH += valgrind
 
@@ -15,10 +15,10 @@ $(B)/bench/bench-$(call fw_name,$(1)): tests/bench/bench_eval.c $(1) $(B)/lib/li
 	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
 	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION $$< $(B)/lib/libtfit.a -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(eval $(call bench_binary,$(h))))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call bench_binary,$(h))))
 
 .PHONY: bench-eval
 BENCHES += bench-eval
-bench-eval: $(foreach h,$(FW_HEADERS),$(B)/bench/bench-$(call fw_name,$(h)))
+bench-eval: $(foreach h,$(FW_POINT_HEADERS),$(B)/bench/bench-$(call fw_name,$(h)))
 	@echo "== evaluation cost per model; seed: 0.1509 s per evaluation (Zhou et al. 2017) =="
-	@set -e; $(foreach h,$(FW_HEADERS),tests/bench/run.sh $(B)/bench/bench-$(call fw_name,$(h)) $(h) $(BENCH_CALLS);)
+	@set -e; $(foreach h,$(FW_POINT_HEADERS),tests/bench/run.sh $(B)/bench/bench-$(call fw_name,$(h)) $(h) $(BENCH_CALLS);)

@@ -143,3 +143,18 @@ check-region-properties: $(RG)/properties
 	@echo "== region law properties: continuity, closed-path work, passivity with friction, finiteness, stuck contact =="
 	@$<
 	@echo "ok: the region law is continuous, conservative without friction and passive with it, finite for every input and state, and the site law when stuck"
+
+# --- the shipped contact regions' headers: golden vectors natively --------------
+# coeffs.mk's REGION_HEADERS: no native haptic loop runs them, so check-golden
+# (tests.mk) runs their golden vectors in every bit-exact configuration too
+# (check-qemu runs them on the cores with every coeffs/ header).
+GOLDEN_REGIONS := $(basename $(notdir $(REGION_HEADERS)))
+define golden_runner_shipped
+$(T)/golden-$(1)-%: tests/header/run_golden.c coeffs/$(1).h coeffs/$(1)_golden.h $(B)/bitexact-%/libtfit.a
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Icoeffs -DGOLDEN_H='"$(1)_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(shell echo $(1) | tr a-z A-Z)_GOLDEN_SETS \
+	  -DTFIT_$(shell echo $(1) | tr a-z A-Z)_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
+endef
+$(foreach h,$(GOLDEN_REGIONS),$(eval $(call golden_runner_shipped,$(h))))
+check-golden: $(foreach h,$(GOLDEN_REGIONS),$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%))

@@ -22,8 +22,9 @@
 #   bench-stability            (make bench) native ns per evaluation by kind
 #                              of input: inside, subnormal, far, NaN
 #
-# Headers: linker/firmware.mk's FW_HEADERS (coeffs/*.h without *_golden.h,
-# plus the generated test headers), so real headers are covered as they land.
+# Headers: linker/firmware.mk's FW_POINT_HEADERS (coeffs/*.h without *_golden.h
+# and the contact regions', plus the generated test headers), so real headers
+# are covered as they land.
 
 STAB_T := $(T)/stability
 # The checks and inputs every stability program links (each has its own main).
@@ -38,7 +39,7 @@ STAB_SEED := 20260707
 STAB_MODELS := 200
 STAB_MODELS_N := 2000
 STAB_PERTURB := 20
-STAB_NAMES := $(foreach h,$(FW_HEADERS),$(call fw_name,$(h)))
+STAB_NAMES := $(foreach h,$(FW_POINT_HEADERS),$(call fw_name,$(h)))
 
 # $(call stab_runner,HEADER,VARIANT,FLAGS[,PROGRAM,MAIN]): run_invariants (or
 # PROGRAM from MAIN) for one header, linked with build/VARIANT/libtfit.a.
@@ -54,9 +55,9 @@ $(STAB_T)/$(2)/$(or $(4),run_invariants)-$(call fw_name,$(1)): $(or $(5),tests/s
 	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  $(or $(5),tests/stability/run_invariants.c) $(STAB_CHECK_SRC) $(B)/$(2)/libtfit.a -lm -o $$@
 endef
-$(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))
-$(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),native,-O2,bench_inputs,tests/stability/bench_inputs.c)))
-$(foreach h,$(FW_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE))))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),native,-O2,bench_inputs,tests/stability/bench_inputs.c)))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE))))
 
 .PHONY: check-stability check-stability-basis check-stability-extremes check-stability-random \
         check-stability-sanitize check-stability-models stability-plot \

@@ -185,12 +185,15 @@ $(T)/golden-$(1)-%: tests/header/run_golden.c $(T)/gen/$(1).h $(B)/bitexact-%/li
 endef
 $(eval $(call golden_runner,families))
 $(eval $(call golden_runner,demo))
+# and the shipped contact regions' headers (GOLDEN_REGIONS: tests/region_target.mk,
+# read after coeffs.mk, adds them and their runners as prerequisites)
+GOLDEN_HEADERS = families demo $(GOLDEN_REGIONS)
 
 check-golden: $(foreach h,families demo,$(BITEXACT_CONFIGS:%=$(T)/golden-$(h)-%))
-	@echo "== golden vectors of generated headers =="
-	@set -e; for h in families demo; do for c in $(BITEXACT_CONFIGS); do \
+	@echo "== golden vectors of generated headers and the shipped contact regions' =="
+	@set -e; for h in $(GOLDEN_HEADERS); do for c in $(BITEXACT_CONFIGS); do \
 	  $(T)/golden-$$h-$$c $$h/$$c; done; done
-	@echo "ok: golden vectors of 2 generated headers pass in $(words $(BITEXACT_CONFIGS)) configurations"
+	@echo "ok: golden vectors of $(words $(GOLDEN_HEADERS)) headers pass in $(words $(BITEXACT_CONFIGS)) configurations"
 
 $(T)/two_tu: tests/header/tu_main.c tests/header/tu_other.c $(T)/gen/families.h $(B)/native/libtfit.a
 	$(call say,BUILD)

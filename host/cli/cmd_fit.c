@@ -41,7 +41,9 @@ static void help(FILE *out)
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
             "(the forward model NAME_forward and the contact inverse NAME_contact) and\n"
-            "FILE_golden.h.  The scene's fit: section sets the load cases and searches\n"
+            "FILE_golden.h.  A contact region (contact.K.region) gives NAME_law and\n"
+            "NAME_surface instead, their sites chosen by the held-out error at sites never\n"
+            "fitted (docs/fitting.md).  The scene's fit: section sets the load cases and searches\n"
             "(docs/scene-format.md); --set overrides any of it, e.g. --set fit.train=200.\n\n"
             "Options:\n"
             "  -o, --out FILE.h    header to write (a lower-case C identifier + .h)\n"
@@ -184,6 +186,30 @@ static int check_outputs(tf_ctx *ctx, const fit_args *a)
     return a->report ? tf_cmd_output_dir(ctx, "fit", a->report) : 0;
 }
 
+/* A contact region's fit (families with a region operation) takes the
+ * scene and -o alone: the options about load cases, the choice among
+ * candidates, the physics, the report and the servo budget (a tick of the
+ * forward and contact models) are refused, not ignored. */
+static int region_options(tf_ctx *ctx, const fit_args *a, const tf_scene *sc,
+                          const tf_fit_plan *p)
+{
+    const char *opt = a->direct                      ? "--direct"
+                      : !isnan(a->budget_us)         ? "--budget-us"
+                      : !isnan(a->max_error_mm)      ? "--max-error-mm"
+                      : a->reference != NULL         ? "--reference"
+                      : !isnan(a->disc_rel[0])       ? "--discretisation-rel"
+                      : a->report != NULL            ? "--report"
+                      : p->servo_hz > 0              ? "fit.servo_hz"
+                                                     : NULL;
+    if (opt != NULL) {
+        tf_error(ctx, "fit: %s: contact '%s' is a contact region: not yet: %s (a region's law "
+                 "and surface are fitted by the site density rule, docs/fitting.md)",
+                 a->scene, sc->problem.contacts[p->contact].name, opt);
+        return -1;
+    }
+    return 0;
+}
+
 /* The plan from the scene's fit: section and the options. */
 static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_plan *p)
 {
@@ -192,6 +218,7 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
     p->direct = a->direct;
     if (a->family) {
         p->family = tf_family_find(a->family);
+        p->family_asked = 1;
         if (p->family == NULL || p->family->kind != TF_FAMILY_FORWARD) {
             char names[256];
             tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
@@ -212,7 +239,11 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
             return -1;
         }
     }
-    return 0;
+    if (tf_fit_plan_family_for_contact(ctx, p, s) != 0) {
+        tf_error(ctx, "fit: %s: %s", a->scene, ctx->err);
+        return -1;
+    }
+    return p->family->region != NULL ? region_options(ctx, a, sc, p) : 0;
 }
 
 /* Banner notes: what was fitted and how, with the overrides (they change the
@@ -220,7 +251,13 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
 static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                   const tf_fit_outcome *o, char *buf, size_t n)
 {
-    int k = snprintf(buf, n,
+    int k = p->family->region != NULL
+                ? snprintf(buf, n,
+                           "Fitted by `tissuefit fit`: contact region '%s', its sites solved and "
+                           "judged at the\ncentres of their cells (docs/fitting.md, contact "
+                           "regions).",
+                           s->contacts[p->contact].name)
+                : snprintf(buf, n,
                      "Fitted by `tissuefit fit`: %zu training and %zu held-out load cases at "
                      "contact site '%s',\n%s; orders by %u-fold cross-validation (seed %llu).",
                      p->n_train, p->n_heldout, s->contacts[p->contact].name,
@@ -339,8 +376,9 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     }
     snprintf(base, sizeof base, "%s", slash ? slash + 1 : a->out); /* fits: check_outputs */
     base[strcspn(base, ".")] = '\0';
-    snprintf(fwd->name, sizeof fwd->name, "%s_forward", base);
-    snprintf(con->name, sizeof con->name, "%s_contact", base);
+    const int region = p->family->region != NULL;
+    snprintf(fwd->name, sizeof fwd->name, "%s_%s", base, tf_family_suffix(tf_family_of(fwd->family)));
+    snprintf(con->name, sizeof con->name, "%s_%s", base, tf_family_suffix(tf_family_of(con->family)));
     if (a->reference != NULL) {
         state_physics(&a->phys, &s->envelope, fwd, con);
     } else if (!isnan(a->disc_rel[0]) && assume_physics(ctx, a->disc_rel, &s->envelope, fwd, con)) {
@@ -368,9 +406,10 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     }
     const tf_emit_info info = {.source = a->scene, .has_source_crc = 1, .source_crc32 = crc,
                                .notes = note, .golden_seed = p->seed,
-                               .map = organ ? &map : NULL, .servo_hz = p->servo_hz,
+                               .map = organ ? &map : NULL,
+                               .servo_hz = p->servo_hz, /* 0 for a region: region_options */
                                .points = s->outputs.points, .n_points = s->outputs.n_nodes,
-                               .contact_point = site->by_node ? NULL : site->at};
+                               .contact_point = site->by_node || region ? NULL : site->at};
     tf_model *models[2] = {fwd, con};
     int rc = tf_emit_header(ctx, a->out, models, 2, &info);
     organ_map_free(&map);
@@ -378,8 +417,9 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
         tf_error(ctx, "fit: %s", ctx->err); /* the path was checked: a failure while running */
         return TF_EXIT_FAIL;
     }
-    tf_info(ctx, "fit: wrote %s (%s forward model, contact inverse) and its golden vectors", a->out,
-            tf_family_of(fwd->family)->name);
+    tf_info(ctx, "fit: wrote %s (%s %s, %s %s) and its golden vectors", a->out,
+            tf_family_of(fwd->family)->name, region ? "surface" : "forward model",
+            tf_family_of(con->family)->name, region ? "law" : "contact inverse");
     return TF_EXIT_OK;
 }
 

@@ -140,6 +140,21 @@ static void banner_line(FILE *f, const char *text)
     fputc('\n', f);
 }
 
+/* A model's fit note (model.h), line by line under its entry. */
+static void note_lines(FILE *f, const char *text)
+{
+    while (*text != '\0') {
+        const char *end = strchr(text, '\n');
+        size_t len = end ? (size_t)(end - text) : strlen(text);
+        char line[sizeof ((tf_model *)0)->fit_note];
+        snprintf(line, sizeof line, "%.*s", (int)len, text);
+        fprintf(f, " *       ");
+        comment_text(f, line);
+        fputc('\n', f);
+        text += len + (end ? 1 : 0);
+    }
+}
+
 static void write_banner(FILE *f, const char *base, tf_model *const *models, size_t n_models,
                          const tf_emit_info *info)
 {
@@ -186,6 +201,7 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     m->heldout_cases, m->heldout_max, output_unit(m, 0), m->heldout_rms,
                     output_unit(m, 0));
         }
+        note_lines(f, m->fit_note);
         if (isnan(m->discretisation_max)) {
             fprintf(f, " *       error of the solve against the physics: not measured (tissuefit fit "
                        "--reference)\n");

@@ -160,10 +160,70 @@ static int relayed(tf_ctx *ctx, const tf_solver *solver, int rc)
     return rc;
 }
 
+/* A contact region: the plan's family fits the region's models (families
+ * with a `region` operation, family.h); every other family is marked not
+ * applicable, and each model goes to its family's result. */
+static int region_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver,
+                      const tf_fit_plan *plan, tf_fit_outcome *o)
+{
+    const tf_contact *c = &p->contacts[plan->contact];
+    if (plan->family->region == NULL) { /* never a point model of a region */
+        tf_fail(ctx, "contact '%s' is a contact region: the %s family fits one contact site's "
+                     "load cases, not a region", c->name, plan->family->name);
+        return -2;
+    }
+    o->n_families = tf_family_count();
+    o->fam = calloc(o->n_families, sizeof *o->fam);
+    if (o->fam == NULL) {
+        return tf_fail(ctx, "out of memory for the families' results");
+    }
+    for (size_t i = 0; i < o->n_families; ++i) {
+        o->fam[i].family = tf_family_at(i);
+        untried(&o->fam[i]);
+        snprintf(o->fam[i].why, sizeof o->fam[i].why, "contact '%s' is a contact region",
+                 c->name);
+    }
+    tf_model *m[TF_FAMILY_REGION_MODELS];
+    size_t n = 0;
+    const double t0 = tf_seconds();
+    tf_info(ctx, "fit: contact '%s' is a region: its law and surface (%s)", c->name,
+            plan->family->name);
+    const int rc = plan->family->region(ctx, solver, p, plan, m, &n);
+    if (rc != 0) {
+        tf_fit_outcome_free(o);
+        return rc; /* -2: a region it cannot fit */
+    }
+    for (size_t k = 0; k < n; ++k) {
+        tf_family_result *r = NULL;
+        for (size_t i = 0; i < o->n_families; ++i) {
+            r = o->fam[i].family->id == m[k]->family ? &o->fam[i] : r;
+        }
+        if (r == NULL || r->model != NULL) { /* a family's models, one each: family.h */
+            for (size_t j = k; j < n; ++j) {
+                tf_model_free(m[j]);
+            }
+            tf_fit_outcome_free(o);
+            return tf_fail(ctx, "%s: model '%s' has no family of its own", plan->family->name,
+                           m[k]->name);
+        }
+        r->applicable = 1;
+        r->why[0] = '\0';
+        r->model = m[k];
+        r->heldout_max = m[k]->heldout_max;
+        r->heldout_rms = m[k]->heldout_rms;
+        r->heldout_rel_max = m[k]->heldout_rel_max;
+        r->seconds = k == 0 ? tf_seconds() - t0 : 0; /* fitted together: the time once */
+    }
+    return 0;
+}
+
 int tf_fit_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *o)
 {
     memset(o, 0, sizeof *o);
+    if (plan->contact >= 0 && p->contacts[plan->contact].region.kind != TF_CONTACT_REGION_NONE) {
+        return region_run(ctx, p, solver, plan, o);
+    }
     double t0 = tf_seconds();
     if (tf_cases_build(p, solver, plan, &o->cases) != 0) {
         return relayed(ctx, solver, -1);

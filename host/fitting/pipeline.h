@@ -38,10 +38,13 @@ typedef struct tf_fit_outcome {
 
 /* Runs the whole fit of problem p with a solver of it (and, when the solver
  * is time-dependent, its force histories).  A family that does
- * not apply to the problem is marked so (why[]).  Returns 0; -2 when the
- * plan's forward family does not apply (a problem the user must change); -1
- * on any other failure; with the message in ctx->err (usually the context
- * the solver was created with). */
+ * not apply to the problem is marked so (why[]).  When the plan's contact
+ * is a contact region, the plan's family fits the region's models instead
+ * (its `region` operation, families/family.h) and no load case is solved.
+ * Returns 0; -2 when the plan's forward family does not apply, or cannot
+ * fit the region (a problem the user must change); -1 on any other failure;
+ * with the message in ctx->err (usually the context the solver was created
+ * with). */
 int tf_fit_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit_plan *plan,
                tf_fit_outcome *out);
 void tf_fit_outcome_free(tf_fit_outcome *out);

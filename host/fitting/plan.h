@@ -13,6 +13,7 @@ typedef struct tf_case_runner tf_case_runner; /* fitting/case_runner.h */
 
 typedef struct tf_fit_plan {
     const tf_family *family; /* forward family to emit (the registry's) */
+    int family_asked;     /* 1: named by fit.family or --family (else the default) */
     int contact;          /* contact site index (-1 when the problem has none) */
     size_t n_train, n_heldout;
     uint64_t seed;        /* load-case design and folds */

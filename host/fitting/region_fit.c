@@ -190,8 +190,9 @@ static double surface_error(const tf_region_surface *sf, const tf_region_sites *
 /* The law's errors at sites idx: force (||K C - I||_2) and height. */
 static void law_errors(const tf_region_law *law, const tf_region_chart *chart,
                        const tf_region_sites *t, const size_t *idx, size_t n, double *force,
-                       double *height)
+                       double *force_rms, double *height)
 {
+    double sum2 = 0;
     *force = *height = 0;
     for (size_t i = 0; i < n; ++i) {
         size_t s = idx[i];
@@ -204,11 +205,14 @@ static void law_errors(const tf_region_law *law, const tf_region_chart *chart,
                                (a == b);
             }
         }
-        *force = fmax(*force, tf_mat3_norm2(M));
+        const double e = tf_mat3_norm2(M);
+        *force = fmax(*force, e);
+        sum2 += e * e;
         tf_region_law_force(law, t->ab[2 * s], t->ab[2 * s + 1], zero, F, &h);
         tf_region_chart_coords(chart, t->x + 3 * s, q);
         *height = fmax(*height, fabs(h - q[2]));
     }
+    *force_rms = n > 0 ? sqrt(sum2 / (double)n) : 0;
 }
 
 /* The pairs recorded between this spacing's grid sites and its cell
@@ -290,15 +294,20 @@ typedef struct rank_judge {
 /* The surface of rank r, its surface and coupling errors at the check
  * sites, and whether both meet their targets. */
 static int surface_at_rank(tf_ctx *ctx, const rank_judge *j, const tf_region_level *lv,
-                           unsigned r, tf_region_surface *sf, double *err, double *cpl, int *met)
+                           unsigned r, tf_region_surface *sf, double *err, double *rms,
+                           double *cpl, int *met)
 {
     if (tf_region_surface_fit(ctx, j->m, lv->nx, lv->ny, lv->h, j->R_F, r, sf) != 0) {
         return -1;
     }
+    double sum2 = 0;
     *err = 0;
     for (size_t i = 0; i < j->nc; ++i) {
-        *err = fmax(*err, surface_error(sf, j->t, j->chk[i], j->work) / j->peak);
+        const double e = surface_error(sf, j->t, j->chk[i], j->work) / j->peak;
+        *err = fmax(*err, e);
+        sum2 += e * e;
     }
+    *rms = j->nc > 0 ? sqrt(sum2 / (double)j->nc) : 0;
     *cpl = coupling_error(sf, &lv->law, j->t, j->pairs, j->np);
     *met = *err <= j->tg->surface && *cpl <= j->tg->coupling;
     return 0;
@@ -313,11 +322,11 @@ static int surface_at_rank(tf_ctx *ctx, const rank_judge *j, const tf_region_lev
 static int choose_rank(tf_ctx *ctx, const rank_judge *jd, tf_region_level *lv)
 {
     unsigned lo = 0, hi = 0, best = 0, r_max = jd->m->r_max;
-    double best_e = INFINITY, e, c;
+    double best_e = INFINITY, e, c, rms;
     int rc = 0, met = 0;
     for (unsigned r = 1; rc == 0; r = r * 2 < r_max ? r * 2 : r_max) {
         tf_region_surface sf;
-        rc = surface_at_rank(ctx, jd, lv, r, &sf, &e, &c, &met);
+        rc = surface_at_rank(ctx, jd, lv, r, &sf, &e, &rms, &c, &met);
         tf_region_surface_free(&sf);
         if (rc == 0 && e < best_e) {
             best_e = e;
@@ -335,7 +344,7 @@ static int choose_rank(tf_ctx *ctx, const rank_judge *jd, tf_region_level *lv)
     while (rc == 0 && hi > 0 && hi - lo > 1) { /* the targets are met at hi, not at lo */
         unsigned mid = lo + (hi - lo) / 2;
         tf_region_surface sf;
-        rc = surface_at_rank(ctx, jd, lv, mid, &sf, &e, &c, &met);
+        rc = surface_at_rank(ctx, jd, lv, mid, &sf, &e, &rms, &c, &met);
         tf_region_surface_free(&sf);
         if (rc == 0 && met) {
             hi = mid;
@@ -347,7 +356,7 @@ static int choose_rank(tf_ctx *ctx, const rank_judge *jd, tf_region_level *lv)
         lv->rank = hi > 0 ? hi : best;
         tf_region_surface_free(&lv->surface_model);
         rc = surface_at_rank(ctx, jd, lv, lv->rank, &lv->surface_model, &lv->surface,
-                             &lv->coupling, &met);
+                             &lv->surface_rms, &lv->coupling, &met);
     }
     return rc;
 }
@@ -422,7 +431,8 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
         free(work);
     }
     if (rc == 0) {
-        law_errors(&lv->law, &r->chart, &res->sites, chk, nc, &lv->force, &lv->height);
+        law_errors(&lv->law, &r->chart, &res->sites, chk, nc, &lv->force, &lv->force_rms,
+                   &lv->height);
         /* Passive: every control point SPD suffices (a blend with
          * non-negative weights of SPD matrices is SPD); else the blend
          * itself, sampled 8 times per site interval. */
@@ -492,26 +502,32 @@ int tf_region_fit(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                                 "site interval): the law would not be passive",
                            p->contacts[contact].name, lv->min_stiffness);
         }
-        if (tg->levels == 0 && lv->met) {
+        const int done = tg->levels == 0 && lv->met;
+        char cpl[64]; /* the coupling against its target, or stated alone */
+        if (isfinite(tg->coupling)) {
+            snprintf(cpl, sizeof cpl, "coupling %.2g %% %s %.2g %%", 100 * lv->coupling,
+                     done ? "<=" : "(target", 100 * tg->coupling);
+        } else {
+            snprintf(cpl, sizeof cpl, "coupling %.2g %% (not a target)", 100 * lv->coupling);
+        }
+        if (done) {
             snprintf(res->why, sizeof res->why,
                      "target met at spacing %.3g x %.3g mm (%u x %u sites): force %.2g %% <= %.2g "
-                     "%%, surface %.2g %% <= %.2g %%, coupling %.2g %% <= %.2g %% at rank %u",
+                     "%%, surface %.2g %% <= %.2g %%, %s at rank %u",
                      lv->h[0], lv->h[1], nx, ny, 100 * lv->force, 100 * tg->force,
-                     100 * lv->surface, 100 * tg->surface, 100 * lv->coupling,
-                     100 * tg->coupling, lv->rank);
+                     100 * lv->surface, 100 * tg->surface, cpl, lv->rank);
             break;
         }
         if (2 * nx - 1 > tg->max_sites || 2 * ny - 1 > tg->max_sites || k + 1 == levels) {
             snprintf(res->why, sizeof res->why,
                      "%s at spacing %.3g x %.3g mm (%u x %u sites): force %.2g %% (target %.2g "
-                     "%%), surface %.2g %% (target %.2g %%), coupling %.2g %% (target %.2g %%) "
-                     "at rank %u",
+                     "%%), surface %.2g %% (target %.2g %%), %s%s at rank %u",
                      r->spacing > 0          ? "the scene's spacing"
                      : tg->levels > 0        ? "the spacings asked for end"
                                              : "the cap of the site count",
                      lv->h[0], lv->h[1], nx, ny, 100 * lv->force, 100 * tg->force,
-                     100 * lv->surface, 100 * tg->surface, 100 * lv->coupling,
-                     100 * tg->coupling, lv->rank);
+                     100 * lv->surface, 100 * tg->surface, cpl,
+                     isfinite(tg->coupling) ? ")" : "", lv->rank);
             break;
         }
         nx = 2 * nx - 1;

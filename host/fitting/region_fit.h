@@ -49,7 +49,9 @@
 typedef struct tf_region_targets {
     double force;       /* fraction of the envelope radius (0.01) */
     double surface;     /* fraction of the peak displacement (0.05) */
-    double coupling;    /* fraction of the envelope radius (0.02) */
+    double coupling;    /* fraction of the envelope radius (0.02); INFINITY: measured and
+                           stated, not a target (neither the rank nor the spacing is chosen
+                           for it: tissuefit fit's device models, region_models.h) */
     unsigned max_sites; /* per axis (the cap) */
     unsigned max_rank;
     unsigned levels;    /* 0: halve until met or capped; k: fit exactly k spacings */
@@ -74,6 +76,8 @@ typedef struct tf_region_level {
     double force;        /* errors at the cell centres, as defined above */
     double surface;
     double coupling;
+    double force_rms;    /* the RMS over the cell centres of each one's force and surface */
+    double surface_rms;  /* error (the headers' held-out RMS) */
     size_t pairs;        /* the coupling's pairs of a cell centre and a grid site */
     double height;       /* mm */
     double peak;         /* mm */

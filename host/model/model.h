@@ -40,6 +40,9 @@ typedef struct tf_model {
      * (fitting/discretisation.h), output units; NAN: not measured. */
     double discretisation_max;
     char discretisation_note[512]; /* what it was measured against */
+    /* What else the fit states of the model, as lines of the header's banner
+     * ("": nothing; a contact region's sites, spacing and why, rank, ...). */
+    char fit_note[768];
 } tf_model;
 
 /* Floating-point operation counts of one evaluation (docs/header-format.md §6). */

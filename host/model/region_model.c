@@ -34,7 +34,7 @@ static tf_model *alloc_model(tf_ctx *ctx, const char *name, tfit_family family, 
 }
 
 /* The chart and the scalars both models share. */
-static void put_chart(float *coef, const tf_region_chart *c, double s_u, double mu)
+static void put_chart(float *coef, const tf_region_grid *c, double s_u, double mu)
 {
     for (int i = 0; i < 3; ++i) {
         coef[i] = (float)c->origin[i];
@@ -52,7 +52,7 @@ static void put_chart(float *coef, const tf_region_chart *c, double s_u, double 
     sc[TF_REGION_MU] = (float)mu;
 }
 
-tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                             uint32_t degree, double s_u, double mu, const double *ctrl,
                             uint32_t region)
 {
@@ -74,7 +74,7 @@ tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart
     return m;
 }
 
-tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                                 double s_u, double mu, double force_radius, uint32_t rank,
                                 uint32_t degree, int site_modes, const double *ctrl,
                                 const double *modes, uint32_t n_out, const uint32_t *node_ids)

@@ -18,20 +18,21 @@
 #include "model/model.h"
 #include "model/region_layout.h"
 
-/* The chart and grid of a region (spec: a height field over a plane). */
-typedef struct tf_region_chart {
+/* The chart and grid of a region model (spec: a height field over a plane);
+ * problem/contact_region.h's tf_region_chart is the scene's chart it comes from. */
+typedef struct tf_region_grid {
     double origin[3]; /* o, mm, scene frame */
     double rot[9];    /* R, rows e1, e2, n (outward), orthonormal */
     uint32_t nx, ny;  /* sites per side, >= 2 */
     double ha, hb;    /* site spacing, mm */
-} tf_region_chart;
+} tf_region_grid;
 
 /* A law (TFIT_FAMILY_REGION, dims {nx, ny, P}): ctrl holds the
  * (nx+2)(ny+2) control blocks {h, e_1 .. e_T} (mm; the potential's
  * coefficients in N mm), s_u = 1 / the displacement scale (1/mm), mu the
  * friction coefficient; node_ids[0] = region.  The model is checked
  * (tf_region_law_validate).  NULL with the message in ctx on failure. */
-tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                             uint32_t degree, double s_u, double mu, const double *ctrl,
                             uint32_t region);
 
@@ -40,7 +41,7 @@ tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_chart
  * (amplitudes per normalised chart-frame force f = F / R_F, monomials of
  * degrees 1 .. p), modes Phi[3 n_out][r] (mm, scene frame), node_ids[n_out];
  * s_u and mu as the law's (repeated so that the model stands alone). */
-tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_chart *chart,
+tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                                 double s_u, double mu, double force_radius, uint32_t rank,
                                 uint32_t degree, int site_modes, const double *ctrl,
                                 const double *modes, uint32_t n_out, const uint32_t *node_ids);

@@ -795,6 +795,7 @@ static int fit(const sd_fit *d, const tf_problem *s, tf_fit_plan *f, sd_issue *i
     }
     if (d->family) {
         f->family = tf_family_find(d->family);
+        f->family_asked = 1;
         if (f->family == NULL || f->family->kind != TF_FAMILY_FORWARD) {
             char names[256];
             tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);

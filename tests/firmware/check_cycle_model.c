@@ -114,6 +114,17 @@ static tf_model *shape_of(const char *name)
                    &dims[5 + 3 * pair], &n);
             p += n;
         }
+    } else if (family == TFIT_FAMILY_REGION) { /* "P=2 sites=7x7" */
+        n_dims = TFIT_REGION_DIMS;
+        if (sscanf(ord, "\"P=%u sites=%ux%u\"", &dims[2], &dims[0], &dims[1]) != 3) {
+            return NULL;
+        }
+    } else if (family == TFIT_FAMILY_REGION_SURFACE) { /* "p=1 r=25 sites=7x7 site-modes" */
+        n_dims = TFIT_REGION_SURFACE_DIMS;
+        if (sscanf(ord, "\"p=%u r=%u sites=%ux%u", &dims[3], &dims[2], &dims[0], &dims[1]) != 4) {
+            return NULL;
+        }
+        dims[4] = strstr(ord, " site-modes\"") != NULL;
     } else {
         sscanf(ord, "\"p=%u\"", &dims[0]);
     }

@@ -32,7 +32,38 @@ says "a discretisation fraction beyond 1" "two fractions in (0, 1)"
 expect 2 "a solver step longer than half a history" -- "$tool" -q fit coeffs/block48_ve.yaml \
     --set fit.solve_every=2000 -o "$tmp/w/a.h"
 says "a solver step longer than half a history" "fit.solve_every"
+# A contact region is never fitted as a point, and what its fit does not
+# take yet is refused by name, not ignored.
+expect 2 "a region with a point family" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --family nodal -o "$tmp/w/a.h"
+says "a region with a point family" "would emit a point model"
+expect 2 "a region with --budget-us" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --budget-us 100 -o "$tmp/w/a.h"
+says "a region with --budget-us" "not yet: --budget-us"
+expect 2 "a region with a servo budget" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --set fit.servo_hz=1000 -o "$tmp/w/a.h"
+says "a region with a servo budget" "not yet: fit.servo_hz"
+expect 2 "a region of a nonlinear law" -- "$tool" -q fit tests/region/block48_nh_region.yaml \
+    -o "$tmp/w/a.h"
+says "a region of a nonlinear law" "not yet: a region's models are fitted for an affine solve"
+expect 2 "a region's envelope off zero" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --set envelope.centre=0.1,0,0 -o "$tmp/w/a.h"
+says "a region's envelope off zero" "not yet: a region's surface takes forces"
+expect 2 "a site with the region family" -- "$tool" -q fit tests/solver/block48_seed.yaml \
+    --family region_surface -o "$tmp/w/a.h"
+says "a site with the region family" "fits a contact region"
 nothing_written "refused fits"
+
+# A region's header: its law and surface, named so, with the datasheet lines.
+expect 0 "fit, a contact region" -- "$tool" -q fit coeffs/block48_region.yaml \
+    --set contact.0.region.rect=19.2,24,19.2,24 -o "$tmp/w/rg.h"
+for want in "tfit_rg_law: region P=2" "tfit_rg_surface: region_surface p=1" \
+    "held out at the 9 cell centres (sites never fitted)" "target met at spacing" \
+    "#define TFIT_RG_LAW_HELDOUT_MAX_N" "#define TFIT_RG_SURFACE_HELDOUT_MAX_MM"; do
+    grep -qF "$want" "$tmp/w/rg.h" || bad "rg.h lacks '$want'"
+done
+grep -q "_forward\|_contact" "$tmp/w/rg.h" && bad "rg.h has a point model"
+rm -f "$tmp/w/rg.h" "$tmp/w/rg_golden.h"
 
 # The small-strain warning: a linear solve whose displacements exceed a
 # tenth of the body's thickness says linear elasticity does not describe it

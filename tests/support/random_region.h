@@ -14,7 +14,7 @@
 #include "model/region_model.h"
 
 typedef struct tf_random_region {
-    tf_region_chart chart;
+    tf_region_grid chart;
     double s_u;          /* 1 / the displacement scale, 1/mm */
     double mu;           /* friction */
     double force_radius; /* R_F, N */

@@ -8,7 +8,10 @@
  * these operations, and never switch on a family.  A forward family maps
  * the contact force [N] to the output points' displacements [mm]; an
  * inverse one maps the contact site's displacement [mm] to the contact
- * force [N] (the haptic impedance).
+ * force [N] (the haptic impedance).  The two families of a contact region
+ * (region.c: the law, tool-tip position -> force, an inverse family;
+ * region_surface.c: force -> the outputs' displacements, a forward one) are
+ * fitted together from the region's site solves (`region` below).
  *
  * Orders are the model's dims (model.h): nodal and contact {p}, modal
  * {p, r}, zhou2017 its 30 orders.  Messages of fits that the cases cannot
@@ -111,7 +114,21 @@ struct tf_family {
      * of memory. */
     int (*heldout)(tf_ctx *ctx, const tf_model *m, const tf_cases *c, double *max, double *rms,
                    double *rel_max, uint32_t *n);
+    /* The model's name in a header after its base: "NAME_" suffix (NULL:
+     * "forward" for a forward family, "contact" for an inverse one). */
+    const char *suffix;
+    /* The families fitted from a contact region (contact.K.region) rather
+     * than from one contact site's load cases (NULL for those): the models
+     * of region plan->contact of p with solver s, one per family of the
+     * region (the law and the surface), into models[0 .. *n) (at most
+     * TF_FAMILY_REGION_MODELS, owned by the caller).  Such a family is never
+     * applicable to load cases.  Returns 0, or -1 with the message (-2: a
+     * region this family cannot fit, a problem the user must change). */
+    int (*region)(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_fit_plan *plan,
+                  tf_model **models, size_t *n);
 };
+
+#define TF_FAMILY_REGION_MODELS 2
 
 /* ---- the registry (registry.c) ------------------------------------------- */
 
@@ -123,6 +140,15 @@ const tf_family *tf_family_find(const char *name);
 const tf_family *tf_family_of(tfit_family id);
 /* "nodal, modal, zhou2017": the names of every family of a kind. */
 void tf_family_names(tf_family_kind kind, char *out, size_t outlen);
+/* The suffix of a family's models' names in a header ("forward", "law"). */
+const char *tf_family_suffix(const tf_family *f);
+/* The plan's forward family for its contact (plan->contact of p): a
+ * contact region's models come from the forward family fitted from a
+ * region (the registry's first), a site's from any other.  A family the
+ * plan did not ask for (family_asked 0) follows the contact; one asked
+ * for that does not fit the contact is refused (a region is never fitted
+ * as a point).  Returns 0, or -1 with the message. */
+int tf_fit_plan_family_for_contact(tf_ctx *ctx, tf_fit_plan *plan, const tf_problem *p);
 
 /* ---- shared by the pipeline, the sweep and the families (model_errors.c) */
 

@@ -241,11 +241,34 @@ static void registry(void **state)
     assert_int_equal(tf_family_find("zhou2017")->id, TFIT_FAMILY_ZHOU2017);
     assert_int_equal(tf_family_find("contact")->kind, TF_FAMILY_INVERSE);
     assert_null(tf_family_find("bogus"));
-    assert_null(tf_family_of((tfit_family)9));
+    assert_null(tf_family_of((tfit_family)(TFIT_FAMILY_LAST + 1)));
     tf_family_names(TF_FAMILY_FORWARD, names, sizeof names);
-    assert_string_equal(names, "nodal, modal, zhou2017, prony, cut, resonant, modal_q15");
+    assert_string_equal(names,
+                        "nodal, modal, zhou2017, prony, cut, resonant, modal_q15, region_surface");
     tf_family_names(TF_FAMILY_INVERSE, names, sizeof names);
-    assert_string_equal(names, "contact");
+    assert_string_equal(names, "contact, region");
+    /* the two region families: fitted together from a contact region, never
+     * from load cases; their models' names in a header */
+    const tf_family *law = tf_family_find("region"), *surf = tf_family_find("region_surface");
+    assert_non_null(law);
+    assert_non_null(surf);
+    assert_int_equal(law->id, TFIT_FAMILY_REGION);
+    assert_int_equal(surf->id, TFIT_FAMILY_REGION_SURFACE);
+    assert_non_null(law->region);
+    assert_non_null(surf->region);
+    assert_string_equal(tf_family_suffix(law), "law");
+    assert_string_equal(tf_family_suffix(surf), "surface");
+    assert_string_equal(tf_family_suffix(tf_family_find("nodal")), "forward");
+    assert_string_equal(tf_family_suffix(tf_family_find("contact")), "contact");
+    for (size_t i = 0; i < tf_family_count(); ++i) {
+        const tf_family *f = tf_family_at(i);
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (f->region != NULL) {
+            assert_int_not_equal(f->applicable(&ctx, NULL, NULL), 0);
+            assert_non_null(strstr(ctx.err, "contact region"));
+        }
+    }
 }
 
 int main(void)

@@ -172,6 +172,14 @@ static void entries_are_complete(void **state)
         assert_non_null(f->candidates);
         assert_non_null(f->orders_text);
         assert_non_null(f->cost);
+        /* a family fitted from a contact region (check-cli, check-region)
+         * refuses load cases with a message */
+        if (f->region != NULL) {
+            tf_ctx ctx;
+            tf_ctx_init(&ctx);
+            assert_int_not_equal(f->applicable(&ctx, NULL, NULL), 0);
+            assert_true(ctx.err[0] != '\0');
+        }
     }
 }
 
@@ -180,6 +188,9 @@ static void order_search_gives_a_valid_model(void **state)
     fixture *x = *state;
     for (size_t i = 0; i < tf_family_count(); ++i) {
         const tf_family *f = tf_family_at(i);
+        if (f->region != NULL) { /* fitted from a contact region, not from cases */
+            continue;
+        }
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
         char orders[256];
@@ -255,6 +266,9 @@ static void exact_data_is_reproduced_and_cross_validated(void **state)
     fixture *x = *state;
     for (size_t i = 0; i < tf_family_count(); ++i) {
         const tf_family *f = tf_family_at(i);
+        if (f->region != NULL) { /* fitted from a contact region, not from cases */
+            continue;
+        }
         const int inverse = f->kind == TF_FAMILY_INVERSE;
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
@@ -338,6 +352,9 @@ static void q31_form_and_cost_match_the_header(void **state)
     assert_non_null(mkdtemp(dir));
     for (size_t i = 0; i < tf_family_count(); ++i) {
         const tf_family *f = tf_family_at(i);
+        if (f->region != NULL) { /* fitted from a contact region, not from cases */
+            continue;
+        }
         tf_family_result r;
         tf_model *m = selected(x, f, &r);
         char path[64], golden[80];

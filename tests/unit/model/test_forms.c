@@ -31,15 +31,11 @@ static void every_id_has_its_form(void **state)
         const tf_form *f = tf_form_of((tfit_family)id);
         assert_non_null(f);
         assert_int_equal(f->id, id);
-        /* a family fits it, under the same name, offering its Q31 form;
-         * the region forms' models are built from a scene's contact region
-         * (fitting/region_fit.c), which has no family of the registry yet */
+        /* a family fits it, under the same name, offering its Q31 form */
         const tf_family *fam = tf_family_of(f->id);
-        if (f->id != TFIT_FAMILY_REGION && f->id != TFIT_FAMILY_REGION_SURFACE) {
-            assert_non_null(fam);
-            assert_string_equal(fam->name, f->name);
-            assert_int_equal(fam->q31 != NULL, f->q31 != NULL);
-        }
+        assert_non_null(fam);
+        assert_string_equal(fam->name, f->name);
+        assert_int_equal(fam->q31 != NULL, f->q31 != NULL);
         /* a stateless form evaluated at the projected input has its part */
         assert_true(f->ref_eval != tf_form_ref_eval || f->ref_map != NULL);
         /* stateful exactly when its golden vectors are a tick sequence */

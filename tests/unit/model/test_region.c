@@ -69,7 +69,7 @@ static void builder_refusals(void **state)
     assert_non_null(strstr(ctx.err, "control point 11"));
     ctrl[7 * 11 + 6] = 4.0;
 
-    tf_region_chart c = g.chart;
+    tf_region_grid c = g.chart;
     c.rot[1] = 0.1; /* not orthonormal */
     assert_null(tf_region_law_new(&ctx, "bad", &c, 2, 0.5, 0.3, ctrl, 0));
     assert_non_null(strstr(ctx.err, "orthonormal"));

@@ -1,0 +1,35 @@
+/*
+ * region_surface.c — the region_surface family (TFIT_FAMILY_REGION_SURFACE):
+ * the outputs' displacements for the current contact on a contact region
+ * (docs/header-format.md §5.11), p = 1 with site modes (the two-instrument
+ * form, §5.12), fitted with the region's law (region.c, region_family.h).
+ * The forward family `tissuefit fit` emits for a region.
+ */
+#include <stdio.h>
+
+#include "fitting/families/common.h"
+#include "fitting/families/region_family.h"
+
+/* "p=1 r=12 sites=17x17 site-modes". */
+static void orders_text(const tf_model *m, int style, char *buf, size_t n)
+{
+    (void)style;
+    snprintf(buf, n, "p=%u r=%u sites=%ux%u%s", m->dims[3], m->dims[2], m->dims[0], m->dims[1],
+             m->dims[4] ? " site-modes" : "");
+}
+
+const tf_family tf_family_region_surface = {
+    .id = TFIT_FAMILY_REGION_SURFACE,
+    .name = "region_surface",
+    .kind = TF_FAMILY_FORWARD,
+    .applicable = tf_family_region_applicable,
+    .select = tf_family_region_select,
+    .fit = tf_family_region_fit_cases,
+    .candidates = tf_family_region_candidates,
+    .orders_text = orders_text,
+    .q31 = NULL,
+    .f64_errors = NULL,
+    .cost = tf_family_layout_cost,
+    .suffix = "surface",
+    .region = tf_family_region_models,
+};
