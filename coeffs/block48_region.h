@@ -15,7 +15,7 @@
  *       held out at the 36 cell centres (sites never fitted): 4 % of the peak displacement 2.391 mm;
  *       rank 25, the smallest meeting the surface target (at most 48); two instruments
  *       (tfit_region_pair): 9.46 % of the envelope radius over 864 pairs of sites
- *       error of the solve against the physics: not measured (tissuefit fit --reference)
+ *       error of the solve against the physics: not yet measured for a contact region
  *   tfit_block48_region_law: region P=2 sites=7x7, 1 output point, tool-tip position [mm] -> contact force [N]
  *       536 add, 853 mul, 0 div per evaluation; 2360 table bytes
  *       3459 instructions; Cortex-M4F <= 4874 cycles (29.01 us at 168 MHz), Cortex-M7 ~3516 (7.32 us at 480 MHz)
@@ -25,7 +25,7 @@
  *       held out at the 36 cell centres (sites never fitted): the worst force on the envelope's
  *       sphere (1 N) off by 0.198 % of it; rest height within 0 mm; stiffness >= 0.451 N/mm
  *       (every control point SPD: passive)
- *       error of the solve against the physics: not measured (tissuefit fit --reference)
+ *       error of the solve against the physics: not yet measured for a contact region
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_REGION_IMPLEMENTATION before including it: that file holds

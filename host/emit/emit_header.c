@@ -202,7 +202,10 @@ static void write_banner(FILE *f, const char *base, tf_model *const *models, siz
                     output_unit(m, 0));
         }
         note_lines(f, m->fit_note);
-        if (isnan(m->discretisation_max)) {
+        if (isnan(m->discretisation_max) && m->discretisation_note[0] != '\0') {
+            fprintf(f, " *       error of the solve against the physics: %s\n",
+                    m->discretisation_note);
+        } else if (isnan(m->discretisation_max)) {
             fprintf(f, " *       error of the solve against the physics: not measured (tissuefit fit "
                        "--reference)\n");
         } else {
