@@ -16,6 +16,12 @@
 #      demo fails above either;
 #   4. the force map and the deformed surface at four ticks
 #      (build/demo_palpate/*.png, *.vtk for ParaView).
+#
+#   check-palpate (make check): the same program on block48's top face
+#      (tests/region/block48_region.yaml: 38.4 x 38.4 mm, a 4.8 mm square
+#      probe, 4.8 mm between sites), every fourth display tick replayed:
+#      within the same targets, with ticks of two instruments compared and
+#      errors that are not zero (a replay of the firmware against itself).
 
 DEMO_PALPATE := $(B)/demo_palpate
 PALPATE_SRC := $(wildcard coeffs/palpate/*.c)
@@ -35,3 +41,15 @@ demo-palpate: $(DEMO_PALPATE)/palpate | deps-demo
 	@echo "== palpating the liver's anterior region (80 x 80 mm): fit, firmware loop, replay against true solves, pictures =="
 	$(Q)$< tests/region/liver_region.yaml $(DEMO_PALPATE) --rank $(PALPATE_RANK) \
 	  --every $(PALPATE_EVERY) contact.0.spacing=$(PALPATE_SPACING) | tee $(DEMO_PALPATE)/palpate.txt
+
+.PHONY: check-palpate
+CHECKS += check-palpate
+check-palpate: $(DEMO_PALPATE)/palpate
+	@echo "== palpation through the firmware's region calls, replayed: block48's top face =="
+	@mkdir -p $(DEMO_PALPATE)/check
+	@$< tests/region/block48_region.yaml $(DEMO_PALPATE)/check --every 4 --map 21 \
+	  contact.0.spacing=4.8 | tee $(DEMO_PALPATE)/check/palpate.txt
+	@grep -q "^replay: .* with two instruments" $(DEMO_PALPATE)/check/palpate.txt
+	@! grep -qE "force error 0\.000 %|surface error 0\.000 %" $(DEMO_PALPATE)/check/palpate.txt || \
+	  { echo "the replay found no error at all: it compared the firmware with itself"; exit 1; }
+	@echo "ok: block48's region palpated with one and two instruments, force and surface within 2 % and 5 % of true solves"

@@ -21,7 +21,7 @@ tf_model *palpate_law(tf_ctx *ctx, const palpate_grid *g, unsigned P, double s_u
                       const double *ctrl)
 {
     const tf_region_chart c = grid_of(g);
-    return tf_region_law_new(ctx, "liver_region_law", &c, P, s_u, mu, ctrl, 0);
+    return tf_region_law_new(ctx, "palpate_law", &c, P, s_u, mu, ctrl, 0);
 }
 
 tf_model *palpate_surface(tf_ctx *ctx, const palpate_grid *g, double s_u, double mu, double R_F,
@@ -29,7 +29,7 @@ tf_model *palpate_surface(tf_ctx *ctx, const palpate_grid *g, double s_u, double
                           const uint32_t *node_ids)
 {
     const tf_region_chart c = grid_of(g);
-    return tf_region_surface_new(ctx, "liver_region_surface", &c, s_u, mu, R_F, r, 1, 1, ctrl,
+    return tf_region_surface_new(ctx, "palpate_surface", &c, s_u, mu, R_F, r, 1, 1, ctrl,
                                  modes, (uint32_t)n_out, node_ids);
 }
 

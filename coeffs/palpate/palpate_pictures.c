@@ -42,8 +42,8 @@ static void paths(FILE *gp, const palpate_models *m, const palpate_tick *t, cons
     }
 }
 
-static int map_vtk(tf_ctx *ctx, const char *dir, const palpate_models *m, unsigned n,
-                   const double *xyz, const float *F)
+static int map_vtk(tf_ctx *ctx, const char *dir, const palpate_models *m, double depth,
+                   unsigned n, const double *xyz, const float *F)
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/force_map.vtk", dir);
@@ -52,10 +52,10 @@ static int map_vtk(tf_ctx *ctx, const char *dir, const palpate_models *m, unsign
         return -1;
     }
     FILE *f = a.fp;
-    fprintf(f, "# vtk DataFile Version 3.0\nliver region: the force of a %.3g mm press at each "
-               "site (N), rest surface points (mm)\nASCII\nDATASET STRUCTURED_GRID\n"
+    fprintf(f, "# vtk DataFile Version 3.0\n%s: the force of a %.3g mm press at each site (N), "
+               "rest surface points (mm)\nASCII\nDATASET STRUCTURED_GRID\n"
                "DIMENSIONS %u %u 1\nPOINTS %u double\n",
-            m->R_F, n, n, n * n);
+            m->name, depth, n, n, n * n);
     for (unsigned k = 0; k < n * n; ++k) {
         fprintf(f, "%.6f %.6f %.6f\n", xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
     }
@@ -142,8 +142,8 @@ int palpate_force_map(tf_ctx *ctx, const char *dir, const palpate_models *m, dou
         fprintf(gp, "EOD\n");
         paths(gp, m, t, run);
         fprintf(gp,
-                "set title \"The liver's anterior region: |F| (N) of a %.2f mm press at each site "
-                "(tfit\\_region\\_force, one tick from reset)\" noenhanced\n"
+                "set title \"%s: |F| (N) of a %.2f mm press at each site "
+                "(tfit_region_force, one tick from reset)\" noenhanced\n"
                 "set xlabel 'a (mm, chart)'\nset ylabel 'b (mm, chart)'\nset size ratio -1\n"
                 "set view map\nset palette rgbformulae 33,13,10\nset cblabel '|F| (N)'\n"
                 "set key outside top center horizontal\n"
@@ -151,11 +151,11 @@ int palpate_force_map(tf_ctx *ctx, const char *dir, const palpate_models *m, dou
                 "$p1 using 1:2:(0) with lines lw 2 lc rgb 'white' title 'instrument 1 in contact', "
                 "$p2 using 1:2:(0) with linespoints pt 6 ps 2 lw 2 lc rgb 'black' "
                 "title 'instrument 2 in contact'\n",
-                depth);
+                m->name, depth);
         rc = tf_plot_close(ctx, &pl);
     }
     if (rc == 0) {
-        rc = map_vtk(ctx, dir, m, n, xyz, F);
+        rc = map_vtk(ctx, dir, m, depth, n, xyz, F);
     }
     free(xyz);
     free(F);
@@ -182,9 +182,9 @@ static int surface_vtk(tf_ctx *ctx, const char *dir, const palpate_models *m, co
         return -1;
     }
     FILE *f = a.fp;
-    fprintf(f, "# vtk DataFile Version 3.0\nliver region outputs at tick %zu: rest positions "
-               "(mm), the firmware's displacement (mm)\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-            k, m->n_out);
+    fprintf(f, "# vtk DataFile Version 3.0\n%s, outputs at tick %zu: rest positions (mm), the "
+               "firmware's displacement (mm)\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
+            m->name, k, m->n_out);
     for (size_t j = 0; j < m->n_out; ++j) {
         double b[3];
         const double *x = output_xyz(p, j, b);
@@ -243,11 +243,11 @@ int palpate_surfaces(tf_ctx *ctx, const char *dir, const palpate_models *m, cons
                                  (double)u[3 * j + 2] * u[3 * j + 2]));
         }
     }
-    fprintf(gp, "set multiplot layout 2,%zu title \"The liver's outputs under the probe: the "
+    fprintf(gp, "set multiplot layout 2,%zu title \"%s, the outputs under the probes: the "
                 "firmware's displacement |u| (mm), deformed positions in the chart's (a, b) plane\" "
                 "noenhanced\nset size ratio -1\nset palette rgbformulae 33,13,10\n"
                 "set cbrange [0:%.4g]\nset xlabel 'a (mm)'\nset ylabel 'b (mm)'\n",
-            (nf + 1) / 2, top > 0 ? top : 1.0);
+            (nf + 1) / 2, m->name, top > 0 ? top : 1.0);
     for (size_t f = 0; f < nf; ++f) {
         const size_t k = frames[f] * PALPATE_DISPLAY_EVERY + PALPATE_DISPLAY_EVERY - 1;
         fprintf(gp, "set title 'tick %zu (%s)'\n"

@@ -18,6 +18,7 @@
 
 /* The device's view of the two models and what the replay needs of them. */
 typedef struct palpate_models {
+    const char *name;         /* the scene's, for the pictures */
     const tfit_model *law, *surf;
     const tf_model *law_host; /* the law's tables on the host (its rest surface) */
     palpate_grid grid;
