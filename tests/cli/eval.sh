@@ -24,20 +24,20 @@ models_q31() { sed -n 's/^extern const tfit_model_q31 tfit_\([a-z0-9_]*\);$/\1/p
 round_trip() {
     h=$1 m=$2
     shift 2
-    "$tool" -q eval "$h" --model "$m" "$@" --golden -o "$tmp/g.csv" 2>"$tmp/err" ||
-        { bad "$h $m $*: --golden failed: $(head -3 "$tmp/err")"; return; }
-    k=$(head -1 "$tmp/g.csv" | tr , '\n' | grep -n '^status$' | cut -d: -f1)
-    cut -d, -f1-$((k - 1)) "$tmp/g.csv" >"$tmp/in.csv"
-    cut -d, -f$k- "$tmp/g.csv" >"$tmp/want.csv"
-    "$tool" -q eval "$h" --model "$m" "$@" -i "$tmp/in.csv" -o "$tmp/got.csv" 2>"$tmp/err" ||
-        { bad "$h $m $*: eval failed: $(head -3 "$tmp/err")"; return; }
-    rows=$(($(wc -l <"$tmp/want.csv") - 1))
-    if cmp -s "$tmp/want.csv" "$tmp/got.csv"; then
+    "$tool" -q eval "$h" --model "$m" "$@" --golden -o "$d/g.csv" 2>"$d/err" ||
+        { bad "$h $m $*: --golden failed: $(head -3 "$d/err")"; return; }
+    k=$(head -1 "$d/g.csv" | tr , '\n' | grep -n '^status$' | cut -d: -f1)
+    cut -d, -f1-$((k - 1)) "$d/g.csv" >"$d/in.csv"
+    cut -d, -f$k- "$d/g.csv" >"$d/want.csv"
+    "$tool" -q eval "$h" --model "$m" "$@" -i "$d/in.csv" -o "$d/got.csv" 2>"$d/err" ||
+        { bad "$h $m $*: eval failed: $(head -3 "$d/err")"; return; }
+    rows=$(($(wc -l <"$d/want.csv") - 1))
+    if cmp -s "$d/want.csv" "$d/got.csv"; then
         echo "ok:   $h $m $*: $rows golden vectors bit for bit"
         sets=$((sets + 1))
         vectors=$((vectors + rows))
     else
-        bad "$h $m $*: eval differs from the golden outputs: $(diff "$tmp/want.csv" "$tmp/got.csv" | head -3)"
+        bad "$h $m $*: eval differs from the golden outputs: $(diff "$d/want.csv" "$d/got.csv" | head -3 | cut -c1-160)"
     fi
 }
 
@@ -52,23 +52,26 @@ prints "eval --help" "PREFIX/share/tfit/tfit_shim.c"
 # status and 3 n_out displacements per row.
 region_surface() {
     h=$1 m=$2 law=${2%_surface}_law
-    "$tool" -q eval "$h" --model "$law" --golden -o "$tmp/g.csv" 2>"$tmp/err" &&
-        cut -d, -f1-3 "$tmp/g.csv" >"$tmp/in.csv" && cut -d, -f4- "$tmp/g.csv" >"$tmp/want.csv" &&
-        "$tool" -q eval "$h" --model "$m" -i "$tmp/in.csv" -o "$tmp/got.csv" 2>"$tmp/err" ||
-        { bad "$h $m: eval failed: $(head -3 "$tmp/err")"; return; }
+    "$tool" -q eval "$h" --model "$law" --golden -o "$d/g.csv" 2>"$d/err" &&
+        cut -d, -f1-3 "$d/g.csv" >"$d/in.csv" && cut -d, -f4- "$d/g.csv" >"$d/want.csv" &&
+        "$tool" -q eval "$h" --model "$m" -i "$d/in.csv" -o "$d/got.csv" 2>"$d/err" ||
+        { bad "$h $m: eval failed: $(head -3 "$d/err")"; return; }
     n_out=$(sed -n "s/^#define TFIT_$(echo "$m" | tr a-z A-Z)_N_OUT \([0-9]*\).*/\1/p" "$h")
-    widths=$(awk -F, '{ print NF }' "$tmp/got.csv" | sort -u)
-    if cut -d, -f1-4 "$tmp/got.csv" | cmp -s - "$tmp/want.csv" && [ "$widths" = $((5 + 3 * n_out)) ]; then
-        echo "ok:   $h $m: its law's $(($(wc -l <"$tmp/want.csv") - 1)) golden ticks give the law's forces, and $n_out outputs"
+    widths=$(awk -F, '{ print NF }' "$d/got.csv" | sort -u)
+    if cut -d, -f1-4 "$d/got.csv" | cmp -s - "$d/want.csv" && [ "$widths" = $((5 + 3 * n_out)) ]; then
+        echo "ok:   $h $m: its law's $(($(wc -l <"$d/want.csv") - 1)) golden ticks give the law's forces, and $n_out outputs"
         sets=$((sets + 1))
     else
         bad "$h $m: the law's forces differ or the rows are not $((5 + 3 * n_out)) wide ($widths)"
     fi
 }
 
-sets=0 vectors=0
-for h in coeffs/*.h; do
-    case $h in *_golden.h) continue ;; esac
+# header_trips HEADER: every model's round trip, in its own folder $d; the
+# tally (sets, vectors, failures) in $d/tally.  Two headers at a time.
+header_trips() {
+    h=$1 d=$tmp/h.$(basename "$1" .h)
+    mkdir -p "$d"
+    sets=0 vectors=0 fails=0
     for m in $(models "$h"); do
         if grep -q "^#define TFIT_$(echo "$m" | tr a-z A-Z)_FAMILY \"region_surface\"" "$h"; then
             region_surface "$h" "$m"
@@ -77,12 +80,33 @@ for h in coeffs/*.h; do
         fi
     done
     for m in $(models_q31 "$h"); do round_trip "$h" "${m%_q31}" --q31; done
+    echo "$sets $vectors $fails" >"$d/tally"
+}
+
+headers=$(ls coeffs/*.h | grep -v '_golden\.h$')
+n=0
+for h in $headers; do
+    header_trips "$h" >"$tmp/h.$(basename "$h" .h).log" 2>&1 &
+    n=$((n + 1))
+    [ $((n % 2)) -eq 0 ] && wait
+done
+wait
+sets=0 vectors=0
+for h in $headers; do
+    name=$(basename "$h" .h)
+    cat "$tmp/h.$name.log"
+    if read -r s v f <"$tmp/h.$name/tally"; then
+        sets=$((sets + s)) vectors=$((vectors + v)) fails=$((fails + f))
+    else
+        bad "$h: its round trips did not finish"
+    fi
 done
 [ "$sets" -ge 20 ] || bad "only $sets golden sets compared"
 
 # The comparison notices one changed last digit of one output.
-sed '2s/\([0-9]\),/\1X,/' "$tmp/got.csv" | sed '2s/0X,/1,/; 2s/\([1-9]\)X,/0,/' >"$tmp/changed.csv"
-cmp -s "$tmp/want.csv" "$tmp/changed.csv" && bad "a changed digit is not noticed"
+d=$tmp/h.block48
+sed '2s/\([0-9]\),/\1X,/' "$d/got.csv" | sed '2s/0X,/1,/; 2s/\([1-9]\)X,/0,/' >"$tmp/changed.csv"
+cmp -s "$d/want.csv" "$tmp/changed.csv" && bad "a changed digit is not noticed"
 
 # --- refusals: nothing written, an existing output untouched
 w=$tmp/w
