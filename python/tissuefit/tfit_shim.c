@@ -128,9 +128,11 @@ int32_t tf_shim_model_info(uint32_t i, uint32_t info[3])
 /* n inputs in[3 n] (forces in N, contact displacements in mm for the
  * contact family, tool-tip positions in mm for a region law; s[n] the cut
  * progress of a cut model) into out[3 n_out n] and status[n] (a region
- * law's n_out is 1: its outputs are the forces).  Returns 0, or -1 for a
- * bad index, a cut model without s or a region surface (which needs its
- * law: tf_shim_eval_region). */
+ * law's n_out is 1: its outputs are the forces).  A region surface's input
+ * k is a force (N) at the proxy of golden vector k, as tfit_golden_run
+ * places it (tfit.h: fractions of the grid from TFIT_CUT_GOLDEN_S_BITS; its
+ * law's proxies: tf_shim_eval_region).  Returns 0, or -1 for a bad index or
+ * a cut model without s. */
 int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, float *out,
                      int32_t *status)
 {
@@ -141,8 +143,7 @@ int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, fl
     const uint32_t w = 3u * m->n_out;
     float state[TFIT_RESONANT_MAX_STATE > TFIT_PRONY_MAX_STATE ? TFIT_RESONANT_MAX_STATE
                                                                  : TFIT_PRONY_MAX_STATE];
-    if ((m->family == (uint32_t)TFIT_FAMILY_CUT && s == NULL) ||
-        m->family == (uint32_t)TFIT_FAMILY_REGION_SURFACE) {
+    if (m->family == (uint32_t)TFIT_FAMILY_CUT && s == NULL) {
         return -1;
     }
     if (m->family == (uint32_t)TFIT_FAMILY_PRONY) {
@@ -171,6 +172,13 @@ int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, fl
         case TFIT_FAMILY_REGION:
             status[k] = tfit_region_force(m, state, x, y);
             break;
+        case TFIT_FAMILY_REGION_SURFACE: {
+            const float proxy[3] = {tf_shim_cut_golden_s(k) * (float)(m->dims[0] - 1u),
+                                    tf_shim_cut_golden_s(7u * k + 3u) * (float)(m->dims[1] - 1u),
+                                    1.0f};
+            status[k] = tfit_region_surface(m, proxy, x, y);
+            break;
+        }
         default:
             status[k] = tfit_displacements(m, x, y);
             break;
