@@ -152,6 +152,9 @@ install: all $(INSTALL_CORES:%=$(B)/%/libtfit.a)
 	install -m 644 $(B)/lib/libtfit.a $(DESTDIR)$(PREFIX)/lib/libtfit.a
 	install -m 644 target/include/tfit.h $(DESTDIR)$(PREFIX)/include/tfit.h
 	install -m 644 target/include/tfit_q31.h $(DESTDIR)$(PREFIX)/include/tfit_q31.h
+	install -d $(DESTDIR)$(PREFIX)/lib/tfit/native-pic
+	install -m 644 $(B)/native-pic/libtfit.a $(DESTDIR)$(PREFIX)/lib/tfit/native-pic/libtfit.a
+	install -m 644 python/tissuefit/tfit_shim.c $(INSTALL_SHARE)/tfit_shim.c
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' target/tfit.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc
 	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/tfit.pc

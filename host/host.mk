@@ -57,8 +57,23 @@ $(B)/native/libtissuefit.so: $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/n
 	$(Q)$(CC) -shared -Wl,--no-undefined -Wl,--version-script=host/api/libtissuefit.map \
 	  $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/native-pic/libtfit.a $(HOST_LIBS) -o $@
 
+# What `tissuefit eval` compiles a generated header with (host/cli/eval_shim.h):
+# the evaluator the Python module compiles too, tfit.h and the position-
+# independent libtfit, staged under build/ as `make install` lays them out
+# under PREFIX, so that the tool finds them from its own path in both.
+EVAL_STAGE := $(B)/share/tfit/tfit_shim.c $(B)/include/tfit.h $(B)/include/tfit_q31.h \
+              $(B)/lib/tfit/native-pic/libtfit.a
+$(B)/share/tfit/tfit_shim.c: python/tissuefit/tfit_shim.c
+$(B)/include/tfit.h: target/include/tfit.h
+$(B)/include/tfit_q31.h: target/include/tfit_q31.h
+$(B)/lib/tfit/native-pic/libtfit.a: $(B)/native-pic/libtfit.a
+$(EVAL_STAGE):
+	@mkdir -p $(@D)
+	$(Q)cp $< $@
+
 # The tool links the native target library to time it (tissuefit sweep).
-$(B)/bin/tissuefit: $(B)/native/host/cli/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a
+$(B)/bin/tissuefit: $(B)/native/host/cli/main.o $(B)/native/libtissuefit-host.a $(B)/native/libtfit.a \
+                    | $(EVAL_STAGE)
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(CC) $^ $(HOST_LIBS) -o $@

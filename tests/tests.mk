@@ -9,7 +9,9 @@
 #   check-golden       golden vectors of generated headers x 4 configurations
 #   check-header       a generated header included from two translation units
 #   check-insncount    callgrind: same instruction count for every input
-#   check-cli          the command line: help, exit statuses, nothing half-written
+#   check-cli          the command line: help, exit statuses, nothing half-written;
+#                      tissuefit eval: every shipped header's golden vectors through
+#                      a CSV bit for bit (tests/cli/eval.sh)
 
 # -I.: a test reaches beyond host/ by its path from the top ("tests/...").
 TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -I. -Itests/support -Itests/bitexact
@@ -244,3 +246,5 @@ check-insncount: $(T)/probe $(T)/probe-modal_ranks
 check-cli: $(B)/bin/tissuefit
 	@echo "== command line =="
 	@tests/cli/cli.sh $(B)/bin/tissuefit
+	@echo "== tissuefit eval: every shipped header's golden vectors through a CSV, and the refusals =="
+	@tests/cli/eval.sh $(B)/bin/tissuefit

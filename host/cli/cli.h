@@ -24,6 +24,7 @@ typedef struct tf_command {
 
 /* Defined in the cmd_*.c files. */
 extern const tf_command tf_cmd_demo_model;
+extern const tf_command tf_cmd_eval;
 extern const tf_command tf_cmd_fit;
 extern const tf_command tf_cmd_replay;
 extern const tf_command tf_cmd_sweep;

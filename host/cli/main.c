@@ -18,6 +18,7 @@ static const tf_command *const commands[] = {
     &tf_cmd_fit,
     &tf_cmd_replay,
     &tf_cmd_sweep,
+    &tf_cmd_eval,
     &tf_cmd_demo_model,
     &tf_cmd_lm_strd,
     &tf_cmd_solve,

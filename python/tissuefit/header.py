@@ -22,7 +22,7 @@ from ._native import HERE, Error, ptr
 BITEXACT_FLAGS = ["-std=c11", "-O2", "-ffp-contract=off", "-Wall", "-Wextra"]
 
 FAMILIES = {1: "nodal", 2: "modal", 3: "zhou2017", 4: "contact", 5: "prony", 6: "cut",
-            7: "resonant", 8: "modal_q15"}
+            7: "resonant", 8: "modal_q15", 9: "region", 10: "region_surface"}
 
 _MODEL = re.compile(r"^extern const tfit_model (tfit_\w+);", re.M)
 _MODEL_Q31 = re.compile(r"^extern const tfit_model_q31 (tfit_\w+);", re.M)

@@ -12,7 +12,14 @@
  * TF_SHIM_GOLDEN_Q31(...).  Each entry point evaluates a model as the
  * library's golden runner does (tfit_golden.c, tfit_q31_golden.c): the
  * contact family through tfit_contact_force, a cut model at its cut
- * progress, a prony or resonant model as one tick sequence from rest.
+ * progress, a prony or resonant model as one tick sequence from rest, a
+ * region law as one tick sequence of tool-tip positions from a reset state
+ * (tf_shim_eval_region adds the surface of its region at every tick).
+ *
+ * Two programs compile this one file: the Python module (header.py, into a
+ * shared object it loads with ctypes) and `tissuefit eval`
+ * (host/cli/cmd_eval.c, which loads the same shared object with dlopen), so
+ * both evaluate a header through the same calls of libtfit.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -75,6 +82,9 @@ const char *tf_shim_model_name(uint32_t i);
 int32_t tf_shim_model_info(uint32_t i, uint32_t info[3]);
 int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, float *out,
                      int32_t *status);
+int32_t tf_shim_eval_region(uint32_t law, uint32_t surf, uint32_t n, const float *tip,
+                            float *force, int32_t *status, float *surface,
+                            int32_t *surface_status);
 float tf_shim_cut_golden_s(uint32_t v);
 uint32_t tf_shim_goldens(void);
 int32_t tf_shim_golden(uint32_t j, uint32_t *model, uint32_t *n_vec, const uint32_t **in,
@@ -115,10 +125,14 @@ int32_t tf_shim_model_info(uint32_t i, uint32_t info[3])
     return tfit_model_check(models[i].m);
 }
 
-/* n inputs in[3 n] (forces in N, or contact displacements in mm for the
- * contact family; s[n] the cut progress of a cut model) into
- * out[3 n_out n] and status[n].  Returns 0, or -1 for a bad index or a cut
- * model without s. */
+/* n inputs in[3 n] (forces in N, contact displacements in mm for the
+ * contact family, tool-tip positions in mm for a region law; s[n] the cut
+ * progress of a cut model) into out[3 n_out n] and status[n] (a region
+ * law's n_out is 1: its outputs are the forces).  A region surface's input
+ * k is a force (N) at the proxy of golden vector k, as tfit_golden_run
+ * places it (tfit.h: fractions of the grid from TFIT_CUT_GOLDEN_S_BITS; its
+ * law's proxies: tf_shim_eval_region).  Returns 0, or -1 for a bad index or
+ * a cut model without s. */
 int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, float *out,
                      int32_t *status)
 {
@@ -136,6 +150,8 @@ int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, fl
         (void)tfit_prony_reset(m, state);
     } else if (m->family == (uint32_t)TFIT_FAMILY_RESONANT) {
         (void)tfit_resonant_reset(m, state);
+    } else if (m->family == (uint32_t)TFIT_FAMILY_REGION) {
+        (void)tfit_region_reset(m, state);
     }
     for (uint32_t k = 0u; k < n; ++k) {
         const float *x = in + 3u * k;
@@ -153,9 +169,49 @@ int32_t tf_shim_eval(uint32_t i, uint32_t n, const float *in, const float *s, fl
         case TFIT_FAMILY_CONTACT:
             status[k] = tfit_contact_force(m, x, y);
             break;
+        case TFIT_FAMILY_REGION:
+            status[k] = tfit_region_force(m, state, x, y);
+            break;
+        case TFIT_FAMILY_REGION_SURFACE: {
+            const float proxy[3] = {tf_shim_cut_golden_s(k) * (float)(m->dims[0] - 1u),
+                                    tf_shim_cut_golden_s(7u * k + 3u) * (float)(m->dims[1] - 1u),
+                                    1.0f};
+            status[k] = tfit_region_surface(m, proxy, x, y);
+            break;
+        }
         default:
             status[k] = tfit_displacements(m, x, y);
             break;
+        }
+    }
+    return 0;
+}
+
+/* The firmware's loop of one instrument (tfit.h, region models): region law
+ * `law` stepped over the n tool-tip positions tip[3 n] from a reset state,
+ * its forces into force[3 n] and statuses into status[n]; when surf is a
+ * region surface's index (not UINT32_MAX), the surface under each tick's
+ * force at that tick's proxy into surface[3 n_out n] and its statuses into
+ * surface_status[n].  Returns 0, or -1 for an index beyond or a model of
+ * another family. */
+int32_t tf_shim_eval_region(uint32_t law, uint32_t surf, uint32_t n, const float *tip,
+                            float *force, int32_t *status, float *surface,
+                            int32_t *surface_status)
+{
+    const int with_surface = surf != UINT32_MAX;
+    if (law >= COUNT(models) || models[law].m->family != (uint32_t)TFIT_FAMILY_REGION ||
+        (with_surface && (surf >= COUNT(models) || surface == NULL || surface_status == NULL ||
+                          models[surf].m->family != (uint32_t)TFIT_FAMILY_REGION_SURFACE))) {
+        return -1;
+    }
+    float state[TFIT_REGION_STATE_WORDS];
+    (void)tfit_region_reset(models[law].m, state);
+    for (uint32_t k = 0u; k < n; ++k) {
+        status[k] = tfit_region_force(models[law].m, state, tip + 3u * k, force + 3u * k);
+        if (with_surface) {
+            const tfit_model *sm = models[surf].m;
+            surface_status[k] = tfit_region_surface(sm, state, force + 3u * k,
+                                                    surface + (size_t)3u * sm->n_out * k);
         }
     }
     return 0;
