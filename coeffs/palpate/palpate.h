@@ -11,9 +11,8 @@
  *   palpate_replay.c   the firmware loop and its replay against site solves
  *   palpate_pictures.c the force map and the deformed surfaces (PNG, VTK)
  *
- * palpate_models.c is a translation unit of its own because the model
- * layer's grid of a region and the problem layer's chart carry the same
- * type name (tf_region_chart); the two meet here only as plain numbers.
+ * palpate_models.c builds the model layer's grid of a region
+ * (tf_region_grid) from plain numbers.
  */
 #ifndef PALPATE_H
 #define PALPATE_H

@@ -9,9 +9,9 @@
 #include "coeffs/palpate/palpate.h"
 #include "model/region_model.h"
 
-static tf_region_chart grid_of(const palpate_grid *g)
+static tf_region_grid grid_of(const palpate_grid *g)
 {
-    tf_region_chart c = {.nx = g->nx, .ny = g->ny, .ha = g->ha, .hb = g->hb};
+    tf_region_grid c = {.nx = g->nx, .ny = g->ny, .ha = g->ha, .hb = g->hb};
     memcpy(c.origin, g->origin, sizeof c.origin);
     memcpy(c.rot, g->rot, sizeof c.rot);
     return c;
@@ -20,7 +20,7 @@ static tf_region_chart grid_of(const palpate_grid *g)
 tf_model *palpate_law(tf_ctx *ctx, const palpate_grid *g, unsigned P, double s_u, double mu,
                       const double *ctrl)
 {
-    const tf_region_chart c = grid_of(g);
+    const tf_region_grid c = grid_of(g);
     return tf_region_law_new(ctx, "palpate_law", &c, P, s_u, mu, ctrl, 0);
 }
 
@@ -28,7 +28,7 @@ tf_model *palpate_surface(tf_ctx *ctx, const palpate_grid *g, double s_u, double
                           unsigned r, const double *ctrl, const double *modes, size_t n_out,
                           const uint32_t *node_ids)
 {
-    const tf_region_chart c = grid_of(g);
+    const tf_region_grid c = grid_of(g);
     return tf_region_surface_new(ctx, "palpate_surface", &c, s_u, mu, R_F, r, 1, 1, ctrl,
                                  modes, (uint32_t)n_out, node_ids);
 }
