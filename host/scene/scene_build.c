@@ -417,6 +417,73 @@ static int contacts(const sd_scene *doc, tf_problem *s, sd_issue *is)
 
 /* Incisions: each segment of non-zero length, every point on the top face
  * (inside the box's x, y extent, borders included), depth in (0, height]. */
+/* Whether (x, y) lies inside the closed polygon c->xy[0..n) (even-odd). */
+static int inside_cut(const tf_cut *c, double x, double y)
+{
+    int in = 0;
+    for (size_t i = 0, j = c->n - 1; i < c->n; j = i++) {
+        const double *a = c->xy[i], *b = c->xy[j];
+        if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])) {
+            in = !in;
+        }
+    }
+    return in;
+}
+
+/* A closed cut through the full height cuts a plug out of the block: it
+ * must hold a fixed node, or the plug floats (its stiffness is singular
+ * and a solve returned whatever the factorisation made of it).  Returns 0
+ * or -1 with the message. */
+static int plug_is_held(const tf_problem *s, size_t k, sd_issue *is)
+{
+    const tf_cut *c = &s->cuts[k];
+    const double h = s->geometry.as.box.max[2] - s->geometry.as.box.min[2];
+    if (c->n < 4 || c->xy[0][0] != c->xy[c->n - 1][0] || c->xy[0][1] != c->xy[c->n - 1][1] ||
+        c->depth < h) {
+        return 0;
+    }
+    unsigned char *fixed = malloc(3 * s->cloud.n + 1);
+    if (fixed == NULL) {
+        return sd_fail(is, "cuts", "out of memory");
+    }
+    tf_problem_fixed_dofs(s, fixed);
+    size_t nodes = 0, held = 0;
+    for (size_t i = 0; i < s->cloud.n; ++i) {
+        const double *x = s->cloud.xyz + 3 * i;
+        if (inside_cut(c, x[0], x[1])) {
+            nodes++;
+            held += fixed[3 * i] || fixed[3 * i + 1] || fixed[3 * i + 2];
+        }
+    }
+    free(fixed);
+    if (nodes > 0 && held == 0) {
+        char p[64];
+        return sd_fail(is, at(p, sizeof p, "cuts", k, "path"),
+                       "a closed cut through the full height frees a plug of %zu nodes that no "
+                       "fixed region holds (a shallower cut, an open path, or a fixed region "
+                       "inside)",
+                       nodes);
+    }
+    return 0;
+}
+
+/* Cut k repeats an earlier one (the same path and depth: it cut nothing
+ * more, yet the visibility of the shape functions counted it twice). */
+static int repeats(const tf_problem *s, size_t k, sd_issue *is)
+{
+    const tf_cut *c = &s->cuts[k];
+    for (size_t j = 0; j < k; ++j) {
+        const tf_cut *e = &s->cuts[j];
+        if (e->n == c->n && e->depth == c->depth &&
+            memcmp(e->xy, c->xy, c->n * sizeof c->xy[0]) == 0) {
+            char p[64];
+            return sd_fail(is, at(p, sizeof p, "cuts", k, "path"),
+                           "repeats cuts.%zu (the same path and depth)", j);
+        }
+    }
+    return 0;
+}
+
 static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     if (doc->cuts_count > 0 && tf_problem_mesh(s) != NULL) {
@@ -457,6 +524,9 @@ static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
                 snprintf(p, sizeof p, "cuts.%zu.path.%zu", k, i);
                 return sd_fail(is, p, "a segment of zero length (the point repeats the one before)");
             }
+        }
+        if (repeats(s, k, is) != 0 || plug_is_held(s, k, is) != 0) {
+            return -1;
         }
     }
     return 0;

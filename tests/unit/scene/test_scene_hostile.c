@@ -116,6 +116,12 @@ static void set_values_get_the_same_checks(void **state)
         {"geometry.grid=011,11,3", "geometry.grid.0: '011' has a leading zero"},
         {"fit.seed=-1", "fit.seed: '-1' is not a non-negative whole number"},
         {"fixed=[{face: x-}, *a]", "aliases (*a)"},
+        /* a cut listed twice changed the answer by 26 %; a closed cut
+         * through the full height freed a plug nothing holds */
+        {"cuts=[{path: [[10, 0], [10, 10]], depth: 5}, {path: [[10, 0], [10, 10]], depth: 5}]",
+         "cuts.1.path: repeats cuts.0"},
+        {"cuts=[{path: [[12, 12], [36, 12], [36, 36], [12, 36], [12, 12]], depth: 6}]",
+         "cuts.0.path: a closed cut through the full height frees a plug of"},
         /* each axis within its range, the product past what memory holds */
         {"solver.cells=4096,4096,8",
          "solver.cells: 4096 x 4096 x 8 = 134217728 background cells, more than 1000000"},
