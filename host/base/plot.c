@@ -48,14 +48,38 @@ int tf_plot_open(tf_ctx *ctx, tf_plot *p, const char *path, int width, int heigh
     return 0;
 }
 
+/* Whether path is a whole PNG, synced: it ends with the IEND chunk.
+ * gnuplot exits 0 when cairo could not write the image (a full disk), and
+ * the truncated file would have been renamed over the destination. */
+static int png_complete(const char *path)
+{
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    unsigned char tail[12];
+    FILE *f = fopen(path, "rb+");
+    int ok = f != NULL && fseek(f, -12, SEEK_END) == 0 && fread(tail, 1, 12, f) == 12 &&
+             memcmp(tail, iend, 12) == 0 && fflush(f) == 0 && fsync(fileno(f)) == 0;
+    if (f != NULL) {
+        fclose(f);
+    }
+    return ok;
+}
+
 int tf_plot_close(tf_ctx *ctx, tf_plot *p)
 {
     fprintf(p->gp, "unset output\n");
     int status = pclose(p->gp);
     p->gp = NULL;
-    if (status != 0 || rename(p->tmp, p->path) != 0) {
+    if (status != 0) {
         unlink(p->tmp);
         return tf_fail(ctx, "%s: gnuplot failed (status %d)", p->path, status);
+    }
+    if (!png_complete(p->tmp)) {
+        unlink(p->tmp);
+        return tf_fail(ctx, "%s: gnuplot wrote an incomplete image (a full disk?)", p->path);
+    }
+    if (rename(p->tmp, p->path) != 0) {
+        unlink(p->tmp);
+        return tf_fail(ctx, "%s: cannot rename its temporary file", p->path);
     }
     return 0;
 }

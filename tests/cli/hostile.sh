@@ -97,4 +97,19 @@ awk -F, 'NR == 3 { $20 = "nan" } { print }' OFS=, "$tmp/ticks.csv" >"$tmp/nan.cs
 expect 1 "replay, a NaN in the logged outputs" -- "$tool" -q replay $B --ticks "$tmp/nan.csv"
 says "replay NaN" "1 logged outputs of accepted ticks are NaN or Inf (the first at tick 1)"
 
+# --- a report picture cut short: gnuplot exits 0 when cairo cannot write
+# (a full disk); a gnuplot on PATH that does just that
+mkdir -p "$tmp/fakegp" "$tmp/rep"
+cat >"$tmp/fakegp/gnuplot" <<'GP'
+#!/bin/sh
+out=$(sed -n "s/^set output '\(.*\)'$/\1/p" | head -n 1)
+[ -z "$out" ] || printf '\211PNG\r\n\032\n' >"$out"
+exit 0
+GP
+chmod +x "$tmp/fakegp/gnuplot"
+expect 1 "fit --report, gnuplot's image cut short" -- env PATH="$tmp/fakegp:$PATH" \
+    "$tool" -q fit $B -o "$tmp/rep/cut.h" --report "$tmp/rep"
+says "an image cut short" "gnuplot wrote an incomplete image"
+ls "$tmp/rep" | grep -q '\.png' && bad "a cut-short image was kept: $(ls "$tmp/rep")"
+
 finish hostile
