@@ -24,14 +24,49 @@ static const double *at(const tf_surface *s, size_t v)
     return s->xyz + 3 * v;
 }
 
+/* Every coordinate a finite number (a NaN, or 1e300 read as float32's
+ * infinity, was reported as a degenerate triangle). */
+static int finite_vertices(const tf_surface *s, tf_geom_msg *m)
+{
+    for (size_t v = 0; v < s->nv; ++v) {
+        const double *x = at(s, v);
+        if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2])) {
+            return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                                "vertex %ld at (%g, %g, %g): a coordinate is not a finite "
+                                "number (the reader holds float32: at most 3.4e38)",
+                                s->source[v], x[0], x[1], x[2]);
+        }
+    }
+    return TF_GEOM_OK;
+}
+
+/* The ratio of the coordinates' size to the surface's: above about 1e5
+ * float32's 24 bits no longer tell neighbouring vertices apart. */
+static double offset_ratio(const tf_surface *s)
+{
+    double lo[3], hi[3], ext = 0, far = 0;
+    tf_surface_bbox(s, lo, hi);
+    for (int a = 0; a < 3; ++a) {
+        ext = fmax(ext, hi[a] - lo[a]);
+        far = fmax(far, fmax(fabs(lo[a]), fabs(hi[a])));
+    }
+    return ext > 0 ? far / ext : INFINITY;
+}
+
 static int repeated_vertices(const tf_surface *s, tf_geom_msg *m)
 {
     for (size_t t = 0; t < s->nt; ++t) {
         const size_t *v = s->tri + 3 * t;
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
+            double r = offset_ratio(s);
             return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
-                                "degenerate triangle %zu: it names vertex %ld twice", t,
-                                s->source[v[0] == v[1] || v[0] == v[2] ? v[0] : v[1]]);
+                                "degenerate triangle %zu: it names vertex %ld twice%s", t,
+                                s->source[v[0] == v[1] || v[0] == v[2] ? v[0] : v[1]],
+                                r > 1e4 ? " (the coordinates lie far from the origin for the "
+                                          "surface's size, and the reader's float32 merges "
+                                          "vertices there: move the file's origin into the "
+                                          "organ)"
+                                        : "");
         }
     }
     return TF_GEOM_OK;
@@ -186,7 +221,8 @@ static int outward(tf_surface *s, tf_geom_msg *m)
 
 int tf_surface_clean(tf_surface *s, tf_geom_msg *m)
 {
-    int rc = repeated_vertices(s, m);
+    int rc = finite_vertices(s, m);
+    rc = rc ? rc : repeated_vertices(s, m);
     rc = rc ? rc : drop_unused(s, m);
     rc = rc ? rc : closed_and_wound(s, m);
     rc = rc ? rc : one_piece(s, m);

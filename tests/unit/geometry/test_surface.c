@@ -329,6 +329,48 @@ static void each_format_reads_the_same_closed_cube(void **state)
     tf_surface_free(&c);
 }
 
+/* A cube with one coordinate replaced by text, read by assimp and cleaned:
+ * the message of tf_surface_clean. */
+static const char *cube_with(const char *coordinate, tf_geom_msg *m)
+{
+    tf_surface c, s;
+    shape_cube(&c, 10, 20);
+    FILE *fp = fopen(file("odd.obj"), "w");
+    for (size_t v = 0; v < 8; ++v) {
+        if (v == 3 && coordinate != NULL) {
+            fprintf(fp, "v %s %g %g\n", coordinate, c.xyz[3 * v + 1], c.xyz[3 * v + 2]);
+        } else { /* NULL: every vertex 1e9 mm off the origin */
+            fprintf(fp, "v %.17g %.17g %.17g\n", c.xyz[3 * v] + (coordinate == NULL ? 1e9 : 0),
+                    c.xyz[3 * v + 1], c.xyz[3 * v + 2]);
+        }
+    }
+    for (size_t t = 0; t < 12; ++t) {
+        fprintf(fp, "f %zu %zu %zu\n", c.tri[3 * t] + 1, c.tri[3 * t + 1] + 1, c.tri[3 * t + 2] + 1);
+    }
+    fclose(fp);
+    tf_surface_free(&c);
+    memset(m, 0, sizeof *m);
+    if (tf_surface_read(file("odd.obj"), &s, m) == TF_GEOM_OK) {
+        if (tf_surface_clean(&s, m) == TF_GEOM_OK) {
+            fail_msg("a cube with %s was cleaned without a word", coordinate ? coordinate : "1e9 offsets");
+        }
+        tf_surface_free(&s);
+    }
+    return m->error;
+}
+
+/* NaN and 1e300 (float32's infinity) are not finite numbers; coordinates
+ * 1e9 mm off the origin lose their digits in the reader's float32 (its
+ * spacing there is 64 mm), and the merged vertices say why. */
+static void odd_coordinates_say_what_they_are(void **state)
+{
+    (void)state;
+    tf_geom_msg m;
+    assert_contains(cube_with("nan", &m), "a coordinate is not a finite number");
+    assert_contains(cube_with("1e300", &m), "a coordinate is not a finite number");
+    assert_contains(cube_with(NULL, &m), "far from the origin");
+}
+
 static void unreadable_files_say_why(void **state)
 {
     (void)state;
@@ -402,6 +444,7 @@ int main(void)
         cmocka_unit_test(absurd_units_are_refused),
         cmocka_unit_test(transform_scales_centres_rotates_translates),
         cmocka_unit_test(each_format_reads_the_same_closed_cube),
+        cmocka_unit_test(odd_coordinates_say_what_they_are),
         cmocka_unit_test(unreadable_files_say_why),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);
