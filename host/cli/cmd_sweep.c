@@ -87,6 +87,14 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         /* reported */
     } else if (p->n_contacts == 0) {
         tf_error(ctx, "sweep: %s has no contact site to apply forces at", argv[optind]);
+    } else if (s->fit.contact >= 0 &&
+               p->contacts[s->fit.contact].region.kind != TF_CONTACT_REGION_NONE) {
+        /* it swept the point families at the region's centre without a word */
+        tf_error(ctx,
+                 "sweep: %s: contact '%s' is a region: not yet: a sweep of region models (site "
+                 "spacing and rank against error, bytes and cycles); tissuefit fit states the "
+                 "spacing and rank it chose, make region-study tabulates them",
+                 argv[optind], p->contacts[s->fit.contact].name);
     } else if (png != NULL && !tf_plot_available()) {
         tf_error(ctx,
                  "sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");

@@ -52,4 +52,7 @@ says "an unknown core" "--mcu 'cortex-m3@72': cycle estimates exist for cortex-m
 expect 2 "a budget that is not a number" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --budget-us fast
 says "a budget that is not a number" "--budget-us 'fast' is not a positive number"
 [ -z "$(ls -A "$tmp/w")" ] || bad "a refused fit wrote $(ls -A "$tmp/w")"
+expect 2 "sweep of a region scene" -- "$tool" -q sweep coeffs/block48_region.yaml --csv "$tmp/w/r.csv"
+says "sweep of a region scene" "contact 'top' is a region: not yet"
+[ -z "$(ls -A "$tmp/w")" ] || bad "a refused sweep wrote $(ls -A "$tmp/w")"
 finish sweep
