@@ -5,17 +5,13 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "coeffs/palpate/palpate_replay.h"
+#include "base/clock.h"
 #include "fitting/region_sites.h"
 
-static double now_ns(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return 1e9 * (double)ts.tv_sec + (double)ts.tv_nsec;
-}
+/* the tool's monotonic clock (base/clock.h), in ns */
+static double now_ns(void) { return 1e9 * tf_seconds(); }
 
 static int cmp_double(const void *a, const void *b)
 {
