@@ -28,7 +28,6 @@ FW_HEADERS := $(FW_SHIPPED) $(T)/gen/demo.h $(T)/gen/families.h $(T)/gen/haptic.
 # golden vectors here and have their own tests (tests/region_target.mk).
 FW_POINT_HEADERS := $(filter-out $(REGION_HEADERS),$(FW_HEADERS))
 fw_name = $(basename $(notdir $(1)))
-fw_upper = $(shell echo $(1) | tr a-z A-Z)
 
 FW_CFLAGS := $(STRICT) -ffreestanding -O2 -g -ffunction-sections -fdata-sections \
              -Itarget/include -Ilinker -Itarget/examples
@@ -101,9 +100,9 @@ $(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(
 	$$(call say,LINK)
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_SCRATCH_$(2)) -I$(dir $(1)) \
 	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
-	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
-	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
-	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))$(FW_TAG_$(2))"' \
 	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_LD_$(2)) \
 	  -Wl,-Map=$$(@:.elf=.map) -o $$@
@@ -361,8 +360,8 @@ $(FW_CONTRACT)/contract-$(call fw_name,$(1)).elf: tests/firmware/qemu_contract.c
     $(FW_SEMIHOST) $(FW_CONTRACT)/unguarded/libtfit.a | deps-check
 	$$(call say,LINK)
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) -I$(dir $(1)) -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
-	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DTFIT_$(call upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  -DLABEL='"$(call fw_name,$(1))/mps2-an386, contracted"' $$(filter %.c,$$^) \
 	  $(FW_CONTRACT)/unguarded/libtfit.a $(FW_LDFLAGS) -T mps2-an386.ld -o $$@
 endef

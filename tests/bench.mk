@@ -11,9 +11,9 @@ $(B)/bench/bench-$(call fw_name,$(1)): tests/bench/bench_eval.c $(1) $(B)/lib/li
 	$$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O2 -Itarget/include -I$(dir $(1)) \
 	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
-	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
-	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION $$< $(B)/lib/libtfit.a -o $$@
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call upper,$(call fw_name,$(1)))_IMPLEMENTATION $$< $(B)/lib/libtfit.a -o $$@
 endef
 $(foreach h,$(FW_POINT_HEADERS),$(eval $(call bench_binary,$(h))))
 

@@ -30,7 +30,6 @@ endif
 # check, under QEMU in prony-long-qemu (check-prony-ve below)
 PRONY_LONG += block48_ve
 PRONY_LONG_CORES := m4f m7
-upper = $(shell echo $(1) | tr a-z A-Z)
 
 # $(call prony_long,NAME): the host's expectation and the native runner
 define prony_long

@@ -50,9 +50,9 @@ $(STAB_T)/$(2)/$(or $(4),run_invariants)-$(call fw_name,$(1)): $(or $(5),tests/s
 	$$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) $(3) -Itarget/include -Ihost -Itests/stability -I$(dir $(1)) \
 	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_SETS \
-	  -DGOLDEN_Q31_SETS=TFIT_$(call fw_upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
-	  -DTFIT_$(call fw_upper,$(call fw_name,$(1)))_IMPLEMENTATION \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_SETS \
+	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  $(or $(5),tests/stability/run_invariants.c) $(STAB_CHECK_SRC) $(B)/$(2)/libtfit.a -lm -o $$@
 endef
 $(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))

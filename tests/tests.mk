@@ -182,8 +182,8 @@ define golden_runner
 $(T)/golden-$(1)-%: tests/header/run_golden.c $(T)/gen/$(1).h $(B)/bitexact-%/libtfit.a
 	$$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(shell echo $(1) | tr a-z A-Z)_GOLDEN_SETS \
-	  -DTFIT_$(shell echo $(1) | tr a-z A-Z)_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
+	  -DTFIT_$(call upper,$(1))_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
 endef
 $(eval $(call golden_runner,families))
 $(eval $(call golden_runner,demo))
