@@ -13,6 +13,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The row of component a at the scaled position r (u_a = t_a + (w x r)_a). */
@@ -85,6 +86,28 @@ static const char *what_is_free(const tf_problem *s)
                                : "free to slide (a component no fixed region holds)";
 }
 
+/* Every component of every node prescribed, by several regions together. */
+static int all_fixed(const tf_problem *s, sd_issue *is)
+{
+    unsigned char *fixed = malloc(3 * s->cloud.n + 1);
+    if (fixed == NULL) {
+        return sd_fail(is, "fixed", "out of memory");
+    }
+    tf_problem_fixed_dofs(s, fixed);
+    size_t n = 0;
+    for (size_t d = 0; d < 3 * s->cloud.n; ++d) {
+        n += fixed[d] != 0;
+    }
+    free(fixed);
+    if (n == 3 * s->cloud.n) {
+        return sd_fail(is, "fixed",
+                       "the fixed regions together hold every component of every node (%zu "
+                       "nodes): nothing is left to move",
+                       s->cloud.n);
+    }
+    return 0;
+}
+
 int sd_check_held(const tf_problem *s, sd_issue *is)
 {
     char p[64];
@@ -115,6 +138,9 @@ int sd_check_held(const tf_problem *s, sd_issue *is)
                 }
             }
         }
+    }
+    if (all_fixed(s, is) != 0) {
+        return -1;
     }
     if (s->n_fixed == 0 || rank6(m, 1e-12) == 6) {
         return 0;

@@ -148,6 +148,9 @@ static void clamps_fail_at_their_entry(void **state)
             FRAGS("t.yaml:9: fixed.0: this region holds 5 nodes", "free to turn"));
     refused(9, "  - {face: z-, components: [x, y]}\n",
             FRAGS("t.yaml:9: fixed.0:", "free to slide"));
+    refused(9, "  - box: {min: [-1, -1, -1], max: [11, 11, 1]}\n  - face: z+\n",
+            FRAGS("t.yaml:9: fixed: the fixed regions together hold every component of every "
+                  "node (50 nodes): nothing is left to move"));
 }
 
 static void set_values_get_the_same_checks(void **state)
