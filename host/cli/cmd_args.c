@@ -61,6 +61,9 @@ tf_scene *tf_cmd_scene(tf_ctx *ctx, const char *path, const tf_sets *sets)
     for (const char *line = s->warnings; *line != '\0'; line += strcspn(line, "\n") + 1) {
         tf_warn(ctx, "%.*s", (int)strcspn(line, "\n"), line);
     }
+    for (const char *line = s->notes; *line != '\0'; line += strcspn(line, "\n") + 1) {
+        tf_info(ctx, "%.*s", (int)strcspn(line, "\n"), line);
+    }
     return s;
 }
 

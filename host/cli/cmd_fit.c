@@ -85,6 +85,7 @@ typedef struct fit_args {
     tf_sets sets;
     double seconds_setup; /* the solver's assembly and factorisation */
     const char *warnings; /* the scene's ("" or lines), recorded in the header */
+    const char *scene_notes; /* its repairs ("" or lines), recorded with them */
 } fit_args;
 
 /* A positive finite number, or -1 with a message. */
@@ -268,11 +269,16 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
         k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
                       a->sets.item[i]);
     }
-    if (a->warnings != NULL && a->warnings[0] != '\0' && k > 0 && (size_t)k < n) {
-        /* what the tool warned about the scene stays with what it made */
-        size_t len = strlen(a->warnings);
-        len -= len > 0 && a->warnings[len - 1] == '\n';
-        snprintf(buf + k, n - (size_t)k, "\nWarnings (the scene):\n%.*s", (int)len, a->warnings);
+    const char *w = a->warnings != NULL ? a->warnings : "";
+    const char *r = a->scene_notes != NULL ? a->scene_notes : "";
+    if ((w[0] != '\0' || r[0] != '\0') && k > 0 && (size_t)k < n) {
+        /* what the tool warned about the scene, and what it repaired in
+         * it, stays with what it made */
+        char both[sizeof ((tf_scene *)0)->warnings + sizeof ((tf_scene *)0)->notes];
+        snprintf(both, sizeof both, "%s%s", w, r);
+        size_t len = strlen(both);
+        len -= len > 0 && both[len - 1] == '\n';
+        snprintf(buf + k, n - (size_t)k, "\nWarnings (the scene):\n%.*s", (int)len, both);
     }
 }
 
@@ -494,6 +500,7 @@ static int prepare(tf_ctx *ctx, int argc, char **argv, fit_args *a, tf_scene **s
         return TF_EXIT_USAGE;
     }
     a->warnings = (*s)->warnings;
+    a->scene_notes = (*s)->notes;
     if (a->report && !tf_plot_available()) {
         tf_error(ctx,
                  "fit: --report needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");

@@ -8,6 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/progress.h"
+
+/* Seconds between progress lines of the serial runner. */
+#define TF_CASE_PROGRESS_S 5.0
+
 static long start_of(const tf_case_list *l, size_t i)
 {
     return l->from != NULL ? l->from[i] : -1;
@@ -71,6 +76,8 @@ static int serial_run(const tf_case_runner *r, tf_solver *s, const tf_case_list 
     } else {
         tf_case_starts(l, is_start);
     }
+    tf_progress pr; /* a nonlinear law's cases take minutes: a line every 5 s */
+    tf_progress_start(&pr, s->ctx, TF_CASE_PROGRESS_S);
     for (size_t i = 0; rc == 0 && i < l->n; ++i) {
         long from = start_of(l, i);
         double *out = is_start[i] ? (field[i] = malloc(dofs * sizeof *out)) : full;
@@ -80,6 +87,7 @@ static int serial_run(const tf_case_runner *r, tf_solver *s, const tf_case_list 
             rc = tf_case_failed(s->ctx, l, i, -1);
         } else {
             tf_case_keep(l, out, kept + i * l->n_keep);
+            tf_progress_line(&pr, "cases: %zu of %zu solved", i + 1, l->n);
         }
     }
     for (size_t i = 0; field != NULL && i < l->n; ++i) {

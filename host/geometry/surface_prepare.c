@@ -13,6 +13,7 @@
 #include "geometry/surface_edges.h"
 #include "geometry/surface_pieces.h"
 #include "geometry/surface_read.h"
+#include "geometry/surface_vertices.h"
 
 static int out_of_memory(tf_geom_msg *m)
 {
@@ -124,6 +125,20 @@ static int closed_and_wound(const tf_surface *s, tf_geom_msg *m)
     if (r.flipped.count) {
         return edge_fault(s, &r.flipped, "inconsistent winding (two triangles traverse an "
                                          "edge the same way: one of them is flipped)", m);
+    }
+    tf_vertex_fault f;
+    if (tf_surface_vertex_fans(s, &f) != 0) {
+        return out_of_memory(m);
+    }
+    if (f.count) {
+        const double *x = at(s, f.v);
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "non-manifold vertex (its triangles form more than one fan: "
+                            "surfaces touching at a point): %zu vertex%s; the first, vertex "
+                            "%ld at (%.6g, %.6g, %.6g), joins %zu fans; give one closed organ "
+                            "surface per file, or separate the surfaces there",
+                            f.count, f.count == 1 ? "" : "es", s->source[f.v], x[0], x[1], x[2],
+                            f.fans);
     }
     return TF_GEOM_OK;
 }

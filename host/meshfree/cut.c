@@ -13,6 +13,8 @@ int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n)
     size_t total = 0;
     set->panel = NULL;
     set->n = 0;
+    set->where = NULL;
+    set->n_cuts = 0;
     for (size_t c = 0; c < n; ++c) {
         if (cuts[c].n < 2 || cuts[c].n > TF_CUT_MAX_POINTS || !(cuts[c].depth > 0)) {
             return tf_fail(ctx, "cut %zu: needs 2 to %d points and a positive depth", c + 1,
@@ -24,11 +26,15 @@ int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n)
         return 0;
     }
     set->panel = calloc(total, sizeof *set->panel);
-    if (set->panel == NULL) {
+    set->where = calloc(n, sizeof *set->where);
+    if (set->panel == NULL || set->where == NULL) {
+        tf_cut_set_free(set);
         return tf_fail(ctx, "out of memory for %zu cut panels", total);
     }
+    set->n_cuts = n;
     for (size_t c = 0; c < n; ++c) {
         const tf_cut *k = &cuts[c];
+        snprintf(set->where[c], sizeof set->where[c], "%s", k->where);
         for (size_t i = 0; i + 1 < k->n; ++i) {
             tf_cut_panel *p = &set->panel[set->n];
             double dx = k->xy[i + 1][0] - k->xy[i][0], dy = k->xy[i + 1][1] - k->xy[i][1];
@@ -49,6 +55,7 @@ int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n)
             p->n[2] = 0;
             p->zlo = k->top - k->depth;
             p->zhi = k->top;
+            p->cut = c;
             set->n++;
         }
     }
@@ -58,8 +65,11 @@ int tf_cut_set_build(tf_ctx *ctx, tf_cut_set *set, const tf_cut *cuts, size_t n)
 void tf_cut_set_free(tf_cut_set *set)
 {
     free(set->panel);
+    free(set->where);
     set->panel = NULL;
+    set->where = NULL;
     set->n = 0;
+    set->n_cuts = 0;
 }
 
 static double dot3(const double a[3], const double b[3])
@@ -138,6 +148,36 @@ int tf_cut_visible(const tf_cut_set *set, const double a[3], const double b[3])
         }
     }
     return 1;
+}
+
+int tf_cut_blocks(const tf_cut_set *set, size_t cut, const double a[3], const double b[3])
+{
+    for (size_t k = 0; k < set->n; ++k) {
+        if (set->panel[k].cut == cut && crosses(&set->panel[k], a, b)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+size_t tf_cut_hiding(const tf_cut_set *set, const double *xyz, const uint32_t *idx, size_t n,
+                     const double x[3], size_t *hidden)
+{
+    size_t best = SIZE_MAX, most = 0;
+    for (size_t c = 0; c < set->n_cuts; ++c) {
+        size_t count = 0;
+        for (size_t i = 0; i < n; ++i) {
+            count += (size_t)tf_cut_blocks(set, c, xyz + 3 * (size_t)idx[i], x);
+        }
+        if (count > most) {
+            most = count;
+            best = c;
+        }
+    }
+    if (hidden) {
+        *hidden = most;
+    }
+    return best;
 }
 
 double tf_cut_enrich(const tf_cut_set *set, const double xi[3], const double x[3],

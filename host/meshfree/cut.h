@@ -37,6 +37,7 @@
 #define TF_CUT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "base/context.h"
 #include "problem/problem.h" /* tf_cut: a cut as the problem gives it */
@@ -47,11 +48,14 @@ typedef struct tf_cut_panel {
     double t[3], n[3];/* unit tangent (horizontal) and normal */
     double len;       /* along t, mm */
     double zlo, zhi;  /* depth span, mm */
+    size_t cut;       /* the cut it belongs to: index into tf_cut_set.where */
 } tf_cut_panel;
 
 typedef struct tf_cut_set {
     tf_cut_panel *panel;
     size_t n;
+    char (*where)[TF_CUT_WHERE_MAX]; /* per cut: its tf_cut.where, for messages */
+    size_t n_cuts;
 } tf_cut_set;
 
 /* The panels of n cuts.  Returns 0, or -1 with a message (a segment of
@@ -72,6 +76,17 @@ double tf_cut_h(const tf_cut_panel *p, const double x[3], double grad[3]);
 
 /* 1 when the segment a -> b crosses no panel (visibility criterion). */
 int tf_cut_visible(const tf_cut_set *set, const double a[3], const double b[3]);
+
+/* 1 when the segment a -> b crosses a panel of cut number `cut` (the index
+ * of the cut in the array the set was built from). */
+int tf_cut_blocks(const tf_cut_set *set, size_t cut, const double a[3], const double b[3]);
+
+/* The cut (index, as tf_cut_blocks) whose panels hide the most of the n
+ * nodes idx (coordinates xyz) from x, or SIZE_MAX when no cut hides any;
+ * *hidden (may be NULL) receives how many it hides.  Names the cut a
+ * singular local system at x comes from. */
+size_t tf_cut_hiding(const tf_cut_set *set, const double *xyz, const uint32_t *idx, size_t n,
+                     const double x[3], size_t *hidden);
 
 /* Node weight factor e_I(x) at x for the node at xi (product over the
  * panels); grad (may be NULL) receives de_I/dx. */

@@ -27,6 +27,8 @@ int tf_shape_init(tf_shape *sh, const tf_cloud *cloud, const double lo[3], const
     sh->mls_radius = NULL;
     sh->cuts.panel = NULL;
     sh->cuts.n = 0;
+    sh->cuts.where = NULL;
+    sh->cuts.n_cuts = 0;
     sh->cut_node = NULL;
     sh->cut_all = 0;
     sh->cell_radius = NULL;
@@ -476,6 +478,34 @@ static int prepare(const tf_shape *sh, tf_shape_work *w, const double x[3], size
     return 0;
 }
 
+/* A local system singular at x whose support a cut clips: the message
+ * names the cut that hides the most of the support's nodes from x (its
+ * scene entry) rather than the support.  Returns 1 when it wrote w->err, 0
+ * when no cut hides a node of the support. */
+static int cut_singular(const tf_shape *sh, tf_shape_work *w, const double x[3],
+                        const char *what)
+{
+    size_t hidden = 0;
+    size_t c = tf_cut_hiding(&sh->cuts, sh->cloud->xyz, w->idx, w->n, x, &hidden);
+    if (c == SIZE_MAX) {
+        return 0;
+    }
+    const char *where = sh->cuts.where[c];
+    char name[TF_CUT_WHERE_MAX + 16];
+    if (where[0]) {
+        snprintf(name, sizeof name, "%s", where);
+    } else {
+        snprintf(name, sizeof name, "cut %zu", c + 1);
+    }
+    snprintf(w->err, sizeof w->err,
+             "%s: %s at (%g, %g, %g) mm is singular: this cut hides %zu of the %zu nodes "
+             "around the point, and the rest are too few or lie in one plane (a cut closer "
+             "to a face or another cut than a node spacing leaves a sliver without nodes: "
+             "move or shorten the cut)",
+             name, what, x[0], x[1], x[2], hidden, w->n);
+    return 1;
+}
+
 /* EFG: MLS at the np points of the prepared support. */
 static int evaluate_mls(const tf_shape *sh, tf_shape_work *w, const double *x, size_t np,
                         int deriv)
@@ -485,11 +515,13 @@ static int evaluate_mls(const tf_shape *sh, tf_shape_work *w, const double *x, s
     if (tf_mls_eval(&w->mw, sh->cloud->xyz, sh->mls_radius, w->idx, w->n, sh->scale, x, np,
                     w->phi, deriv ? w->dphi : NULL, &rcond, &at) != 0) {
         const double *p = x + 3 * at;
-        snprintf(w->err, sizeof w->err,
-                 "the MLS moment matrix at (%g, %g, %g) mm is singular to machine precision: "
-                 "fewer than four of the %zu nodes around it weigh there, or all of them lie "
-                 "in one plane (raise solver.support)",
-                 p[0], p[1], p[2], w->n);
+        if (!cut_singular(sh, w, p, "the MLS moment matrix")) {
+            snprintf(w->err, sizeof w->err,
+                     "the MLS moment matrix at (%g, %g, %g) mm is singular to machine "
+                     "precision: fewer than four of the %zu nodes around it weigh there, or "
+                     "all of them lie in one plane (raise solver.support)",
+                     p[0], p[1], p[2], w->n);
+        }
         w->cell = SIZE_MAX;
         return -1;
     }
@@ -530,10 +562,13 @@ static int evaluate_cut(const tf_shape *sh, tf_shape_work *w, const double *x, s
         tf_rpim rp = sh->rpim;
         local_scale(sh, xp, w->cell, &sc, &rp.shape); /* (grid cells only: set_cuts) */
         if (tf_rpim_factor(&rp, &w->rw, sh->cloud->xyz, w->sub, m, xp, sc, &rcond) != 0) {
-            snprintf(w->err, sizeof w->err,
-                     "the RPIM system of the %zu nodes visible across the cut from (%g, %g, "
-                     "%g) mm is singular: too few nodes on that side (raise solver.support)",
-                     m, xp[0], xp[1], xp[2]);
+            if (!cut_singular(sh, w, xp, "the RPIM system")) {
+                snprintf(w->err, sizeof w->err,
+                         "the RPIM system of the %zu nodes visible across the cut from (%g, "
+                         "%g, %g) mm is singular: too few nodes on that side (raise "
+                         "solver.support)",
+                         m, xp[0], xp[1], xp[2]);
+            }
             return -1;
         }
         record(sh, &w->st, 1, rcond, xp, m);

@@ -92,7 +92,7 @@ typedef struct tf_shape_work {
     uint32_t *pos;   /* and their places in idx (cap) */
     double *tmp;     /* 4 cap: their phi, dphi at one point */
     tf_shape_stats st;
-    char err[256];
+    char err[512];
 } tf_shape_work;
 
 /* From a node cloud (which must outlive sh), the box the background cells

@@ -194,13 +194,17 @@ typedef struct tf_outputs {
 } tf_outputs;
 
 #define TF_CUT_MAX_POINTS 16
+#define TF_CUT_WHERE_MAX 160
 
 /* An incision (meshfree/cut.h): a polyline of n >= 2 points (x, y) on the
- * top surface z = top, swept down by depth. */
+ * top surface z = top, swept down by depth.  where names its entry for
+ * messages ("scene.yaml:14: cuts.0", or "--set ...: cuts.0"; "" when the
+ * cut did not come from a scene). */
 typedef struct tf_cut {
     size_t n;
     double xy[TF_CUT_MAX_POINTS][2]; /* mm */
     double top, depth;                /* mm */
+    char where[TF_CUT_WHERE_MAX];
 } tf_cut;
 
 /* Essential conditions: nodal values removed (RPIM), the seed's penalty

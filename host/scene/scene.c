@@ -75,6 +75,34 @@ static void report(tf_ctx *ctx, const cyaml_schema_value_t *root, const char *te
     }
 }
 
+/* Each cut's entry for the messages of a solve that fails at it
+ * (tf_cut.where): the file and line of cuts.K, or the --set that gave it. */
+static void label_cuts(const cyaml_schema_value_t *root, const char *text, size_t len,
+                       const char *name, const char *const *sets,
+                       const char (*set_paths)[128], size_t n_sets, tf_problem *p)
+{
+    char path[32], buf[128];
+    for (size_t k = 0; k < p->n_cuts; ++k) {
+        tf_cut *c = &p->cuts[k];
+        snprintf(path, sizeof path, "cuts.%zu", k);
+        size_t s = n_sets;
+        while (s > 0 && !covers(set_paths[s - 1], path)) {
+            s--;
+        }
+        int line = s > 0 ? 0 : sd_locate(root, text, len, path);
+        char label[1024];
+        if (s > 0) {
+            snprintf(label, sizeof label, "--set %s: %s", shown_set(sets[s - 1], buf, sizeof buf),
+                     path);
+        } else if (line > 0) {
+            snprintf(label, sizeof label, "%s:%d: %s", name, line, path);
+        } else {
+            snprintf(label, sizeof label, "%s: %s", name, path);
+        }
+        snprintf(c->where, sizeof c->where, "%.*s", (int)sizeof c->where - 1, label);
+    }
+}
+
 /* The --set paths override the value at path (or a mapping above it). */
 static int overridden(const char (*set_paths)[128], size_t n_sets, const char *path)
 {
@@ -137,6 +165,25 @@ static void warn(tf_scene *s, const char *fmt, ...)
     va_end(ap);
     if (n >= 0 && used + (size_t)n + 1 < sizeof s->warnings) {
         strcat(s->warnings, "\n");
+    }
+}
+
+/* The repairs made to an organ's mesh (tf_mesh_geometry.notes) as the
+ * scene's notes: "scene: geometry.surface: mesh: what was done". */
+static void mesh_notes(const char *name, tf_scene *s)
+{
+    const tf_mesh_geometry *g = tf_problem_mesh(&s->problem);
+    if (g == NULL) {
+        return;
+    }
+    for (const char *line = g->notes; *line != '\0'; line += strcspn(line, "\n")) {
+        line += *line == '\n';
+        int len = (int)strcspn(line, "\n");
+        size_t used = strlen(s->notes);
+        if (len > 0) {
+            snprintf(s->notes + used, sizeof s->notes - used, "%s: geometry.surface: %s: %.*s\n",
+                     name, g->path, len, line);
+        }
     }
 }
 
@@ -242,8 +289,10 @@ tf_scene *tf_scene_load_text(tf_ctx *ctx, const char *text, size_t len, const ch
             report(ctx, root, text, len, name, sets, (const char(*)[128])set_paths, n_sets, &is);
             ok = 0;
         } else {
+            label_cuts(root, text, len, name, sets, (const char(*)[128])set_paths, n_sets, p);
             node_number_warnings(doc, (const char(*)[128])set_paths, n_sets, name, s);
             plausibility_warnings(doc, name, s);
+            mesh_notes(name, s);
         }
     } else if (!set_paths || !s) {
         tf_fail(ctx, "out of memory");

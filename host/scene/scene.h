@@ -24,6 +24,11 @@ typedef struct tf_scene {
     /* Warnings for the user, one per line ("" when none): a node number
      * from the file when --set changed the grid that numbered it. */
     char warnings[2048];
+    /* Repairs the tool made to the scene's inputs, one per line ("" when
+     * none): an organ mesh's triangles reversed because they wound inward,
+     * vertices no triangle used dropped, specks of a mesh dropped.  Shown as
+     * progress (tissuefit -q drops them) and recorded with the warnings. */
+    char notes[1024];
 } tf_scene;
 
 /* A scene file is a regular file of at most this many bytes. */

@@ -13,7 +13,9 @@
 #include "fitting/families/family.h"
 #include "problem/regions.h"
 #include "scene/scene_contact_region.h"
+#include "scene/scene_cut_check.h"
 #include "scene/scene_grading.h"
+#include "scene/scene_held.h"
 #include "scene/scene_history.h"
 #include "scene/scene_material.h"
 #include "scene/scene_organ.h"
@@ -223,7 +225,10 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
         return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "out of memory");
     }
     if (f->n_nodes == 0) {
-        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node");
+        char where[320];
+        sd_body_extent(s, where, sizeof where);
+        return sd_fail(is, at(p, sizeof p, "fixed", k, NULL), "this region holds no node; %s",
+                       where);
     }
     return 0;
 }
@@ -914,9 +919,10 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     }
     if (geometry(doc, s, is) != 0 || sd_build_material(&doc->material, &s->material, is) != 0 ||
         reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
+        sd_check_held(s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||
-        solver(doc->solver, s, is) != 0 ||
+        solver(doc->solver, s, is) != 0 || sd_check_cuts(s, is) != 0 ||
         sd_history_build(doc->history, s, is) != 0 || fit(doc->fit, s, plan, is) != 0) {
         return -1;
     }

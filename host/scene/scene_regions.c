@@ -269,7 +269,10 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
         return -1;
     }
     if (o->n_nodes == 0) {
-        return outputs_fail(msg, msglen, "the selection holds no node: nothing to output");
+        char where[320];
+        sd_body_extent(s, where, sizeof where);
+        snprintf(msg, msglen, "the selection holds no node: nothing to output; %s", where);
+        return -1;
     }
     /* Points (select: points, contacts by position) are the field there,
      * wherever they lie; nodes of an organ must be surface vertices. */
@@ -283,4 +286,22 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
         }
     }
     return 0;
+}
+
+void sd_body_extent(const tf_problem *s, char *buf, size_t len)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < s->cloud.n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = fmin(lo[a], s->cloud.xyz[3 * i + (size_t)a]);
+            hi[a] = fmax(hi[a], s->cloud.xyz[3 * i + (size_t)a]);
+        }
+    }
+    snprintf(buf, len,
+             "the body's nodes span x [%g, %g], y [%g, %g], z [%g, %g] mm%s", lo[0], hi[0],
+             lo[1], hi[1], lo[2], hi[2],
+             tf_problem_mesh(s) != NULL
+                 ? " (is the mesh in other units than mm? geometry.surface.scale gives mm "
+                   "per file unit)"
+                 : "");
 }

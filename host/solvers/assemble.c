@@ -99,7 +99,7 @@ static int build_cell_sets(tf_ctx *ctx, const tf_shape *sh, const tf_assembly_ex
     size_t ncell = tf_cells_count(&sh->cells), nn = sh->cloud->n, failed = SIZE_MAX;
     uint32_t **lists = calloc(ncell, sizeof *lists);
     size_t *len = calloc(ncell, sizeof *len);
-    char msg[256] = "out of memory";
+    char msg[512] = "out of memory";
     if (!lists || !len) {
         free(lists);
         free(len);
@@ -179,7 +179,7 @@ static int assemble_values(tf_ctx *ctx, value_pass *v)
         maxm = m > maxm ? m : maxm;
     }
     double *buf = malloc((size_t)BATCH * 9 * maxm * maxm * sizeof *buf);
-    char msg[256] = "out of memory";
+    char msg[512] = "out of memory";
     int nt = v->threads;
     tf_cell_work *cw = calloc((size_t)nt, sizeof *cw);
     int ok = buf != NULL && cw != NULL;

@@ -112,4 +112,54 @@ expect 1 "fit --report, gnuplot's image cut short" -- env PATH="$tmp/fakegp:$PAT
 says "an image cut short" "gnuplot wrote an incomplete image"
 ls "$tmp/rep" | grep -q '\.png' && bad "a cut-short image was kept: $(ls "$tmp/rep")"
 
+# --- cuts: two cuts 0.3 mm apart leave points between them seeing too few
+# nodes; the solve fails naming the cut's entry (file:line), not the support
+sed -n '/^name/,/^  - {patch/p' tests/cut/slit.yaml | sed 's/grid: \[16, 8, 8\]/grid: [8, 4, 4]/' >"$tmp/two.yaml"
+printf 'cuts:\n  - {path: [[10, 0], [10, 10]], depth: 5}\n  - {path: [[10.3, 0], [10.3, 10]], depth: 5}\n' >>"$tmp/two.yaml"
+printf 'outputs: {select: all}\nsolver: {cells: [8, 4, 4]}\n' >>"$tmp/two.yaml"
+cut_line=$(grep -n '10.3, 0' "$tmp/two.yaml" | cut -d: -f1)
+expect 1 "two cuts 0.3 mm apart, rpim-galerkin" -- "$tool" -q solve "$tmp/two.yaml" -o "$tmp/c.csv"
+says "two cuts, rpim" "two.yaml:$cut_line: cuts.1: the RPIM system at .* is singular: this cut hides"
+expect 1 "two cuts 0.3 mm apart, efg-galerkin" -- "$tool" -q solve "$tmp/two.yaml" \
+    --set solver.method=efg-galerkin -o "$tmp/c.csv"
+says "two cuts, efg" "two.yaml:$cut_line: cuts.1: the MLS moment matrix at .* is singular: this cut hides"
+
+# --- organs from generated cubes (OBJ; the faces wind outward)
+cube() { # cube X0 SIZE: the 8 vertices of [X0, X0 + SIZE]^3
+    awk -v a="$1" -v s="$2" 'BEGIN { for (v = 0; v < 8; ++v)
+        printf "v %g %g %g\n", a + s * (v == 1 || v == 2 || v == 5 || v == 6),
+               a + s * (v == 2 || v == 3 || v == 6 || v == 7), a + s * (v >= 4) }'
+}
+faces() { # faces OFFSET [REVERSE]: the cube's 12 triangles, vertex numbers + OFFSET
+    printf '1 3 2\n1 4 3\n5 6 7\n5 7 8\n1 2 6\n1 6 5\n2 3 7\n2 7 6\n3 4 8\n3 8 7\n4 1 5\n4 5 8\n' |
+        awk -v o="$1" -v r="${2:-0}" '{ if (r) print "f", $1 + o, $3 + o, $2 + o; else print "f", $1 + o, $2 + o, $3 + o }'
+}
+organ() { # organ MESH: a scene of that mesh beside it, clamped at its bottom
+    printf 'name: org\ngeometry:\n  surface: {file: %s}\n  spacing: 5\nmaterial: {E: 0.01, nu: 0.3}\n' "$1"
+    printf 'fixed:\n  - side: {point: [0, 0, 2], normal: [0, 0, -1]}\n'
+    printf 'contact:\n  - name: top\n    site: {point: [10, 10, 20], radius: 15}\noutputs: {select: surface}\n'
+}
+# two cubes joined at one vertex: every edge has two triangles, one vertex two fans
+{ cube 0 20; cube 20 20 | tail -n 7; faces 0; faces 8 | awk '{ for (i = 2; i <= 4; ++i) $i = $i == 9 ? 7 : $i - 1; print }'; } >"$tmp/joined.obj"
+organ joined.obj >"$tmp/joined.yaml"
+expect 2 "two cubes joined at a vertex" -- "$tool" -q solve "$tmp/joined.yaml" --force 0,0,-0.01 -o "$tmp/c.csv"
+says "joined at a vertex" "joined.obj: non-manifold vertex .*: 1 vertex; the first, vertex [0-9]* at (20, 20, 20), joins 2 fans"
+# a mesh in cm (a 15 cm cube read as 15 mm) clamped where mm put its bottom
+{ cube 0 15; faces 0; } >"$tmp/cm.obj"
+organ cm.obj | sed 's/side: .*/sphere: {centre: [75, 75, 0], radius: 10}/' >"$tmp/cm.yaml"
+expect 2 "a mesh in cm" -- "$tool" -q solve "$tmp/cm.yaml" --force 0,0,-0.01 -o "$tmp/c.csv"
+says "a mesh in cm" "cm.yaml:7: fixed.0: this region holds no node; the body's nodes span x \[0, 15\]"
+says "a mesh in cm" "other units than mm"
+# inward winding: reversed with a note on stderr (none under -q), recorded in the
+# header, and the reversed mesh solves and fits
+{ cube 0 20; faces 0 1; } >"$tmp/inward.obj"
+organ inward.obj >"$tmp/inward.yaml"
+expect 0 "an inward mesh" -- "$tool" solve "$tmp/inward.yaml" --force 0,0,-0.01 -o "$tmp/c.csv"
+says "an inward mesh" "inward.yaml: geometry.surface: .*inward.obj: the triangles wound inward (enclosed volume -8000): reversed them"
+expect 0 "an inward mesh, -q" -- "$tool" -q solve "$tmp/inward.yaml" --force 0,0,-0.01 -o "$tmp/c.csv"
+grep -q "wound inward" "$tmp/err" && bad "-q printed the winding note: $(cat "$tmp/err")"
+expect 0 "fit on an inward mesh" -- "$tool" -q fit "$tmp/inward.yaml" -o "$tmp/inw.h"
+grep -A1 "Warnings (the scene):" "$tmp/inw.h" | grep -q "wound inward (enclosed volume -8000): reversed them" ||
+    bad "the header does not record the winding note: $(grep -A2 Warnings "$tmp/inw.h")"
+
 finish hostile

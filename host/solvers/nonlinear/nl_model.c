@@ -38,7 +38,7 @@ static int build_gradients(nl_solver *s, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory for the gradients at %zu Gauss points (%.0f MiB)",
                        nc * np, s->gptr[nc] * 8.0 / 1048576);
     }
-    char msg[256] = "out of memory";
+    char msg[512] = "out of memory";
     double t0 = omp_get_wtime();
 #pragma omp parallel num_threads(tf_ctx_threads(ctx))
     {

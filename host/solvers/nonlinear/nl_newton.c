@@ -21,8 +21,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/progress.h"
 #include "solvers/nonlinear/nl_internal.h"
 
+/* Seconds between progress lines of one force's load steps. */
+#define NL_PROGRESS_S 5.0
 #define LS_RATIO 0.5
 #define LS_TRIALS 6
 /* Rounding floor: a tiny load (the small-load limit) leaves a residual of
@@ -389,8 +392,10 @@ int nl_advance(nl_solver *s, const nl_target *to, double dt)
     }
     double th = 0, step = 1.0 / (o->steps > 0 ? o->steps : 1);
     double smallest = ldexp(step, -(int)o->max_cuts);
-    size_t k = 0;
+    size_t k = 0, halved = 0;
     int rc = 0;
+    tf_progress pr; /* one force's load steps can take minutes (a soft law near its limit) */
+    tf_progress_start(&pr, s->base.ctx, NL_PROGRESS_S);
     while (th < 1 && rc == 0) {
         double dth = fmin(step, 1 - th);
         if (1 - (th + dth) < 1e-12) {
@@ -417,11 +422,16 @@ int nl_advance(nl_solver *s, const nl_target *to, double dt)
                 s->chol_ok = 0;
             }
             s->st.cuts++;
+            halved++;
             step = 0.5 * dth;
             rc = 0;
         } else if (rc == 1) {
             memcpy(s->d, saved, n3 * sizeof *saved);
             rc = give_up(s, &f, k, th + dth, &t);
+        }
+        if (rc == 0) {
+            tf_progress_line(&pr, "newton: %.4g of the load reached after %zu load steps tried (%zu halved)",
+                             th, k, halved);
         }
     }
     free(saved);

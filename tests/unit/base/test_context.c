@@ -17,6 +17,7 @@
 
 #include "base/context.h"
 #include "base/log.h"
+#include "base/progress.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -66,6 +67,32 @@ static void messages_stop_at_the_level(void **state)
     tf_error(&ctx, "broken");
     assert_int_equal(c.count[TF_LOG_WARN], 0);
     assert_int_equal(c.count[TF_LOG_ERROR], 1);
+}
+
+/* Progress lines (long nonlinear fits, base/progress.h): info level, so
+ * -q drops them; at most one per interval, with the seconds so far. */
+static void progress_lines_come_at_most_once_per_interval(void **state)
+{
+    (void)state;
+    tf_ctx ctx;
+    captured c;
+    tf_progress p;
+    capturing(&ctx, &c, TF_LOG_INFO);
+    tf_progress_start(&p, &ctx, 0); /* every call is due */
+    tf_progress_line(&p, "cases: %d of %d solved", 1, 3);
+    tf_progress_line(&p, "cases: %d of %d solved", 2, 3);
+    assert_int_equal(c.count[TF_LOG_INFO], 2);
+    assert_non_null(strstr(c.text, "2:cases: 2 of 3 solved (0 s)\n"));
+    capturing(&ctx, &c, TF_LOG_INFO);
+    tf_progress_start(&p, &ctx, 3600); /* none due within the test */
+    for (int k = 0; k < 1000; ++k) {
+        tf_progress_line(&p, "cases: %d solved", k);
+    }
+    assert_int_equal(c.count[TF_LOG_INFO], 0);
+    capturing(&ctx, &c, TF_LOG_WARN); /* tissuefit -q */
+    tf_progress_start(&p, &ctx, 0);
+    tf_progress_line(&p, "cases: 1 solved");
+    assert_int_equal(c.count[TF_LOG_INFO], 0);
 }
 
 static void a_failure_leaves_its_message(void **state)
@@ -140,6 +167,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(messages_stop_at_the_level),
+        cmocka_unit_test(progress_lines_come_at_most_once_per_interval),
         cmocka_unit_test(a_failure_leaves_its_message),
         cmocka_unit_test(a_caller_wraps_its_callees_message),
         cmocka_unit_test(a_solver_logs_through_its_own_context),

@@ -21,6 +21,7 @@
 #include "geometry/self_intersect.h"
 #include "geometry/surface_prepare.h"
 #include "geometry/surface_read.h"
+#include "geometry/surface_vertices.h"
 #include "geometry/transform.h"
 
 static char dir[64];
@@ -202,6 +203,37 @@ static void a_degenerate_or_nonmanifold_surface_is_refused(void **state)
     assert_contains(m.error, "open surface"); /* the fin's free edges come first */
     tf_surface_free(&s);
     tf_surface_free(&c);
+}
+
+/* Two cubes joined at one corner: every edge has two triangles traversing
+ * it in opposite directions, one piece, positive volume, but the shared
+ * vertex carries two fans of triangles (two discs pinched together). */
+static void two_cubes_joined_at_a_vertex_are_refused(void **state)
+{
+    (void)state;
+    tf_surface a, b, s;
+    tf_geom_msg m;
+    shape_cube(&a, 10, 20); /* vertex 6 at (30, 30, 30) */
+    shape_cube(&b, 30, 20); /* vertex 0 at (30, 30, 30) */
+    assert_int_equal(tf_surface_alloc(&s, 15, 24), 0);
+    memcpy(s.xyz, a.xyz, 24 * sizeof *s.xyz);
+    memcpy(s.xyz + 24, b.xyz + 3, 21 * sizeof *s.xyz);
+    memcpy(s.tri, a.tri, 36 * sizeof *s.tri);
+    for (size_t k = 0; k < 36; ++k) {
+        s.tri[36 + k] = b.tri[k] == 0 ? 6 : b.tri[k] + 7;
+    }
+    assert_int_equal(prepare(&s, &m), TF_GEOM_BAD_INPUT);
+    assert_contains(m.error, "non-manifold vertex");
+    assert_contains(m.error, "1 vertex; the first, vertex 6 at (30, 30, 30), joins 2 fans");
+    tf_vertex_fault f;
+    assert_int_equal(tf_surface_vertex_fans(&s, &f), 0);
+    assert_int_equal(f.count, 1);
+    tf_surface_free(&s);
+    /* each cube alone: every vertex one fan */
+    assert_int_equal(tf_surface_vertex_fans(&a, &f), 0);
+    assert_int_equal(f.count, 0);
+    tf_surface_free(&a);
+    tf_surface_free(&b);
 }
 
 /* A cube whose top corner (vertex 6) is pushed down through the bottom:
@@ -439,6 +471,7 @@ int main(void)
         cmocka_unit_test(specks_are_dropped_and_a_second_organ_refused),
         cmocka_unit_test(unused_vertices_are_dropped_keeping_file_indices),
         cmocka_unit_test(a_degenerate_or_nonmanifold_surface_is_refused),
+        cmocka_unit_test(two_cubes_joined_at_a_vertex_are_refused),
         cmocka_unit_test(a_self_intersecting_surface_is_refused),
         cmocka_unit_test(segment_triangle_crossing),
         cmocka_unit_test(absurd_units_are_refused),
