@@ -6,8 +6,8 @@
  * c scaled by their extent L, is stopped by the prescribed components when
  * the rows they give (component a of node x: its coefficients in
  * (t, w)) have rank 6: the 6 x 6 sum of their outer products is then
- * positive definite, which a Cholesky factorisation with diagonal pivoting
- * tells with a relative tolerance.
+ * positive definite, which LAPACK's Cholesky factorisation with complete
+ * pivoting (dpstrf) tells with a relative tolerance.
  */
 #include "scene/scene_held.h"
 
@@ -15,6 +15,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <lapacke.h>
 
 /* The row of component a at the scaled position r (u_a = t_a + (w x r)_a). */
 static void row(int a, const double r[3], double q[6])
@@ -26,36 +28,23 @@ static void row(int a, const double r[3], double q[6])
     q[3 + c] = -r[b];
 }
 
-/* Rank of the symmetric positive semi-definite m (6 x 6, destroyed) with
- * pivots under tol times the largest diagonal taken as zero. */
+/* Rank of the symmetric positive semi-definite m (6 x 6, destroyed):
+ * LAPACK's Cholesky with complete pivoting (dpstrf), pivots under tol
+ * times the largest diagonal taken as zero. */
 static int rank6(double m[6][6], double tol)
 {
-    int perm[6] = {0, 1, 2, 3, 4, 5}, rank = 0;
     double top = 0;
     for (int i = 0; i < 6; ++i) {
         top = fmax(top, m[i][i]);
     }
-    for (int k = 0; k < 6; ++k) {
-        int p = k;
-        for (int i = k + 1; i < 6; ++i) {
-            p = m[perm[i]][perm[i]] > m[perm[p]][perm[p]] ? i : p;
-        }
-        int t = perm[k];
-        perm[k] = perm[p];
-        perm[p] = t;
-        const int pk = perm[k];
-        double d = m[pk][pk];
-        if (!(d > tol * top)) {
-            break;
-        }
-        rank++;
-        for (int i = k + 1; i < 6; ++i) { /* Schur complement */
-            for (int j = k + 1; j < 6; ++j) {
-                m[perm[i]][perm[j]] -= m[perm[i]][pk] * m[pk][perm[j]] / d;
-            }
-        }
+    if (!(top > 0)) {
+        return 0;
     }
-    return rank;
+    lapack_int piv[6], rank = 0;
+    if (LAPACKE_dpstrf(LAPACK_ROW_MAJOR, 'U', 6, &m[0][0], 6, piv, &rank, tol * top) < 0) {
+        return 0;
+    }
+    return (int)rank;
 }
 
 /* The centre and extent of the nodes. */
