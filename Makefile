@@ -85,6 +85,19 @@ deps-bench: ; $(call ensure_debs,$(DEBS_BENCH))
 # (8 s of every make invocation, before any rule ran).
 upper = $(subst z,Z,$(subst y,Y,$(subst x,X,$(subst w,W,$(subst v,V,$(subst u,U,$(subst t,T,$(subst s,S,$(subst r,R,$(subst q,Q,$(subst p,P,$(subst o,O,$(subst n,N,$(subst m,M,$(subst l,L,$(subst k,K,$(subst j,J,$(subst i,I,$(subst h,H,$(subst g,G,$(subst f,F,$(subst e,E,$(subst d,D,$(subst c,C,$(subst b,B,$(subst a,A,$(1)))))))))))))))))))))))))))
 
+# Two lengths of the same checks.  `make check` runs every check in its
+# short version, under 10 minutes on a 2-core machine: each check still
+# runs its kind of test on every area it covers, with fewer repetitions or
+# configurations.  `make check-full` runs the same checks at full length
+# (CHECK_FULL=1); what each check adds there is listed in
+# docs/architecture.md ("Adding a check").  $(call check_len,FULL,SHORT)
+# picks the value for the current length.
+CHECK_FULL ?=
+comma := ,
+empty :=
+space := $(empty) $(empty)
+check_len = $(if $(filter-out 0,$(CHECK_FULL)),$(1),$(2))
+
 # Fragments: each area adds its rules, and appends to CHECKS (run by
 # `make check`), BENCHES (run by `make bench`) and the DEBS_* lists.
 CHECKS :=
@@ -95,7 +108,7 @@ include tests/tests.mk
 include $(filter-out target/target.mk host/host.mk tests/tests.mk,$(sort $(wildcard */*.mk)))
 
 # ---------------------------------------------------------------------------
-.PHONY: all demo check check-quick bench install clean help
+.PHONY: all demo check check-full check-quick bench install clean help
 
 all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 
@@ -109,17 +122,23 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 CHECK_JOBS = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(NPROC))
 
 # $(call run_checks,LIST,NAME): runs each check of LIST in turn, its output
-# in $(B)/check/CHECK.log, guarded, and prints the slowest and the total.
+# in $(B)/check/CHECK.log, guarded; writes "WALL CHECK CPU" seconds per
+# check to $(B)/check/NAME.seconds (CPU: user + system of everything the
+# check ran, from the shell's `times` builtin) and prints the slowest and the total.
 define run_checks
 	@mkdir -p $(B)/check
-	@set -e; : >$(B)/check/$(2).seconds; for c in $(1); do \
-	  s=$$(date +%s); \
+	@set -e; : >$(B)/check/$(2).seconds; \
+	tf=$(B)/check/$(2).times; \
+	cpu() { awk 'NR == 2 { split($$1, u, "m"); split($$2, k, "m"); printf "%d", u[1] * 60 + u[2] + k[1] * 60 + k[2] }' $$tf; }; \
+	for c in $(1); do \
+	  s=$$(date +%s); times >$$tf; c0=$$(cpu); \
 	  $(MAKE) --no-print-directory $(CHECK_JOBS) $$c 2>&1 | tee $(B)/check/$$c.log; \
 	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
-	  echo "$$(( $$(date +%s) - s )) $$c" >>$(B)/check/$(2).seconds; \
+	  times >$$tf; echo "$$(( $$(date +%s) - s )) $$c $$(( $$(cpu) - c0 ))" >>$(B)/check/$(2).seconds; \
 	done
-	@sort -rn $(B)/check/$(2).seconds | awk '{ t += $$1; if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
-	  END { print "slowest checks: " top "; all " t " s" }'
+	@sort -rn $(B)/check/$(2).seconds | awk '{ t += $$1; c += $$3; \
+	  if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
+	  END { print "slowest checks: " top "; all " t " s (" c " s of CPU: user + system)" }'
 endef
 
 check: | deps-check
@@ -128,7 +147,10 @@ check: | deps-check
 	@if tests/check_guard.sh guard-selftest $(B)/check/guard-selftest.log >/dev/null; then \
 	  echo "tests/check_guard.sh accepted a log without a result line"; exit 1; fi
 	$(call run_checks,$(CHECKS),check)
-	@echo "== make check: all passed ($(words $(CHECKS)) checks, each with its result line) =="
+	@echo "== make check$(call check_len,-full,): all passed ($(words $(CHECKS)) checks, each with its result line$(call check_len,, in its short version)) =="
+
+check-full: | deps-check
+	@$(MAKE) --no-print-directory check CHECK_FULL=1
 
 # The edit-test loop: the unit tests, the layer rule, the freestanding
 # library and one bit-exact configuration (`make check` runs them all).
@@ -179,7 +201,8 @@ clean:
 help:
 	@echo "make            build/bin/tissuefit and build/lib/libtfit.a"
 	@echo "make demo       the main job, end to end"
-	@echo "make check      every test (installs missing Debian packages when root)"
+	@echo "make check      every test, each in its short version (installs missing Debian packages when root)"
+	@echo "make check-full the same tests at full length (long runs, every thread count and configuration)"
 	@echo "make check-quick  unit tests, layers, freestanding, one bit-exact configuration"
 	@echo "make bench      speed and size measurements (medians, ratios, instruction counts)"
 	@echo "make install    PREFIX=/usr/local: tool, library, tfit.h, pkg-config file, CMake package,"
