@@ -34,28 +34,28 @@ $(B)/$(1)/libtissuefit-host.a: $(HOST_SRC:host/%.c=$(B)/$(1)/host/%.o)
 	$(Q)rm -f $$@ && ar rcs $$@ $$^
 endef
 
-$(eval $(call host_lib,native,-O2 -g))
+# Position-independent, so that the same objects make the tool and the
+# shared library the Python module loads (python/python.mk): one build of
+# host/ instead of two.  -fno-semantic-interposition lets GCC inline across
+# functions as without -fPIC; the tool is a PIE either way, and no result
+# depends on it (check-coeffs regenerates the shipped headers to the byte,
+# and the Python tests compare solves with the tool's to the last bit).
+$(eval $(call host_lib,native,-O2 -g -fPIC -fno-semantic-interposition))
 # -O2 as the tool ships (native): ASan and UBSan instrument either level,
 # and the unit tests under them (check-sanitize) run about a third faster
 # than at -O1 (docs/architecture.md, "make check's time").
 $(eval $(call host_lib,asan,-O2 -g $(SANITIZE)))
 
-# Position-independent objects for the shared library the Python module
-# loads (python/python.mk); -fno-semantic-interposition lets GCC inline
-# across functions as in the native build (no result depends on it: the
-# Python tests compare solves with the tool's to the last bit).
-$(eval $(call host_lib,pic,-O2 -g -fPIC -fno-semantic-interposition))
-
 # The flat API of host/api/ as a shared library: the API's objects, the
 # rest of the host library and a position-independent libtfit (the tool's
 # sweep times the target evaluator) inside; it exports tf_api_* only.
-HOST_API_OBJ := $(patsubst host/%.c,$(B)/pic/host/%.o,$(wildcard host/api/*.c))
-$(B)/native/libtissuefit.so: $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/native-pic/libtfit.a \
+HOST_API_OBJ := $(patsubst host/%.c,$(B)/native/host/%.o,$(wildcard host/api/*.c))
+$(B)/native/libtissuefit.so: $(HOST_API_OBJ) $(B)/native/libtissuefit-host.a $(B)/native-pic/libtfit.a \
                              host/api/libtissuefit.map
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(CC) -shared -Wl,--no-undefined -Wl,--version-script=host/api/libtissuefit.map \
-	  $(HOST_API_OBJ) $(B)/pic/libtissuefit-host.a $(B)/native-pic/libtfit.a $(HOST_LIBS) -o $@
+	  $(HOST_API_OBJ) $(B)/native/libtissuefit-host.a $(B)/native-pic/libtfit.a $(HOST_LIBS) -o $@
 
 # What `tissuefit eval` compiles a generated header with (host/cli/eval_shim.h):
 # the evaluator the Python module compiles too, tfit.h and the position-

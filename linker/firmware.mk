@@ -108,7 +108,13 @@ $(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(
 	  -Wl,-Map=$$(@:.elf=.map) -o $$@
 endef
 $(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(eval $(call fw_golden,$(h),$(c)))))
-FW_GOLDEN_IMAGES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
+# The headers each build runs: every header on the two FPU cores the
+# headers state cycles for (M4F, M7); on the other builds (the Q31 cores,
+# the C path, -O0/-Os/-O3) every header under make check-full, and in make
+# check the test header that holds a model of every family (families.h),
+# so that each build's every form still runs in both lengths.
+fw_headers_on = $(if $(filter $(FW_CORES),$(1)),$(FW_HEADERS),$(call check_len,$(FW_HEADERS),$(T)/gen/families.h))
+FW_GOLDEN_IMAGES = $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(foreach h,$(call fw_headers_on,$(c)),$(FW)/$(c)/golden-$(call fw_name,$(h)).elf))
 
 # The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
 $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
@@ -121,10 +127,10 @@ $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: 
 .PHONY: check-qemu
 CHECKS += check-qemu
 check-qemu: $(FW_GOLDEN_IMAGES) $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf
-	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit); the C path and -O0/-Os/-O3 builds on M4F/M7 =="
+	@echo "== golden vectors under QEMU: M4F (mps2-an386), M7 (mps2-an500); Q31 also on M3 (mps2-an385), M0 (microbit); the C path and -O0/-Os/-O3 builds on M4F/M7$(call check_len,, (these four and M3/M0: families.h; make check-full: every header)) =="
 	@# the runs $(NPROC) at a time (one core each), their outputs in this order
 	@printf 'tests/firmware/qemu_run.sh %s %s\n' $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),\
-	  $(foreach h,$(FW_HEADERS),$(FW_QEMU_$(c)) $(FW)/$(c)/golden-$(call fw_name,$(h)).elf)) | \
+	  $(foreach h,$(call fw_headers_on,$(c)),$(FW_QEMU_$(c)) $(FW)/$(c)/golden-$(call fw_name,$(h)).elf)) | \
 	  tests/run_lines.sh $(NPROC) $(FW)/qemu-golden
 	@tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/fpscr_reject.elf 3 "startup: FPSCR is not" \
 	  >/dev/null && echo "startup rejects FPSCR.FZ = 1: ok"
@@ -213,7 +219,7 @@ $(FW)/$(2)/trace-$(call fw_name,$(1)).txt: $(FW)/$(2)/golden-$(call fw_name,$(1)
 	$(Q)rm -f $$(@:.txt=.log) && mv $$@.tmp $$@
 endef
 $(foreach h,$(FW_HEADERS),$(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(eval $(call fw_trace,$(h),$(c)))))
-FW_TRACES := $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(FW_HEADERS),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
+FW_TRACES = $(foreach c,$(FW_CORES) $(FW_Q31_CORES),$(foreach h,$(call fw_headers_on,$(c)),$(FW)/$(c)/trace-$(call fw_name,$(h)).txt))
 
 .PHONY: check-cycles
 CHECKS += check-cycles
@@ -227,9 +233,9 @@ check-cycles: $(T)/insn_mix $(T)/check_cycle_model $(FW_TRACES) \
 	    echo "$$c: compiled loops differ from the cycle model (< model, > objdump):"; \
 	    cat $(FW)/$$c/loops.diff; exit 1; fi; \
 	  echo "$$c: $$(wc -l <$(FW)/$$c/loops.txt) loop bodies match the cycle model"; done
-	@set -e; for c in $(FW_CORES) $(FW_Q31_CORES); do for h in $(FW_HEADERS); do \
+	@set -e; $(foreach c,$(FW_CORES) $(FW_Q31_CORES),for h in $(call fw_headers_on,$(c)); do \
 	  n=$$(basename $$h .h); \
-	  $(T)/check_cycle_model $$c $$h $(FW)/$$c/trace-$$n.txt | sed "s|^|$$c |"; done; done
+	  $(T)/check_cycle_model $(c) $$h $(FW)/$(c)/trace-$$n.txt | sed "s|^|$(c) |"; done;)
 	@echo "ok: the cycle model's loop mixes and executed mixes match the compiled evaluator"
 
 # --- haptic-loop example: STM32 images, QEMU and native runs ------------------
