@@ -271,8 +271,19 @@ $(FW)/$(2)/haptic-qemu-$(call fw_name,$(1)).elf: $(FW_EXAMPLE) $(FW_SCRIPT) targ
 	  -I$(FW)/cfg/$(call fw_name,$(1)) -I$(dir $(1)) \
 	  $$(filter %.c,$$^) $(FW_LIB_$(2)) $(FW_LDFLAGS) -T $(FW_QEMU_$(2)).ld -o $$@
 endef
-$(foreach h,$(FW_POINT_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
+# `make firmware HEADER=path/to/NAME.h`: the images and tables for a user's
+# own generated header instead of the shipped ones (its NAME must not be a
+# shipped header's unless it is that header: the images are named by it).
+ifneq ($(HEADER),)
+$(if $(filter %.h,$(HEADER)),,$(error HEADER=$(HEADER): expected a generated header, NAME.h))
+$(if $(wildcard $(HEADER)),,$(error HEADER=$(HEADER): no such file))
+$(if $(filter-out $(HEADER),$(filter %/$(notdir $(HEADER)),$(FW_POINT_HEADERS))),\
+  $(error HEADER=$(HEADER): $(notdir $(HEADER)) is also $(filter %/$(notdir $(HEADER)),$(FW_POINT_HEADERS)); give your header another name))
+endif
+FW_USER_HEADERS := $(filter-out $(FW_POINT_HEADERS),$(HEADER))
+$(foreach h,$(FW_POINT_HEADERS) $(FW_USER_HEADERS),$(foreach c,$(FW_CORES),$(eval $(call fw_haptic,$(h),$(c)))))
 FW_HAPTIC_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(FW_POINT_HEADERS),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
+FW_FIRMWARE_IMAGES := $(foreach c,$(FW_CORES),$(foreach h,$(or $(HEADER),$(FW_POINT_HEADERS)),$(FW)/$(c)/haptic-$(call fw_name,$(h)).elf))
 FW_HAPTIC_QEMU := $(foreach c,$(FW_CORES),$(foreach h,$(FW_POINT_HEADERS),$(FW)/$(c)/haptic-qemu-$(call fw_name,$(h)).elf))
 
 # Native build of the same loop (the fitting issue's `make demo` runs it over
@@ -301,16 +312,16 @@ fw_stack_tables = linker/stack_table.sh $(T)/callgraph "$(FW_PUBLIC)" \
 	  m3:$(FW)/m3/libtfit_q31.elf:$(B)/cortex-m3/obj m0+:$(FW)/m0/libtfit_q31.elf:$(B)/cortex-m0plus/obj
 
 .PHONY: firmware check-firmware
-firmware: $(FW_HAPTIC_IMAGES) $(T)/callgraph $(FW_STACK_LIBS) | deps-check
-	@echo "== firmware images: haptic loop x shipped headers, STM32F407 (M4F) and STM32H743 (M7) =="
-	@linker/size_table.sh $(FW_HAPTIC_IMAGES)
+firmware: $(FW_FIRMWARE_IMAGES) $(T)/callgraph $(FW_STACK_LIBS) | deps-check
+	@echo "== firmware images: haptic loop x $(or $(HEADER),shipped headers), STM32F407 (M4F) and STM32H743 (M7) =="
+	@linker/size_table.sh $(FW_FIRMWARE_IMAGES)
 	@echo
 	@echo "== worst-case stack of each public function (bytes; -fstack-usage along the call graph) =="
 	@$(fw_stack_tables)
 
 CHECKS += check-firmware
 check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic $(FW)/cfg/haptic/haptic_config.h \
-    $(T)/callgraph $(FW_STACK_LIBS)
+    $(T)/callgraph $(FW_STACK_LIBS) $(B)/bin/tissuefit
 	@echo "== haptic-loop firmware: links for M4F and M7 with every header, no heap =="
 	@set -e; for f in $(FW_HAPTIC_IMAGES); do \
 	  if grep -qE '\b(_sbrk|malloc|free|calloc|realloc)\b' $${f%.elf}.map; then \
@@ -329,7 +340,17 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "servo budget: haptic.h fits 1 kHz on both cores; 20 kHz on the M4F is refused at compile time"
 	@if linker/stack_table.sh false "$(FW_PUBLIC)" m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj \
 	    >/dev/null 2>&1; then echo "stack_table.sh ignored a failing call-graph checker"; exit 1; fi
-	@$(fw_stack_tables) >/dev/null && echo "ok: stack: every frame static, no recursion, every public function bounded"
+	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
+	@# a user's own header (a name no shipped header has), and one that is not there
+	@mkdir -p $(FW)/user && $(B)/bin/tissuefit -q fit tests/solver/block48_seed.yaml -o $(FW)/user/seed48.h
+	@$(MAKE) --no-print-directory firmware HEADER=$(FW)/user/seed48.h >$(FW)/user/firmware.log 2>&1 || \
+	  { cat $(FW)/user/firmware.log; exit 1; }
+	@for c in m4f m7; do grep -q "^$$c/haptic-seed48 " $(FW)/user/firmware.log || \
+	  { cat $(FW)/user/firmware.log; echo "make firmware HEADER=: no size row for $$c/haptic-seed48"; exit 1; }; done
+	@if $(MAKE) --no-print-directory -n firmware HEADER=$(FW)/user/none.h >$(FW)/user/none.log 2>&1 || \
+	  ! grep -q "HEADER=$(FW)/user/none.h: no such file" $(FW)/user/none.log; then \
+	  cat $(FW)/user/none.log; echo "make firmware HEADER= accepted a missing header"; exit 1; fi
+	@echo "ok: every shipped image heap-free and run under QEMU; stack bounded; make firmware HEADER= builds a user's header and refuses a missing one"
 
 
 # --- a build that contracts a*b + c (issue 19) --------------------------------
