@@ -31,11 +31,14 @@ $(T)/organs/map-%: tests/organs/map_check.c coeffs/%.h $(B)/native/libtissuefit-
 # Golden vectors of the organ headers on the Cortex-M4F (QEMU mps2-an386).
 $(foreach h,$(ORGAN_HEADERS),$(eval $(call fw_golden,$(h),m4f)))
 
-check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%) $(ORGAN_NAMES:%=$(FW)/m4f/golden-%.elf)
-	@echo "== organ headers: output maps against the mesh files, servo budget at 1 kHz on M4F, golden vectors on M4F =="
+# The new-organ walkthrough (docs/scene-format.md) draws with gnuplot.
+DEBS_CHECK += gnuplot-nox
+check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%) $(ORGAN_NAMES:%=$(FW)/m4f/golden-%.elf) $(B)/bin/tissuefit
+	@echo "== organ headers: output maps against the mesh files, servo budget at 1 kHz on M4F, golden vectors on M4F; the new-organ walkthrough =="
 	@set -e; for n in $(ORGAN_NAMES); do $(T)/organs/map-$$n coeffs/$$n.yaml; done
 	@set -e; for n in $(ORGAN_NAMES); do tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/golden-$$n.elf; done
-	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F"
+	@tests/cli/guide_walkthrough.sh $(B)/bin/tissuefit ../shared/data/meshes/derived/liver_vtk_main.obj
+	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F; the walkthrough's first steps run as written"
 
 # The force of each picture: the envelope's largest, into the organ at its
 # site; displacements drawn to scale, or magnified where a dent of a

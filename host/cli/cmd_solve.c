@@ -58,7 +58,8 @@ static void help(FILE *out)
             "                     nodes through the shape functions) as\n"
             "                     output,x,y,z,ux,uy,uz\n"
             "  --png FILE.png     an organ: its surface deformed by the solve (needs gnuplot)\n"
-            "  --png-rest FILE.png  an organ at rest with its fixed region and contact sites\n"
+            "  --png-rest FILE.png  an organ at rest with its fixed region and contact sites;\n"
+            "                       alone, on a scene nothing loads, it draws and solves nothing\n"
             "  --exaggerate K     draw displacements K times their size (default 1: to scale)\n"
             "  --view AZ,EL       camera azimuth about +z from +x and elevation, degrees\n"
             "                     (default: facing the contact site, turned 35 and raised 20)\n\n"
@@ -330,15 +331,28 @@ static int write_series(tf_ctx *ctx, const solve_args *a, const tf_problem *p, s
     return TF_EXIT_OK;
 }
 
-/* --png and --png-rest draw organs around a contact site, with gnuplot. */
+/* --png-rest alone on a scene nothing loads: the picture, and no solve
+ * (whose answer would be zero everywhere). */
+static int rest_only(const solve_args *a, const tf_problem *p)
+{
+    return a->png_rest && !a->png && !a->out && !a->vtk && !a->outputs && !a->has_force &&
+           !a->contact && !p->history.present && tf_problem_unloaded(p);
+}
+
+/* --png draws an organ deformed around a contact site, --png-rest one at
+ * rest, with gnuplot. */
 static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
 {
     if (!a->png && !a->png_rest) {
         return 0;
     }
-    if (tf_problem_mesh(s) == NULL || s->n_contacts == 0) {
-        tf_error(ctx, "solve: --png and --png-rest draw an organ (geometry.surface) with a "
-                      "contact site");
+    if (tf_problem_mesh(s) == NULL) {
+        tf_error(ctx, "solve: --png and --png-rest draw an organ (geometry.surface)");
+        return -1;
+    }
+    if (a->png && s->n_contacts == 0) {
+        tf_error(ctx, "solve: --png draws an organ deformed around a contact site, and %s has none",
+                 a->scene);
         return -1;
     }
     if (s->history.present) {
@@ -432,6 +446,11 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         return TF_EXIT_USAGE;
     }
     const tf_problem *p = &s->problem;
+    if (rest_only(&a, p)) { /* a look at the organ while its scene is being written */
+        int rc = check_pictures(ctx, &a, p) != 0 ? TF_EXIT_USAGE : pictures(ctx, &a, p, -1, NULL);
+        tf_scene_free(s);
+        return rc;
+    }
     int contact = pick_contact(ctx, &a, p);
     if (contact < -1 || check_pictures(ctx, &a, p) != 0) {
         tf_scene_free(s);

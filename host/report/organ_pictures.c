@@ -32,6 +32,11 @@ static void vertex_normal(const tf_mesh_geometry *m, size_t c, double n[3])
 
 static void camera_for(const tf_problem *p, const tf_report_organ_view *v, tf_report_render *r)
 {
+    if (p->n_contacts == 0) { /* nothing to face: the default view, or the one asked */
+        r->azimuth = isnan(v->azimuth) ? 300 : v->azimuth;
+        r->elevation = isnan(v->elevation) ? 30 : v->elevation;
+        return;
+    }
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     double n[3];
     vertex_normal(m, p->contacts[v->contact].node, n);
@@ -85,8 +90,9 @@ int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
     free(fixed);
     base(p, v, &r);
     snprintf(title, sizeof title,
-             "%s at rest: %zu surface vertices; fixed region blue, contact site%s red",
-             v->title ? v->title : p->name, p->cloud.n_surface, p->n_contacts > 1 ? "s" : "");
+             "%s at rest: %zu surface vertices; fixed region blue%s",
+             v->title ? v->title : p->name, p->cloud.n_surface,
+             p->n_contacts == 0 ? "" : p->n_contacts > 1 ? ", contact sites red" : ", contact site red");
     r.tri_value = value;
     r.vmin = 0;
     r.vmax = 2;
