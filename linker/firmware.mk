@@ -340,7 +340,7 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	  echo "servo budget: haptic.h fits 1 kHz on both cores; 20 kHz on the M4F is refused at compile time"
 	@if linker/stack_table.sh false "$(FW_PUBLIC)" m4f:$(FW)/m4f/libtfit.elf:$(B)/cortex-m4f/obj \
 	    >/dev/null 2>&1; then echo "stack_table.sh ignored a failing call-graph checker"; exit 1; fi
-	@$(fw_stack_tables) >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
+	@{ $(fw_stack_tables); } >/dev/null && echo "stack: every frame static, no recursion, every public function bounded"
 	@# a user's own header (a name no shipped header has), and one that is not there
 	@mkdir -p $(FW)/user && $(B)/bin/tissuefit -q fit tests/solver/block48_seed.yaml -o $(FW)/user/seed48.h
 	@$(MAKE) --no-print-directory firmware HEADER=$(FW)/user/seed48.h >$(FW)/user/firmware.log 2>&1 || \
