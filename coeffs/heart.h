@@ -9,14 +9,14 @@
  *   tfit_heart_forward: nodal p=1, 965 output points, force [N] -> displacement [mm]
  *       8699 add, 8718 mul, 0 div per evaluation; 50232 table bytes
  *       18671 instructions; Cortex-M4F <= 33392 cycles (198.76 us at 168 MHz), Cortex-M7 ~25988 (54.14 us at 480 MHz)
- *       Q31 form tfit_heart_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.77e-08 mm (float32 path: 5.72e-07)
- *       held-out error over 50 cases: max 4.13e-07 mm, rms 4.4e-08 mm
+ *       Q31 form tfit_heart_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.99e-08 mm (float32 path: 5.29e-07)
+ *       held-out error over 50 cases: max 4.32e-07 mm, rms 4.41e-08 mm
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *   tfit_heart_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
- *       Q31 form tfit_heart_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 6.91e-09 N (float32 path: 4.01e-08)
- *       held-out error over 50 cases: max 2.98e-08 N, rms 9.62e-09 N
+ *       Q31 form tfit_heart_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 6.83e-09 N (float32 path: 4.05e-08)
+ *       held-out error over 50 cases: max 2.98e-08 N, rms 1.02e-08 N
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0764 N/mm; largest stiffness 0.184 N/mm (the device must render it)
  *
@@ -38,7 +38,7 @@
 #endif
 
 /* CRC-32 of heart_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_HEART_GOLDEN_CRC32 0xf9bf4aedu
+#define TFIT_HEART_GOLDEN_CRC32 0x05c292e1u
 
 /* tfit_heart_forward */
 #define TFIT_HEART_FORWARD_FAMILY "nodal"
@@ -62,15 +62,15 @@
 #define TFIT_HEART_FORWARD_US_M7_480MHZ 54.14
 #define TFIT_HEART_FORWARD_Q31_IN_EXP 0 /* input word x = value * 2^(31 - 0), N */
 #define TFIT_HEART_FORWARD_Q31_OUT_EXP 7 /* output value = word * 2^(7 - 31), mm */
-#define TFIT_HEART_FORWARD_Q31_ADDED_ERROR_MM 9.76941e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 5.71978e-07 */
-#define TFIT_HEART_FORWARD_Q31_CRC32 0xad1823b2u
-#define tfit_heart_forward_q31 tfit_heart_forward_q31_ad1823b2 /* this header's version of the model */
+#define TFIT_HEART_FORWARD_Q31_ADDED_ERROR_MM 9.98727e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 5.28722e-07 */
+#define TFIT_HEART_FORWARD_Q31_CRC32 0x05c1dc28u
+#define tfit_heart_forward_q31 tfit_heart_forward_q31_05c1dc28 /* this header's version of the model */
 extern const tfit_model_q31 tfit_heart_forward_q31;
 #define TFIT_HEART_FORWARD_HELDOUT_CASES 50
-#define TFIT_HEART_FORWARD_HELDOUT_MAX_MM 4.13284e-07
-#define TFIT_HEART_FORWARD_HELDOUT_RMS_MM 4.40462e-08
-#define TFIT_HEART_FORWARD_CRC32 0x1a578e75u
-#define tfit_heart_forward tfit_heart_forward_1a578e75 /* this header's version of the model */
+#define TFIT_HEART_FORWARD_HELDOUT_MAX_MM 4.31998e-07
+#define TFIT_HEART_FORWARD_HELDOUT_RMS_MM 4.4096e-08
+#define TFIT_HEART_FORWARD_CRC32 0x77d9e30fu
+#define tfit_heart_forward tfit_heart_forward_77d9e30f /* this header's version of the model */
 extern const tfit_model tfit_heart_forward;
 
 /* tfit_heart_contact */
@@ -80,7 +80,7 @@ extern const tfit_model tfit_heart_forward;
 #define TFIT_HEART_CONTACT_N_OUT 1u
 #define TFIT_HEART_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_HEART_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_HEART_CONTACT_ENVELOPE_CENTER {-7.951539e-17, 3.79037086e-17, -4.16333634e-17}
+#define TFIT_HEART_CONTACT_ENVELOPE_CENTER {1.75749172e-16, -5.11743434e-18, 2.7755576e-18}
 #define TFIT_HEART_CONTACT_OPS_ADD 23
 #define TFIT_HEART_CONTACT_OPS_MUL 42
 #define TFIT_HEART_CONTACT_OPS_DIV 0
@@ -94,18 +94,18 @@ extern const tfit_model tfit_heart_forward;
 #define TFIT_HEART_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_HEART_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_HEART_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
-#define TFIT_HEART_CONTACT_Q31_ADDED_ERROR_N 6.90994e-09 /* max |Q31 - exact| at 2000 envelope points; float32: 4.015e-08 */
-#define TFIT_HEART_CONTACT_Q31_CRC32 0x8252380eu
-#define tfit_heart_contact_q31 tfit_heart_contact_q31_8252380e /* this header's version of the model */
+#define TFIT_HEART_CONTACT_Q31_ADDED_ERROR_N 6.83066e-09 /* max |Q31 - exact| at 2000 envelope points; float32: 4.04734e-08 */
+#define TFIT_HEART_CONTACT_Q31_CRC32 0xa3cc4ea3u
+#define tfit_heart_contact_q31 tfit_heart_contact_q31_a3cc4ea3 /* this header's version of the model */
 extern const tfit_model_q31 tfit_heart_contact_q31;
 #define TFIT_HEART_CONTACT_HELDOUT_CASES 50
 #define TFIT_HEART_CONTACT_HELDOUT_MAX_N 2.98023e-08
-#define TFIT_HEART_CONTACT_HELDOUT_RMS_N 9.62364e-09
-#define TFIT_HEART_CONTACT_HELDOUT_REL_MAX 1.76108e-07
-#define TFIT_HEART_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0764197 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_HEART_CONTACT_STIFFNESS_MAX_N_PER_MM 0.183787 /* largest ||df/ddelta||_2 */
-#define TFIT_HEART_CONTACT_CRC32 0xe0d5930fu
-#define tfit_heart_contact tfit_heart_contact_e0d5930f /* this header's version of the model */
+#define TFIT_HEART_CONTACT_HELDOUT_RMS_N 1.02159e-08
+#define TFIT_HEART_CONTACT_HELDOUT_REL_MAX 1.64472e-07
+#define TFIT_HEART_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0764014 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_HEART_CONTACT_STIFFNESS_MAX_N_PER_MM 0.183781 /* largest ||df/ddelta||_2 */
+#define TFIT_HEART_CONTACT_CRC32 0x6352b826u
+#define tfit_heart_contact tfit_heart_contact_6352b826 /* this header's version of the model */
 extern const tfit_model tfit_heart_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_heart_forward is
@@ -261,389 +261,389 @@ static const float tfit_heart_forward_coef[11592] = {
     0x1.aaaaaap+1f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1.aaaaaap+1f,
     /* node 377 x */
-    -0x1.dp-57f, 0x1.f4709ap-1f, -0x1.c674b8p-3f, -0x1.2216fcp-3f,
+    -0x1.2p-57f, 0x1.f447dcp-1f, -0x1.c90a58p-3f, -0x1.206fep-3f,
     /* node 377 y */
-    -0x1.666666p-62f, 0x1.048122p-4f, 0x1.9a1892p-3f, -0x1.55b8bep-4f,
+    0x1.8cccccp-60f, 0x1.03f71cp-4f, 0x1.98a4dp-3f, -0x1.57e8b8p-4f,
     /* node 377 z */
-    0x1.666666p-58f, 0x1.d49f62p-6f, -0x1.162db8p-3f, 0x1.9231a8p-1f,
+    -0x1.99999ap-61f, 0x1.d6f0e4p-6f, -0x1.16fcbap-3f, 0x1.919822p-1f,
     /* node 378 x */
-    0x1.2cp-55f, 0x1.f3d568p-1f, -0x1.cd7c7ap-3f, -0x1.60e202p-3f,
+    0x1.206666p-54f, 0x1.f3ac4ap-1f, -0x1.cfc72p-3f, -0x1.5e3f4p-3f,
     /* node 378 y */
-    0x1.99999ap-60f, 0x1.fff35cp-5f, 0x1.a845b4p-3f, -0x1.4f938cp-4f,
+    -0x1.666666p-62f, 0x1.f52fap-5f, 0x1.a9e9fcp-3f, -0x1.49f5p-4f,
     /* node 378 z */
-    -0x1p-58f, 0x1.9db806p-6f, -0x1.2dad1ap-3f, 0x1.955482p-1f,
+    -0x1.99999ap-59f, 0x1.9da8d6p-6f, -0x1.2cc4bap-3f, 0x1.94d632p-1f,
     /* node 379 x */
-    0x1.866666p-56f, 0x1.1338b8p+0f, -0x1.0e2a7p-2f, -0x1.42907ep-3f,
+    0x1.a33334p-55f, 0x1.132056p+0f, -0x1.0ea7ep-2f, -0x1.42984p-3f,
     /* node 379 y */
-    0x1.b33334p-61f, 0x1.75678ep-5f, 0x1.cd2136p-3f, -0x1.742708p-4f,
+    -0x1.266666p-60f, 0x1.7b4636p-5f, 0x1.c9bbdp-3f, -0x1.76781p-4f,
     /* node 379 z */
-    0x1.99999ap-61f, 0x1.18e648p-5f, -0x1.26817p-3f, 0x1.b22f92p-1f,
+    0x1.333334p-58f, 0x1.168a4ep-5f, -0x1.266f1ep-3f, 0x1.b1ac06p-1f,
     /* node 380 x */
-    -0x1.19999ap-59f, 0x1.d11d0cp-1f, -0x1.6558fcp-3f, -0x1.45b78cp-3f,
+    0x1.333334p-57f, 0x1.d1d52ap-1f, -0x1.630558p-3f, -0x1.458754p-3f,
     /* node 380 y */
-    -0x1.1p-58f, 0x1.44291p-4f, 0x1.9b66cep-3f, -0x1.526a52p-4f,
+    0x1.a66666p-59f, 0x1.41e93p-4f, 0x1.a1e3d8p-3f, -0x1.4d3c32p-4f,
     /* node 380 z */
-    0x1p-59f, 0x1.1721fap-6f, -0x1.0fd646p-3f, 0x1.856c72p-1f,
+    -0x1.266666p-57f, 0x1.10da2cp-6f, -0x1.0e9e2cp-3f, 0x1.86369ep-1f,
     /* node 381 x */
-    0x1.69999ap-56f, 0x1.d84e56p-1f, -0x1.5afabcp-3f, -0x1.1362a2p-3f,
+    0x1.3b3334p-56f, 0x1.d9c806p-1f, -0x1.58c12p-3f, -0x1.171588p-3f,
     /* node 381 y */
-    0x1.99999ap-63f, 0x1.6d9a74p-4f, 0x1.97e728p-3f, -0x1.4e6584p-4f,
+    -0x1.c9999ap-58f, 0x1.728cb8p-4f, 0x1.9b10ccp-3f, -0x1.5594dep-4f,
     /* node 381 z */
-    0x1.333334p-58f, 0x1.48d64cp-6f, -0x1.026228p-3f, 0x1.85dfb2p-1f,
+    -0x1.19999ap-58f, 0x1.336516p-6f, -0x1.045142p-3f, 0x1.8682c4p-1f,
     /* node 382 x */
-    0x1.b33334p-56f, 0x1.f2023ap-1f, -0x1.b450a8p-3f, -0x1.d7755cp-4f,
+    0x1.c1999ap-55f, 0x1.f1cb62p-1f, -0x1.b50ce2p-3f, -0x1.d5f81p-4f,
     /* node 382 y */
-    0x1.f33334p-60f, 0x1.10a34ep-4f, 0x1.a0747p-3f, -0x1.678ac2p-4f,
+    -0x1.ccccccp-61f, 0x1.123088p-4f, 0x1.9ed05cp-3f, -0x1.6b9bd8p-4f,
     /* node 382 z */
-    -0x1.99999ap-60f, 0x1.10e2acp-5f, -0x1.07259cp-3f, 0x1.8dda12p-1f,
+    -0x1.333334p-58f, 0x1.1443dap-5f, -0x1.08a728p-3f, 0x1.8d7e1p-1f,
     /* node 383 x */
-    0x1.7cccccp-56f, 0x1.0fe22ap+0f, -0x1.002088p-2f, -0x1.07ad04p-3f,
+    0x1.4a6666p-55f, 0x1.0f950cp+0f, -0x1.00474cp-2f, -0x1.062018p-3f,
     /* node 383 y */
-    -0x1.333334p-59f, 0x1.d29858p-5f, 0x1.bc5f22p-3f, -0x1.74842ap-4f,
+    -0x1.99999ap-64f, 0x1.d5732ep-5f, 0x1.ba34cp-3f, -0x1.729c72p-4f,
     /* node 383 z */
-    -0x1p-58f, 0x1.2fc97cp-5f, -0x1.1419cep-3f, 0x1.ae4896p-1f,
+    -0x0p+0f, 0x1.32e47cp-5f, -0x1.12fdbep-3f, 0x1.adc51ap-1f,
     /* node 387 x */
-    0x1.616666p-54f, 0x1.ffeee4p+0f, -0x1.2a4dfcp+0f, -0x1.451938p-5f,
+    0x1.3e999ap-54f, 0x1.fff812p+0f, -0x1.2a7b8p+0f, -0x1.47b6d6p-5f,
     /* node 387 y */
-    -0x1.0c3334p-56f, -0x1.351c54p-4f, 0x1.a9deeep-3f, -0x1.f351d2p-9f,
+    -0x1.1cccccp-58f, -0x1.351578p-4f, 0x1.a9d558p-3f, -0x1.047b98p-8f,
     /* node 387 z */
-    0x1.4p-56f, 0x1.a2525cp-3f, -0x1.cc9d6ep-3f, 0x1.3e7142p+0f,
+    -0x1.333334p-57f, 0x1.a1e6dp-3f, -0x1.cc32ep-3f, 0x1.3e6206p+0f,
     /* node 396 x */
-    0x1.3e6666p-55f, 0x1.870b9ap-1f, -0x1.6f766ap-4f, -0x1.ecba72p-4f,
+    0x1.f9999ap-58f, 0x1.87c7dcp-1f, -0x1.6d3714p-4f, -0x1.f1c07ep-4f,
     /* node 396 y */
-    -0x1.166666p-58f, 0x1.f0e798p-4f, 0x1.51db6ep-3f, -0x1.37500ep-4f,
+    -0x1.2cccccp-58f, 0x1.f53ff2p-4f, 0x1.552d82p-3f, -0x1.3b122ep-4f,
     /* node 396 z */
-    -0x1.333334p-59f, 0x1.f16e92p-7f, -0x1.e6b76ap-4f, 0x1.493b36p-1f,
+    -0x1.333334p-59f, 0x1.e81bap-7f, -0x1.e28874p-4f, 0x1.498dfcp-1f,
     /* node 397 x */
-    -0x1.1cccccp-57f, 0x1.6efae8p-1f, -0x1.3a6c86p-4f, -0x1.8a930cp-4f,
+    0x1.4cccccp-58f, 0x1.6f53dep-1f, -0x1.38bc72p-4f, -0x1.8dec44p-4f,
     /* node 397 y */
-    -0x1.333334p-62f, 0x1.f7700ep-4f, 0x1.1afb1ap-3f, -0x1.5a1ff6p-4f,
+    -0x1.133334p-59f, 0x1.fb7fd8p-4f, 0x1.1d75acp-3f, -0x1.5c4af6p-4f,
     /* node 397 z */
-    -0x1.b33334p-58f, 0x1.6af4cp-6f, -0x1.96ae4p-4f, 0x1.32de4cp-1f,
+    0x1.4cccccp-58f, 0x1.6b6d2ep-6f, -0x1.96beb2p-4f, 0x1.32d67cp-1f,
     /* node 398 x */
-    0x1.4cccccp-56f, 0x1.59a012p-1f, -0x1.f97716p-5f, -0x1.e98b78p-4f,
+    0x1.4cccccp-60f, 0x1.594c2p-1f, -0x1.fbb058p-5f, -0x1.e9d284p-4f,
     /* node 398 y */
-    0x1.e66666p-60f, 0x1.f4ef9ep-4f, 0x1.2eca96p-3f, -0x1.54f9p-4f,
+    0x1.2cccccp-58f, 0x1.f9825cp-4f, 0x1.2f394cp-3f, -0x1.578ebp-4f,
     /* node 398 z */
-    -0x1.ccccccp-59f, 0x1.d77c6cp-7f, -0x1.c23e9ap-4f, 0x1.27e54ep-1f,
+    -0x1.99999ap-60f, 0x1.ebac94p-7f, -0x1.c253ap-4f, 0x1.276004p-1f,
     /* node 399 x */
-    0x1.4cccccp-58f, 0x1.ab4c76p-1f, -0x1.e7a574p-4f, -0x1.8641e4p-4f,
+    0x1.e8ccccp-55f, 0x1.ad21b6p-1f, -0x1.e3d4cap-4f, -0x1.8c25fap-4f,
     /* node 399 y */
-    -0x1.333334p-61f, 0x1.e46234p-4f, 0x1.6f964cp-3f, -0x1.40f9f4p-4f,
+    0x1.266666p-60f, 0x1.e3e7b8p-4f, 0x1.7462f2p-3f, -0x1.44b4bap-4f,
     /* node 399 z */
-    -0x1.8p-57f, 0x1.aa55e8p-6f, -0x1.b1ada6p-4f, 0x1.5cf68cp-1f,
+    -0x1p-59f, 0x1.8d84c4p-6f, -0x1.b35032p-4f, 0x1.5e06p-1f,
     /* node 400 x */
-    0x1.933334p-55f, 0x1.b8b934p-1f, -0x1.0417e6p-3f, -0x1.05becap-3f,
+    0x1.acccccp-58f, 0x1.bab804p-1f, -0x1.0136fep-3f, -0x1.09fe24p-3f,
     /* node 400 y */
-    0x1.0cccccp-60f, 0x1.9fb864p-4f, 0x1.98b6c2p-3f, -0x1.4cb53p-4f,
+    0x1.4cccccp-58f, 0x1.a2973ap-4f, 0x1.9ea336p-3f, -0x1.50d124p-4f,
     /* node 400 z */
-    -0x1.99999ap-59f, 0x1.34a994p-6f, -0x1.f50cap-4f, 0x1.713a3cp-1f,
+    -0x1.4cccccp-58f, 0x1.1a41fep-6f, -0x1.f2788ap-4f, 0x1.72871cp-1f,
     /* node 401 x */
-    -0x1.966666p-57f, 0x1.8e0364p-1f, -0x1.c100d6p-4f, -0x1.1b09f2p-3f,
+    -0x1.19999ap-59f, 0x1.8e3f84p-1f, -0x1.bf7db6p-4f, -0x1.1acf88p-3f,
     /* node 401 y */
-    -0x1.766666p-58f, 0x1.9f80aep-4f, 0x1.4effd4p-3f, -0x1.33fp-4f,
+    0x1.6cccccp-59f, 0x1.a1ec3cp-4f, 0x1.51a076p-3f, -0x1.338006p-4f,
     /* node 401 z */
-    -0x1.b33334p-58f, 0x1.d9a07ap-7f, -0x1.02900ep-3f, 0x1.55c59ap-1f,
+    -0x1p-58f, 0x1.cd1d22p-7f, -0x1.ff82ap-4f, 0x1.55d588p-1f,
     /* node 402 x */
-    0x1.09999ap-55f, 0x1.70056cp-1f, -0x1.4a8bcap-4f, -0x1.246df6p-3f,
+    0x1.c9999ap-56f, 0x1.6f31fap-1f, -0x1.4d3ed8p-4f, -0x1.203ddcp-3f,
     /* node 402 y */
-    0x1.b33334p-60f, 0x1.a31a1ep-4f, 0x1.5a1c18p-3f, -0x1.32281ap-4f,
+    0x1.f9999ap-59f, 0x1.a8b13p-4f, 0x1.586e3ep-3f, -0x1.2dedacp-4f,
     /* node 402 z */
-    -0x1.8p-58f, 0x1.31b582p-7f, -0x1.ef7a2cp-4f, 0x1.41536ap-1f,
+    -0x1p-59f, 0x1.54de0ep-7f, -0x1.eb9abcp-4f, 0x1.4025fap-1f,
     /* node 403 x */
-    0x1.75999ap-55f, 0x1.d5178ep-1f, -0x1.4ff072p-3f, -0x1.b6202cp-4f,
+    0x1.0cp-55f, 0x1.d6ffp-1f, -0x1.4cb49cp-3f, -0x1.bf6554p-4f,
     /* node 403 y */
-    0x1.833334p-58f, 0x1.7f0a2ep-4f, 0x1.9cc28p-3f, -0x1.6ed51ep-4f,
+    0x1.b33334p-61f, 0x1.8430e4p-4f, 0x1.9f60b8p-3f, -0x1.79bcfap-4f,
     /* node 403 z */
-    -0x1.19999ap-57f, 0x1.be164ep-6f, -0x1.f48dfap-4f, 0x1.7c9174p-1f,
+    -0x1.59999ap-57f, 0x1.9f841p-6f, -0x1.fcc46p-4f, 0x1.7d36b4p-1f,
     /* node 404 x */
-    0x1.cp-56f, 0x1.ced776p-1f, -0x1.496156p-3f, -0x1.4463bp-4f,
+    -0x1.de6666p-56f, 0x1.d0051ap-1f, -0x1.463e8ep-3f, -0x1.4b527p-4f,
     /* node 404 y */
-    -0x1.266666p-60f, 0x1.8df258p-4f, 0x1.7fea28p-3f, -0x1.869ffep-4f,
+    -0x1.19999ap-60f, 0x1.96234ep-4f, 0x1.81099ep-3f, -0x1.9022cep-4f,
     /* node 404 z */
-    0x1.333334p-58f, 0x1.16065ep-5f, -0x1.c89882p-4f, 0x1.7110c6p-1f,
+    0x1.333334p-59f, 0x1.09b054p-5f, -0x1.d026e6p-4f, 0x1.71520ap-1f,
     /* node 405 x */
-    -0x1.48ccccp-56f, 0x1.f3fc4cp-1f, -0x1.965afcp-3f, -0x1.6aa324p-4f,
+    0x1.4cccccp-57f, 0x1.f38adep-1f, -0x1.968a24p-3f, -0x1.670c0ep-4f,
     /* node 405 y */
-    -0x1.466666p-59f, 0x1.8388b6p-4f, 0x1.8f7a5cp-3f, -0x1.815c3p-4f,
+    0x1.066666p-59f, 0x1.82483ap-4f, 0x1.90717cp-3f, -0x1.820c86p-4f,
     /* node 405 z */
-    0x1.99999ap-59f, 0x1.4d8304p-5f, -0x1.fcad34p-4f, 0x1.87b4fcp-1f,
+    -0x1.333334p-59f, 0x1.50b672p-5f, -0x1.ff6a72p-4f, 0x1.87e58cp-1f,
     /* node 406 x */
-    0x1.d9999ap-60f, 0x1.f2e35ap-1f, -0x1.9b779cp-3f, -0x1.891e04p-5f,
+    -0x1.4a6666p-57f, 0x1.f29f18p-1f, -0x1.9c445cp-3f, -0x1.86588p-5f,
     /* node 406 y */
-    0x1.99999ap-63f, 0x1.86ea94p-4f, 0x1.7ae736p-3f, -0x1.5acbfp-4f,
+    -0x1.6cccccp-59f, 0x1.835542p-4f, 0x1.7bff54p-3f, -0x1.5b8e5ap-4f,
     /* node 406 z */
-    -0x1.99999ap-58f, 0x1.b3118ep-5f, -0x1.aeee54p-4f, 0x1.82064cp-1f,
+    0x1.666666p-59f, 0x1.b07a2cp-5f, -0x1.afebd4p-4f, 0x1.82ae2ep-1f,
     /* node 407 x */
-    0x1.a66666p-60f, 0x1.10ff34p+0f, -0x1.f1555cp-3f, -0x1.2ea008p-4f,
+    -0x1.573334p-56f, 0x1.10a858p+0f, -0x1.f1b848p-3f, -0x1.2d2abcp-4f,
     /* node 407 y */
-    -0x1.666666p-62f, 0x1.1dd79cp-4f, 0x1.af51c6p-3f, -0x1.718c42p-4f,
+    -0x1.19999ap-59f, 0x1.1c826p-4f, 0x1.ae64dap-3f, -0x1.6fe3dcp-4f,
     /* node 407 z */
-    -0x1p-58f, 0x1.77e9cap-5f, -0x1.e2e702p-4f, 0x1.a9b994p-1f,
+    -0x1.99999ap-60f, 0x1.7bb4cap-5f, -0x1.df9b86p-4f, 0x1.a9950cp-1f,
     /* node 408 x */
-    0x1.e0ccccp-57f, 0x1.16934ap+0f, -0x1.05c372p-2f, -0x1.a734a2p-6f,
+    -0x1.a66666p-58f, 0x1.165306p+0f, -0x1.0690cp-2f, -0x1.9caf7ap-6f,
     /* node 408 y */
-    0x1.0cccccp-60f, 0x1.b19446p-4f, 0x1.67bd56p-3f, -0x1.486ddp-4f,
+    -0x1.8p-59f, 0x1.b1e19p-4f, 0x1.656932p-3f, -0x1.450b0ap-4f,
     /* node 408 z */
-    -0x1.99999ap-58f, 0x1.e9675cp-5f, -0x1.ae1152p-4f, 0x1.9b4b68p-1f,
+    -0x1.99999ap-61f, 0x1.f3783p-5f, -0x1.abe0fcp-4f, 0x1.9aecf4p-1f,
     /* node 409 x */
-    0x1.29999ap-56f, 0x1.c02774p-1f, -0x1.33b086p-3f, -0x1.549b74p-5f,
+    0x1.a36666p-55f, 0x1.c089a6p-1f, -0x1.32cb66p-3f, -0x1.5be3aep-5f,
     /* node 409 y */
-    -0x1.19999ap-59f, 0x1.dcaf3ap-4f, 0x1.398606p-3f, -0x1.809b0cp-4f,
+    -0x1.4cccccp-61f, 0x1.dd29ep-4f, 0x1.3a7a5ep-3f, -0x1.859b04p-4f,
     /* node 409 z */
-    0x1.666666p-58f, 0x1.94988cp-5f, -0x1.5a7ep-4f, 0x1.59dfb6p-1f,
+    -0x1.4cccccp-58f, 0x1.8eb04p-5f, -0x1.5d02fep-4f, 0x1.5a28f6p-1f,
     /* node 410 x */
-    -0x1.163334p-56f, 0x1.f49384p-1f, -0x1.a31deap-3f, -0x1.6ae92ap-7f,
+    -0x1.13999ap-58f, 0x1.f45a3cp-1f, -0x1.a37146p-3f, -0x1.5de39cp-7f,
     /* node 410 y */
-    0x1.59999ap-58f, 0x1.d0e64ap-4f, 0x1.4d5e88p-3f, -0x1.8b0936p-4f,
+    -0x1p-61f, 0x1.d4b502p-4f, 0x1.4ba4f2p-3f, -0x1.89cb02p-4f,
     /* node 410 z */
-    0x1.19999ap-58f, 0x1.f20082p-5f, -0x1.6c3154p-4f, 0x1.7b51b6p-1f,
+    0x1p-57f, 0x1.f3c66cp-5f, -0x1.6c861ap-4f, 0x1.7b7406p-1f,
     /* node 430 x */
-    0x1.39999ap-58f, 0x1.360d5p-1f, -0x1.510c8p-5f, -0x1.8e5576p-4f,
+    -0x1.b33334p-58f, 0x1.35a074p-1f, -0x1.4f6efp-5f, -0x1.8d8494p-4f,
     /* node 430 y */
-    0x1.b33334p-59f, 0x1.01a4fcp-3f, 0x1.ae6036p-4f, -0x1.636114p-4f,
+    0x1.666666p-59f, 0x1.0573dcp-3f, 0x1.af15aap-4f, -0x1.63d56cp-4f,
     /* node 430 z */
-    -0x1.99999ap-59f, 0x1.7243cp-6f, -0x1.57c49ep-4f, 0x1.03960ap-1f,
+    -0x1p-59f, 0x1.72a77p-6f, -0x1.5bbb7ap-4f, 0x1.030016p-1f,
     /* node 431 x */
-    0x1.733334p-60f, 0x1.129e48p-1f, -0x1.688f42p-7f, -0x1.ffd8ep-5f,
+    -0x1.3cccccp-58f, 0x1.111432p-1f, -0x1.79a34ep-7f, -0x1.01e826p-4f,
     /* node 431 y */
-    0x1.cp-60f, 0x1.1fcb4ep-3f, 0x1.6325d2p-4f, -0x1.125406p-4f,
+    0x1.99999ap-60f, 0x1.2440dap-3f, 0x1.54f2d2p-4f, -0x1.1fad1p-4f,
     /* node 431 z */
-    -0x1.4cccccp-58f, 0x1.79bb1cp-6f, -0x1.fab6b8p-5f, 0x1.bc1a7p-2f,
+    -0x1.99999ap-61f, 0x1.95df98p-6f, -0x1.04d544p-4f, 0x1.ba9982p-2f,
     /* node 432 x */
-    -0x1.066666p-59f, 0x1.db641cp-2f, -0x1.e2241cp-9f, -0x1.698c7ap-4f,
+    -0x1.e1999ap-57f, 0x1.dcdf82p-2f, -0x1.e6deeep-10f, -0x1.6a07dap-4f,
     /* node 432 y */
-    -0x1.99999ap-59f, 0x1.013e2cp-3f, 0x1.d3ddf6p-5f, -0x1.419628p-4f,
+    -0x1.266666p-59f, 0x1.01ce4cp-3f, 0x1.ec121ep-5f, -0x1.3bf7e4p-4f,
     /* node 432 z */
-    -0x1.333334p-60f, 0x1.fab028p-7f, -0x1.392c36p-4f, 0x1.9ee59ap-2f,
+    0x1.99999ap-59f, 0x1.f1f55ap-7f, -0x1.34507cp-4f, 0x1.a0b874p-2f,
     /* node 433 x */
-    0x1.a66666p-60f, 0x1.5a9d6ep-1f, -0x1.fb5d1ep-5f, -0x1.004b64p-4f,
+    0x1.933334p-58f, 0x1.5aab16p-1f, -0x1.f9b6fep-5f, -0x1.00916cp-4f,
     /* node 433 y */
-    0x1.f33334p-60f, 0x1.12e59cp-3f, 0x1.d9bd1cp-4f, -0x1.51b098p-4f,
+    0x1.cp-58f, 0x1.1642d6p-3f, 0x1.d6ffc2p-4f, -0x1.546cdp-4f,
     /* node 433 z */
-    -0x1.333334p-59f, 0x1.fdf722p-6f, -0x1.422218p-4f, 0x1.17e1bcp-1f,
+    -0x1.b33334p-58f, 0x1.efb89cp-6f, -0x1.40ab8p-4f, 0x1.17da96p-1f,
     /* node 434 x */
-    0x1.ae6666p-56f, 0x1.197916p-1f, -0x1.2dbb88p-5f, -0x1.bc3c14p-4f,
+    -0x1.866666p-58f, 0x1.19e5a2p-1f, -0x1.27e012p-5f, -0x1.c0b804p-4f,
     /* node 434 y */
-    0x1.f33334p-59f, 0x1.dba974p-4f, 0x1.a73a8p-4f, -0x1.250b1p-4f,
+    0x1.0cccccp-60f, 0x1.db1a0ep-4f, 0x1.ac0aa6p-4f, -0x1.1f1de4p-4f,
     /* node 434 z */
-    -0x1.e66666p-58f, 0x1.64aed8p-7f, -0x1.85f3d8p-4f, 0x1.f2c02ap-2f,
+    0x1.ccccccp-59f, 0x1.3ef458p-7f, -0x1.831622p-4f, 0x1.f4f116p-2f,
     /* node 435 x */
-    0x1p-63f, 0x1.36e11cp-1f, -0x1.89997ap-5f, -0x1.1967fcp-5f,
+    -0x1.1dccccp-55f, 0x1.374df8p-1f, -0x1.82322ep-5f, -0x1.17f4bcp-5f,
     /* node 435 y */
-    0x1.ccccccp-60f, 0x1.172a4ap-3f, 0x1.2d7edcp-4f, -0x1.838a6cp-4f,
+    -0x1.333334p-58f, 0x1.15355cp-3f, 0x1.3f8ccap-4f, -0x1.7e833ap-4f,
     /* node 435 z */
-    -0x1.99999ap-59f, 0x1.3bf922p-5f, -0x1.0f50bap-4f, 0x1.e06b72p-2f,
+    -0x1.99999ap-62f, 0x1.3833a8p-5f, -0x1.0b6144p-4f, 0x1.e0c52ep-2f,
     /* node 436 x */
-    -0x1.48p-56f, 0x1.84ac3ep-1f, -0x1.a2ecaep-4f, -0x1.2619c8p-5f,
+    0x1.cp-57f, 0x1.843d0cp-1f, -0x1.a1f73ep-4f, -0x1.216416p-5f,
     /* node 436 y */
-    0x1.59999ap-59f, 0x1.022716p-3f, 0x1.f41ac6p-4f, -0x1.5fb82p-4f,
+    -0x1.333334p-62f, 0x1.0206bp-3f, 0x1.fa5588p-4f, -0x1.61ac5p-4f,
     /* node 436 z */
-    -0x1.99999ap-58f, 0x1.314e48p-5f, -0x1.0e6c18p-4f, 0x1.3130a2p-1f,
+    0x1.ccccccp-59f, 0x1.2ee5f8p-5f, -0x1.0e2b22p-4f, 0x1.31735ap-1f,
     /* node 437 x */
-    0x1.f3199ap-56f, 0x1.6da1d2p-1f, -0x1.552efp-4f, 0x1.81aee4p-7f,
+    -0x1.5a3334p-56f, 0x1.6d982ep-1f, -0x1.540b3cp-4f, 0x1.8811eep-7f,
     /* node 437 y */
-    0x1.99999ap-61f, 0x1.1ac96p-3f, 0x1.a72544p-4f, -0x1.6dad6cp-4f,
+    -0x1.99999ap-64f, 0x1.1bc96cp-3f, 0x1.a83d6cp-4f, -0x1.698f96p-4f,
     /* node 437 z */
-    -0x1.4cccccp-58f, 0x1.8ef12p-5f, -0x1.9be2a4p-5f, 0x1.122386p-1f,
+    -0x1p-59f, 0x1.8ae97ap-5f, -0x1.a20a3ap-5f, 0x1.1208p-1f,
     /* node 438 x */
-    0x1.75p-56f, 0x1.e181fp-2f, 0x1.b79f9p-8f, -0x1.3b8342p-6f,
+    0x1.1b999ap-57f, 0x1.e363dep-2f, 0x1.7d5944p-8f, -0x1.370098p-6f,
     /* node 438 y */
-    0x1.acccccp-59f, 0x1.21ba38p-3f, 0x1.689cecp-5f, -0x1.2bc53p-4f,
+    0x1.666666p-59f, 0x1.1d4fc4p-3f, 0x1.8a3f02p-5f, -0x1.24b7dap-4f,
     /* node 438 z */
-    -0x1.0cccccp-58f, 0x1.03234ap-5f, -0x1.7273e6p-5f, 0x1.6c512ep-2f,
+    -0x1.ccccccp-58f, 0x1.fd2758p-6f, -0x1.6d9564p-5f, 0x1.6df0cep-2f,
     /* node 439 x */
-    0x1.44e666p-56f, 0x1.1e5c78p-1f, -0x1.f7a5ecp-6f, 0x1.53de0ap-7f,
+    -0x1.2dcp-55f, 0x1.1e3418p-1f, -0x1.f889eap-6f, 0x1.4eb9f2p-7f,
     /* node 439 y */
-    0x1.dp-58f, 0x1.2b4e2p-3f, 0x1.f5d28cp-5f, -0x1.29f424p-4f,
+    0x1.f9999ap-58f, 0x1.2bc064p-3f, 0x1.f9afbep-5f, -0x1.2c45d4p-4f,
     /* node 439 z */
-    0x1.333334p-60f, 0x1.2a7d6ap-5f, -0x1.5c43eep-5f, 0x1.a073c6p-2f,
+    -0x1.666666p-58f, 0x1.30e732p-5f, -0x1.5f235p-5f, 0x1.a046dep-2f,
     /* node 440 x */
-    0x1.00a666p-54f, 0x1.b23e9ap-1f, -0x1.28500cp-3f, -0x1.fdd84p-8f,
+    0x1.646666p-57f, 0x1.b269ccp-1f, -0x1.289fc4p-3f, -0x1.e976ep-8f,
     /* node 440 y */
-    0x1.dcccccp-58f, 0x1.1a397cp-3f, 0x1.03f0dp-3f, -0x1.74aa08p-4f,
+    0x1.333334p-63f, 0x1.1ad372p-3f, 0x1.030bb2p-3f, -0x1.72eb84p-4f,
     /* node 440 z */
-    -0x1.99999ap-59f, 0x1.b8192p-5f, -0x1.12932p-4f, 0x1.406874p-1f,
+    0x1.99999ap-59f, 0x1.bbce08p-5f, -0x1.159004p-4f, 0x1.408098p-1f,
     /* node 441 x */
-    0x1.c5999ap-57f, 0x1.9436fp-1f, -0x1.0b1026p-3f, 0x1.32f56cp-5f,
+    -0x1.e9999ap-59f, 0x1.93b53cp-1f, -0x1.0af2dep-3f, 0x1.323776p-5f,
     /* node 441 y */
-    -0x1.266666p-60f, 0x1.33242p-3f, 0x1.876ce2p-4f, -0x1.6def16p-4f,
+    0x1.99999ap-65f, 0x1.319d96p-3f, 0x1.8824dap-4f, -0x1.6dd358p-4f,
     /* node 441 z */
-    -0x1.e66666p-58f, 0x1.0bc6eep-4f, -0x1.b5988cp-5f, 0x1.236922p-1f,
+    -0x1p-59f, 0x1.0c9fd2p-4f, -0x1.b364b4p-5f, 0x1.23453ep-1f,
     /* node 442 x */
-    -0x1.0eccccp-56f, 0x1.ebe6fcp-1f, -0x1.9ff58cp-3f, 0x1.188588p-5f,
+    0x1.d6p-56f, 0x1.eba9c6p-1f, -0x1.a20de6p-3f, 0x1.1c7c92p-5f,
     /* node 442 y */
-    -0x1.4cccccp-57f, 0x1.1cea8ap-3f, 0x1.136faap-3f, -0x1.5c97c2p-4f,
+    -0x1.466666p-59f, 0x1.18b8fp-3f, 0x1.14ee86p-3f, -0x1.5f988ap-4f,
     /* node 442 z */
-    -0x1.8cccccp-57f, 0x1.25e06ep-4f, -0x1.1a41cap-4f, 0x1.636c9p-1f,
+    -0x1.99999ap-60f, 0x1.24f178p-4f, -0x1.19d242p-4f, 0x1.636518p-1f,
     /* node 443 x */
-    0x1.86ccccp-55f, 0x1.d3ac7ep-1f, -0x1.9bf33cp-3f, 0x1.4a85b4p-4f,
+    0x1.e5999ap-56f, 0x1.d3b634p-1f, -0x1.9affe6p-3f, 0x1.4c33b6p-4f,
     /* node 443 y */
-    0x1.0b3334p-57f, 0x1.397a9cp-3f, 0x1.87c3c8p-4f, -0x1.62be5ep-4f,
+    0x1.b33334p-61f, 0x1.3e4dc4p-3f, 0x1.8225fep-4f, -0x1.5c26d6p-4f,
     /* node 443 z */
-    -0x1.8p-57f, 0x1.4ab6b8p-4f, -0x1.a943eep-5f, 0x1.47609ap-1f,
+    -0x1.333334p-59f, 0x1.49ca5ep-4f, -0x1.aae6c4p-5f, 0x1.4714c6p-1f,
     /* node 444 x */
-    -0x1.9p-57f, 0x1.6c69fap-1f, -0x1.98ac7ep-4f, 0x1.309d3ap-4f,
+    0x1.6p-57f, 0x1.6ccd78p-1f, -0x1.9ac006p-4f, 0x1.314dacp-4f,
     /* node 444 y */
-    0x1.ccccccp-61f, 0x1.4b9658p-3f, 0x1.0736a8p-4f, -0x1.41d8b8p-4f,
+    0x1.2cccccp-59f, 0x1.4b1216p-3f, 0x1.0a8eep-4f, -0x1.403a7ep-4f,
     /* node 444 z */
-    0x1p-59f, 0x1.041d34p-4f, -0x1.0c5b4cp-5f, 0x1.fa1472p-2f,
+    -0x1p-58f, 0x1.050dbep-4f, -0x1.0e5012p-5f, 0x1.fa74b8p-2f,
     /* node 445 x */
-    0x1.24ccccp-56f, 0x1.adc3c6p-1f, -0x1.7c7668p-3f, 0x1.ecd7fap-4f,
+    0x1.58ccccp-55f, 0x1.adcc9cp-1f, -0x1.7de75ap-3f, 0x1.eae1dcp-4f,
     /* node 445 y */
-    -0x1.333334p-63f, 0x1.68c55p-3f, 0x1.b906dap-5f, -0x1.40c448p-4f,
+    0x1.19999ap-59f, 0x1.63a54cp-3f, 0x1.c364aap-5f, -0x1.47370ep-4f,
     /* node 445 z */
-    0x1.99999ap-59f, 0x1.51eb94p-4f, -0x1.358a4ep-5f, 0x1.1fcc16p-1f,
+    -0x1.99999ap-62f, 0x1.526fa6p-4f, -0x1.384e8ap-5f, 0x1.200d0ap-1f,
     /* node 446 x */
-    -0x1.766666p-57f, 0x1.0fa5ecp+0f, -0x1.3777b6p-2f, 0x1.012a22p-3f,
+    0x1.d9999ap-55f, 0x1.0f5148p+0f, -0x1.37ec44p-2f, 0x1.fca3f4p-4f,
     /* node 446 y */
-    0x1.cp-59f, 0x1.55cccep-3f, 0x1.32838ap-4f, -0x1.5198b4p-4f,
+    -0x1.4p-59f, 0x1.4fcb92p-3f, 0x1.368022p-4f, -0x1.5cfe8p-4f,
     /* node 446 z */
-    0x1.99999ap-61f, 0x1.9f882ep-4f, -0x1.fd7dc8p-5f, 0x1.6636a6p-1f,
+    -0x1.8p-58f, 0x1.9dcdc2p-4f, -0x1.fcd23ep-5f, 0x1.663962p-1f,
     /* node 447 x */
-    0x1.533334p-59f, 0x1.181336p+0f, -0x1.2dd1dep-2f, 0x1.246908p-4f,
+    0x1.006666p-55f, 0x1.18276ap+0f, -0x1.2dad92p-2f, 0x1.2402aep-4f,
     /* node 447 y */
-    -0x1.8cccccp-60f, 0x1.1451a6p-3f, 0x1.fdff4ap-4f, -0x1.5cc542p-4f,
+    -0x1.333334p-59f, 0x1.161be6p-3f, 0x1.fb96ecp-4f, -0x1.58446cp-4f,
     /* node 447 z */
-    -0x1p-57f, 0x1.6d5ddcp-4f, -0x1.3457d2p-4f, 0x1.88b08p-1f,
+    -0x1p-58f, 0x1.6bc03ep-4f, -0x1.34a88p-4f, 0x1.88aadp-1f,
     /* node 448 x */
-    -0x1.866666p-55f, 0x1.75d346p+0f, -0x1.512f9ap-1f, 0x1.d72f9p-3f,
+    0x1.04ccccp-55f, 0x1.75ca44p+0f, -0x1.5173d8p-1f, 0x1.d69ecp-3f,
     /* node 448 y */
-    0x1.2e6666p-58f, 0x1.5771dap-3f, 0x1.4f0ffap-6f, -0x1.20480ep-5f,
+    0x1.59999ap-57f, 0x1.56df4ep-3f, 0x1.50096ep-6f, -0x1.2385eap-5f,
     /* node 448 z */
-    -0x1.666666p-58f, 0x1.4bea2ep-3f, -0x1.e9c2c8p-4f, 0x1.bdf8b4p-1f,
+    0x1.ccccccp-58f, 0x1.4b7238p-3f, -0x1.e90dd8p-4f, 0x1.bde762p-1f,
     /* node 449 x */
-    0x1.133334p-56f, 0x1.aa29dap+0f, -0x1.ad1382p-1f, 0x1.d7c442p-3f,
+    0x1.f66666p-56f, 0x1.aa265cp+0f, -0x1.ad6fcp-1f, 0x1.d68928p-3f,
     /* node 449 y */
-    0x1.ep-60f, 0x1.eb10dap-4f, 0x1.a24e26p-5f, -0x1.611606p-6f,
+    0x1.666666p-63f, 0x1.eadfc4p-4f, 0x1.a0e9aap-5f, -0x1.64569ap-6f,
     /* node 449 z */
-    -0x1p-58f, 0x1.78bdbep-3f, -0x1.3e6b0cp-3f, 0x1.ff97f6p-1f,
+    0x1.99999ap-58f, 0x1.787f88p-3f, -0x1.3e33bcp-3f, 0x1.ff8c0cp-1f,
     /* node 451 x */
-    0x1.166666p-56f, 0x1.7653cap+0f, -0x1.3d92dp-1f, 0x1.66ba82p-3f,
+    0x1.133334p-56f, 0x1.764796p+0f, -0x1.3dc87ap-1f, 0x1.65e0a8p-3f,
     /* node 451 y */
-    -0x1.133334p-58f, 0x1.1269c4p-3f, 0x1.18844ap-4f, -0x1.947ba8p-5f,
+    0x1.ccccccp-60f, 0x1.12050cp-3f, 0x1.180644p-4f, -0x1.94a408p-5f,
     /* node 451 z */
-    0x1.99999ap-57f, 0x1.269c8ep-3f, -0x1.e4b088p-4f, 0x1.d52aap-1f,
+    0x1p-57f, 0x1.265394p-3f, -0x1.e3a9cep-4f, 0x1.d520d2p-1f,
     /* node 452 x */
-    -0x1.6a6666p-54f, 0x1.3c6ffcp+0f, -0x1.d5af44p-2f, 0x1.6332bcp-3f,
+    0x1.933334p-57f, 0x1.3c8b54p+0f, -0x1.d66758p-2f, 0x1.631b26p-3f,
     /* node 452 y */
-    -0x1.0cccccp-59f, 0x1.453b7ap-3f, 0x1.a2b51ap-5f, -0x1.0d7484p-4f,
+    0x1.64ccccp-57f, 0x1.459bdap-3f, 0x1.a439dap-5f, -0x1.0d8632p-4f,
     /* node 452 z */
-    0x1.99999ap-60f, 0x1.f7871ap-4f, -0x1.620e0ep-4f, 0x1.91a266p-1f,
+    -0x1.666666p-58f, 0x1.f869c8p-4f, -0x1.6249dap-4f, 0x1.91b62cp-1f,
     /* node 1003 x */
-    0x1.633334p-55f, 0x1.372324p+0f, -0x1.0a34c6p-1f, -0x1.7b679cp-1f,
+    0x1.59999ap-57f, 0x1.375ee8p+0f, -0x1.0a9c52p-1f, -0x1.7bd34cp-1f,
     /* node 1003 y */
-    0x1.0cccccp-57f, -0x1.240f1ep-1f, 0x1.18a60cp-1f, -0x1.9fc716p-2f,
+    -0x1.99999ap-62f, -0x1.251e9cp-1f, 0x1.19a05ap-1f, -0x1.9d9a48p-2f,
     /* node 1003 z */
-    -0x1.99999ap-59f, 0x1.89b4fap-4f, -0x1.5816e8p-2f, 0x1.743132p+0f,
+    -0x1p-58f, 0x1.7fb2e6p-4f, -0x1.578e2p-2f, 0x1.74e266p+0f,
     /* node 1004 x */
-    0x1.133334p-55f, 0x1.4bd4b6p+0f, -0x1.2895c6p-1f, -0x1.893598p-1f,
+    0x1.e66666p-55f, 0x1.4be85cp+0f, -0x1.2872b4p-1f, -0x1.898ff4p-1f,
     /* node 1004 y */
-    -0x1.2p-56f, -0x1.46572ep-1f, 0x1.3ad928p-1f, -0x1.9c3a9ap-2f,
+    0x1p-57f, -0x1.463824p-1f, 0x1.3ae79p-1f, -0x1.9c1c9ap-2f,
     /* node 1004 z */
-    -0x1.19999ap-56f, 0x1.70f902p-4f, -0x1.54b646p-2f, 0x1.9607eep+0f,
+    -0x1p-57f, 0x1.6fa60cp-4f, -0x1.5488d4p-2f, 0x1.95ebb8p+0f,
     /* node 1005 x */
-    0x1.ap-55f, 0x1.534da2p+0f, -0x1.336ee6p-1f, -0x1.9424eap-1f,
+    0x1.4cccccp-57f, 0x1.53788cp+0f, -0x1.3377cp-1f, -0x1.9490acp-1f,
     /* node 1005 y */
-    -0x1.9p-55f, -0x1.415298p-1f, 0x1.382f8cp-1f, -0x1.a30e42p-2f,
+    -0x1.233334p-55f, -0x1.40cbb4p-1f, 0x1.37eb1p-1f, -0x1.a3d5ccp-2f,
     /* node 1005 z */
-    0x1.666666p-57f, 0x1.73b526p-4f, -0x1.50805ep-2f, 0x1.98226p+0f,
+    -0x1.ccccccp-57f, 0x1.716cdep-4f, -0x1.506538p-2f, 0x1.981378p+0f,
     /* node 1006 x */
-    0x1.8p-55f, 0x1.2de7b8p+0f, -0x1.ffd336p-2f, -0x1.6b3478p-1f,
+    0x1.39999ap-55f, 0x1.2e1bcp+0f, -0x1.002ccep-1f, -0x1.6ba6d2p-1f,
     /* node 1006 y */
-    0x1p-58f, -0x1.28d75p-1f, 0x1.1b8f9ap-1f, -0x1.998632p-2f,
+    -0x1p-56f, -0x1.28c6b8p-1f, 0x1.1b75b8p-1f, -0x1.99b33ap-2f,
     /* node 1006 z */
-    0x1.99999ap-60f, 0x1.8d13aap-4f, -0x1.5c93e2p-2f, 0x1.703e8ep+0f,
+    -0x1.4cccccp-57f, 0x1.8a766ap-4f, -0x1.5ca46cp-2f, 0x1.705ebap+0f,
     /* node 1009 x */
-    0x1.533334p-56f, 0x1.40bcfep+0f, -0x1.177a4ap-1f, -0x1.8729f6p-1f,
+    0x1.0cccccp-56f, 0x1.4158cep+0f, -0x1.17e5e6p-1f, -0x1.887912p-1f,
     /* node 1009 y */
-    -0x1.333334p-55f, -0x1.242646p-1f, 0x1.19b364p-1f, -0x1.9b068cp-2f,
+    -0x1.3p-55f, -0x1.23980ep-1f, 0x1.19c53p-1f, -0x1.9ce4eep-2f,
     /* node 1009 z */
-    -0x1.666666p-57f, 0x1.7a4e78p-4f, -0x1.4ff3c4p-2f, 0x1.7b3698p+0f,
+    -0x1.333334p-58f, 0x1.75f694p-4f, -0x1.5047d2p-2f, 0x1.7b7786p+0f,
     /* node 1012 x */
-    0x1.acccccp-55f, 0x1.1f4ddp+0f, -0x1.d26644p-2f, -0x1.5cd156p-1f,
+    0x1.ap-56f, 0x1.1f342ap+0f, -0x1.d2ff1cp-2f, -0x1.5cb2b2p-1f,
     /* node 1012 y */
-    0x1.e66666p-58f, -0x1.22a8b4p-1f, 0x1.18cc1ep-1f, -0x1.a19f0cp-2f,
+    -0x1.cp-57f, -0x1.230e34p-1f, 0x1.1902acp-1f, -0x1.a05b06p-2f,
     /* node 1012 z */
-    -0x1.99999ap-57f, 0x1.7ddbe4p-4f, -0x1.63c6bcp-2f, 0x1.64363ap+0f,
+    -0x1p-58f, 0x1.7ad752p-4f, -0x1.63c66ap-2f, 0x1.64756p+0f,
     /* node 1013 x */
-    -0x1.666666p-59f, 0x1.123828p+0f, -0x1.b27314p-2f, -0x1.4a8dap-1f,
+    -0x1.e9999ap-55f, 0x1.120d96p+0f, -0x1.b2749ep-2f, -0x1.4a4676p-1f,
     /* node 1013 y */
-    -0x1.933334p-56f, -0x1.294ae2p-1f, 0x1.2064dcp-1f, -0x1.9b66b4p-2f,
+    0x1.366666p-55f, -0x1.28f6c2p-1f, 0x1.203cb2p-1f, -0x1.9bf4cp-2f,
     /* node 1013 z */
-    0x1.666666p-58f, 0x1.8119fp-4f, -0x1.69808ep-2f, 0x1.5af85p+0f,
+    0x1.99999ap-60f, 0x1.7f52ecp-4f, -0x1.696caap-2f, 0x1.5b17e4p+0f,
     /* node 1014 x */
-    0x1.666666p-56f, 0x1.d6da58p-1f, -0x1.556c7ep-2f, -0x1.23566cp-1f,
+    0x1.166666p-54f, 0x1.d73a72p-1f, -0x1.55f0dcp-2f, -0x1.23db1cp-1f,
     /* node 1014 y */
-    -0x1.19999ap-55f, -0x1.02a63p-1f, 0x1.fc04a6p-2f, -0x1.93d568p-2f,
+    -0x1.666666p-59f, -0x1.0311aep-1f, 0x1.fd0fbcp-2f, -0x1.9370b2p-2f,
     /* node 1014 z */
-    0x1.333334p-58f, 0x1.6f24dap-4f, -0x1.63b752p-2f, 0x1.2e3b1ep+0f,
+    -0x1.99999ap-58f, 0x1.6d5bcp-4f, -0x1.6314eep-2f, 0x1.2e465p+0f,
     /* node 1015 x */
-    0x1.a66666p-56f, 0x1.0c3cc2p+0f, -0x1.9e1338p-2f, -0x1.3f2684p-1f,
+    0x1.733334p-56f, 0x1.0c276ep+0f, -0x1.9e49f6p-2f, -0x1.3f045cp-1f,
     /* node 1015 y */
-    -0x1.2p-55f, -0x1.25cfaap-1f, 0x1.201176p-1f, -0x1.a197ep-2f,
+    -0x1.133334p-56f, -0x1.2595dep-1f, 0x1.1ffb8ap-1f, -0x1.a1c2f6p-2f,
     /* node 1015 z */
-    -0x1p-58f, 0x1.7babacp-4f, -0x1.6d463ep-2f, 0x1.572f34p+0f,
+    -0x1.4p-56f, 0x1.7c1538p-4f, -0x1.6d51f6p-2f, 0x1.57282p+0f,
     /* node 1016 x */
-    0x1.18p-54f, 0x1.34099cp+0f, -0x1.047272p-1f, -0x1.6d6126p-1f,
+    0x1.366666p-54f, 0x1.343108p+0f, -0x1.04ad76p-1f, -0x1.6da406p-1f,
     /* node 1016 y */
-    0x1.666666p-56f, -0x1.416236p-1f, 0x1.3974aep-1f, -0x1.aa912p-2f,
+    0x1.1p-55f, -0x1.40b2eap-1f, 0x1.393f98p-1f, -0x1.abafcp-2f,
     /* node 1016 z */
-    -0x1.333334p-56f, 0x1.73a832p-4f, -0x1.60fe1ap-2f, 0x1.866246p+0f,
+    -0x1.4cccccp-57f, 0x1.74a6a6p-4f, -0x1.607d62p-2f, 0x1.8606ccp+0f,
     /* node 1017 x */
-    0x1.333334p-56f, 0x1.285432p+0f, -0x1.ee0cccp-2f, -0x1.54b0d2p-1f,
+    0x1.4cccccp-55f, 0x1.28265ep+0f, -0x1.ee2f68p-2f, -0x1.544954p-1f,
     /* node 1017 y */
-    0x1.b33334p-57f, -0x1.3b84e8p-1f, 0x1.33ada4p-1f, -0x1.ae472cp-2f,
+    -0x1.066666p-55f, -0x1.3c40fp-1f, 0x1.344372p-1f, -0x1.ad1b2cp-2f,
     /* node 1017 z */
-    0x1.8cccccp-56f, 0x1.a0c642p-4f, -0x1.6dd57p-2f, 0x1.799f84p+0f,
+    -0x1.b33334p-57f, 0x1.a3d244p-4f, -0x1.6dd552p-2f, 0x1.7965p+0f,
     /* node 1018 x */
-    -0x1.866666p-56f, 0x1.9cd9aep-1f, -0x1.1bcf9cp-2f, -0x1.f9f3d4p-2f,
+    0x1.4cccccp-56f, 0x1.9d1974p-1f, -0x1.1c4a4cp-2f, -0x1.fa885cp-2f,
     /* node 1018 y */
-    0x1.ccccccp-60f, -0x1.eb32c6p-2f, 0x1.e18674p-2f, -0x1.755402p-2f,
+    -0x1.19999ap-57f, -0x1.ec34e2p-2f, 0x1.e2468p-2f, -0x1.74762ep-2f,
     /* node 1018 z */
-    0x1.333334p-57f, 0x1.7292eep-4f, -0x1.5f78fcp-2f, 0x1.10d1a6p+0f,
+    0x1.19999ap-56f, 0x1.71b19cp-4f, -0x1.5f238p-2f, 0x1.10e37cp+0f,
     /* node 1019 x */
-    0x1.19999ap-57f, 0x1.742398p-1f, -0x1.ed0e8ep-3f, -0x1.b74812p-2f,
+    0x1.733334p-57f, 0x1.744e56p-1f, -0x1.ede168p-3f, -0x1.b79892p-2f,
     /* node 1019 y */
-    -0x1.39999ap-56f, -0x1.d823f2p-2f, 0x1.cc9f6ep-2f, -0x1.5d8fc4p-2f,
+    -0x1.81999ap-55f, -0x1.d7df8ep-2f, 0x1.cc5bc6p-2f, -0x1.5d7cfp-2f,
     /* node 1019 z */
-    -0x1.333334p-58f, 0x1.84e15ep-4f, -0x1.5dfb1ap-2f, 0x1.f6a2bp-1f,
+    -0x1.99999ap-59f, 0x1.84b9e8p-4f, -0x1.5ddc1ep-2f, 0x1.f68cccp-1f,
     /* node 1020 x */
-    0x1.4cccccp-56f, 0x1.fa703p-1f, -0x1.802766p-2f, -0x1.23461cp-1f,
+    0x1.933334p-56f, 0x1.fa6b1ep-1f, -0x1.808bdap-2f, -0x1.234928p-1f,
     /* node 1020 y */
-    0x1.b33334p-57f, -0x1.27aeaep-1f, 0x1.1d6144p-1f, -0x1.86282ep-2f,
+    -0x1.dcccccp-56f, -0x1.27bbd2p-1f, 0x1.1d8fecp-1f, -0x1.85f1bp-2f,
     /* node 1020 z */
-    -0x1.ccccccp-58f, 0x1.773bf8p-4f, -0x1.7113a8p-2f, 0x1.4b8d32p+0f,
+    -0x1.333334p-59f, 0x1.76f876p-4f, -0x1.714406p-2f, 0x1.4b9a9p+0f,
     /* node 1021 x */
-    0x1.e33334p-55f, 0x1.90933p-1f, -0x1.0e8224p-2f, -0x1.c590eep-2f,
+    -0x1.b33334p-58f, 0x1.90ccaep-1f, -0x1.0f27fcp-2f, -0x1.c5feb6p-2f,
     /* node 1021 y */
-    0x1.f33334p-58f, -0x1.f98a6cp-2f, 0x1.ffae7p-2f, -0x1.78cd7ap-2f,
+    -0x1.066666p-57f, -0x1.fa9a48p-2f, 0x1.00462p-1f, -0x1.77e5b2p-2f,
     /* node 1021 z */
-    -0x1.19999ap-57f, 0x1.7109ecp-4f, -0x1.63a964p-2f, 0x1.0d99fep+0f,
+    0x1.99999ap-60f, 0x1.706458p-4f, -0x1.62fb1ap-2f, 0x1.0d8f6p+0f,
     /* node 1024 x */
-    -0x1.e66666p-57f, 0x1.11db86p+0f, -0x1.b2c8e2p-2f, -0x1.2e29e8p-1f,
+    -0x1.3cccccp-55f, 0x1.11d92p+0f, -0x1.b347eep-2f, -0x1.2e40aap-1f,
     /* node 1024 y */
-    -0x1.4p-56f, -0x1.43a8d2p-1f, 0x1.3a9ff2p-1f, -0x1.8db7c8p-2f,
+    -0x1.a66666p-56f, -0x1.43e15p-1f, 0x1.3b063p-1f, -0x1.8d63a8p-2f,
     /* node 1024 z */
-    0x1.ccccccp-58f, 0x1.7d3b46p-4f, -0x1.74b5dp-2f, 0x1.68d9fap+0f,
+    0x1p-57f, 0x1.7d1bd4p-4f, -0x1.7493dap-2f, 0x1.68ccf4p+0f,
     /* node 1025 x */
-    0x1.d9999ap-56f, 0x1.d26ca6p-1f, -0x1.51c194p-2f, -0x1.f67a04p-2f,
+    0x1.b33334p-57f, 0x1.d29d06p-1f, -0x1.51db92p-2f, -0x1.f70de2p-2f,
     /* node 1025 y */
-    0x1.d9999ap-57f, -0x1.21eb4ep-1f, 0x1.257414p-1f, -0x1.8aceecp-2f,
+    -0x1.99999ap-60f, -0x1.219baap-1f, 0x1.258fdp-1f, -0x1.8b236cp-2f,
     /* node 1025 z */
-    -0x1.4cccccp-56f, 0x1.7f450ep-4f, -0x1.776b98p-2f, 0x1.3b11a4p+0f,
+    -0x1.e66666p-57f, 0x1.7e6a92p-4f, -0x1.776b6p-2f, 0x1.3b083ep+0f,
     /* node 1032 x */
-    0x1.dp-57f, 0x1.5b053ep-2f, -0x1.0d0644p-3f, -0x1.14d3dep-3f,
+    0x1.ccccccp-56f, 0x1.5b7664p-2f, -0x1.0cf0c8p-3f, -0x1.159612p-3f,
     /* node 1032 y */
-    0x1.cp-58f, -0x1.f568d8p-3f, 0x1.faabp-3f, -0x1.3f94fap-3f,
+    -0x1.566666p-57f, -0x1.f5c8dep-3f, 0x1.fb6586p-3f, -0x1.3fa11cp-3f,
     /* node 1032 z */
-    -0x1.333334p-60f, 0x1.0c9158p-4f, -0x1.b07aecp-3f, 0x1.d33316p-2f,
+    0x1.99999ap-62f, 0x1.0bffe2p-4f, -0x1.af9868p-3f, 0x1.d312fap-2f,
     /* node 1418 x */
-    0x1.333334p-57f, 0x1.42dcecp+0f, -0x1.1d4ca8p-1f, -0x1.87cc3cp-1f,
+    0x1.266666p-54f, 0x1.43632ep+0f, -0x1.1d9248p-1f, -0x1.88e73ap-1f,
     /* node 1418 y */
-    -0x1.09999ap-55f, -0x1.2093b2p-1f, 0x1.1366acp-1f, -0x1.8f85p-2f,
+    -0x1.19999ap-57f, -0x1.1fe044p-1f, 0x1.1330f8p-1f, -0x1.917858p-2f,
     /* node 1418 z */
-    -0x1.4cccccp-57f, 0x1.78c876p-4f, -0x1.4b9518p-2f, 0x1.79b2cap+0f,
+    -0x1.ccccccp-58f, 0x1.787018p-4f, -0x1.4c071ep-2f, 0x1.799d7ep+0f,
     /* node 2742 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2742 y */
@@ -663,35 +663,35 @@ static const float tfit_heart_forward_coef[11592] = {
     /* node 2747 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2748 x */
-    -0x1.59999ap-61f, 0x1.9eda32p-3f, -0x1.1491e6p-3f, 0x1.e08a18p-6f,
+    0x1.a8p-58f, 0x1.9f690cp-3f, -0x1.152ea8p-3f, 0x1.e09e9ap-6f,
     /* node 2748 y */
-    -0x1.466666p-61f, -0x1.580dcp-3f, 0x1.562642p-3f, 0x1.553122p-6f,
+    -0x1.aep-57f, -0x1.57261p-3f, 0x1.53513cp-3f, 0x1.519e72p-6f,
     /* node 2748 z */
-    -0x1.ccccccp-61f, -0x1.27ae68p-6f, 0x1.b1db5ap-5f, 0x1.848096p-3f,
+    -0x1.4cccccp-59f, -0x1.2ffa94p-6f, 0x1.b195e4p-5f, 0x1.853956p-3f,
     /* node 2749 x */
-    0x1.e66666p-59f, 0x1.029b36p-2f, -0x1.4c83fcp-3f, 0x1.42d43cp-5f,
+    0x1p-62f, 0x1.033f7ap-2f, -0x1.498e8ep-3f, 0x1.470cf2p-5f,
     /* node 2749 y */
-    -0x1.e4ccccp-58f, -0x1.c274b2p-3f, 0x1.d0aa92p-3f, 0x1.754e0ap-6f,
+    -0x1.666666p-61f, -0x1.c2059ep-3f, 0x1.d0515cp-3f, 0x1.64fa2ap-6f,
     /* node 2749 z */
-    -0x1.ccccccp-59f, -0x1.05468ep-6f, 0x1.89049ap-5f, 0x1.e6c0d2p-3f,
+    -0x1p-59f, -0x1.148af6p-6f, 0x1.8d49dcp-5f, 0x1.e78e76p-3f,
     /* node 2750 x */
-    0x1.2e6666p-57f, 0x1.781ad4p-2f, -0x1.bdf198p-3f, 0x1.215886p-4f,
+    0x1.d66666p-57f, 0x1.76f3f4p-2f, -0x1.bc6376p-3f, 0x1.1ec43p-4f,
     /* node 2750 y */
-    -0x1.54ccccp-56f, -0x1.6e3baep-2f, 0x1.7ef9a6p-2f, 0x1.2723ccp-4f,
+    0x1.d9999ap-60f, -0x1.6dfa8ep-2f, 0x1.7ea56ep-2f, 0x1.24a01cp-4f,
     /* node 2750 z */
-    -0x1.b33334p-58f, -0x1.8116f2p-5f, 0x1.a7baap-4f, 0x1.9512d6p-2f,
+    -0x1.666666p-59f, -0x1.8474dp-5f, 0x1.a63a94p-4f, 0x1.95e954p-2f,
     /* node 2751 x */
-    0x1.fp-56f, 0x1.2e7554p-2f, -0x1.6df472p-3f, 0x1.d4102ap-5f,
+    0x1.99999ap-65f, 0x1.2e0be4p-2f, -0x1.6c0a8p-3f, 0x1.d6b69ap-5f,
     /* node 2751 y */
-    -0x1.5ep-56f, -0x1.1a707ep-2f, 0x1.21132ep-2f, 0x1.0effe2p-5f,
+    -0x1.046666p-56f, -0x1.182a98p-2f, 0x1.1f540cp-2f, 0x1.18a44p-5f,
     /* node 2751 z */
-    -0x1.4cccccp-58f, -0x1.26abd6p-5f, 0x1.8861eap-4f, 0x1.4e2ebp-2f,
+    -0x1p-58f, -0x1.263a72p-5f, 0x1.855a82p-4f, 0x1.4e1236p-2f,
     /* node 2752 x */
-    -0x1.726666p-59f, 0x1.5c2cd2p-3f, -0x1.de8022p-4f, 0x1.f86d14p-8f,
+    -0x1.ccccccp-59f, 0x1.5cbd14p-3f, -0x1.e2186ep-4f, 0x1.f4010ap-8f,
     /* node 2752 y */
-    -0x1.99999ap-66f, -0x1.36cfcp-3f, 0x1.3ea7d4p-3f, 0x1.49b48ap-5f,
+    -0x1.033334p-59f, -0x1.3512cp-3f, 0x1.3dbf04p-3f, 0x1.4b0116p-5f,
     /* node 2752 z */
-    -0x1.4p-59f, -0x1.3335a8p-5f, 0x1.09d1e8p-4f, 0x1.fe45dep-4f,
+    -0x1.333334p-61f, -0x1.36e6b8p-5f, 0x1.07b104p-4f, 0x1.ffb52cp-4f,
     /* node 2754 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2754 y */
@@ -717,95 +717,95 @@ static const float tfit_heart_forward_coef[11592] = {
     /* node 2758 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2759 x */
-    0x1.b66666p-58f, 0x1.cc8bc6p-3f, -0x1.3e4f62p-3f, 0x1.00d438p-5f,
+    -0x1.5p-59f, 0x1.cc042ep-3f, -0x1.355488p-3f, 0x1.f571f2p-6f,
     /* node 2759 y */
-    0x1.866666p-60f, -0x1.6db102p-3f, 0x1.7ed462p-3f, 0x1.3d5b66p-7f,
+    -0x1.cep-58f, -0x1.681cccp-3f, 0x1.86ee62p-3f, 0x1.63f84ap-7f,
     /* node 2759 z */
-    0x1.333334p-61f, -0x1.d8e172p-7f, 0x1.6a7c0ep-6f, 0x1.3a57e6p-3f,
+    -0x1p-60f, -0x1.05b022p-6f, 0x1.a55f9ep-6f, 0x1.3e203ep-3f,
     /* node 2760 x */
-    -0x1.633334p-59f, 0x1.9b9004p-3f, -0x1.2829bap-3f, 0x1.14662cp-6f,
+    0x1.17999ap-57f, 0x1.9cee46p-3f, -0x1.2f29cap-3f, 0x1.1ea682p-6f,
     /* node 2760 y */
-    -0x1.ae6666p-58f, -0x1.c86dcap-4f, 0x1.e2c106p-4f, -0x1.a3cb82p-6f,
+    -0x1.333334p-58f, -0x1.cb002p-4f, 0x1.c9392ep-4f, -0x1.c4a862p-6f,
     /* node 2760 z */
-    0x1p-60f, 0x1.10bd4cp-6f, 0x1.3234aap-10f, 0x1.e8c496p-4f,
+    -0x1.99999ap-64f, 0x1.1a79a4p-6f, 0x1.1f6af6p-9f, 0x1.e42d5cp-4f,
     /* node 2761 x */
-    0x1.7ep-56f, 0x1.5b6c58p-2f, -0x1.b9bba6p-3f, 0x1.5bdd4ep-5f,
+    0x1.25999ap-57f, 0x1.5c853p-2f, -0x1.bccab6p-3f, 0x1.5ec65ap-5f,
     /* node 2761 y */
-    0x1.766666p-60f, -0x1.18552cp-2f, 0x1.22c9d4p-2f, -0x1.190704p-6f,
+    -0x1.cp-56f, -0x1.182cp-2f, 0x1.20b58ep-2f, -0x1.2a7116p-6f,
     /* node 2761 z */
-    0x1p-60f, -0x1.4b39ecp-6f, 0x1.6dd198p-5f, 0x1.45df3ap-2f,
+    -0x1.e66666p-59f, -0x1.515b04p-6f, 0x1.708facp-5f, 0x1.46097ap-2f,
     /* node 2762 x */
-    -0x1.59999ap-59f, 0x1.2bd4fp-2f, -0x1.85e8bp-3f, 0x1.330de8p-5f,
+    0x1.71999ap-58f, 0x1.2a9222p-2f, -0x1.81efb6p-3f, 0x1.33dc68p-5f,
     /* node 2762 y */
-    -0x1.39999ap-59f, -0x1.251c4p-2f, 0x1.272592p-2f, -0x1.2ac15ep-6f,
+    -0x1.f3999ap-57f, -0x1.242b68p-2f, 0x1.269052p-2f, -0x1.1a97bap-6f,
     /* node 2762 z */
-    -0x1.99999ap-62f, -0x1.b82d1ep-6f, 0x1.b4cf3ep-5f, 0x1.2f083p-2f,
+    -0x1.99999ap-63f, -0x1.c80808p-6f, 0x1.c4921ap-5f, 0x1.2fb12cp-2f,
     /* node 2763 x */
-    0x1.6cccccp-57f, 0x1.cd68cap-2f, -0x1.1bf1b8p-2f, 0x1.e6785ep-5f,
+    0x1.9cccccp-57f, 0x1.cebefep-2f, -0x1.1ca918p-2f, 0x1.eab7dp-5f,
     /* node 2763 y */
-    -0x1.616666p-56f, -0x1.ae5a1ep-2f, 0x1.c4cdcep-2f, 0x1.0d806ep-7f,
+    -0x1.27999ap-57f, -0x1.ae605p-2f, 0x1.c48a88p-2f, 0x1.3d4a48p-7f,
     /* node 2763 z */
-    -0x1.8p-57f, -0x1.74ee08p-5f, 0x1.64810cp-4f, 0x1.ea916ep-2f,
+    -0x1.99999ap-62f, -0x1.796e28p-5f, 0x1.69de3ep-4f, 0x1.ea9bf6p-2f,
     /* node 2764 x */
-    0x1.14p-57f, 0x1.73c6e6p-2f, -0x1.d0573p-3f, 0x1.6b2ff6p-5f,
+    -0x1.0cccccp-61f, 0x1.754daep-2f, -0x1.cf5a34p-3f, 0x1.6cba4ep-5f,
     /* node 2764 y */
-    -0x1.f8ccccp-58f, -0x1.5f9d34p-2f, 0x1.7b53eap-2f, -0x1.758ba4p-6f,
+    -0x1.e2p-57f, -0x1.5eeabcp-2f, 0x1.7e9d7cp-2f, -0x1.7b829cp-6f,
     /* node 2764 z */
-    -0x1.ccccccp-58f, -0x1.e91edp-8f, 0x1.74f2bp-6f, 0x1.728968p-2f,
+    -0x1.99999ap-62f, -0x1.d6f41ep-8f, 0x1.6a5f24p-6f, 0x1.733feep-2f,
     /* node 2765 x */
-    0x1.d9999ap-59f, 0x1.eaaabp-2f, -0x1.26457ap-2f, 0x1.a089cp-5f,
+    0x1.44ccccp-57f, 0x1.ea4d2ap-2f, -0x1.26699cp-2f, 0x1.99fd12p-5f,
     /* node 2765 y */
-    0x1.8aa666p-58f, -0x1.bf75d2p-2f, 0x1.d998c2p-2f, 0x1.791d8cp-10f,
+    -0x1.23a4ccp-56f, -0x1.bf1c38p-2f, 0x1.db3e14p-2f, 0x1.337404p-11f,
     /* node 2765 z */
-    -0x1.333334p-59f, -0x1.cc2442p-6f, 0x1.63bdbep-5f, 0x1.0d1044p-1f,
+    -0x1.4p-57f, -0x1.be23ap-6f, 0x1.60321ep-5f, 0x1.0d7e18p-1f,
     /* node 2766 x */
-    0x1.2cccccp-58f, 0x1.984c4ap-2f, -0x1.ec5738p-3f, 0x1.f48428p-5f,
+    0x1.5cp-56f, 0x1.978f8ap-2f, -0x1.e959acp-3f, 0x1.ef832ap-5f,
     /* node 2766 y */
-    -0x1.6cccccp-59f, -0x1.8b5288p-2f, 0x1.97f7e4p-2f, 0x1.9621eap-6f,
+    0x1.ccccccp-60f, -0x1.8bfe8ap-2f, 0x1.9963fcp-2f, 0x1.9e3c88p-6f,
     /* node 2766 z */
-    0x1.333334p-60f, -0x1.33a4fep-5f, 0x1.72ed96p-4f, 0x1.c860c2p-2f,
+    -0x1.ccccccp-58f, -0x1.37f3c6p-5f, 0x1.74ee94p-4f, 0x1.c88452p-2f,
     /* node 2767 x */
-    -0x1.acccccp-59f, 0x1.156ccep-1f, -0x1.345d8ap-2f, 0x1.372502p-4f,
+    -0x1.c33334p-57f, 0x1.157f8ep-1f, -0x1.359ee6p-2f, 0x1.379f38p-4f,
     /* node 2767 y */
-    -0x1.53999ap-56f, -0x1.e14c1ap-2f, 0x1.04da7p-1f, 0x1.58f09ep-5f,
+    -0x1.44ccccp-57f, -0x1.e0f948p-2f, 0x1.047cc6p-1f, 0x1.57f39cp-5f,
     /* node 2767 z */
-    -0x1.99999ap-58f, -0x1.926708p-5f, 0x1.c6ba02p-4f, 0x1.4ef2eap-1f,
+    -0x1.99999ap-62f, -0x1.9a386p-5f, 0x1.ca2b44p-4f, 0x1.4f0fbep-1f,
     /* node 2768 x */
-    0x1.233334p-57f, 0x1.ecb94cp-2f, -0x1.17bd12p-2f, 0x1.7095d6p-4f,
+    0x1.aa6666p-56f, 0x1.ecf63ep-2f, -0x1.17bb34p-2f, 0x1.705406p-4f,
     /* node 2768 y */
-    0x1.b33334p-58f, -0x1.dae75p-2f, 0x1.eea37cp-2f, 0x1.c24272p-5f,
+    -0x1.0eccccp-55f, -0x1.dcd13p-2f, 0x1.f21eaep-2f, 0x1.c880dap-5f,
     /* node 2768 z */
-    0x1.99999ap-61f, -0x1.bb4bccp-5f, 0x1.0fdbfep-3f, 0x1.3139d2p-1f,
+    0x1.19999ap-58f, -0x1.c1cfdcp-5f, 0x1.111fdp-3f, 0x1.315232p-1f,
     /* node 2769 x */
-    0x1.db3334p-56f, 0x1.43c2bcp-1f, -0x1.3664acp-2f, 0x1.003c66p-3f,
+    0x1.fp-57f, 0x1.442636p-1f, -0x1.36ebep-2f, 0x1.007a9ep-3f,
     /* node 2769 y */
-    -0x1.153334p-55f, -0x1.216158p-1f, 0x1.534038p-1f, 0x1.41675ap-4f,
+    0x1.c4ccccp-57f, -0x1.217c26p-1f, 0x1.5469a2p-1f, 0x1.425316p-4f,
     /* node 2769 z */
-    -0x1.ccccccp-58f, -0x1.a3142ep-5f, 0x1.3726d2p-3f, 0x1.b1ca36p-1f,
+    -0x1.333334p-58f, -0x1.a4ffep-5f, 0x1.398bfcp-3f, 0x1.b21cdep-1f,
     /* node 2770 x */
-    -0x1.733334p-57f, 0x1.569414p-1f, -0x1.50657cp-2f, 0x1.cbd548p-4f,
+    0x1.2f3334p-55f, 0x1.56b918p-1f, -0x1.50774p-2f, 0x1.cb8752p-4f,
     /* node 2770 y */
-    -0x1.d8p-58f, -0x1.20b6cap-1f, 0x1.53bddep-1f, 0x1.1bd1a4p-5f,
+    -0x1.6p-55f, -0x1.20478ap-1f, 0x1.5348fp-1f, 0x1.2030bap-5f,
     /* node 2770 z */
-    -0x1.4cccccp-57f, -0x1.48492ep-5f, 0x1.09d6a6p-3f, 0x1.cad61ap-1f,
+    -0x1.333334p-58f, -0x1.4edc44p-5f, 0x1.0cb718p-3f, 0x1.ca8d62p-1f,
     /* node 2771 x */
-    -0x1.b66666p-57f, 0x1.871f9cp-1f, -0x1.640cc2p-2f, 0x1.403302p-3f,
+    0x1.99999ap-58f, 0x1.86cb0ap-1f, -0x1.63d0f6p-2f, 0x1.3fa1ap-3f,
     /* node 2771 y */
-    0x1.7p-56f, -0x1.49de68p-1f, 0x1.96f93ap-1f, 0x1.9b338cp-4f,
+    0x1.1b3334p-56f, -0x1.49d654p-1f, 0x1.97461ap-1f, 0x1.9aa49cp-4f,
     /* node 2771 z */
-    -0x1.99999ap-58f, -0x1.a267ccp-5f, 0x1.6060ecp-3f, 0x1.170e08p+0f,
+    -0x1.99999ap-58f, -0x1.a85596p-5f, 0x1.60ea9cp-3f, 0x1.16da42p+0f,
     /* node 2772 x */
-    0x1.966666p-57f, 0x1.695e58p-1f, -0x1.4ef94ep-2f, 0x1.6a5d3ep-3f,
+    0x1.e66666p-55f, 0x1.6869f6p-1f, -0x1.4f1758p-2f, 0x1.68f376p-3f,
     /* node 2772 y */
-    0x1.666666p-61f, -0x1.35acap-1f, 0x1.6d0bd8p-1f, 0x1.fad6p-4f,
+    0x1.166666p-57f, -0x1.34d3a6p-1f, 0x1.6b8688p-1f, 0x1.005ceep-3f,
     /* node 2772 z */
-    -0x1p-58f, -0x1.aa3b6ap-5f, 0x1.5545p-3f, 0x1.ff7a62p-1f,
+    -0x1.333334p-58f, -0x1.af0e6ap-5f, 0x1.550b1ap-3f, 0x1.fef8cap-1f,
     /* node 2773 x */
-    0x1.09999ap-56f, 0x1.295e34p-1f, -0x1.2a5ebep-2f, 0x1.02750ep-3f,
+    -0x1.14ccccp-55f, 0x1.29eb06p-1f, -0x1.2d1cc8p-2f, 0x1.02f524p-3f,
     /* node 2773 y */
-    -0x1.74ccccp-56f, -0x1.0cc2dap-1f, 0x1.261c16p-1f, 0x1.7cabd4p-4f,
+    -0x1.133334p-59f, -0x1.0bfb68p-1f, 0x1.24fdaap-1f, 0x1.81d4aep-4f,
     /* node 2773 z */
-    -0x1p-58f, -0x1.b8e05p-5f, 0x1.639f2p-3f, 0x1.907dp-1f,
+    -0x1.99999ap-58f, -0x1.c31632p-5f, 0x1.673842p-3f, 0x1.907d7p-1f,
     /* node 2774 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2774 y */
@@ -813,23 +813,23 @@ static const float tfit_heart_forward_coef[11592] = {
     /* node 2774 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2775 x */
-    0x1.38ccccp-59f, 0x1.399736p-4f, -0x1.9edacap-5f, 0x1.ac50a2p-9f,
+    -0x1.74ccccp-61f, 0x1.3ab406p-4f, -0x1.a18d2cp-5f, 0x1.bc2e9ep-9f,
     /* node 2775 y */
-    -0x1.49999ap-60f, -0x1.0b9cap-5f, 0x1.375fcp-5f, -0x1.223242p-6f,
+    -0x1.533334p-60f, -0x1.12a93ap-5f, 0x1.3da654p-5f, -0x1.298c36p-6f,
     /* node 2775 z */
-    -0x1.ccccccp-62f, 0x1.0498ap-6f, -0x1.c1fa36p-6f, 0x1.b9799cp-5f,
+    -0x1.333334p-62f, 0x1.03519cp-6f, -0x1.befb1ep-6f, 0x1.b94a94p-5f,
     /* node 2776 x */
-    -0x1.b4ccccp-58f, 0x1.0bb4cep-2f, -0x1.5ffed8p-3f, 0x1.63707p-7f,
+    -0x1.133334p-62f, 0x1.0bcb6cp-2f, -0x1.61867ap-3f, 0x1.72b58ap-7f,
     /* node 2776 y */
-    -0x1.cp-57f, -0x1.8882p-3f, 0x1.997ccap-3f, -0x1.098682p-4f,
+    0x1.466666p-59f, -0x1.877894p-3f, 0x1.97ff0ep-3f, -0x1.08a91ap-4f,
     /* node 2776 z */
-    0x1.4p-58f, 0x1.134f02p-5f, -0x1.5fa3bp-4f, 0x1.ef168ep-3f,
+    -0x1.333334p-60f, 0x1.1448f8p-5f, -0x1.615e9p-4f, 0x1.ef8586p-3f,
     /* node 2777 x */
-    0x1.99999ap-64f, 0x1.b9c292p-3f, -0x1.484c8p-3f, 0x1.d7a28cp-6f,
+    -0x1.41999ap-58f, 0x1.b8e9dcp-3f, -0x1.47ff8ep-3f, 0x1.d30ca8p-6f,
     /* node 2777 y */
-    0x1.b9999ap-60f, -0x1.17cffp-3f, 0x1.13a7dap-3f, -0x1.2077cp-5f,
+    -0x1.be6666p-58f, -0x1.1677c4p-3f, 0x1.1269eap-3f, -0x1.22c316p-5f,
     /* node 2777 z */
-    0x1.4p-59f, 0x1.8da3bap-6f, -0x1.80f374p-5f, 0x1.1ae75ep-3f,
+    -0x1p-61f, 0x1.8d366ep-6f, -0x1.85dc1ap-5f, 0x1.1a6034p-3f,
     /* node 2778 x */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2778 y */
@@ -837,5219 +837,5219 @@ static const float tfit_heart_forward_coef[11592] = {
     /* node 2778 z */
     -0x0p+0f, 0x0p+0f, 0x0p+0f, -0x0p+0f,
     /* node 2779 x */
-    0x1.11999ap-59f, 0x1.0fd1fap-3f, -0x1.8b4056p-4f, 0x1.c6dc0ap-7f,
+    0x1.9p-59f, 0x1.0ffe3ep-3f, -0x1.8da852p-4f, 0x1.cf3c1cp-7f,
     /* node 2779 y */
-    -0x1.2p-59f, -0x1.9a6b9ap-4f, 0x1.cb4ebep-4f, -0x1.e4b5a2p-6f,
+    -0x1.ap-60f, -0x1.9b2874p-4f, 0x1.cbaf6cp-4f, -0x1.e3f8e6p-6f,
     /* node 2779 z */
-    -0x1.19999ap-60f, 0x1.a35ad2p-6f, -0x1.1a832p-5f, 0x1.78fb1p-4f,
+    0x1.99999ap-62f, 0x1.a5042cp-6f, -0x1.1b36acp-5f, 0x1.7629p-4f,
     /* node 2780 x */
-    0x1.39999ap-58f, 0x1.4319ep-2f, -0x1.8fd6p-3f, 0x1.bb7462p-7f,
+    -0x1.d6ccccp-57f, 0x1.442abp-2f, -0x1.8f910ep-3f, 0x1.bcab56p-7f,
     /* node 2780 y */
-    -0x1.ap-59f, -0x1.06a118p-2f, 0x1.13ee7cp-2f, -0x1.1d260cp-4f,
+    -0x1.2b3334p-56f, -0x1.067522p-2f, 0x1.169652p-2f, -0x1.1d9a7ap-4f,
     /* node 2780 z */
-    -0x1.b33334p-59f, 0x1.ebe924p-6f, -0x1.13d84p-4f, 0x1.390b9ap-2f,
+    -0x1.b33334p-59f, 0x1.e41b48p-6f, -0x1.119bccp-4f, 0x1.3b8218p-2f,
     /* node 2781 x */
-    -0x1.9bccccp-57f, 0x1.11ddcap-2f, -0x1.6fad5cp-3f, 0x1.7641b8p-7f,
+    0x1.2p-60f, 0x1.129794p-2f, -0x1.704046p-3f, 0x1.83644p-7f,
     /* node 2781 y */
-    -0x1.dp-57f, -0x1.88cad4p-3f, 0x1.8e44fep-3f, -0x1.ebc5b6p-5f,
+    -0x1.033334p-57f, -0x1.8950c2p-3f, 0x1.906ccep-3f, -0x1.e2dc62p-5f,
     /* node 2781 z */
-    0x1.4cccccp-59f, 0x1.05c0bcp-5f, -0x1.ba3d84p-5f, 0x1.fda66ap-3f,
+    -0x1.99999ap-59f, 0x1.043ab6p-5f, -0x1.acb35ap-5f, 0x1.003fa2p-2f,
     /* node 2782 x */
-    0x1.3f999ap-57f, 0x1.b6ceaap-2f, -0x1.f7d058p-3f, 0x1.eceef2p-7f,
+    0x1.4f3334p-57f, 0x1.b6b828p-2f, -0x1.f674dep-3f, 0x1.cea64ep-7f,
     /* node 2782 y */
-    0x1.266666p-60f, -0x1.77eac4p-2f, 0x1.99d98cp-2f, -0x1.2165a6p-4f,
+    -0x1.a33334p-57f, -0x1.77ab32p-2f, 0x1.9c3ff6p-2f, -0x1.225158p-4f,
     /* node 2782 z */
-    0x1.333334p-59f, 0x1.92516p-8f, -0x1.566c92p-5f, 0x1.eded72p-2f,
+    0x1p-58f, 0x1.87a5b8p-8f, -0x1.564cacp-5f, 0x1.ef74e2p-2f,
     /* node 2783 x */
-    -0x1.8p-60f, 0x1.9c0306p-2f, -0x1.fc02bap-3f, 0x1.e790bep-6f,
+    0x1.0eccccp-56f, 0x1.9b48f4p-2f, -0x1.fa73dep-3f, 0x1.eabab8p-6f,
     /* node 2783 y */
-    0x1.21999ap-57f, -0x1.6c587ep-2f, 0x1.89e74cp-2f, -0x1.b2772cp-5f,
+    -0x1.0a6666p-55f, -0x1.6bc1f8p-2f, 0x1.8a8322p-2f, -0x1.a92cc2p-5f,
     /* node 2783 z */
-    -0x1.99999ap-61f, 0x1.f02ee8p-9f, -0x1.050ad8p-6f, 0x1.b61e1cp-2f,
+    -0x1.99999ap-60f, 0x1.f759c6p-9f, -0x1.e4b53ep-7f, 0x1.b6b554p-2f,
     /* node 2784 x */
-    -0x1.f66666p-58f, 0x1.1ba1a8p-1f, -0x1.2be6eap-2f, 0x1.e8b8fep-6f,
+    0x1.d33334p-59f, 0x1.1bcbc6p-1f, -0x1.2bc91cp-2f, 0x1.e5520ap-6f,
     /* node 2784 y */
-    -0x1.08ccccp-56f, -0x1.ec9a2ep-2f, 0x1.1aae2p-1f, -0x1.3790dap-4f,
+    -0x1.b8p-57f, -0x1.ed54bcp-2f, 0x1.1c3e1cp-1f, -0x1.38e98p-4f,
     /* node 2784 z */
-    -0x1.4cccccp-58f, -0x1.f20e9ap-8f, -0x1.e84a0cp-7f, 0x1.4e60c8p-1f,
+    0x1p-59f, -0x1.ed7f32p-8f, -0x1.004cf8p-6f, 0x1.4eb806p-1f,
     /* node 2785 x */
-    -0x1.f2p-58f, 0x1.e61162p-2f, -0x1.077472p-2f, -0x1.b02cbp-9f,
+    0x1.14b334p-57f, 0x1.e60c3ap-2f, -0x1.0755c6p-2f, -0x1.71cc2cp-9f,
     /* node 2785 y */
-    -0x1.fcccccp-56f, -0x1.a313fcp-2f, 0x1.d35402p-2f, -0x1.df6722p-4f,
+    -0x1.666666p-60f, -0x1.a3147cp-2f, 0x1.d3f69cp-2f, -0x1.da8a4ep-4f,
     /* node 2785 z */
-    0x1.333334p-59f, 0x1.96d95p-6f, -0x1.719954p-4f, 0x1.16d174p-1f,
+    -0x1.e66666p-58f, 0x1.937dfp-6f, -0x1.6bc3dp-4f, 0x1.16d36cp-1f,
     /* node 2786 x */
-    0x1.4f58p-57f, 0x1.35c016p-1f, -0x1.36e4b6p-2f, -0x1.543caap-12f,
+    0x1.010334p-59f, 0x1.353c1cp-1f, -0x1.37f352p-2f, -0x1.c9d338p-15f,
     /* node 2786 y */
-    -0x1.04p-55f, -0x1.0984f4p-1f, 0x1.3b7cd4p-1f, -0x1.e2ffd2p-4f,
+    0x1p-58f, -0x1.090748p-1f, 0x1.3a71cep-1f, -0x1.df8106p-4f,
     /* node 2786 z */
-    -0x1.ccccccp-59f, 0x1.b53f06p-7f, -0x1.4cb9dcp-4f, 0x1.7a5de4p-1f,
+    -0x1.99999ap-58f, 0x1.a3076ap-7f, -0x1.471e94p-4f, 0x1.79bbecp-1f,
     /* node 2787 x */
-    0x1.d33334p-58f, 0x1.0bbd2ap-1f, -0x1.25f15p-2f, 0x1.4aa8d6p-5f,
+    -0x1.48ccccp-57f, 0x1.0b4692p-1f, -0x1.2635d2p-2f, 0x1.468af6p-5f,
     /* node 2787 y */
-    -0x1.39999ap-57f, -0x1.db75f2p-2f, 0x1.0d0d2p-1f, -0x1.a1c37ep-5f,
+    0x1.3f3334p-56f, -0x1.da0032p-2f, 0x1.0d6844p-1f, -0x1.a00bd8p-5f,
     /* node 2787 z */
-    -0x1.666666p-58f, -0x1.6e1f82p-7f, 0x1.6d2cep-7f, 0x1.32c17p-1f,
+    -0x1.666666p-58f, -0x1.7bcebp-7f, 0x1.8cee06p-7f, 0x1.32e0b6p-1f,
     /* node 2788 x */
-    0x1.16ccccp-55f, 0x1.40fa8ep-1f, -0x1.39552ep-2f, 0x1.0d5098p-4f,
+    0x1.4f3334p-55f, 0x1.40e17cp-1f, -0x1.39e6eep-2f, 0x1.0ff434p-4f,
     /* node 2788 y */
-    0x1.366666p-59f, -0x1.16f25ep-1f, 0x1.44453p-1f, -0x1.9fb332p-8f,
+    -0x1.100cccp-55f, -0x1.170282p-1f, 0x1.4424e8p-1f, -0x1.9af114p-8f,
     /* node 2788 z */
-    -0x1.19999ap-56f, -0x1.1db598p-5f, 0x1.f22f1ep-5f, 0x1.8b2a18p-1f,
+    0x1.333334p-59f, -0x1.2311fap-5f, 0x1.f9878ap-5f, 0x1.8b31aep-1f,
     /* node 2789 x */
-    0x1.07999ap-56f, 0x1.5fc7d6p-1f, -0x1.566494p-2f, 0x1.3f243cp-5f,
+    -0x1.47999ap-56f, 0x1.5faef2p-1f, -0x1.5697a6p-2f, 0x1.3cd782p-5f,
     /* node 2789 y */
-    -0x1.de6666p-56f, -0x1.26f888p-1f, 0x1.670fc6p-1f, -0x1.0fc372p-4f,
+    -0x1.fcccccp-58f, -0x1.270c58p-1f, 0x1.68033ep-1f, -0x1.1057cap-4f,
     /* node 2789 z */
-    -0x1.b33334p-57f, -0x1.31b0ccp-6f, 0x1.0b525ap-6f, 0x1.b5d8ecp-1f,
+    -0x1.ccccccp-58f, -0x1.350e32p-6f, 0x1.11d4cp-6f, 0x1.b60b68p-1f,
     /* node 2790 x */
-    0x1.18p-57f, 0x1.96b3cep-1f, -0x1.687cfep-2f, 0x1.097c6ep-4f,
+    0x1.ae6666p-57f, 0x1.96ab24p-1f, -0x1.68f4bp-2f, 0x1.0974c6p-4f,
     /* node 2790 y */
-    -0x1.553334p-56f, -0x1.4c587ap-1f, 0x1.c0d01ep-1f, -0x1.382f42p-5f,
+    0x1.133334p-60f, -0x1.4c72ccp-1f, 0x1.c11ee6p-1f, -0x1.36cc98p-5f,
     /* node 2790 z */
-    -0x1.333334p-59f, -0x1.7f7cb8p-6f, 0x1.bb8364p-5f, 0x1.131fe2p+0f,
+    -0x0p+0f, -0x1.871584p-6f, 0x1.bfb00cp-5f, 0x1.1323bcp+0f,
     /* node 2791 x */
-    0x1.3e6666p-56f, 0x1.7755d6p-1f, -0x1.51d7fep-2f, 0x1.89f0aap-4f,
+    0x1.39999ap-56f, 0x1.771644p-1f, -0x1.51e218p-2f, 0x1.8a4598p-4f,
     /* node 2791 y */
-    0x1.09b334p-55f, -0x1.3b9dbp-1f, 0x1.9f8f16p-1f, 0x1.6e9c68p-6f,
+    -0x1.586666p-55f, -0x1.3bd39ep-1f, 0x1.9fd308p-1f, 0x1.74dac6p-6f,
     /* node 2791 z */
-    -0x1.333334p-58f, -0x1.0bb0e6p-5f, 0x1.a1dca6p-4f, 0x1.f3d7a8p-1f,
+    -0x1.333334p-58f, -0x1.0d95fap-5f, 0x1.a57c36p-4f, 0x1.f3d5fap-1f,
     /* node 2792 x */
-    0x1.233334p-57f, 0x1.d51c5ep-1f, -0x1.9e8e84p-2f, 0x1.d53ec6p-4f,
+    0x1.133334p-56f, 0x1.d4f99ap-1f, -0x1.9ec372p-2f, 0x1.d41a62p-4f,
     /* node 2792 y */
-    -0x1.c66666p-57f, -0x1.6914e2p-1f, 0x1.04a522p+0f, 0x1.55b3cap-6f,
+    -0x1.2d2666p-54f, -0x1.6956a6p-1f, 0x1.04ee12p+0f, 0x1.59c8b6p-6f,
     /* node 2792 z */
-    -0x1.333334p-56f, -0x1.7868ep-6f, 0x1.a0c44ap-4f, 0x1.459204p+0f,
+    -0x1.99999ap-59f, -0x1.7d8012p-6f, 0x1.a0ae56p-4f, 0x1.4576c8p+0f,
     /* node 2793 x */
-    0x1.5c6666p-56f, 0x1.c1a748p-1f, -0x1.842164p-2f, 0x1.426a9ap-5f,
+    -0x1.166666p-59f, 0x1.c1a178p-1f, -0x1.8479f6p-2f, 0x1.4252aap-5f,
     /* node 2793 y */
-    -0x1.9cccccp-58f, -0x1.5f2016p-1f, 0x1.f20b32p-1f, -0x1.45ccaep-4f,
+    -0x1.546666p-55f, -0x1.5f5d68p-1f, 0x1.f29bbep-1f, -0x1.44c93p-4f,
     /* node 2793 z */
-    -0x1.333334p-58f, -0x1.83578p-7f, 0x1.abe88ep-10f, 0x1.2b59a4p+0f,
+    -0x1.666666p-56f, -0x1.8c9f48p-7f, 0x1.062216p-9f, 0x1.2b58fap+0f,
     /* node 2794 x */
-    0x1.47999ap-55f, 0x1.0252e4p+0f, -0x1.b51fcep-2f, 0x1.3f41aep-4f,
+    0x1.58999ap-54f, 0x1.023a7ap+0f, -0x1.b54bdep-2f, 0x1.3e894ap-4f,
     /* node 2794 y */
-    -0x1.90ccccp-57f, -0x1.775908p-1f, 0x1.237d68p+0f, -0x1.208936p-5f,
+    -0x1.94ccccp-56f, -0x1.7780bp-1f, 0x1.2396e2p+0f, -0x1.1f7c18p-5f,
     /* node 2794 z */
-    -0x1.99999ap-57f, -0x1.126ec8p-6f, 0x1.fc959ap-5f, 0x1.69776ap+0f,
+    -0x1.4p-56f, -0x1.182b38p-6f, 0x1.0009ecp-4f, 0x1.696c52p+0f,
     /* node 2795 x */
-    0x1.d9999ap-58f, 0x1.afb2b8p-1f, -0x1.79e29cp-2f, 0x1.1bf1a8p-3f,
+    0x1.1a6666p-55f, 0x1.af4c3p-1f, -0x1.79f948p-2f, 0x1.1c51b6p-3f,
     /* node 2795 y */
-    0x1.89999ap-58f, -0x1.5895p-1f, 0x1.ce0506p-1f, 0x1.c8005p-5f,
+    0x1.f4ccccp-57f, -0x1.589514p-1f, 0x1.cdf194p-1f, 0x1.ca9f1ep-5f,
     /* node 2795 z */
-    -0x1.4cccccp-57f, -0x1.2ae61ep-5f, 0x1.1662fep-3f, 0x1.2dccf2p+0f,
+    -0x1.333334p-58f, -0x1.2df3eep-5f, 0x1.1761fcp-3f, 0x1.2da55p+0f,
     /* node 2796 x */
-    -0x1.09999ap-57f, 0x1.0218dap+0f, -0x1.ba287cp-2f, 0x1.3c1214p-3f,
+    -0x1.c9999ap-57f, 0x1.021c2cp+0f, -0x1.ba1bbap-2f, 0x1.3c5b54p-3f,
     /* node 2796 y */
-    0x1.626666p-56f, -0x1.83ab76p-1f, 0x1.1e8cp+0f, 0x1.3b87acp-4f,
+    -0x1.58ccccp-55f, -0x1.83cf9ep-1f, 0x1.1ebf02p+0f, 0x1.3b550ap-4f,
     /* node 2796 z */
-    -0x1.ccccccp-58f, -0x1.34e2d8p-5f, 0x1.37a80ep-3f, 0x1.7cee8ap+0f,
+    -0x0p+0f, -0x1.357f54p-5f, 0x1.38565ep-3f, 0x1.7ce0aap+0f,
     /* node 2797 x */
-    0x1.9a6666p-55f, 0x1.ddac8p-1f, -0x1.a416d8p-2f, 0x1.821ca6p-3f,
+    -0x1.c1999ap-56f, 0x1.ddcecp-1f, -0x1.a4788cp-2f, 0x1.81d0fcp-3f,
     /* node 2797 y */
-    0x1.99999ap-63f, -0x1.736086p-1f, 0x1.f7d934p-1f, 0x1.ffdddcp-4f,
+    0x1.7cccccp-56f, -0x1.73cb2ap-1f, 0x1.f81cp-1f, 0x1.0141bap-3f,
     /* node 2797 z */
-    -0x1p-57f, -0x1.7588e6p-5f, 0x1.695632p-3f, 0x1.5be13cp+0f,
+    -0x1.8p-57f, -0x1.78015ep-5f, 0x1.6ac096p-3f, 0x1.5bc6cep+0f,
     /* node 2798 x */
-    0x1.28ccccp-54f, 0x1.18815cp+0f, -0x1.e4ff92p-2f, 0x1.8c22bp-3f,
+    -0x1.ccccccp-57f, 0x1.18627ep+0f, -0x1.e5e3bcp-2f, 0x1.8b613cp-3f,
     /* node 2798 y */
-    -0x1.e4ccccp-56f, -0x1.897b98p-1f, 0x1.29485p+0f, 0x1.e58f86p-4f,
+    0x1.19999ap-58f, -0x1.8987ccp-1f, 0x1.29426cp+0f, 0x1.e7a2f4p-4f,
     /* node 2798 z */
-    -0x1.333334p-58f, -0x1.51a668p-5f, 0x1.6c001p-3f, 0x1.a84916p+0f,
+    -0x1.333334p-56f, -0x1.5620a2p-5f, 0x1.6b1c54p-3f, 0x1.a83656p+0f,
     /* node 2799 x */
-    0x1.066666p-56f, 0x1.39c878p+0f, -0x1.0a4b3cp-1f, 0x1.48bc68p-3f,
+    0x1.426666p-55f, 0x1.39b8dep+0f, -0x1.0ae716p-1f, 0x1.47ff1cp-3f,
     /* node 2799 y */
-    0x1.61999ap-56f, -0x1.a0b8a2p-1f, 0x1.58dc82p+0f, 0x1.540944p-4f,
+    0x1.dp-57f, -0x1.a0fe14p-1f, 0x1.5901b4p+0f, 0x1.54f798p-4f,
     /* node 2799 z */
-    0x1.99999ap-59f, -0x1.d2ed16p-6f, 0x1.189e88p-3f, 0x1.d29adap+0f,
+    -0x1p-57f, -0x1.e04ca2p-6f, 0x1.176fc6p-3f, 0x1.d270b6p+0f,
     /* node 2800 x */
-    0x1.373334p-54f, 0x1.50829ep+0f, -0x1.19fce2p-1f, 0x1.8954ap-3f,
+    0x1.4cccccp-59f, 0x1.50d07ep+0f, -0x1.197ceep-1f, 0x1.8b5fd4p-3f,
     /* node 2800 y */
-    -0x1.ccccccp-60f, -0x1.a9a9b6p-1f, 0x1.6636dcp+0f, 0x1.02568p-3f,
+    -0x1.4cp-55f, -0x1.a9de18p-1f, 0x1.66d3b4p+0f, 0x1.04885ep-3f,
     /* node 2800 z */
-    0x1p-57f, -0x1.0014f6p-5f, 0x1.566facp-3f, 0x1.069272p+1f,
+    -0x1.666666p-57f, -0x1.fbb144p-6f, 0x1.5c01ecp-3f, 0x1.06ac8ap+1f,
     /* node 2801 x */
-    -0x1.266666p-56f, 0x1.2cb52ep+0f, -0x1.0b33p-1f, 0x1.e3ebbep-3f,
+    0x1.bp-56f, 0x1.2cf65ep+0f, -0x1.0aebb6p-1f, 0x1.e56012p-3f,
     /* node 2801 y */
-    -0x1.2b3334p-55f, -0x1.947e3cp-1f, 0x1.311daap+0f, 0x1.672baap-3f,
+    -0x1.f66666p-56f, -0x1.94bfdp-1f, 0x1.31b782p+0f, 0x1.67a152p-3f,
     /* node 2801 z */
-    -0x1.ccccccp-57f, -0x1.544cfap-5f, 0x1.af5634p-3f, 0x1.d65836p+0f,
+    -0x0p+0f, -0x1.50eb34p-5f, 0x1.b3bb84p-3f, 0x1.d69bc8p+0f,
     /* node 2802 x */
-    0x1.533334p-55f, 0x1.fffa8ap-1f, -0x1.b4496ap-2f, 0x1.cf951ap-3f,
+    0x1.10ccccp-54f, 0x1.ffa46p-1f, -0x1.b4d264p-2f, 0x1.cf0e56p-3f,
     /* node 2802 y */
-    -0x1.28p-56f, -0x1.7fa0cap-1f, 0x1.099f44p+0f, 0x1.56ff74p-3f,
+    -0x1.633334p-57f, -0x1.7fb244p-1f, 0x1.099e22p+0f, 0x1.584d1cp-3f,
     /* node 2802 z */
-    -0x1p-57f, -0x1.6eee84p-5f, 0x1.ae975p-3f, 0x1.880b1ap+0f,
+    -0x1.99999ap-56f, -0x1.73b15ap-5f, 0x1.ae0d4ep-3f, 0x1.87d30cp+0f,
     /* node 2803 x */
-    0x1.59999ap-61f, 0x1.e58f8ep-3f, -0x1.442eep-3f, 0x1.d0e086p-7f,
+    0x1.d1999ap-59f, 0x1.e5a40cp-3f, -0x1.44abb2p-3f, 0x1.d057acp-7f,
     /* node 2803 y */
-    -0x1.cp-57f, -0x1.62c09ap-3f, 0x1.4dac9ep-3f, -0x1.02da88p-4f,
+    -0x1.64ccccp-57f, -0x1.62eb0cp-3f, 0x1.4de39ep-3f, -0x1.02f62cp-4f,
     /* node 2803 z */
-    0x1p-60f, 0x1.c8273ap-6f, -0x1.ad4874p-4f, 0x1.094ff6p-2f,
+    -0x1.666666p-59f, 0x1.c674bap-6f, -0x1.ad6dcp-4f, 0x1.096306p-2f,
     /* node 2804 x */
-    0x1.7b3334p-56f, 0x1.2f2c82p-2f, -0x1.50a31ap-3f, -0x1.20182p-5f,
+    -0x1.69999ap-59f, 0x1.2f708ap-2f, -0x1.510128p-3f, -0x1.21186ep-5f,
     /* node 2804 y */
-    -0x1.09999ap-56f, -0x1.e9aefep-3f, 0x1.e53dbap-3f, -0x1.d47152p-4f,
+    -0x1.3b3334p-56f, -0x1.e9f166p-3f, 0x1.e5d95cp-3f, -0x1.d4af82p-4f,
     /* node 2804 z */
-    0x1.333334p-60f, 0x1.eeebaap-5f, -0x1.54ebecp-3f, 0x1.79b822p-2f,
+    -0x1.99999ap-61f, 0x1.efc466p-5f, -0x1.55471cp-3f, 0x1.79ee18p-2f,
     /* node 2805 x */
-    0x1.91999ap-57f, 0x1.c6835cp-2f, -0x1.c1dd84p-3f, -0x1.14c384p-4f,
+    -0x1.38p-57f, 0x1.c6e504p-2f, -0x1.c24bd4p-3f, -0x1.15a9a6p-4f,
     /* node 2805 y */
-    -0x1.3cccccp-57f, -0x1.77b598p-2f, 0x1.858f06p-2f, -0x1.565142p-3f,
+    -0x1.a66666p-59f, -0x1.78793cp-2f, 0x1.8658a8p-2f, -0x1.56bf3p-3f,
     /* node 2805 z */
-    -0x1.4p-57f, 0x1.088d7cp-4f, -0x1.a0d522p-3f, 0x1.187b74p-1f,
+    0x1.99999ap-62f, 0x1.089258p-4f, -0x1.a096c6p-3f, 0x1.18b602p-1f,
     /* node 2806 x */
-    0x1.a06666p-58f, 0x1.63c908p-2f, -0x1.9c3a3p-3f, -0x1.4e28ap-7f,
+    -0x1.133334p-62f, 0x1.63b36ap-2f, -0x1.9ce166p-3f, -0x1.56b4acp-7f,
     /* node 2806 y */
-    -0x1.d1999ap-56f, -0x1.4b1f7ap-2f, 0x1.3ea34ap-2f, -0x1.d738aep-4f,
+    -0x1p-58f, -0x1.4b3142p-2f, 0x1.3ecf18p-2f, -0x1.d5def4p-4f,
     /* node 2806 z */
-    -0x1.333334p-58f, 0x1.b9222ep-5f, -0x1.338ea8p-3f, 0x1.9e6a74p-2f,
+    -0x1.ccccccp-59f, 0x1.b7822ap-5f, -0x1.33b19cp-3f, 0x1.9eb14p-2f,
     /* node 2807 x */
-    0x1p-61f, 0x1.9088e4p-3f, -0x1.37f688p-3f, 0x1.67ed9ep-5f,
+    -0x1.733334p-58f, 0x1.913b4cp-3f, -0x1.388e3cp-3f, 0x1.694136p-5f,
     /* node 2807 y */
-    -0x1.133334p-57f, -0x1.a62b8cp-3f, 0x1.8ac3dcp-3f, -0x1.25ccep-4f,
+    -0x1.2cccccp-58f, -0x1.a68e22p-3f, 0x1.8b574p-3f, -0x1.247264p-4f,
     /* node 2807 z */
-    0x1.a66666p-59f, 0x1.cbcb7cp-5f, -0x1.8e7b3ep-4f, 0x1.5f5714p-3f,
+    0x1.0cccccp-59f, 0x1.cad804p-5f, -0x1.8e9ad4p-4f, 0x1.5f76a6p-3f,
     /* node 2808 x */
-    -0x1.966666p-57f, 0x1.36f98ep-2f, -0x1.7ab02p-3f, 0x1.045a34p-8f,
+    0x1.60cp-56f, 0x1.370914p-2f, -0x1.7b85b4p-3f, 0x1.f4f4d2p-9f,
     /* node 2808 y */
-    -0x1.7cccccp-56f, -0x1.0690fp-2f, 0x1.0b3dd8p-2f, -0x1.910bdep-4f,
+    -0x1.cp-59f, -0x1.070a48p-2f, 0x1.0bf2ccp-2f, -0x1.9167e8p-4f,
     /* node 2808 z */
-    0x1.666666p-60f, 0x1.dac586p-5f, -0x1.1532b4p-3f, 0x1.5c6f72p-2f,
+    0x1.133334p-57f, 0x1.dafd8ap-5f, -0x1.15d2bcp-3f, 0x1.5cd55ep-2f,
     /* node 2809 x */
-    0x1.4a6666p-56f, 0x1.00d3aep-1f, -0x1.02a042p-2f, -0x1.583104p-5f,
+    0x1.ef3334p-56f, 0x1.00fc36p-1f, -0x1.02ecdap-2f, -0x1.5a4a26p-5f,
     /* node 2809 y */
-    -0x1.fp-57f, -0x1.b57894p-2f, 0x1.d2efdcp-2f, -0x1.590a86p-3f,
+    -0x1.59999ap-57f, -0x1.b622a4p-2f, 0x1.d3142ep-2f, -0x1.59f2cep-3f,
     /* node 2809 z */
-    -0x1.666666p-58f, 0x1.cbf544p-5f, -0x1.82910ap-3f, 0x1.339f1ap-1f,
+    -0x1.8p-58f, 0x1.cd3dcep-5f, -0x1.845ae2p-3f, 0x1.33df96p-1f,
     /* node 2810 x */
-    0x1.8ep-58f, 0x1.bafe58p-2f, -0x1.e92588p-3f, -0x1.04d1b2p-7f,
+    0x1.02e666p-56f, 0x1.bb0826p-2f, -0x1.ea23c6p-3f, -0x1.1265f8p-7f,
     /* node 2810 y */
-    -0x1.0cccccp-58f, -0x1.6ff804p-2f, 0x1.8d8c6ap-2f, -0x1.083d9p-3f,
+    0x1.99999ap-64f, -0x1.7003fp-2f, 0x1.8e2abcp-2f, -0x1.073502p-3f,
     /* node 2810 z */
-    -0x1.333334p-60f, 0x1.837ab4p-5f, -0x1.167e1ep-3f, 0x1.df9faep-2f,
+    -0x1.0cccccp-57f, 0x1.83ab6ep-5f, -0x1.14fedp-3f, 0x1.dffc64p-2f,
     /* node 2811 x */
-    0x1.7d999ap-56f, 0x1.39982cp-1f, -0x1.193a6ap-2f, -0x1.0dae3ap-4f,
+    -0x1.6cccccp-57f, 0x1.3a0d26p-1f, -0x1.1891bcp-2f, -0x1.0da0c4p-4f,
     /* node 2811 y */
-    -0x1.166666p-55f, -0x1.04fb66p-1f, 0x1.346ccp-1f, -0x1.93a52cp-3f,
+    -0x0p+0f, -0x1.051f1p-1f, 0x1.3613aap-1f, -0x1.9373cep-3f,
     /* node 2811 z */
-    -0x1p-57f, 0x1.6e5892p-5f, -0x1.72049ep-3f, 0x1.885522p-1f,
+    0x1.ccccccp-58f, 0x1.708b32p-5f, -0x1.738d02p-3f, 0x1.889b4ap-1f,
     /* node 2812 x */
-    0x1.216666p-55f, 0x1.17357cp-1f, -0x1.152f94p-2f, -0x1.0bcff2p-5f,
+    0x1.6e6666p-58f, 0x1.16a5c6p-1f, -0x1.16752ep-2f, -0x1.0b437ep-5f,
     /* node 2812 y */
-    -0x1.81999ap-56f, -0x1.d12336p-2f, 0x1.085162p-1f, -0x1.1cc6bp-3f,
+    -0x1.b4ccccp-56f, -0x1.d068dcp-2f, 0x1.07555ap-1f, -0x1.1c1bdep-3f,
     /* node 2812 z */
-    -0x1.8p-58f, 0x1.e3b9f2p-6f, -0x1.15124p-3f, 0x1.4b979ap-1f,
+    -0x1.19999ap-58f, 0x1.e1059cp-6f, -0x1.12b6d6p-3f, 0x1.4b37bap-1f,
     /* node 2813 x */
-    0x1.19999ap-58f, 0x1.7866dep-1f, -0x1.4644fep-2f, -0x1.050118p-4f,
+    0x1.08p-56f, 0x1.784cf2p-1f, -0x1.45b1d2p-2f, -0x1.05594p-4f,
     /* node 2813 y */
-    -0x1.b9999ap-56f, -0x1.288f7ap-1f, 0x1.72bac6p-1f, -0x1.99bb6ep-3f,
+    -0x1.c4ccccp-55f, -0x1.285b2ep-1f, 0x1.72b11p-1f, -0x1.993bfcp-3f,
     /* node 2813 z */
-    -0x0p+0f, 0x1.370f9p-5f, -0x1.7528cep-3f, 0x1.de4d4ap-1f,
+    0x1.666666p-58f, 0x1.369b0cp-5f, -0x1.7506fap-3f, 0x1.de80c2p-1f,
     /* node 2814 x */
-    -0x1.c9999ap-57f, 0x1.56cb2cp-1f, -0x1.2ea426p-2f, -0x1.8429acp-4f,
+    0x1.1d999ap-56f, 0x1.5601cep-1f, -0x1.2f790cp-2f, -0x1.861922p-4f,
     /* node 2814 y */
-    -0x1.833334p-56f, -0x1.1002dcp-1f, 0x1.3d4d9ep-1f, -0x1.d27ec6p-3f,
+    -0x1.8p-59f, -0x1.0ffbfcp-1f, 0x1.3b75b4p-1f, -0x1.d5b914p-3f,
     /* node 2814 z */
-    0x1.333334p-57f, 0x1.913c4ap-5f, -0x1.ba75b4p-3f, 0x1.b7df5ep-1f,
+    0x1.333334p-58f, 0x1.8ddb9ep-5f, -0x1.b8367cp-3f, 0x1.b79bd6p-1f,
     /* node 2815 x */
-    0x1.b33334p-58f, 0x1.9f4b68p-1f, -0x1.4b9bb4p-2f, -0x1.edc8cap-4f,
+    0x1.89999ap-55f, 0x1.9fa7f4p-1f, -0x1.4a2f1p-2f, -0x1.ebcbfep-4f,
     /* node 2815 y */
-    0x1.b9999ap-57f, -0x1.3b4734p-1f, 0x1.96a118p-1f, -0x1.0beb2ep-2f,
+    0x1.ccccccp-58f, -0x1.3b74ccp-1f, 0x1.9835dcp-1f, -0x1.0ad0dcp-2f,
     /* node 2815 z */
-    -0x1p-57f, 0x1.31490cp-5f, -0x1.d00f62p-3f, 0x1.11f00cp+0f,
+    -0x1.b33334p-57f, 0x1.30c3bp-5f, -0x1.cefa96p-3f, 0x1.123f7ap+0f,
     /* node 2816 x */
-    -0x1.8p-56f, 0x1.59724p-1f, -0x1.3a4fbap-2f, -0x1.264c76p-5f,
+    0x1.b2999ap-55f, 0x1.59523cp-1f, -0x1.3ad534p-2f, -0x1.26db88p-5f,
     /* node 2816 y */
-    -0x1.19999ap-59f, -0x1.169afcp-1f, 0x1.58c3bep-1f, -0x1.515452p-3f,
+    0x1.18p-56f, -0x1.168fp-1f, 0x1.593ddep-1f, -0x1.511312p-3f,
     /* node 2816 z */
-    -0x1.b33334p-57f, 0x1.526b74p-6f, -0x1.01265cp-3f, 0x1.b223fcp-1f,
+    -0x0p+0f, 0x1.4fa594p-6f, -0x1.017a9ap-3f, 0x1.b2553p-1f,
     /* node 2817 x */
-    0x1.0a6666p-57f, 0x1.a6e1c4p-1f, -0x1.67435ep-2f, -0x1.92e9fp-6f,
+    0x1.5e3334p-55f, 0x1.a714a6p-1f, -0x1.671c02p-2f, -0x1.97a6p-6f,
     /* node 2817 y */
-    -0x1.2b3334p-55f, -0x1.4228dep-1f, 0x1.b3adaep-1f, -0x1.52c634p-3f,
+    -0x1.a4ccccp-56f, -0x1.422c46p-1f, 0x1.b440b4p-1f, -0x1.528d94p-3f,
     /* node 2817 z */
-    -0x1.19999ap-57f, 0x1.937a66p-8f, -0x1.90bdp-4f, 0x1.10b046p+0f,
+    0x1.99999ap-58f, 0x1.820074p-8f, -0x1.907c26p-4f, 0x1.10d924p+0f,
     /* node 2818 x */
-    0x1.533334p-59f, 0x1.c84878p-1f, -0x1.6e7c66p-2f, -0x1.0e9d14p-4f,
+    -0x1.333334p-62f, 0x1.c835fcp-1f, -0x1.6dd6a8p-2f, -0x1.0ec6p-4f,
     /* node 2818 y */
-    -0x1.666666p-56f, -0x1.512626p-1f, 0x1.e1337ep-1f, -0x1.b92248p-3f,
+    -0x1.9p-55f, -0x1.51540ep-1f, 0x1.e1e97cp-1f, -0x1.b87ef4p-3f,
     /* node 2818 z */
-    -0x0p+0f, 0x1.5ff452p-6f, -0x1.59d42ap-3f, 0x1.2e305cp+0f,
+    0x1.99999ap-60f, 0x1.5bde2cp-6f, -0x1.58b408p-3f, 0x1.2e4d22p+0f,
     /* node 2819 x */
-    -0x1.fp-55f, 0x1.11ece2p+0f, -0x1.aa4eb8p-2f, -0x1.b0d89ep-5f,
+    0x1.28p-54f, 0x1.11deb2p+0f, -0x1.aa35c6p-2f, -0x1.b1c0c8p-5f,
     /* node 2819 y */
-    0x1.acccccp-57f, -0x1.745fc4p-1f, 0x1.2a3a6p+0f, -0x1.a34bcp-3f,
+    -0x1.61999ap-55f, -0x1.74981ap-1f, 0x1.2aa8ep+0f, -0x1.a2cf56p-3f,
     /* node 2819 z */
-    0x1.99999ap-61f, 0x1.549e3p-10f, -0x1.0c058p-3f, 0x1.74de28p+0f,
+    -0x1.59999ap-56f, 0x1.1af53ap-10f, -0x1.0bc65cp-3f, 0x1.74de36p+0f,
     /* node 2820 x */
-    -0x1.f0ccccp-58f, 0x1.f81c2p-1f, -0x1.981e4ep-2f, -0x1.55bca2p-9f,
+    0x1.218cccp-55f, 0x1.f81682p-1f, -0x1.9869dap-2f, -0x1.69e172p-9f,
     /* node 2820 y */
-    -0x1.cp-58f, -0x1.6ae0e6p-1f, 0x1.165d04p+0f, -0x1.3bc572p-3f,
+    -0x1.cp-56f, -0x1.6afb6p-1f, 0x1.169c74p+0f, -0x1.3b42ecp-3f,
     /* node 2820 z */
-    -0x1.99999ap-59f, -0x1.ed97e6p-8f, -0x1.15357ap-4f, 0x1.53b728p+0f,
+    -0x1.666666p-58f, -0x1.02a36cp-7f, -0x1.145c28p-4f, 0x1.53c158p+0f,
     /* node 2821 x */
-    -0x1.32199ap-55f, 0x1.3ef58ap+0f, -0x1.e14108p-2f, -0x1.f2dc9cp-7f,
+    0x1.21d99ap-54f, 0x1.3ef8c4p+0f, -0x1.e1bf3p-2f, -0x1.f7a724p-7f,
     /* node 2821 y */
-    -0x1.68p-54f, -0x1.8b529ap-1f, 0x1.6cc1bcp+0f, -0x1.72ef18p-3f,
+    -0x1.733334p-55f, -0x1.8b8a4ap-1f, 0x1.6cfe38p+0f, -0x1.72ad58p-3f,
     /* node 2821 z */
-    -0x1.19999ap-56f, -0x1.834c9p-8f, -0x1.7b979p-4f, 0x1.c80cbcp+0f,
+    -0x1.333334p-56f, -0x1.95c172p-8f, -0x1.79e552p-4f, 0x1.c8026ap+0f,
     /* node 2822 x */
-    0x1.1d999ap-55f, 0x1.2d738ep+0f, -0x1.afd5e4p-2f, -0x1.c98aeep-4f,
+    0x1.666666p-57f, 0x1.2d836ap+0f, -0x1.afe06cp-2f, -0x1.ca5f7ap-4f,
     /* node 2822 y */
-    -0x1.7b3334p-55f, -0x1.811204p-1f, 0x1.47aad6p+0f, -0x1.164efep-2f,
+    -0x1.29999ap-55f, -0x1.8142f8p-1f, 0x1.47f2e8p+0f, -0x1.162202p-2f,
     /* node 2822 z */
-    -0x1.0cccccp-55f, 0x1.de46aap-8f, -0x1.91da72p-3f, 0x1.9f6b94p+0f,
+    -0x1.19999ap-55f, 0x1.c8a7fep-8f, -0x1.91f3ep-3f, 0x1.9f6bdp+0f,
     /* node 2823 x */
-    0x1.1a6666p-56f, 0x1.64bd0cp+0f, -0x1.f51d76p-2f, -0x1.43de66p-4f,
+    0x1.b33334p-56f, 0x1.64b638p+0f, -0x1.f404f4p-2f, -0x1.444b52p-4f,
     /* node 2823 y */
-    -0x1.033334p-55f, -0x1.953d86p-1f, 0x1.8eb03ep+0f, -0x1.dde1dp-3f,
+    -0x1.7p-56f, -0x1.956df2p-1f, 0x1.8f127cp+0f, -0x1.dd95b8p-3f,
     /* node 2823 z */
-    0x1.99999ap-59f, -0x1.27f6b6p-7f, -0x1.6b12a8p-3f, 0x1.0061aep+1f,
+    -0x1.333334p-55f, -0x1.370676p-7f, -0x1.6a94a2p-3f, 0x1.005b02p+1f,
     /* node 2824 x */
-    0x1.6ae666p-54f, 0x1.211592p+0f, -0x1.c70db4p-2f, 0x1.233f38p-5f,
+    0x1.6bccccp-54f, 0x1.20ee28p+0f, -0x1.c734d2p-2f, 0x1.21086ap-5f,
     /* node 2824 y */
-    -0x1.49999ap-57f, -0x1.861f52p-1f, 0x1.4a627p+0f, -0x1.abb5a6p-4f,
+    -0x1.69999ap-57f, -0x1.864012p-1f, 0x1.4a91a8p+0f, -0x1.ab149p-4f,
     /* node 2824 z */
-    -0x1.19999ap-56f, -0x1.06487p-7f, -0x1.1a835ep-7f, 0x1.924662p+0f,
+    -0x1p-57f, -0x1.0d13f4p-7f, -0x1.17239ap-7f, 0x1.9238e2p+0f,
     /* node 2825 x */
-    0x1.17p-54f, 0x1.434308p+0f, -0x1.053d6ap-1f, 0x1.4fe266p-4f,
+    -0x1.d4ccccp-57f, 0x1.432224p+0f, -0x1.05501cp-1f, 0x1.501952p-4f,
     /* node 2825 y */
-    -0x1.f33334p-56f, -0x1.9a5666p-1f, 0x1.709412p+0f, -0x1.b24f64p-5f,
+    -0x1.176666p-54f, -0x1.9a89dep-1f, 0x1.70d0c8p+0f, -0x1.b14da8p-5f,
     /* node 2825 z */
-    -0x1.99999ap-57f, -0x1.2aad0ap-6f, 0x1.a419acp-6f, 0x1.d27176p+0f,
+    0x1.4cccccp-56f, -0x1.317ebp-6f, 0x1.adaa12p-6f, 0x1.d25c7ep+0f,
     /* node 2826 x */
-    0x1.cp-62f, 0x1.71994ap+0f, -0x1.15bbb2p-1f, 0x1.700d6ap-7f,
+    0x1.809334p-54f, 0x1.71a21ap+0f, -0x1.15e46cp-1f, 0x1.6ed724p-7f,
     /* node 2826 y */
-    -0x1.acccccp-56f, -0x1.ab2988p-1f, 0x1.ac60acp+0f, -0x1.3538c6p-3f,
+    0x1.2p-57f, -0x1.ab626p-1f, 0x1.acaedp+0f, -0x1.352c12p-3f,
     /* node 2826 z */
-    -0x1.19999ap-55f, -0x1.5403f6p-6f, -0x1.9c2082p-5f, 0x1.0c8654p+1f,
+    -0x1.b33334p-56f, -0x1.586234p-6f, -0x1.97be08p-5f, 0x1.0c7fa4p+1f,
     /* node 2827 x */
-    0x1.666666p-59f, 0x1.996b94p+0f, -0x1.28316p-1f, 0x1.3c50f2p-4f,
+    -0x1.66ccccp-55f, 0x1.9980bep+0f, -0x1.282c62p-1f, 0x1.3b775ap-4f,
     /* node 2827 y */
-    -0x1.8cccccp-59f, -0x1.b3d528p-1f, 0x1.cd5092p+0f, -0x1.4b3364p-4f,
+    -0x1.a9999ap-55f, -0x1.b42c1p-1f, 0x1.cd5102p+0f, -0x1.4ad5eep-4f,
     /* node 2827 z */
-    -0x1.333334p-56f, -0x1.38a7d2p-6f, -0x1.fff052p-7f, 0x1.345bf8p+1f,
+    -0x1p-55f, -0x1.3a3772p-6f, -0x1.f6854ap-7f, 0x1.3458fep+1f,
     /* node 2828 x */
-    -0x1.cp-59f, 0x1.6537a4p+0f, -0x1.1ca11ep-1f, 0x1.eeefap-4f,
+    0x1.27999ap-54f, 0x1.6512e2p+0f, -0x1.1d34ccp-1f, 0x1.ed6d1p-4f,
     /* node 2828 y */
-    -0x1.22999ap-55f, -0x1.a8781ep-1f, 0x1.95148p+0f, 0x1.8846ep-7f,
+    0x1.f0ccccp-58f, -0x1.a8df36p-1f, 0x1.94df14p+0f, 0x1.8a107cp-7f,
     /* node 2828 z */
-    -0x0p+0f, -0x1.cf8296p-6f, 0x1.2d52acp-4f, 0x1.0c8788p+1f,
+    -0x1.333334p-58f, -0x1.d7cc7p-6f, 0x1.2a7bd4p-4f, 0x1.0c7d96p+1f,
     /* node 2829 x */
-    0x1.66p-54f, 0x1.b8dcaep+0f, -0x1.4f458cp-1f, 0x1.cc0d16p-4f,
+    -0x1.8p-56f, 0x1.b87ae8p+0f, -0x1.4fc04ap-1f, 0x1.cc3886p-4f,
     /* node 2829 y */
-    -0x1.186666p-54f, -0x1.c66f62p-1f, 0x1.edf7aep+0f, -0x1.988eep-5f,
+    0x1.ba6666p-56f, -0x1.c6a43ap-1f, 0x1.edccb4p+0f, -0x1.92e1c4p-5f,
     /* node 2829 z */
-    -0x0p+0f, -0x1.6b5afcp-6f, -0x1.d7383p-9f, 0x1.54cac4p+1f,
+    0x1.333334p-58f, -0x1.7143a8p-6f, -0x1.b0770cp-9f, 0x1.54a53p+1f,
     /* node 2830 x */
-    0x1.da999ap-55f, 0x1.d2643ep+0f, -0x1.54a77p-1f, -0x1.bc7802p-6f,
+    0x1.34ccccp-54f, 0x1.d2aeaap+0f, -0x1.53cf68p-1f, -0x1.bc3bap-6f,
     /* node 2830 y */
-    -0x1.cf3334p-55f, -0x1.c9baecp-1f, 0x1.06e29ap+1f, -0x1.5dead8p-3f,
+    -0x1.066666p-56f, -0x1.c9f07cp-1f, 0x1.0723a6p+1f, -0x1.5dd8bep-3f,
     /* node 2830 z */
-    -0x1.f33334p-55f, -0x1.d51fa2p-6f, -0x1.34c076p-4f, 0x1.604f86p+1f,
+    -0x1.59999ap-55f, -0x1.da814cp-6f, -0x1.354718p-4f, 0x1.604a98p+1f,
     /* node 2831 x */
-    0x1.063334p-54f, 0x1.f1d35p+0f, -0x1.62987ep-1f, 0x1.b3190ap-5f,
+    0x1.1p-58f, 0x1.f1d4cep+0f, -0x1.6283ep-1f, 0x1.b39bd6p-5f,
     /* node 2831 y */
-    -0x1.8f3334p-54f, -0x1.d9db8ep-1f, 0x1.11bc76p+1f, -0x1.09877p-3f,
+    -0x1.a0ccccp-55f, -0x1.d9cf5ap-1f, 0x1.1204bcp+1f, -0x1.097756p-3f,
     /* node 2831 z */
-    -0x1p-55f, -0x1.2f7294p-6f, -0x1.84991p-4f, 0x1.8636f6p+1f,
+    -0x1.0cccccp-55f, -0x1.34af34p-6f, -0x1.877ca2p-4f, 0x1.863752p+1f,
     /* node 2832 x */
-    0x1.833334p-55f, 0x1.84e1f4p+0f, -0x1.327e2ap-1f, 0x1.4a75ccp-3f,
+    -0x1.4p-55f, 0x1.84e32ep+0f, -0x1.3260ecp-1f, 0x1.4b150cp-3f,
     /* node 2832 y */
-    -0x1.0a999ap-54f, -0x1.b2a486p-1f, 0x1.a0de98p+0f, 0x1.7aa5acp-5f,
+    -0x1.0accccp-55f, -0x1.b2b9cep-1f, 0x1.a197cp+0f, 0x1.809a5cp-5f,
     /* node 2832 z */
-    -0x1.8p-56f, -0x1.8c2986p-6f, 0x1.88153ap-4f, 0x1.294cfap+1f,
+    -0x1.99999ap-57f, -0x1.8fd2dp-6f, 0x1.8c3658p-4f, 0x1.29508p+1f,
     /* node 2833 x */
-    0x1.d26666p-55f, 0x1.de6018p+0f, -0x1.57d02cp-1f, 0x1.77ee2cp-3f,
+    0x1.246666p-54f, 0x1.deca3ap+0f, -0x1.5741f2p-1f, 0x1.76c26p-3f,
     /* node 2833 y */
-    -0x1.1e6666p-55f, -0x1.cb62d2p-1f, 0x1.fcb692p+0f, -0x1.f725aap-7f,
+    -0x1.7a6666p-56f, -0x1.cb9ccep-1f, 0x1.fd1b38p+0f, -0x1.0004a2p-6f,
     /* node 2833 z */
-    -0x1.333334p-58f, -0x1.1b8ae4p-6f, -0x1.4eb628p-6f, 0x1.753206p+1f,
+    -0x1.4cccccp-55f, -0x1.19226ap-6f, -0x1.4b3898p-6f, 0x1.754576p+1f,
     /* node 2834 x */
-    -0x1.a33334p-56f, 0x1.982feep+0f, -0x1.508dbcp-1f, 0x1.91c6a4p-3f,
+    0x1.9p-54f, 0x1.97feb8p+0f, -0x1.51cfb6p-1f, 0x1.8ee7b6p-3f,
     /* node 2834 y */
-    -0x1.033334p-55f, -0x1.b83ad2p-1f, 0x1.ab6edp+0f, 0x1.0b6ad8p-4f,
+    -0x1.4e6666p-56f, -0x1.b886dap-1f, 0x1.aa7e2ap+0f, 0x1.0aeeb4p-4f,
     /* node 2834 z */
-    -0x1p-56f, -0x1.f95942p-6f, 0x1.5d7aeep-4f, 0x1.40f61ap+1f,
+    -0x1.99999ap-56f, -0x1.023966p-5f, 0x1.539ebp-4f, 0x1.40dc64p+1f,
     /* node 2835 x */
-    0x1.69999ap-56f, 0x1.fd51b8p+0f, -0x1.6f76fp-1f, 0x1.f930bcp-3f,
+    -0x1.49999ap-56f, 0x1.fc9c7ep+0f, -0x1.700628p-1f, 0x1.f935b6p-3f,
     /* node 2835 y */
-    -0x1.d1a666p-55f, -0x1.c5d3bp-1f, 0x1.03e02ep+1f, 0x1.a1dc4cp-9f,
+    0x1.18999ap-58f, -0x1.c61728p-1f, 0x1.03abf8p+1f, 0x1.f9820cp-9f,
     /* node 2835 z */
-    -0x1p-55f, 0x1.4e61cp-9f, -0x1.44412ap-5f, 0x1.8a6a78p+1f,
+    0x1.333334p-55f, 0x1.2f9beep-9f, -0x1.48957ap-5f, 0x1.8a42fcp+1f,
     /* node 2836 x */
-    -0x1.133334p-57f, 0x1.0faa2ep+1f, -0x1.968cb4p-1f, 0x1.58f958p-3f,
+    0x1.7d3334p-54f, 0x1.0f9acap+1f, -0x1.975a0cp-1f, 0x1.5a090ep-3f,
     /* node 2836 y */
-    -0x1.503334p-54f, -0x1.dda392p-1f, 0x1.1f6a6ap+1f, -0x1.40a1a2p-4f,
+    -0x1.2f3334p-54f, -0x1.dde54cp-1f, 0x1.1f78f2p+1f, -0x1.3f1c62p-4f,
     /* node 2836 z */
-    -0x1.99999ap-56f, 0x1.eca1f2p-7f, -0x1.4798fp-4f, 0x1.ae3836p+1f,
+    -0x1.19999ap-54f, 0x1.fffac8p-7f, -0x1.4a6c02p-4f, 0x1.ae2b9ap+1f,
     /* node 2837 x */
-    -0x1.106666p-53f, 0x1.18a6f6p+1f, -0x1.8f91f4p-1f, 0x1.01dd6cp-2f,
+    0x1.133334p-57f, 0x1.18a6cep+1f, -0x1.903a14p-1f, 0x1.0232bp-2f,
     /* node 2837 y */
-    0x1.866666p-58f, -0x1.d3a7eap-1f, 0x1.25de86p+1f, -0x1.ec282ap-5f,
+    -0x1.36ccccp-55f, -0x1.d4012p-1f, 0x1.25e038p+1f, -0x1.e5cddep-5f,
     /* node 2837 z */
-    -0x1.e66666p-55f, 0x1.938228p-6f, -0x1.36a17p-4f, 0x1.bf59c4p+1f,
+    -0x1.666666p-55f, 0x1.9836b2p-6f, -0x1.325ec2p-4f, 0x1.bf51a6p+1f,
     /* node 2838 x */
-    0x1.69999ap-55f, 0x1.018238p+1f, -0x1.8b09a2p-1f, 0x1.25d478p-2f,
+    -0x1.01999ap-53f, 0x1.01c58p+1f, -0x1.8ae428p-1f, 0x1.258812p-2f,
     /* node 2838 y */
-    -0x1.8d199ap-55f, -0x1.c58f3p-1f, 0x1.0192fcp+1f, 0x1.895594p-9f,
+    0x1.2d999ap-60f, -0x1.c5ac78p-1f, 0x1.022492p+1f, 0x1.3f3fd8p-9f,
     /* node 2838 z */
-    -0x1.333334p-56f, 0x1.3b79ep-6f, -0x1.3bce64p-6f, 0x1.95e0b8p+1f,
+    -0x1.99999ap-56f, 0x1.445f32p-6f, -0x1.2b143cp-6f, 0x1.95f1e6p+1f,
     /* node 2839 x */
-    -0x1.6b3334p-55f, 0x1.b7dd74p+0f, -0x1.642dc8p-1f, 0x1.1d2552p-2f,
+    0x1.7cccccp-56f, 0x1.b885dep+0f, -0x1.6330fep-1f, 0x1.1e58f4p-2f,
     /* node 2839 y */
-    -0x1.cd999ap-55f, -0x1.b0a8fep-1f, 0x1.b4ebe8p+0f, 0x1.898984p-4f,
+    0x1.666666p-56f, -0x1.b07fcap-1f, 0x1.b63f46p+0f, 0x1.8e8608p-4f,
     /* node 2839 z */
-    -0x1p-56f, 0x1.6be538p-8f, 0x1.2d6f7p-4f, 0x1.5fcc1cp+1f,
+    -0x1.266666p-55f, 0x1.90141p-8f, 0x1.39e3fep-4f, 0x1.5feb36p+1f,
     /* node 2840 x */
-    0x1.4e6666p-55f, 0x1.14a62ep-1f, -0x1.a3d454p-3f, -0x1.a05a2ep-3f,
+    -0x1.e66666p-59f, 0x1.14c846p-1f, -0x1.a3d90ap-3f, -0x1.a0f1fap-3f,
     /* node 2840 y */
-    0x1.0cccccp-58f, -0x1.8dcd08p-2f, 0x1.aa0584p-2f, -0x1.f5ac7p-3f,
+    -0x1p-57f, -0x1.8de4acp-2f, 0x1.aa5e24p-2f, -0x1.f6084ap-3f,
     /* node 2840 z */
-    0x1.333334p-59f, 0x1.2c0b62p-4f, -0x1.1beda6p-2f, 0x1.72c11ep-1f,
+    -0x1.99999ap-61f, 0x1.2ae396p-4f, -0x1.1bae66p-2f, 0x1.73042p-1f,
     /* node 2841 x */
-    -0x1.4p-57f, 0x1.81da4p-1f, -0x1.0e8d82p-2f, -0x1.6941ecp-2f,
+    0x1.733334p-56f, 0x1.81f7b2p-1f, -0x1.0e984p-2f, -0x1.69dc62p-2f,
     /* node 2841 y */
-    -0x1.3cccccp-56f, -0x1.06967cp-1f, 0x1.121814p-1f, -0x1.52e034p-2f,
+    -0x1.19999ap-57f, -0x1.06a23ep-1f, 0x1.12a4dep-1f, -0x1.5378fap-2f,
     /* node 2841 z */
-    -0x0p+0f, 0x1.5621b4p-4f, -0x1.5d625cp-2f, 0x1.08a1a8p+0f,
+    0x1.ccccccp-58f, 0x1.563566p-4f, -0x1.5da85ap-2f, 0x1.08c766p+0f,
     /* node 2842 x */
-    0x1.dp-55f, 0x1.bb34a2p-1f, -0x1.379156p-2f, -0x1.8a0d1ap-2f,
+    0x1.99999ap-58f, 0x1.bb5aa4p-1f, -0x1.37ca86p-2f, -0x1.8a7f82p-2f,
     /* node 2842 y */
-    -0x1.3cccccp-56f, -0x1.22cc5cp-1f, 0x1.419c02p-1f, -0x1.77be94p-2f,
+    -0x1.3cccccp-56f, -0x1.22f68ap-1f, 0x1.41f958p-1f, -0x1.77be48p-2f,
     /* node 2842 z */
-    0x1.333334p-58f, 0x1.30a9e4p-4f, -0x1.67f90cp-2f, 0x1.2f8facp+0f,
+    0x1.666666p-58f, 0x1.2fc906p-4f, -0x1.67c832p-2f, 0x1.2f920cp+0f,
     /* node 2843 x */
-    0x1.2cccccp-57f, 0x1.4e306cp-1f, -0x1.fc4b7ep-3f, -0x1.c0d2d2p-3f,
+    -0x1p-58f, 0x1.4e3eaap-1f, -0x1.fc6098p-3f, -0x1.c058d2p-3f,
     /* node 2843 y */
-    -0x1.7p-55f, -0x1.de9004p-2f, 0x1.054992p-1f, -0x1.15c72cp-2f,
+    -0x1.3b3334p-55f, -0x1.debc98p-2f, 0x1.056b6ap-1f, -0x1.15a9d6p-2f,
     /* node 2843 z */
-    0x1.666666p-57f, 0x1.11413ep-4f, -0x1.2a6578p-2f, 0x1.bf508p-1f,
+    0x1.99999ap-60f, 0x1.0f688cp-4f, -0x1.2a3dcp-2f, 0x1.bf83e2p-1f,
     /* node 2844 x */
-    0x1.01999ap-57f, 0x1.8e3628p-2f, -0x1.747abcp-3f, -0x1.6b55d8p-4f,
+    0x1.866666p-57f, 0x1.8e452ap-2f, -0x1.74b496p-3f, -0x1.6c34c4p-4f,
     /* node 2844 y */
-    -0x1.333334p-59f, -0x1.39761cp-2f, 0x1.47bd5p-2f, -0x1.5d5506p-3f,
+    -0x1.533334p-56f, -0x1.39a7aap-2f, 0x1.4807ccp-2f, -0x1.5cdfbep-3f,
     /* node 2844 z */
-    -0x1.8p-57f, 0x1.eb642p-5f, -0x1.a6c72ap-3f, 0x1.0020d4p-1f,
+    -0x1p-58f, 0x1.ea1cb8p-5f, -0x1.a6b94p-3f, 0x1.0048bap-1f,
     /* node 2845 x */
-    -0x1.1cccccp-57f, 0x1.102596p-1f, -0x1.d59d94p-3f, -0x1.11e66p-3f,
+    -0x1.266666p-58f, 0x1.103bc4p-1f, -0x1.d62fap-3f, -0x1.11dd1p-3f,
     /* node 2845 y */
-    -0x1.f9999ap-56f, -0x1.aaed8cp-2f, 0x1.c512fep-2f, -0x1.b0cb02p-3f,
+    -0x1.99999ap-59f, -0x1.ab195p-2f, 0x1.c5b3fep-2f, -0x1.b148c8p-3f,
     /* node 2845 z */
-    -0x1.99999ap-61f, 0x1.03a2eep-4f, -0x1.f6712ap-3f, 0x1.63e904p-1f,
+    0x1.333334p-59f, 0x1.049884p-4f, -0x1.f6a1bp-3f, 0x1.641cfep-1f,
     /* node 2846 x */
-    0x1.cp-58f, 0x1.8c65bap-1f, -0x1.2e2742p-2f, -0x1.ec7fa8p-3f,
+    0x1.c33334p-56f, 0x1.8c52d2p-1f, -0x1.2e3004p-2f, -0x1.ec7fp-3f,
     /* node 2846 y */
-    -0x1p-58f, -0x1.186aacp-1f, 0x1.3d015cp-1f, -0x1.334a8ap-2f,
+    0x1.19999ap-56f, -0x1.18688p-1f, 0x1.3d03c4p-1f, -0x1.32e916p-2f,
     /* node 2846 z */
-    0x1.666666p-58f, 0x1.0cb7a4p-4f, -0x1.3fc9dcp-2f, 0x1.0bea76p+0f,
+    0x1.4cccccp-57f, 0x1.0b31d6p-4f, -0x1.3fb248p-2f, 0x1.0bfe12p+0f,
     /* node 2847 x */
-    0x1.09999ap-56f, 0x1.4ac4bap-1f, -0x1.135f7ep-2f, -0x1.242f6p-3f,
+    -0x1.133334p-58f, 0x1.4ad838p-1f, -0x1.13a16p-2f, -0x1.23a66ep-3f,
     /* node 2847 y */
-    -0x1.766666p-56f, -0x1.f9c912p-2f, 0x1.1ac49ep-1f, -0x1.ff2504p-3f,
+    -0x1.19999ap-58f, -0x1.f98e6p-2f, 0x1.1b4796p-1f, -0x1.fdefb6p-3f,
     /* node 2847 z */
-    0x1.99999ap-56f, 0x1.079fa8p-4f, -0x1.07464p-2f, 0x1.ac73e2p-1f,
+    0x1.99999ap-60f, 0x1.07c118p-4f, -0x1.06ccbcp-2f, 0x1.ac9052p-1f,
     /* node 2848 x */
-    0x1.566666p-56f, 0x1.b87d7ep-1f, -0x1.4d52b2p-2f, -0x1.e6138p-3f,
+    0x1.d66666p-55f, 0x1.b8a3c8p-1f, -0x1.4d9668p-2f, -0x1.e5e1a8p-3f,
     /* node 2848 y */
-    0x1.333334p-59f, -0x1.2b8e2cp-1f, 0x1.6f0e68p-1f, -0x1.55bbd4p-2f,
+    -0x1.a66666p-57f, -0x1.2bc688p-1f, 0x1.6fa892p-1f, -0x1.54e054p-2f,
     /* node 2848 z */
-    0x1.99999ap-60f, 0x1.d00f12p-5f, -0x1.3e1bbp-2f, 0x1.2a81d4p+0f,
+    0x1.99999ap-59f, 0x1.cf84e6p-5f, -0x1.3dab2ep-2f, 0x1.2aab9cp+0f,
     /* node 2849 x */
-    0x1.2cccccp-56f, 0x1.89aaccp-1f, -0x1.35934cp-2f, -0x1.53ecb8p-3f,
+    0x1.4cccccp-59f, 0x1.8a32ccp-1f, -0x1.351cf6p-2f, -0x1.536f0ep-3f,
     /* node 2849 y */
-    0x1.a33334p-56f, -0x1.2583e6p-1f, 0x1.63dc6cp-1f, -0x1.22a246p-2f,
+    0x1.766666p-56f, -0x1.25682ap-1f, 0x1.64479ep-1f, -0x1.215f7cp-2f,
     /* node 2849 z */
-    -0x1.99999ap-60f, 0x1.bd57cp-5f, -0x1.1910d8p-2f, 0x1.04fd16p+0f,
+    -0x1.0cccccp-56f, 0x1.bc9fb6p-5f, -0x1.194bp-2f, 0x1.053706p+0f,
     /* node 2850 x */
-    0x1.49999ap-55f, 0x1.e9c694p-1f, -0x1.74cf1ap-2f, -0x1.cf029cp-3f,
+    -0x1.1p-56f, 0x1.e98ef6p-1f, -0x1.74f042p-2f, -0x1.cfb0b8p-3f,
     /* node 2850 y */
-    -0x1.98p-55f, -0x1.4770ccp-1f, 0x1.a9d2ap-1f, -0x1.57a956p-2f,
+    -0x1p-56f, -0x1.477874p-1f, 0x1.aa3a78p-1f, -0x1.56f34p-2f,
     /* node 2850 z */
-    -0x1.8p-57f, 0x1.b3a2c6p-5f, -0x1.4114fp-2f, 0x1.4c7f3ep+0f,
+    0x1.333334p-59f, 0x1.b1bed8p-5f, -0x1.40effap-2f, 0x1.4c63c2p+0f,
     /* node 2851 x */
-    0x1.39999ap-57f, 0x1.ee4ec2p-1f, -0x1.6eb358p-2f, -0x1.570ad2p-2f,
+    0x1.766666p-56f, 0x1.ee5ef4p-1f, -0x1.6f3a34p-2f, -0x1.575c2ep-2f,
     /* node 2851 y */
-    0x1.78p-55f, -0x1.44ac48p-1f, 0x1.7b35e8p-1f, -0x1.6ea6dp-2f,
+    -0x1.d33334p-56f, -0x1.44bc08p-1f, 0x1.7b8152p-1f, -0x1.6de006p-2f,
     /* node 2851 z */
-    0x1.59999ap-56f, 0x1.1c9dbap-4f, -0x1.707ddep-2f, 0x1.55974ep+0f,
+    -0x1.19999ap-56f, 0x1.1b649cp-4f, -0x1.703066p-2f, 0x1.559322p+0f,
     /* node 2852 x */
-    0x1.7e6666p-55f, 0x1.0e468cp+0f, -0x1.8a81fap-2f, -0x1.4e0bc2p-2f,
+    -0x1.4cccccp-56f, 0x1.0e4fe4p+0f, -0x1.8b3694p-2f, -0x1.4e804cp-2f,
     /* node 2852 y */
-    -0x1.59999ap-57f, -0x1.4cb5cap-1f, 0x1.b11946p-1f, -0x1.982024p-2f,
+    -0x1.99999ap-58f, -0x1.4ce0e2p-1f, 0x1.b1421cp-1f, -0x1.979eb6p-2f,
     /* node 2852 z */
-    -0x1.333334p-59f, 0x1.eece4ap-5f, -0x1.76a0b8p-2f, 0x1.733d76p+0f,
+    -0x1.ccccccp-58f, 0x1.eb3bf8p-5f, -0x1.767e7cp-2f, 0x1.732c9ap+0f,
     /* node 2853 x */
-    0x1.99999ap-56f, 0x1.c26d4p-1f, -0x1.68cafap-2f, -0x1.4aab94p-3f,
+    0x1.69999ap-57f, 0x1.c2122p-1f, -0x1.69111ep-2f, -0x1.4af7d8p-3f,
     /* node 2853 y */
-    -0x1.dcccccp-55f, -0x1.40024ep-1f, 0x1.a1d4a6p-1f, -0x1.305f3p-2f,
+    -0x1.e66666p-56f, -0x1.3ff618p-1f, 0x1.a10ce2p-1f, -0x1.30e62ap-2f,
     /* node 2853 z */
-    -0x1.8p-57f, 0x1.8a385ep-5f, -0x1.12980cp-2f, 0x1.2e4da8p+0f,
+    0x1.99999ap-60f, 0x1.85fe88p-5f, -0x1.12327cp-2f, 0x1.2e3f04p+0f,
     /* node 2854 x */
-    0x1.01999ap-55f, 0x1.ffceeep-1f, -0x1.95b53p-2f, -0x1.2d45fcp-3f,
+    -0x1.566666p-57f, 0x1.ffde02p-1f, -0x1.95771ap-2f, -0x1.2df14p-3f,
     /* node 2854 y */
-    -0x1.866666p-57f, -0x1.5fd146p-1f, 0x1.ee3b6ep-1f, -0x1.372a96p-2f,
+    -0x1.333334p-56f, -0x1.603246p-1f, 0x1.efeb22p-1f, -0x1.3588e8p-2f,
     /* node 2854 z */
-    -0x1.99999ap-58f, 0x1.5bae8p-5f, -0x1.07c394p-2f, 0x1.5a5db2p+0f,
+    0x1.0cccccp-56f, 0x1.593714p-5f, -0x1.067554p-2f, 0x1.5a883ep+0f,
     /* node 2855 x */
-    0x1.f8p-55f, 0x1.1491a8p+0f, -0x1.9a6d4ep-2f, -0x1.be4406p-3f,
+    -0x1.b33334p-58f, 0x1.14b608p+0f, -0x1.9b75eep-2f, -0x1.bf1b74p-3f,
     /* node 2855 y */
-    -0x1.acccccp-57f, -0x1.5e0b94p-1f, 0x1.f940b8p-1f, -0x1.71d4e6p-2f,
+    -0x1.5p-56f, -0x1.5e409p-1f, 0x1.f971bep-1f, -0x1.7170f8p-2f,
     /* node 2855 z */
-    0x1.4cccccp-57f, 0x1.523046p-5f, -0x1.4a6b3cp-2f, 0x1.7e126ep+0f,
+    -0x1.8p-57f, 0x1.516a7p-5f, -0x1.4a21f4p-2f, 0x1.7e23bep+0f,
     /* node 2856 x */
-    0x1.233334p-54f, 0x1.404b3cp+0f, -0x1.d7d18p-2f, -0x1.9cc6f4p-3f,
+    0x1.84ccccp-55f, 0x1.40399cp+0f, -0x1.d8231ep-2f, -0x1.9ddc54p-3f,
     /* node 2856 y */
-    -0x1.a33334p-56f, -0x1.7acc9p-1f, 0x1.3825bcp+0f, -0x1.732412p-2f,
+    -0x1.04ccccp-55f, -0x1.7b2696p-1f, 0x1.386a34p+0f, -0x1.72ceeap-2f,
     /* node 2856 z */
-    -0x1.333334p-57f, 0x1.9f8a18p-6f, -0x1.3871fap-2f, 0x1.c1603cp+0f,
+    0x1.99999ap-59f, 0x1.9c0cd4p-6f, -0x1.37c516p-2f, 0x1.c14b3ap+0f,
     /* node 2857 x */
-    0x1.e33334p-57f, 0x1.32cc1cp+0f, -0x1.e2532ep-2f, -0x1.3e5d06p-3f,
+    0x1.08p-54f, 0x1.32bf5ap+0f, -0x1.e2e194p-2f, -0x1.3f1582p-3f,
     /* node 2857 y */
-    -0x1.4p-57f, -0x1.7cd752p-1f, 0x1.370978p+0f, -0x1.45850cp-2f,
+    0x1.4p-58f, -0x1.7d2d12p-1f, 0x1.36fcc6p+0f, -0x1.45ba3cp-2f,
     /* node 2857 z */
-    0x1.99999ap-58f, 0x1.c82f48p-7f, -0x1.fef9c4p-3f, 0x1.ae609ep+0f,
+    -0x1.99999ap-59f, 0x1.c348c6p-7f, -0x1.fe32bp-3f, 0x1.ae4c62p+0f,
     /* node 2858 x */
-    0x1.18p-56f, 0x1.7c0314p+0f, -0x1.0a5228p-1f, -0x1.86e0eep-3f,
+    -0x1.4b3334p-55f, 0x1.7bf8d8p+0f, -0x1.0a222ep-1f, -0x1.878204p-3f,
     /* node 2858 y */
-    -0x1.dcccccp-56f, -0x1.8eba4ap-1f, 0x1.948352p+0f, -0x1.70fafep-2f,
+    -0x1.29999ap-54f, -0x1.8ed11ep-1f, 0x1.94c958p+0f, -0x1.712716p-2f,
     /* node 2858 z */
-    -0x1.99999ap-59f, 0x1.bcc2b2p-10f, -0x1.2ad148p-2f, 0x1.160968p+1f,
+    -0x1.99999ap-60f, 0x1.80d056p-10f, -0x1.2a90d6p-2f, 0x1.1609ap+1f,
     /* node 2859 x */
-    0x1.266666p-56f, 0x1.4bf23ap+0f, -0x1.e194ep-2f, -0x1.01eabep-2f,
+    0x1.cp-56f, 0x1.4bdda2p+0f, -0x1.e24bap-2f, -0x1.025c42p-2f,
     /* node 2859 y */
-    -0x1.0cccccp-56f, -0x1.7623c2p-1f, 0x1.2d7b9p+0f, -0x1.939262p-2f,
+    0x1.99999ap-62f, -0x1.764f2ap-1f, 0x1.2d9e4ap+0f, -0x1.936326p-2f,
     /* node 2859 z */
-    -0x1.333334p-58f, 0x1.be15d2p-6f, -0x1.53de0ap-2f, 0x1.d4b4fcp+0f,
+    -0x1.333334p-57f, 0x1.b6921cp-6f, -0x1.53547p-2f, 0x1.d4aaf6p+0f,
     /* node 2860 x */
-    0x1.7b3334p-55f, 0x1.7fbce6p+0f, -0x1.0ba716p-1f, -0x1.e6f57ep-3f,
+    0x1.29999ap-54f, 0x1.7fda0ap+0f, -0x1.0b72c8p-1f, -0x1.e743bcp-3f,
     /* node 2860 y */
-    -0x1.733334p-55f, -0x1.89847cp-1f, 0x1.7fbe7p+0f, -0x1.9080f6p-2f,
+    -0x1.4cccccp-56f, -0x1.89b102p-1f, 0x1.800d6ep+0f, -0x1.907ac8p-2f,
     /* node 2860 z */
-    -0x1.99999ap-60f, -0x1.7cb79ep-8f, -0x1.486f9ap-2f, 0x1.194988p+1f,
+    0x1.666666p-56f, -0x1.8bb896p-8f, -0x1.482e98p-2f, 0x1.194bf4p+1f,
     /* node 2861 x */
-    0x1.c8p-56f, 0x1.73d09ep+0f, -0x1.f781ccp-2f, -0x1.39b25cp-3f,
+    -0x1.4cccccp-59f, 0x1.73b334p+0f, -0x1.f7df7ap-2f, -0x1.3a3c18p-3f,
     /* node 2861 y */
-    -0x1.9p-55f, -0x1.9950f4p-1f, 0x1.98b944p+0f, -0x1.353ff8p-2f,
+    -0x1.733334p-57f, -0x1.99820ap-1f, 0x1.98e00cp+0f, -0x1.34b976p-2f,
     /* node 2861 z */
-    -0x1.99999ap-58f, 0x1.3afb1p-9f, -0x1.ae22a8p-3f, 0x1.0bc066p+1f,
+    -0x1.99999ap-59f, 0x1.22adbp-9f, -0x1.ac1b2cp-3f, 0x1.0bb508p+1f,
     /* node 2862 x */
-    -0x1.133334p-56f, 0x1.bbd19cp+0f, -0x1.48a1bep-1f, -0x1.f033dap-4f,
+    0x1.d0ccccp-55f, 0x1.bc0112p+0f, -0x1.48bf94p-1f, -0x1.f0ad1cp-4f,
     /* node 2862 y */
-    -0x1.15999ap-54f, -0x1.bf09cp-1f, 0x1.f230dap+0f, -0x1.030456p-2f,
+    0x1.99999ap-56f, -0x1.bf395p-1f, 0x1.f25aaep+0f, -0x1.0241d8p-2f,
     /* node 2862 z */
-    -0x1.99999ap-60f, -0x1.e66e3p-6f, -0x1.7df386p-3f, 0x1.4f2f96p+1f,
+    -0x1.666666p-57f, -0x1.e410d6p-6f, -0x1.7bfb4ap-3f, 0x1.4f229ap+1f,
     /* node 2863 x */
-    0x1.54p-54f, 0x1.dd4ae8p+0f, -0x1.384798p-1f, -0x1.8a1278p-3f,
+    -0x1.89999ap-56f, 0x1.dd934ep+0f, -0x1.380c7cp-1f, -0x1.8a1cbp-3f,
     /* node 2863 y */
-    -0x1.633334p-54f, -0x1.bb91c6p-1f, 0x1.06f3c6p+1f, -0x1.319dc4p-2f,
+    0x1.4cccccp-58f, -0x1.bba71ap-1f, 0x1.0744b2p+1f, -0x1.31678p-2f,
     /* node 2863 z */
-    0x1.99999ap-57f, -0x1.1c7e3cp-5f, -0x1.e7e01p-3f, 0x1.64328ep+1f,
+    -0x1.666666p-57f, -0x1.22a3c4p-5f, -0x1.e8224ap-3f, 0x1.6428cep+1f,
     /* node 2864 x */
-    0x1.1e6666p-53f, 0x1.01d8bep+1f, -0x1.7071a4p-1f, -0x1.3418a2p-3f,
+    0x1.c66666p-55f, 0x1.01e094p+1f, -0x1.7093b4p-1f, -0x1.34d694p-3f,
     /* node 2864 y */
-    -0x1.0cccccp-55f, -0x1.d31586p-1f, 0x1.1ca6ecp+1f, -0x1.f145ecp-3f,
+    -0x1.59999ap-56f, -0x1.d35c9ap-1f, 0x1.1ce20cp+1f, -0x1.f09fe4p-3f,
     /* node 2864 z */
-    -0x1.99999ap-57f, -0x1.7b96c6p-6f, -0x1.76c7b2p-3f, 0x1.894194p+1f,
+    0x1.99999ap-57f, -0x1.8019acp-6f, -0x1.7677bcp-3f, 0x1.8933a2p+1f,
     /* node 2865 x */
-    0x1.3p-54f, 0x1.f69742p+0f, -0x1.393b3cp-1f, -0x1.4ed12p-4f,
+    0x1.39999ap-58f, 0x1.f673e8p+0f, -0x1.397eccp-1f, -0x1.4f58ap-4f,
     /* node 2865 y */
-    -0x1.0cccccp-54f, -0x1.c744f2p-1f, 0x1.1e59fp+1f, -0x1.b4a2e2p-3f,
+    0x1.466666p-57f, -0x1.c77c02p-1f, 0x1.1e7a34p+1f, -0x1.b31cfap-3f,
     /* node 2865 z */
-    -0x1.99999ap-57f, -0x1.7b4fb2p-6f, -0x1.0832acp-3f, 0x1.81dafep+1f,
+    -0x1.333334p-56f, -0x1.745f4ap-6f, -0x1.05175ap-3f, 0x1.81c61cp+1f,
     /* node 2866 x */
-    0x1.233334p-57f, 0x1.121bbep+1f, -0x1.9fb25p-1f, -0x1.d8685p-4f,
+    0x1.33999ap-54f, 0x1.1258ccp+1f, -0x1.9f6282p-1f, -0x1.da17cp-4f,
     /* node 2866 y */
-    -0x1.2p-56f, -0x1.e5e62ap-1f, 0x1.33e986p+1f, -0x1.c48e9p-3f,
+    -0x1.966666p-56f, -0x1.e663bp-1f, 0x1.34272p+1f, -0x1.c55bfap-3f,
     /* node 2866 z */
-    -0x1p-55f, -0x1.26771ap-5f, -0x1.4c412ep-3f, 0x1.ae4ef8p+1f,
+    -0x1.666666p-56f, -0x1.2a21d2p-5f, -0x1.4d2baep-3f, 0x1.ae566cp+1f,
     /* node 2867 x */
-    0x1.5f3334p-54f, 0x1.062bc2p+1f, -0x1.9890dep-1f, -0x1.b9adeap-3f,
+    0x1.3d999ap-53f, 0x1.0606e4p+1f, -0x1.99e8e6p-1f, -0x1.ba7a62p-3f,
     /* node 2867 y */
-    0x1.ccccccp-57f, -0x1.d1dbp-1f, 0x1.1f1cd2p+1f, -0x1.1e6f64p-2f,
+    -0x1.266666p-55f, -0x1.d25906p-1f, 0x1.1f17bcp+1f, -0x1.1d139ap-2f,
     /* node 2867 z */
-    -0x1.4cccccp-55f, -0x1.35dc04p-5f, -0x1.cb967ep-3f, 0x1.95503ap+1f,
+    0x1.19999ap-55f, -0x1.335a18p-5f, -0x1.c72b3ap-3f, 0x1.9511bep+1f,
     /* node 2868 x */
-    -0x1.99999ap-61f, 0x1.1bcc52p+1f, -0x1.70ce2cp-1f, -0x1.aa4ff4p-3f,
+    0x1.c0ccccp-54f, 0x1.1b56b2p+1f, -0x1.725a36p-1f, -0x1.ae9b68p-3f,
     /* node 2868 y */
-    -0x1.14ccccp-55f, -0x1.dcadeep-1f, 0x1.35bd8ap+1f, -0x1.17a8bp-2f,
+    0x1.a66666p-58f, -0x1.dcde9ep-1f, 0x1.355ed4p+1f, -0x1.15b3d4p-2f,
     /* node 2868 z */
-    -0x1.99999ap-58f, -0x1.d1100cp-5f, -0x1.97f67p-3f, 0x1.bbfb88p+1f,
+    -0x1.99999ap-58f, -0x1.d9d966p-5f, -0x1.92bf44p-3f, 0x1.bb9102p+1f,
     /* node 2869 x */
-    0x1.500cccp-55f, 0x1.07945ep+1f, -0x1.7893fp-1f, -0x1.6054dap-7f,
+    -0x1.3cc666p-54f, 0x1.077102p+1f, -0x1.79637ep-1f, -0x1.6c9662p-7f,
     /* node 2869 y */
-    -0x1.c5999ap-54f, -0x1.d9daf8p-1f, 0x1.280106p+1f, -0x1.77782p-3f,
+    -0x1.d1999ap-56f, -0x1.da228ap-1f, 0x1.2817ccp+1f, -0x1.767a14p-3f,
     /* node 2869 z */
-    -0x1.99999ap-58f, -0x1.b9a63p-6f, -0x1.22eb46p-3f, 0x1.9a891p+1f,
+    -0x1.19999ap-55f, -0x1.afdeaap-6f, -0x1.20bf0ep-3f, 0x1.9a6f54p+1f,
     /* node 2870 x */
-    0x1.88999ap-54f, 0x1.16bc28p+1f, -0x1.9d7f4ep-1f, 0x1.f4bde6p-6f,
+    0x1.f8b334p-54f, 0x1.167afap+1f, -0x1.9e63cap-1f, 0x1.e7e09ap-6f,
     /* node 2870 y */
-    -0x1.3eccccp-54f, -0x1.e7bdf6p-1f, 0x1.362fdcp+1f, -0x1.4154cap-3f,
+    0x1.9b3334p-55f, -0x1.e80adep-1f, 0x1.36460ep+1f, -0x1.3f60e2p-3f,
     /* node 2870 z */
-    -0x1.333334p-56f, -0x1.1a6cdep-7f, -0x1.167d4ap-3f, 0x1.b8496ap+1f,
+    -0x1.99999ap-58f, -0x1.1f5d06p-7f, -0x1.136984p-3f, 0x1.b82e6ep+1f,
     /* node 2871 x */
-    0x1.4ae666p-53f, 0x1.22e18ap+1f, -0x1.7aaf2ep-1f, -0x1.02847ep-6f,
+    -0x1.22p-56f, 0x1.2320bp+1f, -0x1.7ae50ep-1f, -0x1.fffe2ap-7f,
     /* node 2871 y */
-    -0x1.07999ap-54f, -0x1.dc2a16p-1f, 0x1.42143p+1f, -0x1.67d35p-3f,
+    -0x1.58p-55f, -0x1.dc9012p-1f, 0x1.42799ep+1f, -0x1.68298cp-3f,
     /* node 2871 z */
-    -0x1.333334p-56f, -0x1.3c3dep-7f, -0x1.35670cp-3f, 0x1.cdd7b8p+1f,
+    -0x1.333334p-57f, -0x1.3fcc9cp-7f, -0x1.371596p-3f, 0x1.cdca36p+1f,
     /* node 2872 x */
-    0x1.8a3334p-54f, 0x1.274e08p+1f, -0x1.a8be3cp-1f, 0x1.a57c3p-7f,
+    0x1.9fccccp-54f, 0x1.277c8cp+1f, -0x1.a85864p-1f, 0x1.aefffp-7f,
     /* node 2872 y */
-    0x1.34ccccp-56f, -0x1.e6efeap-1f, 0x1.44cb36p+1f, -0x1.568f12p-3f,
+    -0x1.f5999ap-55f, -0x1.e72c7p-1f, 0x1.451ebep+1f, -0x1.55ac78p-3f,
     /* node 2872 z */
-    0x1.333334p-57f, -0x1.781fbp-7f, -0x1.3421d6p-3f, 0x1.d73204p+1f,
+    -0x1.99999ap-56f, -0x1.6aba32p-7f, -0x1.34e26ep-3f, 0x1.d7091p+1f,
     /* node 2873 x */
-    0x1.53p-53f, 0x1.2590f6p+1f, -0x1.794df8p-1f, 0x1.405b98p-4f,
+    0x1.c8p-55f, 0x1.257ab2p+1f, -0x1.79c302p-1f, 0x1.3fda9ap-4f,
     /* node 2873 y */
-    -0x1.19999ap-60f, -0x1.d718dep-1f, 0x1.417d0cp+1f, -0x1.2b9f72p-3f,
+    0x1.c33334p-55f, -0x1.d7892ep-1f, 0x1.41555ap+1f, -0x1.292fc2p-3f,
     /* node 2873 z */
-    -0x1p-56f, 0x1.1d6ad2p-7f, -0x1.02bc2cp-3f, 0x1.d14d4ap+1f,
+    0x1.666666p-56f, 0x1.2ae8e2p-7f, -0x1.02710cp-3f, 0x1.d1409ap+1f,
     /* node 2874 x */
-    0x1.e7999ap-55f, 0x1.2c786ep+1f, -0x1.debacap-1f, 0x1.0e936p-4f,
+    0x1.046666p-53f, 0x1.2c3f72p+1f, -0x1.e0252p-1f, 0x1.13e898p-4f,
     /* node 2874 y */
-    -0x1.05999ap-54f, -0x1.e4ede6p-1f, 0x1.482bfap+1f, -0x1.490826p-3f,
+    -0x1.25p-53f, -0x1.e5958ep-1f, 0x1.48219ep+1f, -0x1.475316p-3f,
     /* node 2874 z */
-    -0x1.333334p-55f, 0x1.8ec0d8p-6f, -0x1.3b3288p-3f, 0x1.e066a4p+1f,
+    -0x1p-55f, 0x1.96145ap-6f, -0x1.39d4fcp-3f, 0x1.e02p+1f,
     /* node 2875 x */
-    0x1.f9999ap-55f, 0x1.2b5d16p+1f, -0x1.ccd616p-1f, -0x1.146d26p-4f,
+    0x1.38p-56f, 0x1.2b2d48p+1f, -0x1.cd0ap-1f, -0x1.21411ap-4f,
     /* node 2875 y */
-    0x1.30ccccp-55f, -0x1.e9deb2p-1f, 0x1.49ada8p+1f, -0x1.7ba7aap-3f,
+    0x1.88p-56f, -0x1.e9e6eep-1f, 0x1.49913ep+1f, -0x1.7d72f8p-3f,
     /* node 2875 z */
-    0x1.99999ap-58f, -0x1.8eee4p-6f, -0x1.4ea43cp-3f, 0x1.db134ap+1f,
+    -0x1.333334p-57f, -0x1.a8438cp-6f, -0x1.4be60ap-3f, 0x1.daf28ap+1f,
     /* node 2876 x */
-    0x1.89ccccp-56f, 0x1.38ef64p+1f, -0x1.b5b6c8p-1f, 0x1.c11cf2p-7f,
+    0x1.82cp-55f, 0x1.38f1bep+1f, -0x1.b5ec7cp-1f, 0x1.7034dp-7f,
     /* node 2876 y */
-    -0x1.1ep-54f, -0x1.db44a4p-1f, 0x1.4f9e06p+1f, -0x1.672e9ep-3f,
+    -0x1.e5999ap-54f, -0x1.dac10ap-1f, 0x1.4f9758p+1f, -0x1.69e518p-3f,
     /* node 2876 z */
-    -0x1.666666p-56f, 0x1.9299a6p-9f, -0x1.5cb4f6p-3f, 0x1.f1323ap+1f,
+    -0x1.333334p-56f, 0x1.773e0cp-12f, -0x1.59a382p-3f, 0x1.f16da2p+1f,
     /* node 2877 x */
-    0x1.46ccccp-53f, 0x1.28e7p+1f, -0x1.b3c3e2p-1f, 0x1.4a997ap-3f,
+    -0x1.0e6666p-56f, 0x1.28d6dcp+1f, -0x1.b4b852p-1f, 0x1.4aca46p-3f,
     /* node 2877 y */
-    -0x1.0e6666p-54f, -0x1.dc3f7ep-1f, 0x1.387008p+1f, -0x1.02c1f8p-3f,
+    -0x1.333334p-54f, -0x1.dca796p-1f, 0x1.385964p+1f, -0x1.0247f6p-3f,
     /* node 2877 z */
-    -0x1.99999ap-58f, 0x1.05fadp-6f, -0x1.1501f2p-3f, 0x1.d2018cp+1f,
+    -0x1p-56f, 0x1.0c38bcp-6f, -0x1.13f3acp-3f, 0x1.d1e546p+1f,
     /* node 2878 x */
-    -0x1.926666p-55f, 0x1.3a8b18p+1f, -0x1.c7f4aap-1f, 0x1.4ab9cap-3f,
+    -0x1.28ccccp-55f, 0x1.3a6c28p+1f, -0x1.c6fedap-1f, 0x1.47c848p-3f,
     /* node 2878 y */
-    -0x1.873334p-55f, -0x1.d5e0bcp-1f, 0x1.4728f4p+1f, -0x1.2bf7fp-3f,
+    0x1.1ep-54f, -0x1.d57aa4p-1f, 0x1.472708p+1f, -0x1.2b4c26p-3f,
     /* node 2878 z */
-    -0x1.4cccccp-55f, 0x1.92309p-5f, -0x1.4a76e8p-3f, 0x1.f0bf4ep+1f,
+    -0x1.ccccccp-55f, 0x1.8382dcp-5f, -0x1.48338ep-3f, 0x1.f0ac44p+1f,
     /* node 2879 x */
-    0x1.da6666p-54f, 0x1.2f15dcp+1f, -0x1.e14c4p-1f, 0x1.08c93cp-2f,
+    0x1.5d999ap-53f, 0x1.2f32c2p+1f, -0x1.e0e4a2p-1f, 0x1.07f414p-2f,
     /* node 2879 y */
-    -0x1.093334p-54f, -0x1.ddf8fep-1f, 0x1.3636d8p+1f, -0x1.b17b12p-4f,
+    -0x1.333334p-60f, -0x1.de3448p-1f, 0x1.363f18p+1f, -0x1.ae767ep-4f,
     /* node 2879 z */
-    -0x1.666666p-56f, 0x1.cbafaap-5f, -0x1.1accep-3f, 0x1.dc5cbep+1f,
+    -0x1p-55f, 0x1.c5972p-5f, -0x1.1951ccp-3f, 0x1.dc1c5p+1f,
     /* node 2880 x */
-    0x1.18p-55f, 0x1.3d3836p+1f, -0x1.feb41ap-1f, 0x1.be4dfep-3f,
+    0x1.bcp-54f, 0x1.3cec04p+1f, -0x1.fea16cp-1f, 0x1.bb0abcp-3f,
     /* node 2880 y */
-    0x1.55999ap-55f, -0x1.d194bp-1f, 0x1.3a5b88p+1f, -0x1.3e808p-3f,
+    -0x1.29999ap-55f, -0x1.d17a6p-1f, 0x1.3a6dacp+1f, -0x1.3e9042p-3f,
     /* node 2880 z */
-    -0x0p+0f, 0x1.33ca02p-5f, -0x1.83a61ap-3f, 0x1.e7aab8p+1f,
+    -0x1.ccccccp-56f, 0x1.310b6cp-5f, -0x1.836ac8p-3f, 0x1.e78edp+1f,
     /* node 2881 x */
-    0x1.38p-56f, 0x1.44db32p+1f, -0x1.0ca218p+0f, 0x1.469fdp-3f,
+    0x1.58ccccp-55f, 0x1.450598p+1f, -0x1.0cf42ap+0f, 0x1.51136cp-3f,
     /* node 2881 y */
-    -0x1.a66666p-57f, -0x1.e2d61ep-1f, 0x1.49af82p+1f, -0x1.7c34a8p-3f,
+    -0x1.acccccp-58f, -0x1.e2c896p-1f, 0x1.49b24p+1f, -0x1.791d4p-3f,
     /* node 2881 z */
-    -0x1p-56f, 0x1.ac4408p-5f, -0x1.be81a4p-3f, 0x1.f2c6bep+1f,
+    -0x1.333334p-56f, 0x1.b4c672p-5f, -0x1.bf68bp-3f, 0x1.f28e0ap+1f,
     /* node 2882 x */
-    0x1.266666p-57f, 0x1.42b56ep+1f, -0x1.05f74p+0f, 0x1.11ca2ep-2f,
+    0x1.08ccccp-54f, 0x1.428838p+1f, -0x1.05f692p+0f, 0x1.105f14p-2f,
     /* node 2882 y */
-    -0x1.e66666p-57f, -0x1.cbed36p-1f, 0x1.391248p+1f, -0x1.7e91b2p-3f,
+    -0x1.326666p-55f, -0x1.ccd4bcp-1f, 0x1.394d42p+1f, -0x1.7e55c4p-3f,
     /* node 2882 z */
-    0x1.4cccccp-55f, 0x1.4bbf48p-4f, -0x1.b5fd8cp-3f, 0x1.e6deecp+1f,
+    -0x1.8p-55f, 0x1.48f0b2p-4f, -0x1.b54b96p-3f, 0x1.e6b02ep+1f,
     /* node 2883 x */
-    0x1.15999ap-54f, 0x1.3b1a6p+1f, -0x1.0b0a5ep+0f, 0x1.1d108ap-2f,
+    0x1.de6666p-55f, 0x1.3b156ep+1f, -0x1.0b0e36p+0f, 0x1.1aabb2p-2f,
     /* node 2883 y */
-    -0x1.95999ap-55f, -0x1.d0ae6cp-1f, 0x1.2ebe66p+1f, -0x1.5e91a2p-3f,
+    0x1.753334p-54f, -0x1.d13a4ap-1f, 0x1.2ed7aap+1f, -0x1.6044e2p-3f,
     /* node 2883 z */
-    -0x1.8p-55f, 0x1.18fd2ep-4f, -0x1.bc79dap-3f, 0x1.df61b2p+1f,
+    -0x1.333334p-57f, 0x1.153fbcp-4f, -0x1.bba394p-3f, 0x1.df4918p+1f,
     /* node 2884 x */
-    0x1.12ccccp-53f, 0x1.2caf5cp+1f, -0x1.df12dp-1f, 0x1.4275ccp-2f,
+    0x1.6p-55f, 0x1.2ce2fep+1f, -0x1.e01d56p-1f, 0x1.432f46p-2f,
     /* node 2884 y */
-    -0x1.ab3334p-55f, -0x1.ced314p-1f, 0x1.29d6b8p+1f, -0x1.d89522p-4f,
+    -0x1.06ccccp-54f, -0x1.cf3276p-1f, 0x1.29d1fp+1f, -0x1.d5d948p-4f,
     /* node 2884 z */
-    -0x1.99999ap-57f, 0x1.1b77e2p-4f, -0x1.2e070ep-3f, 0x1.d8623cp+1f,
+    -0x1.99999ap-55f, 0x1.1e2042p-4f, -0x1.2da40cp-3f, 0x1.d85bf4p+1f,
     /* node 2885 x */
-    0x1.6cccccp-55f, 0x1.1713bp+0f, -0x1.bec734p-2f, -0x1.2c20a8p-1f,
+    0x1.366666p-55f, 0x1.1714b2p+0f, -0x1.bf2b6ap-2f, -0x1.2c5444p-1f,
     /* node 2885 y */
-    0x1.6p-56f, -0x1.46e37p-1f, 0x1.43f718p-1f, -0x1.995f8ap-2f,
+    0x1.ccccccp-58f, -0x1.46d68ap-1f, 0x1.443a8ap-1f, -0x1.9974cap-2f,
     /* node 2885 z */
-    0x1.59999ap-56f, 0x1.8a3e2ep-4f, -0x1.765d66p-2f, 0x1.7026cap+0f,
+    -0x1p-58f, 0x1.8a8b8ep-4f, -0x1.767feep-2f, 0x1.700b6cp+0f,
     /* node 2886 x */
-    0x1.633334p-54f, 0x1.29a23ap+0f, -0x1.f7f8bcp-2f, -0x1.430038p-1f,
+    0x1.666666p-59f, 0x1.299d6ep+0f, -0x1.f836f8p-2f, -0x1.433b48p-1f,
     /* node 2886 y */
-    -0x1p-59f, -0x1.551452p-1f, 0x1.4b113ep-1f, -0x1.93663ep-2f,
+    -0x1.d9999ap-56f, -0x1.548456p-1f, 0x1.4aaf0ap-1f, -0x1.93e6e8p-2f,
     /* node 2886 z */
-    -0x0p+0f, 0x1.c5dd86p-4f, -0x1.744ac8p-2f, 0x1.831a58p+0f,
+    -0x1.333334p-59f, 0x1.c7badep-4f, -0x1.74c134p-2f, 0x1.82da04p+0f,
     /* node 2887 x */
-    -0x1.d9999ap-57f, 0x1.3bb554p+0f, -0x1.0d501ap-1f, -0x1.57459p-1f,
+    0x1.19999ap-58f, 0x1.3bd5dcp+0f, -0x1.0da5dp-1f, -0x1.57c0b6p-1f,
     /* node 2887 y */
-    0x1.266666p-57f, -0x1.619b28p-1f, 0x1.5ad26ep-1f, -0x1.98a526p-2f,
+    0x1.59999ap-57f, -0x1.60fb4ep-1f, 0x1.5aeca4p-1f, -0x1.99fd84p-2f,
     /* node 2887 z */
-    0x1.99999ap-60f, 0x1.9377d2p-4f, -0x1.7505c2p-2f, 0x1.9e2748p+0f,
+    -0x1.b33334p-56f, 0x1.9289ccp-4f, -0x1.74de9p-2f, 0x1.9e1924p+0f,
     /* node 2888 x */
-    0x1.89999ap-55f, 0x1.2df19ap+0f, -0x1.fae9d6p-2f, -0x1.3bb226p-1f,
+    0x1.1cccccp-55f, 0x1.2e1b98p+0f, -0x1.fb924p-2f, -0x1.3c400ap-1f,
     /* node 2888 y */
-    0x1.19999ap-58f, -0x1.5b75ecp-1f, 0x1.5a080ep-1f, -0x1.92a0a2p-2f,
+    0x1.b33334p-57f, -0x1.5b74eep-1f, 0x1.5a78d2p-1f, -0x1.930f44p-2f,
     /* node 2888 z */
-    -0x1p-55f, 0x1.9becfap-4f, -0x1.7bdd2ap-2f, 0x1.8e32bap+0f,
+    0x1.333334p-57f, 0x1.9b5efap-4f, -0x1.7bcc9p-2f, 0x1.8e4714p+0f,
     /* node 2889 x */
-    0x1.133334p-55f, 0x1.f4bb9ap-1f, -0x1.6ed2eap-2f, -0x1.0ae498p-1f,
+    -0x1.633334p-55f, 0x1.f4f904p-1f, -0x1.6f7612p-2f, -0x1.0b1e9ep-1f,
     /* node 2889 y */
-    -0x1.99999ap-59f, -0x1.336c2p-1f, 0x1.3f4568p-1f, -0x1.9c4338p-2f,
+    0x1.3cccccp-55f, -0x1.33735cp-1f, 0x1.3fa5e2p-1f, -0x1.9c70d6p-2f,
     /* node 2889 z */
-    0x1.666666p-58f, 0x1.5d7d26p-4f, -0x1.7a8506p-2f, 0x1.50d106p+0f,
+    -0x1.666666p-57f, 0x1.5d7afcp-4f, -0x1.7a4244p-2f, 0x1.50b9a6p+0f,
     /* node 2890 x */
-    -0x1.ecccccp-56f, 0x1.068a1ap+0f, -0x1.97819cp-2f, -0x1.ffa6c2p-2f,
+    0x1.1cccccp-55f, 0x1.069852p+0f, -0x1.98181ap-2f, -0x1.ffe89cp-2f,
     /* node 2890 y */
-    -0x1.19999ap-59f, -0x1.44f74p-1f, 0x1.52b58p-1f, -0x1.84260ap-2f,
+    -0x1.19999ap-57f, -0x1.450024p-1f, 0x1.53077p-1f, -0x1.841a46p-2f,
     /* node 2890 z */
-    -0x1.99999ap-57f, 0x1.5b78f6p-4f, -0x1.7c20cap-2f, 0x1.64f278p+0f,
+    -0x1.4cccccp-57f, 0x1.5ab6bep-4f, -0x1.7befcep-2f, 0x1.64eaeep+0f,
     /* node 2891 x */
-    0x1.acccccp-54f, 0x1.40094p+0f, -0x1.0d3462p-1f, -0x1.49bf08p-1f,
+    0x1.333334p-60f, 0x1.40101ep+0f, -0x1.0d83cp-1f, -0x1.49e7fcp-1f,
     /* node 2891 y */
-    -0x1.7p-55f, -0x1.633e2ap-1f, 0x1.6c733cp-1f, -0x1.a4fd2ep-2f,
+    0x1.59999ap-56f, -0x1.634ef6p-1f, 0x1.6ce62ap-1f, -0x1.a51784p-2f,
     /* node 2891 z */
-    0x1p-56f, 0x1.7a97aep-4f, -0x1.7a48dcp-2f, 0x1.a65b08p+0f,
+    -0x1.8p-56f, 0x1.77315cp-4f, -0x1.79c198p-2f, 0x1.a6711p+0f,
     /* node 2892 x */
-    0x1.69999ap-55f, 0x1.1f2e5cp+0f, -0x1.d090a6p-2f, -0x1.07052cp-1f,
+    0x1.cp-55f, 0x1.1f2bccp+0f, -0x1.d0f70cp-2f, -0x1.070d2ep-1f,
     /* node 2892 y */
-    0x1.19999ap-56f, -0x1.5bf9bep-1f, 0x1.73f8d6p-1f, -0x1.8a54f6p-2f,
+    -0x1.8p-57f, -0x1.5bea5ep-1f, 0x1.743296p-1f, -0x1.8a335p-2f,
     /* node 2892 z */
-    -0x0p+0f, 0x1.53ec8ep-4f, -0x1.8631b8p-2f, 0x1.8c9002p+0f,
+    -0x1.99999ap-60f, 0x1.52521p-4f, -0x1.85ed66p-2f, 0x1.8c8dfep+0f,
     /* node 2893 x */
-    0x1.133334p-55f, 0x1.41ba16p+0f, -0x1.0b8cecp-1f, -0x1.319c5cp-1f,
+    0x1.f9999ap-56f, 0x1.41b26cp+0f, -0x1.0be0dap-1f, -0x1.31acap-1f,
     /* node 2893 y */
-    0x1.333334p-58f, -0x1.6bae2p-1f, 0x1.80ce6ep-1f, -0x1.921bcep-2f,
+    0x1.2p-55f, -0x1.6bb39p-1f, 0x1.8129d4p-1f, -0x1.927ab4p-2f,
     /* node 2893 z */
-    -0x1.333334p-56f, 0x1.47caap-4f, -0x1.75fd44p-2f, 0x1.b0832p+0f,
+    -0x0p+0f, 0x1.4532d2p-4f, -0x1.75e478p-2f, 0x1.b09b7p+0f,
     /* node 2894 x */
-    0x1.acccccp-56f, 0x1.20bd1ep+0f, -0x1.c63d14p-2f, -0x1.e748bep-2f,
+    0x1.88p-54f, 0x1.20b2dap+0f, -0x1.c6c21ep-2f, -0x1.e7800ep-2f,
     /* node 2894 y */
-    -0x1.2cccccp-56f, -0x1.56876p-1f, 0x1.84258p-1f, -0x1.a5dedp-2f,
+    -0x1.bp-55f, -0x1.56aa52p-1f, 0x1.84732p-1f, -0x1.a59622p-2f,
     /* node 2894 z */
-    0x1.b33334p-56f, 0x1.233704p-4f, -0x1.7fcdeap-2f, 0x1.8eecaep+0f,
+    -0x1.4cccccp-56f, 0x1.224b28p-4f, -0x1.7f91c6p-2f, 0x1.8ee722p+0f,
     /* node 2895 x */
-    0x1.2cccccp-56f, 0x1.471f5p+0f, -0x1.14d7bcp-1f, -0x1.1b79ecp-1f,
+    0x1.a33334p-55f, 0x1.47279p+0f, -0x1.15246ap-1f, -0x1.1b88a6p-1f,
     /* node 2895 y */
-    -0x1.733334p-57f, -0x1.783888p-1f, 0x1.99754cp-1f, -0x1.86d3cep-2f,
+    -0x1.233334p-54f, -0x1.784d98p-1f, 0x1.99c3f6p-1f, -0x1.8695e8p-2f,
     /* node 2895 z */
-    -0x1.99999ap-59f, 0x1.314b76p-4f, -0x1.7c776ap-2f, 0x1.c09896p+0f,
+    -0x1p-57f, 0x1.2e85dep-4f, -0x1.7c3988p-2f, 0x1.c0ad66p+0f,
     /* node 2896 x */
-    0x1.8p-56f, 0x1.5889e2p+0f, -0x1.2f031p-1f, -0x1.61714p-1f,
+    0x1.19999ap-58f, 0x1.588106p+0f, -0x1.2f77c4p-1f, -0x1.613f92p-1f,
     /* node 2896 y */
-    -0x1.033334p-54f, -0x1.78c34ep-1f, 0x1.8722bap-1f, -0x1.a3a12ap-2f,
+    -0x1.0cccccp-57f, -0x1.78e2cep-1f, 0x1.871a2ep-1f, -0x1.a2cd68p-2f,
     /* node 2896 z */
-    0x1.99999ap-57f, 0x1.47de2p-4f, -0x1.6f9c66p-2f, 0x1.cb4bbp+0f,
+    -0x1.333334p-58f, 0x1.4654fap-4f, -0x1.6f2d6cp-2f, 0x1.cb44d8p+0f,
     /* node 2897 x */
-    -0x1.99999ap-61f, 0x1.61bb6p+0f, -0x1.3d87fap-1f, -0x1.52c1d6p-1f,
+    -0x1.4cccccp-58f, 0x1.61b62p+0f, -0x1.3dd946p-1f, -0x1.52c028p-1f,
     /* node 2897 y */
-    -0x1.e66666p-56f, -0x1.7e0748p-1f, 0x1.963212p-1f, -0x1.9e6e7ap-2f,
+    -0x1.433334p-55f, -0x1.7e2d84p-1f, 0x1.962e38p-1f, -0x1.9d981ap-2f,
     /* node 2897 z */
-    -0x1.333334p-57f, 0x1.277fep-4f, -0x1.6f4614p-2f, 0x1.de961ep+0f,
+    -0x1.ccccccp-57f, 0x1.25a15ap-4f, -0x1.6efffp-2f, 0x1.de99f8p+0f,
     /* node 2898 x */
-    -0x1.1cccccp-55f, 0x1.29aafap+0f, -0x1.d5359ap-2f, -0x1.b7dfb6p-2f,
+    0x1.d33334p-56f, 0x1.29a3fcp+0f, -0x1.d5afap-2f, -0x1.b7e206p-2f,
     /* node 2898 y */
-    -0x1.4cccccp-55f, -0x1.6144f4p-1f, 0x1.9fc7c4p-1f, -0x1.8ddbf8p-2f,
+    -0x1.4cccccp-55f, -0x1.617564p-1f, 0x1.a012a4p-1f, -0x1.8d59d6p-2f,
     /* node 2898 z */
-    0x1p-57f, 0x1.ff3348p-5f, -0x1.7e5382p-2f, 0x1.9edea2p+0f,
+    0x1p-57f, 0x1.fb53f4p-5f, -0x1.7e1ed2p-2f, 0x1.9ee3e8p+0f,
     /* node 2899 x */
-    0x1.2b3334p-54f, 0x1.3c5de4p+0f, -0x1.e885c4p-2f, -0x1.a7bd4ep-2f,
+    0x1.366666p-54f, 0x1.3c5132p+0f, -0x1.e908a2p-2f, -0x1.a7f332p-2f,
     /* node 2899 y */
-    -0x1.d9999ap-57f, -0x1.66ee4p-1f, 0x1.c8078ep-1f, -0x1.9ce67cp-2f,
+    -0x1p-55f, -0x1.67049p-1f, 0x1.c83f4ep-1f, -0x1.9c3d7ep-2f,
     /* node 2899 z */
-    -0x1.333334p-58f, 0x1.aeed1cp-5f, -0x1.7ef34cp-2f, 0x1.b87444p+0f,
+    -0x1.19999ap-55f, 0x1.ab59d4p-5f, -0x1.7ec49ep-2f, 0x1.b87e0ap+0f,
     /* node 2900 x */
-    0x1.a33334p-55f, 0x1.4f2452p+0f, -0x1.19f09ep-1f, -0x1.073ae8p-1f,
+    0x1.28p-54f, 0x1.4f136cp+0f, -0x1.1a4862p-1f, -0x1.076142p-1f,
     /* node 2900 y */
-    0x1p-57f, -0x1.7792dap-1f, 0x1.b19022p-1f, -0x1.8d9c4p-2f,
+    -0x1.e66666p-58f, -0x1.77d25ap-1f, 0x1.b1dd0ep-1f, -0x1.8d0572p-2f,
     /* node 2900 z */
-    -0x1p-57f, 0x1.0e4a7p-4f, -0x1.7ebc74p-2f, 0x1.d013dep+0f,
+    -0x1.99999ap-58f, 0x1.0c9228p-4f, -0x1.7e3e96p-2f, 0x1.d00ecep+0f,
     /* node 2901 x */
-    0x1.1p-54f, 0x1.6ae29cp+0f, -0x1.2d7cd2p-1f, -0x1.fc670ap-2f,
+    0x1.4b3334p-54f, 0x1.6ac462p+0f, -0x1.2dd6c4p-1f, -0x1.fc4d7p-2f,
     /* node 2901 y */
-    -0x1.99999ap-56f, -0x1.81d4e6p-1f, 0x1.e6fddcp-1f, -0x1.849582p-2f,
+    -0x1.2cccccp-57f, -0x1.820514p-1f, 0x1.e719cap-1f, -0x1.840cdap-2f,
     /* node 2901 z */
-    -0x1p-57f, 0x1.7afa54p-5f, -0x1.72e306p-2f, 0x1.f95078p+0f,
+    -0x1.666666p-56f, 0x1.77e174p-5f, -0x1.725e6cp-2f, 0x1.f9408ap+0f,
     /* node 2902 x */
-    0x1.d33334p-56f, 0x1.5f1e48p+0f, -0x1.09d85cp-1f, -0x1.80ade2p-2f,
+    -0x1.c9999ap-56f, 0x1.5f14f8p+0f, -0x1.0a02cp-1f, -0x1.80b9a2p-2f,
     /* node 2902 y */
-    0x1.99999ap-61f, -0x1.75cfe4p-1f, 0x1.17bbdp+0f, -0x1.a9fc66p-2f,
+    -0x1.f66666p-55f, -0x1.75fa4cp-1f, 0x1.17e048p+0f, -0x1.a99796p-2f,
     /* node 2902 z */
-    -0x1.333334p-57f, 0x1.7e7974p-6f, -0x1.80bc64p-2f, 0x1.f4507ep+0f,
+    0x1.333334p-56f, 0x1.792b46p-6f, -0x1.80448ap-2f, 0x1.f43c76p+0f,
     /* node 2903 x */
-    0x1.fcccccp-55f, 0x1.8fdcf8p+0f, -0x1.435b5cp-1f, -0x1.cb4844p-2f,
+    0x1.7cccccp-55f, 0x1.8fcd9p+0f, -0x1.43d9p-1f, -0x1.cb440ep-2f,
     /* node 2903 y */
-    -0x1.4cccccp-55f, -0x1.883932p-1f, 0x1.26b2dp+0f, -0x1.9a1fd2p-2f,
+    0x1.233334p-55f, -0x1.88561ap-1f, 0x1.26f2c6p+0f, -0x1.99f572p-2f,
     /* node 2903 z */
-    -0x1.666666p-56f, 0x1.0cf6p-6f, -0x1.689364p-2f, 0x1.1a5444p+1f,
+    -0x1.666666p-57f, 0x1.0b2ea4p-6f, -0x1.681b48p-2f, 0x1.1a590cp+1f,
     /* node 2904 x */
-    0x1.d9999ap-56f, 0x1.74f0d6p+0f, -0x1.54f0bap-1f, -0x1.3308f8p-1f,
+    0x1.99999ap-59f, 0x1.74f09cp+0f, -0x1.55547cp-1f, -0x1.32ffap-1f,
     /* node 2904 y */
-    -0x1.033334p-56f, -0x1.86e6e2p-1f, 0x1.b4b762p-1f, -0x1.7f7e0ep-2f,
+    -0x1.d66666p-56f, -0x1.86f5a6p-1f, 0x1.b4eb1ap-1f, -0x1.7f4f06p-2f,
     /* node 2904 z */
-    -0x1.ccccccp-56f, 0x1.2dbf54p-4f, -0x1.644968p-2f, 0x1.f8531p+0f,
+    0x1.19999ap-56f, 0x1.2a2ed6p-4f, -0x1.641ed8p-2f, 0x1.f88ab2p+0f,
     /* node 2905 x */
-    0x1.666666p-54f, 0x1.8d1cdp+0f, -0x1.6ab938p-1f, -0x1.20c2fcp-1f,
+    0x1.633334p-54f, 0x1.8d14a4p+0f, -0x1.6b2ed4p-1f, -0x1.2089fap-1f,
     /* node 2905 y */
-    -0x1.d33334p-56f, -0x1.92562ep-1f, 0x1.e98fecp-1f, -0x1.665d04p-2f,
+    0x1.b33334p-59f, -0x1.928b9ap-1f, 0x1.e9c104p-1f, -0x1.657f56p-2f,
     /* node 2905 z */
-    0x1.99999ap-60f, 0x1.ad504ep-5f, -0x1.4fe4fp-2f, 0x1.0f45c8p+1f,
+    -0x1.b33334p-56f, 0x1.ab0922p-5f, -0x1.4f594cp-2f, 0x1.0f37cep+1f,
     /* node 2906 x */
-    0x1.3cccccp-55f, 0x1.90a1cap+0f, -0x1.200efep-1f, -0x1.672e98p-2f,
+    0x1.28p-55f, 0x1.90a27p+0f, -0x1.2009b4p-1f, -0x1.67703cp-2f,
     /* node 2906 y */
-    -0x1.ecccccp-56f, -0x1.868c28p-1f, 0x1.5d3482p+0f, -0x1.9a2142p-2f,
+    0x1.cp-57f, -0x1.86ecbep-1f, 0x1.5d5c5cp+0f, -0x1.99eb26p-2f,
     /* node 2906 z */
-    -0x1.99999ap-59f, -0x1.317d2ep-10f, -0x1.57ec42p-2f, 0x1.1da83p+1f,
+    0x1.99999ap-58f, -0x1.ad5da8p-10f, -0x1.57d198p-2f, 0x1.1d955cp+1f,
     /* node 2907 x */
-    -0x1.88p-55f, 0x1.de9738p+0f, -0x1.5d2406p-1f, -0x1.2cf8b8p-2f,
+    0x1.88ccccp-54f, 0x1.de8f02p+0f, -0x1.5de7ccp-1f, -0x1.2cba8cp-2f,
     /* node 2907 y */
-    -0x1.e66666p-59f, -0x1.ae3986p-1f, 0x1.da940ep+0f, -0x1.5d0bf2p-2f,
+    -0x1.99999ap-57f, -0x1.ae765ap-1f, 0x1.dad798p+0f, -0x1.5cd48ep-2f,
     /* node 2907 z */
-    -0x1.ccccccp-57f, -0x1.17179p-5f, -0x1.155568p-2f, 0x1.5fe2b6p+1f,
+    0x1.99999ap-57f, -0x1.17d69p-5f, -0x1.14cd7ep-2f, 0x1.5fbcbp+1f,
     /* node 2908 x */
-    0x1.39999ap-55f, 0x1.d61b2p+0f, -0x1.6348e2p-1f, -0x1.866aecp-2f,
+    0x1.d33334p-56f, 0x1.d6273ep+0f, -0x1.63f02ep-1f, -0x1.86a7acp-2f,
     /* node 2908 y */
-    -0x1.0cccccp-57f, -0x1.9dfeaep-1f, 0x1.960ca4p+0f, -0x1.7eaafcp-2f,
+    -0x1.7p-55f, -0x1.9e7d74p-1f, 0x1.95f39ep+0f, -0x1.7e7ffap-2f,
     /* node 2908 z */
-    -0x1.ccccccp-56f, -0x1.c70a0ep-6f, -0x1.4b0b48p-2f, 0x1.53bb38p+1f,
+    -0x1.8p-56f, -0x1.d1fce4p-6f, -0x1.4afc7cp-2f, 0x1.53a706p+1f,
     /* node 2909 x */
-    -0x1.19999ap-57f, 0x1.107dc4p+1f, -0x1.86ed18p-1f, -0x1.83bcecp-2f,
+    0x1.74ccccp-55f, 0x1.10826ep+1f, -0x1.879078p-1f, -0x1.84815cp-2f,
     /* node 2909 y */
-    -0x1.333334p-55f, -0x1.ba01b8p-1f, 0x1.f38e78p+0f, -0x1.381a04p-2f,
+    0x1.f33334p-56f, -0x1.baba5cp-1f, 0x1.f32ce4p+0f, -0x1.37b08ap-2f,
     /* node 2909 z */
-    0x1.666666p-56f, -0x1.e5a83ap-6f, -0x1.e5b848p-3f, 0x1.87fc1ap+1f,
+    -0x1.666666p-56f, -0x1.f26b5p-6f, -0x1.e511eap-3f, 0x1.87e37ap+1f,
     /* node 2910 x */
-    0x1.b1999ap-55f, 0x1.0dc1d2p+1f, -0x1.85330ep-1f, -0x1.05b79p-2f,
+    0x1.266666p-54f, 0x1.0e11acp+1f, -0x1.852b92p-1f, -0x1.05ef6cp-2f,
     /* node 2910 y */
-    -0x1.34ccccp-54f, -0x1.ce3884p-1f, 0x1.16d37ap+1f, -0x1.2e1968p-2f,
+    -0x1.b33334p-54f, -0x1.ce341p-1f, 0x1.17153ap+1f, -0x1.2de814p-2f,
     /* node 2910 z */
-    -0x1.333334p-56f, -0x1.439fc2p-5f, -0x1.d5a8a2p-3f, 0x1.9cbab8p+1f,
+    -0x1.666666p-56f, -0x1.464efap-5f, -0x1.d65c06p-3f, 0x1.9cae6ep+1f,
     /* node 2911 x */
-    0x1.e33334p-56f, 0x1.24a02p+1f, -0x1.afb914p-1f, -0x1.2b3958p-2f,
+    -0x1.61999ap-54f, 0x1.247662p+1f, -0x1.b0bd78p-1f, -0x1.2b4ae8p-2f,
     /* node 2911 y */
-    -0x1.4cccccp-59f, -0x1.cecd48p-1f, 0x1.21cdf8p+1f, -0x1.22bf1ep-2f,
+    -0x1.0cccccp-54f, -0x1.cfa1bep-1f, 0x1.216692p+1f, -0x1.221486p-2f,
     /* node 2911 z */
-    -0x1.333334p-55f, -0x1.8bec2ap-5f, -0x1.b7959cp-3f, 0x1.b6cc06p+1f,
+    -0x1.e66666p-55f, -0x1.9550f8p-5f, -0x1.b63ef4p-3f, 0x1.b6719ep+1f,
     /* node 2912 x */
-    -0x1.99999ap-59f, 0x1.fddf28p+0f, -0x1.a21e92p-1f, -0x1.c0260cp-2f,
+    -0x1.9p-54f, 0x1.fe02fp+0f, -0x1.a24a78p-1f, -0x1.c0b16ap-2f,
     /* node 2912 y */
-    -0x1.04ccccp-55f, -0x1.b57ca4p-1f, 0x1.93e6eap+0f, -0x1.2862d6p-2f,
+    -0x1.14ccccp-55f, -0x1.b5aa48p-1f, 0x1.941822p+0f, -0x1.27e27ep-2f,
     /* node 2912 z */
-    -0x1p-56f, -0x1.fd0faep-6f, -0x1.0c281p-2f, 0x1.6b380cp+1f,
+    -0x0p+0f, -0x1.fbdb32p-6f, -0x1.0b9726p-2f, 0x1.6b192ep+1f,
     /* node 2913 x */
-    0x1.e66666p-54f, 0x1.20e786p+1f, -0x1.c15a0ep-1f, -0x1.9866dp-2f,
+    -0x1.48p-54f, 0x1.20c9aap+1f, -0x1.c1e51p-1f, -0x1.99554ep-2f,
     /* node 2913 y */
-    -0x1.19999ap-55f, -0x1.c69836p-1f, 0x1.fd4362p+0f, -0x1.005f1cp-2f,
+    -0x1.fp-56f, -0x1.c68fc4p-1f, 0x1.fd1eeep+0f, -0x1.001d7ep-2f,
     /* node 2913 z */
-    -0x1.8p-55f, -0x1.fc34b6p-6f, -0x1.baa446p-3f, 0x1.9969bap+1f,
+    -0x1.ccccccp-56f, -0x1.01a53ap-5f, -0x1.bb7a3ap-3f, 0x1.992b4ep+1f,
     /* node 2914 x */
-    0x1.333334p-54f, 0x1.217f26p+1f, -0x1.9caeaep-1f, -0x1.0d55d4p-2f,
+    0x1.f66666p-55f, 0x1.2233b6p+1f, -0x1.9ba6bap-1f, -0x1.0c06ecp-2f,
     /* node 2914 y */
-    -0x1.4f3334p-54f, -0x1.d8ddf2p-1f, 0x1.29c468p+1f, -0x1.02836ap-2f,
+    -0x1.6p-55f, -0x1.d856a4p-1f, 0x1.2a777ep+1f, -0x1.02c46ap-2f,
     /* node 2914 z */
-    0x1.99999ap-59f, -0x1.453fd6p-5f, -0x1.85da84p-3f, 0x1.b5eac8p+1f,
+    0x1.99999ap-57f, -0x1.45785ep-5f, -0x1.8921f8p-3f, 0x1.b618d4p+1f,
     /* node 2915 x */
-    -0x1.4cp-54f, 0x1.2c9e7ep+1f, -0x1.d7ed24p-1f, -0x1.ae884cp-3f,
+    0x1.473334p-54f, 0x1.2d4522p+1f, -0x1.d7109cp-1f, -0x1.ac15b4p-3f,
     /* node 2915 y */
-    -0x1.51999ap-54f, -0x1.eb692ep-1f, 0x1.3d543ap+1f, -0x1.eca434p-3f,
+    -0x1.a8p-55f, -0x1.eae0dcp-1f, 0x1.3e069p+1f, -0x1.eba53ep-3f,
     /* node 2915 z */
-    -0x1.333334p-55f, -0x1.5534dcp-5f, -0x1.630d44p-3f, 0x1.d0fc1p+1f,
+    -0x1.333334p-55f, -0x1.4e8ecap-5f, -0x1.661f1p-3f, 0x1.d14d44p+1f,
     /* node 2916 x */
-    0x1.1b999ap-53f, 0x1.340a88p+1f, -0x1.a2e054p-1f, -0x1.fc333ap-3f,
+    0x1.a4p-53f, 0x1.33a852p+1f, -0x1.a3e9f4p-1f, -0x1.006cbp-2f,
     /* node 2916 y */
-    -0x1.01999ap-55f, -0x1.c8bc8ep-1f, 0x1.3a4888p+1f, -0x1.e942eap-3f,
+    0x1.1p-56f, -0x1.c92c98p-1f, 0x1.39f38ap+1f, -0x1.e8e84cp-3f,
     /* node 2916 z */
-    -0x1.19999ap-55f, -0x1.6e2942p-5f, -0x1.a8e674p-3f, 0x1.d60808p+1f,
+    -0x1.99999ap-58f, -0x1.7f62acp-5f, -0x1.a84252p-3f, 0x1.d5953ap+1f,
     /* node 2917 x */
-    0x1.666666p-56f, 0x1.3ffd68p+1f, -0x1.d3c602p-1f, -0x1.d6b05ep-3f,
+    0x1.1accccp-53f, 0x1.40157cp+1f, -0x1.d37cccp-1f, -0x1.dabf28p-3f,
     /* node 2917 y */
-    -0x1.30ccccp-53f, -0x1.dadc9ap-1f, 0x1.436b38p+1f, -0x1.bbf3e2p-3f,
+    0x1.6p-56f, -0x1.db25d6p-1f, 0x1.43d974p+1f, -0x1.bcb922p-3f,
     /* node 2917 z */
-    0x1.99999ap-57f, -0x1.a2637p-6f, -0x1.7dae1cp-3f, 0x1.e3b50ap+1f,
+    -0x1.99999ap-57f, -0x1.d53324p-6f, -0x1.7efccap-3f, 0x1.e364e4p+1f,
     /* node 2918 x */
-    -0x1.acccccp-58f, 0x1.382284p+1f, -0x1.9866aap-1f, -0x1.7381dp-3f,
+    -0x1.99999ap-58f, 0x1.386e1ep+1f, -0x1.98a73p-1f, -0x1.70b04ep-3f,
     /* node 2918 y */
-    -0x1.306666p-53f, -0x1.d49406p-1f, 0x1.4ceef8p+1f, -0x1.cc3b4ep-3f,
+    0x1.99999ap-57f, -0x1.d568bep-1f, 0x1.4d6b14p+1f, -0x1.cc4268p-3f,
     /* node 2918 z */
-    -0x1.19999ap-55f, -0x1.9f0a1ap-5f, -0x1.6201f4p-3f, 0x1.e7d74ep+1f,
+    -0x1.99999ap-56f, -0x1.9ce3ep-5f, -0x1.62e83ap-3f, 0x1.e7d83ap+1f,
     /* node 2919 x */
-    0x1.ccp-54f, 0x1.48f24ap+1f, -0x1.07e368p+0f, -0x1.9ed704p-3f,
+    0x1.ca6666p-54f, 0x1.49cf9cp+1f, -0x1.07630cp+0f, -0x1.9b4b3ep-3f,
     /* node 2919 y */
-    -0x1.8p-56f, -0x1.eb6e9p-1f, 0x1.4e426p+1f, -0x1.9ecd76p-3f,
+    -0x1.4p-55f, -0x1.ebc61ap-1f, 0x1.4f25fap+1f, -0x1.9b101ep-3f,
     /* node 2919 z */
-    -0x1.99999ap-59f, -0x1.33befp-5f, -0x1.69955cp-3f, 0x1.f01a06p+1f,
+    -0x1.333334p-56f, -0x1.329f9p-5f, -0x1.69dc5cp-3f, 0x1.f05264p+1f,
     /* node 2920 x */
-    0x1.85999ap-54f, 0x1.3f39cp+1f, -0x1.f93cfcp-1f, -0x1.14a638p-2f,
+    -0x1.2cccccp-54f, 0x1.3ef8eap+1f, -0x1.f95b72p-1f, -0x1.165db6p-2f,
     /* node 2920 y */
-    -0x1.2cp-54f, -0x1.df2752p-1f, 0x1.33bd36p+1f, -0x1.7a5a88p-3f,
+    -0x1.91999ap-55f, -0x1.dfb648p-1f, 0x1.3324e8p+1f, -0x1.7b0c76p-3f,
     /* node 2920 z */
-    -0x1p-56f, -0x1.34f56p-5f, -0x1.59afb4p-3f, 0x1.d7326cp+1f,
+    -0x0p+0f, -0x1.46c45ep-5f, -0x1.5a034p-3f, 0x1.d6b604p+1f,
     /* node 2921 x */
-    0x1.18ccccp-52f, 0x1.3e3412p+1f, -0x1.e0328p-1f, -0x1.a8ff08p-3f,
+    0x1.b9999ap-55f, 0x1.3e2698p+1f, -0x1.e0ffa8p-1f, -0x1.aa3574p-3f,
     /* node 2921 y */
-    -0x1.366666p-55f, -0x1.ddaedp-1f, 0x1.3c9946p+1f, -0x1.595dcep-3f,
+    0x1.d9999ap-59f, -0x1.de53bep-1f, 0x1.3c8924p+1f, -0x1.5770d8p-3f,
     /* node 2921 z */
-    -0x1.99999ap-56f, -0x1.21039ep-6f, -0x1.5f3a0ap-3f, 0x1.de33c4p+1f,
+    -0x1.19999ap-55f, -0x1.386ce2p-6f, -0x1.5d3bbap-3f, 0x1.de08d4p+1f,
     /* node 2922 x */
-    -0x1.78ccccp-55f, 0x1.40b32p+1f, -0x1.db6daap-1f, -0x1.4538ccp-4f,
+    0x1.f8ccccp-55f, 0x1.40d70ap+1f, -0x1.dbd47ap-1f, -0x1.48f8b2p-4f,
     /* node 2922 y */
-    -0x1.666666p-54f, -0x1.e0e486p-1f, 0x1.50eea6p+1f, -0x1.87c1bep-3f,
+    -0x1.96ccccp-54f, -0x1.e1520ep-1f, 0x1.50ec3cp+1f, -0x1.86e396p-3f,
     /* node 2922 z */
-    0x1.99999ap-57f, -0x1.c45b16p-7f, -0x1.5f87e6p-3f, 0x1.f2278ep+1f,
+    -0x1.99999ap-57f, -0x1.c17c6ap-7f, -0x1.5c616ap-3f, 0x1.f25648p+1f,
     /* node 2923 x */
-    -0x1.0c8cccp-54f, 0x1.3c581ep+1f, -0x1.0389eap+0f, 0x1.ec0c62p-7f,
+    0x1.3c9666p-53f, 0x1.3be07cp+1f, -0x1.04275p+0f, 0x1.72bce8p-7f,
     /* node 2923 y */
-    -0x1.533334p-55f, -0x1.eb47a4p-1f, 0x1.4c87dp+1f, -0x1.7d0dbap-3f,
+    0x1.533334p-56f, -0x1.ebdebp-1f, 0x1.4c35a4p+1f, -0x1.7ef416p-3f,
     /* node 2923 z */
-    0x1.99999ap-56f, 0x1.60662cp-6f, -0x1.84ca34p-3f, 0x1.f2243ep+1f,
+    -0x1.666666p-56f, 0x1.441d3ep-6f, -0x1.804766p-3f, 0x1.f1fc8ap+1f,
     /* node 2924 x */
-    0x1.4cp-55f, 0x1.44f17ap+1f, -0x1.ed554ep-1f, -0x1.58794p-4f,
+    0x1.973334p-55f, 0x1.45474cp+1f, -0x1.ed541cp-1f, -0x1.52e24p-4f,
     /* node 2924 y */
-    -0x1.266666p-55f, -0x1.d9173ep-1f, 0x1.490a1ep+1f, -0x1.9650f8p-3f,
+    0x1.8cccccp-56f, -0x1.d98d5ap-1f, 0x1.496f74p+1f, -0x1.96189cp-3f,
     /* node 2924 z */
-    -0x1.99999ap-57f, 0x1.4936a8p-6f, -0x1.871126p-3f, 0x1.e95b4ap+1f,
+    -0x1.99999ap-57f, 0x1.51339p-6f, -0x1.8a7624p-3f, 0x1.e95ae4p+1f,
     /* node 2925 x */
-    0x1.2ccp-55f, 0x1.4b8446p+1f, -0x1.13f1a6p+0f, 0x1.43d2e2p-7f,
+    0x1.174cccp-55f, 0x1.4b9b9ep+1f, -0x1.141ba8p+0f, 0x1.14ac0ep-7f,
     /* node 2925 y */
-    -0x1.a8p-54f, -0x1.d9326ep-1f, 0x1.42b4fcp+1f, -0x1.7aa4e8p-3f,
+    -0x1.7f999ap-54f, -0x1.d9839ap-1f, 0x1.42bffcp+1f, -0x1.7a13dep-3f,
     /* node 2925 z */
-    -0x1.99999ap-59f, 0x1.99761ep-5f, -0x1.b36602p-3f, 0x1.e74cb6p+1f,
+    -0x1.19999ap-55f, 0x1.966926p-5f, -0x1.b385ccp-3f, 0x1.e732c8p+1f,
     /* node 2926 x */
-    0x1.0d3334p-54f, 0x1.419268p+1f, -0x1.f9f334p-1f, 0x1.21f1b4p-4f,
+    -0x1.143334p-54f, 0x1.416c8p+1f, -0x1.fa8becp-1f, 0x1.20f722p-4f,
     /* node 2926 y */
-    -0x1.0cccccp-57f, -0x1.dc6448p-1f, 0x1.45b74ap+1f, -0x1.5e90b2p-3f,
+    -0x1.acccccp-57f, -0x1.dc540ap-1f, 0x1.45828cp+1f, -0x1.5b8b56p-3f,
     /* node 2926 z */
-    -0x1.99999ap-59f, 0x1.861148p-5f, -0x1.a93df8p-3f, 0x1.ec8abcp+1f,
+    -0x0p+0f, 0x1.7b9772p-5f, -0x1.a7f41p-3f, 0x1.ec509cp+1f,
     /* node 2927 x */
-    0x1.138p-53f, 0x1.4bcp+1f, -0x1.294244p+0f, 0x1.d4ecd4p-5f,
+    0x1.518p-53f, 0x1.4bb32p+1f, -0x1.2986ap+0f, 0x1.d3afa4p-5f,
     /* node 2927 y */
-    -0x1.8b3334p-55f, -0x1.e6b788p-1f, 0x1.3caa8ep+1f, -0x1.867596p-3f,
+    -0x1.0eccccp-54f, -0x1.e7266ep-1f, 0x1.3ca004p+1f, -0x1.85080ap-3f,
     /* node 2927 z */
-    -0x1.0cccccp-54f, 0x1.0f5668p-4f, -0x1.da231p-3f, 0x1.dd8c9p+1f,
+    0x1.333334p-56f, 0x1.0f51d4p-4f, -0x1.dac97p-3f, 0x1.dd5924p+1f,
     /* node 2928 x */
-    -0x1.d8e666p-54f, 0x1.47b69p+1f, -0x1.235702p+0f, -0x1.49a00cp-5f,
+    0x1.f8999ap-55f, 0x1.4799aep+1f, -0x1.23a2dap+0f, -0x1.52682ap-5f,
     /* node 2928 y */
-    -0x1.7cccccp-57f, -0x1.e519e2p-1f, 0x1.37fe7ep+1f, -0x1.48a088p-3f,
+    -0x1.00ccccp-54f, -0x1.e5b5ecp-1f, 0x1.38181ep+1f, -0x1.47acf6p-3f,
     /* node 2928 z */
-    0x1.19999ap-55f, 0x1.a9a7c2p-5f, -0x1.7ac866p-3f, 0x1.d9059ap+1f,
+    0x1.99999ap-56f, 0x1.a413f8p-5f, -0x1.7a294ep-3f, 0x1.d8caeep+1f,
     /* node 2929 x */
-    0x1.f47cp-54f, 0x1.43ede2p+1f, -0x1.199d36p+0f, 0x1.346ec4p-10f,
+    0x1.ad8234p-53f, 0x1.4400fcp+1f, -0x1.19c182p+0f, 0x1.cc4a24p-12f,
     /* node 2929 y */
-    -0x1.633334p-54f, -0x1.d8854cp-1f, 0x1.2c0726p+1f, -0x1.3d3b0ep-3f,
+    -0x1.8p-56f, -0x1.d8caecp-1f, 0x1.2c187ap+1f, -0x1.3d6174p-3f,
     /* node 2929 z */
-    -0x1.ccccccp-55f, 0x1.29d174p-4f, -0x1.825b4ep-3f, 0x1.c3e5fep+1f,
+    -0x1.333334p-56f, 0x1.289e04p-4f, -0x1.82c7a2p-3f, 0x1.c3c856p+1f,
     /* node 2930 x */
-    0x1.59999ap-59f, 0x1.479744p+1f, -0x1.1c0cd2p+0f, 0x1.e41a78p-4f,
+    0x1.84ccccp-54f, 0x1.47599cp+1f, -0x1.1c141cp+0f, 0x1.e05cacp-4f,
     /* node 2930 y */
-    -0x1.773334p-55f, -0x1.d3aa8cp-1f, 0x1.39029cp+1f, -0x1.7fcc3ap-3f,
+    -0x1.533334p-55f, -0x1.d40a82p-1f, 0x1.3915f2p+1f, -0x1.7df248p-3f,
     /* node 2930 z */
-    0x1.8p-55f, 0x1.cf6c12p-5f, -0x1.c12262p-3f, 0x1.e1dbf4p+1f,
+    -0x1.ccccccp-56f, 0x1.c6ec4cp-5f, -0x1.c02dc2p-3f, 0x1.e1b216p+1f,
     /* node 2931 x */
-    0x1.b8p-56f, 0x1.402dcp+1f, -0x1.1d11cp+0f, 0x1.16d36cp-3f,
+    0x1.f33334p-55f, 0x1.402dc6p+1f, -0x1.1d43d2p+0f, 0x1.15dcdep-3f,
     /* node 2931 y */
-    -0x1.68ccccp-54f, -0x1.d3d89p-1f, 0x1.2662ecp+1f, -0x1.9c68aap-3f,
+    -0x1.526666p-54f, -0x1.d4268ap-1f, 0x1.26718cp+1f, -0x1.9be31ep-3f,
     /* node 2931 z */
-    0x1.99999ap-57f, 0x1.94b30ap-4f, -0x1.d81992p-3f, 0x1.bf3b0cp+1f,
+    -0x0p+0f, 0x1.92f1b8p-4f, -0x1.d77e1ap-3f, 0x1.bf14bp+1f,
     /* node 2932 x */
-    0x1.163334p-53f, 0x1.409622p+1f, -0x1.2754d8p+0f, 0x1.6462b6p-3f,
+    0x1.166666p-54f, 0x1.40a91ep+1f, -0x1.276ea8p+0f, 0x1.63aaaap-3f,
     /* node 2932 y */
-    -0x1.166666p-54f, -0x1.d0aa0cp-1f, 0x1.290d08p+1f, -0x1.ad2fe6p-3f,
+    -0x1.7a6666p-54f, -0x1.d0cc7p-1f, 0x1.292218p+1f, -0x1.abc2b4p-3f,
     /* node 2932 z */
-    -0x1.99999ap-59f, 0x1.570deap-4f, -0x1.00fdcep-2f, 0x1.cf0ccep+1f,
+    -0x1p-55f, 0x1.55b97p-4f, -0x1.00c3f8p-2f, 0x1.cee0aap+1f,
     /* node 2933 x */
-    0x1.5d999ap-54f, 0x1.341f06p+1f, -0x1.3d7d08p+0f, 0x1.b86658p-3f,
+    -0x1.066666p-54f, 0x1.3429ap+1f, -0x1.3d9d12p+0f, 0x1.b7230ap-3f,
     /* node 2933 y */
-    0x1.ap-55f, -0x1.d75216p-1f, 0x1.0ba1f8p+1f, -0x1.c4e63ep-3f,
+    -0x1.18ccccp-54f, -0x1.d7b894p-1f, 0x1.0bb946p+1f, -0x1.c50eep-3f,
     /* node 2933 z */
-    0x1.99999ap-58f, 0x1.ed39ccp-4f, -0x1.159786p-2f, 0x1.9e363ep+1f,
+    -0x1.19999ap-55f, 0x1.eab3f4p-4f, -0x1.1561dp-2f, 0x1.9e1de8p+1f,
     /* node 2934 x */
-    0x1p-61f, 0x1.2ddaap+1f, -0x1.45b68cp+0f, 0x1.230c42p-3f,
+    0x1.3e999ap-53f, 0x1.2de298p+1f, -0x1.45d41p+0f, 0x1.2177d4p-3f,
     /* node 2934 y */
-    0x1.9p-55f, -0x1.d9dadcp-1f, 0x1.071624p+1f, -0x1.8a6bep-3f,
+    -0x1.05999ap-54f, -0x1.da2cf8p-1f, 0x1.072104p+1f, -0x1.8a3d3cp-3f,
     /* node 2934 z */
-    -0x1.99999ap-58f, 0x1.e2106ep-4f, -0x1.0538a6p-2f, 0x1.8b161cp+1f,
+    -0x1p-56f, 0x1.e023ap-4f, -0x1.049dacp-2f, 0x1.8b029cp+1f,
     /* node 2935 x */
-    0x1.40ccccp-53f, 0x1.22637p+1f, -0x1.56e1e4p+0f, 0x1.bd1a9ep-3f,
+    0x1.0cccccp-55f, 0x1.2264f4p+1f, -0x1.56f0cap+0f, 0x1.bbee7ep-3f,
     /* node 2935 y */
-    -0x1.e33334p-56f, -0x1.d8da4ap-1f, 0x1.dce0b4p+0f, -0x1.a1d468p-3f,
+    -0x1.e66666p-56f, -0x1.d91134p-1f, 0x1.dd047p+0f, -0x1.a1a80ap-3f,
     /* node 2935 z */
-    -0x1.99999ap-60f, 0x1.1d98bp-3f, -0x1.1c141ep-2f, 0x1.6d40ccp+1f,
+    -0x1.cp-55f, 0x1.1c9d38p-3f, -0x1.1b8824p-2f, 0x1.6d3264p+1f,
     /* node 2936 x */
-    -0x1.99999ap-63f, 0x1.25014ap+1f, -0x1.4e4d36p+0f, 0x1.0eeaf8p-2f,
+    0x1.b13334p-53f, 0x1.250a5ep+1f, -0x1.4e600ep+0f, 0x1.0e6274p-2f,
     /* node 2936 y */
-    -0x1.e66666p-55f, -0x1.d6e248p-1f, 0x1.e50e72p+0f, -0x1.f596dep-3f,
+    -0x1.9d999ap-54f, -0x1.d72bcp-1f, 0x1.e52654p+0f, -0x1.f531bap-3f,
     /* node 2936 z */
-    -0x1.99999ap-60f, 0x1.11f0d8p-3f, -0x1.3f65b4p-2f, 0x1.7bb23cp+1f,
+    0x1.333334p-58f, 0x1.118508p-3f, -0x1.3f0568p-2f, 0x1.7ba826p+1f,
     /* node 2937 x */
-    0x1.9cccccp-56f, 0x1.31a084p+1f, -0x1.32a8aep+0f, 0x1.19ec5ap-2f,
+    0x1.ccccccp-57f, 0x1.31935p+1f, -0x1.32bfbep+0f, 0x1.188014p-2f,
     /* node 2937 y */
-    0x1.1p-54f, -0x1.d34382p-1f, 0x1.0ba242p+1f, -0x1.d86254p-3f,
+    -0x1.28ccccp-54f, -0x1.d3cbf8p-1f, 0x1.0baa76p+1f, -0x1.d8a96cp-3f,
     /* node 2937 z */
-    -0x1p-56f, 0x1.ce092p-4f, -0x1.24ddaep-2f, 0x1.a7bdeep+1f,
+    0x1.333334p-57f, 0x1.cb08d4p-4f, -0x1.24947ep-2f, 0x1.a792c8p+1f,
     /* node 2938 x */
-    0x1.133334p-56f, 0x1.4014dp+0f, -0x1.140922p-1f, -0x1.72ca0ep-1f,
+    0x1.d1999ap-54f, 0x1.3fa91cp+0f, -0x1.1423fap-1f, -0x1.71c982p-1f,
     /* node 2938 y */
-    -0x1.ecccccp-56f, -0x1.512d72p-1f, 0x1.4a0672p-1f, -0x1.ae3916p-2f,
+    -0x1.066666p-55f, -0x1.510076p-1f, 0x1.49cbd2p-1f, -0x1.ad8732p-2f,
     /* node 2938 z */
-    -0x1.ccccccp-57f, 0x1.7af93p-4f, -0x1.640992p-2f, 0x1.98cda6p+0f,
+    -0x1.99999ap-58f, 0x1.79f83ap-4f, -0x1.635abcp-2f, 0x1.98976cp+0f,
     /* node 2939 x */
-    0x1.9cccccp-55f, 0x1.49f0f8p+0f, -0x1.2361ap-1f, -0x1.830fa8p-1f,
+    0x1.f66666p-54f, 0x1.498edp+0f, -0x1.237be8p-1f, -0x1.8237fap-1f,
     /* node 2939 y */
-    0x1.59999ap-56f, -0x1.4f9afep-1f, 0x1.466ebp-1f, -0x1.a9f5fcp-2f,
+    -0x1.99999ap-60f, -0x1.4eddd8p-1f, 0x1.460d66p-1f, -0x1.ab15c8p-2f,
     /* node 2939 z */
-    -0x1p-56f, 0x1.7183bep-4f, -0x1.5c5134p-2f, 0x1.9d21bep+0f,
+    -0x1.333334p-56f, 0x1.6f7e2ep-4f, -0x1.5b919ep-2f, 0x1.9d00dp+0f,
     /* node 2940 x */
-    -0x1.99999ap-56f, 0x1.55f334p+0f, -0x1.32bc5p-1f, -0x1.8bc87cp-1f,
+    0x1.4cccccp-55f, 0x1.559a16p+0f, -0x1.32e698p-1f, -0x1.8a9c58p-1f,
     /* node 2940 y */
-    -0x1.59999ap-57f, -0x1.67dacep-1f, 0x1.608406p-1f, -0x1.a0e13p-2f,
+    -0x1.e33334p-55f, -0x1.67ad2ap-1f, 0x1.605654p-1f, -0x1.a09ec2p-2f,
     /* node 2940 z */
-    0x1.99999ap-59f, 0x1.876644p-4f, -0x1.57a676p-2f, 0x1.af33dcp+0f,
+    -0x1.19999ap-56f, 0x1.87adeep-4f, -0x1.5768bep-2f, 0x1.af017p+0f,
     /* node 2941 x */
-    0x1.3e6666p-54f, 0x1.4d5cf6p+0f, -0x1.2566b2p-1f, -0x1.79fc56p-1f,
+    0x1.2p-55f, 0x1.4ccb28p+0f, -0x1.258f64p-1f, -0x1.78626cp-1f,
     /* node 2941 y */
-    0x1.266666p-56f, -0x1.6b6842p-1f, 0x1.6198cp-1f, -0x1.94e616p-2f,
+    0x1.ccccccp-58f, -0x1.6c2644p-1f, 0x1.61afc6p-1f, -0x1.923d74p-2f,
     /* node 2941 z */
-    -0x1.4cccccp-56f, 0x1.85ffdcp-4f, -0x1.61578cp-2f, 0x1.acae28p+0f,
+    -0x1.0cccccp-55f, 0x1.866868p-4f, -0x1.60d02cp-2f, 0x1.ac66dp+0f,
     /* node 2942 x */
-    0x1.266666p-54f, 0x1.362d72p+0f, -0x1.08bb48p-1f, -0x1.5df3ccp-1f,
+    -0x1.4p-54f, 0x1.35e7f2p+0f, -0x1.08e3fep-1f, -0x1.5d6824p-1f,
     /* node 2942 y */
-    -0x1.4cccccp-57f, -0x1.53f6dcp-1f, 0x1.49cfcep-1f, -0x1.9a9838p-2f,
+    -0x1.4p-56f, -0x1.5490fep-1f, 0x1.4a1328p-1f, -0x1.99748p-2f,
     /* node 2942 z */
-    -0x1.4cccccp-56f, 0x1.99ebecp-4f, -0x1.6bc5bep-2f, 0x1.90a764p+0f,
+    0x1.99999ap-57f, 0x1.9df2fap-4f, -0x1.6c45d8p-2f, 0x1.90567ep+0f,
     /* node 2943 x */
-    0x1.9cccccp-55f, 0x1.44ece2p+0f, -0x1.167464p-1f, -0x1.696ab4p-1f,
+    -0x1.066666p-55f, 0x1.44decep+0f, -0x1.16de2ep-1f, -0x1.6958aep-1f,
     /* node 2943 y */
-    -0x1.ecccccp-56f, -0x1.66859ap-1f, 0x1.5b6808p-1f, -0x1.8a81f4p-2f,
+    -0x1.3p-55f, -0x1.66e50ap-1f, 0x1.5be612p-1f, -0x1.8a7c26p-2f,
     /* node 2943 z */
-    0x1p-57f, 0x1.7986e4p-4f, -0x1.6a8416p-2f, 0x1.a616fcp+0f,
+    0x1.666666p-56f, 0x1.7b6706p-4f, -0x1.6ac036p-2f, 0x1.a5fc98p+0f,
     /* node 2944 x */
-    0x1.dp-55f, 0x1.5a3dcp+0f, -0x1.345cep-1f, -0x1.846aa8p-1f,
+    0x1.466666p-55f, 0x1.5a16a4p+0f, -0x1.34c092p-1f, -0x1.83bb4ap-1f,
     /* node 2944 y */
-    -0x1.4cccccp-57f, -0x1.75afe8p-1f, 0x1.713fdcp-1f, -0x1.9e3e88p-2f,
+    -0x1.533334p-55f, -0x1.76b248p-1f, 0x1.717444p-1f, -0x1.9b82dap-2f,
     /* node 2944 z */
-    0x1.99999ap-57f, 0x1.99a39ep-4f, -0x1.60bf82p-2f, 0x1.bdb6dcp+0f,
+    0x1.ccccccp-57f, 0x1.9c5596p-4f, -0x1.605c2ep-2f, 0x1.bd3716p+0f,
     /* node 2945 x */
-    0x1.bp-55f, 0x1.5247a6p+0f, -0x1.25271p-1f, -0x1.70473cp-1f,
+    -0x1.6cccccp-56f, 0x1.527bcep+0f, -0x1.25aa48p-1f, -0x1.70bd64p-1f,
     /* node 2945 y */
-    -0x1.133334p-55f, -0x1.69665cp-1f, 0x1.66bdfcp-1f, -0x1.abe93p-2f,
+    0x1.99999ap-61f, -0x1.69c272p-1f, 0x1.676692p-1f, -0x1.ac29dp-2f,
     /* node 2945 z */
-    -0x1.666666p-56f, 0x1.a48b5p-4f, -0x1.6f6b0cp-2f, 0x1.b49daep+0f,
+    0x1.4cccccp-56f, 0x1.a3f95p-4f, -0x1.6f4ccap-2f, 0x1.b49e34p+0f,
     /* node 2946 x */
-    0x1.4cccccp-54f, 0x1.66100cp+0f, -0x1.465af6p-1f, -0x1.831954p-1f,
+    0x1.ccccccp-59f, 0x1.665cbep+0f, -0x1.46894ap-1f, -0x1.83df14p-1f,
     /* node 2946 y */
-    0x1.99999ap-59f, -0x1.810e28p-1f, 0x1.81cb42p-1f, -0x1.99ccfep-2f,
+    0x1.333334p-56f, -0x1.81688ep-1f, 0x1.823a4ep-1f, -0x1.996b0ep-2f,
     /* node 2946 z */
-    -0x1.19999ap-56f, 0x1.8a1dfep-4f, -0x1.5c0952p-2f, 0x1.d00fb8p+0f,
+    -0x1.e66666p-56f, 0x1.884bc2p-4f, -0x1.5b64f6p-2f, 0x1.d004cp+0f,
     /* node 2947 x */
-    0x1.833334p-55f, 0x1.61f798p+0f, -0x1.38bf7cp-1f, -0x1.7f0eaep-1f,
+    0x1.966666p-55f, 0x1.620a74p+0f, -0x1.3905c8p-1f, -0x1.7f2a96p-1f,
     /* node 2947 y */
-    -0x1.8p-57f, -0x1.79b00ep-1f, 0x1.87bd48p-1f, -0x1.b6371ap-2f,
+    -0x1.b9999ap-56f, -0x1.79db9cp-1f, 0x1.87eefap-1f, -0x1.b59eecp-2f,
     /* node 2947 z */
-    0x1.333334p-58f, 0x1.55fac2p-4f, -0x1.67f53ep-2f, 0x1.d20038p+0f,
+    0x1p-56f, 0x1.5441aap-4f, -0x1.67544cp-2f, 0x1.d1e732p+0f,
     /* node 2948 x */
-    0x1p-59f, 0x1.71dc16p+0f, -0x1.5b77d4p-1f, -0x1.7af83p-1f,
+    0x1.1b3334p-54f, 0x1.72012ap+0f, -0x1.5b9652p-1f, -0x1.7b75dp-1f,
     /* node 2948 y */
-    -0x1.8cccccp-56f, -0x1.89ac6cp-1f, 0x1.93757cp-1f, -0x1.9a1436p-2f,
+    -0x1.d33334p-56f, -0x1.89f556p-1f, 0x1.93b0aap-1f, -0x1.998b4ap-2f,
     /* node 2948 z */
-    -0x1.e66666p-56f, 0x1.5e2d16p-4f, -0x1.56bab6p-2f, 0x1.e4a6e4p+0f,
+    -0x1.99999ap-60f, 0x1.5e655p-4f, -0x1.565504p-2f, 0x1.e4703ep+0f,
     /* node 2949 x */
-    0x1.4p-56f, 0x1.6c7398p+0f, -0x1.53bec6p-1f, -0x1.8f09e6p-1f,
+    -0x1.19999ap-55f, 0x1.6ceb3ap+0f, -0x1.54284cp-1f, -0x1.902c92p-1f,
     /* node 2949 y */
-    0x1.99999ap-57f, -0x1.814a22p-1f, 0x1.7e151cp-1f, -0x1.997db8p-2f,
+    0x1.19999ap-56f, -0x1.814654p-1f, 0x1.7e3566p-1f, -0x1.995d44p-2f,
     /* node 2949 z */
-    -0x1.333334p-57f, 0x1.a18716p-4f, -0x1.5540fcp-2f, 0x1.d02c5ep+0f,
+    0x1.ccccccp-57f, 0x1.9e989cp-4f, -0x1.546c16p-2f, 0x1.d0319ap+0f,
     /* node 2950 x */
-    0x1.59999ap-55f, 0x1.77c106p+0f, -0x1.664a14p-1f, -0x1.8a3576p-1f,
+    0x1.dp-54f, 0x1.77fffp+0f, -0x1.669cb2p-1f, -0x1.8adcf6p-1f,
     /* node 2950 y */
-    -0x1.99999ap-57f, -0x1.9192e8p-1f, 0x1.93c6f2p-1f, -0x1.8553e2p-2f,
+    0x1.3p-56f, -0x1.914b68p-1f, 0x1.93cf9ap-1f, -0x1.863ea4p-2f,
     /* node 2950 z */
-    -0x1.333334p-58f, 0x1.8319e4p-4f, -0x1.4a98bep-2f, 0x1.e332b8p+0f,
+    -0x1p-55f, 0x1.835b9ep-4f, -0x1.4a31e2p-2f, 0x1.e2fa9ap+0f,
     /* node 2951 x */
-    -0x1.666666p-57f, 0x1.69bf24p+0f, -0x1.4d4eb2p-1f, -0x1.6a5e06p-1f,
+    0x1.0cccccp-55f, 0x1.69a34p+0f, -0x1.4d6a04p-1f, -0x1.6a13eap-1f,
     /* node 2951 y */
-    -0x1.f9999ap-56f, -0x1.83b5e4p-1f, 0x1.96d0f8p-1f, -0x1.9fbf72p-2f,
+    -0x1.266666p-57f, -0x1.840abcp-1f, 0x1.96c342p-1f, -0x1.9e0acp-2f,
     /* node 2951 z */
-    -0x1.99999ap-60f, 0x1.5063dep-4f, -0x1.60d814p-2f, 0x1.e1adf4p+0f,
+    -0x1.ccccccp-57f, 0x1.4e02e8p-4f, -0x1.6028b2p-2f, 0x1.e191b4p+0f,
     /* node 2952 x */
-    0x1.8cccccp-56f, 0x1.6f0bap+0f, -0x1.5bae5ap-1f, -0x1.4fdd2cp-1f,
+    -0x1p-58f, 0x1.6efb36p+0f, -0x1.5bae0ep-1f, -0x1.4ff7a4p-1f,
     /* node 2952 y */
-    0x1.4cccccp-58f, -0x1.8a2e44p-1f, 0x1.9ac22p-1f, -0x1.8369c8p-2f,
+    -0x1.19999ap-56f, -0x1.8a86b8p-1f, 0x1.9af15ep-1f, -0x1.820a0ap-2f,
     /* node 2952 z */
-    -0x1.333334p-57f, 0x1.8a94e6p-4f, -0x1.5e0498p-2f, 0x1.e946ccp+0f,
+    0x1.99999ap-55f, 0x1.87397ep-4f, -0x1.5d23acp-2f, 0x1.e94814p+0f,
     /* node 2953 x */
-    -0x1.733334p-57f, 0x1.7ae16p+0f, -0x1.6e173p-1f, -0x1.6dece6p-1f,
+    0x1.3p-54f, 0x1.7ae9f2p+0f, -0x1.6e558ap-1f, -0x1.6e64d8p-1f,
     /* node 2953 y */
-    -0x1.4p-56f, -0x1.8e473p-1f, 0x1.9bd64p-1f, -0x1.8d4c96p-2f,
+    -0x1.b9999ap-56f, -0x1.8ef666p-1f, 0x1.9c78fep-1f, -0x1.8bc47p-2f,
     /* node 2953 z */
-    -0x1p-55f, 0x1.851608p-4f, -0x1.54d83ap-2f, 0x1.f199dap+0f,
+    -0x1.333334p-57f, 0x1.818fc8p-4f, -0x1.53f598p-2f, 0x1.f1b1f4p+0f,
     /* node 2954 x */
-    -0x1.2e6666p-54f, 0x1.894e4ep+0f, -0x1.7c220ap-1f, -0x1.6dc128p-1f,
+    0x1.39999ap-55f, 0x1.89417p+0f, -0x1.7c90fap-1f, -0x1.6dc12ap-1f,
     /* node 2954 y */
-    -0x1.e66666p-59f, -0x1.94e1bp-1f, 0x1.a9033cp-1f, -0x1.74c95ap-2f,
+    -0x1.4cccccp-57f, -0x1.956e3cp-1f, 0x1.a98c18p-1f, -0x1.736d56p-2f,
     /* node 2954 z */
-    -0x1.19999ap-56f, 0x1.588a94p-4f, -0x1.457532p-2f, 0x1.019f7ap+1f,
+    0x1.333334p-57f, 0x1.56a8e4p-4f, -0x1.44afd2p-2f, 0x1.0191ep+1f,
     /* node 2955 x */
-    0x1p-57f, 0x1.7e7482p+0f, -0x1.6bd356p-1f, -0x1.52065p-1f,
+    0x1.233334p-55f, 0x1.7e6e36p+0f, -0x1.6c011ap-1f, -0x1.52274ap-1f,
     /* node 2955 y */
-    -0x1.233334p-55f, -0x1.91e2fep-1f, 0x1.aa553ap-1f, -0x1.72af46p-2f,
+    -0x1.19999ap-56f, -0x1.922038p-1f, 0x1.aa808p-1f, -0x1.71bc28p-2f,
     /* node 2955 z */
-    -0x1.333334p-58f, 0x1.69b704p-4f, -0x1.53578ep-2f, 0x1.fb3a88p+0f,
+    -0x1.99999ap-60f, 0x1.67d73ep-4f, -0x1.52639cp-2f, 0x1.fb153p+0f,
     /* node 2956 x */
-    -0x1.8p-56f, 0x1.93846cp+0f, -0x1.92a352p-1f, -0x1.5a6934p-1f,
+    -0x1.acccccp-56f, 0x1.9386fp+0f, -0x1.92ee2ap-1f, -0x1.5a931cp-1f,
     /* node 2956 y */
-    -0x1.99999ap-63f, -0x1.9ce4fap-1f, 0x1.b7a92ep-1f, -0x1.569ee8p-2f,
+    -0x1.74ccccp-55f, -0x1.9d3688p-1f, 0x1.b7e534p-1f, -0x1.55cdc8p-2f,
     /* node 2956 z */
-    -0x1.99999ap-58f, 0x1.8bb232p-4f, -0x1.3577dep-2f, 0x1.074782p+1f,
+    0x1p-57f, 0x1.89e79ep-4f, -0x1.35120cp-2f, 0x1.0740d2p+1f,
     /* node 2957 x */
-    0x1.11999ap-54f, 0x1.90061ep+0f, -0x1.8d7c16p-1f, -0x1.82069cp-1f,
+    0x1.dp-55f, 0x1.901c0ep+0f, -0x1.8e07ep-1f, -0x1.826758p-1f,
     /* node 2957 y */
-    -0x0p+0f, -0x1.9ea308p-1f, 0x1.a981e8p-1f, -0x1.664f04p-2f,
+    -0x1.9e6666p-55f, -0x1.9f3cb6p-1f, 0x1.aa14eap-1f, -0x1.64f00cp-2f,
     /* node 2957 z */
-    -0x1.ccccccp-57f, 0x1.759e5ep-4f, -0x1.3b8cf2p-2f, 0x1.0180bap+1f,
+    -0x1.266666p-55f, 0x1.728d8ep-4f, -0x1.3a9f28p-2f, 0x1.017c6ap+1f,
     /* node 2958 x */
-    0x1.633334p-54f, 0x1.98ccd4p+0f, -0x1.9f5982p-1f, -0x1.6789aep-1f,
+    -0x1.333334p-60f, 0x1.98e312p+0f, -0x1.9fa832p-1f, -0x1.67e80ap-1f,
     /* node 2958 y */
-    -0x1.a66666p-57f, -0x1.9f8482p-1f, 0x1.b831fep-1f, -0x1.5b55c6p-2f,
+    0x1.333334p-61f, -0x1.9fe1b2p-1f, 0x1.b88b44p-1f, -0x1.5a74fp-2f,
     /* node 2958 z */
-    -0x1.19999ap-56f, 0x1.aa3526p-4f, -0x1.30d58ap-2f, 0x1.076d8ep+1f,
+    -0x1.ccccccp-56f, 0x1.a7e9c8p-4f, -0x1.304fd8p-2f, 0x1.0764ep+1f,
     /* node 2959 x */
-    0x1.433334p-55f, 0x1.91bb78p+0f, -0x1.82635ep-1f, -0x1.4044aep-1f,
+    0x1.f33334p-55f, 0x1.91b8d8p+0f, -0x1.82ae2ep-1f, -0x1.403e6p-1f,
     /* node 2959 y */
-    0x1p-57f, -0x1.96ebcp-1f, 0x1.ca9f86p-1f, -0x1.5bb48ep-2f,
+    0x1.4cccccp-57f, -0x1.972c14p-1f, 0x1.ca7fe6p-1f, -0x1.5a5058p-2f,
     /* node 2959 z */
-    -0x1.ccccccp-56f, 0x1.293c3p-4f, -0x1.44b474p-2f, 0x1.0c5c2p+1f,
+    0x1.99999ap-58f, 0x1.27b4e8p-4f, -0x1.441f88p-2f, 0x1.0c4d8ap+1f,
     /* node 2960 x */
-    0x1.8cccccp-54f, 0x1.a953d2p+0f, -0x1.9ed33cp-1f, -0x1.29e7bep-1f,
+    0x1.2cccccp-55f, 0x1.a93bacp+0f, -0x1.9f2b7ap-1f, -0x1.29aee2p-1f,
     /* node 2960 y */
-    -0x1.99999ap-57f, -0x1.a3f7fap-1f, 0x1.f9d0e2p-1f, -0x1.3a011ap-2f,
+    0x1.4cccccp-57f, -0x1.a429ep-1f, 0x1.f9f72ap-1f, -0x1.38f5d4p-2f,
     /* node 2960 z */
-    -0x0p+0f, 0x1.a020bp-5f, -0x1.2f4784p-2f, 0x1.1fa21ap+1f,
+    -0x1.e66666p-56f, 0x1.9fa964p-5f, -0x1.2ee072p-2f, 0x1.1f8642p+1f,
     /* node 2961 x */
-    0x1.5p-54f, 0x1.aa9f5ep+0f, -0x1.b0caa2p-1f, -0x1.46f882p-1f,
+    0x1.dcccccp-54f, 0x1.aab3c8p+0f, -0x1.b11a7p-1f, -0x1.472f7cp-1f,
     /* node 2961 y */
-    0x1.8cccccp-58f, -0x1.a502b6p-1f, 0x1.d4a2bap-1f, -0x1.2f1fbcp-2f,
+    0x1.d33334p-57f, -0x1.a4fc22p-1f, 0x1.d49718p-1f, -0x1.2eeccp-2f,
     /* node 2961 z */
-    0x1.333334p-55f, 0x1.44060ap-4f, -0x1.24b21ep-2f, 0x1.15ee72p+1f,
+    -0x1.666666p-57f, 0x1.42e4a4p-4f, -0x1.247eecp-2f, 0x1.15e1aep+1f,
     /* node 2962 x */
-    -0x1.1p-55f, 0x1.c51c5ap+0f, -0x1.d1fb32p-1f, -0x1.21b93ep-1f,
+    -0x1.b33334p-57f, 0x1.c55746p+0f, -0x1.d2814ap-1f, -0x1.225ed2p-1f,
     /* node 2962 y */
-    -0x1.666666p-60f, -0x1.b022a2p-1f, 0x1.078cfap+0f, -0x1.015868p-2f,
+    0x1.4cccccp-57f, -0x1.b05c84p-1f, 0x1.07bf6p+0f, -0x1.00b15p-2f,
     /* node 2962 z */
-    0x1.99999ap-59f, 0x1.11be8cp-4f, -0x1.062eeap-2f, 0x1.2a985cp+1f,
+    0x1.99999ap-59f, 0x1.0dfc8ap-4f, -0x1.05a6a6p-2f, 0x1.2aa506p+1f,
     /* node 2963 x */
-    0x1.1p-54f, 0x1.d64db4p+0f, -0x1.ba5368p-1f, -0x1.1191cap-1f,
+    0x1.dp-55f, 0x1.d652bep+0f, -0x1.bae45p-1f, -0x1.11cd0cp-1f,
     /* node 2963 y */
-    0x1.dcccccp-56f, -0x1.aca7ecp-1f, 0x1.302a1ep+0f, -0x1.1884dap-2f,
+    -0x1.3b3334p-55f, -0x1.acb7b6p-1f, 0x1.304086p+0f, -0x1.17e8e8p-2f,
     /* node 2963 z */
-    -0x1.99999ap-57f, 0x1.4179aap-6f, -0x1.0640fap-2f, 0x1.41969p+1f,
+    -0x1.666666p-57f, 0x1.35d052p-6f, -0x1.0582fap-2f, 0x1.41952ap+1f,
     /* node 2964 x */
-    0x1.d8p-54f, 0x1.ebb86ep+0f, -0x1.f753b4p-1f, -0x1.0da45ap-1f,
+    0x1.3cccccp-55f, 0x1.eb7686p+0f, -0x1.f75388p-1f, -0x1.0d5ab8p-1f,
     /* node 2964 y */
-    -0x1.3p-55f, -0x1.c0a606p-1f, 0x1.356c98p+0f, -0x1.a521dp-3f,
+    -0x1.89999ap-56f, -0x1.c0a418p-1f, 0x1.358e44p+0f, -0x1.a4c798p-3f,
     /* node 2964 z */
-    -0x1.99999ap-59f, 0x1.04c2a2p-5f, -0x1.a1739cp-3f, 0x1.48f1cp+1f,
+    0x1.19999ap-56f, 0x1.08eae4p-5f, -0x1.a11644p-3f, 0x1.48c226p+1f,
     /* node 2965 x */
-    0x1.c66666p-55f, 0x1.be26b8p+0f, -0x1.dacb1p-1f, -0x1.363b56p-1f,
+    0x1.dp-54f, 0x1.be51ap+0f, -0x1.db53b8p-1f, -0x1.36a326p-1f,
     /* node 2965 y */
-    0x1.a66666p-58f, -0x1.ac6c7ap-1f, 0x1.ebc1dp-1f, -0x1.0acd82p-2f,
+    -0x1.01999ap-55f, -0x1.ac926cp-1f, 0x1.ebeacp-1f, -0x1.0a3884p-2f,
     /* node 2965 z */
-    -0x1.ccccccp-56f, 0x1.a01abp-4f, -0x1.0804bap-2f, 0x1.1d5656p+1f,
+    -0x1.99999ap-60f, 0x1.9d8886p-4f, -0x1.076ed4p-2f, 0x1.1d4ebcp+1f,
     /* node 2966 x */
-    0x1.34p-53f, 0x1.dc3772p+0f, -0x1.001154p+0f, -0x1.1f1b2ep-1f,
+    0x1.266666p-54f, 0x1.dbfb5ap+0f, -0x1.002a8ap+0f, -0x1.1eb322p-1f,
     /* node 2966 y */
-    -0x1.4e6666p-55f, -0x1.b99ebep-1f, 0x1.0ee4fp+0f, -0x1.a10742p-3f,
+    -0x1.2f3334p-54f, -0x1.b94e9ap-1f, 0x1.0ee75ap+0f, -0x1.a1ce6p-3f,
     /* node 2966 z */
-    -0x1.8p-56f, 0x1.304d9ap-4f, -0x1.c5947ep-3f, 0x1.32ccdp+1f,
+    0x1.333334p-58f, 0x1.321482p-4f, -0x1.c4d996p-3f, 0x1.329714p+1f,
     /* node 2967 x */
-    0x1.99999ap-55f, 0x1.0770aep+1f, -0x1.d8b712p-1f, -0x1.e2b11cp-2f,
+    0x1.833334p-54f, 0x1.0761b6p+1f, -0x1.d8f04ap-1f, -0x1.e3373p-2f,
     /* node 2967 y */
-    -0x1.acccccp-56f, -0x1.c468fap-1f, 0x1.83aab6p+0f, -0x1.c6bb8ap-3f,
+    -0x1.25999ap-54f, -0x1.c47268p-1f, 0x1.83a01ap+0f, -0x1.c71132p-3f,
     /* node 2967 z */
-    -0x1.19999ap-56f, -0x1.6ba8bap-6f, -0x1.b0859ep-3f, 0x1.6e22ecp+1f,
+    -0x1.b33334p-56f, -0x1.6bb374p-6f, -0x1.af49ccp-3f, 0x1.6dfc1cp+1f,
     /* node 2968 x */
-    -0x1p-55f, 0x1.222438p+1f, -0x1.fb096ep-1f, -0x1.9e000ep-2f,
+    0x1.db3334p-54f, 0x1.222122p+1f, -0x1.fb286p-1f, -0x1.9e6e8p-2f,
     /* node 2968 y */
-    -0x1.4p-56f, -0x1.d66142p-1f, 0x1.dafc3ap+0f, -0x1.8fad18p-3f,
+    -0x1.126666p-54f, -0x1.d6e238p-1f, 0x1.daa29ep+0f, -0x1.8ed4e6p-3f,
     /* node 2968 z */
-    -0x1.8p-55f, -0x1.e89b14p-7f, -0x1.89be2ap-3f, 0x1.945d4p+1f,
+    -0x1.99999ap-56f, -0x1.039612p-6f, -0x1.88b5p-3f, 0x1.9445dcp+1f,
     /* node 2969 x */
-    -0x1.d9999ap-57f, 0x1.0b97f8p+1f, -0x1.0dcd9ep+0f, -0x1.e28ebcp-2f,
+    0x1.3a6666p-53f, 0x1.0b9b9cp+1f, -0x1.0dd786p+0f, -0x1.e30aep-2f,
     /* node 2969 y */
-    -0x1.acccccp-55f, -0x1.db80aap-1f, 0x1.74ba68p+0f, -0x1.0d0d16p-3f,
+    0x1p-60f, -0x1.db9e2ap-1f, 0x1.74e754p+0f, -0x1.0cafd2p-3f,
     /* node 2969 z */
-    -0x1.59999ap-55f, -0x1.44c16ap-9f, -0x1.38751ep-3f, 0x1.6a7768p+1f,
+    -0x1.4p-55f, -0x1.4320d8p-9f, -0x1.374bf8p-3f, 0x1.6a63e6p+1f,
     /* node 2970 x */
-    0x1.24ccccp-54f, 0x1.1e1ef2p+1f, -0x1.18f53ep+0f, -0x1.99974ep-2f,
+    -0x1.366666p-55f, 0x1.1e16dap+1f, -0x1.19056p+0f, -0x1.99c7f8p-2f,
     /* node 2970 y */
-    -0x1.d4ccccp-56f, -0x1.e5549cp-1f, 0x1.b1e448p+0f, -0x1.baf434p-4f,
+    0x1.066666p-57f, -0x1.e57p-1f, 0x1.b1cfb8p+0f, -0x1.b990f6p-4f,
     /* node 2970 z */
-    -0x1.4cccccp-56f, 0x1.b60f98p-7f, -0x1.134c6ap-3f, 0x1.82867cp+1f,
+    0x1.333334p-57f, 0x1.b47838p-7f, -0x1.11fd66p-3f, 0x1.82665cp+1f,
     /* node 2971 x */
-    -0x1.78p-55f, 0x1.30d4cep+1f, -0x1.02989p+0f, -0x1.651b08p-2f,
+    -0x1.3ap-53f, 0x1.30c504p+1f, -0x1.029b9cp+0f, -0x1.65778ap-2f,
     /* node 2971 y */
-    -0x1.c66666p-58f, -0x1.df4876p-1f, 0x1.0c9212p+1f, -0x1.3e0506p-3f,
+    0x1.99999ap-62f, -0x1.df5a42p-1f, 0x1.0cb10cp+1f, -0x1.3e3c76p-3f,
     /* node 2971 z */
-    -0x1p-55f, -0x1.f938f6p-7f, -0x1.807082p-3f, 0x1.b1fc48p+1f,
+    -0x1.333334p-57f, -0x1.f55d7p-7f, -0x1.7e195cp-3f, 0x1.b1c80cp+1f,
     /* node 2972 x */
-    0x1.0b3334p-55f, 0x1.2a7e4cp+1f, -0x1.256bfap+0f, -0x1.4382dcp-2f,
+    0x1.8e6666p-54f, 0x1.2a8f62p+1f, -0x1.257cd4p+0f, -0x1.44065cp-2f,
     /* node 2972 y */
-    -0x1.b8p-55f, -0x1.eaf5ccp-1f, 0x1.e590a8p+0f, -0x1.790444p-4f,
+    0x1.30ccccp-55f, -0x1.eb1c96p-1f, 0x1.e5bb2p+0f, -0x1.78cd44p-4f,
     /* node 2972 z */
-    -0x1.99999ap-58f, 0x1.820028p-6f, -0x1.d03482p-4f, 0x1.97ba06p+1f,
+    -0x1.8p-55f, 0x1.77dc4p-6f, -0x1.cfc362p-4f, 0x1.97a75ap+1f,
     /* node 2973 x */
-    0x1.ecccccp-55f, 0x1.0df18ap+1f, -0x1.29b6c8p+0f, -0x1.bcf066p-2f,
+    0x1.6cccccp-56f, 0x1.0dff38p+1f, -0x1.29c122p+0f, -0x1.bd5f48p-2f,
     /* node 2973 y */
-    0x1.08ccccp-55f, -0x1.e193e8p-1f, 0x1.6f91b4p+0f, -0x1.56802cp-4f,
+    -0x1.59999ap-56f, -0x1.e1a6dep-1f, 0x1.6fbd2ep+0f, -0x1.56834cp-4f,
     /* node 2973 z */
-    -0x1.666666p-57f, 0x1.e3ad54p-5f, -0x1.ec5fb2p-4f, 0x1.6123b8p+1f,
+    -0x1.b33334p-56f, 0x1.df60b6p-5f, -0x1.eacfcp-4f, 0x1.6119e2p+1f,
     /* node 2974 x */
-    0x1.4e6666p-53f, 0x1.164c3p+1f, -0x1.375dfcp+0f, -0x1.5c3b46p-2f,
+    0x1.fe6666p-55f, 0x1.165354p+1f, -0x1.37922ap+0f, -0x1.5c4ee2p-2f,
     /* node 2974 y */
-    -0x1.234cccp-54f, -0x1.ed740ap-1f, 0x1.96190cp+0f, -0x1.403502p-5f,
+    0x1.d0ccccp-57f, -0x1.eda93ap-1f, 0x1.962284p+0f, -0x1.3cb408p-5f,
     /* node 2974 z */
-    -0x1.ccccccp-56f, 0x1.0b9c7cp-4f, -0x1.5981a8p-4f, 0x1.6f0cdp+1f,
+    -0x1.666666p-57f, 0x1.08f274p-4f, -0x1.57481cp-4f, 0x1.6eff48p+1f,
     /* node 2975 x */
-    -0x1.e0ccccp-54f, 0x1.39ab44p+1f, -0x1.117b16p+0f, -0x1.1c274ep-2f,
+    0x1.bcccccp-55f, 0x1.39ad5ap+1f, -0x1.11ae3ep+0f, -0x1.1bfd8cp-2f,
     /* node 2975 y */
-    -0x1.c9999ap-55f, -0x1.e19132p-1f, 0x1.19062p+1f, -0x1.4242a4p-3f,
+    -0x1.5b3334p-55f, -0x1.e1d488p-1f, 0x1.19079p+1f, -0x1.410bfap-3f,
     /* node 2975 z */
-    -0x1p-56f, 0x1.5f7516p-6f, -0x1.75613ep-3f, 0x1.ba4c5cp+1f,
+    -0x1.666666p-56f, 0x1.56a9acp-6f, -0x1.754bdap-3f, 0x1.ba2a88p+1f,
     /* node 2976 x */
-    0x1.433334p-54f, 0x1.3f7d9p+1f, -0x1.22ff8ap+0f, -0x1.ae6a5ep-3f,
+    -0x1.d4ccccp-55f, 0x1.3f9d42p+1f, -0x1.22f97ap+0f, -0x1.af773ep-3f,
     /* node 2976 y */
-    -0x1.aeccccp-54f, -0x1.e6c9a6p-1f, 0x1.201a76p+1f, -0x1.f073b2p-4f,
+    0x1.d5999ap-55f, -0x1.e70dc2p-1f, 0x1.20208cp+1f, -0x1.ef365ep-4f,
     /* node 2976 z */
-    -0x1.666666p-56f, 0x1.c7e2cep-6f, -0x1.38b392p-3f, 0x1.c2959ap+1f,
+    -0x1.ccccccp-56f, 0x1.bda05ap-6f, -0x1.38429ep-3f, 0x1.c278ccp+1f,
     /* node 2977 x */
-    0x1.8d999ap-54f, 0x1.2f80b4p+1f, -0x1.2aafb8p+0f, -0x1.f263d8p-3f,
+    -0x1.19999ap-54f, 0x1.2f79e4p+1f, -0x1.2afdd6p+0f, -0x1.f1d9c2p-3f,
     /* node 2977 y */
-    0x1.133334p-58f, -0x1.f20338p-1f, 0x1.fef636p+0f, -0x1.2323fcp-4f,
+    -0x1.0e3334p-54f, -0x1.f23866p-1f, 0x1.fef9aep+0f, -0x1.20a7e8p-4f,
     /* node 2977 z */
-    -0x1.99999ap-59f, 0x1.7bacdap-5f, -0x1.bd039cp-4f, 0x1.9b9ab6p+1f,
+    0x1.333334p-56f, 0x1.767b1ep-5f, -0x1.bd4ee2p-4f, 0x1.9b885ep+1f,
     /* node 2978 x */
-    0x1.92ccccp-53f, 0x1.2f753ep+1f, -0x1.3aedc6p+0f, -0x1.8f8774p-3f,
+    0x1.da6666p-54f, 0x1.2f7d08p+1f, -0x1.3b1ee8p+0f, -0x1.905186p-3f,
     /* node 2978 y */
-    0x1.ap-55f, -0x1.eed9dp-1f, 0x1.fe0758p+0f, -0x1.005c5p-4f,
+    -0x1.af3334p-54f, -0x1.ef1476p-1f, 0x1.fe13ap+0f, -0x1.fece26p-5f,
     /* node 2978 z */
-    -0x1.99999ap-57f, 0x1.41c58ap-4f, -0x1.e11dcap-4f, 0x1.91c4acp+1f,
+    -0x1.333334p-56f, 0x1.3f9052p-4f, -0x1.dfe678p-4f, 0x1.919dfap+1f,
     /* node 2979 x */
-    -0x1.d9999ap-58f, 0x1.3a6ee4p+1f, -0x1.22e082p+0f, -0x1.babc44p-4f,
+    0x1.acccccp-54f, 0x1.3a77bep+1f, -0x1.23032ep+0f, -0x1.b8a85ap-4f,
     /* node 2979 y */
-    0x1.24ccccp-55f, -0x1.e4285p-1f, 0x1.1a6ffcp+1f, -0x1.db08b6p-4f,
+    -0x1.f66666p-56f, -0x1.e47db6p-1f, 0x1.1a75cp+1f, -0x1.d9dc3ep-4f,
     /* node 2979 z */
-    -0x1.333334p-55f, 0x1.f68338p-5f, -0x1.3423e2p-3f, 0x1.b45df6p+1f,
+    -0x1.99999ap-58f, 0x1.f34492p-5f, -0x1.342d76p-3f, 0x1.b45246p+1f,
     /* node 2980 x */
-    0x1.7d3334p-53f, 0x1.2c6e76p+1f, -0x1.485996p+0f, -0x1.cc03ccp-4f,
+    0x1.06999ap-53f, 0x1.2c8322p+1f, -0x1.48a0cep+0f, -0x1.cddce2p-4f,
     /* node 2980 y */
-    0x1.ccccccp-60f, -0x1.ec8fe4p-1f, 0x1.f795a6p+0f, -0x1.1881e8p-4f,
+    -0x1.95999ap-54f, -0x1.ece1d6p-1f, 0x1.f7a6c2p+0f, -0x1.17p-4f,
     /* node 2980 z */
-    0x1.ccccccp-56f, 0x1.aae14ep-4f, -0x1.df64d2p-4f, 0x1.86a5fep+1f,
+    -0x1.19999ap-55f, 0x1.a84558p-4f, -0x1.de27e6p-4f, 0x1.86924ep+1f,
     /* node 2981 x */
-    -0x1.f1999ap-55f, 0x1.21f12p+1f, -0x1.4a5d8ep+0f, -0x1.b36efep-3f,
+    0x1.7e6666p-55f, 0x1.21fb24p+1f, -0x1.4a8036p+0f, -0x1.b3c1ap-3f,
     /* node 2981 y */
-    -0x1.27999ap-57f, -0x1.f82afep-1f, 0x1.c3f844p+0f, -0x1.a5a7dap-8f,
+    0x1.ea6666p-58f, -0x1.f84944p-1f, 0x1.c3efcp+0f, -0x1.9d9938p-8f,
     /* node 2981 z */
-    -0x1.ccccccp-56f, 0x1.b54316p-4f, -0x1.06267ep-4f, 0x1.7549f8p+1f,
+    -0x1.333334p-58f, 0x1.b381a6p-4f, -0x1.05e83ap-4f, 0x1.7536d2p+1f,
     /* node 2982 x */
-    -0x1.64ccccp-55f, 0x1.2132fcp+1f, -0x1.5514cap+0f, -0x1.2ad19cp-3f,
+    -0x1.40ccccp-54f, 0x1.21431ap+1f, -0x1.55425cp+0f, -0x1.2b92dap-3f,
     /* node 2982 y */
-    0x1.e8ccccp-55f, -0x1.f09244p-1f, 0x1.c55116p+0f, -0x1.074c86p-5f,
+    -0x1.233334p-57f, -0x1.f0f048p-1f, 0x1.c578bp+0f, -0x1.05303ap-5f,
     /* node 2982 z */
-    0x1.333334p-58f, 0x1.18f834p-3f, -0x1.a6894ap-4f, 0x1.6b2882p+1f,
+    -0x1.ccccccp-56f, 0x1.17d5b2p-3f, -0x1.a5bac4p-4f, 0x1.6b216p+1f,
     /* node 2983 x */
-    -0x1.de3334p-55f, 0x1.39e8b8p+1f, -0x1.34515p+0f, -0x1.8f27b4p-6f,
+    0x1.a8b334p-54f, 0x1.39f06ap+1f, -0x1.34828ep+0f, -0x1.973b28p-6f,
     /* node 2983 y */
-    -0x1.f0ccccp-54f, -0x1.e4bb0ap-1f, 0x1.15c6dep+1f, -0x1.c6b292p-4f,
+    -0x1.ap-54f, -0x1.e526a4p-1f, 0x1.15d484p+1f, -0x1.c5c7b8p-4f,
     /* node 2983 z */
-    0x1.333334p-57f, 0x1.7c4e3ap-4f, -0x1.4a966cp-3f, 0x1.a77f5cp+1f,
+    -0x1.666666p-56f, 0x1.7a447p-4f, -0x1.4a306cp-3f, 0x1.a76af2p+1f,
     /* node 2984 x */
-    0x1.033334p-57f, 0x1.2f33e6p+1f, -0x1.45e35ap+0f, 0x1.a11c8ep-6f,
+    -0x1.3e6666p-54f, 0x1.2f37cp+1f, -0x1.460996p+0f, 0x1.961404p-6f,
     /* node 2984 y */
-    -0x1.753334p-54f, -0x1.e2d6ep-1f, 0x1.072748p+1f, -0x1.f83566p-4f,
+    0x1.78ccccp-55f, -0x1.e332cap-1f, 0x1.0733ap+1f, -0x1.f802c4p-4f,
     /* node 2984 z */
-    0x1.99999ap-58f, 0x1.c67d9ap-4f, -0x1.5c4938p-3f, 0x1.8e6746p+1f,
+    -0x0p+0f, 0x1.c4bf2p-4f, -0x1.5b1946p-3f, 0x1.8e54fap+1f,
     /* node 2985 x */
-    0x1.5fp-53f, 0x1.25f47ap+1f, -0x1.53515ep+0f, -0x1.e08932p-6f,
+    -0x1.7dp-55f, 0x1.25fcfep+1f, -0x1.538454p+0f, -0x1.e4ed46p-6f,
     /* node 2985 y */
-    -0x1.62p-55f, -0x1.e8f172p-1f, 0x1.ead82p+0f, -0x1.45ff6p-4f,
+    -0x1.2cp-55f, -0x1.e92fd2p-1f, 0x1.eaf91ap+0f, -0x1.45c956p-4f,
     /* node 2985 z */
-    0x1.99999ap-59f, 0x1.0bd48ep-3f, -0x1.2f70a4p-3f, 0x1.73759cp+1f,
+    -0x1.4cccccp-55f, 0x1.0ae5ecp-3f, -0x1.2ed7acp-3f, 0x1.735e2p+1f,
     /* node 2986 x */
-    0x1.424p-53f, 0x1.273a2ep+1f, -0x1.63e98ep+0f, 0x1.e6b798p-6f,
+    0x1.7a999ap-54f, 0x1.274b1cp+1f, -0x1.64274ep+0f, 0x1.d9bdf6p-6f,
     /* node 2986 y */
-    -0x1.3accccp-54f, -0x1.e643f6p-1f, 0x1.d4a01cp+0f, -0x1.c64fe6p-4f,
+    -0x1.0d3334p-54f, -0x1.e69c06p-1f, 0x1.d4c4bap+0f, -0x1.c4ea84p-4f,
     /* node 2986 z */
-    -0x1.b33334p-56f, 0x1.2f378p-3f, -0x1.89d846p-3f, 0x1.67aec6p+1f,
+    -0x1.e66666p-56f, 0x1.2dd186p-3f, -0x1.88a76ap-3f, 0x1.67a0e2p+1f,
     /* node 2987 x */
-    0x1.4c3334p-54f, 0x1.260a9p+1f, -0x1.535094p+0f, 0x1.487bbp-4f,
+    -0x1.71e666p-53f, 0x1.26191p+1f, -0x1.5387b4p+0f, 0x1.467beap-4f,
     /* node 2987 y */
-    -0x1.8p-57f, -0x1.e61e6cp-1f, 0x1.e754f6p+0f, -0x1.2d552ep-3f,
+    0x1.64p-55f, -0x1.e66094p-1f, 0x1.e76e86p+0f, -0x1.2d3114p-3f,
     /* node 2987 z */
-    -0x1.333334p-56f, 0x1.025c66p-3f, -0x1.a606bap-3f, 0x1.717f52p+1f,
+    -0x1.99999ap-56f, 0x1.015e8cp-3f, -0x1.a52272p-3f, 0x1.717184p+1f,
     /* node 2988 x */
-    -0x1.d1999ap-56f, 0x1.2651acp+1f, -0x1.6d95cp+0f, 0x1.8de996p-4f,
+    0x1.13999ap-54f, 0x1.264f6ep+1f, -0x1.6daee4p+0f, 0x1.8b6fe8p-4f,
     /* node 2988 y */
-    -0x1.22p-54f, -0x1.de205ep-1f, 0x1.bceffp+0f, -0x1.1badf2p-3f,
+    0x1.ecp-55f, -0x1.de38b6p-1f, 0x1.bcf622p+0f, -0x1.1ba83cp-3f,
     /* node 2988 z */
-    -0x1.19999ap-56f, 0x1.4e6c9p-3f, -0x1.d231e8p-3f, 0x1.5bb89ap+1f,
+    0x1.666666p-56f, 0x1.4d008ep-3f, -0x1.d02fbep-3f, 0x1.5b9da8p+1f,
     /* node 2989 x */
-    0x1.31b334p-54f, 0x1.25e3bap+1f, -0x1.704762p+0f, -0x1.a5dd28p-6f,
+    -0x1.74ccccp-58f, 0x1.25f6e8p+1f, -0x1.707e98p+0f, -0x1.ad37dap-6f,
     /* node 2989 y */
-    -0x1.0f3334p-54f, -0x1.e712e8p-1f, 0x1.bc7d88p+0f, -0x1.571a06p-4f,
+    -0x1.126666p-54f, -0x1.e778ecp-1f, 0x1.bca938p+0f, -0x1.55bd6p-4f,
     /* node 2989 z */
-    -0x1p-55f, 0x1.4e8c42p-3f, -0x1.61d53cp-3f, 0x1.5c7eb4p+1f,
+    -0x1.e66666p-56f, 0x1.4d50c6p-3f, -0x1.606fecp-3f, 0x1.5c76b6p+1f,
     /* node 2990 x */
-    0x1.98p-55f, 0x1.277f72p+1f, -0x1.7ba1b2p+0f, 0x1.7d0f08p-5f,
+    0x1.19cp-53f, 0x1.2786e2p+1f, -0x1.7be5d2p+0f, 0x1.7a1b3ep-5f,
     /* node 2990 y */
-    -0x1.2b3334p-55f, -0x1.e7d3aap-1f, 0x1.b10c4ap+0f, -0x1.e09bdp-4f,
+    -0x1.19999ap-57f, -0x1.e81b4p-1f, 0x1.b1385cp+0f, -0x1.e0a456p-4f,
     /* node 2990 z */
-    -0x1.e66666p-56f, 0x1.6d5952p-3f, -0x1.aee0b6p-3f, 0x1.552ae4p+1f,
+    0x1.333334p-57f, 0x1.6ce41ep-3f, -0x1.ae7deep-3f, 0x1.550ab8p+1f,
     /* node 2991 x */
-    -0x1.e9999ap-57f, 0x1.25c2dap+1f, -0x1.68e0fp+0f, 0x1.40d1dep-3f,
+    -0x1.4cp-54f, 0x1.25c892p+1f, -0x1.6902b4p+0f, 0x1.3f79dep-3f,
     /* node 2991 y */
-    -0x1.e4ccccp-55f, -0x1.df3b46p-1f, 0x1.d0001p+0f, -0x1.698c66p-3f,
+    -0x1.fcccccp-56f, -0x1.df837ap-1f, 0x1.d02a8p+0f, -0x1.69ea62p-3f,
     /* node 2991 z */
-    -0x1.333334p-58f, 0x1.39d85p-3f, -0x1.057918p-2f, 0x1.6597aap+1f,
+    0x1p-56f, 0x1.39032p-3f, -0x1.05252ap-2f, 0x1.658906p+1f,
     /* node 2992 x */
-    0x1.a8p-56f, 0x1.2846c4p+1f, -0x1.7c5632p+0f, 0x1.2f3742p-3f,
+    0x1.67999ap-54f, 0x1.28436p+1f, -0x1.7c498ap+0f, 0x1.2de712p-3f,
     /* node 2992 y */
-    -0x1.e0ccccp-55f, -0x1.e06626p-1f, 0x1.aefc04p+0f, -0x1.3f6088p-3f,
+    -0x1.ef3334p-55f, -0x1.e0707ep-1f, 0x1.aed9b2p+0f, -0x1.3eddacp-3f,
     /* node 2992 z */
-    -0x1.99999ap-56f, 0x1.5e2ee2p-3f, -0x1.012066p-2f, 0x1.544f98p+1f,
+    -0x1p-56f, 0x1.5d1244p-3f, -0x1.0020fap-2f, 0x1.543656p+1f,
     /* node 2993 x */
-    0x1.8cccccp-57f, 0x1.280d22p+1f, -0x1.73cdaap+0f, 0x1.ac6f4cp-3f,
+    0x1.89999ap-55f, 0x1.280f66p+1f, -0x1.73f972p+0f, 0x1.ab3b84p-3f,
     /* node 2993 y */
-    0x1.e66666p-58f, -0x1.dde7d4p-1f, 0x1.b984eap+0f, -0x1.887abap-3f,
+    -0x1.c33334p-56f, -0x1.de36eep-1f, 0x1.b9ac6ap+0f, -0x1.88d0f4p-3f,
     /* node 2993 z */
-    -0x1.666666p-57f, 0x1.4d5828p-3f, -0x1.1f8e76p-2f, 0x1.5a6eb2p+1f,
+    -0x1.666666p-57f, 0x1.4ccb4ep-3f, -0x1.1f79d8p-2f, 0x1.5a61p+1f,
     /* node 2994 x */
-    0x1.333334p-54f, 0x1.295c88p+1f, -0x1.89bd66p+0f, 0x1.a9558ap-3f,
+    0x1.3b3334p-55f, 0x1.295dd2p+1f, -0x1.89da4cp+0f, 0x1.a75ba4p-3f,
     /* node 2994 y */
-    -0x1.19999ap-57f, -0x1.d95f14p-1f, 0x1.99c0b2p+0f, -0x1.5c3ac2p-3f,
+    -0x1.2f999ap-54f, -0x1.d98784p-1f, 0x1.99be2ap+0f, -0x1.5c1c68p-3f,
     /* node 2994 z */
-    0x1.ccccccp-57f, 0x1.7b11f8p-3f, -0x1.21d264p-2f, 0x1.4e9edep+1f,
+    -0x1.99999ap-56f, 0x1.797a22p-3f, -0x1.20ea9p-2f, 0x1.4e8d38p+1f,
     /* node 2995 x */
-    -0x1.666666p-57f, 0x1.2c6d06p+1f, -0x1.92c7eap+0f, 0x1.37f066p-3f,
+    -0x1.cf3334p-55f, 0x1.2c8564p+1f, -0x1.9337bep+0f, 0x1.365d9cp-3f,
     /* node 2995 y */
-    -0x1.1b999ap-54f, -0x1.e223cep-1f, 0x1.994516p+0f, -0x1.39102ap-3f,
+    -0x1.546666p-54f, -0x1.e2aac2p-1f, 0x1.9996f8p+0f, -0x1.38b93ap-3f,
     /* node 2995 z */
-    0x1.ccccccp-57f, 0x1.8d8bfp-3f, -0x1.13524ap-2f, 0x1.4cfd0ep+1f,
+    -0x1.8p-56f, 0x1.8bc93ap-3f, -0x1.131728p-2f, 0x1.4cf2cep+1f,
     /* node 2996 x */
-    -0x1.166666p-53f, 0x1.2df89ap+1f, -0x1.9b74p+0f, 0x1.a0adc6p-3f,
+    -0x1.4d3334p-53f, 0x1.2df9f8p+1f, -0x1.9b775cp+0f, 0x1.a01338p-3f,
     /* node 2996 y */
-    -0x1.c33334p-55f, -0x1.d8d58ap-1f, 0x1.8493a8p+0f, -0x1.4ead02p-3f,
+    -0x1.74ccccp-54f, -0x1.d8fa12p-1f, 0x1.84a7b8p+0f, -0x1.4e9f8ep-3f,
     /* node 2996 z */
-    -0x1.8p-56f, 0x1.a394f4p-3f, -0x1.2f2144p-2f, 0x1.48bd22p+1f,
+    0x1.266666p-55f, 0x1.a31d82p-3f, -0x1.2f5cfcp-2f, 0x1.48aedep+1f,
     /* node 2997 x */
-    0x1.a8p-54f, 0x1.2b77e2p+1f, -0x1.94cba2p+0f, 0x1.086c1cp-2f,
+    0x1.93999ap-53f, 0x1.2b8606p+1f, -0x1.951738p+0f, 0x1.07d3a2p-2f,
     /* node 2997 y */
-    -0x1.0b3334p-54f, -0x1.d214b4p-1f, 0x1.81c328p+0f, -0x1.68717p-3f,
+    -0x1.9cccccp-55f, -0x1.d260dap-1f, 0x1.820ffcp+0f, -0x1.68a3fap-3f,
     /* node 2997 z */
-    -0x1.99999ap-60f, 0x1.94572ap-3f, -0x1.3ce8aep-2f, 0x1.4a3c3cp+1f,
+    -0x1.266666p-55f, 0x1.9388bp-3f, -0x1.3d1584p-2f, 0x1.4a2c6ap+1f,
     /* node 2998 x */
-    0x1.8p-56f, 0x1.267adep+1f, -0x1.806c5ep+0f, 0x1.0a3b4p-2f,
+    0x1.e66666p-57f, 0x1.268032p+1f, -0x1.80baa4p+0f, 0x1.09d90ap-2f,
     /* node 2998 y */
-    -0x1.c66666p-56f, -0x1.d585d8p-1f, 0x1.9755fep+0f, -0x1.8a0732p-3f,
+    -0x1.24ccccp-54f, -0x1.d61046p-1f, 0x1.97c3e4p+0f, -0x1.8a6738p-3f,
     /* node 2998 z */
-    -0x1.333334p-58f, 0x1.768f26p-3f, -0x1.3fc3eep-2f, 0x1.508944p+1f,
+    0x1.99999ap-59f, 0x1.757804p-3f, -0x1.3fb22p-2f, 0x1.5080b4p+1f,
     /* node 2999 x */
-    -0x1.8p-57f, 0x1.5aec5p+0f, -0x1.3d23fep-1f, -0x1.9c2b48p-1f,
+    0x1.19999ap-56f, 0x1.5a94ep+0f, -0x1.3d4be4p-1f, -0x1.9b209cp-1f,
     /* node 2999 y */
-    -0x1.ccccccp-56f, -0x1.4deec8p-1f, 0x1.43a25ap-1f, -0x1.9fcde4p-2f,
+    -0x1.333334p-58f, -0x1.4e567ep-1f, 0x1.43f09ap-1f, -0x1.9e3a1cp-2f,
     /* node 2999 z */
-    0x1p-56f, 0x1.628c7ep-4f, -0x1.4dded4p-2f, 0x1.a4fbp+0f,
+    -0x1.99999ap-60f, 0x1.613fbep-4f, -0x1.4d325ep-2f, 0x1.a4cdap+0f,
     /* node 3000 x */
-    -0x0p+0f, 0x1.645ec2p+0f, -0x1.518282p-1f, -0x1.9a88a2p-1f,
+    0x1.99999ap-58f, 0x1.63c5aap+0f, -0x1.5202aap-1f, -0x1.989b2p-1f,
     /* node 3000 y */
-    -0x1.533334p-56f, -0x1.53ea9ap-1f, 0x1.4727bcp-1f, -0x1.92c198p-2f,
+    -0x1.8cccccp-56f, -0x1.555abap-1f, 0x1.47e0b8p-1f, -0x1.8efaccp-2f,
     /* node 3000 z */
-    0x1.19999ap-56f, 0x1.81143ap-4f, -0x1.46514cp-2f, 0x1.adca2ap+0f,
+    0x1.99999ap-60f, 0x1.84a448p-4f, -0x1.4559a8p-2f, 0x1.ad365ap+0f,
     /* node 3001 x */
-    0x1.266666p-54f, 0x1.5e140ep+0f, -0x1.4348dap-1f, -0x1.a01c78p-1f,
+    0x1.666666p-57f, 0x1.5d66bep+0f, -0x1.43ab7p-1f, -0x1.9e30eep-1f,
     /* node 3001 y */
-    -0x1.7cccccp-55f, -0x1.445164p-1f, 0x1.3a3a4cp-1f, -0x1.a0ca06p-2f,
+    -0x1.ccccccp-56f, -0x1.44e91ap-1f, 0x1.3a88acp-1f, -0x1.9e9abap-2f,
     /* node 3001 z */
-    0x1.99999ap-57f, 0x1.64fc02p-4f, -0x1.4a1018p-2f, 0x1.a1202ap+0f,
+    0x1.333334p-57f, 0x1.670f32p-4f, -0x1.494a2ep-2f, 0x1.a0c6a6p+0f,
     /* node 3002 x */
-    0x1.2cccccp-55f, 0x1.61e852p+0f, -0x1.4a9b28p-1f, -0x1.9a4b6ap-1f,
+    -0x1.f33334p-55f, 0x1.6186fp+0f, -0x1.4b1d7cp-1f, -0x1.98decep-1f,
     /* node 3002 y */
-    0x1p-57f, -0x1.5d0fccp-1f, 0x1.502bacp-1f, -0x1.97445p-2f,
+    -0x1.acccccp-56f, -0x1.5d3336p-1f, 0x1.504b78p-1f, -0x1.96a0cp-2f,
     /* node 3002 z */
-    -0x1.333334p-56f, 0x1.805e3p-4f, -0x1.4baa32p-2f, 0x1.b19c2cp+0f,
+    -0x0p+0f, 0x1.7f85d6p-4f, -0x1.4ae94p-2f, 0x1.b1695cp+0f,
     /* node 3003 x */
-    0x1.333334p-59f, 0x1.52087p+0f, -0x1.306e36p-1f, -0x1.8f14ap-1f,
+    0x1p-56f, 0x1.5245b4p+0f, -0x1.302e62p-1f, -0x1.8fd0bp-1f,
     /* node 3003 y */
-    0x1.e66666p-57f, -0x1.52a86cp-1f, 0x1.463f44p-1f, -0x1.9a84a2p-2f,
+    0x1.8cccccp-57f, -0x1.52468ep-1f, 0x1.46d7fep-1f, -0x1.9c654p-2f,
     /* node 3003 z */
-    -0x1.8p-56f, 0x1.65109p-4f, -0x1.53c0ecp-2f, 0x1.a289fp+0f,
+    0x1.99999ap-59f, 0x1.5ff454p-4f, -0x1.53406p-2f, 0x1.a2d56ep+0f,
     /* node 3004 x */
-    0x1.ccccccp-55f, 0x1.5b291ap+0f, -0x1.3db55cp-1f, -0x1.921126p-1f,
+    0x1.8cccccp-55f, 0x1.5ba562p+0f, -0x1.3de55ap-1f, -0x1.9304fcp-1f,
     /* node 3004 y */
-    -0x1.ecccccp-56f, -0x1.6236bp-1f, 0x1.56aa6ep-1f, -0x1.99086cp-2f,
+    -0x1.266666p-57f, -0x1.611b9ep-1f, 0x1.57001ep-1f, -0x1.9d3258p-2f,
     /* node 3004 z */
-    -0x1.333334p-58f, 0x1.7ce1ecp-4f, -0x1.515a2p-2f, 0x1.b0ad5ap+0f,
+    0x1.99999ap-60f, 0x1.769d2ap-4f, -0x1.510ea6p-2f, 0x1.b1372cp+0f,
     /* node 3005 x */
-    -0x1.e66666p-57f, 0x1.65dadcp+0f, -0x1.4fc068p-1f, -0x1.94dbb4p-1f,
+    -0x1.2p-55f, 0x1.663228p+0f, -0x1.4fd8fcp-1f, -0x1.9589c2p-1f,
     /* node 3005 y */
-    0x1.19999ap-56f, -0x1.74af2p-1f, 0x1.6d8c94p-1f, -0x1.95234ep-2f,
+    -0x1.99999ap-62f, -0x1.741732p-1f, 0x1.6d9acp-1f, -0x1.96ba9cp-2f,
     /* node 3005 z */
-    -0x1.99999ap-57f, 0x1.945376p-4f, -0x1.4baf9ap-2f, 0x1.c053a4p+0f,
+    -0x1.19999ap-56f, 0x1.9696f2p-4f, -0x1.4bc2aap-2f, 0x1.c00668p+0f,
     /* node 3006 x */
-    0x1p-54f, 0x1.6b6ef8p+0f, -0x1.5b6266p-1f, -0x1.9e2362p-1f,
+    0x1.433334p-54f, 0x1.6b213cp+0f, -0x1.5b9194p-1f, -0x1.9d2f1p-1f,
     /* node 3006 y */
-    0x1.066666p-56f, -0x1.6f9078p-1f, 0x1.655ef4p-1f, -0x1.8e52ccp-2f,
+    -0x1.a66666p-56f, -0x1.6f338ap-1f, 0x1.651ff4p-1f, -0x1.8e7d3p-2f,
     /* node 3006 z */
-    -0x1.666666p-57f, 0x1.88d4f2p-4f, -0x1.44c2cp-2f, 0x1.c003bcp+0f,
+    -0x1.333334p-57f, 0x1.8c2eb2p-4f, -0x1.44781ep-2f, 0x1.bf70cp+0f,
     /* node 3007 x */
-    0x1.19999ap-55f, 0x1.774314p+0f, -0x1.6d268ep-1f, -0x1.a184ecp-1f,
+    0x1.333334p-56f, 0x1.774c9ep+0f, -0x1.6d67dep-1f, -0x1.a1961ep-1f,
     /* node 3007 y */
-    -0x1.333334p-57f, -0x1.7b4b62p-1f, 0x1.7462cep-1f, -0x1.8c025ap-2f,
+    0x1p-55f, -0x1.7b025ap-1f, 0x1.741b3ap-1f, -0x1.8bf7e8p-2f,
     /* node 3007 z */
-    0x1.333334p-58f, 0x1.99cdd6p-4f, -0x1.4645c6p-2f, 0x1.cf6c3ap+0f,
+    0x1.99999ap-57f, 0x1.9d0692p-4f, -0x1.45fbfep-2f, 0x1.cee9fcp+0f,
     /* node 3008 x */
-    0x1.19999ap-57f, 0x1.73c678p+0f, -0x1.623296p-1f, -0x1.9e7feap-1f,
+    0x1p-54f, 0x1.743e86p+0f, -0x1.627218p-1f, -0x1.9fc242p-1f,
     /* node 3008 y */
-    -0x1.99999ap-56f, -0x1.7e8bbap-1f, 0x1.7d24b4p-1f, -0x1.9d73f6p-2f,
+    -0x1.266666p-56f, -0x1.7e1c94p-1f, 0x1.7d3638p-1f, -0x1.9e6c98p-2f,
     /* node 3008 z */
-    -0x1p-57f, 0x1.95c5dp-4f, -0x1.4f11c6p-2f, 0x1.d25656p+0f,
+    -0x1.333334p-57f, 0x1.95c6d8p-4f, -0x1.4ed4f2p-2f, 0x1.d2285p+0f,
     /* node 3009 x */
-    0x1.cp-56f, 0x1.8174f2p+0f, -0x1.7e62bp-1f, -0x1.9e92aep-1f,
+    -0x1.ap-55f, 0x1.81b1cp+0f, -0x1.7ee96ep-1f, -0x1.9f0732p-1f,
     /* node 3009 y */
-    -0x1.ecccccp-56f, -0x1.87db42p-1f, 0x1.85db92p-1f, -0x1.8b244p-2f,
+    -0x1.8cccccp-57f, -0x1.880878p-1f, 0x1.863d8p-1f, -0x1.8a8abp-2f,
     /* node 3009 z */
-    -0x1p-57f, 0x1.b3e2e6p-4f, -0x1.408f48p-2f, 0x1.de683p+0f,
+    -0x1.ccccccp-57f, 0x1.b276ep-4f, -0x1.40142cp-2f, 0x1.de51d8p+0f,
     /* node 3010 x */
-    0x1.c33334p-54f, 0x1.7adef6p+0f, -0x1.752ef8p-1f, -0x1.a9334p-1f,
+    -0x1.2cccccp-55f, 0x1.7b18fcp+0f, -0x1.75876ap-1f, -0x1.a9d1b4p-1f,
     /* node 3010 y */
-    -0x1.9cccccp-55f, -0x1.762be6p-1f, 0x1.6d0f26p-1f, -0x1.89c312p-2f,
+    0x1.466666p-56f, -0x1.75687p-1f, 0x1.6c900ap-1f, -0x1.8b83cap-2f,
     /* node 3010 z */
-    0x1.333334p-57f, 0x1.920eacp-4f, -0x1.3fc4b2p-2f, 0x1.cdb688p+0f,
+    -0x1.99999ap-57f, 0x1.93fc1p-4f, -0x1.3ff854p-2f, 0x1.cd7012p+0f,
     /* node 3011 x */
-    0x1.066666p-54f, 0x1.854d56p+0f, -0x1.87175ap-1f, -0x1.a762f8p-1f,
+    0x1.cp-55f, 0x1.859372p+0f, -0x1.87a7fap-1f, -0x1.a7fa2cp-1f,
     /* node 3011 y */
-    -0x1.566666p-55f, -0x1.836102p-1f, 0x1.7d2934p-1f, -0x1.80b934p-2f,
+    -0x1.a9999ap-56f, -0x1.83a052p-1f, 0x1.7d7394p-1f, -0x1.802e14p-2f,
     /* node 3011 z */
-    0x1p-57f, 0x1.b7c266p-4f, -0x1.3e8f14p-2f, 0x1.db46ap+0f,
+    0x1.99999ap-58f, 0x1.b52d1ep-4f, -0x1.3e4e8ep-2f, 0x1.db4f8p+0f,
     /* node 3012 x */
-    0x1.433334p-54f, 0x1.7f359cp+0f, -0x1.73b824p-1f, -0x1.9bac88p-1f,
+    0x1.666666p-57f, 0x1.7f88d4p+0f, -0x1.741a7ap-1f, -0x1.9c877ep-1f,
     /* node 3012 y */
-    -0x1.99999ap-62f, -0x1.8b4136p-1f, 0x1.8dfb3ep-1f, -0x1.918f48p-2f,
+    0x1.466666p-56f, -0x1.8ad12ep-1f, 0x1.8e4d3p-1f, -0x1.92f7dep-2f,
     /* node 3012 z */
-    -0x1.99999ap-58f, 0x1.93b2cap-4f, -0x1.445ceep-2f, 0x1.e22998p+0f,
+    -0x1.ccccccp-57f, 0x1.924aa8p-4f, -0x1.4419fep-2f, 0x1.e21e7p+0f,
     /* node 3013 x */
-    0x1.4cccccp-55f, 0x1.877d04p+0f, -0x1.859298p-1f, -0x1.8ec6ep-1f,
+    -0x1.cp-56f, 0x1.87c9dp+0f, -0x1.8616c2p-1f, -0x1.8f8d24p-1f,
     /* node 3013 y */
-    -0x1.9cccccp-56f, -0x1.927bb2p-1f, 0x1.97d74cp-1f, -0x1.81bcb6p-2f,
+    -0x1.333334p-61f, -0x1.92322ap-1f, 0x1.98282ep-1f, -0x1.82d1a2p-2f,
     /* node 3013 z */
-    0x1.99999ap-58f, 0x1.ccb642p-4f, -0x1.417be4p-2f, 0x1.ecfd96p+0f,
+    0x1.333334p-58f, 0x1.ca62a8p-4f, -0x1.40ca8ap-2f, 0x1.ecf83ep+0f,
     /* node 3014 x */
-    0x1.ep-55f, 0x1.8cfdcap+0f, -0x1.91650ap-1f, -0x1.9d018cp-1f,
+    -0x1.8cccccp-56f, 0x1.8d36cp+0f, -0x1.91ed44p-1f, -0x1.9d60bcp-1f,
     /* node 3014 y */
-    -0x1.c66666p-56f, -0x1.8bec6ap-1f, 0x1.909ac8p-1f, -0x1.8f21f2p-2f,
+    -0x1.cp-55f, -0x1.8b921ep-1f, 0x1.90d2c8p-1f, -0x1.9016acp-2f,
     /* node 3014 z */
-    -0x1.666666p-57f, 0x1.c54c2cp-4f, -0x1.3f6bf8p-2f, 0x1.ee0706p+0f,
+    -0x1.0cccccp-55f, 0x1.c460aap-4f, -0x1.3ee8fep-2f, 0x1.edecb2p+0f,
     /* node 3015 x */
-    0x1.19999ap-57f, 0x1.99f062p+0f, -0x1.a43a8ap-1f, -0x1.99b78ep-1f,
+    0x1.033334p-54f, 0x1.9a445cp+0f, -0x1.a4cf76p-1f, -0x1.9a7936p-1f,
     /* node 3015 y */
-    -0x1.733334p-58f, -0x1.974bb8p-1f, 0x1.9ddb7ep-1f, -0x1.7158aep-2f,
+    0x1.4cccccp-58f, -0x1.970fd8p-1f, 0x1.9dfdfcp-1f, -0x1.72104ep-2f,
     /* node 3015 z */
-    0x1.b33334p-56f, 0x1.ac0a9cp-4f, -0x1.35ba1p-2f, 0x1.fe46cp+0f,
+    -0x1.99999ap-59f, 0x1.a9cb3ap-4f, -0x1.354ec6p-2f, 0x1.fe461ap+0f,
     /* node 3016 x */
-    0x1.59999ap-54f, 0x1.96bce8p+0f, -0x1.9a0bf8p-1f, -0x1.91fea6p-1f,
+    -0x1.cp-56f, 0x1.970708p+0f, -0x1.9a9becp-1f, -0x1.92c6c6p-1f,
     /* node 3016 y */
-    -0x1.033334p-56f, -0x1.9fd2ecp-1f, 0x1.a8f8b2p-1f, -0x1.62d306p-2f,
+    -0x1.54ccccp-55f, -0x1.9ff7a2p-1f, 0x1.a948a8p-1f, -0x1.628ad2p-2f,
     /* node 3016 z */
-    0x1.333334p-58f, 0x1.8723cep-4f, -0x1.37baeep-2f, 0x1.0102bep+1f,
+    0x1p-57f, 0x1.8379fcp-4f, -0x1.37183p-2f, 0x1.010ae2p+1f,
     /* node 3017 x */
-    0x1.99999ap-56f, 0x1.a2bec6p+0f, -0x1.b91698p-1f, -0x1.880462p-1f,
+    -0x1.59999ap-55f, 0x1.a3190cp+0f, -0x1.b9c05cp-1f, -0x1.88df16p-1f,
     /* node 3017 y */
-    -0x1.f66666p-56f, -0x1.9ede92p-1f, 0x1.accc6ep-1f, -0x1.5ef09p-2f,
+    -0x1.833334p-56f, -0x1.9ee7cep-1f, 0x1.ad1f5ep-1f, -0x1.5f00d6p-2f,
     /* node 3017 z */
-    -0x1.99999ap-59f, 0x1.be1612p-4f, -0x1.2eaadp-2f, 0x1.05f6a2p+1f,
+    -0x1.333334p-57f, 0x1.bbfbcep-4f, -0x1.2e25a4p-2f, 0x1.05f19ep+1f,
     /* node 3018 x */
-    0x1.ecccccp-55f, 0x1.9dc6dap+0f, -0x1.ad262cp-1f, -0x1.a47c7cp-1f,
+    0x1.49999ap-54f, 0x1.9dffep+0f, -0x1.ad9ed4p-1f, -0x1.a50808p-1f,
     /* node 3018 y */
-    -0x1.2cccccp-55f, -0x1.93b56p-1f, 0x1.95bacp-1f, -0x1.74c95cp-2f,
+    -0x1.766666p-56f, -0x1.938c6cp-1f, 0x1.95e5f2p-1f, -0x1.750f9ap-2f,
     /* node 3018 z */
-    0x1.666666p-57f, 0x1.c441c6p-4f, -0x1.308902p-2f, 0x1.f9cc3ep+0f,
+    0x1.666666p-57f, 0x1.c369fp-4f, -0x1.30730cp-2f, 0x1.f9ad0cp+0f,
     /* node 3019 x */
-    0x1.7p-54f, 0x1.a8f02p+0f, -0x1.c2dc36p-1f, -0x1.981a98p-1f,
+    0x1.0cccccp-54f, 0x1.a9357p+0f, -0x1.c36b52p-1f, -0x1.98bb7p-1f,
     /* node 3019 y */
-    -0x1.2cccccp-55f, -0x1.99e0eep-1f, 0x1.a249e4p-1f, -0x1.64862cp-2f,
+    -0x1.dp-56f, -0x1.99f644p-1f, 0x1.a2b318p-1f, -0x1.644108p-2f,
     /* node 3019 z */
-    -0x1.333334p-57f, 0x1.d0729ap-4f, -0x1.2896c2p-2f, 0x1.03741ep+1f,
+    -0x0p+0f, 0x1.cdbe22p-4f, -0x1.284718p-2f, 0x1.03797cp+1f,
     /* node 3020 x */
-    0x1.3p-55f, 0x1.9e858cp+0f, -0x1.ac9342p-1f, -0x1.793a6cp-1f,
+    0x1.3cccccp-55f, 0x1.9ebf7ap+0f, -0x1.ad018ap-1f, -0x1.79e784p-1f,
     /* node 3020 y */
-    -0x1.2cccccp-56f, -0x1.9f2624p-1f, 0x1.b3b22cp-1f, -0x1.5a9c6p-2f,
+    0x1.6cccccp-56f, -0x1.9f664p-1f, 0x1.b40edap-1f, -0x1.59fc0ep-2f,
     /* node 3020 z */
-    0x1.8p-56f, 0x1.b2daa6p-4f, -0x1.311edap-2f, 0x1.068f06p+1f,
+    -0x0p+0f, 0x1.b02b32p-4f, -0x1.307964p-2f, 0x1.068ad4p+1f,
     /* node 3021 x */
-    0x1.be6666p-54f, 0x1.b02d9ap+0f, -0x1.c4f57ap-1f, -0x1.72ad2ap-1f,
+    0x1.066666p-54f, 0x1.b06f16p+0f, -0x1.c575f4p-1f, -0x1.735bfp-1f,
     /* node 3021 y */
-    0x1.cp-56f, -0x1.a39b4ep-1f, 0x1.c2dc0ap-1f, -0x1.45800cp-2f,
+    -0x1.a33334p-56f, -0x1.a3cf04p-1f, 0x1.c30b26p-1f, -0x1.44f65ep-2f,
     /* node 3021 z */
-    0x1.99999ap-57f, 0x1.856242p-4f, -0x1.235d72p-2f, 0x1.112b88p+1f,
+    -0x1p-57f, 0x1.83eaccp-4f, -0x1.22f9aep-2f, 0x1.111f26p+1f,
     /* node 3022 x */
-    0x1.99999ap-58f, 0x1.b1a03ep+0f, -0x1.cd11e6p-1f, -0x1.7ee414p-1f,
+    0x1.f9999ap-56f, 0x1.b201bap+0f, -0x1.cdad6p-1f, -0x1.7fed12p-1f,
     /* node 3022 y */
-    -0x1.566666p-56f, -0x1.a1858p-1f, 0x1.b9a21ap-1f, -0x1.499c2cp-2f,
+    -0x0p+0f, -0x1.a1907ep-1f, 0x1.b9d5b8p-1f, -0x1.49788ap-2f,
     /* node 3022 z */
-    -0x1.99999ap-58f, 0x1.a5145ap-4f, -0x1.255f96p-2f, 0x1.0dc69cp+1f,
+    -0x1p-57f, 0x1.a2e828p-4f, -0x1.25280cp-2f, 0x1.0dc2fp+1f,
     /* node 3023 x */
-    0x1.2cccccp-56f, 0x1.c322fap+0f, -0x1.eba9e8p-1f, -0x1.690104p-1f,
+    0x1.b33334p-57f, 0x1.c3812ep+0f, -0x1.ec5318p-1f, -0x1.69ec94p-1f,
     /* node 3023 y */
-    -0x1.18p-55f, -0x1.a28aacp-1f, 0x1.cc26aep-1f, -0x1.31138p-2f,
+    -0x1.c9999ap-56f, -0x1.a2b3d2p-1f, 0x1.cc7b1cp-1f, -0x1.30ded4p-2f,
     /* node 3023 z */
-    -0x1.99999ap-56f, 0x1.cbf792p-4f, -0x1.12d492p-2f, 0x1.14860cp+1f,
+    -0x1.99999ap-58f, 0x1.c8ef88p-4f, -0x1.126f42p-2f, 0x1.148dbcp+1f,
     /* node 3024 x */
-    0x1.3cccccp-54f, 0x1.bda132p+0f, -0x1.e20fc8p-1f, -0x1.4ded58p-1f,
+    0x1.7e6666p-54f, 0x1.bdddcp+0f, -0x1.e29788p-1f, -0x1.4e8348p-1f,
     /* node 3024 y */
-    0x1.44ccccp-55f, -0x1.aa487ap-1f, 0x1.d579aep-1f, -0x1.19dffep-2f,
+    -0x1.fe6666p-55f, -0x1.aa3842p-1f, 0x1.d5a102p-1f, -0x1.19f4d8p-2f,
     /* node 3024 z */
-    0x1.99999ap-60f, 0x1.c68368p-4f, -0x1.0e0012p-2f, 0x1.175ce6p+1f,
+    -0x1.ccccccp-56f, 0x1.c38544p-4f, -0x1.0da44p-2f, 0x1.175ef4p+1f,
     /* node 3025 x */
-    0x1.cb3334p-54f, 0x1.d6155ep+0f, -0x1.0717aap+0f, -0x1.4d42bep-1f,
+    0x1.333334p-55f, 0x1.d60da8p+0f, -0x1.072e72p+0f, -0x1.4d47c6p-1f,
     /* node 3025 y */
-    0x1.666666p-57f, -0x1.a96172p-1f, 0x1.e127fp-1f, -0x1.fa559ap-3f,
+    -0x1.39999ap-57f, -0x1.a93e88p-1f, 0x1.e1344cp-1f, -0x1.faed1p-3f,
     /* node 3025 z */
-    0x1.666666p-57f, 0x1.b3d58p-4f, -0x1.e421e6p-3f, 0x1.1ecd18p+1f,
+    0x1p-56f, 0x1.b49006p-4f, -0x1.e3c6b6p-3f, 0x1.1ea7eep+1f,
     /* node 3026 x */
-    0x1.733334p-57f, 0x1.c1659ep+0f, -0x1.ef9112p-1f, -0x1.77fd76p-1f,
+    0x1.933334p-56f, 0x1.c1a894p+0f, -0x1.f0410ap-1f, -0x1.78a7d4p-1f,
     /* node 3026 y */
-    -0x1.19999ap-59f, -0x1.a1bb74p-1f, 0x1.b9bc5ap-1f, -0x1.2df542p-2f,
+    -0x1.44ccccp-55f, -0x1.a1cd9p-1f, 0x1.b9e492p-1f, -0x1.2d9db8p-2f,
     /* node 3026 z */
-    0x1.ccccccp-57f, 0x1.eb1958p-4f, -0x1.114ecap-2f, 0x1.0f584ap+1f,
+    -0x1.666666p-57f, 0x1.e912d2p-4f, -0x1.10ffacp-2f, 0x1.0f51bcp+1f,
     /* node 3027 x */
-    0x1p-57f, 0x1.d56c2ep+0f, -0x1.09841p+0f, -0x1.63f8e8p-1f,
+    0x1.19999ap-57f, 0x1.d57046p+0f, -0x1.09a464p+0f, -0x1.6417d4p-1f,
     /* node 3027 y */
-    -0x1.5b3334p-55f, -0x1.a4f9c2p-1f, 0x1.ce9708p-1f, -0x1.10ab5p-2f,
+    -0x1.0cccccp-57f, -0x1.a4a368p-1f, 0x1.ce99ep-1f, -0x1.113a38p-2f,
     /* node 3027 z */
-    -0x1.8p-56f, 0x1.db1296p-4f, -0x1.f09d9ep-3f, 0x1.1825c2p+1f,
+    0x1.333334p-56f, 0x1.da241cp-4f, -0x1.f00e1ap-3f, 0x1.181072p+1f,
     /* node 3028 x */
-    0x1.666666p-55f, 0x1.d9426ap+0f, -0x1.05f6ep+0f, -0x1.32097ep-1f,
+    0x1.84ccccp-54f, 0x1.d96f44p+0f, -0x1.06137ep+0f, -0x1.3290fap-1f,
     /* node 3028 y */
-    -0x1.a66666p-58f, -0x1.b5910ap-1f, 0x1.004f86p+0f, -0x1.ba88acp-3f,
+    -0x1.2p-57f, -0x1.b56292p-1f, 0x1.00670ep+0f, -0x1.bb508p-3f,
     /* node 3028 z */
-    -0x1.e66666p-56f, 0x1.949bbp-4f, -0x1.cf6424p-3f, 0x1.27bcfap+1f,
+    0x1.ccccccp-56f, 0x1.92bf0cp-4f, -0x1.cf33fap-3f, 0x1.27ae32p+1f,
     /* node 3029 x */
-    0x1.e33334p-54f, 0x1.f928bep+0f, -0x1.1d9b66p+0f, -0x1.12a25p-1f,
+    0x1.f8p-54f, 0x1.f995dcp+0f, -0x1.1dd70cp+0f, -0x1.13c86ep-1f,
     /* node 3029 y */
-    -0x1.f8p-55f, -0x1.c876f4p-1f, 0x1.22198ap+0f, -0x1.337064p-3f,
+    -0x1.fcccccp-55f, -0x1.c83ff6p-1f, 0x1.224336p+0f, -0x1.355ba4p-3f,
     /* node 3029 z */
-    -0x1.266666p-55f, 0x1.78526p-4f, -0x1.5f989cp-3f, 0x1.3a3c6ap+1f,
+    0x1p-57f, 0x1.7265cep-4f, -0x1.5f03f8p-3f, 0x1.3a6064p+1f,
     /* node 3030 x */
-    0x1.226666p-53f, 0x1.f24214p+0f, -0x1.200934p+0f, -0x1.28cf86p-1f,
+    0x1.666666p-57f, 0x1.f1d918p+0f, -0x1.202a48p+0f, -0x1.282086p-1f,
     /* node 3030 y */
-    -0x1.7e6666p-55f, -0x1.b7fa56p-1f, 0x1.0a6e72p+0f, -0x1.7606bep-3f,
+    0x1.2b3334p-55f, -0x1.b85f94p-1f, 0x1.0a6a7ap+0f, -0x1.73220ep-3f,
     /* node 3030 z */
-    -0x1.99999ap-59f, 0x1.c9f464p-4f, -0x1.893128p-3f, 0x1.2cda18p+1f,
+    -0x1.19999ap-56f, 0x1.cab55cp-4f, -0x1.887ca6p-3f, 0x1.2cabd2p+1f,
     /* node 3031 x */
-    0x1.8p-58f, 0x1.065262p+1f, -0x1.36188cp+0f, -0x1.091938p-1f,
+    0x1.fcccccp-55f, 0x1.064f7ap+1f, -0x1.36495ep+0f, -0x1.0922c6p-1f,
     /* node 3031 y */
-    -0x1.466666p-56f, -0x1.c7f252p-1f, 0x1.285a2ep+0f, -0x1.03f2f6p-3f,
+    -0x1.533334p-58f, -0x1.c84dcep-1f, 0x1.286fcep+0f, -0x1.02aac6p-3f,
     /* node 3031 z */
-    0x1.333334p-58f, 0x1.c910e2p-4f, -0x1.3c3298p-3f, 0x1.3a0fdcp+1f,
+    -0x1.8p-56f, 0x1.c97806p-4f, -0x1.3baefp-3f, 0x1.39e96p+1f,
     /* node 3032 x */
-    -0x1.1p-55f, 0x1.08e584p+1f, -0x1.325b2ap+0f, -0x1.d36efap-2f,
+    0x1.673334p-53f, 0x1.08ecep+1f, -0x1.3275d4p+0f, -0x1.d3f532p-2f,
     /* node 3032 y */
-    -0x1.f8ccccp-56f, -0x1.d8b5eap-1f, 0x1.4a6b8cp+0f, -0x1.74154ep-4f,
+    -0x1.266666p-59f, -0x1.d89cc2p-1f, 0x1.4a7a28p+0f, -0x1.759ee2p-4f,
     /* node 3032 z */
-    0x1.666666p-57f, 0x1.8cf2p-4f, -0x1.182b04p-3f, 0x1.4a5c12p+1f,
+    -0x1.333334p-58f, 0x1.8ba22ep-4f, -0x1.17ac28p-3f, 0x1.4a53e8p+1f,
     /* node 3033 x */
-    0x1.233334p-54f, 0x1.10f11ep+1f, -0x1.4dfc48p+0f, -0x1.c37dccp-2f,
+    -0x1p-53f, 0x1.10ffb4p+1f, -0x1.4e33f2p+0f, -0x1.c41356p-2f,
     /* node 3033 y */
-    0x1.84p-56f, -0x1.d70096p-1f, 0x1.4530acp+0f, -0x1.5290b6p-4f,
+    -0x1.6d3334p-54f, -0x1.d70922p-1f, 0x1.454124p+0f, -0x1.531772p-4f,
     /* node 3033 z */
-    -0x1.4cccccp-55f, 0x1.da73b6p-4f, -0x1.0237c4p-3f, 0x1.447bc8p+1f,
+    0x1.333334p-58f, 0x1.d85378p-4f, -0x1.0191ap-3f, 0x1.447b0cp+1f,
     /* node 3034 x */
-    -0x1.3p-54f, 0x1.0362e6p+1f, -0x1.38779cp+0f, -0x1.1aee78p-1f,
+    0x1.89999ap-55f, 0x1.03676ap+1f, -0x1.38989cp+0f, -0x1.1b2ed6p-1f,
     /* node 3034 y */
-    -0x1.68p-56f, -0x1.bbf00ap-1f, 0x1.0fffaep+0f, -0x1.302d5ep-3f,
+    -0x1.49999ap-57f, -0x1.bbfb2p-1f, 0x1.100574p+0f, -0x1.2f81fap-3f,
     /* node 3034 z */
-    -0x1.99999ap-57f, 0x1.05859p-3f, -0x1.6e1c94p-3f, 0x1.2ced3ep+1f,
+    -0x1.e66666p-56f, 0x1.047b2p-3f, -0x1.6da374p-3f, 0x1.2cdfeep+1f,
     /* node 3035 x */
-    -0x1.39999ap-56f, 0x1.0d47e6p+1f, -0x1.4c7c6ap+0f, -0x1.f222p-2f,
+    -0x1.066666p-56f, 0x1.0d4c2ap+1f, -0x1.4c9d56p+0f, -0x1.f2ab54p-2f,
     /* node 3035 y */
-    0x1.a33334p-56f, -0x1.c822aap-1f, 0x1.2906e2p+0f, -0x1.b5ee2ap-4f,
+    -0x1.733334p-56f, -0x1.c84dc8p-1f, 0x1.2920fcp+0f, -0x1.b4a4fep-4f,
     /* node 3035 z */
-    -0x1p-56f, 0x1.1af33p-3f, -0x1.3f9f44p-3f, 0x1.34a408p+1f,
+    0x1.666666p-57f, 0x1.1a08cap-3f, -0x1.3f1678p-3f, 0x1.349876p+1f,
     /* node 3036 x */
-    0x1.426666p-53f, 0x1.126b22p+1f, -0x1.424b3p+0f, -0x1.a4281ap-2f,
+    0x1.666666p-57f, 0x1.1276eap+1f, -0x1.4276cap+0f, -0x1.a46cd4p-2f,
     /* node 3036 y */
-    -0x1.5b6666p-54f, -0x1.e3925ep-1f, 0x1.6934c4p+0f, -0x1.d9d3e6p-5f,
+    0x1.d26666p-56f, -0x1.e3cf4cp-1f, 0x1.6963a8p+0f, -0x1.d7b91cp-5f,
     /* node 3036 z */
-    -0x1.e66666p-56f, 0x1.8fd95ep-4f, -0x1.c446dep-4f, 0x1.5470bcp+1f,
+    -0x1.99999ap-57f, 0x1.8de8b2p-4f, -0x1.c26bep-4f, 0x1.5468bap+1f,
     /* node 3037 x */
-    0x1.db3334p-54f, 0x1.175e68p+1f, -0x1.50103cp+0f, -0x1.5c04fep-2f,
+    -0x1.0e6666p-55f, 0x1.1769d2p+1f, -0x1.503696p+0f, -0x1.5c34d8p-2f,
     /* node 3037 y */
-    -0x1.38ccccp-57f, -0x1.eca746p-1f, 0x1.81a7ecp+0f, -0x1.027186p-5f,
+    -0x1.a46666p-55f, -0x1.ecde9ep-1f, 0x1.81ba82p+0f, -0x1.fb92fep-6f,
     /* node 3037 z */
-    -0x1.19999ap-55f, 0x1.b43efp-4f, -0x1.7a572ap-4f, 0x1.5c6604p+1f,
+    -0x1.4cccccp-55f, 0x1.b2dcf8p-4f, -0x1.7a7906p-4f, 0x1.5c596ap+1f,
     /* node 3038 x */
-    0x1.a4p-54f, 0x1.14cb84p+1f, -0x1.589cbap+0f, -0x1.84576p-2f,
+    -0x1.e66666p-59f, 0x1.14d6e6p+1f, -0x1.58d3cp+0f, -0x1.852224p-2f,
     /* node 3038 y */
-    -0x1.6cccccp-56f, -0x1.de6922p-1f, 0x1.5ac9dcp+0f, -0x1.f166bap-5f,
+    -0x1.c73334p-55f, -0x1.dea2dcp-1f, 0x1.5afb48p+0f, -0x1.f03186p-5f,
     /* node 3038 z */
-    0x1p-57f, 0x1.0d5292p-3f, -0x1.d86c2p-4f, 0x1.491c18p+1f,
+    -0x1.99999ap-56f, 0x1.0c4cc2p-3f, -0x1.d741fap-4f, 0x1.491c74p+1f,
     /* node 3039 x */
-    0x1.04ccccp-54f, 0x1.1bd84cp+1f, -0x1.63d566p+0f, -0x1.530c2ap-2f,
+    0x1.866666p-55f, 0x1.1bee8ap+1f, -0x1.642c0cp+0f, -0x1.542956p-2f,
     /* node 3039 y */
-    0x1.5cccccp-59f, -0x1.e65cfep-1f, 0x1.6cfe96p+0f, -0x1.7f473p-5f,
+    -0x1.bc8p-54f, -0x1.e6931ep-1f, 0x1.6d1a24p+0f, -0x1.7fe452p-5f,
     /* node 3039 z */
-    0x1.ccccccp-57f, 0x1.1c240ap-3f, -0x1.e6ddp-4f, 0x1.4d84bap+1f,
+    -0x1.ccccccp-56f, 0x1.1b15cep-3f, -0x1.e52662p-4f, 0x1.4d7ebap+1f,
     /* node 3040 x */
-    0x1.1cccccp-55f, 0x1.1ce708p+1f, -0x1.5a2a9p+0f, -0x1.22baacp-2f,
+    -0x1.08p-55f, 0x1.1ce714p+1f, -0x1.5a32bp+0f, -0x1.2238fap-2f,
     /* node 3040 y */
-    -0x1.ccb334p-55f, -0x1.f2b4eap-1f, 0x1.91fc88p+0f, -0x1.78caacp-6f,
+    -0x1.31199ap-54f, -0x1.f2b96ap-1f, 0x1.91e37ep+0f, -0x1.76897cp-6f,
     /* node 3040 z */
-    -0x1.8p-56f, 0x1.fd51aap-4f, -0x1.78a666p-4f, 0x1.5e0644p+1f,
+    -0x1.333334p-55f, 0x1.fc5e0ap-4f, -0x1.79eba4p-4f, 0x1.5defeap+1f,
     /* node 3041 x */
-    0x1.76ccccp-53f, 0x1.1f987p+1f, -0x1.6f7012p+0f, -0x1.f9de12p-3f,
+    0x1.39999ap-57f, 0x1.1fa25cp+1f, -0x1.6faa08p+0f, -0x1.fc17ccp-3f,
     /* node 3041 y */
-    0x1.766666p-57f, -0x1.e745fcp-1f, 0x1.7ab624p+0f, -0x1.a6f2f8p-5f,
+    -0x1.a96666p-54f, -0x1.e77f66p-1f, 0x1.7ac926p+0f, -0x1.a597b2p-5f,
     /* node 3041 z */
-    -0x1.99999ap-57f, 0x1.4a7de8p-3f, -0x1.f40924p-4f, 0x1.4d486cp+1f,
+    -0x1.733334p-55f, 0x1.493d5ap-3f, -0x1.f15c1p-4f, 0x1.4d3d38p+1f,
     /* node 3042 x */
-    0x1.11999ap-54f, 0x1.1a015ep+1f, -0x1.679928p+0f, -0x1.77517p-2f,
+    0x1.80ccccp-53f, 0x1.1a105ap+1f, -0x1.67d348p+0f, -0x1.7783b2p-2f,
     /* node 3042 y */
-    -0x1.50ccccp-56f, -0x1.dad244p-1f, 0x1.4f17cp+0f, -0x1.243e0ep-4f,
+    -0x1.c9999ap-57f, -0x1.dafe28p-1f, 0x1.4f401cp+0f, -0x1.215bcp-4f,
     /* node 3042 z */
-    -0x1.19999ap-56f, 0x1.406ceap-3f, -0x1.172338p-3f, 0x1.40b8c6p+1f,
+    0x1.333334p-58f, 0x1.3fac84p-3f, -0x1.16497cp-3f, 0x1.40abecp+1f,
     /* node 3043 x */
-    -0x1.373334p-54f, 0x1.1fe5a2p+1f, -0x1.75da7ep+0f, -0x1.2a6e7ap-2f,
+    0x1.6cccccp-56f, 0x1.1fd712p+1f, -0x1.75d784p+0f, -0x1.2a3a78p-2f,
     /* node 3043 y */
-    -0x1.6accccp-55f, -0x1.e2195cp-1f, 0x1.5fd7c2p+0f, -0x1.18e46cp-4f,
+    0x1.81999ap-57f, -0x1.e257fep-1f, 0x1.600334p+0f, -0x1.17dc8cp-4f,
     /* node 3043 z */
-    -0x1p-56f, 0x1.646fc2p-3f, -0x1.2806b6p-3f, 0x1.42896ep+1f,
+    -0x1.666666p-57f, 0x1.64616p-3f, -0x1.28bf34p-3f, 0x1.4279a8p+1f,
     /* node 3044 x */
-    0x1.4f999ap-53f, 0x1.1ff3aep+1f, -0x1.679992p+0f, -0x1.a58722p-3f,
+    0x1.a33334p-55f, 0x1.200698p+1f, -0x1.67d39cp+0f, -0x1.a6113cp-3f,
     /* node 3044 y */
-    -0x1.2eccccp-55f, -0x1.eb22cp-1f, 0x1.9c5a1p+0f, -0x1.619b1ap-5f,
+    -0x1.a93334p-56f, -0x1.eb4c98p-1f, 0x1.9c6a48p+0f, -0x1.5e05c4p-5f,
     /* node 3044 z */
-    -0x1.666666p-56f, 0x1.30816ap-3f, -0x1.db5d2ep-4f, 0x1.5a69f8p+1f,
+    -0x1p-56f, 0x1.2f67b2p-3f, -0x1.d9f3ccp-4f, 0x1.5a63dep+1f,
     /* node 3045 x */
-    -0x1.533334p-58f, 0x1.23bc18p+1f, -0x1.721ac6p+0f, -0x1.1eb46ap-3f,
+    0x1.4d3334p-54f, 0x1.23d104p+1f, -0x1.72759ep+0f, -0x1.2050a2p-3f,
     /* node 3045 y */
-    -0x1.21999ap-54f, -0x1.ec26p-1f, 0x1.a3d918p+0f, -0x1.53b634p-5f,
+    -0x1.46999ap-54f, -0x1.ec97e8p-1f, 0x1.a41266p+0f, -0x1.51d132p-5f,
     /* node 3045 z */
-    0x1.99999ap-59f, 0x1.41977ap-3f, -0x1.04075ep-3f, 0x1.58e45cp+1f,
+    -0x1p-57f, 0x1.40b53p-3f, -0x1.0332acp-3f, 0x1.58c8f2p+1f,
     /* node 3046 x */
-    0x1.2a999ap-53f, 0x1.236286p+1f, -0x1.777d9ep+0f, -0x1.7198ep-3f,
+    -0x1.4d999ap-54f, 0x1.236192p+1f, -0x1.777ed4p+0f, -0x1.725006p-3f,
     /* node 3046 y */
-    -0x1.47ccccp-54f, -0x1.e6b9bep-1f, 0x1.82b924p+0f, -0x1.025e16p-4f,
+    -0x1.bd999ap-55f, -0x1.e6d75ep-1f, 0x1.82e142p+0f, -0x1.013a92p-4f,
     /* node 3046 z */
-    0x1.666666p-57f, 0x1.636e44p-3f, -0x1.33fbfap-3f, 0x1.4c92dcp+1f,
+    -0x1.0cccccp-55f, 0x1.62c59cp-3f, -0x1.33a93cp-3f, 0x1.4c86acp+1f,
     /* node 3047 x */
-    0x1.2bp-53f, 0x1.25e92ap+1f, -0x1.82cbc2p+0f, -0x1.de0eep-4f,
+    0x1.a26666p-55f, 0x1.25f508p+1f, -0x1.8311d8p+0f, -0x1.df0d9ap-4f,
     /* node 3047 y */
-    0x1.19999ap-56f, -0x1.e6dfc8p-1f, 0x1.880decp+0f, -0x1.4d2294p-4f,
+    -0x1.88999ap-54f, -0x1.e6ff2ep-1f, 0x1.8819fp+0f, -0x1.4ce06ap-4f,
     /* node 3047 z */
-    0x1.99999ap-59f, 0x1.858b46p-3f, -0x1.717186p-3f, 0x1.4b422cp+1f,
+    0x1.333334p-56f, 0x1.8543dp-3f, -0x1.720c1cp-3f, 0x1.4b280ep+1f,
     /* node 3048 x */
-    0x1.f2ccccp-55f, 0x1.24abacp+1f, -0x1.7832aep+0f, -0x1.ecb704p-5f,
+    0x1.0c999ap-54f, 0x1.24a8f2p+1f, -0x1.784022p+0f, -0x1.ed48f8p-5f,
     /* node 3048 y */
-    -0x1.1cccccp-57f, -0x1.e61bcp-1f, 0x1.9d22a8p+0f, -0x1.6014bep-4f,
+    0x1.913334p-55f, -0x1.e6468ap-1f, 0x1.9d4c08p+0f, -0x1.5f54fp-4f,
     /* node 3048 z */
-    -0x1.ccccccp-57f, 0x1.71a11ep-3f, -0x1.684498p-3f, 0x1.527f4p+1f,
+    0x1.99999ap-59f, 0x1.7123e8p-3f, -0x1.680a88p-3f, 0x1.5272e4p+1f,
     /* node 3049 x */
-    -0x1.65999ap-54f, 0x1.294422p+1f, -0x1.8b7c0ep+0f, -0x1.9e98cap-5f,
+    -0x0p+0f, 0x1.29684p+1f, -0x1.8c073ap+0f, -0x1.a0e31p-5f,
     /* node 3049 y */
-    -0x1.4cccccp-55f, -0x1.e558f8p-1f, 0x1.838e7ap+0f, -0x1.ae9d48p-4f,
+    -0x1.1cccccp-55f, -0x1.e5cf08p-1f, 0x1.83f256p+0f, -0x1.acbac4p-4f,
     /* node 3049 z */
-    -0x1.333334p-57f, 0x1.975432p-3f, -0x1.9f091ap-3f, 0x1.49efa8p+1f,
+    0x1.99999ap-59f, 0x1.977d2ap-3f, -0x1.9f7a2ap-3f, 0x1.49da6ap+1f,
     /* node 3050 x */
-    0x1p-56f, 0x1.27f93cp+1f, -0x1.8a2becp+0f, -0x1.4393bcp-3f,
+    0x1.2e6666p-54f, 0x1.280b06p+1f, -0x1.8a8ddep+0f, -0x1.448b52p-3f,
     /* node 3050 y */
-    0x1.c66666p-57f, -0x1.e59a82p-1f, 0x1.71cdf4p+0f, -0x1.677696p-4f,
+    0x1.ef3334p-55f, -0x1.e6046ap-1f, 0x1.7210c6p+0f, -0x1.66e422p-4f,
     /* node 3050 z */
-    -0x1.99999ap-59f, 0x1.933a5ep-3f, -0x1.72f834p-3f, 0x1.44a06ep+1f,
+    -0x1.333334p-56f, 0x1.9369e2p-3f, -0x1.740fccp-3f, 0x1.44823ap+1f,
     /* node 3051 x */
-    0x1.20999ap-53f, 0x1.2b3756p+1f, -0x1.91851ap+0f, -0x1.73750ep-4f,
+    0x1.efp-54f, 0x1.2b1974p+1f, -0x1.913f5cp+0f, -0x1.742c32p-4f,
     /* node 3051 y */
-    -0x1.85999ap-55f, -0x1.e5456ep-1f, 0x1.748f58p+0f, -0x1.9ee824p-4f,
+    -0x1.333334p-54f, -0x1.e515ccp-1f, 0x1.746968p+0f, -0x1.9f5096p-4f,
     /* node 3051 z */
-    -0x1.333334p-55f, 0x1.aed6c6p-3f, -0x1.b222fcp-3f, 0x1.442f92p+1f,
+    -0x1.666666p-57f, 0x1.ad85dcp-3f, -0x1.b07bfap-3f, 0x1.442952p+1f,
     /* node 3052 x */
-    0x1.6a8p-54f, 0x1.27867ap+1f, -0x1.840a1cp+0f, -0x1.3f1eb2p-7f,
+    0x1.5eccccp-58f, 0x1.279904p+1f, -0x1.8441dep+0f, -0x1.56bdc8p-7f,
     /* node 3052 y */
-    0x1.266666p-55f, -0x1.e6179ep-1f, 0x1.9b038ep+0f, -0x1.95e95ep-4f,
+    -0x1.2cccccp-58f, -0x1.e65a06p-1f, 0x1.9b1eap+0f, -0x1.953428p-4f,
     /* node 3052 z */
-    0x1.19999ap-56f, 0x1.77f4fcp-3f, -0x1.9060a2p-3f, 0x1.4f9ee6p+1f,
+    0x1p-57f, 0x1.76bbb6p-3f, -0x1.8edf5cp-3f, 0x1.4f9402p+1f,
     /* node 3053 x */
-    -0x1.58999ap-54f, 0x1.2adba6p+1f, -0x1.8deafap+0f, 0x1.7ebae8p-5f,
+    -0x1.e26666p-55f, 0x1.2ade9ep+1f, -0x1.8de2cp+0f, 0x1.7bb23cp-5f,
     /* node 3053 y */
-    -0x1.c2p-54f, -0x1.e624ap-1f, 0x1.986c58p+0f, -0x1.f369p-4f,
+    -0x1.bp-56f, -0x1.e5fc1ap-1f, 0x1.984bcap+0f, -0x1.f3f54cp-4f,
     /* node 3053 z */
-    0x1p-57f, 0x1.911474p-3f, -0x1.e02d48p-3f, 0x1.4c909ep+1f,
+    -0x0p+0f, 0x1.8fee1ep-3f, -0x1.de2056p-3f, 0x1.4c87ccp+1f,
     /* node 3054 x */
-    -0x1.4cbcccp-53f, 0x1.2ca23p+1f, -0x1.944b06p+0f, 0x1.733d44p-7f,
+    0x1.206666p-53f, 0x1.2cc224p+1f, -0x1.94be88p+0f, 0x1.62b5d8p-7f,
     /* node 3054 y */
-    -0x1.b73334p-54f, -0x1.e652fap-1f, 0x1.80ca68p+0f, -0x1.ecc554p-4f,
+    -0x1.28p-55f, -0x1.e70e7ep-1f, 0x1.814ffcp+0f, -0x1.ea8efap-4f,
     /* node 3054 z */
-    -0x1.8p-56f, 0x1.b44ba4p-3f, -0x1.e610ccp-3f, 0x1.47edfap+1f,
+    0x1p-57f, 0x1.b44adp-3f, -0x1.e68254p-3f, 0x1.47dc98p+1f,
     /* node 3055 x */
-    -0x1.38p-56f, 0x1.2f7038p+1f, -0x1.9de3dep+0f, 0x1.ea2c62p-5f,
+    0x1.74p-55f, 0x1.2f85f4p+1f, -0x1.9e374ap+0f, 0x1.e5a7dap-5f,
     /* node 3055 y */
-    -0x1.ep-56f, -0x1.e32c54p-1f, 0x1.80732ep+0f, -0x1.05348ap-3f,
+    0x1.bcccccp-56f, -0x1.e3ad3ep-1f, 0x1.80d47ep+0f, -0x1.048e88p-3f,
     /* node 3055 z */
-    -0x1.e66666p-56f, 0x1.b91616p-3f, -0x1.ffe89ap-3f, 0x1.469eb2p+1f,
+    0x1.19999ap-56f, 0x1.b886a6p-3f, -0x1.ffcc92p-3f, 0x1.468a64p+1f,
     /* node 3056 x */
-    0x1.b1999ap-54f, 0x1.2d1288p+1f, -0x1.95eeeap+0f, 0x1.9f94c4p-4f,
+    0x1.a9ccccp-53f, 0x1.2d19c8p+1f, -0x1.960182p+0f, 0x1.9dc524p-4f,
     /* node 3056 y */
-    -0x1.07999ap-54f, -0x1.e07506p-1f, 0x1.87ccecp+0f, -0x1.179ba2p-3f,
+    0x1.ep-56f, -0x1.e073d4p-1f, 0x1.87aa78p+0f, -0x1.17a9ccp-3f,
     /* node 3056 z */
-    -0x1.8p-56f, 0x1.a37764p-3f, -0x1.033956p-2f, 0x1.4992c2p+1f,
+    0x1.99999ap-57f, 0x1.a18a8cp-3f, -0x1.01e4c8p-2f, 0x1.49851p+1f,
     /* node 3057 x */
-    -0x1.77999ap-54f, 0x1.3213d6p+1f, -0x1.a541fap+0f, 0x1.c16b34p-4f,
+    0x1.05999ap-54f, 0x1.3224e2p+1f, -0x1.a587a8p+0f, 0x1.bee37p-4f,
     /* node 3057 y */
-    0x1.11999ap-55f, -0x1.e0b1bap-1f, 0x1.7dcb48p+0f, -0x1.1a7bd2p-3f,
+    -0x1.99999ap-64f, -0x1.e129d8p-1f, 0x1.7e24cep+0f, -0x1.19ec62p-3f,
     /* node 3057 z */
-    -0x1p-57f, 0x1.c3026ep-3f, -0x1.127846p-2f, 0x1.45cc16p+1f,
+    -0x1p-56f, 0x1.c1d4e6p-3f, -0x1.1295ccp-2f, 0x1.45becap+1f,
     /* node 3058 x */
-    0x1.fb6666p-56f, 0x1.31748p+1f, -0x1.a24264p+0f, 0x1.17f1bcp-6f,
+    -0x1.484cccp-55f, 0x1.31839cp+1f, -0x1.a2711cp+0f, 0x1.11208ap-6f,
     /* node 3058 y */
-    -0x1.366666p-55f, -0x1.e27104p-1f, 0x1.7127ecp+0f, -0x1.f9d52ep-4f,
+    -0x1.066666p-55f, -0x1.e2aac4p-1f, 0x1.71487ep+0f, -0x1.f90a6ap-4f,
     /* node 3058 z */
-    -0x1.266666p-55f, 0x1.cab18cp-3f, -0x1.ec9ceap-3f, 0x1.4401a8p+1f,
+    0x1.666666p-57f, 0x1.c84428p-3f, -0x1.e91644p-3f, 0x1.43fca2p+1f,
     /* node 3059 x */
-    0x1.88999ap-54f, 0x1.348e5ep+1f, -0x1.aa45c4p+0f, 0x1.19fc3p-4f,
+    0x1.85ccccp-54f, 0x1.349d9ap+1f, -0x1.aa6754p+0f, 0x1.18b432p-4f,
     /* node 3059 y */
-    -0x1.25999ap-55f, -0x1.e1ae3ap-1f, 0x1.71798p+0f, -0x1.102ba8p-3f,
+    -0x1.b7999ap-54f, -0x1.e1ebb4p-1f, 0x1.71ad2cp+0f, -0x1.0fc99p-3f,
     /* node 3059 z */
-    -0x1.99999ap-60f, 0x1.d83ca2p-3f, -0x1.0bac32p-2f, 0x1.434b6p+1f,
+    0x1.333334p-58f, 0x1.d6d55ep-3f, -0x1.0b3cd4p-2f, 0x1.433c18p+1f,
     /* node 3060 x */
-    -0x1.b66666p-54f, 0x1.2fed78p+1f, -0x1.9fffdap+0f, 0x1.3d1ee6p-3f,
+    -0x1.0b3334p-56f, 0x1.2fee5ap+1f, -0x1.9fe4aap+0f, 0x1.3c81d6p-3f,
     /* node 3060 y */
-    -0x1.966666p-55f, -0x1.de48f8p-1f, 0x1.807a0ep+0f, -0x1.2f94ep-3f,
+    -0x1.dd999ap-54f, -0x1.de5f8cp-1f, 0x1.806cp+0f, -0x1.2f7a22p-3f,
     /* node 3060 z */
-    -0x1.333334p-56f, 0x1.b1228ep-3f, -0x1.19a08ep-2f, 0x1.47127ap+1f,
+    0x1.99999ap-60f, 0x1.afc34cp-3f, -0x1.18c314p-2f, 0x1.4705b8p+1f,
     /* node 3061 x */
-    -0x1.88p-55f, 0x1.31c44p+1f, -0x1.a51116p+0f, 0x1.a7adep-3f,
+    -0x1.6b3334p-55f, 0x1.31c1e4p+1f, -0x1.a4eb98p+0f, 0x1.a6f60ep-3f,
     /* node 3061 y */
-    -0x1.6p-57f, -0x1.d673b8p-1f, 0x1.754e8ap+0f, -0x1.4054a2p-3f,
+    0x1.033334p-57f, -0x1.d672p-1f, 0x1.7514a8p+0f, -0x1.4041cep-3f,
     /* node 3061 z */
-    -0x1.333334p-58f, 0x1.c1761ap-3f, -0x1.33edfap-2f, 0x1.45a082p+1f,
+    -0x1.333334p-54f, 0x1.c00766p-3f, -0x1.330b5ep-2f, 0x1.4591bap+1f,
     /* node 3062 x */
-    -0x1.28p-56f, 0x1.33c108p+1f, -0x1.a889cp+0f, 0x1.44da2cp-3f,
+    0x1.5f999ap-54f, 0x1.33c7bep+1f, -0x1.a8ab5p+0f, 0x1.43d74ep-3f,
     /* node 3062 y */
-    -0x1.24p-55f, -0x1.da265ep-1f, 0x1.6f7fdcp+0f, -0x1.2b82f8p-3f,
+    -0x1.99999ap-63f, -0x1.da6ed4p-1f, 0x1.6fca2p+0f, -0x1.2b0facp-3f,
     /* node 3062 z */
-    -0x1.666666p-57f, 0x1.cf3428p-3f, -0x1.2a958p-2f, 0x1.4462dep+1f,
+    -0x1.99999ap-59f, 0x1.ce4276p-3f, -0x1.2aaf04p-2f, 0x1.445616p+1f,
     /* node 3063 x */
-    0x1.1cccccp-55f, 0x1.35dcbcp+1f, -0x1.b0264cp+0f, 0x1.a8a0e6p-3f,
+    0x1.4f3334p-54f, 0x1.35e588p+1f, -0x1.b03fbep+0f, 0x1.a7bf6p-3f,
     /* node 3063 y */
-    -0x1.1e6666p-56f, -0x1.d3f01cp-1f, 0x1.6a8988p+0f, -0x1.33d7a8p-3f,
+    0x1.433334p-56f, -0x1.d41792p-1f, 0x1.6abefp+0f, -0x1.33ceeap-3f,
     /* node 3063 z */
-    -0x1p-57f, 0x1.df0ca8p-3f, -0x1.356886p-2f, 0x1.42db7p+1f,
+    0x1.333334p-58f, 0x1.de0d08p-3f, -0x1.3574fap-2f, 0x1.42cc6ap+1f,
     /* node 3064 x */
-    0x1.ap-56f, 0x1.33efecp+1f, -0x1.ac7c32p+0f, 0x1.06d5fap-2f,
+    0x1.086666p-53f, 0x1.33f5a6p+1f, -0x1.ac6c8ep+0f, 0x1.063f84p-2f,
     /* node 3064 y */
-    -0x1.833334p-54f, -0x1.cf1b0cp-1f, 0x1.6e3076p+0f, -0x1.4582a4p-3f,
+    -0x1.85999ap-54f, -0x1.cf4118p-1f, 0x1.6e3442p+0f, -0x1.4588f8p-3f,
     /* node 3064 z */
-    -0x1.733334p-55f, 0x1.cff37p-3f, -0x1.3dcec8p-2f, 0x1.43cab8p+1f,
+    -0x1.e66666p-56f, 0x1.ce94dap-3f, -0x1.3d54c2p-2f, 0x1.43b808p+1f,
     /* node 3065 x */
-    -0x1.acccccp-56f, 0x1.37fd2ap+1f, -0x1.b79adap+0f, 0x1.01d888p-2f,
+    -0x1.a66666p-58f, 0x1.38008p+1f, -0x1.b76d6cp+0f, 0x1.01515ap-2f,
     /* node 3065 y */
-    0x1.126666p-55f, -0x1.cdfb1cp-1f, 0x1.6463acp+0f, -0x1.3809d6p-3f,
+    0x1.6cccccp-55f, -0x1.cdfda6p-1f, 0x1.6438fep+0f, -0x1.37ae7cp-3f,
     /* node 3065 z */
-    -0x1.e66666p-55f, 0x1.ebe4acp-3f, -0x1.416a74p-2f, 0x1.41dd9ep+1f,
+    -0x1.99999ap-56f, 0x1.eb1d2cp-3f, -0x1.4272c6p-2f, 0x1.41d552p+1f,
     /* node 3066 x */
-    0x1.a66666p-55f, 0x1.38867cp+1f, -0x1.b5bf8cp+0f, 0x1.4e7af6p-3f,
+    0x1.fcccccp-56f, 0x1.388bc4p+1f, -0x1.b5fc6ap+0f, 0x1.4d9882p-3f,
     /* node 3066 y */
-    -0x1.dcccccp-57f, -0x1.d72beap-1f, 0x1.6597b8p+0f, -0x1.251e0ap-3f,
+    -0x1.533334p-54f, -0x1.d775dcp-1f, 0x1.65de8cp+0f, -0x1.24af3ap-3f,
     /* node 3066 z */
-    0x1.ccccccp-57f, 0x1.f06f94p-3f, -0x1.314a3ap-2f, 0x1.419e84p+1f,
+    0x1.19999ap-55f, 0x1.ef7a56p-3f, -0x1.314c94p-2f, 0x1.418a32p+1f,
     /* node 3067 x */
-    -0x1.0e6666p-54f, 0x1.3a2c02p+1f, -0x1.bb8ba6p+0f, 0x1.a6ec1p-3f,
+    0x1.733334p-54f, 0x1.3a35dcp+1f, -0x1.bbfe7cp+0f, 0x1.a6514cp-3f,
     /* node 3067 y */
-    -0x1.4p-59f, -0x1.d1f468p-1f, 0x1.612b02p+0f, -0x1.2c1402p-3f,
+    -0x1.213334p-54f, -0x1.d2557ep-1f, 0x1.61d056p+0f, -0x1.2c28bap-3f,
     /* node 3067 z */
-    -0x1.59999ap-55f, 0x1.f7b5a8p-3f, -0x1.3c0646p-2f, 0x1.40ca4cp+1f,
+    -0x1.99999ap-59f, 0x1.f72b9cp-3f, -0x1.3aca78p-2f, 0x1.40b17p+1f,
     /* node 3071 x */
-    0x1.94ccccp-58f, 0x1.18698cp-2f, -0x1.5cde5cp-3f, 0x1.5472e4p-5f,
+    0x1.31999ap-57f, 0x1.186932p-2f, -0x1.59c3eap-3f, 0x1.5840d4p-5f,
     /* node 3071 y */
-    -0x1.9cp-56f, -0x1.ec558ap-3f, 0x1.e2ed1cp-3f, 0x1.b5df6cp-5f,
+    -0x1.333334p-58f, -0x1.ebffd2p-3f, 0x1.e48b9ap-3f, 0x1.b1e3b4p-5f,
     /* node 3071 z */
-    -0x1.19999ap-58f, -0x1.9f881ep-5f, 0x1.cfcadap-4f, 0x1.200a86p-2f,
+    -0x0p+0f, -0x1.a107ccp-5f, 0x1.d0385ap-4f, 0x1.20b32ep-2f,
     /* node 3072 x */
-    0x1.7cccccp-57f, 0x1.a4e9a6p-2f, -0x1.dc7c04p-3f, 0x1.799e72p-4f,
+    0x1.59999ap-57f, 0x1.a44bd6p-2f, -0x1.d51036p-3f, 0x1.78fdcp-4f,
     /* node 3072 y */
-    -0x1p-57f, -0x1.8cfa88p-2f, 0x1.a12eaep-2f, 0x1.7e151ep-4f,
+    -0x1.cp-58f, -0x1.904958p-2f, 0x1.a93ab2p-2f, 0x1.832258p-4f,
     /* node 3072 z */
-    -0x1.99999ap-62f, -0x1.1a3526p-4f, 0x1.429f56p-3f, 0x1.f4c33ap-2f,
+    -0x1p-59f, -0x1.19a046p-4f, 0x1.43cf96p-3f, 0x1.f5f212p-2f,
     /* node 3073 x */
-    0x1.19999ap-56f, 0x1.6e3ac4p-2f, -0x1.9e8794p-3f, 0x1.4c8fccp-4f,
+    0x1.b1999ap-57f, 0x1.6c6738p-2f, -0x1.9b5c1ep-3f, 0x1.45b104p-4f,
     /* node 3073 y */
-    0x1.f33334p-58f, -0x1.6537a6p-2f, 0x1.5d6eeep-2f, 0x1.356f0ap-4f,
+    -0x1.d0ccccp-56f, -0x1.65720ap-2f, 0x1.5c272p-2f, 0x1.2cd6e6p-4f,
     /* node 3073 z */
-    -0x1.8p-58f, -0x1.f966bap-5f, 0x1.32a5d6p-3f, 0x1.a54c96p-2f,
+    -0x1.99999ap-58f, -0x1.f661bap-5f, 0x1.332e2cp-3f, 0x1.a56882p-2f,
     /* node 3074 x */
-    -0x1.cp-61f, 0x1.9338e2p-3f, -0x1.04e2c8p-3f, 0x1.825dep-6f,
+    0x1.333334p-64f, 0x1.95bcf6p-3f, -0x1.06a916p-3f, 0x1.88fdd8p-6f,
     /* node 3074 y */
-    -0x1.59999ap-58f, -0x1.9b565ap-3f, 0x1.78025cp-3f, 0x1.cd6266p-6f,
+    -0x1.d5999ap-57f, -0x1.9b4814p-3f, 0x1.78bc0ap-3f, 0x1.bc2682p-6f,
     /* node 3074 z */
-    -0x1.266666p-58f, -0x1.169ae4p-5f, 0x1.70171p-4f, 0x1.c4fe0ep-3f,
+    -0x1.b33334p-59f, -0x1.2438dcp-5f, 0x1.742f4ap-4f, 0x1.c5dd8p-3f,
     /* node 3075 x */
-    0x1.ba999ap-59f, 0x1.1a759p-4f, -0x1.849c9p-5f, -0x1.84d3acp-9f,
+    -0x1.5a6666p-61f, 0x1.1b95d2p-4f, -0x1.847ca4p-5f, -0x1.633624p-9f,
     /* node 3075 y */
-    0x1.59999ap-63f, -0x1.cc4998p-7f, 0x1.72901ep-7f, -0x1.f31e4ep-8f,
+    -0x1.19999ap-61f, -0x1.c414cp-7f, 0x1.87e5fcp-7f, -0x1.fdb36ap-8f,
     /* node 3075 z */
-    -0x1.2p-60f, -0x1.7c52aep-8f, 0x1.dd4e4ep-7f, 0x1.66bc5ep-5f,
+    -0x1.4cccccp-62f, -0x1.a711f8p-8f, 0x1.e26282p-7f, 0x1.67c982p-5f,
     /* node 3080 x */
-    -0x1.8cccccp-57f, 0x1.de2a7cp-3f, -0x1.107c04p-3f, 0x1.be498cp-5f,
+    -0x1.29999ap-58f, 0x1.dee4b2p-3f, -0x1.12384p-3f, 0x1.be0c42p-5f,
     /* node 3080 y */
-    -0x1.466666p-59f, -0x1.72d66cp-3f, 0x1.5981eap-3f, 0x1.deb5ccp-5f,
+    -0x1.f33334p-60f, -0x1.729b32p-3f, 0x1.5a21fp-3f, 0x1.e162bcp-5f,
     /* node 3080 z */
-    0x1p-59f, -0x1.d2a72ep-5f, 0x1.0566aep-3f, 0x1.232b1p-2f,
+    -0x1.666666p-59f, -0x1.d4b0c4p-5f, 0x1.05f004p-3f, 0x1.237e06p-2f,
     /* node 3082 x */
-    0x1.866666p-55f, 0x1.4ae5a2p-1f, -0x1.3ef06ap-2f, 0x1.76ab86p-3f,
+    0x1.0cccccp-58f, 0x1.4ae0c4p-1f, -0x1.3f7ee8p-2f, 0x1.75c532p-3f,
     /* node 3082 y */
-    -0x1.bb3334p-56f, -0x1.241a6ep-1f, 0x1.48e0cap-1f, 0x1.293838p-3f,
+    -0x1.666666p-59f, -0x1.24f234p-1f, 0x1.495452p-1f, 0x1.291ddp-3f,
     /* node 3082 z */
-    -0x1.ccccccp-57f, -0x1.c10a1ap-5f, 0x1.869438p-3f, 0x1.e12774p-1f,
+    -0x1p-57f, -0x1.cb152ap-5f, 0x1.888458p-3f, 0x1.e179fep-1f,
     /* node 3083 x */
-    0x1.266666p-57f, 0x1.99d924p-1f, -0x1.6113dcp-2f, 0x1.d45904p-3f,
+    0x1.c4ccccp-55f, 0x1.99282ap-1f, -0x1.614024p-2f, 0x1.d432a4p-3f,
     /* node 3083 y */
-    -0x1.ap-58f, -0x1.5145acp-1f, 0x1.9fe5d8p-1f, 0x1.77cb7cp-3f,
+    -0x1.2f3334p-55f, -0x1.511bdep-1f, 0x1.9f619p-1f, 0x1.7ad868p-3f,
     /* node 3083 z */
-    -0x1.4p-56f, -0x1.f6fa3cp-5f, 0x1.cf8a84p-3f, 0x1.316176p+0f,
+    -0x1.19999ap-56f, -0x1.fc5e7cp-5f, 0x1.d21e9ep-3f, 0x1.312cb4p+0f,
     /* node 3084 x */
-    -0x1.733334p-56f, 0x1.7aeff4p-1f, -0x1.534d4cp-2f, 0x1.e3816ap-3f,
+    -0x1.a66666p-56f, 0x1.7b3e8ap-1f, -0x1.5344b8p-2f, 0x1.e2836p-3f,
     /* node 3084 y */
-    -0x1.0e6666p-55f, -0x1.37a59ap-1f, 0x1.686c36p-1f, 0x1.82645cp-3f,
+    -0x1.81999ap-56f, -0x1.38540cp-1f, 0x1.6aa252p-1f, 0x1.7fc7c8p-3f,
     /* node 3084 z */
-    -0x1.ccccccp-58f, -0x1.ff963ap-5f, 0x1.e537c6p-3f, 0x1.1c0558p+0f,
+    -0x1.333334p-57f, -0x1.fb28f6p-5f, 0x1.e3c446p-3f, 0x1.1c559p+0f,
     /* node 3085 x */
-    0x1.4p-57f, 0x1.34e552p-1f, -0x1.1f8a08p-2f, 0x1.898e28p-3f,
+    0x1.8cccccp-58f, 0x1.3547eap-1f, -0x1.1f593ap-2f, 0x1.8afe2ep-3f,
     /* node 3085 y */
-    0x1.266666p-59f, -0x1.127cb2p-1f, 0x1.2eb664p-1f, 0x1.3aa7ap-3f,
+    -0x1.8b3334p-55f, -0x1.12cdf6p-1f, 0x1.30cefp-1f, 0x1.3ad324p-3f,
     /* node 3085 z */
-    -0x1.ccccccp-57f, -0x1.1271e4p-4f, 0x1.a1996ep-3f, 0x1.bb0f34p-1f,
+    -0x1.333334p-59f, -0x1.0feb74p-4f, 0x1.a1defap-3f, 0x1.bbc7fap-1f,
     /* node 3086 x */
-    0x1p-58f, 0x1.0b4b78p-1f, -0x1.0b0c0ep-2f, 0x1.201c48p-3f,
+    0x1.48p-55f, 0x1.0b01ecp-1f, -0x1.0adf48p-2f, 0x1.1e7236p-3f,
     /* node 3086 y */
-    -0x1.2cccccp-55f, -0x1.dc7f36p-2f, 0x1.058f02p-1f, 0x1.115932p-3f,
+    -0x1.766666p-57f, -0x1.e21002p-2f, 0x1.09df46p-1f, 0x1.103bdap-3f,
     /* node 3086 z */
-    0x1.99999ap-62f, -0x1.038d02p-4f, 0x1.6ce14ep-3f, 0x1.665a7ap-1f,
+    -0x1.666666p-58f, -0x1.01d02ep-4f, 0x1.6a7558p-3f, 0x1.674cfap-1f,
     /* node 3087 x */
-    -0x1.3cccccp-56f, 0x1.e1dbacp-2f, -0x1.eac33ap-3f, 0x1.1e0de6p-3f,
+    0x1.c66666p-58f, 0x1.e11d72p-2f, -0x1.edbb6p-3f, 0x1.1d39f2p-3f,
     /* node 3087 y */
-    -0x1.566666p-57f, -0x1.b9fc4ep-2f, 0x1.d30574p-2f, 0x1.eb7e4cp-4f,
+    -0x1.933334p-57f, -0x1.bab93cp-2f, 0x1.d285e8p-2f, 0x1.eb0eacp-4f,
     /* node 3087 z */
-    -0x1.4cccccp-58f, -0x1.f95e4ep-5f, 0x1.6e84c4p-3f, 0x1.425eb2p-1f,
+    -0x1.59999ap-57f, -0x1.018e42p-4f, 0x1.6dc812p-3f, 0x1.4182f2p-1f,
     /* node 3088 x */
-    0x1.1p-56f, 0x1.1c6012p-1f, -0x1.0bd132p-2f, 0x1.87afcap-3f,
+    -0x1.333334p-61f, 0x1.1cedc2p-1f, -0x1.0bb1f8p-2f, 0x1.8b7c74p-3f,
     /* node 3088 y */
-    -0x1.6p-56f, -0x1.e01906p-2f, 0x1.fe2fbp-2f, 0x1.463ce8p-3f,
+    -0x1.133334p-56f, -0x1.de8cp-2f, 0x1.feb336p-2f, 0x1.4b81ccp-3f,
     /* node 3088 z */
-    -0x0p+0f, -0x1.0fb89ap-4f, 0x1.aed1a2p-3f, 0x1.93cc66p-1f,
+    -0x1.333334p-57f, -0x1.0e96cp-4f, 0x1.b3a816p-3f, 0x1.94d0a4p-1f,
     /* node 3089 x */
-    -0x1.033334p-57f, 0x1.b50034p-2f, -0x1.d3443ep-3f, 0x1.f801e4p-4f,
+    -0x1.8cccccp-59f, 0x1.b4a478p-2f, -0x1.d545fcp-3f, 0x1.fb83fap-4f,
     /* node 3089 y */
-    0x1.b33334p-59f, -0x1.787a76p-2f, 0x1.74413ap-2f, 0x1.a3db18p-4f,
+    -0x1.ccccccp-58f, -0x1.77b0b8p-2f, 0x1.7294fap-2f, 0x1.a1d886p-4f,
     /* node 3089 z */
-    -0x1p-59f, -0x1.115a5ep-4f, 0x1.714f72p-3f, 0x1.1f6056p-1f,
+    -0x1.19999ap-57f, -0x1.1196b8p-4f, 0x1.70709cp-3f, 0x1.1f4fa4p-1f,
     /* node 3090 x */
-    0x1.89999ap-56f, 0x1.ff42cep-2f, -0x1.d30b54p-3f, 0x1.924282p-3f,
+    -0x1.3cccccp-56f, 0x1.ff69e6p-2f, -0x1.d245ecp-3f, 0x1.923ad6p-3f,
     /* node 3090 y */
-    -0x1.4p-59f, -0x1.ac72c4p-2f, 0x1.c20edcp-2f, 0x1.4cb356p-3f,
+    -0x1.273334p-55f, -0x1.aca27cp-2f, 0x1.c35d16p-2f, 0x1.4bf928p-3f,
     /* node 3090 z */
-    -0x1.266666p-57f, -0x1.03cd98p-4f, 0x1.aa6cc2p-3f, 0x1.72c602p-1f,
+    -0x1.f33334p-57f, -0x1.04834ap-4f, 0x1.acdfc4p-3f, 0x1.72f9b2p-1f,
     /* node 3091 x */
-    -0x1.99999ap-64f, 0x1.7a1894p-2f, -0x1.892544p-3f, 0x1.d7d784p-4f,
+    0x1p-60f, 0x1.7a750ep-2f, -0x1.8760a4p-3f, 0x1.dbf762p-4f,
     /* node 3091 y */
-    -0x1.6cccccp-57f, -0x1.4ba856p-2f, 0x1.3da2eap-2f, 0x1.a7e3a6p-4f,
+    0x1.89999ap-57f, -0x1.4ba40ep-2f, 0x1.3f0514p-2f, 0x1.ad67c2p-4f,
     /* node 3091 z */
-    0x1.333334p-60f, -0x1.1fe45cp-4f, 0x1.625f4ep-3f, 0x1.e7ac3ap-2f,
+    -0x1.b33334p-58f, -0x1.21d164p-4f, 0x1.638b5p-3f, 0x1.e82c3p-2f,
     /* node 3092 x */
-    0x1.1b3334p-56f, 0x1.c80ad8p-2f, -0x1.a88f34p-3f, 0x1.69aed4p-3f,
+    0x1.09999ap-57f, 0x1.c80816p-2f, -0x1.a905fcp-3f, 0x1.69b2cap-3f,
     /* node 3092 y */
-    -0x1.3p-56f, -0x1.6bce6ep-2f, 0x1.6417ecp-2f, 0x1.18f5d4p-3f,
+    -0x1.933334p-57f, -0x1.6bf3eap-2f, 0x1.649a7ap-2f, 0x1.19d26cp-3f,
     /* node 3092 z */
-    -0x1.a66666p-57f, -0x1.1d8f9ap-4f, 0x1.a880bp-3f, 0x1.439fb2p-1f,
+    0x1.99999ap-59f, -0x1.1efc86p-4f, 0x1.a9e262p-3f, 0x1.4388f2p-1f,
     /* node 3093 x */
-    0x1.48p-55f, 0x1.405a64p-1f, -0x1.182818p-2f, 0x1.09d49ap-2f,
+    0x1.8p-59f, 0x1.40a8b8p-1f, -0x1.18d82cp-2f, 0x1.08cb04p-2f,
     /* node 3093 y */
-    0x1.a66666p-58f, -0x1.0356acp-1f, 0x1.183eaap-1f, 0x1.a977cap-3f,
+    -0x1.e66666p-58f, -0x1.03b45p-1f, 0x1.18223ap-1f, 0x1.a3c1ap-3f,
     /* node 3093 z */
-    -0x1.ccccccp-57f, -0x1.fc60b2p-5f, 0x1.dd4b5cp-3f, 0x1.ea2b52p-1f,
+    -0x1p-58f, -0x1.fc90bep-5f, 0x1.dbe698p-3f, 0x1.ea6488p-1f,
     /* node 3094 x */
-    0x1.c66666p-56f, 0x1.25ebep-1f, -0x1.061094p-2f, 0x1.f8341ep-3f,
+    0x1.ecccccp-57f, 0x1.2620a2p-1f, -0x1.06311ap-2f, 0x1.f7f20ap-3f,
     /* node 3094 y */
-    -0x1.333334p-59f, -0x1.d221a8p-2f, 0x1.d91aecp-2f, 0x1.5cbf14p-3f,
+    0x1p-59f, -0x1.d22a18p-2f, 0x1.d98c56p-2f, 0x1.5e1b7p-3f,
     /* node 3094 z */
-    -0x1.666666p-57f, -0x1.b7e754p-5f, 0x1.b2758cp-3f, 0x1.b8f764p-1f,
+    -0x1.ccccccp-57f, -0x1.b8d51ap-5f, 0x1.b40446p-3f, 0x1.b94ccp-1f,
     /* node 3095 x */
-    -0x1.0cccccp-57f, 0x1.219e56p-2f, -0x1.22eda2p-3f, 0x1.91831ep-4f,
+    -0x1p-59f, 0x1.21a0fp-2f, -0x1.236b72p-3f, 0x1.90f778p-4f,
     /* node 3095 y */
-    0x1.866666p-59f, -0x1.d3da54p-3f, 0x1.bc7d8p-3f, 0x1.6d5f6p-4f,
+    -0x1.033334p-58f, -0x1.d435eep-3f, 0x1.bc0396p-3f, 0x1.6b31dcp-4f,
     /* node 3095 z */
-    0x1.ccccccp-59f, -0x1.fc82ep-5f, 0x1.3e566ep-3f, 0x1.88ea24p-2f,
+    0x1.99999ap-62f, -0x1.fd4d6p-5f, 0x1.3eaefcp-3f, 0x1.890172p-2f,
     /* node 3096 x */
-    0x1.cp-57f, 0x1.5b0628p-2f, -0x1.3c8abp-3f, 0x1.2df96ep-3f,
+    -0x1.99999ap-59f, 0x1.5b4f3ap-2f, -0x1.3ce846p-3f, 0x1.2da9fcp-3f,
     /* node 3096 y */
-    -0x1.2cccccp-58f, -0x1.159b62p-2f, 0x1.02f31cp-2f, 0x1.c3b3dap-4f,
+    -0x1.59999ap-59f, -0x1.160892p-2f, 0x1.039d62p-2f, 0x1.c39588p-4f,
     /* node 3096 z */
-    0x1.99999ap-62f, -0x1.073a42p-4f, 0x1.67c4ep-3f, 0x1.e94d68p-2f,
+    -0x1.b33334p-58f, -0x1.08bc8ap-4f, 0x1.68d7e4p-3f, 0x1.e99dcep-2f,
     /* node 3099 x */
-    0x1.666666p-60f, 0x1.aaa63ep-2f, -0x1.64a9bap-3f, 0x1.bfa72ep-3f,
+    -0x1.8cccccp-58f, 0x1.aa849ap-2f, -0x1.64e44cp-3f, 0x1.befc1ap-3f,
     /* node 3099 y */
-    -0x1.08p-56f, -0x1.4247cap-2f, 0x1.2c4a92p-2f, 0x1.2442a8p-3f,
+    -0x1.21999ap-56f, -0x1.42846cp-2f, 0x1.2cc49ap-2f, 0x1.24b79ap-3f,
     /* node 3099 z */
-    -0x1.99999ap-59f, -0x1.de9a78p-5f, 0x1.9c5058p-3f, 0x1.45390ep-1f,
+    0x1.333334p-60f, -0x1.e0c5aep-5f, 0x1.9d892ep-3f, 0x1.456f24p-1f,
     /* node 3101 x */
-    0x1.74ccccp-55f, 0x1.147028p+0f, -0x1.e2ffdcp-2f, 0x1.1dc654p-2f,
+    0x1.a66666p-56f, 0x1.149292p+0f, -0x1.e23252p-2f, 0x1.1e43ap-2f,
     /* node 3101 y */
-    -0x1p-58f, -0x1.822c7ap-1f, 0x1.09116cp+0f, 0x1.a36928p-3f,
+    -0x1.8cccccp-57f, -0x1.8260d4p-1f, 0x1.09760ap+0f, 0x1.a3a524p-3f,
     /* node 3101 z */
-    -0x1.333334p-57f, -0x1.58164ep-5f, 0x1.b93abep-3f, 0x1.b07974p+0f,
+    0x1.99999ap-59f, -0x1.57dddcp-5f, 0x1.bce20cp-3f, 0x1.b0953p+0f,
     /* node 3102 x */
-    0x1.2cccccp-54f, 0x1.3c1256p+0f, -0x1.1b76bap-1f, 0x1.25475p-2f,
+    0x1.ba6666p-54f, 0x1.3bfb86p+0f, -0x1.1c6d18p-1f, 0x1.249efep-2f,
     /* node 3102 y */
-    -0x1.15999ap-55f, -0x1.998a24p-1f, 0x1.285234p+0f, 0x1.723716p-3f,
+    -0x1.c4ccccp-56f, -0x1.99f91cp-1f, 0x1.28301ep+0f, 0x1.7172ccp-3f,
     /* node 3102 z */
-    -0x1.19999ap-56f, -0x1.0b0fa4p-5f, 0x1.9e81aep-3f, 0x1.fca136p+0f,
+    -0x1.b33334p-56f, -0x1.0fd688p-5f, 0x1.9b8d56p-3f, 0x1.fc5bfp+0f,
     /* node 3103 x */
-    -0x1.99999ap-58f, 0x1.25a33ap+0f, -0x1.0383eep-1f, 0x1.51ec6ap-2f,
+    0x1.99999ap-56f, 0x1.258cacp+0f, -0x1.0423d4p-1f, 0x1.516262p-2f,
     /* node 3103 y */
-    -0x1.2p-57f, -0x1.817df2p-1f, 0x1.08afc4p+0f, 0x1.b8d85p-3f,
+    -0x1.533334p-56f, -0x1.81f4d6p-1f, 0x1.0886a6p+0f, 0x1.b864dap-3f,
     /* node 3103 z */
-    -0x1.666666p-56f, -0x1.6030cp-5f, 0x1.ba25cap-3f, 0x1.ce851ap+0f,
+    -0x1.333334p-58f, -0x1.67fb98p-5f, 0x1.b83444p-3f, 0x1.ce3f28p+0f,
     /* node 3104 x */
-    0x1.38p-55f, 0x1.022356p+0f, -0x1.b56cf2p-2f, 0x1.3caa8ep-2f,
+    -0x1.4p-58f, 0x1.0239c2p+0f, -0x1.b5907ap-2f, 0x1.3cd27p-2f,
     /* node 3104 y */
-    -0x1.0cccccp-58f, -0x1.6cecbap-1f, 0x1.d60a96p-1f, 0x1.c244f4p-3f,
+    -0x1.666666p-59f, -0x1.6d5ba8p-1f, 0x1.d6833p-1f, 0x1.c2f2eep-3f,
     /* node 3104 z */
-    -0x1.ccccccp-57f, -0x1.806b1ep-5f, 0x1.e5e29ep-3f, 0x1.95c5b8p+0f,
+    -0x1.666666p-57f, -0x1.802302p-5f, 0x1.e8768cp-3f, 0x1.95e6cap+0f,
     /* node 3105 x */
-    0x1.cp-58f, 0x1.da2b5ap-1f, -0x1.a09d7cp-2f, 0x1.f7114ap-3f,
+    -0x1.4p-57f, 0x1.da29b8p-1f, -0x1.a18db6p-2f, 0x1.f5f06ep-3f,
     /* node 3105 y */
-    -0x1.326666p-55f, -0x1.6da748p-1f, 0x1.cf1bp-1f, 0x1.7f4e1cp-3f,
+    0x1.54ccccp-56f, -0x1.6de62ap-1f, 0x1.cf6204p-1f, 0x1.7f01d8p-3f,
     /* node 3105 z */
-    0x1.333334p-58f, -0x1.e64b1ap-5f, 0x1.c9523ap-3f, 0x1.695fcep+0f,
+    -0x1.8p-57f, -0x1.e86e9p-5f, 0x1.c957e6p-3f, 0x1.695778p+0f,
     /* node 3106 x */
-    -0x1.3p-55f, 0x1.bbb474p-1f, -0x1.82ba22p-2f, 0x1.10f66cp-2f,
+    0x1.29999ap-56f, 0x1.bb3cb4p-1f, -0x1.82debp-2f, 0x1.10813ep-2f,
     /* node 3106 y */
-    -0x0p+0f, -0x1.53a472p-1f, 0x1.90d3b8p-1f, 0x1.9ba468p-3f,
+    0x1.3p-56f, -0x1.539512p-1f, 0x1.90bb88p-1f, 0x1.9c2148p-3f,
     /* node 3106 z */
-    -0x1p-57f, -0x1.e523dp-5f, 0x1.b812b4p-3f, 0x1.4fa572p+0f,
+    -0x1.99999ap-58f, -0x1.e99b48p-5f, 0x1.b93c54p-3f, 0x1.4f76bep+0f,
     /* node 3107 x */
-    0x1.533334p-56f, 0x1.e70b4ep-1f, -0x1.911b04p-2f, 0x1.5cf87ep-2f,
+    0x1.cp-58f, 0x1.e6a21cp-1f, -0x1.9129fp-2f, 0x1.5d081ep-2f,
     /* node 3107 y */
-    -0x1.ccccccp-56f, -0x1.5b9c3ep-1f, 0x1.a568b8p-1f, 0x1.dd07b2p-3f,
+    -0x1.e66666p-57f, -0x1.5bb5ep-1f, 0x1.a5a476p-1f, 0x1.deb432p-3f,
     /* node 3107 z */
-    -0x1.b33334p-57f, -0x1.acee96p-5f, 0x1.e99328p-3f, 0x1.7be4cep+0f,
+    -0x1.ccccccp-58f, -0x1.ae3b0cp-5f, 0x1.ebd964p-3f, 0x1.7bd5f2p+0f,
     /* node 3108 x */
-    -0x1.d9999ap-56f, 0x1.9c0e2ap-1f, -0x1.730424p-2f, 0x1.2134eep-2f,
+    0x1.7p-55f, 0x1.9ca638p-1f, -0x1.73cce6p-2f, 0x1.2118aep-2f,
     /* node 3108 y */
-    -0x1.1e6666p-55f, -0x1.409a26p-1f, 0x1.6fa0b4p-1f, 0x1.bb249ap-3f,
+    -0x1.e66666p-58f, -0x1.41580ap-1f, 0x1.711c1p-1f, 0x1.b850bap-3f,
     /* node 3108 z */
-    -0x1.333334p-57f, -0x1.e1f99cp-5f, 0x1.c275e8p-3f, 0x1.3ce3d2p+0f,
+    -0x1.733334p-56f, -0x1.e086bap-5f, 0x1.c1e3e6p-3f, 0x1.3d1d2p+0f,
     /* node 3109 x */
-    0x1.79999ap-57f, 0x1.cb37c2p-1f, -0x1.7c14c4p-2f, 0x1.74faaep-2f,
+    0x1.ep-57f, 0x1.cb762p-1f, -0x1.7d10b4p-2f, 0x1.74e76p-2f,
     /* node 3109 y */
-    -0x1p-57f, -0x1.3f9bcp-1f, 0x1.828974p-1f, 0x1.074954p-2f,
+    -0x1.25999ap-54f, -0x1.401206p-1f, 0x1.8351f8p-1f, 0x1.06ce1p-2f,
     /* node 3109 z */
-    -0x1.b33334p-56f, -0x1.8ce894p-5f, 0x1.f02e7p-3f, 0x1.67e3dp+0f,
+    -0x1.b33334p-57f, -0x1.8acf8p-5f, 0x1.f0d036p-3f, 0x1.6817aap+0f,
     /* node 3110 x */
-    -0x1.f9999ap-55f, 0x1.8475c8p-1f, -0x1.55a9c6p-2f, 0x1.2f15a6p-2f,
+    0x1.4cccccp-59f, 0x1.83c43cp-1f, -0x1.55f426p-2f, 0x1.2e971cp-2f,
     /* node 3110 y */
-    -0x1.c66666p-56f, -0x1.2903c2p-1f, 0x1.4c561ap-1f, 0x1.b97052p-3f,
+    0x1.033334p-56f, -0x1.286d98p-1f, 0x1.4ba882p-1f, 0x1.ba1176p-3f,
     /* node 3110 z */
-    -0x1.ccccccp-57f, -0x1.c25938p-5f, 0x1.d3ad74p-3f, 0x1.2a4d54p+0f,
+    -0x1.ccccccp-58f, -0x1.c5dfaap-5f, 0x1.d60978p-3f, 0x1.29eefep+0f,
     /* node 3111 x */
-    -0x1.19999ap-59f, 0x1.ac35ep-1f, -0x1.6f517cp-2f, 0x1.7e87ecp-2f,
+    -0x1.333334p-60f, 0x1.ac17dcp-1f, -0x1.6f8084p-2f, 0x1.7e948cp-2f,
     /* node 3111 y */
-    0x1.6p-57f, -0x1.2dfccap-1f, 0x1.51002ap-1f, 0x1.d662b2p-3f,
+    0x1.333334p-61f, -0x1.2dd0a6p-1f, 0x1.50ef6p-1f, 0x1.d88912p-3f,
     /* node 3111 z */
-    -0x1.0cccccp-56f, -0x1.7ff47ap-5f, 0x1.ef0e2ap-3f, 0x1.537c66p+0f,
+    -0x1.8cccccp-56f, -0x1.822188p-5f, 0x1.f09602p-3f, 0x1.5351f8p+0f,
     /* node 3112 x */
-    0x1.4cccccp-57f, 0x1.0417dcp+0f, -0x1.c09df6p-2f, 0x1.9ffa8cp-2f,
+    0x1.666666p-58f, 0x1.041182p+0f, -0x1.c0f5b8p-2f, 0x1.9f7d5ap-2f,
     /* node 3112 y */
-    -0x1.49999ap-56f, -0x1.56e928p-1f, 0x1.a463a2p-1f, 0x1.0464eep-2f,
+    -0x1.4p-57f, -0x1.57366ap-1f, 0x1.a4bfeep-1f, 0x1.045ae2p-2f,
     /* node 3112 z */
-    -0x1.333334p-57f, -0x1.61c1dap-5f, 0x1.c00cbcp-3f, 0x1.975ca4p+0f,
+    -0x1.b33334p-56f, -0x1.66f24ep-5f, 0x1.c1bb2cp-3f, 0x1.9733bap+0f,
     /* node 3113 x */
-    -0x1.2cccccp-56f, 0x1.e98fc6p-1f, -0x1.aa921ap-2f, 0x1.a63f98p-2f,
+    0x1.066666p-56f, 0x1.e96ba4p-1f, -0x1.aadc92p-2f, 0x1.a5b208p-2f,
     /* node 3113 y */
-    -0x1.1cp-54f, -0x1.447da6p-1f, 0x1.711ae6p-1f, 0x1.e19894p-3f,
+    -0x1.dp-55f, -0x1.44a386p-1f, 0x1.717d02p-1f, 0x1.e28b8ep-3f,
     /* node 3113 z */
-    -0x1.99999ap-60f, -0x1.7524ccp-5f, 0x1.c5665p-3f, 0x1.7fe462p+0f,
+    -0x1.ccccccp-58f, -0x1.78b102p-5f, 0x1.c626aep-3f, 0x1.7fcaa6p+0f,
     /* node 3114 x */
-    0x1.333334p-55f, 0x1.66fc4ep-1f, -0x1.33b472p-2f, 0x1.3f9b9cp-2f,
+    0x1.04ccccp-55f, 0x1.670a16p-1f, -0x1.33c1b2p-2f, 0x1.3fad48p-2f,
     /* node 3114 y */
-    0x1.333334p-61f, -0x1.09014ap-1f, 0x1.1c293ap-1f, 0x1.b2d2cap-3f,
+    -0x1.0cccccp-57f, -0x1.0936b6p-1f, 0x1.1cfd1ep-1f, 0x1.b3a2e8p-3f,
     /* node 3114 z */
-    -0x1.666666p-57f, -0x1.c16266p-5f, 0x1.e65d12p-3f, 0x1.147ef2p+0f,
+    -0x1p-58f, -0x1.c2d3acp-5f, 0x1.e7337ep-3f, 0x1.14aa5cp+0f,
     /* node 3115 x */
-    -0x1.c66666p-56f, 0x1.4ded4ap-1f, -0x1.14e93ep-2f, 0x1.513be2p-2f,
+    0x1.333334p-57f, 0x1.4de7aep-1f, -0x1.156cap-2f, 0x1.5101fap-2f,
     /* node 3115 y */
-    -0x1.3e6666p-55f, -0x1.ece21ap-2f, 0x1.019c2p-1f, 0x1.b26fbap-3f,
+    0x1.b33334p-57f, -0x1.ecde46p-2f, 0x1.01a186p-1f, 0x1.b23a86p-3f,
     /* node 3115 z */
-    -0x1.ccccccp-58f, -0x1.936208p-5f, 0x1.df432ap-3f, 0x1.0511e2p+0f,
+    -0x1p-56f, -0x1.93a516p-5f, 0x1.e01d08p-3f, 0x1.05216cp+0f,
     /* node 3116 x */
-    0x1p-55f, 0x1.932c4p-1f, -0x1.52c158p-2f, 0x1.92c4cp-2f,
+    0x1.333334p-59f, 0x1.92ffeap-1f, -0x1.53372cp-2f, 0x1.923ab8p-2f,
     /* node 3116 y */
-    -0x1.1cccccp-55f, -0x1.165e2p-1f, 0x1.2d4484p-1f, 0x1.f8bfcap-3f,
+    0x1.533334p-57f, -0x1.165f5p-1f, 0x1.2d3b0ep-1f, 0x1.f7acb4p-3f,
     /* node 3116 z */
-    -0x1.ccccccp-57f, -0x1.8dadcp-5f, 0x1.f0a096p-3f, 0x1.3ce878p+0f,
+    -0x1.99999ap-59f, -0x1.906d42p-5f, 0x1.f18734p-3f, 0x1.3cc9ap+0f,
     /* node 3117 x */
-    -0x1.8p-58f, 0x1.740972p-1f, -0x1.34b4e2p-2f, 0x1.9c63d4p-2f,
+    -0x1.266666p-57f, 0x1.73fadap-1f, -0x1.34db3cp-2f, 0x1.9c4ebap-2f,
     /* node 3117 y */
-    -0x1.733334p-57f, -0x1.fa9966p-2f, 0x1.01e3ecp-1f, 0x1.bb7bb4p-3f,
+    0x1.1p-56f, -0x1.faffaap-2f, 0x1.024a74p-1f, 0x1.bc326cp-3f,
     /* node 3117 z */
-    -0x1.99999ap-59f, -0x1.4b8ea6p-5f, 0x1.d7b268p-3f, 0x1.250198p+0f,
+    -0x1.e66666p-57f, -0x1.4c94aap-5f, 0x1.d8c156p-3f, 0x1.250e4cp+0f,
     /* node 3118 x */
-    0x1.5cccccp-56f, 0x1.359224p-1f, -0x1.f8e37p-3f, 0x1.4e9036p-2f,
+    -0x1.466666p-57f, 0x1.357dcap-1f, -0x1.f97384p-3f, 0x1.4e4baap-2f,
     /* node 3118 y */
-    -0x1.b33334p-58f, -0x1.b8734ep-2f, 0x1.b36544p-2f, 0x1.874b2ep-3f,
+    -0x1.1cccccp-57f, -0x1.b90a08p-2f, 0x1.b43c9ep-2f, 0x1.87a088p-3f,
     /* node 3118 z */
-    -0x1.99999ap-60f, -0x1.b9c6d8p-5f, 0x1.d2ea4ap-3f, 0x1.dcd7f8p-1f,
+    0x1.333334p-59f, -0x1.bb6ab4p-5f, 0x1.d40bdcp-3f, 0x1.dd079ep-1f,
     /* node 3119 x */
-    0x1.1p-55f, 0x1.5a3ccap-1f, -0x1.1645f4p-2f, 0x1.afa9f8p-2f,
+    0x1.99999ap-59f, 0x1.5a2074p-1f, -0x1.16a0c8p-2f, 0x1.af43f4p-2f,
     /* node 3119 y */
-    -0x1.d33334p-56f, -0x1.c5d61ep-2f, 0x1.bc2c4ap-2f, 0x1.c7fb4ep-3f,
+    -0x1.333334p-61f, -0x1.c62824p-2f, 0x1.bc9996p-2f, 0x1.c791c4p-3f,
     /* node 3119 z */
-    -0x1.4cccccp-57f, -0x1.208fc6p-5f, 0x1.cde302p-3f, 0x1.109218p+0f,
+    0x1.99999ap-58f, -0x1.20a0d2p-5f, 0x1.ce9b1p-3f, 0x1.109fb4p+0f,
     /* node 3120 x */
-    0x1.f33334p-57f, 0x1.b5565ap-1f, -0x1.7ce832p-2f, 0x1.d0d67p-2f,
+    -0x1.bp-55f, 0x1.b54c4cp-1f, -0x1.7ccf4ep-2f, 0x1.d0d66p-2f,
     /* node 3120 y */
-    -0x1.b33334p-59f, -0x1.17f228p-1f, 0x1.23af7p-1f, 0x1.e5d32ep-3f,
+    -0x1.69999ap-55f, -0x1.180accp-1f, 0x1.244d78p-1f, 0x1.e817a6p-3f,
     /* node 3120 z */
-    -0x1.666666p-58f, -0x1.11bf54p-5f, 0x1.ca7c2ep-3f, 0x1.579a6ep+0f,
+    -0x1.8cccccp-56f, -0x1.126aa8p-5f, 0x1.cbdba8p-3f, 0x1.57c32ap+0f,
     /* node 3121 x */
-    0x1.cp-57f, 0x1.9be47cp-1f, -0x1.575a7cp-2f, 0x1.ef472cp-2f,
+    0x1.166666p-54f, 0x1.9be326p-1f, -0x1.579ca6p-2f, 0x1.efab18p-2f,
     /* node 3121 y */
-    -0x1.0e6666p-55f, -0x1.f20496p-2f, 0x1.fcb958p-2f, 0x1.018874p-2f,
+    -0x1.dp-56f, -0x1.f21e0cp-2f, 0x1.fcf0c8p-2f, 0x1.0138acp-2f,
     /* node 3121 z */
-    -0x1.8p-57f, -0x1.08e512p-5f, 0x1.c7b5e4p-3f, 0x1.3f9976p+0f,
+    -0x1.99999ap-57f, -0x1.0524ccp-5f, 0x1.c898a4p-3f, 0x1.3fcaf4p+0f,
     /* node 3122 x */
-    -0x1.acccccp-57f, 0x1.f9180cp-2f, -0x1.8cd9c8p-3f, 0x1.3dbc84p-2f,
+    -0x1.99999ap-62f, 0x1.f8bd2ap-2f, -0x1.8ce3bcp-3f, 0x1.3d76bp-2f,
     /* node 3122 y */
-    0x1.99999ap-59f, -0x1.65471ep-2f, 0x1.4a05bap-2f, 0x1.63664p-3f,
+    -0x1.fcccccp-57f, -0x1.656c5cp-2f, 0x1.4a0eb4p-2f, 0x1.635d1cp-3f,
     /* node 3122 z */
-    -0x0p+0f, -0x1.a870ap-5f, 0x1.b7ebbcp-3f, 0x1.911332p-1f,
+    -0x1.99999ap-59f, -0x1.a8d63cp-5f, 0x1.b8c35ep-3f, 0x1.913322p-1f,
     /* node 3123 x */
-    -0x1.066666p-56f, 0x1.2d1e5ap-1f, -0x1.c8f3dap-3f, 0x1.a36596p-2f,
+    -0x1p-56f, 0x1.2cecacp-1f, -0x1.c8345p-3f, 0x1.a3751ep-2f,
     /* node 3123 y */
-    -0x1.6cccccp-56f, -0x1.77dfe8p-2f, 0x1.5c54eep-2f, 0x1.94a2eap-3f,
+    -0x1.4cccccp-57f, -0x1.77de3p-2f, 0x1.5d1aaap-2f, 0x1.966f3cp-3f,
     /* node 3123 z */
-    -0x1.99999ap-58f, -0x1.47e59ep-5f, 0x1.c4d1e2p-3f, 0x1.d9cc14p-1f,
+    -0x1.4cccccp-57f, -0x1.49d196p-5f, 0x1.c6491ap-3f, 0x1.d9f81p-1f,
     /* node 3126 x */
-    -0x1.b33334p-58f, 0x1.4c30dcp-1f, -0x1.f4ea6ap-3f, 0x1.03730cp-1f,
+    -0x1p-55f, 0x1.4bce74p-1f, -0x1.f5bbaep-3f, 0x1.02e2bep-1f,
     /* node 3126 y */
-    0x1.e66666p-59f, -0x1.82ce7p-2f, 0x1.5d87a6p-2f, 0x1.bb4fe6p-3f,
+    -0x1.99999ap-58f, -0x1.82f47ap-2f, 0x1.5ce9a6p-2f, 0x1.b90b68p-3f,
     /* node 3126 z */
-    -0x1.99999ap-60f, -0x1.89f4f4p-6f, 0x1.ab61eep-3f, 0x1.06a502p+0f,
+    -0x1.333334p-57f, -0x1.8f98e2p-6f, 0x1.ac1434p-3f, 0x1.0689cep+0f,
     /* node 3128 x */
-    -0x1.e66666p-59f, 0x1.c73066p+0f, -0x1.68c9acp-1f, 0x1.7fcbd2p-2f,
+    0x1.e9999ap-55f, 0x1.c74e9ap+0f, -0x1.695ceep-1f, 0x1.80ac3p-2f,
     /* node 3128 y */
-    0x1.433334p-57f, -0x1.b11cecp-1f, 0x1.aa3734p+0f, 0x1.6e281ap-4f,
+    -0x1.8d3334p-55f, -0x1.b09972p-1f, 0x1.aa0544p+0f, 0x1.757f3cp-4f,
     /* node 3128 z */
-    -0x1.666666p-57f, 0x1.d29aeap-6f, 0x1.04d34ap-4f, 0x1.6aea12p+1f,
+    -0x1.19999ap-55f, 0x1.d83626p-6f, 0x1.0342eap-4f, 0x1.6a95ccp+1f,
     /* node 3129 x */
-    0x1.766666p-54f, 0x1.06cb1ep+1f, -0x1.a55d0ap-1f, 0x1.7ba7e4p-2f,
+    0x1.34ccccp-55f, 0x1.06d9fcp+1f, -0x1.a5d76p-1f, 0x1.7ba8bp-2f,
     /* node 3129 y */
-    -0x1.b3p-56f, -0x1.be4062p-1f, 0x1.efa164p+0f, 0x1.89927ap-7f,
+    -0x1.5p-59f, -0x1.be8b86p-1f, 0x1.ef982cp+0f, 0x1.915ae2p-7f,
     /* node 3129 z */
-    -0x1.99999ap-58f, 0x1.8a2d9ap-5f, -0x1.751afp-5f, 0x1.9e761ep+1f,
+    -0x1p-56f, 0x1.8aca8ep-5f, -0x1.746a3ep-5f, 0x1.9e7ac6p+1f,
     /* node 3130 x */
-    -0x1.266666p-57f, 0x1.d0b77ep+0f, -0x1.83ca5ep-1f, 0x1.be99c4p-2f,
+    -0x1.ap-55f, 0x1.d038a4p+0f, -0x1.846cfep-1f, 0x1.bd57b2p-2f,
     /* node 3130 y */
-    -0x1.15999ap-55f, -0x1.a76b96p-1f, 0x1.9741e4p+0f, 0x1.6ab05ap-4f,
+    0x1.c1999ap-56f, -0x1.a943d6p-1f, 0x1.9736a4p+0f, 0x1.610daep-4f,
     /* node 3130 z */
-    -0x1.266666p-55f, 0x1.822448p-5f, 0x1.2496ap-5f, 0x1.708d4p+1f,
+    -0x1p-55f, 0x1.7d9e92p-5f, 0x1.28b78p-5f, 0x1.707d9ap+1f,
     /* node 3131 x */
-    0x1.d66666p-55f, 0x1.8acc5cp+0f, -0x1.4a3516p-1f, 0x1.a73166p-2f,
+    -0x1.666666p-57f, 0x1.89bc26p+0f, -0x1.4becbcp-1f, 0x1.a34e5cp-2f,
     /* node 3131 y */
-    0x1.666666p-58f, -0x1.95337cp-1f, 0x1.5cbc9ap+0f, 0x1.791de2p-3f,
+    -0x1.166666p-57f, -0x1.97934p-1f, 0x1.5bdf84p+0f, 0x1.6f95ccp-3f,
     /* node 3131 z */
-    -0x1.19999ap-55f, 0x1.8cc49ep-6f, 0x1.208f28p-3f, 0x1.406334p+1f,
+    -0x1.99999ap-59f, 0x1.884cecp-6f, 0x1.1b87fp-3f, 0x1.403d2cp+1f,
     /* node 3132 x */
-    -0x1.ap-56f, 0x1.7498c6p+0f, -0x1.430dcp-1f, 0x1.5b3e2cp-2f,
+    0x1.0a6666p-54f, 0x1.74fc0ep+0f, -0x1.417856p-1f, 0x1.5c70dcp-2f,
     /* node 3132 y */
-    -0x1.666666p-57f, -0x1.a61d5p-1f, 0x1.58fd9p+0f, 0x1.4157bap-3f,
+    -0x1.4p-58f, -0x1.a5cdb6p-1f, 0x1.5aaef2p+0f, 0x1.45055p-3f,
     /* node 3132 z */
-    -0x1.333334p-58f, -0x1.d82f92p-7f, 0x1.127438p-3f, 0x1.2ae8c4p+1f,
+    -0x1.99999ap-58f, -0x1.986cb6p-7f, 0x1.1bb948p-3f, 0x1.2b4e76p+1f,
     /* node 3133 x */
-    0x1.666666p-58f, 0x1.543744p+0f, -0x1.2d451p-1f, 0x1.824b62p-2f,
+    0x1.c33334p-55f, 0x1.54a92p+0f, -0x1.2c681ap-1f, 0x1.83c05p-2f,
     /* node 3133 y */
-    -0x1.ab3334p-55f, -0x1.8c9ff6p-1f, 0x1.2779c8p+0f, 0x1.a7f69p-3f,
+    -0x1p-60f, -0x1.8cc4ep-1f, 0x1.2847bcp+0f, 0x1.a9e598p-3f,
     /* node 3133 z */
-    -0x1.e66666p-56f, -0x1.e5b9a4p-7f, 0x1.73761ep-3f, 0x1.0faf76p+1f,
+    -0x1.99999ap-59f, -0x1.d21ffap-7f, 0x1.7a21a6p-3f, 0x1.0fd366p+1f,
     /* node 3134 x */
-    0x1.9p-55f, 0x1.642142p+0f, -0x1.37ce06p-1f, 0x1.c509acp-2f,
+    0x1.ep-55f, 0x1.6432f6p+0f, -0x1.384644p-1f, 0x1.c48e76p-2f,
     /* node 3134 y */
-    -0x1.066666p-56f, -0x1.7e0e2cp-1f, 0x1.196326p+0f, 0x1.d45ddcp-3f,
+    0x1.8cccccp-58f, -0x1.7db9dcp-1f, 0x1.18f8c6p+0f, 0x1.d5bbfap-3f,
     /* node 3134 z */
-    -0x1.666666p-57f, 0x1.7b566ep-8f, 0x1.6563dp-3f, 0x1.1d1204p+1f,
+    0x1.333334p-57f, 0x1.37f8ccp-8f, 0x1.61152cp-3f, 0x1.1ccc8p+1f,
     /* node 3135 x */
-    0x1.f33334p-55f, 0x1.38e93cp+0f, -0x1.118b08p-1f, 0x1.a5e912p-2f,
+    0x1.233334p-54f, 0x1.391ea2p+0f, -0x1.114c4ep-1f, 0x1.a694c6p-2f,
     /* node 3135 y */
-    -0x1.f66666p-56f, -0x1.757a9ap-1f, 0x1.fe349ap-1f, 0x1.f15e8p-3f,
+    -0x1.cp-57f, -0x1.752e6p-1f, 0x1.ff5d4ap-1f, 0x1.f3d698p-3f,
     /* node 3135 z */
-    0x1.19999ap-56f, -0x1.0f7516p-6f, 0x1.a947a6p-3f, 0x1.f51ef8p+0f,
+    -0x1.99999ap-60f, -0x1.09f4bep-6f, 0x1.ace3f2p-3f, 0x1.f54328p+0f,
     /* node 3136 x */
-    0x1.6p-56f, 0x1.4b4306p+0f, -0x1.234472p-1f, 0x1.ef0b88p-2f,
+    0x1.8p-57f, 0x1.4b0416p+0f, -0x1.239ce2p-1f, 0x1.eda06cp-2f,
     /* node 3136 y */
-    -0x1.1cccccp-55f, -0x1.71bda2p-1f, 0x1.ed6d28p-1f, 0x1.c4ea4ap-3f,
+    -0x1.bp-56f, -0x1.7273dp-1f, 0x1.edb096p-1f, 0x1.c3352ep-3f,
     /* node 3136 z */
-    -0x1.ccccccp-57f, -0x1.0d5dcep-10f, 0x1.64db16p-3f, 0x1.07593p+1f,
+    -0x1.99999ap-59f, -0x1.36851p-10f, 0x1.6389bep-3f, 0x1.074bf8p+1f,
     /* node 3137 x */
-    0x1.d33334p-55f, 0x1.26bd86p+0f, -0x1.041f9p-1f, 0x1.b7ee0ep-2f,
+    -0x1.5cccccp-54f, 0x1.26beaep+0f, -0x1.044ccp-1f, 0x1.b77bf4p-2f,
     /* node 3137 y */
-    -0x1.066666p-56f, -0x1.65fe1cp-1f, 0x1.c48c42p-1f, 0x1.000f8ep-2f,
+    -0x1.9cccccp-56f, -0x1.6635e2p-1f, 0x1.c51898p-1f, 0x1.00336ep-2f,
     /* node 3137 z */
-    0x1.666666p-57f, -0x1.1006cep-5f, 0x1.b3d0a2p-3f, 0x1.ce77e6p+0f,
+    -0x1p-57f, -0x1.1096bp-5f, 0x1.b6ba66p-3f, 0x1.ce787ap+0f,
     /* node 3138 x */
-    0x1.b33334p-58f, 0x1.36058p+0f, -0x1.1175ccp-1f, 0x1.062244p-1f,
+    0x1.266666p-57f, 0x1.35f0a4p+0f, -0x1.118718p-1f, 0x1.05c748p-1f,
     /* node 3138 y */
-    -0x1.d33334p-57f, -0x1.586734p-1f, 0x1.b2c074p-1f, 0x1.011864p-2f,
+    -0x1.dp-55f, -0x1.584edep-1f, 0x1.b2e16ep-1f, 0x1.018546p-2f,
     /* node 3138 z */
-    -0x1.b33334p-56f, -0x1.d852c6p-10f, 0x1.810d2cp-3f, 0x1.ea2ffcp+0f,
+    -0x1.99999ap-59f, -0x1.0c573cp-9f, 0x1.81dea8p-3f, 0x1.ea24b4p+0f,
     /* node 3139 x */
-    0x1.ap-55f, 0x1.6f92cap+0f, -0x1.4e5adep-1f, 0x1.0310aap-1f,
+    -0x1.ccccccp-56f, 0x1.6f5662p+0f, -0x1.4e8b5p-1f, 0x1.02bd72p-1f,
     /* node 3139 y */
-    -0x1.04ccccp-54f, -0x1.7d5e2cp-1f, 0x1.0be6ap+0f, 0x1.8859a8p-3f,
+    0x1.1cccccp-56f, -0x1.7e357cp-1f, 0x1.0c70b8p+0f, 0x1.882994p-3f,
     /* node 3139 z */
-    0x1p-57f, 0x1.d26c56p-6f, 0x1.10849cp-3f, 0x1.27dc64p+1f,
+    0x1p-57f, 0x1.d2433ep-6f, 0x1.11eae8p-3f, 0x1.27f30ep+1f,
     /* node 3140 x */
-    0x1.133334p-56f, 0x1.575a92p+0f, -0x1.383f0cp-1f, 0x1.16874p-1f,
+    -0x1.5p-55f, 0x1.576708p+0f, -0x1.3880b8p-1f, 0x1.167ec4p-1f,
     /* node 3140 y */
-    -0x1.666666p-58f, -0x1.6546eap-1f, 0x1.d42948p-1f, 0x1.ba5d8cp-3f,
+    -0x1.8cccccp-57f, -0x1.6584cep-1f, 0x1.d4b258p-1f, 0x1.ba6ae4p-3f,
     /* node 3140 z */
-    0x1.99999ap-58f, 0x1.cc3164p-7f, 0x1.272004p-3f, 0x1.0f1c34p+1f,
+    -0x1.4cccccp-56f, 0x1.cbb2ap-7f, 0x1.27a64p-3f, 0x1.0f21d2p+1f,
     /* node 3141 x */
-    0x1.38p-54f, 0x1.1555b8p+0f, -0x1.e8552ap-2f, 0x1.d953aap-2f,
+    -0x1.61999ap-54f, 0x1.155accp+0f, -0x1.e89c0ep-2f, 0x1.d8f218p-2f,
     /* node 3141 y */
-    -0x1.7p-55f, -0x1.51a838p-1f, 0x1.9647e4p-1f, 0x1.ff95fp-3f,
+    0x1.266666p-58f, -0x1.51c862p-1f, 0x1.96851cp-1f, 0x1.ffdc6ep-3f,
     /* node 3141 z */
-    -0x1.8p-56f, -0x1.009a66p-5f, 0x1.a71e4cp-3f, 0x1.b28af6p+0f,
+    -0x1.666666p-56f, -0x1.01c72cp-5f, 0x1.a90a18p-3f, 0x1.b291b6p+0f,
     /* node 3142 x */
-    0x1.433334p-55f, 0x1.04f9c2p+0f, -0x1.ce178ep-2f, 0x1.f2803p-2f,
+    0x1.0cccccp-54f, 0x1.04c85ep+0f, -0x1.ce25bcp-2f, 0x1.f17452p-2f,
     /* node 3142 y */
-    -0x1.266666p-55f, -0x1.3dd518p-1f, 0x1.66c32cp-1f, 0x1.ed4344p-3f,
+    -0x1.01999ap-55f, -0x1.3dea14p-1f, 0x1.6713c6p-1f, 0x1.ed076ap-3f,
     /* node 3142 z */
-    -0x1p-56f, -0x1.c8a8d2p-6f, 0x1.af48d8p-3f, 0x1.9a4e1ap+0f,
+    -0x1.99999ap-57f, -0x1.cc7782p-6f, 0x1.b0806p-3f, 0x1.9a4be4p+0f,
     /* node 3143 x */
-    -0x1.266666p-57f, 0x1.2581a6p+0f, -0x1.064e54p-1f, 0x1.0f2be6p-1f,
+    -0x1.e66666p-55f, 0x1.25a144p+0f, -0x1.06744ap-1f, 0x1.0f16d8p-1f,
     /* node 3143 y */
-    -0x1.51999ap-55f, -0x1.4d099ap-1f, 0x1.8598dp-1f, 0x1.d764bep-3f,
+    0x1.466666p-57f, -0x1.4d870cp-1f, 0x1.85f956p-1f, 0x1.d619d8p-3f,
     /* node 3143 z */
-    -0x1.333334p-56f, -0x1.414264p-8f, 0x1.7d0d76p-3f, 0x1.cbf2f6p+0f,
+    -0x1.19999ap-56f, -0x1.3b871p-8f, 0x1.7e61aap-3f, 0x1.cc146ep+0f,
     /* node 3144 x */
-    0x1.e66666p-57f, 0x1.15543ep+0f, -0x1.f6d944p-2f, 0x1.1c9d2cp-1f,
+    0x1.666666p-55f, 0x1.155baap+0f, -0x1.f6c0e4p-2f, 0x1.1c875ep-1f,
     /* node 3144 y */
-    -0x1.833334p-55f, -0x1.3462d6p-1f, 0x1.56deb4p-1f, 0x1.ff4c3cp-3f,
+    -0x1.34ccccp-55f, -0x1.343d1ap-1f, 0x1.574c98p-1f, 0x1.007d0ep-2f,
     /* node 3144 z */
-    -0x1.333334p-57f, -0x1.29f254p-8f, 0x1.7e38e8p-3f, 0x1.af6c46p+0f,
+    -0x1p-56f, -0x1.289af2p-8f, 0x1.80406cp-3f, 0x1.af82ep+0f,
     /* node 3145 x */
-    0x1.acccccp-56f, 0x1.f4d056p-1f, -0x1.b7073ap-2f, 0x1.0a76ep-1f,
+    -0x1.d33334p-56f, 0x1.f4989p-1f, -0x1.b71decp-2f, 0x1.0a04eap-1f,
     /* node 3145 y */
-    -0x1.2cccccp-56f, -0x1.29411ep-1f, 0x1.41b0c8p-1f, 0x1.fffef4p-3f,
+    -0x1.f9999ap-57f, -0x1.294d58p-1f, 0x1.4225ccp-1f, 0x1.00c23ap-2f,
     /* node 3145 z */
-    -0x1.333334p-56f, -0x1.25706cp-6f, 0x1.aee89ap-3f, 0x1.88e3dap+0f,
+    -0x1p-57f, -0x1.29a82cp-6f, 0x1.afc492p-3f, 0x1.88dbfp+0f,
     /* node 3146 x */
-    0x1.d9999ap-57f, 0x1.07df92p+0f, -0x1.de45e6p-2f, 0x1.2a7f1cp-1f,
+    0x1.99999ap-57f, 0x1.07e154p+0f, -0x1.dea1cap-2f, 0x1.2a725cp-1f,
     /* node 3146 y */
-    -0x1.44ccccp-55f, -0x1.22127ap-1f, 0x1.3168aep-1f, 0x1.f3c23ap-3f,
+    -0x1.366666p-56f, -0x1.21ee94p-1f, 0x1.313256p-1f, 0x1.f4056cp-3f,
     /* node 3146 z */
-    -0x1.333334p-57f, -0x1.bd2692p-8f, 0x1.7daeccp-3f, 0x1.97799cp+0f,
+    -0x1p-56f, -0x1.9d41c8p-8f, 0x1.7e5644p-3f, 0x1.978fb6p+0f,
     /* node 3147 x */
-    0x1.39999ap-56f, 0x1.32cd64p+0f, -0x1.1d2c84p-1f, 0x1.357042p-1f,
+    0x1.4p-56f, 0x1.3341c4p+0f, -0x1.1d48eap-1f, 0x1.35d46p-1f,
     /* node 3147 y */
-    -0x1.d9999ap-57f, -0x1.4117dap-1f, 0x1.6e69aep-1f, 0x1.dca7cp-3f,
+    -0x1.866666p-55f, -0x1.416ae4p-1f, 0x1.6f3334p-1f, 0x1.dbcbaap-3f,
     /* node 3147 z */
-    -0x1.99999ap-56f, 0x1.e5759ep-7f, 0x1.3d6d7ep-3f, 0x1.de5d38p+0f,
+    -0x1.4cccccp-56f, 0x1.f049d4p-7f, 0x1.3d5cb4p-3f, 0x1.de602p+0f,
     /* node 3148 x */
-    0x1.c66666p-56f, 0x1.24b564p+0f, -0x1.103676p-1f, 0x1.42f19ap-1f,
+    -0x1.6cccccp-54f, 0x1.24508ap+0f, -0x1.10371ep-1f, 0x1.4259f6p-1f,
     /* node 3148 y */
-    -0x1.29999ap-56f, -0x1.32806ep-1f, 0x1.4af62ep-1f, 0x1.d92186p-3f,
+    0x1.b33334p-56f, -0x1.32471ap-1f, 0x1.49efc2p-1f, 0x1.d8981cp-3f,
     /* node 3148 z */
-    -0x1.99999ap-59f, 0x1.83bffep-7f, 0x1.4449b6p-3f, 0x1.bf6564p+0f,
+    0x1.333334p-57f, 0x1.715052p-7f, 0x1.469414p-3f, 0x1.bf0428p+0f,
     /* node 3149 x */
-    -0x1.666666p-58f, 0x1.dce598p-1f, -0x1.9d75f4p-2f, 0x1.19038p-1f,
+    0x1.19999ap-57f, 0x1.dc8542p-1f, -0x1.9db614p-2f, 0x1.1877f8p-1f,
     /* node 3149 y */
-    -0x1.8p-59f, -0x1.10003ep-1f, 0x1.1cc18ep-1f, 0x1.06330ap-2f,
+    -0x1.d33334p-57f, -0x1.0fecd6p-1f, 0x1.1c9138p-1f, 0x1.058e4ep-2f,
     /* node 3149 z */
-    -0x1.99999ap-56f, -0x1.73dcc4p-7f, 0x1.ab8afap-3f, 0x1.726a8cp+0f,
+    -0x1.ccccccp-58f, -0x1.751c66p-7f, 0x1.ac3ae8p-3f, 0x1.723f04p+0f,
     /* node 3150 x */
-    0x1.e66666p-57f, 0x1.bf054ap-1f, -0x1.8097f4p-2f, 0x1.211ef4p-1f,
+    -0x1.8cccccp-57f, 0x1.befa1ep-1f, -0x1.80575p-2f, 0x1.20d75cp-1f,
     /* node 3150 y */
-    -0x1.766666p-56f, -0x1.fc1d5ap-2f, 0x1.f07d0ep-2f, 0x1.d9f9b2p-3f,
+    -0x1.933334p-57f, -0x1.fd08e4p-2f, 0x1.f1d306p-2f, 0x1.db1bf8p-3f,
     /* node 3150 z */
-    -0x1.e66666p-57f, -0x1.53ce12p-7f, 0x1.9e044ep-3f, 0x1.59e5aep+0f,
+    -0x1p-57f, -0x1.6b8b04p-7f, 0x1.9ed922p-3f, 0x1.59c5bep+0f,
     /* node 3151 x */
-    0x1.8p-56f, 0x1.fd6ceap-1f, -0x1.c614bap-2f, 0x1.3e2746p-1f,
+    0x1.d9999ap-57f, 0x1.fdab5cp-1f, -0x1.c69f76p-2f, 0x1.3e2b34p-1f,
     /* node 3151 y */
-    -0x1.99999ap-61f, -0x1.0eb21ep-1f, 0x1.1144b2p-1f, 0x1.f2a1fep-3f,
+    -0x1.4p-55f, -0x1.0f501cp-1f, 0x1.1202b6p-1f, 0x1.f2c268p-3f,
     /* node 3151 z */
-    -0x1.266666p-56f, 0x1.1f4d4cp-10f, 0x1.716372p-3f, 0x1.836bc6p+0f,
+    -0x1p-56f, 0x1.343edep-10f, 0x1.72b5dep-3f, 0x1.83ae1p+0f,
     /* node 3152 x */
-    -0x1.8p-55f, 0x1.e20f44p-1f, -0x1.a36dd6p-2f, 0x1.4db5cep-1f,
+    0x1.733334p-57f, 0x1.e1eae8p-1f, -0x1.a3af3ap-2f, 0x1.4d3e1p-1f,
     /* node 3152 y */
-    -0x1.0cccccp-56f, -0x1.e9b45ap-2f, 0x1.d7e86cp-2f, 0x1.eeac6ap-3f,
+    -0x1.4p-57f, -0x1.ea22c6p-2f, 0x1.d83b58p-2f, 0x1.eea91cp-3f,
     /* node 3152 z */
-    -0x1.333334p-57f, 0x1.7fa9dap-8f, 0x1.6ea4f8p-3f, 0x1.6a01fcp+0f,
+    0x1.99999ap-58f, 0x1.609ffep-8f, 0x1.6f2af2p-3f, 0x1.69cb56p+0f,
     /* node 3153 x */
-    0x1.c66666p-56f, 0x1.a62f9ap-1f, -0x1.5c3b6cp-2f, 0x1.31bbap-1f,
+    0x1.19999ap-56f, 0x1.a62a32p-1f, -0x1.5c780ep-2f, 0x1.31d10cp-1f,
     /* node 3153 y */
-    -0x1.e66666p-59f, -0x1.c34774p-2f, 0x1.aafbfcp-2f, 0x1.f0ff6ap-3f,
+    -0x1.dcccccp-56f, -0x1.c36e52p-2f, 0x1.ab053ep-2f, 0x1.f0c2bcp-3f,
     /* node 3153 z */
-    -0x1.4cccccp-57f, -0x1.42a6e4p-7f, 0x1.90b48ep-3f, 0x1.401b86p+0f,
+    -0x1.8p-57f, -0x1.397c2ap-7f, 0x1.91d3ecp-3f, 0x1.404742p+0f,
     /* node 3154 x */
-    0x1.ap-55f, 0x1.c885a8p-1f, -0x1.818a1ep-2f, 0x1.5d49aap-1f,
+    0x1.a66666p-56f, 0x1.c7e7bcp-1f, -0x1.816d28p-2f, 0x1.5c64e2p-1f,
     /* node 3154 y */
-    -0x1.066666p-56f, -0x1.be8c48p-2f, 0x1.9be1fp-2f, 0x1.f899b8p-3f,
+    -0x1.64ccccp-55f, -0x1.bec69p-2f, 0x1.9b56f4p-2f, 0x1.f7235ep-3f,
     /* node 3154 z */
-    -0x1.19999ap-57f, 0x1.8c39e8p-7f, 0x1.6131e6p-3f, 0x1.545b18p+0f,
+    -0x1.8p-57f, 0x1.6b0dcep-7f, 0x1.619194p-3f, 0x1.53deep+0f,
     /* node 3155 x */
-    -0x1.b33334p-58f, 0x1.0c93b8p+0f, -0x1.eeb1b2p-2f, 0x1.628262p-1f,
+    0x1.f66666p-55f, 0x1.0c8794p+0f, -0x1.eef08cp-2f, 0x1.6249c2p-1f,
     /* node 3155 y */
-    -0x1.333334p-56f, -0x1.086724p-1f, 0x1.03a3aap-1f, 0x1.e3da52p-3f,
+    0x1.b33334p-58f, -0x1.08bd62p-1f, 0x1.03d7bap-1f, 0x1.e31ae2p-3f,
     /* node 3155 z */
-    -0x1.99999ap-57f, 0x1.07a17p-6f, 0x1.38f3e6p-3f, 0x1.8e5714p+0f,
+    -0x1.333334p-57f, 0x1.0184fp-6f, 0x1.39565ap-3f, 0x1.8e3f5ap+0f,
     /* node 3156 x */
-    -0x1.59999ap-55f, 0x1.fbcb2ep-1f, -0x1.ca6602p-2f, 0x1.6d2b3p-1f,
+    0x1.39999ap-56f, 0x1.fbf51ep-1f, -0x1.cac606p-2f, 0x1.6d246ep-1f,
     /* node 3156 y */
-    0x1.99999ap-59f, -0x1.e4364cp-2f, 0x1.c83f6p-2f, 0x1.e69b66p-3f,
+    -0x1.633334p-56f, -0x1.e4d0b4p-2f, 0x1.c8eb34p-2f, 0x1.e63b92p-3f,
     /* node 3156 z */
-    -0x1.333334p-57f, 0x1.e7f40cp-7f, 0x1.3bd336p-3f, 0x1.75139ep+0f,
+    -0x1.19999ap-57f, 0x1.e38f7cp-7f, 0x1.3c64cep-3f, 0x1.7532e6p+0f,
     /* node 3163 x */
-    0x1.ep-54f, 0x1.2b955ep+1f, -0x1.038d6ap+0f, 0x1.9daf22p-2f,
+    0x1.0d999ap-53f, 0x1.2b7058p+1f, -0x1.03809ep+0f, 0x1.9bd0c4p-2f,
     /* node 3163 y */
-    -0x1.cb3334p-55f, -0x1.c39b5cp-1f, 0x1.14f374p+1f, -0x1.163346p-3f,
+    -0x1.0cp-55f, -0x1.c4186ap-1f, 0x1.1506fep+1f, -0x1.15c028p-3f,
     /* node 3163 z */
-    -0x1p-56f, 0x1.634e94p-4f, -0x1.758bdcp-3f, 0x1.c6828cp+1f,
+    -0x1p-56f, 0x1.63890cp-4f, -0x1.73beb4p-3f, 0x1.c672f8p+1f,
     /* node 3164 x */
-    -0x1.dp-55f, 0x1.35532cp+1f, -0x1.10df58p+0f, 0x1.6f42acp-2f,
+    0x1.186666p-53f, 0x1.35529cp+1f, -0x1.10f23cp+0f, 0x1.6dc56p-2f,
     /* node 3164 y */
-    0x1.433334p-56f, -0x1.c51ac6p-1f, 0x1.14f928p+1f, -0x1.7f1454p-3f,
+    -0x1.0a6666p-55f, -0x1.c5b61ep-1f, 0x1.150f34p+1f, -0x1.8102fap-3f,
     /* node 3164 z */
-    -0x1.333334p-56f, 0x1.854312p-4f, -0x1.d1f4e2p-3f, 0x1.c79a88p+1f,
+    -0x1.333334p-56f, 0x1.849b8p-4f, -0x1.d1a06p-3f, 0x1.c788bcp+1f,
     /* node 3165 x */
-    0x1.4cccccp-57f, 0x1.23cb66p+1f, -0x1.0bbab4p+0f, 0x1.c8d968p-2f,
+    0x1.666666p-59f, 0x1.23a154p+1f, -0x1.0be1e8p+0f, 0x1.c6de92p-2f,
     /* node 3165 y */
-    0x1.1f3334p-54f, -0x1.c087fep-1f, 0x1.fb4bf6p+0f, -0x1.460f8ap-3f,
+    0x1.5p-56f, -0x1.c0bbd6p-1f, 0x1.fb6b2cp+0f, -0x1.44f156p-3f,
     /* node 3165 z */
-    -0x1.333334p-57f, 0x1.bf3aa2p-4f, -0x1.bc2068p-3f, 0x1.b49ae4p+1f,
+    -0x1.666666p-55f, 0x1.bb1b26p-4f, -0x1.babb78p-3f, 0x1.b45b88p+1f,
     /* node 3166 x */
-    0x1.29999ap-55f, 0x1.196018p+1f, -0x1.e8f25ep-1f, 0x1.c20f66p-2f,
+    0x1.acccccp-56f, 0x1.19ee92p+1f, -0x1.e9ddccp-1f, 0x1.c3d136p-2f,
     /* node 3166 y */
-    -0x1.24ccccp-55f, -0x1.c02aaap-1f, 0x1.f17ccap+0f, -0x1.a7f0c2p-4f,
+    0x1.233334p-57f, -0x1.c07db6p-1f, 0x1.f20dd8p+0f, -0x1.a59d8p-4f,
     /* node 3166 z */
-    0x1.99999ap-57f, 0x1.6457bcp-4f, -0x1.435f2p-3f, 0x1.ad6966p+1f,
+    -0x1.8p-55f, 0x1.6675c2p-4f, -0x1.4258d4p-3f, 0x1.adb734p+1f,
     /* node 3167 x */
-    0x1.eb3334p-55f, 0x1.20ccf8p+1f, -0x1.ced6fep-1f, 0x1.78d762p-2f,
+    -0x1.09999ap-54f, 0x1.20961ep+1f, -0x1.cf4706p-1f, 0x1.77c7f4p-2f,
     /* node 3167 y */
-    0x1.eb3334p-57f, -0x1.c5124p-1f, 0x1.0fe72ap+1f, -0x1.26e48p-4f,
+    -0x1.6d999ap-54f, -0x1.c5861ep-1f, 0x1.0feaeep+1f, -0x1.2846ecp-4f,
     /* node 3167 z */
-    -0x1.99999ap-59f, 0x1.0f5546p-4f, -0x1.ca2b3cp-4f, 0x1.bf4d88p+1f,
+    -0x1.99999ap-59f, 0x1.0f1f58p-4f, -0x1.cb2a2cp-4f, 0x1.bf1f22p+1f,
     /* node 3168 x */
-    0x1.d66666p-54f, 0x1.09902ap+1f, -0x1.b4bf64p-1f, 0x1.c96bc6p-2f,
+    -0x1.033334p-55f, 0x1.097dc2p+1f, -0x1.b53368p-1f, 0x1.c87102p-2f,
     /* node 3168 y */
-    -0x1.b2p-56f, -0x1.b52176p-1f, 0x1.d13d3ep+0f, -0x1.4c0c76p-6f,
+    -0x1.866666p-56f, -0x1.b59608p-1f, 0x1.d144dp+0f, -0x1.5106fp-6f,
     /* node 3168 z */
-    0x1.333334p-57f, 0x1.55c262p-4f, -0x1.016784p-4f, 0x1.986522p+1f,
+    -0x1.333334p-57f, 0x1.5334bp-4f, -0x1.fb5a3cp-5f, 0x1.982342p+1f,
     /* node 3169 x */
-    -0x1.49999ap-55f, 0x1.fdb7ep+0f, -0x1.d40ad8p-1f, 0x1.124e5p-1f,
+    0x1.373334p-53f, 0x1.fd852p+0f, -0x1.d41f6cp-1f, 0x1.125712p-1f,
     /* node 3169 y */
-    -0x1.66p-55f, -0x1.acd7e8p-1f, 0x1.968b7ep+0f, -0x1.e9e2b4p-6f,
+    -0x1.6d999ap-56f, -0x1.ac4a92p-1f, 0x1.965e7cp+0f, -0x1.cad184p-6f,
     /* node 3169 z */
-    -0x1.19999ap-54f, 0x1.ac5acp-4f, -0x1.c8ce2cp-4f, 0x1.8a7414p+1f,
+    0x1.99999ap-58f, 0x1.ac2e8ap-4f, -0x1.c4eb98p-4f, 0x1.8a6f6ap+1f,
     /* node 3170 x */
-    0x1.f66666p-55f, 0x1.d47d3ep+0f, -0x1.9fcb7ap-1f, 0x1.0cdc9p-1f,
+    0x1.b33334p-57f, 0x1.d4cbep+0f, -0x1.a093d4p-1f, 0x1.0d22f8p-1f,
     /* node 3170 y */
-    -0x1.58p-56f, -0x1.9de0fcp-1f, 0x1.70cb68p+0f, 0x1.455556p-4f,
+    -0x1.54p-54f, -0x1.9d4616p-1f, 0x1.70a4c8p+0f, 0x1.49c222p-4f,
     /* node 3170 z */
-    -0x1.a66666p-55f, 0x1.508b58p-4f, -0x1.98cfbcp-11f, 0x1.719078p+1f,
+    -0x1.99999ap-60f, 0x1.5196e6p-4f, -0x1.fbe056p-11f, 0x1.717554p+1f,
     /* node 3171 x */
-    -0x1.6cccccp-56f, 0x1.d35ee4p+0f, -0x1.b6f228p-1f, 0x1.33aa74p-1f,
+    -0x1.61999ap-54f, 0x1.d381eep+0f, -0x1.b75246p-1f, 0x1.339318p-1f,
     /* node 3171 y */
-    -0x1.c8p-55f, -0x1.97da86p-1f, 0x1.4bc7fp+0f, 0x1.2e67c6p-5f,
+    -0x1.92b334p-54f, -0x1.985df8p-1f, 0x1.4c0df4p+0f, 0x1.2f9f62p-5f,
     /* node 3171 z */
-    -0x1.666666p-57f, 0x1.bc173ap-4f, -0x1.e91d56p-5f, 0x1.689bf8p+1f,
+    -0x1p-57f, 0x1.baa29cp-4f, -0x1.dfbfa2p-5f, 0x1.6898cp+1f,
     /* node 3172 x */
-    0x1.cp-54f, 0x1.9cc96ep+0f, -0x1.7edab8p-1f, 0x1.1a78b8p-1f,
+    0x1.0cccccp-57f, 0x1.9c747ep+0f, -0x1.7f9afcp-1f, 0x1.19b348p-1f,
     /* node 3172 y */
-    0x1.59999ap-59f, -0x1.87c636p-1f, 0x1.29c1a8p+0f, 0x1.04d296p-3f,
+    -0x1.f33334p-58f, -0x1.88c3cap-1f, 0x1.29ab42p+0f, 0x1.020792p-3f,
     /* node 3172 z */
-    0x1.666666p-57f, 0x1.d5cfeep-5f, 0x1.b9768ap-5f, 0x1.4a545p+1f,
+    0x1.99999ap-59f, 0x1.cd12b4p-5f, 0x1.b8a316p-5f, 0x1.4a0ef8p+1f,
     /* node 3173 x */
-    0x1.04ccccp-54f, 0x1.a2fd7ep+0f, -0x1.9be0ecp-1f, 0x1.36fcb4p-1f,
+    -0x1.e66666p-56f, 0x1.a354d6p+0f, -0x1.9bfa7ep-1f, 0x1.374344p-1f,
     /* node 3173 y */
-    -0x1.79999ap-59f, -0x1.7ee672p-1f, 0x1.11b078p+0f, 0x1.52df6cp-4f,
+    -0x1.166666p-58f, -0x1.7ead64p-1f, 0x1.11dce6p+0f, 0x1.563eacp-4f,
     /* node 3173 z */
-    -0x1.333334p-58f, 0x1.606e26p-4f, -0x1.20340ap-8f, 0x1.4a0fd6p+1f,
+    -0x1.99999ap-60f, 0x1.60a79ep-4f, -0x1.7319f4p-9f, 0x1.4a2c52p+1f,
     /* node 3174 x */
-    0x1.4p-55f, 0x1.f1179ap+0f, -0x1.ed642ap-1f, 0x1.303bb8p-1f,
+    -0x1.4p-57f, 0x1.f05a9ep+0f, -0x1.ed48eap-1f, 0x1.2f73c8p-1f,
     /* node 3174 y */
-    -0x1.db999ap-55f, -0x1.a1d1a6p-1f, 0x1.64e8bp+0f, -0x1.106e7ap-4f,
+    -0x1.a3999ap-55f, -0x1.a243ep-1f, 0x1.6525e8p+0f, -0x1.103d9cp-4f,
     /* node 3174 z */
-    0x1.4p-55f, 0x1.ee8b6ap-4f, -0x1.493d7ep-3f, 0x1.7b249ep+1f,
+    -0x1.b33334p-55f, 0x1.ec7998p-4f, -0x1.488fa6p-3f, 0x1.7b04dcp+1f,
     /* node 3175 x */
-    0x1.666666p-57f, 0x1.cb5732p+0f, -0x1.d22cd6p-1f, 0x1.446b3cp-1f,
+    0x1.99999ap-57f, 0x1.cb3d64p+0f, -0x1.d2583ap-1f, 0x1.441af8p-1f,
     /* node 3175 y */
-    -0x1.63199ap-55f, -0x1.942a2ep-1f, 0x1.2de19ap+0f, -0x1.cda808p-7f,
+    -0x1.82p-57f, -0x1.946566p-1f, 0x1.2df9ecp+0f, -0x1.c6a276p-7f,
     /* node 3175 z */
-    -0x1.333334p-55f, 0x1.b29ad8p-4f, -0x1.d30988p-4f, 0x1.60e3e4p+1f,
+    -0x1.4cccccp-56f, 0x1.ad06a2p-4f, -0x1.cfc40cp-4f, 0x1.60bc34p+1f,
     /* node 3176 x */
-    0x1.ccccccp-55f, 0x1.7bfb18p+0f, -0x1.6629f4p-1f, 0x1.2b204p-1f,
+    0x1p-58f, 0x1.7bbafep+0f, -0x1.66c758p-1f, 0x1.2a2562p-1f,
     /* node 3176 y */
-    -0x1.89999ap-57f, -0x1.71dc2ep-1f, 0x1.fc0d1ap-1f, 0x1.555c42p-3f,
+    -0x1.f33334p-57f, -0x1.724c6ap-1f, 0x1.fbe408p-1f, 0x1.536bcap-3f,
     /* node 3176 z */
-    -0x1.666666p-56f, 0x1.a53c6ep-5f, 0x1.4b5178p-4f, 0x1.2d5002p+1f,
+    -0x1.0cccccp-55f, 0x1.9c3d2ap-5f, 0x1.49eeeap-4f, 0x1.2d0c2ap+1f,
     /* node 3177 x */
-    0x1.ccccccp-59f, 0x1.61a15cp+0f, -0x1.523bep-1f, 0x1.3465eep-1f,
+    -0x1.3cccccp-54f, 0x1.61b068p+0f, -0x1.525e62p-1f, 0x1.34502p-1f,
     /* node 3177 y */
-    -0x1.a4ccccp-55f, -0x1.621af8p-1f, 0x1.b5b5dp-1f, 0x1.70e23ep-3f,
+    -0x1.3cccccp-56f, -0x1.62a0d2p-1f, 0x1.b6a4cep-1f, 0x1.71e5a4p-3f,
     /* node 3177 z */
-    0x1.333334p-58f, 0x1.2f9cb2p-5f, 0x1.96ea06p-4f, 0x1.13dc38p+1f,
+    -0x1.99999ap-60f, 0x1.2ecbe2p-5f, 0x1.982cc8p-4f, 0x1.13ec9ep+1f,
     /* node 3178 x */
-    0x1.dp-55f, 0x1.82e7f4p+0f, -0x1.7feadep-1f, 0x1.4856fcp-1f,
+    0x1.333334p-55f, 0x1.82dfaep+0f, -0x1.803796p-1f, 0x1.4819a8p-1f,
     /* node 3178 y */
-    -0x1.2p-56f, -0x1.6e3edep-1f, 0x1.d6b0acp-1f, 0x1.00f74ep-3f,
+    0x1.7p-56f, -0x1.6e8c0ep-1f, 0x1.d7f2dap-1f, 0x1.048b9p-3f,
     /* node 3178 z */
-    -0x1.99999ap-55f, 0x1.01ba74p-4f, 0x1.0930a4p-5f, 0x1.2be74p+1f,
+    -0x1.b33334p-56f, 0x1.00c902p-4f, 0x1.1340a6p-5f, 0x1.2bf90ep+1f,
     /* node 3179 x */
-    0x1.6e6666p-54f, 0x1.6e0abcp+0f, -0x1.69caaep-1f, 0x1.59b56ep-1f,
+    -0x1.99999ap-60f, 0x1.6dfb48p+0f, -0x1.69fa52p-1f, 0x1.59696ap-1f,
     /* node 3179 y */
-    0x1.733334p-59f, -0x1.57d016p-1f, 0x1.a307d4p-1f, 0x1.55530cp-3f,
+    -0x1.14ccccp-55f, -0x1.57fe3ep-1f, 0x1.a2e842p-1f, 0x1.541bbap-3f,
     /* node 3179 z */
-    0x1.333334p-57f, 0x1.d926c4p-5f, 0x1.e325c6p-5f, 0x1.1732bap+1f,
+    -0x1p-57f, 0x1.d74838p-5f, 0x1.e6478p-5f, 0x1.1714f2p+1f,
     /* node 3180 x */
-    0x1.166666p-55f, 0x1.4f8028p+0f, -0x1.3f64a8p-1f, 0x1.454b38p-1f,
+    0x1.acccccp-56f, 0x1.4f2d5ap+0f, -0x1.3f9a6ep-1f, 0x1.44c94ep-1f,
     /* node 3180 y */
-    -0x1.09999ap-55f, -0x1.4b2964p-1f, 0x1.87e0aap-1f, 0x1.b9e522p-3f,
+    -0x1.3b3334p-55f, -0x1.4b43cp-1f, 0x1.87edfcp-1f, 0x1.b93844p-3f,
     /* node 3180 z */
-    -0x1p-57f, 0x1.d0edeap-6f, 0x1.cd753p-4f, 0x1.004be8p+1f,
+    -0x1.666666p-57f, 0x1.c6114p-6f, 0x1.d15be2p-4f, 0x1.003ac2p+1f,
     /* node 3181 x */
-    0x1.c9999ap-55f, 0x1.5a011ap+0f, -0x1.57ec74p-1f, 0x1.6602a4p-1f,
+    0x1.4cccccp-57f, 0x1.59e3bep+0f, -0x1.57d6e2p-1f, 0x1.65e5aap-1f,
     /* node 3181 y */
-    -0x1.81999ap-55f, -0x1.443f88p-1f, 0x1.70c0cap-1f, 0x1.82e906p-3f,
+    -0x1.29999ap-56f, -0x1.4477b8p-1f, 0x1.70fd7cp-1f, 0x1.8432f2p-3f,
     /* node 3181 z */
-    -0x1.99999ap-58f, 0x1.92e26p-5f, 0x1.486466p-4f, 0x1.034b5ep+1f,
+    -0x1.0cccccp-55f, 0x1.90dc26p-5f, 0x1.4a10acp-4f, 0x1.033742p+1f,
     /* node 3182 x */
-    0x1.78p-54f, 0x1.8a7e9p+0f, -0x1.96429cp-1f, 0x1.66ea76p-1f,
+    -0x1.88p-54f, 0x1.8a9658p+0f, -0x1.967f1ap-1f, 0x1.66a58p-1f,
     /* node 3182 y */
-    -0x1.333334p-60f, -0x1.65262p-1f, 0x1.bfe28cp-1f, 0x1.ade594p-4f,
+    -0x1.f1999ap-56f, -0x1.656d7ap-1f, 0x1.c01e42p-1f, 0x1.ab77b8p-4f,
     /* node 3182 z */
-    0x1.99999ap-59f, 0x1.4b2e4ap-4f, -0x1.53e164p-8f, 0x1.29d8bp+1f,
+    -0x1p-55f, 0x1.4af71p-4f, -0x1.3d5cccp-8f, 0x1.29e984p+1f,
     /* node 3183 x */
-    0x1.e66666p-55f, 0x1.7663c8p+0f, -0x1.7e73dap-1f, 0x1.76b02ep-1f,
+    0x1.666666p-57f, 0x1.767552p+0f, -0x1.7ed044p-1f, 0x1.76b8f2p-1f,
     /* node 3183 y */
-    -0x1.94p-55f, -0x1.4fa27ep-1f, 0x1.8a9c2ep-1f, 0x1.22428ap-3f,
+    -0x1.633334p-57f, -0x1.4f95ep-1f, 0x1.8ab962p-1f, 0x1.23eff6p-3f,
     /* node 3183 z */
-    0x1.666666p-56f, 0x1.28327cp-4f, 0x1.79dd92p-6f, 0x1.15109ep+1f,
+    -0x1.666666p-57f, 0x1.2bd4c6p-4f, 0x1.7e9c78p-6f, 0x1.15246ap+1f,
     /* node 3184 x */
-    -0x1.c33334p-55f, 0x1.3e975p+0f, -0x1.313fdp-1f, 0x1.5708cp-1f,
+    0x1.c9999ap-55f, 0x1.3ebd12p+0f, -0x1.318d52p-1f, 0x1.573108p-1f,
     /* node 3184 y */
-    -0x1.f9999ap-57f, -0x1.3b5752p-1f, 0x1.5c5ccep-1f, 0x1.addcbep-3f,
+    0x1.333334p-61f, -0x1.3c2534p-1f, 0x1.5cf5bp-1f, 0x1.acec64p-3f,
     /* node 3184 z */
-    0x1.99999ap-60f, 0x1.d55176p-6f, 0x1.f7d188p-4f, 0x1.e29282p+0f,
+    0x1.99999ap-58f, 0x1.d39326p-6f, 0x1.f89078p-4f, 0x1.e2ae84p+0f,
     /* node 3185 x */
-    0x1.766666p-55f, 0x1.31881cp+0f, -0x1.225744p-1f, 0x1.6ad108p-1f,
+    0x1.c9999ap-55f, 0x1.31968p+0f, -0x1.227ff4p-1f, 0x1.6ac47p-1f,
     /* node 3185 y */
-    -0x1.d9999ap-57f, -0x1.22de6cp-1f, 0x1.33c89ep-1f, 0x1.dd705p-3f,
+    -0x1.333334p-60f, -0x1.22bafap-1f, 0x1.33b508p-1f, 0x1.dd6cd8p-3f,
     /* node 3185 z */
-    0x1.99999ap-58f, 0x1.1b92e4p-5f, 0x1.f8a44p-4f, 0x1.c8a7eep+0f,
+    -0x1.4cccccp-55f, 0x1.1d9dd6p-5f, 0x1.fcd32ap-4f, 0x1.c8df04p+0f,
     /* node 3186 x */
-    0x1.acccccp-54f, 0x1.49acc6p+0f, -0x1.45b8cap-1f, 0x1.78f7a6p-1f,
+    -0x1p-55f, 0x1.49b32ap+0f, -0x1.45b802p-1f, 0x1.790fbep-1f,
     /* node 3186 y */
-    -0x1.ccccccp-59f, -0x1.2d23bp-1f, 0x1.424972p-1f, 0x1.a20138p-3f,
+    0x1.09999ap-56f, -0x1.2c93aap-1f, 0x1.41ef6p-1f, 0x1.a29f82p-3f,
     /* node 3186 z */
-    -0x1.666666p-56f, 0x1.746f7cp-5f, 0x1.75812cp-4f, 0x1.e4b9a8p+0f,
+    -0x1p-55f, 0x1.77f46ep-5f, 0x1.7442fep-4f, 0x1.e48a44p+0f,
     /* node 3187 x */
-    -0x1.ep-55f, 0x1.3e86cap+0f, -0x1.393936p-1f, 0x1.8aaf18p-1f,
+    0x1.333334p-57f, 0x1.3e77bep+0f, -0x1.39223ep-1f, 0x1.8a690ep-1f,
     /* node 3187 y */
-    0x1.b9999ap-57f, -0x1.1e9638p-1f, 0x1.28c56cp-1f, 0x1.a26a72p-3f,
+    -0x1.0cccccp-57f, -0x1.1efff8p-1f, 0x1.2919aep-1f, 0x1.a21a94p-3f,
     /* node 3187 z */
-    -0x1.333334p-57f, 0x1.902b2ep-5f, 0x1.795454p-4f, 0x1.cc83f6p+0f,
+    -0x1.19999ap-55f, 0x1.8c58b8p-5f, 0x1.7d0796p-4f, 0x1.cc6c16p+0f,
     /* node 3188 x */
-    -0x1.6p-56f, 0x1.235028p+0f, -0x1.162ff8p-1f, 0x1.722e66p-1f,
+    0x1.4e6666p-54f, 0x1.234cap+0f, -0x1.1669fp-1f, 0x1.71e71ap-1f,
     /* node 3188 y */
-    -0x1.0cccccp-57f, -0x1.139c1ep-1f, 0x1.13a6fp-1f, 0x1.c868ccp-3f,
+    -0x1p-55f, -0x1.13e466p-1f, 0x1.140ab8p-1f, 0x1.c8215cp-3f,
     /* node 3188 z */
-    0x1.99999ap-60f, 0x1.b8d0fp-6f, 0x1.0755c6p-3f, 0x1.ac66a8p+0f,
+    0x1.333334p-58f, 0x1.bb2264p-6f, 0x1.07303p-3f, 0x1.ac561cp+0f,
     /* node 3189 x */
-    -0x1.2cccccp-55f, 0x1.32a3c6p+0f, -0x1.2b7c74p-1f, 0x1.99009p-1f,
+    0x1.2p-55f, 0x1.329452p+0f, -0x1.2bafc4p-1f, 0x1.98c81ep-1f,
     /* node 3189 y */
-    -0x1.19999ap-57f, -0x1.060c3ep-1f, 0x1.04fe88p-1f, 0x1.d73ba8p-3f,
+    -0x1.18p-55f, -0x1.06587cp-1f, 0x1.05459ep-1f, 0x1.d5ea14p-3f,
     /* node 3189 z */
-    -0x1.4cccccp-56f, 0x1.a2a8c8p-5f, 0x1.978468p-4f, 0x1.b6bf16p+0f,
+    -0x1.99999ap-58f, 0x1.a39b9ap-5f, 0x1.993c7p-4f, 0x1.b6e944p+0f,
     /* node 3190 x */
-    0x1.ccccccp-56f, 0x1.52ddbap+0f, -0x1.591632p-1f, 0x1.93f334p-1f,
+    0x1.e66666p-57f, 0x1.5284cp+0f, -0x1.599da6p-1f, 0x1.92cfap-1f,
     /* node 3190 y */
-    -0x1.2cccccp-56f, -0x1.23dcbp-1f, 0x1.333c58p-1f, 0x1.88191p-3f,
+    -0x1.466666p-56f, -0x1.257932p-1f, 0x1.34bb02p-1f, 0x1.841b2p-3f,
     /* node 3190 z */
-    -0x1p-57f, 0x1.c44256p-5f, 0x1.f208c6p-5f, 0x1.e3c4fep+0f,
+    -0x1.99999ap-56f, 0x1.bbb86ep-5f, 0x1.f4e5c8p-5f, 0x1.e3ba3ap+0f,
     /* node 3191 x */
-    -0x1.4cccccp-57f, 0x1.4922b8p+0f, -0x1.4dff2cp-1f, 0x1.a945b2p-1f,
+    0x1.266666p-55f, 0x1.48eff4p+0f, -0x1.4dce56p-1f, 0x1.a8e52ap-1f,
     /* node 3191 y */
-    -0x1.033334p-56f, -0x1.105c9cp-1f, 0x1.156de4p-1f, 0x1.a8f3e2p-3f,
+    0x1.733334p-58f, -0x1.100b34p-1f, 0x1.14d4dap-1f, 0x1.aa3c12p-3f,
     /* node 3191 z */
-    -0x1.333334p-57f, 0x1.1112b8p-4f, 0x1.f8eabp-5f, 0x1.cf201p+0f,
+    -0x1.b33334p-56f, 0x1.0bf086p-4f, 0x1.f90a8ep-5f, 0x1.cea4bp+0f,
     /* node 3192 x */
-    0x1.066666p-56f, 0x1.1894ecp+0f, -0x1.0875c8p-1f, 0x1.838cc8p-1f,
+    0x1.acccccp-54f, 0x1.187eap+0f, -0x1.08922ap-1f, 0x1.83097ap-1f,
     /* node 3192 y */
-    0x1.cp-56f, -0x1.fc107cp-2f, 0x1.ed3786p-2f, 0x1.dd2d8p-3f,
+    -0x1.5p-56f, -0x1.fc2474p-2f, 0x1.ed34c4p-2f, 0x1.dcef2ep-3f,
     /* node 3192 z */
-    -0x1.333334p-58f, 0x1.04191ep-5f, 0x1.015f3ep-3f, 0x1.95cb42p+0f,
+    -0x1p-57f, 0x1.006f54p-5f, 0x1.01f28ep-3f, 0x1.95a748p+0f,
     /* node 3193 x */
-    0x1.933334p-54f, 0x1.0c60c4p+0f, -0x1.edf64cp-2f, 0x1.9334c8p-1f,
+    0x1.666666p-57f, 0x1.0c3f36p+0f, -0x1.ee0cp-2f, 0x1.930104p-1f,
     /* node 3193 y */
-    -0x1.033334p-55f, -0x1.ce5cbap-2f, 0x1.b04442p-2f, 0x1.02c56p-2f,
+    0x1.99999ap-60f, -0x1.ce90ap-2f, 0x1.b0611ep-2f, 0x1.02dabcp-2f,
     /* node 3193 z */
-    -0x0p+0f, 0x1.1ce3fp-5f, 0x1.06783ep-3f, 0x1.7f9706p+0f,
+    -0x1.0cccccp-56f, 0x1.1a74bcp-5f, 0x1.06eeeep-3f, 0x1.7f6d1p+0f,
     /* node 3194 x */
-    0x1p-54f, 0x1.2856f8p+0f, -0x1.1f40aap-1f, 0x1.a932d6p-1f,
+    0x1.79999ap-55f, 0x1.28613ap+0f, -0x1.1f649p-1f, 0x1.a917cap-1f,
     /* node 3194 y */
-    0x1.8p-58f, -0x1.e8c4ep-2f, 0x1.d5fc06p-2f, 0x1.dfc532p-3f,
+    -0x1.8p-57f, -0x1.e9331cp-2f, 0x1.d68352p-2f, 0x1.e0754ep-3f,
     /* node 3194 z */
-    -0x1.0cccccp-55f, 0x1.9e01dap-5f, 0x1.9de516p-4f, 0x1.a0b9e6p+0f,
+    -0x1.99999ap-56f, 0x1.9a5e8cp-5f, 0x1.a04754p-4f, 0x1.a0abb8p+0f,
     /* node 3195 x */
-    -0x1.333334p-58f, 0x1.1d9b78p+0f, -0x1.0d3c54p-1f, 0x1.b6bf8ap-1f,
+    0x1p-54f, 0x1.1d9d96p+0f, -0x1.0d5c6p-1f, 0x1.b6be1cp-1f,
     /* node 3195 y */
-    -0x1.d9999ap-56f, -0x1.bdef78p-2f, 0x1.acfd02p-2f, 0x1.10c5f2p-2f,
+    0x1.233334p-56f, -0x1.bdeeeap-2f, 0x1.ad1966p-2f, 0x1.10e50cp-2f,
     /* node 3195 z */
-    -0x1.99999ap-58f, 0x1.a2d0bep-5f, 0x1.ad9f8p-4f, 0x1.8a7c2ap+0f,
+    -0x1.99999ap-57f, 0x1.a08108p-5f, 0x1.aee41p-4f, 0x1.8a7358p+0f,
     /* node 3196 x */
-    -0x1p-56f, 0x1.fe35cap-1f, -0x1.c35e5ep-2f, 0x1.a089e2p-1f,
+    0x1.4p-55f, 0x1.fe22b6p-1f, -0x1.c3ce3ep-2f, 0x1.9ffee2p-1f,
     /* node 3196 y */
-    -0x1.833334p-56f, -0x1.9a3ca8p-2f, 0x1.7e4c6ep-2f, 0x1.19d36ep-2f,
+    -0x1.533334p-57f, -0x1.9b084ap-2f, 0x1.7efcc6p-2f, 0x1.19098ep-2f,
     /* node 3196 z */
-    -0x1.666666p-58f, 0x1.22c86ep-5f, 0x1.13ad4cp-3f, 0x1.68302p+0f,
+    -0x1.666666p-57f, 0x1.1f5056p-5f, 0x1.146e8cp-3f, 0x1.681bcp+0f,
     /* node 3198 x */
-    0x1.a66666p-56f, 0x1.3644dap+0f, -0x1.325d9ap-1f, 0x1.c8194ap-1f,
+    0x1.f33334p-56f, 0x1.362b0cp+0f, -0x1.3251eap-1f, 0x1.c80858p-1f,
     /* node 3198 y */
-    -0x1.133334p-55f, -0x1.d1c216p-2f, 0x1.c7d314p-2f, 0x1.fd6da8p-3f,
+    -0x0p+0f, -0x1.d10b22p-2f, 0x1.c6be0cp-2f, 0x1.ff4006p-3f,
     /* node 3198 z */
-    -0x1.666666p-57f, 0x1.092c38p-4f, 0x1.3aff2ap-4f, 0x1.a70376p+0f,
+    -0x1.99999ap-57f, 0x1.0a119cp-4f, 0x1.3bdfe2p-4f, 0x1.a6df64p+0f,
     /* node 3199 x */
-    -0x0p+0f, 0x1.2d6426p+0f, -0x1.24e1a6p-1f, 0x1.d57a56p-1f,
+    0x1.2cccccp-55f, 0x1.2d6044p+0f, -0x1.24fd42p-1f, 0x1.d55e04p-1f,
     /* node 3199 y */
-    -0x1.133334p-57f, -0x1.af738ep-2f, 0x1.9d042ap-2f, 0x1.0a307ap-2f,
+    0x1.4cccccp-58f, -0x1.b005fap-2f, 0x1.9da93cp-2f, 0x1.09df2ap-2f,
     /* node 3199 z */
-    -0x1.ccccccp-57f, 0x1.1ac412p-4f, 0x1.3a4eacp-4f, 0x1.9314c6p+0f,
+    -0x1.99999ap-57f, 0x1.1a7248p-4f, 0x1.3c3e92p-4f, 0x1.93129p+0f,
     /* node 3206 x */
-    0x1.55999ap-54f, 0x1.25243p+1f, -0x1.4886a6p+0f, 0x1.605744p-2f,
+    0x1.55999ap-53f, 0x1.253848p+1f, -0x1.48a864p+0f, 0x1.604668p-2f,
     /* node 3206 y */
-    -0x1.c5999ap-54f, -0x1.d57686p-1f, 0x1.db6802p+0f, -0x1.0dd2d2p-2f,
+    -0x1.09999ap-55f, -0x1.d5a7f6p-1f, 0x1.db8e6ep+0f, -0x1.0d8be8p-2f,
     /* node 3206 z */
-    -0x1.4cccccp-55f, 0x1.11bcdp-3f, -0x1.510b68p-2f, 0x1.7fd4d4p+1f,
+    -0x1.8cccccp-55f, 0x1.11bdc4p-3f, -0x1.50cf7p-2f, 0x1.7fd228p+1f,
     /* node 3207 x */
-    -0x1.8p-59f, 0x1.20a452p+1f, -0x1.63cceep+0f, 0x1.4ccf2cp-2f,
+    0x1p-55f, 0x1.20b118p+1f, -0x1.63eff4p+0f, 0x1.4c9d98p-2f,
     /* node 3207 y */
-    -0x1.f9999ap-57f, -0x1.cc7844p-1f, 0x1.b16fd6p+0f, -0x1.e1b066p-3f,
+    -0x1.a9999ap-55f, -0x1.ccb6ccp-1f, 0x1.b18e5p+0f, -0x1.e18d5ap-3f,
     /* node 3207 z */
-    -0x1.e66666p-56f, 0x1.2afdcep-3f, -0x1.4d9b1ep-2f, 0x1.621abp+1f,
+    -0x1p-55f, 0x1.2a379ep-3f, -0x1.4d7642p-2f, 0x1.620edp+1f,
     /* node 3208 x */
-    0x1.ccccccp-56f, 0x1.1d76a8p+1f, -0x1.5f1eb4p+0f, 0x1.90eb1p-2f,
+    0x1.8p-56f, 0x1.1d82bp+1f, -0x1.5f47a6p+0f, 0x1.909212p-2f,
     /* node 3208 y */
-    -0x1.3p-55f, -0x1.cb5dbap-1f, 0x1.a6018p+0f, -0x1.05fb2ap-2f,
+    0x1.69999ap-56f, -0x1.cb9fa4p-1f, 0x1.a62aeap+0f, -0x1.05d22ep-2f,
     /* node 3208 z */
-    -0x1.333334p-57f, 0x1.3557ep-3f, -0x1.75e65p-2f, 0x1.650c08p+1f,
+    -0x1.333334p-58f, 0x1.348524p-3f, -0x1.75d3fap-2f, 0x1.64f776p+1f,
     /* node 3209 x */
-    0x1.48ccccp-53f, 0x1.1e1664p+1f, -0x1.3f3e22p+0f, 0x1.91a90cp-2f,
+    0x1.433334p-55f, 0x1.1e4166p+1f, -0x1.3f65b4p+0f, 0x1.92c104p-2f,
     /* node 3209 y */
-    0x1.766666p-56f, -0x1.cbe5aep-1f, 0x1.c3d1c8p+0f, -0x1.0ee934p-2f,
+    -0x1.a33334p-56f, -0x1.cbdeb2p-1f, 0x1.c3fb9cp+0f, -0x1.0ddcdep-2f,
     /* node 3209 z */
-    0x1.b33334p-56f, 0x1.0da028p-3f, -0x1.609fb8p-2f, 0x1.82a1e2p+1f,
+    0x1.666666p-57f, 0x1.0d716ap-3f, -0x1.605cf6p-2f, 0x1.829692p+1f,
     /* node 3210 x */
-    0x1.093334p-53f, 0x1.3110a2p+1f, -0x1.2eff72p+0f, 0x1.74b5d4p-2f,
+    0x1.b5999ap-54f, 0x1.30f8e4p+1f, -0x1.2f4c64p+0f, 0x1.728c8ep-2f,
     /* node 3210 y */
-    0x1p-58f, -0x1.ccaf92p-1f, 0x1.042714p+1f, -0x1.e47ac6p-3f,
+    -0x1.4f3334p-54f, -0x1.cd49c6p-1f, 0x1.043e0ap+1f, -0x1.e59146p-3f,
     /* node 3210 z */
-    0x1.99999ap-58f, 0x1.df00f2p-4f, -0x1.2710c4p-2f, 0x1.aa9362p+1f,
+    -0x1.333334p-56f, 0x1.d98f36p-4f, -0x1.26a078p-2f, 0x1.aa4c9cp+1f,
     /* node 3211 x */
-    0x1.ecccccp-56f, 0x1.25ff2cp+1f, -0x1.2ccbd4p+0f, 0x1.bc2bb8p-2f,
+    -0x1.8p-55f, 0x1.26108ep+1f, -0x1.2cda78p+0f, 0x1.bbf108p-2f,
     /* node 3211 y */
-    -0x1.39999ap-56f, -0x1.c917c4p-1f, 0x1.e119fp+0f, -0x1.b1f8cp-3f,
+    -0x1.c33334p-55f, -0x1.c966cp-1f, 0x1.e135cep+0f, -0x1.b199d6p-3f,
     /* node 3211 z */
-    0x1p-56f, 0x1.0e053ep-3f, -0x1.234d2ap-2f, 0x1.9f0a88p+1f,
+    0x1.99999ap-57f, 0x1.0dfeb2p-3f, -0x1.23661ap-2f, 0x1.9f0002p+1f,
     /* node 3212 x */
-    0x1.e8p-54f, 0x1.17a428p+1f, -0x1.3cdce6p+0f, 0x1.f9716ap-2f,
+    -0x1.5p-54f, 0x1.177c96p+1f, -0x1.3d0a72p+0f, 0x1.f6d888p-2f,
     /* node 3212 y */
-    -0x1.49999ap-55f, -0x1.c43d0cp-1f, 0x1.a0bffp+0f, -0x1.05ddp-2f,
+    -0x1.966666p-55f, -0x1.c46c74p-1f, 0x1.a0be4ep+0f, -0x1.05ee24p-2f,
     /* node 3212 z */
-    -0x1.99999ap-58f, 0x1.1b5674p-3f, -0x1.650b24p-2f, 0x1.7ba4d2p+1f,
+    -0x1.333334p-57f, 0x1.19a5e2p-3f, -0x1.64a754p-2f, 0x1.7b74cep+1f,
     /* node 3213 x */
-    0x1.bcccccp-54f, 0x1.18cf4ep+1f, -0x1.2269cep+0f, 0x1.129c44p-1f,
+    0x1.533334p-56f, 0x1.18a812p+1f, -0x1.2268bep+0f, 0x1.120eeep-1f,
     /* node 3213 y */
-    -0x1.be6666p-55f, -0x1.bd4d76p-1f, 0x1.ad8d72p+0f, -0x1.93b808p-3f,
+    -0x1.05999ap-54f, -0x1.bdab52p-1f, 0x1.ad9e1cp+0f, -0x1.943806p-3f,
     /* node 3213 z */
-    0x1.333334p-57f, 0x1.0cfcd8p-3f, -0x1.15db9cp-2f, 0x1.90a1fap+1f,
+    0x1.99999ap-57f, 0x1.0ba58p-3f, -0x1.155b4ep-2f, 0x1.909558p+1f,
     /* node 3214 x */
-    -0x1.e66666p-55f, 0x1.0d37ap+1f, -0x1.3569dcp+0f, 0x1.2335fp-1f,
+    -0x1.ccccccp-58f, 0x1.0d5aeap+1f, -0x1.35a396p+0f, 0x1.23534ep-1f,
     /* node 3214 y */
-    -0x1.48p-55f, -0x1.b7478ep-1f, 0x1.75b216p+0f, -0x1.d44d2ep-3f,
+    -0x1.873334p-54f, -0x1.b78e48p-1f, 0x1.75cbfep+0f, -0x1.d4c3f6p-3f,
     /* node 3214 z */
-    0x1.e66666p-56f, 0x1.31f98ap-3f, -0x1.4ddac6p-2f, 0x1.72531ep+1f,
+    -0x1.8p-56f, 0x1.3117acp-3f, -0x1.4dfc9ap-2f, 0x1.722ce2p+1f,
     /* node 3215 x */
-    0x1.666666p-53f, 0x1.03d458p+1f, -0x1.1571dap+0f, 0x1.285568p-1f,
+    0x1.b33334p-55f, 0x1.03ae44p+1f, -0x1.156524p+0f, 0x1.27bcd2p-1f,
     /* node 3215 y */
-    -0x1.a66666p-58f, -0x1.b25d6cp-1f, 0x1.74e1f4p+0f, -0x1.579f26p-3f,
+    -0x1.066666p-55f, -0x1.b2e9aep-1f, 0x1.75345ep+0f, -0x1.56f5f8p-3f,
     /* node 3215 z */
-    0x1.99999ap-58f, 0x1.1ce6dcp-3f, -0x1.08731ap-2f, 0x1.7d3c04p+1f,
+    -0x1.666666p-56f, 0x1.1c47a4p-3f, -0x1.07bb68p-2f, 0x1.7d368ep+1f,
     /* node 3216 x */
-    0x1.34ccccp-53f, 0x1.02ac1cp+1f, -0x1.2a13cp+0f, 0x1.45d56p-1f,
+    0x1.2b3334p-54f, 0x1.02a5dep+1f, -0x1.2a4cf2p+0f, 0x1.4531b8p-1f,
     /* node 3216 y */
-    -0x1.cb3334p-56f, -0x1.a795e8p-1f, 0x1.5179cp+0f, -0x1.7c0f16p-3f,
+    0x1.4p-59f, -0x1.a7ac8cp-1f, 0x1.51461p+0f, -0x1.7d64f6p-3f,
     /* node 3216 z */
-    -0x1.733334p-55f, 0x1.26897ep-3f, -0x1.2a2086p-2f, 0x1.697fc8p+1f,
+    -0x1p-57f, 0x1.252554p-3f, -0x1.2a75cp-2f, 0x1.694afcp+1f,
     /* node 3217 x */
-    0x1.18p-54f, 0x1.11a426p+1f, -0x1.5215b4p+0f, 0x1.14d0d6p-1f,
+    -0x1.666666p-59f, 0x1.11a0e6p+1f, -0x1.522faep+0f, 0x1.148c78p-1f,
     /* node 3217 y */
-    -0x1.966666p-54f, -0x1.b766c2p-1f, 0x1.717c6cp+0f, -0x1.fea992p-3f,
+    -0x1.d33334p-56f, -0x1.b77936p-1f, 0x1.7189d8p+0f, -0x1.fdb4ap-3f,
     /* node 3217 z */
-    -0x0p+0f, 0x1.2fd892p-3f, -0x1.68daa8p-2f, 0x1.60688ap+1f,
+    -0x1.733334p-55f, 0x1.2e969p-3f, -0x1.6880aap-2f, 0x1.6052ap+1f,
     /* node 3218 x */
-    -0x1.58p-54f, 0x1.09b5f6p+1f, -0x1.4765e6p+0f, 0x1.382a2ap-1f,
+    -0x1.ccccccp-57f, 0x1.09a1cp+1f, -0x1.476a8p+0f, 0x1.37abacp-1f,
     /* node 3218 y */
-    -0x1.0cccccp-55f, -0x1.ac73d6p-1f, 0x1.55d646p+0f, -0x1.ce1856p-3f,
+    -0x1.0a6666p-54f, -0x1.acac92p-1f, 0x1.55db2cp+0f, -0x1.cdac64p-3f,
     /* node 3218 z */
-    -0x1.333334p-56f, 0x1.35e164p-3f, -0x1.5f106cp-2f, 0x1.5c1912p+1f,
+    -0x1p-56f, 0x1.33e9ap-3f, -0x1.5e822cp-2f, 0x1.5bf798p+1f,
     /* node 3219 x */
-    0x1.c66666p-55f, 0x1.ecfc84p+0f, -0x1.0a4414p+0f, 0x1.4d4162p-1f,
+    -0x1.39999ap-56f, 0x1.ed4fdap+0f, -0x1.0a838p+0f, 0x1.4d61ap-1f,
     /* node 3219 y */
-    -0x1.75999ap-55f, -0x1.9d7c2cp-1f, 0x1.43b988p+0f, -0x1.bcb06cp-4f,
+    -0x1.266666p-58f, -0x1.9d6a4cp-1f, 0x1.43b89ep+0f, -0x1.bae7c2p-4f,
     /* node 3219 z */
-    -0x1.19999ap-56f, 0x1.0f1092p-3f, -0x1.b0d532p-3f, 0x1.69e8e8p+1f,
+    -0x1.666666p-57f, 0x1.0efcbp-3f, -0x1.b06bf8p-3f, 0x1.69de62p+1f,
     /* node 3220 x */
-    -0x1.e66666p-58f, 0x1.ceb0a2p+0f, -0x1.f4748p-1f, 0x1.649b28p-1f,
+    -0x1.133334p-56f, 0x1.cefcc2p+0f, -0x1.f53c18p-1f, 0x1.647cbep-1f,
     /* node 3220 y */
-    -0x1.46999ap-54f, -0x1.8a5dbap-1f, 0x1.1e2906p+0f, -0x1.b4cf46p-5f,
+    -0x1.26ccccp-55f, -0x1.8a7916p-1f, 0x1.1e096ap+0f, -0x1.b72642p-5f,
     /* node 3220 z */
-    -0x1p-55f, 0x1.e86a22p-4f, -0x1.452beep-3f, 0x1.55d3aap+1f,
+    -0x1.19999ap-55f, 0x1.e71c8ep-4f, -0x1.44fe8cp-3f, 0x1.55c032p+1f,
     /* node 3221 x */
-    0x1.14ccccp-54f, 0x1.ed495p+0f, -0x1.1dc57ep+0f, 0x1.60fe66p-1f,
+    -0x1p-55f, 0x1.ed1f24p+0f, -0x1.1dea1ap+0f, 0x1.607fa8p-1f,
     /* node 3221 y */
-    -0x1.24p-55f, -0x1.951e16p-1f, 0x1.2d613p+0f, -0x1.e3b0cep-4f,
+    -0x1.333334p-56f, -0x1.957bd4p-1f, 0x1.2d58a6p+0f, -0x1.e6039ep-4f,
     /* node 3221 z */
-    -0x1.99999ap-59f, 0x1.1439dp-3f, -0x1.e92c54p-3f, 0x1.5a3a0ep+1f,
+    -0x1.99999ap-58f, 0x1.1202eap-3f, -0x1.e91ca4p-3f, 0x1.59fa2p+1f,
     /* node 3222 x */
-    0x1.99999ap-62f, 0x1.d5ebd6p+0f, -0x1.1008b6p+0f, 0x1.813c22p-1f,
+    0x1.2e6666p-54f, 0x1.d5bae8p+0f, -0x1.0ffb2cp+0f, 0x1.80c1bcp-1f,
     /* node 3222 y */
-    -0x1.14ccccp-55f, -0x1.802452p-1f, 0x1.0ca9eap+0f, -0x1.161786p-4f,
+    0x1.a26666p-56f, -0x1.80acc2p-1f, 0x1.0cf28cp+0f, -0x1.14efc8p-4f,
     /* node 3222 z */
-    -0x1.333334p-56f, 0x1.180daep-3f, -0x1.9165dp-3f, 0x1.4ab2c8p+1f,
+    0x1.666666p-57f, 0x1.17c3f2p-3f, -0x1.90dcf8p-3f, 0x1.4ab18ap+1f,
     /* node 3223 x */
-    0x1.6p-55f, 0x1.b1cc94p+0f, -0x1.d3e2fep-1f, 0x1.7655aep-1f,
+    0x1.d66666p-55f, 0x1.b1d3dep+0f, -0x1.d435d6p-1f, 0x1.76265ep-1f,
     /* node 3223 y */
-    -0x1.34b334p-55f, -0x1.7635b4p-1f, 0x1.ebb04ep-1f, 0x1.bff65ap-7f,
+    0x1.133334p-58f, -0x1.76656ap-1f, 0x1.ebebaep-1f, 0x1.c16c24p-7f,
     /* node 3223 z */
-    -0x0p+0f, 0x1.b9d90ap-4f, -0x1.99ab3ep-4f, 0x1.3d968cp+1f,
+    -0x1.666666p-56f, 0x1.b866fcp-4f, -0x1.986cacp-4f, 0x1.3d74e4p+1f,
     /* node 3224 x */
-    0x1.ep-55f, 0x1.bdb5fp+0f, -0x1.f7d28ep-1f, 0x1.937cdp-1f,
+    0x1.4cccccp-56f, 0x1.bdca2cp+0f, -0x1.f84712p-1f, 0x1.938aap-1f,
     /* node 3224 y */
-    0x1.00d334p-57f, -0x1.6b0d6p-1f, 0x1.d40a3cp-1f, 0x1.21423cp-10f,
+    0x1.56a666p-56f, -0x1.6b329ep-1f, 0x1.d42294p-1f, 0x1.8ef6f8p-10f,
     /* node 3224 z */
-    -0x1.4cccccp-56f, 0x1.03b278p-3f, -0x1.1a8f04p-3f, 0x1.36c20ap+1f,
+    -0x1.333334p-56f, 0x1.02eddcp-3f, -0x1.1a111cp-3f, 0x1.36abb4p+1f,
     /* node 3225 x */
-    0x1.633334p-53f, 0x1.f53d8p+0f, -0x1.330d1ep+0f, 0x1.7688d2p-1f,
+    -0x1.04ccccp-54f, 0x1.f56478p+0f, -0x1.332b8ep+0f, 0x1.76562ep-1f,
     /* node 3225 y */
-    0x1.9p-56f, -0x1.8b0e04p-1f, 0x1.1aa39ep+0f, -0x1.0dd894p-3f,
+    0x1.766666p-56f, -0x1.8b6cb6p-1f, 0x1.1b29a2p+0f, -0x1.0c0328p-3f,
     /* node 3225 z */
-    -0x1.99999ap-60f, 0x1.3da4fap-3f, -0x1.17fc12p-2f, 0x1.4d6502p+1f,
+    -0x1p-56f, 0x1.3cfd86p-3f, -0x1.17baap-2f, 0x1.4d5d78p+1f,
     /* node 3226 x */
-    -0x1.166666p-54f, 0x1.e123cp+0f, -0x1.244bep+0f, 0x1.91fb6p-1f,
+    0x1.19999ap-57f, 0x1.e11962p+0f, -0x1.247acp+0f, 0x1.917a68p-1f,
     /* node 3226 y */
-    -0x1.8c6666p-54f, -0x1.74da9ep-1f, 0x1.fe34c4p-1f, -0x1.35e58p-4f,
+    -0x1.8f999ap-55f, -0x1.74d8fap-1f, 0x1.fdee02p-1f, -0x1.3700ecp-4f,
     /* node 3226 z */
-    -0x1.99999ap-58f, 0x1.2cf314p-3f, -0x1.c51552p-3f, 0x1.4003a2p+1f,
+    -0x1.99999ap-58f, 0x1.2b3868p-3f, -0x1.c47b4p-3f, 0x1.3fd2a8p+1f,
     /* node 3227 x */
-    0x1.0b3334p-54f, 0x1.962894p+0f, -0x1.b4b39ep-1f, 0x1.866b96p-1f,
+    0x1.19999ap-54f, 0x1.962338p+0f, -0x1.b4d73p-1f, 0x1.86528cp-1f,
     /* node 3227 y */
-    -0x1.20ccccp-56f, -0x1.5c6c4cp-1f, 0x1.a991fap-1f, 0x1.382b54p-4f,
+    -0x1.6cccccp-56f, -0x1.5cbd5p-1f, 0x1.a9b2a6p-1f, 0x1.37cdfap-4f,
     /* node 3227 z */
-    0x1.8p-56f, 0x1.922c4ep-4f, -0x1.b9fa24p-5f, 0x1.2654ccp+1f,
+    -0x1.99999ap-58f, 0x1.9060fcp-4f, -0x1.b76c72p-5f, 0x1.264242p+1f,
     /* node 3228 x */
-    0x1.033334p-54f, 0x1.7c533ep+0f, -0x1.910b56p-1f, 0x1.950c5ap-1f,
+    0x1.b33334p-57f, 0x1.7bf558p+0f, -0x1.912594p-1f, 0x1.941828p-1f,
     /* node 3228 y */
-    0x1.766666p-56f, -0x1.455b5cp-1f, 0x1.71b2dcp-1f, 0x1.f97502p-4f,
+    0x1.0a6666p-55f, -0x1.461826p-1f, 0x1.721e14p-1f, 0x1.f61f7ep-4f,
     /* node 3228 z */
-    -0x1.99999ap-59f, 0x1.5eaf82p-4f, -0x1.4ab192p-8f, 0x1.0fa3e6p+1f,
+    -0x1.333334p-58f, 0x1.597e16p-4f, -0x1.342c1ap-8f, 0x1.0f86e6p+1f,
     /* node 3229 x */
-    0x1.4p-54f, 0x1.a00f1cp+0f, -0x1.cfabcap-1f, 0x1.a4315ap-1f,
+    0x1.19999ap-54f, 0x1.a02b3ap+0f, -0x1.cfe1aep-1f, 0x1.a4284ep-1f,
     /* node 3229 y */
-    -0x1.d66666p-56f, -0x1.4f3852p-1f, 0x1.9281d8p-1f, 0x1.0a2d88p-4f,
+    -0x1.8e6666p-56f, -0x1.4fa384p-1f, 0x1.92c172p-1f, 0x1.0a1afp-4f,
     /* node 3229 z */
-    -0x1.333334p-56f, 0x1.d32364p-4f, -0x1.542eeep-4f, 0x1.20d0d2p+1f,
+    0x1p-56f, 0x1.d459fap-4f, -0x1.52e962p-4f, 0x1.20d02cp+1f,
     /* node 3230 x */
-    0x1.0cccccp-56f, 0x1.8fd542p+0f, -0x1.b8f14p-1f, 0x1.ba401ap-1f,
+    0x1.59999ap-55f, 0x1.901012p+0f, -0x1.b96a58p-1f, 0x1.ba963ep-1f,
     /* node 3230 y */
-    -0x1p-59f, -0x1.3486cep-1f, 0x1.5ec59ap-1f, 0x1.ce5e2ap-4f,
+    -0x1.74ccccp-56f, -0x1.345faap-1f, 0x1.5e9cbep-1f, 0x1.cfcc66p-4f,
     /* node 3230 z */
-    -0x1.99999ap-57f, 0x1.b60df6p-4f, -0x1.c48896p-5f, 0x1.0fac3cp+1f,
+    -0x1.333334p-58f, 0x1.b8ea9ep-4f, -0x1.c5afb4p-5f, 0x1.0fabaep+1f,
     /* node 3231 x */
-    -0x1.033334p-54f, 0x1.6b9bdp+0f, -0x1.7e9906p-1f, 0x1.a8ffbep-1f,
+    -0x1.d9999ap-55f, 0x1.6b6a18p+0f, -0x1.7e9788p-1f, 0x1.a8770cp-1f,
     /* node 3231 y */
-    -0x1.266666p-59f, -0x1.2a9a1cp-1f, 0x1.42d752p-1f, 0x1.42a22ep-3f,
+    0x1.666666p-56f, -0x1.2ba5eap-1f, 0x1.437a24p-1f, 0x1.3fe29ep-3f,
     /* node 3231 z */
-    -0x1p-57f, 0x1.488998p-4f, 0x1.cb4584p-7f, 0x1.fd3dbap+0f,
+    -0x1.99999ap-56f, 0x1.452866p-4f, 0x1.e1b4ep-7f, 0x1.fd199ep+0f,
     /* node 3232 x */
-    0x1.3p-54f, 0x1.7d720ap+0f, -0x1.9f8fbep-1f, 0x1.cdb4cp-1f,
+    -0x1p-55f, 0x1.7d75fap+0f, -0x1.a005cp-1f, 0x1.cd8f8cp-1f,
     /* node 3232 y */
-    -0x1.8cccccp-59f, -0x1.1eb6dep-1f, 0x1.3879e8p-1f, 0x1.35d3b8p-3f,
+    -0x1.133334p-56f, -0x1.1ee38p-1f, 0x1.38ab16p-1f, 0x1.35927p-3f,
     /* node 3232 z */
-    0x1.333334p-58f, 0x1.b106a6p-4f, -0x1.9401cap-6f, 0x1.00aeecp+1f,
+    0x1.ccccccp-57f, 0x1.b1433cp-4f, -0x1.93b806p-6f, 0x1.00b2b2p+1f,
     /* node 3233 x */
-    0x1.333334p-59f, 0x1.b39d4ap+0f, -0x1.fce2bp-1f, 0x1.c74088p-1f,
+    0x1.8p-57f, 0x1.b38c76p+0f, -0x1.fd516p-1f, 0x1.c6be34p-1f,
     /* node 3233 y */
-    -0x1.ap-60f, -0x1.41c522p-1f, 0x1.8208dap-1f, 0x1.813106p-5f,
+    0x1.dp-57f, -0x1.42089p-1f, 0x1.823c2cp-1f, 0x1.807f6ep-5f,
     /* node 3233 z */
-    -0x1.99999ap-56f, 0x1.10203ap-3f, -0x1.066b1ep-3f, 0x1.1e7294p+1f,
+    0x1.b33334p-56f, 0x1.0eb3e8p-3f, -0x1.05ae22p-3f, 0x1.1e5dc2p+1f,
     /* node 3234 x */
-    0x1.733334p-56f, 0x1.9f52d6p+0f, -0x1.ddd44ap-1f, 0x1.d5d28ep-1f,
+    0x1.ap-55f, 0x1.9f2c1ap+0f, -0x1.ddece6p-1f, 0x1.d539b2p-1f,
     /* node 3234 y */
-    -0x1.29999ap-57f, -0x1.2a4748p-1f, 0x1.5421a8p-1f, 0x1.99dd26p-4f,
+    0x1.48p-56f, -0x1.2b44eap-1f, 0x1.54d15ep-1f, 0x1.96055ep-4f,
     /* node 3234 z */
-    -0x1p-57f, 0x1.ed7efep-4f, -0x1.687b3p-4f, 0x1.0d883p+1f,
+    -0x1.4cccccp-56f, 0x1.e9215ep-4f, -0x1.65102cp-4f, 0x1.0d676ep+1f,
     /* node 3235 x */
-    -0x1.133334p-55f, 0x1.609deep+0f, -0x1.72e34p-1f, 0x1.b4ecf6p-1f,
+    0x1.8cccccp-56f, 0x1.60a40cp+0f, -0x1.73001ap-1f, 0x1.b4f60ep-1f,
     /* node 3235 y */
-    -0x1.de6666p-56f, -0x1.14b7bp-1f, 0x1.21ff52p-1f, 0x1.7f55dep-3f,
+    -0x1.cp-59f, -0x1.146996p-1f, 0x1.219cep-1f, 0x1.7f73a6p-3f,
     /* node 3235 z */
-    -0x1.333334p-57f, 0x1.40d8fep-4f, 0x1.acad86p-6f, 0x1.e5bb92p+0f,
+    -0x1.99999ap-57f, 0x1.434d02p-4f, 0x1.a9e1p-6f, 0x1.e5a6f4p+0f,
     /* node 3236 x */
-    0x1.cp-56f, 0x1.55f74p+0f, -0x1.656c86p-1f, 0x1.c58f2ep-1f,
+    -0x1p-58f, 0x1.55ea4p+0f, -0x1.657e52p-1f, 0x1.c57256p-1f,
     /* node 3236 y */
-    -0x1.566666p-56f, -0x1.078036p-1f, 0x1.0bf2e4p-1f, 0x1.8e9926p-3f,
+    -0x1.0e6666p-55f, -0x1.07ba68p-1f, 0x1.0c58f4p-1f, 0x1.8f6a9p-3f,
     /* node 3236 z */
-    -0x1.ccccccp-57f, 0x1.4dcfc6p-4f, 0x1.1929dp-5f, 0x1.d0d2e8p+0f,
+    -0x1p-57f, 0x1.4e29f6p-4f, 0x1.1d24bcp-5f, 0x1.d0df34p+0f,
     /* node 3237 x */
-    0x1p-58f, 0x1.71bc0cp+0f, -0x1.9074fcp-1f, 0x1.d85486p-1f,
+    0x1.666666p-56f, 0x1.71bc74p+0f, -0x1.90d974p-1f, 0x1.d801b8p-1f,
     /* node 3237 y */
-    -0x1.a66666p-56f, -0x1.09d29p-1f, 0x1.178942p-1f, 0x1.69a88cp-3f,
+    -0x1.99999ap-55f, -0x1.0abf86p-1f, 0x1.18bdeep-1f, 0x1.683a4ap-3f,
     /* node 3237 z */
-    -0x1.99999ap-60f, 0x1.9cab1ep-4f, -0x1.d8544ep-8f, 0x1.ea665ap+0f,
+    -0x1.99999ap-58f, 0x1.990dbp-4f, -0x1.a16928p-8f, 0x1.ea5312p+0f,
     /* node 3238 x */
-    0x1.d9999ap-55f, 0x1.67f95p+0f, -0x1.83646cp-1f, 0x1.e64ac4p-1f,
+    0x1.d9999ap-55f, 0x1.67be3cp+0f, -0x1.830bcp-1f, 0x1.e5e264p-1f,
     /* node 3238 y */
-    -0x1.4cccccp-57f, -0x1.f7c3f6p-2f, 0x1.04557ep-1f, 0x1.8f783p-3f,
+    0x1.233334p-55f, -0x1.f7e838p-2f, 0x1.03c8dcp-1f, 0x1.8ff3bep-3f,
     /* node 3238 z */
-    0x1.666666p-57f, 0x1.99e3bep-4f, 0x1.da913ap-10f, 0x1.d60bf6p+0f,
+    0x1.99999ap-58f, 0x1.99632ep-4f, 0x1.2e384ap-9f, 0x1.d5d426p+0f,
     /* node 3239 x */
-    -0x1.99999ap-56f, 0x1.4e7ad6p+0f, -0x1.58ddd6p-1f, 0x1.d76f8p-1f,
+    0x1.0cccccp-54f, 0x1.4e9458p+0f, -0x1.596756p-1f, 0x1.d76bd2p-1f,
     /* node 3239 y */
-    -0x1.7cccccp-56f, -0x1.e347b2p-2f, 0x1.e5c426p-2f, 0x1.cbbbbap-3f,
+    -0x1.21999ap-55f, -0x1.e3ba54p-2f, 0x1.e6f7p-2f, 0x1.cbc9d4p-3f,
     /* node 3239 z */
-    -0x1.4cccccp-56f, 0x1.5c3852p-4f, 0x1.55a732p-5f, 0x1.bf6daap+0f,
+    0x1.99999ap-59f, 0x1.5d6778p-4f, 0x1.53d7bp-5f, 0x1.bfb6d6p+0f,
     /* node 3240 x */
-    0x1.933334p-54f, 0x1.5dbe2ap+0f, -0x1.7388fp-1f, 0x1.f55cfp-1f,
+    -0x1.666666p-58f, 0x1.5daeep+0f, -0x1.73b6a6p-1f, 0x1.f5484p-1f,
     /* node 3240 y */
-    0x1.99999ap-61f, -0x1.cddd54p-2f, 0x1.d0083p-2f, 0x1.cce324p-3f,
+    -0x1.f9999ap-57f, -0x1.cedfb2p-2f, 0x1.d0e2dcp-2f, 0x1.cb167ep-3f,
     /* node 3240 z */
-    0x1.99999ap-59f, 0x1.a14234p-4f, 0x1.63b99cp-7f, 0x1.c3af14p+0f,
+    -0x1.666666p-56f, 0x1.a29ef8p-4f, 0x1.583ae6p-7f, 0x1.c395dep+0f,
     /* node 3241 x */
-    0x1.5cccccp-54f, 0x1.80df78p+0f, -0x1.b0035p-1f, 0x1.f00db8p-1f,
+    0x1.566666p-54f, 0x1.80c3ep+0f, -0x1.b0613ap-1f, 0x1.efa49ep-1f,
     /* node 3241 y */
-    -0x1.c8p-56f, -0x1.02cf26p-1f, 0x1.12897cp-1f, 0x1.54a06cp-3f,
+    0x1.133334p-58f, -0x1.033222p-1f, 0x1.12efe4p-1f, 0x1.537248p-3f,
     /* node 3241 z */
-    -0x1.8p-56f, 0x1.c7a23cp-4f, -0x1.4d5a7cp-5f, 0x1.eac162p+0f,
+    -0x1.99999ap-60f, 0x1.c61a5p-4f, -0x1.508cccp-5f, 0x1.ea8a46p+0f,
     /* node 3242 x */
-    0x1.0cccccp-55f, 0x1.7601d6p+0f, -0x1.9e83b4p-1f, 0x1.fdc996p-1f,
+    -0x1.4cccccp-57f, 0x1.75da5ep+0f, -0x1.9eadb6p-1f, 0x1.fd52bcp-1f,
     /* node 3242 y */
-    -0x1.5cccccp-56f, -0x1.da9cbep-2f, 0x1.ed2b76p-2f, 0x1.9d2b3ap-3f,
+    -0x1.333334p-60f, -0x1.da9efep-2f, 0x1.ec8984p-2f, 0x1.9d3616p-3f,
     /* node 3242 z */
-    0x1p-57f, 0x1.d02b52p-4f, -0x1.c358b8p-6f, 0x1.d57bd6p+0f,
+    -0x1.ccccccp-57f, 0x1.ce4ad8p-4f, -0x1.bc5ac4p-6f, 0x1.d53bf6p+0f,
     /* node 3243 x */
-    0x1.6cccccp-55f, 0x1.44cb08p+0f, -0x1.4b4de4p-1f, 0x1.e16ee2p-1f,
+    0x1.09999ap-54f, 0x1.44c14p+0f, -0x1.4b9b8p-1f, 0x1.e10ec4p-1f,
     /* node 3243 y */
-    -0x1.2b3334p-55f, -0x1.babdb8p-2f, 0x1.b05c82p-2f, 0x1.fd1472p-3f,
+    -0x1.8cccccp-56f, -0x1.bb60bp-2f, 0x1.b14bc2p-2f, 0x1.fcc3fcp-3f,
     /* node 3243 z */
-    -0x1.99999ap-57f, 0x1.4c977cp-4f, 0x1.834b42p-5f, 0x1.aa8296p+0f,
+    -0x1.333334p-57f, 0x1.4b0046p-4f, 0x1.85daa2p-5f, 0x1.aa65e2p+0f,
     /* node 3244 x */
-    -0x1.ccccccp-57f, 0x1.3ce24ep+0f, -0x1.3e24fcp-1f, 0x1.f0ba1ep-1f,
+    0x1.8p-57f, 0x1.3cc78cp+0f, -0x1.3e3a92p-1f, 0x1.f043fap-1f,
     /* node 3244 y */
-    -0x1.a66666p-57f, -0x1.93567p-2f, 0x1.8b36fap-2f, 0x1.140774p-2f,
+    0x1.2p-57f, -0x1.940752p-2f, 0x1.8bc1aap-2f, 0x1.13b7cp-2f,
     /* node 3244 z */
-    -0x1.333334p-57f, 0x1.5da694p-4f, 0x1.9085a6p-5f, 0x1.9a021ap+0f,
+    -0x1.ccccccp-56f, 0x1.5b582cp-4f, 0x1.958a4p-5f, 0x1.99d248p+0f,
     /* node 3245 x */
-    0x1.8p-55f, 0x1.566038p+0f, -0x1.67216ap-1f, 0x1.fd6cfep-1f,
+    -0x1.666666p-58f, 0x1.566e64p+0f, -0x1.678186p-1f, 0x1.fd6092p-1f,
     /* node 3245 y */
-    -0x1.8p-59f, -0x1.a5e44ep-2f, 0x1.a65d28p-2f, 0x1.fe65e8p-3f,
+    0x1.19999ap-59f, -0x1.a675ap-2f, 0x1.a70ep-2f, 0x1.fe5168p-3f,
     /* node 3245 z */
-    0x1.99999ap-58f, 0x1.a099fep-4f, 0x1.f8de14p-7f, 0x1.b0e84p+0f,
+    -0x1.ccccccp-57f, 0x1.a11d3ep-4f, 0x1.f4393ap-7f, 0x1.b0ef62p+0f,
     /* node 3249 x */
-    0x1.933334p-54f, 0x1.64caa6p+0f, -0x1.812f16p-1f, 0x1.0b1f9p+0f,
+    0x1.9p-54f, 0x1.64af48p+0f, -0x1.815b68p-1f, 0x1.0aebb4p+0f,
     /* node 3249 y */
-    -0x1.99999ap-62f, -0x1.8a54ap-2f, 0x1.910d1ap-2f, 0x1.009564p-2f,
+    -0x1.2p-56f, -0x1.8ab798p-2f, 0x1.9167c6p-2f, 0x1.00c822p-2f,
     /* node 3249 z */
-    -0x1.99999ap-57f, 0x1.ecb3eep-4f, -0x1.a512bap-7f, 0x1.b1f22p+0f,
+    -0x1.333334p-58f, 0x1.eb8436p-4f, -0x1.97e7bep-7f, 0x1.b1c81ap+0f,
     /* node 3257 x */
-    -0x1.ccccccp-57f, 0x1.2978c8p+1f, -0x1.910d2p+0f, 0x1.4771e2p-2f,
+    -0x1.1cccccp-54f, 0x1.298802p+1f, -0x1.916a86p+0f, 0x1.474336p-2f,
     /* node 3257 y */
-    0x1.5p-56f, -0x1.cd09bcp-1f, 0x1.835da2p+0f, -0x1.887468p-3f,
+    0x1.6p-55f, -0x1.cd3fdep-1f, 0x1.836f4p+0f, -0x1.8856bp-3f,
     /* node 3257 z */
-    -0x1.4cccccp-56f, 0x1.88457ep-3f, -0x1.45b9d8p-2f, 0x1.4b3f84p+1f,
+    -0x1.266666p-55f, 0x1.879e8cp-3f, -0x1.45abfap-2f, 0x1.4b3312p+1f,
     /* node 3258 x */
-    -0x1.6p-57f, 0x1.2e680ap+1f, -0x1.9fc5bcp+0f, 0x1.45aed4p-2f,
+    0x1.88p-55f, 0x1.2e70fep+1f, -0x1.a002b4p+0f, 0x1.451bfcp-2f,
     /* node 3258 y */
-    -0x1.1b3334p-56f, -0x1.cc4226p-1f, 0x1.766108p+0f, -0x1.6c7286p-3f,
+    -0x1.fa6666p-55f, -0x1.cc86f8p-1f, 0x1.76ac1cp+0f, -0x1.6ca26p-3f,
     /* node 3258 z */
-    0x1.333334p-58f, 0x1.a96e32p-3f, -0x1.45c288p-2f, 0x1.4663d6p+1f,
+    0x1.666666p-57f, 0x1.a8a502p-3f, -0x1.46325p-2f, 0x1.465b6cp+1f,
     /* node 3259 x */
-    -0x1.48p-55f, 0x1.2c1638p+1f, -0x1.9a6116p+0f, 0x1.7df642p-2f,
+    -0x1.4b3334p-55f, 0x1.2c1fcp+1f, -0x1.9aa3dap+0f, 0x1.7da9c2p-2f,
     /* node 3259 y */
-    -0x1.99999ap-62f, -0x1.c5cf56p-1f, 0x1.6f5ca4p+0f, -0x1.803b84p-3f,
+    -0x1.3a6666p-54f, -0x1.c5f56ep-1f, 0x1.6f3c0ap+0f, -0x1.7f62d2p-3f,
     /* node 3259 z */
-    -0x1.99999ap-60f, 0x1.a045fcp-3f, -0x1.5b177cp-2f, 0x1.470ee8p+1f,
+    -0x1p-57f, 0x1.9e8e3ep-3f, -0x1.5a2ccap-2f, 0x1.46f84cp+1f,
     /* node 3260 x */
-    0x1.84ccccp-55f, 0x1.26eae2p+1f, -0x1.8c9a4cp+0f, 0x1.8176bep-2f,
+    0x1.ecp-54f, 0x1.26ffp+1f, -0x1.8ce8dcp+0f, 0x1.8146d2p-2f,
     /* node 3260 y */
-    -0x1.60ccccp-54f, -0x1.c5f8e2p-1f, 0x1.789734p+0f, -0x1.96b82p-3f,
+    -0x1.0e6666p-55f, -0x1.c6379ap-1f, 0x1.78b3cp+0f, -0x1.96155ep-3f,
     /* node 3260 z */
-    0x1.b33334p-56f, 0x1.7de3c6p-3f, -0x1.5820a2p-2f, 0x1.4b1044p+1f,
+    -0x1.ccccccp-56f, 0x1.7cfebap-3f, -0x1.585564p-2f, 0x1.4b058ep+1f,
     /* node 3261 x */
-    -0x1.a33334p-56f, 0x1.23f764p+1f, -0x1.7ed234p+0f, 0x1.464604p-2f,
+    0x1.ap-57f, 0x1.2402b8p+1f, -0x1.7ef01ep+0f, 0x1.45a5bap-2f,
     /* node 3261 y */
-    0x1.1p-55f, -0x1.cd4bdep-1f, 0x1.9487bap+0f, -0x1.bbadf4p-3f,
+    -0x1.48p-55f, -0x1.cd9dccp-1f, 0x1.94c12p+0f, -0x1.bb9806p-3f,
     /* node 3261 z */
-    -0x1.4p-55f, 0x1.6b1178p-3f, -0x1.5a9dc2p-2f, 0x1.521084p+1f,
+    -0x1.4p-55f, 0x1.69cae2p-3f, -0x1.5a3992p-2f, 0x1.51fdcp+1f,
     /* node 3262 x */
-    -0x1.e9999ap-54f, 0x1.20f7e6p+1f, -0x1.785e8p+0f, 0x1.8f7e5ep-2f,
+    0x1.bp-54f, 0x1.2105d6p+1f, -0x1.7891b6p+0f, 0x1.8f518ap-2f,
     /* node 3262 y */
-    -0x1.2cccccp-56f, -0x1.c62334p-1f, 0x1.893d08p+0f, -0x1.ca7dfcp-3f,
+    -0x1.00ccccp-54f, -0x1.c66ce8p-1f, 0x1.8956fcp+0f, -0x1.ca658ep-3f,
     /* node 3262 z */
-    -0x1.8p-56f, 0x1.5d5bdap-3f, -0x1.5f3722p-2f, 0x1.536efcp+1f,
+    0x1p-57f, 0x1.5c2f26p-3f, -0x1.5e9978p-2f, 0x1.535c6p+1f,
     /* node 3263 x */
-    0x1.4cccccp-54f, 0x1.24817cp+1f, -0x1.8a7248p+0f, 0x1.cd18a8p-2f,
+    -0x1.a8p-54f, 0x1.248ceep+1f, -0x1.8aac1p+0f, 0x1.ccb2f2p-2f,
     /* node 3263 y */
-    -0x1.d33334p-57f, -0x1.bffa12p-1f, 0x1.6f04b8p+0f, -0x1.b0bd0ap-3f,
+    -0x1.2cccccp-55f, -0x1.c04c26p-1f, 0x1.6f26f2p+0f, -0x1.b0a796p-3f,
     /* node 3263 z */
-    -0x1p-57f, 0x1.7a7d36p-3f, -0x1.6978fp-2f, 0x1.4aba5ap+1f,
+    -0x1p-57f, 0x1.79a688p-3f, -0x1.6938ecp-2f, 0x1.4aabp+1f,
     /* node 3264 x */
-    0x1.70ccccp-53f, 0x1.1e8696p+1f, -0x1.76206cp+0f, 0x1.df504p-2f,
+    -0x1.19999ap-55f, 0x1.1e9db4p+1f, -0x1.765ee2p+0f, 0x1.df33b4p-2f,
     /* node 3264 y */
-    0x1.d9999ap-58f, -0x1.bfad18p-1f, 0x1.7ca678p+0f, -0x1.e7383ep-3f,
+    -0x1.266666p-55f, -0x1.bff6b8p-1f, 0x1.7ccad4p+0f, -0x1.e7105cp-3f,
     /* node 3264 z */
-    -0x1.cp-55f, 0x1.5a1fecp-3f, -0x1.68144ap-2f, 0x1.52fd08p+1f,
+    -0x1.333334p-57f, 0x1.59351ep-3f, -0x1.67caaap-2f, 0x1.52ed0cp+1f,
     /* node 3265 x */
-    0x1.68p-54f, 0x1.1ff4e4p+1f, -0x1.8266cep+0f, 0x1.08558ap-1f,
+    0x1.066666p-55f, 0x1.1fff9cp+1f, -0x1.82923ep+0f, 0x1.081e72p-1f,
     /* node 3265 y */
-    -0x1.28p-55f, -0x1.b7befcp-1f, 0x1.643ef2p+0f, -0x1.bf243ap-3f,
+    0x1.d33334p-57f, -0x1.b7fbf2p-1f, 0x1.64514ap+0f, -0x1.beaefep-3f,
     /* node 3265 z */
-    0x1p-57f, 0x1.71079cp-3f, -0x1.72f722p-2f, 0x1.4b5066p+1f,
+    -0x1.99999ap-58f, 0x1.7004d4p-3f, -0x1.729ae4p-2f, 0x1.4b3fd8p+1f,
     /* node 3266 x */
-    -0x1.233334p-55f, 0x1.19b2c8p+1f, -0x1.6d832ap+0f, 0x1.10707ap-1f,
+    -0x1.18p-53f, 0x1.19bd68p+1f, -0x1.6db096p+0f, 0x1.103e66p-1f,
     /* node 3266 y */
-    -0x1p-57f, -0x1.b940a4p-1f, 0x1.6a4912p+0f, -0x1.e77f68p-3f,
+    0x1.ccccccp-58f, -0x1.b970aep-1f, 0x1.6a5624p+0f, -0x1.e7036cp-3f,
     /* node 3266 z */
-    0x1p-56f, 0x1.5d2d7ap-3f, -0x1.7ce89ep-2f, 0x1.53fc62p+1f,
+    -0x1.e66666p-56f, 0x1.5c791ep-3f, -0x1.7c7a12p-2f, 0x1.53f0b6p+1f,
     /* node 3267 x */
-    0x1.b1999ap-54f, 0x1.1b68a2p+1f, -0x1.7a6b4p+0f, 0x1.295d2cp-1f,
+    0x1.19999ap-54f, 0x1.1b6ee6p+1f, -0x1.7a981ap+0f, 0x1.291386p-1f,
     /* node 3267 y */
-    -0x1.7p-55f, -0x1.abef76p-1f, 0x1.50902ap+0f, -0x1.a867ep-3f,
+    -0x1.0e6666p-55f, -0x1.ac2d3p-1f, 0x1.50a2ecp+0f, -0x1.a84758p-3f,
     /* node 3267 z */
-    -0x1.666666p-55f, 0x1.738b44p-3f, -0x1.705d4cp-2f, 0x1.49802cp+1f,
+    -0x1.4cccccp-56f, 0x1.729f6ep-3f, -0x1.700d0ep-2f, 0x1.4974a4p+1f,
     /* node 3268 x */
-    0x1.ccccccp-54f, 0x1.2644fap+1f, -0x1.928bb8p+0f, 0x1.fe066ap-2f,
+    0x1.3p-54f, 0x1.264b12p+1f, -0x1.92c39ep+0f, 0x1.fd4d44p-2f,
     /* node 3268 y */
-    -0x1.4p-58f, -0x1.b6adbep-1f, 0x1.5b824cp+0f, -0x1.8c6262p-3f,
+    -0x1.6cccccp-55f, -0x1.b6f428p-1f, 0x1.5b9a2cp+0f, -0x1.8c2b2ap-3f,
     /* node 3268 z */
-    -0x1.333334p-56f, 0x1.8df95ap-3f, -0x1.69ac3p-2f, 0x1.45e278p+1f,
+    0x1.99999ap-57f, 0x1.8cdfa2p-3f, -0x1.694a2ep-2f, 0x1.45d1dep+1f,
     /* node 3269 x */
-    -0x1.266666p-55f, 0x1.22d5cep+1f, -0x1.8e9598p+0f, 0x1.21ac28p-1f,
+    0x1.7b3334p-54f, 0x1.22cd0cp+1f, -0x1.8ea9c8p+0f, 0x1.216744p-1f,
     /* node 3269 y */
-    -0x1.ae6666p-55f, -0x1.adf0eap-1f, 0x1.50f52ep+0f, -0x1.90f032p-3f,
+    0x1.2cccccp-56f, -0x1.adfffcp-1f, 0x1.50efa8p+0f, -0x1.904c04p-3f,
     /* node 3269 z */
-    0x1.666666p-56f, 0x1.8c5a7ap-3f, -0x1.754e7p-2f, 0x1.45b9bap+1f,
+    -0x1.99999ap-60f, 0x1.8bc106p-3f, -0x1.753608p-2f, 0x1.45a6a8p+1f,
     /* node 3270 x */
-    -0x1.49999ap-55f, 0x1.13abe2p+1f, -0x1.64fa9cp+0f, 0x1.33360ep-1f,
+    -0x1.fp-54f, 0x1.13ba54p+1f, -0x1.653462p+0f, 0x1.3305a4p-1f,
     /* node 3270 y */
-    0x1.b33334p-59f, -0x1.a9fdc8p-1f, 0x1.539c02p+0f, -0x1.c1a0b2p-3f,
+    -0x1.c66666p-56f, -0x1.aa205ap-1f, 0x1.53afccp+0f, -0x1.c0b5d2p-3f,
     /* node 3270 z */
-    -0x1.333334p-57f, 0x1.5057e6p-3f, -0x1.700484p-2f, 0x1.529128p+1f,
+    -0x1.e66666p-56f, 0x1.4fa318p-3f, -0x1.6f8a6ep-2f, 0x1.528b6p+1f,
     /* node 3271 x */
-    -0x1.bcccccp-55f, 0x1.0e559ap+1f, -0x1.5ccdb2p+0f, 0x1.571246p-1f,
+    -0x1.9cccccp-55f, 0x1.0e5a6p+1f, -0x1.5cf0a8p+0f, 0x1.56e8e2p-1f,
     /* node 3271 y */
-    -0x1.59999ap-58f, -0x1.a22daap-1f, 0x1.3fec0cp+0f, -0x1.a828dep-3f,
+    -0x1.6cccccp-57f, -0x1.a259b6p-1f, 0x1.40056cp+0f, -0x1.a7772ep-3f,
     /* node 3271 z */
-    -0x1.4cccccp-56f, 0x1.58d6e4p-3f, -0x1.65e0aap-2f, 0x1.4ef80ep+1f,
+    -0x1.4cccccp-56f, 0x1.583eep-3f, -0x1.65695ap-2f, 0x1.4ef03p+1f,
     /* node 3272 x */
-    -0x1.51999ap-53f, 0x1.16d8e4p+1f, -0x1.74dba4p+0f, 0x1.4b0c2p-1f,
+    -0x1.fp-55f, 0x1.16d92cp+1f, -0x1.74f48cp+0f, 0x1.4aceb2p-1f,
     /* node 3272 y */
-    -0x1.b33334p-57f, -0x1.a3e29ap-1f, 0x1.43368cp+0f, -0x1.a6a9eep-3f,
+    -0x1.4cccccp-56f, -0x1.a419a2p-1f, 0x1.434c68p+0f, -0x1.a65258p-3f,
     /* node 3272 z */
-    -0x1.99999ap-56f, 0x1.6a4dacp-3f, -0x1.73c4ccp-2f, 0x1.486138p+1f,
+    -0x1.333334p-55f, 0x1.69198cp-3f, -0x1.73545ap-2f, 0x1.485292p+1f,
     /* node 3273 x */
-    0x1.59999ap-54f, 0x1.116ddp+1f, -0x1.6b1086p+0f, 0x1.69bf58p-1f,
+    0x1.666666p-57f, 0x1.11645cp+1f, -0x1.6b27c8p+0f, 0x1.695a0cp-1f,
     /* node 3273 y */
-    -0x1.226666p-55f, -0x1.976892p-1f, 0x1.2fa55ep+0f, -0x1.7ba152p-3f,
+    -0x1.0cccccp-58f, -0x1.97b278p-1f, 0x1.2fc88p+0f, -0x1.7b6018p-3f,
     /* node 3273 z */
-    -0x1.99999ap-59f, 0x1.6c4fe6p-3f, -0x1.63b69p-2f, 0x1.45fdfp+1f,
+    -0x1.19999ap-56f, 0x1.6b61fp-3f, -0x1.6345bep-2f, 0x1.45f474p+1f,
     /* node 3274 x */
-    0x1.69999ap-53f, 0x1.072a58p+1f, -0x1.52aa02p+0f, 0x1.6dc664p-1f,
+    0x1.d9999ap-56f, 0x1.072f12p+1f, -0x1.52d6cep+0f, 0x1.6d84f2p-1f,
     /* node 3274 y */
-    -0x1.4e6666p-56f, -0x1.9279c2p-1f, 0x1.2681dcp+0f, -0x1.579824p-3f,
+    -0x1.733334p-55f, -0x1.92973ep-1f, 0x1.26b4p+0f, -0x1.567a3cp-3f,
     /* node 3274 z */
-    -0x1.0cccccp-55f, 0x1.4f4f8ap-3f, -0x1.49de18p-2f, 0x1.48f50ep+1f,
+    0x1p-57f, 0x1.4def8ap-3f, -0x1.49774p-2f, 0x1.48e18p+1f,
     /* node 3275 x */
-    0x1.d9999ap-56f, 0x1.0aafcp+1f, -0x1.60fbep+0f, 0x1.811616p-1f,
+    0x1.c33334p-55f, 0x1.0aae42p+1f, -0x1.611e06p+0f, 0x1.80c186p-1f,
     /* node 3275 y */
-    -0x1.59999ap-58f, -0x1.84e55cp-1f, 0x1.17d66p+0f, -0x1.350fe2p-3f,
+    0x1.1e6666p-55f, -0x1.85354ap-1f, 0x1.17f602p+0f, -0x1.356028p-3f,
     /* node 3275 z */
-    -0x0p+0f, 0x1.6da1c6p-3f, -0x1.4ff82p-2f, 0x1.407e84p+1f,
+    -0x1.19999ap-56f, 0x1.6cc76cp-3f, -0x1.4f9684p-2f, 0x1.40742ep+1f,
     /* node 3276 x */
-    0x1.3p-53f, 0x1.19e5ccp+1f, -0x1.7f1098p+0f, 0x1.5c7a36p-1f,
+    -0x1.cp-57f, 0x1.19e34p+1f, -0x1.7f2e62p+0f, 0x1.5c3106p-1f,
     /* node 3276 y */
-    0x1.34p-55f, -0x1.99df9p-1f, 0x1.33cf2cp+0f, -0x1.6a21fap-3f,
+    -0x1.acccccp-58f, -0x1.9a349p-1f, 0x1.33f428p+0f, -0x1.6a1a86p-3f,
     /* node 3276 z */
-    0x1.333334p-58f, 0x1.7ee26ep-3f, -0x1.666224p-2f, 0x1.4171fcp+1f,
+    0x1.666666p-56f, 0x1.7df9e2p-3f, -0x1.66074cp-2f, 0x1.416592p+1f,
     /* node 3277 x */
-    -0x1.333334p-58f, 0x1.1456ep+1f, -0x1.779d12p+0f, 0x1.7bd7fcp-1f,
+    0x1.0a6666p-53f, 0x1.144de8p+1f, -0x1.77b66cp+0f, 0x1.7b8012p-1f,
     /* node 3277 y */
-    -0x1.59999ap-55f, -0x1.8c19d4p-1f, 0x1.214e9cp+0f, -0x1.5967eep-3f,
+    -0x1.38ccccp-54f, -0x1.8c580ap-1f, 0x1.216e62p+0f, -0x1.590cdcp-3f,
     /* node 3277 z */
-    -0x1.ccccccp-57f, 0x1.85a278p-3f, -0x1.674a0cp-2f, 0x1.3ec2bcp+1f,
+    0x1.99999ap-57f, 0x1.84b22p-3f, -0x1.66e18cp-2f, 0x1.3eb3d4p+1f,
     /* node 3278 x */
-    -0x1.7p-54f, 0x1.fe69a8p+0f, -0x1.4553dcp+0f, 0x1.8e05bap-1f,
+    0x1.8p-55f, 0x1.fe4accp+0f, -0x1.456b84p+0f, 0x1.8d90fcp-1f,
     /* node 3278 y */
-    -0x1.466666p-56f, -0x1.7e6d9ep-1f, 0x1.0d4972p+0f, -0x1.f79a3p-4f,
+    -0x1.49999ap-57f, -0x1.7ea5eep-1f, 0x1.0d62c2p+0f, -0x1.f7ed48p-4f,
     /* node 3278 z */
-    -0x1.666666p-56f, 0x1.532fbep-3f, -0x1.24a124p-2f, 0x1.41647ap+1f,
+    -0x1.19999ap-56f, 0x1.52c5ep-3f, -0x1.24a6fcp-2f, 0x1.414efep+1f,
     /* node 3279 x */
-    0x1.cp-56f, 0x1.edd838p+0f, -0x1.383934p+0f, 0x1.a8c48ep-1f,
+    -0x1.c66666p-54f, 0x1.edecbcp+0f, -0x1.3869f8p+0f, 0x1.a878ap-1f,
     /* node 3279 y */
-    -0x1.4e6666p-57f, -0x1.67a2fcp-1f, 0x1.e01c02p-1f, -0x1.398efap-4f,
+    -0x1.4d999ap-55f, -0x1.67f07p-1f, 0x1.e06924p-1f, -0x1.383af2p-4f,
     /* node 3279 z */
-    0x1.333334p-56f, 0x1.4c75aep-3f, -0x1.f5bd24p-3f, 0x1.36d588p+1f,
+    -0x1.19999ap-56f, 0x1.4ccff6p-3f, -0x1.f5c1bep-3f, 0x1.36d40cp+1f,
     /* node 3280 x */
-    0x1.6p-55f, 0x1.04e072p+1f, -0x1.56fb6ep+0f, 0x1.a2218ap-1f,
+    -0x1.ep-55f, 0x1.04da08p+1f, -0x1.571d2p+0f, 0x1.a1c71ap-1f,
     /* node 3280 y */
-    0x1.8p-59f, -0x1.72c8d2p-1f, 0x1.ff6c88p-1f, -0x1.d009c8p-4f,
+    -0x1.4cccccp-55f, -0x1.7312a4p-1f, 0x1.ffcf22p-1f, -0x1.cf6394p-4f,
     /* node 3280 z */
-    0x1.333334p-56f, 0x1.6fac24p-3f, -0x1.363ddp-2f, 0x1.391b72p+1f,
+    0x1.ccccccp-57f, 0x1.6eaa3ap-3f, -0x1.35d072p-2f, 0x1.390b5ap+1f,
     /* node 3281 x */
-    0x1.59999ap-55f, 0x1.f7356cp+0f, -0x1.455d3ep+0f, 0x1.bca886p-1f,
+    0x1.066666p-55f, 0x1.f7448ep+0f, -0x1.459d7cp+0f, 0x1.bc3788p-1f,
     /* node 3281 y */
-    0x1.6cccccp-59f, -0x1.597f88p-1f, 0x1.cbdba6p-1f, -0x1.f2e95cp-5f,
+    -0x1.66p-55f, -0x1.5a01ap-1f, 0x1.cc31cep-1f, -0x1.f714aap-5f,
     /* node 3281 z */
-    0x1.99999ap-58f, 0x1.684918p-3f, -0x1.0d7c28p-2f, 0x1.2fce4cp+1f,
+    -0x1.333334p-58f, 0x1.66cf7ap-3f, -0x1.0cd9d2p-2f, 0x1.2faee2p+1f,
     /* node 3282 x */
-    0x1.b33334p-55f, 0x1.dc7156p+0f, -0x1.273f4ep+0f, 0x1.c759cap-1f,
+    0x1.333334p-54f, 0x1.dc9afcp+0f, -0x1.27898ep+0f, 0x1.c75538p-1f,
     /* node 3282 y */
-    -0x1.19199ap-55f, -0x1.4f8fc6p-1f, 0x1.ad589cp-1f, -0x1.fa7d94p-7f,
+    -0x1.884cccp-55f, -0x1.4f75eap-1f, 0x1.ad4f6ep-1f, -0x1.ea611p-7f,
     /* node 3282 z */
-    0x1.b33334p-56f, 0x1.45c97cp-3f, -0x1.a6cefcp-3f, 0x1.298a8p+1f,
+    -0x1.19999ap-55f, 0x1.4658e4p-3f, -0x1.a6cedcp-3f, 0x1.29873cp+1f,
     /* node 3283 x */
-    0x1.e66666p-54f, 0x1.e88ea8p+0f, -0x1.37f2d4p+0f, 0x1.dca14cp-1f,
+    0x1.766666p-54f, 0x1.e8306ep+0f, -0x1.37ef58p+0f, 0x1.db92a8p-1f,
     /* node 3283 y */
-    0x1.813334p-57f, -0x1.430642p-1f, 0x1.99ef7ap-1f, -0x1.794edap-7f,
+    -0x1.6b3334p-55f, -0x1.4398c8p-1f, 0x1.9a710cp-1f, -0x1.99924ap-7f,
     /* node 3283 z */
-    -0x1.333334p-56f, 0x1.61d69ap-3f, -0x1.d533aap-3f, 0x1.2489f8p+1f,
+    0x1.99999ap-57f, 0x1.5f12fp-3f, -0x1.d31ea6p-3f, 0x1.245784p+1f,
     /* node 3284 x */
-    -0x1.19999ap-56f, 0x1.086838p+1f, -0x1.61995ep+0f, 0x1.b51c52p-1f,
+    0x1.3cccccp-53f, 0x1.08597ep+1f, -0x1.61a9a4p+0f, 0x1.b4abf6p-1f,
     /* node 3284 y */
-    -0x1.866666p-57f, -0x1.64709ap-1f, 0x1.e895bep-1f, -0x1.8dfe54p-4f,
+    -0x1.466666p-57f, -0x1.649b3ap-1f, 0x1.e8b4c4p-1f, -0x1.8d3202p-4f,
     /* node 3284 z */
-    -0x1.99999ap-59f, 0x1.7ffb1p-3f, -0x1.2febe8p-2f, 0x1.30b9eap+1f,
+    -0x1.333334p-57f, 0x1.7f08fp-3f, -0x1.2f7b88p-2f, 0x1.30a69ep+1f,
     /* node 3285 x */
-    0x1.1b3334p-53f, 0x1.016a6p+1f, -0x1.5460eap+0f, 0x1.d22baep-1f,
+    0x1.333334p-54f, 0x1.018116p+1f, -0x1.54adc6p+0f, 0x1.d22ec4p-1f,
     /* node 3285 y */
-    -0x1.24ccccp-55f, -0x1.4c96bcp-1f, 0x1.b7daa8p-1f, -0x1.95a11ap-5f,
+    -0x1.54ccccp-56f, -0x1.4d1e3p-1f, 0x1.b84ce8p-1f, -0x1.98a296p-5f,
     /* node 3285 z */
-    0x1.99999ap-60f, 0x1.7df0d8p-3f, -0x1.137394p-2f, 0x1.27fc06p+1f,
+    -0x1.666666p-56f, 0x1.7e298p-3f, -0x1.137036p-2f, 0x1.27fa96p+1f,
     /* node 3286 x */
-    -0x1.666666p-58f, 0x1.c6869ap+0f, -0x1.14af18p+0f, 0x1.def792p-1f,
+    0x1.cp-56f, 0x1.c680aap+0f, -0x1.14db1ap+0f, 0x1.de67cep-1f,
     /* node 3286 y */
-    -0x1.ab3334p-58f, -0x1.35de98p-1f, 0x1.78020ap-1f, 0x1.2ce474p-5f,
+    0x1.173334p-55f, -0x1.36515ap-1f, 0x1.786fd2p-1f, 0x1.292b34p-5f,
     /* node 3286 z */
-    -0x1.4p-55f, 0x1.3ce344p-3f, -0x1.541348p-3f, 0x1.1c613p+1f,
+    0x1.666666p-57f, 0x1.3cad9ap-3f, -0x1.53b544p-3f, 0x1.1c4ef6p+1f,
     /* node 3287 x */
-    0x1.8cccccp-55f, 0x1.b62b52p+0f, -0x1.070bfcp+0f, 0x1.f50bb4p-1f,
+    -0x1.99999ap-56f, 0x1.b678bep+0f, -0x1.076786p+0f, 0x1.f548cap-1f,
     /* node 3287 y */
-    -0x1.48ccccp-56f, -0x1.1dd4aep-1f, 0x1.4cb9c6p-1f, 0x1.6b4f08p-4f,
+    -0x1.473334p-55f, -0x1.1d8226p-1f, 0x1.4c519cp-1f, 0x1.6d13eep-4f,
     /* node 3287 z */
-    -0x1.99999ap-57f, 0x1.30e8acp-3f, -0x1.1254e4p-3f, 0x1.0ee41ap+1f,
+    -0x1.99999ap-58f, 0x1.316858p-3f, -0x1.129606p-3f, 0x1.0edabp+1f,
     /* node 3288 x */
-    0x1.533334p-55f, 0x1.d4d7dep+0f, -0x1.26d59ep+0f, 0x1.f71f16p-1f,
+    0x1.8cccccp-56f, 0x1.d4f122p+0f, -0x1.2717d8p+0f, 0x1.f6d46p-1f,
     /* node 3288 y */
-    0x1.a66666p-59f, -0x1.29afb8p-1f, 0x1.6bf832p-1f, 0x1.3360a2p-5f,
+    -0x1.85999ap-57f, -0x1.2a0376p-1f, 0x1.6c2f8ep-1f, 0x1.333f82p-5f,
     /* node 3288 z */
-    -0x1.666666p-57f, 0x1.598446p-3f, -0x1.899b54p-3f, 0x1.17ce7cp+1f,
+    -0x1.99999ap-58f, 0x1.57aee8p-3f, -0x1.88243cp-3f, 0x1.17b638p+1f,
     /* node 3289 x */
-    -0x1.99999ap-60f, 0x1.c2c708p+0f, -0x1.15c908p+0f, 0x1.03f49p+0f,
+    0x1.466666p-55f, 0x1.c25bbp+0f, -0x1.15c146p+0f, 0x1.03595ap+0f,
     /* node 3289 y */
-    0x1.333334p-59f, -0x1.10658cp-1f, 0x1.3f65a4p-1f, 0x1.8354d2p-4f,
+    -0x1.ee6666p-56f, -0x1.1193d8p-1f, 0x1.407084p-1f, 0x1.7db86ep-4f,
     /* node 3289 z */
-    -0x1.4cccccp-56f, 0x1.45a5ap-3f, -0x1.39c32cp-3f, 0x1.0ad654p+1f,
+    -0x0p+0f, 0x1.42e728p-3f, -0x1.3752a4p-3f, 0x1.0ab9fcp+1f,
     /* node 3290 x */
-    0x1p-55f, 0x1.a50c24p+0f, -0x1.ef7b1cp-1f, 0x1.0455c4p+0f,
+    0x1.2p-55f, 0x1.a552dcp+0f, -0x1.f037b6p-1f, 0x1.04717ap+0f,
     /* node 3290 y */
-    -0x1.f66666p-56f, -0x1.07d02ep-1f, 0x1.27ac7cp-1f, 0x1.111e2cp-3f,
+    -0x1.ccccccp-61f, -0x1.07cdfap-1f, 0x1.27aacep-1f, 0x1.115b28p-3f,
     /* node 3290 z */
-    -0x1.333334p-56f, 0x1.278adap-3f, -0x1.9f8accp-4f, 0x1.0225a6p+1f,
+    -0x1.99999ap-57f, 0x1.293e5p-3f, -0x1.a07488p-4f, 0x1.02274cp+1f,
     /* node 3291 x */
-    0x1.4p-53f, 0x1.b3bebcp+0f, -0x1.083762p+0f, 0x1.0e8fbp+0f,
+    0x1.433334p-54f, 0x1.b3325p+0f, -0x1.08222cp+0f, 0x1.0ddfacp+0f,
     /* node 3291 y */
-    -0x1.5cccccp-57f, -0x1.f726ap-2f, 0x1.1f781ap-1f, 0x1.09b6eap-3f,
+    0x1.99999ap-57f, -0x1.f9b1a4p-2f, 0x1.20c6e6p-1f, 0x1.077dc2p-3f,
     /* node 3291 z */
-    -0x1.99999ap-59f, 0x1.4a76c2p-3f, -0x1.090e7ap-3f, 0x1.00fe7p+1f,
+    -0x1.99999ap-59f, 0x1.468cdp-3f, -0x1.071828p-3f, 0x1.00cf0ap+1f,
     /* node 3292 x */
-    0x1p-56f, 0x1.e1e696p+0f, -0x1.3536e4p+0f, 0x1.06f39cp+0f,
+    0x1p-57f, 0x1.e1d116p+0f, -0x1.354beap+0f, 0x1.06afbap+0f,
     /* node 3292 y */
-    -0x1.c73334p-56f, -0x1.1a1518p-1f, 0x1.5c389ep-1f, 0x1.ad0ff2p-5f,
+    0x1.3cccccp-58f, -0x1.1aacdap-1f, 0x1.5cd97ap-1f, 0x1.a9c60ap-5f,
     /* node 3292 z */
-    -0x1.99999ap-56f, 0x1.7fbc2cp-3f, -0x1.b019c8p-3f, 0x1.14a618p+1f,
+    -0x1.4cccccp-55f, 0x1.7e895ep-3f, -0x1.aea53cp-3f, 0x1.14928p+1f,
     /* node 3293 x */
-    -0x1.333334p-56f, 0x1.d217c8p+0f, -0x1.25869ep+0f, 0x1.1012c2p+0f,
+    -0x1.166666p-54f, 0x1.d25c66p+0f, -0x1.25c254p+0f, 0x1.102678p+0f,
     /* node 3293 y */
-    -0x1.ce6666p-56f, -0x1.0252d4p-1f, 0x1.3276b8p-1f, 0x1.99252cp-4f,
+    -0x1.666666p-60f, -0x1.02743p-1f, 0x1.32c372p-1f, 0x1.9ab9cap-4f,
     /* node 3293 z */
-    -0x1.0cccccp-55f, 0x1.72d3ecp-3f, -0x1.6d2212p-3f, 0x1.0948fp+1f,
+    -0x1.0cccccp-55f, 0x1.733586p-3f, -0x1.6d0d76p-3f, 0x1.0946eep+1f,
     /* node 3294 x */
-    0x1.066666p-54f, 0x1.963446p+0f, -0x1.d5868cp-1f, 0x1.08ff68p+0f,
+    0x1.99999ap-56f, 0x1.966c62p+0f, -0x1.d5fe04p-1f, 0x1.0919e2p+0f,
     /* node 3294 y */
-    -0x1.1cccccp-56f, -0x1.dc5184p-2f, 0x1.042d88p-1f, 0x1.6f8e72p-3f,
+    0x1.79999ap-58f, -0x1.dc6642p-2f, 0x1.040818p-1f, 0x1.6f88cap-3f,
     /* node 3294 z */
-    -0x1.99999ap-59f, 0x1.1f827ep-3f, -0x1.41682ep-4f, 0x1.ed71cp+0f,
+    -0x1.333334p-58f, 0x1.2048e6p-3f, -0x1.406238p-4f, 0x1.ed7234p+0f,
     /* node 3295 x */
-    -0x1.a66666p-56f, 0x1.883e8ap+0f, -0x1.bfd798p-1f, 0x1.0d399p+0f,
+    -0x1.666666p-57f, 0x1.883e0cp+0f, -0x1.c01544p-1f, 0x1.0d2174p+0f,
     /* node 3295 y */
-    -0x1.59999ap-57f, -0x1.bc17dep-2f, 0x1.dcb0fap-2f, 0x1.9e04dp-3f,
+    -0x1.2cccccp-57f, -0x1.bca73p-2f, 0x1.dd0c96p-2f, 0x1.9dfd8ep-3f,
     /* node 3295 z */
-    -0x1.0cccccp-55f, 0x1.19254p-3f, -0x1.f1aea6p-5f, 0x1.d82b6ap+0f,
+    0x1.333334p-57f, 0x1.1910e8p-3f, -0x1.ed72b6p-5f, 0x1.d81676p+0f,
     /* node 3296 x */
-    0x1.59999ap-55f, 0x1.a3c13ep+0f, -0x1.f2563p-1f, 0x1.118088p+0f,
+    0x1.066666p-54f, 0x1.a36e6p+0f, -0x1.f25ae2p-1f, 0x1.110c4cp+0f,
     /* node 3296 y */
-    0x1.f33334p-59f, -0x1.ced90ep-2f, 0x1.00b4ccp-1f, 0x1.5f17bap-3f,
+    -0x1.5p-57f, -0x1.d009bp-2f, 0x1.014c08p-1f, 0x1.5e4de4p-3f,
     /* node 3296 z */
-    -0x1.666666p-57f, 0x1.35a298p-3f, -0x1.913f02p-4f, 0x1.ea4346p+0f,
+    0x1.99999ap-59f, 0x1.33813ep-3f, -0x1.8effa6p-4f, 0x1.ea0e0cp+0f,
     /* node 3297 x */
-    -0x1.ccccccp-57f, 0x1.98604p+0f, -0x1.dedab8p-1f, 0x1.189fa4p+0f,
+    0x1.b33334p-54f, 0x1.983d3p+0f, -0x1.def4c8p-1f, 0x1.185c48p+0f,
     /* node 3297 y */
-    -0x1.633334p-56f, -0x1.a073ep-2f, 0x1.c81b74p-2f, 0x1.a0536ep-3f,
+    -0x1.59999ap-58f, -0x1.a13b7cp-2f, 0x1.c88a2ap-2f, 0x1.9f7c7ap-3f,
     /* node 3297 z */
-    -0x1.99999ap-57f, 0x1.361438p-3f, -0x1.5e1078p-4f, 0x1.d62ca2p+0f,
+    -0x1.333334p-57f, 0x1.352026p-3f, -0x1.5c0c4cp-4f, 0x1.d604dep+0f,
     /* node 3298 x */
-    0x1.59999ap-55f, 0x1.7c1c84p+0f, -0x1.aa2be4p-1f, 0x1.100fe2p+0f,
+    -0x1.233334p-54f, 0x1.7c1fa4p+0f, -0x1.aa6efp-1f, 0x1.0ffda8p+0f,
     /* node 3298 y */
-    -0x1.a66666p-57f, -0x1.92c304p-2f, 0x1.a46cb6p-2f, 0x1.d4089ap-3f,
+    -0x1.c66666p-57f, -0x1.935516p-2f, 0x1.a4e656p-2f, 0x1.d40ffcp-3f,
     /* node 3298 z */
-    -0x1.8p-56f, 0x1.0dc82cp-3f, -0x1.694ff2p-5f, 0x1.c132f8p+0f,
+    0x1.99999ap-58f, 0x1.0d9acp-3f, -0x1.66529cp-5f, 0x1.c1269cp+0f,
     /* node 3300 x */
-    0x1.333334p-54f, 0x1.b517d6p+0f, -0x1.0a0c1ap+0f, 0x1.1d71cp+0f,
+    0x1.4cccccp-56f, 0x1.b50b98p+0f, -0x1.0a412ap+0f, 0x1.1d3a02p+0f,
     /* node 3300 y */
-    -0x1.6p-58f, -0x1.ad0c42p-2f, 0x1.e76f16p-2f, 0x1.6b0c9cp-3f,
+    -0x1.166666p-55f, -0x1.ad3848p-2f, 0x1.e76738p-2f, 0x1.6addep-3f,
     /* node 3300 z */
-    -0x1.99999ap-57f, 0x1.62730ep-3f, -0x1.09a4bp-3f, 0x1.e859bp+0f,
+    -0x1.99999ap-60f, 0x1.62bc88p-3f, -0x1.0a89dcp-3f, 0x1.e8425cp+0f,
     /* node 3316 x */
-    0x1.0cp-53f, 0x1.36af2ep+1f, -0x1.b645cap+0f, 0x1.343bf4p-2f,
+    0x1.5p-55f, 0x1.36b2ccp+1f, -0x1.b63c7ap+0f, 0x1.33a50cp-2f,
     /* node 3316 y */
-    0x1.3cccccp-57f, -0x1.caa5b2p-1f, 0x1.6624bcp+0f, -0x1.4728bap-3f,
+    -0x1.4cccccp-55f, -0x1.caccc4p-1f, 0x1.6641acp+0f, -0x1.46d7bp-3f,
     /* node 3316 z */
-    0x1.333334p-57f, 0x1.dc6e04p-3f, -0x1.4d115p-2f, 0x1.421a28p+1f,
+    -0x1.99999ap-57f, 0x1.db8bd8p-3f, -0x1.4d72ccp-2f, 0x1.420e3ep+1f,
     /* node 3317 x */
-    0x1.5a6666p-54f, 0x1.391352p+1f, -0x1.bdb802p+0f, 0x1.5bab76p-2f,
+    0x1.ad999ap-54f, 0x1.3915bap+1f, -0x1.bdb6c8p+0f, 0x1.5b2a1ep-2f,
     /* node 3317 y */
-    -0x1.0d999ap-54f, -0x1.c3efbep-1f, 0x1.5d009ep+0f, -0x1.40b84ap-3f,
+    -0x1.066666p-55f, -0x1.c3fc8ep-1f, 0x1.5cb4a6p+0f, -0x1.3ff9e8p-3f,
     /* node 3317 z */
-    -0x0p+0f, 0x1.ecc052p-3f, -0x1.55e698p-2f, 0x1.404ep+1f,
+    -0x1.333334p-56f, 0x1.eaf454p-3f, -0x1.550f7p-2f, 0x1.403834p+1f,
     /* node 3318 x */
-    0x1.1cccccp-53f, 0x1.3a470ep+1f, -0x1.beccc8p+0f, 0x1.28a3acp-2f,
+    0x1.d73334p-53f, 0x1.3a54f6p+1f, -0x1.bf3d08p+0f, 0x1.28466ap-2f,
     /* node 3318 y */
-    -0x1.fa6666p-54f, -0x1.c896ecp-1f, 0x1.5d75d8p+0f, -0x1.33dd92p-3f,
+    0x1.24p-55f, -0x1.c902cap-1f, 0x1.5e2188p+0f, -0x1.343dd2p-3f,
     /* node 3318 z */
-    -0x1.333334p-57f, 0x1.f63eb4p-3f, -0x1.48c8c6p-2f, 0x1.404876p+1f,
+    -0x1p-57f, 0x1.f58014p-3f, -0x1.485efep-2f, 0x1.40317ap+1f,
     /* node 3319 x */
-    -0x1.f33334p-56f, 0x1.34f374p+1f, -0x1.b3ab3ap+0f, 0x1.6c943ap-2f,
+    0x1.4cccccp-59f, 0x1.34fd6p+1f, -0x1.b3fcaep+0f, 0x1.6c2898p-2f,
     /* node 3319 y */
-    -0x1.50ccccp-54f, -0x1.c46d1ap-1f, 0x1.636126p+0f, -0x1.575494p-3f,
+    0x1.bb3334p-56f, -0x1.c4c082p-1f, 0x1.63b274p+0f, -0x1.576a2p-3f,
     /* node 3319 z */
-    -0x1.99999ap-58f, 0x1.d1af66p-3f, -0x1.5a0f38p-2f, 0x1.428b4ep+1f,
+    0x1.333334p-58f, 0x1.d0fe8p-3f, -0x1.5a7528p-2f, 0x1.427b8cp+1f,
     /* node 3320 x */
-    0x1.08p-55f, 0x1.32c392p+1f, -0x1.ab40eep+0f, 0x1.3d0038p-2f,
+    -0x1.cp-57f, 0x1.32c74p+1f, -0x1.ab41bp+0f, 0x1.3c5ff8p-2f,
     /* node 3320 y */
-    -0x1.15999ap-54f, -0x1.ccecfcp-1f, 0x1.70af64p+0f, -0x1.5c60d6p-3f,
+    -0x1.f66666p-55f, -0x1.ccf9b4p-1f, 0x1.7071c4p+0f, -0x1.5b298ep-3f,
     /* node 3320 z */
-    -0x0p+0f, 0x1.c55e2ap-3f, -0x1.4dacep-2f, 0x1.4464d6p+1f,
+    -0x1.8p-56f, 0x1.c3e78cp-3f, -0x1.4d139ap-2f, 0x1.444c96p+1f,
     /* node 3321 x */
-    0x1.9b3334p-55f, 0x1.3074c4p+1f, -0x1.a6a47ep+0f, 0x1.754f1ep-2f,
+    0x1.9b3334p-54f, 0x1.307b0cp+1f, -0x1.a6c68ap+0f, 0x1.74a06ep-2f,
     /* node 3321 y */
-    -0x1.2cccccp-56f, -0x1.c45678p-1f, 0x1.678b62p+0f, -0x1.6499b6p-3f,
+    -0x1.7cccccp-57f, -0x1.c491a8p-1f, 0x1.678fecp+0f, -0x1.64940ep-3f,
     /* node 3321 z */
-    -0x1.ccccccp-57f, 0x1.b9c9fp-3f, -0x1.56516ep-2f, 0x1.442376p+1f,
+    -0x1p-56f, 0x1.b885e2p-3f, -0x1.561cap-2f, 0x1.440ffcp+1f,
     /* node 3322 x */
-    0x1.1b3334p-54f, 0x1.2e7906p+1f, -0x1.a4c888p+0f, 0x1.b68684p-2f,
+    0x1.91999ap-54f, 0x1.2e7ce8p+1f, -0x1.a4e71ap+0f, 0x1.b5b15ap-2f,
     /* node 3322 y */
-    -0x1.81999ap-56f, -0x1.bf8c44p-1f, 0x1.63fd12p+0f, -0x1.75eb96p-3f,
+    0x1p-56f, -0x1.bfcf6ap-1f, 0x1.642762p+0f, -0x1.765258p-3f,
     /* node 3322 z */
-    -0x1.99999ap-55f, 0x1.b01ee6p-3f, -0x1.609f7cp-2f, 0x1.44421p+1f,
+    -0x1.e66666p-56f, 0x1.af577cp-3f, -0x1.60b866p-2f, 0x1.442fe6p+1f,
     /* node 3323 x */
-    0x1.133334p-54f, 0x1.33931ep+1f, -0x1.b36aap+0f, 0x1.aa62e4p-2f,
+    0x1.0cccccp-54f, 0x1.33974ap+1f, -0x1.b36216p+0f, 0x1.a9b974p-2f,
     /* node 3323 y */
-    0x1.333334p-57f, -0x1.bf717p-1f, 0x1.5ed056p+0f, -0x1.5fd0b8p-3f,
+    -0x1.c1999ap-55f, -0x1.bf94d8p-1f, 0x1.5eb03p+0f, -0x1.5f75e6p-3f,
     /* node 3323 z */
-    0x1.99999ap-56f, 0x1.cba5e2p-3f, -0x1.610862p-2f, 0x1.42531cp+1f,
+    0x1.99999ap-59f, 0x1.ca7746p-3f, -0x1.61374cp-2f, 0x1.4243aep+1f,
     /* node 3324 x */
-    0x1.c4ccccp-54f, 0x1.317008p+1f, -0x1.b019eap+0f, 0x1.e5febcp-2f,
+    0x1.9p-54f, 0x1.3173ecp+1f, -0x1.b02af4p+0f, 0x1.e554acp-2f,
     /* node 3324 y */
-    -0x1.ae6666p-54f, -0x1.b7308cp-1f, 0x1.563d74p+0f, -0x1.614a74p-3f,
+    -0x1.333334p-60f, -0x1.b75834p-1f, 0x1.564a76p+0f, -0x1.60d7a8p-3f,
     /* node 3324 z */
-    -0x1.0cccccp-55f, 0x1.c605e6p-3f, -0x1.68677p-2f, 0x1.41a8f6p+1f,
+    -0x1.99999ap-59f, 0x1.c4ce8p-3f, -0x1.682e88p-2f, 0x1.41972p+1f,
     /* node 3325 x */
-    0x1.a66666p-55f, 0x1.2bee82p+1f, -0x1.a209bcp+0f, 0x1.f398cap-2f,
+    0x1.de6666p-54f, 0x1.2bf15p+1f, -0x1.a230ccp+0f, 0x1.f33304p-2f,
     /* node 3325 y */
-    0x1.00ccccp-55f, -0x1.b7c752p-1f, 0x1.59b394p+0f, -0x1.780ae4p-3f,
+    -0x1.f9999ap-56f, -0x1.b7fb4ep-1f, 0x1.59beb4p+0f, -0x1.777696p-3f,
     /* node 3325 z */
-    -0x1.ccccccp-57f, 0x1.a738b2p-3f, -0x1.6944cep-2f, 0x1.43de62p+1f,
+    -0x1.19999ap-55f, 0x1.a61d5cp-3f, -0x1.68e22ap-2f, 0x1.43c6cep+1f,
     /* node 3326 x */
-    -0x1.966666p-55f, 0x1.2ec81ap+1f, -0x1.ac4d5ep+0f, 0x1.11622ep-1f,
+    0x1.e33334p-54f, 0x1.2ed508p+1f, -0x1.ac8798p+0f, 0x1.110196p-1f,
     /* node 3326 y */
-    0x1.8p-57f, -0x1.ae4acp-1f, 0x1.4cc9dap+0f, -0x1.60c36p-3f,
+    -0x1.726666p-55f, -0x1.aebb78p-1f, 0x1.4d0a2p+0f, -0x1.61592ap-3f,
     /* node 3326 z */
-    -0x1.666666p-56f, 0x1.be4b3ap-3f, -0x1.68cce4p-2f, 0x1.409bfp+1f,
+    0x1p-57f, 0x1.bd3884p-3f, -0x1.68e682p-2f, 0x1.4090bep+1f,
     /* node 3327 x */
-    0x1.2cccccp-55f, 0x1.363402p+1f, -0x1.bc1b2ap+0f, 0x1.d7c1p-2f,
+    -0x1.666666p-59f, 0x1.363c5ap+1f, -0x1.bc3f8ep+0f, 0x1.d73aa4p-2f,
     /* node 3327 y */
-    -0x1.5b3334p-56f, -0x1.b6283cp-1f, 0x1.51a576p+0f, -0x1.4db34p-3f,
+    -0x1.84ccccp-56f, -0x1.b6739ep-1f, 0x1.51e94p+0f, -0x1.4df706p-3f,
     /* node 3327 z */
-    0x1p-57f, 0x1.e245ap-3f, -0x1.6c0b22p-2f, 0x1.405a54p+1f,
+    -0x1.e66666p-56f, 0x1.e18dc2p-3f, -0x1.6c114p-2f, 0x1.404ad2p+1f,
     /* node 3328 x */
-    -0x1.333334p-60f, 0x1.3442dcp+1f, -0x1.b9e092p+0f, 0x1.0a417ap-1f,
+    0x1.88p-53f, 0x1.34454ap+1f, -0x1.b9ee08p+0f, 0x1.09e384p-1f,
     /* node 3328 y */
-    -0x1.8p-58f, -0x1.aea8aap-1f, 0x1.4bcaccp+0f, -0x1.53226ep-3f,
+    -0x1.41999ap-56f, -0x1.aed7acp-1f, 0x1.4be26cp+0f, -0x1.52bbcap-3f,
     /* node 3328 z */
-    -0x1.99999ap-56f, 0x1.dd6a62p-3f, -0x1.734824p-2f, 0x1.3fb536p+1f,
+    0x1.99999ap-58f, 0x1.dc09f4p-3f, -0x1.728502p-2f, 0x1.3f9cdp+1f,
     /* node 3329 x */
-    0x1.61999ap-54f, 0x1.28bae8p+1f, -0x1.9d7b92p+0f, 0x1.17f34ep-1f,
+    0x1.91999ap-54f, 0x1.28bf62p+1f, -0x1.9d9884p+0f, 0x1.179cb4p-1f,
     /* node 3329 y */
-    0x1.8cccccp-56f, -0x1.ad8ff2p-1f, 0x1.4f1e8cp+0f, -0x1.77397ap-3f,
+    -0x1.65999ap-55f, -0x1.adcc72p-1f, 0x1.4f1f7cp+0f, -0x1.76d83cp-3f,
     /* node 3329 z */
-    -0x1.0cccccp-55f, 0x1.a32c98p-3f, -0x1.6c1d3ep-2f, 0x1.427f8p+1f,
+    -0x1.99999ap-58f, 0x1.a1cb92p-3f, -0x1.6baefep-2f, 0x1.426d3cp+1f,
     /* node 3330 x */
-    0x1.d1999ap-53f, 0x1.258a48p+1f, -0x1.97d576p+0f, 0x1.35ddap-1f,
+    -0x1.6p-54f, 0x1.2599dp+1f, -0x1.9827ep+0f, 0x1.358866p-1f,
     /* node 3330 y */
-    -0x1.54ccccp-56f, -0x1.a5527cp-1f, 0x1.43d534p+0f, -0x1.719522p-3f,
+    -0x1.91999ap-56f, -0x1.a5b43ap-1f, 0x1.440da6p+0f, -0x1.71b1b6p-3f,
     /* node 3330 z */
-    0x1.99999ap-60f, 0x1.a13cp-3f, -0x1.6e4068p-2f, 0x1.412cp+1f,
+    0x1.e66666p-56f, 0x1.9f88eap-3f, -0x1.6dfffp-2f, 0x1.412132p+1f,
     /* node 3331 x */
-    0x1.81999ap-53f, 0x1.2bb18cp+1f, -0x1.a85fbcp+0f, 0x1.2f3738p-1f,
+    -0x1.58p-54f, 0x1.2bad4ep+1f, -0x1.a85894p+0f, 0x1.2ee424p-1f,
     /* node 3331 y */
-    -0x1.28ccccp-55f, -0x1.a58fd2p-1f, 0x1.441faep+0f, -0x1.6211b8p-3f,
+    -0x1.c0ccccp-55f, -0x1.a5b178p-1f, 0x1.441d7ap+0f, -0x1.618172p-3f,
     /* node 3331 z */
-    -0x1.4p-55f, 0x1.b49b04p-3f, -0x1.718588p-2f, 0x1.3fc0a4p+1f,
+    0x1.266666p-55f, 0x1.b36a0ap-3f, -0x1.70f524p-2f, 0x1.3faadp+1f,
     /* node 3332 x */
-    0x1.226666p-53f, 0x1.28316p+1f, -0x1.a0c8eap+0f, 0x1.49965ep-1f,
+    0x1.fp-55f, 0x1.283782p+1f, -0x1.a105acp+0f, 0x1.494458p-1f,
     /* node 3332 y */
-    -0x1.e9999ap-56f, -0x1.9b7a74p-1f, 0x1.36aa5ep+0f, -0x1.4c5d86p-3f,
+    -0x1.9p-57f, -0x1.9bd062p-1f, 0x1.36d75ap+0f, -0x1.4c5026p-3f,
     /* node 3332 z */
-    -0x1.ccccccp-57f, 0x1.b22132p-3f, -0x1.6cfeb6p-2f, 0x1.3d3d1ep+1f,
+    -0x1.99999ap-59f, 0x1.b0c186p-3f, -0x1.6c7076p-2f, 0x1.3d2c5cp+1f,
     /* node 3333 x */
-    0x1.033334p-54f, 0x1.218438p+1f, -0x1.9322fcp+0f, 0x1.55e608p-1f,
+    0x1.cb3334p-54f, 0x1.218bep+1f, -0x1.936372p+0f, 0x1.55a6eap-1f,
     /* node 3333 y */
-    -0x1.926666p-55f, -0x1.9bd05p-1f, 0x1.37745ep+0f, -0x1.6cb7f4p-3f,
+    -0x1.99999ap-63f, -0x1.9c3b5cp-1f, 0x1.37ac42p+0f, -0x1.6cfe82p-3f,
     /* node 3333 z */
-    -0x1.59999ap-55f, 0x1.9dea06p-3f, -0x1.797abep-2f, 0x1.40db38p+1f,
+    -0x1.e66666p-56f, 0x1.9ca876p-3f, -0x1.79080ep-2f, 0x1.40c9acp+1f,
     /* node 3334 x */
-    0x1.ccccccp-54f, 0x1.2464bep+1f, -0x1.9b81b8p+0f, 0x1.65a5e6p-1f,
+    -0x1.b9999ap-55f, 0x1.24682p+1f, -0x1.9bb8f8p+0f, 0x1.65551cp-1f,
     /* node 3334 y */
-    -0x1.a8p-56f, -0x1.8f1496p-1f, 0x1.29625p+0f, -0x1.368a4cp-3f,
+    -0x1.4b3334p-56f, -0x1.8f7332p-1f, 0x1.299982p+0f, -0x1.36d5ap-3f,
     /* node 3334 z */
-    0x1.0cccccp-55f, 0x1.aeb332p-3f, -0x1.6702dap-2f, 0x1.3ab606p+1f,
+    -0x1.4p-55f, 0x1.adb7d8p-3f, -0x1.66976cp-2f, 0x1.3aa3fap+1f,
     /* node 3335 x */
-    -0x1.6p-54f, 0x1.2f0c92p+1f, -0x1.b17e0ep+0f, 0x1.42f982p-1f,
+    -0x1.b33334p-58f, 0x1.2f123ep+1f, -0x1.b1b14cp+0f, 0x1.42b07cp-1f,
     /* node 3335 y */
-    -0x1.433334p-56f, -0x1.9ba58p-1f, 0x1.3517e2p+0f, -0x1.3186eap-3f,
+    -0x1p-60f, -0x1.9be6ep-1f, 0x1.352b0ap+0f, -0x1.31773ep-3f,
     /* node 3335 z */
-    -0x0p+0f, 0x1.cd497ap-3f, -0x1.6e6174p-2f, 0x1.3c582ep+1f,
+    0x1.99999ap-57f, 0x1.cc30dap-3f, -0x1.6e358cp-2f, 0x1.3c4fbp+1f,
     /* node 3336 x */
-    -0x1p-57f, 0x1.2bd22ap+1f, -0x1.ad360ap+0f, 0x1.6114a2p-1f,
+    -0x1.666666p-54f, 0x1.2bd5fap+1f, -0x1.ad6f84p+0f, 0x1.60cf0ep-1f,
     /* node 3336 y */
-    0x1.49999ap-57f, -0x1.906004p-1f, 0x1.2b6c28p+0f, -0x1.2ddde6p-3f,
+    0x1.033334p-56f, -0x1.90baacp-1f, 0x1.2b8ef8p+0f, -0x1.2e01ccp-3f,
     /* node 3336 z */
-    0x1.59999ap-55f, 0x1.ccdca8p-3f, -0x1.74e8d4p-2f, 0x1.3a655ap+1f,
+    -0x1.666666p-57f, 0x1.cbb97ep-3f, -0x1.746f7ep-2f, 0x1.3a531ep+1f,
     /* node 3337 x */
-    -0x1.2b3334p-53f, 0x1.1cf0e4p+1f, -0x1.8a3eeap+0f, 0x1.71f7ccp-1f,
+    -0x1p-55f, 0x1.1cf026p+1f, -0x1.8a6262p+0f, 0x1.71accep-1f,
     /* node 3337 y */
-    -0x1.50ccccp-55f, -0x1.8ca1cap-1f, 0x1.25830ep+0f, -0x1.3f2216p-3f,
+    0x1.08p-56f, -0x1.8cebccp-1f, 0x1.25a738p+0f, -0x1.3eec3p-3f,
     /* node 3337 z */
-    -0x0p+0f, 0x1.97eae8p-3f, -0x1.69f1p-2f, 0x1.3cb6b6p+1f,
+    -0x1.266666p-55f, 0x1.96ef3p-3f, -0x1.697ec6p-2f, 0x1.3ca58ap+1f,
     /* node 3338 x */
-    -0x1.b33334p-56f, 0x1.184ap+1f, -0x1.81f044p+0f, 0x1.8e6adp-1f,
+    -0x1p-56f, 0x1.1842ap+1f, -0x1.820b06p+0f, 0x1.8e1f66p-1f,
     /* node 3338 y */
-    -0x1.70ccccp-55f, -0x1.7de904p-1f, 0x1.14bf4ep+0f, -0x1.164652p-3f,
+    -0x1.a4ccccp-56f, -0x1.7e33cap-1f, 0x1.14e41p+0f, -0x1.15f58ap-3f,
     /* node 3338 z */
-    0x1p-56f, 0x1.9a5cbp-3f, -0x1.5ab17p-2f, 0x1.387db6p+1f,
+    -0x1.e66666p-56f, 0x1.99a7fcp-3f, -0x1.5a6602p-2f, 0x1.386c2ep+1f,
     /* node 3339 x */
-    0x1.10ccccp-53f, 0x1.205b08p+1f, -0x1.94c626p+0f, 0x1.8391d6p-1f,
+    0x1.f9999ap-54f, 0x1.205adp+1f, -0x1.94ec6cp+0f, 0x1.8336eap-1f,
     /* node 3339 y */
-    -0x1.4cccccp-60f, -0x1.8111f2p-1f, 0x1.1a13c4p+0f, -0x1.1a7792p-3f,
+    -0x1.f8p-56f, -0x1.81650cp-1f, 0x1.1a3dfcp+0f, -0x1.1a3fe6p-3f,
     /* node 3339 z */
-    -0x1.8p-56f, 0x1.ac4126p-3f, -0x1.64c814p-2f, 0x1.37d154p+1f,
+    0x1.19999ap-56f, 0x1.ab2ddcp-3f, -0x1.642b34p-2f, 0x1.37bbd6p+1f,
     /* node 3340 x */
-    -0x1.e66666p-57f, 0x1.1b76e6p+1f, -0x1.8ba2e4p+0f, 0x1.a1bd94p-1f,
+    -0x1.99999ap-58f, 0x1.1b7282p+1f, -0x1.8bbe1cp+0f, 0x1.a15df6p-1f,
     /* node 3340 y */
-    0x1.b33334p-57f, -0x1.6d396cp-1f, 0x1.05bb06p+0f, -0x1.c4afd8p-4f,
+    -0x1.ap-57f, -0x1.6d98d8p-1f, 0x1.05e9bp+0f, -0x1.c4dc06p-4f,
     /* node 3340 z */
-    0x1.99999ap-59f, 0x1.b3a044p-3f, -0x1.58ca5p-2f, 0x1.326756p+1f,
+    0x1.99999ap-59f, 0x1.b28468p-3f, -0x1.58292cp-2f, 0x1.32541ep+1f,
     /* node 3341 x */
-    -0x1.19999ap-57f, 0x1.127178p+1f, -0x1.780b28p+0f, 0x1.abf4eep-1f,
+    -0x1.266666p-54f, 0x1.1274d8p+1f, -0x1.7837e4p+0f, 0x1.abda04p-1f,
     /* node 3341 y */
-    -0x1.5cccccp-57f, -0x1.68c3f2p-1f, 0x1.fbca72p-1f, -0x1.abf776p-4f,
+    -0x1.01999ap-55f, -0x1.6924fap-1f, 0x1.fc197ap-1f, -0x1.ac54dp-4f,
     /* node 3341 z */
-    -0x1.99999ap-59f, 0x1.9787e4p-3f, -0x1.4877acp-2f, 0x1.32361p+1f,
+    0x1.99999ap-59f, 0x1.970a4ap-3f, -0x1.484bep-2f, 0x1.322a8p+1f,
     /* node 3342 x */
-    0x1.1e6666p-53f, 0x1.16a8b8p+1f, -0x1.828e26p+0f, 0x1.c15fa4p-1f,
+    -0x1.39999ap-54f, 0x1.16a714p+1f, -0x1.82b44p+0f, 0x1.c115d6p-1f,
     /* node 3342 y */
-    0x1.cp-59f, -0x1.59236p-1f, 0x1.e1fe4ap-1f, -0x1.4d4276p-4f,
+    -0x1.14p-56f, -0x1.59701ep-1f, 0x1.e24892p-1f, -0x1.4c8aa6p-4f,
     /* node 3342 z */
-    -0x1.333334p-58f, 0x1.b3ff0ap-3f, -0x1.4855d4p-2f, 0x1.2bfea4p+1f,
+    -0x1.4cccccp-56f, 0x1.b3748cp-3f, -0x1.480976p-2f, 0x1.2beef4p+1f,
     /* node 3343 x */
-    0x1.8p-57f, 0x1.242902p+1f, -0x1.9eeb4ep+0f, 0x1.96227cp-1f,
+    0x1.533334p-55f, 0x1.242b8ap+1f, -0x1.9f2496p+0f, 0x1.95d48p-1f,
     /* node 3343 y */
-    -0x1.0cccccp-58f, -0x1.70b67p-1f, 0x1.0b651p+0f, -0x1.c99828p-4f,
+    -0x1.24ccccp-54f, -0x1.711p-1f, 0x1.0b95a8p+0f, -0x1.c93084p-4f,
     /* node 3343 z */
-    0x1.99999ap-59f, 0x1.c986d2p-3f, -0x1.5ff68ap-2f, 0x1.31edc6p+1f,
+    0x1.99999ap-59f, 0x1.c8d21p-3f, -0x1.5f8d0ep-2f, 0x1.31dacep+1f,
     /* node 3344 x */
-    -0x1.666666p-58f, 0x1.1f6adcp+1f, -0x1.95f194p+0f, 0x1.b58fc8p-1f,
+    -0x1.6p-55f, 0x1.1f7036p+1f, -0x1.9622e8p+0f, 0x1.b5608ap-1f,
     /* node 3344 y */
-    0x1.b8p-57f, -0x1.5d4cdap-1f, 0x1.f11cdep-1f, -0x1.68199ep-4f,
+    -0x1.d9999ap-59f, -0x1.5d949cp-1f, 0x1.f14004p-1f, -0x1.68404cp-4f,
     /* node 3344 z */
-    0x1.19999ap-56f, 0x1.c99726p-3f, -0x1.563d22p-2f, 0x1.2ccca2p+1f,
+    0x1.99999ap-60f, 0x1.c8bd8p-3f, -0x1.55f484p-2f, 0x1.2cbf3ep+1f,
     /* node 3345 x */
-    0x1.733334p-55f, 0x1.0c500ap+1f, -0x1.6b7c34p+0f, 0x1.cc8ab6p-1f,
+    0x1.3b3334p-53f, 0x1.0c4366p+1f, -0x1.6b909ap+0f, 0x1.cc1ed8p-1f,
     /* node 3345 y */
-    -0x1.eaccccp-55f, -0x1.519598p-1f, 0x1.cc5c08p-1f, -0x1.01aa8ep-4f,
+    0x1.fe6666p-57f, -0x1.51ebep-1f, 0x1.ccaa78p-1f, -0x1.01b3dap-4f,
     /* node 3345 z */
-    -0x1p-57f, 0x1.9be1b2p-3f, -0x1.32c2b6p-2f, 0x1.2ac458p+1f,
+    -0x1p-56f, 0x1.9a7812p-3f, -0x1.32171ep-2f, 0x1.2aacf6p+1f,
     /* node 3346 x */
-    0x1.19999ap-56f, 0x1.061edep+1f, -0x1.5fe50cp+0f, 0x1.ee02a4p-1f,
+    0x1p-56f, 0x1.060c68p+1f, -0x1.5ff824p+0f, 0x1.ed697p-1f,
     /* node 3346 y */
-    -0x1.69b334p-55f, -0x1.3b7c88p-1f, 0x1.a1530cp-1f, -0x1.7288b8p-6f,
+    -0x1.a2p-56f, -0x1.3bdaf2p-1f, 0x1.a1b3a2p-1f, -0x1.752406p-6f,
     /* node 3346 z */
-    0x1.ccccccp-57f, 0x1.a44742p-3f, -0x1.1c40f2p-2f, 0x1.231ff8p+1f,
+    0x1.e66666p-56f, 0x1.a29f1ap-3f, -0x1.1b959p-2f, 0x1.2304fcp+1f,
     /* node 3347 x */
-    0x1.21999ap-53f, 0x1.1023f6p+1f, -0x1.75962cp+0f, 0x1.de4528p-1f,
+    -0x1.99999ap-56f, 0x1.102df6p+1f, -0x1.75caep+0f, 0x1.de39ep-1f,
     /* node 3347 y */
-    -0x1.aa6666p-56f, -0x1.41e70cp-1f, 0x1.b527c8p-1f, -0x1.4d3ceap-5f,
+    -0x1.153334p-56f, -0x1.421f8p-1f, 0x1.b5508ap-1f, -0x1.4baf44p-5f,
     /* node 3347 z */
-    -0x1.ccccccp-57f, 0x1.b0946ep-3f, -0x1.313708p-2f, 0x1.2432f4p+1f,
+    -0x1.666666p-57f, 0x1.b046e6p-3f, -0x1.31051ep-2f, 0x1.2429fep+1f,
     /* node 3348 x */
-    -0x1.733334p-55f, 0x1.097a46p+1f, -0x1.68758ep+0f, 0x1.fcc22ap-1f,
+    0x1.74ccccp-53f, 0x1.097da2p+1f, -0x1.68a1fcp+0f, 0x1.fc86fp-1f,
     /* node 3348 y */
-    0x1.dep-58f, -0x1.2b2fa6p-1f, 0x1.8b333p-1f, -0x1.1df06ap-8f,
+    -0x1.84e666p-57f, -0x1.2b6554p-1f, 0x1.8b5f14p-1f, -0x1.17fdd2p-8f,
     /* node 3348 z */
-    -0x1p-57f, 0x1.afaea8p-3f, -0x1.18bb2ep-2f, 0x1.1be5c2p+1f,
+    -0x1p-56f, 0x1.afccb2p-3f, -0x1.18b1ep-2f, 0x1.1be7b6p+1f,
     /* node 3349 x */
-    0x1.233334p-53f, 0x1.fba8f8p+0f, -0x1.4fbf14p+0f, 0x1.02474ap+0f,
+    0x1.f9999ap-55f, 0x1.fba448p+0f, -0x1.4ff73ap+0f, 0x1.02170ap+0f,
     /* node 3349 y */
-    -0x1.786666p-56f, -0x1.24057ap-1f, 0x1.74ffb2p-1f, 0x1.50332ap-6f,
+    -0x1.2ap-56f, -0x1.248826p-1f, 0x1.75593ep-1f, 0x1.46fb6ep-6f,
     /* node 3349 z */
-    -0x1.8p-56f, 0x1.96a2acp-3f, -0x1.f753bcp-3f, 0x1.190c7ap+1f,
+    -0x1.666666p-57f, 0x1.9566e4p-3f, -0x1.f673bep-3f, 0x1.18ef5cp+1f,
     /* node 3350 x */
-    0x1p-54f, 0x1.033d44p+1f, -0x1.5bead2p+0f, 0x1.0c4a6cp+0f,
+    0x1.79999ap-54f, 0x1.0347ccp+1f, -0x1.5c15dap+0f, 0x1.0c3412p+0f,
     /* node 3350 y */
-    -0x1.ee6666p-58f, -0x1.1308e4p-1f, 0x1.633372p-1f, 0x1.39a0bp-5f,
+    -0x1.4b6666p-55f, -0x1.13382cp-1f, 0x1.63762ap-1f, 0x1.3a708p-5f,
     /* node 3350 z */
-    -0x1.99999ap-59f, 0x1.b2acdap-3f, -0x1.04bb3ap-2f, 0x1.14322ap+1f,
+    0x1.333334p-56f, 0x1.b2a55p-3f, -0x1.047acep-2f, 0x1.1433f8p+1f,
     /* node 3351 x */
-    -0x1.ccccccp-56f, 0x1.143a1cp+1f, -0x1.7f6d36p+0f, 0x1.f4e262p-1f,
+    0x1.2p-53f, 0x1.142884p+1f, -0x1.7f7a9cp+0f, 0x1.f449b6p-1f,
     /* node 3351 y */
-    0x1.b2999ap-56f, -0x1.2f64cp-1f, 0x1.9c10e2p-1f, -0x1.0d292ap-6f,
+    -0x1.8cccccp-55f, -0x1.2fd46cp-1f, 0x1.9c61c6p-1f, -0x1.14a0eep-6f,
     /* node 3351 z */
-    0x1p-57f, 0x1.cd6c8cp-3f, -0x1.33becep-2f, 0x1.1ea96ep+1f,
+    0x1.333334p-56f, 0x1.cbe02ap-3f, -0x1.32f9bp-2f, 0x1.1e8726p+1f,
     /* node 3352 x */
-    -0x1.666666p-56f, 0x1.0e1f5p+1f, -0x1.731eaep+0f, 0x1.085184p+0f,
+    0x1p-54f, 0x1.0e064p+1f, -0x1.732c22p+0f, 0x1.07f03ep+0f,
     /* node 3352 y */
-    -0x1.06a666p-54f, -0x1.18b51ep-1f, 0x1.7506a2p-1f, 0x1.668768p-6f,
+    0x1.2cp-57f, -0x1.192dc2p-1f, 0x1.758d54p-1f, 0x1.5dce68p-6f,
     /* node 3352 z */
-    -0x1.19999ap-55f, 0x1.cf4af6p-3f, -0x1.21fea4p-2f, 0x1.177aa2p+1f,
+    -0x1.b33334p-56f, 0x1.ccff6ep-3f, -0x1.21076p-2f, 0x1.174c6ep+1f,
     /* node 3353 x */
-    0x1.acccccp-55f, 0x1.ebe542p+0f, -0x1.40ae9ep+0f, 0x1.0da2b4p+0f,
+    0x1.266666p-56f, 0x1.ebd99ep+0f, -0x1.40e3fap+0f, 0x1.0d6224p+0f,
     /* node 3353 y */
-    0x1.12ccccp-55f, -0x1.0cd052p-1f, 0x1.4e8706p-1f, 0x1.f03764p-5f,
+    0x1.24ccccp-56f, -0x1.0d0fccp-1f, 0x1.4eb5dep-1f, 0x1.efe698p-5f,
     /* node 3353 z */
-    0x1.99999ap-59f, 0x1.89fc56p-3f, -0x1.bdc08cp-3f, 0x1.0ea9b6p+1f,
+    -0x1.333334p-58f, 0x1.895494p-3f, -0x1.bd4f78p-3f, 0x1.0e9c06p+1f,
     /* node 3354 x */
-    0x1.a66666p-55f, 0x1.de09eep+0f, -0x1.326d4cp+0f, 0x1.172b7ep+0f,
+    0x1.04ccccp-53f, 0x1.ddf466p+0f, -0x1.32a33p+0f, 0x1.16e776p+0f,
     /* node 3354 y */
-    0x1.ee6666p-56f, -0x1.ee942p-2f, 0x1.2c135ap-1f, 0x1.a33ddap-4f,
+    -0x1.24ccccp-55f, -0x1.eeaa9p-2f, 0x1.2bf3eep-1f, 0x1.a4163p-4f,
     /* node 3354 z */
-    -0x1.b33334p-56f, 0x1.875ceep-3f, -0x1.8abc8cp-3f, 0x1.05b02ep+1f,
+    0x1.99999ap-59f, 0x1.86010ep-3f, -0x1.89f26p-3f, 0x1.05966p+1f,
     /* node 3355 x */
-    0x1.19999ap-53f, 0x1.f8d124p+0f, -0x1.4def1p+0f, 0x1.17f094p+0f,
+    0x1.0cccccp-55f, 0x1.f8d958p+0f, -0x1.4e123cp+0f, 0x1.17c66p+0f,
     /* node 3355 y */
-    -0x1p-60f, -0x1.f8616cp-2f, 0x1.3db15ap-1f, 0x1.44a9a8p-4f,
+    0x1.99999ap-57f, -0x1.f8dc9ep-2f, 0x1.3debf4p-1f, 0x1.44897ep-4f,
     /* node 3355 z */
-    -0x1.99999ap-60f, 0x1.af8f08p-3f, -0x1.dd143ep-3f, 0x1.0bcbc8p+1f,
+    0x1.99999ap-58f, 0x1.af4f9ap-3f, -0x1.dcab34p-3f, 0x1.0bc5cap+1f,
     /* node 3356 x */
-    -0x1.e66666p-56f, 0x1.e9c86ep+0f, -0x1.3f19bap+0f, 0x1.201314p+0f,
+    0x1.ep-54f, 0x1.e9bf44p+0f, -0x1.3f3b88p+0f, 0x1.1fdd6ap+0f,
     /* node 3356 y */
-    -0x1.a66666p-58f, -0x1.c891d8p-2f, 0x1.1aeb88p-1f, 0x1.e95b3ep-4f,
+    -0x1.466666p-56f, -0x1.c921ep-2f, 0x1.1b0cacp-1f, 0x1.e85268p-4f,
     /* node 3356 z */
-    -0x1.333334p-56f, 0x1.ac1812p-3f, -0x1.adddeap-3f, 0x1.023c8cp+1f,
+    0x1.99999ap-58f, 0x1.ab21fap-3f, -0x1.acf518p-3f, 0x1.02285p+1f,
     /* node 3357 x */
-    0x1.19999ap-56f, 0x1.d0cf26p+0f, -0x1.255b7cp+0f, 0x1.20392cp+0f,
+    0x1.6cccccp-55f, 0x1.d0b2a8p+0f, -0x1.257da6p+0f, 0x1.1ffb34p+0f,
     /* node 3357 y */
-    -0x1.833334p-57f, -0x1.bc2288p-2f, 0x1.08b864p-1f, 0x1.27f04cp-3f,
+    0x1.09999ap-57f, -0x1.bd6fbap-2f, 0x1.090ad4p-1f, 0x1.255b38p-3f,
     /* node 3357 z */
-    -0x1.99999ap-56f, 0x1.89972ap-3f, -0x1.5f9218p-3f, 0x1.f7bf1ap+0f,
+    -0x1.99999ap-58f, 0x1.889beep-3f, -0x1.5e18c2p-3f, 0x1.f7a75ep+0f,
     /* node 3359 x */
-    -0x1.8cccccp-55f, 0x1.00ba36p+1f, -0x1.5741ep+0f, 0x1.1d4274p+0f,
+    -0x1.99999ap-55f, 0x1.00b8d4p+1f, -0x1.576dd6p+0f, 0x1.1d246ep+0f,
     /* node 3359 y */
-    -0x0p+0f, -0x1.daed34p-2f, 0x1.300938p-1f, 0x1.7634p-4f,
+    -0x1.9a6666p-56f, -0x1.dbac3ap-2f, 0x1.30279ap-1f, 0x1.745d3cp-4f,
     /* node 3359 z */
-    -0x1.4cccccp-56f, 0x1.c4eb08p-3f, -0x1.e7d6f8p-3f, 0x1.06e912p+1f,
+    -0x1.99999ap-56f, 0x1.c48fp-3f, -0x1.e789bp-3f, 0x1.06df28p+1f,
     /* node 3386 x */
-    0x1.333334p-56f, 0x1.651af8p+0f, -0x1.51cc7ap-1f, -0x1.a6aacp-1f,
+    0x1.666666p-57f, 0x1.64b296p+0f, -0x1.520eacp-1f, -0x1.a57bdep-1f,
     /* node 3386 y */
-    -0x1.333334p-57f, -0x1.3c2d3cp-1f, 0x1.2db504p-1f, -0x1.86c29p-2f,
+    -0x1.933334p-56f, -0x1.3bcba4p-1f, 0x1.2d8508p-1f, -0x1.874f16p-2f,
     /* node 3386 z */
-    -0x1p-57f, 0x1.5f9abp-4f, -0x1.3dca04p-2f, 0x1.9d2486p+0f,
+    0x1.8p-56f, 0x1.5d5046p-4f, -0x1.3d0caap-2f, 0x1.9d2bdep+0f,
     /* node 3387 x */
-    0x1.7cccccp-54f, 0x1.5b84c8p+0f, -0x1.41acc6p-1f, -0x1.9dfedcp-1f,
+    0x1.59999ap-56f, 0x1.5b02a8p+0f, -0x1.41d51cp-1f, -0x1.9ca2f4p-1f,
     /* node 3387 y */
-    -0x1.8cccccp-56f, -0x1.3b67ecp-1f, 0x1.2f61ecp-1f, -0x1.95bd9ep-2f,
+    -0x1p-55f, -0x1.3b2b7cp-1f, 0x1.2f7d5p-1f, -0x1.964f2ap-2f,
     /* node 3387 z */
-    -0x1.99999ap-58f, 0x1.6de37p-4f, -0x1.482a58p-2f, 0x1.98086p+0f,
+    0x1.99999ap-59f, 0x1.6db8a4p-4f, -0x1.477542p-2f, 0x1.97edd8p+0f,
     /* node 3716 x */
-    0x1.18p-53f, 0x1.6727d4p+0f, -0x1.544b5ap-1f, -0x1.a4cec8p-1f,
+    0x1.09999ap-53f, 0x1.66cfap+0f, -0x1.54cd96p-1f, -0x1.a398dcp-1f,
     /* node 3716 y */
-    0x1p-57f, -0x1.462cccp-1f, 0x1.3ba164p-1f, -0x1.98120ep-2f,
+    -0x1.733334p-55f, -0x1.46951cp-1f, 0x1.3c1342p-1f, -0x1.9703c6p-2f,
     /* node 3716 z */
-    0x1.333334p-58f, 0x1.5fd5ep-4f, -0x1.401df8p-2f, 0x1.a82da8p+0f,
+    0x1.333334p-57f, 0x1.61e93ep-4f, -0x1.3f78p-2f, 0x1.a7e6eap+0f,
     /* node 3717 x */
-    0x1.d33334p-55f, 0x1.730efcp+0f, -0x1.694eeap-1f, -0x1.b0df2ap-1f,
+    0x1.4cccccp-55f, 0x1.73718cp+0f, -0x1.6a040ep-1f, -0x1.b1becp-1f,
     /* node 3717 y */
-    -0x1.a66666p-55f, -0x1.4c04e2p-1f, 0x1.3f2b2cp-1f, -0x1.82361cp-2f,
+    -0x1.4p-57f, -0x1.4c576cp-1f, 0x1.3fa36ep-1f, -0x1.822d42p-2f,
     /* node 3717 z */
-    -0x1.99999ap-57f, 0x1.634d74p-4f, -0x1.35ea48p-2f, 0x1.ae9188p+0f,
+    0x1.333334p-58f, 0x1.608f0cp-4f, -0x1.35874ep-2f, 0x1.aec20ep+0f,
     /* node 3718 x */
-    -0x1.466666p-55f, 0x1.7351d6p+0f, -0x1.68679ap-1f, -0x1.ad845ap-1f,
+    -0x1.cp-55f, 0x1.737812p+0f, -0x1.68bc28p-1f, -0x1.ae019p-1f,
     /* node 3718 y */
-    0x1.4p-56f, -0x1.5aeda6p-1f, 0x1.513d1ep-1f, -0x1.8d8c4ap-2f,
+    0x1.133334p-55f, -0x1.5c0b2ap-1f, 0x1.526196p-1f, -0x1.8b568ep-2f,
     /* node 3718 z */
-    0x1.8p-56f, 0x1.75eefcp-4f, -0x1.3b3aa2p-2f, 0x1.b927cep+0f,
+    -0x1.333334p-57f, 0x1.74c2fp-4f, -0x1.3a5e8cp-2f, 0x1.b90122p+0f,
     /* node 3719 x */
-    0x1.19999ap-56f, 0x1.9032e6p+0f, -0x1.9be2d6p-1f, -0x1.c107d6p-1f,
+    0x1.ep-54f, 0x1.906edap+0f, -0x1.9c492p-1f, -0x1.c19b4ep-1f,
     /* node 3719 y */
-    0x1.89999ap-56f, -0x1.467b54p-1f, 0x1.3be12p-1f, -0x1.71faaap-2f,
+    -0x1.19999ap-58f, -0x1.4677dcp-1f, 0x1.3c067ap-1f, -0x1.721eaep-2f,
     /* node 3719 z */
-    -0x1.99999ap-58f, 0x1.c068bap-4f, -0x1.2f7d06p-2f, 0x1.b2f60ap+0f,
+    0x1.333334p-58f, 0x1.bf0e66p-4f, -0x1.2f6c74p-2f, 0x1.b2f34cp+0f,
     /* node 3721 x */
-    0x1.733334p-56f, 0x1.9e426ep+0f, -0x1.b5417cp-1f, -0x1.c0e28ep-1f,
+    -0x1.99999ap-58f, 0x1.9e5d1p+0f, -0x1.b59808p-1f, -0x1.c110ap-1f,
     /* node 3721 y */
-    -0x1.2cccccp-56f, -0x1.5e12bcp-1f, 0x1.54375ap-1f, -0x1.68afe6p-2f,
+    0x1p-57f, -0x1.5e7c86p-1f, 0x1.54832p-1f, -0x1.67852ap-2f,
     /* node 3721 z */
-    -0x1.333334p-58f, 0x1.d8139ap-4f, -0x1.2b81cp-2f, 0x1.c87492p+0f,
+    0x1.99999ap-60f, 0x1.d4c74ep-4f, -0x1.2b26cp-2f, 0x1.c8869ep+0f,
     /* node 3722 x */
-    0x1.d33334p-55f, 0x1.8f5a3ep+0f, -0x1.996cb6p-1f, -0x1.bd4dbep-1f,
+    -0x1.8p-57f, 0x1.8f94ep+0f, -0x1.99cd4ep-1f, -0x1.bdf064p-1f,
     /* node 3722 y */
-    -0x1.a33334p-55f, -0x1.5cd4d6p-1f, 0x1.5320bcp-1f, -0x1.768a9ap-2f,
+    0x1.b9999ap-57f, -0x1.5d063ap-1f, 0x1.5367a6p-1f, -0x1.762c6cp-2f,
     /* node 3722 z */
-    0x1.99999ap-60f, 0x1.b465dp-4f, -0x1.30aa3p-2f, 0x1.c367d8p+0f,
+    -0x1.99999ap-57f, 0x1.b29462p-4f, -0x1.308762p-2f, 0x1.c3697p+0f,
     /* node 3723 x */
-    -0x1.f33334p-56f, 0x1.7fcd0cp+0f, -0x1.7f547ep-1f, -0x1.b8ea7cp-1f,
+    0x1.4cccccp-55f, 0x1.7fd606p+0f, -0x1.7f9e0ap-1f, -0x1.b8e41cp-1f,
     /* node 3723 y */
-    0x1.733334p-56f, -0x1.498504p-1f, 0x1.3da3c2p-1f, -0x1.7a2ae4p-2f,
+    -0x1.a66666p-57f, -0x1.49d70ep-1f, 0x1.3e009ep-1f, -0x1.798db2p-2f,
     /* node 3723 z */
-    -0x1.333334p-57f, 0x1.a4ab06p-4f, -0x1.357842p-2f, 0x1.aec1fap+0f,
+    -0x1p-57f, 0x1.a4c596p-4f, -0x1.35777p-2f, 0x1.ae9b3ap+0f,
     /* node 3724 x */
-    -0x1.333334p-56f, 0x1.7ed746p+0f, -0x1.7d508ep-1f, -0x1.b1e8fp-1f,
+    0x1.4p-56f, 0x1.7eca6ap+0f, -0x1.7dacep-1f, -0x1.b1c38p-1f,
     /* node 3724 y */
-    -0x1.866666p-57f, -0x1.5aabd4p-1f, 0x1.4fa314p-1f, -0x1.7f86c6p-2f,
+    0x1.866666p-57f, -0x1.5b559p-1f, 0x1.50022p-1f, -0x1.7d611ep-2f,
     /* node 3724 z */
-    -0x0p+0f, 0x1.a11392p-4f, -0x1.37c3a8p-2f, 0x1.bc344ep+0f,
+    -0x0p+0f, 0x1.a2308p-4f, -0x1.37618p-2f, 0x1.bbe52ep+0f,
     /* node 3725 x */
-    0x1.59999ap-56f, 0x1.8dad38p+0f, -0x1.95d79p-1f, -0x1.b89712p-1f,
+    0x1.59999ap-56f, 0x1.8d90d6p+0f, -0x1.962466p-1f, -0x1.b84108p-1f,
     /* node 3725 y */
-    -0x1.59999ap-56f, -0x1.6b70dap-1f, 0x1.646d62p-1f, -0x1.80ee6cp-2f,
+    -0x1.ccccccp-56f, -0x1.6c2d1ep-1f, 0x1.64ed56p-1f, -0x1.7f20e2p-2f,
     /* node 3725 z */
-    -0x1.19999ap-56f, 0x1.b32d6p-4f, -0x1.34267cp-2f, 0x1.ce8b24p+0f,
+    -0x1.666666p-57f, 0x1.b1b7bcp-4f, -0x1.340b44p-2f, 0x1.ce6a98p+0f,
     /* node 3726 x */
-    0x1.4p-55f, 0x1.7dcd6ep+0f, -0x1.79db8p-1f, -0x1.b00a54p-1f,
+    -0x1.2cccccp-54f, 0x1.7e2338p+0f, -0x1.7a4788p-1f, -0x1.b0e82p-1f,
     /* node 3726 y */
-    0x1.f9999ap-56f, -0x1.68c372p-1f, 0x1.60a704p-1f, -0x1.8d5c1cp-2f,
+    -0x1.6cccccp-56f, -0x1.6826a4p-1f, 0x1.6073c4p-1f, -0x1.8ee3e8p-2f,
     /* node 3726 z */
-    0x1.99999ap-60f, 0x1.9a5bb4p-4f, -0x1.3ba668p-2f, 0x1.c756dcp+0f,
+    0x1p-57f, 0x1.98642ep-4f, -0x1.3ba85ep-2f, 0x1.c760d4p+0f,
     /* node 3727 x */
-    0x1.ccccccp-57f, 0x1.8a9d6p+0f, -0x1.8f07b2p-1f, -0x1.b37b5cp-1f,
+    0x1.6cccccp-54f, 0x1.8ab376p+0f, -0x1.8f7bb2p-1f, -0x1.b38de2p-1f,
     /* node 3727 y */
-    -0x1.99999ap-59f, -0x1.761118p-1f, 0x1.70a48p-1f, -0x1.88f68p-2f,
+    -0x1.cp-57f, -0x1.7638b2p-1f, 0x1.70e89p-1f, -0x1.88dac8p-2f,
     /* node 3727 z */
-    -0x1.99999ap-59f, 0x1.abb06p-4f, -0x1.38b758p-2f, 0x1.d6e5bcp+0f,
+    -0x1.99999ap-60f, 0x1.a9384ap-4f, -0x1.38a72ep-2f, 0x1.d6ee8cp+0f,
     /* node 3728 x */
-    0x1.466666p-55f, 0x1.999c5cp+0f, -0x1.aa4712p-1f, -0x1.b7c27ap-1f,
+    -0x1.ccccccp-58f, 0x1.99bc4ep+0f, -0x1.aab9f2p-1f, -0x1.b81e4cp-1f,
     /* node 3728 y */
-    -0x1.266666p-56f, -0x1.79bdd2p-1f, 0x1.740b46p-1f, -0x1.797c62p-2f,
+    -0x1.dcccccp-55f, -0x1.79910ap-1f, 0x1.74014ap-1f, -0x1.79d2c4p-2f,
     /* node 3728 z */
-    -0x1.99999ap-60f, 0x1.b87cp-4f, -0x1.2ed47ap-2f, 0x1.df3842p+0f,
+    -0x1.99999ap-58f, 0x1.b75742p-4f, -0x1.2ee232p-2f, 0x1.df294ep+0f,
     /* node 3729 x */
-    0x1.533334p-55f, 0x1.96f16ep+0f, -0x1.a37ee2p-1f, -0x1.b237c2p-1f,
+    0x1.2p-54f, 0x1.971242p+0f, -0x1.a41f2ap-1f, -0x1.b27aa4p-1f,
     /* node 3729 y */
-    0x1.e66666p-59f, -0x1.860c9p-1f, 0x1.828ddep-1f, -0x1.7ad764p-2f,
+    0x1p-55f, -0x1.85f3fep-1f, 0x1.828414p-1f, -0x1.7ae74cp-2f,
     /* node 3729 z */
-    -0x1.4cccccp-56f, 0x1.b5b0dp-4f, -0x1.3495dap-2f, 0x1.e6d548p+0f,
+    -0x1.333334p-56f, 0x1.b58d98p-4f, -0x1.346768p-2f, 0x1.e6a85ep+0f,
     /* node 3735 x */
-    -0x1.333334p-59f, 0x1.ad839ap+0f, -0x1.d31448p-1f, -0x1.c25a48p-1f,
+    0x1.d9999ap-56f, 0x1.ad7bfp+0f, -0x1.d34f2p-1f, -0x1.c21d84p-1f,
     /* node 3735 y */
-    -0x1.98p-55f, -0x1.57483ep-1f, 0x1.4f7dbcp-1f, -0x1.5bffb2p-2f,
+    -0x1.e66666p-59f, -0x1.57ab22p-1f, 0x1.4fdbbap-1f, -0x1.5b1a76p-2f,
     /* node 3735 z */
-    -0x0p+0f, 0x1.f7223cp-4f, -0x1.204aacp-2f, 0x1.c9d172p+0f,
+    -0x1.ccccccp-57f, 0x1.f775dcp-4f, -0x1.20264ep-2f, 0x1.c99f62p+0f,
     /* node 3736 x */
-    0x1.a9999ap-54f, 0x1.b797a6p+0f, -0x1.e7aedep-1f, -0x1.bafb52p-1f,
+    -0x1.99999ap-60f, 0x1.b7933ep+0f, -0x1.e7be8cp-1f, -0x1.badfd4p-1f,
     /* node 3736 y */
-    0x1.ccccccp-57f, -0x1.70338ep-1f, 0x1.6bd93ap-1f, -0x1.4cd474p-2f,
+    0x1.1p-55f, -0x1.7051dcp-1f, 0x1.6bfb7ep-1f, -0x1.4c52f8p-2f,
     /* node 3736 z */
-    -0x1.666666p-57f, 0x1.0e4f74p-3f, -0x1.1c6d6cp-2f, 0x1.daf0cap+0f,
+    -0x1.99999ap-57f, 0x1.0f9ed8p-3f, -0x1.1cc2ecp-2f, 0x1.da9228p+0f,
     /* node 3737 x */
-    0x1.49999ap-54f, 0x1.a82812p+0f, -0x1.c8e128p-1f, -0x1.b99f8cp-1f,
+    0x1.4cccccp-57f, 0x1.a7de0cp+0f, -0x1.c8fccp-1f, -0x1.b8b1eep-1f,
     /* node 3737 y */
-    -0x1.9e6666p-55f, -0x1.6f0de8p-1f, 0x1.694cdcp-1f, -0x1.638ebep-2f,
+    -0x1.9e6666p-55f, -0x1.6f6f8cp-1f, 0x1.696b62p-1f, -0x1.623ea4p-2f,
     /* node 3737 z */
-    -0x1.333334p-57f, 0x1.f2df22p-4f, -0x1.2630acp-2f, 0x1.da433ep+0f,
+    0x1.333334p-57f, 0x1.f46724p-4f, -0x1.264828p-2f, 0x1.da0004p+0f,
     /* node 3738 x */
-    0x1.99999ap-61f, 0x1.b35f12p+0f, -0x1.df106cp-1f, -0x1.b60532p-1f,
+    0x1.39999ap-55f, 0x1.b35554p+0f, -0x1.df3458p-1f, -0x1.b5e006p-1f,
     /* node 3738 y */
-    -0x1.066666p-56f, -0x1.7ea018p-1f, 0x1.7cb16ep-1f, -0x1.53d9b6p-2f,
+    -0x1p-55f, -0x1.7e8156p-1f, 0x1.7cb4a8p-1f, -0x1.543ba6p-2f,
     /* node 3738 z */
-    -0x1.99999ap-59f, 0x1.0198aep-3f, -0x1.1eca26p-2f, 0x1.e7d1acp+0f,
+    0x1.333334p-58f, 0x1.02cbd2p-3f, -0x1.1efceep-2f, 0x1.e777dp+0f,
     /* node 3739 x */
-    0x1.49999ap-54f, 0x1.a746d2p+0f, -0x1.c3e526p-1f, -0x1.b8bb6ap-1f,
+    0x1.b9999ap-55f, 0x1.a730fp+0f, -0x1.c418a2p-1f, -0x1.b8664cp-1f,
     /* node 3739 y */
-    -0x1.1p-55f, -0x1.7866ccp-1f, 0x1.74c706p-1f, -0x1.6f1016p-2f,
+    -0x1.19999ap-55f, -0x1.785c0cp-1f, 0x1.74e87ep-1f, -0x1.6f5008p-2f,
     /* node 3739 z */
-    -0x1.8p-56f, 0x1.d85f2ep-4f, -0x1.27578ap-2f, 0x1.e453fcp+0f,
+    0x1.99999ap-56f, 0x1.d9d8cep-4f, -0x1.27936ap-2f, 0x1.e4069ep+0f,
     /* node 3740 x */
-    0x1.f9999ap-55f, 0x1.b2d458p+0f, -0x1.dae48ep-1f, -0x1.b519d6p-1f,
+    0x1.766666p-54f, 0x1.b2fe2p+0f, -0x1.db4df4p-1f, -0x1.b56788p-1f,
     /* node 3740 y */
-    0x1.59999ap-57f, -0x1.8916bep-1f, 0x1.8a03a4p-1f, -0x1.5c48p-2f,
+    -0x1.1cccccp-55f, -0x1.88a49p-1f, 0x1.89d3a4p-1f, -0x1.5d6a98p-2f,
     /* node 3740 z */
-    -0x1.333334p-55f, 0x1.f4ef68p-4f, -0x1.219b48p-2f, 0x1.f24e8ap+0f,
+    -0x1.333334p-57f, 0x1.f7cbc2p-4f, -0x1.21c76cp-2f, 0x1.f1d9aep+0f,
     /* node 3741 x */
-    0x1.1cccccp-54f, 0x1.c04fdap+0f, -0x1.f8b8fap-1f, -0x1.b503c4p-1f,
+    0x1.b33334p-56f, 0x1.c0505p+0f, -0x1.f8dd62p-1f, -0x1.b4b49p-1f,
     /* node 3741 y */
-    -0x1.166666p-54f, -0x1.7c7928p-1f, 0x1.7c7eaap-1f, -0x1.469b8ap-2f,
+    0x1.333334p-57f, -0x1.7c5e72p-1f, 0x1.7c79acp-1f, -0x1.46a142p-2f,
     /* node 3741 z */
-    -0x1.4cccccp-56f, 0x1.169fp-3f, -0x1.195b3p-2f, 0x1.e9b7dcp+0f,
+    -0x1.99999ap-59f, 0x1.188244p-3f, -0x1.19fe9p-2f, 0x1.e93ceap+0f,
     /* node 3742 x */
-    0x1.866666p-55f, 0x1.bcdeb6p+0f, -0x1.f00dfap-1f, -0x1.af48b4p-1f,
+    -0x1.566666p-54f, 0x1.bd35e4p+0f, -0x1.f0a25ap-1f, -0x1.b00a84p-1f,
     /* node 3742 y */
-    -0x1.933334p-56f, -0x1.8aa524p-1f, 0x1.8d18p-1f, -0x1.4e1e1ep-2f,
+    -0x1.91999ap-55f, -0x1.8aad4ep-1f, 0x1.8d7376p-1f, -0x1.4ea3f2p-2f,
     /* node 3742 z */
-    0x1.ccccccp-57f, 0x1.108bcep-3f, -0x1.1e3b92p-2f, 0x1.f63c64p+0f,
+    -0x1.19999ap-56f, 0x1.10953ep-3f, -0x1.1e89ccp-2f, 0x1.f60e42p+0f,
     /* node 3743 x */
-    0x1.b33334p-56f, 0x1.a5a848p+0f, -0x1.be2b8ep-1f, -0x1.b61fa6p-1f,
+    0x1.0cccccp-56f, 0x1.a5ceecp+0f, -0x1.be7dcep-1f, -0x1.b66ccep-1f,
     /* node 3743 y */
-    -0x1.ce6666p-55f, -0x1.8560c6p-1f, 0x1.840878p-1f, -0x1.704258p-2f,
+    -0x1.8p-56f, -0x1.84e8eep-1f, 0x1.83f4acp-1f, -0x1.717d24p-2f,
     /* node 3743 z */
-    0x1.333334p-57f, 0x1.c54404p-4f, -0x1.289b34p-2f, 0x1.ed4566p+0f,
+    -0x1p-56f, 0x1.c7b7bep-4f, -0x1.290bc2p-2f, 0x1.ecd9p+0f,
     /* node 3744 x */
-    0x1.a33334p-54f, 0x1.b0883cp+0f, -0x1.d28fc6p-1f, -0x1.afb732p-1f,
+    0x1.4cccccp-54f, 0x1.b0ed5cp+0f, -0x1.d34704p-1f, -0x1.b0a49cp-1f,
     /* node 3744 y */
-    0x1.2p-57f, -0x1.9076dep-1f, 0x1.9341c2p-1f, -0x1.62b092p-2f,
+    -0x1.8p-57f, -0x1.9050e6p-1f, 0x1.935a78p-1f, -0x1.63132ep-2f,
     /* node 3744 z */
-    -0x1.99999ap-60f, 0x1.e0e0a6p-4f, -0x1.24433ap-2f, 0x1.fb399ap+0f,
+    0x1.333334p-57f, 0x1.e181bep-4f, -0x1.246cccp-2f, 0x1.faf71p+0f,
     /* node 3745 x */
-    0x1.e66666p-56f, 0x1.a1a4b4p+0f, -0x1.b60128p-1f, -0x1.ad0302p-1f,
+    0x1.09999ap-53f, 0x1.a1bc7ap+0f, -0x1.b64cfcp-1f, -0x1.ad25f8p-1f,
     /* node 3745 y */
-    0x1.2e6666p-55f, -0x1.91e38cp-1f, 0x1.92b088p-1f, -0x1.6b9f44p-2f,
+    0x1.633334p-56f, -0x1.91bf8ap-1f, 0x1.92afdcp-1f, -0x1.6bbddep-2f,
     /* node 3745 z */
-    0x1.666666p-57f, 0x1.c347eep-4f, -0x1.2b9f64p-2f, 0x1.f476dp+0f,
+    0x1.333334p-57f, 0x1.c57f2cp-4f, -0x1.2bdea4p-2f, 0x1.f40adp+0f,
     /* node 3746 x */
-    -0x1.333334p-57f, 0x1.acd82ap+0f, -0x1.ca14d4p-1f, -0x1.a3531p-1f,
+    -0x1.ccccccp-58f, 0x1.ad1f7ap+0f, -0x1.caae9p-1f, -0x1.a3fa84p-1f,
     /* node 3746 y */
-    -0x1.1e6666p-55f, -0x1.951a4cp-1f, 0x1.9b4514p-1f, -0x1.61fap-2f,
+    0x1.d9999ap-58f, -0x1.953846p-1f, 0x1.9b794p-1f, -0x1.61749ep-2f,
     /* node 3746 z */
-    -0x1.333334p-57f, 0x1.dc2b72p-4f, -0x1.26848p-2f, 0x1.0045dep+1f,
+    0x1.4cccccp-56f, 0x1.dabb72p-4f, -0x1.26545p-2f, 0x1.00395ep+1f,
     /* node 3747 x */
-    0x1.266666p-55f, 0x1.ba8426p+0f, -0x1.e81222p-1f, -0x1.a28e3ap-1f,
+    0x1.b33334p-56f, 0x1.bad49ep+0f, -0x1.e8a016p-1f, -0x1.a3534ap-1f,
     /* node 3747 y */
-    0x1.19999ap-58f, -0x1.947354p-1f, 0x1.9cee3cp-1f, -0x1.57804ap-2f,
+    -0x1.7cccccp-56f, -0x1.9438bep-1f, 0x1.9ce2aep-1f, -0x1.57a504p-2f,
     /* node 3747 z */
-    0x1.99999ap-60f, 0x1.0068cep-3f, -0x1.1dc116p-2f, 0x1.032fbcp+1f,
+    0x1.99999ap-57f, 0x1.00b2p-3f, -0x1.1da74ap-2f, 0x1.03047ep+1f,
     /* node 3748 x */
-    0x1.3cccccp-54f, 0x1.b7596p+0f, -0x1.e0774ap-1f, -0x1.962644p-1f,
+    0x1.d9999ap-56f, 0x1.b7a4f4p+0f, -0x1.e0f78ep-1f, -0x1.96d9e4p-1f,
     /* node 3748 y */
-    0x1.0cccccp-57f, -0x1.9c47ap-1f, 0x1.a7b1d4p-1f, -0x1.4fe52ap-2f,
+    0x1.266666p-57f, -0x1.9c2202p-1f, 0x1.a7bd0cp-1f, -0x1.500d94p-2f,
     /* node 3748 z */
-    0x1.ccccccp-57f, 0x1.f66bdap-4f, -0x1.1e5e22p-2f, 0x1.06a74cp+1f,
+    -0x1.333334p-58f, 0x1.f4d08ap-4f, -0x1.1e2986p-2f, 0x1.0695a2p+1f,
     /* node 3757 x */
-    0x1p-55f, 0x1.dfcf38p+0f, -0x1.1afc82p+0f, -0x1.b1bc46p-1f,
+    0x1.333334p-54f, 0x1.dffc64p+0f, -0x1.1b2902p+0f, -0x1.b1f84ep-1f,
     /* node 3757 y */
-    -0x1.b33334p-59f, -0x1.6fa04cp-1f, 0x1.76125ep-1f, -0x1.2e9c2p-2f,
+    -0x1.233334p-56f, -0x1.6f42dcp-1f, 0x1.75dc6cp-1f, -0x1.2f18e6p-2f,
     /* node 3757 z */
-    -0x1.333334p-56f, 0x1.482fd8p-3f, -0x1.127ee6p-2f, 0x1.e669ecp+0f,
+    -0x1.ccccccp-57f, 0x1.479922p-3f, -0x1.126cd6p-2f, 0x1.e652ecp+0f,
     /* node 3758 x */
-    0x1.133334p-54f, 0x1.cb1dbap+0f, -0x1.0689aap+0f, -0x1.b4899ep-1f,
+    0x1.ep-55f, 0x1.cb2644p+0f, -0x1.06b78ep+0f, -0x1.b473fep-1f,
     /* node 3758 y */
-    -0x1.d9999ap-56f, -0x1.7d16e4p-1f, 0x1.7fd1cep-1f, -0x1.3cf63ap-2f,
+    -0x1.4p-57f, -0x1.7d20b2p-1f, 0x1.7ff562p-1f, -0x1.3cb82p-2f,
     /* node 3758 z */
-    -0x1p-56f, 0x1.27dcbcp-3f, -0x1.171692p-2f, 0x1.ebc23ep+0f,
+    -0x1.333334p-56f, 0x1.281dc2p-3f, -0x1.171892p-2f, 0x1.eb9894p+0f,
     /* node 3759 x */
-    -0x1.4p-55f, 0x1.d5b758p+0f, -0x1.0f008p+0f, -0x1.a797dcp-1f,
+    0x1.0cccccp-54f, 0x1.d5b63ep+0f, -0x1.0f3402p+0f, -0x1.a77f6p-1f,
     /* node 3759 y */
-    0x1.8p-59f, -0x1.848b02p-1f, 0x1.8c3d28p-1f, -0x1.34f054p-2f,
+    0x1.8cccccp-55f, -0x1.849484p-1f, 0x1.8c72ap-1f, -0x1.3527bap-2f,
     /* node 3759 z */
-    -0x1.99999ap-59f, 0x1.35ec7cp-3f, -0x1.10fcc4p-2f, 0x1.f8a998p+0f,
+    -0x1.666666p-56f, 0x1.359136p-3f, -0x1.111144p-2f, 0x1.f88d9p+0f,
     /* node 3760 x */
-    0x1.79999ap-54f, 0x1.f0203p+0f, -0x1.2bb1c4p+0f, -0x1.ab5a9p-1f,
+    0x1.4cccccp-54f, 0x1.f04248p+0f, -0x1.2bd53cp+0f, -0x1.aba70ap-1f,
     /* node 3760 y */
-    0x1.333334p-59f, -0x1.666022p-1f, 0x1.707eap-1f, -0x1.24afc2p-2f,
+    -0x1.b33334p-56f, -0x1.66234ep-1f, 0x1.70710ep-1f, -0x1.2513bap-2f,
     /* node 3760 z */
-    -0x1.19999ap-56f, 0x1.631beep-3f, -0x1.105e46p-2f, 0x1.e5d364p+0f,
+    -0x1.266666p-55f, 0x1.61f8bcp-3f, -0x1.102c28p-2f, 0x1.e5d032p+0f,
     /* node 3761 x */
-    0x1.e66666p-57f, 0x1.e818aep+0f, -0x1.232616p+0f, -0x1.9cc594p-1f,
+    0x1.ap-55f, 0x1.e8134ap+0f, -0x1.2345b4p+0f, -0x1.9c9534p-1f,
     /* node 3761 y */
-    -0x1.91999ap-55f, -0x1.794eb4p-1f, 0x1.872ab4p-1f, -0x1.2281e2p-2f,
+    0x1.59999ap-58f, -0x1.7920eep-1f, 0x1.87081ap-1f, -0x1.22ad8cp-2f,
     /* node 3761 z */
-    0x1.8p-56f, 0x1.55b0f8p-3f, -0x1.0cfecep-2f, 0x1.f597dep+0f,
+    -0x1.666666p-56f, 0x1.54e97p-3f, -0x1.0cf83cp-2f, 0x1.f588e8p+0f,
     /* node 3762 x */
-    0x1.4p-56f, 0x1.ca5128p+0f, -0x1.04c21p+0f, -0x1.ad0004p-1f,
+    -0x1.99999ap-56f, 0x1.ca4a1ep+0f, -0x1.04e9e2p+0f, -0x1.acaa7ap-1f,
     /* node 3762 y */
-    -0x1.333334p-55f, -0x1.86ad68p-1f, 0x1.8b3ca4p-1f, -0x1.3d3d88p-2f,
+    0x1.ccccccp-60f, -0x1.86a8bap-1f, 0x1.8b69f4p-1f, -0x1.3d6b2cp-2f,
     /* node 3762 z */
-    -0x1p-57f, 0x1.212094p-3f, -0x1.15dbcap-2f, 0x1.f6ffa6p+0f,
+    -0x1.4cccccp-56f, 0x1.21ed06p-3f, -0x1.162306p-2f, 0x1.f6acf4p+0f,
     /* node 3763 x */
-    0x1.99999ap-59f, 0x1.c7f436p+0f, -0x1.01aafap+0f, -0x1.a8aa4ep-1f,
+    0x1.b33334p-57f, 0x1.c7f1f6p+0f, -0x1.01c5e6p+0f, -0x1.a87d4ap-1f,
     /* node 3763 y */
-    -0x1p-58f, -0x1.9257f6p-1f, 0x1.98973p-1f, -0x1.3f916p-2f,
+    -0x1.0cccccp-57f, -0x1.92080cp-1f, 0x1.989dbp-1f, -0x1.4040bap-2f,
     /* node 3763 z */
-    0x1.99999ap-57f, 0x1.16d8eep-3f, -0x1.1573f6p-2f, 0x1.01064ep+1f,
+    -0x1.99999ap-58f, 0x1.1777dap-3f, -0x1.15ad48p-2f, 0x1.00d674p+1f,
     /* node 3764 x */
-    0x1.09999ap-54f, 0x1.d5291p+0f, -0x1.0e2cdcp+0f, -0x1.9fb066p-1f,
+    0x1.19999ap-54f, 0x1.d5285cp+0f, -0x1.0e6458p+0f, -0x1.9fb0c2p-1f,
     /* node 3764 y */
-    -0x1.a66666p-57f, -0x1.89b2b4p-1f, 0x1.92c0c2p-1f, -0x1.33f414p-2f,
+    -0x1.51999ap-55f, -0x1.89c852p-1f, 0x1.92dd98p-1f, -0x1.339fb8p-2f,
     /* node 3764 z */
-    -0x1.333334p-56f, 0x1.391f9ap-3f, -0x1.101e12p-2f, 0x1.ffbddap+0f,
+    -0x1.666666p-57f, 0x1.38ae88p-3f, -0x1.100b9ep-2f, 0x1.ffa15cp+0f,
     /* node 3765 x */
-    0x1.b33334p-56f, 0x1.d4085p+0f, -0x1.0cb8acp+0f, -0x1.9753ccp-1f,
+    0x1.133334p-54f, 0x1.d40a82p+0f, -0x1.0ce4b2p+0f, -0x1.975e5ap-1f,
     /* node 3765 y */
-    -0x1.533334p-57f, -0x1.928086p-1f, 0x1.9f36bp-1f, -0x1.2e36cp-2f,
+    -0x1.9p-56f, -0x1.92819p-1f, 0x1.9f2f2ep-1f, -0x1.2da058p-2f,
     /* node 3765 z */
-    -0x1.59999ap-55f, 0x1.31074p-3f, -0x1.0f3f2p-2f, 0x1.03d9a6p+1f,
+    -0x1.ccccccp-56f, 0x1.30d7e8p-3f, -0x1.0f207cp-2f, 0x1.03c0fcp+1f,
     /* node 3766 x */
-    0x1.e66666p-57f, 0x1.c8d864p+0f, -0x1.009042p+0f, -0x1.a48e7ap-1f,
+    -0x1.39999ap-55f, 0x1.c8ccfp+0f, -0x1.00a7ap+0f, -0x1.a46f12p-1f,
     /* node 3766 y */
-    0x1.b66666p-56f, -0x1.9620bep-1f, 0x1.9fcc5ep-1f, -0x1.43ad4ep-2f,
+    -0x1.88p-55f, -0x1.95d3ecp-1f, 0x1.9f985cp-1f, -0x1.43db36p-2f,
     /* node 3766 z */
-    -0x1.ccccccp-57f, 0x1.08a7ccp-3f, -0x1.12cc9ap-2f, 0x1.05cfaep+1f,
+    -0x1.19999ap-56f, 0x1.09334p-3f, -0x1.12f012p-2f, 0x1.05a2a6p+1f,
     /* node 3767 x */
-    0x1.133334p-55f, 0x1.d45ce8p+0f, -0x1.0c73cep+0f, -0x1.8e450cp-1f,
+    -0x1.8p-55f, 0x1.d47f64p+0f, -0x1.0cac66p+0f, -0x1.8e88eap-1f,
     /* node 3767 y */
-    -0x1p-55f, -0x1.99b71cp-1f, 0x1.abde82p-1f, -0x1.28a2cep-2f,
+    0x1.a66666p-57f, -0x1.99d54cp-1f, 0x1.ac03a4p-1f, -0x1.27febap-2f,
     /* node 3767 z */
-    0x1.ccccccp-57f, 0x1.24b05ap-3f, -0x1.0d87f2p-2f, 0x1.08e45ap+1f,
+    -0x1p-56f, 0x1.2538b4p-3f, -0x1.0da718p-2f, 0x1.08bf5ep+1f,
     /* node 3768 x */
-    0x1.7b3334p-53f, 0x1.e0da56p+0f, -0x1.1a592cp+0f, -0x1.925554p-1f,
+    -0x1.8p-57f, 0x1.e0d59cp+0f, -0x1.1a9636p+0f, -0x1.921258p-1f,
     /* node 3768 y */
-    0x1.39999ap-55f, -0x1.8fb64ep-1f, 0x1.a356e2p-1f, -0x1.204d02p-2f,
+    -0x1.19999ap-56f, -0x1.8f61fcp-1f, 0x1.a2fa5ap-1f, -0x1.203a3p-2f,
     /* node 3768 z */
-    0x1.333334p-58f, 0x1.445d48p-3f, -0x1.0a0458p-2f, 0x1.03e23cp+1f,
+    -0x1.99999ap-60f, 0x1.44763ap-3f, -0x1.0a0f2ep-2f, 0x1.03bd4p+1f,
     /* node 3769 x */
-    0x1p-54f, 0x1.e05c4p+0f, -0x1.19a172p+0f, -0x1.89a046p-1f,
+    -0x1.666666p-57f, 0x1.e00ddep+0f, -0x1.19b5fp+0f, -0x1.88e9ap-1f,
     /* node 3769 y */
-    -0x1.6p-57f, -0x1.964e9cp-1f, 0x1.aca35cp-1f, -0x1.173b78p-2f,
+    -0x1.9p-56f, -0x1.969ecp-1f, 0x1.ace88ap-1f, -0x1.162252p-2f,
     /* node 3769 z */
-    -0x1p-56f, 0x1.3627cp-3f, -0x1.0369aep-2f, 0x1.08f96p+1f,
+    -0x1.333334p-56f, 0x1.37c922p-3f, -0x1.039ad4p-2f, 0x1.08c246p+1f,
     /* node 3770 x */
-    0x1.2cccccp-54f, 0x1.c8568cp+0f, -0x1.fe31ecp-1f, -0x1.97086ap-1f,
+    0x1p-56f, 0x1.c83ad2p+0f, -0x1.fe508p-1f, -0x1.96ea36p-1f,
     /* node 3770 y */
-    -0x1.e66666p-58f, -0x1.99fa26p-1f, 0x1.a8b21ep-1f, -0x1.3b2bf6p-2f,
+    -0x1p-56f, -0x1.99e914p-1f, 0x1.a8a4aep-1f, -0x1.3b05dep-2f,
     /* node 3770 z */
-    -0x1p-56f, 0x1.02fbdep-3f, -0x1.127bd8p-2f, 0x1.08da8cp+1f,
+    0x1.99999ap-57f, 0x1.03381ep-3f, -0x1.1292d4p-2f, 0x1.08bd6ep+1f,
     /* node 3771 x */
-    -0x1.0e6666p-54f, 0x1.d4fc4cp+0f, -0x1.0c0bbap+0f, -0x1.862bacp-1f,
+    -0x1.9cccccp-55f, 0x1.d5532ep+0f, -0x1.0c68cep+0f, -0x1.86e2f2p-1f,
     /* node 3771 y */
-    -0x1.68p-55f, -0x1.9c20b8p-1f, 0x1.b4e02ep-1f, -0x1.221a1ep-2f,
+    -0x1.dp-56f, -0x1.9c30eap-1f, 0x1.b5280ep-1f, -0x1.221d28p-2f,
     /* node 3771 z */
-    0x1.99999ap-59f, 0x1.0f1be2p-3f, -0x1.073deap-2f, 0x1.0e5558p+1f,
+    -0x1.99999ap-58f, 0x1.0f4d7ap-3f, -0x1.074bd8p-2f, 0x1.0e35cp+1f,
     /* node 3772 x */
-    0x1.666666p-58f, 0x1.c430dp+0f, -0x1.f70e26p-1f, -0x1.859a62p-1f,
+    0x1.59999ap-55f, 0x1.c43b58p+0f, -0x1.f770ecp-1f, -0x1.85e254p-1f,
     /* node 3772 y */
-    -0x1.033334p-56f, -0x1.9ff87cp-1f, 0x1.b175cap-1f, -0x1.2f5122p-2f,
+    -0x1.4cccccp-59f, -0x1.a007ecp-1f, 0x1.b1a8dep-1f, -0x1.2f695ap-2f,
     /* node 3772 z */
-    -0x1p-57f, 0x1.05b40cp-3f, -0x1.13f48ap-2f, 0x1.0b0872p+1f,
+    -0x0p+0f, 0x1.052b24p-3f, -0x1.13e7a4p-2f, 0x1.0b0108p+1f,
     /* node 3773 x */
-    0x1.c33334p-54f, 0x1.d515c2p+0f, -0x1.0baa3cp+0f, -0x1.732e66p-1f,
+    -0x1.99999ap-57f, 0x1.d5549cp+0f, -0x1.0bf49cp+0f, -0x1.73c09p-1f,
     /* node 3773 y */
-    -0x1.ee6666p-55f, -0x1.a10d9ap-1f, 0x1.c1d0fap-1f, -0x1.16243ep-2f,
+    -0x1.acccccp-55f, -0x1.a10edcp-1f, 0x1.c21132p-1f, -0x1.1629bap-2f,
     /* node 3773 z */
-    -0x1p-56f, 0x1.0215b4p-3f, -0x1.00f172p-2f, 0x1.12b5cp+1f,
+    -0x1.99999ap-59f, 0x1.017592p-3f, -0x1.00bcep-2f, 0x1.12a34ap+1f,
     /* node 3774 x */
-    0x1.59999ap-57f, 0x1.e645aep+0f, -0x1.1da93ep+0f, -0x1.6b022cp-1f,
+    0x1.18p-54f, 0x1.e62896p+0f, -0x1.1dcbf2p+0f, -0x1.6ad2d8p-1f,
     /* node 3774 y */
-    -0x1.6cccccp-55f, -0x1.9e0814p-1f, 0x1.c626bcp-1f, -0x1.f98c4cp-3f,
+    0x1.ccccccp-58f, -0x1.9e0a96p-1f, 0x1.c6311ep-1f, -0x1.f88796p-3f,
     /* node 3774 z */
-    0x1.99999ap-59f, 0x1.25795cp-3f, -0x1.ef1d1ap-3f, 0x1.1206dap+1f,
+    -0x1.99999ap-56f, 0x1.26134ap-3f, -0x1.ef0c72p-3f, 0x1.11e118p+1f,
     /* node 3775 x */
-    0x1.3p-54f, 0x1.e9666ep+0f, -0x1.1e41f4p+0f, -0x1.5ae66ap-1f,
+    0x1.14ccccp-54f, 0x1.e93bb6p+0f, -0x1.1e5c4ep+0f, -0x1.5aa0e2p-1f,
     /* node 3775 y */
-    0x1.933334p-56f, -0x1.a47dp-1f, 0x1.d6a318p-1f, -0x1.e040d8p-3f,
+    -0x1.0e6666p-55f, -0x1.a484e2p-1f, 0x1.d6a7f2p-1f, -0x1.dfa038p-3f,
     /* node 3775 z */
-    -0x1.99999ap-57f, 0x1.14e98cp-3f, -0x1.d348ecp-3f, 0x1.18e646p+1f,
+    0x1.333334p-56f, 0x1.142502p-3f, -0x1.d297b6p-3f, 0x1.18d208p+1f,
     /* node 3789 x */
-    0x1.8cccccp-55f, 0x1.00426cp+1f, -0x1.3c6f98p+0f, -0x1.974ed8p-1f,
+    0x1p-53f, 0x1.005342p+1f, -0x1.3c99aep+0f, -0x1.97a77cp-1f,
     /* node 3789 y */
-    -0x1.4e6666p-55f, -0x1.68924ep-1f, 0x1.7a1ba6p-1f, -0x1.0f5968p-2f,
+    0x1.866666p-56f, -0x1.687742p-1f, 0x1.7a1aa6p-1f, -0x1.0f7e18p-2f,
     /* node 3789 z */
-    -0x1.333334p-57f, 0x1.7bfffcp-3f, -0x1.0b7b5ap-2f, 0x1.ee283p+0f,
+    -0x1p-56f, 0x1.7a59b2p-3f, -0x1.0b27bcp-2f, 0x1.ee3b92p+0f,
     /* node 3790 x */
-    0x1.19999ap-56f, 0x1.fea376p+0f, -0x1.39c5bcp+0f, -0x1.8a9768p-1f,
+    -0x1.4cccccp-55f, 0x1.feb786p+0f, -0x1.39f002p+0f, -0x1.8ac796p-1f,
     /* node 3790 y */
-    -0x1.0cccccp-55f, -0x1.7aa8a8p-1f, 0x1.9281b2p-1f, -0x1.04d8f8p-2f,
+    -0x1.41999ap-55f, -0x1.7a9c06p-1f, 0x1.92ab76p-1f, -0x1.0512b4p-2f,
     /* node 3790 z */
-    0x1.666666p-55f, 0x1.735002p-3f, -0x1.0894d2p-2f, 0x1.fbed52p+0f,
+    0x1.99999ap-57f, 0x1.71de58p-3f, -0x1.0853acp-2f, 0x1.fbec6p+0f,
     /* node 3791 x */
-    -0x1.98p-54f, 0x1.09cda2p+1f, -0x1.4ee5a4p+0f, -0x1.81afd8p-1f,
+    0x1.74p-53f, 0x1.09d498p+1f, -0x1.4f10b6p+0f, -0x1.81ea24p-1f,
     /* node 3791 y */
-    -0x1.633334p-55f, -0x1.6e053ap-1f, 0x1.8b8f8cp-1f, -0x1.f21748p-3f,
+    -0x1.ccccccp-56f, -0x1.6e1e3ep-1f, 0x1.8bd804p-1f, -0x1.f21082p-3f,
     /* node 3791 z */
-    -0x1p-55f, 0x1.88b218p-3f, -0x1.027eeap-2f, 0x1.f916ecp+0f,
+    -0x1.333334p-58f, 0x1.879aeep-3f, -0x1.020432p-2f, 0x1.f90178p+0f,
     /* node 3792 x */
-    0x1.133334p-53f, 0x1.066a3cp+1f, -0x1.489a06p+0f, -0x1.723becp-1f,
+    0x1.ep-55f, 0x1.0680c4p+1f, -0x1.48cb38p+0f, -0x1.72b8dcp-1f,
     /* node 3792 y */
-    0x1.c9999ap-56f, -0x1.7ca35p-1f, 0x1.9e7d0ep-1f, -0x1.e2a48cp-3f,
+    0x1.99999ap-60f, -0x1.7c917p-1f, 0x1.9ec528p-1f, -0x1.e3bcbcp-3f,
     /* node 3792 z */
-    -0x1p-56f, 0x1.85e1eap-3f, -0x1.0046ap-2f, 0x1.01ed6cp+1f,
+    0x1.4cccccp-56f, 0x1.856c6ap-3f, -0x1.002e2cp-2f, 0x1.01e43ap+1f,
     /* node 3793 x */
-    0x1.733334p-55f, 0x1.f72adap+0f, -0x1.31906ap+0f, -0x1.83d25p-1f,
+    0x1.15999ap-53f, 0x1.f72cd8p+0f, -0x1.31aeeep+0f, -0x1.83e0f8p-1f,
     /* node 3793 y */
-    0x1.d33334p-57f, -0x1.8585cp-1f, 0x1.9ecf14p-1f, -0x1.06caaap-2f,
+    0x1.ccccccp-58f, -0x1.85750ap-1f, 0x1.9ef262p-1f, -0x1.0715dcp-2f,
     /* node 3793 z */
-    -0x1.99999ap-58f, 0x1.5e7908p-3f, -0x1.03bf92p-2f, 0x1.03276ap+1f,
+    -0x1.99999ap-57f, 0x1.5d926ep-3f, -0x1.0376ccp-2f, 0x1.031b4ap+1f,
     /* node 3794 x */
-    0x1.666666p-54f, 0x1.041dc4p+1f, -0x1.43c8b4p+0f, -0x1.6bde44p-1f,
+    0x1.866666p-54f, 0x1.0411cp+1f, -0x1.43e7c8p+0f, -0x1.6bbb96p-1f,
     /* node 3794 y */
-    -0x1.ccccccp-58f, -0x1.84a0ccp-1f, 0x1.a8975ap-1f, -0x1.e330d2p-3f,
+    0x1.19999ap-59f, -0x1.84723ap-1f, 0x1.a85f82p-1f, -0x1.e25616p-3f,
     /* node 3794 z */
-    0x1.e66666p-56f, 0x1.6cd7dcp-3f, -0x1.e998e8p-3f, 0x1.07fcaap+1f,
+    -0x1.e66666p-56f, 0x1.6bd106p-3f, -0x1.e89634p-3f, 0x1.07e894p+1f,
     /* node 3795 x */
-    0x1.066666p-54f, 0x1.11bb06p+1f, -0x1.5faa0ep+0f, -0x1.67aa64p-1f,
+    0x1.5f3334p-53f, 0x1.11abb4p+1f, -0x1.5fbfe4p+0f, -0x1.676688p-1f,
     /* node 3795 y */
-    0x1p-57f, -0x1.729a3ap-1f, 0x1.9b8b9cp-1f, -0x1.cc68c2p-3f,
+    0x1.633334p-56f, -0x1.728d86p-1f, 0x1.9b678ep-1f, -0x1.cb7ddap-3f,
     /* node 3795 z */
-    -0x1.8p-56f, 0x1.9ee5ep-3f, -0x1.ff41e2p-3f, 0x1.00f3b8p+1f,
+    0x1.99999ap-60f, 0x1.9ed53p-3f, -0x1.ff84ep-3f, 0x1.00df14p+1f,
     /* node 3796 x */
-    0x1.2p-54f, 0x1.0ffc02p+1f, -0x1.5bea9p+0f, -0x1.563718p-1f,
+    0x1.b33334p-55f, 0x1.0ff698p+1f, -0x1.5c04dap+0f, -0x1.56411ep-1f,
     /* node 3796 y */
-    0x1.59999ap-58f, -0x1.7f1188p-1f, 0x1.ada0dp-1f, -0x1.b21d96p-3f,
+    -0x1.066666p-57f, -0x1.7f0626p-1f, 0x1.adc116p-1f, -0x1.b2c632p-3f,
     /* node 3796 z */
-    -0x1.333334p-58f, 0x1.96cbcep-3f, -0x1.f3abeep-3f, 0x1.05ad78p+1f,
+    -0x1.99999ap-58f, 0x1.9658b4p-3f, -0x1.f3b4a2p-3f, 0x1.059c84p+1f,
     /* node 3797 x */
-    -0x1.b33334p-58f, 0x1.f336fcp+0f, -0x1.2dd6a2p+0f, -0x1.749b62p-1f,
+    0x1.8p-58f, 0x1.f32fcap+0f, -0x1.2de52ep+0f, -0x1.74b1d2p-1f,
     /* node 3797 y */
-    0x1.99999ap-63f, -0x1.8ff5ap-1f, 0x1.aed7ecp-1f, -0x1.f56e7ep-3f,
+    -0x1.79999ap-56f, -0x1.8fb2e8p-1f, 0x1.ae8c98p-1f, -0x1.f4e47ap-3f,
     /* node 3797 z */
-    -0x1.99999ap-56f, 0x1.57480cp-3f, -0x1.00604ep-2f, 0x1.07da4p+1f,
+    0x1.99999ap-60f, 0x1.5711a8p-3f, -0x1.0018aep-2f, 0x1.07b6aap+1f,
     /* node 3798 x */
-    0x1.cp-57f, 0x1.f2e492p+0f, -0x1.2cd262p+0f, -0x1.6da1fap-1f,
+    0x1.09999ap-55f, 0x1.f30a32p+0f, -0x1.2d070cp+0f, -0x1.6e2bcep-1f,
     /* node 3798 y */
-    -0x1.166666p-55f, -0x1.94269ap-1f, 0x1.b8d044p-1f, -0x1.ed0ceep-3f,
+    0x1.3cccccp-56f, -0x1.93d64cp-1f, 0x1.b89612p-1f, -0x1.edf6aap-3f,
     /* node 3798 z */
-    0x1.333334p-58f, 0x1.3bb7e6p-3f, -0x1.e64abap-3f, 0x1.0dd638p+1f,
+    0x1.99999ap-58f, 0x1.3c31c4p-3f, -0x1.e6a1e4p-3f, 0x1.0dbadp+1f,
     /* node 3799 x */
-    0x1.08p-53f, 0x1.028de8p+1f, -0x1.40336ap+0f, -0x1.5bd2aep-1f,
+    0x1.266666p-57f, 0x1.02895ep+1f, -0x1.40643ep+0f, -0x1.5bb89cp-1f,
     /* node 3799 y */
-    -0x1.8cccccp-58f, -0x1.8db1f4p-1f, 0x1.b8a9a2p-1f, -0x1.c8cc62p-3f,
+    -0x1.b33334p-57f, -0x1.8d6488p-1f, 0x1.b8314p-1f, -0x1.c7ba64p-3f,
     /* node 3799 z */
-    -0x1.ccccccp-57f, 0x1.6a655ap-3f, -0x1.e789c6p-3f, 0x1.0b7fap+1f,
+    -0x1.ccccccp-57f, 0x1.6903e6p-3f, -0x1.e639e2p-3f, 0x1.0b732ep+1f,
     /* node 3800 x */
-    0x1.4cccccp-57f, 0x1.043a5cp+1f, -0x1.435728p+0f, -0x1.4b9ba6p-1f,
+    0x1.733334p-55f, 0x1.0445b8p+1f, -0x1.438676p+0f, -0x1.4be3c6p-1f,
     /* node 3800 y */
-    -0x1.ccccccp-60f, -0x1.95d68cp-1f, 0x1.c9414cp-1f, -0x1.a2ecc2p-3f,
+    0x1.f33334p-57f, -0x1.95edaep-1f, 0x1.c99d5p-1f, -0x1.a3b7c4p-3f,
     /* node 3800 z */
-    -0x1.99999ap-56f, 0x1.6016fep-3f, -0x1.d0a0bep-3f, 0x1.10e1ecp+1f,
+    -0x1.99999ap-57f, 0x1.5ec096p-3f, -0x1.cf2b3cp-3f, 0x1.10daep+1f,
     /* node 3801 x */
-    0x1.333334p-57f, 0x1.f95982p+0f, -0x1.31d786p+0f, -0x1.5def1p-1f,
+    0x1.8cccccp-56f, 0x1.f9796cp+0f, -0x1.320aa8p+0f, -0x1.5e5adep-1f,
     /* node 3801 y */
-    -0x1.0cccccp-57f, -0x1.98d77ap-1f, 0x1.c6129ap-1f, -0x1.c8eb5ap-3f,
+    -0x1.733334p-58f, -0x1.98d784p-1f, 0x1.c64592p-1f, -0x1.c9bp-3f,
     /* node 3801 z */
-    -0x1.99999ap-57f, 0x1.365538p-3f, -0x1.d4eac6p-3f, 0x1.12415cp+1f,
+    -0x1.666666p-56f, 0x1.3615cep-3f, -0x1.d4a0fap-3f, 0x1.123004p+1f,
     /* node 3802 x */
-    -0x1.19999ap-57f, 0x1.064b88p+1f, -0x1.45af4cp+0f, -0x1.3e67aep-1f,
+    -0x1.b33334p-57f, 0x1.065082p+1f, -0x1.45ce42p+0f, -0x1.3eb896p-1f,
     /* node 3802 y */
-    -0x1.666666p-59f, -0x1.9b41bep-1f, 0x1.db7718p-1f, -0x1.8bfdc8p-3f,
+    -0x1.7cccccp-55f, -0x1.9b5774p-1f, 0x1.db9424p-1f, -0x1.8bef14p-3f,
     /* node 3802 z */
-    -0x1.666666p-56f, 0x1.528658p-3f, -0x1.b7016p-3f, 0x1.168102p+1f,
+    0x1p-56f, 0x1.51a3acp-3f, -0x1.b6654p-3f, 0x1.167a6cp+1f,
     /* node 3803 x */
-    -0x1.266666p-57f, 0x1.0e0db8p+1f, -0x1.588a88p+0f, -0x1.3c87c6p-1f,
+    0x1.04ccccp-54f, 0x1.0e233p+1f, -0x1.58aecp+0f, -0x1.3cc4d6p-1f,
     /* node 3803 y */
-    -0x1.ep-56f, -0x1.90077ep-1f, 0x1.ce4aaep-1f, -0x1.814cfcp-3f,
+    0x1.b9999ap-58f, -0x1.8fd09p-1f, 0x1.ce1a78p-1f, -0x1.80b382p-3f,
     /* node 3803 z */
-    -0x1.ccccccp-57f, 0x1.7c9604p-3f, -0x1.cebd5ap-3f, 0x1.0f33ccp+1f,
+    -0x1.333334p-56f, 0x1.7bfaeep-3f, -0x1.ce4254p-3f, 0x1.0f1616p+1f,
     /* node 3804 x */
-    0x1.31999ap-54f, 0x1.0f2c4cp+1f, -0x1.595bb2p+0f, -0x1.2d3454p-1f,
+    0x1.dcccccp-54f, 0x1.0f4554p+1f, -0x1.598924p+0f, -0x1.2d6a2cp-1f,
     /* node 3804 y */
-    -0x1.666666p-61f, -0x1.98d4b2p-1f, 0x1.e04c6ap-1f, -0x1.725c66p-3f,
+    -0x1.233334p-56f, -0x1.98728ap-1f, 0x1.dffedcp-1f, -0x1.71d58ep-3f,
     /* node 3804 z */
-    -0x1.333334p-56f, 0x1.79a6d2p-3f, -0x1.c240a4p-3f, 0x1.140cfep+1f,
+    -0x1.99999ap-60f, 0x1.78fc18p-3f, -0x1.c199f2p-3f, 0x1.13f0b4p+1f,
     /* node 3805 x */
-    0x1.b33334p-56f, 0x1.fbcd7cp+0f, -0x1.32a312p+0f, -0x1.4b5b52p-1f,
+    0x1.8cp-53f, 0x1.fbea0ep+0f, -0x1.32d708p+0f, -0x1.4bb9a2p-1f,
     /* node 3805 y */
-    -0x1.5e6666p-55f, -0x1.a08f34p-1f, 0x1.d76afp-1f, -0x1.a5717p-3f,
+    -0x1.bcccccp-55f, -0x1.a0b396p-1f, 0x1.d78086p-1f, -0x1.a53058p-3f,
     /* node 3805 z */
-    -0x1.99999ap-59f, 0x1.30b6dcp-3f, -0x1.c28eaap-3f, 0x1.18392p+1f,
+    0x1.b33334p-56f, 0x1.2f2dccp-3f, -0x1.c18496p-3f, 0x1.1838bep+1f,
     /* node 3806 x */
-    -0x1p-59f, 0x1.07b4d6p+1f, -0x1.477d0ep+0f, -0x1.2d3adcp-1f,
+    -0x1.866666p-56f, 0x1.07b5dcp+1f, -0x1.4798b4p+0f, -0x1.2d70bep-1f,
     /* node 3806 y */
-    -0x0p+0f, -0x1.a7976ap-1f, 0x1.f647fap-1f, -0x1.5f88f4p-3f,
+    -0x1.0e6666p-56f, -0x1.a7d556p-1f, 0x1.f69cacp-1f, -0x1.5fa9f4p-3f,
     /* node 3806 z */
-    0x1.99999ap-60f, 0x1.47c04p-3f, -0x1.9c602p-3f, 0x1.1d7434p+1f,
+    -0x1.ccccccp-56f, 0x1.471338p-3f, -0x1.9c1658p-3f, 0x1.1d6f9ep+1f,
     /* node 3807 x */
-    0x1.09999ap-53f, 0x1.fc6cf2p+0f, -0x1.32b95ep+0f, -0x1.34ad16p-1f,
+    0x1.7p-55f, 0x1.fc7d5cp+0f, -0x1.32dcbep+0f, -0x1.34fafp-1f,
     /* node 3807 y */
-    0x1.88p-56f, -0x1.aaf7fcp-1f, 0x1.f46ef2p-1f, -0x1.76d5dep-3f,
+    -0x1.4cp-55f, -0x1.aaedacp-1f, 0x1.f49996p-1f, -0x1.77974p-3f,
     /* node 3807 z */
-    0x1.666666p-56f, 0x1.20dfb6p-3f, -0x1.a68858p-3f, 0x1.200216p+1f,
+    -0x1p-57f, 0x1.201f7ep-3f, -0x1.a603d6p-3f, 0x1.1ff396p+1f,
     /* node 3808 x */
-    -0x1.39999ap-55f, 0x1.0a61ap+1f, -0x1.49e3d6p+0f, -0x1.17652ep-1f,
+    -0x1.98p-54f, 0x1.0a64ccp+1f, -0x1.4a0bf6p+0f, -0x1.1787cap-1f,
     /* node 3808 y */
-    -0x1.91999ap-55f, -0x1.b8ea7p-1f, 0x1.0f148ap+0f, -0x1.29404cp-3f,
+    0x1.f9999ap-58f, -0x1.b90214p-1f, 0x1.0f1f2ep+0f, -0x1.28cba8p-3f,
     /* node 3808 z */
-    -0x1.333334p-58f, 0x1.31ac4ap-3f, -0x1.7a69a2p-3f, 0x1.280bccp+1f,
+    0x1.4cccccp-56f, 0x1.311f34p-3f, -0x1.7a0f3ap-3f, 0x1.27fae6p+1f,
     /* node 3809 x */
-    -0x0p+0f, 0x1.117d26p+1f, -0x1.5d991ep+0f, -0x1.0bebeep-1f,
+    0x1.bp-55f, 0x1.11814ep+1f, -0x1.5db126p+0f, -0x1.0c14p-1f,
     /* node 3809 y */
-    0x1.133334p-56f, -0x1.b30c8ap-1f, 0x1.0cce94p+0f, -0x1.203e4p-3f,
+    -0x1.58ccccp-55f, -0x1.b3279ep-1f, 0x1.0ce814p+0f, -0x1.206d84p-3f,
     /* node 3809 z */
-    -0x1.99999ap-56f, 0x1.5dcd12p-3f, -0x1.831972p-3f, 0x1.236b0ep+1f,
+    -0x1.666666p-55f, 0x1.5d3cf8p-3f, -0x1.832ba8p-3f, 0x1.235d86p+1f,
     /* node 3810 x */
-    0x1.c1999ap-54f, 0x1.12dd9p+1f, -0x1.5dd108p+0f, -0x1.eecdaep-2f,
+    0x1.fp-55f, 0x1.12e61p+1f, -0x1.5df97ap+0f, -0x1.ef3996p-2f,
     /* node 3810 y */
-    0x1.5cccccp-57f, -0x1.c0dae8p-1f, 0x1.206bdcp+0f, -0x1.e1b14ap-4f,
+    0x1.19999ap-56f, -0x1.c0f578p-1f, 0x1.207d26p+0f, -0x1.e0bd8ep-4f,
     /* node 3810 z */
-    -0x1.333334p-55f, 0x1.4d11d8p-3f, -0x1.616b76p-3f, 0x1.2d41ep+1f,
+    -0x1.99999ap-56f, 0x1.4cb1d8p-3f, -0x1.617be8p-3f, 0x1.2d2abap+1f,
     /* node 3828 x */
-    0x1.f9999ap-56f, 0x1.19e08p+1f, -0x1.70caccp+0f, -0x1.5cae52p-1f,
+    0x1.9e6666p-53f, 0x1.19ecb8p+1f, -0x1.70fd26p+0f, -0x1.5cec2ep-1f,
     /* node 3828 y */
-    0x1.e9999ap-56f, -0x1.70f1acp-1f, 0x1.9ec23ep-1f, -0x1.b8f28ap-3f,
+    -0x1.99999ap-61f, -0x1.710cd8p-1f, 0x1.9f558cp-1f, -0x1.b9b5acp-3f,
     /* node 3828 z */
-    -0x1.ccccccp-57f, 0x1.c43a0cp-3f, -0x1.06ff66p-2f, 0x1.00248ep+1f,
+    0x1.99999ap-60f, 0x1.c43dfcp-3f, -0x1.06f662p-2f, 0x1.00186ap+1f,
     /* node 3829 x */
-    0x1.133334p-56f, 0x1.217998p+1f, -0x1.82f8ccp+0f, -0x1.416ec2p-1f,
+    -0x1.133334p-56f, 0x1.219ac2p+1f, -0x1.832b8cp+0f, -0x1.4188f6p-1f,
     /* node 3829 y */
-    -0x1.8cccccp-56f, -0x1.79beeap-1f, 0x1.b43a16p-1f, -0x1.92f80ap-3f,
+    0x1.033334p-56f, -0x1.79a0ecp-1f, 0x1.b3e4e6p-1f, -0x1.936efap-3f,
     /* node 3829 z */
-    -0x1.333334p-58f, 0x1.e26e74p-3f, -0x1.09a194p-2f, 0x1.055746p+1f,
+    -0x1.4cccccp-56f, 0x1.e2ffaap-3f, -0x1.09c024p-2f, 0x1.052ea6p+1f,
     /* node 3832 x */
-    0x1.b33334p-57f, 0x1.198b3p+1f, -0x1.70d598p+0f, -0x1.4e1c68p-1f,
+    -0x1.99999ap-56f, 0x1.198c5ep+1f, -0x1.70f40ep+0f, -0x1.4e342ap-1f,
     /* node 3832 y */
-    -0x1.233334p-56f, -0x1.7be288p-1f, 0x1.b15132p-1f, -0x1.a3073ap-3f,
+    0x1.0cccccp-58f, -0x1.7c0ff2p-1f, 0x1.b1b9ap-1f, -0x1.a4114ep-3f,
     /* node 3832 z */
-    -0x0p+0f, 0x1.b71b68p-3f, -0x1.fb968ap-3f, 0x1.05a45p+1f,
+    -0x1.733334p-55f, 0x1.b7520cp-3f, -0x1.fb70fcp-3f, 0x1.05915cp+1f,
     /* node 3833 x */
-    0x1.db3334p-54f, 0x1.17d8d2p+1f, -0x1.6e4212p+0f, -0x1.3e1d04p-1f,
+    0x1.873334p-53f, 0x1.17ef68p+1f, -0x1.6e69eap+0f, -0x1.3e869p-1f,
     /* node 3833 y */
-    -0x1.d4p-55f, -0x1.836e02p-1f, 0x1.beb486p-1f, -0x1.8357f8p-3f,
+    -0x1.433334p-54f, -0x1.83431ap-1f, 0x1.be9eccp-1f, -0x1.843b4p-3f,
     /* node 3833 z */
-    -0x1.e66666p-56f, 0x1.aa55fcp-3f, -0x1.ea33b6p-3f, 0x1.09b7c6p+1f,
+    0x1.99999ap-60f, 0x1.a98a18p-3f, -0x1.e962e6p-3f, 0x1.09a5fp+1f,
     /* node 3834 x */
-    0x1.9b3334p-53f, 0x1.216104p+1f, -0x1.828c96p+0f, -0x1.302aeep-1f,
+    -0x1.333334p-55f, 0x1.217132p+1f, -0x1.82a3f4p+0f, -0x1.300d7ap-1f,
     /* node 3834 y */
-    0x1.acccccp-58f, -0x1.81db78p-1f, 0x1.c18b0ap-1f, -0x1.82058ap-3f,
+    -0x1.3p-56f, -0x1.81cb1ap-1f, 0x1.c179fcp-1f, -0x1.8322f8p-3f,
     /* node 3834 z */
-    0x1p-57f, 0x1.dbf3ep-3f, -0x1.0494c8p-2f, 0x1.08fba4p+1f,
+    -0x1.0cccccp-55f, 0x1.dc97e2p-3f, -0x1.04f96p-2f, 0x1.08d614p+1f,
     /* node 3835 x */
-    0x1.333334p-57f, 0x1.2158dcp+1f, -0x1.82ecf4p+0f, -0x1.214e16p-1f,
+    0x1.d9999ap-57f, 0x1.216e6p+1f, -0x1.830164p+0f, -0x1.213b66p-1f,
     /* node 3835 y */
-    -0x1.9b3334p-56f, -0x1.8c374ep-1f, 0x1.d2a9dap-1f, -0x1.6c08eep-3f,
+    0x1.233334p-57f, -0x1.8c279p-1f, 0x1.d2f3ecp-1f, -0x1.6d44dep-3f,
     /* node 3835 z */
-    0x1.99999ap-59f, 0x1.d9809ap-3f, -0x1.fd949p-3f, 0x1.0d62bp+1f,
+    -0x1.99999ap-57f, 0x1.d94caap-3f, -0x1.fdf664p-3f, 0x1.0d3f2ap+1f,
     /* node 3836 x */
-    0x1.79999ap-55f, 0x1.17a766p+1f, -0x1.6d7c64p+0f, -0x1.2f7292p-1f,
+    0x1.1p-55f, 0x1.17ba5ep+1f, -0x1.6da11ep+0f, -0x1.2ff5e2p-1f,
     /* node 3836 y */
-    0x1.b1999ap-56f, -0x1.8bbf2ep-1f, 0x1.cd8ff8p-1f, -0x1.762fp-3f,
+    -0x1.9f3334p-55f, -0x1.8ba12ep-1f, 0x1.cdb1cap-1f, -0x1.7723f4p-3f,
     /* node 3836 z */
-    -0x1p-57f, 0x1.a3953ap-3f, -0x1.dfb664p-3f, 0x1.0dce3p+1f,
+    -0x1.333334p-58f, 0x1.a32b42p-3f, -0x1.dfb67cp-3f, 0x1.0dbb62p+1f,
     /* node 3837 x */
-    0x1.2e6666p-53f, 0x1.22aaa6p+1f, -0x1.8608e6p+0f, -0x1.11c844p-1f,
+    0x1.ccccccp-59f, 0x1.22c24cp+1f, -0x1.862c06p+0f, -0x1.11dc8ep-1f,
     /* node 3837 y */
-    -0x1.e73334p-55f, -0x1.952efep-1f, 0x1.e6d76ap-1f, -0x1.537e4p-3f,
+    -0x1.41999ap-55f, -0x1.951ebcp-1f, 0x1.e70736p-1f, -0x1.539658p-3f,
     /* node 3837 z */
-    -0x1.333334p-56f, 0x1.d511e4p-3f, -0x1.ef8982p-3f, 0x1.11f064p+1f,
+    -0x1.e66666p-56f, 0x1.d4577ep-3f, -0x1.ef5546p-3f, 0x1.11d384p+1f,
     /* node 3838 x */
-    0x1.ep-56f, 0x1.2aad46p+1f, -0x1.968f1cp+0f, -0x1.1a912ep-1f,
+    0x1.09999ap-54f, 0x1.2ac3b6p+1f, -0x1.96e88ap+0f, -0x1.1ac08cp-1f,
     /* node 3838 y */
-    -0x1.84ccccp-56f, -0x1.8bb2ecp-1f, 0x1.d63254p-1f, -0x1.70e25ep-3f,
+    -0x1.8eccccp-54f, -0x1.8bd748p-1f, 0x1.d69282p-1f, -0x1.7040aap-3f,
     /* node 3838 z */
-    0x1.333334p-57f, 0x1.fe60a8p-3f, -0x1.0909fcp-2f, 0x1.0ddd78p+1f,
+    -0x1.99999ap-58f, 0x1.fc0254p-3f, -0x1.084146p-2f, 0x1.0de476p+1f,
     /* node 3839 x */
-    0x1.2b3334p-54f, 0x1.2bd27cp+1f, -0x1.9914cap+0f, -0x1.089342p-1f,
+    0x1.733334p-57f, 0x1.2be12ep+1f, -0x1.99686ep+0f, -0x1.08c40cp-1f,
     /* node 3839 y */
-    0x1.10ccccp-55f, -0x1.95654ep-1f, 0x1.e83dfap-1f, -0x1.6011e8p-3f,
+    0x1p-60f, -0x1.956dcap-1f, 0x1.e8484cp-1f, -0x1.5e7e4ap-3f,
     /* node 3839 z */
-    0x1.99999ap-58f, 0x1.0032ap-2f, -0x1.05e31cp-2f, 0x1.125c9ep+1f,
+    -0x1.99999ap-60f, 0x1.fe2bdap-3f, -0x1.0520e6p-2f, 0x1.125834p+1f,
     /* node 3840 x */
-    -0x1.d9999ap-54f, 0x1.190ddp+1f, -0x1.711afcp+0f, -0x1.2249ep-1f,
+    0x1.34ccccp-54f, 0x1.191e58p+1f, -0x1.713f8p+0f, -0x1.22ba0cp-1f,
     /* node 3840 y */
-    -0x1.04ccccp-56f, -0x1.992668p-1f, 0x1.e7746cp-1f, -0x1.59fd88p-3f,
+    -0x1.f33334p-59f, -0x1.9917aep-1f, 0x1.e7a23cp-1f, -0x1.5a50d2p-3f,
     /* node 3840 z */
-    -0x1p-56f, 0x1.9e85b4p-3f, -0x1.cd57f6p-3f, 0x1.13e248p+1f,
+    0x1.333334p-57f, 0x1.9deb1ep-3f, -0x1.cd7dfp-3f, 0x1.13cf6ap+1f,
     /* node 3841 x */
-    -0x1.99999ap-61f, 0x1.195f9cp+1f, -0x1.71600ep+0f, -0x1.130b06p-1f,
+    0x1.04ccccp-53f, 0x1.19765cp+1f, -0x1.7197a8p+0f, -0x1.1361cap-1f,
     /* node 3841 y */
-    -0x1.21999ap-56f, -0x1.a12e48p-1f, 0x1.fad198p-1f, -0x1.386696p-3f,
+    -0x1.333334p-60f, -0x1.a12df6p-1f, 0x1.fae1ap-1f, -0x1.382c18p-3f,
     /* node 3841 z */
-    -0x1.666666p-57f, 0x1.955bd4p-3f, -0x1.b989e2p-3f, 0x1.18c4bep+1f,
+    -0x1.99999ap-60f, 0x1.9453c8p-3f, -0x1.b8eecp-3f, 0x1.18b318p+1f,
     /* node 3842 x */
-    0x1.64ccccp-53f, 0x1.2381c6p+1f, -0x1.8736fcp+0f, -0x1.01c488p-1f,
+    -0x1.9e6666p-53f, 0x1.238bbcp+1f, -0x1.874e76p+0f, -0x1.01d1aap-1f,
     /* node 3842 y */
-    -0x1.0b3334p-54f, -0x1.9fb648p-1f, 0x1.fb3a88p-1f, -0x1.4836aep-3f,
+    0x1.666666p-57f, -0x1.9fcca8p-1f, 0x1.fb777cp-1f, -0x1.49343ep-3f,
     /* node 3842 z */
-    0x1.b33334p-56f, 0x1.cf7248p-3f, -0x1.e4a30ep-3f, 0x1.16f9f6p+1f,
+    -0x1.4cccccp-56f, 0x1.cf49aep-3f, -0x1.e570a4p-3f, 0x1.16e368p+1f,
     /* node 3843 x */
-    0x1.30ccccp-53f, 0x1.2374d6p+1f, -0x1.878d46p+0f, -0x1.e44b6p-2f,
+    0x1.4b3334p-54f, 0x1.2376d2p+1f, -0x1.87a4b6p+0f, -0x1.e47b58p-2f,
     /* node 3843 y */
-    0x1.b4ccccp-56f, -0x1.abf056p-1f, 0x1.0a918cp+0f, -0x1.2066f2p-3f,
+    -0x1.533334p-58f, -0x1.abd0bcp-1f, 0x1.0a779p+0f, -0x1.206ce2p-3f,
     /* node 3843 z */
-    -0x1.19999ap-56f, 0x1.bba23ep-3f, -0x1.c0d8fap-3f, 0x1.1dfed4p+1f,
+    0x1.99999ap-57f, 0x1.baf8b6p-3f, -0x1.c0cf44p-3f, 0x1.1de87ep+1f,
     /* node 3844 x */
-    0x1.04ccccp-53f, 0x1.1a1816p+1f, -0x1.714bfap+0f, -0x1.003cb8p-1f,
+    0x1.ep-56f, 0x1.1a292p+1f, -0x1.718208p+0f, -0x1.00624ap-1f,
     /* node 3844 y */
-    -0x1.41999ap-56f, -0x1.ade306p-1f, 0x1.0bb7ap+0f, -0x1.24bce8p-3f,
+    0x1.9a6666p-55f, -0x1.ade49p-1f, 0x1.0bb7a2p+0f, -0x1.2456cap-3f,
     /* node 3844 z */
-    -0x1.8p-56f, 0x1.8a30aap-3f, -0x1.a5b68ep-3f, 0x1.1fddaap+1f,
+    0x1.99999ap-60f, 0x1.89473ap-3f, -0x1.a544cap-3f, 0x1.1fcc7ep+1f,
     /* node 3845 x */
-    -0x1.39999ap-56f, 0x1.21f8cap+1f, -0x1.83f9bap+0f, -0x1.b929ecp-2f,
+    0x1.a66666p-56f, 0x1.21fcb2p+1f, -0x1.84199cp+0f, -0x1.b970d2p-2f,
     /* node 3845 y */
-    -0x1.2cccccp-56f, -0x1.b68b18p-1f, 0x1.18cbe4p+0f, -0x1.0f0f24p-3f,
+    -0x1.9e6666p-56f, -0x1.b67968p-1f, 0x1.18c51ep+0f, -0x1.0e94dcp-3f,
     /* node 3845 z */
-    -0x1.333334p-58f, 0x1.ad4c32p-3f, -0x1.ae11e4p-3f, 0x1.24ab92p+1f,
+    -0x1.666666p-56f, 0x1.ac8b0ep-3f, -0x1.adeac2p-3f, 0x1.249aaap+1f,
     /* node 3846 x */
-    0x1.48p-54f, 0x1.2d6f1ep+1f, -0x1.9da3ep+0f, -0x1.c54c84p-2f,
+    0x1.74ccccp-54f, 0x1.2d7f4p+1f, -0x1.9de622p+0f, -0x1.c5c43cp-2f,
     /* node 3846 y */
-    -0x1.a66666p-56f, -0x1.aa8fp-1f, 0x1.0a29ep+0f, -0x1.34552cp-3f,
+    -0x1.4cccccp-57f, -0x1.aaa94ap-1f, 0x1.0a441cp+0f, -0x1.3491eap-3f,
     /* node 3846 z */
-    -0x1.99999ap-60f, 0x1.fa5facp-3f, -0x1.f7b95ep-3f, 0x1.1caf8p+1f,
+    0x1.99999ap-60f, 0x1.f8dfbep-3f, -0x1.f6c96ap-3f, 0x1.1ca8dep+1f,
     /* node 3847 x */
-    -0x1.1b3334p-54f, 0x1.2be908p+1f, -0x1.9a3e62p+0f, -0x1.9ef14ap-2f,
+    0x1.60ccccp-53f, 0x1.2bf9eap+1f, -0x1.9a8c96p+0f, -0x1.9f929ap-2f,
     /* node 3847 y */
-    0x1.d9999ap-59f, -0x1.b44252p-1f, 0x1.16498p+0f, -0x1.1e853ap-3f,
+    -0x1.6p-58f, -0x1.b47bb6p-1f, 0x1.166ffep+0f, -0x1.1d47ep-3f,
     /* node 3847 z */
-    0x1p-57f, 0x1.e86a8cp-3f, -0x1.de0432p-3f, 0x1.2240e4p+1f,
+    0x1.333334p-57f, 0x1.e720c8p-3f, -0x1.dcaddap-3f, 0x1.22330ap+1f,
     /* node 3848 x */
-    -0x1.59999ap-55f, 0x1.198144p+1f, -0x1.6f0262p+0f, -0x1.ce8ec8p-2f,
+    0x1.cp-57f, 0x1.198f8p+1f, -0x1.6f36f4p+0f, -0x1.cef94cp-2f,
     /* node 3848 y */
-    -0x1.2b3334p-56f, -0x1.bc1a74p-1f, 0x1.1d5752p+0f, -0x1.f4873cp-4f,
+    -0x1.733334p-59f, -0x1.bc2decp-1f, 0x1.1d6a5cp+0f, -0x1.f34542p-4f,
     /* node 3848 z */
-    -0x1.8p-56f, 0x1.7aa858p-3f, -0x1.7bd752p-3f, 0x1.291ecap+1f,
+    0x1.333334p-56f, 0x1.79d00ep-3f, -0x1.7b4b12p-3f, 0x1.291252p+1f,
     /* node 3849 x */
-    -0x1.4cccccp-57f, 0x1.2097eap+1f, -0x1.8048cp+0f, -0x1.893b92p-2f,
+    0x1p-59f, 0x1.209b8cp+1f, -0x1.8068bp+0f, -0x1.895634p-2f,
     /* node 3849 y */
-    0x1.126666p-55f, -0x1.c5b1c8p-1f, 0x1.2d5ad6p+0f, -0x1.c6b778p-4f,
+    -0x1.e8p-56f, -0x1.c5c882p-1f, 0x1.2d6d08p+0f, -0x1.c5899ap-4f,
     /* node 3849 z */
-    -0x1.ccccccp-57f, 0x1.998748p-3f, -0x1.86a31ep-3f, 0x1.2de892p+1f,
+    -0x1.19999ap-56f, 0x1.992c44p-3f, -0x1.869646p-3f, 0x1.2dd6fcp+1f,
     /* node 3850 x */
-    -0x1.5p-55f, 0x1.19531ep+1f, -0x1.6d4eb8p+0f, -0x1.a2a94ep-2f,
+    0x1.39999ap-54f, 0x1.195b7ep+1f, -0x1.6d829ep+0f, -0x1.a31b52p-2f,
     /* node 3850 y */
-    -0x1.dp-56f, -0x1.cb410ep-1f, 0x1.33f2e4p+0f, -0x1.915516p-4f,
+    -0x1.533334p-57f, -0x1.cb7e84p-1f, 0x1.34241p+0f, -0x1.90a4f6p-4f,
     /* node 3850 z */
-    0x1.99999ap-57f, 0x1.5f68e2p-3f, -0x1.50914ap-3f, 0x1.341ea6p+1f,
+    -0x1.99999ap-58f, 0x1.5e69c6p-3f, -0x1.4fc156p-3f, 0x1.3418fap+1f,
     /* node 3851 x */
-    0x1.366666p-55f, 0x1.1f82b2p+1f, -0x1.7adc1ap+0f, -0x1.583f18p-2f,
+    -0x1.01999ap-55f, 0x1.1f8424p+1f, -0x1.7aff7p+0f, -0x1.58fab8p-2f,
     /* node 3851 y */
-    -0x1.49999ap-56f, -0x1.d54ef2p-1f, 0x1.45463ap+0f, -0x1.6e79b4p-4f,
+    0x1.40ccccp-56f, -0x1.d56152p-1f, 0x1.454d88p+0f, -0x1.6e314cp-4f,
     /* node 3851 z */
-    -0x1.99999ap-60f, 0x1.7db81p-3f, -0x1.502f6ep-3f, 0x1.382934p+1f,
+    -0x1.333334p-57f, 0x1.7cf4bep-3f, -0x1.4f834ep-3f, 0x1.381ad2p+1f,
     /* node 3852 x */
-    0x1.6e6666p-54f, 0x1.2753e4p+1f, -0x1.8d6f86p+0f, -0x1.42cfc8p-2f,
+    -0x1.fe6666p-55f, 0x1.27574ap+1f, -0x1.8d8edap+0f, -0x1.42cd8ap-2f,
     /* node 3852 y */
-    -0x1.dcccccp-57f, -0x1.d29a6ep-1f, 0x1.3f6746p+0f, -0x1.a4ee08p-4f,
+    0x1.033334p-57f, -0x1.d2e78ap-1f, 0x1.3fa7bap+0f, -0x1.a2db6p-4f,
     /* node 3852 z */
-    0x1.333334p-57f, 0x1.ade8c2p-3f, -0x1.8befdap-3f, 0x1.33cddp+1f,
+    -0x1.19999ap-55f, 0x1.ad0f78p-3f, -0x1.8b50dep-3f, 0x1.33c474p+1f,
     /* node 3853 x */
-    -0x1.8cp-54f, 0x1.251a56p+1f, -0x1.86c3fcp+0f, -0x1.119b3cp-2f,
+    0x1.b66666p-54f, 0x1.2529a8p+1f, -0x1.870f98p+0f, -0x1.123e4cp-2f,
     /* node 3853 y */
-    -0x1.09p-53f, -0x1.dbd21p-1f, 0x1.535f5ap+0f, -0x1.660c9cp-4f,
+    -0x1.116666p-54f, -0x1.dc0e5ap-1f, 0x1.538deap+0f, -0x1.658f7ap-4f,
     /* node 3853 z */
-    0x1.8p-56f, 0x1.939fdap-3f, -0x1.642b9p-3f, 0x1.3bf05ap+1f,
+    -0x1p-57f, 0x1.924a1cp-3f, -0x1.62bc8p-3f, 0x1.3be47p+1f,
     /* node 3884 x */
-    0x1.cb3334p-54f, 0x1.3c3e12p+1f, -0x1.bdae36p+0f, -0x1.c7cfb2p-2f,
+    0x1.4cccccp-56f, 0x1.3c490cp+1f, -0x1.bdc9e2p+0f, -0x1.c7c96ep-2f,
     /* node 3884 y */
-    0x1.e33334p-57f, -0x1.a5c7aap-1f, 0x1.043ae2p+0f, -0x1.5d9d9cp-3f,
+    -0x1.8b3334p-56f, -0x1.a5f16ep-1f, 0x1.0435fap+0f, -0x1.5e25acp-3f,
     /* node 3884 z */
-    0x1.666666p-57f, 0x1.22213p-2f, -0x1.1af96ep-2f, 0x1.1a9fe8p+1f,
+    -0x1.333334p-56f, 0x1.219b28p-2f, -0x1.1b4bf4p-2f, 0x1.1a8628p+1f,
     /* node 3887 x */
-    -0x1.0e6666p-54f, 0x1.3d0d92p+1f, -0x1.bf507ep+0f, -0x1.99af2ep-2f,
+    0x1.3cp-53f, 0x1.3d145cp+1f, -0x1.bf74dcp+0f, -0x1.9a0796p-2f,
     /* node 3887 y */
-    0x1.333334p-62f, -0x1.affa7ap-1f, 0x1.0de614p+0f, -0x1.53ac64p-3f,
+    -0x1.6cccccp-55f, -0x1.b0122p-1f, 0x1.0df016p+0f, -0x1.539e68p-3f,
     /* node 3887 z */
-    0x1.666666p-56f, 0x1.228c94p-2f, -0x1.1a7368p-2f, 0x1.1f7caap+1f,
+    -0x1.a66666p-55f, 0x1.2248cp-2f, -0x1.1ab3d8p-2f, 0x1.1f65dep+1f,
     /* node 3891 x */
-    0x1.466666p-55f, 0x1.3812f4p+1f, -0x1.b4ddcap+0f, -0x1.7f7e86p-2f,
+    -0x1.0cp-54f, 0x1.383042p+1f, -0x1.b53a86p+0f, -0x1.800c64p-2f,
     /* node 3891 y */
-    0x1.fp-57f, -0x1.b6ef94p-1f, 0x1.169dccp+0f, -0x1.36a50ap-3f,
+    0x1.1cccccp-55f, -0x1.b6f348p-1f, 0x1.16a8a8p+0f, -0x1.35d774p-3f,
     /* node 3891 z */
-    -0x1.e66666p-56f, 0x1.14876ap-2f, -0x1.0c2fccp-2f, 0x1.228c44p+1f,
+    -0x0p+0f, 0x1.13f468p-2f, -0x1.0bf1f8p-2f, 0x1.227644p+1f,
     /* node 3892 x */
-    0x1.7f3334p-54f, 0x1.340198p+1f, -0x1.ac3a58p+0f, -0x1.5c05c8p-2f,
+    0x1.39999ap-54f, 0x1.33fep+1f, -0x1.ac3b74p+0f, -0x1.5c13p-2f,
     /* node 3892 y */
-    -0x1.d4ccccp-54f, -0x1.bffafap-1f, 0x1.2281d8p+0f, -0x1.205de6p-3f,
+    -0x1.233334p-55f, -0x1.bffbd6p-1f, 0x1.22726ap+0f, -0x1.208d46p-3f,
     /* node 3892 z */
-    -0x1.666666p-57f, 0x1.05b844p-2f, -0x1.f8eccap-3f, 0x1.278a68p+1f,
+    -0x1.e66666p-55f, 0x1.055922p-2f, -0x1.f91e58p-3f, 0x1.27762ap+1f,
     /* node 3893 x */
-    -0x1.e9999ap-56f, 0x1.400152p+1f, -0x1.c6bdb2p+0f, -0x1.4cb092p-2f,
+    0x1.6cp-54f, 0x1.4011bcp+1f, -0x1.c6ef24p+0f, -0x1.4d2edcp-2f,
     /* node 3893 y */
-    0x1.4cccccp-60f, -0x1.bdfcdp-1f, 0x1.1e6a3p+0f, -0x1.3a1afep-3f,
+    -0x1.a66666p-56f, -0x1.be1a24p-1f, 0x1.1e8116p+0f, -0x1.3937e2p-3f,
     /* node 3893 z */
-    0x1.99999ap-60f, 0x1.251286p-2f, -0x1.1a462p-2f, 0x1.26a9ccp+1f,
+    -0x1.e66666p-56f, 0x1.247eb4p-2f, -0x1.19ee3ap-2f, 0x1.26988ep+1f,
     /* node 3894 x */
-    0x1.213334p-53f, 0x1.3b7beap+1f, -0x1.bc80a8p+0f, -0x1.2097d8p-2f,
+    0x1.98ccccp-54f, 0x1.3b908ap+1f, -0x1.bcc624p+0f, -0x1.212d6ep-2f,
     /* node 3894 y */
-    0x1.026666p-55f, -0x1.c78b6p-1f, 0x1.2a44c4p+0f, -0x1.2701cp-3f,
+    -0x1.033334p-55f, -0x1.c7a29ap-1f, 0x1.2a50dp+0f, -0x1.262f04p-3f,
     /* node 3894 z */
-    0x1.99999ap-56f, 0x1.1966eap-2f, -0x1.101b36p-2f, 0x1.2b553ap+1f,
+    -0x1.666666p-56f, 0x1.189e9p-2f, -0x1.0f4492p-2f, 0x1.2b471cp+1f,
     /* node 3895 x */
-    -0x1.2cccccp-54f, 0x1.310bacp+1f, -0x1.a60c96p+0f, -0x1.301538p-2f,
+    0x1.63999ap-53f, 0x1.310e3cp+1f, -0x1.a63722p+0f, -0x1.306552p-2f,
     /* node 3895 y */
-    0x1.866666p-58f, -0x1.cd1356p-1f, 0x1.33fca8p+0f, -0x1.f818cp-4f,
+    0x1.2cccccp-57f, -0x1.cd042ep-1f, 0x1.33fdcp+0f, -0x1.f6e08p-4f,
     /* node 3895 z */
-    -0x1.333334p-58f, 0x1.f08b94p-3f, -0x1.d9068ep-3f, 0x1.2dc87cp+1f,
+    -0x1.333334p-55f, 0x1.ef538p-3f, -0x1.d818acp-3f, 0x1.2db5a2p+1f,
     /* node 3896 x */
-    0x1.e26666p-54f, 0x1.364908p+1f, -0x1.b15ab2p+0f, -0x1.db91d2p-3f,
+    0x1.71999ap-54f, 0x1.36572p+1f, -0x1.b17f34p+0f, -0x1.dbd83ap-3f,
     /* node 3896 y */
-    -0x1.0cccccp-56f, -0x1.d0b0dap-1f, 0x1.3b67eep+0f, -0x1.0532f2p-3f,
+    -0x1.7cccccp-55f, -0x1.d0e37ep-1f, 0x1.3b7f3ap+0f, -0x1.046bbp-3f,
     /* node 3896 z */
-    -0x1.333334p-57f, 0x1.07435cp-2f, -0x1.f9975ep-3f, 0x1.318cep+1f,
+    0x1.99999ap-58f, 0x1.06b84cp-2f, -0x1.f96cdep-3f, 0x1.317decp+1f,
     /* node 3897 x */
-    0x1.99999ap-54f, 0x1.49537ep+1f, -0x1.da8f92p+0f, -0x1.1f2bf6p-2f,
+    0x1.bb3334p-53f, 0x1.49678ep+1f, -0x1.dae9e6p+0f, -0x1.2008ccp-2f,
     /* node 3897 y */
-    -0x1.f66666p-56f, -0x1.c40dfp-1f, 0x1.22c4aap+0f, -0x1.44977cp-3f,
+    -0x1.966666p-57f, -0x1.c432c2p-1f, 0x1.22e918p+0f, -0x1.43149ap-3f,
     /* node 3897 z */
-    -0x1.0cccccp-55f, 0x1.3ad2bcp-2f, -0x1.2db792p-2f, 0x1.2a750ep+1f,
+    -0x1.666666p-55f, 0x1.3a0ap-2f, -0x1.2ceeaap-2f, 0x1.2a6b36p+1f,
     /* node 3898 x */
-    -0x1p-55f, 0x1.435bf6p+1f, -0x1.ce5226p+0f, -0x1.e3980cp-3f,
+    -0x1.4cccccp-59f, 0x1.437348p+1f, -0x1.ce9862p+0f, -0x1.e4730cp-3f,
     /* node 3898 y */
-    -0x1.266666p-57f, -0x1.cadd7cp-1f, 0x1.2d4a9p+0f, -0x1.31144cp-3f,
+    -0x1.31999ap-56f, -0x1.cb061ep-1f, 0x1.2d6e1cp+0f, -0x1.315b1ep-3f,
     /* node 3898 z */
-    -0x1.333334p-57f, 0x1.296c7p-2f, -0x1.1ddc2ap-2f, 0x1.2e4c3ap+1f,
+    0x1.333334p-57f, 0x1.28bfa4p-2f, -0x1.1d85bp-2f, 0x1.2e37ecp+1f,
     /* node 3899 x */
-    0x1.dc6666p-53f, 0x1.2cbfc2p+1f, -0x1.9a1032p+0f, -0x1.f5342ap-3f,
+    0x1.51999ap-54f, 0x1.2cb874p+1f, -0x1.9a144ep+0f, -0x1.f58c7cp-3f,
     /* node 3899 y */
-    0x1.b33334p-59f, -0x1.d63304p-1f, 0x1.471376p+0f, -0x1.c923b6p-4f,
+    -0x1.79999ap-58f, -0x1.d603f2p-1f, 0x1.46e278p+0f, -0x1.c911dap-4f,
     /* node 3899 z */
-    0x1.99999ap-59f, 0x1.d5e6c6p-3f, -0x1.ba8d7ap-3f, 0x1.356756p+1f,
+    -0x1.666666p-57f, 0x1.d562dp-3f, -0x1.ba9678p-3f, 0x1.355794p+1f,
     /* node 3900 x */
-    0x1.95999ap-55f, 0x1.31bb92p+1f, -0x1.a603fp+0f, -0x1.7415dep-3f,
+    0x1.6b3334p-54f, 0x1.31d64p+1f, -0x1.a67292p+0f, -0x1.751452p-3f,
     /* node 3900 y */
-    0x1.566666p-57f, -0x1.da8092p-1f, 0x1.4ef52cp+0f, -0x1.d4b6ep-4f,
+    -0x1.4d999ap-55f, -0x1.da9866p-1f, 0x1.4ef2e6p+0f, -0x1.d4396ap-4f,
     /* node 3900 z */
-    -0x1.99999ap-58f, 0x1.eafb08p-3f, -0x1.d481fep-3f, 0x1.3847d8p+1f,
+    -0x1.b33334p-56f, 0x1.e8b7d8p-3f, -0x1.d237dep-3f, 0x1.38388p+1f,
     /* node 3901 x */
-    0x1.68p-53f, 0x1.299d24p+1f, -0x1.902f56p+0f, -0x1.9234fep-3f,
+    0x1.bd999ap-54f, 0x1.29732cp+1f, -0x1.8fc608p+0f, -0x1.92328ep-3f,
     /* node 3901 y */
-    -0x1.72ccccp-54f, -0x1.df9162p-1f, 0x1.5c4b7ep+0f, -0x1.8f8f88p-4f,
+    -0x1.666666p-56f, -0x1.df51b8p-1f, 0x1.5c17b4p+0f, -0x1.907de2p-4f,
     /* node 3901 z */
-    -0x1.0cccccp-55f, 0x1.ae40fap-3f, -0x1.88c286p-3f, 0x1.3d66ap+1f,
+    0x1p-56f, 0x1.ae4df2p-3f, -0x1.89e2b4p-3f, 0x1.3d4d5p+1f,
     /* node 3902 x */
-    0x1p-53f, 0x1.2da488p+1f, -0x1.997bap+0f, -0x1.15467p-3f,
+    -0x1.dd999ap-55f, 0x1.2dd39ap+1f, -0x1.9a3304p+0f, -0x1.166778p-3f,
     /* node 3902 y */
-    -0x1.02ccccp-54f, -0x1.dfa4d2p-1f, 0x1.5fd26p+0f, -0x1.bafcdep-4f,
+    0x1.17999ap-54f, -0x1.e07decp-1f, 0x1.606de6p+0f, -0x1.b8692ep-4f,
     /* node 3902 z */
-    -0x1p-56f, 0x1.caf734p-3f, -0x1.babb0ap-3f, 0x1.3e412p+1f,
+    -0x1p-56f, 0x1.ca0fep-3f, -0x1.baa79cp-3f, 0x1.3e33e2p+1f,
     /* node 3903 x */
-    0x1.973334p-54f, 0x1.35851cp+1f, -0x1.ad8164p+0f, -0x1.f37492p-4f,
+    0x1.653334p-54f, 0x1.3591fp+1f, -0x1.adb91ap+0f, -0x1.f52f6ep-4f,
     /* node 3903 y */
-    -0x1.35999ap-55f, -0x1.dc509ep-1f, 0x1.537e2p+0f, -0x1.f2b7a4p-4f,
+    -0x1.3cp-54f, -0x1.dcbfaep-1f, 0x1.53d4ap+0f, -0x1.f0fa26p-4f,
     /* node 3903 z */
-    0x1.333334p-57f, 0x1.faed12p-3f, -0x1.f2aad8p-3f, 0x1.3a2ffap+1f,
+    -0x1.ccccccp-57f, 0x1.f95698p-3f, -0x1.f0e16cp-3f, 0x1.3a218cp+1f,
     /* node 3904 x */
-    0x1.09p-53f, 0x1.3130fcp+1f, -0x1.a29d38p+0f, -0x1.3a5d4ep-4f,
+    0x1.918p-53f, 0x1.314478p+1f, -0x1.a30a58p+0f, -0x1.3c92p-4f,
     /* node 3904 y */
-    -0x1.11999ap-56f, -0x1.e30f6cp-1f, 0x1.669d7ap+0f, -0x1.d08e7cp-4f,
+    -0x1.79999ap-57f, -0x1.e316bep-1f, 0x1.669ec6p+0f, -0x1.d0ebeep-4f,
     /* node 3904 z */
-    -0x1.333334p-56f, 0x1.d54816p-3f, -0x1.d44adp-3f, 0x1.3fb8d8p+1f,
+    -0x1.266666p-55f, 0x1.d4644p-3f, -0x1.d33a36p-3f, 0x1.3fa8c4p+1f,
     /* node 3951 x */
-    0x1.22ccccp-54f, 0x1.47aa0ep+1f, -0x1.d7b59cp+0f, -0x1.6a4c2ap-3f,
+    -0x1.b9999ap-58f, 0x1.47c0e6p+1f, -0x1.d8072ep+0f, -0x1.6c260cp-3f,
     /* node 3951 y */
-    -0x1.99999ap-55f, -0x1.cffdcap-1f, 0x1.334ef2p+0f, -0x1.2f79e8p-3f,
+    -0x1.26ccccp-54f, -0x1.d017a4p-1f, 0x1.33747ap+0f, -0x1.2dfc96p-3f,
     /* node 3951 z */
-    -0x1.19999ap-55f, 0x1.316f12p-2f, -0x1.280e2cp-2f, 0x1.31f722p+1f,
+    -0x1p-55f, 0x1.30bce2p-2f, -0x1.2735f4p-2f, 0x1.31e4a8p+1f,
     /* node 3953 x */
-    -0x1.c9999ap-55f, 0x1.493082p+1f, -0x1.dc3b1ap+0f, -0x1.e34aaap-4f,
+    -0x1.f4p-54f, 0x1.494254p+1f, -0x1.dc8546p+0f, -0x1.e624ap-4f,
     /* node 3953 y */
-    0x1.a66666p-55f, -0x1.d3938ap-1f, 0x1.3c4ab4p+0f, -0x1.1fbc96p-3f,
+    -0x1.666666p-57f, -0x1.d3c5acp-1f, 0x1.3c69c4p+0f, -0x1.1ea6e4p-3f,
     /* node 3953 z */
-    -0x1.8p-56f, 0x1.307d04p-2f, -0x1.2cc89ep-2f, 0x1.34d9d6p+1f,
+    -0x1.99999ap-59f, 0x1.2fce12p-2f, -0x1.2c039ap-2f, 0x1.34c78p+1f,
     /* node 3954 x */
-    -0x1.00ccccp-54f, 0x1.3e6812p+1f, -0x1.c3d0ap+0f, -0x1.d6b67ep-4f,
+    -0x1.4b3334p-55f, 0x1.3e7abcp+1f, -0x1.c423eep+0f, -0x1.d8b234p-4f,
     /* node 3954 y */
-    -0x1.6p-57f, -0x1.d89142p-1f, 0x1.485b9cp+0f, -0x1.0e587p-3f,
+    0x1.333334p-57f, -0x1.d8b5b8p-1f, 0x1.4871bp+0f, -0x1.0e2f0ap-3f,
     /* node 3954 z */
-    0x1.99999ap-56f, 0x1.174cdep-2f, -0x1.172f12p-2f, 0x1.371d0ap+1f,
+    -0x1.99999ap-57f, 0x1.16c43cp-2f, -0x1.16dde2p-2f, 0x1.370c82p+1f,
     /* node 3955 x */
-    0x1.58p-53f, 0x1.4165d6p+1f, -0x1.ca808ep+0f, -0x1.f39ca2p-5f,
+    0x1.228p-53f, 0x1.417446p+1f, -0x1.cadd84p+0f, -0x1.f7b25p-5f,
     /* node 3955 y */
-    -0x1.5d999ap-55f, -0x1.d8735p-1f, 0x1.4addd2p+0f, -0x1.1554d2p-3f,
+    -0x1.2accccp-54f, -0x1.d88f5ep-1f, 0x1.4b03ap+0f, -0x1.15199p-3f,
     /* node 3955 z */
-    -0x1.19999ap-55f, 0x1.1cebdep-2f, -0x1.216d4ep-2f, 0x1.38f28ep+1f,
+    0x1.ccccccp-57f, 0x1.1c3e7p-2f, -0x1.20947ap-2f, 0x1.38e3eep+1f,
     /* node 3957 x */
-    0x1.ecccccp-57f, 0x1.4b53fap+1f, -0x1.e165ap+0f, -0x1.fa5f12p-5f,
+    -0x1.44ccccp-57f, 0x1.4b6132p+1f, -0x1.e1a72p+0f, -0x1.fe976ap-5f,
     /* node 3957 y */
-    -0x1.58p-55f, -0x1.d3c39ap-1f, 0x1.3ebed2p+0f, -0x1.202ae4p-3f,
+    -0x1.a8ccccp-55f, -0x1.d3e096p-1f, 0x1.3ed3e8p+0f, -0x1.1ff04cp-3f,
     /* node 3957 z */
-    0x1.99999ap-60f, 0x1.33efc2p-2f, -0x1.35f2a6p-2f, 0x1.36ce16p+1f,
+    -0x1.99999ap-57f, 0x1.334206p-2f, -0x1.35390ep-2f, 0x1.36bd6ep+1f,
     /* node 3958 x */
-    0x1.1cccccp-57f, 0x1.390f9p+1f, -0x1.b6da9cp+0f, -0x1.1a9f62p-4f,
+    0x1.2ab334p-53f, 0x1.3917aep+1f, -0x1.b71788p+0f, -0x1.1c0a3cp-4f,
     /* node 3958 y */
-    -0x1.04p-55f, -0x1.dd32b6p-1f, 0x1.55dd22p+0f, -0x1.054602p-3f,
+    -0x1.4a6666p-55f, -0x1.dd5ddp-1f, 0x1.560826p+0f, -0x1.04f802p-3f,
     /* node 3958 z */
-    -0x1.99999ap-56f, 0x1.03fdaep-2f, -0x1.08d9a2p-2f, 0x1.3b7284p+1f,
+    0x1p-57f, 0x1.036aap-2f, -0x1.084d86p-2f, 0x1.3b5f34p+1f,
     /* node 3959 x */
-    0x1.c73334p-55f, 0x1.3b53a4p+1f, -0x1.bcee4ep+0f, -0x1.d7b08p-7f,
+    0x1.996666p-56f, 0x1.3b6eeep+1f, -0x1.bd6916p+0f, -0x1.e97774p-7f,
     /* node 3959 y */
-    -0x1.066666p-55f, -0x1.dc395ep-1f, 0x1.5a0fep+0f, -0x1.07be3ap-3f,
+    -0x1.14p-55f, -0x1.dc8cc6p-1f, 0x1.5a698p+0f, -0x1.073938p-3f,
     /* node 3959 z */
-    0x1.99999ap-59f, 0x1.088772p-2f, -0x1.0fdbc4p-2f, 0x1.3d036cp+1f,
+    -0x1.19999ap-56f, 0x1.07f6bp-2f, -0x1.0ef26cp-2f, 0x1.3cf872p+1f,
     /* node 3960 x */
-    0x1.44e666p-55f, 0x1.3480d6p+1f, -0x1.a9fe7ep+0f, -0x1.65d972p-6f,
+    0x1.5dccccp-55f, 0x1.3484c4p+1f, -0x1.aa22b8p+0f, -0x1.6b4662p-6f,
     /* node 3960 y */
-    -0x1.333334p-55f, -0x1.e097dcp-1f, 0x1.65b87ep+0f, -0x1.f3a522p-4f,
+    -0x1.9b3334p-56f, -0x1.e0ac58p-1f, 0x1.65dff6p+0f, -0x1.f3f2dp-4f,
     /* node 3960 z */
-    -0x1.666666p-56f, 0x1.e5765ap-3f, -0x1.fe9124p-3f, 0x1.403d38p+1f,
+    -0x1.4cccccp-56f, 0x1.e3f1aap-3f, -0x1.fc9c8p-3f, 0x1.402c32p+1f,
     /* node 3961 x */
-    -0x1.19ccccp-54f, 0x1.37883p+1f, -0x1.b16f76p+0f, 0x1.b85d8ap-6f,
+    0x1.3cccccp-59f, 0x1.378f18p+1f, -0x1.b183ccp+0f, 0x1.b3155ap-6f,
     /* node 3961 y */
-    0x1.99999ap-62f, -0x1.ddf78p-1f, 0x1.64238p+0f, -0x1.0a196cp-3f,
+    0x1.6p-57f, -0x1.de1494p-1f, 0x1.6452ccp+0f, -0x1.09f956p-3f,
     /* node 3961 z */
-    0x1.4cccccp-55f, 0x1.f39daep-3f, -0x1.0b502cp-2f, 0x1.400968p+1f,
+    0x1.4cccccp-56f, 0x1.f2361ap-3f, -0x1.0aeb0cp-2f, 0x1.3ff976p+1f,
     /* node 3962 x */
-    0x1.d2e666p-54f, 0x1.3e4cdcp+1f, -0x1.c3e466p+0f, 0x1.091752p-5f,
+    0x1.b9p-55f, 0x1.3e5922p+1f, -0x1.c3f516p+0f, 0x1.056916p-5f,
     /* node 3962 y */
-    -0x1.9cccccp-55f, -0x1.da6734p-1f, 0x1.57088ep+0f, -0x1.11f792p-3f,
+    -0x1.233334p-55f, -0x1.da8b46p-1f, 0x1.572208p+0f, -0x1.1171c2p-3f,
     /* node 3962 z */
-    -0x1.99999ap-56f, 0x1.0d9ebcp-2f, -0x1.22f8bep-2f, 0x1.3d7344p+1f,
+    -0x1.066666p-54f, 0x1.0d376cp-2f, -0x1.232058p-2f, 0x1.3d6384p+1f,
     /* node 3963 x */
-    0x1.84ccccp-54f, 0x1.39e1ecp+1f, -0x1.b86506p+0f, 0x1.2d91c4p-4f,
+    0x1.f3999ap-55f, 0x1.39e5d2p+1f, -0x1.b8a176p+0f, 0x1.2bd29ep-4f,
     /* node 3963 y */
-    -0x1.b33334p-58f, -0x1.dc610ap-1f, 0x1.648234p+0f, -0x1.1141a6p-3f,
+    -0x1.ce6666p-55f, -0x1.dc6ccep-1f, 0x1.64973p+0f, -0x1.1117cp-3f,
     /* node 3963 z */
-    -0x1.ccccccp-57f, 0x1.fb46bp-3f, -0x1.1855b8p-2f, 0x1.402eep+1f,
+    0x1.4cccccp-56f, 0x1.f9f4acp-3f, -0x1.182d44p-2f, 0x1.401cb8p+1f,
     /* node 4018 x */
-    0x1.a0a666p-54f, 0x1.4d47dap+1f, -0x1.e59994p+0f, -0x1.6a0f86p-7f,
+    0x1.070cccp-54f, 0x1.4d532ep+1f, -0x1.e5d118p+0f, -0x1.7d704p-7f,
     /* node 4018 y */
-    -0x1.7cp-55f, -0x1.d14e9ep-1f, 0x1.3f8ec2p+0f, -0x1.22a56p-3f,
+    -0x1.90ccccp-55f, -0x1.d16d0ap-1f, 0x1.3f891ap+0f, -0x1.2247bp-3f,
     /* node 4018 z */
-    -0x1.4p-55f, 0x1.36a7e8p-2f, -0x1.3df4e8p-2f, 0x1.38127ap+1f,
+    -0x1.0cccccp-55f, 0x1.36029ep-2f, -0x1.3d5492p-2f, 0x1.3800ep+1f,
     /* node 4020 x */
-    0x1.c9999ap-58f, 0x1.4edf2ep+1f, -0x1.e9dbdep+0f, 0x1.350fa6p-5f,
+    0x1.14p-54f, 0x1.4eed58p+1f, -0x1.ea12eep+0f, 0x1.2fd3e4p-5f,
     /* node 4020 y */
-    0x1.3b3334p-56f, -0x1.cd5356p-1f, 0x1.3f1a88p+0f, -0x1.1ac118p-3f,
+    0x1.38p-56f, -0x1.cd8ebcp-1f, 0x1.3f4a88p+0f, -0x1.1a7546p-3f,
     /* node 4020 z */
-    0x1.333334p-58f, 0x1.3a70d2p-2f, -0x1.472efap-2f, 0x1.389d4ap+1f,
+    0x1.0cccccp-55f, 0x1.39aca2p-2f, -0x1.465836p-2f, 0x1.3889f6p+1f,
     /* node 4021 x */
-    0x1.527334p-53f, 0x1.466138p+1f, -0x1.d7e0e2p+0f, 0x1.123b76p-5f,
+    0x1.54p-55f, 0x1.466e5ap+1f, -0x1.d80a6cp+0f, 0x1.0e741p-5f,
     /* node 4021 y */
-    -0x1.1f3334p-54f, -0x1.d4b35p-1f, 0x1.4baeap+0f, -0x1.153e46p-3f,
+    -0x1.4p-55f, -0x1.d4d0d4p-1f, 0x1.4bbdd6p+0f, -0x1.14fae6p-3f,
     /* node 4021 z */
-    0x1.b33334p-56f, 0x1.23307cp-2f, -0x1.33b7fcp-2f, 0x1.3aa6ap+1f,
+    -0x1.99999ap-59f, 0x1.2296ap-2f, -0x1.334936p-2f, 0x1.3a960cp+1f,
     /* node 4022 x */
-    0x1.25p-54f, 0x1.486f2cp+1f, -0x1.dc2274p+0f, 0x1.4c644cp-4f,
+    0x1.4b3334p-55f, 0x1.487d3ap+1f, -0x1.dc5da8p+0f, 0x1.4a1b3ep-4f,
     /* node 4022 y */
-    0x1.3cccccp-57f, -0x1.cfac2p-1f, 0x1.46c91p+0f, -0x1.18ee28p-3f,
+    -0x1.68ccccp-55f, -0x1.cfddeap-1f, 0x1.46f1cap+0f, -0x1.18c3aap-3f,
     /* node 4022 z */
-    0x1.99999ap-57f, 0x1.25f454p-2f, -0x1.3cc3d4p-2f, 0x1.3b0cc2p+1f,
+    -0x1p-55f, 0x1.254562p-2f, -0x1.3c5342p-2f, 0x1.3b0092p+1f,
     /* node 4024 x */
-    0x1.466666p-59f, 0x1.50fa36p+1f, -0x1.ef155cp+0f, 0x1.5d9a5ep-4f,
+    0x1.4p-56f, 0x1.510692p+1f, -0x1.ef466ep+0f, 0x1.5b155ep-4f,
     /* node 4024 y */
-    0x1.6cccccp-58f, -0x1.c861e4p-1f, 0x1.3cb75ep+0f, -0x1.16998cp-3f,
+    -0x1.893334p-54f, -0x1.c890ap-1f, 0x1.3cdb9ap+0f, -0x1.16196ap-3f,
     /* node 4024 z */
-    -0x1.e66666p-56f, 0x1.3ed3ecp-2f, -0x1.501802p-2f, 0x1.38b4e6p+1f,
+    0x1.19999ap-56f, 0x1.3e18a8p-2f, -0x1.4f3d76p-2f, 0x1.38a1a6p+1f,
     /* node 4025 x */
-    -0x1.1c999ap-54f, 0x1.40b87cp+1f, -0x1.c9ea9p+0f, 0x1.3f0a2ep-4f,
+    0x1.46ccccp-55f, 0x1.40bf0cp+1f, -0x1.ca0b16p+0f, 0x1.3d6ccap-4f,
     /* node 4025 y */
-    -0x1.f66666p-55f, -0x1.d5b7acp-1f, 0x1.540cdp+0f, -0x1.185c12p-3f,
+    -0x1.68ccccp-55f, -0x1.d5d8e8p-1f, 0x1.541e22p+0f, -0x1.181b7p-3f,
     /* node 4025 z */
-    -0x0p+0f, 0x1.12db86p-2f, -0x1.2f9d54p-2f, 0x1.3d22p+1f,
+    -0x1.ccccccp-57f, 0x1.123fa2p-2f, -0x1.2f0b52p-2f, 0x1.3d0fdp+1f,
     /* node 4026 x */
-    0x1.7b3334p-56f, 0x1.3bebdcp+1f, -0x1.bd93dep+0f, 0x1.edabc2p-4f,
+    0x1.683334p-53f, 0x1.3bf7c2p+1f, -0x1.bdc5e2p+0f, 0x1.ebdbc8p-4f,
     /* node 4026 y */
-    -0x1.8e6666p-56f, -0x1.d861c2p-1f, 0x1.5fb9d8p+0f, -0x1.1a3836p-3f,
+    -0x1.04ccccp-56f, -0x1.d879a4p-1f, 0x1.5fa396p+0f, -0x1.19c836p-3f,
     /* node 4026 z */
-    0x1.4cccccp-56f, 0x1.02198cp-2f, -0x1.2b0256p-2f, 0x1.3fdb76p+1f,
+    0x1.99999ap-60f, 0x1.0170c6p-2f, -0x1.2ad7c4p-2f, 0x1.3fcb26p+1f,
     /* node 4027 x */
-    0x1.22999ap-53f, 0x1.424654p+1f, -0x1.cebe7ep+0f, 0x1.faa512p-4f,
+    0x1.266666p-54f, 0x1.4251ap+1f, -0x1.cefe2ap+0f, 0x1.f92d0cp-4f,
     /* node 4027 y */
-    0x1.066666p-56f, -0x1.d18b3p-1f, 0x1.543732p+0f, -0x1.1ab074p-3f,
+    -0x1.166666p-54f, -0x1.d1b97ap-1f, 0x1.54539ap+0f, -0x1.1a7808p-3f,
     /* node 4027 z */
-    -0x0p+0f, 0x1.15c706p-2f, -0x1.386d84p-2f, 0x1.3d30b6p+1f,
+    -0x1.d9999ap-55f, 0x1.152b32p-2f, -0x1.37aa0ep-2f, 0x1.3d1d9ap+1f,
     /* node 4028 x */
-    -0x1.e46666p-54f, 0x1.3dc0b4p+1f, -0x1.c2cb8p+0f, 0x1.525052p-3f,
+    0x1.bcccccp-54f, 0x1.3dcf94p+1f, -0x1.c35be4p+0f, 0x1.51d5d2p-3f,
     /* node 4028 y */
-    0x1.133334p-56f, -0x1.d28c36p-1f, 0x1.5af502p+0f, -0x1.1fa7c4p-3f,
+    0x1.b1999ap-56f, -0x1.d2efbp-1f, 0x1.5bb458p+0f, -0x1.1ff7a6p-3f,
     /* node 4028 z */
-    -0x1.666666p-57f, 0x1.068db4p-2f, -0x1.36d4bep-2f, 0x1.3f1a04p+1f,
+    -0x1.333334p-56f, 0x1.061272p-2f, -0x1.3581ep-2f, 0x1.3f04aep+1f,
     /* node 4029 x */
-    -0x1.2a6666p-54f, 0x1.43cbb8p+1f, -0x1.d418b8p+0f, 0x1.5ed392p-3f,
+    -0x1.bcp-55f, 0x1.43d8e4p+1f, -0x1.d47efcp+0f, 0x1.5e4e08p-3f,
     /* node 4029 y */
-    -0x1.a33334p-56f, -0x1.cd2676p-1f, 0x1.51c73p+0f, -0x1.15b63cp-3f,
+    -0x1.30ccccp-55f, -0x1.cd68c4p-1f, 0x1.521d56p+0f, -0x1.1588p-3f,
     /* node 4029 z */
-    0x1.0cccccp-55f, 0x1.157d2ap-2f, -0x1.3e340ap-2f, 0x1.3cc69ep+1f,
+    0x1.333334p-57f, 0x1.14f5fep-2f, -0x1.3db37ep-2f, 0x1.3cb4cep+1f,
     /* node 4030 x */
-    0x1.ap-54f, 0x1.3e826ep+1f, -0x1.c6972ap+0f, 0x1.ae7ee6p-3f,
+    0x1.de6666p-54f, 0x1.3e8c4cp+1f, -0x1.c6f02ep+0f, 0x1.ade5d2p-3f,
     /* node 4030 y */
-    -0x1.82ccccp-54f, -0x1.cd6a9p-1f, 0x1.58c294p+0f, -0x1.222f5cp-3f,
+    0x1.766666p-55f, -0x1.cdb6f6p-1f, 0x1.5933p+0f, -0x1.221d5cp-3f,
     /* node 4030 z */
-    0x1.4cccccp-56f, 0x1.07366p-2f, -0x1.3f0132p-2f, 0x1.3ec694p+1f,
+    -0x1.99999ap-56f, 0x1.06d0c8p-2f, -0x1.3e499cp-2f, 0x1.3eb38ep+1f,
     /* node 6196 x */
-    0x1.5cccccp-54f, 0x1.2fc8a6p+1f, -0x1.ba1cbep+0f, 0x1.d5b6a4p-1f,
+    0x1.f9999ap-55f, 0x1.2fcedap+1f, -0x1.ba504ap+0f, 0x1.d5749ap-1f,
     /* node 6196 y */
-    0x1.beccccp-56f, -0x1.34267p-1f, 0x1.b95996p-1f, -0x1.01554ep-5f,
+    -0x1.92999ap-55f, -0x1.346f7ap-1f, 0x1.b98b18p-1f, -0x1.01b0b6p-5f,
     /* node 6196 z */
-    -0x1.333334p-56f, 0x1.0f484ep-2f, -0x1.5f2d7p-2f, 0x1.20ac7ep+1f,
+    -0x1.99999ap-58f, 0x1.0ed23ap-2f, -0x1.5eda86p-2f, 0x1.209dc8p+1f,
     /* node 6199 x */
-    0x1.666666p-55f, 0x1.3b94b6p+1f, -0x1.d32af6p+0f, 0x1.aafb2ap-1f,
+    -0x1.8p-56f, 0x1.3b9cdap+1f, -0x1.d36c4p+0f, 0x1.aab46ep-1f,
     /* node 6199 y */
-    -0x1.333334p-59f, -0x1.49e6cp-1f, 0x1.e0b8ecp-1f, -0x1.d4d812p-5f,
+    -0x1.9a6666p-56f, -0x1.4a3a5ap-1f, 0x1.e11a5ap-1f, -0x1.d56472p-5f,
     /* node 6199 z */
-    0x1.99999ap-56f, 0x1.1ec386p-2f, -0x1.7135ccp-2f, 0x1.263542p+1f,
+    0x1.333334p-57f, 0x1.1e4a3ap-2f, -0x1.70d5eep-2f, 0x1.262626p+1f,
     /* node 6200 x */
-    0x1.ab3334p-53f, 0x1.3e45cp+1f, -0x1.d7d4e2p+0f, 0x1.8a995p-1f,
+    0x1.333334p-58f, 0x1.3e4d48p+1f, -0x1.d807a2p+0f, 0x1.8a4d84p-1f,
     /* node 6200 y */
-    -0x1.19999ap-59f, -0x1.5aff4ep-1f, 0x1.fc0a62p-1f, -0x1.32cb14p-4f,
+    0x1.d9999ap-58f, -0x1.5b506ap-1f, 0x1.fc5308p-1f, -0x1.3362c2p-4f,
     /* node 6200 z */
-    0x1.333334p-58f, 0x1.1e1744p-2f, -0x1.759d94p-2f, 0x1.2a6a6p+1f,
+    -0x1.99999ap-60f, 0x1.1d92d2p-2f, -0x1.755274p-2f, 0x1.2a5abep+1f,
     /* node 6202 x */
-    0x1.2cccccp-56f, 0x1.410aecp+1f, -0x1.dd3a3p+0f, 0x1.6d1a1ap-1f,
+    0x1.173334p-53f, 0x1.41144ap+1f, -0x1.dd7d26p+0f, 0x1.6cd0eap-1f,
     /* node 6202 y */
-    -0x1.013334p-55f, -0x1.6ca95cp-1f, 0x1.0cb596p+0f, -0x1.82ce6ap-4f,
+    -0x1.a6ccccp-55f, -0x1.6cf69cp-1f, 0x1.0ceab8p+0f, -0x1.822a5ap-4f,
     /* node 6202 z */
-    0x1p-55f, 0x1.1eec7ep-2f, -0x1.7b3046p-2f, 0x1.2e5f4p+1f,
+    -0x1.19999ap-56f, 0x1.1e605p-2f, -0x1.7ab1e8p-2f, 0x1.2e4ebcp+1f,
     /* node 6203 x */
-    -0x1.79999ap-54f, 0x1.373aeap+1f, -0x1.c8ca36p+0f, 0x1.96d2aap-1f,
+    0x1.a8p-53f, 0x1.374344p+1f, -0x1.c8fb7ep+0f, 0x1.968632p-1f,
     /* node 6203 y */
-    -0x1.acccccp-55f, -0x1.5f84ecp-1f, 0x1.00aa08p+0f, -0x1.537e02p-4f,
+    0x1.ccccccp-58f, -0x1.5fd1b2p-1f, 0x1.00cf9ep+0f, -0x1.539672p-4f,
     /* node 6203 z */
-    -0x1.4cccccp-55f, 0x1.0e0e72p-2f, -0x1.70ee34p-2f, 0x1.2bc89ep+1f,
+    -0x1.8p-56f, 0x1.0d91e2p-2f, -0x1.708cf6p-2f, 0x1.2bb862p+1f,
     /* node 6204 x */
-    0x1.826666p-53f, 0x1.39aa28p+1f, -0x1.cc9e1ap+0f, 0x1.771836p-1f,
+    0x1.d33334p-55f, 0x1.39b2b4p+1f, -0x1.ccdf7ap+0f, 0x1.76d55cp-1f,
     /* node 6204 y */
-    -0x1.90ccccp-55f, -0x1.6f903ep-1f, 0x1.0eb108p+0f, -0x1.9284b2p-4f,
+    0x1.533334p-58f, -0x1.6fe83p-1f, 0x1.0eed4ep+0f, -0x1.92dd66p-4f,
     /* node 6204 z */
-    0x1.333334p-57f, 0x1.0e557p-2f, -0x1.72765cp-2f, 0x1.2fbf5ep+1f,
+    -0x1p-57f, 0x1.0de6dp-2f, -0x1.720d18p-2f, 0x1.2fb4dep+1f,
     /* node 6206 x */
-    0x1.ep-54f, 0x1.4a974ap+1f, -0x1.ef3472p+0f, 0x1.403186p-1f,
+    0x1.a33334p-55f, 0x1.4a979ep+1f, -0x1.ef46ecp+0f, 0x1.3fc29cp-1f,
     /* node 6206 y */
-    -0x1.a66666p-59f, -0x1.75b0cap-1f, 0x1.127656p+0f, -0x1.85982ep-4f,
+    -0x1.d53334p-55f, -0x1.75ea76p-1f, 0x1.127226p+0f, -0x1.8581c4p-4f,
     /* node 6206 z */
-    -0x1.99999ap-60f, 0x1.2fcc52p-2f, -0x1.7c73d8p-2f, 0x1.2f2774p+1f,
+    -0x1.99999ap-56f, 0x1.2f27aap-2f, -0x1.7bedp-2f, 0x1.2f16bp+1f,
     /* node 6207 x */
-    0x1.20ccccp-53f, 0x1.43676ep+1f, -0x1.e09d7cp+0f, 0x1.4eb03p-1f,
+    0x1.2a6666p-53f, 0x1.436e4cp+1f, -0x1.e0cf5p+0f, 0x1.4e6bdap-1f,
     /* node 6207 y */
-    -0x1.1p-54f, -0x1.7a679p-1f, 0x1.16ce6ep+0f, -0x1.9de28p-4f,
+    -0x1.45999ap-55f, -0x1.7aa9e2p-1f, 0x1.16dec8p+0f, -0x1.9e831ap-4f,
     /* node 6207 z */
-    -0x1p-55f, 0x1.1f4e52p-2f, -0x1.79c5a4p-2f, 0x1.311028p+1f,
+    0x1.99999ap-59f, 0x1.1eb8bep-2f, -0x1.797076p-2f, 0x1.310024p+1f,
     /* node 6208 x */
-    0x1.0f3334p-53f, 0x1.45936cp+1f, -0x1.e31b32p+0f, 0x1.311288p-1f,
+    -0x1.cp-54f, 0x1.459cbp+1f, -0x1.e36498p+0f, 0x1.30b674p-1f,
     /* node 6208 y */
-    -0x1.69999ap-57f, -0x1.85259ep-1f, 0x1.1ed2d6p+0f, -0x1.bce7acp-4f,
+    -0x1.0cccccp-57f, -0x1.85744ap-1f, 0x1.1efb92p+0f, -0x1.bd3b7ap-4f,
     /* node 6208 z */
-    -0x1.0cccccp-55f, 0x1.2186acp-2f, -0x1.784f7p-2f, 0x1.3312ep+1f,
+    0x1.99999ap-57f, 0x1.20ef26p-2f, -0x1.77f07ap-2f, 0x1.330356p+1f,
     /* node 6209 x */
-    -0x1.c66666p-53f, 0x1.4cca9ap+1f, -0x1.f20cc4p+0f, 0x1.22a63ap-1f,
+    0x1.01999ap-54f, 0x1.4cd57p+1f, -0x1.f250ecp+0f, 0x1.225d9ep-1f,
     /* node 6209 y */
-    0x1.cp-58f, -0x1.802c26p-1f, 0x1.18c9dap+0f, -0x1.931cc8p-4f,
+    -0x1.ad999ap-55f, -0x1.8075fep-1f, 0x1.18f218p+0f, -0x1.94242p-4f,
     /* node 6209 z */
-    0x1p-56f, 0x1.330d12p-2f, -0x1.789398p-2f, 0x1.310c96p+1f,
+    -0x1p-56f, 0x1.328ep-2f, -0x1.784e0ep-2f, 0x1.30fa6p+1f,
     /* node 6210 x */
-    0x1.99999ap-62f, 0x1.4763ep+1f, -0x1.e594f8p+0f, 0x1.14db7ep-1f,
+    -0x1.ap-56f, 0x1.47687ap+1f, -0x1.e5d266p+0f, 0x1.147b04p-1f,
     /* node 6210 y */
-    -0x1.74ccccp-56f, -0x1.8fefcep-1f, 0x1.279c9ep+0f, -0x1.dab0eep-4f,
+    -0x1.d9999ap-59f, -0x1.901fcep-1f, 0x1.279fd6p+0f, -0x1.dab1f4p-4f,
     /* node 6210 z */
-    -0x1.333334p-56f, 0x1.233d6cp-2f, -0x1.76c42cp-2f, 0x1.34d13ep+1f,
+    -0x1.333334p-56f, 0x1.228e68p-2f, -0x1.762dcep-2f, 0x1.34be18p+1f,
     /* node 6211 x */
-    0x1.41999ap-54f, 0x1.3e9592p+1f, -0x1.d4fc4p+0f, 0x1.3edbc2p-1f,
+    -0x1.f33334p-54f, 0x1.3ea098p+1f, -0x1.d54e8ap+0f, 0x1.3ea464p-1f,
     /* node 6211 y */
-    -0x1.3ap-54f, -0x1.8a750ep-1f, 0x1.24d6f4p+0f, -0x1.e88a84p-4f,
+    -0x1.10ccccp-55f, -0x1.8ad546p-1f, 0x1.251bccp+0f, -0x1.e9a034p-4f,
     /* node 6211 z */
-    0x1.99999ap-57f, 0x1.1038dap-2f, -0x1.76fb88p-2f, 0x1.35780cp+1f,
+    0x1.19999ap-56f, 0x1.0fc6a4p-2f, -0x1.76c9fcp-2f, 0x1.356d0cp+1f,
     /* node 6212 x */
-    -0x1.666666p-58f, 0x1.40f188p+1f, -0x1.d740f6p+0f, 0x1.213fe2p-1f,
+    0x1.5a6666p-53f, 0x1.40fc68p+1f, -0x1.d78c66p+0f, 0x1.20fc2ep-1f,
     /* node 6212 y */
-    0x1.ap-57f, -0x1.948b92p-1f, 0x1.2c1c7ep+0f, -0x1.ff70f6p-4f,
+    -0x1.1p-57f, -0x1.94db8cp-1f, 0x1.2c4da8p+0f, -0x1.ff994cp-4f,
     /* node 6212 z */
-    0x1.666666p-56f, 0x1.12f2ecp-2f, -0x1.72fbfp-2f, 0x1.3714dp+1f,
+    -0x1.99999ap-59f, 0x1.12651ep-2f, -0x1.72ac4p-2f, 0x1.370272p+1f,
     /* node 6213 x */
-    -0x1.51999ap-54f, 0x1.4f9216p+1f, -0x1.f6a11ap+0f, 0x1.00b58cp-1f,
+    -0x1.133334p-55f, 0x1.4f9ad4p+1f, -0x1.f6d5c4p+0f, 0x1.00741p-1f,
     /* node 6213 y */
-    0x1.733334p-59f, -0x1.89ee36p-1f, 0x1.1f5f6p+0f, -0x1.b4622ap-4f,
+    -0x1.59999ap-57f, -0x1.8a2846p-1f, 0x1.1f70ccp+0f, -0x1.b32fd2p-4f,
     /* node 6213 z */
-    -0x1.a66666p-55f, 0x1.379bep-2f, -0x1.74c90cp-2f, 0x1.32358p+1f,
+    0x1.ccccccp-57f, 0x1.370ef4p-2f, -0x1.746b4cp-2f, 0x1.322272p+1f,
     /* node 6214 x */
-    0x1.14p-53f, 0x1.4972acp+1f, -0x1.e85b38p+0f, 0x1.ec07ap-2f,
+    -0x1.09999ap-55f, 0x1.49794cp+1f, -0x1.e8861cp+0f, 0x1.eb5fep-2f,
     /* node 6214 y */
-    -0x1.5d999ap-55f, -0x1.98359ap-1f, 0x1.2caf6ap+0f, -0x1.e74954p-4f,
+    -0x1.64p-55f, -0x1.9869fep-1f, 0x1.2cae32p+0f, -0x1.e80a76p-4f,
     /* node 6214 z */
-    -0x1p-56f, 0x1.272fcep-2f, -0x1.6fee7p-2f, 0x1.35c57p+1f,
+    0x1.4cccccp-56f, 0x1.26959cp-2f, -0x1.6fabc4p-2f, 0x1.35ae7ap+1f,
     /* node 6215 x */
-    0x1.a9999ap-54f, 0x1.525404p+1f, -0x1.fb0d28p+0f, 0x1.b9bbeep-2f,
+    0x1.78p-54f, 0x1.5263eap+1f, -0x1.fb5d64p+0f, 0x1.b8fc1p-2f,
     /* node 6215 y */
-    -0x1.14ccccp-56f, -0x1.940e3p-1f, 0x1.24c21ep+0f, -0x1.bb085ep-4f,
+    -0x1.acccccp-57f, -0x1.944c72p-1f, 0x1.24e7b6p+0f, -0x1.be7d16p-4f,
     /* node 6215 z */
-    -0x1.99999ap-58f, 0x1.3cff8ep-2f, -0x1.6f9e8ap-2f, 0x1.3381f2p+1f,
+    0x1.8p-56f, 0x1.3c801p-2f, -0x1.6f8158p-2f, 0x1.335c8cp+1f,
     /* node 6216 x */
-    0x1.79999ap-54f, 0x1.4dedd4p+1f, -0x1.f04138p+0f, 0x1.98cf26p-2f,
+    0x1.e1999ap-54f, 0x1.4df606p+1f, -0x1.f072b2p+0f, 0x1.985fd8p-2f,
     /* node 6216 y */
-    -0x1.f1999ap-56f, -0x1.a055ecp-1f, 0x1.2ed734p+0f, -0x1.e418fcp-4f,
+    -0x1.cp-55f, -0x1.a09e9cp-1f, 0x1.2f0bf4p+0f, -0x1.e4a6ep-4f,
     /* node 6216 z */
-    0x1.99999ap-60f, 0x1.318e6ep-2f, -0x1.6a4f3ap-2f, 0x1.35eb9ap+1f,
+    0x1.333334p-57f, 0x1.30f43p-2f, -0x1.6a057p-2f, 0x1.35ddf8p+1f,
     /* node 6217 x */
-    0x1p-59f, 0x1.447dbep+1f, -0x1.dcd02ep+0f, 0x1.cd626ap-2f,
+    0x1.ecccccp-56f, 0x1.4480d8p+1f, -0x1.dcf4c6p+0f, 0x1.ccb082p-2f,
     /* node 6217 y */
-    -0x1.41999ap-56f, -0x1.a5d7f2p-1f, 0x1.3a3f18p+0f, -0x1.108cd6p-3f,
+    -0x1.08ccccp-55f, -0x1.a626b2p-1f, 0x1.3a5f04p+0f, -0x1.1062bap-3f,
     /* node 6217 z */
-    0x1.99999ap-60f, 0x1.16c7b2p-2f, -0x1.6b3aep-2f, 0x1.38e444p+1f,
+    -0x1.666666p-57f, 0x1.1615d8p-2f, -0x1.6a86b2p-2f, 0x1.38d0a2p+1f,
     /* node 6218 x */
-    0x1.30ccccp-54f, 0x1.472fe2p+1f, -0x1.e0b7cep+0f, 0x1.846104p-2f,
+    0x1.9cccccp-55f, 0x1.473968p+1f, -0x1.e0e5cap+0f, 0x1.83c86cp-2f,
     /* node 6218 y */
-    -0x1.44p-55f, -0x1.ad33a2p-1f, 0x1.3cba84p+0f, -0x1.0a3aaep-3f,
+    -0x1.333334p-58f, -0x1.ad751ep-1f, 0x1.3ccd2cp+0f, -0x1.09e2bcp-3f,
     /* node 6218 z */
-    0x1p-56f, 0x1.1e55d2p-2f, -0x1.5f83dap-2f, 0x1.38fcb2p+1f,
+    -0x1p-56f, 0x1.1dae96p-2f, -0x1.5f2a2ap-2f, 0x1.38e8ccp+1f,
     /* node 6219 x */
-    0x1.e1999ap-54f, 0x1.5326cp+1f, -0x1.f9afa2p+0f, 0x1.429656p-2f,
+    -0x1.6e6666p-55f, 0x1.5332bap+1f, -0x1.f9f282p+0f, 0x1.42216cp-2f,
     /* node 6219 y */
-    0x1.b33334p-60f, -0x1.a7a462p-1f, 0x1.301538p+0f, -0x1.f12f9cp-4f,
+    0x1.b66666p-55f, -0x1.a7e012p-1f, 0x1.3041b2p+0f, -0x1.efefa6p-4f,
     /* node 6219 z */
-    0x1p-57f, 0x1.3e8c6p-2f, -0x1.66f08p-2f, 0x1.35f5d4p+1f,
+    -0x1.ccccccp-57f, 0x1.3de4e6p-2f, -0x1.665684p-2f, 0x1.35e098p+1f,
     /* node 6244 x */
-    0x1p-57f, 0x1.12da4p+1f, -0x1.7da84ep+0f, 0x1.0ff9a8p+0f,
+    0x1.a66666p-54f, 0x1.12ef94p+1f, -0x1.7de7e4p+0f, 0x1.0ffa14p+0f,
     /* node 6244 y */
-    -0x1.92999ap-55f, -0x1.06f1bp-1f, 0x1.61b354p-1f, 0x1.412eb2p-5f,
+    -0x1.f13334p-56f, -0x1.074536p-1f, 0x1.61c036p-1f, 0x1.3f882p-5f,
     /* node 6244 z */
-    0x1.ccccccp-57f, 0x1.e5602cp-3f, -0x1.23eecap-2f, 0x1.11a82cp+1f,
+    -0x1.ccccccp-57f, 0x1.e5a39p-3f, -0x1.23fe5ep-2f, 0x1.11a7d2p+1f,
     /* node 6245 x */
-    -0x1.333334p-59f, 0x1.18905p+1f, -0x1.8917e6p+0f, 0x1.035b32p+0f,
+    0x1.6p-54f, 0x1.18954cp+1f, -0x1.8945fep+0f, 0x1.033c02p+0f,
     /* node 6245 y */
-    0x1.363334p-56f, -0x1.1bf9ap-1f, 0x1.838ccep-1f, 0x1.0ef536p-7f,
+    -0x1.e93334p-56f, -0x1.1c2fbcp-1f, 0x1.83c3c4p-1f, 0x1.0dfe28p-7f,
     /* node 6245 z */
-    0x1.99999ap-59f, 0x1.e78114p-3f, -0x1.34ba86p-2f, 0x1.18d7b8p+1f,
+    0x1.99999ap-57f, 0x1.e6f69p-3f, -0x1.346a36p-2f, 0x1.18c9dap+1f,
     /* node 6246 x */
-    -0x1.133334p-55f, 0x1.1dd9c2p+1f, -0x1.943676p+0f, 0x1.eaa2eap-1f,
+    0x1.f8p-53f, 0x1.1ddd9ep+1f, -0x1.94676p+0f, 0x1.ea5938p-1f,
     /* node 6246 y */
-    -0x1.e6999ap-55f, -0x1.33413ap-1f, 0x1.aabd7ep-1f, -0x1.c36de6p-6f,
+    -0x1.b0ccccp-57f, -0x1.339f64p-1f, 0x1.ab09b6p-1f, -0x1.c5902p-6f,
     /* node 6246 z */
-    0x1.e66666p-56f, 0x1.e72236p-3f, -0x1.45b248p-2f, 0x1.201b7p+1f,
+    -0x1.4cccccp-56f, 0x1.e629e8p-3f, -0x1.45419cp-2f, 0x1.200528p+1f,
     /* node 6247 x */
-    0x1.59999ap-55f, 0x1.2253c6p+1f, -0x1.9e0f1cp+0f, 0x1.fd8dbcp-1f,
+    0x1.2p-54f, 0x1.2256d2p+1f, -0x1.9e3afap+0f, 0x1.fd3ceep-1f,
     /* node 6247 y */
-    -0x1.8204ccp-56f, -0x1.1e859ap-1f, 0x1.8eb8cp-1f, -0x1.e4f66cp-13f,
+    -0x1.a5e0ccp-56f, -0x1.1ec3a6p-1f, 0x1.8ee5cap-1f, -0x1.0d989p-12f,
     /* node 6247 z */
-    -0x1.99999ap-57f, 0x1.02358ep-2f, -0x1.4870c8p-2f, 0x1.1a4edp+1f,
+    -0x1.19999ap-56f, 0x1.01c606p-2f, -0x1.4809e4p-2f, 0x1.1a3c4cp+1f,
     /* node 6248 x */
-    0x1.a9999ap-54f, 0x1.277ecp+1f, -0x1.a94274p+0f, 0x1.e166fp-1f,
+    -0x1.733334p-56f, 0x1.27862ep+1f, -0x1.a979b8p+0f, 0x1.e129bcp-1f,
     /* node 6248 y */
-    -0x1.273334p-55f, -0x1.34e44ap-1f, 0x1.b41502p-1f, -0x1.086098p-5f,
+    -0x1.05999ap-57f, -0x1.352cfap-1f, 0x1.b45e64p-1f, -0x1.073ca4p-5f,
     /* node 6248 z */
-    -0x1p-55f, 0x1.02d5cep-2f, -0x1.56b53ap-2f, 0x1.20985cp+1f,
+    0x1.99999ap-60f, 0x1.0260b2p-2f, -0x1.564eecp-2f, 0x1.208978p+1f,
     /* node 6249 x */
-    -0x1.4cccccp-57f, 0x1.2b9f92p+1f, -0x1.b155aep+0f, 0x1.bfcd1ep-1f,
+    -0x1.333334p-58f, 0x1.2ba5aap+1f, -0x1.b187f6p+0f, 0x1.bf8b98p-1f,
     /* node 6249 y */
-    0x1.99999ap-59f, -0x1.4b1f16p-1f, 0x1.d95aep-1f, -0x1.eebe12p-5f,
+    -0x1.ap-57f, -0x1.4b6a4p-1f, 0x1.d9947p-1f, -0x1.ef3e8ap-5f,
     /* node 6249 z */
-    -0x1.8p-55f, 0x1.021e44p-2f, -0x1.62a916p-2f, 0x1.271192p+1f,
+    -0x1.333334p-58f, 0x1.01a068p-2f, -0x1.623598p-2f, 0x1.270192p+1f,
     /* node 6250 x */
-    -0x1.ep-55f, 0x1.2321ep+1f, -0x1.9e94f6p+0f, 0x1.ca2d6ep-1f,
+    0x1.e9999ap-53f, 0x1.232126p+1f, -0x1.9eb6f4p+0f, 0x1.c9cffep-1f,
     /* node 6250 y */
-    -0x1.ep-56f, -0x1.49fbf4p-1f, 0x1.d31a1p-1f, -0x1.d72c7cp-5f,
+    -0x1.99999ap-64f, -0x1.4a56b4p-1f, 0x1.d368d8p-1f, -0x1.d943a8p-5f,
     /* node 6250 z */
-    -0x1.333334p-58f, 0x1.e770aep-3f, -0x1.54c178p-2f, 0x1.26c65ap+1f,
+    -0x1.666666p-57f, 0x1.e688dp-3f, -0x1.5443dep-2f, 0x1.26af74p+1f,
     /* node 6251 x */
-    -0x1.a9999ap-54f, 0x1.27e558p+1f, -0x1.a80808p+0f, 0x1.ac047p-1f,
+    -0x1.d9999ap-56f, 0x1.27e74cp+1f, -0x1.a83364p+0f, 0x1.abaae8p-1f,
     /* node 6251 y */
-    0x1.0e6666p-57f, -0x1.5ed3fap-1f, 0x1.f873cep-1f, -0x1.6194a8p-4f,
+    -0x1.84p-55f, -0x1.5f2f72p-1f, 0x1.f8b47ap-1f, -0x1.621384p-4f,
     /* node 6251 z */
-    0x1.0cccccp-55f, 0x1.e80024p-3f, -0x1.6101eap-2f, 0x1.2c9a32p+1f,
+    -0x1.8p-56f, 0x1.e724e2p-3f, -0x1.6087aep-2f, 0x1.2c858ep+1f,
     /* node 6252 x */
-    0x1.e66666p-56f, 0x1.2c354cp+1f, -0x1.b12216p+0f, 0x1.8f7b44p-1f,
+    0x1.59999ap-55f, 0x1.2c38acp+1f, -0x1.b1407ep+0f, 0x1.8f15f4p-1f,
     /* node 6252 y */
-    -0x1.8cp-55f, -0x1.729fcp-1f, 0x1.0e995p+0f, -0x1.bfc5aap-4f,
+    0x1.c66666p-56f, -0x1.72ee22p-1f, 0x1.0ec78p+0f, -0x1.bff49ap-4f,
     /* node 6252 z */
-    -0x1.99999ap-58f, 0x1.eb0e7p-3f, -0x1.6e4f3ep-2f, 0x1.3247d6p+1f,
+    0x1.99999ap-60f, 0x1.e9ee1p-3f, -0x1.6db024p-2f, 0x1.3236dp+1f,
     /* node 6253 x */
-    0x1.44ccccp-53f, 0x1.2fd9b2p+1f, -0x1.b94a62p+0f, 0x1.a086ecp-1f,
+    -0x1.99999ap-61f, 0x1.2fdeb8p+1f, -0x1.b98742p+0f, 0x1.a043b8p-1f,
     /* node 6253 y */
-    -0x1.4f3334p-56f, -0x1.60a2bap-1f, 0x1.0053f2p+0f, -0x1.619868p-4f,
+    0x1.c4ccccp-57f, -0x1.60f78p-1f, 0x1.007036p+0f, -0x1.62192ap-4f,
     /* node 6253 z */
-    -0x1.333334p-56f, 0x1.018d8ap-2f, -0x1.6a912p-2f, 0x1.2c8578p+1f,
+    -0x1.e66666p-56f, 0x1.0128b8p-2f, -0x1.6a5c28p-2f, 0x1.2c7a04p+1f,
     /* node 6254 x */
-    -0x1.79999ap-55f, 0x1.331c4cp+1f, -0x1.bf4b4ap+0f, 0x1.831d56p-1f,
+    0x1.99999ap-58f, 0x1.3322b2p+1f, -0x1.bf854cp+0f, 0x1.82d40cp-1f,
     /* node 6254 y */
-    0x1.126666p-55f, -0x1.717f2ap-1f, 0x1.0e81b6p+0f, -0x1.a5af9p-4f,
+    -0x1.a66666p-59f, -0x1.71d48ap-1f, 0x1.0eadc6p+0f, -0x1.a5a4b8p-4f,
     /* node 6254 z */
-    -0x1.99999ap-60f, 0x1.017496p-2f, -0x1.712d1p-2f, 0x1.30a11ap+1f,
+    -0x1.99999ap-59f, 0x1.00fa18p-2f, -0x1.70d372p-2f, 0x1.3090b8p+1f,
     /* node 6255 x */
-    -0x1.4d999ap-53f, 0x1.35f752p+1f, -0x1.c43f4p+0f, 0x1.67019p-1f,
+    0x1.2b3334p-54f, 0x1.35fd84p+1f, -0x1.c4702cp+0f, 0x1.66ba58p-1f,
     /* node 6255 y */
-    -0x1.b1999ap-55f, -0x1.8091c8p-1f, 0x1.1c6b04p+0f, -0x1.e323e4p-4f,
+    -0x1.bp-56f, -0x1.80e0a4p-1f, 0x1.1c8d7p+0f, -0x1.e3c6a4p-4f,
     /* node 6255 z */
-    -0x1.333334p-57f, 0x1.00c136p-2f, -0x1.74e848p-2f, 0x1.348324p+1f,
+    -0x1.99999ap-58f, 0x1.0026f4p-2f, -0x1.748c66p-2f, 0x1.3472eap+1f,
     /* node 6256 x */
-    0x1.f66666p-54f, 0x1.2f82ap+1f, -0x1.b5c74p+0f, 0x1.71ce32p-1f,
+    0x1.866666p-54f, 0x1.2f85aap+1f, -0x1.b5f0e4p+0f, 0x1.7181bp-1f,
     /* node 6256 y */
-    -0x1.54p-55f, -0x1.81fc2ap-1f, 0x1.1c97bcp+0f, -0x1.f05eecp-4f,
+    -0x1.566666p-55f, -0x1.8256fep-1f, 0x1.1cbe38p+0f, -0x1.f0ff28p-4f,
     /* node 6256 z */
-    0x1.333334p-58f, 0x1.eaf952p-3f, -0x1.707e22p-2f, 0x1.35c788p+1f,
+    -0x1.733334p-55f, 0x1.ea0dcep-3f, -0x1.70480ep-2f, 0x1.35b876p+1f,
     /* node 6257 x */
-    0x1p-56f, 0x1.324e3p+1f, -0x1.bb2d92p+0f, 0x1.55f75p-1f,
+    -0x1.f33334p-55f, 0x1.3252b8p+1f, -0x1.bb5882p+0f, 0x1.55afecp-1f,
     /* node 6257 y */
-    -0x1.b66666p-55f, -0x1.8e0002p-1f, 0x1.28cf32p+0f, -0x1.12e0f2p-3f,
+    0x1.333334p-62f, -0x1.8e5418p-1f, 0x1.28ff9cp+0f, -0x1.1326bp-3f,
     /* node 6257 z */
-    0x1.333334p-57f, 0x1.e8be16p-3f, -0x1.72af72p-2f, 0x1.3884b6p+1f,
+    -0x1.99999ap-58f, 0x1.e7b648p-3f, -0x1.726ca2p-2f, 0x1.38784cp+1f,
     /* node 6258 x */
-    -0x1.e66666p-54f, 0x1.351168p+1f, -0x1.bf1c64p+0f, 0x1.39718ep-1f,
+    -0x1.733334p-56f, 0x1.35173ep+1f, -0x1.bf38b6p+0f, 0x1.39081cp-1f,
     /* node 6258 y */
-    -0x1.a66666p-56f, -0x1.9b2f9ap-1f, 0x1.3418a2p+0f, -0x1.24ab3ap-3f,
+    -0x1.1cccccp-56f, -0x1.9b7436p-1f, 0x1.344p+0f, -0x1.24dd6cp-3f,
     /* node 6258 z */
-    0x1.333334p-58f, 0x1.ea40dap-3f, -0x1.73956p-2f, 0x1.3b470ep+1f,
+    -0x0p+0f, 0x1.e8e32ap-3f, -0x1.731p-2f, 0x1.3b38ccp+1f,
     /* node 6259 x */
-    0x1.a66666p-57f, 0x1.38946p+1f, -0x1.c76252p+0f, 0x1.49e27ap-1f,
+    0x1.74p-53f, 0x1.389b6cp+1f, -0x1.c79d9cp+0f, 0x1.49932cp-1f,
     /* node 6259 y */
-    -0x1.0e6666p-55f, -0x1.8db5a6p-1f, 0x1.269e1ap+0f, -0x1.febd26p-4f,
+    -0x1.11999ap-56f, -0x1.8e194ap-1f, 0x1.26dddep+0f, -0x1.fff3dep-4f,
     /* node 6259 z */
-    -0x1.99999ap-56f, 0x1.02ce98p-2f, -0x1.72d332p-2f, 0x1.371658p+1f,
+    0x1.666666p-57f, 0x1.024f6cp-2f, -0x1.7299dp-2f, 0x1.370a82p+1f,
     /* node 6260 x */
-    -0x1.59999ap-57f, 0x1.3adf5p+1f, -0x1.cb4e4cp+0f, 0x1.2e05fep-1f,
+    0x1.e33334p-54f, 0x1.3ae738p+1f, -0x1.cb7f36p+0f, 0x1.2db33ap-1f,
     /* node 6260 y */
-    -0x1.39999ap-57f, -0x1.97800cp-1f, 0x1.30de6ep+0f, -0x1.100784p-3f,
+    -0x1.333334p-58f, -0x1.97d592p-1f, 0x1.31210cp+0f, -0x1.106862p-3f,
     /* node 6260 z */
-    0x1.19999ap-55f, 0x1.04bd44p-2f, -0x1.7412b2p-2f, 0x1.38f0a6p+1f,
+    -0x1p-55f, 0x1.042c76p-2f, -0x1.73b96cp-2f, 0x1.38e2e4p+1f,
     /* node 6261 x */
-    0x1.073334p-53f, 0x1.3cbd1cp+1f, -0x1.cd4452p+0f, 0x1.114dacp-1f,
+    0x1.ccccccp-58f, 0x1.3cc6a2p+1f, -0x1.cd8aa8p+0f, 0x1.110da4p-1f,
     /* node 6261 y */
-    -0x1.273334p-55f, -0x1.a0e24ep-1f, 0x1.3903c4p+0f, -0x1.1b61ccp-3f,
+    -0x1.14ccccp-55f, -0x1.a135aap-1f, 0x1.3960eap+0f, -0x1.1be436p-3f,
     /* node 6261 z */
-    0x1.99999ap-57f, 0x1.05981p-2f, -0x1.6fb91ap-2f, 0x1.3ac938p+1f,
+    -0x1.333334p-57f, 0x1.05276p-2f, -0x1.6fac72p-2f, 0x1.3ab9ecp+1f,
     /* node 6262 x */
-    0x1.dp-55f, 0x1.373ca2p+1f, -0x1.c17f9p+0f, 0x1.1c44dcp-1f,
+    0x1.9cccccp-54f, 0x1.3741f8p+1f, -0x1.c19aep+0f, 0x1.1be4c2p-1f,
     /* node 6262 y */
-    0x1.733334p-59f, -0x1.a4104cp-1f, 0x1.3ce806p+0f, -0x1.2b9f02p-3f,
+    -0x1.526666p-54f, -0x1.a4515p-1f, 0x1.3d12f8p+0f, -0x1.2bd89cp-3f,
     /* node 6262 z */
-    -0x1.333334p-58f, 0x1.f19cb4p-3f, -0x1.734fe8p-2f, 0x1.3ce122p+1f,
+    -0x1.8p-56f, 0x1.f070ap-3f, -0x1.72d814p-2f, 0x1.3ccff2p+1f,
     /* node 6263 x */
-    0x1.6cccccp-56f, 0x1.392ee8p+1f, -0x1.c47c8ap+0f, 0x1.fe207p-2f,
+    0x1p-54f, 0x1.39339p+1f, -0x1.c4a5cep+0f, 0x1.fd9304p-2f,
     /* node 6263 y */
-    -0x1.1cccccp-57f, -0x1.abf2dp-1f, 0x1.455adap+0f, -0x1.36dc2ep-3f,
+    -0x1.d33334p-57f, -0x1.ac3c12p-1f, 0x1.45817ap+0f, -0x1.36e342p-3f,
     /* node 6263 z */
-    -0x1.99999ap-57f, 0x1.f429aep-3f, -0x1.6d6a78p-2f, 0x1.3d7b32p+1f,
+    -0x1.99999ap-59f, 0x1.f3171ep-3f, -0x1.6d1d04p-2f, 0x1.3d6a4p+1f,
     /* node 6264 x */
-    -0x1.133334p-56f, 0x1.3a91e4p+1f, -0x1.c5192cp+0f, 0x1.c3b438p-2f,
+    -0x1.466666p-55f, 0x1.3a958cp+1f, -0x1.c541f4p+0f, 0x1.c32962p-2f,
     /* node 6264 y */
-    -0x1.4p-54f, -0x1.b39c5cp-1f, 0x1.4a727ep+0f, -0x1.3516fcp-3f,
+    -0x1.0accccp-54f, -0x1.b3e132p-1f, 0x1.4aa948p+0f, -0x1.34cd58p-3f,
     /* node 6264 z */
-    -0x1p-57f, 0x1.f85f02p-3f, -0x1.65c296p-2f, 0x1.3e3982p+1f,
+    -0x1.99999ap-57f, 0x1.f72dfcp-3f, -0x1.64e53ep-2f, 0x1.3e23dp+1f,
     /* node 6265 x */
-    0x1.366666p-55f, 0x1.3e4cdep+1f, -0x1.ceeed8p+0f, 0x1.e92c8p-2f,
+    0x1.2p-55f, 0x1.3e5342p+1f, -0x1.cf167cp+0f, 0x1.e8815ap-2f,
     /* node 6265 y */
-    -0x1.533334p-55f, -0x1.aa0234p-1f, 0x1.3f5798p+0f, -0x1.1e9c6cp-3f,
+    -0x1.c8ccccp-55f, -0x1.aa448p-1f, 0x1.3f6cd4p+0f, -0x1.1e0288p-3f,
     /* node 6265 z */
-    -0x1.99999ap-56f, 0x1.084602p-2f, -0x1.672026p-2f, 0x1.3b6eccp+1f,
+    -0x1.266666p-55f, 0x1.07acd6p-2f, -0x1.66a612p-2f, 0x1.3b5bb4p+1f,
     /* node 6266 x */
-    -0x1.ccccccp-57f, 0x1.4042ecp+1f, -0x1.d17006p+0f, 0x1.a62ccep-2f,
+    -0x1.a33334p-55f, 0x1.40499ap+1f, -0x1.d189dep+0f, 0x1.a59582p-2f,
     /* node 6266 y */
-    -0x1.61999ap-54f, -0x1.afccbcp-1f, 0x1.443d4p+0f, -0x1.1f65cep-3f,
+    -0x1.70ccccp-55f, -0x1.b0003ap-1f, 0x1.443a1ap+0f, -0x1.1f338cp-3f,
     /* node 6266 z */
-    0x1.19999ap-56f, 0x1.0be1bp-2f, -0x1.637f06p-2f, 0x1.3b90e2p+1f,
+    0x1.19999ap-56f, 0x1.0b4ep-2f, -0x1.62f78ap-2f, 0x1.3b7f42p+1f,
     /* node 6267 x */
-    -0x1.c4p-54f, 0x1.42886ep+1f, -0x1.d59bbap+0f, 0x1.63ce76p-2f,
+    -0x1.6b3334p-55f, 0x1.42925ep+1f, -0x1.d5e4d6p+0f, 0x1.637272p-2f,
     /* node 6267 y */
-    -0x1.8b3334p-55f, -0x1.b7ba0ap-1f, 0x1.48617ep+0f, -0x1.1b9a96p-3f,
+    -0x1.3ap-54f, -0x1.b8006cp-1f, 0x1.488ebcp+0f, -0x1.1b2522p-3f,
     /* node 6267 z */
-    -0x1.19999ap-56f, 0x1.0fc68ep-2f, -0x1.5d8c08p-2f, 0x1.3bc918p+1f,
+    -0x1p-57f, 0x1.0f23b2p-2f, -0x1.5d0842p-2f, 0x1.3bb54ap+1f,
     /* node 6268 x */
-    0x1.166666p-56f, 0x1.3bd35p+1f, -0x1.c5aa34p+0f, 0x1.85013ep-2f,
+    0x1.c1999ap-54f, 0x1.3bda6cp+1f, -0x1.c5c5fap+0f, 0x1.848cd4p-2f,
     /* node 6268 y */
-    -0x1.91999ap-56f, -0x1.b9d7bap-1f, 0x1.50f05ep+0f, -0x1.34b63ep-3f,
+    0x1.1b3334p-56f, -0x1.b9f73p-1f, 0x1.50c872p+0f, -0x1.3462d8p-3f,
     /* node 6268 z */
-    0x1.ccccccp-57f, 0x1.fdb424p-3f, -0x1.5bf0fcp-2f, 0x1.3e538ap+1f,
+    -0x1.ccccccp-56f, 0x1.fc5318p-3f, -0x1.5adbd6p-2f, 0x1.3e3b9ap+1f,
     /* node 6269 x */
-    0x1.246666p-53f, 0x1.3e0d86p+1f, -0x1.c8d282p+0f, 0x1.443072p-2f,
+    0x1.9e6666p-55f, 0x1.3e1f3ap+1f, -0x1.c9700cp+0f, 0x1.43e1eap-2f,
     /* node 6269 y */
-    -0x1.006666p-54f, -0x1.c0ce5ap-1f, 0x1.53361p+0f, -0x1.293c86p-3f,
+    0x1.666666p-61f, -0x1.c15168p-1f, 0x1.5405d6p+0f, -0x1.29aa36p-3f,
     /* node 6269 z */
-    -0x1.99999ap-60f, 0x1.04c15ep-2f, -0x1.51b3d4p-2f, 0x1.3e1b22p+1f,
+    -0x1.666666p-56f, 0x1.04521ep-2f, -0x1.514804p-2f, 0x1.3e0392p+1f,
     /* node 6270 x */
-    0x1.1eccccp-53f, 0x1.436a1ap+1f, -0x1.d45766p+0f, 0x1.1cd5acp-2f,
+    -0x1.58ccccp-54f, 0x1.437902p+1f, -0x1.d4bab4p+0f, 0x1.1c8ad6p-2f,
     /* node 6270 y */
-    -0x1.85999ap-55f, -0x1.bea762p-1f, 0x1.4b347cp+0f, -0x1.1c2a48p-3f,
+    0x1.f33334p-59f, -0x1.beddb2p-1f, 0x1.4b773ep+0f, -0x1.1c2c0ap-3f,
     /* node 6270 z */
-    -0x1.99999ap-58f, 0x1.14841cp-2f, -0x1.539efep-2f, 0x1.3bece4p+1f,
+    -0x1.99999ap-57f, 0x1.13d84cp-2f, -0x1.52902ep-2f, 0x1.3bda4p+1f,
     /* node 6271 x */
-    -0x1.1e6666p-55f, 0x1.3e73cp+1f, -0x1.c86d4ap+0f, 0x1.0cb202p-2f,
+    0x1.3b999ap-53f, 0x1.3e7a9p+1f, -0x1.c8754cp+0f, 0x1.0c3208p-2f,
     /* node 6271 y */
-    0x1.29999ap-57f, -0x1.c706cap-1f, 0x1.57a64ap+0f, -0x1.272dd8p-3f,
+    -0x1.7ap-54f, -0x1.c7342p-1f, 0x1.57aeb6p+0f, -0x1.26dc7p-3f,
     /* node 6271 z */
-    -0x1.666666p-57f, 0x1.060398p-2f, -0x1.4a4cdap-2f, 0x1.3e789p+1f,
+    -0x1.4cccccp-56f, 0x1.057aeep-2f, -0x1.49f20ap-2f, 0x1.3e6576p+1f,
     /* node 6524 x */
-    0x1.3d999ap-54f, 0x1.449ad8p+1f, -0x1.d62f58p+0f, 0x1.c33e7ap-3f,
+    0x1.19999ap-56f, 0x1.44abbcp+1f, -0x1.d69302p+0f, 0x1.c2a7b8p-3f,
     /* node 6524 y */
-    -0x1.69999ap-56f, -0x1.c4e2fap-1f, 0x1.4c55cep+0f, -0x1.193508p-3f,
+    -0x1.933334p-55f, -0x1.c534a8p-1f, 0x1.4c9d64p+0f, -0x1.18c7eep-3f,
     /* node 6524 z */
-    0x1.4p-55f, 0x1.18651ap-2f, -0x1.4a0bp-2f, 0x1.3c1222p+1f,
+    -0x1.666666p-57f, 0x1.17e358p-2f, -0x1.49dccap-2f, 0x1.3c0228p+1f,
     /* node 6525 x */
-    0x1.573334p-55f, 0x1.4b626p+1f, -0x1.e4b92ep+0f, 0x1.60809ap-3f,
+    0x1.09999ap-55f, 0x1.4b6cdep+1f, -0x1.e4ee2p+0f, 0x1.5f703ap-3f,
     /* node 6525 y */
-    -0x1.f33334p-55f, -0x1.c2f764p-1f, 0x1.41abf4p+0f, -0x1.0e44eap-3f,
+    -0x1.a5999ap-55f, -0x1.c33658p-1f, 0x1.41e612p+0f, -0x1.0e63fp-3f,
     /* node 6525 z */
-    -0x1.99999ap-59f, 0x1.2ddb2p-2f, -0x1.4cea4cp-2f, 0x1.3a1a56p+1f,
+    0x1.333334p-57f, 0x1.2d1c04p-2f, -0x1.4c7ffp-2f, 0x1.3a0e4p+1f,
     /* node 6526 x */
-    0x1.f9999ap-57f, 0x1.4bdd8ap+1f, -0x1.e79dc4p+0f, 0x1.d32094p-3f,
+    -0x1.366666p-56f, 0x1.4be9e4p+1f, -0x1.e7dfd6p+0f, 0x1.d241fap-3f,
     /* node 6526 y */
-    0x1.49999ap-56f, -0x1.bc4c5cp-1f, 0x1.3fae0ep+0f, -0x1.0e4f6p-3f,
+    -0x1.d5999ap-55f, -0x1.bc828ep-1f, 0x1.3fda7ep+0f, -0x1.0e2072p-3f,
     /* node 6526 z */
-    -0x1.19999ap-56f, 0x1.2ce142p-2f, -0x1.54d84cp-2f, 0x1.39749p+1f,
+    -0x1.99999ap-58f, 0x1.2c28ap-2f, -0x1.54456ep-2f, 0x1.396366p+1f,
     /* node 6527 x */
-    -0x1.11999ap-55f, 0x1.549168p+1f, -0x1.f937c6p+0f, 0x1.70b758p-3f,
+    0x1.11999ap-54f, 0x1.54a1c2p+1f, -0x1.f99062p+0f, 0x1.6faf94p-3f,
     /* node 6527 y */
-    -0x1.39999ap-54f, -0x1.b97e26p-1f, 0x1.360776p+0f, -0x1.075f8p-3f,
+    -0x1.233334p-57f, -0x1.b9babap-1f, 0x1.36427ep+0f, -0x1.0756ecp-3f,
     /* node 6527 z */
-    -0x1.0cccccp-55f, 0x1.43ae74p-2f, -0x1.5ad0cp-2f, 0x1.37882ap+1f,
+    -0x0p+0f, 0x1.43009ep-2f, -0x1.5a2c5ep-2f, 0x1.377696p+1f,
     /* node 6529 x */
-    -0x1.1b999ap-54f, 0x1.536cfcp+1f, -0x1.f55adcp+0f, 0x1.05dfep-3f,
+    0x1.d6p-53f, 0x1.5378d8p+1f, -0x1.f58a5ep+0f, 0x1.04a1cep-3f,
     /* node 6529 y */
-    0x1.3p-57f, -0x1.c224a4p-1f, 0x1.39c2a8p+0f, -0x1.10f662p-3f,
+    -0x1.e33334p-56f, -0x1.c23462p-1f, 0x1.39bc84p+0f, -0x1.10b61cp-3f,
     /* node 6529 z */
-    -0x1.99999ap-57f, 0x1.42695ep-2f, -0x1.586724p-2f, 0x1.3848a8p+1f,
+    0x1.8p-56f, 0x1.41bbaap-2f, -0x1.57c584p-2f, 0x1.383b8p+1f,
     /* node 6595 x */
-    0x1.c33334p-56f, 0x1.c6f098p-1f, -0x1.6f0b84p-3f, -0x1.714fa6p-3f,
+    0x1.f33334p-55f, 0x1.c6afd2p-1f, -0x1.6dc8bap-3f, -0x1.6e269p-3f,
     /* node 6595 y */
-    -0x1.8p-60f, 0x1.022304p-4f, 0x1.ac4a0ep-3f, -0x1.3bc3cap-4f,
+    -0x1.d9999ap-60f, 0x1.fafef4p-5f, 0x1.ae6fdep-3f, -0x1.33dc14p-4f,
     /* node 6595 z */
-    0x1p-59f, 0x1.6b69a6p-8f, -0x1.167038p-3f, 0x1.7aed8cp-1f,
+    0x1.666666p-59f, 0x1.96e496p-8f, -0x1.152a7ap-3f, 0x1.7af7f2p-1f,
     /* node 6596 x */
-    0x1.d1999ap-56f, 0x1.a5264ep-1f, -0x1.1de4b4p-3f, -0x1.3d4244p-3f,
+    0x1.ap-56f, 0x1.a4f44p-1f, -0x1.1d83e6p-3f, -0x1.3af4c8p-3f,
     /* node 6596 y */
-    -0x1.99999ap-65f, 0x1.5053acp-4f, 0x1.75e93cp-3f, -0x1.21db48p-4f,
+    -0x1.69999ap-58f, 0x1.4f80fap-4f, 0x1.77efecp-3f, -0x1.1d9e7ap-4f,
     /* node 6596 z */
-    0x1.99999ap-61f, 0x1.8217d2p-7f, -0x1.033136p-3f, 0x1.670d1ap-1f,
+    -0x1.4cccccp-58f, 0x1.829b28p-7f, -0x1.01272cp-3f, 0x1.6703e8p-1f,
     /* node 6597 x */
-    0x1.f9999ap-57f, 0x1.8eac5ep-1f, -0x1.00baa2p-3f, -0x1.6e8e38p-3f,
+    0x1.55999ap-55f, 0x1.8df40cp-1f, -0x1.009dbap-3f, -0x1.6af4cp-3f,
     /* node 6597 y */
-    -0x0p+0f, 0x1.1b1efp-4f, 0x1.8d542cp-3f, -0x1.0d5efp-4f,
+    -0x1.b33334p-60f, 0x1.19efb4p-4f, 0x1.8d7022p-3f, -0x1.0c4a94p-4f,
     /* node 6597 z */
-    -0x1.99999ap-59f, 0x1.2cc63p-7f, -0x1.0b6ed2p-3f, 0x1.5bfb54p-1f,
+    -0x1.99999ap-60f, 0x1.415504p-7f, -0x1.0af8p-3f, 0x1.5b4fecp-1f,
     /* node 6598 x */
-    0x1.8cccccp-56f, 0x1.ed2df6p-1f, -0x1.d6a342p-3f, -0x1.9c0a7ap-3f,
+    0x1.fp-56f, 0x1.ed3f28p-1f, -0x1.d6fc9ep-3f, -0x1.9b1c3cp-3f,
     /* node 6598 y */
-    0x1.e66666p-61f, 0x1.4a02bep-5f, 0x1.bb3db2p-3f, -0x1.0df8f6p-4f,
+    -0x1.99999ap-61f, 0x1.452daap-5f, 0x1.bc2654p-3f, -0x1.0b2696p-4f,
     /* node 6598 z */
-    0x1.99999ap-57f, 0x1.aa9ceap-7f, -0x1.3292a8p-3f, 0x1.90d2bp-1f,
+    0x1.333334p-59f, 0x1.a92952p-7f, -0x1.31d132p-3f, 0x1.90cc24p-1f,
     /* node 6599 x */
-    0x1.ccccccp-57f, 0x1.a0130cp-1f, -0x1.4de004p-3f, -0x1.92386p-3f,
+    0x1.833334p-56f, 0x1.9fb126p-1f, -0x1.4d1fccp-3f, -0x1.9090f8p-3f,
     /* node 6599 y */
-    -0x1.99999ap-60f, 0x1.a4928ap-5f, 0x1.7dc488p-3f, -0x1.bcecbp-5f,
+    0x1.99999ap-64f, 0x1.a04d6cp-5f, 0x1.7e3d34p-3f, -0x1.bdaf1ep-5f,
     /* node 6599 z */
-    0x1.333334p-60f, 0x1.48d504p-7f, -0x1.25365cp-3f, 0x1.65fea6p-1f,
+    -0x1.99999ap-58f, 0x1.620c5p-7f, -0x1.2562b2p-3f, 0x1.65bf2p-1f,
     /* node 6600 x */
-    -0x1.00ccccp-55f, 0x1.799cf4p-1f, -0x1.877924p-4f, -0x1.499316p-3f,
+    0x1.39999ap-56f, 0x1.78a6e8p-1f, -0x1.8a4e3cp-4f, -0x1.442e8ap-3f,
     /* node 6600 y */
-    -0x1.f9999ap-59f, 0x1.70ef06p-4f, 0x1.69c57cp-3f, -0x1.1e7934p-4f,
+    -0x1.333334p-60f, 0x1.732624p-4f, 0x1.6883b4p-3f, -0x1.1a0d04p-4f,
     /* node 6600 z */
-    0x1.666666p-59f, 0x1.d6609p-8f, -0x1.fc92aap-4f, 0x1.4e0704p-1f,
+    0x1.333334p-58f, 0x1.095632p-7f, -0x1.f9463p-4f, 0x1.4cd84p-1f,
     /* node 6601 x */
-    0x1.2cccccp-55f, 0x1.4f4dbap-1f, -0x1.5fe206p-4f, -0x1.55d8a6p-3f,
+    0x1.f33334p-58f, 0x1.4f45ecp-1f, -0x1.5e06eap-4f, -0x1.54661cp-3f,
     /* node 6601 y */
-    0x1.ccccccp-60f, 0x1.4c617p-4f, 0x1.2a206p-3f, -0x1.22899ap-4f,
+    -0x1p-60f, 0x1.4be612p-4f, 0x1.2ae0d8p-3f, -0x1.1dabccp-4f,
     /* node 6601 z */
-    -0x1.8p-58f, 0x1.5034eep-9f, -0x1.f0b0dp-4f, 0x1.29f1d8p-1f,
+    0x1.4cccccp-58f, 0x1.43728ap-9f, -0x1.edb7a6p-4f, 0x1.29ec4p-1f,
     /* node 6602 x */
-    0x1.c66666p-58f, 0x1.4180bep-1f, -0x1.17226ep-4f, -0x1.27564ep-3f,
+    0x1.19999ap-57f, 0x1.41aaf4p-1f, -0x1.16e25ep-4f, -0x1.2717b8p-3f,
     /* node 6602 y */
-    0x1.acccccp-59f, 0x1.77f544p-4f, 0x1.1c0f3ap-3f, -0x1.08808ep-4f,
+    -0x1.4cccccp-60f, 0x1.797b88p-4f, 0x1.1ca99ep-3f, -0x1.052d42p-4f,
     /* node 6602 z */
-    -0x1.99999ap-61f, 0x1.5dc688p-8f, -0x1.ccd3cap-4f, 0x1.1dc494p-1f,
+    -0x1.333334p-59f, 0x1.33188ap-8f, -0x1.caad74p-4f, 0x1.1e9ec4p-1f,
     /* node 6639 x */
-    0x1.19999ap-58f, 0x1.c42a3ep-2f, 0x1.56e046p-9f, -0x1.ba266p-4f,
+    0x1.4cccccp-59f, 0x1.c2b824p-2f, 0x1.128a9cp-9f, -0x1.b73cdap-4f,
     /* node 6639 y */
-    0x1.333334p-63f, 0x1.ce4796p-4f, 0x1.112096p-4f, -0x1.eae6fep-5f,
+    -0x1.666666p-62f, 0x1.c17012p-4f, 0x1.12ab74p-4f, -0x1.e46c14p-5f,
     /* node 6639 z */
-    -0x1.666666p-59f, -0x1.01984p-9f, -0x1.391d8p-4f, 0x1.9f2d32p-2f,
+    -0x1.99999ap-58f, -0x1.da982p-10f, -0x1.35aa68p-4f, 0x1.9f22d8p-2f,
     /* node 6640 x */
-    0x1.be6666p-56f, 0x1.12c37ep-1f, -0x1.4f4508p-5f, -0x1.f8888cp-4f,
+    0x1.933334p-57f, 0x1.12480ep-1f, -0x1.474cf6p-5f, -0x1.f8d0b2p-4f,
     /* node 6640 y */
-    -0x1.666666p-60f, 0x1.95334ep-4f, 0x1.e23c5ap-4f, -0x1.2d12e4p-4f,
+    -0x1.8cccccp-58f, 0x1.94630cp-4f, 0x1.e16dd8p-4f, -0x1.292476p-4f,
     /* node 6640 z */
-    -0x1.e66666p-58f, 0x1.5bebdcp-9f, -0x1.a54d1cp-4f, 0x1.f431f4p-2f,
+    0x1.333334p-60f, 0x1.ce423ap-10f, -0x1.a0b24ep-4f, 0x1.f55504p-2f,
     /* node 6641 x */
-    -0x1.19999ap-59f, 0x1.c8ea22p-2f, -0x1.9b879p-7f, -0x1.068f02p-3f,
+    0x1.b1999ap-56f, 0x1.c7cf4ep-2f, -0x1.945818p-7f, -0x1.05e168p-3f,
     /* node 6641 y */
-    -0x1.99999ap-62f, 0x1.632b84p-4f, 0x1.67e368p-4f, -0x1.a669acp-5f,
+    -0x0p+0f, 0x1.62d3f6p-4f, 0x1.67512cp-4f, -0x1.a7c25p-5f,
     /* node 6641 z */
-    0x1.99999ap-60f, -0x1.a526f8p-9f, -0x1.5d976cp-4f, 0x1.ad5534p-2f,
+    -0x1.99999ap-62f, -0x1.9c9476p-9f, -0x1.5b4e3p-4f, 0x1.ac8962p-2f,
     /* node 6642 x */
-    -0x1.3p-56f, 0x1.12f3bep-1f, -0x1.918b2ap-5f, -0x1.2946a6p-3f,
+    0x1.11999ap-56f, 0x1.132a44p-1f, -0x1.8068b6p-5f, -0x1.2cc6d4p-3f,
     /* node 6642 y */
-    0x1.99999ap-63f, 0x1.66be64p-4f, 0x1.c943b2p-4f, -0x1.2008ccp-4f,
+    0x1.e66666p-59f, 0x1.6415b2p-4f, 0x1.d2d606p-4f, -0x1.21a514p-4f,
     /* node 6642 z */
-    -0x1.333334p-59f, 0x1.a28fe8p-11f, -0x1.b75556p-4f, 0x1.f725e2p-2f,
+    0x1p-58f, -0x1.7288cep-12f, -0x1.b4557ep-4f, 0x1.f9576ep-2f,
     /* node 6643 x */
-    0x1.eb3334p-56f, 0x1.1b0f1ep-1f, -0x1.240c1ep-4f, -0x1.575272p-3f,
+    0x1.466666p-57f, 0x1.1b556ep-1f, -0x1.1b2ab6p-4f, -0x1.5b7e5cp-3f,
     /* node 6643 y */
-    0x1p-59f, 0x1.2c1834p-4f, 0x1.babdf6p-4f, -0x1.6e4a86p-5f,
+    -0x1.066666p-59f, 0x1.27a25ap-4f, 0x1.c3d0d6p-4f, -0x1.74e538p-5f,
     /* node 6643 z */
-    -0x1.333334p-59f, -0x1.09cdap-8f, -0x1.d79112p-4f, 0x1.02aca4p-1f,
+    0x1p-57f, -0x1.3919aep-8f, -0x1.d5164cp-4f, 0x1.0394b8p-1f,
     /* node 6644 x */
-    0x1.6p-58f, 0x1.c26efcp-2f, -0x1.4702e6p-6f, -0x1.38c3d6p-3f,
+    0x1.7b3334p-56f, 0x1.c085ap-2f, -0x1.4aeb6p-6f, -0x1.365d7p-3f,
     /* node 6644 y */
-    -0x1.d9999ap-60f, 0x1.134404p-4f, 0x1.46cc24p-4f, -0x1.5db112p-5f,
+    -0x1.ccccccp-61f, 0x1.15f0cep-4f, 0x1.43703cp-4f, -0x1.563de4p-5f,
     /* node 6644 z */
-    0x1p-59f, -0x1.9de06p-7f, -0x1.946856p-4f, 0x1.b85892p-2f,
+    -0x1.99999ap-59f, -0x1.8cb3eep-7f, -0x1.93a174p-4f, 0x1.b612c8p-2f,
     /* node 6711 x */
-    0x1.466666p-56f, 0x1.32f5ap+0f, -0x1.4d8ee4p-2f, -0x1.0b02d8p-3f,
+    -0x1.6cccccp-58f, 0x1.330edcp+0f, -0x1.4dd538p-2f, -0x1.0c64cp-3f,
     /* node 6711 y */
-    0x1.ap-59f, 0x1.c68446p-5f, 0x1.bc082ep-3f, -0x1.5cc25ap-4f,
+    -0x1.866666p-59f, 0x1.c4541ap-5f, 0x1.bb2e6cp-3f, -0x1.5c544ep-4f,
     /* node 6711 z */
-    0x1p-57f, 0x1.b0f158p-5f, -0x1.21c40ep-3f, 0x1.d0109ep-1f,
+    0x1.99999ap-58f, 0x1.aebe96p-5f, -0x1.2131ecp-3f, 0x1.d01a62p-1f,
     /* node 6712 x */
-    0x1.066666p-57f, 0x1.3a128p+0f, -0x1.6baf2ep-2f, -0x1.5b62a4p-3f,
+    0x1.733334p-59f, 0x1.3a0b3ap+0f, -0x1.6bf06cp-2f, -0x1.5ba4f8p-3f,
     /* node 6712 y */
-    0x1.333334p-62f, 0x1.506824p-5f, 0x1.cc2b78p-3f, -0x1.4228dep-4f,
+    0x1.99999ap-63f, 0x1.510408p-5f, 0x1.ca74f8p-3f, -0x1.435314p-4f,
     /* node 6712 z */
-    -0x1.99999ap-58f, 0x1.9e2cdcp-5f, -0x1.3877cap-3f, 0x1.d73b48p-1f,
+    -0x1p-58f, 0x1.9dfd1ap-5f, -0x1.383a3ep-3f, 0x1.d71d36p-1f,
     /* node 6713 x */
-    -0x1.2b3334p-56f, 0x1.589cf6p+0f, -0x1.d5009p-2f, -0x1.b449ap-4f,
+    0x1.2f3334p-55f, 0x1.58e7e8p+0f, -0x1.d5255ep-2f, -0x1.b8cdbp-4f,
     /* node 6713 y */
-    0x1.99999ap-65f, 0x1.39527ep-5f, 0x1.a5cbfp-3f, -0x1.adea34p-5f,
+    -0x1.19999ap-59f, 0x1.378abp-5f, 0x1.a689c4p-3f, -0x1.b01e7p-5f,
     /* node 6713 z */
-    0x1.ccccccp-58f, 0x1.3bf59cp-4f, -0x1.214864p-3f, 0x1.ea796ep-1f,
+    -0x1.99999ap-60f, 0x1.3962c8p-4f, -0x1.211c76p-3f, 0x1.ea87fp-1f,
     /* node 6714 x */
-    -0x1.5a6666p-55f, 0x1.206c3ep+0f, -0x1.173214p-2f, -0x1.92d72ap-4f,
+    0x1.4b3334p-56f, 0x1.2006ecp+0f, -0x1.175a16p-2f, -0x1.91bcd6p-4f,
     /* node 6714 y */
-    0x1.ccccccp-59f, 0x1.3375e4p-4f, 0x1.aa3872p-3f, -0x1.891aacp-4f,
+    0x1.89999ap-58f, 0x1.322afep-4f, 0x1.a83e6p-3f, -0x1.838c5cp-4f,
     /* node 6714 z */
-    -0x1.666666p-57f, 0x1.757a32p-5f, -0x1.07fc54p-3f, 0x1.b8edbap-1f,
+    -0x1.333334p-58f, 0x1.785fe4p-5f, -0x1.05eb3p-3f, 0x1.b89b3p-1f,
     /* node 6715 x */
-    0x1.bap-55f, 0x1.488a4cp+0f, -0x1.95744p-2f, -0x1.6aff5ep-4f,
+    -0x1.b66666p-57f, 0x1.488d2ep+0f, -0x1.95a016p-2f, -0x1.6c1a42p-4f,
     /* node 6715 y */
-    -0x1.333334p-62f, 0x1.bd1bc4p-5f, 0x1.b49daap-3f, -0x1.54e948p-4f,
+    -0x1.0cccccp-60f, 0x1.bd6ceap-5f, 0x1.b3b6c6p-3f, -0x1.52abb8p-4f,
     /* node 6715 z */
-    -0x1.99999ap-60f, 0x1.2714dcp-4f, -0x1.13a8c2p-3f, 0x1.e37d0cp-1f,
+    -0x1.99999ap-61f, 0x1.267ea6p-4f, -0x1.12f558p-3f, 0x1.e32d2cp-1f,
     /* node 6716 x */
-    0x1.99999ap-59f, 0x1.38e36ap+0f, -0x1.4ced12p-2f, -0x1.e5393ap-5f,
+    -0x1.bcp-56f, 0x1.38cad6p+0f, -0x1.4d18ap-2f, -0x1.df6f9ep-5f,
     /* node 6716 y */
-    -0x0p+0f, 0x1.6cd6fcp-4f, 0x1.9d127p-3f, -0x1.6fb64ep-4f,
+    -0x1.99999ap-62f, 0x1.6e922cp-4f, 0x1.9aebp-3f, -0x1.6c2662p-4f,
     /* node 6716 z */
-    0x1.99999ap-60f, 0x1.20d484p-4f, -0x1.f42ff8p-4f, 0x1.c7c338p-1f,
+    -0x0p+0f, 0x1.213744p-4f, -0x1.f35d0cp-4f, 0x1.c76c3cp-1f,
     /* node 6717 x */
-    0x1.8c1p-56f, 0x1.3ed72ap+0f, -0x1.73c04p-2f, -0x1.cf0b64p-11f,
+    -0x1.32ep-56f, 0x1.3ee4ep+0f, -0x1.744d38p-2f, -0x1.cb82f2p-10f,
     /* node 6717 y */
-    -0x1.0cccccp-60f, 0x1.713334p-4f, 0x1.73e094p-3f, -0x1.4f4b5ep-4f,
+    0x1.266666p-60f, 0x1.6aba48p-4f, 0x1.757978p-3f, -0x1.53ba0ep-4f,
     /* node 6717 z */
-    -0x1.ccccccp-58f, 0x1.4ae13cp-4f, -0x1.b8782ep-4f, 0x1.c5a838p-1f,
+    0x1.99999ap-61f, 0x1.47967ep-4f, -0x1.b6ab42p-4f, 0x1.c5b3e4p-1f,
     /* node 6718 x */
-    -0x1.373334p-56f, 0x1.5f2da8p+0f, -0x1.d9c9p-2f, -0x1.29e87p-5f,
+    -0x1.6cccccp-56f, 0x1.5efcfap+0f, -0x1.d9f712p-2f, -0x1.2ecbdap-5f,
     /* node 6718 y */
-    0x1.266666p-60f, 0x1.2a218ep-4f, 0x1.7ec3d8p-3f, -0x1.31e58ep-4f,
+    0x1.266666p-58f, 0x1.26f2f6p-4f, 0x1.7e657p-3f, -0x1.330f1cp-4f,
     /* node 6718 z */
-    0x1.99999ap-58f, 0x1.5391bap-4f, -0x1.018e7p-3f, 0x1.e63daep-1f,
+    0x1.333334p-59f, 0x1.526e44p-4f, -0x1.00cf2cp-3f, 0x1.e5d0c8p-1f,
     /* node 6745 x */
-    0x1.033334p-55f, 0x1.8c237ap+0f, -0x1.809192p-1f, -0x1.801dcep-3f,
+    0x1.366666p-56f, 0x1.8c297cp+0f, -0x1.80cd38p-1f, -0x1.80efcep-3f,
     /* node 6745 y */
-    0x1.99999ap-63f, 0x1.f972fcp-7f, 0x1.ccbb2ap-4f, 0x1.0806bep-5f,
+    -0x1.8cccccp-60f, 0x1.f68dd8p-7f, 0x1.cca7bcp-4f, 0x1.07adfcp-5f,
     /* node 6745 z */
-    0x1.333334p-58f, 0x1.cbefe8p-4f, -0x1.857296p-3f, 0x1.f7c904p-1f,
+    0x1.333334p-58f, 0x1.cacae4p-4f, -0x1.84cf6ap-3f, 0x1.f7b5dep-1f,
     /* node 6750 x */
-    0x1.8cccccp-56f, 0x1.bd10bep-1f, -0x1.ac38c8p-3f, -0x1.b018e2p-3f,
+    -0x1.733334p-58f, 0x1.bcd78ep-1f, -0x1.ac148cp-3f, -0x1.afe0aep-3f,
     /* node 6750 y */
-    -0x1.2p-61f, 0x1.e13212p-6f, 0x1.7dfe5ep-3f, -0x1.80611p-6f,
+    -0x1.58p-58f, 0x1.dedcf2p-6f, 0x1.7d4434p-3f, -0x1.7acdaap-6f,
     /* node 6750 z */
-    0x1.ccccccp-59f, 0x1.243b8ep-7f, -0x1.379606p-3f, 0x1.73a33ap-1f,
+    -0x1.99999ap-59f, 0x1.317c7ap-7f, -0x1.372a92p-3f, 0x1.737a0cp-1f,
     /* node 6751 x */
-    0x1.a66666p-58f, 0x1.72a926p-1f, -0x1.36bd06p-3f, -0x1.a8feb4p-3f,
+    0x1.4cccccp-57f, 0x1.72df9ep-1f, -0x1.37ff5cp-3f, -0x1.a9bcacp-3f,
     /* node 6751 y */
-    -0x1.ccccccp-61f, 0x1.0c0462p-5f, 0x1.30cf7ap-3f, -0x1.d58cbp-6f,
+    -0x1.19999ap-60f, 0x1.06382p-5f, 0x1.327538p-3f, -0x1.ce6f6ep-6f,
     /* node 6751 z */
-    -0x1.99999ap-61f, 0x1.e3b51p-10f, -0x1.297768p-3f, 0x1.443e88p-1f,
+    -0x1.ccccccp-59f, 0x1.ad45p-10f, -0x1.28974ep-3f, 0x1.444862p-1f,
     /* node 6752 x */
-    0x1.ccccccp-60f, 0x1.837a7ep-1f, -0x1.6ba7ep-3f, -0x1.d8f38ep-3f,
+    0x1.58p-55f, 0x1.838f6ep-1f, -0x1.6cb812p-3f, -0x1.d89a92p-3f,
     /* node 6752 y */
-    0x1.f33334p-62f, 0x1.b78112p-6f, 0x1.365b1cp-3f, -0x1.911a96p-7f,
+    -0x1.69999ap-61f, 0x1.af158ap-6f, 0x1.36426ap-3f, -0x1.78a12ap-7f,
     /* node 6752 z */
-    -0x1.666666p-58f, 0x1.3d656ap-8f, -0x1.3bb7cap-3f, 0x1.49f32ap-1f,
+    0x1.99999ap-60f, 0x1.2f7118p-8f, -0x1.3ac6cep-3f, 0x1.49d1dcp-1f,
     /* node 6753 x */
-    0x1.31999ap-54f, 0x1.081626p+0f, -0x1.1a93p-2f, -0x1.bfbf14p-3f,
+    0x1.b9999ap-57f, 0x1.084044p+0f, -0x1.1b9092p-2f, -0x1.c03374p-3f,
     /* node 6753 y */
-    0x1.266666p-59f, 0x1.79dd7ap-6f, 0x1.c1c364p-3f, -0x1.c41c04p-5f,
+    -0x1.ccccccp-60f, 0x1.6f9814p-6f, 0x1.c1f5aep-3f, -0x1.c31b8ap-5f,
     /* node 6753 z */
-    0x1p-58f, 0x1.5d812p-6f, -0x1.4e4e88p-3f, 0x1.ab401p-1f,
+    -0x1p-58f, 0x1.590da2p-6f, -0x1.4d49dp-3f, 0x1.ab15cap-1f,
     /* node 6754 x */
-    0x1.9cccccp-55f, 0x1.e2cbap-1f, -0x1.0662cep-2f, -0x1.f9587ap-3f,
+    0x1.89999ap-56f, 0x1.e283a6p-1f, -0x1.0683c8p-2f, -0x1.f8cee6p-3f,
     /* node 6754 y */
-    -0x1.3e6666p-58f, 0x1.63c314p-6f, 0x1.821bccp-3f, -0x1.6df5ccp-6f,
+    -0x1.bp-60f, 0x1.5e284p-6f, 0x1.8154c8p-3f, -0x1.5a748cp-6f,
     /* node 6754 z */
-    -0x1.99999ap-61f, 0x1.356468p-7f, -0x1.52d36p-3f, 0x1.8b329ep-1f,
+    -0x1.99999ap-59f, 0x1.3793a4p-7f, -0x1.52c95p-3f, 0x1.8b37bp-1f,
     /* node 6793 x */
-    -0x1.18p-57f, 0x1.6f4656p+0f, -0x1.1119cap-1f, 0x1.312f84p-5f,
+    -0x1.5d3334p-56f, 0x1.6f38b8p+0f, -0x1.114d52p-1f, 0x1.2b6906p-5f,
     /* node 6793 y */
-    0x1.666666p-61f, 0x1.5b3d94p-4f, 0x1.3946a4p-3f, -0x1.1c27e8p-4f,
+    -0x1.266666p-58f, 0x1.5730bap-4f, 0x1.3a191ep-3f, -0x1.1d9c5cp-4f,
     /* node 6793 z */
-    -0x1.99999ap-61f, 0x1.b9269ep-4f, -0x1.01bbb4p-3f, 0x1.ec40dp-1f,
+    -0x1p-57f, 0x1.b87a08p-4f, -0x1.01963ep-3f, 0x1.ec5d04p-1f,
     /* node 6794 x */
-    0x1.2p-55f, 0x1.459422p+0f, -0x1.99f11cp-2f, 0x1.c13682p-5f,
+    0x1.e73334p-56f, 0x1.458ebp+0f, -0x1.9a6828p-2f, 0x1.bd58c6p-5f,
     /* node 6794 y */
-    0x1.acccccp-58f, 0x1.e13864p-4f, 0x1.21af5cp-3f, -0x1.6e9b6cp-4f,
+    -0x0p+0f, 0x1.df37f6p-4f, 0x1.22953cp-3f, -0x1.6fc614p-4f,
     /* node 6794 z */
-    -0x1.4cccccp-57f, 0x1.8ffcbcp-4f, -0x1.b48b5ep-4f, 0x1.b7a7f8p-1f,
+    -0x1.ccccccp-58f, 0x1.8e2d6ap-4f, -0x1.b3de7cp-4f, 0x1.b79fa6p-1f,
     /* node 6795 x */
-    0x1.4f3334p-54f, 0x1.72f108p+0f, -0x1.276102p-1f, 0x1.b43a48p-4f,
+    0x1.e9999ap-55f, 0x1.72da7p+0f, -0x1.279f6ep-1f, 0x1.b1d93cp-4f,
     /* node 6795 y */
-    -0x1.8p-59f, 0x1.7e19f8p-4f, 0x1.f8d8acp-4f, -0x1.c330f2p-5f,
+    -0x1.0cccccp-60f, 0x1.7c50dap-4f, 0x1.f90eeap-4f, -0x1.c8bf22p-5f,
     /* node 6795 z */
-    0x1.99999ap-58f, 0x1.e47ea8p-4f, -0x1.ebcdacp-4f, 0x1.e856d8p-1f,
+    -0x1.ccccccp-57f, 0x1.e4d434p-4f, -0x1.eb9c22p-4f, 0x1.e86776p-1f,
     /* node 6796 x */
-    0x1.c4ccccp-56f, 0x1.a2412p+0f, -0x1.795d6ep-1f, 0x1.85d8cep-4f,
+    0x1.38ccccp-54f, 0x1.a2432cp+0f, -0x1.79b1b4p-1f, 0x1.840a18p-4f,
     /* node 6796 y */
-    0x1.466666p-60f, 0x1.0a3418p-4f, 0x1.0e1212p-3f, -0x1.82b91ep-5f,
+    -0x1.99999ap-62f, 0x1.0939bcp-4f, 0x1.0e4ccap-3f, -0x1.845eep-5f,
     /* node 6796 z */
-    0x1.99999ap-61f, 0x1.2becaep-3f, -0x1.301876p-3f, 0x1.08e94ep+0f,
+    -0x1.333334p-58f, 0x1.2b699p-3f, -0x1.2fb6b8p-3f, 0x1.08e2d6p+0f,
     /* node 6797 x */
-    0x1.104p-54f, 0x1.92d85ap+0f, -0x1.52cdfep-1f, 0x1.7a0d58p-6f,
+    0x1.28f334p-54f, 0x1.92b3b8p+0f, -0x1.5306cp-1f, 0x1.726c02p-6f,
     /* node 6797 y */
-    -0x1.19999ap-58f, 0x1.8c1522p-5f, 0x1.4f2c9p-3f, -0x1.bc561cp-5f,
+    0x1.59999ap-60f, 0x1.896af6p-5f, 0x1.4ed8c6p-3f, -0x1.bf4316p-5f,
     /* node 6797 z */
-    0x1.4cccccp-56f, 0x1.fff2cap-4f, -0x1.371f0cp-3f, 0x1.0a3a9ep+0f,
+    -0x1.19999ap-57f, 0x1.ff0a86p-4f, -0x1.36968cp-3f, 0x1.0a2246p+0f,
     /* node 6798 x */
-    0x1.eb3334p-56f, 0x1.444ed4p+0f, -0x1.c0d508p-2f, 0x1.ddc0b6p-4f,
+    -0x1.ccccccp-58f, 0x1.443a28p+0f, -0x1.c1184ep-2f, 0x1.db8552p-4f,
     /* node 6798 y */
-    0x1.8p-59f, 0x1.16259ep-3f, 0x1.8b63cap-4f, -0x1.339014p-4f,
+    -0x1.19999ap-60f, 0x1.1300fap-3f, 0x1.8bb658p-4f, -0x1.38004cp-4f,
     /* node 6798 z */
-    0x1.666666p-58f, 0x1.d8ca5ep-4f, -0x1.866c2ep-4f, 0x1.aa86dep-1f,
+    0x1.b33334p-57f, 0x1.d5abbap-4f, -0x1.856cb4p-4f, 0x1.aa41cep-1f,
     /* node 6805 x */
-    -0x1.c9999ap-56f, 0x1.33850cp-1f, -0x1.c672bp-4f, -0x1.bf0a28p-3f,
+    0x1.366666p-56f, 0x1.337d12p-1f, -0x1.c17bfcp-4f, -0x1.c1998cp-3f,
     /* node 6805 y */
-    -0x1.132334p-59f, 0x1.6cd0a6p-5f, 0x1.d42dc8p-4f, 0x1.856126p-15f,
+    0x1.fb999ap-61f, 0x1.7350b8p-5f, 0x1.d2ee8ep-4f, -0x1.9912c2p-12f,
     /* node 6805 z */
-    0x1.666666p-59f, -0x1.110994p-7f, -0x1.074e06p-3f, 0x1.0f691p-1f,
+    -0x1.b33334p-58f, -0x1.0baaep-7f, -0x1.08078ap-3f, 0x1.0f8c06p-1f,
     /* node 6806 x */
-    0x1.84p-55f, 0x1.257628p-1f, -0x1.8182cap-4f, -0x1.8152a8p-3f,
+    -0x1.ccccccp-58f, 0x1.25ac1ep-1f, -0x1.7ab51ep-4f, -0x1.84f6a4p-3f,
     /* node 6806 y */
-    0x1.4cccccp-60f, 0x1.a1f78p-5f, 0x1.ae19eep-4f, -0x1.4c04ep-6f,
+    -0x1.bp-60f, 0x1.a47208p-5f, 0x1.b0505ep-4f, -0x1.56a6ap-6f,
     /* node 6806 z */
-    0x1.666666p-59f, -0x1.a58684p-8f, -0x1.f1ab94p-4f, 0x1.0809d8p-1f,
+    -0x1.99999ap-59f, -0x1.9b5552p-8f, -0x1.f28b58p-4f, 0x1.088312p-1f,
     /* node 6808 x */
-    0x1.4b3334p-56f, 0x1.d25c38p-2f, -0x1.12b1b6p-5f, -0x1.68a8bp-3f,
+    0x1.3cccccp-56f, 0x1.d09bd4p-2f, -0x1.11b58cp-5f, -0x1.66679ap-3f,
     /* node 6808 y */
-    -0x1.49999ap-60f, 0x1.00c606p-4f, 0x1.39600cp-4f, -0x1.f3bf1ep-7f,
+    -0x1.8p-62f, 0x1.06e3d4p-4f, 0x1.34f6b6p-4f, -0x1.f19efcp-7f,
     /* node 6808 z */
-    -0x1.99999ap-62f, -0x1.0aa7e6p-6f, -0x1.a6000ep-4f, 0x1.bd9dd6p-2f,
+    0x1.333334p-60f, -0x1.00ffd4p-6f, -0x1.a3cf94p-4f, 0x1.bb2a5ap-2f,
     /* node 6819 x */
-    0x1.2a6666p-55f, 0x1.729b1p+0f, -0x1.15dbap-1f, -0x1.2ae4fep-3f,
+    -0x1.0cccccp-58f, 0x1.72aebcp+0f, -0x1.161f72p-1f, -0x1.2bcbd8p-3f,
     /* node 6819 y */
-    -0x1.ecccccp-59f, 0x1.bca04p-12f, 0x1.d05a6ap-3f, -0x1.5fbd22p-5f,
+    -0x1.733334p-60f, -0x1.df1f6ep-15f, 0x1.d08f9p-3f, -0x1.5f7b3ep-5f,
     /* node 6819 z */
-    0x1.266666p-56f, 0x1.667572p-4f, -0x1.598c3cp-3f, 0x1.079936p+0f,
+    -0x1p-58f, 0x1.652aa8p-4f, -0x1.592142p-3f, 0x1.0787cp+0f,
     /* node 6820 x */
-    0x1.35999ap-54f, 0x1.77325ap+0f, -0x1.2f1ee4p-1f, -0x1.78690cp-3f,
+    0x1.666666p-61f, 0x1.772d96p+0f, -0x1.2f5dep-1f, -0x1.78f4d2p-3f,
     /* node 6820 y */
-    -0x1.0e6666p-58f, -0x1.23545p-6f, 0x1.b7bf8ap-3f, -0x1.dd18aap-6f,
+    0x1.333334p-64f, -0x1.287f1ap-6f, 0x1.b79844p-3f, -0x1.dc229ap-6f,
     /* node 6820 z */
-    -0x1.ccccccp-58f, 0x1.76a04p-4f, -0x1.6a1d8ap-3f, 0x1.09ae42p+0f,
+    -0x1.99999ap-58f, 0x1.764cap-4f, -0x1.69883ap-3f, 0x1.0990fcp+0f,
     /* node 6821 x */
-    0x1.6d3334p-54f, 0x1.b0b5aap+0f, -0x1.a00ad2p-1f, -0x1.b5a91p-4f,
+    -0x1.266666p-59f, 0x1.b0ab84p+0f, -0x1.a06606p-1f, -0x1.b6afcep-4f,
     /* node 6821 y */
-    -0x1.71999ap-59f, -0x1.ea454cp-6f, 0x1.8c1a1ep-3f, -0x1.017392p-6f,
+    -0x1.c66666p-61f, -0x1.ec372p-6f, 0x1.8bce58p-3f, -0x1.018544p-6f,
     /* node 6821 z */
-    -0x0p+0f, 0x1.146636p-3f, -0x1.7cca2ap-3f, 0x1.1da95ap+0f,
+    -0x1.333334p-56f, 0x1.14196ep-3f, -0x1.7c513cp-3f, 0x1.1d8ebap+0f,
     /* node 6822 x */
-    0x1.8cccccp-56f, 0x1.340dd6p+0f, -0x1.7d6d9ap-2f, -0x1.8db33p-3f,
+    0x1.8p-58f, 0x1.34053cp+0f, -0x1.7df25ap-2f, -0x1.8db2p-3f,
     /* node 6822 y */
-    -0x1.466666p-59f, 0x1.89f43cp-6f, 0x1.b8f588p-3f, -0x1.64cd92p-5f,
+    -0x1.2p-59f, 0x1.80a066p-6f, 0x1.b7f95ep-3f, -0x1.636d08p-5f,
     /* node 6822 z */
-    -0x1.666666p-57f, 0x1.8657bcp-5f, -0x1.44b234p-3f, 0x1.cfc3d6p-1f,
+    0x1.666666p-58f, 0x1.865bccp-5f, -0x1.44c7b8p-3f, 0x1.cfae4ep-1f,
     /* node 6823 x */
-    -0x1.64ccccp-56f, 0x1.99b2aep+0f, -0x1.5f71f4p-1f, -0x1.423a72p-4f,
+    -0x1.1p-58f, 0x1.99a2e8p+0f, -0x1.5fb318p-1f, -0x1.43d3eep-4f,
     /* node 6823 y */
-    -0x1.6p-60f, 0x1.b18eb2p-8f, 0x1.89eedep-3f, -0x1.022d7ep-5f,
+    -0x1.733334p-60f, 0x1.a464bp-8f, 0x1.89b19ep-3f, -0x1.015166p-5f,
     /* node 6823 z */
-    -0x1.333334p-56f, 0x1.e29494p-4f, -0x1.57f856p-3f, 0x1.114952p+0f,
+    0x1.333334p-58f, 0x1.e2678ep-4f, -0x1.5771a8p-3f, 0x1.1132f2p+0f,
     /* node 6824 x */
-    -0x1.733334p-57f, 0x1.2e83bcp+0f, -0x1.98185cp-2f, -0x1.bdd8dp-3f,
+    -0x1.ep-56f, 0x1.2ea1f6p+0f, -0x1.98975cp-2f, -0x1.be71a8p-3f,
     /* node 6824 y */
-    0x1.19999ap-63f, 0x1.3b2528p-7f, 0x1.92bc68p-3f, -0x1.ea6d24p-7f,
+    -0x1p-61f, 0x1.238d0ap-7f, 0x1.933644p-3f, -0x1.e284eap-7f,
     /* node 6824 z */
-    -0x1.666666p-58f, 0x1.7337e2p-5f, -0x1.56b72p-3f, 0x1.c9431cp-1f,
+    0x1p-58f, 0x1.70c87cp-5f, -0x1.5697b2p-3f, 0x1.c961bp-1f,
     /* node 6825 x */
-    0x1.733334p-58f, 0x1.075b4p+0f, -0x1.4f1bb8p-2f, -0x1.fd7de8p-3f,
+    0x1.ecccccp-56f, 0x1.075bf2p+0f, -0x1.4f90fap-2f, -0x1.fd5af8p-3f,
     /* node 6825 y */
-    -0x1.1e6666p-59f, 0x1.82010ap-6f, 0x1.43c358p-3f, 0x1.82417ep-7f,
+    0x1.0cccccp-62f, 0x1.7d5cd2p-6f, 0x1.438dcap-3f, 0x1.8c3b16p-7f,
     /* node 6825 z */
-    -0x1.333334p-59f, 0x1.b797cep-6f, -0x1.4c03bp-3f, 0x1.8fdba6p-1f,
+    0x1.99999ap-61f, 0x1.b22fbap-6f, -0x1.4c118p-3f, 0x1.900e3p-1f,
     /* node 6826 x */
-    0x1.366666p-55f, 0x1.659d38p+0f, -0x1.239bc4p-1f, -0x1.bcf7bp-3f,
+    0x1.f9999ap-57f, 0x1.659aaap+0f, -0x1.23d67ep-1f, -0x1.bd8f0cp-3f,
     /* node 6826 y */
-    -0x1.2p-59f, -0x1.77ae3ep-7f, 0x1.75eb7p-3f, -0x1.14dc06p-8f,
+    0x1.ccccccp-66f, -0x1.7dd08ep-7f, 0x1.75d9d4p-3f, -0x1.148286p-8f,
     /* node 6826 z */
-    -0x1.333334p-59f, 0x1.3a7a4ap-4f, -0x1.7244f8p-3f, 0x1.f9f2acp-1f,
+    -0x1.99999ap-60f, 0x1.3a8274p-4f, -0x1.71eb1ep-3f, 0x1.f9b2bcp-1f,
     /* node 6867 x */
-    -0x1.277334p-54f, 0x1.df34f6p+0f, -0x1.fc0b4ep-1f, -0x1.08ae16p-6f,
+    0x1.5f4p-54f, 0x1.df385ap+0f, -0x1.fc57ep-1f, -0x1.0d5ce8p-6f,
     /* node 6867 y */
-    -0x1.e9999ap-59f, -0x1.3abb98p-5f, 0x1.8390f4p-3f, -0x1.edf514p-7f,
+    -0x1.55999ap-58f, -0x1.3ace56p-5f, 0x1.836fd4p-3f, -0x1.efd364p-7f,
     /* node 6867 z */
-    0x1.0cccccp-56f, 0x1.607ccep-3f, -0x1.955524p-3f, 0x1.2f4d78p+0f,
+    0x1.4cccccp-56f, 0x1.60276ap-3f, -0x1.94c0b8p-3f, 0x1.2f3bbcp+0f,
     /* node 6868 x */
-    -0x1.e0ccccp-56f, 0x1.f84ac4p+0f, -0x1.1b813ap+0f, 0x1.4fc8f8p-4f,
+    -0x1.966666p-57f, 0x1.f85e5cp+0f, -0x1.1bafaap+0f, 0x1.4ecep-4f,
     /* node 6868 y */
-    -0x1.49999ap-59f, -0x1.e48c0ep-7f, 0x1.4b8a0cp-3f, -0x1.1e8e6cp-6f,
+    -0x1.88p-59f, -0x1.e0bb2cp-7f, 0x1.4b4e3ep-3f, -0x1.1e7612p-6f,
     /* node 6868 z */
-    -0x1.19999ap-56f, 0x1.9d4dbp-3f, -0x1.a88d2cp-3f, 0x1.32552cp+0f,
+    -0x1.99999ap-58f, 0x1.9cf1c8p-3f, -0x1.a84cbap-3f, 0x1.324922p+0f,
     /* node 6869 x */
-    -0x1.5d7p-56f, 0x1.b72774p+0f, -0x1.a53528p-1f, 0x1.603b6ep-10f,
+    0x1.fcae66p-55f, 0x1.b71736p+0f, -0x1.a583f8p-1f, 0x1.15ae96p-10f,
     /* node 6869 y */
-    -0x1.233334p-59f, 0x1.60fd54p-7f, 0x1.53afbep-3f, -0x1.af2f52p-6f,
+    -0x1.a66666p-61f, 0x1.5e987ep-7f, 0x1.535f8ep-3f, -0x1.b3e5dcp-6f,
     /* node 6869 z */
-    -0x1.99999ap-60f, 0x1.2c8a9p-3f, -0x1.60bf9ep-3f, 0x1.1aae6ep+0f,
+    -0x1.19999ap-56f, 0x1.2c6894p-3f, -0x1.60735p-3f, 0x1.1aa5e4p+0f,
     /* node 6870 x */
-    -0x1.313334p-55f, 0x1.cbf8e8p+0f, -0x1.d3b336p-1f, 0x1.6d5bf6p-4f,
+    0x1.766666p-54f, 0x1.cbf9d8p+0f, -0x1.d3f3eap-1f, 0x1.6bdbcep-4f,
     /* node 6870 y */
-    -0x1.8cccccp-61f, 0x1.7666ep-6f, 0x1.29081cp-3f, -0x1.09fba6p-5f,
+    -0x1.533334p-59f, 0x1.77336cp-6f, 0x1.28feb4p-3f, -0x1.087c78p-5f,
     /* node 6870 z */
-    0x1.ccccccp-58f, 0x1.5d19b8p-3f, -0x1.6d542ap-3f, 0x1.1f313p+0f,
+    -0x1.99999ap-61f, 0x1.5ceb66p-3f, -0x1.6ccb92p-3f, 0x1.1f347ep+0f,
     /* node 6871 x */
-    0x1.6e6666p-55f, 0x1.d39a92p+0f, -0x1.ed2046p-1f, 0x1.5d9f22p-3f,
+    -0x1.ccccccp-58f, 0x1.d39e94p+0f, -0x1.ed698cp-1f, 0x1.5cee94p-3f,
     /* node 6871 y */
-    -0x1.c66666p-60f, 0x1.ff746p-5f, 0x1.9c8616p-4f, -0x1.ee1732p-6f,
+    0x1.666666p-60f, 0x1.00c374p-4f, 0x1.9bb55ep-4f, -0x1.eb0326p-6f,
     /* node 6871 z */
-    -0x1.99999ap-60f, 0x1.8bc0cep-3f, -0x1.7384cp-3f, 0x1.191a82p+0f,
+    0x1.99999ap-57f, 0x1.8bb216p-3f, -0x1.733cdep-3f, 0x1.190a5cp+0f,
     /* node 6872 x */
-    -0x1.933334p-58f, 0x1.005304p+1f, -0x1.2abb36p+0f, 0x1.7244fep-3f,
+    0x1.61999ap-56f, 0x1.005774p+1f, -0x1.2ae808p+0f, 0x1.71ad8ap-3f,
     /* node 6872 y */
-    -0x1.24ccccp-59f, 0x1.4d42c4p-7f, 0x1.12ed4ap-3f, -0x1.9baefp-7f,
+    0x1.39999ap-61f, 0x1.480768p-7f, 0x1.13259ep-3f, -0x1.a338b6p-7f,
     /* node 6872 z */
-    -0x1.d9999ap-56f, 0x1.cb8998p-3f, -0x1.b3e0d4p-3f, 0x1.32a82ep+0f,
+    -0x1p-56f, 0x1.cb186cp-3f, -0x1.b3804p-3f, 0x1.329694p+0f,
     /* node 6902 x */
-    0x1.fb3334p-55f, 0x1.d7c50ep+0f, -0x1.05534ap+0f, 0x1.f485fcp-3f,
+    0x1.04p-54f, 0x1.d7af36p+0f, -0x1.057278p+0f, 0x1.f365dap-3f,
     /* node 6902 y */
-    0x1.74ccccp-59f, 0x1.2b9ed6p-4f, 0x1.41d6cp-4f, -0x1.3775aap-7f,
+    0x1.b4ccccp-60f, 0x1.2ad158p-4f, 0x1.4267f8p-4f, -0x1.3d092ap-7f,
     /* node 6902 z */
-    0x1.99999ap-61f, 0x1.af7c3p-3f, -0x1.7da92ep-3f, 0x1.19449p+0f,
+    0x1p-57f, 0x1.af1b78p-3f, -0x1.7d27f2p-3f, 0x1.193636p+0f,
     /* node 6942 x */
-    0x1.a2p-55f, 0x1.9a61fp-1f, -0x1.b47f0ap-4f, -0x1.056598p-4f,
+    0x1.3cccccp-57f, 0x1.9a84e2p-1f, -0x1.b57926p-4f, -0x1.05488ep-4f,
     /* node 6942 y */
-    0x1.39999ap-59f, 0x1.dc155cp-4f, 0x1.434178p-3f, -0x1.73f4c4p-4f,
+    0x1.19999ap-58f, 0x1.df028ap-4f, 0x1.432d38p-3f, -0x1.79d884p-4f,
     /* node 6942 z */
-    -0x1.b33334p-57f, 0x1.25d91ap-5f, -0x1.506bbep-4f, 0x1.4879fp-1f,
+    -0x1.19999ap-58f, 0x1.267e64p-5f, -0x1.51722ep-4f, 0x1.48a414p-1f,
     /* node 6945 x */
-    0x1.1ap-56f, 0x1.46f5cep-1f, -0x1.dfd6fap-5f, 0x1.75adb6p-5f,
+    -0x1.39999ap-59f, 0x1.469808p-1f, -0x1.e4cd6ap-5f, 0x1.7398d6p-5f,
     /* node 6945 y */
-    0x1.f33334p-59f, 0x1.3ab098p-3f, 0x1.0bb6e6p-4f, -0x1.20bcbcp-4f,
+    0x1.f9999ap-59f, 0x1.37a59ep-3f, 0x1.0ec3f6p-4f, -0x1.219a4cp-4f,
     /* node 6945 z */
-    0x1.99999ap-60f, 0x1.85f6fep-5f, -0x1.147122p-5f, 0x1.d5b81ap-2f,
+    0x1.ccccccp-59f, 0x1.86134p-5f, -0x1.14608p-5f, 0x1.d5cc78p-2f,
     /* node 7137 x */
-    0x1.973334p-59f, 0x1.a2602p-4f, -0x1.37672cp-4f, 0x1.f24adep-8f,
+    0x1.c5999ap-58f, 0x1.a584f4p-4f, -0x1.367f04p-4f, 0x1.023784p-7f,
     /* node 7137 y */
-    0x1.e66666p-58f, -0x1.9602aap-4f, 0x1.9f7fc4p-4f, -0x1.2ce3a2p-7f,
+    -0x1.933334p-61f, -0x1.9500bap-4f, 0x1.a413bcp-4f, -0x1.32544ap-7f,
     /* node 7137 z */
-    0x1p-62f, 0x1.8d5972p-7f, 0x1.8a75cp-10f, 0x1.263546p-4f,
+    0x1.99999ap-65f, 0x1.8ba926p-7f, 0x1.9a5f74p-10f, 0x1.274f94p-4f,
     /* node 7138 x */
-    -0x1p-58f, 0x1.b7a5b2p-3f, -0x1.28aca4p-3f, 0x1.ff1ee6p-6f,
+    0x1.f66666p-58f, 0x1.b6526p-3f, -0x1.21b98cp-3f, 0x1.fbe702p-6f,
     /* node 7138 y */
-    -0x1.66999ap-57f, -0x1.30e568p-3f, 0x1.32e44ep-3f, -0x1.caaf74p-8f,
+    -0x1.354cccp-57f, -0x1.2f2a24p-3f, 0x1.35e688p-3f, -0x1.850a84p-8f,
     /* node 7138 z */
-    0x1.99999ap-63f, -0x1.51c4bap-8f, -0x1.29d32ap-8f, 0x1.8db24ep-3f,
+    -0x1.4cccccp-59f, -0x1.7a58eap-8f, -0x1.22d914p-9f, 0x1.921158p-3f,
     /* node 7139 x */
-    0x1.c53334p-55f, 0x1.2ae53ep-1f, -0x1.2f495ep-2f, 0x1.173d6p-4f,
+    0x1.18ccccp-56f, 0x1.2afad4p-1f, -0x1.301bf8p-2f, 0x1.191d28p-4f,
     /* node 7139 y */
-    -0x1.aeccccp-57f, -0x1.111b76p-1f, 0x1.3c6f4ep-1f, 0x1.7858f8p-7f,
+    -0x1.9b3334p-57f, -0x1.113326p-1f, 0x1.3c6002p-1f, 0x1.8a4786p-7f,
     /* node 7139 z */
-    -0x1.4cccccp-57f, -0x1.2119cep-5f, 0x1.5a54bep-4f, 0x1.731bccp-1f,
+    -0x1.666666p-57f, -0x1.2771eap-5f, 0x1.5ed0f6p-4f, 0x1.7378ecp-1f,
     /* node 7140 x */
-    0x1.d38cccp-57f, 0x1.709854p-2f, -0x1.aa3ac8p-3f, 0x1.0fe578p-9f,
+    0x1.9b3334p-60f, 0x1.711704p-2f, -0x1.abc65ep-3f, 0x1.22aa6p-9f,
     /* node 7140 y */
-    -0x1.4cccccp-59f, -0x1.374898p-2f, 0x1.493e0ep-2f, -0x1.89769p-4f,
+    -0x1.2cccccp-59f, -0x1.3753dep-2f, 0x1.48cdcap-2f, -0x1.8758c8p-4f,
     /* node 7140 z */
-    -0x0p+0f, 0x1.0d2bf8p-5f, -0x1.8b6a9ap-4f, 0x1.93d578p-2f,
+    -0x1.99999ap-62f, 0x1.0b4c8cp-5f, -0x1.894d7ep-4f, 0x1.95345p-2f,
     /* node 7141 x */
-    0x1.856666p-56f, 0x1.80804ap-1f, -0x1.5850aep-2f, 0x1.1e0e7p-7f,
+    -0x1.d56666p-56f, 0x1.8062eap-1f, -0x1.58801ap-2f, 0x1.207f46p-7f,
     /* node 7141 y */
-    -0x1.333334p-62f, -0x1.3dccep-1f, 0x1.9de35p-1f, -0x1.cb191ep-4f,
+    0x1.48p-56f, -0x1.3dd18ep-1f, 0x1.9e42dcp-1f, -0x1.c88f4cp-4f,
     /* node 7141 z */
-    0x1.99999ap-60f, 0x1.8e4e54p-9f, -0x1.863d1ep-5f, 0x1.eebca8p-1f,
+    0x1p-58f, 0x1.46766ap-9f, -0x1.7a7a9p-5f, 0x1.eec1bep-1f,
     /* node 7142 x */
-    -0x1p-56f, 0x1.1fed1cp+0f, -0x1.df792ap-2f, 0x1.e83ab6p-4f,
+    0x1.433334p-57f, 0x1.1fd9fp+0f, -0x1.df7d4ap-2f, 0x1.e7b878p-4f,
     /* node 7142 y */
-    0x1.4p-58f, -0x1.8db8cep-1f, 0x1.422bf6p+0f, 0x1.8335dcp-6f,
+    0x1.fe6666p-59f, -0x1.8e049ap-1f, 0x1.42600ep+0f, 0x1.82c8fep-6f,
     /* node 7142 z */
-    -0x1.99999ap-60f, -0x1.b31ab6p-6f, 0x1.9c8dap-4f, 0x1.a0684ap+0f,
+    -0x1p-57f, -0x1.b7bc4p-6f, 0x1.9f803ap-4f, 0x1.a059ecp+0f,
     /* node 7143 x */
-    0x1.8cccccp-58f, 0x1.1e44d6p-1f, -0x1.041804p-2f, -0x1.801baap-4f,
+    0x1.dcp-56f, 0x1.1e22b2p-1f, -0x1.05619p-2f, -0x1.7fb166p-4f,
     /* node 7143 y */
-    -0x1.ecccccp-57f, -0x1.d0d4e8p-2f, 0x1.f8312ep-2f, -0x1.8e9192p-3f,
+    -0x1.066666p-56f, -0x1.d114a2p-2f, 0x1.f6e71p-2f, -0x1.8e4e94p-3f,
     /* node 7143 z */
-    0x1.333334p-58f, 0x1.bdb276p-5f, -0x1.b8092p-3f, 0x1.6ae10ap-1f,
+    -0x1.333334p-60f, 0x1.c03874p-5f, -0x1.b79278p-3f, 0x1.6b40aap-1f,
     /* node 7144 x */
-    0x1.2cccccp-56f, 0x1.e9d11ap-1f, -0x1.89f2e6p-2f, -0x1.ad8ed8p-4f,
+    -0x1.89999ap-56f, 0x1.e9e0cp-1f, -0x1.89e4bp-2f, -0x1.adf438p-4f,
     /* node 7144 y */
-    -0x1.99999ap-58f, -0x1.590632p-1f, 0x1.e7288cp-1f, -0x1.0e9bp-2f,
+    0x1.19999ap-57f, -0x1.5936ccp-1f, 0x1.e7cefcp-1f, -0x1.0e18eap-2f,
     /* node 7144 z */
-    -0x1.99999ap-60f, 0x1.fac8f2p-6f, -0x1.c8aa5ep-3f, 0x1.4a11f6p+0f,
+    0x1.99999ap-61f, 0x1.f72ac4p-6f, -0x1.c788acp-3f, 0x1.4a253cp+0f,
     /* node 7145 x */
-    -0x1.7fccccp-55f, 0x1.9c2544p+0f, -0x1.22c7aap-1f, -0x1.65c814p-5f,
+    -0x1.69ccccp-55f, 0x1.9c093ap+0f, -0x1.22cc8ep-1f, -0x1.66eab6p-5f,
     /* node 7145 y */
-    -0x1.ccccccp-55f, -0x1.a9ba14p-1f, 0x1.d978c4p+0f, -0x1.ab3088p-3f,
+    0x1.4p-58f, -0x1.a9c118p-1f, 0x1.d9c784p+0f, -0x1.aa408cp-3f,
     /* node 7145 z */
-    -0x1p-56f, -0x1.441142p-6f, -0x1.c96b88p-4f, 0x1.2da4f2p+1f,
+    0x1.99999ap-59f, -0x1.498e38p-6f, -0x1.c9450ep-4f, 0x1.2da4fcp+1f,
     /* node 7146 x */
-    0x1.25999ap-55f, 0x1.061504p+1f, -0x1.6e7e96p-1f, 0x1.873e08p-4f,
+    0x1.2bp-54f, 0x1.0637aep+1f, -0x1.6e50f2p-1f, 0x1.87063cp-4f,
     /* node 7146 y */
-    -0x1.24p-54f, -0x1.d05844p-1f, 0x1.1eba38p+1f, -0x1.ce24ecp-4f,
+    0x1.18p-55f, -0x1.d0bb4ap-1f, 0x1.1efa8cp+1f, -0x1.cd9242p-4f,
     /* node 7146 z */
-    -0x0p+0f, -0x1.4964d2p-7f, -0x1.121824p-4f, 0x1.989daap+1f,
+    0x1p-56f, -0x1.5a2b36p-7f, -0x1.142aaap-4f, 0x1.98a01p+1f,
     /* node 7147 x */
-    -0x1.99999ap-63f, 0x1.d72358p-1f, -0x1.559da4p-2f, -0x1.7642a6p-2f,
+    0x1.58p-55f, 0x1.d7283cp-1f, -0x1.560156p-2f, -0x1.76a1dcp-2f,
     /* node 7147 y */
-    -0x1.6p-57f, -0x1.314cc8p-1f, 0x1.5b7274p-1f, -0x1.719cb8p-2f,
+    0x1p-60f, -0x1.3153a6p-1f, 0x1.5bd264p-1f, -0x1.713e88p-2f,
     /* node 7147 z */
-    0x1.733334p-56f, 0x1.39ddc8p-4f, -0x1.705d88p-2f, 0x1.44e8bap+0f,
+    -0x1.b33334p-57f, 0x1.38a71p-4f, -0x1.7041fep-2f, 0x1.44f586p+0f,
     /* node 7148 x */
-    -0x1.666666p-59f, 0x1.27a31p+0f, -0x1.c026d2p-2f, -0x1.2a55bp-2f,
+    -0x1.ccccccp-57f, 0x1.27ab88p+0f, -0x1.c05186p-2f, -0x1.2ab072p-2f,
     /* node 7148 y */
-    -0x1.0cccccp-55f, -0x1.5f352cp-1f, 0x1.ec2172p-1f, -0x1.8ca1e8p-2f,
+    -0x1.b33334p-57f, -0x1.5f4bf8p-1f, 0x1.ec791ap-1f, -0x1.8bee3p-2f,
     /* node 7148 z */
-    -0x1.333334p-56f, 0x1.7cfb8p-5f, -0x1.6abd4cp-2f, 0x1.9e2c3ep+0f,
+    0x1.333334p-58f, 0x1.7b312cp-5f, -0x1.6a530ep-2f, 0x1.9e235ep+0f,
     /* node 7149 x */
-    0x1.79999ap-56f, 0x1.dccb4ep+0f, -0x1.4756a8p-1f, -0x1.01424ap-2f,
+    -0x1.19999ap-55f, 0x1.dca1a4p+0f, -0x1.47fc06p-1f, -0x1.014cf6p-2f,
     /* node 7149 y */
-    -0x1.b1999ap-55f, -0x1.b15d7ep-1f, 0x1.ec9482p+0f, -0x1.524d82p-2f,
+    -0x1.19999ap-59f, -0x1.b1c818p-1f, 0x1.ec96cap+0f, -0x1.51d128p-2f,
     /* node 7149 z */
-    -0x1.19999ap-56f, -0x1.1aea5ep-5f, -0x1.f2e948p-3f, 0x1.5d11a8p+1f,
+    0x1.99999ap-60f, -0x1.1d1998p-5f, -0x1.f0a15cp-3f, 0x1.5ce66ap+1f,
     /* node 7150 x */
-    0x1.453334p-54f, 0x1.2630f8p+1f, -0x1.aa0b4ep-1f, -0x1.dabb1ep-4f,
+    -0x1.026666p-55f, 0x1.25d068p+1f, -0x1.ab9508p-1f, -0x1.e47b3p-4f,
     /* node 7150 y */
-    -0x1.5d999ap-54f, -0x1.e59d8cp-1f, 0x1.420922p+1f, -0x1.cf035cp-3f,
+    0x1.6e6666p-55f, -0x1.e5f1e8p-1f, 0x1.419aa4p+1f, -0x1.cc6f9cp-3f,
     /* node 7150 z */
-    -0x1.333334p-56f, -0x1.c2efdep-6f, -0x1.5d78dcp-3f, 0x1.cec7a4p+1f,
+    0x1.333334p-57f, -0x1.ce997ep-6f, -0x1.596922p-3f, 0x1.ce8bccp+1f,
     /* node 7151 x */
-    0x1.38199ap-53f, 0x1.3dbfd2p+1f, -0x1.dd3466p-1f, 0x1.13a7c4p-4f,
+    -0x1.733334p-54f, 0x1.3de0bap+1f, -0x1.dd9b9ap-1f, 0x1.1b971cp-4f,
     /* node 7151 y */
-    -0x1.0eccccp-54f, -0x1.de6774p-1f, 0x1.4da6a2p+1f, -0x1.7a20d2p-3f,
+    -0x1.23999ap-53f, -0x1.de8d96p-1f, 0x1.4db2e6p+1f, -0x1.795c74p-3f,
     /* node 7151 z */
-    -0x1.99999ap-59f, 0x1.23668ap-6f, -0x1.7bebfep-3f, 0x1.f4a8b2p+1f,
+    -0x1.99999ap-58f, 0x1.0f99a4p-6f, -0x1.7aea1ep-3f, 0x1.f48f34p+1f,
     /* node 7152 x */
-    0x1.c66666p-56f, 0x1.4932b6p+0f, -0x1.19a9dap-1f, -0x1.5e4f72p-1f,
+    0x1.733334p-54f, 0x1.494d44p+0f, -0x1.1a21c8p-1f, -0x1.5e8884p-1f,
     /* node 7152 y */
-    0x1.4cccccp-57f, -0x1.65a2f8p-1f, 0x1.698d72p-1f, -0x1.ae4b7ep-2f,
+    -0x1.39999ap-56f, -0x1.6574cap-1f, 0x1.69dafcp-1f, -0x1.aec104p-2f,
     /* node 7152 z */
-    -0x1.19999ap-56f, 0x1.945b66p-4f, -0x1.763554p-2f, 0x1.adad92p+0f,
+    0x1.99999ap-58f, 0x1.92506ap-4f, -0x1.75b096p-2f, 0x1.ada4dap+0f,
     /* node 7153 x */
-    0x1.533334p-56f, 0x1.675a0ap+0f, -0x1.413e84p-1f, -0x1.3e1772p-1f,
+    0x1.acccccp-55f, 0x1.67783ep+0f, -0x1.418736p-1f, -0x1.3e8ae6p-1f,
     /* node 7153 y */
-    -0x1.1cccccp-55f, -0x1.7fee26p-1f, 0x1.a824fcp-1f, -0x1.99888cp-2f,
+    -0x1.49999ap-55f, -0x1.7fe822p-1f, 0x1.a85c16p-1f, -0x1.997f3ep-2f,
     /* node 7153 z */
-    0x1.333334p-58f, 0x1.1d21e8p-4f, -0x1.6b9eccp-2f, 0x1.e8ef9cp+0f,
+    0x1p-57f, 0x1.1b0e66p-4f, -0x1.6b536ep-2f, 0x1.e90334p+0f,
     /* node 7154 x */
-    0x1.19999ap-55f, 0x1.b91966p+0f, -0x1.7c6f9cp-1f, -0x1.010f5cp-1f,
+    0x1.8cccccp-55f, 0x1.b901ap+0f, -0x1.7cb6b8p-1f, -0x1.012c3ap-1f,
     /* node 7154 y */
-    -0x1.4cccccp-55f, -0x1.9c254ep-1f, 0x1.2cda5cp+0f, -0x1.5db6fap-2f,
+    -0x1.7cccccp-56f, -0x1.9c2ce8p-1f, 0x1.2d0828p+0f, -0x1.5d7374p-2f,
     /* node 7154 z */
-    0x1.99999ap-60f, 0x1.2c3f3p-8f, -0x1.45ca1ap-2f, 0x1.354c92p+1f,
+    -0x1.ccccccp-56f, 0x1.1be762p-8f, -0x1.458306p-2f, 0x1.35373cp+1f,
     /* node 7155 x */
-    0x1.573334p-54f, 0x1.30cb54p+1f, -0x1.db8712p-1f, -0x1.69701cp-2f,
+    -0x1.eb3334p-55f, 0x1.3115dap+1f, -0x1.db029p-1f, -0x1.69c1fap-2f,
     /* node 7155 y */
-    -0x1.4ep-53f, -0x1.d1ef4p-1f, 0x1.19981ap+1f, -0x1.b363ep-3f,
+    -0x1.f33334p-57f, -0x1.d24bbap-1f, 0x1.19a516p+1f, -0x1.b0696ap-3f,
     /* node 7155 z */
-    -0x1p-56f, -0x1.202072p-5f, -0x1.880968p-3f, 0x1.b7b86ap+1f,
+    -0x1.333334p-57f, -0x1.2900ap-5f, -0x1.876e0ap-3f, 0x1.b7c236p+1f,
     /* node 7156 x */
-    0x1.5a6666p-54f, 0x1.432be2p+1f, -0x1.112646p+0f, -0x1.1b05p-3f,
+    0x1.9p-56f, 0x1.433246p+1f, -0x1.118a2ap+0f, -0x1.1a1c1ap-3f,
     /* node 7156 y */
-    0x1.a8p-56f, -0x1.e4f828p-1f, 0x1.3810ecp+1f, -0x1.552138p-3f,
+    -0x1.426666p-54f, -0x1.e5b382p-1f, 0x1.381bdp+1f, -0x1.532736p-3f,
     /* node 7156 z */
-    -0x1.666666p-56f, 0x1.6867f2p-6f, -0x1.8050f2p-3f, 0x1.d8abfcp+1f,
+    -0x1.99999ap-58f, 0x1.5c1d08p-6f, -0x1.7ffb7ap-3f, 0x1.d88166p+1f,
     /* node 7157 x */
-    0x1.7accccp-55f, 0x1.3dc7a6p+1f, -0x1.3c8a2p+0f, 0x1.223402p-4f,
+    0x1.7fb334p-53f, 0x1.3dc7d6p+1f, -0x1.3cae08p+0f, 0x1.1f3c14p-4f,
     /* node 7157 y */
-    -0x1.6f3334p-55f, -0x1.e6f70ap-1f, 0x1.1e8b1p+1f, -0x1.5824dap-3f,
+    -0x1.b33334p-57f, -0x1.e74aacp-1f, 0x1.1e96p+1f, -0x1.580bfep-3f,
     /* node 7157 z */
-    -0x0p+0f, 0x1.91c89ep-4f, -0x1.b7df2ap-3f, 0x1.aa681ep+1f,
+    0x1.666666p-56f, 0x1.8fed78p-4f, -0x1.b6e41p-3f, 0x1.aa50d6p+1f,
     /* node 7158 x */
-    0x1.333334p-54f, 0x1.60b20ep+0f, -0x1.41e524p-1f, -0x1.8f048ep-1f,
+    0x1p-56f, 0x1.60a554p+0f, -0x1.424bbap-1f, -0x1.8e8142p-1f,
     /* node 7158 y */
-    -0x1.666666p-58f, -0x1.73f6b8p-1f, 0x1.70b7a2p-1f, -0x1.a113c6p-2f,
+    0x1.733334p-57f, -0x1.7467bep-1f, 0x1.7080d6p-1f, -0x1.9ed144p-2f,
     /* node 7158 z */
-    -0x1.99999ap-60f, 0x1.9c321p-4f, -0x1.546d14p-2f, 0x1.be6a64p+0f,
+    0x1.333334p-58f, 0x1.a01356p-4f, -0x1.541cacp-2f, 0x1.bdcaf4p+0f,
     /* node 7159 x */
-    0x1.2p-55f, 0x1.7f206ep+0f, -0x1.780e74p-1f, -0x1.78df74p-1f,
+    0x1.c33334p-55f, 0x1.7f4174p+0f, -0x1.7888ecp-1f, -0x1.79563cp-1f,
     /* node 7159 y */
-    0x1.e66666p-57f, -0x1.952472p-1f, 0x1.9b4e1ep-1f, -0x1.76ce06p-2f,
+    -0x1.ccccccp-56f, -0x1.95604ep-1f, 0x1.9b835ep-1f, -0x1.7648eep-2f,
     /* node 7159 z */
-    -0x1.99999ap-60f, 0x1.c105a8p-4f, -0x1.47b89ap-2f, 0x1.ed4fe8p+0f,
+    0x1.333334p-56f, 0x1.c0129cp-4f, -0x1.46d588p-2f, 0x1.ed1e8ep+0f,
     /* node 7160 x */
-    0x1.966666p-55f, 0x1.ac8836p+0f, -0x1.bdec14p-1f, -0x1.56a2dp-1f,
+    0x1.b33334p-58f, 0x1.acad48p+0f, -0x1.be3c26p-1f, -0x1.57085cp-1f,
     /* node 7160 y */
-    -0x1.f33334p-58f, -0x1.a983a6p-1f, 0x1.cb36a2p-1f, -0x1.2a6e98p-2f,
+    -0x1.533334p-57f, -0x1.a9b78ep-1f, 0x1.cb474ep-1f, -0x1.29c2d6p-2f,
     /* node 7160 z */
-    0x1.ccccccp-56f, 0x1.8087e2p-4f, -0x1.20ad56p-2f, 0x1.12e91p+1f,
+    -0x1p-55f, 0x1.7fefa2p-4f, -0x1.204aaep-2f, 0x1.12cf4ap+1f,
     /* node 7161 x */
-    0x1.e1999ap-54f, 0x1.02380ap+1f, -0x1.166bb6p+0f, -0x1.06747p-1f,
+    -0x1.28p-54f, 0x1.024744p+1f, -0x1.16b872p+0f, -0x1.06939cp-1f,
     /* node 7161 y */
-    0x1.e66666p-58f, -0x1.d31946p-1f, 0x1.422bb4p+0f, -0x1.203fa6p-3f,
+    -0x1.266666p-56f, -0x1.d35382p-1f, 0x1.423c72p+0f, -0x1.1ef2f6p-3f,
     /* node 7161 z */
-    -0x1.4cccccp-56f, 0x1.c23728p-5f, -0x1.4ab694p-3f, 0x1.4d2682p+1f,
+    -0x1.99999ap-59f, 0x1.be1cd2p-5f, -0x1.48e45ep-3f, 0x1.4d1cdcp+1f,
     /* node 7162 x */
-    0x1.733334p-54f, 0x1.1d151p+1f, -0x1.412132p+0f, -0x1.2d2914p-2f,
+    0x1.f33334p-57f, 0x1.1d23d2p+1f, -0x1.413b08p+0f, -0x1.2dbf2p-2f,
     /* node 7162 y */
-    -0x1.94d99ap-54f, -0x1.f78692p-1f, 0x1.b1e5c8p+0f, -0x1.6d4c2ep-6f,
+    -0x1.efp-54f, -0x1.f7a418p-1f, 0x1.b1d4dcp+0f, -0x1.6b22dcp-6f,
     /* node 7162 z */
-    -0x1.4cccccp-55f, 0x1.28ca2p-4f, -0x1.51393cp-4f, 0x1.748aa6p+1f,
+    0x1.99999ap-60f, 0x1.27354ep-4f, -0x1.4e4d08p-4f, 0x1.747564p+1f,
     /* node 7163 x */
-    0x1.43p-54f, 0x1.260ceep+1f, -0x1.620888p+0f, -0x1.2ce068p-4f,
+    0x1.3ap-54f, 0x1.2616aap+1f, -0x1.62358ap+0f, -0x1.2e83c4p-4f,
     /* node 7163 y */
-    -0x1.a3p-54f, -0x1.ea8304p-1f, 0x1.c379d6p+0f, -0x1.f66a36p-5f,
+    -0x1.546666p-55f, -0x1.eaa674p-1f, 0x1.c385eap+0f, -0x1.f666d2p-5f,
     /* node 7163 z */
-    -0x1p-56f, 0x1.3615fcp-3f, -0x1.0f1ceap-3f, 0x1.6624dep+1f,
+    -0x1.0cccccp-55f, 0x1.352fb8p-3f, -0x1.0e6decp-3f, 0x1.660ce8p+1f,
     /* node 7164 x */
-    0x1.2c3334p-53f, 0x1.28a29ap+1f, -0x1.843fd2p+0f, 0x1.91b064p-4f,
+    0x1.08ccccp-52f, 0x1.28acd2p+1f, -0x1.84712p+0f, 0x1.90e47ap-4f,
     /* node 7164 y */
-    0x1.5p-57f, -0x1.e101e6p-1f, 0x1.9cd0bep+0f, -0x1.1d503ap-3f,
+    0x1.01999ap-55f, -0x1.e13672p-1f, 0x1.9d1416p+0f, -0x1.1d9718p-3f,
     /* node 7164 z */
-    0x1.99999ap-59f, 0x1.7cb928p-3f, -0x1.fa7ef6p-3f, 0x1.503a5ap+1f,
+    -0x1.266666p-55f, 0x1.7c7606p-3f, -0x1.fa4c0ap-3f, 0x1.502a6ap+1f,
     /* node 7165 x */
-    -0x1.ccccccp-59f, 0x1.2ef984p-2f, -0x1.557992p-3f, 0x1.1f2bbep-4f,
+    0x1.19999ap-58f, 0x1.2e8314p-2f, -0x1.56cd76p-3f, 0x1.1b2e02p-4f,
     /* node 7165 y */
-    -0x1.933334p-58f, -0x1.0a0798p-2f, 0x1.fb6e3ap-3f, 0x1.187ccep-4f,
+    0x1.6cccccp-58f, -0x1.09d68ap-2f, 0x1.f8c11ep-3f, 0x1.16431ep-4f,
     /* node 7165 z */
-    -0x1.333334p-58f, -0x1.d43a44p-5f, 0x1.2446fap-3f, 0x1.711a8ap-2f,
+    -0x1.d9999ap-58f, -0x1.d72d48p-5f, 0x1.24297ep-3f, 0x1.712f2cp-2f,
     /* node 7166 x */
-    -0x1.e66666p-58f, 0x1.5d55cep-1f, -0x1.325c16p-2f, 0x1.01f4b2p-2f,
+    0x1.fcccccp-56f, 0x1.5ca88ap-1f, -0x1.32739ap-2f, 0x1.013e6cp-2f,
     /* node 7166 y */
-    0x1.81999ap-55f, -0x1.1f310ap-1f, 0x1.41b256p-1f, 0x1.a510f6p-3f,
+    -0x1.ccccccp-60f, -0x1.1e546ap-1f, 0x1.413fbap-1f, 0x1.a82e38p-3f,
     /* node 7166 z */
-    -0x0p+0f, -0x1.d7a108p-5f, 0x1.d6dfdep-3f, 0x1.0984dap+0f,
+    -0x1.8p-57f, -0x1.d5d93p-5f, 0x1.d574bp-3f, 0x1.0930c4p+0f,
     /* node 7167 x */
-    0x1.49999ap-56f, 0x1.f927c2p-2f, -0x1.af8728p-3f, 0x1.f00e82p-3f,
+    -0x1.1p-56f, 0x1.f9737cp-2f, -0x1.af819p-3f, 0x1.f05e46p-3f,
     /* node 7167 y */
-    -0x1.4cccccp-60f, -0x1.83d8acp-2f, 0x1.7b02c4p-2f, 0x1.52f9c8p-3f,
+    0x1.266666p-59f, -0x1.841ecap-2f, 0x1.7b9aaap-2f, 0x1.53d5e2p-3f,
     /* node 7167 z */
-    -0x1.99999ap-60f, -0x1.eceeaep-5f, 0x1.b8f37p-3f, 0x1.7fbf68p-1f,
+    0x1.99999ap-62f, -0x1.ee7a9ap-5f, 0x1.ba3086p-3f, 0x1.7ff77ap-1f,
     /* node 7168 x */
-    -0x1.833334p-56f, 0x1.137e68p+0f, -0x1.e37bdep-2f, 0x1.7746d6p-2f,
+    -0x1.39999ap-57f, 0x1.139a4p+0f, -0x1.e4608cp-2f, 0x1.774016p-2f,
     /* node 7168 y */
-    -0x1.b9999ap-56f, -0x1.6ac88ep-1f, 0x1.cdf80ap-1f, 0x1.ed64e4p-3f,
+    -0x1.8p-57f, -0x1.6af7b4p-1f, 0x1.ce2d16p-1f, 0x1.ee967p-3f,
     /* node 7168 z */
-    -0x1.333334p-56f, -0x1.82e7b4p-5f, 0x1.c59986p-3f, 0x1.afb926p+0f,
+    -0x1.ccccccp-56f, -0x1.88261ap-5f, 0x1.c4bf6ep-3f, 0x1.af8274p+0f,
     /* node 7169 x */
-    0x1.ecccccp-55f, 0x1.ce6a48p-1f, -0x1.94e2ecp-2f, 0x1.bda118p-2f,
+    -0x1p-57f, 0x1.ce2a6ep-1f, -0x1.94ef3cp-2f, 0x1.bd1de6p-2f,
     /* node 7169 y */
-    -0x1.8p-56f, -0x1.2ea09cp-1f, 0x1.4a242ap-1f, 0x1.d81f4cp-3f,
+    -0x1.7p-56f, -0x1.2e8bc4p-1f, 0x1.4a2c3p-1f, 0x1.d87b38p-3f,
     /* node 7169 z */
-    -0x1.cp-56f, -0x1.190442p-5f, 0x1.cdb462p-3f, 0x1.6c80ep+0f,
+    -0x1.0cccccp-56f, -0x1.1a13cap-5f, 0x1.cee518p-3f, 0x1.6c7e6cp+0f,
     /* node 7170 x */
-    0x1.6p-56f, 0x1.77a2a4p-1f, -0x1.302f54p-2f, 0x1.fa6354p-2f,
+    0x1.4p-56f, 0x1.77f506p-1f, -0x1.306ceep-2f, 0x1.fa9564p-2f,
     /* node 7170 y */
-    -0x1.f33334p-56f, -0x1.c48ef4p-2f, 0x1.acb3cap-2f, 0x1.bf4e58p-3f,
+    -0x1.cp-58f, -0x1.c58902p-2f, 0x1.ae6054p-2f, 0x1.c0e35cp-3f,
     /* node 7170 z */
-    -0x1.666666p-58f, -0x1.bf66bcp-6f, 0x1.b62d28p-3f, 0x1.22d49p+0f,
+    -0x1.666666p-57f, -0x1.bd6e2cp-6f, 0x1.b6caa6p-3f, 0x1.231aecp+0f,
     /* node 7171 x */
-    0x1.166666p-55f, 0x1.9841e4p+0f, -0x1.67ddd8p-1f, 0x1.fab8ccp-2f,
+    0x1.d9999ap-56f, 0x1.988fdep+0f, -0x1.680eeap-1f, 0x1.fabea8p-2f,
     /* node 7171 y */
-    0x1.b9999ap-58f, -0x1.8db7ap-1f, 0x1.41168ep+0f, 0x1.4a7adp-3f,
+    -0x1.9b3334p-56f, -0x1.8d44c2p-1f, 0x1.41280ap+0f, 0x1.4dd12cp-3f,
     /* node 7171 z */
-    -0x1.333334p-55f, 0x1.885f6ep-5f, 0x1.75ae5cp-4f, 0x1.477ad8p+1f,
+    -0x1.99999ap-59f, 0x1.863104p-5f, 0x1.7aba3cp-4f, 0x1.477bc8p+1f,
     /* node 7172 x */
-    0x1.2cccccp-55f, 0x1.4349b2p+0f, -0x1.2989cep-1f, 0x1.25b968p-1f,
+    0x1.3p-55f, 0x1.430cc8p+0f, -0x1.29c6fp-1f, 0x1.2560a2p-1f,
     /* node 7172 y */
-    -0x1.566666p-56f, -0x1.56d56p-1f, 0x1.9e7438p-1f, 0x1.ca4da6p-3f,
+    -0x1.b66666p-56f, -0x1.570376p-1f, 0x1.9e6f98p-1f, 0x1.ca0a48p-3f,
     /* node 7172 z */
-    0x1.99999ap-60f, 0x1.76113p-7f, 0x1.2dbb0cp-3f, 0x1.f9277cp+0f,
+    0x1.666666p-57f, 0x1.6b1a3ep-7f, 0x1.2ed72ep-3f, 0x1.f901f4p+0f,
     /* node 7173 x */
-    -0x1.4cccccp-57f, 0x1.1728f6p+0f, -0x1.0255c8p-1f, 0x1.51f22cp-1f,
+    -0x1.a66666p-57f, 0x1.16f882p+0f, -0x1.028808p-1f, 0x1.51486ep-1f,
     /* node 7173 y */
-    -0x1.2p-56f, -0x1.1669ecp-1f, 0x1.20c008p-1f, 0x1.f1e09ap-3f,
+    -0x1.4cccccp-58f, -0x1.16dec6p-1f, 0x1.214c4ap-1f, 0x1.f1795ep-3f,
     /* node 7173 z */
-    -0x1.b33334p-56f, 0x1.a228cep-7f, 0x1.4242dap-3f, 0x1.a43474p+0f,
+    -0x1.666666p-57f, 0x1.7d96fcp-7f, 0x1.436d6ap-3f, 0x1.a3f8fp+0f,
     /* node 7174 x */
-    0x1.0cccccp-56f, 0x1.dc6f8ap-1f, -0x1.9a7f3ep-2f, 0x1.7aa016p-1f,
+    0x1.133334p-56f, 0x1.dc5396p-1f, -0x1.9a5e62p-2f, 0x1.7a923ep-1f,
     /* node 7174 y */
-    -0x1.6cccccp-57f, -0x1.ae4358p-2f, 0x1.87ac0ep-2f, 0x1.03b85ap-2f,
+    -0x1.a66666p-58f, -0x1.ae2548p-2f, 0x1.87af84p-2f, 0x1.046ff2p-2f,
     /* node 7174 z */
-    -0x1.b33334p-57f, 0x1.58cca6p-6f, 0x1.334f0cp-3f, 0x1.5aa9f8p+0f,
+    0x1.333334p-58f, 0x1.51746cp-6f, 0x1.347ap-3f, 0x1.5a9522p+0f,
     /* node 7175 x */
-    -0x1.ccccccp-58f, 0x1.12e50ep+1f, -0x1.063224p+0f, 0x1.1632c2p-1f,
+    0x1.e66666p-54f, 0x1.1332aap+1f, -0x1.06bb66p+0f, 0x1.1651e8p-1f,
     /* node 7175 y */
-    -0x1.19999ap-54f, -0x1.b57478p-1f, 0x1.b32914p+0f, -0x1.ccac1ap-4f,
+    -0x1.333334p-56f, -0x1.b647ap-1f, 0x1.b3137ep+0f, -0x1.d21eb6p-4f,
     /* node 7175 z */
-    -0x1.19999ap-54f, 0x1.fd7f56p-4f, -0x1.8f7b46p-3f, 0x1.97ff0ap+1f,
+    -0x0p+0f, 0x1.fe8a2ep-4f, -0x1.8fcff2p-3f, 0x1.97d524p+1f,
     /* node 7176 x */
-    0x1.4e6666p-54f, 0x1.ab50d8p+0f, -0x1.b66546p-1f, 0x1.591828p-1f,
+    0x1.4cccccp-56f, 0x1.ab23bap+0f, -0x1.b69ac4p-1f, 0x1.58c8d2p-1f,
     /* node 7176 y */
-    -0x1.666666p-61f, -0x1.7d1e6ap-1f, 0x1.028d84p+0f, 0x1.308e28p-5f,
+    0x1.9cp-57f, -0x1.7d688cp-1f, 0x1.0293c2p+0f, 0x1.3438bp-5f,
     /* node 7176 z */
-    -0x1.b33334p-56f, 0x1.8c545ap-4f, -0x1.eb77fcp-5f, 0x1.45ab34p+1f,
+    -0x1.ccccccp-57f, 0x1.89d048p-4f, -0x1.e7539p-5f, 0x1.458e2cp+1f,
     /* node 7177 x */
-    0x1.4p-56f, 0x1.61942p+0f, -0x1.6bf4ap-1f, 0x1.84619ep-1f,
+    0x1.01999ap-54f, 0x1.61c55cp+0f, -0x1.6c1e34p-1f, 0x1.84df66p-1f,
     /* node 7177 y */
-    -0x1.dcccccp-57f, -0x1.3bf452p-1f, 0x1.5c21d8p-1f, 0x1.47e8e6p-3f,
+    -0x1.c66666p-56f, -0x1.3ba65p-1f, 0x1.5b7aa2p-1f, 0x1.47ea6ep-3f,
     /* node 7177 z */
-    -0x1.333334p-57f, 0x1.f9458cp-5f, 0x1.60f48p-5f, 0x1.01f63p+1f,
+    0x1.ccccccp-57f, 0x1.0007f2p-4f, 0x1.651e66p-5f, 0x1.02038p+1f,
     /* node 7178 x */
-    0x1.6cccccp-54f, 0x1.3f393ap+0f, -0x1.419396p-1f, 0x1.b6bd24p-1f,
+    -0x1p-56f, 0x1.3f0146p+0f, -0x1.41c9f8p-1f, 0x1.b611dcp-1f,
     /* node 7178 y */
-    -0x1.6p-57f, -0x1.ff8dbap-2f, 0x1.fafc8cp-2f, 0x1.b7be4p-3f,
+    -0x1p-56f, -0x1.002948p-1f, 0x1.fbe2c6p-2f, 0x1.b62504p-3f,
     /* node 7178 z */
-    0x1.333334p-58f, 0x1.10094cp-4f, 0x1.1b5814p-4f, 0x1.bb1626p+0f,
+    -0x1.99999ap-56f, 0x1.0fb5cp-4f, 0x1.1a57cp-4f, 0x1.baf384p+0f,
     /* node 7180 x */
-    -0x1.8cccccp-57f, 0x1.187a34p+1f, -0x1.5a0312p+0f, 0x1.ea2p-2f,
+    0x1.5b3334p-54f, 0x1.18872ep+1f, -0x1.5a278ep+0f, 0x1.e9f874p-2f,
     /* node 7180 y */
-    -0x1.ap-56f, -0x1.c23cbp-1f, 0x1.8f1b12p+0f, -0x1.101a2cp-2f,
+    -0x1.89999ap-54f, -0x1.c2a29cp-1f, 0x1.8f3684p+0f, -0x1.1075f6p-2f,
     /* node 7180 z */
-    0x1.99999ap-56f, 0x1.375f2p-3f, -0x1.76ef4p-2f, 0x1.6419d4p+1f,
+    0x1.99999ap-60f, 0x1.36f136p-3f, -0x1.76b26p-2f, 0x1.6410a8p+1f,
     /* node 7181 x */
-    -0x1.8cccccp-57f, 0x1.03e04p+1f, -0x1.3fef36p+0f, 0x1.5c38dep-1f,
+    -0x1.233334p-54f, 0x1.03c90cp+1f, -0x1.3fee18p+0f, 0x1.5bca26p-1f,
     /* node 7181 y */
-    -0x1.e1999ap-55f, -0x1.9e96p-1f, 0x1.3966cap+0f, -0x1.830f1ap-3f,
+    -0x1.09999ap-54f, -0x1.9ef604p-1f, 0x1.399e08p+0f, -0x1.82f58ep-3f,
     /* node 7181 z */
-    0x1.333334p-55f, 0x1.3c7d6cp-3f, -0x1.3e4c82p-2f, 0x1.5723e8p+1f,
+    -0x1.8p-55f, 0x1.3bdb2p-3f, -0x1.3dfc08p-2f, 0x1.571f3cp+1f,
     /* node 7182 x */
-    -0x1.99999ap-58f, 0x1.cc25aep+0f, -0x1.1105d2p+0f, 0x1.afb2e6p-1f,
+    -0x1.333334p-56f, 0x1.cc3e28p+0f, -0x1.11404p+0f, 0x1.af470ep-1f,
     /* node 7182 y */
-    0x1.566666p-59f, -0x1.5e9278p-1f, 0x1.bddb9p-1f, -0x1.d798bep-7f,
+    -0x1.d3ccccp-56f, -0x1.5eda88p-1f, 0x1.be0b12p-1f, -0x1.d2292ap-7f,
     /* node 7182 z */
-    0x1.99999ap-58f, 0x1.2239b4p-3f, -0x1.6be9e4p-3f, 0x1.2ff8a2p+1f,
+    0x1.333334p-57f, 0x1.20e91ap-3f, -0x1.6bb40ap-3f, 0x1.2fd498p+1f,
     /* node 7183 x */
-    0x1.ccccccp-55f, 0x1.90864ap+0f, -0x1.c948cap-1f, 0x1.e44752p-1f,
+    0x1.e66666p-57f, 0x1.90652p+0f, -0x1.c965b2p-1f, 0x1.e3ccfcp-1f,
     /* node 7183 y */
-    0x1.433334p-57f, -0x1.19450cp-1f, 0x1.35caf6p-1f, 0x1.007a3cp-3f,
+    -0x1.1b3334p-56f, -0x1.19fe62p-1f, 0x1.368428p-1f, 0x1.fec95ep-4f,
     /* node 7183 z */
-    0x1p-57f, 0x1.dced3ap-4f, -0x1.07d6cp-4f, 0x1.0130d4p+1f,
+    0x1.333334p-58f, 0x1.d9a4cp-4f, -0x1.06287p-4f, 0x1.010e7ap+1f,
     /* node 7184 x */
-    -0x1.8cccccp-56f, 0x1.6d9518p+0f, -0x1.8f77eep-1f, 0x1.06291ap+0f,
+    0x1.b33334p-57f, 0x1.6d8a6p+0f, -0x1.8fceaap-1f, 0x1.060226p+0f,
     /* node 7184 y */
-    0x1.1p-56f, -0x1.ac8388p-2f, 0x1.b8da6p-2f, 0x1.d423e4p-3f,
+    -0x1.533334p-56f, -0x1.ad48d4p-2f, 0x1.b9c19ap-2f, 0x1.d3a20cp-3f,
     /* node 7184 z */
-    -0x1.99999ap-60f, 0x1.e7f14ep-4f, -0x1.587b74p-6f, 0x1.c45cp+0f,
+    -0x1.99999ap-56f, 0x1.e5cb94p-4f, -0x1.4f035ap-6f, 0x1.c43486p+0f,
     /* node 7186 x */
-    0x1.ae6666p-54f, 0x1.292052p+1f, -0x1.96be38p+0f, 0x1.befb88p-2f,
+    0x1.1cccccp-53f, 0x1.292c56p+1f, -0x1.970b5ep+0f, 0x1.be9b5cp-2f,
     /* node 7186 y */
-    -0x1.fcccccp-55f, -0x1.bf6ea6p-1f, 0x1.692ca4p+0f, -0x1.903864p-3f,
+    -0x1.633334p-56f, -0x1.bfbf0ap-1f, 0x1.696454p+0f, -0x1.901f08p-3f,
     /* node 7186 z */
-    -0x1.333334p-55f, 0x1.930052p-3f, -0x1.645108p-2f, 0x1.46dbbep+1f,
+    -0x1p-57f, 0x1.9223fep-3f, -0x1.643586p-2f, 0x1.46c84p+1f,
     /* node 7187 x */
-    0x1.533334p-55f, 0x1.1e0cccp+1f, -0x1.86f38ep+0f, 0x1.408b88p-1f,
+    0x1.733334p-57f, 0x1.1e0d9cp+1f, -0x1.8715a2p+0f, 0x1.404a24p-1f,
     /* node 7187 y */
-    -0x1.a66666p-58f, -0x1.a3cbc2p-1f, 0x1.43b55ep+0f, -0x1.8ca2fp-3f,
+    0x1.e66666p-57f, -0x1.a41ab6p-1f, 0x1.43d62cp+0f, -0x1.8c8bd8p-3f,
     /* node 7187 z */
-    -0x0p+0f, 0x1.8046f8p-3f, -0x1.6e5fdap-2f, 0x1.444936p+1f,
+    -0x1.8cccccp-55f, 0x1.7f7546p-3f, -0x1.6e0742p-2f, 0x1.443b3ep+1f,
     /* node 7188 x */
-    0x1p-56f, 0x1.0d8f6cp+1f, -0x1.6b06ecp+0f, 0x1.94b99ep-1f,
+    0x1.333334p-59f, 0x1.0d91f2p+1f, -0x1.6b2e5p+0f, 0x1.948c9cp-1f,
     /* node 7188 y */
-    -0x1.4cp-55f, -0x1.765d2ap-1f, 0x1.0a3984p+0f, -0x1.029922p-3f,
+    -0x1.b33334p-56f, -0x1.76be78p-1f, 0x1.0a674ap+0f, -0x1.02bd1ap-3f,
     /* node 7188 z */
-    0x1.99999ap-57f, 0x1.7ae14ep-3f, -0x1.47f542p-2f, 0x1.37fe86p+1f,
+    -0x1.0cccccp-55f, 0x1.7a1728p-3f, -0x1.479826p-2f, 0x1.37f0f6p+1f,
     /* node 7189 x */
-    0x1.133334p-55f, 0x1.f19a88p+0f, -0x1.43c324p+0f, 0x1.f004d8p-1f,
+    -0x1.233334p-53f, 0x1.f1b15cp+0f, -0x1.43f0d6p+0f, 0x1.efc7d8p-1f,
     /* node 7189 y */
-    -0x1.86999ap-58f, -0x1.32ab1ap-1f, 0x1.86e758p-1f, 0x1.9c7766p-9f,
+    -0x1.bc999ap-57f, -0x1.329cccp-1f, 0x1.86ecc8p-1f, 0x1.ed1b5cp-9f,
     /* node 7189 z */
-    0x1.333334p-57f, 0x1.775d6p-3f, -0x1.e0256ep-3f, 0x1.1d74d4p+1f,
+    0x1.99999ap-56f, 0x1.770c1ap-3f, -0x1.df4114p-3f, 0x1.1d768cp+1f,
     /* node 7190 x */
-    0x1.066666p-54f, 0x1.c2293ep+0f, -0x1.1710f8p+0f, 0x1.16ae0cp+0f,
+    0x1.666666p-54f, 0x1.c27b6cp+0f, -0x1.174304p+0f, 0x1.16e98ep+0f,
     /* node 7190 y */
-    0x1.933334p-58f, -0x1.dda288p-2f, 0x1.16e15p-1f, 0x1.140ec2p-3f,
+    -0x1.0cccccp-55f, -0x1.dcb26p-2f, 0x1.16027cp-1f, 0x1.154022p-3f,
     /* node 7190 z */
-    -0x1p-57f, 0x1.672914p-3f, -0x1.379decp-3f, 0x1.fd1088p+0f,
+    0x1.99999ap-60f, 0x1.689a68p-3f, -0x1.37c174p-3f, 0x1.fd131cp+0f,
     /* node 7221 x */
-    0x1.8cccccp-55f, 0x1.9bf7a6p+0f, -0x1.afd0c8p-1f, -0x1.bb1046p-1f,
+    0x1.1cccccp-54f, 0x1.9c1eb2p+0f, -0x1.b02a42p-1f, -0x1.bb72a8p-1f,
     /* node 7221 y */
-    -0x1.5b3334p-55f, -0x1.6b1e6p-1f, 0x1.643e08p-1f, -0x1.714b6cp-2f,
+    0x1.acccccp-57f, -0x1.6b7dfcp-1f, 0x1.648fcap-1f, -0x1.70663cp-2f,
     /* node 7221 z */
-    -0x1.ccccccp-57f, 0x1.c47d5p-4f, -0x1.2c8cbap-2f, 0x1.d4389p+0f,
+    -0x1.333334p-58f, 0x1.c07f82p-4f, -0x1.2c82b8p-2f, 0x1.d467acp+0f,
     /* node 7222 x */
-    -0x1.8cccccp-55f, 0x1.c89498p+0f, -0x1.03b4dcp+0f, -0x1.c0c9e4p-1f,
+    0x1p-55f, 0x1.c8bb5ap+0f, -0x1.03dca2p+0f, -0x1.c12cd2p-1f,
     /* node 7222 y */
-    -0x1.b33334p-56f, -0x1.632eacp-1f, 0x1.61414ep-1f, -0x1.46975cp-2f,
+    -0x1.eb3334p-55f, -0x1.62f3aep-1f, 0x1.612bbcp-1f, -0x1.47050cp-2f,
     /* node 7222 z */
-    -0x1p-57f, 0x1.1c3172p-3f, -0x1.168b14p-2f, 0x1.d9a29ep+0f,
+    0x1.99999ap-57f, 0x1.1cad9ap-3f, -0x1.16aecap-2f, 0x1.d970bep+0f,
     /* node 7223 x */
-    0x1.666666p-56f, 0x1.bbc208p+0f, -0x1.ec00a6p-1f, -0x1.a9302ap-1f,
+    0x1.b66666p-54f, 0x1.bc2606p+0f, -0x1.ecb158p-1f, -0x1.aa1954p-1f,
     /* node 7223 y */
-    0x1.b33334p-58f, -0x1.8e1ddp-1f, 0x1.92ec7ap-1f, -0x1.54b87p-2f,
+    -0x1.64ccccp-55f, -0x1.8dffacp-1f, 0x1.931864p-1f, -0x1.550eacp-2f,
     /* node 7223 z */
-    -0x1.8p-56f, 0x1.09ae8ap-3f, -0x1.1de944p-2f, 0x1.fdd366p+0f,
+    -0x1.266666p-55f, 0x1.0a242ep-3f, -0x1.1e1344p-2f, 0x1.fd8514p+0f,
     /* node 7225 x */
-    0x1.8p-54f, 0x1.e64096p+0f, -0x1.20a2bap+0f, -0x1.95f91ap-1f,
+    0x1.ecccccp-54f, 0x1.e62e7p+0f, -0x1.20d09cp+0f, -0x1.95a688p-1f,
     /* node 7225 y */
-    -0x1.f33334p-55f, -0x1.80d172p-1f, 0x1.918c38p-1f, -0x1.21b1b4p-2f,
+    -0x1.8cccccp-58f, -0x1.80c3e2p-1f, 0x1.9199dep-1f, -0x1.21cffap-2f,
     /* node 7225 z */
-    0x1.8p-56f, 0x1.4e0a0ep-3f, -0x1.09a554p-2f, 0x1.fee17ap+0f,
+    -0x1.99999ap-56f, 0x1.4da82ap-3f, -0x1.09b5b2p-2f, 0x1.fec238p+0f,
     /* node 7226 x */
-    0x1.89999ap-54f, 0x1.e3a14p+0f, -0x1.1cdf5ap+0f, -0x1.7614ecp-1f,
+    0x1.b1999ap-54f, 0x1.e3aa22p+0f, -0x1.1d22a4p+0f, -0x1.762ad2p-1f,
     /* node 7226 y */
-    -0x1.ccccccp-58f, -0x1.986406p-1f, 0x1.b6ae74p-1f, -0x1.0955ap-2f,
+    -0x1.333334p-59f, -0x1.986c96p-1f, 0x1.b6cd7p-1f, -0x1.09160cp-2f,
     /* node 7226 z */
-    0x1.666666p-57f, 0x1.36bc48p-3f, -0x1.fbcd9p-3f, 0x1.0cd8fap+1f,
+    0x1.99999ap-60f, 0x1.37cf8cp-3f, -0x1.fc14bcp-3f, 0x1.0cb3dep+1f,
     /* node 7229 x */
-    0x1.28ccccp-53f, 0x1.0e239ep+1f, -0x1.585d12p+0f, -0x1.4bf1bcp-1f,
+    -0x1.733334p-55f, 0x1.0e2b2cp+1f, -0x1.588042p+0f, -0x1.4c2188p-1f,
     /* node 7229 y */
-    -0x1.59999ap-58f, -0x1.88681p-1f, 0x1.bcee84p-1f, -0x1.9e233ep-3f,
+    0x1.333334p-60f, -0x1.8832eep-1f, 0x1.bccbp-1f, -0x1.9df014p-3f,
     /* node 7229 z */
-    -0x1.8p-56f, 0x1.875ec4p-3f, -0x1.e1289ap-3f, 0x1.0aa206p+1f,
+    0x1p-56f, 0x1.86989cp-3f, -0x1.e0bb9p-3f, 0x1.0a8b9cp+1f,
     /* node 7230 x */
-    0x1.8cccccp-55f, 0x1.10df32p+1f, -0x1.5c77dap+0f, -0x1.201faep-1f,
+    0x1.61999ap-54f, 0x1.10f15p+1f, -0x1.5ca11ap+0f, -0x1.20424cp-1f,
     /* node 7230 y */
-    0x1.2p-58f, -0x1.a532bcp-1f, 0x1.fb6966p-1f, -0x1.48fe4p-3f,
+    -0x1.2e6666p-56f, -0x1.a53ap-1f, 0x1.fb8576p-1f, -0x1.48f5aep-3f,
     /* node 7230 z */
-    -0x1.4cccccp-56f, 0x1.6a06f6p-3f, -0x1.a48436p-3f, 0x1.1b88f6p+1f,
+    0x1.666666p-57f, 0x1.69f2dp-3f, -0x1.a46b64p-3f, 0x1.1b72p+1f,
     /* node 7234 x */
-    -0x1.4b3334p-54f, 0x1.2ec8cep+1f, -0x1.9fbe9ep+0f, -0x1.e5832ap-2f,
+    -0x1.1e6666p-54f, 0x1.2ed6bep+1f, -0x1.a00e9ap+0f, -0x1.e5c1f8p-2f,
     /* node 7234 y */
-    -0x1.5e6666p-55f, -0x1.a1c5dcp-1f, 0x1.00b5f4p+0f, -0x1.549cd6p-3f,
+    -0x1.39999ap-58f, -0x1.a1ee56p-1f, 0x1.00c26cp+0f, -0x1.544af2p-3f,
     /* node 7234 z */
-    0x1.333334p-55f, 0x1.040b78p-2f, -0x1.05759ep-2f, 0x1.188688p+1f,
+    -0x0p+0f, 0x1.034564p-2f, -0x1.04a0aep-2f, 0x1.18865cp+1f,
     /* node 7235 x */
-    0x1.273334p-54f, 0x1.29b062p+1f, -0x1.951a3ep+0f, -0x1.713e52p-2f,
+    0x1.033334p-54f, 0x1.29c33cp+1f, -0x1.9566fcp+0f, -0x1.71d5ap-2f,
     /* node 7235 y */
-    -0x1.e33334p-57f, -0x1.c3308cp-1f, 0x1.27cd98p+0f, -0x1.fb75e2p-4f,
+    0x1.e33334p-55f, -0x1.c335f8p-1f, 0x1.27c94ap+0f, -0x1.fb2d5ap-4f,
     /* node 7235 z */
-    -0x1.99999ap-57f, 0x1.cebc7ap-3f, -0x1.b98698p-3f, 0x1.2a318cp+1f,
+    -0x1.8p-56f, 0x1.cd2994p-3f, -0x1.b7e67cp-3f, 0x1.2a2682p+1f,
     /* node 7241 x */
-    0x1.8p-60f, 0x1.3b5ceap+1f, -0x1.bc4664p+0f, -0x1.65f68p-3f,
+    -0x1.d73334p-55f, 0x1.3b6944p+1f, -0x1.bc7bfcp+0f, -0x1.66a3d2p-3f,
     /* node 7241 y */
-    0x1.3p-57f, -0x1.d4b526p-1f, 0x1.408b7p+0f, -0x1.0d114p-3f,
+    0x1.ccccccp-56f, -0x1.d4ccap-1f, 0x1.4095a2p+0f, -0x1.0c787ap-3f,
     /* node 7241 z */
-    -0x1.333334p-57f, 0x1.13d622p-2f, -0x1.103b8ap-2f, 0x1.33da88p+1f,
+    0x1.333334p-57f, 0x1.134f0ap-2f, -0x1.0ff14cp-2f, 0x1.33c5b2p+1f,
     /* node 7248 x */
-    -0x1.20ccccp-56f, 0x1.442a4p+1f, -0x1.d1f522p+0f, -0x1.cb0ab4p-7f,
+    -0x1.043334p-55f, 0x1.443852p+1f, -0x1.d22bb4p+0f, -0x1.dc607p-7f,
     /* node 7248 y */
-    -0x1.3ap-54f, -0x1.d6e3fap-1f, 0x1.4b06dp+0f, -0x1.18326ep-3f,
+    -0x1.74ccccp-56f, -0x1.d7048cp-1f, 0x1.4b17f8p+0f, -0x1.17bd66p-3f,
     /* node 7248 z */
-    -0x1.733334p-55f, 0x1.2004dap-2f, -0x1.2c209ep-2f, 0x1.39d822p+1f,
+    0x1.ccccccp-57f, 0x1.1f685p-2f, -0x1.2bc8eap-2f, 0x1.39c8dep+1f,
     /* node 7442 x */
-    -0x1.333334p-54f, 0x1.33ac9cp+1f, -0x1.c1d946p+0f, 0x1.b5e9a6p-1f,
+    0x1p-53f, 0x1.33b406p+1f, -0x1.c20a24p+0f, 0x1.b5a034p-1f,
     /* node 7442 y */
-    -0x1.f86666p-55f, -0x1.4a3438p-1f, 0x1.dcfaf4p-1f, -0x1.d728bap-5f,
+    -0x1.113334p-55f, -0x1.4a7faap-1f, 0x1.dd4ap-1f, -0x1.d7ee92p-5f,
     /* node 7442 z */
-    0x1.0cccccp-55f, 0x1.0fcd7ep-2f, -0x1.688da8p-2f, 0x1.265114p+1f,
+    -0x1.4cccccp-55f, 0x1.0f4d62p-2f, -0x1.6824cp-2f, 0x1.2640e2p+1f,
     /* node 7443 x */
-    -0x1.3p-55f, 0x1.3c88bap+1f, -0x1.d0b77ap+0f, 0x1.5a09dp-1f,
+    0x1.0cccccp-53f, 0x1.3c8f76p+1f, -0x1.d0f4bp+0f, 0x1.59c508p-1f,
     /* node 7443 y */
-    -0x1.e5999ap-55f, -0x1.7d9388p-1f, 0x1.196744p+0f, -0x1.bf2598p-4f,
+    -0x1.e66666p-58f, -0x1.7ddd3cp-1f, 0x1.19852cp+0f, -0x1.bf529p-4f,
     /* node 7443 z */
-    0x1.99999ap-59f, 0x1.0f9a2cp-2f, -0x1.7520a4p-2f, 0x1.32af02p+1f,
+    -0x1.99999ap-58f, 0x1.0f249ep-2f, -0x1.74c834p-2f, 0x1.32a1c4p+1f,
     /* node 7444 x */
-    0x1.1b3334p-54f, 0x1.42e448p+1f, -0x1.da528ap+0f, 0x1.03bd26p-1f,
+    -0x1.19999ap-57f, 0x1.42e8fep+1f, -0x1.da8502p+0f, 0x1.03685cp-1f,
     /* node 7444 y */
-    -0x1.633334p-56f, -0x1.9d3ad2p-1f, 0x1.331446p+0f, -0x1.0682a8p-3f,
+    -0x1.b33334p-57f, -0x1.9d7424p-1f, 0x1.332d1cp+0f, -0x1.0697dp-3f,
     /* node 7444 z */
-    -0x1.99999ap-59f, 0x1.159e52p-2f, -0x1.6f88p-2f, 0x1.37ee8ap+1f,
+    0x1.333334p-58f, 0x1.14f5f6p-2f, -0x1.6ed772p-2f, 0x1.37d8cap+1f,
     /* node 7481 x */
-    0x1.106666p-54f, 0x1.13fc4cp+0f, -0x1.1da2fep-2f, -0x1.855c2cp-3f,
+    -0x1.726666p-54f, 0x1.142d32p+0f, -0x1.1e4ad8p-2f, -0x1.870e8p-3f,
     /* node 7481 y */
-    -0x1.4p-60f, 0x1.232fa4p-5f, 0x1.d185a2p-3f, -0x1.29bfbep-4f,
+    0x1.0cccccp-60f, 0x1.22d70cp-5f, 0x1.d11aap-3f, -0x1.2c7bc6p-4f,
     /* node 7481 z */
-    -0x1.99999ap-60f, 0x1.f1dfc2p-6f, -0x1.3c9954p-3f, 0x1.b6ffc2p-1f,
+    -0x1.99999ap-58f, 0x1.e7dc1ep-6f, -0x1.3c16e6p-3f, 0x1.b6f2bap-1f,
     /* node 7482 x */
-    0x1.75999ap-55f, 0x1.b7fdd6p-1f, -0x1.20a63p-3f, -0x1.252a28p-3f,
+    0x1.6a6666p-55f, 0x1.b9297ap-1f, -0x1.1de876p-3f, -0x1.270876p-3f,
     /* node 7482 y */
-    -0x1.4cccccp-59f, 0x1.85a336p-4f, 0x1.840238p-3f, -0x1.49ef64p-4f,
+    0x1.066666p-59f, 0x1.878c2cp-4f, 0x1.8a450ep-3f, -0x1.48d27p-4f,
     /* node 7482 z */
-    -0x1.19999ap-58f, 0x1.1daa1ep-6f, -0x1.043c3p-3f, 0x1.74998ep-1f,
+    0x1.333334p-59f, 0x1.0d3a18p-6f, -0x1.01fc46p-3f, 0x1.75a8a8p-1f,
     /* node 7545 x */
-    0x1.4cccccp-57f, 0x1.3b94bap+0f, -0x1.12a62p-1f, -0x1.7577bp-1f,
+    0x1.2cccccp-56f, 0x1.3bb1fap+0f, -0x1.130d98p-1f, -0x1.75bd62p-1f,
     /* node 7545 y */
-    -0x1.333334p-56f, -0x1.400328p-1f, 0x1.33f2f6p-1f, -0x1.9798c8p-2f,
+    -0x1.533334p-55f, -0x1.3f899ep-1f, 0x1.33b0b2p-1f, -0x1.98b3a2p-2f,
     /* node 7545 z */
-    0x1.ccccccp-57f, 0x1.72085ep-4f, -0x1.5929c4p-2f, 0x1.8833cap+0f,
+    0x1.99999ap-60f, 0x1.701762p-4f, -0x1.5887cp-2f, 0x1.880a5ap+0f,
     /* node 7546 x */
-    -0x1.59999ap-57f, 0x1.1adf68p+0f, -0x1.cd5234p-2f, -0x1.3d368p-1f,
+    -0x1.266666p-56f, 0x1.1ad582p+0f, -0x1.cdc77ep-2f, -0x1.3d2e36p-1f,
     /* node 7546 y */
-    -0x1.0cccccp-55f, -0x1.402896p-1f, 0x1.379cb2p-1f, -0x1.991228p-2f,
+    -0x1.49999ap-55f, -0x1.406fcp-1f, 0x1.37dedcp-1f, -0x1.987214p-2f,
     /* node 7546 z */
-    0x1.666666p-58f, 0x1.a0b6c8p-4f, -0x1.736d86p-2f, 0x1.6e107cp+0f,
+    -0x1p-58f, 0x1.a188f8p-4f, -0x1.7332f4p-2f, 0x1.6dfa5p+0f,
     /* node 7547 x */
-    -0x1.b9999ap-57f, 0x1.3c6f38p-1f, -0x1.9c590cp-3f, -0x1.43c6c8p-2f,
+    -0x1.8cccccp-58f, 0x1.3cb1fap-1f, -0x1.9beadap-3f, -0x1.44c526p-2f,
     /* node 7547 y */
-    -0x1.d66666p-56f, -0x1.c1b4bp-2f, 0x1.cff348p-2f, -0x1.43f952p-2f,
+    -0x1.b9999ap-57f, -0x1.c22dc6p-2f, 0x1.d0ddb4p-2f, -0x1.441b8cp-2f,
     /* node 7547 z */
-    0x1p-58f, 0x1.548244p-4f, -0x1.41e10ap-2f, 0x1.b2d408p-1f,
+    -0x1.666666p-57f, 0x1.54089p-4f, -0x1.41909cp-2f, 0x1.b2e29ep-1f,
     /* node 7561 x */
-    0x1.d6ccccp-53f, 0x1.300626p+1f, -0x1.a207b8p+0f, 0x1.08c822p-2f,
+    0x1p-54f, 0x1.300d28p+1f, -0x1.a21e3ep+0f, 0x1.085836p-2f,
     /* node 7561 y */
-    0x1p-61f, -0x1.d1b864p-1f, 0x1.789f84p+0f, -0x1.573e86p-3f,
+    -0x1.dp-56f, -0x1.d1e0f2p-1f, 0x1.7888c8p+0f, -0x1.56a6fap-3f,
     /* node 7561 z */
-    -0x1.99999ap-60f, 0x1.b7ef64p-3f, -0x1.4208cp-2f, 0x1.468c6ap+1f,
+    -0x1.733334p-55f, 0x1.b6c02p-3f, -0x1.41ff08p-2f, 0x1.467cf2p+1f,
     /* node 7562 x */
-    0x1.d26666p-54f, 0x1.252e9p+1f, -0x1.6d5b7cp+0f, 0x1.070bccp-2f,
+    0x1.373334p-54f, 0x1.25399ep+1f, -0x1.6d906ep+0f, 0x1.06a76cp-2f,
     /* node 7562 y */
-    -0x1.ep-55f, -0x1.d44f68p-1f, 0x1.b87e2cp+0f, -0x1.af2558p-3f,
+    0x1.8cccccp-58f, -0x1.d4a30cp-1f, 0x1.b8a36ep+0f, -0x1.aec52p-3f,
     /* node 7562 z */
-    -0x1.99999ap-57f, 0x1.3aae78p-3f, -0x1.36ae56p-2f, 0x1.5fcbbep+1f,
+    -0x1.99999ap-58f, 0x1.39d6dap-3f, -0x1.367f72p-2f, 0x1.5fbbecp+1f,
     /* node 7563 x */
-    0x1.99999ap-59f, 0x1.3a471ep+1f, -0x1.1fed3ep+0f, 0x1.38e956p-2f,
+    0x1.c33334p-56f, 0x1.3a5748p+1f, -0x1.20126ap+0f, 0x1.38675p-2f,
     /* node 7563 y */
-    -0x1.51999ap-55f, -0x1.d3ff38p-1f, 0x1.1f5fdap+1f, -0x1.93649ap-3f,
+    0x1.59999ap-57f, -0x1.d44a7ap-1f, 0x1.1f7004p+1f, -0x1.931e6p-3f,
     /* node 7563 z */
-    -0x1p-56f, 0x1.7b166ap-4f, -0x1.e578d2p-3f, 0x1.cb75aap+1f,
+    -0x1.666666p-55f, 0x1.7a3ae4p-4f, -0x1.e5aadap-3f, 0x1.cb56bp+1f,
     /* node 7564 x */
-    0x1.366666p-55f, 0x1.1cf61cp+1f, -0x1.b89bc2p-1f, 0x1.50efb2p-2f,
+    0x1.093334p-53f, 0x1.1cf832p+1f, -0x1.b906eap-1f, 0x1.508e56p-2f,
     /* node 7564 y */
-    -0x1.dcccccp-56f, -0x1.ca373ap-1f, 0x1.17c112p+1f, -0x1.ffe27ep-5f,
+    -0x1.b06666p-55f, -0x1.ca8f86p-1f, 0x1.17e89ap+1f, -0x1.f8d2ep-5f,
     /* node 7564 z */
-    -0x1.333334p-56f, 0x1.4e208ep-5f, -0x1.ac751ep-4f, 0x1.bc0664p+1f,
+    -0x1.333334p-57f, 0x1.4b7a16p-5f, -0x1.a829cp-4f, 0x1.bbea3cp+1f,
     /* node 7565 x */
-    0x1.5p-54f, 0x1.6517bep+0f, -0x1.25deecp-1f, 0x1.12652ap-2f,
+    0x1.e66666p-59f, 0x1.64dca6p+0f, -0x1.2778eap-1f, 0x1.10da3ep-2f,
     /* node 7565 y */
-    -0x1.84ccccp-55f, -0x1.a341eap-1f, 0x1.66d512p+0f, 0x1.31fe3ep-3f,
+    0x1.f33334p-58f, -0x1.a3972ep-1f, 0x1.6623f2p+0f, 0x1.311912p-3f,
     /* node 7565 z */
-    0x1.99999ap-60f, -0x1.010bbap-6f, 0x1.38f476p-3f, 0x1.1c8cdcp+1f,
+    -0x1.333334p-57f, -0x1.0b527ep-6f, 0x1.34369cp-3f, 0x1.1c681p+1f,
     /* node 7566 x */
-    0x1p-55f, 0x1.b68ac2p-1f, -0x1.88ec98p-2f, 0x1.aa12fp-3f,
+    0x1.b33334p-57f, 0x1.b66c7ap-1f, -0x1.88e29cp-2f, 0x1.a9f8aep-3f,
     /* node 7566 y */
-    0x1.08p-55f, -0x1.5bfe76p-1f, 0x1.b73fap-1f, 0x1.2f3e14p-3f,
+    -0x1.2d999ap-55f, -0x1.5bf8ccp-1f, 0x1.b78396p-1f, 0x1.2f93f4p-3f,
     /* node 7566 z */
-    -0x1.99999ap-59f, -0x1.cc32ccp-5f, 0x1.a4643ap-3f, 0x1.42a37ap+0f,
+    -0x1.333334p-57f, -0x1.cd52b4p-5f, 0x1.a5e37cp-3f, 0x1.42be02p+0f,
     /* node 7567 x */
-    -0x1.e66666p-59f, 0x1.d2faaep-2f, -0x1.034988p-2f, 0x1.8a69d4p-4f,
+    0x1.0b3334p-56f, 0x1.d320fp-2f, -0x1.027972p-2f, 0x1.8aede6p-4f,
     /* node 7567 y */
-    -0x1.09999ap-57f, -0x1.afd186p-2f, 0x1.d4295ap-2f, 0x1.68c696p-4f,
+    -0x1.99999ap-57f, -0x1.b02d1cp-2f, 0x1.d7332cp-2f, 0x1.6b1652p-4f,
     /* node 7567 z */
-    0x1p-59f, -0x1.eee64ep-5f, 0x1.2524f8p-3f, 0x1.15e8fap-1f,
+    -0x1.333334p-60f, -0x1.f18fcp-5f, 0x1.2656f2p-3f, 0x1.1664fp-1f,
     /* node 7584 x */
-    0x1.01999ap-53f, 0x1.717ae6p+0f, -0x1.6588bap-1f, -0x1.b5c75p-1f,
+    0x1.4cccccp-57f, 0x1.7182d6p+0f, -0x1.65ea84p-1f, -0x1.b5ce5ep-1f,
     /* node 7584 y */
-    -0x1.f33334p-57f, -0x1.33cf26p-1f, 0x1.26b55ap-1f, -0x1.7e6ce8p-2f,
+    -0x1.8e6666p-55f, -0x1.345108p-1f, 0x1.272724p-1f, -0x1.7d7b1cp-2f,
     /* node 7584 z */
-    -0x1.8p-56f, 0x1.703534p-4f, -0x1.36320ep-2f, 0x1.9acbbcp+0f,
+    -0x1.99999ap-60f, 0x1.6e33dap-4f, -0x1.35c938p-2f, 0x1.9acb5p+0f,
     /* node 7585 x */
-    0x1.b33334p-57f, 0x1.6f50cep+0f, -0x1.62c2fp-1f, -0x1.a35bdap-1f,
+    0x1.a66666p-56f, 0x1.6f5144p+0f, -0x1.63200cp-1f, -0x1.a36a36p-1f,
     /* node 7585 y */
-    0x1.19999ap-58f, -0x1.64a188p-1f, 0x1.597dc8p-1f, -0x1.8c6752p-2f,
+    0x1p-57f, -0x1.64e84ep-1f, 0x1.59d64ep-1f, -0x1.8c198p-2f,
     /* node 7585 z */
-    -0x1.99999ap-59f, 0x1.86a86ap-4f, -0x1.40496ep-2f, 0x1.bcbd06p+0f,
+    0x1.666666p-57f, 0x1.872b96p-4f, -0x1.3fb566p-2f, 0x1.bc6e9p+0f,
     /* node 7586 x */
-    0x1.b9999ap-54f, 0x1.927368p+0f, -0x1.9b6e48p-1f, -0x1.a88202p-1f,
+    0x1.59999ap-55f, 0x1.92aecp+0f, -0x1.9c1644p-1f, -0x1.a8ff9ap-1f,
     /* node 7586 y */
-    -0x1.d33334p-55f, -0x1.8bb766p-1f, 0x1.8b5d8ep-1f, -0x1.7f80aap-2f,
+    -0x1.b9999ap-56f, -0x1.8ba3b6p-1f, 0x1.8b895ap-1f, -0x1.7f8b56p-2f,
     /* node 7586 z */
-    0x1.ccccccp-57f, 0x1.b52f12p-4f, -0x1.390cb4p-2f, 0x1.eb9c0cp+0f,
+    -0x1p-57f, 0x1.b45404p-4f, -0x1.38bd64p-2f, 0x1.eb7e22p+0f,
     /* node 7587 x */
-    -0x1.99999ap-58f, 0x1.b443d4p+0f, -0x1.d7a17p-1f, -0x1.891b0cp-1f,
+    0x1.533334p-55f, 0x1.b4a976p+0f, -0x1.d84bd2p-1f, -0x1.8a13p-1f,
     /* node 7587 y */
-    -0x1.35999ap-54f, -0x1.a0038ap-1f, 0x1.afc56p-1f, -0x1.475526p-2f,
+    -0x1.fp-56f, -0x1.9fcb7p-1f, 0x1.afe83p-1f, -0x1.47fbc6p-2f,
     /* node 7587 z */
-    -0x1.19999ap-56f, 0x1.d69cc4p-4f, -0x1.200e7ep-2f, 0x1.09cab4p+1f,
+    -0x1.99999ap-60f, 0x1.d40afap-4f, -0x1.1ffc9cp-2f, 0x1.09caa2p+1f,
     /* node 7588 x */
-    -0x1p-55f, 0x1.ec0eb6p+0f, -0x1.1f233p+0f, -0x1.3f3308p-1f,
+    -0x1.c66666p-56f, 0x1.ec584ep+0f, -0x1.1f6788p+0f, -0x1.3fcf2ep-1f,
     /* node 7588 y */
-    -0x1.d66666p-56f, -0x1.ace946p-1f, 0x1.f027aap-1f, -0x1.a6c4dp-3f,
+    -0x1.09999ap-56f, -0x1.acb1f6p-1f, 0x1.f05466p-1f, -0x1.a851e2p-3f,
     /* node 7588 z */
-    -0x1p-57f, 0x1.feaa4cp-4f, -0x1.b528ap-3f, 0x1.20f248p+1f,
+    -0x1p-57f, 0x1.fc2424p-4f, -0x1.b479bep-3f, 0x1.20e7bcp+1f,
     /* node 7589 x */
-    0x1.8p-55f, 0x1.13b568p+1f, -0x1.5b77e4p+0f, -0x1.b3be08p-2f,
+    -0x0p+0f, 0x1.13b8b8p+1f, -0x1.5b9c12p+0f, -0x1.b406bap-2f,
     /* node 7589 y */
-    -0x1.b66666p-55f, -0x1.d132d2p-1f, 0x1.3ab76ep+0f, -0x1.6f0286p-4f,
+    -0x1.a4p-54f, -0x1.d1484ep-1f, 0x1.3ac47ep+0f, -0x1.6e2a82p-4f,
     /* node 7589 z */
-    0x1.19999ap-56f, 0x1.38d8fap-3f, -0x1.2e550ep-3f, 0x1.3a36d6p+1f,
+    -0x1.4cccccp-55f, 0x1.3818a6p-3f, -0x1.2df62p-3f, 0x1.3a2036p+1f,
     /* node 7590 x */
-    0x1.99999ap-55f, 0x1.23a7bcp+1f, -0x1.7d7504p+0f, -0x1.c6c264p-3f,
+    0x1.ab3334p-55f, 0x1.23b988p+1f, -0x1.7dc902p+0f, -0x1.c75c62p-3f,
     /* node 7590 y */
-    -0x1.7cp-56f, -0x1.e1ed62p-1f, 0x1.6a689ep+0f, -0x1.398f5cp-4f,
+    -0x1.7cp-55f, -0x1.e2542p-1f, 0x1.6aae8ap+0f, -0x1.3795bep-4f,
     /* node 7590 z */
-    0x1.e66666p-56f, 0x1.7c9acap-3f, -0x1.527c54p-3f, 0x1.4417b4p+1f,
+    -0x1.4cccccp-55f, 0x1.7c336ep-3f, -0x1.523d34p-3f, 0x1.440b38p+1f,
     /* node 7591 x */
-    0x1.0a7334p-53f, 0x1.2e880ap+1f, -0x1.9a5518p+0f, -0x1.0e10a4p-5f,
+    -0x1.fcp-56f, 0x1.2e7c9ap+1f, -0x1.9a4b78p+0f, -0x1.0fc37ep-5f,
     /* node 7591 y */
-    -0x1.26p-54f, -0x1.e31b8ep-1f, 0x1.72320cp+0f, -0x1.daa3acp-4f,
+    -0x1.0b3334p-53f, -0x1.e2fd12p-1f, 0x1.7215dep+0f, -0x1.dae15cp-4f,
     /* node 7591 z */
-    -0x1.0cccccp-55f, 0x1.c145eep-3f, -0x1.d760cp-3f, 0x1.43bf48p+1f,
+    -0x1.ccccccp-57f, 0x1.befdbcp-3f, -0x1.d41a12p-3f, 0x1.43b932p+1f,
     /* node 7592 x */
-    0x1.e8ccccp-55f, 0x1.36b83cp+1f, -0x1.b0a3cep+0f, 0x1.dab356p-4f,
+    0x1.c73334p-54f, 0x1.36c2e4p+1f, -0x1.b0db5ep+0f, 0x1.d8a2bcp-4f,
     /* node 7592 y */
-    -0x1.15999ap-54f, -0x1.dc4318p-1f, 0x1.6b5eaap+0f, -0x1.1a8b14p-3f,
+    0x1.6e6666p-56f, -0x1.dc87b6p-1f, 0x1.6b7cf2p+0f, -0x1.19d01cp-3f,
     /* node 7592 z */
-    0x1p-56f, 0x1.e6c672p-3f, -0x1.2173cp-2f, 0x1.423024p+1f,
+    -0x1.99999ap-57f, 0x1.e5c042p-3f, -0x1.21a274p-2f, 0x1.4220f4p+1f,
     /* node 7665 x */
-    0x1.27999ap-53f, 0x1.4b2da2p+1f, -0x1.e7ee82p+0f, 0x1.2feb98p-2f,
+    0x1.b8ccccp-54f, 0x1.4b387p+1f, -0x1.e8255cp+0f, 0x1.2f715ep-2f,
     /* node 7665 y */
-    -0x1.5e6666p-56f, -0x1.b3a356p-1f, 0x1.3d5882p+0f, -0x1.0b37p-3f,
+    -0x1.a33334p-56f, -0x1.b3d63ap-1f, 0x1.3d7818p+0f, -0x1.0b2d64p-3f,
     /* node 7665 z */
-    -0x1.8cccccp-55f, 0x1.28a28cp-2f, -0x1.58c91cp-2f, 0x1.38c662p+1f,
+    -0x1.0cccccp-55f, 0x1.28088cp-2f, -0x1.58a06cp-2f, 0x1.38b3aep+1f,
     /* node 7688 x */
-    0x1.4cccccp-58f, 0x1.4a39dap+1f, -0x1.e1459ap+0f, 0x1.0540dcp-3f,
+    0x1.b2p-53f, 0x1.4a441p+1f, -0x1.e164ap+0f, 0x1.041134p-3f,
     /* node 7688 y */
-    -0x1.566666p-54f, -0x1.c978e6p-1f, 0x1.44e852p+0f, -0x1.15db4cp-3f,
+    -0x1.b9999ap-57f, -0x1.c99a52p-1f, 0x1.44f10cp+0f, -0x1.15e614p-3f,
     /* node 7688 z */
-    0x1.99999ap-58f, 0x1.2a5a64p-2f, -0x1.441deep-2f, 0x1.3a953ep+1f,
+    0x1.19999ap-55f, 0x1.29b15ap-2f, -0x1.43f7c2p-2f, 0x1.3a8a58p+1f,
     /* node 7705 x */
-    0x1.066666p-53f, 0x1.37998cp+1f, -0x1.bcd6e4p+0f, 0x1.99021ap-2f,
+    0x1.2p-54f, 0x1.379ffp+1f, -0x1.bcf2f4p+0f, 0x1.987ef4p-2f,
     /* node 7705 y */
-    -0x1.186666p-54f, -0x1.bc408ep-1f, 0x1.57a236p+0f, -0x1.4975dep-3f,
+    0x1.573334p-55f, -0x1.bc8128p-1f, 0x1.57c492p+0f, -0x1.494d7p-3f,
     /* node 7705 z */
-    -0x1.733334p-55f, 0x1.e688p-3f, -0x1.5fa7c2p-2f, 0x1.404d5ep+1f,
+    -0x1.4cccccp-55f, 0x1.e596f4p-3f, -0x1.5f5b3p-2f, 0x1.4038b8p+1f,
     /* node 7706 x */
-    -0x1p-56f, 0x1.31bf56p+1f, -0x1.b590e4p+0f, 0x1.262bbep-1f,
+    0x1.2cccccp-55f, 0x1.31c91p+1f, -0x1.b5bd3ep+0f, 0x1.25c274p-1f,
     /* node 7706 y */
-    -0x1.0ep-54f, -0x1.a4a45p-1f, 0x1.3f26ep+0f, -0x1.417484p-3f,
+    -0x1.133334p-57f, -0x1.a4f682p-1f, 0x1.3f625ap+0f, -0x1.41f5d2p-3f,
     /* node 7706 z */
-    -0x1p-56f, 0x1.d541f2p-3f, -0x1.6f775cp-2f, 0x1.3df05p+1f,
+    0x1p-56f, 0x1.d411fp-3f, -0x1.6f3f06p-2f, 0x1.3de30cp+1f,
     /* node 7707 x */
-    0x1.e9999ap-55f, 0x1.28223ap+1f, -0x1.a66e8ap+0f, 0x1.7b2bd2p-1f,
+    0x1.933334p-54f, 0x1.28266cp+1f, -0x1.a6a62cp+0f, 0x1.7ae504p-1f,
     /* node 7707 y */
-    -0x1.09999ap-57f, -0x1.80df5p-1f, 0x1.1b8058p+0f, -0x1.088414p-3f,
+    -0x1.4cccccp-55f, -0x1.813092p-1f, 0x1.1b9fd2p+0f, -0x1.08cbb2p-3f,
     /* node 7707 z */
-    -0x1.ccccccp-56f, 0x1.cb992ep-3f, -0x1.67e8ap-2f, 0x1.360472p+1f,
+    0x1.99999ap-56f, 0x1.caa2c2p-3f, -0x1.67ac72p-2f, 0x1.35f60ap+1f,
     /* node 7708 x */
-    0x1.466666p-55f, 0x1.19decp+1f, -0x1.8aa11ep+0f, 0x1.d5213ap-1f,
+    0x1.2p-54f, 0x1.19db56p+1f, -0x1.8ac8d8p+0f, 0x1.d4c774p-1f,
     /* node 7708 y */
-    0x1.666666p-58f, -0x1.468154p-1f, 0x1.c5f7c2p-1f, -0x1.a0fc66p-5f,
+    0x1.dp-56f, -0x1.46e24ap-1f, 0x1.c6614cp-1f, -0x1.a0db4p-5f,
     /* node 7708 z */
-    -0x1.333334p-57f, 0x1.cc9a14p-3f, -0x1.4469c4p-2f, 0x1.25f2f4p+1f,
+    0x1.99999ap-59f, 0x1.cb880ap-3f, -0x1.43fda4p-2f, 0x1.25d7bep+1f,
     /* node 7709 x */
-    0x1.733334p-55f, 0x1.07707ap+1f, -0x1.6587cep+0f, 0x1.133da2p+0f,
+    -0x1.49999ap-54f, 0x1.075f54p+1f, -0x1.65a3eep+0f, 0x1.12f68p+0f,
     /* node 7709 y */
-    -0x1.466666p-55f, -0x1.01d276p-1f, 0x1.51787cp-1f, 0x1.d0c15ep-5f,
+    -0x1.4f3334p-55f, -0x1.022c2cp-1f, 0x1.519d22p-1f, 0x1.ce3caep-5f,
     /* node 7709 z */
-    0x1.99999ap-60f, 0x1.c92e2cp-3f, -0x1.0a9e7ep-2f, 0x1.0f2abap+1f,
+    0x1.19999ap-56f, 0x1.c7ed5p-3f, -0x1.0a2894p-2f, 0x1.0f1086p+1f,
     /* node 7716 x */
-    0x1.a66666p-55f, 0x1.4eeed8p+0f, -0x1.2f43dep-1f, -0x1.8f4382p-1f,
+    -0x1.19999ap-56f, 0x1.4f53b2p+0f, -0x1.2f5242p-1f, -0x1.902a5ap-1f,
     /* node 7716 y */
-    -0x1.166666p-55f, -0x1.334414p-1f, 0x1.29019cp-1f, -0x1.9e68ecp-2f,
+    -0x1.333334p-57f, -0x1.325798p-1f, 0x1.28b85cp-1f, -0x1.a0e86cp-2f,
     /* node 7716 z */
-    -0x1.99999ap-58f, 0x1.8a3fd6p-4f, -0x1.4e88d2p-2f, 0x1.8c262ep+0f,
+    -0x1.99999ap-59f, 0x1.8721a6p-4f, -0x1.4e9efcp-2f, 0x1.8c3f66p+0f,
     /* node 7724 x */
-    0x1.8e6666p-54f, 0x1.3b6fb2p+1f, -0x1.c04976p+0f, 0x1.f59544p-3f,
+    0x1.2f999ap-53f, 0x1.3b74a4p+1f, -0x1.c05c2ap+0f, 0x1.f4b7d2p-3f,
     /* node 7724 y */
-    -0x1.9cccccp-57f, -0x1.cba24ep-1f, 0x1.5cc5ecp+0f, -0x1.2d278ep-3f,
+    -0x1.8a6666p-54f, -0x1.cbc8b4p-1f, 0x1.5cca9p+0f, -0x1.2ccb0cp-3f,
     /* node 7724 z */
-    -0x1.99999ap-59f, 0x1.fdeb74p-3f, -0x1.442986p-2f, 0x1.3feee8p+1f,
+    -0x1.4cccccp-55f, 0x1.fd279p-3f, -0x1.43ad5p-2f, 0x1.3fd9a4p+1f,
     /* node 7727 x */
-    0x1.79999ap-56f, 0x1.60b644p-1f, -0x1.eb54f8p-4f, -0x1.7c71cap-3f,
+    0x1.ep-57f, 0x1.60c72ep-1f, -0x1.ebd65ep-4f, -0x1.7bda5p-3f,
     /* node 7727 y */
-    0x1.4cccccp-62f, 0x1.e522d8p-5f, 0x1.1febap-3f, -0x1.4cbedep-5f,
+    0x1.2p-60f, 0x1.dfed98p-5f, 0x1.218efp-3f, -0x1.471476p-5f,
     /* node 7727 z */
-    0x1.99999ap-62f, 0x1.373da6p-10f, -0x1.07b9bcp-3f, 0x1.333f54p-1f,
+    -0x1.99999ap-59f, 0x1.28918ap-10f, -0x1.06c54ep-3f, 0x1.332e6p-1f,
     /* node 7733 x */
-    0x1.9p-56f, 0x1.3bfb1ap-1f, -0x1.dd3b5ap-5f, -0x1.00c24ep-3f,
+    0x1.0cccccp-59f, 0x1.3c0d84p-1f, -0x1.dd6cb6p-5f, -0x1.00f14cp-3f,
     /* node 7733 y */
-    -0x1.ep-59f, 0x1.bf774ap-4f, 0x1.174a98p-3f, -0x1.27a84p-4f,
+    0x1.c9999ap-58f, 0x1.c2a65cp-4f, 0x1.170d98p-3f, -0x1.244d1ep-4f,
     /* node 7733 z */
-    -0x1.ccccccp-59f, 0x1.375c04p-7f, -0x1.c45452p-4f, 0x1.15a306p-1f,
+    -0x1.99999ap-60f, 0x1.216d7cp-7f, -0x1.c24cc2p-4f, 0x1.165fd4p-1f,
     /* node 7745 x */
-    0x1.04ccccp-55f, 0x1.0b167ap+0f, -0x1.ddb5b8p-3f, -0x1.af02a4p-4f,
+    0x1.2cccccp-58f, 0x1.0a904cp+0f, -0x1.ddc6f8p-3f, -0x1.a9f32p-4f,
     /* node 7745 y */
-    0x1.59999ap-60f, 0x1.3c28f8p-4f, 0x1.a4838ap-3f, -0x1.874fe2p-4f,
+    0x1.4cccccp-59f, 0x1.3b4f78p-4f, 0x1.a39facp-3f, -0x1.8296cep-4f,
     /* node 7745 z */
-    -0x0p+0f, 0x1.4bd118p-5f, -0x1.07a922p-3f, 0x1.a43fc2p-1f,
+    -0x1.ccccccp-58f, 0x1.536188p-5f, -0x1.05e444p-3f, 0x1.a3e216p-1f,
     /* node 7757 x */
-    -0x1.366666p-54f, 0x1.1e28c4p+0f, -0x1.1dff4cp-2f, 0x1.d8ac28p-6f,
+    0x1.a9999ap-56f, 0x1.1df8d4p+0f, -0x1.1f44bap-2f, 0x1.d75a64p-6f,
     /* node 7757 y */
-    0x1.4p-58f, 0x1.e5c02ap-4f, 0x1.521f12p-3f, -0x1.87afeap-4f,
+    0x1.2cccccp-57f, 0x1.dc80cep-4f, 0x1.53d066p-3f, -0x1.8d88d2p-4f,
     /* node 7757 z */
-    -0x1.666666p-57f, 0x1.5cbdep-4f, -0x1.689efcp-4f, 0x1.98f39cp-1f,
+    0x1.0cccccp-56f, 0x1.5b094ep-4f, -0x1.6755acp-4f, 0x1.98ae2ep-1f,
     /* node 7761 x */
-    0x1.b4ccccp-54f, 0x1.cb792ep+0f, -0x1.ebbb38p-1f, -0x1.119764p-3f,
+    0x1.71999ap-56f, 0x1.cb7a08p+0f, -0x1.ec0e74p-1f, -0x1.122e86p-3f,
     /* node 7761 y */
-    -0x1.4a3334p-58f, -0x1.9f7cb6p-5f, 0x1.6cd6eep-3f, 0x1.0f145ap-8f,
+    -0x1.0a3334p-58f, -0x1.a00e3ap-5f, 0x1.6ceb8ap-3f, 0x1.09a3dap-8f,
     /* node 7761 z */
-    -0x1.99999ap-61f, 0x1.3ec814p-3f, -0x1.a56d4p-3f, 0x1.261d44p+0f,
+    0x1.99999ap-57f, 0x1.3e97e2p-3f, -0x1.a5104cp-3f, 0x1.260cf8p+0f,
     /* node 7763 x */
-    0x1.886666p-54f, 0x1.a5c7dp+0f, -0x1.952bfap-1f, 0x1.59bfe6p-3f,
+    0x1.c4ccccp-56f, 0x1.a5bbfcp+0f, -0x1.9587c8p-1f, 0x1.58dabap-3f,
     /* node 7763 y */
-    -0x1.ccccccp-63f, 0x1.68fb0cp-4f, 0x1.7725cp-4f, -0x1.2fb0f8p-5f,
+    0x1p-59f, 0x1.685e4ep-4f, 0x1.77ba76p-4f, -0x1.2dbbap-5f,
     /* node 7763 z */
-    -0x1.99999ap-60f, 0x1.4f5b8cp-3f, -0x1.37f076p-3f, 0x1.059a4p+0f,
+    0x1.19999ap-56f, 0x1.4f1b96p-3f, -0x1.378ddep-3f, 0x1.05a582p+0f,
     /* node 7769 x */
-    -0x1.8cccccp-58f, 0x1.7f7a9ap+0f, -0x1.28640ep-1f, -0x1.95e182p-5f,
+    -0x1.9b999ap-55f, 0x1.7f735ap+0f, -0x1.28a872p-1f, -0x1.96983ap-5f,
     /* node 7769 y */
-    -0x1.99999ap-65f, 0x1.df5366p-6f, 0x1.9a7a64p-3f, -0x1.d605fap-5f,
+    -0x1.99999ap-65f, 0x1.de4fa2p-6f, 0x1.9a78eep-3f, -0x1.d6617cp-5f,
     /* node 7769 z */
-    0x1p-58f, 0x1.a55c92p-4f, -0x1.39d82p-3f, 0x1.0a13fcp+0f,
+    0x1.666666p-58f, 0x1.a5ef36p-4f, -0x1.39dacap-3f, 0x1.0a12dap+0f,
 };
 const tfit_model tfit_heart_forward = {
     4u, 1u, 965u, 1u, 11592u,
@@ -6060,8 +6060,8 @@ const tfit_model tfit_heart_forward = {
      0x3e658a09u, 0x3c3b0dbeu, 0x3e12c57bu, 0xbdf82bb2u, 0xbd0ecd48u, 0xbdb33eddu,
      0xbe315cacu, 0xbe315cacu, 0xbe315cacu, 0xbfb065bbu, 0xc0009e2bu, 0x3fdffc71u,
      0xefdea511u, 0xf02256abu, 0x700d5ae8u, 0xc001f357u, 0x3f8b12d0u, 0xbff61a03u,
-     0xdfd37082u, 0xfab9d30cu},
-    0x1a578e75u
+     0xad2c946du, 0xfab9d30cu},
+    0x77d9e30fu
 };
 static const int32_t tfit_heart_forward_q31_coef[14488] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -6071,389 +6071,389 @@ static const int32_t tfit_heart_forward_q31_coef[14488] = {
     0, 0, 447392416,
     5,
     /* node 377 x: shift, then 4 coefficients */
-    35, 0, 524749216, -119132896, -76045296,
+    35, 0, 524582336, -119810400, -75612032,
     /* node 377 y: shift, then 4 coefficients */
-    37, 0, 136579344, 430016800, -179160560,
+    37, 0, 136296672, 428494080, -180307392,
     /* node 377 z: shift, then 4 coefficients */
-    36, 0, 30711650, -145845696, 843461888,
+    36, 0, 30863588, -146269648, 842204224,
     /* node 378 x: shift, then 4 coefficients */
-    35, 0, 524113536, -120975848, -92506120,
+    35, 0, 523945120, -121576576, -91815168,
     /* node 378 y: shift, then 4 coefficients */
-    37, 0, 134204784, 444881728, -175938656,
+    37, 0, 131382912, 446603200, -172992512,
     /* node 378 z: shift, then 4 coefficients */
-    36, 0, 27113478, -158165200, 850038848,
+    36, 0, 27109590, -157689296, 849004096,
     /* node 379 x: shift, then 4 coefficients */
-    35, 0, 577181440, -141644672, -84558328,
+    35, 0, 576981696, -141901568, -84566272,
     /* node 379 y: shift, then 4 coefficients */
-    37, 0, 97885752, 483529568, -195115072,
+    37, 0, 99424472, 479968512, -196329600,
     /* node 379 z: shift, then 4 coefficients */
-    35, 0, 18409032, -77202880, 455276832,
+    35, 0, 18254414, -77184120, 454738016,
     /* node 380 x: shift, then 4 coefficients */
-    35, 0, 487706816, -93676528, -85384752,
+    35, 0, 488460960, -93066592, -85335376,
     /* node 380 y: shift, then 4 coefficients */
-    37, 0, 169953408, 431385824, -177427088,
+    37, 0, 168774016, 438189440, -174711184,
     /* node 380 z: shift, then 4 coefficients */
-    36, 0, 18293242, -142520880, 816680512,
+    36, 0, 17881644, -141881696, 818336704,
     /* node 381 x: shift, then 4 coefficients */
-    35, 0, 495248736, -90958576, -72190600,
+    35, 0, 496795744, -90375296, -73160224,
     /* node 381 y: shift, then 4 coefficients */
-    37, 0, 191681440, 427717248, -175320096,
+    37, 0, 194274752, 431033536, -179087088,
     /* node 381 z: shift, then 4 coefficients */
-    36, 0, 21550668, -135467328, 817624640,
+    36, 0, 20145430, -136481296, 818960512,
     /* node 382 x: shift, then 4 coefficients */
-    35, 0, 522199968, -114377376, -61795000,
+    35, 0, 521975328, -114570120, -61599776,
     /* node 382 y: shift, then 4 coefficients */
-    37, 0, 142940784, 436684544, -188503568,
+    37, 0, 143754304, 434963904, -190635712,
     /* node 382 z: shift, then 4 coefficients */
-    36, 0, 35767640, -137964768, 834355776,
+    36, 0, 36210612, -138754368, 833602048,
     /* node 383 x: shift, then 4 coefficients */
-    35, 0, 570180928, -134284352, -69121040,
+    35, 0, 569549184, -134363744, -68714592,
     /* node 383 y: shift, then 4 coefficients */
-    37, 0, 122315104, 465957408, -195305808,
+    37, 0, 123063480, 463686656, -194306960,
     /* node 383 z: shift, then 4 coefficients */
-    35, 0, 19908988, -72378168, 451184992,
+    35, 0, 20112508, -72087288, 450646432,
     /* node 387 x: shift, then 4 coefficients */
-    34, 0, 536800832, -312795072, -10652828,
+    34, 0, 536838432, -312981504, -10738539,
     /* node 387 y: shift, then 4 coefficients */
-    37, 0, -162063008, 446557920, -8180852,
+    37, 0, -162048960, 446518656, -8535500,
     /* node 387 z: shift, then 4 coefficients */
-    35, 0, 109660528, -120747448, 667822144,
+    35, 0, 109550400, -120638336, 667697344,
     /* node 396 x: shift, then 4 coefficients */
-    36, 0, 820081472, -96328104, -129165768,
+    36, 0, 821623680, -95738960, -130482680,
     /* node 396 y: shift, then 4 coefficients */
-    37, 0, 260521152, 354268896, -163217520,
+    37, 0, 262799248, 357750816, -165187952,
     /* node 396 z: shift, then 4 coefficients */
-    36, 0, 16299849, -127589800, 690448064,
+    36, 0, 15994320, -126493136, 691126144,
     /* node 397 x: shift, then 4 coefficients */
-    36, 0, 769613056, -82424344, -103435312,
+    36, 0, 770341824, -81981896, -104313104,
     /* node 397 y: shift, then 4 coefficients */
-    37, 0, 263946352, 296726944, -181469104,
+    37, 0, 266075840, 299326144, -182605744,
     /* node 397 z: shift, then 4 coefficients */
-    36, 0, 23786688, -106608896, 643549568,
+    36, 0, 23817518, -106625736, 643485568,
     /* node 398 x: shift, then 4 coefficients */
-    36, 0, 724828736, -66252332, -128331232,
+    36, 0, 724141056, -66543792, -128403984,
     /* node 398 y: shift, then 4 coefficients */
-    37, 0, 262634736, 317499744, -178767872,
+    37, 0, 265032416, 317953216, -180123008,
     /* node 398 z: shift, then 4 coefficients */
-    36, 0, 15449654, -118028904, 620538304,
+    36, 0, 16111178, -118050432, 619446400,
     /* node 399 x: shift, then 4 coefficients */
-    35, 0, 448055136, -63916776, -51151816,
+    35, 0, 449977184, -63416724, -51923956,
     /* node 399 y: shift, then 4 coefficients */
-    37, 0, 253956512, 385443008, -168284064,
+    37, 0, 253705664, 390475552, -170239440,
     /* node 399 z: shift, then 4 coefficients */
-    36, 0, 27940328, -113686168, 731828608,
+    36, 0, 26051780, -114114760, 734052352,
     /* node 400 x: shift, then 4 coefficients */
-    35, 0, 462132032, -68181912, -68614952,
+    35, 0, 464224320, -67427320, -69728400,
     /* node 400 y: shift, then 4 coefficients */
-    37, 0, 217957152, 428567584, -174434688,
+    37, 0, 219462096, 434778976, -176589088,
     /* node 400 z: shift, then 4 coefficients */
-    36, 0, 20228500, -131347072, 774326144,
+    36, 0, 18498046, -130671144, 777053056,
     /* node 401 x: shift, then 4 coefficients */
-    35, 0, 417347136, -58851756, -74196936,
+    35, 0, 417593408, -58653548, -74137120,
     /* node 401 y: shift, then 4 coefficients */
-    37, 0, 217843056, 351272256, -161447936,
+    37, 0, 219111904, 354027360, -161218608,
     /* node 401 z: shift, then 4 coefficients */
-    36, 0, 15519805, -135561328, 716747584,
+    36, 0, 15109777, -134089344, 716878080,
     /* node 402 x: shift, then 4 coefficients */
-    36, 0, 771796352, -86650664, -153317296,
+    36, 0, 770064192, -87358304, -151121632,
     /* node 402 y: shift, then 4 coefficients */
-    37, 0, 219730160, 362922368, -160514256,
+    37, 0, 222660992, 361161696, -158297440,
     /* node 402 z: shift, then 4 coefficients */
-    36, 0, 10017473, -129886384, 673869120,
+    36, 0, 11169543, -128871152, 671399744,
     /* node 403 x: shift, then 4 coefficients */
-    35, 0, 491878624, -88064456, -57426008,
+    35, 0, 493875200, -87216752, -58641064,
     /* node 403 y: shift, then 4 coefficients */
-    37, 0, 200823152, 432809984, -192325872,
+    37, 0, 203523872, 435555200, -198043600,
     /* node 403 z: shift, then 4 coefficients */
-    36, 0, 29234766, -131217384, 798109312,
+    36, 0, 27231248, -133370240, 799463040,
     /* node 404 x: shift, then 4 coefficients */
-    35, 0, 485324640, -86345048, -42518368,
+    35, 0, 486560160, -85523000, -43427040,
     /* node 404 y: shift, then 4 coefficients */
-    37, 0, 208638656, 402563712, -204799984,
+    37, 0, 212933232, 403741152, -209786480,
     /* node 404 z: shift, then 4 coefficients */
-    36, 0, 36441276, -119693832, 773986496,
+    36, 0, 34824360, -121674648, 774521152,
     /* node 405 x: shift, then 4 coefficients */
-    35, 0, 524272832, -106523632, -47531592,
+    35, 0, 523808224, -106571920, -47061020,
     /* node 405 y: shift, then 4 coefficients */
-    37, 0, 203179440, 418883008, -202039680,
+    37, 0, 202523088, 419895232, -202400816,
     /* node 405 z: shift, then 4 coefficients */
-    36, 0, 43714056, -133346512, 821469056,
+    36, 0, 44133604, -134064584, 821866880,
     /* node 406 x: shift, then 4 coefficients */
-    35, 0, 523122080, -107863664, -25763332,
+    35, 0, 522842496, -108073328, -25581696,
     /* node 406 y: shift, then 4 coefficients */
-    37, 0, 204952736, 397308768, -181821312,
+    37, 0, 203074064, 398456128, -182219472,
     /* node 406 z: shift, then 4 coefficients */
-    36, 0, 57025308, -112965968, 809552256,
+    36, 0, 56685656, -113225552, 810927552,
     /* node 407 x: shift, then 4 coefficients */
-    35, 0, 572515968, -130372976, -39665680,
+    35, 0, 571804416, -130474272, -39474552,
     /* node 407 y: shift, then 4 coefficients */
-    37, 0, 149863648, 452271200, -193749520,
+    37, 0, 149164800, 451300768, -192880352,
     /* node 407 z: shift, then 4 coefficients */
-    36, 0, 49271700, -126589960, 892809856,
+    36, 0, 49768852, -125726232, 892510592,
     /* node 408 x: shift, then 4 coefficients */
-    35, 0, 584214848, -137239440, -13867601,
+    35, 0, 583688384, -137659904, -13522877,
     /* node 408 y: shift, then 4 coefficients */
-    37, 0, 227320368, 377214304, -172191360,
+    37, 0, 227478656, 374772512, -170416208,
     /* node 408 z: shift, then 4 coefficients */
-    36, 0, 64147128, -112739656, 862547200,
+    36, 0, 65466464, -112165872, 861773440,
     /* node 409 x: shift, then 4 coefficients */
-    35, 0, 469923648, -80658968, -22322036,
+    35, 0, 470325856, -80424344, -22799278,
     /* node 409 y: shift, then 4 coefficients */
-    37, 0, 249919952, 328753248, -201644128,
+    37, 0, 250171136, 329754080, -204265504,
     /* node 409 z: shift, then 4 coefficients */
-    36, 0, 53031192, -90830848, 725350080,
+    36, 0, 52256896, -91491320, 725950144,
     /* node 410 x: shift, then 4 coefficients */
-    35, 0, 524892224, -109868968, -5945930,
+    35, 0, 524657600, -109954328, -5732583,
     /* node 410 y: shift, then 4 coefficients */
-    37, 0, 243741264, 349563008, -207112624,
+    37, 0, 245737488, 347754272, -206460944,
     /* node 410 z: shift, then 4 coefficients */
-    36, 0, 65274116, -95470928, 795489984,
+    36, 0, 65506520, -95557736, 795771072,
     /* node 430 x: shift, then 4 coefficients */
-    36, 0, 650226176, -44177664, -104420824,
+    36, 0, 649334400, -43965920, -104206928,
     /* node 430 y: shift, then 4 coefficients */
-    37, 0, 270159808, 225640880, -186321056,
+    37, 0, 274152896, 226012496, -186559328,
     /* node 430 z: shift, then 4 coefficients */
-    36, 0, 24265664, -90116728, 544391488,
+    36, 0, 24291184, -91155944, 543163072,
     /* node 431 x: shift, then 4 coefficients */
-    36, 0, 575916288, -11814817, -67088832,
+    36, 0, 572687936, -12374439, -67608728,
     /* node 431 y: shift, then 4 coefficients */
-    37, 0, 301774048, 186199696, -143826992,
+    37, 0, 306449824, 178755216, -150825088,
     /* node 431 z: shift, then 4 coefficients */
-    36, 0, 24754972, -66415984, 465676032,
+    36, 0, 26599320, -68375824, 464099360,
     /* node 432 x: shift, then 4 coefficients */
-    36, 0, 498483648, -3949700, -94777832,
+    36, 0, 500037664, -1994223, -94904168,
     /* node 432 y: shift, then 4 coefficients */
-    37, 0, 269738688, 122648536, -168603968,
+    37, 0, 270329024, 128993400, -165658400,
     /* node 432 z: shift, then 4 coefficients */
-    37, 0, 33206312, -164192688, 870101824,
+    37, 0, 32634202, -161645536, 873926272,
     /* node 433 x: shift, then 4 coefficients */
-    36, 0, 726904256, -66501180, -67186064,
+    36, 0, 727016128, -66285052, -67257776,
     /* node 433 y: shift, then 4 coefficients */
-    37, 0, 288250304, 248375520, -177046720,
+    37, 0, 291777888, 246939152, -178480768,
     /* node 433 z: shift, then 4 coefficients */
-    36, 0, 33421090, -84445280, 586954624,
+    36, 0, 32487580, -84061696, 586896064,
     /* node 434 x: shift, then 4 coefficients */
-    36, 0, 590291648, -39548688, -116453456,
+    36, 0, 591180864, -38780964, -117628944,
     /* node 434 y: shift, then 4 coefficients */
-    37, 0, 249383840, 221893632, -153639040,
+    37, 0, 249090160, 224417072, -150531872,
     /* node 434 z: shift, then 4 coefficients */
-    36, 0, 11687788, -102223712, 522977952,
+    36, 0, 10451500, -101472392, 525275488,
     /* node 435 x: shift, then 4 coefficients */
-    36, 0, 651961216, -51589876, -36884472,
+    36, 0, 652852992, -50619484, -36694392,
     /* node 435 y: shift, then 4 coefficients */
-    37, 0, 292725920, 158070496, -203182944,
+    37, 0, 290674112, 167536208, -200546768,
     /* node 435 z: shift, then 4 coefficients */
-    36, 0, 41415236, -71123688, 503756576,
+    36, 0, 40920912, -70092048, 504124128,
     /* node 436 x: shift, then 4 coefficients */
-    36, 0, 815105984, -109818552, -38548368,
+    36, 0, 814195072, -109567224, -37931052,
     /* node 436 y: shift, then 4 coefficients */
-    37, 0, 270692704, 262198832, -184402176,
+    37, 0, 270560000, 265464896, -185426560,
     /* node 436 z: shift, then 4 coefficients */
-    36, 0, 40017040, -70889568, 640029760,
+    36, 0, 39701488, -70823048, 640576320,
     /* node 437 x: shift, then 4 coefficients */
-    36, 0, 766786112, -89439168, 12638066,
+    36, 0, 766707136, -89140464, 12847351,
     /* node 437 y: shift, then 4 coefficients */
-    37, 0, 296523264, 221850144, -191720288,
+    37, 0, 297572032, 222423904, -189562032,
     /* node 437 z: shift, then 4 coefficients */
-    36, 0, 52290112, -53986632, 574910656,
+    36, 0, 51761908, -54793332, 574685184,
     /* node 438 x: shift, then 4 coefficients */
-    37, 0, 1009794560, 14405576, -41354884,
+    37, 0, 1013742528, 12496034, -40763696,
     /* node 438 y: shift, then 4 coefficients */
-    37, 0, 303801216, 94532528, -157165952,
+    37, 0, 299170880, 103349256, -153468624,
     /* node 438 z: shift, then 4 coefficients */
-    37, 0, 67931432, -97111960, 764028352,
+    37, 0, 66735792, -95835536, 767433152,
     /* node 439 x: shift, then 4 coefficients */
-    36, 0, 600542976, -33007084, 11136773,
+    36, 0, 600212224, -33065450, 10968313,
     /* node 439 y: shift, then 4 coefficients */
-    37, 0, 313844224, 131549744, -156213536,
+    37, 0, 314312256, 132562680, -157429408,
     /* node 439 z: shift, then 4 coefficients */
-    37, 0, 78247336, -91295672, 873363648,
+    37, 0, 79928520, -92048704, 872995776,
     /* node 440 x: shift, then 4 coefficients */
-    35, 0, 455338400, -77676592, -4176648,
+    35, 0, 455515328, -77758224, -4009692,
     /* node 440 y: shift, then 4 coefficients */
-    37, 0, 295933888, 272567552, -195383360,
+    37, 0, 296564512, 271629088, -194468896,
     /* node 440 z: shift, then 4 coefficients */
-    36, 0, 57684544, -71978112, 671944320,
+    36, 0, 58170384, -72761360, 672142080,
     /* node 441 x: shift, then 4 coefficients */
-    36, 0, 847699456, -140017968, 40233688,
+    36, 0, 846636928, -139958000, 40136428,
     /* node 441 y: shift, then 4 coefficients */
-    37, 0, 322060800, 205219600, -191854768,
+    37, 0, 320461152, 205596368, -191797952,
     /* node 441 z: shift, then 4 coefficients */
-    36, 0, 70196152, -57356568, 611132480,
+    36, 0, 70418248, -57067880, 610838464,
     /* node 442 x: shift, then 4 coefficients */
-    35, 0, 515796928, -109041200, 18384264,
+    35, 0, 515546208, -109590424, 18644114,
     /* node 442 y: shift, then 4 coefficients */
-    37, 0, 298756256, 288815776, -182763024,
+    37, 0, 294358784, 290383968, -184337488,
     /* node 442 z: shift, then 4 coefficients */
-    36, 0, 77038008, -73991976, 745378304,
+    36, 0, 76793312, -73877768, 745317120,
     /* node 443 x: shift, then 4 coefficients */
-    35, 0, 490391520, -107990256, 43322216,
+    35, 0, 490431296, -107741080, 43542380,
     /* node 443 y: shift, then 4 coefficients */
-    37, 0, 328706496, 205397568, -185987824,
+    37, 0, 333765696, 202452976, -182531760,
     /* node 443 z: shift, then 4 coefficients */
-    36, 0, 86694624, -55740380, 686560064,
+    36, 0, 86452600, -55954824, 685938880,
     /* node 444 x: shift, then 4 coefficients */
-    36, 0, 764231488, -107131384, 79852776,
+    36, 0, 765046528, -107675672, 80033456,
     /* node 444 y: shift, then 4 coefficients */
-    37, 0, 347694464, 137999680, -168740288,
+    37, 0, 347152736, 139753216, -167891952,
     /* node 444 z: shift, then 4 coefficients */
-    36, 0, 68187344, -35174040, 530663200,
+    36, 0, 68433656, -35430436, 531057536,
     /* node 445 x: shift, then 4 coefficients */
-    35, 0, 450640992, -99735968, 64598004,
+    35, 0, 450677184, -100113768, 64340920,
     /* node 445 y: shift, then 4 coefficients */
-    37, 0, 378295552, 115612520, -168174144,
+    37, 0, 372921536, 118330024, -171554928,
     /* node 445 z: shift, then 4 coefficients */
-    36, 0, 88583760, -40572060, 603554496,
+    36, 0, 88719000, -40934676, 604086592,
     /* node 446 x: shift, then 4 coefficients */
-    35, 0, 569687424, -163298736, 67414152,
+    35, 0, 568994048, -163537440, 66668520,
     /* node 446 y: shift, then 4 coefficients */
-    37, 0, 358403296, 160701520, -176997792,
+    37, 0, 352106784, 162791696, -182973440,
     /* node 446 z: shift, then 4 coefficients */
-    36, 0, 108929208, -66780048, 751228096,
+    36, 0, 108476168, -66692220, 751250496,
     /* node 447 x: shift, then 4 coefficients */
-    35, 0, 587359936, -158240496, 38326800,
+    35, 0, 587525440, -158166160, 38274396,
     /* node 447 y: shift, then 4 coefficients */
-    37, 0, 289741408, 267385424, -182856208,
+    37, 0, 291618400, 266123104, -180495200,
     /* node 447 z: shift, then 4 coefficients */
-    36, 0, 95778672, -80830280, 823529472,
+    36, 0, 95355128, -80912896, 823482880,
     /* node 448 x: shift, then 4 coefficients */
-    34, 0, 391984224, -176782544, 61759264,
+    34, 0, 391947328, -176922304, 61685120,
     /* node 448 y: shift, then 4 coefficients */
-    38, 0, 720255808, 87834600, -151142512,
+    38, 0, 719055296, 88090040, -152842064,
     /* node 448 z: shift, then 4 coefficients */
-    35, 0, 87009464, -64193936, 467635008,
+    35, 0, 86886624, -64101296, 467564064,
     /* node 449 x: shift, then 4 coefficients */
-    34, 0, 446864800, -224959504, 61835396,
+    34, 0, 446850496, -225148416, 61674064,
     /* node 449 y: shift, then 4 coefficients */
-    38, 0, 514919840, 219312432, -92559384,
+    38, 0, 514718784, 218582352, -93411944,
     /* node 449 z: shift, then 4 coefficients */
-    35, 0, 98760440, -83471408, 536444768,
+    35, 0, 98696736, -83414768, 536395968,
     /* node 451 x: shift, then 4 coefficients */
-    34, 0, 392510624, -166499968, 47019268,
+    34, 0, 392460640, -166609872, 46907728,
     /* node 451 y: shift, then 4 coefficients */
-    37, 0, 287743040, 147071568, -106032800,
+    37, 0, 287330496, 146813472, -106074144,
     /* node 451 z: shift, then 4 coefficients */
-    35, 0, 77230648, -63529232, 491956736,
+    35, 0, 77155920, -63394716, 491916576,
     /* node 452 x: shift, then 4 coefficients */
-    35, 0, 663617408, -246250016, 93113072,
+    35, 0, 663841408, -246627008, 93088920,
     /* node 452 y: shift, then 4 coefficients */
-    37, 0, 341030816, 109761640, -141272096,
+    37, 0, 341425568, 110159720, -141308304,
     /* node 452 z: shift, then 4 coefficients */
-    36, 0, 131996776, -92813368, 842288320,
+    36, 0, 132228896, -92874600, 842450304,
     /* node 1003 x: shift, then 4 coefficients */
-    34, 0, 326251072, -139568688, -198917344,
+    34, 0, 326495872, -139780752, -199137888,
     /* node 1003 y: shift, then 4 coefficients */
-    35, 0, -306246112, 294281408, -217987248,
+    35, 0, -307358144, 295306656, -216846912,
     /* node 1003 z: shift, then 4 coefficients */
-    35, 0, 51603956, -180401984, 780543552,
+    35, 0, 50292172, -180121856, 781995200,
     /* node 1004 x: shift, then 4 coefficients */
-    34, 0, 347949920, -155495984, -206154944,
+    34, 0, 348030400, -155424160, -206340000,
     /* node 1004 y: shift, then 4 coefficients */
-    35, 0, -342192864, 330142336, -216126672,
+    35, 0, -342065728, 330201344, -216065232,
     /* node 1004 z: shift, then 4 coefficients */
-    34, 0, 24180994, -89315608, 425754336,
+    34, 0, 24094220, -89269072, 425638784,
     /* node 1005 x: shift, then 4 coefficients */
-    34, 0, 355785248, -161183536, -211887952,
+    34, 0, 355961024, -161201664, -212108640,
     /* node 1005 y: shift, then 4 coefficients */
-    35, 0, -336931200, 327350464, -219705872,
+    35, 0, -336378688, 327069952, -220114528,
     /* node 1005 z: shift, then 4 coefficients */
-    34, 0, 24360230, -88211832, 427959808,
+    34, 0, 24210654, -88184032, 427898752,
     /* node 1006 x: shift, then 4 coefficients */
-    34, 0, 316570496, -134171864, -190424000,
+    34, 0, 316783616, -134309488, -190658192,
     /* node 1006 y: shift, then 4 coefficients */
-    35, 0, -311260416, 297335200, -214708624,
+    35, 0, -311192448, 297229184, -214800848,
     /* node 1006 z: shift, then 4 coefficients */
-    35, 0, 52045652, -182755088, 772264384,
+    35, 0, 51702996, -182788960, 772527936,
     /* node 1009 x: shift, then 4 coefficients */
-    34, 0, 336318432, -146526800, -205082544,
+    34, 0, 336956640, -146747184, -205768848,
     /* node 1009 y: shift, then 4 coefficients */
-    35, 0, -306340960, 295384640, -215495776,
+    35, 0, -305758432, 295457536, -216475504,
     /* node 1009 z: shift, then 4 coefficients */
-    35, 0, 49585392, -176135712, 795267840,
+    35, 0, 49016104, -176307856, 795799744,
     /* node 1012 x: shift, then 4 coefficients */
-    34, 0, 301260032, -122263824, -182880944,
+    34, 0, 301154976, -122420336, -182818192,
     /* node 1012 y: shift, then 4 coefficients */
-    35, 0, -304778048, 294437344, -218953824,
+    35, 0, -305193792, 294660800, -218290224,
     /* node 1012 z: shift, then 4 coefficients */
-    35, 0, 50051016, -186529248, 747030336,
+    35, 0, 49655460, -186528592, 747547648,
     /* node 1013 x: shift, then 4 coefficients */
-    34, 0, 287539840, -113888336, -173305088,
+    34, 0, 287365472, -113889912, -173159344,
     /* node 1013 y: shift, then 4 coefficients */
-    35, 0, -311733792, 302403008, -215692704,
+    35, 0, -311389216, 302238496, -215983616,
     /* node 1013 z: shift, then 4 coefficients */
-    35, 0, 50476000, -189531248, 727648768,
+    35, 0, 50243032, -189490512, 727907456,
     /* node 1014 x: shift, then 4 coefficients */
-    35, 0, 493725056, -179004400, -305489600,
+    35, 0, 494118688, -179275488, -306033088,
     /* node 1014 y: shift, then 4 coefficients */
-    35, 0, -271213312, 266347824, -211725120,
+    35, 0, -271653600, 266894816, -211518864,
     /* node 1014 z: shift, then 4 coefficients */
-    35, 0, 48122292, -186497680, 633824192,
+    35, 0, 47888256, -186165104, 633915904,
     /* node 1015 x: shift, then 4 coefficients */
-    34, 0, 281267232, -108547296, -167326752,
+    34, 0, 281179872, -108603352, -167256800,
     /* node 1015 y: shift, then 4 coefficients */
-    35, 0, -308083360, 302061408, -218939136,
+    35, 0, -307846624, 301971616, -219027376,
     /* node 1015 z: shift, then 4 coefficients */
-    35, 0, 49764184, -191508976, 719709824,
+    35, 0, 49818224, -191532976, 719651840,
     /* node 1016 x: shift, then 4 coefficients */
-    34, 0, 323000768, -136549264, -191564080,
+    34, 0, 323162240, -136670128, -191701040,
     /* node 1016 y: shift, then 4 coefficients */
-    35, 0, -336995168, 328682208, -223643904,
+    35, 0, -336277152, 328464768, -224230912,
     /* node 1016 z: shift, then 4 coefficients */
-    35, 0, 48713828, -185069776, 818694336,
+    35, 0, 48844108, -184806160, 817944960,
     /* node 1017 x: shift, then 4 coefficients */
-    34, 0, 310723360, -129512240, -178620048,
+    34, 0, 310535648, -129547680, -178408096,
     /* node 1017 y: shift, then 4 coefficients */
-    35, 0, -330845824, 322624064, -225589600,
+    35, 0, -331616000, 323237664, -224975200,
     /* node 1017 z: shift, then 4 coefficients */
-    35, 0, 54627460, -191802240, 791933056,
+    35, 0, 55026824, -191802000, 791453696,
     /* node 1018 x: shift, then 4 coefficients */
-    35, 0, 432904928, -148798688, -265264800,
+    35, 0, 433166144, -149049952, -265568992,
     /* node 1018 y: shift, then 4 coefficients */
-    35, 0, -257529392, 252457888, -195731472,
+    35, 0, -258058000, 252851200, -195277168,
     /* node 1018 z: shift, then 4 coefficients */
-    35, 0, 48571868, -184272864, 572142784,
+    35, 0, 48456504, -184097792, 572288896,
     /* node 1019 x: shift, then 4 coefficients */
-    35, 0, 390216064, -129251896, -230310032,
+    35, 0, 390391136, -129467808, -230474896,
     /* node 1019 y: shift, then 4 coefficients */
-    35, 0, -247537552, 241498992, -183270944,
+    35, 0, -247397488, 241360432, -183232384,
     /* node 1019 z: shift, then 4 coefficients */
-    35, 0, 50971324, -183490768, 527051520,
+    35, 0, 50951120, -183427312, 526961856,
     /* node 1020 x: shift, then 4 coefficients */
-    35, 0, 531038976, -201407280, -305422784,
+    35, 0, 531018208, -201613008, -305435264,
     /* node 1020 y: shift, then 4 coefficients */
-    35, 0, -310045408, 299242560, -204554608,
+    35, 0, -310099232, 299433664, -204443008,
     /* node 1020 z: shift, then 4 coefficients */
-    35, 0, 49182704, -193502528, 695313984,
+    35, 0, 49148140, -193601584, 695423488,
     /* node 1021 x: shift, then 4 coefficients */
-    35, 0, 420033280, -141824288, -237799280,
+    35, 0, 420268768, -142163936, -238024112,
     /* node 1021 y: shift, then 4 coefficients */
-    35, 0, -265048928, 268268416, -197553104,
+    35, 0, -265605696, 268722688, -197078416,
     /* node 1021 z: shift, then 4 coefficients */
-    35, 0, 48370648, -186469152, 565395392,
+    35, 0, 48285872, -186112208, 565308416,
     /* node 1024 x: shift, then 4 coefficients */
-    34, 0, 287160416, -113976200, -158420800,
+    34, 0, 287150592, -114106296, -158467408,
     /* node 1024 y: shift, then 4 coefficients */
-    35, 0, -339381536, 329908000, -208518720,
+    35, 0, -339612928, 330326784, -208346432,
     /* node 1024 z: shift, then 4 coefficients */
-    35, 0, 49968780, -195407488, 756760384,
+    35, 0, 49952680, -195337936, 756653696,
     /* node 1025 x: shift, then 4 coefficients */
-    35, 0, 489081440, -177081504, -263442464,
+    35, 0, 489279584, -177134736, -263745296,
     /* node 1025 y: shift, then 4 coefficients */
-    35, 0, -304002272, 307708224, -206993248,
+    35, 0, -303676064, 307821824, -207166304,
     /* node 1025 z: shift, then 4 coefficients */
-    35, 0, 50235932, -196828352, 660747392,
+    35, 0, 50124068, -196827904, 660670400,
     /* node 1032 x: shift, then 4 coefficients */
-    36, 0, 363877344, -141046304, -145137392,
+    36, 0, 364340800, -141002304, -145535120,
     /* node 1032 y: shift, then 4 coefficients */
-    36, 0, -262883008, 265639936, -167552976,
+    36, 0, -263079664, 266021936, -167577824,
     /* node 1032 z: shift, then 4 coefficients */
-    36, 0, 70403424, -226744160, 489894240,
+    36, 0, 70254472, -226280256, 489762720,
     /* node 1418 x: shift, then 4 coefficients */
-    34, 0, 338546368, -149579072, -205414880,
+    34, 0, 339096288, -149721664, -205994448,
     /* node 1418 y: shift, then 4 coefficients */
-    35, 0, -302594848, 288778944, -209463296,
+    35, 0, -301859904, 288558976, -210485952,
     /* node 1418 z: shift, then 4 coefficients */
-    35, 0, 49385708, -173844672, 792090944,
+    35, 0, 49340464, -174078192, 791916480,
     /* node 2742 x: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2742 y: shift, then 4 coefficients */
@@ -6473,35 +6473,35 @@ static const int32_t tfit_heart_forward_q31_coef[14488] = {
     /* node 2747 z: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2748 x: shift, then 4 coefficients */
-    37, 0, 435004192, -290004576, 62985264,
+    37, 0, 435589312, -290646656, 62995764,
     /* node 2748 y: shift, then 4 coefficients */
-    37, 0, -360766464, 358769696, 44720708,
+    37, 0, -359817472, 355800000, 44252388,
     /* node 2748 z: shift, then 4 coefficients */
-    37, 0, -38755536, 113732968, 407374176,
+    37, 0, -39843112, 113661840, 408130912,
     /* node 2749 x: shift, then 4 coefficients */
-    37, 0, 542336704, -348667840, 84627696,
+    37, 0, 543682368, -345565408, 85734344,
     /* node 2749 y: shift, then 4 coefficients */
-    37, 0, -472337184, 487237920, 48929812,
+    37, 0, -471882208, 486872512, 46789716,
     /* node 2749 z: shift, then 4 coefficients */
-    37, 0, -34245916, 103027304, 510397728,
+    37, 0, -36247020, 104146800, 511240032,
     /* node 2750 x: shift, then 4 coefficients */
-    36, 0, 394374464, -233802944, 75850264,
+    36, 0, 393166656, -232987568, 75174080,
     /* node 2750 y: shift, then 4 coefficients */
-    36, 0, -384023264, 401578592, 77369136,
+    36, 0, -383756512, 401233632, 76710000,
     /* node 2750 z: shift, then 4 coefficients */
-    36, 0, -50474468, 111078016, 424750432,
+    36, 0, -50915744, 110684752, 425628992,
     /* node 2751 x: shift, then 4 coefficients */
-    36, 0, 317150528, -191865744, 61349972,
+    36, 0, 316718656, -190862336, 61697332,
     /* node 2751 y: shift, then 4 coefficients */
-    36, 0, -296159200, 303117024, 35520452,
+    36, 0, -293775744, 301285568, 36784256,
     /* node 2751 z: shift, then 4 coefficients */
-    37, 0, -77246296, 205721424, 700831232,
+    37, 0, -77130184, 204133392, 700597952,
     /* node 2752 x: shift, then 4 coefficients */
-    37, 0, 365088032, -250872080, 16529034,
+    37, 0, 365678912, -252756848, 16384133,
     /* node 2752 y: shift, then 4 coefficients */
-    37, 0, -325909504, 334134592, 86430248,
+    37, 0, -324086784, 333180992, 86770776,
     /* node 2752 z: shift, then 4 coefficients */
-    38, 0, -161066304, 278732416, 535059936,
+    38, 0, -163001792, 276500544, 536564416,
     /* node 2754 x: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2754 y: shift, then 4 coefficients */
@@ -6527,95 +6527,95 @@ static const int32_t tfit_heart_forward_q31_coef[14488] = {
     /* node 2758 z: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2759 x: shift, then 4 coefficients */
-    37, 0, 482917472, -333772320, 67326176,
+    37, 0, 482362080, -324356224, 65725412,
     /* node 2759 y: shift, then 4 coefficients */
-    37, 0, -383455264, 401425952, 20798310,
+    37, 0, -377605312, 409921056, 23328842,
     /* node 2759 z: shift, then 4 coefficients */
-    38, 0, -61981412, 95023160, 659225792,
+    38, 0, -68599944, 110460536, 667158464,
     /* node 2760 x: shift, then 4 coefficients */
-    37, 0, 431554624, -310549408, 36228184,
+    37, 0, 432989280, -317889696, 37571844,
     /* node 2760 y: shift, then 4 coefficients */
-    37, 0, -239300176, 253102128, -55023364,
+    37, 0, -240648448, 239716720, -59330756,
     /* node 2760 z: shift, then 4 coefficients */
-    38, 0, 71497008, 5016874, 512510304,
+    38, 0, 74049168, 9418107, 507696576,
     /* node 2761 x: shift, then 4 coefficients */
-    36, 0, 364299648, -231595312, 45595292,
+    36, 0, 365449984, -233199024, 45976756,
     /* node 2761 y: shift, then 4 coefficients */
-    36, 0, -293950144, 304913728, -18417412,
+    36, 0, -293781504, 302733536, -19558678,
     /* node 2761 z: shift, then 4 coefficients */
-    37, 0, -43414488, 95897184, 683403072,
+    37, 0, -44217864, 96616112, 683749184,
     /* node 2762 x: shift, then 4 coefficients */
-    36, 0, 314396416, -204424576, 40246224,
+    36, 0, 313074208, -202341808, 40351952,
     /* node 2762 y: shift, then 4 coefficients */
-    36, 0, -307348480, 309483808, -19579230,
+    36, 0, -306361984, 308872480, -18519994,
     /* node 2762 z: shift, then 4 coefficients */
-    37, 0, -57694780, 114507000, 635504128,
+    37, 0, -59772944, 118638696, 636888448,
     /* node 2763 x: shift, then 4 coefficients */
-    36, 0, 483822752, -297737088, 63762620,
+    36, 0, 485224416, -298488192, 64319392,
     /* node 2763 y: shift, then 4 coefficients */
-    36, 0, -451256800, 474799328, 8831031,
+    36, 0, -451282176, 474523776, 10396964,
     /* node 2763 z: shift, then 4 coefficients */
-    36, 0, -48880656, 93455408, 514397920,
+    36, 0, -49470544, 94861560, 514441056,
     /* node 2764 x: shift, then 4 coefficients */
-    36, 0, 389836384, -243448192, 47603692,
+    36, 0, 391437024, -242930080, 47805596,
     /* node 2764 y: shift, then 4 coefficients */
-    36, 0, -368694080, 397754016, -24480676,
+    36, 0, -367963072, 401201088, -24871580,
     /* node 2764 z: shift, then 4 coefficients */
-    37, 0, -16027496, 48883040, 777071872,
+    37, 0, -15432207, 47496776, 778567104,
     /* node 2765 x: shift, then 4 coefficients */
-    36, 0, 514501376, -308565920, 54596480,
+    36, 0, 514118304, -308713920, 53738020,
     /* node 2765 y: shift, then 4 coefficients */
-    36, 0, -469196064, 496602144, 1544665,
+    36, 0, -468829056, 498327872, 629664,
     /* node 2765 z: shift, then 4 coefficients */
-    36, 0, -30155842, 46627708, 564267136,
+    36, 0, -29238176, 46163004, 565166848,
     /* node 2766 x: shift, then 4 coefficients */
-    36, 0, 428131488, -258128320, 65603664,
+    36, 0, 427358368, -256560480, 64947796,
     /* node 2766 y: shift, then 4 coefficients */
-    36, 0, -414525568, 427785792, 26616298,
+    36, 0, -415230112, 429277120, 27147400,
     /* node 2766 z: shift, then 4 coefficients */
-    36, 0, -40323580, 97236568, 478546976,
+    36, 0, -40888204, 97761872, 478692640,
     /* node 2767 x: shift, then 4 coefficients */
-    36, 0, 581802432, -323344544, 81564680,
+    36, 0, 581956032, -324660832, 81689824,
     /* node 2767 y: shift, then 4 coefficients */
-    35, 0, -252338384, 273524480, 22605982,
+    35, 0, -252168768, 273140832, 22541212,
     /* node 2767 z: shift, then 4 coefficients */
-    36, 0, -52743696, 119203848, 702438720,
+    36, 0, -53768384, 120106256, 702674880,
     /* node 2768 x: shift, then 4 coefficients */
-    36, 0, 516658368, -293327136, 96622424,
+    36, 0, 516908000, -293319488, 96555032,
     /* node 2768 y: shift, then 4 coefficients */
-    35, 0, -248986240, 259333088, 29508210,
+    35, 0, -249989504, 261158256, 29917402,
     /* node 2768 z: shift, then 4 coefficients */
-    36, 0, -58103704, 142532592, 640105024,
+    36, 0, -58957752, 143195776, 640304704,
     /* node 2769 x: shift, then 4 coefficients */
-    35, 0, 339487680, -162735456, 67170712,
+    35, 0, 339895136, -163012352, 67234424,
     /* node 2769 y: shift, then 4 coefficients */
-    35, 0, -303437184, 355730304, 42127028,
+    35, 0, -303546976, 356948512, 42247724,
     /* node 2769 z: shift, then 4 coefficients */
-    35, 0, -27464750, 81566536, 454861664,
+    35, 0, -27590624, 82194416, 455200224,
     /* node 2770 x: shift, then 4 coefficients */
-    35, 0, 359219520, -176368608, 60271248,
+    35, 0, 359371136, -176404992, 60231332,
     /* node 2770 y: shift, then 4 coefficients */
-    35, 0, -302738592, 356244960, 18600356,
+    35, 0, -302282912, 355766016, 18886842,
     /* node 2770 z: shift, then 4 coefficients */
-    35, 0, -21514542, 69687960, 481124768,
+    35, 0, -21945412, 70442080, 480826912,
     /* node 2771 x: shift, then 4 coefficients */
-    35, 0, 410122688, -186672656, 83938312,
+    35, 0, 409776288, -186550192, 83789440,
     /* node 2771 y: shift, then 4 coefficients */
-    35, 0, -345892480, 426742688, 53896984,
+    35, 0, -345859392, 427057568, 53823800,
     /* node 2771 z: shift, then 4 coefficients */
-    35, 0, -27420620, 92373936, 585220352,
+    35, 0, -27809174, 92514928, 584796224,
     /* node 2772 x: shift, then 4 coefficients */
-    35, 0, 378922368, -175622768, 94991608,
+    35, 0, 377921376, -175684288, 94621144,
     /* node 2772 y: shift, then 4 coefficients */
-    35, 0, -324717056, 382778752, 66432000,
+    35, 0, -323828320, 381184128, 67204024,
     /* node 2772 z: shift, then 4 coefficients */
-    35, 0, -27933546, 89461760, 536323616,
+    35, 0, -28249706, 89402472, 535792800,
     /* node 2773 x: shift, then 4 coefficients */
-    36, 0, 623625856, -312863712, 135506032,
+    35, 0, 312389728, -157869632, 67884176,
     /* node 2773 y: shift, then 4 coefficients */
-    35, 0, -281816480, 308396384, 49895336,
+    35, 0, -280999552, 307223200, 50571612,
     /* node 2773 z: shift, then 4 coefficients */
-    35, 0, -28893264, 93224064, 419942400,
+    35, 0, -29562418, 94167304, 419944192,
     /* node 2774 x: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2774 y: shift, then 4 coefficients */
@@ -6623,23 +6623,23 @@ static const int32_t tfit_heart_forward_q31_coef[14488] = {
     /* node 2774 z: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2775 x: shift, then 4 coefficients */
-    38, 0, 328823648, -217503312, 14035025,
+    38, 0, 329990240, -218917216, 14554959,
     /* node 2775 y: shift, then 4 coefficients */
-    39, 0, -280611328, 326499328, -152146448,
+    39, 0, -288002976, 333079872, -156000688,
     /* node 2775 z: shift, then 4 coefficients */
-    39, 0, 136627456, -235917744, 462920128,
+    39, 0, 135957728, -234346736, 462727488,
     /* node 2776 x: shift, then 4 coefficients */
-    37, 0, 561420736, -369094016, 23294064,
+    37, 0, 561606016, -370698144, 24294794,
     /* node 2776 y: shift, then 4 coefficients */
-    37, 0, -411574272, 429378720, -139211792,
+    37, 0, -410487104, 427815136, -138758352,
     /* node 2776 z: shift, then 4 coefficients */
-    37, 0, 72170504, -184360320, 519137504,
+    37, 0, 72426464, -185267328, 519592032,
     /* node 2777 x: shift, then 4 coefficients */
-    37, 0, 463218976, -344246272, 61818136,
+    37, 0, 462331328, -343931104, 61217104,
     /* node 2777 y: shift, then 4 coefficients */
-    37, 0, -293404416, 289045920, -75620096,
+    37, 0, -291994688, 287743648, -76221528,
     /* node 2777 z: shift, then 4 coefficients */
-    38, 0, 104238824, -201825184, 593292224,
+    38, 0, 104126904, -204398800, 592184960,
     /* node 2778 x: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2778 y: shift, then 4 coefficients */
@@ -6647,5225 +6647,5225 @@ static const int32_t tfit_heart_forward_q31_coef[14488] = {
     /* node 2778 z: shift, then 4 coefficients */
     62, 0, 0, 0, 0,
     /* node 2779 x: shift, then 4 coefficients */
-    38, 0, 570048320, -414451040, 59619348,
+    38, 0, 570410944, -416974112, 60717112,
     /* node 2779 y: shift, then 4 coefficients */
-    38, 0, -430356896, 481618912, -127063688,
+    38, 0, -431130432, 482014912, -126870424,
     /* node 2779 z: shift, then 4 coefficients */
-    38, 0, 109931336, -148117760, 395292928,
+    38, 0, 110366896, -148485472, 392335360,
     /* node 2780 x: shift, then 4 coefficients */
-    36, 0, 338796032, -209629184, 14531121,
+    36, 0, 339913472, -209487984, 14570923,
     /* node 2780 y: shift, then 4 coefficients */
-    36, 0, -275386752, 289335232, -74750000,
+    36, 0, -275206688, 292119840, -74869224,
     /* node 2780 z: shift, then 4 coefficients */
-    37, 0, 64475720, -144622080, 656503616,
+    37, 0, 63452816, -143449696, 661668608,
     /* node 2781 x: shift, then 4 coefficients */
-    37, 0, 574339392, -385537472, 24527288,
+    37, 0, 575861376, -386139232, 25388096,
     /* node 2781 y: shift, then 4 coefficients */
-    37, 0, -411872576, 417615840, -128915160,
+    37, 0, -412421152, 419876064, -126579080,
     /* node 2781 z: shift, then 4 coefficients */
-    37, 0, 68616944, -115930640, 534406816,
+    37, 0, 68217560, -112381288, 537392192,
     /* node 2782 x: shift, then 4 coefficients */
-    36, 0, 460122784, -264143552, 16152441,
+    36, 0, 460030592, -263431920, 15160103,
     /* node 2782 y: shift, then 4 coefficients */
-    36, 0, -394177600, 429758656, -75863704,
+    36, 0, -393917216, 432275296, -76105056,
     /* node 2782 z: shift, then 4 coefficients */
-    36, 0, 6591576, -44882212, 517920544,
+    36, 0, 6416750, -44865880, 519523872,
     /* node 2783 x: shift, then 4 coefficients */
-    36, 0, 432025696, -266343888, 31953086,
+    36, 0, 431263552, -265527024, 32160440,
     /* node 2783 y: shift, then 4 coefficients */
-    36, 0, -382044128, 413037760, -56946264,
+    36, 0, -381427584, 413676064, -55728516,
     /* node 2783 z: shift, then 4 coefficients */
-    37, 0, 8129466, -34215344, 918799232,
+    37, 0, 8246898, -31765822, 920038016,
     /* node 2784 x: shift, then 4 coefficients */
-    36, 0, 594818304, -314470048, 32028926,
+    36, 0, 595163328, -314347968, 31805962,
     /* node 2784 y: shift, then 4 coefficients */
-    35, 0, -258265456, 296411648, -40837556,
+    35, 0, -258647520, 298049984, -41014016,
     /* node 2784 z: shift, then 4 coefficients */
-    36, 0, -8160166, -16000262, 701241600,
+    36, 0, -8085452, -16796920, 701956288,
     /* node 2785 x: shift, then 4 coefficients */
-    36, 0, 509679136, -276252448, -3540374,
+    36, 0, 509658016, -276126816, -3029382,
     /* node 2785 y: shift, then 4 coefficients */
-    36, 0, -439435200, 490029088, -125672584,
+    36, 0, -439437248, 490695104, -124397880,
     /* node 2785 z: shift, then 4 coefficients */
-    36, 0, 26663248, -96888144, 584724096,
+    36, 0, 26443248, -95358784, 584740224,
     /* node 2786 x: shift, then 4 coefficients */
-    36, 0, 649593536, -325995360, -348403,
+    36, 0, 648512384, -327103776, -58602,
     /* node 2786 y: shift, then 4 coefficients */
-    35, 0, -278417216, 330812736, -63307684,
+    35, 0, -277902464, 329719008, -62849548,
     /* node 2786 z: shift, then 4 coefficients */
-    36, 0, 14327683, -87222128, 793492608,
+    36, 0, 13730741, -85752400, 792165760,
     /* node 2787 x: shift, then 4 coefficients */
-    36, 0, 561489216, -308221184, 43340204,
+    36, 0, 560517696, -308501792, 42800620,
     /* node 2787 y: shift, then 4 coefficients */
-    35, 0, -249278352, 282120704, -27378558,
+    35, 0, -248512912, 282494016, -27266008,
     /* node 2787 z: shift, then 4 coefficients */
-    36, 0, -11997121, 11966064, 643313152,
+    36, 0, -12445528, 13006595, 643569344,
     /* node 2788 x: shift, then 4 coefficients */
-    36, 0, 673141184, -328553184, 70599264,
+    36, 0, 672935808, -329150176, 71291088,
     /* node 2788 y: shift, then 4 coefficients */
-    35, 0, -292496864, 340022016, -3405414,
+    35, 0, -292562976, 339889792, -3366434,
     /* node 2788 z: shift, then 4 coefficients */
-    36, 0, -37448496, 65297980, 828719872,
+    36, 0, -38151156, 66260756, 828782016,
     /* node 2789 x: shift, then 4 coefficients */
-    35, 0, 368868704, -179512480, 20915260,
+    35, 0, 368766752, -179617072, 20764546,
     /* node 2789 y: shift, then 4 coefficients */
-    35, 0, -309299328, 376503392, -35620580,
+    35, 0, -309380480, 377500640, -35696532,
     /* node 2789 z: shift, then 4 coefficients */
-    36, 0, -20033740, 17519194, 918232448,
+    36, 0, -20254258, 17945792, 918646016,
     /* node 2790 x: shift, then 4 coefficients */
-    35, 0, 426458336, -188999664, 34797788,
+    35, 0, 426422848, -189244800, 34793868,
     /* node 2790 y: shift, then 4 coefficients */
-    35, 0, -348489632, 470614496, -20459330,
+    35, 0, -348597440, 470937184, -20368536,
     /* node 2790 z: shift, then 4 coefficients */
-    35, 0, -12566108, 29066084, 576977984,
+    35, 0, -12815042, 29339660, 577009536,
     /* node 2791 x: shift, then 4 coefficients */
-    35, 0, 393567584, -177127408, 51634516,
+    35, 0, 393307200, -177148096, 51678000,
     /* node 2791 y: shift, then 4 coefficients */
-    35, 0, -330947328, 435745120, 12013108,
+    35, 0, -331168224, 436023424, 12217699,
     /* node 2791 z: shift, then 4 coefficients */
-    35, 0, -17543398, 54769996, 524122752,
+    35, 0, -17667578, 55244908, 524115872,
     /* node 2792 x: shift, then 4 coefficients */
-    35, 0, 491898336, -217347104, 61504908,
+    35, 0, 491755936, -217455504, 61355204,
     /* node 2792 y: shift, then 4 coefficients */
-    35, 0, -378621472, 546612288, 11196901,
+    35, 0, -378890848, 547209792, 11330651,
     /* node 2792 z: shift, then 4 coefficients */
-    35, 0, -12334192, 54626452, 682770560,
+    35, 0, -12501001, 54615212, 682547456,
     /* node 2793 x: shift, then 4 coefficients */
-    35, 0, 471495808, -203492128, 21129882,
+    35, 0, 471472000, -203673520, 21123754,
     /* node 2793 y: shift, then 4 coefficients */
-    35, 0, -368181600, 522236704, -42703196,
+    35, 0, -368432768, 522828768, -42570336,
     /* node 2793 z: shift, then 4 coefficients */
-    35, 0, -6346208, 876356, 627782784,
+    35, 0, -6498258, 1073697, 627777344,
     /* node 2794 x: shift, then 4 coefficients */
-    35, 0, 541744256, -229178992, 41845596,
+    35, 0, 541544256, -229269232, 41751188,
     /* node 2794 y: shift, then 4 coefficients */
-    35, 0, -393580672, 611298560, -18909494,
+    35, 0, -393743104, 611507264, -18840600,
     /* node 2794 z: shift, then 4 coefficients */
-    35, 0, -8992612, 33330586, 758050112,
+    35, 0, -9180572, 33559512, 757959232,
     /* node 2795 x: shift, then 4 coefficients */
-    35, 0, 452668288, -198120672, 74434208,
+    35, 0, 452248320, -198167104, 74532568,
     /* node 2795 y: shift, then 4 coefficients */
-    35, 0, -361320448, 484462688, 29884496,
+    35, 0, -361320768, 484383040, 30056222,
     /* node 2795 z: shift, then 4 coefficients */
-    35, 0, -19588638, 72977400, 632921664,
+    35, 0, -19788782, 73238512, 632596992,
     /* node 2796 x: shift, then 4 coefficients */
-    35, 0, 541268800, -231818208, 82856016,
+    35, 0, 541296000, -231792080, 82931024,
     /* node 2796 y: shift, then 4 coefficients */
-    35, 0, -406501216, 600932352, 41357144,
+    35, 0, -406649312, 601350208, 41331220,
     /* node 2796 z: shift, then 4 coefficients */
-    35, 0, -20243160, 81698872, 798871872,
+    35, 0, -20283220, 81877368, 798758208,
     /* node 2797 x: shift, then 4 coefficients */
-    35, 0, 500877312, -220247744, 101216920,
+    35, 0, 501017600, -220447840, 101139440,
     /* node 2797 y: shift, then 4 coefficients */
-    35, 0, -389417056, 528323392, 67091384,
+    35, 0, -389853856, 528596992, 67438312,
     /* node 2797 z: shift, then 4 coefficients */
-    35, 0, -24479974, 94722248, 729556864,
+    35, 0, -24641886, 95093336, 729340352,
     /* node 2798 x: shift, then 4 coefficients */
-    35, 0, 588262272, -254278800, 103844544,
+    35, 0, 588009408, -254746080, 103646448,
     /* node 2798 y: shift, then 4 coefficients */
-    34, 0, -206298304, 311723264, 31821702,
+    34, 0, -206323296, 311699136, 31957748,
     /* node 2798 z: shift, then 4 coefficients */
-    35, 0, -22128232, 95420480, 889791168,
+    35, 0, -22421666, 95187280, 889637568,
     /* node 2799 x: shift, then 4 coefficients */
-    35, 0, 658050816, -279229376, 86176160,
+    35, 0, 657923008, -279867744, 85982320,
     /* node 2799 y: shift, then 4 coefficients */
-    34, 0, -218481936, 361613344, 22284612,
+    34, 0, -218624160, 361765696, 22345624,
     /* node 2799 z: shift, then 4 coefficients */
-    35, 0, -15300235, 73562656, 978541376,
+    35, 0, -15738449, 73252632, 978196160,
     /* node 2800 x: shift, then 4 coefficients */
-    34, 0, 352856544, -147842832, 51554624,
+    34, 0, 353175520, -147580784, 51822504,
     /* node 2800 y: shift, then 4 coefficients */
-    34, 0, -223169968, 375614912, 33860864,
+    34, 0, -223277248, 376257344, 34148540,
     /* node 2800 z: shift, then 4 coefficients */
-    34, 0, -8391291, 44883800, 550653504,
+    34, 0, -8318033, 45614040, 550867264,
     /* node 2801 x: shift, then 4 coefficients */
-    35, 0, 630629824, -280178688, 126856952,
+    35, 0, 631163840, -279886688, 127238216,
     /* node 2801 y: shift, then 4 coefficients */
-    34, 0, -212070880, 319937184, 47077204,
+    34, 0, -212205184, 320567328, 47137444,
     /* node 2801 z: shift, then 4 coefficients */
-    34, 0, -11150973, 56536168, 493192032,
+    34, 0, -11040154, 57112328, 493468800,
     /* node 2802 x: shift, then 4 coefficients */
-    35, 0, 536848544, -228739920, 121525352,
+    35, 0, 536495616, -229020448, 121387352,
     /* node 2802 y: shift, then 4 coefficients */
-    35, 0, -402263200, 557049984, 89914832,
+    35, 0, -402334784, 557040704, 90256496,
     /* node 2802 z: shift, then 4 coefficients */
-    35, 0, -24047236, 112876864, 822174528,
+    35, 0, -24359258, 112735544, 821715328,
     /* node 2803 x: shift, then 4 coefficients */
-    37, 0, 509147360, -339930624, 30466182,
+    37, 0, 509231296, -340441888, 30431148,
     /* node 2803 y: shift, then 4 coefficients */
-    37, 0, -371984800, 349882848, -135713856,
+    37, 0, -372158656, 350108128, -135770464,
     /* node 2803 z: shift, then 4 coefficients */
-    37, 0, 59788916, -225067936, 556400320,
+    37, 0, 59566452, -225144320, 556556480,
     /* node 2804 x: shift, then 4 coefficients */
-    37, 0, 635801664, -352989600, -75522176,
+    37, 0, 636358976, -353374848, -75784632,
     /* node 2804 y: shift, then 4 coefficients */
-    36, 0, -256735216, 254406096, -122799432,
+    36, 0, -256871216, 254724832, -122863112,
     /* node 2804 z: shift, then 4 coefficients */
-    36, 0, 64870228, -178741088, 396067360,
+    36, 0, 64981196, -178927840, 396288384,
     /* node 2805 x: shift, then 4 coefficients */
-    36, 0, 476591552, -235858976, -72551952,
+    36, 0, 476991552, -236084896, -72787608,
     /* node 2805 y: shift, then 4 coefficients */
-    36, 0, -393959808, 408481888, -179472912,
+    36, 0, -394761152, 409307776, -179698048,
     /* node 2805 z: shift, then 4 coefficients */
-    36, 0, 69350896, -218540304, 588213888,
+    36, 0, 69355872, -218412592, 588693568,
     /* node 2806 x: shift, then 4 coefficients */
-    36, 0, 373067904, -216125824, -10949712,
+    36, 0, 372979360, -216468272, -11229782,
     /* node 2806 y: shift, then 4 coefficients */
-    36, 0, -347207584, 334116000, -123527864,
+    36, 0, -347280416, 334295424, -123173840,
     /* node 2806 z: shift, then 4 coefficients */
-    36, 0, 57820252, -161248576, 434546496,
+    36, 0, 57607252, -161320160, 434836480,
     /* node 2807 x: shift, then 4 coefficients */
-    37, 0, 419991104, -327116928, 94353016,
+    37, 0, 420721856, -327738304, 94700760,
     /* node 2807 y: shift, then 4 coefficients */
-    37, 0, -442677440, 413941184, -154035968,
+    37, 0, -443081248, 414544896, -153326368,
     /* node 2807 z: shift, then 4 coefficients */
-    37, 0, 120532464, -208919024, 368406848,
+    37, 0, 120283152, -208983712, 368536160,
     /* node 2808 x: shift, then 4 coefficients */
-    37, 0, 652161472, -397083136, 8531226,
+    37, 0, 652288640, -397957952, 8207668,
     /* node 2808 y: shift, then 4 coefficients */
-    36, 0, -275320576, 280223104, -105131896,
+    36, 0, -275817600, 280964288, -105226144,
     /* node 2808 z: shift, then 4 coefficients */
-    36, 0, 62229260, -145331616, 365360928,
+    36, 0, 62257940, -145659360, 365778400,
     /* node 2809 x: shift, then 4 coefficients */
-    36, 0, 538604992, -271189024, -45113864,
+    36, 0, 538937024, -271502752, -45388876,
     /* node 2809 y: shift, then 4 coefficients */
-    35, 0, -229360800, 244809440, -90450456,
+    35, 0, -229709088, 244883824, -90688312,
     /* node 2809 z: shift, then 4 coefficients */
-    36, 0, 60287624, -202672208, 645129024,
+    36, 0, 60455836, -203609872, 645657280,
     /* node 2810 x: shift, then 4 coefficients */
-    36, 0, 464512384, -256453696, -8546521,
+    36, 0, 464552544, -256974384, -8991484,
     /* node 2810 y: shift, then 4 coefficients */
-    36, 0, -385843264, 416859808, -138538112,
+    36, 0, -385892096, 417508288, -137996304,
     /* node 2810 z: shift, then 4 coefficients */
-    36, 0, 50787688, -146010352, 502921952,
+    36, 0, 50812636, -145225344, 503301696,
     /* node 2811 x: shift, then 4 coefficients */
-    36, 0, 657655168, -294889120, -70695144,
+    36, 0, 658613440, -294198208, -70681360,
     /* node 2811 y: shift, then 4 coefficients */
-    35, 0, -273659488, 323406848, -105813168,
+    35, 0, -273805568, 325139104, -105762616,
     /* node 2811 z: shift, then 4 coefficients */
-    36, 0, 48017700, -193996016, 822780992,
+    36, 0, 48305764, -194799632, 823355712,
     /* node 2812 x: shift, then 4 coefficients */
-    36, 0, 585543552, -290650432, -35102692,
+    36, 0, 584366272, -291984096, -35030780,
     /* node 2812 y: shift, then 4 coefficients */
-    35, 0, -243866032, 277157408, -74652352,
+    35, 0, -243484384, 276125088, -74477432,
     /* node 2812 z: shift, then 4 coefficients */
-    36, 0, 31701490, -145265152, 695399232,
+    36, 0, 31524252, -144029360, 694613824,
     /* node 2813 x: shift, then 4 coefficients */
-    35, 0, 394685920, -171059184, -34210352,
+    35, 0, 394579744, -170757776, -34255488,
     /* node 2813 y: shift, then 4 coefficients */
-    35, 0, -310966176, 388738144, -107408824,
+    35, 0, -310751968, 388698368, -107278320,
     /* node 2813 z: shift, then 4 coefficients */
-    35, 0, 20385680, -97821496, 501535904,
+    35, 0, 20355852, -97786856, 501746720,
     /* node 2814 x: shift, then 4 coefficients */
-    35, 0, 359445184, -158671152, -50877272,
+    35, 0, 358620384, -159107168, -51130948,
     /* node 2814 y: shift, then 4 coefficients */
-    35, 0, -285224384, 332716512, -122288920,
+    35, 0, -285196224, 330783552, -123135056,
     /* node 2814 z: shift, then 4 coefficients */
-    35, 0, 26295370, -115988176, 461239776,
+    35, 0, 26074014, -115399152, 460963168,
     /* node 2815 x: shift, then 4 coefficients */
-    35, 0, 435467904, -173858208, -64721300,
+    35, 0, 435846976, -173111424, -64460796,
     /* node 2815 y: shift, then 4 coefficients */
-    35, 0, -330593088, 426381696, -140466544,
+    35, 0, -330779840, 428039616, -139888352,
     /* node 2815 z: shift, then 4 coefficients */
-    35, 0, 20007180, -121650568, 574488960,
+    35, 0, 19973040, -121367128, 575139648,
     /* node 2816 x: shift, then 4 coefficients */
-    35, 0, 362226688, -164789712, -19287158,
+    35, 0, 362095552, -165063072, -19323784,
     /* node 2816 y: shift, then 4 coefficients */
-    35, 0, -292138944, 361511904, -88428872,
+    35, 0, -292089856, 362012128, -88362056,
     /* node 2816 z: shift, then 4 coefficients */
-    36, 0, 22178676, -134820576, 910458752,
+    36, 0, 21996948, -134993104, 910861824,
     /* node 2817 x: shift, then 4 coefficients */
-    35, 0, 443423808, -188357360, -13202680,
+    35, 0, 443632224, -188276752, -13357824,
     /* node 2817 y: shift, then 4 coefficients */
-    35, 0, -337808864, 456841952, -88807632,
+    35, 0, -337822816, 457444160, -88749648,
     /* node 2817 z: shift, then 4 coefficients */
-    35, 0, 3305293, -52525568, 571869376,
+    35, 0, 3162126, -52492364, 572204160,
     /* node 2818 x: shift, then 4 coefficients */
-    35, 0, 478447488, -192144176, -35469864,
+    35, 0, 478371776, -191804736, -35490816,
     /* node 2818 y: shift, then 4 coefficients */
-    35, 0, -353526368, 504575968, -115640608,
+    35, 0, -353714400, 505321408, -115473360,
     /* node 2818 z: shift, then 4 coefficients */
-    35, 0, 11532841, -90656936, 633736064,
+    35, 0, 11398934, -90361888, 633971776,
     /* node 2819 x: shift, then 4 coefficients */
-    35, 0, 574463040, -223507904, -28367006,
+    35, 0, 574346816, -223456816, -28426440,
     /* node 2819 y: shift, then 4 coefficients */
-    34, 0, -195231264, 312714752, -54957952,
+    34, 0, -195346640, 313167360, -54894252,
     /* node 2819 z: shift, then 4 coefficients */
-    35, 0, 697586, -70260224, 781960448,
+    35, 0, 579498, -70195568, 781960896,
     /* node 2820 x: shift, then 4 coefficients */
-    35, 0, 528597504, -213971568, -1399754,
+    35, 0, 528574496, -214126288, -1482263,
     /* node 2820 y: shift, then 4 coefficients */
-    35, 0, -380505696, 583770240, -82777544,
+    35, 0, -380614144, 584289920, -82643888,
     /* node 2820 z: shift, then 4 coefficients */
-    35, 0, -4043517, -36334324, 712434944,
+    35, 0, -4237531, -36223056, 712518400,
     /* node 2821 x: shift, then 4 coefficients */
-    35, 0, 668905792, -252315712, -8173351,
+    35, 0, 668932224, -252574080, -8251849,
     /* node 2821 y: shift, then 4 coefficients */
-    34, 0, -207262928, 382475200, -48619056,
+    34, 0, -207376976, 382722944, -48585392,
     /* node 2821 z: shift, then 4 coefficients */
-    35, 0, -3172754, -49753888, 956405632,
+    35, 0, -3323950, -49531556, 956321088,
     /* node 2822 x: shift, then 4 coefficients */
-    35, 0, 632189376, -226406176, -59971036,
+    35, 0, 632319296, -226427744, -60079860,
     /* node 2822 y: shift, then 4 coefficients */
-    34, 0, -201887776, 343584096, -72956920,
+    34, 0, -201988032, 343879296, -72910856,
     /* node 2822 z: shift, then 4 coefficients */
-    35, 0, 3918037, -105343432, 871199360,
+    35, 0, 3740928, -105369472, 871201280,
     /* node 2823 x: shift, then 4 coefficients */
-    35, 0, 748134784, -262728624, -42450124,
+    35, 0, 748078848, -262154144, -42505892,
     /* node 2823 y: shift, then 4 coefficients */
-    34, 0, -212462640, 418055136, -62636960,
+    34, 0, -212561808, 418457536, -62598000,
     /* node 2823 z: shift, then 4 coefficients */
-    34, 0, -2424535, -47588688, 537671104,
+    34, 0, -2547919, -47524164, 537616448,
     /* node 2824 x: shift, then 4 coefficients */
-    35, 0, 606253632, -238579104, 19087160,
+    35, 0, 605930752, -238659216, 18942058,
     /* node 2824 y: shift, then 4 coefficients */
-    34, 0, -204536464, 346433280, -28030374,
+    34, 0, -204603536, 346626688, -27989136,
     /* node 2824 z: shift, then 4 coefficients */
-    35, 0, -4297244, -4628696, 843631680,
+    35, 0, -4408573, -4573414, 843521088,
     /* node 2825 x: shift, then 4 coefficients */
-    35, 0, 677929216, -273929888, 44025036,
+    35, 0, 677659776, -274006464, 44053156,
     /* node 2825 y: shift, then 4 coefficients */
-    34, 0, -215135024, 386482464, -14231474,
+    34, 0, -215240432, 386731136, -14198484,
     /* node 2825 z: shift, then 4 coefficients */
-    35, 0, -9787013, 13765846, 978202304,
+    35, 0, -10010456, 14079241, 978030528,
     /* node 2826 x: shift, then 4 coefficients */
-    35, 0, 775104832, -291224352, 6030170,
+    35, 0, 775177024, -291391168, 6010313,
     /* node 2826 y: shift, then 4 coefficients */
-    34, 0, -223956032, 449186496, -40530316,
+    34, 0, -224072448, 449506560, -40523812,
     /* node 2826 z: shift, then 4 coefficients */
-    34, 0, -5570814, -13504577, 563137152,
+    34, 0, -5642381, -13360900, 563082368,
     /* node 2827 x: shift, then 4 coefficients */
-    34, 0, 429308224, -155290368, 20730098,
+    34, 0, 429394912, -155280144, 20674394,
     /* node 2827 y: shift, then 4 coefficients */
-    34, 0, -228501824, 483723552, -21705572,
+    34, 0, -228679808, 483725344, -21681646,
     /* node 2827 z: shift, then 4 coefficients */
-    34, 0, -5122548, -4193802, 646676224,
+    34, 0, -5148124, -4116649, 646651840,
     /* node 2828 x: shift, then 4 coefficients */
-    34, 0, 374569536, -149227760, 32436128,
+    34, 0, 374418976, -149530208, 32337168,
     /* node 2828 y: shift, then 4 coefficients */
-    34, 0, -222544112, 424757248, 3213532,
+    34, 0, -222755248, 424538432, 3228176,
     /* node 2828 z: shift, then 4 coefficients */
-    34, 0, -7594150, 19747500, 563147008,
+    34, 0, -7729948, 19561428, 563065536,
     /* node 2829 x: shift, then 4 coefficients */
-    34, 0, 462277344, -175778912, 30149910,
+    34, 0, 461876864, -176030288, 30161030,
     /* node 2829 y: shift, then 4 coefficients */
-    34, 0, -238254864, 517962464, -13387632,
+    34, 0, -238363088, 517786432, -13201634,
     /* node 2829 z: shift, then 4 coefficients */
-    34, 0, -5953215, -965058, 714692736,
+    34, 0, -6050026, -885688, 714384896,
     /* node 2830 x: shift, then 4 coefficients */
-    34, 0, 489047008, -178600832, -7282176,
+    34, 0, 489351840, -178158400, -7278312,
     /* node 2830 y: shift, then 4 coefficients */
-    34, 0, -239982432, 551310144, -45864368,
+    34, 0, -240092128, 551843008, -45855100,
     /* node 2830 z: shift, then 4 coefficients */
-    34, 0, -7686120, -20234358, 738848960,
+    34, 0, -7774291, -20268824, 738808576,
     /* node 2831 x: shift, then 4 coefficients */
-    34, 0, 522007808, -185910256, 14257285,
+    34, 0, 522013920, -185868032, 14274027,
     /* node 2831 y: shift, then 4 coefficients */
-    34, 0, -248437872, 574066368, -34803424,
+    34, 0, -248412880, 574658432, -34795180,
     /* node 2831 z: shift, then 4 coefficients */
-    34, 0, -4971685, -25467152, 818339520,
+    34, 0, -5057485, -25656482, 818342464,
     /* node 2832 x: shift, then 4 coefficients */
-    34, 0, 407772992, -160690512, 43314072,
+    34, 0, 407778016, -160630624, 43395608,
     /* node 2832 y: shift, then 4 coefficients */
-    34, 0, -227877936, 437119360, 12407510,
+    34, 0, -227921520, 437877760, 12602670,
     /* node 2832 z: shift, then 4 coefficients */
-    34, 0, -6490722, 25695546, 623484736,
+    34, 0, -6550708, 25966168, 623513600,
     /* node 2833 x: shift, then 4 coefficients */
-    34, 0, 501612928, -180257120, 49273944,
+    34, 0, 502047648, -179965840, 49120448,
     /* node 2833 y: shift, then 4 coefficients */
-    34, 0, -240850576, 533424416, -4121781,
+    34, 0, -240969328, 533836672, -4194600,
     /* node 2833 z: shift, then 4 coefficients */
-    34, 0, -4645561, -5483914, 782647488,
+    34, 0, -4606106, -5426726, 782806720,
     /* node 2834 x: shift, then 4 coefficients */
-    34, 0, 428015328, -176451040, 52661576,
+    34, 0, 427813760, -177110448, 52285292,
     /* node 2834 y: shift, then 4 coefficients */
-    34, 0, -230807184, 448195840, 17525464,
+    34, 0, -230962896, 447210144, 17493684,
     /* node 2834 z: shift, then 4 coefficients */
-    34, 0, -8279632, 22903534, 673104704,
+    34, 0, -8461491, 22257328, 672894080,
     /* node 2835 x: shift, then 4 coefficients */
-    34, 0, 534059904, -192657280, 66216312,
+    34, 0, 533317600, -192950592, 66218860,
     /* node 2835 y: shift, then 4 coefficients */
-    34, 0, -237936000, 544998848, 855778,
+    34, 0, -238074176, 544571136, 1035280,
     /* node 2835 z: shift, then 4 coefficients */
-    34, 0, 684814, -10625173, 827150080,
+    34, 0, 621791, -10767037, 826826624,
     /* node 2836 x: shift, then 4 coefficients */
-    34, 0, 569722304, -213149088, 45216432,
+    34, 0, 569596224, -213569632, 45355548,
     /* node 2836 y: shift, then 4 coefficients */
-    34, 0, -250420368, 602754368, -21012898,
+    34, 0, -250554976, 602873408, -20913250,
     /* node 2836 z: shift, then 4 coefficients */
-    34, 0, 4035646, -21469424, 902235840,
+    34, 0, 4194137, -21654530, 902132544,
     /* node 2837 x: shift, then 4 coefficients */
-    34, 0, 588570304, -209489824, 67597744,
+    34, 0, 588569024, -209834144, 67685056,
     /* node 2837 y: shift, then 4 coefficients */
-    34, 0, -245186384, 616288448, -16126997,
+    34, 0, -245369088, 616302336, -15918831,
     /* node 2837 z: shift, then 4 coefficients */
-    34, 0, 6611082, -20357488, 938162304,
+    34, 0, 6688172, -20078274, 938095808,
     /* node 2838 x: shift, then 4 coefficients */
-    34, 0, 540034816, -207113488, 77025760,
+    34, 0, 540585984, -207036736, 76947528,
     /* node 2838 y: shift, then 4 coefficients */
-    34, 0, -237795712, 540172160, 805549,
+    34, 0, -237855680, 541364800, 653823,
     /* node 2838 z: shift, then 4 coefficients */
-    34, 0, 5168760, -5174169, 851187456,
+    34, 0, 5314508, -4900111, 851328192,
     /* node 2839 x: shift, then 4 coefficients */
-    34, 0, 461231936, -186740288, 74749256,
+    34, 0, 461921760, -186222576, 75064272,
     /* node 2839 y: shift, then 4 coefficients */
-    34, 0, -226838512, 458145408, 25790852,
+    34, 0, -226754128, 459535456, 26117640,
     /* node 2839 z: shift, then 4 coefficients */
-    34, 0, 1490516, 19754864, 737772416,
+    34, 0, 1638721, 20571134, 738027200,
     /* node 2840 x: shift, then 4 coefficients */
-    36, 0, 580175296, -220111520, -218288496,
+    36, 0, 580454592, -220121168, -218599376,
     /* node 2840 y: shift, then 4 coefficients */
-    35, 0, -208562240, 223357984, -131510720,
+    35, 0, -208610656, 223539488, -131604776,
     /* node 2840 z: shift, then 4 coefficients */
-    35, 0, 39327428, -148860208, 388764128,
+    35, 0, 39175980, -148730672, 389038592,
     /* node 2841 x: shift, then 4 coefficients */
-    35, 0, 404595712, -141847568, -189402976,
+    35, 0, 404716320, -141869568, -189719312,
     /* node 2841 y: shift, then 4 coefficients */
-    35, 0, -275343296, 287408448, -177668512,
+    35, 0, -275391456, 287985120, -177981392,
     /* node 2841 z: shift, then 4 coefficients */
-    35, 0, 44843880, -183177952, 554972416,
+    35, 0, 44853964, -183321296, 555281600,
     /* node 2842 x: shift, then 4 coefficients */
-    35, 0, 464734752, -163351216, -206596304,
+    35, 0, 464890432, -163468336, -206830608,
     /* node 2842 y: shift, then 4 coefficients */
-    35, 0, -304924096, 337231904, -196998304,
+    35, 0, -305096864, 337614208, -196997696,
     /* node 2842 z: shift, then 4 coefficients */
-    35, 0, 39932872, -188729440, 636614016,
+    35, 0, 39817740, -188629392, 636633472,
     /* node 2843 x: shift, then 4 coefficients */
-    35, 0, 350422720, -133246456, -117656392,
+    35, 0, 350481056, -133268064, -117531464,
     /* node 2843 y: shift, then 4 coefficients */
-    35, 0, -250904608, 273979680, -145635680,
+    35, 0, -250995904, 274118304, -145575600,
     /* node 2843 z: shift, then 4 coefficients */
-    35, 0, 35816060, -156445632, 469043200,
+    35, 0, 35574040, -156364288, 469253664,
     /* node 2844 x: shift, then 4 coefficients */
-    36, 0, 417555072, -195286496, -95246176,
+    36, 0, 417616544, -195404976, -95474448,
     /* node 2844 y: shift, then 4 coefficients */
-    36, 0, -328688064, 343659776, -183150640,
+    36, 0, -328891040, 343964864, -182910448,
     /* node 2844 z: shift, then 4 coefficients */
-    36, 0, 64407616, -221657424, 537139840,
+    36, 0, 64239984, -221628928, 537466688,
     /* node 2845 x: shift, then 4 coefficients */
-    36, 0, 570733248, -246213792, -143602432,
+    36, 0, 570914944, -246512896, -143583360,
     /* node 2845 y: shift, then 4 coefficients */
-    35, 0, -223833184, 237541360, -113454088,
+    35, 0, -223922816, 237871088, -113582880,
     /* node 2845 z: shift, then 4 coefficients */
-    35, 0, 34031068, -131712168, 373198912,
+    35, 0, 34156808, -131761856, 373411808,
     /* node 2846 x: shift, then 4 coefficients */
-    35, 0, 415652768, -158415376, -129105568,
+    35, 0, 415575328, -158433312, -129104896,
     /* node 2846 y: shift, then 4 coefficients */
-    35, 0, -294038208, 332404160, -161109072,
+    35, 0, -294029312, 332414016, -160909488,
     /* node 2846 z: shift, then 4 coefficients */
-    35, 0, 35221320, -167661280, 561860288,
+    35, 0, 35021740, -167612992, 562020928,
     /* node 2847 x: shift, then 4 coefficients */
-    35, 0, 346835872, -144374768, -76594560,
+    35, 0, 346915712, -144509696, -76454328,
     /* node 2847 y: shift, then 4 coefficients */
-    35, 0, -265177232, 296503776, -133993488,
+    35, 0, -265057024, 297040224, -133676760,
     /* node 2847 z: shift, then 4 coefficients */
-    35, 0, 34553680, -138031616, 449265184,
+    35, 0, 34570800, -137782752, 449381664,
     /* node 2848 x: shift, then 4 coefficients */
-    35, 0, 461887456, -174757264, -127421952,
+    35, 0, 462044288, -174895936, -127370912,
     /* node 2848 y: shift, then 4 coefficients */
-    35, 0, -314106560, 384886400, -179166880,
+    35, 0, -314337408, 385517856, -178717344,
     /* node 2848 z: shift, then 4 coefficients */
-    35, 0, 30412562, -166780288, 626014848,
+    35, 0, 30377190, -166549872, 626357120,
     /* node 2849 x: shift, then 4 coefficients */
-    35, 0, 412789952, -162306656, -89109216,
+    35, 0, 413347008, -162064304, -88980536,
     /* node 2849 y: shift, then 4 coefficients */
-    35, 0, -307773024, 373147328, -152375856,
+    35, 0, -307659424, 373586400, -151714784,
     /* node 2849 z: shift, then 4 coefficients */
-    35, 0, 29185984, -147359424, 547332800,
+    35, 0, 29138870, -147478528, 547807424,
     /* node 2850 x: shift, then 4 coefficients */
-    35, 0, 513567040, -195459280, -121375344,
+    35, 0, 513339232, -195527184, -121553632,
     /* node 2850 y: shift, then 4 coefficients */
-    35, 0, -343346368, 446507520, -180177584,
+    35, 0, -343377728, 446932864, -179804672,
     /* node 2850 z: shift, then 4 coefficients */
-    35, 0, 28549830, -168339328, 697296832,
+    35, 0, 28425944, -168263632, 697071680,
     /* node 2851 x: shift, then 4 coefficients */
-    35, 0, 518319136, -192256704, -179852944,
+    35, 0, 518385472, -192532896, -180019568,
     /* node 2851 y: shift, then 4 coefficients */
-    35, 0, -340444288, 397631104, -192231040,
+    35, 0, -340508800, 397940000, -191823920,
     /* node 2851 z: shift, then 4 coefficients */
-    35, 0, 37305204, -193195760, 716368320,
+    35, 0, 37144888, -193037104, 716334144,
     /* node 2852 x: shift, then 4 coefficients */
-    35, 0, 566808960, -206835664, -175136272,
+    35, 0, 566885504, -207205536, -175374944,
     /* node 2852 y: shift, then 4 coefficients */
-    35, 0, -348871840, 454136928, -213975328,
+    35, 0, -349048352, 454304192, -213710256,
     /* node 2852 z: shift, then 4 coefficients */
-    35, 0, 32427594, -196412864, 778546880,
+    35, 0, 32193528, -196342752, 778408768,
     /* node 2853 x: shift, then 4 coefficients */
-    35, 0, 472306688, -189159376, -86683216,
+    35, 0, 471933440, -189303024, -86761312,
     /* node 2853 y: shift, then 4 coefficients */
-    35, 0, -335553760, 438127200, -159578496,
+    35, 0, -335503744, 437308960, -159854928,
     /* node 2853 z: shift, then 4 coefficients */
-    35, 0, 25835614, -143966304, 633976064,
+    35, 0, 25558664, -143758304, 633856128,
     /* node 2854 x: shift, then 4 coefficients */
-    35, 0, 536669920, -212707712, -78977008,
+    35, 0, 536731680, -212580560, -79152384,
     /* node 2854 y: shift, then 4 coefficients */
-    35, 0, -368907360, 518239968, -163140784,
+    35, 0, -369304672, 520008224, -162285376,
     /* node 2854 z: shift, then 4 coefficients */
-    35, 0, 22785664, -138288288, 726382144,
+    35, 0, 22624020, -137603744, 726730688,
     /* node 2855 x: shift, then 4 coefficients */
-    35, 0, 580007168, -215181936, -116985880,
+    35, 0, 580305152, -215723888, -117206480,
     /* node 2855 y: shift, then 4 coefficients */
-    34, 0, -183524512, 264897984, -96949144,
+    34, 0, -183633024, 264998384, -96846816,
     /* node 2855 z: shift, then 4 coefficients */
-    35, 0, 22163526, -173234656, 801263040,
+    35, 0, 22112880, -173084576, 801404864,
     /* node 2856 x: shift, then 4 coefficients */
-    35, 0, 671704960, -247368704, -108207056,
+    35, 0, 671560576, -247535856, -108491088,
     /* node 2856 y: shift, then 4 coefficients */
-    34, 0, -198599808, 327310272, -97292360,
+    34, 0, -198784176, 327590720, -97205160,
     /* node 2856 z: shift, then 4 coefficients */
-    34, 0, 6808198, -81905640, 471204800,
+    34, 0, 6751029, -81728600, 471118752,
     /* node 2857 x: shift, then 4 coefficients */
-    35, 0, 643400576, -252877168, -83457048,
+    35, 0, 643296064, -253168800, -83645960,
     /* node 2857 y: shift, then 4 coefficients */
-    34, 0, -199670416, 326145920, -85333040,
+    34, 0, -199846032, 326093920, -85387504,
     /* node 2857 z: shift, then 4 coefficients */
-    35, 0, 7474130, -133949200, 902566848,
+    35, 0, 7393842, -133745344, 902401088,
     /* node 2858 x: shift, then 4 coefficients */
-    34, 0, 398471488, -139628864, -51233244,
+    34, 0, 398429568, -139530608, -51315720,
     /* node 2858 y: shift, then 4 coefficients */
-    34, 0, -209048144, 424162592, -96726008,
+    34, 0, -209094896, 424449408, -96771160,
     /* node 2858 z: shift, then 4 coefficients */
-    34, 0, 455435, -78333216, 583085312,
+    34, 0, 394049, -78267224, 583087104,
     /* node 2859 x: shift, then 4 coefficients */
-    34, 0, 348070816, -126243712, -67611384,
+    34, 0, 347986464, -126430848, -67727624,
     /* node 2859 y: shift, then 4 coefficients */
-    34, 0, -196156944, 316127488, -105793928,
+    34, 0, -196245840, 316269728, -105745560,
     /* node 2859 z: shift, then 4 coefficients */
-    34, 0, 7308660, -89094184, 491474880,
+    34, 0, 7185543, -88953280, 491433824,
     /* node 2860 x: shift, then 4 coefficients */
-    34, 0, 402378336, -140327088, -63826684,
+    34, 0, 402497696, -140219968, -63866744,
     /* node 2860 y: shift, then 4 coefficients */
-    34, 0, -206316512, 402384640, -104989656,
+    34, 0, -206407696, 402708192, -104983328,
     /* node 2860 z: shift, then 4 coefficients */
-    34, 0, -1559418, -86097512, 589902080,
+    34, 0, -1620873, -86030944, 589921920,
     /* node 2861 x: shift, then 4 coefficients */
-    34, 0, 389876192, -131991344, -41116856,
+    34, 0, 389755712, -132087272, -41187376,
     /* node 2861 y: shift, then 4 coefficients */
-    34, 0, -214599584, 428577856, -81068000,
+    34, 0, -214700112, 428736704, -80930264,
     /* node 2861 z: shift, then 4 coefficients */
-    34, 0, 645080, -56378704, 561515712,
+    34, 0, 595310, -56112728, 561422592,
     /* node 2862 x: shift, then 4 coefficients */
-    34, 0, 465377728, -172297712, -32519130,
+    34, 0, 465572128, -172358816, -32550172,
     /* node 2862 y: shift, then 4 coefficients */
-    34, 0, -234376704, 522390944, -67899736,
+    34, 0, -234474112, 522562272, -67700576,
     /* node 2862 z: shift, then 4 coefficients */
-    34, 0, -7969676, -50063116, 702935744,
+    34, 0, -7930934, -49804948, 702829376,
     /* node 2863 x: shift, then 4 coefficients */
-    34, 0, 500477568, -163724480, -51651824,
+    34, 0, 500774112, -163603424, -51657056,
     /* node 2863 y: shift, then 4 coefficients */
-    34, 0, -232558128, 551450816, -80115472,
+    34, 0, -232601808, 552113728, -80059904,
     /* node 2863 z: shift, then 4 coefficients */
-    34, 0, -9322270, -63946784, 747000256,
+    34, 0, -9523682, -63980692, 746920384,
     /* node 2864 x: shift, then 4 coefficients */
-    34, 0, 540743616, -193170720, -40382788,
+    34, 0, 540807808, -193240480, -40480040,
     /* node 2864 y: shift, then 4 coefficients */
-    34, 0, -244886576, 596958592, -65178584,
+    34, 0, -245032144, 597442944, -65093576,
     /* node 2864 z: shift, then 4 coefficients */
-    34, 0, -6219186, -49123172, 824717952,
+    34, 0, -6293099, -49082232, 824603712,
     /* node 2865 x: shift, then 4 coefficients */
-    34, 0, 527004704, -164223456, -21942560,
+    34, 0, 526859904, -164361824, -21977248,
     /* node 2865 y: shift, then 4 coefficients */
-    34, 0, -238692240, 600522240, -57230788,
+    34, 0, -238805008, 600786560, -57031156,
     /* node 2865 z: shift, then 4 coefficients */
-    34, 0, -6214636, -34628952, 809197504,
+    34, 0, -6100946, -34221748, 809026432,
     /* node 2866 x: shift, then 4 coefficients */
-    34, 0, 574846912, -217944704, -30959696,
+    34, 0, 575347072, -217781264, -31070144,
     /* node 2866 y: shift, then 4 coefficients */
-    34, 0, -254751056, 645738688, -59317536,
+    34, 0, -255008128, 646243328, -59422708,
     /* node 2866 z: shift, then 4 coefficients */
-    34, 0, -9649037, -43549276, 902422272,
+    34, 0, -9769193, -43669340, 902483328,
     /* node 2867 x: shift, then 4 coefficients */
-    34, 0, 549812288, -214206192, -57891796,
+    34, 0, 549510272, -214910768, -57996484,
     /* node 2867 y: shift, then 4 coefficients */
-    34, 0, -244242432, 602118720, -75087248,
+    34, 0, -244500528, 602077056, -74731112,
     /* node 2867 z: shift, then 4 coefficients */
-    34, 0, -10153474, -60239100, 850003776,
+    34, 0, -10071308, -59659892, 849491904,
     /* node 2868 x: shift, then 4 coefficients */
-    34, 0, 595167808, -193360224, -55877608,
+    34, 0, 594204224, -194171312, -56440528,
     /* node 2868 y: shift, then 4 coefficients */
-    34, 0, -249917296, 649572672, -73310912,
+    34, 0, -250017008, 648796800, -72798032,
     /* node 2868 z: shift, then 4 coefficients */
-    34, 0, -15239174, -53472480, 931098880,
+    34, 0, -15527091, -52788872, 930226240,
     /* node 2869 x: shift, then 4 coefficients */
-    34, 0, 552766400, -197435264, -2886299,
+    34, 0, 552476736, -197860336, -2986700,
     /* node 2869 y: shift, then 4 coefficients */
-    34, 0, -248436672, 620765376, -49213504,
+    34, 0, -248583248, 620951936, -49083432,
     /* node 2869 z: shift, then 4 coefficients */
-    34, 0, -7235980, -38131340, 860955136,
+    34, 0, -7075754, -37846556, 860744320,
     /* node 2870 x: shift, then 4 coefficients */
-    34, 0, 584549632, -216791664, 8204154,
+    34, 0, 584015680, -217259600, 7993382,
     /* node 2870 y: shift, then 4 coefficients */
-    34, 0, -255717296, 650509184, -42117524,
+    34, 0, -255874800, 650691008, -41861572,
     /* node 2870 z: shift, then 4 coefficients */
-    34, 0, -2313628, -36502164, 923348288,
+    34, 0, -2354081, -36098824, 923127232,
     /* node 2871 x: shift, then 4 coefficients */
-    34, 0, 610021696, -198539632, -4235552,
+    34, 0, 610539008, -198649968, -4194245,
     /* node 2871 y: shift, then 4 coefficients */
-    34, 0, -249647280, 675448320, -47163040,
+    34, 0, -249856144, 676279232, -47207192,
     /* node 2871 z: shift, then 4 coefficients */
-    34, 0, -2590652, -40554008, 968554240,
+    34, 0, -2619796, -40774444, 968443584,
     /* node 2872 x: shift, then 4 coefficients */
-    34, 0, 619299072, -222687712, 3452806,
+    34, 0, 619680128, -222479136, 3530750,
     /* node 2872 y: shift, then 4 coefficients */
-    34, 0, -255295312, 681141952, -44899876,
+    34, 0, -255419264, 681826240, -44783856,
     /* node 2872 z: shift, then 4 coefficients */
-    34, 0, -3081206, -40387500, 988168320,
+    34, 0, -2971462, -40486108, 987832832,
     /* node 2873 x: shift, then 4 coefficients */
-    34, 0, 615653056, -197816256, 20994968,
+    34, 0, 615470656, -198055952, 20961946,
     /* node 2873 y: shift, then 4 coefficients */
-    34, 0, -246990576, 674210176, -39272164,
+    34, 0, -247220592, 673884992, -38952836,
     /* node 2873 z: shift, then 4 coefficients */
-    34, 0, 2338138, -33912920, 975808832,
+    34, 0, 2448668, -33874456, 975704896,
     /* node 2874 x: shift, then 4 coefficients */
-    34, 0, 630132160, -250992208, 17732448,
+    34, 0, 629665344, -251734272, 18081944,
     /* node 2874 y: shift, then 4 coefficients */
-    34, 0, -254242608, 688226112, -43126860,
+    34, 0, -254585968, 688141248, -42903084,
     /* node 2874 z: shift, then 4 coefficients */
-    34, 0, 6533174, -41313552, 1007473792,
+    34, 0, 6653206, -41134584, 1006895104,
     /* node 2875 x: shift, then 4 coefficients */
-    34, 0, 627811008, -241610928, -18115878,
+    34, 0, 627419392, -241717248, -18956570,
     /* node 2875 y: shift, then 4 coefficients */
-    34, 0, -256832912, 691385600, -49762132,
+    34, 0, -256849776, 691152832, -49997296,
     /* node 2875 z: shift, then 4 coefficients */
-    34, 0, -6536080, -43862136, 996305216,
+    34, 0, -6951139, -43502612, 996036928,
     /* node 2876 x: shift, then 4 coefficients */
-    34, 0, 656272512, -229488192, 3679134,
+    34, 0, 656291776, -229598176, 3016346,
     /* node 2876 y: shift, then 4 coefficients */
-    34, 0, -249177376, 703840448, -47078716,
+    34, 0, -248907856, 703785728, -47434288,
     /* node 2876 z: shift, then 4 coefficients */
-    33, 0, 412263, -22852854, 521348000,
+    33, 0, 48031, -22651778, 521591328,
     /* node 2877 x: shift, then 4 coefficients */
-    34, 0, 622649344, -228466448, 43332340,
+    34, 0, 622517120, -228967056, 43357324,
     /* node 2877 y: shift, then 4 coefficients */
-    34, 0, -249691120, 655229184, -33915888,
+    34, 0, -249904304, 655043712, -33853420,
     /* node 2877 z: shift, then 4 coefficients */
-    34, 0, 4292276, -36307940, 977285504,
+    34, 0, 4394543, -36169560, 977053888,
     /* node 2878 x: shift, then 4 coefficients */
-    34, 0, 659645184, -239052112, 43348884,
+    34, 0, 659391744, -238548688, 42963088,
     /* node 2878 y: shift, then 4 coefficients */
-    34, 0, -246351328, 686104192, -39317472,
+    34, 0, -246142240, 686088448, -39229516,
     /* node 2878 z: shift, then 4 coefficients */
-    33, 0, 6589476, -21657320, 520877280,
+    33, 0, 6348983, -21509006, 520799296,
     /* node 2879 x: shift, then 4 coefficients */
-    34, 0, 635616128, -252338688, 69412080,
+    34, 0, 635852864, -252126480, 69193808,
     /* node 2879 y: shift, then 4 coefficients */
-    34, 0, -250595312, 650566400, -28408594,
+    34, 0, -250716736, 650633984, -28210814,
     /* node 2879 z: shift, then 4 coefficients */
-    34, 0, 15062997, -37067200, 999004096,
+    34, 0, 14863248, -36873112, 998476288,
     /* node 2880 x: shift, then 4 coefficients */
-    34, 0, 665257664, -267755728, 58498044,
+    34, 0, 664633472, -267717472, 58070392,
     /* node 2880 y: shift, then 4 coefficients */
-    34, 0, -244098432, 659255552, -41746688,
+    34, 0, -244044544, 659404160, -41754756,
     /* node 2880 z: shift, then 4 coefficients */
-    33, 0, 5042816, -25404954, 511355776,
+    33, 0, 4997851, -25389768, 511241472,
     /* node 2881 x: shift, then 4 coefficients */
-    34, 0, 681272896, -281682304, 42811296,
+    34, 0, 681620224, -282018464, 44181208,
     /* node 2881 y: shift, then 4 coefficients */
-    34, 0, -253145328, 691400768, -49834320,
+    34, 0, -253117616, 691423232, -49429120,
     /* node 2881 z: shift, then 4 coefficients */
-    33, 0, 7016706, -29262244, 523004896,
+    33, 0, 7156124, -29321392, 522772640,
     /* node 2882 x: shift, then 4 coefficients */
-    34, 0, 676769216, -274691072, 71772344,
+    34, 0, 676398848, -274688288, 71400528,
     /* node 2882 y: shift, then 4 coefficients */
-    34, 0, -241134000, 656558336, -50144100,
+    34, 0, -241608160, 657041472, -50113416,
     /* node 2882 z: shift, then 4 coefficients */
-    33, 0, 10870692, -28704140, 510521024,
+    33, 0, 10778713, -28658582, 510329568,
     /* node 2883 x: shift, then 4 coefficients */
-    34, 0, 660818944, -280012256, 74727976,
+    34, 0, 660778432, -280028000, 74100424,
     /* node 2883 y: shift, then 4 coefficients */
-    34, 0, -243626848, 634899648, -45949764,
+    34, 0, -243913296, 635106624, -46172612,
     /* node 2883 z: shift, then 4 coefficients */
-    33, 0, 9207447, -29129178, 502668064,
+    33, 0, 9084894, -29074324, 502567296,
     /* node 2884 x: shift, then 4 coefficients */
-    34, 0, 630582144, -251172480, 84530992,
+    34, 0, 631005120, -251718320, 84720920,
     /* node 2884 y: shift, then 4 coefficients */
-    34, 0, -242653344, 624613120, -30971170,
+    34, 0, -242848688, 624573952, -30792008,
     /* node 2884 z: shift, then 4 coefficients */
-    34, 0, 18577378, -39587356, 990660480,
+    34, 0, 18751554, -39536664, 990609024,
     /* node 2885 x: shift, then 4 coefficients */
-    34, 0, 292633344, -117120208, -157353280,
+    34, 0, 292637472, -117222824, -157458976,
     /* node 2885 y: shift, then 4 coefficients */
-    35, 0, -342767360, 339702144, -214629456,
+    35, 0, -342714528, 339978400, -214672976,
     /* node 2885 z: shift, then 4 coefficients */
-    35, 0, 51674204, -196274992, 772069696,
+    35, 0, 51713820, -196345712, 771845504,
     /* node 2886 x: shift, then 4 coefficients */
-    34, 0, 312091552, -132113136, -169345472,
+    34, 0, 312071904, -132176864, -169466432,
     /* node 2886 y: shift, then 4 coefficients */
-    35, 0, -357647648, 347149280, -211497456,
+    35, 0, -357057888, 346747040, -211760960,
     /* node 2886 z: shift, then 4 coefficients */
-    35, 0, 59489036, -195188288, 811813632,
+    35, 0, 59733436, -195430816, 811286656,
     /* node 2887 x: shift, then 4 coefficients */
-    34, 0, 331044160, -141197520, -179973248,
+    34, 0, 331177408, -141373056, -180225456,
     /* node 2887 y: shift, then 4 coefficients */
-    35, 0, -370782848, 363669216, -214247728,
+    35, 0, -370128096, 363776576, -214952992,
     /* node 2887 z: shift, then 4 coefficients */
-    34, 0, 26441682, -97785608, 434271360,
+    34, 0, 26380748, -97745472, 434213440,
     /* node 2888 x: shift, then 4 coefficients */
-    34, 0, 316610976, -132884312, -165515568,
+    34, 0, 316782976, -133056768, -165806160,
     /* node 2888 y: shift, then 4 coefficients */
-    35, 0, -364338880, 362840288, -211092752,
+    35, 0, -364334816, 363302176, -211319328,
     /* node 2888 z: shift, then 4 coefficients */
-    34, 0, 26995962, -99579048, 417541024,
+    34, 0, 26959610, -99562048, 417624384,
     /* node 2889 x: shift, then 4 coefficients */
-    35, 0, 525056416, -192321360, -279857536,
+    35, 0, 525307968, -192655504, -280095200,
     /* node 2889 y: shift, then 4 coefficients */
-    35, 0, -322355712, 334780032, -216144320,
+    35, 0, -322385344, 335175200, -216237744,
     /* node 2889 z: shift, then 4 coefficients */
-    35, 0, 45808204, -198453296, 706355392,
+    35, 0, 45807096, -198316576, 706163904,
     /* node 2890 x: shift, then 4 coefficients */
-    35, 0, 550585152, -213650656, -268252688,
+    35, 0, 550701632, -213958864, -268387552,
     /* node 2890 y: shift, then 4 coefficients */
-    35, 0, -340751360, 355162112, -203501648,
+    35, 0, -340787776, 355497728, -203477552,
     /* node 2890 z: shift, then 4 coefficients */
-    35, 0, 45543916, -199296592, 748572416,
+    35, 0, 45444476, -199196272, 748510656,
     /* node 2891 x: shift, then 4 coefficients */
-    34, 0, 335582208, -141140752, -172881984,
+    34, 0, 335610336, -141303296, -172965856,
     /* node 2891 y: shift, then 4 coefficients */
-    35, 0, -372499104, 382153664, -220719472,
+    35, 0, -372567904, 382624416, -220773408,
     /* node 2891 z: shift, then 4 coefficients */
-    34, 0, 24811438, -99165040, 442871936,
+    34, 0, 24588636, -99026528, 442962176,
     /* node 2892 x: shift, then 4 coefficients */
-    34, 0, 301131200, -121782936, -137898336,
+    34, 0, 301120704, -121887792, -137914736,
     /* node 2892 y: shift, then 4 coefficients */
-    35, 0, -364878816, 390040928, -206743472,
+    35, 0, -364815840, 390277472, -206674560,
     /* node 2892 z: shift, then 4 coefficients */
-    34, 0, 22277262, -102287072, 415825952,
+    34, 0, 22172176, -102217112, 415817696,
     /* node 2893 x: shift, then 4 coefficients */
-    34, 0, 337355104, -140273504, -160228064,
+    34, 0, 337323712, -140445392, -160261376,
     /* node 2893 y: shift, then 4 coefficients */
-    35, 0, -381346304, 403498720, -210820720,
+    35, 0, -381368576, 403873088, -211015072,
     /* node 2893 z: shift, then 4 coefficients */
-    34, 0, 21482144, -98039056, 453521920,
+    34, 0, 21312210, -98013664, 453621504,
     /* node 2894 x: shift, then 4 coefficients */
-    34, 0, 302764512, -119075920, -127738616,
+    34, 0, 302722464, -119212152, -127795256,
     /* node 2894 y: shift, then 4 coefficients */
-    35, 0, -359167488, 407001088, -221181568,
+    35, 0, -359310624, 407319040, -221032720,
     /* node 2894 z: shift, then 4 coefficients */
-    34, 0, 19085060, -100612008, 418302688,
+    34, 0, 19024680, -100550424, 418279968,
     /* node 2895 x: shift, then 4 coefficients */
-    34, 0, 343012608, -145145312, -148623200,
+    34, 0, 343046400, -145302352, -148653360,
     /* node 2895 y: shift, then 4 coefficients */
-    35, 0, -394496128, 429348032, -204906096,
+    35, 0, -394582400, 429670240, -204779328,
     /* node 2895 z: shift, then 4 coefficients */
-    34, 0, 20007798, -99737000, 470387040,
+    34, 0, 19826142, -99673632, 470472288,
     /* node 2896 x: shift, then 4 coefficients */
-    34, 0, 361274912, -158865536, -185305600,
+    34, 0, 361238624, -159104544, -185203856,
     /* node 2896 y: shift, then 4 coefficients */
-    35, 0, -395064544, 410135456, -220006736,
+    35, 0, -395193568, 410100448, -219573056,
     /* node 2896 z: shift, then 4 coefficients */
-    34, 0, 21487136, -96367000, 481606400,
+    34, 0, 21386490, -96253360, 481578368,
     /* node 2897 x: shift, then 4 coefficients */
-    34, 0, 370914816, -166477776, -177606320,
+    34, 0, 370893312, -166644272, -177602880,
     /* node 2897 y: shift, then 4 coefficients */
-    35, 0, -400585856, 425926944, -217281488,
+    35, 0, -400742464, 425911168, -216842448,
     /* node 2897 z: shift, then 4 coefficients */
-    34, 0, 19365856, -96278608, 501834208,
+    34, 0, 19243354, -96206784, 501849984,
     /* node 2898 x: shift, then 4 coefficients */
-    34, 0, 312127392, -123000424, -115310296,
+    34, 0, 312098752, -123125376, -115312664,
     /* node 2898 y: shift, then 4 coefficients */
-    35, 0, -370429760, 435977280, -208592832,
+    35, 0, -370628160, 436283968, -208326320,
     /* node 2898 z: shift, then 4 coefficients */
-    34, 0, 16751012, -100224520, 435022368,
+    34, 0, 16624122, -100170568, 435043968,
     /* node 2899 x: shift, then 4 coefficients */
-    34, 0, 331734592, -128063248, -111080760,
+    34, 0, 331682592, -128197256, -111135944,
     /* node 2899 y: shift, then 4 coefficients */
-    35, 0, -376366080, 478181600, -216478688,
+    35, 0, -376457472, 478409952, -216132592,
     /* node 2899 z: shift, then 4 coefficients */
-    34, 0, 14120590, -100388144, 461849664,
+    34, 0, 14003434, -100340344, 461889696,
     /* node 2900 x: shift, then 4 coefficients */
-    34, 0, 351421728, -147817712, -138008384,
+    34, 0, 351352512, -147997456, -138086928,
     /* node 2900 y: shift, then 4 coefficients */
-    35, 0, -393817504, 454623776, -208462336,
+    35, 0, -394077600, 454938848, -208153488,
     /* node 2900 z: shift, then 4 coefficients */
-    34, 0, 17713776, -100331984, 486620640,
+    34, 0, 17601064, -100203096, 486599904,
     /* node 2901 x: shift, then 4 coefficients */
-    34, 0, 380512704, -158066320, -133274664,
+    34, 0, 380388896, -158250528, -133248448,
     /* node 2901 y: shift, then 4 coefficients */
-    34, 0, -202286896, 255323872, -101864968,
+    34, 0, -202385568, 255381072, -101725032,
     /* node 2901 z: shift, then 4 coefficients */
-    34, 0, 12418346, -97225752, 529860480,
+    34, 0, 12316858, -97089968, 529795232,
     /* node 2902 x: shift, then 4 coefficients */
-    34, 0, 368174208, -139379424, -100841352,
+    34, 0, 368136064, -139466240, -100853384,
     /* node 2902 y: shift, then 4 coefficients */
-    34, 0, -195985184, 293321984, -111669656,
+    34, 0, -196072032, 293471360, -111566424,
     /* node 2902 z: shift, then 4 coefficients */
-    34, 0, 6266461, -100856208, 524617696,
+    34, 0, 6179538, -100733480, 524535648,
     /* node 2903 x: shift, then 4 coefficients */
-    34, 0, 419286912, -169532128, -120398096,
+    34, 0, 419223808, -169789440, -120393784,
     /* node 2903 y: shift, then 4 coefficients */
-    34, 0, -205638032, 309013760, -107511624,
+    34, 0, -205697232, 309275744, -107468232,
     /* node 2903 z: shift, then 4 coefficients */
-    34, 0, 4406656, -94522768, 592087168,
+    34, 0, 4377513, -94399776, 592126336,
     /* node 2904 x: shift, then 4 coefficients */
-    34, 0, 391056736, -178750928, -160974784,
+    34, 0, 391055808, -178955232, -160955648,
     /* node 2904 y: shift, then 4 coefficients */
-    35, 0, -409890336, 457930272, -201060464,
+    35, 0, -409950816, 458142112, -200964144,
     /* node 2904 z: shift, then 4 coefficients */
-    34, 0, 19775316, -93398432, 528822528,
+    34, 0, 19541718, -93354848, 529050400,
     /* node 2905 x: shift, then 4 coefficients */
-    34, 0, 416402688, -190171584, -151394272,
+    34, 0, 416369216, -190412448, -151277520,
     /* node 2905 y: shift, then 4 coefficients */
-    34, 0, -210940272, 256671584, -93942800,
+    34, 0, -211049680, 256772128, -93715800,
     /* node 2905 z: shift, then 4 coefficients */
-    34, 0, 14067751, -88052672, 568899840,
+    34, 0, 13993105, -87909680, 568785344,
     /* node 2906 x: shift, then 4 coefficients */
-    34, 0, 420093088, -151025648, -94157408,
+    34, 0, 420095744, -151014816, -94224624,
     /* node 2906 y: shift, then 4 coefficients */
-    34, 0, -204759360, 366168096, -107513096,
+    34, 0, -204957168, 366331328, -107457688,
     /* node 2906 z: shift, then 4 coefficients */
-    34, 0, -312821, -90157320, 599066112,
+    34, 0, -439671, -90130016, 598911872,
     /* node 2907 x: shift, then 4 coefficients */
-    34, 0, 501838720, -183050288, -78897888,
+    34, 0, 501805088, -183451232, -78834224,
     /* node 2907 y: shift, then 4 coefficients */
-    34, 0, -225561648, 497631456, -91500488,
+    34, 0, -225686224, 497908096, -91443768,
     /* node 2907 z: shift, then 4 coefficients */
-    34, 0, -9145288, -72701344, 737957568,
+    34, 0, -9169736, -72562168, 737646080,
     /* node 2908 x: shift, then 4 coefficients */
-    34, 0, 492941824, -186271504, -102345648,
+    34, 0, 492991456, -186614128, -102407856,
     /* node 2908 y: shift, then 4 coefficients */
-    34, 0, -217052528, 425773632, -100314096,
+    34, 0, -217312160, 425671136, -100270056,
     /* node 2908 z: shift, then 4 coefficients */
-    34, 0, -7455364, -86781216, 712468224,
+    34, 0, -7634745, -86766064, 712302784,
     /* node 2909 x: shift, then 4 coefficients */
-    34, 0, 571455616, -204957888, -101643184,
+    34, 0, 571493824, -205292480, -101844336,
     /* node 2909 y: shift, then 4 coefficients */
-    34, 0, -231738816, 523822976, -81815568,
+    34, 0, -232116960, 523423296, -81707560,
     /* node 2909 z: shift, then 4 coefficients */
-    34, 0, -7957006, -63664272, 822051648,
+    34, 0, -8166100, -63579092, 821849920,
     /* node 2910 x: shift, then 4 coefficients */
-    34, 0, 565721664, -204052592, -68607552,
+    34, 0, 566375808, -204037264, -68664752,
     /* node 2910 y: shift, then 4 coefficients */
-    34, 0, -242336800, 584740672, -79193504,
+    34, 0, -242327680, 585279296, -79142992,
     /* node 2910 z: shift, then 4 coefficients */
-    34, 0, -10604513, -61559108, 865556224,
+    34, 0, -10692477, -61650956, 865455552,
     /* node 2911 x: shift, then 4 coefficients */
-    34, 0, 613680128, -226347168, -78439776,
+    34, 0, 613338176, -226880448, -78457760,
     /* node 2911 y: shift, then 4 coefficients */
-    34, 0, -242641472, 607764224, -76217464,
+    34, 0, -243076592, 606917184, -76042776,
     /* node 2911 z: shift, then 4 coefficients */
-    34, 0, -12973589, -57617208, 920223936,
+    34, 0, -13281404, -57441768, 919483328,
     /* node 2912 x: shift, then 4 coefficients */
-    34, 0, 534639232, -219214992, -117479472,
+    34, 0, 534785792, -219304896, -117622184,
     /* node 2912 y: shift, then 4 coefficients */
-    34, 0, -229369120, 423521952, -77695832,
+    34, 0, -229462592, 423723552, -77564408,
     /* node 2912 z: shift, then 4 coefficients */
-    34, 0, -8340460, -70295616, 761725312,
+    34, 0, -8320716, -70147224, 761472448,
     /* node 2913 x: shift, then 4 coefficients */
-    34, 0, 605876416, -235589744, -107060032,
+    34, 0, 605631808, -235874432, -107304248,
     /* node 2913 y: shift, then 4 coefficients */
-    34, 0, -238338480, 534001184, -67206256,
+    34, 0, -238321184, 533851872, -67139064,
     /* node 2913 z: shift, then 4 coefficients */
-    34, 0, -8326446, -58017932, 858601280,
+    34, 0, -8442525, -58127476, 858089920,
     /* node 2914 x: shift, then 4 coefficients */
-    34, 0, 607118528, -216364400, -70604624,
+    34, 0, 608597696, -215823824, -70261680,
     /* node 2914 y: shift, then 4 coefficients */
-    34, 0, -247918480, 624463104, -67767720,
+    34, 0, -247641376, 625930176, -67834280,
     /* node 2914 z: shift, then 4 coefficients */
-    34, 0, -10657771, -51098888, 918378752,
+    34, 0, -10665007, -51528688, 918755968,
     /* node 2915 x: shift, then 4 coefficients */
-    34, 0, 630443968, -247425312, -56430744,
+    34, 0, 631809088, -246973664, -56109928,
     /* node 2915 y: shift, then 4 coefficients */
-    34, 0, -257640816, 665487168, -64571496,
+    34, 0, -257361632, 666948096, -64440956,
     /* node 2915 z: shift, then 4 coefficients */
-    34, 0, -11180654, -46537352, 975143424,
+    34, 0, -10962789, -46939680, 975808640,
     /* node 2916 x: shift, then 4 coefficients */
-    34, 0, 646009088, -219611808, -66610804,
+    34, 0, 645204544, -220155808, -67220160,
     /* node 2916 y: shift, then 4 coefficients */
-    34, 0, -239461488, 659099904, -64128468,
+    34, 0, -239690944, 658403648, -64082072,
     /* node 2916 z: shift, then 4 coefficients */
-    34, 0, -11998369, -55692520, 985727232,
+    34, 0, -12562774, -55608484, 984786752,
     /* node 2917 x: shift, then 4 coefficients */
-    34, 0, 671067392, -245248016, -61694140,
+    34, 0, 671264640, -245098080, -62226000,
     /* node 2917 y: shift, then 4 coefficients */
-    34, 0, -248964304, 678258432, -58189764,
+    34, 0, -249114288, 679161472, -58290756,
     /* node 2917 z: shift, then 4 coefficients */
-    34, 0, -6854876, -50027576, 1014407488,
+    34, 0, -7687369, -50198932, 1013750912,
     /* node 2918 x: shift, then 4 coefficients */
-    34, 0, 654594176, -214119760, -48694176,
+    34, 0, 655213504, -214251904, -48324764,
     /* node 2918 y: shift, then 4 coefficients */
-    34, 0, -245669936, 698212096, -60323484,
+    34, 0, -246105584, 699228800, -60327120,
     /* node 2918 z: shift, then 4 coefficients */
-    33, 0, -6800006, -23200244, 511538400,
+    33, 0, -6764792, -23259194, 511542176,
     /* node 2919 x: shift, then 4 coefficients */
-    34, 0, 689850688, -276706944, -54373896,
+    34, 0, 691663744, -276181184, -53909116,
     /* node 2919 y: shift, then 4 coefficients */
-    34, 0, -257651840, 700992512, -54369004,
+    34, 0, -257831120, 702857024, -53878844,
     /* node 2919 z: shift, then 4 coefficients */
-    33, 0, -5042108, -23696732, 520200288,
+    33, 0, -5023716, -23714908, 520431168,
     /* node 2920 x: shift, then 4 coefficients */
-    34, 0, 669464576, -264890336, -72521952,
+    34, 0, 668933440, -264952720, -72971992,
     /* node 2920 y: shift, then 4 coefficients */
-    34, 0, -251214480, 645375680, -49591568,
+    34, 0, -251507264, 644128000, -49682668,
     /* node 2920 z: shift, then 4 coefficients */
-    34, 0, -10123952, -45309800, 988171648,
+    34, 0, -10707503, -45352576, 987152512,
     /* node 2921 x: shift, then 4 coefficients */
-    34, 0, 667320896, -251761664, -55705104,
+    34, 0, 667210496, -252181824, -55864040,
     /* node 2921 y: shift, then 4 coefficients */
-    34, 0, -250443392, 663955648, -45267868,
+    34, 0, -250781168, 663823488, -45015472,
     /* node 2921 z: shift, then 4 coefficients */
-    34, 0, -4735208, -46035988, 1002862720,
+    34, 0, -5118776, -45774708, 1002510976,
     /* node 2922 x: shift, then 4 coefficients */
-    34, 0, 672556032, -249261392, -21313740,
+    34, 0, 672850240, -249471952, -21559474,
     /* node 2922 y: shift, then 4 coefficients */
-    34, 0, -252126256, 706598080, -51348348,
+    34, 0, -252350576, 706578304, -51234604,
     /* node 2922 z: shift, then 4 coefficients */
-    33, 0, -1852849, -23037926, 522352864,
+    33, 0, -1841095, -22831466, 522544256,
     /* node 2923 x: shift, then 4 coefficients */
-    34, 0, 663421888, -272146080, 4030860,
+    34, 0, 662441856, -272790784, 3037085,
     /* node 2923 y: shift, then 4 coefficients */
-    34, 0, -257572128, 697367040, -49945460,
+    34, 0, -257881472, 696693888, -50194476,
     /* node 2923 z: shift, then 4 coefficients */
-    33, 0, 2886854, -25479732, 522339296,
+    33, 0, 2655144, -25184102, 522176672,
     /* node 2924 x: shift, then 4 coefficients */
-    34, 0, 681455424, -258648688, -22575424,
+    34, 0, 682158464, -258646240, -22209088,
     /* node 2924 y: shift, then 4 coefficients */
-    34, 0, -248035824, 690045888, -53256688,
+    34, 0, -248277712, 690876032, -53227832,
     /* node 2924 z: shift, then 4 coefficients */
-    33, 0, 2696917, -25628966, 513127584,
+    33, 0, 2762354, -25851428, 513125952,
     /* node 2925 x: shift, then 4 coefficients */
-    34, 0, 695240896, -289348192, 2652764,
+    34, 0, 695432128, -289520256, 2266498,
     /* node 2925 y: shift, then 4 coefficients */
-    34, 0, -248091504, 676765568, -49629648,
+    34, 0, -248257744, 676855680, -49555388,
     /* node 2925 z: shift, then 4 coefficients */
-    33, 0, 6708616, -28534274, 510970720,
+    33, 0, 6658634, -28542412, 510864512,
     /* node 2926 x: shift, then 4 coefficients */
-    34, 0, 674385152, -265263520, 19001780,
+    34, 0, 674074624, -265576288, 18937634,
     /* node 2926 y: shift, then 4 coefficients */
-    34, 0, -249766464, 683075904, -45949284,
+    34, 0, -249733200, 682643840, -45553324,
     /* node 2926 z: shift, then 4 coefficients */
-    33, 0, 6390866, -27868664, 516467648,
+    33, 0, 6219228, -27784208, 516229568,
     /* node 2927 x: shift, then 4 coefficients */
-    34, 0, 695730176, -311698496, 15365738,
+    34, 0, 695624704, -311978496, 15325138,
     /* node 2927 y: shift, then 4 coefficients */
-    34, 0, -255179840, 664097216, -51178284,
+    34, 0, -255406960, 664010880, -50991124,
     /* node 2927 z: shift, then 4 coefficients */
-    33, 0, 8891188, -31073040, 500746496,
+    33, 0, 8890602, -31115632, 500535872,
     /* node 2928 x: shift, then 4 coefficients */
-    34, 0, 687264256, -305492000, -10801158,
+    34, 0, 687027648, -305802656, -11088917,
     /* node 2928 y: shift, then 4 coefficients */
-    34, 0, -254332688, 654299072, -43073808,
+    34, 0, -254652256, 654508992, -42949100,
     /* node 2928 z: shift, then 4 coefficients */
-    34, 0, 13947873, -49647820, 991998784,
+    34, 0, 13765116, -49566364, 991518144,
     /* node 2929 x: shift, then 4 coefficients */
-    34, 0, 679328832, -295293792, 315835,
+    34, 0, 679485312, -295442464, 117834,
     /* node 2929 y: shift, then 4 coefficients */
-    34, 0, -247736928, 629204160, -41580060,
+    34, 0, -247879520, 629346112, -41599720,
     /* node 2929 z: shift, then 4 coefficients */
-    34, 0, 19517812, -50640540, 947699648,
+    34, 0, 19439108, -50696004, 947456704,
     /* node 2930 x: shift, then 4 coefficients */
-    34, 0, 687007872, -297848096, 31726200,
+    34, 0, 686502784, -297877952, 31481004,
     /* node 2930 y: shift, then 4 coefficients */
-    34, 0, -245191776, 656429952, -50305140,
+    34, 0, -245388304, 656588352, -50062480,
     /* node 2930 z: shift, then 4 coefficients */
-    33, 0, 7592708, -29434466, 505265984,
+    33, 0, 7453459, -29371842, 505094496,
     /* node 2931 x: shift, then 4 coefficients */
-    34, 0, 671463424, -298916864, 36546264,
+    34, 0, 671463616, -299121952, 36420028,
     /* node 2931 y: shift, then 4 coefficients */
-    34, 0, -245286016, 617373056, -54055252,
+    34, 0, -245445712, 617492864, -53986876,
     /* node 2931 z: shift, then 4 coefficients */
-    34, 0, 26522378, -61879076, 937910656,
+    34, 0, 26407352, -61799476, 937596416,
     /* node 2932 x: shift, then 4 coefficients */
-    34, 0, 672318528, -309677440, 46712172,
+    34, 0, 672474048, -309783168, 46617940,
     /* node 2932 y: shift, then 4 coefficients */
-    34, 0, -243617888, 622960896, -56254412,
+    34, 0, -243688320, 623133440, -56067432,
     /* node 2932 z: shift, then 4 coefficients */
-    34, 0, 22482410, -67368760, 971086272,
+    34, 0, 22395248, -67309536, 970724672,
     /* node 2933 x: shift, then 4 coefficients */
-    34, 0, 646176960, -332910720, 57724080,
+    34, 0, 646263808, -333041952, 57558548,
     /* node 2933 y: shift, then 4 coefficients */
-    34, 0, -247107760, 561266432, -59362428,
+    34, 0, -247317664, 561457344, -59383232,
     /* node 2933 z: shift, then 4 coefficients */
-    34, 0, 32324044, -72769048, 868665280,
+    34, 0, 32158708, -72714048, 868465920,
     /* node 2934 x: shift, then 4 coefficients */
-    34, 0, 633033728, -341534912, 38148228,
+    34, 0, 633099008, -341655808, 37941160,
     /* node 2934 y: shift, then 4 coefficients */
-    34, 0, -248436448, 551732352, -51697600,
+    34, 0, -248604608, 551821440, -51673720,
     /* node 2934 z: shift, then 4 coefficients */
-    34, 0, 31592558, -68477592, 828556160,
+    34, 0, 31466400, -68318896, 828396416,
     /* node 2935 x: shift, then 4 coefficients */
-    34, 0, 608988672, -359538240, 58340668,
+    34, 0, 609001088, -359599264, 58187004,
     /* node 2935 y: shift, then 4 coefficients */
-    34, 0, -247910992, 500042560, -54765776,
+    34, 0, -248023456, 500188928, -54743060,
     /* node 2935 z: shift, then 4 coefficients */
-    34, 0, 37433696, -74469496, 765991296,
+    34, 0, 37304944, -74326160, 765873280,
     /* node 2936 x: shift, then 4 coefficients */
-    34, 0, 614476096, -350540640, 71019488,
+    34, 0, 614550464, -350617824, 70879696,
     /* node 2936 y: shift, then 4 coefficients */
-    34, 0, -246878784, 508618528, -65744316,
+    34, 0, -247029248, 508716352, -65692532,
     /* node 2936 z: shift, then 4 coefficients */
-    34, 0, 35905968, -83728080, 796280704,
+    34, 0, 35850768, -83629472, 796198080,
     /* node 2937 x: shift, then 4 coefficients */
-    34, 0, 640946304, -321555168, 73904488,
+    34, 0, 640838144, -321649632, 73531472,
     /* node 2937 y: shift, then 4 coefficients */
-    34, 0, -244980752, 561268800, -61916328,
+    34, 0, -245260224, 561336000, -61952728,
     /* node 2937 z: shift, then 4 coefficients */
-    34, 0, 30279968, -76773048, 888651200,
+    34, 0, 30083284, -76698104, 888297728,
     /* node 2938 x: shift, then 4 coefficients */
-    34, 0, 335629568, -144722192, -194400368,
+    34, 0, 335188416, -144777168, -193874960,
     /* node 2938 y: shift, then 4 coefficients */
-    35, 0, -353556256, 346056480, -225560752,
+    35, 0, -353372000, 345816352, -225196432,
     /* node 2938 z: shift, then 4 coefficients */
-    34, 0, 24836400, -93333064, 428661344,
+    34, 0, 24770618, -93154032, 428439232,
     /* node 2939 x: shift, then 4 coefficients */
-    34, 0, 345968512, -152767744, -202931520,
+    34, 0, 345566464, -152821568, -202489808,
     /* node 2939 y: shift, then 4 coefficients */
-    35, 0, -351907808, 342289152, -223326176,
+    35, 0, -351133056, 341890656, -223915584,
     /* node 2939 z: shift, then 4 coefficients */
-    34, 0, 24216510, -91309264, 433200096,
+    34, 0, 24084014, -91113080, 433065216,
     /* node 2940 x: shift, then 4 coefficients */
-    34, 0, 358560576, -160817792, -207504352,
+    34, 0, 358195552, -160904384, -206889664,
     /* node 2940 y: shift, then 4 coefficients */
-    35, 0, -377335008, 369639520, -218564992,
+    35, 0, -377148064, 369452352, -218428944,
     /* node 2940 z: shift, then 4 coefficients */
-    34, 0, 25650756, -90085848, 452148672,
+    34, 0, 25669102, -90022648, 451942144,
     /* node 2941 x: shift, then 4 coefficients */
-    34, 0, 349556576, -153826704, -198173360,
+    34, 0, 348959360, -153910048, -197333856,
     /* node 2941 y: shift, then 4 coefficients */
-    35, 0, -381060128, 370772992, -212283568,
+    35, 0, -381838400, 370867296, -210889632,
     /* node 2941 z: shift, then 4 coefficients */
-    34, 0, 25559004, -92626480, 449503872,
+    34, 0, 25585768, -92487856, 449211648,
     /* node 2942 x: shift, then 4 coefficients */
-    34, 0, 325244704, -138795584, -183475808,
+    34, 0, 324960032, -138878960, -183189792,
     /* node 2942 y: shift, then 4 coefficients */
-    35, 0, -356478400, 345832672, -215269824,
+    35, 0, -357109728, 346108544, -214672384,
     /* node 2942 z: shift, then 4 coefficients */
-    34, 0, 26864620, -95360760, 420116032,
+    34, 0, 27128570, -95491936, 419784672,
     /* node 2943 x: shift, then 4 coefficients */
-    34, 0, 340708896, -145990432, -189486496,
+    34, 0, 340651232, -146207088, -189449584,
     /* node 2943 y: shift, then 4 coefficients */
-    35, 0, -375937440, 364281984, -206835616,
+    35, 0, -376328352, 364798240, -206823728,
     /* node 2943 z: shift, then 4 coefficients */
-    34, 0, 24741604, -95031384, 442593216,
+    34, 0, 24864518, -95092952, 442485120,
     /* node 2944 x: shift, then 4 coefficients */
-    34, 0, 363060224, -161670912, -203642176,
+    34, 0, 362900032, -161875088, -203283024,
     /* node 2944 y: shift, then 4 coefficients */
-    35, 0, -391839360, 387186112, -217183296,
+    35, 0, -392897664, 387400768, -215750352,
     /* node 2944 z: shift, then 4 coefficients */
-    34, 0, 26846110, -92470792, 467365312,
+    34, 0, 27022742, -92369080, 466841952,
     /* node 2945 x: shift, then 4 coefficients */
-    34, 0, 354712160, -153696384, -193083872,
+    34, 0, 354925792, -153965120, -193325856,
     /* node 2945 y: shift, then 4 coefficients */
-    35, 0, -378955200, 376168384, -224348544,
+    35, 0, -379332384, 376858912, -224480896,
     /* node 2945 z: shift, then 4 coefficients */
-    34, 0, 27560784, -96316464, 457824992,
+    34, 0, 27523408, -96285480, 457827136,
     /* node 2946 x: shift, then 4 coefficients */
-    34, 0, 375455936, -171104176, -202951328,
+    34, 0, 375770080, -171199056, -203356320,
     /* node 2946 y: shift, then 4 coefficients */
-    35, 0, -403759744, 404534304, -214853616,
+    35, 0, -404130016, 404989152, -214653040,
     /* node 2946 z: shift, then 4 coefficients */
-    34, 0, 25828862, -91235656, 486603648,
+    34, 0, 25709506, -91067352, 486558720,
     /* node 2947 x: shift, then 4 coefficients */
-    34, 0, 371161472, -163970016, -200832368,
+    34, 0, 371238720, -164113984, -200889520,
     /* node 2947 y: shift, then 4 coefficients */
-    35, 0, -396034272, 410768512, -229750992,
+    35, 0, -396212672, 410972064, -229439328,
     /* node 2947 z: shift, then 4 coefficients */
-    34, 0, 22411970, -94360824, 488637312,
+    34, 0, 22299050, -94196016, 488534816,
     /* node 2948 x: shift, then 4 coefficients */
-    34, 0, 387826016, -182173344, -198689152,
+    34, 0, 387977888, -182235792, -198946432,
     /* node 2948 y: shift, then 4 coefficients */
-    35, 0, -412796608, 423057344, -214999472,
+    35, 0, -413095264, 423299744, -214719056,
     /* node 2948 z: shift, then 4 coefficients */
-    34, 0, 22949142, -89844440, 508194368,
+    34, 0, 22963536, -89740304, 507970528,
     /* node 2949 x: shift, then 4 coefficients */
-    34, 0, 382155136, -178124336, -209211184,
+    34, 0, 382645152, -178340448, -209806480,
     /* node 2949 y: shift, then 4 coefficients */
-    35, 0, -404005408, 400642496, -214691264,
+    35, 0, -403989824, 400774752, -214624800,
     /* node 2949 z: shift, then 4 coefficients */
-    34, 0, 27363094, -89457648, 486720992,
+    34, 0, 27170972, -89239640, 486742432,
     /* node 2950 x: shift, then 4 coefficients */
-    34, 0, 394006624, -187846816, -206678960,
+    34, 0, 394264320, -188016016, -207022000,
     /* node 2950 y: shift, then 4 coefficients */
-    35, 0, -421080704, 423391008, -204119824,
+    35, 0, -420787840, 423426464, -204600608,
     /* node 2950 z: shift, then 4 coefficients */
-    34, 0, 25369060, -86663928, 506669952,
+    34, 0, 25385886, -86558600, 506440096,
     /* node 2951 x: shift, then 4 coefficients */
-    34, 0, 379318848, -174749072, -189984816,
+    34, 0, 379204608, -174805024, -189833040,
     /* node 2951 y: shift, then 4 coefficients */
-    35, 0, -406543936, 426577792, -217971600,
+    35, 0, -406891456, 426521632, -217077248,
     /* node 2951 z: shift, then 4 coefficients */
-    34, 0, 22045662, -92495952, 505077568,
+    34, 0, 21889768, -92316360, 504961856,
     /* node 2952 x: shift, then 4 coefficients */
-    34, 0, 384875008, -182285008, -176089440,
+    34, 0, 384807776, -182284400, -176143648,
     /* node 2952 y: shift, then 4 coefficients */
-    35, 0, -413328448, 430711296, -203116096,
+    35, 0, -413690752, 430904800, -202395728,
     /* node 2952 z: shift, then 4 coefficients */
-    34, 0, 25859302, -91755104, 513043648,
+    34, 0, 25639294, -91524784, 513048896,
     /* node 2953 x: shift, then 4 coefficients */
-    34, 0, 397284864, -191936896, -191850288,
+    34, 0, 397319968, -192064592, -192095936,
     /* node 2953 y: shift, then 4 coefficients */
-    35, 0, -417624832, 431842304, -208299184,
+    35, 0, -418342496, 432508896, -207496064,
     /* node 2953 z: shift, then 4 coefficients */
-    34, 0, 25499144, -89350376, 521772448,
+    34, 0, 25268168, -89118304, 521871168,
     /* node 2954 x: shift, then 4 coefficients */
-    34, 0, 412411104, -199299152, -191760704,
+    34, 0, 412358400, -199526352, -191760720,
     /* node 2954 y: shift, then 4 coefficients */
-    35, 0, -424549120, 445658048, -195447504,
+    35, 0, -425124800, 446218624, -194734768,
     /* node 2954 z: shift, then 4 coefficients */
-    34, 0, 22579860, -85316808, 540274496,
+    34, 0, 22456548, -85114696, 540163072,
     /* node 2955 x: shift, then 4 coefficients */
-    34, 0, 401033248, -190749360, -177222272,
+    34, 0, 401007456, -190843088, -177289808,
     /* node 2955 y: shift, then 4 coefficients */
-    35, 0, -421408736, 447042464, -194345520,
+    35, 0, -421659520, 447219712, -193847616,
     /* node 2955 z: shift, then 4 coefficients */
-    34, 0, 23705348, -88956472, 531867776,
+    34, 0, 23582526, -88706672, 531714816,
     /* node 2956 x: shift, then 4 coefficients */
-    34, 0, 423118528, -211098256, -181619104,
+    34, 0, 423128832, -211251536, -181704928,
     /* node 2956 y: shift, then 4 coefficients */
-    35, 0, -432951200, 461017824, -179631936,
+    34, 0, -216642624, 230631840, -89601824,
     /* node 2956 z: shift, then 4 coefficients */
-    34, 0, 25932338, -81125240, 552136768,
+    34, 0, 25814942, -81020976, 552081984,
     /* node 2957 x: shift, then 4 coefficients */
-    34, 0, 419455456, -208396464, -202388704,
+    34, 0, 419545312, -208682752, -202586816,
     /* node 2957 y: shift, then 4 coefficients */
-    35, 0, -434778240, 446176896, -187856928,
+    35, 0, -435407712, 446779040, -187138144,
     /* node 2957 z: shift, then 4 coefficients */
-    34, 0, 24485470, -82719688, 540022592,
+    34, 0, 24284558, -82476192, 539987264,
     /* node 2958 x: shift, then 4 coefficients */
-    34, 0, 428657984, -217762832, -188501360,
+    34, 0, 428749088, -217923984, -188694608,
     /* node 2958 y: shift, then 4 coefficients */
-    34, 0, -217850896, 230789104, -91051800,
+    34, 0, -218041744, 230971936, -90821568,
     /* node 2958 z: shift, then 4 coefficients */
-    34, 0, 27931942, -79910440, 552448448,
+    34, 0, 27781576, -79773536, 552377344,
     /* node 2959 x: shift, then 4 coefficients */
-    34, 0, 421246848, -202578672, -167912816,
+    34, 0, 421236096, -202731888, -167899904,
     /* node 2959 y: shift, then 4 coefficients */
-    34, 0, -213343744, 240450608, -91148856,
+    34, 0, -213475488, 240385840, -90784096,
     /* node 2959 z: shift, then 4 coefficients */
-    34, 0, 19479600, -85119440, 562791424,
+    34, 0, 19379432, -84966944, 562671936,
     /* node 2960 x: shift, then 4 coefficients */
-    34, 0, 445988128, -217487840, -156188144,
+    34, 0, 445889216, -217668560, -156071696,
     /* node 2960 y: shift, then 4 coefficients */
-    34, 0, -220184528, 265193232, -82314344,
+    34, 0, -220286720, 265271632, -82040656,
     /* node 2960 z: shift, then 4 coefficients */
-    34, 0, 13635672, -79502864, 603210560,
+    34, 0, 13620402, -79397320, 602982464,
     /* node 2961 x: shift, then 4 coefficients */
-    34, 0, 447346144, -226907408, -171426832,
+    34, 0, 447429760, -227070848, -171539424,
     /* node 2961 y: shift, then 4 coefficients */
-    34, 0, -220730800, 245700048, -79462128,
+    34, 0, -220717328, 245676224, -79409920,
     /* node 2961 z: shift, then 4 coefficients */
-    34, 0, 21235210, -76728440, 582864448,
+    34, 0, 21161124, -76676016, 582759872,
     /* node 2962 x: shift, then 4 coefficients */
-    34, 0, 475121056, -244308368, -151898608,
+    34, 0, 475362400, -244582992, -152237712,
     /* node 2962 y: shift, then 4 coefficients */
-    34, 0, -226563344, 276352928, -67461536,
+    34, 0, -226681888, 276559360, -67290432,
     /* node 2962 z: shift, then 4 coefficients */
-    34, 0, 17940108, -68729768, 626199424,
+    34, 0, 17693834, -68590232, 626303168,
     /* node 2963 x: shift, then 4 coefficients */
-    34, 0, 493148992, -231906112, -143429200,
+    34, 0, 493169632, -232202880, -143550560,
     /* node 2963 y: shift, then 4 coefficients */
-    34, 0, -224739168, 318939616, -73536360,
+    34, 0, -224771504, 319031392, -73376672,
     /* node 2963 z: shift, then 4 coefficients */
-    34, 0, 5267050, -68748264, 674419200,
+    34, 0, 5075988, -68553704, 674407744,
     /* node 2964 x: shift, then 4 coefficients */
-    34, 0, 515606240, -263888288, -141370064,
+    34, 0, 515336288, -263887936, -141219264,
     /* node 2964 y: shift, then 4 coefficients */
-    34, 0, -235221040, 324454784, -55198624,
+    34, 0, -235217088, 324592704, -55152432,
     /* node 2964 z: shift, then 4 coefficients */
-    34, 0, 8544593, -54716216, 689846272,
+    34, 0, 8680818, -54668424, 689456320,
     /* node 2965 x: shift, then 4 coefficients */
-    34, 0, 467823488, -248928384, -162650800,
+    34, 0, 467999232, -249208256, -162863408,
     /* node 2965 y: shift, then 4 coefficients */
-    34, 0, -224617424, 257822336, -69940744,
+    34, 0, -224695136, 257906176, -69788176,
     /* node 2965 z: shift, then 4 coefficients */
-    34, 0, 27269808, -69210856, 598395584,
+    34, 0, 27101318, -69057360, 598333312,
     /* node 2966 x: shift, then 4 coefficients */
-    34, 0, 499349280, -268506432, -150526320,
+    34, 0, 499103136, -268609696, -150313232,
     /* node 2966 y: shift, then 4 coefficients */
-    34, 0, -231536112, 284053248, -54660740,
+    34, 0, -231371984, 284063136, -54762688,
     /* node 2966 z: shift, then 4 coefficients */
-    34, 0, 19942810, -59451644, 643406336,
+    34, 0, 20059266, -59355948, 642966144,
     /* node 2967 x: shift, then 4 coefficients */
-    34, 0, 552474048, -247838864, -126534768,
+    34, 0, 552351424, -247956048, -126672064,
     /* node 2967 y: shift, then 4 coefficients */
-    34, 0, -237193168, 406498144, -59602708,
+    34, 0, -237212480, 406454688, -59646564,
     /* node 2967 z: shift, then 4 coefficients */
-    34, 0, -5958190, -56691516, 767843712,
+    34, 0, -5958877, -56529816, 767525760,
     /* node 2968 x: shift, then 4 coefficients */
-    34, 0, 608470784, -265833328, -108527672,
+    34, 0, 608445504, -265896704, -108640768,
     /* node 2968 y: shift, then 4 coefficients */
-    34, 0, -246614544, 498058144, -52386352,
+    34, 0, -246878656, 497691104, -52275660,
     /* node 2968 z: shift, then 4 coefficients */
-    34, 0, -4002658, -51608660, 848013312,
+    34, 0, -4253060, -51472896, 847821696,
     /* node 2969 x: shift, then 4 coefficients */
-    34, 0, 561184512, -282909152, -126499568,
+    34, 0, 561214336, -282949728, -126626688,
     /* node 2969 y: shift, then 4 coefficients */
-    34, 0, -249300304, 390833792, -35265068,
+    34, 0, -249360720, 391017792, -35217316,
     /* node 2969 z: shift, then 4 coefficients */
-    34, 0, -665099, -40954428, 760147200,
+    34, 0, -661767, -40802288, 759987392,
     /* node 2970 x: shift, then 4 coefficients */
-    34, 0, 600038976, -294605792, -107371832,
+    34, 0, 599972672, -294671872, -107421664,
     /* node 2970 y: shift, then 4 coefficients */
-    34, 0, -254452960, 454968448, -29029428,
+    34, 0, -254509056, 454884224, -28938486,
     /* node 2970 z: shift, then 4 coefficients */
-    34, 0, 3588595, -36083924, 810602368,
+    34, 0, 3575559, -35912396, 810339200,
     /* node 2971 x: shift, then 4 coefficients */
-    34, 0, 639277504, -271157504, -93613088,
+    34, 0, 639148160, -271169984, -93707816,
     /* node 2971 y: shift, then 4 coefficients */
-    34, 0, -251282352, 563233344, -41683468,
+    34, 0, -251318800, 563487104, -41711852,
     /* node 2971 z: shift, then 4 coefficients */
-    34, 0, -4138783, -50389252, 910133504,
+    34, 0, -4107182, -50082488, 909705600,
     /* node 2972 x: shift, then 4 coefficients */
-    34, 0, 625985920, -307675040, -84806512,
+    34, 0, 626125888, -307744064, -84941168,
     /* node 2972 y: shift, then 4 coefficients */
-    34, 0, -257404512, 509151872, -24708164,
+    34, 0, -257483952, 509325824, -24694084,
     /* node 2972 z: shift, then 4 coefficients */
-    34, 0, 6324234, -30422146, 855064768,
+    34, 0, 6158096, -30393186, 854911808,
     /* node 2973 x: shift, then 4 coefficients */
-    34, 0, 566112576, -312175744, -116638104,
+    34, 0, 566224640, -312218144, -116751648,
     /* node 2973 y: shift, then 4 coefficients */
-    34, 0, -252485440, 385424192, -22446124,
+    34, 0, -252524272, 385602272, -22446924,
     /* node 2973 z: shift, then 4 coefficients */
-    34, 0, 15849130, -32268210, 740587264,
+    34, 0, 15708251, -32165824, 740506688,
     /* node 2974 x: shift, then 4 coefficients */
-    34, 0, 583632384, -326492096, -91286808,
+    34, 0, 583690880, -326705824, -91306888,
     /* node 2974 y: shift, then 4 coefficients */
-    34, 0, -258711632, 425824448, -10492545,
+    34, 0, -258820560, 425863232, -10377732,
     /* node 2974 z: shift, then 4 coefficients */
-    34, 0, 17538172, -22643112, 769759744,
+    34, 0, 17363572, -22497308, 769648896,
     /* node 2975 x: shift, then 4 coefficients */
-    34, 0, 657811584, -286765408, -74489144,
+    34, 0, 657828672, -286974944, -74446384,
     /* node 2975 y: shift, then 4 coefficients */
-    34, 0, -252479888, 589349888, -42239304,
+    34, 0, -252617792, 589361664, -42080244,
     /* node 2975 z: shift, then 4 coefficients */
-    34, 0, 5758278, -48939644, 927566720,
+    34, 0, 5614187, -48928692, 927289600,
     /* node 2976 x: shift, then 4 coefficients */
-    34, 0, 670020096, -305133728, -56415420,
+    34, 0, 670279744, -305108896, -56553084,
     /* node 2976 y: shift, then 4 coefficients */
-    34, 0, -255216944, 604196544, -32535474,
+    34, 0, -255356432, 604246400, -32454238,
     /* node 2976 z: shift, then 4 coefficients */
-    34, 0, 7469236, -40986404, 944943936,
+    34, 0, 7301142, -40928572, 944707968,
     /* node 2977 x: shift, then 4 coefficients */
-    34, 0, 636491392, -313195392, -65324976,
+    34, 0, 636435584, -313515360, -65254276,
     /* node 2977 y: shift, then 4 coefficients */
-    34, 0, -261102016, 535782240, -19080188,
+    34, 0, -261210928, 535796448, -18917352,
     /* node 2977 z: shift, then 4 coefficients */
-    34, 0, 12441197, -29164444, 863196864,
+    34, 0, 12270991, -29183714, 863046592,
     /* node 2978 x: shift, then 4 coefficients */
-    34, 0, 636397504, -330226784, -52367080,
+    34, 0, 636461312, -330428032, -52470540,
     /* node 2978 y: shift, then 4 coefficients */
-    34, 0, -259444352, 534803840, -16800848,
+    34, 0, -259564464, 534854144, -16738067,
     /* node 2978 z: shift, then 4 coefficients */
-    34, 0, 21087626, -31530442, 842569088,
+    34, 0, 20942930, -31450744, 842252096,
     /* node 2979 x: shift, then 4 coefficients */
-    34, 0, 659414144, -305006624, -29015108,
+    34, 0, 659486656, -305148640, -28878938,
     /* node 2979 y: shift, then 4 coefficients */
-    34, 0, -253837952, 592314240, -31131830,
+    34, 0, -254012848, 592361472, -31054910,
     /* node 2979 z: shift, then 4 coefficients */
-    34, 0, 16466332, -40388548, 915128000,
+    34, 0, 16360009, -40393452, 915032256,
     /* node 2980 x: shift, then 4 coefficients */
-    34, 0, 630050496, -344299872, -30147532,
+    34, 0, 630219840, -344591584, -30268642,
     /* node 2980 y: shift, then 4 coefficients */
-    34, 0, -258244384, 528046688, -18383336,
+    34, 0, -258412208, 528116768, -18284544,
     /* node 2980 z: shift, then 4 coefficients */
-    34, 0, 27976014, -31417554, 819249088,
+    34, 0, 27805016, -31336422, 819087808,
     /* node 2981 x: shift, then 4 coefficients */
-    34, 0, 608052224, -346413280, -57073148,
+    34, 0, 608134272, -346555232, -57115456,
     /* node 2981 y: shift, then 4 coefficients */
-    34, 0, -264329200, 473924672, -1727102,
+    34, 0, -264391200, 473889792, -1694100,
     /* node 2981 z: shift, then 4 coefficients */
-    34, 0, 28656406, -17180286, 782843648,
+    34, 0, 28541350, -17164346, 782686784,
     /* node 2982 x: shift, then 4 coefficients */
-    34, 0, 606494592, -357649568, -39166776,
+    34, 0, 606626624, -357836224, -39265716,
     /* node 2982 y: shift, then 4 coefficients */
-    34, 0, -260346400, 475337056, -8627779,
+    34, 0, -260538944, 475499264, -8558621,
     /* node 2982 z: shift, then 4 coefficients */
-    34, 0, 36827240, -27691338, 761598016,
+    34, 0, 36678500, -27638468, 761539584,
     /* node 2983 x: shift, then 4 coefficients */
-    34, 0, 658315008, -323294464, -6539757,
+    34, 0, 658378048, -323496160, -6672074,
     /* node 2983 y: shift, then 4 coefficients */
-    34, 0, -254138448, 582540224, -29799058,
+    34, 0, -254358816, 582652032, -29738936,
     /* node 2983 z: shift, then 4 coefficients */
-    34, 0, 24923706, -43330776, 888138624,
+    34, 0, 24790128, -43278552, 887971392,
     /* node 2984 x: shift, then 4 coefficients */
-    34, 0, 635862208, -341718432, 6833956,
+    34, 0, 635893760, -341875040, 6653185,
     /* node 2984 y: shift, then 4 coefficients */
-    34, 0, -253146880, 551872768, -33043814,
+    34, 0, -253335120, 551973888, -33030852,
     /* node 2984 z: shift, then 4 coefficients */
-    34, 0, 29785498, -45650544, 835512512,
+    34, 0, 29671200, -45494924, 835362624,
     /* node 2985 x: shift, then 4 coefficients */
-    34, 0, 616468288, -355800544, -7873100,
+    34, 0, 616538048, -356009280, -7945042,
     /* node 2985 y: shift, then 4 coefficients */
-    34, 0, -256347024, 514687488, -21364576,
+    34, 0, -256474768, 514822560, -21350742,
     /* node 2985 z: shift, then 4 coefficients */
-    34, 0, 35105052, -39772488, 779006848,
+    34, 0, 34982872, -39694168, 778814464,
     /* node 2986 x: shift, then 4 coefficients */
-    34, 0, 619136448, -373201120, 7974374,
+    34, 0, 619275136, -373454048, 7761790,
     /* node 2986 y: shift, then 4 coefficients */
-    34, 0, -254943152, 491389376, -29773798,
+    34, 0, -255123504, 491539360, -29682308,
     /* node 2986 z: shift, then 4 coefficients */
-    34, 0, 39743232, -51622028, 754309312,
+    34, 0, 39559948, -51465940, 754195520,
     /* node 2987 x: shift, then 4 coefficients */
-    34, 0, 616649216, -355797312, 21527472,
+    34, 0, 616768000, -356023104, 21396458,
     /* node 2987 y: shift, then 4 coefficients */
-    34, 0, -254866272, 511004512, -39496284,
+    34, 0, -255001760, 511109216, -39477800,
     /* node 2987 z: shift, then 4 coefficients */
-    34, 0, 33863884, -55315828, 774892096,
+    34, 0, 33733912, -55198948, 774779008,
     /* node 2988 x: shift, then 4 coefficients */
-    34, 0, 617231744, -383343616, 26077590,
+    34, 0, 617213376, -383446592, 25915368,
     /* node 2988 y: shift, then 4 coefficients */
-    34, 0, -250675952, 466550528, -37182436,
+    34, 0, -250725808, 466575904, -37179512,
     /* node 2988 z: shift, then 4 coefficients */
-    34, 0, 43833632, -61105104, 729224000,
+    34, 0, 43647260, -60841852, 729003264,
     /* node 2989 x: shift, then 4 coefficients */
-    34, 0, 616331072, -386168352, -6911818,
+    34, 0, 616488192, -386394496, -7032310,
     /* node 2989 y: shift, then 4 coefficients */
-    34, 0, -255366976, 466081920, -22485510,
+    34, 0, -255575904, 466260864, -22396256,
     /* node 2989 z: shift, then 4 coefficients */
-    34, 0, 43849860, -46377592, 730846848,
+    34, 0, 43688332, -46194648, 730781376,
     /* node 2990 x: shift, then 4 coefficients */
-    34, 0, 619703872, -398072608, 12486532,
+    34, 0, 619764800, -398351648, 12389791,
     /* node 2990 y: shift, then 4 coefficients */
-    34, 0, -255761744, 454083744, -31497168,
+    34, 0, -255908352, 454264256, -31499350,
     /* node 2990 z: shift, then 4 coefficients */
-    34, 0, 47887012, -56476012, 715480192,
+    34, 0, 47827004, -56425436, 715216640,
     /* node 2991 x: shift, then 4 coefficients */
-    34, 0, 616061760, -378408704, 42050492,
+    34, 0, 616108608, -378547008, 41874364,
     /* node 2991 y: shift, then 4 coefficients */
-    34, 0, -251255344, 486539520, -47388876,
+    34, 0, -251403216, 486713344, -47436996,
     /* node 2991 z: shift, then 4 coefficients */
-    34, 0, 41136288, -68543584, 749925696,
+    34, 0, 41027136, -68457640, 749805760,
     /* node 2992 x: shift, then 4 coefficients */
-    34, 0, 621336704, -398811936, 39743108,
+    34, 0, 621308928, -398760096, 39570980,
     /* node 2992 y: shift, then 4 coefficients */
-    34, 0, -251867440, 451919936, -41861392,
+    34, 0, -251888624, 451779360, -41794392,
     /* node 2992 z: shift, then 4 coefficients */
-    34, 0, 45899204, -67404184, 713683712,
+    34, 0, 45753480, -67142632, 713476800,
     /* node 2993 x: shift, then 4 coefficients */
-    34, 0, 620864576, -389864096, 56155800,
+    34, 0, 620883136, -390043424, 55998216,
     /* node 2993 y: shift, then 4 coefficients */
-    34, 0, -250560160, 462966432, -51443060,
+    34, 0, -250722160, 463128224, -51487208,
     /* node 2993 z: shift, then 4 coefficients */
-    34, 0, 43692112, -75381208, 726521408,
+    34, 0, 43619996, -75360096, 726409216,
     /* node 2994 x: shift, then 4 coefficients */
-    33, 0, 311806080, -206433072, 27874698,
+    33, 0, 311811360, -206492256, 27745188,
     /* node 2994 y: shift, then 4 coefficients */
-    34, 0, -248182944, 429656864, -45643140,
+    34, 0, -248265760, 429646496, -45627600,
     /* node 2994 z: shift, then 4 coefficients */
-    34, 0, 49685488, -75975056, 701750208,
+    34, 0, 49476676, -75737664, 701605632,
     /* node 2995 x: shift, then 4 coefficients */
-    33, 0, 315019360, -211173200, 20443238,
+    33, 0, 315119168, -211402224, 20340124,
     /* node 2995 y: shift, then 4 coefficients */
-    34, 0, -252780144, 429150560, -41033812,
+    34, 0, -253056528, 429485952, -40989300,
     /* node 2995 z: shift, then 4 coefficients */
-    34, 0, 52107232, -72173864, 698327488,
+    34, 0, 51876468, -72113312, 698243520,
     /* node 2996 x: shift, then 4 coefficients */
-    33, 0, 316639648, -215719936, 27307462,
+    33, 0, 316645248, -215726816, 27267896,
     /* node 2996 y: shift, then 4 coefficients */
-    34, 0, -247901264, 407452288, -43866628,
+    34, 0, -247976080, 407534464, -43859740,
     /* node 2996 z: shift, then 4 coefficients */
-    34, 0, 54995432, -79463696, 689415232,
+    34, 0, 54934276, -79524848, 689298368,
     /* node 2997 x: shift, then 4 coefficients */
-    33, 0, 314015264, -212229392, 34658360,
+    33, 0, 314073184, -212384192, 34580292,
     /* node 2997 y: shift, then 4 coefficients */
-    34, 0, -244360608, 404501120, -47244000,
+    34, 0, -244516560, 404815808, -47269876,
     /* node 2997 z: shift, then 4 coefficients */
-    34, 0, 52997716, -83075768, 692553600,
+    34, 0, 52892000, -83121680, 692424000,
     /* node 2998 x: shift, then 4 coefficients */
-    33, 0, 308784608, -201548528, 34895488,
+    33, 0, 308806432, -201708832, 34845204,
     /* node 2998 y: shift, then 4 coefficients */
-    34, 0, -246165184, 427122656, -51646052,
+    34, 0, -246448688, 427572800, -51695216,
     /* node 2998 z: shift, then 4 coefficients */
-    34, 0, 49094220, -83824568, 705767552,
+    34, 0, 48951304, -83806336, 705697408,
     /* node 2999 x: shift, then 4 coefficients */
-    34, 0, 363775232, -166273008, -216095296,
+    34, 0, 363417088, -166354720, -215549152,
     /* node 2999 y: shift, then 4 coefficients */
-    35, 0, -350153856, 339355040, -218001184,
+    35, 0, -350578656, 339675552, -217174240,
     /* node 2999 z: shift, then 4 coefficients */
-    34, 0, 23235710, -87522128, 441430016,
+    34, 0, 23150526, -87345528, 441244160,
     /* node 3000 x: shift, then 4 coefficients */
-    34, 0, 373681184, -176952336, -215237904,
+    34, 0, 373054112, -177214800, -214227200,
     /* node 3000 y: shift, then 4 coefficients */
-    35, 0, -356428192, 343047104, -211160256,
+    35, 0, -357936032, 343804800, -209180256,
     /* node 3000 z: shift, then 4 coefficients */
-    34, 0, 25236538, -85542192, 450667168,
+    34, 0, 25470024, -85288608, 450061728,
     /* node 3001 x: shift, then 4 coefficients */
-    34, 0, 367083744, -169494224, -218162112,
+    34, 0, 366373856, -169696128, -217155440,
     /* node 3001 y: shift, then 4 coefficients */
-    35, 0, -340072000, 329491648, -218517552,
+    35, 0, -340693408, 329812672, -217372112,
     /* node 3001 z: shift, then 4 coefficients */
-    34, 0, 23395330, -86524000, 437387936,
+    34, 0, 23531314, -86321336, 437021280,
     /* node 3002 x: shift, then 4 coefficients */
-    34, 0, 371098912, -173332800, -215112528,
+    34, 0, 370700032, -173599712, -214365808,
     /* node 3002 y: shift, then 4 coefficients */
-    35, 0, -366017728, 352500416, -213525120,
+    35, 0, -366162784, 352630656, -213190144,
     /* node 3002 z: shift, then 4 coefficients */
-    34, 0, 25189936, -86943944, 454673088,
+    34, 0, 25134550, -86746368, 454464960,
     /* node 3003 x: shift, then 4 coefficients */
-    34, 0, 354453248, -159609264, -209233152,
+    34, 0, 354704192, -159478544, -209618304,
     /* node 3003 y: shift, then 4 coefficients */
-    35, 0, -355108544, 342094912, -215229712,
+    35, 0, -354707680, 342720480, -216214016,
     /* node 3003 z: shift, then 4 coefficients */
-    34, 0, 23400592, -89064368, 438869760,
+    34, 0, 23065684, -88932736, 439178976,
     /* node 3004 x: shift, then 4 coefficients */
-    34, 0, 364024224, -166570720, -210798896,
+    34, 0, 364533280, -166669008, -211298272,
     /* node 3004 y: shift, then 4 coefficients */
-    35, 0, -371419904, 359311072, -214451040,
+    35, 0, -370260448, 359662048, -216634048,
     /* node 3004 z: shift, then 4 coefficients */
-    34, 0, 24961516, -88434816, 453694880,
+    34, 0, 24550698, -88357528, 454259392,
     /* node 3005 x: shift, then 4 coefficients */
-    34, 0, 375238080, -176030528, -212262304,
+    34, 0, 375595648, -176080864, -212618768,
     /* node 3005 y: shift, then 4 coefficients */
-    35, 0, -390787584, 383306048, -212408944,
+    35, 0, -390165280, 383364096, -213243104,
     /* node 3005 z: shift, then 4 coefficients */
-    34, 0, 26497910, -86949480, 470104640,
+    34, 0, 26646258, -86969000, 469788288,
     /* node 3006 x: shift, then 4 coefficients */
-    34, 0, 381087616, -182129456, -217127696,
+    34, 0, 380769216, -182226080, -216627328,
     /* node 3006 y: shift, then 4 coefficients */
-    35, 0, -385419136, 374730560, -208836192,
+    35, 0, -385038496, 374472512, -208923008,
     /* node 3006 z: shift, then 4 coefficients */
-    34, 0, 25744626, -85134080, 469777344,
+    34, 0, 25964210, -85057656, 469175296,
     /* node 3007 x: shift, then 4 coefficients */
-    34, 0, 393490752, -191444080, -218900320,
+    34, 0, 393529824, -191577840, -218935536,
     /* node 3007 y: shift, then 4 coefficients */
-    35, 0, -397719072, 390474976, -207622864,
+    35, 0, -397419936, 390181792, -207601472,
     /* node 3007 z: shift, then 4 coefficients */
-    34, 0, 26856918, -85530392, 485933984,
+    34, 0, 27068050, -85454840, 485400512,
     /* node 3008 x: shift, then 4 coefficients */
-    34, 0, 389834624, -185701552, -217317200,
+    34, 0, 390326368, -185831616, -217977360,
     /* node 3008 y: shift, then 4 coefficients */
-    35, 0, -401128352, 399657792, -216768432,
+    35, 0, -400673088, 399729536, -217277632,
     /* node 3008 z: shift, then 4 coefficients */
-    34, 0, 26592720, -87836440, 488990048,
+    34, 0, 26592984, -87774152, 488801536,
     /* node 3009 x: shift, then 4 coefficients */
-    34, 0, 404180768, -200480128, -217355632,
+    34, 0, 404429824, -200756080, -217594256,
     /* node 3009 y: shift, then 4 coefficients */
-    35, 0, -410891296, 408795424, -207168000,
+    35, 0, -411076480, 409196544, -206853504,
     /* node 3009 z: shift, then 4 coefficients */
-    34, 0, 28566246, -84032800, 501646080,
+    34, 0, 28473056, -83906736, 501554560,
     /* node 3010 x: shift, then 4 coefficients */
-    34, 0, 397274976, -195655616, -222927360,
+    34, 0, 397512640, -195836752, -223251872,
     /* node 3010 y: shift, then 4 coefficients */
-    35, 0, -392347232, 382792288, -206444688,
+    35, 0, -391546624, 382271648, -207363664,
     /* node 3010 z: shift, then 4 coefficients */
-    34, 0, 26349228, -83825352, 484141184,
+    34, 0, 26475536, -83878224, 483852576,
     /* node 3011 x: shift, then 4 coefficients */
-    34, 0, 408212832, -205044432, -221976512,
+    34, 0, 408500000, -205340624, -222286176,
     /* node 3011 y: shift, then 4 coefficients */
-    35, 0, -406196256, 399676224, -201705888,
+    35, 0, -406455584, 399980864, -201420960,
     /* node 3011 z: shift, then 4 coefficients */
-    34, 0, 28820070, -83508304, 498362880,
+    34, 0, 28650782, -83442232, 498399232,
     /* node 3012 x: shift, then 4 coefficients */
-    34, 0, 401824192, -194887968, -215835712,
+    34, 0, 402165056, -195089360, -216284144,
     /* node 3012 y: shift, then 4 coefficients */
-    35, 0, -414454624, 417313760, -210532928,
+    35, 0, -413995744, 417649408, -211271408,
     /* node 3012 z: shift, then 4 coefficients */
-    34, 0, 26456778, -85029816, 505584000,
+    34, 0, 26364584, -84961272, 505538304,
     /* node 3013 x: shift, then 4 coefficients */
-    34, 0, 410505280, -204248256, -209073920,
+    34, 0, 410819840, -204518928, -209479968,
     /* node 3013 y: shift, then 4 coefficients */
-    35, 0, -422034208, 427652288, -202237360,
+    35, 0, -421733024, 427983584, -202804496,
     /* node 3013 z: shift, then 4 coefficients */
-    34, 0, 30193218, -84275088, 516938080,
+    34, 0, 30040744, -84093480, 516916192,
     /* node 3014 x: shift, then 4 coefficients */
-    34, 0, 416275616, -210446416, -216534112,
+    34, 0, 416508928, -210725408, -216729056,
     /* node 3014 y: shift, then 4 coefficients */
-    35, 0, -415155872, 420064384, -209260432,
+    35, 0, -414786016, 420293760, -209761632,
     /* node 3014 z: shift, then 4 coefficients */
-    34, 0, 29707308, -83734496, 518025312,
+    34, 0, 29647018, -83600376, 517917472,
     /* node 3015 x: shift, then 4 coefficients */
-    34, 0, 429852192, -220320848, -214809712,
+    34, 0, 430196160, -220625840, -215206320,
     /* node 3015 y: shift, then 4 coefficients */
-    35, 0, -427080576, 433960928, -193643888,
+    35, 0, -426835328, 434102208, -194019952,
     /* node 3015 z: shift, then 4 coefficients */
-    34, 0, 28052124, -81193024, 535063552,
+    34, 0, 27904826, -81083160, 535060896,
     /* node 3016 x: shift, then 4 coefficients */
-    34, 0, 426495616, -214982592, -210761008,
+    34, 0, 426799232, -215277408, -211170864,
     /* node 3016 y: shift, then 4 coefficients */
-    35, 0, -436022976, 445614880, -186030128,
+    35, 0, -436173344, 445942400, -185882256,
     /* node 3016 z: shift, then 4 coefficients */
-    34, 0, 25633742, -81718200, 538990528,
+    34, 0, 25393660, -81551552, 539057216,
     /* node 3017 x: shift, then 4 coefficients */
-    34, 0, 439086176, -231257280, -205529872,
+    34, 0, 439455936, -231604960, -205977776,
     /* node 3017 y: shift, then 4 coefficients */
-    35, 0, -435022112, 449627872, -183993472,
+    35, 0, -435059936, 449967584, -184026800,
     /* node 3017 z: shift, then 4 coefficients */
-    34, 0, 29234706, -79342400, 549377088,
+    34, 0, 29096910, -79206032, 549336000,
     /* node 3018 x: shift, then 4 coefficients */
-    34, 0, 433876384, -224997728, -220455904,
+    34, 0, 434109952, -225244832, -220741696,
     /* node 3018 y: shift, then 4 coefficients */
-    35, 0, -423319040, 425438208, -195447520,
+    35, 0, -423151296, 425615136, -195591376,
     /* node 3018 z: shift, then 4 coefficients */
-    34, 0, 29639110, -79832072, 530367456,
+    34, 0, 29583856, -79809584, 530239680,
     /* node 3019 x: shift, then 4 coefficients */
-    34, 0, 445579776, -236380592, -213963968,
+    34, 0, 445863680, -236673680, -214293376,
     /* node 3019 y: shift, then 4 coefficients */
-    35, 0, -429788896, 438607424, -186921312,
+    35, 0, -429876288, 439038336, -186779712,
     /* node 3019 z: shift, then 4 coefficients */
-    34, 0, 30438042, -77749000, 544113600,
+    34, 0, 30260770, -77667424, 544157568,
     /* node 3020 x: shift, then 4 coefficients */
-    34, 0, 434657472, -224696848, -197776224,
+    34, 0, 434894752, -224922704, -198130720,
     /* node 3020 y: shift, then 4 coefficients */
-    34, 0, -217657632, 228430176, -90861952,
+    34, 0, -217788928, 228619984, -90697784,
     /* node 3020 z: shift, then 4 coefficients */
-    34, 0, 28498598, -79985512, 550625472,
+    34, 0, 28322610, -79816080, 550591104,
     /* node 3021 x: shift, then 4 coefficients */
-    34, 0, 453171616, -237480912, -194341200,
+    34, 0, 453439840, -237744032, -194699136,
     /* node 3021 y: shift, then 4 coefficients */
-    34, 0, -219994736, 236380240, -85327920,
+    34, 0, -220100640, 236476720, -85186936,
     /* node 3021 z: shift, then 4 coefficients */
-    34, 0, 25518658, -76379592, 572879104,
+    34, 0, 25422540, -76277432, 572777664,
     /* node 3022 x: shift, then 4 coefficients */
-    34, 0, 454689760, -241733424, -200745120,
+    34, 0, 455089056, -242051840, -201287824,
     /* node 3022 y: shift, then 4 coefficients */
-    35, 0, -437803008, 463085984, -172810592,
+    34, 0, -218924016, 231648704, -86368808,
     /* node 3022 z: shift, then 4 coefficients */
-    34, 0, 27595866, -76906072, 565760896,
+    34, 0, 27453480, -76849200, 565730816,
     /* node 3023 x: shift, then 4 coefficients */
-    34, 0, 473051040, -257773376, -189270048,
+    34, 0, 473436896, -258119872, -189752480,
     /* node 3023 y: shift, then 4 coefficients */
-    34, 0, -219436384, 241251696, -79973888,
+    34, 0, -219520656, 241424608, -79919952,
     /* node 3023 z: shift, then 4 coefficients */
-    34, 0, 30144402, -72045128, 579912064,
+    34, 0, 29945736, -71941384, 579975040,
     /* node 3024 x: shift, then 4 coefficients */
-    34, 0, 467276576, -252739136, -175073984,
+    34, 0, 467524608, -253017152, -175381056,
     /* node 3024 y: shift, then 4 coefficients */
-    34, 0, -223495120, 246140272, -73891832,
+    34, 0, -223461904, 246220816, -73913184,
     /* node 3024 z: shift, then 4 coefficients */
-    34, 0, 29786984, -70778952, 585866432,
+    34, 0, 29590852, -70684928, 585883264,
     /* node 3025 x: shift, then 4 coefficients */
-    34, 0, 492918240, -275872416, -174724592,
+    34, 0, 492886656, -275965728, -174734896,
     /* node 3025 y: shift, then 4 coefficients */
-    34, 0, -223021968, 252264320, -66366260,
+    34, 0, -222950464, 252289632, -66443808,
     /* node 3025 z: shift, then 4 coefficients */
-    34, 0, 28562816, -63456204, 601465600,
+    34, 0, 28610566, -63409516, 601161152,
     /* node 3026 x: shift, then 4 coefficients */
-    34, 0, 471226848, -259819664, -197127088,
+    34, 0, 471501120, -260180048, -197476000,
     /* node 3026 y: shift, then 4 coefficients */
-    35, 0, -438024000, 463193504, -158312976,
+    35, 0, -438098176, 463358240, -158133696,
     /* node 3026 z: shift, then 4 coefficients */
-    34, 0, 32184664, -71645992, 569051456,
+    34, 0, 32051922, -71564976, 568997760,
     /* node 3027 x: shift, then 4 coefficients */
-    34, 0, 492225248, -278413568, -186632000,
+    34, 0, 492242016, -278545984, -186695328,
     /* node 3027 y: shift, then 4 coefficients */
-    35, 0, -441424928, 485060736, -142957184,
+    35, 0, -441071232, 485072384, -143249856,
     /* node 3027 z: shift, then 4 coefficients */
-    34, 0, 31134358, -65092412, 587511872,
+    34, 0, 31073308, -65018932, 587337280,
     /* node 3028 x: shift, then 4 coefficients */
-    34, 0, 496248480, -274689536, -160451568,
+    34, 0, 496432192, -274806752, -160729040,
     /* node 3028 y: shift, then 4 coefficients */
-    34, 0, -229410896, 268761184, -58003800,
+    34, 0, -229315728, 268857568, -58106112,
     /* node 3028 z: shift, then 4 coefficients */
-    34, 0, 26516400, -60737608, 620207936,
+    34, 0, 26394380, -60712948, 620086848,
     /* node 3029 x: shift, then 4 coefficients */
-    34, 0, 529697760, -299480672, -143987328,
+    34, 0, 530144704, -299724992, -144589680,
     /* node 3029 y: shift, then 4 coefficients */
-    34, 0, -239318944, 304191648, -40296648,
+    34, 0, -239206320, 304362336, -40548168,
     /* node 3029 z: shift, then 4 coefficients */
-    34, 0, 24662624, -46084408, 659000640,
+    34, 0, 24274382, -46008304, 659295360,
     /* node 3030 x: shift, then 4 coefficients */
-    34, 0, 522461504, -302027584, -155614256,
+    34, 0, 522031488, -302163072, -155255856,
     /* node 3030 y: shift, then 4 coefficients */
-    34, 0, -230675120, 279373600, -49024380,
+    34, 0, -230882464, 279357344, -48645148,
     /* node 3030 z: shift, then 4 coefficients */
-    34, 0, 30012516, -51536464, 630932224,
+    34, 0, 30061916, -51444044, 630553152,
     /* node 3031 x: shift, then 4 coefficients */
-    34, 0, 550128704, -325159104, -138987968,
+    34, 0, 550104896, -325359072, -139007536,
     /* node 3031 y: shift, then 4 coefficients */
-    34, 0, -239047312, 310747872, -34072044,
+    34, 0, -239234672, 310836448, -33904012,
     /* node 3031 z: shift, then 4 coefficients */
-    34, 0, 29954274, -41444656, 658635648,
+    34, 0, 29980678, -41377248, 658320384,
     /* node 3032 x: shift, then 4 coefficients */
-    34, 0, 555528320, -321237664, -122534888,
+    34, 0, 555588608, -321346880, -122672328,
     /* node 3032 y: shift, then 4 coefficients */
-    34, 0, -247836496, 346470592, -24384846,
+    34, 0, -247784976, 346530432, -24485602,
     /* node 3032 z: shift, then 4 coefficients */
-    34, 0, 26014208, -36722184, 692814400,
+    34, 0, 25928238, -36657232, 692747520,
     /* node 3033 x: shift, then 4 coefficients */
-    34, 0, 572400576, -350209152, -118355760,
+    34, 0, 572520064, -350437152, -118508888,
     /* node 3033 y: shift, then 4 coefficients */
-    34, 0, -246940848, 340986560, -22188214,
+    34, 0, -246958352, 341054016, -22222706,
     /* node 3033 z: shift, then 4 coefficients */
-    34, 0, 31093686, -33845128, 680491264,
+    34, 0, 30954360, -33760064, 680485248,
     /* node 3034 x: shift, then 4 coefficients */
-    34, 0, 543972544, -327645632, -148337600,
+    34, 0, 544009536, -327780800, -148469424,
     /* node 3034 y: shift, then 4 coefficients */
-    34, 0, -232751184, 285211360, -39869116,
+    34, 0, -232773888, 285235008, -39781364,
     /* node 3034 z: shift, then 4 coefficients */
-    34, 0, 34278176, -47986984, 631089088,
+    34, 0, 34141760, -47924968, 630980032,
     /* node 3035 x: shift, then 4 coefficients */
-    34, 0, 564722880, -348636832, -130582528,
+    34, 0, 564757824, -348771680, -130723152,
     /* node 3035 y: shift, then 4 coefficients */
-    34, 0, -239146320, 311455264, -28700202,
+    34, 0, -239234624, 311562176, -28615934,
     /* node 3035 z: shift, then 4 coefficients */
-    34, 0, 37086816, -41893512, 647266560,
+    34, 0, 36966804, -41823472, 647171776,
     /* node 3036 x: shift, then 4 coefficients */
-    34, 0, 575497280, -337949440, -110141544,
+    34, 0, 575593792, -338128032, -110211920,
     /* node 3036 y: shift, then 4 coefficients */
-    34, 0, -253530864, 378752064, -15526387,
+    34, 0, -253655648, 378944128, -15457422,
     /* node 3036 z: shift, then 4 coefficients */
-    34, 0, 26204510, -29640414, 713955200,
+    34, 0, 26077362, -29518816, 713889600,
     /* node 3037 x: shift, then 4 coefficients */
-    34, 0, 585878784, -352388032, -91231224,
+    34, 0, 585972288, -352545120, -91280224,
     /* node 3037 y: shift, then 4 coefficients */
-    34, 0, -258292272, 404389568, -8468675,
+    34, 0, -258405616, 404465696, -8316096,
     /* node 3037 z: shift, then 4 coefficients */
-    34, 0, 28589808, -24794922, 730644608,
+    34, 0, 28499192, -24803590, 730541376,
     /* node 3038 x: shift, then 4 coefficients */
-    34, 0, 580481152, -361352096, -101801344,
+    34, 0, 580574400, -361577472, -102008976,
     /* node 3038 y: shift, then 4 coefficients */
-    34, 0, -250824976, 363634112, -16298845,
+    34, 0, -250943200, 363836544, -16259267,
     /* node 3038 z: shift, then 4 coefficients */
-    34, 0, 35300644, -30960672, 690193152,
+    34, 0, 35166596, -30884346, 690196096,
     /* node 3039 x: shift, then 4 coefficients */
-    34, 0, 595265920, -373118560, -88879272,
+    34, 0, 595448128, -373473472, -89171288,
     /* node 3039 y: shift, then 4 coefficients */
-    34, 0, -254994416, 382724448, -12559256,
+    34, 0, -255105264, 382837312, -12579369,
     /* node 3039 z: shift, then 4 coefficients */
-    34, 0, 37242900, -31907072, 699438912,
+    34, 0, 37104540, -31794786, 699389760,
     /* node 3040 x: shift, then 4 coefficients */
-    34, 0, 597483776, -362981632, -76212912,
+    34, 0, 597484160, -363014912, -76080104,
     /* node 3040 y: shift, then 4 coefficients */
-    34, 0, -261465936, 421513344, -6173355,
+    34, 0, -261475152, 421410784, -6136415,
     /* node 3040 z: shift, then 4 coefficients */
-    34, 0, 33378730, -24684134, 734054528,
+    34, 0, 33316362, -24767396, 733871424,
     /* node 3041 x: shift, then 4 coefficients */
-    34, 0, 603131392, -385286432, -66305060,
+    34, 0, 603212672, -385523840, -66596760,
     /* node 3041 y: shift, then 4 coefficients */
-    34, 0, -255471584, 397107776, -13859196,
+    34, 0, -255589168, 397185632, -13814745,
     /* node 3041 z: shift, then 4 coefficients */
-    34, 0, 43318224, -32770340, 698944896,
+    34, 0, 43154100, -32594960, 698853120,
     /* node 3042 x: shift, then 4 coefficients */
-    34, 0, 591408064, -377066112, -98387392,
+    34, 0, 591530816, -377304192, -98438856,
     /* node 3042 y: shift, then 4 coefficients */
-    34, 0, -248943136, 351370240, -19152398,
+    34, 0, -249033024, 351535552, -18963392,
     /* node 3042 z: shift, then 4 coefficients */
-    34, 0, 41998804, -36587120, 672602304,
+    34, 0, 41900296, -36475640, 672497024,
     /* node 3043 x: shift, then 4 coefficients */
-    33, 0, 301881888, -196006896, -39116020,
+    33, 0, 301822240, -196000800, -39089392,
     /* node 3043 y: shift, then 4 coefficients */
-    34, 0, -252758752, 368933920, -18408556,
+    34, 0, -252887024, 369111872, -18341004,
     /* node 3043 z: shift, then 4 coefficients */
-    34, 0, 46718852, -38800748, 676408768,
+    34, 0, 46711488, -38895208, 676279552,
     /* node 3044 x: shift, then 4 coefficients */
-    34, 0, 603878848, -377067808, -55250500,
+    34, 0, 604033792, -377305536, -55321208,
     /* node 3044 y: shift, then 4 coefficients */
-    34, 0, -257496576, 432382208, -11586957,
+    34, 0, -257582272, 432448640, -11469538,
     /* node 3044 z: shift, then 4 coefficients */
-    34, 0, 39912148, -31153454, 726482688,
+    34, 0, 39767908, -31060940, 726432704,
     /* node 3045 x: shift, then 4 coefficients */
-    34, 0, 611812096, -388082784, -37578964,
+    34, 0, 611983488, -388454880, -37790020,
     /* node 3045 y: shift, then 4 coefficients */
-    34, 0, -258027520, 440242560, -11131674,
+    34, 0, -258260800, 440477280, -11069593,
     /* node 3045 z: shift, then 4 coefficients */
-    34, 0, 42151668, -34082492, 723291008,
+    34, 0, 42035808, -33973592, 723066432,
     /* node 3046 x: shift, then 4 coefficients */
-    34, 0, 611078336, -393730528, -48443840,
+    34, 0, 611070528, -393735488, -48537612,
     /* node 3046 y: shift, then 4 coefficients */
-    34, 0, -255184368, 405508672, -16932374,
+    34, 0, -255245040, 405672992, -16857746,
     /* node 3046 z: shift, then 4 coefficients */
-    34, 0, 46587016, -40368116, 697457536,
+    34, 0, 46500664, -40325752, 697357696,
     /* node 3047 x: shift, then 4 coefficients */
-    34, 0, 616375616, -405584928, -31330016,
+    34, 0, 616472832, -405872000, -31395226,
     /* node 3047 y: shift, then 4 coefficients */
-    34, 0, -255262272, 411098816, -21832340,
+    34, 0, -255326576, 411148032, -21815402,
     /* node 3047 z: shift, then 4 coefficients */
-    34, 0, 51058316, -48423692, 694699392,
+    34, 0, 51021728, -48502840, 694485440,
     /* node 3048 x: shift, then 4 coefficients */
-    34, 0, 613774720, -394472160, -16145282,
+    34, 0, 613752384, -394527264, -16163964,
     /* node 3048 y: shift, then 4 coefficients */
-    34, 0, -254860800, 433203840, -23073982,
+    34, 0, -254948432, 433373312, -23024880,
     /* node 3048 z: shift, then 4 coefficients */
-    34, 0, 48448060, -47221040, 709879808,
+    34, 0, 48383952, -47191312, 709778560,
     /* node 3049 x: shift, then 4 coefficients */
-    34, 0, 623412288, -414695648, -13585509,
+    34, 0, 623708160, -415265696, -13660552,
     /* node 3049 y: shift, then 4 coefficients */
-    34, 0, -254461888, 406382496, -28220744,
+    34, 0, -254703680, 406791520, -28097220,
     /* node 3049 z: shift, then 4 coefficients */
-    34, 0, 53389412, -54399540, 691926272,
+    34, 0, 53410388, -54457428, 691752256,
     /* node 3050 x: shift, then 4 coefficients */
-    33, 0, 310350784, -206659424, -21205948,
+    33, 0, 310423648, -206860016, -21269330,
     /* node 3050 y: shift, then 4 coefficients */
-    34, 0, -254596112, 387768128, -23557782,
+    34, 0, -254813008, 388041824, -23520290,
     /* node 3050 z: shift, then 4 coefficients */
-    34, 0, 52851900, -48623720, 680791488,
+    34, 0, 52876228, -48766872, 680544064,
     /* node 3051 x: shift, then 4 coefficients */
-    34, 0, 627501760, -421024160, -24343822,
+    34, 0, 627256960, -420738496, -24390706,
     /* node 3051 y: shift, then 4 coefficients */
-    34, 0, -254421872, 390657408, -27191332,
+    34, 0, -254324320, 390502016, -27218070,
     /* node 3051 z: shift, then 4 coefficients */
-    34, 0, 56470924, -56903160, 679866944,
+    34, 0, 56298424, -56686580, 679815744,
     /* node 3052 x: shift, then 4 coefficients */
-    34, 0, 619761472, -406888896, -2614230,
+    34, 0, 619913344, -407117280, -2807737,
     /* node 3052 y: shift, then 4 coefficients */
-    34, 0, -254852336, 430979296, -26601822,
+    34, 0, -254988336, 431090176, -26555432,
     /* node 3052 z: shift, then 4 coefficients */
-    34, 0, 49277432, -52478276, 703847616,
+    34, 0, 49117036, -52281016, 703758400,
     /* node 3053 x: shift, then 4 coefficients */
-    34, 0, 626750656, -417247136, 12541300,
+    34, 0, 626774976, -417213440, 12441886,
     /* node 3053 y: shift, then 4 coefficients */
-    34, 0, -254878976, 428262784, -32729344,
+    34, 0, -254795984, 428129440, -32765260,
     /* node 3053 z: shift, then 4 coefficients */
-    34, 0, 52570344, -62937744, 697439168,
+    34, 0, 52419644, -62668972, 697366912,
     /* node 3054 x: shift, then 4 coefficients */
-    34, 0, 630474240, -423932000, 3041192,
+    34, 0, 630736000, -424405120, 2905787,
     /* node 3054 y: shift, then 4 coefficients */
-    34, 0, -254973904, 403482240, -32294228,
+    34, 0, -255357936, 404029376, -32149242,
     /* node 3054 z: shift, then 4 coefficients */
-    34, 0, 57186120, -63709592, 687718208,
+    34, 0, 57185696, -63767720, 687575808,
     /* node 3055 x: shift, then 4 coefficients */
-    33, 0, 318178176, -216997616, 8031000,
+    33, 0, 318267200, -217168464, 7956982,
     /* node 3055 y: shift, then 4 coefficients */
-    34, 0, -253321888, 403124960, -34236692,
+    34, 0, -253585904, 403523552, -34151696,
     /* node 3055 z: shift, then 4 coefficients */
-    34, 0, 57814060, -67096884, 684971584,
+    34, 0, 57740620, -67082532, 684805248,
     /* node 3056 x: shift, then 4 coefficients */
-    33, 0, 315697280, -212825936, 13617762,
+    33, 0, 315726976, -212864016, 13558418,
     /* node 3056 y: shift, then 4 coefficients */
-    34, 0, -251897904, 410832576, -36648772,
+    34, 0, -251895456, 410691456, -36656024,
     /* node 3056 z: shift, then 4 coefficients */
-    34, 0, 54980296, -67954008, 691165248,
+    34, 0, 54727960, -67605280, 691053056,
     /* node 3057 x: shift, then 4 coefficients */
-    33, 0, 320945504, -220860368, 14726554,
+    33, 0, 321015328, -221003072, 14643640,
     /* node 3057 y: shift, then 4 coefficients */
-    34, 0, -252022224, 400340096, -37025700,
+    34, 0, -252268224, 400706784, -36952260,
     /* node 3057 z: shift, then 4 coefficients */
-    34, 0, 59114716, -71950616, 683246272,
+    34, 0, 58960332, -71980848, 683137344,
     /* node 3058 x: shift, then 4 coefficients */
-    33, 0, 320292864, -219288352, 2293304,
+    33, 0, 320354752, -219384032, 2237457,
     /* node 3058 y: shift, then 4 coefficients */
-    34, 0, -252938272, 387088064, -33150254,
+    34, 0, -253056544, 387221472, -33098346,
     /* node 3058 z: shift, then 4 coefficients */
-    34, 0, 60121880, -64567764, 679490816,
+    34, 0, 59803728, -64105608, 679449664,
     /* node 3059 x: shift, then 4 coefficients */
-    33, 0, 323544544, -223489568, 9240088,
+    33, 0, 323606944, -223558304, 9198105,
     /* node 3059 y: shift, then 4 coefficients */
-    34, 0, -252539344, 387422208, -35673936,
+    34, 0, -252665248, 387633856, -35623712,
     /* node 3059 z: shift, then 4 coefficients */
-    34, 0, 61897028, -70168776, 677997568,
+    34, 0, 61713084, -70054736, 677872384,
     /* node 3060 x: shift, then 4 coefficients */
-    33, 0, 318691200, -218103504, 20782822,
+    33, 0, 318694816, -218047824, 20742614,
     /* node 3060 y: shift, then 4 coefficients */
-    34, 0, -250759104, 403153120, -39791040,
+    34, 0, -250805344, 403095552, -39777348,
     /* node 3060 z: shift, then 4 coefficients */
-    34, 0, 56771868, -73826872, 685920064,
+    34, 0, 56592024, -73600080, 685815552,
     /* node 3061 x: shift, then 4 coefficients */
-    33, 0, 320619520, -220760240, 27766240,
+    33, 0, 320609856, -220683456, 27719182,
     /* node 3061 y: shift, then 4 coefficients */
-    34, 0, -246652352, 391440544, -41986372,
+    34, 0, -246648832, 391203456, -41976732,
     /* node 3061 z: shift, then 4 coefficients */
-    34, 0, 58911796, -80721896, 682889280,
+    34, 0, 58724044, -80489848, 682768192,
     /* node 3062 x: shift, then 4 coefficients */
-    33, 0, 322703488, -222580224, 21289516,
+    33, 0, 322730976, -222648960, 21223246,
     /* node 3062 y: shift, then 4 coefficients */
-    34, 0, -248591088, 385351104, -39257584,
+    34, 0, -248739488, 385655296, -39198552,
     /* node 3062 z: shift, then 4 coefficients */
-    34, 0, 60713040, -78272000, 680287168,
+    34, 0, 60589292, -78298128, 680182464,
     /* node 3063 x: shift, then 4 coefficients */
-    33, 0, 324914112, -226570848, 27828454,
+    33, 0, 324950144, -226622960, 27770720,
     /* node 3063 y: shift, then 4 coefficients */
-    34, 0, -245334240, 380147840, -40349520,
+    34, 0, -245415056, 380366592, -40345044,
     /* node 3063 z: shift, then 4 coefficients */
-    34, 0, 62789968, -81109528, 677080576,
+    34, 0, 62659088, -81122280, 676957504,
     /* node 3064 x: shift, then 4 coefficients */
-    33, 0, 322895552, -224649616, 34450420,
+    33, 0, 322919008, -224617584, 34373384,
     /* node 3064 y: shift, then 4 coefficients */
-    34, 0, -242800736, 383977312, -42665288,
+    34, 0, -242878656, 383992864, -42668528,
     /* node 3064 z: shift, then 4 coefficients */
-    34, 0, 60810976, -83311392, 679040768,
+    34, 0, 60631476, -83186440, 678887680,
     /* node 3065 x: shift, then 4 coefficients */
-    33, 0, 327144096, -230479568, 33796368,
+    33, 0, 327157760, -230386528, 33727156,
     /* node 3065 y: shift, then 4 coefficients */
-    34, 0, -242211040, 373701312, -40899500,
+    34, 0, -242216240, 373526496, -40852728,
     /* node 3065 z: shift, then 4 coefficients */
-    34, 0, 64473432, -84257232, 675001280,
+    34, 0, 64371288, -84527896, 674933312,
     /* node 3066 x: shift, then 4 coefficients */
-    33, 0, 327706560, -229506144, 21920502,
+    33, 0, 327728192, -229630800, 21862530,
     /* node 3066 y: shift, then 4 coefficients */
-    34, 0, -247029584, 374963072, -38419476,
+    34, 0, -247181024, 375253184, -38362740,
     /* node 3066 z: shift, then 4 coefficients */
-    34, 0, 65068840, -80029928, 674484352,
+    34, 0, 64943276, -80032336, 674317888,
     /* node 3067 x: shift, then 4 coefficients */
-    33, 0, 329433120, -232545584, 27716624,
+    33, 0, 329473472, -232780768, 27677004,
     /* node 3067 y: shift, then 4 coefficients */
-    34, 0, -244294464, 370323488, -39331844,
+    34, 0, -244493296, 371000672, -39342452,
     /* node 3067 z: shift, then 4 coefficients */
-    34, 0, 66022224, -82843928, 672745856,
+    34, 0, 65951544, -82520544, 672542208,
     /* node 3071 x: shift, then 4 coefficients */
-    37, 0, 588067200, -365815232, 89246608,
+    37, 0, 588064320, -362561184, 90243920,
     /* node 3071 y: shift, then 4 coefficients */
-    36, 0, -258124880, 253192416, 57392856,
+    36, 0, -257949328, 254041296, 56870760,
     /* node 3071 z: shift, then 4 coefficients */
-    37, 0, -108929144, 243160784, 604065984,
+    37, 0, -109322032, 243385040, 605447616,
     /* node 3072 x: shift, then 4 coefficients */
-    36, 0, 441358944, -249815072, 98990536,
+    36, 0, 440712544, -245924272, 98825984,
     /* node 3072 y: shift, then 4 coefficients */
-    36, 0, -416262272, 437447392, 100160632,
+    36, 0, -419730816, 445885216, 101484896,
     /* node 3072 z: shift, then 4 coefficients */
-    36, 0, -73979032, 169147056, 525087648,
+    36, 0, -73826584, 169770160, 526328096,
     /* node 3073 x: shift, then 4 coefficients */
-    36, 0, 384019520, -217332896, 87179056,
+    36, 0, 382104448, -215671024, 85378064,
     /* node 3073 y: shift, then 4 coefficients */
-    36, 0, -374569568, 366407392, 81116200,
+    36, 0, -374808736, 365064704, 78863256,
     /* node 3073 z: shift, then 4 coefficients */
-    36, 0, -66243956, 160771760, 441764192,
+    36, 0, -65848180, 161050976, 441878560,
     /* node 3074 x: shift, then 4 coefficients */
-    37, 0, 422809120, -273558656, 50641856,
+    37, 0, 425447264, -275419488, 51510192,
     /* node 3074 y: shift, then 4 coefficients */
-    37, 0, -431318432, 394274240, 60474572,
+    37, 0, -431259968, 395034784, 58215684,
     /* node 3074 z: shift, then 4 coefficients */
-    37, 0, -73034640, 192985216, 474996960,
+    37, 0, -76604272, 195131984, 475912192,
     /* node 3075 x: shift, then 4 coefficients */
-    39, 0, 592359936, -407488768, -25482156,
+    39, 0, 594721344, -407358016, -23279140,
     /* node 3075 y: shift, then 4 coefficients */
-    40, 0, -241323200, 194281712, -130840888,
+    40, 0, -237020672, 205467616, -133615016,
     /* node 3075 z: shift, then 4 coefficients */
-    39, 0, -49849692, 125122872, 376161760,
+    39, 0, -55452656, 126454280, 377264160,
     /* node 3080 x: shift, then 4 coefficients */
-    37, 0, 501393344, -285720640, 116991536,
+    37, 0, 502156064, -287540224, 116928776,
     /* node 3080 y: shift, then 4 coefficients */
-    37, 0, -388851392, 362290848, 125490992,
+    37, 0, -388608800, 362946304, 126192368,
     /* node 3080 z: shift, then 4 coefficients */
-    37, 0, -122330296, 274098912, 610624000,
+    37, 0, -122864400, 274661440, 611303616,
     /* node 3082 x: shift, then 4 coefficients */
-    35, 0, 346970656, -167215952, 98217496,
+    35, 0, 346950720, -167507776, 97981640,
     /* node 3082 y: shift, then 4 coefficients */
-    35, 0, -306292448, 344853664, 77914336,
+    35, 0, -307176256, 345326880, 77887296,
     /* node 3082 z: shift, then 4 coefficients */
-    35, 0, -29428250, 102387936, 504526656,
+    35, 0, -30086442, 102895968, 504864736,
     /* node 3083 x: shift, then 4 coefficients */
-    35, 0, 429756992, -185114336, 122774544,
+    35, 0, 429032096, -185205024, 122735248,
     /* node 3083 y: shift, then 4 coefficients */
-    35, 0, -353655488, 436100480, 98512368,
+    35, 0, -353484256, 435558656, 99312032,
     /* node 3083 z: shift, then 4 coefficients */
-    35, 0, -32963132, 121514512, 640429760,
+    35, 0, -33316476, 122190456, 639997568,
     /* node 3084 x: shift, then 4 coefficients */
-    35, 0, 397344576, -177891936, 126748072,
+    35, 0, 397666464, -177874368, 126487936,
     /* node 3084 y: shift, then 4 coefficients */
-    35, 0, -326785440, 377930592, 101290352,
+    35, 0, -327499968, 380249376, 100605728,
     /* node 3084 z: shift, then 4 coefficients */
-    35, 0, -33527354, 127196952, 595634944,
+    35, 0, -33237238, 126816536, 596292096,
     /* node 3085 x: shift, then 4 coefficients */
-    35, 0, 323900704, -150753344, 103168160,
+    35, 0, 324304544, -150653392, 103545016,
     /* node 3085 y: shift, then 4 coefficients */
-    35, 0, -287820576, 317417024, 82484864,
+    35, 0, -288153440, 319614720, 82529424,
     /* node 3085 z: shift, then 4 coefficients */
-    35, 0, -35972040, 109471160, 464581440,
+    35, 0, -35641064, 109542376, 465338272,
     /* node 3086 x: shift, then 4 coefficients */
-    36, 0, 560557824, -280019168, 151052864,
+    36, 0, 559955328, -279835776, 150180272,
     /* node 3086 y: shift, then 4 coefficients */
-    35, 0, -249821616, 274264096, 71656648,
+    35, 0, -252739600, 278787168, 71364456,
     /* node 3086 z: shift, then 4 coefficients */
-    36, 0, -68039688, 191302256, 751521600,
+    36, 0, -67584184, 190032576, 753508160,
     /* node 3087 x: shift, then 4 coefficients */
-    36, 0, 505264832, -257300944, 149974832,
+    36, 0, 504485664, -258857728, 149540752,
     /* node 3087 y: shift, then 4 coefficients */
-    35, 0, -231727728, 244853664, 64421016,
+    35, 0, -232114656, 244592448, 64363864,
     /* node 3087 z: shift, then 4 coefficients */
-    36, 0, -66239644, 192161312, 676058688,
+    36, 0, -67516680, 191774864, 674258496,
     /* node 3088 x: shift, then 4 coefficients */
-    35, 0, 298189088, -140413328, 102678312,
+    35, 0, 298769440, -140349376, 103674320,
     /* node 3088 y: shift, then 4 coefficients */
-    35, 0, -251709488, 267484544, 85521312,
+    35, 0, -250896384, 267753904, 86902576,
     /* node 3088 z: shift, then 4 coefficients */
-    35, 0, -35615028, 112936584, 423413344,
+    35, 0, -35466624, 114204760, 424479296,
     /* node 3089 x: shift, then 4 coefficients */
-    36, 0, 458228544, -244982256, 132122512,
+    36, 0, 457852800, -246034400, 133042152,
     /* node 3089 y: shift, then 4 coefficients */
-    36, 0, -394766176, 390337440, 110062688,
+    36, 0, -393939840, 388583328, 109535768,
     /* node 3089 z: shift, then 4 coefficients */
-    36, 0, -71657848, 193624976, 602671808,
+    36, 0, -71719648, 193168608, 602535040,
     /* node 3090 x: shift, then 4 coefficients */
-    36, 0, 536095968, -244865696, 210899984,
+    36, 0, 536256096, -244461408, 210884272,
     /* node 3090 y: shift, then 4 coefficients */
-    35, 0, -224630304, 235960032, 87215448,
+    35, 0, -224728032, 236644528, 87024800,
     /* node 3090 z: shift, then 4 coefficients */
-    36, 0, -68105824, 223569424, 777568320,
+    36, 0, -68291880, 224853536, 777991744,
     /* node 3091 x: shift, then 4 coefficients */
-    36, 0, 396462400, -206121504, 123690512,
+    36, 0, 396841184, -205194528, 124771720,
     /* node 3091 y: shift, then 4 coefficients */
-    36, 0, -347768160, 333065888, 111120024,
+    36, 0, -347750624, 334516544, 112566024,
     /* node 3091 z: shift, then 4 coefficients */
-    36, 0, -75469168, 185793136, 511361952,
+    36, 0, -75974032, 186407552, 511886080,
     /* node 3092 x: shift, then 4 coefficients */
-    36, 0, 478195072, -222591392, 189626016,
+    36, 0, 478183776, -222834656, 189634128,
     /* node 3092 y: shift, then 4 coefficients */
-    36, 0, -381478624, 373391040, 147304096,
+    36, 0, -381632160, 373925792, 147755872,
     /* node 3092 z: shift, then 4 coefficients */
-    36, 0, -74858088, 222561664, 678688320,
+    36, 0, -75231768, 223286032, 678501952,
     /* node 3093 x: shift, then 4 coefficients */
-    35, 0, 335914560, -146882752, 139371728,
+    35, 0, 336235392, -147243360, 138827808,
     /* node 3093 y: shift, then 4 coefficients */
-    35, 0, -271936192, 293857952, 111533864,
+    35, 0, -272319744, 293741472, 110036608,
     /* node 3093 z: shift, then 4 coefficients */
-    35, 0, -33317042, 125119856, 513979680,
+    35, 0, -33329342, 124754528, 514214016,
     /* node 3094 x: shift, then 4 coefficients */
-    35, 0, 308198912, -137397408, 132173944,
+    35, 0, 308415008, -137464016, 132106280,
     /* node 3094 y: shift, then 4 coefficients */
-    35, 0, -244387136, 248043360, 91421776,
+    35, 0, -244404416, 248275632, 91778496,
     /* node 3094 z: shift, then 4 coefficients */
-    35, 0, -28829524, 113890864, 462386752,
+    35, 0, -28890394, 114299160, 462736384,
     /* node 3095 x: shift, then 4 coefficients */
-    36, 0, 303687008, -152530192, 105254008,
+    36, 0, 303697664, -152787856, 105111008,
     /* node 3095 y: shift, then 4 coefficients */
-    36, 0, -245289632, 233040896, 95780224,
+    36, 0, -245477232, 232791216, 95209328,
     /* node 3095 z: shift, then 4 coefficients */
-    36, 0, -66651584, 166900592, 412000832,
+    36, 0, -66755264, 167081952, 412096288,
     /* node 3096 x: shift, then 4 coefficients */
-    36, 0, 363881088, -165959040, 158321520,
+    36, 0, 364180384, -166150704, 158158816,
     /* node 3096 y: shift, then 4 coefficients */
-    36, 0, -291092000, 271528384, 118411112,
+    36, 0, -291539232, 272225824, 118380064,
     /* node 3096 z: shift, then 4 coefficients */
-    36, 0, -69003528, 188622592, 513070720,
+    36, 0, -69399080, 189185824, 513400032,
     /* node 3099 x: shift, then 4 coefficients */
-    36, 0, 447374304, -186994128, 234699120,
+    36, 0, 447236512, -187114080, 234348752,
     /* node 3099 y: shift, then 4 coefficients */
-    36, 0, -337935520, 314878240, 153228608,
+    36, 0, -338183872, 315378080, 153468112,
     /* node 3099 z: shift, then 4 coefficients */
-    36, 0, -62731504, 216171200, 682041792,
+    36, 0, -63015772, 216811888, 682484864,
     /* node 3101 x: shift, then 4 coefficients */
-    35, 0, 579732736, -253230816, 149828256,
+    35, 0, 580014656, -252809872, 150084864,
     /* node 3101 y: shift, then 4 coefficients */
-    35, 0, -404932512, 555888000, 109946016,
+    35, 0, -405146944, 556712256, 110007440,
     /* node 3101 z: shift, then 4 coefficients */
-    35, 0, -22550094, 115665656, 906964608,
+    35, 0, -22535644, 116623408, 907191808,
     /* node 3102 x: shift, then 4 coefficients */
-    34, 0, 331425120, -148616656, 76881216,
+    34, 0, 331331680, -149121216, 76708856,
     /* node 3102 y: shift, then 4 coefficients */
-    34, 0, -214716704, 310715200, 48524844,
+    34, 0, -214943968, 310575584, 48424344,
     /* node 3102 z: shift, then 4 coefficients */
-    34, 0, -8751058, 54330204, 533336928,
+    34, 0, -8907588, 53942956, 533053184,
     /* node 3103 x: shift, then 4 coefficients */
-    35, 0, 615802688, -272121568, 177169232,
+    35, 0, 615617920, -272776512, 176886544,
     /* node 3103 y: shift, then 4 coefficients */
-    34, 0, -202108816, 277544000, 57782432,
+    34, 0, -202352304, 277375584, 57723316,
     /* node 3103 z: shift, then 4 coefficients */
-    34, 0, -11540576, 57953172, 484987296,
+    34, 0, -11795916, 57698440, 484700800,
     /* node 3104 x: shift, then 4 coefficients */
-    35, 0, 541354688, -229336976, 166024304,
+    35, 0, 541538368, -229409744, 166105984,
     /* node 3104 y: shift, then 4 coefficients */
-    35, 0, -382651296, 492874080, 118035408,
+    35, 0, -383105664, 493368064, 118213560,
     /* node 3104 z: shift, then 4 coefficients */
-    35, 0, -25193246, 127371896, 850966272,
+    35, 0, -25174786, 128047664, 851237184,
     /* node 3105 x: shift, then 4 coefficients */
-    35, 0, 497202592, -218426336, 131876136,
+    35, 0, 497195904, -218918320, 131580344,
     /* node 3105 y: shift, then 4 coefficients */
-    35, 0, -383415424, 485601280, 100481136,
+    35, 0, -383672992, 485892160, 100403040,
     /* node 3105 z: shift, then 4 coefficients */
-    35, 0, -31869722, 119884008, 757856704,
+    35, 0, -32009872, 119889816, 757788416,
     /* node 3106 x: shift, then 4 coefficients */
-    35, 0, 465258304, -202756368, 143111008,
+    35, 0, 464767808, -202831232, 142871024,
     /* node 3106 y: shift, then 4 coefficients */
-    35, 0, -356140832, 420297600, 107909536,
+    35, 0, -356077856, 420198528, 108037408,
     /* node 3106 z: shift, then 4 coefficients */
-    35, 0, -31794128, 115362512, 703901248,
+    35, 0, -32086856, 115667280, 703518656,
     /* node 3107 x: shift, then 4 coefficients */
-    35, 0, 510702816, -210294816, 182961136,
+    35, 0, 510271936, -210325376, 182993136,
     /* node 3107 y: shift, then 4 coefficients */
-    35, 0, -364495840, 441879424, 125050568,
+    35, 0, -364600832, 442124128, 125489352,
     /* node 3107 z: shift, then 4 coefficients */
-    35, 0, -28110486, 128339104, 796694976,
+    35, 0, -28195596, 128935312, 796573248,
     /* node 3108 x: shift, then 4 coefficients */
-    35, 0, 432071328, -194519328, 151627632,
+    35, 0, 432694144, -194930480, 151569776,
     /* node 3108 y: shift, then 4 coefficients */
-    35, 0, -336175712, 385485632, 116167272,
+    35, 0, -336953504, 387039488, 115426024,
     /* node 3108 z: shift, then 4 coefficients */
-    35, 0, -31586716, 118085536, 664566336,
+    35, 0, -31491770, 117936024, 665035776,
     /* node 3109 x: shift, then 4 coefficients */
-    35, 0, 481524768, -199271968, 195548528,
+    35, 0, 481780224, -199787936, 195508992,
     /* node 3109 y: shift, then 4 coefficients */
-    35, 0, -335133696, 405313344, 138037920,
+    35, 0, -335618144, 406134656, 137785472,
     /* node 3109 z: shift, then 4 coefficients */
-    35, 0, -26011796, 130070976, 754743808,
+    35, 0, -25874304, 130236632, 755168576,
     /* node 3110 x: shift, then 4 coefficients */
-    35, 0, 407329920, -179129904, 158903600,
+    35, 0, 406602688, -179282224, 158644448,
     /* node 3110 y: shift, then 4 coefficients */
-    35, 0, -311442464, 348479904, 115720520,
+    35, 0, -310827392, 347768864, 115885528,
     /* node 3110 z: shift, then 4 coefficients */
-    35, 0, -29514040, 122598864, 625584768,
+    35, 0, -29745066, 123217376, 624811968,
     /* node 3111 x: shift, then 4 coefficients */
-    35, 0, 449011200, -192580576, 200556384,
+    35, 0, 448888256, -192676896, 200582240,
     /* node 3111 y: shift, then 4 coefficients */
-    35, 0, -316656800, 353370784, 123308744,
+    35, 0, -316476000, 353302016, 123872328,
     /* node 3111 z: shift, then 4 coefficients */
-    35, 0, -25162874, 129775784, 711953600,
+    35, 0, -25305480, 130177032, 711606016,
     /* node 3112 x: shift, then 4 coefficients */
-    35, 0, 545454976, -235204528, 218092640,
+    35, 0, 545402944, -235384256, 217836240,
     /* node 3112 y: shift, then 4 coefficients */
-    35, 0, -359568000, 440810016, 136521584,
+    35, 0, -359884448, 441188064, 136501008,
     /* node 3112 z: shift, then 4 coefficients */
-    35, 0, -23183834, 117453552, 854299776,
+    35, 0, -23523918, 117894320, 853964608,
     /* node 3113 x: shift, then 4 coefficients */
-    35, 0, 513342560, -223645904, 221379776,
+    35, 0, 513194560, -223798416, 221089856,
     /* node 3113 y: shift, then 4 coefficients */
-    35, 0, -340253280, 387034720, 126247504,
+    35, 0, -340408416, 387436576, 126496312,
     /* node 3113 z: shift, then 4 coefficients */
-    35, 0, -24454348, 118856000, 805080128,
+    35, 0, -24686850, 119052984, 804869312,
     /* node 3114 x: shift, then 4 coefficients */
-    35, 0, 376423648, -161325968, 167566560,
+    35, 0, 376480096, -161353104, 167602752,
     /* node 3114 y: shift, then 4 coefficients */
-    35, 0, -277877920, 297964448, 113986344,
+    35, 0, -278096736, 298832352, 114199456,
     /* node 3114 z: shift, then 4 coefficients */
-    35, 0, -29450854, 127497288, 579853888,
+    35, 0, -29545388, 127716856, 580209536,
     /* node 3115 x: shift, then 4 coefficients */
-    35, 0, 350147744, -145181168, 176807696,
+    35, 0, 350124768, -145450240, 176689104,
     /* node 3115 y: shift, then 4 coefficients */
-    35, 0, -258412752, 270123520, 113884904,
+    35, 0, -258404912, 270145632, 113830424,
     /* node 3115 z: shift, then 4 coefficients */
-    35, 0, -26436104, 125635752, 547503168,
+    35, 0, -26453270, 125858848, 547630464,
     /* node 3116 x: shift, then 4 coefficients */
-    35, 0, 422757376, -177605312, 211166720,
+    35, 0, 422575776, -177846624, 210884032,
     /* node 3116 y: shift, then 4 coefficients */
-    35, 0, -291889664, 315902016, 132316968,
+    35, 0, -291894528, 315863264, 132035280,
     /* node 3116 z: shift, then 4 coefficients */
-    35, 0, -26062272, 130187864, 664604416,
+    35, 0, -26242370, 130424016, 664351744,
     /* node 3117 x: shift, then 4 coefficients */
-    35, 0, 390108960, -161851152, 216211104,
+    35, 0, 390049184, -161929696, 216167888,
     /* node 3117 y: shift, then 4 coefficients */
-    35, 0, -265603888, 270417600, 116256464,
+    35, 0, -265813328, 270837568, 116443568,
     /* node 3117 z: shift, then 4 coefficients */
-    35, 0, -21728934, 123652512, 614478592,
+    35, 0, -21796010, 123929944, 614582656,
     /* node 3118 x: shift, then 4 coefficients */
-    35, 0, 324608576, -132353472, 175407536,
+    35, 0, 324525216, -132501008, 175267152,
     /* node 3118 y: shift, then 4 coefficients */
-    35, 0, -230922864, 228272672, 102575288,
+    35, 0, -231231552, 228713712, 102662688,
     /* node 3118 z: shift, then 4 coefficients */
-    35, 0, -28952280, 122399016, 500006784,
+    35, 0, -29059764, 122695536, 500201952,
     /* node 3119 x: shift, then 4 coefficients */
-    35, 0, 363056288, -145895328, 226316224,
+    35, 0, 362940224, -146081344, 226107296,
     /* node 3119 y: shift, then 4 coefficients */
-    35, 0, -237940976, 232874576, 119532856,
+    35, 0, -238108960, 233098416, 119424784,
     /* node 3119 z: shift, then 4 coefficients */
-    35, 0, -18911174, 121080840, 571622144,
+    35, 0, -18915538, 121269312, 571733632,
     /* node 3120 x: shift, then 4 coefficients */
-    35, 0, 458581408, -199704976, 243708800,
+    35, 0, 458540224, -199654000, 243708672,
     /* node 3120 y: shift, then 4 coefficients */
-    35, 0, -293544576, 305854208, 127356088,
+    35, 0, -293645504, 306501504, 127950488,
     /* node 3120 z: shift, then 4 coefficients */
-    35, 0, -17940308, 120189112, 720588224,
+    35, 0, -17984168, 120549024, 720921920,
     /* node 3121 x: shift, then 4 coefficients */
-    35, 0, 431900608, -180016096, 259668320,
+    35, 0, 431895136, -180151600, 259872960,
     /* node 3121 y: shift, then 4 coefficients */
-    35, 0, -261104816, 266717888, 135021472,
+    35, 0, -261156960, 266831424, 134858080,
     /* node 3121 z: shift, then 4 coefficients */
-    35, 0, -17360146, 119461776, 670248640,
+    35, 0, -17114316, 119693968, 670654080,
     /* node 3122 x: shift, then 4 coefficients */
-    36, 0, 529629376, -208064064, 333170752,
+    36, 0, 529257120, -208084448, 332884736,
     /* node 3122 y: shift, then 4 coefficients */
-    36, 0, -374632928, 346053536, 186331648,
+    36, 0, -374785472, 346090304, 186312928,
     /* node 3122 z: shift, then 4 coefficients */
-    35, 0, -27816096, 115322608, 420557600,
+    35, 0, -27842108, 115543416, 420688416,
     /* node 3123 x: shift, then 4 coefficients */
-    35, 0, 315745696, -119787368, 219884720,
+    35, 0, 315542208, -119591232, 219916528,
     /* node 3123 y: shift, then 4 coefficients */
-    36, 0, -394133120, 365252320, 212146000,
+    36, 0, -394126080, 366062240, 213088736,
     /* node 3123 z: shift, then 4 coefficients */
-    35, 0, -21489054, 118704008, 496812352,
+    35, 0, -21614998, 119088232, 496992512,
     /* node 3126 x: shift, then 4 coefficients */
-    35, 0, 348327360, -131312040, 272052416,
+    35, 0, 347924288, -131526328, 271461344,
     /* node 3126 y: shift, then 4 coefficients */
-    36, 0, -405595904, 366508640, 232423216,
+    36, 0, -405751712, 365861472, 231234368,
     /* node 3126 z: shift, then 4 coefficients */
-    35, 0, -12909178, 112035768, 550805568,
+    35, 0, -13094001, 112218320, 550582720,
     /* node 3128 x: shift, then 4 coefficients */
-    34, 0, 477300320, -189156704, 100609864,
+    34, 0, 477424032, -189458288, 100839616,
     /* node 3128 y: shift, then 4 coefficients */
-    34, 0, -227075936, 446919488, 23996442,
+    34, 0, -226806672, 446714944, 24477500,
     /* node 3128 z: shift, then 4 coefficients */
-    34, 0, 7644858, 17093450, 761086528,
+    34, 0, 7736714, 16990954, 760396160,
     /* node 3129 x: shift, then 4 coefficients */
-    34, 0, 551117760, -220915792, 99524496,
+    34, 0, 551239552, -221166336, 99525312,
     /* node 3129 y: shift, then 4 coefficients */
-    34, 0, -233964304, 519706176, 3224143,
+    34, 0, -234118192, 519668416, 3287900,
     /* node 3129 z: shift, then 4 coefficients */
-    34, 0, 12916429, -12225912, 869188544,
+    34, 0, 12936519, -12203295, 869226688,
     /* node 3130 x: shift, then 4 coefficients */
-    34, 0, 487290848, -203313904, 117073680,
+    34, 0, 486771264, -203646960, 116743880,
     /* node 3130 y: shift, then 4 coefficients */
-    34, 0, -221994160, 427040320, 23769178,
+    34, 0, -222961328, 426994240, 23137710,
     /* node 3130 z: shift, then 4 coefficients */
-    34, 0, 12653092, 9587536, 772909056,
+    34, 0, 12504905, 9722816, 772780864,
     /* node 3131 x: shift, then 4 coefficients */
-    34, 0, 413976000, -173123760, 110937496,
+    34, 0, 412861024, -174024160, 109918576,
     /* node 3131 y: shift, then 4 coefficients */
-    34, 0, -212442080, 365676960, 49429444,
+    34, 0, -213686784, 364771392, 48180120,
     /* node 3131 z: shift, then 4 coefficients */
-    34, 0, 6500648, 37822032, 671901312,
+    34, 0, 6427451, 37162976, 671589760,
     /* node 3132 x: shift, then 4 coefficients */
-    34, 0, 390696032, -169373184, 91027632,
+    34, 0, 391102688, -168542896, 91341680,
     /* node 3132 y: shift, then 4 coefficients */
-    34, 0, -221309568, 361748736, 42119028,
+    34, 0, -221146544, 363523872, 42601120,
     /* node 3132 z: shift, then 4 coefficients */
-    34, 0, -3868146, 35973232, 626858112,
+    34, 0, -3345815, 37188240, 627691200,
     /* node 3133 x: shift, then 4 coefficients */
-    34, 0, 356742208, -157952128, 101264776,
+    34, 0, 357208576, -157499600, 101646656,
     /* node 3133 y: shift, then 4 coefficients */
-    34, 0, -207945648, 309828736, 55569696,
+    34, 0, -208021248, 310672320, 55823152,
     /* node 3133 z: shift, then 4 coefficients */
-    34, 0, -3979060, 48688188, 569765568,
+    34, 0, -3818495, 49562444, 570059968,
     /* node 3134 x: shift, then 4 coefficients */
-    34, 0, 373429280, -163475504, 118761136,
+    34, 0, 373501792, -163721760, 118634968,
     /* node 3134 y: shift, then 4 coefficients */
-    34, 0, -200307040, 295055968, 61389752,
+    34, 0, -200134368, 294620256, 61569012,
     /* node 3134 z: shift, then 4 coefficients */
-    34, 0, 1553767, 46843808, 597835904,
+    34, 0, 1277837, 46279256, 597266432,
     /* node 3135 x: shift, then 4 coefficients */
-    34, 0, 328111040, -143415360, 110601288,
+    34, 0, 328329760, -143286896, 110777112,
     /* node 3135 y: shift, then 4 coefficients */
-    35, 0, -391621024, 534989216, 130382336,
+    35, 0, -391308800, 536204448, 131029600,
     /* node 3135 z: shift, then 4 coefficients */
-    34, 0, -4447558, 55742284, 525463424,
+    34, 0, -4357424, 56215524, 525611648,
     /* node 3136 x: shift, then 4 coefficients */
-    34, 0, 347353184, -152707984, 129773088,
+    34, 0, 347095392, -152889104, 129401264,
     /* node 3136 y: shift, then 4 coefficients */
-    35, 0, -387701280, 517395072, 118729000,
+    35, 0, -388447488, 517671264, 118281400,
     /* node 3136 z: shift, then 4 coefficients */
-    34, 0, -275831, 46773804, 552281600,
+    34, 0, -317972, 46601084, 552173312,
     /* node 3137 x: shift, then 4 coefficients */
-    34, 0, 309057632, -136379520, 115324984,
+    34, 0, 309062368, -136472064, 115208144,
     /* node 3137 y: shift, then 4 coefficients */
-    35, 0, -375382464, 474530848, 134249584,
+    35, 0, -375610912, 475105664, 134323056,
     /* node 3137 z: shift, then 4 coefficients */
-    34, 0, -8913767, 57123140, 484933216,
+    34, 0, -8932184, 57504972, 484935584,
     /* node 3138 x: shift, then 4 coefficients */
-    34, 0, 325081088, -143371872, 137433632,
+    34, 0, 324995648, -143407296, 137247296,
     /* node 3138 y: shift, then 4 coefficients */
-    35, 0, -361132864, 455870272, 134791968,
+    35, 0, -361033184, 456005344, 135014960,
     /* node 3138 z: shift, then 4 coefficients */
-    34, 0, -483659, 50469464, 513998784,
+    34, 0, -549562, 50576720, 513952576,
     /* node 3139 x: shift, then 4 coefficients */
-    34, 0, 385428640, -175298288, 135824720,
+    34, 0, 385181216, -175397504, 135654288,
     /* node 3139 y: shift, then 4 coefficients */
-    35, 0, -399893184, 561828864, 102852256,
+    35, 0, -400775104, 562960128, 102803024,
     /* node 3139 z: shift, then 4 coefficients */
-    34, 0, 7641878, 35719480, 620465280,
+    34, 0, 7639248, 35902928, 620650944,
     /* node 3140 x: shift, then 4 coefficients */
-    34, 0, 360032544, -163706976, 146029056,
+    34, 0, 360083584, -163841472, 146011680,
     /* node 3140 y: shift, then 4 coefficients */
-    35, 0, -374632096, 490902656, 115963440,
+    35, 0, -374885600, 491464064, 115977104,
     /* node 3140 z: shift, then 4 coefficients */
-    34, 0, 3769900, 38682632, 568559232,
+    34, 0, 3765844, 38751360, 568605248,
     /* node 3141 x: shift, then 4 coefficients */
-    34, 0, 290806656, -128013480, 124079784,
+    34, 0, 290827456, -128086072, 123979872,
     /* node 3141 y: shift, then 4 coefficients */
-    35, 0, -354059136, 426016320, 134109120,
+    35, 0, -354190880, 426267072, 134181304,
     /* node 3141 z: shift, then 4 coefficients */
-    35, 0, -16816742, 110917936, 911302336,
+    35, 0, -16893740, 111421536, 911357632,
     /* node 3142 x: shift, then 4 coefficients */
-    35, 0, 547305536, -242269296, 261357952,
+    35, 0, 546900928, -242298336, 260809360,
     /* node 3142 y: shift, then 4 coefficients */
-    35, 0, -333271424, 376189632, 129305872,
+    35, 0, -333357376, 376519776, 129244584,
     /* node 3142 z: shift, then 4 coefficients */
-    35, 0, -14963817, 113058656, 860472128,
+    35, 0, -15088577, 113377664, 860454016,
     /* node 3143 x: shift, then 4 coefficients */
-    34, 0, 307763808, -137523872, 142171952,
+    34, 0, 307893312, -137601616, 142128832,
     /* node 3143 y: shift, then 4 coefficients */
-    35, 0, -349215136, 408521984, 123572984,
+    35, 0, -349728960, 408917344, 123234144,
     /* node 3143 z: shift, then 4 coefficients */
-    35, 0, -2631756, 99890648, 964583104,
+    35, 0, -2584802, 100239016, 964857280,
     /* node 3144 x: shift, then 4 coefficients */
-    34, 0, 290800608, -131818768, 149219680,
+    34, 0, 290831008, -131793808, 149175024,
     /* node 3144 y: shift, then 4 coefficients */
-    35, 0, -323366240, 359525184, 134033648,
+    35, 0, -323211680, 359975296, 134473840,
     /* node 3144 z: shift, then 4 coefficients */
-    35, 0, -2440778, 100197280, 904759488,
+    35, 0, -2429790, 100729264, 904944640,
     /* node 3145 x: shift, then 4 coefficients */
-    35, 0, 525141344, -230177232, 279408128,
+    35, 0, 524912896, -230223712, 278941344,
     /* node 3145 y: shift, then 4 coefficients */
-    35, 0, -311693792, 337316992, 134216656,
+    35, 0, -311743872, 337796288, 134615504,
     /* node 3145 z: shift, then 4 coefficients */
-    35, 0, -9615414, 112960104, 823950144,
+    35, 0, -9753622, 113185352, 823885312,
     /* node 3146 x: shift, then 4 coefficients */
-    34, 0, 276691232, -125376408, 156498144,
+    34, 0, 276698432, -125470504, 156472032,
     /* node 3146 y: shift, then 4 coefficients */
-    35, 0, -304162720, 320244448, 131008744,
+    35, 0, -304015680, 320021856, 131077552,
     /* node 3146 z: shift, then 4 coefficients */
-    35, 0, -3646674, 100055856, 854537088,
+    35, 0, -3385401, 100227344, 854718144,
     /* node 3147 x: shift, then 4 coefficients */
-    34, 0, 321705536, -149513248, 162234896,
+    34, 0, 322182208, -149571408, 162439936,
     /* node 3147 y: shift, then 4 coefficients */
-    35, 0, -336690592, 384211680, 124952320,
+    35, 0, -337030720, 385037120, 124726952,
     /* node 3147 z: shift, then 4 coefficients */
-    34, 0, 3976884, 41605884, 501601152,
+    34, 0, 4065594, 41597288, 501613056,
     /* node 3148 x: shift, then 4 coefficients */
-    34, 0, 306927168, -142717872, 169315536,
+    34, 0, 306514080, -142719216, 169004976,
     /* node 3148 y: shift, then 4 coefficients */
-    35, 0, -321390304, 347038432, 124028440,
+    35, 0, -321155488, 345963552, 123887728,
     /* node 3148 z: shift, then 4 coefficients */
-    35, 0, 6352896, 85010136, 938257536,
+    35, 0, 6050836, 85610576, 937460992,
     /* node 3149 x: shift, then 4 coefficients */
-    35, 0, 500062592, -216772512, 294664192,
+    35, 0, 499668000, -216903840, 294092672,
     /* node 3149 y: shift, then 4 coefficients */
-    35, 0, -285213664, 298588384, 137467984,
+    35, 0, -285134176, 298390400, 137130608,
     /* node 3149 z: shift, then 4 coefficients */
-    35, 0, -6092593, 112077800, 776819072,
+    35, 0, -6113050, 112257952, 776462464,
     /* node 3150 x: shift, then 4 coefficients */
-    35, 0, 468735136, -201637792, 303165248,
+    35, 0, 468689376, -201505408, 302872000,
     /* node 3150 y: shift, then 4 coefficients */
-    35, 0, -266398416, 260302960, 124249800,
+    35, 0, -266880800, 261003312, 124547040,
     /* node 3150 z: shift, then 4 coefficients */
-    35, 0, -5567364, 108532024, 725398976,
+    35, 0, -5956289, 108749960, 725137344,
     /* node 3151 x: shift, then 4 coefficients */
-    34, 0, 267085648, -119034600, 166804016,
+    34, 0, 267213536, -119176664, 166812064,
     /* node 3151 y: shift, then 4 coefficients */
-    35, 0, -283845088, 286542624, 130713592,
+    35, 0, -284492224, 287320928, 130746784,
     /* node 3151 z: shift, then 4 coefficients */
-    35, 0, 588394, 96832968, 812480704,
+    35, 0, 631287, 97179512, 813023744,
     /* node 3152 x: shift, then 4 coefficients */
-    34, 0, 252738080, -109950808, 174960240,
+    34, 0, 252663616, -110017768, 174715008,
     /* node 3152 y: shift, then 4 coefficients */
-    35, 0, -256746192, 247415648, 129675688,
+    35, 0, -256972336, 247585472, 129672304,
     /* node 3152 z: shift, then 4 coefficients */
-    35, 0, 3142971, 96113632, 759185280,
+    35, 0, 2888704, 96250824, 758737600,
     /* node 3153 x: shift, then 4 coefficients */
-    35, 0, 442694048, -182573920, 320584192,
+    35, 0, 442671904, -182698096, 320671936,
     /* node 3153 y: shift, then 4 coefficients */
-    35, 0, -236600224, 223862752, 130284968,
+    35, 0, -236679824, 223881712, 130222832,
     /* node 3153 z: shift, then 4 coefficients */
-    35, 0, -5286329, 105042488, 671314112,
+    35, 0, -5136138, 105336752, 671672384,
     /* node 3154 x: shift, then 4 coefficients */
-    35, 0, 478698112, -202133744, 366254752,
+    35, 0, 478051264, -202074432, 365317664,
     /* node 3154 y: shift, then 4 coefficients */
-    35, 0, -234119744, 215945088, 132277984,
+    35, 0, -234239104, 215660448, 131894648,
     /* node 3154 z: shift, then 4 coefficients */
-    35, 0, 6491770, 92587928, 713777920,
+    35, 0, 5948276, 92685904, 712760320,
     /* node 3155 x: shift, then 4 coefficients */
-    34, 0, 281623424, -129681096, 185864976,
+    34, 0, 281573696, -129745456, 185749008,
     /* node 3155 y: shift, then 4 coefficients */
-    35, 0, -277246528, 272251552, 126839112,
+    35, 0, -277599776, 272464800, 126643080,
     /* node 3155 z: shift, then 4 coefficients */
-    35, 0, 8638648, 82038680, 835379840,
+    35, 0, 8438392, 82139496, 835185472,
     /* node 3156 x: shift, then 4 coefficients */
-    34, 0, 266230128, -120166408, 191453568,
+    34, 0, 266316016, -120264728, 191439728,
     /* node 3156 y: shift, then 4 coefficients */
-    35, 0, -253866592, 239205120, 127561112,
+    35, 0, -254182816, 239557024, 127462984,
     /* node 3156 z: shift, then 4 coefficients */
-    35, 0, 7994627, 82791640, 782398400,
+    35, 0, 7922655, 82940728, 782654656,
     /* node 3163 x: shift, then 4 coefficients */
-    34, 0, 628272064, -272160416, 108444808,
+    34, 0, 627968768, -272108000, 107954960,
     /* node 3163 y: shift, then 4 coefficients */
-    34, 0, -236772064, 580808320, -36464268,
+    34, 0, -237028176, 580968384, -36405328,
     /* node 3163 z: shift, then 4 coefficients */
-    34, 0, 23285396, -48961464, 953176448,
+    34, 0, 23300364, -48725352, 953048832,
     /* node 3164 x: shift, then 4 coefficients */
-    34, 0, 648701312, -286127488, 96275120,
+    34, 0, 648696704, -286204864, 95884672,
     /* node 3164 y: shift, then 4 coefficients */
-    34, 0, -237557296, 580855040, -50210984,
+    34, 0, -237875440, 581035648, -50464244,
     /* node 3164 z: shift, then 4 coefficients */
-    34, 0, 25510674, -61073860, 955470080,
+    34, 0, 25467776, -61030592, 955324288,
     /* node 3165 x: shift, then 4 coefficients */
-    34, 0, 611937472, -280734528, 119760288,
+    34, 0, 611592832, -280895104, 119241288,
     /* node 3165 y: shift, then 4 coefficients */
-    34, 0, -235159536, 531939168, -42737428,
+    34, 0, -235265712, 532067008, -42590892,
     /* node 3165 z: shift, then 4 coefficients */
-    34, 0, 29309602, -58212560, 915627136,
+    34, 0, 29039398, -58029808, 915108096,
     /* node 3166 x: shift, then 4 coefficients */
-    34, 0, 590086912, -256348912, 117980568,
+    34, 0, 591254080, -256831072, 118441176,
     /* node 3166 y: shift, then 4 coefficients */
-    34, 0, -234968400, 521653408, -27783362,
+    34, 0, -235138480, 522247552, -27630976,
     /* node 3166 z: shift, then 4 coefficients */
-    34, 0, 23353276, -42384960, 900541632,
+    34, 0, 23492034, -42250664, 901179008,
     /* node 3167 x: shift, then 4 coefficients */
-    34, 0, 605658880, -242661360, 98786696,
+    34, 0, 605209536, -242890800, 98508752,
     /* node 3167 y: shift, then 4 coefficients */
-    34, 0, -237539840, 570221888, -19326080,
+    34, 0, -237777136, 570252736, -19416812,
     /* node 3167 z: shift, then 4 coefficients */
-    34, 0, 17782086, -30026556, 938062080,
+    34, 0, 17768280, -30091820, 937681984,
     /* node 3168 x: shift, then 4 coefficients */
-    34, 0, 556926272, -228981536, 119910168,
+    34, 0, 556775488, -229219136, 119653384,
     /* node 3168 y: shift, then 4 coefficients */
-    34, 0, -229182384, 487838688, -5440286,
+    34, 0, -229421120, 487869696, -5521852,
     /* node 3168 z: shift, then 4 coefficients */
-    34, 0, 22397538, -16869252, 856466496,
+    34, 0, 22230192, -16624926, 855926848,
     /* node 3169 x: shift, then 4 coefficients */
-    34, 0, 534478336, -245388992, 143815296,
+    34, 0, 534270464, -245431136, 143833232,
     /* node 3169 y: shift, then 4 coefficients */
-    34, 0, -224837440, 426293216, -8026285,
+    34, 0, -224547984, 426108864, -7517281,
     /* node 3169 z: shift, then 4 coefficients */
-    34, 0, 28072640, -29937196, 827228800,
+    34, 0, 28061322, -29682584, 827190592,
     /* node 3170 x: shift, then 4 coefficients */
-    34, 0, 491246560, -217996240, 140960896,
+    34, 0, 491568640, -218406560, 141105088,
     /* node 3170 y: shift, then 4 coefficients */
-    34, 0, -216991712, 386709120, 21321046,
+    34, 0, -216674480, 386550912, 21611042,
     /* node 3170 z: shift, then 4 coefficients */
-    34, 0, 22055768, -209311, 775032576,
+    34, 0, 22124262, -260033, 774810240,
     /* node 3171 x: shift, then 4 coefficients */
-    34, 0, 490073664, -230134080, 161305504,
+    34, 0, 490217184, -230330928, 161257664,
     /* node 3171 y: shift, then 4 coefficients */
-    34, 0, -213832752, 347897600, 9909219,
+    34, 0, -214101952, 348184384, 9949105,
     /* node 3171 z: shift, then 4 coefficients */
-    34, 0, 29103930, -16027307, 756252416,
+    34, 0, 29008540, -15720401, 756226048,
     /* node 3172 x: shift, then 4 coefficients */
-    34, 0, 432838368, -200725952, 148096448,
+    34, 0, 432490464, -201119712, 147692096,
     /* node 3172 y: shift, then 4 coefficients */
-    34, 0, -205402544, 312220288, 34186540,
+    34, 0, -205921872, 312128544, 33820452,
     /* node 3172 z: shift, then 4 coefficients */
-    34, 0, 15394807, 14465861, 692750848,
+    34, 0, 15108442, 14438795, 692182784,
     /* node 3173 x: shift, then 4 coefficients */
-    34, 0, 439343072, -215943008, 163046816,
+    34, 0, 439700832, -215995376, 163191328,
     /* node 3173 y: shift, then 4 coefficients */
-    35, 0, -401499936, 573968128, 44416728,
+    35, 0, -401266240, 574332096, 44858712,
     /* node 3173 z: shift, then 4 coefficients */
-    34, 0, 23096870, -1180481, 692189888,
+    34, 0, 23111582, -760016, 692423232,
     /* node 3174 x: shift, then 4 coefficients */
-    34, 0, 521238944, -258679120, 159505856,
+    34, 0, 520464864, -258623312, 159096384,
     /* node 3174 y: shift, then 4 coefficients */
-    34, 0, -219057456, 374246144, -17854074,
+    34, 0, -219291392, 374496896, -17841564,
     /* node 3174 z: shift, then 4 coefficients */
-    34, 0, 32410474, -43154172, 795120576,
+    34, 0, 32274840, -43065164, 794860416,
     /* node 3175 x: shift, then 4 coefficients */
-    34, 0, 481653536, -244410032, 170088928,
+    34, 0, 481547840, -244498896, 169924544,
     /* node 3175 y: shift, then 4 coefficients */
-    35, 0, -423797472, 633090880, -7563778,
+    35, 0, -424040032, 633290112, -7448734,
     /* node 3175 z: shift, then 4 coefficients */
-    34, 0, 28482264, -30607752, 740064384,
+    34, 0, 28116642, -30393356, 739739264,
     /* node 3176 x: shift, then 4 coefficients */
-    34, 0, 398438784, -187781024, 156828160,
+    34, 0, 398176224, -188103360, 156314384,
     /* node 3176 y: shift, then 4 coefficients */
-    35, 0, -387826400, 532730272, 89485576,
+    35, 0, -388286112, 532562048, 88977192,
     /* node 3176 z: shift, then 4 coefficients */
-    34, 0, 13803063, 21713272, 631898176,
+    34, 0, 13508245, 21622506, 631342400,
     /* node 3177 x: shift, then 4 coefficients */
-    34, 0, 370808256, -177331968, 161689456,
+    34, 0, 370869888, -177402640, 161644800,
     /* node 3177 y: shift, then 4 coefficients */
-    35, 0, -371306368, 458972416, 96700664,
+    35, 0, -371854624, 459951328, 96966288,
     /* node 3177 z: shift, then 4 coefficients */
-    34, 0, 9948761, 26667526, 578520832,
+    34, 0, 9922033, 26750152, 578655168,
     /* node 3178 x: shift, then 4 coefficients */
-    34, 0, 405700416, -201283312, 172144608,
+    34, 0, 405666528, -201440432, 172019008,
     /* node 3178 y: shift, then 4 coefficients */
-    35, 0, -384036320, 493554368, 67362104,
+    35, 0, -384352480, 494874016, 68300352,
     /* node 3178 z: shift, then 4 coefficients */
-    34, 0, 16890484, 8689746, 628942848,
+    34, 0, 16828674, 9019475, 629088704,
     /* node 3179 x: shift, then 4 coefficients */
-    34, 0, 383822784, -189683056, 181250928,
+    34, 0, 383759488, -189780624, 181095248,
     /* node 3179 y: shift, then 4 coefficients */
-    35, 0, -360513888, 439385408, 89476144,
+    35, 0, -360702944, 439256096, 89157352,
     /* node 3179 z: shift, then 4 coefficients */
-    34, 0, 15504226, 15831779, 585520960,
+    34, 0, 15442972, 15934400, 585276992,
     /* node 3180 x: shift, then 4 coefficients */
-    34, 0, 351797888, -167454016, 170547648,
+    34, 0, 351458720, -167564144, 170281584,
     /* node 3180 y: shift, then 4 coefficients */
-    35, 0, -347248192, 410913440, 115840136,
+    35, 0, -347356160, 410968000, 115663120,
     /* node 3180 z: shift, then 4 coefficients */
-    34, 0, 7617402, 30242096, 537492736,
+    34, 0, 7439440, 30497762, 537352256,
     /* node 3181 x: shift, then 4 coefficients */
-    34, 0, 362811808, -180315040, 187700512,
+    34, 0, 362691552, -180270864, 187641168,
     /* node 3181 y: shift, then 4 coefficients */
-    35, 0, -339998848, 386665632, 101426200,
+    35, 0, -340228992, 386914240, 101764040,
     /* node 3181 z: shift, then 4 coefficients */
-    34, 0, 13201712, 21521510, 543779776,
+    34, 0, 13135379, 21631148, 543615040,
     /* node 3182 x: shift, then 4 coefficients */
-    34, 0, 413657344, -212997344, 188175280,
+    34, 0, 413754752, -213121232, 188034048,
     /* node 3182 y: shift, then 4 coefficients */
-    35, 0, -374497792, 469641408, 56347432,
+    35, 0, -374790048, 469885984, 56029040,
     /* node 3182 z: shift, then 4 coefficients */
-    34, 0, 21704266, -1392150, 624629248,
+    34, 0, 21690128, -1299917, 624767104,
     /* node 3183 x: shift, then 4 coefficients */
-    34, 0, 392576128, -200515280, 196444528,
+    34, 0, 392647968, -200704544, 196462480,
     /* node 3183 y: shift, then 4 coefficients */
-    35, 0, -351938528, 413778656, 76089896,
+    35, 0, -351886848, 413898272, 76529624,
     /* node 3183 z: shift, then 4 coefficients */
-    34, 0, 19411580, 6190948, 581047232,
+    34, 0, 19649734, 6268702, 581209408,
     /* node 3184 x: shift, then 4 coefficients */
-    34, 0, 334066944, -160038528, 179848704,
+    34, 0, 334221600, -160197264, 179931200,
     /* node 3184 y: shift, then 4 coefficients */
-    35, 0, -330659104, 365284576, 112685816,
+    35, 0, -331502400, 365910784, 112439696,
     /* node 3184 z: shift, then 4 coefficients */
-    34, 0, 7689310, 33018248, 506013728,
+    34, 0, 7660746, 33067128, 506128448,
     /* node 3185 x: shift, then 4 coefficients */
-    34, 0, 320373184, -152222240, 190220352,
+    34, 0, 320432128, -152305568, 190194560,
     /* node 3185 y: shift, then 4 coefficients */
-    35, 0, -304998080, 322734560, 125157696,
+    35, 0, -304852896, 322654336, 125154144,
     /* node 3185 z: shift, then 4 coefficients */
-    35, 0, 18584292, 66144384, 957676992,
+    35, 0, 18718166, 66692692, 958128256,
     /* node 3186 x: shift, then 4 coefficients */
-    34, 0, 345689184, -170772048, 197639472,
+    34, 0, 345715360, -170770448, 197688816,
     /* node 3186 y: shift, then 4 coefficients */
-    35, 0, -315767552, 337942304, 109577440,
+    35, 0, -315177632, 337573376, 109739528,
     /* node 3186 z: shift, then 4 coefficients */
-    34, 0, 12203966, 24477996, 508271232,
+    34, 0, 12319287, 24396542, 508077120,
     /* node 3187 x: shift, then 4 coefficients */
-    34, 0, 333999264, -164219312, 206928064,
+    34, 0, 333937632, -164172272, 206784624,
     /* node 3187 y: shift, then 4 coefficients */
-    35, 0, -300508032, 311187136, 109685192,
+    35, 0, -300941184, 311532256, 109603408,
     /* node 3187 z: shift, then 4 coefficients */
-    35, 0, 26225454, 49457320, 965770944,
+    35, 0, 25974968, 49942316, 965575360,
     /* node 3188 x: shift, then 4 coefficients */
-    34, 0, 305463936, -145850304, 194081584,
+    34, 0, 305449472, -145969024, 193935568,
     /* node 3188 y: shift, then 4 coefficients */
-    35, 0, -288997856, 289042176, 119644976,
+    35, 0, -289293920, 289450880, 119571824,
     /* node 3188 z: shift, then 4 coefficients */
-    35, 0, 14444664, 69031704, 898422016,
+    35, 0, 14520626, 68993216, 898286464,
     /* node 3189 x: shift, then 4 coefficients */
-    34, 0, 321535072, -157016992, 214434944,
+    34, 0, 321471776, -157122080, 214319344,
     /* node 3189 y: shift, then 4 coefficients */
-    35, 0, -274777056, 273672320, 123530912,
+    35, 0, -275089344, 273963488, 123185232,
     /* node 3189 z: shift, then 4 coefficients */
-    35, 0, 27437256, 53414096, 920117952,
+    35, 0, 27499418, 53639392, 920463488,
     /* node 3190 x: shift, then 4 coefficients */
-    34, 0, 355326880, -180924816, 211786144,
+    34, 0, 354962432, -181202224, 211188992,
     /* node 3190 y: shift, then 4 coefficients */
-    35, 0, -306039552, 322160000, 102786112,
+    35, 0, -307729184, 323727392, 101739648,
     /* node 3190 z: shift, then 4 coefficients */
-    34, 0, 14819627, 16319587, 507269088,
+    34, 0, 14539831, 16413412, 507224992,
     /* node 3191 x: shift, then 4 coefficients */
-    34, 0, 345123712, -175110496, 222965136,
+    34, 0, 344915776, -175010480, 222767440,
     /* node 3191 y: shift, then 4 coefficients */
-    35, 0, -285592000, 290905664, 111398792,
+    35, 0, -285258560, 290278816, 111734856,
     /* node 3191 z: shift, then 4 coefficients */
-    35, 0, 35792240, 33090224, 971244032,
+    35, 0, 35119372, 33098382, 970233344,
     /* node 3192 x: shift, then 4 coefficients */
-    34, 0, 294211264, -138653248, 203187776,
+    34, 0, 294119936, -138711376, 202918864,
     /* node 3192 y: shift, then 4 coefficients */
-    35, 0, -266372064, 258587696, 125089280,
+    35, 0, -266412960, 258582048, 125025464,
     /* node 3192 z: shift, then 4 coefficients */
-    35, 0, 17045790, 67468536, 851011648,
+    35, 0, 16805716, 67619384, 850716928,
     /* node 3193 x: shift, then 4 coefficients */
-    34, 0, 281414720, -129489200, 211396160,
+    34, 0, 281277280, -129511424, 211290144,
     /* node 3193 y: shift, then 4 coefficients */
-    35, 0, -242410960, 226632208, 135670528,
+    35, 0, -242517248, 226691312, 135714272,
     /* node 3193 z: shift, then 4 coefficients */
-    35, 0, 18670576, 68804856, 804446400,
+    35, 0, 18511036, 68926392, 804102656,
     /* node 3194 x: shift, then 4 coefficients */
-    34, 0, 310734720, -150603088, 222926512,
+    34, 0, 310776736, -150676608, 222871120,
     /* node 3194 y: shift, then 4 coefficients */
-    35, 0, -256255744, 246407216, 125768904,
+    35, 0, -256481504, 246684304, 125949240,
     /* node 3194 z: shift, then 4 coefficients */
-    35, 0, 27132378, 54250028, 873938112,
+    35, 0, 26893964, 54562472, 873821952,
     /* node 3195 x: shift, then 4 coefficients */
-    34, 0, 299480960, -141157024, 230030416,
+    34, 0, 299489632, -141222656, 230027488,
     /* node 3195 y: shift, then 4 coefficients */
-    35, 0, -233798592, 224913424, 143011728,
+    35, 0, -233797456, 224971568, 143075424,
     /* node 3195 z: shift, then 4 coefficients */
-    35, 0, 27447486, 56311552, 827295040,
+    35, 0, 27296008, 56477728, 827222784,
     /* node 3196 x: shift, then 4 coefficients */
-    34, 0, 267497040, -118323576, 218386192,
+    34, 0, 267457968, -118438136, 218101520,
     /* node 3196 y: shift, then 4 coefficients */
-    35, 0, -215082304, 200434544, 147757936,
+    35, 0, -215499344, 200795696, 147344496,
     /* node 3196 z: shift, then 4 coefficients */
-    35, 0, 19056750, 72267056, 755368960,
+    35, 0, 18829398, 72464944, 755202048,
     /* node 3198 x: shift, then 4 coefficients */
-    34, 0, 325340576, -160623824, 239127120,
+    34, 0, 325234880, -160599888, 239092416,
     /* node 3198 y: shift, then 4 coefficients */
-    35, 0, -244191408, 238983328, 133543584,
+    35, 0, -243816720, 238415968, 134021144,
     /* node 3198 z: shift, then 4 coefficients */
-    35, 0, 34756720, 41287252, 887123648,
+    35, 0, 34874168, 41402308, 886828160,
     /* node 3199 x: shift, then 4 coefficients */
-    34, 0, 316031584, -153554224, 246141616,
+    34, 0, 316015680, -153610768, 246083616,
     /* node 3199 y: shift, then 4 coefficients */
-    35, 0, -226204784, 216539472, 139559888,
+    35, 0, -226504656, 216877536, 139393360,
     /* node 3199 z: shift, then 4 coefficients */
-    35, 0, 37062692, 41196888, 845322432,
+    35, 0, 37020816, 41450788, 845304320,
     /* node 3206 x: shift, then 4 coefficients */
-    34, 0, 614761984, -344484448, 92364048,
+    34, 0, 614926592, -344622656, 92346784,
     /* node 3206 y: shift, then 4 coefficients */
-    34, 0, -246133808, 498499616, -70732616,
+    34, 0, -246235056, 498656992, -70660000,
     /* node 3206 z: shift, then 4 coefficients */
-    34, 0, 35879328, -88354208, 804952704,
+    34, 0, 35879816, -88292800, 804930816,
     /* node 3207 x: shift, then 4 coefficients */
-    34, 0, 605325888, -373083872, 87243952,
+    34, 0, 605430528, -373227328, 87193184,
     /* node 3207 y: shift, then 4 coefficients */
-    34, 0, -241418784, 454491488, -63135948,
+    34, 0, -241546848, 454616320, -63118004,
     /* node 3207 z: shift, then 4 coefficients */
-    34, 0, 39189404, -87452792, 742610432,
+    34, 0, 39087932, -87415048, 742513152,
     /* node 3208 x: shift, then 4 coefficients */
-    34, 0, 598660352, -368175936, 105098304,
+    34, 0, 598758912, -368343648, 105007176,
     /* node 3208 y: shift, then 4 coefficients */
-    34, 0, -240840144, 442505216, -68676776,
+    34, 0, -240975136, 442674848, -68634808,
     /* node 3208 z: shift, then 4 coefficients */
-    34, 0, 40546240, -98015552, 748781824,
+    34, 0, 40438344, -97996776, 748613312,
     /* node 3209 x: shift, then 4 coefficients */
-    34, 0, 599968896, -334750240, 105292848,
+    34, 0, 600321216, -334912320, 105579536,
     /* node 3209 y: shift, then 4 coefficients */
-    34, 0, -241118576, 473767040, -71017680,
+    34, 0, -241104272, 473938368, -70742904,
     /* node 3209 z: shift, then 4 coefficients */
-    34, 0, 35340368, -92438240, 810826816,
+    34, 0, 35316436, -92369880, 810734144,
     /* node 3210 x: shift, then 4 coefficients */
-    34, 0, 639767616, -317716256, 97703760,
+    34, 0, 639573120, -318031424, 97137208,
     /* node 3210 y: shift, then 4 coefficients */
-    34, 0, -241532048, 545579648, -63501708,
+    34, 0, -241847856, 545767744, -63644300,
     /* node 3210 z: shift, then 4 coefficients */
-    34, 0, 31391986, -77349648, 894594112,
+    34, 0, 31035190, -77234656, 894014336,
     /* node 3211 x: shift, then 4 coefficients */
-    34, 0, 616555904, -315407680, 116436704,
+    34, 0, 616698304, -315467648, 116376608,
     /* node 3211 y: shift, then 4 coefficients */
-    34, 0, -239648288, 504471296, -56881536,
+    34, 0, -239810048, 504585440, -56832940,
     /* node 3211 z: shift, then 4 coefficients */
-    34, 0, 35392124, -76362920, 870404352,
+    34, 0, 35388772, -76388456, 870318144,
     /* node 3212 x: shift, then 4 coefficients */
-    34, 0, 586450176, -332254816, 132498856,
+    34, 0, 586126016, -332441376, 131818016,
     /* node 3212 y: shift, then 4 coefficients */
-    34, 0, -237103200, 436993792, -68645888,
+    34, 0, -237200288, 436987104, -68663440,
     /* node 3212 z: shift, then 4 coefficients */
-    34, 0, 37137640, -93596816, 796170816,
+    34, 0, 36916164, -93494608, 795777472,
     /* node 3213 x: shift, then 4 coefficients */
-    34, 0, 588900800, -304520416, 143974944,
+    34, 0, 588579392, -304516064, 143685488,
     /* node 3213 y: shift, then 4 coefficients */
-    34, 0, -233466800, 450418464, -52916240,
+    34, 0, -233659024, 450486720, -52981772,
     /* node 3213 z: shift, then 4 coefficients */
-    34, 0, 35256752, -72838768, 840187712,
+    34, 0, 35080960, -72707384, 840084224,
     /* node 3214 x: shift, then 4 coefficients */
-    34, 0, 564589568, -324443584, 152678272,
+    34, 0, 564878656, -324680032, 152738416,
     /* node 3214 y: shift, then 4 coefficients */
-    34, 0, -230308976, 391848288, -61381212,
+    34, 0, -230453824, 391954400, -61442028,
     /* node 3214 z: shift, then 4 coefficients */
-    34, 0, 40104724, -87517976, 776627136,
+    34, 0, 39989080, -87552616, 776313920,
     /* node 3215 x: shift, then 4 coefficients */
-    34, 0, 544901888, -290921888, 155364160,
+    34, 0, 544589952, -290869824, 155051664,
     /* node 3215 y: shift, then 4 coefficients */
-    34, 0, -227732320, 390995776, -45039180,
+    34, 0, -228019568, 391333344, -44952560,
     /* node 3215 z: shift, then 4 coefficients */
-    34, 0, 37342648, -69323880, 799506560,
+    34, 0, 37261128, -69135776, 799461824,
     /* node 3216 x: shift, then 4 coefficients */
-    34, 0, 542475136, -312556544, 170830592,
+    34, 0, 542424000, -312790816, 170495424,
     /* node 3216 y: shift, then 4 coefficients */
-    34, 0, -222080832, 353868800, -49815084,
+    34, 0, -222127200, 353657088, -49990124,
     /* node 3216 z: shift, then 4 coefficients */
-    34, 0, 38605564, -78152216, 758118656,
+    34, 0, 38423208, -78239488, 757686144,
     /* node 3217 x: shift, then 4 coefficients */
-    34, 0, 573867200, -354507584, 145131184,
+    34, 0, 573840576, -354613984, 144991168,
     /* node 3217 y: shift, then 4 coefficients */
-    34, 0, -230372880, 387434176, -66933540,
+    34, 0, -230410672, 387489152, -66808128,
     /* node 3217 z: shift, then 4 coefficients */
-    34, 0, 39825700, -94595744, 739053888,
+    34, 0, 39660832, -94503592, 738874368,
     /* node 3218 x: shift, then 4 coefficients */
-    34, 0, 557235904, -343301728, 163664208,
+    34, 0, 557070336, -343320576, 163405152,
     /* node 3218 y: shift, then 4 coefficients */
-    34, 0, -224632496, 358442080, -60567724,
+    34, 0, -224748688, 358462144, -60512456,
     /* node 3218 z: shift, then 4 coefficients */
-    34, 0, 40616648, -92029360, 730014272,
+    34, 0, 40358720, -91883696, 729740032,
     /* node 3219 x: shift, then 4 coefficients */
-    34, 0, 516933696, -279200064, 174721808,
+    34, 0, 517275040, -279459840, 174787840,
     /* node 3219 y: shift, then 4 coefficients */
-    34, 0, -216785248, 339449984, -29143148,
+    34, 0, -216748640, 339446240, -29026242,
     /* node 3219 z: shift, then 4 coefficients */
-    34, 0, 35528996, -56732260, 758979840,
+    34, 0, 35518816, -56678384, 758893632,
     /* node 3220 x: shift, then 4 coefficients */
-    34, 0, 485165600, -262382592, 186964288,
+    34, 0, 485477408, -262791360, 186902000,
     /* node 3220 y: shift, then 4 coefficients */
-    35, 0, -413522848, 600121536, -28626758,
+    35, 0, -413634912, 599862592, -28780098,
     /* node 3220 z: shift, then 4 coefficients */
-    34, 0, 32008738, -42620892, 716862784,
+    34, 0, 31923342, -42597656, 716703296,
     /* node 3221 x: shift, then 4 coefficients */
-    34, 0, 517248256, -299653088, 185070384,
+    34, 0, 517075520, -299803040, 184810816,
     /* node 3221 y: shift, then 4 coefficients */
-    34, 0, -212398256, 316019456, -31699150,
+    34, 0, -212590240, 315984480, -31851422,
     /* node 3221 z: shift, then 4 coefficients */
-    34, 0, 36205472, -64116904, 726090176,
+    34, 0, 35915220, -64108872, 725566464,
     /* node 3222 x: shift, then 4 coefficients */
-    34, 0, 492748128, -285248352, 201974032,
+    34, 0, 492547712, -285192896, 201723360,
     /* node 3222 y: shift, then 4 coefficients */
-    35, 0, -402801952, 563428672, -36450060,
+    35, 0, -403360800, 564023680, -36298640,
     /* node 3222 z: shift, then 4 coefficients */
-    34, 0, 36707164, -52612000, 693524736,
+    34, 0, 36669412, -52541936, 693514560,
     /* node 3223 x: shift, then 4 coefficients */
-    34, 0, 454871360, -245307376, 196259184,
+    34, 0, 454901216, -245477040, 196162288,
     /* node 3223 y: shift, then 4 coefficients */
-    35, 0, -392387392, 515572960, 7339414,
+    35, 0, -392582816, 515816160, 7363337,
     /* node 3223 z: shift, then 4 coefficients */
-    34, 0, 28956938, -26848062, 666030464,
+    34, 0, 28862204, -26766508, 665754752,
     /* node 3224 x: shift, then 4 coefficients */
-    34, 0, 467361536, -264148080, 211543680,
+    34, 0, 467444416, -264386704, 211571968,
     /* node 3224 y: shift, then 4 coefficients */
-    35, 0, -380687872, 490775488, 592402,
+    35, 0, -380840416, 490875200, 817080,
     /* node 3224 z: shift, then 4 coefficients */
-    34, 0, 34039024, -37035528, 651706688,
+    34, 0, 33938360, -36971064, 651523712,
     /* node 3225 x: shift, then 4 coefficients */
-    34, 0, 525588480, -321966560, 196363920,
+    34, 0, 525748096, -322091232, 196260208,
     /* node 3225 y: shift, then 4 coefficients */
-    34, 0, -207122464, 296368608, -35369256,
+    34, 0, -207316400, 296917536, -35128912,
     /* node 3225 z: shift, then 4 coefficients */
-    34, 0, 41634292, -73396296, 699179072,
+    34, 0, 41548556, -73329280, 699117312,
     /* node 3226 x: shift, then 4 coefficients */
-    34, 0, 504511488, -306494976, 210754304,
+    34, 0, 504469024, -306686976, 210490176,
     /* node 3226 y: shift, then 4 coefficients */
-    35, 0, -390965728, 534989888, -40618752,
+    35, 0, -390959008, 534700064, -40763864,
     /* node 3226 z: shift, then 4 coefficients */
-    34, 0, 39446056, -59386532, 671118400,
+    34, 0, 39219408, -59307648, 670717184,
     /* node 3227 x: shift, then 4 coefficients */
-    34, 0, 425888064, -228957424, 204692656,
+    34, 0, 425866112, -229030272, 204641376,
     /* node 3227 y: shift, then 4 coefficients */
-    35, 0, -365348032, 446242720, 40916648,
+    35, 0, -365679872, 446376544, 40868852,
     /* node 3227 z: shift, then 4 coefficients */
-    34, 0, 26356814, -14482706, 617257344,
+    34, 0, 26239228, -14399033, 617105472,
     /* node 3228 x: shift, then 4 coefficients */
-    34, 0, 398799840, -210262704, 212361936,
+    34, 0, 398415232, -210316448, 211861824,
     /* node 3228 y: shift, then 4 coefficients */
-    35, 0, -341161408, 387657152, 66251268,
+    35, 0, -341934688, 388096320, 65814268,
     /* node 3228 z: shift, then 4 coefficients */
-    34, 0, 22982530, -1354521, 569670848,
+    34, 0, 22642198, -1262274, 569433280,
     /* node 3229 x: shift, then 4 coefficients */
-    34, 0, 436269504, -243097168, 220302032,
+    34, 0, 436384672, -243207536, 220283504,
     /* node 3229 y: shift, then 4 coefficients */
-    35, 0, -351503648, 422059392, 34888464,
+    35, 0, -351942720, 422319904, 34878944,
     /* node 3229 z: shift, then 4 coefficients */
-    34, 0, 30614372, -22294254, 605690432,
+    34, 0, 30693882, -22210914, 605685120,
     /* node 3230 x: shift, then 4 coefficients */
-    34, 0, 419255328, -231180800, 231866576,
+    34, 0, 419496224, -231428800, 232042992,
     /* node 3230 y: shift, then 4 coefficients */
-    35, 0, -323513568, 367810976, 60603476,
+    35, 0, -323353248, 367643616, 60790988,
     /* node 3230 z: shift, then 4 coefficients */
-    34, 0, 28708342, -14828619, 569739136,
+    34, 0, 28895902, -14866394, 569734592,
     /* node 3231 x: shift, then 4 coefficients */
-    34, 0, 381271296, -200591408, 222821872,
+    34, 0, 381067648, -200588352, 222541920,
     /* node 3231 y: shift, then 4 coefficients */
-    35, 0, -313106880, 338523424, 84576440,
+    35, 0, -314203808, 339190336, 83855992,
     /* node 3231 z: shift, then 4 coefficients */
-    34, 0, 21531032, 3762352, 533978016,
+    34, 0, 21309542, 3946140, 533830112,
     /* node 3232 x: shift, then 4 coefficients */
-    34, 0, 399974560, -217873904, 242066944,
+    34, 0, 399990688, -218115584, 241990752,
     /* node 3232 y: shift, then 4 coefficients */
-    35, 0, -300641760, 327655040, 81219296,
+    35, 0, -300824576, 327856480, 81152448,
     /* node 3232 z: shift, then 4 coefficients */
-    34, 0, 28378790, -6619250, 538303872,
+    34, 0, 28394300, -6614530, 538334784,
     /* node 3233 x: shift, then 4 coefficients */
-    34, 0, 456774816, -266802560, 238683200,
+    34, 0, 456705888, -267029248, 238416288,
     /* node 3233 y: shift, then 4 coefficients */
-    35, 0, -337400352, 404786592, 25243910,
+    35, 0, -337676544, 404996800, 25198446,
     /* node 3233 z: shift, then 4 coefficients */
-    34, 0, 35668084, -34395708, 600724096,
+    34, 0, 35481552, -34298948, 600553536,
     /* node 3234 x: shift, then 4 coefficients */
-    34, 0, 435498336, -250520144, 246322288,
+    34, 0, 435339680, -250570544, 246009232,
     /* node 3234 y: shift, then 4 coefficients */
-    35, 0, -312767616, 356653696, 53721676,
+    35, 0, -313806496, 357373408, 53217980,
     /* node 3234 z: shift, then 4 coefficients */
-    34, 0, 32341758, -23624496, 565249536,
+    34, 0, 32055646, -23400492, 564981184,
     /* node 3235 x: shift, then 4 coefficients */
-    34, 0, 369745632, -194451968, 229074864,
+    34, 0, 369770688, -194511056, 229093488,
     /* node 3235 y: shift, then 4 coefficients */
-    35, 0, -290159360, 304084256, 100489080,
+    35, 0, -289839456, 303681024, 100519576,
     /* node 3235 z: shift, then 4 coefficients */
-    34, 0, 21027070, 7023458, 509327648,
+    34, 0, 21187842, 6977600, 509243200,
     /* node 3236 x: shift, then 4 coefficients */
-    34, 0, 358577152, -187393072, 237795696,
+    34, 0, 358523904, -187429520, 237736624,
     /* node 3236 y: shift, then 4 coefficients */
-    35, 0, -276300640, 280964672, 104490136,
+    35, 0, -276539008, 281382720, 104704576,
     /* node 3236 z: shift, then 4 coefficients */
-    35, 0, 43753356, 18426320, 974806272,
+    35, 0, 43799532, 18687164, 974907008,
     /* node 3237 x: shift, then 4 coefficients */
-    34, 0, 387694784, -209954784, 247637040,
+    34, 0, 387696448, -210160544, 247467456,
     /* node 3237 y: shift, then 4 coefficients */
-    35, 0, -278735104, 293114912, 94806576,
+    35, 0, -279705696, 294379232, 94431528,
     /* node 3237 z: shift, then 4 coefficients */
-    34, 0, 27044638, -1934661, 514221472,
+    34, 0, 26807728, -1709714, 514142496,
     /* node 3238 x: shift, then 4 coefficients */
-    34, 0, 377459968, -203105120, 254957088,
+    34, 0, 377217984, -202923520, 254743328,
     /* node 3238 y: shift, then 4 coefficients */
-    35, 0, -264118192, 272979936, 104718528,
+    35, 0, -264192448, 272403904, 104845048,
     /* node 3238 z: shift, then 4 coefficients */
-    35, 0, 53725052, 971914, 985759424,
+    35, 0, 53659228, 1237893, 985302208,
     /* node 3239 x: shift, then 4 coefficients */
-    34, 0, 350727520, -180809392, 247168000,
+    34, 0, 350832000, -181090992, 247160464,
     /* node 3239 y: shift, then 4 coefficients */
-    35, 0, -253377936, 254681392, 120516328,
+    35, 0, -253612704, 255309824, 120530768,
     /* node 3239 z: shift, then 4 coefficients */
-    35, 0, 45641892, 22390578, 938325312,
+    35, 0, 45797104, 22271920, 938924736,
     /* node 3240 x: shift, then 4 coefficients */
-    34, 0, 366731936, -194791296, 262858624,
+    34, 0, 366669312, -194884912, 262816256,
     /* node 3240 y: shift, then 4 coefficients */
-    35, 0, -242150048, 243286400, 120818832,
+    35, 0, -242679184, 243734240, 120347128,
     /* node 3240 z: shift, then 4 coefficients */
-    35, 0, 54690920, 5828199, 947249792,
+    35, 0, 54869488, 5639866, 947043264,
     /* node 3241 x: shift, then 4 coefficients */
-    34, 0, 403568512, -226499200, 260074944,
+    34, 0, 403455488, -226691536, 259859696,
     /* node 3241 y: shift, then 4 coefficients */
-    35, 0, -271381088, 287872960, 89293232,
+    35, 0, -271786528, 288292416, 88983840,
     /* node 3241 z: shift, then 4 coefficients */
-    34, 0, 29860412, -10923326, 514594336,
+    34, 0, 29760080, -11028070, 514368608,
     /* node 3242 x: shift, then 4 coefficients */
-    34, 0, 392174944, -217324960, 267275440,
+    34, 0, 392013280, -217410992, 267032032,
     /* node 3242 y: shift, then 4 coefficients */
-    35, 0, -248833520, 258562992, 108309736,
+    35, 0, -248838128, 258231328, 108320856,
     /* node 3242 z: shift, then 4 coefficients */
-    35, 0, 60839588, -14789724, 984578752,
+    35, 0, 60593584, -14560610, 984055488,
     /* node 3243 x: shift, then 4 coefficients */
-    34, 0, 340570240, -173698848, 252409616,
+    34, 0, 340530176, -173857792, 252212768,
     /* node 3243 y: shift, then 4 coefficients */
-    35, 0, -232123840, 226681872, 133452232,
+    35, 0, -232457600, 227171856, 133369840,
     /* node 3243 z: shift, then 4 coefficients */
-    35, 0, 43593464, 25381698, 894456512,
+    35, 0, 43384972, 25549474, 894221376,
     /* node 3244 x: shift, then 4 coefficients */
-    34, 0, 332276960, -166799328, 260428016,
+    34, 0, 332167360, -166843536, 260186064,
     /* node 3244 y: shift, then 4 coefficients */
-    35, 0, -211465088, 207206352, 144718752,
+    35, 0, -211827344, 207490384, 144555520,
     /* node 3244 z: shift, then 4 coefficients */
-    35, 0, 45829416, 26248614, 859849536,
+    35, 0, 45527128, 26577472, 859457792,
     /* node 3245 x: shift, then 4 coefficients */
-    34, 0, 359007104, -188287824, 267085808,
+    34, 0, 359065152, -188484656, 267060368,
     /* node 3245 y: shift, then 4 coefficients */
-    35, 0, -221192816, 221440320, 133797792,
+    35, 0, -221490432, 221802496, 133776800,
     /* node 3245 z: shift, then 4 coefficients */
-    35, 0, 54604796, 8271749, 907872256,
+    35, 0, 54671996, 8195662, 907930688,
     /* node 3249 x: shift, then 4 coefficients */
-    34, 0, 374123104, -201947312, 280099072,
+    34, 0, 374011008, -202038080, 279886656,
     /* node 3249 y: shift, then 4 coefficients */
-    35, 0, -206742784, 210266320, 134523680,
+    35, 0, -206945472, 210452016, 134627600,
     /* node 3249 z: shift, then 4 coefficients */
-    35, 0, 64579548, -6898862, 910050304,
+    35, 0, 64424044, -6683120, 909706048,
     /* node 3257 x: shift, then 4 coefficients */
-    33, 0, 311921792, -210266368, 42918852,
+    33, 0, 311984160, -210457648, 42894956,
     /* node 3257 y: shift, then 4 coefficients */
-    34, 0, -241716704, 406182432, -51439824,
+    34, 0, -241827568, 406254592, -51424608,
     /* node 3257 z: shift, then 4 coefficients */
-    34, 0, 51415804, -85387104, 694677632,
+    34, 0, 51330328, -85372904, 694575680,
     /* node 3258 x: shift, then 4 coefficients */
-    33, 0, 317096096, -217984480, 42687912,
+    33, 0, 317132768, -218109344, 42612728,
     /* node 3258 y: shift, then 4 coefficients */
-    34, 0, -241307952, 392564864, -47768844,
+    34, 0, -241448896, 392872384, -47793344,
     /* node 3258 z: shift, then 4 coefficients */
-    34, 0, 55762020, -85396000, 684489408,
+    34, 0, 55659012, -85510464, 684420480,
     /* node 3259 x: shift, then 4 coefficients */
-    33, 0, 314663808, -215156912, 50064516,
+    33, 0, 314702848, -215293648, 50025348,
     /* node 3259 y: shift, then 4 coefficients */
-    34, 0, -237927088, 385206848, -50362120,
+    34, 0, -238005104, 385073312, -50251172,
     /* node 3259 z: shift, then 4 coefficients */
-    34, 0, 54561784, -90988016, 685890816,
+    34, 0, 54336636, -90747688, 685705600,
     /* node 3260 x: shift, then 4 coefficients */
-    33, 0, 309243424, -207934048, 50523516,
+    33, 0, 309325824, -208094944, 50498980,
     /* node 3260 y: shift, then 4 coefficients */
-    34, 0, -238012176, 394883904, -53309504,
+    34, 0, -238140624, 395000832, -53226172,
     /* node 3260 z: shift, then 4 coefficients */
-    34, 0, 50055052, -90210952, 694290560,
+    34, 0, 49937780, -90264976, 694202816,
     /* node 3261 x: shift, then 4 coefficients */
-    33, 0, 306148928, -200708512, 42765320,
+    33, 0, 306195328, -200769776, 42683252,
     /* node 3261 y: shift, then 4 coefficients */
-    34, 0, -241852144, 424180640, -58153960,
+    34, 0, -242019936, 424415744, -58142732,
     /* node 3261 z: shift, then 4 coefficients */
-    34, 0, 47588080, -90863368, 708972672,
+    34, 0, 47420868, -90760776, 708818944,
     /* node 3262 x: shift, then 4 coefficients */
-    33, 0, 303005280, -197325824, 52362428,
+    33, 0, 303062368, -197430704, 52339476,
     /* node 3262 y: shift, then 4 coefficients */
-    34, 0, -238098848, 412340352, -60095480,
+    34, 0, -238249792, 412446656, -60082972,
     /* node 3262 z: shift, then 4 coefficients */
-    34, 0, 45791156, -92069000, 711843712,
+    34, 0, 45637196, -91907552, 711691264,
     /* node 3263 x: shift, then 4 coefficients */
-    33, 0, 306714560, -206803520, 60436816,
+    33, 0, 306761440, -206921856, 60384740,
     /* node 3263 y: shift, then 4 coefficients */
-    34, 0, -234868880, 384846720, -56719892,
+    34, 0, -235036976, 384986912, -56708908,
     /* node 3263 z: shift, then 4 coefficients */
-    34, 0, 49609324, -94757824, 693586752,
+    34, 0, 49499408, -94692272, 693460992,
     /* node 3264 x: shift, then 4 coefficients */
-    33, 0, 300444000, -196150112, 62824576,
+    33, 0, 300538688, -196278032, 62809960,
     /* node 3264 y: shift, then 4 coefficients */
-    34, 0, -234711232, 399140736, -63860860,
+    34, 0, -234862016, 399289664, -63840440,
     /* node 3264 z: shift, then 4 coefficients */
-    34, 0, 45367256, -94392616, 710910208,
+    34, 0, 45247036, -94317224, 710779264,
     /* node 3265 x: shift, then 4 coefficients */
-    33, 0, 301944384, -202585712, 69293608,
+    33, 0, 301988288, -202674672, 69237192,
     /* node 3265 y: shift, then 4 coefficients */
-    34, 0, -230553568, 373550880, -58607732,
+    34, 0, -230678416, 373626016, -58547708,
     /* node 3265 z: shift, then 4 coefficients */
-    34, 0, 48369464, -97246344, 694815936,
+    34, 0, 48236968, -97151888, 694680320,
     /* node 3266 x: shift, then 4 coefficients */
-    33, 0, 295382144, -191633744, 71418344,
+    33, 0, 295425664, -191726768, 71367064,
     /* node 3266 y: shift, then 4 coefficients */
-    34, 0, -231343392, 379883808, -63897296,
+    34, 0, -231441776, 379937344, -63833816,
     /* node 3266 z: shift, then 4 coefficients */
-    34, 0, 45767412, -99852920, 713002048,
+    34, 0, 45675068, -99739720, 712906432,
     /* node 3267 x: shift, then 4 coefficients */
-    33, 0, 297175584, -198400512, 77952176,
+    33, 0, 297201248, -198492368, 77876760,
     /* node 3267 y: shift, then 4 coefficients */
-    34, 0, -224361392, 352912032, -55627712,
+    34, 0, -224487808, 352988864, -55611056,
     /* node 3267 z: shift, then 4 coefficients */
-    34, 0, 48699016, -96564528, 691012992,
+    34, 0, 48578268, -96482360, 690918528,
     /* node 3268 x: shift, then 4 coefficients */
-    33, 0, 308563872, -211049920, 66850004,
+    33, 0, 308588832, -211164400, 66755208,
     /* node 3268 y: shift, then 4 coefficients */
-    34, 0, -229993968, 364389568, -51954884,
+    34, 0, -230138176, 364487360, -51926612,
     /* node 3268 z: shift, then 4 coefficients */
-    34, 0, 52163252, -94810304, 683429632,
+    34, 0, 52019012, -94709944, 683293632,
     /* node 3269 x: shift, then 4 coefficients */
-    33, 0, 304962784, -208972992, 75935904,
+    33, 0, 304926912, -209014336, 75865360,
     /* node 3269 y: shift, then 4 coefficients */
-    34, 0, -225412944, 353325792, -52551780,
+    34, 0, -225443808, 353303168, -52467720,
     /* node 3269 z: shift, then 4 coefficients */
-    34, 0, 51950836, -97860032, 683095872,
+    34, 0, 51872268, -97835040, 682939648,
     /* node 3270 x: shift, then 4 coefficients */
-    33, 0, 289062432, -187159776, 80533560,
+    33, 0, 289121600, -187278096, 80483984,
     /* node 3270 y: shift, then 4 coefficients */
-    34, 0, -223342144, 356106272, -58933604,
+    34, 0, -223412944, 356187328, -58813348,
     /* node 3270 z: shift, then 4 coefficients */
-    34, 0, 44085196, -96473616, 710026496,
+    34, 0, 43992624, -96348600, 709979136,
     /* node 3271 x: shift, then 4 coefficients */
-    33, 0, 283466144, -182873488, 89934104,
+    33, 0, 283485696, -182945088, 89891720,
     /* node 3271 y: shift, then 4 coefficients */
-    34, 0, -219245904, 335462592, -55595452,
+    34, 0, -219336112, 335566528, -55504476,
     /* node 3271 z: shift, then 4 coefficients */
-    34, 0, 45198792, -93815464, 702480832,
+    34, 0, 45120960, -93693288, 702416384,
     /* node 3272 x: shift, then 4 coefficients */
-    33, 0, 292392512, -195484960, 86782080,
+    33, 0, 292393664, -195535968, 86719176,
     /* node 3272 y: shift, then 4 coefficients */
-    34, 0, -220140752, 338913472, -55399388,
+    34, 0, -220253456, 339003008, -55354544,
     /* node 3272 z: shift, then 4 coefficients */
-    34, 0, 47487832, -97456944, 688662272,
+    34, 0, 47330072, -97341800, 688542272,
     /* node 3273 x: shift, then 4 coefficients */
-    33, 0, 286711040, -190350384, 94829920,
+    33, 0, 286672320, -190398016, 94726192,
     /* node 3273 y: shift, then 4 coefficients */
-    34, 0, -213599376, 318395872, -49758884,
+    34, 0, -213750720, 318539776, -49725488,
     /* node 3273 z: shift, then 4 coefficients */
-    34, 0, 47751116, -93248064, 683654656,
+    34, 0, 47629280, -93132536, 683576960,
     /* node 3274 x: shift, then 4 coefficients */
-    33, 0, 275948928, -177557520, 95885712,
+    33, 0, 275968288, -177649264, 95818696,
     /* node 3274 y: shift, then 4 coefficients */
-    34, 0, -211013136, 308813248, -45035592,
+    34, 0, -211073520, 309018624, -44889208,
     /* node 3274 z: shift, then 4 coefficients */
-    34, 0, 43949844, -86472800, 689873344,
+    34, 0, 43769620, -86367488, 689713152,
     /* node 3275 x: shift, then 4 coefficients */
-    33, 0, 279641088, -185065216, 100948056,
+    33, 0, 279634976, -185135152, 100861464,
     /* node 3275 y: shift, then 4 coefficients */
-    34, 0, -203893472, 293430784, -40509380,
+    34, 0, -204057168, 293560352, -40550480,
     /* node 3275 z: shift, then 4 coefficients */
-    34, 0, 47924108, -88072320, 672125056,
+    34, 0, 47812312, -87972368, 672040384,
     /* node 3276 x: shift, then 4 coefficients */
-    33, 0, 295591104, -200836288, 91351256,
+    33, 0, 295580672, -200897296, 91276312,
     /* node 3276 y: shift, then 4 coefficients */
-    34, 0, -214891648, 322761408, -47465460,
+    34, 0, -215065728, 322912896, -47461644,
     /* node 3276 z: shift, then 4 coefficients */
-    34, 0, 50185436, -93948048, 674119552,
+    34, 0, 50066372, -93855024, 674017856,
     /* node 3277 x: shift, then 4 coefficients */
-    33, 0, 289762816, -196929680, 99573744,
+    33, 0, 289726080, -196981600, 99483720,
     /* node 3277 y: shift, then 4 coefficients */
-    34, 0, -207670944, 303360448, -45273052,
+    34, 0, -207798352, 303490592, -45226424,
     /* node 3277 z: shift, then 4 coefficients */
-    34, 0, 51070192, -94185520, 668489600,
+    34, 0, 50947136, -94078512, 668367488,
     /* node 3278 x: shift, then 4 coefficients */
-    33, 0, 267603264, -170565344, 104339176,
+    33, 0, 267540064, -170613792, 104219632,
     /* node 3278 y: shift, then 4 coefficients */
-    35, 0, -401005024, 564735552, -66008160,
+    35, 0, -401235680, 564942912, -66050704,
     /* node 3278 z: shift, then 4 coefficients */
-    34, 0, 44457852, -76711056, 674008896,
+    34, 0, 44403648, -76717040, 673832896,
     /* node 3279 x: shift, then 4 coefficients */
-    34, 0, 517833600, -327390016, 222700656,
+    34, 0, 517917632, -327589760, 222545152,
     /* node 3279 y: shift, then 4 coefficients */
-    35, 0, -377106368, 503431200, -41098740,
+    35, 0, -377423616, 503747136, -40924644,
     /* node 3279 z: shift, then 4 coefficients */
-    34, 0, 43576156, -65763912, 651866368,
+    34, 0, 43622380, -65766268, 651854208,
     /* node 3280 x: shift, then 4 coefficients */
-    33, 0, 273549088, -179821424, 109610536,
+    33, 0, 273522816, -179890432, 109517928,
     /* node 3280 y: shift, then 4 coefficients */
-    35, 0, -388795680, 536266880, -60822416,
+    35, 0, -389098048, 536670752, -60737320,
     /* node 3280 z: shift, then 4 coefficients */
-    34, 0, 48191560, -81327936, 656633408,
+    34, 0, 48059508, -81215944, 656501568,
     /* node 3281 x: shift, then 4 coefficients */
-    33, 0, 263826272, -170584560, 116564504,
+    33, 0, 263857264, -170716128, 116448800,
     /* node 3281 y: shift, then 4 coefficients */
-    35, 0, -362281088, 482196064, -32696668,
+    35, 0, -362813952, 482548960, -32969898,
     /* node 3281 z: shift, then 4 coefficients */
-    34, 0, 47223344, -70643872, 637127040,
+    34, 0, 47030004, -70477640, 636869696,
     /* node 3282 x: shift, then 4 coefficients */
-    34, 0, 499586400, -309589216, 238734928,
+    34, 0, 499756992, -309893344, 238725568,
     /* node 3282 y: shift, then 4 coefficients */
-    35, 0, -351861856, 450202048, -8298341,
+    35, 0, -351755936, 450164448, -8034372,
     /* node 3282 z: shift, then 4 coefficients */
-    34, 0, 42701560, -55418360, 623988736,
+    34, 0, 42774984, -55418296, 623961984,
     /* node 3283 x: shift, then 4 coefficients */
-    33, 0, 256144704, -163550880, 124945712,
+    33, 0, 255951728, -163543744, 124668576,
     /* node 3283 y: shift, then 4 coefficients */
-    35, 0, -338715680, 429848480, -6181814,
+    35, 0, -339315840, 430379200, -6710418,
     /* node 3283 z: shift, then 4 coefficients */
-    34, 0, 46378292, -61499220, 613498624,
+    34, 0, 46015968, -61226316, 613085312,
     /* node 3284 x: shift, then 4 coefficients */
-    33, 0, 277250944, -185387760, 114585928,
+    33, 0, 277190624, -185421088, 114470872,
     /* node 3284 y: shift, then 4 coefficients */
-    35, 0, -373754272, 512318432, -52165800,
+    35, 0, -373928864, 512445504, -52061188,
     /* node 3284 z: shift, then 4 coefficients */
-    34, 0, 50329120, -79671200, 639057216,
+    34, 0, 50205152, -79556128, 638899136,
     /* node 3285 x: shift, then 4 coefficients */
-    33, 0, 269919744, -178456400, 122203832,
+    33, 0, 270012768, -178613808, 122206992,
     /* node 3285 y: shift, then 4 coefficients */
-    35, 0, -348744640, 461220480, -26583322,
+    35, 0, -349299456, 461688448, -26780310,
     /* node 3285 z: shift, then 4 coefficients */
-    34, 0, 50061744, -72207952, 620724416,
+    34, 0, 50090752, -72204504, 620712640,
     /* node 3286 x: shift, then 4 coefficients */
-    34, 0, 476604832, -290124160, 251116688,
+    34, 0, 476580512, -290304416, 250822256,
     /* node 3286 y: shift, then 4 coefficients */
-    35, 0, -324921728, 394272928, 19719284,
+    35, 0, -325391776, 394722592, 19475252,
     /* node 3286 z: shift, then 4 coefficients */
-    34, 0, 41535112, -44574352, 596387328,
+    34, 0, 41507636, -44526216, 596238016,
     /* node 3287 x: shift, then 4 coefficients */
-    34, 0, 459453728, -275824576, 262692256,
+    34, 0, 459770848, -276199520, 262817360,
     /* node 3287 y: shift, then 4 coefficients */
-    35, 0, -299715296, 348888160, 47619600,
+    35, 0, -299377248, 348461504, 47851484,
     /* node 3287 z: shift, then 4 coefficients */
-    34, 0, 39965016, -35957192, 568099648,
+    34, 0, 40030384, -35990540, 568022528,
     /* node 3288 x: shift, then 4 coefficients */
-    34, 0, 491617760, -309156320, 263780528,
+    34, 0, 491721248, -309427584, 263627520,
     /* node 3288 y: shift, then 4 coefficients */
-    35, 0, -312146816, 381649696, 20144290,
+    35, 0, -312489824, 381876448, 20135810,
     /* node 3288 z: shift, then 4 coefficients */
-    34, 0, 45287564, -51590824, 586796928,
+    34, 0, 45047248, -51398776, 586598144,
     /* node 3289 x: shift, then 4 coefficients */
-    34, 0, 472674432, -291278976, 272582912,
+    34, 0, 472234752, -291247200, 271947168,
     /* node 3289 y: shift, then 4 coefficients */
-    35, 0, -285628608, 334912064, 50768292,
+    35, 0, -286866816, 336005184, 50032860,
     /* node 3289 z: shift, then 4 coefficients */
-    34, 0, 42683200, -41125464, 559598208,
+    34, 0, 42323536, -40805704, 559366016,
     /* node 3290 x: shift, then 4 coefficients */
-    34, 0, 441500224, -259774688, 272981056,
+    34, 0, 441789888, -260160944, 273094560,
     /* node 3290 y: shift, then 4 coefficients */
-    35, 0, -276628192, 310036416, 71596208,
+    35, 0, -276619168, 310029536, 71658656,
     /* node 3290 z: shift, then 4 coefficients */
-    34, 0, 38737332, -27232972, 541373632,
+    34, 0, 38960288, -27292808, 541387136,
     /* node 3291 x: shift, then 4 coefficients */
-    34, 0, 456911808, -277050912, 283704064,
+    34, 0, 456336640, -276964032, 282983104,
     /* node 3291 y: shift, then 4 coefficients */
-    35, 0, -263795968, 301433248, 69655464,
+    35, 0, -265129248, 302804576, 69072648,
     /* node 3291 z: shift, then 4 coefficients */
-    34, 0, 43314564, -34741492, 538955264,
+    34, 0, 42801568, -34484304, 538566976,
     /* node 3292 x: shift, then 4 coefficients */
-    33, 0, 252654768, -162117408, 137862368,
+    33, 0, 252610736, -162160464, 137723344,
     /* node 3292 y: shift, then 4 coefficients */
-    35, 0, -295784832, 365136352, 28119026,
+    35, 0, -296406432, 365795232, 27903498,
     /* node 3292 z: shift, then 4 coefficients */
-    34, 0, 50296920, -56636304, 580174592,
+    34, 0, 50139836, -56445560, 580014080,
     /* node 3293 x: shift, then 4 coefficients */
-    33, 0, 244366912, -153892080, 142644752,
+    33, 0, 244507440, -154014368, 142685120,
     /* node 3293 y: shift, then 4 coefficients */
-    35, 0, -270871872, 321350528, 53627480,
+    35, 0, -271008512, 321664800, 53834644,
     /* node 3293 z: shift, then 4 coefficients */
-    34, 0, 48605144, -47858724, 556342784,
+    34, 0, 48655116, -47848172, 556326336,
     /* node 3294 x: shift, then 4 coefficients */
-    34, 0, 425935968, -246166624, 277870208,
+    34, 0, 426165792, -246411296, 277978656,
     /* node 3294 y: shift, then 4 coefficients */
-    35, 0, -249728032, 272816256, 96352712,
+    35, 0, -249770512, 272662912, 96346920,
     /* node 3294 z: shift, then 4 coefficients */
-    34, 0, 37684476, -21063726, 517413888,
+    34, 0, 37786060, -20996664, 517415744,
     /* node 3295 x: shift, then 4 coefficients */
-    34, 0, 411297952, -234798272, 282302720,
+    34, 0, 411295936, -234924576, 282203968,
     /* node 3295 y: shift, then 4 coefficients */
-    35, 0, -232832752, 249923536, 108532544,
+    35, 0, -233126272, 250111152, 108525112,
     /* node 3295 z: shift, then 4 coefficients */
-    34, 0, 36850304, -16308051, 495105696,
+    34, 0, 36839888, -16169307, 495019872,
     /* node 3296 x: shift, then 4 coefficients */
-    34, 0, 440144864, -261271936, 286787712,
+    34, 0, 439805440, -261281552, 286311616,
     /* node 3296 y: shift, then 4 coefficients */
-    35, 0, -242665584, 269176000, 92036840,
+    35, 0, -243289472, 269795456, 91830160,
     /* node 3296 z: shift, then 4 coefficients */
-    34, 0, 40584496, -26296066, 514077792,
+    34, 0, 40305276, -26148774, 513859776,
     /* node 3297 x: shift, then 4 coefficients */
-    34, 0, 428213248, -251057600, 294255168,
+    34, 0, 428069632, -251110976, 293979264,
     /* node 3297 y: shift, then 4 coefficients */
-    35, 0, -218341120, 239131552, 109137336,
+    35, 0, -218749920, 239358288, 108917224,
     /* node 3297 z: shift, then 4 coefficients */
-    34, 0, 40642672, -22941816, 493013536,
+    34, 0, 40517708, -22809676, 492850656,
     /* node 3298 x: shift, then 4 coefficients */
-    34, 0, 398575680, -223436576, 285277728,
+    34, 0, 398588480, -223573888, 285203072,
     /* node 3298 y: shift, then 4 coefficients */
-    35, 0, -211163168, 220423600, 122692200,
+    35, 0, -211462320, 220672688, 122699760,
     /* node 3298 z: shift, then 4 coefficients */
-    35, 0, 70721712, -23678962, 942038784,
+    35, 0, 70675200, -23483036, 941937536,
     /* node 3300 x: shift, then 4 coefficients */
-    34, 0, 458325344, -278970784, 299310080,
+    34, 0, 458275200, -279188128, 299081760,
     /* node 3300 y: shift, then 4 coefficients */
-    35, 0, -224944656, 255555760, 95171184,
+    35, 0, -225034816, 255539648, 95123328,
     /* node 3300 z: shift, then 4 coefficients */
-    34, 0, 46458396, -34818400, 512072448,
+    34, 0, 46496016, -34935736, 511976896,
     /* node 3316 x: shift, then 4 coefficients */
-    33, 0, 325776096, -229781072, 40400872,
+    33, 0, 325790912, -229762000, 40323608,
     /* node 3316 y: shift, then 4 coefficients */
-    34, 0, -240463248, 375540672, -42881396,
+    34, 0, -240543264, 375659200, -42839904,
     /* node 3316 z: shift, then 4 coefficients */
-    34, 0, 62446600, -87311680, 675497216,
+    34, 0, 62330800, -87411504, 675399616,
     /* node 3317 x: shift, then 4 coefficients */
-    33, 0, 328283424, -233685008, 45569772,
+    33, 0, 328293280, -233682496, 45503548,
     /* node 3317 y: shift, then 4 coefficients */
-    34, 0, -236944880, 365955552, -42037396,
+    34, 0, -236971120, 365644384, -41939920,
     /* node 3317 z: shift, then 4 coefficients */
-    34, 0, 64585892, -89627232, 671727616,
+    34, 0, 64350376, -89406912, 671549056,
     /* node 3318 x: shift, then 4 coefficients */
-    33, 0, 329543904, -234251840, 38881112,
+    33, 0, 329600864, -234481728, 38833364,
     /* node 3318 y: shift, then 4 coefficients */
-    34, 0, -239384416, 366435712, -40352548,
+    34, 0, -239605328, 367138944, -40401828,
     /* node 3318 z: shift, then 4 coefficients */
-    34, 0, 65830248, -86188824, 671682240,
+    34, 0, 65732648, -86080504, 671493952,
     /* node 3319 x: shift, then 4 coefficients */
-    33, 0, 323958592, -228415952, 47786100,
+    33, 0, 323999232, -228582768, 47730992,
     /* node 3319 y: shift, then 4 coefficients */
-    34, 0, -237201616, 372642400, -45001000,
+    34, 0, -237372432, 372975424, -45012032,
     /* node 3319 z: shift, then 4 coefficients */
-    34, 0, 61038284, -90717408, 676424128,
+    34, 0, 60947712, -90821792, 676295040,
     /* node 3320 x: shift, then 4 coefficients */
-    33, 0, 321665312, -224003952, 41549936,
+    33, 0, 321680384, -224005504, 41467888,
     /* node 3320 y: shift, then 4 coefficients */
-    34, 0, -241657824, 386594368, -45662636,
+    34, 0, -241683872, 386341952, -45503260,
     /* node 3320 z: shift, then 4 coefficients */
-    34, 0, 59423828, -87470976, 680303296,
+    34, 0, 59232024, -87314024, 680104640,
     /* node 3321 x: shift, then 4 coefficients */
-    33, 0, 319245376, -221586416, 48930364,
+    33, 0, 319271104, -221656144, 48840924,
     /* node 3321 y: shift, then 4 coefficients */
-    34, 0, -237155264, 377009696, -46740332,
+    34, 0, -237276480, 377028288, -46737436,
     /* node 3321 z: shift, then 4 coefficients */
-    34, 0, 57906144, -89736632, 679767744,
+    34, 0, 57740228, -89682560, 679608192,
     /* node 3322 x: shift, then 4 coefficients */
-    33, 0, 317165664, -220611648, 57478408,
+    33, 0, 317181568, -220674256, 57369268,
     /* node 3322 y: shift, then 4 coefficients */
-    34, 0, -234644000, 373281056, -49010476,
+    34, 0, -234781520, 373454368, -49063088,
     /* node 3322 z: shift, then 4 coefficients */
-    34, 0, 56638924, -92438000, 680018432,
+    34, 0, 56536824, -92463512, 679869632,
     /* node 3323 x: shift, then 4 coefficients */
-    33, 0, 322515424, -228283648, 55887304,
+    33, 0, 322532512, -228266160, 55800552,
     /* node 3323 y: shift, then 4 coefficients */
-    34, 0, -234589056, 367854944, -46113136,
+    34, 0, -234661568, 367723264, -46066636,
     /* node 3323 z: shift, then 4 coefficients */
-    34, 0, 60246980, -92545416, 675963776,
+    34, 0, 60092044, -92593456, 675837376,
     /* node 3324 x: shift, then 4 coefficients */
-    33, 0, 320274560, -226545488, 63700344,
+    33, 0, 320290496, -226580384, 63613272,
     /* node 3324 y: shift, then 4 coefficients */
-    34, 0, -230261856, 358864704, -46306536,
+    34, 0, -230343072, 358917984, -46247760,
     /* node 3324 z: shift, then 4 coefficients */
-    34, 0, 59509708, -94477760, 674569920,
+    34, 0, 59350272, -94419488, 674423808,
     /* node 3325 x: shift, then 4 coefficients */
-    33, 0, 314501152, -219172320, 65483156,
+    33, 0, 314512640, -219252320, 65431048,
     /* node 3325 y: shift, then 4 coefficients */
-    34, 0, -230570640, 362494272, -49288648,
+    34, 0, -230677104, 362539840, -49212716,
     /* node 3325 z: shift, then 4 coefficients */
-    34, 0, 55472484, -94704440, 679201856,
+    34, 0, 55327416, -94603432, 679008704,
     /* node 3326 x: shift, then 4 coefficients */
-    33, 0, 317489568, -224553712, 71665848,
+    33, 0, 317542528, -224672960, 71566936,
     /* node 3326 y: shift, then 4 coefficients */
-    34, 0, -225596928, 348954016, -46237376,
+    34, 0, -225827776, 349217280, -46314068,
     /* node 3326 z: shift, then 4 coefficients */
-    34, 0, 58496628, -94581648, 672366080,
+    34, 0, 58355976, -94607880, 672274368,
     /* node 3327 x: shift, then 4 coefficients */
-    33, 0, 325271584, -232839504, 61833728,
+    33, 0, 325305760, -232914032, 61764936,
     /* node 3327 y: shift, then 4 coefficients */
-    34, 0, -229720544, 354047840, -43738752,
+    34, 0, -229874928, 354325504, -43773452,
     /* node 3327 z: shift, then 4 coefficients */
-    34, 0, 63212352, -95431816, 671828608,
+    34, 0, 63118212, -95438080, 671701568,
     /* node 3328 x: shift, then 4 coefficients */
-    33, 0, 323235264, -231670928, 69797352,
+    33, 0, 323245216, -231698496, 69701136,
     /* node 3328 y: shift, then 4 coefficients */
-    34, 0, -225789264, 347909312, -44451036,
+    34, 0, -225885536, 348006080, -44398484,
     /* node 3328 z: shift, then 4 coefficients */
-    34, 0, 62575812, -97329296, 670475968,
+    34, 0, 62395368, -97129480, 670276096,
     /* node 3329 x: shift, then 4 coefficients */
-    33, 0, 311144064, -216784016, 73387320,
+    33, 0, 311162400, -216843296, 73298640,
     /* node 3329 y: shift, then 4 coefficients */
-    34, 0, -225214352, 351398080, -49181428,
+    34, 0, -225338256, 351401920, -49131640,
     /* node 3329 z: shift, then 4 coefficients */
-    34, 0, 54942000, -95450360, 676327424,
+    34, 0, 54761252, -95337464, 676177792,
     /* node 3330 x: shift, then 4 coefficients */
-    33, 0, 307799168, -213822384, 81229440,
+    33, 0, 307862784, -213991168, 81142168,
     /* node 3330 y: shift, then 4 coefficients */
-    34, 0, -220894176, 339563328, -48441924,
+    34, 0, -221094352, 339794528, -48456556,
     /* node 3330 z: shift, then 4 coefficients */
-    34, 0, 54687744, -96010656, 673546240,
+    34, 0, 54464980, -95944640, 673457728,
     /* node 3331 x: shift, then 4 coefficients */
-    33, 0, 314251456, -222494176, 79486176,
+    33, 0, 314234080, -222479520, 79401104,
     /* node 3331 y: shift, then 4 coefficients */
-    34, 0, -221019792, 339868384, -46408560,
+    34, 0, -221088704, 339859360, -46334692,
     /* node 3331 z: shift, then 4 coefficients */
-    34, 0, 57226760, -96867872, 670569600,
+    34, 0, 57070612, -96720016, 670390784,
     /* node 3332 x: shift, then 4 coefficients */
-    33, 0, 310580736, -218515280, 86399352,
+    33, 0, 310605856, -218639712, 86315360,
     /* node 3332 y: shift, then 4 coefficients */
-    34, 0, -215733152, 325756384, -43563788,
+    34, 0, -215909136, 325940640, -43556940,
     /* node 3332 z: shift, then 4 coefficients */
-    34, 0, 56902244, -95681240, 665297856,
+    34, 0, 56722188, -95535576, 665160576,
     /* node 3333 x: shift, then 4 coefficients */
-    33, 0, 303580032, -211359712, 89626656,
+    33, 0, 303611392, -211491728, 89562024,
     /* node 3333 y: shift, then 4 coefficients */
-    34, 0, -215908992, 326583776, -47804392,
+    34, 0, -216128224, 326812704, -47840516,
     /* node 3333 z: shift, then 4 coefficients */
-    34, 0, 54252556, -98953976, 672884480,
+    34, 0, 54087916, -98836536, 672740736,
     /* node 3334 x: shift, then 4 coefficients */
-    33, 0, 306596832, -215748032, 93755288,
+    33, 0, 306610688, -215861184, 93672560,
     /* node 3334 y: shift, then 4 coefficients */
-    34, 0, -209233072, 311829760, -40703128,
+    34, 0, -209426832, 312055840, -40741696,
     /* node 3334 z: shift, then 4 coefficients */
-    34, 0, 56452708, -94112616, 659996864,
+    34, 0, 56324016, -94002608, 659849024,
     /* node 3335 x: shift, then 4 coefficients */
-    33, 0, 317770016, -227274864, 84665864,
+    33, 0, 317793248, -227379808, 84591088,
     /* node 3335 y: shift, then 4 coefficients */
-    34, 0, -215821312, 324107808, -40046036,
+    34, 0, -215955200, 324186272, -40038012,
     /* node 3335 z: shift, then 4 coefficients */
-    34, 0, 60461812, -96044496, 663422400,
+    34, 0, 60318132, -95999536, 663352832,
     /* node 3336 x: shift, then 4 coefficients */
-    33, 0, 314385056, -225030224, 92557960,
+    33, 0, 314400672, -225147936, 92486712,
     /* node 3336 y: shift, then 4 coefficients */
-    34, 0, -209911840, 313967232, -39566284,
+    34, 0, -210097504, 314109824, -39584664,
     /* node 3336 z: shift, then 4 coefficients */
-    34, 0, 60406096, -97755984, 659336000,
+    34, 0, 60257020, -97631736, 659186624,
     /* node 3337 x: shift, then 4 coefficients */
-    33, 0, 298782272, -206698320, 96984880,
+    33, 0, 298779232, -206770960, 96908088,
     /* node 3337 y: shift, then 4 coefficients */
-    34, 0, -207949392, 307769568, -41829420,
+    34, 0, -208100960, 307917696, -41801824,
     /* node 3337 z: shift, then 4 coefficients */
-    34, 0, 53466576, -94880768, 664196800,
+    34, 0, 53337696, -94763800, 664056128,
     /* node 3338 x: shift, then 4 coefficients */
-    33, 0, 293904384, -202342944, 104442688,
+    33, 0, 293874176, -202397744, 104365464,
     /* node 3338 y: shift, then 4 coefficients */
-    35, 0, -400461888, 580381120, -72948040,
+    35, 0, -400768160, 580682240, -72865320,
     /* node 3338 z: shift, then 4 coefficients */
-    34, 0, 53786976, -90883520, 655341248,
+    34, 0, 53694456, -90806280, 655197632,
     /* node 3339 x: shift, then 4 coefficients */
-    33, 0, 302362752, -212218160, 101599064,
+    33, 0, 302361856, -212296544, 101505960,
     /* node 3339 y: shift, then 4 coefficients */
-    35, 0, -403775264, 591558784, -74047048,
+    35, 0, -404115648, 591904640, -73990040,
     /* node 3339 z: shift, then 4 coefficients */
-    34, 0, 56132172, -93528144, 653929088,
+    34, 0, 55991224, -93367504, 653753024,
     /* node 3340 x: shift, then 4 coefficients */
-    33, 0, 297234016, -207427360, 109508176,
+    33, 0, 297216032, -207483104, 109410264,
     /* node 3340 y: shift, then 4 coefficients */
-    35, 0, -382965440, 548888768, -59334576,
+    35, 0, -383356288, 549271040, -59357196,
     /* node 3340 z: shift, then 4 coefficients */
-    34, 0, 57098376, -90384704, 642575040,
+    34, 0, 56953040, -90219696, 642417600,
     /* node 3341 x: shift, then 4 coefficients */
-    33, 0, 287774592, -197155136, 112186296,
+    33, 0, 287788416, -197246752, 112158736,
     /* node 3341 y: shift, then 4 coefficients */
-    35, 0, -378289952, 532457248, -56094444,
+    35, 0, -378687392, 532780960, -56142240,
     /* node 3341 z: shift, then 4 coefficients */
-    34, 0, 53415880, -86105776, 642171392,
+    34, 0, 53351572, -86060928, 642076672,
     /* node 3342 x: shift, then 4 coefficients */
-    33, 0, 292195200, -202666288, 117800592,
+    33, 0, 292188480, -202744320, 117725016,
     /* node 3342 y: shift, then 4 coefficients */
-    35, 0, -361903616, 505406624, -43681004,
+    35, 0, -362217952, 505710880, -43586892,
     /* node 3342 z: shift, then 4 coefficients */
-    34, 0, 57146900, -86071120, 629134464,
+    34, 0, 57075992, -85992920, 629005952,
     /* node 3343 x: shift, then 4 coefficients */
-    33, 0, 306352160, -217537136, 106465776,
+    33, 0, 306362528, -217654448, 106385920,
     /* node 3343 y: shift, then 4 coefficients */
-    35, 0, -386623232, 560767488, -59977808,
+    35, 0, -386990080, 561165568, -59924744,
     /* node 3343 z: shift, then 4 coefficients */
-    34, 0, 59968932, -92265000, 641579200,
+    34, 0, 59876384, -92156984, 641423808,
     /* node 3344 x: shift, then 4 coefficients */
-    33, 0, 301379008, -212831392, 114704160,
+    33, 0, 301400928, -212932416, 114655784,
     /* node 3344 y: shift, then 4 coefficients */
-    35, 0, -366267808, 521260512, -47199036,
+    35, 0, -366561728, 521404480, -47218840,
     /* node 3344 z: shift, then 4 coefficients */
-    34, 0, 59977292, -89715848, 630821952,
+    34, 0, 59865856, -89641488, 630712256,
     /* node 3345 x: shift, then 4 coefficients */
-    33, 0, 281346208, -190570912, 120728280,
+    33, 0, 281294432, -190612688, 120617824,
     /* node 3345 y: shift, then 4 coefficients */
-    35, 0, -353982848, 482721920, -33772828,
+    35, 0, -354336256, 483043200, -33777588,
     /* node 3345 z: shift, then 4 coefficients */
-    34, 0, 53986148, -80415448, 626559744,
+    34, 0, 53800996, -80239736, 626368192,
     /* node 3346 x: shift, then 4 coefficients */
-    33, 0, 274853344, -184494176, 129501840,
+    33, 0, 274777728, -184533280, 129344960,
     /* node 3346 y: shift, then 4 coefficients */
-    35, 0, -330811520, 437596352, -12141660,
+    35, 0, -331198240, 437991968, -12227075,
     /* node 3346 z: shift, then 4 coefficients */
-    34, 0, 55086724, -74515400, 610533120,
+    34, 0, 54869556, -74339904, 610312064,
     /* node 3347 x: shift, then 4 coefficients */
-    33, 0, 285359968, -195866976, 125375648,
+    33, 0, 285400928, -195974912, 125364096,
     /* node 3347 y: shift, then 4 coefficients */
-    35, 0, -337539264, 458390656, -21839082,
+    35, 0, -337770496, 458557600, -21737284,
     /* node 3347 z: shift, then 4 coefficients */
-    34, 0, 56699100, -80010272, 612785792,
+    34, 0, 56659404, -79959160, 612712384,
     /* node 3348 x: shift, then 4 coefficients */
-    33, 0, 278373472, -188984432, 133367976,
+    33, 0, 278387232, -189075424, 133307328,
     /* node 3348 y: shift, then 4 coefficients */
-    35, 0, -313719392, 414397184, -2342413,
+    35, 0, -313939264, 414576960, -2293690,
     /* node 3348 z: shift, then 4 coefficients */
-    34, 0, 56581456, -73591992, 595376192,
+    34, 0, 56596836, -73582464, 595392192,
     /* node 3349 x: shift, then 4 coefficients */
-    33, 0, 266160064, -176027808, 135412304,
+    33, 0, 266150464, -176142800, 135313488,
     /* node 3349 y: shift, then 4 coefficients */
-    35, 0, -306206624, 391117600, 11016597,
+    35, 0, -306741856, 391484384, 10714551,
     /* node 3349 z: shift, then 4 coefficients */
-    34, 0, 53298520, -65972088, 589401920,
+    34, 0, 53136840, -65857404, 589163392,
     /* node 3350 x: shift, then 4 coefficients */
-    33, 0, 271832128, -182408848, 140661600,
+    33, 0, 271875264, -182496976, 140615824,
     /* node 3350 y: shift, then 4 coefficients */
-    35, 0, -288394816, 372455200, 20553904,
+    35, 0, -288588480, 372728480, 20607104,
     /* node 3350 z: shift, then 4 coefficients */
-    34, 0, 56973748, -68349160, 579224896,
+    34, 0, 56969888, -68283192, 579239680,
     /* node 3351 x: shift, then 4 coefficients */
-    33, 0, 289644992, -201025968, 131303816,
+    33, 0, 289572928, -201053408, 131147480,
     /* node 3351 y: shift, then 4 coefficients */
-    35, 0, -318131200, 432082464, -8819861,
+    35, 0, -318588608, 432413792, -9064567,
     /* node 3351 z: shift, then 4 coefficients */
-    34, 0, 60479768, -80673592, 601173440,
+    34, 0, 60276820, -80471744, 600892608,
     /* node 3352 x: shift, then 4 coefficients */
-    33, 0, 283243776, -194573680, 138578976,
+    33, 0, 283141120, -194601232, 138379760,
     /* node 3352 y: shift, then 4 coefficients */
-    35, 0, -294343136, 391146016, 11748276,
+    35, 0, -294837280, 391697728, 11462452,
     /* node 3352 z: shift, then 4 coefficients */
-    34, 0, 60724716, -76020368, 586110016,
+    34, 0, 60423900, -75767168, 585731520,
     /* node 3353 x: shift, then 4 coefficients */
-    33, 0, 257894928, -168129776, 141366688,
+    33, 0, 257871088, -168239056, 141234464,
     /* node 3353 y: shift, then 4 coefficients */
-    35, 0, -281871648, 350777440, 32520036,
+    35, 0, -282131648, 350969312, 32499352,
     /* node 3353 z: shift, then 4 coefficients */
-    34, 0, 51640492, -58425624, 567621312,
+    34, 0, 51554600, -58367728, 567509184,
     /* node 3354 x: shift, then 4 coefficients */
-    33, 0, 250630000, -160655968, 146365424,
+    33, 0, 250585904, -160766336, 146226096,
     /* node 3354 y: shift, then 4 coefficients */
-    35, 0, -259301632, 314652064, 54950836,
+    35, 0, -259347584, 314523360, 55061600,
     /* node 3354 z: shift, then 4 coefficients */
-    34, 0, 51296732, -51738904, 548799936,
+    34, 0, 51118620, -51635392, 548588544,
     /* node 3355 x: shift, then 4 coefficients */
-    33, 0, 264669472, -175077504, 146769056,
+    33, 0, 264686272, -175149536, 146682624,
     /* node 3355 y: shift, then 4 coefficients */
-    35, 0, -264440672, 333125024, 42554192,
+    35, 0, -264692976, 333365056, 42537724,
     /* node 3355 z: shift, then 4 coefficients */
-    34, 0, 56565264, -62531708, 561608960,
+    34, 0, 56532788, -62477928, 561559872,
     /* node 3356 x: shift, then 4 coefficients */
-    33, 0, 256787312, -167300560, 151034016,
+    33, 0, 256768544, -167369792, 150924112,
     /* node 3356 y: shift, then 4 coefficients */
-    35, 0, -239374016, 296663168, 64140924,
+    35, 0, -239668992, 296798912, 64005328,
     /* node 3356 z: shift, then 4 coefficients */
-    34, 0, 56111140, -56343508, 541561216,
+    34, 0, 55985140, -56224304, 541395456,
     /* node 3357 x: shift, then 4 coefficients */
-    33, 0, 243693872, -153803744, 151112032,
+    33, 0, 243635520, -153873712, 150985120,
     /* node 3357 y: shift, then 4 coefficients */
-    35, 0, -232854592, 277579328, 77578544,
+    35, 0, -233536976, 277916992, 76901600,
     /* node 3357 z: shift, then 4 coefficients */
-    34, 0, 51588692, -46081072, 528216480,
+    34, 0, 51460060, -45887876, 528119264,
     /* node 3359 x: shift, then 4 coefficients */
-    33, 0, 269198176, -179965696, 149558176,
+    33, 0, 269192512, -180055728, 149496688,
     /* node 3359 y: shift, then 4 coefficients */
-    35, 0, -248998304, 318804864, 49047552,
+    35, 0, -249389520, 318929312, 48806520,
     /* node 3359 z: shift, then 4 coefficients */
-    34, 0, 59364880, -63942128, 551363136,
+    34, 0, 59317760, -63902560, 551281920,
     /* node 3386 x: shift, then 4 coefficients */
-    34, 0, 374452096, -177103824, -221599232,
+    34, 0, 374024544, -177239392, -220978928,
     /* node 3386 y: shift, then 4 coefficients */
-    35, 0, -331535296, 316362816, -204870784,
+    35, 0, -331135552, 316166272, -205158576,
     /* node 3386 z: shift, then 4 coefficients */
-    34, 0, 23042736, -83306512, 433211488,
+    34, 0, 22892614, -83112616, 433241568,
     /* node 3387 x: shift, then 4 coefficients */
-    34, 0, 364399744, -168650288, -217052896,
+    34, 0, 363866752, -168732896, -216340384,
     /* node 3387 y: shift, then 4 coefficients */
-    35, 0, -330727104, 318119616, -212724976,
+    35, 0, -330479552, 318231808, -213023056,
     /* node 3387 z: shift, then 4 coefficients */
-    34, 0, 23978864, -86026592, 427853312,
+    34, 0, 23967908, -85841160, 427744640,
     /* node 3716 x: shift, then 4 coefficients */
-    34, 0, 376601920, -178412240, -220624448,
+    34, 0, 376240640, -178678960, -219989728,
     /* node 3716 y: shift, then 4 coefficients */
-    35, 0, -342019264, 330962496, -213946480,
+    35, 0, -342446528, 331428896, -213392944,
     /* node 3716 z: shift, then 4 coefficients */
-    34, 0, 23057888, -83916768, 444783232,
+    34, 0, 23193918, -83746816, 444493472,
     /* node 3717 x: shift, then 4 coefficients */
-    34, 0, 389083072, -189429584, -226949456,
+    34, 0, 389486784, -189800560, -227407360,
     /* node 3717 y: shift, then 4 coefficients */
-    35, 0, -348147232, 334672576, -202485984,
+    35, 0, -348485312, 335165152, -202467856,
     /* node 3717 z: shift, then 4 coefficients */
-    34, 0, 23285108, -81242400, 451483776,
+    34, 0, 23105292, -81141048, 451682528,
     /* node 3718 x: shift, then 4 coefficients */
-    34, 0, 389356896, -188955856, -225190608,
+    34, 0, 389513504, -189129024, -225447040,
     /* node 3718 y: shift, then 4 coefficients */
-    35, 0, -363780704, 353620448, -208429648,
+    35, 0, -364950176, 354818400, -207271024,
     /* node 3718 z: shift, then 4 coefficients */
-    34, 0, 24506108, -82635400, 462585056,
+    34, 0, 24429296, -82410032, 462426656,
     /* node 3719 x: shift, then 4 coefficients */
-    34, 0, 419638880, -215946928, -235421360,
+    34, 0, 419884448, -216156416, -235723376,
     /* node 3719 y: shift, then 4 coefficients */
-    35, 0, -342340928, 331223552, -193975632,
+    35, 0, -342326720, 331376544, -194049392,
     /* node 3719 z: shift, then 4 coefficients */
-    34, 0, 29386938, -79557656, 456089760,
+    34, 0, 29298278, -79540688, 456078528,
     /* node 3721 x: shift, then 4 coefficients */
-    34, 0, 434382560, -229247968, -235345008,
+    34, 0, 434491648, -229425216, -235439360,
     /* node 3721 y: shift, then 4 coefficients */
-    35, 0, -367078336, 356742560, -189103920,
+    35, 0, -367511648, 357052928, -188492112,
     /* node 3721 z: shift, then 4 coefficients */
-    34, 0, 30938010, -78513920, 478628128,
+    34, 0, 30721870, -78420736, 478702048,
     /* node 3722 x: shift, then 4 coefficients */
-    34, 0, 418751456, -214656432, -233467376,
+    34, 0, 418991616, -214854256, -233800480,
     /* node 3722 y: shift, then 4 coefficients */
-    35, 0, -365776224, 355601344, -196367568,
+    35, 0, -365978528, 355891808, -196174688,
     /* node 3722 z: shift, then 4 coefficients */
-    34, 0, 28599760, -79866048, 473333120,
+    34, 0, 28480610, -79830408, 473339648,
     /* node 3723 x: shift, then 4 coefficients */
-    34, 0, 402444480, -200975344, -231166944,
+    34, 0, 402481248, -201125968, -231153888,
     /* node 3723 y: shift, then 4 coefficients */
-    35, 0, -345526336, 333069344, -198268704,
+    35, 0, -345862368, 333449696, -197946768,
     /* node 3723 z: shift, then 4 coefficients */
-    34, 0, 27568902, -81125640, 451682208,
+    34, 0, 27575702, -81124800, 451523488,
     /* node 3724 x: shift, then 4 coefficients */
-    34, 0, 401437792, -199918704, -227493760,
+    34, 0, 401385120, -200107776, -227417088,
     /* node 3724 y: shift, then 4 coefficients */
-    35, 0, -363511104, 351940928, -201078320,
+    35, 0, -364206336, 352330240, -199952624,
     /* node 3724 z: shift, then 4 coefficients */
-    34, 0, 27333522, -81727136, 465781984,
+    34, 0, 27406464, -81626624, 465457888,
     /* node 3725 x: shift, then 4 coefficients */
-    34, 0, 416994176, -212778112, -230996112,
+    34, 0, 416877920, -212935472, -230819904,
     /* node 3725 y: shift, then 4 coefficients */
-    35, 0, -381095328, 373741088, -201814880,
+    35, 0, -381866464, 374265184, -200869648,
     /* node 3725 z: shift, then 4 coefficients */
-    34, 0, 28519776, -80779760, 485012032,
+    34, 0, 28424124, -80751888, 484878720,
     /* node 3726 x: shift, then 4 coefficients */
-    34, 0, 400348896, -198106112, -226513568,
+    34, 0, 400700288, -198327360, -226967808,
     /* node 3726 y: shift, then 4 coefficients */
-    35, 0, -378287904, 369782848, -208330976,
+    35, 0, -377645632, 369572928, -209133376,
     /* node 3726 z: shift, then 4 coefficients */
-    34, 0, 26893236, -82745760, 477457856,
+    34, 0, 26764334, -82747768, 477498688,
     /* node 3727 x: shift, then 4 coefficients */
-    34, 0, 413783552, -209206672, -228317920,
+    34, 0, 413874016, -209444240, -228355856,
     /* node 3727 y: shift, then 4 coefficients */
-    35, 0, -392237440, 386549760, -206025728,
+    35, 0, -392399648, 386828544, -205968960,
     /* node 3727 z: shift, then 4 coefficients */
-    34, 0, 28029024, -81976672, 493771712,
+    34, 0, 27867210, -81960120, 493807808,
     /* node 3728 x: shift, then 4 coefficients */
-    34, 0, 429508032, -223492240, -230560720,
+    34, 0, 429638880, -223727504, -230748768,
     /* node 3728 y: shift, then 4 coefficients */
-    35, 0, -396090656, 390116448, -197911312,
+    35, 0, -395907232, 390075552, -198088224,
     /* node 3728 z: shift, then 4 coefficients */
-    34, 0, 28867584, -79385064, 502498336,
+    34, 0, 28792642, -79399112, 502437088,
     /* node 3729 x: shift, then 4 coefficients */
-    34, 0, 426710752, -219936528, -227655184,
+    34, 0, 426845216, -220264784, -227792160,
     /* node 3729 y: shift, then 4 coefficients */
-    35, 0, -408996096, 405331424, -198621984,
+    35, 0, -408895456, 405291328, -198654560,
     /* node 3729 z: shift, then 4 coefficients */
-    34, 0, 28684496, -80893800, 510481536,
+    34, 0, 28675480, -80846240, 510297568,
     /* node 3735 x: shift, then 4 coefficients */
-    34, 0, 450378144, -244884032, -236114496,
+    34, 0, 450346752, -245004544, -235990048,
     /* node 3735 y: shift, then 4 coefficients */
-    35, 0, -359957472, 351787968, -182451600,
+    35, 0, -360362528, 352172960, -181982128,
     /* node 3735 z: shift, then 4 coefficients */
-    34, 0, 32973372, -75573936, 480057120,
+    34, 0, 32994780, -75536696, 479852064,
     /* node 3736 x: shift, then 4 coefficients */
-    34, 0, 460946016, -255686384, -232250000,
+    34, 0, 460927968, -255718496, -232193696,
     /* node 3736 y: shift, then 4 coefficients */
-    35, 0, -386087136, 381522848, -174498720,
+    35, 0, -386211264, 381663200, -174233536,
     /* node 3736 z: shift, then 4 coefficients */
-    34, 0, 35430120, -74560944, 498011296,
+    34, 0, 35601840, -74648496, 497623680,
     /* node 3737 x: shift, then 4 coefficients */
-    34, 0, 444760352, -239536448, -231537760,
+    34, 0, 444457152, -239592960, -231051120,
     /* node 3737 y: shift, then 4 coefficients */
-    35, 0, -384884352, 378850752, -186414576,
+    35, 0, -385284288, 378975776, -185726240,
     /* node 3737 z: shift, then 4 coefficients */
-    34, 0, 32694050, -77120176, 497300448,
+    34, 0, 32794404, -77144224, 497025088,
     /* node 3738 x: shift, then 4 coefficients */
-    34, 0, 456519968, -251167584, -229648784,
+    34, 0, 456480064, -251241152, -229572656,
     /* node 3738 y: shift, then 4 coefficients */
-    35, 0, -401211776, 399185632, -178179504,
+    35, 0, -401085792, 399198848, -178380080,
     /* node 3738 z: shift, then 4 coefficients */
-    34, 0, 33763676, -75180184, 511515328,
+    34, 0, 33920932, -75232184, 511147264,
     /* node 3739 x: shift, then 4 coefficients */
-    34, 0, 443837728, -236923184, -231070544,
+    34, 0, 443748096, -237028624, -230896224,
     /* node 3739 y: shift, then 4 coefficients */
-    35, 0, -394685632, 390885472, -192446640,
+    35, 0, -394641600, 391022560, -192577600,
     /* node 3739 z: shift, then 4 coefficients */
-    34, 0, 30957358, -77422120, 507854784,
+    34, 0, 31054030, -77483432, 507537888,
     /* node 3740 x: shift, then 4 coefficients */
-    34, 0, 455951744, -248980592, -229166768,
+    34, 0, 456122880, -249196448, -229325888,
     /* node 3740 y: shift, then 4 coefficients */
-    35, 0, -412183520, 413153856, -182599680,
+    35, 0, -411715840, 412957248, -183194816,
     /* node 3740 z: shift, then 4 coefficients */
-    34, 0, 32829288, -75918624, 522512544,
+    34, 0, 33016770, -75963824, 522033888,
     /* node 3741 x: shift, then 4 coefficients */
-    34, 0, 470089120, -264619984, -229121568,
+    34, 0, 470091008, -264694544, -228959360,
     /* node 3741 y: shift, then 4 coefficients */
-    35, 0, -398955136, 398977696, -171236432,
+    35, 0, -398845728, 398957248, -171248144,
     /* node 3741 z: shift, then 4 coefficients */
-    34, 0, 36519424, -73755840, 513506752,
+    34, 0, 36766856, -73923136, 513003168,
     /* node 3742 x: shift, then 4 coefficients */
-    34, 0, 466479968, -260075472, -226117024,
+    34, 0, 466837056, -260379344, -226513952,
     /* node 3742 y: shift, then 4 coefficients */
-    35, 0, -413815360, 416382976, -175173872,
+    35, 0, -413848800, 416757600, -175447952,
     /* node 3742 z: shift, then 4 coefficients */
-    34, 0, 35723164, -75034184, 526632512,
+    34, 0, 35727996, -75114288, 526443552,
     /* node 3743 x: shift, then 4 coefficients */
-    34, 0, 442139776, -233921648, -229702960,
+    34, 0, 442298048, -234090096, -229860976,
     /* node 3743 y: shift, then 4 coefficients */
-    35, 0, -408292448, 406882176, -193073856,
+    35, 0, -407801568, 406801088, -193718560,
     /* node 3743 z: shift, then 4 coefficients */
-    34, 0, 29705220, -77753552, 517232224,
+    34, 0, 29865918, -77868808, 516788224,
     /* node 3744 x: shift, then 4 coefficients */
-    34, 0, 453542848, -244612656, -226343312,
+    34, 0, 453957056, -244987936, -226829536,
     /* node 3744 y: shift, then 4 coefficients */
-    35, 0, -419917280, 422845472, -185959568,
+    35, 0, -419761760, 422946688, -186161520,
     /* node 3744 z: shift, then 4 coefficients */
-    34, 0, 31514790, -76614888, 531863968,
+    34, 0, 31556030, -76657456, 531591424,
     /* node 3745 x: shift, then 4 coefficients */
-    34, 0, 437930816, -229640512, -224925712,
+    34, 0, 438028192, -229795808, -224997312,
     /* node 3745 y: shift, then 4 coefficients */
-    35, 0, -421411008, 422250624, -190642720,
+    35, 0, -421263520, 422247872, -190705392,
     /* node 3745 z: shift, then 4 coefficients */
-    34, 0, 29575150, -78544272, 524774656,
+    34, 0, 29720364, -78609040, 524332288,
     /* node 3746 x: shift, then 4 coefficients */
-    34, 0, 449675936, -240166560, -219846784,
+    34, 0, 449968032, -240481408, -220189728,
     /* node 3746 y: shift, then 4 coefficients */
-    35, 0, -424780992, 431247680, -185585664,
+    35, 0, -424903776, 431461376, -185312496,
     /* node 3746 z: shift, then 4 coefficients */
-    34, 0, 31206258, -77206016, 537443264,
+    34, 0, 31112050, -77156672, 537340864,
     /* node 3747 x: shift, then 4 coefficients */
-    34, 0, 464011872, -255889680, -219443664,
+    34, 0, 464341472, -256180400, -219847248,
     /* node 3747 y: shift, then 4 coefficients */
-    35, 0, -424097088, 432989120, -180093520,
+    35, 0, -423857120, 432941792, -180168736,
     /* node 3747 z: shift, then 4 coefficients */
-    34, 0, 33608092, -74908760, 543553408,
+    34, 0, 33645568, -74882344, 543199168,
     /* node 3748 x: shift, then 4 coefficients */
-    34, 0, 460690944, -251902544, -212939296,
+    34, 0, 461000512, -252165232, -213307168,
     /* node 3748 y: shift, then 4 coefficients */
-    35, 0, -432306688, 444276032, -176105808,
+    35, 0, -432152608, 444321984, -176188576,
     /* node 3748 z: shift, then 4 coefficients */
-    34, 0, 32926682, -75069576, 550824320,
+    34, 0, 32821386, -75015704, 550679616,
     /* node 3757 x: shift, then 4 coefficients */
-    34, 0, 503116672, -296732704, -227402288,
+    34, 0, 503301696, -296914976, -227525232,
     /* node 3757 y: shift, then 4 coefficients */
-    35, 0, -385483968, 392242656, -158654720,
+    35, 0, -385101248, 392021696, -158910256,
     /* node 3757 z: shift, then 4 coefficients */
-    34, 0, 43016112, -71957400, 510041792,
+    34, 0, 42938948, -71938904, 509947584,
     /* node 3758 x: shift, then 4 coefficients */
-    34, 0, 481418144, -275290784, -228871408,
+    34, 0, 481453120, -275478752, -228827120,
     /* node 3758 y: shift, then 4 coefficients */
-    35, 0, -399601216, 402463968, -166179280,
+    35, 0, -399641376, 402609696, -166052096,
     /* node 3758 z: shift, then 4 coefficients */
-    34, 0, 38779256, -73161288, 515646432,
+    34, 0, 38812548, -73163336, 515475776,
     /* node 3759 x: shift, then 4 coefficients */
-    34, 0, 492533120, -284166144, -222084832,
+    34, 0, 492528608, -284377120, -222034688,
     /* node 3759 y: shift, then 4 coefficients */
-    35, 0, -407416864, 415486592, -161972896,
+    35, 0, -407455808, 415705600, -162086352,
     /* node 3759 z: shift, then 4 coefficients */
-    34, 0, 40622328, -71562000, 529176960,
+    34, 0, 40575596, -71582992, 529062144,
     /* node 3760 x: shift, then 4 coefficients */
-    34, 0, 520225536, -314252352, -224056448,
+    34, 0, 520365184, -314397632, -224213072,
     /* node 3760 y: shift, then 4 coefficients */
-    35, 0, -375783968, 386394624, -153452048,
+    35, 0, -375534816, 386339040, -153656784,
     /* node 3760 z: shift, then 4 coefficients */
-    34, 0, 46544860, -71399704, 509425216,
+    34, 0, 46395768, -71348384, 509412128,
     /* node 3761 x: shift, then 4 coefficients */
-    34, 0, 511806176, -305291616, -216411296,
+    34, 0, 511784096, -305421120, -216312224,
     /* node 3761 y: shift, then 4 coefficients */
-    35, 0, -395635520, 410168128, -152309520,
+    35, 0, -395448032, 410026400, -152398944,
     /* node 3761 z: shift, then 4 coefficients */
-    34, 0, 44786160, -70515512, 525958624,
+    34, 0, 44684000, -70508784, 525897344,
     /* node 3762 x: shift, then 4 coefficients */
-    34, 0, 480580224, -273424640, -224919584,
+    34, 0, 480551392, -273587744, -224744400,
     /* node 3762 y: shift, then 4 coefficients */
-    35, 0, -409654912, 414435904, -166325312,
+    35, 0, -409635744, 414621504, -166418784,
     /* node 3762 z: shift, then 4 coefficients */
-    34, 0, 37896488, -72838952, 527432288,
+    34, 0, 38001164, -72911896, 527093568,
     /* node 3763 x: shift, then 4 coefficients */
-    34, 0, 478102368, -270184352, -222646896,
+    34, 0, 478093152, -270294624, -222554704,
     /* node 3763 y: shift, then 4 coefficients */
-    35, 0, -421887840, 428438272, -167545600,
+    35, 0, -421560512, 428464896, -167904720,
     /* node 3763 z: shift, then 4 coefficients */
-    34, 0, 36549084, -72732632, 539019712,
+    34, 0, 36630452, -72791328, 538627712,
     /* node 3764 x: shift, then 4 coefficients */
-    34, 0, 491950336, -283299264, -217940784,
+    34, 0, 491947456, -283526528, -217941520,
     /* node 3764 y: shift, then 4 coefficients */
-    35, 0, -412822336, 422317088, -161456288,
+    35, 0, -412910880, 422435200, -161283520,
     /* node 3764 z: shift, then 4 coefficients */
-    34, 0, 41041716, -71333960, 536599968,
+    34, 0, 40983824, -71315064, 536483264,
     /* node 3765 x: shift, then 4 coefficients */
-    34, 0, 490767616, -281774784, -213556832,
+    34, 0, 490776608, -281955104, -213578448,
     /* node 3765 y: shift, then 4 coefficients */
-    35, 0, -422053984, 435383040, -158447104,
+    35, 0, -422058240, 435352288, -158139072,
     /* node 3765 z: shift, then 4 coefficients */
-    34, 0, 39980672, -71105664, 544945344,
+    34, 0, 39956432, -71074288, 544743296,
     /* node 3766 x: shift, then 4 coefficients */
-    34, 0, 479036992, -269026336, -220492752,
+    34, 0, 478990080, -269122048, -220428432,
     /* node 3766 y: shift, then 4 coefficients */
-    35, 0, -425855968, 435996128, -169699952,
+    35, 0, -425541312, 435783104, -169793968,
     /* node 3766 z: shift, then 4 coefficients */
-    34, 0, 34688920, -72036968, 549057984,
+    34, 0, 34760320, -72073288, 548689088,
     /* node 3767 x: shift, then 4 coefficients */
-    34, 0, 491114112, -281492704, -208808032,
+    34, 0, 491255360, -281724512, -208947024,
     /* node 3767 y: shift, then 4 coefficients */
-    35, 0, -429617600, 448653344, -155522672,
+    35, 0, -429741248, 448805440, -155186640,
     /* node 3767 z: shift, then 4 coefficients */
-    34, 0, 38363316, -70655944, 555518784,
+    34, 0, 38433128, -70687840, 555215808,
     /* node 3768 x: shift, then 4 coefficients */
-    34, 0, 504210784, -296063680, -210938528,
+    34, 0, 504191424, -296313696, -210801344,
     /* node 3768 y: shift, then 4 coefficients */
-    35, 0, -419128544, 439709216, -151152656,
+    35, 0, -418783168, 439330208, -151114112,
     /* node 3768 z: shift, then 4 coefficients */
-    34, 0, 42515088, -69734752, 545015680,
+    34, 0, 42527860, -69745848, 544712704,
     /* node 3769 x: shift, then 4 coefficients */
-    34, 0, 503694336, -295311136, -206373424,
+    34, 0, 503373280, -295395072, -205999360,
     /* node 3769 y: shift, then 4 coefficients */
-    35, 0, -426043840, 449459648, -146398144,
+    35, 0, -426372096, 449743008, -145822352,
     /* node 3769 z: shift, then 4 coefficients */
-    34, 0, 40652672, -68003512, 555691008,
+    34, 0, 40866372, -68053840, 555239616,
     /* node 3770 x: shift, then 4 coefficients */
-    34, 0, 478505152, -267489120, -213402448,
+    34, 0, 478391584, -267551744, -213340592,
     /* node 3770 y: shift, then 4 coefficients */
-    35, 0, -429892192, 445325792, -165240752,
+    35, 0, -429822272, 445270752, -165162736,
     /* node 3770 z: shift, then 4 coefficients */
-    34, 0, 33945532, -71954272, 555438464,
+    34, 0, 33976380, -71977808, 555199936,
     /* node 3771 x: shift, then 4 coefficients */
-    34, 0, 491766976, -281066400, -204561760,
+    34, 0, 492122848, -281447648, -204937104,
     /* node 3771 y: shift, then 4 coefficients */
-    35, 0, -432147328, 458097376, -152097008,
+    35, 0, -432213664, 458391776, -152103232,
     /* node 3771 z: shift, then 4 coefficients */
-    34, 0, 35534788, -69007272, 566930176,
+    34, 0, 35560180, -69021536, 566671360,
     /* node 3772 x: shift, then 4 coefficients */
-    34, 0, 474156288, -263745840, -204264208,
+    34, 0, 474199424, -263948128, -204411552,
     /* node 3772 y: shift, then 4 coefficients */
-    35, 0, -436176832, 454515872, -159025424,
+    35, 0, -436240064, 454725088, -159075024,
     /* node 3772 z: shift, then 4 coefficients */
-    34, 0, 34301976, -72340008, 560008768,
+    34, 0, 34231880, -72326800, 559948032,
     /* node 3773 x: shift, then 4 coefficients */
-    34, 0, 491871264, -280667072, -194605872,
+    34, 0, 492128704, -280971712, -194905216,
     /* node 3773 y: shift, then 4 coefficients */
-    35, 0, -437311904, 471666592, -145826288,
+    35, 0, -437317056, 471929632, -145837520,
     /* node 3773 z: shift, then 4 coefficients */
-    34, 0, 33827688, -67356104, 576108544,
+    34, 0, 33745700, -67302272, 575957312,
     /* node 3774 x: shift, then 4 coefficients */
-    34, 0, 509893344, -299537376, -190320992,
+    34, 0, 509774176, -299679520, -190224064,
     /* node 3774 y: shift, then 4 coefficients */
-    35, 0, -434143552, 476212160, -132526384,
+    35, 0, -434153824, 476254688, -132259416,
     /* node 3774 z: shift, then 4 coefficients */
-    34, 0, 38466232, -64895540, 574675776,
+    34, 0, 38545044, -64887012, 574366464,
     /* node 3775 x: shift, then 4 coefficients */
-    34, 0, 513173216, -300162880, -181875536,
+    34, 0, 512998240, -300270816, -181733136,
     /* node 3775 y: shift, then 4 coefficients */
-    35, 0, -440913920, 493498752, -125895520,
+    35, 0, -440946208, 493518624, -125731040,
     /* node 3775 z: shift, then 4 coefficients */
-    34, 0, 36295448, -61247960, 589088960,
+    34, 0, 36194820, -61157228, 588923136,
     /* node 3789 x: shift, then 4 coefficients */
-    33, 0, 268707520, -165903552, -106773344,
+    33, 0, 268776480, -165989744, -106864112,
     /* node 3789 y: shift, then 4 coefficients */
-    35, 0, -378086624, 396474976, -142265152,
+    35, 0, -377975840, 396470880, -142340288,
     /* node 3789 z: shift, then 4 coefficients */
-    34, 0, 49807352, -70118760, 518161152,
+    34, 0, 49591140, -70033136, 518240544,
     /* node 3790 x: shift, then 4 coefficients */
-    34, 0, 535443296, -329014208, -206879552,
+    34, 0, 535525472, -329187360, -206978224,
     /* node 3790 y: shift, then 4 coefficients */
-    35, 0, -397052544, 422058784, -136759232,
+    35, 0, -397000800, 422229856, -136877472,
     /* node 3790 z: shift, then 4 coefficients */
-    34, 0, 48668676, -69358408, 532600096,
+    34, 0, 48479408, -69291696, 532596224,
     /* node 3791 x: shift, then 4 coefficients */
-    33, 0, 278714912, -175582496, -101105504,
+    33, 0, 278743424, -175670704, -101165200,
     /* node 3791 y: shift, then 4 coefficients */
-    35, 0, -383800224, 414775488, -130571552,
+    35, 0, -383902688, 415072320, -130564616,
     /* node 3791 z: shift, then 4 coefficients */
-    34, 0, 51471408, -67763112, 529624768,
+    34, 0, 51328476, -67637448, 529536896,
     /* node 3792 x: shift, then 4 coefficients */
-    33, 0, 275162048, -172281904, -97054640,
+    33, 0, 275254336, -172382656, -97182576,
     /* node 3792 y: shift, then 4 coefficients */
-    35, 0, -399127808, 434622688, -126521904,
+    35, 0, -399054592, 434918016, -126808816,
     /* node 3792 z: shift, then 4 coefficients */
-    34, 0, 51102676, -67181184, 540913024,
+    34, 0, 51042516, -67156144, 540837696,
     /* node 3793 x: shift, then 4 coefficients */
-    34, 0, 527609248, -320407200, -203330176,
+    34, 0, 527617408, -320532192, -203360192,
     /* node 3793 y: shift, then 4 coefficients */
-    35, 0, -408443904, 434958656, -137778512,
+    35, 0, -408375456, 435103264, -137932512,
     /* node 3793 z: shift, then 4 coefficients */
-    34, 0, 45937168, -68091464, 543485248,
+    34, 0, 45819100, -68016944, 543385920,
     /* node 3794 x: shift, then 4 coefficients */
-    33, 0, 272751680, -169756064, -95385872,
+    33, 0, 272702464, -169819712, -95350360,
     /* node 3794 y: shift, then 4 coefficients */
-    35, 0, -407506112, 445216160, -126665544,
+    35, 0, -407315360, 444987424, -126441560,
     /* node 3794 z: shift, then 4 coefficients */
-    34, 0, 47820728, -64172496, 553620800,
+    34, 0, 47686156, -64040040, 553456256,
     /* node 3795 x: shift, then 4 coefficients */
-    33, 0, 287027296, -184373360, -94284176,
+    33, 0, 286964544, -184418080, -94214688,
     /* node 3795 y: shift, then 4 coefficients */
-    35, 0, -388604832, 431536576, -120693512,
+    35, 0, -388552800, 431388896, -120452968,
     /* node 3795 z: shift, then 4 coefficients */
-    34, 0, 54381504, -67011524, 538867456,
+    34, 0, 54372960, -67045824, 538698368,
     /* node 3796 x: shift, then 4 coefficients */
-    33, 0, 285196320, -182408320, -89709664,
+    33, 0, 285174144, -182462160, -89719928,
     /* node 3796 y: shift, then 4 coefficients */
-    35, 0, -401676416, 450497792, -113800792,
+    35, 0, -401629792, 450629984, -113973448,
     /* node 3796 z: shift, then 4 coefficients */
-    34, 0, 53319580, -65492956, 548777728,
+    34, 0, 53260648, -65497412, 548638848,
     /* node 3797 x: shift, then 4 coefficients */
-    34, 0, 523464640, -316500512, -195353360,
+    34, 0, 523435168, -316560096, -195399312,
     /* node 3797 y: shift, then 4 coefficients */
-    35, 0, -419387904, 451772096, -131447288,
+    35, 0, -419114624, 451463552, -131305960,
     /* node 3797 z: shift, then 4 coefficients */
-    34, 0, 44994584, -67207480, 553338880,
+    34, 0, 44966736, -67134136, 553047360,
     /* node 3798 x: shift, then 4 coefficients */
-    34, 0, 523127072, -315434528, -191696848,
+    34, 0, 523281184, -315650240, -191979120,
     /* node 3798 y: shift, then 4 coefficients */
-    35, 0, -423782816, 462226496, -129250232,
+    35, 0, -423453888, 461988128, -129489576,
     /* node 3798 z: shift, then 4 coefficients */
-    34, 0, 41381836, -63739252, 565888768,
+    34, 0, 41444232, -63783880, 565664256,
     /* node 3799 x: shift, then 4 coefficients */
-    34, 0, 542227712, -335754912, -182359408,
+    34, 0, 542190528, -335954912, -182306016,
     /* node 3799 y: shift, then 4 coefficients */
-    35, 0, -417013568, 462068256, -119746952,
+    35, 0, -416696448, 461575168, -119466384,
     /* node 3799 z: shift, then 4 coefficients */
-    34, 0, 47499956, -63902604, 560985088,
+    34, 0, 47318988, -63730628, 560883136,
     /* node 3800 x: shift, then 4 coefficients */
-    34, 0, 545737600, -339047040, -173858096,
+    34, 0, 545830656, -339240800, -174005808,
     /* node 3800 y: shift, then 4 coefficients */
-    35, 0, -425552064, 479466688, -109818632,
+    35, 0, -425646816, 479843584, -110026512,
     /* node 3800 z: shift, then 4 coefficients */
-    34, 0, 46149116, -60899708, 572276096,
+    34, 0, 45973804, -60708472, 572218368,
     /* node 3801 x: shift, then 4 coefficients */
-    34, 0, 529897504, -320698464, -183466112,
+    34, 0, 530028224, -320907904, -183686896,
     /* node 3801 y: shift, then 4 coefficients */
-    35, 0, -428701600, 476129696, -119778664,
+    35, 0, -428701760, 476338464, -119980032,
     /* node 3801 z: shift, then 4 coefficients */
-    34, 0, 40675952, -61461900, 575155072,
+    34, 0, 40643484, -61424116, 575012992,
     /* node 3802 x: shift, then 4 coefficients */
-    34, 0, 550072576, -341505216, -166935920,
+    34, 0, 550113344, -341632032, -167101616,
     /* node 3802 y: shift, then 4 coefficients */
-    35, 0, -431234016, 498561408, -103806752,
+    35, 0, -431322944, 498680384, -103791696,
     /* node 3802 z: shift, then 4 coefficients */
-    34, 0, 44371120, -57541312, 584065088,
+    34, 0, 44255064, -57461376, 584011136,
     /* node 3803 x: shift, then 4 coefficients */
-    33, 0, 283171712, -180638784, -82976536,
+    33, 0, 283259648, -180712960, -83039064,
     /* node 3803 y: shift, then 4 coefficients */
-    35, 0, -419461088, 484748000, -101004272,
+    35, 0, -419236096, 484550528, -100847112,
     /* node 3803 z: shift, then 4 coefficients */
-    34, 0, 49884168, -60652212, 568752512,
+    34, 0, 49804764, -60589224, 568509120,
     /* node 3804 x: shift, then 4 coefficients */
-    33, 0, 284345536, -181067152, -78958928,
+    33, 0, 284448064, -181160224, -79014064,
     /* node 3804 y: shift, then 4 coefficients */
-    35, 0, -428690208, 503629472, -97087896,
+    35, 0, -428288160, 503311808, -96949816,
     /* node 3804 z: shift, then 4 coefficients */
-    34, 0, 49499556, -59015496, 578920384,
+    34, 0, 49412144, -58930148, 578688640,
     /* node 3805 x: shift, then 4 coefficients */
-    34, 0, 532469696, -321532192, -173726352,
+    34, 0, 532586720, -321745024, -173919504,
     /* node 3805 y: shift, then 4 coefficients */
-    35, 0, -436794176, 494317312, -110478784,
+    35, 0, -436943200, 494405728, -110412128,
     /* node 3805 z: shift, then 4 coefficients */
-    34, 0, 39939512, -59055444, 587670528,
+    34, 0, 39738264, -58919212, 587667392,
     /* node 3806 x: shift, then 4 coefficients */
-    34, 0, 553032384, -343396576, -157931232,
+    34, 0, 553040768, -343509824, -158041584,
     /* node 3806 y: shift, then 4 coefficients */
-    35, 0, -444167840, 526679968, -92152784,
+    35, 0, -444421472, 527026880, -92186576,
     /* node 3806 z: shift, then 4 coefficients */
-    34, 0, 42958976, -54050880, 598640256,
+    34, 0, 42870384, -54013104, 598602688,
     /* node 3807 x: shift, then 4 coefficients */
-    34, 0, 533122848, -321623520, -161835184,
+    34, 0, 533190080, -321768416, -161994624,
     /* node 3807 y: shift, then 4 coefficients */
-    35, 0, -447709120, 524742432, -98260856,
+    35, 0, -447666880, 524917088, -98458880,
     /* node 3807 z: shift, then 4 coefficients */
-    34, 0, 37863276, -55382192, 603996864,
+    34, 0, 37764860, -55314348, 603878080,
     /* node 3808 x: shift, then 4 coefficients */
-    34, 0, 558642176, -345914720, -146483568,
+    34, 0, 558668160, -346079072, -146554448,
     /* node 3808 y: shift, then 4 coefficients */
-    34, 0, -231166848, 284248224, -38961304,
+    34, 0, -231215264, 284291808, -38901584,
     /* node 3808 z: shift, then 4 coefficients */
-    34, 0, 40065172, -49599300, 620853632,
+    34, 0, 39992936, -49553012, 620715200,
     /* node 3809 x: shift, then 4 coefficients */
-    33, 0, 286773856, -183290096, -70234040,
+    33, 0, 286790880, -183339312, -70275072,
     /* node 3809 y: shift, then 4 coefficients */
-    34, 0, -228090960, 281864512, -37780608,
+    34, 0, -228146416, 281968960, -37804808,
     /* node 3809 z: shift, then 4 coefficients */
-    34, 0, 45849124, -50737892, 611148224,
+    34, 0, 45775344, -50747216, 611037376,
     /* node 3810 x: shift, then 4 coefficients */
-    34, 0, 576434688, -366809216, -129709752,
+    34, 0, 576504320, -366974880, -129820248,
     /* node 3810 y: shift, then 4 coefficients */
-    34, 0, -235329344, 302431680, -31568202,
+    34, 0, -235383744, 302502496, -31505806,
     /* node 3810 z: shift, then 4 coefficients */
-    34, 0, 43656112, -46323436, 631782400,
+    34, 0, 43606960, -46331856, 631592768,
     /* node 3828 x: shift, then 4 coefficients */
-    33, 0, 295569408, -193353312, -91404616,
+    33, 0, 295619456, -193456432, -91467960,
     /* node 3828 y: shift, then 4 coefficients */
-    35, 0, -386865856, 434906080, -115591720,
+    35, 0, -386977152, 435509440, -115791536,
     /* node 3828 z: shift, then 4 coefficients */
-    34, 0, 59274264, -68943256, 537170368,
+    34, 0, 59276280, -68934024, 537070912,
     /* node 3829 x: shift, then 4 coefficients */
-    33, 0, 303536512, -202884704, -84261640,
+    33, 0, 303672352, -202988640, -84288472,
     /* node 3829 y: shift, then 4 coefficients */
-    35, 0, -396095136, 457417056, -105635880,
+    35, 0, -395972288, 457068128, -105757672,
     /* node 3829 z: shift, then 4 coefficients */
-    34, 0, 63233256, -69633616, 548071616,
+    34, 0, 63307604, -69664912, 547738816,
     /* node 3832 x: shift, then 4 coefficients */
-    33, 0, 295219968, -193375424, -87585184,
+    33, 0, 295224800, -193437808, -87609512,
     /* node 3832 y: shift, then 4 coefficients */
-    35, 0, -398338176, 454365984, -109845736,
+    35, 0, -398524192, 454793728, -110118200,
     /* node 3832 z: shift, then 4 coefficients */
-    34, 0, 57554640, -66530580, 548702720,
+    34, 0, 57582616, -66511352, 548547456,
     /* node 3833 x: shift, then 4 coefficients */
-    33, 0, 293440800, -192024720, -83391504,
+    33, 0, 293533312, -192106320, -83499584,
     /* node 3833 y: shift, then 4 coefficients */
-    35, 0, -406249504, 468404320, -101539808,
+    35, 0, -406073760, 468315328, -101772544,
     /* node 3833 z: shift, then 4 coefficients */
-    34, 0, 55880696, -64251756, 557250752,
+    34, 0, 55776304, -64144844, 557104640,
     /* node 3834 x: shift, then 4 coefficients */
-    33, 0, 303435840, -202663088, -79735736,
+    33, 0, 303502112, -202710944, -79705576,
     /* node 3834 y: shift, then 4 coefficients */
-    35, 0, -404600704, 471380128, -101193256,
+    35, 0, -404533664, 471310272, -101485536,
     /* node 3834 z: shift, then 4 coefficients */
-    34, 0, 62384064, -68309792, 555709568,
+    34, 0, 62468036, -68412800, 555401856,
     /* node 3835 x: shift, then 4 coefficients */
-    33, 0, 303402432, -202860448, -75839576,
+    33, 0, 303490560, -202902304, -75820440,
     /* node 3835 y: shift, then 4 coefficients */
-    35, 0, -415462624, 489332128, -95429560,
+    35, 0, -415398144, 489635520, -95753080,
     /* node 3835 z: shift, then 4 coefficients */
-    34, 0, 62062900, -66791712, 564942336,
+    34, 0, 62036308, -66841800, 564651328,
     /* node 3836 x: shift, then 4 coefficients */
-    33, 0, 293238368, -191619872, -79546952,
+    33, 0, 293316064, -191695088, -79681416,
     /* node 3836 y: shift, then 4 coefficients */
-    35, 0, -414970592, 483983232, -98089984,
+    35, 0, -414847712, 484121760, -98340816,
     /* node 3836 z: shift, then 4 coefficients */
-    34, 0, 54995572, -62876872, 565822976,
+    34, 0, 54941316, -62876920, 565668928,
     /* node 3837 x: shift, then 4 coefficients */
-    33, 0, 304786016, -204490544, -71770384,
+    33, 0, 304882880, -204562480, -71791160,
     /* node 3837 y: shift, then 4 coefficients */
-    35, 0, -424865760, 510490272, -88996096,
+    35, 0, -424799168, 510686048, -89020768,
     /* node 3837 z: shift, then 4 coefficients */
-    34, 0, 61481928, -64951044, 574491776,
+    34, 0, 61386492, -64924300, 574255232,
     /* node 3838 x: shift, then 4 coefficients */
-    33, 0, 313185376, -213154016, -74073272,
+    33, 0, 313277280, -213337168, -74121776,
     /* node 3838 y: shift, then 4 coefficients */
-    35, 0, -414920384, 493036864, -96700792,
+    35, 0, -415069312, 493430816, -96535208,
     /* node 3838 z: shift, then 4 coefficients */
-    34, 0, 66896208, -69478384, 565948160,
+    34, 0, 66585768, -69272856, 566005440,
     /* node 3839 x: shift, then 4 coefficients */
-    33, 0, 314386368, -214476368, -69356808,
+    33, 0, 314446560, -214647664, -69406768,
     /* node 3839 y: shift, then 4 coefficients */
-    35, 0, -425088224, 511958944, -92293024,
+    35, 0, -425122976, 512001216, -91879720,
     /* node 3839 z: shift, then 4 coefficients */
-    34, 0, 67160704, -68652144, 575378368,
+    34, 0, 66869172, -68453272, 575342208,
     /* node 3840 x: shift, then 4 coefficients */
-    33, 0, 294706432, -193517536, -76097408,
+    33, 0, 294774144, -193592320, -76212272,
     /* node 3840 y: shift, then 4 coefficients */
-    35, 0, -429024896, 511133376, -90699296,
+    35, 0, -428964576, 511321024, -90784584,
     /* node 3840 z: shift, then 4 coefficients */
-    34, 0, 54332264, -60469228, 578570496,
+    34, 0, 54253116, -60488672, 578415936,
     /* node 3841 x: shift, then 4 coefficients */
-    33, 0, 295041472, -193658992, -72100888,
+    33, 0, 295134656, -193772864, -72189736,
     /* node 3841 y: shift, then 4 coefficients */
-    35, 0, -437445760, 531437952, -81893976,
+    35, 0, -437444448, 531503616, -81834080,
     /* node 3841 z: shift, then 4 coefficients */
-    34, 0, 53131176, -57873348, 588814272,
+    34, 0, 52995984, -57793920, 588669696,
     /* node 3842 x: shift, then 4 coefficients */
-    33, 0, 305667168, -205109216, -67572256,
+    33, 0, 305707968, -205157296, -67585704,
     /* node 3842 y: shift, then 4 coefficients */
-    35, 0, -435905664, 531867776, -86039224,
+    35, 0, -435997312, 532117440, -86298872,
     /* node 3842 z: shift, then 4 coefficients */
-    34, 0, 60744848, -63522332, 585055936,
+    34, 0, 60724060, -63627592, 584871168,
     /* node 3843 x: shift, then 4 coefficients */
-    33, 0, 305614176, -205285936, -63477440,
+    33, 0, 305622304, -205333936, -63502000,
     /* node 3843 y: shift, then 4 coefficients */
-    34, 0, -224363184, 279517376, -37801444,
+    34, 0, -224298464, 279410944, -37804484,
     /* node 3843 z: shift, then 4 coefficients */
-    34, 0, 58147964, -58831348, 599775872,
+    34, 0, 58061164, -58826376, 599592896,
     /* node 3844 x: shift, then 4 coefficients */
-    33, 0, 295797088, -193617872, -67171040,
+    33, 0, 295866880, -193728576, -67209512,
     /* node 3844 y: shift, then 4 coefficients */
-    34, 0, -225384496, 280721920, -38369744,
+    34, 0, -225387648, 280721952, -38317460,
     /* node 3844 z: shift, then 4 coefficients */
-    34, 0, 51667284, -55274780, 603698496,
+    34, 0, 51547764, -55216532, 603557824,
     /* node 3845 x: shift, then 4 coefficients */
-    33, 0, 304057504, -203410896, -57824216,
+    33, 0, 304073504, -203476192, -57860516,
     /* node 3845 y: shift, then 4 coefficients */
-    34, 0, -229923008, 294436416, -35528264,
+    34, 0, -229886784, 294408672, -35465656,
     /* node 3845 z: shift, then 4 coefficients */
-    34, 0, 56268900, -56370120, 613773888,
+    34, 0, 56170012, -56350084, 613635392,
     /* node 3846 x: shift, then 4 coefficients */
-    33, 0, 316076512, -216866560, -59414792,
+    33, 0, 316142592, -217002256, -59476088,
     /* node 3846 y: shift, then 4 coefficients */
-    34, 0, -223639552, 279092736, -40413784,
+    34, 0, -223693392, 279200192, -40444884,
     /* node 3846 z: shift, then 4 coefficients */
-    34, 0, 66371416, -66024124, 597028864,
+    34, 0, 66174844, -65901268, 596974528,
     /* node 3847 x: shift, then 4 coefficients */
-    33, 0, 314478720, -215085840, -54387348,
+    33, 0, 314547872, -215246000, -54469940,
     /* node 3847 y: shift, then 4 coefficients */
-    34, 0, -228725392, 291805184, -37554804,
+    34, 0, -228842928, 291962848, -37392320,
     /* node 3847 z: shift, then 4 coefficients */
-    34, 0, 64017688, -62654564, 608705664,
+    34, 0, 63848848, -62479284, 608592192,
     /* node 3848 x: shift, then 4 coefficients */
-    33, 0, 295179328, -192418576, -60628368,
+    33, 0, 295237632, -192526240, -60682904,
     /* node 3848 y: shift, then 4 coefficients */
-    34, 0, -232838048, 299201824, -32802620,
+    34, 0, -232877920, 299279808, -32720194,
     /* node 3848 z: shift, then 4 coefficients */
-    34, 0, 49631408, -49786532, 623106368,
+    34, 0, 49520668, -49714724, 623004224,
     /* node 3849 x: shift, then 4 coefficients */
-    33, 0, 302612128, -201475584, -51541796,
+    33, 0, 302627008, -201540992, -51555432,
     /* node 3849 y: shift, then 4 coefficients */
-    34, 0, -237866560, 315993440, -29800312,
+    34, 0, -237913104, 316067968, -29723034,
     /* node 3849 z: shift, then 4 coefficients */
-    34, 0, 53677712, -51201596, 633147968,
+    34, 0, 53631112, -51195020, 633003904,
     /* node 3850 x: shift, then 4 coefficients */
-    33, 0, 294990304, -191526336, -54874780,
+    33, 0, 295024608, -191632624, -54933156,
     /* node 3850 y: shift, then 4 coefficients */
-    34, 0, -240781424, 322907712, -26301718,
+    34, 0, -240907296, 323109120, -26256630,
     /* node 3850 z: shift, then 4 coefficients */
-    34, 0, 46059972, -44114580, 646173888,
+    34, 0, 45929356, -44008108, 646127424,
     /* node 3851 x: shift, then 4 coefficients */
-    33, 0, 301476640, -198631632, -45121072,
+    33, 0, 301482560, -198704000, -45217136,
     /* node 3851 y: shift, then 4 coefficients */
-    34, 0, -246052752, 341074848, -24017332,
+    34, 0, -246090384, 341104768, -23998796,
     /* node 3851 z: shift, then 4 coefficients */
-    34, 0, 50032672, -44064476, 654648960,
+    34, 0, 49932668, -43976348, 654531136,
     /* node 3852 x: shift, then 4 coefficients */
-    33, 0, 309673536, -208370736, -42311568,
+    33, 0, 309687456, -208434896, -42310420,
     /* node 3852 y: shift, then 4 coefficients */
-    34, 0, -244634480, 334918752, -27586056,
+    34, 0, -244792400, 335182752, -27450208,
     /* node 3852 z: shift, then 4 coefficients */
-    34, 0, 56349060, -51896244, 645511680,
+    34, 0, 56237808, -51814844, 645435008,
     /* node 3853 x: shift, then 4 coefficients */
-    33, 0, 307340640, -204873696, -35862136,
+    33, 0, 307403392, -205028544, -35945624,
     /* node 3853 y: shift, then 4 coefficients */
-    34, 0, -249467008, 355857824, -23465116,
+    34, 0, -249590480, 356048544, -23433082,
     /* node 3853 z: shift, then 4 coefficients */
-    34, 0, 52903860, -46683936, 662571840,
+    34, 0, 52728888, -46496000, 662474240,
     /* node 3884 x: shift, then 4 coefficients */
-    33, 0, 331604256, -233664944, -59744100,
+    33, 0, 331649216, -233721616, -59740892,
     /* node 3884 y: shift, then 4 coefficients */
-    34, 0, -221134160, 272870944, -45824824,
+    34, 0, -221219696, 272850848, -45894488,
     /* node 3884 z: shift, then 4 coefficients */
-    34, 0, 76055744, -74180024, 592706816,
+    34, 0, 75918496, -74264528, 592495872,
     /* node 3887 x: shift, then 4 coefficients */
-    33, 0, 332454176, -234521584, -53698140,
+    33, 0, 332481984, -234596064, -53743404,
     /* node 3887 y: shift, then 4 coefficients */
-    34, 0, -226481104, 283009344, -44521672,
+    34, 0, -226529536, 283050336, -44514512,
     /* node 3887 z: shift, then 4 coefficients */
-    34, 0, 76165712, -74042784, 602903872,
+    34, 0, 76096256, -74108768, 602717120,
     /* node 3891 x: shift, then 4 coefficients */
-    33, 0, 327233344, -229043792, -50265356,
+    33, 0, 327353376, -229233712, -50337992,
     /* node 3891 y: shift, then 4 coefficients */
-    34, 0, -230128800, 292150464, -40716820,
+    34, 0, -230136384, 292194944, -40611560,
     /* node 3891 z: shift, then 4 coefficients */
-    34, 0, 72490408, -70303536, 609323136,
+    34, 0, 72339872, -70240224, 609142912,
     /* node 3892 x: shift, then 4 coefficients */
-    33, 0, 322967936, -224514752, -45616016,
+    33, 0, 322953216, -224517024, -45622784,
     /* node 3892 y: shift, then 4 coefficients */
-    34, 0, -234870736, 304618880, -37796812,
+    34, 0, -234872496, 304555680, -37821068,
     /* node 3892 z: shift, then 4 coefficients */
-    34, 0, 68608272, -66181524, 619793664,
+    34, 0, 68510856, -66206896, 619627840,
     /* node 3893 x: shift, then 4 coefficients */
-    33, 0, 335549728, -238415248, -43606308,
+    33, 0, 335616960, -238516512, -43670968,
     /* node 3893 y: shift, then 4 coefficients */
-    34, 0, -233825920, 300327680, -41170428,
+    34, 0, -233885984, 300421472, -41054148,
     /* node 3893 z: shift, then 4 coefficients */
-    34, 0, 76827160, -73996416, 617953664,
+    34, 0, 76675792, -73906408, 617812416,
     /* node 3894 x: shift, then 4 coefficients */
-    33, 0, 330808992, -233047360, -37826480,
+    33, 0, 330893472, -233189664, -37903068,
     /* node 3894 y: shift, then 4 coefficients */
-    34, 0, -238836480, 312757312, -38667136,
+    34, 0, -238884048, 312806656, -38559240,
     /* node 3894 z: shift, then 4 coefficients */
-    34, 0, 73767848, -71331032, 627746624,
+    34, 0, 73562688, -71111240, 627630976,
     /* node 3895 x: shift, then 4 coefficients */
-    33, 0, 319863488, -221275312, -39856752,
+    33, 0, 319873984, -221362448, -39897764,
     /* node 3895 y: shift, then 4 coefficients */
-    34, 0, -241736368, 322947712, -33036480,
+    34, 0, -241705328, 322952192, -32956544,
     /* node 3895 z: shift, then 4 coefficients */
-    34, 0, 65083176, -62000412, 632885120,
+    34, 0, 64923392, -61878616, 632730688,
     /* node 3896 x: shift, then 4 coefficients */
-    33, 0, 325357696, -227202448, -31166930,
+    33, 0, 325415424, -227277216, -31184954,
     /* node 3896 y: shift, then 4 coefficients */
-    34, 0, -243631824, 330727136, -34235876,
+    34, 0, -243735536, 330822560, -34133856,
     /* node 3896 z: shift, then 4 coefficients */
-    34, 0, 69012848, -66268860, 640785408,
+    34, 0, 68870448, -66247100, 640662912,
     /* node 3897 x: shift, then 4 coefficients */
-    33, 0, 345323488, -248806544, -37640172,
+    33, 0, 345405664, -248991536, -37753240,
     /* node 3897 y: shift, then 4 coefficients */
-    34, 0, -237006720, 304892576, -42544888,
+    34, 0, -237082128, 305041792, -42346804,
     /* node 3897 z: shift, then 4 coefficients */
-    34, 0, 82529008, -79093320, 625910208,
+    34, 0, 82323456, -78887592, 625829568,
     /* node 3898 x: shift, then 4 coefficients */
-    33, 0, 339066720, -242389296, -31692812,
+    33, 0, 339162240, -242533136, -31748876,
     /* node 3898 y: shift, then 4 coefficients */
-    34, 0, -240577504, 315926784, -39987352,
+    34, 0, -240660720, 316072384, -40023612,
     /* node 3898 z: shift, then 4 coefficients */
-    34, 0, 77967808, -74936488, 633964352,
+    34, 0, 77790864, -74847936, 633798016,
     /* node 3899 x: shift, then 4 coefficients */
-    33, 0, 315358240, -214991248, -32846890,
+    33, 0, 315328320, -214999664, -32869500,
     /* node 3899 y: shift, then 4 coefficients */
-    34, 0, -246519840, 342964064, -29959094,
+    34, 0, -246423440, 342763392, -29954522,
     /* node 3899 z: shift, then 4 coefficients */
-    34, 0, 61590924, -58006260, 648866496,
+    34, 0, 61523360, -58010864, 648737408,
     /* node 3900 x: shift, then 4 coefficients */
-    33, 0, 320583968, -221257600, -24384990,
+    33, 0, 320693248, -221484176, -24450130,
     /* node 3900 y: shift, then 4 coefficients */
-    34, 0, -248775824, 351228608, -30717664,
+    34, 0, -248824624, 351219296, -30685546,
     /* node 3900 z: shift, then 4 coefficients */
-    34, 0, 64353808, -61408252, 654899968,
+    34, 0, 64057264, -61108156, 654774272,
     /* node 3901 x: shift, then 4 coefficients */
-    33, 0, 312070720, -209812144, -26359038,
+    33, 0, 311898816, -209596480, -26358414,
     /* node 3901 y: shift, then 4 coefficients */
-    34, 0, -251431696, 365213664, -26185608,
+    34, 0, -251301312, 365001536, -26246626,
     /* node 3901 z: shift, then 4 coefficients */
-    34, 0, 56394228, -51479820, 665637888,
+    34, 0, 56400868, -51627368, 665430528,
     /* node 3902 x: shift, then 4 coefficients */
-    33, 0, 316295296, -214686976, -18171504,
+    33, 0, 316488096, -215062560, -18245496,
     /* node 3902 y: shift, then 4 coefficients */
-    34, 0, -251471504, 368911872, -29031646,
+    34, 0, -251916128, 369548896, -28862766,
     /* node 3902 z: shift, then 4 coefficients */
-    34, 0, 60157544, -58029588, 667427840,
+    34, 0, 60039104, -58019640, 667319360,
     /* node 3903 x: shift, then 4 coefficients */
-    33, 0, 324555200, -225184544, -16366153,
+    33, 0, 324607744, -225298640, -16422839,
     /* node 3903 y: shift, then 4 coefficients */
-    34, 0, -249726192, 355983872, -32683940,
+    34, 0, -249953648, 356338176, -32569894,
     /* node 3903 z: shift, then 4 coefficients */
-    34, 0, 66443812, -65361328, 658898752,
+    34, 0, 66235696, -65127128, 658780544,
     /* node 3904 x: shift, then 4 coefficients */
-    33, 0, 320016320, -219474368, -10301095,
+    33, 0, 320096128, -219697856, -10373376,
     /* node 3904 y: shift, then 4 coefficients */
-    34, 0, -253262688, 376035232, -30445180,
+    34, 0, -253277680, 376040544, -30469102,
     /* node 3904 z: shift, then 4 coefficients */
-    34, 0, 61509676, -61380000, 670505728,
+    34, 0, 61393024, -61240428, 670374016,
     /* node 3951 x: shift, then 4 coefficients */
-    33, 0, 343580896, -247311584, -23743530,
+    33, 0, 343674464, -247478640, -23864844,
     /* node 3951 y: shift, then 4 coefficients */
-    34, 0, -243265104, 322236192, -39777232,
+    34, 0, -243318048, 322389920, -39581996,
     /* node 3951 z: shift, then 4 coefficients */
-    34, 0, 80067656, -77609136, 641655872,
+    34, 0, 79885192, -77387728, 641504512,
     /* node 3953 x: shift, then 4 coefficients */
-    33, 0, 345180192, -249682128, -15836501,
+    33, 0, 345253184, -249834032, -15929936,
     /* node 3953 y: shift, then 4 coefficients */
-    34, 0, -245144656, 331656000, -37714220,
+    34, 0, -245247328, 331783232, -37572040,
     /* node 3953 z: shift, then 4 coefficients */
-    34, 0, 79819792, -78848632, 647707328,
+    34, 0, 79640648, -78646888, 647557120,
     /* node 3954 x: shift, then 4 coefficients */
-    33, 0, 333873440, -236881152, -15424319,
+    33, 0, 333949888, -237051760, -15489306,
     /* node 3954 y: shift, then 4 coefficients */
-    34, 0, -247761424, 344308160, -35434720,
+    34, 0, -247836096, 344398592, -35413524,
     /* node 3954 z: shift, then 4 coefficients */
-    34, 0, 73216888, -73186376, 652452160,
+    34, 0, 73076976, -73103240, 652316736,
     /* node 3955 x: shift, then 4 coefficients */
-    33, 0, 337010016, -240387184, -8185640,
+    33, 0, 337069152, -240577568, -8252564,
     /* node 3955 y: shift, then 4 coefficients */
-    34, 0, -247700096, 346938656, -36350372,
+    34, 0, -247757552, 347093504, -36320032,
     /* node 3955 z: shift, then 4 coefficients */
-    34, 0, 74690424, -75871544, 656298432,
+    34, 0, 74512832, -75649512, 656178624,
     /* node 3957 x: shift, then 4 coefficients */
-    33, 0, 347422624, -252390656, -8296388,
+    33, 0, 347476768, -252524800, -8365530,
     /* node 3957 y: shift, then 4 coefficients */
-    34, 0, -245243088, 334228768, -37770696,
+    34, 0, -245302448, 334315136, -37740696,
     /* node 3957 z: shift, then 4 coefficients */
-    34, 0, 80723720, -81250968, 651805376,
+    34, 0, 80545816, -81060920, 651668928,
     /* node 3958 x: shift, then 4 coefficients */
-    33, 0, 328268032, -230085856, -9260977,
+    33, 0, 328301280, -230210624, -9307422,
     /* node 3958 y: shift, then 4 coefficients */
-    34, 0, -250189232, 358470176, -34245636,
+    34, 0, -250277504, 358646368, -34205700,
     /* node 3958 z: shift, then 4 coefficients */
-    34, 0, 68155064, -69428872, 661540992,
+    34, 0, 68004480, -69285400, 661382784,
     /* node 3959 x: shift, then 4 coefficients */
-    33, 0, 330644032, -233271920, -1932040,
+    33, 0, 330755808, -233523376, -2004855,
     /* node 3959 y: shift, then 4 coefficients */
-    34, 0, -249678576, 362872320, -34569332,
+    34, 0, -249849392, 363239424, -34501232,
     /* node 3959 z: shift, then 4 coefficients */
-    34, 0, 69344712, -71266064, 664825216,
+    34, 0, 69196480, -71027120, 664735296,
     /* node 3960 x: shift, then 4 coefficients */
-    33, 0, 323489120, -223343600, -2931502,
+    33, 0, 323505216, -223417792, -2975948,
     /* node 3960 y: shift, then 4 coefficients */
-    34, 0, -251969248, 375097312, -32744738,
+    34, 0, -252011200, 375258976, -32764624,
     /* node 3960 z: shift, then 4 coefficients */
-    34, 0, 63630516, -66921032, 671590144,
+    34, 0, 63431508, -66664704, 671450688,
     /* node 3961 x: shift, then 4 coefficients */
-    33, 0, 326664960, -227244976, 3607473,
+    33, 0, 326693248, -227286624, 3564203,
     /* node 3961 y: shift, then 4 coefficients */
-    34, 0, -250592256, 373438464, -34878168,
+    34, 0, -250651808, 373632192, -34861740,
     /* node 3961 z: shift, then 4 coefficients */
-    34, 0, 65485660, -70074544, 671165696,
+    34, 0, 65301556, -69970992, 671035072,
     /* node 3962 x: shift, then 4 coefficients */
-    33, 0, 333761984, -236921648, 4343252,
+    33, 0, 333812256, -236955824, 4282950,
     /* node 3962 y: shift, then 4 coefficients */
-    34, 0, -248723872, 359696608, -35909412,
+    34, 0, -248797744, 359800960, -35840900,
     /* node 3962 z: shift, then 4 coefficients */
-    34, 0, 70679280, -76276472, 665741440,
+    34, 0, 70573488, -76317024, 665612416,
     /* node 3963 x: shift, then 4 coefficients */
-    33, 0, 329129664, -230893616, 9881826,
+    33, 0, 329145632, -231017392, 9824591,
     /* node 3963 y: shift, then 4 coefficients */
-    34, 0, -249759824, 373826368, -35816268,
+    34, 0, -249783920, 373912320, -35794816,
     /* node 3963 z: shift, then 4 coefficients */
-    34, 0, 66489696, -73488096, 671472640,
+    34, 0, 66316632, -73446672, 671323904,
     /* node 4018 x: shift, then 4 coefficients */
-    33, 0, 349470112, -254594208, -1483000,
+    33, 0, 349516512, -254707904, -1562372,
     /* node 4018 y: shift, then 4 coefficients */
-    34, 0, -243954928, 335080480, -38095552,
+    34, 0, -244017232, 335057312, -38047584,
     /* node 4018 z: shift, then 4 coefficients */
-    34, 0, 81436576, -83350432, 654462784,
+    34, 0, 81267320, -83186248, 654318592,
     /* node 4020 x: shift, then 4 coefficients */
-    33, 0, 351138528, -256827120, 5063658,
+    33, 0, 351196544, -256939888, 4977913,
     /* node 4020 y: shift, then 4 coefficients */
-    34, 0, -241867440, 334604416, -37061168,
+    34, 0, -241989088, 334801024, -37022348,
     /* node 4020 z: shift, then 4 coefficients */
-    34, 0, 82428744, -85769192, 655599936,
+    34, 0, 82227848, -85549272, 655441600,
     /* node 4021 x: shift, then 4 coefficients */
-    33, 0, 342233984, -247400208, 4493022,
+    33, 0, 342287776, -247485280, 4431108,
     /* node 4021 y: shift, then 4 coefficients */
-    34, 0, -245734016, 347793920, -36338828,
+    34, 0, -245794464, 347856224, -36304332,
     /* node 4021 z: shift, then 4 coefficients */
-    34, 0, 76333552, -80666608, 659870720,
+    34, 0, 76176000, -80553176, 659734912,
     /* node 4022 x: shift, then 4 coefficients */
-    33, 0, 344388288, -249631648, 10891814,
+    33, 0, 344445856, -249752896, 10816927,
     /* node 4022 y: shift, then 4 coefficients */
-    34, 0, -243097856, 342659328, -36822096,
+    34, 0, -243199824, 342826144, -36800340,
     /* node 4022 z: shift, then 4 coefficients */
-    34, 0, 77058384, -83038032, 660707392,
+    34, 0, 76879240, -82922760, 660607552,
     /* node 4024 x: shift, then 4 coefficients */
-    33, 0, 353346400, -259566304, 11455791,
+    33, 0, 353397024, -259666800, 11373231,
     /* node 4024 y: shift, then 4 coefficients */
-    34, 0, -239275808, 332101088, -36516632,
+    34, 0, -239371520, 332249504, -36451028,
     /* node 4024 z: shift, then 4 coefficients */
-    34, 0, 83578800, -88104968, 655793344,
+    34, 0, 83387040, -87881176, 655635648,
     /* node 4025 x: shift, then 4 coefficients */
-    33, 0, 336299968, -240080000, 10454295,
+    33, 0, 336326848, -240146608, 10401381,
     /* node 4025 y: shift, then 4 coefficients */
-    34, 0, -246267232, 356568320, -36747300,
+    34, 0, -246335296, 356639264, -36714208,
     /* node 4025 z: shift, then 4 coefficients */
-    34, 0, 72052248, -79590736, 665075712,
+    34, 0, 71892616, -79441224, 664926720,
     /* node 4026 x: shift, then 4 coefficients */
-    33, 0, 331267520, -233610992, 16176609,
+    33, 0, 331316256, -233713424, 16117220,
     /* node 4026 y: shift, then 4 coefficients */
-    34, 0, -247664144, 368811392, -36991084,
+    34, 0, -247713056, 368720224, -36933740,
     /* node 4026 z: shift, then 4 coefficients */
-    34, 0, 67659312, -78383448, 670789312,
+    34, 0, 67486488, -78339856, 670655680,
     /* node 4027 x: shift, then 4 coefficients */
-    33, 0, 337929536, -242611184, 16601737,
+    33, 0, 337975808, -242741584, 16553606,
     /* node 4027 y: shift, then 4 coefficients */
-    34, 0, -244078976, 356741920, -37052648,
+    34, 0, -244173776, 356858272, -37023760,
     /* node 4027 z: shift, then 4 coefficients */
-    34, 0, 72817688, -81901072, 665196224,
+    34, 0, 72658120, -81700920, 665039680,
     /* node 4028 x: shift, then 4 coefficients */
-    33, 0, 333187904, -236346368, 22171730,
+    33, 0, 333248832, -236642080, 22140370,
     /* node 4028 y: shift, then 4 coefficients */
-    34, 0, -244605360, 363810848, -37703560,
+    34, 0, -244809088, 364594560, -37744460,
     /* node 4028 z: shift, then 4 coefficients */
-    34, 0, 68826832, -81482488, 669204608,
+    34, 0, 68700616, -81135488, 669029824,
     /* node 4029 x: shift, then 4 coefficients */
-    33, 0, 339524480, -245417408, 22991762,
+    33, 0, 339578432, -245626848, 22957576,
     /* node 4029 y: shift, then 4 coefficients */
-    34, 0, -241775536, 354185984, -36400248,
+    34, 0, -241911328, 354538848, -36376576,
     /* node 4029 z: shift, then 4 coefficients */
-    34, 0, 72742056, -83415080, 664327104,
+    34, 0, 72603640, -83283448, 664181184,
     /* node 4030 x: shift, then 4 coefficients */
-    33, 0, 333981408, -238336336, 28212966,
+    33, 0, 334021824, -238518640, 28173778,
     /* node 4030 y: shift, then 4 coefficients */
-    34, 0, -241915008, 361507136, -38035128,
+    34, 0, -242071472, 361967616, -38025912,
     /* node 4030 z: shift, then 4 coefficients */
-    34, 0, 68999552, -83625160, 668521088,
+    34, 0, 68895520, -83437168, 668365248,
     /* node 6196 x: shift, then 4 coefficients */
-    33, 0, 318540384, -231794160, 123132560,
+    33, 0, 318565792, -231899728, 123064936,
     /* node 6196 y: shift, then 4 coefficients */
-    35, 0, -323118848, 462788960, -16864590,
+    35, 0, -323418016, 462991744, -16887990,
     /* node 6196 z: shift, then 4 coefficients */
-    34, 0, 71115064, -92059072, 605392832,
+    34, 0, 70994152, -91974168, 605272320,
     /* node 6199 x: shift, then 4 coefficients */
-    33, 0, 330910560, -244930480, 111930536,
+    33, 0, 330943904, -245064192, 111858104,
     /* node 6199 y: shift, then 4 coefficients */
-    35, 0, -345926656, 504073920, -30726162,
+    35, 0, -346269088, 504472992, -30762098,
     /* node 6199 z: shift, then 4 coefficients */
-    34, 0, 75173400, -96786224, 616998976,
+    34, 0, 75049192, -96688056, 616875200,
     /* node 6200 x: shift, then 4 coefficients */
-    33, 0, 333732864, -247375632, 103441728,
+    33, 0, 333763712, -247479568, 103364112,
     /* node 6200 y: shift, then 4 coefficients */
-    35, 0, -363853024, 532719136, -40212008,
+    35, 0, -364185248, 533016704, -40289668,
     /* node 6200 z: shift, then 4 coefficients */
-    34, 0, 74997008, -97941072, 625822720,
+    34, 0, 74861384, -97864144, 625694656,
     /* node 6202 x: shift, then 4 coefficients */
-    33, 0, 336637632, -250204544, 95709288,
+    33, 0, 336676000, -250341680, 95634344,
     /* node 6202 y: shift, then 4 coefficients */
-    35, 0, -382375360, 563524288, -50699476,
+    35, 0, -382691776, 563959552, -50615476,
     /* node 6202 z: shift, then 4 coefficients */
-    34, 0, 75215352, -99402008, 634120192,
+    34, 0, 75071808, -99272608, 633984896,
     /* node 6203 x: shift, then 4 coefficients */
-    33, 0, 326348448, -239489456, 106646184,
+    33, 0, 326382656, -239590384, 106567880,
     /* node 6203 y: shift, then 4 coefficients */
-    35, 0, -368594624, 538263808, -44497924,
+    35, 0, -368909088, 538571712, -44510436,
     /* node 6203 z: shift, then 4 coefficients */
-    34, 0, 70793672, -96712912, 628691904,
+    34, 0, 70666120, -96613336, 628558912,
     /* node 6204 x: shift, then 4 coefficients */
-    33, 0, 328901248, -241496272, 98328792,
+    33, 0, 328936256, -241630160, 98260336,
     /* node 6204 y: shift, then 4 coefficients */
-    35, 0, -385418208, 567681280, -52758884,
+    35, 0, -385778432, 568175040, -52804300,
     /* node 6204 z: shift, then 4 coefficients */
-    34, 0, 70866368, -97114480, 637004736,
+    34, 0, 70753088, -97006688, 636918720,
     /* node 6206 x: shift, then 4 coefficients */
-    33, 0, 346649760, -259629968, 83936792,
+    33, 0, 346651104, -259667808, 83823216,
     /* node 6206 y: shift, then 4 coefficients */
-    35, 0, -391842976, 575589056, -51064924,
+    35, 0, -392079200, 575554752, -51053448,
     /* node 6206 z: shift, then 4 coefficients */
-    34, 0, 79638856, -99733344, 635760256,
+    34, 0, 79470248, -99595264, 635622912,
     /* node 6207 x: shift, then 4 coefficients */
-    33, 0, 339113696, -251980768, 87736512,
+    33, 0, 339141824, -252082816, 87666536,
     /* node 6207 y: shift, then 4 coefficients */
-    35, 0, -396785920, 584699328, -54248704,
+    35, 0, -397057568, 584833280, -54330932,
     /* node 6207 z: shift, then 4 coefficients */
-    34, 0, 75315528, -99030672, 639763712,
+    34, 0, 75162360, -98943448, 639632512,
     /* node 6208 x: shift, then 4 coefficients */
-    33, 0, 341391040, -253286800, 79972896,
+    33, 0, 341428992, -253437120, 79878608,
     /* node 6208 y: shift, then 4 coefficients */
-    35, 0, -408050144, 601512640, -58314584,
+    35, 0, -408372384, 601846336, -58357492,
     /* node 6208 z: shift, then 4 coefficients */
-    34, 0, 75897520, -98647488, 643980288,
+    34, 0, 75742360, -98550248, 643852992,
     /* node 6209 x: shift, then 4 coefficients */
-    33, 0, 348957088, -261121568, 76191976,
+    33, 0, 349001472, -261261152, 76117624,
     /* node 6209 y: shift, then 4 coefficients */
-    35, 0, -402834016, 588856128, -52836752,
+    35, 0, -403136480, 589185792, -52971584,
     /* node 6209 z: shift, then 4 coefficients */
-    34, 0, 80491592, -98717280, 639734464,
+    34, 0, 80361472, -98646072, 639585280,
     /* node 6210 x: shift, then 4 coefficients */
-    33, 0, 343293440, -254584768, 72576504,
+    33, 0, 343312288, -254710576, 72477712,
     /* node 6210 y: shift, then 4 coefficients */
-    34, 0, -209682032, 309971424, -31109358,
+    34, 0, -209780336, 309984608, -31109620,
     /* node 6210 z: shift, then 4 coefficients */
-    34, 0, 76346800, -98242736, 647636928,
+    34, 0, 76167584, -98088760, 647480064,
     /* node 6211 x: shift, then 4 coefficients */
-    33, 0, 334059808, -245883392, 83586824,
+    33, 0, 334104960, -246051920, 83530128,
     /* node 6211 y: shift, then 4 coefficients */
-    34, 0, -206809200, 307064640, -32017028,
+    34, 0, -207006256, 307346624, -32088116,
     /* node 6211 z: shift, then 4 coefficients */
-    34, 0, 71361384, -98299424, 649003392,
+    34, 0, 71244432, -98248688, 648913280,
     /* node 6212 x: shift, then 4 coefficients */
-    33, 0, 336533632, -247072688, 75825032,
+    33, 0, 336578176, -247227184, 75755704,
     /* node 6212 y: shift, then 4 coefficients */
-    34, 0, -212098192, 314689504, -33517814,
+    34, 0, -212261984, 314890880, -33528140,
     /* node 6212 z: shift, then 4 coefficients */
-    34, 0, 72076208, -97251264, 652384768,
+    34, 0, 71931000, -97169664, 652234304,
     /* node 6213 x: shift, then 4 coefficients */
-    33, 0, 351871328, -263522512, 67294768,
+    33, 0, 351907136, -263630368, 67227712,
     /* node 6213 y: shift, then 4 coefficients */
-    35, 0, -413066080, 602663936, -57197652,
+    35, 0, -413303904, 602806656, -57040804,
     /* node 6213 z: shift, then 4 coefficients */
-    34, 0, 81686400, -97723440, 642166784,
+    34, 0, 81542096, -97627440, 642010688,
     /* node 6214 x: shift, then 4 coefficients */
-    33, 0, 345451200, -256039360, 64491328,
+    33, 0, 345478336, -256127200, 64405440,
     /* node 6214 y: shift, then 4 coefficients */
-    34, 0, -214019280, 315291296, -31934804,
+    34, 0, -214126576, 315286304, -31984246,
     /* node 6214 z: shift, then 4 coefficients */
-    34, 0, 77381432, -96451008, 649637376,
+    34, 0, 77223536, -96382736, 649449280,
     /* node 6215 x: shift, then 4 coefficients */
-    33, 0, 354762816, -265840960, 57898972,
+    33, 0, 354827936, -266005280, 57800736,
     /* node 6215 y: shift, then 4 coefficients */
-    34, 0, -211841408, 306979296, -29034590,
+    34, 0, -211968912, 307133280, -29261078,
     /* node 6215 z: shift, then 4 coefficients */
-    34, 0, 83099192, -96369192, 644890176,
+    34, 0, 82968640, -96339296, 644583808,
     /* node 6216 x: shift, then 4 coefficients */
-    33, 0, 350149952, -260180416, 53583436,
+    33, 0, 350183520, -260281744, 53526448,
     /* node 6216 y: shift, then 4 coefficients */
-    34, 0, -218279776, 317551424, -31725820,
+    34, 0, -218428640, 317767488, -31762144,
     /* node 6216 z: shift, then 4 coefficients */
-    34, 0, 80099768, -94977256, 649950016,
+    34, 0, 79941824, -94901696, 649838336,
     /* node 6217 x: shift, then 4 coefficients */
-    33, 0, 340253664, -249987440, 60474580,
+    33, 0, 340266368, -250062384, 60383492,
     /* node 6217 y: shift, then 4 coefficients */
-    34, 0, -221167504, 329511296, -35723692,
+    34, 0, -221328784, 329642048, -35702132,
     /* node 6217 z: shift, then 4 coefficients */
-    34, 0, 73080520, -95218560, 656181376,
+    34, 0, 72898400, -95034056, 656020544,
     /* node 6218 x: shift, then 4 coefficients */
-    33, 0, 343080480, -252034672, 50905608,
+    33, 0, 343119488, -252128848, 50827480,
     /* node 6218 y: shift, then 4 coefficients */
-    34, 0, -225025296, 332113984, -34895196,
+    34, 0, -225159408, 332190400, -34850168,
     /* node 6218 z: shift, then 4 coefficients */
-    34, 0, 75061064, -92147560, 656381504,
+    34, 0, 74889816, -92055720, 656218496,
     /* node 6219 x: shift, then 4 coefficients */
-    33, 0, 355625984, -265125136, 42282156,
+    33, 0, 355675040, -265262096, 42222296,
     /* node 6219 y: shift, then 4 coefficients */
-    34, 0, -222110480, 318854016, -32583580,
+    34, 0, -222232720, 319036192, -32501670,
     /* node 6219 z: shift, then 4 coefficients */
-    34, 0, 83505536, -94093824, 650033792,
+    34, 0, 83334040, -93936144, 649859840,
     /* node 6244 x: shift, then 4 coefficients */
-    33, 0, 288203776, -200098416, 142593344,
+    33, 0, 288291136, -200228640, 142594208,
     /* node 6244 y: shift, then 4 coefficients */
-    35, 0, -275716864, 370881856, 21049010,
+    35, 0, -276058976, 370934624, 20940832,
     /* node 6244 z: shift, then 4 coefficients */
-    34, 0, 63619160, -76528424, 573900160,
+    34, 0, 63653664, -76544376, 573897280,
     /* node 6245 x: shift, then 4 coefficients */
-    33, 0, 294192384, -206094128, 135977360,
+    33, 0, 294212800, -206188528, 135913488,
     /* node 6245 y: shift, then 4 coefficients */
-    35, 0, -297769472, 406375648, 4439374,
+    35, 0, -297991104, 406600768, 4423562,
     /* node 6245 z: shift, then 4 coefficients */
-    34, 0, 63898152, -80931352, 588969728,
+    34, 0, 63827232, -80849112, 588856128,
     /* node 6246 x: shift, then 4 coefficients */
-    33, 0, 299736096, -211923888, 128617384,
+    33, 0, 299751904, -212024064, 128541920,
     /* node 6246 y: shift, then 4 coefficients */
-    35, 0, -322180000, 447469536, -14792435,
+    35, 0, -322565696, 447781728, -14862352,
     /* node 6246 z: shift, then 4 coefficients */
-    34, 0, 63849580, -85379360, 604204544,
+    34, 0, 63722448, -85263984, 604022016,
     /* node 6247 x: shift, then 4 coefficients */
-    33, 0, 304430176, -217086176, 133576432,
+    33, 0, 304442656, -217176016, 133493688,
     /* node 6247 y: shift, then 4 coefficients */
-    35, 0, -300439968, 418089984, -124150,
+    35, 0, -300694112, 418274464, -138033,
     /* node 6247 z: shift, then 4 coefficients */
-    34, 0, 67687992, -86098720, 592042496,
+    34, 0, 67573784, -85993360, 591890816,
     /* node 6248 x: shift, then 4 coefficients */
-    33, 0, 309849088, -222958496, 126196672,
+    33, 0, 309879520, -223071680, 126134000,
     /* node 6248 y: shift, then 4 coefficients */
-    35, 0, -323896480, 457265184, -17326232,
+    35, 0, -324194208, 457565760, -17251492,
     /* node 6248 z: shift, then 4 coefficients */
-    34, 0, 67852088, -89838824, 605227904,
+    34, 0, 67732168, -89734064, 605105920,
     /* node 6249 x: shift, then 4 coefficients */
-    33, 0, 314177824, -227192176, 117388408,
+    33, 0, 314202784, -227295152, 117321312,
     /* node 6249 y: shift, then 4 coefficients */
-    35, 0, -347205984, 496348672, -32423442,
+    35, 0, -347513856, 496584448, -32456330,
     /* node 6249 z: shift, then 4 coefficients */
-    34, 0, 67664144, -92972120, 618803776,
+    34, 0, 67535264, -92853856, 618672704,
     /* node 6250 x: shift, then 4 coefficients */
-    33, 0, 305274368, -217360304, 120108472,
+    33, 0, 305271392, -217429920, 120012792,
     /* node 6250 y: shift, then 4 coefficients */
-    35, 0, -346013504, 489791744, -30878844,
+    35, 0, -346385216, 490114432, -31015848,
     /* node 6250 z: shift, then 4 coefficients */
-    34, 0, 63889756, -89327072, 618187584,
+    34, 0, 63771040, -89198456, 618000000,
     /* node 6251 x: shift, then 4 coefficients */
-    33, 0, 310269312, -222314560, 112202176,
+    33, 0, 310277312, -222403360, 112110496,
     /* node 6251 y: shift, then 4 coefficients */
-    35, 0, -367869856, 528956640, -46344528,
+    35, 0, -368244512, 529221536, -46409480,
     /* node 6251 z: shift, then 4 coefficients */
-    34, 0, 63963208, -92538792, 630408768,
+    34, 0, 63850948, -92413624, 630239680,
     /* node 6252 x: shift, then 4 coefficients */
-    33, 0, 314791104, -227086512, 104721680,
+    33, 0, 314804928, -227148784, 104617936,
     /* node 6252 y: shift, then 4 coefficients */
-    35, 0, -388627456, 567486976, -58690388,
+    35, 0, -388948512, 567865344, -58714420,
     /* node 6252 z: shift, then 4 coefficients */
-    34, 0, 64363744, -96025848, 642316992,
+    34, 0, 64216096, -95862928, 642177536,
     /* node 6253 x: shift, then 4 coefficients */
-    33, 0, 318610208, -231363344, 109190064,
+    33, 0, 318630784, -231488016, 109121248,
     /* node 6253 y: shift, then 4 coefficients */
-    35, 0, -369765280, 537558592, -46346448,
+    35, 0, -370112512, 537790144, -46412372,
     /* node 6253 z: shift, then 4 coefficients */
-    34, 0, 67515944, -95044736, 630238976,
+    34, 0, 67412704, -94990496, 630145152,
     /* node 6254 x: shift, then 4 coefficients */
-    33, 0, 322028736, -234510928, 101479768,
+    33, 0, 322054944, -234629728, 101404720,
     /* node 6254 y: shift, then 4 coefficients */
-    35, 0, -387445408, 567293632, -55271200,
+    35, 0, -387795104, 567654592, -55265648,
     /* node 6254 z: shift, then 4 coefficients */
-    34, 0, 67490392, -96777280, 638853952,
+    34, 0, 67364960, -96685512, 638719744,
     /* node 6255 x: shift, then 4 coefficients */
-    33, 0, 325023008, -237107712, 94111296,
+    33, 0, 325048384, -237207904, 94038368,
     /* node 6255 y: shift, then 4 coefficients */
-    35, 0, -403250304, 596467840, -63326152,
+    35, 0, -403573312, 596749824, -63409480,
     /* node 6255 z: shift, then 4 coefficients */
-    34, 0, 67306712, -97755424, 646997120,
+    34, 0, 67148752, -97661336, 646864192,
     /* node 6256 x: shift, then 4 coefficients */
-    33, 0, 318253568, -229521920, 96942280,
+    33, 0, 318266016, -229607200, 96863936,
     /* node 6256 y: shift, then 4 coefficients */
-    35, 0, -404734624, 596834176, -65060312,
+    35, 0, -405106656, 597149440, -65142352,
     /* node 6256 z: shift, then 4 coefficients */
-    34, 0, 64352932, -96598152, 649654528,
+    34, 0, 64232348, -96542776, 649531072,
     /* node 6257 x: shift, then 4 coefficients */
-    33, 0, 321184512, -232352912, 89644352,
+    33, 0, 321203072, -232440848, 89571248,
     /* node 6257 y: shift, then 4 coefficients */
-    34, 0, -208666640, 311227168, -36028900,
+    34, 0, -208838848, 311425472, -36064608,
     /* node 6257 z: shift, then 4 coefficients */
-    34, 0, 64060460, -97172936, 655398592,
+    34, 0, 63925392, -97104520, 655296896,
     /* node 6258 x: shift, then 4 coefficients */
-    33, 0, 324081280, -234414880, 82167352,
+    33, 0, 324105184, -234472880, 82059376,
     /* node 6258 y: shift, then 4 coefficients */
-    34, 0, -215579856, 323062304, -38360692,
+    34, 0, -215720368, 323223552, -38386392,
     /* node 6258 z: shift, then 4 coefficients */
-    34, 0, 64258484, -97408384, 661184960,
+    34, 0, 64079444, -97271808, 661068160,
     /* node 6259 x: shift, then 4 coefficients */
-    33, 0, 327763456, -238752400, 86477288,
+    33, 0, 327792320, -238873824, 86396080,
     /* node 6259 y: shift, then 4 coefficients */
-    34, 0, -208514352, 308928928, -33471782,
+    34, 0, -208718416, 309190112, -33551326,
     /* node 6259 z: shift, then 4 coefficients */
-    34, 0, 67844704, -97209544, 652397312,
+    34, 0, 67714480, -97150784, 652300352,
     /* node 6260 x: shift, then 4 coefficients */
-    33, 0, 330167552, -240808544, 79173624,
+    33, 0, 330199936, -240908720, 79088872,
     /* node 6260 y: shift, then 4 coefficients */
-    34, 0, -213647456, 319678176, -35655432,
+    34, 0, -213822608, 319951040, -35705028,
     /* node 6260 z: shift, then 4 coefficients */
-    34, 0, 68351248, -97536712, 656282816,
+    34, 0, 68202968, -97445296, 656170112,
     /* node 6261 x: shift, then 4 coefficients */
-    33, 0, 332124608, -241836688, 71644848,
+    33, 0, 332163616, -241980736, 71579280,
     /* node 6261 y: shift, then 4 coefficients */
-    34, 0, -218567280, 328219712, -37143448,
+    34, 0, -218738000, 328601248, -37210220,
     /* node 6261 z: shift, then 4 coefficients */
-    34, 0, 68575296, -96396392, 660154112,
+    34, 0, 68459904, -96383432, 660028800,
     /* node 6262 x: shift, then 4 coefficients */
-    33, 0, 326355488, -235666560, 74519408,
+    33, 0, 326377344, -235722496, 74421000,
     /* node 6262 y: shift, then 4 coefficients */
-    34, 0, -220234336, 332300384, -39271940,
+    34, 0, -220367488, 332476288, -39301432,
     /* node 6262 z: shift, then 4 coefficients */
-    34, 0, 65223016, -97337248, 664544320,
+    34, 0, 65069376, -97214544, 664403520,
     /* node 6263 x: shift, then 4 coefficients */
-    33, 0, 328396416, -237233232, 66863328,
+    33, 0, 328415488, -237317744, 66790920,
     /* node 6263 y: shift, then 4 coefficients */
-    34, 0, -224368256, 341159328, -40745052,
+    34, 0, -224518288, 341317536, -40748676,
     /* node 6263 z: shift, then 4 coefficients */
-    34, 0, 65557340, -95791584, 665806400,
+    34, 0, 65416764, -95712272, 665667584,
     /* node 6264 x: shift, then 4 coefficients */
-    33, 0, 329850432, -237554016, 59205744,
+    33, 0, 329865408, -237637536, 59134660,
     /* node 6264 y: shift, then 4 coefficients */
-    34, 0, -228385504, 346499040, -40513016,
+    34, 0, -228526480, 346723456, -40475312,
     /* node 6264 z: shift, then 4 coefficients */
-    34, 0, 66108932, -93784664, 667365440,
+    34, 0, 65952760, -93558008, 667187712,
     /* node 6265 x: shift, then 4 coefficients */
-    33, 0, 333762016, -242710208, 64116992,
+    33, 0, 333788192, -242791392, 64029364,
     /* node 6265 y: shift, then 4 coefficients */
-    34, 0, -223351200, 334854528, -37566680,
+    34, 0, -223486976, 334941504, -37487888,
     /* node 6265 z: shift, then 4 coefficients */
-    34, 0, 69277704, -94142616, 661510528,
+    34, 0, 69120856, -94017608, 661354112,
     /* node 6266 x: shift, then 4 coefficients */
-    33, 0, 335818432, -244023344, 55335324,
+    33, 0, 335845792, -244076272, 55257860,
     /* node 6266 y: shift, then 4 coefficients */
-    34, 0, -226387424, 339989504, -37669788,
+    34, 0, -226492880, 339976608, -37644056,
     /* node 6266 z: shift, then 4 coefficients */
-    34, 0, 70223552, -93191192, 661789760,
+    34, 0, 70072320, -93052456, 661645376,
     /* node 6267 x: shift, then 4 coefficients */
-    33, 0, 338200288, -246210000, 46636268,
+    33, 0, 338240992, -246359728, 46589156,
     /* node 6267 y: shift, then 4 coefficients */
-    34, 0, -230543440, 344332256, -37172524,
+    34, 0, -230687584, 344517568, -37112388,
     /* node 6267 z: shift, then 4 coefficients */
-    34, 0, 71244344, -91631648, 662250240,
+    34, 0, 71077576, -91496712, 662088000,
     /* node 6268 x: shift, then 4 coefficients */
-    33, 0, 331166976, -237851040, 50987644,
+    33, 0, 331196096, -237907920, 50928040,
     /* node 6268 y: shift, then 4 coefficients */
-    34, 0, -231652816, 353306080, -40463484,
+    34, 0, -231717248, 353142560, -40420784,
     /* node 6268 z: shift, then 4 coefficients */
-    34, 0, 66807880, -91210736, 667578688,
+    34, 0, 66627120, -90926936, 667382592,
     /* node 6269 x: shift, then 4 coefficients */
-    33, 0, 333502560, -239506448, 42492132,
+    33, 0, 333575072, -239829088, 42451924,
     /* node 6269 y: shift, then 4 coefficients */
-    34, 0, -235303632, 355688704, -38959372,
+    34, 0, -235572032, 356539744, -39015532,
     /* node 6269 z: shift, then 4 coefficients */
-    34, 0, 68355448, -88526672, 667116608,
+    34, 0, 68241528, -88416272, 666923584,
     /* node 6270 x: shift, then 4 coefficients */
-    33, 0, 339124640, -245545776, 37333848,
+    33, 0, 339185696, -245749152, 37295532,
     /* node 6270 y: shift, then 4 coefficients */
-    34, 0, -234175248, 347293632, -37246096,
+    34, 0, -234286480, 347567072, -37246996,
     /* node 6270 z: shift, then 4 coefficients */
-    34, 0, 72487024, -89029624, 662543488,
+    34, 0, 72311088, -88752312, 662390784,
     /* node 6271 x: shift, then 4 coefficients */
-    33, 0, 333921280, -239299152, 35218436,
+    33, 0, 333949184, -239315552, 35152912,
     /* node 6271 y: shift, then 4 coefficients */
-    34, 0, -238564944, 360342688, -38689712,
+    34, 0, -238657792, 360377184, -38648032,
     /* node 6271 z: shift, then 4 coefficients */
-    34, 0, 68685408, -86586216, 667881984,
+    34, 0, 68545464, -86493224, 667725504,
     /* node 6524 x: shift, then 4 coefficients */
-    33, 0, 340372864, -246512320, 29572730,
+    33, 0, 340442048, -246716432, 29534136,
     /* node 6524 y: shift, then 4 coefficients */
-    34, 0, -237443024, 348478688, -36858384,
+    34, 0, -237610304, 348771904, -36802524,
     /* node 6524 z: shift, then 4 coefficients */
-    34, 0, 73503848, -86518784, 662848576,
+    34, 0, 73370976, -86471464, 662717696,
     /* node 6525 x: shift, then 4 coefficients */
-    33, 0, 347481600, -254134640, 23101594,
+    33, 0, 347524576, -254243072, 23031866,
     /* node 6525 y: shift, then 4 coefficients */
-    34, 0, -236436256, 337297216, -35424724,
+    34, 0, -236565184, 337535264, -35440608,
     /* node 6525 z: shift, then 4 coefficients */
-    34, 0, 79129728, -87271728, 658721472,
+    34, 0, 78934032, -87162816, 658622464,
     /* node 6526 x: shift, then 4 coefficients */
-    33, 0, 347986080, -255651360, 30613652,
+    33, 0, 348036672, -255786672, 30556666,
     /* node 6526 y: shift, then 4 coefficients */
-    34, 0, -232940256, 335208672, -35430080,
+    34, 0, -233051248, 335390688, -35406052,
     /* node 6526 z: shift, then 4 coefficients */
-    34, 0, 78873864, -89350448, 657363456,
+    34, 0, 78684800, -89200056, 657222848,
     /* node 6527 x: shift, then 4 coefficients */
-    33, 0, 357111424, -264879664, 24164184,
+    33, 0, 357178400, -265061136, 24096660,
     /* node 6527 y: shift, then 4 coefficients */
-    34, 0, -231469360, 325089120, -34520832,
+    34, 0, -231593424, 325330912, -34516440,
     /* node 6527 z: shift, then 4 coefficients */
-    34, 0, 84851152, -90915584, 653329728,
+    34, 0, 84673144, -90747256, 653185728,
     /* node 6529 x: shift, then 4 coefficients */
-    33, 0, 355913664, -262854368, 17162208,
+    33, 0, 355962240, -262951664, 17080782,
     /* node 6529 y: shift, then 4 coefficients */
-    34, 0, -236004640, 329001600, -35777732,
+    34, 0, -236036880, 328976448, -35744824,
     /* node 6529 z: shift, then 4 coefficients */
-    34, 0, 84518264, -90283152, 654906624,
+    34, 0, 84340392, -90117648, 654798848,
     /* node 6595 x: shift, then 4 coefficients */
-    35, 0, 477038976, -96218640, -96812696,
+    35, 0, 476773664, -95888104, -95984192,
     /* node 6595 y: shift, then 4 coefficients */
-    37, 0, 135338016, 449093856, -165551696,
+    37, 0, 132905936, 451345888, -161407136,
     /* node 6595 z: shift, then 4 coefficients */
-    36, 0, 5954154, -145981888, 794669440,
+    36, 0, 6666534, -145314768, 794754624,
     /* node 6596 x: shift, then 4 coefficients */
-    35, 0, 441607392, -74945232, -83167504,
+    35, 0, 441402368, -74846104, -82563872,
     /* node 6596 y: shift, then 4 coefficients */
-    37, 0, 176332128, 392074176, -151968320,
+    37, 0, 175900624, 394198720, -149746640,
     /* node 6596 z: shift, then 4 coefficients */
-    36, 0, 12651497, -135891376, 752984896,
+    36, 0, 12668308, -134822240, 752909568,
     /* node 6597 x: shift, then 4 coefficients */
-    35, 0, 418039264, -67299976, -96090336,
+    35, 0, 417284288, -67270376, -95146752,
     /* node 6597 y: shift, then 4 coefficients */
-    37, 0, 148436864, 416629440, -141227904,
+    37, 0, 147815840, 416743968, -140661920,
     /* node 6597 z: shift, then 4 coefficients */
-    36, 0, 9855768, -140211856, 729770624,
+    36, 0, 10529410, -139968512, 728366464,
     /* node 6598 x: shift, then 4 coefficients */
-    35, 0, 517136224, -123374856, -108014056,
+    35, 0, 517206656, -123466360, -107770096,
     /* node 6598 y: shift, then 4 coefficients */
-    37, 0, 86510328, 464771872, -141543344,
+    37, 0, 85243560, 465724736, -140063920,
     /* node 6598 z: shift, then 4 coefficients */
-    36, 0, 13979253, -160732480, 840586752,
+    36, 0, 13931689, -160336272, 840533120,
     /* node 6599 x: shift, then 4 coefficients */
-    35, 0, 436285632, -87523344, -105439616,
+    35, 0, 435884640, -87326512, -105006048,
     /* node 6599 y: shift, then 4 coefficients */
-    37, 0, 110250536, 400312448, -116634304,
+    37, 0, 109131184, 400806720, -116833400,
     /* node 6599 z: shift, then 4 coefficients */
-    36, 0, 10775170, -153727712, 750769344,
+    36, 0, 11601448, -153818512, 750248960,
     /* node 6600 x: shift, then 4 coefficients */
-    36, 0, 791912064, -102622352, -172791984,
+    36, 0, 789896448, -103364848, -169964624,
     /* node 6600 y: shift, then 4 coefficients */
-    37, 0, 193427504, 379344832, -150194592,
+    37, 0, 194588960, 378026816, -147875872,
     /* node 6600 z: shift, then 4 coefficients */
-    36, 0, 7706660, -133319336, 700506240,
+    36, 0, 8694553, -132454592, 698025984,
     /* node 6601 x: shift, then 4 coefficients */
-    36, 0, 703182656, -92243992, -179225904,
+    36, 0, 703118720, -91757480, -178467040,
     /* node 6601 y: shift, then 4 coefficients */
-    37, 0, 174263168, 312608256, -152325328,
+    37, 0, 174010512, 313396608, -149773920,
     /* node 6601 z: shift, then 4 coefficients */
-    36, 0, 2754206, -130204480, 624835328,
+    36, 0, 2649681, -129425048, 624789504,
     /* node 6602 x: shift, then 4 coefficients */
-    36, 0, 674240448, -73173432, -154841712,
+    36, 0, 674586240, -73107832, -154713536,
     /* node 6602 y: shift, then 4 coefficients */
-    37, 0, 197110304, 297857952, -138675312,
+    37, 0, 197909568, 298490336, -136931856,
     /* node 6602 z: shift, then 4 coefficients */
-    36, 0, 5730722, -120803112, 599298688,
+    36, 0, 5031458, -120239568, 601086080,
     /* node 6639 x: shift, then 4 coefficients */
-    36, 0, 474129376, 2808841, -115906944,
+    36, 0, 472613440, 2249044, -115143528,
     /* node 6639 y: shift, then 4 coefficients */
-    38, 0, 484735328, 286394720, -257374192,
+    38, 0, 471269664, 288012096, -253976736,
     /* node 6639 z: shift, then 4 coefficients */
-    37, 0, -4220432, -164162560, 870688320,
+    37, 0, -3887876, -162353984, 870603520,
     /* node 6640 x: shift, then 4 coefficients */
-    36, 0, 576221120, -43944464, -132260400,
+    36, 0, 575209920, -42899948, -132334280,
     /* node 6640 y: shift, then 4 coefficients */
-    37, 0, 212441712, 252830416, -157849376,
+    37, 0, 212015200, 252407488, -155788208,
     /* node 6640 z: shift, then 4 coefficients */
-    36, 0, 2850172, -110441584, 524492608,
+    36, 0, 1893412, -109234488, 525684800,
     /* node 6641 x: shift, then 4 coefficients */
-    36, 0, 479109664, -13485000, -137656336,
+    36, 0, 477951200, -13249548, -137300800,
     /* node 6641 y: shift, then 4 coefficients */
-    38, 0, 372422720, 377370240, -221465952,
+    38, 0, 372064096, 376771264, -222171776,
     /* node 6641 z: shift, then 4 coefficients */
-    36, 0, -3450079, -91643312, 450188096,
+    36, 0, -3379855, -91044032, 449353248,
     /* node 6642 x: shift, then 4 coefficients */
-    36, 0, 576616384, -52631124, -155858224,
+    36, 0, 577063040, -50385260, -157693600,
     /* node 6642 y: shift, then 4 coefficients */
-    37, 0, 188085024, 239738256, -151012960,
+    37, 0, 186690960, 244756528, -151857312,
     /* node 6642 z: shift, then 4 coefficients */
-    36, 0, 857215, -115168600, 527588896,
+    36, 0, -379427, -114382328, 529888992,
     /* node 6643 x: shift, then 4 coefficients */
-    36, 0, 593617856, -76558456, -179999632,
+    36, 0, 594193856, -74230488, -182186720,
     /* node 6643 y: shift, then 4 coefficients */
-    38, 0, 314671936, 464248672, -192042032,
+    38, 0, 309994912, 473763168, -195504576,
     /* node 6643 z: shift, then 4 coefficients */
-    36, 0, -4354920, -123618376, 542479488,
+    36, 0, -5129836, -122968368, 544380672,
     /* node 6644 x: shift, then 4 coefficients */
-    36, 0, 472313792, -21431014, -163978928,
+    36, 0, 470309376, -21687136, -162720640,
     /* node 6644 y: shift, then 4 coefficients */
-    38, 0, 288636992, 342671936, -183339152,
+    38, 0, 291441888, 339149760, -179433248,
     /* node 6644 z: shift, then 4 coefficients */
-    36, 0, -13561904, -106013016, 461736224,
+    36, 0, -12999159, -105809360, 459353216,
     /* node 6711 x: shift, then 4 coefficients */
-    35, 0, 643740672, -174880544, -69995360,
+    35, 0, 643947392, -175024576, -70357760,
     /* node 6711 y: shift, then 4 coefficients */
-    37, 0, 119148824, 465601248, -182850256,
+    37, 0, 118575208, 464709312, -182624880,
     /* node 6711 z: shift, then 4 coefficients */
-    35, 0, 28373336, -75960376, 486607328,
+    35, 0, 28229270, -75810736, 486647328,
     /* node 6712 x: shift, then 4 coefficients */
-    35, 0, 658657280, -190675312, -91064976,
+    35, 0, 658597696, -190808928, -91132896,
     /* node 6712 y: shift, then 4 coefficients */
-    37, 0, 88187024, 482523008, -168904432,
+    37, 0, 88346656, 480726912, -169515168,
     /* node 6712 z: shift, then 4 coefficients */
-    35, 0, 27143388, -81911592, 494122112,
+    35, 0, 27131162, -81848568, 493998944,
     /* node 6713 x: shift, then 4 coefficients */
-    35, 0, 722706112, -245892224, -57185088,
+    35, 0, 723320064, -245967600, -57776992,
     /* node 6713 y: shift, then 4 coefficients */
-    37, 0, 82135544, 442285824, -112699600,
+    37, 0, 81668800, 443063360, -113277376,
     /* node 6713 z: shift, then 4 coefficients */
-    35, 0, 41413432, -75833744, 514299616,
+    35, 0, 41076112, -75788760, 514359040,
     /* node 6714 x: shift, then 4 coefficients */
-    35, 0, 604866496, -146378912, -52801108,
+    35, 0, 604036480, -146460848, -52656556,
     /* node 6714 y: shift, then 4 coefficients */
-    37, 0, 161197856, 446924576, -206099808,
+    37, 0, 160520176, 444851712, -203186912,
     /* node 6714 z: shift, then 4 coefficients */
-    35, 0, 24476210, -69202256, 462347168,
+    35, 0, 24666084, -68660416, 462009088,
     /* node 6715 x: shift, then 4 coefficients */
-    35, 0, 688998784, -212574720, -47578812,
+    35, 0, 689022400, -212664496, -47723652,
     /* node 6715 y: shift, then 4 coefficients */
-    37, 0, 116682512, 457824928, -178735680,
+    37, 0, 116765608, 456879200, -177561024,
     /* node 6715 z: shift, then 4 coefficients */
-    35, 0, 38676920, -72262408, 506974400,
+    35, 0, 38600012, -72078688, 506647232,
     /* node 6716 x: shift, then 4 coefficients */
-    35, 0, 656174400, -174549136, -31799610,
+    35, 0, 655973056, -174638336, -31420318,
     /* node 6716 y: shift, then 4 coefficients */
-    37, 0, 191281120, 433137408, -192787056,
+    37, 0, 192188768, 430878720, -190919440,
     /* node 6716 z: shift, then 4 coefficients */
-    35, 0, 37857544, -65560560, 477901696,
+    35, 0, 37908104, -65452568, 477545408,
     /* node 6717 x: shift, then 4 coefficients */
-    35, 0, 668656960, -194904576, -474158,
+    35, 0, 668769280, -195193280, -941080,
     /* node 6717 y: shift, then 4 coefficients */
-    37, 0, 193567136, 389941568, -175790832,
+    37, 0, 190173760, 391616384, -178114672,
     /* node 6717 z: shift, then 4 coefficients */
-    35, 0, 43369080, -57733212, 475693952,
+    35, 0, 42937596, -57497220, 475741760,
     /* node 6718 x: shift, then 4 coefficients */
-    35, 0, 736474368, -248399872, -19523696,
+    35, 0, 736075584, -248494224, -19844058,
     /* node 6718 y: shift, then 4 coefficients */
-    37, 0, 156306544, 401358208, -160377968,
+    37, 0, 154638256, 400971520, -160987360,
     /* node 6718 z: shift, then 4 coefficients */
-    35, 0, 44508020, -67516864, 509860576,
+    35, 0, 44358792, -67321008, 509414528,
     /* node 6745 x: shift, then 4 coefficients */
-    34, 0, 415381408, -201624720, -50346908,
+    34, 0, 415406016, -201746880, -50454428,
     /* node 6745 y: shift, then 4 coefficients */
-    38, 0, 66250232, 483111584, 138425840,
+    38, 0, 65870768, 483032000, 138244064,
     /* node 6745 z: shift, then 4 coefficients */
-    35, 0, 60284880, -102091352, 528257088,
+    35, 0, 60134856, -101924264, 528178656,
     /* node 6750 x: shift, then 4 coefficients */
-    35, 0, 466684896, -112255776, -113271688,
+    35, 0, 466450656, -112218672, -113214136,
     /* node 6750 y: shift, then 4 coefficients */
-    38, 0, 126142536, 801098688, -100762688,
+    38, 0, 125531080, 799573632, -99301032,
     /* node 6750 z: shift, then 4 coefficients */
-    36, 0, 9575879, -163360816, 779380544,
+    36, 0, 10010173, -163140752, 779043200,
     /* node 6751 x: shift, then 4 coefficients */
-    35, 0, 388665952, -81458200, -111409872,
+    35, 0, 388889056, -81788272, -111604400,
     /* node 6751 y: shift, then 4 coefficients */
-    38, 0, 140518160, 639233856, -123089600,
+    38, 0, 137478400, 642688768, -121224632,
     /* node 6751 z: shift, then 4 coefficients */
-    36, 0, 1981265, -155958080, 679989504,
+    36, 0, 1758288, -155499120, 680070208,
     /* node 6752 x: shift, then 4 coefficients */
-    35, 0, 406300640, -95330176, -123981368,
+    35, 0, 406386400, -95608904, -123890248,
     /* node 6752 y: shift, then 4 coefficients */
-    38, 0, 115213384, 650863488, -52573484,
+    38, 0, 113006120, 650661184, -49365588,
     /* node 6752 z: shift, then 4 coefficients */
-    36, 0, 5200218, -165527120, 691955008,
+    36, 0, 4971590, -165033584, 691682176,
     /* node 6753 x: shift, then 4 coefficients */
-    35, 0, 553829568, -148150272, -117374032,
+    35, 0, 554174592, -148669584, -117493200,
     /* node 6753 y: shift, then 4 coefficients */
-    37, 0, 49527540, 471610944, -118517776,
+    37, 0, 48181288, 471816928, -118255144,
     /* node 6753 z: shift, then 4 coefficients */
-    35, 0, 11452560, -87636512, 448004352,
+    35, 0, 11306705, -87369536, 447831200,
     /* node 6754 x: shift, then 4 coefficients */
-    35, 0, 506247680, -137565808, -132473320,
+    35, 0, 505952864, -137633344, -132332440,
     /* node 6754 y: shift, then 4 coefficients */
-    38, 0, 93260880, 809728384, -95934256,
+    38, 0, 91791616, 808098048, -90821168,
     /* node 6754 z: shift, then 4 coefficients */
-    36, 0, 10138164, -177642240, 828789696,
+    36, 0, 10209746, -177621632, 828831232,
     /* node 6793 x: shift, then 4 coefficients */
-    34, 0, 385115488, -143183440, 10000322,
+    34, 0, 385059712, -143288976, 9811075,
     /* node 6793 y: shift, then 4 coefficients */
-    37, 0, 182054048, 328493632, -148979520,
+    37, 0, 179930576, 329355744, -149742304,
     /* node 6793 z: shift, then 4 coefficients */
-    35, 0, 57822524, -67563216, 516164864,
+    35, 0, 57734160, -67524856, 516280384,
     /* node 6794 x: shift, then 4 coefficients */
-    35, 0, 682787904, -214927584, 29439618,
+    35, 0, 682743296, -215171392, 29186246,
     /* node 6794 y: shift, then 4 coefficients */
-    37, 0, 252298016, 303756736, -192207712,
+    37, 0, 251248560, 304698304, -192819360,
     /* node 6794 z: shift, then 4 coefficients */
-    35, 0, 52427128, -57218748, 461012864,
+    35, 0, 52189908, -57130232, 460978784,
     /* node 6795 x: shift, then 4 coefficients */
-    34, 0, 388960384, -154863632, 28588616,
+    34, 0, 388867840, -154991472, 28432700,
     /* node 6795 y: shift, then 4 coefficients */
-    37, 0, 200331200, 264684896, -118277064,
+    37, 0, 199395024, 264795984, -119733384,
     /* node 6795 z: shift, then 4 coefficients */
-    35, 0, 63503696, -64461656, 512060800,
+    35, 0, 63547496, -64436292, 512128864,
     /* node 6796 x: shift, then 4 coefficients */
-    34, 0, 438571520, -197847920, 25549006,
+    34, 0, 438579904, -198020512, 25430552,
     /* node 6796 y: shift, then 4 coefficients */
-    38, 0, 279134592, 566379072, -202754288,
+    38, 0, 278109120, 566860096, -203618048,
     /* node 6796 z: shift, then 4 coefficients */
-    35, 0, 78623416, -79716824, 555559360,
+    35, 0, 78489152, -79616736, 555506368,
     /* node 6797 x: shift, then 4 coefficients */
-    34, 0, 422413728, -177631216, 6194006,
+    34, 0, 422263680, -177747456, 6068992,
     /* node 6797 y: shift, then 4 coefficients */
-    37, 0, 103830664, 351455488, -116480112,
+    37, 0, 103132120, 351112288, -117247064,
     /* node 6797 z: shift, then 4 coefficients */
-    35, 0, 67102100, -81558576, 558322624,
+    35, 0, 66983180, -81418800, 558123200,
     /* node 6798 x: shift, then 4 coefficients */
-    35, 0, 680123008, -235317312, 62620012,
+    35, 0, 679953664, -235455088, 62327460,
     /* node 6798 y: shift, then 4 coefficients */
-    37, 0, 291658208, 207298128, -161251488,
+    37, 0, 288362400, 207467200, -163578464,
     /* node 6798 z: shift, then 4 coefficients */
-    35, 0, 61969596, -51173468, 447245792,
+    35, 0, 61560692, -51042664, 446962912,
     /* node 6805 x: shift, then 4 coefficients */
-    36, 0, 644915584, -119130816, -234377536,
+    36, 0, 644850240, -117829616, -235719776,
     /* node 6805 y: shift, then 4 coefficients */
-    38, 0, 191268144, 490921088, 199362,
+    38, 0, 194676160, 489613536, -1675564,
     /* node 6805 z: shift, then 4 coefficients */
-    36, 0, -8946890, -138047536, 569188864,
+    36, 0, -8770928, -138427472, 569475264,
     /* node 6806 x: shift, then 4 coefficients */
-    36, 0, 615433472, -101059368, -202020160,
+    36, 0, 615875520, -99275896, -203928864,
     /* node 6806 y: shift, then 4 coefficients */
-    38, 0, 219134976, 450993888, -87036800,
+    38, 0, 220434496, 453314016, -89823872,
     /* node 6806 z: shift, then 4 coefficients */
-    36, 0, -6906273, -130461264, 553728768,
+    36, 0, -6739284, -130690400, 554721856,
     /* node 6808 x: shift, then 4 coefficients */
-    36, 0, 489014144, -36004716, -189089152,
+    36, 0, 487177536, -35875608, -187907280,
     /* node 6808 y: shift, then 4 coefficients */
-    38, 0, 269246560, 328597696, -65502780,
+    38, 0, 275660096, 323971936, -65224184,
     /* node 6808 z: shift, then 4 coefficients */
-    36, 0, -17475558, -110624824, 467262816,
+    36, 0, -16842708, -110050896, 464692640,
     /* node 6819 x: shift, then 4 coefficients */
-    34, 0, 388608256, -145677568, -39176700,
+    34, 0, 388688832, -145816464, -39294896,
     /* node 6819 y: shift, then 4 coefficients */
-    37, 0, 910594, 486909600, -92206216,
+    37, 0, -122655, 487127296, -92138744,
     /* node 6819 z: shift, then 4 coefficients */
-    35, 0, 46983908, -90583280, 552806080,
+    35, 0, 46814544, -90473736, 552663040,
     /* node 6820 x: shift, then 4 coefficients */
-    34, 0, 393422240, -158922528, -49336856,
+    34, 0, 393402720, -159051520, -49408420,
     /* node 6820 y: shift, then 4 coefficients */
-    37, 0, -38185120, 461109408, -62533972,
+    37, 0, -38862388, 460948544, -62407988,
     /* node 6820 z: shift, then 4 coefficients */
-    35, 0, 49102976, -94926376, 557172800,
+    35, 0, 49060160, -94773480, 556932992,
     /* node 6821 x: shift, then 4 coefficients */
-    34, 0, 453728928, -218125968, -28682512,
+    34, 0, 453687360, -218312752, -28749774,
     /* node 6821 y: shift, then 4 coefficients */
-    38, 0, -128521520, 830686144, -67489352,
+    38, 0, -129031296, 830065408, -67507472,
     /* node 6821 z: shift, then 4 coefficients */
-    35, 0, 72456408, -99821736, 599075648,
+    35, 0, 72377784, -99697904, 598857536,
     /* node 6822 x: shift, then 4 coefficients */
-    35, 0, 646036160, -199978192, -104254656,
+    35, 0, 645965696, -200250064, -104253440,
     /* node 6822 y: shift, then 4 coefficients */
-    37, 0, 51636344, 462379136, -93533768,
+    37, 0, 50413772, 461346272, -93172768,
     /* node 6822 z: shift, then 4 coefficients */
-    35, 0, 25581500, -85117136, 486292832,
+    35, 0, 25582540, -85139168, 486204640,
     /* node 6823 x: shift, then 4 coefficients */
-    34, 0, 429599456, -184258464, -21117554,
+    34, 0, 429534848, -184391872, -21222382,
     /* node 6823 y: shift, then 4 coefficients */
-    38, 0, 28413618, 826137536, -135359472,
+    38, 0, 27550896, 825635776, -134908720,
     /* node 6823 z: shift, then 4 coefficients */
-    35, 0, 63252776, -90169688, 573123136,
+    35, 0, 63229724, -90031776, 572939840,
     /* node 6824 x: shift, then 4 coefficients */
-    35, 0, 634419072, -213959392, -116876096,
+    35, 0, 634666688, -214219488, -117032608,
     /* node 6824 y: shift, then 4 coefficients */
-    38, 0, 41306704, 844598528, -64281160,
+    38, 0, 38214164, 845596800, -63244756,
     /* node 6824 z: shift, then 4 coefficients */
-    35, 0, 24328162, -89840768, 479474112,
+    35, 0, 24168572, -89808584, 479599360,
     /* node 6825 x: shift, then 4 coefficients */
-    35, 0, 552298496, -175693248, -133560224,
+    35, 0, 552304192, -175933392, -133524448,
     /* node 6825 y: shift, then 4 coefficients */
-    38, 0, 101188648, 678980352, 50627324,
+    38, 0, 99971912, 678541632, 51934764,
     /* node 6825 z: shift, then 4 coefficients */
-    36, 0, 28809166, -174071168, 838563008,
+    36, 0, 28454842, -174099456, 838977024,
     /* node 6826 x: shift, then 4 coefficients */
-    34, 0, 374985600, -152886816, -58322784,
+    34, 0, 374975136, -153007088, -58400280,
     /* node 6826 y: shift, then 4 coefficients */
-    38, 0, -49241212, 784166400, -18144262,
+    38, 0, -50045212, 784022144, -18121350,
     /* node 6826 z: shift, then 4 coefficients */
-    35, 0, 41219220, -97063904, 530524864,
+    35, 0, 41223400, -96971896, 530262976,
     /* node 6867 x: shift, then 4 coefficients */
-    34, 0, 502484832, -266361456, -4336518,
+    34, 0, 502498720, -266518272, -4413242,
     /* node 6867 y: shift, then 4 coefficients */
-    38, 0, -165010624, 812785280, -64743976,
+    38, 0, -165049008, 812513920, -64988872,
     /* node 6867 z: shift, then 4 coefficients */
-    35, 0, 92402488, -106255504, 636071680,
+    35, 0, 92315048, -106103520, 635926400,
     /* node 6868 x: shift, then 4 coefficients */
-    34, 0, 528788544, -297276320, 22006008,
+    34, 0, 528868800, -297466528, 21941760,
     /* node 6868 y: shift, then 4 coefficients */
-    38, 0, -63510556, 695288192, -75119024,
+    38, 0, -63010392, 694798272, -75094088,
     /* node 6868 z: shift, then 4 coefficients */
-    35, 0, 108345024, -111293616, 642426240,
+    35, 0, 108250912, -111227624, 642327616,
     /* node 6869 x: shift, then 4 coefficients */
-    34, 0, 460486464, -220834112, 360686,
+    34, 0, 460419936, -220995520, 284346,
     /* node 6869 y: shift, then 4 coefficients */
-    38, 0, 46267048, 712374208, -113032520,
+    38, 0, 45953276, 711717312, -114268016,
     /* node 6869 z: shift, then 4 coefficients */
-    35, 0, 78785088, -92470904, 592825792,
+    35, 0, 78750288, -92392768, 592755840,
     /* node 6870 x: shift, then 4 coefficients */
-    34, 0, 482315904, -245209520, 23944182,
+    34, 0, 482319744, -245342032, 23845838,
     /* node 6870 y: shift, then 4 coefficients */
-    38, 0, 98147200, 622920576, -139451696,
+    38, 0, 98356656, 622843520, -138666944,
     /* node 6870 z: shift, then 4 coefficients */
-    35, 0, 91514592, -95768744, 602285568,
+    35, 0, 91467160, -95628872, 602312640,
     /* node 6871 x: shift, then 4 coefficients */
-    34, 0, 490318112, -258540080, 45825604,
+    34, 0, 490334528, -258690144, 45735208,
     /* node 6871 y: shift, then 4 coefficients */
-    38, 0, 268149504, 432562528, -129522888,
+    38, 0, 269236032, 431707616, -128715928,
     /* node 6871 z: shift, then 4 coefficients */
-    35, 0, 103744312, -97391360, 589516864,
+    35, 0, 103729240, -97317752, 589384576,
     /* node 6872 x: shift, then 4 coefficients */
-    34, 0, 537550976, -313242464, 48531964,
+    34, 0, 537587328, -313426048, 48454420,
     /* node 6872 y: shift, then 4 coefficients */
-    38, 0, 43681160, 576563520, -53960160,
+    38, 0, 42995408, 577024960, -54948204,
     /* node 6872 z: shift, then 4 coefficients */
-    35, 0, 120464992, -114262864, 643106240,
+    35, 0, 120349104, -114163968, 642962048,
     /* node 6902 x: shift, then 4 coefficients */
-    34, 0, 494686432, -274019488, 65604600,
+    34, 0, 494596960, -274147200, 65457076,
     /* node 6902 y: shift, then 4 coefficients */
-    38, 0, 314174816, 337472512, -40823636,
+    38, 0, 313333120, 338067328, -41554516,
     /* node 6902 z: shift, then 4 coefficients */
-    35, 0, 113111232, -100050104, 589861376,
+    35, 0, 113012192, -99917768, 589743808,
     /* node 6942 x: shift, then 4 coefficients */
-    36, 0, 860634624, -114424872, -68523616,
+    36, 0, 860920896, -114680984, -68493880,
     /* node 6942 y: shift, then 4 coefficients */
-    37, 0, 249604832, 338958208, -195012128,
+    37, 0, 251139152, 338875264, -198100000,
     /* node 6942 z: shift, then 4 coefficients */
-    36, 0, 38515252, -88190712, 688864768,
+    36, 0, 38599880, -88459448, 689209984,
     /* node 6945 x: shift, then 4 coefficients */
-    36, 0, 685685184, -62893556, 48978796,
+    36, 0, 684916992, -63544020, 48705964,
     /* node 6945 y: shift, then 4 coefficients */
-    37, 0, 329976192, 140359472, -151381472,
+    37, 0, 326785504, 141959088, -151835232,
     /* node 6945 z: shift, then 4 coefficients */
-    36, 0, 51113468, -36233796, 492536224,
+    36, 0, 51127936, -36225280, 492619648,
     /* node 7137 x: shift, then 4 coefficients */
-    38, 0, 438698496, -326529728, 32656094,
+    38, 0, 441995072, -325578816, 33845000,
     /* node 7137 y: shift, then 4 coefficients */
-    38, 0, -425732768, 435682368, -39438148,
+    38, 0, -424676256, 440482752, -40151188,
     /* node 7137 z: shift, then 4 coefficients */
-    39, 0, 104162760, 12925664, 616999104,
+    39, 0, 103720088, 13447098, 619311744,
     /* node 7138 x: shift, then 4 coefficients */
-    37, 0, 461003552, -311085632, 66993612,
+    37, 0, 459613696, -303798464, 66571780,
     /* node 7138 y: shift, then 4 coefficients */
-    37, 0, -319706752, 321799392, -15030202,
+    37, 0, -317891136, 324954240, -12748098,
     /* node 7138 z: shift, then 4 coefficients */
-    38, 0, -22135994, -19518250, 834030016,
+    38, 0, -24795370, -9530506, 843197184,
     /* node 7139 x: shift, then 4 coefficients */
-    36, 0, 626829248, -318019040, 73201024,
+    36, 0, 627006080, -318881664, 73692320,
     /* node 7139 y: shift, then 4 coefficients */
-    35, 0, -286373728, 331805920, 6166078,
+    35, 0, -286470752, 331743264, 6459874,
     /* node 7139 z: shift, then 4 coefficients */
-    36, 0, -37893020, 90788600, 778271104,
+    36, 0, -38724564, 91964376, 779033984,
     /* node 7140 x: shift, then 4 coefficients */
-    36, 0, 386499904, -223467072, 2227375,
+    36, 0, 387018816, -224277232, 2381132,
     /* node 7140 y: shift, then 4 coefficients */
-    36, 0, -326404480, 345235680, -103144000,
+    36, 0, -326450656, 344775840, -102589216,
     /* node 7140 z: shift, then 4 coefficients */
-    36, 0, 35280880, -103656040, 423450496,
+    36, 0, 35035416, -103101944, 424887552,
     /* node 7141 x: shift, then 4 coefficients */
-    35, 0, 403178656, -180520304, 4686748,
+    35, 0, 403058336, -180617424, 4726738,
     /* node 7141 y: shift, then 4 coefficients */
-    35, 0, -333237760, 433992960, -60174908,
+    35, 0, -333256928, 434384320, -59842200,
     /* node 7141 z: shift, then 4 coefficients */
-    35, 0, 1631461, -25574686, 518769280,
+    35, 0, 1337191, -24803984, 518790112,
     /* node 7142 x: shift, then 4 coefficients */
-    35, 0, 603825024, -251382096, 63993196,
+    35, 0, 603667968, -251390544, 63926512,
     /* node 7142 y: shift, then 4 coefficients */
-    34, 0, -208520816, 337821536, 6344055,
+    34, 0, -208676048, 338034912, 6337088,
     /* node 7142 z: shift, then 4 coefficients */
-    35, 0, -14257499, 54074176, 873269568,
+    35, 0, -14409248, 54460532, 873151872,
     /* node 7143 x: shift, then 4 coefficients */
-    36, 0, 600349376, -272728128, -100691624,
+    36, 0, 600069696, -274077952, -100582808,
     /* node 7143 y: shift, then 4 coefficients */
-    35, 0, -243705664, 264341872, -104482376,
+    35, 0, -243836176, 263665792, -104413776,
     /* node 7143 z: shift, then 4 coefficients */
-    36, 0, 58418412, -230705408, 761012544,
+    36, 0, 58749160, -230462400, 761795904,
     /* node 7144 x: shift, then 4 coefficients */
-    35, 0, 513610144, -206542640, -56303024,
+    35, 0, 513674240, -206513536, -56354928,
     /* node 7144 y: shift, then 4 coefficients */
-    35, 0, -361784096, 510822592, -141875200,
+    35, 0, -361983168, 511504320, -141608784,
     /* node 7144 z: shift, then 4 coefficients */
-    35, 0, 16606329, -119712120, 692207296,
+    35, 0, 16487778, -119415472, 692365184,
     /* node 7145 x: shift, then 4 coefficients */
-    34, 0, 432165952, -152452432, -11723786,
+    34, 0, 432051104, -152462448, -11760987,
     /* node 7145 y: shift, then 4 coefficients */
-    34, 0, -223203488, 496471104, -55992592,
+    34, 0, -223217856, 496793664, -55869720,
     /* node 7145 z: shift, then 4 coefficients */
-    34, 0, -5309520, -29977480, 632593984,
+    34, 0, -5399438, -29967630, 632594304,
     /* node 7146 x: shift, then 4 coefficients */
-    34, 0, 549625984, -192148656, 25640456,
+    34, 0, 549909952, -192055184, 25626172,
     /* node 7146 y: shift, then 4 coefficients */
-    34, 0, -243450400, 601310976, -30287084,
+    34, 0, -243653200, 601837952, -30249538,
     /* node 7146 z: shift, then 4 coefficients */
-    34, 0, -2698394, -17963044, 856929600,
+    34, 0, -2835815, -18098858, 856949248,
     /* node 7147 x: shift, then 4 coefficients */
-    35, 0, 494024064, -179105056, -196220208,
+    35, 0, 494044096, -179309232, -196415200,
     /* node 7147 y: shift, then 4 coefficients */
-    35, 0, -320130176, 364324672, -193783232,
+    35, 0, -320158304, 364717632, -193590336,
     /* node 7147 z: shift, then 4 coefficients */
-    35, 0, 41139088, -193129536, 681383744,
+    35, 0, 40980000, -193073136, 681488576,
     /* node 7148 x: shift, then 4 coefficients */
-    35, 0, 619995648, -234960528, -156413312,
+    35, 0, 620065024, -235047984, -156599184,
     /* node 7148 y: shift, then 4 coefficients */
-    34, 0, -184133984, 258018192, -103974816,
+    34, 0, -184180672, 258197712, -103790784,
     /* node 7148 z: shift, then 4 coefficients */
-    34, 0, 12484032, -95089968, 434291680,
+    34, 0, 12425366, -94981176, 434255328,
     /* node 7149 x: shift, then 4 coefficients */
-    34, 0, 499954912, -171619648, -67438888,
+    34, 0, 499784256, -171958320, -67449816,
     /* node 7149 y: shift, then 4 coefficients */
-    34, 0, -227208176, 516507680, -88684040,
+    34, 0, -227426496, 516517024, -88556704,
     /* node 7149 z: shift, then 4 coefficients */
-    34, 0, -9270575, -65393296, 732050688,
+    34, 0, -9342156, -65094328, 731696448,
     /* node 7150 x: shift, then 4 coefficients */
-    34, 0, 616963840, -223369840, -31111966,
+    34, 0, 616172800, -224176192, -31750960,
     /* node 7150 y: shift, then 4 coefficients */
-    34, 0, -254602336, 675357760, -60688056,
+    34, 0, -254775104, 674452608, -60350264,
     /* node 7150 z: shift, then 4 coefficients */
-    34, 0, -7388152, -45806008, 970519680,
+    34, 0, -7579232, -45273668, 970029440,
     /* node 7151 x: shift, then 4 coefficients */
-    34, 0, 666368576, -250192688, 18065348,
+    34, 0, 666638144, -250404048, 18585372,
     /* node 7151 y: shift, then 4 coefficients */
-    34, 0, -250821536, 699716672, -49562020,
+    34, 0, -250899632, 699817152, -49461480,
     /* node 7151 z: shift, then 4 coefficients */
-    33, 0, 2387153, -24898558, 524978976,
+    33, 0, 2224948, -24832542, 524874560,
     /* node 7152 x: shift, then 4 coefficients */
-    34, 0, 345189216, -147672784, -183663504,
+    34, 0, 345297984, -147918400, -183780384,
     /* node 7152 y: shift, then 4 coefficients */
-    35, 0, -375009152, 379115296, -225598448,
+    35, 0, -374820000, 379432896, -225839136,
     /* node 7152 z: shift, then 4 coefficients */
-    34, 0, 26499942, -98096464, 450550048,
+    34, 0, 26366058, -97960536, 450514336,
     /* node 7153 x: shift, then 4 coefficients */
-    34, 0, 376807584, -168424480, -166771600,
+    34, 0, 376931296, -168573360, -167008048,
     /* node 7153 y: shift, then 4 coefficients */
-    35, 0, -402580064, 444747712, -214713440,
+    35, 0, -402555424, 444973408, -214694384,
     /* node 7153 z: shift, then 4 coefficients */
-    34, 0, 18686440, -95320880, 512686528,
+    34, 0, 18550374, -95243704, 512766784,
     /* node 7154 x: shift, then 4 coefficients */
-    34, 0, 462526048, -199458016, -134773472,
+    34, 0, 462428672, -199603648, -134832592,
     /* node 7154 y: shift, then 4 coefficients */
-    34, 0, -216083056, 315467200, -91675624,
+    34, 0, -216098624, 315654784, -91606480,
     /* node 7154 z: shift, then 4 coefficients */
-    34, 0, 1229811, -85403752, 648647232,
+    34, 0, 1162870, -85330968, 648472448,
     /* node 7155 x: shift, then 4 coefficients */
-    34, 0, 639199872, -249313424, -94748784,
+    34, 0, 639810368, -249042048, -94832616,
     /* node 7155 y: shift, then 4 coefficients */
-    34, 0, -244283904, 590545728, -57067456,
+    34, 0, -244473296, 590652096, -56677076,
     /* node 7155 z: shift, then 4 coefficients */
-    34, 0, -9441337, -51385040, 922160448,
+    34, 0, -9732176, -51305492, 922240704,
     /* node 7156 x: shift, then 4 coefficients */
-    34, 0, 677739584, -286418016, -37095936,
+    34, 0, 677791936, -286827168, -36976692,
     /* node 7156 y: shift, then 4 coefficients */
-    34, 0, -254263616, 654450048, -44712560,
+    34, 0, -254647312, 654539264, -44453484,
     /* node 7156 z: shift, then 4 coefficients */
-    34, 0, 5904892, -50373092, 991264640,
+    34, 0, 5703490, -50329332, 990915776,
     /* node 7157 x: shift, then 4 coefficients */
-    34, 0, 666432704, -331915776, 19018754,
+    34, 0, 666434240, -332062848, 18824212,
     /* node 7157 y: shift, then 4 coefficients */
-    34, 0, -255309904, 600924672, -45107636,
+    34, 0, -255481184, 601014272, -45094908,
     /* node 7157 z: shift, then 4 coefficients */
-    34, 0, 26331294, -57654868, 894239680,
+    34, 0, 26209656, -57526304, 894048960,
     /* node 7158 x: shift, then 4 coefficients */
-    34, 0, 369828064, -168765728, -209200240,
+    34, 0, 369775936, -168975824, -208931344,
     /* node 7158 y: shift, then 4 coefficients */
-    35, 0, -390032256, 386628128, -218668592,
+    35, 0, -390495200, 386403680, -217483808,
     /* node 7158 z: shift, then 4 coefficients */
-    34, 0, 27013648, -89240656, 468100672,
+    34, 0, 27267926, -89158320, 467447616,
     /* node 7159 x: shift, then 4 coefficients */
-    34, 0, 401737440, -197161888, -197589920,
+    34, 0, 401872704, -197412704, -197833184,
     /* node 7159 y: shift, then 4 coefficients */
-    35, 0, -424822560, 431284704, -196505648,
+    35, 0, -425067744, 431502816, -196233072,
     /* node 7159 z: shift, then 4 coefficients */
-    34, 0, 29427112, -85910120, 517275264,
+    34, 0, 29364892, -85677600, 517073120,
     /* node 7160 x: shift, then 4 coefficients */
-    34, 0, 449348448, -233791648, -179639936,
+    34, 0, 449500288, -233955632, -179847904,
     /* node 7160 y: shift, then 4 coefficients */
-    34, 0, -223092016, 240760080, -78232160,
+    34, 0, -223198320, 240794224, -78056280,
     /* node 7160 z: shift, then 4 coefficients */
-    34, 0, 25200610, -75674968, 576528896,
+    34, 0, 25161634, -75573944, 576317760,
     /* node 7161 x: shift, then 4 coefficients */
-    34, 0, 541524288, -291945312, -137601920,
+    34, 0, 541649024, -292259616, -137665760,
     /* node 7161 y: shift, then 4 coefficients */
-    34, 0, -244894256, 337820480, -37781324,
+    34, 0, -245013520, 337889056, -37610988,
     /* node 7161 z: shift, then 4 coefficients */
-    34, 0, 14752660, -43347240, 698667072,
+    34, 0, 14618217, -43108540, 698588032,
     /* node 7162 x: shift, then 4 coefficients */
-    34, 0, 597860864, -336728864, -78947408,
+    34, 0, 597981760, -336834688, -79101056,
     /* node 7162 y: shift, then 4 coefficients */
-    34, 0, -263992464, 454974592, -5985036,
+    34, 0, -264052928, 454905280, -5949623,
     /* node 7162 z: shift, then 4 coefficients */
-    34, 0, 19450400, -22100284, 781276352,
+    34, 0, 19346766, -21908744, 781102208,
     /* node 7163 x: shift, then 4 coefficients */
-    34, 0, 616668608, -371230848, -19718248,
+    34, 0, 616748352, -371415200, -19825604,
     /* node 7163 y: shift, then 4 coefficients */
-    34, 0, -257169440, 473406816, -16463131,
+    34, 0, -257242016, 473456288, -16462697,
     /* node 7163 z: shift, then 4 coefficients */
-    34, 0, 40643576, -35535316, 751082432,
+    34, 0, 40525680, -35445720, 750886144,
     /* node 7164 x: shift, then 4 coefficients */
-    34, 0, 622089024, -407108896, 26325092,
+    34, 0, 622172736, -407310848, 26272890,
     /* node 7164 y: shift, then 4 coefficients */
-    34, 0, -252186416, 432868320, -37396596,
+    34, 0, -252294032, 433144160, -37432880,
     /* node 7164 z: shift, then 4 coefficients */
-    34, 0, 49902160, -66387436, 705121088,
+    34, 0, 49867788, -66361364, 704990528,
     /* node 7165 x: shift, then 4 coefficients */
-    36, 0, 317691968, -179031184, 75280120,
+    36, 0, 317206848, -179727280, 74233864,
     /* node 7165 y: shift, then 4 coefficients */
-    36, 0, -278952320, 266039760, 73528120,
+    36, 0, -278751392, 264636656, 72944760,
     /* node 7165 z: shift, then 4 coefficients */
-    36, 0, -61371528, 153237456, 387033248,
+    36, 0, -61758096, 153177072, 387117760,
     /* node 7166 x: shift, then 4 coefficients */
-    35, 0, 366304480, -160620720, 135243152,
+    35, 0, 365594784, -160668880, 134869856,
     /* node 7166 y: shift, then 4 coefficients */
-    35, 0, -301142176, 337323360, 110379992,
+    35, 0, -300238496, 336853920, 111196384,
     /* node 7166 z: shift, then 4 coefficients */
-    35, 0, -30908680, 123436920, 556833600,
+    35, 0, -30791984, 123065024, 556144768,
     /* node 7167 x: shift, then 4 coefficients */
-    36, 0, 529693728, -226244928, 260076560,
+    36, 0, 530003904, -226233472, 260239920,
     /* node 7167 y: shift, then 4 coefficients */
-    36, 0, -406686400, 397421632, 177720896,
+    36, 0, -406973600, 398043808, 178171664,
     /* node 7167 z: shift, then 4 coefficients */
-    35, 0, -32304814, 115592640, 402388608,
+    35, 0, -32406170, 115917336, 402618272,
     /* node 7168 x: shift, then 4 coefficients */
-    35, 0, 577752320, -253484784, 196753072,
+    35, 0, 577980416, -253953120, 196739248,
     /* node 7168 y: shift, then 4 coefficients */
-    35, 0, -380405984, 484409504, 129340304,
+    35, 0, -380599104, 484626784, 129653184,
     /* node 7168 z: shift, then 4 coefficients */
-    35, 0, -25356212, 118908440, 905389248,
+    35, 0, -25699866, 118685112, 904941184,
     /* node 7169 x: shift, then 4 coefficients */
-    35, 0, 484877440, -212277088, 233638080,
+    35, 0, 484615904, -212302304, 233369392,
     /* node 7169 y: shift, then 4 coefficients */
-    35, 0, -317327808, 346178208, 123764016,
+    35, 0, -317242432, 346211072, 123858144,
     /* node 7169 z: shift, then 4 coefficients */
-    35, 0, -18416706, 121033096, 764419072,
+    35, 0, -18486218, 121345120, 764398976,
     /* node 7170 x: shift, then 4 coefficients */
-    35, 0, 393882176, -159480480, 265493152,
+    35, 0, 394219616, -159606640, 265595680,
     /* node 7170 y: shift, then 4 coefficients */
-    35, 0, -237270944, 224763472, 117258592,
+    35, 0, -237783056, 225641120, 117673328,
     /* node 7170 z: shift, then 4 coefficients */
-    35, 0, -14660446, 114865312, 609915392,
+    35, 0, -14595862, 115026584, 610491776,
     /* node 7171 x: shift, then 4 coefficients */
-    34, 0, 428088896, -188673728, 132834096,
+    34, 0, 428408288, -188774224, 132840096,
     /* node 7171 y: shift, then 4 coefficients */
-    34, 0, -208518400, 336685280, 43316640,
+    34, 0, -208283152, 336756896, 43754072,
     /* node 7171 z: shift, then 4 coefficients */
-    34, 0, 12857271, 24489564, 686775040,
+    34, 0, 12785794, 24820284, 686782720,
     /* node 7172 x: shift, then 4 coefficients */
-    34, 0, 338991904, -155995760, 153996096,
+    34, 0, 338742400, -156120960, 153814288,
     /* node 7172 y: shift, then 4 coefficients */
-    35, 0, -359486976, 434586496, 120141464,
+    35, 0, -359675744, 434567552, 120072480,
     /* node 7172 z: shift, then 4 coefficients */
-    34, 0, 3064358, 39548440, 529692608,
+    34, 0, 2974536, 39693916, 529538880,
     /* node 7173 x: shift, then 4 coefficients */
-    34, 0, 292720480, -135441984, 177181024,
+    34, 0, 292522016, -135544896, 176833392,
     /* node 7173 y: shift, then 4 coefficients */
-    35, 0, -291937984, 302776448, 130515560,
+    35, 0, -292416608, 303350944, 130409848,
     /* node 7173 z: shift, then 4 coefficients */
-    35, 0, 6851124, 84478824, 881233536,
+    35, 0, 6251967, 84784552, 880745984,
     /* node 7174 x: shift, then 4 coefficients */
-    34, 0, 249789520, -107609336, 198508720,
+    34, 0, 249732272, -107575688, 198480368,
     /* node 7174 y: shift, then 4 coefficients */
-    35, 0, -225581760, 205348976, 136168144,
+    35, 0, -225520192, 205356064, 136544144,
     /* node 7174 z: shift, then 4 coefficients */
-    35, 0, 11298387, 80559152, 727006976,
+    35, 0, 11057718, 80865280, 726836288,
     /* node 7175 x: shift, then 4 coefficients */
-    34, 0, 576496064, -274932288, 145856016,
+    34, 0, 577131840, -275494496, 145919808,
     /* node 7175 y: shift, then 4 coefficients */
-    34, 0, -229352384, 456298816, -30190618,
+    34, 0, -229784832, 456210400, -30547638,
     /* node 7175 z: shift, then 4 coefficients */
-    34, 0, 33390422, -52360844, 855630144,
+    34, 0, 33458734, -52404196, 855286912,
     /* node 7176 x: shift, then 4 coefficients */
-    34, 0, 448073088, -229845552, 180928832,
+    34, 0, 447888288, -229955104, 180766352,
     /* node 7176 y: shift, then 4 coefficients */
-    35, 0, -399632032, 542224512, 19959336,
+    35, 0, -399935680, 542275648, 20199600,
     /* node 7176 z: shift, then 4 coefficients */
-    34, 0, 25973850, -16104446, 682976896,
+    34, 0, 25808968, -15968712, 682739072,
     /* node 7177 x: shift, then 4 coefficients */
-    34, 0, 370754048, -190817536, 203623664,
+    34, 0, 370955712, -190902688, 203881264,
     /* node 7177 y: shift, then 4 coefficients */
-    35, 0, -331302176, 365043072, 85959576,
+    35, 0, -330982656, 364358176, 85961144,
     /* node 7177 z: shift, then 4 coefficients */
-    34, 0, 16556742, 11565632, 540984832,
+    34, 0, 16779250, 11702067, 541093888,
     /* node 7178 x: shift, then 4 coefficients */
-    34, 0, 334730144, -168598704, 230025504,
+    34, 0, 334500960, -168710080, 229674720,
     /* node 7178 y: shift, then 4 coefficients */
-    35, 0, -268201424, 265806944, 115276032,
+    35, 0, -268604544, 266278448, 114856976,
     /* node 7178 z: shift, then 4 coefficients */
-    35, 0, 35656344, 37138472, 929219776,
+    35, 0, 35613568, 37007232, 928936064,
     /* node 7180 x: shift, then 4 coefficients */
-    33, 0, 294101824, -181409936, 64241664,
+    33, 0, 294154976, -181484656, 64221416,
     /* node 7180 y: shift, then 4 coefficients */
-    34, 0, -236053888, 418492704, -71329968,
+    34, 0, -236262624, 418605120, -71423960,
     /* node 7180 z: shift, then 4 coefficients */
-    34, 0, 40812096, -98286848, 746797696,
+    34, 0, 40755820, -98224512, 746722560,
     /* node 7181 x: shift, then 4 coefficients */
-    34, 0, 544999424, -335475552, 182568688,
+    34, 0, 544809344, -335470976, 182341936,
     /* node 7181 y: shift, then 4 coefficients */
-    34, 0, -217362432, 328625312, -50732596,
+    34, 0, -217559072, 328851584, -50719516,
     /* node 7181 z: shift, then 4 coefficients */
-    34, 0, 41482968, -83440136, 719617280,
+    34, 0, 41399872, -83357728, 719579008,
     /* node 7182 x: shift, then 4 coefficients */
-    34, 0, 482499296, -286285088, 226334512,
+    34, 0, 482599552, -286524416, 226113648,
     /* node 7182 y: shift, then 4 coefficients */
-    35, 0, -367601536, 467515648, -7726640,
+    35, 0, -367896704, 467710240, -7637578,
     /* node 7182 z: shift, then 4 coefficients */
-    34, 0, 38040424, -47698888, 637473856,
+    34, 0, 37868084, -47671316, 637178624,
     /* node 7183 x: shift, then 4 coefficients */
-    34, 0, 419980448, -239748688, 253901456,
+    34, 0, 419844608, -239807888, 253650912,
     /* node 7183 y: shift, then 4 coefficients */
-    35, 0, -294932672, 324841312, 67234032,
+    35, 0, -295691808, 325599872, 66949820,
     /* node 7183 z: shift, then 4 coefficients */
-    34, 0, 31255866, -17290944, 539368064,
+    34, 0, 31040704, -17180784, 539086656,
     /* node 7184 x: shift, then 4 coefficients */
-    34, 0, 383340928, -209436528, 274895264,
+    34, 0, 383297024, -209614160, 274735712,
     /* node 7184 y: shift, then 4 coefficients */
-    35, 0, -224664640, 231133952, 122720144,
+    35, 0, -225068704, 231607504, 122587184,
     /* node 7184 z: shift, then 4 coefficients */
-    35, 0, 63955612, -11287994, 948666368,
+    35, 0, 63674152, -10977709, 948342976,
     /* node 7186 x: shift, then 4 coefficients */
-    33, 0, 311559456, -213250496, 58586896,
+    33, 0, 311608672, -213408496, 58537656,
     /* node 7186 y: shift, then 4 coefficients */
-    34, 0, -234583344, 378718784, -52457672,
+    34, 0, -234747984, 378946880, -52444688,
     /* node 7186 z: shift, then 4 coefficients */
-    34, 0, 52822180, -93406240, 685471680,
+    34, 0, 52709372, -93378072, 685312000,
     /* node 7187 x: shift, then 4 coefficients */
-    33, 0, 299945152, -204971120, 84028960,
+    33, 0, 299948480, -205040912, 83962000,
     /* node 7187 y: shift, then 4 coefficients */
-    34, 0, -220093968, 339432928, -51987936,
+    34, 0, -220255664, 339567296, -51976112,
     /* node 7187 z: shift, then 4 coefficients */
-    34, 0, 50367984, -96042856, 680076992,
+    34, 0, 50260620, -95952136, 679962560,
     /* node 7188 x: shift, then 4 coefficients */
-    33, 0, 282654400, -190330720, 106096248,
+    33, 0, 282664736, -190411392, 106050160,
     /* node 7188 y: shift, then 4 coefficients */
-    35, 0, -392549024, 558313600, -67789960,
+    35, 0, -392947584, 558688576, -67826792,
     /* node 7188 z: shift, then 4 coefficients */
-    34, 0, 49660572, -85972232, 654299328,
+    34, 0, 49557072, -85876888, 654188224,
     /* node 7189 x: shift, then 4 coefficients */
-    33, 0, 260887616, -169744672, 130028384,
+    33, 0, 260934368, -169838256, 129965920,
     /* node 7189 y: shift, then 4 coefficients */
-    35, 0, -321565088, 409892224, 1689462,
+    35, 0, -321506496, 409914496, 2019766,
     /* node 7189 z: shift, then 4 coefficients */
-    34, 0, 49199808, -62933724, 598645376,
+    34, 0, 49158196, -62816808, 598659456,
     /* node 7190 x: shift, then 4 coefficients */
-    34, 0, 472028128, -292622208, 292217024,
+    34, 0, 472364736, -292827200, 292460768,
     /* node 7190 y: shift, then 4 coefficients */
-    35, 0, -250418240, 292427008, 72366856,
+    35, 0, -249926400, 291514304, 72679560,
     /* node 7190 z: shift, then 4 coefficients */
-    34, 0, 47075880, -40844248, 533792896,
+    34, 0, 47264976, -40862440, 533803456,
     /* node 7221 x: shift, then 4 coefficients */
-    34, 0, 431979104, -226395712, -232292912,
+    34, 0, 432139040, -226578960, -232494400,
     /* node 7221 y: shift, then 4 coefficients */
-    35, 0, -380757504, 373547136, -193616736,
+    35, 0, -381149120, 373882016, -193147360,
     /* node 7221 z: shift, then 4 coefficients */
-    34, 0, 29654352, -78787304, 490965248,
+    34, 0, 29392770, -78777056, 491158208,
     /* node 7222 x: shift, then 4 coefficients */
-    34, 0, 478759296, -272321984, -235294496,
+    34, 0, 478918048, -272484896, -235497104,
     /* node 7222 y: shift, then 4 coefficients */
-    35, 0, -372435648, 370414816, -171227872,
+    35, 0, -372194016, 370326464, -171452512,
     /* node 7222 z: shift, then 4 coefficients */
-    34, 0, 37249764, -73018448, 496642528,
+    34, 0, 37313332, -73055016, 496438240,
     /* node 7223 x: shift, then 4 coefficients */
-    34, 0, 465313920, -257951024, -222921040,
+    34, 0, 465723488, -258312896, -223398560,
     /* node 7223 y: shift, then 4 coefficients */
-    35, 0, -417455360, 422496160, -178635648,
+    35, 0, -417331904, 422676032, -178812256,
     /* node 7223 z: shift, then 4 coefficients */
-    34, 0, 34823444, -74949904, 534591072,
+    34, 0, 34883676, -74992912, 534270272,
     /* node 7225 x: shift, then 4 coefficients */
-    34, 0, 509872480, -302656416, -212846800,
+    34, 0, 509798144, -302844352, -212677696,
     /* node 7225 y: shift, then 4 coefficients */
-    35, 0, -403511072, 421053312, -151883168,
+    35, 0, -403455520, 421109216, -151945168,
     /* node 7225 z: shift, then 4 coefficients */
-    34, 0, 43783196, -69637456, 535697312,
+    34, 0, 43733076, -69654216, 535569280,
     /* node 7226 x: shift, then 4 coefficients */
-    34, 0, 507122688, -298710432, -196126560,
+    34, 0, 507159072, -298986048, -196171408,
     /* node 7226 y: shift, then 4 coefficients */
-    35, 0, -428228704, 459990848, -139111680,
+    35, 0, -428263776, 460117760, -138981472,
     /* node 7226 z: shift, then 4 coefficients */
-    34, 0, 40728720, -66558752, 563814208,
+    34, 0, 40869656, -66595192, 563510208,
     /* node 7229 x: shift, then 4 coefficients */
-    33, 0, 283261408, -180545680, -87017200,
+    33, 0, 283292352, -180617744, -87066144,
     /* node 7229 y: shift, then 4 coefficients */
-    35, 0, -411468032, 466544704, -108563704,
+    35, 0, -411250400, 466399232, -108511312,
     /* node 7229 z: shift, then 4 coefficients */
-    34, 0, 51297672, -63066420, 559169728,
+    34, 0, 51196216, -63010592, 558986112,
     /* node 7230 x: shift, then 4 coefficients */
-    33, 0, 286126880, -182697680, -75529912,
+    33, 0, 286201088, -182782160, -75565360,
     /* node 7230 y: shift, then 4 coefficients */
-    35, 0, -441658304, 532059744, -86243584,
+    35, 0, -441688064, 532174688, -86234808,
     /* node 7230 z: shift, then 4 coefficients */
-    34, 0, 47451628, -55117932, 594616000,
+    34, 0, 47441312, -55105224, 594427904,
     /* node 7234 x: shift, then 4 coefficients */
-    33, 0, 317492448, -217969904, -63637076,
+    33, 0, 317549536, -218133712, -63669232,
     /* node 7234 y: shift, then 4 coefficients */
-    35, 0, -438066624, 538361472, -89289560,
+    35, 0, -438232416, 538463616, -89205704,
     /* node 7234 z: shift, then 4 coefficients */
-    34, 0, 68169184, -68540024, 588304640,
+    34, 0, 67966352, -68321976, 588303232,
     /* node 7235 x: shift, then 4 coefficients */
-    33, 0, 312149536, -212390384, -48397476,
+    33, 0, 312226752, -212547552, -48474944,
     /* node 7235 y: shift, then 4 coefficients */
-    34, 0, -236553312, 310172032, -33256930,
+    34, 0, -236564416, 310154400, -33238362,
     /* node 7235 z: shift, then 4 coefficients */
-    34, 0, 60651764, -57871664, 625357184,
+    34, 0, 60445480, -57658616, 625266752,
     /* node 7241 x: shift, then 4 coefficients */
-    33, 0, 330682016, -232928032, -23459456,
+    33, 0, 330732608, -233037792, -23503826,
     /* node 7241 y: shift, then 4 coefficients */
-    34, 0, -245737776, 336115456, -35267200,
+    34, 0, -245785856, 336157216, -35188980,
     /* node 7241 z: shift, then 4 coefficients */
-    34, 0, 72308872, -71364136, 645615872,
+    34, 0, 72170536, -71288112, 645445184,
     /* node 7248 x: shift, then 4 coefficients */
-    33, 0, 339911680, -244295952, -1880235,
+    33, 0, 339969312, -244407712, -1951239,
     /* node 7248 y: shift, then 4 coefficients */
-    34, 0, -246882256, 347106560, -36725980,
+    34, 0, -246948960, 347176832, -36666060,
     /* node 7248 z: shift, then 4 coefficients */
-    34, 0, 75502440, -78676600, 658179136,
+    34, 0, 75342144, -78586792, 658054080,
     /* node 7442 x: shift, then 4 coefficients */
-    33, 0, 322619840, -235850288, 114796184,
+    33, 0, 322650208, -235950368, 114720976,
     /* node 7442 y: shift, then 4 coefficients */
-    35, 0, -346243968, 500150080, -30877882,
+    35, 0, -346552992, 500473856, -30928530,
     /* node 7442 z: shift, then 4 coefficients */
-    34, 0, 71251448, -94516896, 617226880,
+    34, 0, 71120264, -94409472, 617094208,
     /* node 7443 x: shift, then 4 coefficients */
-    33, 0, 331910048, -243645392, 90711872,
+    33, 0, 331937632, -243770752, 90641440,
     /* node 7443 y: shift, then 4 coefficients */
-    35, 0, -400111744, 590145664, -58608432,
+    35, 0, -400413632, 590390656, -58631456,
     /* node 7443 z: shift, then 4 coefficients */
-    34, 0, 71198896, -97813136, 643162176,
+    34, 0, 71078520, -97722576, 643053696,
     /* node 7444 x: shift, then 4 coefficients */
-    33, 0, 338576512, -248681552, 68088984,
+    33, 0, 338595808, -248784912, 68002160,
     /* node 7444 y: shift, then 4 coefficients */
-    34, 0, -216651408, 321995872, -34407760,
+    34, 0, -216768800, 322097600, -34418592,
     /* node 7444 z: shift, then 4 coefficients */
-    34, 0, 72776008, -96346112, 654168384,
+    34, 0, 72603608, -96165320, 653990208,
     /* node 7481 x: shift, then 4 coefficients */
-    35, 0, 578783616, -149755888, -102068400,
+    35, 0, 579184192, -150099648, -102513152,
     /* node 7481 y: shift, then 4 coefficients */
-    37, 0, 76332688, 488135200, -156106224,
+    37, 0, 76241968, 487696896, -157539888,
     /* node 7481 z: shift, then 4 coefficients */
-    35, 0, 16314337, -82994512, 460323872,
+    35, 0, 15986191, -82860952, 460270496,
     /* node 7482 x: shift, then 4 coefficients */
-    35, 0, 461364576, -75667648, -76851360,
+    35, 0, 462591904, -74949080, -77341144,
     /* node 7482 y: shift, then 4 coefficients */
-    37, 0, 204282288, 406856576, -172981024,
+    37, 0, 205283680, 413421792, -172397440,
     /* node 7482 z: shift, then 4 coefficients */
-    36, 0, 18721310, -136438144, 781398464,
+    36, 0, 17644056, -135258672, 783619328,
     /* node 7545 x: shift, then 4 coefficients */
-    34, 0, 330910624, -143995136, -195804544,
+    34, 0, 331030432, -144207040, -195947280,
     /* node 7545 y: shift, then 4 coefficients */
-    35, 0, -335557248, 322908000, -213698112,
+    35, 0, -335059424, 322636576, -214277392,
     /* node 7545 z: shift, then 4 coefficients */
-    35, 0, 48500924, -180964896, 822507840,
+    35, 0, 48246468, -180633088, 822168384,
     /* node 7546 x: shift, then 4 coefficients */
-    34, 0, 296613504, -120932560, -166310912,
+    34, 0, 296572960, -121052664, -166293936,
     /* node 7546 y: shift, then 4 coefficients */
-    35, 0, -335710560, 326748960, -214470976,
+    35, 0, -336002048, 327019968, -214143136,
     /* node 7546 z: shift, then 4 coefficients */
-    35, 0, 54619536, -194735152, 767692672,
+    35, 0, 54727152, -194615200, 767511040,
     /* node 7547 x: shift, then 4 coefficients */
-    35, 0, 331805568, -108094512, -169752128,
+    35, 0, 332079008, -107981672, -170273072,
     /* node 7547 y: shift, then 4 coefficients */
-    35, 0, -235775360, 243243584, -169855632,
+    35, 0, -236023344, 243723680, -169925728,
     /* node 7547 z: shift, then 4 coefficients */
-    35, 0, 44631176, -168757328, 455950464,
+    35, 0, 44568864, -168592608, 456010208,
     /* node 7561 x: shift, then 4 coefficients */
-    33, 0, 318792288, -219168192, 34705476,
+    33, 0, 318820992, -219214320, 34648172,
     /* node 7561 y: shift, then 4 coefficients */
-    34, 0, -244171552, 394917952, -44989708,
+    34, 0, -244254608, 394824832, -44912116,
     /* node 7561 z: shift, then 4 coefficients */
-    34, 0, 57663176, -84419328, 684821824,
+    34, 0, 57507904, -84409376, 684695104,
     /* node 7562 x: shift, then 4 coefficients */
-    34, 0, 614846976, -383104960, 68955952,
+    34, 0, 614937536, -383321824, 68853168,
     /* node 7562 y: shift, then 4 coefficients */
-    34, 0, -245529408, 461890240, -56511152,
+    34, 0, -245700704, 462042848, -56461888,
     /* node 7562 z: shift, then 4 coefficients */
-    34, 0, 41245936, -81443160, 737769408,
+    34, 0, 41135540, -81395144, 737639808,
     /* node 7563 x: shift, then 4 coefficients */
-    34, 0, 659088320, -301913056, 82027864,
+    34, 0, 659220736, -302065312, 81894720,
     /* node 7563 y: shift, then 4 coefficients */
-    34, 0, -245365184, 602667840, -52873524,
+    34, 0, -245519312, 602800256, -52837568,
     /* node 7563 z: shift, then 4 coefficients */
-    34, 0, 24843882, -63631780, 963556672,
+    34, 0, 24787684, -63657396, 963302912,
     /* node 7564 x: shift, then 4 coefficients */
-    34, 0, 597607296, -231005712, 88325832,
+    34, 0, 597624384, -231225168, 88226136,
     /* node 7564 y: shift, then 4 coefficients */
-    34, 0, -240237008, 586687040, -16773439,
+    34, 0, -240417840, 587010880, -16542064,
     /* node 7564 z: shift, then 4 coefficients */
-    34, 0, 10948679, -28079390, 931187840,
+    34, 0, 10861835, -27797952, 930957184,
     /* node 7565 x: shift, then 4 coefficients */
-    34, 0, 374438880, -154072928, 71931048,
+    34, 0, 374196832, -154912592, 71526648,
     /* node 7565 y: shift, then 4 coefficients */
-    34, 0, -219811664, 376262944, 40107132,
+    34, 0, -219986288, 375537440, 39989796,
     /* node 7565 z: shift, then 4 coefficients */
-    34, 0, -4211438, 41019628, 596745088,
+    34, 0, -4379808, 40398136, 596443648,
     /* node 7566 x: shift, then 4 coefficients */
-    35, 0, 459844640, -206005440, 111692736,
+    35, 0, 459720608, -205984992, 111665848,
     /* node 7566 y: shift, then 4 coefficients */
-    35, 0, -364898144, 460585472, 79493200,
+    35, 0, -364874944, 460863840, 79581136,
     /* node 7566 z: shift, then 4 coefficients */
-    35, 0, -30159564, 110203112, 676622144,
+    35, 0, -30233268, 110595568, 676839488,
     /* node 7567 x: shift, then 4 coefficients */
-    36, 0, 489663200, -271882368, 103393104,
+    36, 0, 489819904, -271030048, 103528344,
     /* node 7567 y: shift, then 4 coefficients */
-    36, 0, -452794464, 490902944, 94575192,
+    36, 0, -453169600, 494088896, 95181128,
     /* node 7567 z: shift, then 4 coefficients */
-    36, 0, -64867484, 153692096, 582819648,
+    36, 0, -65216384, 154318736, 583835136,
     /* node 7584 x: shift, then 4 coefficients */
-    34, 0, 387427936, -187450832, -229522048,
+    34, 0, 387460448, -187651104, -229536496,
     /* node 7584 y: shift, then 4 coefficients */
-    35, 0, -322761312, 309024160, -200501056,
+    35, 0, -323293312, 309490240, -200005856,
     /* node 7584 z: shift, then 4 coefficients */
-    35, 0, 48261736, -162631792, 861501312,
+    35, 0, 47998900, -162417088, 861497856,
     /* node 7585 x: shift, then 4 coefficients */
-    34, 0, 385158368, -185997184, -219864784,
+    34, 0, 385160256, -186187872, -219894192,
     /* node 7585 y: shift, then 4 coefficients */
-    35, 0, -373954688, 362273920, -207829648,
+    35, 0, -374244576, 362636512, -207670272,
     /* node 7585 z: shift, then 4 coefficients */
-    34, 0, 25602154, -83961272, 466341984,
+    34, 0, 25635734, -83809688, 466020608,
     /* node 7586 x: shift, then 4 coefficients */
-    34, 0, 422000256, -215708224, -222564368,
+    34, 0, 422243328, -216052256, -222821584,
     /* node 7586 y: shift, then 4 coefficients */
-    35, 0, -414938720, 414570720, -201065808,
+    35, 0, -414858080, 414750112, -201087664,
     /* node 7586 z: shift, then 4 coefficients */
-    34, 0, 28651282, -82064080, 515489984,
+    34, 0, 28595204, -81982864, 515367456,
     /* node 7587 x: shift, then 4 coefficients */
-    34, 0, 457456960, -247270272, -206100576,
+    34, 0, 457873248, -247619216, -206608384,
     /* node 7587 y: shift, then 4 coefficients */
-    35, 0, -436222112, 452744704, -171616560,
+    35, 0, -435992320, 452887296, -171957808,
     /* node 7587 z: shift, then 4 coefficients */
-    34, 0, 30842052, -75512312, 557405824,
+    34, 0, 30673658, -75494000, 557405248,
     /* node 7588 x: shift, then 4 coefficients */
-    34, 0, 515959648, -301085440, -167352384,
+    34, 0, 516261088, -301365376, -167672176,
     /* node 7588 y: shift, then 4 coefficients */
-    34, 0, -224873008, 260128080, -55413152,
+    34, 0, -224759728, 260219696, -55616452,
     /* node 7588 z: shift, then 4 coefficients */
-    34, 0, 33466956, -57299264, 605964544,
+    34, 0, 33301540, -57209724, 605878144,
     /* node 7589 x: shift, then 4 coefficients */
-    34, 0, 578202880, -364346944, -114227232,
+    34, 0, 578230016, -364495136, -114301672,
     /* node 7589 y: shift, then 4 coefficients */
-    34, 0, -243898000, 330004192, -24052358,
+    34, 0, -243942000, 330057696, -23997058,
     /* node 7589 z: shift, then 4 coefficients */
-    34, 0, 41005556, -39627292, 658954944,
+    34, 0, 40907084, -39578688, 658769600,
     /* node 7590 x: shift, then 4 coefficients */
-    34, 0, 611645312, -399986752, -59606216,
+    34, 0, 611791104, -400330784, -59685060,
     /* node 7590 y: shift, then 4 coefficients */
-    34, 0, -252668688, 380013024, -20549468,
+    34, 0, -252879104, 380299424, -20420030,
     /* node 7590 z: shift, then 4 coefficients */
-    34, 0, 49886612, -44365992, 679671424,
+    34, 0, 49833692, -44333672, 679569152,
     /* node 7591 x: shift, then 4 coefficients */
-    34, 0, 634454336, -430264704, -8849490,
+    34, 0, 634360640, -430225280, -8905151,
     /* node 7591 y: shift, then 4 coefficients */
-    34, 0, -253287536, 388178112, -31105964,
+    34, 0, -253225104, 388062688, -31121756,
     /* node 7591 z: shift, then 4 coefficients */
-    34, 0, 58887132, -61784448, 678947072,
+    34, 0, 58588024, -61355044, 678897216,
     /* node 7592 x: shift, then 4 coefficients */
-    33, 0, 325813184, -226827888, 15554987,
+    33, 0, 325856832, -226941680, 15487326,
     /* node 7592 y: shift, then 4 coefficients */
-    34, 0, -249698496, 381020832, -37033512,
+    34, 0, -249839024, 381144864, -36937784,
     /* node 7592 z: shift, then 4 coefficients */
-    34, 0, 63802596, -75878144, 675677312,
+    34, 0, 63668356, -75925968, 675552896,
     /* node 7665 x: shift, then 4 coefficients */
-    33, 0, 347265568, -255816720, 39835440,
+    33, 0, 347309824, -255929056, 39772860,
     /* node 7665 y: shift, then 4 coefficients */
-    34, 0, -228399792, 332761120, -35024384,
+    34, 0, -228504016, 332890496, -35019464,
     /* node 7665 z: shift, then 4 coefficients */
-    34, 0, 77761072, -90383472, 655936576,
+    34, 0, 77603376, -90341808, 655783360,
     /* node 7688 x: shift, then 4 coefficients */
-    33, 0, 346267040, -252325072, 17121500,
+    33, 0, 346308864, -252388608, 17043764,
     /* node 7688 y: shift, then 4 coefficients */
-    34, 0, -239847216, 340690208, -36419224,
+    34, 0, -239915664, 340725952, -36424744,
     /* node 7688 z: shift, then 4 coefficients */
-    34, 0, 78211472, -84965304, 659728320,
+    34, 0, 78038376, -84926216, 659639040,
     /* node 7705 x: shift, then 4 coefficients */
-    33, 0, 326736064, -233223968, 53609524,
+    33, 0, 326762240, -233281440, 53542376,
     /* node 7705 y: shift, then 4 coefficients */
-    34, 0, -232916080, 360325984, -43183036,
+    34, 0, -233048384, 360466720, -43162336,
     /* node 7705 z: shift, then 4 coefficients */
-    34, 0, 63770624, -92184328, 671722432,
+    34, 0, 63647208, -92105920, 671553280,
     /* node 7706 x: shift, then 4 coefficients */
-    33, 0, 320599392, -229410592, 77115128,
+    33, 0, 320639232, -229501424, 77007312,
     /* node 7706 y: shift, then 4 coefficients */
-    34, 0, -220537472, 334654976, -42133768,
+    34, 0, -220705808, 334898592, -42199972,
     /* node 7706 z: shift, then 4 coefficients */
-    34, 0, 61506532, -96329072, 666765824,
+    34, 0, 61350880, -96271384, 666657152,
     /* node 7707 x: shift, then 4 coefficients */
-    33, 0, 310518688, -221475920, 99397448,
+    33, 0, 310535872, -221589856, 99324944,
     /* node 7707 y: shift, then 4 coefficients */
-    35, 0, -403567872, 594545408, -69341264,
+    35, 0, -403900704, 594803264, -69414600,
     /* node 7707 z: shift, then 4 coefficients */
-    34, 0, 60240476, -94347904, 650153536,
+    34, 0, 60114308, -94286280, 650035520,
     /* node 7708 x: shift, then 4 coefficients */
-    33, 0, 295562240, -206899440, 122979560,
+    33, 0, 295548256, -206980800, 122887632,
     /* node 7708 y: shift, then 4 coefficients */
-    35, 0, -342365504, 476019744, -27327590,
+    35, 0, -342762656, 476452032, -27319104,
     /* node 7708 z: shift, then 4 coefficients */
-    34, 0, 60372008, -85042960, 616455808,
+    34, 0, 60231700, -84932240, 616232896,
     /* node 7709 x: shift, then 4 coefficients */
-    33, 0, 276236192, -187448944, 144305424,
+    33, 0, 276165952, -187506544, 144159744,
     /* node 7709 y: shift, then 4 coefficients */
-    35, 0, -270346080, 353863616, 30458206,
+    35, 0, -270713536, 354013728, 30293166,
     /* node 7709 z: shift, then 4 coefficients */
-    34, 0, 59923544, -69892600, 568678208,
+    34, 0, 59759264, -69771856, 568463552,
     /* node 7716 x: shift, then 4 coefficients */
-    34, 0, 351202688, -158998256, -209329168,
+    34, 0, 351615776, -159027728, -209801936,
     /* node 7716 y: shift, then 4 coefficients */
-    35, 0, -322191680, 311433664, -217270112,
+    35, 0, -321223040, 311133632, -218579808,
     /* node 7716 z: shift, then 4 coefficients */
-    35, 0, 51675052, -175392400, 830784960,
+    35, 0, 51266380, -175437792, 830991552,
     /* node 7724 x: shift, then 4 coefficients */
-    33, 0, 330758944, -235031472, 32871748,
+    33, 0, 330779200, -235069776, 32815058,
     /* node 7724 y: shift, then 4 coefficients */
-    34, 0, -240980592, 365715136, -39472924,
+    34, 0, -241059232, 365734144, -39425560,
     /* node 7724 z: shift, then 4 coefficients */
-    34, 0, 66836200, -84977176, 670948608,
+    34, 0, 66735904, -84849984, 670774400,
     /* node 7727 x: shift, then 4 coefficients */
-    36, 0, 739690624, -128799712, -199462480,
+    36, 0, 739829184, -128932216, -199152256,
     /* node 7727 y: shift, then 4 coefficients */
-    38, 0, 254351040, 603812864, -174454512,
+    38, 0, 251620544, 607247872, -171484080,
     /* node 7727 z: shift, then 4 coefficients */
-    36, 0, 1274842, -138268128, 644344448,
+    36, 0, 1214745, -137767536, 644205568,
     /* node 7733 x: shift, then 4 coefficients */
-    36, 0, 662659904, -62551732, -134615664,
+    36, 0, 662810752, -62577004, -134711904,
     /* node 7733 y: shift, then 4 coefficients */
-    37, 0, 234601040, 292858240, -155009536,
+    37, 0, 236270304, 292608384, -153250032,
     /* node 7733 z: shift, then 4 coefficients */
-    36, 0, 10202626, -118575432, 582246592,
+    36, 0, 9483966, -118043400, 583793280,
     /* node 7745 x: shift, then 4 coefficients */
-    35, 0, 560123712, -125228768, -56493384,
+    35, 0, 559024512, -125246432, -55830080,
     /* node 7745 y: shift, then 4 coefficients */
-    37, 0, 165758912, 440940704, -205160208,
+    37, 0, 165313472, 440007360, -202684016,
     /* node 7745 z: shift, then 4 coefficients */
-    36, 0, 43491888, -138234128, 881326144,
+    36, 0, 44483344, -137306656, 880558784,
     /* node 7757 x: shift, then 4 coefficients */
-    35, 0, 600119424, -149944928, 15488532,
+    35, 0, 599726720, -150611408, 15445298,
     /* node 7757 y: shift, then 4 coefficients */
-    37, 0, 254673232, 354545952, -205356880,
+    37, 0, 249824880, 356320864, -208422544,
     /* node 7757 z: shift, then 4 coefficients */
-    36, 0, 91420544, -94534640, 857633664,
+    36, 0, 90973496, -94197424, 857064896,
     /* node 7761 x: shift, then 4 coefficients */
-    34, 0, 481792736, -257808832, -35860168,
+    34, 0, 481796224, -257979296, -35937548,
     /* node 7761 y: shift, then 4 coefficients */
-    38, 0, -217834928, 765124032, 17765466,
+    38, 0, -218132944, 765292864, 17408986,
     /* node 7761 z: shift, then 4 coefficients */
-    35, 0, 83566672, -110474496, 616802432,
+    35, 0, 83517320, -110379312, 616668928,
     /* node 7763 x: shift, then 4 coefficients */
-    34, 0, 442268928, -212426704, 45318092,
+    34, 0, 442220480, -212614720, 45200756,
     /* node 7763 y: shift, then 4 coefficients */
-    38, 0, 378515648, 393370624, -159221696,
+    38, 0, 377873632, 393979744, -158194944,
     /* node 7763 z: shift, then 4 coefficients */
-    35, 0, 87911984, -81773016, 548620288,
+    35, 0, 87846488, -81672056, 548712512,
     /* node 7769 x: shift, then 4 coefficients */
-    34, 0, 402106784, -155394160, -13299905,
+    34, 0, 402077088, -155534224, -13323293,
     /* node 7769 y: shift, then 4 coefficients */
-    37, 0, 62826188, 430417472, -123213800,
+    37, 0, 62693188, 430411488, -123307504,
     /* node 7769 z: shift, then 4 coefficients */
-    35, 0, 55228708, -82272384, 558006144,
+    35, 0, 55303788, -82275112, 557996864,
 };
 const tfit_model_q31 tfit_heart_forward_q31 = {
     3u, 1u, 965u, 1u, 14488u,
     tfit_heart_forward_q31_coef, tfit_heart_forward_nodes,
     tfit_heart_forward_q31_coef + 14488u, tfit_heart_forward_nodes + 965u,
-    0xad1823b2u
+    0x05c1dc28u
 };
 
 static const uint32_t tfit_heart_contact_dims[1] = {
@@ -11876,49 +11876,49 @@ static const uint32_t tfit_heart_contact_nodes[1] = {
 };
 static const float tfit_heart_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    -0x1.6eb334p-54f, 0x1.5d999ap-55f, -0x1.8p-55f,
+    0x1.954p-53f, -0x1.79999ap-58f, 0x1.99999ap-59f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.de2b34p-2f, 0x1.38832cp-3f, 0x1.578bc6p-8f, 0x1.53833cp-3f,
-    0x1.bf295ep-2f, 0x1.3973dep-6f, 0x1.c40854p-8f, 0x1.37a366p-6f,
-    0x1.087a0ep-2f,
+    0x1.de21eap-2f, 0x1.38b3dap-3f, 0x1.6e8576p-8f, 0x1.533066p-3f,
+    0x1.bf2cd6p-2f, 0x1.3d7cf2p-6f, 0x1.d48ddap-8f, 0x1.367d6ap-6f,
+    0x1.085c4cp-2f,
     /* node 2876 x force */
-    -0x1.9fb932p-57f, 0x1.333334p-2f, 0x1.8ceccp-28f, -0x1.aed03ap-32f,
+    0x1.92dc8ap-55f, 0x1.333334p-2f, 0x1.e106bep-30f, -0x1.1b9912p-31f,
     /* node 2876 y force */
-    0x1.831ee2p-59f, 0x1.9bdae8p-29f, 0x1.333332p-2f, 0x1.bbe6p-31f,
+    0x1.2cd7f2p-57f, 0x1.02b01ep-28f, 0x1.333332p-2f, -0x1.0d2894p-31f,
     /* node 2876 z force */
-    0x1.19999ap-59f, -0x1.2a1dfep-33f, -0x1.1c3068p-31f, 0x1.333334p-2f,
+    -0x1.99999ap-63f, 0x1.fe38d6p-34f, 0x1.7a5b46p-32f, 0x1.333332p-2f,
 };
 const tfit_model tfit_heart_contact = {
     4u, 4u, 1u, 1u, 24u,
     tfit_heart_contact_dims, tfit_heart_contact_coef, tfit_heart_contact_nodes,
     tfit_heart_contact_dims + 1u, tfit_heart_contact_coef + 24u, tfit_heart_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x40153f87u, 0xbff86bc2u, 0x3f540fdeu, 0xbf74de9du, 0x40041f62u, 0xbfa754bdu,
-     0x3fe67f89u, 0xbf2d7747u, 0x3fed02b3u, 0xbf6464bbu, 0x3df8a132u, 0xbf8eadb1u,
-     0xbf6d03d3u, 0xbf606ae8u, 0xc00959aau, 0xc0ad8fc8u, 0xc1652c4cu, 0x41be4523u,
-     0xf0db10cau, 0xf190a0e7u, 0x71f02793u, 0xc19dd962u, 0x41873904u, 0xc1cc4127u,
-     0x864b02e2u, 0x35fe0188u},
-    0xe0d5930fu
+    {0x40153ba4u, 0xbff856f1u, 0x3f536d57u, 0xbf74c132u, 0x40042154u, 0xbfa7374bu,
+     0x3fe65a22u, 0xbf2d7018u, 0x3fecde81u, 0xbf64344fu, 0x3df8a397u, 0xbf8ea0ceu,
+     0xbf6c999fu, 0xbf605710u, 0xc0095f4fu, 0xc0adf1fcu, 0xc165593eu, 0x41be5fc4u,
+     0xf0db8cbeu, 0xf190bd44u, 0x71f0492fu, 0xc19dbd03u, 0x41873af9u, 0xc1cc2837u,
+     0x87ff2ceeu, 0x46995682u},
+    0x6352b826u
 };
 static const int32_t tfit_heart_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     0, 0, 0,
     /* W (row-major), then the projection's headroom H */
-    501396288, 163846496, 5628658, 178002400, 468882912, 20542430,
-    7406101, 20423526, 277324000,
+    501358240, 163946192, 6005086, 177832752, 468897120, 20806898,
+    7676790, 20348266, 277202112,
     5,
     /* node 2876 x: shift, then 4 coefficients */
-    33, 0, 644245120, 12, -1,
+    33, 0, 644245120, 4, -1,
     /* node 2876 y: shift, then 4 coefficients */
-    33, 0, 6, 644245056, 2,
+    33, 0, 8, 644245056, -1,
     /* node 2876 z: shift, then 4 coefficients */
-    33, 0, 0, -1, 644245120,
+    33, 0, 0, 1, 644245056,
 };
 const tfit_model_q31 tfit_heart_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_heart_contact_q31_coef, tfit_heart_contact_nodes,
     tfit_heart_contact_q31_coef + 28u, tfit_heart_contact_nodes + 1u,
-    0x8252380eu
+    0xa3cc4ea3u
 };
 
 const uint32_t tfit_heart_vertex[965] = {
@@ -12045,730 +12045,730 @@ const uint32_t tfit_heart_vertex[965] = {
     7744u, 7756u, 7760u, 7762u, 7768u,
 };
 const float tfit_heart_rest_mm[2895] = {
-    0x1.36f78p+3f, -0x1.2093e2p+4f, 0x1.b5f67p+2f, 0x1.3737ap+3f,
-    -0x1.20d7b2p+4f, 0x1.ec4c3p+2f, 0x1.2a4ecp+3f, -0x1.0ffcbap+4f,
-    0x1.c325fp+2f, 0x1.439dbp+3f, -0x1.2f6f0ap+4f, 0x1.d74b1p+2f,
-    0x1.3fd61p+3f, -0x1.2d7deap+4f, 0x1.a5a21p+2f, 0x1.36fa1p+3f,
-    -0x1.224fe2p+4f, 0x1.87727p+2f, 0x1.2dd8dp+3f, -0x1.136602p+4f,
-    0x1.8ff51p+2f, 0x1.1431ap+2f, 0x1.ed1c8p-2f, 0x1.8fde5p+2f,
-    0x1.4251ap+3f, -0x1.47de6ap+4f, 0x1.96a2bp+2f, 0x1.3ab9bp+3f,
-    -0x1.4d3fd2p+4f, 0x1.6408fp+2f, 0x1.439c1p+3f, -0x1.56c2fap+4f,
-    0x1.95543p+2f, 0x1.3ab4ep+3f, -0x1.3d076ap+4f, 0x1.6b2f5p+2f,
-    0x1.427c6p+3f, -0x1.39d9fap+4f, 0x1.9c2f3p+2f, 0x1.48a4p+3f,
+    0x1.36f784p+3f, -0x1.2093ep+4f, 0x1.b5f672p+2f, 0x1.3737a4p+3f,
+    -0x1.20d7bp+4f, 0x1.ec4c2cp+2f, 0x1.2a4ec2p+3f, -0x1.0ffcbap+4f,
+    0x1.c325f2p+2f, 0x1.439db2p+3f, -0x1.2f6f0ap+4f, 0x1.d74b12p+2f,
+    0x1.3fd612p+3f, -0x1.2d7deap+4f, 0x1.a5a212p+2f, 0x1.36fa12p+3f,
+    -0x1.224fe2p+4f, 0x1.87726ep+2f, 0x1.2dd8d4p+3f, -0x1.1366p+4f,
+    0x1.8ff512p+2f, 0x1.1431a4p+2f, 0x1.ed1cc2p-2f, 0x1.8fde4cp+2f,
+    0x1.4251a8p+3f, -0x1.47de6cp+4f, 0x1.96a2aep+2f, 0x1.3ab9b2p+3f,
+    -0x1.4d3fd2p+4f, 0x1.6408eep+2f, 0x1.439c12p+3f, -0x1.56c2fap+4f,
+    0x1.95542ep+2f, 0x1.3ab4e2p+3f, -0x1.3d0768p+4f, 0x1.6b2f52p+2f,
+    0x1.427c64p+3f, -0x1.39d9fap+4f, 0x1.9c2f2cp+2f, 0x1.48a4p+3f,
     -0x1.43d0e2p+4f, 0x1.c3649p+2f, 0x1.49befp+3f, -0x1.50817ap+4f,
-    0x1.c3affp+2f, 0x1.38711p+3f, -0x1.2ed53ap+4f, 0x1.76da7p+2f,
-    0x1.2fdcdp+3f, -0x1.3055d2p+4f, 0x1.40ed9p+2f, 0x1.2ec85p+3f,
-    -0x1.21fa52p+4f, 0x1.53bddp+2f, 0x1.1eb56p+3f, -0x1.202182p+4f,
-    0x1.19b79p+2f, 0x1.2064dp+3f, -0x1.11979ap+4f, 0x1.376cfp+2f,
-    0x1.0cb4bp+3f, -0x1.0b3e9ap+4f, 0x1.f2dcap+1f, 0x1.20a32p+3f,
-    -0x1.332b92p+4f, 0x1.fff4ap+1f, 0x1.0bde8p+3f, -0x1.1e7712p+4f,
-    0x1.a9982p+1f, 0x1.372a2p+3f, -0x1.60bf42p+4f, 0x1.5f43dp+2f,
-    0x1.276b4p+3f, -0x1.6d8efap+4f, 0x1.17053p+2f, 0x1.34e9ep+3f,
-    -0x1.772532p+4f, 0x1.68bdbp+2f, 0x1.2cf88p+3f, -0x1.5455a2p+4f,
-    0x1.1fb97p+2f, 0x1.43598p+3f, -0x1.676f02p+4f, 0x1.a2bd5p+2f,
-    0x1.1723p+3f, -0x1.5ef932p+4f, 0x1.a09a6p+1f, 0x1.1dbap+3f,
-    -0x1.46f2fap+4f, 0x1.cbd92p+1f, 0x1.076b2p+3f, -0x1.4f6c9ap+4f,
-    0x1.2c51ep+1f, 0x1.11056p+3f, -0x1.79295ap+4f, 0x1.760aap+1f,
-    0x1.0043cp+3f, -0x1.68699ap+4f, 0x1.cfd7cp+0f, 0x1.08c3ap+3f,
-    -0x1.366782p+4f, 0x1.67e8ep+1f, 0x1.e164ep+2f, -0x1.3dcc72p+4f,
-    0x1.84924p+0f, 0x1.e4794p+2f, -0x1.209e5ap+4f, 0x1.0b73ep+1f,
-    0x1.9e6fp+2f, -0x1.24a39ap+4f, 0x1.979f8p-1f, 0x1.a6df8p+2f,
-    -0x1.4b0b92p+4f, 0x1.9d96p-3f, 0x1.54c4cp+2f, -0x1.2eac6ap+4f,
-    -0x1.0af78p-1f, 0x1.4ff44p+2f, -0x1.0240e2p+4f, 0x1.8d4cp-4f,
-    0x1.a5236p+2f, -0x1.0171eap+4f, 0x1.6458cp+0f, 0x1.3b1c8p+1f,
-    -0x1.27c374p+3f, -0x1.aa908p-1f, 0x1.66d24p+1f, -0x1.6e1798p+2f,
-    -0x1.37fdp-2f, 0x1.012c2p+2f, -0x1.3d9384p+3f, 0x1.0027p-2f,
-    0x1.f2218p+1f, -0x1.a55e44p+3f, -0x1.ba9dp-2f, 0x1.e122bp+3f,
-    -0x1.86e464p+3f, 0x1.769e7cp+4f, 0x1.0249ep+4f, -0x1.638ba4p+3f,
-    0x1.72e904p+4f, 0x1.f949fp+3f, -0x1.53dc84p+3f, 0x1.76a26cp+4f,
-    0x1.ee99cp+3f, -0x1.9b99c4p+3f, 0x1.71cfecp+4f, 0x1.d8355p+3f,
-    -0x1.703904p+3f, 0x1.79f34cp+4f, 0x1.f50d5p+3f, -0x1.bd7a34p+3f,
-    0x1.6ca28cp+4f, 0x1.00363p+4f, -0x1.dbc064p+3f, 0x1.65984cp+4f,
-    0x1.e8ddcp+3f, -0x1.112232p+4f, 0x1.62e28cp+4f, 0x1.08acp+4f,
-    -0x1.eecd04p+3f, 0x1.5d953cp+4f, 0x1.0b944p+4f, -0x1.9996f4p+3f,
+    0x1.c3afeep+2f, 0x1.387116p+3f, -0x1.2ed538p+4f, 0x1.76da62p+2f,
+    0x1.2fdcd2p+3f, -0x1.3055dp+4f, 0x1.40ed8ep+2f, 0x1.2ec854p+3f,
+    -0x1.21fa52p+4f, 0x1.53bdcap+2f, 0x1.1eb564p+3f, -0x1.20217ep+4f,
+    0x1.19b78p+2f, 0x1.2064d4p+3f, -0x1.119798p+4f, 0x1.376cecp+2f,
+    0x1.0cb4b2p+3f, -0x1.0b3e9ap+4f, 0x1.f2dc98p+1f, 0x1.20a322p+3f,
+    -0x1.332b92p+4f, 0x1.fff4a2p+1f, 0x1.0bde82p+3f, -0x1.1e7712p+4f,
+    0x1.a9982p+1f, 0x1.372a28p+3f, -0x1.60bf46p+4f, 0x1.5f43ccp+2f,
+    0x1.276b4p+3f, -0x1.6d8efap+4f, 0x1.17052ep+2f, 0x1.34e9e2p+3f,
+    -0x1.772532p+4f, 0x1.68bdaep+2f, 0x1.2cf884p+3f, -0x1.5455a2p+4f,
+    0x1.1fb97p+2f, 0x1.435982p+3f, -0x1.676f02p+4f, 0x1.a2bd52p+2f,
+    0x1.172304p+3f, -0x1.5ef93p+4f, 0x1.a09a7p+1f, 0x1.1dba02p+3f,
+    -0x1.46f2fap+4f, 0x1.cbd91ap+1f, 0x1.076b22p+3f, -0x1.4f6c98p+4f,
+    0x1.2c51e4p+1f, 0x1.110564p+3f, -0x1.79295ap+4f, 0x1.760a9ep+1f,
+    0x1.0043c4p+3f, -0x1.68699ap+4f, 0x1.cfd7b2p+0f, 0x1.08c3a4p+3f,
+    -0x1.36678p+4f, 0x1.67e8c4p+1f, 0x1.e164ep+2f, -0x1.3dcc72p+4f,
+    0x1.849246p+0f, 0x1.e47946p+2f, -0x1.209e58p+4f, 0x1.0b73dap+1f,
+    0x1.9e6f04p+2f, -0x1.24a39ap+4f, 0x1.979f88p-1f, 0x1.a6df82p+2f,
+    -0x1.4b0b92p+4f, 0x1.9d9558p-3f, 0x1.54c4c6p+2f, -0x1.2eac6ap+4f,
+    -0x1.0af76ep-1f, 0x1.4ff444p+2f, -0x1.0240e2p+4f, 0x1.8d4aa2p-4f,
+    0x1.a5236p+2f, -0x1.0171eap+4f, 0x1.6458bcp+0f, 0x1.3b1c98p+1f,
+    -0x1.27c36cp+3f, -0x1.aa9026p-1f, 0x1.66d246p+1f, -0x1.6e1794p+2f,
+    -0x1.37fd4p-2f, 0x1.012c28p+2f, -0x1.3d9384p+3f, 0x1.00271p-2f,
+    0x1.f22186p+1f, -0x1.a55e44p+3f, -0x1.ba9cdcp-2f, 0x1.e122b8p+3f,
+    -0x1.86e466p+3f, 0x1.769e7cp+4f, 0x1.0249ep+4f, -0x1.638ba2p+3f,
+    0x1.72e904p+4f, 0x1.f949fp+3f, -0x1.53dc86p+3f, 0x1.76a26cp+4f,
+    0x1.ee99c4p+3f, -0x1.9b99c2p+3f, 0x1.71cfeap+4f, 0x1.d8355p+3f,
+    -0x1.703902p+3f, 0x1.79f34cp+4f, 0x1.f50d52p+3f, -0x1.bd7a34p+3f,
+    0x1.6ca28ap+4f, 0x1.003632p+4f, -0x1.dbc068p+3f, 0x1.65984ep+4f,
+    0x1.e8ddc2p+3f, -0x1.112232p+4f, 0x1.62e28cp+4f, 0x1.08ac02p+4f,
+    -0x1.eecd06p+3f, 0x1.5d953ap+4f, 0x1.0b944p+4f, -0x1.9996f4p+3f,
     0x1.68ad14p+4f, 0x1.11ad08p+4f, -0x1.b382a4p+3f, 0x1.6143d4p+4f,
-    0x1.f39a8p+3f, -0x1.2df5f2p+4f, 0x1.55e3dcp+4f, 0x1.01f18p+4f,
-    -0x1.44978ap+4f, 0x1.48a39cp+4f, 0x1.102468p+4f, -0x1.0779d2p+4f,
-    0x1.52c82cp+4f, 0x1.0ee26p+4f, -0x1.3cac32p+4f, 0x1.40459cp+4f,
-    0x1.1e71cp+4f, -0x1.ed53b4p+3f, 0x1.4dac6cp+4f, 0x1.207068p+4f,
-    -0x1.2084dap+4f, 0x1.3a3a3cp+4f, 0x1.22d29p+4f, -0x1.a6158ap+4f,
-    0x1.f04898p+3f, 0x1.cde8dp+3f, -0x1.6840c4p+3f, 0x1.7c3eb4p+4f,
-    0x1.602388p+4f, -0x1.f0274ap+4f, -0x1.82278p-1f, 0x1.63af3p+4f,
-    -0x1.e1b39ap+4f, -0x1.7a2d4p+1f, 0x1.5d746p+4f, -0x1.e73312p+4f,
-    -0x1.0481ap+2f, 0x1.694738p+4f, -0x1.cf0792p+4f, -0x1.f3848p+1f,
-    0x1.6f99bp+4f, -0x1.c95302p+4f, -0x1.63a6ep+1f, 0x1.7569cp+4f,
-    -0x1.b5650ap+4f, -0x1.e1c46p+1f, 0x1.6ec798p+4f, -0x1.bc909ap+4f,
-    -0x1.36f1bp+2f, 0x1.62bcbp+4f, -0x1.d5fe02p+4f, -0x1.3f4ep+2f,
-    0x1.589068p+4f, -0x1.f62ad2p+4f, 0x1.19e61p+2f, 0x1.6408c8p+4f,
-    -0x1.e20da2p+4f, 0x1.a326ap+1f, 0x1.640528p+4f, -0x1.e72992p+4f,
-    0x1.dc3f4p+0f, 0x1.61fecp+4f, -0x1.eb7fc2p+4f, 0x1.0e428p-1f,
-    0x1.6dd1fp+4f, -0x1.d316bap+4f, 0x1.84ec8p-1f, 0x1.6be0c8p+4f,
-    -0x1.d852a2p+4f, -0x1.13578p-1f, 0x1.75d4dp+4f, -0x1.bd6cbap+4f,
-    -0x1.54ebp-2f, 0x1.73bdfp+4f, -0x1.c3d6b2p+4f, -0x1.9548cp+0f,
-    0x1.7e1928p+4f, -0x1.a8027ap+4f, -0x1.6af5cp+0f, 0x1.77848p+4f,
-    -0x1.b7f102p+4f, 0x1.e9e38p-1f, 0x1.7fee9p+4f, -0x1.a158bap+4f,
-    -0x1.66eep-3f, 0x1.79ef88p+4f, -0x1.ae302ap+4f, -0x1.4dbd2p+1f,
-    0x1.84a6ep+4f, -0x1.9154cap+4f, -0x1.3cceep+1f, 0x1.801bcp+4f,
-    -0x1.993b0ap+4f, -0x1.d015ep+1f, 0x1.88e0a8p+4f, -0x1.7b5d1ap+4f,
-    -0x1.bc76ap+1f, 0x1.8dc6dp+4f, -0x1.723d4ap+4f, -0x1.2ab06p+1f,
-    0x1.91f16p+4f, -0x1.5cbfa2p+4f, -0x1.a9b42p+1f, 0x1.8cbf7p+4f,
-    -0x1.669efap+4f, -0x1.1d4ebp+2f, 0x1.8409c8p+4f, -0x1.8402e2p+4f,
-    -0x1.27705p+2f, 0x1.55f418p+4f, -0x1.e7946ap+4f, 0x1.cc9b7p+2f,
-    0x1.5415f8p+4f, -0x1.df31fap+4f, 0x1.0fafc8p+3f, 0x1.60f65p+4f,
-    -0x1.c99b5ap+4f, 0x1.de155p+2f, 0x1.628e98p+4f, -0x1.d3957ap+4f,
-    0x1.89255p+2f, 0x1.57fdd8p+4f, -0x1.f01beap+4f, 0x1.75f37p+2f,
-    0x1.62e02p+4f, -0x1.db1402p+4f, 0x1.2d1f7p+2f, 0x1.6c99b8p+4f,
-    -0x1.bf1282p+4f, 0x1.3fd79p+2f, 0x1.6d8158p+4f, -0x1.c77bc2p+4f,
-    0x1.c8a62p+1f, 0x1.761808p+4f, -0x1.a78f6ap+4f, 0x1.ea3eep+1f,
-    0x1.77304p+4f, -0x1.b171fap+4f, 0x1.2cdcap+1f, 0x1.802a2p+4f,
-    -0x1.90188ap+4f, 0x1.4a862p+1f, 0x1.749cap+4f, -0x1.9f19f2p+4f,
-    0x1.55c85p+2f, 0x1.7e7e18p+4f, -0x1.8629bap+4f, 0x1.09189p+2f,
-    0x1.803168p+4f, -0x1.985722p+4f, 0x1.2982cp+0f, 0x1.88e59p+4f,
-    -0x1.80fbe2p+4f, -0x1.aeb8p-5f, 0x1.89756p+4f, -0x1.763abap+4f,
-    0x1.4fac4p+0f, 0x1.90e028p+4f, -0x1.5cf4fap+4f, 0x1.7e2ap-3f,
-    0x1.90302p+4f, -0x1.688e22p+4f, -0x1.2750cp+0f, 0x1.97d0cp+4f,
-    -0x1.46ab0ap+4f, -0x1.cfe78p-1f, 0x1.91ea2p+4f, -0x1.4f380ap+4f,
-    0x1.84b8cp+0f, 0x1.98faf8p+4f, -0x1.38161ap+4f, 0x1.9bcfp-2f,
-    0x1.94e608p+4f, -0x1.525b72p+4f, -0x1.0e49ep+1f, 0x1.9c90a8p+4f,
-    -0x1.31c49ap+4f, -0x1.db02cp+0f, 0x1.991a9p+4f, -0x1.3e2a02p+4f,
-    -0x1.8c33ap+1f, 0x1.9de778p+4f, -0x1.1e93eap+4f, -0x1.60cfep+1f,
-    0x1.a1c4ep+4f, -0x1.117c6ap+4f, -0x1.7ec9cp+0f, 0x1.a2db78p+4f,
-    -0x1.fde1b4p+3f, -0x1.33ffap+1f, 0x1.9ed6fp+4f, -0x1.0c154ap+4f,
-    -0x1.d6d72p+1f, 0x1.9a4a4p+4f, -0x1.2b064ap+4f, -0x1.00775p+2f,
-    0x1.49dce8p+4f, -0x1.c774dap+4f, 0x1.5ac828p+3f, 0x1.44a33p+4f,
-    -0x1.b8b902p+4f, 0x1.7e2dd8p+3f, 0x1.54acd8p+4f, -0x1.9f785ap+4f,
-    0x1.626728p+3f, 0x1.599dap+4f, -0x1.b0fc1ap+4f, 0x1.3d6ec8p+3f,
-    0x1.4fd24p+4f, -0x1.d4d992p+4f, 0x1.3547e8p+3f, 0x1.5d24e8p+4f,
-    -0x1.bd7602p+4f, 0x1.1743e8p+3f, 0x1.66a62p+4f, -0x1.99ed12p+4f,
-    0x1.217938p+3f, 0x1.69bb2p+4f, -0x1.a833eap+4f, 0x1.f15a7p+2f,
-    0x1.717968p+4f, -0x1.82b0cap+4f, 0x1.007b78p+3f, 0x1.73565p+4f,
-    -0x1.923572p+4f, 0x1.b25b3p+2f, 0x1.7bf32p+4f, -0x1.6bce32p+4f,
-    0x1.be235p+2f, 0x1.6ebdf8p+4f, -0x1.74104ap+4f, 0x1.29b388p+3f,
-    0x1.7a6fc8p+4f, -0x1.5befdap+4f, 0x1.06cb98p+3f, 0x1.7d6fcp+4f,
-    -0x1.77584ap+4f, 0x1.63dbfp+2f, 0x1.87bf88p+4f, -0x1.5b20b2p+4f,
-    0x1.17a85p+2f, 0x1.867aep+4f, -0x1.4da9aap+4f, 0x1.70203p+2f,
-    0x1.90a6ep+4f, -0x1.306b8ap+4f, 0x1.1dbcfp+2f, 0x1.91e05p+4f,
-    -0x1.3e0cd2p+4f, 0x1.822c2p+1f, 0x1.99c668p+4f, -0x1.168e32p+4f,
-    0x1.a1bbap+1f, 0x1.906ebp+4f, -0x1.1f93b2p+4f, 0x1.70b0bp+2f,
-    0x1.99997p+4f, -0x1.058c12p+4f, 0x1.28009p+2f, 0x1.992cb8p+4f,
-    -0x1.27f4e2p+4f, 0x1.de77cp+0f, 0x1.9fd5ap+4f, -0x1.121872p+4f,
-    0x1.a66d8p-1f, 0x1.a0aae8p+4f, -0x1.01bbbap+4f, 0x1.180d6p+1f,
-    0x1.a4f46p+4f, -0x1.df21b4p+3f, 0x1.423ccp+0f, 0x1.a3dfbp+4f,
-    -0x1.00653ap+4f, -0x1.f784p-4f, 0x1.a867e8p+4f, -0x1.bc8404p+3f,
-    0x1.4a99p-2f, 0x1.a69f98p+4f, -0x1.bcb024p+3f, 0x1.506cep+1f,
-    0x1.aa5288p+4f, -0x1.992334p+3f, 0x1.b613cp+0f, 0x1.a55578p+4f,
-    -0x1.ddf664p+3f, -0x1.06b3cp+0f, 0x1.a94538p+4f, -0x1.9b36f4p+3f,
-    -0x1.19488p-1f, 0x1.a5d398p+4f, -0x1.ba6634p+3f, -0x1.e7f84p+0f,
-    0x1.a7e888p+4f, -0x1.76e954p+3f, -0x1.67214p+0f, 0x1.ac1c98p+4f,
-    -0x1.56d284p+3f, -0x1.722p-7f, 0x1.aa91b8p+4f, -0x1.340b04p+3f,
-    -0x1.c2c68p-1f, 0x1.a5c96p+4f, -0x1.538354p+3f, -0x1.25442p+1f,
-    0x1.a3e2ap+4f, -0x1.957a14p+3f, -0x1.63ae6p+1f, 0x1.3473cp+4f,
-    -0x1.80eea2p+4f, 0x1.e057d8p+3f, 0x1.2d0bb8p+4f, -0x1.4b8e1ap+4f,
+    0x1.f39a84p+3f, -0x1.2df5fp+4f, 0x1.55e3dcp+4f, 0x1.01f18p+4f,
+    -0x1.44978ap+4f, 0x1.48a39cp+4f, 0x1.10246ap+4f, -0x1.0779d2p+4f,
+    0x1.52c82ap+4f, 0x1.0ee262p+4f, -0x1.3cac36p+4f, 0x1.404598p+4f,
+    0x1.1e71c2p+4f, -0x1.ed53b2p+3f, 0x1.4dac6cp+4f, 0x1.20706ap+4f,
+    -0x1.2084dap+4f, 0x1.3a3a3cp+4f, 0x1.22d292p+4f, -0x1.a6158ap+4f,
+    0x1.f04896p+3f, 0x1.cde8d2p+3f, -0x1.6840c2p+3f, 0x1.7c3eb2p+4f,
+    0x1.60238ap+4f, -0x1.f02748p+4f, -0x1.8227aep-1f, 0x1.63af32p+4f,
+    -0x1.e1b398p+4f, -0x1.7a2d4ap+1f, 0x1.5d746p+4f, -0x1.e73312p+4f,
+    -0x1.0481a6p+2f, 0x1.694736p+4f, -0x1.cf078ep+4f, -0x1.f3849p+1f,
+    0x1.6f99bp+4f, -0x1.c95302p+4f, -0x1.63a6e8p+1f, 0x1.7569cp+4f,
+    -0x1.b5650ap+4f, -0x1.e1c45cp+1f, 0x1.6ec79ap+4f, -0x1.bc909ap+4f,
+    -0x1.36f1aep+2f, 0x1.62bcb2p+4f, -0x1.d5fe02p+4f, -0x1.3f4e06p+2f,
+    0x1.589068p+4f, -0x1.f62adp+4f, 0x1.19e61p+2f, 0x1.6408c8p+4f,
+    -0x1.e20da2p+4f, 0x1.a32696p+1f, 0x1.64052ap+4f, -0x1.e72992p+4f,
+    0x1.dc3f2ep+0f, 0x1.61fecp+4f, -0x1.eb7fc2p+4f, 0x1.0e423ap-1f,
+    0x1.6dd1f2p+4f, -0x1.d316bap+4f, 0x1.84ec84p-1f, 0x1.6be0cap+4f,
+    -0x1.d852ap+4f, -0x1.135782p-1f, 0x1.75d4d2p+4f, -0x1.bd6cb6p+4f,
+    -0x1.54eadp-2f, 0x1.73bdfp+4f, -0x1.c3d6b2p+4f, -0x1.9548bap+0f,
+    0x1.7e1928p+4f, -0x1.a8027ap+4f, -0x1.6af5cap+0f, 0x1.778482p+4f,
+    -0x1.b7f102p+4f, 0x1.e9e364p-1f, 0x1.7fee92p+4f, -0x1.a158bap+4f,
+    -0x1.66ee3p-3f, 0x1.79ef86p+4f, -0x1.ae302cp+4f, -0x1.4dbd38p+1f,
+    0x1.84a6e2p+4f, -0x1.9154cap+4f, -0x1.3ccedep+1f, 0x1.801bc2p+4f,
+    -0x1.993b0ap+4f, -0x1.d015dcp+1f, 0x1.88e0acp+4f, -0x1.7b5d1ap+4f,
+    -0x1.bc7696p+1f, 0x1.8dc6d2p+4f, -0x1.723d4ap+4f, -0x1.2ab05cp+1f,
+    0x1.91f16p+4f, -0x1.5cbfa2p+4f, -0x1.a9b41cp+1f, 0x1.8cbf7p+4f,
+    -0x1.669efap+4f, -0x1.1d4eb6p+2f, 0x1.8409c8p+4f, -0x1.8402e2p+4f,
+    -0x1.277054p+2f, 0x1.55f416p+4f, -0x1.e79466p+4f, 0x1.cc9b66p+2f,
+    0x1.5415f8p+4f, -0x1.df31fap+4f, 0x1.0fafc6p+3f, 0x1.60f652p+4f,
+    -0x1.c99b5ap+4f, 0x1.de155p+2f, 0x1.628e9ap+4f, -0x1.d3957ap+4f,
+    0x1.89254ap+2f, 0x1.57fdd8p+4f, -0x1.f01beap+4f, 0x1.75f36ep+2f,
+    0x1.62e01ep+4f, -0x1.db1404p+4f, 0x1.2d1f76p+2f, 0x1.6c99bap+4f,
+    -0x1.bf1282p+4f, 0x1.3fd78cp+2f, 0x1.6d8158p+4f, -0x1.c77bcp+4f,
+    0x1.c8a61ap+1f, 0x1.761806p+4f, -0x1.a78f68p+4f, 0x1.ea3eeap+1f,
+    0x1.77304p+4f, -0x1.b171f8p+4f, 0x1.2cdcap+1f, 0x1.802a22p+4f,
+    -0x1.90188ap+4f, 0x1.4a8616p+1f, 0x1.749ca2p+4f, -0x1.9f19fp+4f,
+    0x1.55c85p+2f, 0x1.7e7e1ap+4f, -0x1.8629bap+4f, 0x1.09188cp+2f,
+    0x1.803166p+4f, -0x1.985724p+4f, 0x1.298298p+0f, 0x1.88e59p+4f,
+    -0x1.80fbe2p+4f, -0x1.aeba28p-5f, 0x1.89756p+4f, -0x1.763abap+4f,
+    0x1.4fac2ep+0f, 0x1.90e028p+4f, -0x1.5cf4fcp+4f, 0x1.7e28aap-3f,
+    0x1.90302p+4f, -0x1.688e22p+4f, -0x1.2750d2p+0f, 0x1.97d0c2p+4f,
+    -0x1.46ab0ap+4f, -0x1.cfe77ep-1f, 0x1.91ea2p+4f, -0x1.4f380ap+4f,
+    0x1.84b8aep+0f, 0x1.98faf8p+4f, -0x1.38161ap+4f, 0x1.9bcf0cp-2f,
+    0x1.94e60cp+4f, -0x1.525b74p+4f, -0x1.0e49fep+1f, 0x1.9c90aap+4f,
+    -0x1.31c49ap+4f, -0x1.db02c4p+0f, 0x1.991a92p+4f, -0x1.3e2a02p+4f,
+    -0x1.8c339cp+1f, 0x1.9de778p+4f, -0x1.1e93eap+4f, -0x1.60cfeap+1f,
+    0x1.a1c4ep+4f, -0x1.117c6ap+4f, -0x1.7ec9d2p+0f, 0x1.a2db78p+4f,
+    -0x1.fde1b2p+3f, -0x1.33ffa4p+1f, 0x1.9ed6f2p+4f, -0x1.0c154ap+4f,
+    -0x1.d6d728p+1f, 0x1.9a4a4p+4f, -0x1.2b064ap+4f, -0x1.007754p+2f,
+    0x1.49dceap+4f, -0x1.c774d6p+4f, 0x1.5ac824p+3f, 0x1.44a332p+4f,
+    -0x1.b8b902p+4f, 0x1.7e2dd6p+3f, 0x1.54acdap+4f, -0x1.9f785ap+4f,
+    0x1.626726p+3f, 0x1.599da2p+4f, -0x1.b0fc18p+4f, 0x1.3d6ec8p+3f,
+    0x1.4fd242p+4f, -0x1.d4d992p+4f, 0x1.3547e6p+3f, 0x1.5d24e8p+4f,
+    -0x1.bd75fep+4f, 0x1.1743ecp+3f, 0x1.66a62p+4f, -0x1.99ed12p+4f,
+    0x1.217938p+3f, 0x1.69bb22p+4f, -0x1.a833eap+4f, 0x1.f15a7p+2f,
+    0x1.71796ap+4f, -0x1.82b0ccp+4f, 0x1.007b76p+3f, 0x1.735652p+4f,
+    -0x1.92357p+4f, 0x1.b25b2ep+2f, 0x1.7bf322p+4f, -0x1.6bce32p+4f,
+    0x1.be234ep+2f, 0x1.6ebdf8p+4f, -0x1.74104ap+4f, 0x1.29b388p+3f,
+    0x1.7a6fcap+4f, -0x1.5befdap+4f, 0x1.06cb98p+3f, 0x1.7d6fc4p+4f,
+    -0x1.775848p+4f, 0x1.63dbf8p+2f, 0x1.87bf8ap+4f, -0x1.5b20bp+4f,
+    0x1.17a84cp+2f, 0x1.867ae2p+4f, -0x1.4da9aap+4f, 0x1.702032p+2f,
+    0x1.90a6e2p+4f, -0x1.306b86p+4f, 0x1.1dbcfp+2f, 0x1.91e05p+4f,
+    -0x1.3e0cdp+4f, 0x1.822c1cp+1f, 0x1.99c66ap+4f, -0x1.168e32p+4f,
+    0x1.a1bb94p+1f, 0x1.906ebp+4f, -0x1.1f93b2p+4f, 0x1.70b0acp+2f,
+    0x1.999972p+4f, -0x1.058c12p+4f, 0x1.28008ap+2f, 0x1.992cbap+4f,
+    -0x1.27f4e4p+4f, 0x1.de7782p+0f, 0x1.9fd5a2p+4f, -0x1.12187p+4f,
+    0x1.a66d58p-1f, 0x1.a0aae8p+4f, -0x1.01bbbap+4f, 0x1.180d56p+1f,
+    0x1.a4f46p+4f, -0x1.df21b2p+3f, 0x1.423cdap+0f, 0x1.a3dfbp+4f,
+    -0x1.00653ap+4f, -0x1.f78466p-4f, 0x1.a867e8p+4f, -0x1.bc8404p+3f,
+    0x1.4a98eep-2f, 0x1.a69f98p+4f, -0x1.bcb022p+3f, 0x1.506ce4p+1f,
+    0x1.aa5288p+4f, -0x1.992334p+3f, 0x1.b613c2p+0f, 0x1.a55576p+4f,
+    -0x1.ddf65cp+3f, -0x1.06b3eep+0f, 0x1.a94538p+4f, -0x1.9b36f2p+3f,
+    -0x1.194878p-1f, 0x1.a5d39ap+4f, -0x1.ba6632p+3f, -0x1.e7f856p+0f,
+    0x1.a7e886p+4f, -0x1.76e95ap+3f, -0x1.672182p+0f, 0x1.ac1c9ap+4f,
+    -0x1.56d282p+3f, -0x1.721d54p-7f, 0x1.aa91b8p+4f, -0x1.340b04p+3f,
+    -0x1.c2c68ap-1f, 0x1.a5c96p+4f, -0x1.538354p+3f, -0x1.25441cp+1f,
+    0x1.a3e2a2p+4f, -0x1.957a12p+3f, -0x1.63ae6p+1f, 0x1.3473c2p+4f,
+    -0x1.80eea4p+4f, 0x1.e057d4p+3f, 0x1.2d0bbap+4f, -0x1.4b8e1ap+4f,
     0x1.13f3e4p+4f, 0x1.3beb78p+4f, -0x1.3904aap+4f, 0x1.06dac4p+4f,
-    0x1.468dd8p+4f, -0x1.6cb71ap+4f, 0x1.be4058p+3f, 0x1.3e9d4p+4f,
-    -0x1.a3b1b2p+4f, 0x1.a30958p+3f, 0x1.4d54f8p+4f, -0x1.88edd2p+4f,
-    0x1.8edea8p+3f, 0x1.54b4dp+4f, -0x1.579f72p+4f, 0x1.a72b68p+3f,
-    0x1.5ccdep+4f, -0x1.755962p+4f, 0x1.702dc8p+3f, 0x1.60eac8p+4f,
-    -0x1.48582ap+4f, 0x1.874058p+3f, 0x1.69d68p+4f, -0x1.610062p+4f,
-    0x1.536fb8p+3f, 0x1.6edbp+4f, -0x1.385a02p+4f, 0x1.6006b8p+3f,
+    0x1.468dd8p+4f, -0x1.6cb71ap+4f, 0x1.be405ap+3f, 0x1.3e9d4p+4f,
+    -0x1.a3b1b2p+4f, 0x1.a30958p+3f, 0x1.4d54fap+4f, -0x1.88edd4p+4f,
+    0x1.8edea6p+3f, 0x1.54b4dp+4f, -0x1.579f72p+4f, 0x1.a72b68p+3f,
+    0x1.5ccde2p+4f, -0x1.75596p+4f, 0x1.702dc8p+3f, 0x1.60eac8p+4f,
+    -0x1.485826p+4f, 0x1.87405ap+3f, 0x1.69d682p+4f, -0x1.610062p+4f,
+    0x1.536fb6p+3f, 0x1.6edb02p+4f, -0x1.385a02p+4f, 0x1.6006b6p+3f,
     0x1.571778p+4f, -0x1.2b5512p+4f, 0x1.c58c88p+3f, 0x1.643508p+4f,
-    -0x1.2068a2p+4f, 0x1.9b25e8p+3f, 0x1.7535a8p+4f, -0x1.4b6e22p+4f,
-    0x1.2fd2e8p+3f, 0x1.820808p+4f, -0x1.35e02ap+4f, 0x1.05be88p+3f,
-    0x1.7b5ab8p+4f, -0x1.255a32p+4f, 0x1.353d78p+3f, 0x1.87f9c8p+4f,
-    -0x1.0d897ap+4f, 0x1.04a148p+3f, 0x1.8d7f3p+4f, -0x1.17a882p+4f,
-    0x1.bc999p+2f, 0x1.94138p+4f, -0x1.e3dc64p+3f, 0x1.ba801p+2f,
-    0x1.81d1d8p+4f, -0x1.00ce1ap+4f, 0x1.2ae558p+3f, 0x1.8f1378p+4f,
-    -0x1.d73384p+3f, 0x1.f4b33p+2f, 0x1.97025p+4f, -0x1.f7bb74p+3f,
-    0x1.74bedp+2f, 0x1.a084cp+4f, -0x1.c42e94p+3f, 0x1.330bbp+2f,
-    0x1.9dee48p+4f, -0x1.acc924p+3f, 0x1.79a23p+2f, 0x1.a42078p+4f,
-    -0x1.86f504p+3f, 0x1.3efadp+2f, 0x1.a6a668p+4f, -0x1.9f6b74p+3f,
-    0x1.f0316p+1f, 0x1.aa3a18p+4f, -0x1.60b084p+3f, 0x1.09913p+2f,
-    0x1.a1a29p+4f, -0x1.6ffff4p+3f, 0x1.80539p+2f, 0x1.a7ccbp+4f,
-    -0x1.48aa64p+3f, 0x1.4b359p+2f, 0x1.aa2e2p+4f, -0x1.7d5ad4p+3f,
-    0x1.7bd12p+1f, 0x1.adb0b8p+4f, -0x1.5aafc4p+3f, 0x1.0fe3ep+1f,
-    0x1.ad917p+4f, -0x1.3f81c4p+3f, 0x1.a837ep+1f, 0x1.ae9748p+4f,
-    -0x1.1fb0c4p+3f, 0x1.3adb6p+1f, 0x1.ae9d7p+4f, -0x1.39ac24p+3f,
-    0x1.461acp+0f, 0x1.af92d8p+4f, -0x1.f9a468p+2f, 0x1.a7a5cp+0f,
-    0x1.ae824p+4f, -0x1.079064p+3f, 0x1.ccdbap+1f, 0x1.af96fp+4f,
-    -0x1.cbc8e8p+2f, 0x1.654d6p+1f, 0x1.ad201p+4f, -0x1.182eb4p+3f,
-    0x1.9b3dp-2f, 0x1.ae311p+4f, -0x1.b5aa08p+2f, 0x1.9f6c8p-1f,
-    0x1.abb0c8p+4f, -0x1.e9cee8p+2f, -0x1.c151p-2f, 0x1.aac2b8p+4f,
-    -0x1.6fbf48p+2f, -0x1.a678p-5f, 0x1.ad3138p+4f, -0x1.405928p+2f,
-    0x1.23fdcp+0f, 0x1.aa16fp+4f, -0x1.eae25p+1f, 0x1.5313p-2f,
-    0x1.a7662p+4f, -0x1.2515c8p+2f, -0x1.b6888p-1f, 0x1.a80018p+4f,
-    -0x1.a422a8p+2f, -0x1.4c164p+0f, 0x1.2605e8p+4f, -0x1.e7aea4p+3f,
-    0x1.461f54p+4f, 0x1.22a52p+4f, -0x1.b78574p+3f, 0x1.53f714p+4f,
-    0x1.2c4cp+4f, -0x1.a007a4p+3f, 0x1.4e5714p+4f, 0x1.2efc38p+4f,
-    -0x1.be7cb4p+3f, 0x1.442ca4p+4f, 0x1.2753f8p+4f, -0x1.14d84ap+4f,
-    0x1.365a7cp+4f, 0x1.338e3p+4f, -0x1.0b343ap+4f, 0x1.28727cp+4f,
-    0x1.376b2p+4f, -0x1.a77f64p+3f, 0x1.3c2234p+4f, 0x1.3ea298p+4f,
-    -0x1.eda074p+3f, 0x1.2136e4p+4f, 0x1.4253e8p+4f, -0x1.aef924p+3f,
-    0x1.27d35cp+4f, 0x1.4ba7ap+4f, -0x1.fc7084p+3f, 0x1.08acdcp+4f,
-    0x1.4c404p+4f, -0x1.aab054p+3f, 0x1.16d3ccp+4f, 0x1.3c18ep+4f,
-    -0x1.749a84p+3f, 0x1.3f6f64p+4f, 0x1.43e9p+4f, -0x1.68fb74p+3f,
-    0x1.32ab0cp+4f, 0x1.56fef8p+4f, -0x1.f80bb4p+3f, 0x1.e5a258p+3f,
-    0x1.61a538p+4f, -0x1.e6c884p+3f, 0x1.bdb2d8p+3f, 0x1.552048p+4f,
-    -0x1.aae144p+3f, 0x1.0233b4p+4f, 0x1.61b6f8p+4f, -0x1.931ff4p+3f,
-    0x1.cfa8a8p+3f, 0x1.72c25p+4f, -0x1.cd9314p+3f, 0x1.783b88p+3f,
-    0x1.72c108p+4f, -0x1.7e0254p+3f, 0x1.867178p+3f, 0x1.50beap+4f,
-    -0x1.549504p+3f, 0x1.156adcp+4f, 0x1.5d425p+4f, -0x1.40eb94p+3f,
-    0x1.f25718p+3f, 0x1.82d48p+4f, -0x1.ad0ee4p+3f, 0x1.37e0d8p+3f,
-    0x1.93eaap+4f, -0x1.878e14p+3f, 0x1.ec975p+2f, 0x1.86a7b8p+4f,
-    -0x1.626604p+3f, 0x1.350d48p+3f, 0x1.90aaep+4f, -0x1.3956f4p+3f,
-    0x1.0eba98p+3f, 0x1.9c9ee8p+4f, -0x1.576dc4p+3f, 0x1.b9157p+2f,
+    -0x1.2068a2p+4f, 0x1.9b25e8p+3f, 0x1.7535acp+4f, -0x1.4b6e26p+4f,
+    0x1.2fd2ecp+3f, 0x1.82080ap+4f, -0x1.35e02ap+4f, 0x1.05be86p+3f,
+    0x1.7b5abap+4f, -0x1.255a32p+4f, 0x1.353d76p+3f, 0x1.87f9ccp+4f,
+    -0x1.0d897cp+4f, 0x1.04a14ap+3f, 0x1.8d7f3p+4f, -0x1.17a882p+4f,
+    0x1.bc9992p+2f, 0x1.941382p+4f, -0x1.e3dc64p+3f, 0x1.ba800ap+2f,
+    0x1.81d1d8p+4f, -0x1.00ce1ap+4f, 0x1.2ae556p+3f, 0x1.8f1378p+4f,
+    -0x1.d73384p+3f, 0x1.f4b332p+2f, 0x1.97025p+4f, -0x1.f7bb7p+3f,
+    0x1.74becap+2f, 0x1.a084cp+4f, -0x1.c42e92p+3f, 0x1.330baap+2f,
+    0x1.9dee4ap+4f, -0x1.acc924p+3f, 0x1.79a22cp+2f, 0x1.a42078p+4f,
+    -0x1.86f5p+3f, 0x1.3efacap+2f, 0x1.a6a66ap+4f, -0x1.9f6b74p+3f,
+    0x1.f03162p+1f, 0x1.aa3a1ap+4f, -0x1.60b084p+3f, 0x1.099132p+2f,
+    0x1.a1a29p+4f, -0x1.6ffff2p+3f, 0x1.80538ap+2f, 0x1.a7ccb2p+4f,
+    -0x1.48aa62p+3f, 0x1.4b358ap+2f, 0x1.aa2e24p+4f, -0x1.7d5acep+3f,
+    0x1.7bd10cp+1f, 0x1.adb0bap+4f, -0x1.5aafc2p+3f, 0x1.0fe3dap+1f,
+    0x1.ad917p+4f, -0x1.3f81c4p+3f, 0x1.a837dep+1f, 0x1.ae9746p+4f,
+    -0x1.1fb0cap+3f, 0x1.3adb7ap+1f, 0x1.ae9d72p+4f, -0x1.39ac24p+3f,
+    0x1.461ab4p+0f, 0x1.af92dap+4f, -0x1.f9a466p+2f, 0x1.a7a5c2p+0f,
+    0x1.ae824p+4f, -0x1.079062p+3f, 0x1.ccdb94p+1f, 0x1.af96fp+4f,
+    -0x1.cbc8e6p+2f, 0x1.654d5ap+1f, 0x1.ad2014p+4f, -0x1.182eb8p+3f,
+    0x1.9b3cc4p-2f, 0x1.ae3112p+4f, -0x1.b5aa08p+2f, 0x1.9f6c8cp-1f,
+    0x1.abb0c8p+4f, -0x1.e9cee6p+2f, -0x1.c150dap-2f, 0x1.aac2b6p+4f,
+    -0x1.6fbf44p+2f, -0x1.a6783ap-5f, 0x1.ad313ap+4f, -0x1.405926p+2f,
+    0x1.23fdc6p+0f, 0x1.aa16fp+4f, -0x1.eae24cp+1f, 0x1.5312f4p-2f,
+    0x1.a76622p+4f, -0x1.2515cap+2f, -0x1.b6889cp-1f, 0x1.a8001ap+4f,
+    -0x1.a422a6p+2f, -0x1.4c1648p+0f, 0x1.2605eap+4f, -0x1.e7aeap+3f,
+    0x1.461f52p+4f, 0x1.22a52p+4f, -0x1.b78574p+3f, 0x1.53f714p+4f,
+    0x1.2c4c02p+4f, -0x1.a007a4p+3f, 0x1.4e5714p+4f, 0x1.2efc3ap+4f,
+    -0x1.be7cb4p+3f, 0x1.442ca4p+4f, 0x1.2753fap+4f, -0x1.14d84ap+4f,
+    0x1.365a7cp+4f, 0x1.338e3p+4f, -0x1.0b3438p+4f, 0x1.28727ap+4f,
+    0x1.376b2p+4f, -0x1.a77f64p+3f, 0x1.3c2232p+4f, 0x1.3ea298p+4f,
+    -0x1.eda074p+3f, 0x1.2136e4p+4f, 0x1.4253ecp+4f, -0x1.aef91cp+3f,
+    0x1.27d35ep+4f, 0x1.4ba7ap+4f, -0x1.fc7084p+3f, 0x1.08acdap+4f,
+    0x1.4c404p+4f, -0x1.aab056p+3f, 0x1.16d3cap+4f, 0x1.3c18e2p+4f,
+    -0x1.749a82p+3f, 0x1.3f6f64p+4f, 0x1.43e902p+4f, -0x1.68fb74p+3f,
+    0x1.32ab0cp+4f, 0x1.56fefcp+4f, -0x1.f80bacp+3f, 0x1.e5a254p+3f,
+    0x1.61a53ap+4f, -0x1.e6c884p+3f, 0x1.bdb2d6p+3f, 0x1.552048p+4f,
+    -0x1.aae142p+3f, 0x1.0233b4p+4f, 0x1.61b6f8p+4f, -0x1.931ff4p+3f,
+    0x1.cfa8aep+3f, 0x1.72c25p+4f, -0x1.cd9312p+3f, 0x1.783b88p+3f,
+    0x1.72c10ap+4f, -0x1.7e0252p+3f, 0x1.867178p+3f, 0x1.50beap+4f,
+    -0x1.549506p+3f, 0x1.156adcp+4f, 0x1.5d425p+4f, -0x1.40eb94p+3f,
+    0x1.f25716p+3f, 0x1.82d48p+4f, -0x1.ad0edep+3f, 0x1.37e0dp+3f,
+    0x1.93eaap+4f, -0x1.878e12p+3f, 0x1.ec974ep+2f, 0x1.86a7bap+4f,
+    -0x1.626604p+3f, 0x1.350d48p+3f, 0x1.90aaep+4f, -0x1.3956fap+3f,
+    0x1.0eba92p+3f, 0x1.9c9ee8p+4f, -0x1.576dc4p+3f, 0x1.b9156ep+2f,
     0x1.9beba8p+4f, -0x1.13cbe4p+3f, 0x1.ce6fbp+2f, 0x1.822a58p+4f,
-    -0x1.10aaf4p+3f, 0x1.4eac38p+3f, 0x1.8ebap+4f, -0x1.e46248p+2f,
-    0x1.1a97b8p+3f, 0x1.a1f9e8p+4f, -0x1.31a664p+3f, 0x1.8d605p+2f,
-    0x1.a85f78p+4f, -0x1.112764p+3f, 0x1.595d9p+2f, 0x1.a18218p+4f,
-    -0x1.e9b628p+2f, 0x1.a3d5dp+2f, 0x1.a57cb8p+4f, -0x1.abd688p+2f,
-    0x1.6fef3p+2f, 0x1.abbda8p+4f, -0x1.e27868p+2f, 0x1.2a0b1p+2f,
-    0x1.a99338p+4f, -0x1.69e808p+2f, 0x1.3db29p+2f, 0x1.9e8378p+4f,
-    -0x1.774ce8p+2f, 0x1.b8bd7p+2f, 0x1.a3366p+4f, -0x1.375538p+2f,
-    0x1.81ecdp+2f, 0x1.acb7c8p+4f, -0x1.9bec48p+2f, 0x1.f0626p+1f,
-    0x1.ae11ep+4f, -0x1.5abc08p+2f, 0x1.88e66p+1f, 0x1.aad2cp+4f,
-    -0x1.258398p+2f, 0x1.0be1fp+2f, 0x1.aa2fe8p+4f, -0x1.b38a3p+1f,
-    0x1.b16d6p+1f, 0x1.ad0dfp+4f, -0x1.1346a8p+2f, 0x1.218fep+1f,
-    0x1.a9f3e8p+4f, -0x1.22215p+1f, 0x1.4d5aep+1f, 0x1.a689fp+4f,
-    -0x1.43051p+1f, 0x1.1f035p+2f, 0x1.a6af08p+4f, -0x1.52142p+0f,
-    0x1.daf46p+1f, 0x1.aa3fap+4f, -0x1.86c1bp+1f, 0x1.7cfd4p+0f,
-    0x1.a79a08p+4f, -0x1.05aaep+0f, 0x1.df12cp+0f, 0x1.a799c8p+4f,
-    -0x1.e2e2ap+0f, 0x1.70878p-1f, 0x1.a3829p+4f, 0x1.48be8p-2f,
-    0x1.16e9cp+0f, 0x1.a34138p+4f, 0x1.38e66p+0f, 0x1.1d142p+1f,
-    0x1.a00e78p+4f, 0x1.4794dp+1f, 0x1.6d874p+0f, 0x1.9facbp+4f,
-    0x1.a08b2p+0f, 0x1.4947p-2f, 0x1.a2df3p+4f, -0x1.25df4p-1f,
-    -0x1.f71p-6f, 0x1.16c3ep+4f, -0x1.866514p+3f, 0x1.64299cp+4f,
-    0x1.10c718p+4f, -0x1.6facd4p+3f, 0x1.6b2adcp+4f, 0x1.1b5e9p+4f,
-    -0x1.5bbd24p+3f, 0x1.670e5cp+4f, 0x1.21d78p+4f, -0x1.6fffb4p+3f,
-    0x1.600e2cp+4f, 0x1.1d58dp+4f, -0x1.9ddb14p+3f, 0x1.5cc16cp+4f,
-    0x1.26e968p+4f, -0x1.88ff24p+3f, 0x1.574414p+4f, 0x1.2b1758p+4f,
-    -0x1.5d1aa4p+3f, 0x1.5ab3c4p+4f, 0x1.303f9p+4f, -0x1.737834p+3f,
-    0x1.51c704p+4f, 0x1.32764p+4f, -0x1.4a1554p+3f, 0x1.53d3e4p+4f,
-    0x1.379d8p+4f, -0x1.5f0874p+3f, 0x1.4ae9ccp+4f, 0x1.39c498p+4f,
+    -0x1.10aaf2p+3f, 0x1.4eac38p+3f, 0x1.8eba02p+4f, -0x1.e4624ap+2f,
+    0x1.1a97b6p+3f, 0x1.a1f9e6p+4f, -0x1.31a668p+3f, 0x1.8d6046p+2f,
+    0x1.a85f78p+4f, -0x1.112766p+3f, 0x1.595d8ep+2f, 0x1.a18218p+4f,
+    -0x1.e9b628p+2f, 0x1.a3d5dp+2f, 0x1.a57cb8p+4f, -0x1.abd69p+2f,
+    0x1.6fef34p+2f, 0x1.abbdaap+4f, -0x1.e27868p+2f, 0x1.2a0b1p+2f,
+    0x1.a99338p+4f, -0x1.69e808p+2f, 0x1.3db28ep+2f, 0x1.9e837ap+4f,
+    -0x1.774ce8p+2f, 0x1.b8bd6ap+2f, 0x1.a3366p+4f, -0x1.37553ap+2f,
+    0x1.81ecdp+2f, 0x1.acb7cap+4f, -0x1.9bec4ap+2f, 0x1.f06266p+1f,
+    0x1.ae11ep+4f, -0x1.5abc0ap+2f, 0x1.88e664p+1f, 0x1.aad2c2p+4f,
+    -0x1.258398p+2f, 0x1.0be1fp+2f, 0x1.aa2fe8p+4f, -0x1.b38a22p+1f,
+    0x1.b16d54p+1f, 0x1.ad0df2p+4f, -0x1.1346a6p+2f, 0x1.218fdep+1f,
+    0x1.a9f3e8p+4f, -0x1.22214ap+1f, 0x1.4d5adap+1f, 0x1.a689f2p+4f,
+    -0x1.430508p+1f, 0x1.1f035p+2f, 0x1.a6af0ap+4f, -0x1.521416p+0f,
+    0x1.daf462p+1f, 0x1.aa3fa2p+4f, -0x1.86c1a8p+1f, 0x1.7cfd1ap+0f,
+    0x1.a79a08p+4f, -0x1.05aae6p+0f, 0x1.df12b2p+0f, 0x1.a799cap+4f,
+    -0x1.e2e2a8p+0f, 0x1.708766p-1f, 0x1.a3829p+4f, 0x1.48bef8p-2f,
+    0x1.16e9eep+0f, 0x1.a3413ap+4f, 0x1.38e65cp+0f, 0x1.1d1422p+1f,
+    0x1.a00e7ap+4f, 0x1.4794dp+1f, 0x1.6d874p+0f, 0x1.9facbp+4f,
+    0x1.a08b22p+0f, 0x1.4946c4p-2f, 0x1.a2df3p+4f, -0x1.25df44p-1f,
+    -0x1.f7121ap-6f, 0x1.16c3e2p+4f, -0x1.86650cp+3f, 0x1.64299ep+4f,
+    0x1.10c71ap+4f, -0x1.6facd4p+3f, 0x1.6b2adcp+4f, 0x1.1b5e92p+4f,
+    -0x1.5bbd26p+3f, 0x1.670e5cp+4f, 0x1.21d782p+4f, -0x1.6fffb2p+3f,
+    0x1.600e2cp+4f, 0x1.1d58d2p+4f, -0x1.9ddb14p+3f, 0x1.5cc16ap+4f,
+    0x1.26e966p+4f, -0x1.88ff2p+3f, 0x1.574416p+4f, 0x1.2b1758p+4f,
+    -0x1.5d1aa2p+3f, 0x1.5ab3c2p+4f, 0x1.303f92p+4f, -0x1.737834p+3f,
+    0x1.51c704p+4f, 0x1.327644p+4f, -0x1.4a154ep+3f, 0x1.53d3e4p+4f,
+    0x1.379d82p+4f, -0x1.5f0872p+3f, 0x1.4ae9ccp+4f, 0x1.39c49ap+4f,
     -0x1.349134p+3f, 0x1.4d18ccp+4f, 0x1.2d5ea8p+4f, -0x1.363684p+3f,
     0x1.5c9bdcp+4f, 0x1.34adfp+4f, -0x1.221cd4p+3f, 0x1.55de1cp+4f,
-    0x1.3e2c1p+4f, -0x1.4d49f4p+3f, 0x1.40ec74p+4f, 0x1.44a6bp+4f,
-    -0x1.3eb204p+3f, 0x1.363d34p+4f, 0x1.3efda8p+4f, -0x1.1fd9f4p+3f,
-    0x1.45308cp+4f, 0x1.4434fp+4f, -0x1.0e7084p+3f, 0x1.38d7bcp+4f,
-    0x1.489c5p+4f, -0x1.2a1ac4p+3f, 0x1.2d9d1cp+4f, 0x1.487aep+4f,
-    -0x1.e86648p+2f, 0x1.2ef424p+4f, 0x1.3f7d4p+4f, -0x1.f0d8a8p+2f,
-    0x1.4555e4p+4f, 0x1.4504d8p+4f, -0x1.c2b9a8p+2f, 0x1.37b98cp+4f,
-    0x1.52319p+4f, -0x1.17b454p+3f, 0x1.14b0bcp+4f, 0x1.5d5b38p+4f,
+    0x1.3e2c0ep+4f, -0x1.4d49eep+3f, 0x1.40ec76p+4f, 0x1.44a6bp+4f,
+    -0x1.3eb206p+3f, 0x1.363d32p+4f, 0x1.3efda8p+4f, -0x1.1fd9f2p+3f,
+    0x1.45308ap+4f, 0x1.4434f2p+4f, -0x1.0e708p+3f, 0x1.38d7bep+4f,
+    0x1.489c52p+4f, -0x1.2a1ac4p+3f, 0x1.2d9d1cp+4f, 0x1.487ae2p+4f,
+    -0x1.e8664ap+2f, 0x1.2ef424p+4f, 0x1.3f7d42p+4f, -0x1.f0d8a6p+2f,
+    0x1.4555e4p+4f, 0x1.4504dap+4f, -0x1.c2b9a6p+2f, 0x1.37b98cp+4f,
+    0x1.523194p+4f, -0x1.17b458p+3f, 0x1.14b0b8p+4f, 0x1.5d5b3ap+4f,
     -0x1.fca9a8p+2f, 0x1.f36658p+3f, 0x1.50b62p+4f, -0x1.b82d88p+2f,
-    0x1.174984p+4f, 0x1.5f358p+4f, -0x1.8b82c8p+2f, 0x1.e42f58p+3f,
-    0x1.6e5c9p+4f, -0x1.d36128p+2f, 0x1.a11fb8p+3f, 0x1.6d0fe8p+4f,
-    -0x1.4da3b8p+2f, 0x1.a1df08p+3f, 0x1.533558p+4f, -0x1.583ad8p+2f,
-    0x1.0ba44cp+4f, 0x1.5e8dc8p+4f, -0x1.16f9a8p+2f, 0x1.dcdb48p+3f,
-    0x1.7d5f9p+4f, -0x1.972d48p+2f, 0x1.603ff8p+3f, 0x1.88e468p+4f,
-    -0x1.568e38p+2f, 0x1.3034a8p+3f, 0x1.7b081p+4f, -0x1.0dc478p+2f,
-    0x1.650898p+3f, 0x1.858688p+4f, -0x1.a752bp+1f, 0x1.38d3d8p+3f,
-    0x1.93177p+4f, -0x1.275a78p+2f, 0x1.074898p+3f, 0x1.8ea258p+4f,
-    -0x1.415bdp+1f, 0x1.133a58p+3f, 0x1.790cdp+4f, -0x1.077fbp+1f,
-    0x1.670c88p+3f, 0x1.82741p+4f, -0x1.17742p+0f, 0x1.3e2a68p+3f,
-    0x1.98e228p+4f, -0x1.d6debp+1f, 0x1.d43f1p+2f, 0x1.9d80ap+4f,
-    -0x1.54a63p+1f, 0x1.9d8b1p+2f, 0x1.9458ap+4f, -0x1.8e78ep+0f,
-    0x1.ec3f1p+2f, 0x1.9784ap+4f, -0x1.6f858p-2f, 0x1.b960dp+2f,
-    0x1.9f94bp+4f, -0x1.63932p+0f, 0x1.6c725p+2f, 0x1.9ac45p+4f,
-    0x1.9263cp-1f, 0x1.83b89p+2f, 0x1.8e48e8p+4f, 0x1.98eccp-1f,
-    0x1.056f78p+3f, 0x1.92a088p+4f, 0x1.de67ep+0f, 0x1.d3715p+2f,
-    0x1.a10198p+4f, -0x1.e221p-3f, 0x1.38a65p+2f, 0x1.a1b69p+4f,
-    0x1.080c2p+0f, 0x1.0736dp+2f, 0x1.9cc118p+4f, 0x1.006d9p+1f,
-    0x1.50067p+2f, 0x1.9d009p+4f, 0x1.9527bp+1f, 0x1.1d375p+2f,
-    0x1.a0a298p+4f, 0x1.2a377p+1f, 0x1.ae5f2p+1f, 0x1.9ca58p+4f,
-    0x1.16ca68p+2f, 0x1.d5496p+1f, 0x1.98a5bp+4f, 0x1.06ee18p+2f,
-    0x1.65ca5p+2f, 0x1.999e08p+4f, 0x1.4a6908p+2f, 0x1.306fdp+2f,
-    0x1.9ea37p+4f, 0x1.b8aadp+1f, 0x1.44932p+1f, 0x1.9b3948p+4f,
-    0x1.5c1a18p+2f, 0x1.6896ep+1f, 0x1.9c03a8p+4f, 0x1.2ffc28p+2f,
-    0x1.b6b84p+0f, 0x1.9868cp+4f, 0x1.9f2908p+2f, 0x1.f8f4cp+0f,
-    0x1.97e988p+4f, 0x1.c50f08p+2f, 0x1.899bap+1f, 0x1.95a278p+4f,
-    0x1.ff8c08p+2f, 0x1.1da7ap+1f, 0x1.954d18p+4f, 0x1.e86fe8p+2f,
-    0x1.20eecp+0f, 0x1.985e8p+4f, 0x1.81d4f8p+2f, 0x1.bcc28p-1f,
-    0x1.0481dp+4f, -0x1.49b074p+3f, 0x1.742fc4p+4f, 0x1.0629f8p+4f,
-    -0x1.2db2d4p+3f, 0x1.75b374p+4f, 0x1.fad3fp+3f, -0x1.41a374p+3f,
+    0x1.174982p+4f, 0x1.5f357ep+4f, -0x1.8b82bep+2f, 0x1.e42f54p+3f,
+    0x1.6e5c92p+4f, -0x1.d36128p+2f, 0x1.a11fb6p+3f, 0x1.6d0fe8p+4f,
+    -0x1.4da3b6p+2f, 0x1.a1df06p+3f, 0x1.533558p+4f, -0x1.583ad6p+2f,
+    0x1.0ba44cp+4f, 0x1.5e8dcap+4f, -0x1.16f9a4p+2f, 0x1.dcdb46p+3f,
+    0x1.7d5f8ep+4f, -0x1.972d4ap+2f, 0x1.603ffcp+3f, 0x1.88e468p+4f,
+    -0x1.568e3ap+2f, 0x1.3034a6p+3f, 0x1.7b0812p+4f, -0x1.0dc47ap+2f,
+    0x1.650898p+3f, 0x1.858686p+4f, -0x1.a752ap+1f, 0x1.38d3dap+3f,
+    0x1.93177p+4f, -0x1.275a78p+2f, 0x1.074896p+3f, 0x1.8ea25ap+4f,
+    -0x1.415bd6p+1f, 0x1.133a56p+3f, 0x1.790cdp+4f, -0x1.077fa6p+1f,
+    0x1.670c86p+3f, 0x1.82741p+4f, -0x1.177414p+0f, 0x1.3e2a68p+3f,
+    0x1.98e226p+4f, -0x1.d6deap+1f, 0x1.d43f08p+2f, 0x1.9d80a2p+4f,
+    -0x1.54a62ap+1f, 0x1.9d8b12p+2f, 0x1.9458a2p+4f, -0x1.8e78dp+0f,
+    0x1.ec3f1p+2f, 0x1.97849ep+4f, -0x1.6f8552p-2f, 0x1.b960dcp+2f,
+    0x1.9f94b2p+4f, -0x1.639314p+0f, 0x1.6c725p+2f, 0x1.9ac45p+4f,
+    0x1.9263b6p-1f, 0x1.83b88cp+2f, 0x1.8e48e8p+4f, 0x1.98ecb8p-1f,
+    0x1.056f78p+3f, 0x1.92a08ap+4f, 0x1.de67e8p+0f, 0x1.d3715p+2f,
+    0x1.a1019cp+4f, -0x1.e22036p-3f, 0x1.38a64p+2f, 0x1.a1b692p+4f,
+    0x1.080c2p+0f, 0x1.0736d2p+2f, 0x1.9cc118p+4f, 0x1.006d8cp+1f,
+    0x1.50067p+2f, 0x1.9d0094p+4f, 0x1.9527aap+1f, 0x1.1d3748p+2f,
+    0x1.a0a298p+4f, 0x1.2a3772p+1f, 0x1.ae5f18p+1f, 0x1.9ca58p+4f,
+    0x1.16ca6cp+2f, 0x1.d5495ap+1f, 0x1.98a5bp+4f, 0x1.06ee1cp+2f,
+    0x1.65ca5p+2f, 0x1.999e08p+4f, 0x1.4a690ap+2f, 0x1.306fd2p+2f,
+    0x1.9ea374p+4f, 0x1.b8aad2p+1f, 0x1.44933ap+1f, 0x1.9b394ap+4f,
+    0x1.5c1a1ap+2f, 0x1.6896d4p+1f, 0x1.9c03aap+4f, 0x1.2ffc26p+2f,
+    0x1.b6b842p+0f, 0x1.9868c2p+4f, 0x1.9f2906p+2f, 0x1.f8f4c6p+0f,
+    0x1.97e98ap+4f, 0x1.c50f0ap+2f, 0x1.899b9ap+1f, 0x1.95a278p+4f,
+    0x1.ff8c0cp+2f, 0x1.1da798p+1f, 0x1.954d18p+4f, 0x1.e86fecp+2f,
+    0x1.20eecp+0f, 0x1.985e8p+4f, 0x1.81d4f6p+2f, 0x1.bcc272p-1f,
+    0x1.0481d2p+4f, -0x1.49b06ep+3f, 0x1.742fc2p+4f, 0x1.0629fap+4f,
+    -0x1.2db2d2p+3f, 0x1.75b374p+4f, 0x1.fad3f2p+3f, -0x1.41a374p+3f,
     0x1.77c07cp+4f, 0x1.0dd1ap+4f, -0x1.37e234p+3f, 0x1.71e5ccp+4f,
-    0x1.0ab68p+4f, -0x1.5b81f4p+3f, 0x1.703964p+4f, 0x1.1419dp+4f,
-    -0x1.4a34c4p+3f, 0x1.6cb42cp+4f, 0x1.1db4bp+4f, -0x1.370f34p+3f,
-    0x1.690bd4p+4f, 0x1.163858p+4f, -0x1.275f24p+3f, 0x1.6ed4bcp+4f,
-    0x1.1e9238p+4f, -0x1.146ae4p+3f, 0x1.6a2304p+4f, 0x1.2674fp+4f,
-    -0x1.246d94p+3f, 0x1.63f3b4p+4f, 0x1.2748e8p+4f, -0x1.ffd228p+2f,
+    0x1.0ab68p+4f, -0x1.5b81f4p+3f, 0x1.703964p+4f, 0x1.1419cep+4f,
+    -0x1.4a34cp+3f, 0x1.6cb42ap+4f, 0x1.1db4bp+4f, -0x1.370f32p+3f,
+    0x1.690bd4p+4f, 0x1.163858p+4f, -0x1.275f22p+3f, 0x1.6ed4bcp+4f,
+    0x1.1e9238p+4f, -0x1.146adep+3f, 0x1.6a2304p+4f, 0x1.2674fp+4f,
+    -0x1.246d92p+3f, 0x1.63f3b4p+4f, 0x1.2748e8p+4f, -0x1.ffd224p+2f,
     0x1.6512acp+4f, 0x1.16b91p+4f, -0x1.064854p+3f, 0x1.704a94p+4f,
-    0x1.1f096p+4f, -0x1.e2e7c8p+2f, 0x1.6ba09cp+4f, 0x1.2e08bp+4f,
-    -0x1.108034p+3f, 0x1.5d6dfcp+4f, 0x1.35728p+4f, -0x1.f6c208p+2f,
-    0x1.569b6cp+4f, 0x1.2ef738p+4f, -0x1.d5ec48p+2f, 0x1.5e781cp+4f,
-    0x1.34b5b8p+4f, -0x1.aae428p+2f, 0x1.5602f4p+4f, 0x1.3b08cp+4f,
-    -0x1.cccf68p+2f, 0x1.4dfb74p+4f, 0x1.3a3edp+4f, -0x1.7e3c38p+2f,
-    0x1.4cd71cp+4f, 0x1.2e6fd8p+4f, -0x1.8bae28p+2f, 0x1.5e964cp+4f,
-    0x1.34213p+4f, -0x1.5df098p+2f, 0x1.559544p+4f, 0x1.3f818p+4f,
-    -0x1.a008a8p+2f, 0x1.420a84p+4f, 0x1.44c878p+4f, -0x1.710508p+2f,
-    0x1.33f284p+4f, 0x1.3e76fp+4f, -0x1.5090c8p+2f, 0x1.406a8cp+4f,
-    0x1.433598p+4f, -0x1.14abf8p+2f, 0x1.2e1104p+4f, 0x1.4abdcp+4f,
-    -0x1.36bf18p+2f, 0x1.1f87e4p+4f, 0x1.496318p+4f, -0x1.a25e1p+1f,
-    0x1.189864p+4f, 0x1.3b7538p+4f, -0x1.f79ffp+1f, 0x1.3da82cp+4f,
-    0x1.406c18p+4f, -0x1.6d683p+1f, 0x1.2a40acp+4f, 0x1.545acp+4f,
-    -0x1.d4411p+1f, 0x1.027754p+4f, 0x1.6077d8p+4f, -0x1.29ef9p+1f,
-    0x1.c65298p+3f, 0x1.53c4cp+4f, -0x1.c2a3ap+0f, 0x1.f2e0e8p+3f,
-    0x1.5dcb7p+4f, -0x1.f6838p-2f, 0x1.be2e48p+3f, 0x1.6cfeb8p+4f,
-    -0x1.0674ep+0f, 0x1.8d5a58p+3f, 0x1.69344p+4f, 0x1.a269cp-1f,
-    0x1.8c4fe8p+3f, 0x1.4fb63p+4f, 0x1.38ecp-5f, 0x1.e7e868p+3f,
-    0x1.589edp+4f, 0x1.5035ap+0f, 0x1.ba4fa8p+3f, 0x1.7583ep+4f,
-    -0x1.22d7p-3f, 0x1.68a9b8p+3f, 0x1.7e4a88p+4f, 0x1.a1744p-1f,
-    0x1.46a0c8p+3f, 0x1.7118d8p+4f, 0x1.b0d86p+0f, 0x1.6e7888p+3f,
-    0x1.789488p+4f, 0x1.49f05p+1f, 0x1.4f4c08p+3f, 0x1.84692p+4f,
-    0x1.c065ap+0f, 0x1.2b00a8p+3f, 0x1.7fd0d8p+4f, 0x1.d1a2fp+1f,
-    0x1.321a68p+3f, 0x1.6ba238p+4f, 0x1.a3d0dp+1f, 0x1.7528d8p+3f,
-    0x1.743bap+4f, 0x1.1298e8p+2f, 0x1.546ad8p+3f, 0x1.89a8cp+4f,
-    0x1.61217p+1f, 0x1.0d8c88p+3f, 0x1.8ee088p+4f, 0x1.eb867p+1f,
-    0x1.e2377p+2f, 0x1.85f098p+4f, 0x1.29fee8p+2f, 0x1.13ec48p+3f,
-    0x1.8ac298p+4f, 0x1.668da8p+2f, 0x1.eb3a9p+2f, 0x1.92e8ep+4f,
-    0x1.372cf8p+2f, 0x1.a842bp+2f, 0x1.8f0fe8p+4f, 0x1.a710e8p+2f,
+    0x1.1f0962p+4f, -0x1.e2e7c8p+2f, 0x1.6ba09cp+4f, 0x1.2e08b4p+4f,
+    -0x1.108032p+3f, 0x1.5d6dfap+4f, 0x1.35728p+4f, -0x1.f6c20ap+2f,
+    0x1.569b6cp+4f, 0x1.2ef73ap+4f, -0x1.d5ec4ap+2f, 0x1.5e781cp+4f,
+    0x1.34b5bap+4f, -0x1.aae41ep+2f, 0x1.5602f2p+4f, 0x1.3b08c2p+4f,
+    -0x1.cccf68p+2f, 0x1.4dfb74p+4f, 0x1.3a3edp+4f, -0x1.7e3c36p+2f,
+    0x1.4cd71cp+4f, 0x1.2e6fd8p+4f, -0x1.8bae2ap+2f, 0x1.5e964cp+4f,
+    0x1.342132p+4f, -0x1.5df096p+2f, 0x1.559544p+4f, 0x1.3f8184p+4f,
+    -0x1.a008a2p+2f, 0x1.420a82p+4f, 0x1.44c87ap+4f, -0x1.710504p+2f,
+    0x1.33f284p+4f, 0x1.3e76fp+4f, -0x1.5090cap+2f, 0x1.406a8ap+4f,
+    0x1.43359ap+4f, -0x1.14abfcp+2f, 0x1.2e1106p+4f, 0x1.4abdcp+4f,
+    -0x1.36bf16p+2f, 0x1.1f87e2p+4f, 0x1.49631ap+4f, -0x1.a25e0cp+1f,
+    0x1.189864p+4f, 0x1.3b7538p+4f, -0x1.f79ff4p+1f, 0x1.3da82cp+4f,
+    0x1.406c18p+4f, -0x1.6d6828p+1f, 0x1.2a40acp+4f, 0x1.545ac4p+4f,
+    -0x1.d4411cp+1f, 0x1.027754p+4f, 0x1.6077dap+4f, -0x1.29ef8cp+1f,
+    0x1.c65296p+3f, 0x1.53c4c2p+4f, -0x1.c2a39cp+0f, 0x1.f2e0e6p+3f,
+    0x1.5dcb6ep+4f, -0x1.f683c2p-2f, 0x1.be2e4cp+3f, 0x1.6cfeb8p+4f,
+    -0x1.0674e2p+0f, 0x1.8d5a56p+3f, 0x1.693442p+4f, 0x1.a269bep-1f,
+    0x1.8c4fe6p+3f, 0x1.4fb63p+4f, 0x1.38ed1cp-5f, 0x1.e7e866p+3f,
+    0x1.589ed2p+4f, 0x1.5035acp+0f, 0x1.ba4fa6p+3f, 0x1.7583ep+4f,
+    -0x1.22d6aap-3f, 0x1.68a9cp+3f, 0x1.7e4a88p+4f, 0x1.a1746p-1f,
+    0x1.46a0c8p+3f, 0x1.7118d8p+4f, 0x1.b0d856p+0f, 0x1.6e7888p+3f,
+    0x1.78948ap+4f, 0x1.49f046p+1f, 0x1.4f4c04p+3f, 0x1.84692p+4f,
+    0x1.c065a6p+0f, 0x1.2b00a6p+3f, 0x1.7fd0d8p+4f, 0x1.d1a2fp+1f,
+    0x1.321a68p+3f, 0x1.6ba23ap+4f, 0x1.a3d0d8p+1f, 0x1.7528d6p+3f,
+    0x1.743ba2p+4f, 0x1.1298eap+2f, 0x1.546adap+3f, 0x1.89a8c2p+4f,
+    0x1.612182p+1f, 0x1.0d8c88p+3f, 0x1.8ee088p+4f, 0x1.eb8676p+1f,
+    0x1.e2376ep+2f, 0x1.85f09ap+4f, 0x1.29fee6p+2f, 0x1.13ec48p+3f,
+    0x1.8ac29cp+4f, 0x1.668da4p+2f, 0x1.eb3a96p+2f, 0x1.92e8e2p+4f,
+    0x1.372cf6p+2f, 0x1.a842aap+2f, 0x1.8f0fe8p+4f, 0x1.a710e8p+2f,
     0x1.b30a1p+2f, 0x1.82576p+4f, 0x1.96d4d8p+2f, 0x1.163718p+3f,
-    0x1.876e58p+4f, 0x1.d27d08p+2f, 0x1.f1949p+2f, 0x1.94b97p+4f,
-    0x1.757c98p+2f, 0x1.71a4bp+2f, 0x1.9676a8p+4f, 0x1.b276e8p+2f,
-    0x1.3c199p+2f, 0x1.91a56p+4f, 0x1.dedfd8p+2f, 0x1.7c3b9p+2f,
-    0x1.9207ep+4f, 0x1.08293cp+3f, 0x1.4590bp+2f, 0x1.962e6p+4f,
-    0x1.e7cd48p+2f, 0x1.06d0dp+2f, 0x1.92203p+4f, 0x1.21098cp+3f,
-    0x1.11873p+2f, 0x1.8d80b8p+4f, 0x1.1e36acp+3f, 0x1.83115p+2f,
-    0x1.8e43d8p+4f, 0x1.35251cp+3f, 0x1.4da5bp+2f, 0x1.94162p+4f,
-    0x1.0dfc8cp+3f, 0x1.a1486p+1f, 0x1.9238b8p+4f, 0x1.266494p+3f,
-    0x1.372eap+1f, 0x1.90719p+4f, 0x1.3648fcp+3f, 0x1.b88fap+1f,
-    0x1.8de04p+4f, 0x1.49754cp+3f, 0x1.4fefap+1f, 0x1.8f3018p+4f,
-    0x1.3ceec4p+3f, 0x1.9f3bcp+0f, 0x1.8bab38p+4f, 0x1.5b2dbcp+3f,
-    0x1.e24bcp+0f, 0x1.8bbcc8p+4f, 0x1.5acd8cp+3f, 0x1.c77aap+1f,
-    0x1.89ff1p+4f, 0x1.69281cp+3f, 0x1.67a1ap+1f, 0x1.65cf7p+4f,
-    -0x1.c3eb6ap+4f, -0x1.78236p+2f, 0x1.726dd8p+4f, -0x1.a8ebfap+4f,
-    -0x1.71dffp+2f, 0x1.68cc5p+4f, -0x1.b171aap+4f, -0x1.b2b91p+2f,
-    0x1.5c43c8p+4f, -0x1.ccd84ap+4f, -0x1.b73c5p+2f, 0x1.59da7p+4f,
-    -0x1.ddc00ap+4f, -0x1.7ebf7p+2f, 0x1.4f4aep+4f, -0x1.c55372p+4f,
-    -0x1.17ca88p+3f, 0x1.855b88p+4f, -0x1.6f3572p+4f, -0x1.62c3ep+2f,
-    0x1.8e08ep+4f, -0x1.520ad2p+4f, -0x1.59b29p+2f, 0x1.865518p+4f,
-    -0x1.5a7912p+4f, -0x1.9fc72p+2f, 0x1.7dfff8p+4f, -0x1.7792aap+4f,
-    -0x1.a728bp+2f, 0x1.7cfe1p+4f, -0x1.8c8852p+4f, -0x1.6b35dp+2f,
-    0x1.735b88p+4f, -0x1.947352p+4f, -0x1.ac03fp+2f, 0x1.74484p+4f,
-    -0x1.7f6002p+4f, -0x1.e61cep+2f, 0x1.69a4c8p+4f, -0x1.9cdb5ap+4f,
-    -0x1.eb032p+2f, 0x1.671bb8p+4f, -0x1.881c1ap+4f, -0x1.15bb1p+3f,
-    0x1.5ca258p+4f, -0x1.a674c2p+4f, -0x1.1622d8p+3f, 0x1.5942d8p+4f,
+    0x1.876e58p+4f, 0x1.d27d06p+2f, 0x1.f19492p+2f, 0x1.94b96ep+4f,
+    0x1.757c9ep+2f, 0x1.71a4a8p+2f, 0x1.9676aap+4f, 0x1.b276e6p+2f,
+    0x1.3c198ap+2f, 0x1.91a562p+4f, 0x1.dedfdap+2f, 0x1.7c3b8ep+2f,
+    0x1.9207dep+4f, 0x1.08293ap+3f, 0x1.4590acp+2f, 0x1.962e6p+4f,
+    0x1.e7cd4ap+2f, 0x1.06d0dp+2f, 0x1.922032p+4f, 0x1.21098cp+3f,
+    0x1.11872cp+2f, 0x1.8d80b8p+4f, 0x1.1e36aep+3f, 0x1.83114ep+2f,
+    0x1.8e43d8p+4f, 0x1.35251ep+3f, 0x1.4da5acp+2f, 0x1.941624p+4f,
+    0x1.0dfc8ep+3f, 0x1.a1483cp+1f, 0x1.9238b8p+4f, 0x1.266492p+3f,
+    0x1.372e94p+1f, 0x1.90719p+4f, 0x1.3648fcp+3f, 0x1.b88fap+1f,
+    0x1.8de03ep+4f, 0x1.497548p+3f, 0x1.4fefb6p+1f, 0x1.8f3018p+4f,
+    0x1.3ceec6p+3f, 0x1.9f3bb8p+0f, 0x1.8bab38p+4f, 0x1.5b2dbcp+3f,
+    0x1.e24baap+0f, 0x1.8bbcc8p+4f, 0x1.5acd8cp+3f, 0x1.c77a9ap+1f,
+    0x1.89ff1p+4f, 0x1.69281ep+3f, 0x1.67a198p+1f, 0x1.65cf72p+4f,
+    -0x1.c3eb6ep+4f, -0x1.782368p+2f, 0x1.726dd8p+4f, -0x1.a8ebfap+4f,
+    -0x1.71dffp+2f, 0x1.68cc52p+4f, -0x1.b171a8p+4f, -0x1.b2b90ep+2f,
+    0x1.5c43cap+4f, -0x1.ccd84ap+4f, -0x1.b73c54p+2f, 0x1.59da7p+4f,
+    -0x1.ddc00ap+4f, -0x1.7ebf72p+2f, 0x1.4f4aep+4f, -0x1.c55372p+4f,
+    -0x1.17ca88p+3f, 0x1.855b8ap+4f, -0x1.6f3574p+4f, -0x1.62c3dep+2f,
+    0x1.8e08e2p+4f, -0x1.520ad2p+4f, -0x1.59b296p+2f, 0x1.86551ap+4f,
+    -0x1.5a791p+4f, -0x1.9fc722p+2f, 0x1.7dfffap+4f, -0x1.7792aap+4f,
+    -0x1.a728b2p+2f, 0x1.7cfe12p+4f, -0x1.8c8852p+4f, -0x1.6b35cep+2f,
+    0x1.735b8ap+4f, -0x1.947354p+4f, -0x1.ac03eap+2f, 0x1.74484p+4f,
+    -0x1.7f6002p+4f, -0x1.e61ce2p+2f, 0x1.69a4c8p+4f, -0x1.9cdb5ap+4f,
+    -0x1.eb0326p+2f, 0x1.671bb6p+4f, -0x1.881c1cp+4f, -0x1.15bb14p+3f,
+    0x1.5ca25ap+4f, -0x1.a674c2p+4f, -0x1.1622d8p+3f, 0x1.5942d8p+4f,
     -0x1.9281e2p+4f, -0x1.3a3a3p+3f, 0x1.726b8p+4f, -0x1.68f71ap+4f,
-    -0x1.11758p+3f, 0x1.646888p+4f, -0x1.727f92p+4f, -0x1.37fffp+3f,
-    0x1.49614p+4f, -0x1.b51372p+4f, -0x1.447bdp+3f, 0x1.42519p+4f,
-    -0x1.a6022ap+4f, -0x1.719c28p+3f, 0x1.3dc828p+4f, -0x1.8e1be2p+4f,
-    -0x1.987708p+3f, 0x1.986b2p+4f, -0x1.17388ap+4f, -0x1.3a046p+2f,
-    0x1.9c788p+4f, -0x1.f35384p+3f, -0x1.25c36p+2f, 0x1.95fffp+4f,
-    -0x1.048c9ap+4f, -0x1.77062p+2f, 0x1.927e98p+4f, -0x1.20f98ap+4f,
-    -0x1.87d28p+2f, 0x1.946a8p+4f, -0x1.3507bap+4f, -0x1.4b9b7p+2f,
-    0x1.8c5a3p+4f, -0x1.3d63e2p+4f, -0x1.9464bp+2f, 0x1.8a4ef8p+4f,
-    -0x1.28aae2p+4f, -0x1.d1cb8p+2f, 0x1.84871p+4f, -0x1.45274ap+4f,
-    -0x1.dba8fp+2f, 0x1.7fdcf8p+4f, -0x1.2f882ap+4f, -0x1.0d085p+3f,
-    0x1.7a5538p+4f, -0x1.4bd7f2p+4f, -0x1.0fec58p+3f, 0x1.75b3bp+4f,
-    -0x1.359ebap+4f, -0x1.30d5ap+3f, 0x1.855c2p+4f, -0x1.13d272p+4f,
-    -0x1.086ee8p+3f, 0x1.7af2b8p+4f, -0x1.1a15aap+4f, -0x1.2e46e8p+3f,
-    0x1.6d4ebp+4f, -0x1.53271ap+4f, -0x1.34721p+3f, 0x1.5fccd8p+4f,
-    -0x1.5adf82p+4f, -0x1.5b0b1p+3f, 0x1.692e5p+4f, -0x1.3b1dd2p+4f,
-    -0x1.5569e8p+3f, 0x1.58e218p+4f, -0x1.4303e2p+4f, -0x1.803ccp+3f,
-    0x1.501dcp+4f, -0x1.62fb8ap+4f, -0x1.84203p+3f, 0x1.48ff5p+4f,
-    -0x1.4a890ap+4f, -0x1.aba078p+3f, 0x1.61da2p+4f, -0x1.23a31ap+4f,
-    -0x1.7a0abp+3f, 0x1.515a38p+4f, -0x1.2af24ap+4f, -0x1.a72c2p+3f,
-    0x1.394548p+4f, -0x1.740002p+4f, -0x1.bc0ebp+3f, 0x1.3238f8p+4f,
-    -0x1.5b7f42p+4f, -0x1.e39aap+3f, 0x1.2682d8p+4f, -0x1.422edap+4f,
-    -0x1.0a73p+4f, 0x1.9ffb5p+4f, -0x1.70a284p+3f, -0x1.d9848p+1f,
-    0x1.a1c178p+4f, -0x1.2ee664p+3f, -0x1.9aba8p+1f, 0x1.9b9c8p+4f,
-    -0x1.4a45c4p+3f, -0x1.2773dp+2f, 0x1.9a4dd8p+4f, -0x1.8d8724p+3f,
-    -0x1.47123p+2f, 0x1.9e8c1p+4f, -0x1.b41e84p+3f, -0x1.0c30dp+2f,
-    0x1.97f708p+4f, -0x1.cb4c54p+3f, -0x1.605dap+2f, 0x1.93592p+4f,
-    -0x1.a4ad44p+3f, -0x1.9de1dp+2f, 0x1.911ecp+4f, -0x1.e10a54p+3f,
-    -0x1.b4433p+2f, 0x1.8aa268p+4f, -0x1.b6cb54p+3f, -0x1.f0a32p+2f,
-    0x1.88aa98p+4f, -0x1.f03364p+3f, -0x1.0210fp+3f, 0x1.81dcp+4f,
-    -0x1.c75624p+3f, -0x1.21c5b8p+3f, 0x1.8cec78p+4f, -0x1.7c0174p+3f,
-    -0x1.da1abp+2f, 0x1.83e388p+4f, -0x1.8f8144p+3f, -0x1.17f2d8p+3f,
-    0x1.7e4fb8p+4f, -0x1.fd4674p+3f, -0x1.28ccb8p+3f, 0x1.73b71p+4f,
-    -0x1.046c32p+4f, -0x1.503188p+3f, 0x1.7751ep+4f, -0x1.d374b4p+3f,
-    -0x1.4a0e58p+3f, 0x1.6aa44p+4f, -0x1.ddc304p+3f, -0x1.727468p+3f,
-    0x1.6723ep+4f, -0x1.087a92p+4f, -0x1.776108p+3f, 0x1.5de0e8p+4f,
-    -0x1.e58ad4p+3f, -0x1.9bc4c8p+3f, 0x1.6e54cp+4f, -0x1.aae5e4p+3f,
-    -0x1.6b66e8p+3f, 0x1.6176f8p+4f, -0x1.b4df44p+3f, -0x1.95edep+3f,
-    0x1.57aa38p+4f, -0x1.0db7d2p+4f, -0x1.a22d4p+3f, 0x1.4743a8p+4f,
-    -0x1.12befap+4f, -0x1.d0b84p+3f, 0x1.4e8098p+4f, -0x1.eb7534p+3f,
-    -0x1.c7fa98p+3f, 0x1.3c202p+4f, -0x1.f96314p+3f, -0x1.f89efp+3f,
+    -0x1.11758p+3f, 0x1.64688ap+4f, -0x1.727f92p+4f, -0x1.37fff2p+3f,
+    0x1.496142p+4f, -0x1.b51374p+4f, -0x1.447bd2p+3f, 0x1.425192p+4f,
+    -0x1.a6022ap+4f, -0x1.719c2ap+3f, 0x1.3dc82ap+4f, -0x1.8e1be2p+4f,
+    -0x1.98770ap+3f, 0x1.986b2p+4f, -0x1.173888p+4f, -0x1.3a0468p+2f,
+    0x1.9c7882p+4f, -0x1.f35384p+3f, -0x1.25c366p+2f, 0x1.95fff2p+4f,
+    -0x1.048c9ap+4f, -0x1.77062p+2f, 0x1.927e9ap+4f, -0x1.20f98ap+4f,
+    -0x1.87d28p+2f, 0x1.946a82p+4f, -0x1.3507bap+4f, -0x1.4b9b74p+2f,
+    0x1.8c5a3p+4f, -0x1.3d63e4p+4f, -0x1.9464aep+2f, 0x1.8a4ef8p+4f,
+    -0x1.28aae2p+4f, -0x1.d1cb86p+2f, 0x1.848712p+4f, -0x1.452748p+4f,
+    -0x1.dba8f4p+2f, 0x1.7fdcf8p+4f, -0x1.2f8828p+4f, -0x1.0d0854p+3f,
+    0x1.7a5538p+4f, -0x1.4bd7f2p+4f, -0x1.0fec58p+3f, 0x1.75b3b2p+4f,
+    -0x1.359ebap+4f, -0x1.30d5ap+3f, 0x1.855c2p+4f, -0x1.13d27p+4f,
+    -0x1.086eeap+3f, 0x1.7af2b8p+4f, -0x1.1a15aap+4f, -0x1.2e46e6p+3f,
+    0x1.6d4ebp+4f, -0x1.53271cp+4f, -0x1.347212p+3f, 0x1.5fccdap+4f,
+    -0x1.5adf82p+4f, -0x1.5b0b12p+3f, 0x1.692e52p+4f, -0x1.3b1dd2p+4f,
+    -0x1.5569eap+3f, 0x1.58e21ap+4f, -0x1.4303e2p+4f, -0x1.803cbep+3f,
+    0x1.501dcp+4f, -0x1.62fb8ap+4f, -0x1.84203p+3f, 0x1.48ff52p+4f,
+    -0x1.4a890ap+4f, -0x1.aba07ap+3f, 0x1.61da2p+4f, -0x1.23a31ap+4f,
+    -0x1.7a0abp+3f, 0x1.515a38p+4f, -0x1.2af24ap+4f, -0x1.a72c22p+3f,
+    0x1.394546p+4f, -0x1.73fffep+4f, -0x1.bc0eb4p+3f, 0x1.3238fap+4f,
+    -0x1.5b7f42p+4f, -0x1.e39aap+3f, 0x1.2682dap+4f, -0x1.422edap+4f,
+    -0x1.0a73p+4f, 0x1.9ffb5p+4f, -0x1.70a28ap+3f, -0x1.d98476p+1f,
+    0x1.a1c178p+4f, -0x1.2ee662p+3f, -0x1.9aba84p+1f, 0x1.9b9c8p+4f,
+    -0x1.4a45c6p+3f, -0x1.2773d6p+2f, 0x1.9a4ddap+4f, -0x1.8d8724p+3f,
+    -0x1.47123p+2f, 0x1.9e8c12p+4f, -0x1.b41e84p+3f, -0x1.0c30cep+2f,
+    0x1.97f70ap+4f, -0x1.cb4c54p+3f, -0x1.605d9ap+2f, 0x1.935922p+4f,
+    -0x1.a4ad44p+3f, -0x1.9de1cep+2f, 0x1.911ecp+4f, -0x1.e10a54p+3f,
+    -0x1.b4433p+2f, 0x1.8aa26ap+4f, -0x1.b6cb4ep+3f, -0x1.f0a322p+2f,
+    0x1.88aa9ap+4f, -0x1.f03364p+3f, -0x1.0210eep+3f, 0x1.81dc02p+4f,
+    -0x1.c75624p+3f, -0x1.21c5bap+3f, 0x1.8cec78p+4f, -0x1.7c0174p+3f,
+    -0x1.da1abp+2f, 0x1.83e388p+4f, -0x1.8f8142p+3f, -0x1.17f2dap+3f,
+    0x1.7e4fbcp+4f, -0x1.fd467ap+3f, -0x1.28ccbap+3f, 0x1.73b712p+4f,
+    -0x1.046c32p+4f, -0x1.50318ap+3f, 0x1.7751e2p+4f, -0x1.d374b2p+3f,
+    -0x1.4a0e58p+3f, 0x1.6aa43ep+4f, -0x1.ddc306p+3f, -0x1.72746ap+3f,
+    0x1.6723e2p+4f, -0x1.087a92p+4f, -0x1.776108p+3f, 0x1.5de0eap+4f,
+    -0x1.e58ad4p+3f, -0x1.9bc4c8p+3f, 0x1.6e54c2p+4f, -0x1.aae5e4p+3f,
+    -0x1.6b66eap+3f, 0x1.6176f8p+4f, -0x1.b4df42p+3f, -0x1.95edep+3f,
+    0x1.57aa3ap+4f, -0x1.0db7d4p+4f, -0x1.a22d3ep+3f, 0x1.4743a8p+4f,
+    -0x1.12befap+4f, -0x1.d0b84p+3f, 0x1.4e809ap+4f, -0x1.eb7534p+3f,
+    -0x1.c7fa9ap+3f, 0x1.3c2024p+4f, -0x1.f9631ap+3f, -0x1.f89ef4p+3f,
     0x1.333298p+4f, -0x1.190552p+4f, -0x1.033cp+4f, 0x1.2992c8p+4f,
     -0x1.027652p+4f, -0x1.15bap+4f, 0x1.4389f8p+4f, -0x1.c1beb4p+3f,
-    -0x1.edb098p+3f, 0x1.32ad3p+4f, -0x1.cea974p+3f, -0x1.0db52p+4f,
-    0x1.a26b88p+4f, -0x1.5748a8p+2f, -0x1.18c46p+1f, 0x1.a1f36p+4f,
-    -0x1.b0c85p+1f, -0x1.b8774p+0f, 0x1.9d035p+4f, -0x1.079448p+2f,
-    -0x1.88a1ep+1f, 0x1.9d4f18p+4f, -0x1.895308p+2f, -0x1.c8066p+1f,
-    0x1.a2d928p+4f, -0x1.d92fe8p+2f, -0x1.54092p+1f, 0x1.9c49ap+4f,
-    -0x1.072174p+3f, -0x1.06937p+2f, 0x1.966738p+4f, -0x1.bd0d48p+2f,
-    -0x1.4241fp+2f, 0x1.95cc5p+4f, -0x1.21d464p+3f, -0x1.6259dp+2f,
-    0x1.8e935p+4f, -0x1.f09648p+2f, -0x1.9cdeap+2f, 0x1.8e1108p+4f,
-    -0x1.3c69f4p+3f, -0x1.be311p+2f, 0x1.868bcp+4f, -0x1.130bd4p+3f,
+    -0x1.edb098p+3f, 0x1.32ad3p+4f, -0x1.cea974p+3f, -0x1.0db522p+4f,
+    0x1.a26b88p+4f, -0x1.5748a6p+2f, -0x1.18c46p+1f, 0x1.a1f36p+4f,
+    -0x1.b0c85p+1f, -0x1.b87758p+0f, 0x1.9d0352p+4f, -0x1.079446p+2f,
+    -0x1.88a1e8p+1f, 0x1.9d4f18p+4f, -0x1.895308p+2f, -0x1.c80664p+1f,
+    0x1.a2d92ap+4f, -0x1.d92fe8p+2f, -0x1.540924p+1f, 0x1.9c49a2p+4f,
+    -0x1.072172p+3f, -0x1.06937p+2f, 0x1.966738p+4f, -0x1.bd0d46p+2f,
+    -0x1.4241f2p+2f, 0x1.95cc52p+4f, -0x1.21d464p+3f, -0x1.6259d6p+2f,
+    0x1.8e934cp+4f, -0x1.f09642p+2f, -0x1.9cdea4p+2f, 0x1.8e1108p+4f,
+    -0x1.3c69f2p+3f, -0x1.be3112p+2f, 0x1.868bc2p+4f, -0x1.130bd2p+3f,
     -0x1.f80c8p+2f, 0x1.8f61dp+4f, -0x1.680248p+2f, -0x1.7c359p+2f,
-    0x1.8741a8p+4f, -0x1.9be1a8p+2f, -0x1.d628ep+2f, 0x1.84ff38p+4f,
-    -0x1.528ec4p+3f, -0x1.0a94p+3f, 0x1.7b857p+4f, -0x1.689ef4p+3f,
-    -0x1.36a858p+3f, 0x1.7d092p+4f, -0x1.2bc114p+3f, -0x1.28b09p+3f,
-    0x1.71ca38p+4f, -0x1.404264p+3f, -0x1.54df08p+3f, 0x1.7080cp+4f,
-    -0x1.77e504p+3f, -0x1.61d3dp+3f, 0x1.661bc8p+4f, -0x1.51d6b4p+3f,
-    -0x1.827d1p+3f, 0x1.73bd78p+4f, -0x1.065194p+3f, -0x1.4577bp+3f,
-    0x1.67d4dp+4f, -0x1.1d2124p+3f, -0x1.7418cp+3f, 0x1.63a55p+4f,
-    -0x1.835b64p+3f, -0x1.8d00cp+3f, 0x1.567f68p+4f, -0x1.8d55a4p+3f,
-    -0x1.b91e48p+3f, 0x1.58f83p+4f, -0x1.5d4df4p+3f, -0x1.af4098p+3f,
-    0x1.4acabp+4f, -0x1.662574p+3f, -0x1.d9c568p+3f, 0x1.47f2b8p+4f,
+    0x1.8741a8p+4f, -0x1.9be1a4p+2f, -0x1.d628ep+2f, 0x1.84ff3ap+4f,
+    -0x1.528ebep+3f, -0x1.0a93fep+3f, 0x1.7b857p+4f, -0x1.689ef4p+3f,
+    -0x1.36a85ap+3f, 0x1.7d092p+4f, -0x1.2bc114p+3f, -0x1.28b09p+3f,
+    0x1.71ca3cp+4f, -0x1.40426ap+3f, -0x1.54df0cp+3f, 0x1.7080cp+4f,
+    -0x1.77e502p+3f, -0x1.61d3d2p+3f, 0x1.661bcap+4f, -0x1.51d6b4p+3f,
+    -0x1.827d12p+3f, 0x1.73bd7ap+4f, -0x1.065192p+3f, -0x1.4577b2p+3f,
+    0x1.67d4d2p+4f, -0x1.1d2122p+3f, -0x1.7418cp+3f, 0x1.63a55p+4f,
+    -0x1.835b6ap+3f, -0x1.8d00c4p+3f, 0x1.567f6ap+4f, -0x1.8d55a2p+3f,
+    -0x1.b91e4ap+3f, 0x1.58f832p+4f, -0x1.5d4df2p+3f, -0x1.af4098p+3f,
+    0x1.4acab2p+4f, -0x1.662576p+3f, -0x1.d9c56cp+3f, 0x1.47f2b8p+4f,
     -0x1.944ab4p+3f, -0x1.e4ab38p+3f, 0x1.3d147p+4f, -0x1.6d5f04p+3f,
     -0x1.01dd34p+4f, 0x1.4ccc38p+4f, -0x1.37bbb4p+3f, -0x1.d0779p+3f,
-    0x1.3f7528p+4f, -0x1.40d7c4p+3f, -0x1.f9647p+3f, 0x1.387e18p+4f,
-    -0x1.9d8374p+3f, -0x1.073b7p+4f, 0x1.28dbep+4f, -0x1.a96c84p+3f,
-    -0x1.1cfcccp+4f, 0x1.2eda6p+4f, -0x1.759624p+3f, -0x1.15a79p+4f,
-    0x1.1ef428p+4f, -0x1.847c94p+3f, -0x1.28aap+4f, 0x1.181ea8p+4f,
-    -0x1.bbf624p+3f, -0x1.31c23cp+4f, 0x1.24e5b8p+4f, -0x1.4fb154p+3f,
-    -0x1.214688p+4f, 0x1.15e368p+4f, -0x1.5be974p+3f, -0x1.329434p+4f,
-    0x1.9cb6dp+4f, 0x1.09f52p+0f, -0x1.d9a98p-1f, 0x1.99b62p+4f,
-    0x1.b7471p+1f, -0x1.17b48p-1f, 0x1.968e18p+4f, 0x1.682fbp+1f,
-    -0x1.d0424p+0f, 0x1.998f18p+4f, 0x1.09038p-2f, -0x1.19642p+1f,
-    0x1.9fe9ap+4f, -0x1.530b2p+0f, -0x1.488dcp+0f, 0x1.9b18c8p+4f,
-    -0x1.ed00ep+0f, -0x1.53846p+1f, 0x1.945d78p+4f, -0x1.56998p-2f,
-    -0x1.cda4cp+1f, 0x1.95c7e8p+4f, -0x1.53d95p+1f, -0x1.0276dp+2f,
-    0x1.8de0d8p+4f, -0x1.e584cp-1f, -0x1.3f05ap+2f, 0x1.8f0e48p+4f,
-    -0x1.ad40fp+1f, -0x1.5c1cbp+2f, 0x1.875a38p+4f, -0x1.b8ae2p+0f,
-    -0x1.93aa2p+2f, 0x1.8c8068p+4f, 0x1.88196p+0f, -0x1.26efdp+2f,
-    0x1.8636c8p+4f, 0x1.afc24p-1f, -0x1.7a21bp+2f, 0x1.87436p+4f,
-    -0x1.05da48p+2f, -0x1.b30b2p+2f, 0x1.7f0e18p+4f, -0x1.3b6118p+2f,
-    -0x1.04a0d8p+3f, 0x1.7f7a3p+4f, -0x1.3e199p+1f, -0x1.e6dbcp+2f,
-    0x1.759688p+4f, -0x1.a5d8fp+1f, -0x1.1ef178p+3f, 0x1.750c9p+4f,
-    -0x1.7ab828p+2f, -0x1.3259c8p+3f, 0x1.6abbe8p+4f, -0x1.170b88p+2f,
-    -0x1.4d8d4p+3f, 0x1.76f9ap+4f, -0x1.32c64p-1f, -0x1.0aa658p+3f,
-    0x1.6c3cd8p+4f, -0x1.7c01ep+0f, -0x1.370cc8p+3f, 0x1.68939p+4f,
-    -0x1.b31488p+2f, -0x1.63483p+3f, 0x1.5b4158p+4f, -0x1.f58ec8p+2f,
-    -0x1.96d3a8p+3f, 0x1.5cd96p+4f, -0x1.644308p+2f, -0x1.83661p+3f,
-    0x1.4ef558p+4f, -0x1.860408p+2f, -0x1.b1e18p+3f, 0x1.4d5c58p+4f,
-    -0x1.09eaa4p+3f, -0x1.c66efp+3f, 0x1.417bfp+4f, -0x1.b53aa8p+2f,
-    -0x1.e0d72p+3f, 0x1.5022c8p+4f, -0x1.ce851p+1f, -0x1.9df9bp+3f,
-    0x1.42aa58p+4f, -0x1.19f398p+2f, -0x1.cbcf8p+3f, 0x1.40cd4p+4f,
-    -0x1.0e8a64p+3f, -0x1.ec613p+3f, 0x1.341fap+4f, -0x1.194614p+3f,
-    -0x1.09ea7p+4f, 0x1.359648p+4f, -0x1.c1b968p+2f, -0x1.02a818p+4f,
-    0x1.290fep+4f, -0x1.d6f1a8p+2f, -0x1.1352ap+4f, 0x1.27ca4p+4f,
-    -0x1.1fe884p+3f, -0x1.1ab464p+4f, 0x1.1c9f1p+4f, -0x1.ee6f68p+2f,
-    -0x1.23d0cp+4f, 0x1.2a70fp+4f, -0x1.63d998p+2f, -0x1.0c3cbp+4f,
-    0x1.1dcf2p+4f, -0x1.834aa8p+2f, -0x1.1c9b64p+4f, 0x1.19d6bp+4f,
-    -0x1.290984p+3f, -0x1.2a10d4p+4f, 0x1.0bff4p+4f, -0x1.343394p+3f,
-    -0x1.391b2cp+4f, 0x1.0fd668p+4f, -0x1.fe9528p+2f, -0x1.30e9dcp+4f,
-    0x1.030bb8p+4f, -0x1.b63e28p+2f, -0x1.379b04p+4f, 0x1.93e408p+4f,
-    0x1.cb0e58p+2f, -0x1.c87p-6f, 0x1.91b3c8p+4f, 0x1.11a5e4p+3f,
-    0x1.e3eap-3f, 0x1.8fec5p+4f, 0x1.07cb94p+3f, -0x1.dab08p-1f,
-    0x1.9199ep+4f, 0x1.bc0a48p+2f, -0x1.3043cp+0f, 0x1.9672b8p+4f,
-    0x1.6923f8p+2f, -0x1.23efp-2f, 0x1.93a92p+4f, 0x1.40d038p+2f,
-    -0x1.8710cp+0f, 0x1.8dfa98p+4f, 0x1.a534e8p+2f, -0x1.3dfa6p+1f,
-    0x1.8fab7p+4f, 0x1.2ac2d8p+2f, -0x1.6c8a8p+1f, 0x1.89bf7p+4f,
-    0x1.7954f8p+2f, -0x1.e376cp+1f, 0x1.8acf6p+4f, 0x1.fd565p+1f,
-    -0x1.0f043p+2f, 0x1.846f4p+4f, 0x1.59fca8p+2f, -0x1.456eap+2f,
-    0x1.892398p+4f, 0x1.e73f68p+2f, -0x1.b2fcap+1f, 0x1.84745p+4f,
-    0x1.c81ed8p+2f, -0x1.2730dp+2f, 0x1.85401p+4f, 0x1.96415p+1f,
-    -0x1.5e053p+2f, 0x1.7ed08p+4f, 0x1.4abe1p+1f, -0x1.adb14p+2f,
-    0x1.7ebap+4f, 0x1.2cbe98p+2f, -0x1.90e9dp+2f, 0x1.776aep+4f,
-    0x1.f925bp+1f, -0x1.d9212p+2f, 0x1.777358p+4f, 0x1.e7bcep+0f,
-    -0x1.f5aaap+2f, 0x1.6ecb98p+4f, 0x1.b02bdp+1f, -0x1.11e5ap+3f,
-    0x1.78a49p+4f, 0x1.784398p+2f, -0x1.b9e6ep+2f, 0x1.70135p+4f,
-    0x1.4f0ac8p+2f, -0x1.026778p+3f, 0x1.6d22a8p+4f, 0x1.04016p+0f,
-    -0x1.23fba8p+3f, 0x1.61a2cp+4f, 0x1.143e8p-2f, -0x1.4f66f8p+3f,
-    0x1.63b7cp+4f, 0x1.50249p+1f, -0x1.3a10dp+3f, 0x1.5643ap+4f,
-    0x1.a945ap+0f, -0x1.68801p+3f, 0x1.536b38p+4f, -0x1.4e34cp-1f,
-    -0x1.807b1p+3f, 0x1.482eep+4f, 0x1.c20ccp-1f, -0x1.975b7p+3f,
-    0x1.58f948p+4f, 0x1.eadd7p+1f, -0x1.52bddp+3f, 0x1.4ba7e8p+4f,
-    0x1.81511p+1f, -0x1.7ef45p+3f, 0x1.4538c8p+4f, -0x1.b9966p+0f,
-    -0x1.b12798p+3f, 0x1.3758b8p+4f, -0x1.385f9p+1f, -0x1.de21ap+3f,
-    0x1.3994c8p+4f, -0x1.dd9ep-4f, -0x1.c72c3p+3f, 0x1.2cbebp+4f,
-    -0x1.16da6p+0f, -0x1.efacp+3f, 0x1.2b04fp+4f, -0x1.b32e3p+1f,
-    -0x1.032938p+4f, 0x1.1fc9d8p+4f, -0x1.f4712p+0f, -0x1.0b498p+4f,
-    0x1.2f1988p+4f, 0x1.20a16p+0f, -0x1.da4f68p+3f, 0x1.21a258p+4f,
-    0x1.fd3bp-3f, -0x1.00c2b4p+4f, 0x1.1eb71p+4f, -0x1.042ca8p+2f,
-    -0x1.13b7f4p+4f, 0x1.11ea6p+4f, -0x1.2b9008p+2f, -0x1.23a1a8p+4f,
-    0x1.135118p+4f, -0x1.5f485p+1f, -0x1.1b633cp+4f, 0x1.04fba8p+4f,
-    -0x1.a8067p+1f, -0x1.2a2374p+4f, 0x1.03efa8p+4f, -0x1.4e5db8p+2f,
-    -0x1.31882cp+4f, 0x1.071d98p+4f, -0x1.55f16p+0f, -0x1.220814p+4f,
-    0x1.8b4d58p+4f, 0x1.52fbecp+3f, 0x1.c1478p-1f, 0x1.873c48p+4f,
-    0x1.6a07e4p+3f, 0x1.bf1ep-3f, 0x1.87e9ap+4f, 0x1.6f06fcp+3f,
-    0x1.3f5bcp+0f, 0x1.8ace58p+4f, 0x1.4cfe04p+3f, -0x1.e566p-3f,
-    0x1.8f0088p+4f, 0x1.33be24p+3f, 0x1.0f778p-1f, 0x1.8d6d5p+4f,
-    0x1.2b8efcp+3f, -0x1.32478p-1f, 0x1.8bc5ep+4f, 0x1.240904p+3f,
-    -0x1.cb3c4p+0f, 0x1.895b2p+4f, 0x1.472334p+3f, -0x1.65cf4p+0f,
-    0x1.865448p+4f, 0x1.3ed6dcp+3f, -0x1.44e8ap+1f, 0x1.889c7p+4f,
-    0x1.1b47d4p+3f, -0x1.7c162p+1f, 0x1.830e5p+4f, 0x1.376fdcp+3f,
-    -0x1.db07p+1f, 0x1.8428ap+4f, 0x1.610bb4p+3f, -0x1.0e14ap+1f,
-    0x1.810548p+4f, 0x1.5a198cp+3f, -0x1.9fbcp+1f, 0x1.83d2a8p+4f,
-    0x1.0e8394p+3f, -0x1.091b1p+2f, 0x1.7f461p+4f, 0x1.007b2cp+3f,
-    -0x1.544f6p+2f, 0x1.7e674p+4f, 0x1.2c337cp+3f, -0x1.36154p+2f,
-    0x1.780748p+4f, 0x1.1c781cp+3f, -0x1.7cf02p+2f, 0x1.792b9p+4f,
-    0x1.de5928p+2f, -0x1.9b8a3p+2f, 0x1.71531p+4f, 0x1.0e2604p+3f,
-    -0x1.c3ep+2f, 0x1.777ccp+4f, 0x1.46c71cp+3f, -0x1.5ea0fp+2f,
-    0x1.708318p+4f, 0x1.3a083cp+3f, -0x1.a530dp+2f, 0x1.707b2p+4f,
-    0x1.b7c0b8p+2f, -0x1.e36f2p+2f, 0x1.6779cp+4f, 0x1.92b2a8p+2f,
-    -0x1.164338p+3f, 0x1.683288p+4f, 0x1.f9de48p+2f, -0x1.04fa2p+3f,
-    0x1.5c71cp+4f, 0x1.d1a2d8p+2f, -0x1.2bee78p+3f, 0x1.5b739p+4f,
-    0x1.691a28p+2f, -0x1.3e6e58p+3f, 0x1.5038cp+4f, 0x1.ab0088p+2f,
-    -0x1.54e838p+3f, 0x1.5da2b8p+4f, 0x1.1b9aacp+3f, -0x1.189ffp+3f,
-    0x1.51af28p+4f, 0x1.08f80cp+3f, -0x1.4062e8p+3f, 0x1.4dc3fp+4f,
-    0x1.371718p+2f, -0x1.6a442p+3f, 0x1.4019dp+4f, 0x1.04d618p+2f,
-    -0x1.972658p+3f, 0x1.42306p+4f, 0x1.7b8298p+2f, -0x1.8169b8p+3f,
-    0x1.3419f8p+4f, 0x1.454588p+2f, -0x1.ac605p+3f, 0x1.322588p+4f,
-    0x1.981bdp+1f, -0x1.c2b0bp+3f, 0x1.269838p+4f, 0x1.125488p+2f,
-    -0x1.d59a3p+3f, 0x1.359bdp+4f, 0x1.b8a608p+2f, -0x1.986068p+3f,
-    0x1.27f7f8p+4f, 0x1.884028p+2f, -0x1.c1069p+3f, 0x1.2453f8p+4f,
-    0x1.256cbp+1f, -0x1.ea5488p+3f, 0x1.174a28p+4f, 0x1.7698ap+0f,
-    -0x1.078ap+4f, 0x1.193408p+4f, 0x1.b8567p+1f, -0x1.fac78p+3f,
-    0x1.0b3018p+4f, 0x1.495a7p+1f, -0x1.0ef87cp+4f, 0x1.093e28p+4f,
-    0x1.563e4p-1f, -0x1.18b5a8p+4f, 0x1.0dc77p+4f, 0x1.1c6368p+2f,
-    -0x1.04eb94p+4f, 0x1.ded9ep+3f, -0x1.2a55b4p+3f, 0x1.7d80b4p+4f,
-    0x1.e9c01p+3f, -0x1.429784p+3f, 0x1.7a7864p+4f, 0x1.f69p+3f,
-    -0x1.29f684p+3f, 0x1.799cf4p+4f, 0x1.ed9c1p+3f, -0x1.0d9924p+3f,
-    0x1.7cab04p+4f, 0x1.050128p+4f, -0x1.11ea74p+3f, 0x1.7795bcp+4f,
-    0x1.d4294p+3f, -0x1.902dc8p+2f, 0x1.822bf4p+4f, 0x1.f3f8dp+3f,
-    -0x1.5b3868p+2f, 0x1.7c8f64p+4f, 0x1.faa55p+3f, -0x1.a2bfa8p+2f,
-    0x1.7bcc34p+4f, 0x1.e22b5p+3f, -0x1.dba508p+2f, 0x1.7fa9ccp+4f,
-    0x1.006e1p+4f, -0x1.e6a808p+2f, 0x1.79e70cp+4f, 0x1.0b336p+4f,
-    -0x1.b47e08p+2f, 0x1.76759cp+4f, 0x1.0d298p+4f, -0x1.f60608p+2f,
-    0x1.753de4p+4f, 0x1.15862p+4f, -0x1.ca42c8p+2f, 0x1.70f684p+4f,
+    0x1.3f752ap+4f, -0x1.40d7c4p+3f, -0x1.f96472p+3f, 0x1.387e1ap+4f,
+    -0x1.9d836cp+3f, -0x1.073b7p+4f, 0x1.28dbe2p+4f, -0x1.a96c84p+3f,
+    -0x1.1cfccep+4f, 0x1.2eda62p+4f, -0x1.759622p+3f, -0x1.15a79p+4f,
+    0x1.1ef426p+4f, -0x1.847c98p+3f, -0x1.28aap+4f, 0x1.181eaap+4f,
+    -0x1.bbf626p+3f, -0x1.31c23cp+4f, 0x1.24e5b8p+4f, -0x1.4fb156p+3f,
+    -0x1.214688p+4f, 0x1.15e368p+4f, -0x1.5be972p+3f, -0x1.329434p+4f,
+    0x1.9cb6cep+4f, 0x1.09f528p+0f, -0x1.d9a9b8p-1f, 0x1.99b62p+4f,
+    0x1.b74718p+1f, -0x1.17b48p-1f, 0x1.968e1ap+4f, 0x1.682faep+1f,
+    -0x1.d04242p+0f, 0x1.998f1ap+4f, 0x1.0903a8p-2f, -0x1.196428p+1f,
+    0x1.9fe9ap+4f, -0x1.530b28p+0f, -0x1.488dc2p+0f, 0x1.9b18ccp+4f,
+    -0x1.ed00c6p+0f, -0x1.53848p+1f, 0x1.945d78p+4f, -0x1.569942p-2f,
+    -0x1.cda4c6p+1f, 0x1.95c7e8p+4f, -0x1.53d94ep+1f, -0x1.0276d6p+2f,
+    0x1.8de0d8p+4f, -0x1.e584d4p-1f, -0x1.3f059ap+2f, 0x1.8f0e4ap+4f,
+    -0x1.ad40e6p+1f, -0x1.5c1cbp+2f, 0x1.875a38p+4f, -0x1.b8ae22p+0f,
+    -0x1.93aa22p+2f, 0x1.8c8068p+4f, 0x1.88195cp+0f, -0x1.26efdp+2f,
+    0x1.8636cap+4f, 0x1.afc244p-1f, -0x1.7a21b4p+2f, 0x1.874362p+4f,
+    -0x1.05da4cp+2f, -0x1.b30b1cp+2f, 0x1.7f0e1ap+4f, -0x1.3b6118p+2f,
+    -0x1.04a0dap+3f, 0x1.7f7a32p+4f, -0x1.3e199p+1f, -0x1.e6dbc2p+2f,
+    0x1.75968ap+4f, -0x1.a5d8fp+1f, -0x1.1ef17ap+3f, 0x1.750c92p+4f,
+    -0x1.7ab824p+2f, -0x1.3259cap+3f, 0x1.6abbe8p+4f, -0x1.170b88p+2f,
+    -0x1.4d8d42p+3f, 0x1.76f9ap+4f, -0x1.32c648p-1f, -0x1.0aa65ap+3f,
+    0x1.6c3cdap+4f, -0x1.7c01d6p+0f, -0x1.370ccap+3f, 0x1.689394p+4f,
+    -0x1.b3147ap+2f, -0x1.634832p+3f, 0x1.5b4158p+4f, -0x1.f58ec6p+2f,
+    -0x1.96d3a8p+3f, 0x1.5cd96p+4f, -0x1.644306p+2f, -0x1.83661p+3f,
+    0x1.4ef55cp+4f, -0x1.8603fcp+2f, -0x1.b1e18p+3f, 0x1.4d5c5ap+4f,
+    -0x1.09eaa4p+3f, -0x1.c66ef2p+3f, 0x1.417bf2p+4f, -0x1.b53aa8p+2f,
+    -0x1.e0d722p+3f, 0x1.5022c8p+4f, -0x1.ce850ap+1f, -0x1.9df9bp+3f,
+    0x1.42aa58p+4f, -0x1.19f398p+2f, -0x1.cbcf82p+3f, 0x1.40cd44p+4f,
+    -0x1.0e8a5ep+3f, -0x1.ec6132p+3f, 0x1.341fa2p+4f, -0x1.194616p+3f,
+    -0x1.09ea72p+4f, 0x1.359648p+4f, -0x1.c1b966p+2f, -0x1.02a818p+4f,
+    0x1.290fe2p+4f, -0x1.d6f1b6p+2f, -0x1.1352ap+4f, 0x1.27ca4p+4f,
+    -0x1.1fe884p+3f, -0x1.1ab464p+4f, 0x1.1c9f1p+4f, -0x1.ee6f66p+2f,
+    -0x1.23d0cp+4f, 0x1.2a70f2p+4f, -0x1.63d994p+2f, -0x1.0c3cbp+4f,
+    0x1.1dcf2p+4f, -0x1.834aa6p+2f, -0x1.1c9b64p+4f, 0x1.19d6bp+4f,
+    -0x1.290986p+3f, -0x1.2a10d2p+4f, 0x1.0bff42p+4f, -0x1.343392p+3f,
+    -0x1.391b2ep+4f, 0x1.0fd668p+4f, -0x1.fe9524p+2f, -0x1.30e9dcp+4f,
+    0x1.030bbap+4f, -0x1.b63e24p+2f, -0x1.379b06p+4f, 0x1.93e40cp+4f,
+    0x1.cb0e5ap+2f, -0x1.c8711ep-6f, 0x1.91b3c8p+4f, 0x1.11a5e6p+3f,
+    0x1.e3e964p-3f, 0x1.8fec5p+4f, 0x1.07cb94p+3f, -0x1.dab0a6p-1f,
+    0x1.9199ep+4f, 0x1.bc0a46p+2f, -0x1.3043d4p+0f, 0x1.9672b8p+4f,
+    0x1.6923fap+2f, -0x1.23eee6p-2f, 0x1.93a924p+4f, 0x1.40d03ap+2f,
+    -0x1.8710fep+0f, 0x1.8dfa98p+4f, 0x1.a534ecp+2f, -0x1.3dfa5ep+1f,
+    0x1.8fab72p+4f, 0x1.2ac2dap+2f, -0x1.6c8a82p+1f, 0x1.89bf6ep+4f,
+    0x1.7954f8p+2f, -0x1.e376ccp+1f, 0x1.8acf62p+4f, 0x1.fd5654p+1f,
+    -0x1.0f0432p+2f, 0x1.846f42p+4f, 0x1.59fcacp+2f, -0x1.456eap+2f,
+    0x1.892398p+4f, 0x1.e73f68p+2f, -0x1.b2fca4p+1f, 0x1.847452p+4f,
+    0x1.c81edap+2f, -0x1.2730d4p+2f, 0x1.85400ep+4f, 0x1.964156p+1f,
+    -0x1.5e053ap+2f, 0x1.7ed08p+4f, 0x1.4abe0ep+1f, -0x1.adb13ep+2f,
+    0x1.7eba02p+4f, 0x1.2cbe98p+2f, -0x1.90e9dp+2f, 0x1.776ae4p+4f,
+    0x1.f925b4p+1f, -0x1.d9212p+2f, 0x1.777358p+4f, 0x1.e7bcf4p+0f,
+    -0x1.f5aaap+2f, 0x1.6ecb98p+4f, 0x1.b02bdp+1f, -0x1.11e5a2p+3f,
+    0x1.78a492p+4f, 0x1.784396p+2f, -0x1.b9e6e2p+2f, 0x1.701352p+4f,
+    0x1.4f0ac8p+2f, -0x1.02677ap+3f, 0x1.6d22a6p+4f, 0x1.040172p+0f,
+    -0x1.23fba6p+3f, 0x1.61a2cp+4f, 0x1.143e54p-2f, -0x1.4f66f8p+3f,
+    0x1.63b7c2p+4f, 0x1.50249ap+1f, -0x1.3a10d2p+3f, 0x1.5643a2p+4f,
+    0x1.a945a6p+0f, -0x1.68801p+3f, 0x1.536b3ap+4f, -0x1.4e3498p-1f,
+    -0x1.807b12p+3f, 0x1.482eep+4f, 0x1.c20caep-1f, -0x1.975b72p+3f,
+    0x1.58f948p+4f, 0x1.eadd72p+1f, -0x1.52bdd2p+3f, 0x1.4ba7eap+4f,
+    0x1.815116p+1f, -0x1.7ef45p+3f, 0x1.4538cap+4f, -0x1.b99642p+0f,
+    -0x1.b12798p+3f, 0x1.3758b8p+4f, -0x1.385f96p+1f, -0x1.de21ap+3f,
+    0x1.3994c8p+4f, -0x1.dd9d34p-4f, -0x1.c72c32p+3f, 0x1.2cbeb2p+4f,
+    -0x1.16da56p+0f, -0x1.efac02p+3f, 0x1.2b04fp+4f, -0x1.b32e3p+1f,
+    -0x1.032938p+4f, 0x1.1fc9dap+4f, -0x1.f4711ep+0f, -0x1.0b498p+4f,
+    0x1.2f1988p+4f, 0x1.20a16ap+0f, -0x1.da4f68p+3f, 0x1.21a25ap+4f,
+    0x1.fd3aa4p-3f, -0x1.00c2b4p+4f, 0x1.1eb70ep+4f, -0x1.042ca6p+2f,
+    -0x1.13b7f2p+4f, 0x1.11ea62p+4f, -0x1.2b9004p+2f, -0x1.23a1a8p+4f,
+    0x1.13511ap+4f, -0x1.5f4846p+1f, -0x1.1b633cp+4f, 0x1.04fba8p+4f,
+    -0x1.a80674p+1f, -0x1.2a2374p+4f, 0x1.03efa8p+4f, -0x1.4e5db4p+2f,
+    -0x1.31882cp+4f, 0x1.071d9ap+4f, -0x1.55f16cp+0f, -0x1.220814p+4f,
+    0x1.8b4d5ap+4f, 0x1.52fbeep+3f, 0x1.c1474ap-1f, 0x1.873c48p+4f,
+    0x1.6a07e4p+3f, 0x1.bf1e08p-3f, 0x1.87e9ap+4f, 0x1.6f06fcp+3f,
+    0x1.3f5bb4p+0f, 0x1.8ace5ap+4f, 0x1.4cfe06p+3f, -0x1.e56606p-3f,
+    0x1.8f0088p+4f, 0x1.33be24p+3f, 0x1.0f778ep-1f, 0x1.8d6d54p+4f,
+    0x1.2b8efap+3f, -0x1.3247ecp-1f, 0x1.8bc5ep+4f, 0x1.240904p+3f,
+    -0x1.cb3c5p+0f, 0x1.895b2p+4f, 0x1.472334p+3f, -0x1.65cf56p+0f,
+    0x1.865448p+4f, 0x1.3ed6dep+3f, -0x1.44e89ep+1f, 0x1.889c72p+4f,
+    0x1.1b47d6p+3f, -0x1.7c161ep+1f, 0x1.830e52p+4f, 0x1.376fdcp+3f,
+    -0x1.db06fep+1f, 0x1.8428a2p+4f, 0x1.610bb4p+3f, -0x1.0e14a4p+1f,
+    0x1.810548p+4f, 0x1.5a198ep+3f, -0x1.9fbc02p+1f, 0x1.83d2aap+4f,
+    0x1.0e8396p+3f, -0x1.091b1p+2f, 0x1.7f461p+4f, 0x1.007b2ap+3f,
+    -0x1.544f62p+2f, 0x1.7e674p+4f, 0x1.2c337cp+3f, -0x1.36154p+2f,
+    0x1.78074cp+4f, 0x1.1c781ap+3f, -0x1.7cf01cp+2f, 0x1.792b9p+4f,
+    0x1.de5926p+2f, -0x1.9b8a2ep+2f, 0x1.715312p+4f, 0x1.0e2604p+3f,
+    -0x1.c3ep+2f, 0x1.777cc2p+4f, 0x1.46c71cp+3f, -0x1.5ea0fp+2f,
+    0x1.708318p+4f, 0x1.3a083cp+3f, -0x1.a530d4p+2f, 0x1.707b22p+4f,
+    0x1.b7c0bep+2f, -0x1.e36f1ep+2f, 0x1.6779cp+4f, 0x1.92b2aap+2f,
+    -0x1.164338p+3f, 0x1.68328ap+4f, 0x1.f9de4cp+2f, -0x1.04fa2p+3f,
+    0x1.5c71bep+4f, 0x1.d1a2dcp+2f, -0x1.2bee76p+3f, 0x1.5b739p+4f,
+    0x1.691a26p+2f, -0x1.3e6e5ap+3f, 0x1.5038c2p+4f, 0x1.ab0086p+2f,
+    -0x1.54e838p+3f, 0x1.5da2bap+4f, 0x1.1b9aacp+3f, -0x1.189ff2p+3f,
+    0x1.51af2ap+4f, 0x1.08f80cp+3f, -0x1.4062e6p+3f, 0x1.4dc3f4p+4f,
+    0x1.37171ap+2f, -0x1.6a4422p+3f, 0x1.4019dp+4f, 0x1.04d616p+2f,
+    -0x1.972658p+3f, 0x1.423062p+4f, 0x1.7b829cp+2f, -0x1.8169b8p+3f,
+    0x1.3419f6p+4f, 0x1.454592p+2f, -0x1.ac605p+3f, 0x1.32258ap+4f,
+    0x1.981bd2p+1f, -0x1.c2b0b2p+3f, 0x1.26983ap+4f, 0x1.125486p+2f,
+    -0x1.d59a32p+3f, 0x1.359bd2p+4f, 0x1.b8a60ep+2f, -0x1.98606ap+3f,
+    0x1.27f7f8p+4f, 0x1.88402ep+2f, -0x1.c1069p+3f, 0x1.2453fap+4f,
+    0x1.256cacp+1f, -0x1.ea5488p+3f, 0x1.174a2ap+4f, 0x1.7698aap+0f,
+    -0x1.078ap+4f, 0x1.19340ap+4f, 0x1.b8567ap+1f, -0x1.fac78p+3f,
+    0x1.0b301ap+4f, 0x1.495a74p+1f, -0x1.0ef87ep+4f, 0x1.093e2ap+4f,
+    0x1.563e2ap-1f, -0x1.18b5aap+4f, 0x1.0dc772p+4f, 0x1.1c6366p+2f,
+    -0x1.04eb94p+4f, 0x1.ded9ep+3f, -0x1.2a55b2p+3f, 0x1.7d80b4p+4f,
+    0x1.e9c012p+3f, -0x1.429782p+3f, 0x1.7a7862p+4f, 0x1.f69008p+3f,
+    -0x1.29f682p+3f, 0x1.799cf6p+4f, 0x1.ed9c12p+3f, -0x1.0d9922p+3f,
+    0x1.7cab04p+4f, 0x1.05012ap+4f, -0x1.11ea72p+3f, 0x1.7795bap+4f,
+    0x1.d4293ep+3f, -0x1.902dd4p+2f, 0x1.822bf4p+4f, 0x1.f3f8d2p+3f,
+    -0x1.5b3864p+2f, 0x1.7c8f64p+4f, 0x1.faa55p+3f, -0x1.a2bfa4p+2f,
+    0x1.7bcc32p+4f, 0x1.e22b52p+3f, -0x1.dba506p+2f, 0x1.7fa9cap+4f,
+    0x1.006e12p+4f, -0x1.e6a7fcp+2f, 0x1.79e70cp+4f, 0x1.0b3362p+4f,
+    -0x1.b47e0ap+2f, 0x1.76759cp+4f, 0x1.0d298p+4f, -0x1.f60604p+2f,
+    0x1.753de2p+4f, 0x1.158622p+4f, -0x1.ca42c4p+2f, 0x1.70f686p+4f,
     0x1.145f88p+4f, -0x1.85da88p+2f, 0x1.720514p+4f, 0x1.1ea5f8p+4f,
-    -0x1.9db988p+2f, 0x1.6c236cp+4f, 0x1.e183cp+3f, -0x1.05e168p+2f,
-    0x1.7edbc4p+4f, 0x1.feef4p+3f, -0x1.b491bp+1f, 0x1.7833f4p+4f,
-    0x1.06329p+4f, -0x1.29c7f8p+2f, 0x1.76ea14p+4f, 0x1.0e7158p+4f,
-    -0x1.f9ec1p+1f, 0x1.712744p+4f, 0x1.12b4f8p+4f, -0x1.42aba8p+2f,
+    -0x1.9db988p+2f, 0x1.6c236cp+4f, 0x1.e183bep+3f, -0x1.05e16p+2f,
+    0x1.7edbc2p+4f, 0x1.feef42p+3f, -0x1.b491a8p+1f, 0x1.7833f4p+4f,
+    0x1.063292p+4f, -0x1.29c7f4p+2f, 0x1.76ea12p+4f, 0x1.0e715cp+4f,
+    -0x1.f9ec02p+1f, 0x1.712746p+4f, 0x1.12b4f8p+4f, -0x1.42aba8p+2f,
     0x1.71b65cp+4f, 0x1.1b49bp+4f, -0x1.1636f8p+2f, 0x1.6b1824p+4f,
-    0x1.09d7dp+4f, -0x1.6dc61p+1f, 0x1.71739cp+4f, 0x1.192778p+4f,
-    -0x1.b3db1p+1f, 0x1.698b84p+4f, 0x1.1cad2p+4f, -0x1.597d18p+2f,
-    0x1.6b9af4p+4f, 0x1.24ac7p+4f, -0x1.2c1208p+2f, 0x1.64f714p+4f,
-    0x1.265e2p+4f, -0x1.7065c8p+2f, 0x1.65b3a4p+4f, 0x1.2c566p+4f,
-    -0x1.43c168p+2f, 0x1.5d45bcp+4f, 0x1.2a83dp+4f, -0x1.f9dbdp+1f,
-    0x1.5c8844p+4f, 0x1.31e6d8p+4f, -0x1.138428p+2f, 0x1.5443c4p+4f,
-    0x1.f3482p+3f, -0x1.45598p-2f, 0x1.70531cp+4f, 0x1.080e9p+4f,
-    -0x1.0a4a9p+1f, 0x1.6fa084p+4f, 0x1.11c438p+4f, -0x1.714f2p+0f,
-    0x1.64a224p+4f, 0x1.e2ca3p+3f, 0x1.1893ap+0f, 0x1.6ec09cp+4f,
-    0x1.064ffp+4f, 0x1.aca3p-3f, 0x1.61e4a4p+4f, 0x1.13a4ap+4f,
-    -0x1.2c3c1p+1f, 0x1.67e03cp+4f, 0x1.1f51d8p+4f, -0x1.5e465p+1f,
-    0x1.618af4p+4f, 0x1.19b7d8p+4f, -0x1.8d1cep+0f, 0x1.5e74b4p+4f,
-    0x1.220af8p+4f, -0x1.d624ep+0f, 0x1.56ad5cp+4f, 0x1.274b7p+4f,
-    -0x1.78911p+1f, 0x1.5aa8c4p+4f, 0x1.2a6b48p+4f, -0x1.0330dp+1f,
-    0x1.4e5f54p+4f, 0x1.1c63dp+4f, -0x1.7f004p-1f, 0x1.541dc4p+4f,
-    0x1.251da8p+4f, -0x1.042fap+0f, 0x1.4aea94p+4f, 0x1.2dfb48p+4f,
-    -0x1.93b8dp+1f, 0x1.5138f4p+4f, 0x1.30bf88p+4f, -0x1.1b913p+1f,
-    0x1.44be54p+4f, 0x1.3502cp+4f, -0x1.be1ddp+1f, 0x1.48c344p+4f,
-    0x1.37cc1p+4f, -0x1.3c4b5p+1f, 0x1.375324p+4f, 0x1.31f558p+4f,
-    -0x1.12b7ap+0f, 0x1.32f574p+4f, 0x1.3b2f7p+4f, -0x1.4361ap+0f,
-    0x1.2392e4p+4f, 0x1.e957cp+3f, 0x1.2aca7p+1f, 0x1.61f794p+4f,
-    0x1.048d4p+4f, 0x1.d29e2p+0f, 0x1.54a324p+4f, 0x1.f4382p+3f,
-    0x1.ca0d7p+1f, 0x1.517c5cp+4f, 0x1.07cb78p+4f, 0x1.7cde3p+1f,
-    0x1.46c69cp+4f, 0x1.12ad8p+4f, 0x1.f2aecp-1f, 0x1.4d09b4p+4f,
-    0x1.141038p+4f, 0x1.2979bp+1f, 0x1.3dec9cp+4f, 0x1.fd89ep+3f,
-    0x1.31e8d8p+2f, 0x1.41c40cp+4f, 0x1.0a98ep+4f, 0x1.17f0a8p+2f,
-    0x1.35cdbcp+4f, 0x1.1c7068p+4f, 0x1.42ca4p-1f, 0x1.43c404p+4f,
-    0x1.24dd3p+4f, 0x1.42ef8p-2f, 0x1.3941b4p+4f, 0x1.1d8618p+4f,
-    0x1.ef076p+0f, 0x1.3357ccp+4f, 0x1.256cd8p+4f, 0x1.fe29ep+0f,
-    0x1.25b73cp+4f, 0x1.2b60ap+4f, 0x1.cbd18p-2f, 0x1.2aed94p+4f,
-    0x1.2e332p+4f, 0x1.e9886p+0f, 0x1.18066cp+4f, 0x1.1d363p+4f,
-    0x1.e01cbp+1f, 0x1.1fdd8cp+4f, 0x1.275fc8p+4f, 0x1.cc40dp+1f,
-    0x1.12e04cp+4f, 0x1.356acp+4f, 0x1.47e88p-2f, 0x1.1d236cp+4f,
-    0x1.39b038p+4f, 0x1.c65bap+0f, 0x1.08e9c4p+4f, 0x1.4017d8p+4f,
-    0x1.f1dep-4f, 0x1.0c6e5cp+4f, 0x1.48577p+4f, 0x1.90f22p+0f,
-    0x1.ea0bc8p+3f, 0x1.404fa8p+4f, 0x1.a1c15p+1f, 0x1.eaf708p+3f,
-    0x1.4f9fe8p+4f, 0x1.71599p+1f, 0x1.c46778p+3f, 0x1.f29bdp+3f,
-    0x1.911508p+2f, 0x1.3f4b5cp+4f, 0x1.010c68p+4f, 0x1.ec9ce8p+2f,
-    0x1.3170d4p+4f, 0x1.0492fp+4f, 0x1.83ef18p+2f, 0x1.33980cp+4f,
-    0x1.0de78p+4f, 0x1.6d4778p+2f, 0x1.27933cp+4f, 0x1.09d21p+4f,
-    0x1.e2c788p+2f, 0x1.25af04p+4f, 0x1.141da8p+4f, 0x1.d980c8p+2f,
-    0x1.1abfb4p+4f, 0x1.170ef8p+4f, 0x1.5e6028p+2f, 0x1.1c37e4p+4f,
-    0x1.1d685p+4f, 0x1.d74078p+2f, 0x1.0da524p+4f, 0x1.110928p+4f,
-    0x1.23fd3cp+3f, 0x1.1b06b4p+4f, 0x1.1b77fp+4f, 0x1.25ad54p+3f,
-    0x1.0e582cp+4f, 0x1.223ffp+4f, 0x1.5c4078p+2f, 0x1.10279cp+4f,
-    0x1.2c215p+4f, 0x1.4d7298p+2f, 0x1.02f41cp+4f, 0x1.285118p+4f,
-    0x1.d040d8p+2f, 0x1.015ea4p+4f, 0x1.359fa8p+4f, 0x1.bd3248p+2f,
-    0x1.e71a78p+3f, 0x1.399418p+4f, 0x1.40fe08p+2f, 0x1.e957f8p+3f,
-    0x1.42bdb8p+4f, 0x1.9f9488p+2f, 0x1.c7a0e8p+3f, 0x1.31fffp+4f,
-    0x1.2547e4p+3f, 0x1.e7c638p+3f, 0x1.3ef9dp+4f, 0x1.132c04p+3f,
-    0x1.c93a18p+3f, 0x1.49eebp+4f, 0x1.2506b8p+2f, 0x1.c53aa8p+3f,
-    0x1.54982p+4f, 0x1.756948p+2f, 0x1.a1f078p+3f, 0x1.5abeb8p+4f,
-    0x1.fd3ddp+1f, 0x1.9d1808p+3f, 0x1.654f2p+4f, 0x1.4440b8p+2f,
-    0x1.79fe08p+3f, 0x1.60f308p+4f, 0x1.bb8a58p+2f, 0x1.7c7738p+3f,
-    0x1.6fb31p+4f, 0x1.857078p+2f, 0x1.56e0c8p+3f, 0x1.28e9c8p+4f,
-    0x1.881294p+3f, 0x1.00ac7cp+4f, 0x1.3489p+4f, 0x1.8b2cf4p+3f,
-    0x1.e4fbd8p+3f, 0x1.3dce88p+4f, 0x1.677f6cp+3f, 0x1.cbb048p+3f,
-    0x1.496a28p+4f, 0x1.48706cp+3f, 0x1.ad6418p+3f, 0x1.45e8c8p+4f,
-    0x1.98253cp+3f, 0x1.b4dae8p+3f, 0x1.529418p+4f, 0x1.796aacp+3f,
-    0x1.939f18p+3f, 0x1.5989p+4f, 0x1.281f34p+3f, 0x1.8651a8p+3f,
-    0x1.622608p+4f, 0x1.4f8654p+3f, 0x1.68eed8p+3f, 0x1.4c2c18p+4f,
-    0x1.d4494cp+3f, 0x1.a48a68p+3f, 0x1.584a8p+4f, 0x1.abfb9cp+3f,
-    0x1.7fb0c8p+3f, 0x1.68ed58p+4f, 0x1.05d8fcp+3f, 0x1.5ec068p+3f,
-    0x1.718cp+4f, 0x1.26b394p+3f, 0x1.3f0ed8p+3f, 0x1.77afp+4f,
-    0x1.c87ef8p+2f, 0x1.36db28p+3f, 0x1.7cfee8p+4f, 0x1.051fc4p+3f,
-    0x1.1adcf8p+3f, 0x1.77df58p+4f, 0x1.41e13cp+3f, 0x1.20f178p+3f,
-    0x1.83195p+4f, 0x1.1d4144p+3f, 0x1.f6a1fp+2f, 0x1.609ae8p+4f,
-    0x1.c73884p+3f, 0x1.5f22f8p+3f, 0x1.68364p+4f, 0x1.ce09e4p+3f,
-    0x1.3907e8p+3f, 0x1.70c9cp+4f, 0x1.85f0ecp+3f, 0x1.2a43a8p+3f,
-    0x1.75ba78p+4f, 0x1.9942f4p+3f, 0x1.0b3f98p+3f, 0x1.6d283p+4f,
-    0x1.dcd99cp+3f, 0x1.17dc68p+3f, 0x1.7c1008p+4f, 0x1.5b2764p+3f,
-    0x1.03e298p+3f, 0x1.804dp+4f, 0x1.6e43f4p+3f, 0x1.cc263p+2f,
-    0x1.86964p+4f, 0x1.3651ecp+3f, 0x1.beed3p+2f, 0x1.877ce8p+4f,
-    0x1.4f574cp+3f, 0x1.8ca2dp+2f, 0x1.819ca8p+4f, 0x1.828ed4p+3f,
-    0x1.99559p+2f, 0x1.88a9p+4f, 0x1.618b3cp+3f, 0x1.56b13p+2f,
-    0x1.6fbfbp+4f, 0x1.eab0c4p+3f, 0x1.f3e8dp+2f, 0x1.70bdep+4f,
-    0x1.f6cdecp+3f, 0x1.b8531p+2f, 0x1.79a198p+4f, 0x1.bb64fcp+3f,
-    0x1.a7debp+2f, 0x1.79acap+4f, 0x1.ca1b6cp+3f, 0x1.70ad7p+2f,
-    0x1.707718p+4f, 0x1.030b82p+4f, 0x1.7f8d9p+2f, 0x1.810898p+4f,
-    0x1.94df7cp+3f, 0x1.6403bp+2f, 0x1.87d09p+4f, 0x1.71f43cp+3f,
-    0x1.22083p+2f, 0x1.80cf38p+4f, 0x1.a1ae3cp+3f, 0x1.2d7b5p+2f,
-    0x1.85ccp+4f, 0x1.81dc7cp+3f, 0x1.dc68ap+1f, 0x1.7f946p+4f,
-    0x1.aa7924p+3f, 0x1.e9882p+1f, 0x1.84d8p+4f, 0x1.8919acp+3f,
-    0x1.72c8ep+1f, 0x1.331948p+4f, 0x1.7916acp+3f, -0x1.5e2a98p+3f,
-    0x1.3e3c3p+4f, 0x1.b37d1cp+3f, -0x1.1fb58p+3f, 0x1.48dfd8p+4f,
-    0x1.bea9c4p+3f, -0x1.ef319p+2f, 0x1.532fd8p+4f, 0x1.c7dfb4p+3f,
-    -0x1.a279cp+2f, 0x1.4d8678p+4f, 0x1.93609cp+3f, -0x1.0b2c28p+3f,
-    0x1.57d5c8p+4f, 0x1.9e821cp+3f, -0x1.c9dcfp+2f, 0x1.54569p+4f,
-    0x1.fce034p+3f, -0x1.29dc2p+2f, 0x1.5ae3f8p+4f, 0x1.d07c0cp+3f,
-    -0x1.5955ep+2f, 0x1.60279p+4f, 0x1.da05a4p+3f, -0x1.0f795p+2f,
-    0x1.597ef8p+4f, 0x1.02a02ep+4f, -0x1.c2ed4p+1f, 0x1.653fc8p+4f,
-    0x1.e0a77cp+3f, -0x1.9253p+1f, 0x1.66e058p+4f, 0x1.b08944p+3f,
-    -0x1.3b665p+2f, 0x1.6c13c8p+4f, 0x1.b85484p+3f, -0x1.e73fp+1f,
-    0x1.5cac48p+4f, 0x1.08dfbap+4f, -0x1.15e7ap+1f, 0x1.685168p+4f,
-    0x1.e85094p+3f, -0x1.f6054p+0f, 0x1.5fd5c8p+4f, 0x1.0f5756p+4f,
-    -0x1.871f8p-1f, 0x1.687fap+4f, 0x1.000a4ap+4f, -0x1.0a43p-2f,
-    0x1.7233ep+4f, 0x1.c49ab4p+3f, -0x1.880e4p+0f, 0x1.7356b8p+4f,
-    0x1.d17becp+3f, -0x1.9d8cp-4f, 0x1.67754p+4f, 0x1.0e7a32p+4f,
-    0x1.83ebcp+0f, 0x1.1b0aep+4f, 0x1.cf03a8p+2f, -0x1.d3954p+3f,
-    0x1.282aap+4f, 0x1.faa448p+2f, -0x1.ac89a8p+3f, 0x1.364dc8p+4f,
-    0x1.11ef0cp+3f, -0x1.8362dp+3f, 0x1.27d928p+4f, 0x1.3421a4p+3f,
-    -0x1.99a74p+3f, 0x1.35191p+4f, 0x1.46af1cp+3f, -0x1.6fe838p+3f,
-    0x1.436048p+4f, 0x1.582b44p+3f, -0x1.44ed8p+3f, 0x1.4458b8p+4f,
-    0x1.26d514p+3f, -0x1.57e6c8p+3f, 0x1.50b27p+4f, 0x1.38d95cp+3f,
-    -0x1.2f0628p+3f, 0x1.5d07e8p+4f, 0x1.4968c4p+3f, -0x1.07c218p+3f,
-    0x1.501be8p+4f, 0x1.681c4cp+3f, -0x1.1c8bdp+3f, 0x1.5a3ddp+4f,
-    0x1.7469f4p+3f, -0x1.eed4ap+2f, 0x1.642b08p+4f, 0x1.80747cp+3f,
-    -0x1.a6a17p+2f, 0x1.66c7cp+4f, 0x1.569f74p+3f, -0x1.c9896p+2f,
-    0x1.6deca8p+4f, 0x1.626c9cp+3f, -0x1.83285p+2f, 0x1.7517d8p+4f,
-    0x1.6cc924p+3f, -0x1.3da6cp+2f, 0x1.6b818p+4f, 0x1.89df4cp+3f,
-    -0x1.614ebp+2f, 0x1.7084d8p+4f, 0x1.925bacp+3f, -0x1.19769p+2f,
-    0x1.759658p+4f, 0x1.99c09cp+3f, -0x1.a6ad6p+1f, 0x1.79f948p+4f,
-    0x1.74df34p+3f, -0x1.eeeb4p+1f, 0x1.7cece8p+4f, 0x1.7c1834p+3f,
-    -0x1.5d41ep+1f, 0x1.802b2p+4f, 0x1.806e74p+3f, -0x1.a2b94p+0f,
-    0x1.78a4d8p+4f, 0x1.9e5db4p+3f, -0x1.1ac5ep+1f, 0x1.79ed1p+4f,
-    0x1.a6787cp+3f, -0x1.da228p-1f, 0x1.7b6828p+4f, 0x1.ae6044p+3f,
-    0x1.8e4fp-2f, 0x1.81cb9p+4f, 0x1.838fccp+3f, -0x1.df3bp-2f,
-    0x1.821a78p+4f, 0x1.8c1324p+3f, 0x1.ad4d8p-1f, 0x1.7c9a4p+4f,
-    0x1.b1a29cp+3f, 0x1.bc66cp+0f, 0x1.83abp+4f, 0x1.8bd13cp+3f,
-    0x1.e87ccp+0f, 0x1.7d3748p+4f, 0x1.b4a12cp+3f, 0x1.744fap+1f,
-    0x1.76339p+4f, 0x1.e32734p+3f, 0x1.05f95p+2f, 0x1.74667p+4f,
-    0x1.e79924p+3f, 0x1.7f286p+1f, 0x1.6b765p+4f, 0x1.100f9ap+4f,
-    0x1.0e811p+2f, 0x1.6e38e8p+4f, 0x1.0b2bf2p+4f, 0x1.4d90bp+2f,
-    0x1.405bbp+3f, -0x1.33b36ap+4f, 0x1.05d1f8p+3f, 0x1.494d2p+3f,
-    -0x1.3d4ceap+4f, 0x1.e9f89p+2f, 0x1.491f7p+3f, -0x1.46636ap+4f,
-    0x1.0e5a28p+3f, 0x1.3455dp+3f, -0x1.2547cap+4f, 0x1.177628p+3f,
-    0x1.408e4p+3f, -0x1.3cf59ap+4f, 0x1.265378p+3f, 0x1.4a6ddp+3f,
-    -0x1.4ccc22p+4f, 0x1.efacbp+2f, 0x1.4c3d5p+3f, -0x1.5895fap+4f,
-    0x1.10aeb8p+3f, 0x1.4d85ep+3f, -0x1.5c301ap+4f, 0x1.eeed1p+2f,
-    0x1.3e48cp+3f, -0x1.7c887ap+4f, 0x1.b8e3fp+2f, 0x1.4a3a3p+3f,
-    -0x1.6b5a52p+4f, 0x1.e035bp+2f, 0x1.472bap+3f, -0x1.7d127ap+4f,
-    0x1.018548p+3f, 0x1.4a6c1p+3f, -0x1.6b10eap+4f, 0x1.0c91b8p+3f,
-    0x1.4a92bp+3f, -0x1.67f032p+4f, 0x1.2cb958p+3f, 0x1.48ccap+3f,
-    -0x1.7d427ap+4f, 0x1.24eb88p+3f, 0x1.144a5p+3f, -0x1.ef9e04p+3f,
-    0x1.8e091p+2f, 0x1.0cddcp+3f, -0x1.e25a54p+3f, 0x1.c9d2bp+2f,
-    0x1.e7264p+2f, -0x1.a10c14p+3f, 0x1.87d8dp+2f, 0x1.1efd1p+3f,
-    -0x1.06ea4ap+4f, 0x1.5f1c7p+2f, 0x1.02285p+3f, -0x1.c5b3b4p+3f,
-    0x1.50535p+2f, 0x1.05d69p+3f, -0x1.e9d084p+3f, 0x1.200adp+2f,
-    0x1.dded4p+2f, -0x1.d48ea4p+3f, 0x1.b0c02p+1f, 0x1.cba4p+2f,
-    -0x1.991fb4p+3f, 0x1.0795bp+2f, 0x1.74038p+1f, -0x1.d14dc8p+2f,
-    0x1.226fe8p+3f, 0x1.2420ap+3f, -0x1.303542p+4f, 0x1.3b44d8p+3f,
-    0x1.3906cp+3f, -0x1.4b6662p+4f, 0x1.4b2ad8p+3f, 0x1.112cp+3f,
+    0x1.09d7d2p+4f, -0x1.6dc61p+1f, 0x1.71739cp+4f, 0x1.192778p+4f,
+    -0x1.b3db12p+1f, 0x1.698b84p+4f, 0x1.1cad2p+4f, -0x1.597d14p+2f,
+    0x1.6b9af2p+4f, 0x1.24ac72p+4f, -0x1.2c120ap+2f, 0x1.64f714p+4f,
+    0x1.265e2p+4f, -0x1.7065c2p+2f, 0x1.65b3a4p+4f, 0x1.2c566p+4f,
+    -0x1.43c16ep+2f, 0x1.5d45b8p+4f, 0x1.2a83d2p+4f, -0x1.f9dbd2p+1f,
+    0x1.5c8842p+4f, 0x1.31e6dap+4f, -0x1.138428p+2f, 0x1.5443c2p+4f,
+    0x1.f34828p+3f, -0x1.45592ep-2f, 0x1.705318p+4f, 0x1.080e9p+4f,
+    -0x1.0a4a94p+1f, 0x1.6fa082p+4f, 0x1.11c43ap+4f, -0x1.714f16p+0f,
+    0x1.64a224p+4f, 0x1.e2ca32p+3f, 0x1.1893a8p+0f, 0x1.6ec09cp+4f,
+    0x1.064ffp+4f, 0x1.aca2dcp-3f, 0x1.61e4a4p+4f, 0x1.13a4ap+4f,
+    -0x1.2c3cp+1f, 0x1.67e03cp+4f, 0x1.1f51d8p+4f, -0x1.5e4652p+1f,
+    0x1.618af2p+4f, 0x1.19b7d8p+4f, -0x1.8d1cd2p+0f, 0x1.5e74b2p+4f,
+    0x1.220afcp+4f, -0x1.d624ccp+0f, 0x1.56ad58p+4f, 0x1.274b7p+4f,
+    -0x1.78911p+1f, 0x1.5aa8c4p+4f, 0x1.2a6b48p+4f, -0x1.0330cep+1f,
+    0x1.4e5f54p+4f, 0x1.1c63d2p+4f, -0x1.7f0048p-1f, 0x1.541dc4p+4f,
+    0x1.251daap+4f, -0x1.042f94p+0f, 0x1.4aea92p+4f, 0x1.2dfb48p+4f,
+    -0x1.93b8ccp+1f, 0x1.5138f4p+4f, 0x1.30bf8ap+4f, -0x1.1b9126p+1f,
+    0x1.44be54p+4f, 0x1.3502cp+4f, -0x1.be1dd2p+1f, 0x1.48c342p+4f,
+    0x1.37cc1p+4f, -0x1.3c4b44p+1f, 0x1.37532p+4f, 0x1.31f55ap+4f,
+    -0x1.12b7aap+0f, 0x1.32f574p+4f, 0x1.3b2f7p+4f, -0x1.4361aap+0f,
+    0x1.2392e2p+4f, 0x1.e957bcp+3f, 0x1.2aca82p+1f, 0x1.61f796p+4f,
+    0x1.048d42p+4f, 0x1.d29e1cp+0f, 0x1.54a324p+4f, 0x1.f43822p+3f,
+    0x1.ca0d7p+1f, 0x1.517c5cp+4f, 0x1.07cb7cp+4f, 0x1.7cde22p+1f,
+    0x1.46c698p+4f, 0x1.12ad82p+4f, 0x1.f2aebp-1f, 0x1.4d09b4p+4f,
+    0x1.141038p+4f, 0x1.2979b8p+1f, 0x1.3dec9ap+4f, 0x1.fd89e4p+3f,
+    0x1.31e8dap+2f, 0x1.41c40cp+4f, 0x1.0a98e2p+4f, 0x1.17f0a6p+2f,
+    0x1.35cdbap+4f, 0x1.1c706cp+4f, 0x1.42ca36p-1f, 0x1.43c406p+4f,
+    0x1.24dd32p+4f, 0x1.42ef92p-2f, 0x1.3941b4p+4f, 0x1.1d8618p+4f,
+    0x1.ef076cp+0f, 0x1.3357ccp+4f, 0x1.256cd6p+4f, 0x1.fe29eap+0f,
+    0x1.25b738p+4f, 0x1.2b60ap+4f, 0x1.cbd168p-2f, 0x1.2aed94p+4f,
+    0x1.2e332p+4f, 0x1.e9885ep+0f, 0x1.18066cp+4f, 0x1.1d363p+4f,
+    0x1.e01cacp+1f, 0x1.1fdd8cp+4f, 0x1.275fc8p+4f, 0x1.cc40dap+1f,
+    0x1.12e04ap+4f, 0x1.356ac4p+4f, 0x1.47e88ap-2f, 0x1.1d2368p+4f,
+    0x1.39b03ap+4f, 0x1.c65b96p+0f, 0x1.08e9c4p+4f, 0x1.4017d8p+4f,
+    0x1.f1dd5ep-4f, 0x1.0c6e5cp+4f, 0x1.485772p+4f, 0x1.90f206p+0f,
+    0x1.ea0bcep+3f, 0x1.404fa8p+4f, 0x1.a1c158p+1f, 0x1.eaf708p+3f,
+    0x1.4f9fe8p+4f, 0x1.71599ap+1f, 0x1.c4677ap+3f, 0x1.f29bdp+3f,
+    0x1.91150ap+2f, 0x1.3f4b5ap+4f, 0x1.010c6ap+4f, 0x1.ec9ce8p+2f,
+    0x1.3170d4p+4f, 0x1.0492f2p+4f, 0x1.83ef14p+2f, 0x1.339808p+4f,
+    0x1.0de782p+4f, 0x1.6d4778p+2f, 0x1.27933cp+4f, 0x1.09d212p+4f,
+    0x1.e2c78ap+2f, 0x1.25af02p+4f, 0x1.141daap+4f, 0x1.d980dp+2f,
+    0x1.1abfbp+4f, 0x1.170efap+4f, 0x1.5e6028p+2f, 0x1.1c37e4p+4f,
+    0x1.1d6852p+4f, 0x1.d7407cp+2f, 0x1.0da524p+4f, 0x1.110928p+4f,
+    0x1.23fd3ep+3f, 0x1.1b06b4p+4f, 0x1.1b77fp+4f, 0x1.25ad56p+3f,
+    0x1.0e582ap+4f, 0x1.223ff2p+4f, 0x1.5c4078p+2f, 0x1.10279ap+4f,
+    0x1.2c2152p+4f, 0x1.4d7296p+2f, 0x1.02f41cp+4f, 0x1.28511ap+4f,
+    0x1.d040dep+2f, 0x1.015ea4p+4f, 0x1.359faap+4f, 0x1.bd324cp+2f,
+    0x1.e71a74p+3f, 0x1.399418p+4f, 0x1.40fe08p+2f, 0x1.e957f6p+3f,
+    0x1.42bdb8p+4f, 0x1.9f948ap+2f, 0x1.c7a0e6p+3f, 0x1.31fff2p+4f,
+    0x1.2547e6p+3f, 0x1.e7c638p+3f, 0x1.3ef9dp+4f, 0x1.132c04p+3f,
+    0x1.c93a16p+3f, 0x1.49eeb4p+4f, 0x1.2506b8p+2f, 0x1.c53aa6p+3f,
+    0x1.54982p+4f, 0x1.756948p+2f, 0x1.a1f076p+3f, 0x1.5abebap+4f,
+    0x1.fd3dd2p+1f, 0x1.9d1806p+3f, 0x1.654f22p+4f, 0x1.4440bcp+2f,
+    0x1.79fe06p+3f, 0x1.60f308p+4f, 0x1.bb8a58p+2f, 0x1.7c7738p+3f,
+    0x1.6fb312p+4f, 0x1.857076p+2f, 0x1.56e0c8p+3f, 0x1.28e9c8p+4f,
+    0x1.881296p+3f, 0x1.00ac7cp+4f, 0x1.3489p+4f, 0x1.8b2cf4p+3f,
+    0x1.e4fbd8p+3f, 0x1.3dce8ap+4f, 0x1.677f6ap+3f, 0x1.cbb048p+3f,
+    0x1.496a28p+4f, 0x1.48706cp+3f, 0x1.ad641ap+3f, 0x1.45e8c8p+4f,
+    0x1.98253cp+3f, 0x1.b4dae6p+3f, 0x1.529418p+4f, 0x1.796abp+3f,
+    0x1.939f1cp+3f, 0x1.5989p+4f, 0x1.281f34p+3f, 0x1.8651a6p+3f,
+    0x1.62260ap+4f, 0x1.4f8654p+3f, 0x1.68eed6p+3f, 0x1.4c2c18p+4f,
+    0x1.d4494cp+3f, 0x1.a48a68p+3f, 0x1.584a82p+4f, 0x1.abfb9ep+3f,
+    0x1.7fb0c6p+3f, 0x1.68ed5ap+4f, 0x1.05d9p+3f, 0x1.5ec068p+3f,
+    0x1.718cp+4f, 0x1.26b394p+3f, 0x1.3f0ed6p+3f, 0x1.77af02p+4f,
+    0x1.c87ef6p+2f, 0x1.36db2ap+3f, 0x1.7cfee6p+4f, 0x1.051fc2p+3f,
+    0x1.1adcf6p+3f, 0x1.77df58p+4f, 0x1.41e13ep+3f, 0x1.20f176p+3f,
+    0x1.83195p+4f, 0x1.1d4144p+3f, 0x1.f6a1ecp+2f, 0x1.609aeap+4f,
+    0x1.c73884p+3f, 0x1.5f22f8p+3f, 0x1.683642p+4f, 0x1.ce09e4p+3f,
+    0x1.3907ecp+3f, 0x1.70c9cp+4f, 0x1.85f0ecp+3f, 0x1.2a43a8p+3f,
+    0x1.75ba7ap+4f, 0x1.9942f4p+3f, 0x1.0b3f98p+3f, 0x1.6d283p+4f,
+    0x1.dcd99ap+3f, 0x1.17dc68p+3f, 0x1.7c1006p+4f, 0x1.5b2762p+3f,
+    0x1.03e29p+3f, 0x1.804d02p+4f, 0x1.6e43f4p+3f, 0x1.cc263p+2f,
+    0x1.869642p+4f, 0x1.3651eep+3f, 0x1.beed3p+2f, 0x1.877ceap+4f,
+    0x1.4f574ap+3f, 0x1.8ca2d8p+2f, 0x1.819caap+4f, 0x1.828ed4p+3f,
+    0x1.99558ep+2f, 0x1.88a9p+4f, 0x1.618b3ep+3f, 0x1.56b132p+2f,
+    0x1.6fbfb2p+4f, 0x1.eab0c6p+3f, 0x1.f3e8d2p+2f, 0x1.70bde2p+4f,
+    0x1.f6cdecp+3f, 0x1.b85316p+2f, 0x1.79a198p+4f, 0x1.bb64fcp+3f,
+    0x1.a7debp+2f, 0x1.79aca2p+4f, 0x1.ca1b6cp+3f, 0x1.70ad6cp+2f,
+    0x1.707718p+4f, 0x1.030b82p+4f, 0x1.7f8d8ep+2f, 0x1.81089cp+4f,
+    0x1.94df7cp+3f, 0x1.6403b8p+2f, 0x1.87d092p+4f, 0x1.71f43ep+3f,
+    0x1.22082cp+2f, 0x1.80cf3ap+4f, 0x1.a1ae3cp+3f, 0x1.2d7b4ep+2f,
+    0x1.85cc02p+4f, 0x1.81dc7cp+3f, 0x1.dc68b2p+1f, 0x1.7f9462p+4f,
+    0x1.aa7922p+3f, 0x1.e98822p+1f, 0x1.84d802p+4f, 0x1.8919aep+3f,
+    0x1.72c8dep+1f, 0x1.33194ap+4f, 0x1.7916aap+3f, -0x1.5e2a98p+3f,
+    0x1.3e3c32p+4f, 0x1.b37d1ep+3f, -0x1.1fb582p+3f, 0x1.48dfdap+4f,
+    0x1.bea9c8p+3f, -0x1.ef318cp+2f, 0x1.532fdap+4f, 0x1.c7dfb2p+3f,
+    -0x1.a279cp+2f, 0x1.4d8678p+4f, 0x1.93609cp+3f, -0x1.0b2c2ap+3f,
+    0x1.57d5cap+4f, 0x1.9e821ep+3f, -0x1.c9dcf4p+2f, 0x1.54569p+4f,
+    0x1.fce034p+3f, -0x1.29dc22p+2f, 0x1.5ae3fap+4f, 0x1.d07c0ep+3f,
+    -0x1.5955e2p+2f, 0x1.602792p+4f, 0x1.da05a4p+3f, -0x1.0f7958p+2f,
+    0x1.597efap+4f, 0x1.02a02ep+4f, -0x1.c2ed3ep+1f, 0x1.653fc8p+4f,
+    0x1.e0a77cp+3f, -0x1.925308p+1f, 0x1.66e058p+4f, 0x1.b08946p+3f,
+    -0x1.3b6656p+2f, 0x1.6c13c8p+4f, 0x1.b85484p+3f, -0x1.e73f08p+1f,
+    0x1.5cac48p+4f, 0x1.08dfbap+4f, -0x1.15e7bp+1f, 0x1.68516ap+4f,
+    0x1.e85096p+3f, -0x1.f60558p+0f, 0x1.5fd5cap+4f, 0x1.0f5756p+4f,
+    -0x1.871f9ap-1f, 0x1.687fa2p+4f, 0x1.000a4cp+4f, -0x1.0a42f2p-2f,
+    0x1.7233e2p+4f, 0x1.c49ab4p+3f, -0x1.880e38p+0f, 0x1.7356b8p+4f,
+    0x1.d17becp+3f, -0x1.9d8d7ap-4f, 0x1.67754p+4f, 0x1.0e7a32p+4f,
+    0x1.83ebbp+0f, 0x1.1b0ae2p+4f, 0x1.cf03acp+2f, -0x1.d3954p+3f,
+    0x1.282a9ep+4f, 0x1.faa45p+2f, -0x1.ac89a6p+3f, 0x1.364dc8p+4f,
+    0x1.11ef0cp+3f, -0x1.8362d2p+3f, 0x1.27d92ap+4f, 0x1.3421a6p+3f,
+    -0x1.99a742p+3f, 0x1.35191p+4f, 0x1.46af1ep+3f, -0x1.6fe838p+3f,
+    0x1.43604ap+4f, 0x1.582b44p+3f, -0x1.44ed82p+3f, 0x1.4458b8p+4f,
+    0x1.26d516p+3f, -0x1.57e6c6p+3f, 0x1.50b274p+4f, 0x1.38d95cp+3f,
+    -0x1.2f062cp+3f, 0x1.5d07eap+4f, 0x1.4968c4p+3f, -0x1.07c218p+3f,
+    0x1.501be8p+4f, 0x1.681c4ep+3f, -0x1.1c8bdp+3f, 0x1.5a3ddp+4f,
+    0x1.7469f6p+3f, -0x1.eed4a6p+2f, 0x1.642b08p+4f, 0x1.80747cp+3f,
+    -0x1.a6a16ep+2f, 0x1.66c7cp+4f, 0x1.569f76p+3f, -0x1.c98966p+2f,
+    0x1.6decaap+4f, 0x1.626c9ep+3f, -0x1.832856p+2f, 0x1.7517d8p+4f,
+    0x1.6cc924p+3f, -0x1.3da6c2p+2f, 0x1.6b8182p+4f, 0x1.89df4ep+3f,
+    -0x1.614eb6p+2f, 0x1.7084dap+4f, 0x1.925baep+3f, -0x1.197696p+2f,
+    0x1.75965ap+4f, 0x1.99c09ep+3f, -0x1.a6ad68p+1f, 0x1.79f948p+4f,
+    0x1.74df36p+3f, -0x1.eeeb46p+1f, 0x1.7cececp+4f, 0x1.7c1836p+3f,
+    -0x1.5d41f2p+1f, 0x1.802b22p+4f, 0x1.806e74p+3f, -0x1.a2b93cp+0f,
+    0x1.78a4d8p+4f, 0x1.9e5db6p+3f, -0x1.1ac5ecp+1f, 0x1.79ed0ep+4f,
+    0x1.a6787ap+3f, -0x1.da224ep-1f, 0x1.7b682ap+4f, 0x1.ae6044p+3f,
+    0x1.8e4efp-2f, 0x1.81cb9p+4f, 0x1.838fccp+3f, -0x1.df3b22p-2f,
+    0x1.821a7cp+4f, 0x1.8c132p+3f, 0x1.ad4d62p-1f, 0x1.7c9a42p+4f,
+    0x1.b1a29ep+3f, 0x1.bc66c2p+0f, 0x1.83abp+4f, 0x1.8bd13cp+3f,
+    0x1.e87cb8p+0f, 0x1.7d3746p+4f, 0x1.b4a12ap+3f, 0x1.744f98p+1f,
+    0x1.763392p+4f, 0x1.e32732p+3f, 0x1.05f94cp+2f, 0x1.74667p+4f,
+    0x1.e79926p+3f, 0x1.7f285ap+1f, 0x1.6b765p+4f, 0x1.100f9ap+4f,
+    0x1.0e8116p+2f, 0x1.6e38e8p+4f, 0x1.0b2bf2p+4f, 0x1.4d90acp+2f,
+    0x1.405bacp+3f, -0x1.33b368p+4f, 0x1.05d1fp+3f, 0x1.494d22p+3f,
+    -0x1.3d4ceap+4f, 0x1.e9f88cp+2f, 0x1.491f7p+3f, -0x1.46636ap+4f,
+    0x1.0e5a28p+3f, 0x1.3455d2p+3f, -0x1.2547cap+4f, 0x1.177628p+3f,
+    0x1.408e44p+3f, -0x1.3cf59ap+4f, 0x1.265378p+3f, 0x1.4a6dcap+3f,
+    -0x1.4ccc2p+4f, 0x1.efaca8p+2f, 0x1.4c3d54p+3f, -0x1.5895fap+4f,
+    0x1.10aeb6p+3f, 0x1.4d85e4p+3f, -0x1.5c301ap+4f, 0x1.eeed1p+2f,
+    0x1.3e48bep+3f, -0x1.7c8878p+4f, 0x1.b8e3f4p+2f, 0x1.4a3a32p+3f,
+    -0x1.6b5a52p+4f, 0x1.e035bp+2f, 0x1.472ba2p+3f, -0x1.7d127ap+4f,
+    0x1.018546p+3f, 0x1.4a6c0ep+3f, -0x1.6b10ecp+4f, 0x1.0c91b6p+3f,
+    0x1.4a92b4p+3f, -0x1.67f032p+4f, 0x1.2cb958p+3f, 0x1.48cca2p+3f,
+    -0x1.7d427ap+4f, 0x1.24eb88p+3f, 0x1.144a4ep+3f, -0x1.ef9e04p+3f,
+    0x1.8e0908p+2f, 0x1.0cddc2p+3f, -0x1.e25a56p+3f, 0x1.c9d2aap+2f,
+    0x1.e72642p+2f, -0x1.a10c16p+3f, 0x1.87d8ccp+2f, 0x1.1efd12p+3f,
+    -0x1.06ea4ap+4f, 0x1.5f1c72p+2f, 0x1.022852p+3f, -0x1.c5b3b6p+3f,
+    0x1.50535p+2f, 0x1.05d698p+3f, -0x1.e9d07ep+3f, 0x1.200accp+2f,
+    0x1.dded42p+2f, -0x1.d48ea2p+3f, 0x1.b0c01ep+1f, 0x1.cba406p+2f,
+    -0x1.991fb2p+3f, 0x1.0795bp+2f, 0x1.74038ap+1f, -0x1.d14dcap+2f,
+    0x1.226feap+3f, 0x1.2420a8p+3f, -0x1.30353ep+4f, 0x1.3b44dep+3f,
+    0x1.3906cp+3f, -0x1.4b6662p+4f, 0x1.4b2ad6p+3f, 0x1.112c02p+3f,
     -0x1.411172p+4f, 0x1.661418p+3f, 0x1.1aa7bp+3f, -0x1.1298b2p+4f,
-    0x1.256718p+3f, 0x1.fe0acp+2f, -0x1.1ff192p+4f, 0x1.4f2d98p+3f,
-    0x1.88fdap+2f, -0x1.6ef394p+3f, 0x1.6a1d2p+1f, 0x1.9cebp+2f,
-    -0x1.bca6b4p+3f, 0x1.0e33ep+1f, 0x1.4fd74p+2f, -0x1.5679d4p+3f,
-    0x1.7f95cp+0f, 0x1.3269ep+2f, -0x1.ee28a8p+2f, 0x1.20f82p+1f,
-    0x1.6d348p+2f, -0x1.21d254p+3f, 0x1.cdccap+1f, 0x1.4f592p+2f,
-    -0x1.aa3ea4p+3f, 0x1.a3848p-1f, 0x1.2180ap+3f, -0x1.5e8922p+4f,
-    0x1.6c9eb8p+3f, 0x1.3fed6p+3f, -0x1.642e62p+4f, 0x1.4f3c28p+3f,
-    0x1.3f7d2p+3f, -0x1.7aac7ap+4f, 0x1.4703c8p+3f, 0x1.bce98p+2f,
-    -0x1.6d5784p+3f, 0x1.c5225p+2f, 0x1.984b8p+2f, -0x1.4fb7a4p+3f,
-    0x1.06d4b8p+3f, 0x1.4f654p+2f, -0x1.9090c8p+2f, 0x1.b8b35p+2f,
-    0x1.00188p+3f, -0x1.deb224p+3f, 0x1.076d58p+3f, 0x1.84b56p+2f,
-    -0x1.15f494p+3f, 0x1.77eadp+2f, 0x1.caa08p+2f, -0x1.d4e1f4p+3f,
-    0x1.2a7398p+3f, 0x1.9246ap+2f, -0x1.04de62p+4f, 0x1.531ef8p+3f,
-    0x1.61a5cp+2f, -0x1.601084p+3f, 0x1.28bfc8p+3f, 0x1.3488ap+2f,
-    -0x1.813dfp+1f, 0x1.4d205p+2f, 0x1.04b2cp+2f, -0x1.a62c4p-1f,
-    0x1.bf2f6p+1f, 0x1.43704p+2f, -0x1.869d88p+2f, 0x1.1fb5fp+2f,
-    0x1.1beb8p+2f, -0x1.1cfd88p+2f, 0x1.6a562p+1f, 0x1.c3b68p+1f,
-    -0x1.bd1cfp+1f, 0x1.640ccp+0f, 0x1.bbd0cp+1f, 0x1.dcda8p-2f,
-    0x1.bd3ccp+0f, 0x1.630bp+1f, -0x1.2093dp+1f, 0x1.3a8cp-4f,
-    0x1.2d703p+3f, -0x1.4182e2p+4f, 0x1.2e4bbp+2f, 0x1.d5076p+2f,
-    -0x1.5aefbap+4f, 0x1.f8068p-1f, 0x1.67daep+4f, -0x1.dc908ap+4f,
-    -0x1.c3924p+0f, 0x1.6dae58p+4f, -0x1.ccdccap+4f, 0x1.106a2p+1f,
-    0x1.86ec88p+4f, -0x1.8913e2p+4f, -0x1.44994p+0f, 0x1.6af77p+4f,
-    -0x1.b3a11ap+4f, 0x1.9ac2bp+2f, 0x1.889bfp+4f, -0x1.68d06ap+4f,
-    0x1.69666p+1f, 0x1.9dce7p+4f, -0x1.236aa2p+4f, -0x1.0d048p-1f,
-    0x1.61b88p+4f, -0x1.88cc9ap+4f, 0x1.47c558p+3f, 0x1.84cdfp+4f,
-    -0x1.406b5ap+4f, 0x1.be1afp+2f, 0x1.a04e4p+4f, -0x1.e4a904p+3f,
-    0x1.c8156p+1f, 0x1.ab671p+4f, -0x1.7a0214p+3f, 0x1.9fb18p-1f,
-    0x1.496d5p+4f, -0x1.2f9ecap+4f, 0x1.ecbe38p+3f, 0x1.70c608p+4f,
-    -0x1.0ed972p+4f, 0x1.6d8a48p+3f, 0x1.988ae8p+4f, -0x1.9e78d4p+3f,
-    0x1.b7ce5p+2f, 0x1.ab094p+4f, -0x1.287814p+3f, 0x1.18743p+2f,
-    0x1.ae475p+4f, -0x1.86e888p+2f, 0x1.f47acp+0f, 0x1.33c6ep+4f,
-    -0x1.8cda84p+3f, 0x1.472104p+4f, 0x1.4b373p+4f, -0x1.69fd24p+3f,
-    0x1.20d3f4p+4f, 0x1.70c23p+4f, -0x1.2f00b4p+3f, 0x1.982c08p+3f,
-    0x1.96713p+4f, -0x1.a72648p+2f, 0x1.f7dcdp+2f, 0x1.a489fp+4f,
-    -0x1.ce7e7p+1f, 0x1.536afp+2f, 0x1.a4f938p+4f, -0x1.1aap-8f,
-    0x1.7d9eep+1f, 0x1.244e48p+4f, -0x1.49c1d4p+3f, 0x1.61e74cp+4f,
-    0x1.3a3c2p+4f, -0x1.0d74d4p+3f, 0x1.4dae0cp+4f, 0x1.4ad2e8p+4f,
-    -0x1.908cc8p+2f, 0x1.24d8fcp+4f, 0x1.6cdc3p+4f, -0x1.99923p+1f,
-    0x1.9a6a18p+3f, 0x1.8911fp+4f, -0x1.32098p-2f, 0x1.1fc388p+3f,
-    0x1.9618d8p+4f, 0x1.74a93p+1f, 0x1.993e3p+2f, 0x1.9901e8p+4f,
-    0x1.84c578p+2f, 0x1.f25d6p+1f, 0x1.5c6678p+4f, -0x1.ba57b2p+4f,
-    -0x1.f09c2p+2f, 0x1.7c50d8p+4f, -0x1.61e5aap+4f, -0x1.e1e99p+2f,
-    0x1.5247fp+4f, -0x1.7e7f1ap+4f, -0x1.649418p+3f, 0x1.8da88p+4f,
-    -0x1.0c7062p+4f, -0x1.c4513p+2f, 0x1.6e6c48p+4f, -0x1.1f3a02p+4f,
-    -0x1.53b098p+3f, 0x1.3cec98p+4f, -0x1.3527a2p+4f, -0x1.db14e8p+3f,
-    0x1.945788p+4f, -0x1.63c9a4p+3f, -0x1.812cep+2f, 0x1.793cb8p+4f,
-    -0x1.9e4904p+3f, -0x1.4147p+3f, 0x1.52a37p+4f, -0x1.bc3514p+3f,
-    -0x1.c0dbe8p+3f, 0x1.200d2p+4f, -0x1.e2f544p+3f, -0x1.25047p+4f,
-    0x1.962848p+4f, -0x1.33c0a8p+2f, -0x1.20e53p+2f, 0x1.7dc7c8p+4f,
-    -0x1.cf5ea8p+2f, -0x1.175f98p+3f, 0x1.5a0dc8p+4f, -0x1.2c1df4p+3f,
-    -0x1.a342cp+3f, 0x1.320898p+4f, -0x1.477224p+3f, -0x1.0f04b8p+4f,
-    0x1.91e8f8p+4f, 0x1.1390fp+1f, -0x1.9bef6p+1f, 0x1.7f0c2p+4f,
-    0x1.678ep-4f, -0x1.c78d6p+2f, 0x1.5ed5dp+4f, -0x1.48b17p+1f,
-    -0x1.68f9f8p+3f, 0x1.366c88p+4f, -0x1.3c6c08p+2f, -0x1.f27b6p+3f,
-    0x1.10871p+4f, -0x1.9abf28p+2f, -0x1.2a59dp+4f, 0x1.8cd67p+4f,
-    0x1.f91e98p+2f, -0x1.103eep+1f, 0x1.7ec8ap+4f, 0x1.9bbcd8p+2f,
-    -0x1.7136fp+2f, 0x1.6514ep+4f, 0x1.201268p+2f, -0x1.28f79p+3f,
-    0x1.3d20cp+4f, 0x1.03801p+1f, -0x1.ad9b1p+3f, 0x1.14bb3p+4f,
-    -0x1.37dc4p-1f, -0x1.119e88p+4f, 0x1.07f6e8p+4f, -0x1.70cb68p+2f,
-    0x1.76e91cp+4f, 0x1.e78c5p+3f, -0x1.049bfp+1f, 0x1.7ac6ccp+4f,
-    0x1.21b52p+4f, -0x1.d6dabp+1f, 0x1.630e74p+4f, 0x1.10e718p+4f,
-    -0x1.f65ap-4f, 0x1.59cbacp+4f, 0x1.2b1498p+4f, -0x1.dae94p-1f,
-    0x1.3e322cp+4f, 0x1.150f5p+4f, 0x1.f6b71p+1f, 0x1.2c747cp+4f,
-    0x1.338c08p+4f, 0x1.bb239p+1f, 0x1.057cacp+4f, 0x1.281b58p+4f,
-    0x1.32fe3cp+3f, 0x1.00bc3cp+4f, 0x1.4f08f8p+4f, 0x1.f95538p+2f,
-    0x1.a5d418p+3f, 0x1.68e018p+4f, 0x1.72e004p+3f, 0x1.4dabc8p+3f,
-    0x1.77b24p+4f, 0x1.acd62cp+3f, 0x1.e13f3p+2f, 0x1.407b2p+4f,
-    0x1.86e55cp+3f, -0x1.33795p+3f, 0x1.5f691p+4f, 0x1.a849d4p+3f,
-    -0x1.81808p+2f, 0x1.6f0358p+4f, 0x1.bfab9cp+3f, -0x1.5457ep+1f,
-    0x1.1f946p+3f, -0x1.0c348ap+4f, 0x1.002778p+3f, 0x1.44c6ap+3f,
-    -0x1.37fa8ap+4f, 0x1.c14b7p+2f, 0x1.0487ep+4f, -0x1.8590e4p+3f,
-    0x1.6e3cccp+4f, 0x1.16d23p+4f, -0x1.d353f4p+3f, 0x1.580104p+4f,
-    0x1.1cce2p+4f, -0x1.673b02p+4f, 0x1.1daa84p+4f, 0x1.922cc8p+4f,
-    0x1.1a1e34p+3f, 0x1.5d02cp+0f, 0x1.9b6108p+4f, 0x1.006b98p+2f,
-    0x1.2ab48p-1f, 0x1.a4f88p+4f, -0x1.4c60dp+1f, -0x1.e4bdp-2f,
-    0x1.a6c67p+4f, -0x1.11ab94p+3f, -0x1.cba4cp+0f, 0x1.a1123p+4f,
-    -0x1.d78fc4p+3f, -0x1.a111ap+1f, 0x1.936c28p+4f, -0x1.489aeap+4f,
-    -0x1.0facp+2f, 0x1.794b2p+4f, -0x1.a0c6a2p+4f, -0x1.2e10dp+2f,
-    0x1.c67fdp+3f, -0x1.0dbdd4p+3f, 0x1.8281f4p+4f, 0x1.0dd948p+4f,
-    -0x1.1ab1a4p+3f, 0x1.73420cp+4f, 0x1.26ca4p+4f, -0x1.b868a8p+2f,
-    0x1.65441cp+4f, 0x1.37de48p+4f, -0x1.2f3018p+2f, 0x1.4a4104p+4f,
-    0x1.46c2e8p+4f, -0x1.7f722p+0f, 0x1.100a7cp+4f, 0x1.617cc8p+4f,
-    0x1.29ec5p+1f, 0x1.974ab8p+3f, 0x1.7b4918p+4f, 0x1.570798p+2f,
-    0x1.3510c8p+3f, 0x1.8a8ep+4f, 0x1.05001cp+3f, 0x1.b9947p+2f,
-    0x1.8cd75p+4f, 0x1.49cb74p+3f, 0x1.1951fp+2f, 0x1.726bfp+4f,
-    0x1.e64f44p+3f, 0x1.a1f04p+0f, 0x1.77d35p+4f, 0x1.d8f97cp+3f,
-    0x1.3bab7p+2f, 0x1.85963p+4f, 0x1.65dddcp+3f, -0x1.e06d8p-1f,
-    0x1.7c2c2p+4f, 0x1.510764p+3f, -0x1.1688bp+2f, 0x1.673f3p+4f,
-    0x1.2acab4p+3f, -0x1.ea386p+2f, 0x1.43647p+4f, 0x1.e5c598p+2f,
-    -0x1.6c6528p+3f, 0x1.1a78d8p+4f, 0x1.5493d8p+2f, -0x1.e65788p+3f,
-    0x1.e7326p+3f, -0x1.568374p+3f, 0x1.79690cp+4f, 0x1.879e3p+4f,
-    0x1.74db24p+3f, 0x1.1318ep+1f, 0x1.443dap+3f, -0x1.533e02p+4f,
-    0x1.2cbf78p+3f, 0x1.48175p+3f, -0x1.5e0c62p+4f, 0x1.c22dbp+2f,
-    0x1.2a32ap+3f, -0x1.16706ap+4f, 0x1.66bc9p+2f, 0x1.de448p+2f,
-    -0x1.036572p+4f, 0x1.5981ap+1f, 0x1.07784p+2f, -0x1.ade67p+1f,
-    0x1.fcbb1p+2f, 0x1.ee124p+1f, -0x1.a88888p+2f, 0x1.b9178p-1f,
-    0x1.a768ep+2f, -0x1.547e34p+3f, 0x1.3a617p+2f,
+    0x1.256718p+3f, 0x1.fe0ac8p+2f, -0x1.1ff192p+4f, 0x1.4f2d96p+3f,
+    0x1.88fda8p+2f, -0x1.6ef396p+3f, 0x1.6a1d2ap+1f, 0x1.9ceb04p+2f,
+    -0x1.bca6b2p+3f, 0x1.0e33d6p+1f, 0x1.4fd744p+2f, -0x1.5679d2p+3f,
+    0x1.7f95c4p+0f, 0x1.3269ep+2f, -0x1.ee28a6p+2f, 0x1.20f816p+1f,
+    0x1.6d3482p+2f, -0x1.21d254p+3f, 0x1.cdcc9ep+1f, 0x1.4f5926p+2f,
+    -0x1.aa3ea4p+3f, 0x1.a38456p-1f, 0x1.2180a6p+3f, -0x1.5e8924p+4f,
+    0x1.6c9eb4p+3f, 0x1.3fed64p+3f, -0x1.642e62p+4f, 0x1.4f3c28p+3f,
+    0x1.3f7d2p+3f, -0x1.7aac76p+4f, 0x1.4703cap+3f, 0x1.bce982p+2f,
+    -0x1.6d5788p+3f, 0x1.c52246p+2f, 0x1.984b88p+2f, -0x1.4fb7a4p+3f,
+    0x1.06d4b8p+3f, 0x1.4f6544p+2f, -0x1.9090cap+2f, 0x1.b8b34ap+2f,
+    0x1.001882p+3f, -0x1.deb222p+3f, 0x1.076d56p+3f, 0x1.84b568p+2f,
+    -0x1.15f492p+3f, 0x1.77eadp+2f, 0x1.caa088p+2f, -0x1.d4e1eep+3f,
+    0x1.2a7394p+3f, 0x1.9246a6p+2f, -0x1.04de62p+4f, 0x1.531ef6p+3f,
+    0x1.61a5c2p+2f, -0x1.601082p+3f, 0x1.28bfc8p+3f, 0x1.34889cp+2f,
+    -0x1.813df2p+1f, 0x1.4d2046p+2f, 0x1.04b2cp+2f, -0x1.a62c56p-1f,
+    0x1.bf2f5ep+1f, 0x1.437048p+2f, -0x1.869d88p+2f, 0x1.1fb5eep+2f,
+    0x1.1beb86p+2f, -0x1.1cfd8ap+2f, 0x1.6a561ep+1f, 0x1.c3b688p+1f,
+    -0x1.bd1ceap+1f, 0x1.640cb6p+0f, 0x1.bbd0cp+1f, 0x1.dcda6ep-2f,
+    0x1.bd3cacp+0f, 0x1.630b06p+1f, -0x1.2093d2p+1f, 0x1.3a8b4cp-4f,
+    0x1.2d702ep+3f, -0x1.4182ep+4f, 0x1.2e4baep+2f, 0x1.d5075cp+2f,
+    -0x1.5aefb8p+4f, 0x1.f8064ap-1f, 0x1.67dae4p+4f, -0x1.dc9088p+4f,
+    -0x1.c3924ap+0f, 0x1.6dae56p+4f, -0x1.ccdcc8p+4f, 0x1.106a22p+1f,
+    0x1.86ec84p+4f, -0x1.8913ep+4f, -0x1.44997cp+0f, 0x1.6af772p+4f,
+    -0x1.b3a11cp+4f, 0x1.9ac2bp+2f, 0x1.889bfp+4f, -0x1.68d06cp+4f,
+    0x1.696662p+1f, 0x1.9dce6ep+4f, -0x1.236aa4p+4f, -0x1.0d04c4p-1f,
+    0x1.61b87ep+4f, -0x1.88cc98p+4f, 0x1.47c55ap+3f, 0x1.84cdf4p+4f,
+    -0x1.406b58p+4f, 0x1.be1afcp+2f, 0x1.a04e4p+4f, -0x1.e4a906p+3f,
+    0x1.c81544p+1f, 0x1.ab6712p+4f, -0x1.7a0216p+3f, 0x1.9fb13ap-1f,
+    0x1.496d4ep+4f, -0x1.2f9ecap+4f, 0x1.ecbe36p+3f, 0x1.70c606p+4f,
+    -0x1.0ed974p+4f, 0x1.6d8a4ep+3f, 0x1.988ae6p+4f, -0x1.9e78cep+3f,
+    0x1.b7ce46p+2f, 0x1.ab0944p+4f, -0x1.28781ap+3f, 0x1.18742ep+2f,
+    0x1.ae4752p+4f, -0x1.86e88ap+2f, 0x1.f47adp+0f, 0x1.33c6e2p+4f,
+    -0x1.8cda7ep+3f, 0x1.472104p+4f, 0x1.4b3732p+4f, -0x1.69fd24p+3f,
+    0x1.20d3f2p+4f, 0x1.70c234p+4f, -0x1.2f00b6p+3f, 0x1.982c04p+3f,
+    0x1.96712ep+4f, -0x1.a7264ep+2f, 0x1.f7dccap+2f, 0x1.a489fp+4f,
+    -0x1.ce7e6cp+1f, 0x1.536afcp+2f, 0x1.a4f93ap+4f, -0x1.1aa822p-8f,
+    0x1.7d9eep+1f, 0x1.244e48p+4f, -0x1.49c1ccp+3f, 0x1.61e748p+4f,
+    0x1.3a3c1ep+4f, -0x1.0d74d8p+3f, 0x1.4dae08p+4f, 0x1.4ad2e8p+4f,
+    -0x1.908cb8p+2f, 0x1.24d8fcp+4f, 0x1.6cdc32p+4f, -0x1.99923ap+1f,
+    0x1.9a6a1p+3f, 0x1.8911eep+4f, -0x1.3209aap-2f, 0x1.1fc388p+3f,
+    0x1.9618d6p+4f, 0x1.74a92ep+1f, 0x1.993e2p+2f, 0x1.9901e6p+4f,
+    0x1.84c57ap+2f, 0x1.f25d64p+1f, 0x1.5c667cp+4f, -0x1.ba57bp+4f,
+    -0x1.f09c28p+2f, 0x1.7c50dap+4f, -0x1.61e5acp+4f, -0x1.e1e992p+2f,
+    0x1.5247f4p+4f, -0x1.7e7f16p+4f, -0x1.64941ap+3f, 0x1.8da88p+4f,
+    -0x1.0c7064p+4f, -0x1.c4512ep+2f, 0x1.6e6c4cp+4f, -0x1.1f3a02p+4f,
+    -0x1.53b09cp+3f, 0x1.3cec9ap+4f, -0x1.35279ep+4f, -0x1.db14eap+3f,
+    0x1.94578cp+4f, -0x1.63c9aap+3f, -0x1.812ce4p+2f, 0x1.793cbap+4f,
+    -0x1.9e49p+3f, -0x1.4147p+3f, 0x1.52a36ep+4f, -0x1.bc351p+3f,
+    -0x1.c0dbe6p+3f, 0x1.200d22p+4f, -0x1.e2f546p+3f, -0x1.25047p+4f,
+    0x1.962846p+4f, -0x1.33c0aep+2f, -0x1.20e532p+2f, 0x1.7dc7c8p+4f,
+    -0x1.cf5ea2p+2f, -0x1.175f98p+3f, 0x1.5a0dcap+4f, -0x1.2c1decp+3f,
+    -0x1.a342c2p+3f, 0x1.320898p+4f, -0x1.477224p+3f, -0x1.0f04bap+4f,
+    0x1.91e8fcp+4f, 0x1.1390f4p+1f, -0x1.9bef74p+1f, 0x1.7f0c1ep+4f,
+    0x1.678f26p-4f, -0x1.c78d5cp+2f, 0x1.5ed5d2p+4f, -0x1.48b17p+1f,
+    -0x1.68f9fap+3f, 0x1.366c88p+4f, -0x1.3c6c06p+2f, -0x1.f27b62p+3f,
+    0x1.10871p+4f, -0x1.9abf3p+2f, -0x1.2a59dp+4f, 0x1.8cd674p+4f,
+    0x1.f91e92p+2f, -0x1.103ee2p+1f, 0x1.7ec8a2p+4f, 0x1.9bbcep+2f,
+    -0x1.7136f4p+2f, 0x1.6514e2p+4f, 0x1.20126ep+2f, -0x1.28f78ep+3f,
+    0x1.3d20bep+4f, 0x1.03800ap+1f, -0x1.ad9b1p+3f, 0x1.14bb34p+4f,
+    -0x1.37dc16p-1f, -0x1.119e88p+4f, 0x1.07f6ecp+4f, -0x1.70cb6p+2f,
+    0x1.76e91ep+4f, 0x1.e78c4cp+3f, -0x1.049bep+1f, 0x1.7ac6c8p+4f,
+    0x1.21b51ep+4f, -0x1.d6dab2p+1f, 0x1.630e74p+4f, 0x1.10e718p+4f,
+    -0x1.f65a9ap-4f, 0x1.59cbaep+4f, 0x1.2b149cp+4f, -0x1.dae904p-1f,
+    0x1.3e322ap+4f, 0x1.150f5p+4f, 0x1.f6b71cp+1f, 0x1.2c7478p+4f,
+    0x1.338c08p+4f, 0x1.bb2392p+1f, 0x1.057caep+4f, 0x1.281b58p+4f,
+    0x1.32fe3ep+3f, 0x1.00bc3ep+4f, 0x1.4f08fap+4f, 0x1.f9553ap+2f,
+    0x1.a5d41p+3f, 0x1.68e018p+4f, 0x1.72e006p+3f, 0x1.4dabc2p+3f,
+    0x1.77b244p+4f, 0x1.acd62ep+3f, 0x1.e13f36p+2f, 0x1.407b2p+4f,
+    0x1.86e55ap+3f, -0x1.33795p+3f, 0x1.5f6914p+4f, 0x1.a849d2p+3f,
+    -0x1.818084p+2f, 0x1.6f0358p+4f, 0x1.bfab9ap+3f, -0x1.5457dap+1f,
+    0x1.1f945cp+3f, -0x1.0c3486p+4f, 0x1.00277ep+3f, 0x1.44c6a8p+3f,
+    -0x1.37fa8ap+4f, 0x1.c14b76p+2f, 0x1.0487e2p+4f, -0x1.8590e4p+3f,
+    0x1.6e3cccp+4f, 0x1.16d23p+4f, -0x1.d353eep+3f, 0x1.580108p+4f,
+    0x1.1cce24p+4f, -0x1.673b04p+4f, 0x1.1daa84p+4f, 0x1.922ccap+4f,
+    0x1.1a1e38p+3f, 0x1.5d029ap+0f, 0x1.9b6106p+4f, 0x1.006bap+2f,
+    0x1.2ab41p-1f, 0x1.a4f884p+4f, -0x1.4c60d4p+1f, -0x1.e4bdfep-2f,
+    0x1.a6c67p+4f, -0x1.11ab94p+3f, -0x1.cba4e8p+0f, 0x1.a11234p+4f,
+    -0x1.d78fc2p+3f, -0x1.a111a6p+1f, 0x1.936c2ap+4f, -0x1.489ae8p+4f,
+    -0x1.0facp+2f, 0x1.794b24p+4f, -0x1.a0c6a4p+4f, -0x1.2e10d4p+2f,
+    0x1.c67fccp+3f, -0x1.0dbddap+3f, 0x1.8281fp+4f, 0x1.0dd946p+4f,
+    -0x1.1ab1a8p+3f, 0x1.734208p+4f, 0x1.26ca3ep+4f, -0x1.b8689cp+2f,
+    0x1.65441ep+4f, 0x1.37de4cp+4f, -0x1.2f301ap+2f, 0x1.4a4104p+4f,
+    0x1.46c2e8p+4f, -0x1.7f721ep+0f, 0x1.100a7ep+4f, 0x1.617cccp+4f,
+    0x1.29ec46p+1f, 0x1.974abcp+3f, 0x1.7b4916p+4f, 0x1.57079ap+2f,
+    0x1.3510cp+3f, 0x1.8a8dfep+4f, 0x1.05002p+3f, 0x1.b9947p+2f,
+    0x1.8cd754p+4f, 0x1.49cb72p+3f, 0x1.1951e4p+2f, 0x1.726bf2p+4f,
+    0x1.e64f46p+3f, 0x1.a1f00ap+0f, 0x1.77d34ep+4f, 0x1.d8f97cp+3f,
+    0x1.3bab6p+2f, 0x1.85963p+4f, 0x1.65ddd8p+3f, -0x1.e06df8p-1f,
+    0x1.7c2c2p+4f, 0x1.510766p+3f, -0x1.1688b2p+2f, 0x1.673f2ep+4f,
+    0x1.2acab6p+3f, -0x1.ea3868p+2f, 0x1.43647p+4f, 0x1.e5c598p+2f,
+    -0x1.6c6526p+3f, 0x1.1a78d8p+4f, 0x1.5493dep+2f, -0x1.e65788p+3f,
+    0x1.e7326ap+3f, -0x1.568374p+3f, 0x1.79690ep+4f, 0x1.879e3p+4f,
+    0x1.74db24p+3f, 0x1.1318e4p+1f, 0x1.443da2p+3f, -0x1.533dfep+4f,
+    0x1.2cbf7p+3f, 0x1.48175p+3f, -0x1.5e0c6p+4f, 0x1.c22da2p+2f,
+    0x1.2a32ap+3f, -0x1.16706cp+4f, 0x1.66bc88p+2f, 0x1.de448cp+2f,
+    -0x1.03657p+4f, 0x1.598184p+1f, 0x1.077846p+2f, -0x1.ade67p+1f,
+    0x1.fcbb0ep+2f, 0x1.ee1262p+1f, -0x1.a8889p+2f, 0x1.b9172ep-1f,
+    0x1.a768d8p+2f, -0x1.547e32p+3f, 0x1.3a6178p+2f,
 };
 const float tfit_heart_rest_file[2895] = {
     0x1.30f328p+5f, -0x1.303396p+5f, 0x1.26776cp+5f, 0x1.30fb2cp+5f,
@@ -13122,7 +13122,7 @@ const float tfit_heart_rest_file[2895] = {
     0x1.72ca82p+5f, -0x1.05a19cp+5f, 0x1.0077bcp+5f, 0x1.7126ap+5f,
     -0x1.08f2ccp+5f, 0x1.f55d9cp+4f, 0x1.6fae06p+5f, -0x1.03df72p+5f,
     0x1.ede7ccp+4f, 0x1.6f874cp+5f, -0x1.0c492ap+5f, 0x1.e9e4dp+4f,
-    0x1.6db90cp+5f, -0x1.071802p+5f, 0x1.e29436p+4f, 0x1.6d987ap+5f,
+    0x1.6db90ap+5f, -0x1.071802p+5f, 0x1.e29436p+4f, 0x1.6d987ap+5f,
     -0x1.0f9bdcp+5f, 0x1.de69e8p+4f, 0x1.6bb728p+5f, -0x1.0a7018p+5f,
     0x1.d72e7ap+4f, 0x1.6decacp+5f, -0x1.fd1d84p+4f, 0x1.e6a958p+4f,
     0x1.6be4a2p+5f, -0x1.01ccb8p+5f, 0x1.db6aeep+4f, 0x1.6b5406p+5f,
@@ -13184,7 +13184,7 @@ const float tfit_heart_rest_file[2895] = {
     0x1.f44f84p+4f, 0x1.6b3008p+5f, -0x1.a4dda6p+4f, 0x1.ed8236p+4f,
     0x1.6c5d1ep+5f, -0x1.93354ep+4f, 0x1.fb004p+4f, 0x1.6b314cp+5f,
     -0x1.97196p+4f, 0x1.f149fp+4f, 0x1.6b643cp+5f, -0x1.b6b926p+4f,
-    0x1.ea6f64p+4f, 0x1.69c858p+5f, -0x1.bb715ap+4f, 0x1.e079e2p+4f,
+    0x1.ea6f62p+4f, 0x1.69c858p+5f, -0x1.bb715ap+4f, 0x1.e079e2p+4f,
     0x1.69c2b8p+5f, -0x1.aa8568p+4f, 0x1.e412dp+4f, 0x1.67eefp+5f,
     -0x1.b08aep+4f, 0x1.db0be6p+4f, 0x1.67f10ep+5f, -0x1.c0df54p+4f,
     0x1.d77ab6p+4f, 0x1.65c71ep+5f, -0x1.b51a7ep+4f, 0x1.d1b6a2p+4f,
@@ -13276,7 +13276,7 @@ const float tfit_heart_rest_file[2895] = {
     -0x1.d8b2f8p+4f, 0x1.57d562p+5f, 0x1.58e014p+5f, -0x1.da3848p+4f,
     0x1.53fcbep+5f, 0x1.473f3p+5f, -0x1.bd7094p+4f, 0x1.6395eap+5f,
     0x1.4b3788p+5f, -0x1.c1884ap+4f, 0x1.6040cep+5f, 0x1.489b3cp+5f,
-    -0x1.b37c64p+4f, 0x1.5f771cp+5f, 0x1.4c0716p+5f, -0x1.b84f58p+4f,
+    -0x1.b37c64p+4f, 0x1.5f771cp+5f, 0x1.4c0716p+5f, -0x1.b84f5ap+4f,
     0x1.5cc9acp+5f, 0x1.4ebf98p+5f, -0x1.c8528p+4f, 0x1.5e5a72p+5f,
     0x1.4f1846p+5f, -0x1.bd85ap+4f, 0x1.5a932cp+5f, 0x1.49c574p+5f,
     -0x1.a9e02p+4f, 0x1.5b8908p+5f, 0x1.4cba7p+5f, -0x1.ad1f26p+4f,
@@ -13449,7 +13449,7 @@ const float tfit_heart_rest_file[2895] = {
     0x1.6f9e4ap+5f, -0x1.f6955p+4f, 0x1.f21364p+4f, 0x1.69862ap+5f,
     -0x1.050488p+5f, 0x1.d05824p+4f, 0x1.6097aap+5f, -0x1.0d925cp+5f,
     0x1.ad5f5ap+4f, 0x1.56965ep+5f, -0x1.10fce2p+5f, 0x1.8eadaep+4f,
-    0x1.6e8e76p+5f, -0x1.bee42cp+4f, 0x1.fc7114p+4f, 0x1.69d74p+5f,
+    0x1.6e8e76p+5f, -0x1.bee42cp+4f, 0x1.fc7112p+4f, 0x1.69d74p+5f,
     -0x1.cf6974p+4f, 0x1.dd3e5ep+4f, 0x1.61c9acp+5f, -0x1.e4a852p+4f,
     0x1.bbf18cp+4f, 0x1.57af5ap+5f, -0x1.f7aabcp+4f, 0x1.999132p+4f,
     0x1.4e35fcp+5f, -0x1.01ba9p+5f, 0x1.810322p+4f, 0x1.6d49d4p+5f,
@@ -13488,7 +13488,7 @@ const float tfit_heart_rest_file[2895] = {
     0x1.691f4p+5f, -0x1.7bdb62p+4f, 0x1.f35ef4p+4f, 0x1.63e404p+5f,
     -0x1.856a8ep+4f, 0x1.d8e8fep+4f, 0x1.5aed54p+5f, -0x1.936488p+4f,
     0x1.bb16cp+4f, 0x1.50b26ep+5f, -0x1.a58acp+4f, 0x1.9c9a28p+4f,
-    0x1.46fa84p+5f, -0x1.12df0cp+5f, 0x1.697248p+5f, 0x1.6bfbc4p+5f,
+    0x1.46fa86p+5f, -0x1.12df0cp+5f, 0x1.697248p+5f, 0x1.6bfbc4p+5f,
     -0x1.72e672p+4f, 0x1.13b0ccp+5f, 0x1.329becp+5f, -0x1.3cde1ep+5f,
     0x1.30aff4p+5f, 0x1.331722p+5f, -0x1.3f91b6p+5f, 0x1.273aep+5f,
     0x1.2f5a8cp+5f, -0x1.2daab8p+5f, 0x1.2183cep+5f, 0x1.27f88p+5f,

@@ -9,18 +9,18 @@
  *   tfit_liver_forward: nodal p=1, 240 output points, force [N] -> displacement [mm]
  *       2174 add, 2193 mul, 0 div per evaluation; 12532 table bytes
  *       4756 instructions; Cortex-M4F <= 8470 cycles (50.42 us at 168 MHz), Cortex-M7 ~6588 (13.72 us at 480 MHz)
- *       Q31 form tfit_liver_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 1.22e-07 mm (float32 path: 7.85e-07)
- *       held-out error over 50 cases: max 5.5e-07 mm, rms 6.89e-08 mm
- *       error against the physics: fit 5.5e-07 + discretisation 0.161 = total <= 0.161 mm
+ *       Q31 form tfit_liver_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 1.21e-07 mm (float32 path: 8.46e-07)
+ *       held-out error over 50 cases: max 5.78e-07 mm, rms 6.78e-08 mm
+ *       error against the physics: fit 5.78e-07 + discretisation 0.161 = total <= 0.161 mm
  *         (discretisation: tests/calculix/data/liver_physics.csv, 3 load cases at 240 points, bound over the envelope (linear))
  *   tfit_liver_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
- *       Q31 form tfit_liver_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 1.22e-08 N (float32 path: 4.12e-08)
- *       held-out error over 50 cases: max 2.98e-08 N, rms 1.01e-08 N
- *       error against the physics: fit 2.98e-08 + discretisation 0.00508 = total <= 0.00508 N
- *         (discretisation: tests/calculix/data/liver_physics.csv: contact-site displacement off by 1.69 % (reference point 2.34e-09 mm from the site), times the largest force 0.3 N)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0481 N/mm; largest stiffness 0.125 N/mm (the device must render it)
+ *       Q31 form tfit_liver_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 1.15e-08 N (float32 path: 3.53e-08)
+ *       held-out error over 50 cases: max 2.98e-08 N, rms 7.87e-09 N
+ *       error against the physics: fit 2.98e-08 + discretisation 0.0051 = total <= 0.0051 N
+ *         (discretisation: tests/calculix/data/liver_physics.csv: contact-site displacement off by 1.7 % (reference point 4.35e-07 mm from the site), times the largest force 0.3 N)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.048 N/mm; largest stiffness 0.125 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
  * tfit_liver_forward + tfit_liver_contact take at most 8683 (5.17 % of it).
@@ -40,7 +40,7 @@
 #endif
 
 /* CRC-32 of liver_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_LIVER_GOLDEN_CRC32 0x53600643u
+#define TFIT_LIVER_GOLDEN_CRC32 0xb977e6d7u
 
 /* tfit_liver_forward */
 #define TFIT_LIVER_FORWARD_FAMILY "nodal"
@@ -64,17 +64,17 @@
 #define TFIT_LIVER_FORWARD_US_M7_480MHZ 13.72
 #define TFIT_LIVER_FORWARD_Q31_IN_EXP 0 /* input word x = value * 2^(31 - 0), N */
 #define TFIT_LIVER_FORWARD_Q31_OUT_EXP 7 /* output value = word * 2^(7 - 31), mm */
-#define TFIT_LIVER_FORWARD_Q31_ADDED_ERROR_MM 1.22205e-07 /* max |Q31 - exact| at 2000 envelope points; float32: 7.85435e-07 */
-#define TFIT_LIVER_FORWARD_Q31_CRC32 0x3db7a427u
-#define tfit_liver_forward_q31 tfit_liver_forward_q31_3db7a427 /* this header's version of the model */
+#define TFIT_LIVER_FORWARD_Q31_ADDED_ERROR_MM 1.21474e-07 /* max |Q31 - exact| at 2000 envelope points; float32: 8.45734e-07 */
+#define TFIT_LIVER_FORWARD_Q31_CRC32 0x0d2a53e4u
+#define tfit_liver_forward_q31 tfit_liver_forward_q31_0d2a53e4 /* this header's version of the model */
 extern const tfit_model_q31 tfit_liver_forward_q31;
 #define TFIT_LIVER_FORWARD_HELDOUT_CASES 50
-#define TFIT_LIVER_FORWARD_HELDOUT_MAX_MM 5.49817e-07
-#define TFIT_LIVER_FORWARD_HELDOUT_RMS_MM 6.89348e-08
-#define TFIT_LIVER_FORWARD_DISCRETISATION_MAX_MM 0.161087 /* the solve against the physics */
-#define TFIT_LIVER_FORWARD_TOTAL_MAX_MM 0.161087 /* held-out fit + discretisation */
-#define TFIT_LIVER_FORWARD_CRC32 0x7f46811cu
-#define tfit_liver_forward tfit_liver_forward_7f46811c /* this header's version of the model */
+#define TFIT_LIVER_FORWARD_HELDOUT_MAX_MM 5.78491e-07
+#define TFIT_LIVER_FORWARD_HELDOUT_RMS_MM 6.78146e-08
+#define TFIT_LIVER_FORWARD_DISCRETISATION_MAX_MM 0.161401 /* the solve against the physics */
+#define TFIT_LIVER_FORWARD_TOTAL_MAX_MM 0.161401 /* held-out fit + discretisation */
+#define TFIT_LIVER_FORWARD_CRC32 0x550add9cu
+#define tfit_liver_forward tfit_liver_forward_550add9c /* this header's version of the model */
 extern const tfit_model tfit_liver_forward;
 
 /* tfit_liver_contact */
@@ -84,7 +84,7 @@ extern const tfit_model tfit_liver_forward;
 #define TFIT_LIVER_CONTACT_N_OUT 1u
 #define TFIT_LIVER_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_LIVER_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_LIVER_CONTACT_ENVELOPE_CENTER {-2.84494643e-17, 1.31838983e-17, -8.04911719e-17}
+#define TFIT_LIVER_CONTACT_ENVELOPE_CENTER {3.08433839e-16, 3.33066921e-17, 3.05311338e-17}
 #define TFIT_LIVER_CONTACT_OPS_ADD 23
 #define TFIT_LIVER_CONTACT_OPS_MUL 42
 #define TFIT_LIVER_CONTACT_OPS_DIV 0
@@ -98,20 +98,20 @@ extern const tfit_model tfit_liver_forward;
 #define TFIT_LIVER_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_LIVER_CONTACT_Q31_IN_EXP 4 /* input word x = value * 2^(31 - 4), mm */
 #define TFIT_LIVER_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
-#define TFIT_LIVER_CONTACT_Q31_ADDED_ERROR_N 1.22173e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.1193e-08 */
-#define TFIT_LIVER_CONTACT_Q31_CRC32 0xaead47cdu
-#define tfit_liver_contact_q31 tfit_liver_contact_q31_aead47cd /* this header's version of the model */
+#define TFIT_LIVER_CONTACT_Q31_ADDED_ERROR_N 1.15148e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 3.5296e-08 */
+#define TFIT_LIVER_CONTACT_Q31_CRC32 0x48388ae4u
+#define tfit_liver_contact_q31 tfit_liver_contact_q31_48388ae4 /* this header's version of the model */
 extern const tfit_model_q31 tfit_liver_contact_q31;
 #define TFIT_LIVER_CONTACT_HELDOUT_CASES 50
 #define TFIT_LIVER_CONTACT_HELDOUT_MAX_N 2.98023e-08
-#define TFIT_LIVER_CONTACT_HELDOUT_RMS_N 1.01174e-08
-#define TFIT_LIVER_CONTACT_HELDOUT_REL_MAX 1.32185e-07
-#define TFIT_LIVER_CONTACT_DISCRETISATION_MAX_N 0.00508388 /* the solve against the physics */
-#define TFIT_LIVER_CONTACT_TOTAL_MAX_N 0.00508391 /* held-out fit + discretisation */
-#define TFIT_LIVER_CONTACT_STIFFNESS_MIN_N_PER_MM 0.048051 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_LIVER_CONTACT_STIFFNESS_MAX_N_PER_MM 0.124629 /* largest ||df/ddelta||_2 */
-#define TFIT_LIVER_CONTACT_CRC32 0x7330bee2u
-#define tfit_liver_contact tfit_liver_contact_7330bee2 /* this header's version of the model */
+#define TFIT_LIVER_CONTACT_HELDOUT_RMS_N 7.87344e-09
+#define TFIT_LIVER_CONTACT_HELDOUT_REL_MAX 1.18183e-07
+#define TFIT_LIVER_CONTACT_DISCRETISATION_MAX_N 0.00510243 /* the solve against the physics */
+#define TFIT_LIVER_CONTACT_TOTAL_MAX_N 0.00510245 /* held-out fit + discretisation */
+#define TFIT_LIVER_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0480463 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_LIVER_CONTACT_STIFFNESS_MAX_N_PER_MM 0.124625 /* largest ||df/ddelta||_2 */
+#define TFIT_LIVER_CONTACT_CRC32 0xee5efdc3u
+#define tfit_liver_contact tfit_liver_contact_ee5efdc3 /* this header's version of the model */
 extern const tfit_model tfit_liver_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_liver_forward is
@@ -176,1445 +176,1445 @@ static const float tfit_liver_forward_coef[2892] = {
     0x1.aaaaaap+1f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1.aaaaaap+1f,
     /* node 1 x */
-    0x1.7b3334p-53f, 0x1.db7f8cp+1f, -0x1.2ba406p-3f, -0x1.8b823ap-2f,
+    0x1.55999ap-53f, 0x1.dba912p+1f, -0x1.2ad4ecp-3f, -0x1.8b6aap-2f,
     /* node 1 y */
-    -0x1.99999ap-56f, 0x1.7f5adap-1f, 0x1.093bf6p+0f, -0x1.132eap+0f,
+    -0x1.e66666p-57f, 0x1.7f8f7ap-1f, 0x1.094b5ap+0f, -0x1.13380ap+0f,
     /* node 1 z */
-    0x1.99999ap-60f, -0x1.726a9ep-1f, -0x1.d506c4p-1f, 0x1.429de4p+1f,
+    -0x1.333334p-55f, -0x1.726344p-1f, -0x1.d52ba4p-1f, 0x1.42b65cp+1f,
     /* node 2 x */
-    0x1.19999ap-56f, 0x1.be0c1cp+1f, -0x1.5a4e2cp-4f, -0x1.903cb8p-2f,
+    0x1.166666p-55f, 0x1.be341p+1f, -0x1.58a8f6p-4f, -0x1.9030b6p-2f,
     /* node 2 y */
-    0x1.2cccccp-55f, 0x1.dbd026p-1f, 0x1.d07b68p-1f, -0x1.16437ep+0f,
+    0x1.e66666p-57f, 0x1.dc0aap-1f, 0x1.d0a352p-1f, -0x1.16497p+0f,
     /* node 2 z */
-    0x1.333334p-56f, -0x1.45854ap-1f, -0x1.b41ddp-1f, 0x1.1b4124p+1f,
+    0x1p-56f, -0x1.457cbap-1f, -0x1.b43fbap-1f, 0x1.1b5f14p+1f,
     /* node 3 x */
-    0x1.74p-54f, 0x1.8ecea4p+1f, -0x1.517974p-4f, -0x1.23a3fp-3f,
+    0x1.b4p-55f, 0x1.8ef61ap+1f, -0x1.4fde3ep-4f, -0x1.23b1acp-3f,
     /* node 3 y */
-    0x1.333334p-59f, 0x1.6cc872p-1f, 0x1.8da4e4p-1f, -0x1.b769b2p-1f,
+    0x1.a66666p-56f, 0x1.6d03e4p-1f, 0x1.8dcc2ap-1f, -0x1.b778d6p-1f,
     /* node 3 z */
-    0x1.99999ap-59f, -0x1.c5fb36p-2f, -0x1.b57108p-1f, 0x1.14f7fep+1f,
+    -0x1.99999ap-57f, -0x1.c5ecf4p-2f, -0x1.b593fep-1f, 0x1.151458p+1f,
     /* node 4 x */
-    -0x1.78p-54f, 0x1.d5bda2p+1f, -0x1.52261ep-3f, -0x1.65dacp-3f,
+    0x1.873334p-54f, 0x1.d5e5bcp+1f, -0x1.514076p-3f, -0x1.65c338p-3f,
     /* node 4 y */
-    -0x0p+0f, 0x1.f6e4a2p-2f, 0x1.12e0bep+0f, -0x1.de69a4p-1f,
+    -0x1.f33334p-56f, 0x1.f763c8p-2f, 0x1.12f0f4p+0f, -0x1.de7d2p-1f,
     /* node 4 z */
-    -0x0p+0f, -0x1.1e876ep-1f, -0x1.f349e6p-1f, 0x1.595492p+1f,
+    -0x1.39999ap-54f, -0x1.1e707cp-1f, -0x1.f36b3ep-1f, 0x1.596e6cp+1f,
     /* node 25 x */
-    0x1.7cccccp-55f, 0x1.0fbdbep+1f, 0x1.1e1a3cp-2f, -0x1.38acdap-1f,
+    0x1.666666p-59f, 0x1.0fdcc6p+1f, 0x1.1e63d8p-2f, -0x1.388dc2p-1f,
     /* node 25 y */
-    -0x1.19999ap-56f, 0x1.785ad8p-1f, 0x1.44dc46p+0f, -0x1.992ed2p+0f,
+    -0x1.8p-56f, 0x1.787b26p-1f, 0x1.44cc88p+0f, -0x1.99213ap+0f,
     /* node 25 z */
-    0x1.99999ap-59f, -0x1.251e56p-2f, -0x1.8540c8p-1f, 0x1.8c02f2p+0f,
+    -0x0p+0f, -0x1.250ecap-2f, -0x1.8544fep-1f, 0x1.8c3158p+0f,
     /* node 26 x */
-    -0x1.79999ap-56f, 0x1.f8afa4p+0f, 0x1.ca4004p-3f, -0x1.121b06p-1f,
+    0x1.a33334p-55f, 0x1.f8eca8p+0f, 0x1.ca4daap-3f, -0x1.11e46p-1f,
     /* node 26 y */
-    -0x1.19999ap-56f, 0x1.5b6a46p-1f, 0x1.365e94p+0f, -0x1.8c148ep+0f,
+    0x1.99999ap-60f, 0x1.5b9dc6p-1f, 0x1.36668ep+0f, -0x1.8c1db4p+0f,
     /* node 26 z */
-    0x1.333334p-57f, -0x1.17f08cp-2f, -0x1.7ef40cp-1f, 0x1.7c8ef2p+0f,
+    -0x1.ccccccp-57f, -0x1.17e002p-2f, -0x1.7efcf8p-1f, 0x1.7cc31ep+0f,
     /* node 27 x */
-    -0x1.6p-56f, 0x1.02151cp+1f, 0x1.142096p-2f, -0x1.1ee86ep-1f,
+    -0x1.19999ap-57f, 0x1.024562p+1f, 0x1.145a92p-2f, -0x1.1eb8f4p-1f,
     /* node 27 y */
-    0x1p-55f, 0x1.71b042p-1f, 0x1.364c2ap+0f, -0x1.83c092p+0f,
+    0x1.333334p-56f, 0x1.71a3e8p-1f, 0x1.36593cp+0f, -0x1.83c72p+0f,
     /* node 27 z */
-    -0x1.b33334p-57f, -0x1.f918bep-3f, -0x1.6bd688p-1f, 0x1.6d5d22p+0f,
+    -0x1.733334p-56f, -0x1.f93bp-3f, -0x1.6c10bap-1f, 0x1.6daa36p+0f,
     /* node 28 x */
-    0x1.61999ap-54f, 0x1.15a772p+1f, 0x1.489612p-2f, -0x1.49f44ep-1f,
+    0x1.4p-56f, 0x1.15ceb4p+1f, 0x1.48e958p-2f, -0x1.49dbd2p-1f,
     /* node 28 y */
-    -0x1.99999ap-60f, 0x1.98e4a8p-1f, 0x1.47b9bcp+0f, -0x1.98edaap+0f,
+    0x1.b33334p-56f, 0x1.991492p-1f, 0x1.47d146p+0f, -0x1.99059ep+0f,
     /* node 28 z */
-    -0x1.4p-56f, -0x1.15c07ap-2f, -0x1.78f54ap-1f, 0x1.80db9p+0f,
+    0x1.19999ap-56f, -0x1.15b8aep-2f, -0x1.790df4p-1f, 0x1.81108ep+0f,
     /* node 102 x */
-    0x1.03999ap-53f, 0x1.11c0d6p+1f, -0x1.c85fccp-4f, -0x1.7fe55cp-2f,
+    0x1.0a6666p-53f, 0x1.11eacp+1f, -0x1.c8be34p-4f, -0x1.7f828ep-2f,
     /* node 102 y */
-    -0x1.066666p-55f, -0x1.a4c5ecp-1f, 0x1.8e7702p-1f, -0x1.21665ep-1f,
+    -0x1.2e6666p-54f, -0x1.a503p-1f, 0x1.8ea998p-1f, -0x1.219f9ep-1f,
     /* node 102 z */
-    -0x1p-58f, -0x1.aae776p-3f, -0x1.4cc6c2p-1f, 0x1.5226d8p+0f,
+    -0x1.d9999ap-56f, -0x1.ab592ap-3f, -0x1.4cd2dep-1f, 0x1.5259b4p+0f,
     /* node 148 x */
-    -0x1.cp-55f, 0x1.528ddp+1f, 0x1.170b36p-1f, -0x1.0e4d7p+0f,
+    -0x1.033334p-54f, 0x1.52b2a8p+1f, 0x1.170b7cp-1f, -0x1.0e2a92p+0f,
     /* node 148 y */
-    -0x1.99999ap-59f, 0x1.86dbeap+0f, 0x1.624c36p+0f, -0x1.0da0eep+1f,
+    -0x1.99999ap-59f, 0x1.86f1a4p+0f, 0x1.625bap+0f, -0x1.0d9de2p+1f,
     /* node 148 z */
-    0x1p-58f, -0x1.8a82dep-3f, -0x1.38d21cp-1f, 0x1.67cdaap+0f,
+    0x1p-58f, -0x1.8a5a94p-3f, -0x1.38ef12p-1f, 0x1.680fp+0f,
     /* node 177 x */
-    0x1.6cccccp-56f, 0x1.267f44p+1f, 0x1.8e417p-2f, -0x1.81976ap-1f,
+    -0x1.f9999ap-56f, 0x1.26a14p+1f, 0x1.8e45f2p-2f, -0x1.814c4ap-1f,
     /* node 177 y */
-    0x1.b33334p-55f, 0x1.eb536ap-1f, 0x1.55998ap+0f, -0x1.bb29ecp+0f,
+    -0x0p+0f, 0x1.eb898ap-1f, 0x1.55aa0ep+0f, -0x1.bb2ba6p+0f,
     /* node 177 z */
-    0x1.266666p-56f, -0x1.12ce9p-2f, -0x1.720542p-1f, 0x1.8529f2p+0f,
+    0x1.cp-56f, -0x1.12e898p-2f, -0x1.7241bep-1f, 0x1.8567f8p+0f,
     /* node 178 x */
-    0x1.466666p-56f, 0x1.0e58a2p+1f, 0x1.57264ap-2f, -0x1.4561bap-1f,
+    0x1.50ccccp-53f, 0x1.0e8fecp+1f, 0x1.57cbc4p-2f, -0x1.45635ap-1f,
     /* node 178 y */
-    -0x1.ccccccp-57f, 0x1.b2689ap-1f, 0x1.416fp+0f, -0x1.963286p+0f,
+    -0x1.666666p-57f, 0x1.b28bbap-1f, 0x1.41861p+0f, -0x1.96498ep+0f,
     /* node 178 z */
-    0x1.99999ap-61f, -0x1.dbfbaap-3f, -0x1.608486p-1f, 0x1.68bd6p+0f,
+    -0x1.333334p-59f, -0x1.dbd48p-3f, -0x1.6098ccp-1f, 0x1.68f5dp+0f,
     /* node 179 x */
-    0x1.5cccccp-55f, 0x1.1bc814p+1f, 0x1.ab738ap-2f, -0x1.773b7p-1f,
+    0x1.99999ap-61f, 0x1.1bf05ep+1f, 0x1.abb3ap-2f, -0x1.770dd6p-1f,
     /* node 179 y */
-    0x1.666666p-57f, 0x1.0f79ep+0f, 0x1.49ae3cp+0f, -0x1.b55bf2p+0f,
+    0x1.8p-56f, 0x1.0f9a04p+0f, 0x1.49d6ecp+0f, -0x1.b56f82p+0f,
     /* node 179 z */
-    0x1.99999ap-58f, -0x1.77540ap-3f, -0x1.435e94p-1f, 0x1.548ce4p+0f,
+    0x1.99999ap-59f, -0x1.776048p-3f, -0x1.4394f2p-1f, 0x1.54d618p+0f,
     /* node 180 x */
-    0x1.6cccccp-54f, 0x1.3cb9a6p+1f, 0x1.ea0232p-2f, -0x1.d2f794p-1f,
+    0x1.333334p-55f, 0x1.3ce38ap+1f, 0x1.ea3a1cp-2f, -0x1.d2cd8cp-1f,
     /* node 180 y */
-    0x1.19999ap-56f, 0x1.36a1ecp+0f, 0x1.620e64p+0f, -0x1.f1ef4ap+0f,
+    0x1.ccccccp-57f, 0x1.36c26p+0f, 0x1.6233dp+0f, -0x1.f20a3ap+0f,
     /* node 180 z */
-    0x1.99999ap-59f, -0x1.f2f9dap-3f, -0x1.5cdd42p-1f, 0x1.7fdfd2p+0f,
+    -0x1.99999ap-57f, -0x1.f2a2cep-3f, -0x1.5cf62cp-1f, 0x1.8022b2p+0f,
     /* node 186 x */
-    0x1.39e666p-54f, 0x1.7dc588p+1f, -0x1.2598e8p-4f, -0x1.aa2718p-6f,
+    0x1.398p-54f, 0x1.7ded86p+1f, -0x1.23dfp-4f, -0x1.a8b2eep-6f,
     /* node 186 y */
-    -0x1.ccccccp-58f, 0x1.e53f08p-2f, 0x1.92e718p-1f, -0x1.76b27ep-1f,
+    0x1p-56f, 0x1.e5c4acp-2f, 0x1.930c5cp-1f, -0x1.76ccdep-1f,
     /* node 186 z */
-    -0x1.19999ap-56f, -0x1.9cdc98p-2f, -0x1.cb6318p-1f, 0x1.33ac5ap+1f,
+    -0x1.333334p-58f, -0x1.9cc3b6p-2f, -0x1.cb87ep-1f, 0x1.33c2f8p+1f,
     /* node 239 x */
-    0x1.ccccccp-56f, 0x1.47d864p+1f, 0x1.0d3c3p-1f, -0x1.fdbb96p-1f,
+    0x1.5cccccp-54f, 0x1.47fc64p+1f, 0x1.0d35a6p-1f, -0x1.fd708ep-1f,
     /* node 239 y */
-    -0x1.333334p-58f, 0x1.6721e2p+0f, 0x1.648ac2p+0f, -0x1.069b54p+1f,
+    0x1.0cccccp-55f, 0x1.673708p+0f, 0x1.6498f8p+0f, -0x1.06981ap+1f,
     /* node 239 z */
-    -0x1.666666p-57f, -0x1.a7de9p-3f, -0x1.459e18p-1f, 0x1.6eac08p+0f,
+    0x1.ccccccp-58f, -0x1.a7bb4ep-3f, -0x1.45b902p-1f, 0x1.6eeb9ap+0f,
     /* node 240 x */
-    0x1.39999ap-55f, 0x1.5dbc8p+1f, 0x1.120644p-1f, -0x1.1fd6fcp+0f,
+    -0x1.566666p-54f, 0x1.5ddfcap+1f, 0x1.120b6ap-1f, -0x1.1fb648p+0f,
     /* node 240 y */
-    -0x1p-55f, 0x1.69ccb8p+0f, 0x1.74323ep+0f, -0x1.1a5186p+1f,
+    0x1.ccccccp-57f, 0x1.69e06p+0f, 0x1.743decp+0f, -0x1.1a4dcp+1f,
     /* node 240 z */
-    -0x1.ccccccp-57f, -0x1.37dc6cp-2f, -0x1.6cf05cp-1f, 0x1.a6d272p+0f,
+    -0x1.99999ap-57f, -0x1.3786f4p-2f, -0x1.6cdfcp-1f, 0x1.a6fe4ep+0f,
     /* node 241 x */
-    0x1.e66666p-56f, 0x1.4fa2e8p+1f, 0x1.f1ca88p-2f, -0x1.045718p+0f,
+    0x1.ecccccp-54f, 0x1.4fc2eep+1f, 0x1.f1d24ep-2f, -0x1.0435d6p+0f,
     /* node 241 y */
-    -0x1p-55f, 0x1.39613p+0f, 0x1.72fab6p+0f, -0x1.0bb1e4p+1f,
+    -0x1.333334p-58f, 0x1.397d92p+0f, 0x1.72f976p+0f, -0x1.0baa9ap+1f,
     /* node 241 z */
-    -0x1.99999ap-59f, -0x1.4bd10ap-2f, -0x1.81f3dap-1f, 0x1.b45fcep+0f,
+    -0x1.99999ap-57f, -0x1.4bb4b8p-2f, -0x1.81fbd4p-1f, 0x1.b48aa4p+0f,
     /* node 397 x */
-    -0x1.49999ap-53f, 0x1.fd046cp+1f, 0x1.12dbaap-2f, -0x1.7f4ba2p+0f,
+    -0x1.19999ap-54f, 0x1.fd275ep+1f, 0x1.132c1cp-2f, -0x1.7f278ap+0f,
     /* node 397 y */
-    0x1.99999ap-55f, 0x1.f4a56ep+0f, 0x1.33b02ap+0f, -0x1.0ea336p+1f,
+    0x1p-57f, 0x1.f4a336p+0f, 0x1.33bf08p+0f, -0x1.0e9524p+1f,
     /* node 397 z */
-    -0x1.e66666p-55f, -0x1.875728p-1f, -0x1.79327p-1f, 0x1.1322aep+1f,
+    0x1.b33334p-56f, -0x1.872b3ep-1f, -0x1.794a3cp-1f, 0x1.133a04p+1f,
     /* node 398 x */
-    0x1.a66666p-55f, 0x1.0886dcp+2f, 0x1.b7595p-3f, -0x1.8f9114p+0f,
+    0x1.533334p-54f, 0x1.08970ap+2f, 0x1.b800d8p-3f, -0x1.8f6ea6p+0f,
     /* node 398 y */
-    -0x1.99999ap-56f, 0x1.e8b598p+0f, 0x1.3c46fp+0f, -0x1.132a4cp+1f,
+    0x1.666666p-56f, 0x1.e8cbeep+0f, 0x1.3c5abp+0f, -0x1.1327ccp+1f,
     /* node 398 z */
-    -0x1.99999ap-59f, -0x1.e9c09p-1f, -0x1.908246p-1f, 0x1.359106p+1f,
+    -0x1.333334p-55f, -0x1.e9bb1ap-1f, -0x1.90a672p-1f, 0x1.35ad58p+1f,
     /* node 399 x */
-    0x1.59999ap-55f, 0x1.03ecdcp+2f, 0x1.2c27fap-2f, -0x1.abb344p+0f,
+    0x1.433334p-53f, 0x1.0408f4p+2f, 0x1.2c948cp-2f, -0x1.aba4f2p+0f,
     /* node 399 y */
-    -0x1.266666p-55f, 0x1.f386dep+0f, 0x1.496988p+0f, -0x1.24b874p+1f,
+    0x1.c66666p-54f, 0x1.f3c0f8p+0f, 0x1.498144p+0f, -0x1.24be9cp+1f,
     /* node 399 z */
-    0x1.ccccccp-56f, -0x1.d0b9ap-1f, -0x1.8fa92ap-1f, 0x1.3434aap+1f,
+    -0x1.b33334p-56f, -0x1.d0c09ap-1f, -0x1.8fd07p-1f, 0x1.34567p+1f,
     /* node 400 x */
-    -0x1.e66666p-54f, 0x1.ebe082p+1f, 0x1.66581p-2f, -0x1.8bf79ep+0f,
+    -0x1.4cccccp-54f, 0x1.ec0c6ap+1f, 0x1.669586p-2f, -0x1.8be276p+0f,
     /* node 400 y */
-    0x1.6p-54f, 0x1.f7192ap+0f, 0x1.421a8cp+0f, -0x1.1c5e06p+1f,
+    0x1.99999ap-60f, 0x1.f743bcp+0f, 0x1.42356p+0f, -0x1.1c60aap+1f,
     /* node 400 z */
-    -0x0p+0f, -0x1.63530ap-1f, -0x1.75b99cp-1f, 0x1.0da9c4p+1f,
+    0x1.0cccccp-55f, -0x1.636766p-1f, -0x1.75e1dcp-1f, 0x1.0dccdep+1f,
     /* node 413 x */
-    0x1.1b3334p-54f, 0x1.028162p+2f, -0x1.0cfc36p-3f, -0x1.64c0e8p-1f,
+    0x1p-57f, 0x1.0294b4p+2f, -0x1.0c1b5p-3f, -0x1.64ad9ap-1f,
     /* node 413 y */
-    -0x1.ccccccp-58f, 0x1.c82c5cp-1f, 0x1.327d3ap+0f, -0x1.486402p+0f,
+    0x1.4p-56f, 0x1.c86698p-1f, 0x1.328fcp+0f, -0x1.4866f2p+0f,
     /* node 413 z */
-    -0x1p-55f, -0x1.ea654p-1f, -0x1.ce0efcp-1f, 0x1.5bea5ep+1f,
+    -0x1.333334p-56f, -0x1.ea56p-1f, -0x1.ce2dccp-1f, 0x1.5c02f2p+1f,
     /* node 414 x */
-    0x1.60ccccp-53f, 0x1.ed209cp+1f, -0x1.1361f2p-4f, -0x1.717b8ep-1f,
+    0x1.0cccccp-54f, 0x1.ed4a5cp+1f, -0x1.11e62cp-4f, -0x1.71689ap-1f,
     /* node 414 y */
-    -0x1.066666p-55f, 0x1.1f2a28p+0f, 0x1.0fc58ap+0f, -0x1.5accbap+0f,
+    0x1.133334p-55f, 0x1.1f4632p+0f, 0x1.0fd756p+0f, -0x1.5ad098p+0f,
     /* node 414 z */
-    -0x1.e66666p-56f, -0x1.c967fp-1f, -0x1.b391fcp-1f, 0x1.35f21p+1f,
+    -0x1.4cccccp-56f, -0x1.c9541ep-1f, -0x1.b3b1cp-1f, 0x1.360d64p+1f,
     /* node 415 x */
-    0x1.a66666p-54f, 0x1.ab9952p+1f, -0x1.868bbcp-6f, -0x1.c805bp-2f,
+    0x1.69999ap-55f, 0x1.abc32ep+1f, -0x1.806b7ep-6f, -0x1.c801f2p-2f,
     /* node 415 y */
-    -0x1.99999ap-56f, 0x1.1e5eecp+0f, 0x1.ad6ce6p-1f, -0x1.20365cp+0f,
+    0x1.cp-56f, 0x1.1e791ep+0f, 0x1.ad931cp-1f, -0x1.203d2ep+0f,
     /* node 415 z */
-    -0x1.cp-55f, -0x1.03ab76p-1f, -0x1.8bcf1ep-1f, 0x1.f26142p+0f,
+    0x1.19999ap-56f, -0x1.03a0eap-1f, -0x1.8bf662p-1f, 0x1.f29d3cp+0f,
     /* node 456 x */
-    0x1.e66666p-54f, 0x1.0c3822p+2f, 0x1.d86eb8p-3f, -0x1.adfdaap+0f,
+    -0x1.99999ap-60f, 0x1.0c4f36p+2f, 0x1.d9365cp-3f, -0x1.ade36cp+0f,
     /* node 456 y */
-    -0x1.cp-55f, 0x1.dd6b16p+0f, 0x1.4f29fp+0f, -0x1.22966p+1f,
+    -0x1.333334p-54f, 0x1.dd9212p+0f, 0x1.4f3fb8p+0f, -0x1.2294fcp+1f,
     /* node 456 z */
-    -0x1.d9999ap-55f, -0x1.152a8ep+0f, -0x1.a2fed6p-1f, 0x1.5642fep+1f,
+    0x1.99999ap-59f, -0x1.151fb4p+0f, -0x1.a31f7ep-1f, 0x1.565a32p+1f,
     /* node 457 x */
-    0x1.99999ap-53f, 0x1.095332p+2f, 0x1.343ed2p-2f, -0x1.cd9db2p+0f,
+    -0x1.59999ap-55f, 0x1.096a24p+2f, 0x1.349a46p-2f, -0x1.cd8016p+0f,
     /* node 457 y */
-    0x1.533334p-54f, 0x1.e8ad66p+0f, 0x1.5b15b8p+0f, -0x1.3682ap+1f,
+    -0x1.99999ap-55f, 0x1.e8c2bap+0f, 0x1.5b23dcp+0f, -0x1.367acp+1f,
     /* node 457 z */
-    0x1.8p-56f, -0x1.0d38e6p+0f, -0x1.a76848p-1f, 0x1.5a9a96p+1f,
+    -0x1.133334p-54f, -0x1.0d3012p+0f, -0x1.a78a9ep-1f, 0x1.5ab678p+1f,
     /* node 480 x */
-    0x1.c66666p-53f, 0x1.e26182p+1f, 0x1.baed98p-2f, -0x1.c1ae76p+0f,
+    0x1.4p-54f, 0x1.e28be6p+1f, 0x1.bb4f1cp-2f, -0x1.c19144p+0f,
     /* node 480 y */
-    -0x1.ccccccp-56f, 0x1.f3e98p-1f, 0x1.91734p+0f, -0x1.3f1018p+1f,
+    -0x0p+0f, 0x1.f40c6ap-1f, 0x1.917b0ep+0f, -0x1.3f109p+1f,
     /* node 480 z */
-    -0x1.ccccccp-54f, -0x1.cd792cp-1f, -0x1.119966p+0f, 0x1.cd8f6ap+1f,
+    -0x1.d9999ap-54f, -0x1.cd66d4p-1f, -0x1.11a982p+0f, 0x1.cda2f2p+1f,
     /* node 481 x */
-    0x1.133334p-54f, 0x1.c46698p+1f, 0x1.c85afap-2f, -0x1.ab2c52p+0f,
+    0x1.0cccccp-53f, 0x1.c48f7ep+1f, 0x1.c8a17cp-2f, -0x1.ab0212p+0f,
     /* node 481 y */
-    -0x1.99999ap-58f, 0x1.d7fb1p-1f, 0x1.9264p+0f, -0x1.483f76p+1f,
+    -0x1p-57f, 0x1.d8245p-1f, 0x1.926c3p+0f, -0x1.4841bcp+1f,
     /* node 481 z */
-    -0x1.333334p-56f, -0x1.836f28p-1f, -0x1.12eb3p+0f, 0x1.aea5cp+1f,
+    0x1p-56f, -0x1.83618p-1f, -0x1.12fc92p+0f, 0x1.aebb1cp+1f,
     /* node 482 x */
-    -0x1.ap-54f, 0x1.d824bep+1f, 0x1.d5580cp-2f, -0x1.d84308p+0f,
+    0x1.89999ap-53f, 0x1.d84dfap+1f, 0x1.d5a15cp-2f, -0x1.d814b2p+0f,
     /* node 482 y */
-    0x1.266666p-55f, 0x1.2aee5ap+0f, 0x1.973d34p+0f, -0x1.5d6264p+1f,
+    0x1.333334p-54f, 0x1.2aff42p+0f, 0x1.97417p+0f, -0x1.5d5bc8p+1f,
     /* node 482 z */
-    -0x1.19999ap-55f, -0x1.c50052p-1f, -0x1.0d39c2p+0f, 0x1.b4c184p+1f,
+    -0x1.333334p-57f, -0x1.c4ee2p-1f, -0x1.0d4878p+0f, 0x1.b4d096p+1f,
     /* node 483 x */
-    -0x1p-55f, 0x1.ecb92ap+1f, 0x1.c2854ap-2f, -0x1.e4cd3p+0f,
+    0x1.4cccccp-53f, 0x1.ece11ep+1f, 0x1.c2db04p-2f, -0x1.e499fap+0f,
     /* node 483 y */
-    0x1.666666p-55f, 0x1.4385bcp+0f, 0x1.932e12p+0f, -0x1.57e8ecp+1f,
+    0x1.19999ap-56f, 0x1.439934p+0f, 0x1.933612p+0f, -0x1.57e4a2p+1f,
     /* node 483 z */
-    -0x1.99999ap-56f, -0x1.ffbceap-1f, -0x1.0811b4p+0f, 0x1.c08944p+1f,
+    0x1.99999ap-58f, -0x1.ffa6e6p-1f, -0x1.08210ep+0f, 0x1.c09372p+1f,
     /* node 519 x */
-    -0x1.34ccccp-55f, 0x1.cc3c2cp+0f, 0x1.00de7cp-5f, -0x1.71ddbap-2f,
+    0x1.cp-57f, 0x1.cc994ep+0f, 0x1.04143p-5f, -0x1.720662p-2f,
     /* node 519 y */
-    -0x1p-58f, -0x1.8aed74p-3f, 0x1.a9ba26p-2f, -0x1.976404p-3f,
+    -0x1.ccccccp-58f, -0x1.89b39ep-3f, 0x1.a9dd12p-2f, -0x1.98e5dp-3f,
     /* node 519 z */
-    -0x1.19999ap-55f, -0x1.75052cp-1f, -0x1.3e32b8p-1f, 0x1.06971ap+1f,
+    0x1.99999ap-60f, -0x1.751572p-1f, -0x1.3e5686p-1f, 0x1.068fe8p+1f,
     /* node 520 x */
-    0x1.31999ap-55f, 0x1.bc198cp+0f, 0x1.09c5a8p-5f, -0x1.cf04acp-3f,
+    -0x1.f33334p-57f, 0x1.bc7d54p+0f, 0x1.0c0b18p-5f, -0x1.cfd36ep-3f,
     /* node 520 y */
-    0x1.8p-58f, -0x1.736f3ep-4f, 0x1.7fab78p-2f, -0x1.c085c2p-3f,
+    -0x1.ccccccp-58f, -0x1.6f885ap-4f, 0x1.7faeacp-2f, -0x1.c29886p-3f,
     /* node 520 z */
-    -0x1.19999ap-55f, -0x1.53f0dap-1f, -0x1.60d4dp-1f, 0x1.1219d6p+1f,
+    -0x1p-56f, -0x1.542fbep-1f, -0x1.6106a2p-1f, 0x1.121cacp+1f,
     /* node 521 x */
-    0x1.e9999ap-56f, 0x1.96fa16p+0f, 0x1.0ffd98p-5f, -0x1.29dfbep-2f,
+    -0x1.8p-59f, 0x1.9758f8p+0f, 0x1.12111p-5f, -0x1.29db32p-2f,
     /* node 521 y */
-    0x1.666666p-59f, -0x1.659bc2p-3f, 0x1.3d1516p-2f, -0x1.4415c8p-3f,
+    -0x1.ccccccp-60f, -0x1.650d08p-3f, 0x1.3d4b12p-2f, -0x1.443944p-3f,
     /* node 521 z */
-    -0x1.4cccccp-55f, -0x1.663adep-1f, -0x1.3689fp-1f, 0x1.ec0b5ep+0f,
+    -0x1p-57f, -0x1.664052p-1f, -0x1.36a71cp-1f, 0x1.ec2e34p+0f,
     /* node 522 x */
-    0x1.9e6666p-55f, 0x1.a64bb4p+0f, 0x1.aefff6p-6f, -0x1.7b9794p-2f,
+    0x1.533334p-54f, 0x1.a6ae7cp+0f, 0x1.b51dfep-6f, -0x1.7b394ep-2f,
     /* node 522 y */
-    -0x1.fp-57f, -0x1.ea69bap-3f, 0x1.5fdcbcp-2f, -0x1.3d055ap-3f,
+    -0x1.433334p-57f, -0x1.e9de1ep-3f, 0x1.6016e2p-2f, -0x1.3d5106p-3f,
     /* node 522 z */
-    0x1.333334p-58f, -0x1.754c48p-1f, -0x1.1f71d4p-1f, 0x1.da2e52p+0f,
+    -0x1.59999ap-55f, -0x1.75575cp-1f, -0x1.1f8d64p-1f, 0x1.da6234p+0f,
     /* node 579 x */
-    -0x1.266666p-55f, 0x1.d0607ep+1f, 0x1.d49d54p-2f, -0x1.a30c7ep+0f,
+    0x1.4p-54f, 0x1.d089b2p+1f, 0x1.d4e828p-2f, -0x1.a2f588p+0f,
     /* node 579 y */
-    -0x1p-55f, 0x1.cae6acp+0f, 0x1.69adccp+0f, -0x1.38f7b8p+1f,
+    -0x1.733334p-55f, 0x1.cafef4p+0f, 0x1.69c3e4p+0f, -0x1.38f534p+1f,
     /* node 579 z */
-    -0x1.8p-56f, -0x1.6e436ap-1f, -0x1.9cfa5cp-1f, 0x1.27df08p+1f,
+    -0x1.ccccccp-57f, -0x1.6e3924p-1f, -0x1.9d1ba8p-1f, 0x1.28032p+1f,
     /* node 580 x */
-    0x1.733334p-56f, 0x1.b4f88p+1f, 0x1.00c66p-1f, -0x1.7cfbdp+0f,
+    -0x1.99999ap-61f, 0x1.b521f4p+1f, 0x1.00e5a6p-1f, -0x1.7cddf4p+0f,
     /* node 580 y */
-    0x1.666666p-56f, 0x1.d51254p+0f, 0x1.63061p+0f, -0x1.2eddfap+1f,
+    0x1.6p-54f, 0x1.d5318ap+0f, 0x1.631764p+0f, -0x1.2edac2p+1f,
     /* node 580 z */
-    -0x1.4p-55f, -0x1.0dea66p-1f, -0x1.782f2ap-1f, 0x1.f7716p+0f,
+    -0x1.333334p-58f, -0x1.0ddc7cp-1f, -0x1.784ef2p-1f, 0x1.f7b09p+0f,
     /* node 581 x */
-    0x1.8p-53f, 0x1.ccbfep+1f, 0x1.cc84bap-2f, -0x1.8c4474p+0f,
+    -0x1.ccccccp-57f, 0x1.cce2d8p+1f, 0x1.ccb616p-2f, -0x1.8c1b8ap+0f,
     /* node 581 y */
-    -0x1.666666p-55f, 0x1.e00f36p+0f, 0x1.5a9748p+0f, -0x1.2bf4e4p+1f,
+    0x1.333334p-58f, 0x1.e02afap+0f, 0x1.5aab4ap+0f, -0x1.2befe8p+1f,
     /* node 581 z */
-    0x1p-55f, -0x1.3c034ep-1f, -0x1.801cbp-1f, 0x1.0ad60ap+1f,
+    0x1p-56f, -0x1.3beeacp-1f, -0x1.802dfp-1f, 0x1.0af192p+1f,
     /* node 582 x */
-    -0x1.d9999ap-54f, 0x1.ea9a44p+1f, 0x1.a1df02p-2f, -0x1.bd9e26p+0f,
+    0x1.033334p-53f, 0x1.eabff6p+1f, 0x1.a22a1cp-2f, -0x1.bd7be6p+0f,
     /* node 582 y */
-    0x1.0cccccp-55f, 0x1.da47fep+0f, 0x1.64feeap+0f, -0x1.3bcf9cp+1f,
+    -0x1p-56f, 0x1.da6a3p+0f, 0x1.650fe2p+0f, -0x1.3bce74p+1f,
     /* node 582 z */
-    -0x1.333334p-55f, -0x1.acd87ep-1f, -0x1.a1b128p-1f, 0x1.3c8f12p+1f,
+    -0x1.99999ap-57f, -0x1.accdbcp-1f, -0x1.a1d5a2p-1f, 0x1.3cab92p+1f,
     /* node 725 x */
-    0x1.ee6666p-54f, 0x1.2a55fcp+1f, 0x1.6386e6p-4f, -0x1.c99de8p-2f,
+    0x1.e33334p-54f, 0x1.2a7bf2p+1f, 0x1.64074ap-4f, -0x1.c91bbcp-2f,
     /* node 725 y */
-    0x1.99999ap-59f, 0x1.35d5dp-4f, 0x1.1be286p+0f, -0x1.8b91eep+0f,
+    0x1p-57f, 0x1.363f5cp-4f, 0x1.1becd2p+0f, -0x1.8ba874p+0f,
     /* node 725 z */
-    -0x1.19999ap-56f, -0x1.ff1c6ep-3f, -0x1.da51a4p-1f, 0x1.1894b4p+1f,
+    0x1.99999ap-56f, -0x1.fed22p-3f, -0x1.da5b56p-1f, 0x1.18a716p+1f,
     /* node 726 x */
-    -0x1.666666p-54f, 0x1.2f0182p+1f, 0x1.5bae18p-4f, -0x1.afc0cp-2f,
+    0x1.99999ap-60f, 0x1.2f2762p+1f, 0x1.5c2af6p-4f, -0x1.af3abp-2f,
     /* node 726 y */
-    -0x1.99999ap-61f, -0x1.5f8e88p-7f, 0x1.11e03ep+0f, -0x1.79a34p+0f,
+    0x1.333334p-58f, -0x1.5de966p-7f, 0x1.11ea22p+0f, -0x1.79b7a8p+0f,
     /* node 726 z */
-    -0x0p+0f, -0x1.a47b4cp-3f, -0x1.cfdf7cp-1f, 0x1.151398p+1f,
+    0x1.333334p-57f, -0x1.a43becp-3f, -0x1.cfee66p-1f, 0x1.1527acp+1f,
     /* node 728 x */
-    -0x1.6e6666p-55f, 0x1.0f7ca6p+1f, 0x1.82f92ap-5f, -0x1.6da998p-2f,
+    0x1.6b3334p-55f, 0x1.0f9f22p+1f, 0x1.838a62p-5f, -0x1.6d1f02p-2f,
     /* node 728 y */
-    -0x1.99999ap-56f, 0x1.15b854p-4f, 0x1.14a96ap+0f, -0x1.83151ap+0f,
+    -0x1.99999ap-61f, 0x1.15ed5cp-4f, 0x1.14af64p+0f, -0x1.832324p+0f,
     /* node 728 z */
-    0x1.99999ap-59f, -0x1.dc253ap-3f, -0x1.c667c6p-1f, 0x1.fe049cp+0f,
+    0x1.99999ap-58f, -0x1.dbf26ap-3f, -0x1.c6821ap-1f, 0x1.fe36ep+0f,
     /* node 740 x */
-    0x1.dcccccp-55f, 0x1.0cf072p+2f, -0x1.4ced68p-3f, -0x1.b1f752p-3f,
+    -0x1.966666p-55f, 0x1.0d0566p+2f, -0x1.4c1764p-3f, -0x1.b1e5dep-3f,
     /* node 740 y */
-    -0x1p-56f, 0x1.b3b2a4p-6f, 0x1.c95dfap+0f, -0x1.963fd6p-1f,
+    0x1.333334p-58f, 0x1.bd04fcp-6f, 0x1.c9693ap+0f, -0x1.966a56p-1f,
     /* node 740 z */
-    -0x1.99999ap-57f, -0x1.08e734p-1f, -0x1.040cf8p+0f, 0x1.0058fcp+2f,
+    -0x1p-55f, -0x1.08cfa8p-1f, -0x1.041738p+0f, 0x1.00627cp+2f,
     /* node 741 x */
-    0x1.ce6666p-55f, 0x1.82842cp+1f, -0x1.d40b0cp-10f, -0x1.589e32p-2f,
+    -0x1.28p-55f, 0x1.82b504p+1f, -0x1.6d3fe8p-10f, -0x1.58c026p-2f,
     /* node 741 y */
-    -0x1.a66666p-57f, -0x1.79f834p-6f, 0x1.1bca14p+0f, -0x1.1018f6p-1f,
+    -0x1.666666p-59f, -0x1.7143a8p-6f, 0x1.1be328p+0f, -0x1.1044aep-1f,
     /* node 741 z */
-    -0x1.333334p-56f, -0x1.4d0fe4p-1f, -0x1.cf2172p-1f, 0x1.a5e5e8p+1f,
+    -0x1p-56f, -0x1.4cfc7ep-1f, -0x1.cf225cp-1f, 0x1.a60338p+1f,
     /* node 742 x */
-    0x1.29999ap-54f, 0x1.dc19ep+1f, -0x1.068d6ap-4f, -0x1.0d804ap-1f,
+    0x1.a0ccccp-53f, 0x1.dc41dcp+1f, -0x1.0466dcp-4f, -0x1.0d685p-1f,
     /* node 742 y */
-    -0x1.d9999ap-56f, -0x1.067c88p-3f, 0x1.8d6602p+0f, -0x1.25ad94p-1f,
+    0x1.19999ap-56f, -0x1.055c4ap-3f, 0x1.8d6e98p+0f, -0x1.25d802p-1f,
     /* node 742 z */
-    -0x1.333334p-56f, -0x1.910b06p-1f, -0x1.c97474p-1f, 0x1.eb032ep+1f,
+    -0x1.333334p-56f, -0x1.90f624p-1f, -0x1.c9813ap-1f, 0x1.eb0b6ep+1f,
     /* node 743 x */
-    0x1.29999ap-55f, 0x1.55664ep+2f, -0x1.282d8p-2f, -0x1.bc788ap-2f,
+    0x1p-54f, 0x1.557aecp+2f, -0x1.27be3ep-2f, -0x1.bc5ce6p-2f,
     /* node 743 y */
-    0x1.433334p-54f, -0x1.dc2528p-4f, 0x1.48b0e4p+1f, -0x1.c84982p-1f,
+    -0x1p-58f, -0x1.da5c06p-4f, 0x1.48b402p+1f, -0x1.c864cp-1f,
     /* node 743 z */
-    -0x1.99999ap-57f, -0x1.518ddcp-1f, -0x1.0ad6p+0f, 0x1.3aba54p+2f,
+    0x1.333334p-56f, -0x1.516df2p-1f, -0x1.0ade3ap+0f, 0x1.3ac27ep+2f,
     /* node 762 x */
-    -0x1.2cccccp-54f, 0x1.6192bp+1f, 0x1.6260c2p-3f, -0x1.57a052p-1f,
+    0x1.966666p-54f, 0x1.61b992p+1f, 0x1.62b352p-3f, -0x1.575df4p-1f,
     /* node 762 y */
-    -0x1.99999ap-58f, -0x1.70835cp-3f, 0x1.16c65p+0f, -0x1.51d6acp+0f,
+    -0x1.99999ap-58f, -0x1.708d98p-3f, 0x1.16cb78p+0f, -0x1.51e1dp+0f,
     /* node 762 z */
-    0x1.666666p-56f, -0x1.5dba4ep-3f, -0x1.d40c5ap-1f, 0x1.24ab8ap+1f,
+    0x1.99999ap-60f, -0x1.5d6974p-3f, -0x1.d415aep-1f, 0x1.24be84p+1f,
     /* node 763 x */
-    0x1.fcccccp-54f, 0x1.731af6p+1f, 0x1.ab04dcp-4f, -0x1.4c727ep-1f,
+    0x1.366666p-55f, 0x1.734318p+1f, 0x1.abcedap-4f, -0x1.4c4b06p-1f,
     /* node 763 y */
-    -0x1.ccccccp-58f, -0x1.8bac44p-2f, 0x1.1cf4a6p+0f, -0x1.20d1f4p+0f,
+    -0x1.333334p-58f, -0x1.8bc5a6p-2f, 0x1.1cf958p+0f, -0x1.20d87ep+0f,
     /* node 763 z */
-    0x1p-57f, -0x1.62e354p-3f, -0x1.d43ef2p-1f, 0x1.223e4ap+1f,
+    -0x1.333334p-57f, -0x1.62618ep-3f, -0x1.d4312ep-1f, 0x1.224826p+1f,
     /* node 764 x */
-    -0x1.f33334p-55f, 0x1.4ab444p+1f, 0x1.a8d20cp-4f, -0x1.0a9d6ap-1f,
+    -0x1.733334p-56f, 0x1.4adc6cp+1f, 0x1.a97e04p-4f, -0x1.0a666p-1f,
     /* node 764 y */
-    0x1.99999ap-59f, -0x1.57897p-2f, 0x1.049a0cp+0f, -0x1.2ebb38p+0f,
+    -0x1.e66666p-56f, -0x1.579faep-2f, 0x1.049cc2p+0f, -0x1.2eca72p+0f,
     /* node 764 z */
-    -0x1.99999ap-57f, -0x1.a431acp-4f, -0x1.bb3442p-1f, 0x1.01cdacp+1f,
+    -0x1.19999ap-56f, -0x1.a3a93ap-4f, -0x1.bb3baap-1f, 0x1.01df5ap+1f,
     /* node 765 x */
-    -0x1.f33334p-55f, 0x1.4243dep+1f, 0x1.ca2002p-4f, -0x1.fb354cp-2f,
+    0x1.0cccccp-53f, 0x1.426bacp+1f, 0x1.cac238p-4f, -0x1.faba72p-2f,
     /* node 765 y */
-    -0x1.333334p-55f, -0x1.a7da82p-3f, 0x1.06796p+0f, -0x1.4dacaep+0f,
+    -0x1.99999ap-60f, -0x1.a7f84p-3f, 0x1.067e06p+0f, -0x1.4dba26p+0f,
     /* node 765 z */
-    0x1.333334p-58f, -0x1.f79fb4p-4f, -0x1.be634ep-1f, 0x1.09853ep+1f,
+    -0x1.99999ap-58f, -0x1.f72454p-4f, -0x1.be6dfcp-1f, 0x1.0997ecp+1f,
     /* node 816 x */
-    -0x1.666666p-55f, 0x1.2a86a6p+1f, 0x1.ee3132p-2f, -0x1.ad12d6p-1f,
+    0x1.b33334p-56f, 0x1.2ab0dp+1f, 0x1.ee7992p-2f, -0x1.ace7c2p-1f,
     /* node 816 y */
-    0x1.4p-55f, 0x1.467558p+0f, 0x1.5294eap+0f, -0x1.dc9486p+0f,
+    0x1.333334p-57f, 0x1.46925ap+0f, 0x1.52b41ep+0f, -0x1.dca26p+0f,
     /* node 816 z */
-    -0x1.666666p-58f, -0x1.2347a8p-3f, -0x1.2b82bap-1f, 0x1.47ea0ap+0f,
+    -0x1.99999ap-59f, -0x1.2304d4p-3f, -0x1.2b982ap-1f, 0x1.48291ep+0f,
     /* node 854 x */
-    -0x1.1p-53f, 0x1.a08c48p+1f, -0x1.bd4a74p-4f, -0x1.1c03cp-1f,
+    0x1.b8p-54f, 0x1.a0b658p+1f, -0x1.bc1fb6p-4f, -0x1.1bf842p-1f,
     /* node 854 y */
-    0x1.99999ap-61f, -0x1.778402p-1f, 0x1.398342p+0f, -0x1.974d8cp-1f,
+    -0x1.ccccccp-57f, -0x1.7779d6p-1f, 0x1.39ade6p+0f, -0x1.977ebep-1f,
     /* node 854 z */
-    0x1p-56f, -0x1.4a7f32p-2f, -0x1.b9611p-1f, 0x1.1f3576p+1f,
+    0x1.333334p-57f, -0x1.4abbb2p-2f, -0x1.b99e28p-1f, 0x1.1f59f2p+1f,
     /* node 855 x */
-    0x1.5e6666p-54f, 0x1.6f0f7cp+1f, -0x1.1180f2p-6f, -0x1.035d48p-1f,
+    0x1.bb3334p-54f, 0x1.6f333p+1f, -0x1.0ff07cp-6f, -0x1.031174p-1f,
     /* node 855 y */
-    -0x1.8p-56f, -0x1.469348p-1f, 0x1.152c1cp+0f, -0x1.c9ed7p-1f,
+    -0x1.666666p-56f, -0x1.4674f8p-1f, 0x1.153eap+0f, -0x1.ca3302p-1f,
     /* node 855 z */
-    0x1.666666p-57f, -0x1.8b9a9p-3f, -0x1.b51b22p-1f, 0x1.0261f2p+1f,
+    -0x1.19999ap-56f, -0x1.8b900cp-3f, -0x1.b51f92p-1f, 0x1.02701ep+1f,
     /* node 856 x */
-    0x1.ccccccp-54f, 0x1.a6e58cp+1f, 0x1.57d5f4p-4f, -0x1.4d0078p-1f,
+    0x1.333334p-60f, 0x1.a70b7cp+1f, 0x1.58f33cp-4f, -0x1.4ce9cep-1f,
     /* node 856 y */
-    -0x1.99999ap-60f, -0x1.b0e704p-2f, 0x1.4e2e42p+0f, -0x1.24686ep+0f,
+    0x1.4cccccp-57f, -0x1.b100bp-2f, 0x1.4e2614p+0f, -0x1.246f26p+0f,
     /* node 856 z */
-    -0x1.333334p-58f, -0x1.c71e88p-3f, -0x1.fba28ap-1f, 0x1.55fb8ep+1f,
+    -0x1.99999ap-56f, -0x1.c6ca56p-3f, -0x1.fb99fep-1f, 0x1.5609d8p+1f,
     /* node 857 x */
-    0x1.d9999ap-56f, 0x1.103456p+2f, -0x1.491b38p-4f, -0x1.66913p-1f,
+    0x1.8p-54f, 0x1.104892p+2f, -0x1.47dc84p-4f, -0x1.6678f2p-1f,
     /* node 857 y */
-    0x1.99999ap-58f, -0x1.ffb334p-2f, 0x1.e35b9p+0f, -0x1.18fc26p+0f,
+    -0x1.4cccccp-56f, -0x1.ffa2bcp-2f, 0x1.e34adep+0f, -0x1.18ff52p+0f,
     /* node 857 z */
-    -0x1.333334p-56f, -0x1.86337cp-2f, -0x1.0787e2p+0f, 0x1.c8cf9p+1f,
+    -0x1.19999ap-55f, -0x1.85d498p-2f, -0x1.07900cp+0f, 0x1.c8d426p+1f,
     /* node 865 x */
-    0x1.19999ap-57f, 0x1.0dbd1ap+2f, -0x1.108768p-5f, -0x1.1a04b2p+0f,
+    0x1.19999ap-54f, 0x1.0dd314p+2f, -0x1.0d3a5cp-5f, -0x1.19f65cp+0f,
     /* node 865 y */
-    -0x1p-57f, 0x1.2c656p+0f, 0x1.4c9fcap+0f, -0x1.9cd3b2p+0f,
+    -0x1.99999ap-56f, 0x1.2c7e38p+0f, 0x1.4cb14ap+0f, -0x1.9cd3fep+0f,
     /* node 865 z */
-    0x1.a66666p-55f, -0x1.2662fep+0f, -0x1.c1f704p-1f, 0x1.74f7fap+1f,
+    0x1.8p-56f, -0x1.265a9ap+0f, -0x1.c218f2p-1f, 0x1.75108ep+1f,
     /* node 937 x */
-    -0x1.81999ap-54f, 0x1.4420f8p+1f, 0x1.fb659ap-4f, -0x1.07cf1ep-1f,
+    0x1.4e6666p-54f, 0x1.444876p+1f, 0x1.fc0e5cp-4f, -0x1.078cp-1f,
     /* node 937 y */
-    -0x1.4cccccp-57f, -0x1.6ebddap-4f, 0x1.105b14p+0f, -0x1.679044p+0f,
+    -0x1.4p-55f, -0x1.6eafeap-4f, 0x1.1062d8p+0f, -0x1.67a32cp+0f,
     /* node 937 z */
-    -0x1.8p-56f, -0x1.65a328p-3f, -0x1.cc3a38p-1f, 0x1.18833ap+1f,
+    0x1.99999ap-58f, -0x1.6560e4p-3f, -0x1.cc4a7cp-1f, 0x1.189952p+1f,
     /* node 989 x */
-    -0x1.19999ap-58f, 0x1.baacf8p+0f, 0x1.8262e8p-6f, -0x1.34e244p-3f,
+    -0x1.8e6666p-55f, 0x1.baf836p+0f, 0x1.89f3b8p-6f, -0x1.355902p-3f,
     /* node 989 y */
-    -0x1.99999ap-59f, -0x1.b21ba2p-6f, 0x1.6fe8d6p-2f, -0x1.d12a9p-3f,
+    -0x1p-57f, -0x1.b06f86p-6f, 0x1.703cd2p-2f, -0x1.d1bb8ap-3f,
     /* node 989 z */
-    -0x1.59999ap-54f, -0x1.36a9ecp-1f, -0x1.73c794p-1f, 0x1.16b0d6p+1f,
+    0x1.99999ap-60f, -0x1.36c39cp-1f, -0x1.740058p-1f, 0x1.16b458p+1f,
     /* node 991 x */
-    0x1.ep-56f, 0x1.08d46p+1f, 0x1.327b5p-5f, -0x1.336cd8p-2f,
+    0x1.2cp-54f, 0x1.09008ep+1f, 0x1.37488p-5f, -0x1.32bb78p-2f,
     /* node 991 y */
-    -0x1.166666p-56f, -0x1.e24ccap-5f, 0x1.192578p-1f, -0x1.4410b2p-2f,
+    -0x1.066666p-57f, -0x1.def2e2p-5f, 0x1.197a4ap-1f, -0x1.42e32ep-2f,
     /* node 991 z */
-    -0x1.e66666p-56f, -0x1.5e548ap-1f, -0x1.82abf4p-1f, 0x1.35d8acp+1f,
+    -0x1.4cccccp-56f, -0x1.5e686ap-1f, -0x1.82d9ecp-1f, 0x1.35ddd8p+1f,
     /* node 1016 x */
-    0x1.2p-55f, 0x1.ff4f78p+0f, -0x1.5105cap-5f, -0x1.1038dap-1f,
+    0x1.066666p-53f, 0x1.ffa708p+0f, -0x1.4dc168p-5f, -0x1.1034fap-1f,
     /* node 1016 y */
-    -0x1.9b3334p-56f, -0x1.f6ecb4p-2f, 0x1.0d3c32p-1f, -0x1.8780bep-3f,
+    -0x1.01999ap-55f, -0x1.f679c2p-2f, 0x1.0d2dd2p-1f, -0x1.87f728p-3f,
     /* node 1016 z */
-    -0x1.733334p-55f, -0x1.70b4fcp-1f, -0x1.00d5e4p-1f, 0x1.ab07b6p+0f,
+    0x1p-56f, -0x1.70ab0ep-1f, -0x1.00e45cp-1f, 0x1.ab3084p+0f,
     /* node 1018 x */
-    0x1.733334p-57f, 0x1.eb5deap+0f, -0x1.99c304p-4f, -0x1.f6aa52p-2f,
+    0x1.466666p-55f, 0x1.eba88ap+0f, -0x1.98d34ep-4f, -0x1.f6b492p-2f,
     /* node 1018 y */
-    -0x1.2p-57f, -0x1.42cea4p-1f, 0x1.1a318ep-1f, -0x1.aa3d4cp-3f,
+    -0x1.466666p-57f, -0x1.42be18p-1f, 0x1.1a08bp-1f, -0x1.aaa596p-3f,
     /* node 1018 z */
-    -0x1.866666p-55f, -0x1.2d8faep-1f, -0x1.d41a6cp-2f, 0x1.601fd6p+0f,
+    -0x1.b33334p-57f, -0x1.2d7168p-1f, -0x1.d406a4p-2f, 0x1.602f9p+0f,
     /* node 1019 x */
-    -0x1.933334p-55f, 0x1.45ef14p+1f, -0x1.b7eaa6p-4f, -0x1.3f5f8p-1f,
+    0x1.533334p-55f, 0x1.461e92p+1f, -0x1.b7185p-4f, -0x1.3f3476p-1f,
     /* node 1019 y */
-    0x1.633334p-56f, -0x1.57fe5ep-1f, 0x1.a37872p-1f, -0x1.1d70dep-2f,
+    -0x1.1cccccp-56f, -0x1.580de4p-1f, 0x1.a392d2p-1f, -0x1.1d48d8p-2f,
     /* node 1019 z */
-    -0x1.e66666p-55f, -0x1.60459ap-1f, -0x1.239946p-1f, 0x1.d94b72p+0f,
+    -0x1.b33334p-56f, -0x1.606482p-1f, -0x1.2390fap-1f, 0x1.d96648p+0f,
     /* node 1058 x */
-    0x1.666666p-55f, 0x1.fdd61ap+1f, 0x1.903042p-2f, -0x1.e5109cp+0f,
+    0x1.033334p-53f, 0x1.fdfbfcp+1f, 0x1.9087bcp-2f, -0x1.e4ed7cp+0f,
     /* node 1058 y */
-    0x1.99999ap-55f, 0x1.db4444p+0f, 0x1.6e19fap+0f, -0x1.4d4abp+1f,
+    0x1.39999ap-54f, 0x1.db5a0ap+0f, 0x1.6e26f6p+0f, -0x1.4d47dp+1f,
     /* node 1058 z */
-    -0x1.666666p-56f, -0x1.fab1f4p-1f, -0x1.b61a7ep-1f, 0x1.62d7e6p+1f,
+    -0x1.333334p-55f, -0x1.faa48cp-1f, -0x1.b6468cp-1f, 0x1.62ee02p+1f,
     /* node 1059 x */
-    0x1.533334p-52f, 0x1.fddb56p+1f, 0x1.6d1582p-2f, -0x1.c27398p+0f,
+    0x1.19999ap-55f, 0x1.fde472p+1f, 0x1.6d4a14p-2f, -0x1.c23284p+0f,
     /* node 1059 y */
-    0x1.e66666p-56f, 0x1.ed1438p+0f, 0x1.5a10d4p+0f, -0x1.362558p+1f,
+    0x1.666666p-55f, 0x1.ed1798p+0f, 0x1.5a1d2ep+0f, -0x1.36161ap+1f,
     /* node 1059 z */
-    -0x1.8p-56f, -0x1.cc6e9cp-1f, -0x1.9a7ep-1f, 0x1.3e3312p+1f,
+    -0x0p+0f, -0x1.cc3f92p-1f, -0x1.9a8faep-1f, 0x1.3e427ap+1f,
     /* node 1060 x */
-    -0x1.333334p-53f, 0x1.05c7e8p+2f, 0x1.64712cp-2f, -0x1.e2ad3cp+0f,
+    -0x1.c66666p-54f, 0x1.05d898p+2f, 0x1.64b988p-2f, -0x1.e280dep+0f,
     /* node 1060 y */
-    0x1.19999ap-56f, 0x1.e65b04p+0f, 0x1.65ab3p+0f, -0x1.45d78ep+1f,
+    0x1.79999ap-54f, 0x1.e66c62p+0f, 0x1.65bb22p+0f, -0x1.45d36p+1f,
     /* node 1060 z */
-    -0x1.333334p-55f, -0x1.0aad6ep+0f, -0x1.b05fbcp-1f, 0x1.637e06p+1f,
+    -0x1.19999ap-55f, -0x1.0ab06ap+0f, -0x1.b0808cp-1f, 0x1.639af4p+1f,
     /* node 1061 x */
-    0x1.b9999ap-53f, 0x1.07ba88p+2f, 0x1.63fc8p-2f, -0x1.ef17cap+0f,
+    -0x1.99999ap-58f, 0x1.07cc6ap+2f, 0x1.64582ep-2f, -0x1.eee9a8p+0f,
     /* node 1061 y */
-    0x1.59999ap-55f, 0x1.d18284p+0f, 0x1.7125ep+0f, -0x1.4e621p+1f,
+    0x1.2cccccp-54f, 0x1.d185eap+0f, 0x1.71329p+0f, -0x1.4e55a6p+1f,
     /* node 1061 z */
-    -0x1.266666p-55f, -0x1.1ebee6p+0f, -0x1.c1bd5ep-1f, 0x1.80022ap+1f,
+    0x1.19999ap-56f, -0x1.1eabf4p+0f, -0x1.c1da52p-1f, 0x1.8014cep+1f,
     /* node 1106 x */
-    -0x1.333334p-60f, 0x1.2286fap+1f, 0x1.39656ap-2f, -0x1.6c3bfap-1f,
+    0x1.633334p-55f, 0x1.22a9cp+1f, 0x1.39914ep-2f, -0x1.6c0802p-1f,
     /* node 1106 y */
-    0x1.333334p-56f, 0x1.89bcfcp-1f, 0x1.54aae8p+0f, -0x1.bb46e4p+0f,
+    -0x1.99999ap-57f, 0x1.89dfe2p-1f, 0x1.54bcfep+0f, -0x1.bb59dp+0f,
     /* node 1106 z */
-    -0x0p+0f, -0x1.516a9ap-2f, -0x1.9dd3f4p-1f, 0x1.b2a696p+0f,
+    -0x0p+0f, -0x1.5159a4p-2f, -0x1.9e11c6p-1f, 0x1.b2e896p+0f,
     /* node 1107 x */
-    0x1.f33334p-56f, 0x1.440d2p+1f, 0x1.a264e8p-2f, -0x1.d3e16ep-1f,
+    0x1.b66666p-54f, 0x1.44341p+1f, 0x1.a2a208p-2f, -0x1.d3b564p-1f,
     /* node 1107 y */
-    -0x1.b33334p-56f, 0x1.0038d6p+0f, 0x1.6ee85p+0f, -0x1.f7a3bep+0f,
+    -0x1.8cccccp-55f, 0x1.005c24p+0f, 0x1.6f062ap+0f, -0x1.f7bbeap+0f,
     /* node 1107 z */
-    -0x1.666666p-56f, -0x1.7abb8cp-2f, -0x1.a6612p-1f, 0x1.d1befcp+0f,
+    -0x1p-56f, -0x1.7ab8b2p-2f, -0x1.a689d8p-1f, 0x1.d1faf2p+0f,
     /* node 1108 x */
-    0x1.6p-53f, 0x1.37313p+1f, 0x1.5639e8p-2f, -0x1.a18362p-1f,
+    0x1.d33334p-55f, 0x1.3755bep+1f, 0x1.56764p-2f, -0x1.a15c2p-1f,
     /* node 1108 y */
-    0x1.333334p-56f, 0x1.a014d8p-1f, 0x1.65119cp+0f, -0x1.de7d86p+0f,
+    0x1.ccccccp-56f, 0x1.a0337p-1f, 0x1.650ecep+0f, -0x1.de7af6p+0f,
     /* node 1108 z */
-    0x1.333334p-56f, -0x1.7e5dd4p-2f, -0x1.b7408p-1f, 0x1.de679ap+0f,
+    0x1.19999ap-56f, -0x1.7e5132p-2f, -0x1.b75514p-1f, 0x1.de9984p+0f,
     /* node 1109 x */
-    0x1.19999ap-57f, 0x1.1473a6p+1f, 0x1.e2440cp-3f, -0x1.47a772p-1f,
+    -0x1p-56f, 0x1.14947p+1f, 0x1.e22886p-3f, -0x1.475e4cp-1f,
     /* node 1109 y */
-    0x1.59999ap-55f, 0x1.56bdfep-1f, 0x1.47077ap+0f, -0x1.b547c2p+0f,
+    0x1p-55f, 0x1.56e322p-1f, 0x1.47064cp+0f, -0x1.b538cap+0f,
     /* node 1109 z */
-    -0x1.19999ap-56f, -0x1.55844ep-2f, -0x1.a9c41ep-1f, 0x1.bd1c7ep+0f,
+    0x1.19999ap-56f, -0x1.5561ap-2f, -0x1.a9cc8ap-1f, 0x1.bd4396p+0f,
     /* node 1209 x */
-    -0x1.31999ap-54f, 0x1.26ca18p+1f, 0x1.d5d364p-3f, -0x1.608922p-1f,
+    0x1.633334p-54f, 0x1.26eb46p+1f, 0x1.d648dep-3f, -0x1.605c7ep-1f,
     /* node 1209 y */
-    0x1.99999ap-58f, 0x1.20570ap-1f, 0x1.49d446p+0f, -0x1.c1a09ep+0f,
+    -0x1.99999ap-59f, 0x1.2079cap-1f, 0x1.49d258p+0f, -0x1.c1ab9ep+0f,
     /* node 1209 z */
-    0x1.99999ap-58f, -0x1.6f4c84p-2f, -0x1.c60eaap-1f, 0x1.f2cb22p+0f,
+    0x1.19999ap-56f, -0x1.6f43f6p-2f, -0x1.c63644p-1f, 0x1.f302c4p+0f,
     /* node 1210 x */
-    0x1.966666p-55f, 0x1.02a1b8p+1f, 0x1.459f88p-3f, -0x1.119446p-1f,
+    0x1.ccccccp-56f, 0x1.02c6fap+1f, 0x1.457412p-3f, -0x1.1143ccp-1f,
     /* node 1210 y */
-    0x1.333334p-57f, 0x1.17dcc2p-1f, 0x1.2fec9ep+0f, -0x1.a233c8p+0f,
+    -0x1p-56f, 0x1.17eb28p-1f, 0x1.3012cap+0f, -0x1.a25d1cp+0f,
     /* node 1210 z */
-    -0x1.99999ap-59f, -0x1.5130e8p-2f, -0x1.b0aaeep-1f, 0x1.bef3p+0f,
+    0x1.99999ap-59f, -0x1.51370ep-2f, -0x1.b0edbp-1f, 0x1.bf3c3p+0f,
     /* node 1211 x */
-    0x1.866666p-55f, 0x1.300e0ap+1f, 0x1.29d026p-2f, -0x1.8af492p-1f,
+    -0x1.333334p-59f, 0x1.303124p+1f, 0x1.2a0582p-2f, -0x1.8ac5f8p-1f,
     /* node 1211 y */
-    0x1.19999ap-55f, 0x1.655006p-1f, 0x1.5920acp+0f, -0x1.d1d5fap+0f,
+    -0x1.266666p-55f, 0x1.657442p-1f, 0x1.591fdp+0f, -0x1.d1d95ep+0f,
     /* node 1211 z */
-    0x1.99999ap-59f, -0x1.7baf38p-2f, -0x1.c03134p-1f, 0x1.e9603ap+0f,
+    -0x1.99999ap-56f, -0x1.7b9aacp-2f, -0x1.c06dc8p-1f, 0x1.e9a056p+0f,
     /* node 1212 x */
-    -0x1.99999ap-54f, 0x1.4c34d8p+1f, 0x1.56f658p-2f, -0x1.d15b66p-1f,
+    0x1.ep-55f, 0x1.4c5a9ap+1f, 0x1.571004p-2f, -0x1.d1247ep-1f,
     /* node 1212 y */
-    0x1p-57f, 0x1.749b7cp-1f, 0x1.68b056p+0f, -0x1.f0f69ep+0f,
+    0x1.99999ap-55f, 0x1.74bcap-1f, 0x1.68ac46p+0f, -0x1.f0f4aep+0f,
     /* node 1212 z */
-    -0x1.99999ap-56f, -0x1.b151dap-2f, -0x1.da8c92p-1f, 0x1.119362p+1f,
+    0x1.e66666p-56f, -0x1.b14f5cp-2f, -0x1.daa812p-1f, 0x1.11aca4p+1f,
     /* node 1607 x */
-    0x1.69999ap-53f, 0x1.f6d932p+1f, 0x1.8d8524p-2f, -0x1.c47eeep+0f,
+    0x1.933334p-53f, 0x1.f700d4p+1f, 0x1.8dceecp-2f, -0x1.c44d14p+0f,
     /* node 1607 y */
-    0x1.4cccccp-56f, 0x1.fc6584p-1f, 0x1.935098p+0f, -0x1.2f403p+1f,
+    -0x1.8p-55f, 0x1.fc909ep-1f, 0x1.93507ap+0f, -0x1.2f3decp+1f,
     /* node 1607 z */
-    0x1.4p-54f, -0x1.fef228p-1f, -0x1.0dc48ep+0f, 0x1.d8e468p+1f,
+    -0x1.666666p-56f, -0x1.fed66ap-1f, -0x1.0dd4c4p+0f, 0x1.d8efe2p+1f,
     /* node 1608 x */
-    0x1.733334p-55f, 0x1.00b3d6p+2f, 0x1.4d556ep-2f, -0x1.a427ccp+0f,
+    0x1.666666p-56f, 0x1.00c698p+2f, 0x1.4ddaacp-2f, -0x1.a41132p+0f,
     /* node 1608 y */
-    -0x1.b33334p-56f, 0x1.9f2ea8p-1f, 0x1.9138fcp+0f, -0x1.fb9bccp+0f,
+    0x1.cp-55f, 0x1.9f4d5cp-1f, 0x1.915298p+0f, -0x1.fbb5e8p+0f,
     /* node 1608 z */
-    -0x1.99999ap-59f, -0x1.0fe038p+0f, -0x1.0133f8p+0f, 0x1.ed8c5p+1f,
+    -0x1.99999ap-57f, -0x1.0fd1ep+0f, -0x1.0144fep+0f, 0x1.ed9d64p+1f,
     /* node 1609 x */
-    0x1.0cccccp-54f, 0x1.dd04dap+1f, 0x1.94c082p-2f, -0x1.922bd2p+0f,
+    0x1.ep-53f, 0x1.dd2a88p+1f, 0x1.94f22p-2f, -0x1.91ee9p+0f,
     /* node 1609 y */
-    -0x1.59999ap-55f, 0x1.3c7c1ep-1f, 0x1.84fe02p+0f, -0x1.0bd2e2p+1f,
+    -0x1.666666p-57f, 0x1.3ca6a4p-1f, 0x1.85033cp+0f, -0x1.0bdb52p+1f,
     /* node 1609 z */
-    -0x1.333334p-55f, -0x1.97ab38p-1f, -0x1.15d8c2p+0f, 0x1.d878bep+1f,
+    -0x1.8p-55f, -0x1.97a8bp-1f, -0x1.15f1c6p+0f, 0x1.d89b04p+1f,
     /* node 1617 x */
-    0x1.f33334p-55f, 0x1.56562cp+1f, 0x1.a47a9cp-2f, -0x1.046b74p+0f,
+    0x1.866666p-55f, 0x1.567c64p+1f, 0x1.a4b31ap-2f, -0x1.04543ap+0f,
     /* node 1617 y */
-    0x1.333334p-58f, 0x1.e807d4p-1f, 0x1.79af5ep+0f, -0x1.0af34p+1f,
+    -0x1.4p-54f, 0x1.e833bcp-1f, 0x1.79be6p+0f, -0x1.0af508p+1f,
     /* node 1617 z */
-    -0x1.266666p-54f, -0x1.b77fbp-2f, -0x1.cc2758p-1f, 0x1.07bd66p+1f,
+    -0x1.333334p-58f, -0x1.b76444p-2f, -0x1.cc4c58p-1f, 0x1.07da22p+1f,
     /* node 1618 x */
-    0x1.966666p-54f, 0x1.702d74p+1f, 0x1.ab78dep-2f, -0x1.275c72p+0f,
+    0x1.ep-54f, 0x1.7058eep+1f, 0x1.abb4e6p-2f, -0x1.274852p+0f,
     /* node 1618 y */
-    0x1.8cccccp-55f, 0x1.e8e8p-1f, 0x1.82ec68p+0f, -0x1.1e329cp+1f,
+    -0x1.666666p-56f, 0x1.e90ba6p-1f, 0x1.82f558p+0f, -0x1.1e3292p+1f,
     /* node 1618 z */
-    -0x1.19999ap-55f, -0x1.034a28p-1f, -0x1.ec24ccp-1f, 0x1.2e4304p+1f,
+    -0x1.99999ap-60f, -0x1.033d52p-1f, -0x1.ec395cp-1f, 0x1.2e5c9ep+1f,
     /* node 1619 x */
-    -0x1.8cccccp-54f, 0x1.636ce4p+1f, 0x1.5c8a38p-2f, -0x1.02e0cp+0f,
+    -0x1p-56f, 0x1.639382p+1f, 0x1.5cae78p-2f, -0x1.02c826p+0f,
     /* node 1619 y */
-    0x1p-56f, 0x1.781d1ap-1f, 0x1.76b3a2p+0f, -0x1.0a95bep+1f,
+    -0x1.666666p-57f, 0x1.784196p-1f, 0x1.76b142p+0f, -0x1.0a957p+1f,
     /* node 1619 z */
-    -0x1.99999ap-60f, -0x1.ecd4b6p-2f, -0x1.fcd234p-1f, 0x1.36050ap+1f,
+    0x1.333334p-56f, -0x1.ecba16p-2f, -0x1.fcee4ap-1f, 0x1.3621bep+1f,
     /* node 1665 x */
-    -0x1.99999ap-55f, 0x1.0ce086p+2f, 0x1.2737ap-2f, -0x1.d7b7ecp+0f,
+    -0x1.59999ap-55f, 0x1.0cf498p+2f, 0x1.2788d6p-2f, -0x1.d78e8ap+0f,
     /* node 1665 y */
-    -0x1.99999ap-55f, 0x1.cfd654p+0f, 0x1.67d6fap+0f, -0x1.3dc3ep+1f,
+    -0x1.99999ap-59f, 0x1.cfe4fep+0f, 0x1.67e126p+0f, -0x1.3dbdbcp+1f,
     /* node 1665 z */
-    -0x1.19999ap-56f, -0x1.2bf5a6p+0f, -0x1.bb4734p-1f, 0x1.7e82p+1f,
+    0x1.666666p-57f, -0x1.2be6ccp+0f, -0x1.bb638ap-1f, 0x1.7e9948p+1f,
     /* node 1666 x */
-    0x1.8cccccp-54f, 0x1.10dd68p+2f, 0x1.b1fbbp-3f, -0x1.b8c082p+0f,
+    0x1.833334p-53f, 0x1.10f3c4p+2f, 0x1.b2bd44p-3f, -0x1.b8a1b6p+0f,
     /* node 1666 y */
-    0x1.a66666p-55f, 0x1.95af3p+0f, 0x1.6b4f12p+0f, -0x1.214e44p+1f,
+    0x1.d9999ap-55f, 0x1.95c668p+0f, 0x1.6b5d62p+0f, -0x1.214bfcp+1f,
     /* node 1666 z */
-    -0x1.99999ap-55f, -0x1.44643ap+0f, -0x1.c5a52ep-1f, 0x1.968a6cp+1f,
+    0x1p-55f, -0x1.445de6p+0f, -0x1.c5c44cp-1f, 0x1.96a322p+1f,
     /* node 1667 x */
-    0x1.833334p-53f, 0x1.0ddbbap+2f, 0x1.2aad78p-2f, -0x1.de0abcp+0f,
+    0x1.333334p-58f, 0x1.0deea2p+2f, 0x1.2b04ep-2f, -0x1.dddbeep+0f,
     /* node 1667 y */
-    -0x1.99999ap-57f, 0x1.af54b8p+0f, 0x1.730a5ep+0f, -0x1.3e9aaap+1f,
+    -0x1.19999ap-55f, 0x1.af6486p+0f, 0x1.73158cp+0f, -0x1.3e948ep+1f,
     /* node 1667 z */
-    -0x1.266666p-54f, -0x1.397262p+0f, -0x1.cb41e2p-1f, 0x1.999286p+1f,
+    -0x1.8p-54f, -0x1.3963d6p+0f, -0x1.cb5ef2p-1f, 0x1.99a77p+1f,
     /* node 1708 x */
-    0x1.2cccccp-53f, 0x1.62264p+1f, 0x1.fd7656p-2f, -0x1.2323f6p+0f,
+    0x1.34ccccp-53f, 0x1.6249ap+1f, 0x1.fd7bap-2f, -0x1.23022cp+0f,
     /* node 1708 y */
-    0x1.b33334p-56f, 0x1.402c28p+0f, 0x1.7f205ep+0f, -0x1.1ea95cp+1f,
+    0x1.99999ap-57f, 0x1.4036d2p+0f, 0x1.7f1586p+0f, -0x1.1ea2c2p+1f,
     /* node 1708 z */
-    -0x1.e66666p-56f, -0x1.92c01cp-2f, -0x1.a07f08p-1f, 0x1.e4e93p+0f,
+    -0x1.99999ap-60f, -0x1.92891cp-2f, -0x1.a084c2p-1f, 0x1.e51a86p+0f,
     /* node 1758 x */
-    0x1.533334p-54f, 0x1.e47976p+1f, 0x1.98b00ap-2f, -0x1.9cd9p+0f,
+    0x1.b33334p-53f, 0x1.e4a926p+1f, 0x1.98f51cp-2f, -0x1.9cc3c2p+0f,
     /* node 1758 y */
-    -0x1.99999ap-58f, 0x1.e99caep+0f, 0x1.53c5p+0f, -0x1.2a7c6ap+1f,
+    -0x1.8p-56f, 0x1.e9b4a8p+0f, 0x1.53d8fp+0f, -0x1.2a78dep+1f,
     /* node 1758 z */
-    -0x1.4cccccp-56f, -0x1.73dbp-1f, -0x1.863698p-1f, 0x1.1b581ep+1f,
+    0x1p-56f, -0x1.73e6acp-1f, -0x1.865f9cp-1f, 0x1.1b7e1cp+1f,
     /* node 1784 x */
-    0x1.033334p-53f, 0x1.2cb52cp+1f, 0x1.31aca6p-4f, -0x1.8dfe3cp-2f,
+    0x1.f66666p-54f, 0x1.2cdb8p+1f, 0x1.321bcp-4f, -0x1.8d71b2p-2f,
     /* node 1784 y */
-    -0x1.2cccccp-55f, -0x1.301b6ap-3f, 0x1.05be9ap+0f, -0x1.5f87fcp+0f,
+    -0x1.0cccccp-55f, -0x1.301f04p-3f, 0x1.05c4a2p+0f, -0x1.5f9b6cp+0f,
     /* node 1784 z */
-    0x1p-57f, -0x1.149308p-3f, -0x1.bcb03p-1f, 0x1.03a5f8p+1f,
+    -0x1.99999ap-58f, -0x1.14519cp-3f, -0x1.bcbc3ap-1f, 0x1.03ba08p+1f,
     /* node 1786 x */
-    -0x1.46p-53f, 0x1.222d94p+1f, 0x1.cbe18ep-5f, -0x1.6389bcp-2f,
+    0x1.2e6666p-54f, 0x1.225398p+1f, 0x1.cca7e8p-5f, -0x1.63007p-2f,
     /* node 1786 y */
-    -0x1.666666p-57f, -0x1.3a99aap-4f, 0x1.09f932p+0f, -0x1.6fa196p+0f,
+    -0x0p+0f, -0x1.3a8b8cp-4f, 0x1.0a0038p+0f, -0x1.6fb4c8p+0f,
     /* node 1786 z */
-    0x1.666666p-56f, -0x1.54437ep-3f, -0x1.c40f4ep-1f, 0x1.06cca2p+1f,
+    -0x1.99999ap-60f, -0x1.53f8cp-3f, -0x1.c41edcp-1f, 0x1.06e15p+1f,
     /* node 1790 x */
-    0x1.0cccccp-55f, 0x1.5a17d4p+1f, -0x1.0d82aap-3f, -0x1.06488ap-1f,
+    0x1.34ccccp-54f, 0x1.5a378p+1f, -0x1.0d6a6ap-3f, -0x1.06865p-1f,
     /* node 1790 y */
-    -0x1p-55f, -0x1.a92a74p-1f, 0x1.e5169cp-1f, -0x1.150582p-1f,
+    -0x1.19999ap-58f, -0x1.a8f8d4p-1f, 0x1.e4f836p-1f, -0x1.151794p-1f,
     /* node 1790 z */
-    -0x1.19999ap-56f, -0x1.99dc38p-2f, -0x1.65ef6ep-1f, 0x1.b737bcp+0f,
+    0x1.99999ap-59f, -0x1.9981fap-2f, -0x1.661a0ap-1f, 0x1.b7676p+0f,
     /* node 1791 x */
-    0x1p-55f, 0x1.26ef72p+1f, -0x1.1fbe62p-3f, -0x1.0651dap-1f,
+    0x1.bcccccp-54f, 0x1.271a58p+1f, -0x1.1f43bap-3f, -0x1.060f22p-1f,
     /* node 1791 y */
-    -0x1.933334p-56f, -0x1.9b0b3p-1f, 0x1.862072p-1f, -0x1.60c356p-2f,
+    0x1.acccccp-57f, -0x1.9b73ep-1f, 0x1.867326p-1f, -0x1.6092a4p-2f,
     /* node 1791 z */
-    -0x1.666666p-58f, -0x1.f25286p-2f, -0x1.228c66p-1f, 0x1.7c543ep+0f,
+    0x1.333334p-58f, -0x1.f1b32ep-2f, -0x1.22a46ep-1f, 0x1.7c72fcp+0f,
     /* node 1792 x */
-    0x1.7e6666p-54f, 0x1.1edce2p+1f, -0x1.1e9884p-3f, -0x1.c0e342p-2f,
+    -0x1.51999ap-54f, 0x1.1efe88p+1f, -0x1.1da1c2p-3f, -0x1.c0f474p-2f,
     /* node 1792 y */
-    -0x1.266666p-55f, -0x1.a88e52p-1f, 0x1.8d98d4p-1f, -0x1.d1515cp-2f,
+    0x1.666666p-59f, -0x1.a88ca2p-1f, 0x1.8d7f66p-1f, -0x1.d18b4ap-2f,
     /* node 1792 z */
-    -0x1.8p-57f, -0x1.5e02ap-2f, -0x1.39d994p-1f, 0x1.63a08p+0f,
+    -0x1.266666p-55f, -0x1.5ddb04p-2f, -0x1.39dfp-1f, 0x1.63c348p+0f,
     /* node 1793 x */
-    0x1.5e6666p-54f, 0x1.4f09a8p+1f, -0x1.8574aap-4f, -0x1.e4ef12p-2f,
+    0x1.59999ap-56f, 0x1.4f2afcp+1f, -0x1.857752p-4f, -0x1.e43be4p-2f,
     /* node 1793 y */
-    -0x1.ep-55f, -0x1.966778p-1f, 0x1.df9a06p-1f, -0x1.4d6b96p-1f,
+    -0x1.d33334p-56f, -0x1.966ca8p-1f, 0x1.dfffc4p-1f, -0x1.4dd948p-1f,
     /* node 1793 z */
-    -0x1.99999ap-59f, -0x1.1a5988p-2f, -0x1.7baf4p-1f, 0x1.b0f188p+0f,
+    0x1.99999ap-59f, -0x1.1a526ap-2f, -0x1.7b9a04p-1f, 0x1.b0f2b6p+0f,
     /* node 1832 x */
-    0x1.99999ap-61f, 0x1.2e9598p+1f, 0x1.0e86ep-4f, -0x1.935396p-2f,
+    -0x1.8p-57f, 0x1.2ebaep+1f, 0x1.0f0e4ap-4f, -0x1.92dd8cp-2f,
     /* node 1832 y */
-    -0x1.99999ap-57f, -0x1.2b9f94p-2f, 0x1.f77e82p-1f, -0x1.3f59aep+0f,
+    -0x1.19999ap-57f, -0x1.2bb8eep-2f, 0x1.f78766p-1f, -0x1.3f6a78p+0f,
     /* node 1832 z */
-    0x1p-55f, -0x1.3d9a6p-4f, -0x1.adb8a2p-1f, 0x1.e6e83ep+0f,
+    -0x0p+0f, -0x1.3cfa76p-4f, -0x1.adc158p-1f, 0x1.e70eb6p+0f,
     /* node 2001 x */
-    0x1.2bccccp-55f, 0x1.d223e8p+0f, -0x1.1d4206p-10f, -0x1.975014p-6f,
+    0x1.38ccccp-56f, 0x1.d274ep+0f, -0x1.61dd2ap-11f, -0x1.9d547p-6f,
     /* node 2001 y */
-    -0x1.4cccccp-58f, 0x1.a7d57ep-4f, 0x1.79e336p-2f, -0x1.28aaf2p-2f,
+    0x1.ccccccp-59f, 0x1.aa09a2p-4f, 0x1.7a0b2ep-2f, -0x1.2961bap-2f,
     /* node 2001 z */
-    0x1.99999ap-57f, -0x1.dea414p-2f, -0x1.8bde08p-1f, 0x1.153542p+1f,
+    0x1.99999ap-58f, -0x1.dea706p-2f, -0x1.8bf40ep-1f, 0x1.1548b6p+1f,
     /* node 2002 x */
-    0x1.36ap-55f, 0x1.269e08p+1f, -0x1.60928ap-6f, -0x1.3fe4cp-10f,
+    0x1.2318p-55f, 0x1.26c0fp+1f, -0x1.5a50d4p-6f, -0x1.76cf74p-10f,
     /* node 2002 y */
-    0x1.99999ap-60f, 0x1.f9fdf8p-3f, 0x1.21e1e4p-1f, -0x1.e3180cp-2f,
+    -0x1.4p-57f, 0x1.faf08ep-3f, 0x1.21f916p-1f, -0x1.e37e32p-2f,
     /* node 2002 z */
-    0x1.333334p-58f, -0x1.99c15p-2f, -0x1.b39b36p-1f, 0x1.2bfe4cp+1f,
+    0x1.99999ap-59f, -0x1.99a956p-2f, -0x1.b3cafap-1f, 0x1.2c0b8p+1f,
     /* node 2003 x */
-    0x1.5p-53f, 0x1.03e8c6p+2f, 0x1.fdd12ap-3f, -0x1.454be4p+0f,
+    0x1.333334p-54f, 0x1.03fd64p+2f, 0x1.fe58bap-3f, -0x1.453544p+0f,
     /* node 2003 y */
-    0x1.266666p-55f, 0x1.0fff04p-2f, 0x1.b749bap+0f, -0x1.a4763ep+0f,
+    0x1.333334p-58f, 0x1.105c6ap-2f, 0x1.b73abap+0f, -0x1.a4906cp+0f,
     /* node 2003 z */
-    -0x1.99999ap-58f, -0x1.6d1826p-1f, -0x1.1a208cp+0f, 0x1.048008p+2f,
+    -0x1.99999ap-56f, -0x1.6d18e2p-1f, -0x1.1a2edep+0f, 0x1.048bd4p+2f,
     /* node 2004 x */
-    0x1.2b3334p-53f, 0x1.4ca2fap+2f, -0x1.14a91cp-4f, -0x1.2ed622p+0f,
+    -0x1.69999ap-54f, 0x1.4cb628p+2f, -0x1.1269acp-4f, -0x1.2ec024p+0f,
     /* node 2004 y */
-    -0x1.733334p-55f, 0x1.88f83ep-3f, 0x1.37abc4p+1f, -0x1.5c7acep+0f,
+    0x1.39999ap-54f, 0x1.89da22p-3f, 0x1.37a59cp+1f, -0x1.5c7e8cp+0f,
     /* node 2004 z */
-    -0x1.99999ap-55f, -0x1.e54dcp-1f, -0x1.f623cap-1f, 0x1.375876p+2f,
+    -0x1.333334p-57f, -0x1.e52a5p-1f, -0x1.f64352p-1f, 0x1.3762b6p+2f,
     /* node 2005 x */
-    0x1.74ccccp-53f, 0x1.4448f4p+2f, -0x1.90a972p-5f, -0x1.ea52bep-1f,
+    -0x1.266666p-56f, 0x1.445cfp+2f, -0x1.8eefd2p-5f, -0x1.ea3892p-1f,
     /* node 2005 y */
-    0x1.cp-55f, -0x1.9d7468p-3f, 0x1.3c4d48p+1f, -0x1.334174p+0f,
+    0x1.99999ap-60f, -0x1.9cbb02p-3f, 0x1.3c51e6p+1f, -0x1.3356eap+0f,
     /* node 2005 z */
-    -0x1.666666p-56f, -0x1.4d1b74p-1f, -0x1.02031cp+0f, 0x1.2fc558p+2f,
+    -0x1.99999ap-55f, -0x1.4d09b6p-1f, -0x1.021d58p+0f, 0x1.2fd326p+2f,
     /* node 2006 x */
-    0x1.3p-54f, 0x1.d65a1p+1f, 0x1.62c21ep-3f, -0x1.d89e32p-1f,
+    -0x1.266666p-55f, 0x1.d68534p+1f, 0x1.63705ap-3f, -0x1.d88a7ap-1f,
     /* node 2006 y */
-    0x1.a66666p-56f, -0x1.f0411p-4f, 0x1.7d7c14p+0f, -0x1.656026p+0f,
+    -0x1p-56f, -0x1.ef83c2p-4f, 0x1.7d983ap+0f, -0x1.65883p+0f,
     /* node 2006 z */
-    -0x1p-54f, -0x1.820d5cp-2f, -0x1.162886p+0f, 0x1.b3036p+1f,
+    -0x1p-56f, -0x1.81caaep-2f, -0x1.162baep+0f, 0x1.b311aap+1f,
     /* node 2087 x */
-    -0x1.5p-54f, 0x1.8443c4p+1f, 0x1.a71886p-2f, -0x1.45927ap+0f,
+    0x1.d9999ap-55f, 0x1.846952p+1f, 0x1.a75398p-2f, -0x1.457728p+0f,
     /* node 2087 y */
-    -0x1.b33334p-56f, 0x1.e1f486p-1f, 0x1.8c60cap+0f, -0x1.32567cp+1f,
+    -0x1p-57f, 0x1.e2345p-1f, 0x1.8c658ep+0f, -0x1.325836p+1f,
     /* node 2087 z */
-    -0x1p-57f, -0x1.2348dp-1f, -0x1.04461cp+0f, 0x1.5455cp+1f,
+    -0x0p+0f, -0x1.2331fep-1f, -0x1.04633ap+0f, 0x1.546ebep+1f,
     /* node 2343 x */
-    0x1.c66666p-54f, 0x1.0e818ap+2f, 0x1.0685aap-2f, -0x1.ca2fp+0f,
+    0x1.366666p-53f, 0x1.0e9602p+2f, 0x1.06ded4p-2f, -0x1.ca0494p+0f,
     /* node 2343 y */
-    -0x1.99999ap-58f, 0x1.843806p+0f, 0x1.782bfcp+0f, -0x1.2c3576p+1f,
+    0x1p-56f, 0x1.844d44p+0f, 0x1.78361p+0f, -0x1.2c345ep+1f,
     /* node 2343 z */
-    -0x1.99999ap-56f, -0x1.432836p+0f, -0x1.d12006p-1f, 0x1.a9c014p+1f,
+    0x1.99999ap-55f, -0x1.431a4p+0f, -0x1.d14468p-1f, 0x1.a9d634p+1f,
     /* node 2493 x */
-    0x1.566666p-55f, 0x1.9867d4p+1f, -0x1.2820fp-5f, -0x1.54a3p-1f,
+    -0x1.2b3334p-54f, 0x1.988f2cp+1f, -0x1.2473d2p-5f, -0x1.54ba82p-1f,
     /* node 2493 y */
-    -0x1p-59f, -0x1.0bb55ap-2f, 0x1.23d13p+0f, -0x1.c51306p-2f,
+    -0x1.ecccccp-56f, -0x1.0b37aap-2f, 0x1.23d56cp+0f, -0x1.c551fep-2f,
     /* node 2493 z */
-    -0x1p-55f, -0x1.c74398p-1f, -0x1.90569p-1f, 0x1.93e5e2p+1f,
+    -0x1p-55f, -0x1.c73b7cp-1f, -0x1.906c8ep-1f, 0x1.93edd4p+1f,
     /* node 2494 x */
-    0x1.21999ap-54f, 0x1.5e798ap+1f, 0x1.3a261p-6f, -0x1.039562p-1f,
+    0x1.99999ap-62f, 0x1.5ea558p+1f, 0x1.41d40ep-6f, -0x1.039892p-1f,
     /* node 2494 y */
-    0x1.733334p-57f, -0x1.f63e5ap-4f, 0x1.d7a4dap-1f, -0x1.9c9944p-2f,
+    0x1.4p-57f, -0x1.f57e58p-4f, 0x1.d7af5ap-1f, -0x1.9d5p-2f,
     /* node 2494 z */
-    -0x1.99999ap-60f, -0x1.a930f4p-1f, -0x1.9a290ap-1f, 0x1.7c19fp+1f,
+    -0x1p-57f, -0x1.a94904p-1f, -0x1.9a55cp-1f, 0x1.7c118p+1f,
     /* node 2495 x */
-    -0x1.b9999ap-55f, 0x1.511864p+1f, 0x1.bda99ap-7f, -0x1.21b404p-1f,
+    0x1.01999ap-54f, 0x1.51439p+1f, 0x1.cbd838p-7f, -0x1.21d0bap-1f,
     /* node 2495 y */
-    -0x1.a66666p-58f, -0x1.019adp-2f, 0x1.af8b1ap-1f, -0x1.5194e6p-2f,
+    -0x1.69999ap-56f, -0x1.012dd2p-2f, 0x1.af9ffep-1f, -0x1.51b67p-2f,
     /* node 2495 z */
-    0x1.4cccccp-56f, -0x1.b4a562p-1f, -0x1.79a75cp-1f, 0x1.5440a4p+1f,
+    -0x1.666666p-57f, -0x1.b49564p-1f, -0x1.79bee2p-1f, 0x1.544f64p+1f,
     /* node 2496 x */
-    0x1.39999ap-54f, 0x1.85a80ap+1f, -0x1.5bd43p-5f, -0x1.829c88p-1f,
+    0x1.066666p-53f, 0x1.85cb8cp+1f, -0x1.576a1p-5f, -0x1.8298f4p-1f,
     /* node 2496 y */
-    -0x1.033334p-55f, -0x1.c6f114p-2f, 0x1.1123ap+0f, -0x1.452148p-2f,
+    -0x1.db3334p-55f, -0x1.c67a82p-2f, 0x1.112226p+0f, -0x1.45278ap-2f,
     /* node 2496 z */
-    -0x1.99999ap-59f, -0x1.cc1326p-1f, -0x1.52f84cp-1f, 0x1.5f300ep+1f,
+    -0x1.0cccccp-55f, -0x1.cbfff6p-1f, -0x1.5304a6p-1f, 0x1.5f3c8cp+1f,
     /* node 2516 x */
-    0x1.666666p-56f, 0x1.00d846p+2f, 0x1.966fdep-2f, -0x1.f827d6p+0f,
+    0x1.e33334p-53f, 0x1.00f15ap+2f, 0x1.968884p-2f, -0x1.f812ep+0f,
     /* node 2516 y */
-    0x1.ccccccp-55f, 0x1.c738b4p+0f, 0x1.7a435ep+0f, -0x1.5a9836p+1f,
+    0x1.0cccccp-54f, 0x1.c751dap+0f, 0x1.7a446cp+0f, -0x1.5a987cp+1f,
     /* node 2516 z */
-    -0x1.333334p-58f, -0x1.10b972p+0f, -0x1.cc6496p-1f, 0x1.83b6a8p+1f,
+    -0x1.99999ap-58f, -0x1.10b508p+0f, -0x1.cc77dep-1f, 0x1.83d226p+1f,
     /* node 2517 x */
-    0x1.0cccccp-53f, 0x1.e9bbb2p+1f, 0x1.bc638p-2f, -0x1.da767p+0f,
+    0x1.99999ap-60f, 0x1.e9d1fep+1f, 0x1.bc8cdap-2f, -0x1.da2f4cp+0f,
     /* node 2517 y */
-    0x1.4p-55f, 0x1.c326d6p+0f, 0x1.771bb6p+0f, -0x1.50c7eap+1f,
+    -0x1.59999ap-55f, 0x1.c3281p+0f, 0x1.771e08p+0f, -0x1.50b516p+1f,
     /* node 2517 z */
-    0x1.666666p-57f, -0x1.d2c97ep-1f, -0x1.bfcc64p-1f, 0x1.600d1ep+1f,
+    -0x1.4cccccp-55f, -0x1.d28f54p-1f, -0x1.bfd27ep-1f, 0x1.601b4cp+1f,
     /* node 2540 x */
-    0x1.fp-54f, 0x1.8979ap+1f, -0x1.bebfc4p-4f, -0x1.8bc132p-1f,
+    0x1.ccccccp-55f, 0x1.898482p+1f, -0x1.ba8806p-4f, -0x1.8b9c94p-1f,
     /* node 2540 y */
-    -0x1.d33334p-56f, -0x1.421d7p-1f, 0x1.09184cp+0f, -0x1.42a4e4p-2f,
+    0x1.ccccccp-57f, -0x1.417ed6p-1f, 0x1.08df26p+0f, -0x1.42a7a8p-2f,
     /* node 2540 z */
-    0x1.333334p-57f, -0x1.ba2cbp-1f, -0x1.4a1904p-1f, 0x1.32e77p+1f,
+    0x1.666666p-57f, -0x1.b9b6b8p-1f, -0x1.4a4812p-1f, 0x1.32edecp+1f,
     /* node 2541 x */
-    -0x1.8f3334p-53f, 0x1.82907p+1f, -0x1.49b912p-3f, -0x1.4cd03cp-1f,
+    0x1.a33334p-55f, 0x1.82c6c2p+1f, -0x1.4a3422p-3f, -0x1.4cc952p-1f,
     /* node 2541 y */
-    -0x1.066666p-55f, -0x1.9e7b4cp-1f, 0x1.0b3a08p+0f, -0x1.bcce7p-2f,
+    -0x1.99999ap-57f, -0x1.9e98dcp-1f, 0x1.0b31ep+0f, -0x1.bd0a9ep-2f,
     /* node 2541 z */
-    0x1.333334p-57f, -0x1.4118ep-1f, -0x1.529f64p-1f, 0x1.0125d8p+1f,
+    -0x1.b33334p-56f, -0x1.416facp-1f, -0x1.52794cp-1f, 0x1.013f8cp+1f,
     /* node 2542 x */
-    0x1.59999ap-56f, 0x1.09d928p+2f, -0x1.be8102p-3f, -0x1.72b474p-1f,
+    -0x1.44ccccp-53f, 0x1.09ec4ap+2f, -0x1.bda7fap-3f, -0x1.728746p-1f,
     /* node 2542 y */
-    -0x1.48p-54f, -0x1.6d42d8p-1f, 0x1.bd5344p+0f, -0x1.362eb8p-1f,
+    -0x1.f33334p-56f, -0x1.6d3b2ep-1f, 0x1.bd4acep+0f, -0x1.363d9p-1f,
     /* node 2542 z */
-    -0x1.333334p-56f, -0x1.557028p-1f, -0x1.9cc6bap-1f, 0x1.925ceap+1f,
+    -0x1.333334p-57f, -0x1.55240ep-1f, -0x1.9ce422p-1f, 0x1.926764p+1f,
     /* node 2543 x */
-    -0x1.4cccccp-57f, 0x1.e7c56ep+0f, -0x1.1371a6p-3f, -0x1.c2843cp-2f,
+    -0x1.7e6666p-54f, 0x1.e82692p+0f, -0x1.135554p-3f, -0x1.c27b9ap-2f,
     /* node 2543 y */
-    0x1.3e6666p-55f, -0x1.7c7bb6p-1f, 0x1.36655ap-1f, -0x1.12794p-2f,
+    -0x1.bp-55f, -0x1.7cb12ap-1f, 0x1.365206p-1f, -0x1.125acep-2f,
     /* node 2543 z */
-    0x1.0cccccp-56f, -0x1.cf7d86p-2f, -0x1.e7c14ep-2f, 0x1.3910ccp+0f,
+    -0x1.e66666p-57f, -0x1.cf7884p-2f, -0x1.e801f8p-2f, 0x1.39254ep+0f,
     /* node 2616 x */
-    -0x1.d9999ap-55f, 0x1.fc9724p+1f, 0x1.954c04p-2f, -0x1.e2747p+0f,
+    0x1.133334p-53f, 0x1.fcbd4p+1f, 0x1.95a0c2p-2f, -0x1.e23f1ep+0f,
     /* node 2616 y */
-    0x1p-57f, 0x1.498176p+0f, 0x1.8c83bcp+0f, -0x1.4817p+1f,
+    -0x1.b33334p-56f, 0x1.499682p+0f, 0x1.8c9418p+0f, -0x1.481598p+1f,
     /* node 2616 z */
-    0x1.333334p-56f, -0x1.151fc4p+0f, -0x1.010b38p+0f, 0x1.c69c9p+1f,
+    -0x1.666666p-56f, -0x1.1512c6p+0f, -0x1.0119b4p+0f, 0x1.c6ae04p+1f,
     /* node 2648 x */
-    0x1.0b3334p-54f, 0x1.ef8884p+0f, 0x1.8e64cap-14f, -0x1.05fcb6p-1f,
+    0x1.59999ap-56f, 0x1.efe59ap+0f, 0x1.f4e4ep-12f, -0x1.05f716p-1f,
     /* node 2648 y */
-    -0x1.08p-56f, -0x1.8d84dap-2f, 0x1.e5b7cep-2f, -0x1.719384p-3f,
+    0x1.99999ap-57f, -0x1.8d4552p-2f, 0x1.e5cdbp-2f, -0x1.71fe64p-3f,
     /* node 2648 z */
-    0x1.ccccccp-57f, -0x1.8abc0ep-1f, -0x1.12fc74p-1f, 0x1.cd80f6p+0f,
+    -0x1.333334p-56f, -0x1.8aa34cp-1f, -0x1.1310f8p-1f, 0x1.cda7dp+0f,
     /* node 2649 x */
-    0x1.6p-54f, 0x1.34e038p+1f, -0x1.36708cp-5f, -0x1.4146e4p-1f,
+    -0x1.e66666p-56f, 0x1.350728p+1f, -0x1.31ef28p-5f, -0x1.413256p-1f,
     /* node 2649 y */
-    -0x1.59999ap-58f, -0x1.ffaac4p-2f, 0x1.71834p-1f, -0x1.e8ba6ap-3f,
+    -0x1.79999ap-56f, -0x1.ff4d9cp-2f, 0x1.718fbap-1f, -0x1.e936f4p-3f,
     /* node 2649 z */
-    0x1.99999ap-58f, -0x1.99b376p-1f, -0x1.29f0cap-1f, 0x1.02a57p+1f,
+    -0x1.99999ap-56f, -0x1.994cacp-1f, -0x1.2a32cp-1f, 0x1.02b448p+1f,
     /* node 2650 x */
-    0x1.25999ap-53f, 0x1.279048p+1f, 0x1.15fde6p-13f, -0x1.2a0fcep-1f,
+    0x1.69999ap-55f, 0x1.27c3bcp+1f, 0x1.0b7432p-11f, -0x1.29f13cp-1f,
     /* node 2650 y */
-    -0x1.ap-57f, -0x1.6fd44cp-2f, 0x1.547fc6p-1f, -0x1.f86242p-3f,
+    0x1p-60f, -0x1.6f822ap-2f, 0x1.5498f2p-1f, -0x1.f84f1p-3f,
     /* node 2650 z */
-    -0x1.99999ap-60f, -0x1.a8b8a2p-1f, -0x1.3c97ep-1f, 0x1.1b00b8p+1f,
+    -0x1.333334p-56f, -0x1.a8a572p-1f, -0x1.3cacc8p-1f, 0x1.1b132ap+1f,
     /* node 2677 x */
-    0x1.49999ap-55f, 0x1.09b438p+1f, 0x1.1889dp-5f, -0x1.d87fb2p-2f,
+    -0x1.0cccccp-56f, 0x1.09ea7p+1f, 0x1.1c4d8p-5f, -0x1.d87824p-2f,
     /* node 2677 y */
-    -0x1.5cccccp-56f, -0x1.b36a68p-3f, 0x1.1982fp-1f, -0x1.fc41cap-3f,
+    0x1.666666p-58f, -0x1.b27864p-3f, 0x1.19a4bap-1f, -0x1.fc5c1p-3f,
     /* node 2677 z */
-    0x1p-57f, -0x1.9449dp-1f, -0x1.51381ep-1f, 0x1.1f00e4p+1f,
+    0x1.99999ap-59f, -0x1.943f1ap-1f, -0x1.514ae2p-1f, 0x1.1f0e88p+1f,
     /* node 2678 x */
-    0x1.ccccccp-59f, 0x1.f1a2dep+0f, 0x1.845e5cp-6f, -0x1.dedbaep-2f,
+    0x1.59999ap-55f, 0x1.f20092p+0f, 0x1.8b0992p-6f, -0x1.dedaf6p-2f,
     /* node 2678 y */
-    -0x1.066666p-57f, -0x1.236724p-2f, 0x1.ee655ap-2f, -0x1.916844p-3f,
+    -0x1.e9999ap-56f, -0x1.23071p-2f, 0x1.ee9dap-2f, -0x1.918088p-3f,
     /* node 2678 z */
-    -0x1.99999ap-57f, -0x1.8bf2bp-1f, -0x1.2ef6dcp-1f, 0x1.011fep+1f,
+    0x1.333334p-58f, -0x1.8bf75ap-1f, -0x1.2f0d44p-1f, 0x1.0134eep+1f,
     /* node 2702 x */
-    0x1.033334p-54f, 0x1.d5a1cp+0f, 0x1.3d497ep-3f, -0x1.d784cep-2f,
+    -0x1.8cccccp-57f, 0x1.d5dcbcp+0f, 0x1.3da0f2p-3f, -0x1.d72d3ap-2f,
     /* node 2702 y */
-    0x1.0cccccp-55f, 0x1.3818bep-1f, 0x1.22009ep+0f, -0x1.8089d8p+0f,
+    0x1.4p-56f, 0x1.38389p-1f, 0x1.221236p+0f, -0x1.809e0cp+0f,
     /* node 2702 z */
-    0x1p-57f, -0x1.277908p-2f, -0x1.894e0ap-1f, 0x1.7e1d72p+0f,
+    -0x1.333334p-57f, -0x1.276abap-2f, -0x1.896af2p-1f, 0x1.7e5234p+0f,
     /* node 2703 x */
-    -0x1.89999ap-55f, 0x1.037694p+1f, 0x1.b6f28p-3f, -0x1.21e44ep-1f,
+    0x1.566666p-54f, 0x1.03a088p+1f, 0x1.b7707ap-3f, -0x1.21bb28p-1f,
     /* node 2703 y */
-    -0x1.4cccccp-56f, 0x1.536592p-1f, 0x1.39b388p+0f, -0x1.9cd67cp+0f,
+    -0x1.99999ap-59f, 0x1.538a2cp-1f, 0x1.39dff2p+0f, -0x1.9d006ap+0f,
     /* node 2703 z */
-    0x1.666666p-56f, -0x1.3881ccp-2f, -0x1.93d84p-1f, 0x1.98d2f2p+0f,
+    -0x1.333334p-58f, -0x1.387a56p-2f, -0x1.93fadp-1f, 0x1.990fe8p+0f,
     /* node 2784 x */
-    0x1.49999ap-53f, 0x1.0eb04cp+2f, 0x1.e4a3b2p-3f, -0x1.bd86d6p+0f,
+    0x1.19999ap-54f, 0x1.0ecdbep+2f, 0x1.e5866cp-3f, -0x1.bd78c6p+0f,
     /* node 2784 y */
-    -0x1.733334p-55f, 0x1.ca4eacp+0f, 0x1.5d6d5p+0f, -0x1.2afd6p+1f,
+    0x1.8cccccp-54f, 0x1.ca6dccp+0f, 0x1.5d809cp+0f, -0x1.2afd2ep+1f,
     /* node 2784 z */
-    0x1.e66666p-56f, -0x1.2f45acp+0f, -0x1.b338p-1f, 0x1.74f192p+1f,
+    -0x1.99999ap-58f, -0x1.2f459p+0f, -0x1.b35be4p-1f, 0x1.75118ap+1f,
     /* node 2785 x */
-    0x1.366666p-53f, 0x1.10fe0ap+2f, 0x1.36737ep-3f, -0x1.937c1p+0f,
+    0x1.6p-53f, 0x1.110f5p+2f, 0x1.372aa2p-3f, -0x1.935566p+0f,
     /* node 2785 y */
-    -0x1.333334p-56f, 0x1.a254p+0f, 0x1.571adp+0f, -0x1.102212p+1f,
+    -0x1.59999ap-55f, 0x1.a26574p+0f, 0x1.572774p+0f, -0x1.101db8p+1f,
     /* node 2785 z */
-    0x1.39999ap-54f, -0x1.3b775cp+0f, -0x1.b58546p-1f, 0x1.78b056p+1f,
+    -0x1.8p-56f, -0x1.3b7036p+0f, -0x1.b5a7d4p-1f, 0x1.78c836p+1f,
     /* node 2965 x */
-    0x1.ccccccp-56f, 0x1.b123fap+1f, 0x1.a1cb7ep-2f, -0x1.661e8ap+0f,
+    0x1.09999ap-54f, 0x1.b14c76p+1f, 0x1.a1e814p-2f, -0x1.65d7b2p+0f,
     /* node 2965 y */
-    -0x0p+0f, 0x1.d823f6p-2f, 0x1.718cep+0f, -0x1.0c612cp+1f,
+    0x1.99999ap-59f, 0x1.d8c21ep-2f, 0x1.71934ep+0f, -0x1.0c7d9ap+1f,
     /* node 2965 z */
-    -0x1.333334p-57f, -0x1.228e48p-1f, -0x1.16d56cp+0f, 0x1.ab4a4ap+1f,
+    0x1.99999ap-57f, -0x1.22aacp-1f, -0x1.16ea4ap+0f, 0x1.ab78ccp+1f,
     /* node 2966 x */
-    0x1.466666p-53f, 0x1.bbd998p+1f, 0x1.4d625p-2f, -0x1.3090dcp+0f,
+    -0x1.99999ap-56f, 0x1.bc0042p+1f, 0x1.4d7a56p-2f, -0x1.3089dcp+0f,
     /* node 2966 y */
-    0x1.333334p-57f, 0x1.2032d8p-3f, 0x1.63e5fp+0f, -0x1.a5ae6cp+0f,
+    -0x1.99999ap-59f, 0x1.204448p-3f, 0x1.63de26p+0f, -0x1.a5a2fp+0f,
     /* node 2966 z */
-    0x1.99999ap-58f, -0x1.c53784p-2f, -0x1.125aeep+0f, 0x1.a102b2p+1f,
+    -0x1.ccccccp-56f, -0x1.c4d5f6p-2f, -0x1.126682p+0f, 0x1.a0f9fap+1f,
     /* node 2967 x */
-    0x1.ap-55f, 0x1.91598ap+1f, 0x1.5ab542p-2f, -0x1.236accp+0f,
+    -0x1.a66666p-56f, 0x1.918178p+1f, 0x1.5ae3aap-2f, -0x1.233804p+0f,
     /* node 2967 y */
-    -0x1.cp-55f, 0x1.bbc4cap-3f, 0x1.4c86aap+0f, -0x1.c933c8p+0f,
+    -0x1p-56f, 0x1.bc166ep-3f, 0x1.4c8ab2p+0f, -0x1.c9407cp+0f,
     /* node 2967 z */
-    0x1.666666p-57f, -0x1.96e084p-2f, -0x1.090184p+0f, 0x1.7b0ef2p+1f,
+    -0x1.19999ap-56f, -0x1.969b0ep-2f, -0x1.0900e4p+0f, 0x1.7b15f2p+1f,
     /* node 3093 x */
-    -0x1.666666p-58f, 0x1.795ba6p+1f, 0x1.1677ep-1f, -0x1.354a78p+0f,
+    -0x1.99999ap-61f, 0x1.7981f4p+1f, 0x1.168ba6p-1f, -0x1.352ffep+0f,
     /* node 3093 y */
-    0x1.19999ap-55f, 0x1.cd5db8p+0f, 0x1.584efap+0f, -0x1.19a3e8p+1f,
+    -0x1.99999ap-59f, 0x1.cd7682p+0f, 0x1.586002p+0f, -0x1.199f5p+1f,
     /* node 3093 z */
-    -0x1.333334p-58f, -0x1.c02086p-3f, -0x1.2ff102p-1f, 0x1.72e0b6p+0f,
+    0x1.333334p-59f, -0x1.bfd108p-3f, -0x1.300eb2p-1f, 0x1.7320fcp+0f,
     /* node 3098 x */
-    0x1.b9999ap-54f, 0x1.eedebcp+1f, 0x1.9742aap-4f, -0x1.0f629ep+0f,
+    0x1.4cccccp-53f, 0x1.ef0848p+1f, 0x1.988af8p-4f, -0x1.0f506ap+0f,
     /* node 3098 y */
-    -0x1p-55f, 0x1.af669p+0f, 0x1.0885eep+0f, -0x1.a9bbeap+0f,
+    -0x1.333334p-58f, 0x1.af81c4p+0f, 0x1.089b7p+0f, -0x1.a9b9fep+0f,
     /* node 3098 z */
-    0x1p-55f, -0x1.73262cp-1f, -0x1.7b46e8p-1f, 0x1.0520b6p+1f,
+    -0x1.666666p-56f, -0x1.731d32p-1f, -0x1.7b705ep-1f, 0x1.053fbep+1f,
     /* node 3105 x */
-    0x1.35b334p-54f, 0x1.758234p+1f, -0x1.728138p-5f, -0x1.782cacp-5f,
+    0x1.384cccp-54f, 0x1.75aa8cp+1f, -0x1.6ee342p-5f, -0x1.76f772p-5f,
     /* node 3105 y */
-    -0x1.4p-57f, 0x1.b551acp-3f, 0x1.d5e176p-1f, -0x1.43c7dap-1f,
+    0x1.4p-56f, 0x1.b695f8p-3f, 0x1.d603b4p-1f, -0x1.43efcp-1f,
     /* node 3105 z */
-    -0x1.99999ap-58f, -0x1.b41262p-2f, -0x1.e4e896p-1f, 0x1.70ea4cp+1f,
+    -0x1.333334p-57f, -0x1.b3f26p-2f, -0x1.e4fe18p-1f, 0x1.70fd92p+1f,
     /* node 3106 x */
-    0x1.25999ap-55f, 0x1.0706fp+1f, 0x1.cf1caep-7f, -0x1.cecb8ep-4f,
+    -0x1.f33334p-57f, 0x1.072fbcp+1f, 0x1.d57384p-7f, -0x1.d014dp-4f,
     /* node 3106 y */
-    0x1.e66666p-58f, 0x1.453786p-4f, 0x1.04012cp-1f, -0x1.741c66p-2f,
+    -0x1.e66666p-58f, 0x1.47b6bep-4f, 0x1.04013ep-1f, -0x1.73b87cp-2f,
     /* node 3106 z */
-    0x1p-57f, -0x1.11eb4cp-1f, -0x1.a2ccd4p-1f, 0x1.3324a2p+1f,
+    0x1.333334p-57f, -0x1.11e32p-1f, -0x1.a2ed66p-1f, 0x1.33476cp+1f,
     /* node 3107 x */
-    0x1.5cccccp-54f, 0x1.4ebf9p+1f, 0x1.fb9bfp-9f, -0x1.ac519p-3f,
+    0x1.32p-53f, 0x1.4ef49ep+1f, 0x1.23d5acp-8f, -0x1.ac1558p-3f,
     /* node 3107 y */
-    -0x1.99999ap-59f, 0x1.33c466p-4f, 0x1.a7fbaep-1f, -0x1.05a4cep-1f,
+    -0x1.d9999ap-57f, 0x1.377d0ap-4f, 0x1.a8288p-1f, -0x1.0606fep-1f,
     /* node 3107 z */
-    0x1.333334p-56f, -0x1.282208p-1f, -0x1.d2a932p-1f, 0x1.70e4dp+1f,
+    -0x1p-56f, -0x1.280c9ap-1f, -0x1.d2c946p-1f, 0x1.70f9a4p+1f,
     /* node 3162 x */
-    0x1p-53f, 0x1.eeb0b4p+1f, 0x1.e9bda4p-3f, -0x1.513b5ep+0f,
+    0x1.cp-55f, 0x1.eede08p+1f, 0x1.ea6a5ap-3f, -0x1.512c72p+0f,
     /* node 3162 y */
-    0x1.99999ap-56f, 0x1.e91e78p+0f, 0x1.1e8caep+0f, -0x1.eefcd6p+0f,
+    0x1.533334p-54f, 0x1.e94062p+0f, 0x1.1ea60ap+0f, -0x1.eefd4ep+0f,
     /* node 3162 z */
-    -0x1.ccccccp-56f, -0x1.4bb2acp-1f, -0x1.678f94p-1f, 0x1.f7820cp+0f,
+    -0x1.99999ap-55f, -0x1.4bc5b4p-1f, -0x1.67b73ep-1f, 0x1.f7c9cep+0f,
     /* node 3163 x */
-    0x1.19999ap-57f, 0x1.e1b16ep+1f, 0x1.3b9c12p-2f, -0x1.5aaab6p+0f,
+    0x1.b33334p-53f, 0x1.e1d53ap+1f, 0x1.3be72ap-2f, -0x1.5a8e4ep+0f,
     /* node 3163 y */
-    0x1.e66666p-55f, 0x1.f6326p+0f, 0x1.2809b6p+0f, -0x1.035aep+1f,
+    -0x1.99999ap-55f, 0x1.f649e2p+0f, 0x1.281c0ap+0f, -0x1.03558ep+1f,
     /* node 3163 z */
-    -0x1.99999ap-58f, -0x1.20d748p-1f, -0x1.5e1ab4p-1f, 0x1.e28fcp+0f,
+    -0x1.8p-55f, -0x1.20b8fep-1f, -0x1.5e3cf8p-1f, 0x1.e2cd8cp+0f,
     /* node 3184 x */
-    0x1.19999ap-54f, 0x1.caa5d6p+1f, 0x1.c23978p-2f, -0x1.9fbb64p+0f,
+    -0x1.233334p-53f, 0x1.cace72p+1f, 0x1.c280c4p-2f, -0x1.9f956cp+0f,
     /* node 3184 y */
-    -0x1.99999ap-57f, 0x1.80b7d8p-1f, 0x1.8872fp+0f, -0x1.30759cp+1f,
+    0x1.266666p-55f, 0x1.80c47ep-1f, 0x1.8874acp+0f, -0x1.307178p+1f,
     /* node 3184 z */
-    -0x1.333334p-57f, -0x1.7e0b9cp-1f, -0x1.16d01p+0f, 0x1.bf95bep+1f,
+    -0x1.99999ap-57f, -0x1.7de8aap-1f, -0x1.16d55ep+0f, 0x1.bf9c5ep+1f,
     /* node 3199 x */
-    0x1.19999ap-55f, 0x1.b1db82p+1f, 0x1.f9a9acp-2f, -0x1.8ad67ep+0f,
+    0x1.e66666p-56f, 0x1.b1fffep+1f, 0x1.f9dd62p-2f, -0x1.8aadbap+0f,
     /* node 3199 y */
-    0x1.f33334p-55f, 0x1.945e0cp+0f, 0x1.7e26eep+0f, -0x1.3d70e4p+1f,
+    0x1.266666p-55f, 0x1.9464b4p+0f, 0x1.7e1efcp+0f, -0x1.3d5e34p+1f,
     /* node 3199 z */
-    -0x1.8p-55f, -0x1.536b7ep-1f, -0x1.ba03b2p-1f, 0x1.2f226p+1f,
+    -0x1.99999ap-58f, -0x1.53575p-1f, -0x1.ba120ap-1f, 0x1.2f3a4cp+1f,
     /* node 3200 x */
-    -0x1.666666p-54f, 0x1.b33a6cp+1f, 0x1.0268a8p-1f, -0x1.873698p+0f,
+    0x1.333334p-55f, 0x1.b35f2cp+1f, 0x1.02779ap-1f, -0x1.870d4ap+0f,
     /* node 3200 y */
-    -0x1.99999ap-58f, 0x1.b91c3p+0f, 0x1.706a08p+0f, -0x1.373c32p+1f,
+    0x1.333334p-57f, 0x1.b938dep+0f, 0x1.70801p+0f, -0x1.373a98p+1f,
     /* node 3200 z */
-    -0x1.19999ap-56f, -0x1.31574ep-1f, -0x1.95a8dap-1f, 0x1.12fdap+1f,
+    -0x1.333334p-58f, -0x1.314362p-1f, -0x1.95c4ep-1f, 0x1.1319b8p+1f,
     /* node 3201 x */
-    0x1p-57f, 0x1.cbd21cp+1f, 0x1.e022b4p-2f, -0x1.ad75d4p+0f,
+    0x1.8p-53f, 0x1.cbf912p+1f, 0x1.e05e7ap-2f, -0x1.ad4f0cp+0f,
     /* node 3201 y */
-    -0x1.99999ap-56f, 0x1.ab5c7ap+0f, 0x1.79e85p+0f, -0x1.44b12ep+1f,
+    0x1.133334p-54f, 0x1.ab6d5ep+0f, 0x1.79e8e2p+0f, -0x1.44a6d4p+1f,
     /* node 3201 z */
-    -0x1.99999ap-59f, -0x1.89c0bcp-1f, -0x1.bc8d02p-1f, 0x1.42fbacp+1f,
+    0x1.99999ap-60f, -0x1.8995e4p-1f, -0x1.bca9eep-1f, 0x1.43084ap+1f,
     /* node 3202 x */
-    0x1.333334p-55f, 0x1.baa9a4p+1f, 0x1.e6f16ep-2f, -0x1.9c8376p+0f,
+    0x1.c33334p-53f, 0x1.bac69ep+1f, 0x1.e719fep-2f, -0x1.9c4564p+0f,
     /* node 3202 y */
-    0x1.99999ap-59f, 0x1.8085dap+0f, 0x1.84ea04p+0f, -0x1.45e5cep+1f,
+    -0x1.4cccccp-56f, 0x1.8094c8p+0f, 0x1.84f18ep+0f, -0x1.45db4cp+1f,
     /* node 3202 z */
-    -0x1p-56f, -0x1.7b9836p-1f, -0x1.d467d6p-1f, 0x1.4e0824p+1f,
+    -0x1.b33334p-56f, -0x1.7b6a72p-1f, -0x1.d467fp-1f, 0x1.4e1d42p+1f,
     /* node 3203 x */
-    -0x1.b33334p-55f, 0x1.0aac8ep+2f, 0x1.2092e6p-3f, -0x1.6fafp+0f,
+    -0x1.99999ap-55f, 0x1.0abd24p+2f, 0x1.2137bcp-3f, -0x1.6f8352p+0f,
     /* node 3203 y */
-    0x1.333334p-55f, 0x1.d018aap+0f, 0x1.348c18p+0f, -0x1.02661cp+1f,
+    -0x1.3cccccp-53f, 0x1.d02c6ep+0f, 0x1.34a0bap+0f, -0x1.025e2ep+1f,
     /* node 3203 z */
-    0x1p-56f, -0x1.066096p+0f, -0x1.988edap-1f, 0x1.3daf7cp+1f,
+    -0x1.ccccccp-55f, -0x1.065ab6p+0f, -0x1.98b4dp-1f, 0x1.3dcaa4p+1f,
     /* node 3204 x */
-    0x1.cp-54f, 0x1.0ea6e2p+2f, 0x1.cbf1b4p-4f, -0x1.718208p+0f,
+    0x1.ccccccp-56f, 0x1.0eb6d4p+2f, 0x1.cd45cep-4f, -0x1.715474p+0f,
     /* node 3204 y */
-    0x1.266666p-54f, 0x1.ac5086p+0f, 0x1.448a2p+0f, -0x1.0114ep+1f,
+    -0x1.4cccccp-56f, 0x1.ac6a78p+0f, 0x1.449ebcp+0f, -0x1.0110ap+1f,
     /* node 3204 z */
-    0x1.99999ap-57f, -0x1.2ba9fep+0f, -0x1.a9c544p-1f, 0x1.5e92ccp+1f,
+    0x1.e66666p-56f, -0x1.2ba436p+0f, -0x1.a9ec84p-1f, 0x1.5ead9ap+1f,
     /* node 3205 x */
-    0x1.e66666p-53f, 0x1.0ed184p+2f, 0x1.4d90b8p-3f, -0x1.8ec982p+0f,
+    0x1p-56f, 0x1.0ee4fcp+2f, 0x1.4e54c6p-3f, -0x1.8eadb8p+0f,
     /* node 3205 y */
-    -0x1.8cccccp-54f, 0x1.cdef6p+0f, 0x1.44e744p+0f, -0x1.106624p+1f,
+    -0x1.99999ap-58f, 0x1.ce04f2p+0f, 0x1.44f688p+0f, -0x1.10645p+1f,
     /* node 3205 z */
-    -0x1.8p-56f, -0x1.1e96bep+0f, -0x1.a2888p-1f, 0x1.544c0cp+1f,
+    -0x1.733334p-55f, -0x1.1e8dp+0f, -0x1.a2aa14p-1f, 0x1.546438p+1f,
     /* node 3259 x */
-    -0x1.91999ap-54f, 0x1.457432p+1f, 0x1.11b8cp-3f, -0x1.1b90cp-1f,
+    -0x1.0e6666p-54f, 0x1.459aa2p+1f, 0x1.11fee4p-3f, -0x1.1b472ap-1f,
     /* node 3259 y */
-    0x1p-55f, 0x1.6ba06ep-5f, 0x1.20b482p+0f, -0x1.8dbef2p+0f,
+    -0x0p+0f, 0x1.6c5b1ap-5f, 0x1.20bbe8p+0f, -0x1.8dcf12p+0f,
     /* node 3259 z */
-    -0x1.99999ap-57f, -0x1.f2262cp-3f, -0x1.e2e28ep-1f, 0x1.2b7218p+1f,
+    0x1.ccccccp-57f, -0x1.f1eebcp-3f, -0x1.e2f02p-1f, 0x1.2b85c2p+1f,
     /* node 3260 x */
-    0x1.633334p-54f, 0x1.5d110cp+1f, 0x1.7d02dcp-3f, -0x1.612096p-1f,
+    0x1.126666p-53f, 0x1.5d387ep+1f, 0x1.7d51b6p-3f, -0x1.60d7cep-1f,
     /* node 3260 y */
-    -0x1.666666p-57f, -0x1.5edbd8p-5f, 0x1.1dd394p+0f, -0x1.74fd34p+0f,
+    -0x1.4cccccp-57f, -0x1.5eb1bap-5f, 0x1.1dda66p+0f, -0x1.75082cp+0f,
     /* node 3260 z */
-    -0x1.333334p-57f, -0x1.b9b13ap-3f, -0x1.da01c2p-1f, 0x1.2ec8c4p+1f,
+    0x1.19999ap-56f, -0x1.b96f04p-3f, -0x1.da0bbp-1f, 0x1.2edbc6p+1f,
     /* node 3338 x */
-    0x1.4p-56f, 0x1.191558p+1f, 0x1.b1cf76p-6f, -0x1.b56e94p-3f,
+    -0x1.566666p-54f, 0x1.1940ep+1f, 0x1.b5c7a2p-6f, -0x1.b5f914p-3f,
     /* node 3338 y */
-    -0x1.cp-57f, 0x1.5e2718p-6f, 0x1.3557aep-1f, -0x1.8a1b22p-2f,
+    -0x0p+0f, 0x1.5f97e8p-6f, 0x1.357424p-1f, -0x1.8a83bep-2f,
     /* node 3338 z */
-    -0x1.ccccccp-56f, -0x1.3b0b5cp-1f, -0x1.a0f984p-1f, 0x1.43ff38p+1f,
+    -0x1.19999ap-56f, -0x1.3b5956p-1f, -0x1.a13f2p-1f, 0x1.440f8ep+1f,
     /* node 3339 x */
-    0x1.55999ap-54f, 0x1.362444p+1f, 0x1.fa9e8ap-6f, -0x1.50c2f6p-2f,
+    0x1.6p-55f, 0x1.3654aep+1f, 0x1.00b4p-5f, -0x1.516c2p-2f,
     /* node 3339 y */
-    -0x1.99999ap-61f, -0x1.644782p-5f, 0x1.79003ep-1f, -0x1.9dbaa8p-2f,
+    -0x1.733334p-57f, -0x1.5f219p-5f, 0x1.794254p-1f, -0x1.9dc46ep-2f,
     /* node 3339 z */
-    -0x0p+0f, -0x1.67fa0cp-1f, -0x1.a98ff6p-1f, 0x1.618d3p+1f,
+    -0x1.ccccccp-57f, -0x1.67f2a6p-1f, -0x1.a9967ap-1f, 0x1.61b90ep+1f,
     /* node 3378 x */
-    0x1.e66666p-56f, 0x1.b6aaap+1f, 0x1.e997dap-2f, -0x1.aee486p+0f,
+    0x1.19999ap-56f, 0x1.b6d53cp+1f, 0x1.e9d624p-2f, -0x1.aec3ep+0f,
     /* node 3378 y */
-    0x1.19999ap-56f, 0x1.553af2p+0f, 0x1.91a9dp+0f, -0x1.5ad896p+1f,
+    0x1.666666p-57f, 0x1.555022p+0f, 0x1.91ae5ep+0f, -0x1.5ad4fcp+1f,
     /* node 3378 z */
-    -0x1.666666p-57f, -0x1.841cfp-1f, -0x1.f6f702p-1f, 0x1.723bb2p+1f,
+    -0x1.2cccccp-54f, -0x1.8404fap-1f, -0x1.f71dc6p-1f, 0x1.725p+1f,
     /* node 3379 x */
-    0x1.266666p-53f, 0x1.a9b4dcp+1f, 0x1.e6a5e4p-2f, -0x1.8aa5aap+0f,
+    -0x1.4cccccp-54f, 0x1.a9de44p+1f, 0x1.e70234p-2f, -0x1.8a89e2p+0f,
     /* node 3379 y */
-    -0x1.99999ap-56f, 0x1.5fd0cap+0f, 0x1.8c1fb8p+0f, -0x1.4864cap+1f,
+    -0x1.59999ap-55f, 0x1.5fe656p+0f, 0x1.8c27b8p+0f, -0x1.485e8p+1f,
     /* node 3379 z */
-    -0x1.19999ap-56f, -0x1.635798p-1f, -0x1.e37eecp-1f, 0x1.505cdep+1f,
+    0x1.99999ap-58f, -0x1.633c2ap-1f, -0x1.e39afcp-1f, 0x1.506a66p+1f,
     /* node 3380 x */
-    -0x1.99999ap-56f, 0x1.c4c4fap+1f, 0x1.e3271ep-2f, -0x1.bc5062p+0f,
+    0x1p-55f, 0x1.c4f014p+1f, 0x1.e38398p-2f, -0x1.bc25f2p+0f,
     /* node 3380 y */
-    -0x1.8p-56f, 0x1.7b36dap+0f, 0x1.8b7fd2p+0f, -0x1.59c83cp+1f,
+    0x1.b33334p-54f, 0x1.7b3fb2p+0f, 0x1.8b8d2ep+0f, -0x1.59b9eep+1f,
     /* node 3380 z */
-    0x1.4cccccp-56f, -0x1.9eb4a4p-1f, -0x1.e5a166p-1f, 0x1.6c7c06p+1f,
+    -0x1.99999ap-58f, -0x1.9e9258p-1f, -0x1.e5b2dep-1f, 0x1.6c95bep+1f,
     /* node 3381 x */
-    0x1.733334p-53f, 0x1.cf82cap+1f, 0x1.e75e0cp-2f, -0x1.da9b12p+0f,
+    0x1.b9999ap-54f, 0x1.cfae8cp+1f, 0x1.e7b0e8p-2f, -0x1.da7066p+0f,
     /* node 3381 y */
-    -0x1.b33334p-55f, 0x1.6ee64ap+0f, 0x1.915d4cp+0f, -0x1.685926p+1f,
+    0x1.99999ap-58f, 0x1.6ef99cp+0f, 0x1.916a66p+0f, -0x1.684bf4p+1f,
     /* node 3381 z */
-    -0x1.333334p-57f, -0x1.bba3dep-1f, -0x1.f6719cp-1f, 0x1.8a3064p+1f,
+    0x1.99999ap-59f, -0x1.bb8d1p-1f, -0x1.f68634p-1f, 0x1.8a47e6p+1f,
     /* node 3404 x */
-    -0x1.066666p-54f, 0x1.23d154p+1f, 0x1.ebc7fep-6f, -0x1.b686cap-2f,
+    0x1.65999ap-53f, 0x1.2402a2p+1f, 0x1.f21122p-6f, -0x1.b6c4cap-2f,
     /* node 3404 y */
-    -0x1.a66666p-58f, -0x1.1a8294p-3f, 0x1.4de872p-1f, -0x1.4ff534p-2f,
+    -0x1.333334p-60f, -0x1.19dd08p-3f, 0x1.4dfd68p-1f, -0x1.4fbf2ap-2f,
     /* node 3404 z */
-    -0x1.19999ap-56f, -0x1.8a67e6p-1f, -0x1.7d65e4p-1f, 0x1.435beep+1f,
+    -0x1.0cccccp-55f, -0x1.8a822ep-1f, -0x1.7d8f82p-1f, 0x1.435a44p+1f,
     /* node 3435 x */
-    -0x1.a66666p-55f, 0x1.5d673cp+1f, 0x1.26ea02p-2f, -0x1.daec9p-1f,
+    0x1.426666p-52f, 0x1.5d8d8ap+1f, 0x1.26ed46p-2f, -0x1.daa994p-1f,
     /* node 3435 y */
-    0x1.4cccccp-56f, 0x1.223818p-1f, 0x1.6cac4cp+0f, -0x1.017b2p+1f,
+    -0x0p+0f, 0x1.2262aep-1f, 0x1.6cb984p+0f, -0x1.01833cp+1f,
     /* node 3435 z */
-    -0x1.b33334p-56f, -0x1.cc100ep-2f, -0x1.04987ep+0f, 0x1.3ea4dep+1f,
+    -0x1.333334p-57f, -0x1.cc0794p-2f, -0x1.04a938p+0f, 0x1.3ebf06p+1f,
     /* node 3436 x */
-    0x1.066666p-54f, 0x1.753e78p+1f, 0x1.695898p-2f, -0x1.1cbd34p+0f,
+    0x1.0cccccp-55f, 0x1.75650cp+1f, 0x1.69783p-2f, -0x1.1c9da8p+0f,
     /* node 3436 y */
-    -0x1p-56f, 0x1.7767c4p-1f, 0x1.7dc96p+0f, -0x1.1a3c3ap+1f,
+    0x1.59999ap-55f, 0x1.777c0ap-1f, 0x1.7dc47ap+0f, -0x1.1a368ap+1f,
     /* node 3436 z */
-    -0x1.99999ap-56f, -0x1.09fb8cp-1f, -0x1.0754ap+0f, 0x1.52ed04p+1f,
+    0x1.333334p-58f, -0x1.09f362p-1f, -0x1.074eb2p+0f, 0x1.52fbc2p+1f,
     /* node 3437 x */
-    0x1.e66666p-56f, 0x1.7d1bb6p+1f, 0x1.53beep-2f, -0x1.1efbccp+0f,
+    0x1.533334p-54f, 0x1.7d474p+1f, 0x1.53e3aep-2f, -0x1.1ee70ap+0f,
     /* node 3437 y */
-    0x1p-56f, 0x1.3aab04p-1f, 0x1.7919f4p+0f, -0x1.1b05f8p+1f,
+    0x1.99999ap-58f, 0x1.3abf14p-1f, 0x1.7922d8p+0f, -0x1.1b07cp+1f,
     /* node 3437 z */
-    0x1p-56f, -0x1.0598cp-1f, -0x1.0da9b2p+0f, 0x1.683ed6p+1f,
+    0x1.99999ap-56f, -0x1.058398p-1f, -0x1.0dac38p+0f, 0x1.684b9ep+1f,
     /* node 3438 x */
-    0x1.4p-54f, 0x1.5fbf6ap+1f, 0x1.e89e54p-3f, -0x1.b4d2fep-1f,
+    -0x1.ecccccp-55f, 0x1.5fe76ap+1f, 0x1.e8cbaap-3f, -0x1.b497c8p-1f,
     /* node 3438 y */
-    0x1.19999ap-56f, 0x1.82785ep-2f, 0x1.5a4f8cp+0f, -0x1.f21564p+0f,
+    -0x1.99999ap-60f, 0x1.82accep-2f, 0x1.5a46c6p+0f, -0x1.f21aaap+0f,
     /* node 3438 z */
-    -0x1.19999ap-56f, -0x1.9c94eap-2f, -0x1.0719b4p+0f, 0x1.4e0a1cp+1f,
+    -0x1.99999ap-58f, -0x1.9c807ap-2f, -0x1.0726ep+0f, 0x1.4e2592p+1f,
     /* node 3498 x */
-    0x1.98b334p-53f, 0x1.d48ed2p+1f, -0x1.0de53p-3f, -0x1.f5b26p-5f,
+    -0x1.7p-54f, 0x1.d4b6c2p+1f, -0x1.0d0012p-3f, -0x1.f4e79cp-5f,
     /* node 3498 y */
-    0x1.4p-56f, 0x1.36eaf8p-2f, 0x1.316ec8p+0f, -0x1.9de9fcp-1f,
+    -0x1.cp-56f, 0x1.378576p-2f, 0x1.317b22p+0f, -0x1.9e04dep-1f,
     /* node 3498 z */
-    -0x1.e66666p-55f, -0x1.b199bcp-2f, -0x1.fc5688p-1f, 0x1.8e138cp+1f,
+    0x1.ccccccp-56f, -0x1.b1660ap-2f, -0x1.fc7096p-1f, 0x1.8e274cp+1f,
     /* node 3499 x */
-    -0x1.9cp-54f, 0x1.1c49f6p+2f, -0x1.027046p-2f, -0x1.f7997p-3f,
+    0x1.1cp-53f, 0x1.1c5eep+2f, -0x1.01f486p-2f, -0x1.f74728p-3f,
     /* node 3499 y */
-    -0x1.133334p-55f, 0x1.d82e4p-3f, 0x1.a1ca3ep+0f, -0x1.f5d022p-1f,
+    -0x1.99999ap-59f, 0x1.d9296ep-3f, 0x1.a1d522p+0f, -0x1.f5e66ap-1f,
     /* node 3499 z */
-    -0x1.99999ap-55f, -0x1.2a174ep-1f, -0x1.0c92ep+0f, 0x1.ca081p+1f,
+    -0x1.99999ap-58f, -0x1.2a02fp-1f, -0x1.0ca208p+0f, 0x1.ca194ap+1f,
     /* node 3500 x */
-    0x1.9b3334p-54f, 0x1.0cb1f4p+2f, -0x1.c71ad4p-3f, -0x1.0eaaep-1f,
+    0x1.01999ap-52f, 0x1.0cc604p+2f, -0x1.c631eep-3f, -0x1.0e90e2p-1f,
     /* node 3500 y */
-    -0x1.d9999ap-56f, 0x1.1677d2p-1f, 0x1.4c0108p+0f, -0x1.1eb388p+0f,
+    0x1.99999ap-60f, 0x1.16b8ep-1f, 0x1.4c116ap+0f, -0x1.1eb6fp+0f,
     /* node 3500 z */
-    -0x0p+0f, -0x1.b42d98p-1f, -0x1.eaddc2p-1f, 0x1.7809b8p+1f,
+    0x1.b33334p-56f, -0x1.b414ecp-1f, -0x1.eafda2p-1f, 0x1.781f94p+1f,
     /* node 3535 x */
-    0x1.266666p-55f, 0x1.092842p+2f, 0x1.2683d4p-2f, -0x1.bbbf2cp+0f,
+    0x1p-54f, 0x1.093bcap+2f, 0x1.26d41ap-2f, -0x1.bb911ap+0f,
     /* node 3535 y */
-    -0x1p-56f, 0x1.3012b2p+0f, 0x1.8ba204p+0f, -0x1.2171aep+1f,
+    0x1.666666p-55f, 0x1.3024bep+0f, 0x1.8ba3aap+0f, -0x1.216964p+1f,
     /* node 3535 z */
-    0x1.666666p-56f, -0x1.2ba0c8p+0f, -0x1.f058c4p-1f, 0x1.cc4f2ap+1f,
+    -0x1.99999ap-58f, -0x1.2b8ffcp+0f, -0x1.f07d7ep-1f, 0x1.cc60f4p+1f,
     /* node 3564 x */
-    0x1.d9999ap-54f, 0x1.983ebp+1f, 0x1.13909ap-1f, -0x1.65615ep+0f,
+    0x1.6cccccp-54f, 0x1.9865d8p+1f, 0x1.13aa3cp-1f, -0x1.65428ep+0f,
     /* node 3564 y */
-    -0x1.f33334p-55f, 0x1.c6389cp+0f, 0x1.69e668p+0f, -0x1.2fbfe2p+1f,
+    -0x1.4cccccp-56f, 0x1.c64f2ap+0f, 0x1.69f378p+0f, -0x1.2fb92cp+1f,
     /* node 3564 z */
-    -0x1.99999ap-57f, -0x1.b0c396p-2f, -0x1.6b9f46p-1f, 0x1.d1568ep+0f,
+    0x1p-57f, -0x1.b0a08cp-2f, -0x1.6bb406p-1f, 0x1.d191ecp+0f,
     /* node 3565 x */
-    -0x1.89999ap-54f, 0x1.aba9f6p+1f, 0x1.02ef24p-1f, -0x1.69b2c6p+0f,
+    0x1.eb3334p-53f, 0x1.abd53cp+1f, 0x1.031158p-1f, -0x1.699c46p+0f,
     /* node 3565 y */
-    0x1.ccccccp-56f, 0x1.e3e75cp+0f, 0x1.5898eap+0f, -0x1.266cp+1f,
+    0x1.99999ap-57f, 0x1.e40054p+0f, 0x1.58ab7cp+0f, -0x1.2667cep+1f,
     /* node 3565 z */
-    -0x1.666666p-57f, -0x1.b6a2cap-2f, -0x1.5cee68p-1f, 0x1.c7d03ap+0f,
+    -0x1.e66666p-56f, -0x1.b66982p-2f, -0x1.5d046cp-1f, 0x1.c80d82p+0f,
     /* node 3569 x */
-    0x1.0cccccp-54f, 0x1.c5127ep+0f, 0x1.223cb2p-6f, -0x1.ca1bf6p-2f,
+    -0x1.99999ap-58f, 0x1.c572c4p+0f, 0x1.289f16p-6f, -0x1.c9fae4p-2f,
     /* node 3569 y */
-    -0x1.cp-58f, -0x1.3ded96p-2f, 0x1.9723a2p-2f, -0x1.549842p-3f,
+    -0x1.4cccccp-58f, -0x1.3d9d9ep-2f, 0x1.973ff6p-2f, -0x1.54e558p-3f,
     /* node 3569 z */
-    -0x1.ccccccp-57f, -0x1.8167fcp-1f, -0x1.1600c4p-1f, 0x1.cedf58p+0f,
+    -0x1.4cccccp-56f, -0x1.81606cp-1f, -0x1.16143ep-1f, 0x1.cf120ep+0f,
     /* node 3655 x */
-    0x1.5cccccp-54f, 0x1.5e3b62p+1f, 0x1.18c7f6p-1f, -0x1.210b9p+0f,
+    0x1.d9999ap-55f, 0x1.5e60eep+1f, 0x1.18cdaep-1f, -0x1.20e6d8p+0f,
     /* node 3655 y */
-    0x1.0cccccp-55f, 0x1.83eabep+0f, 0x1.6c85dcp+0f, -0x1.197a54p+1f,
+    -0x1.99999ap-57f, 0x1.8403acp+0f, 0x1.6c9654p+0f, -0x1.197774p+1f,
     /* node 3655 z */
-    0x1.333334p-58f, -0x1.0de5cep-2f, -0x1.553d82p-1f, 0x1.8c8bfep+0f,
+    -0x1.666666p-57f, -0x1.0dd3c4p-2f, -0x1.555fc6p-1f, 0x1.8ccdf2p+0f,
     /* node 3672 x */
-    0x1.0b3334p-53f, 0x1.c6c808p+1f, 0x1.c2aa7p-2f, -0x1.714d0ap+0f,
+    0x1.b33334p-57f, 0x1.c6eacap+1f, 0x1.c2fe76p-2f, -0x1.712b5p+0f,
     /* node 3672 y */
-    0x1.99999ap-54f, 0x1.ef9dbap+0f, 0x1.483c42p+0f, -0x1.1c651ep+1f,
+    0x1.333334p-55f, 0x1.efb9bp+0f, 0x1.484cb6p+0f, -0x1.1c5fdep+1f,
     /* node 3672 z */
-    0x1.666666p-57f, -0x1.ff2884p-2f, -0x1.60e6d6p-1f, 0x1.dbdc2ap+0f,
+    -0x1.333334p-58f, -0x1.fef1b6p-2f, -0x1.610908p-1f, 0x1.dc1c0cp+0f,
     /* node 3689 x */
-    0x1.89999ap-53f, 0x1.1dd8acp+2f, -0x1.14ee84p-3f, -0x1.1efc4cp+0f,
+    0x1.06ccccp-51f, 0x1.1dec62p+2f, -0x1.13fa56p-3f, -0x1.1eea32p+0f,
     /* node 3689 y */
-    0x1.4cccccp-57f, 0x1.7a9efcp-1f, 0x1.7d64fp+0f, -0x1.6f03fap+0f,
+    0x1.733334p-55f, 0x1.7ad1e4p-1f, 0x1.7d6f1cp+0f, -0x1.6f0556p+0f,
     /* node 3689 z */
-    -0x1.8p-55f, -0x1.369abep+0f, -0x1.cd73eap-1f, 0x1.a9bdf4p+1f,
+    -0x1.333334p-55f, -0x1.368e9cp+0f, -0x1.cd9242p-1f, 0x1.a9d262p+1f,
     /* node 3751 x */
-    0x1.0c6666p-52f, 0x1.4c15dep+2f, -0x1.acf32p-3f, -0x1.7cf1b2p-1f,
+    0x1.39999ap-52f, 0x1.4c278ep+2f, -0x1.ac29c2p-3f, -0x1.7cd3dcp-1f,
     /* node 3751 y */
-    0x1.99999ap-59f, -0x1.fb0702p-2f, 0x1.4ee92cp+1f, -0x1.a1272cp-1f,
+    -0x1.733334p-55f, -0x1.fa808ep-2f, 0x1.4ed5c2p+1f, -0x1.a1451p-1f,
     /* node 3751 z */
-    -0x1p-55f, -0x1.5d860ap-1f, -0x1.d733bp-1f, 0x1.214ec4p+2f,
+    -0x1.b33334p-55f, -0x1.5d68a4p-1f, -0x1.d738d4p-1f, 0x1.21543ep+2f,
     /* node 3752 x */
-    0x1.833334p-54f, 0x1.f5a2a8p+1f, -0x1.29c2dp-3f, -0x1.9dd306p-1f,
+    0x1.133334p-52f, 0x1.f5c13ep+1f, -0x1.288986p-3f, -0x1.9db58ep-1f,
     /* node 3752 y */
-    -0x1.99999ap-60f, -0x1.fa57d6p-2f, 0x1.a51a62p+0f, -0x1.e98a92p-2f,
+    -0x1.666666p-56f, -0x1.f9e1bep-2f, 0x1.a51e76p+0f, -0x1.e992c2p-2f,
     /* node 3752 z */
-    -0x1.99999ap-56f, -0x1.c294b4p-1f, -0x1.79ef4ep-1f, 0x1.b36d4cp+1f,
+    -0x1.e66666p-55f, -0x1.c26b5ep-1f, -0x1.7a0154p-1f, 0x1.b37748p+1f,
     /* node 3757 x */
-    0x1.15999ap-53f, 0x1.2713f2p+1f, 0x1.684fdp-2f, -0x1.79ca38p-1f,
+    0x1.8d999ap-53f, 0x1.2733a8p+1f, 0x1.68997ep-2f, -0x1.799d36p-1f,
     /* node 3757 y */
-    0x1.99999ap-60f, 0x1.b6d878p-1f, 0x1.568e54p+0f, -0x1.b714e4p+0f,
+    0x1p-56f, 0x1.b70acap-1f, 0x1.568b32p+0f, -0x1.b70e9ep+0f,
     /* node 3757 z */
-    -0x1.333334p-58f, -0x1.3ad0bep-2f, -0x1.8b2c5cp-1f, 0x1.9f482ap+0f,
+    -0x1.333334p-56f, -0x1.3ac198p-2f, -0x1.8b4ec8p-1f, 0x1.9f7edep+0f,
     /* node 3799 x */
-    0x1.31999ap-54f, 0x1.0310bep+1f, 0x1.0206cep-3f, -0x1.ffc03ep-2f,
+    0x1p-56f, 0x1.032fc4p+1f, 0x1.021dfcp-3f, -0x1.ff2f72p-2f,
     /* node 3799 y */
-    0x1.99999ap-58f, 0x1.bc6d44p-2f, 0x1.297586p+0f, -0x1.9d6a4ep+0f,
+    -0x1.99999ap-59f, 0x1.bc9cc4p-2f, 0x1.296e04p+0f, -0x1.9d63d6p+0f,
     /* node 3799 z */
-    -0x1.333334p-55f, -0x1.4ce126p-2f, -0x1.bb2d5cp-1f, 0x1.d2c466p+0f,
+    -0x1.99999ap-60f, -0x1.4cc8c4p-2f, -0x1.bb3c1cp-1f, 0x1.d2efp+0f,
     /* node 3800 x */
-    0x1.133334p-54f, 0x1.24d6bcp+1f, 0x1.83362ap-3f, -0x1.480b1cp-1f,
+    0x1.65999ap-53f, 0x1.24f89ep+1f, 0x1.83b6bcp-3f, -0x1.47e69cp-1f,
     /* node 3800 y */
-    -0x1.99999ap-58f, 0x1.cd1b82p-2f, 0x1.4195fcp+0f, -0x1.b81ce4p+0f,
+    0x1.4cccccp-56f, 0x1.cd4042p-2f, 0x1.418e1cp+0f, -0x1.b81324p+0f,
     /* node 3800 z */
-    -0x1.99999ap-60f, -0x1.67a8c2p-2f, -0x1.d2caeap-1f, 0x1.02ec1ep+1f,
+    -0x1p-55f, -0x1.679726p-2f, -0x1.d2e27cp-1f, 0x1.03023ap+1f,
     /* node 3952 x */
-    0x1.e33334p-54f, 0x1.7dbe0cp+1f, 0x1.1dd0dp-1f, -0x1.46f56ap+0f,
+    0x1.dp-54f, 0x1.7de436p+1f, 0x1.1dddcap-1f, -0x1.46d614p+0f,
     /* node 3952 y */
-    -0x1.ccccccp-54f, 0x1.be0fb2p+0f, 0x1.67ed12p+0f, -0x1.27576ep+1f,
+    -0x1.333334p-58f, 0x1.be2f7ap+0f, 0x1.6803dep+0f, -0x1.2755e2p+1f,
     /* node 3952 z */
-    0x1.e66666p-56f, -0x1.35e5eep-2f, -0x1.4f7d5ep-1f, 0x1.9ae05p+0f,
+    -0x1.333334p-58f, -0x1.35c5eep-2f, -0x1.4f98d2p-1f, 0x1.9b205cp+0f,
     /* node 3953 x */
-    0x1.b9999ap-54f, 0x1.8ec0cap+1f, 0x1.134ec8p-1f, -0x1.508c0ep+0f,
+    0x1.4cccccp-56f, 0x1.8ee4eap+1f, 0x1.135be2p-1f, -0x1.5069bep+0f,
     /* node 3953 y */
-    0x1.99999ap-55f, 0x1.d9b272p+0f, 0x1.5ce684p+0f, -0x1.25104cp+1f,
+    -0x1.133334p-54f, 0x1.d9ca48p+0f, 0x1.5cf8bp+0f, -0x1.250b96p+1f,
     /* node 3953 z */
-    -0x1.666666p-57f, -0x1.4184f4p-2f, -0x1.476af4p-1f, 0x1.9b5b1ap+0f,
+    -0x1.99999ap-58f, -0x1.41635ap-2f, -0x1.478ab6p-1f, 0x1.9b9d06p+0f,
     /* node 4009 x */
-    0x1.766666p-53f, 0x1.f46abp+1f, 0x1.b830cep-2f, -0x1.f5355ep+0f,
+    -0x1.433334p-53f, 0x1.f484b4p+1f, 0x1.b8795cp-2f, -0x1.f4df7ap+0f,
     /* node 4009 y */
-    -0x1.f33334p-55f, 0x1.ad9378p+0f, 0x1.832832p+0f, -0x1.60f838p+1f,
+    -0x1.99999ap-57f, 0x1.ad9cf8p+0f, 0x1.83311cp+0f, -0x1.60f13cp+1f,
     /* node 4009 z */
-    -0x1.666666p-55f, -0x1.047c66p+0f, -0x1.dbaf3ep-1f, 0x1.8ade74p+1f,
+    -0x1.4cccccp-55f, -0x1.046abep+0f, -0x1.dbd78ep-1f, 0x1.8aecfcp+1f,
     /* node 4029 x */
-    0x1p-56f, 0x1.a52ed6p+1f, 0x1.986786p-2f, -0x1.68dc12p+0f,
+    0x1.29999ap-54f, 0x1.a5584cp+1f, 0x1.98acc8p-2f, -0x1.68c2ap+0f,
     /* node 4029 y */
-    0x1.333334p-57f, 0x1.5fb516p-1f, 0x1.830076p+0f, -0x1.306854p+1f,
+    -0x1.19999ap-56f, 0x1.5fbd7p-1f, 0x1.83043ap+0f, -0x1.306388p+1f,
     /* node 4029 z */
-    -0x1.333334p-57f, -0x1.3586e6p-1f, -0x1.12d21cp+0f, 0x1.959a72p+1f,
+    -0x1.99999ap-58f, -0x1.356ff4p-1f, -0x1.12cd7cp+0f, 0x1.959f06p+1f,
     /* node 4030 x */
-    0x1p-56f, 0x1.8b452p+1f, 0x1.520584p-2f, -0x1.25c62p+0f,
+    0x1.41999ap-53f, 0x1.8b6c6ap+1f, 0x1.5226dep-2f, -0x1.259a06p+0f,
     /* node 4030 y */
-    0x1.333334p-57f, 0x1.b84cdcp-2f, 0x1.69d77ep+0f, -0x1.0ed582p+1f,
+    0x1.4cccccp-56f, 0x1.b8a89ap-2f, 0x1.69d774p+0f, -0x1.0ee436p+1f,
     /* node 4030 z */
-    0x1.99999ap-60f, -0x1.dfa0cep-2f, -0x1.105424p+0f, 0x1.7ef8ccp+1f,
+    0x1p-55f, -0x1.dfbeeep-2f, -0x1.1068b4p+0f, 0x1.7f2182p+1f,
     /* node 4031 x */
-    -0x1.cb3334p-53f, 0x1.98186p+1f, 0x1.a3f72ap-2f, -0x1.6364e6p+0f,
+    0x1.6e6666p-53f, 0x1.984706p+1f, 0x1.a40b0cp-2f, -0x1.6351f8p+0f,
     /* node 4031 y */
-    -0x1.e66666p-56f, 0x1.beceep-1f, 0x1.8ca128p+0f, -0x1.3c2b5cp+1f,
+    -0x1.99999ap-58f, 0x1.beea8p-1f, 0x1.8cab06p+0f, -0x1.3c2ce2p+1f,
     /* node 4031 z */
-    0x1.59999ap-55f, -0x1.3a8e04p-1f, -0x1.0dd3aap+0f, 0x1.7abfaap+1f,
+    0x1.0cccccp-55f, -0x1.3a7f3ap-1f, -0x1.0def52p+0f, 0x1.7ae0f8p+1f,
     /* node 4041 x */
-    0x1.99999ap-55f, 0x1.6aea98p+1f, 0x1.1c7c1ap-1f, -0x1.3248e6p+0f,
+    -0x1.c66666p-55f, 0x1.6b0ff2p+1f, 0x1.1c825ap-1f, -0x1.3224bcp+0f,
     /* node 4041 y */
-    0x1.8p-55f, 0x1.9f6d14p+0f, 0x1.6b385ep+0f, -0x1.21190cp+1f,
+    0x1.e66666p-56f, 0x1.9f8d12p+0f, 0x1.6b5464p+0f, -0x1.211a4ep+1f,
     /* node 4041 z */
-    -0x1.99999ap-60f, -0x1.165c98p-2f, -0x1.507a74p-1f, 0x1.8ff0a4p+0f,
+    -0x1.666666p-57f, -0x1.1635cp-2f, -0x1.509788p-1f, 0x1.90326cp+0f,
     /* node 4042 x */
-    0x1.c33334p-54f, 0x1.64217cp+1f, 0x1.1a81aap-1f, -0x1.218374p+0f,
+    0x1.533334p-54f, 0x1.6449d2p+1f, 0x1.1a90e4p-1f, -0x1.2164eap+0f,
     /* node 4042 y */
-    0x1.59999ap-55f, 0x1.ac208ap+0f, 0x1.5e6632p+0f, -0x1.14a67ap+1f,
+    0x1.733334p-54f, 0x1.ac3934p+0f, 0x1.5e73bp+0f, -0x1.149ffap+1f,
     /* node 4042 z */
-    -0x1.666666p-58f, -0x1.8eb64cp-3f, -0x1.30a01p-1f, 0x1.68de0ap+0f,
+    -0x1p-56f, -0x1.8e5ba2p-3f, -0x1.30c1p-1f, 0x1.69261p+0f,
     /* node 4056 x */
-    0x1.666666p-56f, 0x1.088a72p+2f, 0x1.bf5d06p-5f, -0x1.3d5908p+0f,
+    -0x1.a33334p-53f, 0x1.08a0cep+2f, 0x1.c28ac2p-5f, -0x1.3d4b6p+0f,
     /* node 4056 y */
-    0x1.19999ap-56f, 0x1.90c026p+0f, 0x1.325f0cp+0f, -0x1.d1221ap+0f,
+    -0x1.666666p-56f, 0x1.90d4bep+0f, 0x1.326c64p+0f, -0x1.d1203ep+0f,
     /* node 4056 z */
-    -0x1.4cccccp-54f, -0x1.1bbbap+0f, -0x1.a61414p-1f, 0x1.4cef7cp+1f,
+    -0x1p-56f, -0x1.1bac6ap+0f, -0x1.a62dbep-1f, 0x1.4d075ep+1f,
     /* node 4057 x */
-    -0x1.866666p-55f, 0x1.04bcfap+2f, 0x1.a11bd6p-4f, -0x1.40bb2ap+0f,
+    -0x1.b9999ap-55f, 0x1.04cfb6p+2f, 0x1.a25344p-4f, -0x1.40a0f8p+0f,
     /* node 4057 y */
-    -0x1p-55f, 0x1.c251acp+0f, 0x1.2057dp+0f, -0x1.d7e8a8p+0f,
+    -0x1.333334p-57f, 0x1.c26c04p+0f, 0x1.206c0cp+0f, -0x1.d7e40cp+0f,
     /* node 4057 z */
-    -0x1.99999ap-57f, -0x1.d8b81ep-1f, -0x1.8e7c14p-1f, 0x1.26a364p+1f,
+    -0x1.99999ap-59f, -0x1.d8b06p-1f, -0x1.8e9fbap-1f, 0x1.26c26ep+1f,
     /* node 4092 x */
-    0x1.8cccccp-53f, 0x1.056d84p+2f, 0x1.85962ep-2f, -0x1.fddae6p+0f,
+    0x1.b9999ap-54f, 0x1.057f66p+2f, 0x1.85e622p-2f, -0x1.fdb322p+0f,
     /* node 4092 y */
-    0x1.8cccccp-55f, 0x1.b28bfp+0f, 0x1.7f4c5p+0f, -0x1.5a95ccp+1f,
+    0x1.19999ap-55f, 0x1.b2b65ep+0f, 0x1.7f538ap+0f, -0x1.5aa728p+1f,
     /* node 4092 z */
-    0x1.8p-55f, -0x1.23d514p+0f, -0x1.db68d8p-1f, 0x1.9d4576p+1f,
+    0x1p-56f, -0x1.23cf88p+0f, -0x1.db94bap-1f, 0x1.9d638ap+1f,
     /* node 4093 x */
-    -0x1.333334p-54f, 0x1.09ad1ep+2f, 0x1.666be8p-2f, -0x1.f84cf6p+0f,
+    -0x1.666666p-56f, 0x1.09be08p+2f, 0x1.66bb6ap-2f, -0x1.f81e8p+0f,
     /* node 4093 y */
-    0x1p-57f, 0x1.bcd46cp+0f, 0x1.78b534p+0f, -0x1.51d414p+1f,
+    -0x1.99999ap-58f, 0x1.bcf60ap+0f, 0x1.78bd58p+0f, -0x1.51d7d8p+1f,
     /* node 4093 z */
-    0x1.4cccccp-54f, -0x1.2c9f84p+0f, -0x1.d14cdep-1f, 0x1.978b58p+1f,
+    -0x1.4cccccp-55f, -0x1.2c9cb6p+0f, -0x1.d16bf2p-1f, 0x1.97a96p+1f,
     /* node 4094 x */
-    0x1.d9999ap-55f, 0x1.0b799cp+2f, 0x1.4b215ep-2f, -0x1.e8fd7ep+0f,
+    0x1.4p-54f, 0x1.0b8c9cp+2f, 0x1.4b6fdep-2f, -0x1.e8d548p+0f,
     /* node 4094 y */
-    0x1.99999ap-55f, 0x1.9de4e4p+0f, 0x1.7ccb44p+0f, -0x1.46f6f4p+1f,
+    -0x1.ccccccp-56f, 0x1.9dff7ap+0f, 0x1.7cd3e6p+0f, -0x1.46f72ap+1f,
     /* node 4094 z */
-    -0x1.ccccccp-55f, -0x1.3719dep+0f, -0x1.d9714cp-1f, 0x1.a8656p+1f,
+    -0x1p-55f, -0x1.370facp+0f, -0x1.d995fep-1f, 0x1.a88154p+1f,
     /* node 4095 x */
-    -0x1.c66666p-53f, 0x1.04fe44p+2f, 0x1.813f7cp-2f, -0x1.f72bd6p+0f,
+    0x1.6cccccp-54f, 0x1.0512d4p+2f, 0x1.818328p-2f, -0x1.f7073p+0f,
     /* node 4095 y */
-    -0x1.466666p-54f, 0x1.94eed2p+0f, 0x1.841804p+0f, -0x1.5555b2p+1f,
+    0x1.d33334p-54f, 0x1.94f908p+0f, 0x1.8422b2p+0f, -0x1.554a9p+1f,
     /* node 4095 z */
-    -0x1.333334p-57f, -0x1.240fbep+0f, -0x1.e503e8p-1f, 0x1.ab47ap+1f,
+    -0x1.b33334p-55f, -0x1.23f71ap+0f, -0x1.e51434p-1f, 0x1.ab5488p+1f,
     /* node 4101 x */
-    0x1.266666p-56f, 0x1.9e35acp+1f, 0x1.ffb084p-2f, -0x1.4d9eaap+0f,
+    0x1.d33334p-54f, 0x1.9e60b2p+1f, 0x1.fff38cp-2f, -0x1.4d871p+0f,
     /* node 4101 y */
-    -0x1.4cccccp-56f, 0x1.e9549ap+0f, 0x1.4bdd3cp+0f, -0x1.186f66p+1f,
+    -0x1p-54f, 0x1.e976eep+0f, 0x1.4bf46cp+0f, -0x1.186e8ap+1f,
     /* node 4101 z */
-    -0x1.b33334p-56f, -0x1.3f9cf8p-2f, -0x1.3e63eep-1f, 0x1.96b4bp+0f,
+    0x1p-57f, -0x1.3f9702p-2f, -0x1.3e8b38p-1f, 0x1.96f7eap+0f,
     /* node 4102 x */
-    0x1.233334p-54f, 0x1.ac59a8p+1f, 0x1.cc53a4p-2f, -0x1.43f71ep+0f,
+    -0x1.99999ap-60f, 0x1.ac7e5ap+1f, 0x1.cc6f7ap-2f, -0x1.43d7dap+0f,
     /* node 4102 y */
-    -0x1.666666p-56f, 0x1.f18824p+0f, 0x1.37dc68p+0f, -0x1.0a1446p+1f,
+    0x1.4p-55f, 0x1.f1a05ep+0f, 0x1.37ea42p+0f, -0x1.0a0e82p+1f,
     /* node 4102 z */
-    -0x1.ccccccp-57f, -0x1.3aee1ap-2f, -0x1.3875dap-1f, 0x1.91a98ap+0f,
+    -0x1p-56f, -0x1.3aacfcp-2f, -0x1.388deap-1f, 0x1.91ecbcp+0f,
     /* node 4103 x */
-    0x1.2p-54f, 0x1.cd0f54p+1f, 0x1.8b3b3ap-2f, -0x1.5a8d88p+0f,
+    -0x1.08p-53f, 0x1.cd369ap+1f, 0x1.8b8848p-2f, -0x1.5a764ep+0f,
     /* node 4103 y */
-    0x1.266666p-53f, 0x1.f96ffep+0f, 0x1.31f8ap+0f, -0x1.0b1ec6p+1f,
+    0x1.ep-54f, 0x1.f96f48p+0f, 0x1.3208a2p+0f, -0x1.0b133ap+1f,
     /* node 4103 z */
-    -0x0p+0f, -0x1.d4c708p-2f, -0x1.50d86ep-1f, 0x1.c3c952p+0f,
+    0x1.19999ap-56f, -0x1.d4b3d8p-2f, -0x1.50ee68p-1f, 0x1.c404dap+0f,
     /* node 4146 x */
-    0x1.633334p-54f, 0x1.d55d7p+1f, -0x1.07a86cp-9f, -0x1.6a7d12p-1f,
+    -0x1.066666p-56f, 0x1.d5870ap+1f, -0x1.a874dap-10f, -0x1.6a70bap-1f,
     /* node 4146 y */
-    -0x1.466666p-54f, 0x1.54184p+0f, 0x1.ece27ap-1f, -0x1.5d4cb2p+0f,
+    0x1.1p-54f, 0x1.543114p+0f, 0x1.ed09acp-1f, -0x1.5d4ee2p+0f,
     /* node 4146 z */
-    -0x1.333334p-58f, -0x1.685082p-1f, -0x1.909704p-1f, 0x1.0c24acp+1f,
+    -0x1.266666p-55f, -0x1.684b1ap-1f, -0x1.90bcf8p-1f, 0x1.0c42e4p+1f,
     /* node 4147 x */
-    0x1.4p-55f, 0x1.ff295p+1f, -0x1.bd02cp-7f, -0x1.e8bb0ap-1f,
+    -0x1.066666p-55f, 0x1.ff5338p+1f, -0x1.b186ep-7f, -0x1.e89dd6p-1f,
     /* node 4147 y */
-    0x1.ccccccp-57f, 0x1.5b7a02p+0f, 0x1.1eb026p+0f, -0x1.906844p+0f,
+    0x1.99999ap-60f, 0x1.5b93e2p+0f, 0x1.1ec2cp+0f, -0x1.9067fcp+0f,
     /* node 4147 z */
-    -0x0p+0f, -0x1.0425b2p+0f, -0x1.a99e44p-1f, 0x1.3d69bep+1f,
+    -0x1.e66666p-55f, -0x1.041c32p+0f, -0x1.a9c03p-1f, 0x1.3d848ep+1f,
     /* node 4163 x */
-    -0x1.266666p-55f, 0x1.df496cp+1f, 0x1.d9a0fp-2f, -0x1.e97c82p+0f,
+    -0x1.99999ap-56f, 0x1.df77bep+1f, 0x1.d9fc3p-2f, -0x1.e95fc8p+0f,
     /* node 4163 y */
-    0x1.ccccccp-56f, 0x1.91e44p+0f, 0x1.8aa38cp+0f, -0x1.6742dap+1f,
+    0x1.4p-55f, 0x1.91f516p+0f, 0x1.8ab134p+0f, -0x1.6739e2p+1f,
     /* node 4163 z */
-    -0x1.a66666p-55f, -0x1.dbfa14p-1f, -0x1.e7c76ap-1f, 0x1.8789e6p+1f,
+    -0x1.59999ap-55f, -0x1.dbbbp-1f, -0x1.e7deb4p-1f, 0x1.878d44p+1f,
     /* node 4164 x */
-    0x1.79999ap-53f, 0x1.d6cb3ep+1f, 0x1.d873dep-2f, -0x1.cf4626p+0f,
+    -0x1.4cccccp-55f, 0x1.d70588p+1f, 0x1.d8ddb4p-2f, -0x1.cf49ep+0f,
     /* node 4164 y */
-    -0x1.8p-55f, 0x1.9cf244p+0f, 0x1.83f05ep+0f, -0x1.57a094p+1f,
+    0x1.4p-54f, 0x1.9d204cp+0f, 0x1.83fa62p+0f, -0x1.57ac32p+1f,
     /* node 4164 z */
-    0x1.99999ap-56f, -0x1.bc7164p-1f, -0x1.d73298p-1f, 0x1.6a367ep+1f,
+    -0x1.666666p-56f, -0x1.bc8ddep-1f, -0x1.d77888p-1f, 0x1.6a53dcp+1f,
     /* node 4289 x */
-    0x1.7cccccp-55f, 0x1.f79ccp+0f, 0x1.409946p-5f, -0x1.62288ap-2f,
+    0x1.0d3334p-53f, 0x1.f80a44p+0f, 0x1.454d6p-5f, -0x1.62428ep-2f,
     /* node 4289 y */
-    -0x1.533334p-57f, -0x1.025118p-3f, 0x1.fe6d8ap-2f, -0x1.08df78p-2f,
+    -0x1.333334p-59f, -0x1.00beap-3f, 0x1.feb5cp-2f, -0x1.08ab22p-2f,
     /* node 4289 z */
-    -0x1.666666p-55f, -0x1.73bd6ep-1f, -0x1.63953ep-1f, 0x1.23d5cap+1f,
+    0x1.333334p-55f, -0x1.73c6e4p-1f, -0x1.63b884p-1f, 0x1.23d4e6p+1f,
     /* node 4320 x */
-    0x1.166666p-53f, 0x1.4ef8bp+2f, -0x1.25b326p-2f, -0x1.886a86p-1f,
+    -0x1.333334p-56f, 0x1.4f0c3p+2f, -0x1.2533p-2f, -0x1.8848c6p-1f,
     /* node 4320 y */
-    0x1.333334p-58f, 0x1.626a72p-3f, 0x1.2759d2p+1f, -0x1.261742p+0f,
+    0x1.133334p-55f, 0x1.634b8ep-3f, 0x1.275c5ap+1f, -0x1.261e76p+0f,
     /* node 4320 z */
-    -0x1.333334p-55f, -0x1.d28b9p-1f, -0x1.f45df4p-1f, 0x1.1f025p+2f,
+    0x1.4cccccp-55f, -0x1.d26fd2p-1f, -0x1.f473e2p-1f, 0x1.1f0d58p+2f,
     /* node 4321 x */
-    -0x1.d33334p-56f, 0x1.6ada78p+2f, -0x1.30c402p-2f, -0x1.71f326p-1f,
+    0x1.7d3334p-52f, 0x1.6aedfep+2f, -0x1.30517ep-2f, -0x1.71c83ep-1f,
     /* node 4321 y */
-    -0x1.666666p-57f, -0x1.619fa2p-2f, 0x1.6f793ep+1f, -0x1.fb1182p-1f,
+    -0x1.333334p-58f, -0x1.6122dep-2f, 0x1.6f741ap+1f, -0x1.fb1bcap-1f,
     /* node 4321 z */
-    0x1.99999ap-58f, -0x1.6fe7b8p-1f, -0x1.0307e2p+0f, 0x1.4e7906p+2f,
+    -0x1.666666p-56f, -0x1.6fc69ap-1f, -0x1.030c4cp+0f, 0x1.4e7e3cp+2f,
     /* node 4326 x */
-    0x1.6p-53f, 0x1.c5e6eep+1f, 0x1.e6e87ep-2f, -0x1.ccc5fep+0f,
+    -0x1.4p-55f, 0x1.c61314p+1f, 0x1.e732b4p-2f, -0x1.cca512p+0f,
     /* node 4326 y */
-    -0x1.a66666p-55f, 0x1.44000cp+0f, 0x1.963c7ap+0f, -0x1.661da2p+1f,
+    0x1.99999ap-60f, 0x1.44119p+0f, 0x1.964456p+0f, -0x1.6617fp+1f,
     /* node 4326 z */
-    -0x1.666666p-55f, -0x1.a0c5e6p-1f, -0x1.049cd2p+0f, 0x1.94089p+1f,
+    -0x1.a66666p-54f, -0x1.a0b93cp-1f, -0x1.04b02ep+0f, 0x1.941e8ep+1f,
     /* node 4327 x */
-    0x1.666666p-55f, 0x1.a5b1e8p+1f, 0x1.d387bep-2f, -0x1.8ceefep+0f,
+    0x1.d33334p-54f, 0x1.a5dc12p+1f, 0x1.d3b4aep-2f, -0x1.8cce76p+0f,
     /* node 4327 y */
-    0x1.666666p-56f, 0x1.1edac6p+0f, 0x1.940cfap+0f, -0x1.5318dp+1f,
+    -0x1.2p-54f, 0x1.1eeb36p+0f, 0x1.94169p+0f, -0x1.53127cp+1f,
     /* node 4327 z */
-    -0x1.19999ap-55f, -0x1.5f210ap-1f, -0x1.05bf6cp+0f, 0x1.772e5ep+1f,
+    -0x1.a66666p-55f, -0x1.5f0934p-1f, -0x1.05c69ep+0f, 0x1.774188p+1f,
     /* node 4328 x */
-    0x1.c33334p-54f, 0x1.f31812p+1f, 0x1.2a3dp-5f, -0x1.f55a4p-1f,
+    0x1.333334p-59f, 0x1.f342ccp+1f, 0x1.2d7986p-5f, -0x1.f546b4p-1f,
     /* node 4328 y */
-    0x1.ccccccp-55f, 0x1.8b83dcp+0f, 0x1.0f1588p+0f, -0x1.9b4754p+0f,
+    0x1.333334p-57f, 0x1.8b9d36p+0f, 0x1.0f2a3p+0f, -0x1.9b46c4p+0f,
     /* node 4328 z */
-    -0x1.b33334p-55f, -0x1.bbd3e2p-1f, -0x1.92b99cp-1f, 0x1.1e4154p+1f,
+    -0x1.333334p-56f, -0x1.bbce2cp-1f, -0x1.92db5ep-1f, 0x1.1e5d4cp+1f,
     /* node 4405 x */
-    0x1.566666p-54f, 0x1.2a129ep+1f, -0x1.096884p-4f, -0x1.82145ep-2f,
+    0x1.486666p-53f, 0x1.2a3824p+1f, -0x1.08c882p-4f, -0x1.81de16p-2f,
     /* node 4405 y */
-    -0x1.133334p-54f, -0x1.74494ap-1f, 0x1.c4cda8p-1f, -0x1.8cbcfp-1f,
+    -0x1.99999ap-59f, -0x1.745afp-1f, 0x1.c4db6cp-1f, -0x1.8cde4cp-1f,
     /* node 4405 z */
-    -0x1.99999ap-60f, -0x1.0d95c2p-3f, -0x1.7f6c9cp-1f, 0x1.89387p+0f,
+    -0x0p+0f, -0x1.0db21ap-3f, -0x1.7f70d2p-1f, 0x1.895a48p+0f,
     /* node 4460 x */
-    0x1.7b3334p-53f, 0x1.82c43ep+1f, 0x1.0de9f8p-2f, -0x1.dba7f6p-1f,
+    -0x1.8p-57f, 0x1.82eea4p+1f, 0x1.0e1192p-2f, -0x1.db6becp-1f,
     /* node 4460 y */
-    -0x1.8cccccp-55f, -0x1.1111b2p-6f, 0x1.30077ep+0f, -0x1.7b657ap+0f,
+    0x1p-57f, -0x1.10ceaep-6f, 0x1.300c86p+0f, -0x1.7b6862p+0f,
     /* node 4460 z */
-    -0x1.99999ap-59f, -0x1.1bdf94p-2f, -0x1.f7ab5cp-1f, 0x1.555acp+1f,
+    -0x1.ccccccp-56f, -0x1.1bb894p-2f, -0x1.f7bfdcp-1f, 0x1.55674cp+1f,
     /* node 4492 x */
-    -0x1.d9999ap-58f, 0x1.27fb3ap+1f, 0x1.21ba64p-5f, -0x1.7a73bp-2f,
+    -0x1.c9999ap-56f, 0x1.281fe2p+1f, 0x1.22bd6cp-5f, -0x1.7a05ep-2f,
     /* node 4492 y */
-    0x1.4cccccp-56f, -0x1.b9c9p-2f, 0x1.e4f8a2p-1f, -0x1.1f2fdap+0f,
+    -0x1.8cccccp-55f, -0x1.b9e44ap-2f, 0x1.e4fa38p-1f, -0x1.1f3d3cp+0f,
     /* node 4492 z */
-    -0x1.b33334p-56f, -0x1.99ec28p-5f, -0x1.a05554p-1f, 0x1.c10dbcp+0f,
+    0x1.666666p-57f, -0x1.98ce4ap-5f, -0x1.a06052p-1f, 0x1.c132fap+0f,
     /* node 4500 x */
-    0x1.5b3334p-54f, 0x1.d1633p+0f, 0x1.89630ep-3f, -0x1.d7696cp-2f,
+    -0x1.bcccccp-55f, 0x1.d1b1e6p+0f, 0x1.8a0c14p-3f, -0x1.d734ep-2f,
     /* node 4500 y */
-    -0x1.333334p-57f, 0x1.44f04ep-1f, 0x1.206bd2p+0f, -0x1.6f97d8p+0f,
+    -0x1p-58f, 0x1.45193p-1f, 0x1.20956ap+0f, -0x1.6fc32p+0f,
     /* node 4500 z */
-    0x1.19999ap-56f, -0x1.ef57ep-3f, -0x1.6b24c6p-1f, 0x1.5ec94ap+0f,
+    -0x1p-57f, -0x1.ef52f2p-3f, -0x1.6b542p-1f, 0x1.5f07eap+0f,
     /* node 4501 x */
-    -0x1.c66666p-56f, 0x1.e4510ep+0f, 0x1.ffaaf8p-3f, -0x1.01b55ap-1f,
+    0x1.fp-55f, 0x1.e4792cp+0f, 0x1.ff63aap-3f, -0x1.016b58p-1f,
     /* node 4501 y */
-    0x1.666666p-56f, 0x1.754dc6p-1f, 0x1.290202p+0f, -0x1.73296ep+0f,
+    -0x1.666666p-58f, 0x1.756618p-1f, 0x1.28e104p+0f, -0x1.730ea2p+0f,
     /* node 4501 z */
-    0x1p-58f, -0x1.abc7cap-3f, -0x1.54dcdep-1f, 0x1.4f3a4ep+0f,
+    0x1p-56f, -0x1.ab7bcap-3f, -0x1.54e9bep-1f, 0x1.4f6adp+0f,
     /* node 4502 x */
-    0x1.4d3334p-54f, 0x1.a8514ap+1f, -0x1.f1bf44p-5f, -0x1.028e6p-3f,
+    0x1.c4p-55f, 0x1.a87b1p+1f, -0x1.eeee0ep-5f, -0x1.02cc8cp-3f,
     /* node 4502 y */
-    -0x1.79999ap-56f, 0x1.fade9p-4f, 0x1.2ebcaep+0f, -0x1.525cf6p-1f,
+    -0x1.2p-56f, 0x1.fd4566p-4f, 0x1.2ec8aap+0f, -0x1.528efp-1f,
     /* node 4502 z */
-    0x1.99999ap-56f, -0x1.e22106p-2f, -0x1.f13b4ap-1f, 0x1.af6d92p+1f,
+    0x1.333334p-55f, -0x1.e1fd14p-2f, -0x1.f155b8p-1f, 0x1.af7f1ep+1f,
     /* node 4510 x */
-    0x1.866666p-55f, 0x1.93db62p+1f, 0x1.da6d7cp-2f, -0x1.6abccep+0f,
+    0x1.666666p-53f, 0x1.9400b2p+1f, 0x1.dab6e8p-2f, -0x1.6a99a2p+0f,
     /* node 4510 y */
-    -0x1.99999ap-60f, 0x1.2fa4ccp+0f, 0x1.8ec504p+0f, -0x1.4131dep+1f,
+    0x1p-55f, 0x1.2fb4d2p+0f, 0x1.8ec3dcp+0f, -0x1.412952p+1f,
     /* node 4510 z */
-    0x1.ccccccp-57f, -0x1.3e41ap-1f, -0x1.f3018p-1f, 0x1.4e0874p+1f,
+    -0x1p-56f, -0x1.3e3236p-1f, -0x1.f31d0cp-1f, 0x1.4e1ffep+1f,
     /* node 4511 x */
-    0x1.066666p-54f, 0x1.796a88p+1f, 0x1.f26e8ap-2f, -0x1.428712p+0f,
+    -0x1.4cccccp-56f, 0x1.799206p+1f, 0x1.f2c5f2p-2f, -0x1.426d88p+0f,
     /* node 4511 y */
-    0x1.99999ap-56f, 0x1.385472p+0f, 0x1.879c18p+0f, -0x1.2d542p+1f,
+    -0x1.99999ap-59f, 0x1.38666ep+0f, 0x1.8797p+0f, -0x1.2d4b6p+1f,
     /* node 4511 z */
-    -0x1.666666p-55f, -0x1.fc3be4p-2f, -0x1.c75c04p-1f, 0x1.195e86p+1f,
+    -0x1.99999ap-58f, -0x1.fc2952p-2f, -0x1.c77122p-1f, 0x1.197594p+1f,
     /* node 4512 x */
-    0x1.8cccccp-53f, 0x1.911786p+1f, 0x1.fa0e3p-2f, -0x1.672aap+0f,
+    0x1.1cccccp-53f, 0x1.913cfep+1f, 0x1.fa3bb6p-2f, -0x1.67033p+0f,
     /* node 4512 y */
-    0x1.99999ap-56f, 0x1.51e5fcp+0f, 0x1.8b489ep+0f, -0x1.3c4f36p+1f,
+    -0x1.333334p-58f, 0x1.51f39ap+0f, 0x1.8b421cp+0f, -0x1.3c41bep+1f,
     /* node 4512 z */
-    -0x1.733334p-55f, -0x1.2af9bep-1f, -0x1.d4419ap-1f, 0x1.3017d4p+1f,
+    -0x1.666666p-55f, -0x1.2adfccp-1f, -0x1.d4476p-1f, 0x1.302d68p+1f,
     /* node 4525 x */
-    0x1.1p-55f, 0x1.0964a2p+1f, 0x1.a9c418p-4f, -0x1.e6c1a4p-2f,
+    0x1.ep-54f, 0x1.0984e6p+1f, 0x1.aa395cp-4f, -0x1.e645cp-2f,
     /* node 4525 y */
-    0x1.19999ap-56f, 0x1.5169f6p-2f, 0x1.2774d4p+0f, -0x1.9a8fc2p+0f,
+    -0x1.99999ap-58f, 0x1.518f62p-2f, 0x1.277416p+0f, -0x1.9a942p+0f,
     /* node 4525 z */
-    -0x1.ccccccp-57f, -0x1.3ef1e2p-2f, -0x1.c4ddccp-1f, 0x1.e90b7ap+0f,
+    -0x1.99999ap-60f, -0x1.3eec6cp-2f, -0x1.c503c2p-1f, 0x1.e9446ap+0f,
     /* node 4526 x */
-    -0x1.733334p-57f, 0x1.184c7cp+1f, 0x1.982ec6p-4f, -0x1.eb1934p-2f,
+    -0x1.f66666p-55f, 0x1.186e8p+1f, 0x1.986a1p-4f, -0x1.ea8ecp-2f,
     /* node 4526 y */
-    0x1.99999ap-60f, 0x1.e5cee2p-3f, 0x1.294aacp+0f, -0x1.9a5d16p+0f,
+    0x1.19999ap-56f, 0x1.e62322p-3f, 0x1.294bb2p+0f, -0x1.9a61a8p+0f,
     /* node 4526 z */
-    -0x1.0cccccp-55f, -0x1.305618p-2f, -0x1.d15df4p-1f, 0x1.0455ap+1f,
+    0x1.19999ap-56f, -0x1.303decp-2f, -0x1.d1766ep-1f, 0x1.046ff4p+1f,
     /* node 4527 x */
-    0x1.6e6666p-54f, 0x1.2042aep+1f, 0x1.6037e4p-4f, -0x1.d1e56cp-2f,
+    -0x1.58p-54f, 0x1.20688cp+1f, 0x1.60a006p-4f, -0x1.d160a2p-2f,
     /* node 4527 y */
-    -0x1.99999ap-58f, 0x1.375792p-3f, 0x1.23aebap+0f, -0x1.95d65cp+0f,
+    -0x1.ccccccp-57f, 0x1.37a1d2p-3f, 0x1.23c4f2p+0f, -0x1.95fe6ep+0f,
     /* node 4527 z */
-    0x1p-56f, -0x1.19c8ecp-2f, -0x1.d9513ap-1f, 0x1.0f8c1ep+1f,
+    -0x1.99999ap-59f, -0x1.19b024p-2f, -0x1.d972d4p-1f, 0x1.0fa722p+1f,
     /* node 4535 x */
-    0x1.c66666p-56f, 0x1.49a48ap+1f, 0x1.3fcd4p-3f, -0x1.42b964p-1f,
+    -0x1.6p-56f, 0x1.49ca68p+1f, 0x1.3fdceap-3f, -0x1.42619ap-1f,
     /* node 4535 y */
-    0x1.99999ap-60f, 0x1.59e208p-3f, 0x1.35a2ep+0f, -0x1.b280e8p+0f,
+    0x1.333334p-56f, 0x1.5a181cp-3f, 0x1.35ae4cp+0f, -0x1.b2965p+0f,
     /* node 4535 z */
-    0x1.4p-55f, -0x1.379f6ep-2f, -0x1.f34336p-1f, 0x1.36dbe8p+1f,
+    -0x0p+0f, -0x1.378926p-2f, -0x1.f356dp-1f, 0x1.36f532p+1f,
     /* node 4536 x */
-    -0x1.333334p-55f, 0x1.7417a4p+1f, 0x1.05a6a8p-2f, -0x1.d45ce4p-1f,
+    0x1.04ccccp-53f, 0x1.743d0ap+1f, 0x1.05a834p-2f, -0x1.d3ee6ap-1f,
     /* node 4536 y */
-    0x1.99999ap-59f, 0x1.f7edaep-3f, 0x1.4b950ap+0f, -0x1.dcbe32p+0f,
+    0x1.4cccccp-56f, 0x1.f848cap-3f, 0x1.4b95fcp+0f, -0x1.dccc52p+0f,
     /* node 4536 z */
-    -0x1.99999ap-57f, -0x1.77133p-2f, -0x1.05860cp+0f, 0x1.61143ep+1f,
+    -0x1.e66666p-56f, -0x1.77027ap-2f, -0x1.058d3ep+0f, 0x1.612b7ap+1f,
     /* node 4537 x */
-    -0x1.ap-55f, 0x1.6a9bfep+1f, 0x1.d12646p-3f, -0x1.9fa05ep-1f,
+    0x1.14ccccp-53f, 0x1.6ac3f6p+1f, 0x1.d16abep-3f, -0x1.9f547ep-1f,
     /* node 4537 y */
-    -0x1.99999ap-57f, 0x1.7aa2d4p-4f, 0x1.31c094p+0f, -0x1.a1c836p+0f,
+    -0x1.99999ap-60f, 0x1.7af65p-4f, 0x1.31c532p+0f, -0x1.a1d1b6p+0f,
     /* node 4537 z */
-    -0x1.99999ap-57f, -0x1.27051ap-2f, -0x1.f35d5cp-1f, 0x1.4a38b8p+1f,
+    -0x1.8p-56f, -0x1.26f364p-2f, -0x1.f36ab6p-1f, 0x1.4a4e82p+1f,
     /* node 4543 x */
-    0x1.0e6666p-52f, 0x1.4438ccp+1f, 0x1.134148p-2f, -0x1.a11bd4p-1f,
+    -0x1.033334p-54f, 0x1.445d42p+1f, 0x1.1342c8p-2f, -0x1.a0e104p-1f,
     /* node 4543 y */
-    -0x1.ccccccp-55f, 0x1.245b1ep-1f, 0x1.5ecd12p+0f, -0x1.e02636p+0f,
+    0x1.333334p-58f, 0x1.2480f4p-1f, 0x1.5ec5cep+0f, -0x1.e02702p+0f,
     /* node 4543 z */
-    -0x1.19999ap-55f, -0x1.9dd46p-2f, -0x1.e67034p-1f, 0x1.18faaap+1f,
+    0x1.19999ap-56f, -0x1.9dc666p-2f, -0x1.e699cep-1f, 0x1.19167p+1f,
     /* node 4560 x */
-    0x1.44ccccp-54f, 0x1.26381p+1f, 0x1.2eb10ep-3f, -0x1.28f062p-1f,
+    -0x1.033334p-55f, 0x1.265b5cp+1f, 0x1.2ea958p-3f, -0x1.28a2c8p-1f,
     /* node 4560 y */
-    0x1.99999ap-58f, 0x1.5575f4p-2f, 0x1.3c1f3p+0f, -0x1.b175fp+0f,
+    -0x1.99999ap-59f, 0x1.55b998p-2f, 0x1.3c3498p+0f, -0x1.b195ep+0f,
     /* node 4560 z */
-    0x1.333334p-58f, -0x1.54b7b6p-2f, -0x1.d99252p-1f, 0x1.0b7008p+1f,
+    0x1.99999ap-57f, -0x1.54a2a4p-2f, -0x1.d9bep-1f, 0x1.0b92ccp+1f,
     /* node 4561 x */
-    0x1.133334p-55f, 0x1.1f95bp+2f, -0x1.6bf3b8p-3f, -0x1.3ac268p-1f,
+    0x1.09999ap-54f, 0x1.1fa8c8p+2f, -0x1.6b04a4p-3f, -0x1.3ab666p-1f,
     /* node 4561 y */
-    -0x1.2cccccp-56f, -0x1.8f199cp-2f, 0x1.12bbb4p+1f, -0x1.4faa16p-1f,
+    0x1.333334p-57f, -0x1.8ea6f6p-2f, 0x1.12bep+1f, -0x1.4fb3fp-1f,
     /* node 4561 z */
-    -0x1p-54f, -0x1.83cce2p-1f, -0x1.c9bbbep-1f, 0x1.0d2c7ep+2f,
+    -0x1.19999ap-55f, -0x1.83c0cp-1f, -0x1.c9bce8p-1f, 0x1.0d321ap+2f,
     /* node 4571 x */
-    0x1.74p-54f, 0x1.7e5b42p+1f, -0x1.643df6p-5f, -0x1.a150a8p-3f,
+    0x1.d86666p-53f, 0x1.7e8566p+1f, -0x1.61140ap-5f, -0x1.a169e4p-3f,
     /* node 4571 y */
-    -0x1.19999ap-57f, 0x1.d1139p-1f, 0x1.63a508p-1f, -0x1.c7d916p-1f,
+    0x1.99999ap-59f, 0x1.d148fp-1f, 0x1.63cba6p-1f, -0x1.c7ecep-1f,
     /* node 4571 z */
-    -0x1p-56f, -0x1.5c1a56p-2f, -0x1.8a5b58p-1f, 0x1.dcf57ep+0f,
+    -0x1.99999ap-58f, -0x1.5c0e9ap-2f, -0x1.8a7f66p-1f, 0x1.dd32cep+0f,
     /* node 4621 x */
-    0x1.c9999ap-54f, 0x1.46debp+1f, 0x1.22d41ep-5f, -0x1.dd5becp-2f,
+    0x1.066666p-55f, 0x1.4708c8p+1f, 0x1.247b36p-5f, -0x1.dd0da2p-2f,
     /* node 4621 y */
-    0x1.4cccccp-56f, -0x1.0e6682p-1f, 0x1.f5588cp-1f, -0x1.fcd532p-1f,
+    0x1.19999ap-56f, -0x1.0e7bfp-1f, 0x1.f55682p-1f, -0x1.fce50ap-1f,
     /* node 4621 z */
-    0x1.99999ap-56f, -0x1.a5949cp-4f, -0x1.aa5ee4p-1f, 0x1.da721cp+0f,
+    -0x1.333334p-58f, -0x1.a58072p-4f, -0x1.aa5e2ap-1f, 0x1.da921p+0f,
     /* node 4655 x */
-    -0x1.8p-55f, 0x1.82c2f6p+1f, 0x1.1c6c6p-1f, -0x1.5355a4p+0f,
+    0x1.34ccccp-53f, 0x1.82eac2p+1f, 0x1.1c840ap-1f, -0x1.5338fcp+0f,
     /* node 4655 y */
-    0x1.266666p-55f, 0x1.a5a9bap+0f, 0x1.73a6d2p+0f, -0x1.2f9b86p+1f,
+    0x1.4cccccp-56f, 0x1.a5bbf4p+0f, 0x1.73af9ap+0f, -0x1.2f94cp+1f,
     /* node 4655 z */
-    -0x1.19999ap-56f, -0x1.8817a2p-2f, -0x1.710898p-1f, 0x1.c8705p+0f,
+    0x1.b33334p-56f, -0x1.87ec22p-2f, -0x1.711ac4p-1f, 0x1.c8a91p+0f,
     /* node 4656 x */
-    0x1.ccccccp-58f, 0x1.9aa7dcp+1f, 0x1.0dd1e8p-1f, -0x1.6fbcaep+0f,
+    0x1.6b3334p-53f, 0x1.9ace6cp+1f, 0x1.0dee28p-1f, -0x1.6f99fep+0f,
     /* node 4656 y */
-    0x1.4cccccp-54f, 0x1.9dfbd8p+0f, 0x1.79eee4p+0f, -0x1.381906p+1f,
+    -0x1.19999ap-54f, 0x1.9e19e2p+0f, 0x1.7a072p+0f, -0x1.3818e8p+1f,
     /* node 4656 z */
-    -0x1.8p-55f, -0x1.0ebf2ep-1f, -0x1.9923e4p-1f, 0x1.09eb2cp+1f,
+    -0x1.b33334p-55f, -0x1.0eb124p-1f, -0x1.994798p-1f, 0x1.0a09e6p+1f,
     /* node 4668 x */
-    0x1.cp-54f, 0x1.70784ep+1f, 0x1.185e8ap-1f, -0x1.3bf86ap+0f,
+    0x1.d9999ap-54f, 0x1.709d5ap+1f, 0x1.1866a2p-1f, -0x1.3bd8fep+0f,
     /* node 4668 y */
-    0x1.59999ap-55f, 0x1.8b07f2p+0f, 0x1.74c53cp+0f, -0x1.27bcaep+1f,
+    0x1.a66666p-55f, 0x1.8b0d2ep+0f, 0x1.74bb3p+0f, -0x1.27adc2p+1f,
     /* node 4668 z */
-    -0x1.666666p-56f, -0x1.637c4cp-2f, -0x1.70fc06p-1f, 0x1.b90a6cp+0f,
+    -0x1.99999ap-56f, -0x1.63376ap-2f, -0x1.70f694p-1f, 0x1.b939eap+0f,
     /* node 4669 x */
-    0x1.4cccccp-56f, 0x1.86921ep+1f, 0x1.0d738ep-1f, -0x1.5925d4p+0f,
+    0x1.5b3334p-53f, 0x1.86b4d6p+1f, 0x1.0d808p-1f, -0x1.58fcb4p+0f,
     /* node 4669 y */
-    0x1.09999ap-53f, 0x1.79606ep+0f, 0x1.808bd6p+0f, -0x1.344664p+1f,
+    -0x1.4p-55f, 0x1.79846ap+0f, 0x1.80a572p+0f, -0x1.344a1p+1f,
     /* node 4669 z */
-    0x1.333334p-56f, -0x1.f52adp-2f, -0x1.a416e8p-1f, 0x1.070f2p+1f,
+    -0x1.333334p-58f, -0x1.f503cep-2f, -0x1.a431f2p-1f, 0x1.072c58p+1f,
     /* node 4672 x */
-    -0x1.7p-58f, 0x1.31187ap+1f, -0x1.8973d2p-5f, 0x1.abfa76p-5f,
+    0x1.91999ap-56f, 0x1.314054p+1f, -0x1.86376ep-5f, 0x1.ac618ep-5f,
     /* node 4672 y */
-    -0x1.333334p-57f, 0x1.dd685p-2f, 0x1.08187cp-1f, -0x1.11e11p-1f,
+    -0x1.59999ap-57f, 0x1.ddeec2p-2f, 0x1.08419p-1f, -0x1.120984p-1f,
     /* node 4672 z */
-    0x1.666666p-57f, -0x1.250278p-2f, -0x1.9be918p-1f, 0x1.040604p+1f,
+    -0x1.99999ap-59f, -0x1.24fb64p-2f, -0x1.9c0af8p-1f, 0x1.042642p+1f,
     /* node 4688 x */
-    -0x1.966666p-55f, 0x1.373f24p+1f, 0x1.2aa47p-3f, -0x1.3621d2p-1f,
+    0x1.98ccccp-53f, 0x1.376188p+1f, 0x1.2ac30cp-3f, -0x1.35d086p-1f,
     /* node 4688 y */
-    0x1.733334p-55f, 0x1.07069ep-2f, 0x1.3de688p+0f, -0x1.b7101ap+0f,
+    0x1.99999ap-57f, 0x1.072b2p-2f, 0x1.3dd948p+0f, -0x1.b70232p+0f,
     /* node 4688 z */
-    -0x1.4cccccp-56f, -0x1.535b04p-2f, -0x1.ecd086p-1f, 0x1.223296p+1f,
+    -0x1.8p-56f, -0x1.533604p-2f, -0x1.ecd758p-1f, 0x1.22423p+1f,
     /* node 4689 x */
-    0x1.bcccccp-54f, 0x1.40364cp+1f, 0x1.a4bfbp-3f, -0x1.72d76ap-1f,
+    0x1.1b3334p-53f, 0x1.4058b6p+1f, 0x1.a47044p-3f, -0x1.72801p-1f,
     /* node 4689 y */
-    -0x1.666666p-55f, 0x1.b61fd4p-2f, 0x1.5253e6p+0f, -0x1.d2a9cap+0f,
+    -0x1.333334p-58f, 0x1.b66542p-2f, 0x1.525fa2p+0f, -0x1.d2c45p+0f,
     /* node 4689 z */
-    -0x1.99999ap-60f, -0x1.847e04p-2f, -0x1.ef6bfep-1f, 0x1.2303b2p+1f,
+    -0x1.19999ap-56f, -0x1.84770ep-2f, -0x1.ef8cd6p-1f, 0x1.232534p+1f,
     /* node 4693 x */
-    0x1.99999ap-57f, 0x1.dbb93p+1f, 0x1.dfdf56p-2f, -0x1.e88db8p+0f,
+    0x1.8cccccp-53f, 0x1.dbe46cp+1f, 0x1.e02e7cp-2f, -0x1.e85f24p+0f,
     /* node 4693 y */
-    0x1.4cccccp-56f, 0x1.59f79ep+0f, 0x1.93e282p+0f, -0x1.6942c6p+1f,
+    -0x1.cp-55f, 0x1.5a0aeap+0f, 0x1.93f01p+0f, -0x1.693cc8p+1f,
     /* node 4693 z */
-    -0x1.e66666p-55f, -0x1.d67a5cp-1f, -0x1.0429e4p+0f, 0x1.a61216p+1f,
+    -0x1p-56f, -0x1.d66944p-1f, -0x1.0437fap+0f, 0x1.a626e6p+1f,
     /* node 4695 x */
-    0x1.ep-55f, 0x1.88249ep+1f, 0x1.0d81ecp-1f, -0x1.3c0e16p+0f,
+    -0x1.666666p-57f, 0x1.884ca4p+1f, 0x1.0d96e4p-1f, -0x1.3bf61ep+0f,
     /* node 4695 y */
-    0x1.19999ap-56f, 0x1.dfa7ap+0f, 0x1.4f96aap+0f, -0x1.16c2d2p+1f,
+    0x1.0cccccp-55f, 0x1.dfc822p+0f, 0x1.4fa846p+0f, -0x1.16c0e2p+1f,
     /* node 4695 z */
-    0x1p-58f, -0x1.dc16cap-3f, -0x1.2e518ap-1f, 0x1.772048p+0f,
+    -0x1.333334p-57f, -0x1.dbf88ap-3f, -0x1.2e741ap-1f, 0x1.77664ep+0f,
     /* node 4715 x */
-    0x1.24ccccp-53f, 0x1.13e842p+2f, 0x1.62a378p-4f, -0x1.757a7cp+0f,
+    -0x1.e66666p-57f, 0x1.13fbep+2f, 0x1.6428eap-4f, -0x1.75615p+0f,
     /* node 4715 y */
-    0x1.e66666p-55f, 0x1.3aa772p+0f, 0x1.6db086p+0f, -0x1.e2c592p+0f,
+    0x1.266666p-55f, 0x1.3abd8ep+0f, 0x1.6dbc76p+0f, -0x1.e2c31ep+0f,
     /* node 4715 z */
-    -0x1.ccccccp-56f, -0x1.4d23eep+0f, -0x1.c3a9b2p-1f, 0x1.a0ad72p+1f,
+    -0x1.99999ap-55f, -0x1.4d18bp+0f, -0x1.c3cd9ap-1f, 0x1.a0c448p+1f,
     /* node 4745 x */
-    0x1.8p-56f, 0x1.118396p+2f, 0x1.45702ap-3f, -0x1.995f64p+0f,
+    0x1.d9999ap-54f, 0x1.1196dap+2f, 0x1.4656fcp-3f, -0x1.994a58p+0f,
     /* node 4745 y */
-    0x1.666666p-56f, 0x1.83352p-1f, 0x1.98fe9p+0f, -0x1.bf2e06p+0f,
+    -0x1.ccccccp-56f, 0x1.835926p-1f, 0x1.9909fap+0f, -0x1.bf317ap+0f,
     /* node 4745 z */
-    -0x1p-56f, -0x1.3a3accp+0f, -0x1.dfe29p-1f, 0x1.f1fdf6p+1f,
+    -0x1.ccccccp-55f, -0x1.3a2b72p+0f, -0x1.dff6bap-1f, 0x1.f20e56p+1f,
     /* node 4748 x */
-    -0x1.3b3334p-53f, 0x1.72c566p+1f, 0x1.1089cap-1f, -0x1.3f4488p+0f,
+    0x1.a66666p-56f, 0x1.72f0fap+1f, 0x1.10b13p-1f, -0x1.3f2cd4p+0f,
     /* node 4748 y */
-    -0x1.933334p-54f, 0x1.6b5116p+0f, 0x1.7f4f1cp+0f, -0x1.2b8a9ep+1f,
+    0x1.b33334p-56f, 0x1.6b8b62p+0f, 0x1.7f893ap+0f, -0x1.2b9cc8p+1f,
     /* node 4748 z */
-    0x1.ccccccp-57f, -0x1.a5841cp-2f, -0x1.94d452p-1f, 0x1.e5ef24p+0f,
+    -0x1.4cccccp-56f, -0x1.a58a68p-2f, -0x1.951268p-1f, 0x1.e6394p+0f,
     /* node 4763 x */
-    -0x1.b33334p-56f, 0x1.0349aap+1f, 0x1.5a037cp-2f, -0x1.340f9ap-1f,
+    -0x1p-58f, 0x1.037458p+1f, 0x1.5ab6cap-2f, -0x1.341122p-1f,
     /* node 4763 y */
-    0x1.4cccccp-56f, 0x1.c7c966p-1f, 0x1.3808c6p+0f, -0x1.8c8cfcp+0f,
+    -0x1.b33334p-56f, 0x1.c82f5p-1f, 0x1.38427ap+0f, -0x1.8cb476p+0f,
     /* node 4763 z */
-    -0x1.ccccccp-58f, -0x1.7ab3ap-3f, -0x1.46025ap-1f, 0x1.499454p+0f,
+    -0x1.99999ap-57f, -0x1.7ad252p-3f, -0x1.461962p-1f, 0x1.49caa4p+0f,
     /* node 4772 x */
-    0x1.d4ccccp-53f, 0x1.0fca5ep+2f, 0x1.07d996p-4f, -0x1.5f975ep+0f,
+    0x1.39999ap-55f, 0x1.0fdd5cp+2f, 0x1.094d0ep-4f, -0x1.5f7a28p+0f,
     /* node 4772 y */
-    -0x1.99999ap-56f, 0x1.6e1986p+0f, 0x1.50e208p+0f, -0x1.e3b9ap+0f,
+    -0x1.a66666p-55f, 0x1.6e2f0cp+0f, 0x1.50f2cep+0f, -0x1.e3b344p+0f,
     /* node 4772 z */
-    -0x1.466666p-54f, -0x1.3d41ecp+0f, -0x1.b90836p-1f, 0x1.7a5888p+1f,
+    0x1.99999ap-60f, -0x1.3d38ep+0f, -0x1.b92d08p-1f, 0x1.7a6f62p+1f,
     /* node 4791 x */
-    0x1.19999ap-56f, 0x1.9f56d2p+1f, 0x1.faa15ep-2f, -0x1.75bb6p+0f,
+    -0x1.066666p-54f, 0x1.9f875cp+1f, 0x1.fb2dc8p-2f, -0x1.75b228p+0f,
     /* node 4791 y */
-    0x1.4cccccp-56f, 0x1.734694p+0f, 0x1.8369f4p+0f, -0x1.3b84b8p+1f,
+    -0x1.4cccccp-56f, 0x1.736994p+0f, 0x1.8383a8p+0f, -0x1.3b873ap+1f,
     /* node 4791 z */
-    0x1.8p-55f, -0x1.3da88ap-1f, -0x1.c4208ap-1f, 0x1.2db362p+1f,
+    -0x1.333334p-58f, -0x1.3da722p-1f, -0x1.c44c6ep-1f, 0x1.2dced6p+1f,
     /* node 4812 x */
-    -0x1.a66666p-54f, 0x1.096612p+2f, 0x1.3ed99p-2f, -0x1.d4d16ep+0f,
+    0x1.3p-53f, 0x1.097a86p+2f, 0x1.3f2702p-2f, -0x1.d4aafcp+0f,
     /* node 4812 y */
-    0x1.4cccccp-56f, 0x1.6ddbdep+0f, 0x1.8113bep+0f, -0x1.35449ap+1f,
+    -0x1.133334p-54f, 0x1.6deb74p+0f, 0x1.811e12p+0f, -0x1.353f24p+1f,
     /* node 4812 z */
-    -0x1.ccccccp-56f, -0x1.38da9cp+0f, -0x1.e1b2bcp-1f, 0x1.b8d65ap+1f,
+    -0x1.b33334p-55f, -0x1.38c45p+0f, -0x1.e1c9e4p-1f, 0x1.b8e62p+1f,
     /* node 4813 x */
-    0x1p-54f, 0x1.0f9f56p+2f, 0x1.a60f5ep-3f, -0x1.aca1e8p+0f,
+    0x1p-53f, 0x1.0fb48cp+2f, 0x1.a6d2d4p-3f, -0x1.ac8344p+0f,
     /* node 4813 y */
-    0x1.333334p-56f, 0x1.4e514ap+0f, 0x1.7cc0f6p+0f, -0x1.12592ep+1f,
+    0x1.666666p-56f, 0x1.4e65fp+0f, 0x1.7ccc2p+0f, -0x1.125794p+1f,
     /* node 4813 z */
-    -0x1.0cccccp-54f, -0x1.46da66p+0f, -0x1.d5c0bcp-1f, 0x1.b9f09cp+1f,
+    0x1.99999ap-58f, -0x1.46cd5ep+0f, -0x1.d5dfb4p-1f, 0x1.ba049p+1f,
     /* node 4814 x */
-    -0x1.d33334p-54f, 0x1.03a3e8p+2f, 0x1.824dfcp-2f, -0x1.ed380ep+0f,
+    0x1p-57f, 0x1.03b68p+2f, 0x1.829074p-2f, -0x1.ed033p+0f,
     /* node 4814 y */
-    0x1.4cccccp-55f, 0x1.718deep+0f, 0x1.893e54p+0f, -0x1.4d3342p+1f,
+    0x1.99999ap-59f, 0x1.719a6ap+0f, 0x1.894a3p+0f, -0x1.4d299p+1f,
     /* node 4814 z */
-    0x1.ccccccp-55f, -0x1.24db56p+0f, -0x1.f2ef96p-1f, 0x1.bacafap+1f,
+    0x1.99999ap-55f, -0x1.24c47p+0f, -0x1.f307fap-1f, 0x1.bad5eep+1f,
     /* node 4817 x */
-    -0x1.19999ap-56f, 0x1.bb8648p+1f, 0x1.d83d2p-2f, -0x1.b0966ap+0f,
+    -0x1.99999ap-56f, 0x1.bbaf58p+1f, 0x1.d8778cp-2f, -0x1.b06c14p+0f,
     /* node 4817 y */
-    0x1.333334p-58f, 0x1.10d0eap+0f, 0x1.9655ccp+0f, -0x1.58d12cp+1f,
+    0x1.8p-55f, 0x1.10e1f2p+0f, 0x1.965e4cp+0f, -0x1.58cc3cp+1f,
     /* node 4817 z */
-    -0x1.ccccccp-55f, -0x1.7f907ap-1f, -0x1.0e24eap+0f, 0x1.9bc18p+1f,
+    -0x1.e66666p-55f, -0x1.7f8816p-1f, -0x1.0e387p+0f, 0x1.9bdbd2p+1f,
     /* node 4906 x */
-    0x1.333334p-55f, 0x1.01872p+2f, 0x1.7052b2p-3f, -0x1.5c311cp+0f,
+    0x1.f33334p-53f, 0x1.019b1ep+2f, 0x1.71054ep-3f, -0x1.5c171ep+0f,
     /* node 4906 y */
-    0x1.2p-54f, 0x1.dec27cp+0f, 0x1.23b8eap+0f, -0x1.f2691ep+0f,
+    0x1.666666p-55f, 0x1.dedccep+0f, 0x1.23ccfap+0f, -0x1.f260cp+0f,
     /* node 4906 z */
-    0x1.99999ap-58f, -0x1.9ee46ap-1f, -0x1.7d7deep-1f, 0x1.1559dp+1f,
+    0x1.59999ap-55f, -0x1.9ed436p-1f, -0x1.7da07cp-1f, 0x1.1577a2p+1f,
     /* node 4907 x */
-    -0x1.533334p-56f, 0x1.b6cf72p+0f, -0x1.6c6ba8p-9f, -0x1.dc5b06p-2f,
+    0x1.0b3334p-54f, 0x1.b72cc6p+0f, -0x1.3cabcap-9f, -0x1.dc543p-2f,
     /* node 4907 y */
-    -0x1.88p-56f, -0x1.8a60ecp-2f, 0x1.7cd24cp-2f, -0x1.2ffae8p-3f,
+    -0x1.866666p-58f, -0x1.8a32dap-2f, 0x1.7cecbp-2f, -0x1.30336cp-3f,
     /* node 4907 z */
-    0x1.99999ap-58f, -0x1.76af88p-1f, -0x1.f0dfa2p-2f, 0x1.9a79e6p+0f,
+    -0x1.99999ap-55f, -0x1.76afdap-1f, -0x1.f0fe42p-2f, 0x1.9aa45cp+0f,
     /* node 4908 x */
-    0x1.0cccccp-53f, 0x1.98bc92p+1f, 0x1.ac2b8ep-3f, -0x1.c07622p-1f,
+    0x1.a66666p-55f, 0x1.98e712p+1f, 0x1.ac40eap-3f, -0x1.c03b04p-1f,
     /* node 4908 y */
-    -0x1.19999ap-56f, -0x1.72aafcp-3f, 0x1.3f6a22p+0f, -0x1.516478p+0f,
+    0x1.ccccccp-57f, -0x1.7291dcp-3f, 0x1.3f77bcp+0f, -0x1.5172c6p+0f,
     /* node 4908 z */
-    0x1.333334p-56f, -0x1.157712p-2f, -0x1.fa83dcp-1f, 0x1.5d849cp+1f,
+    -0x1.333334p-56f, -0x1.1564b2p-2f, -0x1.fa9fp-1f, 0x1.5d966ep+1f,
     /* node 4966 x */
-    0x1.533334p-55f, 0x1.3a86d2p+1f, 0x1.afa1d2p-2f, -0x1.ba696ep-1f,
+    0x1.0cccccp-54f, 0x1.3aaf42p+1f, 0x1.b00b02p-2f, -0x1.ba54e4p-1f,
     /* node 4966 y */
-    0x1.733334p-55f, 0x1.0c13ccp+0f, 0x1.6538bap+0f, -0x1.e1ffd4p+0f,
+    -0x1.0cccccp-55f, 0x1.0c2adcp+0f, 0x1.653d1cp+0f, -0x1.e20166p+0f,
     /* node 4966 z */
-    -0x1.8p-56f, -0x1.40c9c8p-2f, -0x1.849514p-1f, 0x1.a5a18ap+0f,
+    -0x1.99999ap-57f, -0x1.40a198p-2f, -0x1.84a688p-1f, 0x1.a5dacap+0f,
     /* node 4979 x */
-    -0x1.666666p-53f, 0x1.171184p+2f, 0x1.bca4a4p-4f, -0x1.9045a4p+0f,
+    -0x0p+0f, 0x1.172538p+2f, 0x1.be340ap-4f, -0x1.902b54p+0f,
     /* node 4979 y */
-    -0x1.99999ap-60f, 0x1.f5c14cp-1f, 0x1.94769p+0f, -0x1.cd6228p+0f,
+    -0x0p+0f, 0x1.f5e584p-1f, 0x1.947fcep+0f, -0x1.cd61bp+0f,
     /* node 4979 z */
-    -0x1.8p-55f, -0x1.4d6c2p+0f, -0x1.ce41bep-1f, 0x1.d33e98p+1f,
+    -0x1.333334p-55f, -0x1.4d5d0cp+0f, -0x1.ce53eep-1f, 0x1.d34cdap+1f,
     /* node 4981 x */
-    -0x1.99999ap-56f, 0x1.eaf7c6p+1f, 0x1.cd0526p-2f, -0x1.f3ea48p+0f,
+    -0x1.733334p-54f, 0x1.eb21e4p+1f, 0x1.cd57ep-2f, -0x1.f3bb56p+0f,
     /* node 4981 y */
-    0x1.333334p-58f, 0x1.749388p+0f, 0x1.9006c8p+0f, -0x1.678d0cp+1f,
+    0x1.79999ap-54f, 0x1.74a8fp+0f, 0x1.90138p+0f, -0x1.678598p+1f,
     /* node 4981 z */
-    -0x1p-56f, -0x1.f9278ap-1f, -0x1.fa2a34p-1f, 0x1.a6617cp+1f,
+    0x1.ccccccp-56f, -0x1.f90ap-1f, -0x1.fa4476p-1f, 0x1.a671b6p+1f,
     /* node 4982 x */
-    -0x1.ccccccp-56f, 0x1.f8de46p+1f, 0x1.b23a7ep-2f, -0x1.f8f4c4p+0f,
+    0x1.266666p-54f, 0x1.f90102p+1f, 0x1.b27952p-2f, -0x1.f8b0c2p+0f,
     /* node 4982 y */
-    0x1.cp-54f, 0x1.8c1ff4p+0f, 0x1.8a7d48p+0f, -0x1.62bd44p+1f,
+    0x1.666666p-54f, 0x1.8c2436p+0f, 0x1.8a889cp+0f, -0x1.62ac0cp+1f,
     /* node 4982 z */
-    -0x1.ccccccp-56f, -0x1.0e5a1ap+0f, -0x1.ef4f46p-1f, 0x1.a6d954p+1f,
+    -0x1.ccccccp-56f, -0x1.0e484ep+0f, -0x1.ef5d8cp-1f, 0x1.a6e372p+1f,
     /* node 4983 x */
-    -0x1.4cccccp-53f, 0x1.3561ccp+2f, -0x1.947adp-4f, -0x1.4a3a7p+0f,
+    0x1.f1999ap-53f, 0x1.357428p+2f, -0x1.929a14p-4f, -0x1.4a215ep+0f,
     /* node 4983 y */
-    0x1.79999ap-55f, 0x1.ec8c7cp-2f, 0x1.f6b48ep+0f, -0x1.70dc52p+0f,
+    -0x1.e66666p-56f, 0x1.eceb22p-2f, 0x1.f6c47ap+0f, -0x1.70e8d4p+0f,
     /* node 4983 z */
-    -0x1.333334p-55f, -0x1.338fcep+0f, -0x1.dbee56p-1f, 0x1.0b17d2p+2f,
+    -0x1.ccccccp-55f, -0x1.33811ap+0f, -0x1.dc09cap-1f, 0x1.0b2214p+2f,
 };
 const tfit_model tfit_liver_forward = {
     4u, 1u, 240u, 1u, 2892u,
@@ -1625,8 +1625,8 @@ const tfit_model tfit_liver_forward = {
      0x3e658a09u, 0x3c3b0dbeu, 0x3e12c57bu, 0xbdf82bb2u, 0xbd0ecd48u, 0xbdb33eddu,
      0xbe315cacu, 0xbe315cacu, 0xbe315cacu, 0xbfb065bbu, 0xc0009e2bu, 0x3fdffc71u,
      0xefdea511u, 0xf02256abu, 0x700d5ae8u, 0xc001f357u, 0x3f8b12d0u, 0xbff61a03u,
-     0x041f8aeau, 0xfab9d30cu},
-    0x7f46811cu
+     0xcf026a7du, 0xfab9d30cu},
+    0x550add9cu
 };
 static const int32_t tfit_liver_forward_q31_coef[3613] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -1636,1451 +1636,1451 @@ static const int32_t tfit_liver_forward_q31_coef[3613] = {
     0, 0, 447392416,
     5,
     /* node 1 x: shift, then 4 coefficients */
-    33, 0, 498596032, -19637254, -51840116,
+    33, 0, 498766112, -19584236, -51828032,
     /* node 1 y: shift, then 4 coefficients */
-    34, 0, 200988368, 278118240, -288549376,
+    34, 0, 201096144, 278181280, -288587936,
     /* node 1 z: shift, then 4 coefficients */
-    33, 0, -97102456, -122952464, 338288192,
+    33, 0, -97094928, -122990224, 338388416,
     /* node 2 x: shift, then 4 coefficients */
-    34, 0, 935428992, -22695468, -104919776,
+    34, 0, 935756288, -22587638, -104907480,
     /* node 2 y: shift, then 4 coefficients */
-    34, 0, 249463088, 243522368, -291780576,
+    34, 0, 249582848, 243604112, -291804928,
     /* node 2 z: shift, then 4 coefficients */
-    34, 0, -170666576, -228650624, 594027648,
+    34, 0, -170649040, -228720080, 594272896,
     /* node 3 x: shift, then 4 coefficients */
-    34, 0, 836359296, -22116724, -38225888,
+    34, 0, 836682560, -22011454, -38232920,
     /* node 3 y: shift, then 4 coefficients */
-    34, 0, 191251344, 208480032, -230378896,
+    34, 0, 191373088, 208560464, -230409904,
     /* node 3 z: shift, then 4 coefficients */
-    34, 0, -119008472, -229345344, 580845504,
+    34, 0, -118993872, -229416944, 581077760,
     /* node 4 x: shift, then 4 coefficients */
-    33, 0, 492558880, -22160926, -23452352,
+    33, 0, 492723136, -22102134, -23446328,
     /* node 4 y: shift, then 4 coefficients */
-    34, 0, 131830408, 288230368, -250826016,
+    34, 0, 131960608, 288296768, -250865920,
     /* node 4 z: shift, then 4 coefficients */
-    33, 0, -75111864, -130885528, 362105120,
+    33, 0, -75088368, -130919672, 362211008,
     /* node 25 x: shift, then 4 coefficients */
-    34, 0, 569882560, 75000048, -163931856,
+    34, 0, 570136768, 75075424, -163868176,
     /* node 25 y: shift, then 4 coefficients */
-    34, 0, 197318336, 340640864, -429059360,
+    34, 0, 197384496, 340576384, -429003680,
     /* node 25 z: shift, then 4 coefficients */
-    34, 0, -76839256, -204080704, 415248160,
+    34, 0, -76823336, -204089328, 415438208,
     /* node 26 x: shift, then 4 coefficients */
-    34, 0, 529201728, 60063752, -143710256,
+    34, 0, 529451648, 60070740, -143598336,
     /* node 26 y: shift, then 4 coefficients */
-    34, 0, 182145584, 325445952, -415320288,
+    34, 0, 182251056, 325478624, -415357760,
     /* node 26 z: shift, then 4 coefficients */
-    34, 0, -73384496, -200777824, 399044384,
+    34, 0, -73367560, -200796096, 399258080,
     /* node 27 x: shift, then 4 coefficients */
-    34, 0, 541238144, 72385112, -150422384,
+    34, 0, 541633600, 72444488, -150325152,
     /* node 27 y: shift, then 4 coefficients */
-    34, 0, 193823248, 325370528, -406587680,
+    34, 0, 193797952, 325424064, -406614528,
     /* node 27 z: shift, then 4 coefficients */
-    34, 0, -66204028, -190755904, 383111712,
+    34, 0, -66221568, -190875088, 383427424,
     /* node 28 x: shift, then 4 coefficients */
-    34, 0, 582282816, 86136904, -172991088,
+    34, 0, 582604416, 86222176, -172940944,
     /* node 28 y: shift, then 4 coefficients */
-    34, 0, 214377792, 343645120, -428792480,
+    34, 0, 214475920, 343741536, -428890592,
     /* node 28 z: shift, then 4 coefficients */
-    34, 0, -72810984, -197634640, 403552512,
+    34, 0, -72803000, -197685152, 403769568,
     /* node 102 x: shift, then 4 coefficients */
-    34, 0, 574102208, -29908940, -100636016,
+    34, 0, 574445568, -29933108, -100534840,
     /* node 102 y: shift, then 4 coefficients */
-    34, 0, -220606304, 208910352, -151728880,
+    34, 0, -220731392, 209013952, -151846128,
     /* node 102 z: shift, then 4 coefficients */
-    34, 0, -55955180, -174470672, 354577792,
+    34, 0, -56013396, -174495472, 354786112,
     /* node 148 x: shift, then 4 coefficients */
-    33, 0, 354999552, 73149656, -141716352,
+    33, 0, 355150464, 73149936, -141644944,
     /* node 148 y: shift, then 4 coefficients */
-    33, 0, 204922704, 185754032, -282726112,
+    33, 0, 204967200, 185785600, -282713632,
     /* node 148 z: shift, then 4 coefficients */
-    34, 0, -51709372, -164008160, 377281184,
+    34, 0, -51688744, -164067472, 377548800,
     /* node 177 x: shift, then 4 coefficients */
-    34, 0, 617605248, 104400320, -202160976,
+    34, 0, 617883648, 104404936, -202007120,
     /* node 177 y: shift, then 4 coefficients */
-    33, 0, 128798120, 179096656, -232345440,
+    33, 0, 128853544, 179130480, -232348976,
     /* node 177 z: shift, then 4 coefficients */
-    34, 0, -72038976, -193997328, 408067872,
+    34, 0, -72065632, -194121200, 408321920,
     /* node 178 x: shift, then 4 coefficients */
-    34, 0, 566957120, 89954600, -170593744,
+    34, 0, 567410048, 90124048, -170597072,
     /* node 178 y: shift, then 4 coefficients */
-    34, 0, 227755216, 337047552, -425928800,
+    34, 0, 227827152, 337142016, -426023136,
     /* node 178 z: shift, then 4 coefficients */
-    34, 0, -62388052, -184820784, 378263040,
+    34, 0, -62368000, -184862304, 378494208,
     /* node 179 x: shift, then 4 coefficients */
-    34, 0, 595133056, 112053800, -196729728,
+    34, 0, 595463104, 112119424, -196636336,
     /* node 179 y: shift, then 4 coefficients */
-    33, 0, 142331648, 172847584, -229302160,
+    33, 0, 142397472, 172930912, -229342224,
     /* node 179 z: shift, then 4 coefficients */
-    34, 0, -49195028, -169538720, 357092928,
+    34, 0, -49201296, -169650064, 357392768,
     /* node 180 x: shift, then 4 coefficients */
-    34, 0, 664220864, 128452808, -244825248,
+    34, 0, 664564032, 128510064, -244739168,
     /* node 180 y: shift, then 4 coefficients */
-    33, 0, 162860896, 185627424, -261061200,
+    33, 0, 162927360, 185704064, -261116368,
     /* node 180 z: shift, then 4 coefficients */
-    34, 0, -65401780, -182905360, 402521376,
+    34, 0, -65357212, -182956384, 402795296,
     /* node 186 x: shift, then 4 coefficients */
-    34, 0, 800633088, -19241192, -6982086,
+    34, 0, 800960704, -19128064, -6958268,
     /* node 186 y: shift, then 4 coefficients */
-    35, 0, 254408768, 422474112, -392898528,
+    35, 0, 254682464, 422626752, -393006560,
     /* node 186 z: shift, then 4 coefficients */
-    34, 0, -108229216, -240851136, 645237568,
+    34, 0, -108203736, -240926464, 645422848,
     /* node 239 x: shift, then 4 coefficients */
-    33, 0, 343770688, 70578368, -133623384,
+    33, 0, 343918144, 70571672, -133546552,
     /* node 239 y: shift, then 4 coefficients */
-    33, 0, 188288784, 186930704, -275363136,
+    33, 0, 188332096, 186959808, -275349920,
     /* node 239 z: shift, then 4 coefficients */
-    34, 0, -55557408, -170717376, 384483456,
+    34, 0, -55539356, -170772496, 384743840,
     /* node 240 x: shift, then 4 coefficients */
-    33, 0, 366725120, 71833872, -150910944,
+    33, 0, 366869664, 71839144, -150843968,
     /* node 240 y: shift, then 4 coefficients */
-    33, 0, 189687232, 195138032, -296032352,
+    33, 0, 189727488, 195161952, -296016896,
     /* node 240 z: shift, then 4 coefficients */
-    34, 0, -81752496, -191333088, 443361056,
+    34, 0, -81664976, -191299072, 443540704,
     /* node 241 x: shift, then 4 coefficients */
-    33, 0, 351940224, 65246480, -136493248,
+    33, 0, 352071392, 65250460, -136425136,
     /* node 241 y: shift, then 4 coefficients */
-    33, 0, 164301184, 194500016, -280698432,
+    33, 0, 164359312, 194497456, -280668576,
     /* node 241 z: shift, then 4 coefficients */
-    34, 0, -86983720, -202350288, 457571552,
+    34, 0, -86954720, -202366624, 457747008,
     /* node 397 x: shift, then 4 coefficients */
-    33, 0, 533743296, 36026196, -200957200,
+    33, 0, 533886432, 36067384, -200883280,
     /* node 397 y: shift, then 4 coefficients */
-    33, 0, 262482800, 161317200, -283784032,
+    33, 0, 262478256, 161347648, -283726400,
     /* node 397 z: shift, then 4 coefficients */
-    34, 0, -205175104, -197759872, 577000896,
+    34, 0, -205085168, -197808608, 577192064,
     /* node 398 x: shift, then 4 coefficients */
-    33, 0, 554752896, 28793168, -209488032,
+    33, 0, 554885440, 28836056, -209417520,
     /* node 398 y: shift, then 4 coefficients */
-    33, 0, 256224448, 165820288, -288531648,
+    33, 0, 256270192, 165860736, -288521408,
     /* node 398 z: shift, then 4 coefficients */
-    33, 0, -128385600, -104991000, 324604000,
+    33, 0, -128380008, -105028040, 324720000,
     /* node 399 x: shift, then 4 coefficients */
-    33, 0, 545102720, 39342068, -224238112,
+    33, 0, 545332864, 39397656, -224208784,
     /* node 399 y: shift, then 4 coefficients */
-    33, 0, 261895920, 172706880, -306939712,
+    33, 0, 262014912, 172755488, -306964928,
     /* node 399 z: shift, then 4 coefficients */
-    33, 0, -121824896, -104768680, 323177120,
+    33, 0, -121832040, -104808896, 323315456,
     /* node 400 x: shift, then 4 coefficients */
-    33, 0, 515770400, 46968864, -207600880,
+    33, 0, 515950240, 47000332, -207557552,
     /* node 400 y: shift, then 4 coefficients */
-    33, 0, 263768400, 168875104, -298180704,
+    33, 0, 263855584, 168930048, -298191520,
     /* node 400 z: shift, then 4 coefficients */
-    34, 0, -186292304, -195939552, 565524608,
+    34, 0, -186334000, -196021984, 565812160,
     /* node 413 x: shift, then 4 coefficients */
-    33, 0, 542125120, -17628214, -93520800,
+    33, 0, 542283392, -17570640, -93501032,
     /* node 413 y: shift, then 4 coefficients */
-    34, 0, 239166176, 321377184, -344342560,
+    34, 0, 239285440, 321453056, -344354592,
     /* node 413 z: shift, then 4 coefficients */
-    33, 0, -128554240, -121125872, 364815840,
+    33, 0, -128538624, -121157424, 364916512,
     /* node 414 x: shift, then 4 coefficients */
-    33, 0, 517081536, -9023737, -96857656,
+    33, 0, 517252544, -8975126, -96838248,
     /* node 414 y: shift, then 4 coefficients */
-    34, 0, 301113984, 284973216, -363645856,
+    34, 0, 301228832, 285046112, -363661696,
     /* node 414 z: shift, then 4 coefficients */
-    33, 0, -119906240, -114182128, 325001472,
+    33, 0, -119885944, -114214656, 325113408,
     /* node 415 x: shift, then 4 coefficients */
-    34, 0, 896739904, -6398703, -119543488,
+    34, 0, 897082816, -6298336, -119539656,
     /* node 415 y: shift, then 4 coefficients */
-    34, 0, 300281536, 225142576, -302212544,
+    34, 0, 300388832, 225220832, -302240480,
     /* node 415 z: shift, then 4 coefficients */
-    34, 0, -136141744, -207517936, 522589216,
+    34, 0, -136120144, -207598352, 522834880,
     /* node 456 x: shift, then 4 coefficients */
-    33, 0, 562496576, 30961336, -225439056,
+    33, 0, 562685632, 31012444, -225385312,
     /* node 456 y: shift, then 4 coefficients */
-    33, 0, 250304688, 175722368, -304702976,
+    33, 0, 250384528, 175766976, -304697280,
     /* node 456 z: shift, then 4 coefficients */
-    33, 0, -145314928, -109837144, 358887392,
+    33, 0, -145292704, -109870584, 358982432,
     /* node 457 x: shift, then 4 coefficients */
-    33, 0, 556426816, 40402340, -242019728,
+    33, 0, 556614784, 40449164, -241959088,
     /* node 457 y: shift, then 4 coefficients */
-    33, 0, 256207664, 181972416, -325593600,
+    33, 0, 256251344, 182001376, -325561344,
     /* node 457 z: shift, then 4 coefficients */
-    33, 0, -141150000, -110993696, 363440480,
+    33, 0, -141131920, -111028856, 363554688,
     /* node 480 x: shift, then 4 coefficients */
-    33, 0, 505813024, 58055472, -235762608,
+    33, 0, 505986656, 58105400, -235702816,
     /* node 480 y: shift, then 4 coefficients */
-    33, 0, 131048960, 210475520, -334561664,
+    33, 0, 131084712, 210491504, -334563584,
     /* node 480 z: shift, then 4 coefficients */
-    33, 0, -120972464, -143444784, 483980960,
+    33, 0, -120953680, -143477776, 484060960,
     /* node 481 x: shift, then 4 coefficients */
-    33, 0, 474376576, 59815412, -223961744,
+    33, 0, 474544096, 59851512, -223875216,
     /* node 481 y: shift, then 4 coefficients */
-    33, 0, 123726912, 210968576, -344192864,
+    33, 0, 123769152, 210985344, -344202176,
     /* node 481 z: shift, then 4 coefficients */
-    33, 0, -101563552, -144136576, 451566592,
+    33, 0, -101549568, -144172176, 451654080,
     /* node 482 x: shift, then 4 coefficients */
-    33, 0, 495078368, 61517848, -247601216,
+    33, 0, 495247264, 61555384, -247506320,
     /* node 482 y: shift, then 4 coefficients */
-    33, 0, 156725968, 213510560, -366356032,
+    33, 0, 156760592, 213519232, -366328960,
     /* node 482 z: shift, then 4 coefficients */
-    33, 0, -118751560, -141151760, 457971776,
+    33, 0, -118732928, -141181888, 458033504,
     /* node 483 x: shift, then 4 coefficients */
-    33, 0, 516657824, 59050644, -254175616,
+    33, 0, 516821472, 59094536, -254070736,
     /* node 483 y: shift, then 4 coefficients */
-    33, 0, 169618912, 211382416, -360615616,
+    33, 0, 169658784, 211398800, -360598048,
     /* node 483 z: shift, then 4 coefficients */
-    33, 0, -134149032, -138448288, 470324288,
+    33, 0, -134126488, -138479728, 470365984,
     /* node 519 x: shift, then 4 coefficients */
-    34, 0, 482591424, 8417086, -96958184,
+    34, 0, 482972896, 8522264, -96999816,
     /* node 519 y: shift, then 4 coefficients */
-    36, 0, -207055776, 446407264, -213590048,
+    36, 0, -206413040, 446550304, -214380160,
     /* node 519 z: shift, then 4 coefficients */
-    34, 0, -195570016, -166827456, 550691648,
+    34, 0, -195603344, -166900784, 550632704,
     /* node 520 x: shift, then 4 coefficients */
-    35, 0, 931344768, 17417640, -121377456,
+    35, 0, 932162176, 17566488, -121589176,
     /* node 520 y: shift, then 4 coefficients */
-    36, 0, -97369336, 402306944, -235154960,
+    36, 0, -96346472, 402320064, -236241968,
     /* node 520 z: shift, then 4 coefficients */
-    34, 0, -178226896, -184985216, 574831296,
+    34, 0, -178355696, -185087248, 574854528,
     /* node 521 x: shift, then 4 coefficients */
-    35, 0, 853492416, 17825176, -156171760,
+    35, 0, 854269696, 17961232, -156162448,
     /* node 521 y: shift, then 4 coefficients */
-    36, 0, -187489808, 332484960, -169913920,
+    36, 0, -187197504, 332706080, -169986592,
     /* node 521 z: shift, then 4 coefficients */
-    34, 0, -187815664, -162811776, 515945952,
+    34, 0, -187826832, -162871520, 516088640,
     /* node 522 x: shift, then 4 coefficients */
-    34, 0, 442809152, 7061502, -99507792,
+    34, 0, 443213760, 7161728, -99411256,
     /* node 522 y: shift, then 4 coefficients */
-    36, 0, -257117648, 368954304, -166210256,
+    36, 0, -256831728, 369192480, -166365232,
     /* node 522 z: shift, then 4 coefficients */
-    34, 0, -195715648, -150703776, 497214752,
+    34, 0, -195738336, -150760224, 497427264,
     /* node 579 x: shift, then 4 coefficients */
-    33, 0, 486934496, 61422248, -219702256,
+    33, 0, 487103264, 61460560, -219655232,
     /* node 579 y: shift, then 4 coefficients */
-    33, 0, 240596320, 189623904, -328170368,
+    33, 0, 240646048, 189669152, -328160064,
     /* node 579 z: shift, then 4 coefficients */
-    34, 0, -192027472, -216519392, 620486912,
+    34, 0, -192006432, -216587584, 620782592,
     /* node 580 x: shift, then 4 coefficients */
-    33, 0, 458196992, 67312000, -199745152,
+    33, 0, 458366784, 67344024, -199684000,
     /* node 580 y: shift, then 4 coefficients */
-    33, 0, 245928608, 186134656, -317579168,
+    33, 0, 245992528, 186170144, -317565984,
     /* node 580 z: shift, then 4 coefficients */
-    34, 0, -141513520, -197228880, 527898112,
+    34, 0, -141485024, -197293968, 528156928,
     /* node 581 x: shift, then 4 coefficients */
-    33, 0, 483130880, 60361076, -207758240,
+    33, 0, 483274112, 60386348, -207674448,
     /* node 581 y: shift, then 4 coefficients */
-    33, 0, 251689392, 181713472, -314527296,
+    33, 0, 251746256, 181754448, -314506880,
     /* node 581 z: shift, then 4 coefficients */
-    34, 0, -165681776, -201385344, 559595840,
+    34, 0, -165639520, -201420672, 559821376,
     /* node 582 x: shift, then 4 coefficients */
-    33, 0, 514434112, 54771204, -233632048,
+    33, 0, 514588512, 54809656, -233561904,
     /* node 582 y: shift, then 4 coefficients */
-    33, 0, 248659952, 187168592, -331151808,
+    33, 0, 248729984, 187203344, -331147072,
     /* node 582 z: shift, then 4 coefficients */
-    33, 0, -112419320, -109495456, 331936032,
+    33, 0, -112408304, -109532808, 332052768,
     /* node 725 x: shift, then 4 coefficients */
-    34, 0, 625655680, 23299814, -119961504,
+    34, 0, 625966656, 23332682, -119828208,
     /* node 725 y: shift, then 4 coefficients */
-    34, 0, 20305360, 297674848, -414785248,
+    34, 0, 20332380, 297717024, -414877504,
     /* node 725 z: shift, then 4 coefficients */
-    34, 0, -66992348, -248679712, 588420736,
+    34, 0, -66954304, -248699568, 588571328,
     /* node 726 x: shift, then 4 coefficients */
-    34, 0, 635449408, 22785560, -113181440,
+    34, 0, 635759680, 22817526, -113044160,
     /* node 726 y: shift, then 4 coefficients */
-    34, 0, -2879953, 287179744, -395981824,
+    34, 0, -2866477, 287220256, -396065408,
     /* node 726 z: shift, then 4 coefficients */
-    34, 0, -55113368, -243203040, 581071616,
+    34, 0, -55080920, -243233584, 581236096,
     /* node 728 x: shift, then 4 coefficients */
-    34, 0, 569349312, 12680341, -95856224,
+    34, 0, 569631808, 12698929, -95714312,
     /* node 728 y: shift, then 4 coefficients */
-    34, 0, 18200660, 290100896, -405885344,
+    34, 0, 18214236, 290125376, -405942848,
     /* node 728 z: shift, then 4 coefficients */
-    34, 0, -62409332, -238239280, 534792640,
+    34, 0, -62383316, -238293200, 534998528,
     /* node 740 x: shift, then 4 coefficients */
-    33, 0, 564006464, -21818728, -28440402,
+    33, 0, 564178112, -21763940, -28435934,
     /* node 740 y: shift, then 4 coefficients */
-    34, 0, 7138473, 479584160, -212991664,
+    34, 0, 7291199, 479630240, -213078704,
     /* node 740 z: shift, then 4 coefficients */
-    33, 0, -69442768, -136341440, 537599872,
+    33, 0, -69418656, -136362432, 537677696,
     /* node 741 x: shift, then 4 coefficients */
-    34, 0, 810583424, -479276, -90339528,
+    34, 0, 810983552, -374016, -90374296,
     /* node 741 y: shift, then 4 coefficients */
-    35, 0, -12385306, 595149440, -285314912,
+    35, 0, -12100052, 595354880, -285493984,
     /* node 741 z: shift, then 4 coefficients */
-    33, 0, -87310224, -121406920, 442392192,
+    33, 0, -87290360, -121407856, 442512256,
     /* node 742 x: shift, then 4 coefficients */
-    33, 0, 499228160, -8603317, -70648104,
+    33, 0, 499391936, -8532846, -70623552,
     /* node 742 y: shift, then 4 coefficients */
-    34, 0, -34404624, 416702496, -153971872,
+    34, 0, -34257044, 416737664, -154058768,
     /* node 742 z: shift, then 4 coefficients */
-    33, 0, -105131032, -119919056, 514863840,
+    33, 0, -105109648, -119932136, 514897632,
     /* node 743 x: shift, then 4 coefficients */
-    33, 0, 715966912, -38820608, -58257684,
+    33, 0, 716135808, -38763644, -58243532,
     /* node 743 y: shift, then 4 coefficients */
-    34, 0, -31204648, 689314944, -239225872,
+    34, 0, -31087622, 689340480, -239281664,
     /* node 743 z: shift, then 4 coefficients */
-    33, 0, -88487792, -139898880, 660032128,
+    33, 0, -88455112, -139915728, 660099008,
     /* node 762 x: shift, then 4 coefficients */
-    34, 0, 741496320, 46449028, -180159120,
+    34, 0, 741814848, 46491300, -180023200,
     /* node 762 y: shift, then 4 coefficients */
-    34, 0, -48301752, 292316416, -354249408,
+    34, 0, -48306992, 292337536, -354295040,
     /* node 762 z: shift, then 4 coefficients */
-    34, 0, -45839516, -245392080, 613773632,
+    34, 0, -45798120, -245411184, 613929088,
     /* node 763 x: shift, then 4 coefficients */
-    34, 0, 778264256, 27985116, -174298096,
+    34, 0, 778593024, 28036826, -174217264,
     /* node 763 y: shift, then 4 coefficients */
-    34, 0, -103723280, 298797664, -302849856,
+    34, 0, -103749272, 298816896, -302876640,
     /* node 763 z: shift, then 4 coefficients */
-    34, 0, -46515880, -245495696, 608684352,
+    34, 0, -46449436, -245467504, 608765120,
     /* node 764 x: shift, then 4 coefficients */
-    34, 0, 693536896, 27841036, -139782992,
+    34, 0, 693865856, 27885060, -139670272,
     /* node 764 y: shift, then 4 coefficients */
-    34, 0, -90056128, 273260736, -317436800,
+    34, 0, -90078904, 273271840, -317499168,
     /* node 764 z: shift, then 4 coefficients */
-    34, 0, -27537836, -232366608, 540652928,
+    34, 0, -27502906, -232381776, 540797760,
     /* node 765 x: shift, then 4 coefficients */
-    34, 0, 675838912, 30023682, -132961584,
+    34, 0, 676164992, 30065208, -132835784,
     /* node 765 y: shift, then 4 coefficients */
-    34, 0, -55555332, 275224064, -349883104,
+    34, 0, -55570560, 275243104, -349938272,
     /* node 765 z: shift, then 4 coefficients */
-    34, 0, -33005492, -234035824, 556836800,
+    34, 0, -32973908, -234057696, 556989824,
     /* node 816 x: shift, then 4 coefficients */
-    34, 0, 626054336, 129549512, -224958128,
+    34, 0, 626399744, 129623624, -224869904,
     /* node 816 y: shift, then 4 coefficients */
-    33, 0, 171158208, 177514320, -249865264,
+    33, 0, 171217616, 177578224, -249893632,
     /* node 816 z: shift, then 4 coefficients */
-    34, 0, -38178640, -157029840, 343842976,
+    34, 0, -38144424, -157073744, 344101344,
     /* node 854 x: shift, then 4 coefficients */
-    34, 0, 873564416, -29182580, -148905472,
+    34, 0, 873908992, -29106102, -148881936,
     /* node 854 y: shift, then 4 coefficients */
-    34, 0, -196878352, 328741920, -213544032,
+    34, 0, -196857520, 328916576, -213644784,
     /* node 854 z: shift, then 4 coefficients */
-    34, 0, -86637768, -231409792, 602320576,
+    34, 0, -86699720, -231534912, 602619456,
     /* node 855 x: shift, then 4 coefficients */
-    34, 0, 769781632, -4481084, -135981632,
+    34, 0, 770074112, -4455455, -135826336,
     /* node 855 y: shift, then 4 coefficients */
-    34, 0, -171219520, 290636224, -240085888,
+    34, 0, -171157440, 290712064, -240228368,
     /* node 855 z: shift, then 4 coefficients */
-    34, 0, -51852576, -229169424, 541867584,
+    34, 0, -51847192, -229178512, 541983680,
     /* node 856 x: shift, then 4 coefficients */
-    33, 0, 443439296, 11266810, -87294432,
+    33, 0, 443594688, 11303326, -87271224,
     /* node 856 y: shift, then 4 coefficients */
-    34, 0, -113482768, 350413856, -306611936,
+    34, 0, -113509056, 350380352, -306639456,
     /* node 856 z: shift, then 4 coefficients */
-    34, 0, -59653392, -266146896, 717189568,
+    34, 0, -59610284, -266129392, 717306624,
     /* node 857 x: shift, then 4 coefficients */
-    33, 0, 570854080, -10784156, -93996224,
+    33, 0, 571019840, -10743362, -93971400,
     /* node 857 y: shift, then 4 coefficients */
-    34, 0, -134139088, 506837248, -294634080,
+    34, 0, -134122224, 506768864, -294647072,
     /* node 857 z: shift, then 4 coefficients */
-    33, 0, -51144440, -138166032, 479000832,
+    33, 0, -51095856, -138182752, 479019616,
     /* node 865 x: shift, then 4 coefficients */
-    33, 0, 565683008, -4465114, -147858832,
+    33, 0, 565863040, -4411031, -147829472,
     /* node 865 y: shift, then 4 coefficients */
-    33, 0, 157494016, 174390864, -216440208,
+    33, 0, 157544896, 174426704, -216440816,
     /* node 865 z: shift, then 4 coefficients */
-    33, 0, -154343408, -117955600, 391085984,
+    33, 0, -154326224, -117990344, 391186656,
     /* node 937 x: shift, then 4 coefficients */
-    34, 0, 679747328, 33252762, -138311920,
+    34, 0, 680070848, 33295964, -138174464,
     /* node 937 y: shift, then 4 coefficients */
-    34, 0, -24034778, 285585728, -377029696,
+    34, 0, -24031210, 285617536, -377107136,
     /* node 937 z: shift, then 4 coefficients */
-    34, 0, -46876240, -241291712, 588277568,
+    34, 0, -46842312, -241325024, 588458560,
     /* node 989 x: shift, then 4 coefficients */
-    35, 0, 928358144, 12661108, -80972048,
+    35, 0, 928974528, 12909020, -81093640,
     /* node 989 y: shift, then 4 coefficients */
-    36, 0, -28449698, 385781088, -243881088,
+    36, 0, -28340102, 386125088, -244178000,
     /* node 989 z: shift, then 4 coefficients */
-    34, 0, -162877280, -194919584, 584456896,
+    34, 0, -162929888, -195035840, 584485632,
     /* node 991 x: shift, then 4 coefficients */
-    34, 0, 555387904, 10042792, -80589664,
+    34, 0, 555749824, 10200128, -80408032,
     /* node 991 y: shift, then 4 coefficients */
-    36, 0, -63216020, 589606656, -339807008,
+    36, 0, -62776772, 590301504, -338572000,
     /* node 991 z: shift, then 4 coefficients */
-    34, 0, -183673936, -202727328, 649794944,
+    34, 0, -183714640, -202821472, 649837312,
     /* node 1016 x: shift, then 4 coefficients */
-    34, 0, 536147840, -11043557, -142722768,
+    34, 0, 536506496, -10936500, -142714832,
     /* node 1016 y: shift, then 4 coefficients */
-    35, 0, -263677344, 282313504, -102630136,
+    35, 0, -263441936, 282254624, -102751392,
     /* node 1016 z: shift, then 4 coefficients */
-    34, 0, -193308640, -134655776, 447773536,
+    34, 0, -193288304, -134685408, 447940672,
     /* node 1018 x: shift, then 4 coefficients */
-    34, 0, 515235488, -26854148, -131770696,
+    34, 0, 515541152, -26792782, -131781192,
     /* node 1018 y: shift, then 4 coefficients */
-    35, 0, -338487872, 295901408, -111736112,
+    35, 0, -338420096, 295734016, -111842904,
     /* node 1018 z: shift, then 4 coefficients */
-    34, 0, -158104944, -122710448, 369229152,
+    34, 0, -158042944, -122690192, 369293568,
     /* node 1019 x: shift, then 4 coefficients */
-    34, 0, 683532928, -28830374, -167443456,
+    34, 0, 683921984, -28776528, -167355312,
     /* node 1019 y: shift, then 4 coefficients */
-    35, 0, -360703456, 439846688, -149653232,
+    35, 0, -360767040, 439954720, -149571264,
     /* node 1019 z: shift, then 4 coefficients */
-    34, 0, -184691920, -152881712, 496285472,
+    34, 0, -184755216, -152864720, 496395392,
     /* node 1058 x: shift, then 4 coefficients */
-    33, 0, 534602144, 52453508, -254313696,
+    33, 0, 534757312, 52498296, -254241760,
     /* node 1058 y: shift, then 4 coefficients */
-    33, 0, 249176608, 191942608, -349481728,
+    33, 0, 249221200, 191969200, -349469952,
     /* node 1058 z: shift, then 4 coefficients */
-    33, 0, -132827088, -114846200, 372080224,
+    33, 0, -132813360, -114891312, 372170784,
     /* node 1059 x: shift, then 4 coefficients */
-    33, 0, 534623584, 47852292, -236166336,
+    33, 0, 534660896, 47879208, -236033056,
     /* node 1059 y: shift, then 4 coefficients */
-    33, 0, 258515392, 181438112, -325211520,
+    33, 0, 258522304, 181463408, -325149088,
     /* node 1059 z: shift, then 4 coefficients */
-    33, 0, -120699504, -107608064, 333656352,
+    33, 0, -120651336, -107626168, 333719456,
     /* node 1060 x: shift, then 4 coefficients */
-    33, 0, 548994304, 46719576, -253061600,
+    33, 0, 549131008, 46756624, -252970736,
     /* node 1060 y: shift, then 4 coefficients */
-    33, 0, 254990368, 187521408, -341670112,
+    33, 0, 255025936, 187554064, -341652992,
     /* node 1060 z: shift, then 4 coefficients */
-    33, 0, -139815792, -113344240, 372760672,
+    33, 0, -139821904, -113377840, 372879168,
     /* node 1061 x: shift, then 4 coefficients */
-    33, 0, 553079040, 46659840, -259571280,
+    33, 0, 553225536, 46706780, -259476800,
     /* node 1061 y: shift, then 4 coefficients */
-    33, 0, 244061216, 193539840, -350626048,
+    33, 0, 244068176, 193565824, -350575200,
     /* node 1061 z: shift, then 4 coefficients */
-    33, 0, -150337328, -117896568, 402662048,
+    33, 0, -150298528, -117926216, 402738400,
     /* node 1106 x: shift, then 4 coefficients */
-    34, 0, 609279808, 82154920, -190963664,
+    34, 0, 609564672, 82199864, -190857232,
     /* node 1106 y: shift, then 4 coefficients */
-    34, 0, 206432224, 357215872, -464809536,
+    34, 0, 206503696, 357289952, -464887040,
     /* node 1106 z: shift, then 4 coefficients */
-    34, 0, -88451688, -216965024, 455764320,
+    34, 0, -88434320, -217091632, 456034656,
     /* node 1107 x: shift, then 4 coefficients */
-    34, 0, 679584768, 109679520, -245304176,
+    34, 0, 679903744, 109742112, -245213984,
     /* node 1107 y: shift, then 4 coefficients */
-    33, 0, 134334128, 192365184, -264052208,
+    33, 0, 134406432, 192426320, -264101712,
     /* node 1107 z: shift, then 4 coefficients */
-    34, 0, -99282480, -221448448, 488370112,
+    34, 0, -99279560, -221531840, 488615712,
     /* node 1108 x: shift, then 4 coefficients */
-    34, 0, 652617216, 89712544, -218897168,
+    34, 0, 652916672, 89774336, -218816768,
     /* node 1108 y: shift, then 4 coefficients */
-    33, 0, 109073248, 187206880, -250866736,
+    33, 0, 109104576, 187201136, -250861488,
     /* node 1108 z: shift, then 4 coefficients */
-    34, 0, -100235088, -230294528, 501643680,
+    34, 0, -100222152, -230336672, 501848128,
     /* node 1109 x: shift, then 4 coefficients */
-    34, 0, 579761344, 63211544, -171785104,
+    34, 0, 580029952, 63197452, -171635296,
     /* node 1109 y: shift, then 4 coefficients */
-    34, 0, 179695600, 342914976, -458521632,
+    34, 0, 179771664, 342910144, -458460320,
     /* node 1109 z: shift, then 4 coefficients */
-    34, 0, -89526584, -223224048, 466733024,
+    34, 0, -89491072, -223241296, 466893152,
     /* node 1209 x: shift, then 4 coefficients */
-    34, 0, 618218240, 61581000, -184830224,
+    34, 0, 618490048, 61641148, -184738800,
     /* node 1209 y: shift, then 4 coefficients */
-    34, 0, 151173200, 345850976, -471468512,
+    34, 0, 151244368, 345843072, -471513568,
     /* node 1209 z: shift, then 4 coefficients */
-    34, 0, -96285200, -238056784, 523022880,
+    34, 0, -96276440, -238137888, 523250752,
     /* node 1210 x: shift, then 4 coefficients */
-    34, 0, 542390016, 42680080, -143434288,
+    34, 0, 542695232, 42657828, -143269472,
     /* node 1210 y: shift, then 4 coefficients */
-    34, 0, 146728464, 318687712, -438516864,
+    34, 0, 146757952, 318844064, -438686144,
     /* node 1210 z: shift, then 4 coefficients */
-    34, 0, -88392608, -226842480, 468660224,
+    34, 0, -88398904, -226979200, 468960000,
     /* node 1211 x: shift, then 4 coefficients */
-    34, 0, 637649216, 78069912, -207070352,
+    34, 0, 637936768, 78124552, -206974912,
     /* node 1211 y: shift, then 4 coefficients */
-    34, 0, 187334704, 361892544, -488464288,
+    34, 0, 187408912, 361889024, -488478176,
     /* node 1211 z: shift, then 4 coefficients */
-    34, 0, -99532000, -234981792, 513147808,
+    34, 0, -99510960, -235105856, 513410400,
     /* node 1212 x: shift, then 4 coefficients */
-    34, 0, 696687360, 89905504, -243981104,
+    34, 0, 696996672, 89931792, -243868656,
     /* node 1212 y: shift, then 4 coefficients */
-    33, 0, 97676784, 189104816, -260551920,
+    33, 0, 97710720, 189096496, -260547952,
     /* node 1212 z: shift, then 4 coefficients */
-    34, 0, -113592168, -248800400, 573729856,
+    34, 0, -113589616, -248856720, 573936768,
     /* node 1607 x: shift, then 4 coefficients */
-    33, 0, 527274784, 52103752, -237238128,
+    33, 0, 527437120, 52141528, -237136032,
     /* node 1607 y: shift, then 4 coefficients */
-    33, 0, 133273104, 211453120, -317981440,
+    33, 0, 133317240, 211452880, -317972160,
     /* node 1607 z: shift, then 4 coefficients */
-    33, 0, -133941408, -141436016, 495863424,
+    33, 0, -133913000, -141469216, 495910432,
     /* node 1608 x: shift, then 4 coefficients */
-    33, 0, 538344128, 43690716, -220282464,
+    33, 0, 538497792, 43758936, -220236176,
     /* node 1608 y: shift, then 4 coefficients */
-    33, 0, 108837536, 210356192, -266133088,
+    33, 0, 108868976, 210408640, -266186560,
     /* node 1608 z: shift, then 4 coefficients */
-    33, 0, -142541248, -134848448, 517522688,
+    33, 0, -142511872, -134883312, 517592640,
     /* node 1609 x: shift, then 4 coefficients */
-    33, 0, 500190624, 53051652, -210853520,
+    33, 0, 500344960, 53077056, -210728064,
     /* node 1609 y: shift, then 4 coefficients */
-    33, 0, 82964600, 203943952, -280833568,
+    33, 0, 83008144, 203954656, -280868128,
     /* node 1609 z: shift, then 4 coefficients */
-    33, 0, -106867936, -145671696, 495422432,
+    33, 0, -106865344, -145722928, 495562816,
     /* node 1617 x: shift, then 4 coefficients */
-    33, 0, 358965952, 55113016, -136534944,
+    33, 0, 359122496, 55141940, -136487376,
     /* node 1617 y: shift, then 4 coefficients */
-    33, 0, 127934288, 198015728, -279917568,
+    33, 0, 127979248, 198046464, -279924864,
     /* node 1617 z: shift, then 4 coefficients */
-    34, 0, -115211968, -241253056, 553102528,
+    34, 0, -115183888, -241328832, 553337920,
     /* node 1618 x: shift, then 4 coefficients */
-    33, 0, 386062144, 56029628, -154854288,
+    33, 0, 386240224, 56060364, -154813072,
     /* node 1618 y: shift, then 4 coefficients */
-    33, 0, 128163840, 202859328, -300100032,
+    33, 0, 128200344, 202877632, -300099872,
     /* node 1618 z: shift, then 4 coefficients */
-    34, 0, -135942464, -258025056, 633888896,
+    34, 0, -135916176, -258067168, 634098624,
     /* node 1619 x: shift, then 4 coefficients */
-    33, 0, 372690496, 45683824, -135726592,
+    33, 0, 372848672, 45702384, -135676208,
     /* node 1619 y: shift, then 4 coefficients */
-    33, 0, 98595944, 196451600, -279534560,
+    33, 0, 98633304, 196446736, -279533312,
     /* node 1619 z: shift, then 4 coefficients */
-    34, 0, -129192664, -266768800, 650158400,
+    34, 0, -129165400, -266826320, 650393536,
     /* node 1665 x: shift, then 4 coefficients */
-    33, 0, 563876032, 38694720, -247316320,
+    33, 0, 564040448, 38736300, -247231568,
     /* node 1665 y: shift, then 4 coefficients */
-    33, 0, 243184288, 188659664, -333200896,
+    33, 0, 243214320, 188680496, -333175744,
     /* node 1665 z: shift, then 4 coefficients */
-    33, 0, -157265200, -116202704, 401088512,
+    33, 0, -157234784, -116231720, 401183872,
     /* node 1666 x: shift, then 4 coefficients */
-    33, 0, 572239104, 28441520, -231080976,
+    33, 0, 572422272, 28491076, -231017904,
     /* node 1666 y: shift, then 4 coefficients */
-    33, 0, 212695424, 190478480, -303359040,
+    33, 0, 212742976, 190507792, -303349696,
     /* node 1666 z: shift, then 4 coefficients */
-    33, 0, -170074576, -118920376, 426288832,
+    33, 0, -170061616, -118952240, 426390048,
     /* node 1667 x: shift, then 4 coefficients */
-    33, 0, 565933888, 39148272, -250631648,
+    33, 0, 566088768, 39193024, -250535792,
     /* node 1667 y: shift, then 4 coefficients */
-    33, 0, 226141632, 194532080, -334080672,
+    33, 0, 226174000, 194554976, -334055648,
     /* node 1667 z: shift, then 4 coefficients */
-    33, 0, -164336400, -120391560, 429467744,
+    33, 0, -164306608, -120421320, 429553408,
     /* node 1708 x: shift, then 4 coefficients */
-    33, 0, 371352576, 66776236, -152641456,
+    33, 0, 371497472, 66778944, -152572256,
     /* node 1708 y: shift, then 4 coefficients */
-    33, 0, 167862592, 200868592, -300586432,
+    33, 0, 167884432, 200846384, -300559392,
     /* node 1708 z: shift, then 4 coefficients */
-    34, 0, -105578608, -218363968, 508465920,
+    34, 0, -105522288, -218375696, 508668000,
     /* node 1758 x: shift, then 4 coefficients */
-    33, 0, 508008288, 53567508, -216451072,
+    33, 0, 508203616, 53602872, -216407568,
     /* node 1758 y: shift, then 4 coefficients */
-    33, 0, 256697712, 178137088, -312985248,
+    33, 0, 256746816, 178177920, -312970720,
     /* node 1758 z: shift, then 4 coefficients */
-    34, 0, -194959360, -204584128, 594215872,
+    34, 0, -194983264, -204668128, 594527104,
     /* node 1784 x: shift, then 4 coefficients */
-    34, 0, 630629760, 20032678, -104331504,
+    34, 0, 630943744, 20061120, -104187592,
     /* node 1784 y: shift, then 4 coefficients */
-    34, 0, -39859924, 274459040, -368607168,
+    34, 0, -39861768, 274483744, -368686784,
     /* node 1784 z: shift, then 4 coefficients */
-    34, 0, -36251152, -233144704, 544521984,
+    34, 0, -36217656, -233169360, 544686336,
     /* node 1786 x: shift, then 4 coefficients */
-    34, 0, 608547456, 15069383, -93202160,
+    34, 0, 608858880, 15094772, -93061568,
     /* node 1786 y: shift, then 4 coefficients */
-    34, 0, -20617642, 278893344, -385489248,
+    34, 0, -20614028, 278922112, -385567872,
     /* node 1786 z: shift, then 4 coefficients */
-    34, 0, -44599036, -237009520, 551130176,
+    34, 0, -44560768, -237041376, 551299584,
     /* node 1790 x: shift, then 4 coefficients */
-    34, 0, 725809792, -35325268, -137512016,
+    34, 0, 726069248, -35312852, -137638528,
     /* node 1790 y: shift, then 4 coefficients */
-    34, 0, -222909344, 254325984, -145239056,
+    34, 0, -222807712, 254263728, -145276064,
     /* node 1790 z: shift, then 4 coefficients */
-    34, 0, -107442400, -187661168, 460553152,
+    34, 0, -107349992, -187748432, 460748288,
     /* node 1791 x: shift, then 4 coefficients */
-    34, 0, 618524224, -37715140, -137531088,
+    34, 0, 618875648, -37652340, -137394448,
     /* node 1791 y: shift, then 4 coefficients */
-    35, 0, -431010560, 409077536, -184949424,
+    35, 0, -431439360, 409416288, -184849696,
     /* node 1791 z: shift, then 4 coefficients */
-    34, 0, -130632216, -152331056, 398803936,
+    34, 0, -130469048, -152380272, 398929856,
     /* node 1792 x: shift, then 4 coefficients */
-    34, 0, 601594944, -37564680, -117673224,
+    34, 0, 601870592, -37438340, -117690832,
     /* node 1792 y: shift, then 4 coefficients */
-    34, 0, -222589584, 208455328, -121980272,
+    34, 0, -222586128, 208403248, -122039592,
     /* node 1792 z: shift, then 4 coefficients */
-    34, 0, -91753088, -164547744, 372901888,
+    34, 0, -91712528, -164558848, 373044352,
     /* node 1793 x: shift, then 4 coefficients */
-    34, 0, 702625024, -25523370, -127122504,
+    34, 0, 702898048, -25524050, -126939024,
     /* node 1793 y: shift, then 4 coefficients */
-    34, 0, -213072832, 251449392, -174808240,
+    34, 0, -213083456, 251657760, -175032896,
     /* node 1793 z: shift, then 4 coefficients */
-    34, 0, -74016288, -199064064, 453974144,
+    34, 0, -74009000, -199020576, 453978976,
     /* node 1832 x: shift, then 4 coefficients */
-    34, 0, 634565376, 17729248, -105729624,
+    34, 0, 634870784, 17763914, -105608752,
     /* node 1832 y: shift, then 4 coefficients */
-    34, 0, -78544464, 263975952, -334863072,
+    34, 0, -78570424, 263994160, -334931840,
     /* node 1832 z: shift, then 4 coefficients */
-    34, 0, -20814432, -225297680, 510559200,
+    34, 0, -20773494, -225315520, 510716768,
     /* node 2001 x: shift, then 4 coefficients */
-    35, 0, 977566976, -584208, -13346826,
+    35, 0, 978230272, -362357, -13543992,
     /* node 2001 y: shift, then 4 coefficients */
-    36, 0, 111105528, 396243808, -311078688,
+    36, 0, 111683208, 396407520, -311827360,
     /* node 2001 z: shift, then 4 coefficients */
-    34, 0, -125472848, -207548480, 581347392,
+    34, 0, -125475864, -207593584, 581506752,
     /* node 2002 x: shift, then 4 coefficients */
-    34, 0, 617857280, -5776546, -327571,
+    34, 0, 618143232, -5674037, -383806,
     /* node 2002 y: shift, then 4 coefficients */
-    35, 0, 132642784, 303963712, -253280352,
+    35, 0, 132891192, 304058720, -253489552,
     /* node 2002 z: shift, then 4 coefficients */
-    34, 0, -107414848, -228383152, 629131648,
+    34, 0, -107390296, -228480976, 629239808,
     /* node 2003 x: shift, then 4 coefficients */
-    33, 0, 545069248, 33411370, -170549024,
+    33, 0, 545238144, 33446074, -170502688,
     /* node 2003 y: shift, then 4 coefficients */
-    34, 0, 71302160, 460626848, -440886240,
+    34, 0, 71397800, 460565408, -440993472,
     /* node 2003 z: shift, then 4 coefficients */
-    33, 0, -95707288, -147915872, 546308352,
+    33, 0, -95708040, -147945200, 546404992,
     /* node 2004 x: shift, then 4 coefficients */
-    33, 0, 697589568, -9065614, -158773520,
+    33, 0, 697746688, -8991958, -158728480,
     /* node 2004 y: shift, then 4 coefficients */
-    34, 0, 51507324, 653621376, -365407456,
+    34, 0, 51622980, 653570944, -365422784,
     /* node 2004 z: shift, then 4 coefficients */
-    33, 0, -127219456, -131632936, 652938944,
+    33, 0, -127183168, -131665224, 653022912,
     /* node 2005 x: shift, then 4 coefficients */
-    33, 0, 680074880, -6564444, -128535288,
+    33, 0, 680238592, -6536180, -128508488,
     /* node 2005 y: shift, then 4 coefficients */
-    34, 0, -54192336, 663333120, -322180928,
+    34, 0, -54097412, 663370944, -322268832,
     /* node 2005 z: shift, then 4 coefficients */
-    33, 0, -87322064, -135272672, 637053696,
+    33, 0, -87303896, -135326400, 637166784,
     /* node 2006 x: shift, then 4 coefficients */
-    33, 0, 493199616, 23249438, -123893960,
+    33, 0, 493376320, 23294042, -123873768,
     /* node 2006 y: shift, then 4 coefficients */
-    34, 0, -32522512, 400015680, -374735456,
+    34, 0, -32474050, 400130976, -374899456,
     /* node 2006 z: shift, then 4 coefficients */
-    33, 0, -50600632, -145835056, 456144384,
+    33, 0, -50566492, -145841520, 456202912,
     /* node 2087 x: shift, then 4 coefficients */
-    33, 0, 407125056, 55456012, -170693584,
+    33, 0, 407278880, 55486256, -170637632,
     /* node 2087 y: shift, then 4 coefficients */
-    33, 0, 126341656, 207816272, -321218496,
+    33, 0, 126406976, 207826032, -321225568,
     /* node 2087 z: shift, then 4 coefficients */
-    33, 0, -76358464, -136458464, 356867072,
+    33, 0, -76335096, -136518096, 356969440,
     /* node 2343 x: shift, then 4 coefficients */
-    33, 0, 567292224, 34409300, -240220160,
+    33, 0, 567459904, 34454952, -240133280,
     /* node 2343 y: shift, then 4 coefficients */
-    33, 0, 203538480, 197222368, -314791776,
+    33, 0, 203581984, 197243008, -314787296,
     /* node 2343 z: shift, then 4 coefficients */
-    33, 0, -169427376, -121929752, 446431552,
+    33, 0, -169398784, -121967008, 446522176,
     /* node 2493 x: shift, then 4 coefficients */
-    34, 0, 856488576, -9703544, -178591744,
+    34, 0, 856810880, -9583081, -178639888,
     /* node 2493 y: shift, then 4 coefficients */
-    35, 0, -140356304, 611984896, -237541424,
+    35, 0, -140098896, 612019584, -237670384,
     /* node 2493 z: shift, then 4 coefficients */
-    33, 0, -119344736, -104946240, 423517728,
+    33, 0, -119336432, -104968760, 423550272,
     /* node 2494 x: shift, then 4 coefficients */
-    34, 0, 734998848, 5147012, -136096528,
+    34, 0, 735357696, 5272836, -136103056,
     /* node 2494 y: shift, then 4 coefficients */
-    35, 0, -65830068, 494554528, -216320544,
+    35, 0, -65731760, 494597536, -216694784,
     /* node 2494 z: shift, then 4 coefficients */
-    33, 0, -111461328, -107521064, 398565120,
+    33, 0, -111485968, -107566848, 398530560,
     /* node 2495 x: shift, then 4 coefficients */
-    34, 0, 706940032, 3650867, -151887904,
+    34, 0, 707293696, 3767047, -151946704,
     /* node 2495 y: shift, then 4 coefficients */
-    35, 0, -135059072, 452506016, -176990000,
+    35, 0, -134835856, 452591584, -177058688,
     /* node 2495 z: shift, then 4 coefficients */
-    33, 0, -114464136, -98999664, 356780608,
+    33, 0, -114447760, -99023752, 356841024,
     /* node 2496 x: shift, then 4 coefficients */
-    34, 0, 817168704, -11397656, -202695744,
+    34, 0, 817459584, -11253000, -202688416,
     /* node 2496 y: shift, then 4 coefficients */
-    35, 0, -238520480, 572814336, -170461760,
+    35, 0, -238277648, 572802240, -170474576,
     /* node 2496 z: shift, then 4 coefficients */
-    33, 0, -120605848, -88858928, 368247008,
+    33, 0, -120586200, -88871576, 368298176,
     /* node 2516 x: shift, then 4 coefficients */
-    33, 0, 538642624, 53272508, -264322736,
+    33, 0, 538848064, 53285128, -264279808,
     /* node 2516 y: shift, then 4 coefficients */
-    33, 0, 238667168, 198318832, -363430752,
+    33, 0, 238718672, 198320992, -363431872,
     /* node 2516 z: shift, then 4 coefficients */
-    33, 0, -142986128, -120689240, 406547072,
+    33, 0, -142977088, -120708984, 406659680,
     /* node 2517 x: shift, then 4 coefficients */
-    33, 0, 513522464, 58246912, -248755072,
+    33, 0, 513613792, 58268084, -248609376,
     /* node 2517 y: shift, then 4 coefficients */
-    33, 0, 236533424, 196664752, -353140384,
+    33, 0, 236535936, 196669504, -353063264,
     /* node 2517 z: shift, then 4 coefficients */
-    33, 0, -122365432, -117387664, 369152480,
+    33, 0, -122305872, -117393912, 369210560,
     /* node 2540 x: shift, then 4 coefficients */
-    34, 0, 825177088, -29278148, -207489424,
+    34, 0, 825266240, -29001734, -207414432,
     /* node 2540 y: shift, then 4 coefficients */
-    35, 0, -337762048, 555944320, -169158432,
+    35, 0, -337112416, 555476160, -169164096,
     /* node 2540 z: shift, then 4 coefficients */
-    34, 0, -231826816, -173066272, 643624448,
+    34, 0, -231585216, -173162640, 643677568,
     /* node 2541 x: shift, then 4 coefficients */
-    34, 0, 810683904, -43217444, -174490080,
+    34, 0, 811128896, -43280452, -174475920,
     /* node 2541 y: shift, then 4 coefficients */
-    34, 0, -217307744, 280207488, -116603328,
+    34, 0, -217368288, 280174080, -116664952,
     /* node 2541 z: shift, then 4 coefficients */
-    34, 0, -168347392, -177535776, 539278080,
+    34, 0, -168525152, -177457760, 539488640,
     /* node 2542 x: shift, then 4 coefficients */
-    33, 0, 557524224, -29262082, -97178064,
+    33, 0, 557680960, -29206522, -97131800,
     /* node 2542 y: shift, then 4 coefficients */
-    34, 0, -191502016, 466957376, -162624960,
+    34, 0, -191486320, 466922720, -162655360,
     /* node 2542 z: shift, then 4 coefficients */
-    33, 0, -89505952, -108206824, 421908128,
+    33, 0, -89428024, -108236936, 421951040,
     /* node 2543 x: shift, then 4 coefficients */
-    34, 0, 511465184, -36102988, -118100208,
+    34, 0, 511863072, -36088488, -118091368,
     /* node 2543 y: shift, then 4 coefficients */
-    35, 0, -398965600, 325473696, -143903232,
+    35, 0, -399184544, 325394528, -143840880,
     /* node 2543 z: shift, then 4 coefficients */
-    34, 0, -121501208, -127862072, 328273088,
+    34, 0, -121496080, -127928288, 328357088,
     /* node 2616 x: shift, then 4 coefficients */
-    33, 0, 533295680, 53123080, -252945280,
+    33, 0, 533451776, 53166468, -252836080,
     /* node 2616 y: shift, then 4 coefficients */
-    33, 0, 172755888, 207887840, -344027136,
+    33, 0, 172798992, 207921344, -344021376,
     /* node 2616 z: shift, then 4 coefficients */
-    33, 0, -145292832, -134764992, 476694784,
+    33, 0, -145266224, -134794656, 476766272,
     /* node 2648 x: shift, then 4 coefficients */
-    34, 0, 519604288, 25497, -137356720,
+    34, 0, 519985568, 128229, -137345200,
     /* node 2648 y: shift, then 4 coefficients */
-    35, 0, -208414416, 254656112, -96882192,
+    35, 0, -208284304, 254700928, -96991632,
     /* node 2648 z: shift, then 4 coefficients */
-    34, 0, -206954608, -144171936, 483921760,
+    34, 0, -206903904, -144213952, 484080896,
     /* node 2649 x: shift, then 4 coefficients */
-    34, 0, 647759616, -10172486, -168441632,
+    34, 0, 648078592, -10024852, -168399536,
     /* node 2649 y: shift, then 4 coefficients */
-    35, 0, -268260896, 387462144, -128117160,
+    35, 0, -268070112, 387513248, -128244688,
     /* node 2649 z: shift, then 4 coefficients */
-    34, 0, -214801328, -156206672, 542420480,
+    34, 0, -214590816, -156341760, 542542080,
     /* node 2650 x: shift, then 4 coefficients */
-    34, 0, 619841792, 35583, -156270192,
+    34, 0, 620263296, 136936, -156207584,
     /* node 2650 y: shift, then 4 coefficients */
-    35, 0, -192848480, 357039200, -132221192,
+    35, 0, -192680272, 357142304, -132201536,
     /* node 2650 z: shift, then 4 coefficients */
-    34, 0, -222676240, -165986048, 593499904,
+    34, 0, -222636944, -166028864, 593651008,
     /* node 2677 x: shift, then 4 coefficients */
-    34, 0, 557221632, 9192680, -123862728,
+    34, 0, 557665792, 9316032, -123854992,
     /* node 2677 y: shift, then 4 coefficients */
-    35, 0, -114141600, 295186176, -133236520,
+    35, 0, -113893776, 295324576, -133263424,
     /* node 2677 z: shift, then 4 coefficients */
-    34, 0, -211963520, -176799984, 601889920,
+    34, 0, -211941584, -176838416, 602001664,
     /* node 2678 x: shift, then 4 coefficients */
-    34, 0, 521809376, 6363031, -125529784,
+    34, 0, 522193184, 6472292, -125529048,
     /* node 2678 y: shift, then 4 coefficients */
-    36, 0, -305558080, 518411680, -210453024,
+    36, 0, -305164544, 518642176, -210502720,
     /* node 2678 z: shift, then 4 coefficients */
-    34, 0, -207590784, -158840544, 539229184,
+    34, 0, -207600336, -158886432, 539401664,
     /* node 2702 x: shift, then 4 coefficients */
-    34, 0, 492444672, 41587452, -123605816,
+    34, 0, 492686272, 41632228, -123516136,
     /* node 2702 y: shift, then 4 coefficients */
-    34, 0, 163628528, 304089568, -403217792,
+    34, 0, 163693696, 304161632, -403300544,
     /* node 2702 z: shift, then 4 coefficients */
-    34, 0, -77456416, -206205008, 400676640,
+    34, 0, -77441768, -206264208, 400892736,
     /* node 2703 x: shift, then 4 coefficients */
-    34, 0, 544133760, 57533696, -151986800,
+    34, 0, 544477440, 57598196, -151902528,
     /* node 2703 y: shift, then 4 coefficients */
-    34, 0, 177941648, 328939648, -432891840,
+    34, 0, 178016608, 329121568, -433063584,
     /* node 2703 z: shift, then 4 coefficients */
-    34, 0, -81921840, -211730944, 428683040,
+    34, 0, -81914200, -211801728, 428932736,
     /* node 2784 x: shift, then 4 coefficients */
-    33, 0, 567675264, 31761330, -233584304,
+    33, 0, 567916480, 31819372, -233555504,
     /* node 2784 y: shift, then 4 coefficients */
-    33, 0, 240285024, 183200384, -313513472,
+    33, 0, 240348768, 183239904, -313512672,
     /* node 2784 z: shift, then 4 coefficients */
-    33, 0, -159001952, -114089984, 391059744,
+    33, 0, -159001728, -114126736, 391190688,
     /* node 2785 x: shift, then 4 coefficients */
-    33, 0, 572506432, 20345726, -211542144,
+    33, 0, 572647936, 20392610, -211462960,
     /* node 2785 y: shift, then 4 coefficients */
-    33, 0, 219324416, 179885696, -285352224,
+    33, 0, 219360160, 179911584, -285334400,
     /* node 2785 z: shift, then 4 coefficients */
-    33, 0, -165395168, -114693400, 394986848,
+    33, 0, -165380528, -114728784, 395084640,
     /* node 2965 x: shift, then 4 coefficients */
-    33, 0, 454180768, 54761212, -187757648,
+    33, 0, 454346592, 54775848, -187612560,
     /* node 2965 y: shift, then 4 coefficients */
-    33, 0, 61884396, 193750784, -281416384,
+    33, 0, 61965372, 193763952, -281532832,
     /* node 2965 z: shift, then 4 coefficients */
-    33, 0, -76167456, -146189152, 448046240,
+    33, 0, -76196608, -146231888, 448236736,
     /* node 2966 x: shift, then 4 coefficients */
-    33, 0, 465410432, 43697312, -159680224,
+    33, 0, 465568800, 43709612, -159665888,
     /* node 2966 y: shift, then 4 coefficients */
-    34, 0, 37774768, 373186304, -442164928,
+    34, 0, 37783696, 373154400, -442117888,
     /* node 2966 z: shift, then 4 coefficients */
-    33, 0, -59404040, -143841136, 437267232,
+    33, 0, -59354092, -143864848, 437231520,
     /* node 2967 x: shift, then 4 coefficients */
-    33, 0, 420845728, 45443716, -152786528,
+    33, 0, 421009280, 45467476, -152682528,
     /* node 2967 y: shift, then 4 coefficients */
-    34, 0, 58165652, 348678816, -479411328,
+    34, 0, 58207452, 348695328, -479463360,
     /* node 2967 z: shift, then 4 coefficients */
-    33, 0, -53330184, -138939424, 397471520,
+    33, 0, -53294620, -138938144, 397500192,
     /* node 3093 x: shift, then 4 coefficients */
-    33, 0, 395688544, 72998784, -162157504,
+    33, 0, 395845440, 73019032, -162103280,
     /* node 3093 y: shift, then 4 coefficients */
-    33, 0, 241888704, 180516816, -295321216,
+    33, 0, 241939472, 180551696, -295302400,
     /* node 3093 z: shift, then 4 coefficients */
-    34, 0, -58736908, -159352848, 388893536,
+    34, 0, -58696208, -159413648, 389156800,
     /* node 3098 x: shift, then 4 coefficients */
-    33, 0, 518908864, 13345109, -142284016,
+    33, 0, 519079040, 13387132, -142246736,
     /* node 3098 y: shift, then 4 coefficients */
-    33, 0, 226178176, 138686320, -223207248,
+    33, 0, 226233888, 138730368, -223203312,
     /* node 3098 z: shift, then 4 coefficients */
-    34, 0, -194589024, -198850368, 547624640,
+    34, 0, -194570640, -198935280, 547878848,
     /* node 3105 x: shift, then 4 coefficients */
-    34, 0, 783304320, -12140700, -12326486,
+    34, 0, 783634816, -12022177, -12286905,
     /* node 3105 y: shift, then 4 coefficients */
-    35, 0, 114640560, 492705632, -339508640,
+    35, 0, 114972640, 492845888, -339672064,
     /* node 3105 z: shift, then 4 coefficients */
-    33, 0, -57156804, -127115864, 386835648,
+    33, 0, -57140416, -127137888, 386914592,
     /* node 3106 x: shift, then 4 coefficients */
-    34, 0, 551607808, 3793814, -30329742,
+    34, 0, 551942016, 3845744, -30414032,
     /* node 3106 y: shift, then 4 coefficients */
-    36, 0, 85253656, 545269120, -390186592,
+    36, 0, 85908216, 545269696, -389777344,
     /* node 3106 z: shift, then 4 coefficients */
-    34, 0, -143612512, -219571872, 644125760,
+    34, 0, -143595776, -219638576, 644410752,
     /* node 3107 x: shift, then 4 coefficients */
-    34, 0, 702018048, 1039584, -56140576,
+    34, 0, 702452672, 1195355, -56109744,
     /* node 3107 y: shift, then 4 coefficients */
-    35, 0, 40339660, 444578528, -274353376,
+    35, 0, 40827412, 444762112, -274755552,
     /* node 3107 z: shift, then 4 coefficients */
-    33, 0, -77629472, -122332360, 386813184,
+    33, 0, -77607528, -122365208, 386898496,
     /* node 3162 x: shift, then 4 coefficients */
-    33, 0, 518720320, 32095652, -176806640,
+    33, 0, 518905984, 32139866, -176776080,
     /* node 3162 y: shift, then 4 coefficients */
-    33, 0, 256439232, 150234480, -259516080,
+    33, 0, 256508688, 150286416, -259517040,
     /* node 3162 z: shift, then 4 coefficients */
-    34, 0, -173905248, -188513440, 527966400,
+    34, 0, -173944224, -188594672, 528260320,
     /* node 3163 x: shift, then 4 coefficients */
-    33, 0, 505091808, 41367588, -181753264,
+    33, 0, 505238432, 41406036, -181695088,
     /* node 3163 y: shift, then 4 coefficients */
-    33, 0, 263295744, 155209136, -271953408,
+    33, 0, 263343888, 155246672, -271931616,
     /* node 3163 z: shift, then 4 coefficients */
-    34, 0, -151435840, -183555488, 506002432,
+    34, 0, -151373808, -183625664, 506255552,
     /* node 3184 x: shift, then 4 coefficients */
-    33, 0, 480927072, 59011824, -217963296,
+    33, 0, 481093408, 59048328, -217885536,
     /* node 3184 y: shift, then 4 coefficients */
-    33, 0, 100851552, 205756288, -319248832,
+    33, 0, 100864504, 205759840, -319231872,
     /* node 3184 z: shift, then 4 coefficients */
-    33, 0, -100150896, -146178176, 469326816,
+    33, 0, -100115112, -146189040, 469353952,
     /* node 3199 x: shift, then 4 coefficients */
-    33, 0, 454932512, 66278232, -207008752,
+    33, 0, 455081952, 66304708, -206925264,
     /* node 3199 y: shift, then 4 coefficients */
-    33, 0, 212004960, 200357744, -332860992,
+    33, 0, 212018592, 200341472, -332784448,
     /* node 3199 z: shift, then 4 coefficients */
-    34, 0, -177953776, -231742864, 635718656,
+    34, 0, -177912448, -231772240, 635914624,
     /* node 3200 x: shift, then 4 coefficients */
-    33, 0, 456369856, 67740320, -205108416,
+    33, 0, 456520384, 67755624, -205023824,
     /* node 3200 y: shift, then 4 coefficients */
-    33, 0, 231268736, 193155136, -326353696,
+    33, 0, 231327472, 193200256, -326347136,
     /* node 3200 z: shift, then 4 coefficients */
-    34, 0, -160086640, -212682448, 576697344,
+    34, 0, -160045840, -212739840, 576927488,
     /* node 3201 x: shift, then 4 coefficients */
-    33, 0, 482156992, 62932328, -225160864,
+    33, 0, 482316576, 62962932, -225081440,
     /* node 3201 y: shift, then 4 coefficients */
-    33, 0, 224060368, 198132352, -340464352,
+    33, 0, 224094960, 198133520, -340421952,
     /* node 3201 z: shift, then 4 coefficients */
-    33, 0, -103219952, -116536328, 338672320,
+    33, 0, -103176080, -116565944, 338724000,
     /* node 3202 x: shift, then 4 coefficients */
-    33, 0, 464165440, 63824604, -216275888,
+    33, 0, 464284128, 63845372, -216148768,
     /* node 3202 y: shift, then 4 coefficients */
-    33, 0, 201600720, 203903008, -341728480,
+    33, 0, 201631296, 203918448, -341685440,
     /* node 3202 z: shift, then 4 coefficients */
-    33, 0, -99508440, -122789720, 350257728,
+    33, 0, -99461576, -122789824, 350344224,
     /* node 3203 x: shift, then 4 coefficients */
-    33, 0, 559256000, 18911974, -192772096,
+    33, 0, 559391872, 18954172, -192682640,
     /* node 3203 y: shift, then 4 coefficients */
-    33, 0, 243320144, 161767616, -270950848,
+    33, 0, 243360624, 161809872, -270918368,
     /* node 3203 z: shift, then 4 coefficients */
-    33, 0, -137561264, -107101032, 333117376,
+    33, 0, -137549232, -107139904, 333228608,
     /* node 3204 x: shift, then 4 coefficients */
-    33, 0, 567598144, 15071450, -193728576,
+    33, 0, 567728768, 15114983, -193635232,
     /* node 3204 y: shift, then 4 coefficients */
-    33, 0, 224560176, 170152192, -269569536,
+    33, 0, 224613312, 170194400, -269552128,
     /* node 3204 z: shift, then 4 coefficients */
-    33, 0, -157110256, -111613200, 367602880,
+    33, 0, -157098416, -111653392, 367712672,
     /* node 3205 x: shift, then 4 coefficients */
-    33, 0, 567947392, 21860536, -209079312,
+    33, 0, 568106880, 21910726, -209022400,
     /* node 3205 y: shift, then 4 coefficients */
-    33, 0, 242187008, 170342944, -285631040,
+    33, 0, 242231184, 170374208, -285623552,
     /* node 3205 z: shift, then 4 coefficients */
-    33, 0, -150255088, -109715968, 356827328,
+    33, 0, -150235136, -109750352, 356926336,
     /* node 3259 x: shift, then 4 coefficients */
-    34, 0, 682526272, 35877248, -148669952,
+    34, 0, 682841152, 35913160, -148519248,
     /* node 3259 y: shift, then 4 coefficients */
-    34, 0, 11915319, 302729248, -417066784,
+    34, 0, 11939213, 302759552, -417132832,
     /* node 3259 z: shift, then 4 coefficients */
-    34, 0, -65293400, -253170800, 627983104,
+    34, 0, -65265016, -253198592, 628144192,
     /* node 3260 x: shift, then 4 coefficients */
-    34, 0, 732045696, 49939896, -185140400,
+    34, 0, 732368832, 49980268, -184991344,
     /* node 3260 y: shift, then 4 coefficients */
-    34, 0, -11496940, 299710784, -391107392,
+    34, 0, -11491549, 299738720, -391152320,
     /* node 3260 z: shift, then 4 coefficients */
-    34, 0, -57893492, -248516112, 634984576,
+    34, 0, -57859592, -248536448, 635140288,
     /* node 3338 x: shift, then 4 coefficients */
-    34, 0, 589474560, 7107550, -57335080,
+    34, 0, 589831168, 7172584, -57405992,
     /* node 3338 y: shift, then 4 coefficients */
-    35, 0, 11473804, 324369120, -206625040,
+    35, 0, 11521012, 324485696, -206839280,
     /* node 3338 z: shift, then 4 coefficients */
-    34, 0, -165173984, -218614816, 679470848,
+    34, 0, -165333680, -218757376, 679604672,
     /* node 3339 x: shift, then 4 coefficients */
-    34, 0, 650414208, 8300450, -88280024,
+    34, 0, 650810816, 8411648, -88453248,
     /* node 3339 y: shift, then 4 coefficients */
-    35, 0, -23349122, 395314144, -216913216,
+    35, 0, -23011728, 395584832, -216933232,
     /* node 3339 z: shift, then 4 coefficients */
-    33, 0, -94365744, -111558616, 370725632,
+    33, 0, -94358168, -111565288, 370905312,
     /* node 3378 x: shift, then 4 coefficients */
-    33, 0, 459975168, 64171956, -225911856,
+    33, 0, 460149696, 64203848, -225844992,
     /* node 3378 y: shift, then 4 coefficients */
-    33, 0, 178902928, 210587264, -363694432,
+    33, 0, 178946320, 210596592, -363679680,
     /* node 3378 z: shift, then 4 coefficients */
-    33, 0, -101741504, -131849224, 388217632,
+    33, 0, -101716968, -131888920, 388300800,
     /* node 3379 x: shift, then 4 coefficients */
-    33, 0, 446385600, 63785928, -206908752,
+    33, 0, 446555200, 63833192, -206851856,
     /* node 3379 y: shift, then 4 coefficients */
-    33, 0, 184452688, 207683008, -344345760,
+    33, 0, 184496816, 207699392, -344320000,
     /* node 3379 z: shift, then 4 coefficients */
-    33, 0, -93150816, -126745520, 352701920,
+    33, 0, -93122728, -126774256, 352757344,
     /* node 3380 x: shift, then 4 coefficients */
-    33, 0, 474763168, 63327804, -232948496,
+    33, 0, 474939712, 63375152, -232861584,
     /* node 3380 y: shift, then 4 coefficients */
-    33, 0, 198817488, 207355536, -362578880,
+    33, 0, 198835600, 207382896, -362520288,
     /* node 3380 z: shift, then 4 coefficients */
-    33, 0, -108712592, -127305112, 382189664,
+    33, 0, -108677472, -127323000, 382295008,
     /* node 3381 x: shift, then 4 coefficients */
-    33, 0, 486026400, 63880216, -248830096,
+    33, 0, 486205632, 63922640, -248742704,
     /* node 3381 y: shift, then 4 coefficients */
-    33, 0, 192361040, 210430560, -377852512,
+    33, 0, 192400608, 210457392, -377798464,
     /* node 3381 z: shift, then 4 coefficients */
-    33, 0, -116297592, -131712624, 413337152,
+    33, 0, -116274240, -131733712, 413433440,
     /* node 3404 x: shift, then 4 coefficients */
-    34, 0, 611986048, 8057344, -114957096,
+    34, 0, 612389952, 8160328, -115020584,
     /* node 3404 y: shift, then 4 coefficients */
-    35, 0, -74058320, 350127904, -176138656,
+    35, 0, -73888800, 350213760, -176027984,
     /* node 3404 z: shift, then 4 coefficients */
-    33, 0, -103391128, -99981200, 339066592,
+    33, 0, -103418040, -100023816, 339059776,
     /* node 3435 x: shift, then 4 coefficients */
-    34, 0, 732751744, 77309960, -248996992,
+    34, 0, 733065536, 77313304, -248859808,
     /* node 3435 y: shift, then 4 coefficients */
-    33, 0, 76079200, 191193696, -269988352,
+    33, 0, 76122808, 191220768, -270021568,
     /* node 3435 z: shift, then 4 coefficients */
-    34, 0, -120602680, -273254368, 668244928,
+    34, 0, -120594000, -273322880, 668459200,
     /* node 3436 x: shift, then 4 coefficients */
-    33, 0, 391374720, 47362352, -149285280,
+    33, 0, 391532736, 47378528, -149220672,
     /* node 3436 y: shift, then 4 coefficients */
-    33, 0, 98410256, 200166144, -295945120,
+    33, 0, 98431016, 200156112, -295921824,
     /* node 3436 z: shift, then 4 coefficients */
-    33, 0, -69725744, -138061056, 355389504,
+    33, 0, -69717384, -138048912, 355449888,
     /* node 3437 x: shift, then 4 coefficients */
-    33, 0, 399620960, 44531136, -150462048,
+    33, 0, 399799296, 44549980, -150419536,
     /* node 3437 y: shift, then 4 coefficients */
-    33, 0, 82488336, 197709728, -296771456,
+    33, 0, 82508880, 197727936, -296778752,
     /* node 3437 z: shift, then 4 coefficients */
-    33, 0, -68576000, -141381008, 377744736,
+    33, 0, -68554336, -141386176, 377797088,
     /* node 3438 x: shift, then 4 coefficients */
-    34, 0, 737668416, 64044200, -229021680,
+    34, 0, 737996096, 64067412, -228900416,
     /* node 3438 y: shift, then 4 coefficients */
-    34, 0, 101310840, 363133120, -522278464,
+    34, 0, 101364536, 363097184, -522300064,
     /* node 3438 z: shift, then 4 coefficients */
-    33, 0, -54077908, -137940384, 350265792,
+    33, 0, -54067444, -137967360, 350378272,
     /* node 3498 x: shift, then 4 coefficients */
-    34, 0, 982637120, -35375712, -16439600,
+    34, 0, 982964288, -35258404, -16413646,
     /* node 3498 y: shift, then 4 coefficients */
-    34, 0, 81505248, 320269440, -217010144,
+    34, 0, 81663448, 320320032, -217065200,
     /* node 3498 z: shift, then 4 coefficients */
-    33, 0, -56832888, -133257760, 417413312,
+    33, 0, -56806420, -133284440, 417494208,
     /* node 3499 x: shift, then 4 coefficients */
-    33, 0, 596197056, -33874060, -33003888,
+    33, 0, 596368384, -33810700, -32982824,
     /* node 3499 y: shift, then 4 coefficients */
-    34, 0, 61889664, 438084576, -263094544,
+    34, 0, 62018268, 438129184, -263140176,
     /* node 3499 z: shift, then 4 coefficients */
-    33, 0, -78142776, -140809984, 480280832,
+    33, 0, -78121920, -140841024, 480351392,
     /* node 3500 x: shift, then 4 coefficients */
-    33, 0, 563494528, -29825748, -70953856,
+    33, 0, 563658880, -29766126, -70927240,
     /* node 3500 y: shift, then 4 coefficients */
-    34, 0, 145997456, 348131456, -300628096,
+    34, 0, 146130688, 348198560, -300642048,
     /* node 3500 z: shift, then 4 coefficients */
-    33, 0, -114341472, -128677640, 394304384,
+    33, 0, -114316208, -128710280, 394393920,
     /* node 3535 x: shift, then 4 coefficients */
-    33, 0, 556075072, 38602664, -232651104,
+    33, 0, 556235072, 38643764, -232556752,
     /* node 3535 y: shift, then 4 coefficients */
-    33, 0, 159421840, 207425568, -303504096,
+    33, 0, 159458800, 207428944, -303470144,
     /* node 3535 z: shift, then 4 coefficients */
-    33, 0, -157091392, -130114320, 482669216,
+    33, 0, -157056992, -130151928, 482742080,
     /* node 3564 x: shift, then 4 coefficients */
-    33, 0, 428075776, 72237672, -187370224,
+    33, 0, 428236160, 72263920, -187307120,
     /* node 3564 y: shift, then 4 coefficients */
-    33, 0, 238142688, 189739840, -318504480,
+    33, 0, 238188880, 189766592, -318476992,
     /* node 3564 z: shift, then 4 coefficients */
-    34, 0, -113446488, -190642736, 487942368,
+    34, 0, -113410608, -190685232, 488185536,
     /* node 3565 x: shift, then 4 coefficients */
-    33, 0, 448438112, 67878032, -189634096,
+    33, 0, 448615360, 67913056, -189588016,
     /* node 3565 y: shift, then 4 coefficients */
-    33, 0, 253704928, 180668240, -308723712,
+    33, 0, 253756064, 180706272, -308706528,
     /* node 3565 z: shift, then 4 coefficients */
-    34, 0, -114985768, -182940480, 477954976,
+    34, 0, -114927112, -182985568, 478205984,
     /* node 3569 x: shift, then 4 coefficients */
-    34, 0, 475080672, 4755244, -120090584,
+    34, 0, 475475008, 4859846, -120056720,
     /* node 3569 y: shift, then 4 coefficients */
-    36, 0, -333371744, 426916384, -178569744,
+    36, 0, -333044192, 427032416, -178727616,
     /* node 3569 z: shift, then 4 coefficients */
-    34, 0, -202063840, -145753632, 485356928,
+    34, 0, -202048352, -145793520, 485564640,
     /* node 3655 x: shift, then 4 coefficients */
-    33, 0, 367244832, 73605080, -151542912,
+    33, 0, 367398624, 73610936, -151467712,
     /* node 3655 y: shift, then 4 coefficients */
-    33, 0, 203380208, 191114976, -295150912,
+    33, 0, 203431264, 191148704, -295139136,
     /* node 3655 z: shift, then 4 coefficients */
-    34, 0, -70752056, -178908176, 415809504,
+    34, 0, -70733584, -178978352, 416079648,
     /* node 3672 x: shift, then 4 coefficients */
-    33, 0, 476872832, 59069664, -193620048,
+    33, 0, 477015200, 59112684, -193550976,
     /* node 3672 y: shift, then 4 coefficients */
-    33, 0, 259845584, 172089872, -298209760,
+    33, 0, 259902848, 172123568, -298188256,
     /* node 3672 z: shift, then 4 coefficients */
-    34, 0, -133997072, -185022128, 498975392,
+    34, 0, -133940952, -185092160, 499237056,
     /* node 3689 x: shift, then 4 coefficients */
-    33, 0, 599463296, -18148996, -150463072,
+    33, 0, 599624768, -18086486, -150426000,
     /* node 3689 y: shift, then 4 coefficients */
-    34, 0, 198506464, 399920896, -384843680,
+    34, 0, 198610720, 399962560, -384849248,
     /* node 3689 z: shift, then 4 coefficients */
-    33, 0, -162846192, -120967080, 446422848,
+    33, 0, -162821344, -120998152, 446506528,
     /* node 3751 x: shift, then 4 coefficients */
-    33, 0, 696433600, -28111648, -99862216,
+    33, 0, 696578496, -28060098, -99831664,
     /* node 3751 y: shift, then 4 coefficients */
-    34, 0, -132914184, 702358912, -218708320,
+    34, 0, -132776504, 702199872, -218769536,
     /* node 3751 z: shift, then 4 coefficients */
-    33, 0, -91625512, -123522752, 606722176,
+    33, 0, -91595408, -123528016, 606767040,
     /* node 3752 x: shift, then 4 coefficients */
-    33, 0, 526002816, -19514064, -108481560,
+    33, 0, 526128096, -19433862, -108451384,
     /* node 3752 y: shift, then 4 coefficients */
-    34, 0, -132734808, 441558560, -128330312,
+    34, 0, -132613880, 441575264, -128338696,
     /* node 3752 z: shift, then 4 coefficients */
-    33, 0, -118117072, -99073336, 456578240,
+    33, 0, -118074744, -99091792, 456619136,
     /* node 3757 x: shift, then 4 coefficients */
-    34, 0, 618823232, 94453568, -198070720,
+    34, 0, 619083008, 94529016, -197978544,
     /* node 3757 y: shift, then 4 coefficients */
-    34, 0, 230081472, 359195968, -460410432,
+    34, 0, 230184528, 359183136, -460384736,
     /* node 3757 z: shift, then 4 coefficients */
-    34, 0, -82526968, -207184608, 435454624,
+    34, 0, -82511456, -207255104, 435678688,
     /* node 3799 x: shift, then 4 coefficients */
-    34, 0, 543299520, 33820060, -134152440,
+    34, 0, 543553664, 33831928, -134004168,
     /* node 3799 y: shift, then 4 coefficients */
-    34, 0, 116503824, 311908448, -433497312,
+    34, 0, 116552464, 311877696, -433470816,
     /* node 3799 z: shift, then 4 coefficients */
-    34, 0, -87262360, -232352480, 489440864,
+    34, 0, -87237392, -232382688, 489615360,
     /* node 3800 x: shift, then 4 coefficients */
-    34, 0, 614127488, 50752596, -171989216,
+    34, 0, 614405056, 50818424, -171914464,
     /* node 3800 y: shift, then 4 coefficients */
-    34, 0, 120876552, 337207232, -461491776,
+    34, 0, 120914184, 337174976, -461451840,
     /* node 3800 z: shift, then 4 coefficients */
-    34, 0, -94282504, -244733776, 542999488,
+    34, 0, -94264472, -244782048, 543180608,
     /* node 3952 x: shift, then 4 coefficients */
-    33, 0, 400285888, 74924864, -171420496,
+    33, 0, 400442208, 74938152, -171356320,
     /* node 3952 y: shift, then 4 coefficients */
-    33, 0, 233864592, 188704912, -309688032,
+    33, 0, 233929680, 188751600, -309681696,
     /* node 3952 z: shift, then 4 coefficients */
-    34, 0, -81237944, -175893232, 430834944,
+    34, 0, -81205176, -175949456, 431097280,
     /* node 3953 x: shift, then 4 coefficients */
-    33, 0, 418122912, 72170272, -176447600,
+    33, 0, 418270880, 72183688, -176377328,
     /* node 3953 y: shift, then 4 coefficients */
-    33, 0, 248353680, 182924320, -307299520,
+    33, 0, 248402496, 182961536, -307280224,
     /* node 3953 z: shift, then 4 coefficients */
-    34, 0, -84284368, -171661216, 431337888,
+    34, 0, -84249960, -171726256, 431607904,
     /* node 4009 x: shift, then 4 coefficients */
-    33, 0, 524724992, 57696668, -262777584,
+    33, 0, 524831552, 57733816, -262601680,
     /* node 4009 y: shift, then 4 coefficients */
-    33, 0, 225221568, 202981776, -370115456,
+    33, 0, 225241024, 203000032, -370086848,
     /* node 4009 z: shift, then 4 coefficients */
-    33, 0, -136569648, -124697848, 414050112,
+    33, 0, -136533488, -124739128, 414109632,
     /* node 4029 x: shift, then 4 coefficients */
-    33, 0, 441642336, 53530380, -189194384,
+    33, 0, 441812160, 53565840, -189142272,
     /* node 4029 y: shift, then 4 coefficients */
-    33, 0, 92197976, 202900400, -319194432,
+    33, 0, 92206528, 202908112, -319174784,
     /* node 4029 z: shift, then 4 coefficients */
-    33, 0, -81140632, -144085216, 425305888,
+    33, 0, -81117136, -144075744, 425324640,
     /* node 4030 x: shift, then 4 coefficients */
-    33, 0, 414470656, 44305160, -154022144,
+    33, 0, 414631584, 44322236, -153931824,
     /* node 4030 y: shift, then 4 coefficients */
-    34, 0, 115422064, 379418592, -567980096,
+    34, 0, 115516008, 379418432, -568100544,
     /* node 4030 z: shift, then 4 coefficients */
-    33, 0, -62865820, -142778656, 401575104,
+    33, 0, -62881244, -142820768, 401741856,
     /* node 4031 x: shift, then 4 coefficients */
-    33, 0, 427918848, 55045716, -186328880,
+    33, 0, 428109920, 55055896, -186290112,
     /* node 4031 y: shift, then 4 coefficients */
-    33, 0, 117128064, 207948096, -331527616,
+    33, 0, 117156352, 207968304, -331533856,
     /* node 4031 z: shift, then 4 coefficients */
-    33, 0, -82458640, -141466960, 397146784,
+    33, 0, -82443496, -141523600, 397283200,
     /* node 4041 x: shift, then 4 coefficients */
-    33, 0, 380545408, 74575976, -160581424,
+    33, 0, 380698400, 74582376, -160507360,
     /* node 4041 y: shift, then 4 coefficients */
-    33, 0, 217802912, 190431984, -303141056,
+    33, 0, 217868432, 190489376, -303146208,
     /* node 4041 z: shift, then 4 coefficients */
-    34, 0, -72970848, -176411552, 419367488,
+    34, 0, -72931072, -176471104, 419636928,
     /* node 4042 x: shift, then 4 coefficients */
-    33, 0, 373430208, 74057384, -151788448,
+    33, 0, 373595424, 74072976, -151725904,
     /* node 4042 y: shift, then 4 coefficients */
-    33, 0, 224461904, 183710096, -290088864,
+    33, 0, 224512416, 183737728, -290062240,
     /* node 4042 z: shift, then 4 coefficients */
-    34, 0, -52259992, -159711360, 378396832,
+    34, 0, -52213572, -159778816, 378691840,
     /* node 4056 x: shift, then 4 coefficients */
-    33, 0, 554782272, 7329602, -166381632,
+    33, 0, 554965440, 7381680, -166353664,
     /* node 4056 y: shift, then 4 coefficients */
-    33, 0, 210108720, 160626784, -243863760,
+    33, 0, 210150896, 160654112, -243859952,
     /* node 4056 z: shift, then 4 coefficients */
-    33, 0, -148757760, -110645328, 349108160,
+    33, 0, -148726608, -110671608, 349205984,
     /* node 4057 x: shift, then 4 coefficients */
-    33, 0, 546807616, 13667819, -168155472,
+    33, 0, 546961088, 13707682, -168101824,
     /* node 4057 y: shift, then 4 coefficients */
-    33, 0, 236096864, 151174784, -247416128,
+    33, 0, 236150816, 151216224, -247406688,
     /* node 4057 z: shift, then 4 coefficients */
-    33, 0, -123920504, -104460368, 308950592,
+    33, 0, -123912576, -104496872, 309077728,
     /* node 4092 x: shift, then 4 coefficients */
-    33, 0, 548253824, 51063900, -267310896,
+    33, 0, 548400320, 51104836, -267229456,
     /* node 4092 y: shift, then 4 coefficients */
-    33, 0, 227827584, 200958592, -363420864,
+    33, 0, 227914480, 200973392, -363491968,
     /* node 4092 z: shift, then 4 coefficients */
-    33, 0, -153004192, -124625760, 433346400,
+    33, 0, -152992832, -124670696, 433469600,
     /* node 4093 x: shift, then 4 coefficients */
-    33, 0, 557163456, 46979024, -264398768,
+    33, 0, 557302016, 47019732, -264303616,
     /* node 4093 y: shift, then 4 coefficients */
-    33, 0, 233218912, 197503392, -354238784,
+    33, 0, 233287760, 197520064, -354254208,
     /* node 4093 z: shift, then 4 coefficients */
-    33, 0, -157613088, -121975672, 427341184,
+    33, 0, -157607344, -122007496, 427464192,
     /* node 4094 x: shift, then 4 coefficients */
-    33, 0, 560935808, 43401916, -256371696,
+    33, 0, 561091456, 43442108, -256289344,
     /* node 4094 y: shift, then 4 coefficients */
-    33, 0, 216999712, 199645728, -342847296,
+    33, 0, 217054160, 199663408, -342848160,
     /* node 4094 z: shift, then 4 coefficients */
-    33, 0, -163106544, -124110128, 445011456,
+    33, 0, -163085664, -124147704, 445125952,
     /* node 4095 x: shift, then 4 coefficients */
-    33, 0, 547342464, 50495224, -263806640,
+    33, 0, 547510912, 50529872, -263731584,
     /* node 4095 y: shift, then 4 coefficients */
-    33, 0, 212301456, 203472928, -357915424,
+    33, 0, 212322368, 203494800, -357869824,
     /* node 4095 z: shift, then 4 coefficients */
-    33, 0, -153124336, -127143840, 448035328,
+    33, 0, -153073872, -127160528, 448088192,
     /* node 4101 x: shift, then 4 coefficients */
-    33, 0, 434330304, 67068168, -174912848,
+    33, 0, 434506528, 67102488, -174864512,
     /* node 4101 y: shift, then 4 coefficients */
-    33, 0, 256550096, 173992416, -294057568,
+    33, 0, 256620400, 174039904, -294054048,
     /* node 4101 z: shift, then 4 coefficients */
-    34, 0, -83784672, -166928240, 426461952,
+    34, 0, -83778568, -167008704, 426737312,
     /* node 4102 x: shift, then 4 coefficients */
-    33, 0, 449157760, 60335944, -169851120,
+    33, 0, 449308064, 60350196, -169787088,
     /* node 4102 y: shift, then 4 coefficients */
-    33, 0, 260849952, 163504960, -279004256,
+    33, 0, 260899568, 163533328, -278980640,
     /* node 4102 z: shift, then 4 coefficients */
-    34, 0, -82557032, -163819216, 421173408,
+    34, 0, -82490352, -163868496, 421448640,
     /* node 4103 x: shift, then 4 coefficients */
-    33, 0, 483456320, 51803764, -181693504,
+    33, 0, 483617184, 51843216, -181645936,
     /* node 4103 y: shift, then 4 coefficients */
-    33, 0, 264994800, 160417024, -280095840,
+    33, 0, 264993344, 160449808, -280048544,
     /* node 4103 z: shift, then 4 coefficients */
-    34, 0, -122887200, -176604016, 473732384,
+    34, 0, -122867552, -176649024, 473976224,
     /* node 4146 x: shift, then 4 coefficients */
-    33, 0, 492164864, -269986, -95024200,
+    33, 0, 492335264, -217322, -95011560,
     /* node 4146 y: shift, then 4 coefficients */
-    34, 0, 356615168, 258413520, -366267168,
+    34, 0, 356716864, 258493792, -366276128,
     /* node 4146 z: shift, then 4 coefficients */
-    34, 0, -188908560, -210024480, 562337152,
+    34, 0, -188897488, -210102208, 562584704,
     /* node 4147 x: shift, then 4 coefficients */
-    33, 0, 535991552, -1822764, -128117800,
+    33, 0, 536163200, -1775726, -128087896,
     /* node 4147 y: shift, then 4 coefficients */
-    33, 0, 182177808, 150307120, -209928736,
+    33, 0, 182230800, 150345216, -209928160,
     /* node 4147 z: shift, then 4 coefficients */
-    33, 0, -136392080, -111573264, 332831712,
+    33, 0, -136372624, -111608000, 332941536,
     /* node 4163 x: shift, then 4 coefficients */
-    33, 0, 502568640, 62079456, -256631824,
+    33, 0, 502758368, 62126176, -256572992,
     /* node 4163 y: shift, then 4 coefficients */
-    33, 0, 210706944, 206904416, -376712608,
+    33, 0, 210741424, 206932384, -376675872,
     /* node 4163 z: shift, then 4 coefficients */
-    33, 0, -124774480, -127868328, 410558048,
+    33, 0, -124709888, -127892176, 410571840,
     /* node 4164 x: shift, then 4 coefficients */
-    33, 0, 493663200, 61925308, -242889008,
+    33, 0, 493901952, 61979496, -242896640,
     /* node 4164 y: shift, then 4 coefficients */
-    33, 0, 216502816, 203391728, -360319296,
+    33, 0, 216597088, 203412240, -360366880,
     /* node 4164 z: shift, then 4 coefficients */
-    33, 0, -116508048, -123521632, 379807712,
+    33, 0, -116537208, -123593248, 379928000,
     /* node 4289 x: shift, then 4 coefficients */
-    34, 0, 528075776, 10505379, -92840488,
+    34, 0, 528524352, 10659504, -92867128,
     /* node 4289 y: shift, then 4 coefficients */
-    36, 0, -135432384, 535222432, -277739392,
+    36, 0, -134608128, 535518208, -277525024,
     /* node 4289 z: shift, then 4 coefficients */
-    34, 0, -194898800, -186427888, 612022592,
+    34, 0, -194918176, -186500128, 612015296,
     /* node 4320 x: shift, then 4 coefficients */
-    33, 0, 702486016, -38495820, -102869528,
+    33, 0, 702645760, -38430208, -102834968,
     /* node 4320 y: shift, then 4 coefficients */
-    34, 0, 46453988, 619395648, -308376608,
+    34, 0, 46569244, 619416384, -308406112,
     /* node 4320 z: shift, then 4 coefficients */
-    33, 0, -122302016, -131168208, 601901568,
+    33, 0, -122273608, -131190664, 601991936,
     /* node 4321 x: shift, then 4 coefficients */
-    33, 0, 760958720, -39946244, -96980120,
+    33, 0, 761118656, -39887612, -96936184,
     /* node 4321 y: shift, then 4 coefficients */
-    33, 0, -46350148, 385324000, -132924936,
+    33, 0, -46286268, 385302944, -132935464,
     /* node 4321 z: shift, then 4 coefficients */
-    33, 0, -96444128, -135806736, 701440192,
+    33, 0, -96410216, -135815776, 701482880,
     /* node 4326 x: shift, then 4 coefficients */
-    33, 0, 475950816, 63820028, -241577968,
+    33, 0, 476131648, 63858024, -241510544,
     /* node 4326 y: shift, then 4 coefficients */
-    33, 0, 169869408, 212984784, -375511584,
+    33, 0, 169905280, 213000880, -375488256,
     /* node 4326 z: shift, then 4 coefficients */
-    33, 0, -109254552, -136636048, 423659776,
+    33, 0, -109241584, -136675696, 423749856,
     /* node 4327 x: shift, then 4 coefficients */
-    33, 0, 442179200, 61280124, -208107504,
+    33, 0, 442351904, 61303132, -208040880,
     /* node 4327 y: shift, then 4 coefficients */
-    33, 0, 150394416, 211838928, -355568896,
+    33, 0, 150428080, 211858560, -355542976,
     /* node 4327 z: shift, then 4 coefficients */
-    33, 0, -92046376, -137231200, 393405920,
+    33, 0, -92021968, -137245936, 393484416,
     /* node 4328 x: shift, then 4 coefficients */
-    33, 0, 523338016, 4886336, -131426560,
+    33, 0, 523513024, 4939362, -131406544,
     /* node 4328 y: shift, then 4 coefficients */
-    33, 0, 207363808, 142126144, -215628448,
+    33, 0, 207415728, 142168448, -215627296,
     /* node 4328 z: shift, then 4 coefficients */
-    34, 0, -232693520, -211143904, 600320640,
+    34, 0, -232681824, -211213040, 600549760,
     /* node 4405 x: shift, then 4 coefficients */
-    34, 0, 625103808, -17393796, -101208440,
+    34, 0, 625411200, -17352834, -101152856,
     /* node 4405 y: shift, then 4 coefficients */
-    34, 0, -195185232, 237399360, -208004992,
+    34, 0, -195221376, 237427552, -208073312,
     /* node 4405 z: shift, then 4 coefficients */
-    34, 0, -35335044, -201024736, 412321536,
+    34, 0, -35349556, -201033360, 412460160,
     /* node 4460 x: shift, then 4 coefficients */
-    33, 0, 405554144, 35378160, -124690392,
+    33, 0, 405727808, 35398436, -124628912,
     /* node 4460 y: shift, then 4 coefficients */
-    34, 0, -4473964, 318797792, -397825952,
+    34, 0, -4469676, 318818400, -397837856,
     /* node 4460 z: shift, then 4 coefficients */
-    34, 0, -74415696, -264067808, 715872256,
+    34, 0, -74375760, -264109792, 715975040,
     /* node 4492 x: shift, then 4 coefficients */
-    34, 0, 620717888, 9493810, -99208896,
+    34, 0, 621018176, 9526966, -99096448,
     /* node 4492 y: shift, then 4 coefficients */
-    34, 0, -115811328, 254264592, -301137312,
+    34, 0, -115839272, 254267840, -301192128,
     /* node 4492 z: shift, then 4 coefficients */
-    34, 0, -13432340, -218278560, 470866880,
+    34, 0, -13395749, -218301072, 471019424,
     /* node 4500 x: shift, then 4 coefficients */
-    34, 0, 487994112, 51562012, -123577776,
+    34, 0, 488316512, 51648552, -123523968,
     /* node 4500 y: shift, then 4 coefficients */
-    34, 0, 170361456, 302431520, -385449344,
+    34, 0, 170445184, 302601888, -385626624,
     /* node 4500 z: shift, then 4 coefficients */
-    34, 0, -64925632, -190391856, 367826080,
+    34, 0, -64923108, -190488832, 368082592,
     /* node 4501 x: shift, then 4 coefficients */
-    34, 0, 507842784, 67065328, -135113424,
+    34, 0, 508007104, 67028820, -134961856,
     /* node 4501 y: shift, then 4 coefficients */
-    34, 0, 195718704, 311435296, -389191392,
+    34, 0, 195768512, 311300160, -389081632,
     /* node 4501 z: shift, then 4 coefficients */
-    34, 0, -56070036, -178710256, 351511776,
+    34, 0, -56031124, -178736624, 351710464,
     /* node 4502 x: shift, then 4 coefficients */
-    34, 0, 889858368, -16310178, -33889472,
+    34, 0, 890200576, -16217863, -33921304,
     /* node 4502 y: shift, then 4 coefficients */
-    35, 0, 66436384, 634885568, -354799456,
+    35, 0, 66751180, 634983744, -355004160,
     /* node 4502 z: shift, then 4 coefficients */
-    33, 0, -63193612, -130346280, 452385056,
+    33, 0, -63175208, -130373344, 452456928,
     /* node 4510 x: shift, then 4 coefficients */
-    33, 0, 423474720, 62184184, -190178928,
+    33, 0, 423627552, 62221776, -190106896,
     /* node 4510 y: shift, then 4 coefficients */
-    33, 0, 159196768, 209070112, -336797152,
+    33, 0, 159229584, 209067744, -336762144,
     /* node 4510 z: shift, then 4 coefficients */
-    33, 0, -83428992, -130811392, 350259008,
+    33, 0, -83413208, -130839600, 350355424,
     /* node 4511 x: shift, then 4 coefficients */
-    33, 0, 395749504, 65330452, -169097360,
+    33, 0, 395911264, 65375204, -169045056,
     /* node 4511 y: shift, then 4 coefficients */
-    33, 0, 163750800, 205316288, -315965952,
+    33, 0, 163787632, 205305856, -315930112,
     /* node 4511 z: shift, then 4 coefficients */
-    34, 0, -133230480, -238739488, 590074048,
+    34, 0, -133211464, -238782736, 590262912,
     /* node 4512 x: shift, then 4 coefficients */
-    33, 0, 420575328, 66329696, -188306688,
+    33, 0, 420728800, 66353004, -188225920,
     /* node 4512 y: shift, then 4 coefficients */
-    33, 0, 177156064, 207242480, -331674464,
+    33, 0, 177183952, 207229152, -331619296,
     /* node 4512 z: shift, then 4 coefficients */
-    34, 0, -156749296, -245501136, 637729408,
+    34, 0, -156696160, -245512960, 637906176,
     /* node 4525 x: shift, then 4 coefficients */
-    34, 0, 556569664, 27903000, -127600272,
+    34, 0, 556833984, 27933020, -127473408,
     /* node 4525 y: shift, then 4 coefficients */
-    34, 0, 88451032, 309808448, -430504992,
+    34, 0, 88489352, 309805408, -430522880,
     /* node 4525 z: shift, then 4 coefficients */
-    34, 0, -83609480, -237432416, 512800672,
+    34, 0, -83603888, -237510160, 513033888,
     /* node 4526 x: shift, then 4 coefficients */
-    34, 0, 587829120, 26750662, -128738512,
+    34, 0, 588107776, 26765840, -128596736,
     /* node 4526 y: shift, then 4 coefficients */
-    34, 0, 63675844, 311732928, -430297440,
+    34, 0, 63718980, 311737120, -430316160,
     /* node 4526 z: shift, then 4 coefficients */
-    34, 0, -79779936, -243986336, 545960960,
+    34, 0, -79755184, -244036464, 546176640,
     /* node 4527 x: shift, then 4 coefficients */
-    34, 0, 604526016, 23082980, -122131888,
+    34, 0, 604836224, 23109638, -121995912,
     /* node 4527 y: shift, then 4 coefficients */
-    34, 0, 40808228, 305851296, -425551296,
+    34, 0, 40846244, 305942304, -425715424,
     /* node 4527 z: shift, then 4 coefficients */
-    34, 0, -73868208, -248154576, 569476032,
+    34, 0, -73842832, -248223392, 569697344,
     /* node 4535 x: shift, then 4 coefficients */
-    34, 0, 691310912, 41917056, -169200416,
+    34, 0, 691621120, 41925076, -169020624,
     /* node 4535 y: shift, then 4 coefficients */
-    34, 0, 45335568, 324677120, -455609984,
+    34, 0, 45363256, 324723904, -455697664,
     /* node 4535 z: shift, then 4 coefficients */
-    34, 0, -81690040, -261757360, 651918592,
+    34, 0, -81667224, -261797504, 652125760,
     /* node 4536 x: shift, then 4 coefficients */
-    33, 0, 390167104, 34295120, -122778512,
+    33, 0, 390320288, 34295912, -122665384,
     /* node 4536 y: shift, then 4 coefficients */
-    34, 0, 66050908, 347689120, -499901216,
+    34, 0, 66097556, 347692992, -499959072,
     /* node 4536 z: shift, then 4 coefficients */
-    33, 0, -49161824, -137113696, 370230240,
+    33, 0, -49153268, -137128432, 370325408,
     /* node 4537 x: shift, then 4 coefficients */
-    34, 0, 760446912, 60968076, -217907952,
+    34, 0, 760774336, 61003132, -217752560,
     /* node 4537 y: shift, then 4 coefficients */
-    34, 0, 24814292, 320604480, -438076256,
+    34, 0, 24835664, 320623392, -438115168,
     /* node 4537 z: shift, then 4 coefficients */
-    34, 0, -77337704, -261810912, 692524800,
+    34, 0, -77319568, -261838256, 692703296,
     /* node 4543 x: shift, then 4 coefficients */
-    34, 0, 679942528, 72156448, -218685088,
+    34, 0, 680241216, 72157984, -218564640,
     /* node 4543 y: shift, then 4 coefficients */
-    34, 0, 153278704, 367841568, -503472992,
+    34, 0, 153356192, 367811808, -503476256,
     /* node 4543 z: shift, then 4 coefficients */
-    34, 0, -108482944, -255033760, 589256000,
+    34, 0, -108468632, -255118960, 589483520,
     /* node 4560 x: shift, then 4 coefficients */
-    34, 0, 617021952, 39674396, -155681552,
+    34, 0, 617311104, 39670448, -155522624,
     /* node 4560 y: shift, then 4 coefficients */
-    34, 0, 89511888, 331477760, -454516480,
+    34, 0, 89581152, 331565440, -454647296,
     /* node 4560 z: shift, then 4 coefficients */
-    34, 0, -89317080, -248287888, 560857344,
+    34, 0, -89295504, -248377344, 561142144,
     /* node 4561 x: shift, then 4 coefficients */
-    33, 0, 603108864, -23851960, -82512288,
+    33, 0, 603265280, -23790756, -82499992,
     /* node 4561 y: shift, then 4 coefficients */
-    34, 0, -104621680, 576157312, -175984816,
+    34, 0, -104504280, 576176128, -176004992,
     /* node 4561 z: shift, then 4 coefficients */
-    33, 0, -101659528, -119992056, 564498368,
+    33, 0, -101647104, -119993248, 564544320,
     /* node 4571 x: shift, then 4 coefficients */
-    34, 0, 801859648, -11673339, -54698320,
+    34, 0, 802204864, -11569669, -54711240,
     /* node 4571 y: shift, then 4 coefficients */
-    34, 0, 243833984, 186460224, -238995632,
+    34, 0, 243943296, 186539312, -239036160,
     /* node 4571 z: shift, then 4 coefficients */
-    34, 0, -91253080, -206756544, 500127712,
+    34, 0, -91241064, -206830384, 500378848,
     /* node 4621 x: shift, then 4 coefficients */
-    34, 0, 685495808, 9529871, -125136816,
+    34, 0, 685840640, 9584027, -125056648,
     /* node 4621 y: shift, then 4 coefficients */
-    34, 0, -141767696, 262849632, -266774928,
+    34, 0, -141811584, 262845456, -266807376,
     /* node 4621 z: shift, then 4 coefficients */
-    34, 0, -27628700, -223541024, 497492416,
+    34, 0, -27623538, -223539536, 497623296,
     /* node 4655 x: shift, then 4 coefficients */
-    33, 0, 405548896, 74559872, -177909024,
+    33, 0, 405711904, 74584104, -177850336,
     /* node 4655 y: shift, then 4 coefficients */
-    33, 0, 221072848, 194852496, -318355552,
+    33, 0, 221110176, 194870480, -318327808,
     /* node 4655 z: shift, then 4 coefficients */
-    34, 0, -102784648, -193479872, 478610688,
+    34, 0, -102740104, -193517088, 478843136,
     /* node 4656 x: shift, then 4 coefficients */
-    33, 0, 430603712, 70731680, -192800112,
+    33, 0, 430761664, 70760608, -192729072,
     /* node 4656 y: shift, then 4 coefficients */
-    33, 0, 217046720, 198145824, -327258208,
+    33, 0, 217108240, 198195456, -327257728,
     /* node 4656 z: shift, then 4 coefficients */
-    34, 0, -141949296, -214507296, 557671808,
+    34, 0, -141920544, -214580416, 557923520,
     /* node 4668 x: shift, then 4 coefficients */
-    33, 0, 386368736, 73497128, -165659472,
+    33, 0, 386520480, 73505416, -165595120,
     /* node 4668 y: shift, then 4 coefficients */
-    33, 0, 207110032, 195439072, -310102752,
+    33, 0, 207120752, 195418496, -310041632,
     /* node 4668 z: shift, then 4 coefficients */
-    34, 0, -93188400, -193454128, 462464704,
+    34, 0, -93117864, -193442976, 462659232,
     /* node 4669 x: shift, then 4 coefficients */
-    33, 0, 409543136, 70635064, -180956832,
+    33, 0, 409685344, 70648320, -180872608,
     /* node 4669 y: shift, then 4 coefficients */
-    33, 0, 197854064, 201612976, -323249728,
+    33, 0, 197927760, 201665424, -323264768,
     /* node 4669 z: shift, then 4 coefficients */
-    34, 0, -131377984, -220247872, 551674880,
+    34, 0, -131338040, -220303248, 551914240,
     /* node 4672 x: shift, then 4 coefficients */
-    34, 0, 639831872, -12892649, 14023995,
+    34, 0, 640158336, -12786615, 14037191,
     /* node 4672 y: shift, then 4 coefficients */
-    35, 0, 250299008, 276924352, -287183104,
+    35, 0, 250574352, 277092608, -287348800,
     /* node 4672 z: shift, then 4 coefficients */
-    34, 0, -76810720, -215959744, 545308800,
+    34, 0, -76803472, -216029120, 545572928,
     /* node 4688 x: shift, then 4 coefficients */
-    34, 0, 652731520, 39143648, -162598544,
+    34, 0, 653013248, 39159320, -162432048,
     /* node 4688 y: shift, then 4 coefficients */
-    34, 0, 68950648, 333342848, -460390816,
+    34, 0, 68988032, 333288576, -460333856,
     /* node 4688 z: shift, then 4 coefficients */
-    34, 0, -88960016, -258376752, 608588480,
+    34, 0, -88922128, -258390720, 608716288,
     /* node 4689 x: shift, then 4 coefficients */
-    34, 0, 671533440, 55148384, -194427728,
+    34, 0, 671815360, 55107720, -194248832,
     /* node 4689 y: shift, then 4 coefficients */
-    34, 0, 114851664, 354762336, -489331872,
+    34, 0, 114922760, 354810400, -489440512,
     /* node 4689 z: shift, then 4 coefficients */
-    34, 0, -101840912, -259743728, 610301504,
+    34, 0, -101833784, -259810992, 610576000,
     /* node 4693 x: shift, then 4 coefficients */
-    33, 0, 498832128, 62897836, -256142784,
+    33, 0, 499009216, 62938360, -256047392,
     /* node 4693 y: shift, then 4 coefficients */
-    33, 0, 181386480, 211751952, -378809440,
+    33, 0, 181426000, 211779712, -378784896,
     /* node 4693 z: shift, then 4 coefficients */
-    33, 0, -123332976, -136400672, 442573152,
+    33, 0, -123315472, -136429520, 442658400,
     /* node 4695 x: shift, then 4 coefficients */
-    33, 0, 411191776, 70649776, -165703856,
+    33, 0, 411355712, 70671248, -165654768,
     /* node 4695 y: shift, then 4 coefficients */
-    33, 0, 251477248, 175945040, -292302112,
+    33, 0, 251543824, 175981104, -292294176,
     /* node 4695 z: shift, then 4 coefficients */
-    34, 0, -62401940, -158501968, 393348224,
+    34, 0, -62386452, -158572752, 393635040,
     /* node 4715 x: shift, then 4 coefficients */
-    33, 0, 578619456, 11620796, -195810272,
+    33, 0, 578780160, 11670645, -195758720,
     /* node 4715 y: shift, then 4 coefficients */
-    33, 0, 164969360, 191726640, -253111440,
+    33, 0, 165014640, 191751088, -253106416,
     /* node 4715 z: shift, then 4 coefficients */
-    33, 0, -174661488, -118400712, 436918048,
+    33, 0, -174638464, -118437480, 437011584,
     /* node 4745 x: shift, then 4 coefficients */
-    33, 0, 573600448, 21327914, -214629152,
+    33, 0, 573758272, 21387004, -214586048,
     /* node 4745 y: shift, then 4 coefficients */
-    33, 0, 101504128, 214430848, -234450992,
+    33, 0, 101541016, 214454224, -234458064,
     /* node 4745 z: shift, then 4 coefficients */
-    33, 0, -164746848, -125798976, 522182496,
+    33, 0, -164715408, -125819624, 522249568,
     /* node 4748 x: shift, then 4 coefficients */
-    33, 0, 388781664, 71444264, -167388224,
+    33, 0, 388960160, 71484608, -167339680,
     /* node 4748 y: shift, then 4 coefficients */
-    33, 0, 190482608, 200964320, -314092000,
+    33, 0, 190602000, 201083344, -314166400,
     /* node 4748 z: shift, then 4 coefficients */
-    34, 0, -110497904, -212247184, 509538880,
+    34, 0, -110504352, -212374336, 509842432,
     /* node 4763 x: shift, then 4 coefficients */
-    34, 0, 543765824, 90705392, -161512656,
+    34, 0, 544115456, 90889000, -161515792,
     /* node 4763 y: shift, then 4 coefficients */
-    34, 0, 238963504, 327191648, -415813568,
+    34, 0, 239172224, 327428000, -415975264,
     /* node 4763 z: shift, then 4 coefficients */
-    34, 0, -49637184, -170922704, 345589056,
+    34, 0, -49652900, -170969872, 345811520,
     /* node 4772 x: shift, then 4 coefficients */
-    33, 0, 569985984, 8645835, -184335088,
+    33, 0, 570141568, 8693383, -184275264,
     /* node 4772 y: shift, then 4 coefficients */
-    33, 0, 191941680, 176623680, -253611264,
+    33, 0, 191985760, 176658032, -253598240,
     /* node 4772 z: shift, then 4 coefficients */
-    33, 0, -166334304, -115613912, 396724352,
+    33, 0, -166315776, -115651616, 396817952,
     /* node 4791 x: shift, then 4 coefficients */
-    33, 0, 435514656, 66405052, -195943168,
+    33, 0, 435713472, 66476944, -195924288,
     /* node 4791 y: shift, then 4 coefficients */
-    33, 0, 194655392, 203116448, -330845056,
+    33, 0, 194727072, 203169088, -330855328,
     /* node 4791 z: shift, then 4 coefficients */
-    34, 0, -166544464, -237044816, 632712256,
+    34, 0, -166541584, -237134704, 632937152,
     /* node 4812 x: shift, then 4 coefficients */
-    33, 0, 556581440, 41792288, -245795696,
+    33, 0, 556748992, 41831940, -245716960,
     /* node 4812 y: shift, then 4 coefficients */
-    33, 0, 191815408, 201891312, -324290976,
+    33, 0, 191847328, 201912464, -324268608,
     /* node 4812 z: shift, then 4 coefficients */
-    33, 0, -164025568, -126274288, 462251424,
+    33, 0, -163979904, -126298000, 462316032,
     /* node 4813 x: shift, then 4 coefficients */
-    33, 0, 569633472, 27660126, -224726848,
+    33, 0, 569807232, 27710164, -224664096,
     /* node 4813 y: shift, then 4 coefficients */
-    33, 0, 175278672, 199624624, -287675104,
+    33, 0, 175320960, 199647488, -287668544,
     /* node 4813 z: shift, then 4 coefficients */
-    33, 0, -171365168, -123142896, 463407552,
+    33, 0, -171338480, -123174608, 463489280,
     /* node 4814 x: shift, then 4 coefficients */
-    33, 0, 544505088, 50633720, -258588784,
+    33, 0, 544657408, 50667752, -258480512,
     /* node 4814 y: shift, then 4 coefficients */
-    33, 0, 193752944, 206172832, -349385760,
+    33, 0, 193778512, 206197120, -349346048,
     /* node 4814 z: shift, then 4 coefficients */
-    33, 0, -153541296, -130793048, 464301984,
+    33, 0, -153494400, -130818024, 464346848,
     /* node 4817 x: shift, then 4 coefficients */
-    33, 0, 465069184, 61897280, -226800464,
+    33, 0, 465237376, 61927192, -226713760,
     /* node 4817 y: shift, then 4 coefficients */
-    33, 0, 143034192, 213036640, -361566912,
+    33, 0, 143069072, 213054048, -361546688,
     /* node 4817 z: shift, then 4 coefficients */
-    33, 0, -100549096, -141633360, 431757312,
+    33, 0, -100540504, -141673344, 431865120,
     /* node 4906 x: shift, then 4 coefficients */
-    33, 0, 540075008, 24138418, -182552800,
+    33, 0, 540238784, 24184142, -182499568,
     /* node 4906 y: shift, then 4 coefficients */
-    33, 0, 251007968, 152946512, -261310704,
+    33, 0, 251061872, 152987600, -261293568,
     /* node 4906 z: shift, then 4 coefficients */
-    34, 0, -217523024, -200011632, 581646848,
+    34, 0, -217489840, -200082400, 581891136,
     /* node 4907 x: shift, then 4 coefficients */
-    34, 0, 460125984, -746333, -124873752,
+    34, 0, 460508256, -648542, -124866752,
     /* node 4907 y: shift, then 4 coefficients */
-    36, 0, -413535936, 399320256, -159373120,
+    36, 0, -413347232, 399428352, -159488864,
     /* node 4907 z: shift, then 4 coefficients */
-    34, 0, -196443200, -130252424, 430415456,
+    34, 0, -196443856, -130283784, 430589376,
     /* node 4908 x: shift, then 4 coefficients */
-    33, 0, 428591392, 28060558, -117561480,
+    33, 0, 428765472, 28066026, -117500944,
     /* node 4908 y: shift, then 4 coefficients */
-    34, 0, -48584184, 334930464, -353781632,
+    34, 0, -48571320, 334986176, -353840224,
     /* node 4908 z: shift, then 4 coefficients */
-    34, 0, -72735816, -265559776, 732992384,
+    34, 0, -72717000, -265615360, 733138368,
     /* node 4966 x: shift, then 4 coefficients */
-    34, 0, 659610176, 113149768, -231951216,
+    34, 0, 659941440, 113257480, -231909152,
     /* node 4966 y: shift, then 4 coefficients */
-    33, 0, 140549728, 187286992, -252706464,
+    33, 0, 140596960, 187295968, -252709680,
     /* node 4966 z: shift, then 4 coefficients */
-    34, 0, -84092704, -203729056, 442112160,
+    34, 0, -84051552, -203764800, 442346656,
     /* node 4979 x: shift, then 4 coefficients */
-    33, 0, 585248896, 14570066, -209857824,
+    33, 0, 585410304, 14621189, -209803936,
     /* node 4979 y: shift, then 4 coefficients */
-    33, 0, 131532080, 212055168, -241897792,
+    33, 0, 131569168, 212074096, -241896832,
     /* node 4979 z: shift, then 4 coefficients */
-    33, 0, -174809344, -121177848, 489941376,
+    33, 0, -174778464, -121196472, 489999776,
     /* node 4981 x: shift, then 4 coefficients */
-    33, 0, 514817120, 60426828, -262099520,
+    33, 0, 514989632, 60469184, -262003376,
     /* node 4981 y: shift, then 4 coefficients */
-    33, 0, 195337280, 209729088, -377016512,
+    33, 0, 195381120, 209755136, -376985984,
     /* node 4981 z: shift, then 4 coefficients */
-    33, 0, -132423208, -132688080, 442898368,
+    33, 0, -132392960, -132714968, 442964832,
     /* node 4982 x: shift, then 4 coefficients */
-    33, 0, 529392736, 56915196, -264742432,
+    33, 0, 529535008, 56947364, -264603152,
     /* node 4982 y: shift, then 4 coefficients */
-    33, 0, 207683488, 206826048, -371971136,
+    33, 0, 207692208, 206849248, -371900608,
     /* node 4982 z: shift, then 4 coefficients */
-    33, 0, -141742288, -129842456, 443389248,
+    33, 0, -141705840, -129857072, 443430688,
     /* node 4983 x: shift, then 4 coefficients */
-    33, 0, 648821120, -13253992, -173134720,
+    33, 0, 648971520, -13192458, -173083376,
     /* node 4983 y: shift, then 4 coefficients */
-    34, 0, 129118704, 527124704, -386778400,
+    34, 0, 129215624, 527189920, -386829632,
     /* node 4983 z: shift, then 4 coefficients */
-    33, 0, -161250928, -124762456, 560134720,
+    33, 0, -161220816, -124790568, 560218752,
 };
 const tfit_model_q31 tfit_liver_forward_q31 = {
     3u, 1u, 240u, 1u, 3613u,
     tfit_liver_forward_q31_coef, tfit_liver_forward_nodes,
     tfit_liver_forward_q31_coef + 3613u, tfit_liver_forward_nodes + 240u,
-    0x3db7a427u
+    0x0d2a53e4u
 };
 
 static const uint32_t tfit_liver_contact_dims[1] = {
@@ -3091,41 +3091,41 @@ static const uint32_t tfit_liver_contact_nodes[1] = {
 };
 static const float tfit_liver_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    -0x1.066666p-55f, 0x1.e66666p-57f, -0x1.733334p-54f,
+    0x1.63999ap-52f, 0x1.333334p-55f, 0x1.19999ap-55f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.74eed4p-3f, 0x1.e7373p-6f, 0x1.f8d172p-6f, 0x1.0c198cp-5f,
-    0x1.83af5p-2f, 0x1.38673p-4f, 0x1.01031p-5f, 0x1.3cfcecp-4f,
-    0x1.aecb8ap-3f,
+    0x1.74d5aep-3f, 0x1.e6900ep-6f, 0x1.f86024p-6f, 0x1.0bc19cp-5f,
+    0x1.83b256p-2f, 0x1.38625cp-4f, 0x1.00cea2p-5f, 0x1.3cf832p-4f,
+    0x1.aec226p-3f,
     /* node 4321 x force */
-    -0x1.f2302ep-57f, 0x1.333334p-2f, -0x1.15d0fp-33f, -0x1.606b94p-30f,
+    0x1.44586ap-56f, 0x1.333334p-2f, 0x1.ef6dbcp-34f, -0x1.9cc66ep-31f,
     /* node 4321 y force */
-    -0x1.3c9018p-58f, -0x1.22aecap-29f, 0x1.333332p-2f, 0x1.0c9edcp-27f,
+    0x1.91ad3cp-58f, -0x1.f93342p-32f, 0x1.333334p-2f, -0x1.23c15ap-27f,
     /* node 4321 z force */
-    -0x1.19999ap-59f, -0x1.b6f72cp-31f, 0x1.8bf6p-31f, 0x1.333334p-2f,
+    0x1.133334p-57f, -0x1.3f5e4ep-30f, 0x1.335f26p-30f, 0x1.333334p-2f,
 };
 const tfit_model tfit_liver_contact = {
     4u, 4u, 1u, 1u, 24u,
     tfit_liver_contact_dims, tfit_liver_contact_coef, tfit_liver_contact_nodes,
     tfit_liver_contact_dims + 1u, tfit_liver_contact_coef + 24u, tfit_liver_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x409065a1u, 0xbfdf443cu, 0x3f630510u, 0xbf474cb9u, 0x401a4c3bu, 0xc00e2024u,
-     0x40784df2u, 0xbf1f3805u, 0x3ff5f322u, 0xc002dc3cu, 0x3dc21fafu, 0xbf8ef4bcu,
-     0xc02bcc22u, 0xbf62e71cu, 0xc0012b36u, 0xc1e21f20u, 0xc1bb6060u, 0x4222406du,
-     0xf20eb3eau, 0xf1ec809au, 0x724cca57u, 0xc20b47ffu, 0x4198a7ebu, 0xc2012dfeu,
-     0x35d58a43u, 0x05737ed7u},
-    0x7330bee2u
+    {0x40906c55u, 0xbfdf3603u, 0x3f631840u, 0xbf474987u, 0x401a49b3u, 0xc00e2318u,
+     0x40785f5du, 0xbf1f2390u, 0x3ff5fe36u, 0xc002e683u, 0x3dc1d079u, 0xbf8efaddu,
+     0xc02bdea2u, 0xbf62f036u, 0xc0012ff8u, 0xc1e22c6au, 0xc1bb63a4u, 0x42224199u,
+     0xf20ebc4du, 0xf1ec84b9u, 0x724ccbd2u, 0xc20b50c7u, 0x4198a131u, 0xc2013215u,
+     0x6b397749u, 0x15693fcdu},
+    0xee5efdc3u
 };
 static const int32_t tfit_liver_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     0, 0, 0,
     /* W (row-major), then the projection's headroom H */
-    195524256, 31930160, 33083762, 35140376, 406516992, 81894592,
-    33687072, 83096496, 225860688,
+    195472752, 31887374, 33054756, 35095352, 406529376, 81889648,
+    33660228, 83091656, 225841456,
     6,
     /* node 4321 x: shift, then 4 coefficients */
-    33, 0, 644245120, 0, -3,
+    33, 0, 644245120, 0, -2,
     /* node 4321 y: shift, then 4 coefficients */
-    33, 0, -5, 644245056, 17,
+    33, 0, -1, 644245120, -18,
     /* node 4321 z: shift, then 4 coefficients */
     33, 0, -2, 2, 644245120,
 };
@@ -3133,7 +3133,7 @@ const tfit_model_q31 tfit_liver_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_liver_contact_q31_coef, tfit_liver_contact_nodes,
     tfit_liver_contact_q31_coef + 28u, tfit_liver_contact_nodes + 1u,
-    0xaead47cdu
+    0x48388ae4u
 };
 
 const uint32_t tfit_liver_vertex[240] = {
@@ -3169,183 +3169,183 @@ const uint32_t tfit_liver_vertex[240] = {
     4905u, 4906u, 4907u, 4965u, 4978u, 4980u, 4981u, 4982u,
 };
 const float tfit_liver_rest_mm[720] = {
-    -0x1.215594p+3f, -0x1.32be42p+6f, -0x1.691b8p+2f, -0x1.7d251p+1f,
-    -0x1.3267bcp+6f, -0x1.a6ee6p+2f, -0x1.1a48e8p+2f, -0x1.2ebd56p+6f,
-    0x1.8e01p+0f, -0x1.ccfb74p+3f, -0x1.2d1f56p+6f, -0x1.812dp-1f,
-    -0x1.88eb82p+4f, -0x1.52d568p+5f, -0x1.e8c018p+4f, -0x1.8d8652p+4f,
-    -0x1.444cdp+5f, -0x1.fe0ecp+4f, -0x1.79dbf2p+4f, -0x1.423cap+5f,
-    -0x1.ddf21p+4f, -0x1.71a29ap+4f, -0x1.521518p+5f, -0x1.d46c2p+4f,
-    -0x1.faea14p+5f, -0x1.66b99p+5f, -0x1.1aeedp+4f, -0x1.865bb4p+3f,
-    -0x1.6ee7a4p+5f, -0x1.fac9fp+4f, -0x1.4eb2fap+4f, -0x1.5af248p+5f,
-    -0x1.d8ed9p+4f, -0x1.58381ap+4f, -0x1.46cf44p+5f, -0x1.d1a09p+4f,
-    -0x1.1c4462p+4f, -0x1.4798fcp+5f, -0x1.d13c38p+4f, -0x1.161f8ap+4f,
-    -0x1.65240cp+5f, -0x1.ee28f8p+4f, -0x1.855dc4p+3f, -0x1.2912a4p+6f,
-    0x1.a4036p+2f, -0x1.cc36e4p+3f, -0x1.67deap+5f, -0x1.f7b92p+4f,
-    -0x1.040f22p+4f, -0x1.80a3d8p+5f, -0x1.0a52bcp+5f, -0x1.31d1b2p+4f,
-    -0x1.7b5848p+5f, -0x1.03d07cp+5f, -0x1.415e9p+1f, -0x1.15135cp+6f,
-    -0x1.dcc5d8p+4f, -0x1.2269a8p+2f, -0x1.2154e4p+6f, -0x1.e4db2p+4f,
+    -0x1.215596p+3f, -0x1.32be42p+6f, -0x1.691b8p+2f, -0x1.7d2514p+1f,
+    -0x1.3267bcp+6f, -0x1.a6ee6p+2f, -0x1.1a48eap+2f, -0x1.2ebd56p+6f,
+    0x1.8e01p+0f, -0x1.ccfb74p+3f, -0x1.2d1f56p+6f, -0x1.812cfap-1f,
+    -0x1.88eb82p+4f, -0x1.52d566p+5f, -0x1.e8c018p+4f, -0x1.8d8652p+4f,
+    -0x1.444ccep+5f, -0x1.fe0ecp+4f, -0x1.79dbf2p+4f, -0x1.423c9ep+5f,
+    -0x1.ddf21p+4f, -0x1.71a29ap+4f, -0x1.521516p+5f, -0x1.d46c2p+4f,
+    -0x1.faea16p+5f, -0x1.66b98ep+5f, -0x1.1aeedp+4f, -0x1.865bb4p+3f,
+    -0x1.6ee7a2p+5f, -0x1.fac9fp+4f, -0x1.4eb2fap+4f, -0x1.5af246p+5f,
+    -0x1.d8ed9p+4f, -0x1.58381ap+4f, -0x1.46cf42p+5f, -0x1.d1a09p+4f,
+    -0x1.1c4462p+4f, -0x1.4798fap+5f, -0x1.d13c38p+4f, -0x1.161f8ap+4f,
+    -0x1.65240ap+5f, -0x1.ee28f8p+4f, -0x1.855dc4p+3f, -0x1.2912a4p+6f,
+    0x1.a4035ep+2f, -0x1.cc36e6p+3f, -0x1.67de9ep+5f, -0x1.f7b92p+4f,
+    -0x1.040f22p+4f, -0x1.80a3d6p+5f, -0x1.0a52bcp+5f, -0x1.31d1b2p+4f,
+    -0x1.7b5846p+5f, -0x1.03d07cp+5f, -0x1.415e8ep+1f, -0x1.15135cp+6f,
+    -0x1.dcc5d8p+4f, -0x1.2269aap+2f, -0x1.2154e4p+6f, -0x1.e4db2p+4f,
     -0x1.8c8648p+2f, -0x1.178dap+6f, -0x1.02a824p+5f, -0x1.1c6588p+2f,
     -0x1.07d30cp+6f, -0x1.f40898p+4f, -0x1.4ee704p+3f, -0x1.33025cp+6f,
-    -0x1.878fcp+3f, -0x1.2c5528p+2f, -0x1.334f76p+6f, -0x1.c895fp+3f,
-    0x1.89207p+1f, -0x1.2e18c8p+6f, -0x1.1fe1bp+3f, -0x1.fbd208p+2f,
-    -0x1.2387aep+6f, -0x1.ff0968p+4f, -0x1.35d8a4p+3f, -0x1.1c60acp+6f,
+    -0x1.878fcp+3f, -0x1.2c552ap+2f, -0x1.334f76p+6f, -0x1.c895fp+3f,
+    0x1.89206cp+1f, -0x1.2e18c8p+6f, -0x1.1fe1b2p+3f, -0x1.fbd208p+2f,
+    -0x1.2387aep+6f, -0x1.ff0968p+4f, -0x1.35d8a6p+3f, -0x1.1c60acp+6f,
     -0x1.11e8a8p+5f, -0x1.ca8862p+4f, -0x1.0c6d5ep+6f, -0x1.26559cp+5f,
     -0x1.debc6ap+4f, -0x1.011f7p+6f, -0x1.327d24p+5f, -0x1.af7dbap+4f,
     -0x1.08244p+6f, -0x1.385c9p+5f, -0x1.931f1ap+4f, -0x1.1014cap+6f,
-    -0x1.316114p+5f, -0x1.62773p+5f, -0x1.fd130cp+5f, 0x1.5bcd98p+4f,
-    -0x1.315cc4p+5f, -0x1.0c2306p+6f, 0x1.91ea48p+4f, -0x1.642614p+5f,
-    -0x1.003d8cp+6f, 0x1.aff278p+4f, -0x1.83df6cp+5f, -0x1.ec7528p+5f,
-    0x1.7ea6b8p+4f, -0x1.7a1204p+3f, -0x1.f099dp+5f, -0x1.142b6cp+5f,
-    -0x1.30dab4p+3f, -0x1.d0bb9cp+5f, -0x1.0c178cp+5f, -0x1.0e2a94p+3f,
-    -0x1.ea91p+5f, -0x1.078d5p+5f, -0x1.631824p+3f, -0x1.05bceep+6f,
-    -0x1.15c0b8p+5f, -0x1.4aa95cp+5f, -0x1.aac5a4p+5f, -0x1.530f28p+5f,
-    -0x1.5b8f24p+5f, -0x1.b546a8p+5f, -0x1.59c49cp+5f, -0x1.4ae2b4p+5f,
-    -0x1.92bd74p+5f, -0x1.5f7908p+5f, -0x1.bec6a2p+4f, -0x1.1f2e4ap+6f,
-    0x1.8d7d8p+0f, -0x1.05385p+5f, -0x1.17a618p+6f, 0x1.ee306p+2f,
-    -0x1.1d538cp+5f, -0x1.131fa6p+6f, 0x1.d2028p+1f, -0x1.e6b852p+4f,
-    -0x1.1d0e22p+6f, -0x1.c734cp+1f, -0x1.6dfbe4p+5f, -0x1.ca923cp+5f,
-    -0x1.24ef68p+5f, -0x1.83fd88p+5f, -0x1.c47ec8p+5f, -0x1.de66p+4f,
-    -0x1.8b3af8p+5f, -0x1.b5db8cp+5f, -0x1.204c64p+5f, -0x1.79c1bcp+5f,
-    -0x1.bcfc5p+5f, -0x1.428ce8p+5f, -0x1.d1e0d4p+3f, -0x1.4cdafp+5f,
-    -0x1.dde56p+4f, -0x1.9df278p+5f, -0x1.cc6704p+5f, -0x1.fb461p+3f,
-    -0x1.a8a71cp+5f, -0x1.b441cp+5f, -0x1.6fp+4f, -0x1.761204p+5f,
-    -0x1.da955p+5f, -0x1.83055p+4f, -0x1.5d15e8p+5f, -0x1.f69f24p+5f,
+    -0x1.316114p+5f, -0x1.627732p+5f, -0x1.fd130ap+5f, 0x1.5bcd98p+4f,
+    -0x1.315cc6p+5f, -0x1.0c2306p+6f, 0x1.91ea48p+4f, -0x1.642616p+5f,
+    -0x1.003d8cp+6f, 0x1.aff278p+4f, -0x1.83df6ep+5f, -0x1.ec7526p+5f,
+    0x1.7ea6b8p+4f, -0x1.7a1204p+3f, -0x1.f099cep+5f, -0x1.142b6cp+5f,
+    -0x1.30dab4p+3f, -0x1.d0bb9ap+5f, -0x1.0c178cp+5f, -0x1.0e2a96p+3f,
+    -0x1.ea90fep+5f, -0x1.078d5p+5f, -0x1.631824p+3f, -0x1.05bceep+6f,
+    -0x1.15c0b8p+5f, -0x1.4aa95ep+5f, -0x1.aac5a2p+5f, -0x1.530f28p+5f,
+    -0x1.5b8f26p+5f, -0x1.b546a6p+5f, -0x1.59c49cp+5f, -0x1.4ae2b6p+5f,
+    -0x1.92bd72p+5f, -0x1.5f7908p+5f, -0x1.bec6a2p+4f, -0x1.1f2e4ap+6f,
+    0x1.8d7d78p+0f, -0x1.053852p+5f, -0x1.17a618p+6f, 0x1.ee306p+2f,
+    -0x1.1d538ep+5f, -0x1.131fa6p+6f, 0x1.d20284p+1f, -0x1.e6b852p+4f,
+    -0x1.1d0e22p+6f, -0x1.c734cp+1f, -0x1.6dfbe6p+5f, -0x1.ca923ap+5f,
+    -0x1.24ef68p+5f, -0x1.83fd8ap+5f, -0x1.c47ec8p+5f, -0x1.de66p+4f,
+    -0x1.8b3afap+5f, -0x1.b5db8ap+5f, -0x1.204c64p+5f, -0x1.79c1bep+5f,
+    -0x1.bcfc4ep+5f, -0x1.428ce8p+5f, -0x1.d1e0d4p+3f, -0x1.4cdaeep+5f,
+    -0x1.dde56p+4f, -0x1.9df27ap+5f, -0x1.cc6702p+5f, -0x1.fb461p+3f,
+    -0x1.a8a71ep+5f, -0x1.b441bep+5f, -0x1.6fp+4f, -0x1.761206p+5f,
+    -0x1.da954ep+5f, -0x1.83055p+4f, -0x1.5d15eap+5f, -0x1.f69f22p+5f,
     -0x1.2078p+4f, -0x1.5ceb14p+3f, -0x1.31ef36p+6f, -0x1.42b99p+4f,
-    -0x1.65df04p+5f, -0x1.c23ddcp+5f, -0x1.4a993p+5f, -0x1.0a83acp+5f,
-    -0x1.13a38ap+6f, 0x1.a81f88p+4f, -0x1.2386f4p+5f, -0x1.0fbc6cp+6f,
-    0x1.291d78p+4f, -0x1.c6f0ap+5f, -0x1.b94084p+5f, 0x1.523afp+3f,
-    -0x1.ecc224p+5f, -0x1.8775f8p+5f, 0x1.4424p+2f, -0x1.bb6e2cp+5f,
-    -0x1.ba7e94p+5f, 0x1.c05cp-1f, -0x1.a5b7e4p+3f, -0x1.10da04p+6f,
-    -0x1.246d5cp+5f, -0x1.21c844p+3f, -0x1.0fc52p+6f, -0x1.11464p+5f,
-    -0x1.7436e4p+3f, -0x1.180a72p+6f, -0x1.1e8ecp+5f, -0x1.c61a34p+3f,
-    -0x1.1b523ap+6f, -0x1.24ba6p+5f, -0x1.94e352p+4f, -0x1.671a04p+5f,
-    -0x1.ff5048p+4f, -0x1.6d9e1ap+4f, -0x1.7ce044p+5f, -0x1.023924p+5f,
-    -0x1.9de3bap+4f, -0x1.7be49p+5f, -0x1.07c95p+5f, -0x1.b0d2f2p+4f,
-    -0x1.65684p+5f, -0x1.1358acp+5f, -0x1.e11b72p+4f, -0x1.7f0f28p+5f,
-    -0x1.1fa3a4p+5f, -0x1.cca232p+4f, -0x1.60947cp+5f, -0x1.2d7ef8p+5f,
-    -0x1.bc957ap+4f, -0x1.7d2f1cp+5f, -0x1.1288dp+5f, -0x1.c74182p+4f,
+    -0x1.65df06p+5f, -0x1.c23ddap+5f, -0x1.4a993p+5f, -0x1.0a83aep+5f,
+    -0x1.13a38ap+6f, 0x1.a81f88p+4f, -0x1.2386f6p+5f, -0x1.0fbc6cp+6f,
+    0x1.291d78p+4f, -0x1.c6f0a2p+5f, -0x1.b94082p+5f, 0x1.523afp+3f,
+    -0x1.ecc226p+5f, -0x1.8775f6p+5f, 0x1.4423fep+2f, -0x1.bb6e2ep+5f,
+    -0x1.ba7e92p+5f, 0x1.c05bfap-1f, -0x1.a5b7e6p+3f, -0x1.10da04p+6f,
+    -0x1.246d5cp+5f, -0x1.21c846p+3f, -0x1.0fc52p+6f, -0x1.11464p+5f,
+    -0x1.7436e6p+3f, -0x1.180a72p+6f, -0x1.1e8ecp+5f, -0x1.c61a34p+3f,
+    -0x1.1b523ap+6f, -0x1.24ba6p+5f, -0x1.94e352p+4f, -0x1.671a02p+5f,
+    -0x1.ff5048p+4f, -0x1.6d9e1ap+4f, -0x1.7ce042p+5f, -0x1.023924p+5f,
+    -0x1.9de3bap+4f, -0x1.7be48ep+5f, -0x1.07c95p+5f, -0x1.b0d2f2p+4f,
+    -0x1.65683ep+5f, -0x1.1358acp+5f, -0x1.e11b72p+4f, -0x1.7f0f26p+5f,
+    -0x1.1fa3a4p+5f, -0x1.cca232p+4f, -0x1.60947ap+5f, -0x1.2d7ef8p+5f,
+    -0x1.bc957ap+4f, -0x1.7d2f1ap+5f, -0x1.1288dp+5f, -0x1.c74182p+4f,
     -0x1.961a6cp+5f, -0x1.1375f8p+5f, -0x1.b5ed22p+4f, -0x1.126234p+6f,
     -0x1.18244p+5f, -0x1.c11132p+4f, -0x1.163aaep+6f, -0x1.e5f42p+4f,
-    -0x1.02dbfp+5f, -0x1.09fc52p+6f, -0x1.0cae48p+5f, -0x1.8fa92ap+4f,
-    -0x1.937804p+5f, -0x1.0f59e8p+5f, -0x1.a6a4a2p+4f, -0x1.af82acp+5f,
-    -0x1.197cb8p+5f, -0x1.d803aap+4f, -0x1.adc2f8p+5f, -0x1.198418p+5f,
-    -0x1.930ff4p+3f, -0x1.218554p+6f, -0x1.160fc4p+5f, -0x1.c8dab4p+3f,
-    -0x1.27dfa4p+6f, -0x1.fa8e88p+4f, -0x1.e903a4p+3f, -0x1.22ec58p+6f,
-    -0x1.170864p+5f, -0x1.442feap+4f, -0x1.8f8d1cp+5f, -0x1.11083p+5f,
-    -0x1.e7da48p+2f, -0x1.020dd4p+6f, -0x1.05f5f8p+5f, -0x1.740a3cp+5f,
-    -0x1.b44f78p+5f, -0x1.5b9518p+5f, -0x1.6805b8p+5f, -0x1.ae9f8cp+5f,
-    -0x1.665c9p+5f, -0x1.cf37e8p+5f, -0x1.a42b38p+5f, -0x1.6fd98p+3f,
-    -0x1.e47c1cp+5f, -0x1.8b3b64p+5f, -0x1.298e2p+2f, -0x1.f0902cp+5f,
-    -0x1.77b3p+5f, -0x1.5ebacp+3f, -0x1.d1b398p+5f, -0x1.9a020cp+5f,
-    -0x1.1267ap+4f, -0x1.8ca4dcp+5f, -0x1.ac59e8p+5f, -0x1.496808p+5f,
+    -0x1.02dbf2p+5f, -0x1.09fc52p+6f, -0x1.0cae48p+5f, -0x1.8fa92ap+4f,
+    -0x1.937802p+5f, -0x1.0f59e8p+5f, -0x1.a6a4a2p+4f, -0x1.af82aap+5f,
+    -0x1.197cb8p+5f, -0x1.d803aap+4f, -0x1.adc2f6p+5f, -0x1.198418p+5f,
+    -0x1.930ff6p+3f, -0x1.218554p+6f, -0x1.160fc4p+5f, -0x1.c8dab4p+3f,
+    -0x1.27dfa4p+6f, -0x1.fa8e88p+4f, -0x1.e903a6p+3f, -0x1.22ec58p+6f,
+    -0x1.170864p+5f, -0x1.442feap+4f, -0x1.8f8d1ap+5f, -0x1.11083p+5f,
+    -0x1.e7da4ap+2f, -0x1.020dd4p+6f, -0x1.05f5f8p+5f, -0x1.740a3ep+5f,
+    -0x1.b44f76p+5f, -0x1.5b9518p+5f, -0x1.6805bap+5f, -0x1.ae9f8ap+5f,
+    -0x1.665c9p+5f, -0x1.cf37eap+5f, -0x1.a42b38p+5f, -0x1.6fd98p+3f,
+    -0x1.e47c1cp+5f, -0x1.8b3b62p+5f, -0x1.298e1ep+2f, -0x1.f0902ep+5f,
+    -0x1.77b2fep+5f, -0x1.5ebacp+3f, -0x1.d1b39ap+5f, -0x1.9a020ap+5f,
+    -0x1.1267ap+4f, -0x1.8ca4dep+5f, -0x1.ac59e6p+5f, -0x1.496808p+5f,
     -0x1.73e422p+4f, -0x1.1e8adcp+6f, 0x1.a0aee8p+4f, -0x1.2900d2p+4f,
-    -0x1.23a29ep+6f, 0x1.0f83e8p+4f, -0x1.160cbp+5f, -0x1.0be64cp+6f,
+    -0x1.23a29ep+6f, 0x1.0f83e8p+4f, -0x1.160cb2p+5f, -0x1.0be64cp+6f,
     -0x1.aa155p+4f, -0x1.e63bcap+4f, -0x1.1a96a2p+6f, -0x1.3cb99p+4f,
-    -0x1.2a9eecp+5f, -0x1.0b379cp+6f, -0x1.28d22p+4f, -0x1.45cfa8p+5f,
-    -0x1.fb0a74p+5f, -0x1.984dp+4f, -0x1.bee76ap+4f, -0x1.c7539p+5f,
+    -0x1.2a9eeep+5f, -0x1.0b379cp+6f, -0x1.28d22p+4f, -0x1.45cfaap+5f,
+    -0x1.fb0a72p+5f, -0x1.984dp+4f, -0x1.bee76ap+4f, -0x1.c7538ep+5f,
     -0x1.25993p+5f, -0x1.0eaacap+4f, -0x1.248c9ap+6f, -0x1.081b08p+5f,
-    -0x1.496e2cp+5f, -0x1.08dfcp+6f, 0x1.233eap+2f, -0x1.3358ep+5f,
-    -0x1.0e89d6p+6f, 0x1.2cf35p+3f, -0x1.591478p+5f, -0x1.052ee6p+6f,
-    0x1.38fb7p+3f, -0x1.757aacp+5f, -0x1.f7cb6p+5f, 0x1.c1e1cp+1f,
-    -0x1.027dbap+4f, -0x1.14c1a4p+6f, -0x1.2eaebp+5f, -0x1.e74944p+3f,
-    -0x1.07511ap+6f, -0x1.273dd8p+5f, -0x1.9429f8p+5f, -0x1.e5425cp+5f,
-    0x1.6824p-2f, -0x1.b3e48cp+5f, -0x1.c66e98p+5f, -0x1.7fd3cp+2f,
-    -0x1.7bd3cp+5f, -0x1.ef7974p+5f, -0x1.e45fp+2f, -0x1.003fe4p+6f,
-    -0x1.64bac8p+5f, -0x1.cbda8p+0f, -0x1.7c72aap+4f, -0x1.15f34ep+6f,
-    -0x1.2505bcp+5f, -0x1.b02408p+5f, -0x1.d3bfe8p+5f, 0x1.e1c85p+3f,
-    -0x1.a3495p+5f, -0x1.d6041cp+5f, 0x1.c60fap+2f, -0x1.85bda4p+5f,
-    -0x1.ed9cacp+5f, 0x1.63dcdp+3f, -0x1.64ee6p+5f, -0x1.003e92p+6f,
-    0x1.062fe8p+4f, -0x1.853a5cp+5f, -0x1.ec5184p+5f, 0x1.147178p+4f,
-    -0x1.989722p+4f, -0x1.3b7214p+5f, -0x1.173644p+5f, -0x1.9f4182p+4f,
-    -0x1.51adep+5f, -0x1.0d60acp+5f, -0x1.5bed24p+3f, -0x1.25bb66p+6f,
+    -0x1.496e2ep+5f, -0x1.08dfcp+6f, 0x1.233ea2p+2f, -0x1.3358e2p+5f,
+    -0x1.0e89d6p+6f, 0x1.2cf34ep+3f, -0x1.59147ap+5f, -0x1.052ee6p+6f,
+    0x1.38fb7p+3f, -0x1.757aaep+5f, -0x1.f7cb5ep+5f, 0x1.c1e1cp+1f,
+    -0x1.027dbap+4f, -0x1.14c1a4p+6f, -0x1.2eaebp+5f, -0x1.e74946p+3f,
+    -0x1.07511ap+6f, -0x1.273dd8p+5f, -0x1.9429fap+5f, -0x1.e5425ap+5f,
+    0x1.6823fap-2f, -0x1.b3e48ep+5f, -0x1.c66e96p+5f, -0x1.7fd3cp+2f,
+    -0x1.7bd3c2p+5f, -0x1.ef7972p+5f, -0x1.e45fp+2f, -0x1.003fe4p+6f,
+    -0x1.64bac6p+5f, -0x1.cbda88p+0f, -0x1.7c72aap+4f, -0x1.15f34ep+6f,
+    -0x1.2505bcp+5f, -0x1.b0240ap+5f, -0x1.d3bfe6p+5f, 0x1.e1c85p+3f,
+    -0x1.a34952p+5f, -0x1.d6041ap+5f, 0x1.c60fap+2f, -0x1.85bda6p+5f,
+    -0x1.ed9caap+5f, 0x1.63dcdp+3f, -0x1.64ee62p+5f, -0x1.003e92p+6f,
+    0x1.062fe8p+4f, -0x1.853a5ep+5f, -0x1.ec5182p+5f, 0x1.147178p+4f,
+    -0x1.989722p+4f, -0x1.3b7212p+5f, -0x1.173644p+5f, -0x1.9f4182p+4f,
+    -0x1.51addep+5f, -0x1.0d60acp+5f, -0x1.5bed24p+3f, -0x1.25bb66p+6f,
     -0x1.0651ecp+5f, -0x1.5057a4p+3f, -0x1.2ba3a2p+6f, -0x1.d75eap+4f,
-    -0x1.1be55cp+5f, -0x1.fac7bp+5f, -0x1.2301d8p+5f, -0x1.365c9p+5f,
-    -0x1.f956a4p+5f, -0x1.01581p+5f, -0x1.374744p+5f, -0x1.e9f7dp+5f,
-    -0x1.25738p+5f, -0x1.d15328p+2f, -0x1.9270d8p+5f, -0x1.f92bd8p+4f,
-    0x1.2e3f3p+1f, -0x1.277262p+6f, -0x1.6e01ap+4f, -0x1.7020c2p+4f,
+    -0x1.1be55ep+5f, -0x1.fac7aep+5f, -0x1.2301d8p+5f, -0x1.365c92p+5f,
+    -0x1.f956a2p+5f, -0x1.01581p+5f, -0x1.374746p+5f, -0x1.e9f7cep+5f,
+    -0x1.25738p+5f, -0x1.d1532ap+2f, -0x1.9270d6p+5f, -0x1.f92bd8p+4f,
+    0x1.2e3f2cp+1f, -0x1.277262p+6f, -0x1.6e01ap+4f, -0x1.7020c2p+4f,
     -0x1.21d7c2p+6f, 0x1.1c787p+3f, -0x1.b904eap+4f, -0x1.1c6a16p+6f,
     0x1.476b58p+4f, -0x1.dc5f02p+4f, -0x1.1c42dep+6f, 0x1.81a79p+3f,
-    0x1.3d15cp-1f, -0x1.14378p+6f, -0x1.b2ccdp+4f, -0x1.78868p-2f,
+    0x1.3d15aap-1f, -0x1.14378p+6f, -0x1.b2ccdp+4f, -0x1.7886a4p-2f,
     -0x1.08163ap+6f, -0x1.c41cbp+4f, -0x1.ff360ap+4f, -0x1.044818p+6f,
-    -0x1.281e1cp+5f, -0x1.091d7ap+4f, -0x1.d8464p+5f, -0x1.1a76c8p+5f,
-    -0x1.9c8094p+3f, -0x1.d31b4p+5f, -0x1.150db8p+5f, -0x1.f42674p+3f,
-    -0x1.f0587cp+5f, -0x1.1df59p+5f, -0x1.2f985ap+4f, -0x1.e5ea8p+5f,
+    -0x1.281e1cp+5f, -0x1.091d7ap+4f, -0x1.d8463ep+5f, -0x1.1a76c8p+5f,
+    -0x1.9c8096p+3f, -0x1.d31b3ep+5f, -0x1.150db8p+5f, -0x1.f42674p+3f,
+    -0x1.f0587ap+5f, -0x1.1df59p+5f, -0x1.2f985ap+4f, -0x1.e5ea7ep+5f,
     -0x1.2120f8p+5f, -0x1.011188p+2f, -0x1.2a6e2ep+6f, -0x1.c30ff8p+4f,
     -0x1.d68228p+2f, -0x1.2ed4e4p+6f, -0x1.bb2058p+4f, -0x1.ae8228p+2f,
-    -0x1.2a182ap+6f, -0x1.dcb7e8p+4f, -0x1.507c4cp+5f, -0x1.c0f31cp+5f,
-    -0x1.48bd7p+5f, -0x1.5bd8acp+5f, -0x1.ce6354p+5f, -0x1.391d48p+5f,
-    -0x1.0005ecp+5f, -0x1.173fccp+6f, 0x1.151d78p+4f, -0x1.1ae528p+5f,
-    -0x1.1443e4p+6f, 0x1.b565fp+3f, -0x1.7b2b6ap+4f, -0x1.edc6a8p+5f,
-    -0x1.347a1p+5f, -0x1.5787fap+4f, -0x1.db7ae4p+5f, -0x1.25766p+5f,
-    -0x1.500f22p+4f, -0x1.f541cp+5f, -0x1.2fd014p+5f, -0x1.6fd632p+4f,
-    -0x1.02334ep+6f, -0x1.3c4468p+5f, -0x1.4076c8p+5f, -0x1.0b594cp+6f,
-    0x1.d5e0dp+3f, -0x1.023ea8p+5f, -0x1.b22e18p+5f, -0x1.1fcc3p+5f,
-    -0x1.e8be72p+4f, -0x1.c19934p+5f, -0x1.228624p+5f, -0x1.07044cp+5f,
-    -0x1.cfddccp+5f, -0x1.2ac154p+5f, -0x1.1f24dcp+5f, -0x1.c1418cp+5f,
+    -0x1.2a182ap+6f, -0x1.dcb7e8p+4f, -0x1.507c4ep+5f, -0x1.c0f31ap+5f,
+    -0x1.48bd7p+5f, -0x1.5bd8aep+5f, -0x1.ce6352p+5f, -0x1.391d48p+5f,
+    -0x1.0005eep+5f, -0x1.173fccp+6f, 0x1.151d78p+4f, -0x1.1ae52ap+5f,
+    -0x1.1443e4p+6f, 0x1.b565fp+3f, -0x1.7b2b6ap+4f, -0x1.edc6a6p+5f,
+    -0x1.347a1p+5f, -0x1.5787fap+4f, -0x1.db7ae2p+5f, -0x1.25766p+5f,
+    -0x1.500f22p+4f, -0x1.f541bep+5f, -0x1.2fd014p+5f, -0x1.6fd632p+4f,
+    -0x1.02334ep+6f, -0x1.3c4468p+5f, -0x1.4076cap+5f, -0x1.0b594cp+6f,
+    0x1.d5e0dp+3f, -0x1.023eaap+5f, -0x1.b22e16p+5f, -0x1.1fcc3p+5f,
+    -0x1.e8be72p+4f, -0x1.c19932p+5f, -0x1.228624p+5f, -0x1.07044ep+5f,
+    -0x1.cfddcap+5f, -0x1.2ac154p+5f, -0x1.1f24dep+5f, -0x1.c1418ap+5f,
     -0x1.2df5f8p+5f, -0x1.4d5aeap+4f, -0x1.24eae8p+6f, 0x1.2868cp+1f,
-    -0x1.56758ap+4f, -0x1.28f90ap+6f, -0x1.72164p+1f, -0x1.f6dec4p+3f,
+    -0x1.56758ap+4f, -0x1.28f90ap+6f, -0x1.721642p+1f, -0x1.f6dec4p+3f,
     -0x1.2fe0c4p+6f, -0x1.001b1p+3f, -0x1.681752p+4f, -0x1.1d8e72p+6f,
-    -0x1.02f0a4p+5f, -0x1.53dcc4p+3f, -0x1.b48b1p+5f, -0x1.1079dcp+5f,
-    -0x1.c98448p+2f, -0x1.c61c1p+5f, -0x1.03c7e4p+5f, -0x1.9fd46p+5f,
-    -0x1.dded94p+5f, 0x1.3881d8p+4f, -0x1.b8e2e4p+3f, -0x1.7d1e1cp+5f,
-    -0x1.07ac3cp+5f, -0x1.3a2808p+2f, -0x1.e45afp+5f, -0x1.f22bd8p+4f,
-    -0x1.2023a2p+4f, -0x1.2d599ap+6f, -0x1.150348p+4f, -0x1.48436p+5f,
-    -0x1.0569fcp+6f, -0x1.1e68ep+3f, -0x1.62436p+5f, -0x1.01292ap+6f,
-    -0x1.37e28p+0f, -0x1.74703ap+4f, -0x1.632f5p+5f, -0x1.e27528p+4f,
-    -0x1.f70ebap+4f, -0x1.6a162p+5f, -0x1.3c7c1cp+5f, -0x1.02a3ap+5f,
-    -0x1.8569e4p+5f, -0x1.2a2304p+5f, -0x1.47f554p+3f, -0x1.985848p+5f,
-    -0x1.0bb368p+5f, -0x1.e98448p+2f, -0x1.a8b3d4p+5f, -0x1.051f8cp+5f,
-    -0x1.281f8ap+4f, -0x1.0f83e4p+6f, -0x1.34178cp+5f, -0x1.063294p+5f,
-    -0x1.ef9c44p+5f, -0x1.3024a8p+5f, -0x1.1f2bp+5f, -0x1.e2e01p+5f,
-    -0x1.2f30f4p+5f, -0x1.df44cap+4f, -0x1.df542cp+5f, -0x1.2fc2c4p+5f,
-    -0x1.859f54p+3f, -0x1.87c64p+5f, -0x1.0a6bb8p+5f, -0x1.3330b4p+3f,
-    -0x1.7e3958p+5f, -0x1.fb7e28p+4f, -0x1.56d428p+2f, -0x1.311eb8p+6f,
+    -0x1.02f0a4p+5f, -0x1.53dcc4p+3f, -0x1.b48b0ep+5f, -0x1.1079dcp+5f,
+    -0x1.c9844ap+2f, -0x1.c61c0ep+5f, -0x1.03c7e4p+5f, -0x1.9fd462p+5f,
+    -0x1.dded92p+5f, 0x1.3881d8p+4f, -0x1.b8e2e6p+3f, -0x1.7d1e1ap+5f,
+    -0x1.07ac3cp+5f, -0x1.3a2808p+2f, -0x1.e45aeep+5f, -0x1.f22bd8p+4f,
+    -0x1.2023a2p+4f, -0x1.2d599ap+6f, -0x1.150348p+4f, -0x1.484362p+5f,
+    -0x1.0569fcp+6f, -0x1.1e68ep+3f, -0x1.624362p+5f, -0x1.01292ap+6f,
+    -0x1.37e286p+0f, -0x1.74703ap+4f, -0x1.632f5p+5f, -0x1.e27528p+4f,
+    -0x1.f70ebap+4f, -0x1.6a161ep+5f, -0x1.3c7c1cp+5f, -0x1.02a3a2p+5f,
+    -0x1.8569e4p+5f, -0x1.2a2304p+5f, -0x1.47f554p+3f, -0x1.985846p+5f,
+    -0x1.0bb368p+5f, -0x1.e9844ap+2f, -0x1.a8b3d2p+5f, -0x1.051f8cp+5f,
+    -0x1.281f8ap+4f, -0x1.0f83e4p+6f, -0x1.34178cp+5f, -0x1.063296p+5f,
+    -0x1.ef9c42p+5f, -0x1.3024a8p+5f, -0x1.1f2b02p+5f, -0x1.e2e00ep+5f,
+    -0x1.2f30f4p+5f, -0x1.df44cap+4f, -0x1.df542ap+5f, -0x1.2fc2c4p+5f,
+    -0x1.859f54p+3f, -0x1.87c63ep+5f, -0x1.0a6bb8p+5f, -0x1.3330b4p+3f,
+    -0x1.7e3956p+5f, -0x1.fb7e28p+4f, -0x1.56d428p+2f, -0x1.311eb8p+6f,
     -0x1.86dab8p+4f, -0x1.17382p+0f, -0x1.2ba9fcp+6f, -0x1.986808p+4f,
     -0x1.1bfec2p+4f, -0x1.1a0e22p+6f, -0x1.2e5844p+5f, -0x1.0485eap+4f,
     -0x1.1d844ep+6f, -0x1.27a72p+5f, -0x1.18758ap+4f, -0x1.2058c8p+6f,
     -0x1.1dd07cp+5f, -0x1.369652p+4f, -0x1.1a0ef4p+6f, -0x1.2afcb8p+5f,
-    -0x1.301bc8p+2f, -0x1.b96fap+5f, -0x1.ecf2e8p+4f, -0x1.e58e2p+0f,
-    -0x1.cbefap+5f, -0x1.cc4a2p+4f, -0x1.5f27ap+0f, -0x1.f18834p+5f,
-    -0x1.cfb92p+4f, 0x1.744d6p+0f, -0x1.2f358ep+6f, -0x1.f237bp+3f,
-    -0x1.0dde68p+2f, -0x1.33691p+6f, -0x1.3575f8p+4f, -0x1.4a6d5ap+4f,
+    -0x1.301bcap+2f, -0x1.b96f9ep+5f, -0x1.ecf2e8p+4f, -0x1.e58e24p+0f,
+    -0x1.cbef9ep+5f, -0x1.cc4a2p+4f, -0x1.5f27acp+0f, -0x1.f18832p+5f,
+    -0x1.cfb92p+4f, 0x1.744d64p+0f, -0x1.2f358ep+6f, -0x1.f237bp+3f,
+    -0x1.0dde6ap+2f, -0x1.33691p+6f, -0x1.3575f8p+4f, -0x1.4a6d5ap+4f,
     -0x1.075f3cp+6f, -0x1.394e08p+5f, -0x1.287172p+4f, -0x1.00a3a4p+6f,
-    -0x1.2d47e4p+5f, -0x1.424a2p+5f, -0x1.07f732p+6f, 0x1.391968p+4f,
-    -0x1.8e86c2p+4f, -0x1.25d98p+6f, -0x1.6433ap+3f, -0x1.13fb7cp+5f,
-    -0x1.145ba6p+6f, -0x1.3689ap+3f, -0x1.9b4b5ap+4f, -0x1.ff86f8p+5f,
+    -0x1.2d47e4p+5f, -0x1.424a22p+5f, -0x1.07f732p+6f, 0x1.391968p+4f,
+    -0x1.8e86c2p+4f, -0x1.25d98p+6f, -0x1.6433ap+3f, -0x1.13fb7ep+5f,
+    -0x1.145ba6p+6f, -0x1.3689ap+3f, -0x1.9b4b5ap+4f, -0x1.ff86f6p+5f,
     -0x1.3d8588p+5f, -0x1.adeab2p+4f, -0x1.e565ccp+5f, -0x1.35339cp+5f,
-    0x1.b3fp-7f, -0x1.2fa546p+6f, -0x1.50574p+4f, -0x1.da94acp+5f,
-    -0x1.7ffe6p+5f, -0x1.878e2p+4f, -0x1.525d94p+5f, -0x1.df34a4p+5f,
-    -0x1.1dff64p+5f, -0x1.a78e88p+5f, -0x1.9a0ffcp+5f, -0x1.306114p+5f,
-    -0x1.824672p+4f, -0x1.2eb78p+5f, -0x1.fdfcb8p+4f, -0x1.637382p+4f,
-    -0x1.2fd774p+5f, -0x1.d81f2p+4f, -0x1.b3487ap+4f, -0x1.1e692ap+6f,
-    0x1.7e618p+2f, -0x1.878652p+4f, -0x1.cd2c4p+5f, -0x1.274818p+5f,
-    -0x1.63d5cap+4f, -0x1.ac237p+5f, -0x1.1abac8p+5f, -0x1.574ea2p+4f,
-    -0x1.c20484p+5f, -0x1.1ffc1cp+5f, -0x1.127cb8p+5f, -0x1.77c9fp+5f,
-    -0x1.431eb8p+5f, -0x1.27a08cp+5f, -0x1.8ac748p+5f, -0x1.419204p+5f,
-    -0x1.3b3af8p+5f, -0x1.9a92d8p+5f, -0x1.4ad014p+5f, -0x1.3c2c38p+5f,
-    -0x1.bc7a44p+5f, -0x1.3de284p+5f, -0x1.33f9d8p+5f, -0x1.d760acp+5f,
-    -0x1.3314e4p+5f, -0x1.48683cp+5f, -0x1.d53024p+5f, -0x1.35bfbp+5f,
-    -0x1.efcd9ap+4f, -0x1.988a74p+5f, -0x1.1b2164p+5f, -0x1.18295cp+5f,
-    -0x1.8e8c18p+5f, -0x1.314c98p+5f, -0x1.37f10cp+5f, -0x1.0bfafcp+6f,
-    -0x1.96dc8p+0f, 0x1.df03bp+1f, -0x1.2e128ap+6f, -0x1.110dp-1f,
-    -0x1.ab1758p+5f, -0x1.a37c1cp+5f, -0x1.e4319p+4f, -0x1.a87864p+3f,
-    -0x1.a10034p+5f, -0x1.14d494p+5f, -0x1.e14d64p+3f, -0x1.bdbe1p+5f,
-    -0x1.18f3b8p+5f, -0x1.d55594p+3f, -0x1.917c5p+5f, -0x1.11b4a4p+5f,
-    -0x1.19779ap+4f, -0x1.ae41cp+5f, -0x1.19faep+5f, -0x1.8a9ac8p+2f,
-    -0x1.2a5f8ap+6f, 0x1.e19f5p+3f, -0x1.29055p+5f, -0x1.a3a2d4p+5f,
-    -0x1.350068p+5f, -0x1.0f2304p+5f, -0x1.a07c88p+5f, -0x1.25da1cp+5f,
+    0x1.b3f134p-7f, -0x1.2fa546p+6f, -0x1.50574p+4f, -0x1.da94aep+5f,
+    -0x1.7ffe5ep+5f, -0x1.878e2p+4f, -0x1.525d96p+5f, -0x1.df34a2p+5f,
+    -0x1.1dff64p+5f, -0x1.a78e8ap+5f, -0x1.9a0ffap+5f, -0x1.306114p+5f,
+    -0x1.824672p+4f, -0x1.2eb77ep+5f, -0x1.fdfcb8p+4f, -0x1.637382p+4f,
+    -0x1.2fd772p+5f, -0x1.d81f2p+4f, -0x1.b3487ap+4f, -0x1.1e692ap+6f,
+    0x1.7e618p+2f, -0x1.878652p+4f, -0x1.cd2c3ep+5f, -0x1.274818p+5f,
+    -0x1.63d5cap+4f, -0x1.ac236ep+5f, -0x1.1abac8p+5f, -0x1.574ea2p+4f,
+    -0x1.c20482p+5f, -0x1.1ffc1cp+5f, -0x1.127cbap+5f, -0x1.77c9eep+5f,
+    -0x1.431eb8p+5f, -0x1.27a08ep+5f, -0x1.8ac746p+5f, -0x1.419204p+5f,
+    -0x1.3b3afap+5f, -0x1.9a92d6p+5f, -0x1.4ad014p+5f, -0x1.3c2c3ap+5f,
+    -0x1.bc7a42p+5f, -0x1.3de284p+5f, -0x1.33f9dap+5f, -0x1.d760aap+5f,
+    -0x1.3314e4p+5f, -0x1.48683ep+5f, -0x1.d53022p+5f, -0x1.35bfbp+5f,
+    -0x1.efcd9ap+4f, -0x1.988a72p+5f, -0x1.1b2164p+5f, -0x1.18295ep+5f,
+    -0x1.8e8c16p+5f, -0x1.314c98p+5f, -0x1.37f10ep+5f, -0x1.0bfafcp+6f,
+    -0x1.96dc84p+0f, 0x1.df03aep+1f, -0x1.2e128ap+6f, -0x1.110cfep-1f,
+    -0x1.ab175ap+5f, -0x1.a37c1ap+5f, -0x1.e4319p+4f, -0x1.a87864p+3f,
+    -0x1.a10032p+5f, -0x1.14d494p+5f, -0x1.e14d64p+3f, -0x1.bdbe0ep+5f,
+    -0x1.18f3b8p+5f, -0x1.d55596p+3f, -0x1.917c4ep+5f, -0x1.11b4a4p+5f,
+    -0x1.19779ap+4f, -0x1.ae41bep+5f, -0x1.19faep+5f, -0x1.8a9ac8p+2f,
+    -0x1.2a5f8ap+6f, 0x1.e19f5p+3f, -0x1.290552p+5f, -0x1.a3a2d2p+5f,
+    -0x1.350068p+5f, -0x1.0f2306p+5f, -0x1.a07c86p+5f, -0x1.25da1cp+5f,
     -0x1.88992ap+4f, -0x1.089568p+6f, -0x1.3e04ecp+5f, -0x1.53f2c8p+2f,
-    -0x1.a19f58p+5f, -0x1.ed106p+4f, -0x1.f1d8a4p+3f, -0x1.2c2e4ap+6f,
+    -0x1.a19f56p+5f, -0x1.ed106p+4f, -0x1.f1d8a6p+3f, -0x1.2c2e4ap+6f,
     -0x1.9c60a8p+4f, -0x1.9690fap+4f, -0x1.1f8b5ep+6f, -0x1.a2319p+4f,
-    -0x1.1d6b4ap+4f, -0x1.99ef38p+5f, -0x1.165878p+5f, -0x1.3a81d2p+4f,
-    -0x1.36a618p+5f, -0x1.ca09p+4f, -0x1.55e904p+3f, -0x1.300b5ep+6f,
-    -0x1.98fd2p+4f, -0x1.2f1962p+4f, -0x1.cb22ap+5f, -0x1.1cc64p+5f,
+    -0x1.1d6b4ap+4f, -0x1.99ef36p+5f, -0x1.165878p+5f, -0x1.3a81d2p+4f,
+    -0x1.36a616p+5f, -0x1.ca09p+4f, -0x1.55e904p+3f, -0x1.300b5ep+6f,
+    -0x1.98fd2p+4f, -0x1.2f1962p+4f, -0x1.cb229ep+5f, -0x1.1cc64p+5f,
     -0x1.39154ap+4f, -0x1.1fa29ep+6f, -0x1.11f7dp+5f, -0x1.26d3c2p+4f,
     -0x1.254362p+6f, -0x1.e5d288p+4f, -0x1.567dbap+4f, -0x1.19e5cap+6f,
-    -0x1.25dafp+5f, -0x1.c4a232p+4f, -0x1.fa3fe8p+5f, -0x1.39a994p+5f,
-    -0x1.3ed24p-1f, -0x1.20d94cp+6f, -0x1.b6a3d8p+4f, -0x1.c80bep+5f,
-    -0x1.c3865cp+5f, 0x1.23acd8p+4f, -0x1.602928p+5f, -0x1.df762cp+5f,
-    -0x1.ebb92p+4f, -0x1.4d3e42p+4f, -0x1.6e4b6p+5f, -0x1.ed46ep+4f,
+    -0x1.25dafp+5f, -0x1.c4a232p+4f, -0x1.fa3fe6p+5f, -0x1.39a994p+5f,
+    -0x1.3ed24ap-1f, -0x1.20d94cp+6f, -0x1.b6a3d8p+4f, -0x1.c80be2p+5f,
+    -0x1.c3865ap+5f, 0x1.23acd8p+4f, -0x1.60292ap+5f, -0x1.df762ap+5f,
+    -0x1.ebb92p+4f, -0x1.4d3e42p+4f, -0x1.6e4b5ep+5f, -0x1.ed46ep+4f,
     -0x1.5050aap+4f, -0x1.264baep+6f, -0x1.9992ap+4f, -0x1.6bd1b2p+4f,
     -0x1.0db2ccp+6f, -0x1.3acc98p+5f, -0x1.4ecfaap+4f, -0x1.133612p+6f,
     -0x1.35d568p+5f, -0x1.88b4a2p+4f, -0x1.25b19p+6f, -0x1.3b5948p+4f,

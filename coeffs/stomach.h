@@ -9,16 +9,16 @@
  *   tfit_stomach_forward: nodal p=1, 484 output points, force [N] -> displacement [mm]
  *       4370 add, 4389 mul, 0 div per evaluation; 25220 table bytes
  *       9441 instructions; Cortex-M4F <= 16860 cycles (100.36 us at 168 MHz), Cortex-M7 ~13121 (27.33 us at 480 MHz)
- *       Q31 form tfit_stomach_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.91e-08 mm (float32 path: 4.62e-07)
- *       held-out error over 50 cases: max 3.87e-07 mm, rms 4.55e-08 mm
+ *       Q31 form tfit_stomach_forward_q31: input 2^0 N, output 2^7 mm full scale; adds 9.98e-08 mm (float32 path: 4.34e-07)
+ *       held-out error over 50 cases: max 3.63e-07 mm, rms 4.55e-08 mm
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
  *   tfit_stomach_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
- *       Q31 form tfit_stomach_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 1.08e-08 N (float32 path: 4.19e-08)
- *       held-out error over 50 cases: max 2.98e-08 N, rms 9.66e-09 N
+ *       Q31 form tfit_stomach_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 1.16e-08 N (float32 path: 4.66e-08)
+ *       held-out error over 50 cases: max 2.98e-08 N, rms 8.16e-09 N
  *       error of the solve against the physics: not measured (tissuefit fit --reference)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0713 N/mm; largest stiffness 0.264 N/mm (the device must render it)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0714 N/mm; largest stiffness 0.264 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
  * tfit_stomach_forward + tfit_stomach_contact take at most 17073 (10.16 % of it).
@@ -38,7 +38,7 @@
 #endif
 
 /* CRC-32 of stomach_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_STOMACH_GOLDEN_CRC32 0x79fa5c49u
+#define TFIT_STOMACH_GOLDEN_CRC32 0x3bcb5f60u
 
 /* tfit_stomach_forward */
 #define TFIT_STOMACH_FORWARD_FAMILY "nodal"
@@ -62,15 +62,15 @@
 #define TFIT_STOMACH_FORWARD_US_M7_480MHZ 27.33
 #define TFIT_STOMACH_FORWARD_Q31_IN_EXP 0 /* input word x = value * 2^(31 - 0), N */
 #define TFIT_STOMACH_FORWARD_Q31_OUT_EXP 7 /* output value = word * 2^(7 - 31), mm */
-#define TFIT_STOMACH_FORWARD_Q31_ADDED_ERROR_MM 9.9067e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.62287e-07 */
-#define TFIT_STOMACH_FORWARD_Q31_CRC32 0x6c786e94u
-#define tfit_stomach_forward_q31 tfit_stomach_forward_q31_6c786e94 /* this header's version of the model */
+#define TFIT_STOMACH_FORWARD_Q31_ADDED_ERROR_MM 9.97794e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.3432e-07 */
+#define TFIT_STOMACH_FORWARD_Q31_CRC32 0x9d9f76e1u
+#define tfit_stomach_forward_q31 tfit_stomach_forward_q31_9d9f76e1 /* this header's version of the model */
 extern const tfit_model_q31 tfit_stomach_forward_q31;
 #define TFIT_STOMACH_FORWARD_HELDOUT_CASES 50
-#define TFIT_STOMACH_FORWARD_HELDOUT_MAX_MM 3.87373e-07
-#define TFIT_STOMACH_FORWARD_HELDOUT_RMS_MM 4.54709e-08
-#define TFIT_STOMACH_FORWARD_CRC32 0x1bfbe4f8u
-#define tfit_stomach_forward tfit_stomach_forward_1bfbe4f8 /* this header's version of the model */
+#define TFIT_STOMACH_FORWARD_HELDOUT_MAX_MM 3.6318e-07
+#define TFIT_STOMACH_FORWARD_HELDOUT_RMS_MM 4.55487e-08
+#define TFIT_STOMACH_FORWARD_CRC32 0x382f21c0u
+#define tfit_stomach_forward tfit_stomach_forward_382f21c0 /* this header's version of the model */
 extern const tfit_model tfit_stomach_forward;
 
 /* tfit_stomach_contact */
@@ -80,7 +80,7 @@ extern const tfit_model tfit_stomach_forward;
 #define TFIT_STOMACH_CONTACT_N_OUT 1u
 #define TFIT_STOMACH_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_STOMACH_CONTACT_OUTPUT "contact force [N]"
-#define TFIT_STOMACH_CONTACT_ENVELOPE_CENTER {1.03389517e-16, -8.32667302e-18, -2.22044608e-17}
+#define TFIT_STOMACH_CONTACT_ENVELOPE_CENTER {-6.31439372e-17, 5.51642052e-17, 1.6653346e-17}
 #define TFIT_STOMACH_CONTACT_OPS_ADD 23
 #define TFIT_STOMACH_CONTACT_OPS_MUL 42
 #define TFIT_STOMACH_CONTACT_OPS_DIV 0
@@ -94,18 +94,18 @@ extern const tfit_model tfit_stomach_forward;
 #define TFIT_STOMACH_CONTACT_US_M7_480MHZ 0.34
 #define TFIT_STOMACH_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_STOMACH_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
-#define TFIT_STOMACH_CONTACT_Q31_ADDED_ERROR_N 1.08033e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.18775e-08 */
-#define TFIT_STOMACH_CONTACT_Q31_CRC32 0x200888f4u
-#define tfit_stomach_contact_q31 tfit_stomach_contact_q31_200888f4 /* this header's version of the model */
+#define TFIT_STOMACH_CONTACT_Q31_ADDED_ERROR_N 1.16093e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 4.65692e-08 */
+#define TFIT_STOMACH_CONTACT_Q31_CRC32 0x01cf7e26u
+#define tfit_stomach_contact_q31 tfit_stomach_contact_q31_01cf7e26 /* this header's version of the model */
 extern const tfit_model_q31 tfit_stomach_contact_q31;
 #define TFIT_STOMACH_CONTACT_HELDOUT_CASES 50
 #define TFIT_STOMACH_CONTACT_HELDOUT_MAX_N 2.98023e-08
-#define TFIT_STOMACH_CONTACT_HELDOUT_RMS_N 9.66418e-09
-#define TFIT_STOMACH_CONTACT_HELDOUT_REL_MAX 1.73828e-07
-#define TFIT_STOMACH_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0713355 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_STOMACH_CONTACT_STIFFNESS_MAX_N_PER_MM 0.264223 /* largest ||df/ddelta||_2 */
-#define TFIT_STOMACH_CONTACT_CRC32 0xbc01d981u
-#define tfit_stomach_contact tfit_stomach_contact_bc01d981 /* this header's version of the model */
+#define TFIT_STOMACH_CONTACT_HELDOUT_RMS_N 8.15535e-09
+#define TFIT_STOMACH_CONTACT_HELDOUT_REL_MAX 1.6881e-07
+#define TFIT_STOMACH_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0714016 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_STOMACH_CONTACT_STIFFNESS_MAX_N_PER_MM 0.264215 /* largest ||df/ddelta||_2 */
+#define TFIT_STOMACH_CONTACT_CRC32 0xbd2253c3u
+#define tfit_stomach_contact tfit_stomach_contact_bd2253c3 /* this header's version of the model */
 extern const tfit_model tfit_stomach_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_stomach_forward is
@@ -201,2909 +201,2909 @@ static const float tfit_stomach_forward_coef[5820] = {
     0x1.aaaaaap+1f, 0x0p+0f, 0x0p+0f, 0x0p+0f,
     0x1.aaaaaap+1f,
     /* node 991 x */
-    -0x1p-59f, 0x1.cd9184p-1f, 0x1.60ab2cp-5f, -0x1.5a9328p-1f,
+    0x1.99999ap-56f, 0x1.cefe36p-1f, 0x1.55f092p-5f, -0x1.599c78p-1f,
     /* node 991 y */
-    -0x1.3b3334p-56f, -0x1.54fbf4p-2f, 0x1.acee6ap-2f, 0x1.772432p-4f,
+    -0x1.426666p-56f, -0x1.58a1p-2f, 0x1.ae9dd6p-2f, 0x1.6f53d2p-4f,
     /* node 991 z */
-    -0x0p+0f, -0x1.fe0406p-4f, -0x1.afdaa6p-2f, 0x1.b3d15ap+0f,
+    -0x1.99999ap-59f, -0x1.fb0a6ap-4f, -0x1.b0fc86p-2f, 0x1.b36ae6p+0f,
     /* node 1226 x */
-    -0x1.e66666p-58f, 0x1.db7b3cp-1f, 0x1.901e7p-3f, -0x1.65659cp-1f,
+    0x1.333334p-60f, 0x1.daeb6ep-1f, 0x1.9018f2p-3f, -0x1.6526p-1f,
     /* node 1226 y */
-    -0x1.666666p-59f, -0x1.3e668cp-4f, 0x1.002944p-1f, -0x1.86bb68p-1f,
+    0x1.0cccccp-56f, -0x1.410368p-4f, 0x1.004b7p-1f, -0x1.86ca2cp-1f,
     /* node 1226 z */
-    0x1.333334p-58f, -0x1.02cceep-3f, -0x1.2dd7c2p-1f, 0x1.5d3176p+1f,
+    -0x1.99999ap-56f, -0x1.019076p-3f, -0x1.2e0a22p-1f, 0x1.5caa44p+1f,
     /* node 1227 x */
-    0x1.59999ap-55f, 0x1.d31ab2p-1f, 0x1.91ea32p-3f, -0x1.5996fep-1f,
+    0x1.8p-58f, 0x1.d2b778p-1f, 0x1.91a4a2p-3f, -0x1.596058p-1f,
     /* node 1227 y */
-    0x1.b33334p-57f, -0x1.11f08cp-4f, 0x1.0a624cp-1f, -0x1.b962cp-1f,
+    0x1.ccccccp-58f, -0x1.1389b4p-4f, 0x1.0a7b4ap-1f, -0x1.b94e9ep-1f,
     /* node 1227 z */
-    -0x1.8p-56f, -0x1.0bfda8p-3f, -0x1.32149ep-1f, 0x1.63ab1ap+1f,
+    0x1p-55f, -0x1.0a564cp-3f, -0x1.325108p-1f, 0x1.63223cp+1f,
     /* node 1239 x */
-    -0x1.99999ap-60f, 0x1.0936c6p+0f, 0x1.18179cp-3f, -0x1.9cf18ap-1f,
+    0x1.4p-55f, 0x1.08bc28p+0f, 0x1.1882b8p-3f, -0x1.9c8328p-1f,
     /* node 1239 y */
-    -0x1.2b3334p-56f, -0x1.dab3a4p-3f, 0x1.b14f3ap-2f, -0x1.f6bd6ap-4f,
+    -0x1.0cccccp-58f, -0x1.da8b14p-3f, 0x1.b16426p-2f, -0x1.fa8a36p-4f,
     /* node 1239 z */
-    -0x1.b33334p-56f, -0x1.64de86p-3f, -0x1.08e9fap-1f, 0x1.29629p+1f,
+    -0x1.19999ap-56f, -0x1.638cdep-3f, -0x1.092012p-1f, 0x1.28e69ap+1f,
     /* node 1240 x */
-    -0x1.99999ap-55f, 0x1.06f9eap+0f, 0x1.43453p-3f, -0x1.9776a4p-1f,
+    0x1.2p-55f, 0x1.06bce8p+0f, 0x1.430434p-3f, -0x1.9715f6p-1f,
     /* node 1240 y */
-    -0x1.d9999ap-58f, -0x1.792fd2p-3f, 0x1.c15cp-2f, -0x1.1035e2p-2f,
+    0x1.4cccccp-59f, -0x1.78c5bap-3f, 0x1.c17f1cp-2f, -0x1.108d6cp-2f,
     /* node 1240 z */
-    0x1.99999ap-58f, -0x1.5ae53cp-3f, -0x1.14109cp-1f, 0x1.3ad078p+1f,
+    -0x1.19999ap-56f, -0x1.5882c6p-3f, -0x1.144fc2p-1f, 0x1.3a52b8p+1f,
     /* node 1241 x */
-    0x1.e66666p-57f, 0x1.080754p+0f, 0x1.542e16p-3f, -0x1.8c7ab2p-1f,
+    -0x1p-58f, 0x1.07aecap+0f, 0x1.540ddcp-3f, -0x1.8c28a8p-1f,
     /* node 1241 y */
-    -0x1.8p-58f, -0x1.46e24ap-3f, 0x1.d51326p-2f, -0x1.898076p-2f,
+    -0x1.4cccccp-57f, -0x1.47c138p-3f, 0x1.d55162p-2f, -0x1.89f35p-2f,
     /* node 1241 z */
-    -0x1.99999ap-60f, -0x1.4a6334p-3f, -0x1.1c793ap-1f, 0x1.4702fcp+1f,
+    -0x1.99999ap-59f, -0x1.48ccd6p-3f, -0x1.1cb258p-1f, 0x1.4682b8p+1f,
     /* node 1246 x */
-    -0x1.5cccccp-55f, 0x1.d225ecp-1f, 0x1.1e5b84p-4f, -0x1.6dd9cp-1f,
+    0x1.8p-55f, 0x1.cdead4p-1f, 0x1.2811d8p-4f, -0x1.6e06a6p-1f,
     /* node 1246 y */
-    -0x1.18p-56f, -0x1.3d4d48p-2f, 0x1.8ef48p-2f, 0x1.9fa15cp-4f,
+    -0x1.de6666p-56f, -0x1.39d44cp-2f, 0x1.8da0fcp-2f, 0x1.a0d02ap-4f,
     /* node 1246 z */
-    -0x1.666666p-56f, -0x1.eec928p-4f, -0x1.b5d85ap-2f, 0x1.c24488p+0f,
+    0x1p-57f, -0x1.f0647p-4f, -0x1.b4ffcep-2f, 0x1.c0e7cap+0f,
     /* node 1247 x */
-    0x1.59999ap-55f, 0x1.007814p+0f, 0x1.03fc4ep-3f, -0x1.9a0caep-1f,
+    -0x1.666666p-57f, 0x1.feb1aap-1f, 0x1.068666p-3f, -0x1.9a04a6p-1f,
     /* node 1247 y */
-    -0x1.246666p-56f, -0x1.f91e38p-3f, 0x1.986b52p-2f, -0x1.53b164p-5f,
+    -0x1.c66666p-56f, -0x1.f7d0acp-3f, 0x1.9844b6p-2f, -0x1.577d34p-5f,
     /* node 1247 z */
-    -0x1p-57f, -0x1.40a068p-3f, -0x1.fa2be6p-2f, 0x1.171abcp+1f,
+    0x1.333334p-57f, -0x1.409f04p-3f, -0x1.fa0b0cp-2f, 0x1.168c14p+1f,
     /* node 1248 x */
-    -0x1p-57f, 0x1.ef2b4ep-1f, 0x1.8137fp-4f, -0x1.87e8fp-1f,
+    0x1.333334p-56f, 0x1.f0b3e8p-1f, 0x1.79566cp-4f, -0x1.868ba6p-1f,
     /* node 1248 y */
-    -0x1.e66666p-59f, -0x1.25011p-2f, 0x1.90392ap-2f, 0x1.c9e996p-5f,
+    -0x1.4p-56f, -0x1.25e318p-2f, 0x1.90abc2p-2f, 0x1.c1f3fep-5f,
     /* node 1248 z */
-    -0x1p-56f, -0x1.2a54a2p-3f, -0x1.d75436p-2f, 0x1.f9ae8ep+0f,
+    -0x1.99999ap-56f, -0x1.24e78cp-3f, -0x1.d8e72cp-2f, 0x1.f936c6p+0f,
     /* node 1249 x */
-    -0x1p-58f, 0x1.fbffd8p-1f, 0x1.16f8f8p-4f, -0x1.81117p-1f,
+    -0x1.333334p-58f, 0x1.fab9b2p-1f, 0x1.1831aep-4f, -0x1.80896p-1f,
     /* node 1249 y */
-    -0x1.966666p-58f, -0x1.42794p-2f, 0x1.a7e5fap-2f, 0x1.338ffep-4f,
+    -0x1.b9999ap-58f, -0x1.415bacp-2f, 0x1.a7b6c4p-2f, 0x1.3101cep-4f,
     /* node 1249 z */
-    -0x1.99999ap-59f, -0x1.4829aep-3f, -0x1.d4eb8p-2f, 0x1.f58986p+0f,
+    -0x0p+0f, -0x1.465f9ep-3f, -0x1.d52294p-2f, 0x1.f4aep+0f,
     /* node 1250 x */
-    0x1.b33334p-56f, 0x1.020cbep+0f, 0x1.b0fa3ap-4f, -0x1.91ffc2p-1f,
+    0x1.99999ap-61f, 0x1.015eecp+0f, 0x1.b39cecp-4f, -0x1.91b546p-1f,
     /* node 1250 y */
-    0x1.0cp-57f, -0x1.1a7c3cp-2f, 0x1.9b7708p-2f, 0x1.920462p-8f,
+    -0x1.f53334p-57f, -0x1.1a895ap-2f, 0x1.9ba35cp-2f, 0x1.5ce3fcp-8f,
     /* node 1250 z */
-    -0x1.8p-56f, -0x1.4301eep-3f, -0x1.ef5e32p-2f, 0x1.0de94ap+1f,
+    0x1p-57f, -0x1.4189a2p-3f, -0x1.efa53ap-2f, 0x1.0d7078p+1f,
     /* node 1251 x */
-    0x1.333334p-55f, 0x1.2120bep+0f, 0x1.2c0cc2p-4f, -0x1.a0059p-1f,
+    0x1.4cccccp-56f, 0x1.20a916p+0f, 0x1.2bfa34p-4f, -0x1.9f89bap-1f,
     /* node 1251 y */
-    -0x1.86999ap-56f, -0x1.49c104p-2f, 0x1.de61eap-2f, 0x1.4eed0ap-7f,
+    -0x1.22ccccp-58f, -0x1.4a4a5ap-2f, 0x1.dec99p-2f, 0x1.2a8762p-7f,
     /* node 1251 z */
-    -0x1.333334p-57f, -0x1.d5d66p-3f, -0x1.ff2d18p-2f, 0x1.21dc84p+1f,
+    -0x1.99999ap-58f, -0x1.d4bdcp-3f, -0x1.ff4726p-2f, 0x1.21556ep+1f,
     /* node 1252 x */
-    -0x1.533334p-55f, 0x1.1a723cp+0f, 0x1.95275ap-4f, -0x1.a3c036p-1f,
+    -0x1.333334p-56f, 0x1.19f5fcp+0f, 0x1.9546d8p-4f, -0x1.a34844p-1f,
     /* node 1252 y */
-    -0x1.54ccccp-58f, -0x1.26c4cap-2f, 0x1.cea404p-2f, -0x1.a1771ap-6f,
+    -0x1.6a6666p-56f, -0x1.2700a4p-2f, 0x1.cee62ap-2f, -0x1.b1103cp-6f,
     /* node 1252 z */
-    -0x1p-56f, -0x1.bcce22p-3f, -0x1.041b94p-1f, 0x1.26567cp+1f,
+    -0x1.99999ap-58f, -0x1.bc6ea8p-3f, -0x1.042bc6p-1f, 0x1.25d388p+1f,
     /* node 1253 x */
-    0x1.c33334p-54f, 0x1.11e77ap+0f, 0x1.211892p-4f, -0x1.989666p-1f,
+    -0x1.333334p-58f, 0x1.11c652p+0f, 0x1.1ed1dap-4f, -0x1.97e598p-1f,
     /* node 1253 y */
-    -0x1.acccccp-58f, -0x1.562424p-2f, 0x1.d51eb8p-2f, 0x1.643ab2p-5f,
+    -0x1.3e6666p-57f, -0x1.56a26cp-2f, 0x1.d5aa24p-2f, 0x1.5ce6eap-5f,
     /* node 1253 z */
-    -0x1.333334p-57f, -0x1.bc5a76p-3f, -0x1.eba5f2p-2f, 0x1.12f55ap+1f,
+    0x1.333334p-58f, -0x1.b8a6b2p-3f, -0x1.ec4b22p-2f, 0x1.12805p+1f,
     /* node 1256 x */
-    0x1.466666p-56f, 0x1.8b80d8p-1f, -0x1.62398p-6f, -0x1.f04332p-2f,
+    0x1.99999ap-59f, 0x1.8ac756p-1f, -0x1.5fc56ep-6f, -0x1.efc09ep-2f,
     /* node 1256 y */
-    -0x1.8p-56f, -0x1.7e4bc2p-2f, 0x1.07f414p-1f, -0x1.3592c8p-4f,
+    0x1.24ccccp-57f, -0x1.7e91e8p-2f, 0x1.0831f2p-1f, -0x1.38be32p-4f,
     /* node 1256 z */
-    0x1.99999ap-60f, -0x1.8301bap-4f, -0x1.9c9112p-2f, 0x1.6da784p+0f,
+    0x1.666666p-57f, -0x1.80c6dap-4f, -0x1.9cd81ep-2f, 0x1.6ce134p+0f,
     /* node 1257 x */
-    0x1.233334p-55f, 0x1.bcb152p-1f, 0x1.e7fb4p-7f, -0x1.3bb6c8p-1f,
+    0x1.c9999ap-55f, 0x1.bbd22p-1f, 0x1.f0d93ep-7f, -0x1.3b6416p-1f,
     /* node 1257 y */
-    -0x1.39999ap-57f, -0x1.786f3ep-2f, 0x1.d7dd2p-2f, 0x1.9c2a26p-5f,
+    -0x1.e9999ap-58f, -0x1.783a5ep-2f, 0x1.d827c4p-2f, 0x1.9421cep-5f,
     /* node 1257 z */
-    0x1.333334p-57f, -0x1.eed0c8p-4f, -0x1.a7ecd2p-2f, 0x1.9ba9b2p+0f,
+    -0x1.99999ap-59f, -0x1.ecf2fap-4f, -0x1.a824f6p-2f, 0x1.9adep+0f,
     /* node 1258 x */
-    -0x1.0cccccp-57f, 0x1.c0a886p-1f, -0x1.2f4ba6p-7f, -0x1.2a1d76p-1f,
+    0x1.bp-55f, 0x1.bfc6c8p-1f, -0x1.226b94p-7f, -0x1.29bd96p-1f,
     /* node 1258 y */
-    0x1.de6666p-57f, -0x1.8e8382p-2f, 0x1.f74d1p-2f, 0x1.6d7bep-6f,
+    0x1.cp-59f, -0x1.8e2c5cp-2f, 0x1.f777bcp-2f, 0x1.5dc036p-6f,
     /* node 1258 z */
-    -0x1.ccccccp-57f, -0x1.edf348p-4f, -0x1.ae523p-2f, 0x1.9a214ep+0f,
+    -0x1.99999ap-57f, -0x1.ea358cp-4f, -0x1.aef39ep-2f, 0x1.9966ccp+0f,
     /* node 1259 x */
-    -0x1.533334p-56f, 0x1.d9f756p-1f, 0x1.5eab92p-7f, -0x1.49961cp-1f,
+    0x1.b9999ap-56f, 0x1.d9c098p-1f, 0x1.5b4212p-7f, -0x1.493a5p-1f,
     /* node 1259 y */
-    0x1.2p-59f, -0x1.898af4p-2f, 0x1.e396dap-2f, 0x1.eea53p-5f,
+    -0x1.d8p-57f, -0x1.88fb22p-2f, 0x1.e3d8f4p-2f, 0x1.e753eap-5f,
     /* node 1259 z */
-    -0x1.ccccccp-57f, -0x1.2017b6p-3f, -0x1.b66ce8p-2f, 0x1.b45216p+0f,
+    0x1.99999ap-57f, -0x1.1e2636p-3f, -0x1.b6eeccp-2f, 0x1.b398ecp+0f,
     /* node 1260 x */
-    0x1.566666p-55f, 0x1.f438d2p-1f, 0x1.bb80d4p-6f, -0x1.645904p-1f,
+    -0x1.acccccp-56f, 0x1.f3d722p-1f, 0x1.b80be4p-6f, -0x1.63bc4ep-1f,
     /* node 1260 y */
-    -0x1.65999ap-56f, -0x1.766c6cp-2f, 0x1.d31b1ap-2f, 0x1.4a938ap-4f,
+    -0x1.633334p-57f, -0x1.77ecf8p-2f, 0x1.d3ea3ap-2f, 0x1.4605f2p-4f,
     /* node 1260 z */
-    0x1.99999ap-60f, -0x1.43316ep-3f, -0x1.c51652p-2f, 0x1.d584cp+0f,
+    -0x1.666666p-57f, -0x1.403a1cp-3f, -0x1.c5eaf4p-2f, 0x1.d4c4c4p+0f,
     /* node 1261 x */
-    0x1.4cccccp-56f, 0x1.f39864p-1f, 0x1.85d23cp-5f, -0x1.71a3b2p-1f,
+    0x1.8cccccp-56f, 0x1.f23ccap-1f, 0x1.8954cap-5f, -0x1.714b84p-1f,
     /* node 1261 y */
-    -0x1.433334p-58f, -0x1.5718e6p-2f, 0x1.ba12ap-2f, 0x1.62d434p-4f,
+    0x1.f66666p-58f, -0x1.58a0ccp-2f, 0x1.baf66ep-2f, 0x1.5dada2p-4f,
     /* node 1261 z */
-    -0x1.666666p-57f, -0x1.44882ap-3f, -0x1.c932acp-2f, 0x1.e110a6p+0f,
+    0x1p-57f, -0x1.4429aep-3f, -0x1.c9a17cp-2f, 0x1.e0511ap+0f,
     /* node 1262 x */
-    0x1.e66666p-57f, 0x1.102606p+0f, 0x1.52c4d2p-6f, -0x1.77bd7cp-1f,
+    0x1.3p-55f, 0x1.0fd9d4p+0f, 0x1.51e7d2p-6f, -0x1.771244p-1f,
     /* node 1262 y */
-    -0x1.bp-57f, -0x1.81bcf8p-2f, 0x1.e3ab4p-2f, 0x1.3d81b6p-4f,
+    -0x1.99999ap-61f, -0x1.820ad2p-2f, 0x1.e40d78p-2f, 0x1.38c8aap-4f,
     /* node 1262 z */
-    -0x1p-57f, -0x1.92f414p-3f, -0x1.dad23ap-2f, 0x1.ff5054p+0f,
+    0x1p-57f, -0x1.91ed48p-3f, -0x1.db3a88p-2f, 0x1.fe6a94p+0f,
     /* node 1509 x */
-    -0x1p-59f, 0x1.c1bc0cp-1f, 0x1.8293bap-3f, -0x1.3331a2p-1f,
+    -0x1.d9999ap-56f, 0x1.c0ef16p-1f, 0x1.83178ep-3f, -0x1.32f40ap-1f,
     /* node 1509 y */
-    -0x1.19999ap-56f, -0x1.14e8fap-5f, 0x1.263df6p-1f, -0x1.21f186p+0f,
+    -0x1.99999ap-59f, -0x1.14b86ep-5f, 0x1.26472cp-1f, -0x1.21ce68p+0f,
     /* node 1509 z */
-    -0x1.333334p-55f, -0x1.1e75bp-3f, -0x1.39c338p-1f, 0x1.717a06p+1f,
+    0x1.99999ap-57f, -0x1.1bb5d8p-3f, -0x1.3a0dd4p-1f, 0x1.70f68cp+1f,
     /* node 1511 x */
-    0x1.8p-58f, 0x1.cc1cp-1f, 0x1.7ff0e6p-3f, -0x1.33316cp-1f,
+    0x1.99999ap-57f, 0x1.cb116p-1f, 0x1.80d084p-3f, -0x1.330d04p-1f,
     /* node 1511 y */
-    -0x1.4cccccp-56f, -0x1.2a0e4ap-6f, 0x1.33e9eep-1f, -0x1.317e5ep+0f,
+    0x1.8p-57f, -0x1.31279ep-6f, 0x1.340d14p-1f, -0x1.316398p+0f,
     /* node 1511 z */
-    -0x1.666666p-57f, -0x1.5ed232p-3f, -0x1.3d55a4p-1f, 0x1.7d4df2p+1f,
+    -0x1.19999ap-55f, -0x1.5d6246p-3f, -0x1.3d82e8p-1f, 0x1.7cbaa8p+1f,
     /* node 1512 x */
-    0x1.5p-55f, 0x1.d50382p-1f, 0x1.8a2258p-3f, -0x1.442798p-1f,
+    0x1.4p-57f, 0x1.d4ad6p-1f, 0x1.89b14ep-3f, -0x1.44030cp-1f,
     /* node 1512 y */
-    -0x1.266666p-56f, -0x1.22200ep-5f, 0x1.252a94p-1f, -0x1.0fa972p+0f,
+    0x1p-56f, -0x1.284e9ep-5f, 0x1.2558eap-1f, -0x1.0f9edp+0f,
     /* node 1512 z */
-    -0x1.99999ap-57f, -0x1.409736p-3f, -0x1.3ab242p-1f, 0x1.767292p+1f,
+    -0x1.19999ap-56f, -0x1.3e83c8p-3f, -0x1.3afbfap-1f, 0x1.75e678p+1f,
     /* node 1524 x */
-    0x1.b33334p-57f, 0x1.eda52cp-1f, 0x1.8e6508p-3f, -0x1.67d0fp-1f,
+    0x1.c66666p-56f, 0x1.ecfc5p-1f, 0x1.8e52b8p-3f, -0x1.67bd6ep-1f,
     /* node 1524 y */
-    -0x0p+0f, -0x1.2aaf5p-4f, 0x1.10079ep-1f, -0x1.a1fa8ep-1f,
+    0x1.99999ap-61f, -0x1.2d3ddap-4f, 0x1.102f18p-1f, -0x1.a21712p-1f,
     /* node 1524 z */
-    -0x1.333334p-57f, -0x1.4f56eep-3f, -0x1.3258f4p-1f, 0x1.6abf26p+1f,
+    -0x1.666666p-56f, -0x1.4d2dfep-3f, -0x1.32a0dap-1f, 0x1.6a33aep+1f,
     /* node 1525 x */
-    -0x1p-55f, 0x1.06204cp+0f, 0x1.76ef5cp-3f, -0x1.77bfccp-1f,
+    -0x1.59999ap-57f, 0x1.05bbd2p+0f, 0x1.770e94p-3f, -0x1.777076p-1f,
     /* node 1525 y */
-    0x1.0cccccp-57f, -0x1.ac09b6p-4f, 0x1.09501ep-1f, -0x1.5607ap-1f,
+    0x1.666666p-59f, -0x1.aed904p-4f, 0x1.096a88p-1f, -0x1.56328ap-1f,
     /* node 1525 z */
-    -0x1p-56f, -0x1.79e9bp-3f, -0x1.2cb9bcp-1f, 0x1.64c2b6p+1f,
+    -0x1.4p-55f, -0x1.780e26p-3f, -0x1.2cf67p-1f, 0x1.64411p+1f,
     /* node 1526 x */
-    0x1.4cccccp-57f, 0x1.ce14a2p-1f, 0x1.8a1f28p-3f, -0x1.41ed2p-1f,
+    0x1.433334p-55f, 0x1.cdad1ep-1f, 0x1.89c2p-3f, -0x1.41cb08p-1f,
     /* node 1526 y */
-    0x1.99999ap-61f, -0x1.8c2338p-5f, 0x1.1c7918p-1f, -0x1.065e8ap+0f,
+    -0x1.4cccccp-57f, -0x1.8b5bbap-5f, 0x1.1c8046p-1f, -0x1.064228p+0f,
     /* node 1526 z */
-    0x1.333334p-58f, -0x1.12e082p-3f, -0x1.3836a2p-1f, 0x1.6e3098p+1f,
+    -0x1.ccccccp-57f, -0x1.10a66p-3f, -0x1.387e4p-1f, 0x1.6da9a2p+1f,
     /* node 1527 x */
-    0x1.a9999ap-55f, 0x1.d39818p-1f, 0x1.9095b8p-3f, -0x1.5363e2p-1f,
+    -0x1.a66666p-57f, 0x1.d35c42p-1f, 0x1.90299ap-3f, -0x1.531a66p-1f,
     /* node 1527 y */
-    -0x1.666666p-58f, -0x1.e31598p-5f, 0x1.11ea8ep-1f, -0x1.d7d7dcp-1f,
+    0x1.99999ap-59f, -0x1.e65634p-5f, 0x1.120b66p-1f, -0x1.d7b5bp-1f,
     /* node 1527 z */
-    -0x1.0cccccp-55f, -0x1.134e22p-3f, -0x1.34fb38p-1f, 0x1.68edf2p+1f,
+    -0x1.99999ap-57f, -0x1.11050ep-3f, -0x1.354346p-1f, 0x1.686868p+1f,
     /* node 1528 x */
-    0x1.99999ap-60f, 0x1.dd6934p-1f, 0x1.9311bp-3f, -0x1.5bacb6p-1f,
+    0x1.2p-55f, 0x1.dd1c9cp-1f, 0x1.92c414p-3f, -0x1.5b517ap-1f,
     /* node 1528 y */
-    -0x1.333334p-58f, -0x1.e3c108p-5f, 0x1.14321ap-1f, -0x1.cb915cp-1f,
+    -0x1.b33334p-56f, -0x1.ea5b6cp-5f, 0x1.14598p-1f, -0x1.cba8fep-1f,
     /* node 1528 z */
-    -0x1.666666p-57f, -0x1.361212p-3f, -0x1.3558e4p-1f, 0x1.6cac76p+1f,
+    0x1p-56f, -0x1.338704p-3f, -0x1.35a74ep-1f, 0x1.6c2138p+1f,
     /* node 1529 x */
-    0x1.8p-55f, 0x1.dfa7bcp-1f, 0x1.8f57bcp-3f, -0x1.52db22p-1f,
+    -0x1.133334p-55f, 0x1.df22aep-1f, 0x1.8f702ep-3f, -0x1.527dbep-1f,
     /* node 1529 y */
-    -0x1.4p-56f, -0x1.a3f2aep-5f, 0x1.1ba254p-1f, -0x1.ea21f8p-1f,
+    0x1.333334p-58f, -0x1.a7b118p-5f, 0x1.1bc55p-1f, -0x1.ea219ap-1f,
     /* node 1529 z */
-    -0x1.59999ap-55f, -0x1.38644ap-3f, -0x1.37d5acp-1f, 0x1.720e6p+1f,
+    -0x1.333334p-58f, -0x1.35ebd6p-3f, -0x1.381e18p-1f, 0x1.7182e4p+1f,
     /* node 1530 x */
-    0x1.8cccccp-56f, 0x1.f5c384p-1f, 0x1.89a648p-3f, -0x1.612d8p-1f,
+    0x1.99999ap-57f, 0x1.f57332p-1f, 0x1.893896p-3f, -0x1.610e22p-1f,
     /* node 1530 y */
-    -0x1.99999ap-61f, -0x1.e7d3eap-5f, 0x1.1c0764p-1f, -0x1.c8e7c6p-1f,
+    -0x1.666666p-57f, -0x1.edb898p-5f, 0x1.1c3c0cp-1f, -0x1.c8f5e2p-1f,
     /* node 1530 z */
-    0x1.666666p-57f, -0x1.6b5eacp-3f, -0x1.36915ap-1f, 0x1.74fe62p+1f,
+    -0x1p-54f, -0x1.68d4ecp-3f, -0x1.36e95cp-1f, 0x1.747a08p+1f,
     /* node 1531 x */
-    0x1.acccccp-56f, 0x1.ffe4a8p-1f, 0x1.89254ep-3f, -0x1.6b7c56p-1f,
+    0x1.8p-58f, 0x1.ff795ap-1f, 0x1.88c6f6p-3f, -0x1.6b80dep-1f,
     /* node 1531 y */
-    0x1.333334p-56f, -0x1.2ec38p-4f, 0x1.188898p-1f, -0x1.a1d416p-1f,
+    -0x1.ccccccp-57f, -0x1.318488p-4f, 0x1.18b398p-1f, -0x1.a1e58p-1f,
     /* node 1531 z */
-    -0x1.8p-56f, -0x1.7f5266p-3f, -0x1.34072cp-1f, 0x1.727426p+1f,
+    -0x1.99999ap-57f, -0x1.7da32ap-3f, -0x1.345106p-1f, 0x1.71f084p+1f,
     /* node 1541 x */
-    0x1.2p-56f, 0x1.025648p+0f, 0x1.733b68p-3f, -0x1.80bafap-1f,
+    0x1.ccccccp-59f, 0x1.020bacp+0f, 0x1.72d51cp-3f, -0x1.8081fap-1f,
     /* node 1541 y */
-    -0x1.333334p-57f, -0x1.028854p-3f, 0x1.f70cd8p-2f, -0x1.1eda9ep-1f,
+    -0x1.8p-57f, -0x1.0340d2p-3f, 0x1.f745d6p-2f, -0x1.1f037p-1f,
     /* node 1541 z */
-    -0x1.666666p-57f, -0x1.604d88p-3f, -0x1.263662p-1f, 0x1.5843ap+1f,
+    -0x1.19999ap-56f, -0x1.5dffap-3f, -0x1.267e68p-1f, 0x1.57bcc4p+1f,
     /* node 1542 x */
-    0x1.cp-56f, 0x1.0adeb2p+0f, 0x1.74c8bcp-3f, -0x1.8914e6p-1f,
+    0x1.533334p-55f, 0x1.0a974ap+0f, 0x1.744896p-3f, -0x1.88c56p-1f,
     /* node 1542 y */
-    0x1.99999ap-59f, -0x1.f2e5f8p-4f, 0x1.03b542p-1f, -0x1.1cafa4p-1f,
+    0x1p-59f, -0x1.f6244p-4f, 0x1.03d41cp-1f, -0x1.1d0546p-1f,
     /* node 1542 z */
-    -0x1.19999ap-56f, -0x1.944edep-3f, -0x1.27fbe6p-1f, 0x1.5f5cfap+1f,
+    0x1.99999ap-57f, -0x1.91e832p-3f, -0x1.28458cp-1f, 0x1.5ed94ep+1f,
     /* node 1543 x */
-    -0x1.e66666p-56f, 0x1.1b694ap+0f, 0x1.4aad16p-3f, -0x1.93497ap-1f,
+    0x1.99999ap-55f, 0x1.1ae89ap+0f, 0x1.4b11a8p-3f, -0x1.930a94p-1f,
     /* node 1543 y */
-    -0x1.b9999ap-56f, -0x1.41d138p-3f, 0x1.03fb5ep-1f, -0x1.bb4b18p-2f,
+    -0x1.ccccccp-59f, -0x1.405afep-3f, 0x1.03faeep-1f, -0x1.bba618p-2f,
     /* node 1543 z */
-    -0x1.333334p-58f, -0x1.d56566p-3f, -0x1.22f64cp-1f, 0x1.5ad49ap+1f,
+    0x1.ccccccp-57f, -0x1.d38a4ep-3f, -0x1.2347eap-1f, 0x1.5a3e7cp+1f,
     /* node 1544 x */
-    0x1.29999ap-55f, 0x1.134176p+0f, 0x1.6dbc5cp-3f, -0x1.7c89c8p-1f,
+    0x1.39999ap-55f, 0x1.12ac66p+0f, 0x1.6db78cp-3f, -0x1.7c6db2p-1f,
     /* node 1544 y */
-    -0x1.99999ap-62f, -0x1.88e7b6p-4f, 0x1.16f596p-1f, -0x1.5c381ap-1f,
+    -0x1.ccccccp-58f, -0x1.8a03bep-4f, 0x1.16fe88p-1f, -0x1.5c7abap-1f,
     /* node 1544 z */
-    -0x1.99999ap-58f, -0x1.abb9bp-3f, -0x1.2fccaap-1f, 0x1.70fa42p+1f,
+    -0x1.19999ap-56f, -0x1.a95d92p-3f, -0x1.3013e4p-1f, 0x1.706adep+1f,
     /* node 1545 x */
-    0x1.666666p-58f, 0x1.09e398p+0f, 0x1.8141a8p-3f, -0x1.6fd014p-1f,
+    0x1.4p-57f, 0x1.097faep+0f, 0x1.818f04p-3f, -0x1.6f8d7ep-1f,
     /* node 1545 y */
-    -0x1.333334p-58f, -0x1.212718p-4f, 0x1.21bc98p-1f, -0x1.a000a6p-1f,
+    -0x1.333334p-56f, -0x1.211be4p-4f, 0x1.21ce5cp-1f, -0x1.9ffc84p-1f,
     /* node 1545 z */
-    -0x1.4cccccp-56f, -0x1.af248cp-3f, -0x1.3470a2p-1f, 0x1.793e3p+1f,
+    -0x1.e66666p-56f, -0x1.ad5cfcp-3f, -0x1.34a488p-1f, 0x1.78a4c8p+1f,
     /* node 1546 x */
-    0x1.ep-55f, 0x1.278cfep+0f, 0x1.548a9cp-3f, -0x1.89fa8ap-1f,
+    -0x1.333334p-56f, 0x1.271382p+0f, 0x1.546b34p-3f, -0x1.89b218p-1f,
     /* node 1546 y */
-    0x1.666666p-57f, -0x1.e2111p-4f, 0x1.1caf4cp-1f, -0x1.23c956p-1f,
+    0x1.333334p-60f, -0x1.e196cep-4f, 0x1.1cb85cp-1f, -0x1.23de7ap-1f,
     /* node 1546 z */
-    -0x1.99999ap-56f, -0x1.07d06p-2f, -0x1.2a9232p-1f, 0x1.6fe386p+1f,
+    0x1.333334p-58f, -0x1.066d8ap-2f, -0x1.2af078p-1f, 0x1.6f552cp+1f,
     /* node 1549 x */
-    0x1p-55f, 0x1.1968bap+0f, 0x1.099c8cp-3f, -0x1.9f5456p-1f,
+    0x1.266666p-56f, 0x1.18ef5ap+0f, 0x1.0a2f36p-3f, -0x1.9ef0dep-1f,
     /* node 1549 y */
-    -0x1.ecccccp-57f, -0x1.e4674p-3f, 0x1.d4222cp-2f, -0x1.5e2962p-3f,
+    0x1.a66666p-58f, -0x1.e42586p-3f, 0x1.d448dap-2f, -0x1.5f897cp-3f,
     /* node 1549 z */
-    -0x1.99999ap-56f, -0x1.a09346p-3f, -0x1.1199f6p-1f, 0x1.3971bep+1f,
+    0x1p-56f, -0x1.9f05ccp-3f, -0x1.11d14ep-1f, 0x1.38f32ep+1f,
     /* node 1550 x */
-    0x1.333334p-54f, 0x1.16f26ep+0f, 0x1.32c09p-3f, -0x1.9b6e96p-1f,
+    0x1.4p-55f, 0x1.16903ap+0f, 0x1.326cb8p-3f, -0x1.9afd76p-1f,
     /* node 1550 y */
-    -0x1.733334p-56f, -0x1.8d658ap-3f, 0x1.e1ba3cp-2f, -0x1.1ffce4p-2f,
+    -0x1.533334p-56f, -0x1.8ef71p-3f, 0x1.e1e3cp-2f, -0x1.20dc7ap-2f,
     /* node 1550 z */
-    0x1p-56f, -0x1.9ada8p-3f, -0x1.195126p-1f, 0x1.46882cp+1f,
+    0x1p-57f, -0x1.996d3ep-3f, -0x1.199862p-1f, 0x1.46032ap+1f,
     /* node 1551 x */
-    0x1.0cccccp-56f, 0x1.21af26p+0f, 0x1.1efceap-3f, -0x1.9e1802p-1f,
+    -0x1.b9999ap-55f, 0x1.21302cp+0f, 0x1.1ed29ap-3f, -0x1.9dc6d4p-1f,
     /* node 1551 y */
-    0x1.e66666p-58f, -0x1.a16accp-3f, 0x1.f5e0ccp-2f, -0x1.22cf42p-2f,
+    -0x1.8p-59f, -0x1.a12074p-3f, 0x1.f5c7c4p-2f, -0x1.23780cp-2f,
     /* node 1551 z */
-    -0x0p+0f, -0x1.cf9ae2p-3f, -0x1.1b85dep-1f, 0x1.4cd7dp+1f,
+    -0x1.4cccccp-56f, -0x1.ce5f92p-3f, -0x1.1bc364p-1f, 0x1.4c49fap+1f,
     /* node 1552 x */
-    0x1.666666p-56f, 0x1.658864p+0f, 0x1.558f74p-5f, -0x1.aea3ep-1f,
+    -0x1.4p-56f, 0x1.64fd76p+0f, 0x1.5573b2p-5f, -0x1.ae432ep-1f,
     /* node 1552 y */
-    0x1p-60f, -0x1.52bac2p-2f, 0x1.27ccecp-1f, -0x1.be3af6p-4f,
+    -0x1.f66666p-57f, -0x1.526cf6p-2f, 0x1.27ba2ap-1f, -0x1.c17554p-4f,
     /* node 1552 z */
-    0x1p-57f, -0x1.79616ap-2f, -0x1.0d80bap-1f, 0x1.51e72cp+1f,
+    0x1.666666p-57f, -0x1.784774p-2f, -0x1.0d990cp-1f, 0x1.515e18p+1f,
     /* node 1553 x */
-    0x1.b33334p-56f, 0x1.2ac992p+0f, 0x1.3c615ep-3f, -0x1.9435d2p-1f,
+    0x1.a66666p-56f, 0x1.2a941ep+0f, 0x1.3c79ccp-3f, -0x1.93d48ep-1f,
     /* node 1553 y */
-    -0x1.e66666p-58f, -0x1.461852p-3f, 0x1.13baaep-1f, -0x1.d06b66p-2f,
+    -0x1.666666p-58f, -0x1.467012p-3f, 0x1.13f59cp-1f, -0x1.d10076p-2f,
     /* node 1553 z */
-    -0x0p+0f, -0x1.0cb526p-2f, -0x1.25194ep-1f, 0x1.65474cp+1f,
+    -0x1.99999ap-59f, -0x1.0b43f4p-2f, -0x1.2565d4p-1f, 0x1.64c3cap+1f,
     /* node 1554 x */
-    -0x1.99999ap-59f, 0x1.9c6c8ap+0f, 0x1.b35d28p-7f, -0x1.af049ep-1f,
+    0x1.8cccccp-55f, 0x1.9c10cap+0f, 0x1.b291bep-7f, -0x1.ae781ep-1f,
     /* node 1554 y */
-    -0x1.54ccccp-56f, -0x1.39cd54p-2f, 0x1.5fd95ep-1f, -0x1.7a29dep-3f,
+    -0x1.b33334p-60f, -0x1.39e3ep-2f, 0x1.5fcf42p-1f, -0x1.7be87ep-3f,
     /* node 1554 z */
-    -0x1.b33334p-55f, -0x1.dac7dcp-2f, -0x1.0cdaf6p-1f, 0x1.71c3fp+1f,
+    -0x1.066666p-54f, -0x1.da0714p-2f, -0x1.0cf558p-1f, 0x1.71468cp+1f,
     /* node 1565 x */
-    0x1.09999ap-54f, 0x1.37efaep+0f, 0x1.0ef112p-4f, -0x1.abe498p-1f,
+    0x1.8cccccp-56f, 0x1.378646p+0f, 0x1.0edde6p-4f, -0x1.ab4f4cp-1f,
     /* node 1565 y */
-    -0x1.ff3334p-57f, -0x1.5925aap-2f, 0x1.04be08p-1f, -0x1.309f42p-5f,
+    -0x1.6cccccp-57f, -0x1.593688p-2f, 0x1.04e56ap-1f, -0x1.376a2cp-5f,
     /* node 1565 z */
-    -0x1.99999ap-59f, -0x1.2c4422p-2f, -0x1.06b306p-1f, 0x1.360874p+1f,
+    -0x1.666666p-56f, -0x1.2b84bep-2f, -0x1.06e68ep-1f, 0x1.35829p+1f,
     /* node 1566 x */
-    0x1.2p-54f, 0x1.174046p+0f, 0x1.da6f34p-4f, -0x1.a0e844p-1f,
+    -0x1.99999ap-57f, 0x1.16923cp+0f, 0x1.dc20b2p-4f, -0x1.a0bc0ep-1f,
     /* node 1566 y */
-    0x1.ccccccp-61f, -0x1.0f4ea2p-2f, 0x1.c8c684p-2f, -0x1.8e0bap-4f,
+    -0x1.f33334p-58f, -0x1.0e1d86p-2f, 0x1.c8696cp-2f, -0x1.8fadacp-4f,
     /* node 1566 z */
-    0x1.99999ap-57f, -0x1.9cea7cp-3f, -0x1.09159cp-1f, 0x1.2d3bbap+1f,
+    -0x0p+0f, -0x1.9b7ef6p-3f, -0x1.092ad2p-1f, 0x1.2cc3dap+1f,
     /* node 1572 x */
-    -0x1.4cccccp-56f, 0x1.8aaccep-1f, -0x1.8325dap-5f, -0x1.c0c3e2p-2f,
+    -0x1.266666p-56f, 0x1.89d21ap-1f, -0x1.81851ep-5f, -0x1.c00218p-2f,
     /* node 1572 y */
-    -0x1.b9999ap-57f, -0x1.91395cp-2f, 0x1.1c72fcp-1f, -0x1.e642a8p-4f,
+    -0x1.29999ap-57f, -0x1.9101cap-2f, 0x1.1c86fp-1f, -0x1.e9a622p-4f,
     /* node 1572 z */
-    -0x1p-58f, -0x1.85b44cp-4f, -0x1.a30e12p-2f, 0x1.68539ap+0f,
+    -0x1.333334p-57f, -0x1.81fff2p-4f, -0x1.a3c09ap-2f, 0x1.6788a6p+0f,
     /* node 1573 x */
-    0x1.8p-56f, 0x1.4ec118p-1f, -0x1.e5a6b6p-5f, -0x1.31ce7ep-2f,
+    0x1p-59f, 0x1.4e1eep-1f, -0x1.e654e2p-5f, -0x1.311e04p-2f,
     /* node 1573 y */
-    0x1.466666p-57f, -0x1.61ca64p-2f, 0x1.2b4f8cp-1f, -0x1.2cd7acp-2f,
+    -0x1.89999ap-56f, -0x1.61da22p-2f, 0x1.2b82bep-1f, -0x1.2d4182p-2f,
     /* node 1573 z */
-    0x1.19999ap-57f, -0x1.2aafap-4f, -0x1.8c8c4ep-2f, 0x1.33a7bap+0f,
+    0x1.8p-57f, -0x1.287e28p-4f, -0x1.8ce81ap-2f, 0x1.32de6p+0f,
     /* node 1574 x */
-    0x1.99999ap-60f, 0x1.b6c124p-1f, -0x1.09aaa4p-5f, -0x1.0f36e2p-1f,
+    0x1.033334p-55f, 0x1.b60264p-1f, -0x1.088f42p-5f, -0x1.0ee924p-1f,
     /* node 1574 y */
-    0x1.406666p-57f, -0x1.a468b4p-2f, 0x1.0e5852p-1f, -0x1.6f0ceep-6f,
+    0x1.28p-58f, -0x1.a43ebcp-2f, 0x1.0e7d66p-1f, -0x1.7b2174p-6f,
     /* node 1574 z */
-    -0x1.19999ap-55f, -0x1.eec85ap-4f, -0x1.acfdb2p-2f, 0x1.8c6afep+0f,
+    -0x1p-57f, -0x1.ecc224p-4f, -0x1.ad44aep-2f, 0x1.8b914ap+0f,
     /* node 1575 x */
-    0x1.666666p-59f, 0x1.00f23p+0f, -0x1.af98e4p-8f, -0x1.533684p-1f,
+    -0x1.666666p-59f, 0x1.00c398p+0f, -0x1.cb2c94p-8f, -0x1.525b7cp-1f,
     /* node 1575 y */
-    -0x1.f66666p-58f, -0x1.9fd07ep-2f, 0x1.f871a8p-2f, 0x1.10486p-4f,
+    -0x1.7e6666p-56f, -0x1.a0394cp-2f, 0x1.f8d27cp-2f, 0x1.0d2144p-4f,
     /* node 1575 z */
-    0x1.ccccccp-57f, -0x1.56e8ecp-3f, -0x1.c5c6e6p-2f, 0x1.d13732p+0f,
+    -0x1.333334p-58f, -0x1.5548f2p-3f, -0x1.c657d8p-2f, 0x1.d06066p+0f,
     /* node 1576 x */
-    -0x1.466666p-56f, 0x1.07c7eep+0f, 0x1.8f4ee4p-7f, -0x1.6962bap-1f,
+    -0x1.99999ap-59f, 0x1.076634p+0f, 0x1.90acfcp-7f, -0x1.690026p-1f,
     /* node 1576 y */
-    -0x1.0b999ap-55f, -0x1.940eaap-2f, 0x1.ee7f6ep-2f, 0x1.4781b8p-4f,
+    -0x1.18p-57f, -0x1.944c6p-2f, 0x1.eeca06p-2f, 0x1.44202p-4f,
     /* node 1576 z */
-    0x1.99999ap-58f, -0x1.7bd918p-3f, -0x1.d03df8p-2f, 0x1.e87f1p+0f,
+    -0x1.99999ap-58f, -0x1.79164ap-3f, -0x1.d0b0ep-2f, 0x1.e7865cp+0f,
     /* node 1577 x */
-    0x1.866666p-56f, 0x1.e1fc2ep-1f, -0x1.610caap-9f, -0x1.47d6e4p-1f,
+    0x1.19999ap-56f, 0x1.e154cep-1f, -0x1.5c038ep-9f, -0x1.473ee4p-1f,
     /* node 1577 y */
-    -0x1.7p-57f, -0x1.9f199cp-2f, 0x1.ffa646p-2f, 0x1.d9da2p-5f,
+    -0x1.0b3334p-57f, -0x1.9ee106p-2f, 0x1.ffe8d2p-2f, 0x1.d3badp-5f,
     /* node 1577 z */
-    -0x1.8p-56f, -0x1.4580fep-3f, -0x1.ba5326p-2f, 0x1.bc560cp+0f,
+    -0x1.333334p-57f, -0x1.442192p-3f, -0x1.bac14cp-2f, 0x1.bb8f1ep+0f,
     /* node 1578 x */
-    0x1.866666p-56f, 0x1.03b692p+0f, -0x1.463dc2p-6f, -0x1.535b4ap-1f,
+    -0x1.366666p-55f, 0x1.0361ccp+0f, -0x1.46abc8p-6f, -0x1.52d5d2p-1f,
     /* node 1578 y */
-    -0x1.ccccccp-57f, -0x1.b4e0d2p-2f, 0x1.08098ep-1f, 0x1.3b2978p-4f,
+    -0x1.acccccp-57f, -0x1.b455fep-2f, 0x1.082226p-1f, 0x1.36a042p-4f,
     /* node 1578 z */
-    0x1.99999ap-59f, -0x1.78e46p-3f, -0x1.c6d4f8p-2f, 0x1.d5a1fcp+0f,
+    0x1.99999ap-58f, -0x1.7754a2p-3f, -0x1.c752e8p-2f, 0x1.d4ce12p+0f,
     /* node 1579 x */
-    0x1.fp-55f, 0x1.ea098ap-1f, -0x1.0aa6dp-5f, -0x1.35508p-1f,
+    0x1.d33334p-56f, 0x1.e97c9ap-1f, -0x1.09ef84p-5f, -0x1.34cd04p-1f,
     /* node 1579 y */
-    -0x1.473334p-57f, -0x1.bfcc7p-2f, 0x1.0fd536p-1f, 0x1.552366p-5f,
+    -0x1.f66666p-59f, -0x1.bf8664p-2f, 0x1.0ff81p-1f, 0x1.4dc694p-5f,
     /* node 1579 z */
-    -0x1.666666p-57f, -0x1.4425b6p-3f, -0x1.bdc39cp-2f, 0x1.b65d2ap+0f,
+    0x1.333334p-58f, -0x1.42a1a8p-3f, -0x1.be3c78p-2f, 0x1.b5a10cp+0f,
     /* node 1580 x */
-    0x1.59999ap-57f, 0x1.260464p+0f, -0x1.b859fcp-7f, -0x1.7d2e1ep-1f,
+    0x1.dcccccp-55f, 0x1.25b392p+0f, -0x1.b7e97cp-7f, -0x1.7ccc22p-1f,
     /* node 1580 y */
-    -0x1.90ccccp-56f, -0x1.bc597p-2f, 0x1.0d9582p-1f, 0x1.61ea96p-4f,
+    -0x1.e4ccccp-57f, -0x1.bc1d7ap-2f, 0x1.0da72ep-1f, 0x1.5e926p-4f,
     /* node 1580 z */
-    -0x1.666666p-57f, -0x1.fdae1ep-3f, -0x1.dfdafap-2f, 0x1.0a17acp+1f,
+    -0x1.99999ap-58f, -0x1.fc34d6p-3f, -0x1.e05238p-2f, 0x1.09aa3cp+1f,
     /* node 1581 x */
-    0x1.2cccccp-55f, 0x1.2d00b2p+0f, 0x1.bc6a66p-6f, -0x1.97f6fcp-1f,
+    0x1.99999ap-60f, 0x1.2c841ap+0f, 0x1.bcc51cp-6f, -0x1.97885p-1f,
     /* node 1581 y */
-    -0x1.533334p-59f, -0x1.92b428p-2f, 0x1.06a8ep-1f, 0x1.941044p-5f,
+    -0x1.74ccccp-57f, -0x1.92bbaap-2f, 0x1.06c23cp-1f, 0x1.8a4038p-5f,
     /* node 1581 z */
-    0x1.ccccccp-57f, -0x1.1891cep-2f, -0x1.efd4b2p-2f, 0x1.1dd116p+1f,
+    0x1.99999ap-59f, -0x1.17a518p-2f, -0x1.efe9d2p-2f, 0x1.1d47aap+1f,
     /* node 1582 x */
-    -0x1.a66666p-56f, 0x1.164cfep+0f, -0x1.36946ep-5f, -0x1.5f5fccp-1f,
+    0x1.8p-55f, 0x1.15e8bep+0f, -0x1.380d3ap-5f, -0x1.5eeaeap-1f,
     /* node 1582 y */
-    -0x1.333334p-56f, -0x1.d2239p-2f, 0x1.13e4ap-1f, 0x1.75757ap-4f,
+    -0x1.21999ap-56f, -0x1.d24552p-2f, 0x1.140a4ap-1f, 0x1.705b4p-4f,
     /* node 1582 z */
-    -0x1.99999ap-59f, -0x1.c914eap-3f, -0x1.d03ecep-2f, 0x1.efc714p+0f,
+    -0x1.8p-56f, -0x1.c76f04p-3f, -0x1.d0bd6ap-2f, 0x1.eeeacep+0f,
     /* node 1583 x */
-    -0x1.733334p-57f, 0x1.097a72p+0f, -0x1.fed25ep-5f, -0x1.404c5ep-1f,
+    -0x1.0cccccp-57f, 0x1.094fe2p+0f, -0x1.002792p-4f, -0x1.3fc3bap-1f,
     /* node 1583 y */
-    0x1.49999ap-57f, -0x1.eebe3cp-2f, 0x1.22fedp-1f, 0x1.55727ap-4f,
+    -0x1.e66666p-57f, -0x1.eeab6cp-2f, 0x1.232d04p-1f, 0x1.5238dp-4f,
     /* node 1583 z */
-    -0x1.333334p-58f, -0x1.b2fa02p-3f, -0x1.c4f13cp-2f, 0x1.d03d9p+0f,
+    0x1p-56f, -0x1.b13a16p-3f, -0x1.c594f6p-2f, 0x1.cf5b06p+0f,
     /* node 1584 x */
-    0x1.ap-55f, 0x1.3ba8aep+0f, 0x1.3bc6cp-5f, -0x1.a5cbccp-1f,
+    0x1.066666p-54f, 0x1.3b3fd4p+0f, 0x1.3bccf8p-5f, -0x1.a548d6p-1f,
     /* node 1584 y */
-    -0x1.84999ap-56f, -0x1.7e135p-2f, 0x1.08f7ep-1f, 0x1.0b837cp-8f,
+    -0x1.12p-58f, -0x1.7e1af2p-2f, 0x1.0932aap-1f, 0x1.9c8e1ap-9f,
     /* node 1584 z */
-    -0x1.99999ap-60f, -0x1.300b8ep-2f, -0x1.01dd28p-1f, 0x1.2ed736p+1f,
+    0x1.99999ap-57f, -0x1.2f2c86p-2f, -0x1.0213fcp-1f, 0x1.2e57f4p+1f,
     /* node 1585 x */
-    0x1.59999ap-57f, 0x1.b0cafp-1f, -0x1.e0ef14p-5f, -0x1.e69a12p-2f,
+    -0x1.8p-58f, 0x1.b02f34p-1f, -0x1.e26554p-5f, -0x1.e5da72p-2f,
     /* node 1585 y */
-    -0x1.506666p-55f, -0x1.ba0fecp-2f, 0x1.22d12ap-1f, -0x1.b96304p-5f,
+    -0x1.29999ap-57f, -0x1.b9edf8p-2f, 0x1.23173p-1f, -0x1.bf70aep-5f,
     /* node 1585 z */
-    0x1.99999ap-61f, -0x1.1b0d5p-3f, -0x1.a9842p-2f, 0x1.81d988p+0f,
+    -0x1.b33334p-57f, -0x1.18fb12p-3f, -0x1.aa3f32p-2f, 0x1.812018p+0f,
     /* node 1586 x */
-    0x1.8cccccp-56f, 0x1.e5644p-1f, -0x1.be5878p-5f, -0x1.24e0cp-1f,
+    0x1.b33334p-58f, 0x1.e4b866p-1f, -0x1.bc73c6p-5f, -0x1.249dfp-1f,
     /* node 1586 y */
-    0x1.066666p-58f, -0x1.cbdd62p-2f, 0x1.1bb72ap-1f, 0x1.276e5cp-5f,
+    -0x1.113334p-56f, -0x1.cbdd44p-2f, 0x1.1c07e2p-1f, 0x1.20a854p-5f,
     /* node 1586 z */
-    0x1.99999ap-60f, -0x1.568102p-3f, -0x1.ba36c8p-2f, 0x1.aef18p+0f,
+    -0x1.666666p-57f, -0x1.55a7bap-3f, -0x1.baa04ep-2f, 0x1.ae1d18p+0f,
     /* node 1587 x */
-    0x1.acccccp-56f, 0x1.aeb8d2p-1f, -0x1.484798p-4f, -0x1.c4b37ep-2f,
+    -0x1.733334p-57f, 0x1.adef6p-1f, -0x1.4a4a56p-4f, -0x1.c41684p-2f,
     /* node 1587 y */
-    -0x1.2p-56f, -0x1.c9b03cp-2f, 0x1.2e4d1cp-1f, -0x1.d0651p-5f,
+    0x1.05999ap-56f, -0x1.c94e4ap-2f, 0x1.2e792ep-1f, -0x1.d626b8p-5f,
     /* node 1587 z */
-    0x1.0cccccp-56f, -0x1.2bcc74p-3f, -0x1.a4d116p-2f, 0x1.7af836p+0f,
+    -0x1.99999ap-59f, -0x1.2b1676p-3f, -0x1.a56e9ap-2f, 0x1.7a296ap+0f,
     /* node 1588 x */
-    0x1.c66666p-56f, 0x1.d877dap-1f, -0x1.5588aap-4f, -0x1.047fc2p-1f,
+    0x1.b33334p-57f, 0x1.d7b1e8p-1f, -0x1.517f7cp-4f, -0x1.043a32p-1f,
     /* node 1588 y */
-    0x1.51999ap-58f, -0x1.eaaa64p-2f, 0x1.2f5326p-1f, 0x1.114cecp-5f,
+    -0x1.54ccccp-57f, -0x1.ea1cbp-2f, 0x1.2f609ap-1f, 0x1.0bed1p-5f,
     /* node 1588 z */
-    -0x1.19999ap-56f, -0x1.7cc262p-3f, -0x1.aec8ep-2f, 0x1.9e2d9cp+0f,
+    -0x1p-57f, -0x1.7b7a86p-3f, -0x1.af3ffcp-2f, 0x1.9d4fa8p+0f,
     /* node 1806 x */
-    -0x1.19999ap-58f, 0x1.b51b0cp-1f, 0x1.670054p-3f, -0x1.110284p-1f,
+    0x1.8p-57f, 0x1.b3aaa8p-1f, 0x1.68b9dcp-3f, -0x1.10cb56p-1f,
     /* node 1806 y */
-    -0x1.4cccccp-56f, -0x1.6065bp-8f, 0x1.3ccb7cp-1f, -0x1.570b68p+0f,
+    0x1.99999ap-60f, -0x1.32c06p-8f, 0x1.3cb88ep-1f, -0x1.56ccd8p+0f,
     /* node 1806 z */
-    -0x1.333334p-57f, -0x1.3ca77cp-3f, -0x1.3d5a2p-1f, 0x1.78faf8p+1f,
+    -0x1.4cccccp-56f, -0x1.3a661ep-3f, -0x1.3d7faep-1f, 0x1.787526p+1f,
     /* node 1807 x */
-    0x1.e66666p-56f, 0x1.bb061cp-1f, 0x1.5de762p-3f, -0x1.0e2af4p-1f,
+    -0x1.666666p-58f, 0x1.b9a49p-1f, 0x1.5f54ep-3f, -0x1.0e1a18p-1f,
     /* node 1807 y */
-    -0x1.99999ap-60f, 0x1.8d3ca2p-7f, 0x1.49dbe6p-1f, -0x1.67ca8ep+0f,
+    0x1.333334p-58f, 0x1.892116p-7f, 0x1.49f6c8p-1f, -0x1.67953cp+0f,
     /* node 1807 z */
-    0x1.e66666p-56f, -0x1.7ef3f4p-3f, -0x1.3f356cp-1f, 0x1.827be8p+1f,
+    -0x1.0cccccp-55f, -0x1.7ce26p-3f, -0x1.3f69cp-1f, 0x1.81eb84p+1f,
     /* node 1808 x */
-    -0x1.99999ap-57f, 0x1.a8103ep-1f, 0x1.48b9a4p-3f, -0x1.f005b2p-2f,
+    -0x1.266666p-57f, 0x1.a7f8c6p-1f, 0x1.486968p-3f, -0x1.efa28cp-2f,
     /* node 1808 y */
-    0x1.ccccccp-58f, 0x1.60d04p-6f, 0x1.4fc5e2p-1f, -0x1.801b2ap+0f,
+    -0x1.4p-56f, 0x1.549cfap-6f, 0x1.5005fcp-1f, -0x1.7ffe16p+0f,
     /* node 1808 z */
-    -0x1.d9999ap-55f, -0x1.70408cp-3f, -0x1.3dcdp-1f, 0x1.7cfe42p+1f,
+    -0x1.8p-56f, -0x1.6ece8ap-3f, -0x1.3dfd5cp-1f, 0x1.7c6998p+1f,
     /* node 1809 x */
-    -0x1.ccccccp-59f, 0x1.a226f4p-1f, 0x1.10bff8p-3f, -0x1.aa81a2p-2f,
+    0x1.29999ap-55f, 0x1.a16b6ep-1f, 0x1.113f5p-3f, -0x1.aa45eep-2f,
     /* node 1809 y */
-    -0x1.ccccccp-57f, 0x1.582b6cp-4f, 0x1.7016e6p-1f, -0x1.bd4446p+0f,
+    -0x1.99999ap-57f, 0x1.57aa08p-4f, 0x1.704014p-1f, -0x1.bd0386p+0f,
     /* node 1809 z */
-    0x1.99999ap-57f, -0x1.eecf92p-3f, -0x1.3f26cap-1f, 0x1.881b94p+1f,
+    0x1.99999ap-57f, -0x1.ed3a8cp-3f, -0x1.3f6108p-1f, 0x1.87869p+1f,
     /* node 1810 x */
-    0x1.c66666p-56f, 0x1.b04b0ap-1f, 0x1.3643p-3f, -0x1.e65d3cp-2f,
+    0x1.b33334p-56f, 0x1.b01364p-1f, 0x1.3608f6p-3f, -0x1.e647fep-2f,
     /* node 1810 y */
-    -0x1.19999ap-56f, 0x1.993e96p-5f, 0x1.5f0c26p-1f, -0x1.95e0dap+0f,
+    -0x0p+0f, 0x1.964a32p-5f, 0x1.5f3726p-1f, -0x1.95b97ep+0f,
     /* node 1810 z */
-    -0x1.99999ap-57f, -0x1.c056p-3f, -0x1.401c7cp-1f, 0x1.881cf8p+1f,
+    -0x1.666666p-56f, -0x1.be0b1ep-3f, -0x1.406a4ep-1f, 0x1.8783bep+1f,
     /* node 1812 x */
-    0x1.2cccccp-55f, 0x1.bdaa1cp-1f, 0x1.543ccep-3f, -0x1.0aa92p-1f,
+    0x1.c66666p-56f, 0x1.bccbfcp-1f, 0x1.550106p-3f, -0x1.0a5e2ep-1f,
     /* node 1812 y */
-    0x1p-56f, 0x1.29a54ap-5f, 0x1.561162p-1f, -0x1.78fe5ep+0f,
+    -0x0p+0f, 0x1.29bf8cp-5f, 0x1.56288ep-1f, -0x1.78d63ep+0f,
     /* node 1812 z */
-    0x1.666666p-56f, -0x1.c373c4p-3f, -0x1.3fe39p-1f, 0x1.8ab8b4p+1f,
+    -0x1.333334p-57f, -0x1.c0a88ap-3f, -0x1.402098p-1f, 0x1.8a2cep+1f,
     /* node 1813 x */
-    -0x1.99999ap-62f, 0x1.ca9f62p-1f, 0x1.71fee8p-3f, -0x1.27b692p-1f,
+    0x1p-55f, 0x1.c9fa5cp-1f, 0x1.725a88p-3f, -0x1.277e9cp-1f,
     /* node 1813 y */
-    0x1.666666p-57f, -0x1.1d224p-7f, 0x1.3b7522p-1f, -0x1.42ffdp+0f,
+    -0x1.266666p-56f, -0x1.346536p-7f, 0x1.3b9fe8p-1f, -0x1.42e926p+0f,
     /* node 1813 z */
-    -0x1.666666p-56f, -0x1.676074p-3f, -0x1.3ecc1cp-1f, 0x1.7ff424p+1f,
+    -0x1.333334p-58f, -0x1.65e566p-3f, -0x1.3f019cp-1f, 0x1.7f677ap+1f,
     /* node 1814 x */
-    -0x1.19999ap-56f, 0x1.c8f84ep-1f, 0x1.61052ep-3f, -0x1.1940c8p-1f,
+    0x1.cp-56f, 0x1.c7d3bcp-1f, 0x1.624d04p-3f, -0x1.1910f2p-1f,
     /* node 1814 y */
-    0x1.0cccccp-56f, 0x1.e0e0fep-7f, 0x1.4b2b76p-1f, -0x1.6079acp+0f,
+    0x1.ccccccp-57f, 0x1.c5c562p-7f, 0x1.4b6fa4p-1f, -0x1.604db2p+0f,
     /* node 1814 z */
-    -0x1.99999ap-59f, -0x1.a3fcap-3f, -0x1.3f465cp-1f, 0x1.87a642p+1f,
+    -0x0p+0f, -0x1.a2be94p-3f, -0x1.3f6cb2p-1f, 0x1.870ce4p+1f,
     /* node 1815 x */
-    0x1.99999ap-56f, 0x1.db2e8cp-1f, 0x1.70cf06p-3f, -0x1.2f035cp-1f,
+    -0x1.8p-57f, 0x1.d9c6d2p-1f, 0x1.71cd26p-3f, -0x1.2ef1e6p-1f,
     /* node 1815 y */
-    -0x1.333334p-58f, 0x1.2b0bccp-7f, 0x1.45a9d2p-1f, -0x1.468c2ap+0f,
+    0x1.f33334p-56f, 0x1.2072ap-7f, 0x1.45b7dap-1f, -0x1.4669bp+0f,
     /* node 1815 z */
-    0x1.99999ap-58f, -0x1.b920b8p-3f, -0x1.3f170cp-1f, 0x1.8aced6p+1f,
+    0x1.99999ap-57f, -0x1.b6ff42p-3f, -0x1.3f4e1ap-1f, 0x1.8a35fap+1f,
     /* node 1816 x */
-    -0x1.8p-58f, 0x1.d104ecp-1f, 0x1.533d42p-3f, -0x1.128cdp-1f,
+    -0x1.4cccccp-57f, 0x1.d003e8p-1f, 0x1.542ea8p-3f, -0x1.123fb6p-1f,
     /* node 1816 y */
-    -0x1.666666p-58f, 0x1.4e83fap-5f, 0x1.56dcc8p-1f, -0x1.70e8cp+0f,
+    -0x1.99999ap-60f, 0x1.529fb2p-5f, 0x1.56e136p-1f, -0x1.70c9bcp+0f,
     /* node 1816 z */
-    -0x1.333334p-56f, -0x1.e68d88p-3f, -0x1.3ff472p-1f, 0x1.904fbcp+1f,
+    -0x1p-56f, -0x1.e3f57cp-3f, -0x1.403d4ep-1f, 0x1.8fbba8p+1f,
     /* node 1817 x */
-    0x1.ep-56f, 0x1.e42432p-1f, 0x1.63f1e8p-3f, -0x1.28c08p-1f,
+    0x1.39999ap-56f, 0x1.e3716p-1f, 0x1.6454ap-3f, -0x1.28824ep-1f,
     /* node 1817 y */
-    0x1.19999ap-57f, 0x1.12ff1ap-5f, 0x1.5159ccp-1f, -0x1.5679c6p+0f,
+    0x1p-57f, 0x1.13eceap-5f, 0x1.516c3cp-1f, -0x1.56571cp+0f,
     /* node 1817 z */
-    -0x1.333334p-55f, -0x1.0071e8p-2f, -0x1.3f3a0cp-1f, 0x1.93fbecp+1f,
+    -0x1.666666p-55f, -0x1.fed058p-3f, -0x1.3f8076p-1f, 0x1.93648ep+1f,
     /* node 1821 x */
-    0x1.266666p-57f, 0x1.e4ef68p-1f, 0x1.87fbeep-3f, -0x1.4a7f6ep-1f,
+    0x1.133334p-56f, 0x1.e4559ap-1f, 0x1.881742p-3f, -0x1.4a499cp-1f,
     /* node 1821 y */
-    -0x1.333334p-58f, -0x1.2ba506p-5f, 0x1.278c6cp-1f, -0x1.09869ap+0f,
+    0x1.666666p-58f, -0x1.30d9e4p-5f, 0x1.27b5f4p-1f, -0x1.0986d4p+0f,
     /* node 1821 z */
-    -0x1.99999ap-57f, -0x1.6a19p-3f, -0x1.39e44p-1f, 0x1.7a6f96p+1f,
+    -0x1.8p-56f, -0x1.675598p-3f, -0x1.3a401ep-1f, 0x1.79e0a8p+1f,
     /* node 1822 x */
-    0x1.19999ap-56f, 0x1.f45108p-1f, 0x1.8cea7p-3f, -0x1.59e904p-1f,
+    0x1.cp-56f, 0x1.f3e598p-1f, 0x1.8c8768p-3f, -0x1.59f21cp-1f,
     /* node 1822 y */
-    -0x1.4cccccp-57f, -0x1.50d422p-5f, 0x1.279586p-1f, -0x1.f0e49ep-1f,
+    -0x1.b33334p-57f, -0x1.564b3p-5f, 0x1.27b95ep-1f, -0x1.f0f9dap-1f,
     /* node 1822 z */
-    -0x1.4p-55f, -0x1.95f912p-3f, -0x1.3885e4p-1f, 0x1.7d86fap+1f,
+    0x1.333334p-58f, -0x1.92a374p-3f, -0x1.38f6fcp-1f, 0x1.7cfb66p+1f,
     /* node 1823 x */
-    0x1.e66666p-56f, 0x1.003d56p+0f, 0x1.88bd4p-3f, -0x1.65f45p-1f,
+    0x1.6cccccp-55f, 0x1.004034p+0f, 0x1.87fd2ap-3f, -0x1.65c6e8p-1f,
     /* node 1823 y */
-    0x1.333334p-58f, -0x1.f2eb7ap-5f, 0x1.1f9a2cp-1f, -0x1.be5b86p-1f,
+    -0x1.4cccccp-55f, -0x1.f8fe18p-5f, 0x1.1fd25ep-1f, -0x1.be5f64p-1f,
     /* node 1823 z */
-    -0x1.99999ap-56f, -0x1.89aa8ep-3f, -0x1.36777cp-1f, 0x1.77c98p+1f,
+    -0x1.333334p-56f, -0x1.87f06p-3f, -0x1.36c6dap-1f, 0x1.774124p+1f,
     /* node 1824 x */
-    -0x1.e66666p-57f, 0x1.e0a8e2p-1f, 0x1.83db7cp-3f, -0x1.42cebp-1f,
+    0x1.4cccccp-55f, 0x1.dff9aap-1f, 0x1.8429c2p-3f, -0x1.4297b4p-1f,
     /* node 1824 y */
-    0x1.333334p-57f, -0x1.b7c1dcp-6f, 0x1.2ee946p-1f, -0x1.1a134cp+0f,
+    -0x1.333334p-56f, -0x1.bd9608p-6f, 0x1.2f0dfp-1f, -0x1.19feeap+0f,
     /* node 1824 z */
-    -0x1.99999ap-59f, -0x1.77e968p-3f, -0x1.3bad8cp-1f, 0x1.7e50d4p+1f,
+    -0x1.99999ap-59f, -0x1.75b212p-3f, -0x1.3bf3e4p-1f, 0x1.7dbedap+1f,
     /* node 1825 x */
-    0x1.39999ap-56f, 0x1.f22d9cp-1f, 0x1.884558p-3f, -0x1.52aeep-1f,
+    0x1.f9999ap-56f, 0x1.f12ed6p-1f, 0x1.88f538p-3f, -0x1.528396p-1f,
     /* node 1825 y */
-    0x1.b33334p-57f, -0x1.f3ec26p-6f, 0x1.2ed888p-1f, -0x1.086a92p+0f,
+    -0x1p-57f, -0x1.f52084p-6f, 0x1.2edb42p-1f, -0x1.0866a6p+0f,
     /* node 1825 z */
-    -0x1.e66666p-56f, -0x1.a08b92p-3f, -0x1.3ab6dap-1f, 0x1.820682p+1f,
+    -0x1.666666p-56f, -0x1.9da1a8p-3f, -0x1.3b046cp-1f, 0x1.817916p+1f,
     /* node 1826 x */
-    0x1.d9999ap-56f, 0x1.efb19ap-1f, 0x1.79b28cp-3f, -0x1.3f7d7ep-1f,
+    0x1.bcccccp-55f, 0x1.ef1632p-1f, 0x1.79aaa8p-3f, -0x1.3f659ap-1f,
     /* node 1826 y */
-    -0x1.4cccccp-57f, 0x1.b7c492p-11f, 0x1.416c64p-1f, -0x1.2dd4bp+0f,
+    0x1.333334p-57f, 0x1.33c5ccp-11f, 0x1.416b0ap-1f, -0x1.2dbce2p+0f,
     /* node 1826 z */
-    -0x1.666666p-56f, -0x1.cdc0c6p-3f, -0x1.3dbdc8p-1f, 0x1.8c4f86p+1f,
+    -0x1.99999ap-59f, -0x1.cc0f56p-3f, -0x1.3e0452p-1f, 0x1.8bb94ap+1f,
     /* node 1827 x */
-    -0x1.4p-57f, 0x1.07311ap+0f, 0x1.7ee0eap-3f, -0x1.598bdcp-1f,
+    -0x1p-59f, 0x1.071892p+0f, 0x1.7e6026p-3f, -0x1.598592p-1f,
     /* node 1827 y */
-    0x1.ccccccp-58f, -0x1.d74154p-6f, 0x1.33e6e4p-1f, -0x1.fb395cp-1f,
+    0x1.4cccccp-57f, -0x1.db7a36p-6f, 0x1.34113ep-1f, -0x1.fb294cp-1f,
     /* node 1827 z */
-    -0x1.19999ap-55f, -0x1.e0207ap-3f, -0x1.390f7ep-1f, 0x1.885ce4p+1f,
+    -0x1.ccccccp-56f, -0x1.de0c6cp-3f, -0x1.39644ep-1f, 0x1.87c48ep+1f,
     /* node 1828 x */
-    0x1.666666p-59f, 0x1.0c4cc8p+0f, 0x1.7bd136p-3f, -0x1.688ab6p-1f,
+    -0x1.933334p-56f, 0x1.0c68d6p+0f, 0x1.7b1c52p-3f, -0x1.6809f2p-1f,
     /* node 1828 y */
-    -0x1.99999ap-58f, -0x1.971852p-5f, 0x1.2bddccp-1f, -0x1.c6f116p-1f,
+    -0x1.333334p-59f, -0x1.9af9a6p-5f, 0x1.2c2546p-1f, -0x1.c6de9ap-1f,
     /* node 1828 z */
-    -0x1.99999ap-58f, -0x1.e10dc8p-3f, -0x1.36101ap-1f, 0x1.826d08p+1f,
+    -0x1.99999ap-57f, -0x1.dcb064p-3f, -0x1.366496p-1f, 0x1.81ec76p+1f,
     /* node 1829 x */
-    0x1.066666p-55f, 0x1.02f9bep+0f, 0x1.7878c4p-3f, -0x1.4ce7cap-1f,
+    0x1.2p-55f, 0x1.027aaep+0f, 0x1.7931dap-3f, -0x1.4cbeaep-1f,
     /* node 1829 y */
-    -0x0p+0f, -0x1.8a0c9ap-7f, 0x1.3d0a12p-1f, -0x1.17241cp+0f,
+    0x1.99999ap-60f, -0x1.926a5ep-7f, 0x1.3d0a36p-1f, -0x1.1724e6p+0f,
     /* node 1829 z */
-    -0x1.666666p-56f, -0x1.dea0cap-3f, -0x1.3c6aap-1f, 0x1.8cbed4p+1f,
+    0x1.666666p-56f, -0x1.dd5a82p-3f, -0x1.3c9e2p-1f, 0x1.8c2486p+1f,
     /* node 1830 x */
-    -0x1.b33334p-57f, 0x1.12ca5ap+0f, 0x1.7521ep-3f, -0x1.654baep-1f,
+    0x1.b66666p-55f, 0x1.1277e2p+0f, 0x1.748a5p-3f, -0x1.65539p-1f,
     /* node 1830 y */
-    -0x1.99999ap-59f, -0x1.a6725p-6f, 0x1.3a276ep-1f, -0x1.e1e2f2p-1f,
+    0x1.a66666p-56f, -0x1.ac5182p-6f, 0x1.3a256ep-1f, -0x1.e2116cp-1f,
     /* node 1830 z */
-    -0x1p-55f, -0x1.0f04cap-2f, -0x1.37ba0ap-1f, 0x1.8dc6b6p+1f,
+    0x1.99999ap-59f, -0x1.0d9e78p-2f, -0x1.3805fp-1f, 0x1.8d3ddcp+1f,
     /* node 1831 x */
-    -0x1.59999ap-57f, 0x1.0fe3bep+0f, 0x1.76a9e4p-3f, -0x1.56a584p-1f,
+    -0x1.f33334p-57f, 0x1.0fa346p+0f, 0x1.76e6bap-3f, -0x1.56898ap-1f,
     /* node 1831 y */
-    -0x1.99999ap-59f, 0x1.e5f8p-10f, 0x1.466046p-1f, -0x1.0fb41ap+0f,
+    -0x1.99999ap-58f, 0x1.1fbabep-9f, 0x1.466adcp-1f, -0x1.0fb1cp+0f,
     /* node 1831 z */
-    -0x1.8p-55f, -0x1.1ec50ap-2f, -0x1.395bf4p-1f, 0x1.96603ep+1f,
+    -0x1.99999ap-57f, -0x1.1e084p-2f, -0x1.39a98cp-1f, 0x1.95be0cp+1f,
     /* node 1832 x */
-    0x1.19999ap-55f, 0x1.01cc1p+0f, 0x1.6f782cp-3f, -0x1.427c32p-1f,
+    0x1.366666p-55f, 0x1.01515p+0f, 0x1.6ff6a4p-3f, -0x1.42514cp-1f,
     /* node 1832 y */
-    -0x1p-57f, 0x1.08d6a2p-6f, 0x1.4bb996p-1f, -0x1.31c82ep+0f,
+    -0x1.99999ap-61f, 0x1.0f9b62p-6f, 0x1.4bb71p-1f, -0x1.31ab8ap+0f,
     /* node 1832 z */
-    -0x1p-56f, -0x1.0fb2b4p-2f, -0x1.3cb09ep-1f, 0x1.96951p+1f,
+    0x1.99999ap-58f, -0x1.0ec976p-2f, -0x1.3cfb38p-1f, 0x1.95f7f4p+1f,
     /* node 1836 x */
-    -0x1p-59f, 0x1.12ee86p+0f, 0x1.772242p-3f, -0x1.726186p-1f,
+    0x1.d9999ap-56f, 0x1.12a57cp+0f, 0x1.7787bap-3f, -0x1.720f1cp-1f,
     /* node 1836 y */
-    -0x1.666666p-57f, -0x1.0927c8p-4f, 0x1.29761p-1f, -0x1.9e5384p-1f,
+    -0x1p-58f, -0x1.08ed7ep-4f, 0x1.2996a2p-1f, -0x1.9e508ep-1f,
     /* node 1836 z */
-    -0x1.ccccccp-56f, -0x1.f14186p-3f, -0x1.342ab2p-1f, 0x1.7f7746p+1f,
+    -0x1.333334p-58f, -0x1.ee57d6p-3f, -0x1.34739ap-1f, 0x1.7ee68ep+1f,
     /* node 1841 x */
-    -0x1.666666p-57f, 0x1.4c295ep+0f, 0x1.142f7cp-3f, -0x1.941824p-1f,
+    0x1.1p-54f, 0x1.4bc276p+0f, 0x1.126f88p-3f, -0x1.93b88ep-1f,
     /* node 1841 y */
-    0x1.266666p-57f, -0x1.289c48p-3f, 0x1.3703cap-1f, -0x1.f252e4p-2f,
+    0x1.99999ap-60f, -0x1.297af4p-3f, 0x1.36dfe8p-1f, -0x1.f2e14ap-2f,
     /* node 1841 z */
-    -0x1.8p-56f, -0x1.640162p-2f, -0x1.223f5cp-1f, 0x1.78e672p+1f,
+    -0x1.266666p-55f, -0x1.62a3f2p-2f, -0x1.2285cp-1f, 0x1.7850ep+1f,
     /* node 1848 x */
-    0x1.0b3334p-53f, 0x1.5e9ee2p+0f, 0x1.41655ap-6f, -0x1.b666aap-1f,
+    0x1.19999ap-57f, 0x1.5e4f6cp+0f, 0x1.3e8882p-6f, -0x1.b5faaep-1f,
     /* node 1848 y */
-    -0x1.bcp-57f, -0x1.81b414p-2f, 0x1.27a818p-1f, -0x1.ad3866p-6f,
+    -0x1.faccccp-55f, -0x1.817744p-2f, 0x1.278e76p-1f, -0x1.bd1628p-6f,
     /* node 1848 z */
-    0x1.666666p-57f, -0x1.8fee9p-2f, -0x1.01c592p-1f, 0x1.45f50ap+1f,
+    -0x1.4cccccp-55f, -0x1.8eec7ep-2f, -0x1.01fb38p-1f, 0x1.45738ap+1f,
     /* node 1860 x */
-    0x1.49999ap-54f, 0x1.5ef93p+0f, -0x1.3adb9ep-5f, -0x1.a9d8dcp-1f,
+    0x1.59999ap-54f, 0x1.5e6346p+0f, -0x1.38c722p-5f, -0x1.a92b46p-1f,
     /* node 1860 y */
-    0x1.633334p-58f, -0x1.d3e54p-2f, 0x1.3488b4p-1f, 0x1.bd302p-5f,
+    0x1.a66666p-58f, -0x1.d343fp-2f, 0x1.345906p-1f, 0x1.b6e1fcp-5f,
     /* node 1860 z */
-    -0x1.666666p-56f, -0x1.92418p-2f, -0x1.f25bd2p-2f, 0x1.3959fcp+1f,
+    0x1.99999ap-59f, -0x1.91694cp-2f, -0x1.f2bf9ep-2f, 0x1.38d392p+1f,
     /* node 1861 x */
-    0x1.f9999ap-55f, 0x1.873a7p+0f, -0x1.2a781cp-4f, -0x1.b4bep-1f,
+    0x1.b33334p-57f, 0x1.86d72cp+0f, -0x1.2a1084p-4f, -0x1.b459d6p-1f,
     /* node 1861 y */
-    -0x1.b7999ap-56f, -0x1.c96a08p-2f, 0x1.5901b8p-1f, 0x1.f0283ap-7f,
+    -0x1.32p-55f, -0x1.c9c07cp-2f, 0x1.5900cap-1f, 0x1.c4b94ep-7f,
     /* node 1861 z */
-    -0x1.99999ap-58f, -0x1.f6d5b6p-2f, -0x1.e58e84p-2f, 0x1.505548p+1f,
+    -0x1.333334p-56f, -0x1.f62304p-2f, -0x1.e60444p-2f, 0x1.4fcaep+1f,
     /* node 1868 x */
-    0x1.f9999ap-56f, 0x1.470838p-1f, -0x1.30352ep-4f, -0x1.09006ap-2f,
+    0x1.a9999ap-56f, 0x1.46502p-1f, -0x1.31acc4p-4f, -0x1.085e54p-2f,
     /* node 1868 y */
-    -0x1.69999ap-56f, -0x1.71a89cp-2f, 0x1.2bed2ep-1f, -0x1.bca5b4p-3f,
+    -0x1.233334p-56f, -0x1.71772cp-2f, 0x1.2c328p-1f, -0x1.bda6ep-3f,
     /* node 1868 z */
-    0x1.4cccccp-57f, -0x1.cfca86p-4f, -0x1.746e58p-2f, 0x1.274846p+0f,
+    -0x1.4p-56f, -0x1.ccee7cp-4f, -0x1.74b254p-2f, 0x1.26831ap+0f,
     /* node 1870 x */
-    -0x1.79999ap-57f, 0x1.805652p-1f, -0x1.42297ap-4f, -0x1.71700cp-2f,
+    0x1.9cccccp-56f, 0x1.7f511cp-1f, -0x1.4182dap-4f, -0x1.6feb5ap-2f,
     /* node 1870 y */
-    0x1.59999ap-57f, -0x1.a1c644p-2f, 0x1.2dc016p-1f, -0x1.ec5e92p-4f,
+    -0x1.00ccccp-55f, -0x1.a1951p-2f, 0x1.2d975p-1f, -0x1.ef708ep-4f,
     /* node 1870 z */
-    -0x0p+0f, -0x1.1d4efep-3f, -0x1.9285bep-2f, 0x1.59182ep+0f,
+    -0x0p+0f, -0x1.1b25e8p-3f, -0x1.92f1a8p-2f, 0x1.5806dcp+0f,
     /* node 1871 x */
-    0x1.6cccccp-56f, 0x1.7fd24p-1f, -0x1.59b958p-4f, -0x1.66d252p-2f,
+    0x1.e8p-55f, 0x1.7e995ap-1f, -0x1.5a8c6ep-4f, -0x1.64c338p-2f,
     /* node 1871 y */
-    -0x1.173334p-55f, -0x1.a9463cp-2f, 0x1.2c3e8ep-1f, -0x1.7393f4p-4f,
+    -0x1.59999ap-55f, -0x1.a92946p-2f, 0x1.2c074p-1f, -0x1.761e66p-4f,
     /* node 1871 z */
-    0x1.333334p-58f, -0x1.3419cep-3f, -0x1.8bd73p-2f, 0x1.558c1cp+0f,
+    0x1.4cccccp-57f, -0x1.324baep-3f, -0x1.8c699cp-2f, 0x1.5466ccp+0f,
     /* node 1872 x */
-    0x1.59999ap-57f, 0x1.ad0f6p-1f, -0x1.62c502p-4f, -0x1.b867cep-2f,
+    0x1.ccccccp-59f, 0x1.ac33d6p-1f, -0x1.64f484p-4f, -0x1.b758a4p-2f,
     /* node 1872 y */
-    -0x1.9cccccp-59f, -0x1.cf4f2p-2f, 0x1.3173cp-1f, -0x1.2264d2p-5f,
+    -0x1.4c3334p-55f, -0x1.cea52ep-2f, 0x1.30eadcp-1f, -0x1.2b51aep-5f,
     /* node 1872 z */
-    0x1.666666p-58f, -0x1.51df7ep-3f, -0x1.9e9b46p-2f, 0x1.79c914p+0f,
+    0x1.99999ap-61f, -0x1.4f47eep-3f, -0x1.9f6938p-2f, 0x1.78c878p+0f,
     /* node 1873 x */
-    0x1.6p-55f, 0x1.c1f4bap-1f, -0x1.8dbce6p-4f, -0x1.cbae1cp-2f,
+    0x1.8p-58f, 0x1.c192fp-1f, -0x1.8bc9a4p-4f, -0x1.cb62f2p-2f,
     /* node 1873 y */
-    -0x1.226666p-57f, -0x1.e15866p-2f, 0x1.30dfaap-1f, 0x1.23e8ccp-6f,
+    -0x1.9b6666p-56f, -0x1.e0bbep-2f, 0x1.313308p-1f, 0x1.1c358ep-6f,
     /* node 1873 z */
-    -0x1p-57f, -0x1.8d2ee2p-3f, -0x1.a0e748p-2f, 0x1.8a04ep+0f,
+    -0x1.333334p-56f, -0x1.8c7384p-3f, -0x1.a019c6p-2f, 0x1.8951d6p+0f,
     /* node 1874 x */
-    0x1.733334p-57f, 0x1.ed7e24p-1f, -0x1.63f046p-4f, -0x1.176d68p-1f,
+    0x1.4p-57f, 0x1.eca60ap-1f, -0x1.601c8cp-4f, -0x1.17115cp-1f,
     /* node 1874 y */
-    -0x1.04ccccp-56f, -0x1.f043cp-2f, 0x1.2e97f2p-1f, 0x1.27e3acp-4f,
+    -0x1.94p-56f, -0x1.efcb16p-2f, 0x1.2e9538p-1f, 0x1.241a04p-4f,
     /* node 1874 z */
-    -0x1.333334p-57f, -0x1.bb745p-3f, -0x1.b3da56p-2f, 0x1.b1b68ap+0f,
+    -0x1.99999ap-56f, -0x1.b941c8p-3f, -0x1.b502d2p-2f, 0x1.b09baep+0f,
     /* node 1875 x */
-    -0x1.4p-55f, 0x1.9536b6p-1f, -0x1.5f704cp-4f, -0x1.8c48b2p-2f,
+    0x1.266666p-57f, 0x1.941c26p-1f, -0x1.60df86p-4f, -0x1.8ae082p-2f,
     /* node 1875 y */
-    -0x1.126666p-56f, -0x1.b98632p-2f, 0x1.2e0644p-1f, -0x1.f44f48p-5f,
+    -0x1.a9999ap-56f, -0x1.b95de2p-2f, 0x1.2dcaecp-1f, -0x1.f6c9f6p-5f,
     /* node 1875 z */
-    0x1p-57f, -0x1.49956p-3f, -0x1.93abep-2f, 0x1.67e09ap+0f,
+    -0x1.ccccccp-58f, -0x1.477636p-3f, -0x1.93f272p-2f, 0x1.66d13ep+0f,
     /* node 1876 x */
-    0x1.4p-57f, 0x1.a79344p-1f, -0x1.66cf44p-4f, -0x1.aed82ap-2f,
+    -0x1.6cccccp-56f, 0x1.a6e76cp-1f, -0x1.661502p-4f, -0x1.adf59cp-2f,
     /* node 1876 y */
-    -0x1.13ccccp-56f, -0x1.ca6aeap-2f, 0x1.2d759ap-1f, -0x1.2f3a4p-6f,
+    -0x1.f5999ap-56f, -0x1.c927ccp-2f, 0x1.2c7eb2p-1f, -0x1.36fcdep-6f,
     /* node 1876 z */
-    -0x1.19999ap-57f, -0x1.709666p-3f, -0x1.943e0ap-2f, 0x1.77219cp+0f,
+    -0x1.4cccccp-56f, -0x1.6ed42p-3f, -0x1.938e3cp-2f, 0x1.7606ep+0f,
     /* node 1877 x */
-    0x1.d9999ap-56f, 0x1.ffd656p-1f, -0x1.362c8p-4f, -0x1.26b8cp-1f,
+    -0x1.99999ap-60f, 0x1.ff4496p-1f, -0x1.367e5p-4f, -0x1.2654a6p-1f,
     /* node 1877 y */
-    -0x1.0accccp-55f, -0x1.f5a066p-2f, 0x1.29d092p-1f, 0x1.f1d7c6p-5f,
+    -0x1.baccccp-55f, -0x1.f51888p-2f, 0x1.2a3d2ap-1f, 0x1.eb9e7ap-5f,
     /* node 1877 z */
-    -0x1.333334p-55f, -0x1.9ed6e4p-3f, -0x1.bef03ap-2f, 0x1.bc429ap+0f,
+    -0x1.333334p-56f, -0x1.9ce964p-3f, -0x1.bfab36p-2f, 0x1.bb6828p+0f,
     /* node 1878 x */
-    0x1.14ccccp-54f, 0x1.12d936p+0f, -0x1.39fffp-4f, -0x1.4336e6p-1f,
+    -0x1.99999ap-62f, 0x1.124214p+0f, -0x1.37a946p-4f, -0x1.42e722p-1f,
     /* node 1878 y */
-    0x1.08p-56f, -0x1.ffcb2ep-2f, 0x1.2aa88cp-1f, 0x1.a5db04p-4f,
+    0x1.b33334p-59f, -0x1.fee34ep-2f, 0x1.2abc12p-1f, 0x1.a12a68p-4f,
     /* node 1878 z */
-    0x1.19999ap-56f, -0x1.df0376p-3f, -0x1.c9b5e6p-2f, 0x1.dc9efp+0f,
+    0x1p-56f, -0x1.ddc0d6p-3f, -0x1.ca1ffep-2f, 0x1.dba5ecp+0f,
     /* node 1879 x */
-    0x1.99999ap-59f, 0x1.0b61ep+0f, -0x1.9e3a8ep-4f, -0x1.2d985ep-1f,
+    0x1.ep-56f, 0x1.0b35a2p+0f, -0x1.9c764p-4f, -0x1.2d3c92p-1f,
     /* node 1879 y */
-    -0x1.573334p-55f, -0x1.027666p-1f, 0x1.32e3a6p-1f, 0x1.c4a374p-4f,
+    -0x1.ae6666p-56f, -0x1.02486ep-1f, 0x1.32da68p-1f, 0x1.c13f0ap-4f,
     /* node 1879 z */
-    -0x1p-57f, -0x1.0d1802p-2f, -0x1.ba1352p-2f, 0x1.d16598p+0f,
+    0x1.19999ap-56f, -0x1.0c2768p-2f, -0x1.bae1dap-2f, 0x1.d05e3cp+0f,
     /* node 1880 x */
-    -0x1p-55f, 0x1.27103ap+0f, -0x1.44a386p-4f, -0x1.60175ap-1f,
+    -0x1p-58f, 0x1.268b4ap+0f, -0x1.440eaep-4f, -0x1.5f799p-1f,
     /* node 1880 y */
-    0x1.566666p-57f, -0x1.025a9cp-1f, 0x1.2e8abcp-1f, 0x1.03c058p-3f,
+    -0x1.1b3334p-56f, -0x1.02515cp-1f, 0x1.2eff6ep-1f, 0x1.00f63cp-3f,
     /* node 1880 z */
-    -0x1.333334p-55f, -0x1.2374b8p-2f, -0x1.ce716ep-2f, 0x1.0011d4p+1f,
+    -0x1.99999ap-58f, -0x1.2263eep-2f, -0x1.cf3722p-2f, 0x1.feeb76p+0f,
     /* node 1881 x */
-    0x1.d33334p-56f, 0x1.e0eef2p-1f, -0x1.a69b8ep-4f, -0x1.fa333p-2f,
+    0x1.b66666p-55f, 0x1.dfe4e6p-1f, -0x1.a1d234p-4f, -0x1.f888d4p-2f,
     /* node 1881 y */
-    -0x1.ccccccp-60f, -0x1.f3d226p-2f, 0x1.2fbc56p-1f, 0x1.1ed59ep-4f,
+    -0x1.19999ap-55f, -0x1.f2e228p-2f, 0x1.2ee9bp-1f, 0x1.1d41aap-4f,
     /* node 1881 z */
-    0x1.333334p-58f, -0x1.ccc872p-3f, -0x1.a96f76p-2f, 0x1.a447cp+0f,
+    0x1.333334p-58f, -0x1.cbc3fep-3f, -0x1.a9b0b4p-2f, 0x1.a323cap+0f,
     /* node 1882 x */
-    -0x1.6p-55f, 0x1.3ddbap+0f, -0x1.ab601ep-4f, -0x1.6abebap-1f,
+    0x1.a66666p-57f, 0x1.3cf188p+0f, -0x1.a91c5p-4f, -0x1.6ae188p-1f,
     /* node 1882 y */
-    -0x1.333334p-61f, -0x1.06c5a8p-1f, 0x1.40576p-1f, 0x1.204b68p-3f,
+    -0x1.466666p-57f, -0x1.061b3cp-1f, 0x1.400746p-1f, 0x1.1db64p-3f,
     /* node 1882 z */
-    -0x1.e66666p-56f, -0x1.74ab6cp-2f, -0x1.d0053ep-2f, 0x1.14a21p+1f,
+    -0x1.99999ap-57f, -0x1.74237ap-2f, -0x1.d09c46p-2f, 0x1.13ebfp+1f,
     /* node 1883 x */
-    0x1.166666p-54f, 0x1.49b9e8p+0f, -0x1.3efbe6p-4f, -0x1.8c1934p-1f,
+    0x1.d9999ap-55f, 0x1.49c384p+0f, -0x1.440956p-4f, -0x1.8b4268p-1f,
     /* node 1883 y */
-    0x1.ccccccp-61f, -0x1.02790ep-1f, 0x1.3f67cap-1f, 0x1.018254p-3f,
+    -0x1.566666p-57f, -0x1.02c254p-1f, 0x1.3f63fcp-1f, 0x1.fd9f9ep-4f,
     /* node 1883 z */
-    -0x1.19999ap-56f, -0x1.7e2d96p-2f, -0x1.dac83p-2f, 0x1.22f908p+1f,
+    -0x0p+0f, -0x1.7ca34cp-2f, -0x1.db95bp-2f, 0x1.225402p+1f,
     /* node 1884 x */
-    0x1.366666p-54f, 0x1.19d70cp+0f, -0x1.eecc3ep-4f, -0x1.33896p-1f,
+    -0x1.633334p-55f, 0x1.195334p+0f, -0x1.eac47ap-4f, -0x1.332c3ap-1f,
     /* node 1884 y */
-    -0x1.166666p-54f, -0x1.0354b8p-1f, 0x1.3786b2p-1f, 0x1.2818d8p-3f,
+    -0x1.c5999ap-55f, -0x1.02d8dcp-1f, 0x1.374038p-1f, 0x1.252f38p-3f,
     /* node 1884 z */
-    -0x1.e66666p-56f, -0x1.5cb3cep-2f, -0x1.b4e4a6p-2f, 0x1.f1751p+0f,
+    0x1.99999ap-59f, -0x1.5bde7ap-2f, -0x1.b557ep-2f, 0x1.f00aaep+0f,
     /* node 1885 x */
-    0x1.e66666p-56f, 0x1.3a9462p+0f, -0x1.f72d32p-4f, -0x1.5888dep-1f,
+    -0x1.a66666p-57f, 0x1.39e7cp+0f, -0x1.f819ccp-4f, -0x1.5879c4p-1f,
     /* node 1885 y */
-    -0x1.7a6666p-55f, -0x1.febe3p-2f, 0x1.47e25cp-1f, 0x1.37b60cp-3f,
+    0x1.2cccccp-57f, -0x1.ff3376p-2f, 0x1.487862p-1f, 0x1.3476aep-3f,
     /* node 1885 z */
-    0x1p-57f, -0x1.95a1d2p-2f, -0x1.c13d02p-2f, 0x1.13d6d4p+1f,
+    -0x1.333334p-57f, -0x1.959a5cp-2f, -0x1.c223fcp-2f, 0x1.13280ap+1f,
     /* node 1886 x */
-    -0x0p+0f, 0x1.621d46p+0f, -0x1.811364p-4f, -0x1.9bd576p-1f,
+    0x1.e66666p-57f, 0x1.622348p+0f, -0x1.85f568p-4f, -0x1.9aeeb6p-1f,
     /* node 1886 y */
-    0x1.333334p-59f, -0x1.fd574ep-2f, 0x1.4f10aep-1f, 0x1.cc312cp-4f,
+    -0x1.d8p-55f, -0x1.fce188p-2f, 0x1.4efa0ep-1f, 0x1.c8a54cp-4f,
     /* node 1886 z */
-    0x1.666666p-57f, -0x1.c49e44p-2f, -0x1.d7d832p-2f, 0x1.33ee4ep+1f,
+    -0x1.333334p-55f, -0x1.c2ccd8p-2f, -0x1.d8f064p-2f, 0x1.3372aap+1f,
     /* node 1889 x */
-    0x1.cp-56f, 0x1.52bfe6p-1f, -0x1.500cf8p-4f, -0x1.134a6ep-2f,
+    -0x1.39999ap-57f, 0x1.5224dep-1f, -0x1.53efccp-4f, -0x1.12716p-2f,
     /* node 1889 y */
-    -0x1p-56f, -0x1.8cee96p-2f, 0x1.1ca868p-1f, -0x1.c68d9ap-4f,
+    -0x1.39999ap-56f, -0x1.8c65dp-2f, 0x1.1c7f44p-1f, -0x1.cab55cp-4f,
     /* node 1889 z */
-    0x1.99999ap-58f, -0x1.1f1036p-3f, -0x1.6e1e6p-2f, 0x1.2eb1f8p+0f,
+    0x1.4cccccp-57f, -0x1.1da108p-3f, -0x1.6e6b6p-2f, 0x1.2ddca4p+0f,
     /* node 1892 x */
-    0x1.f66666p-55f, 0x1.7754f2p-1f, -0x1.5e8616p-4f, -0x1.5400c6p-2f,
+    0x1.69999ap-56f, 0x1.76c126p-1f, -0x1.5e1bdap-4f, -0x1.5338a8p-2f,
     /* node 1892 y */
-    0x1.0cccccp-56f, -0x1.aceb46p-2f, 0x1.217df4p-1f, -0x1.ee0a0ap-5f,
+    -0x1.f66666p-58f, -0x1.ac493cp-2f, 0x1.218f36p-1f, -0x1.f16bc8p-5f,
     /* node 1892 z */
-    0x1.333334p-59f, -0x1.4e487cp-3f, -0x1.7cd4aep-2f, 0x1.4e9512p+0f,
+    -0x1.666666p-58f, -0x1.4cf234p-3f, -0x1.7ca83ep-2f, 0x1.4d98eep+0f,
     /* node 1893 x */
-    0x1.99999ap-56f, 0x1.601c58p-1f, -0x1.5d34fcp-4f, -0x1.2de652p-2f,
+    0x1.acccccp-57f, 0x1.5f702ap-1f, -0x1.5f9ee8p-4f, -0x1.2ce968p-2f,
     /* node 1893 y */
-    -0x1.1a6666p-55f, -0x1.a4dfbep-2f, 0x1.1dcf54p-1f, -0x1.8c90aep-5f,
+    -0x1.066666p-55f, -0x1.a47a84p-2f, 0x1.1dcee4p-1f, -0x1.92e1dcp-5f,
     /* node 1893 z */
-    -0x1.4cccccp-57f, -0x1.504a24p-3f, -0x1.64574ep-2f, 0x1.3883a4p+0f,
+    0x1.e66666p-57f, -0x1.4f5e9p-3f, -0x1.646ac6p-2f, 0x1.37ec1p+0f,
     /* node 1896 x */
-    -0x1.8cccccp-58f, 0x1.90ee2ap-1f, -0x1.6e2322p-4f, -0x1.84bf22p-2f,
+    -0x1p-60f, 0x1.907db6p-1f, -0x1.720558p-4f, -0x1.83b24ap-2f,
     /* node 1896 y */
-    -0x1.2f6666p-55f, -0x1.bbd9bap-2f, 0x1.29557ep-1f, -0x1.6c685cp-5f,
+    -0x1.c4ccccp-58f, -0x1.bae39ap-2f, 0x1.29223ap-1f, -0x1.738b9ep-5f,
     /* node 1896 z */
-    -0x1.19999ap-57f, -0x1.56632cp-3f, -0x1.8f4bccp-2f, 0x1.640ca2p+0f,
+    -0x1.99999ap-61f, -0x1.54947ap-3f, -0x1.903f72p-2f, 0x1.63091cp+0f,
     /* node 1897 x */
-    0x1.0cccccp-57f, 0x1.a2035cp-1f, -0x1.6d6fap-4f, -0x1.a07328p-2f,
+    0x1.066666p-55f, 0x1.a1b5ap-1f, -0x1.6eef3ep-4f, -0x1.9fde76p-2f,
     /* node 1897 y */
-    -0x1.249666p-55f, -0x1.cf872cp-2f, 0x1.2bca44p-1f, 0x1.26201p-10f,
+    -0x1.9e9a66p-56f, -0x1.cf1cd6p-2f, 0x1.2cef56p-1f, 0x1.7331e8p-14f,
     /* node 1897 z */
-    -0x1.0cccccp-56f, -0x1.8ce1a2p-3f, -0x1.87fe3cp-2f, 0x1.7463d8p+0f,
+    0x1.19999ap-56f, -0x1.8b9224p-3f, -0x1.87bf1p-2f, 0x1.73b024p+0f,
     /* node 1898 x */
-    0x1.533334p-56f, 0x1.944324p-1f, -0x1.82a464p-4f, -0x1.7eb38cp-2f,
+    -0x1.ep-57f, 0x1.937d3cp-1f, -0x1.861d76p-4f, -0x1.7d1016p-2f,
     /* node 1898 y */
-    -0x1.58ccccp-57f, -0x1.cdcecep-2f, 0x1.26de6p-1f, 0x1.d0ae2cp-7f,
+    -0x1.3bccccp-56f, -0x1.ccda98p-2f, 0x1.26671ep-1f, 0x1.a3e058p-7f,
     /* node 1898 z */
-    -0x0p+0f, -0x1.8f2e98p-3f, -0x1.810c06p-2f, 0x1.67c34cp+0f,
+    -0x1.99999ap-58f, -0x1.8d4b44p-3f, -0x1.809316p-2f, 0x1.665082p+0f,
     /* node 1899 x */
-    0x1.d33334p-56f, 0x1.bd2b8p-1f, -0x1.90fdb8p-4f, -0x1.c9f216p-2f,
+    0x1p-56f, 0x1.bc893ep-1f, -0x1.8bc06p-4f, -0x1.c9782cp-2f,
     /* node 1899 y */
-    -0x1.29ccccp-55f, -0x1.e5064cp-2f, 0x1.3081ap-1f, 0x1.332f1ap-5f,
+    -0x1.0e6666p-56f, -0x1.e42a16p-2f, 0x1.2f7a92p-1f, 0x1.2e6206p-5f,
     /* node 1899 z */
-    -0x1.99999ap-59f, -0x1.a459dp-3f, -0x1.98c17ep-2f, 0x1.889c1p+0f,
+    0x1p-57f, -0x1.a324e4p-3f, -0x1.9836ecp-2f, 0x1.87a7ecp+0f,
     /* node 1900 x */
-    0x1.533334p-55f, 0x1.b4ad86p-1f, -0x1.9e2af2p-4f, -0x1.b0c572p-2f,
+    0x1.cp-56f, 0x1.b4b45p-1f, -0x1.a29b86p-4f, -0x1.b1521ap-2f,
     /* node 1900 y */
-    -0x1.bp-57f, -0x1.e15e04p-2f, 0x1.2516b8p-1f, 0x1.d8a55cp-5f,
+    -0x1.e5999ap-56f, -0x1.e1b0acp-2f, 0x1.26d3bap-1f, 0x1.d45702p-5f,
     /* node 1900 z */
-    0x1.99999ap-60f, -0x1.c36becp-3f, -0x1.8b0c78p-2f, 0x1.835854p+0f,
+    0x1.ccccccp-58f, -0x1.c338dcp-3f, -0x1.8add72p-2f, 0x1.831928p+0f,
     /* node 1901 x */
-    0x1.99999ap-63f, 0x1.710a88p-1f, -0x1.6c0a76p-4f, -0x1.47668cp-2f,
+    -0x1.7cccccp-56f, 0x1.70d11ep-1f, -0x1.6d0c62p-4f, -0x1.48040ep-2f,
     /* node 1901 y */
-    -0x1.d5999ap-57f, -0x1.b9aafap-2f, 0x1.0e68bcp-1f, 0x1.a2813cp-6f,
+    -0x1.2c999ap-55f, -0x1.b9f2a4p-2f, 0x1.107eecp-1f, 0x1.96e98ep-6f,
     /* node 1901 z */
-    -0x1.4cccccp-56f, -0x1.8f0298p-3f, -0x1.6690e8p-2f, 0x1.4d19b6p+0f,
+    -0x1.b33334p-56f, -0x1.8e4a2ep-3f, -0x1.658af2p-2f, 0x1.4ca186p+0f,
     /* node 1902 x */
-    0x1.4cccccp-58f, 0x1.9e499ep-1f, -0x1.9618a6p-4f, -0x1.8b19a8p-2f,
+    0x1.8cccccp-57f, 0x1.9d60b4p-1f, -0x1.9403dep-4f, -0x1.896fd2p-2f,
     /* node 1902 y */
-    -0x1.3cp-56f, -0x1.d46ac8p-2f, 0x1.1a2caap-1f, 0x1.12e6d4p-4f,
+    -0x1.08p-57f, -0x1.d422e4p-2f, 0x1.19eed8p-1f, 0x1.13b0bcp-4f,
     /* node 1902 z */
-    -0x1.266666p-56f, -0x1.cf327cp-3f, -0x1.7a163cp-2f, 0x1.73f29cp+0f,
+    0x1.99999ap-60f, -0x1.ce658ap-3f, -0x1.7981dap-2f, 0x1.72df5p+0f,
     /* node 1903 x */
-    0x1.19999ap-57f, 0x1.f330fp-1f, -0x1.cc153p-4f, -0x1.091978p-1f,
+    0x1.133334p-56f, 0x1.f28424p-1f, -0x1.c59596p-4f, -0x1.08ff84p-1f,
     /* node 1903 y */
-    -0x1.4cccccp-58f, -0x1.f6db56p-2f, 0x1.2b0468p-1f, 0x1.e8776ep-4f,
+    -0x1.666666p-58f, -0x1.f5d9a4p-2f, 0x1.2b6b2ep-1f, 0x1.e4347ap-4f,
     /* node 1903 z */
-    -0x1p-56f, -0x1.226258p-2f, -0x1.a52b6ap-2f, 0x1.ba557cp+0f,
+    0x1p-57f, -0x1.21fb42p-2f, -0x1.a5d758p-2f, 0x1.b9667cp+0f,
     /* node 1904 x */
-    -0x1.b33334p-58f, 0x1.c4dbb2p-1f, -0x1.ae349cp-4f, -0x1.c70faap-2f,
+    0x1.133334p-55f, 0x1.c4a4bap-1f, -0x1.b0c068p-4f, -0x1.c74a4ep-2f,
     /* node 1904 y */
-    -0x1.2accccp-55f, -0x1.e5cbfep-2f, 0x1.2333bap-1f, 0x1.676bf4p-4f,
+    -0x1.666666p-60f, -0x1.e5a3e8p-2f, 0x1.23be68p-1f, 0x1.64a182p-4f,
     /* node 1904 z */
-    -0x1.99999ap-59f, -0x1.f1e2cap-3f, -0x1.90882ap-2f, 0x1.93564cp+0f,
+    -0x1.4cccccp-56f, -0x1.f0cfb8p-3f, -0x1.910f6cp-2f, 0x1.92b03cp+0f,
     /* node 1905 x */
-    0x1.0cccccp-57f, 0x1.09fad6p+0f, -0x1.f664c4p-4f, -0x1.19abb6p-1f,
+    -0x1.4p-57f, 0x1.097a46p+0f, -0x1.f2a684p-4f, -0x1.1975cap-1f,
     /* node 1905 y */
-    -0x1.fp-57f, -0x1.f8af6ep-2f, 0x1.32d8ep-1f, 0x1.22bc8ep-3f,
+    -0x1.733334p-56f, -0x1.f7e4e8p-2f, 0x1.32d236p-1f, 0x1.20a098p-3f,
     /* node 1905 z */
-    0x1.333334p-58f, -0x1.464c6ap-2f, -0x1.a51cf4p-2f, 0x1.d5b3e6p+0f,
+    -0x1.4cccccp-56f, -0x1.45782ap-2f, -0x1.a5e748p-2f, 0x1.d4a79ap+0f,
     /* node 1910 x */
-    -0x1p-60f, 0x1.73bd46p-1f, -0x1.5b4436p-4f, -0x1.55f05cp-2f,
+    -0x1.e66666p-58f, 0x1.72d7fcp-1f, -0x1.5a0548p-4f, -0x1.54c616p-2f,
     /* node 1910 y */
-    -0x1.b33334p-57f, -0x1.a88714p-2f, 0x1.e8ff34p-2f, 0x1.a968dep-4f,
+    -0x1.bp-57f, -0x1.a7d5ecp-2f, 0x1.e8aed4p-2f, 0x1.a54208p-4f,
     /* node 1910 z */
-    -0x1.666666p-57f, -0x1.e1b53ap-3f, -0x1.576caep-2f, 0x1.58b2aep+0f,
+    -0x1.4cccccp-56f, -0x1.dfe6d6p-3f, -0x1.5856fp-2f, 0x1.57d11cp+0f,
     /* node 1920 x */
-    0x1.066666p-57f, 0x1.50e9dap-1f, -0x1.316346p-4f, -0x1.242ac2p-2f,
+    0x1.033334p-56f, 0x1.50663ep-1f, -0x1.31d80cp-4f, -0x1.239872p-2f,
     /* node 1920 y */
-    -0x1.ap-58f, -0x1.8814dcp-2f, 0x1.a53238p-2f, 0x1.ba82bap-4f,
+    0x1.666666p-57f, -0x1.86996p-2f, 0x1.a4db56p-2f, 0x1.b2747ep-4f,
     /* node 1920 z */
-    -0x1.99999ap-60f, -0x1.da0a58p-3f, -0x1.3df0e4p-2f, 0x1.3f1e38p+0f,
+    -0x1.59999ap-56f, -0x1.d7a314p-3f, -0x1.3ea278p-2f, 0x1.3e3c14p+0f,
     /* node 2062 x */
-    0x1.89999ap-55f, 0x1.9e5594p-1f, 0x1.810cc6p-4f, -0x1.882532p-2f,
+    0x1.ccccccp-59f, 0x1.9dadbcp-1f, 0x1.82552p-4f, -0x1.87ead8p-2f,
     /* node 2062 y */
-    0x1.99999ap-60f, 0x1.9c8106p-3f, 0x1.9428ccp-1f, -0x1.01f3b2p+1f,
+    0x1p-57f, 0x1.9c0c6ap-3f, 0x1.944ee2p-1f, -0x1.01d172p+1f,
     /* node 2062 z */
-    -0x1.19999ap-55f, -0x1.85f768p-2f, -0x1.3f0b04p-1f, 0x1.982e24p+1f,
+    0x1.99999ap-58f, -0x1.851f6cp-2f, -0x1.3f2c44p-1f, 0x1.979b9p+1f,
     /* node 2063 x */
-    0x1.2p-55f, 0x1.c1777ap-1f, 0x1.48d7b2p-3f, -0x1.076856p-1f,
+    0x1.ccccccp-57f, 0x1.c0d2aep-1f, 0x1.493f3ap-3f, -0x1.072beep-1f,
     /* node 2063 y */
-    -0x1.666666p-57f, 0x1.c2a2aep-5f, 0x1.5d43dep-1f, -0x1.843d9ap+0f,
+    0x1.333334p-58f, 0x1.c4fcdap-5f, 0x1.5d42cp-1f, -0x1.841d48p+0f,
     /* node 2063 z */
-    -0x1.99999ap-59f, -0x1.f41afep-3f, -0x1.400d84p-1f, 0x1.8fb5d4p+1f,
+    0x1.99999ap-59f, -0x1.f15d2p-3f, -0x1.404f06p-1f, 0x1.8f2424p+1f,
     /* node 2064 x */
-    0x1.cp-56f, 0x1.e17df8p-1f, 0x1.4e1d72p-3f, -0x1.1874fcp-1f,
+    -0x1.b9999ap-56f, 0x1.e0504cp-1f, 0x1.4f6764p-3f, -0x1.18287ep-1f,
     /* node 2064 y */
-    -0x0p+0f, 0x1.03d6cep-4f, 0x1.5fec98p-1f, -0x1.736822p+0f,
+    0x1.4cccccp-57f, 0x1.047ddap-4f, 0x1.5ffa1ep-1f, -0x1.7343bp+0f,
     /* node 2064 z */
-    0x1.99999ap-57f, -0x1.1b4002p-2f, -0x1.3f39cp-1f, 0x1.9aa08ap+1f,
+    -0x1.333334p-55f, -0x1.1a4df4p-2f, -0x1.3f70c6p-1f, 0x1.9a05fcp+1f,
     /* node 2065 x */
-    -0x1.8p-57f, 0x1.c9b8dap-1f, 0x1.346c5ep-3f, -0x1.ff50bp-2f,
+    0x1.19999ap-55f, 0x1.c96502p-1f, 0x1.34683cp-3f, -0x1.ff300ap-2f,
     /* node 2065 y */
-    -0x0p+0f, 0x1.3e93dep-4f, 0x1.690d94p-1f, -0x1.95baf4p+0f,
+    0x1.333334p-58f, 0x1.3df4eep-4f, 0x1.6919bap-1f, -0x1.95b0bcp+0f,
     /* node 2065 z */
-    0x1p-56f, -0x1.1a3724p-2f, -0x1.4032c2p-1f, 0x1.975382p+1f,
+    -0x1.99999ap-58f, -0x1.193766p-2f, -0x1.406e3ep-1f, 0x1.96baaap+1f,
     /* node 2066 x */
-    -0x1.99999ap-57f, 0x1.e6142ep-1f, 0x1.316354p-3f, -0x1.0f52c8p-1f,
+    -0x1.4p-57f, 0x1.e59ec6p-1f, 0x1.31d8a2p-3f, -0x1.0ef0e4p-1f,
     /* node 2066 y */
-    0x1.99999ap-59f, 0x1.b26de4p-4f, 0x1.72c996p-1f, -0x1.904336p+0f,
+    0x1.99999ap-57f, 0x1.b28166p-4f, 0x1.72f402p-1f, -0x1.9016e4p+0f,
     /* node 2066 z */
-    -0x1p-56f, -0x1.5c0ffep-2f, -0x1.3d3f88p-1f, 0x1.a6b46ep+1f,
+    -0x1.b33334p-55f, -0x1.5a3572p-2f, -0x1.3d8714p-1f, 0x1.a62372p+1f,
     /* node 2067 x */
-    -0x1.333334p-57f, 0x1.daeab8p-1f, 0x1.12afc4p-3f, -0x1.fe13dp-2f,
+    -0x1.066666p-56f, 0x1.da0dbcp-1f, 0x1.137536p-3f, -0x1.fded6ap-2f,
     /* node 2067 y */
-    -0x1.19999ap-56f, 0x1.22f246p-3f, 0x1.7ea8ap-1f, -0x1.afce9p+0f,
+    0x1.333334p-57f, 0x1.233276p-3f, 0x1.7ebff2p-1f, -0x1.af9e2p+0f,
     /* node 2067 z */
-    0x1.99999ap-57f, -0x1.811e6ap-2f, -0x1.3ca128p-1f, 0x1.a9886ep+1f,
+    -0x1.266666p-54f, -0x1.8064ap-2f, -0x1.3cc9cep-1f, 0x1.a8e448p+1f,
     /* node 2069 x */
-    -0x1.4p-57f, 0x1.f5c41ep-1f, 0x1.5b085cp-3f, -0x1.2c623ap-1f,
+    -0x1.b33334p-58f, 0x1.f4d2fap-1f, 0x1.5bc758p-3f, -0x1.2c2d8cp-1f,
     /* node 2069 y */
-    0x1.99999ap-60f, 0x1.ab29bp-5f, 0x1.5b244p-1f, -0x1.5a70e8p+0f,
+    0x1.99999ap-61f, 0x1.ac9d3ap-5f, 0x1.5b3506p-1f, -0x1.5a50e4p+0f,
     /* node 2069 z */
-    -0x1.b33334p-55f, -0x1.275268p-2f, -0x1.3e011ap-1f, 0x1.9e66ep+1f,
+    -0x1.b33334p-55f, -0x1.26069ap-2f, -0x1.3e4dfp-1f, 0x1.9dcfc8p+1f,
     /* node 2070 x */
-    0x1.e66666p-58f, 0x1.14b88cp+0f, 0x1.605b0cp-3f, -0x1.47ad16p-1f,
+    0x1.99999ap-59f, 0x1.142bfcp+0f, 0x1.60fa08p-3f, -0x1.478cc4p-1f,
     /* node 2070 y */
-    0x1p-57f, 0x1.bd612p-5f, 0x1.5d1cfep-1f, -0x1.3207a2p+0f,
+    -0x1.333334p-58f, 0x1.b984c2p-5f, 0x1.5d154ap-1f, -0x1.31febep+0f,
     /* node 2070 z */
-    0x1.99999ap-59f, -0x1.5152fcp-2f, -0x1.38dc24p-1f, 0x1.a7f3f6p+1f,
+    -0x1.19999ap-55f, -0x1.4fe224p-2f, -0x1.391208p-1f, 0x1.a76566p+1f,
     /* node 2071 x */
-    0x1.a33334p-55f, 0x1.2ea014p+0f, 0x1.5e8002p-3f, -0x1.584aa8p-1f,
+    -0x1.cp-57f, 0x1.2ed04ap+0f, 0x1.5e6b62p-3f, -0x1.57b472p-1f,
     /* node 2071 y */
-    0x1.99999ap-60f, 0x1.7b60d6p-5f, 0x1.687732p-1f, -0x1.13b8e6p+0f,
+    0x1.666666p-57f, 0x1.794d3cp-5f, 0x1.68b54ap-1f, -0x1.13d502p+0f,
     /* node 2071 z */
-    -0x1.333334p-57f, -0x1.8e549ep-2f, -0x1.2dc756p-1f, 0x1.b15614p+1f,
+    -0x1.99999ap-57f, -0x1.8ce466p-2f, -0x1.2e2e58p-1f, 0x1.b0c67ap+1f,
     /* node 2072 x */
-    0x1.99999ap-56f, 0x1.12381ep+0f, 0x1.525254p-3f, -0x1.3ab3c4p-1f,
+    0x1.19999ap-58f, 0x1.11d7f4p+0f, 0x1.523c1cp-3f, -0x1.3a966cp-1f,
     /* node 2072 y */
-    -0x1.e66666p-57f, 0x1.580632p-4f, 0x1.6b89d8p-1f, -0x1.4d9008p+0f,
+    0x1.59999ap-56f, 0x1.593e3p-4f, 0x1.6b7746p-1f, -0x1.4d8096p+0f,
     /* node 2072 z */
-    -0x1.666666p-56f, -0x1.7819d4p-2f, -0x1.369002p-1f, 0x1.b0721ap+1f,
+    -0x1.ccccccp-56f, -0x1.78f16ep-2f, -0x1.3690cp-1f, 0x1.afbc52p+1f,
     /* node 2073 x */
-    -0x1.8p-57f, 0x1.00d5fap+0f, 0x1.395f64p-3f, -0x1.200d28p-1f,
+    0x1.333334p-59f, 0x1.009532p+0f, 0x1.3a49b8p-3f, -0x1.1fb22ep-1f,
     /* node 2073 y */
-    0x1p-57f, 0x1.b70e08p-4f, 0x1.739594p-1f, -0x1.793ccep+0f,
+    0x1.99999ap-59f, 0x1.b99e5p-4f, 0x1.73cdccp-1f, -0x1.7900e4p+0f,
     /* node 2073 z */
-    -0x1.333334p-57f, -0x1.730736p-2f, -0x1.3a9ffep-1f, 0x1.ae62cp+1f,
+    -0x1.ccccccp-56f, -0x1.70c92ep-2f, -0x1.3ae81cp-1f, 0x1.addcb4p+1f,
     /* node 2074 x */
-    0x1.266666p-56f, 0x1.215d24p+0f, 0x1.4a4a1cp-3f, -0x1.449c7p-1f,
+    -0x1.8cccccp-57f, 0x1.2014dp+0f, 0x1.4d2064p-3f, -0x1.44f57ap-1f,
     /* node 2074 y */
-    0x1p-57f, 0x1.5961fp-4f, 0x1.716d52p-1f, -0x1.3ffc6cp+0f,
+    0x1.ccccccp-57f, 0x1.606c7p-4f, 0x1.714f5ep-1f, -0x1.3f9964p+0f,
     /* node 2074 z */
-    -0x1p-55f, -0x1.9fec54p-2f, -0x1.31a488p-1f, 0x1.b7c686p+1f,
+    0x1p-56f, -0x1.9f861cp-2f, -0x1.31de66p-1f, 0x1.b717aep+1f,
     /* node 2075 x */
-    0x1.91999ap-54f, 0x1.556846p+0f, 0x1.37cad6p-3f, -0x1.6ec378p-1f,
+    0x1.4cccccp-56f, 0x1.551aa2p+0f, 0x1.38a08p-3f, -0x1.6e63a8p-1f,
     /* node 2075 y */
-    0x1p-58f, -0x1.67e8c2p-7f, 0x1.64bcc6p-1f, -0x1.a96d6cp-1f,
+    0x1.99999ap-61f, -0x1.6d3eecp-7f, 0x1.64e336p-1f, -0x1.a99d8p-1f,
     /* node 2075 z */
-    -0x1.99999ap-56f, -0x1.952aecp-2f, -0x1.260886p-1f, 0x1.a9118p+1f,
+    -0x0p+0f, -0x1.942e3ep-2f, -0x1.264c96p-1f, 0x1.a8742ep+1f,
     /* node 2076 x */
-    0x1.4p-57f, 0x1.457348p+0f, 0x1.5baeeep-3f, -0x1.68e606p-1f,
+    -0x1.e66666p-56f, 0x1.449bbcp+0f, 0x1.5c7b9cp-3f, -0x1.68f2dcp-1f,
     /* node 2076 y */
-    -0x1.19999ap-57f, 0x1.b709bcp-6f, 0x1.67f38p-1f, -0x1.d55986p-1f,
+    -0x1p-57f, 0x1.cfd8eap-6f, 0x1.67afp-1f, -0x1.d4bedcp-1f,
     /* node 2076 z */
-    -0x1.333334p-54f, -0x1.9e2da2p-2f, -0x1.282106p-1f, 0x1.ae0bbp+1f,
+    -0x1.4cccccp-55f, -0x1.9ddc9p-2f, -0x1.283bbp-1f, 0x1.ad5024p+1f,
     /* node 2085 x */
-    0x1.333334p-56f, 0x1.e9828p+0f, 0x1.9c2c0cp-7f, -0x1.9ddc3p-1f,
+    0x1.133334p-55f, 0x1.e924d4p+0f, 0x1.9a66ep-7f, -0x1.9d2f62p-1f,
     /* node 2085 y */
-    -0x1.f66666p-56f, -0x1.76e752p-3f, 0x1.dd157p-1f, -0x1.4584aep-2f,
+    0x1.8p-59f, -0x1.7857c6p-3f, 0x1.dde66cp-1f, -0x1.45094p-2f,
     /* node 2085 z */
-    -0x1.0cccccp-54f, -0x1.20d1bcp-1f, -0x1.02132p-1f, 0x1.aeaae6p+1f,
+    0x1.99999ap-58f, -0x1.2062a4p-1f, -0x1.028b58p-1f, 0x1.ae33fep+1f,
     /* node 2092 x */
-    -0x1.cp-56f, 0x1.91b2p+0f, -0x1.2575b2p-5f, -0x1.bb0e0ep-1f,
+    0x1.866666p-55f, 0x1.916efep+0f, -0x1.274872p-5f, -0x1.ba67ap-1f,
     /* node 2092 y */
-    -0x1.ep-57f, -0x1.8beaa2p-2f, 0x1.579b6p-1f, -0x1.e875dap-5f,
+    -0x1.04ccccp-56f, -0x1.8bfe2p-2f, 0x1.577684p-1f, -0x1.f1474p-5f,
     /* node 2092 z */
-    0x1.333334p-58f, -0x1.fbc684p-2f, -0x1.faff5cp-2f, 0x1.5f769ap+1f,
+    -0x0p+0f, -0x1.fa70f2p-2f, -0x1.fb93fap-2f, 0x1.5eee02p+1f,
     /* node 2093 x */
-    0x1.99999ap-59f, 0x1.a0e858p+0f, -0x1.118edcp-6f, -0x1.b3bdap-1f,
+    0x1.2cccccp-55f, 0x1.a07c32p+0f, -0x1.11f7ep-6f, -0x1.b2fe52p-1f,
     /* node 2093 y */
-    -0x1.8b3334p-56f, -0x1.64791ep-2f, 0x1.60f5e2p-1f, -0x1.0b0584p-3f,
+    0x1.19999ap-60f, -0x1.64c7ecp-2f, 0x1.60f71p-1f, -0x1.0bebc2p-3f,
     /* node 2093 z */
-    -0x1.266666p-55f, -0x1.e60e4ep-2f, -0x1.0767dcp-1f, 0x1.6ba9ecp+1f,
+    -0x1.666666p-56f, -0x1.e5a31p-2f, -0x1.079126p-1f, 0x1.6b2dc8p+1f,
     /* node 2094 x */
-    0x1.99999ap-59f, 0x1.c44fa4p+0f, -0x1.2a3b7ep-4f, -0x1.be332ap-1f,
+    0x1.b33334p-55f, 0x1.c37518p+0f, -0x1.297c1ap-4f, -0x1.bd970cp-1f,
     /* node 2094 y */
-    0x1.2p-58f, -0x1.61378cp-2f, 0x1.9bc552p-1f, -0x1.974edp-4f,
+    -0x1.7b3334p-56f, -0x1.61849ep-2f, 0x1.9b7cd8p-1f, -0x1.971b9ap-4f,
     /* node 2094 z */
-    -0x1.333334p-57f, -0x1.2cde9cp-1f, -0x1.e19116p-2f, 0x1.7b9d06p+1f,
+    -0x1.4cccccp-55f, -0x1.2cb76p-1f, -0x1.e23436p-2f, 0x1.7afa6cp+1f,
     /* node 2095 x */
-    -0x1.266666p-56f, 0x1.a3a8d6p+0f, -0x1.655086p-4f, -0x1.b73d26p-1f,
+    0x1.333334p-59f, 0x1.a35412p+0f, -0x1.6493d8p-4f, -0x1.b67736p-1f,
     /* node 2095 y */
-    -0x1.8c6666p-56f, -0x1.ad752cp-2f, 0x1.7be8acp-1f, -0x1.af6ea6p-7f,
+    -0x1.76ccccp-57f, -0x1.ac80cp-2f, 0x1.7b66e4p-1f, -0x1.d6648ep-7f,
     /* node 2095 z */
-    0x1.19999ap-55f, -0x1.19dce6p-1f, -0x1.dcaff6p-2f, 0x1.638f04p+1f,
+    -0x1.333334p-56f, -0x1.1937cep-1f, -0x1.dd5812p-2f, 0x1.630b1ap+1f,
     /* node 2096 x */
-    -0x1.233334p-54f, 0x1.83d4d4p+0f, -0x1.8ea07ap-4f, -0x1.b0b202p-1f,
+    -0x1.99999ap-58f, 0x1.8359e8p+0f, -0x1.8e0554p-4f, -0x1.b01a2p-1f,
     /* node 2096 y */
-    -0x1.266666p-58f, -0x1.da8c0ep-2f, 0x1.66196cp-1f, 0x1.1a6ceep-4f,
+    -0x1.0cccccp-56f, -0x1.d9c6b2p-2f, 0x1.655e26p-1f, 0x1.166e6ep-4f,
     /* node 2096 z */
-    -0x0p+0f, -0x1.09a0aap-1f, -0x1.cee3b2p-2f, 0x1.4c18b8p+1f,
+    0x1p-57f, -0x1.0908a4p-1f, -0x1.cfb04ap-2f, 0x1.4b65bap+1f,
     /* node 2097 x */
-    0x1.6cccccp-54f, 0x1.d64684p+0f, -0x1.40c762p-5f, -0x1.b8ef34p-1f,
+    0x1.39999ap-54f, 0x1.d634cap+0f, -0x1.441b1ap-5f, -0x1.b8220cp-1f,
     /* node 2097 y */
-    -0x1.cb3334p-56f, -0x1.158f56p-2f, 0x1.acbf86p-1f, -0x1.4d67acp-3f,
+    0x1.d9999ap-59f, -0x1.15366cp-2f, 0x1.ac31f4p-1f, -0x1.506f42p-3f,
     /* node 2097 z */
-    -0x1p-55f, -0x1.3123e2p-1f, -0x1.eb7f58p-2f, 0x1.8b1ca4p+1f,
+    0x1.333334p-56f, -0x1.308e8cp-1f, -0x1.eb4402p-2f, 0x1.8a6f72p+1f,
     /* node 2098 x */
-    0x1.ccccccp-58f, 0x1.cbb39ap+0f, -0x1.73cf82p-4f, -0x1.bb396ap-1f,
+    0x1.3e6666p-53f, 0x1.cb030ep+0f, -0x1.711d76p-4f, -0x1.bab91p-1f,
     /* node 2098 y */
-    -0x1.fp-58f, -0x1.79fedep-2f, 0x1.b05aa2p-1f, -0x1.486114p-4f,
+    -0x1.333334p-57f, -0x1.7989fp-2f, 0x1.b09feap-1f, -0x1.49982cp-4f,
     /* node 2098 z */
-    -0x1.733334p-55f, -0x1.3ec6cep-1f, -0x1.c8c4dcp-2f, 0x1.804318p+1f,
+    -0x1.4cccccp-56f, -0x1.3ea42ep-1f, -0x1.c8cdd2p-2f, 0x1.7fbc1ap+1f,
     /* node 2110 x */
-    0x1.4p-57f, 0x1.549802p+0f, -0x1.a2a286p-4f, -0x1.1e519cp-1f,
+    -0x1.59999ap-56f, 0x1.541bb2p+0f, -0x1.a05704p-4f, -0x1.1ddf2ep-1f,
     /* node 2110 y */
-    -0x1.b2p-56f, -0x1.04db5ep-2f, 0x1.5fabaep-1f, 0x1.107c84p-5f,
+    -0x1.c4p-56f, -0x1.039ba6p-2f, 0x1.5f5aap-1f, 0x1.0b6426p-5f,
     /* node 2110 z */
-    -0x1.8p-56f, -0x1.2514p-1f, -0x1.85f3b6p-2f, 0x1.48dd16p+1f,
+    -0x1.e66666p-56f, -0x1.2488bp-1f, -0x1.864c14p-2f, 0x1.484c1ap+1f,
     /* node 2117 x */
-    -0x1.99999ap-60f, 0x1.a5bad4p-1f, -0x1.92436ep-4f, -0x1.977adap-2f,
+    -0x1.d9999ap-57f, 0x1.a51d3ep-1f, -0x1.972f6ep-4f, -0x1.9763e6p-2f,
     /* node 2117 y */
-    0x1.333334p-56f, -0x1.c3bc84p-2f, 0x1.06ff6cp-1f, 0x1.e7db72p-4f,
+    -0x1.09999ap-57f, -0x1.c22eecp-2f, 0x1.066e4ep-1f, 0x1.df82bp-4f,
     /* node 2117 z */
-    0x1p-56f, -0x1.065ea6p-2f, -0x1.79a56ap-2f, 0x1.82218ep+0f,
+    -0x1.ccccccp-58f, -0x1.05e4ap-2f, -0x1.79e72cp-2f, 0x1.81162p+0f,
     /* node 2118 x */
-    0x1.19999ap-58f, 0x1.bdb972p-1f, -0x1.a0c6p-4f, -0x1.b3aef6p-2f,
+    0x1.1p-55f, 0x1.bcf9f8p-1f, -0x1.9f8474p-4f, -0x1.b3d43p-2f,
     /* node 2118 y */
-    -0x1.cp-56f, -0x1.c6f5dap-2f, 0x1.0cd32p-1f, 0x1.159a22p-3f,
+    -0x1.7p-56f, -0x1.c5b022p-2f, 0x1.0ca826p-1f, 0x1.125134p-3f,
     /* node 2118 z */
-    -0x1.99999ap-58f, -0x1.23e822p-2f, -0x1.7ea1bp-2f, 0x1.999584p+0f,
+    -0x1.ccccccp-56f, -0x1.237b38p-2f, -0x1.7e48bap-2f, 0x1.98d3b4p+0f,
     /* node 2119 x */
-    0x1.89999ap-55f, 0x1.ed007cp-1f, -0x1.cd7cdep-4f, -0x1.f7ed54p-2f,
+    -0x1.99999ap-57f, 0x1.ebef28p-1f, -0x1.cc1f7ep-4f, -0x1.f786cap-2f,
     /* node 2119 y */
-    -0x1.3b3334p-55f, -0x1.c5b89ap-2f, 0x1.123d06p-1f, 0x1.1f779p-3f,
+    -0x1.833334p-56f, -0x1.c49d5cp-2f, 0x1.11982ap-1f, 0x1.1bf65cp-3f,
     /* node 2119 z */
-    -0x1.666666p-57f, -0x1.547e1ap-2f, -0x1.915bfap-2f, 0x1.c524e4p+0f,
+    0x1.99999ap-60f, -0x1.538c92p-2f, -0x1.92b546p-2f, 0x1.c4248p+0f,
     /* node 2120 x */
-    0x1.3p-55f, 0x1.0c33b6p+0f, -0x1.004848p-3f, -0x1.19216cp-1f,
+    -0x1p-55f, 0x1.0b8afap+0f, -0x1.f9e4bp-4f, -0x1.1919fp-1f,
     /* node 2120 y */
-    -0x1.126666p-55f, -0x1.db94b6p-2f, 0x1.26e5cp-1f, 0x1.1a847cp-3f,
+    0x1.8p-59f, -0x1.da981ap-2f, 0x1.2685b4p-1f, 0x1.17df9ap-3f,
     /* node 2120 z */
-    -0x1.b33334p-56f, -0x1.71ab56p-2f, -0x1.9bf99cp-2f, 0x1.e53f84p+0f,
+    -0x1.266666p-55f, -0x1.70a5fap-2f, -0x1.9d2d9p-2f, 0x1.e44332p+0f,
     /* node 2121 x */
-    0x1.f33334p-56f, 0x1.18192ep+0f, -0x1.026ed8p-3f, -0x1.20b5dcp-1f,
+    -0x1.ap-56f, 0x1.1737c4p+0f, -0x1.fe6b0ap-4f, -0x1.208ffep-1f,
     /* node 2121 y */
-    -0x1.b33334p-58f, -0x1.d12878p-2f, 0x1.2cdd32p-1f, 0x1.265648p-3f,
+    0x1.166666p-57f, -0x1.cfeab8p-2f, 0x1.2beab4p-1f, 0x1.24e0aep-3f,
     /* node 2121 z */
-    -0x1p-56f, -0x1.99f7eep-2f, -0x1.9aa17p-2f, 0x1.0125ep+1f,
+    -0x1.266666p-55f, -0x1.980ce8p-2f, -0x1.9c89d4p-2f, 0x1.008bc8p+1f,
     /* node 2122 x */
-    -0x1.0cccccp-56f, 0x1.0482fep+0f, -0x1.f436bep-4f, -0x1.085cdep-1f,
+    0x1.cp-56f, 0x1.03dce4p+0f, -0x1.ef05p-4f, -0x1.080016p-1f,
     /* node 2122 y */
-    -0x1.e9999ap-57f, -0x1.c73b88p-2f, 0x1.1a89d8p-1f, 0x1.358144p-3f,
+    -0x1.d9999ap-58f, -0x1.c5cb2cp-2f, 0x1.19dc8ap-1f, 0x1.32104ap-3f,
     /* node 2122 z */
-    -0x1.666666p-57f, -0x1.7e1766p-2f, -0x1.8aa646p-2f, 0x1.e0922cp+0f,
+    -0x1.666666p-56f, -0x1.7c8e62p-2f, -0x1.8c2f0ap-2f, 0x1.df9abp+0f,
     /* node 2123 x */
-    0x1.79999ap-56f, 0x1.0a32cap+0f, -0x1.e53862p-4f, -0x1.090686p-1f,
+    0x1.fp-55f, 0x1.099226p+0f, -0x1.e3a236p-4f, -0x1.08a2b2p-1f,
     /* node 2123 y */
-    -0x1.a4ccccp-56f, -0x1.a767a4p-2f, 0x1.1ee882p-1f, 0x1.2425fp-3f,
+    -0x1.8cccccp-58f, -0x1.a669dcp-2f, 0x1.1df5c2p-1f, 0x1.204ffap-3f,
     /* node 2123 z */
-    -0x1.99999ap-57f, -0x1.9cc386p-2f, -0x1.8d0eeep-2f, 0x1.f6aab2p+0f,
+    -0x1.666666p-56f, -0x1.9abad8p-2f, -0x1.9045e6p-2f, 0x1.f58c78p+0f,
     /* node 2124 x */
-    0x1.01999ap-53f, 0x1.2e3022p+0f, -0x1.02d494p-3f, -0x1.33e644p-1f,
+    0x1.8p-56f, 0x1.2ca1p+0f, -0x1.03518p-3f, -0x1.33f2f8p-1f,
     /* node 2124 y */
-    -0x1.bp-56f, -0x1.b986p-2f, 0x1.3c41bp-1f, 0x1.011ebp-3f,
+    0x1.6cccccp-58f, -0x1.b6f284p-2f, 0x1.389cd8p-1f, 0x1.fd24f6p-4f,
     /* node 2124 z */
-    -0x1.ccccccp-57f, -0x1.cbbfb6p-2f, -0x1.a5404cp-2f, 0x1.15420ep+1f,
+    0x1.333334p-58f, -0x1.caa1bap-2f, -0x1.a5cbecp-2f, 0x1.1400eap+1f,
     /* node 2130 x */
-    0x1.19999ap-57f, 0x1.68e082p-1f, -0x1.41c03cp-4f, -0x1.42bf1ap-2f,
+    -0x1.3b3334p-55f, 0x1.67f47cp-1f, -0x1.411b68p-4f, -0x1.41eb86p-2f,
     /* node 2130 y */
-    -0x1.2cccccp-57f, -0x1.875f9ap-2f, 0x1.abedcep-2f, 0x1.f9cc18p-4f,
+    0x1.99999ap-60f, -0x1.86b83p-2f, 0x1.abf10ap-2f, 0x1.f37818p-4f,
     /* node 2130 z */
-    -0x1.4p-56f, -0x1.08d6eep-2f, -0x1.494e32p-2f, 0x1.5b04ep+0f,
+    -0x1.333334p-57f, -0x1.080c56p-2f, -0x1.4a0daap-2f, 0x1.5a218p+0f,
     /* node 2131 x */
-    0x1.a66666p-58f, 0x1.96661p-1f, -0x1.6fdbfep-4f, -0x1.7cacc6p-2f,
+    0x1.233334p-56f, 0x1.955e36p-1f, -0x1.7071a2p-4f, -0x1.7b9e82p-2f,
     /* node 2131 y */
-    -0x1.e66666p-58f, -0x1.917a06p-2f, 0x1.cfe5c2p-2f, 0x1.145858p-3f,
+    0x1.8cccccp-57f, -0x1.908p-2f, 0x1.cedb58p-2f, 0x1.11aba8p-3f,
     /* node 2131 z */
-    -0x1.266666p-56f, -0x1.2c00d8p-2f, -0x1.657608p-2f, 0x1.84e21ap+0f,
+    0x1.e66666p-57f, -0x1.2afd06p-2f, -0x1.66229ep-2f, 0x1.83e26p+0f,
     /* node 2132 x */
-    0x1.5cccccp-55f, 0x1.dfaa76p-1f, -0x1.cee66p-4f, -0x1.d6bd7ep-2f,
+    -0x1.99999ap-59f, 0x1.de69fcp-1f, -0x1.ce94ap-4f, -0x1.d66912p-2f,
     /* node 2132 y */
-    -0x1.3f3334p-55f, -0x1.ac71fep-2f, 0x1.08fa7ap-1f, 0x1.3b11c6p-3f,
+    0x1.666666p-61f, -0x1.aafeep-2f, 0x1.07f712p-1f, 0x1.37c31ap-3f,
     /* node 2132 z */
-    0x1.333334p-57f, -0x1.6c7926p-2f, -0x1.7fabeap-2f, 0x1.c5ae94p+0f,
+    -0x1.ccccccp-57f, -0x1.6bcba8p-2f, -0x1.805202p-2f, 0x1.c49ce6p+0f,
     /* node 2133 x */
-    0x1.b33334p-59f, 0x1.9b18c8p-1f, -0x1.514d8cp-4f, -0x1.6d77c8p-2f,
+    0x1.38p-55f, 0x1.9a27d2p-1f, -0x1.51849ap-4f, -0x1.6d368ap-2f,
     /* node 2133 y */
-    -0x1.766666p-57f, -0x1.70f1d2p-2f, 0x1.b92906p-2f, 0x1.3b9c52p-3f,
+    -0x1.7cccccp-57f, -0x1.70391ap-2f, 0x1.b8b93p-2f, 0x1.37772p-3f,
     /* node 2133 z */
-    -0x1.666666p-55f, -0x1.53c27cp-2f, -0x1.5fdb3cp-2f, 0x1.9b22dap+0f,
+    -0x1.99999ap-60f, -0x1.5346dp-2f, -0x1.60ab0ep-2f, 0x1.9a3762p+0f,
     /* node 2134 x */
-    0x1.59999ap-56f, 0x1.bc63eap-1f, -0x1.564726p-4f, -0x1.83a922p-2f,
+    0x1.0cccccp-55f, 0x1.bb17c8p-1f, -0x1.572deep-4f, -0x1.83008ap-2f,
     /* node 2134 y */
-    0x1.39999ap-58f, -0x1.512f66p-2f, 0x1.c65a9p-2f, 0x1.23be8ap-3f,
+    -0x1.58ccccp-55f, -0x1.50016ep-2f, 0x1.c55f5cp-2f, 0x1.20c9acp-3f,
     /* node 2134 z */
-    0x1.666666p-57f, -0x1.7347d4p-2f, -0x1.73c394p-2f, 0x1.bf8b1cp+0f,
+    -0x1.ccccccp-57f, -0x1.71ceacp-2f, -0x1.74622p-2f, 0x1.be6322p+0f,
     /* node 2139 x */
-    0x1.b33334p-59f, 0x1.53818ap-1f, -0x1.ec160ep-5f, -0x1.1a56f2p-2f,
+    0x1.4p-56f, 0x1.52831p-1f, -0x1.edec06p-5f, -0x1.199872p-2f,
     /* node 2139 y */
-    -0x1.433334p-57f, -0x1.4dd9e4p-2f, 0x1.57b11ap-2f, 0x1.4511d6p-3f,
+    -0x1.b33334p-58f, -0x1.4cbddp-2f, 0x1.575c1ap-2f, 0x1.413f76p-3f,
     /* node 2139 z */
-    -0x1.4cccccp-57f, -0x1.244a62p-2f, -0x1.3699ecp-2f, 0x1.5c1818p+0f,
+    -0x1.ccccccp-58f, -0x1.23813ep-2f, -0x1.3713ccp-2f, 0x1.5b0cbep+0f,
     /* node 2140 x */
-    -0x1.a66666p-58f, 0x1.7c47d8p-1f, -0x1.10a0f8p-4f, -0x1.3e6ccep-2f,
+    0x1.99999ap-56f, 0x1.7b4a8ep-1f, -0x1.112d2ep-4f, -0x1.3d904cp-2f,
     /* node 2140 y */
-    0x1.066666p-58f, -0x1.3d4446p-2f, 0x1.714886p-2f, 0x1.27ff8cp-3f,
+    0x1.f9999ap-58f, -0x1.3c2056p-2f, 0x1.71540ep-2f, 0x1.24563ep-3f,
     /* node 2140 z */
-    -0x1.4cccccp-56f, -0x1.4d55d6p-2f, -0x1.544e76p-2f, 0x1.8ad098p+0f,
+    -0x1.333334p-58f, -0x1.4c4b4ep-2f, -0x1.54fa86p-2f, 0x1.89c8fp+0f,
     /* node 2233 x */
-    0x1.acccccp-57f, 0x1.69caeep-1f, 0x1.c0481p-5f, -0x1.1bec6ap-2f,
+    -0x1.59999ap-58f, 0x1.6937f4p-1f, 0x1.c1efd6p-5f, -0x1.1bc67ap-2f,
     /* node 2233 y */
-    0x1.99999ap-58f, 0x1.1274dap-2f, 0x1.aacafep-1f, -0x1.24e98p+1f,
+    0x1.0cccccp-55f, 0x1.120a9ep-2f, 0x1.aaf8a8p-1f, -0x1.24c34ap+1f,
     /* node 2233 z */
-    -0x1.533334p-54f, -0x1.99d066p-2f, -0x1.3bcb32p-1f, 0x1.81aa1p+1f,
+    -0x1.666666p-56f, -0x1.98e1b4p-2f, -0x1.3bf70cp-1f, 0x1.81186ap+1f,
     /* node 2234 x */
-    -0x1.2p-57f, 0x1.7bd0ap-1f, 0x1.02801ep-4f, -0x1.469e82p-2f,
+    0x1.8cccccp-58f, 0x1.7b28bcp-1f, 0x1.03463p-4f, -0x1.468696p-2f,
     /* node 2234 y */
-    0x1.ccccccp-57f, 0x1.0d1fdcp-2f, 0x1.a726f4p-1f, -0x1.1cea14p+1f,
+    -0x1.ccccccp-57f, 0x1.0cecfp-2f, 0x1.a7543cp-1f, -0x1.1cc03cp+1f,
     /* node 2234 z */
-    0x1.333334p-57f, -0x1.a8ab8p-2f, -0x1.3ee67p-1f, 0x1.8bccbep+1f,
+    -0x1.666666p-55f, -0x1.a79b98p-2f, -0x1.3f151ap-1f, 0x1.8b36aap+1f,
     /* node 2235 x */
-    0x1.3cccccp-55f, 0x1.56f886p-1f, 0x1.7d0f2ap-5f, -0x1.e70e7cp-3f,
+    0x1.5cccccp-55f, 0x1.5642c8p-1f, 0x1.7f0254p-5f, -0x1.e7169p-3f,
     /* node 2235 y */
-    0x1.ccccccp-57f, 0x1.0a47b8p-2f, 0x1.ad18cep-1f, -0x1.2a3988p+1f,
+    -0x1.99999ap-58f, 0x1.09ff6cp-2f, 0x1.ad3e5ep-1f, -0x1.2a1102p+1f,
     /* node 2235 z */
-    -0x1p-56f, -0x1.7d7b44p-2f, -0x1.3898aep-1f, 0x1.755cb8p+1f,
+    -0x1.b33334p-56f, -0x1.7cc4dcp-2f, -0x1.38b7dp-1f, 0x1.74c8cep+1f,
     /* node 2240 x */
-    0x1.b33334p-56f, 0x1.b66546p-1f, 0x1.a369a8p-4f, -0x1.b5218cp-2f,
+    0x1.333334p-56f, 0x1.b5e2b4p-1f, 0x1.a41b7ep-4f, -0x1.b4e41cp-2f,
     /* node 2240 y */
-    0x1.99999ap-58f, 0x1.9dd17p-3f, 0x1.925a6cp-1f, -0x1.ef229p+0f,
+    -0x1.99999ap-60f, 0x1.9d4854p-3f, 0x1.928538p-1f, -0x1.eee6fcp+0f,
     /* node 2240 z */
-    -0x1.99999ap-59f, -0x1.a2c176p-2f, -0x1.4011bap-1f, 0x1.a2a548p+1f,
+    -0x1.99999ap-55f, -0x1.a1c68p-2f, -0x1.403a6p-1f, 0x1.a2121cp+1f,
     /* node 2241 x */
-    -0x1.59999ap-57f, 0x1.8b4ffp-1f, 0x1.41cc12p-4f, -0x1.65169ep-2f,
+    0x1.8p-59f, 0x1.8aa9cp-1f, 0x1.42ceep-4f, -0x1.64dd34p-2f,
     /* node 2241 y */
-    -0x1p-57f, 0x1.f1825cp-3f, 0x1.9fa102p-1f, -0x1.11c93ap+1f,
+    -0x1.99999ap-60f, 0x1.f0f7a6p-3f, 0x1.9fd46ap-1f, -0x1.11ab2p+1f,
     /* node 2241 z */
-    -0x1.333334p-56f, -0x1.a655c2p-2f, -0x1.3fa77ep-1f, 0x1.93de7p+1f,
+    -0x1.4cccccp-55f, -0x1.a55eccp-2f, -0x1.3fd462p-1f, 0x1.934b62p+1f,
     /* node 2242 x */
-    0x1.0cccccp-57f, 0x1.a4c1f4p-1f, 0x1.51c8f4p-4f, -0x1.95668ap-2f,
+    0x1.4p-57f, 0x1.a4228ep-1f, 0x1.52aaep-4f, -0x1.94fc1cp-2f,
     /* node 2242 y */
-    -0x1p-57f, 0x1.0629e6p-2f, 0x1.9f354cp-1f, -0x1.0a935ap+1f,
+    0x1.19999ap-55f, 0x1.05e94ap-2f, 0x1.9f5a64p-1f, -0x1.0a7398p+1f,
     /* node 2242 z */
-    -0x1.99999ap-55f, -0x1.d38c36p-2f, -0x1.4166dap-1f, 0x1.a1038cp+1f,
+    -0x1.19999ap-55f, -0x1.d25c9ep-2f, -0x1.4191a6p-1f, 0x1.a078a6p+1f,
     /* node 2243 x */
-    0x1.d33334p-56f, 0x1.021912p+0f, 0x1.27395p-3f, -0x1.1acdf8p-1f,
+    -0x1.ccccccp-58f, 0x1.0142bap+0f, 0x1.292a8cp-3f, -0x1.1afceap-1f,
     /* node 2243 y */
-    0x1.99999ap-57f, 0x1.18e762p-3f, 0x1.7d9e9cp-1f, -0x1.88fab6p+0f,
+    0x1.333334p-58f, 0x1.188ce4p-3f, 0x1.7dca3cp-1f, -0x1.88e636p+0f,
     /* node 2243 z */
-    -0x1p-56f, -0x1.9db2fcp-2f, -0x1.38b5dcp-1f, 0x1.b50aep+1f,
+    -0x1.333334p-55f, -0x1.9d658p-2f, -0x1.38ccccp-1f, 0x1.b46af6p+1f,
     /* node 2244 x */
-    0x1.d9999ap-56f, 0x1.f645cp-1f, 0x1.e21d42p-4f, -0x1.0a2144p-1f,
+    0x1.133334p-55f, 0x1.f542fap-1f, 0x1.e47394p-4f, -0x1.0a0c1p-1f,
     /* node 2244 y */
-    0x1.ccccccp-57f, 0x1.8b3982p-3f, 0x1.8d2082p-1f, -0x1.b5b53ap+0f,
+    0x1p-55f, 0x1.8b7e5ap-3f, 0x1.8d5608p-1f, -0x1.b581p+0f,
     /* node 2244 z */
-    -0x1.333334p-57f, -0x1.e1147cp-2f, -0x1.3ad9d4p-1f, 0x1.b94cbcp+1f,
+    -0x1.99999ap-56f, -0x1.dfe456p-2f, -0x1.3b05f6p-1f, 0x1.b8b224p+1f,
     /* node 2245 x */
-    -0x1.333334p-60f, 0x1.d0ed3ap-1f, 0x1.bfb822p-4f, -0x1.e0b136p-2f,
+    0x1.f66666p-55f, 0x1.d02f2cp-1f, 0x1.c0f85ep-4f, -0x1.e060fcp-2f,
     /* node 2245 y */
-    0x1p-57f, 0x1.9a1d24p-3f, 0x1.8f66ap-1f, -0x1.d753d2p+0f,
+    -0x1.333334p-57f, 0x1.9a64bap-3f, 0x1.8f8d0cp-1f, -0x1.d7131ep+0f,
     /* node 2245 z */
-    -0x1.333334p-57f, -0x1.bec9b2p-2f, -0x1.3f2302p-1f, 0x1.ad9db4p+1f,
+    0x1p-56f, -0x1.bd906cp-2f, -0x1.3f54e8p-1f, 0x1.ad0296p+1f,
     /* node 2248 x */
-    0x1.333334p-59f, 0x1.107388p+0f, 0x1.329a72p-3f, -0x1.2aec84p-1f,
+    0x1.f9999ap-56f, 0x1.10bfdcp+0f, 0x1.318a02p-3f, -0x1.2a0d7cp-1f,
     /* node 2248 y */
-    -0x1.59999ap-56f, 0x1.d050ecp-4f, 0x1.77b5e4p-1f, -0x1.6a2264p+0f,
+    -0x1.99999ap-61f, 0x1.cb3bdap-4f, 0x1.77e3e6p-1f, -0x1.6a52b4p+0f,
     /* node 2248 z */
-    -0x1p-54f, -0x1.9c1c66p-2f, -0x1.369608p-1f, 0x1.b71376p+1f,
+    -0x1.99999ap-55f, -0x1.97bd78p-2f, -0x1.374784p-1f, 0x1.b69fbp+1f,
     /* node 2249 x */
-    -0x1.19999ap-57f, 0x1.1de42p+0f, 0x1.31ddaep-3f, -0x1.353252p-1f,
+    0x1.933334p-56f, 0x1.1f938ep+0f, 0x1.2e11a8p-3f, -0x1.33d16p-1f,
     /* node 2249 y */
-    0x1.4cccccp-57f, 0x1.f0c3b8p-4f, 0x1.7e4728p-1f, -0x1.59d07p+0f,
+    -0x1.99999ap-58f, 0x1.ecdb98p-4f, 0x1.7e8458p-1f, -0x1.59ef7p+0f,
     /* node 2249 z */
-    -0x1p-56f, -0x1.be4eb2p-2f, -0x1.3237f6p-1f, 0x1.bf6bfcp+1f,
+    -0x1p-56f, -0x1.bc22c6p-2f, -0x1.32a74cp-1f, 0x1.bef482p+1f,
     /* node 2250 x */
-    0x1.99999ap-55f, 0x1.127e6cp+0f, 0x1.20c5d4p-3f, -0x1.275146p-1f,
+    -0x1.ccccccp-57f, 0x1.10defap+0f, 0x1.24075cp-3f, -0x1.27afbcp-1f,
     /* node 2250 y */
-    0x1.a66666p-56f, 0x1.0ec92p-3f, 0x1.7e77e2p-1f, -0x1.75781cp+0f,
+    -0x1.19999ap-57f, 0x1.0f7438p-3f, 0x1.7e7412p-1f, -0x1.75628ep+0f,
     /* node 2250 z */
-    0x1.99999ap-59f, -0x1.b573ap-2f, -0x1.34f5p-1f, 0x1.bc97f4p+1f,
+    0x1.666666p-56f, -0x1.b5706p-2f, -0x1.34fb74p-1f, 0x1.bbfa3ep+1f,
     /* node 2251 x */
-    0x1.44ccccp-54f, 0x1.2bf38p+0f, 0x1.36d4dap-3f, -0x1.410564p-1f,
+    0x1.ccccccp-57f, 0x1.2a71cp+0f, 0x1.3a558ep-3f, -0x1.417ebep-1f,
     /* node 2251 y */
-    0x1.4cccccp-57f, 0x1.c5be9ap-4f, 0x1.7f229ep-1f, -0x1.41b24cp+0f,
+    -0x1.4cccccp-57f, 0x1.c3e46cp-4f, 0x1.7f570ap-1f, -0x1.41b046p+0f,
     /* node 2251 z */
-    -0x1p-54f, -0x1.ba7664p-2f, -0x1.2ecc9p-1f, 0x1.c29206p+1f,
+    -0x1.266666p-54f, -0x1.b9d668p-2f, -0x1.2f16e4p-1f, 0x1.c1f5c4p+1f,
     /* node 2252 x */
-    -0x1p-57f, 0x1.09b712p+0f, 0x1.0fab14p-3f, -0x1.1efd08p-1f,
+    0x1.b33334p-56f, 0x1.08d53cp+0f, 0x1.116b46p-3f, -0x1.1f3c4p-1f,
     /* node 2252 y */
-    -0x1.4cccccp-56f, 0x1.4579e8p-3f, 0x1.850816p-1f, -0x1.8e7682p+0f,
+    0x1.e66666p-56f, 0x1.45e75ap-3f, 0x1.8543bp-1f, -0x1.8e40cap+0f,
     /* node 2252 z */
-    -0x1p-56f, -0x1.d1f8cp-2f, -0x1.36b2dep-1f, 0x1.bd6058p+1f,
+    -0x1.333334p-55f, -0x1.d124fap-2f, -0x1.36e4fp-1f, 0x1.bca8eep+1f,
     /* node 2253 x */
-    0x1.c33334p-55f, 0x1.2e7858p+0f, 0x1.5418ecp-3f, -0x1.4ef6f6p-1f,
+    -0x1.333334p-56f, 0x1.2e1c52p+0f, 0x1.54f9b4p-3f, -0x1.4ee654p-1f,
     /* node 2253 y */
-    -0x1.4cccccp-57f, 0x1.55b31cp-4f, 0x1.77494p-1f, -0x1.29fe8ap+0f,
+    -0x1.ccccccp-58f, 0x1.541672p-4f, 0x1.774a8ep-1f, -0x1.2a039ep+0f,
     /* node 2253 z */
-    -0x1.8p-55f, -0x1.b1dfp-2f, -0x1.2cb6p-1f, 0x1.bb486cp+1f,
+    -0x1.333334p-56f, -0x1.b06fa8p-2f, -0x1.2d11fep-1f, 0x1.bac306p+1f,
     /* node 2254 x */
-    0x1.733334p-57f, 0x1.2b515ep+0f, 0x1.29068ep-3f, -0x1.405926p-1f,
+    0x1.e66666p-57f, 0x1.2a6392p+0f, 0x1.2b0cb6p-3f, -0x1.407d98p-1f,
     /* node 2254 y */
-    0x1.333334p-59f, 0x1.f842fcp-4f, 0x1.8757dcp-1f, -0x1.4db152p+0f,
+    -0x1.733334p-56f, 0x1.fd8424p-4f, 0x1.8799dcp-1f, -0x1.4d717ep+0f,
     /* node 2254 z */
-    -0x1.19999ap-55f, -0x1.e2fc72p-2f, -0x1.2c88a8p-1f, 0x1.c82d3cp+1f,
+    -0x1.99999ap-59f, -0x1.e136f2p-2f, -0x1.2cdb94p-1f, 0x1.c78c8ep+1f,
     /* node 2255 x */
-    0x1.0b3334p-54f, 0x1.1eca84p+0f, 0x1.184d48p-3f, -0x1.2fddf2p-1f,
+    0x1.8p-56f, 0x1.1e75d2p+0f, 0x1.18a2b8p-3f, -0x1.2ff86ap-1f,
     /* node 2255 y */
-    0x1.e66666p-57f, 0x1.2f8fe2p-3f, 0x1.89ccap-1f, -0x1.6ad37p+0f,
+    -0x1.ccccccp-57f, 0x1.305662p-3f, 0x1.8a0372p-1f, -0x1.6a713ap+0f,
     /* node 2255 z */
-    0x1.b33334p-55f, -0x1.eccf8ap-2f, -0x1.30d6acp-1f, 0x1.c6637cp+1f,
+    -0x1.8p-55f, -0x1.edfb84p-2f, -0x1.30f6aep-1f, 0x1.c5858p+1f,
     /* node 2257 x */
-    -0x1.566666p-55f, 0x1.3dba0cp+0f, 0x1.5d253ap-3f, -0x1.5b897ap-1f,
+    0x1.c66666p-54f, 0x1.3d2cbp+0f, 0x1.5eee76p-3f, -0x1.5b1bd4p-1f,
     /* node 2257 y */
-    0x1.99999ap-58f, 0x1.5f8fbcp-4f, 0x1.75606cp-1f, -0x1.08a3cap+0f,
+    -0x1.333334p-57f, 0x1.61e75cp-4f, 0x1.756c46p-1f, -0x1.08637ep+0f,
     /* node 2257 z */
-    -0x1.333334p-55f, -0x1.b3c24cp-2f, -0x1.27a016p-1f, 0x1.bbf86ap+1f,
+    -0x1.ccccccp-55f, -0x1.b1c75p-2f, -0x1.280666p-1f, 0x1.bb6a3ep+1f,
     /* node 2258 x */
-    0x1.9cccccp-55f, 0x1.5ee20ap+0f, 0x1.3fe14p-3f, -0x1.68b5bap-1f,
+    0x1.2cccccp-55f, 0x1.5eff8cp+0f, 0x1.3f69cp-3f, -0x1.68520cp-1f,
     /* node 2258 y */
-    0x1p-58f, 0x1.9525fcp-6f, 0x1.775c24p-1f, -0x1.c15e0ep-1f,
+    -0x0p+0f, 0x1.8ec1fp-6f, 0x1.77ce12p-1f, -0x1.c1b77ap-1f,
     /* node 2258 z */
-    -0x1.666666p-56f, -0x1.cc1edap-2f, -0x1.1fabap-1f, 0x1.b543bcp+1f,
+    -0x1.4cccccp-55f, -0x1.cab51cp-2f, -0x1.2022bep-1f, 0x1.b4c1f6p+1f,
     /* node 2259 x */
-    0x1.14ccccp-54f, 0x1.579a9cp+0f, 0x1.457038p-3f, -0x1.5bd3c4p-1f,
+    0x1.99999ap-61f, 0x1.571ad6p+0f, 0x1.4604bp-3f, -0x1.5ba9b8p-1f,
     /* node 2259 y */
-    -0x1.99999ap-59f, 0x1.019122p-4f, 0x1.7ea5bap-1f, -0x1.e99a4ep-1f,
+    -0x1.333334p-58f, 0x1.03df5ep-4f, 0x1.7ef54p-1f, -0x1.e941bp-1f,
     /* node 2259 z */
-    -0x1.333334p-55f, -0x1.b4b424p-2f, -0x1.2332bp-1f, 0x1.bcf984p+1f,
+    -0x1.666666p-55f, -0x1.b330dcp-2f, -0x1.23b61p-1f, 0x1.bc71b4p+1f,
     /* node 2260 x */
-    0x1.4b3334p-54f, 0x1.36a53ep+0f, 0x1.4c20e2p-3f, -0x1.4da536p-1f,
+    0x1.c66666p-56f, 0x1.36435ap+0f, 0x1.4ce17ep-3f, -0x1.4d8a0ep-1f,
     /* node 2260 y */
-    -0x1.666666p-58f, 0x1.b3330ap-4f, 0x1.808cbap-1f, -0x1.297b76p+0f,
+    -0x1.333334p-58f, 0x1.b62928p-4f, 0x1.808b4cp-1f, -0x1.294594p+0f,
     /* node 2260 z */
-    0x1.333334p-57f, -0x1.bc85fap-2f, -0x1.29f922p-1f, 0x1.c57a9ap+1f,
+    -0x1.666666p-56f, -0x1.bce4aep-2f, -0x1.29f078p-1f, 0x1.c4be7ep+1f,
     /* node 2261 x */
-    0x1.4p-55f, 0x1.4e58bap+0f, 0x1.3fc348p-3f, -0x1.5ac1d6p-1f,
+    0x1.333334p-55f, 0x1.4ddc46p+0f, 0x1.410998p-3f, -0x1.5a8dc4p-1f,
     /* node 2261 y */
-    -0x1.8p-57f, 0x1.59d608p-4f, 0x1.86affap-1f, -0x1.07d47ap+0f,
+    0x1.333334p-58f, 0x1.571944p-4f, 0x1.866ebep-1f, -0x1.07f28ep+0f,
     /* node 2261 z */
-    -0x1.666666p-55f, -0x1.cd50bp-2f, -0x1.2264c4p-1f, 0x1.c58514p+1f,
+    -0x1.333334p-57f, -0x1.cc0702p-2f, -0x1.223bc8p-1f, 0x1.c51382p+1f,
     /* node 2262 x */
-    -0x1.a9999ap-55f, 0x1.527576p+0f, 0x1.225882p-3f, -0x1.544af6p-1f,
+    0x1.19999ap-54f, 0x1.50889cp+0f, 0x1.2638bcp-3f, -0x1.55df14p-1f,
     /* node 2262 y */
-    -0x1p-57f, 0x1.ed6694p-4f, 0x1.95451ep-1f, -0x1.1245acp+0f,
+    0x1.333334p-57f, 0x1.f34e42p-4f, 0x1.9567aap-1f, -0x1.1211bp+0f,
     /* node 2262 z */
-    -0x1.333334p-55f, -0x1.f932b4p-2f, -0x1.1bc3c2p-1f, 0x1.d027ep+1f,
+    -0x1.333334p-57f, -0x1.fadc2ap-2f, -0x1.1bd54p-1f, 0x1.cf47p+1f,
     /* node 2263 x */
-    -0x1.d33334p-56f, 0x1.7cffcap+0f, 0x1.12c5fcp-3f, -0x1.78142cp-1f,
+    0x1.ecccccp-56f, 0x1.7ccae6p+0f, 0x1.131be6p-3f, -0x1.778e18p-1f,
     /* node 2263 y */
-    0x1.19999ap-58f, -0x1.f86214p-6f, 0x1.7ed4d6p-1f, -0x1.67c938p-1f,
+    0x1.cp-57f, -0x1.fa11f4p-6f, 0x1.7e8cp-1f, -0x1.67f758p-1f,
     /* node 2263 z */
-    -0x0p+0f, -0x1.b02c86p-2f, -0x1.1bc6c6p-1f, 0x1.ae1e2ap+1f,
+    0x1.666666p-56f, -0x1.af18bap-2f, -0x1.1be1e2p-1f, 0x1.ad8a84p+1f,
     /* node 2264 x */
-    0x1.6b3334p-54f, 0x1.6dfdf6p+0f, 0x1.35ca94p-3f, -0x1.605bcep-1f,
+    0x1p-59f, 0x1.6dcddp+0f, 0x1.36acp-3f, -0x1.5fec8ap-1f,
     /* node 2264 y */
-    0x1.99999ap-61f, 0x1.0191e4p-4f, 0x1.90b2bep-1f, -0x1.d6aaaap-1f,
+    -0x1.99999ap-58f, 0x1.01baep-4f, 0x1.911a0ap-1f, -0x1.d67d1ap-1f,
     /* node 2264 z */
-    -0x1.ccccccp-56f, -0x1.c6a2eap-2f, -0x1.1a3dc6p-1f, 0x1.c6f1p+1f,
+    -0x1p-55f, -0x1.c59672p-2f, -0x1.1a50e2p-1f, 0x1.c670f6p+1f,
     /* node 2265 x */
-    -0x1.d9999ap-56f, 0x1.807b0ep+0f, 0x1.2fb8p-3f, -0x1.68e514p-1f,
+    0x1.ecccccp-55f, 0x1.803b36p+0f, 0x1.302a98p-3f, -0x1.687784p-1f,
     /* node 2265 y */
-    0x1p-57f, 0x1.0f82f2p-4f, 0x1.9c62d2p-1f, -0x1.a896a8p-1f,
+    -0x1.99999ap-59f, 0x1.0da2b6p-4f, 0x1.9c5816p-1f, -0x1.a81f78p-1f,
     /* node 2265 z */
-    -0x1.0cccccp-54f, -0x1.d4c8eap-2f, -0x1.159a54p-1f, 0x1.c642d8p+1f,
+    -0x1.99999ap-57f, -0x1.d3af6cp-2f, -0x1.159bf4p-1f, 0x1.c5a75ep+1f,
     /* node 2266 x */
-    0x1.51999ap-54f, 0x1.6f6334p+0f, 0x1.275734p-3f, -0x1.650d42p-1f,
+    0x1.78p-54f, 0x1.6fd94ap+0f, 0x1.270c5p-3f, -0x1.6403c8p-1f,
     /* node 2266 y */
-    0x1.266666p-56f, 0x1.80414ap-4f, 0x1.9d1b7cp-1f, -0x1.d98eb6p-1f,
+    0x1.99999ap-59f, 0x1.82bf66p-4f, 0x1.9cec96p-1f, -0x1.d999b8p-1f,
     /* node 2266 z */
-    -0x1.666666p-56f, -0x1.f33362p-2f, -0x1.1521fcp-1f, 0x1.cc4634p+1f,
+    -0x0p+0f, -0x1.f0d4fp-2f, -0x1.15c04p-1f, 0x1.cba088p+1f,
     /* node 2269 x */
-    -0x1.99999ap-57f, 0x1.bf082ep+0f, 0x1.d654cap-4f, -0x1.792318p-1f,
+    0x1.e9999ap-55f, 0x1.beb782p+0f, 0x1.db1dc4p-4f, -0x1.78a3e6p-1f,
     /* node 2269 y */
-    -0x1.19999ap-57f, 0x1.7ab1d6p-5f, 0x1.d94888p-1f, -0x1.627658p-1f,
+    -0x1.4p-56f, 0x1.8acc68p-5f, 0x1.da2cd2p-1f, -0x1.62c2p-1f,
     /* node 2269 z */
-    -0x1.b33334p-55f, -0x1.0cf0acp-1f, -0x1.09ee46p-1f, 0x1.d1befcp+1f,
+    -0x0p+0f, -0x1.0ccbe6p-1f, -0x1.0a6b5p-1f, 0x1.d1411ep+1f,
     /* node 2270 x */
-    0x1.666666p-56f, 0x1.f1bd1p+0f, 0x1.1fc80ep-4f, -0x1.8ede7p-1f,
+    0x1.99999ap-60f, 0x1.f180b4p+0f, 0x1.1e2264p-4f, -0x1.8e5946p-1f,
     /* node 2270 y */
-    -0x1.59999ap-56f, -0x1.0f79fcp-10f, 0x1.0751fp+0f, -0x1.1ac7cp-1f,
+    -0x1.19999ap-55f, -0x1.04ed16p-9f, 0x1.073e8ap+0f, -0x1.1a92ecp-1f,
     /* node 2270 z */
-    -0x1.333334p-56f, -0x1.2a1a02p-1f, -0x1.01f95cp-1f, 0x1.d3e1f2p+1f,
+    -0x1.333334p-55f, -0x1.2949a2p-1f, -0x1.01df3cp-1f, 0x1.d332cp+1f,
     /* node 2271 x */
-    0x1.466666p-55f, 0x1.8775c8p+0f, 0x1.1cd12ep-3f, -0x1.6888f2p-1f,
+    -0x1.b9999ap-56f, 0x1.877edp+0f, 0x1.1c7b2p-3f, -0x1.681bb2p-1f,
     /* node 2271 y */
-    -0x1.e66666p-57f, 0x1.3e7afp-4f, 0x1.ad100ap-1f, -0x1.b1d096p-1f,
+    -0x1.666666p-58f, 0x1.4025a4p-4f, 0x1.ad7236p-1f, -0x1.b1d398p-1f,
     /* node 2271 z */
-    -0x1.99999ap-59f, -0x1.edb85cp-2f, -0x1.102424p-1f, 0x1.cf7346p+1f,
+    -0x1.99999ap-58f, -0x1.ec9a42p-2f, -0x1.108a06p-1f, 0x1.cecdfap+1f,
     /* node 2275 x */
-    0x1.3p-54f, 0x1.06d1a2p+1f, -0x1.fd9074p-8f, -0x1.a3b588p-1f,
+    0x1.4p-54f, 0x1.06a12cp+1f, -0x1.edec24p-8f, -0x1.a349a2p-1f,
     /* node 2275 y */
-    -0x1.933334p-56f, -0x1.81e1b4p-3f, 0x1.12b90ep+0f, -0x1.1af62ep-2f,
+    -0x1.19999ap-58f, -0x1.7fa316p-3f, 0x1.12bb28p+0f, -0x1.1c397ep-2f,
     /* node 2275 z */
-    0x1.19999ap-55f, -0x1.3bb00ap-1f, -0x1.e5f3c8p-2f, 0x1.c3f35ap+1f,
+    -0x1.19999ap-55f, -0x1.3b5de6p-1f, -0x1.e62c38p-2f, 0x1.c3469ap+1f,
     /* node 2276 x */
-    0x1.5p-54f, 0x1.000b72p+1f, -0x1.ee5452p-6f, -0x1.a823fap-1f,
+    0x1.166666p-54f, 0x1.000da2p+1f, -0x1.06183ap-5f, -0x1.a74bp-1f,
     /* node 2276 y */
-    -0x1.4cccccp-59f, -0x1.c56fe6p-3f, 0x1.0622eap+0f, -0x1.d873a8p-3f,
+    -0x1.f9999ap-57f, -0x1.caa66ep-3f, 0x1.0706d2p+0f, -0x1.d56ed6p-3f,
     /* node 2276 z */
-    0x1.333334p-56f, -0x1.31eb36p-1f, -0x1.f0cc1p-2f, 0x1.b28b5ap+1f,
+    -0x0p+0f, -0x1.3117f4p-1f, -0x1.f1c6b2p-2f, 0x1.b24eb4p+1f,
     /* node 2277 x */
-    0x1.866666p-53f, 0x1.145c54p+1f, 0x1.a9e27p-6f, -0x1.977be2p-1f,
+    0x1.ep-54f, 0x1.1429f2p+1f, 0x1.aaf69p-6f, -0x1.96b0dp-1f,
     /* node 2277 y */
-    0x1.99999ap-60f, -0x1.c71a6cp-5f, 0x1.28a1c2p+0f, -0x1.d39b1cp-2f,
+    -0x1.733334p-57f, -0x1.c82dbep-5f, 0x1.28fb2ap+0f, -0x1.d39c4ep-2f,
     /* node 2277 z */
-    -0x1.ccccccp-56f, -0x1.5b2f1ap-1f, -0x1.db8e24p-2f, 0x1.e96ba8p+1f,
+    -0x1.99999ap-56f, -0x1.5a9358p-1f, -0x1.dc455cp-2f, 0x1.e8efaap+1f,
     /* node 2285 x */
-    0x1.6p-53f, 0x1.f46faep+0f, -0x1.013ccap-4f, -0x1.b238f4p-1f,
+    -0x1.066666p-55f, 0x1.f41fb8p+0f, -0x1.fb0938p-5f, -0x1.b19b18p-1f,
     /* node 2285 y */
-    -0x1.7p-57f, -0x1.2424d2p-2f, 0x1.e3852cp-1f, -0x1.5b9464p-3f,
+    -0x1.a1999ap-56f, -0x1.22eb86p-2f, 0x1.e3d31ap-1f, -0x1.5e839p-3f,
     /* node 2285 z */
-    -0x1.333334p-55f, -0x1.466ae2p-1f, -0x1.c85674p-2f, 0x1.9e97fcp+1f,
+    0x1p-56f, -0x1.464176p-1f, -0x1.c7ab2cp-2f, 0x1.9e1f32p+1f,
     /* node 2286 x */
-    0x1.ccccccp-57f, 0x1.e74c24p+0f, -0x1.53f012p-4f, -0x1.a5435cp-1f,
+    0x1.3cccccp-54f, 0x1.e6b0dcp+0f, -0x1.509b7cp-4f, -0x1.a4b1fap-1f,
     /* node 2286 y */
-    -0x1.026666p-55f, -0x1.2f5b94p-2f, 0x1.e253eap-1f, -0x1.71120ap-4f,
+    -0x1.5cp-55f, -0x1.2edc5ep-2f, 0x1.e221f4p-1f, -0x1.7342e6p-4f,
     /* node 2286 z */
-    -0x1.99999ap-58f, -0x1.482fa4p-1f, -0x1.ac82eep-2f, 0x1.9942c8p+1f,
+    -0x1p-55f, -0x1.47e9f4p-1f, -0x1.ac6348p-2f, 0x1.98a0f8p+1f,
     /* node 2287 x */
-    0x1.6cccccp-54f, 0x1.079106p+1f, -0x1.5564bep-5f, -0x1.9bda94p-1f,
+    -0x1.59999ap-55f, 0x1.0775d8p+1f, -0x1.531c32p-5f, -0x1.9abe1cp-1f,
     /* node 2287 y */
-    -0x1.366666p-55f, -0x1.011bdep-2f, 0x1.0e16eep+0f, -0x1.6cd7c8p-3f,
+    -0x1.41999ap-56f, -0x1.01ae3ep-2f, 0x1.0e5bfap+0f, -0x1.6d36a2p-3f,
     /* node 2287 z */
-    0x1.99999ap-58f, -0x1.46ea12p-1f, -0x1.c49a04p-2f, 0x1.b5ada6p+1f,
+    -0x1.8p-55f, -0x1.4619fap-1f, -0x1.c5bb6p-2f, 0x1.b5375ep+1f,
     /* node 2288 x */
-    0x1.333334p-54f, 0x1.067b4cp+1f, -0x1.d6a06p-5f, -0x1.91c1p-1f,
+    -0x1p-58f, 0x1.06510ap+1f, -0x1.d52a22p-5f, -0x1.910512p-1f,
     /* node 2288 y */
-    -0x1.833334p-57f, -0x1.e17p-3f, 0x1.0ea238p+0f, -0x1.3a8932p-3f,
+    -0x1.8b3334p-56f, -0x1.e0b74p-3f, 0x1.0ec08p+0f, -0x1.3a91aep-3f,
     /* node 2288 z */
-    0x1.ccccccp-56f, -0x1.4ce0a2p-1f, -0x1.ba8e0cp-2f, 0x1.b26a6p+1f,
+    -0x1.ccccccp-55f, -0x1.4c6072p-1f, -0x1.bae72p-2f, 0x1.b1ed66p+1f,
     /* node 2290 x */
-    0x1.b66666p-55f, 0x1.5102bap+0f, -0x1.2151bap-3f, -0x1.5d2b28p-1f,
+    -0x1.433334p-54f, 0x1.50d41ap+0f, -0x1.2262f8p-3f, -0x1.5c3b84p-1f,
     /* node 2290 y */
-    -0x1.9p-57f, -0x1.b90aa2p-2f, 0x1.5891f4p-1f, 0x1.ae4854p-4f,
+    -0x1.666666p-60f, -0x1.b8446ep-2f, 0x1.589d86p-1f, 0x1.a667eap-4f,
     /* node 2290 z */
-    0x1.333334p-58f, -0x1.071a5p-1f, -0x1.ad5a7p-2f, 0x1.3300ep+1f,
+    0x1.666666p-57f, -0x1.0661ap-1f, -0x1.ae360cp-2f, 0x1.327cd8p+1f,
     /* node 2295 x */
-    -0x1.766666p-55f, 0x1.3a7242p+0f, -0x1.fa6d8ep-4f, -0x1.256368p-1f,
+    0x1.033334p-55f, 0x1.39dfe8p+0f, -0x1.f2c064p-4f, -0x1.247948p-1f,
     /* node 2295 y */
-    -0x1.e4ccccp-57f, -0x1.59223cp-2f, 0x1.45894p-1f, 0x1.7ea4cap-4f,
+    -0x1.333334p-56f, -0x1.5871fep-2f, 0x1.46eeb2p-1f, 0x1.7a99c8p-4f,
     /* node 2295 z */
-    -0x1.8p-56f, -0x1.033024p-1f, -0x1.8cb1fcp-2f, 0x1.2c703ep+1f,
+    -0x1.ccccccp-55f, -0x1.02c72ap-1f, -0x1.8beep-2f, 0x1.2c2578p+1f,
     /* node 2296 x */
-    -0x1.1p-55f, 0x1.1c57ccp+0f, -0x1.cfe8b2p-4f, -0x1.08cc14p-1f,
+    -0x1.233334p-55f, 0x1.1b9f6p+0f, -0x1.d12ed6p-4f, -0x1.08666ap-1f,
     /* node 2296 y */
-    -0x1.166666p-57f, -0x1.57594cp-2f, 0x1.25231ep-1f, 0x1.da542cp-4f,
+    -0x1.133334p-57f, -0x1.57395cp-2f, 0x1.25cbccp-1f, 0x1.d37684p-4f,
     /* node 2296 z */
-    -0x1.99999ap-58f, -0x1.d84e96p-2f, -0x1.88f934p-2f, 0x1.13b17cp+1f,
+    -0x1.99999ap-56f, -0x1.d7b9d2p-2f, -0x1.88d31cp-2f, 0x1.131be4p+1f,
     /* node 2297 x */
-    -0x1.99999ap-59f, 0x1.2cedfcp+0f, -0x1.6a5302p-4f, -0x1.e38d1cp-2f,
+    -0x1.fcccccp-55f, 0x1.2c9978p+0f, -0x1.663f4cp-4f, -0x1.e14c46p-2f,
     /* node 2297 y */
-    -0x1.1p-58f, -0x1.cdc5bcp-3f, 0x1.2beaacp-1f, 0x1.880cd8p-5f,
+    0x1.19999ap-59f, -0x1.cbfb18p-3f, 0x1.2c35bp-1f, 0x1.7fa55ap-5f,
     /* node 2297 z */
-    -0x1p-57f, -0x1.06db02p-1f, -0x1.8c7eaep-2f, 0x1.2cd154p+1f,
+    -0x1.666666p-57f, -0x1.06195ap-1f, -0x1.8ca424p-2f, 0x1.2c645cp+1f,
     /* node 2299 x */
-    0x1.4cccccp-56f, 0x1.07b6f8p+0f, -0x1.442558p-4f, -0x1.9dc028p-2f,
+    0x1.6p-55f, 0x1.0714eap+0f, -0x1.435c3ep-4f, -0x1.9d7abap-2f,
     /* node 2299 y */
-    -0x1.25999ap-55f, -0x1.e7784ap-3f, 0x1.f8d9d6p-2f, 0x1.2b44bep-4f,
+    -0x1.bp-58f, -0x1.e5995ep-3f, 0x1.f8f174p-2f, 0x1.255394p-4f,
     /* node 2299 z */
-    -0x1.4cccccp-55f, -0x1.d2a4ap-2f, -0x1.835358p-2f, 0x1.0d6ed8p+1f,
+    -0x1.ccccccp-56f, -0x1.d21a08p-2f, -0x1.831136p-2f, 0x1.0cd61p+1f,
     /* node 2303 x */
-    -0x1.ccccccp-56f, 0x1.972e6p-1f, -0x1.ee7c6ep-5f, -0x1.30074ep-2f,
+    0x1.79999ap-56f, 0x1.960596p-1f, -0x1.f04612p-5f, -0x1.2f415ap-2f,
     /* node 2303 y */
-    -0x1.59999ap-58f, -0x1.0a8964p-2f, 0x1.6b152ep-2f, 0x1.e0f2dcp-4f,
+    0x1.19999ap-58f, -0x1.09c3fep-2f, 0x1.6ac8b2p-2f, 0x1.d90d7cp-4f,
     /* node 2303 z */
-    -0x1.333334p-58f, -0x1.7548b6p-2f, -0x1.6877fep-2f, 0x1.b3129p+0f,
+    0x1.99999ap-59f, -0x1.744c54p-2f, -0x1.68f27cp-2f, 0x1.b1f96p+0f,
     /* node 2304 x */
-    0x1.cp-57f, 0x1.b2728ap-1f, -0x1.c3e41ap-5f, -0x1.2955c8p-2f,
+    0x1.7e6666p-55f, 0x1.b13fa6p-1f, -0x1.c39266p-5f, -0x1.28a046p-2f,
     /* node 2304 y */
-    0x1.6cccccp-58f, -0x1.c0175ap-3f, 0x1.7599a2p-2f, 0x1.7cd54ep-4f,
+    -0x1.4b3334p-57f, -0x1.beb49ep-3f, 0x1.75cd0ep-2f, 0x1.78637cp-4f,
     /* node 2304 z */
-    -0x1.8p-56f, -0x1.95a72ap-2f, -0x1.7baa96p-2f, 0x1.d331dp+0f,
+    0x1.8p-56f, -0x1.94bb4ap-2f, -0x1.7bf456p-2f, 0x1.d20cdp+0f,
     /* node 2309 x */
-    -0x1.dcccccp-56f, 0x1.706202p-1f, -0x1.170c8ap-5f, -0x1.89764cp-3f,
+    0x1.d66666p-57f, 0x1.6f7384p-1f, -0x1.179e1cp-5f, -0x1.8745aap-3f,
     /* node 2309 y */
-    -0x1.5p-57f, -0x1.589a3ap-3f, 0x1.044ffep-2f, 0x1.6ddd9ap-4f,
+    -0x1.8e6666p-57f, -0x1.56d33ap-3f, 0x1.047afp-2f, 0x1.666ac8p-4f,
     /* node 2309 z */
-    -0x1.333334p-57f, -0x1.715de2p-2f, -0x1.772b12p-2f, 0x1.a93ebap+0f,
+    -0x1.666666p-56f, -0x1.707164p-2f, -0x1.77971p-2f, 0x1.a81628p+0f,
     /* node 2375 x */
-    0x1.bcccccp-56f, 0x1.4a6172p-1f, 0x1.0f339ap-5f, -0x1.baed1ep-3f,
+    0x1.7p-56f, 0x1.49d032p-1f, 0x1.1000bep-5f, -0x1.baa38p-3f,
     /* node 2375 y */
-    -0x0p+0f, 0x1.27262ap-2f, 0x1.b4641ap-1f, -0x1.32f22ap+1f,
+    -0x1.99999ap-56f, 0x1.26b052p-2f, 0x1.b496c2p-1f, -0x1.32c91ap+1f,
     /* node 2375 z */
-    0x1p-57f, -0x1.8be408p-2f, -0x1.36b718p-1f, 0x1.6d329ep+1f,
+    -0x1.8p-56f, -0x1.8b0afp-2f, -0x1.36e9fap-1f, 0x1.6c9cd4p+1f,
     /* node 2377 x */
-    0x1.333334p-59f, 0x1.45249ap-1f, 0x1.9b713ap-6f, -0x1.b30c38p-3f,
+    -0x1.14ccccp-55f, 0x1.4490a8p-1f, 0x1.9da618p-6f, -0x1.b32346p-3f,
     /* node 2377 y */
-    -0x1.ccccccp-57f, 0x1.483a78p-2f, 0x1.b989e6p-1f, -0x1.389098p+1f,
+    0x1.133334p-54f, 0x1.47ce54p-2f, 0x1.b9bc7ep-1f, -0x1.386536p+1f,
     /* node 2377 z */
-    -0x1.333334p-58f, -0x1.a7b44ep-2f, -0x1.36abbep-1f, 0x1.6a4622p+1f,
+    -0x1.b33334p-56f, -0x1.a6ef2ap-2f, -0x1.36dd3p-1f, 0x1.69b512p+1f,
     /* node 2380 x */
-    0x1.666666p-59f, 0x1.49a3e4p-1f, 0x1.679bep-6f, -0x1.ccb9dcp-3f,
+    -0x1.79999ap-57f, 0x1.48ecacp-1f, 0x1.6accd4p-6f, -0x1.cc3352p-3f,
     /* node 2380 y */
-    0x1.99999ap-60f, 0x1.689e4p-2f, 0x1.bdfaf6p-1f, -0x1.3af70ep+1f,
+    0x1.b33334p-56f, 0x1.683ea8p-2f, 0x1.be2ecap-1f, -0x1.3ad422p+1f,
     /* node 2380 z */
-    -0x1p-57f, -0x1.cae06ap-2f, -0x1.3912cap-1f, 0x1.6c8a4p+1f,
+    -0x1.ccccccp-56f, -0x1.c9ebc4p-2f, -0x1.394c84p-1f, 0x1.6bf31ep+1f,
     /* node 2381 x */
-    -0x1.f33334p-56f, 0x1.626f6p-1f, 0x1.84b2e4p-5f, -0x1.0f6772p-2f,
+    0x1.44ccccp-55f, 0x1.61bb2ep-1f, 0x1.870ea4p-5f, -0x1.0f69fp-2f,
     /* node 2381 y */
-    -0x1.333334p-58f, 0x1.2e4678p-2f, 0x1.b09052p-1f, -0x1.2bdab2p+1f,
+    -0x1.99999ap-58f, 0x1.2dcfbcp-2f, 0x1.b0c89cp-1f, -0x1.2bb2c6p+1f,
     /* node 2381 z */
-    -0x1.333334p-58f, -0x1.b018b8p-2f, -0x1.3c456cp-1f, 0x1.7f1caap+1f,
+    -0x1.666666p-56f, -0x1.af020cp-2f, -0x1.3c78e6p-1f, 0x1.7e8338p+1f,
     /* node 2382 x */
-    -0x1.333334p-56f, 0x1.560efap-1f, 0x1.157c1ap-5f, -0x1.f3d92p-3f,
+    0x1.966666p-55f, 0x1.555e9ap-1f, 0x1.169be8p-5f, -0x1.f3a8f8p-3f,
     /* node 2382 y */
-    -0x1.99999ap-57f, 0x1.3ed7bcp-2f, 0x1.b64baap-1f, -0x1.330c5p+1f,
+    0x1.99999ap-57f, 0x1.3e6682p-2f, 0x1.b67aap-1f, -0x1.32e78p+1f,
     /* node 2382 z */
-    -0x1.19999ap-56f, -0x1.ae8b3ap-2f, -0x1.3ac0bap-1f, 0x1.74ee9ap+1f,
+    0x1.99999ap-57f, -0x1.ad947p-2f, -0x1.3b083p-1f, 0x1.745e56p+1f,
     /* node 2383 x */
-    -0x1.8p-57f, 0x1.67cd1ep-1f, 0x1.587168p-5f, -0x1.1fe484p-2f,
+    -0x1.4cccccp-59f, 0x1.6717f6p-1f, 0x1.5a7fe4p-5f, -0x1.1fc628p-2f,
     /* node 2383 y */
-    0x1.59999ap-55f, 0x1.46dd16p-2f, 0x1.b3cc82p-1f, -0x1.2e82c2p+1f,
+    -0x1.99999ap-59f, 0x1.4678d6p-2f, 0x1.b40186p-1f, -0x1.2e5d98p+1f,
     /* node 2383 z */
-    0x1.99999ap-57f, -0x1.cd00cap-2f, -0x1.3df678p-1f, 0x1.81f906p+1f,
+    0x1p-57f, -0x1.cbd454p-2f, -0x1.3e38bp-1f, 0x1.815cbp+1f,
     /* node 2384 x */
-    0x1.21999ap-55f, 0x1.7fd96p-1f, 0x1.d882cp-5f, -0x1.522954p-2f,
+    0x1.2e6666p-55f, 0x1.7f5586p-1f, 0x1.d9496ep-5f, -0x1.52062cp-2f,
     /* node 2384 y */
-    0x1.ccccccp-57f, 0x1.3e1c86p-2f, 0x1.ad207cp-1f, -0x1.23236cp+1f,
+    0x1.99999ap-58f, 0x1.3dca26p-2f, 0x1.ad452cp-1f, -0x1.230b78p+1f,
     /* node 2384 z */
-    -0x1.4cccccp-55f, -0x1.e526p-2f, -0x1.413766p-1f, 0x1.923636p+1f,
+    -0x1.99999ap-59f, -0x1.e4305ep-2f, -0x1.416524p-1f, 0x1.91a86cp+1f,
     /* node 2385 x */
-    0x1.a33334p-56f, 0x1.5679a8p-1f, 0x1.0c8d16p-5f, -0x1.016f4p-2f,
+    -0x1.cp-57f, 0x1.55c906p-1f, 0x1.0dbb94p-5f, -0x1.015b0ap-2f,
     /* node 2385 y */
-    0x1.666666p-56f, 0x1.5980cap-2f, 0x1.b92602p-1f, -0x1.358b52p+1f,
+    0x1.e66666p-56f, 0x1.58f414p-2f, 0x1.b958b4p-1f, -0x1.3562cep+1f,
     /* node 2385 z */
-    -0x1.19999ap-56f, -0x1.cd794ep-2f, -0x1.3b1d86p-1f, 0x1.77451ap+1f,
+    -0x1.666666p-56f, -0x1.cc55aep-2f, -0x1.3b62ccp-1f, 0x1.76aff2p+1f,
     /* node 2386 x */
-    -0x1.666666p-60f, 0x1.6c118cp-1f, 0x1.37e058p-5f, -0x1.2d567ap-2f,
+    -0x1.39999ap-57f, 0x1.6b5512p-1f, 0x1.3a4694p-5f, -0x1.2d1c52p-2f,
     /* node 2386 y */
-    -0x1.4cccccp-56f, 0x1.6dc244p-2f, 0x1.b7d906p-1f, -0x1.3109eap+1f,
+    -0x1.19999ap-56f, 0x1.6d6488p-2f, 0x1.b81302p-1f, -0x1.30f1eap+1f,
     /* node 2386 z */
-    0x1.666666p-57f, -0x1.fb417ap-2f, -0x1.3f5176p-1f, 0x1.846664p+1f,
+    0x1.19999ap-56f, -0x1.fa6b2ap-2f, -0x1.3f7d1ap-1f, 0x1.83d3ap+1f,
     /* node 2387 x */
-    0x1.6cccccp-55f, 0x1.7a9bd4p-1f, 0x1.9173acp-5f, -0x1.4a0254p-2f,
+    -0x1.766666p-56f, 0x1.7a33e8p-1f, 0x1.907a32p-5f, -0x1.4a9c22p-2f,
     /* node 2387 y */
-    0x1.99999ap-59f, 0x1.5a985cp-2f, 0x1.b265dap-1f, -0x1.289a5ap+1f,
+    -0x1p-56f, 0x1.5a18bep-2f, 0x1.b29e34p-1f, -0x1.2877d4p+1f,
     /* node 2387 z */
-    -0x1.666666p-56f, -0x1.fd18fep-2f, -0x1.408e02p-1f, 0x1.8e95cep+1f,
+    0x1.ccccccp-56f, -0x1.fbba84p-2f, -0x1.40d7c2p-1f, 0x1.8df1d2p+1f,
     /* node 2398 x */
-    0x1.4p-58f, 0x1.8d5068p-1f, 0x1.df217ep-5f, -0x1.6a4cc8p-2f,
+    0x1.733334p-56f, 0x1.8c554cp-1f, 0x1.e369a8p-5f, -0x1.699176p-2f,
     /* node 2398 y */
-    0x1.19999ap-56f, 0x1.469928p-2f, 0x1.ac1494p-1f, -0x1.1f55e4p+1f,
+    -0x1.333334p-58f, 0x1.461caep-2f, 0x1.ac5ccap-1f, -0x1.1f2b72p+1f,
     /* node 2398 z */
-    -0x1p-56f, -0x1.fe9d0cp-2f, -0x1.41ce68p-1f, 0x1.97d412p+1f,
+    0x1.99999ap-58f, -0x1.fd70bp-2f, -0x1.420178p-1f, 0x1.973b1ep+1f,
     /* node 2399 x */
-    0x1p-56f, 0x1.bdc598p-1f, 0x1.775ee4p-4f, -0x1.c0662p-2f,
+    -0x1.99999ap-61f, 0x1.bd1072p-1f, 0x1.784ed4p-4f, -0x1.c01dfep-2f,
     /* node 2399 y */
-    0x1.99999ap-59f, 0x1.f3e01ap-3f, 0x1.99f5bp-1f, -0x1.fbd0bap+0f,
+    0x1.333334p-58f, 0x1.f36cd8p-3f, 0x1.9a1f6cp-1f, -0x1.fba3e8p+0f,
     /* node 2399 z */
-    -0x1.99999ap-59f, -0x1.e36308p-2f, -0x1.400596p-1f, 0x1.aa5d0cp+1f,
+    -0x1p-55f, -0x1.e22138p-2f, -0x1.402954p-1f, 0x1.a9d31ap+1f,
     /* node 2400 x */
-    -0x1.133334p-56f, 0x1.93ad06p-1f, 0x1.16feaap-4f, -0x1.7537cap-2f,
+    0x1.7cccccp-56f, 0x1.92c718p-1f, 0x1.186a2ap-4f, -0x1.751e18p-2f,
     /* node 2400 y */
-    -0x1p-56f, 0x1.283698p-2f, 0x1.a72b8ap-1f, -0x1.184ffp+1f,
+    0x1.99999ap-60f, 0x1.27f1a2p-2f, 0x1.a7640ep-1f, -0x1.182cccp+1f,
     /* node 2400 z */
-    -0x1.666666p-55f, -0x1.e50296p-2f, -0x1.414f3p-1f, 0x1.9a920ep+1f,
+    0x1.99999ap-58f, -0x1.e3fbfp-2f, -0x1.417bdap-1f, 0x1.99fc2cp+1f,
     /* node 2401 x */
-    0x1.19999ap-58f, 0x1.d614a8p-1f, 0x1.98138ep-4f, -0x1.ebb392p-2f,
+    0x1.d9999ap-56f, 0x1.d56b46p-1f, 0x1.994ea6p-4f, -0x1.eb4798p-2f,
     /* node 2401 y */
-    -0x1.333334p-56f, 0x1.f23d02p-3f, 0x1.96f11p-1f, -0x1.e0606ap+0f,
+    0x1.ccccccp-57f, 0x1.f21854p-3f, 0x1.972c68p-1f, -0x1.e0248ep+0f,
     /* node 2401 z */
-    -0x1.666666p-55f, -0x1.01ed2p-1f, -0x1.3eb1fp-1f, 0x1.b3b54p+1f,
+    -0x1.b33334p-55f, -0x1.01318ep-1f, -0x1.3ee396p-1f, 0x1.b321b6p+1f,
     /* node 2402 x */
-    -0x1.cp-56f, 0x1.a85c42p-1f, 0x1.37fafap-4f, -0x1.9d38f4p-2f,
+    -0x1.333334p-58f, 0x1.a7c9ecp-1f, 0x1.37e828p-4f, -0x1.9de182p-2f,
     /* node 2402 y */
-    0x1.666666p-56f, 0x1.25ed9ep-2f, 0x1.a38c12p-1f, -0x1.0e08bap+1f,
+    -0x1p-55f, 0x1.25a2dcp-2f, 0x1.a3c0a2p-1f, -0x1.0dea2cp+1f,
     /* node 2402 z */
-    -0x1.99999ap-59f, -0x1.00b542p-1f, -0x1.412444p-1f, 0x1.a4f9c4p+1f,
+    -0x1.99999ap-56f, -0x1.0031f2p-1f, -0x1.41556p-1f, 0x1.a46052p+1f,
     /* node 2403 x */
-    -0x1.99999ap-57f, 0x1.c0cb5p-1f, 0x1.626cfcp-4f, -0x1.c39e48p-2f,
+    0x1.1p-55f, 0x1.bff85ep-1f, 0x1.644f84p-4f, -0x1.c2b722p-2f,
     /* node 2403 y */
-    0x1.99999ap-59f, 0x1.0ff6a4p-2f, 0x1.9d72f8p-1f, -0x1.ff80bcp+0f,
+    0x1.99999ap-58f, 0x1.0fc8b2p-2f, 0x1.9da6aep-1f, -0x1.ff70a6p+0f,
     /* node 2403 z */
-    -0x1.666666p-56f, -0x1.02e52cp-1f, -0x1.403258p-1f, 0x1.acb9aap+1f,
+    -0x1.ccccccp-55f, -0x1.0237ep-1f, -0x1.4046b8p-1f, 0x1.ac45c2p+1f,
     /* node 2404 x */
-    0x1.ap-56f, 0x1.d16cfcp-1f, 0x1.6f4f5cp-4f, -0x1.e38002p-2f,
+    0x1.4p-55f, 0x1.d0bba2p-1f, 0x1.707e6p-4f, -0x1.e3023cp-2f,
     /* node 2404 y */
-    -0x1.4cccccp-56f, 0x1.142702p-2f, 0x1.9b9572p-1f, -0x1.ef188ep+0f,
+    0x1p-56f, 0x1.13f75p-2f, 0x1.9bb48p-1f, -0x1.ef061cp+0f,
     /* node 2404 z */
-    -0x1.19999ap-55f, -0x1.10f0b4p-1f, -0x1.3f1638p-1f, 0x1.b2d7bcp+1f,
+    -0x1.99999ap-59f, -0x1.105ae6p-1f, -0x1.3f37p-1f, 0x1.b24f68p+1f,
     /* node 2405 x */
-    0x1.733334p-55f, 0x1.a566ecp-1f, 0x1.02dd86p-4f, -0x1.96dc2ap-2f,
+    -0x1.e66666p-57f, 0x1.a4c3e6p-1f, 0x1.03a66ap-4f, -0x1.95b9f8p-2f,
     /* node 2405 y */
-    -0x1.333334p-58f, 0x1.51b318p-2f, 0x1.aa76fap-1f, -0x1.15b25p+1f,
+    0x1.4p-55f, 0x1.5175dap-2f, 0x1.aa9feap-1f, -0x1.159836p+1f,
     /* node 2405 z */
-    -0x1.99999ap-55f, -0x1.17709ep-1f, -0x1.43a332p-1f, 0x1.a2ba8ep+1f,
+    -0x1.99999ap-58f, -0x1.16c4e4p-1f, -0x1.43d1d8p-1f, 0x1.a23c52p+1f,
     /* node 2406 x */
-    0x1.b9999ap-56f, 0x1.b7ed28p-1f, 0x1.3c0126p-4f, -0x1.b40672p-2f,
+    0x1.833334p-55f, 0x1.b7279p-1f, 0x1.3d0a56p-4f, -0x1.b498aep-2f,
     /* node 2406 y */
-    0x1.333334p-58f, 0x1.2f4a18p-2f, 0x1.a30db8p-1f, -0x1.07d04ap+1f,
+    0x1.333334p-56f, 0x1.2f66acp-2f, 0x1.a35a38p-1f, -0x1.077f8ep+1f,
     /* node 2406 z */
-    -0x1.99999ap-56f, -0x1.0f8a52p-1f, -0x1.40e836p-1f, 0x1.aa79c8p+1f,
+    -0x0p+0f, -0x1.0f15ep-1f, -0x1.414e76p-1f, 0x1.a98e4cp+1f,
     /* node 2407 x */
-    0x1p-54f, 0x1.c497a2p-1f, 0x1.4e4992p-4f, -0x1.c9c18p-2f,
+    0x1.333334p-55f, 0x1.c3b774p-1f, 0x1.4edc5ap-4f, -0x1.ca43dap-2f,
     /* node 2407 y */
-    -0x1.666666p-57f, 0x1.2789ep-2f, 0x1.a096e4p-1f, -0x1.0185e2p+1f,
+    0x1.19999ap-56f, 0x1.278edcp-2f, 0x1.a0ca4cp-1f, -0x1.014776p+1f,
     /* node 2407 z */
-    -0x1.99999ap-57f, -0x1.1437a8p-1f, -0x1.403d6cp-1f, 0x1.af3006p+1f,
+    -0x0p+0f, -0x1.13bfaep-1f, -0x1.40868ap-1f, 0x1.ae5a26p+1f,
     /* node 2408 x */
-    0x1.09999ap-55f, 0x1.db3bfep-1f, 0x1.5402d8p-4f, -0x1.ee5e08p-2f,
+    -0x1.ecccccp-56f, 0x1.da6002p-1f, 0x1.548082p-4f, -0x1.ef874ep-2f,
     /* node 2408 y */
-    -0x1.333334p-58f, 0x1.28159cp-2f, 0x1.9e36bep-1f, -0x1.ed2d12p+0f,
+    0x1.99999ap-59f, 0x1.280024p-2f, 0x1.9e70cep-1f, -0x1.ece06ep+0f,
     /* node 2408 z */
-    -0x1p-56f, -0x1.23cceap-1f, -0x1.3f2e46p-1f, 0x1.b55dfp+1f,
+    -0x1p-55f, -0x1.232f52p-1f, -0x1.3f6da6p-1f, 0x1.b49126p+1f,
     /* node 2409 x */
-    -0x1.666666p-56f, 0x1.ec9a22p-1f, 0x1.6bbeecp-4f, -0x1.00ab66p-1f,
+    0x1.4cccccp-58f, 0x1.ebaf8p-1f, 0x1.6cfba8p-4f, -0x1.003fa8p-1f,
     /* node 2409 y */
-    0x1.4cccccp-56f, 0x1.11d162p-2f, 0x1.9ab928p-1f, -0x1.d9f1c4p+0f,
+    0x1.ccccccp-57f, 0x1.11ad8cp-2f, 0x1.9af808p-1f, -0x1.d9c212p+0f,
     /* node 2409 z */
-    -0x1.19999ap-55f, -0x1.20d86p-1f, -0x1.3d672p-1f, 0x1.ba42f2p+1f,
+    0x1.333334p-57f, -0x1.2019a4p-1f, -0x1.3d69bep-1f, 0x1.b9c1ccp+1f,
     /* node 2410 x */
-    -0x1.09999ap-55f, 0x1.f4a5c8p-1f, 0x1.a35222p-4f, -0x1.06427ap-1f,
+    0x1.0cccccp-56f, 0x1.f3efc6p-1f, 0x1.a41eeap-4f, -0x1.06519ap-1f,
     /* node 2410 y */
-    -0x1.666666p-56f, 0x1.d3ac38p-3f, 0x1.94134p-1f, -0x1.c7f448p+0f,
+    0x1.99999ap-59f, 0x1.d36f3cp-3f, 0x1.94434ep-1f, -0x1.c7dad8p+0f,
     /* node 2410 z */
-    -0x1p-56f, -0x1.093fdap-1f, -0x1.3b10ecp-1f, 0x1.baf6c8p+1f,
+    -0x1.99999ap-58f, -0x1.08a8cep-1f, -0x1.3b48f8p-1f, 0x1.ba4dbp+1f,
     /* node 2416 x */
-    0x1.733334p-56f, 0x1.0eb512p+0f, 0x1.f4c5dcp-4f, -0x1.234de2p-1f,
+    0x1.4p-57f, 0x1.0e30ep+0f, 0x1.f76604p-4f, -0x1.22ca42p-1f,
     /* node 2416 y */
-    0x1.333334p-57f, 0x1.7d151ap-3f, 0x1.8ea3aep-1f, -0x1.903628p+0f,
+    0x1.99999ap-56f, 0x1.7d22b8p-3f, 0x1.8ec9ep-1f, -0x1.903ecap+0f,
     /* node 2416 z */
-    0x1.99999ap-59f, -0x1.014b4cp-1f, -0x1.34bb48p-1f, 0x1.c343c2p+1f,
+    -0x1.99999ap-58f, -0x1.00d496p-1f, -0x1.34d632p-1f, 0x1.c2ba74p+1f,
     /* node 2417 x */
-    0x1.ccccccp-58f, 0x1.30ef8cp+0f, 0x1.0f23e8p-3f, -0x1.44b188p-1f,
+    0x1.133334p-54f, 0x1.308182p+0f, 0x1.0fef86p-3f, -0x1.447e26p-1f,
     /* node 2417 y */
-    -0x1.0cccccp-56f, 0x1.3190bap-3f, 0x1.922f26p-1f, -0x1.4ea4e4p+0f,
+    0x1.59999ap-56f, 0x1.3079d6p-3f, 0x1.9267d8p-1f, -0x1.4eadf6p+0f,
     /* node 2417 z */
-    -0x1.99999ap-57f, -0x1.0c2adap-1f, -0x1.27c45cp-1f, 0x1.ce132ap+1f,
+    0x1.333334p-57f, -0x1.0b943cp-1f, -0x1.2809dp-1f, 0x1.cd877cp+1f,
     /* node 2418 x */
-    -0x1.5p-55f, 0x1.1f0ee6p+0f, 0x1.0265fp-3f, -0x1.2fbdeep-1f,
+    0x1.5p-55f, 0x1.1ed08p+0f, 0x1.02f428p-3f, -0x1.2f738p-1f,
     /* node 2418 y */
-    0x1p-58f, 0x1.5d2fe6p-3f, 0x1.8e6b3cp-1f, -0x1.74dcf6p+0f,
+    0x1.99999ap-61f, 0x1.5d01f4p-3f, 0x1.8eacd8p-1f, -0x1.74c1c4p+0f,
     /* node 2418 z */
-    0x1.99999ap-58f, -0x1.084408p-1f, -0x1.2f5086p-1f, 0x1.c8b85ap+1f,
+    -0x1p-55f, -0x1.07a51ep-1f, -0x1.2f83acp-1f, 0x1.c81e82p+1f,
     /* node 2419 x */
-    0x1.4p-57f, 0x1.2a4c94p+0f, 0x1.e8e5d6p-4f, -0x1.3b31c4p-1f,
+    0x1.f33334p-55f, 0x1.2a0796p+0f, 0x1.ea0984p-4f, -0x1.3af15ep-1f,
     /* node 2419 y */
-    0x1.59999ap-56f, 0x1.6be162p-3f, 0x1.9604ccp-1f, -0x1.67615cp+0f,
+    0x1.e66666p-57f, 0x1.6beba2p-3f, 0x1.962f38p-1f, -0x1.672b1cp+0f,
     /* node 2419 z */
-    -0x1.99999ap-57f, -0x1.1cfeecp-1f, -0x1.29bab6p-1f, 0x1.ceae5p+1f,
+    -0x1.99999ap-59f, -0x1.1c9fe6p-1f, -0x1.29d858p-1f, 0x1.ce24a2p+1f,
     /* node 2420 x */
-    -0x1.133334p-55f, 0x1.052d8p+0f, 0x1.cdaf1cp-4f, -0x1.17806ap-1f,
+    0x1.133334p-55f, 0x1.04cbdp+0f, 0x1.cea9b8p-4f, -0x1.17bb4p-1f,
     /* node 2420 y */
-    0x1.99999ap-60f, 0x1.b930d4p-3f, 0x1.931186p-1f, -0x1.ab24aep+0f,
+    0x1.333334p-57f, 0x1.b8f88cp-3f, 0x1.934278p-1f, -0x1.aae9dep+0f,
     /* node 2420 z */
-    0x1.666666p-56f, -0x1.1183aep-1f, -0x1.3610bcp-1f, 0x1.c1d07cp+1f,
+    -0x1.ccccccp-55f, -0x1.10f8f8p-1f, -0x1.363b5ep-1f, 0x1.c126fcp+1f,
     /* node 2421 x */
-    -0x1.d33334p-56f, 0x1.038d3p+0f, 0x1.a0ac1ap-4f, -0x1.1597b2p-1f,
+    0x1.e66666p-56f, 0x1.032ad2p+0f, 0x1.a1094ap-4f, -0x1.15c1p-1f,
     /* node 2421 y */
-    0x1.333334p-58f, 0x1.edeb08p-3f, 0x1.977088p-1f, -0x1.b70b3ep+0f,
+    0x1.99999ap-57f, 0x1.ecd8fap-3f, 0x1.976dc4p-1f, -0x1.b709dp+0f,
     /* node 2421 z */
-    -0x1.666666p-56f, -0x1.1f439p-1f, -0x1.38571cp-1f, 0x1.c0b046p+1f,
+    -0x1.99999ap-55f, -0x1.1e9588p-1f, -0x1.38a596p-1f, 0x1.c002c4p+1f,
     /* node 2422 x */
-    0x1.533334p-54f, 0x1.12ef5ep+0f, 0x1.bf049cp-4f, -0x1.254a88p-1f,
+    0x1.ap-56f, 0x1.126abap+0f, 0x1.c1ad26p-4f, -0x1.251774p-1f,
     /* node 2422 y */
-    -0x1.ccccccp-57f, 0x1.b6566cp-3f, 0x1.94dffcp-1f, -0x1.95b012p+0f,
+    0x1.b33334p-56f, 0x1.b5e48ap-3f, 0x1.9530eep-1f, -0x1.95a37cp+0f,
     /* node 2422 z */
-    -0x1.266666p-54f, -0x1.1e3168p-1f, -0x1.327074p-1f, 0x1.c75184p+1f,
+    -0x1.333334p-56f, -0x1.1dc00ap-1f, -0x1.32a4e8p-1f, 0x1.c6b42cp+1f,
     /* node 2423 x */
-    0x1.b9999ap-54f, 0x1.3a8e78p+0f, 0x1.db4abap-4f, -0x1.4ba226p-1f,
+    0x1.61999ap-54f, 0x1.3a4f94p+0f, 0x1.dbe44p-4f, -0x1.4b5988p-1f,
     /* node 2423 y */
-    -0x1.ccccccp-58f, 0x1.6bde7ep-3f, 0x1.978c28p-1f, -0x1.525e56p+0f,
+    -0x1.4cccccp-57f, 0x1.6acfdep-3f, 0x1.9808dap-1f, -0x1.526488p+0f,
     /* node 2423 z */
-    -0x1.666666p-55f, -0x1.2c70bp-1f, -0x1.227e68p-1f, 0x1.d3cda4p+1f,
+    -0x1.666666p-55f, -0x1.2c39a6p-1f, -0x1.2296aap-1f, 0x1.d335cap+1f,
     /* node 2424 x */
-    0x1.266666p-55f, 0x1.07ac1ap+0f, 0x1.76bc56p-4f, -0x1.18b1cep-1f,
+    0x1.e66666p-56f, 0x1.075d46p+0f, 0x1.781704p-4f, -0x1.1857c4p-1f,
     /* node 2424 y */
-    -0x1.99999ap-59f, 0x1.074ca8p-2f, 0x1.9a1f94p-1f, -0x1.b6ab0ap+0f,
+    0x1.99999ap-57f, 0x1.07a80ep-2f, 0x1.9aac28p-1f, -0x1.b6a166p+0f,
     /* node 2424 z */
-    -0x1p-56f, -0x1.314af2p-1f, -0x1.38d6ep-1f, 0x1.c23f9ep+1f,
+    0x1.99999ap-59f, -0x1.309272p-1f, -0x1.38f8bep-1f, 0x1.c1ba64p+1f,
     /* node 2425 x */
-    -0x1.666666p-59f, 0x1.1de374p+0f, 0x1.8160c4p-4f, -0x1.32d6f8p-1f,
+    0x1.2p-56f, 0x1.1d95dcp+0f, 0x1.8228f4p-4f, -0x1.32d3cp-1f,
     /* node 2425 y */
-    -0x1.99999ap-59f, 0x1.e78a62p-3f, 0x1.9b857ep-1f, -0x1.8ea6b6p+0f,
+    -0x1.99999ap-58f, 0x1.e6e424p-3f, 0x1.9b9e8p-1f, -0x1.8e6fb4p+0f,
     /* node 2425 z */
-    0x1.99999ap-59f, -0x1.3d43eep-1f, -0x1.30db02p-1f, 0x1.cad528p+1f,
+    -0x1.19999ap-55f, -0x1.3d26a8p-1f, -0x1.30e36ap-1f, 0x1.ca27aap+1f,
     /* node 2426 x */
-    0x1.8p-56f, 0x1.368a38p+0f, 0x1.aac742p-4f, -0x1.46812ap-1f,
+    0x1.0cccccp-55f, 0x1.363ec8p+0f, 0x1.abae82p-4f, -0x1.46142cp-1f,
     /* node 2426 y */
-    -0x1p-58f, 0x1.b08b9cp-3f, 0x1.9c12p-1f, -0x1.632af2p+0f,
+    0x1p-58f, 0x1.afea3ep-3f, 0x1.9ca91cp-1f, -0x1.6369b8p+0f,
     /* node 2426 z */
-    0x1.99999ap-58f, -0x1.3f4b22p-1f, -0x1.26527ep-1f, 0x1.d3d5fp+1f,
+    -0x1.19999ap-54f, -0x1.3eb1a4p-1f, -0x1.266cd2p-1f, 0x1.d3563p+1f,
     /* node 2427 x */
-    0x1.f33334p-56f, 0x1.3f09d2p+0f, 0x1.20d414p-3f, -0x1.525e34p-1f,
+    0x1.acccccp-55f, 0x1.401b78p+0f, 0x1.1f40f8p-3f, -0x1.50c58ep-1f,
     /* node 2427 y */
-    0x1.cp-56f, 0x1.10dd5ep-3f, 0x1.922b94p-1f, -0x1.2e7e28p+0f,
+    0x1.333334p-59f, 0x1.0deb1p-3f, 0x1.926c14p-1f, -0x1.2e8712p+0f,
     /* node 2427 z */
-    -0x1.333334p-55f, -0x1.07c91cp-1f, -0x1.20987cp-1f, 0x1.cf2a7ep+1f,
+    0x1.99999ap-59f, -0x1.073cdep-1f, -0x1.20ce4p-1f, 0x1.ce90d2p+1f,
     /* node 2428 x */
-    0x1.f9999ap-56f, 0x1.40f376p+0f, 0x1.010e62p-3f, -0x1.5161ecp-1f,
+    0x1.44ccccp-54f, 0x1.417c62p+0f, 0x1.006088p-3f, -0x1.501a2p-1f,
     /* node 2428 y */
-    -0x1.99999ap-57f, 0x1.374998p-3f, 0x1.98cb4p-1f, -0x1.3b794ep+0f,
+    -0x1.f33334p-56f, 0x1.3635fcp-3f, 0x1.9948aep-1f, -0x1.3b8f3ap+0f,
     /* node 2428 z */
-    -0x1.ccccccp-56f, -0x1.188cacp-1f, -0x1.1f1b4ep-1f, 0x1.d4b9d4p+1f,
+    -0x1.19999ap-55f, -0x1.178e4cp-1f, -0x1.1f4308p-1f, 0x1.d43e7cp+1f,
     /* node 2429 x */
-    0x1.dp-55f, 0x1.5d1ed4p+0f, 0x1.f93478p-4f, -0x1.5e8e68p-1f,
+    0x1.49999ap-54f, 0x1.5c5eb2p+0f, 0x1.ffeb3ap-4f, -0x1.5ed3aap-1f,
     /* node 2429 y */
-    0x1p-58f, 0x1.113a72p-3f, 0x1.a4c5f4p-1f, -0x1.17a2a8p+0f,
+    0x1p-58f, 0x1.11c9dcp-3f, 0x1.a4a55p-1f, -0x1.175eeep+0f,
     /* node 2429 z */
-    -0x1.99999ap-56f, -0x1.1ebfbp-1f, -0x1.153d2ap-1f, 0x1.d9865cp+1f,
+    -0x1.99999ap-55f, -0x1.1e0202p-1f, -0x1.152ed6p-1f, 0x1.d8f784p+1f,
     /* node 2430 x */
-    0x1.433334p-55f, 0x1.6c9298p+0f, 0x1.fed9bep-4f, -0x1.5a7fdap-1f,
+    0x1.71999ap-54f, 0x1.6bb928p+0f, 0x1.0223ap-3f, -0x1.5aea88p-1f,
     /* node 2430 y */
-    0x1.99999ap-60f, 0x1.cdeca4p-4f, 0x1.acd0ep-1f, -0x1.09c9e8p+0f,
+    -0x1.666666p-57f, 0x1.d036e4p-4f, 0x1.ac7d4cp-1f, -0x1.094e7cp+0f,
     /* node 2430 z */
-    -0x1.0cccccp-54f, -0x1.119d6ap-1f, -0x1.142f6p-1f, 0x1.db4518p+1f,
+    -0x1.19999ap-54f, -0x1.12014p-1f, -0x1.141754p-1f, 0x1.da9026p+1f,
     /* node 2431 x */
-    0x1.833334p-55f, 0x1.4b5f72p+0f, 0x1.c9677cp-4f, -0x1.53ecd8p-1f,
+    0x1.c33334p-55f, 0x1.4b4fccp+0f, 0x1.c98c38p-4f, -0x1.534402p-1f,
     /* node 2431 y */
-    0x1.99999ap-57f, 0x1.493346p-3f, 0x1.a2a118p-1f, -0x1.3b25f8p+0f,
+    0x1.d9999ap-56f, 0x1.48792cp-3f, 0x1.a2bf82p-1f, -0x1.3b189p+0f,
     /* node 2431 z */
-    -0x1.19999ap-55f, -0x1.2cbe26p-1f, -0x1.1c212cp-1f, 0x1.d81c62p+1f,
+    -0x1.19999ap-55f, -0x1.2c229p-1f, -0x1.1c712p-1f, 0x1.d79c1ep+1f,
     /* node 2432 x */
-    0x1.21999ap-54f, 0x1.777a02p+0f, 0x1.c41dfap-4f, -0x1.64758ep-1f,
+    0x1.99999ap-60f, 0x1.76cep+0f, 0x1.c7c0cp-4f, -0x1.64888ap-1f,
     /* node 2432 y */
-    0x1.666666p-57f, 0x1.320ee8p-3f, 0x1.bcd8d2p-1f, -0x1.0363c2p+0f,
+    -0x0p+0f, 0x1.30495p-3f, 0x1.bd63fep-1f, -0x1.03795p+0f,
     /* node 2432 z */
-    -0x0p+0f, -0x1.2d77f2p-1f, -0x1.0ce6b8p-1f, 0x1.e24c24p+1f,
+    0x1.99999ap-59f, -0x1.2cb7b2p-1f, -0x1.0cd02ep-1f, 0x1.e1bf14p+1f,
     /* node 2433 x */
-    0x1.b33334p-55f, 0x1.6b35a2p+0f, 0x1.bea94ep-4f, -0x1.635d1p-1f,
+    -0x1.a66666p-56f, 0x1.6a8ea6p+0f, 0x1.c289e8p-4f, -0x1.6365fcp-1f,
     /* node 2433 y */
-    -0x1.333334p-59f, 0x1.53cbccp-3f, 0x1.b85184p-1f, -0x1.1420f4p+0f,
+    0x1.666666p-58f, 0x1.52a3bp-3f, 0x1.b89c7ap-1f, -0x1.14158cp+0f,
     /* node 2433 z */
-    -0x1.333334p-55f, -0x1.3785e2p-1f, -0x1.109456p-1f, 0x1.e1431cp+1f,
+    0x1.666666p-56f, -0x1.37156ep-1f, -0x1.105a9cp-1f, 0x1.e0aa74p+1f,
     /* node 2434 x */
-    0x1.ep-56f, 0x1.48e15cp+0f, 0x1.ab7b26p-4f, -0x1.4fb44p-1f,
+    0x1.4cccccp-57f, 0x1.48ac16p+0f, 0x1.ac7b98p-4f, -0x1.4f5c6p-1f,
     /* node 2434 y */
-    0x1.333334p-59f, 0x1.97d6b4p-3f, 0x1.a820d6p-1f, -0x1.49ebb4p+0f,
+    0x1.0cccccp-56f, 0x1.982468p-3f, 0x1.a85964p-1f, -0x1.49c822p+0f,
     /* node 2434 z */
-    -0x1.99999ap-56f, -0x1.45a35p-1f, -0x1.1eca92p-1f, 0x1.d9cc96p+1f,
+    -0x1.99999ap-58f, -0x1.451582p-1f, -0x1.1ec52cp-1f, 0x1.d946e6p+1f,
     /* node 2435 x */
-    -0x1.f33334p-57f, 0x1.5a4324p+0f, 0x1.a22c74p-4f, -0x1.647502p-1f,
+    0x1.233334p-55f, 0x1.5a0bfep+0f, 0x1.a1d916p-4f, -0x1.6402b8p-1f,
     /* node 2435 y */
-    0x1.19999ap-57f, 0x1.7727b6p-3f, 0x1.ae9548p-1f, -0x1.2e00bep+0f,
+    -0x1.99999ap-58f, 0x1.76c8bp-3f, 0x1.aeda0ap-1f, -0x1.2df2d2p+0f,
     /* node 2435 z */
-    -0x1.b33334p-55f, -0x1.4deeb4p-1f, -0x1.1670acp-1f, 0x1.df41fep+1f,
+    -0x1.4cccccp-55f, -0x1.4dd71ep-1f, -0x1.165984p-1f, 0x1.deb1c6p+1f,
     /* node 2436 x */
-    -0x1.29999ap-55f, 0x1.937152p+0f, 0x1.504b16p-4f, -0x1.7155bp-1f,
+    0x1.866666p-56f, 0x1.92ce66p+0f, 0x1.583d42p-4f, -0x1.71e12cp-1f,
     /* node 2436 y */
-    0x1.99999ap-59f, 0x1.10c9d8p-3f, 0x1.e5b078p-1f, -0x1.011c98p+0f,
+    -0x1.cp-56f, 0x1.134044p-3f, 0x1.e4383p-1f, -0x1.ffdb12p-1f,
     /* node 2436 z */
-    -0x1.b33334p-55f, -0x1.556332p-1f, -0x1.094a3ap-1f, 0x1.ec32cap+1f,
+    -0x1.4cccccp-55f, -0x1.56cde8p-1f, -0x1.08c614p-1f, 0x1.eb743p+1f,
     /* node 2437 x */
-    -0x1.0cccccp-57f, 0x1.b6091ap+0f, 0x1.a3236cp-4f, -0x1.7e527ap-1f,
+    0x1.3b3334p-54f, 0x1.b5acbap+0f, 0x1.a2bccap-4f, -0x1.7db11p-1f,
     /* node 2437 y */
-    -0x1.19999ap-57f, 0x1.df19fp-4f, 0x1.faead4p-1f, -0x1.b46c78p-1f,
+    -0x1.19999ap-57f, 0x1.e26e1ep-4f, 0x1.fc2754p-1f, -0x1.b597ecp-1f,
     /* node 2437 z */
-    -0x1.99999ap-58f, -0x1.47a62ep-1f, -0x1.01352p-1f, 0x1.edd9cp+1f,
+    -0x1.99999ap-56f, -0x1.4794dcp-1f, -0x1.01a598p-1f, 0x1.ed6692p+1f,
     /* node 2438 x */
-    -0x1.e33334p-55f, 0x1.8c86bcp+0f, 0x1.f08e3p-4f, -0x1.6eaac2p-1f,
+    0x1.733334p-55f, 0x1.8c47aap+0f, 0x1.eefc72p-4f, -0x1.6e281ep-1f,
     /* node 2438 y */
-    0x1.333334p-58f, 0x1.12f3ccp-3f, 0x1.d1150ep-1f, -0x1.d3e7aep-1f,
+    -0x1.4cccccp-57f, 0x1.0fb45p-3f, 0x1.d1ff18p-1f, -0x1.d51b26p-1f,
     /* node 2438 z */
-    -0x1.ccccccp-56f, -0x1.2c265p-1f, -0x1.09a226p-1f, 0x1.e29f34p+1f,
+    -0x1.333334p-57f, -0x1.2a7c3cp-1f, -0x1.09df0cp-1f, 0x1.e22c22p+1f,
     /* node 2441 x */
-    -0x1.19999ap-57f, 0x1.00f99ep+1f, 0x1.491f3p-4f, -0x1.917ddap-1f,
+    -0x1.f33334p-56f, 0x1.00c39ep+1f, 0x1.4c10ccp-4f, -0x1.91672cp-1f,
     /* node 2441 y */
-    -0x1.066666p-56f, 0x1.ce766p-5f, 0x1.242d3ep+0f, -0x1.4726d2p-1f,
+    -0x1p-57f, 0x1.d0e88p-5f, 0x1.2466acp+0f, -0x1.476738p-1f,
     /* node 2441 z */
-    -0x1.b33334p-55f, -0x1.4b4fb2p-1f, -0x1.f6f8bp-2f, 0x1.eee2fep+1f,
+    -0x1.19999ap-55f, -0x1.4afd6cp-1f, -0x1.f7b87ep-2f, 0x1.ee43f6p+1f,
     /* node 2442 x */
-    0x1.bcccccp-55f, 0x1.c510d6p+0f, 0x1.bf87e2p-4f, -0x1.777788p-1f,
+    0x1.3cccccp-54f, 0x1.c4a4b8p+0f, 0x1.bf835p-4f, -0x1.77291p-1f,
     /* node 2442 y */
-    -0x1.4p-56f, 0x1.5f7686p-4f, 0x1.030be6p+0f, -0x1.8aab5p-1f,
+    0x1p-58f, 0x1.5e87bcp-4f, 0x1.01fa8p+0f, -0x1.893216p-1f,
     /* node 2442 z */
-    -0x1p-56f, -0x1.252374p-1f, -0x1.08bb32p-1f, 0x1.e5c78ap+1f,
+    -0x1.99999ap-56f, -0x1.2485c4p-1f, -0x1.0832f6p-1f, 0x1.e4beeep+1f,
     /* node 2443 x */
-    0x1.08p-53f, 0x1.0d4e1ap+1f, 0x1.fd17d8p-5f, -0x1.90b41ep-1f,
+    0x1.0cccccp-55f, 0x1.0d16e8p+1f, 0x1.ffed08p-5f, -0x1.90be7ap-1f,
     /* node 2443 y */
-    0x1.333334p-57f, 0x1.5fb82ep-5f, 0x1.2eea8ap+0f, -0x1.58adeap-1f,
+    -0x1.b33334p-58f, 0x1.62e86ep-5f, 0x1.2e5c1ap+0f, -0x1.581304p-1f,
     /* node 2443 z */
-    -0x1p-56f, -0x1.639558p-1f, -0x1.ec87e8p-2f, 0x1.f8186ep+1f,
+    -0x1.19999ap-55f, -0x1.63f7d6p-1f, -0x1.eb5f4cp-2f, 0x1.f74994p+1f,
     /* node 2444 x */
-    0x1p-57f, 0x1.c869d8p+0f, 0x1.458e8ep-4f, -0x1.85706ap-1f,
+    0x1.f33334p-57f, 0x1.c7e616p+0f, 0x1.493a2p-4f, -0x1.855528p-1f,
     /* node 2444 y */
-    -0x1.333334p-57f, 0x1.10bea2p-3f, 0x1.090276p+0f, -0x1.c9c7b6p-1f,
+    -0x1.333334p-59f, 0x1.10cb3p-3f, 0x1.08c5cep+0f, -0x1.c92bccp-1f,
     /* node 2444 z */
-    -0x1.4cccccp-55f, -0x1.6fe162p-1f, -0x1.03a07ep-1f, 0x1.f167b2p+1f,
+    -0x1.b33334p-55f, -0x1.6fa9ccp-1f, -0x1.03a77ep-1f, 0x1.f0cb2p+1f,
     /* node 2445 x */
-    0x1.b33334p-56f, 0x1.0751f2p+1f, 0x1.d8c1d2p-5f, -0x1.92ff86p-1f,
+    0x1.cp-56f, 0x1.073a96p+1f, 0x1.da24a6p-5f, -0x1.92c8fep-1f,
     /* node 2445 y */
-    -0x1.d9999ap-56f, 0x1.634b7p-4f, 0x1.2afca4p+0f, -0x1.7bbc88p-1f,
+    0x1.ccccccp-58f, 0x1.617c78p-4f, 0x1.2b758ap+0f, -0x1.7bb5f4p-1f,
     /* node 2445 z */
-    -0x1.333334p-57f, -0x1.794858p-1f, -0x1.f561f4p-2f, 0x1.f93bccp+1f,
+    -0x1.99999ap-55f, -0x1.78a254p-1f, -0x1.f6187ap-2f, 0x1.f8acacp+1f,
     /* node 2446 x */
-    0x1.b66666p-54f, 0x1.1f61eap+1f, 0x1.2ed118p-7f, -0x1.9420e6p-1f,
+    0x1.666666p-55f, 0x1.1f1ee2p+1f, 0x1.4ad25ep-7f, -0x1.940c5p-1f,
     /* node 2446 y */
-    0x1.19999ap-58f, 0x1.ca539ap-8f, 0x1.3b8e9ap+0f, -0x1.e58052p-2f,
+    -0x1.8p-56f, 0x1.ded86cp-8f, 0x1.3b924ap+0f, -0x1.e55e9p-2f,
     /* node 2446 z */
-    -0x1.ccccccp-55f, -0x1.761246p-1f, -0x1.d78aa4p-2f, 0x1.f3e044p+1f,
+    -0x1p-56f, -0x1.75d56cp-1f, -0x1.d79e8cp-2f, 0x1.f328aap+1f,
     /* node 2447 x */
-    0x1.8cccccp-54f, 0x1.20335p+1f, -0x1.6be28ep-9f, -0x1.8b936ep-1f,
+    0x1.166666p-54f, 0x1.1fffecp+1f, -0x1.5f4626p-9f, -0x1.8b17a4p-1f,
     /* node 2447 y */
-    -0x1.866666p-56f, -0x1.6a990ep-5f, 0x1.3b6a9ap+0f, -0x1.761adcp-2f,
+    0x1.333334p-58f, -0x1.655176p-5f, 0x1.3b9b5ep+0f, -0x1.75a41p-2f,
     /* node 2447 z */
-    -0x1.b33334p-55f, -0x1.752dd2p-1f, -0x1.c232b2p-2f, 0x1.ea0c6ap+1f,
+    -0x1.666666p-56f, -0x1.7501e4p-1f, -0x1.c24baap-2f, 0x1.e981e6p+1f,
     /* node 2448 x */
-    0x1.b33334p-57f, 0x1.19b1cp+1f, -0x1.55446p-6f, -0x1.939b8cp-1f,
+    0x1.39999ap-54f, 0x1.1983b6p+1f, -0x1.570d74p-6f, -0x1.938704p-1f,
     /* node 2448 y */
-    -0x1.333334p-61f, -0x1.ae3fb8p-4f, 0x1.28276ep+0f, -0x1.2a67ccp-2f,
+    -0x1.d9999ap-58f, -0x1.afeeeep-4f, 0x1.280b38p+0f, -0x1.2a3546p-2f,
     /* node 2448 z */
-    -0x1.ccccccp-55f, -0x1.672ebp-1f, -0x1.c8fce2p-2f, 0x1.d63972p+1f,
+    -0x1.99999ap-56f, -0x1.66ced4p-1f, -0x1.c8a222p-2f, 0x1.d5959ep+1f,
     /* node 2449 x */
-    0x1.8cccccp-57f, 0x1.186ce8p+1f, -0x1.06045cp-5f, -0x1.7a9406p-1f,
+    0x1.2b3334p-54f, 0x1.183254p+1f, -0x1.02ce6ap-5f, -0x1.7a53p-1f,
     /* node 2449 y */
-    -0x1.c9999ap-56f, -0x1.d1d04p-4f, 0x1.2d2014p+0f, -0x1.fa424cp-3f,
+    0x1.666666p-60f, -0x1.cee91ap-4f, 0x1.2d506ep+0f, -0x1.fad01ep-3f,
     /* node 2449 z */
-    -0x1.e66666p-55f, -0x1.6904a4p-1f, -0x1.a7ea62p-2f, 0x1.d546d8p+1f,
+    -0x1.333334p-57f, -0x1.68dbd2p-1f, -0x1.a85cc2p-2f, 0x1.d4bf04p+1f,
     /* node 2450 x */
-    0x1.333334p-56f, 0x1.0ae3eep+1f, -0x1.52572p-6f, -0x1.4c1d6p-1f,
+    0x1.28p-54f, 0x1.0aaefp+1f, -0x1.51150cp-6f, -0x1.4b4c36p-1f,
     /* node 2450 y */
-    -0x1.99999ap-59f, -0x1.83622ep-5f, 0x1.1e481ep+0f, -0x1.fb5324p-3f,
+    -0x1.0cccccp-58f, -0x1.82ebep-5f, 0x1.1e5746p+0f, -0x1.fbfde8p-3f,
     /* node 2450 z */
-    -0x1p-55f, -0x1.57121p-1f, -0x1.b214cap-2f, 0x1.be55b6p+1f,
+    -0x1.0cccccp-54f, -0x1.566c6cp-1f, -0x1.b2491cp-2f, 0x1.bdc458p+1f,
     /* node 2451 x */
-    -0x1.1cccccp-54f, 0x1.22c316p+1f, -0x1.087f0cp-8f, -0x1.8a54d4p-1f,
+    -0x1.ep-55f, 0x1.2297b2p+1f, -0x1.fb9f82p-9f, -0x1.8a0692p-1f,
     /* node 2451 y */
-    -0x1.2p-55f, -0x1.4d166ap-7f, 0x1.39fff8p+0f, -0x1.c29b8ep-2f,
+    0x1.ccccccp-57f, -0x1.3e95c4p-7f, 0x1.3a0f62p+0f, -0x1.c2dec8p-2f,
     /* node 2451 z */
-    -0x1.333334p-56f, -0x1.814bd8p-1f, -0x1.c79374p-2f, 0x1.eb9fp+1f,
+    -0x1p-56f, -0x1.80f734p-1f, -0x1.c7f352p-2f, 0x1.eb1b7ap+1f,
     /* node 2452 x */
-    -0x1.15999ap-53f, 0x1.1aea14p+1f, -0x1.f2d1fep-7f, -0x1.6cb4f2p-1f,
+    0x1.24ccccp-54f, 0x1.1ab5c2p+1f, -0x1.e6eafap-7f, -0x1.6c4af6p-1f,
     /* node 2452 y */
-    0x1.4cccccp-58f, -0x1.eb6aa8p-6f, 0x1.2ab7aap+0f, -0x1.89f0d2p-2f,
+    -0x1.8p-57f, -0x1.eabc3ep-6f, 0x1.2ac768p+0f, -0x1.8aafecp-2f,
     /* node 2452 z */
-    -0x1.99999ap-55f, -0x1.7506eap-1f, -0x1.b43f8ap-2f, 0x1.de87c8p+1f,
+    -0x1.333334p-56f, -0x1.747a0ep-1f, -0x1.b47678p-2f, 0x1.de03f2p+1f,
     /* node 2454 x */
-    0x1.fcccccp-54f, 0x1.938e1ep+0f, -0x1.396188p-4f, -0x1.0c14cp-1f,
+    0x1p-58f, 0x1.9330bcp+0f, -0x1.38101cp-4f, -0x1.0b774p-1f,
     /* node 2454 y */
-    -0x1.64ccccp-57f, -0x1.5ab88ap-3f, 0x1.a60e06p-1f, -0x1.0e3416p-4f,
+    -0x1.4cccccp-60f, -0x1.5b35bcp-3f, 0x1.a65bc8p-1f, -0x1.13a33ap-4f,
     /* node 2454 z */
-    -0x1.e66666p-56f, -0x1.34a93cp-1f, -0x1.90b1bap-2f, 0x1.793d4ep+1f,
+    -0x1.666666p-57f, -0x1.33e49p-1f, -0x1.914bep-2f, 0x1.78b76ap+1f,
     /* node 2456 x */
-    0x1.b33334p-59f, 0x1.1d0794p+0f, -0x1.281d2p-5f, -0x1.4db38ep-2f,
+    0x1.24ccccp-54f, 0x1.1c860ap+0f, -0x1.24aefap-5f, -0x1.4c9744p-2f,
     /* node 2456 y */
-    0x1.c8p-59f, -0x1.d95d48p-4f, 0x1.0da55p-1f, -0x1.3ef484p-6f,
+    -0x1.8c6666p-57f, -0x1.d7864ep-4f, 0x1.0e00f4p-1f, -0x1.4c216ap-6f,
     /* node 2456 z */
-    -0x1.e66666p-56f, -0x1.f365ap-2f, -0x1.87d1d6p-2f, 0x1.2c9814p+1f,
+    -0x1.333334p-55f, -0x1.f2c054p-2f, -0x1.880c8ep-2f, 0x1.2c15bap+1f,
     /* node 2457 x */
-    0x1.ap-57f, 0x1.058a5p+0f, -0x1.bdbee4p-5f, -0x1.4d04ap-2f,
+    0x1.acccccp-55f, 0x1.053cacp+0f, -0x1.b6eb24p-5f, -0x1.4b2d5p-2f,
     /* node 2457 y */
-    -0x1.933334p-59f, -0x1.44471ep-3f, 0x1.d59c08p-2f, 0x1.1a9dd6p-6f,
+    -0x1.7f999ap-57f, -0x1.42046p-3f, 0x1.d717fp-2f, 0x1.0c8788p-6f,
     /* node 2457 z */
-    0x1.99999ap-59f, -0x1.da24f6p-2f, -0x1.906b8ap-2f, 0x1.164208p+1f,
+    -0x1.333334p-56f, -0x1.d91eb2p-2f, -0x1.90382cp-2f, 0x1.15f87ep+1f,
     /* node 2458 x */
-    0x1p-57f, 0x1.cb466ep-1f, -0x1.7fcf36p-5f, -0x1.13744ep-2f,
+    0x1.6cccccp-55f, 0x1.c984b2p-1f, -0x1.85d2ecp-5f, -0x1.138fdap-2f,
     /* node 2458 y */
-    0x1.066666p-59f, -0x1.38f236p-3f, 0x1.76a5b2p-2f, 0x1.566bcp-5f,
+    -0x1.b66666p-59f, -0x1.388bep-3f, 0x1.7562fap-2f, 0x1.41f034p-5f,
     /* node 2458 z */
-    -0x1.b33334p-56f, -0x1.ad3c1p-2f, -0x1.8b846p-2f, 0x1.f6c7a8p+0f,
+    -0x1.8p-56f, -0x1.ac4bcp-2f, -0x1.8b205ap-2f, 0x1.f5109cp+0f,
     /* node 2462 x */
-    -0x1.433334p-56f, 0x1.a83ccep-1f, -0x1.c3ea96p-6f, -0x1.5cc47p-3f,
+    0x1.a33334p-57f, 0x1.a70762p-1f, -0x1.c153fp-6f, -0x1.5af1cep-3f,
     /* node 2462 y */
-    -0x1.18ccccp-57f, -0x1.7355a2p-4f, 0x1.35d276p-2f, 0x1.4b2a3cp-7f,
+    -0x1.72ccccp-58f, -0x1.709004p-4f, 0x1.36277ap-2f, 0x1.282622p-7f,
     /* node 2462 z */
-    -0x1.4p-55f, -0x1.987beep-2f, -0x1.988d1ep-2f, 0x1.e6fe6ap+0f,
+    -0x1.4p-55f, -0x1.97d2eap-2f, -0x1.988bfep-2f, 0x1.e5ed02p+0f,
     /* node 2465 x */
-    -0x1.2cccccp-56f, 0x1.3ffc5ep-1f, -0x1.2e5f92p-6f, -0x1.872582p-4f,
+    -0x1p-59f, 0x1.3edfdcp-1f, -0x1.339ddep-6f, -0x1.8328c2p-4f,
     /* node 2465 y */
-    -0x1.4cccccp-60f, -0x1.dea258p-4f, 0x1.6306dcp-3f, 0x1.a3723ep-4f,
+    0x1.333334p-59f, -0x1.dc597ep-4f, 0x1.632cc8p-3f, 0x1.9ae762p-4f,
     /* node 2465 z */
-    0x1.99999ap-60f, -0x1.52f1bap-2f, -0x1.709d1ep-2f, 0x1.8d64eap+0f,
+    -0x1.99999ap-58f, -0x1.52643ap-2f, -0x1.70d63ap-2f, 0x1.8c6132p+0f,
     /* node 2561 x */
-    -0x1.3e6666p-55f, 0x1.3fd6bap-1f, 0x1.99871ap-7f, -0x1.b20948p-3f,
+    0x1.266666p-58f, 0x1.3f471cp-1f, 0x1.9eb788p-7f, -0x1.b27b34p-3f,
     /* node 2561 y */
-    0x1.99999ap-59f, 0x1.85a7b2p-2f, 0x1.c2132p-1f, -0x1.3ea75ap+1f,
+    -0x1.4cccccp-56f, 0x1.855996p-2f, 0x1.c24e2cp-1f, -0x1.3e8146p+1f,
     /* node 2561 z */
-    -0x1.ccccccp-57f, -0x1.d7d68p-2f, -0x1.362488p-1f, 0x1.61abc6p+1f,
+    0x1.99999ap-57f, -0x1.d7037cp-2f, -0x1.365a7ep-1f, 0x1.6113e6p+1f,
     /* node 2562 x */
-    0x1.633334p-56f, 0x1.598c98p-1f, 0x1.5fbdc6p-6f, -0x1.0ecdd2p-2f,
+    0x1.19999ap-57f, 0x1.58dc0ap-1f, 0x1.6233dep-6f, -0x1.0ebce6p-2f,
     /* node 2562 y */
-    0x1.99999ap-57f, 0x1.8f3c6ap-2f, 0x1.be8a48p-1f, -0x1.3a325cp+1f,
+    -0x0p+0f, 0x1.8e956p-2f, 0x1.bece4ap-1f, -0x1.3a057ep+1f,
     /* node 2562 z */
-    -0x1.266666p-55f, -0x1.ff3c3ep-2f, -0x1.3c82f8p-1f, 0x1.740b24p+1f,
+    -0x1.e66666p-56f, -0x1.fe3f72p-2f, -0x1.3cb472p-1f, 0x1.73712ap+1f,
     /* node 2563 x */
-    -0x1.4cccccp-58f, 0x1.5acb2cp-1f, 0x1.dc11b8p-6f, -0x1.0edcb2p-2f,
+    0x1.e66666p-58f, 0x1.5a2c2ap-1f, 0x1.dd853cp-6f, -0x1.0f03a2p-2f,
     /* node 2563 y */
-    0x1p-55f, 0x1.72359cp-2f, 0x1.bacf64p-1f, -0x1.376798p+1f,
+    0x1.4cccccp-56f, 0x1.71f888p-2f, 0x1.bafdb6p-1f, -0x1.374922p+1f,
     /* node 2563 z */
-    0x1.ccccccp-56f, -0x1.e79758p-2f, -0x1.3c854cp-1f, 0x1.78db06p+1f,
+    -0x1.99999ap-60f, -0x1.e6a32ep-2f, -0x1.3cb94ap-1f, 0x1.78496ep+1f,
     /* node 2577 x */
-    0x1.ap-56f, 0x1.3da5acp-1f, 0x1.0db53ap-7f, -0x1.adac1ap-3f,
+    -0x1.333334p-61f, 0x1.3d0ac2p-1f, 0x1.12de14p-7f, -0x1.adf05ap-3f,
     /* node 2577 y */
-    -0x1.19999ap-56f, 0x1.92f622p-2f, 0x1.c3d6b8p-1f, -0x1.3f48ccp+1f,
+    0x1.ccccccp-57f, 0x1.92a8c8p-2f, 0x1.c41874p-1f, -0x1.3f2564p+1f,
     /* node 2577 z */
-    -0x1.b33334p-56f, -0x1.dcbac6p-2f, -0x1.35366ep-1f, 0x1.5cc496p+1f,
+    0x1.19999ap-56f, -0x1.dbd28p-2f, -0x1.35665cp-1f, 0x1.5c2a96p+1f,
     /* node 2578 x */
-    0x1.59999ap-56f, 0x1.4c8594p-1f, 0x1.b5e75ep-7f, -0x1.efe3p-3f,
+    -0x1p-59f, 0x1.4bb204p-1f, 0x1.bc4958p-7f, -0x1.ef51bap-3f,
     /* node 2578 y */
-    0x1.99999ap-57f, 0x1.9fa854p-2f, 0x1.c1c64ep-1f, -0x1.3d631p+1f,
+    0x1.99999ap-59f, 0x1.9f4b24p-2f, 0x1.c20e38p-1f, -0x1.3d40fep+1f,
     /* node 2578 z */
-    -0x1.8p-56f, -0x1.fb5bdcp-2f, -0x1.39c508p-1f, 0x1.682e52p+1f,
+    0x1.ccccccp-57f, -0x1.fa8a0ep-2f, -0x1.39f5fep-1f, 0x1.679576p+1f,
     /* node 2579 x */
-    0x1.266666p-57f, 0x1.464cb6p-1f, 0x1.1f4d88p-8f, -0x1.dffbfcp-3f,
+    -0x1.8p-57f, 0x1.45de2ep-1f, 0x1.28cbcep-8f, -0x1.e11fd6p-3f,
     /* node 2579 y */
-    -0x1.99999ap-58f, 0x1.bc80a8p-2f, 0x1.c4f8cap-1f, -0x1.3ec5f8p+1f,
+    0x1.19999ap-56f, 0x1.bc22aep-2f, 0x1.c5410ep-1f, -0x1.3ea578p+1f,
     /* node 2579 z */
-    0x1p-56f, -0x1.01d15ap-1f, -0x1.3731dep-1f, 0x1.5bfp+1f,
+    0x1.4cccccp-56f, -0x1.0175f2p-1f, -0x1.3765fap-1f, 0x1.5b5da8p+1f,
     /* node 2580 x */
-    0x1.933334p-57f, 0x1.3511d2p-1f, -0x1.7ff2e8p-10f, -0x1.95d0cep-3f,
+    0x1.b66666p-56f, 0x1.34645p-1f, -0x1.5859p-10f, -0x1.95eb02p-3f,
     /* node 2580 y */
-    0x1.99999ap-57f, 0x1.af0654p-2f, 0x1.c701ap-1f, -0x1.40045cp+1f,
+    0x1.8p-56f, 0x1.aea048p-2f, 0x1.c74fc8p-1f, -0x1.3fdf8cp+1f,
     /* node 2580 z */
-    -0x1.266666p-55f, -0x1.e29626p-2f, -0x1.3184ccp-1f, 0x1.4f675p+1f,
+    -0x1.8cccccp-55f, -0x1.e1c77ep-2f, -0x1.31c678p-1f, 0x1.4ed926p+1f,
     /* node 2581 x */
-    -0x1.2cccccp-57f, 0x1.340e68p-1f, -0x1.c79794p-8f, -0x1.a9f4fp-3f,
+    -0x1.666666p-56f, 0x1.33274ep-1f, -0x1.cef09ep-8f, -0x1.a89cf6p-3f,
     /* node 2581 y */
-    -0x1p-56f, 0x1.d61abcp-2f, 0x1.c8d8a8p-1f, -0x1.3ea074p+1f,
+    0x1p-57f, 0x1.d5ap-2f, 0x1.c922d4p-1f, -0x1.3e7c4p+1f,
     /* node 2581 z */
-    -0x1.e66666p-56f, -0x1.f5e986p-2f, -0x1.2f3bcap-1f, 0x1.439bcap+1f,
+    -0x1.99999ap-57f, -0x1.f52558p-2f, -0x1.2f811ep-1f, 0x1.430d74p+1f,
     /* node 2582 x */
-    0x1.49999ap-56f, 0x1.5e4fb6p-1f, 0x1.c078b2p-7f, -0x1.2019fep-2f,
+    0x1.14ccccp-55f, 0x1.5d8aap-1f, 0x1.c5df6cp-7f, -0x1.1fd39cp-2f,
     /* node 2582 y */
-    0x1.4cccccp-56f, 0x1.cf22fcp-2f, 0x1.c192cp-1f, -0x1.38bf86p+1f,
+    -0x1.666666p-57f, 0x1.ce40d6p-2f, 0x1.c1ddb4p-1f, -0x1.388638p+1f,
     /* node 2582 z */
-    -0x1.0cccccp-55f, -0x1.1de29ep-1f, -0x1.3e057ep-1f, 0x1.6d837cp+1f,
+    -0x1.ccccccp-57f, -0x1.1d5672p-1f, -0x1.3e3bc8p-1f, 0x1.6ce356p+1f,
     /* node 2583 x */
-    -0x1.19999ap-57f, 0x1.8746ccp-1f, 0x1.9c708cp-5f, -0x1.625416p-2f,
+    0x1.7cccccp-55f, 0x1.86834p-1f, 0x1.9e2e18p-5f, -0x1.6203bap-2f,
     /* node 2583 y */
-    0x1.666666p-57f, 0x1.62f66ap-2f, 0x1.b14024p-1f, -0x1.24e1eep+1f,
+    -0x1.333334p-57f, 0x1.6257d4p-2f, 0x1.b188e2p-1f, -0x1.24c1c4p+1f,
     /* node 2583 z */
-    -0x1.666666p-56f, -0x1.0ae256p-1f, -0x1.4286bp-1f, 0x1.945336p+1f,
+    -0x1.333334p-57f, -0x1.0a1b08p-1f, -0x1.42cd5p-1f, 0x1.93b72cp+1f,
     /* node 2584 x */
-    0x1.6cccccp-57f, 0x1.66ef74p-1f, 0x1.f78076p-6f, -0x1.26ee54p-2f,
+    0x1.033334p-56f, 0x1.66408ep-1f, 0x1.fb6ffcp-6f, -0x1.26d026p-2f,
     /* node 2584 y */
-    0x1.8p-56f, 0x1.89d754p-2f, 0x1.bb47ecp-1f, -0x1.349ea8p+1f,
+    0x1.666666p-56f, 0x1.89380ap-2f, 0x1.bb8f1ap-1f, -0x1.346d8ep+1f,
     /* node 2584 z */
-    0x1.333334p-57f, -0x1.0906c8p-1f, -0x1.3f0822p-1f, 0x1.7fe932p+1f,
+    -0x1.e66666p-55f, -0x1.086efap-1f, -0x1.3f4298p-1f, 0x1.7f473p+1f,
     /* node 2585 x */
-    -0x1.8p-59f, 0x1.780dfap-1f, 0x1.431014p-5f, -0x1.461f52p-2f,
+    0x1.fcccccp-56f, 0x1.770bep-1f, 0x1.469328p-5f, -0x1.459006p-2f,
     /* node 2585 y */
-    0x1.ccccccp-57f, 0x1.772a12p-2f, 0x1.b66118p-1f, -0x1.2d9d3ap+1f,
+    0x1.99999ap-56f, 0x1.7691b2p-2f, 0x1.b6af56p-1f, -0x1.2d7a06p+1f,
     /* node 2585 z */
-    -0x1.19999ap-55f, -0x1.09e34cp-1f, -0x1.4122dcp-1f, 0x1.8a177ap+1f,
+    -0x1.99999ap-56f, -0x1.094c4ap-1f, -0x1.4152c4p-1f, 0x1.898852p+1f,
     /* node 2586 x */
-    0x1.b33334p-58f, 0x1.8c28fcp-1f, 0x1.7bf956p-5f, -0x1.6d5cfp-2f,
+    -0x1.133334p-55f, 0x1.8bb526p-1f, 0x1.7ba44ap-5f, -0x1.6d6482p-2f,
     /* node 2586 y */
-    0x1.b33334p-56f, 0x1.7a34bap-2f, 0x1.b2ef0ap-1f, -0x1.257a6ap+1f,
+    0x1.99999ap-60f, 0x1.7a08eep-2f, 0x1.b316fcp-1f, -0x1.25467cp+1f,
     /* node 2586 z */
-    -0x1.8p-55f, -0x1.1a7842p-1f, -0x1.43263cp-1f, 0x1.953314p+1f,
+    0x1.333334p-57f, -0x1.1a0748p-1f, -0x1.435ddep-1f, 0x1.948106p+1f,
     /* node 2587 x */
-    0x1.acccccp-57f, 0x1.7c909ap-1f, 0x1.28939ap-5f, -0x1.51c6a6p-2f,
+    -0x1.e66666p-59f, 0x1.7bde6cp-1f, 0x1.29e15p-5f, -0x1.515518p-2f,
     /* node 2587 y */
-    0x1.4cccccp-56f, 0x1.90a9eep-2f, 0x1.b7f014p-1f, -0x1.2e370cp+1f,
+    -0x1.99999ap-60f, 0x1.906e28p-2f, 0x1.b81e28p-1f, -0x1.2e1e66p+1f,
     /* node 2587 z */
-    -0x1.ccccccp-56f, -0x1.19200ep-1f, -0x1.428586p-1f, 0x1.8b573ep+1f,
+    -0x1.19999ap-55f, -0x1.18ac9ep-1f, -0x1.42b0e6p-1f, 0x1.8abdd2p+1f,
     /* node 2588 x */
-    0x1.4cccccp-59f, 0x1.91583ep-1f, 0x1.5c0ff6p-5f, -0x1.728146p-2f,
+    0x1.ap-56f, 0x1.905024p-1f, 0x1.5ef8eep-5f, -0x1.717a7ap-2f,
     /* node 2588 y */
-    -0x1.99999ap-58f, 0x1.910d66p-2f, 0x1.b4991cp-1f, -0x1.240ea2p+1f,
+    0x1.59999ap-55f, 0x1.9041b2p-2f, 0x1.b4ef3cp-1f, -0x1.23e7b2p+1f,
     /* node 2588 z */
-    -0x1.333334p-57f, -0x1.29f5dcp-1f, -0x1.4490a4p-1f, 0x1.9524ecp+1f,
+    -0x0p+0f, -0x1.2965bep-1f, -0x1.44b9fcp-1f, 0x1.94aaccp+1f,
     /* node 2589 x */
-    0x1.366666p-56f, 0x1.79f224p-1f, 0x1.cfe93ap-6f, -0x1.4ece94p-2f,
+    0x1.dcccccp-56f, 0x1.790f1ep-1f, 0x1.d3da74p-6f, -0x1.4e32ap-2f,
     /* node 2589 y */
-    -0x1.ccccccp-56f, 0x1.acdbb8p-2f, 0x1.ba2ac6p-1f, -0x1.30c1bep+1f,
+    -0x1.99999ap-57f, 0x1.ac4852p-2f, 0x1.ba781p-1f, -0x1.309852p+1f,
     /* node 2589 z */
-    0x1.333334p-57f, -0x1.230116p-1f, -0x1.4367cap-1f, 0x1.8555aep+1f,
+    -0x1.666666p-57f, -0x1.229e0ap-1f, -0x1.4394fep-1f, 0x1.84c592p+1f,
     /* node 2590 x */
-    -0x1.59999ap-56f, 0x1.6943f6p-1f, 0x1.6281b2p-6f, -0x1.32507ap-2f,
+    -0x1p-60f, 0x1.68a71cp-1f, 0x1.63f1aap-6f, -0x1.325a98p-2f,
     /* node 2590 y */
-    -0x1.99999ap-59f, 0x1.b20c44p-2f, 0x1.be487p-1f, -0x1.362c32p+1f,
+    0x1.333334p-56f, 0x1.b1f8f8p-2f, 0x1.be86ccp-1f, -0x1.36169p+1f,
     /* node 2590 z */
-    0x1.19999ap-55f, -0x1.194d5ap-1f, -0x1.3ffffp-1f, 0x1.796856p+1f,
+    0x1.99999ap-60f, -0x1.190bap-1f, -0x1.4036aep-1f, 0x1.78e314p+1f,
     /* node 2591 x */
-    0x1.14ccccp-55f, 0x1.8a64f6p-1f, 0x1.341d5cp-5f, -0x1.678d72p-2f,
+    0x1.666666p-58f, 0x1.89adcep-1f, 0x1.356b04p-5f, -0x1.6726a2p-2f,
     /* node 2591 y */
-    0x1.f33334p-55f, 0x1.a29a0ap-2f, 0x1.b6e7d4p-1f, -0x1.2820b6p+1f,
+    -0x1.59999ap-55f, 0x1.a1e63ep-2f, 0x1.b72f98p-1f, -0x1.27ea96p+1f,
     /* node 2591 z */
-    0x1.666666p-56f, -0x1.2d816ap-1f, -0x1.444856p-1f, 0x1.901e7ep+1f,
+    -0x1.333334p-55f, -0x1.2d1fecp-1f, -0x1.446d5ap-1f, 0x1.8f8826p+1f,
     /* node 2592 x */
-    0x1.1e6666p-55f, 0x1.95766p-1f, 0x1.48c0cp-5f, -0x1.79dfbap-2f,
+    -0x0p+0f, 0x1.94b1c2p-1f, 0x1.49d7bap-5f, -0x1.796354p-2f,
     /* node 2592 y */
-    -0x1.99999ap-58f, 0x1.9e3d24p-2f, 0x1.b493d6p-1f, -0x1.23cc8cp+1f,
+    0x1p-56f, 0x1.9dc7ecp-2f, 0x1.b4c9dp-1f, -0x1.23a258p+1f,
     /* node 2592 z */
-    -0x1.99999ap-56f, -0x1.3205ap-1f, -0x1.453b6p-1f, 0x1.954a5cp+1f,
+    -0x1.4cccccp-55f, -0x1.31abecp-1f, -0x1.455442p-1f, 0x1.94c32cp+1f,
     /* node 2593 x */
-    0x1.133334p-55f, 0x1.6f54eap-1f, 0x1.3e4b36p-6f, -0x1.40d6aep-2f,
+    0x1.b33334p-57f, 0x1.6ea624p-1f, 0x1.3fc108p-6f, -0x1.4093d6p-2f,
     /* node 2593 y */
-    -0x1.99999ap-58f, 0x1.cadf9ep-2f, 0x1.be4d9cp-1f, -0x1.3433a4p+1f,
+    0x1.99999ap-59f, 0x1.c9d8eep-2f, 0x1.be9736p-1f, -0x1.33eafcp+1f,
     /* node 2593 z */
-    -0x1.cp-55f, -0x1.278e62p-1f, -0x1.4150cep-1f, 0x1.78d0d2p+1f,
+    -0x1.8cccccp-55f, -0x1.270aa4p-1f, -0x1.4181ecp-1f, 0x1.783392p+1f,
     /* node 2594 x */
-    0x1.58p-55f, 0x1.7f822ap-1f, 0x1.a9c9e2p-6f, -0x1.57cdeep-2f,
+    0x1.69999ap-55f, 0x1.7ea01p-1f, 0x1.ae7e1ep-6f, -0x1.570e02p-2f,
     /* node 2594 y */
-    -0x1.19999ap-56f, 0x1.c2f422p-2f, 0x1.bb6a8ap-1f, -0x1.2de6dp+1f,
+    0x1.333334p-56f, 0x1.c20e16p-2f, 0x1.bbb278p-1f, -0x1.2da46ap+1f,
     /* node 2594 z */
-    0x1.4cccccp-56f, -0x1.304bd2p-1f, -0x1.44e42ap-1f, 0x1.83efcp+1f,
+    -0x1.4cccccp-56f, -0x1.2fc816p-1f, -0x1.451634p-1f, 0x1.835642p+1f,
     /* node 2595 x */
-    0x1.0cccccp-56f, 0x1.ae940cp-1f, 0x1.712f64p-5f, -0x1.a5cfaep-2f,
+    0x1.f33334p-57f, 0x1.ad8b9cp-1f, 0x1.74cbp-5f, -0x1.a4b766p-2f,
     /* node 2595 y */
-    -0x1.99999ap-59f, 0x1.9c3674p-2f, 0x1.b02e1ep-1f, -0x1.175f76p+1f,
+    0x1.4cccccp-56f, 0x1.9bf648p-2f, 0x1.b074d4p-1f, -0x1.175584p+1f,
     /* node 2595 z */
-    -0x1.ccccccp-55f, -0x1.44a7ccp-1f, -0x1.4635fp-1f, 0x1.9eba2ap+1f,
+    -0x1.ccccccp-56f, -0x1.44ac8cp-1f, -0x1.462e28p-1f, 0x1.9e5e48p+1f,
     /* node 2596 x */
-    0x1.666666p-56f, 0x1.9e1296p-1f, 0x1.7ae592p-5f, -0x1.89b8b6p-2f,
+    0x1.8p-57f, 0x1.9d30bcp-1f, 0x1.7cf86p-5f, -0x1.88c71ep-2f,
     /* node 2596 y */
-    -0x1.19999ap-56f, 0x1.8bc49ap-2f, 0x1.b16fdep-1f, -0x1.1e963ap+1f,
+    0x1.333334p-56f, 0x1.8b4938p-2f, 0x1.b1aca6p-1f, -0x1.1e7658p+1f,
     /* node 2596 z */
-    -0x1.666666p-56f, -0x1.2f4ce6p-1f, -0x1.455a9cp-1f, 0x1.9aa03ap+1f,
+    0x1.333334p-56f, -0x1.2ea8bap-1f, -0x1.4588ccp-1f, 0x1.9a0e7ep+1f,
     /* node 2597 x */
-    0x1.69999ap-55f, 0x1.bf3236p-1f, 0x1.1f5338p-4f, -0x1.c0696p-2f,
+    0x1.99999ap-57f, 0x1.be7cf6p-1f, 0x1.2043d8p-4f, -0x1.bf9652p-2f,
     /* node 2597 y */
-    0x1p-56f, 0x1.448724p-2f, 0x1.a5a6p-1f, -0x1.089388p+1f,
+    0x1.333334p-57f, 0x1.44053p-2f, 0x1.a5bed6p-1f, -0x1.0894acp+1f,
     /* node 2597 z */
-    -0x1.99999ap-56f, -0x1.20a362p-1f, -0x1.42754ap-1f, 0x1.ab8c28p+1f,
+    0x1.99999ap-59f, -0x1.1fbfdcp-1f, -0x1.429bc8p-1f, 0x1.ab0b74p+1f,
     /* node 2598 x */
-    -0x1p-57f, 0x1.f2f878p-1f, 0x1.5621fep-4f, -0x1.068528p-1f,
+    0x1.866666p-56f, 0x1.f226c2p-1f, 0x1.56f426p-4f, -0x1.069a18p-1f,
     /* node 2598 y */
-    0x1.333334p-56f, 0x1.256b94p-2f, 0x1.9ddeecp-1f, -0x1.d8c686p+0f,
+    -0x1.8p-56f, 0x1.2584f6p-2f, 0x1.9e2436p-1f, -0x1.d8a8dep+0f,
     /* node 2598 z */
-    -0x0p+0f, -0x1.320becp-1f, -0x1.3d8d52p-1f, 0x1.bad4d2p+1f,
+    -0x1.99999ap-58f, -0x1.31924ap-1f, -0x1.3dbda6p-1f, 0x1.ba34ep+1f,
     /* node 2599 x */
-    0x1.9p-56f, 0x1.97e17ap-1f, 0x1.9d8cd6p-5f, -0x1.80d4f2p-2f,
+    0x1.91999ap-55f, 0x1.97249cp-1f, 0x1.9fa5a8p-5f, -0x1.810d84p-2f,
     /* node 2599 y */
-    -0x1.99999ap-57f, 0x1.73501ap-2f, 0x1.b098ap-1f, -0x1.1f2e1ap+1f,
+    -0x1.8p-56f, 0x1.7324bcp-2f, 0x1.b0d05ep-1f, -0x1.1f0d54p+1f,
     /* node 2599 z */
-    -0x1p-56f, -0x1.1f4ffep-1f, -0x1.43d284p-1f, 0x1.9a1648p+1f,
+    -0x1p-56f, -0x1.1ee67p-1f, -0x1.43f63p-1f, 0x1.997fd2p+1f,
     /* node 2600 x */
-    0x1.99999ap-62f, 0x1.dbda7ap-1f, 0x1.0da486p-4f, -0x1.f1b198p-2f,
+    0x1.cp-57f, 0x1.db118cp-1f, 0x1.0f1234p-4f, -0x1.efefdp-2f,
     /* node 2600 y */
-    0x1.99999ap-57f, 0x1.5abc3ap-2f, 0x1.a52a42p-1f, -0x1.fa4a36p+0f,
+    -0x1.333334p-57f, 0x1.5a3d16p-2f, 0x1.a5658cp-1f, -0x1.fa1204p+0f,
     /* node 2600 z */
-    -0x1.333334p-55f, -0x1.426cdp-1f, -0x1.419a42p-1f, 0x1.b1e8e4p+1f,
+    0x1.333334p-57f, -0x1.41d0fap-1f, -0x1.41c08ep-1f, 0x1.b158aep+1f,
     /* node 2601 x */
-    0x1.59999ap-57f, 0x1.ac0bf8p-1f, 0x1.d7fc72p-5f, -0x1.a28066p-2f,
+    0x1.ap-56f, 0x1.ab254cp-1f, 0x1.d9523ep-5f, -0x1.a1c2fp-2f,
     /* node 2601 y */
-    -0x1.333334p-57f, 0x1.6986a4p-2f, 0x1.ac4e2ep-1f, -0x1.1514ep+1f,
+    0x1p-57f, 0x1.69003cp-2f, 0x1.ac87fcp-1f, -0x1.14e7d8p+1f,
     /* node 2601 z */
-    -0x1.19999ap-55f, -0x1.288bb4p-1f, -0x1.441b62p-1f, 0x1.a36ecep+1f,
+    -0x1.666666p-56f, -0x1.27f52ap-1f, -0x1.444f16p-1f, 0x1.a2d2e6p+1f,
     /* node 2602 x */
-    0x1.cp-57f, 0x1.b32e86p-1f, 0x1.b33ef8p-5f, -0x1.b25d8cp-2f,
+    0x1.08p-54f, 0x1.b27a8ep-1f, 0x1.b2fc8cp-5f, -0x1.b2c6d8p-2f,
     /* node 2602 y */
-    0x1.4cccccp-56f, 0x1.7f9026p-2f, 0x1.accc62p-1f, -0x1.1375b8p+1f,
+    0x1p-55f, 0x1.7f3adep-2f, 0x1.ad16fep-1f, -0x1.134a08p+1f,
     /* node 2602 z */
-    -0x1.ccccccp-56f, -0x1.39523p-1f, -0x1.44bb3p-1f, 0x1.a30558p+1f,
+    -0x1p-55f, -0x1.389aa6p-1f, -0x1.44e6d2p-1f, 0x1.a25b18p+1f,
     /* node 2603 x */
-    -0x1.466666p-56f, 0x1.beb7b6p-1f, 0x1.d4e4f2p-5f, -0x1.c08b4ep-2f,
+    0x1.99999ap-62f, 0x1.be1c38p-1f, 0x1.d62fcap-5f, -0x1.c18e64p-2f,
     /* node 2603 y */
-    -0x0p+0f, 0x1.79a9dp-2f, 0x1.aa4908p-1f, -0x1.0cd24ap+1f,
+    0x1.666666p-57f, 0x1.79a3cp-2f, 0x1.aa9d56p-1f, -0x1.0cc108p+1f,
     /* node 2603 z */
-    -0x0p+0f, -0x1.3e6ab6p-1f, -0x1.44a1f6p-1f, 0x1.a7dfe8p+1f,
+    -0x1.99999ap-58f, -0x1.3e2ccp-1f, -0x1.44b356p-1f, 0x1.a74f32p+1f,
     /* node 2604 x */
-    0x1.79999ap-55f, 0x1.d2def6p-1f, 0x1.d2a054p-5f, -0x1.e630c2p-2f,
+    0x1.9p-55f, 0x1.d1bfe2p-1f, 0x1.d78e96p-5f, -0x1.e48938p-2f,
     /* node 2604 y */
-    0x1.59999ap-55f, 0x1.78c6d2p-2f, 0x1.a98c8p-1f, -0x1.03bafep+1f,
+    0x1.266666p-55f, 0x1.781bc8p-2f, 0x1.a9de32p-1f, -0x1.03890cp+1f,
     /* node 2604 z */
-    0x1.99999ap-59f, -0x1.4fbe1p-1f, -0x1.436ecep-1f, 0x1.ad129ap+1f,
+    -0x1.99999ap-59f, -0x1.4f1be2p-1f, -0x1.4382ep-1f, 0x1.ac6172p+1f,
     /* node 2605 x */
-    0x1.e66666p-58f, 0x1.ba525ep-1f, 0x1.9a6b54p-5f, -0x1.bb9e58p-2f,
+    0x1.8p-58f, 0x1.b9d65p-1f, 0x1.9800c8p-5f, -0x1.bbc016p-2f,
     /* node 2605 y */
-    -0x1.99999ap-57f, 0x1.967336p-2f, 0x1.ad848ap-1f, -0x1.1164c2p+1f,
+    0x1.4p-55f, 0x1.960d1ep-2f, 0x1.ada3eap-1f, -0x1.115aeap+1f,
     /* node 2605 z */
-    -0x1.333334p-56f, -0x1.4a271cp-1f, -0x1.4631fep-1f, 0x1.a2d6a8p+1f,
+    -0x1.ccccccp-56f, -0x1.49ae22p-1f, -0x1.467b38p-1f, 0x1.a2440ap+1f,
     /* node 2606 x */
-    0x1.cp-57f, 0x1.cf0dfp-1f, 0x1.abbdaap-5f, -0x1.e03522p-2f,
+    0x1.19999ap-55f, 0x1.ce0fccp-1f, 0x1.b0bc96p-5f, -0x1.deda24p-2f,
     /* node 2606 y */
-    0x1.0cccccp-55f, 0x1.89597cp-2f, 0x1.aab882p-1f, -0x1.085a94p+1f,
+    -0x1.99999ap-58f, 0x1.89175ep-2f, 0x1.ab410cp-1f, -0x1.083c96p+1f,
     /* node 2606 z */
-    -0x1.99999ap-55f, -0x1.561ec2p-1f, -0x1.4560eep-1f, 0x1.aab2fp+1f,
+    -0x1.333334p-55f, -0x1.55cafp-1f, -0x1.453166p-1f, 0x1.aa4968p+1f,
     /* node 2610 x */
-    0x1.99999ap-57f, 0x1.f69a88p-1f, 0x1.1d45fep-4f, -0x1.08e006p-1f,
+    -0x1.f9999ap-56f, 0x1.f5eb0cp-1f, 0x1.1dd1e8p-4f, -0x1.08a978p-1f,
     /* node 2610 y */
-    0x1p-57f, 0x1.498642p-2f, 0x1.a1a71p-1f, -0x1.de720cp+0f,
+    0x1.99999ap-56f, 0x1.49702cp-2f, 0x1.a2211ap-1f, -0x1.de1f6ap+0f,
     /* node 2610 z */
-    0x1.ccccccp-56f, -0x1.4bf946p-1f, -0x1.3ed91ep-1f, 0x1.b8579ep+1f,
+    -0x1p-55f, -0x1.4b81ccp-1f, -0x1.3ed262p-1f, 0x1.b7d994p+1f,
     /* node 2611 x */
-    0x1.cp-55f, 0x1.0b7f9ep+0f, 0x1.4a0138p-4f, -0x1.1ded8ep-1f,
+    0x1p-57f, 0x1.0b2c44p+0f, 0x1.4a7daap-4f, -0x1.1db8cap-1f,
     /* node 2611 y */
-    -0x1p-57f, 0x1.20c7a8p-2f, 0x1.9d6c28p-1f, -0x1.b848bap+0f,
+    0x1.4cccccp-56f, 0x1.20c1e8p-2f, 0x1.9dcb16p-1f, -0x1.b81aecp+0f,
     /* node 2611 z */
-    -0x1.4cccccp-55f, -0x1.482d7ap-1f, -0x1.38b8a2p-1f, 0x1.c1a752p+1f,
+    0x1.99999ap-58f, -0x1.47d152p-1f, -0x1.38c7e4p-1f, 0x1.c102d8p+1f,
     /* node 2612 x */
-    0x1.8p-55f, 0x1.e32344p-1f, 0x1.ea11dp-5f, -0x1.feac78p-2f,
+    0x1.19999ap-55f, 0x1.e26278p-1f, 0x1.ea2118p-5f, -0x1.fea968p-2f,
     /* node 2612 y */
-    -0x1.99999ap-60f, 0x1.716784p-2f, 0x1.a628dp-1f, -0x1.f8f478p+0f,
+    0x1.4cccccp-56f, 0x1.711304p-2f, 0x1.a69368p-1f, -0x1.f8b8f2p+0f,
     /* node 2612 z */
-    -0x1p-55f, -0x1.553b96p-1f, -0x1.42c33ap-1f, 0x1.b10d3cp+1f,
+    0x1.333334p-56f, -0x1.54c084p-1f, -0x1.42ddbcp-1f, 0x1.b075a8p+1f,
     /* node 2613 x */
-    0x1.966666p-55f, 0x1.e96f9ap-1f, 0x1.cb0884p-5f, -0x1.02ac06p-1f,
+    0x1.79999ap-56f, 0x1.e8b1e8p-1f, 0x1.cbf758p-5f, -0x1.029708p-1f,
     /* node 2613 y */
-    -0x1.99999ap-59f, 0x1.7b373ep-2f, 0x1.a4bc18p-1f, -0x1.f2e9c6p+0f,
+    0x1.4cccccp-56f, 0x1.7ad99ep-2f, 0x1.a514dp-1f, -0x1.f2a22ep+0f,
     /* node 2613 z */
-    -0x0p+0f, -0x1.5f104cp-1f, -0x1.42a912p-1f, 0x1.b06374p+1f,
+    -0x1.59999ap-54f, -0x1.5e9decp-1f, -0x1.42bd1p-1f, 0x1.afc9b8p+1f,
     /* node 2614 x */
-    0x1.4p-54f, 0x1.04648cp+0f, 0x1.032d0ap-4f, -0x1.174794p-1f,
+    0x1.ccccccp-57f, 0x1.0415fp+0f, 0x1.029e04p-4f, -0x1.17183ep-1f,
     /* node 2614 y */
-    -0x1.333334p-57f, 0x1.5a1f12p-2f, 0x1.a2b7b2p-1f, -0x1.d2ceaap+0f,
+    0x1.4cccccp-56f, 0x1.5a141cp-2f, 0x1.a33a18p-1f, -0x1.d291a4p+0f,
     /* node 2614 z */
-    0x1p-55f, -0x1.621f1ep-1f, -0x1.3f062ep-1f, 0x1.b8abd8p+1f,
+    -0x1.ccccccp-54f, -0x1.617832p-1f, -0x1.3f2d14p-1f, 0x1.b814c6p+1f,
     /* node 2615 x */
-    0x1.666666p-59f, 0x1.dbf5a8p-1f, 0x1.c6531ap-5f, -0x1.f5b526p-2f,
+    -0x1.19999ap-57f, 0x1.db1664p-1f, 0x1.c6d2fcp-5f, -0x1.f535cap-2f,
     /* node 2615 y */
-    0x1.99999ap-60f, 0x1.84685ap-2f, 0x1.a83454p-1f, -0x1.01d2aep+1f,
+    -0x1p-56f, 0x1.84376cp-2f, 0x1.a8adb8p-1f, -0x1.01b0a2p+1f,
     /* node 2615 z */
-    -0x1.ccccccp-56f, -0x1.5bff8cp-1f, -0x1.441f46p-1f, 0x1.aec58p+1f,
+    0x1.333334p-57f, -0x1.5bbc26p-1f, -0x1.4424bap-1f, 0x1.ae447ep+1f,
     /* node 2616 x */
-    0x1.633334p-54f, 0x1.20d9f6p+0f, 0x1.6496fcp-4f, -0x1.33aa56p-1f,
+    0x1.8p-55f, 0x1.20a2d6p+0f, 0x1.64e266p-4f, -0x1.33872ep-1f,
     /* node 2616 y */
-    0x1.99999ap-56f, 0x1.0774bap-2f, 0x1.9d5a5ep-1f, -0x1.924ff4p+0f,
+    -0x1p-57f, 0x1.07a596p-2f, 0x1.9d8fe4p-1f, -0x1.920aecp+0f,
     /* node 2616 z */
-    -0x1.99999ap-58f, -0x1.507f18p-1f, -0x1.31d0ap-1f, 0x1.c9868ep+1f,
+    0x1.666666p-56f, -0x1.5043a6p-1f, -0x1.31ccf4p-1f, 0x1.c8ee44p+1f,
     /* node 2617 x */
-    0x1.99999ap-59f, 0x1.160e32p+0f, 0x1.19e9b8p-4f, -0x1.2923aep-1f,
+    0x1.3cccccp-55f, 0x1.15c458p+0f, 0x1.1ac31ap-4f, -0x1.28b532p-1f,
     /* node 2617 y */
-    0x1.99999ap-56f, 0x1.3485ccp-2f, 0x1.a0276ap-1f, -0x1.abc3cp+0f,
+    -0x1.99999ap-59f, 0x1.34e704p-2f, 0x1.a0d71cp-1f, -0x1.ab893ap+0f,
     /* node 2617 z */
-    -0x1.b33334p-55f, -0x1.64bacep-1f, -0x1.392a26p-1f, 0x1.c137bap+1f,
+    -0x1p-54f, -0x1.644a7p-1f, -0x1.39591ap-1f, 0x1.c0bb1ap+1f,
     /* node 2618 x */
-    0x1.3cccccp-54f, 0x1.234b5ep+0f, 0x1.3f4f48p-4f, -0x1.38e4acp-1f,
+    -0x1p-58f, 0x1.232364p+0f, 0x1.3e662cp-4f, -0x1.38594p-1f,
     /* node 2618 y */
-    0x1.99999ap-59f, 0x1.1d4a1p-2f, 0x1.a00f42p-1f, -0x1.943aap+0f,
+    -0x1.b33334p-56f, 0x1.1cf168p-2f, 0x1.a0a354p-1f, -0x1.944adap+0f,
     /* node 2618 z */
-    -0x1.19999ap-55f, -0x1.65769ap-1f, -0x1.335752p-1f, 0x1.c70f78p+1f,
+    -0x1.19999ap-54f, -0x1.64eb32p-1f, -0x1.33ae0cp-1f, 0x1.c67c96p+1f,
     /* node 2620 x */
-    0x1.99999ap-61f, 0x1.3b0142p+0f, 0x1.739abap-4f, -0x1.492512p-1f,
+    0x1.f9999ap-55f, 0x1.3abc7ap+0f, 0x1.7410e6p-4f, -0x1.4923dp-1f,
     /* node 2620 y */
-    0x1.333334p-56f, 0x1.c103fap-3f, 0x1.a11126p-1f, -0x1.668292p+0f,
+    -0x1p-58f, 0x1.c0b2b8p-3f, 0x1.a14e84p-1f, -0x1.65f408p+0f,
     /* node 2620 z */
-    -0x1.8p-55f, -0x1.51d96p-1f, -0x1.27bec6p-1f, 0x1.d2c244p+1f,
+    0x1.333334p-56f, -0x1.522cc6p-1f, -0x1.27ac3ap-1f, 0x1.d20eaep+1f,
     /* node 2621 x */
-    0x1.58p-54f, 0x1.5a0aecp+0f, 0x1.5dd3bcp-4f, -0x1.5d92ecp-1f,
+    0x1.966666p-54f, 0x1.59caap+0f, 0x1.5e7ae6p-4f, -0x1.5d0de8p-1f,
     /* node 2621 y */
-    -0x1.4p-56f, 0x1.9d11aep-3f, 0x1.b1de26p-1f, -0x1.403944p+0f,
+    0x1.59999ap-56f, 0x1.9d6d04p-3f, 0x1.b26186p-1f, -0x1.406e68p+0f,
     /* node 2621 z */
-    -0x1.666666p-55f, -0x1.5d271ap-1f, -0x1.1bb676p-1f, 0x1.dc53b8p+1f,
+    0x1.4cccccp-55f, -0x1.5c6bcep-1f, -0x1.1bf7f2p-1f, 0x1.dbee14p+1f,
     /* node 2622 x */
-    0x1.6p-55f, 0x1.7cdcp+0f, 0x1.3f21bep-4f, -0x1.751654p-1f,
+    -0x1.6p-56f, 0x1.7cb81p+0f, 0x1.3ca9bp-4f, -0x1.743d58p-1f,
     /* node 2622 y */
-    -0x1.99999ap-59f, 0x1.5a2fdcp-3f, 0x1.c6a71ap-1f, -0x1.16e73ap+0f,
+    0x1.19999ap-57f, 0x1.596dp-3f, 0x1.c7ebcep-1f, -0x1.175ff6p+0f,
     /* node 2622 z */
-    -0x1.666666p-55f, -0x1.697dd8p-1f, -0x1.10501ep-1f, 0x1.e516ep+1f,
+    0x1.99999ap-59f, -0x1.687b2p-1f, -0x1.10a6dcp-1f, 0x1.e47562p+1f,
     /* node 2623 x */
-    -0x1.99999ap-57f, 0x1.36e644p+0f, 0x1.454838p-4f, -0x1.4034c2p-1f,
+    0x1.9cccccp-55f, 0x1.36b4bcp+0f, 0x1.454e9p-4f, -0x1.3f3afcp-1f,
     /* node 2623 y */
-    0x1.99999ap-58f, 0x1.fa8006p-3f, 0x1.a110a4p-1f, -0x1.750bd2p+0f,
+    0x1.333334p-58f, 0x1.fa2554p-3f, 0x1.a207acp-1f, -0x1.757a7cp+0f,
     /* node 2623 z */
-    -0x1.ccccccp-56f, -0x1.66c776p-1f, -0x1.2d1408p-1f, 0x1.d01d02p+1f,
+    -0x1p-54f, -0x1.65dca6p-1f, -0x1.2d306ap-1f, 0x1.cf96c8p+1f,
     /* node 2624 x */
-    0x1p-58f, 0x1.493eb6p+0f, 0x1.442978p-4f, -0x1.526f4p-1f,
+    -0x1.4cccccp-57f, 0x1.48fb7ap+0f, 0x1.44196ep-4f, -0x1.52501p-1f,
     /* node 2624 y */
-    0x1.666666p-58f, 0x1.e2dc4cp-3f, 0x1.a81652p-1f, -0x1.5bce7ep+0f,
+    -0x1.666666p-57f, 0x1.e1ccfep-3f, 0x1.a86cbep-1f, -0x1.5b9ce6p+0f,
     /* node 2624 z */
-    -0x1.99999ap-56f, -0x1.6f7fcep-1f, -0x1.24a75ep-1f, 0x1.d6006cp+1f,
+    -0x1.8p-55f, -0x1.6eec78p-1f, -0x1.2516eep-1f, 0x1.d5758cp+1f,
     /* node 2625 x */
-    -0x1.4cccccp-57f, 0x1.60535ap+0f, 0x1.24c286p-4f, -0x1.60ac56p-1f,
+    0x1.a9999ap-55f, 0x1.5fe11p+0f, 0x1.27801ap-4f, -0x1.606a3p-1f,
     /* node 2625 y */
-    -0x1.4cccccp-57f, 0x1.c7f2bap-3f, 0x1.b8f74p-1f, -0x1.4623d6p+0f,
+    -0x1.19999ap-57f, 0x1.c7ee62p-3f, 0x1.b99df6p-1f, -0x1.463536p+0f,
     /* node 2625 z */
-    -0x1.666666p-56f, -0x1.77f982p-1f, -0x1.1e49p-1f, 0x1.dc7da4p+1f,
+    -0x1.666666p-56f, -0x1.773858p-1f, -0x1.1eaceap-1f, 0x1.dbf9dcp+1f,
     /* node 2626 x */
-    0x1.79999ap-56f, 0x1.3967ecp+0f, 0x1.1abd2cp-4f, -0x1.475aeap-1f,
+    0x1.1cccccp-55f, 0x1.39350ep+0f, 0x1.1a5e44p-4f, -0x1.46cae4p-1f,
     /* node 2626 y */
-    -0x1.99999ap-61f, 0x1.156ec4p-2f, 0x1.a23548p-1f, -0x1.75fed6p+0f,
+    -0x1.8p-57f, 0x1.153858p-2f, 0x1.a2eecap-1f, -0x1.760b92p+0f,
     /* node 2626 z */
-    -0x1.666666p-56f, -0x1.790dbap-1f, -0x1.2ee008p-1f, 0x1.cbe3e2p+1f,
+    -0x0p+0f, -0x1.785a16p-1f, -0x1.2ef788p-1f, 0x1.cb4d8ap+1f,
     /* node 2627 x */
-    -0x1.a66666p-55f, 0x1.58afe4p+0f, 0x1.f9cc6cp-5f, -0x1.62cd6p-1f,
+    0x1.3p-54f, 0x1.5858acp+0f, 0x1.fc888ep-5f, -0x1.6268ccp-1f,
     /* node 2627 y */
-    -0x1.4cccccp-57f, 0x1.f5c14ep-3f, 0x1.ae96fap-1f, -0x1.521a32p+0f,
+    -0x1.8p-56f, 0x1.f4d032p-3f, 0x1.af35fcp-1f, -0x1.520458p+0f,
     /* node 2627 z */
-    -0x1p-55f, -0x1.8a3852p-1f, -0x1.266e98p-1f, 0x1.d3c24cp+1f,
+    0x1.99999ap-58f, -0x1.89b672p-1f, -0x1.26cbfap-1f, 0x1.d32da8p+1f,
     /* node 2628 x */
-    -0x1.6b3334p-54f, 0x1.2406eap+0f, 0x1.d24a46p-5f, -0x1.392a6p-1f,
+    0x1.d66666p-55f, 0x1.238f72p+0f, 0x1.d0bfc2p-5f, -0x1.38d274p-1f,
     /* node 2628 y */
-    0x1.99999ap-59f, 0x1.49b988p-2f, 0x1.a0eea4p-1f, -0x1.9f66ccp+0f,
+    0x1.19999ap-56f, 0x1.49e2b4p-2f, 0x1.a1995cp-1f, -0x1.9f317ep+0f,
     /* node 2628 z */
-    -0x1.99999ap-59f, -0x1.7eb9acp-1f, -0x1.392458p-1f, 0x1.bee522p+1f,
+    -0x1.99999ap-58f, -0x1.7e5918p-1f, -0x1.396c6cp-1f, 0x1.be4edp+1f,
     /* node 2629 x */
-    0x1.733334p-55f, 0x1.5fc6c8p+0f, 0x1.87382ep-5f, -0x1.66288ep-1f,
+    0x1.933334p-55f, 0x1.5f720cp+0f, 0x1.87228ep-5f, -0x1.65d2bep-1f,
     /* node 2629 y */
-    0x1.e66666p-57f, 0x1.10f8d2p-2f, 0x1.ad9e24p-1f, -0x1.554fb6p+0f,
+    0x1.99999ap-56f, 0x1.10de66p-2f, 0x1.ae3572p-1f, -0x1.556f6ep+0f,
     /* node 2629 z */
-    -0x1.99999ap-59f, -0x1.9ac4e2p-1f, -0x1.2b310ep-1f, 0x1.cf2fp+1f,
+    -0x1p-55f, -0x1.9a6a2ap-1f, -0x1.2b4b8ep-1f, 0x1.ceb3dap+1f,
     /* node 2630 x */
-    0x1.6p-56f, 0x1.7c9052p+0f, 0x1.bd387p-5f, -0x1.75b1b8p-1f,
+    0x1.a66666p-56f, 0x1.7c4caap+0f, 0x1.bcd2bep-5f, -0x1.758e24p-1f,
     /* node 2630 y */
-    -0x1.e66666p-56f, 0x1.cef37ep-3f, 0x1.bfbc52p-1f, -0x1.32a134p+0f,
+    -0x1.666666p-58f, 0x1.cef04ep-3f, 0x1.c00d22p-1f, -0x1.32b1d8p+0f,
     /* node 2630 z */
-    0x1.99999ap-59f, -0x1.973396p-1f, -0x1.1ce408p-1f, 0x1.ddba04p+1f,
+    -0x1p-55f, -0x1.96f196p-1f, -0x1.1cd958p-1f, 0x1.dd2da2p+1f,
     /* node 2632 x */
-    0x1.c66666p-54f, 0x1.cd0f02p+0f, 0x1.2cb5dp-5f, -0x1.8b958ep-1f,
+    0x1.633334p-54f, 0x1.ccb16ep+0f, 0x1.2f268ap-5f, -0x1.8b5fe8p-1f,
     /* node 2632 y */
-    -0x1.666666p-57f, 0x1.6f9dap-3f, 0x1.0a3cep+0f, -0x1.fb3fa4p-1f,
+    -0x1.99999ap-60f, 0x1.70726cp-3f, 0x1.0a7a08p+0f, -0x1.fb41e4p-1f,
     /* node 2632 z */
-    -0x1.8p-55f, -0x1.a8eaacp-1f, -0x1.15d126p-1f, 0x1.ee0d22p+1f,
+    -0x1.99999ap-56f, -0x1.a89cd2p-1f, -0x1.15ece8p-1f, 0x1.ed7a8p+1f,
     /* node 2633 x */
-    0x1.3p-54f, 0x1.035fc8p+1f, 0x1.89bfaep-5f, -0x1.976698p-1f,
+    0x1.666666p-54f, 0x1.032576p+1f, 0x1.91fd2cp-5f, -0x1.974124p-1f,
     /* node 2633 y */
-    0x1.ccccccp-58f, 0x1.4b9b1ep-3f, 0x1.25e61cp+0f, -0x1.b8230cp-1f,
+    -0x1.19999ap-57f, 0x1.4c2p-3f, 0x1.25b568p+0f, -0x1.b79ecap-1f,
     /* node 2633 z */
-    -0x1.8p-55f, -0x1.a79db2p-1f, -0x1.04745p-1f, 0x1.f7d094p+1f,
+    -0x1.4cccccp-55f, -0x1.a757dep-1f, -0x1.047c14p-1f, 0x1.f7338ep+1f,
     /* node 2634 x */
-    0x1.e66666p-57f, 0x1.a79a26p+0f, 0x1.3377cep-5f, -0x1.8aa9d8p-1f,
+    0x1.8p-56f, 0x1.a761fap+0f, 0x1.351d8ap-5f, -0x1.8a48eep-1f,
     /* node 2634 y */
-    -0x1.333334p-57f, 0x1.bfa2dp-3f, 0x1.e77eccp-1f, -0x1.1c93ecp+0f,
+    0x1.4cccccp-57f, 0x1.bf50dp-3f, 0x1.e7f9d6p-1f, -0x1.1c9d8p+0f,
     /* node 2634 z */
-    -0x0p+0f, -0x1.b6fb02p-1f, -0x1.2203d8p-1f, 0x1.df7fcp+1f,
+    -0x1.19999ap-53f, -0x1.b65ffp-1f, -0x1.22311ep-1f, 0x1.dee8d2p+1f,
     /* node 2635 x */
-    0x1.99999ap-59f, 0x1.df73e8p+0f, 0x1.12b5c2p-5f, -0x1.9341f4p-1f,
+    -0x1.b66666p-54f, 0x1.df218ap+0f, 0x1.146b1p-5f, -0x1.92f664p-1f,
     /* node 2635 y */
-    -0x1.99999ap-58f, 0x1.70dd8ep-3f, 0x1.0cfd8ap+0f, -0x1.f5bcbap-1f,
+    -0x1.8cccccp-56f, 0x1.70c6fcp-3f, 0x1.0d4036p+0f, -0x1.f5d6c8p-1f,
     /* node 2635 z */
-    -0x1.4p-54f, -0x1.bd7edap-1f, -0x1.18cff6p-1f, 0x1.e86e6cp+1f,
+    -0x1.e66666p-55f, -0x1.bcffdep-1f, -0x1.18f9acp-1f, 0x1.e7d674p+1f,
     /* node 2637 x */
-    -0x1.4p-56f, 0x1.10d2c2p+1f, 0x1.2736ccp-5f, -0x1.96a27ep-1f,
+    0x1.39999ap-55f, 0x1.10aec6p+1f, 0x1.2b856cp-5f, -0x1.967266p-1f,
     /* node 2637 y */
-    0x1.99999ap-60f, 0x1.067b4cp-3f, 0x1.2ffa46p+0f, -0x1.8a8a12p-1f,
+    -0x1.333334p-57f, 0x1.05a4cp-3f, 0x1.304c26p+0f, -0x1.8a5ap-1f,
     /* node 2637 z */
-    0x1.99999ap-59f, -0x1.a20c66p-1f, -0x1.f8e9b2p-2f, 0x1.fab5a4p+1f,
+    -0x1.ccccccp-55f, -0x1.a14268p-1f, -0x1.f93d18p-2f, 0x1.fa2ep+1f,
     /* node 2638 x */
-    -0x1.79999ap-55f, 0x1.080e2cp+1f, 0x1.0416d6p-5f, -0x1.8dbd92p-1f,
+    -0x1.59999ap-56f, 0x1.07dacap+1f, 0x1.04e0ecp-5f, -0x1.8d8fcep-1f,
     /* node 2638 y */
-    -0x1.333334p-58f, 0x1.57edb2p-3f, 0x1.1fc692p+0f, -0x1.c4dc56p-1f,
+    0x1.333334p-58f, 0x1.582d4ap-3f, 0x1.1fea56p+0f, -0x1.c4cc5ap-1f,
     /* node 2638 z */
-    -0x1p-55f, -0x1.b6ff34p-1f, -0x1.0aba06p-1f, 0x1.eb967p+1f,
+    -0x1.266666p-54f, -0x1.b69298p-1f, -0x1.0b0d68p-1f, 0x1.eb037ap+1f,
     /* node 2639 x */
-    0x1.ap-55f, 0x1.17e916p+1f, 0x1.3b1ca2p-5f, -0x1.988a48p-1f,
+    0x1.3p-54f, 0x1.17b92cp+1f, 0x1.3c30f8p-5f, -0x1.9831acp-1f,
     /* node 2639 y */
-    -0x1p-59f, 0x1.1f3f4cp-4f, 0x1.336892p+0f, -0x1.3fe0f4p-1f,
+    -0x1.a66666p-57f, 0x1.21cb56p-4f, 0x1.33b80cp+0f, -0x1.40b982p-1f,
     /* node 2639 z */
-    -0x1.99999ap-55f, -0x1.8b5e3ap-1f, -0x1.e1cb6p-2f, 0x1.fb4dap+1f,
+    0x1.333334p-56f, -0x1.8ad694p-1f, -0x1.e29b14p-2f, 0x1.fac558p+1f,
     /* node 2640 x */
-    0x1.d9999ap-55f, 0x1.1e0b6ap+1f, 0x1.21f962p-6f, -0x1.90c462p-1f,
+    0x1.99999ap-59f, 0x1.1dcb9cp+1f, 0x1.272402p-6f, -0x1.90a964p-1f,
     /* node 2640 y */
-    -0x1.666666p-59f, 0x1.87b538p-5f, 0x1.3efdcep+0f, -0x1.1d41c4p-1f,
+    0x1.19999ap-57f, 0x1.8a003p-5f, 0x1.3ef5d6p+0f, -0x1.1ccf08p-1f,
     /* node 2640 z */
-    -0x1.666666p-56f, -0x1.85af46p-1f, -0x1.e3e266p-2f, 0x1.faa75ap+1f,
+    0x1.333334p-57f, -0x1.851898p-1f, -0x1.e3f892p-2f, 0x1.fa095p+1f,
     /* node 2641 x */
-    -0x1.d9999ap-56f, 0x1.165c4ap+1f, 0x1.aec04p-6f, -0x1.978d02p-1f,
+    0x1.8p-57f, 0x1.16265ap+1f, 0x1.b640f2p-6f, -0x1.974926p-1f,
     /* node 2641 y */
-    0x1p-58f, 0x1.7726e8p-4f, 0x1.2e242cp+0f, -0x1.5bfa5cp-1f,
+    -0x1p-57f, 0x1.78e7dap-4f, 0x1.2e336ap+0f, -0x1.5c3334p-1f,
     /* node 2641 z */
-    0x1.99999ap-59f, -0x1.a6f3a6p-1f, -0x1.e7eebap-2f, 0x1.f4d128p+1f,
+    -0x1.99999ap-57f, -0x1.a66f46p-1f, -0x1.e8207ap-2f, 0x1.f446ap+1f,
     /* node 2642 x */
-    0x1.f33334p-56f, 0x1.1f90eep+1f, 0x1.498f88p-8f, -0x1.7862d4p-1f,
+    0x1.733334p-55f, 0x1.1f5f6ap+1f, 0x1.4fe7bcp-8f, -0x1.77e02ep-1f,
     /* node 2642 y */
-    -0x1.266666p-57f, 0x1.891ccap-6f, 0x1.31fb4cp+0f, -0x1.027448p-1f,
+    -0x1.59999ap-57f, 0x1.890674p-6f, 0x1.32160ep+0f, -0x1.02a7dcp-1f,
     /* node 2642 z */
-    -0x1.b33334p-55f, -0x1.8f2906p-1f, -0x1.d6c58p-2f, 0x1.ea1676p+1f,
+    -0x1.99999ap-56f, -0x1.8eb804p-1f, -0x1.d71812p-2f, 0x1.e97eb2p+1f,
     /* node 2643 x */
-    0x1.1cccccp-54f, 0x1.d62842p+0f, 0x1.4ba8d6p-6f, -0x1.1be61ep-1f,
+    -0x1.69999ap-55f, 0x1.d5abap+0f, 0x1.4b0e36p-6f, -0x1.1b775ap-1f,
     /* node 2643 y */
-    -0x1.333334p-58f, 0x1.a16bfep-3f, 0x1.c59118p-1f, -0x1.4342f4p-1f,
+    -0x1.266666p-57f, 0x1.a0a65p-3f, 0x1.c5913ep-1f, -0x1.433b9ep-1f,
     /* node 2643 z */
-    -0x1.99999ap-57f, -0x1.765a5cp-1f, -0x1.1915dep-1f, 0x1.8f9128p+1f,
+    -0x1.19999ap-55f, -0x1.75f6p-1f, -0x1.196968p-1f, 0x1.8ef97ep+1f,
     /* node 2645 x */
-    -0x1.c33334p-56f, 0x1.89fa18p+0f, 0x1.cd2658p-7f, -0x1.2dbc88p-2f,
+    0x1.933334p-56f, 0x1.8982fep+0f, 0x1.c6ee98p-7f, -0x1.2cefdp-2f,
     /* node 2645 y */
-    -0x1.b33334p-58f, 0x1.cd1d58p-4f, 0x1.412e52p-1f, -0x1.af73dp-2f,
+    0x1.99999ap-62f, 0x1.ca5d98p-4f, 0x1.41570ap-1f, -0x1.b1a20ap-2f,
     /* node 2645 z */
-    -0x1.b33334p-56f, -0x1.10b24ap-1f, -0x1.06b9c4p-1f, 0x1.55354ep+1f,
+    0x1.b33334p-56f, -0x1.0ff48ep-1f, -0x1.06e7c8p-1f, 0x1.546734p+1f,
     /* node 2648 x */
-    -0x1.f9999ap-55f, 0x1.83ce54p+0f, -0x1.3d2fe6p-5f, -0x1.b13e5ap-2f,
+    0x1.09999ap-55f, 0x1.833bep+0f, -0x1.38d136p-5f, -0x1.b0eddap-2f,
     /* node 2648 y */
-    -0x1.533334p-58f, -0x1.a290a6p-5f, 0x1.8ed09ap-1f, -0x1.2f9e34p-3f,
+    -0x1.b66666p-57f, -0x1.976baep-5f, 0x1.8f74ccp-1f, -0x1.30844ep-3f,
     /* node 2648 z */
-    0x1.666666p-56f, -0x1.15785p-1f, -0x1.b3e2acp-2f, 0x1.68716cp+1f,
+    -0x1.99999ap-56f, -0x1.15fb6p-1f, -0x1.b3ab5ap-2f, 0x1.67f696p+1f,
     /* node 2649 x */
-    -0x1.99999ap-57f, 0x1.804cb8p+0f, 0x1.12735ep-6f, -0x1.2c965p-2f,
+    -0x1.266666p-56f, 0x1.80654cp+0f, 0x1.06bf72p-6f, -0x1.294aaap-2f,
     /* node 2649 y */
-    -0x1.133334p-56f, 0x1.406684p-4f, 0x1.554824p-1f, -0x1.4e016ap-2f,
+    0x1.4p-57f, 0x1.3ab46p-4f, 0x1.553b56p-1f, -0x1.4f57b8p-2f,
     /* node 2649 z */
-    0x1.666666p-57f, -0x1.087bdap-1f, -0x1.e47afp-2f, 0x1.569c34p+1f,
+    0x1.666666p-56f, -0x1.06cf0ep-1f, -0x1.e5721ap-2f, 0x1.56317cp+1f,
     /* node 2652 x */
-    0x1.d66666p-56f, 0x1.2839b2p+0f, -0x1.44ee0cp-6f, -0x1.184132p-2f,
+    0x1.4p-58f, 0x1.27ab5ap+0f, -0x1.3b8b46p-6f, -0x1.1728d2p-2f,
     /* node 2652 y */
-    -0x1.166666p-56f, -0x1.6ba47ap-5f, 0x1.10bf9ep-1f, -0x1.65eecap-4f,
+    0x1.b9999ap-58f, -0x1.6bd14p-5f, 0x1.11021cp-1f, -0x1.6a3092p-4f,
     /* node 2652 z */
-    0x1p-56f, -0x1.de4a52p-2f, -0x1.ae007cp-2f, 0x1.305234p+1f,
+    0x1.19999ap-56f, -0x1.dd8abp-2f, -0x1.ae0684p-2f, 0x1.2fcdecp+1f,
     /* node 2653 x */
-    -0x1.acccccp-58f, 0x1.e6fc22p-1f, -0x1.6b4812p-7f, -0x1.28ce4p-3f,
+    -0x1.266666p-58f, 0x1.e5bfdap-1f, -0x1.680a9p-7f, -0x1.26ab3ap-3f,
     /* node 2653 y */
-    0x1.8p-60f, -0x1.7aa4eap-7f, 0x1.6ee016p-2f, -0x1.74d7bcp-4f,
+    -0x1.14ccccp-56f, -0x1.72a5fcp-7f, 0x1.6f47a2p-2f, -0x1.7badaap-4f,
     /* node 2653 z */
-    0x1.19999ap-56f, -0x1.95ecdap-2f, -0x1.bdaf04p-2f, 0x1.0685cep+1f,
+    -0x1.733334p-55f, -0x1.950892p-2f, -0x1.bdf5fcp-2f, 0x1.05e11ep+1f,
     /* node 2654 x */
-    -0x1.b33334p-58f, 0x1.462676p+0f, -0x1.9eb366p-8f, -0x1.cbe73cp-3f,
+    0x1.dp-56f, 0x1.459d32p+0f, -0x1.91b08p-8f, -0x1.c85a54p-3f,
     /* node 2654 y */
-    0x1.99999ap-61f, 0x1.3126d4p-5f, 0x1.13a83p-1f, -0x1.c71974p-3f,
+    -0x1.8p-59f, 0x1.304fb2p-5f, 0x1.13bd9p-1f, -0x1.ca1284p-3f,
     /* node 2654 z */
-    0x1.99999ap-58f, -0x1.cda018p-2f, -0x1.d04decp-2f, 0x1.397a7ap+1f,
+    -0x1.b33334p-56f, -0x1.cc8234p-2f, -0x1.d0e494p-2f, 0x1.38dfbcp+1f,
     /* node 2657 x */
-    0x1.d33334p-56f, 0x1.424118p-1f, -0x1.f1efc4p-7f, -0x1.e7c134p-5f,
+    0x1.ep-58f, 0x1.4113e2p-1f, -0x1.f99398p-7f, -0x1.e59826p-5f,
     /* node 2657 y */
-    -0x1.466666p-59f, -0x1.468db6p-4f, 0x1.5b606cp-3f, 0x1.4beeeap-4f,
+    -0x1.99999ap-59f, -0x1.43f056p-4f, 0x1.5c26f8p-3f, 0x1.3f5b4p-4f,
     /* node 2657 z */
-    0x1.99999ap-60f, -0x1.512ae2p-2f, -0x1.80f9fap-2f, 0x1.913e1ap+0f,
+    -0x1.666666p-57f, -0x1.5037acp-2f, -0x1.80de94p-2f, 0x1.8fdeb2p+0f,
     /* node 2753 x */
-    0x1.4cccccp-59f, 0x1.40a4ap-1f, -0x1.4ad7f2p-8f, -0x1.e866e4p-3f,
+    -0x1.0cccccp-57f, 0x1.3fe716p-1f, -0x1.445c42p-8f, -0x1.e7dfa8p-3f,
     /* node 2753 y */
-    -0x1.4cccccp-56f, 0x1.f9af92p-2f, 0x1.c797c4p-1f, -0x1.3abceap+1f,
+    -0x1.99999ap-59f, 0x1.f982b8p-2f, 0x1.c7e13ep-1f, -0x1.3a9f6cp+1f,
     /* node 2753 z */
-    -0x1.19999ap-54f, -0x1.0ec6b2p-1f, -0x1.321278p-1f, 0x1.45b23ep+1f,
+    0x1.666666p-56f, -0x1.0e600cp-1f, -0x1.3252b4p-1f, 0x1.452222p+1f,
     /* node 2754 x */
-    0x1.266666p-57f, 0x1.549f3p-1f, 0x1.a798b8p-8f, -0x1.12e9a6p-2f,
+    0x1.833334p-56f, 0x1.53ffdep-1f, 0x1.b4937ep-8f, -0x1.130b9cp-2f,
     /* node 2754 y */
-    -0x1.333334p-56f, 0x1.df251ap-2f, 0x1.c411bp-1f, -0x1.3a5e64p+1f,
+    -0x1.333334p-57f, 0x1.dea934p-2f, 0x1.c45e4p-1f, -0x1.3a39bcp+1f,
     /* node 2754 z */
-    -0x1.8p-56f, -0x1.19d47ep-1f, -0x1.3ad81cp-1f, 0x1.60f916p+1f,
+    -0x1.0cccccp-55f, -0x1.195d56p-1f, -0x1.3b130ep-1f, 0x1.605f4cp+1f,
     /* node 2755 x */
-    0x1.d33334p-57f, 0x1.65b132p-1f, 0x1.80d238p-7f, -0x1.3186bp-2f,
+    0x1.a66666p-56f, 0x1.650834p-1f, 0x1.83d382p-7f, -0x1.316756p-2f,
     /* node 2755 y */
-    0x1.333334p-57f, 0x1.e7444cp-2f, 0x1.c0f836p-1f, -0x1.35be6p+1f,
+    -0x1.ccccccp-57f, 0x1.e74156p-2f, 0x1.c136c2p-1f, -0x1.35af9p+1f,
     /* node 2755 z */
-    -0x1.99999ap-57f, -0x1.2b293cp-1f, -0x1.3f553ap-1f, 0x1.6c3d86p+1f,
+    0x1p-56f, -0x1.2acc52p-1f, -0x1.3fa948p-1f, 0x1.6baff2p+1f,
     /* node 2756 x */
-    0x1.4p-58f, 0x1.58d00ap-1f, 0x1.8eb2ep-9f, -0x1.21df9p-2f,
+    0x1.2cccccp-57f, 0x1.5821fap-1f, 0x1.a933d8p-9f, -0x1.21f49cp-2f,
     /* node 2756 y */
-    -0x1.ccccccp-57f, 0x1.0214bp-1f, 0x1.c3e84p-1f, -0x1.36e8b2p+1f,
+    -0x1.99999ap-58f, 0x1.01f6a2p-1f, 0x1.c4488cp-1f, -0x1.36d202p+1f,
     /* node 2756 z */
-    -0x1.4cccccp-55f, -0x1.25adfp-1f, -0x1.3a3ee4p-1f, 0x1.5763f2p+1f,
+    -0x1.133334p-54f, -0x1.2541a2p-1f, -0x1.3a7e9ap-1f, 0x1.56c8p+1f,
     /* node 2757 x */
-    -0x1.99999ap-56f, 0x1.75319ap-1f, 0x1.b4dadap-7f, -0x1.4f88aap-2f,
+    -0x1.8p-58f, 0x1.7469dp-1f, 0x1.b99092p-7f, -0x1.4f0c42p-2f,
     /* node 2757 y */
-    0x1p-57f, 0x1.fac9bp-2f, 0x1.bdfefep-1f, -0x1.2f6a6cp+1f,
+    0x1.ccccccp-56f, 0x1.fa5c3cp-2f, 0x1.be3d74p-1f, -0x1.2f4baep+1f,
     /* node 2757 z */
-    -0x1.8p-56f, -0x1.3cf4eap-1f, -0x1.42a93ep-1f, 0x1.6fb938p+1f,
+    0x1.333334p-56f, -0x1.3c899ap-1f, -0x1.42e8ep-1f, 0x1.6f2484p+1f,
     /* node 2758 x */
-    0x1.4b3334p-55f, 0x1.47b144p-1f, -0x1.45d02ap-8f, -0x1.0fa66ap-2f,
+    0x1.333334p-61f, 0x1.46faa2p-1f, -0x1.3d1ddap-8f, -0x1.0f69bep-2f,
     /* node 2758 y */
-    0x1.a66666p-55f, 0x1.167edep-1f, 0x1.c5e2b8p-1f, -0x1.35a216p+1f,
+    0x1.333334p-58f, 0x1.166558p-1f, 0x1.c620bep-1f, -0x1.357ad2p+1f,
     /* node 2758 z */
-    -0x1.4cccccp-55f, -0x1.1e8efp-1f, -0x1.316ccep-1f, 0x1.3b5afcp+1f,
+    -0x1.0cccccp-55f, -0x1.1e251cp-1f, -0x1.319ceep-1f, 0x1.3ac8bep+1f,
     /* node 2759 x */
-    -0x1.933334p-57f, 0x1.7197d8p-1f, 0x1.b06102p-8f, -0x1.4a98e6p-2f,
+    0x1.fcccccp-56f, 0x1.70ee38p-1f, 0x1.ada216p-8f, -0x1.4a5c8cp-2f,
     /* node 2759 y */
-    0x1.19999ap-56f, 0x1.108adep-1f, 0x1.bd5492p-1f, -0x1.2c7b46p+1f,
+    -0x1.8cccccp-55f, 0x1.105b56p-1f, 0x1.bd7d84p-1f, -0x1.2c5258p+1f,
     /* node 2759 z */
-    -0x1.99999ap-59f, -0x1.431a7ep-1f, -0x1.3ffbacp-1f, 0x1.5ef998p+1f,
+    -0x1.19999ap-56f, -0x1.42903cp-1f, -0x1.401fe6p-1f, 0x1.5e4e78p+1f,
     /* node 2760 x */
-    0x1.933334p-56f, 0x1.9195cap-1f, 0x1.17572p-5f, -0x1.78169ep-2f,
+    0x1.666666p-55f, 0x1.90f698p-1f, 0x1.188d82p-5f, -0x1.7859f4p-2f,
     /* node 2760 y */
-    -0x1.333334p-56f, 0x1.ba34eep-2f, 0x1.b73182p-1f, -0x1.25bbfcp+1f,
+    0x1.99999ap-60f, 0x1.b98ceep-2f, 0x1.b784ep-1f, -0x1.2598f8p+1f,
     /* node 2760 z */
-    0x1.333334p-55f, -0x1.3ba89ep-1f, -0x1.45e172p-1f, 0x1.8f42f4p+1f,
+    -0x1.333334p-57f, -0x1.3b11eap-1f, -0x1.461f88p-1f, 0x1.8eb51ap+1f,
     /* node 2761 x */
-    0x1.3p-55f, 0x1.8cc85ep-1f, 0x1.ccbd6p-6f, -0x1.6eccfcp-2f,
+    0x1.49999ap-56f, 0x1.8c12c4p-1f, 0x1.d0b7a6p-6f, -0x1.6ee398p-2f,
     /* node 2761 y */
-    -0x1.333334p-57f, 0x1.ca6d46p-2f, 0x1.b8d156p-1f, -0x1.28762ap+1f,
+    0x1.19999ap-56f, 0x1.ca465cp-2f, 0x1.b92104p-1f, -0x1.285de8p+1f,
     /* node 2761 z */
-    0x1.333334p-55f, -0x1.3de9bep-1f, -0x1.45be0ap-1f, 0x1.88dbdap+1f,
+    0x1.333334p-57f, -0x1.3d8c56p-1f, -0x1.45f8bap-1f, 0x1.8859aap+1f,
     /* node 2762 x */
-    0x1.39999ap-55f, 0x1.9c667p-1f, 0x1.29bf3ap-5f, -0x1.8d0098p-2f,
+    -0x1.cp-57f, 0x1.9bd2ecp-1f, 0x1.2aa26p-5f, -0x1.8ce67ep-2f,
     /* node 2762 y */
-    0x1.333334p-56f, 0x1.b67c8cp-2f, 0x1.b42d3ep-1f, -0x1.217d7cp+1f,
+    0x1.4p-55f, 0x1.b5f738p-2f, 0x1.b48b3p-1f, -0x1.215824p+1f,
     /* node 2762 z */
-    0x1.99999ap-59f, -0x1.40daf4p-1f, -0x1.4725c2p-1f, 0x1.9449fp+1f,
+    0x1p-56f, -0x1.4043dcp-1f, -0x1.475d68p-1f, 0x1.93b276p+1f,
     /* node 2763 x */
-    0x1.2p-56f, 0x1.ac6754p-1f, 0x1.31d136p-5f, -0x1.a1886ep-2f,
+    0x1.99999ap-59f, 0x1.abaa3p-1f, 0x1.3170a8p-5f, -0x1.a14678p-2f,
     /* node 2763 y */
-    0x1.99999ap-57f, 0x1.ba8a9cp-2f, 0x1.b27fe8p-1f, -0x1.1aaa66p+1f,
+    0x1.d9999ap-55f, 0x1.ba50bep-2f, 0x1.b2e26p-1f, -0x1.1a5be6p+1f,
     /* node 2763 z */
-    -0x1.99999ap-58f, -0x1.4f5658p-1f, -0x1.486cbp-1f, 0x1.98c652p+1f,
+    0x1.333334p-56f, -0x1.4ea44ep-1f, -0x1.4876a2p-1f, 0x1.981246p+1f,
     /* node 2764 x */
-    0x1.166666p-56f, 0x1.830054p-1f, 0x1.4526b6p-6f, -0x1.658e1p-2f,
+    -0x1.ccccccp-59f, 0x1.8243b6p-1f, 0x1.47e5bcp-6f, -0x1.655cfcp-2f,
     /* node 2764 y */
-    0x1.ccccccp-56f, 0x1.e976bep-2f, 0x1.bbc644p-1f, -0x1.2c542ap+1f,
+    -0x1.99999ap-60f, 0x1.e90aa6p-2f, 0x1.bc0e6p-1f, -0x1.2c2f5cp+1f,
     /* node 2764 z */
-    -0x1p-56f, -0x1.414528p-1f, -0x1.45019p-1f, 0x1.7c2e0ap+1f,
+    -0x1.666666p-54f, -0x1.40e38ep-1f, -0x1.452cb4p-1f, 0x1.7ba1c8p+1f,
     /* node 2765 x */
-    0x1p-54f, 0x1.9bff8cp-1f, 0x1.f6c282p-6f, -0x1.8df6acp-2f,
+    0x1.99999ap-60f, 0x1.9b447cp-1f, 0x1.f6aedcp-6f, -0x1.8da01p-2f,
     /* node 2765 y */
-    0x1.19999ap-56f, 0x1.cf36dp-2f, 0x1.b641a8p-1f, -0x1.22920cp+1f,
+    -0x1.99999ap-58f, 0x1.ceb0d2p-2f, 0x1.b699e8p-1f, -0x1.22521ap+1f,
     /* node 2765 z */
-    -0x1.99999ap-56f, -0x1.4bbadp-1f, -0x1.47913p-1f, 0x1.8dd284p+1f,
+    -0x1p-55f, -0x1.4b509ep-1f, -0x1.47b02ep-1f, 0x1.8d3b02p+1f,
     /* node 2766 x */
-    0x1.b33334p-58f, 0x1.9b3192p-1f, 0x1.91f5f6p-6f, -0x1.89b17ap-2f,
+    0x1.99999ap-62f, 0x1.9a75c4p-1f, 0x1.96901ep-6f, -0x1.8989dap-2f,
     /* node 2766 y */
-    0x1.ccccccp-56f, 0x1.eb2c62p-2f, 0x1.b6cf26p-1f, -0x1.225b72p+1f,
+    -0x1.99999ap-60f, 0x1.eaf8a6p-2f, 0x1.b710f4p-1f, -0x1.224b3ep+1f,
     /* node 2766 z */
-    0x1.19999ap-56f, -0x1.540224p-1f, -0x1.486766p-1f, 0x1.850af6p+1f,
+    0x1.19999ap-56f, -0x1.5380bap-1f, -0x1.488d02p-1f, 0x1.848086p+1f,
     /* node 2767 x */
-    -0x1.333334p-57f, 0x1.a7e3a2p-1f, 0x1.0b5302p-5f, -0x1.a2e954p-2f,
+    -0x0p+0f, 0x1.a756e6p-1f, 0x1.09cca2p-5f, -0x1.a36cf6p-2f,
     /* node 2767 y */
-    0x1p-54f, 0x1.cb9ccep-2f, 0x1.b3ee02p-1f, -0x1.1e701p+1f,
+    -0x1.666666p-57f, 0x1.cba57p-2f, 0x1.b4475p-1f, -0x1.1e62e6p+1f,
     /* node 2767 z */
-    -0x1.99999ap-58f, -0x1.50f378p-1f, -0x1.4881aap-1f, 0x1.924c1cp+1f,
+    -0x1.333334p-57f, -0x1.50892ap-1f, -0x1.489adap-1f, 0x1.91d19cp+1f,
     /* node 2768 x */
-    0x1.f9999ap-56f, 0x1.b12426p-1f, 0x1.24ee6cp-5f, -0x1.ab50dep-2f,
+    -0x1p-58f, 0x1.b05b9ap-1f, 0x1.25e9ap-5f, -0x1.ab5c9ap-2f,
     /* node 2768 y */
-    0x1p-56f, 0x1.c2f716p-2f, 0x1.b26c6ap-1f, -0x1.190198p+1f,
+    0x1.99999ap-58f, 0x1.c2e69ap-2f, 0x1.b2c7aep-1f, -0x1.18f7dap+1f,
     /* node 2768 z */
-    -0x1.4cccccp-55f, -0x1.56b90ap-1f, -0x1.494cd2p-1f, 0x1.9765a2p+1f,
+    0x1.99999ap-57f, -0x1.566638p-1f, -0x1.494f56p-1f, 0x1.9707p+1f,
     /* node 2769 x */
-    -0x1.4cccccp-57f, 0x1.a5ca1ep-1f, 0x1.b8df9p-6f, -0x1.9bd84ap-2f,
+    0x1.333334p-58f, 0x1.a53862p-1f, 0x1.ba7ffap-6f, -0x1.9c026ap-2f,
     /* node 2769 y */
-    0x1p-56f, 0x1.e5f264p-2f, 0x1.b4cbb4p-1f, -0x1.1e946ep+1f,
+    0x1.4cccccp-56f, 0x1.e5dc46p-2f, 0x1.b50fbep-1f, -0x1.1e6d2ap+1f,
     /* node 2769 z */
-    -0x1.333334p-57f, -0x1.5abeacp-1f, -0x1.490156p-1f, 0x1.8a36e2p+1f,
+    -0x1.333334p-55f, -0x1.5a2b56p-1f, -0x1.4930b8p-1f, 0x1.8998f6p+1f,
     /* node 2770 x */
-    0x1.4cccccp-56f, 0x1.b1c0eap-1f, 0x1.e15798p-6f, -0x1.b28be2p-2f,
+    0x1.99999ap-59f, 0x1.b12baap-1f, 0x1.e0524cp-6f, -0x1.b252a2p-2f,
     /* node 2770 y */
-    -0x1.4cccccp-56f, 0x1.dfdd2p-2f, 0x1.b23868p-1f, -0x1.1a2046p+1f,
+    0x1.e66666p-55f, 0x1.df33c2p-2f, 0x1.b270b8p-1f, -0x1.19b7d8p+1f,
     /* node 2770 z */
-    -0x1.333334p-55f, -0x1.602f64p-1f, -0x1.4982fap-1f, 0x1.8ebe0cp+1f,
+    0x1.333334p-57f, -0x1.5f947cp-1f, -0x1.49b45ap-1f, 0x1.8e09dep+1f,
     /* node 2771 x */
-    0x1.e33334p-56f, 0x1.8b8dfp-1f, 0x1.2100e8p-6f, -0x1.72c71cp-2f,
+    0x1.4p-57f, 0x1.8aab54p-1f, 0x1.22ab82p-6f, -0x1.722062p-2f,
     /* node 2771 y */
-    -0x1.ccccccp-57f, 0x1.fe5386p-2f, 0x1.b95c16p-1f, -0x1.26f44p+1f,
+    0x1.e66666p-55f, 0x1.fdfebcp-2f, 0x1.b996a4p-1f, -0x1.26d612p+1f,
     /* node 2771 z */
-    -0x1.99999ap-57f, -0x1.4f41c8p-1f, -0x1.46a286p-1f, 0x1.78ccep+1f,
+    -0x1.19999ap-55f, -0x1.4f15cp-1f, -0x1.46c54cp-1f, 0x1.7856d4p+1f,
     /* node 2772 x */
-    0x1.066666p-56f, 0x1.a0c2bep-1f, 0x1.6c72c8p-6f, -0x1.93f02ep-2f,
+    -0x1.5cccccp-55f, 0x1.a00c68p-1f, 0x1.707818p-6f, -0x1.938a16p-2f,
     /* node 2772 y */
-    -0x1.99999ap-60f, 0x1.f4d01ep-2f, 0x1.b57bc6p-1f, -0x1.1faf9p+1f,
+    -0x1.4cccccp-56f, 0x1.f476c2p-2f, 0x1.b5bf9cp-1f, -0x1.1f85d6p+1f,
     /* node 2772 z */
-    -0x1p-57f, -0x1.5ae96ep-1f, -0x1.489e1p-1f, 0x1.82cb5ap+1f,
+    0x1p-57f, -0x1.5a7fd4p-1f, -0x1.48bb3ep-1f, 0x1.823f8ap+1f,
     /* node 2773 x */
-    0x1.ecccccp-56f, 0x1.acea74p-1f, 0x1.87693cp-6f, -0x1.af409cp-2f,
+    -0x1.ccccccp-59f, 0x1.ac47f4p-1f, 0x1.877b64p-6f, -0x1.aea3f6p-2f,
     /* node 2773 y */
-    0x1.0cccccp-55f, 0x1.f324d2p-2f, 0x1.b329bcp-1f, -0x1.1cbc08p+1f,
+    -0x1.ccccccp-57f, 0x1.f2b142p-2f, 0x1.b3503ap-1f, -0x1.1c8486p+1f,
     /* node 2773 z */
-    -0x1.99999ap-55f, -0x1.6224ap-1f, -0x1.4948a4p-1f, 0x1.881b18p+1f,
+    -0x1.e66666p-56f, -0x1.61acc6p-1f, -0x1.496fd4p-1f, 0x1.87929p+1f,
     /* node 2774 x */
-    0x1.866666p-57f, 0x1.8afd1cp-1f, 0x1.f1f3f4p-7f, -0x1.75493cp-2f,
+    0x1.db3334p-55f, 0x1.8a55b8p-1f, 0x1.f6fd8ep-7f, -0x1.752dc6p-2f,
     /* node 2774 y */
-    0x1.666666p-57f, 0x1.0bdadep-1f, 0x1.b7de08p-1f, -0x1.2509eep+1f,
+    0x1.b33334p-56f, 0x1.0baa0cp-1f, 0x1.b82cd2p-1f, -0x1.24e33p+1f,
     /* node 2774 z */
-    0x1.99999ap-60f, -0x1.563328p-1f, -0x1.458c1ep-1f, 0x1.701b38p+1f,
+    0x1.4cccccp-56f, -0x1.55bd26p-1f, -0x1.45afc6p-1f, 0x1.6f805cp+1f,
     /* node 2775 x */
-    0x1p-59f, 0x1.945cc8p-1f, 0x1.30e4b8p-6f, -0x1.804b6cp-2f,
+    -0x1.2cccccp-57f, 0x1.93719ap-1f, 0x1.329406p-6f, -0x1.7f69ep-2f,
     /* node 2775 y */
-    -0x1.99999ap-58f, 0x1.03a54ep-1f, 0x1.b7068p-1f, -0x1.233924p+1f,
+    0x1.333334p-57f, 0x1.035a1cp-1f, 0x1.b75e9p-1f, -0x1.230736p+1f,
     /* node 2775 z */
-    -0x1.b33334p-55f, -0x1.594066p-1f, -0x1.473da6p-1f, 0x1.7a3652p+1f,
+    -0x1.99999ap-59f, -0x1.5917b2p-1f, -0x1.4750b2p-1f, 0x1.79c758p+1f,
     /* node 2776 x */
-    -0x1.666666p-59f, 0x1.b72344p-1f, 0x1.55355ap-5f, -0x1.b6b9c6p-2f,
+    0x1.99999ap-61f, 0x1.b60742p-1f, 0x1.579834p-5f, -0x1.b69f58p-2f,
     /* node 2776 y */
-    0x1.ccccccp-57f, 0x1.b364d6p-2f, 0x1.b0c74ep-1f, -0x1.158866p+1f,
+    -0x1.666666p-57f, 0x1.b31582p-2f, 0x1.b124cep-1f, -0x1.1567a4p+1f,
     /* node 2776 z */
-    -0x1.333334p-56f, -0x1.5598d4p-1f, -0x1.483424p-1f, 0x1.9dbf7cp+1f,
+    -0x1.99999ap-56f, -0x1.55336p-1f, -0x1.481868p-1f, 0x1.9d49d6p+1f,
     /* node 2777 x */
-    0x1.39999ap-56f, 0x1.c6b0f8p-1f, 0x1.2a922p-5f, -0x1.ce8f88p-2f,
+    0x1.733334p-57f, 0x1.c5e3ecp-1f, 0x1.297edep-5f, -0x1.ce18e4p-2f,
     /* node 2777 y */
-    -0x1.666666p-57f, 0x1.c93708p-2f, 0x1.af11dep-1f, -0x1.119b0ap+1f,
+    0x1.4cccccp-56f, 0x1.c8e9b8p-2f, 0x1.af2b0cp-1f, -0x1.117d9cp+1f,
     /* node 2777 z */
-    -0x1.4cccccp-55f, -0x1.665878p-1f, -0x1.493b62p-1f, 0x1.9ac24cp+1f,
+    -0x1.333334p-56f, -0x1.65d99p-1f, -0x1.498bc6p-1f, 0x1.9a0eb8p+1f,
     /* node 2787 x */
-    0x1.366666p-55f, 0x1.4528eep-1f, -0x1.c0f2e8p-8f, -0x1.10a01ap-2f,
+    0x1.acccccp-56f, 0x1.448172p-1f, -0x1.b8ef66p-8f, -0x1.107ca4p-2f,
     /* node 2787 y */
-    0x1.4cccccp-56f, 0x1.27f7f4p-1f, 0x1.c24f9ap-1f, -0x1.30109ep+1f,
+    0x1.666666p-56f, 0x1.27d5bep-1f, 0x1.c2a7dep-1f, -0x1.2ff3aep+1f,
     /* node 2787 z */
-    -0x0p+0f, -0x1.1f45e6p-1f, -0x1.2c260ap-1f, 0x1.2b31ep+1f,
+    -0x1p-57f, -0x1.1ed4c6p-1f, -0x1.2c4352p-1f, 0x1.2aa29ep+1f,
     /* node 2788 x */
-    0x1.266666p-56f, 0x1.c00762p-1f, 0x1.06ac46p-5f, -0x1.c3792p-2f,
+    -0x1p-58f, 0x1.bf1f5ep-1f, 0x1.059cccp-5f, -0x1.c33674p-2f,
     /* node 2788 y */
-    -0x1.333334p-56f, 0x1.dac7f4p-2f, 0x1.afa50ap-1f, -0x1.13d47ap+1f,
+    0x1.ccccccp-56f, 0x1.da5e14p-2f, 0x1.afc424p-1f, -0x1.13be96p+1f,
     /* node 2788 z */
-    -0x1p-56f, -0x1.6746cep-1f, -0x1.4990aep-1f, 0x1.933ac4p+1f,
+    -0x1.4cccccp-54f, -0x1.66ce0cp-1f, -0x1.49b7a8p-1f, 0x1.92a5c4p+1f,
     /* node 2789 x */
-    0x1.99999ap-61f, 0x1.b8b42ep-1f, 0x1.bb5144p-6f, -0x1.b79312p-2f,
+    -0x1.333334p-59f, 0x1.b7cf28p-1f, 0x1.bc1d0ep-6f, -0x1.b6ea06p-2f,
     /* node 2789 y */
-    0x1.8p-56f, 0x1.ec28c2p-2f, 0x1.b13fbcp-1f, -0x1.170152p+1f,
+    0x1p-56f, 0x1.ebc4fp-2f, 0x1.b15cf2p-1f, -0x1.16e71ep+1f,
     /* node 2789 z */
-    0x1.19999ap-55f, -0x1.67f3b2p-1f, -0x1.4a7568p-1f, 0x1.8d0a86p+1f,
+    -0x1.666666p-55f, -0x1.678adcp-1f, -0x1.4a9e7ep-1f, 0x1.8c9368p+1f,
     /* node 2790 x */
-    0x1.133334p-56f, 0x1.c52b5ap-1f, 0x1.d8387ap-6f, -0x1.c876bap-2f,
+    0x1.b33334p-56f, 0x1.c4608cp-1f, 0x1.d849dep-6f, -0x1.c887b8p-2f,
     /* node 2790 y */
-    -0x1.8p-56f, 0x1.e52668p-2f, 0x1.ae2338p-1f, -0x1.1211d2p+1f,
+    0x1.666666p-56f, 0x1.e51cb2p-2f, 0x1.ae4ca2p-1f, -0x1.1208c2p+1f,
     /* node 2790 z */
-    -0x1.19999ap-55f, -0x1.6e1f26p-1f, -0x1.49ee1ap-1f, 0x1.911c3p+1f,
+    -0x1.19999ap-55f, -0x1.6db31ep-1f, -0x1.4a18ep-1f, 0x1.9094f4p+1f,
     /* node 2791 x */
-    0x1.433334p-55f, 0x1.a626e2p-1f, 0x1.5c11fep-6f, -0x1.9fba26p-2f,
+    -0x1.6cccccp-56f, 0x1.a57ac4p-1f, 0x1.5cc142p-6f, -0x1.9f64ccp-2f,
     /* node 2791 y */
-    0x1.333334p-56f, 0x1.008dccp-1f, 0x1.b3fb7p-1f, -0x1.1e3fd6p+1f,
+    0x1.333334p-58f, 0x1.004188p-1f, 0x1.b43654p-1f, -0x1.1e0382p+1f,
     /* node 2791 z */
-    0x1.ccccccp-56f, -0x1.6352bep-1f, -0x1.4905bap-1f, 0x1.81e404p+1f,
+    -0x1.e66666p-55f, -0x1.62d76cp-1f, -0x1.491684p-1f, 0x1.815808p+1f,
     /* node 2792 x */
-    0x1p-59f, 0x1.b0b96cp-1f, 0x1.84e15cp-6f, -0x1.b14346p-2f,
+    0x1.79999ap-56f, 0x1.aff99p-1f, 0x1.84bdfap-6f, -0x1.b0c79ap-2f,
     /* node 2792 y */
-    -0x1p-57f, 0x1.f7db8p-2f, 0x1.b26d1ap-1f, -0x1.1a46dcp+1f,
+    -0x1p-56f, 0x1.f77694p-2f, 0x1.b2a43ep-1f, -0x1.1a1db6p+1f,
     /* node 2792 z */
-    -0x1p-57f, -0x1.668cd8p-1f, -0x1.4a7d46p-1f, 0x1.87429cp+1f,
+    -0x1.a66666p-55f, -0x1.663bccp-1f, -0x1.4aa898p-1f, 0x1.86cad8p+1f,
     /* node 2793 x */
-    0x1.39999ap-55f, 0x1.bfc496p-1f, 0x1.a97ea4p-6f, -0x1.c0a926p-2f,
+    0x1.0b3334p-54f, 0x1.beda4cp-1f, 0x1.ad4542p-6f, -0x1.bfc73ep-2f,
     /* node 2793 y */
-    -0x1.333334p-58f, 0x1.f239d4p-2f, 0x1.b05a8p-1f, -0x1.142cf4p+1f,
+    -0x0p+0f, 0x1.f1d6d8p-2f, 0x1.b09178p-1f, -0x1.13f476p+1f,
     /* node 2793 z */
-    0x1p-55f, -0x1.6d0384p-1f, -0x1.4ca0e6p-1f, 0x1.8ab0dcp+1f,
+    -0x1p-56f, -0x1.6cbcd4p-1f, -0x1.4cdd12p-1f, 0x1.8a30ep+1f,
     /* node 2794 x */
-    0x1.d33334p-56f, 0x1.b71be8p-1f, 0x1.8173dp-6f, -0x1.b2fb0ap-2f,
+    0x1.d9999ap-57f, 0x1.b669b2p-1f, 0x1.83092cp-6f, -0x1.b25a92p-2f,
     /* node 2794 y */
-    0x1.99999ap-60f, 0x1.fe00f2p-2f, 0x1.afd07ap-1f, -0x1.1519b4p+1f,
+    0x1.ccccccp-57f, 0x1.fd5bcp-2f, 0x1.afe7b4p-1f, -0x1.14d5e6p+1f,
     /* node 2794 z */
-    -0x1p-55f, -0x1.6e794ap-1f, -0x1.4a6386p-1f, 0x1.841ae6p+1f,
+    -0x1.99999ap-59f, -0x1.6dd01p-1f, -0x1.4a7cep-1f, 0x1.835c2ep+1f,
     /* node 2795 x */
-    -0x1.4p-57f, 0x1.ce8eep-1f, 0x1.934b54p-6f, -0x1.d7b61ep-2f,
+    0x1.2p-55f, 0x1.cd9896p-1f, 0x1.96abccp-6f, -0x1.d62b62p-2f,
     /* node 2795 y */
-    0x1.333334p-57f, 0x1.ef0e9cp-2f, 0x1.ab6f98p-1f, -0x1.0d8bd8p+1f,
+    0x1.333334p-55f, 0x1.ee3168p-2f, 0x1.ab6dcp-1f, -0x1.0d2e08p+1f,
     /* node 2795 z */
-    -0x1.333334p-56f, -0x1.725156p-1f, -0x1.4cd466p-1f, 0x1.8c718p+1f,
+    -0x1.19999ap-54f, -0x1.71da4ap-1f, -0x1.4cfe82p-1f, 0x1.8bd128p+1f,
     /* node 2796 x */
-    -0x1.4cccccp-57f, 0x1.9fce16p-1f, 0x1.27f6bep-6f, -0x1.92134ep-2f,
+    0x1.733334p-56f, 0x1.9eb472p-1f, 0x1.2a41c2p-6f, -0x1.90a82ap-2f,
     /* node 2796 y */
-    0x1.99999ap-57f, 0x1.06eaap-1f, 0x1.b3c768p-1f, -0x1.1e90dp+1f,
+    0x1.99999ap-60f, 0x1.06870ep-1f, 0x1.b3ed68p-1f, -0x1.1e55d2p+1f,
     /* node 2796 z */
-    -0x1.ccccccp-55f, -0x1.621e54p-1f, -0x1.4899a2p-1f, 0x1.7a06c4p+1f,
+    -0x1.666666p-56f, -0x1.61cafep-1f, -0x1.48bb7ap-1f, 0x1.7982dep+1f,
     /* node 2797 x */
-    0x1.4p-56f, 0x1.accf5ep-1f, 0x1.4acdbcp-6f, -0x1.a405acp-2f,
+    0x1.466666p-56f, 0x1.ac1aeep-1f, 0x1.4c7ef6p-6f, -0x1.a34db2p-2f,
     /* node 2797 y */
-    0x1p-55f, 0x1.03eeeep-1f, 0x1.b1369ep-1f, -0x1.1945d2p+1f,
+    0x1.333334p-58f, 0x1.038c88p-1f, 0x1.b134fcp-1f, -0x1.18fd4ep+1f,
     /* node 2797 z */
-    -0x1.666666p-57f, -0x1.69c18cp-1f, -0x1.494b88p-1f, 0x1.7e332cp+1f,
+    0x1.99999ap-59f, -0x1.690324p-1f, -0x1.496462p-1f, 0x1.7d7198p+1f,
     /* node 2798 x */
-    0x1.333334p-56f, 0x1.a6d60cp-1f, 0x1.428254p-6f, -0x1.a0d7dp-2f,
+    0x1.533334p-55f, 0x1.a5efc8p-1f, 0x1.43c85ap-6f, -0x1.a006eap-2f,
     /* node 2798 y */
-    0x1.99999ap-60f, 0x1.0d658ap-1f, 0x1.b2a9ep-1f, -0x1.1be4b2p+1f,
+    0x1.19999ap-56f, 0x1.0cfe8cp-1f, 0x1.b2bd16p-1f, -0x1.1ba29ep+1f,
     /* node 2798 z */
-    0x1.99999ap-58f, -0x1.68dffp-1f, -0x1.4991b6p-1f, 0x1.77d22ep+1f,
+    -0x1p-55f, -0x1.68574ep-1f, -0x1.49a828p-1f, 0x1.7737f2p+1f,
     /* node 2799 x */
-    -0x1.666666p-56f, 0x1.c78dbap-1f, 0x1.a48446p-6f, -0x1.d1205cp-2f,
+    -0x1p-56f, 0x1.c699c4p-1f, 0x1.a7071ap-6f, -0x1.cf911ep-2f,
     /* node 2799 y */
-    -0x1.333334p-58f, 0x1.fe0956p-2f, 0x1.ad7508p-1f, -0x1.105074p+1f,
+    0x1p-56f, 0x1.fd179p-2f, 0x1.ad8bf8p-1f, -0x1.0ff494p+1f,
     /* node 2799 z */
-    0x1.666666p-56f, -0x1.75642p-1f, -0x1.4c8924p-1f, 0x1.87b764p+1f,
+    -0x1.99999ap-60f, -0x1.74e302p-1f, -0x1.4ca36cp-1f, 0x1.8716b8p+1f,
     /* node 2800 x */
-    0x1.4p-56f, 0x1.b0931p-1f, 0x1.658c22p-6f, -0x1.a8128cp-2f,
+    0x1.8p-57f, 0x1.b00c96p-1f, 0x1.6778fcp-6f, -0x1.a7f842p-2f,
     /* node 2800 y */
-    0x1.99999ap-60f, 0x1.08cb1ep-1f, 0x1.b00df8p-1f, -0x1.159e3ap+1f,
+    -0x1.333334p-56f, 0x1.087a3ap-1f, 0x1.b03058p-1f, -0x1.15651cp+1f,
     /* node 2800 z */
-    -0x1.333334p-58f, -0x1.6f6f06p-1f, -0x1.4a4e4ep-1f, 0x1.7c7c38p+1f,
+    -0x1.733334p-55f, -0x1.6ee166p-1f, -0x1.4a608ep-1f, 0x1.7bd074p+1f,
     /* node 2801 x */
-    0x1p-57f, 0x1.d633ccp-1f, 0x1.876796p-6f, -0x1.d50edp-2f,
+    0x1.acccccp-56f, 0x1.d54648p-1f, 0x1.87bb66p-6f, -0x1.d4925ap-2f,
     /* node 2801 y */
-    -0x1.333334p-58f, 0x1.0722acp-1f, 0x1.a7920ap-1f, -0x1.040b7ap+1f,
+    0x1.99999ap-56f, 0x1.07061ep-1f, 0x1.a7c062p-1f, -0x1.03f394p+1f,
     /* node 2801 z */
-    -0x1.59999ap-55f, -0x1.83de82p-1f, -0x1.4c2512p-1f, 0x1.7f255ap+1f,
+    0x1.333334p-56f, -0x1.83a53cp-1f, -0x1.4c6cd6p-1f, 0x1.7ea072p+1f,
     /* node 2802 x */
-    0x1.ecccccp-56f, 0x1.fe8ab2p-1f, 0x1.7b8e1ap-5f, -0x1.10ef16p-1f,
+    0x1.b33334p-55f, 0x1.fda9bap-1f, 0x1.7c0f32p-5f, -0x1.1061d8p-1f,
     /* node 2802 y */
-    0x1.333334p-56f, 0x1.8ce6dcp-2f, 0x1.a5eb12p-1f, -0x1.ebe04cp+0f,
+    0x1.99999ap-59f, 0x1.8c9e0ep-2f, 0x1.a65e9cp-1f, -0x1.eba8cep+0f,
     /* node 2802 z */
-    -0x0p+0f, -0x1.73c4ap-1f, -0x1.46bd5p-1f, 0x1.b0d312p+1f,
+    0x1.333334p-57f, -0x1.738c14p-1f, -0x1.46d088p-1f, 0x1.b04ff4p+1f,
     /* node 2803 x */
-    0x1.733334p-55f, 0x1.064fe8p+0f, 0x1.b3740cp-5f, -0x1.187896p-1f,
+    0x1.4cccccp-55f, 0x1.0602d8p+0f, 0x1.b1294ap-5f, -0x1.1833bep-1f,
     /* node 2803 y */
-    0x1.19999ap-56f, 0x1.70633p-2f, 0x1.a34236p-1f, -0x1.d4be6cp+0f,
+    -0x1p-57f, 0x1.701f86p-2f, 0x1.a3d92ep-1f, -0x1.d475e2p+0f,
     /* node 2803 z */
-    -0x1.666666p-55f, -0x1.7135b6p-1f, -0x1.420c42p-1f, 0x1.b4d656p+1f,
+    -0x1.4cccccp-55f, -0x1.70b42cp-1f, -0x1.41fc16p-1f, 0x1.b43082p+1f,
     /* node 2804 x */
-    0x1p-58f, 0x1.c67f4p-1f, 0x1.692048p-5f, -0x1.d1e898p-2f,
+    0x1.733334p-56f, 0x1.c6216ep-1f, 0x1.65ae2p-5f, -0x1.d1f232p-2f,
     /* node 2804 y */
-    0x1.99999ap-60f, 0x1.ad4966p-2f, 0x1.adbf76p-1f, -0x1.0f73e4p+1f,
+    -0x1.ccccccp-57f, 0x1.ace1cp-2f, 0x1.ade1b2p-1f, -0x1.0f5678p+1f,
     /* node 2804 z */
-    -0x1.99999ap-59f, -0x1.5b2a1ap-1f, -0x1.47d10cp-1f, 0x1.a1ff5ap+1f,
+    -0x1.0cccccp-54f, -0x1.5aadfp-1f, -0x1.48025ep-1f, 0x1.a15396p+1f,
     /* node 2805 x */
-    0x1.79999ap-56f, 0x1.d413aap-1f, 0x1.755dbep-5f, -0x1.e59e6ap-2f,
+    0x1.19999ap-56f, 0x1.d374bep-1f, 0x1.74a8d2p-5f, -0x1.e56b5ep-2f,
     /* node 2805 y */
-    0x1.b33334p-56f, 0x1.a49fb6p-2f, 0x1.aa54d6p-1f, -0x1.089abp+1f,
+    0x1.333334p-58f, 0x1.a410b8p-2f, 0x1.aa95d2p-1f, -0x1.0881f6p+1f,
     /* node 2805 z */
-    -0x1.99999ap-57f, -0x1.631c5ep-1f, -0x1.45db46p-1f, 0x1.a67dd2p+1f,
+    -0x1.333334p-57f, -0x1.62a25cp-1f, -0x1.4610c2p-1f, 0x1.a5e274p+1f,
     /* node 2806 x */
-    -0x1.cp-57f, 0x1.dfa3a2p-1f, 0x1.867a08p-5f, -0x1.efab18p-2f,
+    0x1.4cccccp-56f, 0x1.ded6c2p-1f, 0x1.862986p-5f, -0x1.ef7bf2p-2f,
     /* node 2806 y */
-    0x1.333334p-58f, 0x1.97ad22p-2f, 0x1.a79ddap-1f, -0x1.01683p+1f,
+    0x1.333334p-55f, 0x1.973f6ap-2f, 0x1.a80dfp-1f, -0x1.015308p+1f,
     /* node 2806 z */
-    -0x1.333334p-57f, -0x1.675a2cp-1f, -0x1.4632p-1f, 0x1.a8af38p+1f,
+    -0x1.99999ap-59f, -0x1.66d424p-1f, -0x1.464b82p-1f, 0x1.a81d64p+1f,
     /* node 2807 x */
-    0x1.8p-56f, 0x1.d07758p-1f, 0x1.3786e6p-5f, -0x1.df20e8p-2f,
+    0x1.4p-57f, 0x1.cfe08ep-1f, 0x1.360294p-5f, -0x1.df0abap-2f,
     /* node 2807 y */
-    -0x1.266666p-55f, 0x1.b6a06cp-2f, 0x1.ac531ep-1f, -0x1.0cb4f4p+1f,
+    0x1.ccccccp-57f, 0x1.b64a0ep-2f, 0x1.aca7ccp-1f, -0x1.0c9b3cp+1f,
     /* node 2807 z */
-    -0x1.99999ap-56f, -0x1.650ab8p-1f, -0x1.4975bep-1f, 0x1.a0b08p+1f,
+    0x1p-56f, -0x1.6490e2p-1f, -0x1.496e16p-1f, 0x1.a02514p+1f,
     /* node 2808 x */
-    -0x1p-59f, 0x1.da4fd4p-1f, 0x1.6e84ap-5f, -0x1.ec0298p-2f,
+    0x1.4p-57f, 0x1.d96d1cp-1f, 0x1.6da6c2p-5f, -0x1.ebac16p-2f,
     /* node 2808 y */
-    -0x1.ccccccp-55f, 0x1.a97e82p-2f, 0x1.a91ad6p-1f, -0x1.050e34p+1f,
+    0x1.333334p-58f, 0x1.a916e6p-2f, 0x1.a98872p-1f, -0x1.04df44p+1f,
     /* node 2808 z */
-    0x1.99999ap-58f, -0x1.6d14fap-1f, -0x1.475882p-1f, 0x1.a53838p+1f,
+    -0x1.333334p-57f, -0x1.6c864p-1f, -0x1.479c9p-1f, 0x1.a48258p+1f,
     /* node 2809 x */
-    0x1.266666p-57f, 0x1.e7dcc6p-1f, 0x1.7bacb6p-5f, -0x1.022712p-1f,
+    0x1.333334p-60f, 0x1.e76c34p-1f, 0x1.79c182p-5f, -0x1.023b66p-1f,
     /* node 2809 y */
-    -0x1.333334p-57f, 0x1.9e4bbcp-2f, 0x1.a72d6cp-1f, -0x1.fdfe5p+0f,
+    -0x1.666666p-56f, 0x1.9ddb94p-2f, 0x1.a7809p-1f, -0x1.fda9b2p+0f,
     /* node 2809 z */
-    -0x1.666666p-54f, -0x1.734504p-1f, -0x1.47c99ep-1f, 0x1.a9b088p+1f,
+    -0x1.99999ap-58f, -0x1.72c42ep-1f, -0x1.47ed84p-1f, 0x1.a905a6p+1f,
     /* node 2810 x */
-    0x1.1p-55f, 0x1.025958p+0f, 0x1.5a1002p-5f, -0x1.11bd86p-1f,
+    -0x1.066666p-56f, 0x1.01d7aap+0f, 0x1.5accf4p-5f, -0x1.110a36p-1f,
     /* node 2810 y */
-    -0x1.99999ap-57f, 0x1.9c54eap-2f, 0x1.a30faep-1f, -0x1.dc204ap+0f,
+    -0x1.666666p-57f, 0x1.9c0d34p-2f, 0x1.a36656p-1f, -0x1.dbf5d8p+0f,
     /* node 2810 z */
-    0x1p-56f, -0x1.825538p-1f, -0x1.47dac8p-1f, 0x1.aa17ap+1f,
+    -0x1.ccccccp-56f, -0x1.81f862p-1f, -0x1.480b42p-1f, 0x1.a9881p+1f,
     /* node 2811 x */
-    0x1.0cccccp-57f, 0x1.12b0dep+0f, 0x1.5a3e22p-5f, -0x1.2a3c2cp-1f,
+    0x1.0cccccp-54f, 0x1.125bc4p+0f, 0x1.5a8d9ap-5f, -0x1.29c804p-1f,
     /* node 2811 y */
-    0x1.19999ap-56f, 0x1.922b2ep-2f, 0x1.a1ee94p-1f, -0x1.c8e0ccp+0f,
+    0x1.0cccccp-55f, 0x1.91a802p-2f, 0x1.a23aa6p-1f, -0x1.c88b86p+0f,
     /* node 2811 z */
-    -0x1.666666p-55f, -0x1.8fa41ap-1f, -0x1.496f5ep-1f, 0x1.adb654p+1f,
+    0x1.99999ap-58f, -0x1.8f3b14p-1f, -0x1.49b7fp-1f, 0x1.ad235p+1f,
     /* node 2812 x */
-    0x1.b9999ap-56f, 0x1.d3e226p-1f, 0x1.1d3f3ap-5f, -0x1.e13f28p-2f,
+    0x1.333334p-56f, 0x1.d31e94p-1f, 0x1.1e69aep-5f, -0x1.e0a878p-2f,
     /* node 2812 y */
-    0x1.99999ap-56f, 0x1.c1ceacp-2f, 0x1.ab98cep-1f, -0x1.0b4376p+1f,
+    -0x1.e66666p-56f, 0x1.c168f6p-2f, 0x1.abbd5ap-1f, -0x1.0b2456p+1f,
     /* node 2812 z */
-    -0x1.99999ap-59f, -0x1.6d78ccp-1f, -0x1.49c29ap-1f, 0x1.9ed556p+1f,
+    -0x1.333334p-56f, -0x1.6cf25ap-1f, -0x1.49db1p-1f, 0x1.9e40ap+1f,
     /* node 2813 x */
-    0x1.333334p-56f, 0x1.df3d5ep-1f, 0x1.45f1d2p-5f, -0x1.f41a3ep-2f,
+    -0x1.99999ap-61f, 0x1.de6d34p-1f, 0x1.45d028p-5f, -0x1.f38bc8p-2f,
     /* node 2813 y */
-    0x1.19999ap-56f, 0x1.b2e6ccp-2f, 0x1.a8944ep-1f, -0x1.030316p+1f,
+    0x1p-57f, 0x1.b28434p-2f, 0x1.a8c10cp-1f, -0x1.02d266p+1f,
     /* node 2813 z */
-    -0x1.4cccccp-55f, -0x1.72b71ap-1f, -0x1.49d0bep-1f, 0x1.a2f27ep+1f,
+    -0x1.333334p-55f, -0x1.723ce6p-1f, -0x1.49e432p-1f, 0x1.a24fa4p+1f,
     /* node 2814 x */
-    0x1.266666p-57f, 0x1.f326d6p-1f, 0x1.2b8e1cp-5f, -0x1.094a24p-1f,
+    0x1.b33334p-58f, 0x1.f285a2p-1f, 0x1.2afc54p-5f, -0x1.094bfep-1f,
     /* node 2814 y */
-    -0x1.333334p-58f, 0x1.b4325ep-2f, 0x1.a8999ep-1f, -0x1.fc0f7cp+0f,
+    -0x1p-56f, 0x1.b3c7acp-2f, 0x1.a8c014p-1f, -0x1.fbbdf4p+0f,
     /* node 2814 z */
-    -0x1.99999ap-55f, -0x1.7a4f3ap-1f, -0x1.48ff6p-1f, 0x1.a6738cp+1f,
+    0x1.333334p-57f, -0x1.79c9d8p-1f, -0x1.49118ap-1f, 0x1.a5cc68p+1f,
     /* node 2815 x */
-    -0x1.8cccccp-57f, 0x1.cd22c2p-1f, 0x1.0af50cp-5f, -0x1.d7d3f6p-2f,
+    -0x1.733334p-57f, 0x1.cc5354p-1f, 0x1.0c04fp-5f, -0x1.d715fp-2f,
     /* node 2815 y */
-    0x1.666666p-56f, 0x1.d2b0dcp-2f, 0x1.ad494cp-1f, -0x1.0ee08ap+1f,
+    0x1.99999ap-58f, 0x1.d2512cp-2f, 0x1.ad788cp-1f, -0x1.0eb5a6p+1f,
     /* node 2815 z */
-    0x1.666666p-56f, -0x1.6de8bep-1f, -0x1.4a7ce2p-1f, 0x1.979b2ep+1f,
+    0x1.333334p-56f, -0x1.6d7148p-1f, -0x1.4a912cp-1f, 0x1.970d06p+1f,
     /* node 2816 x */
-    0x1.533334p-56f, 0x1.d642b4p-1f, 0x1.1477a4p-5f, -0x1.e17402p-2f,
+    -0x1.266666p-57f, 0x1.d557dcp-1f, 0x1.12f76ep-5f, -0x1.e05fd4p-2f,
     /* node 2816 y */
-    -0x1.333334p-56f, 0x1.c601f8p-2f, 0x1.a97a2ep-1f, -0x1.066908p+1f,
+    -0x1.333334p-56f, 0x1.c57b26p-2f, 0x1.a997e8p-1f, -0x1.063814p+1f,
     /* node 2816 z */
-    -0x1.333334p-56f, -0x1.7313fep-1f, -0x1.49ce5ep-1f, 0x1.9b7e48p+1f,
+    -0x1.99999ap-55f, -0x1.72a22ep-1f, -0x1.4a00d4p-1f, 0x1.9ae448p+1f,
     /* node 2817 x */
-    0x1.59999ap-57f, 0x1.ef1f36p-1f, 0x1.2d4c5ep-5f, -0x1.0a914ep-1f,
+    0x1.8p-57f, 0x1.ee651p-1f, 0x1.2e5092p-5f, -0x1.0a5f96p-1f,
     /* node 2817 y */
-    0x1.99999ap-58f, 0x1.c8c724p-2f, 0x1.a9f6fep-1f, -0x1.0286dep+1f,
+    -0x1.99999ap-58f, 0x1.c8817ep-2f, 0x1.aa426ap-1f, -0x1.026f64p+1f,
     /* node 2817 z */
-    -0x1.333334p-56f, -0x1.809ff6p-1f, -0x1.4c135ep-1f, 0x1.a30c72p+1f,
+    -0x1.99999ap-57f, -0x1.803cfap-1f, -0x1.4c4642p-1f, 0x1.a2769ap+1f,
     /* node 2818 x */
-    0x1.466666p-55f, 0x1.fbba96p-1f, 0x1.426c2ap-5f, -0x1.0bd5bep-1f,
+    -0x1.ccccccp-59f, 0x1.fb045p-1f, 0x1.4210cep-5f, -0x1.0b9f92p-1f,
     /* node 2818 y */
-    0x1p-56f, 0x1.b63ac8p-2f, 0x1.a5854ep-1f, -0x1.ebb7fp+0f,
+    -0x1.ccccccp-57f, 0x1.b5c2cap-2f, 0x1.a5e0aap-1f, -0x1.eb723cp+0f,
     /* node 2818 z */
-    0x1p-55f, -0x1.84ffd4p-1f, -0x1.4a36f2p-1f, 0x1.a52572p+1f,
+    -0x1.99999ap-59f, -0x1.84b994p-1f, -0x1.4a73fp-1f, 0x1.a48fcap+1f,
     /* node 2819 x */
-    0x1.49999ap-55f, 0x1.043d06p+0f, 0x1.3b7532p-5f, -0x1.140a6ep-1f,
+    0x1.59999ap-57f, 0x1.03b922p+0f, 0x1.3ca196p-5f, -0x1.137342p-1f,
     /* node 2819 y */
-    0x1.ccccccp-57f, 0x1.b50186p-2f, 0x1.a1d488p-1f, -0x1.de100ap+0f,
+    0x1p-57f, 0x1.b482dep-2f, 0x1.a1f8d4p-1f, -0x1.ddaea8p+0f,
     /* node 2819 z */
-    0x1p-55f, -0x1.8c9d66p-1f, -0x1.49e1e6p-1f, 0x1.a10f3ep+1f,
+    -0x1.99999ap-57f, -0x1.8c358ap-1f, -0x1.4a02a2p-1f, 0x1.a065a6p+1f,
     /* node 2820 x */
-    0x1.666666p-58f, 0x1.239d48p+0f, 0x1.39ef9ap-5f, -0x1.30e968p-1f,
+    -0x1.39999ap-54f, 0x1.234b74p+0f, 0x1.3b60b4p-5f, -0x1.30b4dp-1f,
     /* node 2820 y */
-    -0x1.99999ap-59f, 0x1.a04314p-2f, 0x1.972f04p-1f, -0x1.a998f4p+0f,
+    0x1.666666p-57f, 0x1.9fdbc4p-2f, 0x1.977272p-1f, -0x1.a94b3ep+0f,
     /* node 2820 z */
-    -0x1.4cccccp-55f, -0x1.9fb83ep-1f, -0x1.47e9ecp-1f, 0x1.9f751ep+1f,
+    0x1.99999ap-59f, -0x1.9f1948p-1f, -0x1.47ecb2p-1f, 0x1.9eb9fap+1f,
     /* node 2821 x */
-    -0x1.acccccp-55f, 0x1.d05e52p-1f, 0x1.01647p-5f, -0x1.dbfc1p-2f,
+    -0x1.666666p-58f, 0x1.cf735ap-1f, 0x1.034914p-5f, -0x1.da386ep-2f,
     /* node 2821 y */
-    0x1.b33334p-56f, 0x1.df4706p-2f, 0x1.ac0ff2p-1f, -0x1.0cddccp+1f,
+    0x1.ccccccp-57f, 0x1.deb07ap-2f, 0x1.ac4e14p-1f, -0x1.0c7ba2p+1f,
     /* node 2821 z */
-    -0x1p-54f, -0x1.764a9p-1f, -0x1.4b6b6p-1f, 0x1.967bdep+1f,
+    -0x1.333334p-55f, -0x1.75e71cp-1f, -0x1.4b7f6p-1f, 0x1.95fdeap+1f,
     /* node 2822 x */
-    -0x1.99999ap-56f, 0x1.df1a98p-1f, 0x1.1371ep-5f, -0x1.f7bb9ep-2f,
+    -0x1.99999ap-58f, 0x1.de2824p-1f, 0x1.13f31ap-5f, -0x1.f7263p-2f,
     /* node 2822 y */
-    0x1.99999ap-60f, 0x1.d916d6p-2f, 0x1.a8aa9cp-1f, -0x1.053a3p+1f,
+    0x1.333334p-57f, 0x1.d8dd5ap-2f, 0x1.a8dd4p-1f, -0x1.052532p+1f,
     /* node 2822 z */
-    -0x1.666666p-56f, -0x1.7e7cbp-1f, -0x1.4b08cap-1f, 0x1.9ae1dep+1f,
+    -0x1.99999ap-57f, -0x1.7e2e8cp-1f, -0x1.4b1812p-1f, 0x1.9a63bap+1f,
     /* node 2823 x */
-    0x1.79999ap-55f, 0x1.f1b24cp-1f, 0x1.2e9f9cp-5f, -0x1.0a0566p-1f,
+    -0x1.266666p-56f, 0x1.f104eep-1f, 0x1.3097d6p-5f, -0x1.09c422p-1f,
     /* node 2823 y */
-    -0x1.99999ap-57f, 0x1.d04ad2p-2f, 0x1.a681dcp-1f, -0x1.fac96ep+0f,
+    0x1.19999ap-56f, 0x1.cff4fcp-2f, 0x1.a6aa86p-1f, -0x1.faa88cp+0f,
     /* node 2823 z */
-    -0x1p-55f, -0x1.82d91cp-1f, -0x1.4a8e5ep-1f, 0x1.9d34bp+1f,
+    0x1.333334p-57f, -0x1.82784cp-1f, -0x1.4a9b2ap-1f, 0x1.9cad76p+1f,
     /* node 2824 x */
-    0x1.3p-55f, 0x1.e76f58p-1f, 0x1.07e54cp-5f, -0x1.fc094p-2f,
+    0x1.2cccccp-55f, 0x1.e69c72p-1f, 0x1.09de28p-5f, -0x1.fbb81ap-2f,
     /* node 2824 y */
-    0x1.99999ap-60f, 0x1.ddff42p-2f, 0x1.a5c0dap-1f, -0x1.ff0eaap+0f,
+    -0x1.99999ap-60f, 0x1.ddb738p-2f, 0x1.a5d55cp-1f, -0x1.fee712p+0f,
     /* node 2824 z */
-    -0x1.666666p-56f, -0x1.819a3ap-1f, -0x1.4b2f58p-1f, 0x1.95936ap+1f,
+    -0x1.ccccccp-55f, -0x1.811188p-1f, -0x1.4b26aap-1f, 0x1.94f368p+1f,
     /* node 2827 x */
-    0x1.19999ap-58f, 0x1.3cfa2ep+0f, 0x1.7e1aaap-5f, -0x1.474c14p-1f,
+    -0x1.b33334p-55f, 0x1.3ca9ecp+0f, 0x1.8127b8p-5f, -0x1.469626p-1f,
     /* node 2827 y */
-    0x1p-58f, 0x1.454564p-2f, 0x1.a34232p-1f, -0x1.7cf834p+0f,
+    0x1.19999ap-57f, 0x1.456248p-2f, 0x1.a3b6d2p-1f, -0x1.7d0718p+0f,
     /* node 2827 z */
-    -0x1.4cccccp-55f, -0x1.9b92fp-1f, -0x1.38bc38p-1f, 0x1.bfac1p+1f,
+    0x1.99999ap-57f, -0x1.9b314ap-1f, -0x1.38f562p-1f, 0x1.bf211ep+1f,
     /* node 2828 x */
-    -0x1.666666p-55f, 0x1.75beb4p+0f, 0x1.22ba7ap-5f, -0x1.542e3ep-1f,
+    0x1.3cccccp-55f, 0x1.75676ap+0f, 0x1.1f4602p-5f, -0x1.53c1cp-1f,
     /* node 2828 y */
-    -0x1p-57f, 0x1.99201cp-2f, 0x1.8ff856p-1f, -0x1.397fa4p+0f,
+    -0x1.99999ap-61f, 0x1.98baa2p-2f, 0x1.901a48p-1f, -0x1.396ca2p+0f,
     /* node 2828 z */
-    -0x0p+0f, -0x1.c0de36p-1f, -0x1.451594p-1f, 0x1.8521fap+1f,
+    -0x1.f33334p-55f, -0x1.c07e6cp-1f, -0x1.457e86p-1f, 0x1.847e6ap+1f,
     /* node 2831 x */
-    -0x1.033334p-54f, 0x1.b1e4fp+0f, 0x1.5fc682p-5f, -0x1.8c6c74p-1f,
+    0x1.ccccccp-56f, 0x1.b1987p+0f, 0x1.615ea4p-5f, -0x1.8bfa9p-1f,
     /* node 2831 y */
-    -0x1.333334p-57f, 0x1.028b5cp-2f, 0x1.e22bb2p-1f, -0x1.1e883cp+0f,
+    0x1.4cccccp-57f, 0x1.02aa02p-2f, 0x1.e2f99ep-1f, -0x1.1e9edp+0f,
     /* node 2831 z */
-    -0x1.4cccccp-55f, -0x1.ce7ffap-1f, -0x1.26ef22p-1f, 0x1.d2f97cp+1f,
+    -0x1.266666p-54f, -0x1.cdfa52p-1f, -0x1.271a78p-1f, 0x1.d26706p+1f,
     /* node 2832 x */
-    -0x1.0cccccp-56f, 0x1.e3eb76p+0f, 0x1.3d0c6p-5f, -0x1.89f27ep-1f,
+    0x1.0cccccp-56f, 0x1.e3a5fp+0f, 0x1.3e9446p-5f, -0x1.899d04p-1f,
     /* node 2832 y */
-    -0x1.333334p-58f, 0x1.bf0576p-3f, 0x1.072944p+0f, -0x1.f120f6p-1f,
+    -0x1.4cccccp-56f, 0x1.be917ep-3f, 0x1.077406p+0f, -0x1.f13f3ap-1f,
     /* node 2832 z */
-    -0x1.99999ap-59f, -0x1.c5374p-1f, -0x1.1d187ep-1f, 0x1.d97b3cp+1f,
+    -0x1p-54f, -0x1.c49dd4p-1f, -0x1.1d3e3cp-1f, 0x1.d8ec44p+1f,
     /* node 2834 x */
-    0x1.d66666p-54f, 0x1.e2f476p+0f, 0x1.2729a8p-5f, -0x1.687726p-1f,
+    0x1.acccccp-56f, 0x1.e2738ap+0f, 0x1.2961d8p-5f, -0x1.6810eep-1f,
     /* node 2834 y */
-    0x1.333334p-58f, 0x1.205106p-2f, 0x1.f894ap-1f, -0x1.d2785ap-1f,
+    -0x1.99999ap-59f, 0x1.20e04ap-2f, 0x1.f90f0cp-1f, -0x1.d2af76p-1f,
     /* node 2834 z */
-    -0x1.99999ap-56f, -0x1.b7903p-1f, -0x1.2340a8p-1f, 0x1.b5d754p+1f,
+    0x1.666666p-56f, -0x1.b71c7cp-1f, -0x1.235458p-1f, 0x1.b53bfp+1f,
     /* node 2835 x */
-    0x1.f9999ap-56f, 0x1.99f382p+0f, 0x1.99502ep-5f, -0x1.4dcdd2p-1f,
+    -0x1.31999ap-54f, 0x1.997a16p+0f, 0x1.981e62p-5f, -0x1.4d91bep-1f,
     /* node 2835 y */
-    -0x1.8p-57f, 0x1.70e68ep-2f, 0x1.9885ep-1f, -0x1.0e5c2ep+0f,
+    -0x0p+0f, 0x1.716b6cp-2f, 0x1.9913ecp-1f, -0x1.0e68d8p+0f,
     /* node 2835 z */
-    -0x1.ccccccp-55f, -0x1.ba9118p-1f, -0x1.3a769cp-1f, 0x1.81b03ap+1f,
+    -0x1.666666p-57f, -0x1.ba2c24p-1f, -0x1.3abedep-1f, 0x1.811e68p+1f,
     /* node 2838 x */
-    0x1.266666p-56f, 0x1.d95db2p+0f, -0x1.b489bcp-11f, -0x1.ef5ad6p-2f,
+    0x1p-55f, 0x1.d87dc4p+0f, 0x1.acb514p-14f, -0x1.f087e6p-2f,
     /* node 2838 y */
-    0x1p-58f, 0x1.23131p-3f, 0x1.c751cep-1f, -0x1.11793ep-1f,
+    -0x1.333334p-58f, 0x1.25d17ep-3f, 0x1.c7e1aap-1f, -0x1.11886ep-1f,
     /* node 2838 z */
-    -0x1.99999ap-59f, -0x1.5cf982p-1f, -0x1.1462fcp-1f, 0x1.8bd12ep+1f,
+    0x1.99999ap-57f, -0x1.5d082ep-1f, -0x1.14c20cp-1f, 0x1.8b42b6p+1f,
     /* node 2839 x */
-    -0x1.2p-57f, 0x1.8291f6p+0f, 0x1.1d848cp-6f, -0x1.876168p-2f,
+    0x1.8e6666p-55f, 0x1.82005ap+0f, 0x1.1f6b4ep-6f, -0x1.86916ep-2f,
     /* node 2839 y */
-    0x1.b33334p-58f, 0x1.293306p-2f, 0x1.2da358p-1f, -0x1.6f0de6p-1f,
+    -0x1.b33334p-58f, 0x1.294ac4p-2f, 0x1.2e0592p-1f, -0x1.6f4c98p-1f,
     /* node 2839 z */
-    0x1.99999ap-58f, -0x1.41188ep-1f, -0x1.2134c8p-1f, 0x1.3e025cp+1f,
+    -0x1.4cccccp-56f, -0x1.40a336p-1f, -0x1.218132p-1f, 0x1.3d6308p+1f,
     /* node 2842 x */
-    0x1.89999ap-55f, 0x1.0ef766p+0f, -0x1.bae908p-7f, -0x1.ccf03ep-4f,
+    0x1.d8p-56f, 0x1.0e6e84p+0f, -0x1.b8bafp-7f, -0x1.c8885ep-4f,
     /* node 2842 y */
-    -0x1.333334p-57f, 0x1.46b58p-4f, 0x1.7ff77p-2f, -0x1.8a2c6p-3f,
+    -0x1.666666p-58f, 0x1.48466ep-4f, 0x1.8099p-2f, -0x1.8c0ab6p-3f,
     /* node 2842 z */
-    0x1.19999ap-56f, -0x1.ac3aep-2f, -0x1.e9d052p-2f, 0x1.0e0bp+1f,
+    -0x1.e66666p-56f, -0x1.ab0bb6p-2f, -0x1.ea35d4p-2f, 0x1.0d8374p+1f,
     /* node 2928 x */
-    0x1.233334p-56f, 0x1.62ffdap-1f, -0x1.6a2a2ep-15f, -0x1.38ba68p-2f,
+    -0x1.4cccccp-59f, 0x1.6217cap-1f, -0x1.82096p-14f, -0x1.37f968p-2f,
     /* node 2928 y */
-    -0x1.333334p-58f, 0x1.28f9bcp-1f, 0x1.baff4p-1f, -0x1.280f58p+1f,
+    0x1.333334p-58f, 0x1.2914cep-1f, 0x1.bb60eap-1f, -0x1.27ff94p+1f,
     /* node 2928 z */
-    -0x1.666666p-57f, -0x1.3c597ep-1f, -0x1.373276p-1f, 0x1.3fb566p+1f,
+    0x1.666666p-57f, -0x1.3be824p-1f, -0x1.37590ep-1f, 0x1.3f2876p+1f,
     /* node 2931 x */
-    0x1.766666p-56f, 0x1.516ffap-1f, -0x1.02ee5p-10f, -0x1.2c3f2ap-2f,
+    0x1.19999ap-57f, 0x1.50daa4p-1f, -0x1.b0a888p-11f, -0x1.2c6654p-2f,
     /* node 2931 y */
-    -0x1.99999ap-60f, 0x1.36f442p-1f, 0x1.bbff62p-1f, -0x1.27b65ep+1f,
+    0x1.e66666p-56f, 0x1.36e55ap-1f, 0x1.bc54bp-1f, -0x1.2799ap+1f,
     /* node 2931 z */
-    0x1.333334p-57f, -0x1.28008ap-1f, -0x1.2bc302p-1f, 0x1.2472dap+1f,
+    0x1p-56f, -0x1.27a9fap-1f, -0x1.2bf14ep-1f, 0x1.23db34p+1f,
     /* node 2933 x */
-    -0x1.3cccccp-56f, 0x1.5d06e4p-1f, 0x1.80d248p-8f, -0x1.3fa992p-2f,
+    0x1.ccccccp-58f, 0x1.5c1a78p-1f, 0x1.7f7cecp-8f, -0x1.3ef9b2p-2f,
     /* node 2933 y */
-    -0x1.333334p-58f, 0x1.42ca66p-1f, 0x1.b1a168p-1f, -0x1.1c78c6p+1f,
+    0x1.8p-56f, 0x1.426d6ep-1f, 0x1.b1d262p-1f, -0x1.1c4778p+1f,
     /* node 2933 z */
-    -0x1.4cccccp-55f, -0x1.2e2aacp-1f, -0x1.2908a2p-1f, 0x1.1bcb2ep+1f,
+    0x1.99999ap-59f, -0x1.2db3aap-1f, -0x1.292208p-1f, 0x1.1b4c68p+1f,
     /* node 2934 x */
-    0x1.15999ap-54f, 0x1.60cf3ap-1f, 0x1.d2910ep-10f, -0x1.3b2e0ap-2f,
+    0x1.633334p-56f, 0x1.602e38p-1f, 0x1.0a7676p-9f, -0x1.3bb0fcp-2f,
     /* node 2934 y */
-    -0x0p+0f, 0x1.39efc8p-1f, 0x1.b75072p-1f, -0x1.21dafep+1f,
+    0x1.ccccccp-56f, 0x1.39f1d4p-1f, 0x1.b7bafap-1f, -0x1.21c606p+1f,
     /* node 2934 z */
-    0x1.333334p-58f, -0x1.39574p-1f, -0x1.31d808p-1f, 0x1.2d6766p+1f,
+    -0x1.99999ap-60f, -0x1.38c25ep-1f, -0x1.31e66ap-1f, 0x1.2cc704p+1f,
     /* node 2937 x */
-    0x1.2b3334p-55f, 0x1.7e0a64p-1f, 0x1.fe7e4ep-8f, -0x1.64d6ccp-2f,
+    -0x1.866666p-57f, 0x1.7d04fap-1f, 0x1.023bb2p-7f, -0x1.64bea2p-2f,
     /* node 2937 y */
-    -0x1.99999ap-57f, 0x1.274d84p-1f, 0x1.b73458p-1f, -0x1.2369a4p+1f,
+    -0x1.666666p-56f, 0x1.2743c4p-1f, 0x1.b791cep-1f, -0x1.235534p+1f,
     /* node 2937 z */
-    -0x1.0cccccp-55f, -0x1.4f8b1ap-1f, -0x1.3e1ecap-1f, 0x1.4fb8f6p+1f,
+    0x1.99999ap-58f, -0x1.4f5ba2p-1f, -0x1.3e6f52p-1f, 0x1.4f4694p+1f,
     /* node 2938 x */
-    0x1.21999ap-54f, 0x1.7ca3ap-1f, 0x1.15d6dep-7f, -0x1.65d4aap-2f,
+    -0x1.f9999ap-57f, 0x1.7accep-1f, 0x1.db9b6ep-8f, -0x1.6292p-2f,
     /* node 2938 y */
-    0x1.666666p-57f, 0x1.38bab8p-1f, 0x1.b395d6p-1f, -0x1.1d8582p+1f,
+    0x1p-57f, 0x1.37bf9p-1f, 0x1.b31674p-1f, -0x1.1d285ap+1f,
     /* node 2938 z */
-    0x1.333334p-58f, -0x1.4cc024p-1f, -0x1.3965cep-1f, 0x1.3c4a6ap+1f,
+    -0x1.266666p-54f, -0x1.4c5fcp-1f, -0x1.399684p-1f, 0x1.3be2eep+1f,
     /* node 2939 x */
-    0x1.acccccp-57f, 0x1.8cdaacp-1f, 0x1.77fa1p-7f, -0x1.7724f8p-2f,
+    0x1.0cccccp-57f, 0x1.8ae41ap-1f, 0x1.485f1ep-7f, -0x1.73c80ep-2f,
     /* node 2939 y */
-    -0x1.99999ap-59f, 0x1.351b5ap-1f, 0x1.af69a8p-1f, -0x1.17f5aap+1f,
+    0x1.19999ap-56f, 0x1.33e3e4p-1f, 0x1.ae96bap-1f, -0x1.1781cp+1f,
     /* node 2939 z */
-    0x1.666666p-57f, -0x1.5923ccp-1f, -0x1.3de376p-1f, 0x1.46441ap+1f,
+    -0x1.19999ap-56f, -0x1.58896ep-1f, -0x1.3e06eap-1f, 0x1.45b542p+1f,
     /* node 2940 x */
-    -0x1.166666p-56f, 0x1.9bc24cp-1f, 0x1.853a96p-7f, -0x1.834b72p-2f,
+    0x1.633334p-54f, 0x1.9bb78ep-1f, 0x1.abd09cp-7f, -0x1.84ea8ap-2f,
     /* node 2940 y */
-    -0x1.99999ap-60f, 0x1.331f4p-1f, 0x1.a717b8p-1f, -0x1.0e4fd2p+1f,
+    -0x1.99999ap-60f, 0x1.33883ep-1f, 0x1.a7e952p-1f, -0x1.0e5c16p+1f,
     /* node 2940 z */
-    -0x1.4cccccp-56f, -0x1.60d5p-1f, -0x1.3e0d46p-1f, 0x1.4662d4p+1f,
+    -0x1.99999ap-57f, -0x1.603eb8p-1f, -0x1.3e336ep-1f, 0x1.45c9f2p+1f,
     /* node 2941 x */
-    0x1.666666p-57f, 0x1.9d179ep-1f, 0x1.abdda6p-7f, -0x1.8a08e6p-2f,
+    0x1.133334p-56f, 0x1.9c1f6ap-1f, 0x1.b1e42cp-7f, -0x1.89bc2p-2f,
     /* node 2941 y */
-    0x1.0cccccp-55f, 0x1.2ecdf6p-1f, 0x1.ac3c0ep-1f, -0x1.13662p+1f,
+    -0x1.ccccccp-57f, 0x1.2e9ceap-1f, 0x1.ac3cdcp-1f, -0x1.134442p+1f,
     /* node 2941 z */
-    -0x1.333334p-55f, -0x1.652c8ap-1f, -0x1.41dae8p-1f, 0x1.51ad74p+1f,
+    -0x1.8p-56f, -0x1.64cb3ep-1f, -0x1.4202fep-1f, 0x1.511a14p+1f,
     /* node 2942 x */
-    0x1.5cccccp-55f, 0x1.8a043ep-1f, 0x1.775d2ep-7f, -0x1.74207p-2f,
+    0x1.3b3334p-55f, 0x1.879ed6p-1f, 0x1.339db8p-7f, -0x1.6f69b4p-2f,
     /* node 2942 y */
-    0x1.99999ap-58f, 0x1.397856p-1f, 0x1.ac5c4ep-1f, -0x1.1557p+1f,
+    0x1p-55f, 0x1.37ebd2p-1f, 0x1.ab4fe8p-1f, -0x1.14d21ap+1f,
     /* node 2942 z */
-    -0x1.99999ap-60f, -0x1.534496p-1f, -0x1.3a19cep-1f, 0x1.3c7af4p+1f,
+    -0x1p-55f, -0x1.52a55ap-1f, -0x1.3a3b5ap-1f, 0x1.3bf6d4p+1f,
     /* node 2943 x */
-    0x1.3p-54f, 0x1.97b9f2p-1f, 0x1.0f3552p-6f, -0x1.8cf7eap-2f,
+    0x1.e66666p-57f, 0x1.96d1d4p-1f, 0x1.0ac31ap-6f, -0x1.8c294cp-2f,
     /* node 2943 y */
-    0x1.8cccccp-55f, 0x1.171774p-1f, 0x1.b4bcbp-1f, -0x1.1f29d6p+1f,
+    -0x1.666666p-56f, 0x1.16b5d8p-1f, 0x1.b4efe2p-1f, -0x1.1eeedp+1f,
     /* node 2943 z */
-    -0x1.cp-55f, -0x1.612f72p-1f, -0x1.46bd2cp-1f, 0x1.6b0a06p+1f,
+    -0x1.266666p-54f, -0x1.60a448p-1f, -0x1.46cba2p-1f, 0x1.6a6972p+1f,
     /* node 2944 x */
-    0x1.99999ap-61f, 0x1.a7518ap-1f, 0x1.03e1b6p-6f, -0x1.9b970ap-2f,
+    0x1.19999ap-58f, 0x1.a69f7ep-1f, 0x1.02842ap-6f, -0x1.9b5252p-2f,
     /* node 2944 y */
-    0x1.733334p-55f, 0x1.176f32p-1f, 0x1.af28c8p-1f, -0x1.16603p+1f,
+    -0x1.b33334p-56f, 0x1.1718d2p-1f, 0x1.af49a4p-1f, -0x1.162998p+1f,
     /* node 2944 z */
-    -0x1.8cccccp-55f, -0x1.6b9232p-1f, -0x1.476568p-1f, 0x1.6beabcp+1f,
+    -0x1p-56f, -0x1.6af9e2p-1f, -0x1.478082p-1f, 0x1.6b384ep+1f,
     /* node 2945 x */
-    0x1.b33334p-58f, 0x1.c2a47ep-1f, 0x1.4c15d8p-6f, -0x1.bebe04p-2f,
+    0x1p-56f, 0x1.c1ca3ep-1f, 0x1.5093a4p-6f, -0x1.bec27ep-2f,
     /* node 2945 y */
-    0x1.333334p-57f, 0x1.122ffcp-1f, 0x1.a9c388p-1f, -0x1.0c735p+1f,
+    0x1.ccccccp-57f, 0x1.11fb72p-1f, 0x1.a9c8a6p-1f, -0x1.0c445ap+1f,
     /* node 2945 z */
-    -0x1.666666p-57f, -0x1.7a3b2ep-1f, -0x1.49e0bep-1f, 0x1.74dc9ep+1f,
+    -0x1.8p-55f, -0x1.79b1f4p-1f, -0x1.4a15ap-1f, 0x1.742454p+1f,
     /* node 2946 x */
-    0x1.99999ap-62f, 0x1.c1c69cp-1f, 0x1.3e8ad2p-6f, -0x1.bcb946p-2f,
+    -0x1.666666p-56f, 0x1.c1408ap-1f, 0x1.3f8282p-6f, -0x1.bc44eep-2f,
     /* node 2946 y */
-    0x1.4cccccp-56f, 0x1.1d496ep-1f, 0x1.a917bp-1f, -0x1.09cccp+1f,
+    0x1.99999ap-57f, 0x1.1d0258p-1f, 0x1.a97ca4p-1f, -0x1.09a166p+1f,
     /* node 2946 z */
-    -0x1.ccccccp-56f, -0x1.7b6196p-1f, -0x1.49e6dp-1f, 0x1.6a10b6p+1f,
+    0x1.99999ap-59f, -0x1.7a867cp-1f, -0x1.49c596p-1f, 0x1.69625cp+1f,
     /* node 2947 x */
-    0x1.01999ap-54f, 0x1.d554f8p-1f, 0x1.ab4d9ep-6f, -0x1.d8383p-2f,
+    -0x1.666666p-59f, 0x1.d42596p-1f, 0x1.a8d572p-6f, -0x1.d7755ap-2f,
     /* node 2947 y */
-    0x1.59999ap-55f, 0x1.13233cp-1f, 0x1.a661f8p-1f, -0x1.032864p+1f,
+    0x1.99999ap-56f, 0x1.12f6bcp-1f, 0x1.a66e9ap-1f, -0x1.02f252p+1f,
     /* node 2947 z */
-    -0x1p-56f, -0x1.86250ap-1f, -0x1.4c386ep-1f, 0x1.765116p+1f,
+    -0x1.333334p-55f, -0x1.857072p-1f, -0x1.4c5552p-1f, 0x1.756dd8p+1f,
     /* node 2948 x */
-    -0x1.8cccccp-57f, 0x1.deaadp-1f, 0x1.69b74p-6f, -0x1.dc8182p-2f,
+    0x1.8cccccp-55f, 0x1.ddd45ep-1f, 0x1.6d1ac2p-6f, -0x1.dc42a2p-2f,
     /* node 2948 y */
-    0x1.8p-56f, 0x1.13692cp-1f, 0x1.9ee7e8p-1f, -0x1.f9016cp+0f,
+    0x1.4cccccp-56f, 0x1.137602p-1f, 0x1.9f0d5cp-1f, -0x1.f8b446p+0f,
     /* node 2948 z */
-    -0x1p-57f, -0x1.82aac4p-1f, -0x1.48defcp-1f, 0x1.6e6da6p+1f,
+    -0x1p-54f, -0x1.81dfc6p-1f, -0x1.48eeb4p-1f, 0x1.6d9bb6p+1f,
     /* node 2949 x */
-    0x1.8cccccp-57f, 0x1.e69d34p-1f, 0x1.bce91ep-6f, -0x1.edebaap-2f,
+    0x1.2p-55f, 0x1.e58ec2p-1f, 0x1.c02708p-6f, -0x1.ed9a62p-2f,
     /* node 2949 y */
-    -0x1.99999ap-56f, 0x1.0eefcep-1f, 0x1.a23c04p-1f, -0x1.f9cf06p+0f,
+    0x1.4p-55f, 0x1.0ec192p-1f, 0x1.a241fcp-1f, -0x1.f95454p+0f,
     /* node 2949 z */
-    -0x1.333334p-57f, -0x1.8cd7bep-1f, -0x1.4ba8ccp-1f, 0x1.79b73ap+1f,
+    -0x1.b33334p-56f, -0x1.8c029p-1f, -0x1.4bbc28p-1f, 0x1.78c1aep+1f,
     /* node 2950 x */
-    0x1.99999ap-62f, 0x1.bdc6e2p-1f, 0x1.08fb3cp-6f, -0x1.ad1bccp-2f,
+    0x1.f33334p-55f, 0x1.bccd1ap-1f, 0x1.0577fcp-6f, -0x1.ac229cp-2f,
     /* node 2950 y */
-    0x1.99999ap-59f, 0x1.24b6dcp-1f, 0x1.a101e4p-1f, -0x1.04231ep+1f,
+    0x1.99999ap-57f, 0x1.24c8c2p-1f, 0x1.a16b66p-1f, -0x1.041e72p+1f,
     /* node 2950 z */
-    -0x1.333334p-58f, -0x1.775168p-1f, -0x1.46329ep-1f, 0x1.5c2378p+1f,
+    -0x1.4cccccp-56f, -0x1.7777b4p-1f, -0x1.469906p-1f, 0x1.5bc874p+1f,
     /* node 2951 x */
-    0x1.f33334p-56f, 0x1.f7964p-1f, 0x1.eef95p-6f, -0x1.050f46p-1f,
+    0x1.2e6666p-54f, 0x1.f6fce8p-1f, 0x1.f2ab7ap-6f, -0x1.04c608p-1f,
     /* node 2951 y */
-    0x1p-57f, 0x1.03884ap-1f, 0x1.a44376p-1f, -0x1.f215d2p+0f,
+    0x1.333334p-57f, 0x1.035c92p-1f, 0x1.a4a9d4p-1f, -0x1.f1f6f8p+0f,
     /* node 2951 z */
-    -0x1.333334p-56f, -0x1.96283ep-1f, -0x1.4eb67ap-1f, 0x1.88a1bap+1f,
+    -0x1.99999ap-59f, -0x1.95eeb8p-1f, -0x1.4ee6d2p-1f, 0x1.8829d8p+1f,
     /* node 2956 x */
-    0x1.166666p-55f, 0x1.017356p+0f, 0x1.8fc5e2p-6f, -0x1.026a1cp-1f,
+    0x1p-56f, 0x1.00f796p+0f, 0x1.916ba6p-6f, -0x1.024b42p-1f,
     /* node 2956 y */
-    -0x1.99999ap-59f, 0x1.0b72fp-1f, 0x1.9694ap-1f, -0x1.dad39p+0f,
+    -0x1.99999ap-60f, 0x1.0b3634p-1f, 0x1.96aa44p-1f, -0x1.da6498p+0f,
     /* node 2956 z */
-    -0x1.266666p-55f, -0x1.90c244p-1f, -0x1.49a516p-1f, 0x1.721a5cp+1f,
+    -0x1.ccccccp-56f, -0x1.902c28p-1f, -0x1.49dbc6p-1f, 0x1.714ap+1f,
     /* node 2957 x */
-    0x1.333334p-57f, 0x1.d79c98p-1f, 0x1.35c4aap-6f, -0x1.cd39ccp-2f,
+    0x1.3cccccp-55f, 0x1.d70fc6p-1f, 0x1.39761cp-6f, -0x1.cceb58p-2f,
     /* node 2957 y */
-    -0x1.99999ap-59f, 0x1.1b168cp-1f, 0x1.9ccbaap-1f, -0x1.f91bd2p+0f,
+    -0x1.19999ap-56f, 0x1.1b4e6ep-1f, 0x1.9d308cp-1f, -0x1.f928aep+0f,
     /* node 2957 z */
-    -0x1.19999ap-56f, -0x1.801478p-1f, -0x1.47735ap-1f, 0x1.656c1ap+1f,
+    -0x1.6cccccp-54f, -0x1.7ffca8p-1f, -0x1.47aaccp-1f, 0x1.65143cp+1f,
     /* node 2958 x */
-    -0x1.f33334p-57f, 0x1.d2ef92p-1f, 0x1.1eebb6p-6f, -0x1.bedf5p-2f,
+    0x1.a9999ap-55f, 0x1.d22538p-1f, 0x1.2313bp-6f, -0x1.be850ap-2f,
     /* node 2958 y */
-    0x1.99999ap-59f, 0x1.23f0bcp-1f, 0x1.98dbb6p-1f, -0x1.f37d44p+0f,
+    0x1.666666p-56f, 0x1.243cdap-1f, 0x1.99635ap-1f, -0x1.f3948ep+0f,
     /* node 2958 z */
-    -0x1p-57f, -0x1.7f2928p-1f, -0x1.45f0f8p-1f, 0x1.5afceap+1f,
+    -0x1.99999ap-59f, -0x1.7f2ae2p-1f, -0x1.466074p-1f, 0x1.5a9c1p+1f,
     /* node 2959 x */
-    0x1p-59f, 0x1.eb56bap-1f, 0x1.6c601ap-6f, -0x1.ea9cbp-2f,
+    -0x1p-57f, 0x1.eae0d6p-1f, 0x1.6cff26p-6f, -0x1.ea0fcap-2f,
     /* node 2959 y */
-    -0x1.666666p-56f, 0x1.1a0f9p-1f, 0x1.9bc192p-1f, -0x1.ed5af4p+0f,
+    0x1.b33334p-56f, 0x1.1a51bap-1f, 0x1.9c4cf6p-1f, -0x1.ed7fe2p+0f,
     /* node 2959 z */
-    -0x1.99999ap-58f, -0x1.87c8bap-1f, -0x1.48b2f2p-1f, 0x1.67d6bap+1f,
+    -0x1.19999ap-55f, -0x1.87baaap-1f, -0x1.48e744p-1f, 0x1.678af8p+1f,
     /* node 2960 x */
-    0x1.ep-56f, 0x1.0e957ap+0f, 0x1.dc5f68p-6f, -0x1.c5900ep-2f,
+    0x1.b33334p-57f, 0x1.0e1454p+0f, 0x1.d9500ap-6f, -0x1.c4019ap-2f,
     /* node 2960 y */
-    0x1.333334p-59f, 0x1.2b0778p-1f, 0x1.5e3966p-1f, -0x1.76ae94p+0f,
+    0x1.ccccccp-58f, 0x1.2acbe2p-1f, 0x1.5ee186p-1f, -0x1.7672c8p+0f,
     /* node 2960 z */
-    -0x1.333334p-56f, -0x1.6a79cep-1f, -0x1.314a22p-1f, 0x1.293c1cp+1f,
+    -0x0p+0f, -0x1.6a625p-1f, -0x1.318c98p-1f, 0x1.28d16cp+1f,
     /* node 2961 x */
-    -0x1.266666p-57f, 0x1.404f72p+0f, 0x1.2be6f4p-5f, -0x1.189f5ap-1f,
+    0x1.99999ap-61f, 0x1.400048p+0f, 0x1.30249p-5f, -0x1.186bb8p-1f,
     /* node 2961 y */
-    0x1.99999ap-61f, 0x1.0c2984p-1f, 0x1.71af2ep-1f, -0x1.5e85d2p+0f,
+    0x1.99999ap-61f, 0x1.0c713cp-1f, 0x1.72c898p-1f, -0x1.5e92dcp+0f,
     /* node 2961 z */
-    -0x1.4cccccp-56f, -0x1.9a68c4p-1f, -0x1.3fe23ep-1f, 0x1.52603ep+1f,
+    -0x1.333334p-57f, -0x1.9a152cp-1f, -0x1.40089ap-1f, 0x1.51d5dp+1f,
     /* node 2962 x */
-    -0x1.d33334p-56f, 0x1.0cb518p+0f, 0x1.f767p-6f, -0x1.0e674ap-1f,
+    0x1.99999ap-58f, 0x1.0c3ab2p+0f, 0x1.f916eep-6f, -0x1.0e1c4ap-1f,
     /* node 2962 y */
-    0x1.666666p-57f, 0x1.fc1e12p-2f, 0x1.94f5fap-1f, -0x1.c94f8ap+0f,
+    0x1.666666p-57f, 0x1.fb824p-2f, 0x1.9501bp-1f, -0x1.c8e3acp+0f,
     /* node 2962 z */
-    0x1.ccccccp-56f, -0x1.9bb59ep-1f, -0x1.4baf68p-1f, 0x1.7e301p+1f,
+    -0x1.99999ap-57f, -0x1.9b4a42p-1f, -0x1.4bde0ep-1f, 0x1.7d88ep+1f,
     /* node 2968 x */
-    -0x1.8cccccp-57f, 0x1.2d9accp+0f, 0x1.199582p-5f, -0x1.0672f6p-1f,
+    0x1.533334p-55f, 0x1.2d2f3p+0f, 0x1.1d091ap-5f, -0x1.06185cp-1f,
     /* node 2968 y */
-    0x1.333334p-57f, 0x1.148a4cp-1f, 0x1.619912p-1f, -0x1.6602eep+0f,
+    0x1.ccccccp-57f, 0x1.13a88ep-1f, 0x1.605778p-1f, -0x1.65728p+0f,
     /* node 2968 z */
-    -0x1p-57f, -0x1.8a837ep-1f, -0x1.3c581ap-1f, 0x1.417a62p+1f,
+    0x1.19999ap-55f, -0x1.89befp-1f, -0x1.3c94bep-1f, 0x1.40ac7p+1f,
     /* node 2970 x */
-    0x1.8cccccp-56f, 0x1.698f06p+0f, 0x1.39e67cp-5f, -0x1.16b5dp-1f,
+    0x1.933334p-55f, 0x1.68f596p+0f, 0x1.36799cp-5f, -0x1.161138p-1f,
     /* node 2970 y */
-    -0x1p-58f, 0x1.cf5d8cp-2f, 0x1.61058p-1f, -0x1.1dc884p+0f,
+    -0x1.99999ap-59f, 0x1.ce1a5p-2f, 0x1.605356p-1f, -0x1.1d8d4cp+0f,
     /* node 2970 z */
-    -0x1.ccccccp-57f, -0x1.9c6e58p-1f, -0x1.3aa3e8p-1f, 0x1.53eef8p+1f,
+    0x1.99999ap-60f, -0x1.9bc63p-1f, -0x1.3a956p-1f, 0x1.533fa4p+1f,
     /* node 2971 x */
-    -0x1.733334p-56f, 0x1.7d62bep+0f, 0x1.ee4714p-6f, -0x1.bc2974p-2f,
+    -0x1.a66666p-57f, 0x1.7ce42ep+0f, 0x1.f283a2p-6f, -0x1.bb65eap-2f,
     /* node 2971 y */
-    -0x1p-58f, 0x1.74fb6ap-2f, 0x1.3a706ep-1f, -0x1.a794bep-1f,
+    0x1.99999ap-57f, 0x1.750822p-2f, 0x1.3acd72p-1f, -0x1.a7cf28p-1f,
     /* node 2971 z */
-    0x1.99999ap-56f, -0x1.5915a4p-1f, -0x1.28a81ep-1f, 0x1.3904fep+1f,
+    -0x1.266666p-55f, -0x1.588572p-1f, -0x1.28cfp-1f, 0x1.3870a4p+1f,
     /* node 2973 x */
-    0x1.f33334p-55f, 0x1.8c0e3ap+0f, 0x1.11066ap-6f, -0x1.69684p-2f,
+    -0x1.4p-56f, 0x1.8b845ap+0f, 0x1.16aef8p-6f, -0x1.68098ep-2f,
     /* node 2973 y */
-    0x1.333334p-60f, 0x1.d89e2cp-3f, 0x1.38fe8cp-1f, -0x1.32a2ep-1f,
+    0x1.19999ap-57f, 0x1.d87996p-3f, 0x1.39486p-1f, -0x1.331262p-1f,
     /* node 2973 z */
-    0x1.99999ap-60f, -0x1.31a3f2p-1f, -0x1.19c468p-1f, 0x1.47a1f6p+1f,
+    -0x0p+0f, -0x1.31163p-1f, -0x1.19f94ap-1f, 0x1.47007p+1f,
     /* node 2978 x */
-    -0x1.733334p-57f, 0x1.1488aep+0f, -0x1.1349bp-6f, -0x1.c308a8p-4f,
+    -0x1.333334p-59f, 0x1.13fd3p+0f, -0x1.13d092p-6f, -0x1.bfcafep-4f,
     /* node 2978 y */
-    -0x1.99999ap-63f, 0x1.55b014p-3f, 0x1.74889ep-2f, -0x1.2b570ep-2f,
+    -0x1.4p-58f, 0x1.564bc6p-3f, 0x1.75214ap-2f, -0x1.2c5182p-2f,
     /* node 2978 z */
-    -0x1.8cccccp-55f, -0x1.b9088cp-2f, -0x1.f92722p-2f, 0x1.060d8ep+1f,
+    -0x1.266666p-55f, -0x1.b851d8p-2f, -0x1.f99962p-2f, 0x1.0586cp+1f,
     /* node 2979 x */
-    0x1.d9999ap-56f, 0x1.ffaacap-1f, -0x1.ed7bacp-7f, -0x1.2e10c6p-4f,
+    0x1.e9999ap-58f, 0x1.fe76a2p-1f, -0x1.eff826p-7f, -0x1.29c1a2p-4f,
     /* node 2979 y */
-    -0x1.133334p-57f, 0x1.cd39a6p-3f, 0x1.3ea1aep-2f, -0x1.6865eap-2f,
+    -0x1.99999ap-59f, 0x1.ccac68p-3f, 0x1.3ef298p-2f, -0x1.695f66p-2f,
     /* node 2979 z */
-    -0x1.b33334p-56f, -0x1.984682p-2f, -0x1.f44fa2p-2f, 0x1.dbdc08p+0f,
+    -0x1p-55f, -0x1.978a42p-2f, -0x1.f47faap-2f, 0x1.dac3d8p+0f,
     /* node 3081 x */
-    0x1.4cccccp-56f, 0x1.7c3ddap-1f, 0x1.fc816ap-8f, -0x1.60212ap-2f,
+    0x1.14ccccp-55f, 0x1.7a64f8p-1f, 0x1.905c06p-8f, -0x1.5d1002p-2f,
     /* node 3081 y */
-    -0x1.ccccccp-57f, 0x1.3eb3b2p-1f, 0x1.ab62aep-1f, -0x1.151888p+1f,
+    -0x1.333334p-58f, 0x1.3d8e2p-1f, 0x1.aad638p-1f, -0x1.14b256p+1f,
     /* node 3081 z */
-    -0x1.8p-56f, -0x1.48d306p-1f, -0x1.33de2cp-1f, 0x1.2f8f2p+1f,
+    -0x1p-57f, -0x1.4852d2p-1f, -0x1.340382p-1f, 0x1.2efcc6p+1f,
     /* node 3082 x */
-    0x1.666666p-58f, 0x1.6a6416p-1f, 0x1.1818c8p-7f, -0x1.470ae6p-2f,
+    0x1.7cccccp-56f, 0x1.6942cp-1f, 0x1.044d6ep-7f, -0x1.45aa7ap-2f,
     /* node 3082 y */
-    0x1.99999ap-57f, 0x1.4d54e2p-1f, 0x1.a1a8a4p-1f, -0x1.0bd09ap+1f,
+    0x1p-55f, 0x1.4cd248p-1f, 0x1.a1ac0ep-1f, -0x1.0b8b2cp+1f,
     /* node 3082 z */
-    0x1p-55f, -0x1.34d36ep-1f, -0x1.25bfd2p-1f, 0x1.111a24p+1f,
+    -0x1.4cccccp-56f, -0x1.3456bap-1f, -0x1.25e666p-1f, 0x1.108f36p+1f,
     /* node 3084 x */
-    0x1.01999ap-55f, 0x1.92ad84p-1f, 0x1.a538b6p-7f, -0x1.77e26p-2f,
+    0x1.433334p-55f, 0x1.91d4fap-1f, 0x1.a930b6p-7f, -0x1.777f42p-2f,
     /* node 3084 y */
-    0x1.99999ap-58f, 0x1.3db3a6p-1f, 0x1.a26a18p-1f, -0x1.0a886cp+1f,
+    0x1.99999ap-56f, 0x1.3ddd5ap-1f, 0x1.a30164p-1f, -0x1.0a8206p+1f,
     /* node 3084 z */
-    -0x1.4cccccp-55f, -0x1.552a1ep-1f, -0x1.36f0c8p-1f, 0x1.33e23ap+1f,
+    0x1.8p-56f, -0x1.54cc74p-1f, -0x1.373a48p-1f, 0x1.3355b6p+1f,
     /* node 3085 x */
-    -0x1.99999ap-57f, 0x1.ab54d8p-1f, 0x1.c8802p-7f, -0x1.91b7ccp-2f,
+    -0x1.ccccccp-58f, 0x1.ab3a74p-1f, 0x1.dd3752p-7f, -0x1.92ac92p-2f,
     /* node 3085 y */
-    -0x1.333334p-58f, 0x1.32f5fcp-1f, 0x1.9f5012p-1f, -0x1.04cd68p+1f,
+    0x1.99999ap-56f, 0x1.33043ap-1f, 0x1.a0036cp-1f, -0x1.04bba4p+1f,
     /* node 3085 z */
-    0x1.99999ap-59f, -0x1.684d88p-1f, -0x1.3e9278p-1f, 0x1.4603dap+1f,
+    -0x1p-56f, -0x1.67c36p-1f, -0x1.3ebc9ep-1f, 0x1.4579b4p+1f,
     /* node 3104 x */
-    0x1.2b3334p-55f, 0x1.b027a4p-1f, 0x1.0c8772p-5f, -0x1.6f2352p-2f,
+    -0x1.2cccccp-57f, 0x1.af5432p-1f, 0x1.0c4848p-5f, -0x1.6e2d66p-2f,
     /* node 3104 y */
-    0x1.99999ap-57f, 0x1.48f2b6p-1f, 0x1.5ef03ap-1f, -0x1.9c9bfcp+0f,
+    0x1.99999ap-56f, 0x1.48cefp-1f, 0x1.5f2d8p-1f, -0x1.9c53dp+0f,
     /* node 3104 z */
-    -0x1.cp-55f, -0x1.301cdep-1f, -0x1.15608ep-1f, 0x1.f19b98p+0f,
+    -0x1.19999ap-55f, -0x1.2fba98p-1f, -0x1.15b924p-1f, 0x1.f08e1cp+0f,
     /* node 3105 x */
-    -0x1.e33334p-55f, 0x1.dc5328p-1f, 0x1.cfacfap-6f, -0x1.a8976ep-2f,
+    0x1.d33334p-56f, 0x1.dba666p-1f, 0x1.d4a632p-6f, -0x1.a86584p-2f,
     /* node 3105 y */
-    0x1.8p-56f, 0x1.3adca8p-1f, 0x1.7a60cep-1f, -0x1.b77d78p+0f,
+    -0x0p+0f, 0x1.3b10b2p-1f, 0x1.7ab0fap-1f, -0x1.b788f8p+0f,
     /* node 3105 z */
-    0x1.8p-55f, -0x1.6439a6p-1f, -0x1.328168p-1f, 0x1.279034p+1f,
+    -0x0p+0f, -0x1.643a42p-1f, -0x1.32e4bp-1f, 0x1.271efp+1f,
     /* node 3114 x */
-    0x1.133334p-56f, 0x1.d88866p-1f, 0x1.086acap-5f, -0x1.7c181ap-2f,
+    0x1.266666p-58f, 0x1.d7ea1cp-1f, 0x1.0edd54p-5f, -0x1.7c7882p-2f,
     /* node 3114 y */
-    0x1p-56f, 0x1.3bf0ap-1f, 0x1.4e8ccep-1f, -0x1.78b57cp+0f,
+    0x1.f33334p-56f, 0x1.3c199cp-1f, 0x1.4ee47cp-1f, -0x1.78b668p+0f,
     /* node 3114 z */
-    -0x1.99999ap-59f, -0x1.3eff4ep-1f, -0x1.1aceb6p-1f, 0x1.019864p+1f,
+    -0x1.8p-56f, -0x1.3ea6f2p-1f, -0x1.1b3a1p-1f, 0x1.01073ap+1f,
     /* node 3118 x */
-    0x1.bp-55f, 0x1.14edd8p+0f, 0x1.efc45ep-6f, -0x1.ad4022p-2f,
+    0x1.233334p-55f, 0x1.1469dp+0f, 0x1.eba098p-6f, -0x1.ac67f6p-2f,
     /* node 3118 y */
-    0x1.79999ap-55f, 0x1.29cf2cp-1f, 0x1.40b56cp-1f, -0x1.4b46a2p+0f,
+    0x1.99999ap-59f, 0x1.29eb56p-1f, 0x1.41434p-1f, -0x1.4b6a9cp+0f,
     /* node 3118 z */
-    0x1.666666p-57f, -0x1.543644p-1f, -0x1.25d0b6p-1f, 0x1.14d566p+1f,
+    -0x1.99999ap-60f, -0x1.54108p-1f, -0x1.26472ap-1f, 0x1.145b78p+1f,
     /* node 3119 x */
-    0x1.433334p-55f, 0x1.047508p+0f, 0x1.1f4626p-5f, -0x1.8f35ap-2f,
+    0x1.a66666p-57f, 0x1.03d7b8p+0f, 0x1.1ea8b2p-5f, -0x1.8d28eep-2f,
     /* node 3119 y */
-    0x1.8p-56f, 0x1.30fb62p-1f, 0x1.3e159p-1f, -0x1.56173ep+0f,
+    0x1.333334p-57f, 0x1.301c9cp-1f, 0x1.3dd8f2p-1f, -0x1.55816cp+0f,
     /* node 3119 z */
-    -0x1.19999ap-55f, -0x1.440c58p-1f, -0x1.1c3ecep-1f, 0x1.05e868p+1f,
+    -0x1.666666p-56f, -0x1.439feep-1f, -0x1.1c4ef8p-1f, 0x1.0563fap+1f,
     /* node 3120 x */
-    0x1.b9999ap-56f, 0x1.4f7162p+0f, 0x1.f7698ep-6f, -0x1.cb2c8p-2f,
+    -0x1.99999ap-61f, 0x1.4eeefp+0f, 0x1.fa1506p-6f, -0x1.c9caf8p-2f,
     /* node 3120 y */
-    0x1.666666p-57f, 0x1.e9adcap-2f, 0x1.3c1582p-1f, -0x1.086e42p+0f,
+    0x1.99999ap-60f, 0x1.e9e7b2p-2f, 0x1.3d08aap-1f, -0x1.087a7ap+0f,
     /* node 3120 z */
-    0x1.ccccccp-56f, -0x1.697b2ep-1f, -0x1.2bdadep-1f, 0x1.2e3904p+1f,
+    0x1p-56f, -0x1.693712p-1f, -0x1.2c2d9cp-1f, 0x1.2dcc84p+1f,
     /* node 3121 x */
-    -0x1.433334p-55f, 0x1.2f48ep+0f, 0x1.8ae328p-6f, -0x1.8d791ep-2f,
+    0x1.11999ap-54f, 0x1.2edba8p+0f, 0x1.961e7ap-6f, -0x1.8d62bep-2f,
     /* node 3121 y */
-    -0x1.99999ap-57f, 0x1.0514a6p-1f, 0x1.229a34p-1f, -0x1.0e946ap+0f,
+    0x1.19999ap-56f, 0x1.04c8fep-1f, 0x1.22c6bcp-1f, -0x1.0e71f2p+0f,
     /* node 3121 z */
-    -0x1.99999ap-60f, -0x1.4ffe7p-1f, -0x1.25536p-1f, 0x1.13cf32p+1f,
+    -0x1.666666p-56f, -0x1.4f7d12p-1f, -0x1.256adp-1f, 0x1.132afcp+1f,
     /* node 3134 x */
-    -0x1.166666p-56f, 0x1.3c6c7cp+0f, 0x1.63554cp-6f, -0x1.65d94ep-2f,
+    0x1.0cp-54f, 0x1.3bce08p+0f, 0x1.5e646ep-6f, -0x1.637036p-2f,
     /* node 3134 y */
-    -0x1.ccccccp-58f, 0x1.d8c4cap-2f, 0x1.0cee16p-1f, -0x1.d06ddp-1f,
+    0x1.e66666p-57f, 0x1.d8013ap-2f, 0x1.0cddc8p-1f, -0x1.d07212p-1f,
     /* node 3134 z */
-    -0x1.99999ap-57f, -0x1.3887bep-1f, -0x1.1c1fb6p-1f, 0x1.0f893ep+1f,
+    -0x1.99999ap-59f, -0x1.384e72p-1f, -0x1.1c9852p-1f, 0x1.0f0db2p+1f,
     /* node 3135 x */
-    -0x1.99999ap-62f, 0x1.5671fcp+0f, 0x1.ce1daep-6f, -0x1.bd5f8ap-2f,
+    -0x1p-59f, 0x1.55cad8p+0f, 0x1.c6d624p-6f, -0x1.bb21cap-2f,
     /* node 3135 y */
-    0x1.0cccccp-56f, 0x1.d224a8p-2f, 0x1.313dc4p-1f, -0x1.eeda36p-1f,
+    0x1.4cccccp-55f, 0x1.d19cbap-2f, 0x1.31759cp-1f, -0x1.eed314p-1f,
     /* node 3135 z */
-    0x1.e66666p-56f, -0x1.61cd4p-1f, -0x1.2acc6ap-1f, 0x1.2a8aa8p+1f,
+    0x1.99999ap-59f, -0x1.616c02p-1f, -0x1.2b0b9ap-1f, 0x1.2a066cp+1f,
     /* node 3136 x */
-    0x1.8p-59f, 0x1.4b5b36p+0f, 0x1.62e4dcp-6f, -0x1.63c65ep-2f,
+    -0x1.433334p-56f, 0x1.4aea38p+0f, 0x1.69b68p-6f, -0x1.6402f2p-2f,
     /* node 3136 y */
-    -0x1.666666p-57f, 0x1.b0c054p-2f, 0x1.0d8adep-1f, -0x1.b5411ep-1f,
+    -0x1p-58f, 0x1.b0da22p-2f, 0x1.0e2c5ep-1f, -0x1.b52764p-1f,
     /* node 3136 z */
-    -0x1.4cccccp-56f, -0x1.3acd28p-1f, -0x1.1ddebap-1f, 0x1.18b116p+1f,
+    0x1p-55f, -0x1.3a5d36p-1f, -0x1.1de338p-1f, 0x1.180d0ep+1f,
     /* node 3137 x */
-    0x1.48p-54f, 0x1.6599c8p+0f, 0x1.056242p-5f, -0x1.97e65cp-2f,
+    0x1.766666p-55f, 0x1.65287p+0f, 0x1.07e784p-5f, -0x1.97bab6p-2f,
     /* node 3137 y */
-    -0x1.4p-56f, 0x1.9c744p-2f, 0x1.28805p-1f, -0x1.b22592p-1f,
+    0x1.666666p-58f, 0x1.9c3334p-2f, 0x1.28d20ep-1f, -0x1.b26222p-1f,
     /* node 3137 z */
-    -0x1.666666p-56f, -0x1.539a88p-1f, -0x1.27e2p-1f, 0x1.2c3984p+1f,
+    -0x1p-56f, -0x1.531128p-1f, -0x1.280806p-1f, 0x1.2b9af4p+1f,
     /* node 3138 x */
-    0x1.39999ap-55f, 0x1.6c4224p+0f, 0x1.e678ep-6f, -0x1.ea0214p-2f,
+    -0x1.166666p-55f, 0x1.6bc68p+0f, 0x1.eb19f4p-6f, -0x1.e93fap-2f,
     /* node 3138 y */
-    -0x1.666666p-58f, 0x1.a91104p-2f, 0x1.435454p-1f, -0x1.eebdcep-1f,
+    -0x1p-58f, 0x1.a8e6dcp-2f, 0x1.43b75ep-1f, -0x1.eec466p-1f,
     /* node 3138 z */
-    -0x1.99999ap-56f, -0x1.725b12p-1f, -0x1.30646p-1f, 0x1.3db1p+1f,
+    -0x1.8p-56f, -0x1.7200ccp-1f, -0x1.30c2b4p-1f, 0x1.3d1e36p+1f,
     /* node 3139 x */
-    0x1.ee6666p-55f, 0x1.5b0042p+0f, 0x1.4f7e6cp-7f, -0x1.5c0dacp-2f,
+    0x1.3cccccp-55f, 0x1.5a869cp+0f, 0x1.56d436p-7f, -0x1.5b63fcp-2f,
     /* node 3139 y */
-    -0x1.333334p-59f, 0x1.7041dap-2f, 0x1.0f42c8p-1f, -0x1.8a74cap-1f,
+    -0x1.99999ap-60f, 0x1.702d9cp-2f, 0x1.0f9e4ep-1f, -0x1.8aa688p-1f,
     /* node 3139 z */
-    -0x1.99999ap-59f, -0x1.3687e6p-1f, -0x1.21c3c6p-1f, 0x1.226f36p+1f,
+    -0x1p-57f, -0x1.3610e2p-1f, -0x1.21e114p-1f, 0x1.21dee2p+1f,
     /* node 3144 x */
-    0x1.333334p-58f, 0x1.33bb0ap+0f, -0x1.c54302p-9f, -0x1.899ff4p-3f,
+    0x1.fb3334p-56f, 0x1.333766p+0f, -0x1.cdd66ap-9f, -0x1.8704aap-3f,
     /* node 3144 y */
-    -0x1.e66666p-58f, 0x1.45684ep-2f, 0x1.b7658ep-2f, -0x1.1f091p-1f,
+    0x1.99999ap-62f, 0x1.45516ep-2f, 0x1.b7f498p-2f, -0x1.1f22cap-1f,
     /* node 3144 z */
-    0x1.333334p-58f, -0x1.fc4898p-2f, -0x1.0ee222p-1f, 0x1.07cb6cp+1f,
+    -0x1.99999ap-60f, -0x1.fb71dep-2f, -0x1.0f0454p-1f, 0x1.075382p+1f,
     /* node 3145 x */
-    -0x1.a66666p-58f, 0x1.276aa6p+0f, -0x1.13a65ap-7f, -0x1.9135bap-3f,
+    0x1.1p-56f, 0x1.26dca2p+0f, -0x1.0f6b7ep-7f, -0x1.8e2694p-3f,
     /* node 3145 y */
-    0x1.466666p-56f, 0x1.5d141cp-2f, 0x1.9e1548p-2f, -0x1.382b7ap-1f,
+    0x1.666666p-56f, 0x1.5d1ac2p-2f, 0x1.9e8c82p-2f, -0x1.3894cep-1f,
     /* node 3145 z */
-    -0x1.99999ap-58f, -0x1.fe0eb6p-2f, -0x1.0f00fap-1f, 0x1.f840bcp+0f,
+    -0x1.e66666p-56f, -0x1.fd09d6p-2f, -0x1.0f204ep-1f, 0x1.f7145p+0f,
     /* node 3146 x */
-    0x1.79999ap-56f, 0x1.30b8a2p+0f, 0x1.23929ep-8f, -0x1.11d412p-2f,
+    -0x1.fb3334p-55f, 0x1.304362p+0f, 0x1.4138d2p-8f, -0x1.1160e4p-2f,
     /* node 3146 y */
-    0x1.99999ap-61f, 0x1.a397fep-2f, 0x1.d71dcep-2f, -0x1.797e98p-1f,
+    -0x1.666666p-59f, 0x1.a358b8p-2f, 0x1.d7bf9ep-2f, -0x1.79acb8p-1f,
     /* node 3146 z */
-    -0x1.333334p-58f, -0x1.156988p-1f, -0x1.11a008p-1f, 0x1.00e702p+1f,
+    -0x1.333334p-55f, -0x1.14feeep-1f, -0x1.11c048p-1f, 0x1.005956p+1f,
     /* node 3154 x */
-    -0x1.e1999ap-57f, 0x1.0ac9aep+0f, -0x1.764a7cp-7f, -0x1.87095ep-4f,
+    0x1.bcccccp-56f, 0x1.0a4104p+0f, -0x1.7d78b2p-7f, -0x1.8244ap-4f,
     /* node 3154 y */
-    0x1.666666p-59f, 0x1.10d4cep-2f, 0x1.57b63ep-2f, -0x1.ad916ap-2f,
+    0x1.333334p-57f, 0x1.10c61ap-2f, 0x1.583c3p-2f, -0x1.ae7868p-2f,
     /* node 3154 z */
-    -0x1.19999ap-56f, -0x1.a73394p-2f, -0x1.fff5a2p-2f, 0x1.ded6c8p+0f,
+    -0x1.333334p-56f, -0x1.a60112p-2f, -0x1.00118p-1f, 0x1.ddbf16p+0f,
     /* node 3322 x */
-    0x1.666666p-60f, 0x1.9a76a4p-1f, 0x1.206ed8p-5f, -0x1.55ed68p-2f,
+    0x1.133334p-55f, 0x1.99e108p-1f, 0x1.2536f4p-5f, -0x1.559482p-2f,
     /* node 3322 y */
-    -0x1.19999ap-55f, 0x1.4de546p-1f, 0x1.5a75ep-1f, -0x1.98b47ap+0f,
+    0x1.333334p-57f, 0x1.4e4964p-1f, 0x1.5b18dcp-1f, -0x1.98af72p+0f,
     /* node 3322 z */
-    -0x1.333334p-58f, -0x1.1c3da4p-1f, -0x1.0a3a68p-1f, 0x1.d1399ap+0f,
+    -0x1.99999ap-59f, -0x1.1c082ap-1f, -0x1.0a9dc2p-1f, 0x1.d078bcp+0f,
     /* node 3324 x */
-    0x1.1b3334p-55f, 0x1.cbf5ccp-1f, 0x1.02fd86p-5f, -0x1.60f5aep-2f,
+    0x1.a66666p-57f, 0x1.cb055ap-1f, 0x1.01529cp-5f, -0x1.607254p-2f,
     /* node 3324 y */
-    -0x1p-56f, 0x1.3e1974p-1f, 0x1.421a9ap-1f, -0x1.69d16ep+0f,
+    0x1.cp-56f, 0x1.3d9882p-1f, 0x1.4220c8p-1f, -0x1.696dccp+0f,
     /* node 3324 z */
-    -0x1.e66666p-56f, -0x1.2b4666p-1f, -0x1.106998p-1f, 0x1.e56b0ap+0f,
+    -0x1p-57f, -0x1.2ad48p-1f, -0x1.10b1bep-1f, 0x1.e442b6p+0f,
     /* node 3330 x */
-    0x1.033334p-55f, 0x1.b9e91cp-1f, 0x1.3fe78p-5f, -0x1.1b0dd4p-2f,
+    -0x1.a33334p-56f, 0x1.b8e9fcp-1f, 0x1.41a5bp-5f, -0x1.1a66dp-2f,
     /* node 3330 y */
-    0x1p-58f, 0x1.293d5ep-1f, 0x1.0a571p-1f, -0x1.23845cp+0f,
+    0x1.99999ap-56f, 0x1.28ffeep-1f, 0x1.0a958cp-1f, -0x1.236beep+0f,
     /* node 3330 z */
-    -0x1.333334p-57f, -0x1.eb316cp-2f, -0x1.e236dp-2f, 0x1.9c2d8ap+0f,
+    -0x1p-56f, -0x1.ea4eb2p-2f, -0x1.e21b7ep-2f, 0x1.9af6a4p+0f,
     /* node 3331 x */
-    -0x1.666666p-58f, 0x1.ec7936p-1f, 0x1.0adfd6p-5f, -0x1.62343cp-2f,
+    -0x1.033334p-56f, 0x1.eb507cp-1f, 0x1.093c94p-5f, -0x1.60dac6p-2f,
     /* node 3331 y */
-    0x1.ccccccp-58f, 0x1.2e4fcap-1f, 0x1.2933cep-1f, -0x1.42493cp+0f,
+    0x1.ccccccp-57f, 0x1.2ded78p-1f, 0x1.297198p-1f, -0x1.421272p+0f,
     /* node 3331 z */
-    -0x1p-56f, -0x1.2523bap-1f, -0x1.0c98cp-1f, 0x1.df09a8p+0f,
+    -0x0p+0f, -0x1.24e5f4p-1f, -0x1.0cc764p-1f, 0x1.de0baep+0f,
     /* node 3332 x */
-    -0x1.4p-58f, 0x1.0c18ep+0f, 0x1.0b43d6p-5f, -0x1.7f1866p-2f,
+    0x1.39999ap-56f, 0x1.0bc6fcp+0f, 0x1.109898p-5f, -0x1.7f3ebep-2f,
     /* node 3332 y */
-    0x1.ccccccp-56f, 0x1.24c4cep-1f, 0x1.2ac524p-1f, -0x1.3652a2p+0f,
+    0x1.933334p-55f, 0x1.2491ecp-1f, 0x1.2b0ec2p-1f, -0x1.363d6cp+0f,
     /* node 3332 z */
-    -0x1.99999ap-60f, -0x1.386b6ap-1f, -0x1.17c2f4p-1f, 0x1.006218p+1f,
+    -0x1.ccccccp-57f, -0x1.37f0e2p-1f, -0x1.17f0eap-1f, 0x1.ffaa52p+0f,
     /* node 3339 x */
-    0x1.29999ap-56f, 0x1.170b5ap+0f, 0x1.5df2c8p-6f, -0x1.65a6ccp-2f,
+    -0x1.ccccccp-60f, 0x1.168004p+0f, 0x1.5b5752p-6f, -0x1.64497cp-2f,
     /* node 3339 y */
-    -0x1.ccccccp-58f, 0x1.12e458p-1f, 0x1.17902p-1f, -0x1.142b0cp+0f,
+    0x1.99999ap-59f, 0x1.127026p-1f, 0x1.178f22p-1f, -0x1.13fcep+0f,
     /* node 3339 z */
-    -0x1.b33334p-56f, -0x1.35536p-1f, -0x1.18325ap-1f, 0x1.017954p+1f,
+    -0x1p-56f, -0x1.350ce4p-1f, -0x1.189b1ep-1f, 0x1.00f8d4p+1f,
     /* node 3340 x */
-    0x1.19999ap-59f, 0x1.dff5ap-1f, 0x1.24b664p-6f, -0x1.c51332p-3f,
+    0x1.d33334p-56f, 0x1.def28p-1f, 0x1.23e816p-6f, -0x1.c39ebep-3f,
     /* node 3340 y */
-    0x1p-57f, 0x1.f8ead2p-2f, 0x1.a4f82ep-2f, -0x1.a15338p-1f,
+    -0x1.333334p-56f, 0x1.f801e8p-2f, 0x1.a534cep-2f, -0x1.a0f58ap-1f,
     /* node 3340 z */
-    -0x1.99999ap-58f, -0x1.c1da1p-2f, -0x1.df9c34p-2f, 0x1.97c3dap+0f,
+    -0x1.59999ap-55f, -0x1.c123aap-2f, -0x1.dffae2p-2f, 0x1.96abc4p+0f,
     /* node 3341 x */
-    -0x1.2b3334p-55f, 0x1.227b02p+0f, 0x1.336fe2p-7f, -0x1.2969bcp-2f,
+    -0x1.066666p-55f, 0x1.21eb78p+0f, 0x1.2dbf18p-7f, -0x1.27dd5ep-2f,
     /* node 3341 y */
-    -0x1.99999ap-60f, 0x1.d491b4p-2f, 0x1.e2a142p-2f, -0x1.b5f622p-1f,
+    0x1.0cccccp-56f, 0x1.d3d8bap-2f, 0x1.e2c6bcp-2f, -0x1.b5df8ap-1f,
     /* node 3341 z */
-    0x1.666666p-56f, -0x1.1cc492p-1f, -0x1.1199f2p-1f, 0x1.f3cfa8p+0f,
+    0x1p-57f, -0x1.1c8af8p-1f, -0x1.12092ep-1f, 0x1.f2db82p+0f,
     /* node 3342 x */
-    -0x1.1b3334p-55f, 0x1.20fb04p+0f, 0x1.14fd5p-6f, -0x1.4fe1b6p-2f,
+    0x1.cp-57f, 0x1.207f8cp+0f, 0x1.195924p-6f, -0x1.4f9dep-2f,
     /* node 3342 y */
-    0x1.333334p-57f, 0x1.fd5968p-2f, 0x1.03743cp-1f, -0x1.e93c0cp-1f,
+    0x1.b33334p-57f, 0x1.fcfc02p-2f, 0x1.03ce26p-1f, -0x1.e952dcp-1f,
     /* node 3342 z */
-    -0x1.ccccccp-57f, -0x1.2b36b6p-1f, -0x1.155d96p-1f, 0x1.fcb97cp+0f,
+    -0x1p-56f, -0x1.2add2cp-1f, -0x1.159ba4p-1f, 0x1.fb9f0ap+0f,
     /* node 3343 x */
-    0x1.18p-54f, 0x1.03f156p+0f, 0x1.26ab04p-7f, -0x1.d9b5bap-3f,
+    0x1.2p-55f, 0x1.035f58p+0f, 0x1.217dbap-7f, -0x1.d77504p-3f,
     /* node 3343 y */
-    -0x1.333334p-58f, 0x1.e6cd28p-2f, 0x1.b58a4cp-2f, -0x1.92d112p-1f,
+    0x1.59999ap-56f, 0x1.e5e6ecp-2f, 0x1.b597e2p-2f, -0x1.9273d8p-1f,
     /* node 3343 z */
-    -0x1.8cccccp-55f, -0x1.e1bed4p-2f, -0x1.f7c87ep-2f, 0x1.b94b3ep+0f,
+    -0x1.99999ap-57f, -0x1.e12daep-2f, -0x1.f82332p-2f, 0x1.b83624p+0f,
     /* node 3350 x */
-    -0x1.ce6666p-56f, 0x1.01128ap+0f, -0x1.4323e8p-9f, -0x1.3a2c2ep-3f,
+    0x1p-61f, 0x1.008ed6p+0f, -0x1.4546d2p-9f, -0x1.386ceep-3f,
     /* node 3350 y */
-    -0x1.19999ap-58f, 0x1.a2fe5ap-2f, 0x1.778236p-2f, -0x1.3dc93ep-1f,
+    0x1.b33334p-58f, 0x1.a29b36p-2f, 0x1.781f2ap-2f, -0x1.3de598p-1f,
     /* node 3350 z */
-    -0x1.ccccccp-57f, -0x1.bc5c96p-2f, -0x1.f3542ap-2f, 0x1.b1fe46p+0f,
+    -0x1.0cccccp-55f, -0x1.bbc4a8p-2f, -0x1.f3aa1p-2f, 0x1.b0f1f8p+0f,
     /* node 3351 x */
-    -0x1.0cccccp-59f, 0x1.ee701cp-1f, -0x1.96b89ap-7f, -0x1.b58c4cp-4f,
+    0x1.773334p-55f, 0x1.ed4e7cp-1f, -0x1.9eede6p-7f, -0x1.b1e1p-4f,
     /* node 3351 y */
-    0x1.4cccccp-57f, 0x1.7174eep-2f, 0x1.4bfae6p-2f, -0x1.0f47c6p-1f,
+    -0x1.99999ap-58f, 0x1.70cc0cp-2f, 0x1.4c3b66p-2f, -0x1.0f5fd6p-1f,
     /* node 3351 z */
-    -0x1p-56f, -0x1.9d7d12p-2f, -0x1.eb58f4p-2f, 0x1.a84e32p+0f,
+    -0x1.99999ap-60f, -0x1.9cbf28p-2f, -0x1.ebb196p-2f, 0x1.a73c92p+0f,
     /* node 3358 x */
-    0x1.d0ccccp-56f, 0x1.fe8488p-1f, -0x1.94eae8p-7f, -0x1.5cf5b6p-4f,
+    0x1.9p-55f, 0x1.fd8c72p-1f, -0x1.98eaa2p-7f, -0x1.5acce2p-4f,
     /* node 3358 y */
-    0x1.0cccccp-57f, 0x1.3c7c58p-2f, 0x1.4974b4p-2f, -0x1.d1d7fp-2f,
+    0x1.333334p-60f, 0x1.3b9b38p-2f, 0x1.49b50ep-2f, -0x1.d1f8bp-2f,
     /* node 3358 z */
-    -0x1.333334p-57f, -0x1.a4b90ap-2f, -0x1.f99cd2p-2f, 0x1.c045e2p+0f,
+    -0x1.666666p-57f, -0x1.a44e76p-2f, -0x1.f9ec3ap-2f, 0x1.bf421ap+0f,
     /* node 3361 x */
-    -0x1.24p-58f, 0x1.d9e0bap-1f, -0x1.2879eap-6f, -0x1.85d03ep-6f,
+    0x1.e4999ap-56f, 0x1.d8bf26p-1f, -0x1.29485cp-6f, -0x1.71b954p-6f,
     /* node 3361 y */
-    -0x1.666666p-60f, 0x1.f56a4cp-3f, 0x1.139c9ep-2f, -0x1.56cce6p-2f,
+    0x1p-59f, 0x1.f5ad34p-3f, 0x1.1412f8p-2f, -0x1.57af8p-2f,
     /* node 3361 z */
-    -0x0p+0f, -0x1.74d364p-2f, -0x1.e459d2p-2f, 0x1.b2ed94p+0f,
+    -0x1.4cccccp-56f, -0x1.73ebbap-2f, -0x1.e4ba6ap-2f, 0x1.b1ec42p+0f,
     /* node 3363 x */
-    -0x1.acccccp-57f, 0x1.ea2cbcp-1f, -0x1.33250cp-6f, -0x1.b16b68p-5f,
+    0x1.80ccccp-55f, 0x1.e9173ep-1f, -0x1.34a3f6p-6f, -0x1.a74c86p-5f,
     /* node 3363 y */
-    -0x1.333334p-60f, 0x1.193e58p-2f, 0x1.2c28f2p-2f, -0x1.8fa26ap-2f,
+    -0x1.333334p-57f, 0x1.19772ep-2f, 0x1.2ca79p-2f, -0x1.909c8ep-2f,
     /* node 3363 z */
-    -0x1.666666p-56f, -0x1.8d3bdcp-2f, -0x1.ee9d3cp-2f, 0x1.ba872cp+0f,
+    0x1.666666p-57f, -0x1.8c9012p-2f, -0x1.ef1a44p-2f, 0x1.b98d36p+0f,
     /* node 3364 x */
-    0x1.933334p-56f, 0x1.e4341cp-1f, -0x1.f9f51ap-7f, -0x1.d35fbep-5f,
+    0x1.fcccccp-57f, 0x1.e31ceap-1f, -0x1.f8d0fcp-7f, -0x1.cc7f94p-5f,
     /* node 3364 y */
-    0x1.666666p-59f, 0x1.398672p-2f, 0x1.2a5124p-2f, -0x1.b68f44p-2f,
+    -0x1.99999ap-62f, 0x1.38eab6p-2f, 0x1.2aa354p-2f, -0x1.b6f526p-2f,
     /* node 3364 z */
-    0x1p-57f, -0x1.8624cap-2f, -0x1.e8880ep-2f, 0x1.a96ee4p+0f,
+    -0x1.99999ap-59f, -0x1.85dadap-2f, -0x1.e9233ap-2f, 0x1.a86836p+0f,
     /* node 3365 x */
-    0x1.c93334p-58f, 0x1.b946f8p-1f, -0x1.331c38p-6f, -0x1.0539dp-8f,
+    0x1.648p-57f, 0x1.b80cbcp-1f, -0x1.379168p-6f, -0x1.81a5bep-9f,
     /* node 3365 y */
-    0x1.b33334p-58f, 0x1.0e44fap-2f, 0x1.eea5bp-3f, -0x1.42e88p-2f,
+    0x1.e66666p-58f, 0x1.0dc616p-2f, 0x1.eeb924p-3f, -0x1.43a664p-2f,
     /* node 3365 z */
-    -0x1.333334p-58f, -0x1.5c399ep-2f, -0x1.d3827ep-2f, 0x1.92bbc8p+0f,
+    -0x1.333334p-57f, -0x1.5b9dbp-2f, -0x1.d3f23cp-2f, 0x1.919f32p+0f,
 };
 const tfit_model tfit_stomach_forward = {
     4u, 1u, 484u, 1u, 5820u,
@@ -3114,8 +3114,8 @@ const tfit_model tfit_stomach_forward = {
      0x3e658a09u, 0x3c3b0dbeu, 0x3e12c57bu, 0xbdf82bb2u, 0xbd0ecd48u, 0xbdb33eddu,
      0xbe315cacu, 0xbe315cacu, 0xbe315cacu, 0xbfb065bbu, 0xc0009e2bu, 0x3fdffc71u,
      0xefdea511u, 0xf02256abu, 0x700d5ae8u, 0xc001f357u, 0x3f8b12d0u, 0xbff61a03u,
-     0xf546c73eu, 0xfab9d30cu},
-    0x1bfbe4f8u
+     0xe9b14415u, 0xfab9d30cu},
+    0x382f21c0u
 };
 static const int32_t tfit_stomach_forward_q31_coef[7273] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
@@ -3125,2915 +3125,2915 @@ static const int32_t tfit_stomach_forward_q31_coef[7273] = {
     0, 0, 447392416,
     5,
     /* node 991 x: shift, then 4 coefficients */
-    35, 0, 483989568, 23112492, -363410048,
+    35, 0, 485483360, 22409362, -362399616,
     /* node 991 y: shift, then 4 coefficients */
-    36, 0, -357547840, 449767072, 98341064,
+    36, 0, -361369600, 451534176, 96292680,
     /* node 991 z: shift, then 4 coefficients */
-    34, 0, -33424390, -113207960, 456988064,
+    34, 0, -33229418, -113504792, 456568416,
     /* node 1226 x: shift, then 4 coefficients */
-    35, 0, 498578368, 104888768, -374757824,
+    35, 0, 497989344, 104883144, -374497280,
     /* node 1226 y: shift, then 4 coefficients */
-    35, 0, -41733400, 268604480, -409712256,
+    35, 0, -42075856, 268744448, -409772736,
     /* node 1226 z: shift, then 4 coefficients */
-    34, 0, -33921500, -158252560, 732311232,
+    34, 0, -33759468, -158355728, 731203712,
     /* node 1227 x: shift, then 4 coefficients */
-    35, 0, 489794336, 105359560, -362377184,
+    35, 0, 489387904, 105288328, -362153344,
     /* node 1227 y: shift, then 4 coefficients */
-    35, 0, -35905816, 279323840, -462826496,
+    35, 0, -36115304, 279426208, -462744032,
     /* node 1227 z: shift, then 4 coefficients */
-    34, 0, -35126096, -160474352, 745890624,
+    34, 0, -34909336, -160598080, 744769408,
     /* node 1239 x: shift, then 4 coefficients */
-    35, 0, 556193984, 73424496, -433002656,
+    35, 0, 555189504, 73534176, -432550528,
     /* node 1239 y: shift, then 4 coefficients */
-    36, 0, -248880416, 454357920, -131790248,
+    36, 0, -248797344, 454443616, -132786392,
     /* node 1239 z: shift, then 4 coefficients */
-    34, 0, -46775564, -138891216, 623661568,
+    34, 0, -46602684, -139002000, 622646080,
     /* node 1240 x: shift, then 4 coefficients */
-    35, 0, 551501120, 84743360, -427256384,
+    35, 0, 551001344, 84676816, -426860384,
     /* node 1240 y: shift, then 4 coefficients */
-    36, 0, -197754512, 471187456, -285433376,
+    36, 0, -197537232, 471331264, -285791936,
     /* node 1240 z: shift, then 4 coefficients */
-    34, 0, -45468280, -144737504, 660213504,
+    34, 0, -45155724, -144866832, 659183360,
     /* node 1241 x: shift, then 4 coefficients */
-    35, 0, 553708160, 89176152, -415738656,
+    35, 0, 552982848, 89143152, -415402624,
     /* node 1241 y: shift, then 4 coefficients */
-    35, 0, -85690664, 245930288, -206308272,
+    35, 0, -85918944, 246057744, -206543488,
     /* node 1241 z: shift, then 4 coefficients */
-    34, 0, -43304552, -149146064, 685793152,
+    34, 0, -43096492, -149263040, 684742400,
     /* node 1246 x: shift, then 4 coefficients */
-    35, 0, 488791744, 37533448, -383622144,
+    35, 0, 484355392, 38806448, -383806048,
     /* node 1246 y: shift, then 4 coefficients */
-    36, 0, -332715136, 418334720, 108954992,
+    36, 0, -329073856, 416944064, 109265064,
     /* node 1246 z: shift, then 4 coefficients */
-    34, 0, -32426280, -114778472, 472139904,
+    34, 0, -32531568, -114556728, 470711456,
     /* node 1247 x: shift, then 4 coefficients */
-    35, 0, 537854592, 68153656, -429968096,
+    35, 0, 535501472, 68819352, -429935200,
     /* node 1247 y: shift, then 4 coefficients */
-    36, 0, -264827328, 428258592, -44524232,
+    36, 0, -264144224, 428100448, -45021800,
     /* node 1247 z: shift, then 4 coefficients */
-    34, 0, -42025168, -132689816, 585324416,
+    34, 0, -42024456, -132656176, 584155776,
     /* node 1248 x: shift, then 4 coefficients */
-    35, 0, 519222496, 50491360, -410947328,
+    35, 0, 520830592, 49458392, -409516640,
     /* node 1248 y: shift, then 4 coefficients */
-    36, 0, -307237120, 419664544, 60019500,
+    36, 0, -308162944, 420133920, 58976252,
     /* node 1248 z: shift, then 4 coefficients */
-    34, 0, -39102788, -123556056, 530245856,
+    34, 0, -38391576, -123968688, 529755232,
     /* node 1249 x: shift, then 4 coefficients */
-    35, 0, 532675968, 36565488, -403773184,
+    35, 0, 531340064, 36725596, -403215872,
     /* node 1249 y: shift, then 4 coefficients */
-    36, 0, -338138112, 444489632, 80625656,
+    36, 0, -336968384, 444296256, 79955768,
     /* node 1249 z: shift, then 4 coefficients */
-    34, 0, -43012956, -122924544, 525899872,
+    34, 0, -42778428, -122980944, 525000704,
     /* node 1250 x: shift, then 4 coefficients */
-    35, 0, 541169600, 56751220, -421526560,
+    35, 0, 539745664, 57096664, -421221472,
     /* node 1250 y: shift, then 4 coefficients */
-    36, 0, -296207296, 431452288, 6586648,
+    36, 0, -296261024, 431633856, 5716223,
     /* node 1250 z: shift, then 4 coefficients */
-    34, 0, -42337244, -129857736, 566044992,
+    34, 0, -42144580, -129930472, 565055232,
     /* node 1251 x: shift, then 4 coefficients */
-    34, 0, 303172576, 19664066, -218115200,
+    34, 0, 302682464, 19659316, -217861584,
     /* node 1251 y: shift, then 4 coefficients */
-    36, 0, -345772096, 501620384, 10974853,
+    36, 0, -346334624, 502044928, 9782193,
     /* node 1251 z: shift, then 4 coefficients */
-    34, 0, -61582528, -134001760, 607883392,
+    34, 0, -61438848, -134028440, 606776768,
     /* node 1252 x: shift, then 4 coefficients */
-    34, 0, 296166336, 26552154, -220070320,
+    34, 0, 295657408, 26560216, -219824672,
     /* node 1252 y: shift, then 4 coefficients */
-    36, 0, -309087392, 485113920, -27359002,
+    36, 0, -309332544, 485384864, -28381244,
     /* node 1252 z: shift, then 4 coefficients */
-    34, 0, -58301508, -136371360, 617271168,
+    34, 0, -58252624, -136404528, 616198400,
     /* node 1253 x: shift, then 4 coefficients */
-    35, 0, 574418752, 37892388, -428435040,
+    35, 0, 574147136, 37594036, -427710848,
     /* node 1253 y: shift, then 4 coefficients */
-    36, 0, -358761024, 491907968, 46691684,
+    36, 0, -359278272, 492479040, 45731284,
     /* node 1253 z: shift, then 4 coefficients */
-    34, 0, -58242284, -128882632, 576629568,
+    34, 0, -57757028, -129051784, 575670784,
     /* node 1256 x: shift, then 4 coefficients */
-    35, 0, 414715264, -11607232, -260184464,
+    35, 0, 413955424, -11526839, -259917040,
     /* node 1256 y: shift, then 4 coefficients */
-    36, 0, -400866336, 553550464, -81152800,
+    36, 0, -401153664, 554057280, -81983688,
     /* node 1256 z: shift, then 4 coefficients */
-    35, 0, -50725748, -216303760, 766832768,
+    35, 0, -50433460, -216449264, 765208192,
     /* node 1257 x: shift, then 4 coefficients */
-    35, 0, 466294048, 7995088, -331050112,
+    35, 0, 465379840, 8140368, -330711392,
     /* node 1257 y: shift, then 4 coefficients */
-    36, 0, -394720224, 494785024, 54023244,
+    36, 0, -394503648, 495090752, 52970396,
     /* node 1257 z: shift, then 4 coefficients */
-    34, 0, -32428232, -111129416, 431659808,
+    34, 0, -32305914, -111186904, 430825472,
     /* node 1258 x: shift, then 4 coefficients */
-    35, 0, 470452320, -4969194, -312596320,
+    35, 0, 469527680, -4758245, -312203616,
     /* node 1258 y: shift, then 4 coefficients */
-    36, 0, -417871904, 527749376, 23952352,
+    36, 0, -417514944, 527924160, 22921270,
     /* node 1258 z: shift, then 4 coefficients */
-    34, 0, -32371528, -112806080, 430052576,
+    34, 0, -32126348, -112971384, 429288640,
     /* node 1259 x: shift, then 4 coefficients */
-    35, 0, 496989536, 5745380, -345596352,
+    35, 0, 496765312, 5689476, -345220352,
     /* node 1259 y: shift, then 4 coefficients */
-    36, 0, -412659520, 507080096, 64834144,
+    36, 0, -412070432, 507350848, 63875028,
     /* node 1259 z: shift, then 4 coefficients */
-    34, 0, -37760876, -114930592, 457515360,
+    34, 0, -37506156, -115063600, 456756928,
     /* node 1260 x: shift, then 4 coefficients */
-    35, 0, 524520736, 14532714, -373657664,
+    35, 0, 524120608, 14419442, -373015776,
     /* node 1260 y: shift, then 4 coefficients */
-    36, 0, -392611520, 489796000, 86658600,
+    36, 0, -394186624, 490644384, 85465032,
     /* node 1260 z: shift, then 4 coefficients */
-    34, 0, -42361564, -118774088, 492325888,
+    34, 0, -41972792, -118991824, 491539520,
     /* node 1261 x: shift, then 4 coefficients */
-    35, 0, 523863616, 25547324, -387595040,
+    35, 0, 522439840, 25777354, -387233856,
     /* node 1261 y: shift, then 4 coefficients */
-    36, 0, -359763552, 463546880, 93016272,
+    36, 0, -361368768, 464479968, 91666056,
     /* node 1261 z: shift, then 4 coefficients */
-    34, 0, -42537044, -119851696, 504433248,
+    34, 0, -42488668, -119965168, 503648672,
     /* node 1262 x: shift, then 4 coefficients */
-    35, 0, 570736832, 11100777, -393992128,
+    35, 0, 570112640, 11072489, -393290816,
     /* node 1262 y: shift, then 4 coefficients */
-    36, 0, -404475776, 507163648, 83232472,
+    36, 0, -404794656, 507565952, 81994408,
     /* node 1262 z: shift, then 4 coefficients */
-    34, 0, -52815912, -124471528, 536151360,
+    34, 0, -52681360, -124578336, 535210304,
     /* node 1509 x: shift, then 4 coefficients */
-    35, 0, 471580864, 101338856, -322116128,
+    35, 0, 470741344, 101473848, -321863840,
     /* node 1509 y: shift, then 4 coefficients */
-    35, 0, -18147578, 308535136, -608055488,
+    35, 0, -18135150, 308572864, -607767808,
     /* node 1509 z: shift, then 4 coefficients */
-    34, 0, -37546848, -164501952, 774848704,
+    34, 0, -37186480, -164654752, 773771648,
     /* node 1511 x: shift, then 4 coefficients */
-    35, 0, 482459648, 100647832, -322115264,
+    35, 0, 481367552, 100876816, -321966144,
     /* node 1511 y: shift, then 4 coefficients */
-    35, 0, -9766693, 322871008, -640666560,
+    35, 0, -9999311, 323014976, -640447232,
     /* node 1511 z: shift, then 4 coefficients */
-    34, 0, -45982820, -166374688, 799653440,
+    34, 0, -45794444, -166467392, 798446848,
     /* node 1512 x: shift, then 4 coefficients */
-    35, 0, 491796512, 103319904, -339900800,
+    35, 0, 491443712, 103204152, -339751104,
     /* node 1512 y: shift, then 4 coefficients */
-    35, 0, -19013646, 307407168, -569716288,
+    35, 0, -19418782, 307596960, -569629184,
     /* node 1512 z: shift, then 4 coefficients */
-    34, 0, -42020460, -164991504, 785273408,
+    34, 0, -41748368, -165142480, 784125696,
     /* node 1524 x: shift, then 4 coefficients */
-    35, 0, 517624512, 104436768, -377294592,
+    35, 0, 516932864, 104418016, -377214688,
     /* node 1524 y: shift, then 4 coefficients */
-    35, 0, -39149216, 285243872, -438282464,
+    35, 0, -39484340, 285405568, -438399264,
     /* node 1524 z: shift, then 4 coefficients */
-    34, 0, -43953628, -160614304, 760734912,
+    34, 0, -43670524, -160761552, 759592384,
     /* node 1525 x: shift, then 4 coefficients */
-    35, 0, 549718400, 98286960, -394001600,
+    35, 0, 548895296, 98318928, -393676640,
     /* node 1525 y: shift, then 4 coefficients */
-    35, 0, -56103788, 278200800, -358644224,
+    35, 0, -56472072, 278308992, -358820000,
     /* node 1525 z: shift, then 4 coefficients */
-    34, 0, -49533792, -157666784, 748181184,
+    34, 0, -49290316, -157791104, 747119104,
     /* node 1526 x: shift, then 4 coefficients */
-    35, 0, 484526624, 103316640, -337564160,
+    35, 0, 484102624, 103221248, -337424512,
     /* node 1526 y: shift, then 4 coefficients */
-    35, 0, -25961272, 298291584, -550228288,
+    35, 0, -25910202, 298320992, -549995776,
     /* node 1526 z: shift, then 4 coefficients */
-    34, 0, -36028676, -163689744, 767955712,
+    34, 0, -35736768, -163836416, 766850112,
     /* node 1527 x: shift, then 4 coefficients */
-    35, 0, 490307968, 105010912, -355876384,
+    35, 0, 490062880, 104900200, -355575392,
     /* node 1527 y: shift, then 4 coefficients */
-    35, 0, -31659416, 287221984, -494763456,
+    35, 0, -31872564, 287356512, -494623488,
     /* node 1527 z: shift, then 4 coefficients */
-    34, 0, -36084804, -161995200, 756923968,
+    34, 0, -35785244, -162142768, 755830016,
     /* node 1528 x: shift, then 4 coefficients */
-    35, 0, 500601664, 105662144, -364563296,
+    35, 0, 500287936, 105582672, -364189600,
     /* node 1528 y: shift, then 4 coefficients */
-    35, 0, -31703304, 289612192, -481891776,
+    35, 0, -32136044, 289773568, -481988576,
     /* node 1528 z: shift, then 4 coefficients */
-    34, 0, -40641572, -162187040, 764776128,
+    34, 0, -40308232, -162347632, 763635456,
     /* node 1529 x: shift, then 4 coefficients */
-    35, 0, 502954944, 104685296, -355316256,
+    35, 0, 502409952, 104710328, -354933728,
     /* node 1529 y: shift, then 4 coefficients */
-    35, 0, -27521710, 297411904, -513941376,
+    35, 0, -27767064, 297555200, -513939872,
     /* node 1529 z: shift, then 4 coefficients */
-    34, 0, -40945812, -163491168, 776064000,
+    34, 0, -40621996, -163639488, 774921344,
     /* node 1530 x: shift, then 4 coefficients */
-    35, 0, 526137408, 103192864, -370333696,
+    35, 0, 525808416, 103080536, -370205216,
     /* node 1530 y: shift, then 4 coefficients */
-    35, 0, -31970282, 297825856, -479100000,
+    35, 0, -32356504, 298041536, -479157792,
     /* node 1530 z: shift, then 4 coefficients */
-    34, 0, -47627608, -162826960, 782224448,
+    34, 0, -47294936, -163007200, 781140224,
     /* node 1531 x: shift, then 4 coefficients */
-    35, 0, 536758912, 103060792, -381142368,
+    35, 0, 536319392, 102964184, -381160928,
     /* node 1531 y: shift, then 4 coefficients */
-    35, 0, -39683840, 294160768, -438124896,
+    35, 0, -40044816, 294336896, -438196224,
     /* node 1531 z: shift, then 4 coefficients */
-    34, 0, -50242764, -161495392, 776897728,
+    34, 0, -50021972, -161646640, 775819392,
     /* node 1541 x: shift, then 4 coefficients */
-    35, 0, 541772032, 97316256, -403419040,
+    35, 0, 541160832, 97211504, -403185568,
     /* node 1541 y: shift, then 4 coefficients */
-    35, 0, -67772752, 263743168, -300788192,
+    35, 0, -67961672, 263859888, -300955392,
     /* node 1541 z: shift, then 4 coefficients */
-    34, 0, -46177040, -154252048, 721974272,
+    34, 0, -45875008, -154399552, 720869504,
     /* node 1542 x: shift, then 4 coefficients */
-    35, 0, 559666752, 97723120, -412175968,
+    35, 0, 559081792, 97591896, -411850240,
     /* node 1542 y: shift, then 4 coefficients */
-    35, 0, -65391600, 272323616, -298515008,
+    35, 0, -65816704, 272449984, -298865760,
     /* node 1542 z: shift, then 4 coefficients */
-    34, 0, -52993468, -155180848, 736862016,
+    34, 0, -52678756, -155331680, 735783360,
     /* node 1543 x: shift, then 4 coefficients */
-    34, 0, 297178272, 43342380, -211438544,
+    34, 0, 296651168, 43393872, -211309728,
     /* node 1543 y: shift, then 4 coefficients */
-    35, 0, -84362464, 272610784, -232413376,
+    35, 0, -83979256, 272608992, -232599744,
     /* node 1543 z: shift, then 4 coefficients */
-    34, 0, -61524684, -152547936, 727356224,
+    34, 0, -61281436, -152715088, 726126464,
     /* node 1544 x: shift, then 4 coefficients */
-    35, 0, 577253056, 95875440, -399023232,
+    35, 0, 576031936, 95870512, -398908192,
     /* node 1544 y: shift, then 4 coefficients */
-    35, 0, -51498860, 292510048, -365134240,
+    35, 0, -51644284, 292546688, -365407136,
     /* node 1544 z: shift, then 4 coefficients */
-    34, 0, -56062816, -159278416, 773802048,
+    34, 0, -55753508, -159424288, 772627392,
     /* node 1545 x: shift, then 4 coefficients */
-    35, 0, 557609728, 100992672, -385679680,
+    35, 0, 556791232, 101071888, -385406944,
     /* node 1545 y: shift, then 4 coefficients */
-    35, 0, -37899824, 303810944, -436210272,
+    35, 0, -37894088, 303883712, -436193344,
     /* node 1545 z: shift, then 4 coefficients */
-    34, 0, -56510744, -161711376, 791135744,
+    34, 0, -56277496, -161817664, 789879040,
     /* node 1546 x: shift, then 4 coefficients */
-    34, 0, 309907424, 44635448, -206558288,
+    34, 0, 309409824, 44619368, -206409920,
     /* node 1546 y: shift, then 4 coefficients */
-    35, 0, -63185440, 298513600, -305960288,
+    35, 0, -63122844, 298550720, -306046880,
     /* node 1546 z: shift, then 4 coefficients */
-    34, 0, -69157248, -156537232, 771518656,
+    34, 0, -68793896, -156730304, 770352512,
     /* node 1549 x: shift, then 4 coefficients */
-    34, 0, 295078816, 34814232, -217752240,
+    34, 0, 294581664, 34889324, -217548528,
     /* node 1549 y: shift, then 4 coefficients */
-    36, 0, -253966848, 490873536, -183585552,
+    36, 0, -253832240, 491031968, -184306656,
     /* node 1549 z: shift, then 4 coefficients */
-    34, 0, -54601356, -143445936, 657340352,
+    34, 0, -54397848, -143559280, 656303552,
     /* node 1550 x: shift, then 4 coefficients */
-    34, 0, 292497120, 40206624, -215708848,
+    34, 0, 292094880, 40163696, -215477168,
     /* node 1550 y: shift, then 4 coefficients */
-    36, 0, -208350288, 505127872, -301977152,
+    36, 0, -209172608, 505297920, -302892960,
     /* node 1550 z: shift, then 4 coefficients */
-    34, 0, -53851392, -147491120, 684787072,
+    34, 0, -53664380, -147637008, 683697472,
     /* node 1551 x: shift, then 4 coefficients */
-    34, 0, 303755872, 37616084, -217104400,
+    34, 0, 303235776, 37594420, -216938144,
     /* node 1551 y: shift, then 4 coefficients */
-    36, 0, -218846816, 526257344, -304935968,
+    36, 0, -218694560, 526154816, -305627328,
     /* node 1551 z: shift, then 4 coefficients */
-    34, 0, -60765636, -148647664, 698022400,
+    34, 0, -60604196, -148773664, 696860480,
     /* node 1552 x: shift, then 4 coefficients */
-    34, 0, 374900288, 11192250, -225779456,
+    34, 0, 374331232, 11188697, -225581424,
     /* node 1552 y: shift, then 4 coefficients */
-    35, 0, -177591824, 310169280, -58488300,
+    35, 0, -177432496, 310092448, -58911400,
     /* node 1552 z: shift, then 4 coefficients */
-    34, 0, -98928040, -141297104, 708633984,
+    34, 0, -98639312, -141346912, 707511040,
     /* node 1553 x: shift, then 4 coefficients */
-    34, 0, 313301280, 41468604, -211922576,
+    34, 0, 313082336, 41481112, -211723376,
     /* node 1553 y: shift, then 4 coefficients */
-    35, 0, -85483848, 289123040, -243489584,
+    35, 0, -85573704, 289364416, -243794864,
     /* node 1553 z: shift, then 4 coefficients */
-    34, 0, -70440088, -153668208, 749267328,
+    34, 0, -70062032, -153824928, 748190016,
     /* node 1554 x: shift, then 4 coefficients */
-    34, 0, 432457888, 3566501, -225977584,
+    34, 0, 432082080, 3559992, -225689840,
     /* node 1554 y: shift, then 4 coefficients */
-    35, 0, -164522656, 368940512, -99133304,
+    35, 0, -164568832, 368899104, -99590648,
     /* node 1554 z: shift, then 4 coefficients */
-    34, 0, -124460912, -140957616, 775454208,
+    34, 0, -124263504, -141011648, 774427008,
     /* node 1565 x: shift, then 4 coefficients */
-    34, 0, 327088864, 17756434, -224339136,
+    34, 0, 326657120, 17751526, -224033376,
     /* node 1565 y: shift, then 4 coefficients */
-    36, 0, -361912992, 546816256, -39927428,
+    36, 0, -361982080, 547138880, -40817752,
     /* node 1565 z: shift, then 4 coefficients */
-    34, 0, -78712968, -137730096, 650186368,
+    34, 0, -78516984, -137835632, 649089536,
     /* node 1566 x: shift, then 4 coefficients */
-    34, 0, 292815968, 31092532, -218579488,
+    34, 0, 292103104, 31203506, -218488944,
     /* node 1566 y: shift, then 4 coefficients */
-    36, 0, -284486176, 478963776, -104345216,
+    36, 0, -283236448, 478582464, -104773296,
     /* node 1566 z: shift, then 4 coefficients */
-    34, 0, -54121720, -138980576, 631732032,
+    34, 0, -53935596, -139024016, 630750016,
     /* node 1572 x: shift, then 4 coefficients */
-    35, 0, 413846752, -25372122, -235282192,
+    35, 0, 412950944, -25265438, -234885312,
     /* node 1572 y: shift, then 4 coefficients */
-    35, 0, -210356960, 298266560, -63735120,
+    35, 0, -210243152, 298348288, -64179268,
     /* node 1572 z: shift, then 4 coefficients */
-    35, 0, -51079320, -219705488, 755659584,
+    35, 0, -50593764, -220071120, 753996992,
     /* node 1573 x: shift, then 4 coefficients */
-    35, 0, 351015296, -31827638, -160330736,
+    35, 0, 350350848, -31872226, -159969312,
     /* node 1573 y: shift, then 4 coefficients */
-    35, 0, -185488160, 313850048, -157728096,
+    35, 0, -185520400, 314059744, -157944848,
     /* node 1573 z: shift, then 4 coefficients */
-    35, 0, -39149376, -207905392, 645199680,
+    35, 0, -38861904, -208093392, 643550208,
     /* node 1574 x: shift, then 4 coefficients */
-    35, 0, 460067392, -17410724, -284388896,
+    35, 0, 459286080, -17338178, -284070464,
     /* node 1574 y: shift, then 4 coefficients */
-    36, 0, -440830784, 566954560, -24055022,
+    36, 0, -440658880, 567258304, -24846708,
     /* node 1574 z: shift, then 4 coefficients */
-    34, 0, -32426074, -112457416, 415674336,
+    34, 0, -32293412, -112530104, 414782624,
     /* node 1575 x: shift, then 4 coefficients */
-    35, 0, 538854912, -3535644, -355690560,
+    35, 0, 538473216, -3761554, -354793408,
     /* node 1575 y: shift, then 4 coefficients */
-    36, 0, -436013024, 528947840, 71377280,
+    36, 0, -436442304, 529344448, 70550800,
     /* node 1575 z: shift, then 4 coefficients */
-    34, 0, -44945880, -118954904, 487813920,
+    34, 0, -44732900, -119103328, 486934112,
     /* node 1576 x: shift, then 4 coefficients */
-    35, 0, 553188800, 6542265, -378940320,
+    35, 0, 552388224, 6564671, -378536544,
     /* node 1576 y: shift, then 4 coefficients */
-    36, 0, -423684768, 518518496, 85853920,
+    36, 0, -423937536, 518824032, 84967552,
     /* node 1576 z: shift, then 4 coefficients */
-    34, 0, -49787440, -121698272, 512225536,
+    34, 0, -49425556, -121815936, 511206848,
     /* node 1577 x: shift, then 4 coefficients */
-    35, 0, 505397984, -1446091, -343764544,
+    35, 0, 504712416, -1425465, -343141952,
     /* node 1577 y: shift, then 4 coefficients */
-    36, 0, -435263936, 536503392, 62108736,
+    36, 0, -435032160, 536775968, 61306272,
     /* node 1577 z: shift, then 4 coefficients */
-    34, 0, -42664444, -115952792, 465920192,
+    34, 0, -42484516, -116065584, 465105376,
     /* node 1578 x: shift, then 4 coefficients */
-    35, 0, 544657984, -10690273, -355841184,
+    35, 0, 543963520, -10704356, -355294496,
     /* node 1578 y: shift, then 4 coefficients */
-    35, 0, -229050000, 276863200, 41308912,
+    35, 0, -228765680, 276963936, 40714372,
     /* node 1578 z: shift, then 4 coefficients */
-    34, 0, -49400000, -119231456, 492445632,
+    34, 0, -49195332, -119360416, 491577632,
     /* node 1579 x: shift, then 4 coefficients */
-    35, 0, 513841312, -17475280, -324339712,
+    35, 0, 513264032, -17428356, -323801152,
     /* node 1579 y: shift, then 4 coefficients */
-    35, 0, -234775424, 285037408, 22356838,
+    35, 0, -234631968, 285180160, 21874324,
     /* node 1579 z: shift, then 4 coefficients */
-    34, 0, -42486636, -116854384, 459657888,
+    34, 0, -42287952, -116978144, 458887360,
     /* node 1580 x: shift, then 4 coefficients */
-    35, 0, 616598656, -7214719, -399696352,
+    35, 0, 615936576, -7207519, -399295008,
     /* node 1580 y: shift, then 4 coefficients */
-    35, 0, -232967040, 282679328, 46388524,
+    35, 0, -232844240, 282751712, 45950144,
     /* node 1580 z: shift, then 4 coefficients */
-    34, 0, -66804796, -125791208, 558036352,
+    34, 0, -66611628, -125913312, 557139840,
     /* node 1581 x: shift, then 4 coefficients */
-    35, 0, 631248448, 14562611, -427782080,
+    35, 0, 630227776, 14574222, -427328768,
     /* node 1581 y: shift, then 4 coefficients */
-    36, 0, -422265472, 550837248, 52961416,
+    36, 0, -422296224, 551044992, 51675248,
     /* node 1581 z: shift, then 4 coefficients */
-    34, 0, -73549624, -129979080, 599401152,
+    34, 0, -73307232, -130000712, 598275392,
     /* node 1582 x: shift, then 4 coefficients */
-    35, 0, 583638976, -20354158, -368442560,
+    35, 0, 582817728, -20450618, -367963808,
     /* node 1582 y: shift, then 4 coefficients */
-    35, 0, -244391040, 289294848, 48950004,
+    35, 0, -244460176, 289449120, 48281216,
     /* node 1582 z: shift, then 4 coefficients */
-    34, 0, -59910612, -121699128, 519860544,
+    34, 0, -59694600, -121828776, 518958304,
     /* node 1583 x: shift, then 4 coefficients */
-    35, 0, 556748352, -33477214, -335857120,
+    35, 0, 556399680, -33574692, -335297440,
     /* node 1583 y: shift, then 4 coefficients */
-    35, 0, -259387872, 305130752, 44754164,
+    35, 0, -259349344, 305320000, 44331424,
     /* node 1583 z: shift, then 4 coefficients */
-    34, 0, -57013252, -118736112, 486791424,
+    34, 0, -56783916, -118903768, 485863520,
     /* node 1584 x: shift, then 4 coefficients */
-    34, 0, 330992352, 10347360, -221142624,
+    34, 0, 330562880, 10348156, -220874416,
     /* node 1584 y: shift, then 4 coefficients */
-    36, 0, -400635136, 555678720, 4382943,
+    36, 0, -400666400, 556160320, 3379651,
     /* node 1584 z: shift, then 4 coefficients */
-    34, 0, -79703608, -135194944, 635102912,
+    34, 0, -79475224, -135307232, 634060416,
     /* node 1585 x: shift, then 4 coefficients */
-    35, 0, 453816064, -31518484, -255119504,
+    35, 0, 453178176, -31614292, -254727056,
     /* node 1585 y: shift, then 4 coefficients */
-    35, 0, -231767904, 304943776, -28926724,
+    35, 0, -231698368, 305230592, -29323438,
     /* node 1585 z: shift, then 4 coefficients */
-    34, 0, -37100192, -111546496, 404592768,
+    34, 0, -36828708, -111738056, 403833216,
     /* node 1586 x: shift, then 4 coefficients */
-    35, 0, 508969984, -29251704, -307104768,
+    35, 0, 508266080, -29127622, -306831104,
     /* node 1586 y: shift, then 4 coefficients */
-    35, 0, -241101584, 297497248, 19361372,
+    35, 0, -241101344, 297827872, 18917460,
     /* node 1586 z: shift, then 4 coefficients */
-    34, 0, -44892676, -115923744, 451876864,
+    34, 0, -44781428, -116031800, 451006848,
     /* node 1587 x: shift, then 4 coefficients */
-    35, 0, 451644704, -43028272, -237345776,
+    35, 0, 450819584, -43291820, -237024288,
     /* node 1587 y: shift, then 4 coefficients */
-    35, 0, -239960544, 316985792, -30434576,
+    35, 0, -239759952, 317166304, -30811832,
     /* node 1587 z: shift, then 4 coefficients */
-    34, 0, -39295208, -110314584, 397378400,
+    34, 0, -39202028, -110475880, 396531360,
     /* node 1588 x: shift, then 4 coefficients */
-    35, 0, 495418784, -44765524, -273153056,
+    35, 0, 494608000, -44236536, -272868128,
     /* node 1588 y: shift, then 4 coefficients */
-    35, 0, -257250080, 318059104, 17911020,
+    35, 0, -256959872, 318114208, 17558800,
     /* node 1588 z: shift, then 4 coefficients */
-    34, 0, -49906884, -112927616, 434297280,
+    34, 0, -49739020, -113049584, 433388160,
     /* node 1806 x: shift, then 4 coefficients */
-    35, 0, 458338496, 94110032, -286271552,
+    35, 0, 456829568, 94562160, -286045536,
     /* node 1806 y: shift, then 4 coefficients */
-    35, 0, -2886838, 332183488, -719416576,
+    35, 0, -2512908, 332105952, -718904064,
     /* node 1806 z: shift, then 4 coefficients */
-    34, 0, -41504504, -166383872, 790585088,
+    34, 0, -41208892, -166460784, 789488832,
     /* node 1807 x: shift, then 4 coefficients */
-    35, 0, 464544192, 91725192, -283291456,
+    35, 0, 463096064, 92099456, -283222400,
     /* node 1807 y: shift, then 4 coefficients */
-    34, 0, 3254164, 172941104, -377268448,
+    34, 0, 3220515, 172996160, -377050048,
     /* node 1807 z: shift, then 4 coefficients */
-    34, 0, -50194408, -167357280, 810515712,
+    34, 0, -49923264, -167464448, 809332864,
     /* node 1808 x: shift, then 4 coefficients */
-    35, 0, 444662752, 86173328, -260058512,
+    35, 0, 444566624, 86091168, -259855456,
     /* node 1808 y: shift, then 4 coefficients */
-    34, 0, 5780496, 176041744, -402764448,
+    34, 0, 5580606, 176173024, -402645344,
     /* node 1808 z: shift, then 4 coefficients */
-    34, 0, -48267544, -166619136, 799000640,
+    34, 0, -48078100, -166718176, 797782784,
     /* node 1809 x: shift, then 4 coefficients */
-    35, 0, 438464320, 71499744, -223612176,
+    35, 0, 437696224, 71630144, -223489904,
     /* node 1809 y: shift, then 4 coefficients */
-    34, 0, 22555500, 192984880, -466895968,
+    34, 0, 22522376, 193069216, -466630752,
     /* node 1809 z: shift, then 4 coefficients */
-    34, 0, -64855844, -167327312, 822309504,
+    34, 0, -64648472, -167446592, 821088768,
     /* node 1810 x: shift, then 4 coefficients */
-    35, 0, 453292192, 81333248, -254994912,
+    35, 0, 453064256, 81273816, -254951408,
     /* node 1810 y: shift, then 4 coefficients */
-    34, 0, 13410123, 184049968, -425594272,
+    34, 0, 13313305, 184138032, -425433056,
     /* node 1810 z: shift, then 4 coefficients */
-    34, 0, -58764288, -167830496, 822320896,
+    34, 0, -58463804, -167989872, 821065664,
     /* node 1812 x: shift, then 4 coefficients */
-    35, 0, 467313088, 89191224, -279613952,
+    35, 0, 466403264, 89392152, -279306976,
     /* node 1812 y: shift, then 4 coefficients */
-    34, 0, 9753253, 179342096, -395306464,
+    34, 0, 9756614, 179389552, -395142112,
     /* node 1812 z: shift, then 4 coefficients */
-    34, 0, -59172744, -167713920, 827790976,
+    34, 0, -58806548, -167838912, 826645504,
     /* node 1813 x: shift, then 4 coefficients */
-    35, 0, 480900640, 96992160, -310077728,
+    35, 0, 480224704, 97085984, -309848512,
     /* node 1813 y: shift, then 4 coefficients */
-    35, 0, -4671632, 330781216, -677378560,
+    35, 0, -5052750, 330956416, -677192896,
     /* node 1813 z: shift, then 4 coefficients */
-    34, 0, -47104232, -167141600, 805209216,
+    34, 0, -46910156, -167251168, 804056896,
     /* node 1814 x: shift, then 4 coefficients */
-    35, 0, 479167712, 92542136, -294915200,
+    35, 0, 477969344, 92877840, -294719264,
     /* node 1814 y: shift, then 4 coefficients */
-    34, 0, 3939360, 173628336, -369597120,
+    34, 0, 3717292, 173767968, -369416992,
     /* node 1814 z: shift, then 4 coefficients */
-    34, 0, -55048512, -167391968, 821348416,
+    34, 0, -54885672, -167470480, 820092032,
     /* node 1815 x: shift, then 4 coefficients */
-    35, 0, 498264256, 96680984, -317732288,
+    35, 0, 496790816, 96941208, -317660768,
     /* node 1815 y: shift, then 4 coefficients */
-    35, 0, 4899571, 341482784, -684819776,
+    35, 0, 4725928, 341540256, -684537344,
     /* node 1815 z: shift, then 4 coefficients */
-    34, 0, -57819504, -167295072, 827972288,
+    34, 0, -57540228, -167407824, 826720064,
     /* node 1816 x: shift, then 4 coefficients */
-    35, 0, 487608000, 88929544, -287886592,
+    35, 0, 486555264, 89176736, -287570784,
     /* node 1816 y: shift, then 4 coefficients */
-    34, 0, 10961405, 179758656, -386829312,
+    34, 0, 11096025, 179767728, -386702272,
     /* node 1816 z: shift, then 4 coefficients */
-    34, 0, -63773456, -167748496, 839513984,
+    34, 0, -63433464, -167897712, 838300928,
     /* node 1817 x: shift, then 4 coefficients */
-    35, 0, 507659040, 93308832, -311166976,
+    35, 0, 506926592, 93409920, -310912224,
     /* node 1817 y: shift, then 4 coefficients */
-    34, 0, 9011085, 176868960, -359111776,
+    34, 0, 9041525, 176906720, -358969792,
     /* node 1817 z: shift, then 4 coefficients */
-    33, 0, -33612752, -83683376, 423608000,
+    33, 0, -33476696, -83755480, 422988000,
     /* node 1821 x: shift, then 4 coefficients */
-    35, 0, 508491392, 102756280, -346552032,
+    35, 0, 507861408, 102784264, -346331584,
     /* node 1821 y: shift, then 4 coefficients */
-    35, 0, -19637510, 309905088, -556847936,
+    35, 0, -19978724, 310075200, -556849792,
     /* node 1821 z: shift, then 4 coefficients */
-    34, 0, -47460864, -164569600, 793637568,
+    34, 0, -47098672, -164757744, 792466688,
     /* node 1822 x: shift, then 4 coefficients */
-    35, 0, 524619904, 104049088, -362713152,
+    35, 0, 524179840, 103947680, -362750400,
     /* node 1822 y: shift, then 4 coefficients */
-    35, 0, -22074402, 309942368, -521030112,
+    35, 0, -22432560, 310089184, -521117088,
     /* node 1822 z: shift, then 4 coefficients */
-    34, 0, -53211684, -163852064, 800120640,
+    34, 0, -52774632, -164083680, 798977216,
     /* node 1823 x: shift, then 4 coefficients */
-    35, 0, 537373376, 102954240, -375342336,
+    35, 0, 537396864, 102757544, -375156352,
     /* node 1823 y: shift, then 4 coefficients */
-    35, 0, -32697210, 301572800, -468039776,
+    35, 0, -33095192, 301802976, -468055616,
     /* node 1823 z: shift, then 4 coefficients */
-    34, 0, -51598620, -162773984, 788082688,
+    34, 0, -51372224, -162936528, 786965632,
     /* node 1824 x: shift, then 4 coefficients */
-    35, 0, 504008224, 101674480, -338488064,
+    35, 0, 503290528, 101754632, -338262848,
     /* node 1824 y: shift, then 4 coefficients */
-    35, 0, -14409966, 317625440, -591554944,
+    35, 0, -14600964, 317775616, -591387968,
     /* node 1824 z: shift, then 4 coefficients */
-    34, 0, -49271504, -165506144, 801774208,
+    34, 0, -48981028, -165650208, 800578368,
     /* node 1825 x: shift, then 4 coefficients */
-    35, 0, 522377664, 102831456, -355134976,
+    35, 0, 521334112, 103011552, -354957664,
     /* node 1825 y: shift, then 4 coefficients */
-    35, 0, -16381459, 317556864, -554521152,
+    35, 0, -16420930, 317568032, -554489024,
     /* node 1825 z: shift, then 4 coefficients */
-    34, 0, -54597412, -165000912, 809553984,
+    34, 0, -54215504, -165159776, 808395456,
     /* node 1826 x: shift, then 4 coefficients */
-    35, 0, 519772576, 99011120, -335009760,
+    35, 0, 519136032, 99003040, -334911904,
     /* node 1826 y: shift, then 4 coefficients */
-    35, 0, 450322, 337036864, -632985088,
+    35, 0, 315159, 337031328, -632790080,
     /* node 1826 z: shift, then 4 coefficients */
-    34, 0, -60522892, -166587968, 831123648,
+    34, 0, -60300972, -166732432, 829892928,
     /* node 1827 x: shift, then 4 coefficients */
-    35, 0, 551953216, 100369320, -362331584,
+    35, 0, 551752256, 100237464, -362305824,
     /* node 1827 y: shift, then 4 coefficients */
-    35, 0, -15442090, 322858560, -531862976,
+    35, 0, -15580443, 323032032, -531797184,
     /* node 1827 z: shift, then 4 coefficients */
-    34, 0, -62931188, -164133872, 822844544,
+    34, 0, -62658776, -164307568, 821596608,
     /* node 1828 x: shift, then 4 coefficients */
-    35, 0, 562665728, 99566808, -378055520,
+    35, 0, 562895552, 99381576, -377528096,
     /* node 1828 y: shift, then 4 coefficients */
-    35, 0, -26679378, 314432704, -477040992,
+    35, 0, -26933670, 314725472, -476965280,
     /* node 1828 z: shift, then 4 coefficients */
-    34, 0, -63052688, -162562256, 810393856,
+    34, 0, -62480584, -162735280, 809340608,
     /* node 1829 x: shift, then 4 coefficients */
-    35, 0, 543111104, 98689808, -349076640,
+    35, 0, 542070208, 98879336, -348908256,
     /* node 1829 y: shift, then 4 coefficients */
-    35, 0, -6456102, 332439840, -585401216,
+    35, 0, -6593176, 332440416, -585407680,
     /* node 1829 z: shift, then 4 coefficients */
-    34, 0, -62734740, -165893376, 832035456,
+    34, 0, -62567684, -165998848, 830771392,
     /* node 1830 x: shift, then 4 coefficients */
-    35, 0, 576277312, 97814400, -374651616,
+    35, 0, 575601728, 97659200, -374683904,
     /* node 1830 y: shift, then 4 coefficients */
-    35, 0, -13842728, 329414368, -505294624,
+    35, 0, -14035137, 329406176, -505484992,
     /* node 1830 z: shift, then 4 coefficients */
-    34, 0, -71045928, -163434576, 834197184,
+    34, 0, -70679008, -163590016, 833076096,
     /* node 1831 x: shift, then 4 coefficients */
-    35, 0, 570193856, 98215824, -359290944,
+    35, 0, 569665728, 98278120, -359176352,
     /* node 1831 y: shift, then 4 coefficients */
-    35, 0, 995264, 342230112, -569803584,
+    35, 0, 1178540, 342273472, -569784320,
     /* node 1831 z: shift, then 4 coefficients */
-    33, 0, -37587476, -82145232, 426116064,
+    33, 0, -37490816, -82224688, 425451712,
     /* node 1832 x: shift, then 4 coefficients */
-    35, 0, 540639744, 96329904, -338150176,
+    35, 0, 539634176, 96459408, -337974464,
     /* node 1832 y: shift, then 4 coefficients */
-    35, 0, 8678225, 347838816, -641271232,
+    35, 0, 8900017, 347828480, -641036608,
     /* node 1832 z: shift, then 4 coefficients */
-    33, 0, -35612008, -83018360, 426332416,
+    33, 0, -35492588, -83094752, 425688896,
     /* node 1836 x: shift, then 4 coefficients */
-    35, 0, 576573632, 98339080, -388372576,
+    35, 0, 575975296, 98442984, -388035008,
     /* node 1836 y: shift, then 4 coefficients */
-    35, 0, -34754448, 311910656, -434452544,
+    35, 0, -34724604, 312044064, -434440416,
     /* node 1836 z: shift, then 4 coefficients */
-    34, 0, -65176332, -161568144, 804186304,
+    34, 0, -64794540, -161717456, 803000768,
     /* node 1841 x: shift, then 4 coefficients */
-    34, 0, 348296672, 36200184, -211861792,
+    34, 0, 347875168, 35970832, -211666032,
     /* node 1841 y: shift, then 4 coefficients */
-    35, 0, -77754656, 326122656, -261265184,
+    35, 0, -77982672, 325975680, -261556816,
     /* node 1841 z: shift, then 4 coefficients */
-    34, 0, -93324680, -152173280, 790416960,
+    34, 0, -92966856, -152317440, 789191680,
     /* node 1848 x: shift, then 4 coefficients */
-    34, 0, 367652384, 5265750, -229848400,
+    34, 0, 367326912, 5218848, -229627248,
     /* node 1848 y: shift, then 4 coefficients */
-    36, 0, -404439360, 620036864, -28129382,
+    36, 0, -404190272, 619826880, -29169192,
     /* node 1848 z: shift, then 4 coefficients */
-    34, 0, -104839744, -135146640, 683581760,
+    34, 0, -104575480, -135256512, 682520896,
     /* node 1860 x: shift, then 4 coefficients */
-    34, 0, 368022272, -10317263, -223266528,
+    34, 0, 367408224, -10249105, -222911024,
     /* node 1860 y: shift, then 4 coefficients */
-    35, 0, -245312000, 323521344, 29175840,
+    35, 0, -244981632, 323326048, 28762620,
     /* node 1860 z: shift, then 4 coefficients */
-    34, 0, -105448960, -130641736, 657145728,
+    34, 0, -105227568, -130743928, 656044608,
     /* node 1861 x: shift, then 4 coefficients */
-    34, 0, 410232576, -19560476, -228978688,
+    34, 0, 409825984, -19533956, -228773552,
     /* node 1861 y: shift, then 4 coefficients */
-    35, 0, -239816768, 361765760, 8129038,
+    35, 0, -239993824, 361761952, 7417428,
     /* node 1861 z: shift, then 4 coefficients */
-    34, 0, -131815128, -127285776, 705341696,
+    34, 0, -131632144, -127406352, 704207872,
     /* node 1868 x: shift, then 4 coefficients */
-    36, 0, 685836032, -79746232, -277874336,
+    36, 0, 684327936, -80130832, -277210432,
     /* node 1868 y: shift, then 4 coefficients */
-    35, 0, -193807584, 314495712, -116561616,
+    35, 0, -193706336, 314779648, -116824960,
     /* node 1868 z: shift, then 4 coefficients */
-    35, 0, -60790028, -195261120, 619251904,
+    35, 0, -60415224, -195400352, 617636672,
     /* node 1870 x: shift, then 4 coefficients */
-    35, 0, 403006752, -42226420, -193691744,
+    35, 0, 401936832, -42141108, -192895696,
     /* node 1870 y: shift, then 4 coefficients */
-    35, 0, -219034144, 316408160, -64535844,
+    35, 0, -218933376, 316241152, -64938268,
     /* node 1870 z: shift, then 4 coefficients */
-    35, 0, -74791928, -211037680, 723715520,
+    35, 0, -74225568, -211258688, 721476480,
     /* node 1871 x: shift, then 4 coefficients */
-    35, 0, 402465792, -45314736, -188125840,
+    35, 0, 401184160, -45422812, -187046336,
     /* node 1871 y: shift, then 4 coefficients */
-    35, 0, -222966240, 314829024, -48703464,
+    35, 0, -222906928, 314602496, -49036492,
     /* node 1871 z: shift, then 4 coefficients */
-    35, 0, -80766776, -207534464, 716276608,
+    35, 0, -80293560, -207834336, 713873792,
     /* node 1872 x: shift, then 4 coefficients */
-    35, 0, 449902080, -46500356, -230899312,
+    35, 0, 449002848, -46786824, -230343968,
     /* node 1872 y: shift, then 4 coefficients */
-    35, 0, -242907392, 320289792, -19031250,
+    35, 0, -242559344, 319729088, -19616174,
     /* node 1872 z: shift, then 4 coefficients */
-    34, 0, -44285692, -108686616, 396136768,
+    34, 0, -43945948, -108897504, 395085696,
     /* node 1873 x: shift, then 4 coefficients */
-    35, 0, 471813024, -52132300, -241004768,
+    35, 0, 471412480, -51876680, -240850832,
     /* node 1873 y: shift, then 4 coefficients */
-    35, 0, -252363568, 319683232, 9565286,
+    35, 0, -252043008, 320024704, 9312967,
     /* node 1873 z: shift, then 4 coefficients */
-    34, 0, -52059588, -109288736, 413158912,
+    34, 0, -51963656, -109078296, 412425568,
     /* node 1874 x: shift, then 4 coefficients */
-    35, 0, 517464640, -46653580, -293000832,
+    35, 0, 516579488, -46151960, -292623808,
     /* node 1874 y: shift, then 4 coefficients */
-    35, 0, -260185600, 317292320, 38782808,
+    35, 0, -259938480, 317281152, 38286344,
     /* node 1874 z: shift, then 4 coefficients */
-    34, 0, -58124448, -114256216, 454781088,
+    34, 0, -57836432, -114559816, 453622496,
     /* node 1875 x: shift, then 4 coefficients */
-    35, 0, 424897376, -46063768, -207766928,
+    35, 0, 423740000, -46251788, -207029264,
     /* node 1875 y: shift, then 4 coefficients */
-    35, 0, -231485840, 316695616, -32788296,
+    35, 0, -231403280, 316452544, -32950774,
     /* node 1875 z: shift, then 4 coefficients */
-    35, 0, -86398336, -211640064, 754717504,
+    35, 0, -85842136, -211784592, 752494528,
     /* node 1876 x: shift, then 4 coefficients */
-    35, 0, 444150848, -47029896, -225886544,
+    35, 0, 443446976, -46934532, -225422560,
     /* node 1876 y: shift, then 4 coefficients */
-    35, 0, -240342864, 316103072, -9936160,
+    35, 0, -239681120, 315091744, -10190447,
     /* node 1876 z: shift, then 4 coefficients */
-    34, 0, -48311500, -105969704, 393353664,
+    34, 0, -48080960, -105789680, 392195584,
     /* node 1877 x: shift, then 4 coefficients */
-    35, 0, 536700256, -40655104, -309038080,
+    35, 0, 536103264, -40696992, -308628064,
     /* node 1877 y: shift, then 4 coefficients */
-    35, 0, -262996784, 312281376, 32626630,
+    35, 0, -262718528, 312726176, 32218746,
     /* node 1877 z: shift, then 4 coefficients */
-    34, 0, -54373832, -117162216, 465840544,
+    34, 0, -54121160, -117353688, 464945792,
     /* node 1878 x: shift, then 4 coefficients */
-    35, 0, 576399040, -41156576, -338914912,
+    35, 0, 575160960, -40850060, -338588192,
     /* node 1878 y: shift, then 4 coefficients */
-    35, 0, -268327280, 313166016, 55293448,
+    35, 0, -267852400, 313245984, 54678736,
     /* node 1878 z: shift, then 4 coefficients */
-    34, 0, -62785260, -119986072, 499773184,
+    34, 0, -62620076, -120094712, 498753216,
     /* node 1879 x: shift, then 4 coefficients */
-    35, 0, 560741376, -54293788, -316245472,
+    35, 0, 560378944, -54062208, -315869472,
     /* node 1879 y: shift, then 4 coefficients */
-    35, 0, -271017568, 321796704, 59328232,
+    35, 0, -270829280, 321758848, 58883604,
     /* node 1879 z: shift, then 4 coefficients */
-    34, 0, -70541320, -115887432, 488003968,
+    34, 0, -70294944, -116098920, 486925248,
     /* node 1880 x: shift, then 4 coefficients */
-    35, 0, 618792768, -42551052, -369194400,
+    35, 0, 617703744, -42474844, -368548096,
     /* node 1880 y: shift, then 4 coefficients */
-    35, 0, -270903744, 317238208, 68092256,
+    35, 0, -270865856, 317716192, 67361008,
     /* node 1880 z: shift, then 4 coefficients */
-    34, 0, -76403424, -121226680, 537016960,
+    34, 0, -76124088, -121429128, 535738208,
     /* node 1881 x: shift, then 4 coefficients */
-    35, 0, 504295200, -55392028, -265394560,
+    35, 0, 503205472, -54764648, -264521376,
     /* node 1881 y: shift, then 4 coefficients */
-    35, 0, -262050096, 318489952, 37595964,
+    35, 0, -261558592, 317627136, 37389140,
     /* node 1881 z: shift, then 4 coefficients */
-    34, 0, -60395748, -111525336, 440695808,
+    34, 0, -60262396, -111592144, 439499936,
     /* node 1882 x: shift, then 4 coefficients */
-    34, 0, 333298176, -28008478, -190182864,
+    34, 0, 332339328, -27860048, -190254144,
     /* node 1882 y: shift, then 4 coefficients */
-    35, 0, -275536512, 335902208, 75574688,
+    35, 0, -274838464, 335574112, 74897664,
     /* node 1882 z: shift, then 4 coefficients */
-    34, 0, -97693104, -121640184, 580141568,
+    34, 0, -97553896, -121794840, 578649600,
     /* node 1883 x: shift, then 4 coefficients */
-    34, 0, 345742976, -20904934, -207669664,
+    34, 0, 345782336, -21236054, -207229760,
     /* node 1883 y: shift, then 4 coefficients */
-    35, 0, -271028448, 334920864, 67504464,
+    35, 0, -271328576, 334905280, 66797372,
     /* node 1883 z: shift, then 4 coefficients */
-    34, 0, -100185688, -124461248, 610214144,
+    34, 0, -99781936, -124671680, 608862272,
     /* node 1884 x: shift, then 4 coefficients */
-    35, 0, 591061376, -64854140, -322475520,
+    35, 0, 589981312, -64325876, -322093984,
     /* node 1884 y: shift, then 4 coefficients */
-    35, 0, -271928192, 326658848, 77620064,
+    35, 0, -271420864, 326370176, 76856544,
     /* node 1884 z: shift, then 4 coefficients */
-    34, 0, -91410232, -114528920, 521621760,
+    34, 0, -91191784, -114646912, 520137440,
     /* node 1885 x: shift, then 4 coefficients */
-    34, 0, 329860640, -32976178, -180635376,
+    34, 0, 329153536, -33036748, -180604448,
     /* node 1885 y: shift, then 4 coefficients */
-    35, 0, -267776384, 343811520, 81713200,
+    35, 0, -268016560, 344426016, 80861880,
     /* node 1885 z: shift, then 4 coefficients */
-    34, 0, -106334024, -117765128, 578476672,
+    34, 0, -106326384, -118001648, 577044800,
     /* node 1886 x: shift, then 4 coefficients */
-    34, 0, 371315808, -25236324, -215919536,
+    34, 0, 371340416, -25556328, -215446960,
     /* node 1886 y: shift, then 4 coefficients */
-    35, 0, -267041392, 351341280, 60318296,
+    35, 0, -266800192, 351248608, 59853464,
     /* node 1886 z: shift, then 4 coefficients */
-    34, 0, -118651152, -123691208, 645777856,
+    34, 0, -118174560, -123978128, 644764992,
     /* node 1889 x: shift, then 4 coefficients */
-    35, 0, 355204704, -44046832, -144331632,
+    35, 0, 354569696, -44556184, -143887104,
     /* node 1889 y: shift, then 4 coefficients */
-    35, 0, -208106672, 298485376, -59579188,
+    35, 0, -207826560, 298316864, -60123832,
     /* node 1889 z: shift, then 4 coefficients */
-    35, 0, -75251928, -191951616, 634797824,
+    35, 0, -74875936, -192109312, 633050240,
     /* node 1892 x: shift, then 4 coefficients */
-    35, 0, 393563936, -45943852, -178259504,
+    35, 0, 392958560, -45889460, -177849664,
     /* node 1892 y: shift, then 4 coefficients */
-    35, 0, -224877104, 303554368, -32377354,
+    35, 0, -224545248, 303625056, -32598984,
     /* node 1892 z: shift, then 4 coefficients */
-    35, 0, -87630320, -199665008, 701669952,
+    35, 0, -87279824, -199574000, 699604416,
     /* node 1893 x: shift, then 4 coefficients */
-    35, 0, 369214848, -45771256, -158282384,
+    35, 0, 368509600, -46087632, -157764416,
     /* node 1893 y: shift, then 4 coefficients */
-    35, 0, -220659184, 299693376, -25989294,
+    35, 0, -220451872, 299691584, -26403292,
     /* node 1893 z: shift, then 4 coefficients */
-    35, 0, -88156304, -186825328, 655389824,
+    35, 0, -87915072, -186865200, 654148096,
     /* node 1896 x: shift, then 4 coefficients */
-    35, 0, 420405920, -47990340, -203815184,
+    35, 0, 419945312, -48499376, -203264592,
     /* node 1896 y: shift, then 4 coefficients */
-    35, 0, -232705488, 311777248, -23881820,
+    35, 0, -232201424, 311567264, -24349598,
     /* node 1896 z: shift, then 4 coefficients */
-    35, 0, -89754800, -209346144, 746689600,
+    35, 0, -89281000, -209845136, 744563584,
     /* node 1897 x: shift, then 4 coefficients */
-    35, 0, 438318528, -47898432, -218339648,
+    35, 0, 438000128, -48094844, -218035120,
     /* node 1897 y: shift, then 4 coefficients */
-    35, 0, -243022176, 314352704, 602368,
+    35, 0, -242804400, 315553120, 47513,
     /* node 1897 z: shift, then 4 coefficients */
-    34, 0, -52020036, -102758640, 390479232,
+    34, 0, -51848264, -102693952, 389743168,
     /* node 1898 x: shift, then 4 coefficients */
-    35, 0, 423899712, -50677960, -200645728,
+    35, 0, 423089088, -51133164, -199786672,
     /* node 1898 y: shift, then 4 coefficients */
-    35, 0, -242120304, 309192192, 7613323,
+    35, 0, -241620160, 308703712, 6879254,
     /* node 1898 z: shift, then 4 coefficients */
-    35, 0, -104643168, -201875504, 754477440,
+    35, 0, -104148240, -201627824, 751439936,
     /* node 1899 x: shift, then 4 coefficients */
-    35, 0, 466794496, -52558704, -240095408,
+    35, 0, 466129888, -51871936, -239845728,
     /* node 1899 y: shift, then 4 coefficients */
-    35, 0, -254292576, 319298048, 20131610,
+    35, 0, -253841584, 318220576, 19816966,
     /* node 1899 z: shift, then 4 coefficients */
-    34, 0, -55096224, -107152888, 411681024,
+    34, 0, -54938056, -107010992, 410681024,
     /* node 1900 x: shift, then 4 coefficients */
-    35, 0, 457889888, -54285796, -226896784,
+    35, 0, 457917696, -54867724, -227184848,
     /* node 1900 y: shift, then 4 coefficients */
-    35, 0, -252375072, 307325824, 30975324,
+    35, 0, -252544352, 309148576, 30693122,
     /* node 1900 z: shift, then 4 coefficients */
-    34, 0, -59168728, -103559648, 406160704,
+    34, 0, -59142584, -103511496, 405901952,
     /* node 1901 x: shift, then 4 coefficients */
-    35, 0, 386967680, -47715564, -171652192,
+    35, 0, 386732512, -47847620, -171974768,
     /* node 1901 y: shift, then 4 coefficients */
-    36, 0, -463122336, 567089024, 27427132,
+    36, 0, -463415872, 571465088, 26667406,
     /* node 1901 z: shift, then 4 coefficients */
-    35, 0, -104598112, -187991872, 698562240,
+    35, 0, -104409272, -187455376, 697577664,
     /* node 1902 x: shift, then 4 coefficients */
-    35, 0, 434412000, -53227852, -207146304,
+    35, 0, 433457984, -52955068, -206274192,
     /* node 1902 y: shift, then 4 coefficients */
-    35, 0, -245585472, 295881376, 36031912,
+    35, 0, -245438240, 295628160, 36135288,
     /* node 1902 z: shift, then 4 coefficients */
-    34, 0, -60712184, -99113200, 390015424,
+    34, 0, -60607252, -98961256, 388887808,
     /* node 1903 x: shift, then 4 coefficients */
-    35, 0, 523439872, -60303968, -277976960,
+    35, 0, 522732096, -59452204, -277870656,
     /* node 1903 y: shift, then 4 coefficients */
-    35, 0, -263641776, 313542272, 64024284,
+    35, 0, -263114016, 313963232, 63465716,
     /* node 1903 z: shift, then 4 coefficients */
-    34, 0, -76122464, -110407080, 463820736,
+    34, 0, -76016904, -110583136, 462841792,
     /* node 1904 x: shift, then 4 coefficients */
-    35, 0, 474856224, -56387896, -238583120,
+    35, 0, 474631072, -56721616, -238703216,
     /* node 1904 y: shift, then 4 coefficients */
-    35, 0, -254697456, 305347488, 47110120,
+    35, 0, -254615360, 305915520, 46744324,
     /* node 1904 z: shift, then 4 coefficients */
-    34, 0, -65258900, -104997032, 422929600,
+    34, 0, -65118064, -105135536, 422249408,
     /* node 1905 x: shift, then 4 coefficients */
-    35, 0, 557800128, -65849736, -295353184,
+    35, 0, 556746944, -65359112, -295132320,
     /* node 1905 y: shift, then 4 coefficients */
-    35, 0, -264600432, 321752576, 76214840,
+    35, 0, -264185664, 321725280, 75661920,
     /* node 1905 z: shift, then 4 coefficients */
-    34, 0, -85537192, -110392272, 492519008,
+    34, 0, -85319848, -110599456, 491420064,
     /* node 1910 x: shift, then 4 coefficients */
-    35, 0, 389796960, -45516908, -179274464,
+    35, 0, 388857792, -45353616, -178663600,
     /* node 1910 y: shift, then 4 coefficients */
-    36, 0, -445149504, 512750400, 111518584,
+    36, 0, -444423872, 512421184, 110430240,
     /* node 1910 z: shift, then 4 coefficients */
-    35, 0, -126276840, -180053360, 722884032,
+    35, 0, -125803352, -180533120, 721036160,
     /* node 1920 x: shift, then 4 coefficients */
-    35, 0, 353279392, -40027788, -153179664,
+    35, 0, 352740320, -40087576, -152880016,
     /* node 1920 y: shift, then 4 coefficients */
-    36, 0, -411127232, 441656192, 116001512,
+    36, 0, -409572864, 441300320, 113889784,
     /* node 1920 z: shift, then 4 coefficients */
-    35, 0, -124266848, -166692640, 669239040,
+    35, 0, -123636816, -167056320, 667386496,
     /* node 2062 x: shift, then 4 coefficients */
-    35, 0, 434460992, 50469260, -205597072,
+    35, 0, 433773504, 50637376, -205477568,
     /* node 2062 y: shift, then 4 coefficients */
-    34, 0, 54067724, 211895904, -540964416,
+    34, 0, 54008020, 211973904, -540683840,
     /* node 2062 z: shift, then 4 coefficients */
-    33, 0, -51113680, -83635216, 428008000,
+    33, 0, -51003096, -83669264, 427407616,
     /* node 2063 x: shift, then 4 coefficients */
-    35, 0, 471300000, 86204104, -276202848,
+    35, 0, 470624992, 86310120, -275955424,
     /* node 2063 y: shift, then 4 coefficients */
-    34, 0, 14766423, 183115504, -407099808,
+    34, 0, 14843501, 183113216, -406967424,
     /* node 2063 z: shift, then 4 coefficients */
-    34, 0, -65549820, -167799840, 838253184,
+    34, 0, -65190464, -167934000, 837059712,
     /* node 2064 x: shift, then 4 coefficients */
-    35, 0, 504881024, 87586248, -294080448,
+    35, 0, 503645376, 87924112, -293767136,
     /* node 2064 y: shift, then 4 coefficients */
-    34, 0, 17028814, 184509632, -389448224,
+    34, 0, 17071578, 184537328, -389298944,
     /* node 2064 z: shift, then 4 coefficients */
-    33, 0, -37126148, -83683072, 430573728,
+    33, 0, -37002216, -83739416, 429940672,
     /* node 2065 x: shift, then 4 coefficients */
-    35, 0, 479956384, 80851320, -268076416,
+    35, 0, 479612960, 80847088, -268009552,
     /* node 2065 y: shift, then 4 coefficients */
-    34, 0, 20878302, 189295776, -425439040,
+    34, 0, 20837614, 189320656, -425397184,
     /* node 2065 z: shift, then 4 coefficients */
-    33, 0, -36990536, -83938056, 427112480,
+    33, 0, -36859596, -83998968, 426486432,
     /* node 2066 x: shift, then 4 coefficients */
-    35, 0, 509690592, 80055632, -284503168,
+    35, 0, 509209696, 80175752, -284102208,
     /* node 2066 y: shift, then 4 coefficients */
-    34, 0, 28470756, 194399408, -419705696,
+    34, 0, 28475750, 194486288, -419524160,
     /* node 2066 z: shift, then 4 coefficients */
-    33, 0, -45621244, -83164704, 443238112,
+    33, 0, -45378276, -83237968, 442644256,
     /* node 2067 x: shift, then 4 coefficients */
-    35, 0, 497986432, 72007440, -267427456,
+    35, 0, 497081280, 72209624, -267348816,
     /* node 2067 y: shift, then 4 coefficients */
-    34, 0, 38134924, 200623360, -452782336,
+    34, 0, 38167788, 200671120, -452583936,
     /* node 2067 z: shift, then 4 coefficients */
-    33, 0, -50478292, -83002528, 446203616,
+    33, 0, -50383168, -83044152, 445531264,
     /* node 2069 x: shift, then 4 coefficients */
-    35, 0, 526139872, 90972528, -314975136,
+    35, 0, 525152160, 91168096, -314759360,
     /* node 2069 y: shift, then 4 coefficients */
-    34, 0, 13997272, 182002176, -363269760,
+    34, 0, 14044829, 182036528, -363138624,
     /* node 2069 z: shift, then 4 coefficients */
-    33, 0, -38708432, -83362920, 434531840,
+    33, 0, -38538548, -83441600, 433912960,
     /* node 2070 x: shift, then 4 coefficients */
-    35, 0, 580325760, 92367920, -343593312,
+    35, 0, 579174272, 92530720, -343460928,
     /* node 2070 y: shift, then 4 coefficients */
-    35, 0, 29188384, 366071776, -641791040,
+    35, 0, 28935362, 366040224, -641718208,
     /* node 2070 z: shift, then 4 coefficients */
-    33, 0, -44213752, -82014352, 444546912,
+    33, 0, -44024904, -82069536, 443962976,
     /* node 2071 x: shift, then 4 coefficients */
-    34, 0, 317325632, 45940740, -180507968,
+    34, 0, 317523104, 45930180, -180200336,
     /* node 2071 y: shift, then 4 coefficients */
-    35, 0, 24862934, 377975584, -578231488,
+    35, 0, 24726844, 378229920, -578461760,
     /* node 2071 z: shift, then 4 coefficients */
-    33, 0, -52209980, -79109464, 454385984,
+    33, 0, -52021452, -79214944, 453797792,
     /* node 2072 x: shift, then 4 coefficients */
-    35, 0, 575079360, 88688976, -329989184,
+    35, 0, 574291584, 88666224, -329868992,
     /* node 2072 y: shift, then 4 coefficients */
-    34, 0, 22545970, 190598848, -349765760,
+    34, 0, 22625840, 190560816, -349702496,
     /* node 2072 z: shift, then 4 coefficients */
-    33, 0, -49296296, -81412104, 453452192,
+    33, 0, -49406684, -81412864, 452707616,
     /* node 2073 x: shift, then 4 coefficients */
-    35, 0, 538623808, 82148752, -302043776,
+    35, 0, 538093120, 82388704, -301671136,
     /* node 2073 y: shift, then 4 coefficients */
-    34, 0, 28773896, 194817184, -395562208,
+    34, 0, 28941904, 194932320, -395316800,
     /* node 2073 z: shift, then 4 coefficients */
-    33, 0, -48631404, -82477048, 451292160,
+    33, 0, -48337500, -82550896, 450743104,
     /* node 2074 x: shift, then 4 coefficients */
-    35, 0, 606839936, 86583408, -340379392,
+    35, 0, 604150272, 87327120, -340744096,
     /* node 2074 y: shift, then 4 coefficients */
-    34, 0, 22634992, 193686160, -335529664,
+    34, 0, 23096432, 193624816, -335124032,
     /* node 2074 z: shift, then 4 coefficients */
-    33, 0, -54515880, -80122400, 461138016,
+    33, 0, -54463544, -80181656, 460421856,
     /* node 2075 x: shift, then 4 coefficients */
-    34, 0, 357991520, 40867244, -192289728,
+    34, 0, 357673504, 40976640, -192093504,
     /* node 2075 y: shift, then 4 coefficients */
-    35, 0, -5896752, 374066272, -446092992,
+    35, 0, -5984187, 374223712, -446289920,
     /* node 2075 z: shift, then 4 coefficients */
-    33, 0, -53106136, -77079064, 445716480,
+    33, 0, -52976764, -77148760, 445072096,
     /* node 2076 x: shift, then 4 coefficients */
-    34, 0, 341259392, 45571548, -189214768,
+    34, 0, 340376512, 45676344, -189241056,
     /* node 2076 y: shift, then 4 coefficients */
-    35, 0, 14386398, 377436160, -492148832,
+    35, 0, 15199349, 377155584, -491515328,
     /* node 2076 z: shift, then 4 coefficients */
-    33, 0, -54287172, -77628440, 450935552,
+    33, 0, -54245664, -77655744, 450167360,
     /* node 2085 x: shift, then 4 coefficients */
-    34, 0, 513288192, 3376514, -216981888,
+    34, 0, 512904512, 3362012, -216627984,
     /* node 2085 y: shift, then 4 coefficients */
-    35, 0, -98278728, 500258560, -170665328,
+    35, 0, -98656024, 501114560, -170412544,
     /* node 2085 z: shift, then 4 coefficients */
-    33, 0, -75712240, -67652736, 451587680,
+    33, 0, -75598480, -67775840, 451100640,
     /* node 2092 x: shift, then 4 coefficients */
-    34, 0, 421208064, -9616089, -232288368,
+    34, 0, 420933600, -9675833, -231947520,
     /* node 2092 y: shift, then 4 coefficients */
-    35, 0, -207574288, 360297984, -32011738,
+    35, 0, -207614208, 360147008, -32589632,
     /* node 2092 z: shift, then 4 coefficients */
-    34, 0, -133110288, -132906352, 737071936,
+    34, 0, -132760520, -133058536, 735952960,
     /* node 2093 x: shift, then 4 coefficients */
-    34, 0, 437159296, -4481975, -228453632,
+    34, 0, 436716320, -4488696, -228061840,
     /* node 2093 y: shift, then 4 coefficients */
-    35, 0, -186894576, 370105888, -69998096,
+    35, 0, -187055968, 370110720, -70233864,
     /* node 2093 z: shift, then 4 coefficients */
-    34, 0, -127416632, -138100448, 762658176,
+    34, 0, -127306816, -138185008, 761641216,
     /* node 2094 x: shift, then 4 coefficients */
-    34, 0, 474282560, -19544958, -233937232,
+    34, 0, 473387392, -19495962, -233617504,
     /* node 2094 y: shift, then 4 coefficients */
-    35, 0, -185187424, 431772960, -53386656,
+    35, 0, -185345264, 431476096, -53360436,
     /* node 2094 z: shift, then 4 coefficients */
-    33, 0, -78871152, -63119916, 398053472,
+    33, 0, -78830976, -63203436, 397387456,
     /* node 2095 x: shift, then 4 coefficients */
-    34, 0, 440044896, -23416966, -230287664,
+    34, 0, 439697696, -23368664, -229882288,
     /* node 2095 y: shift, then 4 coefficients */
-    35, 0, -225159520, 398363328, -7068586,
+    35, 0, -224658944, 397831744, -7706916,
     /* node 2095 z: shift, then 4 coefficients */
-    34, 0, -147777328, -124960728, 745660544,
+    34, 0, -147439216, -125132872, 744579904,
     /* node 2096 x: shift, then 4 coefficients */
-    34, 0, 406670656, -26124410, -226856976,
+    34, 0, 406167168, -26084692, -226545920,
     /* node 2096 y: shift, then 4 coefficients */
-    35, 0, -248799344, 375494336, 37018076,
+    35, 0, -248395152, 374727264, 36494556,
     /* node 2096 z: shift, then 4 coefficients */
-    34, 0, -139265360, -121343688, 696456960,
+    34, 0, -138954016, -121553192, 694990656,
     /* node 2097 x: shift, then 4 coefficients */
-    34, 0, 493119552, -10511281, -231176608,
+    34, 0, 493046944, -10620301, -230756448,
     /* node 2097 y: shift, then 4 coefficients */
-    35, 0, -145521328, 449575008, -87400112,
+    35, 0, -145339232, 448995136, -88194312,
     /* node 2097 z: shift, then 4 coefficients */
-    33, 0, -79990664, -64421552, 414304832,
+    33, 0, -79837744, -64391172, 413595424,
     /* node 2098 x: shift, then 4 coefficients */
-    34, 0, 482032032, -24366978, -232377168,
+    34, 0, 481308896, -24190326, -232114304,
     /* node 2098 y: shift, then 4 coefficients */
-    35, 0, -198178544, 453356064, -43041320,
+    35, 0, -197939072, 453639840, -43200600,
     /* node 2098 z: shift, then 4 coefficients */
-    33, 0, -83565368, -59869624, 402928000,
+    33, 0, -83529912, -59874212, 402375072,
     /* node 2110 x: shift, then 4 coefficients */
-    35, 0, 714276928, -54871308, -300227008,
+    35, 0, 713258560, -54570504, -299758304,
     /* node 2110 y: shift, then 4 coefficients */
-    36, 0, -273528288, 737506752, 35715336,
+    36, 0, -272218720, 736842752, 35047500,
     /* node 2110 z: shift, then 4 coefficients */
-    34, 0, -153657344, -102223576, 689676992,
+    34, 0, -153372032, -102314064, 688489280,
     /* node 2117 x: shift, then 4 coefficients */
-    35, 0, 442215744, -52725468, -213636816,
+    35, 0, 441570272, -53370588, -213589808,
     /* node 2117 y: shift, then 4 coefficients */
-    35, 0, -236839968, 275773120, 63944420,
+    35, 0, -236025696, 275178720, 62850400,
     /* node 2117 z: shift, then 4 coefficients */
-    34, 0, -68778648, -98997672, 404887776,
+    34, 0, -68653696, -99065008, 403792384,
     /* node 2118 x: shift, then 4 coefficients */
-    35, 0, 467375904, -54627328, -228423600,
+    35, 0, 466591616, -54462696, -228499840,
     /* node 2118 y: shift, then 4 coefficients */
-    35, 0, -238530256, 281883136, 72771720,
+    35, 0, -237863184, 281707104, 71910608,
     /* node 2118 z: shift, then 4 coefficients */
-    34, 0, -76521608, -100304576, 429480000,
+    34, 0, -76410080, -100213480, 428686144,
     /* node 2119 x: shift, then 4 coefficients */
-    35, 0, 516949952, -60488124, -264202912,
+    35, 0, 515830400, -60309244, -263992912,
     /* node 2119 y: shift, then 4 coefficients */
-    35, 0, -237880528, 287559776, 75357760,
+    35, 0, -237300448, 286884512, 74439024,
     /* node 2119 z: shift, then 4 coefficients */
-    34, 0, -89258088, -105213928, 475156032,
+    34, 0, -89010760, -105567512, 474105856,
     /* node 2120 x: shift, then 4 coefficients */
-    35, 0, 562460352, -67182880, -294786752,
+    35, 0, 561078080, -66308448, -294756096,
     /* node 2120 y: shift, then 4 coefficients */
-    35, 0, -249341360, 309222400, 74060272,
+    35, 0, -248824016, 308828992, 73367144,
     /* node 2120 z: shift, then 4 coefficients */
-    34, 0, -96906584, -107996784, 508819520,
+    34, 0, -96638952, -108312128, 507786016,
     /* node 2121 x: shift, then 4 coefficients */
-    35, 0, 587408832, -67746656, -302734784,
+    35, 0, 585562240, -66901524, -302579680,
     /* node 2121 y: shift, then 4 coefficients */
-    35, 0, -243876800, 315478816, 77158688,
+    35, 0, -243226048, 314485568, 76776120,
     /* node 2121 z: shift, then 4 coefficients */
-    34, 0, -107470776, -107644352, 539278336,
+    34, 0, -106967968, -108144464, 538016000,
     /* node 2122 x: shift, then 4 coefficients */
-    35, 0, 546332608, -65564028, -277204448,
+    35, 0, 544971904, -64883200, -276824416,
     /* node 2122 y: shift, then 4 coefficients */
-    35, 0, -238672960, 296263040, 81134864,
+    35, 0, -237918560, 295553184, 80232744,
     /* node 2122 z: shift, then 4 coefficients */
-    34, 0, -100162968, -103455000, 503915200,
+    34, 0, -99760520, -103857192, 502901504,
     /* node 2123 x: shift, then 4 coefficients */
-    35, 0, 558258496, -63598788, -277899360,
+    35, 0, 556942528, -63390828, -277490464,
     /* node 2123 y: shift, then 4 coefficients */
-    35, 0, -221986080, 300845088, 76584896,
+    35, 0, -221466336, 299850784, 75579368,
     /* node 2123 z: shift, then 4 coefficients */
-    34, 0, -108203544, -104086456, 527084320,
+    34, 0, -107670368, -104929176, 525911936,
     /* node 2124 x: shift, then 4 coefficients */
-    35, 0, 633734208, -67850832, -322856000,
+    35, 0, 630464512, -67978752, -322908032,
     /* node 2124 y: shift, then 4 coefficients */
-    35, 0, -231485440, 331619072, 67402432,
+    35, 0, -230134816, 327798144, 66734572,
     /* node 2124 z: shift, then 4 coefficients */
-    34, 0, -120520408, -110428464, 581452224,
+    34, 0, -120227560, -110571440, 578821440,
     /* node 2130 x: shift, then 4 coefficients */
-    35, 0, 378406944, -42172536, -169212112,
+    35, 0, 377440192, -42088144, -168778800,
     /* node 2130 y: shift, then 4 coefficients */
-    36, 0, -410384800, 448716000, 132591712,
+    36, 0, -409699072, 448729248, 130932832,
     /* node 2130 z: shift, then 4 coefficients */
-    35, 0, -138852208, -172650896, 727751680,
+    35, 0, -138437296, -173043024, 725889024,
     /* node 2131 x: shift, then 4 coefficients */
-    35, 0, 426139904, -48216060, -199583280,
+    35, 0, 425059168, -48292676, -199029776,
     /* node 2131 y: shift, then 4 coefficients */
-    36, 0, -420978784, 486431776, 144884416,
+    36, 0, -419954688, 485340544, 143482176,
     /* node 2131 z: shift, then 4 coefficients */
-    34, 0, -78644064, -93706272, 407773600,
+    34, 0, -78378008, -93883000, 406726144,
     /* node 2132 x: shift, then 4 coefficients */
-    35, 0, 502966112, -60673216, -246803440,
+    35, 0, 501653440, -60631360, -246630544,
     /* node 2132 y: shift, then 4 coefficients */
-    35, 0, -224628720, 277850016, 82593560,
+    35, 0, -223868672, 276787488, 81726568,
     /* node 2132 z: shift, then 4 coefficients */
-    34, 0, -95544472, -100577192, 475720000,
+    34, 0, -95366816, -100747272, 474599008,
     /* node 2133 x: shift, then 4 coefficients */
-    35, 0, 431066240, -44210968, -191610432,
+    35, 0, 430079264, -44239156, -191476816,
     /* node 2133 y: shift, then 4 coefficients */
-    36, 0, -386866464, 462590048, 165470864,
+    36, 0, -386109856, 462131968, 163297536,
     /* node 2133 z: shift, then 4 coefficients */
-    34, 0, -89065968, -92237040, 431107488,
+    34, 0, -88939328, -92449848, 430143008,
     /* node 2134 x: shift, then 4 coefficients */
-    35, 0, 465976992, -44863052, -203245840,
+    35, 0, 464616576, -44981212, -202900560,
     /* node 2134 y: shift, then 4 coefficients */
-    36, 0, -353564256, 476424448, 152958032,
+    36, 0, -352327392, 475395520, 151407968,
     /* node 2134 z: shift, then 4 coefficients */
-    34, 0, -97328976, -97455696, 469283264,
+    34, 0, -96942768, -97618048, 468070944,
     /* node 2139 x: shift, then 4 coefficients */
-    36, 0, 711995712, -64498716, -296054560,
+    36, 0, 709911040, -64739340, -295274272,
     /* node 2139 y: shift, then 4 coefficients */
-    36, 0, -350068288, 360386976, 170430128,
+    36, 0, -348904704, 360038816, 168426416,
     /* node 2139 z: shift, then 4 coefficients */
-    35, 0, -153244432, -162844512, 730006272,
+    35, 0, -152832496, -163094112, 727816128,
     /* node 2140 x: shift, then 4 coefficients */
-    35, 0, 398753152, -35734000, -166946416,
+    35, 0, 397715680, -35805788, -166494816,
     /* node 2140 y: shift, then 4 coefficients */
-    36, 0, -332678240, 387221600, 155188320,
+    36, 0, -331482464, 387268832, 153268720,
     /* node 2140 z: shift, then 4 coefficients */
-    34, 0, -87381848, -89209304, 413993344,
+    34, 0, -87108920, -89385496, 412913408,
     /* node 2233 x: shift, then 4 coefficients */
-    35, 0, 379367136, 29378576, -148857680,
+    35, 0, 378765120, 29487062, -148779984,
     /* node 2233 y: shift, then 4 coefficients */
-    34, 0, 71947112, 223762416, -614281216,
+    34, 0, 71838328, 223855936, -613968192,
     /* node 2233 z: shift, then 4 coefficients */
-    33, 0, -53715148, -82783432, 404398336,
+    33, 0, -53592936, -82828336, 403801760,
     /* node 2234 x: shift, then 4 coefficients */
-    35, 0, 398264832, 33882172, -171242512,
+    35, 0, 397577152, 33983584, -171193520,
     /* node 2234 y: shift, then 4 coefficients */
-    34, 0, 70549360, 221853600, -597508736,
+    34, 0, 70497216, 221946336, -597165952,
     /* node 2234 z: shift, then 4 coefficients */
-    33, 0, -55662336, -83597760, 415026144,
+    33, 0, -55523120, -83645544, 414411424,
     /* node 2235 x: shift, then 4 coefficients */
-    36, 0, 719261888, 49946196, -255357920,
+    36, 0, 717773056, 50201768, -255374464,
     /* node 2235 y: shift, then 4 coefficients */
-    34, 0, 69803744, 224970352, -625422592,
+    34, 0, 69729712, 225047280, -625090624,
     /* node 2235 z: shift, then 4 coefficients */
-    34, 0, -100003088, -163890544, 782997248,
+    34, 0, -99816304, -163954304, 781785536,
     /* node 2240 x: shift, then 4 coefficients */
-    35, 0, 459691104, 54973264, -229182560,
+    35, 0, 459156288, 55064316, -229056736,
     /* node 2240 y: shift, then 4 coefficients */
-    34, 0, 54239968, 210948960, -519186688,
+    34, 0, 54169768, 211036608, -518942656,
     /* node 2240 z: shift, then 4 coefficients */
-    33, 0, -54887148, -83904232, 438981760,
+    33, 0, -54758656, -83945856, 438378944,
     /* node 2241 x: shift, then 4 coefficients */
-    35, 0, 414514944, 42178596, -187217136,
+    35, 0, 413834240, 42311104, -187099552,
     /* node 2241 y: shift, then 4 coefficients */
-    34, 0, 65209528, 217909264, -574170944,
+    34, 0, 65138508, 218014544, -573924352,
     /* node 2241 z: shift, then 4 coefficients */
-    33, 0, -55356292, -83795448, 423487232,
+    33, 0, -55229848, -83841416, 422884896,
     /* node 2242 x: shift, then 4 coefficients */
-    35, 0, 441196352, 44274152, -212546640,
+    35, 0, 440543456, 44389824, -212328672,
     /* node 2242 y: shift, then 4 coefficients */
-    34, 0, 68724632, 217688672, -559049536,
+    34, 0, 68658472, 217764640, -558789376,
     /* node 2242 z: shift, then 4 coefficients */
-    33, 0, -61282412, -84253544, 437270720,
+    33, 0, -61126972, -84297368, 436701792,
     /* node 2243 x: shift, then 4 coefficients */
-    35, 0, 541270592, 77391168, -296542080,
+    35, 0, 539514688, 77900336, -296734368,
     /* node 2243 y: shift, then 4 coefficients */
-    34, 0, 36818628, 200078560, -412068704,
+    34, 0, 36772296, 200167904, -411984736,
     /* node 2243 z: shift, then 4 coefficients */
-    33, 0, -54224376, -81975152, 458272256,
+    33, 0, -54184704, -81998640, 457617248,
     /* node 2244 x: shift, then 4 coefficients */
-    35, 0, 526670848, 63191684, -279057472,
+    35, 0, 525610912, 63498024, -278970624,
     /* node 2244 y: shift, then 4 coefficients */
-    34, 0, 51802884, 208208912, -458970016,
+    34, 0, 51838132, 208318528, -458756096,
     /* node 2244 z: shift, then 4 coefficients */
-    33, 0, -63056120, -82536272, 462736320,
+    33, 0, -62900396, -82581464, 462103104,
     /* node 2245 x: shift, then 4 coefficients */
-    35, 0, 487510944, 58683460, -252021168,
+    35, 0, 486732480, 58847420, -251856864,
     /* node 2245 y: shift, then 4 coefficients */
-    34, 0, 53754440, 209401088, -494222624,
+    34, 0, 53791092, 209479776, -493957600,
     /* node 2245 z: shift, then 4 coefficients */
-    33, 0, -58561380, -83659784, 450485056,
+    33, 0, -58400984, -83710880, 449849696,
     /* node 2248 x: shift, then 4 coefficients */
-    35, 0, 571371776, 80374216, -313444416,
+    35, 0, 571997056, 80095240, -312530880,
     /* node 2248 y: shift, then 4 coefficients */
-    34, 0, 30429420, 196980512, -379725376,
+    34, 0, 30096346, 197074736, -379923264,
     /* node 2248 z: shift, then 4 coefficients */
-    33, 0, -54016204, -81418272, 460404576,
+    33, 0, -53443312, -81600016, 459930368,
     /* node 2249 x: shift, then 4 coefficients */
-    35, 0, 599557120, 80180920, -324216096,
+    35, 0, 603091392, 79185568, -322770432,
     /* node 2249 y: shift, then 4 coefficients */
-    34, 0, 32555960, 200423744, -362612480,
+    34, 0, 32299928, 200549056, -362739456,
     /* node 2249 z: shift, then 4 coefficients */
-    33, 0, -58498404, -80273368, 469155776,
+    33, 0, -58213772, -80387376, 468666400,
     /* node 2250 x: shift, then 4 coefficients */
-    35, 0, 575655296, 75700048, -309662816,
+    35, 0, 572251968, 76553584, -310049728,
     /* node 2250 y: shift, then 4 coefficients */
-    34, 0, 35492416, 200523536, -391610816,
+    34, 0, 35580016, 200515728, -391522528,
     /* node 2250 z: shift, then 4 coefficients */
-    33, 0, -57337664, -80991232, 466190144,
+    33, 0, -57336000, -80997840, 465544160,
     /* node 2251 x: shift, then 4 coefficients */
-    35, 0, 629043200, 81482600, -336614976,
+    35, 0, 625883136, 82400824, -337112032,
     /* node 2251 y: shift, then 4 coefficients */
-    34, 0, 29736602, 200873200, -337323200,
+    34, 0, 29615212, 200980560, -337314912,
     /* node 2251 z: shift, then 4 coefficients */
-    33, 0, -57994440, -79376960, 472457312,
+    33, 0, -57912528, -79453072, 471817280,
     /* node 2252 x: shift, then 4 coefficients */
-    35, 0, 557244992, 71216208, -300929152,
+    35, 0, 555394944, 71675160, -301188096,
     /* node 2252 y: shift, then 4 coefficients */
-    34, 0, 42660816, 203964592, -417818656,
+    34, 0, 42716852, 204086656, -417598624,
     /* node 2252 z: shift, then 4 coefficients */
-    33, 0, -61075840, -81447800, 467010944,
+    33, 0, -60967412, -81499072, 466259680,
     /* node 2253 x: shift, then 4 coefficients */
-    34, 0, 317162880, 44577240, -175617968,
+    34, 0, 316785952, 44692328, -175583904,
     /* node 2253 y: shift, then 4 coefficients */
-    35, 0, 44787256, 393516032, -624939328,
+    35, 0, 44575972, 393521376, -624980928,
     /* node 2253 z: shift, then 4 coefficients */
-    33, 0, -56868352, -78829568, 464815808,
+    33, 0, -56680272, -78923768, 464269408,
     /* node 2254 x: shift, then 4 coefficients */
-    35, 0, 627715008, 77863480, -335909472,
+    35, 0, 625766976, 78394072, -336058752,
     /* node 2254 y: shift, then 4 coefficients */
-    34, 0, 33047292, 205176544, -349902112,
+    34, 0, 33391652, 205311712, -349640672,
     /* node 2254 z: shift, then 4 coefficients */
-    33, 0, -63305956, -78783136, 478335936,
+    33, 0, -63073764, -78868048, 477677792,
     /* node 2255 x: shift, then 4 coefficients */
-    35, 0, 601444480, 73479456, -318627616,
+    35, 0, 600750656, 73566944, -318736032,
     /* node 2255 y: shift, then 4 coefficients */
-    34, 0, 39788484, 206464256, -380450560,
+    34, 0, 39890116, 206576528, -380048288,
     /* node 2255 z: shift, then 4 coefficients */
-    33, 0, -64593684, -79911600, 476460992,
+    33, 0, -64747272, -79944376, 475551744,
     /* node 2257 x: shift, then 4 coefficients */
-    34, 0, 333160640, 45763188, -182209488,
+    34, 0, 332581632, 45997292, -181984928,
     /* node 2257 y: shift, then 4 coefficients */
-    35, 0, 46079864, 391513792, -554989888,
+    35, 0, 46386872, 391562336, -554463168,
     /* node 2257 z: shift, then 4 coefficients */
-    33, 0, -57115800, -77496408, 465536672,
+    33, 0, -56856224, -77601176, 464954336,
     /* node 2258 x: shift, then 4 coefficients */
-    34, 0, 367927456, 41927296, -189115856,
+    34, 0, 368048320, 41866112, -188911712,
     /* node 2258 y: shift, then 4 coefficients */
-    35, 0, 13275902, 393593408, -471195872,
+    35, 0, 13066488, 394060064, -471562144,
     /* node 2258 z: shift, then 4 coefficients */
-    33, 0, -60308916, -75411072, 458505152,
+    33, 0, -60123704, -75533048, 457973600,
     /* node 2259 x: shift, then 4 coefficients */
-    34, 0, 360294848, 42655856, -182361632,
+    34, 0, 359771488, 42731872, -182275520,
     /* node 2259 y: shift, then 4 coefficients */
-    35, 0, 33759812, 401234848, -513385696,
+    35, 0, 34062012, 401560576, -513022720,
     /* node 2259 z: shift, then 4 coefficients */
-    33, 0, -57239624, -76335808, 466589760,
+    33, 0, -57041336, -76470336, 466033472,
     /* node 2260 x: shift, then 4 coefficients */
-    34, 0, 325735392, 43532740, -174926256,
+    34, 0, 325334432, 43631356, -174870640,
     /* node 2260 y: shift, then 4 coefficients */
-    34, 0, 28521226, 201614800, -311932768,
+    34, 0, 28715304, 201611872, -311712064,
     /* node 2260 z: shift, then 4 coefficients */
-    33, 0, -58264564, -78111880, 475507104,
+    33, 0, -58313052, -78103008, 474736608,
     /* node 2261 x: shift, then 4 coefficients */
-    34, 0, 350587808, 41911952, -181800624,
+    34, 0, 350078048, 42079024, -181693984,
     /* node 2261 y: shift, then 4 coefficients */
-    35, 0, 45329424, 409665440, -553291584,
+    35, 0, 44970632, 409398240, -553537984,
     /* node 2261 z: shift, then 4 coefficients */
-    33, 0, -60465504, -76124944, 475550016,
+    33, 0, -60296708, -76082976, 475084832,
     /* node 2262 x: shift, then 4 coefficients */
-    34, 0, 354899808, 38056196, -178411440,
+    34, 0, 352881088, 38564216, -179239072,
     /* node 2262 y: shift, then 4 coefficients */
-    35, 0, 64671016, 424956384, -575190400,
+    35, 0, 65444996, 425097888, -574764544,
     /* node 2262 z: shift, then 4 coefficients */
-    33, 0, -66217320, -74387208, 486702592,
+    33, 0, -66435156, -74405120, 485781504,
     /* node 2263 x: shift, then 4 coefficients */
-    34, 0, 399506592, 36015096, -197173600,
+    34, 0, 399289952, 36059084, -196899008,
     /* node 2263 y: shift, then 4 coefficients */
-    35, 0, -16527626, 401427808, -377262976,
+    35, 0, -16582906, 401129472, -377451904,
     /* node 2263 z: shift, then 4 coefficients */
-    33, 0, -56645900, -74390296, 451011232,
+    33, 0, -56504692, -74418056, 450406464,
     /* node 2264 x: shift, then 4 coefficients */
-    34, 0, 383770464, 40604968, -184737392,
+    34, 0, 383573248, 40720384, -184509520,
     /* node 2264 y: shift, then 4 coefficients */
-    35, 0, 33760200, 420162528, -493529760,
+    35, 0, 33781184, 420585632, -493343136,
     /* node 2264 z: shift, then 4 coefficients */
-    33, 0, -59590100, -73987864, 477040640,
+    33, 0, -59452644, -74007432, 476516192,
     /* node 2265 x: shift, then 4 coefficients */
-    34, 0, 403157216, 39809024, -189212832,
+    34, 0, 402895712, 39867696, -188988448,
     /* node 2265 y: shift, then 4 coefficients */
-    35, 0, 35587556, 432418080, -445213312,
+    35, 0, 35341676, 432374112, -444725120,
     /* node 2265 z: shift, then 4 coefficients */
-    33, 0, -61444564, -72771920, 476327296,
+    33, 0, -61300440, -72773584, 475690464,
     /* node 2266 x: shift, then 4 coefficients */
-    34, 0, 385233728, 38710888, -187197968,
+    34, 0, 385717408, 38672544, -186654272,
     /* node 2266 y: shift, then 4 coefficients */
-    35, 0, 50365076, 433174464, -496560992,
+    35, 0, 50691788, 432982368, -496606080,
     /* node 2266 z: shift, then 4 coefficients */
-    33, 0, -65431236, -72648688, 482632512,
+    33, 0, -65120736, -72810752, 481953920,
     /* node 2269 x: shift, then 4 coefficients */
-    34, 0, 468746976, 30823626, -197728448,
+    34, 0, 468416544, 31137220, -197467952,
     /* node 2269 y: shift, then 4 coefficients */
-    35, 0, 24818134, 496273536, -371680640,
+    35, 0, 25873512, 497208608, -371990528,
     /* node 2269 z: shift, then 4 coefficients */
-    33, 0, -70501040, -69712152, 488370112,
+    33, 0, -70463384, -69840192, 487854560,
     /* node 2270 x: shift, then 4 coefficients */
-    34, 0, 521916672, 18860046, -209122176,
+    34, 0, 521669440, 18752100, -208849456,
     /* node 2270 y: shift, then 4 coefficients */
-    35, 0, -555984, 552222208, -296516608,
+    35, 0, -1068753, 552063296, -296300224,
     /* node 2270 z: shift, then 4 coefficients */
-    33, 0, -78145544, -67626352, 490610464,
+    33, 0, -77932168, -67599600, 489892864,
     /* node 2271 x: shift, then 4 coefficients */
-    34, 0, 410475648, 37331548, -189024144,
+    34, 0, 410512640, 37287488, -188800400,
     /* node 2271 y: shift, then 4 coefficients */
-    35, 0, 41743840, 449904800, -454887776,
+    35, 0, 41962312, 450306912, -454900096,
     /* node 2271 z: shift, then 4 coefficients */
-    33, 0, -64712888, -71340176, 485962848,
+    33, 0, -64566404, -71444504, 485285792,
     /* node 2275 x: shift, then 4 coefficients */
-    34, 0, 551171136, -2087175, -220048448,
+    34, 0, 550774144, -2023106, -219827472,
     /* node 2275 y: shift, then 4 coefficients */
-    35, 0, -101156560, 576135616, -148353392,
+    35, 0, -100568152, 576152832, -149015536,
     /* node 2275 z: shift, then 4 coefficients */
-    33, 0, -82755624, -63694736, 473904544,
+    33, 0, -82671512, -63723632, 473196960,
     /* node 2276 x: shift, then 4 coefficients */
-    34, 0, 536964672, -8099092, -222371792,
+    34, 0, 536982592, -8588317, -221927424,
     /* node 2276 y: shift, then 4 coefficients */
-    35, 0, -118865816, 549739840, -123850400,
+    35, 0, -120232376, 551606848, -123059032,
     /* node 2276 z: shift, then 4 coefficients */
-    33, 0, -80194776, -65116192, 455652768,
+    33, 0, -79978448, -65244516, 455404352,
     /* node 2277 x: shift, then 4 coefficients */
-    34, 0, 579570304, 6977692, -213638928,
+    34, 0, 579157568, 6995364, -213223040,
     /* node 2277 y: shift, then 4 coefficients */
-    35, 0, -29825644, 622082112, -245160160,
+    35, 0, -29896126, 622814528, -245162608,
     /* node 2277 z: shift, then 4 coefficients */
-    33, 0, -91012200, -62331976, 513194624,
+    33, 0, -90852704, -62425784, 512686752,
     /* node 2285 x: shift, then 4 coefficients */
-    34, 0, 524745440, -16858314, -227657632,
+    34, 0, 524417920, -16614556, -227334336,
     /* node 2285 y: shift, then 4 coefficients */
-    35, 0, -153167504, 507007680, -91115920,
+    35, 0, -152525872, 507326880, -91885120,
     /* node 2285 z: shift, then 4 coefficients */
-    33, 0, -85568392, -59813096, 434732992,
+    33, 0, -85525976, -59725400, 434238240,
     /* node 2286 x: shift, then 4 coefficients */
-    34, 0, 510968384, -22278162, -220863200,
+    34, 0, 510332352, -22059900, -220565456,
     /* node 2286 y: shift, then 4 coefficients */
-    35, 0, -159046816, 505757344, -48374804,
+    35, 0, -158786288, 505552704, -48661964,
     /* node 2286 z: shift, then 4 coefficients */
-    33, 0, -86032016, -56165852, 429141120,
+    33, 0, -85960656, -56149648, 428478336,
     /* node 2287 x: shift, then 4 coefficients */
-    34, 0, 552739008, -11186783, -215930016,
+    34, 0, 552516352, -11111961, -215347424,
     /* node 2287 y: shift, then 4 coefficients */
-    35, 0, -134799088, 566418880, -95641376,
+    35, 0, -135098864, 566984512, -95738504,
     /* node 2287 z: shift, then 4 coefficients */
-    33, 0, -85698632, -59323400, 458938976,
+    33, 0, -85485544, -59471552, 458454496,
     /* node 2288 x: shift, then 4 coefficients */
-    34, 0, 550463872, -15421488, -210634752,
+    34, 0, 550117696, -15373585, -210249872,
     /* node 2288 y: shift, then 4 coefficients */
-    35, 0, -126205952, 567559936, -82453704,
+    35, 0, -126016768, 567808000, -82462392,
     /* node 2288 z: shift, then 4 coefficients */
-    33, 0, -87261832, -58006552, 455517696,
+    33, 0, -87130568, -58052160, 455005792,
     /* node 2290 x: shift, then 4 coefficients */
-    34, 0, 353381280, -37921652, -183064896,
+    34, 0, 353190304, -38061552, -182574112,
     /* node 2290 y: shift, then 4 coefficients */
-    35, 0, -231232784, 361307968, 56397992,
+    35, 0, -230826864, 361355360, 55365588,
     /* node 2290 z: shift, then 4 coefficients */
-    34, 0, -137941632, -112552384, 643832832,
+    34, 0, -137563392, -112777264, 642751232,
     /* node 2295 x: shift, then 4 coefficients */
-    35, 0, 659441728, -66378524, -307639936,
+    35, 0, 658242816, -65372360, -306680960,
     /* node 2295 y: shift, then 4 coefficients */
-    35, 0, -180949472, 341349376, 50153876,
+    35, 0, -180588528, 342813472, 49623952,
     /* node 2295 z: shift, then 4 coefficients */
-    34, 0, -135889184, -103991280, 630065088,
+    34, 0, -135674192, -103790592, 629452544,
     /* node 2296 x: shift, then 4 coefficients */
-    35, 0, 596310400, -60805476, -277659968,
+    35, 0, 594799616, -60972460, -277243552,
     /* node 2296 y: shift, then 4 coefficients */
-    35, 0, -180013664, 307376608, 62171224,
+    35, 0, -179948256, 308067520, 61271304,
     /* node 2296 z: shift, then 4 coefficients */
-    34, 0, -123812440, -103015632, 578170752,
+    34, 0, -123660104, -102976624, 576945280,
     /* node 2297 x: shift, then 4 coefficients */
-    35, 0, 631095168, -47490564, -253520096,
+    35, 0, 630402816, -46956184, -252338736,
     /* node 2297 y: shift, then 4 coefficients */
-    36, 0, -242101728, 628970880, 51386800,
+    36, 0, -241162432, 629585408, 50285236,
     /* node 2297 z: shift, then 4 coefficients */
-    34, 0, -137811984, -103938744, 630860416,
+    34, 0, -137415376, -103977104, 629967744,
     /* node 2299 x: shift, then 4 coefficients */
-    35, 0, 553049856, -42486448, -216924480,
+    35, 0, 551722304, -42383484, -216782288,
     /* node 2299 y: shift, then 4 coefficients */
-    36, 0, -255574608, 529374560, 78451448,
+    36, 0, -254593776, 529471296, 76893776,
     /* node 2299 z: shift, then 4 coefficients */
-    34, 0, -122327680, -101535072, 565041920,
+    34, 0, -122185760, -101467352, 563790336,
     /* node 2303 x: shift, then 4 coefficients */
-    35, 0, 426960384, -32406638, -159398512,
+    35, 0, 425744736, -32523794, -158993104,
     /* node 2303 y: shift, then 4 coefficients */
-    36, 0, -279483968, 380719840, 126077808,
+    36, 0, -278675424, 380406560, 124007920,
     /* node 2303 z: shift, then 4 coefficients */
-    34, 0, -97854168, -94494712, 456206592,
+    34, 0, -97595728, -94620144, 455054848,
     /* node 2304 x: shift, then 4 coefficients */
-    35, 0, 455551136, -29615130, -155889216,
+    35, 0, 454294112, -29594214, -155517488,
     /* node 2304 y: shift, then 4 coefficients */
-    36, 0, -234928848, 391748128, 99833144,
+    36, 0, -234202352, 391958752, 98668016,
     /* node 2304 z: shift, then 4 coefficients */
-    34, 0, -106339496, -99527256, 489889024,
+    34, 0, -106097960, -99602776, 488688896,
     /* node 2309 x: shift, then 4 coefficients */
-    36, 0, 772554816, -36575508, -206287456,
+    36, 0, 770601088, -36650040, -205139280,
     /* node 2309 y: shift, then 4 coefficients */
-    36, 0, -180670928, 272957408, 95909480,
+    36, 0, -179739088, 273133312, 93956896,
     /* node 2309 z: shift, then 4 coefficients */
-    34, 0, -96827272, -98348104, 445901728,
+    34, 0, -96585104, -98458688, 444686976,
     /* node 2375 x: shift, then 4 coefficients */
-    36, 0, 692858432, 35546932, -232220912,
+    36, 0, 691668544, 35651964, -232070144,
     /* node 2375 y: shift, then 4 coefficients */
-    34, 0, 77371560, 228794576, -643712320,
+    34, 0, 77250888, 228898320, -643375936,
     /* node 2375 z: shift, then 4 coefficients */
-    34, 0, -103780384, -162904256, 765875136,
+    34, 0, -103558080, -163008464, 764648064,
     /* node 2377 x: shift, then 4 coefficients */
-    36, 0, 681874240, 26964282, -228090304,
+    36, 0, 680662272, 27108888, -228137520,
     /* node 2377 y: shift, then 4 coefficients */
-    34, 0, 86043104, 231493424, -655495936,
+    34, 0, 85932368, 231597040, -655140544,
     /* node 2377 z: shift, then 4 coefficients */
-    34, 0, -111071544, -162881008, 759743552,
+    34, 0, -110869672, -162982272, 758555200,
     /* node 2380 x: shift, then 4 coefficients */
-    36, 0, 691305600, 23567328, -241553120,
+    36, 0, 689804672, 23776468, -241277584,
     /* node 2380 y: shift, then 4 coefficients */
-    34, 0, 94533888, 233822128, -660529600,
+    34, 0, 94436000, 233928272, -660243520,
     /* node 2380 z: shift, then 4 coefficients */
-    34, 0, -120291752, -164140624, 764495872,
+    34, 0, -120041232, -164258848, 763257792,
     /* node 2381 x: shift, then 4 coefficients */
-    35, 0, 371652096, 25473764, -142293904,
+    35, 0, 370914016, 25628324, -142299008,
     /* node 2381 y: shift, then 4 coefficients */
-    34, 0, 79239648, 226787984, -628840000,
+    34, 0, 79118064, 226903264, -628512960,
     /* node 2381 z: shift, then 4 coefficients */
-    33, 0, -56635760, -82908592, 401722016,
+    33, 0, -56493080, -82961304, 401093504,
     /* node 2382 x: shift, then 4 coefficients */
-    36, 0, 717348672, 36370484, -262064384,
+    36, 0, 715903808, 36517840, -261965760,
     /* node 2382 y: shift, then 4 coefficients */
-    34, 0, 83582704, 229793104, -643926528,
+    34, 0, 83466760, 229889280, -643624960,
     /* node 2382 z: shift, then 4 coefficients */
-    34, 0, -112864488, -165021136, 782095168,
+    34, 0, -112611776, -165167488, 780913344,
     /* node 2383 x: shift, then 4 coefficients */
-    35, 0, 377278944, 22573416, -150938656,
+    35, 0, 376536928, 22708196, -150876480,
     /* node 2383 y: shift, then 4 coefficients */
-    34, 0, 85685336, 228484112, -634411072,
+    34, 0, 85582680, 228592688, -634106624,
     /* node 2383 z: shift, then 4 coefficients */
-    33, 0, -60424596, -83352032, 404721760,
+    33, 0, -60270760, -83419840, 404081408,
     /* node 2384 x: shift, then 4 coefficients */
-    35, 0, 402494976, 30966464, -177293984,
+    35, 0, 401954912, 31017326, -177221984,
     /* node 2384 y: shift, then 4 coefficients */
-    34, 0, 83391000, 224986080, -610561408,
+    34, 0, 83306648, 225061216, -610365184,
     /* node 2384 z: shift, then 4 coefficients */
-    33, 0, -63589376, -84204952, 421749600,
+    33, 0, -63463612, -84251792, 421168832,
     /* node 2385 x: shift, then 4 coefficients */
-    36, 0, 718222592, 35199532, -269939712,
+    36, 0, 716775616, 35354408, -269856928,
     /* node 2385 y: shift, then 4 coefficients */
-    34, 0, 90571560, 231288848, -649161280,
+    34, 0, 90427472, 231392672, -648829376,
     /* node 2385 z: shift, then 4 coefficients */
-    34, 0, -120972600, -165211184, 786998080,
+    34, 0, -120673976, -165353056, 785776192,
     /* node 2386 x: shift, then 4 coefficients */
-    35, 0, 381753536, 20439128, -157987792,
+    35, 0, 380981536, 20596372, -157868688,
     /* node 2386 y: shift, then 4 coefficients */
-    34, 0, 95881488, 230606896, -639712576,
+    34, 0, 95785504, 230725648, -639515968,
     /* node 2386 z: shift, then 4 coefficients */
-    33, 0, -66487028, -83707352, 407266880,
+    33, 0, -66377300, -83752040, 406665728,
     /* node 2387 x: shift, then 4 coefficients */
-    35, 0, 397000000, 26309548, -173019808,
+    35, 0, 396574336, 26245682, -173334800,
     /* node 2387 y: shift, then 4 coefficients */
-    34, 0, 90857840, 227749584, -622021440,
+    34, 0, 90727160, 227864992, -621738624,
     /* node 2387 z: shift, then 4 coefficients */
-    33, 0, -66728444, -84031496, 417946848,
+    33, 0, -66549000, -84107016, 417275168,
     /* node 2398 x: shift, then 4 coefficients */
-    35, 0, 416614016, 31400318, -189949504,
+    35, 0, 415585472, 31680936, -189565872,
     /* node 2398 y: shift, then 4 coefficients */
-    34, 0, 85615776, 224437408, -602586240,
+    34, 0, 85488312, 224585296, -602238528,
     /* node 2398 z: shift, then 4 coefficients */
-    33, 0, -66927128, -84359584, 427639072,
+    33, 0, -66773344, -84411872, 427012576,
     /* node 2399 x: shift, then 4 coefficients */
-    35, 0, 467425664, 49200584, -235090176,
+    35, 0, 466683680, 49323432, -234942448,
     /* node 2399 y: shift, then 4 coefficients */
-    34, 0, 65519668, 214936960, -532482976,
+    34, 0, 65460656, 215022432, -532299392,
     /* node 2399 z: shift, then 4 coefficients */
-    33, 0, -63358480, -83891800, 447074496,
+    33, 0, -63193712, -83928400, 446509472,
     /* node 2400 x: shift, then 4 coefficients */
-    35, 0, 423284832, 36568404, -195673680,
+    35, 0, 422343040, 36754516, -195621056,
     /* node 2400 y: shift, then 4 coefficients */
-    34, 0, 77650528, 221862992, -587857408,
+    34, 0, 77579912, 221978736, -587569536,
     /* node 2400 z: shift, then 4 coefficients */
-    33, 0, -63571244, -84229312, 430514400,
+    33, 0, -63436768, -84275048, 429900480,
     /* node 2401 x: shift, then 4 coefficients */
-    35, 0, 492915328, 53487388, -257793168,
+    35, 0, 492221536, 53648716, -257572032,
     /* node 2401 y: shift, then 4 coefficients */
-    34, 0, 65305092, 213354624, -503711392,
+    34, 0, 65286312, 213476160, -503466208,
     /* node 2401 z: shift, then 4 coefficients */
-    33, 0, -67613824, -83544000, 456872960,
+    33, 0, -67421752, -83594840, 456268640,
     /* node 2402 x: shift, then 4 coefficients */
-    35, 0, 444974112, 40891892, -216647584,
+    35, 0, 444374720, 40882256, -216992784,
     /* node 2402 y: shift, then 4 coefficients */
-    34, 0, 77051512, 219963536, -566302528,
+    34, 0, 76974960, 220071184, -566052224,
     /* node 2402 z: shift, then 4 coefficients */
-    33, 0, -67294472, -84185360, 441424960,
+    33, 0, -67160008, -84235648, 440796448,
     /* node 2403 x: shift, then 4 coefficients */
-    35, 0, 470594816, 46455288, -236778048,
+    35, 0, 469730784, 46702344, -236304656,
     /* node 2403 y: shift, then 4 coefficients */
-    34, 0, 71293584, 216766400, -536349632,
+    34, 0, 71246536, 216872304, -536283744,
     /* node 2403 z: shift, then 4 coefficients */
-    33, 0, -67867824, -83937632, 449551008,
+    33, 0, -67690368, -83958496, 449076256,
     /* node 2404 x: shift, then 4 coefficients */
-    35, 0, 488034240, 48144056, -253493264,
+    35, 0, 487307808, 48299200, -253235680,
     /* node 2404 y: shift, then 4 coefficients */
-    34, 0, 72391688, 215788432, -519145696,
+    34, 0, 72342848, 215852032, -519070144,
     /* node 2404 z: shift, then 4 coefficients */
-    33, 0, -71549648, -83646688, 455965632,
+    33, 0, -71396248, -83680256, 455407232,
     /* node 2405 x: shift, then 4 coefficients */
-    35, 0, 441872064, 33929996, -213311824,
+    35, 0, 441204320, 34032852, -212717504,
     /* node 2405 y: shift, then 4 coefficients */
-    34, 0, 88525920, 223590352, -582371840,
+    34, 0, 88463208, 223674192, -582158016,
     /* node 2405 z: shift, then 4 coefficients */
-    33, 0, -73253496, -84839624, 439068896,
+    33, 0, -73077648, -84887392, 438551840,
     /* node 2406 x: shift, then 4 coefficients */
-    35, 0, 461296256, 41419340, -228602768,
+    35, 0, 460486912, 41555116, -228902256,
     /* node 2406 y: shift, then 4 coefficients */
-    34, 0, 79505504, 219704768, -553257280,
+    34, 0, 79534768, 219861440, -552595904,
     /* node 2406 z: shift, then 4 coefficients */
-    33, 0, -71182664, -84123864, 447192192,
+    33, 0, -71063424, -84228568, 446227648,
     /* node 2407 x: shift, then 4 coefficients */
-    35, 0, 474577440, 43815716, -239995904,
+    35, 0, 473659200, 43890868, -240262864,
     /* node 2407 y: shift, then 4 coefficients */
-    34, 0, 77473664, 218412832, -540064832,
+    34, 0, 77478768, 218518112, -539553472,
     /* node 2407 z: shift, then 4 coefficients */
-    33, 0, -72408736, -83948976, 452132960,
+    33, 0, -72285880, -84023848, 451256928,
     /* node 2408 x: shift, then 4 coefficients */
-    35, 0, 498319328, 44565936, -259190848,
+    35, 0, 497418272, 44630276, -259799664,
     /* node 2408 y: shift, then 4 coefficients */
-    34, 0, 77616752, 217167344, -517132576,
+    34, 0, 77594768, 217286256, -516818656,
     /* node 2408 z: shift, then 4 coefficients */
-    33, 0, -76493736, -83671320, 458612480,
+    33, 0, -76332360, -83736216, 457773664,
     /* node 2409 x: shift, then 4 coefficients */
-    35, 0, 516530720, 47676888, -269137504,
+    35, 0, 515569664, 47839056, -268696192,
     /* node 2409 y: shift, then 4 coefficients */
-    34, 0, 71779720, 215337280, -496966720,
+    34, 0, 71743024, 215466048, -496771360,
     /* node 2409 z: shift, then 4 coefficients */
-    33, 0, -75719040, -83205248, 463744800,
+    33, 0, -75523728, -83207928, 463215808,
     /* node 2410 x: shift, then 4 coefficients */
-    35, 0, 524967040, 54961220, -274999200,
+    35, 0, 524221536, 55066068, -275061152,
     /* node 2410 y: shift, then 4 coefficients */
-    34, 0, 61298800, 211851776, -478102656,
+    34, 0, 61267576, 211950192, -477998464,
     /* node 2410 z: shift, then 4 coefficients */
-    33, 0, -69533544, -82592688, 464481408,
+    33, 0, -69378872, -82650080, 463788800,
     /* node 2416 x: shift, then 4 coefficients */
-    35, 0, 567714368, 65637304, -305454624,
+    35, 0, 566631424, 65981448, -304915488,
     /* node 2416 y: shift, then 4 coefficients */
-    34, 0, 49949236, 209001840, -419652224,
+    34, 0, 49956208, 209080064, -419687584,
     /* node 2416 z: shift, then 4 coefficients */
-    33, 0, -67448112, -80932128, 473185312,
+    33, 0, -67326552, -80959688, 472622912,
     /* node 2417 x: shift, then 4 coefficients */
-    35, 0, 639496576, 71077792, -340465792,
+    35, 0, 638595136, 71286296, -340255328,
     /* node 2417 y: shift, then 4 coefficients */
-    34, 0, 40051060, 210860336, -350899776,
+    34, 0, 39908268, 210976448, -350936928,
     /* node 2417 z: shift, then 4 coefficients */
-    33, 0, -70298472, -77533552, 484520608,
+    33, 0, -70144240, -77604672, 483948480,
     /* node 2418 x: shift, then 4 coefficients */
-    35, 0, 602004672, 67737536, -318496480,
+    35, 0, 601493504, 67883168, -318191616,
     /* node 2418 y: shift, then 4 coefficients */
-    34, 0, 45768652, 208886240, -390975328,
+    34, 0, 45745128, 209020608, -390863936,
     /* node 2418 z: shift, then 4 coefficients */
-    33, 0, -69275680, -79512088, 478905760,
+    33, 0, -69112952, -79564464, 478275616,
     /* node 2419 x: shift, then 4 coefficients */
-    35, 0, 625578624, 64080812, -330505280,
+    35, 0, 625013440, 64230152, -330241504,
     /* node 2419 y: shift, then 4 coefficients */
-    34, 0, 47694532, 212870752, -376837568,
+    34, 0, 47699780, 212957632, -376615360,
     /* node 2419 z: shift, then 4 coefficients */
-    33, 0, -74709936, -78047960, 485156096,
+    33, 0, -74612632, -78078304, 484592160,
     /* node 2420 x: shift, then 4 coefficients */
-    35, 0, 547729408, 60513848, -293078688,
+    35, 0, 546929152, 60642160, -293319680,
     /* node 2420 y: shift, then 4 coefficients */
-    34, 0, 57827752, 211323952, -447892192,
+    34, 0, 57798936, 211424192, -447651296,
     /* node 2420 z: shift, then 4 coefficients */
-    33, 0, -71700152, -81281776, 471664576,
+    33, 0, -71558112, -81325432, 470970304,
     /* node 2421 x: shift, then 4 coefficients */
-    35, 0, 544318976, 54614068, -291076896,
+    35, 0, 543513152, 54661780, -291246080,
     /* node 2421 y: shift, then 4 coefficients */
-    34, 0, 64738832, 213615680, -460370912,
+    34, 0, 64598516, 213610016, -460365056,
     /* node 2421 z: shift, then 4 coefficients */
-    33, 0, -75304512, -81878128, 470484064,
+    33, 0, -75126304, -81958488, 469773376,
     /* node 2422 x: shift, then 4 coefficients */
-    35, 0, 576580544, 58591544, -307538048,
+    35, 0, 575493952, 58939980, -307328832,
     /* node 2422 y: shift, then 4 coefficients */
-    34, 0, 57453784, 212271072, -425394464,
+    34, 0, 57395476, 212436848, -425342912,
     /* node 2422 z: shift, then 4 coefficients */
-    33, 0, -75023776, -80331216, 477435968,
+    33, 0, -74907688, -80384928, 476791488,
     /* node 2423 x: shift, then 4 coefficients */
-    35, 0, 659672832, 62297460, -347742816,
+    35, 0, 659157632, 62376064, -347445376,
     /* node 2423 y: shift, then 4 coefficients */
-    34, 0, 47693052, 213672256, -354805088,
+    34, 0, 47554492, 213927632, -354830464,
     /* node 2423 z: shift, then 4 coefficients */
-    33, 0, -78758592, -76151200, 490527296,
+    33, 0, -78702232, -76176040, 489905312,
     /* node 2424 x: shift, then 4 coefficients */
-    35, 0, 552960832, 49117356, -294329568,
+    35, 0, 552315072, 49294856, -293960768,
     /* node 2424 y: shift, then 4 coefficients */
-    34, 0, 69022368, 215022752, -459976864,
+    34, 0, 69115960, 215310656, -459937376,
     /* node 2424 z: shift, then 4 coefficients */
-    33, 0, -80030664, -82008960, 472119776,
+    33, 0, -79841736, -82043640, 471574080,
     /* node 2425 x: shift, then 4 coefficients */
-    35, 0, 599551616, 50512264, -321744768,
+    35, 0, 598915968, 50614760, -321731584,
     /* node 2425 y: shift, then 4 coefficients */
-    34, 0, 63902916, 215755760, -418016096,
+    34, 0, 63817800, 215806976, -417790784,
     /* node 2425 z: shift, then 4 coefficients */
-    33, 0, -83169208, -79916040, 481120896,
+    33, 0, -83139232, -79924648, 480410272,
     /* node 2426 x: shift, then 4 coefficients */
-    35, 0, 651249408, 55938692, -342364832,
+    35, 0, 650631424, 56057092, -341918400,
     /* node 2426 y: shift, then 4 coefficients */
-    34, 0, 56694584, 216043520, -372420384,
+    34, 0, 56611964, 216352992, -372677504,
     /* node 2426 z: shift, then 4 coefficients */
-    33, 0, -83700872, -77154808, 490561280,
+    33, 0, -83543696, -77181768, 490038016,
     /* node 2427 x: shift, then 4 coefficients */
-    34, 0, 334535968, 37857320, -177402272,
+    34, 0, 335656832, 37650928, -176565360,
     /* node 2427 y: shift, then 4 coefficients */
-    34, 0, 35764924, 210853024, -317186688,
+    34, 0, 35378720, 210985120, -317223200,
     /* node 2427 z: shift, then 4 coefficients */
-    33, 0, -69149808, -75653616, 485664736,
+    33, 0, -69006200, -75708672, 485035296,
     /* node 2428 x: shift, then 4 coefficients */
-    34, 0, 336541536, 33692868, -176885600,
+    34, 0, 337102368, 33603856, -176214272,
     /* node 2428 y: shift, then 4 coefficients */
-    34, 0, 40801072, 214325760, -330798304,
+    34, 0, 40659960, 214582640, -330888096,
     /* node 2428 z: shift, then 4 coefficients */
-    33, 0, -73544368, -75263288, 491494720,
+    33, 0, -73283888, -75303968, 490989504,
     /* node 2429 x: shift, then 4 coefficients */
-    34, 0, 366079296, 33109112, -183792448,
+    34, 0, 365292320, 33549114, -183934288,
     /* node 2429 y: shift, then 4 coefficients */
-    34, 0, 35812580, 220606368, -293218944,
+    34, 0, 35886008, 220539520, -292941536,
     /* node 2429 z: shift, then 4 coefficients */
-    33, 0, -75169472, -72676520, 496526784,
+    33, 0, -74975240, -72661848, 495941696,
     /* node 2430 x: shift, then 4 coefficients */
-    34, 0, 382282112, 33479102, -181665488,
+    34, 0, 381391488, 33834816, -181883968,
     /* node 2430 y: shift, then 4 coefficients */
-    35, 0, 60545352, 449646080, -557399296,
+    35, 0, 60845512, 449303744, -556388224,
     /* node 2430 z: shift, then 4 coefficients */
-    33, 0, -71726504, -72400256, 498356608,
+    33, 0, -71828736, -72375632, 497615456,
     /* node 2431 x: shift, then 4 coefficients */
-    34, 0, 347469600, 29976444, -178218688,
+    34, 0, 347405504, 29985848, -177872912,
     /* node 2431 y: shift, then 4 coefficients */
-    34, 0, 43148940, 219482304, -330456960,
+    34, 0, 43053656, 219544592, -330402048,
     /* node 2431 z: shift, then 4 coefficients */
-    33, 0, -78837912, -74482864, 495044128,
+    33, 0, -78678592, -74564736, 494518752,
     /* node 2432 x: shift, then 4 coefficients */
-    34, 0, 393715744, 29629946, -186887280,
+    34, 0, 393011200, 29868224, -186926160,
     /* node 2432 y: shift, then 4 coefficients */
-    34, 0, 40115664, 233227920, -271989792,
+    34, 0, 39883424, 233512944, -272078080,
     /* node 2432 z: shift, then 4 coefficients */
-    33, 0, -79028168, -70490848, 505725504,
+    33, 0, -78831304, -70467768, 505147712,
     /* node 2433 x: shift, then 4 coefficients */
-    34, 0, 380852768, 29272398, -186312832,
+    34, 0, 380168800, 29526504, -186331104,
     /* node 2433 y: shift, then 4 coefficients */
-    34, 0, 44537752, 230853664, -289541952,
+    34, 0, 44386144, 231007184, -289495232,
     /* node 2433 z: shift, then 4 coefficients */
-    33, 0, -81663880, -71455064, 504639936,
+    33, 0, -81548728, -71395952, 504014656,
     /* node 2434 x: shift, then 4 coefficients */
-    34, 0, 344856000, 28015398, -176005632,
+    34, 0, 344637792, 28081048, -175825664,
     /* node 2434 y: shift, then 4 coefficients */
-    34, 0, 53456232, 222365360, -345946944,
+    34, 0, 53496016, 222481184, -345801248,
     /* node 2434 z: shift, then 4 coefficients */
-    33, 0, -85364032, -75180616, 496814432,
+    33, 0, -85218824, -75175088, 496266848,
     /* node 2435 x: shift, then 4 coefficients */
-    34, 0, 363082304, 27405428, -186886160,
+    34, 0, 362856416, 27384086, -186652096,
     /* node 2435 y: shift, then 4 coefficients */
-    34, 0, 49172332, 225749568, -316672992,
+    34, 0, 49123680, 225890384, -316615968,
     /* node 2435 z: shift, then 4 coefficients */
-    33, 0, -87538384, -72991408, 502538208,
+    33, 0, -87514232, -72967696, 501947488,
     /* node 2436 x: shift, then 4 coefficients */
-    34, 0, 423040288, 22039318, -193637760,
+    34, 0, 422372960, 22560066, -193923424,
     /* node 2436 y: shift, then 4 coefficients */
-    34, 0, 35754928, 254641088, -269601152,
+    34, 0, 36077704, 253870464, -268359824,
     /* node 2436 z: shift, then 4 coefficients */
-    33, 0, -89492680, -69544168, 516107424,
+    33, 0, -89864096, -69408848, 515326720,
     /* node 2437 x: shift, then 4 coefficients */
-    34, 0, 459313568, 27468652, -200446928,
+    34, 0, 458935200, 27442378, -200116352,
     /* node 2437 y: shift, then 4 coefficients */
-    35, 0, 62796768, 531541312, -457623424,
+    35, 0, 63233084, 532837696, -458849984,
     /* node 2437 z: shift, then 4 coefficients */
-    33, 0, -85891256, -67425408, 517839872,
+    33, 0, -85873520, -67540576, 517368096,
     /* node 2438 x: shift, then 4 coefficients */
-    34, 0, 415787968, 32542256, -192239120,
+    34, 0, 415529632, 32439410, -191971568,
     /* node 2438 y: shift, then 4 coefficients */
-    35, 0, 72077104, 487674080, -490633952,
+    35, 0, 71225664, 488632704, -491893344,
     /* node 2438 z: shift, then 4 coefficients */
-    33, 0, -78682432, -69634200, 506065728,
+    33, 0, -78246128, -69696560, 505594400,
     /* node 2441 x: shift, then 4 coefficients */
-    34, 0, 538915776, 21569328, -210497232,
+    34, 0, 538473408, 21762252, -210450784,
     /* node 2441 y: shift, then 4 coefficients */
-    35, 0, 30307936, 612739008, -343043360,
+    35, 0, 30468224, 613209472, -343307136,
     /* node 2441 z: shift, then 4 coefficients */
-    33, 0, -86851272, -65925472, 518926304,
+    33, 0, -86767024, -66023676, 518274912,
     /* node 2442 x: shift, then 4 coefficients */
-    34, 0, 475073888, 29329378, -196852800,
+    34, 0, 474631040, 29328208, -196692096,
     /* node 2442 y: shift, then 4 coefficients */
-    35, 0, 46066956, 543259840, -413840640,
+    35, 0, 45944696, 541020160, -412295520,
     /* node 2442 z: shift, then 4 coefficients */
-    33, 0, -76844496, -69397704, 509376672,
+    33, 0, -76683024, -69258200, 508292832,
     /* node 2443 x: shift, then 4 coefficients */
-    34, 0, 564773696, 16681964, -210084080,
+    34, 0, 564321536, 16774788, -210105296,
     /* node 2443 y: shift, then 4 coefficients */
-    35, 0, 23050286, 635261248, -361422496,
+    35, 0, 23259246, 634094400, -360788032,
     /* node 2443 z: shift, then 4 coefficients */
-    33, 0, -93214048, -64557008, 528582368,
+    33, 0, -93314904, -64405144, 527735104,
     /* node 2444 x: shift, then 4 coefficients */
-    34, 0, 478584192, 21335694, -204178256,
+    34, 0, 478044512, 21576224, -204122432,
     /* node 2444 y: shift, then 4 coefficients */
-    34, 0, 35749188, 277882720, -240008624,
+    34, 0, 35755616, 277634272, -239689312,
     /* node 2444 z: shift, then 4 coefficients */
-    33, 0, -96437640, -68059640, 521567008,
+    33, 0, -96380720, -68066808, 520925696,
     /* node 2445 x: shift, then 4 coefficients */
-    34, 0, 552222272, 15491305, -211287088,
+    34, 0, 552030912, 15536723, -211175408,
     /* node 2445 y: shift, then 4 coefficients */
-    35, 0, 46569184, 627020928, -398182528,
+    35, 0, 46332144, 628011328, -398155584,
     /* node 2445 z: shift, then 4 coefficients */
-    33, 0, -98902368, -65717224, 529775808,
+    33, 0, -98732368, -65810676, 529189568,
     /* node 2446 x: shift, then 4 coefficients */
-    34, 0, 602684736, 2480675, -211879728,
+    34, 0, 602135616, 2710092, -211837568,
     /* node 2446 y: shift, then 4 coefficients */
-    35, 0, 3754611, 661771072, -254542480,
+    35, 0, 3922702, 661801280, -254473344,
     /* node 2446 z: shift, then 4 coefficients */
-    33, 0, -98060568, -61805896, 524158016,
+    33, 0, -97998256, -61816088, 523405984,
     /* node 2447 x: shift, then 4 coefficients */
-    34, 0, 604400128, -745236, -207395696,
+    34, 0, 603979136, -719409, -207142176,
     /* node 2447 y: shift, then 4 coefficients */
-    35, 0, -23763214, 661476160, -196138720,
+    35, 0, -23417206, 661875648, -195895424,
     /* node 2447 z: shift, then 4 coefficients */
-    33, 0, -97826632, -59008356, 513853088,
+    33, 0, -97781648, -59021140, 513285728,
     /* node 2448 x: shift, then 4 coefficients */
-    34, 0, 590755840, -5591320, -211606624,
+    34, 0, 590378688, -5620573, -211564576,
     /* node 2448 y: shift, then 4 coefficients */
-    35, 0, -56393584, 621080000, -156450400,
+    35, 0, -56614364, 620848896, -156346928,
     /* node 2448 z: shift, then 4 coefficients */
-    33, 0, -94157504, -59898308, 493066016,
+    33, 0, -94059344, -59851844, 492394976,
     /* node 2449 x: shift, then 4 coefficients */
-    34, 0, 588094720, -8585774, -198484016,
+    34, 0, 587614848, -8480565, -198350848,
     /* node 2449 y: shift, then 4 coefficients */
-    35, 0, -61055104, 631505536, -132712752,
+    35, 0, -60674612, 631901632, -132857976,
     /* node 2449 z: shift, then 4 coefficients */
-    33, 0, -94638736, -55563460, 492072320,
+    33, 0, -94596936, -55622020, 491515968,
     /* node 2450 x: shift, then 4 coefficients */
-    34, 0, 559709632, -5543368, -174123776,
+    34, 0, 559275520, -5522755, -173695408,
     /* node 2450 y: shift, then 4 coefficients */
-    35, 0, -25387566, 600376256, -132992144,
+    35, 0, -25357280, 600500416, -133167008,
     /* node 2450 z: shift, then 4 coefficients */
-    33, 0, -89933888, -56895892, 468015968,
+    33, 0, -89764272, -56922680, 467420544,
     /* node 2451 x: shift, then 4 coefficients */
-    34, 0, 609772224, -1083377, -206743200,
+    34, 0, 609416768, -1039612, -206582928,
     /* node 2451 y: shift, then 4 coefficients */
-    35, 0, -5457306, 658505472, -236248176,
+    35, 0, -5219697, 658631744, -236385856,
     /* node 2451 z: shift, then 4 coefficients */
-    33, 0, -101003104, -59713256, 515502080,
+    33, 0, -100916432, -59762340, 514963360,
     /* node 2452 x: shift, then 4 coefficients */
-    34, 0, 593314432, -4086336, -191211408,
+    34, 0, 592885824, -3988831, -190994352,
     /* node 2452 y: shift, then 4 coefficients */
-    35, 0, -16102740, 626455872, -206538384,
+    35, 0, -16080415, 626584832, -206929760,
     /* node 2452 z: shift, then 4 coefficients */
-    33, 0, -97786792, -57179924, 501775488,
+    33, 0, -97642552, -57208048, 501235488,
     /* node 2454 x: shift, then 4 coefficients */
-    34, 0, 423158240, -20537736, -140551680,
+    34, 0, 422775744, -20451356, -140229120,
     /* node 2454 y: shift, then 4 coefficients */
-    35, 0, -90890792, 442556512, -35416108,
+    35, 0, -91018992, 442875008, -36128372,
     /* node 2454 z: shift, then 4 coefficients */
-    34, 0, -161827296, -105039592, 791128512,
+    34, 0, -161424512, -105197440, 790031680,
     /* node 2456 x: shift, then 4 coefficients */
-    35, 0, 597750400, -19406112, -174955632,
+    35, 0, 596689216, -19181306, -174373408,
     /* node 2456 y: shift, then 4 coefficients */
-    36, 0, -124089632, 565488128, -20903044,
+    36, 0, -123607352, 566238848, -21766506,
     /* node 2456 z: shift, then 4 coefficients */
-    34, 0, -130913920, -102713176, 630391424,
+    34, 0, -130744656, -102773304, 629323584,
     /* node 2457 x: shift, then 4 coefficients */
-    35, 0, 548489728, -29212388, -174597376,
+    35, 0, 547853696, -28764964, -173632128,
     /* node 2457 y: shift, then 4 coefficients */
-    36, 0, -170014960, 492421248, 18521558,
+    36, 0, -168829696, 493977344, 17598344,
     /* node 2457 z: shift, then 4 coefficients */
-    34, 0, -124294104, -104967720, 583549184,
+    34, 0, -124025544, -104915120, 582946752,
     /* node 2458 x: shift, then 4 coefficients */
-    35, 0, 481584864, -25153334, -144417392,
+    35, 0, 479742752, -25547500, -144473808,
     /* node 2458 y: shift, then 4 coefficients */
-    36, 0, -164073904, 392846112, 44881792,
+    36, 0, -163864320, 391524256, 42197096,
     /* node 2458 z: shift, then 4 coefficients */
-    34, 0, -112521280, -103682432, 527202944,
+    34, 0, -112275200, -103580008, 525404608,
     /* node 2462 x: shift, then 4 coefficients */
-    35, 0, 444845280, -14808395, -91427264,
+    35, 0, 443577888, -14723576, -90949432,
     /* node 2462 y: shift, then 4 coefficients */
-    37, 0, -194686224, 649744064, 21703228,
+    37, 0, -193232928, 650440512, 19408418,
     /* node 2462 z: shift, then 4 coefficients */
-    34, 0, -107081656, -107099256, 510650016,
+    34, 0, -106908584, -107098104, 509530144,
     /* node 2465 x: shift, then 4 coefficients */
-    36, 0, 671058880, -19816338, -102536712,
+    36, 0, 668728192, -20159966, -101491464,
     /* node 2465 y: shift, then 4 coefficients */
-    37, 0, -250942144, 372272576, 219910640,
+    37, 0, -249744368, 372427904, 215431952,
     /* node 2465 z: shift, then 4 coefficients */
-    34, 0, -88852200, -96629880, 416698016,
+    34, 0, -88707304, -96688360, 415634208,
     /* node 2561 x: shift, then 4 coefficients */
-    36, 0, 670750528, 13419405, -227560000,
+    36, 0, 669574016, 13589444, -227793312,
     /* node 2561 y: shift, then 4 coefficients */
-    34, 0, 102145736, 235968768, -668265280,
+    34, 0, 102065752, 236089696, -667953344,
     /* node 2561 z: shift, then 4 coefficients */
-    34, 0, -123689472, -162604096, 741701824,
+    34, 0, -123473392, -162714608, 740457664,
     /* node 2562 x: shift, then 4 coefficients */
-    36, 0, 724669184, 23051718, -283958560,
+    36, 0, 723222848, 23213022, -283889248,
     /* node 2562 y: shift, then 4 coefficients */
-    34, 0, 104657320, 234115648, -658918272,
+    34, 0, 104486272, 234254928, -658550720,
     /* node 2562 z: shift, then 4 coefficients */
-    33, 0, -67008636, -82971616, 390115904,
+    33, 0, -66879204, -83022280, 389485216,
     /* node 2563 x: shift, then 4 coefficients */
-    36, 0, 727278976, 31199672, -284019488,
+    36, 0, 725976384, 31294780, -284178976,
     /* node 2563 y: shift, then 4 coefficients */
-    34, 0, 97048176, 232160032, -653062912,
+    34, 0, 96985632, 232254896, -652813376,
     /* node 2563 z: shift, then 4 coefficients */
-    33, 0, -63909552, -82974000, 395161696,
+    33, 0, -63784540, -83027240, 394565344,
     /* node 2577 x: shift, then 4 coefficients */
-    36, 0, 666154368, 8837789, -225272016,
+    36, 0, 664885312, 9006858, -225411792,
     /* node 2577 y: shift, then 4 coefficients */
-    34, 0, 105633928, 236893632, -669587840,
+    34, 0, 105554720, 237028256, -669297792,
     /* node 2577 z: shift, then 4 coefficients */
-    34, 0, -124971800, -162116464, 731419328,
+    34, 0, -124733952, -162214624, 730157760,
     /* node 2578 x: shift, then 4 coefficients */
-    36, 0, 697348736, 14349231, -259987456,
+    36, 0, 695615616, 14558380, -259689936,
     /* node 2578 y: shift, then 4 coefficients */
-    34, 0, 108962128, 235811440, -665608704,
+    34, 0, 108866704, 235958720, -665329600,
     /* node 2578 z: shift, then 4 coefficients */
-    34, 0, -133001072, -164505664, 755354176,
+    34, 0, -132786232, -164605936, 754101952,
     /* node 2579 x: shift, then 4 coefficients */
-    36, 0, 684299968, 4707170, -251650016,
+    36, 0, 683394496, 4862708, -252247728,
     /* node 2579 y: shift, then 4 coefficients */
-    34, 0, 116523680, 237487696, -668516096,
+    34, 0, 116427448, 237635696, -668249856,
     /* node 2579 z: shift, then 4 coefficients */
-    34, 0, -135170768, -163155696, 729677824,
+    34, 0, -134983568, -163262416, 728478976,
     /* node 2580 x: shift, then 4 coefficients */
-    36, 0, 648165952, -1572654, -212764272,
+    36, 0, 646744576, -1410448, -212817936,
     /* node 2580 y: shift, then 4 coefficients */
-    34, 0, 112990544, 238554368, -671124352,
+    34, 0, 112886048, 238714432, -670822784,
     /* node 2580 z: shift, then 4 coefficients */
-    34, 0, -126507160, -160179808, 703392256,
+    34, 0, -126295544, -160314304, 702227648,
     /* node 2581 x: shift, then 4 coefficients */
-    36, 0, 646040832, -7464421, -223324032,
+    36, 0, 644147648, -7584808, -222619568,
     /* node 2581 y: shift, then 4 coefficients */
-    34, 0, 123235056, 239519040, -668208768,
+    34, 0, 123109376, 239670944, -667912192,
     /* node 2581 z: shift, then 4 coefficients */
-    34, 0, -131573272, -158981712, 678656320,
+    34, 0, -131372384, -159123696, 677490304,
     /* node 2582 x: shift, then 4 coefficients */
-    36, 0, 734656192, 14695513, -302096352,
+    36, 0, 733041664, 14872502, -301808064,
     /* node 2582 y: shift, then 4 coefficients */
-    34, 0, 121408496, 235705856, -655880384,
+    34, 0, 121176920, 235859360, -655410944,
     /* node 2582 z: shift, then 4 coefficients */
-    33, 0, -74943096, -83367416, 383268800,
+    33, 0, -74799560, -83423008, 382612832,
     /* node 2583 x: shift, then 4 coefficients */
-    35, 0, 410283200, 27029644, -185770160,
+    35, 0, 409482240, 27143704, -185605584,
     /* node 2583 y: shift, then 4 coefficients */
-    34, 0, 93051304, 227148064, -614219200,
+    34, 0, 92888912, 227297040, -613955712,
     /* node 2583 z: shift, then 4 coefficients */
-    33, 0, -69962072, -84548288, 423965536,
+    33, 0, -69757984, -84620608, 423326400,
     /* node 2584 x: shift, then 4 coefficients */
-    35, 0, 376371008, 16498747, -154628768,
+    35, 0, 375654624, 16627710, -154566960,
     /* node 2584 y: shift, then 4 coefficients */
-    34, 0, 103243088, 232406880, -647222528,
+    34, 0, 103079976, 232552656, -646820288,
     /* node 2584 z: shift, then 4 coefficients */
-    33, 0, -69475104, -83632264, 402559776,
+    33, 0, -69319656, -83692128, 401896192,
     /* node 2585 x: shift, then 4 coefficients */
-    35, 0, 394321824, 21172244, -170982032,
+    35, 0, 393264640, 21402408, -170688560,
     /* node 2585 y: shift, then 4 coefficients */
-    34, 0, 98347080, 229836992, -632530752,
+    34, 0, 98191048, 229997232, -632242368,
     /* node 2585 z: shift, then 4 coefficients */
-    33, 0, -69700912, -84183920, 413235104,
+    33, 0, -69546280, -84232976, 412648736,
     /* node 2586 x: shift, then 4 coefficients */
-    35, 0, 415403968, 24901974, -191555456,
+    35, 0, 414929504, 24880202, -191570960,
     /* node 2586 y: shift, then 4 coefficients */
-    34, 0, 99144424, 228030544, -615468352,
+    34, 0, 99099576, 228112352, -615042944,
     /* node 2586 z: shift, then 4 coefficients */
-    33, 0, -74047752, -84711664, 424882496,
+    33, 0, -73932064, -84768632, 424153184,
     /* node 2587 x: shift, then 4 coefficients */
-    35, 0, 399051168, 19436442, -177091888,
+    35, 0, 398321344, 19521872, -176859328,
     /* node 2587 y: shift, then 4 coefficients */
-    34, 0, 105031608, 230654112, -633790848,
+    34, 0, 104970400, 230748480, -633588928,
     /* node 2587 z: shift, then 4 coefficients */
-    33, 0, -73695288, -84547096, 414544864,
+    33, 0, -73577080, -84591512, 413916448,
     /* node 2588 x: shift, then 4 coefficients */
-    35, 0, 420840416, 22810614, -194251312,
+    35, 0, 419758656, 23001326, -193713104,
     /* node 2588 y: shift, then 4 coefficients */
-    34, 0, 105133464, 228903136, -612488256,
+    34, 0, 104924872, 229079520, -612169280,
     /* node 2588 z: shift, then 4 coefficients */
-    33, 0, -78108528, -85082768, 424824512,
+    33, 0, -77960952, -85125104, 424324288,
     /* node 2589 x: shift, then 4 coefficients */
-    35, 0, 396304960, 15201437, -175535264,
+    35, 0, 395375072, 15330618, -175215872,
     /* node 2589 y: shift, then 4 coefficients */
-    34, 0, 112422624, 231822896, -639121344,
+    34, 0, 112271688, 231981184, -638782016,
     /* node 2589 z: shift, then 4 coefficients */
-    33, 0, -76285016, -84778792, 408247008,
+    33, 0, -76183592, -84825080, 407656736,
     /* node 2590 x: shift, then 4 coefficients */
-    35, 0, 378814304, 11616473, -160596944,
+    35, 0, 378171840, 11663573, -160617664,
     /* node 2590 y: shift, then 4 coefficients */
-    34, 0, 113783056, 233980800, -650479168,
+    34, 0, 113763296, 234108512, -650301952,
     /* node 2590 z: shift, then 4 coefficients */
-    33, 0, -73741672, -83886016, 395740512,
+    33, 0, -73674368, -83942072, 395194688,
     /* node 2591 x: shift, then 4 coefficients */
-    35, 0, 413552480, 20192604, -188509072,
+    35, 0, 412802272, 20278020, -188298512,
     /* node 2591 y: shift, then 4 coefficients */
-    34, 0, 109733928, 230112928, -621024960,
+    34, 0, 109549816, 230259904, -620581568,
     /* node 2591 z: shift, then 4 coefficients */
-    33, 0, -79037864, -85008728, 419555296,
+    33, 0, -78938032, -85046632, 418939488,
     /* node 2592 x: shift, then 4 coefficients */
-    35, 0, 425158144, 21545152, -198114768,
+    35, 0, 424352800, 21616570, -197860000,
     /* node 2592 y: shift, then 4 coefficients */
-    34, 0, 108590224, 228892336, -611946880,
+    34, 0, 108470192, 229002880, -611601152,
     /* node 2592 z: shift, then 4 coefficients */
-    33, 0, -80221824, -85257600, 424977856,
+    33, 0, -80129968, -85283080, 424424128,
     /* node 2593 x: shift, then 4 coefficients */
-    35, 0, 385175200, 10429851, -168211824,
+    35, 0, 384459328, 10477700, -168074928,
     /* node 2593 y: shift, then 4 coefficients */
-    34, 0, 120290936, 233991392, -646345856,
+    34, 0, 120021944, 234142128, -645750656,
     /* node 2593 z: shift, then 4 coefficients */
-    33, 0, -77478280, -84230968, 395119904,
+    33, 0, -77343376, -84281264, 394475808,
     /* node 2594 x: shift, then 4 coefficients */
-    35, 0, 402137760, 13952241, -180252528,
+    35, 0, 401211648, 14106383, -179859472,
     /* node 2594 y: shift, then 4 coefficients */
-    34, 0, 118214792, 232477776, -633133568,
+    34, 0, 117979224, 232625088, -632589632,
     /* node 2594 z: shift, then 4 coefficients */
-    33, 0, -79769416, -85168296, 406780928,
+    33, 0, -79634520, -85219536, 406152224,
     /* node 2595 x: shift, then 4 coefficients */
-    35, 0, 451494080, 24194916, -221150576,
+    35, 0, 450410944, 24431360, -220576560,
     /* node 2595 y: shift, then 4 coefficients */
-    34, 0, 108059088, 226586864, -585887424,
+    34, 0, 107993376, 226731680, -585805952,
     /* node 2595 z: shift, then 4 coefficients */
-    33, 0, -85106480, -85514176, 434872992,
+    33, 0, -85111344, -85506208, 434496640,
     /* node 2596 x: shift, then 4 coefficients */
-    35, 0, 434186592, 24831378, -206423472,
+    35, 0, 433261504, 24967264, -205928688,
     /* node 2596 y: shift, then 4 coefficients */
-    34, 0, 103748200, 227245808, -601016128,
+    34, 0, 103621856, 227370288, -600754944,
     /* node 2596 z: shift, then 4 coefficients */
-    33, 0, -79508376, -85289584, 430572448,
+    33, 0, -79340264, -85336880, 429975520,
     /* node 2597 x: shift, then 4 coefficients */
-    35, 0, 468919136, 37660272, -235096832,
+    35, 0, 468176736, 37783472, -234664592,
     /* node 2597 y: shift, then 4 coefficients */
-    34, 0, 85073040, 221065216, -554856704,
+    34, 0, 84939968, 221116080, -554866048,
     /* node 2597 z: shift, then 4 coefficients */
-    33, 0, -75664776, -84530472, 448316032,
+    33, 0, -75431792, -84569888, 447788864,
     /* node 2598 x: shift, then 4 coefficients */
-    35, 0, 523208576, 44844028, -275272320,
+    35, 0, 522349600, 44951628, -275358080,
     /* node 2598 y: shift, then 4 coefficients */
-    34, 0, 76918352, 216987488, -495741024,
+    34, 0, 76944344, 217129392, -495619552,
     /* node 2598 z: shift, then 4 coefficients */
-    33, 0, -80228272, -83244360, 464342304,
+    33, 0, -80103720, -83293848, 463687168,
     /* node 2599 x: shift, then 4 coefficients */
-    35, 0, 427693984, 27102422, -201762704,
+    35, 0, 426920384, 27239848, -201878560,
     /* node 2599 y: shift, then 4 coefficients */
-    34, 0, 97337448, 226804992, -602260288,
+    34, 0, 97293040, 226919152, -601991808,
     /* node 2599 z: shift, then 4 coefficients */
-    33, 0, -75317240, -84888080, 430007424,
+    33, 0, -75209152, -84924608, 429391136,
     /* node 2600 x: shift, then 4 coefficients */
-    35, 0, 498968480, 35342604, -260934848,
+    35, 0, 498145472, 35529832, -260013696,
     /* node 2600 y: shift, then 4 coefficients */
-    34, 0, 90894568, 220811792, -530883424,
+    34, 0, 90764376, 220933216, -530653248,
     /* node 2600 z: shift, then 4 coefficients */
-    33, 0, -84521792, -84306184, 454987328,
+    33, 0, -84362216, -84345400, 454396640,
     /* node 2601 x: shift, then 4 coefficients */
-    35, 0, 448839552, 30932082, -219415344,
+    35, 0, 447894720, 31019582, -219027328,
     /* node 2601 y: shift, then 4 coefficients */
-    34, 0, 94771856, 224555376, -581082112,
+    34, 0, 94634224, 224673760, -580713216,
     /* node 2601 z: shift, then 4 coefficients */
-    33, 0, -77737680, -84962696, 439807200,
+    33, 0, -77583528, -85015640, 439168608,
     /* node 2602 x: shift, then 4 coefficients */
-    35, 0, 456321120, 28524280, -227732576,
+    35, 0, 455583968, 28507276, -227948224,
     /* node 2602 y: shift, then 4 coefficients */
-    34, 0, 100548760, 224813840, -577681152,
+    34, 0, 100461432, 224966640, -577323264,
     /* node 2602 z: shift, then 4 coefficients */
-    33, 0, -82135232, -85126336, 439375232,
+    33, 0, -81947288, -85171016, 438677888,
     /* node 2603 x: shift, then 4 coefficients */
-    35, 0, 468417376, 30729458, -235166320,
+    35, 0, 467780480, 30814154, -235696928,
     /* node 2603 y: shift, then 4 coefficients */
-    34, 0, 99002176, 223496256, -563759424,
+    34, 0, 98995968, 223668912, -563618048,
     /* node 2603 z: shift, then 4 coefficients */
-    33, 0, -83471064, -85100504, 444464768,
+    33, 0, -83407616, -85118296, 443872032,
     /* node 2604 x: shift, then 4 coefficients */
-    35, 0, 489549664, 30580820, -254903824,
+    35, 0, 488373792, 30903958, -254036416,
     /* node 2604 y: shift, then 4 coefficients */
-    34, 0, 98769736, 223110144, -544694208,
+    34, 0, 98594592, 223277456, -544285056,
     /* node 2604 z: shift, then 4 coefficients */
-    33, 0, -88012864, -84785976, 449915296,
+    33, 0, -87846792, -84806528, 449189664,
     /* node 2605 x: shift, then 4 coefficients */
-    35, 0, 463807968, 26897236, -232583872,
+    35, 0, 463299840, 26738888, -232652976,
     /* node 2605 y: shift, then 4 coefficients */
-    34, 0, 106548440, 225190992, -573347904,
+    34, 0, 106443896, 225255248, -573267264,
     /* node 2605 z: shift, then 4 coefficients */
-    33, 0, -86547568, -85510136, 439184000,
+    33, 0, -86423688, -85585120, 438583456,
     /* node 2606 x: shift, then 4 coefficients */
-    35, 0, 485547776, 28032426, -251767056,
+    35, 0, 484506816, 28359830, -251056416,
     /* node 2606 y: shift, then 4 coefficients */
-    34, 0, 103114224, 223724560, -554390144,
+    34, 0, 103046520, 224004192, -554144448,
     /* node 2606 z: shift, then 4 coefficients */
-    33, 0, -89684744, -85296056, 447426304,
+    33, 0, -89598912, -85247384, 446994048,
     /* node 2610 x: shift, then 4 coefficients */
-    35, 0, 527018112, 37391356, -277741664,
+    35, 0, 526299328, 37462992, -277518208,
     /* node 2610 y: shift, then 4 coefficients */
-    34, 0, 86382856, 218970240, -501686464,
+    34, 0, 86360240, 219220176, -501348000,
     /* node 2610 z: shift, then 4 coefficients */
-    33, 0, -87024920, -83584120, 461732320,
+    33, 0, -86902576, -83577224, 461216064,
     /* node 2611 x: shift, then 4 coefficients */
-    35, 0, 560985024, 43254384, -299817184,
+    35, 0, 560302208, 43318100, -299601056,
     /* node 2611 y: shift, then 4 coefficients */
-    34, 0, 75701920, 216752448, -461671328,
+    34, 0, 75696032, 216946864, -461483712,
     /* node 2611 z: shift, then 4 coefficients */
-    33, 0, -86029800, -81977992, 471495968,
+    33, 0, -85935432, -81993616, 470822272,
     /* node 2612 x: shift, then 4 coefficients */
-    35, 0, 506606656, 32117200, -267740096,
+    35, 0, 505816960, 32121112, -267733824,
     /* node 2612 y: shift, then 4 coefficients */
-    34, 0, 96837136, 221333120, -529483648,
+    34, 0, 96750608, 221551424, -529239840,
     /* node 2612 z: shift, then 4 coefficients */
-    33, 0, -89452120, -84610280, 454087616,
+    33, 0, -89326096, -84637424, 453466752,
     /* node 2613 x: shift, then 4 coefficients */
-    35, 0, 513210784, 30083204, -271237216,
+    35, 0, 512433792, 30144344, -271151232,
     /* node 2613 y: shift, then 4 coefficients */
-    34, 0, 99409144, 220586176, -523148384,
+    34, 0, 99313272, 220767872, -522855136,
     /* node 2613 z: shift, then 4 coefficients */
-    33, 0, -92029232, -84583496, 453392192,
+    33, 0, -91912112, -84603968, 452762496,
     /* node 2614 x: shift, then 4 coefficients */
-    35, 0, 546083200, 33970708, -292845888,
+    35, 0, 545439232, 33897480, -292652000,
     /* node 2614 y: shift, then 4 coefficients */
-    34, 0, 90733640, 219528592, -489482912,
+    34, 0, 90722416, 219795648, -489232960,
     /* node 2614 z: shift, then 4 coefficients */
-    33, 0, -92830840, -83630264, 462077312,
+    33, 0, -92659912, -83670096, 461458528,
     /* node 2615 x: shift, then 4 coefficients */
-    35, 0, 499079808, 29774618, -263039280,
+    35, 0, 498165312, 29807356, -262778448,
     /* node 2615 y: shift, then 4 coefficients */
-    34, 0, 101818728, 222405280, -540693952,
+    34, 0, 101768624, 222653888, -540415040,
     /* node 2615 z: shift, then 4 coefficients */
-    33, 0, -91225648, -84966680, 451696640,
+    33, 0, -91156632, -84972264, 451168224,
     /* node 2616 x: shift, then 4 coefficients */
-    35, 0, 605765312, 46738936, -322610528,
+    35, 0, 605313728, 46777548, -322466528,
     /* node 2616 y: shift, then 4 coefficients */
-    34, 0, 69063400, 216716016, -421855040,
+    34, 0, 69113432, 216825632, -421572288,
     /* node 2616 z: shift, then 4 coefficients */
-    33, 0, -88210528, -80167552, 479750368,
+    33, 0, -88149656, -80163792, 479126592,
     /* node 2617 x: shift, then 4 coefficients */
-    35, 0, 583124544, 36950896, -311573216,
+    35, 0, 582519552, 37062196, -311120672,
     /* node 2617 y: shift, then 4 coefficients */
-    34, 0, 80877360, 218184528, -448543744,
+    34, 0, 80976912, 218544352, -448304032,
     /* node 2617 z: shift, then 4 coefficients */
-    33, 0, -93514552, -82094232, 471038880,
+    33, 0, -93399488, -82142312, 470528416,
     /* node 2618 x: shift, then 4 coefficients */
-    35, 0, 610888640, 41852560, -328092352,
+    35, 0, 610561152, 41733208, -327521280,
     /* node 2618 y: shift, then 4 coefficients */
-    34, 0, 74786880, 218135056, -423864832,
+    34, 0, 74696096, 218438304, -423931296,
     /* node 2618 z: shift, then 4 coefficients */
-    33, 0, -93706856, -80567624, 477165440,
+    33, 0, -93564104, -80656432, 476563808,
     /* node 2620 x: shift, then 4 coefficients */
-    35, 0, 660613184, 48706932, -345133344,
+    35, 0, 660049728, 48767436, -345128192,
     /* node 2620 y: shift, then 4 coefficients */
-    34, 0, 58853364, 218663216, -375925024,
+    34, 0, 58811760, 218788896, -375341184,
     /* node 2620 z: shift, then 4 coefficients */
-    33, 0, -88565120, -77527832, 489432128,
+    33, 0, -88650520, -77508840, 488696544,
     /* node 2621 x: shift, then 4 coefficients */
-    34, 0, 362852032, 22926268, -183277408,
+    34, 0, 362588672, 22969062, -183004992,
     /* node 2621 y: shift, then 4 coefficients */
-    34, 0, 54141788, 227471664, -335778880,
+    34, 0, 54188552, 227740720, -335996544,
     /* node 2621 z: shift, then 4 coefficients */
-    33, 0, -91528296, -74373592, 499465088,
+    33, 0, -91336504, -74440648, 499048768,
     /* node 2622 x: shift, then 4 coefficients */
-    34, 0, 399360000, 20914622, -195605152,
+    34, 0, 399212800, 20752816, -195160768,
     /* node 2622 y: shift, then 4 coefficients */
-    34, 0, 45375416, 238368976, -292451232,
+    34, 0, 45275648, 239033968, -292945760,
     /* node 2622 z: shift, then 4 coefficients */
-    33, 0, -94762848, -71385208, 508653056,
+    33, 0, -94497920, -71474032, 507991584,
     /* node 2623 x: shift, then 4 coefficients */
-    35, 0, 652003456, 42635376, -335760416,
+    35, 0, 651597696, 42638624, -334737344,
     /* node 2623 y: shift, then 4 coefficients */
-    34, 0, 66387980, 218662176, -391167264,
+    34, 0, 66341544, 219168096, -391620544,
     /* node 2623 z: shift, then 4 coefficients */
-    33, 0, -94051800, -78925856, 486658080,
+    33, 0, -93811352, -78954920, 486108288,
     /* node 2624 x: shift, then 4 coefficients */
-    34, 0, 345238368, 21244280, -177437184,
+    34, 0, 344962976, 21240174, -177373312,
     /* node 2624 y: shift, then 4 coefficients */
-    34, 0, 63289496, 222343824, -364701664,
+    34, 0, 63150588, 222520816, -364498528,
     /* node 2624 z: shift, then 4 coefficients */
-    33, 0, -96337720, -76717432, 492832448,
+    33, 0, -96186848, -76831672, 492263616,
     /* node 2625 x: shift, then 4 coefficients */
-    34, 0, 369440160, 19186310, -184902320,
+    34, 0, 368972032, 19365914, -184766848,
     /* node 2625 y: shift, then 4 coefficients */
-    34, 0, 59762036, 231193088, -341982560,
+    34, 0, 59759812, 231534512, -342053728,
     /* node 2625 z: shift, then 4 coefficients */
-    33, 0, -98559496, -75047936, 499636800,
+    33, 0, -98361696, -75150248, 499097024,
     /* node 2626 x: shift, then 4 coefficients */
-    35, 0, 657259904, 37059160, -343256736,
+    35, 0, 656843200, 37010568, -342666816,
     /* node 2626 y: shift, then 4 coefficients */
-    34, 0, 72727312, 219261504, -392162656,
+    34, 0, 72671584, 219641424, -392214816,
     /* node 2626 z: shift, then 4 coefficients */
-    33, 0, -98842344, -79396896, 482229792,
+    33, 0, -98658392, -79420960, 481613984,
     /* node 2627 x: shift, then 4 coefficients */
-    34, 0, 361430592, 16574006, -186018560,
+    34, 0, 361073344, 16663623, -185812576,
     /* node 2627 y: shift, then 4 coefficients */
-    34, 0, 65766044, 225753040, -354525984,
+    34, 0, 65642596, 226078688, -354436480,
     /* node 2627 z: shift, then 4 coefficients */
-    33, 0, -103342408, -77183584, 490480832,
+    33, 0, -103209416, -77279208, 489872000,
     /* node 2628 x: shift, then 4 coefficients */
-    35, 0, 612425024, 30558790, -328377856,
+    35, 0, 611446336, 30457794, -328017728,
     /* node 2628 y: shift, then 4 coefficients */
-    34, 0, 86435360, 218592544, -435580096,
+    34, 0, 86477520, 218942176, -435361760,
     /* node 2628 z: shift, then 4 coefficients */
-    33, 0, -100329136, -82088288, 468603424,
+    33, 0, -100230240, -82162096, 467987712,
     /* node 2629 x: shift, then 4 coefficients */
-    34, 0, 368864384, 12819479, -187778160,
+    34, 0, 368517312, 12816711, -187602416,
     /* node 2629 y: shift, then 4 coefficients */
-    34, 0, 71557960, 225243424, -357890912,
+    34, 0, 71530904, 225553296, -358020832,
     /* node 2629 z: shift, then 4 coefficients */
-    33, 0, -107680648, -78431288, 485683200,
+    33, 0, -107587752, -78458424, 485178784,
     /* node 2630 x: shift, then 4 coefficients */
-    34, 0, 399050016, 14588984, -195923392,
+    34, 0, 398772896, 14575967, -195850528,
     /* node 2630 y: shift, then 4 coefficients */
-    34, 0, 60679932, 234742416, -321524544,
+    34, 0, 60678300, 234907920, -321592704,
     /* node 2630 z: shift, then 4 coefficients */
-    33, 0, -106745432, -74682400, 500932672,
+    33, 0, -106677848, -74671456, 500357664,
     /* node 2632 x: shift, then 4 coefficients */
-    34, 0, 483455008, 9853672, -207400048,
+    34, 0, 483071712, 9933637, -207290176,
     /* node 2632 y: shift, then 4 coefficients */
-    34, 0, 48184128, 279170560, -265944352,
+    34, 0, 48293080, 279421056, -265948960,
     /* node 2632 z: shift, then 4 coefficients */
-    33, 0, -111389360, -72828056, 518050336,
+    33, 0, -111309640, -72856480, 517449728,
     /* node 2633 x: shift, then 4 coefficients */
-    34, 0, 543947008, 12902359, -213595328,
+    34, 0, 543469248, 13172374, -213518624,
     /* node 2633 y: shift, then 4 coefficients */
-    34, 0, 43464252, 308175296, -230758496,
+    34, 0, 43532288, 307975808, -230487632,
     /* node 2633 z: shift, then 4 coefficients */
-    33, 0, -111048392, -68276544, 528288064,
+    33, 0, -110976888, -68284496, 527644896,
     /* node 2634 x: shift, then 4 coefficients */
-    34, 0, 444179040, 10075111, -206917312,
+    34, 0, 443948960, 10129093, -206718832,
     /* node 2634 y: shift, then 4 coefficients */
-    34, 0, 58672544, 255587936, -298401472,
+    34, 0, 58630560, 255839920, -298440704,
     /* node 2634 z: shift, then 4 coefficients */
-    33, 0, -115076104, -76025696, 502791168,
+    33, 0, -114917312, -76072056, 502172960,
     /* node 2635 x: shift, then 4 coefficients */
-    34, 0, 502742656, 9001697, -211423136,
+    34, 0, 502405280, 9057672, -211268384,
     /* node 2635 y: shift, then 4 coefficients */
-    34, 0, 48347932, 282056864, -263054800,
+    34, 0, 48336376, 282329952, -263108160,
     /* node 2635 z: shift, then 4 coefficients */
-    33, 0, -116783976, -73613272, 512157376,
+    33, 0, -116653944, -73655984, 511534912,
     /* node 2637 x: shift, then 4 coefficients */
-    34, 0, 572151872, 9673574, -213193712,
+    34, 0, 571857088, 9814710, -213095216,
     /* node 2637 y: shift, then 4 coefficients */
-    34, 0, 34403992, 318743648, -206852240,
+    34, 0, 34294144, 319079008, -206753792,
     /* node 2637 z: shift, then 4 coefficients */
-    33, 0, -109588888, -66179940, 531323456,
+    33, 0, -109382048, -66222640, 530767872,
     /* node 2638 x: shift, then 4 coefficients */
-    34, 0, 553764224, 8522603, -208530576,
+    34, 0, 553343296, 8548470, -208436848,
     /* node 2638 y: shift, then 4 coefficients */
-    34, 0, 45079396, 301754656, -237429424,
+    34, 0, 45111956, 301901152, -237396688,
     /* node 2638 z: shift, then 4 coefficients */
-    33, 0, -115080400, -69920792, 515467008,
+    33, 0, -114969184, -70006176, 514865056,
     /* node 2639 x: shift, then 4 coefficients */
-    34, 0, 587014848, 10325585, -214192704,
+    34, 0, 586622336, 10360956, -214011232,
     /* node 2639 y: shift, then 4 coefficients */
-    35, 0, 37650072, 644682304, -335417152,
+    35, 0, 37983916, 645333376, -336304160,
     /* node 2639 z: shift, then 4 coefficients */
-    33, 0, -103643368, -63149760, 531945984,
+    33, 0, -103504464, -63256104, 531387776,
     /* node 2640 x: shift, then 4 coefficients */
-    34, 0, 599878976, 4750936, -210117392,
+    34, 0, 599356288, 4835584, -210062112,
     /* node 2640 y: shift, then 4 coefficients */
-    35, 0, 25670968, 668973504, -299113536,
+    35, 0, 25821232, 668908224, -298643584,
     /* node 2640 z: shift, then 4 coefficients */
-    33, 0, -102153496, -63423692, 531264928,
+    33, 0, -101999200, -63435044, 530617600,
     /* node 2641 x: shift, then 4 coefficients */
-    34, 0, 583764288, 7057424, -213674000,
+    34, 0, 583322432, 7180348, -213535024,
     /* node 2641 y: shift, then 4 coefficients */
-    35, 0, 49171920, 633636224, -364881344,
+    35, 0, 49401780, 633761088, -365114176,
     /* node 2641 z: shift, then 4 coefficients */
-    33, 0, -110874264, -63954292, 525144704,
+    33, 0, -110738712, -63979764, 524577280,
     /* node 2642 x: shift, then 4 coefficients */
-    34, 0, 603069888, 1349880, -197334688,
+    34, 0, 602664256, 1375868, -197067120,
     /* node 2642 y: shift, then 4 coefficients */
-    35, 0, 12881509, 641689984, -271008896,
+    35, 0, 12878650, 641909184, -271220160,
     /* node 2642 z: shift, then 4 coefficients */
-    33, 0, -104637464, -61704960, 513894240,
+    33, 0, -104521744, -61747236, 513272608,
     /* node 2643 x: shift, then 4 coefficients */
-    34, 0, 492995616, 5433910, -148844784,
+    34, 0, 492485120, 5424014, -148617936,
     /* node 2643 y: shift, then 4 coefficients */
-    35, 0, 109424632, 475599232, -338964288,
+    35, 0, 109222208, 475599840, -338934240,
     /* node 2643 z: shift, then 4 coefficients */
-    33, 0, -98134384, -73684856, 418976384,
+    33, 0, -98031616, -73770400, 418355168,
     /* node 2645 x: shift, then 4 coefficients */
-    35, 0, 826229504, 7555478, -158196800,
+    35, 0, 825253824, 7453606, -157777536,
     /* node 2645 y: shift, then 4 coefficients */
-    35, 0, 60439216, 336782624, -226205312,
+    35, 0, 60078896, 336949408, -227348560,
     /* node 2645 z: shift, then 4 coefficients */
-    34, 0, -142971472, -137743904, 715565504,
+    34, 0, -142582896, -137838144, 713877120,
     /* node 2648 x: shift, then 4 coefficients */
-    35, 0, 813288064, -20787174, -227144400,
+    35, 0, 812088320, -20500790, -226979536,
     /* node 2648 y: shift, then 4 coefficients */
-    36, 0, -54862156, 836375360, -159183264,
+    36, 0, -53401436, 837720448, -159654512,
     /* node 2648 z: shift, then 4 coefficients */
-    34, 0, -145474176, -114264752, 755903872,
+    34, 0, -145742592, -114208104, 754897600,
     /* node 2649 x: shift, then 4 coefficients */
-    35, 0, 805934848, 8993199, -157594240,
+    35, 0, 806136192, 8609721, -155866448,
     /* node 2649 y: shift, then 4 coefficients */
-    35, 0, 41995528, 357859904, -175115088,
+    35, 0, 41248960, 357807456, -175816128,
     /* node 2649 z: shift, then 4 coefficients */
-    34, 0, -138665680, -127003584, 718505600,
+    34, 0, -137787504, -127256680, 717631360,
     /* node 2652 x: shift, then 4 coefficients */
-    35, 0, 621229632, -10647302, -146934160,
+    35, 0, 620063552, -10339747, -146359952,
     /* node 2652 y: shift, then 4 coefficients */
-    36, 0, -47663348, 571995072, -93829928,
+    36, 0, -47686272, 572539776, -94945864,
     /* node 2652 z: shift, then 4 coefficients */
-    34, 0, -125380936, -112722416, 638207616,
+    34, 0, -125184704, -112728592, 637123968,
     /* node 2653 x: shift, then 4 coefficients */
-    35, 0, 510640672, -5952004, -77805824,
+    35, 0, 509345184, -5898916, -77245672,
     /* node 2653 y: shift, then 4 coefficients */
-    37, 0, -24814826, 769393344, -195476960,
+    37, 0, -24290812, 770241600, -199060816,
     /* node 2653 z: shift, then 4 coefficients */
-    34, 0, -106410856, -116833296, 550549952,
+    34, 0, -106177096, -116905968, 549200832,
     /* node 2654 x: shift, then 4 coefficients */
-    35, 0, 683986624, -3397229, -120560880,
+    35, 0, 682862144, -3290640, -119630160,
     /* node 2654 y: shift, then 4 coefficients */
-    36, 0, 39996840, 578094592, -238603168,
+    36, 0, 39886692, 578269696, -240161824,
     /* node 2654 z: shift, then 4 coefficients */
-    34, 0, -121012320, -121714608, 657411904,
+    34, 0, -120719568, -121868880, 656144256,
     /* node 2657 x: shift, then 4 coefficients */
-    36, 0, 675816192, -16316386, -63930984,
+    36, 0, 673348672, -16566732, -63647820,
     /* node 2657 y: shift, then 4 coefficients */
-    37, 0, -171208112, 364250816, 174028624,
+    37, 0, -169837232, 365064064, 167434752,
     /* node 2657 z: shift, then 4 coefficients */
-    34, 0, -88386440, -100919272, 420733344,
+    34, 0, -88137392, -100891216, 419293984,
     /* node 2753 x: shift, then 4 coefficients */
-    36, 0, 672437248, -5420540, -256063264,
+    36, 0, 670884544, -5314320, -255786304,
     /* node 2753 y: shift, then 4 coefficients */
-    34, 0, 132562504, 238861856, -660053312,
+    34, 0, 132516576, 239012336, -659811712,
     /* node 2753 z: shift, then 4 coefficients */
-    34, 0, -141964688, -160469952, 683034560,
+    34, 0, -141754464, -160601504, 681854016,
     /* node 2754 x: shift, then 4 coefficients */
-    36, 0, 714335744, 6940206, -288266848,
+    36, 0, 713030592, 7152864, -288405952,
     /* node 2754 y: shift, then 4 coefficients */
-    34, 0, 125604968, 237014400, -659278976,
+    34, 0, 125478096, 237171200, -658978688,
     /* node 2754 z: shift, then 4 coefficients */
-    34, 0, -147760112, -165069024, 740238016,
+    34, 0, -147516080, -165189744, 738978176,
     /* node 2755 x: shift, then 4 coefficients */
-    35, 0, 375067424, 6304910, -160183680,
+    35, 0, 374375232, 6354144, -160119472,
     /* node 2755 y: shift, then 4 coefficients */
-    34, 0, 127734064, 235389360, -649579520,
+    34, 0, 127731032, 235517456, -649458176,
     /* node 2755 z: shift, then 4 coefficients */
-    33, 0, -78423280, -83711208, 381933664,
+    33, 0, -78328136, -83797280, 381353760,
     /* node 2756 x: shift, then 4 coefficients */
-    36, 0, 723124544, 3266140, -303954176,
+    36, 0, 721698624, 3483259, -304040384,
     /* node 2756 y: shift, then 4 coefficients */
-    34, 0, 135308672, 236929536, -652023360,
+    34, 0, 135247120, 237126752, -651837504,
     /* node 2756 z: shift, then 4 coefficients */
-    34, 0, -153972608, -164755232, 720141888,
+    34, 0, -153750800, -164885712, 718864384,
     /* node 2757 x: shift, then 4 coefficients */
-    35, 0, 391322016, 7157430, -175916368,
+    35, 0, 390503680, 7234596, -175661584,
     /* node 2757 y: shift, then 4 coefficients */
-    34, 0, 132851392, 233830384, -636308864,
+    34, 0, 132739312, 233958304, -636057024,
     /* node 2757 z: shift, then 4 coefficients */
-    33, 0, -83088296, -84583672, 385586048,
+    33, 0, -82978408, -84648832, 384976960,
     /* node 2758 x: shift, then 4 coefficients */
-    36, 0, 687220864, -5338122, -284845728,
+    36, 0, 685724736, -5195638, -284597216,
     /* node 2758 y: shift, then 4 coefficients */
-    34, 0, 146011888, 237966784, -649347776,
+    34, 0, 145959616, 238093808, -649026112,
     /* node 2758 z: shift, then 4 coefficients */
-    34, 0, -150239104, -160130672, 661348224,
+    34, 0, -150022368, -160229232, 660150208,
     /* node 2759 x: shift, then 4 coefficients */
-    35, 0, 387546496, 3542048, -173328176,
+    35, 0, 386851712, 3519555, -173204576,
     /* node 2759 y: shift, then 4 coefficients */
-    34, 0, 142890736, 233481360, -630155456,
+    34, 0, 142793392, 233565216, -629820160,
     /* node 2759 z: shift, then 4 coefficients */
-    34, 0, -169399280, -167763296, 736047872,
+    34, 0, -169116128, -167837488, 734646016,
     /* node 2760 x: shift, then 4 coefficients */
-    35, 0, 421092512, 18306848, -197178608,
+    35, 0, 420440448, 18386306, -197316512,
     /* node 2760 y: shift, then 4 coefficients */
-    34, 0, 115921848, 230263824, -616005504,
+    34, 0, 115749816, 230434560, -615718656,
     /* node 2760 z: shift, then 4 coefficients */
-    33, 0, -82748024, -85427656, 418656064,
+    33, 0, -82593704, -85491232, 418075040,
     /* node 2761 x: shift, then 4 coefficients */
-    35, 0, 416056800, 15097520, -192309216,
+    35, 0, 415312960, 15227859, -192355520,
     /* node 2761 y: shift, then 4 coefficients */
-    34, 0, 120173848, 231115440, -621724992,
+    34, 0, 120134000, 231278624, -621526272,
     /* node 2761 z: shift, then 4 coefficients */
-    33, 0, -83339000, -85391400, 411942304,
+    33, 0, -83243352, -85451496, 411409056,
     /* node 2762 x: shift, then 4 coefficients */
-    35, 0, 432432896, 19513146, -208143552,
+    35, 0, 431828672, 19571296, -208090096,
     /* node 2762 y: shift, then 4 coefficients */
-    34, 0, 114946608, 228682224, -607104896,
+    34, 0, 114810080, 228874624, -606798976,
     /* node 2762 z: shift, then 4 coefficients */
-    33, 0, -84110288, -85759752, 423927552,
+    33, 0, -83955568, -85816736, 423307104,
     /* node 2763 x: shift, then 4 coefficients */
-    35, 0, 449213760, 20042038, -218907504,
+    35, 0, 448439040, 20017320, -218772416,
     /* node 2763 y: shift, then 4 coefficients */
-    34, 0, 116009584, 227802944, -592792768,
+    34, 0, 115950328, 228004608, -592149696,
     /* node 2763 z: shift, then 4 coefficients */
-    33, 0, -87906656, -86094528, 428631328,
+    33, 0, -87724344, -86104712, 427893856,
     /* node 2764 x: shift, then 4 coefficients */
-    35, 0, 405800256, 10654555, -187461760,
+    35, 0, 405027680, 10744542, -187361248,
     /* node 2764 y: shift, then 4 coefficients */
-    34, 0, 128310008, 232665632, -629835072,
+    34, 0, 128199320, 232813312, -629533568,
     /* node 2764 z: shift, then 4 coefficients */
-    33, 0, -84219040, -85198400, 398647456,
+    33, 0, -84119096, -85242576, 398072960,
     /* node 2765 x: shift, then 4 coefficients */
-    35, 0, 432011456, 16474433, -208647520,
+    35, 0, 431245248, 16471918, -208470144,
     /* node 2765 y: shift, then 4 coefficients */
-    34, 0, 121428800, 229772608, -609370496,
+    34, 0, 121291592, 229953344, -608846656,
     /* node 2765 z: shift, then 4 coefficients */
-    33, 0, -86960960, -85869760, 417146944,
+    33, 0, -86852216, -85901496, 416526368,
     /* node 2766 x: shift, then 4 coefficients */
-    35, 0, 431167776, 13171451, -206408656,
+    35, 0, 430398528, 13322255, -206327504,
     /* node 2766 y: shift, then 4 coefficients */
-    34, 0, 128758152, 230062384, -608923200,
+    34, 0, 128705176, 230197152, -608790464,
     /* node 2766 z: shift, then 4 coefficients */
-    33, 0, -89131152, -86089112, 407940960,
+    33, 0, -88998632, -86127624, 407373920,
     /* node 2767 x: shift, then 4 coefficients */
-    35, 0, 444480032, 17519362, -219630240,
+    35, 0, 443903584, 17419426, -219899824,
     /* node 2767 y: shift, then 4 coefficients */
-    34, 0, 120484664, 228552720, -600703488,
+    34, 0, 120493504, 228735616, -600595648,
     /* node 2767 z: shift, then 4 coefficients */
-    33, 0, -88329696, -86116008, 421839296,
+    33, 0, -88220840, -86141800, 421337536,
     /* node 2768 x: shift, then 4 coefficients */
-    35, 0, 454181472, 19197548, -224036592,
+    35, 0, 453360032, 19261856, -224060624,
     /* node 2768 y: shift, then 4 coefficients */
-    34, 0, 118217816, 227763024, -589312768,
+    34, 0, 118200936, 227949936, -589232960,
     /* node 2768 z: shift, then 4 coefficients */
-    33, 0, -89842728, -86324040, 427186720,
+    33, 0, -89757920, -86326616, 426799104,
     /* node 2769 x: shift, then 4 coefficients */
-    35, 0, 442278368, 14446536, -215925328,
+    35, 0, 441681440, 14499837, -216011600,
     /* node 2769 y: shift, then 4 coefficients */
-    34, 0, 127388048, 229006752, -601001408,
+    34, 0, 127365400, 229146096, -600679744,
     /* node 2769 z: shift, then 4 coefficients */
-    33, 0, -90897072, -86246744, 413363744,
+    33, 0, -90746200, -86295264, 412716896,
     /* node 2770 x: shift, then 4 coefficients */
-    35, 0, 454823584, 15772620, -227827472,
+    35, 0, 454212256, 15739174, -227710224,
     /* node 2770 y: shift, then 4 coefficients */
-    34, 0, 125793408, 227656512, -591661248,
+    34, 0, 125619976, 227771840, -590805760,
     /* node 2770 z: shift, then 4 coefficients */
-    33, 0, -92323216, -86379496, 418111680,
+    33, 0, -92164592, -86430056, 417373664,
     /* node 2771 x: shift, then 4 coefficients */
-    35, 0, 414768896, 9470068, -194394336,
+    35, 0, 413840704, 9524673, -194052880,
     /* node 2771 y: shift, then 4 coefficients */
-    34, 0, 133778968, 231399600, -618563584,
+    34, 0, 133692144, 231519520, -618316352,
     /* node 2771 z: shift, then 4 coefficients */
-    33, 0, -87885600, -85625368, 395103744,
+    33, 0, -87840512, -85660976, 394620224,
     /* node 2772 x: shift, then 4 coefficients */
-    35, 0, 437005280, 11942244, -211779952,
+    35, 0, 436258432, 12073996, -211570864,
     /* node 2772 y: shift, then 4 coefficients */
-    34, 0, 131285112, 229367344, -603320832,
+    34, 0, 131193608, 229506272, -602979008,
     /* node 2772 z: shift, then 4 coefficients */
-    33, 0, -90940856, -86145088, 405583264,
+    33, 0, -90832720, -86174968, 405010592,
     /* node 2773 x: shift, then 4 coefficients */
-    35, 0, 449750848, 12825758, -226100448,
+    35, 0, 449085248, 12828082, -225779632,
     /* node 2773 y: shift, then 4 coefficients */
-    34, 0, 130847560, 228150752, -597131520,
+    34, 0, 130729224, 228229584, -596676800,
     /* node 2773 z: shift, then 4 coefficients */
-    33, 0, -92836480, -86319760, 411152768,
+    33, 0, -92713752, -86359888, 410593536,
     /* node 2774 x: shift, then 4 coefficients */
-    35, 0, 414175680, 8158461, -195709408,
+    35, 0, 413490048, 8240996, -195653168,
     /* node 2774 y: shift, then 4 coefficients */
-    34, 0, 140433136, 230617152, -614546880,
+    34, 0, 140333152, 230778512, -614229504,
     /* node 2774 z: shift, then 4 coefficients */
-    33, 0, -89705632, -85340280, 385987456,
+    33, 0, -89584792, -85376792, 385353152,
     /* node 2775 x: shift, then 4 coefficients */
-    35, 0, 424004736, 9990748, -201481056,
+    35, 0, 423041440, 10045955, -201019136,
     /* node 2775 y: shift, then 4 coefficients */
-    34, 0, 136129136, 230175744, -610739328,
+    34, 0, 135975136, 230356096, -610330304,
     /* node 2775 z: shift, then 4 coefficients */
-    33, 0, -90505624, -85784216, 396584224,
+    33, 0, -90463944, -85803720, 396129664,
     /* node 2776 x: shift, then 4 coefficients */
-    35, 0, 460469312, 22361434, -230018608,
+    35, 0, 459306016, 22517812, -229964480,
     /* node 2776 y: shift, then 4 coefficients */
-    34, 0, 114135896, 226900592, -582028480,
+    34, 0, 114054664, 227092080, -581760128,
     /* node 2776 z: shift, then 4 coefficients */
-    33, 0, -89547600, -86036624, 433846208,
+    33, 0, -89443712, -86008224, 433364320,
     /* node 2777 x: shift, then 4 coefficients */
-    35, 0, 476778368, 19567136, -242515008,
+    35, 0, 475938496, 19496670, -242272032,
     /* node 2777 y: shift, then 4 coefficients */
-    34, 0, 119856160, 226004720, -573792576,
+    34, 0, 119776992, 226056288, -573551488,
     /* node 2777 z: shift, then 4 coefficients */
-    33, 0, -93938144, -86306184, 430712000,
+    33, 0, -93808192, -86388504, 429976448,
     /* node 2787 x: shift, then 4 coefficients */
-    36, 0, 681909696, -7355578, -285868448,
+    36, 0, 680537664, -7224282, -285723200,
     /* node 2787 y: shift, then 4 coefficients */
-    34, 0, 155172768, 236092624, -637670336,
+    34, 0, 155102704, 236273392, -637433280,
     /* node 2787 z: shift, then 4 coefficients */
-    34, 0, -150613808, -157364304, 627457024,
+    34, 0, -150382128, -157424272, 626283456,
     /* node 2788 x: shift, then 4 coefficients */
-    35, 0, 469792288, 17214534, -236701952,
+    35, 0, 468841952, 17145036, -236565408,
     /* node 2788 y: shift, then 4 coefficients */
-    34, 0, 124461008, 226306128, -578457408,
+    34, 0, 124352592, 226369824, -578278080,
     /* node 2788 z: shift, then 4 coefficients */
-    33, 0, -94182200, -86393528, 422816832,
+    33, 0, -94058544, -86433440, 422206528,
     /* node 2789 x: shift, then 4 coefficients */
-    35, 0, 462111456, 14526626, -230463632,
+    35, 0, 461173376, 14552711, -230117424,
     /* node 2789 y: shift, then 4 coefficients */
-    34, 0, 129016584, 227147232, -585116224,
+    34, 0, 128914368, 227207056, -584901568,
     /* node 2789 z: shift, then 4 coefficients */
-    33, 0, -94359240, -86627744, 416327776,
+    33, 0, -94251888, -86669816, 415839872,
     /* node 2790 x: shift, then 4 coefficients */
-    35, 0, 475182496, 15473725, -239318480,
+    35, 0, 474351808, 15475951, -239353280,
     /* node 2790 y: shift, then 4 coefficients */
-    34, 0, 127179168, 225515968, -574765632,
+    34, 0, 127169224, 225600784, -574691392,
     /* node 2790 z: shift, then 4 coefficients */
-    33, 0, -95976600, -86489192, 420594432,
+    33, 0, -95865976, -86532992, 420040512,
     /* node 2791 x: shift, then 4 coefficients */
-    35, 0, 442658336, 11405567, -217960752,
+    35, 0, 441953344, 11428001, -217785952,
     /* node 2791 y: shift, then 4 coefficients */
-    34, 0, 134508128, 228580224, -600308416,
+    34, 0, 134351936, 228700832, -599814208,
     /* node 2791 z: shift, then 4 coefficients */
-    33, 0, -93145848, -86251240, 404635712,
+    33, 0, -93019568, -86268432, 404062336,
     /* node 2792 x: shift, then 4 coefficients */
-    35, 0, 453744320, 12742830, -227154480,
+    35, 0, 452958464, 12738301, -226901200,
     /* node 2792 y: shift, then 4 coefficients */
-    34, 0, 132083200, 227764432, -591977344,
+    34, 0, 131979856, 227877360, -591640256,
     /* node 2792 z: shift, then 4 coefficients */
-    33, 0, -93991776, -86635800, 410266048,
+    33, 0, -93908784, -86680160, 409775488,
     /* node 2793 x: shift, then 4 coefficients */
-    35, 0, 469518688, 13942610, -235227440,
+    35, 0, 468559040, 14066337, -234764784,
     /* node 2793 y: shift, then 4 coefficients */
-    34, 0, 130606928, 226677760, -579182208,
+    34, 0, 130505568, 226790336, -578719424,
     /* node 2793 z: shift, then 4 coefficients */
-    33, 0, -95686160, -87196568, 413863360,
+    33, 0, -95613776, -87258184, 413339136,
     /* node 2794 x: shift, then 4 coefficients */
-    35, 0, 460439168, 12630504, -228055120,
+    35, 0, 459709216, 12682390, -227726480,
     /* node 2794 y: shift, then 4 coefficients */
-    34, 0, 133694408, 226395088, -581121664,
+    34, 0, 133525248, 226442656, -580566208,
     /* node 2794 z: shift, then 4 coefficients */
-    33, 0, -96068904, -86609432, 406957664,
+    33, 0, -95895616, -86635392, 406176480,
     /* node 2795 x: shift, then 4 coefficients */
-    35, 0, 485027328, 13215146, -247312624,
+    35, 0, 484018528, 13325798, -246504208,
     /* node 2795 y: shift, then 4 coefficients */
-    34, 0, 129776240, 224099520, -565279488,
+    34, 0, 129549728, 224095744, -564510976,
     /* node 2795 z: shift, then 4 coefficients */
-    33, 0, -97076568, -87249304, 415700992,
+    33, 0, -96954664, -87292424, 415044224,
     /* node 2796 x: shift, then 4 coefficients */
-    35, 0, 436003168, 9698143, -210803312,
+    35, 0, 434849568, 9773281, -210059600,
     /* node 2796 y: shift, then 4 coefficients */
-    34, 0, 137843968, 228473664, -600971776,
+    34, 0, 137640048, 228551488, -600488512,
     /* node 2796 z: shift, then 4 coefficients */
-    33, 0, -92830032, -86140552, 396389440,
+    33, 0, -92744696, -86175208, 395849184,
     /* node 2797 x: shift, then 4 coefficients */
-    35, 0, 449639904, 10839774, -220212576,
+    35, 0, 448900832, 10895227, -219835792,
     /* node 2797 y: shift, then 4 coefficients */
-    34, 0, 136279920, 227128560, -589871680,
+    34, 0, 136078400, 227125216, -589277632,
     /* node 2797 z: shift, then 4 coefficients */
-    33, 0, -94832176, -86322720, 400765632,
+    33, 0, -94637200, -86348168, 399972736,
     /* node 2798 x: shift, then 4 coefficients */
-    35, 0, 443375808, 10567978, -218545792,
+    35, 0, 442432640, 10609709, -218117968,
     /* node 2798 y: shift, then 4 coefficients */
-    34, 0, 141241424, 227888896, -595367488,
+    34, 0, 141030496, 227928240, -594826176,
     /* node 2798 z: shift, then 4 coefficients */
-    33, 0, -94601152, -86394584, 394076896,
+    33, 0, -94461240, -86417568, 393445152,
     /* node 2799 x: shift, then 4 coefficients */
-    35, 0, 477682592, 13779491, -243860192,
+    35, 0, 476683328, 13861773, -243042544,
     /* node 2799 y: shift, then 4 coefficients */
-    34, 0, 133703000, 225159232, -571084416,
+    34, 0, 133455424, 225206208, -570331776,
     /* node 2799 z: shift, then 4 coefficients */
-    33, 0, -97882240, -87172240, 410744384,
+    33, 0, -97750024, -87199152, 410086272,
     /* node 2800 x: shift, then 4 coefficients */
-    35, 0, 453587200, 11716113, -222336096,
+    35, 0, 453036384, 11779198, -222282256,
     /* node 2800 y: shift, then 4 coefficients */
-    34, 0, 138828016, 226521024, -582207296,
+    34, 0, 138662352, 226591424, -581739392,
     /* node 2800 z: shift, then 4 coefficients */
-    33, 0, -96320536, -86587704, 398967680,
+    33, 0, -96175512, -86606392, 398264128,
     /* node 2801 x: shift, then 4 coefficients */
-    35, 0, 493042880, 12825547, -245921408,
+    35, 0, 492070016, 12836275, -245666512,
     /* node 2801 y: shift, then 4 coefficients */
-    34, 0, 137958752, 222072912, -545353536,
+    34, 0, 137900272, 222167824, -545157760,
     /* node 2801 z: shift, then 4 coefficients */
-    33, 0, -101677576, -87069768, 401757600,
+    33, 0, -101618928, -87143256, 401213216,
     /* node 2802 x: shift, then 4 coefficients */
-    35, 0, 535341856, 24874522, -286191968,
+    35, 0, 534420384, 24907570, -285613440,
     /* node 2802 y: shift, then 4 coefficients */
-    34, 0, 104045424, 221206672, -515769536,
+    34, 0, 103970872, 221443296, -515542240,
     /* node 2802 z: shift, then 4 coefficients */
-    33, 0, -97456768, -85652800, 453849376,
+    33, 0, -97398864, -85672480, 453312320,
     /* node 2803 x: shift, then 4 coefficients */
-    35, 0, 550108416, 28537868, -294095200,
+    35, 0, 549477120, 28387658, -293813216,
     /* node 2803 y: shift, then 4 coefficients */
-    34, 0, 96570560, 219812272, -491513536,
+    34, 0, 96501272, 220121456, -491216416,
     /* node 2803 z: shift, then 4 coefficients */
-    33, 0, -96786136, -84422920, 458057056,
+    33, 0, -96653488, -84406360, 457377824,
     /* node 2804 x: shift, then 4 coefficients */
-    35, 0, 476574720, 23666760, -244270272,
+    35, 0, 476190432, 23440928, -244289936,
     /* node 2804 y: shift, then 4 coefficients */
-    34, 0, 112534936, 225311664, -569277568,
+    34, 0, 112428800, 225381776, -569036544,
     /* node 2804 z: shift, then 4 coefficients */
-    33, 0, -91007080, -85935152, 438302112,
+    33, 0, -90879936, -85985656, 437598560,
     /* node 2805 x: shift, then 4 coefficients */
-    35, 0, 490814112, 24468926, -254604112,
+    35, 0, 490163168, 24422610, -254499568,
     /* node 2805 y: shift, then 4 coefficients */
-    34, 0, 110264024, 223520432, -554915328,
+    34, 0, 110117600, 223653520, -554712768,
     /* node 2805 z: shift, then 4 coefficients */
-    33, 0, -93090168, -85421336, 443014432,
+    33, 0, -92965232, -85476104, 442378048,
     /* node 2806 x: shift, then 4 coefficients */
-    35, 0, 502938144, 25590280, -259872960,
+    35, 0, 502098976, 25569670, -259776400,
     /* node 2806 y: shift, then 4 coefficients */
-    34, 0, 106869896, 222097104, -539821568,
+    34, 0, 106757544, 222326656, -539648256,
     /* node 2806 z: shift, then 4 coefficients */
-    33, 0, -94202032, -85510144, 445313920,
+    33, 0, -94064784, -85536264, 444716608,
     /* node 2807 x: shift, then 4 coefficients */
-    35, 0, 487028096, 20416230, -251201344,
+    35, 0, 486410464, 20316820, -251155920,
     /* node 2807 y: shift, then 4 coefficients */
-    34, 0, 114983344, 224565488, -563519104,
+    34, 0, 114894904, 224738912, -563308416,
     /* node 2807 z: shift, then 4 coefficients */
-    33, 0, -93596384, -86365944, 436930560,
+    33, 0, -93471624, -86358104, 436359488,
     /* node 2808 x: shift, then 4 coefficients */
-    35, 0, 497352000, 24020128, -257955008,
+    35, 0, 496423360, 23963330, -257777840,
     /* node 2808 y: shift, then 4 coefficients */
-    34, 0, 111540744, 222877360, -547473024,
+    34, 0, 111434648, 223101840, -547088512,
     /* node 2808 z: shift, then 4 coefficients */
-    33, 0, -95704040, -85811720, 441680768,
+    33, 0, -95557888, -85881408, 440935808,
     /* node 2809 x: shift, then 4 coefficients */
-    35, 0, 511560800, 24882358, -270692640,
+    35, 0, 511099712, 24756610, -270775904,
     /* node 2809 y: shift, then 4 coefficients */
-    34, 0, 108605168, 221866848, -534766848,
+    34, 0, 108490320, 222037120, -534420256,
     /* node 2809 z: shift, then 4 coefficients */
-    33, 0, -97326096, -85927544, 446367872,
+    33, 0, -97194168, -85964304, 445667936,
     /* node 2810 x: shift, then 4 coefficients */
-    35, 0, 541797120, 22679554, -287037536,
+    35, 0, 540734784, 22727924, -286303072,
     /* node 2810 y: shift, then 4 coefficients */
-    34, 0, 108090280, 219708784, -499254432,
+    34, 0, 108016848, 219886256, -499080576,
     /* node 2810 z: shift, then 4 coefficients */
-    33, 0, -101274848, -85945120, 446790144,
+    33, 0, -101179784, -85994760, 446202112,
     /* node 2811 x: shift, then 4 coefficients */
-    35, 0, 576068544, 22691362, -312722112,
+    35, 0, 575371392, 22711706, -312246336,
     /* node 2811 y: shift, then 4 coefficients */
-    34, 0, 105426104, 219116704, -479071424,
+    34, 0, 105291784, 219272496, -478722144,
     /* node 2811 z: shift, then 4 coefficients */
-    33, 0, -104763496, -86359416, 450585920,
+    33, 0, -104655952, -86433728, 449983744,
     /* node 2812 x: shift, then 4 coefficients */
-    35, 0, 490611296, 18693946, -252311872,
+    35, 0, 489810240, 18770350, -252003264,
     /* node 2812 y: shift, then 4 coefficients */
-    34, 0, 117914288, 224183920, -560492224,
+    34, 0, 117810136, 224258768, -560237248,
     /* node 2812 z: shift, then 4 coefficients */
-    33, 0, -95806256, -86444648, 434984288,
+    33, 0, -95668584, -86469696, 434375168,
     /* node 2813 x: shift, then 4 coefficients */
-    35, 0, 502519264, 21361106, -262197744,
+    35, 0, 501666624, 21352488, -261905984,
     /* node 2813 y: shift, then 4 coefficients */
-    34, 0, 114006832, 222601840, -543187648,
+    34, 0, 113905872, 222693472, -542788800,
     /* node 2813 z: shift, then 4 coefficients */
-    33, 0, -97180776, -86459128, 439298016,
+    33, 0, -97055640, -86479048, 438630976,
     /* node 2814 x: shift, then 4 coefficients */
-    35, 0, 523398496, 19631644, -278176320,
+    35, 0, 522738208, 19594324, -278183904,
     /* node 2814 y: shift, then 4 coefficients */
-    34, 0, 114346360, 222612720, -532740032,
+    34, 0, 114237104, 222691488, -532406080,
     /* node 2814 z: shift, then 4 coefficients */
-    33, 0, -99171560, -86244736, 442972352,
+    33, 0, -99034976, -86263336, 442287744,
     /* node 2815 x: shift, then 4 coefficients */
-    35, 0, 483535904, 17495308, -247373744,
+    35, 0, 482686272, 17564912, -246984576,
     /* node 2815 y: shift, then 4 coefficients */
-    34, 0, 122340208, 225069664, -568070464,
+    34, 0, 122242224, 225166432, -567719104,
     /* node 2815 z: shift, then 4 coefficients */
-    33, 0, -95920888, -86635400, 427406048,
+    33, 0, -95798560, -86656176, 426823776,
     /* node 2816 x: shift, then 4 coefficients */
-    35, 0, 493103936, 18118564, -252420112,
+    35, 0, 492142016, 18020206, -251854496,
     /* node 2816 y: shift, then 4 coefficients */
-    34, 0, 119015392, 223072624, -550314240,
+    34, 0, 118877336, 223133504, -549913216,
     /* node 2816 z: shift, then 4 coefficients */
-    33, 0, -97275896, -86456696, 431481984,
+    33, 0, -97159352, -86508368, 430851200,
     /* node 2817 x: shift, then 4 coefficients */
-    35, 0, 519172960, 19745886, -279516384,
+    35, 0, 518410496, 19812498, -279312736,
     /* node 2817 y: shift, then 4 coefficients */
-    34, 0, 119741584, 223328240, -542170048,
+    34, 0, 119670264, 223482704, -541977728,
     /* node 2817 z: shift, then 4 coefficients */
-    33, 0, -100827096, -87051640, 439404320,
+    33, 0, -100725736, -87103752, 438790560,
     /* node 2818 x: shift, then 4 coefficients */
-    35, 0, 532392288, 21130282, -280845280,
+    35, 0, 531645696, 21106894, -280623392,
     /* node 2818 y: shift, then 4 coefficients */
-    34, 0, 114879264, 220998256, -515604224,
+    34, 0, 114756392, 221185360, -515318720,
     /* node 2818 z: shift, then 4 coefficients */
-    33, 0, -101973840, -86563784, 441603872,
+    33, 0, -101901904, -86626240, 440990880,
     /* node 2819 x: shift, then 4 coefficients */
-    35, 0, 545759424, 20673842, -289449696,
+    35, 0, 544678976, 20750742, -288830496,
     /* node 2819 y: shift, then 4 coefficients */
-    34, 0, 114558488, 219063360, -501285024,
+    34, 0, 114428792, 219137696, -500886144,
     /* node 2819 z: shift, then 4 coefficients */
-    33, 0, -103970200, -86476696, 437318624,
+    33, 0, -103863848, -86510216, 436623968,
     /* node 2820 x: shift, then 4 coefficients */
-    35, 0, 611559680, 20574106, -319723136,
+    35, 0, 610889344, 20668596, -319507712,
     /* node 2820 y: shift, then 4 coefficients */
-    34, 0, 109120592, 213481504, -446271296,
+    34, 0, 109014800, 213619600, -445952992,
     /* node 2820 z: shift, then 4 coefficients */
-    33, 0, -108978424, -85960624, 435638752,
+    33, 0, -108815648, -85963464, 434872224,
     /* node 2821 x: shift, then 4 coefficients */
-    35, 0, 486925600, 16868464, -249553024,
+    35, 0, 485963168, 16992532, -248628080,
     /* node 2821 y: shift, then 4 coefficients */
-    34, 0, 125639704, 224427920, -563853696,
+    34, 0, 125485544, 224555168, -563049536,
     /* node 2821 z: shift, then 4 coefficients */
-    33, 0, -98118208, -86879616, 426229216,
+    33, 0, -98016368, -86900096, 425713312,
     /* node 2822 x: shift, then 4 coefficients */
-    35, 0, 502376832, 18051552, -264101104,
+    35, 0, 501383744, 18084634, -263795072,
     /* node 2822 y: shift, then 4 coefficients */
-    34, 0, 124017496, 222647520, -547833344,
+    34, 0, 123958632, 222751232, -547661376,
     /* node 2822 z: shift, then 4 coefficients */
-    33, 0, -100266688, -86778664, 430841312,
+    33, 0, -100186672, -86794312, 430324640,
     /* node 2823 x: shift, then 4 coefficients */
-    35, 0, 521872576, 19832732, -278943328,
+    35, 0, 521162464, 19961814, -278676000,
     /* node 2823 y: shift, then 4 coefficients */
-    34, 0, 121711432, 221515488, -531404512,
+    34, 0, 121623536, 221598768, -531269824,
     /* node 2823 z: shift, then 4 coefficients */
-    33, 0, -101409904, -86653304, 433277696,
+    33, 0, -101310768, -86666408, 432723808,
     /* node 2824 x: shift, then 4 coefficients */
-    35, 0, 511112576, 17294668, -266357248,
+    35, 0, 510248736, 17423912, -266191056,
     /* node 2824 y: shift, then 4 coefficients */
-    34, 0, 125304072, 221120208, -535882400,
+    34, 0, 125230304, 221162208, -535720224,
     /* node 2824 z: shift, then 4 coefficients */
-    33, 0, -101083368, -86818144, 425277088,
+    33, 0, -100943392, -86809256, 424621696,
     /* node 2827 x: shift, then 4 coefficients */
-    35, 0, 664749504, 25041578, -343195968,
+    35, 0, 664092032, 25241528, -342450784,
     /* node 2827 y: shift, then 4 coefficients */
-    34, 0, 85267856, 219812240, -399475520,
+    34, 0, 85297440, 220051088, -399536512,
     /* node 2827 z: shift, then 4 coefficients */
-    33, 0, -107891648, -81981664, 469418240,
+    33, 0, -107791656, -82040200, 468849120,
     /* node 2828 x: shift, then 4 coefficients */
-    34, 0, 391899968, 9526589, -178352624,
+    34, 0, 391542432, 9413377, -178130432,
     /* node 2828 y: shift, then 4 coefficients */
-    34, 0, 107249776, 209699504, -328727104,
+    34, 0, 107145864, 209769024, -328649248,
     /* node 2828 z: shift, then 4 coefficients */
-    33, 0, -117668056, -85218896, 408035232,
+    33, 0, -117569968, -85326360, 407365280,
     /* node 2831 x: shift, then 4 coefficients */
-    34, 0, 454971136, 11526977, -207840160,
+    34, 0, 454657792, 11579218, -207606912,
     /* node 2831 y: shift, then 4 coefficients */
-    34, 0, 67775856, 252796304, -300450752,
+    34, 0, 67807240, 253218032, -300543232,
     /* node 2831 z: shift, then 4 coefficients */
-    33, 0, -121241576, -77315208, 489658304,
+    33, 0, -121104712, -77359584, 489058400,
     /* node 2832 x: shift, then 4 coefficients */
-    34, 0, 507426656, 10389040, -206541808,
+    34, 0, 507141888, 10439203, -206366752,
     /* node 2832 y: shift, then 4 coefficients */
-    34, 0, 58591980, 275944512, -260638640,
+    34, 0, 58532604, 276250720, -260700624,
     /* node 2832 z: shift, then 4 coefficients */
-    33, 0, -118807808, -74736120, 496481216,
+    33, 0, -118650704, -74774768, 495895616,
     /* node 2834 x: shift, then 4 coefficients */
-    34, 0, 506414944, 9671892, -188987696,
+    34, 0, 505886880, 9744620, -188778352,
     /* node 2834 y: shift, then 4 coefficients */
-    34, 0, 75580440, 264545536, -244564688,
+    34, 0, 75727144, 264796256, -244677552,
     /* node 2834 z: shift, then 4 coefficients */
-    33, 0, -115228864, -76350112, 459109696,
+    33, 0, -115110384, -76370272, 458473216,
     /* node 2835 x: shift, then 4 coefficients */
-    34, 0, 429864992, 13412375, -175009424,
+    34, 0, 429367648, 13373233, -174886384,
     /* node 2835 y: shift, then 4 coefficients */
-    34, 0, 96705080, 214183680, -283493088,
+    34, 0, 96841136, 214474592, -283544960,
     /* node 2835 z: shift, then 4 coefficients */
-    33, 0, -116016224, -82434672, 404423584,
+    33, 0, -115912848, -82508664, 403826304,
     /* node 2838 x: shift, then 4 coefficients */
-    34, 0, 496360224, -223507, -129854296,
+    34, 0, 495443008, 27437, -130162584,
     /* node 2838 y: shift, then 4 coefficients */
-    35, 0, 76303424, 477437152, -286757856,
+    35, 0, 77022712, 478026400, -286820064,
     /* node 2838 z: shift, then 4 coefficients */
-    33, 0, -91481608, -72453104, 415044320,
+    33, 0, -91496632, -72550448, 414460768,
     /* node 2839 x: shift, then 4 coefficients */
-    35, 0, 810696384, 9355846, -205196096,
+    35, 0, 809503552, 9418151, -204770160,
     /* node 2839 y: shift, then 4 coefficients */
-    35, 0, 155818032, 316290432, -384884320,
+    35, 0, 155866656, 316692768, -385141120,
     /* node 2839 z: shift, then 4 coefficients */
-    34, 0, -168346736, -151627328, 666913664,
+    34, 0, -168106416, -151783824, 665608448,
     /* node 2842 x: shift, then 4 coefficients */
-    35, 0, 568257728, -7256642, -60416124,
+    35, 0, 567136384, -7220924, -59838652,
     /* node 2842 y: shift, then 4 coefficients */
-    36, 0, 85644800, 402618112, -206660352,
+    36, 0, 86055352, 403279872, -207639984,
     /* node 2842 z: shift, then 4 coefficients */
-    34, 0, -112257920, -128401736, 566321152,
+    34, 0, -111947480, -128505680, 565210752,
     /* node 2928 x: shift, then 4 coefficients */
-    36, 0, 744487744, -46357, -327919232,
+    36, 0, 742586688, -98825, -327128704,
     /* node 2928 y: shift, then 4 coefficients */
-    34, 0, 155700704, 232258048, -620882688,
+    34, 0, 155756144, 232458064, -620753536,
     /* node 2928 z: shift, then 4 coefficients */
-    34, 0, -165858288, -163156912, 670477504,
+    34, 0, -165626144, -163235952, 669322944,
     /* node 2931 x: shift, then 4 coefficients */
-    36, 0, 707657536, -1060581, -314831520,
+    36, 0, 706434176, -886084, -314991936,
     /* node 2931 y: shift, then 4 coefficients */
-    34, 0, 163029520, 232782608, -620153792,
+    34, 0, 162998992, 232957312, -619918336,
     /* node 2931 z: shift, then 4 coefficients */
-    34, 0, -155190352, -157161488, 613309248,
+    34, 0, -155013072, -157256304, 612066944,
     /* node 2933 x: shift, then 4 coefficients */
-    36, 0, 731962496, 6304914, -335190304,
+    36, 0, 730025728, 6283067, -334469920,
     /* node 2933 y: shift, then 4 coefficients */
-    34, 0, 169235248, 227347264, -596580544,
+    34, 0, 169044848, 227447568, -596176640,
     /* node 2933 z: shift, then 4 coefficients */
-    34, 0, -158422368, -155731216, 595158464,
+    34, 0, -158178640, -155783232, 594119936,
     /* node 2934 x: shift, then 4 coefficients */
-    36, 0, 739895104, 1911057, -330490016,
+    36, 0, 738576128, 2182863, -331026368,
     /* node 2934 y: shift, then 4 coefficients */
-    34, 0, 164593216, 230327184, -607870912,
+    34, 0, 164597408, 230545360, -607699136,
     /* node 2934 z: shift, then 4 coefficients */
-    34, 0, -164280832, -160350272, 632089792,
+    34, 0, -163975920, -160379728, 630775936,
     /* node 2937 x: shift, then 4 coefficients */
-    35, 0, 400598592, 4181962, -187086432,
+    35, 0, 399527840, 4230892, -187036944,
     /* node 2937 y: shift, then 4 coefficients */
-    34, 0, 154823712, 230269632, -611136640,
+    34, 0, 154803744, 230461040, -610969216,
     /* node 2937 z: shift, then 4 coefficients */
-    34, 0, -175921360, -166786640, 704061120,
+    34, 0, -175824144, -166951568, 703124096,
     /* node 2938 x: shift, then 4 coefficients */
-    35, 0, 399129088, 4552120, -187606352,
+    35, 0, 397200896, 3896174, -185896960,
     /* node 2938 y: shift, then 4 coefficients */
-    34, 0, 163960256, 228372144, -598782016,
+    34, 0, 163445888, 228111264, -598018880,
     /* node 2938 z: shift, then 4 coefficients */
-    34, 0, -174457120, -164310640, 663309632,
+    34, 0, -174259712, -164410400, 662461888,
     /* node 2939 x: shift, then 4 coefficients */
-    35, 0, 416131776, 6160004, -196683712,
+    35, 0, 414073248, 5380040, -194920560,
     /* node 2939 y: shift, then 4 coefficients */
-    34, 0, 162061008, 226184512, -587117888,
+    34, 0, 161423136, 225752528, -586168320,
     /* node 2939 z: shift, then 4 coefficients */
-    34, 0, -180952672, -166665136, 684229440,
+    34, 0, -180636528, -166737744, 683059264,
     /* node 2940 x: shift, then 4 coefficients */
-    35, 0, 431760576, 6377126, -203053968,
+    35, 0, 431716576, 7009319, -203904080,
     /* node 2940 y: shift, then 4 coefficients */
-    34, 0, 161020416, 221822400, -566884928,
+    34, 0, 161235440, 222251664, -566985408,
     /* node 2940 z: shift, then 4 coefficients */
-    34, 0, -184985600, -166750768, 684481152,
+    34, 0, -184677824, -166828912, 683228736,
     /* node 2941 x: shift, then 4 coefficients */
-    35, 0, 433158624, 7010154, -206587696,
+    35, 0, 432141984, 7108875, -206430464,
     /* node 2941 y: shift, then 4 coefficients */
-    34, 0, 158756784, 224518256, -577553408,
+    34, 0, 158656336, 224519904, -577275968,
     /* node 2941 z: shift, then 4 coefficients */
-    34, 0, -187262032, -168744768, 708161152,
+    34, 0, -187062768, -168826864, 706953856,
     /* node 2942 x: shift, then 4 coefficients */
-    35, 0, 413156320, 6149964, -195101568,
+    35, 0, 410643808, 5039982, -192630176,
     /* node 2942 y: shift, then 4 coefficients */
-    34, 0, 164348592, 224584304, -581623808,
+    34, 0, 163536528, 224034624, -580535104,
     /* node 2942 z: shift, then 4 coefficients */
-    34, 0, -177874096, -164679280, 663707264,
+    34, 0, -177547984, -164747984, 662624896,
     /* node 2943 x: shift, then 4 coefficients */
-    35, 0, 427532064, 8886953, -208125776,
+    35, 0, 426581312, 8741261, -207702624,
     /* node 2943 y: shift, then 4 coefficients */
-    34, 0, 146324384, 228976000, -602225344,
+    34, 0, 146124480, 229080848, -601741824,
     /* node 2943 z: shift, then 4 coefficients */
-    33, 0, -92585416, -85652656, 380674144,
+    33, 0, -92442912, -85667464, 380016416,
     /* node 2944 x: shift, then 4 coefficients */
-    35, 0, 443881632, 8515803, -215791696,
+    35, 0, 443152352, 8471061, -215650960,
     /* node 2944 y: shift, then 4 coefficients */
-    34, 0, 146504080, 226051648, -583796224,
+    34, 0, 146327184, 226118944, -583348992,
     /* node 2944 z: shift, then 4 coefficients */
-    33, 0, -95307976, -85824928, 381594560,
+    33, 0, -95152008, -85852680, 380863712,
     /* node 2945 x: shift, then 4 coefficients */
-    35, 0, 472532960, 10881772, -234221600,
+    35, 0, 471639008, 11028946, -234230768,
     /* node 2945 y: shift, then 4 coefficients */
-    34, 0, 143753184, 223222848, -562981376,
+    34, 0, 143645584, 223233328, -562596672,
     /* node 2945 z: shift, then 4 coefficients */
-    33, 0, -99151032, -86475512, 390973920,
+    33, 0, -99010512, -86529664, 390219072,
     /* node 2946 x: shift, then 4 coefficients */
-    35, 0, 471624128, 10437993, -233163312,
+    35, 0, 471074976, 10469697, -232925040,
     /* node 2946 y: shift, then 4 coefficients */
-    34, 0, 149572464, 222870912, -557422592,
+    34, 0, 149426880, 223077664, -557067456,
     /* node 2946 z: shift, then 4 coefficients */
-    33, 0, -99452504, -86481728, 379652960,
+    33, 0, -99228144, -86447704, 378938816,
     /* node 2947 x: shift, then 4 coefficients */
-    35, 0, 492130176, 14001871, -247579008,
+    35, 0, 490887520, 13920953, -247179984,
     /* node 2947 y: shift, then 4 coefficients */
-    34, 0, 144251360, 221450176, -543493248,
+    34, 0, 144160224, 221476048, -543050304,
     /* node 2947 z: shift, then 4 coefficients */
-    33, 0, -102274088, -87089592, 392499552,
+    33, 0, -102089160, -87119176, 391568768,
     /* node 2948 x: shift, then 4 coefficients */
-    35, 0, 501918976, 11852704, -249826320,
+    35, 0, 501040608, 11963745, -249697552,
     /* node 2948 y: shift, then 4 coefficients */
-    34, 0, 144394592, 217530176, -529536704,
+    34, 0, 144420880, 217606880, -529220704,
     /* node 2948 z: shift, then 4 coefficients */
-    33, 0, -101362448, -86211568, 384227936,
+    33, 0, -101154584, -86227664, 383368032,
     /* node 2949 x: shift, then 4 coefficients */
-    35, 0, 510251840, 14578831, -258956624,
+    35, 0, 509144096, 14685060, -258790160,
     /* node 2949 y: shift, then 4 coefficients */
-    34, 0, 142048880, 219275296, -530378848,
+    34, 0, 141954192, 219287520, -529876288,
     /* node 2949 z: shift, then 4 coefficients */
-    33, 0, -104029944, -86942512, 396063648,
+    33, 0, -103811648, -86962336, 395057888,
     /* node 2950 x: shift, then 4 coefficients */
-    35, 0, 467430944, 8682910, -224976480,
+    35, 0, 466407840, 8567806, -224466144,
     /* node 2950 y: shift, then 4 coefficients */
-    34, 0, 153466592, 218631968, -545547200,
+    34, 0, 153503248, 218848048, -545508928,
     /* node 2950 z: shift, then 4 coefficients */
-    33, 0, -98387360, -85510776, 365049728,
+    33, 0, -98426576, -85615640, 364676928,
     /* node 2951 x: shift, then 4 coefficients */
-    35, 0, 528049152, 16219304, -273740896,
+    35, 0, 527421056, 16340413, -273440896,
     /* node 2951 y: shift, then 4 coefficients */
-    34, 0, 136069712, 220339120, -522280224,
+    34, 0, 135980176, 220548768, -522153856,
     /* node 2951 z: shift, then 4 coefficients */
-    33, 0, -106471672, -87742952, 411704224,
+    33, 0, -106412768, -87792456, 411213184,
     /* node 2956 x: shift, then 4 coefficients */
-    35, 0, 539912896, 13099761, -270967232,
+    35, 0, 538899136, 13153747, -270840864,
     /* node 2956 y: shift, then 4 coefficients */
-    34, 0, 140220288, 213165312, -497891584,
+    34, 0, 140095904, 213209632, -497437056,
     /* node 2956 z: shift, then 4 coefficients */
-    33, 0, -105056528, -86414424, 388081088,
+    33, 0, -104902816, -86470424, 387227648,
     /* node 2957 x: shift, then 4 coefficients */
-    35, 0, 494520704, 10150485, -241815136,
+    35, 0, 493943904, 10271502, -241654464,
     /* node 2957 y: shift, then 4 coefficients */
-    34, 0, 148419680, 216423760, -529644832,
+    34, 0, 148534128, 216630368, -529697504,
     /* node 2957 z: shift, then 4 coefficients */
-    33, 0, -100684256, -85839208, 374784416,
+    33, 0, -100659872, -85895984, 374424512,
     /* node 2958 x: shift, then 4 coefficients */
-    35, 0, 489617696, 9401819, -234289792,
+    35, 0, 488788864, 9538008, -234104912,
     /* node 2958 y: shift, then 4 coefficients */
-    34, 0, 153060832, 214359472, -523752512,
+    34, 0, 153216720, 214637264, -523847904,
     /* node 2958 z: shift, then 4 coefficients */
-    33, 0, -100443296, -85443552, 363843232,
+    33, 0, -100445064, -85557712, 363446528,
     /* node 2959 x: shift, then 4 coefficients */
-    35, 0, 515206048, 11939853, -257222016,
+    35, 0, 514723168, 11960211, -256933456,
     /* node 2959 y: shift, then 4 coefficients */
-    34, 0, 147881088, 215878800, -517320512,
+    34, 0, 148016592, 216164272, -517471776,
     /* node 2959 z: shift, then 4 coefficients */
-    33, 0, -102703848, -86166472, 377318304,
+    33, 0, -102689448, -86220048, 377008000,
     /* node 2960 x: shift, then 4 coefficients */
-    35, 0, 567455552, 15609780, -237797488,
+    35, 0, 566397568, 15509509, -236981456,
     /* node 2960 y: shift, then 4 coefficients */
-    34, 0, 156777408, 183618352, -392882496,
+    34, 0, 156655376, 183962672, -392637568,
     /* node 2960 z: shift, then 4 coefficients */
-    34, 0, -190041712, -160059664, 623346560,
+    34, 0, -189993600, -160195776, 622472576,
     /* node 2961 x: shift, then 4 coefficients */
-    35, 0, 671739456, 19654388, -294253984,
+    35, 0, 671090944, 19932304, -294042496,
     /* node 2961 y: shift, then 4 coefficients */
-    34, 0, 140594208, 193821040, -367549728,
+    34, 0, 140741088, 194397376, -367603136,
     /* node 2961 z: shift, then 4 coefficients */
-    33, 0, -107586320, -83855608, 354812896,
+    33, 0, -107500720, -83894888, 354245888,
     /* node 2962 x: shift, then 4 coefficients */
-    35, 0, 563520256, 16495488, -283538592,
+    35, 0, 562517568, 16550775, -283231392,
     /* node 2962 y: shift, then 4 coefficients */
-    34, 0, 133199944, 212316112, -479525024,
+    34, 0, 133040384, 212340096, -479083200,
     /* node 2962 z: shift, then 4 coefficients */
-    33, 0, -107927160, -86949280, 400752896,
+    33, 0, -107817224, -86997048, 400068096,
     /* node 2968 x: shift, then 4 coefficients */
-    35, 0, 632510848, 18453890, -275197792,
+    35, 0, 631629312, 18680090, -274826688,
     /* node 2968 y: shift, then 4 coefficients */
-    34, 0, 144986720, 185387152, -375402208,
+    34, 0, 144524400, 184728512, -374810624,
     /* node 2968 z: shift, then 4 coefficients */
-    34, 0, -206838768, -165855440, 674188352,
+    34, 0, -206436224, -165979632, 672501248,
     /* node 2970 x: shift, then 4 coefficients */
-    35, 0, 758243520, 20571772, -292248832,
+    35, 0, 756986560, 20347292, -291574656,
     /* node 2970 y: shift, then 4 coefficients */
-    34, 0, 121468464, 185084928, -299665472,
+    34, 0, 121137472, 184720048, -299422912,
     /* node 2970 z: shift, then 4 coefficients */
-    33, 0, -108116320, -82481056, 356446080,
+    33, 0, -107944128, -82466176, 355727936,
     /* node 2971 x: shift, then 4 coefficients */
-    35, 0, 799823808, 16196490, -232868768,
+    35, 0, 798787008, 16335313, -232468304,
     /* node 2971 y: shift, then 4 coefficients */
-    35, 0, 195550032, 329713376, -444156896,
+    35, 0, 195576080, 330094368, -444396160,
     /* node 2971 z: shift, then 4 coefficients */
-    34, 0, -180923680, -155533552, 656449472,
+    34, 0, -180628368, -155613184, 655234176,
     /* node 2973 x: shift, then 4 coefficients */
-    35, 0, 830588736, 8946485, -189481472,
+    35, 0, 829459264, 9131900, -188763248,
     /* node 2973 y: shift, then 4 coefficients */
-    35, 0, 123893936, 328198336, -321531392,
+    35, 0, 123856472, 328500736, -321988128,
     /* node 2973 z: shift, then 4 coefficients */
-    34, 0, -160243600, -147727168, 687095488,
+    34, 0, -159953280, -147835472, 685772288,
     /* node 2978 x: shift, then 4 coefficients */
-    35, 0, 579933632, -9020632, -59117904,
+    35, 0, 578790912, -9037897, -58693116,
     /* node 2978 y: shift, then 4 coefficients */
-    36, 0, 179142816, 390629856, -313880800,
+    36, 0, 179461680, 391255200, -314906656,
     /* node 2978 z: shift, then 4 coefficients */
-    34, 0, -115614256, -132422792, 549564864,
+    34, 0, -115427168, -132539784, 548460544,
     /* node 2979 x: shift, then 4 coefficients */
-    35, 0, 536521888, -8085227, -39592332,
+    35, 0, 535259680, -8125962, -39027524,
     /* node 2979 y: shift, then 4 coefficients */
-    36, 0, 241814832, 334109408, -377904800,
+    36, 0, 241525568, 334440832, -378926688,
     /* node 2979 z: shift, then 4 coefficients */
-    34, 0, -107026952, -131153544, 498974848,
+    34, 0, -106834184, -131202728, 497827200,
     /* node 3081 x: shift, then 4 coefficients */
-    35, 0, 398712224, 4165677, -184617296,
+    35, 0, 396775296, 3279745, -183009296,
     /* node 3081 y: shift, then 4 coefficients */
-    34, 0, 167091600, 224073072, -581112064,
+    34, 0, 166490368, 223785408, -580274880,
     /* node 3081 z: shift, then 4 coefficients */
-    34, 0, -172398640, -161411424, 636609536,
+    34, 0, -172136080, -161487888, 635410624,
     /* node 3082 x: shift, then 4 coefficients */
-    35, 0, 379994464, 4589106, -171464496,
+    35, 0, 378809344, 4264796, -170742736,
     /* node 3082 y: shift, then 4 coefficients */
-    34, 0, 174761744, 218973472, -561648448,
+    34, 0, 174494272, 218980464, -561079680,
     /* node 3082 z: shift, then 4 coefficients */
-    34, 0, -161913712, -154009232, 572736640,
+    34, 0, -161658320, -154088240, 571598528,
     /* node 3084 x: shift, then 4 coefficients */
-    35, 0, 422238272, 6901294, -197071616,
+    35, 0, 421351328, 6966318, -196868624,
     /* node 3084 y: shift, then 4 coefficients */
-    34, 0, 166567216, 219369664, -558960000,
+    34, 0, 166652624, 219679520, -558907584,
     /* node 3084 z: shift, then 4 coefficients */
-    34, 0, -178868464, -163022400, 645678912,
+    34, 0, -178676640, -163172928, 644527808,
     /* node 3085 x: shift, then 4 coefficients */
-    35, 0, 448089472, 7479304, -210615904,
+    35, 0, 447981376, 7818708, -211117200,
     /* node 3085 y: shift, then 4 coefficients */
-    34, 0, 160935904, 217743504, -546942208,
+    34, 0, 160965072, 218110816, -546796672,
     /* node 3085 z: shift, then 4 coefficients */
-    34, 0, -188902464, -167023552, 683703104,
+    34, 0, -188619520, -167109872, 682571392,
     /* node 3104 x: shift, then 4 coefficients */
-    35, 0, 453147200, 17598322, -192486032,
+    35, 0, 452281120, 17582152, -191982384,
     /* node 3104 y: shift, then 4 coefficients */
-    34, 0, 172463536, 183992784, -432652224,
+    34, 0, 172390272, 184118272, -432356608,
     /* node 3104 z: shift, then 4 coefficients */
-    34, 0, -159442672, -145425520, 521779584,
+    34, 0, -159241408, -145606944, 520675776,
     /* node 3105 x: shift, then 4 coefficients */
-    35, 0, 499462784, 15193725, -222608240,
+    35, 0, 498755168, 15356697, -222506016,
     /* node 3105 y: shift, then 4 coefficients */
-    34, 0, 165078336, 198379120, -460838784,
+    34, 0, 165184912, 198543312, -460885888,
     /* node 3105 z: shift, then 4 coefficients */
-    34, 0, -186764592, -160697152, 619841152,
+    34, 0, -186765840, -160900480, 618913280,
     /* node 3114 x: shift, then 4 coefficients */
-    35, 0, 495486560, 17328842, -199278800,
+    35, 0, 494838208, 17751380, -199476240,
     /* node 3114 y: shift, then 4 coefficients */
-    34, 0, 165643520, 175400560, -395007936,
+    34, 0, 165727456, 175580128, -395011712,
     /* node 3114 z: shift, then 4 coefficients */
-    34, 0, -167246448, -148272560, 540216448,
+    34, 0, -167065488, -148492416, 539027264,
     /* node 3118 x: shift, then 4 coefficients */
-    35, 0, 580762368, 16245295, -225050896,
+    35, 0, 579680768, 16109644, -224608176,
     /* node 3118 y: shift, then 4 coefficients */
-    34, 0, 156137824, 168143712, -347367968,
+    34, 0, 156195504, 168434176, -347515328,
     /* node 3118 z: shift, then 4 coefficients */
-    34, 0, -178369056, -154043824, 580562112,
+    34, 0, -178291712, -154286416, 579563264,
     /* node 3119 x: shift, then 4 coefficients */
-    35, 0, 546218240, 18826790, -209300736,
+    35, 0, 544929536, 18786482, -208226160,
     /* node 3119 y: shift, then 4 coefficients */
-    34, 0, 159898384, 166767744, -358708192,
+    34, 0, 159442144, 166643600, -358094528,
     /* node 3119 z: shift, then 4 coefficients */
-    34, 0, -169894592, -149026416, 549260544,
+    34, 0, -169672560, -149059520, 548175680,
     /* node 3120 x: shift, then 4 coefficients */
-    35, 0, 703474752, 16495815, -240739328,
+    35, 0, 702406144, 16583299, -240015296,
     /* node 3120 y: shift, then 4 coefficients */
-    34, 0, 128366376, 165719056, -277275680,
+    34, 0, 128425672, 166217040, -277325728,
     /* node 3120 z: shift, then 4 coefficients */
-    34, 0, -189520240, -157210352, 633806976,
+    34, 0, -189380752, -157379808, 632918144,
     /* node 3121 x: shift, then 4 coefficients */
-    35, 0, 636034048, 12939668, -208390384,
+    35, 0, 635139328, 13307709, -208344560,
     /* node 3121 y: shift, then 4 coefficients */
-    34, 0, 136881456, 152359328, -283723424,
+    34, 0, 136726512, 152450528, -283582240,
     /* node 3121 z: shift, then 4 coefficients */
-    34, 0, -176157568, -153787136, 578414144,
+    34, 0, -175892624, -153835136, 577068928,
     /* node 3134 x: shift, then 4 coefficients */
-    35, 0, 663588736, 11643558, -187615856,
+    35, 0, 662290688, 11481655, -186352048,
     /* node 3134 y: shift, then 4 coefficients */
-    35, 0, 247866960, 281993568, -486989056,
+    35, 0, 247466448, 281926784, -487006496,
     /* node 3134 z: shift, then 4 coefficients */
-    34, 0, -163855856, -148962736, 569452480,
+    34, 0, -163738512, -149209744, 568440384,
     /* node 3135 x: shift, then 4 coefficients */
-    35, 0, 718159744, 15142615, -233503824,
+    35, 0, 716790528, 14904082, -232328784,
     /* node 3135 y: shift, then 4 coefficients */
-    34, 0, 122196640, 160034336, -259445168,
+    34, 0, 122057448, 160148704, -259430560,
     /* node 3135 z: shift, then 4 coefficients */
-    34, 0, -185494016, -156656464, 626087168,
+    34, 0, -185294864, -156785872, 625003904,
     /* node 3136 x: shift, then 4 coefficients */
-    35, 0, 694904512, 11629166, -186528496,
+    35, 0, 693978880, 11852608, -186652560,
     /* node 3136 y: shift, then 4 coefficients */
-    35, 0, 226886304, 282635744, -458494432,
+    35, 0, 226939152, 283297248, -458389056,
     /* node 3136 z: shift, then 4 coefficients */
-    34, 0, -165046592, -149878224, 588653248,
+    34, 0, -164817328, -149887424, 587309504,
     /* node 3137 x: shift, then 4 coefficients */
-    35, 0, 749943040, 17130050, -213856992,
+    35, 0, 749014528, 17295236, -213767600,
     /* node 3137 y: shift, then 4 coefficients */
-    35, 0, 216244736, 310904064, -455235872,
+    35, 0, 216111520, 311238880, -455483936,
     /* node 3137 z: shift, then 4 coefficients */
-    34, 0, -178050112, -155127808, 629616768,
+    34, 0, -177768768, -155205680, 628317824,
     /* node 3138 x: shift, then 4 coefficients */
-    35, 0, 763905152, 15940720, -256905376,
+    35, 0, 762892288, 16092410, -256507136,
     /* node 3138 y: shift, then 4 coefficients */
-    34, 0, 111428624, 169517728, -259386992,
+    34, 0, 111385456, 169720560, -259400496,
     /* node 3138 z: shift, then 4 coefficients */
-    34, 0, -194173072, -159589120, 666247168,
+    34, 0, -193988192, -159782304, 665044672,
     /* node 3139 x: shift, then 4 coefficients */
-    35, 0, 727713856, 5496731, -182480224,
+    35, 0, 726717312, 5616910, -182132704,
     /* node 3139 y: shift, then 4 coefficients */
-    35, 0, 193072848, 284437632, -413617312,
+    35, 0, 193031392, 284812512, -413821056,
     /* node 3139 z: shift, then 4 coefficients */
-    34, 0, -162807600, -151920176, 609085120,
+    34, 0, -162563856, -151980192, 607902784,
     /* node 3144 x: shift, then 4 coefficients */
-    35, 0, 645357888, -1856560, -103186384,
+    35, 0, 644279488, -1891687, -102503080,
     /* node 3144 y: shift, then 4 coefficients */
-    35, 0, 170607216, 230370416, -300978432,
+    35, 0, 170560368, 230663360, -301083808,
     /* node 3144 z: shift, then 4 coefficients */
-    34, 0, -133243488, -142020880, 553217408,
+    34, 0, -133023608, -142090912, 552235072,
     /* node 3145 x: shift, then 4 coefficients */
-    35, 0, 619533504, -4516246, -105174760,
+    35, 0, 618370112, -4446944, -104372816,
     /* node 3145 y: shift, then 4 coefficients */
-    35, 0, 183017696, 217098816, -327333792,
+    35, 0, 183031312, 217342992, -327765216,
     /* node 3145 z: shift, then 4 coefficients */
-    34, 0, -133708504, -142084048, 528747456,
+    34, 0, -133441368, -142148208, 527516928,
     /* node 3146 x: shift, then 4 coefficients */
-    35, 0, 639046720, 2388564, -143564944,
+    35, 0, 638086208, 2631450, -143329056,
     /* node 3146 y: shift, then 4 coefficients */
-    35, 0, 219987952, 247000688, -395831680,
+    35, 0, 219858368, 247332080, -396020608,
     /* node 3146 z: shift, then 4 coefficients */
-    34, 0, -145443904, -143458368, 538763328,
+    34, 0, -145225584, -143524416, 537602752,
     /* node 3154 x: shift, then 4 coefficients */
-    35, 0, 559494592, -6132383, -51253948,
+    35, 0, 558375040, -6250028, -50628928,
     /* node 3154 y: shift, then 4 coefficients */
-    35, 0, 143042160, 180204016, -225217360,
+    35, 0, 143012048, 180478336, -225690432,
     /* node 3154 z: shift, then 4 coefficients */
-    34, 0, -110939728, -134207112, 502099072,
+    34, 0, -110625864, -134253568, 500953440,
     /* node 3322 x: shift, then 4 coefficients */
-    35, 0, 430402112, 18902744, -179268416,
+    35, 0, 429789312, 19216116, -179086352,
     /* node 3322 y: shift, then 4 coefficients */
-    34, 0, 175057456, 181645056, -428558240,
+    34, 0, 175262496, 181978848, -428537632,
     /* node 3322 z: shift, then 4 coefficients */
-    34, 0, -149024032, -139580224, 487823776,
+    34, 0, -148914512, -139783696, 487033792,
     /* node 3324 x: shift, then 4 coefficients */
-    35, 0, 482303168, 16973190, -185052528,
+    35, 0, 481318304, 16863900, -184783520,
     /* node 3324 y: shift, then 4 coefficients */
-    34, 0, 166775712, 168875216, -379393760,
+    34, 0, 166511632, 168887872, -378985664,
     /* node 3324 z: shift, then 4 coefficients */
-    34, 0, -156906288, -142822592, 508997792,
+    34, 0, -156673024, -142970352, 507784032,
     /* node 3330 x: shift, then 4 coefficients */
-    35, 0, 463376832, 20965248, -148401824,
+    35, 0, 462331840, 21079472, -148059776,
     /* node 3330 y: shift, then 4 coefficients */
-    34, 0, 155839216, 139638912, -305677760,
+    34, 0, 155713392, 139766880, -305577696,
     /* node 3330 z: shift, then 4 coefficients */
-    34, 0, -128763312, -126409536, 432199840,
+    34, 0, -128531144, -126381560, 430926400,
     /* node 3331 x: shift, then 4 coefficients */
-    35, 0, 516395872, 17489878, -185704928,
+    35, 0, 515180480, 17382548, -184997424,
     /* node 3331 y: shift, then 4 coefficients */
-    34, 0, 158498384, 155819632, -337941440,
+    34, 0, 158297024, 155946176, -337717024,
     /* node 3331 z: shift, then 4 coefficients */
-    34, 0, -153689552, -140822016, 502307456,
+    34, 0, -153563040, -140917536, 501267168,
     /* node 3332 x: shift, then 4 coefficients */
-    35, 0, 562240512, 17515478, -200852272,
+    35, 0, 561569664, 17864856, -200930800,
     /* node 3332 y: shift, then 4 coefficients */
-    34, 0, 153495152, 156641568, -325397024,
+    34, 0, 153390944, 156792336, -325310144,
     /* node 3332 z: shift, then 4 coefficients */
-    34, 0, -163797840, -146675616, 537674496,
+    34, 0, -163546896, -146769744, 536519968,
     /* node 3339 x: shift, then 4 coefficients */
-    35, 0, 585198400, 11467108, -187512416,
+    35, 0, 584056960, 11381673, -186797024,
     /* node 3339 y: shift, then 4 coefficients */
-    34, 0, 144122560, 146571520, -289583296,
+    34, 0, 143884592, 146569488, -289394176,
     /* node 3339 z: shift, then 4 coefficients */
-    34, 0, -162175744, -146903760, 539961984,
+    34, 0, -162031392, -147118320, 538909312,
     /* node 3340 x: shift, then 4 coefficients */
-    35, 0, 503273984, 9591602, -118770888,
+    35, 0, 502212608, 9565195, -118389496,
     /* node 3340 y: shift, then 4 coefficients */
-    35, 0, 264722064, 220709232, -437597056,
+    35, 0, 264245056, 220833392, -437213344,
     /* node 3340 z: shift, then 4 coefficients */
-    34, 0, -117925952, -125726928, 427572640,
+    34, 0, -117739176, -125823880, 426425408,
     /* node 3341 x: shift, then 4 coefficients */
-    35, 0, 609181760, 5037048, -155930080,
+    35, 0, 608005888, 4943814, -155118320,
     /* node 3341 y: shift, then 4 coefficients */
-    35, 0, 245665184, 253037072, -459235872,
+    35, 0, 245286352, 253113824, -459143328,
     /* node 3341 z: shift, then 4 coefficients */
-    34, 0, -149300368, -143445904, 524089984,
+    34, 0, -149182400, -143673712, 523089952,
     /* node 3342 x: shift, then 4 coefficients */
-    35, 0, 606036096, 9076392, -176098736,
+    35, 0, 605024640, 9219218, -175959808,
     /* node 3342 y: shift, then 4 coefficients */
-    35, 0, 267045696, 272057280, -512999616,
+    35, 0, 266854416, 272425568, -513093056,
     /* node 3342 z: shift, then 4 coefficients */
-    34, 0, -156874160, -145419440, 533436352,
+    34, 0, -156690784, -145546528, 532279456,
     /* node 3343 x: shift, then 4 coefficients */
-    35, 0, 545139392, 4827841, -124180200,
+    35, 0, 543943424, 4743022, -123589648,
     /* node 3343 y: shift, then 4 coefficients */
-    35, 0, 255224128, 229397088, -422383904,
+    35, 0, 254752608, 229424912, -422002048,
     /* node 3343 z: shift, then 4 coefficients */
-    34, 0, -126286672, -132063736, 462730208,
+    34, 0, -126138040, -132156616, 461595200,
     /* node 3350 x: shift, then 4 coefficients */
-    35, 0, 539119936, -1323582, -82358456,
+    35, 0, 538041024, -1332333, -81900472,
     /* node 3350 y: shift, then 4 coefficients */
-    35, 0, 219673296, 196874672, -333222880,
+    35, 0, 219470256, 197196112, -333339008,
     /* node 3350 z: shift, then 4 coefficients */
-    34, 0, -116486744, -130896040, 455074912,
+    34, 0, -116331168, -130984000, 453975936,
     /* node 3351 x: shift, then 4 coefficients */
-    35, 0, 518455744, -6663718, -57350296,
+    35, 0, 517269440, -6798202, -56869376,
     /* node 3351 y: shift, then 4 coefficients */
-    35, 0, 193701744, 174053168, -284458080,
+    35, 0, 193355872, 174185264, -284556640,
     /* node 3351 z: shift, then 4 coefficients */
-    34, 0, -108393544, -128803792, 444916512,
+    34, 0, -108199072, -128894552, 443795744,
     /* node 3358 x: shift, then 4 coefficients */
-    35, 0, 535316608, -6634170, -45738860,
+    35, 0, 534300448, -6699688, -45455812,
     /* node 3358 y: shift, then 4 coefficients */
-    35, 0, 165929664, 172729760, -244236160,
+    35, 0, 165468608, 172861552, -244303232,
     /* node 3358 z: shift, then 4 coefficients */
-    34, 0, -110289960, -132543304, 470048288,
+    34, 0, -110180824, -132624616, 468984224,
     /* node 3361 x: shift, then 4 coefficients */
-    36, 0, 993793856, -19429866, -25546814,
+    36, 0, 991421632, -19482716, -24230228,
     /* node 3361 y: shift, then 4 coefficients */
-    36, 0, 262885984, 288999904, -359452256,
+    36, 0, 263023008, 289484672, -360380416,
     /* node 3361 z: shift, then 4 coefficients */
-    34, 0, -97734032, -126969672, 456055104,
+    34, 0, -97496808, -127068584, 455001120,
     /* node 3363 x: shift, then 4 coefficients */
-    35, 0, 513985472, -10064518, -28404584,
+    35, 0, 512848864, -10113531, -27741318,
     /* node 3363 y: shift, then 4 coefficients */
-    36, 0, 294905216, 314740512, -419047072,
+    36, 0, 295138016, 315259136, -420071648,
     /* node 3363 z: shift, then 4 coefficients */
-    34, 0, -104132464, -129660144, 464024256,
+    34, 0, -103956552, -129788176, 463000416,
     /* node 3364 x: shift, then 4 coefficients */
-    35, 0, 507724224, -8289606, -30629822,
+    35, 0, 506580640, -8270911, -30179220,
     /* node 3364 y: shift, then 4 coefficients */
-    35, 0, 164377488, 156404000, -229931552,
+    35, 0, 164058544, 156572320, -230140208,
     /* node 3364 z: shift, then 4 coefficients */
-    34, 0, -102273832, -128065592, 446099008,
+    34, 0, -102198120, -128224488, 445023072,
     /* node 3365 x: shift, then 4 coefficients */
-    36, 0, 925425408, -20126776, -4279924,
+    36, 0, 922851200, -20418920, -3159224,
     /* node 3365 y: shift, then 4 coefficients */
-    36, 0, 283398048, 259337600, -338593792,
+    36, 0, 282878304, 259377440, -339371584,
     /* node 3365 z: shift, then 4 coefficients */
-    34, 0, -91285112, -122554872, 422296704,
+    34, 0, -91125440, -122669296, 421131040,
 };
 const tfit_model_q31 tfit_stomach_forward_q31 = {
     3u, 1u, 484u, 1u, 7273u,
     tfit_stomach_forward_q31_coef, tfit_stomach_forward_nodes,
     tfit_stomach_forward_q31_coef + 7273u, tfit_stomach_forward_nodes + 484u,
-    0x6c786e94u
+    0x9d9f76e1u
 };
 
 static const uint32_t tfit_stomach_contact_dims[1] = {
@@ -6044,49 +6044,49 @@ static const uint32_t tfit_stomach_contact_nodes[1] = {
 };
 static const float tfit_stomach_contact_coef[24] = {
     /* input map: envelope centre x0 */
-    0x1.dcccccp-54f, -0x1.333334p-57f, -0x1.99999ap-56f,
+    -0x1.233334p-54f, 0x1.fcccccp-55f, 0x1.333334p-56f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.e49ca8p-2f, 0x1.338584p-5f, 0x1.96537p-4f, 0x1.3ddbb6p-5f,
-    0x1.b51a24p-1f, 0x1.b0819ep-4f, 0x1.8e366cp-4f, 0x1.b32e4cp-4f,
-    0x1.2b0a2ap-2f,
+    0x1.e4e31ep-2f, 0x1.337374p-5f, 0x1.96ad2ap-4f, 0x1.3cc48cp-5f,
+    0x1.b50dfcp-1f, 0x1.b103cep-4f, 0x1.8e7874p-4f, 0x1.b3e47ep-4f,
+    0x1.2b60bp-2f,
     /* node 2451 x force */
-    0x1.af15c4p-56f, 0x1.333334p-2f, 0x1.05a55p-33f, 0x1.3162c2p-29f,
+    0x1.6371cap-61f, 0x1.333332p-2f, 0x1.31983ep-37f, 0x1.35d3a6p-32f,
     /* node 2451 y force */
-    -0x1.45715ep-59f, -0x1.28d18cp-30f, 0x1.333334p-2f, 0x1.153a6ep-30f,
+    0x1.0bfc1ep-57f, 0x1.f352fep-31f, 0x1.333334p-2f, -0x1.f44bfep-28f,
     /* node 2451 z force */
-    0x1.0cccccp-58f, -0x1.ee3edp-29f, -0x1.73a8a2p-32f, 0x1.333334p-2f,
+    0x1.99999ap-62f, 0x1.13d182p-29f, 0x1.68b4ep-31f, 0x1.333334p-2f,
 };
 const tfit_model tfit_stomach_contact = {
     4u, 4u, 1u, 1u, 24u,
     tfit_stomach_contact_dims, tfit_stomach_contact_coef, tfit_stomach_contact_nodes,
     tfit_stomach_contact_dims + 1u, tfit_stomach_contact_coef + 24u, tfit_stomach_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x3fd4f8afu, 0xbf239460u, 0x3eae01ebu, 0xbda93312u, 0x3f8211ebu, 0xbfb178f8u,
-     0x3faa2316u, 0xbe2f443bu, 0x3fa0be02u, 0xbf313fffu, 0xbc24c37cu, 0xbf43cd03u,
-     0xbf5d501cu, 0xbee57de6u, 0xbfc358b3u, 0xc16e67a2u, 0xc12bc940u, 0x41e6b92bu,
-     0xf1967460u, 0xf158d318u, 0x72119b5cu, 0xc1274084u, 0x40ea99aau, 0xc1a910c3u,
-     0x6050b030u, 0xf9975dd2u},
-    0xbc01d981u
+    {0x3fd4d77fu, 0xbf23875du, 0x3eadf521u, 0xbda8f507u, 0x3f821802u, 0xbfb15c64u,
+     0x3faa0c38u, 0xbe2f0b51u, 0x3fa08e86u, 0xbf31299au, 0xbc26ea1eu, 0xbf438e94u,
+     0xbf5d3ac5u, 0xbee59dc9u, 0xbfc3120fu, 0xc16e44edu, 0xc12bde29u, 0x41e68828u,
+     0xf1965e79u, 0xf158ed7du, 0x72117c6eu, 0xc1272910u, 0x40ea9592u, 0xc1a8e7beu,
+     0x852b0481u, 0x73ee5482u},
+    0xbd2253c3u
 };
 static const int32_t tfit_stomach_contact_q31_coef[28] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     0, 0, 0,
     /* W (row-major), then the projection's headroom H */
-    254076224, 20153732, 53257952, 20831158, 458334784, 56689468,
-    52194520, 57040024, 156782928,
+    254220528, 20149108, 53303892, 20759692, 458284992, 56756124,
+    52228328, 57133308, 156960128,
     6,
     /* node 2451 x: shift, then 4 coefficients */
-    33, 0, 644245120, 0, 5,
+    33, 0, 644245056, 0, 1,
     /* node 2451 y: shift, then 4 coefficients */
-    33, 0, -2, 644245120, 2,
+    33, 0, 2, 644245120, -16,
     /* node 2451 z: shift, then 4 coefficients */
-    33, 0, -8, -1, 644245120,
+    33, 0, 4, 1, 644245120,
 };
 const tfit_model_q31 tfit_stomach_contact_q31 = {
     3u, 4u, 1u, 1u, 28u,
     tfit_stomach_contact_q31_coef, tfit_stomach_contact_nodes,
     tfit_stomach_contact_q31_coef + 28u, tfit_stomach_contact_nodes + 1u,
-    0x200888f4u
+    0x01cf7e26u
 };
 
 const uint32_t tfit_stomach_vertex[484] = {
@@ -6153,369 +6153,369 @@ const uint32_t tfit_stomach_vertex[484] = {
     3360u, 3362u, 3363u, 3364u,
 };
 const float tfit_stomach_rest_mm[1452] = {
-    -0x1.e5542cp+4f, -0x1.217176p+5f, -0x1.3cf6p+4f, -0x1.cf7214p+4f,
-    -0x1.b158dep+5f, -0x1.25c28p+5f, -0x1.c5ec8cp+4f, -0x1.b62196p+5f,
-    -0x1.32668p+5f, -0x1.dacaf6p+4f, -0x1.7cacd6p+5f, -0x1.87338p+4f,
-    -0x1.d45568p+4f, -0x1.8e1d7ep+5f, -0x1.b28f8p+4f, -0x1.cc47e4p+4f,
-    -0x1.993406p+5f, -0x1.d452p+4f, -0x1.00c5bcp+5f, -0x1.31aee6p+5f,
-    -0x1.47aep+4f, -0x1.f17214p+4f, -0x1.6d5aeep+5f, -0x1.75eb8p+4f,
-    -0x1.f8a9c8p+4f, -0x1.507fcep+5f, -0x1.575cp+4f, -0x1.dbf59p+4f,
-    -0x1.46c56ep+5f, -0x1.44f6p+4f, -0x1.ee7a44p+4f, -0x1.61c35ep+5f,
-    -0x1.64p+4f, -0x1.9d37eap+4f, -0x1.65e62ep+5f, -0x1.41998p+4f,
-    -0x1.acf6cap+4f, -0x1.6eaee6p+5f, -0x1.5429p+4f, -0x1.a82f5p+4f,
-    -0x1.57aacep+5f, -0x1.39c28p+4f, -0x1.a1cc98p+4f, -0x1.c9559cp+4f,
-    -0x1.46b88p+4f, -0x1.c9896cp+4f, -0x1.0ba6b6p+5f, -0x1.38f6p+4f,
-    -0x1.ae876p+4f, -0x1.03737ep+5f, -0x1.33aep+4f, -0x1.bc8e58p+4f,
-    -0x1.17d3c6p+5f, -0x1.31708p+4f, -0x1.bde80ap+4f, -0x1.2c7796p+5f,
-    -0x1.30cdp+4f, -0x1.cc6d28p+4f, -0x1.36d7dep+5f, -0x1.3829p+4f,
-    -0x1.a4982cp+4f, -0x1.3f9c76p+5f, -0x1.29eb8p+4f, -0x1.a7eae8p+4f,
-    -0x1.bd58dep+5f, -0x1.5452p+5f, -0x1.81b6e4p+4f, -0x1.c16d5ep+5f,
-    -0x1.55334p+5f, -0x1.97d9b4p+4f, -0x1.bf4a8ep+5f, -0x1.46a4p+5f,
-    -0x1.a92dacp+4f, -0x1.b78e1ep+5f, -0x1.25c28p+5f, -0x1.a2c18ap+4f,
-    -0x1.b08e1ep+5f, -0x1.0d334p+5f, -0x1.b1563ap+4f, -0x1.bbfaaep+5f,
-    -0x1.4652p+5f, -0x1.bacd02p+4f, -0x1.b90d1ep+5f, -0x1.38e14p+5f,
-    -0x1.ac6b1cp+4f, -0x1.ba154ep+5f, -0x1.327bp+5f, -0x1.a14e08p+4f,
-    -0x1.bcb926p+5f, -0x1.391ecp+5f, -0x1.914bfcp+4f, -0x1.bca29ep+5f,
-    -0x1.2c52p+5f, -0x1.8e116ap+4f, -0x1.b9bd3ep+5f, -0x1.1fc28p+5f,
-    -0x1.b91582p+4f, -0x1.a7f27ep+5f, -0x1.0147cp+5f, -0x1.9dfbb4p+4f,
-    -0x1.a9d9e6p+5f, -0x1.f6b88p+4f, -0x1.8aebbap+4f, -0x1.a108fep+5f,
-    -0x1.c8cdp+4f, -0x1.7aec22p+4f, -0x1.b3b2fep+5f, -0x1.0799cp+5f,
-    -0x1.72fae2p+4f, -0x1.bb2ddep+5f, -0x1.1ap+5f, -0x1.5b1ad4p+4f,
-    -0x1.acf486p+5f, -0x1.e148p+4f, -0x1.b492d8p+4f, -0x1.856d5ep+5f,
-    -0x1.863d8p+4f, -0x1.ac7972p+4f, -0x1.92154ep+5f, -0x1.a6b88p+4f,
-    -0x1.9165cap+4f, -0x1.9327bep+5f, -0x1.9b85p+4f, -0x1.2a1db2p+4f,
-    -0x1.829c76p+5f, -0x1.39998p+4f, -0x1.631db2p+4f, -0x1.a3404ep+5f,
-    -0x1.be668p+4f, -0x1.9e97f8p+3f, -0x1.8cd3c6p+5f, -0x1.2f5cp+4f,
-    -0x1.6e542cp+4f, -0x1.7383e6p+5f, -0x1.3ccdp+4f, -0x1.be484cp+4f,
-    -0x1.7a58dep+5f, -0x1.72148p+4f, -0x1.792f5p+4f, -0x1.ae267cp+4f,
-    -0x1.3eb88p+4f, -0x1.5335dep+4f, -0x1.553d0cp+4f, -0x1.5e3d8p+4f,
-    -0x1.935a52p+4f, -0x1.e9971cp+4f, -0x1.30cdp+4f, -0x1.a1d6d6p+4f,
-    -0x1.22d7dep+5f, -0x1.24a4p+4f, -0x1.a30a72p+4f, -0x1.30dbf6p+5f,
-    -0x1.25708p+4f, -0x1.9a86f8p+4f, -0x1.14b0eep+5f, -0x1.235cp+4f,
-    -0x1.862e16p+4f, -0x1.1fa29ep+5f, -0x1.15eb8p+4f, -0x1.8552f2p+4f,
-    -0x1.0bc156p+5f, -0x1.1a3d8p+4f, -0x1.6d742p+4f, -0x1.400f26p+5f,
-    -0x1.0c52p+4f, -0x1.715cc6p+4f, -0x1.58985ep+5f, -0x1.1e8f8p+4f,
-    -0x1.6b0fc6p+4f, -0x1.29d5cep+5f, -0x1.0548p+4f, -0x1.5575c4p+4f,
-    -0x1.1202dep+5f, -0x1.ee15p+3f, -0x1.670588p+4f, -0x1.696d5ep+5f,
-    -0x1.2a3d8p+4f, -0x1.6034a2p+4f, -0x1.c4f75cp+4f, -0x1.1ccdp+4f,
-    -0x1.691a6cp+4f, -0x1.01b0eep+5f, -0x1.0cp+4f, -0x1.456632p+4f,
-    -0x1.b0432cp+4f, -0x1.0cf6p+4f, -0x1.3a5fa4p+4f, -0x1.db182cp+4f,
-    -0x1.ddc3p+3f, -0x1.86d0b2p+4f, -0x1.bd381ep+5f, -0x1.6b854p+5f,
-    -0x1.60afecp+4f, -0x1.becb8ep+5f, -0x1.6d70cp+5f, -0x1.63c60cp+4f,
-    -0x1.b97fcep+5f, -0x1.7bc28p+5f, -0x1.0d5846p+4f, -0x1.b26d5ep+5f,
-    -0x1.8dd7p+5f, -0x1.30bcap+4f, -0x1.ba04e6p+5f, -0x1.7deb8p+5f,
-    -0x1.3a96fp+4f, -0x1.bf5cf6p+5f, -0x1.6fd7p+5f, -0x1.76ae4ap+4f,
-    -0x1.c16116p+5f, -0x1.5cf5cp+5f, -0x1.5241bep+4f, -0x1.c16946p+5f,
-    -0x1.66668p+5f, -0x1.4ed9b4p+4f, -0x1.c46d5ep+5f, -0x1.5770cp+5f,
-    -0x1.2c27fp+4f, -0x1.c21136p+5f, -0x1.68b84p+5f, -0x1.28bbcep+4f,
-    -0x1.c5a4a6p+5f, -0x1.59854p+5f, -0x1.89762cp+4f, -0x1.c083e6p+5f,
-    -0x1.4029p+5f, -0x1.7973b6p+4f, -0x1.c083e6p+5f, -0x1.3347cp+5f,
-    -0x1.82f0a4p+4f, -0x1.bcd7dep+5f, -0x1.2629p+5f, -0x1.7e6148p+4f,
-    -0x1.c20b0ep+5f, -0x1.4747cp+5f, -0x1.6e5b24p+4f, -0x1.c281d6p+5f,
-    -0x1.3a29p+5f, -0x1.4b7f98p+4f, -0x1.c59a6ep+5f, -0x1.49334p+5f,
-    -0x1.51c7aep+4f, -0x1.c32ddep+5f, -0x1.2e7bp+5f, -0x1.5b1f56p+4f,
-    -0x1.bf6d5ep+5f, -0x1.20e14p+5f, -0x1.482fb8p+4f, -0x1.c57baep+5f,
-    -0x1.3b854p+5f, -0x1.34f0a4p+4f, -0x1.c2dbf6p+5f, -0x1.22p+5f,
-    -0x1.1ebe42p+4f, -0x1.c708fep+5f, -0x1.2fc28p+5f, -0x1.23b19p+4f,
-    -0x1.c7d1b6p+5f, -0x1.44p+5f, -0x1.57e874p+4f, -0x1.bc1136p+5f,
-    -0x1.147bp+5f, -0x1.138904p+4f, -0x1.a6aacep+5f, -0x1.aa668p+4f,
-    -0x1.25896cp+4f, -0x1.756d5ep+5f, -0x1.1b338p+4f, -0x1.12c4dp+4f,
-    -0x1.62cd9ep+5f, -0x1.ea9p+3f, -0x1.a2a37p+3f, -0x1.6d9a6ep+5f,
-    -0x1.ce67p+3f, -0x1.0da196p+4f, -0x1.28432cp+4f, -0x1.14cdp+4f,
-    -0x1.28f10ep+4f, -0x1.781e4cp+4f, -0x1.0c29p+4f, -0x1.197766p+4f,
-    -0x1.6edabcp+4f, -0x1.ec29p+3f, -0x1.2fe3f2p+4f, -0x1.a7453cp+4f,
-    -0x1.efaep+3f, -0x1.1cc4dp+4f, -0x1.b5c01cp+4f, -0x1.b0f6p+3f,
-    -0x1.2af03cp+4f, -0x1.ee63ecp+4f, -0x1.b615p+3f, -0x1.217838p+4f,
-    -0x1.89b3ccp+4f, -0x1.e7aep+3f, -0x1.1d1fcp+4f, -0x1.9e11fcp+4f,
-    -0x1.c47bp+3f, -0x1.4c9134p+4f, -0x1.038a06p+5f, -0x1.e8a4p+3f,
-    -0x1.3f21ccp+4f, -0x1.15360ep+5f, -0x1.cb85p+3f, -0x1.131e84p+4f,
-    -0x1.06a6b6p+5f, -0x1.8429p+3f, -0x1.2fa546p+4f, -0x1.27e216p+5f,
-    -0x1.b852p+3f, -0x1.0dc0b8p+4f, -0x1.d4e2ecp+4f, -0x1.7f5cp+3f,
-    -0x1.dc3c38p+3f, -0x1.3452bep+5f, -0x1.6c29p+3f, -0x1.fe5c2cp+3f,
-    -0x1.4725aep+5f, -0x1.9b85p+3f, -0x1.b614e4p+3f, -0x1.120b0ep+5f,
-    -0x1.2d1fp+3f, -0x1.86bc04p+3f, -0x1.2de216p+5f, -0x1.3052p+3f,
-    -0x1.b066dp+3f, -0x1.52d7dep+5f, -0x1.8948p+3f, -0x1.fffabp+3f,
-    -0x1.2cd28cp+4f, -0x1.b9ecp+3f, -0x1.073718p+4f, -0x1.60ce6cp+4f,
-    -0x1.a8f6p+3f, -0x1.f42a3p+3f, -0x1.3ae6fcp+4f, -0x1.78p+3f,
-    -0x1.148cb4p+4f, -0x1.81cc5cp+4f, -0x1.c1ecp+3f, -0x1.0d734ep+4f,
-    -0x1.94d28cp+4f, -0x1.9852p+3f, -0x1.00186p+4f, -0x1.7e9d4cp+4f,
-    -0x1.70a4p+3f, -0x1.10c3fep+4f, -0x1.af6e2cp+4f, -0x1.92e1p+3f,
-    -0x1.f9425cp+3f, -0x1.a3494cp+4f, -0x1.5948p+3f, -0x1.e20b1p+3f,
-    -0x1.54eb1cp+4f, -0x1.2d71p+3f, -0x1.d9dfa4p+3f, -0x1.894d6cp+4f,
-    -0x1.1f0ap+3f, -0x1.cafa44p+3f, -0x1.e7cc5cp+4f, -0x1.270ap+3f,
-    -0x1.dec1cp+3f, -0x1.b684acp+4f, -0x1.30f6p+3f, -0x1.ab69bp+3f,
-    -0x1.01a6b6p+5f, -0x1.147bp+3f, -0x1.a9d5p+3f, -0x1.60eb1cp+4f,
-    -0x1.3eb8p+2f, -0x1.952b6cp+3f, -0x1.41dcccp+4f, -0x1.30a4p+1f,
-    -0x1.04e284p+3f, -0x1.a9aee6p+5f, -0x1.9ccccp+5f, -0x1.2133d2p+4f,
-    -0x1.bf56d6p+5f, -0x1.71854p+5f, -0x1.045918p+4f, -0x1.c46116p+5f,
-    -0x1.6370cp+5f, -0x1.f646dcp+3f, -0x1.becb8ep+5f, -0x1.7452p+5f,
-    -0x1.89d28cp+3f, -0x1.c358dep+5f, -0x1.6829p+5f, -0x1.4137b4p+3f,
-    -0x1.bf4c96p+5f, -0x1.7347cp+5f, -0x1.00ef02p+4f, -0x1.c7acd6p+5f,
-    -0x1.54668p+5f, -0x1.c1a57cp+3f, -0x1.cabd3ep+5f, -0x1.395c4p+5f,
-    -0x1.68367cp+3f, -0x1.caddfep+5f, -0x1.20668p+5f, -0x1.78c0ecp+3f,
-    -0x1.cb7fcep+5f, -0x1.427bp+5f, -0x1.698f5cp+3f, -0x1.c76b4ep+5f,
-    -0x1.5999cp+5f, -0x1.3f44d4p+3f, -0x1.ccd5cep+5f, -0x1.35eb8p+5f,
-    -0x1.6e58e4p+3f, -0x1.c01b6ep+5f, -0x1.f5998p+4f, -0x1.5b49bcp+3f,
-    -0x1.c529c6p+5f, -0x1.0747cp+5f, -0x1.abe1b8p+2f, -0x1.9b5cf6p+5f,
-    -0x1.3ee18p+4f, -0x1.ab89ap+3f, -0x1.7b81d6p+5f, -0x1.0429p+4f,
-    -0x1.986114p+3f, -0x1.85dbf6p+5f, -0x1.19c28p+4f, -0x1.291d7cp+3f,
-    -0x1.81f89ep+5f, -0x1.f51fp+3f, -0x1.578dbcp+3f, -0x1.750b0ep+5f,
-    -0x1.cc29p+3f, -0x1.668a0cp+3f, -0x1.632bd6p+5f, -0x1.9429p+3f,
-    -0x1.15d014p+3f, -0x1.8b1b6ep+5f, -0x1.1029p+4f, -0x1.dff078p+2f,
-    -0x1.7d9236p+5f, -0x1.cc29p+3f, 0x1.ad66ep+0f, -0x1.504a8ep+5f,
-    -0x1.7p+2f, -0x1.9ff27cp+3f, -0x1.9c8cecp+4f, -0x1.8666p+2f,
-    -0x1.868e24p+3f, -0x1.b8744cp+4f, -0x1.6d7p+2f, -0x1.56a444p+3f,
-    -0x1.ef453cp+4f, -0x1.6c2ap+2f, -0x1.5d8cecp+3f, -0x1.08bf46p+5f,
-    -0x1.b70ap+2f, -0x1.2b0004p+3f, -0x1.158a06p+5f, -0x1.9a3ep+2f,
-    -0x1.3210ccp+3f, -0x1.04bf46p+5f, -0x1.60a4p+2f, -0x1.ddbe78p+2f,
-    -0x1.0fa08ep+5f, -0x1.2b86p+2f, -0x1.c93678p+2f, -0x1.2a58dep+5f,
-    -0x1.a0a4p+2f, -0x1.73f4f4p+3f, -0x1.65f13cp+4f, -0x1.9708p+0f,
-    -0x1.487664p+3f, -0x1.9fd48cp+4f, -0x1.03d8p+1f, -0x1.1b51ecp+3f,
-    -0x1.ebe0dcp+4f, -0x1.ep+1f, -0x1.f00f98p+2f, -0x1.baef2cp+4f,
-    0x1.1e8p-4f, -0x1.4a63f8p+2f, -0x1.ebafbcp+4f, 0x1.c28p-4f,
-    -0x1.1d96bcp+3f, -0x1.6d8eecp+4f, 0x1.bc28p+1f, -0x1.925bc8p+2f,
-    -0x1.aff13cp+4f, 0x1.8a3cp+1f, -0x1.51c848p+2f, -0x1.8cbf46p+5f,
-    -0x1.bc3d8p+5f, -0x1.440aa8p+2f, -0x1.96d3c6p+5f, -0x1.b3334p+5f,
-    -0x1.8a4328p+2f, -0x1.8250aep+5f, -0x1.c452p+5f, -0x1.cb3f78p+2f,
-    -0x1.b1cfa6p+5f, -0x1.8f1ecp+5f, -0x1.77f078p+2f, -0x1.a07796p+5f,
-    -0x1.a8b84p+5f, -0x1.06d018p+2f, -0x1.a8e426p+5f, -0x1.9cp+5f,
-    -0x1.1d43fcp+3f, -0x1.c69a6ep+5f, -0x1.5c29p+5f, -0x1.446178p+2f,
-    -0x1.c07fcep+5f, -0x1.6a29p+5f, -0x1.8a51e8p+2f, -0x1.b904e6p+5f,
-    -0x1.7f47cp+5f, -0x1.2ffaacp+3f, -0x1.ca52bep+5f, -0x1.4c668p+5f,
-    -0x1.ecf348p+2f, -0x1.cbf06ep+5f, -0x1.3fc28p+5f, -0x1.fa7c88p+2f,
-    -0x1.c9a8bep+5f, -0x1.4e668p+5f, -0x1.df9168p+2f, -0x1.ccec56p+5f,
-    -0x1.3199cp+5f, -0x1.9bed28p+2f, -0x1.c6aee6p+5f, -0x1.5829p+5f,
-    -0x1.1e82acp+3f, -0x1.ccb716p+5f, -0x1.27854p+5f, -0x1.7a1a38p+2f,
-    -0x1.cc404ep+5f, -0x1.3399cp+5f, -0x1.54d0e8p+2f, -0x1.ca6116p+5f,
-    -0x1.42f5cp+5f, -0x1.15710cp+3f, -0x1.ca7baep+5f, -0x1.1570cp+5f,
-    -0x1.22006cp+3f, -0x1.c32bd6p+5f, -0x1.f829p+4f, -0x1.0efb14p+3f,
-    -0x1.c79446p+5f, -0x1.08e14p+5f, -0x1.d25538p+2f, -0x1.ccb50ep+5f,
-    -0x1.23eb8p+5f, -0x1.be7fc8p+2f, -0x1.c9d5cep+5f, -0x1.103d8p+5f,
-    -0x1.266f68p+2f, -0x1.c9fcb6p+5f, -0x1.130a4p+5f, -0x1.2ebe74p+3f,
-    -0x1.b8cd9ep+5f, -0x1.c829p+4f, -0x1.ab7248p+2f, -0x1.c51f86p+5f,
-    -0x1.fbaep+4f, -0x1.9ea728p+2f, -0x1.c1360ep+5f, -0x1.e385p+4f,
-    -0x1.45d078p+2f, -0x1.c5d7dep+5f, -0x1.fe8f8p+4f, -0x1.1f8448p+2f,
-    -0x1.b95aeep+5f, -0x1.b6668p+4f, -0x1.062a98p+2f, -0x1.af7baep+5f,
-    -0x1.87aep+4f, -0x1.38fec8p+2f, -0x1.c21b6ep+5f, -0x1.e63d8p+4f,
-    -0x1.069518p+2f, -0x1.98f06ep+5f, -0x1.2a8f8p+4f, -0x1.661f28p+2f,
-    -0x1.93c56ep+5f, -0x1.1dc28p+4f, -0x1.b1eb8p-2f, -0x1.a55f06p+5f,
-    -0x1.523d8p+4f, -0x1.8656d8p+2f, -0x1.88964ep+5f, -0x1.f8p+3f,
-    -0x1.0e8658p+2f, -0x1.807baep+5f, -0x1.bc7bp+3f, -0x1.db1dfp+1f,
-    -0x1.8c631ep+5f, -0x1.fbd7p+3f, -0x1.ed532p+0f, -0x1.8785eep+5f,
-    -0x1.d3d7p+3f, -0x1.9e1068p+2f, -0x1.4279a6p+5f, -0x1.fe14p+2f,
-    -0x1.25c77p+1f, -0x1.3afec6p+5f, -0x1.5c2ap+2f, -0x1.640d3p+1f,
-    -0x1.27acd6p+5f, -0x1.ep+1f, 0x1.1753fp+1f, -0x1.3ed3c6p+5f,
-    -0x1.9d7p+1f, 0x1.ee76cp-1f, -0x1.271b6ep+5f, -0x1.99ap-1f,
-    -0x1.21ed3p+1f, -0x1.ead28cp+4f, 0x1.0332p+2f, 0x1.b1a34p-1f,
-    -0x1.0bf486p+5f, 0x1.f5cp+1f, 0x1.91d2fp+1f, -0x1.015f06p+5f,
-    0x1.257p+3f, -0x1.25e288p+2f, -0x1.76d5cep+5f, -0x1.ca7bp+5f,
-    -0x1.57e0fp+1f, -0x1.7081d6p+5f, -0x1.cc7bp+5f, -0x1.0f974p-1f,
-    -0x1.6f7baep+5f, -0x1.caa4p+5f, -0x1.d997fp+1f, -0x1.873a26p+5f,
-    -0x1.c029p+5f, -0x1.79327p+1f, -0x1.7c0f26p+5f, -0x1.c6e14p+5f,
-    -0x1.09a1dp+1f, -0x1.86c35ep+5f, -0x1.bf70cp+5f, -0x1.f0312p+0f,
-    -0x1.95fcb6p+5f, -0x1.b2p+5f, -0x1.51b3ep+0f, -0x1.7b83e6p+5f,
-    -0x1.c6p+5f, 0x1.8bd38p-2f, -0x1.85737ep+5f, -0x1.bcf5cp+5f,
-    -0x1.675f8p-2f, -0x1.903e3ep+5f, -0x1.b55c4p+5f, -0x1.0f1dep+0f,
-    -0x1.9a50aep+5f, -0x1.acp+5f, -0x1.f66e9p+1f, -0x1.b100cep+5f,
-    -0x1.8daep+5f, -0x1.508e9p+1f, -0x1.9fa4a6p+5f, -0x1.a7aep+5f,
-    -0x1.728dbp+1f, -0x1.b7aacep+5f, -0x1.7cf5cp+5f, -0x1.ec1f2p+0f,
-    -0x1.a804e6p+5f, -0x1.9a8f8p+5f, -0x1.24d51p+1f, -0x1.b01136p+5f,
-    -0x1.8c52p+5f, -0x1.5528ap+0f, -0x1.b3d7dep+5f, -0x1.815c4p+5f,
-    0x1.7c2f4p-1f, -0x1.a1e83ep+5f, -0x1.9d47cp+5f, -0x1.7a71cp-1f,
-    -0x1.ab4466p+5f, -0x1.91eb8p+5f, -0x1.46044p-1f, -0x1.aef486p+5f,
-    -0x1.8a148p+5f, 0x1.6bfa8p-2f, -0x1.b2b0eep+5f, -0x1.7cb84p+5f,
-    -0x1.4d288p-2f, -0x1.b7737ep+5f, -0x1.730a4p+5f, -0x1.59013p+1f,
-    -0x1.bccd9ep+5f, -0x1.6e3d8p+5f, -0x1.fa355p+1f, -0x1.c59236p+5f,
-    -0x1.5452p+5f, -0x1.b6c09p+1f, -0x1.ca4ea6p+5f, -0x1.30148p+5f,
-    -0x1.df021p+1f, -0x1.c86946p+5f, -0x1.4570cp+5f, -0x1.f32fep+0f,
-    -0x1.c785eep+5f, -0x1.39d7p+5f, -0x1.3d6bbp+1f, -0x1.c1381ep+5f,
-    -0x1.5eb84p+5f, -0x1.ccac4p-1f, -0x1.bdacd6p+5f, -0x1.61eb8p+5f,
-    -0x1.79ebap+0f, -0x1.c2cb8ep+5f, -0x1.51334p+5f, -0x1.dbb9cp-1f,
-    -0x1.c6985ep+5f, -0x1.2bd7p+5f, 0x1.925acp-1f, -0x1.bb239ep+5f,
-    -0x1.5dc28p+5f, 0x1.1a8f6p+0f, -0x1.bee426p+5f, -0x1.47aep+5f,
-    0x1.41f8cp-1f, -0x1.c2f89ep+5f, -0x1.307bp+5f, -0x1.00d0e8p+2f,
-    -0x1.cae426p+5f, -0x1.2147cp+5f, -0x1.36f1bp+1f, -0x1.c93406p+5f,
-    -0x1.23aep+5f, -0x1.0f9c1p+1f, -0x1.c74ea6p+5f, -0x1.0fd7p+5f,
-    -0x1.67fe7p+1f, -0x1.c6e216p+5f, -0x1.0852p+5f, -0x1.7d014p-1f,
-    -0x1.c6631ep+5f, -0x1.1faep+5f, -0x1.0919ep+0f, -0x1.c43c36p+5f,
-    -0x1.0452p+5f, -0x1.bf558p-2f, -0x1.c47dbep+5f, -0x1.0bd7p+5f,
-    0x1.ac434p-1f, -0x1.c31f86p+5f, -0x1.22b84p+5f, 0x1.0ad76p+0f,
-    -0x1.c27176p+5f, -0x1.1547cp+5f, 0x1.7343ap+0f, -0x1.beddfep+5f,
-    -0x1.f68f8p+4f, 0x1.1a02p-4f, -0x1.bdd7dep+5f, -0x1.d87bp+4f,
-    -0x1.b79dap+0f, -0x1.c20f26p+5f, -0x1.ed1fp+4f, -0x1.04986p+0f,
-    -0x1.b4133ep+5f, -0x1.987bp+4f, -0x1.1adc7p+1f, -0x1.bc9e86p+5f,
-    -0x1.c6b88p+4f, 0x1.7648ep+0f, -0x1.b22196p+5f, -0x1.91708p+4f,
-    0x1.45c0fp+1f, -0x1.b9c56ep+5f, -0x1.d35cp+4f, 0x1.793c3p+1f,
-    -0x1.b33c36p+5f, -0x1.a1c28p+4f, 0x1.6cfc5p+1f, -0x1.a46116p+5f,
-    -0x1.4c29p+4f, 0x1.2d3a9p+1f, -0x1.9c1136p+5f, -0x1.28p+4f,
-    0x1.16bap-4f, -0x1.9752bep+5f, -0x1.191fp+4f, 0x1.5f611p+1f,
-    -0x1.8fe426p+5f, -0x1.f615p+3f, 0x1.940758p+2f, -0x1.85239ep+5f,
-    -0x1.a7aep+3f, 0x1.2f07c8p+2f, -0x1.9cd1b6p+5f, -0x1.2c7bp+4f,
-    0x1.74b6a8p+2f, -0x1.949446p+5f, -0x1.0bd7p+4f, 0x1.2d0558p+2f,
-    -0x1.65ec56p+5f, -0x1.ea3ep+2f, 0x1.ca87f8p+2f, -0x1.46c56ep+5f,
-    -0x1.cp+0f, 0x1.43f6f8p+2f, -0x1.34f486p+5f, 0x1.eb8p-3f,
-    0x1.301138p+2f, -0x1.21e216p+5f, 0x1.d47cp+1f, 0x1.212194p+3f,
-    -0x1.256d5ep+5f, 0x1.7852p+2f, 0x1.c1a298p+2f, -0x1.f57a7cp+4f,
-    0x1.cd1fp+3f, 0x1.1df06p+0f, -0x1.62133ep+5f, -0x1.cc29p+5f,
-    0x1.f7972p+0f, -0x1.737dbep+5f, -0x1.c43d8p+5f, 0x1.1f07p-3f,
-    -0x1.7aacd6p+5f, -0x1.c4668p+5f, 0x1.f3ac6p+0f, -0x1.5c2196p+5f,
-    -0x1.ccp+5f, 0x1.64831p+1f, -0x1.66bb2ep+5f, -0x1.c71ecp+5f,
-    0x1.1dc508p+2f, -0x1.5887fep+5f, -0x1.c6b84p+5f, 0x1.d21e5p+1f,
-    -0x1.4ca8bep+5f, -0x1.cb47cp+5f, 0x1.8b38e8p+2f, -0x1.3f3406p+5f,
-    -0x1.c7854p+5f, 0x1.8af418p+2f, -0x1.68a6b6p+5f, -0x1.bbeb8p+5f,
-    0x1.0f3b4p-1f, -0x1.9487fep+5f, -0x1.af334p+5f, 0x1.01cfbp+1f,
-    -0x1.7eb926p+5f, -0x1.bdeb8p+5f, 0x1.41a6ap+0f, -0x1.8a00cep+5f,
-    -0x1.b7854p+5f, 0x1.194fdp+1f, -0x1.9300cep+5f, -0x1.acp+5f,
-    0x1.76ee5p+1f, -0x1.885cf6p+5f, -0x1.b4p+5f, 0x1.f0d01p+1f,
-    -0x1.911966p+5f, -0x1.a7d7p+5f, 0x1.248588p+2f, -0x1.814a8ep+5f,
-    -0x1.b4148p+5f, 0x1.209fb8p+2f, -0x1.76652ep+5f, -0x1.bb334p+5f,
-    0x1.2ab0f8p+2f, -0x1.8b52bep+5f, -0x1.aacccp+5f, 0x1.2e7938p+2f,
-    -0x1.901136p+5f, -0x1.a5854p+5f, 0x1.8d4398p+2f, -0x1.7427bep+5f,
-    -0x1.b63d8p+5f, 0x1.915a88p+2f, -0x1.7ef89ep+5f, -0x1.aee14p+5f,
-    0x1.6eaf48p+2f, -0x1.978e1ep+5f, -0x1.9652p+5f, 0x1.fa9adp+1f,
-    -0x1.961136p+5f, -0x1.a147cp+5f, 0x1.d9fbcp-1f, -0x1.a9cfa6p+5f,
-    -0x1.8ee14p+5f, 0x1.5c53ap+0f, -0x1.b51966p+5f, -0x1.6ecccp+5f,
-    0x1.22b85p+1f, -0x1.981756p+5f, -0x1.a599cp+5f, 0x1.cf055p+1f,
-    -0x1.aa9446p+5f, -0x1.7c8f8p+5f, 0x1.358c7p+1f, -0x1.a02feep+5f,
-    -0x1.9999cp+5f, 0x1.074fd8p+2f, -0x1.9dfaaep+5f, -0x1.94b84p+5f,
-    0x1.0d79a8p+2f, -0x1.a1d1b6p+5f, -0x1.8d334p+5f, 0x1.4c4dd8p+2f,
-    -0x1.a44466p+5f, -0x1.80e14p+5f, 0x1.74bed8p+2f, -0x1.9b6d5ep+5f,
-    -0x1.8ef5cp+5f, 0x1.7ea3d8p+2f, -0x1.a09a6ep+5f, -0x1.8347cp+5f,
-    0x1.ea90fp+1f, -0x1.aecd9ep+5f, -0x1.6d1ecp+5f, 0x1.5a0abp+1f,
-    -0x1.b6c56ep+5f, -0x1.5aa4p+5f, 0x1.5405b8p+2f, -0x1.a6e216p+5f,
-    -0x1.7829p+5f, 0x1.8c7a08p+2f, -0x1.a56116p+5f, -0x1.7399cp+5f,
-    0x1.69bb28p+2f, -0x1.abc156p+5f, -0x1.62668p+5f, 0x1.8593d8p+2f,
-    -0x1.a32ddep+5f, -0x1.7b5c4p+5f, 0x1.64a71p+1f, -0x1.bac776p+5f,
-    -0x1.4429p+5f, 0x1.456798p+2f, -0x1.b19e86p+5f, -0x1.4ecccp+5f,
-    0x1.1dedf8p+2f, -0x1.b5ee66p+5f, -0x1.410a4p+5f, 0x1.27e0dp+1f,
-    -0x1.bedbf6p+5f, -0x1.2d0a4p+5f, 0x1.60779p+1f, -0x1.be58dep+5f,
-    -0x1.18cccp+5f, 0x1.74553p+1f, -0x1.bcf696p+5f, -0x1.04a4p+5f,
-    0x1.f1b8bp+1f, -0x1.b9a8bep+5f, -0x1.30e14p+5f, 0x1.062a98p+2f,
-    -0x1.b9fec6p+5f, -0x1.230a4p+5f, 0x1.136528p+2f, -0x1.b9b0eep+5f,
-    -0x1.1570cp+5f, 0x1.646318p+2f, -0x1.b429c6p+5f, -0x1.2ep+5f,
-    0x1.784f78p+2f, -0x1.b4652ep+5f, -0x1.1947cp+5f, 0x1.ce8b48p+2f,
-    -0x1.abc986p+5f, -0x1.41334p+5f, 0x1.e62dd8p+2f, -0x1.ae0d1ep+5f,
-    -0x1.143d8p+5f, 0x1.8c1478p+2f, -0x1.b354c6p+5f, -0x1.05334p+5f,
-    0x1.a64188p+2f, -0x1.b06736p+5f, -0x1.d5c28p+4f, 0x1.873408p+2f,
-    -0x1.aeee66p+5f, -0x1.ac29p+4f, 0x1.02566cp+3f, -0x1.ac3a26p+5f,
-    -0x1.ea668p+4f, 0x1.0c27bcp+3f, -0x1.aa0d1ep+5f, -0x1.c30a8p+4f,
-    0x1.617e88p+2f, -0x1.ad4a8ep+5f, -0x1.9052p+4f, 0x1.15ebecp+3f,
-    -0x1.a70d1ep+5f, -0x1.9c52p+4f, 0x1.08f1a8p+2f, -0x1.ab1136p+5f,
-    -0x1.73338p+4f, 0x1.15afb8p+2f, -0x1.a6b0eep+5f, -0x1.5b5cp+4f,
-    0x1.a76a18p+2f, -0x1.a6fec6p+5f, -0x1.6deb8p+4f, 0x1.c74468p+2f,
-    -0x1.9c1756p+5f, -0x1.323d8p+4f, 0x1.edab34p+3f, -0x1.89b0eep+5f,
-    -0x1.1baep+4f, 0x1.1379dap+4f, -0x1.749236p+5f, -0x1.4ae1p+3f,
-    0x1.18d3c4p+3f, -0x1.6702dep+5f, -0x1.d1ecp+2f, 0x1.e10c4cp+3f,
-    -0x1.6e54c6p+5f, -0x1.13d7p+3f, 0x1.48126cp+3f, -0x1.505cf6p+5f,
-    -0x1.452p+1f, 0x1.c3e144p+3f, -0x1.407baep+5f, 0x1.1c28p+1f,
-    0x1.d75bbcp+3f, -0x1.5f9a6ep+5f, -0x1.3eb8p+2f, 0x1.607dbcp+3f,
-    -0x1.0706f6p+5f, 0x1.d052p+3f, 0x1.168934p+3f, -0x1.40737ep+5f,
-    -0x1.bfd7p+5f, 0x1.c03398p+2f, -0x1.5b8e1ep+5f, -0x1.bep+5f,
-    0x1.f81618p+2f, -0x1.66381ep+5f, -0x1.b67bp+5f, 0x1.31f0d4p+3f,
-    -0x1.51b716p+5f, -0x1.b799cp+5f, 0x1.33b50cp+3f, -0x1.692196p+5f,
-    -0x1.ad47cp+5f, 0x1.83902cp+3f, -0x1.3579a6p+5f, -0x1.b6f5cp+5f,
-    0x1.858a74p+3f, -0x1.591b6ep+5f, -0x1.a8a4p+5f, 0x1.97a028p+2f,
-    -0x1.88f696p+5f, -0x1.a599cp+5f, 0x1.cb02d8p+2f, -0x1.82c35ep+5f,
-    -0x1.a799cp+5f, 0x1.9bb578p+2f, -0x1.8d985ep+5f, -0x1.ap+5f,
-    0x1.d78ad8p+2f, -0x1.908e1ep+5f, -0x1.96a4p+5f, 0x1.19f90cp+3f,
-    -0x1.758c16p+5f, -0x1.a9854p+5f, 0x1.02ed24p+3f, -0x1.861b6ep+5f,
-    -0x1.9f1ecp+5f, 0x1.38b15cp+3f, -0x1.7e1756p+5f, -0x1.9cf5cp+5f,
-    0x1.050344p+3f, -0x1.8ab50ep+5f, -0x1.9970cp+5f, 0x1.07992cp+3f,
-    -0x1.8eec56p+5f, -0x1.92f5cp+5f, 0x1.3a94acp+3f, -0x1.82d7dep+5f,
-    -0x1.97aep+5f, 0x1.3b865cp+3f, -0x1.875f06p+5f, -0x1.91d7p+5f,
-    0x1.514dd4p+3f, -0x1.7256d6p+5f, -0x1.a23d8p+5f, 0x1.54b7e4p+3f,
-    -0x1.7c4ea6p+5f, -0x1.98cccp+5f, 0x1.56c1bcp+3f, -0x1.80f06ep+5f,
-    -0x1.9347cp+5f, 0x1.88566cp+3f, -0x1.698c16p+5f, -0x1.9e29p+5f,
-    0x1.6e4a24p+3f, -0x1.72d7dep+5f, -0x1.9cp+5f, 0x1.dd1a98p+2f,
-    -0x1.94a08ep+5f, -0x1.8fc28p+5f, 0x1.2681d4p+3f, -0x1.912196p+5f,
-    -0x1.87aep+5f, 0x1.d5d774p+3f, -0x1.251b6ep+5f, -0x1.b1854p+5f,
-    0x1.3f9a04p+3f, -0x1.8b652ep+5f, -0x1.8acccp+5f, 0x1.593e44p+3f,
-    -0x1.853c36p+5f, -0x1.8ce14p+5f, 0x1.5c1f8cp+3f, -0x1.893a26p+5f,
-    -0x1.85d7p+5f, 0x1.70f13cp+3f, -0x1.7a5f06p+5f, -0x1.94668p+5f,
-    0x1.6b7e24p+3f, -0x1.7f6b4ep+5f, -0x1.8fc28p+5f, 0x1.75aa64p+3f,
-    -0x1.8325aep+5f, -0x1.88148p+5f, 0x1.8862b4p+3f, -0x1.7d381ep+5f,
-    -0x1.8aa4p+5f, 0x1.7e6044p+3f, -0x1.8685eep+5f, -0x1.7f854p+5f,
-    0x1.8834d4p+3f, -0x1.73d5cep+5f, -0x1.95854p+5f, 0x1.8d7efcp+3f,
-    -0x1.782feep+5f, -0x1.8f47cp+5f, 0x1.a50b74p+3f, -0x1.71a29ep+5f,
-    -0x1.90668p+5f, 0x1.911204p+3f, -0x1.80c35ep+5f, -0x1.828f8p+5f,
-    0x1.aa2ca4p+3f, -0x1.75e62ep+5f, -0x1.8ap+5f, 0x1.da7b4cp+3f,
-    -0x1.7a0f26p+5f, -0x1.72e14p+5f, 0x1.fed9e8p+2f, -0x1.a1b926p+5f,
-    -0x1.690a4p+5f, 0x1.d347a8p+2f, -0x1.a67baep+5f, -0x1.5f5c4p+5f,
-    0x1.e38fc8p+2f, -0x1.985aeep+5f, -0x1.88p+5f, 0x1.eab0f8p+2f,
-    -0x1.9bd1b6p+5f, -0x1.7f99cp+5f, 0x1.f12618p+2f, -0x1.9e0d1ep+5f,
-    -0x1.7852p+5f, 0x1.0e381cp+3f, -0x1.96faaep+5f, -0x1.82e14p+5f,
-    0x1.126fd4p+3f, -0x1.99c986p+5f, -0x1.7ae14p+5f, 0x1.152a9cp+3f,
-    -0x1.9c381ep+5f, -0x1.730a4p+5f, 0x1.382474p+3f, -0x1.9c6f66p+5f,
-    -0x1.6p+5f, 0x1.448ef4p+3f, -0x1.9d4a8ep+5f, -0x1.5147cp+5f,
-    0x1.2a0f24p+3f, -0x1.949c76p+5f, -0x1.7f5c4p+5f, 0x1.2e0484p+3f,
-    -0x1.97c776p+5f, -0x1.763d8p+5f, 0x1.31b9f4p+3f, -0x1.99d5cep+5f,
-    -0x1.6ep+5f, 0x1.42e0dcp+3f, -0x1.8f154ep+5f, -0x1.82f5cp+5f,
-    0x1.468104p+3f, -0x1.9281d6p+5f, -0x1.7a7bp+5f, 0x1.4b8a74p+3f,
-    -0x1.95631ep+5f, -0x1.70b84p+5f, 0x1.4fe144p+3f, -0x1.97bb2ep+5f,
-    -0x1.6599cp+5f, 0x1.6e2ca4p+3f, -0x1.953a26p+5f, -0x1.5d0a4p+5f,
-    0x1.9823a4p+3f, -0x1.942bd6p+5f, -0x1.3bd7p+5f, 0x1.5f6f6cp+3f,
-    -0x1.8ce426p+5f, -0x1.7deb8p+5f, 0x1.6349bcp+3f, -0x1.90239ep+5f,
-    -0x1.750a4p+5f, 0x1.67624cp+3f, -0x1.929446p+5f, -0x1.6bd7p+5f,
-    0x1.808034p+3f, -0x1.8d737ep+5f, -0x1.6eb84p+5f, 0x1.1d9ad4p+3f,
-    -0x1.a750aep+5f, -0x1.28f5cp+5f, 0x1.13f9a6p+4f, -0x1.871136p+5f,
-    -0x1.d70a8p+4f, 0x1.432a94p+3f, -0x1.a46d5ep+5f, -0x1.d948p+4f,
-    0x1.44d7dcp+3f, -0x1.a33e3ep+5f, -0x1.b1c28p+4f, 0x1.ba6944p+3f,
-    -0x1.94b0eep+5f, -0x1.7eb88p+4f, 0x1.1a9f22p+4f, -0x1.87902ep+5f,
-    -0x1.9fd7p+4f, 0x1.ddfc4cp+3f, -0x1.85a08ep+5f, -0x1.e8p+3f,
-    0x1.6e734ep+4f, -0x1.781756p+5f, -0x1.08a4p+4f, 0x1.4173b6p+4f,
-    -0x1.5456d6p+5f, -0x1.0cdp+0f, 0x1.f2580cp+3f, -0x1.3bb926p+5f,
-    -0x1.a5854p+5f, 0x1.12a95ep+4f, -0x1.20ec56p+5f, -0x1.a8148p+5f,
-    0x1.3e41bep+4f, -0x1.1b87fep+5f, -0x1.9bc28p+5f, 0x1.2295b6p+4f,
-    -0x1.2af27ep+5f, -0x1.9f0a4p+5f, 0x1.f4a5e4p+3f, -0x1.4c8a06p+5f,
-    -0x1.9beb8p+5f, 0x1.23b612p+4f, -0x1.3bcd9ep+5f, -0x1.9599cp+5f,
-    0x1.24e872p+4f, -0x1.465aeep+5f, -0x1.8d99cp+5f, 0x1.342e7ep+4f,
-    -0x1.48d5cep+5f, -0x1.830a4p+5f, 0x1.1f3296p+4f, -0x1.517fcep+5f,
-    -0x1.86f5cp+5f, 0x1.329f22p+4f, -0x1.3ed5cep+5f, -0x1.8c668p+5f,
-    0x1.c0ff2cp+3f, -0x1.6583e6p+5f, -0x1.94e14p+5f, 0x1.df6b4cp+3f,
-    -0x1.681756p+5f, -0x1.8a8f8p+5f, 0x1.e454ccp+3f, -0x1.715cf6p+5f,
-    -0x1.7dc28p+5f, 0x1.0dea7ep+4f, -0x1.67631ep+5f, -0x1.788f8p+5f,
-    0x1.0218c6p+4f, -0x1.720d1ep+5f, -0x1.708f8p+5f, 0x1.110ce6p+4f,
-    -0x1.6efcb6p+5f, -0x1.695c4p+5f, 0x1.03dbbep+4f, -0x1.758e1ep+5f,
-    -0x1.683d8p+5f, 0x1.257b16p+4f, -0x1.5e7796p+5f, -0x1.74148p+5f,
-    0x1.db9444p+3f, -0x1.8100cep+5f, -0x1.62148p+5f, 0x1.17dfdap+4f,
-    -0x1.7479a6p+5f, -0x1.551ecp+5f, 0x1.1e3a5ep+4f, -0x1.68487ep+5f,
-    -0x1.6a29p+5f, 0x1.33be42p+4f, -0x1.5fbb2ep+5f, -0x1.668f8p+5f,
-    0x1.226f9ep+4f, -0x1.6b4466p+5f, -0x1.60a4p+5f, 0x1.aa243ep+4f,
-    -0x1.4b56d6p+5f, -0x1.1547cp+5f, 0x1.6b9d16p+4f, -0x1.6bea46p+5f,
-    -0x1.fca4p+4f, 0x1.0acfdep+4f, -0x1.7cf06ep+5f, -0x1.49c28p+5f,
-    0x1.844f3ep+4f, -0x1.610b0ep+5f, -0x1.06148p+5f, 0x1.67e876p+4f,
-    -0x1.75b716p+5f, -0x1.ab0a8p+4f, 0x1.83868ep+4f, -0x1.75cb8ep+5f,
-    -0x1.311fp+4f, 0x1.4c74eep+4f, -0x1.796d5ep+5f, -0x1.c19ap+3f,
-    0x1.8a7aaep+4f, -0x1.5a6736p+5f, -0x1.8cccp+1f, 0x1.e4d046p+4f,
-    -0x1.546f66p+5f, -0x1.a52p+1f, 0x1.3fa5aep+4f, -0x1.3206f6p+5f,
-    -0x1.8f1ecp+5f, 0x1.705846p+4f, -0x1.13d9e6p+5f, -0x1.89eb8p+5f,
-    0x1.4fa88ep+4f, -0x1.39b926p+5f, -0x1.807bp+5f, 0x1.43cd02p+4f,
-    -0x1.4aacd6p+5f, -0x1.7747cp+5f, 0x1.e355cep+4f, -0x1.13964ep+5f,
-    -0x1.3e148p+5f, 0x1.96cfdep+4f, -0x1.3c1b6ep+5f, -0x1.44148p+5f,
-    0x1.e8d876p+4f, -0x1.2583e6p+5f, -0x1.2229p+5f, 0x1.d95706p+4f,
-    -0x1.45d5cep+5f, -0x1.efaep+4f, 0x1.ef1daep+4f, -0x1.35b50ep+5f,
-    -0x1.03854p+5f, 0x1.ad940ep+4f, -0x1.67652ep+5f, -0x1.8852p+4f,
-    0x1.e0d38ep+4f, -0x1.55d5cep+5f, -0x1.95708p+4f, 0x1.e865c6p+4f,
-    -0x1.5cd9e6p+5f, -0x1.52b88p+4f, 0x1.b1ac3ep+4f, -0x1.694466p+5f,
-    -0x1.6b85p+4f, 0x1.d0d9b6p+4f, -0x1.653e3ep+5f, -0x1.3b338p+4f,
-    0x1.a96216p+4f, -0x1.6e50aep+5f, -0x1.3c52p+4f, 0x1.897f2ep+4f,
-    -0x1.72bf46p+5f, -0x1.6c29p+4f, 0x1.ae569ep+4f, -0x1.6db50ep+5f,
-    -0x1.13aep+4f, 0x1.d4ae46p+4f, -0x1.63631ep+5f, -0x1.6385p+3f,
-    0x1.f8ef66p+4f, -0x1.5dc56ep+5f, -0x1.923ep+3f, 0x1.fdee2ep+4f,
-    -0x1.5bf89ep+5f, -0x1.0baep+4f, 0x1.f94ed6p+4f, -0x1.57239ep+5f,
-    -0x1.7c2ap+2f, 0x1.fb6216p+4f, -0x1.024466p+5f, -0x1.3fd7p+5f,
-    0x1.029c28p+5f, -0x1.1a87fep+5f, -0x1.1aa4p+5f, 0x1.2f605cp+5f,
-    -0x1.0300cep+5f, -0x1.de3d8p+4f, 0x1.0c6d78p+5f, -0x1.24d7dep+5f,
-    -0x1.f785p+4f, 0x1.009b8cp+5f, -0x1.3a1136p+5f, -0x1.d9998p+4f,
-    0x1.0363a4p+5f, -0x1.4425aep+5f, -0x1.a5c28p+4f, 0x1.40327cp+5f,
-    -0x1.218e1ep+5f, -0x1.44f6p+4f, 0x1.0925c8p+5f, -0x1.5185eep+5f,
-    -0x1.3eb88p+4f, 0x1.06946p+5f, -0x1.4cfaaep+5f, -0x1.6bd7p+4f,
-    0x1.2c036p+5f, -0x1.3887fep+5f, -0x1.2c7bp+4f, 0x1.312388p+5f,
-    -0x1.41aee6p+5f, -0x1.a571p+3f, 0x1.33d3ep+5f, -0x1.43c776p+5f,
-    -0x1.33d7p+3f, 0x1.1c3f64p+5f, -0x1.4dc986p+5f, -0x1.bd7p+2f,
-    0x1.1474d8p+5f, -0x1.48fec6p+5f, -0x1.d708p+0f, 0x1.185cacp+5f,
-    -0x1.4c08fep+5f, -0x1.17aep+2f, 0x1.2a801cp+5f, -0x1.4729c6p+5f,
-    -0x1.7334p+2f, 0x1.2f5ba8p+5f, -0x1.3f652ep+5f, -0x1.0cdp+0f,
+    -0x1.e5542cp+4f, -0x1.217176p+5f, -0x1.3cf5c2p+4f, -0x1.cf7212p+4f,
+    -0x1.b158e2p+5f, -0x1.25c29p+5f, -0x1.c5ec8cp+4f, -0x1.b62196p+5f,
+    -0x1.326666p+5f, -0x1.dacaf4p+4f, -0x1.7cacdap+5f, -0x1.873334p+4f,
+    -0x1.d45566p+4f, -0x1.8e1d7ep+5f, -0x1.b28f5cp+4f, -0x1.cc47e2p+4f,
+    -0x1.993404p+5f, -0x1.d451ecp+4f, -0x1.00c5bcp+5f, -0x1.31aee6p+5f,
+    -0x1.47ae14p+4f, -0x1.f17212p+4f, -0x1.6d5aeep+5f, -0x1.75eb86p+4f,
+    -0x1.f8a9c8p+4f, -0x1.507fccp+5f, -0x1.575c28p+4f, -0x1.dbf58ep+4f,
+    -0x1.46c56ep+5f, -0x1.44f5c2p+4f, -0x1.ee7a44p+4f, -0x1.61c362p+5f,
+    -0x1.64p+4f, -0x1.9d37eap+4f, -0x1.65e632p+5f, -0x1.41999ap+4f,
+    -0x1.acf6c8p+4f, -0x1.6eaee6p+5f, -0x1.5428f6p+4f, -0x1.a82f5p+4f,
+    -0x1.57aacep+5f, -0x1.39c29p+4f, -0x1.a1cc98p+4f, -0x1.c9559cp+4f,
+    -0x1.46b852p+4f, -0x1.c9896cp+4f, -0x1.0ba6b6p+5f, -0x1.38f5c2p+4f,
+    -0x1.ae876p+4f, -0x1.037382p+5f, -0x1.33ae14p+4f, -0x1.bc8e56p+4f,
+    -0x1.17d3c4p+5f, -0x1.3170a4p+4f, -0x1.bde80ap+4f, -0x1.2c779ap+5f,
+    -0x1.30ccccp+4f, -0x1.cc6d28p+4f, -0x1.36d7dcp+5f, -0x1.3828f6p+4f,
+    -0x1.a4982ap+4f, -0x1.3f9c78p+5f, -0x1.29eb86p+4f, -0x1.a7eae8p+4f,
+    -0x1.bd58e2p+5f, -0x1.5451ecp+5f, -0x1.81b6e2p+4f, -0x1.c16d5cp+5f,
+    -0x1.553334p+5f, -0x1.97d9b4p+4f, -0x1.bf4a8cp+5f, -0x1.46a3d8p+5f,
+    -0x1.a92dacp+4f, -0x1.b78e22p+5f, -0x1.25c29p+5f, -0x1.a2c18ap+4f,
+    -0x1.b08e22p+5f, -0x1.0d3334p+5f, -0x1.b15638p+4f, -0x1.bbfaacp+5f,
+    -0x1.4651ecp+5f, -0x1.bacd02p+4f, -0x1.b90d1cp+5f, -0x1.38e148p+5f,
+    -0x1.ac6b1cp+4f, -0x1.ba154cp+5f, -0x1.327ae2p+5f, -0x1.a14e08p+4f,
+    -0x1.bcb924p+5f, -0x1.391eb8p+5f, -0x1.914bfcp+4f, -0x1.bca29cp+5f,
+    -0x1.2c51ecp+5f, -0x1.8e1168p+4f, -0x1.b9bd3cp+5f, -0x1.1fc29p+5f,
+    -0x1.b91582p+4f, -0x1.a7f27cp+5f, -0x1.0147aep+5f, -0x1.9dfbb2p+4f,
+    -0x1.a9d9e8p+5f, -0x1.f6b852p+4f, -0x1.8aebbap+4f, -0x1.a10902p+5f,
+    -0x1.c8ccccp+4f, -0x1.7aec22p+4f, -0x1.b3b2fep+5f, -0x1.07999ap+5f,
+    -0x1.72fae2p+4f, -0x1.bb2dep+5f, -0x1.1ap+5f, -0x1.5b1ad4p+4f,
+    -0x1.acf488p+5f, -0x1.e147aep+4f, -0x1.b492d8p+4f, -0x1.856d5cp+5f,
+    -0x1.863d7p+4f, -0x1.ac7972p+4f, -0x1.92154cp+5f, -0x1.a6b852p+4f,
+    -0x1.9165cap+4f, -0x1.9327bcp+5f, -0x1.9b851ep+4f, -0x1.2a1db2p+4f,
+    -0x1.829c78p+5f, -0x1.39999ap+4f, -0x1.631db2p+4f, -0x1.a3404ep+5f,
+    -0x1.be6666p+4f, -0x1.9e97f6p+3f, -0x1.8cd3c4p+5f, -0x1.2f5c28p+4f,
+    -0x1.6e542cp+4f, -0x1.7383e4p+5f, -0x1.3cccccp+4f, -0x1.be484cp+4f,
+    -0x1.7a58e2p+5f, -0x1.72147ap+4f, -0x1.792f5p+4f, -0x1.ae268p+4f,
+    -0x1.3eb852p+4f, -0x1.5335dcp+4f, -0x1.553d08p+4f, -0x1.5e3d7p+4f,
+    -0x1.935a52p+4f, -0x1.e99724p+4f, -0x1.30ccccp+4f, -0x1.a1d6d6p+4f,
+    -0x1.22d7dcp+5f, -0x1.24a3d8p+4f, -0x1.a30a72p+4f, -0x1.30dbf4p+5f,
+    -0x1.2570a4p+4f, -0x1.9a86f6p+4f, -0x1.14b0f2p+5f, -0x1.235c28p+4f,
+    -0x1.862e14p+4f, -0x1.1fa29cp+5f, -0x1.15eb86p+4f, -0x1.8552f2p+4f,
+    -0x1.0bc154p+5f, -0x1.1a3d7p+4f, -0x1.6d742p+4f, -0x1.400f28p+5f,
+    -0x1.0c51ecp+4f, -0x1.715cc6p+4f, -0x1.58986p+5f, -0x1.1e8f5cp+4f,
+    -0x1.6b0fc6p+4f, -0x1.29d5dp+5f, -0x1.0547aep+4f, -0x1.5575c2p+4f,
+    -0x1.1202dep+5f, -0x1.ee147ap+3f, -0x1.670588p+4f, -0x1.696d5cp+5f,
+    -0x1.2a3d7p+4f, -0x1.6034a2p+4f, -0x1.c4f766p+4f, -0x1.1cccccp+4f,
+    -0x1.691a6cp+4f, -0x1.01b0f2p+5f, -0x1.0cp+4f, -0x1.456632p+4f,
+    -0x1.b0432cp+4f, -0x1.0cf5c2p+4f, -0x1.3a5fa4p+4f, -0x1.db182ap+4f,
+    -0x1.ddc29p+3f, -0x1.86d0bp+4f, -0x1.bd381ep+5f, -0x1.6b851ep+5f,
+    -0x1.60afecp+4f, -0x1.becb92p+5f, -0x1.6d70a4p+5f, -0x1.63c60ap+4f,
+    -0x1.b97fccp+5f, -0x1.7bc29p+5f, -0x1.0d5844p+4f, -0x1.b26d5cp+5f,
+    -0x1.8dd70ap+5f, -0x1.30bc9ep+4f, -0x1.ba04eap+5f, -0x1.7deb86p+5f,
+    -0x1.3a96fp+4f, -0x1.bf5cfap+5f, -0x1.6fd70ap+5f, -0x1.76ae48p+4f,
+    -0x1.c16114p+5f, -0x1.5cf5c2p+5f, -0x1.5241bep+4f, -0x1.c16944p+5f,
+    -0x1.666666p+5f, -0x1.4ed9b4p+4f, -0x1.c46d5cp+5f, -0x1.5770a4p+5f,
+    -0x1.2c27fp+4f, -0x1.c21134p+5f, -0x1.68b852p+5f, -0x1.28bbcep+4f,
+    -0x1.c5a4a8p+5f, -0x1.59851ep+5f, -0x1.89762cp+4f, -0x1.c083e4p+5f,
+    -0x1.4028f6p+5f, -0x1.7973b6p+4f, -0x1.c083e4p+5f, -0x1.3347aep+5f,
+    -0x1.82f0a4p+4f, -0x1.bcd7dcp+5f, -0x1.2628f6p+5f, -0x1.7e6148p+4f,
+    -0x1.c20b1p+5f, -0x1.4747aep+5f, -0x1.6e5b22p+4f, -0x1.c281d8p+5f,
+    -0x1.3a28f6p+5f, -0x1.4b7f98p+4f, -0x1.c59a6cp+5f, -0x1.493334p+5f,
+    -0x1.51c7aep+4f, -0x1.c32dep+5f, -0x1.2e7ae2p+5f, -0x1.5b1f56p+4f,
+    -0x1.bf6d5cp+5f, -0x1.20e148p+5f, -0x1.482fb8p+4f, -0x1.c57bb2p+5f,
+    -0x1.3b851ep+5f, -0x1.34f0a4p+4f, -0x1.c2dbf4p+5f, -0x1.22p+5f,
+    -0x1.1ebe42p+4f, -0x1.c70902p+5f, -0x1.2fc29p+5f, -0x1.23b19p+4f,
+    -0x1.c7d1b8p+5f, -0x1.44p+5f, -0x1.57e872p+4f, -0x1.bc1134p+5f,
+    -0x1.147ae2p+5f, -0x1.138902p+4f, -0x1.a6aacep+5f, -0x1.aa6666p+4f,
+    -0x1.25896cp+4f, -0x1.756d5cp+5f, -0x1.1b3334p+4f, -0x1.12c4dp+4f,
+    -0x1.62cd9ep+5f, -0x1.ea8f5cp+3f, -0x1.a2a36ep+3f, -0x1.6d9a6cp+5f,
+    -0x1.ce6666p+3f, -0x1.0da196p+4f, -0x1.28432cp+4f, -0x1.14ccccp+4f,
+    -0x1.28f10cp+4f, -0x1.781e5p+4f, -0x1.0c28f6p+4f, -0x1.197766p+4f,
+    -0x1.6edabap+4f, -0x1.ec28f6p+3f, -0x1.2fe3f2p+4f, -0x1.a74538p+4f,
+    -0x1.efae14p+3f, -0x1.1cc4dp+4f, -0x1.b5c01ap+4f, -0x1.b0f5c2p+3f,
+    -0x1.2af03ap+4f, -0x1.ee63f2p+4f, -0x1.b6147ap+3f, -0x1.217838p+4f,
+    -0x1.89b3dp+4f, -0x1.e7ae14p+3f, -0x1.1d1fbep+4f, -0x1.9e1206p+4f,
+    -0x1.c47ae2p+3f, -0x1.4c9134p+4f, -0x1.038a0ap+5f, -0x1.e8a3d8p+3f,
+    -0x1.3f21cap+4f, -0x1.153612p+5f, -0x1.cb851ep+3f, -0x1.131e84p+4f,
+    -0x1.06a6b6p+5f, -0x1.8428f6p+3f, -0x1.2fa546p+4f, -0x1.27e21ap+5f,
+    -0x1.b851ecp+3f, -0x1.0dc0b8p+4f, -0x1.d4e2ecp+4f, -0x1.7f5c28p+3f,
+    -0x1.dc3c36p+3f, -0x1.3452bep+5f, -0x1.6c28f6p+3f, -0x1.fe5c28p+3f,
+    -0x1.4725aep+5f, -0x1.9b851ep+3f, -0x1.b614e4p+3f, -0x1.120b1p+5f,
+    -0x1.2d1eb8p+3f, -0x1.86bc02p+3f, -0x1.2de21ap+5f, -0x1.3051ecp+3f,
+    -0x1.b066dp+3f, -0x1.52d7dcp+5f, -0x1.8947aep+3f, -0x1.fffaacp+3f,
+    -0x1.2cd288p+4f, -0x1.b9eb86p+3f, -0x1.073718p+4f, -0x1.60ce7p+4f,
+    -0x1.a8f5c2p+3f, -0x1.f42a3p+3f, -0x1.3ae704p+4f, -0x1.78p+3f,
+    -0x1.148cb2p+4f, -0x1.81cc64p+4f, -0x1.c1eb86p+3f, -0x1.0d734ep+4f,
+    -0x1.94d288p+4f, -0x1.9851ecp+3f, -0x1.00186p+4f, -0x1.7e9d4ap+4f,
+    -0x1.70a3d8p+3f, -0x1.10c3fep+4f, -0x1.af6e2ep+4f, -0x1.92e148p+3f,
+    -0x1.f9425ap+3f, -0x1.a34952p+4f, -0x1.5947aep+3f, -0x1.e20b1p+3f,
+    -0x1.54eb1cp+4f, -0x1.2d70a4p+3f, -0x1.d9dfa4p+3f, -0x1.894d6ap+4f,
+    -0x1.1f0a3ep+3f, -0x1.cafa44p+3f, -0x1.e7cc64p+4f, -0x1.270a3ep+3f,
+    -0x1.dec1bep+3f, -0x1.b684b6p+4f, -0x1.30f5c2p+3f, -0x1.ab69aep+3f,
+    -0x1.01a6b6p+5f, -0x1.147ae2p+3f, -0x1.a9d4fep+3f, -0x1.60eb1cp+4f,
+    -0x1.3eb852p+2f, -0x1.952b6ap+3f, -0x1.41dcc6p+4f, -0x1.30a3d8p+1f,
+    -0x1.04e282p+3f, -0x1.a9aee6p+5f, -0x1.9cccccp+5f, -0x1.2133dp+4f,
+    -0x1.bf56d6p+5f, -0x1.71851ep+5f, -0x1.045916p+4f, -0x1.c46114p+5f,
+    -0x1.6370a4p+5f, -0x1.f646dcp+3f, -0x1.becb92p+5f, -0x1.7451ecp+5f,
+    -0x1.89d288p+3f, -0x1.c358e2p+5f, -0x1.6828f6p+5f, -0x1.4137b4p+3f,
+    -0x1.bf4c98p+5f, -0x1.7347aep+5f, -0x1.00efp+4f, -0x1.c7acdap+5f,
+    -0x1.546666p+5f, -0x1.c1a57ap+3f, -0x1.cabd3cp+5f, -0x1.395c28p+5f,
+    -0x1.68367ap+3f, -0x1.cadep+5f, -0x1.206666p+5f, -0x1.78c0ecp+3f,
+    -0x1.cb7fccp+5f, -0x1.427ae2p+5f, -0x1.698f5cp+3f, -0x1.c76b5p+5f,
+    -0x1.59999ap+5f, -0x1.3f44dp+3f, -0x1.ccd5dp+5f, -0x1.35eb86p+5f,
+    -0x1.6e58e2p+3f, -0x1.c01b72p+5f, -0x1.f5999ap+4f, -0x1.5b49bap+3f,
+    -0x1.c529c8p+5f, -0x1.0747aep+5f, -0x1.abe1bp+2f, -0x1.9b5cfap+5f,
+    -0x1.3ee148p+4f, -0x1.ab89ap+3f, -0x1.7b81d8p+5f, -0x1.0428f6p+4f,
+    -0x1.986114p+3f, -0x1.85dbf4p+5f, -0x1.19c29p+4f, -0x1.291d7ep+3f,
+    -0x1.81f8ap+5f, -0x1.f51eb8p+3f, -0x1.578db8p+3f, -0x1.750b1p+5f,
+    -0x1.cc28f6p+3f, -0x1.668a0ap+3f, -0x1.632bd4p+5f, -0x1.9428f6p+3f,
+    -0x1.15d014p+3f, -0x1.8b1b72p+5f, -0x1.1028f6p+4f, -0x1.dff07p+2f,
+    -0x1.7d923ap+5f, -0x1.cc28f6p+3f, 0x1.ad66dp+0f, -0x1.504a8cp+5f,
+    -0x1.7p+2f, -0x1.9ff27cp+3f, -0x1.9c8ce8p+4f, -0x1.866666p+2f,
+    -0x1.868e22p+3f, -0x1.b87454p+4f, -0x1.6d70a4p+2f, -0x1.56a44p+3f,
+    -0x1.ef4538p+4f, -0x1.6c28f6p+2f, -0x1.5d8ce8p+3f, -0x1.08bf48p+5f,
+    -0x1.b70a3ep+2f, -0x1.2bp+3f, -0x1.158a0ap+5f, -0x1.9a3d7p+2f,
+    -0x1.3210ccp+3f, -0x1.04bf48p+5f, -0x1.60a3d8p+2f, -0x1.ddbe76p+2f,
+    -0x1.0fa09p+5f, -0x1.2b851ep+2f, -0x1.c9367ap+2f, -0x1.2a58e2p+5f,
+    -0x1.a0a3d8p+2f, -0x1.73f4fp+3f, -0x1.65f142p+4f, -0x1.970a3ep+0f,
+    -0x1.48766p+3f, -0x1.9fd496p+4f, -0x1.03d70ap+1f, -0x1.1b51ecp+3f,
+    -0x1.ebe0dep+4f, -0x1.ep+1f, -0x1.f00f9p+2f, -0x1.baef34p+4f,
+    0x1.1eb852p-4f, -0x1.4a63f2p+2f, -0x1.ebafb8p+4f, 0x1.c28f5cp-4f,
+    -0x1.1d96bcp+3f, -0x1.6d8ef4p+4f, 0x1.bc28f6p+1f, -0x1.925bcp+2f,
+    -0x1.aff142p+4f, 0x1.8a3d7p+1f, -0x1.51c84cp+2f, -0x1.8cbf48p+5f,
+    -0x1.bc3d7p+5f, -0x1.440aa6p+2f, -0x1.96d3c4p+5f, -0x1.b33334p+5f,
+    -0x1.8a432cp+2f, -0x1.8250bp+5f, -0x1.c451ecp+5f, -0x1.cb3f7cp+2f,
+    -0x1.b1cfaap+5f, -0x1.8f1eb8p+5f, -0x1.77f07p+2f, -0x1.a0779ap+5f,
+    -0x1.a8b852p+5f, -0x1.06d014p+2f, -0x1.a8e426p+5f, -0x1.9cp+5f,
+    -0x1.1d43fep+3f, -0x1.c69a6cp+5f, -0x1.5c28f6p+5f, -0x1.44617cp+2f,
+    -0x1.c07fccp+5f, -0x1.6a28f6p+5f, -0x1.8a51ecp+2f, -0x1.b904eap+5f,
+    -0x1.7f47aep+5f, -0x1.2ffaacp+3f, -0x1.ca52bep+5f, -0x1.4c6666p+5f,
+    -0x1.ecf34ep+2f, -0x1.cbf07p+5f, -0x1.3fc29p+5f, -0x1.fa7c84p+2f,
+    -0x1.c9a8c2p+5f, -0x1.4e6666p+5f, -0x1.df9168p+2f, -0x1.ccec56p+5f,
+    -0x1.31999ap+5f, -0x1.9bed28p+2f, -0x1.c6aee6p+5f, -0x1.5828f6p+5f,
+    -0x1.1e82aap+3f, -0x1.ccb718p+5f, -0x1.27851ep+5f, -0x1.7a1a36p+2f,
+    -0x1.cc404ep+5f, -0x1.33999ap+5f, -0x1.54d0e6p+2f, -0x1.ca6114p+5f,
+    -0x1.42f5c2p+5f, -0x1.15710cp+3f, -0x1.ca7bb2p+5f, -0x1.1570a4p+5f,
+    -0x1.220068p+3f, -0x1.c32bd4p+5f, -0x1.f828f6p+4f, -0x1.0efb16p+3f,
+    -0x1.c79446p+5f, -0x1.08e148p+5f, -0x1.d25532p+2f, -0x1.ccb50cp+5f,
+    -0x1.23eb86p+5f, -0x1.be7fccp+2f, -0x1.c9d5dp+5f, -0x1.103d7p+5f,
+    -0x1.266f6ap+2f, -0x1.c9fcbap+5f, -0x1.130a3ep+5f, -0x1.2ebe76p+3f,
+    -0x1.b8cd9ep+5f, -0x1.c828f6p+4f, -0x1.ab7248p+2f, -0x1.c51f8ap+5f,
+    -0x1.fbae14p+4f, -0x1.9ea71ep+2f, -0x1.c13612p+5f, -0x1.e3851ep+4f,
+    -0x1.45d07cp+2f, -0x1.c5d7dcp+5f, -0x1.fe8f5cp+4f, -0x1.1f844ep+2f,
+    -0x1.b95aeep+5f, -0x1.b66666p+4f, -0x1.062a9ap+2f, -0x1.af7bb2p+5f,
+    -0x1.87ae14p+4f, -0x1.38fec6p+2f, -0x1.c21b72p+5f, -0x1.e63d7p+4f,
+    -0x1.069518p+2f, -0x1.98f07p+5f, -0x1.2a8f5cp+4f, -0x1.661f22p+2f,
+    -0x1.93c56ep+5f, -0x1.1dc29p+4f, -0x1.b1eb86p-2f, -0x1.a55f06p+5f,
+    -0x1.523d7p+4f, -0x1.8656d6p+2f, -0x1.889652p+5f, -0x1.f8p+3f,
+    -0x1.0e865ap+2f, -0x1.807bb2p+5f, -0x1.bc7ae2p+3f, -0x1.db1de6p+1f,
+    -0x1.8c632p+5f, -0x1.fbd70ap+3f, -0x1.ed5326p+0f, -0x1.8785fp+5f,
+    -0x1.d3d70ap+3f, -0x1.9e1062p+2f, -0x1.4279a6p+5f, -0x1.fe147ap+2f,
+    -0x1.25c77ap+1f, -0x1.3afec6p+5f, -0x1.5c28f6p+2f, -0x1.640d1cp+1f,
+    -0x1.27acdap+5f, -0x1.ep+1f, 0x1.1753f8p+1f, -0x1.3ed3c4p+5f,
+    -0x1.9d70a4p+1f, 0x1.ee76c8p-1f, -0x1.271b72p+5f, -0x1.99999ap-1f,
+    -0x1.21ed28p+1f, -0x1.ead288p+4f, 0x1.033334p+2f, 0x1.b1a36ep-1f,
+    -0x1.0bf488p+5f, 0x1.f5c29p+1f, 0x1.91d2f2p+1f, -0x1.015f06p+5f,
+    0x1.2570a4p+3f, -0x1.25e282p+2f, -0x1.76d5dp+5f, -0x1.ca7ae2p+5f,
+    -0x1.57e0dep+1f, -0x1.7081d8p+5f, -0x1.cc7ae2p+5f, -0x1.0f9724p-1f,
+    -0x1.6f7bb2p+5f, -0x1.caa3d8p+5f, -0x1.d997f6p+1f, -0x1.873a2ap+5f,
+    -0x1.c028f6p+5f, -0x1.793262p+1f, -0x1.7c0f28p+5f, -0x1.c6e148p+5f,
+    -0x1.09a1cap+1f, -0x1.86c362p+5f, -0x1.bf70a4p+5f, -0x1.f03126p+0f,
+    -0x1.95fcbap+5f, -0x1.b2p+5f, -0x1.51b3dp+0f, -0x1.7b83e4p+5f,
+    -0x1.c6p+5f, 0x1.8bd3c4p-2f, -0x1.857382p+5f, -0x1.bcf5c2p+5f,
+    -0x1.675f7p-2f, -0x1.903e42p+5f, -0x1.b55c28p+5f, -0x1.0f1de6p+0f,
+    -0x1.9a50bp+5f, -0x1.acp+5f, -0x1.f66e98p+1f, -0x1.b100d2p+5f,
+    -0x1.8dae14p+5f, -0x1.508e8ap+1f, -0x1.9fa4a8p+5f, -0x1.a7ae14p+5f,
+    -0x1.728db8p+1f, -0x1.b7aacep+5f, -0x1.7cf5c2p+5f, -0x1.ec1f22p+0f,
+    -0x1.a804eap+5f, -0x1.9a8f5cp+5f, -0x1.24d4fep+1f, -0x1.b01134p+5f,
+    -0x1.8c51ecp+5f, -0x1.55288cp+0f, -0x1.b3d7dcp+5f, -0x1.815c28p+5f,
+    0x1.7c2f84p-1f, -0x1.a1e83ep+5f, -0x1.9d47aep+5f, -0x1.7a71dep-1f,
+    -0x1.ab4468p+5f, -0x1.91eb86p+5f, -0x1.460418p-1f, -0x1.aef488p+5f,
+    -0x1.8a147ap+5f, 0x1.6bfb16p-2f, -0x1.b2b0f2p+5f, -0x1.7cb852p+5f,
+    -0x1.4d288cp-2f, -0x1.b77382p+5f, -0x1.730a3ep+5f, -0x1.59013ap+1f,
+    -0x1.bccd9ep+5f, -0x1.6e3d7p+5f, -0x1.fa354p+1f, -0x1.c5923ap+5f,
+    -0x1.5451ecp+5f, -0x1.b6c084p+1f, -0x1.ca4ea4p+5f, -0x1.30147ap+5f,
+    -0x1.df020cp+1f, -0x1.c86944p+5f, -0x1.4570a4p+5f, -0x1.f32fecp+0f,
+    -0x1.c785fp+5f, -0x1.39d70ap+5f, -0x1.3d6bbap+1f, -0x1.c1381ep+5f,
+    -0x1.5eb852p+5f, -0x1.ccac08p-1f, -0x1.bdacdap+5f, -0x1.61eb86p+5f,
+    -0x1.79eb86p+0f, -0x1.c2cb92p+5f, -0x1.513334p+5f, -0x1.dbb98cp-1f,
+    -0x1.c6986p+5f, -0x1.2bd70ap+5f, 0x1.925aeep-1f, -0x1.bb23a2p+5f,
+    -0x1.5dc29p+5f, 0x1.1a8f5cp+0f, -0x1.bee426p+5f, -0x1.47ae14p+5f,
+    0x1.41f8ap-1f, -0x1.c2f8ap+5f, -0x1.307ae2p+5f, -0x1.00d0e6p+2f,
+    -0x1.cae426p+5f, -0x1.2147aep+5f, -0x1.36f1aap+1f, -0x1.c93404p+5f,
+    -0x1.23ae14p+5f, -0x1.0f9c0ep+1f, -0x1.c74ea4p+5f, -0x1.0fd70ap+5f,
+    -0x1.67fe5cp+1f, -0x1.c6e21ap+5f, -0x1.0851ecp+5f, -0x1.7d013ap-1f,
+    -0x1.c6632p+5f, -0x1.1fae14p+5f, -0x1.0919cep+0f, -0x1.c43c36p+5f,
+    -0x1.0451ecp+5f, -0x1.bf559cp-2f, -0x1.c47dcp+5f, -0x1.0bd70ap+5f,
+    0x1.ac432cp-1f, -0x1.c31f8ap+5f, -0x1.22b852p+5f, 0x1.0ad774p+0f,
+    -0x1.c27176p+5f, -0x1.1547aep+5f, 0x1.734396p+0f, -0x1.bedep+5f,
+    -0x1.f68f5cp+4f, 0x1.1a0276p-4f, -0x1.bdd7dcp+5f, -0x1.d87ae2p+4f,
+    -0x1.b79db2p+0f, -0x1.c20f28p+5f, -0x1.ed1eb8p+4f, -0x1.04986p+0f,
+    -0x1.b4134p+5f, -0x1.987ae2p+4f, -0x1.1adc5ep+1f, -0x1.bc9e84p+5f,
+    -0x1.c6b852p+4f, 0x1.7648e8p+0f, -0x1.b22196p+5f, -0x1.9170a4p+4f,
+    0x1.45c0ecp+1f, -0x1.b9c56ep+5f, -0x1.d35c28p+4f, 0x1.793c36p+1f,
+    -0x1.b33c36p+5f, -0x1.a1c29p+4f, 0x1.6cfc5p+1f, -0x1.a46114p+5f,
+    -0x1.4c28f6p+4f, 0x1.2d3a92p+1f, -0x1.9c1134p+5f, -0x1.28p+4f,
+    0x1.16bb98p-4f, -0x1.9752bep+5f, -0x1.191eb8p+4f, 0x1.5f6114p+1f,
+    -0x1.8fe426p+5f, -0x1.f6147ap+3f, 0x1.94076p+2f, -0x1.8523a2p+5f,
+    -0x1.a7ae14p+3f, 0x1.2f07c8p+2f, -0x1.9cd1b8p+5f, -0x1.2c7ae2p+4f,
+    0x1.74b6aep+2f, -0x1.949446p+5f, -0x1.0bd70ap+4f, 0x1.2d0554p+2f,
+    -0x1.65ec56p+5f, -0x1.ea3d7p+2f, 0x1.ca87fcp+2f, -0x1.46c56ep+5f,
+    -0x1.cp+0f, 0x1.43f6fep+2f, -0x1.34f488p+5f, 0x1.eb851ep-3f,
+    0x1.301134p+2f, -0x1.21e21ap+5f, 0x1.d47ae2p+1f, 0x1.212196p+3f,
+    -0x1.256d5cp+5f, 0x1.7851ecp+2f, 0x1.c1a29cp+2f, -0x1.f57a78p+4f,
+    0x1.cd1eb8p+3f, 0x1.1df07p+0f, -0x1.62134p+5f, -0x1.cc28f6p+5f,
+    0x1.f79724p+0f, -0x1.737dcp+5f, -0x1.c43d7p+5f, 0x1.1f06f6p-3f,
+    -0x1.7aacdap+5f, -0x1.c46666p+5f, 0x1.f3ac72p+0f, -0x1.5c2196p+5f,
+    -0x1.ccp+5f, 0x1.648312p+1f, -0x1.66bb3p+5f, -0x1.c71eb8p+5f,
+    0x1.1dc504p+2f, -0x1.5887fcp+5f, -0x1.c6b852p+5f, 0x1.d21e5p+1f,
+    -0x1.4ca8c2p+5f, -0x1.cb47aep+5f, 0x1.8b38fp+2f, -0x1.3f3404p+5f,
+    -0x1.c7851ep+5f, 0x1.8af42p+2f, -0x1.68a6b6p+5f, -0x1.bbeb86p+5f,
+    0x1.0f3b64p-1f, -0x1.9487fcp+5f, -0x1.af3334p+5f, 0x1.01cfaap+1f,
+    -0x1.7eb924p+5f, -0x1.bdeb86p+5f, 0x1.41a6b6p+0f, -0x1.8a00d2p+5f,
+    -0x1.b7851ep+5f, 0x1.194fep+1f, -0x1.9300d2p+5f, -0x1.acp+5f,
+    0x1.76ee64p+1f, -0x1.885cfap+5f, -0x1.b4p+5f, 0x1.f0d014p+1f,
+    -0x1.911966p+5f, -0x1.a7d70ap+5f, 0x1.248588p+2f, -0x1.814a8cp+5f,
+    -0x1.b4147ap+5f, 0x1.209fbep+2f, -0x1.76652cp+5f, -0x1.bb3334p+5f,
+    0x1.2ab0f2p+2f, -0x1.8b52bep+5f, -0x1.aaccccp+5f, 0x1.2e793ep+2f,
+    -0x1.901134p+5f, -0x1.a5851ep+5f, 0x1.8d4396p+2f, -0x1.7427bcp+5f,
+    -0x1.b63d7p+5f, 0x1.915a86p+2f, -0x1.7ef8ap+5f, -0x1.aee148p+5f,
+    0x1.6eaf5p+2f, -0x1.978e22p+5f, -0x1.9651ecp+5f, 0x1.fa9ad4p+1f,
+    -0x1.961134p+5f, -0x1.a147aep+5f, 0x1.d9fbe8p-1f, -0x1.a9cfaap+5f,
+    -0x1.8ee148p+5f, 0x1.5c538ep+0f, -0x1.b51966p+5f, -0x1.6eccccp+5f,
+    0x1.22b852p+1f, -0x1.981758p+5f, -0x1.a5999ap+5f, 0x1.cf0554p+1f,
+    -0x1.aa9446p+5f, -0x1.7c8f5cp+5f, 0x1.358c7ep+1f, -0x1.a02fecp+5f,
+    -0x1.99999ap+5f, 0x1.074fep+2f, -0x1.9dfaacp+5f, -0x1.94b852p+5f,
+    0x1.0d79a6p+2f, -0x1.a1d1b8p+5f, -0x1.8d3334p+5f, 0x1.4c4dd2p+2f,
+    -0x1.a44468p+5f, -0x1.80e148p+5f, 0x1.74beep+2f, -0x1.9b6d5cp+5f,
+    -0x1.8ef5c2p+5f, 0x1.7ea3d8p+2f, -0x1.a09a6cp+5f, -0x1.8347aep+5f,
+    0x1.ea91p+1f, -0x1.aecd9ep+5f, -0x1.6d1eb8p+5f, 0x1.5a0aa6p+1f,
+    -0x1.b6c56ep+5f, -0x1.5aa3d8p+5f, 0x1.5405bcp+2f, -0x1.a6e21ap+5f,
+    -0x1.7828f6p+5f, 0x1.8c7a1p+2f, -0x1.a56114p+5f, -0x1.73999ap+5f,
+    0x1.69bb3p+2f, -0x1.abc154p+5f, -0x1.626666p+5f, 0x1.8593dep+2f,
+    -0x1.a32dep+5f, -0x1.7b5c28p+5f, 0x1.64a71ep+1f, -0x1.bac77ap+5f,
+    -0x1.4428f6p+5f, 0x1.4567ap+2f, -0x1.b19e84p+5f, -0x1.4eccccp+5f,
+    0x1.1dedfap+2f, -0x1.b5ee64p+5f, -0x1.410a3ep+5f, 0x1.27e0dep+1f,
+    -0x1.bedbf4p+5f, -0x1.2d0a3ep+5f, 0x1.60779ap+1f, -0x1.be58e2p+5f,
+    -0x1.18ccccp+5f, 0x1.745532p+1f, -0x1.bcf694p+5f, -0x1.04a3d8p+5f,
+    0x1.f1b8bap+1f, -0x1.b9a8c2p+5f, -0x1.30e148p+5f, 0x1.062a9ap+2f,
+    -0x1.b9fec6p+5f, -0x1.230a3ep+5f, 0x1.13652cp+2f, -0x1.b9b0f2p+5f,
+    -0x1.1570a4p+5f, 0x1.64632p+2f, -0x1.b429c8p+5f, -0x1.2ep+5f,
+    0x1.784f76p+2f, -0x1.b4652cp+5f, -0x1.1947aep+5f, 0x1.ce8b44p+2f,
+    -0x1.abc986p+5f, -0x1.413334p+5f, 0x1.e62dep+2f, -0x1.ae0d1cp+5f,
+    -0x1.143d7p+5f, 0x1.8c147ap+2f, -0x1.b354cap+5f, -0x1.053334p+5f,
+    0x1.a6418ap+2f, -0x1.b06738p+5f, -0x1.d5c29p+4f, 0x1.873404p+2f,
+    -0x1.aeee64p+5f, -0x1.ac28f6p+4f, 0x1.02566cp+3f, -0x1.ac3a2ap+5f,
+    -0x1.ea6666p+4f, 0x1.0c27bcp+3f, -0x1.aa0d1cp+5f, -0x1.c30a3ep+4f,
+    0x1.617e9p+2f, -0x1.ad4a8cp+5f, -0x1.9051ecp+4f, 0x1.15ebeep+3f,
+    -0x1.a70d1cp+5f, -0x1.9c51ecp+4f, 0x1.08f1aap+2f, -0x1.ab1134p+5f,
+    -0x1.733334p+4f, 0x1.15afb8p+2f, -0x1.a6b0f2p+5f, -0x1.5b5c28p+4f,
+    0x1.a76a16p+2f, -0x1.a6fec6p+5f, -0x1.6deb86p+4f, 0x1.c74468p+2f,
+    -0x1.9c1758p+5f, -0x1.323d7p+4f, 0x1.edab36p+3f, -0x1.89b0f2p+5f,
+    -0x1.1bae14p+4f, 0x1.1379dcp+4f, -0x1.74923ap+5f, -0x1.4ae148p+3f,
+    0x1.18d3c4p+3f, -0x1.6702dep+5f, -0x1.d1eb86p+2f, 0x1.e10c4ap+3f,
+    -0x1.6e54cap+5f, -0x1.13d70ap+3f, 0x1.48126ep+3f, -0x1.505cfap+5f,
+    -0x1.451eb8p+1f, 0x1.c3e148p+3f, -0x1.407bb2p+5f, 0x1.1c28f6p+1f,
+    0x1.d75bcp+3f, -0x1.5f9a6cp+5f, -0x1.3eb852p+2f, 0x1.607dcp+3f,
+    -0x1.0706f6p+5f, 0x1.d051ecp+3f, 0x1.168938p+3f, -0x1.407382p+5f,
+    -0x1.bfd70ap+5f, 0x1.c0339cp+2f, -0x1.5b8e22p+5f, -0x1.bep+5f,
+    0x1.f8161ep+2f, -0x1.66381ep+5f, -0x1.b67ae2p+5f, 0x1.31f0d8p+3f,
+    -0x1.51b718p+5f, -0x1.b7999ap+5f, 0x1.33b50cp+3f, -0x1.692196p+5f,
+    -0x1.ad47aep+5f, 0x1.83902ep+3f, -0x1.3579a6p+5f, -0x1.b6f5c2p+5f,
+    0x1.858a72p+3f, -0x1.591b72p+5f, -0x1.a8a3d8p+5f, 0x1.97a028p+2f,
+    -0x1.88f694p+5f, -0x1.a5999ap+5f, 0x1.cb02dep+2f, -0x1.82c362p+5f,
+    -0x1.a7999ap+5f, 0x1.9bb574p+2f, -0x1.8d986p+5f, -0x1.ap+5f,
+    0x1.d78adap+2f, -0x1.908e22p+5f, -0x1.96a3d8p+5f, 0x1.19f90ap+3f,
+    -0x1.758c16p+5f, -0x1.a9851ep+5f, 0x1.02ed28p+3f, -0x1.861b72p+5f,
+    -0x1.9f1eb8p+5f, 0x1.38b15cp+3f, -0x1.7e1758p+5f, -0x1.9cf5c2p+5f,
+    0x1.050346p+3f, -0x1.8ab50cp+5f, -0x1.9970a4p+5f, 0x1.07993p+3f,
+    -0x1.8eec56p+5f, -0x1.92f5c2p+5f, 0x1.3a94bp+3f, -0x1.82d7dcp+5f,
+    -0x1.97ae14p+5f, 0x1.3b865ap+3f, -0x1.875f06p+5f, -0x1.91d70ap+5f,
+    0x1.514dd2p+3f, -0x1.7256d6p+5f, -0x1.a23d7p+5f, 0x1.54b7eap+3f,
+    -0x1.7c4ea4p+5f, -0x1.98ccccp+5f, 0x1.56c1bep+3f, -0x1.80f07p+5f,
+    -0x1.9347aep+5f, 0x1.88566cp+3f, -0x1.698c16p+5f, -0x1.9e28f6p+5f,
+    0x1.6e4a24p+3f, -0x1.72d7dcp+5f, -0x1.9cp+5f, 0x1.dd1aap+2f,
+    -0x1.94a09p+5f, -0x1.8fc29p+5f, 0x1.2681d8p+3f, -0x1.912196p+5f,
+    -0x1.87ae14p+5f, 0x1.d5d774p+3f, -0x1.251b72p+5f, -0x1.b1851ep+5f,
+    0x1.3f9a02p+3f, -0x1.8b652cp+5f, -0x1.8accccp+5f, 0x1.593e42p+3f,
+    -0x1.853c36p+5f, -0x1.8ce148p+5f, 0x1.5c1f8ap+3f, -0x1.893a2ap+5f,
+    -0x1.85d70ap+5f, 0x1.70f142p+3f, -0x1.7a5f06p+5f, -0x1.946666p+5f,
+    0x1.6b7e28p+3f, -0x1.7f6b5p+5f, -0x1.8fc29p+5f, 0x1.75aa64p+3f,
+    -0x1.8325aep+5f, -0x1.88147ap+5f, 0x1.8862b6p+3f, -0x1.7d381ep+5f,
+    -0x1.8aa3d8p+5f, 0x1.7e6042p+3f, -0x1.8685fp+5f, -0x1.7f851ep+5f,
+    0x1.8834d6p+3f, -0x1.73d5dp+5f, -0x1.95851ep+5f, 0x1.8d7efap+3f,
+    -0x1.782fecp+5f, -0x1.8f47aep+5f, 0x1.a50b78p+3f, -0x1.71a29cp+5f,
+    -0x1.906666p+5f, 0x1.911206p+3f, -0x1.80c362p+5f, -0x1.828f5cp+5f,
+    0x1.aa2ca6p+3f, -0x1.75e632p+5f, -0x1.8ap+5f, 0x1.da7b4ap+3f,
+    -0x1.7a0f28p+5f, -0x1.72e148p+5f, 0x1.fed9e8p+2f, -0x1.a1b924p+5f,
+    -0x1.690a3ep+5f, 0x1.d347aep+2f, -0x1.a67bb2p+5f, -0x1.5f5c28p+5f,
+    0x1.e38fc6p+2f, -0x1.985aeep+5f, -0x1.88p+5f, 0x1.eab0f2p+2f,
+    -0x1.9bd1b8p+5f, -0x1.7f999ap+5f, 0x1.f12618p+2f, -0x1.9e0d1cp+5f,
+    -0x1.7851ecp+5f, 0x1.0e381ep+3f, -0x1.96faacp+5f, -0x1.82e148p+5f,
+    0x1.126fd2p+3f, -0x1.99c986p+5f, -0x1.7ae148p+5f, 0x1.152a9ap+3f,
+    -0x1.9c381ep+5f, -0x1.730a3ep+5f, 0x1.382474p+3f, -0x1.9c6f6ap+5f,
+    -0x1.6p+5f, 0x1.448ef4p+3f, -0x1.9d4a8cp+5f, -0x1.5147aep+5f,
+    0x1.2a0f28p+3f, -0x1.949c78p+5f, -0x1.7f5c28p+5f, 0x1.2e0482p+3f,
+    -0x1.97c77ap+5f, -0x1.763d7p+5f, 0x1.31b9f6p+3f, -0x1.99d5dp+5f,
+    -0x1.6ep+5f, 0x1.42e0dep+3f, -0x1.8f154cp+5f, -0x1.82f5c2p+5f,
+    0x1.468106p+3f, -0x1.9281d8p+5f, -0x1.7a7ae2p+5f, 0x1.4b8a72p+3f,
+    -0x1.95632p+5f, -0x1.70b852p+5f, 0x1.4fe148p+3f, -0x1.97bb3p+5f,
+    -0x1.65999ap+5f, 0x1.6e2ca6p+3f, -0x1.953a2ap+5f, -0x1.5d0a3ep+5f,
+    0x1.9823a2p+3f, -0x1.942bd4p+5f, -0x1.3bd70ap+5f, 0x1.5f6f6ap+3f,
+    -0x1.8ce426p+5f, -0x1.7deb86p+5f, 0x1.6349bap+3f, -0x1.9023a2p+5f,
+    -0x1.750a3ep+5f, 0x1.67624ep+3f, -0x1.929446p+5f, -0x1.6bd70ap+5f,
+    0x1.808034p+3f, -0x1.8d7382p+5f, -0x1.6eb852p+5f, 0x1.1d9ad4p+3f,
+    -0x1.a750bp+5f, -0x1.28f5c2p+5f, 0x1.13f9a6p+4f, -0x1.871134p+5f,
+    -0x1.d70a3ep+4f, 0x1.432a9ap+3f, -0x1.a46d5cp+5f, -0x1.d947aep+4f,
+    0x1.44d7dcp+3f, -0x1.a33e42p+5f, -0x1.b1c29p+4f, 0x1.ba6944p+3f,
+    -0x1.94b0f2p+5f, -0x1.7eb852p+4f, 0x1.1a9f22p+4f, -0x1.87902ep+5f,
+    -0x1.9fd70ap+4f, 0x1.ddfc5p+3f, -0x1.85a09p+5f, -0x1.e8p+3f,
+    0x1.6e734ep+4f, -0x1.781758p+5f, -0x1.08a3d8p+4f, 0x1.4173b6p+4f,
+    -0x1.5456d6p+5f, -0x1.0cccccp+0f, 0x1.f2581p+3f, -0x1.3bb924p+5f,
+    -0x1.a5851ep+5f, 0x1.12a95ep+4f, -0x1.20ec56p+5f, -0x1.a8147ap+5f,
+    0x1.3e41bep+4f, -0x1.1b87fcp+5f, -0x1.9bc29p+5f, 0x1.2295b6p+4f,
+    -0x1.2af27cp+5f, -0x1.9f0a3ep+5f, 0x1.f4a5e4p+3f, -0x1.4c8a0ap+5f,
+    -0x1.9beb86p+5f, 0x1.23b612p+4f, -0x1.3bcd9ep+5f, -0x1.95999ap+5f,
+    0x1.24e872p+4f, -0x1.465aeep+5f, -0x1.8d999ap+5f, 0x1.342e7ep+4f,
+    -0x1.48d5dp+5f, -0x1.830a3ep+5f, 0x1.1f3296p+4f, -0x1.517fccp+5f,
+    -0x1.86f5c2p+5f, 0x1.329f22p+4f, -0x1.3ed5dp+5f, -0x1.8c6666p+5f,
+    0x1.c0ff2ep+3f, -0x1.6583e4p+5f, -0x1.94e148p+5f, 0x1.df6b5p+3f,
+    -0x1.681758p+5f, -0x1.8a8f5cp+5f, 0x1.e454cap+3f, -0x1.715cfap+5f,
+    -0x1.7dc29p+5f, 0x1.0dea7ep+4f, -0x1.67632p+5f, -0x1.788f5cp+5f,
+    0x1.0218c8p+4f, -0x1.720d1cp+5f, -0x1.708f5cp+5f, 0x1.110ce8p+4f,
+    -0x1.6efcbap+5f, -0x1.695c28p+5f, 0x1.03dbcp+4f, -0x1.758e22p+5f,
+    -0x1.683d7p+5f, 0x1.257b16p+4f, -0x1.5e779ap+5f, -0x1.74147ap+5f,
+    0x1.db9446p+3f, -0x1.8100d2p+5f, -0x1.62147ap+5f, 0x1.17dfd8p+4f,
+    -0x1.7479a6p+5f, -0x1.551eb8p+5f, 0x1.1e3a5ep+4f, -0x1.68488p+5f,
+    -0x1.6a28f6p+5f, 0x1.33be42p+4f, -0x1.5fbb3p+5f, -0x1.668f5cp+5f,
+    0x1.226f9ep+4f, -0x1.6b4468p+5f, -0x1.60a3d8p+5f, 0x1.aa244p+4f,
+    -0x1.4b56d6p+5f, -0x1.1547aep+5f, 0x1.6b9d14p+4f, -0x1.6bea4ap+5f,
+    -0x1.fca3d8p+4f, 0x1.0acfep+4f, -0x1.7cf07p+5f, -0x1.49c29p+5f,
+    0x1.844f42p+4f, -0x1.610b1p+5f, -0x1.06147ap+5f, 0x1.67e872p+4f,
+    -0x1.75b718p+5f, -0x1.ab0a3ep+4f, 0x1.83868ep+4f, -0x1.75cb92p+5f,
+    -0x1.311eb8p+4f, 0x1.4c74fp+4f, -0x1.796d5cp+5f, -0x1.c1999ap+3f,
+    0x1.8a7aacp+4f, -0x1.5a6738p+5f, -0x1.8cccccp+1f, 0x1.e4d048p+4f,
+    -0x1.546f6ap+5f, -0x1.a51eb8p+1f, 0x1.3fa5aep+4f, -0x1.3206f6p+5f,
+    -0x1.8f1eb8p+5f, 0x1.705844p+4f, -0x1.13d9e8p+5f, -0x1.89eb86p+5f,
+    0x1.4fa88cp+4f, -0x1.39b924p+5f, -0x1.807ae2p+5f, 0x1.43cd02p+4f,
+    -0x1.4aacdap+5f, -0x1.7747aep+5f, 0x1.e355dp+4f, -0x1.139652p+5f,
+    -0x1.3e147ap+5f, 0x1.96cfep+4f, -0x1.3c1b72p+5f, -0x1.44147ap+5f,
+    0x1.e8d87ap+4f, -0x1.2583e4p+5f, -0x1.2228f6p+5f, 0x1.d9570ap+4f,
+    -0x1.45d5dp+5f, -0x1.efae14p+4f, 0x1.ef1db2p+4f, -0x1.35b50cp+5f,
+    -0x1.03851ep+5f, 0x1.ad9412p+4f, -0x1.67652cp+5f, -0x1.8851ecp+4f,
+    0x1.e0d38ep+4f, -0x1.55d5dp+5f, -0x1.9570a4p+4f, 0x1.e865cap+4f,
+    -0x1.5cd9e8p+5f, -0x1.52b852p+4f, 0x1.b1ac3cp+4f, -0x1.694468p+5f,
+    -0x1.6b851ep+4f, 0x1.d0d9b4p+4f, -0x1.653e42p+5f, -0x1.3b3334p+4f,
+    0x1.a9621ap+4f, -0x1.6e50bp+5f, -0x1.3c51ecp+4f, 0x1.897f2ep+4f,
+    -0x1.72bf48p+5f, -0x1.6c28f6p+4f, 0x1.ae56a2p+4f, -0x1.6db50cp+5f,
+    -0x1.13ae14p+4f, 0x1.d4ae48p+4f, -0x1.63632p+5f, -0x1.63851ep+3f,
+    0x1.f8ef6ap+4f, -0x1.5dc56ep+5f, -0x1.923d7p+3f, 0x1.fdee2ep+4f,
+    -0x1.5bf8ap+5f, -0x1.0bae14p+4f, 0x1.f94edap+4f, -0x1.5723a2p+5f,
+    -0x1.7c28f6p+2f, 0x1.fb621ap+4f, -0x1.024468p+5f, -0x1.3fd70ap+5f,
+    0x1.029c28p+5f, -0x1.1a87fcp+5f, -0x1.1aa3d8p+5f, 0x1.2f605cp+5f,
+    -0x1.0300d2p+5f, -0x1.de3d7p+4f, 0x1.0c6d78p+5f, -0x1.24d7dcp+5f,
+    -0x1.f7851ep+4f, 0x1.009b8cp+5f, -0x1.3a1134p+5f, -0x1.d9999ap+4f,
+    0x1.0363a2p+5f, -0x1.4425aep+5f, -0x1.a5c29p+4f, 0x1.40327cp+5f,
+    -0x1.218e22p+5f, -0x1.44f5c2p+4f, 0x1.0925cap+5f, -0x1.5185fp+5f,
+    -0x1.3eb852p+4f, 0x1.06946p+5f, -0x1.4cfaacp+5f, -0x1.6bd70ap+4f,
+    0x1.2c0362p+5f, -0x1.3887fcp+5f, -0x1.2c7ae2p+4f, 0x1.312388p+5f,
+    -0x1.41aee6p+5f, -0x1.a570a4p+3f, 0x1.33d3dep+5f, -0x1.43c77ap+5f,
+    -0x1.33d70ap+3f, 0x1.1c3f62p+5f, -0x1.4dc986p+5f, -0x1.bd70a4p+2f,
+    0x1.1474d6p+5f, -0x1.48fec6p+5f, -0x1.d70a3ep+0f, 0x1.185cacp+5f,
+    -0x1.4c0902p+5f, -0x1.17ae14p+2f, 0x1.2a801ap+5f, -0x1.4729c8p+5f,
+    -0x1.733334p+2f, 0x1.2f5ba6p+5f, -0x1.3f652cp+5f, -0x1.0cccccp+0f,
 };
 const float tfit_stomach_rest_file[1452] = {
     0x1.a004eap+3f, -0x1.5c3646p+7f, 0x1.137d7p+10f, 0x1.cbc91ep+3f,
@@ -6544,7 +6544,7 @@ const float tfit_stomach_rest_file[1452] = {
     0x1.0f0eb8p+10f, 0x1.274538p+4f, -0x1.824938p+7f, 0x1.0f7334p+10f,
     0x1.f8824p+3f, -0x1.7dd688p+7f, 0x1.10670ap+10f, 0x1.175aeep+4f,
     -0x1.7e5062p+7f, 0x1.109666p+10f, 0x1.2a6ae8p+4f, -0x1.7c1c28p+7f,
-    0x1.114e14p+10f, 0x1.3a6a8p+4f, -0x1.80c6a8p+7f, 0x1.10347ap+10f,
+    0x1.114e14p+10f, 0x1.3a6a7ep+4f, -0x1.80c6a8p+7f, 0x1.10347ap+10f,
     0x1.425bcp+4f, -0x1.82a56p+7f, 0x1.0fa148p+10f, 0x1.5a3bcep+4f,
     -0x1.7f170ap+7f, 0x1.10ec28p+10f, 0x1.00c3cap+4f, -0x1.75354p+7f,
     0x1.125852p+10f, 0x1.08dd3p+4f, -0x1.785f3cp+7f, 0x1.11d666p+10f,
@@ -6656,7 +6656,7 @@ const float tfit_stomach_rest_file[1452] = {
     0x1.122b36p+5f, -0x1.84a4dep+7f, 0x1.1090a4p+10f, 0x1.16ec8cp+5f,
     -0x1.85befap+7f, 0x1.102a3ep+10f, 0x1.2060aap+5f, -0x1.87072cp+7f,
     0x1.0f51ecp+10f, 0x1.22db58p+5f, -0x1.864f5cp+7f, 0x1.0fef5cp+10f,
-    0x1.35dd64p+5f, -0x1.865916p+7f, 0x1.0fd8f6p+10f, 0x1.0efbb4p+5f,
+    0x1.35dd64p+5f, -0x1.865916p+7f, 0x1.0fd8f6p+10f, 0x1.0efbb2p+5f,
     -0x1.820d5p+7f, 0x1.1150a4p+10f, 0x1.253d08p+5f, -0x1.8521cap+7f,
     0x1.10829p+10f, 0x1.26d66cp+5f, -0x1.84276cp+7f, 0x1.10e334p+10f,
     0x1.31f142p+5f, -0x1.854fep+7f, 0x1.10770ap+10f, 0x1.36bac8p+5f,
@@ -6809,7 +6809,7 @@ const float tfit_stomach_rest_file[1452] = {
     0x1.971d4ap+5f, -0x1.79f0a4p+7f, 0x1.0c3148p+10f, 0x1.98017p+5f,
     -0x1.7ace56p+7f, 0x1.0c747ap+10f, 0x1.98d014p+5f, -0x1.7b5d3p+7f,
     0x1.0caeb8p+10f, 0x1.9e3958p+5f, -0x1.799894p+7f, 0x1.0c5a3ep+10f,
-    0x1.9f4746p+5f, -0x1.7a4c4ap+7f, 0x1.0c9a3ep+10f, 0x1.9ff5f8p+5f,
+    0x1.9f4746p+5f, -0x1.7a4c4ap+7f, 0x1.0c9a3ep+10f, 0x1.9ff5f6p+5f,
     -0x1.7ae7fp+7f, 0x1.0cd8f6p+10f, 0x1.a8b46ep+5f, -0x1.7af5c2p+7f,
     0x1.0d7148p+10f, 0x1.abcf0ep+5f, -0x1.7b2c8cp+7f, 0x1.0de70ap+10f,
     0x1.a52f1ap+5f, -0x1.790106p+7f, 0x1.0c7666p+10f, 0x1.a62c72p+5f,

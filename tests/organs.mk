@@ -38,7 +38,7 @@ check-organs: $(ORGAN_NAMES:%=$(T)/organs/map-%) $(ORGAN_NAMES:%=$(FW)/m4f/golde
 	@set -e; for n in $(ORGAN_NAMES); do $(T)/organs/map-$$n coeffs/$$n.yaml; done
 	@set -e; for n in $(ORGAN_NAMES); do tests/firmware/qemu_run.sh mps2-an386 $(FW)/m4f/golden-$$n.elf; done
 	@tests/cli/guide_walkthrough.sh $(B)/bin/tissuefit ../shared/data/meshes/derived/liver_vtk_main.obj
-	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F; the walkthrough's first steps run as written"
+	@echo "ok: organ headers map their outputs to the mesh files, fit a 1 kHz tick and pass their golden vectors on M4F; the new-organ walkthrough runs as written"
 
 # The force of each picture: the envelope's largest, into the organ at its
 # site; displacements drawn to scale, or magnified where a dent of a

@@ -3,10 +3,12 @@
  */
 #include "geometry/surface_read.h"
 
+#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
 #include "base/input_file.h"
+#include "geometry/obj_digits.h"
 
 typedef int (*reader)(const char *, tf_surface *, tf_geom_msg *);
 
@@ -23,6 +25,22 @@ static reader reader_for(const char *ext)
         }
     }
     return NULL;
+}
+
+/* An OBJ's coordinates as the file writes them (assimp's are float32). */
+static int obj_digits(const char *path, tf_surface *s, tf_geom_msg *m)
+{
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    size_t len;
+    char *text = tf_input_file_read(&ctx, path, "surface mesh", TF_SURFACE_MAX_BYTES, &len);
+    int rc = text != NULL ? tf_obj_digits_restore(path, text, s, m)
+                          : tf_geom_fail(m, TF_GEOM_FAILED, "%s", ctx.err);
+    free(text);
+    if (rc != TF_GEOM_OK) {
+        tf_surface_free(s);
+    }
+    return rc;
 }
 
 int tf_surface_read(const char *path, tf_surface *s, tf_geom_msg *m)
@@ -46,5 +64,9 @@ int tf_surface_read(const char *path, tf_surface *s, tf_geom_msg *m)
         const char *why = strncmp(ctx.err, path, n) == 0 ? ctx.err + n + 2 : ctx.err;
         return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path, why);
     }
-    return read(path, s, m);
+    int rc = read(path, s, m);
+    if (rc == TF_GEOM_OK && strcasecmp(ext, "obj") == 0) {
+        rc = obj_digits(path, s, m);
+    }
+    return rc;
 }

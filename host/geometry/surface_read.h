@@ -2,7 +2,9 @@
  * surface_read.h — a triangle surface from a mesh file, read by maintained
  * libraries: OBJ, STL, PLY and OFF through assimp, legacy VTK (ASCII or
  * binary POLYDATA / UNSTRUCTURED_GRID) through gmsh.  Coordinates are in
- * file units (no transform, no checks: surface_prepare.h does both).
+ * file units (no transform, no checks: surface_prepare.h does both); an
+ * OBJ's are the file's own digits (obj_digits.h), STL, PLY and OFF pass
+ * through assimp's float32.
  *
  * The vertex order, and so `source`, is the reader's:
  *  - VTK (gmsh): the file's point order (source = point index, 0-based);

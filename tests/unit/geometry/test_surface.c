@@ -361,6 +361,51 @@ static void each_format_reads_the_same_closed_cube(void **state)
     tf_surface_free(&c);
 }
 
+/* An OBJ keeps the file's digits: a BodyParts3D-like cube at 1061.67 mm
+ * from the origin, whose coordinates float32 holds only to 6e-5 mm (a
+ * clamp "z <= 12" after an offset of -1061.67 lost its vertices), read
+ * back exactly as strtod reads the text; shuffled `v` lines and an unused
+ * record do not confuse the match. */
+static void obj_keeps_the_files_digits(void **state)
+{
+    (void)state;
+    tf_surface c, s;
+    tf_geom_msg m = {0};
+    shape_cube(&c, 10, 20);
+    char text[8][3][32];
+    FILE *fp = fopen(file("far.obj"), "w");
+    fprintf(fp, "v 1061.6700001 0.1 0.3\n"); /* used by no face */
+    for (size_t v = 0; v < 8; ++v) {
+        for (int a = 0; a < 3; ++a) {
+            snprintf(text[7 - v][a], sizeof text[0][0], "%.10g",
+                     c.xyz[3 * (7 - v) + a] + 1061.67 + 1e-7 * (double)(3 * v + (size_t)a));
+        }
+        fprintf(fp, "v %s %s %s\n", text[7 - v][0], text[7 - v][1], text[7 - v][2]);
+    }
+    for (size_t t = 0; t < 12; ++t) {
+        fprintf(fp, "f %zu %zu %zu\n", 9 - c.tri[3 * t], 9 - c.tri[3 * t + 1], 9 - c.tri[3 * t + 2]);
+    }
+    fclose(fp);
+    assert_int_equal(tf_surface_read(file("far.obj"), &s, &m), TF_GEOM_OK);
+    assert_int_equal(s.nv, 8);
+    for (size_t v = 0; v < s.nv; ++v) {
+        size_t hit = 8;
+        for (size_t w = 0; w < 8; ++w) {
+            if (s.xyz[3 * v] == strtod(text[w][0], NULL) &&
+                s.xyz[3 * v + 1] == strtod(text[w][1], NULL) &&
+                s.xyz[3 * v + 2] == strtod(text[w][2], NULL)) {
+                hit = w;
+            }
+        }
+        if (hit == 8) {
+            fail_msg("vertex %zu (%.17g, %.17g, %.17g) is not a record of the file", v, s.xyz[3 * v],
+                     s.xyz[3 * v + 1], s.xyz[3 * v + 2]);
+        }
+    }
+    tf_surface_free(&s);
+    tf_surface_free(&c);
+}
+
 /* A cube with one coordinate replaced by text, read by assimp and cleaned:
  * the message of tf_surface_clean. */
 static const char *cube_with(const char *coordinate, tf_geom_msg *m)
@@ -477,6 +522,7 @@ int main(void)
         cmocka_unit_test(absurd_units_are_refused),
         cmocka_unit_test(transform_scales_centres_rotates_translates),
         cmocka_unit_test(each_format_reads_the_same_closed_cube),
+        cmocka_unit_test(obj_keeps_the_files_digits),
         cmocka_unit_test(odd_coordinates_say_what_they_are),
         cmocka_unit_test(unreadable_files_say_why),
     };
