@@ -350,7 +350,10 @@ check-firmware: $(FW_HAPTIC_IMAGES) $(FW_HAPTIC_QEMU) $(FW)/native/haptic-haptic
 	@if $(MAKE) --no-print-directory -n firmware HEADER=$(FW)/user/none.h >$(FW)/user/none.log 2>&1 || \
 	  ! grep -q "HEADER=$(FW)/user/none.h: no such file" $(FW)/user/none.log; then \
 	  cat $(FW)/user/none.log; echo "make firmware HEADER= accepted a missing header"; exit 1; fi
-	@echo "ok: every shipped image heap-free and run under QEMU; stack bounded; make firmware HEADER= builds a user's header and refuses a missing one"
+	@# the library's sources compiled into the image: placed as from libtfit.a, or refused
+	@$(foreach c,$(FW_CORES),CFLAGS="$(FW_CFLAGS) $(FW_FLAGS_$(c)) $(FW_CORE_DEF_$(c)) -I$(FW)/cfg/block48 -Icoeffs" \
+	  LDFLAGS="$(FW_LDFLAGS)" tests/firmware/placement.sh $(FW)/placement/$(c) $(FW_STM32_LD_$(c)) &&) true
+	@echo "ok: every shipped image heap-free and run under QEMU; stack bounded; make firmware HEADER= builds a user's header and refuses a missing one; the library's sources compiled into an image keep its fast-memory placement or stop the link"
 
 
 # --- a build that contracts a*b + c (issue 19) --------------------------------
