@@ -61,4 +61,13 @@ expect 1 "a history whose force crushes the block" -- "$tool" solve $K \
 check "names the load step and the force" grep -q "load step .*force (0, 0, -" "$tmp/err"
 nothing_written "a failed Newton solve"
 
+# St Venant-Kirchhoff softens in compression and has a limit point (near
+# 2.67 N down on the seed grid): past it the solve must end, within a
+# bounded time, naming the step, the force and the place.
+expect 1 "St Venant-Kirchhoff past its limit point" -- timeout 120 "$tool" solve \
+    coeffs/block48_nh.yaml --set material.law=svk --force 0,0,-3 -o "$tmp/w/a.csv"
+check "names the load step, the force and the place" \
+    grep -q "load step [0-9]* (0.8[0-9]* of the way.*force (0, 0, -2\.[0-9]*) N at top-centre).* mm after 10 step cuts" "$tmp/err"
+nothing_written "a solve past the limit point"
+
 finish "nonlinear cli"
