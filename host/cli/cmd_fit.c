@@ -443,8 +443,9 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     }
     /* the contact inverse: within 1e-4 of the envelope radius (the issue's
      * bound for linear scenes), else the most accurate passive one */
-    if (tf_select(ctx, &sw, &a->mcu, a->budget_us, a->max_error_mm, 1e-4 * s->envelope.radius,
-                  &sel) != 0) {
+    const double disc = a->reference != NULL ? a->phys.max_mm : NAN;
+    if (tf_select(ctx, &sw, &a->mcu, a->budget_us, a->max_error_mm, disc,
+                  1e-4 * s->envelope.radius, &sel) != 0) {
         tf_error(ctx, "fit: %s: %s; nothing written", a->scene, ctx->err);
         tf_sweep_free(&sw);
         return TF_EXIT_USAGE;
@@ -455,8 +456,22 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     }
     if (!isnan(a->max_error_mm)) {
         size_t k = strlen(limits);
-        snprintf(limits + k, sizeof limits - k, "%sa held-out error <= %.3g mm", k ? " and " : "",
+        snprintf(limits + k, sizeof limits - k, "%sa total error <= %.3g mm", k ? " and " : "",
                  a->max_error_mm);
+    }
+    char how_far[256];
+    const tf_candidate *f = sel.forward;
+    const double total = tf_select_total(f, disc);
+    if (isnan(disc)) {
+        snprintf(how_far, sizeof how_far,
+                 "held-out max %.3g mm, %.3g %% of the %.3g mm its held-out cases reach; the "
+                 "discretisation not measured (no --reference)",
+                 f->heldout_max, 100 * f->heldout_max / f->peak, f->peak);
+    } else {
+        snprintf(how_far, sizeof how_far,
+                 "held-out max %.3g mm + discretisation %.3g mm = total %.3g mm, %.3g %% of the "
+                 "%.3g mm its held-out cases reach",
+                 f->heldout_max, disc, total, 100 * total / f->peak, f->peak);
     }
     char contact_note[160] = "";
     if (!sel.contact_within_tol) {
@@ -465,9 +480,9 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
                  sel.contact->heldout_max, 1e-4 * s->envelope.radius);
     }
     snprintf(choice, sizeof choice,
-             "Chosen among every candidate for %s on %s: %s (%.2f us) and the contact inverse "
-             "%s (%.2f us%s).",
-             limits, a->mcu.name, sel.forward->label, tf_candidate_us(sel.forward, &a->mcu),
+             "Chosen among every candidate for %s on %s: %s (%.2f us; %s) and the contact "
+             "inverse %s (%.2f us%s).",
+             limits, a->mcu.name, f->label, tf_candidate_us(f, &a->mcu), how_far,
              sel.contact->label, tf_candidate_us(sel.contact, &a->mcu), contact_note);
     tf_info(ctx, "fit: %s", choice);
     int rc = emit(ctx, a, s, p, o, sel.forward->model, sel.contact->model, choice);

@@ -98,8 +98,29 @@ static void extremes(const tf_sweep *sw, const tf_mcu *mcu, const tf_candidate *
     }
 }
 
+double tf_select_total(const tf_candidate *c, double disc_mm)
+{
+    return c->heldout_max + (isnan(disc_mm) ? 0 : disc_mm);
+}
+
+/* The chosen forward model renders too little of its peak to be of use. */
+static int useless(tf_ctx *ctx, const tf_candidate *c, const tf_candidate *accurate,
+                   const tf_mcu *mcu, double contact_us, double disc_mm, const char *what)
+{
+    const double total = tf_select_total(c, disc_mm);
+    return tf_fail(ctx,
+                   "only models off by %g %% of their peak or more fit %s on %s: the best of "
+                   "them, %s, is off by %.3g mm (%.3g %% of the %.3g mm its held-out cases "
+                   "reach%s).  Most accurate: %s, held-out max %.3g mm, %.2f us plus %.2f us",
+                   100 * TF_SELECT_USELESS, what, mcu->name, c->label, total,
+                   100 * total / c->peak, c->peak,
+                   isnan(disc_mm) ? "" : ", with the solve's discretisation error",
+                   accurate->label, accurate->heldout_max, tf_candidate_us(accurate, mcu),
+                   contact_us);
+}
+
 int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_us,
-              double max_error_mm, double contact_tol, tf_selection *sel)
+              double max_error_mm, double disc_mm, double contact_tol, tf_selection *sel)
 {
     const tf_candidate *fast, *accurate;
     sel->contact = pick_contact(sw, mcu, contact_tol, &sel->contact_within_tol);
@@ -116,7 +137,7 @@ int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_
         }
         const double us = tf_candidate_us(c, mcu);
         if ((!isnan(budget_us) && us + contact_us > budget_us) ||
-            (!isnan(max_error_mm) && c->heldout_max > max_error_mm)) {
+            (!isnan(max_error_mm) && tf_select_total(c, disc_mm) > max_error_mm)) {
             continue;
         }
         int better;
@@ -131,9 +152,6 @@ int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_
             sel->forward = c;
         }
     }
-    if (sel->forward != NULL) {
-        return 0;
-    }
     char what[128];
     if (!isnan(budget_us) && !isnan(max_error_mm)) {
         snprintf(what, sizeof what, "a %.4g us budget and a %.3g mm error", budget_us,
@@ -143,11 +161,25 @@ int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_
     } else {
         snprintf(what, sizeof what, "a %.3g mm error", max_error_mm);
     }
+    const tf_candidate *f = sel->forward;
+    if (f != NULL && f->peak > 0 && tf_select_total(f, disc_mm) >= TF_SELECT_USELESS * f->peak) {
+        sel->forward = NULL;
+        return useless(ctx, f, accurate, mcu, contact_us, disc_mm, what);
+    }
+    if (f != NULL) {
+        return 0;
+    }
+    char physics[160] = "";
+    if (!isnan(disc_mm) && !isnan(max_error_mm) && disc_mm >= max_error_mm) {
+        snprintf(physics, sizeof physics,
+                 "; the solve itself is off by %.3g mm against the physics (--reference)",
+                 disc_mm);
+    }
     return tf_fail(ctx,
-                   "no model fits %s on %s (estimated upper bounds).  Fastest: %s, %.2f us plus "
+                   "no model fits %s on %s (estimated upper bounds%s).  Fastest: %s, %.2f us plus "
                    "%.2f us for the contact inverse, held-out max %.3g mm.  Most accurate: %s, "
                    "held-out max %.3g mm, %.2f us plus %.2f us",
-                   what, mcu->name, fast->label, tf_candidate_us(fast, mcu), contact_us,
+                   what, mcu->name, physics, fast->label, tf_candidate_us(fast, mcu), contact_us,
                    fast->heldout_max, accurate->label, accurate->heldout_max,
                    tf_candidate_us(accurate, mcu), contact_us);
 }

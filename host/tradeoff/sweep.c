@@ -128,6 +128,22 @@ static int is_inverse(const tf_model *m)
     return tf_family_of(m->family)->kind == TF_FAMILY_INVERSE;
 }
 
+/* The largest |component| of the held-out truths m renders: displacements
+ * (mm) for a forward model, forces (N) for a contact inverse. */
+static double heldout_peak(const tf_model *m, const tf_fitdata *held)
+{
+    const int contact = tf_family_of(m->family)->kind == TF_FAMILY_INVERSE;
+    const size_t rows = contact ? 3 : 3 * (size_t)held->n_out;
+    double peak = 0;
+    for (size_t i = 0; i < held->n_cases; ++i) {
+        const double *truth = contact ? held->force[i] : held->u + rows * i;
+        for (size_t o = 0; o < rows; ++o) {
+            peak = fmax(peak, fabs(truth[o]));
+        }
+    }
+    return peak;
+}
+
 static void fill_common(tf_candidate *c, const tf_model *m, const char *label, tf_precision prec,
                         tf_output_set set)
 {
@@ -148,6 +164,7 @@ static int add_f32(tf_ctx *ctx, tf_sweep *sw, tf_model *m, const char *label, tf
     }
     tf_candidate *c = &sw->c[sw->n++];
     fill_common(c, m, label, TF_PREC_F32, set);
+    c->peak = heldout_peak(m, held);
     c->model = m;
     c->n_coef = m->n_coef;
     tf_family_cost cost;
@@ -204,6 +221,7 @@ static int add_q31(tf_ctx *ctx, tf_sweep *sw, const tf_model *m, const char *lab
     }
     tf_candidate *c = &sw->c[sw->n++];
     fill_common(c, m, label, TF_PREC_Q31, set);
+    c->peak = heldout_peak(m, held);
     c->n_coef = q->n_words;
     c->table_bytes = 4 * (q->n_words + m->n_out);
     const int contact = is_inverse(m);
@@ -251,6 +269,7 @@ static int add_f64(tf_ctx *ctx, tf_sweep *sw, const tf_model *m, const char *lab
     }
     tf_candidate *c = &sw->c[sw->n];
     fill_common(c, m, label, TF_PREC_F64, set);
+    c->peak = heldout_peak(m, &cases->heldout);
     c->n_coef = m->n_coef;
     c->table_bytes = 8 * m->n_coef + 4 * (m->n_dims + m->n_out);
     if (c->family->f64_errors(ctx, m, cases, &c->heldout_max, &c->heldout_rms) != 0) {
@@ -356,16 +375,23 @@ static int sweep_set(tf_ctx *ctx, tf_sweep *sw, const tf_problem *s, tf_solver *
 }
 
 /* On the front: no other candidate of the same set and kind is at least as
- * fast and as accurate, and better in one. */
+ * fast and as accurate, and better in one.  A candidate off by its peak or
+ * more renders nothing better than zero: it is never on the front (and does
+ * not push others off it). */
+static int renders(const tf_candidate *c)
+{
+    return isfinite(c->ns_native) && c->heldout_max < c->peak;
+}
+
 static void mark_pareto(tf_sweep *sw)
 {
     for (size_t i = 0; i < sw->n; ++i) {
         tf_candidate *a = &sw->c[i];
-        a->pareto = isfinite(a->ns_native);
+        a->pareto = renders(a);
         for (size_t k = 0; a->pareto && k < sw->n; ++k) {
             const tf_candidate *b = &sw->c[k];
             int same_kind = a->family->kind == b->family->kind;
-            if (k == i || b->set != a->set || !same_kind || !isfinite(b->ns_native)) {
+            if (k == i || b->set != a->set || !same_kind || !renders(b)) {
                 continue;
             }
             if (b->ns_native <= a->ns_native && b->heldout_max <= a->heldout_max &&

@@ -39,7 +39,10 @@ typedef struct tf_candidate {
     double us_m4f, us_m4f_low, us_m7; /* estimates (float32 only; NAN otherwise) */
     double ns_native;                 /* median per call, real evaluator; NAN for float64 */
     double heldout_max, heldout_rms;  /* mm (forward models) or N (contact) */
-    int pareto;                       /* on the error/time front of its set and kind */
+    double peak;                      /* the held-out truths' largest |component|: the
+                                       * displacement (mm) or force (N) the model renders */
+    int pareto;                       /* on the error/time front of its set and kind,
+                                       * among the candidates off by less than their peak */
     int passive;                      /* contact laws: passivity.h holds (forward: 1) */
     tf_model *model;                  /* float32 candidates: the model (owned) */
 } tf_candidate;

@@ -36,6 +36,13 @@ static tf_candidate cand(const char *family, double us, double err, int passive)
     return c;
 }
 
+static void assert_close(double a, double b, double tol)
+{
+    if (!(fabs(a - b) <= tol)) {
+        fail_msg("%.17g is not within %g of %.17g", a, tol, b);
+    }
+}
+
 static tf_mcu m4f(void)
 {
     tf_mcu m;
@@ -55,7 +62,7 @@ static void contact_within_the_tolerance_is_the_cheapest_there(void **state)
     tf_selection sel;
     tf_ctx ctx;
     tf_ctx_init(&ctx);
-    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 1e-4, &sel), 0);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, NAN, 1e-4, &sel), 0);
     assert_ptr_equal(sel.contact, &c[1]); /* c[2] is cheaper but not passive */
     assert_true(sel.contact_within_tol);
     assert_ptr_equal(sel.forward, &c[3]);
@@ -73,15 +80,15 @@ static void no_contact_within_the_tolerance_takes_the_most_accurate_passive(void
     tf_selection sel;
     tf_ctx ctx;
     tf_ctx_init(&ctx);
-    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 3e-4, &sel), 0);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, NAN, 3e-4, &sel), 0);
     assert_ptr_equal(sel.contact, &c[1]);
     assert_false(sel.contact_within_tol);
     /* the budget counts the contact: 40.2 + 10.9 > 50, 35.3 + 10.9 fits */
     assert_ptr_equal(sel.forward, &c[3]);
-    assert_int_equal(tf_select(&ctx, &sw, &m, 52, NAN, 3e-4, &sel), 0);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 52, NAN, NAN, 3e-4, &sel), 0);
     assert_ptr_equal(sel.forward, &c[4]);
     /* nothing fits: refused, with the best achievable on each axis */
-    assert_int_equal(tf_select(&ctx, &sw, &m, 20, NAN, 3e-4, &sel), -1);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 20, NAN, NAN, 3e-4, &sel), -1);
     assert_non_null(strstr(ctx.err, "no model fits a 20 us budget"));
 }
 
@@ -94,8 +101,59 @@ static void no_passive_contact_is_refused(void **state)
     tf_selection sel;
     tf_ctx ctx;
     tf_ctx_init(&ctx);
-    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, 1e-4, &sel), -1);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 50, NAN, NAN, 1e-4, &sel), -1);
     assert_non_null(strstr(ctx.err, "no passive contact inverse"));
+}
+
+/* A forward model off by a quarter of its peak or more is not a choice: a
+ * budget that only such models meet is refused, naming the best of them
+ * and how far off it is (the first user's organ got a 196 mm model). */
+static void a_budget_only_useless_models_meet_is_refused(void **state)
+{
+    (void)state;
+    tf_candidate c[] = {cand("contact", 1.3, 1e-6, 1), cand("modal", 16, 0.80, 1),
+                        cand("modal", 23, 0.50, 1), cand("nodal", 26, 2e-7, 1)};
+    for (int k = 1; k < 4; ++k) {
+        c[k].peak = 2.0;
+    }
+    tf_sweep sw = {.c = c, .n = 4, .cap = 4};
+    tf_mcu m = m4f();
+    tf_selection sel;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_select(&ctx, &sw, &m, 25, NAN, NAN, 1e-4, &sel), -1);
+    assert_null(sel.forward);
+    assert_non_null(strstr(ctx.err, "only models off by 25 % of their peak or more fit a 25 us"));
+    assert_non_null(strstr(ctx.err, "modal 23 us, is off by 0.5 mm (25 % of the 2 mm"));
+    assert_non_null(strstr(ctx.err, "Most accurate: nodal 26 us"));
+    /* just under a quarter: chosen */
+    c[2].heldout_max = 0.499;
+    assert_int_equal(tf_select(&ctx, &sw, &m, 25, NAN, NAN, 1e-4, &sel), 0);
+    assert_ptr_equal(sel.forward, &c[2]);
+    /* the solve's own error counts: with 0.2 mm of discretisation, 0.699 of 2 */
+    assert_int_equal(tf_select(&ctx, &sw, &m, 25, NAN, 0.2, 1e-4, &sel), -1);
+    assert_non_null(strstr(ctx.err, "with the solve's discretisation error"));
+}
+
+/* --max-error-mm bounds the total: held-out max plus the discretisation. */
+static void the_error_bound_counts_the_discretisation(void **state)
+{
+    (void)state;
+    tf_candidate c[] = {cand("contact", 1.3, 1e-6, 1), cand("modal", 16, 0.01, 1),
+                        cand("nodal", 26, 2e-7, 1)};
+    c[1].peak = c[2].peak = 2.0;
+    tf_sweep sw = {.c = c, .n = 3, .cap = 3};
+    tf_mcu m = m4f();
+    tf_selection sel;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    assert_int_equal(tf_select(&ctx, &sw, &m, NAN, 0.05, NAN, 1e-4, &sel), 0);
+    assert_ptr_equal(sel.forward, &c[1]); /* the cheapest within 0.05 mm */
+    assert_int_equal(tf_select(&ctx, &sw, &m, NAN, 0.05, 0.045, 1e-4, &sel), 0);
+    assert_ptr_equal(sel.forward, &c[2]); /* 0.01 + 0.045 > 0.05 */
+    assert_close(tf_select_total(sel.forward, 0.045), 0.045 + 2e-7, 1e-15);
+    assert_int_equal(tf_select(&ctx, &sw, &m, NAN, 0.05, 0.06, 1e-4, &sel), -1);
+    assert_non_null(strstr(ctx.err, "the solve itself is off by 0.06 mm against the physics"));
 }
 
 int main(void)
@@ -104,6 +162,8 @@ int main(void)
         cmocka_unit_test(contact_within_the_tolerance_is_the_cheapest_there),
         cmocka_unit_test(no_contact_within_the_tolerance_takes_the_most_accurate_passive),
         cmocka_unit_test(no_passive_contact_is_refused),
+        cmocka_unit_test(a_budget_only_useless_models_meet_is_refused),
+        cmocka_unit_test(the_error_bound_counts_the_discretisation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
