@@ -12,7 +12,11 @@
 /* Everything but positions and faces is removed before vertices are
  * joined, so that normals, texture seams or materials cannot split one
  * position into several vertices (which would open the surface); the
- * scene graph's transforms are applied and its meshes merged. */
+ * scene graph's transforms are applied and its meshes merged.  The scene
+ * an importer built is validated first: a loader can leave a malformed
+ * mesh behind (an OFF file announcing more faces than it holds leaves
+ * faces without indices), on which a later step asserts and aborts the
+ * process; validation refuses it as an import error instead. */
 static const struct aiScene *import(const char *path, struct aiPropertyStore *props)
 {
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS,
@@ -21,7 +25,8 @@ static const struct aiScene *import(const char *path, struct aiPropertyStore *pr
                                    aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                                    aiComponent_TEXTURES | aiComponent_LIGHTS |
                                    aiComponent_CAMERAS | aiComponent_MATERIALS);
-    unsigned flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
+    unsigned flags = aiProcess_ValidateDataStructure | aiProcess_RemoveComponent |
+                     aiProcess_Triangulate |
                      aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices;
     return aiImportFileExWithProperties(path, flags, NULL, props);
 }
