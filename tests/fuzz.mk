@@ -62,11 +62,13 @@ $(FZ)/ubsan_solve: tests/fuzz/ubsan_solve.c $(FZ)/libtissuefit-host.a $(B)/nativ
 
 # $(call fuzz_run,TARGET,SECONDS,CORPUS-DIR): the seeds and regression
 # inputs first, then SECONDS of fuzzing; prints one result line and fails
-# on a finding.
+# on a finding.  A run that outlives its time by far is killed and fails
+# too (libFuzzer's own timeout report can hang when the alarm interrupts
+# the allocator).
 define fuzz_run
 mkdir -p $(3) $(FZ)/artifacts; \
 cp -n $(FUZZ_SEEDS_$(1)) $(wildcard tests/fuzz/regress/$(1)/*) $(3)/; \
-if ! $(FZ)/fuzz_$(1) $(3) -dict=tests/fuzz/$(1).dict -max_total_time=$(2) \
+if ! timeout -k 10 $$(( $(2) + 3 * $(FUZZ_TIMEOUT) + 120 )) $(FZ)/fuzz_$(1) $(3) -dict=tests/fuzz/$(1).dict -max_total_time=$(2) \
      -timeout=$(FUZZ_TIMEOUT) -rss_limit_mb=2048 -max_len=$(call FUZZ_MAX_LEN,$(1)) \
      -print_final_stats=1 -artifact_prefix=$(FZ)/artifacts/$(1)- >$(FZ)/$(1).log 2>&1; then \
   grep -E -A12 'ERROR|runtime error|Timeout|out-of-memory|fuzz_$(1):' $(FZ)/$(1).log | head -40; \

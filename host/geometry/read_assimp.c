@@ -8,6 +8,9 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
 
 /* Everything but positions and faces is removed before vertices are
  * joined, so that normals, texture seams or materials cannot split one
@@ -29,6 +32,31 @@ static const struct aiScene *import(const char *path, struct aiPropertyStore *pr
                      aiProcess_Triangulate |
                      aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices;
     return aiImportFileExWithProperties(path, flags, NULL, props);
+}
+
+/* Whether a file that assimp would take for a PLY file (it begins "ply"
+ * or "PLY") ends its header: assimp 5.2's PLY reader never returns on a
+ * header without an end_header line (measured: still running after
+ * 2 minutes), so such a file is refused before assimp sees it.  A line
+ * ends the header as it does for assimp: blanks, "end_header", then a
+ * blank or the line's end. */
+static int ply_header_unended(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char line[256];
+    if (f == NULL) {
+        return 0; /* assimp says why it cannot read it */
+    }
+    int ply = fgets(line, sizeof line, f) != NULL && strncasecmp(line, "ply", 3) == 0;
+    int at_start = ply && strchr(line, '\n') != NULL, ended = 0;
+    while (ply && !ended && fgets(line, sizeof line, f) != NULL) {
+        const char *t = line + strspn(line, " \t");
+        ended = at_start && strncmp(t, "end_header", 10) == 0 &&
+                (t[10] == '\0' || strchr(" \t\r\n", t[10]) != NULL);
+        at_start = strchr(line, '\n') != NULL; /* the next piece begins a line */
+    }
+    fclose(f);
+    return ply && !ended;
 }
 
 /* Vertices and triangles of all meshes, meshes one after the other. */
@@ -79,6 +107,12 @@ int tf_surface_read_assimp(const char *path, tf_surface *s, tf_geom_msg *m)
     struct aiPropertyStore *props = aiCreatePropertyStore();
     if (props == NULL) {
         return tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
+    }
+    if (ply_header_unended(path)) {
+        aiReleasePropertyStore(props);
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "cannot read mesh '%s': a PLY header without its end_header line",
+                            path);
     }
     const struct aiScene *sc = import(path, props);
     int rc;
