@@ -16,13 +16,13 @@
 #                found bugs; they must stay harmless); one result line per
 #                target, in order.  25 s is a short real run (the
 #                inputs executed and coverage reached are in
-#                docs/architecture.md, "make check's time"); the campaign
+#                docs/architecture.md, "Errors and outputs"); the campaign
 #                is make fuzz's
 #   make fuzz    each target FUZZ_SECONDS (default 1800 s), one after the
 #                other, corpus kept in $(FZ)/corpus between runs
 #
 # Seeds: the shipped and test scenes (scene), tests/fuzz/seeds/TARGET/ (the
-# others).  Inputs are at most FUZZ_MAX_LEN bytes (8 KiB for a mesh).
+# others).  Inputs are at most 4 KiB, 8 KiB for a mesh (FUZZ_MAX_LEN).
 
 FZ := $(B)/fuzz
 FUZZ_CHECK_SECONDS ?= 25
