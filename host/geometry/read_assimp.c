@@ -8,12 +8,40 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+/* Whether every mesh's declared primitive kinds hold a polygon when they
+ * say so: assimp's triangulation asserts, and so aborts the process, on a
+ * mesh marked as holding polygons that holds none, which a loader leaves
+ * behind on some malformed files (a PLY face list that breaks off). */
+static int polygons_as_declared(const struct aiScene *sc)
+{
+    for (unsigned k = 0; k < sc->mNumMeshes; ++k) {
+        const struct aiMesh *me = sc->mMeshes[k];
+        unsigned polygons = 0;
+        for (unsigned f = 0; f < me->mNumFaces; ++f) {
+            polygons += me->mFaces[f].mNumIndices > 3;
+        }
+        if ((me->mPrimitiveTypes & aiPrimitiveType_POLYGON) && polygons == 0) {
+            return 0;
+        }
+    }
+    return 1;
+}
 
 /* Everything but positions and faces is removed before vertices are
  * joined, so that normals, texture seams or materials cannot split one
  * position into several vertices (which would open the surface); the
- * scene graph's transforms are applied and its meshes merged. */
-static const struct aiScene *import(const char *path, struct aiPropertyStore *props)
+ * scene graph's transforms are applied and its meshes merged.  The scene
+ * a loader built is validated and checked before any of that: a loader
+ * can leave a malformed mesh behind on a malformed file (faces without
+ * indices: an OFF file announcing more faces than it holds; polygons
+ * declared and none there), on which a later step asserts and aborts the
+ * process.  NULL with *why set when the file is refused. */
+static const struct aiScene *import(const char *path, struct aiPropertyStore *props,
+                                    const char **why)
 {
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS,
                                aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
@@ -21,9 +49,47 @@ static const struct aiScene *import(const char *path, struct aiPropertyStore *pr
                                    aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                                    aiComponent_TEXTURES | aiComponent_LIGHTS |
                                    aiComponent_CAMERAS | aiComponent_MATERIALS);
+    const struct aiScene *sc =
+        aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure, NULL, props);
+    if (sc == NULL) {
+        *why = aiGetErrorString();
+        return NULL;
+    }
+    if (!polygons_as_declared(sc)) {
+        aiReleaseImport(sc);
+        *why = "a mesh declared to hold polygons holds none (a malformed face list)";
+        return NULL;
+    }
     unsigned flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
                      aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices;
-    return aiImportFileExWithProperties(path, flags, NULL, props);
+    sc = aiApplyPostProcessing(sc, flags);
+    *why = sc == NULL ? aiGetErrorString() : NULL;
+    return sc;
+}
+
+/* Whether a file that assimp would take for a PLY file (it begins "ply"
+ * or "PLY") ends its header: assimp 5.2's PLY reader never returns on a
+ * header without an end_header line (measured: still running after
+ * 2 minutes), so such a file is refused before assimp sees it.  A line
+ * ends the header as it does for assimp: blanks, "end_header", then a
+ * blank or the line's end. */
+static int ply_header_unended(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char line[256];
+    if (f == NULL) {
+        return 0; /* assimp says why it cannot read it */
+    }
+    int ply = fgets(line, sizeof line, f) != NULL && strncasecmp(line, "ply", 3) == 0;
+    int at_start = ply && strchr(line, '\n') != NULL, ended = 0;
+    while (ply && !ended && fgets(line, sizeof line, f) != NULL) {
+        const char *t = line + strspn(line, " \t");
+        ended = at_start && strncmp(t, "end_header", 10) == 0 &&
+                (t[10] == '\0' || strchr(" \t\r\n", t[10]) != NULL);
+        at_start = strchr(line, '\n') != NULL; /* the next piece begins a line */
+    }
+    fclose(f);
+    return ply && !ended;
 }
 
 /* Vertices and triangles of all meshes, meshes one after the other. */
@@ -75,11 +141,17 @@ int tf_surface_read_assimp(const char *path, tf_surface *s, tf_geom_msg *m)
     if (props == NULL) {
         return tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
     }
-    const struct aiScene *sc = import(path, props);
+    if (ply_header_unended(path)) {
+        aiReleasePropertyStore(props);
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "cannot read mesh '%s': a PLY header without its end_header line",
+                            path);
+    }
+    const char *why;
+    const struct aiScene *sc = import(path, props, &why);
     int rc;
     if (sc == NULL) {
-        rc = tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path,
-                          aiGetErrorString());
+        rc = tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path, why);
     } else {
         rc = copy_meshes(sc, path, s, m);
         aiReleaseImport(sc);
