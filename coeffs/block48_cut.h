@@ -4,6 +4,17 @@
  * scene: coeffs/block48_cut.yaml (crc32 0x9568fde6)
  * Fitted by `tissuefit fit`: 100 training and 50 held-out load cases at contact site 'top-centre',
  * training cases superposed from unit solves; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: box [0, 48] x [0, 48] x [0, 6] mm; 11 x 11 x 3 nodes (363), mean spacing 4.8 x 4.8 x 3 mm
+ *   material: linear (linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)): E = 0.32 (Young's modulus, MPa), nu = 0.49 (Poisson's ratio)
+ *   solver: efg-galerkin, support 2 spacings
+ *   fixed 0: face x-, 33 nodes, every component held
+ *   fixed 1: face x+, 33 nodes, every component held
+ *   fixed 2: face y-, 33 nodes, every component held
+ *   fixed 3: face y+, 33 nodes, every component held
+ *   contact 'top-centre': (24, 24, 6) mm, force spread over a 4.8 x 4.8 mm rectangle of face z+; envelope |F - (0, 0, 0)| <= 1 N
+ *   largest displacement of the training cases: 2.36 mm
+ * Warning (the law's range): displacements reach 2.36 mm on a body 6 mm thick (39.3 %, more than 10 %): the linear law is small-strain and does not describe tissue there; the models reproduce its solve
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_cut_forward: cut p=1 K=8, 121 output points, force [N] and cut progress s in [0, 1] (tfit_displacements_cut) -> displacement [mm]

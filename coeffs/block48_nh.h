@@ -4,6 +4,16 @@
  * scene: coeffs/block48_nh.yaml (crc32 0x8015bea6)
  * Fitted by `tissuefit fit`: 100 training and 50 held-out load cases at contact site 'top-centre',
  * every training case solved directly; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: box [0, 48] x [0, 48] x [0, 6] mm; 11 x 11 x 3 nodes (363), mean spacing 4.8 x 4.8 x 3 mm
+ *   material: neo-hookean (compressible neo-Hookean, CalculiX's NEO HOOKE energy with C10 = mu/2, D1 = 2/K of E and nu): E = 0.32 (Young's modulus, MPa), nu = 0.49 (Poisson's ratio)
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 8 local spacings
+ *   fixed 0: face x-, 33 nodes, every component held
+ *   fixed 1: face x+, 33 nodes, every component held
+ *   fixed 2: face y-, 33 nodes, every component held
+ *   fixed 3: face y+, 33 nodes, every component held
+ *   contact 'top-centre': (24, 24, 6) mm, force spread over a 4.8 x 4.8 mm rectangle of face z+; envelope |F - (0, 0, 0)| <= 3 N
+ *   largest displacement of the training cases: 7.09 mm
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_nh_forward: modal_q15 p=4 r=8, 121 output points, force [N] -> displacement [mm]

@@ -4,6 +4,15 @@
  * scene: coeffs/block48_region.yaml (crc32 0x8acb638c)
  * Fitted by `tissuefit fit`: contact region 'top', its sites solved and judged at the
  * centres of their cells (docs/fitting.md, contact regions).
+ * Physics (as solved):
+ *   body: box [0, 48] x [0, 48] x [0, 6] mm; 26 x 26 x 6 nodes (4056), graded (largest/smallest spacing 1, 1, 2), mean spacing 1.92 x 1.92 x 1.2 mm
+ *   material: linear (linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)): E = 0.32 (Young's modulus, MPa), nu = 0.49 (Poisson's ratio)
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 8 local spacings
+ *   fixed 0: face x-, 156 nodes, every component held
+ *   fixed 1: face x+, 156 nodes, every component held
+ *   fixed 2: face y-, 156 nodes, every component held
+ *   fixed 3: face y+, 156 nodes, every component held
+ *   contact 'top': (24, 24, 6) mm, force spread over 23.04 mm^2 of the surface; envelope |F - (0, 0, 0)| <= 1 N
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_region_surface: region_surface p=1 r=25 sites=7x7 site-modes, 121 output points, contact force [N] at the proxy site -> displacement [mm]

@@ -4,6 +4,17 @@
  * scene: coeffs/block48_ve.yaml (crc32 0x2286809b)
  * Fitted by `tissuefit fit`: 40 training and 15 held-out load cases at contact site 'top-centre',
  * every training case solved directly; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: box [0, 48] x [0, 48] x [0, 6] mm; 11 x 11 x 3 nodes (363), mean spacing 4.8 x 4.8 x 3 mm
+ *   material: kelvin ([EFG-Kelvin]'s nonlinear Kelvin solid (eqs 9-13): relaxation modulus k1 + k2 exp(-t/tau) on N(eps) = eps + k eps^2, small strain): nu = 0.49 (Poisson's ratio), k1 = 0.32 (the relaxed modulus E_inf, MPa (Fig. 2's spring K1)), k2 = 0.16 (the Maxwell arm's spring, MPa: E_0 = k1 + k2 (K2)), eta = 0.16 (the dashpot, MPa s: tau = eta / k2), k = 0.5 (the adjustment N(eps) = eps + k eps^2 (eq 10))
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 8 local spacings
+ *   fixed 0: face x-, 33 nodes, every component held
+ *   fixed 1: face x+, 33 nodes, every component held
+ *   fixed 2: face y-, 33 nodes, every component held
+ *   fixed 3: face y+, 33 nodes, every component held
+ *   contact 'top-centre': (24, 24, 6) mm, force spread over a 4.8 x 4.8 mm rectangle of face z+; envelope |F - (0, 0, 0)| <= 1 N
+ *   largest displacement of the training cases: 2.35 mm
+ * Warning (the law's range): displacements reach 2.35 mm on a body 6 mm thick (39.2 %, more than 10 %): the kelvin law is small-strain and does not describe tissue there; the models reproduce its solve
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_ve_forward: prony p=3 K=1 tick=1000000ns, 121 output points, force [N] -> displacement [mm]

@@ -4,6 +4,13 @@
  * scene: coeffs/heart.yaml (crc32 0x89aa6846)
  * Fitted by `tissuefit fit`: 100 training and 50 held-out load cases at contact site 'lateral',
  * training cases superposed from unit solves; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: organ ../../shared/data/meshes/derived/coeur1.obj (crc32 0x4503c2c2), 7778 surface vertices; 8926 nodes, interior spacing 6 mm
+ *   material: linear (linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)): E = 0.018 (Young's modulus, MPa), nu = 0.45 (Poisson's ratio)
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 2 mm
+ *   fixed 0: side of the plane through (0, -30, 0) normal (0, -1, 0), 938 nodes, every component held
+ *   contact 'lateral': (26.9744, -7.18414, 2.79142) mm, force spread over 202.4 mm^2 of the surface; envelope |F - (0, 0, 0)| <= 0.3 N
+ *   largest displacement of the training cases: 3.91 mm
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_heart_forward: nodal p=1, 965 output points, force [N] -> displacement [mm]

@@ -4,6 +4,13 @@
  * scene: coeffs/liver.yaml (crc32 0xf2a86eb2)
  * Fitted by `tissuefit fit`: 100 training and 50 held-out load cases at contact site 'anterior',
  * training cases superposed from unit solves; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: organ ../../shared/data/meshes/derived/liver_vtk_main.obj (crc32 0x6803cebe), 4996 surface vertices; 9156 nodes, interior spacing 6 mm
+ *   material: linear (linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)): E = 0.00522 (Young's modulus, MPa), nu = 0.45 (Poisson's ratio)
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 2 mm
+ *   fixed 0: ball of radius 80 mm around (-20, 60, 60), 2329 nodes, every component held
+ *   contact 'anterior': (-34.4978, -69.0895, -9.7043) mm, force spread over 512.4 mm^2 of the surface; envelope |F - (0, 0, 0)| <= 0.3 N
+ *   largest displacement of the training cases: 5.67 mm
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_liver_forward: nodal p=1, 240 output points, force [N] -> displacement [mm]

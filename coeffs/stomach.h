@@ -4,6 +4,15 @@
  * scene: coeffs/stomach.yaml (crc32 0x65025ae7)
  * Fitted by `tissuefit fit`: 100 training and 50 held-out load cases at contact site 'anterior',
  * training cases superposed from unit solves; orders by 5-fold cross-validation (seed 20170912).
+ * Physics (as solved):
+ *   body: organ ../../shared/data/meshes/FMA7148_Stomach.obj (crc32 0x9ae4a2ba), 4694 surface vertices; 5170 nodes, interior spacing 12 mm
+ *   material: linear (linear elasticity, small strain: S = D(E, nu) eps ([Zhou2017] eq 7)): E = 0.0165 (Young's modulus, MPa), nu = 0.45 (Poisson's ratio)
+ *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 2 mm
+ *   fixed 0: ball of radius 15 mm around (-28.2, 32.9, 57.8), 338 nodes, every component held
+ *   fixed 1: ball of radius 15 mm around (-70.9, -18, -37.2), 185 nodes, every component held
+ *   fixed 2: side of the plane through (0, 30, 0) normal (0, 1, 0), 1210 nodes, every component held
+ *   contact 'anterior': (4.73485, -51.6024, -18.78) mm, force spread over 439.8 mm^2 of the surface; envelope |F - (0, 0, 0)| <= 0.3 N
+ *   largest displacement of the training cases: 3.96 mm
  *
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_stomach_forward: nodal p=1, 484 output points, force [N] -> displacement [mm]

@@ -20,6 +20,7 @@
 #include "emit/emit_header.h"
 #include "fitting/discretisation.h"
 #include "fitting/pipeline.h"
+#include "problem/datasheet.h"
 #include "report/fit_report.h"
 #include "base/log.h"
 #include "base/plot.h"
@@ -249,6 +250,21 @@ static int make_plan(tf_ctx *ctx, const fit_args *a, const tf_scene *sc, tf_fit_
 
 /* Banner notes: what was fitted and how, with the overrides (they change the
  * result, so they belong with it). */
+/* The largest displacement of the training cases against the body, and
+ * whether it leaves the range of the scene's law (tf_fit_law_range). */
+static int law_range(const tf_problem *s, const tf_fit_outcome *o, char *buf, size_t n)
+{
+    const tf_fitdata *d = &o->cases.train;
+    if (d->n_cases == 0) {
+        return 0; /* a contact region's fit solves sites, not load cases */
+    }
+    char why[320];
+    double peak;
+    size_t w = tf_fit_law_range(s, d, &peak, why, sizeof why);
+    return snprintf(buf, n, "\n  largest displacement of the training cases: %.3g mm%s%s", peak,
+                    w ? "\nWarning (the law's range): " : "", w ? why : "");
+}
+
 static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                   const tf_fit_outcome *o, char *buf, size_t n)
 {
@@ -268,6 +284,16 @@ static void notes(const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
     for (size_t i = 0; i < a->sets.n && k > 0 && (size_t)k < n; ++i) {
         k += snprintf(buf + k, n - (size_t)k, "%s--set %s", i ? " " : "\nOverrides: ",
                       a->sets.item[i]);
+    }
+    if (k > 0 && (size_t)k < n) {
+        /* the physics the models encode, checkable without the scene */
+        k += snprintf(buf + k, n - (size_t)k, "\nPhysics (as solved):\n");
+    }
+    if (k > 0 && (size_t)k < n) {
+        k += (int)tf_problem_datasheet(s, (int)p->contact, buf + k, n - (size_t)k);
+    }
+    if (k > 0 && (size_t)k < n) {
+        k += law_range(s, o, buf + k, n - (size_t)k);
     }
     const char *w = a->warnings != NULL ? a->warnings : "";
     const char *r = a->scene_notes != NULL ? a->scene_notes : "";

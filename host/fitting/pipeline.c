@@ -123,29 +123,50 @@ static int run_family(tf_ctx *ctx, tf_fit_outcome *o, const tf_fit_plan *plan,
     return 0;
 }
 
-/* Small-strain elasticity stops describing tissue when displacements
- * approach the body's size; the model still reproduces the solve, which is
- * what its error measures, so this is a warning, not a refusal.  A solver
- * with a large-deformation law (not LINEAR) describes that regime. */
-static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_solver *s,
-                       const tf_fitdata *d)
+/* A small-strain law (linear elasticity, the Kelvin solid) stops
+ * describing tissue when displacements approach the body's thickness (a
+ * plate deflecting a tenth of it already stiffens as a membrane); the model
+ * still reproduces the solve, which is what its error measures, so this is
+ * a warning, not a refusal.  A finite-strain law describes that regime, but
+ * no law a displacement larger than the whole body. */
+#define SMALL_STRAIN_SHARE 0.1
+size_t tf_fit_law_range(const tf_problem *p, const tf_fitdata *d, double *peak, char *buf,
+                        size_t n)
 {
-    if (!(tf_solver_caps_of(s) & TF_SOLVER_LINEAR)) {
-        return;
-    }
-    double biggest = 0, body = INFINITY, lo[3], hi[3];
+    double biggest = 0, thick = INFINITY, size = 0, lo[3], hi[3];
     for (size_t i = 0; i < 3 * (size_t)d->n_out * d->n_cases; ++i) {
         biggest = fmax(biggest, fabs(d->u[i]));
     }
     tf_problem_bounds(p, lo, hi);
     for (int a = 0; a < 3; ++a) {
-        body = fmin(body, hi[a] - lo[a]);
+        thick = fmin(thick, hi[a] - lo[a]);
+        size = fmax(size, hi[a] - lo[a]);
     }
-    if (biggest > 0.1 * body) {
-        tf_info(ctx, "fit: warning: displacements reach %.3g mm on a body %.3g mm thick: linear "
-                "(small-strain) elasticity does not describe tissue there; the models reproduce "
-                "the linear solve",
-                biggest, body);
+    *peak = biggest;
+    int k = 0;
+    if (biggest > size) {
+        k = snprintf(buf, n, "displacements reach %.3g mm, more than the body's size %.3g mm: no "
+                             "law of this scene describes that",
+                     biggest, size);
+    } else if (!(tf_material_caps(&p->material) & TF_MATERIAL_FINITE) &&
+               biggest > SMALL_STRAIN_SHARE * thick) {
+        k = snprintf(buf, n, "displacements reach %.3g mm on a body %.3g mm thick (%.3g %%, more "
+                             "than %g %%): the %s law is small-strain and does not describe "
+                             "tissue there; the models reproduce its solve",
+                     biggest, thick, 100 * biggest / thick, 100 * SMALL_STRAIN_SHARE,
+                     tf_material_name(&p->material));
+    } else if (n > 0) {
+        buf[0] = '\0';
+    }
+    return k > 0 ? ((size_t)k < n ? (size_t)k : n - 1) : 0;
+}
+
+static void warn_large(const tf_ctx *ctx, const tf_problem *p, const tf_fitdata *d)
+{
+    char why[320];
+    double peak;
+    if (tf_fit_law_range(p, d, &peak, why, sizeof why) > 0) {
+        tf_info(ctx, "fit: warning: %s", why);
     }
 }
 
@@ -252,7 +273,7 @@ int tf_fit_run(tf_ctx *ctx, const tf_problem *p, tf_solver *solver, const tf_fit
         o->cases.cut = &o->cut;
     }
     o->seconds_cases = tf_seconds() - t0;
-    warn_large(ctx, p, solver, &o->cases.train);
+    warn_large(ctx, p, &o->cases.train);
     /* refuse a forward family that does not apply before any fitting */
     if (plan->family->applicable(ctx, &o->cases, plan) != 0) {
         tf_fit_outcome_free(o);

@@ -56,4 +56,13 @@ const tf_family_result *tf_fit_result_of(const tf_fit_outcome *o, const tf_famil
  * first applicable inverse family (NULL when none). */
 tf_model *tf_fit_emitted(const tf_fit_outcome *o, const tf_fit_plan *plan, tf_family_kind kind);
 
+/* Whether the displacements of cases d leave the range the scene's law
+ * describes: more than a tenth of the body's thickness under a small-strain
+ * law, or more than the body's size under any.  Writes the sentence into
+ * buf (empty when neither holds) and the largest displacement component
+ * into *peak; returns the sentence's length.  tf_fit_run prints it as a
+ * warning; the header and the report carry it. */
+size_t tf_fit_law_range(const tf_problem *p, const tf_fitdata *d, double *peak, char *buf,
+                        size_t n);
+
 #endif /* TF_FIT_PIPELINE_H */

@@ -13,7 +13,9 @@
 #include "base/atomic_file.h"
 #include "base/plot.h"
 #include "cost/cycles.h"
+#include "fitting/pipeline.h"
 #include "model/forms/stateful.h"
+#include "problem/datasheet.h"
 #include "report/history_report.h"
 
 static const char *const axis_name = "xyz";
@@ -281,6 +283,21 @@ static void physics_table(FILE *f, const tf_fit_outcome *o)
     }
 }
 
+/* The physics the models encode (the header's banner says the same), and
+ * whether the displacements leave the range its law describes. */
+static void physics_section(FILE *f, const tf_problem *s, const tf_fit_plan *plan,
+                            const tf_fit_outcome *o)
+{
+    char sheet[2048], why[320];
+    tf_problem_datasheet(s, (int)plan->contact, sheet, sizeof sheet);
+    fprintf(f, "## Physics\n\n```\n%s\n```\n\n", sheet);
+    double peak;
+    if (o->cases.train.n_cases > 0 &&
+        tf_fit_law_range(s, &o->cases.train, &peak, why, sizeof why) > 0) {
+        fprintf(f, "**Warning (the law's range):** %s.\n\n", why);
+    }
+}
+
 static void write_md(FILE *f, const char *name, const char *header, const tf_problem *s,
                      const tf_solver *solver, const tf_fit_plan *plan, const tf_fit_outcome *o)
 {
@@ -305,6 +322,7 @@ static void write_md(FILE *f, const char *name, const char *header, const tf_pro
             o->cases.solves, ct->name, site, plan->n_train,
             o->cases.superposed ? "superposed from unit solves" : "solved directly",
             plan->n_heldout, s->envelope.radius, plan->folds);
+    physics_section(f, s, plan, o);
     fprintf(f, "## Models\n\nHeld-out errors are those of the float32 firmware (the host's "
                "reference evaluator reproduces its bits) against the double-precision solve. "
                "Times are the Cortex-M4F estimate (lower–upper bound) at 168 MHz and the "
