@@ -448,6 +448,47 @@ static void odd_coordinates_say_what_they_are(void **state)
     assert_contains(cube_with(NULL, &m), "far from the origin");
 }
 
+/* Malformed files on which assimp 5.2 asserted (an OFF file announcing more
+ * faces than it holds; a PLY face list that breaks off) or never returned
+ * (a PLY header without end_header) are refused with a message: the fuzz
+ * regression inputs (their first byte chose the format), read as files. */
+static const char *malformed(const char *input, const char *ext, tf_geom_msg *m)
+{
+    static char path[512];
+    FILE *in = fopen(input, "rb");
+    assert_non_null(in);
+    snprintf(path, sizeof path, "%s.%s", file("malformed"), ext);
+    FILE *out = fopen(path, "wb");
+    assert_non_null(out);
+    int c = fgetc(in); /* the fuzzer's format byte */
+    while ((c = fgetc(in)) != EOF) {
+        fputc(c, out);
+    }
+    fclose(in);
+    fclose(out);
+    tf_surface s;
+    alarm(60);
+    int rc = tf_surface_read(path, &s, m);
+    alarm(0);
+    if (rc == TF_GEOM_OK) {
+        tf_surface_free(&s);
+    }
+    assert_int_equal(rc, TF_GEOM_BAD_INPUT);
+    return m->error;
+}
+
+static void malformed_files_are_refused(void **state)
+{
+    (void)state;
+    tf_geom_msg m;
+    assert_contains(malformed("tests/fuzz/regress/mesh/off-fewer-faces", "off", &m),
+                    "cannot read mesh");
+    assert_contains(malformed("tests/fuzz/regress/mesh/ply-no-end-header", "ply", &m),
+                    "a PLY header without its end_header line");
+    assert_contains(malformed("tests/fuzz/regress/mesh/ply-polygons-declared-none", "ply", &m),
+                    "declared to hold polygons holds none");
+}
+
 static void unreadable_files_say_why(void **state)
 {
     (void)state;
@@ -524,6 +565,7 @@ int main(void)
         cmocka_unit_test(each_format_reads_the_same_closed_cube),
         cmocka_unit_test(obj_keeps_the_files_digits),
         cmocka_unit_test(odd_coordinates_say_what_they_are),
+        cmocka_unit_test(malformed_files_are_refused),
         cmocka_unit_test(unreadable_files_say_why),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);

@@ -192,6 +192,12 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
     expect_error(SETS("geometry.grid=2,2,2"), PARTS("geometry", "belong to a box"));
     expect_error(SETS("contact.0.node=1"), PARTS("contact.0", "site on an organ"));
     expect_error(SETS("cuts=[{path: [[0, 0], [1, 1]], depth: 1}]"), PARTS("cuts", "organ"));
+    /* the Newton solvers integrate over a box's cells: refused at the law,
+     * not in the solver ("node 1 lies in no integration cell's support") */
+    expect_error(SETS("material.law=neo-hookean"),
+                 PARTS("material.law", "'neo-hookean' on an organ", "linear law only"));
+    expect_error(SETS("material={law: kelvin, k1: 0.01, k2: 0.01, eta: 1, nu: 0.3}"),
+                 PARTS("material.law", "'kelvin' on an organ"));
     /* the line of the offending key: geometry.surface.file is on line 3 */
     expect_text_error("name: t\ngeometry:\n  surface: {file: open.obj}\n  spacing: 4\n"
                       "material: {E: 0.01, nu: 0.3}\nfixed:\n  - sphere: {centre: [0, 0, -10], "
