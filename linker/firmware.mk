@@ -118,7 +118,8 @@ FW_GOLDEN_IMAGES = $(foreach c,$(FW_CORES) $(FW_Q31_CORES) $(FW_VARIANTS),$(fore
 
 # The startup code must refuse flush-to-zero (FPSCR) and default-NaN (FPDSCR).
 $(FW)/m4f/fpscr_reject.elf $(FW)/m4f/fpdscr_reject.elf: $(FW)/m4f/%_reject.elf: \
-    tests/firmware/fpscr_reject.c $(FW_STARTUP) $(FW_SEMIHOST) | deps-check
+    tests/firmware/fpscr_reject.c $(FW_STARTUP) $(FW_SEMIHOST) linker/mps2-an386.ld linker/sections.ld \
+    | deps-check
 	@mkdir -p $(@D)
 	$(call say,LINK)
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(M4F_FLAGS) $(if $(filter fpdscr,$*),-DPOKE_FPDSCR) \
