@@ -50,6 +50,13 @@ static void *watch(void *arg)
     return NULL;
 }
 
+void tf_interrupts_child(void)
+{
+    sigset_t set;
+    watched(&set);
+    sigprocmask(SIG_UNBLOCK, &set, NULL);
+}
+
 int tf_interrupts_start(tf_interrupts *g)
 {
     sigset_t set, before;

@@ -35,6 +35,13 @@ typedef struct tf_interrupts {
  * signals in the writing thread only). */
 int tf_interrupts_start(tf_interrupts *g);
 
+/* In a child between fork and exec: unblocks the watched signals, which
+ * the child inherited blocked and exec would keep blocked, so that the
+ * program it runs (a compiler) ends by them as their default action says
+ * when the terminal interrupts the tool's process group.  Only
+ * async-signal-safe calls (sigprocmask). */
+void tf_interrupts_child(void);
+
 /* An output is open / is renamed or removed.  A release that closes the
  * last open output while a signal is pending ends the process by it. */
 void tf_interrupts_hold(tf_interrupts *g);

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "base/interrupts.h"
 #include "base/log.h"
 #include "cli/eval_shim.h"
 
@@ -142,6 +143,7 @@ static int run(tf_ctx *ctx, char *const *argv, const char *log)
         return tf_fail(ctx, "cannot start %s: %s", argv[0], strerror(errno));
     }
     if (pid == 0) {
+        tf_interrupts_child(); /* the compiler ends by the terminal's signals as the tool does */
         int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
         if (fd >= 0) {
             dup2(fd, 1);

@@ -156,5 +156,31 @@ expect 0 "eval, a good run over it" -- "$tool" -q eval coeffs/block48.h -i "$tmp
 ls -A "$w" | grep -q tmp && bad "temporary files left behind"
 [ -z "$(ls -A "$TMPDIR")" ] || bad "eval's build folders left behind: $(ls -A "$TMPDIR")"
 
+# The compiler eval starts ends with the tool when the terminal sends the
+# process group SIGTERM (here: to the tool and the compiler, one kill): it
+# inherited the signals blocked from the tool's first thread
+# (base/interrupts.h) and kept running without tf_interrupts_child.
+# (SIGTERM, because a shell starts a background job with SIGINT ignored.)
+printf '#!/bin/sh\necho $$ >"$SLOWCC_PID"\nexec sleep 30\n' >"$tmp/slowcc"
+chmod +x "$tmp/slowcc"
+SLOWCC_PID="$tmp/slowcc.pid" CC="$tmp/slowcc" "$tool" -q eval coeffs/block48.h \
+    -i "$tmp/ok.csv" -o "$w/slow.csv" 2>/dev/null &
+i=0
+while [ ! -s "$tmp/slowcc.pid" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+ccpid=$(cat "$tmp/slowcc.pid" 2>/dev/null)
+if [ -z "$ccpid" ]; then
+    bad "eval did not start the compiler"
+else
+    kill -TERM "$(awk '{ print $4 }' /proc/"$ccpid"/stat)" "$ccpid" # the tool (its parent) and it
+    i=0
+    while kill -0 "$ccpid" 2>/dev/null && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
+    if kill -0 "$ccpid" 2>/dev/null; then
+        bad "the compiler outlived SIGTERM ($(grep -E "SigBlk|SigIgn" /proc/"$ccpid"/status | tr "\n\t" "  "))"
+        kill -KILL "$ccpid"
+    fi
+fi
+wait
+runs=$((runs + 1))
+
 echo "eval: $sets golden sets, $vectors vectors, through -i/-o bit for bit"
 finish eval
