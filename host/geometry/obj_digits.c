@@ -155,8 +155,9 @@ static int match(const char *path, const records *rs, tf_surface *s, size_t v, t
         }
     }
     if (best == NULL) {
-        return tf_geom_fail(m, TF_GEOM_FAILED,
-                            "'%s': vertex (%.9g, %.9g, %.9g) as read matches no 'v' line", path,
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
+                            "'%s': vertex (%.9g, %.9g, %.9g) as the mesh reader read it matches "
+                            "no 'v' line of three numbers", path,
                             f[0], f[1], f[2]);
     }
     for (size_t k = k0; k < k1; ++k) {
@@ -190,13 +191,33 @@ static int restore(const char *path, const records *rs, tf_surface *s, tf_geom_m
     return TF_GEOM_OK;
 }
 
-int tf_obj_digits_restore(const char *path, char *text, tf_surface *s, tf_geom_msg *m)
+/* A NUL byte would end the text for the scan but not for assimp, which
+ * would then read vertices the scan never saw. */
+static int nul_byte(const char *path, const char *text, size_t len, tf_geom_msg *m)
+{
+    size_t at = strlen(text), line = 1;
+    if (at == len) {
+        return TF_GEOM_OK;
+    }
+    for (size_t k = 0; k < at; ++k) {
+        line += text[k] == '\n';
+    }
+    return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "'%s': line %zu holds a NUL byte (an OBJ file is text)",
+                        path, line);
+}
+
+int tf_obj_digits_restore(const char *path, char *text, size_t len, tf_surface *s,
+                          tf_geom_msg *m)
 {
     records rs = {0};
-    int rc = scan(text, &rs) == 0 ? TF_GEOM_OK
-                                  : tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
-    if (rc == TF_GEOM_OK) {
+    int rc = nul_byte(path, text, len, m);
+    if (rc == TF_GEOM_OK && scan(text, &rs) != 0) {
+        rc = tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
+    }
+    if (rc == TF_GEOM_OK && rs.n > 1) {
         qsort(rs.r, rs.n, sizeof *rs.r, by_x);
+    }
+    if (rc == TF_GEOM_OK) {
         rc = restore(path, &rs, s, m);
     }
     free(rs.r);

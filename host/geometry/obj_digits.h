@@ -12,11 +12,13 @@
 #include "geometry/surface.h"
 
 /* Replaces each finite vertex of s (as assimp read the OBJ at path, whose
- * text is given: it is cut into lines in place) by the coordinates of the
- * `v` record it came from, parsed as double.  Returns
- * TF_GEOM_OK; TF_GEOM_BAD_INPUT when two different records lie closer than
- * float32 tells apart (assimp has then joined them), naming both lines;
- * TF_GEOM_FAILED when out of memory or a vertex matches no record. */
-int tf_obj_digits_restore(const char *path, char *text, tf_surface *s, tf_geom_msg *m);
+ * len bytes of text are given, NUL-terminated: it is cut into lines in
+ * place) by the coordinates of the `v` record it came from, parsed as
+ * double.  Returns TF_GEOM_OK; TF_GEOM_BAD_INPUT when the text holds a NUL
+ * byte, when a vertex matches no record, or when two different records lie
+ * closer than float32 tells apart (assimp has then joined them), naming the
+ * lines; TF_GEOM_FAILED when out of memory. */
+int tf_obj_digits_restore(const char *path, char *text, size_t len, tf_surface *s,
+                          tf_geom_msg *m);
 
 #endif /* TF_OBJ_DIGITS_H */

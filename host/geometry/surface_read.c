@@ -34,7 +34,7 @@ static int obj_digits(const char *path, tf_surface *s, tf_geom_msg *m)
     tf_ctx_init(&ctx);
     size_t len;
     char *text = tf_input_file_read(&ctx, path, "surface mesh", TF_SURFACE_MAX_BYTES, &len);
-    int rc = text != NULL ? tf_obj_digits_restore(path, text, s, m)
+    int rc = text != NULL ? tf_obj_digits_restore(path, text, len, s, m)
                           : tf_geom_fail(m, TF_GEOM_FAILED, "%s", ctx.err);
     free(text);
     if (rc != TF_GEOM_OK) {

@@ -487,6 +487,8 @@ static void malformed_files_are_refused(void **state)
                     "a PLY header without its end_header line");
     assert_contains(malformed("tests/fuzz/regress/mesh/ply-polygons-declared-none", "ply", &m),
                     "declared to hold polygons holds none");
+    assert_contains(malformed("tests/fuzz/regress/mesh/obj-nul-byte", "obj", &m),
+                    "line 1 holds a NUL byte");
 }
 
 static void unreadable_files_say_why(void **state)
