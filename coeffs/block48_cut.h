@@ -22,13 +22,13 @@
  *       10591 instructions; Cortex-M4F <= 14429 cycles (85.89 us at 168 MHz), Cortex-M7 ~10350 (21.56 us at 480 MHz)
  *       model 'block48_cut_forward': no Q31 form for the cut family
  *       held-out error over 200 cases: max 0.0274 mm, rms 0.000971 mm
- *       error of the solve against the physics: not measured (tissuefit fit --reference)
+ *       error of the solve against the physics: not measured (the contact site moves with the cloud (a site given by node number); tissuefit fit --reference gives a finer solution)
  *   tfit_block48_cut_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_block48_cut_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 3.87e-08 N (float32 path: 6.09e-08)
  *       held-out error over 50 cases: max 5.96e-08 N, rms 2.27e-08 N
- *       error of the solve against the physics: not measured (tissuefit fit --reference)
+ *       error of the solve against the physics: not measured (the contact site moves with the cloud (a site given by node number); tissuefit fit --reference gives a finer solution)
  *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.422 N/mm; largest stiffness 1.26 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c

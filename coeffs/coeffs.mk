@@ -25,6 +25,8 @@ export PHYSICS_block48_nh := tests/calculix/data/block48_nh_physics.csv
 # the liver: CalculiX's finest organ level s20r1 at the 240 output vertices
 # (make calculix-organ-physics; docs/validation.md §14)
 export PHYSICS_liver := tests/calculix/data/liver_physics.csv
+# the stomach: CalculiX s20r1 at its 484 output vertices (make calculix-stomach)
+export PHYSICS_stomach := tests/calculix/data/stomach_physics.csv
 # block48_ve (seed 001's Kelvin law, the prony family): no CalculiX reference
 # of the law; its header states the difference of the relaxed solve from a
 # finer cloud's, 1 N along -z (make physics-ve-reference, tests/physics.mk;
@@ -90,7 +92,7 @@ $(T)/fresh/%.h: coeffs/%.yaml $(B)/bin/tissuefit
 	$(Q)r=$(B)/coeffs/t$(lastword $(COEFF_THREADS))/$*; \
 	  if [ $$r.h -nt $(B)/bin/tissuefit ] && [ $$r.h -nt $< ] && [ $${r}_golden.h -nt $< ]; then \
 	    cp $$r.h $@ && cp $${r}_golden.h $(@D)/$*_golden.h; \
-	  else $(B)/bin/tissuefit -q fit $< -o $@; fi
+	  else $(B)/bin/tissuefit -q fit $< --no-discretisation -o $@; fi
 $(T)/heldout-%: tests/fit/heldout_check.c $(T)/fresh/%.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a \
     $(B)/native/libtfit.a | deps-check
 	@mkdir -p $(@D)
@@ -128,6 +130,8 @@ check-fit: $(SHIPPED_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T
 	@tests/fit/cli_fit.sh $(B)/bin/tissuefit
 	@echo "== tissuefit sweep and budget-driven choice =="
 	@tests/fit/cli_sweep.sh $(B)/bin/tissuefit
+	@echo "== tissuefit fit: the discretisation measured by the tool itself =="
+	@tests/fit/cli_discretisation.sh $(B)/bin/tissuefit
 
 # The speed-for-accuracy sweep of each shipped scene (docs/tradeoff.md); the
 # native times are this machine's.

@@ -93,3 +93,12 @@ physics-ve-reference: $(B)/bin/tissuefit
 	  echo "$$f,block48_ve_fine_$$a.csv" >> $(PHYSICS_VE_DATA)/block48_ve_physics.csv.tmp; \
 	  echo "wrote $$out"; done; \
 	mv $(PHYSICS_VE_DATA)/block48_ve_physics.csv.tmp $(PHYSICS_VE_DATA)/block48_ve_physics.csv
+
+# The discretisation error the tool measures itself (no reference) against
+# the one measured with CalculiX, block48, the liver and the stomach
+# (docs/fitting.md, "The discretisation measured by the tool itself");
+# about 4 minutes.  check-fit's tests/fit/cli_discretisation.sh checks
+# block48's row in make check.
+.PHONY: discretisation-table
+discretisation-table: $(B)/bin/tissuefit
+	@tests/physics/self_table.sh $(B)/bin/tissuefit $(B)/physics/self_table.md

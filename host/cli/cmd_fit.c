@@ -18,6 +18,7 @@
 #include "cli/cmd_fit.h"
 #include "base/clock.h"
 #include "emit/emit_header.h"
+#include "cli/fit_physics.h"
 #include "fitting/discretisation.h"
 #include "fitting/pipeline.h"
 #include "problem/datasheet.h"
@@ -37,7 +38,8 @@ static void help(FILE *out)
             "usage: tissuefit fit SCENE -o FILE.h [--family F] [--contact NAME]\n"
             "                     [--set KEY=VALUE]... [--report DIR] [--direct]\n"
             "                     [--budget-us X] [--max-error-mm E] [--mcu CORE@MHZ]\n"
-            "                     [--reference INDEX.csv] [--discretisation-rel F,S]\n\n"
+            "                     [--reference INDEX.csv] [--discretisation-rel F,S]\n"
+            "                     [--no-discretisation]\n\n"
             "Solves the scene's load cases (one factorisation), fits every model family\n"
             "with its orders chosen by k-fold cross-validation, measures each on held-out\n"
             "load cases exactly as the float32 firmware evaluates it, and writes FILE.h\n"
@@ -66,6 +68,10 @@ static void help(FILE *out)
             "                      from another measurement, relative: F of the forward\n"
             "                      model's peak displacement, S of the contact site's\n"
             "                      (stated in the header as assumed, not measured)\n"
+            "  --no-discretisation without either, the tool measures the solve's error\n"
+            "                      itself on a coarser and a finer cloud (a linear\n"
+            "                      solve, docs/fitting.md); this skips it for quick\n"
+            "                      iterations (the header says \"not measured\")\n"
             "  --mcu CORE@MHZ      cortex-m4f@168 (default) or cortex-m7@480, any clock\n"
             "                      These three choose among every candidate of\n"
             "                      `tissuefit sweep` (float32, the scene's outputs); when\n"
@@ -78,8 +84,10 @@ static void help(FILE *out)
 
 typedef struct fit_args {
     const char *scene, *out, *family, *contact, *report, *reference;
-    int direct;
-    tf_discretisation phys; /* measured when reference != NULL */
+    int direct, no_disc;
+    tf_discretisation phys; /* when measured */
+    int measured;           /* phys holds a measurement (a reference's or the tool's own) */
+    char unmeasured[512];   /* else why not ("": no reason to state) */
     double disc_rel[2];     /* --discretisation-rel: forward, contact site; NAN: not given */
     double budget_us, max_error_mm; /* NAN when not given */
     tf_mcu mcu;
@@ -109,7 +117,8 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
         {"report", required_argument, NULL, 'r'}, {"direct", no_argument, NULL, 'd'},
         {"budget-us", required_argument, NULL, 'b'}, {"max-error-mm", required_argument, NULL, 'e'},
         {"mcu", required_argument, NULL, 'm'},     {"reference", required_argument, NULL, 'p'},
-        {"discretisation-rel", required_argument, NULL, 'D'}, {0}};
+        {"discretisation-rel", required_argument, NULL, 'D'},
+        {"no-discretisation", no_argument, NULL, 'N'}, {0}};
     int c;
     optind = 1;
     opterr = 0;
@@ -148,6 +157,9 @@ static int parse(tf_ctx *ctx, int argc, char **argv, fit_args *a)
             if (positive(ctx, "--max-error-mm", optarg, &a->max_error_mm) != 0) {
                 return -1;
             }
+            break;
+        case 'N':
+            a->no_disc = 1;
             break;
         case 'D':
             if (sscanf(optarg, "%lf,%lf", &a->disc_rel[0], &a->disc_rel[1]) != 2 ||
@@ -200,6 +212,7 @@ static int region_options(tf_ctx *ctx, const fit_args *a, const tf_scene *sc,
                       : !isnan(a->max_error_mm)      ? "--max-error-mm"
                       : a->reference != NULL         ? "--reference"
                       : !isnan(a->disc_rel[0])       ? "--discretisation-rel"
+                      : a->no_disc                   ? "--no-discretisation"
                       : a->report != NULL            ? "--report"
                       : p->servo_hz > 0              ? "fit.servo_hz"
                                                      : NULL;
@@ -344,59 +357,6 @@ static void organ_map_free(tf_emit_map *m)
     free((void *)m->rest_file);
 }
 
-/* The models' error against the physics: the forward model's displacement
- * error bound; the contact inverse's force error from the relative error of
- * the contact site's compliance over the largest force of the envelope. */
-static void state_physics(const tf_discretisation *d, const tf_envelope *env, tf_model *fwd,
-                          tf_model *con)
-{
-    const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
-    fwd->discretisation_max = d->max_mm;
-    con->discretisation_max = d->site_rel * biggest;
-    char reach[128] = "";
-    if (!d->enveloped) { /* a nonlinear solve: only where the reference's cases reach */
-        snprintf(reach, sizeof reach, " (forces up to %.3g %% of the envelope's radius %.3g N; "
-                 "not measured beyond)", 100 * d->reach, env->radius);
-    }
-    snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
-             "%s, %zu load case%s at %zu points, %s%s", d->source, d->cases,
-             d->cases == 1 ? "" : "s", d->points,
-             d->enveloped ? "bound over the envelope (linear)" : "largest over the cases", reach);
-    snprintf(con->discretisation_note, sizeof con->discretisation_note,
-             "%s: contact-site displacement off by %.3g %% (reference point %.3g mm from the "
-             "site), times the largest force %.3g N",
-             d->source, 100 * d->site_rel, d->site_gap, biggest);
-}
-
-/* --discretisation-rel: the solve's error taken as relative figures of
- * another measurement (a viscoelastic scene's, from the static solve of the
- * same grid against CalculiX: docs/fitting.md §7.6): the forward model's
- * times the peak displacement of its held-out cases, the contact site's
- * times the largest force.  Returns 0, or -1 when the forward model does
- * not know its peak. */
-static int assume_physics(tf_ctx *ctx, const double rel[2], const tf_envelope *env, tf_model *fwd,
-                          tf_model *con)
-{
-    const double *c = env->centre, biggest = env->radius + hypot(hypot(c[0], c[1]), c[2]);
-    if (!(fwd->heldout_rel_max > 0) || !(fwd->heldout_max > 0)) {
-        tf_error(ctx, "fit: --discretisation-rel: the forward model states no peak displacement "
-                 "(only the prony family's held-out histories do)");
-        return -1;
-    }
-    const double peak = fwd->heldout_max / fwd->heldout_rel_max;
-    fwd->discretisation_max = rel[0] * peak;
-    con->discretisation_max = rel[1] * biggest;
-    snprintf(fwd->discretisation_note, sizeof fwd->discretisation_note,
-             "assumed, not measured for this law: %.3g %% (another measurement's, "
-             "--discretisation-rel) of the held-out peak displacement %.4g mm",
-             100 * rel[0], peak);
-    snprintf(con->discretisation_note, sizeof con->discretisation_note,
-             "assumed, not measured for this law: contact-site displacement off by %.3g %% "
-             "(--discretisation-rel), times the largest force %.3g N",
-             100 * rel[1], biggest);
-    return 0;
-}
-
 static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fit_plan *p,
                 tf_fit_outcome *o, tf_model *fwd, tf_model *con, const char *choice)
 {
@@ -411,10 +371,14 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     const int region = p->family->region != NULL;
     snprintf(fwd->name, sizeof fwd->name, "%s_%s", base, tf_family_suffix(tf_family_of(fwd->family)));
     snprintf(con->name, sizeof con->name, "%s_%s", base, tf_family_suffix(tf_family_of(con->family)));
-    if (a->reference != NULL) {
-        state_physics(&a->phys, &s->envelope, fwd, con);
-    } else if (!isnan(a->disc_rel[0]) && assume_physics(ctx, a->disc_rel, &s->envelope, fwd, con)) {
-        return TF_EXIT_USAGE;
+    if (a->measured) {
+        tf_fit_physics_state(&a->phys, &s->envelope, fwd, con);
+    } else if (!isnan(a->disc_rel[0])) {
+        if (tf_fit_physics_assume(ctx, a->disc_rel, &s->envelope, fwd, con) != 0) {
+            return TF_EXIT_USAGE;
+        }
+    } else if (a->unmeasured[0] != '\0') {
+        tf_fit_physics_unmeasured(a->unmeasured, fwd, con);
     }
     uint32_t crc = 0;
     if (tf_file_crc32(a->scene, &crc) != 0) {
@@ -469,7 +433,7 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     }
     /* the contact inverse: within 1e-4 of the envelope radius (the issue's
      * bound for linear scenes), else the most accurate passive one */
-    const double disc = a->reference != NULL ? a->phys.max_mm : NAN;
+    const double disc = a->measured ? a->phys.max_mm : NAN;
     if (tf_select(ctx, &sw, &a->mcu, a->budget_us, a->max_error_mm, disc,
                   1e-4 * s->envelope.radius, &sel) != 0) {
         tf_error(ctx, "fit: %s: %s; nothing written", a->scene, ctx->err);
@@ -491,8 +455,9 @@ static int emit_selected(tf_ctx *ctx, const fit_args *a, const tf_problem *s, tf
     if (isnan(disc)) {
         snprintf(how_far, sizeof how_far,
                  "held-out max %.3g mm, %.3g %% of the %.3g mm its held-out cases reach; the "
-                 "discretisation not measured (no --reference)",
-                 f->heldout_max, 100 * f->heldout_max / f->peak, f->peak);
+                 "discretisation not measured (%.120s)",
+                 f->heldout_max, 100 * f->heldout_max / f->peak, f->peak,
+                 a->unmeasured[0] ? a->unmeasured : "no --reference");
     } else {
         snprintf(how_far, sizeof how_far,
                  "held-out max %.3g mm + discretisation %.3g mm = total %.3g mm, %.3g %% of the "
@@ -584,6 +549,16 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
         }
         tf_info(ctx, "fit: discretisation: max %.3g mm (%s), contact site %.3g %%", a->phys.max_mm,
                 a->phys.enveloped ? "over the envelope" : "over the cases", 100 * a->phys.site_rel);
+        a->measured = 1;
+    } else if (a->no_disc) {
+        snprintf(a->unmeasured, sizeof a->unmeasured, "--no-discretisation");
+    } else if (isnan(a->disc_rel[0]) && plan->family->region == NULL) {
+        if (tf_fit_physics_self(ctx, a->scene, &a->sets, solver, p, plan->contact, &a->phys) == 0) {
+            a->measured = 1;
+        } else {
+            snprintf(a->unmeasured, sizeof a->unmeasured, "%.400s", ctx->err);
+            tf_warn(ctx, "fit: the discretisation not measured: %s", ctx->err);
+        }
     }
     tf_fit_outcome o;
     const double t0 = tf_seconds();

@@ -247,6 +247,34 @@ static int compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact, 
     return rc;
 }
 
+int tf_discretisation_compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                              const double (*force)[3], size_t n, const double *x, size_t np,
+                              const double *const *u, tf_discretisation *out)
+{
+    ref_case cases[MAX_CASES] = {0};
+    int rc = n <= MAX_CASES ? 0 : tf_fail(ctx, "more than %d reference cases", MAX_CASES);
+    for (size_t k = 0; k < n && rc == 0; ++k) {
+        memcpy(cases[k].force, force[k], sizeof cases[k].force);
+        cases[k].np = np;
+        cases[k].x = malloc(3 * np * sizeof *x);
+        cases[k].u = malloc(3 * np * sizeof *x);
+        if (cases[k].x == NULL || cases[k].u == NULL) {
+            rc = tf_fail(ctx, "out of memory for the reference comparison");
+        } else {
+            memcpy(cases[k].x, x, 3 * np * sizeof *x);
+            memcpy(cases[k].u, u[k], 3 * np * sizeof *x);
+        }
+    }
+    if (rc == 0) {
+        rc = compare(ctx, s, p, contact, cases, n, out);
+    }
+    for (size_t k = 0; k < MAX_CASES; ++k) {
+        free(cases[k].x);
+        free(cases[k].u);
+    }
+    return rc;
+}
+
 int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                               const char *index, tf_discretisation *out)
 {

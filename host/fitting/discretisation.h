@@ -38,7 +38,16 @@ typedef struct tf_discretisation {
     int enveloped;    /* 1: max_mm bounds the whole envelope (linear); 0: the cases only */
     double reach;     /* the cases' largest |F - centre| / radius: how far into the
                        * envelope a nonlinear solve's figure was measured */
-    char source[256]; /* the index file, as given */
+    char source[256]; /* the index file, as given; "self-measured" */
+    /* Measured by the tool itself (discretisation_self.h): */
+    int self;
+    double self_order;    /* the observed order of convergence (NAN: none) */
+    double self_order_used; /* at most TF_SELF_ORDER_MAX */
+    double self_other_mm; /* max_mm from the coarser pair of clouds */
+    double self_diff[2];  /* L2 of the outputs' change, coarser -> the scene's -> finer, mm */
+    double self_h[3];     /* the clouds' spacing, mm: coarser, the scene's, finer */
+    size_t self_nodes[3];
+    double self_seconds;  /* the two extra clouds' setup and solves */
 } tf_discretisation;
 
 /* Solves the reference's cases with solver s at contact site `contact` of
@@ -46,5 +55,14 @@ typedef struct tf_discretisation {
  * and line in ctx->err. */
 int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                               const char *index, tf_discretisation *out);
+
+/* The same comparison against references held in memory: n cases, the
+ * forces (N) at contact site `contact`, the displacements u[k] (3 np, mm)
+ * at the points x (3 np, mm).  Fills max_mm, site_rel, site_gap, points,
+ * enveloped and reach of out, which the caller has cleared.  Returns 0, or
+ * -1 with a message. */
+int tf_discretisation_compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                              const double (*force)[3], size_t n, const double *x, size_t np,
+                              const double *const *u, tf_discretisation *out);
 
 #endif /* TF_DISCRETISATION_H */

@@ -27,4 +27,12 @@ typedef enum tf_vary { TF_VARY_GRID, TF_VARY_GAUSS } tf_vary;
 tf_scene *tf_scene_level(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets,
                          tf_vary vary, unsigned k, unsigned *label);
 
+/* The scene file with the user's overrides, its nodal spacing times f (a
+ * box: every axis of more than two nodes, its grid rounded to whole
+ * intervals, and its background cells; an organ: the interior spacing and a
+ * local refinement's, its surface vertices stay the file's) and an absolute
+ * d_c with it.  Returns NULL with a message in ctx->err. */
+tf_scene *tf_scene_scaled(tf_ctx *ctx, const char *path, const char *const *sets, size_t n_sets,
+                          double f);
+
 #endif /* TF_SCENE_LEVELS_H */

@@ -1,0 +1,233 @@
+/*
+ * discretisation_self.c — see discretisation_self.h.
+ */
+#include "fitting/discretisation_self.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/clock.h"
+#include "base/log.h"
+
+static const double unit_forces[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+/* The points the clouds are compared at: the outputs, then the contact
+ * point (3 (n_outputs + 1)). */
+static double *points_of(const tf_solver *s, const tf_problem *p, int contact, size_t *np)
+{
+    const tf_outputs *o = &p->outputs;
+    const double *xn = tf_solver_coords(s);
+    double *x = malloc(3 * (o->n_nodes + 1) * sizeof *x);
+    if (x == NULL) {
+        return NULL;
+    }
+    for (size_t i = 0; i < o->n_nodes; ++i) {
+        memcpy(x + 3 * i, o->points ? o->points + 3 * i : xn + 3 * (size_t)o->nodes[i],
+               3 * sizeof *x);
+    }
+    const tf_contact *site = &p->contacts[contact];
+    memcpy(x + 3 * o->n_nodes, site->by_node ? xn + 3 * (size_t)site->node : site->at,
+           3 * sizeof *x);
+    *np = o->n_nodes + 1;
+    return x;
+}
+
+/* The cloud's nominal spacing, mm: an organ's interior spacing; a box's
+ * geometric mean over the axes of more than two nodes. */
+static double spacing_of(const tf_problem *p)
+{
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m != NULL) {
+        return m->mesh.spacing;
+    }
+    const tf_box_geometry *b = &p->geometry.as.box;
+    double logsum = 0;
+    int axes = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (b->grid[a] > 2) {
+            logsum += log((b->max[a] - b->min[a]) / (b->grid[a] - 1));
+            ++axes;
+        }
+    }
+    return exp(logsum / axes);
+}
+
+/* The three unit forces' displacements at the points x, from solver s
+ * (u: 3 cases x 3 np). */
+static int unit_fields(tf_ctx *ctx, tf_solver *s, int contact, const double *x, size_t np,
+                       double *u)
+{
+    const size_t dofs = 3 * tf_solver_node_count(s);
+    double *nodal = malloc(3 * dofs * sizeof *nodal), *grad = malloc(9 * np * sizeof *grad);
+    int rc = nodal && grad ? 0 : tf_fail(ctx, "out of memory");
+    if (rc == 0 && tf_solver_solve(s, contact, unit_forces, 3, NULL, nodal) != 0) {
+        rc = -1;
+    }
+    for (size_t k = 0; k < 3 && rc == 0; ++k) {
+        rc = tf_solver_field(ctx, s, nodal + k * dofs, x, np, u + 3 * np * k, grad);
+    }
+    free(nodal);
+    free(grad);
+    return rc;
+}
+
+/* The same contact site on another cloud: its name, and its point. */
+static int same_site(const tf_problem *p, const tf_solver *s, const tf_problem *q,
+                     const tf_solver *t, int contact)
+{
+    if ((size_t)contact >= q->n_contacts) {
+        return 0;
+    }
+    const tf_contact *a = &p->contacts[contact], *b = &q->contacts[contact];
+    const double *xa = a->by_node ? tf_solver_coords(s) + 3 * (size_t)a->node : a->at;
+    const double *xb = b->by_node ? tf_solver_coords(t) + 3 * (size_t)b->node : b->at;
+    return strcmp(a->name, b->name) == 0 &&
+           hypot(hypot(xa[0] - xb[0], xa[1] - xb[1]), xa[2] - xb[2]) < 1e-9;
+}
+
+/* Level `which` (0 coarser, 2 finer) at spacing factor f: its fields at x. */
+static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *p,
+                 const tf_solver *s, int contact, const double *x, size_t np, double *u,
+                 tf_discretisation *out, int which)
+{
+    const tf_problem *q = re->make(re->user, ctx, f);
+    if (q == NULL) {
+        return tf_fail(ctx, "the cloud at %.4g times the spacing: %s", f, ctx->err);
+    }
+    tf_solver *t = tf_solver_create(q, NULL, ctx);
+    int rc = t != NULL ? 0 : tf_fail(ctx, "the cloud at %.4g times the spacing: %s", f, ctx->err);
+    if (rc == 0 && !same_site(p, s, q, t, contact)) {
+        tf_fail(ctx, "the contact site moves with the cloud (a site given by node number)");
+        rc = 1;
+    }
+    if (rc == 0) {
+        out->self_h[which] = spacing_of(q);
+        out->self_nodes[which] = tf_solver_node_count(t);
+        tf_info(ctx, "fit: discretisation: the cloud of spacing %.4g mm (%zu nodes) solved",
+                out->self_h[which], out->self_nodes[which]);
+        rc = unit_fields(ctx, t, contact, x, np, u);
+    }
+    tf_solver_destroy(t);
+    re->release(re->user, q);
+    return rc;
+}
+
+static double norm(const double *a, const double *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; ++i) {
+        s += (a[i] - b[i]) * (a[i] - b[i]);
+    }
+    return sqrt(s);
+}
+
+/* The order p with (rc^p - 1) / (1 - rf^-p) = rho, by bisection (the left
+ * side rises with p); NAN when rho lies outside what p in [0.1, 12] gives. */
+static double observed_order(double rho, double rc, double rf)
+{
+    double lo = 0.1, hi = 12;
+    const double at_lo = (pow(rc, lo) - 1) / (1 - pow(rf, -lo));
+    const double at_hi = (pow(rc, hi) - 1) / (1 - pow(rf, -hi));
+    if (!(rho >= at_lo && rho <= at_hi)) {
+        return NAN;
+    }
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if ((pow(rc, mid) - 1) / (1 - pow(rf, -mid)) > rho) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* The references u(h) - E for the two estimates, and the comparisons. */
+static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact, const double *x,
+                    size_t np, double *const u[3], tf_discretisation *out)
+{
+    const size_t n = 9 * np;
+    const double rc = out->self_h[0] / out->self_h[1], rf = out->self_h[1] / out->self_h[2];
+    const double dc = norm(u[0], u[1], n), df = norm(u[1], u[2], n);
+    out->self_diff[0] = dc;
+    out->self_diff[1] = df;
+    out->self_order = df > 0 ? observed_order(dc / df, rc, rf) : NAN;
+    if (!(df > 0)) {
+        tf_fail(ctx, "the clouds of spacing %.4g and %.4g mm give the same outputs", out->self_h[1],
+                out->self_h[2]);
+        return 1;
+    }
+    /* No order observed (the differences do not shrink, as when cloud-to-
+     * cloud scatter outweighs the trend): first order, the conservative
+     * choice (a lower order makes E larger).  An order observed above the
+     * cap, common before the asymptotic range, would make E smaller. */
+    const double q = isnan(out->self_order) || out->self_order < TF_SELF_ORDER_MIN
+                         ? TF_SELF_ORDER_MIN
+                         : fmin(out->self_order, TF_SELF_ORDER_MAX);
+    out->self_order_used = q;
+    double *ref = malloc(2 * n * sizeof *ref);
+    if (ref == NULL) {
+        return tf_fail(ctx, "out of memory");
+    }
+    for (size_t i = 0; i < n; ++i) {
+        ref[i] = u[1][i] - (u[1][i] - u[2][i]) / (1 - pow(rf, -q));  /* the finer pair */
+        ref[n + i] = u[1][i] - (u[0][i] - u[1][i]) / (pow(rc, q) - 1); /* the coarser pair */
+    }
+    tf_discretisation other = {0};
+    const double *fine[3] = {ref, ref + 3 * np, ref + 6 * np};
+    const double *coarse[3] = {ref + n, ref + n + 3 * np, ref + n + 6 * np};
+    int rc2 = tf_discretisation_compare(ctx, s, p, contact, unit_forces, 3, x, np, coarse, &other);
+    if (rc2 == 0) {
+        rc2 = tf_discretisation_compare(ctx, s, p, contact, unit_forces, 3, x, np, fine, out);
+    }
+    out->self_other_mm = other.max_mm;
+    free(ref);
+    return rc2;
+}
+
+int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
+                           int contact, tf_discretisation *out)
+{
+    memset(out, 0, sizeof *out);
+    snprintf(out->source, sizeof out->source, "self-measured");
+    out->self = 1;
+    out->self_order = out->self_order_used = out->self_other_mm = NAN;
+    if (!(tf_solver_caps_of(s) & TF_SOLVER_LINEAR)) {
+        tf_fail(ctx, "the self-measurement covers linear solves (the solver %s is not linear)",
+                tf_solver_name(s));
+        return 1;
+    }
+    if (contact < 0 || (size_t)contact >= p->n_contacts) {
+        return tf_fail(ctx, "a discretisation measurement needs a contact site");
+    }
+    const double t0 = tf_seconds();
+    size_t np = 0;
+    double *x = points_of(s, p, contact, &np), *u[3] = {NULL, NULL, NULL};
+    int rc = x != NULL ? 0 : tf_fail(ctx, "out of memory");
+    for (int k = 0; k < 3 && rc == 0; ++k) {
+        u[k] = malloc(9 * np * sizeof *u[k]);
+        rc = u[k] != NULL ? 0 : tf_fail(ctx, "out of memory");
+    }
+    out->self_h[1] = spacing_of(p);
+    out->self_nodes[1] = tf_solver_node_count(s);
+    if (rc == 0) {
+        rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, x, np, u[0], out, 0);
+    }
+    if (rc == 0) {
+        rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, x, np, u[2], out, 2);
+    }
+    if (rc == 0) {
+        rc = unit_fields(ctx, s, contact, x, np, u[1]);
+    }
+    if (rc == 0) {
+        rc = estimate(ctx, s, p, contact, x, np, u, out);
+    }
+    out->self_seconds = tf_seconds() - t0;
+    free(x);
+    for (int k = 0; k < 3; ++k) {
+        free(u[k]);
+    }
+    return rc;
+}

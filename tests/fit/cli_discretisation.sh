@@ -1,0 +1,51 @@
+#!/bin/sh
+# cli_discretisation.sh TISSUEFIT — without a reference, `tissuefit fit`
+# measures the solve's error itself on a coarser and a finer cloud
+# (fitting/discretisation_self.h) and the header states fit +
+# discretisation = total; on block48 the measurement is within a factor of 2
+# of the one against CalculiX; --no-discretisation skips it, and a scene it
+# cannot measure says why in the header.
+set -u
+tool=$1
+. "$(dirname "$0")/../cli/expect.sh"
+
+# the header's #define NAME (its value)
+define() { sed -n "s/^#define TFIT_[A-Z0-9_]*_$2 \([^ ]*\).*/\1/p" "$1"; }
+within2() { awk -v a="$1" -v b="$2" 'BEGIN { r = a / b; exit !(r >= 0.5 && r <= 2) }'; }
+
+expect 0 "block48, self-measured" -- "$tool" fit coeffs/block48.yaml -o "$tmp/w/self.h"
+says "the clouds' progress" "fit: discretisation: the cloud of spacing 1.219 mm (9248 nodes) solved"
+grep -q "(discretisation: self-measured: Richardson extrapolation over clouds of spacing 2.123, 1.642 (this one), 1.219 mm (2000, 4056, 9248 nodes), observed order" "$tmp/w/self.h" ||
+    bad "the header does not say how the discretisation was measured"
+grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/self.h" ||
+    bad "the header states no total"
+expect 0 "block48 against CalculiX" -- "$tool" -q fit coeffs/block48.yaml \
+    --reference tests/calculix/data/block48_physics.csv -o "$tmp/w/ref.h"
+for d in FORWARD_DISCRETISATION_MAX_MM CONTACT_DISCRETISATION_MAX_N; do
+    own=$(define "$tmp/w/self.h" $d) ref=$(define "$tmp/w/ref.h" $d)
+    if [ -z "$own" ] || [ -z "$ref" ]; then
+        bad "$d missing ('$own', '$ref')"
+    else
+        within2 "$own" "$ref" || bad "$d: self-measured $own is not within a factor of 2 of CalculiX's $ref"
+        echo "ok:   $d: self-measured $own, against CalculiX $ref"
+    fi
+done
+
+expect 0 "--no-discretisation" -- "$tool" -q fit coeffs/block48.yaml --no-discretisation -o "$tmp/w/no.h"
+grep -q "error of the solve against the physics: not measured (--no-discretisation; tissuefit fit --reference" "$tmp/w/no.h" ||
+    bad "--no-discretisation: the header does not say 'not measured'"
+[ -z "$(define "$tmp/w/no.h" FORWARD_DISCRETISATION_MAX_MM)" ] || bad "--no-discretisation: a figure stated"
+
+# what cannot be measured this way is stated, and the fit goes on
+expect 0 "a contact site by node number" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/node.h"
+grep -q "not measured (the contact site moves with the cloud (a site given by node number)" "$tmp/w/node.h" ||
+    bad "a site by node number: the header does not say why it was not measured"
+TINY="--set geometry.grid=5,5,2 --set contact.0.node=13 --set fit.train=12 --set fit.heldout=3 --set fit.max_degree=1"
+expect 0 "a nonlinear law" -- "$tool" -q fit tests/solver/block48_seed.yaml $TINY \
+    --set material.law=neo-hookean -o "$tmp/w/nl.h"
+grep -q "not measured (the self-measurement covers linear solves" "$tmp/w/nl.h" ||
+    bad "a nonlinear law: the header does not say why it was not measured"
+expect 2 "--no-discretisation on a region" -- "$tool" -q fit coeffs/block48_region.yaml --no-discretisation \
+    -o "$tmp/w/rg.h"
+says "--no-discretisation on a region" "not yet: --no-discretisation"
+finish discretisation
