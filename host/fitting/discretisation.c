@@ -247,6 +247,20 @@ static int compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact, 
     return rc;
 }
 
+/* The comparison when the cases were read (rc 0), then the cases freed. */
+static int compare_and_free(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                            ref_case *cases, size_t n, int rc, tf_discretisation *out)
+{
+    if (rc == 0) {
+        rc = compare(ctx, s, p, contact, cases, n, out);
+    }
+    for (size_t k = 0; k < MAX_CASES; ++k) {
+        free(cases[k].x);
+        free(cases[k].u);
+    }
+    return rc;
+}
+
 int tf_discretisation_compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                               const double (*force)[3], size_t n, const double *x, size_t np,
                               const double *const *u, tf_discretisation *out)
@@ -265,14 +279,7 @@ int tf_discretisation_compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, in
             memcpy(cases[k].u, u[k], 3 * np * sizeof *x);
         }
     }
-    if (rc == 0) {
-        rc = compare(ctx, s, p, contact, cases, n, out);
-    }
-    for (size_t k = 0; k < MAX_CASES; ++k) {
-        free(cases[k].x);
-        free(cases[k].u);
-    }
-    return rc;
+    return compare_and_free(ctx, s, p, contact, cases, n, rc, out);
 }
 
 int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
@@ -287,12 +294,5 @@ int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, in
     size_t n = 0;
     int rc = read_index(ctx, index, cases, &n);
     out->cases = n;
-    if (rc == 0) {
-        rc = compare(ctx, s, p, contact, cases, n, out);
-    }
-    for (size_t k = 0; k < MAX_CASES; ++k) {
-        free(cases[k].x);
-        free(cases[k].u);
-    }
-    return rc;
+    return compare_and_free(ctx, s, p, contact, cases, n, rc, out);
 }

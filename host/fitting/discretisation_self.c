@@ -202,6 +202,12 @@ int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, cons
     if (contact < 0 || (size_t)contact >= p->n_contacts) {
         return tf_fail(ctx, "a discretisation measurement needs a contact site");
     }
+    /* a box's node number names another point on another cloud (an
+     * organ's site is a surface vertex, the same on every cloud) */
+    if (p->contacts[contact].by_node && tf_problem_mesh(p) == NULL) {
+        tf_fail(ctx, "the contact site moves with the cloud (a site given by node number)");
+        return 1;
+    }
     const double t0 = tf_seconds();
     size_t np = 0;
     double *x = points_of(s, p, contact, &np), *u[3] = {NULL, NULL, NULL};

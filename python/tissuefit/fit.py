@@ -10,10 +10,12 @@ from .header import Header
 
 
 def fit(scene, out, sets=(), family=None, contact=None, report=None, direct=False,
-        budget_us=None, max_error_mm=None, mcu=None, reference=None, log_level=1):
+        budget_us=None, max_error_mm=None, mcu=None, reference=None, discretisation=True,
+        log_level=1):
     """Fits the scene and writes out (NAME.h) and NAME_golden.h, as
     `tissuefit fit SCENE -o OUT [--set KEY=VALUE]... [--family F] ...` does
-    (docs/fitting.md; the options are the command's).  Returns the Header,
+    (docs/fitting.md; the options are the command's; discretisation=False is
+    --no-discretisation).  Returns the Header,
     whose info(model) gives the numbers the header states (held-out
     errors, operations, table bytes, cycles).  Raises tissuefit.Error with
     the tool's message; nothing is written then."""
@@ -27,6 +29,8 @@ def fit(scene, out, sets=(), family=None, contact=None, report=None, direct=Fals
             args += [opt, os.fspath(val) if isinstance(val, os.PathLike) else str(val)]
     if direct:
         args.append("--direct")
+    if not discretisation:
+        args.append("--no-discretisation")
     ctx = Context(log_level)
     arr = _native.strings(args)
     status = ctypes.c_int()

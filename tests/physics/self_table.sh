@@ -23,7 +23,7 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
         fr=$(define "$w/${n}_ref.h" FORWARD_DISCRETISATION_MAX_MM)
         cs=$(define "$w/${n}_self.h" CONTACT_DISCRETISATION_MAX_N)
         cr=$(define "$w/${n}_ref.h" CONTACT_DISCRETISATION_MAX_N)
-        order=$(sed -n 's/.*self-measured: Richardson.* nodes), \([^,]*\(, taken as [0-9.]*\)\?\), at .*/\1/p' "$w/${n}_self.h" | head -1)
+        order=$(sed -n 's/.*self-measured: Richardson.* nodes), \(.*\), at [0-9]* points.*/\1/p' "$w/${n}_self.h" | head -1)
         secs=$(sed -n 's/^fit: discretisation (self-measured.*; \([0-9.]*\) s$/\1/p' "$w/${n}_self.log")
         echo "| $n | $fs | $fr | $(ratio "$fs" "$fr") | $cs | $cr | $(ratio "$cs" "$cr") | $order | $secs |"
     done

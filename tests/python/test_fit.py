@@ -27,6 +27,13 @@ def test_the_tools_bytes(fitted):
         assert (d / "python" / f).read_bytes() == (d / "tool" / f).read_bytes(), f
 
 
+def test_no_discretisation(tmp_path):
+    """discretisation=False is --no-discretisation: the header says so."""
+    tissuefit.fit(SCENE, str(tmp_path / "n.h"), discretisation=False, log_level=0)
+    text = (tmp_path / "n.h").read_text()
+    assert "error of the solve against the physics: not measured (--no-discretisation;" in text
+
+
 def test_numbers(fitted):
     d, h = fitted
     assert h.models == ["seed_forward", "seed_contact"]

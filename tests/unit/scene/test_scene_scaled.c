@@ -1,0 +1,95 @@
+/*
+ * test_scene_scaled.c — the clouds the self-measured discretisation solves
+ * (tf_scene_scaled, scene_levels.h): a box's grid rounded to whole
+ * intervals on every axis of more than two nodes, its background cells
+ * with it; an organ's interior spacing scaled and its surface vertices
+ * kept; an absolute d_c scaled, a relative one left alone; the user's
+ * overrides applied first.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "base/context.h"
+#include "scene/scene_levels.h"
+
+static tf_scene *scaled(const char *path, const char *const *sets, size_t n, double f)
+{
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    tf_scene *s = tf_scene_scaled(&ctx, path, sets, n, f);
+    if (s == NULL) {
+        fail_msg("%s", ctx.err);
+    }
+    return s;
+}
+
+static void box_grid_and_cells(void **state)
+{
+    (void)state;
+    /* coeffs/block48.yaml: 26 x 26 x 6 nodes, 25 x 25 x 5 cells */
+    tf_scene *fine = scaled("coeffs/block48.yaml", NULL, 0, 0.75);
+    const tf_box_geometry *b = &fine->problem.geometry.as.box;
+    assert_int_equal(b->grid[0], 34); /* 25 / 0.75 = 33.3 intervals -> 33 */
+    assert_int_equal(b->grid[1], 34);
+    assert_int_equal(b->grid[2], 8);  /* 5 / 0.75 = 6.67 -> 7 */
+    assert_int_equal(fine->problem.solver.cells[0], 33);
+    assert_int_equal(fine->problem.solver.cells[2], 7);
+    assert_true(b->max[2] == 6.0); /* the body stays */
+    tf_scene_free(fine);
+    tf_scene *coarse = scaled("coeffs/block48.yaml", NULL, 0, 4.0 / 3.0);
+    assert_int_equal(coarse->problem.geometry.as.box.grid[0], 20); /* 18.75 -> 19 */
+    assert_int_equal(coarse->problem.geometry.as.box.grid[2], 5);  /* 3.75 -> 4 */
+    tf_scene_free(coarse);
+}
+
+static void user_sets_first(void **state)
+{
+    (void)state;
+    const char *sets[] = {"geometry.grid=11,11,3"};
+    tf_scene *s = scaled("coeffs/block48.yaml", sets, 1, 0.5);
+    assert_int_equal(s->problem.geometry.as.box.grid[0], 21);
+    assert_int_equal(s->problem.geometry.as.box.grid[2], 5);
+    tf_scene_free(s);
+}
+
+static void absolute_d_c_scales(void **state)
+{
+    (void)state;
+    const char *sets[] = {"solver.rbf.d_c=3"};
+    tf_scene *s = scaled("coeffs/block48.yaml", sets, 1, 0.75);
+    assert_true(s->problem.solver.d_c_spacings == 0);
+    assert_true(fabs(s->problem.solver.d_c - 2.25) < 1e-12);
+    tf_scene_free(s);
+}
+
+static void organ_interior_spacing(void **state)
+{
+    (void)state;
+    tf_scene *base = scaled("coeffs/stomach.yaml", NULL, 0, 1.0);
+    tf_scene *s = scaled("coeffs/stomach.yaml", NULL, 0, 0.75);
+    const tf_mesh_geometry *mb = tf_problem_mesh(&base->problem), *ms = tf_problem_mesh(&s->problem);
+    assert_true(mb->mesh.spacing == 12.0);
+    assert_true(ms->mesh.spacing == 9.0);
+    assert_true(fabs(s->problem.solver.d_c - 1.5) < 1e-12); /* the scene's absolute 2 mm */
+    /* the surface is the file's on both */
+    assert_int_equal(ms->tm.nsurf, mb->tm.nsurf);
+    assert_true(ms->tm.nn > mb->tm.nn);
+    tf_scene_free(s);
+    tf_scene_free(base);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(box_grid_and_cells),
+        cmocka_unit_test(user_sets_first),
+        cmocka_unit_test(absolute_d_c_scales),
+        cmocka_unit_test(organ_interior_spacing),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
