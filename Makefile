@@ -189,7 +189,8 @@ install: all $(INSTALL_CORES:%=$(B)/%/libtfit.a)
 	install -m 644 cmake/tfitConfig.cmake cmake/tfitTargets.cmake cmake/tfitGenerate.cmake $(INSTALL_CMAKE)
 	sed -e 's|@VERSION@|$(VERSION)|g' cmake/tfitConfigVersion.cmake.in > $(INSTALL_CMAKE)/tfitConfigVersion.cmake
 	chmod 644 $(INSTALL_CMAKE)/tfitConfigVersion.cmake
-	install -m 644 cmake/arm-none-eabi-m4f.cmake $(INSTALL_SHARE)/cmake
+	install -m 644 cmake/arm-none-eabi.cmake cmake/arm-none-eabi-m4f.cmake cmake/arm-none-eabi-m7.cmake \
+	  $(INSTALL_SHARE)/cmake
 	install -m 644 linker/*.ld linker/startup.c linker/startup.h linker/semihost.c linker/semihost.h \
 	  $(INSTALL_SHARE)/linker
 	$(foreach c,$(INSTALL_CORES),install -d $(DESTDIR)$(PREFIX)/lib/tfit/$(c) && \

@@ -8,7 +8,7 @@
 #   tfit::startup    linker/startup.c of the Cortex-M images, and
 #   tfit::semihost   QEMU's semihosting console (linker/semihost.c)
 #   TFIT_LINKER_DIR  the linker scripts: -L${TFIT_LINKER_DIR} -T stm32f407.ld
-#   TFIT_TOOLCHAIN_DIR  toolchain files (arm-none-eabi-m4f.cmake)
+#   TFIT_TOOLCHAIN_DIR  toolchain files (arm-none-eabi-m4f.cmake, arm-none-eabi-m7.cmake)
 #   tfit_generate_header(NAME ... SCENE ... OUTPUT_DIR ...)  (tfitGenerate.cmake)
 include("${CMAKE_CURRENT_LIST_DIR}/tfitTargets.cmake")
 if(NOT tfit_FOUND STREQUAL "FALSE")

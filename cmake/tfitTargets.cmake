@@ -19,7 +19,8 @@ if(CMAKE_CROSSCOMPILING)
     if(TFIT_CORE STREQUAL "")
         set(tfit_FOUND FALSE)
         string(CONCAT tfit_NOT_FOUND_MESSAGE "cross-compiling: set TFIT_CORE to the core to link (the "
-            "toolchain file arm-none-eabi-m4f.cmake sets cortex-m4f); installed: ${_tfit_cores}")
+            "toolchain files arm-none-eabi-m4f.cmake and -m7.cmake set cortex-m4f and cortex-m7); "
+            "installed: ${_tfit_cores}")
         return()
     endif()
     set(_tfit_lib "${_tfit_prefix}/lib/tfit/${TFIT_CORE}/libtfit.a")

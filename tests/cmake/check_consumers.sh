@@ -1,10 +1,11 @@
 #!/bin/sh
 # check_consumers.sh WORK VERSION — check-cmake's runs (tests/cmake.mk).
 #
-# WORK/prefix holds `make install INSTALL_CORES=cortex-m4f`.  Builds, outside
+# WORK/prefix holds `make install INSTALL_CORES="cortex-m4f cortex-m7"`.  Builds, outside
 # the tree's build, the consumer projects of tests/cmake/:
-#   consumer_find    find_package(tfit) natively and for Cortex-M4F (the
-#                    installed toolchain file; QEMU mps2-an386);
+#   consumer_find    find_package(tfit) natively and for Cortex-M4F and
+#                    Cortex-M7 (the installed toolchain files; QEMU
+#                    mps2-an386, mps2-an500);
 #   consumer_vendor  add_subdirectory(target) natively and for Cortex-M4F;
 # runs their golden programs (0 mismatching words, and the planted program
 # must fail with exactly one), checks the flags every compile got, the
@@ -37,6 +38,7 @@ run() {
     dir=$work/$1 prog=$2
     case $1 in
     *-m4f) qemu="$top/tests/firmware/qemu_run.sh mps2-an386" suffix=.elf ;;
+    *-m7) qemu="$top/tests/firmware/qemu_run.sh mps2-an500" suffix=.elf ;;
     *) qemu="" suffix="" ;;
     esac
     if ! out=$($qemu "$dir/$prog$suffix" 2>&1); then
@@ -136,6 +138,18 @@ run find-m4f golden_block48
 run find-m4f golden_seed48
 flags find-m4f 'tests/cmake/common/golden_run\.c' -ffp-contract=off -fdata-sections -mcpu=cortex-m4 -mfloat-abi=hard
 placed find-m4f golden_block48
+
+# --- the same for Cortex-M7 (the installed arm-none-eabi-m7.cmake; QEMU mps2-an500)
+# shellcheck disable=SC2086
+configure consumer_find find-m7 $find_args -DCMAKE_TOOLCHAIN_FILE="${toolchain%-m4f.cmake}-m7.cmake" \
+    -DCMAKE_BUILD_TYPE=Release
+build find-m7
+run find-m7 golden_block48
+flags find-m7 'tests/cmake/common/golden_run\.c' -ffp-contract=off -fdata-sections -mcpu=cortex-m7 \
+      -mfpu=fpv5-d16 -mfloat-abi=hard
+grep -q "lib/tfit/cortex-m7/libtfit.a" "$work/find-m7/CMakeFiles/golden_block48.dir/link.txt" ||
+    fail "find-m7: golden_block48 does not link lib/tfit/cortex-m7/libtfit.a"
+placed find-m7 golden_block48
 
 # --- add_subdirectory(target), native and Cortex-M4F
 # shellcheck disable=SC2086
