@@ -74,10 +74,23 @@ const char *tf_api_scene_contact_name(const tf_api_scene *s, size_t k);
  * --cut-progress (the scene's cuts whole), else S in [0, 1].  The solver is
  * built at the first solve and kept for the next ones at the same cut
  * progress (each solve is one load case from rest, as the tool's).  A scene
- * with a history: section is refused (`tissuefit solve` writes its time
- * series). */
+ * with a history: section is refused (tf_api_solve_history solves it). */
 int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double *force,
                  double cut_progress, double *u, double *at_outputs);
+
+/* `tissuefit solve SCENE [--force F] [--contact NAME]` of a scene with a
+ * history: section, in two calls: tf_api_history_steps gives the number of
+ * steps n, then tf_api_solve_history fills the times t (n), every node's
+ * displacements u (n x 3 n_nodes) and the outputs' at_outputs (n x 3
+ * n_outputs; NULL: not wanted), the bits of the tool's CSV.  force NULL:
+ * history.force, else the force that replaces it (refused for a table of
+ * forces, as the tool refuses --force); contact NULL: history.contact.
+ * Each call starts from rest on a solver built afresh: a second run of a
+ * nonlinear solver reset to rest (tf_nonlinear_reset) differs from the
+ * first in the last bits, so something it keeps is not reset. */
+int tf_api_history_steps(tf_ctx *ctx, tf_api_scene *s, const double *force, size_t *n);
+int tf_api_solve_history(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double *force,
+                         double *t, double *u, double *at_outputs);
 
 /* The displacement field of a solution u (from tf_api_solve of this scene)
  * at np points xyz (3 np, mm) into out (3 np): what an output at those

@@ -10,6 +10,7 @@
 
 #include "api/api_internal.h"
 #include "cli/cmd_args.h"
+#include "solvers/history_run.h"
 #include "solvers/probe.h"
 
 /* The contact site as `tissuefit solve` picks it (cmd_solve.c,
@@ -82,8 +83,8 @@ int tf_api_solve(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double
 {
     const tf_problem *p = &s->scene->problem;
     if (p->history.present) {
-        return tf_fail(ctx, "solve: %s has a history: section: its time series is written by "
-                            "`tissuefit solve` (CSV, ParaView .pvd), not by this interface",
+        return tf_fail(ctx, "solve: %s has a history: section: solve it as a time series "
+                            "(tf_api_solve_history; Python: Scene.solve_history)",
                        s->path);
     }
     const double none[3] = {0, 0, 0};
@@ -119,4 +120,81 @@ int tf_api_field(tf_ctx *ctx, tf_api_scene *s, const double *u, const double *xy
         return tf_api_fail_on(ctx, "field: %s", s->path);
     }
     return 0;
+}
+
+/* The history's samples, force replacing history.force when given. */
+static int history_samples(tf_ctx *ctx, const tf_api_scene *s, const double *force,
+                           tf_samples *smp)
+{
+    const tf_problem *p = &s->scene->problem;
+    if (!p->history.present) {
+        return tf_fail(ctx, "solve: %s has no history: section (solve it one load case at a "
+                            "time: tf_api_solve)",
+                       s->path);
+    }
+    tf_history h = p->history;
+    if (force != NULL) {
+        if (h.table) {
+            return tf_fail(ctx, "solve: %s: its history has a table of forces: no --force",
+                           s->path);
+        }
+        memcpy(h.force, force, sizeof h.force);
+    }
+    return tf_history_sample(&h, smp) == 0 ? 0 : tf_fail(ctx, "solve: out of memory");
+}
+
+int tf_api_history_steps(tf_ctx *ctx, tf_api_scene *s, const double *force, size_t *n)
+{
+    tf_samples smp;
+    if (history_samples(ctx, s, force, &smp) != 0) {
+        return -1;
+    }
+    *n = smp.n;
+    tf_samples_free(&smp);
+    return 0;
+}
+
+/* Each step's outputs, probed from its nodal values. */
+static int history_outputs(tf_ctx *ctx, tf_api_scene *s, size_t steps, const double *u,
+                           double *at_outputs)
+{
+    const tf_problem *p = &s->scene->problem;
+    const size_t n3 = 3 * p->cloud.n, m3 = 3 * p->outputs.n_nodes;
+    for (size_t k = 0; k < steps; ++k) {
+        if (tf_solver_probe_outputs(ctx, s->solver, p, u + n3 * k, at_outputs + m3 * k) != 0) {
+            return tf_api_fail_on(ctx, "solve: %s: outputs", s->path);
+        }
+    }
+    return 0;
+}
+
+int tf_api_solve_history(tf_ctx *ctx, tf_api_scene *s, const char *contact, const double *force,
+                         double *t, double *u, double *at_outputs)
+{
+    const tf_problem *p = &s->scene->problem;
+    int k = contact ? tf_problem_contact(p, contact) : p->history.contact;
+    if (contact != NULL && k < 0) {
+        return tf_fail(ctx, "solve: %s has no contact site '%s'", s->path, contact);
+    }
+    tf_samples smp;
+    if (history_samples(ctx, s, force, &smp) != 0) {
+        return -1;
+    }
+    /* A fresh solver, as the tool's one run has (api.h: a second run after
+     * tf_nonlinear_reset differs in the last bits). */
+    tf_solver_destroy(s->solver);
+    s->solver = NULL;
+    int rc = ensure_solver(ctx, s, NAN);
+    if (rc == 0 && tf_history_run(ctx, s->solver, k, &smp, u) != 0) {
+        rc = tf_api_fail_on(ctx, "solve: %s", s->path);
+    }
+    if (rc == 0) {
+        memcpy(t, smp.t, smp.n * sizeof *t);
+        tf_solver_report(s->solver);
+    }
+    if (rc == 0 && at_outputs != NULL) {
+        rc = history_outputs(ctx, s, smp.n, u, at_outputs);
+    }
+    tf_samples_free(&smp);
+    return rc;
 }

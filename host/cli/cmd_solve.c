@@ -5,7 +5,6 @@
  */
 #include <getopt.h>
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +20,7 @@
 #include "report/time_series.h"
 #include "scene/scene.h"
 #include "solvers/probe.h"
-#include "solvers/nonlinear/nonlinear.h"
+#include "solvers/history_run.h"
 #include "solvers/solver.h"
 
 /* ParaView files a time series may write (each its own .vtu). */
@@ -367,9 +366,8 @@ static int check_pictures(tf_ctx *ctx, const solve_args *a, const tf_problem *s)
     return 0;
 }
 
-/* The problem's history, step by step: a nonlinear solver advances its
- * state; the linear one solves each step's force (the scene's loads act
- * throughout). */
+/* The problem's history, step by step (solvers/history_run.h), written as
+ * a time series. */
 static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf_solver *sv,
                        int contact)
 {
@@ -394,28 +392,7 @@ static int run_history(tf_ctx *ctx, const solve_args *a, const tf_problem *p, tf
     }
     size_t n3 = 3 * p->cloud.n;
     double *u = malloc(n3 * smp.n * sizeof *u);
-    tf_nonlinear_info info;
-    int nonlinear = tf_nonlinear_info_of(sv, &info) == 0, rc = u ? 0 : -1;
-    double t0 = omp_get_wtime(), shown = t0, prev = 0;
-    if (nonlinear) {
-        tf_nonlinear_reset(sv);
-    }
-    for (size_t k = 0; k < smp.n && rc == 0; ++k) {
-        double *uk = u + n3 * k;
-        if (nonlinear) {
-            rc = tf_nonlinear_advance(sv, smp.scale[k], contact, smp.force[k], smp.t[k] - prev);
-            rc = rc == 0 ? tf_nonlinear_displacements(sv, uk) : rc;
-        } else {
-            rc = tf_solver_solve(sv, contact, (const double(*)[3])smp.force[k], 1, NULL, uk);
-        }
-        prev = smp.t[k];
-        double now = omp_get_wtime();
-        if (rc == 0 && now - shown > 1) {
-            tf_info(ctx, "solve: step %zu of %zu, t = %g s (%.0f s so far)", k + 1, smp.n,
-                    smp.t[k], now - t0);
-            shown = now;
-        }
-    }
+    int rc = u ? tf_history_run(ctx, sv, contact, &smp, u) : -1;
     if (rc != 0) {
         tf_error(ctx, "solve: %s: %s", a->scene, u ? ctx->err : "out of memory");
         free(u);
@@ -460,6 +437,14 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_error(ctx, "solve: --vtk %s: %s", a.vtk,
                  p->history.present ? "a time series is a .pvd file (with .vtu files beside it)"
                                     : "a .vtu file");
+        tf_scene_free(s);
+        return TF_EXIT_USAGE;
+    }
+    if (a.outputs && p->history.present) {
+        tf_error(ctx, "solve: --outputs writes one solve's outputs, and %s has a history: its "
+                      "time series is every node's (-o, --vtk FILE.pvd; from Python, "
+                      "Scene.solve_history gives the outputs at every step)",
+                 a.scene);
         tf_scene_free(s);
         return TF_EXIT_USAGE;
     }

@@ -19,10 +19,10 @@ import warnings  # noqa: E402
 from ._native import Error, blas_check  # noqa: E402
 from .fit import fit  # noqa: E402
 from .header import Header, Model  # noqa: E402
-from .scene import Scene, Solution  # noqa: E402
+from .scene import History, Scene, Solution  # noqa: E402
 from .vtu import write_vtu  # noqa: E402
 
-__all__ = ["Error", "Scene", "Solution", "fit", "Header", "Model", "write_vtu", "blas_pinned"]
+__all__ = ["Error", "Scene", "Solution", "History", "fit", "Header", "Model", "write_vtu", "blas_pinned"]
 __version__ = "0.1.0"
 
 _blas_problem = blas_check()

@@ -95,6 +95,25 @@ class Scene:
             u[k], v[k] = s.u, s.outputs
         return u, v
 
+    def solve_history(self, force=None, contact=None):
+        """`tissuefit solve SCENE [--force FX,FY,FZ] [--contact NAME]` of a
+        scene with a history: section: its time series from rest, the same
+        bits as the tool's CSV (step k is row k).
+
+        force: (3,) N replacing history.force (refused for a table of
+        forces); contact: a site's name (None: history.contact).  Returns a
+        History."""
+        f = None if force is None else _native.as_doubles(force, (3,), "force").reshape(3)
+        n = ctypes.c_size_t()
+        self._ctx.check(lib.tf_api_history_steps(self._ctx.p, self._handle(), ptr(f), ctypes.byref(n)))
+        t = np.empty(n.value)
+        u = np.empty((n.value, len(self.nodes), 3))
+        v = np.empty((n.value, len(self.outputs), 3))
+        self._ctx.check(lib.tf_api_solve_history(self._ctx.p, self._handle(),
+                                                 None if contact is None else contact.encode(),
+                                                 ptr(f), ptr(t), ptr(u), ptr(v)))
+        return History(self, None if f is None else f.copy(), contact, t, u, v)
+
     def cells(self):
         """The cells of the VTU file `tissuefit solve --vtk` writes:
         ("hexahedron", (C, 8)) for a box's grid (without the cells a cut
@@ -143,3 +162,20 @@ class Solution:
         """The solve as a VTU file for ParaView (tissuefit.write_vtu)."""
         from .vtu import write_vtu
         return write_vtu(path, self)
+
+
+class History:
+    """A scene's history solved (Scene.solve_history).
+
+      force, contact  as given (None: the history's own)
+      t         (S,) the steps' times, s
+      u         (S, N, 3) displacement of every node at each step, mm
+      outputs   (S, M, 3) displacement at the scene's outputs, mm"""
+
+    def __init__(self, scene, force, contact, t, u, outputs):
+        self.scene = scene
+        self.force = force
+        self.contact = contact
+        self.t = t
+        self.u = u
+        self.outputs = outputs

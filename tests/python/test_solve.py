@@ -56,3 +56,43 @@ def test_solve_errors_are_the_tools(tmp_path):
             sc.solve(**kw)
         assert str(e.value) == tool_error(err)
     assert not (tmp_path / "u.csv").exists()
+
+
+def _series(path, n_nodes):
+    """tissuefit solve's time series CSV: (times (S,), u (S, N, 3))."""
+    rows = read_csv(path)
+    steps = rows.reshape(-1, n_nodes, rows.shape[1])
+    return steps[:, 0, 1], steps[:, :, 6:9]
+
+
+@pytest.mark.parametrize("force", [None, (0, 0, -0.3)])
+def test_history_as_the_tool(tmp_path, force):
+    """A history: section solved as `tissuefit solve` solves it: the times
+    and every step's displacements to the last bit, and each step's
+    outputs."""
+    scene = "tests/solver/kelvin_block48.yaml"  # nonlinear Kelvin: pressed, held, released
+    args = [] if force is None else ["--force", ",".join(map(str, force))]
+    tool("-q", "solve", scene, *args, "-o", tmp_path / "h.csv")
+    sc = tissuefit.Scene(scene)
+    h = sc.solve_history(force)
+    t, u = _series(tmp_path / "h.csv", len(sc.nodes))
+    assert h.u.shape == (len(t), len(sc.nodes), 3) and len(t) > 2
+    assert same_bits(t, h.t)
+    assert same_bits(u, h.u)
+    assert np.abs(h.u).max() > 0.01  # not a body at rest
+    # this scene's outputs are nodes (the top face): their nodal values
+    assert same_bits(h.outputs, h.u[:, sc.output_ids.astype(np.int64) - 1])
+    # each call starts from rest: the same again
+    assert same_bits(sc.solve_history(force).u, h.u)
+
+
+def test_history_refusals(tmp_path):
+    """Where the tool refuses, the module says the same; a scene without a
+    history is not a time series."""
+    sc = tissuefit.Scene("tests/solver/kelvin_block48.yaml")
+    with pytest.raises(tissuefit.Error, match="has a history: section: solve it as a time series"):
+        sc.solve((0, 0, -1))
+    with pytest.raises(tissuefit.Error, match="has no contact site 'nowhere'"):
+        sc.solve_history(contact="nowhere")
+    with pytest.raises(tissuefit.Error, match="has no history: section"):
+        tissuefit.Scene("tests/solver/block48_seed.yaml").solve_history()

@@ -31,6 +31,9 @@ check "the collection names them" test "$(grep -c 'file="k_00' "$tmp/w/k.pvd")" 
 check "progress and the Newton summary on stderr" grep -q "Newton:" "$tmp/err"
 check "no temporary files" sh -c "! ls '$tmp/w' | grep -q tmp"
 rm -f "$tmp/w"/*
+expect 2 "--outputs with a history" -- "$tool" -q solve $K -o "$tmp/w/k.csv" --outputs "$tmp/w/o.csv"
+says "--outputs with a history" "solve: --outputs writes one solve's outputs, and $K has a history"
+nothing_written "--outputs with a history"
 sed '/^history:/,$d' $K >"$tmp/nohist.yaml"
 expect 0 "Kelvin without history: the relaxed solve" -- "$tool" -q solve "$tmp/nohist.yaml" \
     --force 0,0,-0.5 -o "$tmp/w/r.csv"
