@@ -27,6 +27,8 @@ export PHYSICS_block48_nh := tests/calculix/data/block48_nh_physics.csv
 export PHYSICS_liver := tests/calculix/data/liver_physics.csv
 # the stomach: CalculiX s20r1 at its 484 output vertices (make calculix-stomach)
 export PHYSICS_stomach := tests/calculix/data/stomach_physics.csv
+# the heart: CalculiX s20r1 at its output vertices (make calculix-heart)
+export PHYSICS_heart := tests/calculix/data/heart_physics.csv
 # block48_ve (seed 001's Kelvin law, the prony family): no CalculiX reference
 # of the law; its header states the difference of the relaxed solve from a
 # finer cloud's, 1 N along -z (make physics-ve-reference, tests/physics.mk;

@@ -14,7 +14,7 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
     echo "| scene | forward, self-measured (mm) | against CalculiX (mm) | ratio | contact, self-measured (N) | against CalculiX (N) | ratio | order observed | extra time (s) |"
     echo "|---|---:|---:|---:|---:|---:|---:|---|---:|"
     for e in block48:tests/calculix/data/block48_physics.csv liver:tests/calculix/data/liver_physics.csv \
-             stomach:tests/calculix/data/stomach_physics.csv; do
+             stomach:tests/calculix/data/stomach_physics.csv heart:tests/calculix/data/heart_physics.csv; do
         n=${e%%:*} ref=${e#*:}
         echo "self_table: $n" >&2
         "$tool" fit coeffs/$n.yaml -o "$w/${n}_self.h" 2> "$w/${n}_self.log"
