@@ -67,29 +67,53 @@ static const struct aiScene *import(const char *path, struct aiPropertyStore *pr
     return sc;
 }
 
-/* Whether a file that assimp would take for a PLY file (it begins "ply"
- * or "PLY") ends its header: assimp 5.2's PLY reader never returns on a
- * header without an end_header line (measured: still running after
- * 2 minutes), so such a file is refused before assimp sees it.  A line
- * ends the header as it does for assimp: blanks, "end_header", then a
- * blank or the line's end. */
-static int ply_header_unended(const char *path)
+/* Whether line t (blanks skipped) begins with word, then a blank or the
+ * line's end. */
+static int keyword(const char *t, const char *word)
 {
+    size_t n = strlen(word);
+    return strncmp(t, word, n) == 0 && (t[n] == '\0' || strchr(" \t\r\n", t[n]) != NULL);
+}
+
+/* What is wrong with the header of a file that assimp would take for a PLY
+ * file (it begins "ply" or "PLY"), or NULL.  assimp 5.2's PLY reader never
+ * returns on a header without an end_header line (measured: still running
+ * after 2 minutes), and frees memory it did not allocate with malloc on a
+ * header holding lines of no PLY keyword (ASan, a fuzzed file), so such
+ * files are refused before assimp sees them.  A line ends the header as it
+ * does for assimp: blanks, "end_header", then a blank or the line's end. */
+static const char *ply_header_problem(const char *path, size_t *bad_line)
+{
+    static const char *const words[] = {"format", "element", "property", "comment", "obj_info"};
     FILE *f = fopen(path, "rb");
     char line[256];
     if (f == NULL) {
-        return 0; /* assimp says why it cannot read it */
+        return NULL; /* assimp says why it cannot read it */
     }
     int ply = fgets(line, sizeof line, f) != NULL && strncasecmp(line, "ply", 3) == 0;
     int at_start = ply && strchr(line, '\n') != NULL, ended = 0;
-    while (ply && !ended && fgets(line, sizeof line, f) != NULL) {
+    const char *why = NULL;
+    for (size_t n = 2; ply && !ended && fgets(line, sizeof line, f) != NULL; ++n) {
         const char *t = line + strspn(line, " \t");
-        ended = at_start && strncmp(t, "end_header", 10) == 0 &&
-                (t[10] == '\0' || strchr(" \t\r\n", t[10]) != NULL);
+        ended = at_start && keyword(t, "end_header");
+        int known = !at_start || ended || *t == '\n' || *t == '\r';
+        for (size_t w = 0; !known && w < sizeof words / sizeof *words; ++w) {
+            known = keyword(t, words[w]);
+        }
+        if (!known && why == NULL) { /* the first; a missing end_header says more */
+            why = "a PLY header line of none of its keywords (format, element, property, comment, "
+                  "obj_info, end_header)";
+            *bad_line = n;
+        }
+        n -= strchr(line, '\n') == NULL; /* a piece of a longer line */
         at_start = strchr(line, '\n') != NULL; /* the next piece begins a line */
     }
     fclose(f);
-    return ply && !ended;
+    if (ply && !ended) {
+        *bad_line = 0;
+        return "a PLY header without its end_header line";
+    }
+    return why;
 }
 
 /* Vertices and triangles of all meshes, meshes one after the other. */
@@ -141,11 +165,15 @@ int tf_surface_read_assimp(const char *path, tf_surface *s, tf_geom_msg *m)
     if (props == NULL) {
         return tf_geom_fail(m, TF_GEOM_FAILED, "'%s': out of memory", path);
     }
-    if (ply_header_unended(path)) {
+    size_t bad_line = 0;
+    const char *header = ply_header_problem(path, &bad_line);
+    if (header != NULL) {
         aiReleasePropertyStore(props);
-        return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
-                            "cannot read mesh '%s': a PLY header without its end_header line",
-                            path);
+        if (bad_line > 0) {
+            return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': line %zu: %s", path,
+                                bad_line, header);
+        }
+        return tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read mesh '%s': %s", path, header);
     }
     const char *why;
     const struct aiScene *sc = import(path, props, &why);

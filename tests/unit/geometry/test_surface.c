@@ -489,6 +489,8 @@ static void malformed_files_are_refused(void **state)
                     "declared to hold polygons holds none");
     assert_contains(malformed("tests/fuzz/regress/mesh/obj-nul-byte", "obj", &m),
                     "line 1 holds a NUL byte");
+    assert_contains(malformed("tests/fuzz/regress/mesh/ply-header-garbage", "ply", &m),
+                    "line 5: a PLY header line of none of its keywords");
 }
 
 static void unreadable_files_say_why(void **state)
