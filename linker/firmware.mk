@@ -178,7 +178,7 @@ FW_EVAL_FUNCS := tfit_displacements tfit_contact_force evaluate tfit_input_map t
                  tfit_displacements_cut tfit_cut_progress tfit_cut_rows \
                  tfit_eval_modal_q15 tfit_q15_amp_asm tfit_q15_rows_asm \
                  tfit_region_monomials tfit_region_dot tfit_region_blend tfit_region_amplitudes \
-                 tfit_region_rows
+                 tfit_region_rows tfit_region_near
 
 $(T)/insn_mix $(T)/trace_mix: $(T)/%: tests/firmware/%.c $(FW_TOOL_SRC) tests/firmware/insn_class.h \
     host/cost/cycles.h $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check

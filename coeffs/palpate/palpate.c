@@ -33,6 +33,7 @@
 #include "base/context.h"
 #include "coeffs/palpate/palpate_pictures.h"
 #include "fitting/region_fit.h"
+#include "fitting/region_models.h"
 #include "model/target_view.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
@@ -93,33 +94,15 @@ static int parse(int argc, char **argv, options *o)
     return o->scene && o->dir && o->rank <= TFIT_REGION_MAX_RANK && o->map >= 2 ? 0 : -1;
 }
 
-/* The fit's last level as device models (the host's and the device's view). */
+/* The fit's last level as device models (region_models.h, as tissuefit
+ * fit builds them), and its grid for the device's view. */
 static int build(tf_ctx *ctx, const tf_problem *p, const tf_contact_region *r,
                  const tf_region_level *lv, tf_model **law, tf_model **surf, palpate_grid *g)
 {
-    const tf_region_surface *sf = &lv->surface_model;
     *g = (palpate_grid){.nx = lv->nx, .ny = lv->ny, .ha = lv->h[0], .hb = lv->h[1]};
     memcpy(g->origin, r->chart.o, sizeof g->origin);
     memcpy(g->rot, r->chart.R, sizeof g->rot);
-    const size_t rows = 3 * sf->n_out;
-    double *modes = malloc((rows * sf->r + 1) * sizeof *modes);
-    uint32_t *ids = malloc((sf->n_out + 1) * sizeof *ids);
-    int rc = modes && ids ? 0 : tf_fail(ctx, "out of memory");
-    for (size_t o = 0; rc == 0 && o < rows; ++o) { /* column-major -> Phi[3 n_out][r] */
-        for (unsigned k = 0; k < sf->r; ++k) {
-            modes[o * sf->r + k] = sf->modes[o + (size_t)k * rows];
-        }
-    }
-    for (size_t j = 0; rc == 0 && j < sf->n_out; ++j) {
-        ids[j] = p->outputs.points ? (uint32_t)j + 1 : tf_problem_node_number(p, p->outputs.nodes[j]);
-    }
-    *law = rc == 0 ? palpate_law(ctx, g, lv->law.P, lv->law.s_u, lv->law.mu, lv->law.ctrl) : NULL;
-    *surf = *law ? palpate_surface(ctx, g, lv->law.s_u, lv->law.mu, sf->R_F, sf->r, sf->ctrl,
-                                   modes, sf->n_out, ids)
-                 : NULL;
-    free(modes);
-    free(ids);
-    return *surf != NULL ? 0 : -1;
+    return tf_region_level_models(ctx, p, 0, lv, "palpate_law", "palpate_surface", law, surf);
 }
 
 /* Four display frames for the pictures: instrument 1 holding at A, sliding,

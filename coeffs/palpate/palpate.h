@@ -31,16 +31,6 @@ typedef struct palpate_grid {
     double ha, hb; /* site spacing, mm */
 } palpate_grid;
 
-/* The law (P, s_u, mu, ctrl as region_law.h's tf_region_law). */
-tf_model *palpate_law(tf_ctx *ctx, const palpate_grid *g, unsigned P, double s_u, double mu,
-                      const double *ctrl);
-
-/* The surface (p = 1 with site modes; ctrl as region_surface.h's, modes
- * Phi[3 n_out][r] row-major, node_ids of the outputs). */
-tf_model *palpate_surface(tf_ctx *ctx, const palpate_grid *g, double s_u, double mu, double R_F,
-                          unsigned r, const double *ctrl, const double *modes, size_t n_out,
-                          const uint32_t *node_ids);
-
 /* The law's rest surface point at grid coordinates g (chart frame, mm). */
 void palpate_rest_point(const tf_model *law, const double g[2], double x[3]);
 

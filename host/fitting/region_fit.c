@@ -17,7 +17,8 @@
 tf_region_targets tf_region_targets_default(void)
 {
     return (tf_region_targets){.force = 0.01, .surface = 0.05, .coupling = 0.02, .max_sites = 33,
-                               .max_rank = TF_REGION_MAX_RANK, .levels = 0};
+                               .max_rank = TF_REGION_MAX_RANK, .levels = 0, .near = 1.5,
+                               .near_cap = TF_REGION_MAX_NEAR};
 }
 
 double tf_mat3_norm2(const double M[9])
@@ -376,6 +377,33 @@ static void grid_points(unsigned nx, unsigned ny, const double h[2], double *tra
     }
 }
 
+/* What the surface's near field is fitted from: the outputs' and the
+ * grid sites' chart coordinates (owned by the modes), the radius. */
+static int near_spec(tf_ctx *ctx, const tf_problem *p, const tf_contact_region *r,
+                     const tf_region_sites *t, const size_t *train, size_t n,
+                     const tf_region_targets *tg, tf_region_modes *m)
+{
+    size_t n_out = p->outputs.n_nodes;
+    double *oq = malloc(3 * n_out * sizeof *oq), *sq = malloc(3 * n * sizeof *sq), w[2];
+    if (!oq || !sq) {
+        free(oq);
+        free(sq);
+        return tf_fail(ctx, "out of memory");
+    }
+    for (size_t j = 0; j < n_out; ++j) {
+        const double *x = p->outputs.points ? p->outputs.points + 3 * j
+                                            : p->cloud.xyz + 3 * (size_t)p->outputs.nodes[j];
+        tf_region_chart_coords(&r->chart, x, oq + 3 * j);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        tf_region_chart_coords(&r->chart, t->x + 3 * train[i], sq + 3 * i);
+    }
+    tf_region_tip_extent(r, w);
+    m->near = (tf_region_near_spec){t, train, oq, sq, tg->near * 2 * fmax(w[0], w[1]),
+                                    tg->near_cap};
+    return 0;
+}
+
 /* One spacing: solve what is missing, fit, judge. */
 static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_contact_region *r,
                      const tf_region_targets *tg, tf_region_result *res, tf_region_level *lv)
@@ -412,6 +440,9 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
     }
     if (rc == 0) {
         rc = tf_region_modes_build(ctx, s, &res->sites, lv->train, n, R_F, tg->max_rank, modes);
+    }
+    if (rc == 0 && tg->near > 0) {
+        rc = near_spec(ctx, p, r, &res->sites, lv->train, n, tg, modes);
     }
     if (rc == 0) {
         double peak_t = tf_region_peak(&res->sites, lv->train, n, R_F);

@@ -55,10 +55,14 @@ typedef struct tf_region_targets {
     unsigned max_sites; /* per axis (the cap) */
     unsigned max_rank;
     unsigned levels;    /* 0: halve until met or capped; k: fit exactly k spacings */
+    double near;        /* the surface's near-field radius in probe widths (0: none;
+                           region_surface.h) */
+    unsigned near_cap;  /* its most outputs per control point */
 } tf_region_targets;
 
 /* The spec's targets: force 1 %, surface 5 %, two instruments 2 %; at most
- * 33 sites per axis and TF_REGION_MAX_RANK modes. */
+ * 33 sites per axis and TF_REGION_MAX_RANK modes; the near field within 1.5
+ * probe widths, at most TF_REGION_MAX_NEAR outputs per control point. */
 tf_region_targets tf_region_targets_default(void);
 
 #define TF_REGION_MAX_LEVELS 8

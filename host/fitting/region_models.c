@@ -49,11 +49,41 @@ static tf_model *surface_model(tf_ctx *ctx, const tf_problem *p, const tf_region
         ids[j] = p->outputs.points ? (uint32_t)j + 1
                                    : tf_problem_node_number(p, p->outputs.nodes[j]);
     }
+    /* the near field per unit normalised force f = F / R_F */
+    const size_t ne = (size_t)(sf->nx + 2) * (sf->ny + 2) * sf->n_near;
+    double *D = malloc((9 * ne + 1) * sizeof *D);
+    if (D == NULL) {
+        free(modes);
+        free(ids);
+        tf_fail(ctx, "out of memory");
+        return NULL;
+    }
+    for (size_t i = 0; i < 9 * ne; ++i) {
+        D[i] = sf->near_D[i] * sf->R_F;
+    }
+    const tf_region_near_table near = {sf->n_near, sf->near_idx, D};
     tf_model *m = tf_region_surface_new(ctx, name, g, lv->law.s_u, lv->law.mu, sf->R_F, sf->r, 1,
-                                        1, sf->ctrl, modes, (uint32_t)sf->n_out, ids);
+                                        1, sf->ctrl, &near, modes, (uint32_t)sf->n_out, ids);
+    free(D);
     free(modes);
     free(ids);
     return m;
+}
+
+int tf_region_level_models(tf_ctx *ctx, const tf_problem *p, int contact,
+                           const tf_region_level *lv, const char *law_name,
+                           const char *surf_name, tf_model **law, tf_model **surf)
+{
+    const tf_region_grid g = grid_of(&p->contacts[contact].region.chart, lv);
+    *law = tf_region_law_new(ctx, law_name, &g, lv->law.P, lv->law.s_u, lv->law.mu, lv->law.ctrl,
+                             (uint32_t)contact);
+    *surf = *law != NULL ? surface_model(ctx, p, &g, lv, surf_name) : NULL;
+    if (*surf == NULL) {
+        tf_model_free(*law);
+        *law = NULL;
+        return -1;
+    }
+    return 0;
 }
 
 /* The datasheet lines of the law and of the surface (region_models.h):
@@ -74,12 +104,14 @@ static void notes(const tf_region_result *res, const tf_region_level *lv,
     snprintf(surf->fit_note, sizeof surf->fit_note,
              "region '%s': %s\n"
              "held out at the %u cell centres (sites never fitted): %.3g %% of the peak "
-             "displacement %.4g mm;\nrank %u, %s (at most %u); two instruments\n"
+             "displacement %.4g mm;\nrank %u, %s (at most %u); near field: %u outputs "
+             "per control point\n(those within %.3g mm, %.3g probe widths); two instruments\n"
              "(tfit_region_pair): %.3g %% of the envelope radius over %zu pairs of sites",
              contact, res->why, centres, 100 * lv->surface, lv->peak, lv->rank,
              lv->surface <= tg->surface ? "the smallest meeting the surface target"
                                         : "the smallest surface error tried",
-             tg->max_rank, 100 * lv->coupling, lv->pairs);
+             tg->max_rank, lv->surface_model.n_near, lv->surface_model.near_radius, tg->near,
+             100 * lv->coupling, lv->pairs);
     /* the header says why the physics line is missing: --reference is
      * refused for a region, so its usual hint would mislead */
     static const char why[] = "not yet measured for a contact region";
@@ -120,13 +152,7 @@ int tf_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact
         return -1;
     }
     const tf_region_level *lv = &res.level[res.n_levels - 1];
-    const tf_region_grid g = grid_of(&c->region.chart, lv);
-    *law = tf_region_law_new(ctx, law_name, &g, lv->law.P, lv->law.s_u, lv->law.mu, lv->law.ctrl,
-                             (uint32_t)contact);
-    *surf = *law != NULL ? surface_model(ctx, p, &g, lv, surf_name) : NULL;
-    if (*surf == NULL) {
-        tf_model_free(*law);
-        *law = NULL;
+    if (tf_region_level_models(ctx, p, contact, lv, law_name, surf_name, law, surf) != 0) {
         tf_region_result_free(&res);
         return -1;
     }

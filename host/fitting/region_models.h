@@ -40,4 +40,11 @@ int tf_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact
                      const char *law_name, const char *surf_name, tf_model **law,
                      tf_model **surf);
 
+/* The law and the surface of one fitted spacing lv of contact region
+ * `contact` of p as device models (no datasheet notes).  Returns 0 with
+ * *law and *surf owned by the caller, or -1 with the message. */
+int tf_region_level_models(tf_ctx *ctx, const tf_problem *p, int contact,
+                           const tf_region_level *lv, const char *law_name,
+                           const char *surf_name, tf_model **law, tf_model **surf);
+
 #endif /* TF_REGION_MODELS_H */

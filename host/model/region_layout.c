@@ -50,13 +50,20 @@ uint32_t tf_region_law_ncoef(uint32_t n_out, const uint32_t *dims)
     return TF_REGION_LAW_CTRL + tf_region_control_points(dims) * tf_region_law_stride(dims);
 }
 
+uint32_t tf_region_surface_near_at(const uint32_t *dims)
+{
+    return TF_REGION_SURFACE_CTRL + tf_region_control_points(dims) * tf_region_surface_stride(dims);
+}
+
 uint32_t tf_region_surface_ncoef(uint32_t n_out, const uint32_t *dims)
 {
     if (!grid_ok(n_out, dims) || dims[2] == 0 || dims[2] > TFIT_REGION_MAX_RANK || dims[3] == 0 ||
-        dims[3] > TFIT_REGION_SURFACE_MAX_DEGREE || dims[4] > 1) {
+        dims[3] > TFIT_REGION_SURFACE_MAX_DEGREE || dims[4] > 1 ||
+        dims[5] > TFIT_REGION_MAX_NEAR || (dims[5] != 0 && dims[3] != 1)) {
         return 0;
     }
-    const uint64_t n = (uint64_t)tf_region_control_points(dims) * tf_region_surface_stride(dims) +
+    const uint64_t n = (uint64_t)tf_region_control_points(dims) *
+                           (tf_region_surface_stride(dims) + TF_REGION_NEAR_FLOATS * dims[5]) +
                        3ull * n_out * dims[2] + TF_REGION_SURFACE_CTRL;
     return n > UINT32_MAX ? 0 : (uint32_t)n;
 }

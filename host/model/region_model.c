@@ -77,10 +77,14 @@ tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_grid 
 tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                                 double s_u, double mu, double force_radius, uint32_t rank,
                                 uint32_t degree, int site_modes, const double *ctrl,
-                                const double *modes, uint32_t n_out, const uint32_t *node_ids)
+                                const tf_region_near_table *near, const double *modes,
+                                uint32_t n_out, const uint32_t *node_ids)
 {
-    const uint32_t dims[5] = {chart->nx, chart->ny, rank, degree, site_modes ? 1u : 0u};
-    tf_model *m = alloc_model(ctx, name, TFIT_FAMILY_REGION_SURFACE, n_out, dims, 5);
+    const uint32_t n_near = near ? near->n : 0;
+    const uint32_t dims[TFIT_REGION_SURFACE_DIMS] = {chart->nx,  chart->ny, rank, degree,
+                                                     site_modes ? 1u : 0u, n_near};
+    tf_model *m = alloc_model(ctx, name, TFIT_FAMILY_REGION_SURFACE, n_out, dims,
+                              TFIT_REGION_SURFACE_DIMS);
     if (m == NULL) {
         return NULL;
     }
@@ -94,8 +98,16 @@ tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_g
     for (size_t i = 0; i < n; ++i) {
         m->coef[TF_REGION_SURFACE_CTRL + i] = (float)ctrl[i];
     }
+    float *nf = m->coef + TF_REGION_SURFACE_CTRL + n;
+    for (size_t e = 0; e < (size_t)tf_region_control_points(dims) * n_near; ++e) {
+        nf[TF_REGION_NEAR_FLOATS * e] = (float)near->idx[e];
+        for (size_t i = 0; i < 9; ++i) {
+            nf[TF_REGION_NEAR_FLOATS * e + 1 + i] = (float)near->D[9 * e + i];
+        }
+    }
+    nf += (size_t)tf_region_control_points(dims) * n_near * TF_REGION_NEAR_FLOATS;
     for (size_t i = 0; i < 3 * (size_t)n_out * rank; ++i) {
-        m->coef[TF_REGION_SURFACE_CTRL + n + i] = (float)modes[i];
+        nf[i] = (float)modes[i];
     }
     memcpy(m->node_ids, node_ids, n_out * sizeof *node_ids);
     m->envelope_radius = force_radius;
@@ -271,6 +283,27 @@ static int law_check(tf_ctx *ctx, const tf_model *m)
     return convexity_check(ctx, m);
 }
 
+/* The near field's entries: j an integer output point, |D| <= 2^80
+ * (tfit_region_check.c's bound). */
+static int near_check(tf_ctx *ctx, const tf_model *m)
+{
+    const size_t count = (size_t)tf_region_control_points(m->dims) * m->dims[5];
+    const float *e = m->coef + tf_region_surface_near_at(m->dims);
+    for (size_t k = 0; k < count; ++k, e += TF_REGION_NEAR_FLOATS) {
+        if (!(e[0] >= 0 && e[0] < (float)m->n_out && e[0] == floorf(e[0]))) {
+            return tf_fail(ctx, "region model '%s': near-field entry %zu names output point %g "
+                                "of %u", m->name, k, (double)e[0], m->n_out);
+        }
+        for (size_t i = 1; i < TF_REGION_NEAR_FLOATS; ++i) {
+            if (!(fabs((double)e[i]) <= 0x1p80)) {
+                return tf_fail(ctx, "region model '%s': near-field entry %zu holds %g, beyond "
+                                    "2^80", m->name, k, (double)e[i]);
+            }
+        }
+    }
+    return 0;
+}
+
 static int surface_check(tf_ctx *ctx, const tf_model *m)
 {
     const size_t points = tf_region_control_points(m->dims);
@@ -317,7 +350,7 @@ static int surface_check(tf_ctx *ctx, const tf_model *m)
                            m->name, o, b);
         }
     }
-    return 0;
+    return near_check(ctx, m);
 }
 
 /* What both forms check first: the size, finite coefficients, the chart. */

@@ -36,15 +36,26 @@ tf_model *tf_region_law_new(tf_ctx *ctx, const char *name, const tf_region_grid 
                             uint32_t degree, double s_u, double mu, const double *ctrl,
                             uint32_t region);
 
-/* A surface (TFIT_FAMILY_REGION_SURFACE, dims {nx, ny, r, p, site_modes}):
- * ctrl the control blocks {A[r][T(p) - 1], Phi_site[3][r] when site_modes}
- * (amplitudes per normalised chart-frame force f = F / R_F, monomials of
- * degrees 1 .. p), modes Phi[3 n_out][r] (mm, scene frame), node_ids[n_out];
- * s_u and mu as the law's (repeated so that the model stands alone). */
+/* A surface's near field (region_surface.h): per control point n entries,
+ * idx the output points, D (9 per entry, row-major: scene component x
+ * chart force axis) in mm per unit normalised force f = F / R_F. */
+typedef struct tf_region_near_table {
+    uint32_t n;
+    const uint32_t *idx;
+    const double *D;
+} tf_region_near_table;
+
+/* A surface (TFIT_FAMILY_REGION_SURFACE, dims {nx, ny, r, p, site_modes,
+ * near}): ctrl the control blocks {A[r][T(p) - 1], Phi_site[3][r] when
+ * site_modes} (amplitudes per normalised chart-frame force f = F / R_F,
+ * monomials of degrees 1 .. p), modes Phi[3 n_out][r] (mm, scene frame),
+ * node_ids[n_out]; near NULL or its near field (p = 1); s_u and mu as the
+ * law's (repeated so that the model stands alone). */
 tf_model *tf_region_surface_new(tf_ctx *ctx, const char *name, const tf_region_grid *chart,
                                 double s_u, double mu, double force_radius, uint32_t rank,
                                 uint32_t degree, int site_modes, const double *ctrl,
-                                const double *modes, uint32_t n_out, const uint32_t *node_ids);
+                                const tf_region_near_table *near, const double *modes,
+                                uint32_t n_out, const uint32_t *node_ids);
 
 /* What tfit_model_check() checks of a region law and of a region surface
  * (sizes, chart, scalars, the overflow bounds of header-format.md §8), and

@@ -406,11 +406,11 @@ tfit_status tf_region_ref_force(const tf_model *law, float *state, const float t
 /* --- the surface (§5.11) ---------------------------------------------------- */
 /* f: §4 with the force map; the site of the state; the amplitudes. */
 static void amplitudes(const tf_model *m, const float *state, const float force[3], float *a,
-                       int *clamped, int *bad)
+                       int *clamped, int *bad, float f[3], site *at)
 {
     tf_model map = *m; /* a view whose input map is the force map */
     map.coef = m->coef + TF_REGION_FORCE_MAP;
-    float f[3], phi[MAX_SURF_T];
+    float phi[MAX_SURF_T];
     tf_ref_input(&map, force, f, clamped, bad, NULL);
     const uint32_t r = m->dims[2];
     const size_t stride = tf_region_surface_stride(m->dims);
@@ -418,6 +418,7 @@ static void amplitudes(const tf_model *m, const float *state, const float force[
     site st;
     site_at(m->dims, clamp_grid(state[0], (float)(m->dims[0] - 1)),
             clamp_grid(state[1], (float)(m->dims[1] - 1)), &st);
+    *at = st;
     monomials(1, (int)m->dims[3], f, phi, NULL);
     const float *ctrl = m->coef + TF_REGION_SURFACE_CTRL;
     for (uint32_t k = 0; k < r; ++k) {
@@ -427,6 +428,31 @@ static void amplitudes(const tf_model *m, const float *state, const float force[
                             (size_t)k * (size_t)n_t + (size_t)t);
         }
         a[k] = *bad ? 0.0f : series(coef, phi, 1, n_t);
+    }
+}
+
+/* out_j += w (D f) for the near entries {j, D} of the site's 16 control
+ * points, w = B_l(tb) B_k(ta) (§5.11): ((D_i0 f0 + D_i1 f1) + D_i2 f2)
+ * times w, added term by term in the control points' order (l, then k)
+ * and the entries'. */
+static void near_field(const tf_model *m, const site *st, const float f[3], int keep, float *out)
+{
+    const uint32_t n = m->dims[5];
+    const float *table = m->coef + tf_region_surface_near_at(m->dims);
+    for (size_t l = 0; l < 4; ++l) {
+        for (size_t k = 0; k < 4; ++k) {
+            const float w = mul(st->b[1][l], st->b[0][k]);
+            const float *e = table + (st->first + l * st->row + k) * n * TF_REGION_NEAR_FLOATS;
+            for (uint32_t q = 0; q < n; ++q, e += TF_REGION_NEAR_FLOATS) {
+                const size_t j = (size_t)e[0];
+                for (size_t i = 0; i < 3; ++i) {
+                    const float *d = e + 1 + 3 * i;
+                    const float v =
+                        mul(w, add(add(mul(d[0], f[0]), mul(d[1], f[1])), mul(d[2], f[2])));
+                    out[3 * j + i] = add(out[3 * j + i], keep ? v : 0.0f);
+                }
+            }
+        }
     }
 }
 
@@ -443,10 +469,12 @@ static void rows(const tf_model *m, const float *a, int keep, float *out)
 tfit_status tf_region_ref_surface(const tf_model *surf, const float *state, const float force[3],
                                   float *out)
 {
-    float a[TFIT_REGION_MAX_RANK];
+    float a[TFIT_REGION_MAX_RANK], f[3];
     int clamped, bad;
-    amplitudes(surf, state, force, a, &clamped, &bad);
+    site st;
+    amplitudes(surf, state, force, a, &clamped, &bad, f, &st);
     rows(surf, a, !bad, out);
+    near_field(surf, &st, f, !bad, out);
     return bad ? TFIT_ERR_INPUT : clamped ? TFIT_CLAMPED : TFIT_OK;
 }
 
@@ -456,14 +484,17 @@ tfit_status tf_region_ref_surface_pair(const tf_model *surf, const float *state2
     if (surf->dims[3] != 1) {
         return TFIT_ERR_FAMILY;
     }
-    float a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK];
+    float a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK], f1[3], f2[3];
     int cl1, bad1, cl2, bad2;
-    amplitudes(surf, state2, force2, a, &cl1, &bad1);
-    amplitudes(surf, state2 + 3, force2 + 3, b, &cl2, &bad2);
+    site st1, st2;
+    amplitudes(surf, state2, force2, a, &cl1, &bad1, f1, &st1);
+    amplitudes(surf, state2 + 3, force2 + 3, b, &cl2, &bad2, f2, &st2);
     for (uint32_t k = 0; k < surf->dims[2]; ++k) {
         a[k] = (bad1 || bad2) ? 0.0f : add(a[k], b[k]);
     }
     rows(surf, a, !(bad1 || bad2), out);
+    near_field(surf, &st1, f1, !(bad1 || bad2), out);
+    near_field(surf, &st2, f2, !(bad1 || bad2), out);
     return (bad1 || bad2) ? TFIT_ERR_INPUT : (cl1 || cl2) ? TFIT_CLAMPED : TFIT_OK;
 }
 

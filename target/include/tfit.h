@@ -89,11 +89,14 @@ extern "C" {
  * every per-site quantity is a tensor-product cubic B-spline over
  * (nx + 2)(ny + 2) control points. */
 #define TFIT_REGION_DIMS 3         /* law: { nx, ny, P } */
-#define TFIT_REGION_SURFACE_DIMS 5 /* surface: { nx, ny, r, p, has_site_modes } */
+/* surface: { nx, ny, r, p, has_site_modes, near }; near: the near field's
+ * entries per control point (0: none; a model of 5 dims has none) */
+#define TFIT_REGION_SURFACE_DIMS 6
 #define TFIT_REGION_MAX_GRID 128   /* nx, ny: sites per side (at least 2) */
 #define TFIT_REGION_MAX_DEGREE 4   /* P: the law's potential, degree 2 .. P */
 #define TFIT_REGION_SURFACE_MAX_DEGREE 3 /* p: the surface amplitudes' degree in the force */
 #define TFIT_REGION_MAX_RANK 48    /* r: modes of a surface model */
+#define TFIT_REGION_MAX_NEAR 32    /* near: entries per control point (p = 1 only) */
 /* Floats after the chart (o[3], R[9]): the law's {1/ha, 1/hb, ha, hb, s_u,
  * 1/s_u, mu}; a surface model repeats them and adds 1/R_F, then its force
  * map (12 floats, as the input map of §4). */

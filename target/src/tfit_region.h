@@ -12,6 +12,7 @@
  * law:     scalars[7] | control points (1 + T(P)) each: h, e_1 .. e_T
  * surface: scalars[8] | force map[12] | control points (r T(p) + 3 r s)
  *          each: A[r][T(p)], then (s = has_site_modes) Phi_site[3][r] |
+ *          near field: per control point `near` entries {j, D[3][3]} |
  *          Phi[3 n_out][r] */
 #define TFIT_REGION_CHART 12u
 #define TFIT_REGION_INV_HA 0u /* scalar indices */
@@ -25,6 +26,10 @@
 #define TFIT_REGION_LAW_CTRL (TFIT_REGION_CHART + (uint32_t)TFIT_REGION_SCALARS)
 #define TFIT_REGION_FORCE_MAP (TFIT_REGION_CHART + (uint32_t)TFIT_REGION_SURFACE_SCALARS)
 #define TFIT_REGION_SURFACE_CTRL (TFIT_REGION_FORCE_MAP + TFIT_INPUT_MAP_FLOATS)
+
+/* Floats of one near-field entry: the output point j (an integer), then
+ * D (3 x 3, row-major: scene component x normalised force component). */
+#define TFIT_REGION_NEAR_FLOATS 10u
 
 /* Terms of the law's potential (degrees 2 .. P) and of the surface's
  * amplitude polynomials (degrees 1 .. p). */
@@ -94,6 +99,14 @@ void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, con
                             uint32_t keep, float *a);
 void tfit_region_rows(const tfit_model *m, const float *a, uint32_t first, uint32_t count,
                       uint32_t keep, float *out);
+/* The near field's entries per control point (dims[5]; 0 for 5 dims). */
+uint32_t tfit_region_near_count(const tfit_model *m);
+/* out[3 (j - first) + i] += the near field of output points j in [first,
+ * first + count) at the site and normalised force f, each term and-ed with
+ * keep (§5.11); the entries of other points leave out unchanged, bit for
+ * bit. */
+void tfit_region_near(const tfit_model *m, const tfit_region_site *at, const float f[3],
+                      uint32_t keep, uint32_t first, uint32_t count, float *out);
 /* The clamped proxy site of a state (NaN as 0, beyond the region as its
  * edge) for a model's dims {nx, ny}. */
 void tfit_region_state_site(const uint32_t *dims, const float *state, tfit_region_site *at,

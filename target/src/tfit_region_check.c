@@ -24,7 +24,8 @@
  * A surface: its force map as §4's input map (|x0| <= 2^64, |W| <= 2^56),
  * |phi_t| <= 1 on the unit ball, so |a_k| <= Ba_k = 2 sum_t max |A_kt| and
  * every output <= sum_k |Phi_ok| Ba_k, required <= 2^100 as the modal
- * family's; Phi_site's entries <= 2^100 and 1/R_F in [2^-40, 2^40].  The
+ * family's; Phi_site's entries <= 2^100 and 1/R_F in [2^-40, 2^40]; the
+ * near field's entries as near_ok states (an output stays below 2^101).  The
  * pair's coupled forces are checked at run time (tfit_region_pair.c).
  */
 #include "tfit_region.h"
@@ -51,7 +52,9 @@ uint32_t tfit_region_coefs(const tfit_model *m)
     const uint32_t *d = m->dims;
     const uint32_t want = m->family == TFIT_FAMILY_REGION ? (uint32_t)TFIT_REGION_DIMS
                                                           : (uint32_t)TFIT_REGION_SURFACE_DIMS;
-    if (m->n_dims != want || d[0] < 2u || d[0] > TFIT_REGION_MAX_GRID || d[1] < 2u ||
+    /* a surface of 5 dims: one without a near field */
+    const uint32_t older = m->family == TFIT_FAMILY_REGION ? want : want - 1u;
+    if ((m->n_dims != want && m->n_dims != older) || d[0] < 2u || d[0] > TFIT_REGION_MAX_GRID || d[1] < 2u ||
         d[1] > TFIT_REGION_MAX_GRID) {
         return 0u;
     }
@@ -62,12 +65,13 @@ uint32_t tfit_region_coefs(const tfit_model *m)
         }
         return TFIT_REGION_LAW_CTRL + points * (1u + TFIT_REGION_LAW_TERMS(d[2]));
     }
-    const uint32_t r = d[2], p = d[3];
+    const uint32_t r = d[2], p = d[3], near = tfit_region_near_count(m);
     if (r == 0u || r > TFIT_REGION_MAX_RANK || p == 0u || p > TFIT_REGION_SURFACE_MAX_DEGREE ||
-        d[4] > 1u) {
+        d[4] > 1u || near > TFIT_REGION_MAX_NEAR || (near != 0u && p != 1u)) {
         return 0u;
     }
-    const uint64_t n = (uint64_t)points * (r * TFIT_REGION_SURFACE_TERMS(p) + 3u * r * d[4]) +
+    const uint64_t n = (uint64_t)points * (r * TFIT_REGION_SURFACE_TERMS(p) + 3u * r * d[4] +
+                                           near * TFIT_REGION_NEAR_FLOATS) +
                        3ULL * m->n_out * r + TFIT_REGION_SURFACE_CTRL;
     return n > 0xffffffffu ? 0u : (uint32_t)n;
 }
@@ -128,6 +132,23 @@ static int law_ok(const tfit_model *m)
            within(hb, 0x1p50f) && within(gb, BOUND_LIMIT) && within(hb * gb, 0x1p59f);
 }
 
+/* The near field's entries: j an integer in [0, n_out), |D_il| <= 2^80,
+ * so that the 16 control points' near terms add at most 16 x 32 x 3 x
+ * 2^80 < 2^91 to an output (|f_l| <= 1, the weights <= 1). */
+static int near_ok(const tfit_model *m, const float *table)
+{
+    const uint32_t count = (m->dims[0] + 2u) * (m->dims[1] + 2u) * tfit_region_near_count(m);
+    int ok = 1;
+    for (uint32_t e = 0u; e < count; ++e, table += TFIT_REGION_NEAR_FLOATS) {
+        const float j = table[0];
+        ok &= between(j, 0.0f, (float)(m->n_out - 1u)) && (float)(uint32_t)j == j;
+        for (uint32_t i = 1u; i < TFIT_REGION_NEAR_FLOATS; ++i) {
+            ok &= within(fabs_(table[i]), 0x1p80f);
+        }
+    }
+    return ok;
+}
+
 static int surface_ok(const tfit_model *m)
 {
     const uint32_t points = (m->dims[0] + 2u) * (m->dims[1] + 2u);
@@ -160,7 +181,7 @@ static int surface_ok(const tfit_model *m)
             return 0;
         }
     }
-    return tfit_modes_bounded(phi, ba, r, 3u * m->n_out);
+    return tfit_modes_bounded(phi, ba, r, 3u * m->n_out) && near_ok(m, ctrl + points * stride);
 }
 
 int tfit_region_range_ok(const tfit_model *m)
@@ -236,8 +257,12 @@ static tfit_status surface_self_test(const tfit_model *m)
         crc = tfit_crc32_word(crc, (clamped & ~bad & 1u) - (bad & 1u));
         tfit_region_state_site(m->dims, st, &at, g);
         tfit_region_amplitudes(m, &at, f, ~bad, a);
+        const uint32_t near = tfit_region_near_count(m);
         for (uint32_t j = 0u; j < m->n_out; ++j) {
             tfit_region_rows(m, a, j, 1u, ~bad, out);
+            if (near != 0u) {
+                tfit_region_near(m, &at, f, ~bad, j, 1u, out);
+            }
             for (uint32_t i = 0u; i < 3u; ++i) {
                 crc = tfit_crc32_word(crc, tfit_bits(out[i]));
             }

@@ -4,14 +4,19 @@
  *
  * coef = o[3] R[9] | the law's 7 scalars, 1/R_F | force map (12: x0 = 0,
  * W = R / R_F) | (nx+2)(ny+2) control points {A[r][T], Phi_site[3][r] when
- * has_site_modes} | Phi[3 n_out][r]; dims = {nx, ny, r, p, has_site_modes}.
+ * has_site_modes} | (nx+2)(ny+2) x near entries {j, D[3][3]} |
+ * Phi[3 n_out][r]; dims = {nx, ny, r, p, has_site_modes, near}.
  *
  *   f = the force map's projection of the force (§4): the chart-frame force
  *       over the envelope radius R_F, on the unit ball
  *   a_k = sum_t A_kt(g) phi_t(f), phi_t the monomials of degrees 1 .. p,
  *       A_kt(g) blended by the splines at the state's proxy site g
  *   out = Phi a (the modes shared by every site; rank r)
- * Memory grows with r, not with sites x outputs.  Phi_site(g) (3 x r) are
+ *       + sum over the cell's 16 control points c of B(g)_c D_cj f for
+ *         each of c's near entries {j, D_cj} (the near field: the peak
+ *         under the probe, which the shared modes do not follow)
+ * Memory grows with r and with the control points times the outputs near
+ * one, not with sites x outputs.  Phi_site(g) (3 x r) are
  * the modes' patch-averaged values at the site: Phi_site(g1) A(g2) / R_F is
  * the compliance that couples two instruments (tfit_region_pair.c).
  */
@@ -37,6 +42,42 @@ void tfit_region_amplitudes(const tfit_model *m, const tfit_region_site *at, con
     for (uint32_t k = 0u; k < r; ++k) {
         tfit_region_blend(ctrl + k * n_t, stride, at, n_t, coef);
         a[k] = tfit_masked(tfit_region_dot(coef, phi, n_t), keep);
+    }
+}
+
+uint32_t tfit_region_near_count(const tfit_model *m)
+{
+    return m->n_dims > 5u ? m->dims[5] : 0u;
+}
+
+/* The near field (§5.11): for the 16 control points of the site's cell,
+ * weight w = B_l(tb) B_k(ta), and each of their `near` entries {j, D},
+ * out_j += w (D f), term by term.  The entries of points outside the
+ * window are added to nothing (their sums are discarded by a mask, not a
+ * branch: every call runs the same instructions). */
+void tfit_region_near(const tfit_model *m, const tfit_region_site *at, const float f[3],
+                      uint32_t keep, uint32_t first, uint32_t count, float *out)
+{
+    const uint32_t n = tfit_region_near_count(m);
+    const uint32_t points = (m->dims[0] + 2u) * (m->dims[1] + 2u);
+    const uint32_t stride = m->dims[2] * TFIT_REGION_SURFACE_TERMS(m->dims[3]) +
+                            3u * m->dims[2] * m->dims[4];
+    const float *table = m->coef + TFIT_REGION_SURFACE_CTRL + points * stride;
+    for (uint32_t l = 0u; l < 4u; ++l) {
+        for (uint32_t k = 0u; k < 4u; ++k) {
+            const float w = at->bb[l] * at->ba[k];
+            const float *e = table + (at->first + l * at->row + k) * n * TFIT_REGION_NEAR_FLOATS;
+            for (uint32_t q = 0u; q < n; ++q, e += TFIT_REGION_NEAR_FLOATS) {
+                const uint32_t j = (uint32_t)e[0] - first;
+                const uint32_t in = tfit_mask(j < count);
+                float *o = out + 3u * (j & in);
+                for (uint32_t i = 0u; i < 3u; ++i) {
+                    const float *d = e + 1u + 3u * i;
+                    const float v = w * ((d[0] * f[0] + d[1] * f[1]) + d[2] * f[2]);
+                    o[i] = tfit_select(in, o[i] + tfit_masked(v, keep), o[i]);
+                }
+            }
+        }
     }
 }
 
@@ -91,6 +132,9 @@ tfit_status tfit_region_surface(const tfit_model *surf, const float *state, cons
     tfit_region_state_site(surf->dims, state, &at, g);
     tfit_region_amplitudes(surf, &at, f, ~bad, a);
     tfit_region_rows(surf, a, 0u, surf->n_out, ~bad, out);
+    if (tfit_region_near_count(surf) != 0u) { /* the model's shape, not the input */
+        tfit_region_near(surf, &at, f, ~bad, 0u, surf->n_out, out);
+    }
     return status_of(clamped, bad);
 }
 
@@ -104,18 +148,22 @@ tfit_status tfit_region_surface_pair(const tfit_model *surf, const float *state2
     if (surf->dims[3] != 1u) { /* superposition holds for affine models only */
         return TFIT_ERR_FAMILY;
     }
-    float f[3], g[2], a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK];
+    float f[3], f2[3], g[2], a[TFIT_REGION_MAX_RANK], b[TFIT_REGION_MAX_RANK];
     uint32_t bad, bad2;
-    tfit_region_site at;
+    tfit_region_site at, at2;
     uint32_t clamped = tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force2, f, &bad);
     tfit_region_state_site(surf->dims, state2, &at, g);
     tfit_region_amplitudes(surf, &at, f, ~bad, a);
-    clamped |= tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f, &bad2);
-    tfit_region_state_site(surf->dims, state2 + TFIT_REGION_STATE_WORDS, &at, g);
-    tfit_region_amplitudes(surf, &at, f, ~bad2, b);
+    clamped |= tfit_input_map(surf->coef + TFIT_REGION_FORCE_MAP, force2 + 3, f2, &bad2);
+    tfit_region_state_site(surf->dims, state2 + TFIT_REGION_STATE_WORDS, &at2, g);
+    tfit_region_amplitudes(surf, &at2, f2, ~bad2, b);
     for (uint32_t k = 0u; k < surf->dims[2]; ++k) { /* masked: the rows' assembly needs it */
         a[k] = tfit_masked(a[k] + b[k], ~(bad | bad2));
     }
     tfit_region_rows(surf, a, 0u, surf->n_out, ~(bad | bad2), out);
+    if (tfit_region_near_count(surf) != 0u) {
+        tfit_region_near(surf, &at, f, ~(bad | bad2), 0u, surf->n_out, out);
+        tfit_region_near(surf, &at2, f2, ~(bad | bad2), 0u, surf->n_out, out);
+    }
     return status_of(clamped, bad | bad2);
 }

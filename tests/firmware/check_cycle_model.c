@@ -124,7 +124,11 @@ static tf_model *shape_of(const char *name)
         if (sscanf(ord, "\"p=%u r=%u sites=%ux%u", &dims[3], &dims[2], &dims[0], &dims[1]) != 4) {
             return NULL;
         }
-        dims[4] = strstr(ord, " site-modes\"") != NULL;
+        dims[4] = strstr(ord, " site-modes") != NULL;
+        const char *near = strstr(ord, " near=");
+        if (near != NULL) {
+            sscanf(near, " near=%u", &dims[5]);
+        }
     } else {
         sscanf(ord, "\"p=%u\"", &dims[0]);
     }

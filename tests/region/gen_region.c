@@ -195,6 +195,7 @@ static int shaped_pair(tf_ctx *ctx, tf_rng *r, long i, const shape *sh, tf_model
     if (sh->degree != 0) {
         g.degree = sh->degree;
     }
+    g.near = tf_rng_below(r, 3) == 0 ? 0 : 1 + tf_rng_below(r, TFIT_REGION_MAX_NEAR);
     uint32_t rank = tf_rng_below(r, 8) == 0 ? TFIT_REGION_MAX_RANK : 1 + tf_rng_below(r, 12);
     uint32_t p = aff ? 1 : 1 + tf_rng_below(r, TFIT_REGION_SURFACE_MAX_DEGREE);
     int site = aff || tf_rng_below(r, 2);
@@ -391,7 +392,9 @@ static int cycle_models(tf_ctx *ctx, tf_rng *r, tf_model **law, tf_model *surf[2
     if (*law == NULL) {
         return -1;
     }
+    g.near = 9; /* block48's near field (outputs within 1.5 probe widths) */
     surf[0] = tf_random_region_surface(ctx, r, &g, "liver_r20", 20, 1, 1, 400);
+    g.near = 0;
     surf[1] = surf[0] == NULL ? NULL
                               : tf_random_region_surface(ctx, r, &g, "liver_r40", 40, 1, 1, 400);
     return surf[1] == NULL ? -1 : 0;

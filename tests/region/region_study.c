@@ -11,6 +11,10 @@
  *     --pairs P      two-instrument cases (default 50)
  *     --seed S
  *     --rect a0,a1,b0,b1   fit only this part of a box face's region
+ *     --device       the rule of tissuefit fit: at most TFIT_REGION_MAX_RANK
+ *                    modes, the coupling measured but not a target
+ *     --near K       the surface's near-field radius, K probe widths (0:
+ *                    none; default 1.5, region_surface.h)
  *     --assert F,S,C fail unless the last spacing's held-out force error
  *                    <= F %, surface error <= S % and two-instrument error
  *                    <= C % (of the envelope radius / peak displacement)
@@ -40,6 +44,7 @@
 #include "fitting/force_samples.h"
 #include "fitting/region_fit.h"
 #include "problem/region_chart.h"
+#include "tfit.h"
 #include "scene/scene.h"
 #include "solvers/solver.h"
 
@@ -53,11 +58,13 @@ typedef struct options {
     int has_rect;
     double bound[3];
     int has_bound;
+    int device;   /* tissuefit fit's rule: at most TFIT_REGION_MAX_RANK modes, coupling stated */
+    double near;  /* the near-field radius in probe widths (< 0: the default) */
 } options;
 
 static int parse(int argc, char **argv, options *o)
 {
-    *o = (options){.levels = 0, .sites = 200, .forces = 5, .pairs = 50, .seed = 1};
+    *o = (options){.levels = 0, .sites = 200, .forces = 5, .pairs = 50, .seed = 1, .near = -1};
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -78,6 +85,10 @@ static int parse(int argc, char **argv, options *o)
             if (!o->has_rect) {
                 return -1;
             }
+        } else if (strcmp(a, "--device") == 0) {
+            o->device = 1;
+        } else if (strcmp(a, "--near") == 0 && v) {
+            o->near = atof(v), i++;
         } else if (strcmp(a, "--assert") == 0 && v) {
             o->has_bound = sscanf(v, "%lf,%lf,%lf", &o->bound[0], &o->bound[1], &o->bound[2]) == 3;
             i++;
@@ -402,6 +413,13 @@ int main(int argc, char **argv)
            r->tip == TF_TIP_RECT ? r->tip_size[0] : r->tip_radius, t_setup);
     tf_region_targets tg = tf_region_targets_default();
     tg.levels = o.levels;
+    if (o.device) { /* as tissuefit fit (region_models.c) */
+        tg.max_rank = TFIT_REGION_MAX_RANK;
+        tg.coupling = INFINITY;
+    }
+    if (o.near >= 0) {
+        tg.near = o.near;
+    }
     tf_region_result res;
     if (tf_region_fit(&ctx, sv, p, 0, &tg, &res) != 0) {
         fprintf(stderr, "%s\n", ctx.err);

@@ -245,7 +245,8 @@ tf_model *tf_random_region_surface(tf_ctx *ctx, tf_rng *r, const tf_random_regio
     double *ctrl = calloc(points * S, sizeof *ctrl);
     double *modes = calloc(3 * (size_t)n_out * rank, sizeof *modes);
     double *coefs = calloc(2 * (size_t)S, sizeof *coefs);
-    uint32_t *ids = calloc(n_out, sizeof *ids);
+    uint32_t *ids = calloc(n_out, sizeof *ids), *nidx = NULL;
+    double *nD = NULL;
     tf_model *m = NULL;
     if (ctrl == NULL || modes == NULL || coefs == NULL || ids == NULL) {
         tf_fail(ctx, "out of memory");
@@ -270,9 +271,26 @@ tf_model *tf_random_region_surface(tf_ctx *ctx, tf_rng *r, const tf_random_regio
     for (uint32_t i = 0; i < n_out; ++i) {
         ids[i] = 100 + 7 * i;
     }
+    tf_region_near_table near = {degree == 1 ? g->near : 0, NULL, NULL};
+    nidx = calloc(points * near.n + 1, sizeof *nidx);
+    nD = calloc(9 * points * near.n + 1, sizeof *nD);
+    if (nidx == NULL || nD == NULL) {
+        tf_fail(ctx, "out of memory");
+        goto done;
+    }
+    for (size_t e = 0; e < points * near.n; ++e) { /* a tenth of the modes' scale */
+        nidx[e] = tf_rng_below(r, n_out);
+        for (int i = 0; i < 9; ++i) {
+            nD[9 * e + (size_t)i] = 0.1 * uniform(r, -1, 1);
+        }
+    }
+    near.idx = nidx;
+    near.D = nD;
     m = tf_region_surface_new(ctx, name, &g->chart, g->s_u, g->mu, g->force_radius, rank, degree,
-                              site_modes, ctrl, modes, n_out, ids);
+                              site_modes, ctrl, &near, modes, n_out, ids);
 done:
+    free(nidx);
+    free(nD);
     free(ctrl);
     free(modes);
     free(coefs);

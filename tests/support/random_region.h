@@ -26,6 +26,7 @@ typedef struct tf_random_region {
     double cubic, quartic; /* the potential's degree-3 and -4 weights (0 .. 1 of the
                             * largest that keeps it convex) */
     double cubic_dir[3];
+    uint32_t near;       /* a surface's near-field entries per control point (p = 1; 0: none) */
 } tf_random_region;
 
 /* A random region; grid sides in [2, max_side]. */
@@ -42,7 +43,8 @@ void tf_random_region_block(tf_random_region *g, uint32_t n, double h, double kt
 tf_model *tf_random_region_law(tf_ctx *ctx, const tf_random_region *g, const char *name);
 
 /* A surface for g: rank r, degree p, n_out outputs with random modes (site
- * modes when site_modes); amplitudes smooth over the region. */
+ * modes when site_modes); amplitudes smooth over the region; with p = 1 and
+ * g->near > 0, g->near random near-field entries per control point. */
 tf_model *tf_random_region_surface(tf_ctx *ctx, tf_rng *r, const tf_random_region *g,
                                    const char *name, uint32_t rank, uint32_t degree,
                                    int site_modes, uint32_t n_out);

@@ -10,12 +10,16 @@
 #include "fitting/families/common.h"
 #include "fitting/families/region_family.h"
 
-/* "p=1 r=12 sites=17x17 site-modes". */
+/* "p=1 r=12 sites=17x17 site-modes near=9". */
 static void orders_text(const tf_model *m, int style, char *buf, size_t n)
 {
     (void)style;
-    snprintf(buf, n, "p=%u r=%u sites=%ux%u%s", m->dims[3], m->dims[2], m->dims[0], m->dims[1],
-             m->dims[4] ? " site-modes" : "");
+    char near[24] = "";
+    if (m->n_dims > 5 && m->dims[5] != 0) {
+        snprintf(near, sizeof near, " near=%u", m->dims[5]);
+    }
+    snprintf(buf, n, "p=%u r=%u sites=%ux%u%s%s", m->dims[3], m->dims[2], m->dims[0], m->dims[1],
+             m->dims[4] ? " site-modes" : "", near);
 }
 
 const tf_family tf_family_region_surface = {

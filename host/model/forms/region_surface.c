@@ -4,7 +4,7 @@
  * the contact force (N) -> the outputs' displacements (mm), through r
  * modes shared by every site.  Its target evaluator is tfit_region_surface
  * (target/src/tfit_region_surface.c; the self-test in
- * tfit_region_check.c).  dims = {nx, ny, r, p, has_site_modes}.
+ * tfit_region_check.c).  dims = {nx, ny, r, p, has_site_modes, near}.
  *
  * The layout, checks and golden design are model/region_model.c's, the
  * reference evaluation model/region_ref.c's.  Golden vector v (and
@@ -57,22 +57,27 @@ enum {
     AMP_MODE,   /* tfit_region_amplitudes loop 1: one mode's two calls */
     ROWS_POINT, /* tfit_region_rows loop 1 (r > 8): one output point */
     ROWS_MODE,  /* loop 2: one mode of its three rows */
+    NEAR_PATH,  /* near > 0: the call of tfit_region_near outside its loops */
+    NEAR_ROW,   /* tfit_region_near loop 1: one row l of control points */
+    NEAR_POINT, /* loop 2: one control point (its weight, its entries' start) */
+    NEAR_ENTRY, /* loop 3: one entry {j, D} (the window's mask, the output's address) */
+    NEAR_COMP,  /* loop 4: one component i of the entry's term */
     N_BLOCKS
 };
 static const tf_block blocks[N_BLOCKS] = {
     [PATH_ASM] = {"tfit_region_surface", 0, 0,
-                  {"alu=214 mul=8 mla=4 load=25 store=11 ldm=6 ldm_pc=5 stm=8 words=90 fload=22 "
-                   "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=17 "
+                  {"alu=217 mul=8 mla=4 load=28 store=11 ldm=6 ldm_pc=5 stm=8 words=90 fload=22 "
+                   "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=19 "
                    "nbranch=6",
-                   "alu=214 mul=8 mla=4 load=23 store=13 ldm=7 ldm_pc=5 stm=7 words=96 fload=22 "
-                   "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=17 "
+                   "alu=217 mul=8 mla=4 load=26 store=13 ldm=7 ldm_pc=5 stm=7 words=96 fload=22 "
+                   "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=19 "
                    "nbranch=6"}},
     [PATH_C] = {"tfit_region_surface", 0, 0,
-                {"alu=227 mul=8 mla=4 load=25 store=12 ldm=5 ldm_pc=6 stm=7 words=88 fload=22 "
-                 "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=15 "
+                {"alu=230 mul=8 mla=4 load=28 store=12 ldm=5 ldm_pc=6 stm=7 words=88 fload=22 "
+                 "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=17 "
                  "nbranch=8",
-                 "alu=227 mul=8 mla=4 load=23 store=12 ldm=6 ldm_pc=6 stm=7 words=96 fload=22 "
-                 "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=15 "
+                 "alu=230 mul=8 mla=4 load=26 store=12 ldm=6 ldm_pc=6 stm=7 words=96 fload=22 "
+                 "fstore=24 fldm=1 fstm=1 fwords=4 fadd=30 fmul=65 fother=24 fmov=32 branch=17 "
                  "nbranch=8"}},
     [POWERS] = {"tfit_region_monomials", 0, 0, TF_SAME("alu=3 fother=3")},
     [MODE] = {"tfit_region_amplitudes", 0, 0,
@@ -93,10 +98,46 @@ static const tf_block blocks[N_BLOCKS] = {
                     TF_SAME("alu=13 load=1 store=3 fload=4 fmul=3 fmov=3 branch=1")},
     [ROWS_MODE] = {"tfit_region_rows", 2, 2,
                    TF_SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
+    [NEAR_PATH] = {"tfit_region_near", 0, 0,
+                  {"alu=34 mul=7 mla=1 load=10 store=9 ldm=3 ldm_pc=1 stm=1 words=24 branch=1 "
+                   "nbranch=1",
+                   "alu=33 mul=7 mla=1 load=10 store=9 ldm=3 ldm_pc=1 stm=1 words=24 branch=1 "
+                   "nbranch=1"}},
+    [NEAR_ROW] = {"tfit_region_near", 1, 1, TF_SAME("alu=4 load=4 store=1 branch=1")},
+    [NEAR_POINT] = {"tfit_region_near", 2, 2,
+                    TF_SAME("alu=6 load=3 ldm=1 stm=1 words=4 fload=1 fldm=1 fwords=1 fmul=1 "
+                            "branch=2")},
+    [NEAR_ENTRY] = {"tfit_region_near", 3, 3,
+                    TF_SAME("alu=13 load=1 fload=1 fother=1 fmov=1 branch=1")},
+    [NEAR_COMP] = {"tfit_region_near", 4, 4,
+                   TF_SAME("alu=6 load=1 store=1 fload=7 fadd=3 fmul=4 fmov=3 branch=1")},
 };
 
 /* Ranks whose rows run in the modal assembly (TFIT_MODAL_ASM_MAX_RANK). */
 #define ROWS_ASM_MAX_RANK 8u
+
+/* The near field: its call, then 4 rows x 4 control points x near entries
+ * x 3 components; each control point's skip of an empty entry loop falls
+ * through. */
+static void near_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
+{
+    const uint32_t near = m->dims[5];
+    if (near == 0) {
+        return;
+    }
+    tf_insn_add(mix, &blocks[NEAR_PATH], core, 1);
+    tf_insn_loop(mix, &blocks[NEAR_ROW], core, 4);
+    for (uint32_t c = 0; c < 4; ++c) {
+        tf_insn_loop(mix, &blocks[NEAR_POINT], core, 4);
+    }
+    tf_insn_falls_through(mix, 16);
+    for (uint32_t c = 0; c < 16; ++c) {
+        tf_insn_loop(mix, &blocks[NEAR_ENTRY], core, near);
+    }
+    for (uint32_t e = 0; e < 16 * near; ++e) {
+        tf_insn_loop(mix, &blocks[NEAR_COMP], core, 3);
+    }
+}
 
 static void insn_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
 {
@@ -117,12 +158,13 @@ static void insn_mix(const tf_model *m, tf_core core, tf_insn_mix *mix)
     tf_insn_loop(mix, &blocks[AMP_MODE], core, r);
     if (r <= ROWS_ASM_MAX_RANK) {
         tf_insn_modal_rows_asm(mix, core, r, n_out);
-        return;
+    } else {
+        tf_insn_loop(mix, &blocks[ROWS_POINT], core, n_out);
+        for (uint32_t j = 0; j < n_out; ++j) {
+            tf_insn_loop(mix, &blocks[ROWS_MODE], core, r - 1);
+        }
     }
-    tf_insn_loop(mix, &blocks[ROWS_POINT], core, n_out);
-    for (uint32_t j = 0; j < n_out; ++j) {
-        tf_insn_loop(mix, &blocks[ROWS_MODE], core, r - 1);
-    }
+    near_mix(m, core, mix);
 }
 
 /* The surface's static response: the contact at the grid's centre site. */
@@ -170,7 +212,7 @@ static uint32_t check_far(const tf_model *m, float *state, const uint32_t *check
 }
 
 /* The scalars, the force map, the control points' blocks {A[r][T(p) - 1],
- * Phi_site[3][r]}, then the modes' rows. */
+ * Phi_site[3][r]}, their near fields, then the modes' rows. */
 static void emit_tables(FILE *f, const tf_model *m, const char *site)
 {
     tf_form_write_floats(f, m->coef + TF_REGION_CHART, TF_REGION_SURFACE_SCALARS,
@@ -188,6 +230,15 @@ static void emit_tables(FILE *f, const tf_model *m, const char *site)
                      (int)i - 1, (int)j - 1, r, tf_region_surface_terms(m->dims[3]),
                      m->dims[4] ? ", site modes Phi_site[3][r]" : "");
             tf_form_write_floats(f, c, stride, note);
+        }
+    }
+    const uint32_t near = m->dims[5];
+    for (uint32_t j = 0; near != 0 && j < ny + 2; ++j) {
+        for (uint32_t i = 0; i < nx + 2; ++i, c += near * TF_REGION_NEAR_FLOATS) {
+            snprintf(note, sizeof note,
+                     "control point (%d, %d): near field, %u entries {output point, D[3][3]}",
+                     (int)i - 1, (int)j - 1, near);
+            tf_form_write_floats(f, c, near * TF_REGION_NEAR_FLOATS, note);
         }
     }
     static const char comp[] = "xyz";

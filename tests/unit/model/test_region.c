@@ -277,7 +277,7 @@ static void pair_solves_the_coupling(void **state)
     const double modes[3 * 2 * 3] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0, 0, 0, 0.5, 0, 0, 0, 0.5};
     const uint32_t ids[2] = {1, 2};
     tf_model *surf = tf_region_surface_new(&ctx, "coupled", &g.chart, g.s_u, g.mu, rf, r, 1, 1,
-                                           ctrl, modes, n_out, ids);
+                                           ctrl, NULL, modes, n_out, ids);
     assert_non_null(surf);
     tfit_model tl, ts;
     view(law, &tl);
