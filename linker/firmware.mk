@@ -101,6 +101,7 @@ $(FW)/$(2)/golden-$(call fw_name,$(1)).elf: tests/firmware/qemu_golden.c $(1) $(
 	$(Q)$(ARM)gcc $(FW_CFLAGS) $(FW_FLAGS_$(2)) $(FW_SCRATCH_$(2)) -I$(dir $(1)) \
 	  -DGOLDEN_H='"$(call fw_name,$(1))_golden.h"' \
 	  $(if $(filter m3 m0,$(2)),,-DGOLDEN_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_SETS) \
+	  $(if $(filter $(REGION_HEADERS),$(1)),-DGOLDEN_PAIR=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_PAIR) \
 	  -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(call fw_name,$(1)))_GOLDEN_Q31_SETS \
 	  -DTFIT_$(call upper,$(call fw_name,$(1)))_IMPLEMENTATION \
 	  -DLABEL='"$(call fw_name,$(1))/$(FW_QEMU_$(2))$(FW_TAG_$(2))"' \

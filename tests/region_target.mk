@@ -153,7 +153,7 @@ define golden_runner_shipped
 $(T)/golden-$(1)-%: tests/header/run_golden.c coeffs/$(1).h coeffs/$(1)_golden.h $(B)/bitexact-%/libtfit.a
 	$$(call say,BUILD)
 	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Icoeffs -DGOLDEN_H='"$(1)_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DGOLDEN_PAIR=TFIT_$(call upper,$(1))_GOLDEN_PAIR \
 	  -DTFIT_$(call upper,$(1))_IMPLEMENTATION $$< $(B)/bitexact-$$*/libtfit.a -o $$@
 endef
 $(foreach h,$(GOLDEN_REGIONS),$(eval $(call golden_runner_shipped,$(h))))

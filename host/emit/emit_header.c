@@ -19,6 +19,7 @@
 #include "fitting/families/family.h"
 #include "model/forms/form.h"
 #include "model/golden.h"
+#include "model/region_pairs.h"
 #include "model/ref_eval.h"
 
 #ifndef TFIT_TOOL_VERSION
@@ -469,6 +470,29 @@ static void write_header(FILE *f, const char *base, tf_model *const *models,
     fprintf(f, "\n#endif /* TFIT_%s_IMPLEMENTATION */\n#endif /* TFIT_%s_H */\n", g, g);
 }
 
+/* A float table's bit patterns. */
+static void write_float_bits(FILE *f, const char *name, const float *v, size_t n)
+{
+    uint32_t *bits = malloc((n + 1) * sizeof *bits);
+    if (bits == NULL) {
+        return;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        bits[i] = float_bits(v[i]);
+    }
+    write_u32_table(f, "uint32_t", name, bits, n, 1);
+    free(bits);
+}
+
+static void write_statuses(FILE *f, const char *name, const int32_t *v, size_t n)
+{
+    fprintf(f, "static const int32_t %s[%zu] = {\n   ", name, n);
+    for (size_t i = 0; i < n; ++i) {
+        fprintf(f, " %d,%s", v[i], (i % 16 == 15 && i + 1 < n) ? "\n   " : "");
+    }
+    fprintf(f, "\n};\n");
+}
+
 static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
 {
     float in[TF_GOLDEN_MAX][3];
@@ -497,11 +521,8 @@ static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
     fprintf(f, "\n#define TFIT_%s_GOLDEN_N %zu\n", p, n_vec);
     snprintf(name, sizeof name, "tfit_%s_golden_in", m->name);
     write_u32_table(f, "uint32_t", name, in_bits, 3 * n_vec, 1);
-    fprintf(f, "static const int32_t tfit_%s_golden_status[%zu] = {\n   ", m->name, n_vec);
-    for (size_t v = 0; v < n_vec; ++v) {
-        fprintf(f, " %d,%s", status[v], (v % 16 == 15 && v + 1 < n_vec) ? "\n   " : "");
-    }
-    fprintf(f, "\n};\n");
+    snprintf(name, sizeof name, "tfit_%s_golden_status", m->name);
+    write_statuses(f, name, status, n_vec);
     snprintf(name, sizeof name, "tfit_%s_golden_out", m->name);
     write_u32_table(f, "uint32_t", name, out_bits, n_vec * n_out, 1);
     fprintf(f,
@@ -511,6 +532,53 @@ static int write_golden_set(FILE *f, const tf_model *m, uint64_t seed)
     free(out);
     free(out_bits);
     return tf_emit_q31_golden(f, m, seed);
+}
+
+/* An affine region header's two-instrument vectors (model/region_pairs.h):
+ * TFIT_BASE_GOLDEN_PAIR, run by tfit_golden_run_pair. */
+static int write_golden_pair(FILE *f, const char *base, const char *base_upper,
+                             tf_model *const *models, size_t n, uint64_t seed)
+{
+    const tf_model *law = NULL, *surf = NULL;
+    for (size_t i = 0; i < n; ++i) {
+        law = models[i]->family == TFIT_FAMILY_REGION ? models[i] : law;
+        surf = models[i]->family == TFIT_FAMILY_REGION_SURFACE ? models[i] : surf;
+    }
+    if (law == NULL || surf == NULL || !tf_region_pairs_affine(law, surf)) {
+        return 0;
+    }
+    tf_region_pairs *p = calloc(1, sizeof *p);
+    if (p == NULL || tf_region_pairs_design(law, surf, seed, p) != 0) {
+        free(p);
+        return -1;
+    }
+    char name[TF_NAME_MAX + 32];
+    fprintf(f, "\n/* two instruments: %zu ticks of tfit_region_pair from reset states, %zu calls "
+               "of tfit_region_surface_pair */\n", p->n, p->ns);
+    snprintf(name, sizeof name, "tfit_%s_pair_tip", base);
+    write_float_bits(f, name, &p->tip[0][0], 6 * p->n);
+    snprintf(name, sizeof name, "tfit_%s_pair_status", base);
+    write_statuses(f, name, p->status, p->n);
+    snprintf(name, sizeof name, "tfit_%s_pair_force", base);
+    write_float_bits(f, name, &p->force[0][0], 6 * p->n);
+    snprintf(name, sizeof name, "tfit_%s_pair_state", base);
+    write_float_bits(f, name, &p->sstate[0][0], 6 * p->ns);
+    snprintf(name, sizeof name, "tfit_%s_pair_sforce", base);
+    write_float_bits(f, name, &p->sforce[0][0], 6 * p->ns);
+    snprintf(name, sizeof name, "tfit_%s_pair_sstatus", base);
+    write_statuses(f, name, p->sstatus, p->ns);
+    snprintf(name, sizeof name, "tfit_%s_pair_out", base);
+    write_float_bits(f, name, p->sout, p->ns * 3 * surf->n_out);
+    fprintf(f,
+            "static const tfit_golden_pair tfit_%s_golden_pair = {\n    &tfit_%s, &tfit_%s, "
+            "%zuu, tfit_%s_pair_tip, tfit_%s_pair_status, tfit_%s_pair_force,\n    %zuu, "
+            "tfit_%s_pair_state, tfit_%s_pair_sforce, tfit_%s_pair_sstatus, tfit_%s_pair_out\n};\n"
+            "#define TFIT_%s_GOLDEN_PAIR (&tfit_%s_golden_pair)\n",
+            base, law->name, surf->name, p->n, base, base, base, p->ns, base, base, base, base,
+            base_upper, base);
+    tf_region_pairs_free(p);
+    free(p);
+    return 0;
 }
 
 static int write_golden(FILE *f, const char *base, tf_model *const *models, size_t n,
@@ -538,7 +606,7 @@ static int write_golden(FILE *f, const char *base, tf_model *const *models, size
     }
     fprintf(f, "}\n");
     tf_emit_q31_sets(f, g, models, n);
-    return 0;
+    return write_golden_pair(f, base, g, models, n, info->golden_seed + n);
 }
 
 /* The end of the golden file: it refuses to compile beside a header of

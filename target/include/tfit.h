@@ -358,6 +358,30 @@ typedef struct tfit_golden {
  * (docs/header-format.md §7).  Returns UINT32_MAX for NULL arguments. */
 uint32_t tfit_golden_run(const tfit_golden *g, float *scratch);
 
+/* Two instruments' golden vectors of an affine region header (its law and
+ * surface; NAME_golden.h defines TFIT_NAME_GOLDEN_PAIR): n_tick ticks of
+ * tfit_region_pair from two reset states (tips, expected statuses and
+ * forces), and n_surf calls of tfit_region_surface_pair (two states, two
+ * forces, expected statuses and outputs; docs/header-format.md §7). */
+typedef struct tfit_golden_pair {
+    const tfit_model *law;
+    const tfit_model *surf;
+    uint32_t n_tick;
+    const uint32_t *tip;     /* n_tick x 6 float bit patterns */
+    const int32_t *status;   /* n_tick */
+    const uint32_t *force;   /* n_tick x 6 */
+    uint32_t n_surf;
+    const uint32_t *state;   /* n_surf x 6: both instruments' states */
+    const uint32_t *sforce;  /* n_surf x 6 */
+    const int32_t *sstatus;  /* n_surf */
+    const uint32_t *out;     /* n_surf x 3 surf->n_out */
+} tfit_golden_pair;
+
+/* Runs them (scratch[3 * surf->n_out]) and returns the number of
+ * mismatching words (a surface that fails tfit_model_check counts one),
+ * UINT32_MAX for NULL arguments. */
+uint32_t tfit_golden_run_pair(const tfit_golden_pair *g, float *scratch);
+
 /* The cut progress of cut golden vector v, v mod 16 (bit patterns): 0, 1,
  * knots and points between them, -0, the clamped -0.25, 1.5, 1e30, -1e30,
  * and the rejected NaN, +Inf, -Inf. */

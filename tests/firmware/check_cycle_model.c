@@ -204,6 +204,14 @@ int main(int argc, char **argv)
             mixtext == NULL) {
             continue;
         }
+        if (strcmp(entry, "tfit_region_pair") == 0 ||
+            strcmp(entry, "tfit_region_surface_pair") == 0) { /* a region header's pairs */
+            int same = strcmp(verdict, "identical") == 0;
+            printf("%-22s %s: %3u calls %s, %6llu instructions\n", argv[2], entry, calls,
+                   same ? "same instructions" : "DIFFERENT instructions", traced_insns);
+            fail |= !same;
+            continue;
+        }
         if (strstr(entry, "_q31") != NULL) {
             int same = strcmp(verdict, "identical") == 0;
             printf("%-22s q31 set %d: %3u inputs %s, %6llu instructions\n", argv[2], q31_set++,

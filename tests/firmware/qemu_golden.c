@@ -9,7 +9,8 @@
  * Compiled per header and core with -DGOLDEN_H='"NAME_golden.h"',
  * -DTFIT_NAME_IMPLEMENTATION, -DLABEL='"NAME/board"' and
  * -DGOLDEN_SETS=TFIT_NAME_GOLDEN_SETS (float; omitted on cores without an
- * FPU) and/or -DGOLDEN_Q31_SETS=TFIT_NAME_GOLDEN_Q31_SETS.
+ * FPU) and/or -DGOLDEN_Q31_SETS=TFIT_NAME_GOLDEN_Q31_SETS; for an affine
+ * region header -DGOLDEN_PAIR=TFIT_NAME_GOLDEN_PAIR too.
  */
 #include "semihost.h"
 #include "startup.h"
@@ -110,11 +111,31 @@ static uint32_t run_q31(void)
 }
 #endif
 
+#if defined(GOLDEN_SETS) && defined(GOLDEN_PAIR)
+/* An affine region header's two-instrument ticks and surface pairs. */
+static uint32_t run_pair(void)
+{
+    const tfit_golden_pair *g = GOLDEN_PAIR;
+    const uint32_t n = out_words(g->surf->n_out);
+    (void)tfit_model_check(g->law); /* starts the pair ticks' set in a trace */
+    const uint32_t bad = tfit_golden_run_pair(g, scratch.f);
+    if (bad != 0u) {
+        report_set("two instruments", 0u, 1, bad);
+    }
+    report("two instruments", bad == 0u, bad != 0u, g->n_tick + g->n_surf,
+           g->n_tick * 7u + g->n_surf * (n + 1u));
+    return bad != 0u;
+}
+#endif
+
 int main(void)
 {
     uint32_t failed = 0u;
 #ifdef GOLDEN_SETS
     failed += run_float();
+#endif
+#if defined(GOLDEN_SETS) && defined(GOLDEN_PAIR)
+    failed += run_pair();
 #endif
 #ifdef GOLDEN_Q31_SETS
     failed += run_q31();

@@ -5,7 +5,8 @@
  *   -DGOLDEN_H='"NAME_golden.h"' -DGOLDEN_SETS=TFIT_NAME_GOLDEN_SETS
  *   -DTFIT_NAME_IMPLEMENTATION
  * and optionally -DGOLDEN_Q31_SETS=TFIT_NAME_GOLDEN_Q31_SETS (the Q31 forms'
- * vectors too).  Prints "N passed, M failed" (sets of vectors) and exits
+ * vectors too) and -DGOLDEN_PAIR=TFIT_NAME_GOLDEN_PAIR (an affine region
+ * header's two-instrument vectors).  Prints "N passed, M failed" (sets of vectors) and exits
  * non-zero on any mismatch or failed model check.
  */
 #include <stdio.h>
@@ -42,6 +43,20 @@ int main(int argc, char **argv)
         if (st != TFIT_OK || bad != 0) {
             fprintf(stderr, "%s: q31 set %zu: model check %d, %u mismatching words\n", label, i,
                     (int)st, bad);
+            failed++;
+        } else {
+            passed++;
+        }
+    }
+#endif
+#ifdef GOLDEN_PAIR
+    {
+        const tfit_golden_pair *g = GOLDEN_PAIR;
+        float *scratch = malloc(3 * g->surf->n_out * sizeof *scratch);
+        uint32_t bad = tfit_golden_run_pair(g, scratch);
+        free(scratch);
+        if (bad != 0) {
+            fprintf(stderr, "%s: two instruments: %u mismatching words\n", label, bad);
             failed++;
         } else {
             passed++;

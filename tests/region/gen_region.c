@@ -26,6 +26,7 @@
 #include "model/golden.h"
 #include "model/model.h"
 #include "model/ref_eval.h"
+#include "model/region_pairs.h"
 #include "model/region_ref.h"
 #include "random_region.h"
 #include "region_bundle.h"
@@ -37,21 +38,7 @@ typedef struct vectors {
     float *out; /* n x 3 n_out */
 } vectors;
 
-/* Two-instrument sequences (§5.12): both proxies from reset states; the
- * second instrument's tips are the first's design shifted by 7 ticks (so
- * that they press, slide and lift at other times), its own seed. */
-typedef struct pairs {
-    size_t n;
-    float tip[TF_GOLDEN_MAX][6];
-    int32_t status[TF_GOLDEN_MAX];
-    float force[TF_GOLDEN_MAX][6];
-    float state[TF_GOLDEN_MAX][6];
-    size_t ns; /* surface pairs */
-    float sstate[TF_GOLDEN_MAX][6];
-    float sforce[TF_GOLDEN_MAX][6];
-    int32_t sstatus[TF_GOLDEN_MAX];
-    float *sout; /* ns x 3 n_out */
-} pairs;
+typedef tf_region_pairs pairs; /* model/region_pairs.h */
 
 static int golden(const tf_model *m, uint64_t seed, vectors *v)
 {
@@ -64,48 +51,9 @@ static int golden(const tf_model *m, uint64_t seed, vectors *v)
     return 0;
 }
 
-static int affine(const tf_model *law, const tf_model *surf)
-{
-    return law->dims[2] == 2 && surf->dims[3] == 1 && surf->dims[4] == 1;
-}
-
 static int pair_vectors(const tf_model *law, const tf_model *surf, uint64_t seed, pairs *p)
 {
-    float a[TF_GOLDEN_MAX][3], b[TF_GOLDEN_MAX][3];
-    p->n = p->ns = 0;
-    p->sout = NULL;
-    if (surf->dims[3] == 1) { /* surface pairs: golden states v and v + 5, forces v and v + 11 */
-        const size_t n = tf_golden_design(surf, seed, a);
-        p->sout = malloc(n * 3 * surf->n_out * sizeof *p->sout);
-        if (p->sout == NULL) {
-            return -1;
-        }
-        for (size_t v = 0; v < n; ++v) {
-            tf_region_ref_golden_state(surf, (uint32_t)v, p->sstate[v]);
-            tf_region_ref_golden_state(surf, (uint32_t)v + 5, p->sstate[v] + 3);
-            memcpy(p->sforce[v], a[v], sizeof a[v]);
-            memcpy(p->sforce[v] + 3, a[(v + 11) % n], sizeof a[v]);
-            p->sstatus[v] = (int32_t)tf_region_ref_surface_pair(
-                surf, p->sstate[v], p->sforce[v], p->sout + v * 3 * surf->n_out);
-        }
-        p->ns = n;
-    }
-    if (!affine(law, surf)) {
-        return 0;
-    }
-    const size_t n = tf_golden_design(law, seed, a);
-    tf_golden_design(law, seed + 1, b);
-    float st[6];
-    tf_region_ref_reset(st);
-    tf_region_ref_reset(st + 3);
-    for (size_t v = 0; v < n; ++v) {
-        memcpy(p->tip[v], a[v], sizeof a[v]);
-        memcpy(p->tip[v] + 3, b[(v + 7) % n], sizeof b[v]);
-        p->status[v] = (int32_t)tf_region_ref_pair(law, surf, st, p->tip[v], p->force[v]);
-        memcpy(p->state[v], st, sizeof st);
-    }
-    p->n = n;
-    return 0;
+    return tf_region_pairs_design(law, surf, seed, p);
 }
 
 /* --- the bundle ------------------------------------------------------------------ */
