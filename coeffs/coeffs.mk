@@ -149,6 +149,8 @@ tradeoff: $(B)/bin/tissuefit | deps-demo
 	  args=$$(eval echo \$${SWEEP_$$n}); \
 	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
 	    --png $(REPORTS)/$${n}_sweep.png $$args; done
+	@set -e; for s in $(REGION_SCENES); do n=$$(basename $$s .yaml); \
+	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md; done
 
 # Material extremes through the whole pipeline (issue 7 item 3).
 $(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check

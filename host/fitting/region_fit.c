@@ -91,6 +91,7 @@ void tf_region_result_free(tf_region_result *res)
         tf_region_surface_free(&res->level[k].surface_model);
         tf_region_modes_free(&res->level[k].modes);
         free(res->level[k].train);
+        free(res->level[k].check);
     }
     tf_region_sites_free(&res->sites);
     memset(res, 0, sizeof *res);
@@ -479,8 +480,27 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
         lv->seconds = solves + (omp_get_wtime() - t1); /* (the fit includes the r solves) */
     }
     free(pts);
-    free(chk);
+    lv->check = chk;
+    lv->n_check = nc;
     return rc;
+}
+
+void tf_region_surface_heldout(const tf_region_surface *sf, const tf_region_result *res,
+                               const tf_region_level *lv, double *max, double *rms)
+{
+    double *work = malloc(9 * res->sites.n_out * sizeof *work), sum2 = 0;
+    *max = *rms = 0;
+    if (work == NULL) {
+        *max = *rms = INFINITY;
+        return;
+    }
+    for (size_t i = 0; i < lv->n_check; ++i) {
+        const double e = surface_error(sf, &res->sites, lv->check[i], work) / lv->peak;
+        *max = fmax(*max, e);
+        sum2 += e * e;
+    }
+    *rms = lv->n_check > 0 ? sqrt(sum2 / (double)lv->n_check) : 0;
+    free(work);
 }
 
 /* The first spacing: the scene's, or about the probe's diameter. */

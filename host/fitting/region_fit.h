@@ -96,6 +96,8 @@ typedef struct tf_region_level {
     tf_region_surface surface_model;
     tf_region_modes modes; /* what surfaces of other ranks are cut from */
     size_t *train;       /* nx ny indices into the result's sites, grid order */
+    size_t *check;       /* the (nx - 1)(ny - 1) cell centres' indices into them */
+    size_t n_check;
 } tf_region_level;
 
 typedef struct tf_region_result {
@@ -112,6 +114,12 @@ int tf_region_fit(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                   const tf_region_targets *tg, tf_region_result *res);
 
 void tf_region_result_free(tf_region_result *res);
+
+/* A surface's error at the cell centres of level lv of res (sites never
+ * fitted): the largest and the RMS over them of the largest output error
+ * under an envelope force, as fractions of lv's peak displacement. */
+void tf_region_surface_heldout(const tf_region_surface *sf, const tf_region_result *res,
+                               const tf_region_level *lv, double *max, double *rms);
 
 /* The law (P = 2) of the nx x ny sites idx (grid order) of t: K_s = C_s^-1
  * symmetrised, in v = s_u u, and the site heights in the chart c. */
