@@ -150,7 +150,8 @@ tradeoff: $(B)/bin/tissuefit | deps-demo
 	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
 	    --png $(REPORTS)/$${n}_sweep.png $$args; done
 	@set -e; for s in $(REGION_SCENES); do n=$$(basename $$s .yaml); \
-	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md; done
+	  $(B)/bin/tissuefit sweep $$s --csv $(REPORTS)/$${n}_sweep.csv --md $(REPORTS)/$${n}_sweep.md \
+	    --png $(REPORTS)/$${n}_sweep.png; done
 
 # Material extremes through the whole pipeline (issue 7 item 3).
 $(T)/extremes: tests/fit/extremes.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a | deps-check

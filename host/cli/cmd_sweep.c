@@ -35,7 +35,8 @@ static void help(FILE *out)
             "A scene whose contact is a region gets the region's trade instead: the\n"
             "site spacings tissuefit fit's density rule fits and, at each, the surface\n"
             "at ranks 1, 2, 4 .. 48 with its near field: the law's and the surface's\n"
-            "held-out errors at the cell centres, table bytes and Cortex-M4F cycles.\n\n"
+            "held-out errors at the cell centres, table bytes and Cortex-M4F cycles\n"
+            "(--png: the surface error against the table's bytes).\n\n"
             "Options:\n"
             "  --csv FILE    the table as CSV (default: standard output)\n"
             "  --md FILE     the table as Markdown\n"
@@ -60,8 +61,13 @@ static int write_region(tf_ctx *ctx, const tf_region_sweep *sw, const char *path
 
 /* A contact region: its spacings and ranks (region_sweep.h). */
 static int region_sweep(tf_ctx *ctx, const tf_problem *p, int contact, const char *csv,
-                        const char *md)
+                        const char *md, const char *png)
 {
+    if (png != NULL && !tf_plot_available()) {
+        tf_error(ctx,
+                 "sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");
+        return TF_EXIT_USAGE;
+    }
     tf_region_sweep sw = {0};
     tf_solver *solver = tf_solver_create(p, NULL, ctx);
     int rc = TF_EXIT_FAIL;
@@ -70,7 +76,8 @@ static int region_sweep(tf_ctx *ctx, const tf_problem *p, int contact, const cha
     } else if (!csv && tf_region_sweep_csv(&sw, stdout) != 0) {
         tf_error(ctx, "sweep: cannot write the table to standard output: %s", strerror(errno));
     } else if ((csv && write_region(ctx, &sw, csv, 0) != 0) ||
-               (md && write_region(ctx, &sw, md, 1) != 0)) {
+               (md && write_region(ctx, &sw, md, 1) != 0) ||
+               (png && tf_region_sweep_plot(ctx, &sw, png) != 0)) {
         tf_error(ctx, "sweep: %s", ctx->err);
     } else {
         tf_info(ctx, "sweep: contact region '%s': %zu spacings x ranks measured",
@@ -80,13 +87,6 @@ static int region_sweep(tf_ctx *ctx, const tf_problem *p, int contact, const cha
     tf_region_sweep_free(&sw);
     tf_solver_destroy(solver);
     return rc;
-}
-
-static int region_png_refused(tf_ctx *ctx, const char *scene)
-{
-    tf_error(ctx, "sweep: %s: --png: not yet for a contact region (its table is written by "
-                  "--csv and --md)", scene);
-    return TF_EXIT_USAGE;
 }
 
 static int run(tf_ctx *ctx, int argc, char **argv)
@@ -139,8 +139,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_error(ctx, "sweep: %s has no contact site to apply forces at", argv[optind]);
     } else if (s->fit.contact >= 0 &&
                p->contacts[s->fit.contact].region.kind != TF_CONTACT_REGION_NONE) {
-        rc = png != NULL ? region_png_refused(ctx, argv[optind])
-                         : region_sweep(ctx, p, s->fit.contact, csv, md);
+        rc = region_sweep(ctx, p, s->fit.contact, csv, md, png);
     } else if (png != NULL && !tf_plot_available()) {
         tf_error(ctx,
                  "sweep: --png needs gnuplot with the pngcairo terminal (Debian: gnuplot-nox)");

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/plot.h"
 #include "cost/cycles.h"
 #include "fitting/region_fit.h"
 #include "fitting/region_models.h"
@@ -132,4 +133,40 @@ int tf_region_sweep_markdown(const tf_region_sweep *sw, FILE *f)
                 r->surface_bytes, r->law_cycles, r->surface_cycles);
     }
     return ferror(f) ? -1 : 0;
+}
+
+int tf_region_sweep_plot(tf_ctx *ctx, const tf_region_sweep *sw, const char *path)
+{
+    tf_plot p;
+    if (tf_plot_open(ctx, &p, path, 1000, 700) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set logscale xy\nset grid\nset key outside right\n"
+                  "set xlabel 'surface table (bytes)'\n"
+                  "set ylabel 'surface error at the cell centres (%% of the peak)'\n"
+                  "set title 'contact region: surface error against table size, ranks 1 .. 48 "
+                  "(circled: tissuefit fit''s choice)'\n");
+    fprintf(p.gp, "plot");
+    unsigned last_nx = 0;
+    for (size_t i = 0; i < sw->n; ++i) { /* one series a spacing (rows come in spacing order) */
+        if (sw->row[i].nx != last_nx) {
+            fprintf(p.gp, "%s '-' w lp pt 7 t '%u x %u sites, %.3g mm'", last_nx ? "," : "",
+                    sw->row[i].nx, sw->row[i].ny, sw->row[i].h);
+            last_nx = sw->row[i].nx;
+        }
+    }
+    fprintf(p.gp, ", '-' w p pt 6 ps 3 lc 'black' t 'chosen'\n");
+    for (size_t i = 0; i < sw->n; ++i) {
+        fprintf(p.gp, "%u %g\n", sw->row[i].surface_bytes, 100 * sw->row[i].surface);
+        if (i + 1 == sw->n || sw->row[i + 1].nx != sw->row[i].nx) {
+            fprintf(p.gp, "e\n");
+        }
+    }
+    for (size_t i = 0; i < sw->n; ++i) {
+        if (sw->row[i].chosen) {
+            fprintf(p.gp, "%u %g\n", sw->row[i].surface_bytes, 100 * sw->row[i].surface);
+        }
+    }
+    fprintf(p.gp, "e\n");
+    return tf_plot_close(ctx, &p);
 }

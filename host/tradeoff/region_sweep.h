@@ -49,5 +49,9 @@ void tf_region_sweep_free(tf_region_sweep *sw);
  * table. */
 int tf_region_sweep_csv(const tf_region_sweep *sw, FILE *f);
 int tf_region_sweep_markdown(const tf_region_sweep *sw, FILE *f);
+/* A PNG of the surface error against the surface table's bytes, one
+ * series per spacing, the chosen row circled (gnuplot).  Returns 0, or -1
+ * with the message. */
+int tf_region_sweep_plot(tf_ctx *ctx, const tf_region_sweep *sw, const char *path);
 
 #endif /* TF_REGION_SWEEP_H */

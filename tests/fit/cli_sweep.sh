@@ -66,12 +66,11 @@ says "an unknown core" "--mcu 'cortex-m3@72': cycle estimates exist for cortex-m
 expect 2 "a budget that is not a number" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/x.h" --budget-us fast
 says "a budget that is not a number" "--budget-us 'fast' is not a positive number"
 [ -z "$(ls -A "$tmp/w")" ] || bad "a refused fit wrote $(ls -A "$tmp/w")"
-expect 2 "a region's sweep plot" -- "$tool" -q sweep coeffs/block48_region.yaml --png "$tmp/w/r.png"
-says "a region's sweep plot" "--png: not yet for a contact region"
-[ -z "$(ls -A "$tmp/w")" ] || bad "a refused sweep wrote $(ls -A "$tmp/w")"
 # a region: its spacings and ranks (the shipped whole face: 9 x 9 and 17 x 17
 # sites); the chosen row is the header's (rank 11, within the 5 % target)
-expect 0 "sweep of a region scene" -- "$tool" -q sweep coeffs/block48_region.yaml --csv "$tmp/r.csv"
+expect 0 "sweep of a region scene" -- "$tool" -q sweep coeffs/block48_region.yaml --csv "$tmp/r.csv" \
+    --png "$tmp/r.png"
+[ -s "$tmp/r.png" ] && head -c 8 "$tmp/r.png" | od -c | grep -q 'P   N   G' || bad "region sweep: no PNG"
 head -1 "$tmp/r.csv" | grep -q '^sites_x,sites_y,spacing_mm,rank,near,law_force_rel,surface_rel_max' ||
     bad "region sweep CSV header"
 awk -F, 'NR > 1 { s[$1 "x" $2] = 1 } END { exit !(("9x9" in s) && ("17x17" in s)) }' "$tmp/r.csv" ||
