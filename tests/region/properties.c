@@ -317,6 +317,7 @@ static void finiteness(int n_regions, int ticks)
         tf_model *law = tf_random_region_law(&ctx, &g, "law");
         const uint32_t rank = 1 + tf_rng_below(&rng, 12);
         const uint32_t p = affine ? 1 : 1 + tf_rng_below(&rng, 3);
+        g.near = tf_rng_below(&rng, TFIT_REGION_MAX_NEAR + 1); /* p = 1: a near field */
         tf_model *surf = law == NULL ? NULL
                                      : tf_random_region_surface(&ctx, &rng, &g, "surface", rank, p,
                                                                 affine, 1 + tf_rng_below(&rng, 20));
