@@ -17,6 +17,9 @@
 #   4. the force map and the deformed surface at four ticks
 #      (build/demo_palpate/*.png, *.vtk for ParaView).
 #
+#   demo-palpate-nodule: the same with a stiff nodule (a material region)
+#      under the region's centre (build/demo_palpate/nodule/).
+#
 #   check-palpate (make check): the same program on block48's top face
 #      (tests/region/block48_region.yaml: 38.4 x 38.4 mm, a 4.8 mm square
 #      probe, 4.8 mm between sites), every fourth display tick replayed:
@@ -41,6 +44,21 @@ demo-palpate: $(DEMO_PALPATE)/palpate | deps-demo
 	@echo "== palpating the liver's anterior region (80 x 80 mm): fit, firmware loop, replay against true solves, pictures =="
 	$(Q)$< tests/region/liver_region.yaml $(DEMO_PALPATE) --rank $(PALPATE_RANK) \
 	  --every $(PALPATE_EVERY) contact.0.spacing=$(PALPATE_SPACING) | tee $(DEMO_PALPATE)/palpate.txt
+
+# The same liver with a stiff nodule under the region's centre (a material
+# region: a sphere 16 mm across, 5 times the liver's E, its top 4 mm under
+# the rest surface at the chart's centre, whose outward normal is
+# (-0.448, -0.865, 0.225)): the force map shows it.
+PALPATE_NODULE := 'inclusions.0.sphere.centre=-37.17,-54.60,23.71' inclusions.0.sphere.radius=8 \
+    inclusions.0.material.E=0.0261 inclusions.0.material.nu=0.45 inclusions.0.name=nodule
+.PHONY: demo-palpate-nodule
+demo-palpate-nodule: $(DEMO_PALPATE)/palpate | deps-demo
+	@echo "== palpating the liver's anterior region with a stiff nodule under it =="
+	@mkdir -p $(DEMO_PALPATE)/nodule
+	$(Q)$< tests/region/liver_region.yaml $(DEMO_PALPATE)/nodule --rank $(PALPATE_RANK) \
+	  --every $(PALPATE_EVERY) contact.0.spacing=$(PALPATE_SPACING) $(PALPATE_NODULE) | \
+	  tee $(DEMO_PALPATE)/nodule/palpate.txt
+	@cp $(DEMO_PALPATE)/nodule/force_map.png docs/organs/liver_nodule_force_map.png
 
 .PHONY: check-palpate
 CHECKS += check-palpate

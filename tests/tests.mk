@@ -255,3 +255,5 @@ check-cli: $(B)/bin/tissuefit
 	@tests/cli/cli.sh $(B)/bin/tissuefit
 	@echo "== tissuefit eval: every shipped header's golden vectors through a CSV, and the refusals =="
 	@tests/cli/eval.sh $(B)/bin/tissuefit
+	@echo "== material regions: a two-material bar against its exact solution, the refusals =="
+	@tests/solver/inclusions.sh $(B)/bin/tissuefit

@@ -67,6 +67,23 @@ static void material(sheet *s, const tf_problem *p)
         put(s, "%s %s = %g (%s)", i ? "," : "", law->params[i].key, p->material.p[i],
             law->params[i].what);
     }
+    for (size_t k = 0; k < p->n_inclusions; ++k) { /* material regions (inclusions.h) */
+        const tf_inclusion *in = &p->inclusions[k];
+        const tf_region *r = &in->where;
+        put(s, "\n  inclusion %zu%s%s: ", k, in->name[0] ? " " : "", in->name);
+        if (r->kind == TF_REGION_SPHERE) {
+            put(s, "sphere centre (%g, %g, %g) mm, radius %g mm", r->centre[0], r->centre[1],
+                r->centre[2], r->radius);
+        } else {
+            put(s, "box [%g, %g] x [%g, %g] x [%g, %g] mm", r->min[0], r->max[0], r->min[1],
+                r->max[1], r->min[2], r->max[2]);
+        }
+        put(s, ", %s:", in->material.law->name);
+        for (size_t i = 0; i < in->material.law->n_params; ++i) {
+            put(s, "%s %s = %g", i ? "," : "", in->material.law->params[i].key, in->material.p[i]);
+        }
+        put(s, " (integrated point by point)");
+    }
 }
 
 /* The solver and the settings its shape functions take: RPIM's support and

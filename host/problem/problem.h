@@ -99,6 +99,17 @@ typedef struct tf_region {
     double radius;    /* SPHERE, NEAR, mm */
 } tf_region;
 
+/* A material region (an inclusion: a nodule, a vessel): a sphere or a box
+ * of the body with its own material; where inclusions overlap the first
+ * listed holds.  Linear elasticity only (inclusions.h). */
+#define TF_INCLUSIONS_MAX 8
+#define TF_INCLUSION_NAME_MAX 32
+typedef struct tf_inclusion {
+    char name[TF_INCLUSION_NAME_MAX];
+    tf_region where;      /* TF_REGION_SPHERE or TF_REGION_BOX */
+    tf_material material;
+} tf_inclusion;
+
 typedef struct tf_fixed {
     tf_region where;
     unsigned components; /* TF_COMP_* mask of the prescribed components */
@@ -323,7 +334,9 @@ typedef struct tf_problem {
     char source[512];   /* where it came from (a scene file), for messages */
     tf_geometry geometry;
     tf_cloud cloud;     /* the nodes */
-    tf_material material; /* a law and its parameters (materials/material.h) */
+    tf_material material; /* a law and its parameters (materials/material.h): the body's, */
+    tf_inclusion inclusions[TF_INCLUSIONS_MAX]; /* but for these parts of it */
+    size_t n_inclusions;
     tf_fixed *fixed;
     size_t n_fixed;
     tf_load *loads;

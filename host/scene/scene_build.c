@@ -233,6 +233,57 @@ static int fixed_one(const sd_fixed *d, size_t k, tf_problem *s, tf_fixed *f, sd
     return 0;
 }
 
+/* Material regions: a sphere or a box each, linear elastic (inclusions.h). */
+static int inclusions(const sd_scene *doc, tf_problem *s, sd_issue *is)
+{
+    char p[128];
+    for (unsigned k = 0; k < doc->inclusions_count; ++k) {
+        const sd_inclusion *d = &doc->inclusions[k];
+        tf_inclusion *inc = &s->inclusions[k];
+        if ((d->sphere != NULL) == (d->box != NULL)) {
+            return sd_fail(is, at(p, sizeof p, "inclusions", k, NULL),
+                           "give exactly one of sphere or box");
+        }
+        snprintf(inc->name, sizeof inc->name, "%s", d->name ? d->name : "");
+        if (d->sphere) {
+            inc->where.kind = TF_REGION_SPHERE;
+            memcpy(inc->where.centre, d->sphere->centre, sizeof inc->where.centre);
+            inc->where.radius = d->sphere->radius;
+            if (!finite_all(inc->where.centre, 3) || !(inc->where.radius > 0) ||
+                !isfinite(inc->where.radius)) {
+                return sd_fail(is, at(p, sizeof p, "inclusions", k, "sphere"),
+                               "the centre must be finite and the radius a positive number of mm");
+            }
+        } else {
+            inc->where.kind = TF_REGION_BOX;
+            if (check_box(d->box, at(p, sizeof p, "inclusions", k, "box"), is) != 0) {
+                return -1;
+            }
+            memcpy(inc->where.min, d->box->min, sizeof inc->where.min);
+            memcpy(inc->where.max, d->box->max, sizeof inc->where.max);
+        }
+        if (sd_build_material(&d->material, at(p, sizeof p, "inclusions", k, "material"),
+                              &inc->material, is) != 0) {
+            return -1;
+        }
+        s->n_inclusions = k + 1;
+    }
+    /* what the solvers take (solvers/cell_stiffness.h): linear elasticity
+     * in the body and in every inclusion */
+    for (size_t k = 0; k < s->n_inclusions; ++k) {
+        const tf_material *m = &s->inclusions[k].material;
+        const unsigned lin = TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE;
+        if ((tf_material_caps(m) & lin) != TF_MATERIAL_HOOKE ||
+            (tf_material_caps(&s->material) & lin) != TF_MATERIAL_HOOKE) {
+            return sd_fail(is, at(p, sizeof p, "inclusions", k, "material.law"),
+                           "not yet: material regions are solved for linear elasticity only "
+                           "(the body's law is %s, this inclusion's %s)",
+                           tf_material_name(&s->material), tf_material_name(m));
+        }
+    }
+    return 0;
+}
+
 static int fixed(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     s->fixed = calloc(doc->fixed_count, sizeof *s->fixed);
@@ -935,7 +986,9 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (doc->name) {
         snprintf(s->name, sizeof s->name, "%s", doc->name);
     }
-    if (geometry(doc, s, is) != 0 || sd_build_material(&doc->material, &s->material, is) != 0 ||
+    if (geometry(doc, s, is) != 0 ||
+        sd_build_material(&doc->material, "material", &s->material, is) != 0 ||
+        inclusions(doc, s, is) != 0 ||
         organ_law(s, is) != 0 || reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         sd_check_held(s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||

@@ -356,6 +356,8 @@ static const cyaml_schema_field_t scene_fields[] = {
     CYAML_FIELD_MAPPING("geometry", CYAML_FLAG_DEFAULT, sd_scene, geometry, geometry_fields),
     /* its fields come from the law registry (sd_schema_init) */
     CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_scene, material, NULL),
+    /* its entries' schema is built with the material's (sd_schema_init) */
+    CYAML_FIELD_SEQUENCE("inclusions", OPT_PTR, sd_scene, inclusions, NULL, 0, TF_INCLUSIONS_MAX),
     CYAML_FIELD_SEQUENCE("fixed", CYAML_FLAG_POINTER, sd_scene, fixed, &fixed_entry, 1,
                          CYAML_UNLIMITED),
     CYAML_FIELD_SEQUENCE("loads", OPT_PTR, sd_scene, loads, &load_entry, 0, CYAML_UNLIMITED),
@@ -398,9 +400,22 @@ int sd_schema_init(sd_schema *s)
         return -1;
     }
     memcpy(s->scene, scene_fields, sizeof scene_fields);
+    const cyaml_schema_field_t inclusion[] = {
+        CYAML_FIELD_STRING_PTR("name", OPT, sd_inclusion, name, 1, TF_INCLUSION_NAME_MAX - 1),
+        CYAML_FIELD_MAPPING_PTR("sphere", OPT, sd_inclusion, sphere, sphere_fields),
+        CYAML_FIELD_MAPPING_PTR("box", OPT, sd_inclusion, box, box_fields),
+        CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_inclusion, material, s->material),
+        CYAML_FIELD_END,
+    };
+    _Static_assert(sizeof inclusion == sizeof s->inclusion, "sd_schema.inclusion holds them");
+    memcpy(s->inclusion, inclusion, sizeof inclusion);
+    s->inclusion_entry = (cyaml_schema_value_t){
+        CYAML_VALUE_MAPPING(CYAML_FLAG_DEFAULT, sd_inclusion, s->inclusion)};
     for (size_t k = 0; k < SD_SCENE_KEYS; ++k) {
         if (strcmp(s->scene[k].key, "material") == 0) {
             s->scene[k].value.mapping.fields = s->material;
+        } else if (strcmp(s->scene[k].key, "inclusions") == 0) {
+            s->scene[k].value.sequence.entry = &s->inclusion_entry;
         }
     }
     material_fields(s->material, nkeys);

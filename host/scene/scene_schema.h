@@ -90,6 +90,15 @@ typedef struct sd_site {
     double radius;
 } sd_site;
 
+/* A material region: a part of the body (a sphere or a box) with its own
+ * material. */
+typedef struct sd_inclusion {
+    char *name;
+    sd_sphere *sphere;
+    sd_box *box;
+    sd_material material;
+} sd_inclusion;
+
 typedef struct sd_fixed {
     int *face;        /* tf_face */
     sd_plane *plane;
@@ -264,6 +273,8 @@ typedef struct sd_scene {
     char *name;
     sd_geometry geometry;
     sd_material material;
+    sd_inclusion *inclusions;
+    unsigned inclusions_count;
     sd_fixed *fixed;
     unsigned fixed_count;
     sd_load *loads;
@@ -281,7 +292,7 @@ typedef struct sd_scene {
 } sd_scene;
 
 /* Keys of a scene's top level. */
-#define SD_SCENE_KEYS 13
+#define SD_SCENE_KEYS 14
 
 /* The schema of a scene file (a pointer to sd_scene): the fixed keys, and
  * under material the law registry's names and parameter keys.  Built by
@@ -291,6 +302,8 @@ typedef struct sd_schema {
     cyaml_schema_value_t root;
     cyaml_schema_field_t scene[SD_SCENE_KEYS + 1];
     cyaml_schema_field_t material[SD_MATERIAL_KEYS + 2]; /* law, the keys, the end */
+    cyaml_schema_field_t inclusion[5];  /* name, sphere, box, material, the end */
+    cyaml_schema_value_t inclusion_entry;
 } sd_schema;
 
 /* Builds the schema.  Returns 0, or -1 when the registry holds more

@@ -162,6 +162,7 @@ static void scatter(tf_csc *k, const tf_nodesets *bp, const uint32_t *set, size_
 typedef struct value_pass {
     const tf_shape *sh;
     const tf_lame *l;
+    const tf_lame_field *field;
     int bbar, vci;
     const tf_nodesets *cs, *bp;
     int threads;
@@ -192,7 +193,7 @@ static int assemble_values(tf_ctx *ctx, value_pass *v)
         for (size_t c = start; c < end; ++c) {
             tf_cell_work *w = &cw[omp_get_thread_num()];
             double t0 = omp_get_wtime();
-            if (tf_cell_stiffness(v->sh, v->l, v->bbar, w, c, cs->nodes + cs->ptr[c],
+            if (tf_cell_stiffness(v->sh, v->l, v->field, v->bbar, w, c, cs->nodes + cs->ptr[c],
                                   cs->ptr[c + 1] - cs->ptr[c],
                                   buf + (c - start) * 9 * maxm * maxm) != 0) {
                 note_failure(c, w->sw.err, &failed, msg, sizeof msg);
@@ -254,7 +255,8 @@ int tf_assemble_stiffness(tf_ctx *ctx, const tf_shape *sh, const tf_lame *l, int
     int rc = tf_assemble_pattern(ctx, sh, ex, threads, &cs, &bp, k);
     double t1 = omp_get_wtime();
     info->t_pattern = t1 - t0;
-    value_pass v = {sh, l, bbar, ex != NULL && ex->vci, &cs, &bp, threads, k, 0, 0, {0}};
+    value_pass v = {sh,  l, ex != NULL ? ex->field : NULL, bbar, ex != NULL && ex->vci,
+                    &cs, &bp, threads, k, 0, 0, {0}};
     tf_shape_stats_reset(&v.st);
     if (rc == 0) {
         rc = assemble_values(ctx, &v);

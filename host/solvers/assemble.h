@@ -33,6 +33,8 @@ typedef struct tf_assembly_info {
 typedef struct tf_assembly_extra {
     int vci;                    /* corrected gradients (cell_gradients.h) */
     const tf_boundary *bnd;     /* weak boundary terms' points, or NULL */
+    const struct tf_lame_field *field; /* the material at each Gauss point (material
+                                          regions, cell_stiffness.h), or NULL: l */
 } tf_assembly_extra;
 
 /* The node set of every cell (the supports of its Gauss points, its

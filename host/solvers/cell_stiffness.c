@@ -29,7 +29,9 @@ int tf_cell_work_init(tf_cell_work *w, const tf_shape *sh, size_t n_nodes, size_
     w->w = malloc(np * sizeof *w->w);
     w->y = malloc(3 * (np + 1) * cap * sizeof *w->y);
     w->c = malloc(9 * cap * cap * sizeof *w->c);
-    if (!w->map || !w->x || !w->w || !w->y || !w->c) {
+    w->pl = malloc(np * sizeof *w->pl);
+    w->wm = malloc(np * sizeof *w->wm);
+    if (!w->map || !w->x || !w->w || !w->y || !w->c || !w->pl || !w->wm) {
         tf_cell_work_free(w);
         return -1;
     }
@@ -54,8 +56,11 @@ void tf_cell_work_free(tf_cell_work *w)
     free(w->w);
     free(w->y);
     free(w->c);
+    free(w->pl);
+    free(w->wm);
     w->map = NULL;
-    w->x = w->w = w->y = w->c = NULL;
+    w->pl = NULL;
+    w->x = w->w = w->y = w->c = w->wm = NULL;
 }
 
 /* Adds w B^T D B of one point (gradients d[a n + i] of the support nodes
@@ -100,20 +105,48 @@ static void add_volumetric(double lambda, double vol, const double *sv, size_t m
     }
 }
 
-/* Point-centred supports (the seed): one local system per Gauss point. */
-static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
-                              size_t cell, size_t m, double *kc)
+/* Whether a field gives the points of a cell (x, np of them) materials
+ * other than the first's: their materials into pl either way. */
+static int mixed(const tf_lame_field *field, const double *x, size_t np, tf_lame *pl)
 {
-    tf_lame shear = {bbar ? 0 : l->lambda, l->mu};
-    double vol = 0, *sv = wk->y; /* 3 m sums, when bbar */
+    int varies = 0;
+    for (size_t p = 0; p < np; ++p) {
+        pl[p] = field->at(field->data, x + 3 * p);
+        varies |= pl[p].lambda != pl[0].lambda || pl[p].mu != pl[0].mu;
+    }
+    return varies;
+}
+
+/* Point-centred supports (the seed): one local system per Gauss point.
+ * With a field, each point's material; the B-bar term then takes the
+ * weighted mean of lambda over the cell's points when they differ. */
+static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, const tf_lame_field *field,
+                              int bbar, tf_cell_work *wk, size_t cell, size_t m, double *kc)
+{
+    const size_t np = tf_cells_points(&sh->cells);
+    tf_lame cl = *l;
+    int varies = 0;
+    if (field != NULL) {
+        for (size_t p = 0; p < np; ++p) {
+            tf_cells_point(&sh->cells, cell, p, wk->x + 3 * p, wk->w + p);
+        }
+        varies = mixed(field, wk->x, np, wk->pl);
+        cl = wk->pl[0];
+    }
+    tf_lame shear = {bbar ? 0 : cl.lambda, cl.mu};
+    double vol = 0, lam_w = 0, *sv = wk->y; /* 3 m sums, when bbar */
     memset(sv, 0, 3 * m * sizeof *sv);
-    for (size_t p = 0; p < tf_cells_points(&sh->cells); ++p) {
+    for (size_t p = 0; p < np; ++p) {
         double x[3], w, t0 = omp_get_wtime();
         tf_cells_point(&sh->cells, cell, p, x, &w);
         int rc = tf_shape_at(sh, &wk->sw, x, cell, 1);
         wk->t_shape += omp_get_wtime() - t0;
         if (rc != 0) {
             return -1;
+        }
+        if (varies) {
+            shear = (tf_lame){bbar ? 0 : wk->pl[p].lambda, wk->pl[p].mu};
+            lam_w += w * wk->pl[p].lambda;
         }
         add_point(&shear, w, wk->sw.dphi, wk->sw.idx, wk->sw.n, wk->map, 3 * m, kc);
         vol += w;
@@ -125,7 +158,7 @@ static int cell_matrix_points(const tf_shape *sh, const tf_lame *l, int bbar, tf
         }
     }
     if (bbar) {
-        add_volumetric(l->lambda, vol, sv, m, kc);
+        add_volumetric(varies ? lam_w / vol : cl.lambda, vol, sv, m, kc);
     }
     return 0;
 }
@@ -185,8 +218,8 @@ static void cell_matrix_shared(const tf_lame *l, int bbar, tf_cell_work *wk, con
 
 /* Cell-centred supports: every Gauss point of the cell has the same n
  * nodes (the cell's set, in its order). */
-static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
-                            size_t cell, size_t dim, double *kc)
+static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, const tf_lame_field *field,
+                            int bbar, tf_cell_work *wk, size_t cell, size_t dim, double *kc)
 {
     size_t np = tf_cells_points(&sh->cells);
     double t0 = omp_get_wtime();
@@ -202,7 +235,29 @@ static int cell_matrix_cell(const tf_shape *sh, const tf_lame *l, int bbar, tf_c
     for (size_t k = 0; k < n; ++k) {
         wk->loc[k] = (size_t)wk->map[wk->sw.idx[k]];
     }
-    cell_matrix_shared(l, bbar, wk, wk->sw.dphi, n, wk->loc, wk->w, np, dim, kc);
+    if (field == NULL || !mixed(field, wk->x, np, wk->pl)) {
+        cell_matrix_shared(field ? &wk->pl[0] : l, bbar, wk, wk->sw.dphi, n, wk->loc, wk->w, np,
+                           dim, kc);
+        return 0;
+    }
+    /* an inclusion cuts the cell: each material's points with their own
+     * parameters (the other points' weights zero) */
+    for (size_t first = 0; first < np; ++first) {
+        int seen = 0;
+        for (size_t p = 0; p < first && !seen; ++p) {
+            seen = wk->pl[p].lambda == wk->pl[first].lambda && wk->pl[p].mu == wk->pl[first].mu;
+        }
+        if (seen) {
+            continue;
+        }
+        for (size_t p = 0; p < np; ++p) {
+            const int same =
+                wk->pl[p].lambda == wk->pl[first].lambda && wk->pl[p].mu == wk->pl[first].mu;
+            wk->wm[p] = same ? wk->w[p] : 0;
+        }
+        cell_matrix_shared(&wk->pl[first], bbar, wk, wk->sw.dphi, n, wk->loc, wk->wm, np, dim,
+                           kc);
+    }
     return 0;
 }
 
@@ -227,19 +282,25 @@ static int cell_matrix_vci(const tf_shape *sh, const tf_lame *l, int bbar, tf_ce
     return 0;
 }
 
-int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
-                      size_t cell, const uint32_t *set, size_t m, double *kc)
+int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, const tf_lame_field *field, int bbar,
+                      tf_cell_work *wk, size_t cell, const uint32_t *set, size_t m, double *kc)
 {
     size_t dim = 3 * m;
     memset(kc, 0, dim * dim * sizeof *kc);
     if (wk->vci) {
+        if (field != NULL) {
+            snprintf(wk->sw.err, sizeof wk->sw.err,
+                     "material regions are not integrated with VCI's corrected gradients");
+            return -1;
+        }
         return cell_matrix_vci(sh, l, bbar, wk, cell, set, m, kc);
     }
     for (size_t r = 0; r < m; ++r) {
         wk->map[set[r]] = (int)r;
     }
-    int rc = sh->centre == TF_SUPPORT_CELL ? cell_matrix_cell(sh, l, bbar, wk, cell, dim, kc)
-                                           : cell_matrix_points(sh, l, bbar, wk, cell, m, kc);
+    int rc = sh->centre == TF_SUPPORT_CELL
+                 ? cell_matrix_cell(sh, l, field, bbar, wk, cell, dim, kc)
+                 : cell_matrix_points(sh, l, field, bbar, wk, cell, m, kc);
     for (size_t r = 0; r < m; ++r) {
         wk->map[set[r]] = -1;
     }

@@ -32,7 +32,16 @@ typedef struct tf_cell_work {
     tf_grad_work gw;/* VCI: gradients over the cell's set */
     double *g;      /* VCI: 3 np cap gradients */
     size_t *loc;    /* cap local indices */
+    tf_lame *pl;    /* np: each Gauss point's material, when it varies */
+    double *wm;     /* np: the weights of one material's points (0 elsewhere) */
 } tf_cell_work;
+
+/* The material at a point of a body whose material varies (material
+ * regions, problem/inclusions.h). */
+typedef struct tf_lame_field {
+    const void *data;
+    tf_lame (*at)(const void *data, const double x[3]);
+} tf_lame_field;
 
 /* Scratch for n_nodes nodes and cells of up to cap nodes, with VCI's
  * corrected gradients when vci.  Returns 0, or -1 when out of memory. */
@@ -41,9 +50,13 @@ void tf_cell_work_free(tf_cell_work *w);
 
 /* kc (3m x 3m, column major, zeroed here; the lower block triangle is
  * filled) for cell `cell` whose supports touch the m nodes set[] (ascending).
- * Returns 0, or -1 with a message in wk->sw.err (VCI: copied there from
- * wk->gw). */
-int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, int bbar, tf_cell_work *wk,
-                      size_t cell, const uint32_t *set, size_t m, double *kc);
+ * The material is l, or with field (not with VCI) each Gauss point's own:
+ * a cell whose points share one material is computed as with l; a cell an
+ * inclusion cuts sums each material's points with its own Lame parameters
+ * (with B-bar the divergence is averaged over each material's points of
+ * the cell).  Returns 0, or -1 with a message in wk->sw.err (VCI: copied
+ * there from wk->gw). */
+int tf_cell_stiffness(const tf_shape *sh, const tf_lame *l, const tf_lame_field *field, int bbar,
+                      tf_cell_work *wk, size_t cell, const uint32_t *set, size_t m, double *kc);
 
 #endif /* TF_CELL_STIFFNESS_H */

@@ -128,6 +128,11 @@ static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *c
                      "grid's tributary volumes)");
         return NULL;
     }
+    if (p->n_inclusions > 0) {
+        tf_fail(ctx, "mls-collocation: not yet: material regions (inclusions); the Galerkin "
+                     "solvers (rpim-galerkin, efg-galerkin) solve them");
+        return NULL;
+    }
     csolver *cs = calloc(1, sizeof *cs);
     if (cs == NULL) {
         tf_fail(ctx, "out of memory");

@@ -12,7 +12,9 @@
 
 #include "base/log.h"
 #include "base/peak_memory.h"
+#include "problem/inclusions.h"
 #include "solvers/assemble.h"
+#include "solvers/cell_stiffness.h"
 #include "solvers/boundary.h"
 #include "solvers/cholmod_solve.h"
 #include "solvers/constraints.h"
@@ -37,6 +39,12 @@ typedef struct galerkin {
     tf_chol *chol;
     tf_galerkin_info detail;
 } galerkin;
+
+/* The material at a Gauss point (material regions, problem/inclusions.h). */
+static tf_lame lame_at(const void *data, const double x[3])
+{
+    return tf_problem_lame_at(data, x);
+}
 
 static galerkin *of(tf_solver *s) { return (galerkin *)s; }
 static const galerkin *of_const(const tf_solver *s) { return (const galerkin *)s; }
@@ -232,9 +240,14 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     announce(g, p, ctx);
     tf_assembly_info ai;
     tf_lame l = tf_material_lame(&p->material);
+    const tf_lame_field field = {p, lame_at};
     tf_assembly_extra ex = {g->base.opts.integration == TF_INTEGRATION_VCI,
-                            g->weak ? &g->bnd : NULL};
-    int plain = !ex.vci && ex.bnd == NULL; /* today's path, bit for bit */
+                            g->weak ? &g->bnd : NULL, p->n_inclusions > 0 ? &field : NULL};
+    if (ex.vci && ex.field != NULL) {
+        return tf_fail(ctx, "not yet: material regions with VCI integration (solver.integration: "
+                            "gauss integrates them point by point)");
+    }
+    int plain = !ex.vci && ex.bnd == NULL && ex.field == NULL; /* today's path, bit for bit */
     if (tf_assemble_stiffness(ctx, &g->sh, &l, g->base.opts.volumetric == TF_VOLUMETRIC_CELL,
                               plain ? NULL : &ex, tf_ctx_threads(ctx), &g->k, &ai) != 0) {
         return -1;

@@ -257,6 +257,10 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
     double lo[3], hi[3];
+    if (p->n_inclusions > 0) {
+        return tf_fail(ctx, "not yet: material regions (inclusions) in the nonlinear solver; "
+                            "they are solved for linear elasticity by the linear Galerkin solvers");
+    }
     s->mat = p->material;
     s->bbar = o->volumetric == TF_VOLUMETRIC_CELL;
     s->vci = o->integration == TF_INTEGRATION_VCI;
@@ -274,7 +278,7 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     }
     s->ncell = tf_cells_count(&s->sh.cells);
     s->np = tf_cells_points(&s->sh.cells);
-    tf_assembly_extra ex = {s->vci, s->weak ? &s->bnd : NULL};
+    tf_assembly_extra ex = {s->vci, s->weak ? &s->bnd : NULL, NULL};
     openblas_set_num_threads(1);
     if (tf_assemble_pattern(ctx, &s->sh, &ex, tf_ctx_threads(ctx), &s->cs, &s->bp, &s->k) != 0) {
         return -1;

@@ -1,0 +1,31 @@
+/*
+ * inclusions.c — see inclusions.h.
+ */
+#include "problem/inclusions.h"
+
+int tf_inclusion_holds(const tf_region *r, const double x[3])
+{
+    if (r->kind == TF_REGION_SPHERE) {
+        double d2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            d2 += (x[a] - r->centre[a]) * (x[a] - r->centre[a]);
+        }
+        return d2 <= r->radius * r->radius;
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!(x[a] >= r->min[a] && x[a] <= r->max[a])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3])
+{
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        if (tf_inclusion_holds(&p->inclusions[k].where, x)) {
+            return tf_material_lame(&p->inclusions[k].material);
+        }
+    }
+    return tf_material_lame(&p->material);
+}
