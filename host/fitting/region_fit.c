@@ -485,6 +485,19 @@ static int fit_level(tf_ctx *ctx, tf_solver *s, const tf_problem *p, const tf_co
     return rc;
 }
 
+double tf_region_surface_coupling(const tf_region_surface *sf, const tf_region_result *res,
+                                  const tf_region_level *lv)
+{
+    size_t *pk = malloc((res->sites.n_pairs + 1) * sizeof *pk);
+    if (pk == NULL) {
+        return INFINITY;
+    }
+    const size_t np = level_pairs(&res->sites, lv, lv->check, lv->n_check, pk);
+    const double c = coupling_error(sf, &lv->law, &res->sites, pk, np);
+    free(pk);
+    return c;
+}
+
 void tf_region_surface_heldout(const tf_region_surface *sf, const tf_region_result *res,
                                const tf_region_level *lv, double *max, double *rms)
 {

@@ -120,6 +120,10 @@ void tf_region_result_free(tf_region_result *res);
  * under an envelope force, as fractions of lv's peak displacement. */
 void tf_region_surface_heldout(const tf_region_surface *sf, const tf_region_result *res,
                                const tf_region_level *lv, double *max, double *rms);
+/* A surface's two-instrument coupling error on level lv's pairs (as the
+ * level's own, region_fit.h above), a fraction of R_F. */
+double tf_region_surface_coupling(const tf_region_surface *sf, const tf_region_result *res,
+                                  const tf_region_level *lv);
 
 /* The law (P = 2) of the nx x ny sites idx (grid order) of t: K_s = C_s^-1
  * symmetrised, in v = s_u u, and the site heights in the chart c. */

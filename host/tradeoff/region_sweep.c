@@ -37,7 +37,7 @@ static int row_at(tf_ctx *ctx, const tf_problem *p, int contact, const tf_region
                                      .rank = r, .near = tmp.surface_model.n_near,
                                      .force = lv->force};
         tf_region_surface_heldout(&tmp.surface_model, res, lv, &row->surface, &row->surface_rms);
-        row->coupling = r == lv->rank ? lv->coupling : NAN; /* judged for the chosen rank */
+        row->coupling = tf_region_surface_coupling(&tmp.surface_model, res, lv);
         row->law_bytes = tf_model_table_bytes(law);
         row->surface_bytes = tf_model_table_bytes(surf);
         row->law_cycles = tf_model_cycles(law, TF_CORE_M4F).cycles;
@@ -122,10 +122,8 @@ int tf_region_sweep_markdown(const tf_region_sweep *sw, FILE *f)
                "|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sw->n; ++i) {
         const tf_region_sweep_row *r = &sw->row[i];
-        char cpl[32] = "";
-        if (!isnan(r->coupling)) {
-            snprintf(cpl, sizeof cpl, "%.3g %%", 100 * r->coupling);
-        }
+        char cpl[32];
+        snprintf(cpl, sizeof cpl, "%.3g %%", 100 * r->coupling);
         fprintf(f, "| %u × %u | %.3g mm | %u%s | %u | %.3g %% | %.3g / %.3g %% | %s | %u | %u | "
                    "%.0f | %.0f |\n",
                 r->nx, r->ny, r->h, r->rank, r->chosen ? " (chosen)" : "", r->near,
