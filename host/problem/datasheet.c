@@ -71,9 +71,13 @@ static void material(sheet *s, const tf_problem *p)
         const tf_inclusion *in = &p->inclusions[k];
         const tf_region *r = &in->where;
         put(s, "\n  inclusion %zu%s%s: ", k, in->name[0] ? " " : "", in->name);
-        if (r->kind == TF_REGION_SPHERE) {
+        if (r->kind == TF_REGION_SPHERE && r->radius > 0) {
             put(s, "sphere centre (%g, %g, %g) mm, radius %g mm", r->centre[0], r->centre[1],
                 r->centre[2], r->radius);
+        } else if (r->kind == TF_REGION_SPHERE) {
+            put(s, "ellipsoid centre (%g, %g, %g) mm, semi-axes %g, %g, %g mm along x, y, z",
+                r->centre[0], r->centre[1], r->centre[2], in->radii[0], in->radii[1],
+                in->radii[2]);
         } else {
             put(s, "box [%g, %g] x [%g, %g] x [%g, %g] mm", r->min[0], r->max[0], r->min[1],
                 r->max[1], r->min[2], r->max[2]);

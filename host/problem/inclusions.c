@@ -3,14 +3,16 @@
  */
 #include "problem/inclusions.h"
 
-int tf_inclusion_holds(const tf_region *r, const double x[3])
+int tf_inclusion_holds(const tf_inclusion *c, const double x[3])
 {
-    if (r->kind == TF_REGION_SPHERE) {
-        double d2 = 0;
+    const tf_region *r = &c->where;
+    if (r->kind == TF_REGION_SPHERE) { /* sum ((x - c) / r_a)^2 <= 1 */
+        double q = 0;
         for (int a = 0; a < 3; ++a) {
-            d2 += (x[a] - r->centre[a]) * (x[a] - r->centre[a]);
+            const double t = (x[a] - r->centre[a]) / c->radii[a];
+            q += t * t;
         }
-        return d2 <= r->radius * r->radius;
+        return q <= 1;
     }
     for (int a = 0; a < 3; ++a) {
         if (!(x[a] >= r->min[a] && x[a] <= r->max[a])) {
@@ -23,7 +25,7 @@ int tf_inclusion_holds(const tf_region *r, const double x[3])
 tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3])
 {
     for (size_t k = 0; k < p->n_inclusions; ++k) {
-        if (tf_inclusion_holds(&p->inclusions[k].where, x)) {
+        if (tf_inclusion_holds(&p->inclusions[k], x)) {
             return tf_material_lame(&p->inclusions[k].material);
         }
     }

@@ -12,8 +12,8 @@
 #include "materials/elasticity.h"
 #include "problem/problem.h"
 
-/* Whether point x lies in region r (a sphere or a box; boundary included). */
-int tf_inclusion_holds(const tf_region *r, const double x[3]);
+/* Whether point x lies in inclusion c (boundary included). */
+int tf_inclusion_holds(const tf_inclusion *c, const double x[3]);
 
 /* The Lame parameters at x (p's inclusions are linear elastic). */
 tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3]);

@@ -99,14 +99,15 @@ typedef struct tf_region {
     double radius;    /* SPHERE, NEAR, mm */
 } tf_region;
 
-/* A material region (an inclusion: a nodule, a vessel): a sphere or a box
- * of the body with its own material; where inclusions overlap the first
+/* A material region (an inclusion: a nodule, a vessel): a ball, an
+ * ellipsoid (axes along x, y, z) or a box of the body with its own material; where inclusions overlap the first
  * listed holds.  Linear elasticity only (inclusions.h). */
 #define TF_INCLUSIONS_MAX 8
 #define TF_INCLUSION_NAME_MAX 32
 typedef struct tf_inclusion {
     char name[TF_INCLUSION_NAME_MAX];
-    tf_region where;      /* TF_REGION_SPHERE or TF_REGION_BOX */
+    tf_region where;      /* TF_REGION_SPHERE (an ellipsoid: radii) or TF_REGION_BOX */
+    double radii[3];      /* SPHERE: the semi-axes along x, y, z, mm (a ball: all radius) */
     tf_material material;
 } tf_inclusion;
 

@@ -240,19 +240,26 @@ static int inclusions(const sd_scene *doc, tf_problem *s, sd_issue *is)
     for (unsigned k = 0; k < doc->inclusions_count; ++k) {
         const sd_inclusion *d = &doc->inclusions[k];
         tf_inclusion *inc = &s->inclusions[k];
-        if ((d->sphere != NULL) == (d->box != NULL)) {
+        if ((d->sphere != NULL) + (d->ellipsoid != NULL) + (d->box != NULL) != 1) {
             return sd_fail(is, at(p, sizeof p, "inclusions", k, NULL),
-                           "give exactly one of sphere or box");
+                           "give exactly one of sphere, ellipsoid or box");
         }
         snprintf(inc->name, sizeof inc->name, "%s", d->name ? d->name : "");
-        if (d->sphere) {
+        if (d->sphere || d->ellipsoid) {
             inc->where.kind = TF_REGION_SPHERE;
-            memcpy(inc->where.centre, d->sphere->centre, sizeof inc->where.centre);
-            inc->where.radius = d->sphere->radius;
-            if (!finite_all(inc->where.centre, 3) || !(inc->where.radius > 0) ||
-                !isfinite(inc->where.radius)) {
-                return sd_fail(is, at(p, sizeof p, "inclusions", k, "sphere"),
-                               "the centre must be finite and the radius a positive number of mm");
+            memcpy(inc->where.centre, d->sphere ? d->sphere->centre : d->ellipsoid->centre,
+                   sizeof inc->where.centre);
+            for (int a = 0; a < 3; ++a) {
+                inc->radii[a] = d->sphere ? d->sphere->radius : d->ellipsoid->radii[a];
+            }
+            inc->where.radius = d->sphere ? d->sphere->radius : 0;
+            const int ok = finite_all(inc->where.centre, 3) && finite_all(inc->radii, 3) &&
+                           inc->radii[0] > 0 && inc->radii[1] > 0 && inc->radii[2] > 0;
+            if (!ok) {
+                return sd_fail(is, at(p, sizeof p, "inclusions", k, d->sphere ? "sphere" : "ellipsoid"),
+                               "the centre must be finite and the %s",
+                               d->sphere ? "radius a positive number of mm"
+                                         : "radii positive numbers of mm");
             }
         } else {
             inc->where.kind = TF_REGION_BOX;

@@ -105,6 +105,12 @@ static const cyaml_schema_field_t plane_fields[] = {
     CYAML_FIELD_END,
 };
 
+static const cyaml_schema_field_t ellipsoid_fields[] = {
+    CYAML_FIELD_SEQUENCE_FIXED("centre", CYAML_FLAG_DEFAULT, sd_ellipsoid, centre, &real, 3),
+    CYAML_FIELD_SEQUENCE_FIXED("radii", CYAML_FLAG_DEFAULT, sd_ellipsoid, radii, &real, 3),
+    CYAML_FIELD_END,
+};
+
 static const cyaml_schema_field_t sphere_fields[] = {
     CYAML_FIELD_SEQUENCE_FIXED("centre", CYAML_FLAG_DEFAULT, sd_sphere, centre, &real, 3),
     CYAML_FIELD_FLOAT("radius", CYAML_FLAG_DEFAULT, sd_sphere, radius),
@@ -403,6 +409,7 @@ int sd_schema_init(sd_schema *s)
     const cyaml_schema_field_t inclusion[] = {
         CYAML_FIELD_STRING_PTR("name", OPT, sd_inclusion, name, 1, TF_INCLUSION_NAME_MAX - 1),
         CYAML_FIELD_MAPPING_PTR("sphere", OPT, sd_inclusion, sphere, sphere_fields),
+        CYAML_FIELD_MAPPING_PTR("ellipsoid", OPT, sd_inclusion, ellipsoid, ellipsoid_fields),
         CYAML_FIELD_MAPPING_PTR("box", OPT, sd_inclusion, box, box_fields),
         CYAML_FIELD_MAPPING("material", CYAML_FLAG_DEFAULT, sd_inclusion, material, s->material),
         CYAML_FIELD_END,

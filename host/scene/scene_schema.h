@@ -90,11 +90,17 @@ typedef struct sd_site {
     double radius;
 } sd_site;
 
-/* A material region: a part of the body (a sphere or a box) with its own
- * material. */
+/* A material region: a part of the body (a sphere, an ellipsoid or a box)
+ * with its own material. */
+typedef struct sd_ellipsoid {
+    double centre[3];
+    double radii[3];
+} sd_ellipsoid;
+
 typedef struct sd_inclusion {
     char *name;
     sd_sphere *sphere;
+    sd_ellipsoid *ellipsoid;
     sd_box *box;
     sd_material material;
 } sd_inclusion;
@@ -302,7 +308,7 @@ typedef struct sd_schema {
     cyaml_schema_value_t root;
     cyaml_schema_field_t scene[SD_SCENE_KEYS + 1];
     cyaml_schema_field_t material[SD_MATERIAL_KEYS + 2]; /* law, the keys, the end */
-    cyaml_schema_field_t inclusion[5];  /* name, sphere, box, material, the end */
+    cyaml_schema_field_t inclusion[6];  /* name, sphere, ellipsoid, box, material, the end */
     cyaml_schema_value_t inclusion_entry;
 } sd_schema;
 

@@ -33,6 +33,26 @@ expect 0 "the bar without its inclusion's stiffness" -- "$tool" -q solve "$bar" 
     --set inclusions.0.material.E=1 --out "$tmp/u.csv"
 awk -F, 'NR > 1 && $2 == 40 { s += $5; n++ } END { exit !(s / n > 0.39 && s / n < 0.41) }' "$tmp/u.csv" ||
     bad "a uniform bar's end is not at 0.4 mm"
+# an ellipsoid holding the whole bar: the bar is uniformly the stiff material
+# (end at 40 / (10 x 100) = 0.04 mm); its semi-axes enter one by one
+cat >"$tmp/e.yaml" <<YAML
+$(sed '/^inclusions:/,/^fixed:/{/^fixed:/!d}' "$bar")
+inclusions:
+  - ellipsoid: {centre: [20, 5, 5], radii: [30, 9, 9]}
+    material: {E: 10.0, nu: 0.0}
+YAML
+expect 0 "the bar in an ellipsoid" -- "$tool" -q solve "$tmp/e.yaml" --out "$tmp/u.csv"
+awk -F, 'NR > 1 && $2 == 40 { s += $5; n++ } END { exit !(s / n > 0.0396 && s / n < 0.0404) }' "$tmp/u.csv" ||
+    bad "the bar inside an ellipsoid is not uniformly stiff"
+cat >"$tmp/e2.yaml" <<YAML
+$(sed '/^inclusions:/,/^fixed:/{/^fixed:/!d}' "$bar")
+inclusions:
+  - ellipsoid: {centre: [20, 5, 5], radii: [30, 9, 4]}
+    material: {E: 10.0, nu: 0.0}
+YAML
+expect 0 "an ellipsoid thinner than the bar" -- "$tool" -q solve "$tmp/e2.yaml" --out "$tmp/u2.csv"
+awk -F, 'NR > 1 && $2 == 40 { s += $5; n++ } END { exit !(s / n > 0.05) }' "$tmp/u2.csv" ||
+    bad "an ellipsoid 4 mm thick in z stiffens the whole bar"
 # the datasheet names it
 expect 0 "a header's datasheet lists the inclusion" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/b.h" \
     --no-discretisation --set 'inclusions.0.sphere.centre=24,24,3' --set inclusions.0.sphere.radius=2 \
@@ -44,7 +64,7 @@ expect 2 "a nonlinear inclusion" -- "$tool" -q solve "$bar" --set inclusions.0.m
 says "a nonlinear inclusion" "inclusions.0.material.law: not yet: material regions are solved for linear elasticity only"
 expect 2 "an inclusion with two shapes" -- "$tool" -q solve "$bar" --set 'inclusions.0.sphere.centre=1,2,3' \
     --set inclusions.0.sphere.radius=1
-says "an inclusion with two shapes" "inclusions.0: give exactly one of sphere or box"
+says "an inclusion with two shapes" "inclusions.0: give exactly one of sphere, ellipsoid or box"
 expect 2 "a sphere of no radius" -- "$tool" -q solve coeffs/block48.yaml \
     --set 'inclusions.0.sphere.centre=24,24,3' --set inclusions.0.sphere.radius=0 \
     --set inclusions.0.material.E=1 --set inclusions.0.material.nu=0.3
