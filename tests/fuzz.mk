@@ -34,7 +34,8 @@ FUZZ_SAN := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=al
 FUZZ_HOST_CFLAGS := $(filter-out -fno-tree-slp-vectorize,$(HOST_CFLAGS)) -O1 -g $(FUZZ_SAN)
 FUZZ_TARGETS := scene set history cuts mesh
 FUZZ_SEEDS_scene := coeffs/block48.yaml tests/solver/block48_seed.yaml coeffs/cantilever.yaml \
-                    tests/solver/patch.yaml $(wildcard tests/fit/scenes/*.yaml)
+                    tests/solver/patch.yaml tests/solver/inclusion_bar.yaml \
+                    $(wildcard tests/fit/scenes/*.yaml)
 $(foreach t,set history cuts mesh,$(eval FUZZ_SEEDS_$(t) := $(wildcard tests/fuzz/seeds/$(t)/*)))
 FUZZ_MAX_LEN = $(if $(filter mesh,$(1)),8192,4096)
 DEBS_CHECK += libclang-rt-14-dev libomp-dev
