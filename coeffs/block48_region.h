@@ -17,7 +17,7 @@
  * Models (tfit_model objects; evaluation order in docs/header-format.md):
  *   tfit_block48_region_surface: region_surface p=1 r=11 sites=17x17 site-modes near=9, 121 output points, contact force [N] at the proxy site -> displacement [mm]
  *       5473 add, 6501 mul, 0 div per evaluation; 241872 table bytes
- *       35553 instructions; Cortex-M4F <= 52321 cycles (311.43 us at 168 MHz), Cortex-M7 ~38388 (79.97 us at 480 MHz)
+ *       35444 instructions; Cortex-M4F <= 52222 cycles (310.85 us at 168 MHz), Cortex-M7 ~38338 (79.87 us at 480 MHz)
  *       model 'block48_region_surface': no Q31 form for the region_surface family
  *       held-out error over 256 cases: max 0.107 mm, rms 0.094 mm
  *       region 'top': target met at spacing 2.4 x 2.4 mm (17 x 17 sites): force 1 % <= 1 %, surface 4.5 % <= 5 %, coupling 26 % (not a target) at rank 11
@@ -68,12 +68,12 @@
 #define TFIT_BLOCK48_REGION_SURFACE_OPS_DIV 0
 #define TFIT_BLOCK48_REGION_SURFACE_OPS 11974
 #define TFIT_BLOCK48_REGION_SURFACE_TABLE_BYTES 241872
-#define TFIT_BLOCK48_REGION_SURFACE_INSNS_ARMV7EM 35553 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M4F 52321u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M4F_MIN 42912u
-#define TFIT_BLOCK48_REGION_SURFACE_US_M4F_168MHZ 311.43
-#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M7 38388u /* estimate, +-30 % */
-#define TFIT_BLOCK48_REGION_SURFACE_US_M7_480MHZ 79.97
+#define TFIT_BLOCK48_REGION_SURFACE_INSNS_ARMV7EM 35444 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M4F 52222u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M4F_MIN 42805u
+#define TFIT_BLOCK48_REGION_SURFACE_US_M4F_168MHZ 310.85
+#define TFIT_BLOCK48_REGION_SURFACE_CYCLES_M7 38338u /* estimate, +-30 % */
+#define TFIT_BLOCK48_REGION_SURFACE_US_M7_480MHZ 79.87
 #define TFIT_BLOCK48_REGION_SURFACE_HELDOUT_CASES 256
 #define TFIT_BLOCK48_REGION_SURFACE_HELDOUT_MAX_MM 0.10681
 #define TFIT_BLOCK48_REGION_SURFACE_HELDOUT_RMS_MM 0.094047

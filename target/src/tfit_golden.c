@@ -59,10 +59,12 @@ uint32_t tfit_golden_run(const tfit_golden *gv, float *scratch)
 
 static uint32_t pair_ticks(const tfit_golden_pair *g)
 {
-    float state[2u * TFIT_REGION_STATE_WORDS], tip[6], force[6];
+    float state[2u * TFIT_REGION_STATE_WORDS];
+    float tip[6];
+    float force[6];
     uint32_t mismatches = 0u;
-    (void)tfit_region_reset(g->law, state);
-    (void)tfit_region_reset(g->law, state + TFIT_REGION_STATE_WORDS);
+    (void)tfit_region_reset(g->law, &state[0]);
+    (void)tfit_region_reset(g->law, &state[TFIT_REGION_STATE_WORDS]);
     for (uint32_t v = 0u; v < g->n_tick; ++v) {
         for (uint32_t i = 0u; i < 6u; ++i) {
             tip[i] = tfit_float(g->tip[6u * v + i]);
@@ -79,7 +81,8 @@ static uint32_t pair_ticks(const tfit_golden_pair *g)
 static uint32_t surface_pairs(const tfit_golden_pair *g, float *scratch)
 {
     const uint32_t n = 3u * g->surf->n_out;
-    float state[2u * TFIT_REGION_STATE_WORDS], force[6];
+    float state[2u * TFIT_REGION_STATE_WORDS];
+    float force[6];
     uint32_t mismatches = 0u;
     for (uint32_t v = 0u; v < g->n_surf; ++v) {
         for (uint32_t i = 0u; i < 6u; ++i) {

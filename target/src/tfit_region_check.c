@@ -139,11 +139,17 @@ static int near_ok(const tfit_model *m, const float *table)
 {
     const uint32_t count = (m->dims[0] + 2u) * (m->dims[1] + 2u) * tfit_region_near_count(m);
     int ok = 1;
-    for (uint32_t e = 0u; e < count; ++e, table += TFIT_REGION_NEAR_FLOATS) {
-        const float j = table[0];
-        ok &= between(j, 0.0f, (float)(m->n_out - 1u)) && (float)(uint32_t)j == j;
+    for (uint32_t e = 0u; e < count; ++e) {
+        const float *entry = &table[e * TFIT_REGION_NEAR_FLOATS];
+        /* the conversion is defined for an entry in range only (||: not evaluated else) */
+        if (!between(entry[0], 0.0f, (float)(m->n_out - 1u)) ||
+            ((float)(uint32_t)entry[0] != entry[0])) {
+            ok = 0;
+        }
         for (uint32_t i = 1u; i < TFIT_REGION_NEAR_FLOATS; ++i) {
-            ok &= within(fabs_(table[i]), 0x1p80f);
+            if (!within(fabs_(entry[i]), 0x1p80f)) {
+                ok = 0;
+            }
         }
     }
     return ok;

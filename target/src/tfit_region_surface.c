@@ -62,19 +62,20 @@ void tfit_region_near(const tfit_model *m, const tfit_region_site *at, const flo
     const uint32_t points = (m->dims[0] + 2u) * (m->dims[1] + 2u);
     const uint32_t stride = m->dims[2] * TFIT_REGION_SURFACE_TERMS(m->dims[3]) +
                             3u * m->dims[2] * m->dims[4];
-    const float *table = m->coef + TFIT_REGION_SURFACE_CTRL + points * stride;
+    const float *table = &m->coef[TFIT_REGION_SURFACE_CTRL + (points * stride)];
     for (uint32_t l = 0u; l < 4u; ++l) {
         for (uint32_t k = 0u; k < 4u; ++k) {
             const float w = at->bb[l] * at->ba[k];
-            const float *e = table + (at->first + l * at->row + k) * n * TFIT_REGION_NEAR_FLOATS;
-            for (uint32_t q = 0u; q < n; ++q, e += TFIT_REGION_NEAR_FLOATS) {
+            const uint32_t block = (at->first + (l * at->row) + k) * n;
+            for (uint32_t q = 0u; q < n; ++q) {
+                const float *e = &table[(block + q) * TFIT_REGION_NEAR_FLOATS];
                 const uint32_t j = (uint32_t)e[0] - first;
                 const uint32_t in = tfit_mask(j < count);
-                float *o = out + 3u * (j & in);
+                const uint32_t o = 3u * (j & in);
                 for (uint32_t i = 0u; i < 3u; ++i) {
-                    const float *d = e + 1u + 3u * i;
-                    const float v = w * ((d[0] * f[0] + d[1] * f[1]) + d[2] * f[2]);
-                    o[i] = tfit_select(in, o[i] + tfit_masked(v, keep), o[i]);
+                    const uint32_t d = 1u + (3u * i);
+                    const float v = w * (((e[d] * f[0]) + (e[d + 1u] * f[1])) + (e[d + 2u] * f[2]));
+                    out[o + i] = tfit_select(in, out[o + i] + tfit_masked(v, keep), out[o + i]);
                 }
             }
         }

@@ -99,16 +99,16 @@ static const tf_block blocks[N_BLOCKS] = {
     [ROWS_MODE] = {"tfit_region_rows", 2, 2,
                    TF_SAME("alu=1 fldm=4 fwords=4 fadd=3 fmul=3 branch=1")},
     [NEAR_PATH] = {"tfit_region_near", 0, 0,
-                  {"alu=34 mul=7 mla=1 load=10 store=9 ldm=3 ldm_pc=1 stm=1 words=24 branch=1 "
+                  {"alu=32 mul=7 mla=1 load=11 store=8 ldm=3 ldm_pc=1 stm=2 words=26 branch=1 "
                    "nbranch=1",
-                   "alu=33 mul=7 mla=1 load=10 store=9 ldm=3 ldm_pc=1 stm=1 words=24 branch=1 "
+                   "alu=30 mul=7 mla=1 load=11 store=8 ldm=3 ldm_pc=1 stm=2 words=26 branch=1 "
                    "nbranch=1"}},
-    [NEAR_ROW] = {"tfit_region_near", 1, 1, TF_SAME("alu=4 load=4 store=1 branch=1")},
+    [NEAR_ROW] = {"tfit_region_near", 1, 1, TF_SAME("alu=7 load=6 store=1 branch=1")},
     [NEAR_POINT] = {"tfit_region_near", 2, 2,
-                    TF_SAME("alu=6 load=3 ldm=1 stm=1 words=4 fload=1 fldm=1 fwords=1 fmul=1 "
-                            "branch=2")},
+                    TF_SAME("alu=7 load=2 store=1 ldm=1 stm=1 words=4 fload=1 fldm=1 fwords=1 "
+                            "fmul=1 branch=2")},
     [NEAR_ENTRY] = {"tfit_region_near", 3, 3,
-                    TF_SAME("alu=13 load=1 fload=1 fother=1 fmov=1 branch=1")},
+                    TF_SAME("alu=12 load=1 fload=1 fother=1 fmov=1 branch=1")},
     [NEAR_COMP] = {"tfit_region_near", 4, 4,
                    TF_SAME("alu=6 load=1 store=1 fload=7 fadd=3 fmul=4 fmov=3 branch=1")},
 };
