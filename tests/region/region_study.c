@@ -478,10 +478,13 @@ int main(int argc, char **argv)
     if (o.has_bound) {
         bad = !(100 * e.force <= o.bound[0]) || !(100 * e.surface <= o.bound[1]) ||
               (o.pairs > 0 && !(100 * cpl <= o.bound[2]));
-        printf("%s: held-out force %.3f %% (<= %g), surface %.2f %% (<= %g), two instruments "
-               "%.3f %% (<= %g)\n",
+        char two[64] = "two instruments not judged (no pairs)";
+        if (o.pairs > 0) {
+            snprintf(two, sizeof two, "two instruments %.3f %% (<= %g)", 100 * cpl, o.bound[2]);
+        }
+        printf("%s: held-out force %.3f %% (<= %g), surface %.2f %% (<= %g), %s\n",
                bad ? "FAILED" : "within bounds", 100 * e.force, o.bound[0], 100 * e.surface,
-               o.bound[1], 100 * cpl, o.bound[2]);
+               o.bound[1], two);
     }
     tf_region_sites_free(&held);
     tf_region_result_free(&res);
