@@ -49,9 +49,11 @@ int tf_volume_mesh_check_options(const tf_surface *s, const tf_mesh_options *o, 
     return TF_GEOM_OK;
 }
 
-/* The surface as gmsh's discrete surface SURFACE_TAG: node tag = vertex
- * index + 1, triangle tag = triangle index + 1. */
-static int add_surface(const tf_surface *s)
+/* The surface as gmsh's discrete surface `tag`: node tag = vertex index +
+ * first + 1, triangle tag = triangle index + first_tri + 1 (the body's
+ * surface is tag SURFACE_TAG with first = first_tri = 0; inner surfaces
+ * follow with their own tags and numbers). */
+static int add_surface(const tf_surface *s, int tag, size_t first, size_t first_tri)
 {
     int ierr = 0;
     size_t *ntag = malloc((s->nv + 1) * sizeof *ntag);
@@ -59,21 +61,20 @@ static int add_surface(const tf_surface *s)
     size_t *enode = malloc((3 * s->nt + 1) * sizeof *enode);
     if (ntag && etag && enode) {
         for (size_t i = 0; i < s->nv; ++i) {
-            ntag[i] = i + 1;
+            ntag[i] = first + i + 1;
         }
         for (size_t t = 0; t < s->nt; ++t) {
-            etag[t] = t + 1;
+            etag[t] = first_tri + t + 1;
             for (int k = 0; k < 3; ++k) {
-                enode[3 * t + k] = s->tri[3 * t + k] + 1;
+                enode[3 * t + k] = first + s->tri[3 * t + k] + 1;
             }
         }
-        gmshModelAddDiscreteEntity(2, SURFACE_TAG, NULL, 0, &ierr);
+        gmshModelAddDiscreteEntity(2, tag, NULL, 0, &ierr);
         if (ierr == 0) {
-            gmshModelMeshAddNodes(2, SURFACE_TAG, ntag, s->nv, s->xyz, 3 * s->nv, NULL, 0,
-                                  &ierr);
+            gmshModelMeshAddNodes(2, tag, ntag, s->nv, s->xyz, 3 * s->nv, NULL, 0, &ierr);
         }
         if (ierr == 0) {
-            gmshModelMeshAddElementsByType(SURFACE_TAG, GMSH_TRIANGLE, etag, s->nt, enode,
+            gmshModelMeshAddElementsByType(tag, GMSH_TRIANGLE, etag, s->nt, enode,
                                            3 * s->nt, &ierr);
         }
     } else {
@@ -85,22 +86,70 @@ static int add_surface(const tf_surface *s)
     return ierr;
 }
 
-/* The volume bounded by the surface (geo kernel: surface loop, volume). */
-static int add_volume(void)
+/* The volume bounded by the surface (geo kernel: surface loop, volume),
+ * volume tag 1; with inner surfaces, each is a hole of volume 1 and the
+ * boundary of volume k + 2 (surface tag SURFACE_TAG + k + 1). */
+static int add_volumes(size_t n_inner)
 {
-    int ierr = 0, surface = SURFACE_TAG;
-    int loop = gmshModelGeoAddSurfaceLoop(&surface, 1, -1, &ierr);
+    int ierr = 0, loops[1 + TF_MESH_MAX_INNER];
+    for (size_t k = 0; ierr == 0 && k <= n_inner; ++k) {
+        int surface = SURFACE_TAG + (int)k;
+        loops[k] = gmshModelGeoAddSurfaceLoop(&surface, 1, -1, &ierr);
+    }
     if (ierr == 0) {
-        gmshModelGeoAddVolume(&loop, 1, -1, &ierr);
+        gmshModelGeoAddVolume(loops, 1 + n_inner, 1, &ierr);
+    }
+    for (size_t k = 1; ierr == 0 && k <= n_inner; ++k) {
+        gmshModelGeoAddVolume(&loops[k], 1, (int)k + 1, &ierr);
     }
     return ierr;
+}
+
+/* Each inner surface's size: gmsh's Threshold of the distance to its
+ * ball's centre (a MathEval field): the inner spacing up to the ball's
+ * radius, rising linearly to `spacing` one radius further out; the
+ * background is the least of these and the body's field. */
+static int add_inner_fields(int field, const tf_mesh_inner *inner, size_t n_inner,
+                            double spacing)
+{
+    int ierr = 0, failed = 0, fields[1 + TF_MESH_MAX_INNER] = {field};
+    char text[256];
+    for (size_t k = 0; k < n_inner; ++k) {
+        const tf_mesh_inner *c = &inner[k];
+        int distance = gmshModelMeshFieldAdd("MathEval", -1, &ierr);
+        failed |= ierr;
+        snprintf(text, sizeof text, "Sqrt((x-(%.17g))^2+(y-(%.17g))^2+(z-(%.17g))^2)",
+                 c->centre[0], c->centre[1], c->centre[2]);
+        gmshModelMeshFieldSetString(distance, "F", text, &ierr);
+        failed |= ierr;
+        fields[k + 1] = gmshModelMeshFieldAdd("Threshold", -1, &ierr);
+        failed |= ierr;
+        const char *name[5] = {"InField", "SizeMin", "SizeMax", "DistMin", "DistMax"};
+        double value[5] = {distance, c->spacing, spacing, c->radius, 2 * c->radius};
+        for (int j = 0; j < 5; ++j) {
+            gmshModelMeshFieldSetNumber(fields[k + 1], name[j], value[j], &ierr);
+            failed |= ierr;
+        }
+    }
+    if (n_inner == 0) {
+        return field;
+    }
+    int min = gmshModelMeshFieldAdd("Min", -1, &ierr);
+    failed |= ierr;
+    double list[1 + TF_MESH_MAX_INNER];
+    for (size_t k = 0; k <= n_inner; ++k) {
+        list[k] = fields[k];
+    }
+    gmshModelMeshFieldSetNumbers(min, "FieldsList", list, 1 + n_inner, &ierr);
+    return failed | ierr ? -1 : min;
 }
 
 /* Background size: the constant spacing (MathEval), or gmsh's Threshold of
  * the Distance to a point: grade_spacing up to grade_radius, rising
  * linearly to spacing at grade_ramp.  The point is a free geo point; its
  * node belongs to no tetrahedron and is not collected. */
-static int add_size_field(const tf_mesh_options *o)
+static int add_size_field(const tf_mesh_options *o, const tf_mesh_inner *inner,
+                          size_t n_inner)
 {
     int ierr = 0, failed = 0, field;
     char text[64];
@@ -127,6 +176,10 @@ static int add_size_field(const tf_mesh_options *o)
             failed |= ierr;
         }
     }
+    field = failed ? -1 : add_inner_fields(field, inner, n_inner, o->spacing);
+    if (field < 0) {
+        return -1;
+    }
     gmshModelMeshFieldSetAsBackgroundMesh(field, &ierr);
     return failed | ierr;
 }
@@ -146,13 +199,23 @@ static void set_options(void)
     gmshOptionSetNumber("Mesh.Renumber", 0, &ierr);
 }
 
-int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o)
+int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o,
+                         const tf_mesh_inner *inner, size_t n_inner)
 {
+    if (n_inner > TF_MESH_MAX_INNER) {
+        return -1;
+    }
     int ierr = 0;
     gmshModelAdd("tissuefit", &ierr);
-    ierr = ierr ? ierr : add_surface(s);
-    ierr = ierr ? ierr : add_volume();
-    ierr = ierr ? ierr : add_size_field(o);
+    ierr = ierr ? ierr : add_surface(s, SURFACE_TAG, 0, 0);
+    size_t first = s->nv, first_tri = s->nt;
+    for (size_t k = 0; ierr == 0 && k < n_inner; ++k) {
+        ierr = add_surface(inner[k].surface, SURFACE_TAG + (int)k + 1, first, first_tri);
+        first += inner[k].surface->nv;
+        first_tri += inner[k].surface->nt;
+    }
+    ierr = ierr ? ierr : add_volumes(n_inner);
+    ierr = ierr ? ierr : add_size_field(o, inner, n_inner);
     if (ierr == 0) {
         gmshModelGeoSynchronize(&ierr);
     }
@@ -272,7 +335,7 @@ int tf_volume_mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t,
         return rc;
     }
     tf_gmsh_begin();
-    if (tf_volume_mesh_model(s, o) != 0) {
+    if (tf_volume_mesh_model(s, o, NULL, 0) != 0) {
         rc = tf_gmsh_fail(m, TF_GEOM_FAILED, "gmsh could not mesh the volume");
     } else {
         rc = collect(s, t, m);

@@ -28,6 +28,18 @@ typedef struct tf_mesh_options {
     double grade_ramp;    /* distance at which the spacing is back to `spacing`, mm */
 } tf_mesh_options;
 
+/* A closed surface inside the body that a mesh conforms to (a material
+ * region's boundary, volume_mesh_tet10.h): it bounds a volume of its own
+ * and is a hole of the body's.  Inner surfaces must not touch each other
+ * or the body's surface. */
+#define TF_MESH_MAX_INNER 8
+typedef struct tf_mesh_inner {
+    const tf_surface *surface; /* counter-clockwise seen from outside */
+    double centre[3], radius;  /* a ball holding it, mm */
+    double spacing;            /* mesh size within the ball, rising linearly to the
+                                  body's spacing one radius further out, mm */
+} tf_mesh_inner;
+
 /* Largest number of tetrahedra a spacing may ask for (an estimate from the
  * volume, checked before meshing). */
 #define TF_MESH_MAX_TETS 20000000.0
@@ -40,9 +52,11 @@ int tf_volume_mesh(const tf_surface *s, const tf_mesh_options *o, tf_tetmesh *t,
 
 /* The two steps of tf_volume_mesh that others reuse (volume_mesh_tet10.h):
  * the options' check (TF_GEOM_OK or TF_GEOM_BAD_INPUT with m->error), and
- * the model built and meshed in the current gmsh session (0, or gmsh's
- * error code). */
+ * the model built and meshed in the current gmsh session, conforming to
+ * the inner surfaces (volume 1 the body, volume k + 2 inner surface k; 0,
+ * or gmsh's error code). */
 int tf_volume_mesh_check_options(const tf_surface *s, const tf_mesh_options *o, tf_geom_msg *m);
-int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o);
+int tf_volume_mesh_model(const tf_surface *s, const tf_mesh_options *o,
+                         const tf_mesh_inner *inner, size_t n_inner);
 
 #endif /* TF_VOLUME_MESH_H */

@@ -21,6 +21,7 @@ void tf_tet10_mesh_free(tf_tet10_mesh *q)
     free(q->xyz);
     free(q->tet);
     free(q->vertex_node);
+    free(q->region);
     memset(q, 0, sizeof *q);
 }
 
@@ -94,51 +95,76 @@ static void reorder(const tf_tet10_mesh *q, const size_t *g, size_t *out)
     }
 }
 
-static int collect(const tf_surface *s, tf_tet10_mesh *q, tf_geom_msg *m)
+/* The 10-node tetrahedra of volume `tag` appended to q (node tags through
+ * index), region[e] = region. */
+static int collect_volume(tf_tet10_mesh *q, int tag, int region, const size_t *index)
 {
     int ierr = 0;
-    size_t *ntag = NULL, nnode = 0, ncoord = 0, npar = 0, *etag = NULL, ne = 0, *en = NULL,
-           nen = 0;
+    size_t *etag = NULL, ne = 0, *en = NULL, nen = 0;
+    gmshModelMeshGetElementsByType(GMSH_TET10, &etag, &ne, &en, &nen, tag, 0, 1, &ierr);
+    size_t first = q->ntet, n = nen / 10;
+    size_t *tet = ierr ? NULL : realloc(q->tet, (10 * (first + n) + 1) * sizeof *tet);
+    int *reg = tet ? realloc(q->region, (first + n + 1) * sizeof *reg) : NULL;
+    if (tet) {
+        q->tet = tet;
+    }
+    if (reg) {
+        q->region = reg;
+        for (size_t e = 0; e < n; ++e) {
+            size_t g[10];
+            for (int k = 0; k < 10; ++k) {
+                g[k] = index[en[10 * e + (size_t)k]];
+            }
+            reorder(q, g, q->tet + 10 * (first + e));
+            q->region[first + e] = region;
+        }
+        q->ntet += n;
+    }
+    gmshFree(etag);
+    gmshFree(en);
+    return reg == NULL;
+}
+
+static int collect(const tf_surface *s, size_t n_inner, tf_tet10_mesh *q, tf_geom_msg *m)
+{
+    int ierr = 0;
+    size_t *ntag = NULL, nnode = 0, ncoord = 0, npar = 0;
     double *coord = NULL, *par = NULL;
     gmshModelMeshGetNodes(&ntag, &nnode, &coord, &ncoord, &par, &npar, -1, -1, 0, 0, &ierr);
-    if (ierr == 0) {
-        gmshModelMeshGetElementsByType(GMSH_TET10, &etag, &ne, &en, &nen, -1, 0, 1, &ierr);
-    }
     size_t maxtag = 0;
     for (size_t k = 0; k < nnode; ++k) {
         maxtag = ntag[k] > maxtag ? ntag[k] : maxtag;
     }
     size_t *index = malloc((maxtag + 1) * sizeof *index);
     q->nn = nnode;
-    q->ntet = nen / 10;
     q->xyz = malloc((3 * nnode + 1) * sizeof *q->xyz);
-    q->tet = malloc((nen + 1) * sizeof *q->tet);
     int rc = ierr ? tf_gmsh_fail(m, TF_GEOM_FAILED, "reading gmsh's second-order mesh")
-             : !index || !q->xyz || !q->tet ? tf_geom_fail(m, TF_GEOM_FAILED, "out of memory")
-             : q->ntet == 0 ? tf_geom_fail(m, TF_GEOM_FAILED, "gmsh made no 10-node tetrahedra")
-                            : TF_GEOM_OK;
+             : !index || !q->xyz ? tf_geom_fail(m, TF_GEOM_FAILED, "out of memory")
+                                 : TF_GEOM_OK;
     for (size_t k = 0; rc == TF_GEOM_OK && k < nnode; ++k) {
         index[ntag[k]] = k;
         memcpy(q->xyz + 3 * k, coord + 3 * k, 3 * sizeof *q->xyz);
     }
-    for (size_t e = 0; rc == TF_GEOM_OK && e < q->ntet; ++e) {
-        size_t g[10];
-        for (int k = 0; k < 10; ++k) {
-            g[k] = index[en[10 * e + (size_t)k]];
+    /* volume 1 is the body (region 0), volume k + 2 inner surface k */
+    for (size_t v = 0; rc == TF_GEOM_OK && v <= n_inner; ++v) {
+        size_t before = q->ntet;
+        if (collect_volume(q, (int)v + 1, (int)v, index) != 0) {
+            rc = tf_gmsh_fail(m, TF_GEOM_FAILED, "reading gmsh's 10-node tetrahedra");
+        } else if (q->ntet == before) {
+            rc = tf_geom_fail(m, TF_GEOM_FAILED, "gmsh made no 10-node tetrahedra in volume %zu",
+                              v + 1);
         }
-        reorder(q, g, q->tet + 10 * e);
     }
     rc = rc ? rc : match_vertices(s, q, m);
     free(index);
     gmshFree(ntag);
     gmshFree(coord);
     gmshFree(par);
-    gmshFree(etag);
-    gmshFree(en);
     return rc;
 }
 
-int tf_volume_mesh_tet10(const tf_surface *s, const tf_mesh_options *o, unsigned refine,
+int tf_volume_mesh_tet10(const tf_surface *s, const tf_mesh_options *o,
+                         const tf_mesh_inner *inner, size_t n_inner, unsigned refine,
                          tf_tet10_mesh *q, tf_geom_msg *m)
 {
     memset(q, 0, sizeof *q);
@@ -147,7 +173,7 @@ int tf_volume_mesh_tet10(const tf_surface *s, const tf_mesh_options *o, unsigned
         return rc;
     }
     tf_gmsh_begin();
-    int ierr = tf_volume_mesh_model(s, o);
+    int ierr = tf_volume_mesh_model(s, o, inner, n_inner);
     for (unsigned k = 0; ierr == 0 && k < refine; ++k) {
         gmshModelMeshRefine(&ierr);
     }
@@ -155,7 +181,7 @@ int tf_volume_mesh_tet10(const tf_surface *s, const tf_mesh_options *o, unsigned
         gmshModelMeshSetOrder(2, &ierr);
     }
     rc = ierr ? tf_gmsh_fail(m, TF_GEOM_FAILED, "gmsh could not mesh, refine or raise the order")
-              : collect(s, q, m);
+              : collect(s, n_inner, q, m);
     tf_gmsh_end();
     if (rc) {
         tf_tet10_mesh_free(q);

@@ -1,10 +1,12 @@
 /*
  * organ_compare.c — an organ's displacements against the CalculiX
- * reference (issue 15 acceptance 1, docs/validation.md §organs).
+ * reference (docs/validation.md §14, and §18 for material regions).
  *
  *   organ_compare REFERENCE.csv SCENE [BOUND] [--set KEY=VALUE]...
  *                                                 the meshless solve
  *   organ_compare REFERENCE.csv --csv LEVEL.csv    a coarser CalculiX level
+ *   organ_compare --signal OVER BESIDE OVER.csv BESIDE.csv [OVER.csv BESIDE.csv]...
+ *                 [--bound B] [--bound-u U]        a stiff region's signal
  *
  * REFERENCE.csv and LEVEL.csv come from organ_dat.awk (vertex,x,y,z,case,
  * ux,uy,uz,contact for the unit forces fx, fy, fz at the scene's output
@@ -21,6 +23,19 @@
  * at the edge of the loaded patch, where the traction jumps and both
  * discretisations differ most (docs/validation.md §14).
  * A markdown row per case goes to stdout.  Exit 2 on bad input.
+ *
+ * --signal: what a probe feels of a stiff material region (an inclusion).
+ * OVER and BESIDE are two scenes of the same body pressed at two sites
+ * (over the inclusion and away from it), each CSV pair a CalculiX level of
+ * them, finest first.  At each site the contact vertex's compliance
+ * C (3 x 3, mm/N: column c the displacement under 1 N along c) gives the
+ * stiffness along the site's outward normal n (the area-weighted normal of
+ * its patch), k = 1 / (n . C n) N/mm: pressed to the same depth d along n,
+ * the probe feels F = k d, so the difference it feels between the sites is
+ * dk = k_over - k_beside per mm.  A row per CalculiX level and one for the
+ * meshless solves; with --bound, exits 1 when the meshless dk is off the
+ * finest level's by more than B (relative); then both meshless solves
+ * against the finest level as above (--bound-u bounds them).
  */
 #include <math.h>
 #include <stdio.h>
@@ -87,6 +102,18 @@ static double norm3(const double *v)
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
+/* A box scene's node at x (to 1e-9 mm), or -1. */
+static long node_at(const tf_problem *p, const double *x)
+{
+    for (size_t i = 0; i < p->cloud.n; ++i) {
+        const double *y = p->cloud.xyz + 3 * i;
+        if (fabs(x[0] - y[0]) <= 1e-9 && fabs(x[1] - y[1]) <= 1e-9 && fabs(x[2] - y[2]) <= 1e-9) {
+            return (long)i;
+        }
+    }
+    return -1;
+}
+
 /* The meshless displacements at the reference's rows, into cand. */
 static int meshless(const char *scene, const char *const *sets, size_t n_sets, const rows *ref,
                     rows *cand)
@@ -101,26 +128,31 @@ static int meshless(const char *scene, const char *const *sets, size_t n_sets, c
     }
     const tf_problem *p = &s->problem;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
-    tf_solver *sv = m ? tf_solver_create(p, NULL, &ctx) : NULL;
+    tf_solver *sv = tf_solver_create(p, NULL, &ctx);
     size_t n3 = 3 * p->cloud.n;
     double *u = malloc(3 * n3 * sizeof *u);
     const double f[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     int rc = sv && u && tf_solver_solve(sv, 0, f, 3, NULL, u) == 0 ? 0 : -1;
     if (rc != 0) {
-        fprintf(stderr, "organ_compare: %s: %s\n", scene, m ? ctx.err : "not an organ");
+        fprintf(stderr, "organ_compare: %s: %s\n", scene, ctx.err);
     }
     *cand = *ref;
     for (size_t k = 0; rc == 0 && k < ref->n; ++k) {
-        long node = tf_problem_mesh_vertex_node(m, ref->vertex[k]);
+        /* an organ's vertex index in its file; a box's node at the row's
+         * position (whatever the grid) */
+        long node = m ? tf_problem_mesh_vertex_node(m, ref->vertex[k]) : node_at(p, ref->x[k]);
         if (node < 0) {
-            fprintf(stderr, "organ_compare: vertex %ld is not in %s\n", ref->vertex[k], scene);
+            fprintf(stderr, "organ_compare: vertex %ld (%g, %g, %g) is not in %s\n", ref->vertex[k],
+                    ref->x[k][0], ref->x[k][1], ref->x[k][2], scene);
             rc = -1;
             break;
         }
         memcpy(cand->u[k], u + (size_t)ref->kase[k] * n3 + 3 * (size_t)node, sizeof cand->u[k]);
     }
     for (size_t k = 0; rc == 0 && k < ref->n; ++k) {
-        if (ref->contact[k] && ref->vertex[k] != m->tm.source[p->contacts[0].node]) {
+        uint32_t contact = p->contacts[0].node;
+        if (ref->contact[k] && (m ? ref->vertex[k] != m->tm.source[contact]
+                                  : node_at(p, ref->x[k]) != (long)contact)) {
             fprintf(stderr, "organ_compare: the reference's contact vertex %ld is not %s's\n",
                     ref->vertex[k], scene);
             rc = -1;
@@ -132,8 +164,168 @@ static int meshless(const char *scene, const char *const *sets, size_t n_sets, c
     return rc;
 }
 
+/* The table of cand against ref (a row per case); cand's rows are ref's in
+ * order (a meshless solve) or found by vertex (level, another CalculiX
+ * level).  1 when the contact and L2 errors are within bound, 0 when not,
+ * -1 when cand lacks a vertex. */
+static int compare(const rows *ref, const rows *cand, int level, double bound)
+{
+    int ok = 1;
+    printf("| case | |u_ref| at the contact vertex (mm/N) | contact error | outputs: L2 error | "
+           "worst vertex: max |du| / max |u_ref| |\n|---|---:|---:|---:|---:|\n");
+    for (int c = 0; c < 3; ++c) {
+        double top = 0, worst = 0, uc = 0, ec = NAN, e2 = 0, r2 = 0;
+        for (size_t k = 0; k < ref->n; ++k) {
+            if (ref->kase[k] != c) {
+                continue;
+            }
+            long j = level ? find(cand, ref->vertex[k], c) : (long)k;
+            if (j < 0) {
+                fprintf(stderr, "organ_compare: the level lacks vertex %ld\n", ref->vertex[k]);
+                return -1;
+            }
+            double d[3] = {cand->u[j][0] - ref->u[k][0], cand->u[j][1] - ref->u[k][1],
+                           cand->u[j][2] - ref->u[k][2]};
+            top = fmax(top, norm3(ref->u[k]));
+            worst = fmax(worst, norm3(d));
+            e2 += d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            r2 += ref->u[k][0] * ref->u[k][0] + ref->u[k][1] * ref->u[k][1] +
+                  ref->u[k][2] * ref->u[k][2];
+            if (ref->contact[k]) {
+                uc = norm3(ref->u[k]);
+                ec = norm3(d) / uc;
+            }
+        }
+        double l2 = sqrt(e2 / r2);
+        printf("| f%c | %.4g | %.3g %% | %.3g %% | %.3g %% |\n", 'x' + c, uc, 100 * ec, 100 * l2,
+               100 * worst / top);
+        ok &= ec <= bound && l2 <= bound;
+    }
+    if (!ok) {
+        printf("beyond the bound of %g %%\n", 100 * bound);
+    }
+    return ok;
+}
+
+/* The outward unit normal of a scene's first contact patch. */
+static int site_normal(const char *scene, double n[3])
+{
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    tf_scene *s = tf_scene_load(&ctx, scene, NULL, 0);
+    if (s == NULL) {
+        fprintf(stderr, "organ_compare: %s\n", ctx.err);
+        return -1;
+    }
+    const tf_patch *pt = s->problem.n_contacts ? &s->problem.contacts[0].patch : NULL;
+    const double *x = s->problem.cloud.xyz;
+    n[0] = n[1] = n[2] = 0;
+    if (pt && pt->shape == TF_PATCH_RECT) { /* a box's face */
+        n[tf_face_axis(pt->face)] = tf_face_is_max(pt->face) ? 1 : -1;
+    }
+    for (size_t t = 0; pt && pt->shape == TF_PATCH_SURFACE && t < pt->n_tri; ++t) {
+        const double *a = x + 3 * (size_t)pt->tri[3 * t], *b = x + 3 * (size_t)pt->tri[3 * t + 1],
+                     *c = x + 3 * (size_t)pt->tri[3 * t + 2];
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        n[0] += u[1] * v[2] - u[2] * v[1];
+        n[1] += u[2] * v[0] - u[0] * v[2];
+        n[2] += u[0] * v[1] - u[1] * v[0];
+    }
+    tf_scene_free(s);
+    double len = norm3(n);
+    if (!(len > 0)) {
+        fprintf(stderr, "organ_compare: %s: its contact site has no surface or face patch\n",
+                scene);
+        return -1;
+    }
+    for (int a = 0; a < 3; ++a) {
+        n[a] /= len;
+    }
+    return 0;
+}
+
+/* Stiffness along n at the contact vertex of rows r: 1 / (n . C n). */
+static double normal_stiffness(const rows *r, const double n[3])
+{
+    double cn = 0;
+    int found = 0;
+    for (size_t k = 0; k < r->n; ++k) {
+        if (r->contact[k]) { /* column kase of C, times n[kase], dotted with n */
+            cn += n[r->kase[k]] * (n[0] * r->u[k][0] + n[1] * r->u[k][1] + n[2] * r->u[k][2]);
+            found |= 1 << r->kase[k];
+        }
+    }
+    return found == 7 && cn > 0 ? 1 / cn : NAN;
+}
+
+/* One row of the signal table: the two sites' stiffness and their
+ * difference, against the finest level's difference *ref (set by the
+ * first row).  Returns dk. */
+static double signal_row(const char *name, const rows *over, const rows *beside,
+                         const double n[2][3], double *ref)
+{
+    double k0 = normal_stiffness(over, n[0]), k1 = normal_stiffness(beside, n[1]);
+    double dk = k0 - k1;
+    if (isnan(*ref)) {
+        *ref = dk;
+    }
+    printf("| %s | %.5g | %.5g | %.5g | %.3g %% | %+.3g %% |\n", name, k0, k1, dk, 100 * dk / k1,
+           100 * (dk - *ref) / *ref);
+    return dk;
+}
+
+static int signal(int argc, char **argv)
+{
+    static rows fin[2], lev[2], cand[2];
+    double bound = INFINITY, bound_u = INFINITY, n[2][3], ref = NAN;
+    while (argc >= 2 && strncmp(argv[argc - 2], "--bound", 7) == 0) {
+        *(strcmp(argv[argc - 2], "--bound-u") == 0 ? &bound_u : &bound) = atof(argv[argc - 1]);
+        argc -= 2;
+    }
+    if (argc < 6 || (argc - 4) % 2 != 0 || site_normal(argv[2], n[0]) != 0 ||
+        site_normal(argv[3], n[1]) != 0) {
+        fprintf(stderr, "usage: organ_compare --signal OVER BESIDE OVER.csv BESIDE.csv "
+                        "[OVER.csv BESIDE.csv]... [--bound B] [--bound-u U]\n");
+        return 2;
+    }
+    printf("| solve | k over (N/mm) | k beside (N/mm) | dk (N/mm) | dk / k beside | dk vs finest |\n"
+           "|---|---:|---:|---:|---:|---:|\n");
+    for (int i = 4; i < argc; i += 2) {
+        rows *r = i == 4 ? fin : lev;
+        if (read_rows(argv[i], &r[0]) != 0 || read_rows(argv[i + 1], &r[1]) != 0 ||
+            !isfinite(normal_stiffness(&r[0], n[0])) || !isfinite(normal_stiffness(&r[1], n[1]))) {
+            fprintf(stderr, "organ_compare: %s, %s: no contact compliance\n", argv[i], argv[i + 1]);
+            return 2;
+        }
+        signal_row(argv[i], &r[0], &r[1], n, &ref);
+    }
+    if (meshless(argv[2], NULL, 0, &fin[0], &cand[0]) != 0 ||
+        meshless(argv[3], NULL, 0, &fin[1], &cand[1]) != 0) {
+        return 2;
+    }
+    double dk = signal_row("meshless", &cand[0], &cand[1], n, &ref);
+    int ok = fabs(dk - ref) <= bound * fabs(ref);
+    if (!ok) {
+        printf("the meshless dk is beyond %g %% of the finest level's\n", 100 * bound);
+    }
+    for (int site = 0; site < 2; ++site) {
+        printf("\nmeshless %s against the finest level:\n\n", argv[2 + site]);
+        int c = compare(&fin[site], &cand[site], 0, bound_u);
+        if (c < 0) {
+            return 2;
+        }
+        ok &= c;
+    }
+    return ok ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "--signal") == 0) {
+        return signal(argc, argv);
+    }
     static rows ref, cand;
     const char *sets[32];
     size_t n_sets = 0;
@@ -153,38 +345,6 @@ int main(int argc, char **argv)
         return 2;
     }
     double bound = !level && args == 4 ? atof(argv[3]) : INFINITY;
-    int ok = 1;
-    printf("| case | |u_ref| at the contact vertex (mm/N) | contact error | outputs: L2 error | "
-           "worst vertex: max |du| / max |u_ref| |\n|---|---:|---:|---:|---:|\n");
-    for (int c = 0; c < 3; ++c) {
-        double top = 0, worst = 0, uc = 0, ec = NAN, e2 = 0, r2 = 0;
-        for (size_t k = 0; k < ref.n; ++k) {
-            if (ref.kase[k] != c) {
-                continue;
-            }
-            long j = level ? find(&cand, ref.vertex[k], c) : (long)k;
-            if (j < 0) {
-                fprintf(stderr, "organ_compare: %s lacks vertex %ld\n", argv[3], ref.vertex[k]);
-                return 2;
-            }
-            double d[3] = {cand.u[j][0] - ref.u[k][0], cand.u[j][1] - ref.u[k][1],
-                           cand.u[j][2] - ref.u[k][2]};
-            top = fmax(top, norm3(ref.u[k]));
-            worst = fmax(worst, norm3(d));
-            e2 += d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            r2 += ref.u[k][0] * ref.u[k][0] + ref.u[k][1] * ref.u[k][1] + ref.u[k][2] * ref.u[k][2];
-            if (ref.contact[k]) {
-                uc = norm3(ref.u[k]);
-                ec = norm3(d) / uc;
-            }
-        }
-        double l2 = sqrt(e2 / r2);
-        printf("| f%c | %.4g | %.3g %% | %.3g %% | %.3g %% |\n", 'x' + c, uc, 100 * ec, 100 * l2,
-               100 * worst / top);
-        ok &= ec <= bound && l2 <= bound;
-    }
-    if (!ok) {
-        printf("beyond the bound of %g %%\n", 100 * bound);
-    }
-    return ok ? 0 : 1;
+    int ok = compare(&ref, &cand, level, bound);
+    return ok < 0 ? 2 : ok ? 0 : 1;
 }

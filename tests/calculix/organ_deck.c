@@ -5,12 +5,32 @@
  * (C3D10), one *STEP per unit force (1 N along x, y and z).
  *
  *   organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]
+ *              [--inclusion-spacing HI] [--quantum Q]
  *
  * Mesh (geometry/volume_mesh_tet10.h): the scene's surface as it is (every
  * vertex a node), the interior at spacing H mm (--grade G: G mm within
  * 20 mm of the contact vertex, rising linearly to H at 60 mm), then R
  * uniform refinements (each tetrahedron into eight; the surface triangles
  * into four on their own planes: the same polyhedron), then second order.
+ *
+ * A box scene (geometry.box, its material regions meshed to conform, which
+ * box_deck.c's hexahedra cannot) is meshed the same way from its surface
+ * split into squares of Q mm (--quantum; each side a multiple of it, and
+ * the patch's edges and the output nodes on its lines), each square into
+ * two triangles; its contact patch is a rectangle of a face, its fixed
+ * regions may be faces, its outputs are the scene's output nodes ("** OUT"
+ * and "** CONTACT" then carry the meshless node index), and --grade grades
+ * towards the patch's centre.
+ *
+ * Material regions (the scene's inclusions, spheres and ellipsoids): each
+ * is its own volume of the mesh, bounded by a triangulated ellipsoid
+ * (geometry/ellipsoid_surface.h, edges at most HI mm, default the smaller
+ * of H and a quarter of its largest semi-axis) that the tetrahedra conform
+ * to, meshed at HI mm inside and up to one semi-axis beyond, rising to H
+ * one semi-axis further; its elements get the inclusion's material.  The
+ * faceted boundary lies inside the true one: its volume is stated on a
+ * "** INCLUSION" line beside the ellipsoid's.  Inclusions that overlap (by
+ * their bounding balls) or are boxes are refused.
  *
  * Fixed region: every node (corner or mid-edge) the scene's fixed regions
  * select by position (box, sphere, side; not the vertex-based near and
@@ -40,6 +60,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geometry/ellipsoid_surface.h"
 #include "geometry/volume_mesh_tet10.h"
 #include "problem/mesh_geometry.h"
 #include "problem/regions.h"
@@ -51,14 +72,15 @@ static const int face[4][6] = {
 
 typedef struct options {
     const char *scene, *solver;
-    double spacing;
+    double spacing, inclusion_spacing, quantum;
     unsigned refine;
     double grade; /* mm near the contact vertex, 0: none */
 } options;
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n");
+    fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n"
+                    "                  [--inclusion-spacing HI] [--quantum Q]\n");
     return 2;
 }
 
@@ -68,6 +90,8 @@ static int parse(int argc, char **argv, options *o)
                                          {"refine", required_argument, NULL, 'r'},
                                          {"solver", required_argument, NULL, 'v'},
                                          {"grade", required_argument, NULL, 'g'},
+                                         {"inclusion-spacing", required_argument, NULL, 'i'},
+                                         {"quantum", required_argument, NULL, 'q'},
                                          {0}};
     int c;
     char *end;
@@ -84,6 +108,16 @@ static int parse(int argc, char **argv, options *o)
             }
         } else if (c == 'v') {
             o->solver = optarg;
+        } else if (c == 'q') {
+            o->quantum = strtod(optarg, &end);
+            if (*end || !(o->quantum > 0)) {
+                return -1;
+            }
+        } else if (c == 'i') {
+            o->inclusion_spacing = strtod(optarg, &end);
+            if (*end || !(o->inclusion_spacing > 0)) {
+                return -1;
+            }
         } else if (c == 'g') {
             o->grade = strtod(optarg, &end);
             if (*end || !(o->grade > 0)) {
@@ -112,6 +146,89 @@ static int surface_of(const tf_mesh_geometry *m, tf_surface *s)
         s->source[i] = m->tm.source[i];
     }
     return 0;
+}
+
+/* A box scene's surface: its faces split into squares of side q, each
+ * into two triangles wound counter-clockwise seen from outside; -1 when a
+ * side is not a multiple of q (or out of memory). */
+static int box_surface(const tf_problem *p, double q, tf_surface *s)
+{
+    const double *lo = p->cloud.lo, *hi = p->cloud.hi;
+    size_t n[3], id_count = 1;
+    for (int a = 0; a < 3; ++a) {
+        double k = round((hi[a] - lo[a]) / q);
+        if (!(k >= 1 && fabs(k * q - (hi[a] - lo[a])) <= 1e-9 * (hi[a] - lo[a]))) {
+            fprintf(stderr, "organ_deck: the box's side %g mm along %c is not a multiple of "
+                            "--quantum %g\n", hi[a] - lo[a], 'x' + a, q);
+            return -1;
+        }
+        n[a] = (size_t)k;
+        id_count *= n[a] + 1;
+    }
+    size_t nv = id_count - (n[0] - 1) * (n[1] - 1) * (n[2] - 1);
+    size_t nt = 4 * (n[0] * n[1] + n[1] * n[2] + n[0] * n[2]);
+    size_t *id = malloc(id_count * sizeof *id);
+    if (id == NULL || tf_surface_alloc(s, nv, nt) != 0) {
+        free(id);
+        fprintf(stderr, "organ_deck: out of memory\n");
+        return -1;
+    }
+    size_t v = 0, t = 0;
+    for (size_t k = 0; k <= n[2]; ++k) { /* lattice points on the boundary */
+        for (size_t j = 0; j <= n[1]; ++j) {
+            for (size_t i = 0; i <= n[0]; ++i) {
+                size_t l = i + (n[0] + 1) * (j + (n[1] + 1) * k), ijk[3] = {i, j, k};
+                int boundary = 0;
+                for (int a = 0; a < 3; ++a) {
+                    boundary |= ijk[a] == 0 || ijk[a] == n[a];
+                }
+                id[l] = boundary ? v : SIZE_MAX;
+                for (int a = 0; boundary && a < 3; ++a) {
+                    s->xyz[3 * v + (size_t)a] =
+                        ijk[a] == n[a] ? hi[a] : lo[a] + (double)ijk[a] * q;
+                }
+                v += (size_t)boundary;
+            }
+        }
+    }
+    for (int a = 0; a < 3; ++a) { /* face a-min (side 0) and a-max (side 1) */
+        int u = (a + 1) % 3, w = (a + 2) % 3; /* (u, w, a) right-handed */
+        for (int side = 0; side < 2; ++side) {
+            for (size_t i = 0; i < n[u]; ++i) {
+                for (size_t j = 0; j < n[w]; ++j) {
+                    size_t c[4];
+                    for (int corner = 0; corner < 4; ++corner) {
+                        size_t ijk[3];
+                        ijk[a] = side ? n[a] : 0;
+                        ijk[u] = i + (corner == 1 || corner == 2);
+                        ijk[w] = j + (corner >= 2);
+                        c[corner] = id[ijk[0] + (n[0] + 1) * (ijk[1] + (n[1] + 1) * ijk[2])];
+                    }
+                    /* c0 c1 c2 c3 counter-clockwise seen from +a */
+                    size_t tri[2][3] = {{c[0], c[1], c[2]}, {c[0], c[2], c[3]}};
+                    for (int h = 0; h < 2; ++h, ++t) {
+                        s->tri[3 * t] = tri[h][0];
+                        s->tri[3 * t + 1] = side ? tri[h][1] : tri[h][2];
+                        s->tri[3 * t + 2] = side ? tri[h][2] : tri[h][1];
+                    }
+                }
+            }
+        }
+    }
+    free(id);
+    return 0;
+}
+
+/* Is g in the box scene's rectangular patch (on its face's plane)? */
+static int in_rect(const double *g, const tf_problem *p, const tf_patch *pt)
+{
+    tf_cloud c = p->cloud;
+    int u, v, a = tf_face_axis(pt->face);
+    tf_face_axes(pt->face, &u, &v);
+    double tol = 1e-9 * (p->cloud.hi[a] - p->cloud.lo[a] + 1);
+    return fabs(g[a] - tf_cloud_face_coord(&c, pt->face)) <= tol &&
+           fabs(g[u] - pt->centre[0]) <= 0.5 * pt->size[0] &&
+           fabs(g[v] - pt->centre[1]) <= 0.5 * pt->size[1];
 }
 
 static double tri_area(const double *a, const double *b, const double *c, double n[3])
@@ -207,10 +324,13 @@ static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_
                      *c = q->xyz + 3 * t[fc[2]];
         double g[3] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
                        (a[2] + b[2] + c[2]) / 3};
-        for (size_t j = 0; j < pt->n_tri; ++j) {
-            const uint32_t *v = pt->tri + 3 * j;
+        int rect = pt->shape == TF_PATCH_RECT;
+        for (size_t j = 0; j < (rect ? 1 : pt->n_tri); ++j) {
+            const uint32_t *v = rect ? NULL : pt->tri + 3 * j;
             const double *x = p->cloud.xyz;
-            if (in_triangle(g, x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2])) {
+            if (rect ? in_rect(g, p, pt)
+                     : in_triangle(g, x + 3 * (size_t)v[0], x + 3 * (size_t)v[1],
+                                   x + 3 * (size_t)v[2])) {
                 double n[3], fa = tri_area(a, b, c, n);
                 area += fa;
                 for (int m = 3; m < 6; ++m) {
@@ -234,7 +354,8 @@ static int fixed_nodes(const tf_tet10_mesh *q, const tf_problem *p, unsigned cha
     }
     for (size_t r = 0; r < p->n_fixed; ++r) {
         tf_region_kind kind = p->fixed[r].where.kind;
-        if (kind == TF_REGION_NEAR || kind == TF_REGION_VERTICES || kind == TF_REGION_FACE) {
+        int organ = tf_problem_mesh(p) != NULL;
+        if (kind == TF_REGION_NEAR || kind == TF_REGION_VERTICES || (organ && kind == TF_REGION_FACE)) {
             fprintf(stderr, "organ_deck: fixed.%zu: only box, plane, sphere and side regions "
                             "carry over to another mesh\n", r);
             return -1;
@@ -270,8 +391,14 @@ static void write_mesh(const tf_tet10_mesh *q)
         printf("%zu, %s, %s, %s\n", i + 1, coordinate(q->xyz[3 * i], a, sizeof a),
                coordinate(q->xyz[3 * i + 1], b, sizeof b), coordinate(q->xyz[3 * i + 2], c, sizeof c));
     }
-    printf("*ELEMENT, TYPE=C3D10, ELSET=ORGAN\n");
     for (size_t e = 0; e < q->ntet; ++e) {
+        if (e == 0 || q->region[e] != q->region[e - 1]) {
+            if (q->region[e] == 0) {
+                printf("*ELEMENT, TYPE=C3D10, ELSET=ORGAN\n");
+            } else {
+                printf("*ELEMENT, TYPE=C3D10, ELSET=INC%d\n", q->region[e]);
+            }
+        }
         printf("%zu", e + 1);
         for (int k = 0; k < 10; ++k) {
             printf(", %zu", q->tet[10 * e + (size_t)k] + 1);
@@ -293,23 +420,49 @@ static void write_set(const char *name, const unsigned char *in, size_t n)
 }
 
 /* The scene's outputs and the contact vertex, as "** OUT" lines and set OUT. */
-static void write_outputs(const tf_tet10_mesh *q, const tf_problem *p, unsigned char *out)
+/* The mesh node at x (a box scene's output node), or SIZE_MAX. */
+static size_t node_at(const tf_tet10_mesh *q, const double *x)
+{
+    size_t best = SIZE_MAX;
+    double d = 1e-18 * (1 + x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    for (size_t i = 0; i < q->nn; ++i) {
+        const double *y = q->xyz + 3 * i;
+        double e = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+                   (x[2] - y[2]) * (x[2] - y[2]);
+        if (e <= d) {
+            d = e;
+            best = i;
+        }
+    }
+    return best;
+}
+
+/* The scene's outputs and the contact vertex (an organ's vertex index in
+ * its file, a box's meshless node index), as "** OUT" lines and set OUT. */
+static int write_outputs(const tf_tet10_mesh *q, const tf_problem *p, unsigned char *out)
 {
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     uint32_t contact = p->contacts[0].node;
     int contact_listed = 0;
+    size_t contact_node = SIZE_MAX;
     for (size_t j = 0; j <= p->outputs.n_nodes; ++j) {
         uint32_t v = j < p->outputs.n_nodes ? p->outputs.nodes[j] : contact;
         if (j == p->outputs.n_nodes && contact_listed) {
             break;
         }
         contact_listed |= v == contact;
-        size_t node = q->vertex_node[v];
+        size_t node = m ? q->vertex_node[v] : node_at(q, p->cloud.xyz + 3 * (size_t)v);
+        if (node == SIZE_MAX) {
+            fprintf(stderr, "organ_deck: output node %u is on no line of the quantum\n", v);
+            return -1;
+        }
+        contact_node = v == contact ? node : contact_node;
         out[node] = 1;
-        printf("** OUT %ld %zu %.17g %.17g %.17g\n", m->tm.source[v], node + 1, q->xyz[3 * node],
-               q->xyz[3 * node + 1], q->xyz[3 * node + 2]);
+        printf("** OUT %ld %zu %.17g %.17g %.17g\n", m ? m->tm.source[v] : (long)v, node + 1,
+               q->xyz[3 * node], q->xyz[3 * node + 1], q->xyz[3 * node + 2]);
     }
-    printf("** CONTACT %ld %zu\n", m->tm.source[contact], q->vertex_node[contact] + 1);
+    printf("** CONTACT %ld %zu\n", m ? m->tm.source[contact] : (long)contact, contact_node + 1);
+    return 0;
 }
 
 static void write_steps(const tf_problem *p, const double *weight, size_t nn, double area,
@@ -331,6 +484,42 @@ static void write_steps(const tf_problem *p, const double *weight, size_t nn, do
     (void)p;
 }
 
+/* Each inclusion's boundary as an inner surface of the mesh (ellipsoids
+ * only, not overlapping); "** INCLUSION k volume faceted exact" lines. */
+static int inclusion_surfaces(const options *o, const tf_problem *p, tf_surface *skin,
+                              tf_mesh_inner *inner)
+{
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        const tf_inclusion *c = &p->inclusions[k];
+        const double *r = c->radii;
+        double rmax = fmax(r[0], fmax(r[1], r[2]));
+        double h = o->inclusion_spacing > 0 ? o->inclusion_spacing : fmin(o->spacing, rmax / 4);
+        int bad = c->where.kind != TF_REGION_SPHERE;
+        for (size_t j = 0; j < k && !bad; ++j) {
+            const tf_inclusion *d = &p->inclusions[j];
+            double dr = fmax(d->radii[0], fmax(d->radii[1], d->radii[2])), dd = 0;
+            for (int a = 0; a < 3; ++a) {
+                dd += (c->where.centre[a] - d->where.centre[a]) * (c->where.centre[a] - d->where.centre[a]);
+            }
+            bad = sqrt(dd) <= rmax + dr;
+        }
+        if (bad || tf_surface_ellipsoid(&skin[k], c->where.centre, r, h) != 0) {
+            fprintf(stderr, "organ_deck: inclusions.%zu: %s\n", k,
+                    bad ? "only spheres and ellipsoids whose bounding balls do not overlap are meshed"
+                        : "its surface could not be made");
+            for (size_t j = 0; j < k; ++j) {
+                tf_surface_free(&skin[j]);
+            }
+            return -1;
+        }
+        inner[k] = (tf_mesh_inner){.surface = &skin[k], .radius = rmax, .spacing = h};
+        memcpy(inner[k].centre, c->where.centre, sizeof inner[k].centre);
+        printf("** INCLUSION %zu %.10g %.10g\n", k + 1, tf_surface_volume(&skin[k]),
+               4.0 / 3 * M_PI * r[0] * r[1] * r[2]);
+    }
+    return 0;
+}
+
 static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh *q)
 {
     double *weight = calloc(q->nn + 1, sizeof *weight);
@@ -343,9 +532,10 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
     }
     const tf_patch *pt = &p->contacts[0].patch;
     double area = patch_loads(q, p, pt, weight);
-    if (!(fabs(area - pt->area) <= 1e-9 * pt->area)) {
+    double want = pt->shape == TF_PATCH_RECT ? pt->size[0] * pt->size[1] : pt->area;
+    if (!(fabs(area - want) <= 1e-9 * want)) {
         fprintf(stderr, "organ_deck: the loaded faces' area %.12g differs from the patch's %.12g\n",
-                area, pt->area);
+                area, want);
         free(weight);
         free(fixed);
         free(out);
@@ -359,7 +549,12 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
            "near the contact, refine %u)\n",
            o->scene, o->spacing, o->grade > 0 ? o->grade : o->spacing, o->refine);
     printf("** SIZE %zu %zu %zu\n", q->ntet, q->nn, 3 * (q->nn - nfixed));
-    write_outputs(q, p, out);
+    if (write_outputs(q, p, out) != 0) {
+        free(weight);
+        free(fixed);
+        free(out);
+        return 2;
+    }
     write_mesh(q);
     write_set("FIXED", fixed, q->nn);
     write_set("OUT", out, q->nn);
@@ -368,6 +563,12 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
     printf("*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=TISSUE\n*ELASTIC\n%.17g, %.17g\n"
            "*SOLID SECTION, ELSET=ORGAN, MATERIAL=TISSUE\n",
            young, poisson);
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        tf_material_moduli(&p->inclusions[k].material, &young, &poisson);
+        printf("*MATERIAL, NAME=INC%zu\n*ELASTIC\n%.17g, %.17g\n"
+               "*SOLID SECTION, ELSET=INC%zu, MATERIAL=INC%zu\n",
+               k + 1, young, poisson, k + 1, k + 1);
+    }
     write_steps(p, weight, q->nn, area, o->solver);
     free(weight);
     free(fixed);
@@ -390,31 +591,55 @@ int main(int argc, char **argv)
     }
     const tf_problem *p = &sc->problem;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
-    if (m == NULL || p->n_contacts == 0 || p->contacts[0].patch.shape != TF_PATCH_SURFACE) {
-        fprintf(stderr, "organ_deck: %s: needs an organ with a contact site\n", o.scene);
+    int shape = p->n_contacts ? (int)p->contacts[0].patch.shape : -1;
+    if (m ? shape != TF_PATCH_SURFACE : shape != TF_PATCH_RECT || !(o.quantum > 0)) {
+        fprintf(stderr, "organ_deck: %s: needs an organ with a contact site, or a box with a "
+                        "rectangular patch and --quantum\n", o.scene);
         tf_scene_free(sc);
         return 2;
     }
-    tf_surface s;
+    tf_surface s = {0};
     tf_tet10_mesh q;
     tf_geom_msg msg;
-    tf_mesh_options mo = m->mesh;
+    tf_mesh_options mo = m ? m->mesh : (tf_mesh_options){0};
     mo.spacing = o.spacing;
     mo.graded = o.grade > 0;
-    if (mo.graded) {
+    if (mo.graded && m) {
         memcpy(mo.grade_at, m->tm.xyz + 3 * (size_t)p->contacts[0].node, sizeof mo.grade_at);
-        mo.grade_spacing = o.grade;
-        mo.grade_radius = 20;
-        mo.grade_ramp = 60;
+    } else if (mo.graded) { /* the patch's centre */
+        const tf_patch *pt = &p->contacts[0].patch;
+        tf_cloud c = p->cloud;
+        int u, v;
+        tf_face_axes(pt->face, &u, &v);
+        mo.grade_at[tf_face_axis(pt->face)] = tf_cloud_face_coord(&c, pt->face);
+        mo.grade_at[u] = pt->centre[0];
+        mo.grade_at[v] = pt->centre[1];
     }
-    int rc = surface_of(m, &s) != 0 ? 1 : tf_volume_mesh_tet10(&s, &mo, o.refine, &q, &msg);
-    if (rc != 0) {
+    if (mo.graded) {
+        mo.grade_spacing = o.grade;
+        const double *sz = p->contacts[0].patch.size; /* a box's patch: its half-diagonal */
+        mo.grade_radius = m ? 20 : 0.5 * sqrt(sz[0] * sz[0] + sz[1] * sz[1]) + o.grade;
+        mo.grade_ramp = m ? 60 : mo.grade_radius + 2 * o.spacing;
+    }
+    tf_surface skin[TF_INCLUSIONS_MAX];
+    tf_mesh_inner inner[TF_INCLUSIONS_MAX];
+    if (inclusion_surfaces(&o, p, skin, inner) != 0) {
+        tf_scene_free(sc);
+        return 2;
+    }
+    int rc = (m ? surface_of(m, &s) : box_surface(p, o.quantum, &s)) != 0
+                 ? 1
+                 : tf_volume_mesh_tet10(&s, &mo, inner, p->n_inclusions, o.refine, &q, &msg);
+    if (rc != 0 && (m || s.xyz)) { /* box_surface says why it failed */
         fprintf(stderr, "organ_deck: %s\n", rc == 1 && s.xyz == NULL ? "out of memory" : msg.error);
     } else {
         rc = write_deck(&o, p, &q);
         tf_tet10_mesh_free(&q);
     }
     tf_surface_free(&s);
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        tf_surface_free(&skin[k]);
+    }
     tf_scene_free(sc);
     return rc;
 }

@@ -9,7 +9,9 @@
 #                      x, y, z (organ_dat.awk)
 #   NAME_runs.csv      label,spacing,refine,elements,nodes,dofs,seconds,max_rss_mb
 # A run whose deck is unchanged and whose output is present is not repeated
-# (delete WORK to force it).  CCX_THREADS (default 1) threads per run.
+# (delete WORK to force it).  CCX_THREADS (default 1) threads per run;
+# DECK_ARGS: more options for every deck (a box's --quantum, an inclusion's
+# --inclusion-spacing).
 set -eu
 [ $# -ge 6 ] || { echo "usage: $0 DECK_TOOL SCENE WORK DATA NAME LEVEL..." >&2; exit 2; }
 deck_tool=$1 scene=$2 work=$3 data=$4 name=$5
@@ -25,9 +27,10 @@ for level in "$@"; do
     grade=${grade:-0}
     run=${name}_$label
     if [ "$grade" = 0 ]; then
-        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" > "$work/$run.inp.new"
+        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" ${DECK_ARGS:-} > "$work/$run.inp.new"
     else
-        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" --grade "$grade" > "$work/$run.inp.new"
+        "$deck_tool" "$scene" --spacing "$spacing" --refine "$refine" --grade "$grade" ${DECK_ARGS:-} \
+            > "$work/$run.inp.new"
     fi
     ccx_cached "$work" "$run" "$threads" "%e %M" "spacing $spacing mm, $refine refinement(s)"
     awk -f "$here/organ_dat.awk" "$work/$run.inp" "$work/$run.dat" > "$work/out/$run.csv"
