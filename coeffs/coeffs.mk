@@ -69,14 +69,18 @@ coeffs: $(B)/bin/tissuefit | deps-demo
 # every solver's bits the same with one and two threads in both lengths).
 # The scenes run NPROC at a time (the organ fits are mostly serial), the
 # slowest first (2-thread fits here: block48_ve 31 s, block48_nh 24, liver
-# 21, heart 20; the others 8 s or less).
+# 21, heart 20; the others 8 s or less).  The dynamic scenes
+# (coeffs/dynamic.mk, generated with one thread) run among them with one
+# thread, block48_dyn (39 s) first.
 COEFF_THREADS = $(call check_len,1 2,2)
 COEFF_FIRST := coeffs/block48_ve.yaml coeffs/block48_nh.yaml coeffs/liver.yaml coeffs/heart.yaml
 check-coeffs: $(B)/bin/tissuefit
-	@echo "== shipped headers: regenerated ($(subst $(space),$(comma) ,$(COEFF_THREADS)) thread(s)) = committed, byte for byte =="
-	@for s in $(filter $(COEFF_FIRST),$(COEFF_SCENES)) $(filter-out $(COEFF_FIRST),$(COEFF_SCENES)); do \
-	  n=$$(basename $$s .yaml); $(physics_arg); \
-	  echo "CC='$(CC) $(HOST_STRICT)' tests/fit/regenerate.sh $(B)/bin/tissuefit $$s $(B)/coeffs '$(COEFF_THREADS)' $$ref"; done | \
+	@echo "== shipped headers: regenerated ($(subst $(space),$(comma) ,$(COEFF_THREADS)) thread(s); $(notdir $(DYN_SCENES:.yaml=.h)) with 1) = committed, byte for byte =="
+	@{ for s in $(DYN_SCENES); do \
+	    echo "CC='$(CC) $(HOST_STRICT)' tests/fit/regenerate.sh $(B)/bin/tissuefit $$s $(B)/coeffs/dyn '1'"; done; \
+	  for s in $(filter $(COEFF_FIRST),$(COEFF_SCENES)) $(filter-out $(COEFF_FIRST),$(COEFF_SCENES)); do \
+	    n=$$(basename $$s .yaml); $(physics_arg); \
+	    echo "CC='$(CC) $(HOST_STRICT)' tests/fit/regenerate.sh $(B)/bin/tissuefit $$s $(B)/coeffs '$(COEFF_THREADS)' $$ref"; done; } | \
 	  tests/run_lines.sh $(NPROC) $(B)/coeffs/logs
 
 # The held-out check, one binary per shipped scene, compiled with a header
