@@ -46,10 +46,13 @@ demo-palpate: $(DEMO_PALPATE)/palpate | deps-demo
 	  --every $(PALPATE_EVERY) contact.0.spacing=$(PALPATE_SPACING) | tee $(DEMO_PALPATE)/palpate.txt
 
 # The same liver with a stiff nodule under the region's centre (a material
-# region: a sphere 16 mm across, 5 times the liver's E, its top 4 mm under
-# the rest surface at the chart's centre, whose outward normal is
-# (-0.448, -0.865, 0.225)): the force map shows it.
-PALPATE_NODULE := 'inclusions.0.sphere.centre=-37.17,-54.60,23.71' inclusions.0.sphere.radius=8 \
+# region: a sphere 16 mm across, 5 times the liver's E, its centre 18 mm
+# under the rest surface at the chart's centre (-42.55, -64.98, 26.41),
+# along the outward normal there (-0.448, -0.865, 0.225), its top 10 mm
+# under the surface): the force map shows it.  It is the nodule of
+# tests/calculix/scenes/liver_nodule.yaml, checked against CalculiX
+# (docs/validation.md §18).
+PALPATE_NODULE := 'inclusions.0.sphere.centre=-34.49,-49.41,22.36' inclusions.0.sphere.radius=8 \
     inclusions.0.material.E=0.0261 inclusions.0.material.nu=0.45 inclusions.0.name=nodule
 .PHONY: demo-palpate-nodule
 demo-palpate-nodule: $(DEMO_PALPATE)/palpate | deps-demo
