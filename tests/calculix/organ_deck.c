@@ -260,6 +260,23 @@ static int in_triangle(const double *g, const double *a, const double *b, const 
     return 1;
 }
 
+/* Is the boundary face centroid g in the patch: a box's rectangle, or one
+ * of an organ's patch triangles? */
+static int in_patch(const double *g, const tf_problem *p, const tf_patch *pt)
+{
+    if (pt->shape == TF_PATCH_RECT) {
+        return in_rect(g, p, pt);
+    }
+    const double *x = p->cloud.xyz;
+    for (size_t j = 0; j < pt->n_tri; ++j) {
+        const uint32_t *v = pt->tri + 3 * j;
+        if (in_triangle(g, x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 typedef struct face_key {
     size_t c[3]; /* sorted corners */
     size_t tet;
@@ -324,19 +341,11 @@ static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_
                      *c = q->xyz + 3 * t[fc[2]];
         double g[3] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
                        (a[2] + b[2] + c[2]) / 3};
-        int rect = pt->shape == TF_PATCH_RECT;
-        for (size_t j = 0; j < (rect ? 1 : pt->n_tri); ++j) {
-            const uint32_t *v = rect ? NULL : pt->tri + 3 * j;
-            const double *x = p->cloud.xyz;
-            if (rect ? in_rect(g, p, pt)
-                     : in_triangle(g, x + 3 * (size_t)v[0], x + 3 * (size_t)v[1],
-                                   x + 3 * (size_t)v[2])) {
-                double n[3], fa = tri_area(a, b, c, n);
-                area += fa;
-                for (int m = 3; m < 6; ++m) {
-                    weight[t[fc[m]]] += fa / 3;
-                }
-                break;
+        if (in_patch(g, p, pt)) {
+            double n[3], fa = tri_area(a, b, c, n);
+            area += fa;
+            for (int m = 3; m < 6; ++m) {
+                weight[t[fc[m]]] += fa / 3;
             }
         }
     }
@@ -352,9 +361,9 @@ static int fixed_nodes(const tf_tet10_mesh *q, const tf_problem *p, unsigned cha
         c.lo[a] = p->cloud.lo[a];
         c.hi[a] = p->cloud.hi[a];
     }
+    const int organ = tf_problem_mesh(p) != NULL;
     for (size_t r = 0; r < p->n_fixed; ++r) {
         tf_region_kind kind = p->fixed[r].where.kind;
-        int organ = tf_problem_mesh(p) != NULL;
         if (kind == TF_REGION_NEAR || kind == TF_REGION_VERTICES || (organ && kind == TF_REGION_FACE)) {
             fprintf(stderr, "organ_deck: fixed.%zu: only box, plane, sphere and side regions "
                             "carry over to another mesh\n", r);
