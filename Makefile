@@ -116,29 +116,39 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 # "ok: ..." last, once its work is done (tests/check_guard.sh): a check
 # whose rule lost its recipe, or that stopped after its heading, must fail
 # rather than pass silently.  The guard is first shown such a log.
-# Each check's make builds what the check needs $(NPROC) jobs at a time,
-# unless make was given -j (then the checks share its jobserver); the
-# checks themselves run one after another, and the slowest are listed last.
+#
+# $(call run_checks,LIST,NAME) runs in two phases.  First one make builds
+# every file the checks of LIST depend on (tests/check_files.awk reads
+# them from make's database), $(NPROC) jobs at a time, its output in
+# $(B)/check/NAME-build.log: make alone sees which files two checks share.
+# Then the checks run CHECK_LANES at a time (tests/run_checks.sh), each
+# its own make, with its output in $(B)/check/CHECK.log, and "WALL CHECK
+# CPU" seconds in $(B)/check/NAME.seconds.  The lanes start with the
+# checks measured slowest (CHECK_FIRST), so that no core waits at the end
+# for one long check.  A check's make builds what is left $(NPROC) jobs at
+# a time, unless make was given -j (then they share its jobserver).
+CHECK_LANES ?= $(NPROC)
 CHECK_JOBS = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(NPROC))
-
-# $(call run_checks,LIST,NAME): runs each check of LIST in turn, its output
-# in $(B)/check/CHECK.log, guarded; writes "WALL CHECK CPU" seconds per
-# check to $(B)/check/NAME.seconds (CPU: user + system of everything the
-# check ran, from the shell's `times` builtin) and prints the slowest and the total.
+CHECK_FIRST := check-sanitize check-fuzz check-unit check-fit check-stability check-qemu-region \
+               check-prony-long check-organs check-cycles check-cli check-misra check-mpi
+# The time the first make was started, for the total make check prints.
+ifeq ($(MAKE_T0),)
+MAKE_T0 := $(shell date +%s)
+export MAKE_T0
+endif
 define run_checks
 	@mkdir -p $(B)/check
-	@set -e; : >$(B)/check/$(2).seconds; \
-	tf=$(B)/check/$(2).times; \
-	cpu() { awk 'NR == 2 { split($$1, u, "m"); split($$2, k, "m"); printf "%d", u[1] * 60 + u[2] + k[1] * 60 + k[2] }' $$tf; }; \
-	for c in $(1); do \
-	  s=$$(date +%s); times >$$tf; c0=$$(cpu); \
-	  $(MAKE) --no-print-directory $(CHECK_JOBS) $$c 2>&1 | tee $(B)/check/$$c.log; \
-	  tests/check_guard.sh $$c $(B)/check/$$c.log; \
-	  times >$$tf; echo "$$(( $$(date +%s) - s )) $$c $$(( $$(cpu) - c0 ))" >>$(B)/check/$(2).seconds; \
-	done
-	@sort -rn $(B)/check/$(2).seconds | awk '{ t += $$1; c += $$3; \
-	  if (NR <= 8) top = top (NR > 1 ? ", " : "") $$2 " " $$1 " s" } \
-	  END { print "slowest checks: " top "; all " t " s (" c " s of CPU: user + system)" }'
+	@set -e; s=$$(date +%s); \
+	echo "== building what the $(words $(1)) checks need ($(B)/check/$(2)-build.log) =="; \
+	files=$$($(MAKE) --no-print-directory -pq 2>/dev/null | awk -v ROOTS="$(1)" -f tests/check_files.awk || true); \
+	if ! $(MAKE) --no-print-directory $(CHECK_JOBS) $$files >$(B)/check/$(2)-build.log 2>&1; then \
+	  grep -v 'is up to date' $(B)/check/$(2)-build.log | tail -40; echo "FAILED: the build the checks need"; exit 1; fi; \
+	times >$(B)/check/$(2)-build.times; \
+	echo "built $$(echo $$files | wc -w) files in $$(( $$(date +%s) - s )) s ($$(awk 'NR == 2 { split($$1, u, "m"); \
+	  split($$2, k, "m"); printf "%d", u[1] * 60 + u[2] + k[1] * 60 + k[2] }' $(B)/check/$(2)-build.times) s of CPU)"
+	@MAKE_JOBS="$(CHECK_JOBS)" tests/run_checks.sh $(CHECK_LANES) $(B)/check $(2) \
+	  $(filter $(CHECK_FIRST),$(1)) $(filter-out $(CHECK_FIRST),$(1))
+	@echo "$(2): $$(( $$(date +%s) - $(MAKE_T0) )) s since make started ($(NPROC) cores)"
 endef
 
 check: | deps-check

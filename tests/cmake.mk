@@ -20,7 +20,7 @@ CMAKE_T := $(T)/cmake
 
 .PHONY: check-cmake
 CHECKS += check-cmake
-check-cmake: $(B)/bin/tissuefit $(B)/lib/libtfit.a $(B)/cortex-m4f/libtfit.a $(B)/cortex-m7/libtfit.a | deps-check
+check-cmake: $(B)/bin/tissuefit $(B)/lib/libtfit.a $(B)/cortex-m4f/libtfit.a $(B)/cortex-m7/libtfit.a $(PY_PKG_LIBS) | deps-check
 	@echo "== libtfit as a CMake package: find_package(tfit) natively and on Cortex-M4F and M7 (QEMU), add_subdirectory(target) =="
 	@tests/cmake/check_versions.sh $(VERSION)
 	@rm -rf $(CMAKE_T) && mkdir -p $(CMAKE_T)
