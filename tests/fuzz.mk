@@ -10,14 +10,14 @@
 #   check-fuzz   (make check) first, every registered law solved by every
 #                registered solver on a small box over the same clang
 #                library (tests/fuzz/ubsan_solve.c); then the five targets,
-#                FUZZ_CHECK_SECONDS (25 s) each, two at a time (one core
-#                each: 3 x 25 s of wall time), from the seeds and the
+#                FUZZ_CHECK_SECONDS each, two at a time (one core each:
+#                three rounds of wall time), from the seeds and the
 #                regression inputs (tests/fuzz/regress/TARGET/: inputs that
 #                found bugs; they must stay harmless); one result line per
-#                target, in order.  25 s is a short real run (the
-#                inputs executed and coverage reached are in
-#                docs/architecture.md, "Errors and outputs"); the campaign
-#                is make fuzz's
+#                target, in order.  10 s (60 s in make check-full) is a
+#                short real run (the inputs executed and coverage reached
+#                are in docs/architecture.md, "Errors and outputs"); the
+#                campaign is make fuzz's
 #   make fuzz    each target FUZZ_SECONDS (default 1800 s), one after the
 #                other, corpus kept in $(FZ)/corpus between runs
 #
@@ -25,7 +25,7 @@
 # others).  Inputs are at most 4 KiB, 8 KiB for a mesh (FUZZ_MAX_LEN).
 
 FZ := $(B)/fuzz
-FUZZ_CHECK_SECONDS ?= 25
+FUZZ_CHECK_SECONDS ?= $(call check_len,60,10)
 FUZZ_SECONDS ?= 1800
 FUZZ_TIMEOUT ?= 20
 FUZZ_SAN := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \

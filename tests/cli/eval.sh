@@ -83,7 +83,8 @@ header_trips() {
     echo "$sets $vectors $fails" >"$d/tally"
 }
 
-headers=$(ls coeffs/*.h | grep -v '_golden\.h$')
+# EVAL_HEADERS (make check's short version) or every shipped header
+headers=${EVAL_HEADERS:-$(ls coeffs/*.h | grep -v '_golden\.h$')}
 n=0
 for h in $headers; do
     header_trips "$h" >"$tmp/h.$(basename "$h" .h).log" 2>&1 &
