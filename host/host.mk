@@ -44,7 +44,7 @@ $(eval $(call host_lib,native,-O2 -g -fPIC -fno-semantic-interposition))
 # -O2 as the tool ships (native): ASan and UBSan instrument either level,
 # and the unit tests under them (check-sanitize) run about a third faster
 # than at -O1 (docs/architecture.md, "make check's time").
-$(eval $(call host_lib,asan,-O2 -g $(SANITIZE)))
+$(eval $(call host_lib,asan,-O2 $(TEST_G) $(SANITIZE)))
 
 # The flat API of host/api/ as a shared library: the API's objects, the
 # rest of the host library and a position-independent libtfit (the tool's

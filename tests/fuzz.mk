@@ -31,7 +31,7 @@ FUZZ_TIMEOUT ?= 20
 FUZZ_SAN := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
             -fno-omit-frame-pointer
 # clang has no -fno-tree-slp-vectorize (a GCC workaround, host.mk).
-FUZZ_HOST_CFLAGS := $(filter-out -fno-tree-slp-vectorize,$(HOST_CFLAGS)) -O1 -g $(FUZZ_SAN)
+FUZZ_HOST_CFLAGS := $(filter-out -fno-tree-slp-vectorize,$(HOST_CFLAGS)) -O1 $(TEST_G) $(FUZZ_SAN)
 FUZZ_TARGETS := scene set history cuts mesh
 FUZZ_SEEDS_scene := coeffs/block48.yaml tests/solver/block48_seed.yaml coeffs/cantilever.yaml \
                     tests/solver/patch.yaml tests/solver/inclusion_bar.yaml \

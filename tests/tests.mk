@@ -14,7 +14,7 @@
 #                      a CSV bit for bit (tests/cli/eval.sh)
 
 # -I.: a test reaches beyond host/ by its path from the top ("tests/...").
-TEST_CFLAGS := $(HOST_CFLAGS) -O1 -g -I. -Itests/support -Itests/bitexact
+TEST_CFLAGS := $(HOST_CFLAGS) -O1 $(TEST_G) -I. -Itests/support -Itests/bitexact
 SUPPORT_SRC := $(wildcard tests/support/*.c)
 UNIT_SRC := $(shell find tests/unit -name 'test_*.c' | LC_ALL=C sort)
 UNIT_NAMES := $(UNIT_SRC:tests/unit/%.c=%)
