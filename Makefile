@@ -123,7 +123,9 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 # whose rule lost its recipe, or that stopped after its heading, must fail
 # rather than pass silently.  The guard is first shown such a log.
 #
-# $(call run_checks,LIST,NAME) runs in two phases.  First one make builds
+# $(call run_checks,LIST,NAME,INSTALLERS) runs in two phases, after the
+# deps-* INSTALLERS the checks of LIST use, one after the other (two apt-get
+# runs at once would fight over dpkg's lock).  First one make builds
 # every file the checks of LIST depend on (tests/check_files.awk reads
 # them from make's database), $(NPROC) jobs at a time, its output in
 # $(B)/check/NAME-build.log: make alone sees which files two checks share.
@@ -144,6 +146,7 @@ export MAKE_T0
 endif
 define run_checks
 	@mkdir -p $(B)/check
+	@$(MAKE) --no-print-directory -j1 $(3)
 	@set -e; s=$$(date +%s); \
 	echo "== building what the $(words $(1)) checks need ($(B)/check/$(2)-build.log) =="; \
 	files=$$($(MAKE) --no-print-directory -pq 2>/dev/null | awk -v ROOTS="$(1)" -f tests/check_files.awk || true); \
@@ -162,7 +165,7 @@ check: | deps-check
 	@printf '== a check that stopped after its heading ==\n' >$(B)/check/guard-selftest.log
 	@if tests/check_guard.sh guard-selftest $(B)/check/guard-selftest.log >/dev/null; then \
 	  echo "tests/check_guard.sh accepted a log without a result line"; exit 1; fi
-	$(call run_checks,$(CHECKS),check)
+	$(call run_checks,$(CHECKS),check,deps-check deps-mpi deps-calculix)
 	@echo "== make check$(call check_len,-full,): all passed ($(words $(CHECKS)) checks, each with its result line$(call check_len,, in its short version)) =="
 
 check-full: | deps-check
@@ -172,7 +175,7 @@ check-full: | deps-check
 # library and one bit-exact configuration (`make check` runs them all).
 QUICK_CHECKS := check-unit check-host-layers check-freestanding check-bitexact-quick
 check-quick: | deps-check
-	$(call run_checks,$(QUICK_CHECKS),check-quick)
+	$(call run_checks,$(QUICK_CHECKS),check-quick,deps-check)
 	@echo "== make check-quick: all passed ($(words $(QUICK_CHECKS)) checks; make check runs $(words $(CHECKS))) =="
 
 bench: | deps-bench
