@@ -149,12 +149,13 @@ define run_checks
 	@$(MAKE) --no-print-directory -j1 $(3)
 	@set -e; s=$$(date +%s); \
 	echo "== building what the $(words $(1)) checks need ($(B)/check/$(2)-build.log) =="; \
-	files=$$($(MAKE) --no-print-directory -pq 2>/dev/null | awk -v ROOTS="$(1)" -f tests/check_files.awk || true); \
+	files=$$({ $(MAKE) --no-print-directory -pq 2>/dev/null || true; } | awk -v ROOTS="$(1)" -f tests/check_files.awk); \
+	[ -n "$$files" ] || { echo "tests/check_files.awk found no files the checks need"; exit 1; }; \
 	if ! $(MAKE) --no-print-directory $(CHECK_JOBS) $$files >$(B)/check/$(2)-build.log 2>&1; then \
 	  grep -v 'is up to date' $(B)/check/$(2)-build.log | tail -40; echo "FAILED: the build the checks need"; exit 1; fi; \
 	times >$(B)/check/$(2)-build.times; \
-	echo "built $$(echo $$files | wc -w) files in $$(( $$(date +%s) - s )) s ($$(awk 'NR == 2 { split($$1, u, "m"); \
-	  split($$2, k, "m"); printf "%d", u[1] * 60 + u[2] + k[1] * 60 + k[2] }' $(B)/check/$(2)-build.times) s of CPU)"
+	echo "built $$(echo $$files | wc -w) files in $$(( $$(date +%s) - s )) s ($$(awk -f tests/times_cpu.awk \
+	  $(B)/check/$(2)-build.times) s of CPU)"
 	@MAKE_JOBS="$(CHECK_JOBS)" tests/run_checks.sh $(CHECK_LANES) $(B)/check $(2) \
 	  $(filter $(CHECK_FIRST),$(1)) $(filter-out $(CHECK_FIRST),$(1))
 	@echo "$(2): $$(( $$(date +%s) - $(MAKE_T0) )) s since make started ($(NPROC) cores)"

@@ -87,16 +87,15 @@ COEFF_REGEN := $(foreach t,$(COEFF_THREADS),$(COEFF_CHECKED:coeffs/%.yaml=$(B)/c
 # $(call regen_fit,THREADS): the recipe of one regeneration
 regen_fit = n=$*; $(physics_arg); OMP_WAIT_POLICY=passive OMP_NUM_THREADS=$(1) \
   $(B)/bin/tissuefit -q fit $< -o $(@D)/$*.h $$ref
-$(B)/coeffs/t1/%.h $(B)/coeffs/t1/%_golden.h: coeffs/%.yaml $(B)/bin/tissuefit
-	@mkdir -p $(@D)
-	$(call say,FIT)
-	$(Q)$(call regen_fit,1)
-$(B)/coeffs/t2/%.h $(B)/coeffs/t2/%_golden.h: coeffs/%.yaml $(B)/bin/tissuefit
-	@mkdir -p $(@D)
-	$(call say,FIT)
-	$(Q)$(call regen_fit,2)
+define regen_rule
+$(B)/coeffs/t$(1)/%.h $(B)/coeffs/t$(1)/%_golden.h: coeffs/%.yaml $(B)/bin/tissuefit
+	@mkdir -p $$(@D)
+	$$(call say,FIT)
+	$(Q)$$(call regen_fit,$(1))
+endef
+$(foreach t,1 2,$(eval $(call regen_rule,$(t))))
 check-coeffs: $(COEFF_REGEN)
-	@echo "== shipped headers: regenerated ($(subst $(space),$(comma) ,$(COEFF_THREADS)) thread(s)$(call check_len,; $(notdir $(DYN_SCENES:.yaml=.h)) with 1,; short: not $(notdir $(COEFF_SLOW:.yaml=.h)) $(notdir $(DYN_SCENES:.yaml=.h))) = committed, byte for byte =="
+	@echo "== shipped headers: regenerated ($(subst $(space),$(comma) ,$(COEFF_THREADS)) thread(s)$(call check_len,; $(notdir $(DYN_SCENES:.yaml=.h)) with 1,; short: not $(notdir $(COEFF_SLOW:.yaml=.h)) $(notdir $(DYN_SCENES:.yaml=.h)))) = committed, byte for byte =="
 	@r=0; for s in $(call check_len,$(DYN_SCENES),); do \
 	  CC='$(CC) $(HOST_STRICT)' tests/fit/compare_regenerated.sh $$(basename $$s .yaml) $(B)/coeffs 1 || r=1; done; \
 	for s in $(COEFF_CHECKED); do \
@@ -146,7 +145,7 @@ export FORWARD_BOUND_block48_cut := 0.055
 export FORWARD_BOUND_block48_nh := 0.0709
 export CONTACT_BOUND_block48_nh := 0.075
 check-fit: $(HELDOUT_SCENES:coeffs/%.yaml=$(T)/heldout-%) $(B)/bin/tissuefit $(T)/extremes
-	@echo "== fitted headers: held-out errors recomputed from the compiled header$(call check_len,, (short: not the liver and the heart))) =="
+	@echo "== fitted headers: held-out errors recomputed from the compiled header$(call check_len,, (short: not the liver and the heart)) =="
 	@# the scenes $(NPROC) at a time, their lines in this order
 	@for s in $(HELDOUT_SCENES); do n=$$(basename $$s .yaml); \
 	  b=$$(eval echo \$${FORWARD_BOUND_$$n}); c=$$(eval echo \$${CONTACT_BOUND_$$n}); \

@@ -24,8 +24,7 @@ for c in "$@"; do echo "$c"; done | xargs -P "$lanes" -n 1 sh -c '
   if ${MAKE:-make} --no-print-directory ${MAKE_JOBS:-} "$c" >"$dir/$c.log" 2>&1 </dev/null &&
      tests/check_guard.sh "$c" "$dir/$c.log" >"$dir/$c.guard"; then rc=0; else rc=1; fi
   times >"$dir/$c.times"   # in this shell: a subshell would count no children
-  cpu=$(awk "NR == 2 { split(\$1, u, \"m\"); split(\$2, k, \"m\");
-                       printf \"%d\", u[1] * 60 + u[2] + k[1] * 60 + k[2] }" "$dir/$c.times")
+  cpu=$(awk -f tests/times_cpu.awk "$dir/$c.times")
   w=$(( $(date +%s) - s ))
   echo "$rc $w $cpu" >"$dir/$c.status"
   printf "%-6s %-28s %4d s (%d s of CPU)\n" "$([ $rc = 0 ] && echo done || echo FAILED)" "$c" "$w" "$cpu"' "$dir"
