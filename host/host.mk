@@ -21,7 +21,8 @@ HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/
 # for all host code; tests/unit/fitting/test_toolchain.c fails if it comes back.
 HOST_CFLAGS := $(HOST_STRICT) -fno-tree-slp-vectorize -fopenmp -Ihost -Itarget/include \
                -I/usr/include/suitesparse -DTFIT_TOOL_VERSION='"$(VERSION)"'
-HOST_LIBS := -fopenmp -lcholmod -lumfpack -lgsl -llapacke -lopenblas -lcyaml -lyaml -lgmsh -lassimp -lz -lm
+# gmsh is not linked: host/geometry/gmsh_api.c opens it at its first call.
+HOST_LIBS := -fopenmp -lcholmod -lumfpack -lgsl -llapacke -lopenblas -lcyaml -lyaml -lassimp -lz -lm
 
 # $(call host_lib,NAME,FLAGS)  ->  $(B)/NAME/libtissuefit-host.a
 define host_lib
