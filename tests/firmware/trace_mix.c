@@ -19,7 +19,8 @@
  * tfit_region_surface, tfit_region_pair, tfit_region_surface_pair) executes
  * and ends when control is back in tfit_golden_run* (or region_golden_run*,
  * tests/region/qemu_region.c's loops); a golden set starts with its
- * tfit_model_check* call (qemu_golden.c).  Output, one line per set:
+ * tfit_model_check* call (qemu_golden.c) or a call of trace_group_start
+ * (qemu_region.c's traced image).  Output, one line per set:
  *   set S: N calls, identical|DIFFERENT, mix: alu=... (of the first call)
  * Exit status 1 when the calls of a set did not all execute the same mix.
  */
@@ -244,7 +245,8 @@ int main(int argc, char **argv)
         const char *fn = func_of(pc);
         int entry_of_check = 0;
         for (int i = 0; i < n_funcs; ++i) {
-            if (func_addr[i] == pc && starts_with(funcs[i], "tfit_model_check")) {
+            if (func_addr[i] == pc && (starts_with(funcs[i], "tfit_model_check") ||
+                                       strcmp(funcs[i], "trace_group_start") == 0)) {
                 entry_of_check = 1;
             }
         }
