@@ -1,6 +1,6 @@
 /*
  * gmsh_api.c — the functions of gmsh's C API (gmshc.h) that the host
- * calls, bound from libgmsh when the first of them is called.
+ * calls, bound from libgmsh at each call.
  *
  * Why not link libgmsh: it brings about 90 shared libraries (OpenCASCADE,
  * VTK, MED, ...) whose 160,000 symbol relocations cost every start of every
@@ -8,9 +8,10 @@
  * link about 0.7 s, whether it meshes or not.  Most runs of the tool (box
  * scenes, headers, eval) and most tests never touch gmsh.  The definitions
  * below have gmshc.h's prototypes (a mismatch does not compile), so the
- * callers are unchanged; the library is opened by its soname, which the
- * header's version gives, once per process (pthread_once), and never
- * closed.
+ * callers are unchanged.  The library is opened by its soname, which the
+ * header's version gives, with RTLD_NODELETE: every call opens it (the
+ * first loads it, the others find it loaded, in microseconds) and closes
+ * it again, and it stays loaded, so that this file keeps no state.
  *
  * If libgmsh cannot be opened or lacks a function, the call sets *ierr to
  * 1 and does nothing, and gmshLoggerGetLastError returns the loader's
@@ -18,7 +19,6 @@
  */
 #include <dlfcn.h>
 #include <gmshc.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,32 +28,21 @@
 #define TF_GMSH_SONAME \
     "libgmsh.so." TF_STR(GMSH_API_VERSION_MAJOR) "." TF_STR(GMSH_API_VERSION_MINOR)
 
-static void *gmsh_lib;
-static char gmsh_error[512];
-static pthread_once_t gmsh_once = PTHREAD_ONCE_INIT;
-
-static void gmsh_open(void)
+static void *gmsh_open(void)
 {
-    gmsh_lib = dlopen(TF_GMSH_SONAME, RTLD_NOW | RTLD_LOCAL);
-    if (!gmsh_lib) {
-        const char *why = dlerror();
-        snprintf(gmsh_error, sizeof gmsh_error, "cannot load gmsh (%s): %s", TF_GMSH_SONAME,
-                 why ? why : "no reason given");
-    }
+    return dlopen(TF_GMSH_SONAME, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
 }
 
-/* The address of gmsh's NAME, or NULL with *ierr = 1 and the reason kept. */
+/* The address of gmsh's NAME, or NULL with *ierr = 1. */
 static void *gmsh_symbol(const char *name, int *ierr)
 {
-    pthread_once(&gmsh_once, gmsh_open);
-    void *p = gmsh_lib ? dlsym(gmsh_lib, name) : NULL;
-    if (!p) {
-        if (gmsh_lib) {
-            snprintf(gmsh_error, sizeof gmsh_error, "%s has no %s", TF_GMSH_SONAME, name);
-        }
-        if (ierr) {
-            *ierr = 1;
-        }
+    void *lib = gmsh_open();
+    void *p = lib ? dlsym(lib, name) : NULL;
+    if (lib) {
+        dlclose(lib); /* RTLD_NODELETE: it stays loaded */
+    }
+    if (!p && ierr) {
+        *ierr = 1;
     }
     return p;
 }
@@ -153,20 +142,27 @@ static void *gmsh_symbol(const char *name, int *ierr)
 TF_GMSH_VOID_CALLS(TF_GMSH_DEFINE_VOID)
 TF_GMSH_INT_CALLS(TF_GMSH_DEFINE_INT)
 
-/* The loader's message while it has one; gmsh's own otherwise. */
+/* gmsh's last error, or the loader's when libgmsh cannot be used. */
 void gmshLoggerGetLastError(char **error, int *ierr)
 {
     void *p = gmsh_symbol("gmshLoggerGetLastError", ierr);
-    if (gmsh_error[0] || !p) {
-        *error = malloc(strlen(gmsh_error) + 1);
-        if (*error) {
-            memcpy(*error, gmsh_error, strlen(gmsh_error) + 1);
-        }
+    if (p) {
+        void (*fn)(char **, int *);
+        memcpy(&fn, &p, sizeof fn);
+        fn(error, ierr);
         return;
     }
-    void (*fn)(char **, int *);
-    memcpy(&fn, &p, sizeof fn);
-    fn(error, ierr);
+    void *lib = gmsh_open();
+    const char *why = lib ? "a function is missing" : dlerror();
+    if (lib) {
+        dlclose(lib);
+    }
+    why = why ? why : "no reason given";
+    const size_t n = strlen(TF_GMSH_SONAME) + strlen(why) + 32;
+    *error = malloc(n);
+    if (*error) {
+        snprintf(*error, n, "cannot use gmsh (%s): %s", TF_GMSH_SONAME, why);
+    }
 }
 
 /* gmsh allocates what it returns with malloc (gmshc.h: "free with
