@@ -64,10 +64,27 @@ $(RG)/probe.bundle: $(RG)/gen_region
 	$(call say,GEN)
 	$(Q)$< bundle 12 20261207 $@ >/dev/null
 
-check-insncount-region: $(RG)/probe_region $(RG)/probe.bundle
+# One path per tick over a long random palpation (tests/region/tick_paths.c):
+# libtfit with GCC's basic-block hooks, TICK_PATHS ticks shared among the
+# shipped block48 region and the probe bundle's twelve regions.
+TICK_PATHS ?= 1000000
+$(eval $(call tfit_lib,tracepc,$(CC),-O2 -fsanitize-coverage=trace-pc,,check))
+$(RG)/tick_paths: tests/region/tick_paths.c tests/region/tick_control.c tests/region/region_read.h \
+    tests/region/region_bundle.h coeffs/block48_region.h coeffs/block48_region_golden.h \
+    $(B)/tracepc/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O2 -fsanitize-coverage=trace-pc -c tests/region/tick_control.c \
+	  -o $(RG)/tick_control.o
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -Itests/region -Icoeffs \
+	  -DTFIT_BLOCK48_REGION_IMPLEMENTATION $< $(RG)/tick_control.o $(B)/tracepc/libtfit.a -lm -o $@
+
+check-insncount-region: $(RG)/probe_region $(RG)/probe.bundle $(RG)/tick_paths
 	@echo "== instructions per call of the region entry points (callgrind), every golden input and state =="
 	@tests/region/insncount.sh $(RG)/probe_region $(RG)/probe.bundle $(RG)/insncount
-	@echo "ok: one instruction count per region model and entry point, whatever the tip, force and state"
+	@echo "== one sequence of basic blocks per call over $(TICK_PATHS) ticks of a random palpation =="
+	@$(RG)/tick_paths $(RG)/probe.bundle $(TICK_PATHS) 20261207
+	@echo "ok: one instruction count per region model and entry point, whatever the tip, force and state; one path per tick over $(TICK_PATHS) ticks"
 
 # --- on the device: QEMU (M4F, M7 and the other builds of check-qemu) --------------
 $(RG)/gen/regions.h: $(RG)/gen_region
