@@ -259,5 +259,5 @@ check-cli: $(B)/bin/tissuefit
 	@tests/cli/cli.sh $(B)/bin/tissuefit
 	@echo "== tissuefit eval: $(call check_len,every shipped header's,the shipped headers' (short: not the heart's and the stomach's)) golden vectors through a CSV, and the refusals =="
 	@EVAL_HEADERS="$(EVAL_HEADERS)" tests/cli/eval.sh $(B)/bin/tissuefit
-	@echo "== material regions: a two-material bar against its exact solution, the refusals =="
+	@echo "== material regions: a two-material bar against its exact solution, Newton with a neo-Hookean sphere, the refusals =="
 	@tests/solver/inclusions.sh $(B)/bin/tissuefit

@@ -15,7 +15,7 @@
 /* Whether point x lies in inclusion c (boundary included). */
 int tf_inclusion_holds(const tf_inclusion *c, const double x[3]);
 
-/* The Lame parameters at x (p's inclusions are linear elastic). */
+/* The small-strain Lame parameters at x (the linear solvers). */
 tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3]);
 
 #endif /* TF_INCLUSIONS_H */

@@ -101,7 +101,7 @@ typedef struct tf_region {
 
 /* A material region (an inclusion: a nodule, a vessel): a ball, an
  * ellipsoid (axes along x, y, z) or a box of the body with its own material; where inclusions overlap the first
- * listed holds.  Linear elasticity only (inclusions.h). */
+ * listed holds.  Its law is the body's (scene_build.c), its parameters its own.  */
 #define TF_INCLUSIONS_MAX 8
 #define TF_INCLUSION_NAME_MAX 32
 typedef struct tf_inclusion {

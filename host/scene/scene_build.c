@@ -275,16 +275,15 @@ static int inclusions(const sd_scene *doc, tf_problem *s, sd_issue *is)
         }
         s->n_inclusions = k + 1;
     }
-    /* what the solvers take (solvers/cell_stiffness.h): linear elasticity
-     * in the body and in every inclusion */
+    /* what the solvers take: each inclusion of the body's law, its own
+     * parameters (solvers/cell_stiffness.h for the linear law, the Newton
+     * solvers' per-point materials, solvers/nonlinear/nl_model.c) */
     for (size_t k = 0; k < s->n_inclusions; ++k) {
         const tf_material *m = &s->inclusions[k].material;
-        const unsigned lin = TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE;
-        if ((tf_material_caps(m) & lin) != TF_MATERIAL_HOOKE ||
-            (tf_material_caps(&s->material) & lin) != TF_MATERIAL_HOOKE) {
+        if (strcmp(tf_material_name(m), tf_material_name(&s->material)) != 0) {
             return sd_fail(is, at(p, sizeof p, "inclusions", k, "material.law"),
-                           "not yet: material regions are solved for linear elasticity only "
-                           "(the body's law is %s, this inclusion's %s)",
+                           "not yet: a material region's law must be the body's (the body's "
+                           "law is %s, this inclusion's %s)",
                            tf_material_name(&s->material), tf_material_name(m));
         }
     }

@@ -51,12 +51,16 @@
 /* One thread's buffers for one cell. */
 typedef struct cell_buf {
     double *dl, *bs, *cbs, *gs, *sgs, *hs, *hc, *dj, *hv, *sv, *ms, *o;
-    double *pt;   /* per point: F(9) S(6) C(36) J, q~, kappa, P(9) */
+    double *pt;   /* per point: F(9) S(6) C(36) J, q~, kappa, P(9), c(6), lambda_v, material */
 } cell_buf;
 
 #define PT_STRIDE 72
-/* per point: F, S (Voigt), C, J - 1, q~, kappa, P, c (Voigt: d theta = j c . dE) */
-enum { PT_F = 0, PT_S = 9, PT_C = 15, PT_J = 51, PT_Q = 52, PT_KAPPA = 53, PT_P = 54, PT_CV = 63 };
+/* per point: F, S (Voigt), C, J - 1, q~, kappa, P, c (Voigt: d theta = j c . dE), its
+ * material's lambda_v and the material's index (nl_internal.h: mats) */
+enum {
+    PT_F = 0, PT_S = 9, PT_C = 15, PT_J = 51, PT_Q = 52, PT_KAPPA = 53, PT_P = 54, PT_CV = 63,
+    PT_LAMBDA = 69, PT_MAT = 70
+};
 
 static int buf_init(cell_buf *b, size_t np, size_t m)
 {
@@ -175,7 +179,10 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
         double det = tf_det3(F);
         const double *hold = s->hist + (c * np + p) * s->hb;
         double *hnew = s->hist_new + (c * np + p) * s->hb;
-        int rc = det > 0 ? tf_material_eval(&s->mat, F, dt, hold, hnew, pt + PT_S,
+        const unsigned mat = nl_point_mat(s, c * np + p);
+        pt[PT_LAMBDA] = s->lambda_m[mat];
+        pt[PT_MAT] = mat;
+        int rc = det > 0 ? tf_material_eval(&s->mats[mat], F, dt, hold, hnew, pt + PT_S,
                                             tangent ? pt + PT_C : NULL, NULL)
                          : TF_MAT_INVERTED;
         if (rc != TF_MAT_OK) {
@@ -224,24 +231,29 @@ static int cell_points(const nl_solver *s, size_t c, const double *G, size_t m, 
 }
 
 /* The volumetric correction's pressures q~ and their factor kappa = dq~/dq
- * (nl_assemble's header). */
+ * (nl_assemble's header).  A cell an inclusion cuts averages J over each
+ * material's points apart (as the linear B-bar, solvers/cell_stiffness.c):
+ * Jbar_k over material k's points, with its own lambda_v. */
 static void cell_correction(const nl_solver *s, size_t c, const double *w, double dt,
                             cell_buf *b)
 {
     size_t np = s->np;
-    double vol = 0, jbar = 0;
+    double vol[1 + TF_INCLUSIONS_MAX] = {0}, jbar[1 + TF_INCLUSIONS_MAX] = {0};
     for (size_t p = 0; p < np; ++p) {
-        vol += w[p];
-        jbar += w[p] * b->pt[p * PT_STRIDE + PT_J];
+        const size_t k = (size_t)b->pt[p * PT_STRIDE + PT_MAT];
+        vol[k] += w[p];
+        jbar[k] += w[p] * b->pt[p * PT_STRIDE + PT_J];
     }
-    jbar /= vol;
+    for (size_t k = 0; k < s->n_mats; ++k) {
+        jbar[k] = vol[k] > 0 ? jbar[k] / vol[k] : 0;
+    }
     double decay = 1, phi1 = 1, phi2;
     if (s->relaxes) {
         tf_relax_factors(dt / s->tau, &decay, &phi1, &phi2);
     }
     for (size_t p = 0; p < np; ++p) {
         double *pt = b->pt + p * PT_STRIDE;
-        double q = s->lambda_v * (jbar - pt[PT_J]);
+        double q = pt[PT_LAMBDA] * (jbar[(size_t)pt[PT_MAT]] - pt[PT_J]);
         pt[PT_Q] = q;
         pt[PT_KAPPA] = 1;
         if (s->relaxes && s->lambda_v != 0) {
@@ -289,7 +301,7 @@ static void material_matrix(const nl_solver *s, const double *pt, double ce[36])
 {
     const double *C = pt + PT_C, *cv = pt + PT_CV;
     double j = s->small || s->trace_volume ? 1 : 1 + pt[PT_J];
-    double f = s->lambda_v * pt[PT_KAPPA] * j * j;
+    double f = pt[PT_LAMBDA] * pt[PT_KAPPA] * j * j;
     for (int k = 0; k < 36; ++k) {
         ce[k] = C[k] - f * cv[k / 6] * cv[k % 6];
     }
@@ -419,24 +431,37 @@ static void geometric(const nl_solver *s, const double *G, const double *w, size
     }
 }
 
-/* The volumetric correction's tangent into kc. */
+/* The volumetric correction's tangent into kc: per material of the cell
+ * (cell_correction), f s_k s_k^T / V_k, s_k the sum of w dJ over its points. */
 static void correction_tangent(const nl_solver *s, const double *w, size_t m, cell_buf *b,
                                double *kc)
 {
     size_t np = s->np, m3 = 3 * m;
-    double vol = 0, kappa = b->pt[PT_KAPPA];
-    memset(b->sv, 0, m3 * sizeof *b->sv);
-    for (size_t p = 0; p < np; ++p) {
-        const double *dj = b->dj + p * m3;
-        vol += w[p];
-        for (size_t q = 0; q < m3; ++q) {
-            b->sv[q] += w[p] * dj[q];
+    double kappa = b->pt[PT_KAPPA];
+    unsigned done = 0; /* materials added, a bit each */
+    for (size_t first = 0; first < np; ++first) {
+        const unsigned k = (unsigned)b->pt[first * PT_STRIDE + PT_MAT];
+        if (done & (1u << k)) {
+            continue;
         }
+        done |= 1u << k;
+        double vol = 0;
+        memset(b->sv, 0, m3 * sizeof *b->sv);
+        for (size_t p = first; p < np; ++p) {
+            if ((unsigned)b->pt[p * PT_STRIDE + PT_MAT] != k) {
+                continue;
+            }
+            const double *dj = b->dj + p * m3;
+            vol += w[p];
+            for (size_t q = 0; q < m3; ++q) {
+                b->sv[q] += w[p] * dj[q];
+            }
+        }
+        /* f s s^T / V; the pointwise - f sum_g w dJ dJ^T is in the material
+         * matrix (material_matrix) */
+        double f = kappa * s->lambda_m[k];
+        cblas_dger(CblasColMajor, (int)m3, (int)m3, f / vol, b->sv, 1, b->sv, 1, kc, (int)m3);
     }
-    /* f s s^T / V; the pointwise - f sum_g w dJ dJ^T is in the material
-     * matrix (material_matrix) */
-    double f = kappa * s->lambda_v;
-    cblas_dger(CblasColMajor, (int)m3, (int)m3, f / vol, b->sv, 1, b->sv, 1, kc, (int)m3);
     if (s->small || s->trace_volume) {
         return;
     }
@@ -484,7 +509,7 @@ static void cell_tangent(const nl_solver *s, const double *G, const double *w, s
     if (!s->small) {
         geometric(s, G, w, m, b, kc);
     }
-    if (s->lambda_v != 0) {
+    if (s->vol_corr) {
         correction_tangent(s, w, m, b, kc);
     }
 }
@@ -595,7 +620,7 @@ static int nitsche_point(nl_solver *s, size_t q, const double *d, const nl_targe
     double g[3], F[9], Sv[6], Cv[36], A[81], St[9], P[9], tr[3];
     boundary_state(s, q, d, t->scale, g, F);
     double det = tf_det3(F);
-    int rc = det > 0 ? tf_material_eval(&s->mat, F, dt, s->bhist + q * s->nh,
+    int rc = det > 0 ? tf_material_eval(&s->mats[nl_bpoint_mat(s, q)], F, dt, s->bhist + q * s->nh,
                                         s->bhist_new + q * s->nh, Sv, Cv, NULL)
                      : TF_MAT_INVERTED;
     if (rc != TF_MAT_OK) {
@@ -910,7 +935,8 @@ int nl_region_force(nl_solver *s, size_t region, double force[3])
         double f = s->base.opts.bc == TF_BC_PENALTY ? s->bc_factor : 0;
         if (s->base.opts.bc == TF_BC_NITSCHE) {
             double *h = s->bhist + q * s->nh;
-            if (tf_material_eval(&s->mat, F, 0, h, s->bhist_new + q * s->nh, Sv, NULL, NULL) !=
+            if (tf_material_eval(&s->mats[nl_bpoint_mat(s, q)], F, 0, h, s->bhist_new + q * s->nh,
+                                 Sv, NULL, NULL) !=
                 TF_MAT_OK) {
                 return tf_fail(s->base.ctx, "J <= 0 at the boundary point (%g, %g, %g) mm",
                                bp->x[0], bp->x[1], bp->x[2]);

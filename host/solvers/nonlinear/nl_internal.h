@@ -69,8 +69,16 @@ typedef struct nl_solver {
     tf_solver base; /* first */
     tf_shape sh;
     int shape_ok, efg, weak, small, bbar, vci, unsym;
-    tf_material mat;
-    tf_lame lin;        /* small-strain moduli of the initial response */
+    tf_material mat;    /* the body's (mats[0]) */
+    /* Material regions (problem/inclusions.h): mats[1 + k] is inclusion k's,
+     * of the body's law; pmat (per cell point) and bmat (per boundary point)
+     * the index of each point's material, NULL when the body is one material. */
+    tf_material mats[1 + TF_INCLUSIONS_MAX];
+    double lambda_m[1 + TF_INCLUSIONS_MAX]; /* each material's lambda_v */
+    size_t n_mats;
+    int vol_corr;       /* some material's lambda_v is not 0 */
+    unsigned char *pmat, *bmat;
+    tf_lame lin;        /* small-strain moduli of the initial response (the body's) */
     double lambda_v;    /* modulus of the volumetric correction (B-bar for finite strain) */
     int trace_volume;   /* the correction's volume measure is tr E (TF_VOLUME_GREEN_TRACE),
                          * else J - 1 */
@@ -125,6 +133,16 @@ typedef struct nl_solver {
     nl_stats st;
     double t_setup_shape;
 } nl_solver;
+
+/* The material of cell point p (c np + its index) and of boundary point q. */
+static inline unsigned nl_point_mat(const nl_solver *s, size_t p)
+{
+    return s->pmat ? s->pmat[p] : 0u;
+}
+static inline unsigned nl_bpoint_mat(const nl_solver *s, size_t q)
+{
+    return s->bmat ? s->bmat[q] : 0u;
+}
 
 /* ---- nl_model.c: cells, gradients, pattern, loads ---- */
 int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx);

@@ -15,6 +15,7 @@
 #include "solvers/assemble.h"
 #include "solvers/cell_gradients.h"
 #include "solvers/load_vector.h"
+#include "problem/inclusions.h"
 #include "solvers/nonlinear/nl_internal.h"
 
 /* Gradients of every cell, in parallel (each cell its own slice). */
@@ -253,18 +254,102 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
     return 0;
 }
 
+/* Material regions: each inclusion's material, of the body's law (the
+ * solver's constants, law_constants, are the law's: its capabilities,
+ * history and volume measure), and each one's volumetric modulus. */
+static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
+{
+    s->mats[0] = s->mat;
+    s->n_mats = 1 + p->n_inclusions;
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        const tf_inclusion *inc = &p->inclusions[k];
+        const char *law = tf_material_name(&inc->material), *body = tf_material_name(&s->mat);
+        if (strcmp(law, body) != 0) {
+            return tf_fail(ctx,
+                           "not yet: inclusion '%s' is %s in a %s body: the nonlinear solvers take "
+                           "material regions of the body's law, with their own parameters",
+                           inc->name, law, body);
+        }
+        s->mats[1 + k] = inc->material;
+    }
+    if (p->n_inclusions > 0 && s->relaxes) {
+        return tf_fail(ctx, "not yet: material regions in a law with history (%s): its "
+                            "volumetric relaxation is the body's",
+                       tf_material_name(&s->mat));
+    }
+    if (p->n_inclusions > 0 && s->vci) {
+        return tf_fail(ctx, "not yet: material regions with VCI integration (solver.integration: "
+                            "gauss integrates them point by point)");
+    }
+    for (size_t k = 0; k < s->n_mats; ++k) {
+        s->lambda_m[k] = s->bbar ? tf_material_lame(&s->mats[k]).lambda : 0;
+        s->vol_corr |= s->lambda_m[k] != 0;
+    }
+    return 0;
+}
+
+/* The index into mats of inclusion k's material: the first of the body's
+ * and the inclusions' with the same parameters (a cell is averaged per
+ * material, cell_correction, and an inclusion of the body's own material
+ * must leave the solve as it was, as in the linear B-bar). */
+static unsigned material_index(const nl_solver *s, size_t k)
+{
+    for (size_t j = 0; j <= k; ++j) {
+        const tf_material *a = &s->mats[j], *b = &s->mats[1 + k];
+        if (a->law == b->law && memcmp(a->p, b->p, a->law->n_params * sizeof *a->p) == 0) {
+            return (unsigned)j;
+        }
+    }
+    return (unsigned)(1 + k);
+}
+
+/* The material index of every cell point and boundary point: the first
+ * inclusion holding it, else the body (0). */
+static unsigned material_at(const nl_solver *s, const tf_problem *p, const double x[3])
+{
+    for (size_t k = 0; k < p->n_inclusions; ++k) {
+        if (tf_inclusion_holds(&p->inclusions[k], x)) {
+            return material_index(s, k);
+        }
+    }
+    return 0;
+}
+
+static int material_points(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
+{
+    if (p->n_inclusions == 0) {
+        return 0;
+    }
+    size_t n = s->ncell * s->np;
+    s->pmat = malloc(n + 1);
+    s->bmat = malloc(s->bnd.n + 1);
+    if (s->pmat == NULL || s->bmat == NULL) {
+        return tf_fail(ctx, "out of memory");
+    }
+    for (size_t c = 0; c < s->ncell; ++c) {
+        for (size_t q = 0; q < s->np; ++q) {
+            double x[3], w;
+            tf_cells_point(&s->sh.cells, c, q, x, &w);
+            s->pmat[c * s->np + q] = (unsigned char)material_at(s, p, x);
+        }
+    }
+    for (size_t q = 0; q < s->bnd.n; ++q) {
+        s->bmat[q] = (unsigned char)material_at(s, p, s->bnd.pt[q].x);
+    }
+    return 0;
+}
+
 int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
     double lo[3], hi[3];
-    if (p->n_inclusions > 0) {
-        return tf_fail(ctx, "not yet: material regions (inclusions) in the nonlinear solver; "
-                            "they are solved for linear elasticity by the linear Galerkin solvers");
-    }
     s->mat = p->material;
     s->bbar = o->volumetric == TF_VOLUMETRIC_CELL;
     s->vci = o->integration == TF_INTEGRATION_VCI;
     law_constants(s);
+    if (region_materials(s, p, ctx) != 0) {
+        return -1;
+    }
     tf_problem_bounds(p, lo, hi);
     if (tf_shape_init(&s->sh, &p->cloud, lo, hi, o) != 0) {
         return tf_fail(ctx, "out of memory");
@@ -278,6 +363,9 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     }
     s->ncell = tf_cells_count(&s->sh.cells);
     s->np = tf_cells_points(&s->sh.cells);
+    if (material_points(s, p, ctx) != 0) {
+        return -1;
+    }
     tf_assembly_extra ex = {s->vci, s->weak ? &s->bnd : NULL, NULL};
     openblas_set_num_threads(1);
     if (tf_assemble_pattern(ctx, &s->sh, &ex, tf_ctx_threads(ctx), &s->cs, &s->bp, &s->k) != 0) {
@@ -325,7 +413,7 @@ void nl_model_free(nl_solver *s)
     void *bufs[] = {s->kf_at, s->gptr,  s->grad,  s->wts,       s->kskew, s->kbc,  s->d,      s->hist,
                     s->hist_new, s->bhist, s->bhist_new, s->bptr, s->bidx, s->bphi, s->bdphi,
                     s->f0,    s->basis, s->r,         s->fint,  s->du,   s->dtrial, s->rtrial,
-                    s->wk,    s->qs,    s->qy,        s->qrho};
+                    s->wk,    s->qs,    s->qy,        s->qrho, s->pmat, s->bmat};
     for (size_t k = 0; k < sizeof bufs / sizeof bufs[0]; ++k) {
         free(bufs[k]);
     }
