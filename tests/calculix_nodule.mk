@@ -16,7 +16,9 @@
 #                               beside it); build/calculix/nodule.md
 #   check-nodule-calculix       (make check) block48's sphere at 41 x 41 x 9
 #                               within 3 % of the finest level at the contact
-#                               and over the outputs (L2); make check-full
+#                               and over the outputs (L2), and in
+#                               neo-Hookean tissue at 21 x 21 x 5 against
+#                               CalculiX NLGEOM at four load levels; make check-full
 #                               adds the liver pressed over and beside its
 #                               nodule (two solves of about 75 s of CPU each):
 #                               the one over it within 3 %, and the nodule's
@@ -47,7 +49,26 @@ NODULE_LIVER_CLOUDS := 9:9 6:6 4.5:4.5 6:4.5 6:3 6:2
 NODULE_BOUND := 0.03
 NODULE_SIGNAL_BOUND := 0.10
 
-.PHONY: calculix-nodule calculix-nodule-table check-nodule-calculix
+# Large deformation (tests/calculix/scenes/block48_sphere_nh.yaml: both
+# materials neo-Hookean): CalculiX NLGEOM at the levels below, the normal
+# force ramped to NODULE_NH_FORCE and printed at NODULE_NH_STEPS equal
+# levels (organ_deck --nlgeom), against the Newton solves at the grids
+# below (tests/calculix/organ_nl_compare.sh).
+#   make calculix-nodule-nh        the CalculiX runs (h24r0 3.3 minutes,
+#                                  h12r0 10, one thread); rewrites
+#                                  tests/calculix/data/block48_sphere_nh_*.csv
+#   make calculix-nodule-nh-table  the other level and the meshless grids
+#                                  against the finest level, at every load
+#                                  level; build/calculix/nodule_nh.md
+NODULE_NH := tests/calculix/scenes/block48_sphere_nh.yaml
+NODULE_NH_FORCE := 0,0,-3
+NODULE_NH_STEPS := 4
+NODULE_NH_LEVELS := h24r0:2.4:0 h12r0:1.2:0
+NODULE_NH_FINEST := h12r0
+NODULE_NH_GRIDS := 11,11,3 21,21,5 41,41,9
+
+.PHONY: calculix-nodule calculix-nodule-table check-nodule-calculix calculix-nodule-nh \
+        calculix-nodule-nh-table
 CHECKS += check-nodule-calculix
 
 calculix-nodule: $(CX)/organ_deck | deps-calculix
@@ -85,10 +106,14 @@ calculix-nodule-table: $(CX)/organ_compare
 	} | tee $(CX)/nodule.md
 
 NODULE_BOX_CHECK_GRID := 41,41,9
-check-nodule-calculix: $(CX)/organ_compare $(CX)/organ_deck
+NODULE_NH_CHECK_GRID := 21,21,5
+check-nodule-calculix: $(CX)/organ_compare $(CX)/organ_deck $(B)/bin/tissuefit
 	@echo "== material regions against CalculiX meshes that conform to them (finest levels; bound $(NODULE_BOUND)$(call check_len,$(comma) the liver's signal $(NODULE_SIGNAL_BOUND),; short: block48 only$(comma) make check-full adds the liver)) =="
 	@$< $(CX_DATA)/block48_sphere_$(NODULE_BOX_FINEST).csv $(NODULE_BOX) $(NODULE_BOUND) \
 	  --set geometry.grid=$(NODULE_BOX_CHECK_GRID)
+	@echo "== the same sphere in neo-Hookean tissue against CalculiX NLGEOM ($(NODULE_NH_FINEST)), Newton at $(NODULE_NH_CHECK_GRID), every load level =="
+	@BOUND=$(NODULE_BOUND) tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit $(NODULE_NH) $(NODULE_NH_FORCE) \
+	  $(NODULE_NH_STEPS) $(CX_DATA)/block48_sphere_nh_$(NODULE_NH_FINEST).csv $(NODULE_NH_CHECK_GRID)
 	$(call check_len,@$< --signal $(NODULE_OVER) $(NODULE_BESIDE) \
 	  $(CX_DATA)/liver_nodule_$(NODULE_LIVER_FINEST).csv \
 	  $(CX_DATA)/liver_nodule_beside_$(NODULE_LIVER_FINEST).csv --bound $(NODULE_SIGNAL_BOUND) \
@@ -98,4 +123,32 @@ check-nodule-calculix: $(CX)/organ_compare $(CX)/organ_deck
 	@got=$$(awk '$$1 == "**" && $$2 == "SIZE" { print $$3 "," $$4 "," $$5; exit }' $(CX)/check_sphere_h24r0.inp); \
 	  want=$$(awk -F, '$$1 == "h24r0" { print $$5 "," $$6 "," $$7 }' $(CX_DATA)/block48_sphere_runs.csv); \
 	  if [ "$$got" != "$$want" ]; then echo "organ_deck: h24r0 elements,nodes,dofs $$got, the reference's $$want"; exit 1; fi
-	@echo "ok: block48's sphere$(call check_len, and the liver's nodule (its signal within $(NODULE_SIGNAL_BOUND)),) within $(NODULE_BOUND) of CalculiX"
+	@echo "== the deck writer: an NLGEOM deck of block48_sphere_nh has its neo-Hookean materials, one ramped step and its load levels =="
+	@$(CX)/organ_deck $(NODULE_NH) --spacing 2.4 $(NODULE_BOX_ARGS) --nlgeom $(NODULE_NH_FORCE) \
+	  --levels $(NODULE_NH_STEPS) > $(CX)/check_sphere_nh_h24r0.inp
+	@n=$$(grep -c '^\*HYPERELASTIC, NEO HOOKE$$' $(CX)/check_sphere_nh_h24r0.inp); \
+	  s=$$(grep -c '^\*STEP, NLGEOM' $(CX)/check_sphere_nh_h24r0.inp); \
+	  l=$$(grep -c '^\*\* STEP [0-9]* l[0-9]' $(CX)/check_sphere_nh_h24r0.inp); \
+	  if [ "$$n,$$s,$$l" != "2,1,$(NODULE_NH_STEPS)" ]; then \
+	    echo "organ_deck --nlgeom: $$n neo-Hookean materials, $$s NLGEOM steps, $$l load levels"; exit 1; fi
+	@if $(CX)/organ_deck $(NODULE_BOX) --spacing 2.4 $(NODULE_BOX_ARGS) --nlgeom 0,0,-1 >/dev/null 2>&1; then \
+	  echo "organ_deck wrote an NLGEOM deck of a linear scene"; exit 1; fi
+	@echo "ok: block48's sphere$(call check_len, and the liver's nodule (its signal within $(NODULE_SIGNAL_BOUND)),) within $(NODULE_BOUND) of CalculiX, linear and neo-Hookean"
+
+calculix-nodule-nh: $(CX)/organ_deck | deps-calculix
+	$(Q)DECK_ARGS="$(NODULE_BOX_ARGS) --nlgeom $(NODULE_NH_FORCE) --levels $(NODULE_NH_STEPS)" \
+	  tests/calculix/run_organ.sh $< $(NODULE_NH) $(CX)/nodule/block48_sphere_nh $(CX_DATA) \
+	  block48_sphere_nh $(NODULE_NH_LEVELS)
+	@$(MAKE) --no-print-directory calculix-nodule-nh-table
+
+calculix-nodule-nh-table: $(B)/bin/tissuefit
+	@mkdir -p $(CX)
+	@set -e; { \
+	  echo "CalculiX levels against $(NODULE_NH_FINEST):"; echo; \
+	  for l in $(filter-out $(NODULE_NH_FINEST),$(foreach l,$(NODULE_NH_LEVELS),$(firstword $(subst :, ,$(l))))); do \
+	    tests/calculix/organ_nl_compare.sh --csv $(CX_DATA)/block48_sphere_nh_$$l.csv \
+	      $(CX_DATA)/block48_sphere_nh_$(NODULE_NH_FINEST).csv $$l; done; \
+	  echo; echo "the Newton solves (rpim-newton) against $(NODULE_NH_FINEST):"; echo; \
+	  tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit $(NODULE_NH) $(NODULE_NH_FORCE) $(NODULE_NH_STEPS) \
+	    $(CX_DATA)/block48_sphere_nh_$(NODULE_NH_FINEST).csv $(NODULE_NH_GRIDS); \
+	} | tee $(CX)/nodule_nh.md

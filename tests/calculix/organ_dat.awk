@@ -1,7 +1,8 @@
 # organ_dat.awk — the displacements of an organ deck's output vertices in
-# its three unit-force steps, as CSV (vertex,x,y,z,case,ux,uy,uz,contact;
-# vertex = the mesh file's vertex index as tissuefit reads it; contact = 1
-# on the contact vertex's rows).
+# its three unit-force steps (or, for an --nlgeom deck, at its printed load
+# levels l1 .. lK), as CSV (vertex,x,y,z,case,ux,uy,uz,contact; vertex =
+# the mesh file's vertex index as tissuefit reads it; contact = 1 on the
+# contact vertex's rows).
 #
 #   awk -f organ_dat.awk DECK.inp DECK.dat > level.csv
 #
@@ -40,12 +41,12 @@ inside && NF == 4 && ($1 in vertex) {
 }
 
 END {
-    if (n_out == 0 || steps != 3 || block != 3) {
+    if (n_out == 0 || steps < 1 || block != steps) {
         printf "organ_dat: %d OUT vertices, %d steps in the deck, %d displacement blocks\n", n_out, steps, block > "/dev/stderr"
         exit 1
     }
     print "vertex,x,y,z,case,ux,uy,uz,contact"
-    for (s = 1; s <= 3; s++) {
+    for (s = 1; s <= steps; s++) {
         for (j = 1; j <= n_out; j++) {
             node = order[j]; key = s SUBSEP node
             if (!(key in ux)) { printf "organ_dat: step %d lacks node %s\n", s, node > "/dev/stderr"; bad = 1; continue }

@@ -5,7 +5,7 @@
  * (C3D10), one *STEP per unit force (1 N along x, y and z).
  *
  *   organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]
- *              [--inclusion-spacing HI] [--quantum Q]
+ *              [--inclusion-spacing HI] [--quantum Q] [--nlgeom FX,FY,FZ [--levels K]]
  *
  * Mesh (geometry/volume_mesh_tet10.h): the scene's surface as it is (every
  * vertex a node), the interior at spacing H mm (--grade G: G mm within
@@ -45,6 +45,16 @@
  * triangles (refined faces subdivide them); the deck writer checks that
  * the faces' area equals the patch's to 1e-9.
  *
+ * Large deformation (--nlgeom, a neo-Hookean scene): one step instead,
+ * NLGEOM, the force F ramped from zero and the outputs printed at K equal
+ * load levels (*TIME POINTS; default 4), CalculiX's automatic increments at
+ * most a level each and Newton held to 1e-6 (*CONTROLS, as box_deck.c's
+ * NLGEOM reference); each material *HYPERELASTIC, NEO HOOKE with C10 = mu/2
+ * and D1 = 2/K (the energy host/materials/neohooke.c writes down).  The
+ * load is dead (*CLOAD keeps its direction).  Each printed level is
+ * described by a "** STEP k lk fx fy fz" line (its force), so that the
+ * extraction reads it as a case.
+ *
  * Comment lines the extraction reads (CalculiX ignores lines starting **):
  *   ** SIZE elements nodes dofs
  *   ** STEP n case fx fy fz
@@ -73,6 +83,8 @@ static const int face[4][6] = {
 typedef struct options {
     const char *scene, *solver;
     double spacing, inclusion_spacing, quantum;
+    int nlgeom, levels;  /* --nlgeom: one ramped step to force, printed at levels */
+    double force[3];
     unsigned refine;
     double grade; /* mm near the contact vertex, 0: none */
 } options;
@@ -80,7 +92,8 @@ typedef struct options {
 static int usage(void)
 {
     fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n"
-                    "                  [--inclusion-spacing HI] [--quantum Q]\n");
+                    "                  [--inclusion-spacing HI] [--quantum Q]\n"
+                    "                  [--nlgeom FX,FY,FZ [--levels K]]\n");
     return 2;
 }
 
@@ -92,6 +105,8 @@ static int parse(int argc, char **argv, options *o)
                                          {"grade", required_argument, NULL, 'g'},
                                          {"inclusion-spacing", required_argument, NULL, 'i'},
                                          {"quantum", required_argument, NULL, 'q'},
+                                         {"nlgeom", required_argument, NULL, 'n'},
+                                         {"levels", required_argument, NULL, 'l'},
                                          {0}};
     int c;
     char *end;
@@ -123,13 +138,24 @@ static int parse(int argc, char **argv, options *o)
             if (*end || !(o->grade > 0)) {
                 return -1;
             }
+        } else if (c == 'n') {
+            o->nlgeom = sscanf(optarg, "%lf,%lf,%lf", &o->force[0], &o->force[1], &o->force[2]) == 3;
+            if (!o->nlgeom) {
+                return -1;
+            }
+        } else if (c == 'l') {
+            o->levels = (int)strtol(optarg, &end, 10);
+            if (*end || o->levels < 1 || o->levels > 100) {
+                return -1;
+            }
         } else {
             return -1;
         }
     }
-    if (optind + 1 != argc || !(o->spacing > 0)) {
+    if (optind + 1 != argc || !(o->spacing > 0) || (o->levels && !o->nlgeom)) {
         return -1;
     }
+    o->levels = o->nlgeom && o->levels == 0 ? 4 : o->levels;
     o->scene = argv[optind];
     return 0;
 }
@@ -474,6 +500,50 @@ static int write_outputs(const tf_tet10_mesh *q, const tf_problem *p, unsigned c
     return 0;
 }
 
+/* --nlgeom: one step, the force ramped to o->force, printed at o->levels
+ * equal levels (each described as a case), Newton to 1e-6. */
+static void write_nlgeom_step(const options *o, const double *weight, size_t nn, double area)
+{
+    const double dt = 1.0 / o->levels;
+    for (int k = 1; k <= o->levels; ++k) {
+        const double f = (double)k / o->levels;
+        printf("** STEP %d l%d %.17g %.17g %.17g\n", k, k, f * o->force[0], f * o->force[1],
+               f * o->force[2]);
+    }
+    printf("*TIME POINTS, NAME=RAMP\n");
+    for (int k = 1; k <= o->levels; ++k) {
+        printf("%.15g\n", (double)k / o->levels);
+    }
+    printf("*STEP, NLGEOM, INC=%d\n*STATIC%s%s\n%.15g,1.,%.15g,%.15g\n", 100 * o->levels,
+           o->solver ? ", SOLVER=" : "", o->solver ? o->solver : "", dt, dt * 1e-2, dt);
+    printf("*CONTROLS, PARAMETERS=FIELD\n1e-6,1e-6,,,1e-6\n*CLOAD, OP=NEW\n");
+    for (size_t i = 0; i < nn; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            if (weight[i] != 0 && o->force[a] != 0) {
+                printf("%zu, %d, %.12e\n", i + 1, a + 1, weight[i] / area * o->force[a]);
+            }
+        }
+    }
+    printf("*NODE PRINT, NSET=OUT, TIME POINTS=RAMP\nU\n*NODE PRINT, NSET=FIXED, TOTALS=ONLY, "
+           "TIME POINTS=RAMP\nRF\n*END STEP\n");
+}
+
+/* The material card of m: *ELASTIC, or with --nlgeom the neo-Hookean energy
+ * of the same small-strain moduli (C10 = mu / 2, D1 = 2 / K). */
+static void write_material(const options *o, const char *name, const tf_material *m)
+{
+    double young, poisson;
+    tf_material_moduli(m, &young, &poisson);
+    printf("*MATERIAL, NAME=%s\n", name);
+    if (!o->nlgeom) {
+        printf("*ELASTIC\n%.17g, %.17g\n", young, poisson);
+        return;
+    }
+    double mu = young / (2 * (1 + poisson)), bulk = young / (3 * (1 - 2 * poisson));
+    printf("** neo-Hooke: mu = %.15g MPa, K = %.15g MPa\n*HYPERELASTIC, NEO HOOKE\n%.15g, %.15g\n",
+           mu, bulk, mu / 2, 2 / bulk);
+}
+
 static void write_steps(const tf_problem *p, const double *weight, size_t nn, double area,
                         const char *solver)
 {
@@ -567,18 +637,20 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
     write_mesh(q);
     write_set("FIXED", fixed, q->nn);
     write_set("OUT", out, q->nn);
-    double young, poisson;
-    tf_material_moduli(&p->material, &young, &poisson);
-    printf("*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=TISSUE\n*ELASTIC\n%.17g, %.17g\n"
-           "*SOLID SECTION, ELSET=ORGAN, MATERIAL=TISSUE\n",
-           young, poisson);
+    printf("*BOUNDARY\nFIXED, 1, 3\n");
+    write_material(o, "TISSUE", &p->material);
+    printf("*SOLID SECTION, ELSET=ORGAN, MATERIAL=TISSUE\n");
     for (size_t k = 0; k < p->n_inclusions; ++k) {
-        tf_material_moduli(&p->inclusions[k].material, &young, &poisson);
-        printf("*MATERIAL, NAME=INC%zu\n*ELASTIC\n%.17g, %.17g\n"
-               "*SOLID SECTION, ELSET=INC%zu, MATERIAL=INC%zu\n",
-               k + 1, young, poisson, k + 1, k + 1);
+        char name[32];
+        snprintf(name, sizeof name, "INC%zu", k + 1);
+        write_material(o, name, &p->inclusions[k].material);
+        printf("*SOLID SECTION, ELSET=INC%zu, MATERIAL=INC%zu\n", k + 1, k + 1);
     }
-    write_steps(p, weight, q->nn, area, o->solver);
+    if (o->nlgeom) {
+        write_nlgeom_step(o, weight, q->nn, area);
+    } else {
+        write_steps(p, weight, q->nn, area, o->solver);
+    }
     free(weight);
     free(fixed);
     free(out);
@@ -600,6 +672,12 @@ int main(int argc, char **argv)
     }
     const tf_problem *p = &sc->problem;
     const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (o.nlgeom && strcmp(tf_material_name(&p->material), "neo-hookean") != 0) {
+        fprintf(stderr, "organ_deck: %s: --nlgeom writes a neo-Hookean scene's deck (this one is %s)\n",
+                o.scene, tf_material_name(&p->material));
+        tf_scene_free(sc);
+        return 2;
+    }
     int shape = p->n_contacts ? (int)p->contacts[0].patch.shape : -1;
     if (m ? shape != TF_PATCH_SURFACE : shape != TF_PATCH_RECT || !(o.quantum > 0)) {
         fprintf(stderr, "organ_deck: %s: needs an organ with a contact site, or a box with a "

@@ -1,0 +1,75 @@
+#!/bin/sh
+# organ_nl_compare.sh TISSUEFIT SCENE FX,FY,FZ K REF.csv GRID... — a neo-Hookean
+# box scene with its material regions against a CalculiX NLGEOM level
+# (organ_deck --nlgeom FX,FY,FZ --levels K, organ_dat.awk: the output
+# points' displacements at the load levels k F / K, cases l1 .. lK).  For
+# each meshless grid (geometry.grid, "nx,ny,nz") and each level k, the
+# Newton solve of the scene under k F / K at its contact site, and:
+#   contact  |u - u_ref| / |u_ref| at the reference's contact point;
+#   outputs  sqrt(sum |u - u_ref|^2 / sum |u_ref|^2) over its output points;
+# points matched by position (to 1e-4 mm; every output point must be a node
+# of the grid).  One markdown row per grid and level on stdout, and the
+# solve's seconds.  BOUND (environment, a fraction): exit 1 when a contact
+# or outputs error of the last grid exceeds it.
+#
+#   organ_nl_compare.sh --csv LEVEL.csv REF.csv LABEL   another CalculiX level
+#                                                 against REF, the same rows
+set -eu
+# errors LEVEL_CASE A.csv B.csv: "contact outputs" of A's case against B's
+# (A: organ_dat.awk rows, or a solve's node,x,y,z,ux,uy,uz with LEVEL_CASE "")
+errors() {
+    awk -F, -v lev="$1" '
+        function key(x, y, z) { return sprintf("%.4f,%.4f,%.4f", x, y, z) }
+        NR == FNR { if (FNR > 1 && (lev == "" || $5 == lev)) {
+                        u[key($2, $3, $4)] = lev == "" ? $5 " " $6 " " $7 : $6 " " $7 " " $8 }
+                    next }
+        FNR > 1 && $5 == (lev == "" ? cur : lev) {
+            k = key($2, $3, $4)
+            if (!(k in u)) { printf "no point at (%s)\n", k > "/dev/stderr"; bad = 1; next }
+            split(u[k], m, " ")
+            d = (m[1] - $6) ^ 2 + (m[2] - $7) ^ 2 + (m[3] - $8) ^ 2
+            r = $6 ^ 2 + $7 ^ 2 + $8 ^ 2
+            if ($9 == 1) { c = sqrt(d / r); seen = 1 }
+            sd += d; sr += r
+        }
+        END { if (bad || !seen || sr == 0) exit 1; printf "%.4f %.4f", c, sqrt(sd / sr) }' \
+        cur="$4" "$2" "$3"
+}
+pct() { awk -v x="$1" 'BEGIN { printf "%.2f %%", 100 * x }'; }
+if [ "${1:-}" = "--csv" ]; then
+    [ $# -eq 4 ] || { echo "usage: $0 --csv LEVEL.csv REF.csv LABEL" >&2; exit 2; }
+    echo "| level | load level | contact | outputs (L2) |"
+    echo "|---|---|---|---|"
+    for lev in $(awk -F, 'NR > 1 && !seen[$5]++ { print $5 }' "$3"); do
+        row=$(errors "$lev" "$2" "$3" "") || { echo "organ_nl_compare: $2: points do not match" >&2; exit 2; }
+        c=${row% *} o=${row#* }
+        echo "| $4 | $lev | $(pct "$c") | $(pct "$o") |"
+    done
+    exit 0
+fi
+[ $# -ge 6 ] || { echo "usage: $0 TISSUEFIT SCENE FX,FY,FZ K REF.csv GRID..." >&2; exit 2; }
+tool=$1 scene=$2 force=$3 levels=$4 ref=$5
+shift 5
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| grid | load (N) | contact | outputs (L2) | solve (s) |"
+echo "|---|---|---|---|---|"
+fail=0 last=
+for grid in "$@"; do last=$grid; done
+for grid in "$@"; do
+    k=1
+    while [ "$k" -le "$levels" ]; do
+        f=$(echo "$force" | awk -F, -v k="$k" -v K="$levels" '{ printf "%.17g,%.17g,%.17g", $1 * k / K, $2 * k / K, $3 * k / K }')
+        t0=$(date +%s.%N)
+        "$tool" -q solve "$scene" --set geometry.grid="$grid" --force "$f" --out "$tmp/u.csv"
+        secs=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+        row=$(errors "" "$tmp/u.csv" "$ref" "l$k") || { echo "organ_nl_compare: $grid at level $k: points do not match" >&2; exit 2; }
+        c=${row% *} o=${row#* }
+        echo "| $grid | $f | $(pct "$c") | $(pct "$o") | $secs |"
+        if [ -n "${BOUND:-}" ] && [ "$grid" = "$last" ]; then
+            awk -v c="$c" -v o="$o" -v b="$BOUND" 'BEGIN { exit !(c <= b && o <= b) }' || fail=1
+        fi
+        k=$((k + 1))
+    done
+done
+exit $fail
