@@ -9,7 +9,7 @@
  * scenes, headers, eval) and most tests never touch gmsh.  The definitions
  * below have gmshc.h's prototypes (a mismatch does not compile), so the
  * callers are unchanged.  The library is opened by its soname, which the
- * header's version gives, with RTLD_NODELETE: every call opens it (the
+ * header's version gives (or the path in $TISSUEFIT_GMSH), with RTLD_NODELETE: every call opens it (the
  * first loads it, the others find it loaded, in microseconds) and closes
  * it again, and it stays loaded, so that this file keeps no state.
  *
@@ -28,9 +28,17 @@
 #define TF_GMSH_SONAME \
     "libgmsh.so." TF_STR(GMSH_API_VERSION_MAJOR) "." TF_STR(GMSH_API_VERSION_MINOR)
 
+/* The library: $TISSUEFIT_GMSH when set (a gmsh built elsewhere), else the
+ * soname of the gmshc.h this file was compiled with. */
+static const char *gmsh_library(void)
+{
+    const char *path = getenv("TISSUEFIT_GMSH");
+    return path && path[0] ? path : TF_GMSH_SONAME;
+}
+
 static void *gmsh_open(void)
 {
-    return dlopen(TF_GMSH_SONAME, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+    return dlopen(gmsh_library(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
 }
 
 /* The address of gmsh's NAME, or NULL with *ierr = 1. */
@@ -158,10 +166,10 @@ void gmshLoggerGetLastError(char **error, int *ierr)
         dlclose(lib);
     }
     why = why ? why : "no reason given";
-    const size_t n = strlen(TF_GMSH_SONAME) + strlen(why) + 32;
+    const size_t n = strlen(gmsh_library()) + strlen(why) + 32;
     *error = malloc(n);
     if (*error) {
-        snprintf(*error, n, "cannot use gmsh (%s): %s", TF_GMSH_SONAME, why);
+        snprintf(*error, n, "cannot use gmsh (%s): %s", gmsh_library(), why);
     }
 }
 

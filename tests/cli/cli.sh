@@ -47,4 +47,12 @@ expect 0 "demo-model, quiet" -- "$tool" -q demo-model -o "$tmp/w/ok.h"
 [ -f "$tmp/w/ok.h" ] && [ -f "$tmp/w/ok_golden.h" ] || bad "outputs missing"
 ls "$tmp/w" | grep -q tmp && bad "temporary files left behind"
 
+# gmsh is opened when an organ is meshed (host/geometry/gmsh_api.c): a
+# library that cannot be opened is an error naming it, with nothing written
+expect 2 "an organ without its gmsh library" -- env TISSUEFIT_GMSH=/nonexistent/libgmsh.so \
+    "$tool" -q solve coeffs/stomach.yaml --force 0,0,-0.1 --out "$tmp/w/organ.csv"
+says "an organ without its gmsh library" \
+    "geometry.surface.file: .*gmsh could not mesh the volume: cannot use gmsh (/nonexistent/libgmsh.so)"
+[ -e "$tmp/w/organ.csv" ] && bad "a solve that could not mesh wrote its output"
+
 finish cli
