@@ -9,9 +9,10 @@
  * scenes, headers, eval) and most tests never touch gmsh.  The definitions
  * below have gmshc.h's prototypes (a mismatch does not compile), so the
  * callers are unchanged.  The library is opened by its soname, which the
- * header's version gives (or the path in $TISSUEFIT_GMSH), with RTLD_NODELETE: every call opens it (the
- * first loads it, the others find it loaded, in microseconds) and closes
- * it again, and it stays loaded, so that this file keeps no state.
+ * header's version gives (or the path in $TISSUEFIT_GMSH), with
+ * RTLD_NODELETE: every call opens it (the first loads it, the others find
+ * it loaded, in microseconds) and closes it again, and it stays loaded, so
+ * that this file keeps no state.
  *
  * If libgmsh cannot be opened or lacks a function, the call sets *ierr to
  * 1 and does nothing, and gmshLoggerGetLastError returns the loader's

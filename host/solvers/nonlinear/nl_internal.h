@@ -69,9 +69,8 @@ typedef struct nl_solver {
     tf_solver base; /* first */
     tf_shape sh;
     int shape_ok, efg, weak, small, bbar, vci, unsym;
-    tf_material mat;    /* the body's (mats[0]) */
-    /* Material regions (problem/inclusions.h): mats[1 + k] is inclusion k's,
-     * of the body's law; pmat (per cell point) and bmat (per boundary point)
+    /* The materials: mats[0] the body's; with material regions
+     * (problem/inclusions.h) mats[1 + k] inclusion k's, of the body's law; pmat (per cell point) and bmat (per boundary point)
      * the index of each point's material, NULL when the body is one material. */
     tf_material mats[1 + TF_INCLUSIONS_MAX];
     double lambda_m[1 + TF_INCLUSIONS_MAX]; /* each material's lambda_v */

@@ -166,7 +166,7 @@ static int build_boundary(nl_solver *s, tf_ctx *ctx)
  * quantities it provides (materials/material.h), never which law it is. */
 static void law_constants(nl_solver *s)
 {
-    const tf_material *m = &s->mat;
+    const tf_material *m = &s->mats[0];
     unsigned caps = tf_material_caps(m);
     s->relaxes = (caps & TF_MATERIAL_HISTORY) != 0;
     tf_material_relaxation(m, &s->g_inf, &s->tau);
@@ -259,11 +259,11 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
  * history and volume measure), and each one's volumetric modulus. */
 static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
-    s->mats[0] = s->mat;
     s->n_mats = 1 + p->n_inclusions;
     for (size_t k = 0; k < p->n_inclusions; ++k) {
         const tf_inclusion *inc = &p->inclusions[k];
-        const char *law = tf_material_name(&inc->material), *body = tf_material_name(&s->mat);
+        const char *law = tf_material_name(&inc->material);
+        const char *body = tf_material_name(&s->mats[0]);
         if (strcmp(law, body) != 0) {
             return tf_fail(ctx,
                            "not yet: inclusion '%s' is %s in a %s body: the nonlinear solvers take "
@@ -275,7 +275,7 @@ static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     if (p->n_inclusions > 0 && s->relaxes) {
         return tf_fail(ctx, "not yet: material regions in a law with history (%s): its "
                             "volumetric relaxation is the body's",
-                       tf_material_name(&s->mat));
+                       tf_material_name(&s->mats[0]));
     }
     if (p->n_inclusions > 0 && s->vci) {
         return tf_fail(ctx, "not yet: material regions with VCI integration (solver.integration: "
@@ -343,7 +343,7 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     const tf_solver_opts *o = &s->base.opts;
     double lo[3], hi[3];
-    s->mat = p->material;
+    s->mats[0] = p->material;
     s->bbar = o->volumetric == TF_VOLUMETRIC_CELL;
     s->vci = o->integration == TF_INTEGRATION_VCI;
     law_constants(s);
