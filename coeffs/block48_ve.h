@@ -7,7 +7,7 @@
  * Physics (as solved):
  *   body: box [0, 48] x [0, 48] x [0, 6] mm; 11 x 11 x 3 nodes (363), mean spacing 4.8 x 4.8 x 3 mm
  *   material: kelvin ([EFG-Kelvin]'s nonlinear Kelvin solid (eqs 9-13): relaxation modulus k1 + k2 exp(-t/tau) on N(eps) = eps + k eps^2, small strain): nu = 0.49 (Poisson's ratio), k1 = 0.32 (the relaxed modulus E_inf, MPa (Fig. 2's spring K1)), k2 = 0.16 (the Maxwell arm's spring, MPa: E_0 = k1 + k2 (K2)), eta = 0.16 (the dashpot, MPa s: tau = eta / k2), k = 0.5 (the adjustment N(eps) = eps + k eps^2 (eq 10))
- *   solver: rpim-galerkin, support 2 spacings, shape parameter d_c 8 local spacings
+ *   solver: rpim-galerkin (the kelvin law by Newton's method: rpim-newton), support 2 spacings, shape parameter d_c 8 local spacings
  *   fixed 0: face x-, 33 nodes, every component held
  *   fixed 1: face x+, 33 nodes, every component held
  *   fixed 2: face y-, 33 nodes, every component held

@@ -25,6 +25,14 @@ CHECKS += check-nonlinear-cli
 check-nonlinear-cli: $(B)/bin/tissuefit
 	@echo "== tissuefit solve with nonlinear laws and load histories =="
 	@tests/solver/nonlinear_cli.sh $(B)/bin/tissuefit
+	@echo "== Newton and Kelvin on an organ's tetrahedra: a cube given as a surface against the same cube as a box =="
+	@tests/solver/organ_newton.sh $(B)/bin/tissuefit
+
+# The same cube over finer clouds of both discretisations (docs/solver.md,
+# "On an organ's tetrahedra"; about a minute).
+.PHONY: organ-newton-cube
+organ-newton-cube: $(B)/bin/tissuefit
+	@tests/solver/organ_newton.sh --table $(B)/bin/tissuefit
 
 # make bench: Newton iterations per load step and time per nonlinear case at
 # the seed's grid and at 41 x 41 x 9, against one linear solve in the same run

@@ -68,6 +68,11 @@ unsigned tf_material_caps(const tf_material *m)
     return m->law->caps | (m->law->caps_at ? m->law->caps_at(m->p) : 0u);
 }
 
+int tf_material_linear_elastic(const tf_material *m)
+{
+    return (tf_material_caps(m) & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) == TF_MATERIAL_HOOKE;
+}
+
 tf_kinematics tf_material_kinematics(const tf_material *m)
 {
     return m->law->caps & TF_MATERIAL_FINITE ? TF_KIN_FINITE : TF_KIN_SMALL;

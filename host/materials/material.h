@@ -154,6 +154,10 @@ double tf_material_get(const tf_material *m, const char *key);
 
 const char *tf_material_name(const tf_material *m);
 unsigned tf_material_caps(const tf_material *m);
+/* HOOKE at small strain: the response is linear in the load (a linear
+ * solver factorises once; the Galerkin solvers hand any other material to
+ * Newton's method). */
+int tf_material_linear_elastic(const tf_material *m);
 tf_kinematics tf_material_kinematics(const tf_material *m);
 tf_volume_measure tf_material_volume(const tf_material *m);
 size_t tf_material_history_size(const tf_material *m);

@@ -8,6 +8,7 @@
 
 #include <lapacke.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* Golub-Welsch: the nodes are the eigenvalues of the Jacobi matrix of the
@@ -162,6 +163,16 @@ void tf_cells_point(const tf_cells *c, size_t cell, size_t p, double x[3], doubl
         weight *= 0.5 * size * c->gw[gi[a]];
     }
     *w = weight;
+}
+
+void tf_cells_describe(const tf_cells *c, char *buf, size_t len)
+{
+    if (c->tet) {
+        snprintf(buf, len, "%zu tetrahedra x %u Gauss points (degree %u)", c->ntet, c->rule.n,
+                 c->rule.degree);
+    } else {
+        snprintf(buf, len, "%zu cells x %u^3 Gauss points", tf_cells_count(c), c->gauss);
+    }
 }
 
 double tf_patch_area(const tf_patch *p, const tf_cloud *cloud)

@@ -34,6 +34,10 @@ void tf_cells_box(const tf_cells *c, size_t cell, double centre[3], double half[
 /* Point p (0 .. gauss^3 - 1) of a cell, and its weight (volume, mm^3). */
 void tf_cells_point(const tf_cells *c, size_t cell, size_t p, double x[3], double *w);
 
+/* What the cells are, for a solver's log line: "N cells x g^3 Gauss
+ * points" or "N tetrahedra x n Gauss points (degree d)". */
+void tf_cells_describe(const tf_cells *c, char *buf, size_t len);
+
 /* Quadrature points covering a patch (not TF_PATCH_POINT) of the box face,
  * about two sub-cells per background cell along each in-face axis, gauss^2
  * points each (a disc: rings x sectors in polar coordinates).  Returns a

@@ -96,6 +96,13 @@ static void solver(sheet *s, const tf_problem *p)
 {
     const tf_solver_opts *o = &p->solver;
     put(s, "\n  solver: %s", o->method);
+    /* (the Galerkin solvers hand a law that is not linear elastic to
+     * Newton's method: solvers/galerkin/galerkin.c) */
+    int galerkin = strcmp(o->method, "rpim-galerkin") == 0 || strcmp(o->method, "efg-galerkin") == 0;
+    if (galerkin && !tf_material_linear_elastic(&p->material)) {
+        put(s, " (the %s law by Newton's method: %.4s-newton)", tf_material_name(&p->material),
+            o->method);
+    }
     if (strncmp(o->method, "mls-", 4) == 0) {
         put(s, ", %u neighbours, support %g mean neighbour distances", o->colloc.neighbours,
             o->colloc.support);

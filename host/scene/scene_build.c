@@ -546,24 +546,6 @@ static int repeats(const tf_problem *s, size_t k, sd_issue *is)
     return 0;
 }
 
-/* The Newton solvers integrate over a box's background cells; an organ's
- * tetrahedra are integrated by the linear Galerkin solver only, so a law
- * other than small-strain Hooke on an organ is refused here rather than
- * failing in the solver with a message about cells (docs/solver.md). */
-static int organ_law(const tf_problem *s, sd_issue *is)
-{
-    unsigned caps = tf_material_caps(&s->material);
-    if (tf_problem_mesh(s) == NULL ||
-        (caps & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) == TF_MATERIAL_HOOKE) {
-        return 0;
-    }
-    return sd_fail(is, "material.law",
-                   "'%s' on an organ: an organ (geometry.surface) is solved with the linear law "
-                   "only; nonlinear and viscoelastic laws on an organ's tetrahedra are not built "
-                   "yet (they run on boxes)",
-                   tf_material_name(&s->material));
-}
-
 static int cuts(const sd_scene *doc, tf_problem *s, sd_issue *is)
 {
     if (doc->cuts_count > 0 && tf_problem_mesh(s) != NULL) {
@@ -995,7 +977,7 @@ int sd_build(const sd_scene *doc, tf_problem *s, tf_fit_plan *plan, sd_issue *is
     if (geometry(doc, s, is) != 0 ||
         sd_build_material(&doc->material, "material", &s->material, is) != 0 ||
         inclusions(doc, s, is) != 0 ||
-        organ_law(s, is) != 0 || reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
+        reference(doc->reference, s, is) != 0 || fixed(doc, s, is) != 0 ||
         sd_check_held(s, is) != 0 ||
         loads(doc, s, is) != 0 || contacts(doc, s, is) != 0 ||
         envelope(doc->envelope, s, is) != 0 || cuts(doc, s, is) != 0 ||

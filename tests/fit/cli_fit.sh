@@ -78,6 +78,8 @@ grep -q "^ \* Warning (the law's range): displacements reach .*the linear $WARN"
 expect 0 "fit, neo-Hookean, large displacements" -- "$tool" fit tests/solver/block48_seed.yaml $TINY \
     --set material.law=neo-hookean -o "$tmp/w/nw.h"
 check "no small-strain warning for the neo-Hookean law" sh -c "! grep -q '$WARN' '$tmp/err'"
+grep -q "^ \*   solver: rpim-galerkin (the neo-hookean law by Newton's method: rpim-newton), support" "$tmp/w/nw.h" ||
+    bad "the banner does not say which solver solved the neo-Hookean law"
 rm -f "$tmp/w/lw.h" "$tmp/w/lw_golden.h" "$tmp/w/nw.h" "$tmp/w/nw_golden.h"
 
 # Superposition against direct solves of every training case: the two

@@ -266,18 +266,11 @@ static int assemble(galerkin *g, const tf_problem *p, tf_ctx *ctx)
     return 0;
 }
 
-/* Whether the material is linear elastic: S = D eps with the constant D
- * of its moduli, at small strain (then K is assembled once from D). */
-static int linear_elastic(const tf_material *m)
-{
-    return (tf_material_caps(m) & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) == TF_MATERIAL_HOOKE;
-}
-
 /* (EFG's fixed regions are weak whatever the options say: tf_solver_create_as
  * turned elimination into Nitsche's method.) */
 static tf_solver *create(const tf_problem *p, const tf_solver_opts *o, tf_ctx *ctx, int efg)
 {
-    if (!linear_elastic(&p->material)) {
+    if (!tf_material_linear_elastic(&p->material)) {
         const tf_solver_ops *from = efg ? &tf_efg_galerkin_ops : &tf_galerkin_ops;
         const tf_solver_ops *to = efg ? &tf_efg_newton_ops : &tf_rpim_newton_ops;
         tf_info(ctx, "%s: the %s law is not linear elastic: %s hands it to %s", p->name,

@@ -118,6 +118,9 @@ typedef struct nl_solver {
     int indef_kept;     /* the last tangent was not positive definite: an older factor kept */
     int eager;          /* a load step of this case failed: BFGS refreshes sooner */
     int chol_ok;        /* holds a usable factor */
+    int k_rest;         /* s->k was last assembled at rest: d = 0, zero histories, dt_relaxed */
+    int chol_rest;      /* s->chol holds the Cholesky factor of that rest tangent */
+    int rest_factor;    /* that factor is kept for the case's first iteration, as if just made */
     int use_ldl;        /* the usable factor is the LDL^T one */
     double shift;       /* the last positive definite shift (indefinite: shift), 0: none yet */
     int shifted;        /* the usable factor is of a shifted tangent */
@@ -170,6 +173,15 @@ int nl_region_force(nl_solver *s, size_t region, double force[3]);
 void nl_external(const nl_solver *s, const nl_target *t, double *f);
 
 /* ---- nl_linear.c: the linear systems of Newton's method ---- */
+/* Before a static case, after nl_reset: the factor its first iteration
+ * uses.  Where nothing prescribed differs from 0 and the strategy uses the
+ * factor alone (BFGS, modified Newton, a symmetric tangent), that is the
+ * factor of the rest tangent (nl_reset's state at the relaxed time step),
+ * the same bits for every case: kept from an earlier case, or made here
+ * for a case that starts from a guess (from_rest 0), or left to the case's
+ * first iteration from rest.  Otherwise none (the case factorises its
+ * first tangent).  Returns 0, or -1 with a message. */
+int nl_factor_for_rest(nl_solver *s, int from_rest);
 /* Prepares the factorisation of the current s->k (after elimination rows
  * are set).  Returns 0, 1 (not positive definite), -1 (message). */
 int nl_factor(nl_solver *s);

@@ -180,6 +180,7 @@ static int factor_into_spare(nl_solver *s, const tf_csc *k)
         tf_chol *c = s->chol;
         s->chol = s->spare;
         s->spare = c;
+        s->chol_rest = 0;
         s->indef_kept = 0;
         s->shifted = 0;
         nl_qn_reset(s);
@@ -209,6 +210,7 @@ int nl_factor(nl_solver *s)
     s->st.factorisations++;
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
+    s->chol_rest = rc == 0 && s->k_rest;
     s->use_ldl = 0;
     s->indef_kept = 0;
     s->shifted = 0;
@@ -221,6 +223,67 @@ int nl_factor(nl_solver *s)
         return factor_shifted(s);
     }
     return rc == 1 ? factor_indefinite(s, k) : rc;
+}
+
+/* Whether a case may start from the rest tangent's factor: nothing
+ * prescribed but zeros (every case's first tangent is then the same), a
+ * strategy that uses the factor alone (BFGS, modified Newton) and a
+ * symmetric tangent (an unsymmetric one's first solve is GMRES on the
+ * tangent itself). */
+static int rest_factor_serves(const nl_solver *s)
+{
+    tf_tangent_kind k = s->base.opts.newton.tangent;
+    if (s->patch.on || s->kskew != NULL || (k != TF_TANGENT_BFGS && k != TF_TANGENT_MODIFIED)) {
+        return 0;
+    }
+    for (size_t i = 0; !s->weak && i < s->k.n; ++i) {
+        if (s->bc.ubar[i] != 0) {
+            return 0;
+        }
+    }
+    for (size_t q = 0; s->weak && q < s->bnd.n; ++q) {
+        const double *u = s->bnd.pt[q].ubar;
+        if (u[0] != 0 || u[1] != 0 || u[2] != 0) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* The rest tangent assembled and factorised (the state is nl_reset's). */
+static int factor_rest(nl_solver *s)
+{
+    nl_target rest = {0, -1, {0, 0, 0}};
+    nl_fault fault;
+    int rc = nl_assemble(s, s->d, &rest, s->dt_relaxed, 1, s->r, NULL, &fault);
+    if (rc == 0) {
+        nl_eliminate(s);
+        rc = nl_factor(s);
+    }
+    return rc == 0 && s->chol_rest && !s->use_ldl && !s->shifted ? 0 : rc < 0 ? -1 : 1;
+}
+
+int nl_factor_for_rest(nl_solver *s, int from_rest)
+{
+    int held = s->chol_ok && s->chol_rest && !s->use_ldl && !s->shifted;
+    s->chol_ok = 0;
+    s->rest_factor = 0;
+    s->indef_kept = 0;
+    nl_qn_reset(s);
+    if (!rest_factor_serves(s)) {
+        return 0;
+    }
+    if (!held && !from_rest) {
+        int rc = factor_rest(s);
+        if (rc != 0) {
+            s->chol_ok = 0;
+            return rc < 0 ? -1 : 0;
+        }
+        held = 1;
+    }
+    s->chol_ok = held;
+    s->rest_factor = held;
+    return 0;
 }
 
 void nl_qn_reset(nl_solver *s) { s->qn = 0; }

@@ -355,6 +355,10 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "out of memory");
     }
     s->shape_ok = 1;
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    if (m != NULL && tf_shape_use_tets(ctx, &s->sh, m->tm.tet, m->tm.ntet, o->tet_degree) != 0) {
+        return -1;
+    }
     if (s->efg && tf_shape_use_efg(ctx, &s->sh) != 0) {
         return -1;
     }

@@ -234,7 +234,9 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
                                        : NL_TANGENT_NONE;
         double before = rn;
         least = it > 0 ? fmin(least, rn) : least; /* of the earlier iterations */
-        since = tangent == NL_TANGENT_ALL ? 0 : since + 1;
+        /* (the rest tangent's factor kept for this case counts as made now) */
+        since = tangent == NL_TANGENT_ALL || (it == 0 && s->rest_factor) ? 0 : since + 1;
+        s->rest_factor = 0;
         if (!have_r || tangent == NL_TANGENT_ALL) {
             rc = residual(s, d, t, dt, tangent == NL_TANGENT_ALL, fext, s->r, &ref, &f->fault);
         } else {

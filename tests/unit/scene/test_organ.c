@@ -18,6 +18,7 @@
 #include <cmocka.h>
 
 #include "tests/geometry/shapes.h"
+#include "materials/material.h"
 #include "meshfree/shape.h"
 #include "problem/mesh_geometry.h"
 #include "scene/scene.h"
@@ -192,12 +193,6 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
     expect_error(SETS("geometry.grid=2,2,2"), PARTS("geometry", "belong to a box"));
     expect_error(SETS("contact.0.node=1"), PARTS("contact.0", "site on an organ"));
     expect_error(SETS("cuts=[{path: [[0, 0], [1, 1]], depth: 1}]"), PARTS("cuts", "organ"));
-    /* the Newton solvers integrate over a box's cells: refused at the law,
-     * not in the solver ("node 1 lies in no integration cell's support") */
-    expect_error(SETS("material.law=neo-hookean"),
-                 PARTS("material.law", "'neo-hookean' on an organ", "linear law only"));
-    expect_error(SETS("material={law: kelvin, k1: 0.01, k2: 0.01, eta: 1, nu: 0.3}"),
-                 PARTS("material.law", "'kelvin' on an organ"));
     /* the line of the offending key: geometry.surface.file is on line 3 */
     expect_text_error("name: t\ngeometry:\n  surface: {file: open.obj}\n  spacing: 4\n"
                       "material: {E: 0.01, nu: 0.3}\nfixed:\n  - sphere: {centre: [0, 0, -10], "
@@ -208,6 +203,26 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
                       "material: {E: 1, nu: 0.3}\nfixed:\n  - near: {point: [0, 0, 0], distance: 1}\n"
                       "outputs: {select: all}\n",
                       PARTS("t.yaml:5:", "fixed.0.near", "organ"));
+}
+
+/* Every law of the registry loads on an organ: the Newton solvers
+ * integrate over its tetrahedra as the linear Galerkin solver does. */
+static void an_organ_takes_every_law(void **state)
+{
+    (void)state;
+    static const char *laws[] = {"material.law=neo-hookean", "material.law=svk",
+                                 "material={law: kelvin, k1: 0.01, k2: 0.01, eta: 1, nu: 0.3}"};
+    for (size_t k = 0; k < sizeof laws / sizeof laws[0]; ++k) {
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        tf_scene *s = load(&ctx, base, &laws[k], 1);
+        if (s == NULL) {
+            fail_msg("%s: %s", laws[k], ctx.err);
+        }
+        assert_true(tf_material_caps(&s->problem.material) & TF_MATERIAL_FINITE ||
+                    tf_material_caps(&s->problem.material) & TF_MATERIAL_HISTORY);
+        tf_scene_free(s);
+    }
 }
 
 /* Legal but implausible values are said, not refused: a contact point far
@@ -411,6 +426,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(the_organ_scene_is_built_as_written),
         cmocka_unit_test(each_bad_organ_scene_has_its_own_message),
+        cmocka_unit_test(an_organ_takes_every_law),
         cmocka_unit_test(implausible_values_are_warned),
         cmocka_unit_test(tetrahedral_cells_pass_the_patch_test),
         cmocka_unit_test(a_linear_field_has_the_exact_energy),
