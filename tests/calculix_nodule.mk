@@ -65,7 +65,7 @@ NODULE_NH_FORCE := 0,0,-3
 NODULE_NH_STEPS := 4
 NODULE_NH_LEVELS := h24r0:2.4:0 h12r0:1.2:0
 NODULE_NH_FINEST := h12r0
-NODULE_NH_GRIDS := 11,11,3 21,21,5 41,41,9
+NODULE_NH_GRIDS := geometry.grid=11,11,3 geometry.grid=21,21,5 geometry.grid=41,41,9
 
 .PHONY: calculix-nodule calculix-nodule-table check-nodule-calculix calculix-nodule-nh \
         calculix-nodule-nh-table
@@ -113,7 +113,7 @@ check-nodule-calculix: $(CX)/organ_compare $(CX)/organ_deck $(B)/bin/tissuefit
 	  --set geometry.grid=$(NODULE_BOX_CHECK_GRID)
 	@echo "== the same sphere in neo-Hookean tissue against CalculiX NLGEOM ($(NODULE_NH_FINEST)), Newton at $(NODULE_NH_CHECK_GRID), every load level =="
 	@BOUND=$(NODULE_BOUND) tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit $(NODULE_NH) $(NODULE_NH_FORCE) \
-	  $(NODULE_NH_STEPS) $(CX_DATA)/block48_sphere_nh_$(NODULE_NH_FINEST).csv $(NODULE_NH_CHECK_GRID)
+	  $(NODULE_NH_STEPS) $(CX_DATA)/block48_sphere_nh_$(NODULE_NH_FINEST).csv geometry.grid=$(NODULE_NH_CHECK_GRID)
 	$(call check_len,@$< --signal $(NODULE_OVER) $(NODULE_BESIDE) \
 	  $(CX_DATA)/liver_nodule_$(NODULE_LIVER_FINEST).csv \
 	  $(CX_DATA)/liver_nodule_beside_$(NODULE_LIVER_FINEST).csv --bound $(NODULE_SIGNAL_BOUND) \

@@ -9,7 +9,10 @@
 #   check-organ-calculix    (make check) the shipped liver's meshless solve
 #                           within 3 % of the finest level, at the contact
 #                           vertex and over the output vertices; the deck
-#                           writer's patch and counts on a coarse level
+#                           writer's patch and counts on a coarse level;
+#                           the liver's NLGEOM deck on the same level (make
+#                           check-full adds liver_nh's Newton solves at 6 mm
+#                           within 3 % at every load level: 75 s of CPU)
 #
 # The committed data are of the shipped liver's 240 outputs (within 40 mm
 # of the contact vertex), rerun on 2026-11-24 (docs/validation.md §14).
@@ -48,7 +51,7 @@ calculix-organ-table: $(CX)/organ_compare
 	  echo; echo "meshless ($(ORGAN_SCENE)) against $(ORGAN_FINEST):"; \
 	  $< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) || true; } | tee $(CX)/organ.md
 
-check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
+check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck $(B)/bin/tissuefit
 	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND)) =="
 	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND)
 	@echo "ok: the liver's contact displacement and output vertices within $(ORGAN_BOUND) of CalculiX"
@@ -59,6 +62,19 @@ check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck
 	  want=$$(awk -F, '$$1 == "s20r0" { print $$5 "," $$6 "," $$7 }' $(CX_DATA)/liver_runs.csv); \
 	  if [ "$$got" != "$$want" ]; then echo "organ_deck: s20r0 elements,nodes,dofs $$got, the reference's $$want"; exit 1; fi; \
 	  echo "ok: s20r0 deck: $$got elements,nodes,dofs as in $(CX_DATA)/liver_runs.csv"
+	@echo "== the liver in neo-Hookean tissue: the NLGEOM s20r0 deck has the committed level's size, one neo-Hookean material, one ramped step and its load levels$(call check_len,; Newton at 6 mm within $(ORGAN_BOUND) of $(LIVER_NH_FINEST) at every level,) =="
+	@$(CX)/organ_deck $(LIVER_NH) --spacing 20 --refine 0 --nlgeom $(LIVER_NH_FORCE_liver_nh) \
+	  --levels $(LIVER_NH_STEPS) > $(CX)/check_nh_s20r0.inp
+	@got=$$(awk '$$1 == "**" && $$2 == "SIZE" { print $$3 "," $$4 "," $$5; exit }' $(CX)/check_nh_s20r0.inp); \
+	  want=$$(awk -F, '$$1 == "s20r0" { print $$5 "," $$6 "," $$7 }' $(CX_DATA)/liver_nh_runs.csv); \
+	  n=$$(grep -c '^\*HYPERELASTIC, NEO HOOKE$$' $(CX)/check_nh_s20r0.inp); \
+	  s=$$(grep -c '^\*STEP, NLGEOM' $(CX)/check_nh_s20r0.inp); \
+	  l=$$(grep -c '^\*\* STEP [0-9]* l[0-9]' $(CX)/check_nh_s20r0.inp); \
+	  if [ "$$got;$$n,$$s,$$l" != "$$want;1,1,$(LIVER_NH_STEPS)" ]; then \
+	    echo "organ_deck --nlgeom: $$got elements,nodes,dofs (the reference's $$want), $$n neo-Hookean materials, $$s NLGEOM steps, $$l load levels"; exit 1; fi
+	$(call check_len,@BOUND=$(ORGAN_BOUND) tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit $(LIVER_NH) \
+	  $(LIVER_NH_FORCE_liver_nh) $(LIVER_NH_STEPS) $(CX_DATA)/liver_nh_$(LIVER_NH_FINEST).csv geometry.spacing=6,)
+	@echo "ok: the liver's NLGEOM deck$(call check_len, and its Newton solves within $(ORGAN_BOUND) of CalculiX,)"
 
 # The finest level in tissuefit fit --reference's form (docs/fitting.md,
 # "Error against the physics"): an index liver_physics.csv and one
@@ -88,3 +104,71 @@ ORGAN_PAIR_LEVELS := s20r0:20:0 s20r1:20:1
 calculix-stomach calculix-heart: calculix-%: $(CX)/organ_deck | deps-calculix
 	$(Q)tests/calculix/run_organ.sh $< coeffs/$*.yaml $(CX)/organ $(CX_DATA) $* $(ORGAN_PAIR_LEVELS)
 	$(call organ_physics,$*,s20r1)
+
+# The liver in neo-Hookean tissue: tests/calculix/scenes/liver_nh.yaml (the
+# shipped liver, law neo-hookean) and liver_nodule_nh.yaml (liver_nodule.yaml,
+# both materials neo-Hookean).  CalculiX NLGEOM at the levels below, the
+# probe's force ramped along the inward normal to the envelope's 0.3 N and
+# printed at LIVER_NH_STEPS equal levels (organ_deck --nlgeom), against the
+# Newton solves of the meshless clouds below (organ_nl_compare.sh).
+#   make calculix-liver-nh        the CalculiX runs (liver_nh: s20r0 0.5 min,
+#                                 s10r0 1, s20r1 17 and 3.8 GB; liver_nodule_nh:
+#                                 1.6, 2.5 and about 30; one thread); rewrites
+#                                 tests/calculix/data/liver{,_nodule}_nh_*.csv
+#   make calculix-liver-nh-table  the other levels and the meshless clouds
+#                                 against the finest level, at every load
+#                                 level; build/calculix/liver_nh.md
+LIVER_NH_SCENES := liver_nh liver_nodule_nh
+LIVER_NH := tests/calculix/scenes/liver_nh.yaml
+LIVER_NH_FORCE_liver_nh := 0.138,0.266,0.0134
+LIVER_NH_FORCE_liver_nodule_nh := 0.1344,0.2595,-0.0675
+LIVER_NH_DECK_liver_nodule_nh := --inclusion-spacing 2
+# the meshless clouds: the liver's at 9 and 6 mm; the nodule's scene's own
+# (6 mm, 2 mm within 30 mm of the probe)
+LIVER_NH_CLOUDS_liver_nh := geometry.spacing=9 geometry.spacing=6 geometry.spacing=4.5
+LIVER_NH_CLOUDS_liver_nodule_nh := geometry.spacing=6
+LIVER_NH_STEPS := 3
+LIVER_NH_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
+LIVER_NH_FINEST := s20r1
+
+.PHONY: calculix-liver-nh calculix-liver-nh-table
+calculix-liver-nh: $(CX)/organ_deck | deps-calculix
+	$(Q)for n in $(LIVER_NH_SCENES); do \
+	  DECK_ARGS="$$(eval echo \$${LIVER_NH_DECK_$$n}) --nlgeom $$(eval echo \$${LIVER_NH_FORCE_$$n}) --levels $(LIVER_NH_STEPS)" \
+	  tests/calculix/run_organ.sh $< tests/calculix/scenes/$$n.yaml $(CX)/$$n $(CX_DATA) $$n $(LIVER_NH_LEVELS) || exit 1; done
+	@$(MAKE) --no-print-directory calculix-liver-nh-physics calculix-liver-nh-table
+
+# coeffs/liver_tumour.yaml is liver_nodule_nh.yaml's body and probe: its
+# header states its error against the finest NLGEOM level's load levels
+# (tissuefit fit --reference; coeffs/coeffs.mk, PHYSICS_liver_tumour).
+# $(call organ_physics_nl,NAME,DATA,FX;FY;FZ,K): NAME_physics.csv and one
+# file per load level k F / K of DATA.csv (organ_dat.awk's cases l1 .. lK)
+define organ_physics_nl
+	@set -e; d=$(CX_DATA); echo "fx,fy,fz,file" > $$d/$(1)_physics.csv; k=1; \
+	  while [ $$k -le $(4) ]; do \
+	    echo "$(3)" | awk -F';' -v k=$$k -v K=$(4) -v f=$(1)_physics_l$$k.csv \
+	      '{ printf "%.17g,%.17g,%.17g,%s\n", $$1 * k / K, $$2 * k / K, $$3 * k / K, f }' \
+	      >> $$d/$(1)_physics.csv; \
+	    awk -F, -v c=l$$k 'NR == 1 { print "node,x,y,z,ux,uy,uz"; next } \
+	      $$5 == c { print $$1 "," $$2 "," $$3 "," $$4 "," $$6 "," $$7 "," $$8 }' \
+	      $$d/$(2).csv > $$d/$(1)_physics_l$$k.csv; k=$$((k + 1)); done
+	@echo "wrote $(CX_DATA)/$(1)_physics.csv and its $(4) load levels from $(2).csv"
+endef
+.PHONY: calculix-liver-nh-physics
+calculix-liver-nh-physics:
+	$(call organ_physics_nl,liver_tumour,liver_nodule_nh_$(LIVER_NH_FINEST),$(subst $(comma),;,$(LIVER_NH_FORCE_liver_nodule_nh)),$(LIVER_NH_STEPS))
+
+export LIVER_NH_FORCE_liver_nh LIVER_NH_FORCE_liver_nodule_nh LIVER_NH_DECK_liver_nodule_nh \
+  LIVER_NH_CLOUDS_liver_nh LIVER_NH_CLOUDS_liver_nodule_nh
+calculix-liver-nh-table: $(B)/bin/tissuefit
+	@mkdir -p $(CX)
+	@set -e; for n in $(LIVER_NH_SCENES); do \
+	  echo "$$n: CalculiX levels against $(LIVER_NH_FINEST):"; echo; \
+	  for l in $(filter-out $(LIVER_NH_FINEST),$(foreach l,$(LIVER_NH_LEVELS),$(firstword $(subst :, ,$(l))))); do \
+	    tests/calculix/organ_nl_compare.sh --csv $(CX_DATA)/$${n}_$$l.csv \
+	      $(CX_DATA)/$${n}_$(LIVER_NH_FINEST).csv $$l; done; \
+	  echo; echo "$$n: the Newton solves (rpim-newton) against $(LIVER_NH_FINEST):"; echo; \
+	  tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit tests/calculix/scenes/$$n.yaml \
+	    $$(eval echo \$${LIVER_NH_FORCE_$$n}) $(LIVER_NH_STEPS) $(CX_DATA)/$${n}_$(LIVER_NH_FINEST).csv \
+	    $$(eval echo \$${LIVER_NH_CLOUDS_$$n}); echo; \
+	done | tee $(CX)/liver_nh.md

@@ -1,16 +1,18 @@
 #!/bin/sh
-# organ_nl_compare.sh TISSUEFIT SCENE FX,FY,FZ K REF.csv GRID... — a neo-Hookean
-# box scene with its material regions against a CalculiX NLGEOM level
-# (organ_deck --nlgeom FX,FY,FZ --levels K, organ_dat.awk: the output
-# points' displacements at the load levels k F / K, cases l1 .. lK).  For
-# each meshless grid (geometry.grid, "nx,ny,nz") and each level k, the
-# Newton solve of the scene under k F / K at its contact site, and:
+# organ_nl_compare.sh TISSUEFIT SCENE FX,FY,FZ K REF.csv CLOUD... — a scene
+# of a nonlinear law (a box or an organ, with or without material regions)
+# against a CalculiX NLGEOM level (organ_deck --nlgeom FX,FY,FZ --levels K,
+# organ_dat.awk: the output points' displacements at the load levels k F / K,
+# cases l1 .. lK).  For each meshless cloud (a KEY=VALUE the solve takes as
+# --set: geometry.grid=21,21,5 on a box, geometry.spacing=6 on an organ) and
+# each level k, the Newton solve of the scene under k F / K at its contact
+# site, and:
 #   contact  |u - u_ref| / |u_ref| at the reference's contact point;
 #   outputs  sqrt(sum |u - u_ref|^2 / sum |u_ref|^2) over its output points;
 # points matched by position (to 1e-4 mm; every output point must be a node
-# of the grid).  One markdown row per grid and level on stdout, and the
+# of the cloud).  One markdown row per cloud and level on stdout, and the
 # solve's seconds.  BOUND (environment, a fraction): exit 1 when a contact
-# or outputs error of the last grid exceeds it.
+# or outputs error of the last cloud exceeds it.
 #
 #   organ_nl_compare.sh --csv LEVEL.csv REF.csv LABEL   another CalculiX level
 #                                                 against REF, the same rows
@@ -47,26 +49,27 @@ if [ "${1:-}" = "--csv" ]; then
     done
     exit 0
 fi
-[ $# -ge 6 ] || { echo "usage: $0 TISSUEFIT SCENE FX,FY,FZ K REF.csv GRID..." >&2; exit 2; }
+[ $# -ge 6 ] || { echo "usage: $0 TISSUEFIT SCENE FX,FY,FZ K REF.csv KEY=VALUE..." >&2; exit 2; }
 tool=$1 scene=$2 force=$3 levels=$4 ref=$5
 shift 5
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-echo "| grid | load (N) | contact | outputs (L2) | solve (s) |"
+echo "| cloud | load (N) | contact | outputs (L2) | solve (s) |"
 echo "|---|---|---|---|---|"
 fail=0 last=
-for grid in "$@"; do last=$grid; done
-for grid in "$@"; do
+for cloud in "$@"; do last=$cloud; done
+for cloud in "$@"; do
     k=1
     while [ "$k" -le "$levels" ]; do
         f=$(echo "$force" | awk -F, -v k="$k" -v K="$levels" '{ printf "%.17g,%.17g,%.17g", $1 * k / K, $2 * k / K, $3 * k / K }')
+        shown=$(echo "$f" | awk -F, '{ printf "%.4g,%.4g,%.4g", $1, $2, $3 }')
         t0=$(date +%s.%N)
-        "$tool" -q solve "$scene" --set geometry.grid="$grid" --force "$f" --out "$tmp/u.csv"
+        "$tool" -q solve "$scene" --set "$cloud" --force "$f" --out "$tmp/u.csv"
         secs=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
-        row=$(errors "" "$tmp/u.csv" "$ref" "l$k") || { echo "organ_nl_compare: $grid at level $k: points do not match" >&2; exit 2; }
+        row=$(errors "" "$tmp/u.csv" "$ref" "l$k") || { echo "organ_nl_compare: $cloud at level $k: points do not match" >&2; exit 2; }
         c=${row% *} o=${row#* }
-        echo "| $grid | $f | $(pct "$c") | $(pct "$o") | $secs |"
-        if [ -n "${BOUND:-}" ] && [ "$grid" = "$last" ]; then
+        echo "| $cloud | $shown | $(pct "$c") | $(pct "$o") | $secs |"
+        if [ -n "${BOUND:-}" ] && [ "$cloud" = "$last" ]; then
             awk -v c="$c" -v o="$o" -v b="$BOUND" 'BEGIN { exit !(c <= b && o <= b) }' || fail=1
         fi
         k=$((k + 1))

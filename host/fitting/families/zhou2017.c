@@ -38,13 +38,8 @@ static void plane_coordinates(const tf_fitdata *d, double *xy)
 
 int tf_zhou_applicable(tf_ctx *ctx, const tf_fitdata *d)
 {
-    double zlo = INFINITY, zhi = -INFINITY, span = 0;
-    for (uint32_t j = 0; j < d->n_out; ++j) {
-        zlo = fmin(zlo, d->rest[j][2]);
-        zhi = fmax(zhi, d->rest[j][2]);
-        span = fmax(span, fmax(fabs(d->rest[j][0]), fabs(d->rest[j][1])));
-    }
-    if (zhi - zlo > 1e-9 * fmax(span, 1.0)) {
+    double zlo, zhi;
+    if (!tf_fitdata_flat(d, &zlo, &zhi)) {
         return tf_fail(
             ctx,
             "family zhou2017 needs the output points on one plane z = const ([Zhou2017] §3.2 "
