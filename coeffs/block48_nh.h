@@ -74,8 +74,8 @@
 #define TFIT_BLOCK48_NH_FORWARD_HELDOUT_RMS_MM 0.00512724
 #define TFIT_BLOCK48_NH_FORWARD_DISCRETISATION_MAX_MM 0.392641 /* the solve against the physics */
 #define TFIT_BLOCK48_NH_FORWARD_TOTAL_MAX_MM 0.447402 /* held-out fit + discretisation */
-#define TFIT_BLOCK48_NH_FORWARD_CRC32 0xad10fab1u
-#define tfit_block48_nh_forward tfit_block48_nh_forward_ad10fab1 /* this header's version of the model */
+#define TFIT_BLOCK48_NH_FORWARD_CRC32 0xd2280ba5u
+#define tfit_block48_nh_forward tfit_block48_nh_forward_d2280ba5 /* this header's version of the model */
 extern const tfit_model tfit_block48_nh_forward;
 
 /* tfit_block48_nh_contact */
@@ -99,7 +99,7 @@ extern const tfit_model tfit_block48_nh_forward;
 #define TFIT_BLOCK48_NH_CONTACT_US_M7_480MHZ 1.99
 #define TFIT_BLOCK48_NH_CONTACT_Q31_IN_EXP 4 /* input word x = value * 2^(31 - 4), mm */
 #define TFIT_BLOCK48_NH_CONTACT_Q31_OUT_EXP 6 /* output value = word * 2^(6 - 31), N */
-#define TFIT_BLOCK48_NH_CONTACT_Q31_ADDED_ERROR_N 1.45986e-07 /* max |Q31 - exact| at 2000 envelope points; float32: 1.01148e-06 */
+#define TFIT_BLOCK48_NH_CONTACT_Q31_ADDED_ERROR_N 1.45983e-07 /* max |Q31 - exact| at 2000 envelope points; float32: 1.01148e-06 */
 #define TFIT_BLOCK48_NH_CONTACT_Q31_CRC32 0x1e18dedfu
 #define tfit_block48_nh_contact_q31 tfit_block48_nh_contact_q31_1e18dedf /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_nh_contact_q31;
@@ -111,8 +111,8 @@ extern const tfit_model_q31 tfit_block48_nh_contact_q31;
 #define TFIT_BLOCK48_NH_CONTACT_TOTAL_MAX_N 0.352933 /* held-out fit + discretisation */
 #define TFIT_BLOCK48_NH_CONTACT_STIFFNESS_MIN_N_PER_MM 0.398188 /* sym(df/ddelta), smallest eigenvalue */
 #define TFIT_BLOCK48_NH_CONTACT_STIFFNESS_MAX_N_PER_MM 1.42537 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_NH_CONTACT_CRC32 0x0a3a3277u
-#define tfit_block48_nh_contact tfit_block48_nh_contact_0a3a3277 /* this header's version of the model */
+#define TFIT_BLOCK48_NH_CONTACT_CRC32 0x6ff75b83u
+#define tfit_block48_nh_contact tfit_block48_nh_contact_6ff75b83 /* this header's version of the model */
 extern const tfit_model tfit_block48_nh_contact;
 
 #ifdef TFIT_BLOCK48_NH_IMPLEMENTATION
@@ -156,18 +156,18 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     0x1.397fb6p-6f, 0x1.507f74p-6f, 0x1.d7c3f6p-4f, 0x1.03753ep-7f,
     /* term 3 of the 8 mode amplitudes */
     -0x1.2e4a44p+4f, 0x1.3ca41ap-4f, 0x1.036656p-3f, 0x1.a6cbcap-6f,
-    0x1.076bcap-7f, -0x1.e39b16p-8f, 0x1.137fa4p-5f, 0x1.4906dap-9f,
+    0x1.076bcap-7f, -0x1.e39b16p-8f, 0x1.137fa4p-5f, 0x1.4906dcp-9f,
     /* term 4 of the 8 mode amplitudes */
-    -0x1.52404p-5f, -0x1.23c3c8p-7f, -0x1.2d7f58p-9f, -0x1.bb8158p-7f,
+    -0x1.52404p-5f, -0x1.23c3c8p-7f, -0x1.2d7f56p-9f, -0x1.bb8158p-7f,
     0x1.d4a7f4p-4f, -0x1.36dd2cp-6f, -0x1.9260b6p-6f, -0x1.6421dp-4f,
     /* term 5 of the 8 mode amplitudes */
-    -0x1.0fbf1cp-3f, 0x1.f163a4p-7f, 0x1.a4b622p-7f, 0x1.13aac2p-6f,
+    -0x1.0fbf1cp-3f, 0x1.f163a6p-7f, 0x1.a4b622p-7f, 0x1.13aac2p-6f,
     0x1.6ae17cp-8f, 0x1.2320ap-6f, 0x1.90302ep-6f, -0x1.62bd14p-5f,
     /* term 6 of the 8 mode amplitudes */
     -0x1.d3118ep-4f, -0x1.8d32dap-3f, -0x1.22fb66p-5f, 0x1.13d0e2p-4f,
     -0x1.2c3cd4p-6f, 0x1.0a6f6ep-1f, -0x1.8d4cc6p-6f, -0x1.47c4b4p-4f,
     /* term 7 of the 8 mode amplitudes */
-    0x1.ba35a8p-6f, -0x1.d47a1ep-8f, 0x1.2318dep-10f, -0x1.791b02p-6f,
+    0x1.ba35a8p-6f, -0x1.d47a1ep-8f, 0x1.2318ep-10f, -0x1.791b02p-6f,
     0x1.b019aep-4f, 0x1.9b8312p-7f, -0x1.28123ap-5f, 0x1.df5672p-4f,
     /* term 8 of the 8 mode amplitudes */
     0x1.232b5p-4f, -0x1.0ff73cp-4f, 0x1.8716bcp-3f, -0x1.7309d8p-4f,
@@ -179,17 +179,17 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.650b54p-8f, -0x1.adde6ep-6f, -0x1.c81568p-8f, -0x1.13b0f6p-11f,
     -0x1.eeab3ap-14f, -0x1.a203fep-10f, 0x1.5ed276p-10f, 0x1.f7d4dcp-13f,
     /* term 11 of the 8 mode amplitudes */
-    -0x1.50f5bp-5f, -0x1.e00e6p-8f, 0x1.7ffc9ap-6f, 0x1.9f6ad6p-8f,
+    -0x1.50f5bp-5f, -0x1.e00e62p-8f, 0x1.7ffc9ap-6f, 0x1.9f6ad6p-8f,
     -0x1.b86aa8p-7f, -0x1.33d99ap-9f, -0x1.0acf08p-6f, -0x1.889fep-10f,
     /* term 12 of the 8 mode amplitudes */
-    -0x1.e0ab9cp-7f, 0x1.a5a01ap-10f, 0x1.450382p-12f, 0x1.41ea96p-6f,
+    -0x1.e0ab9cp-7f, 0x1.a5a01ap-10f, 0x1.45038p-12f, 0x1.41ea96p-6f,
     -0x1.7e626cp-5f, 0x1.651b0ap-8f, 0x1.ac7788p-7f, 0x1.f50f78p-6f,
     /* term 13 of the 8 mode amplitudes */
     -0x1.6cfcfap-7f, -0x1.5aa89p-6f, -0x1.7cc09ep-8f, -0x1.5b1c82p-10f,
-    -0x1.cfae18p-10f, -0x1.10963ap-6f, 0x1.c289ep-9f, 0x1.58737p-9f,
+    -0x1.cfae16p-10f, -0x1.10963ap-6f, 0x1.c289ep-9f, 0x1.58737p-9f,
     /* term 14 of the 8 mode amplitudes */
-    0x1.aecccep-4f, -0x1.075972p-9f, -0x1.4858dp-9f, -0x1.64142ep-7f,
-    0x1.17f87p-6f, -0x1.05f85p-11f, -0x1.6f5f32p-8f, 0x1.067974p-7f,
+    0x1.aecccep-4f, -0x1.075974p-9f, -0x1.4858cep-9f, -0x1.64142ep-7f,
+    0x1.17f87p-6f, -0x1.05f852p-11f, -0x1.6f5f32p-8f, 0x1.067974p-7f,
     /* term 15 of the 8 mode amplitudes */
     -0x1.35eeb6p-6f, 0x1.f3ae3p-4f, 0x1.e09db4p-6f, 0x1.d6bfdep-6f,
     -0x1.9be04ap-7f, 0x1.7cb666p-3f, -0x1.de275ep-7f, -0x1.9ebbacp-6f,
@@ -200,44 +200,44 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.1cd244p-4f, 0x1.bd505cp-10f, -0x1.bb361ep-12f, 0x1.91808ep-6f,
     -0x1.8ed378p-5f, -0x1.6da9d4p-8f, 0x1.3ddef4p-6f, -0x1.4b4c04p-5f,
     /* term 18 of the 8 mode amplitudes */
-    -0x1.846d3p-5f, 0x1.1007dp-5f, -0x1.e2077ap-4f, -0x1.5c733ep-6f,
+    -0x1.846d32p-5f, 0x1.1007dp-5f, -0x1.e2077ap-4f, -0x1.5c733ep-6f,
     0x1.2fc17cp-6f, 0x1.fcd86cp-10f, 0x1.7f002ep-3f, 0x1.30c928p-7f,
     /* term 19 of the 8 mode amplitudes */
     0x1.59d15ap-1f, -0x1.6f998cp-9f, -0x1.547502p-8f, -0x1.dc963p-6f,
     0x1.34b17p-4f, 0x1.16f34cp-8f, -0x1.5851f8p-6f, 0x1.2209eep-7f,
     /* term 20 of the 8 mode amplitudes */
-    -0x1.711b9ap-8f, -0x1.65ae04p-11f, -0x1.4f42bep-13f, 0x1.c7c32p-11f,
+    -0x1.711b9ap-8f, -0x1.65ae02p-11f, -0x1.4f42bep-13f, 0x1.c7c32p-11f,
     -0x1.519bacp-9f, -0x1.29ca94p-11f, 0x1.617dd2p-11f, 0x1.5903cap-12f,
     /* term 21 of the 8 mode amplitudes */
-    0x1.1f601ap-5f, 0x1.32e4e8p-10f, 0x1.377424p-10f, -0x1.9560a2p-9f,
+    0x1.1f601ap-5f, 0x1.32e4eap-10f, 0x1.377424p-10f, -0x1.9560a2p-9f,
     0x1.23697ap-7f, 0x1.27b51ep-9f, -0x1.7fa89p-10f, -0x1.456338p-11f,
     /* term 22 of the 8 mode amplitudes */
-    -0x1.a9447ap-8f, 0x1.6ddb46p-6f, 0x1.29d764p-7f, 0x1.959eaep-9f,
+    -0x1.a94478p-8f, 0x1.6ddb46p-6f, 0x1.29d764p-7f, 0x1.959eaep-9f,
     -0x1.42fb62p-9f, 0x1.1a73c8p-6f, -0x1.e91318p-9f, -0x1.8aaeb8p-9f,
     /* term 23 of the 8 mode amplitudes */
     -0x1.be8ce6p-9f, -0x1.0391fap-8f, -0x1.0ad66ep-10f, -0x1.38b16ep-8f,
-    0x1.e6cd5cp-9f, -0x1.984b32p-10f, -0x1.0a0c6cp-9f, -0x1.a0bb54p-16f,
+    0x1.e6cd5cp-9f, -0x1.984b32p-10f, -0x1.0a0c6ep-9f, -0x1.a0bb58p-16f,
     /* term 24 of the 8 mode amplitudes */
     -0x1.aeb2f4p-5f, -0x1.57d1a4p-7f, -0x1.e77db8p-9f, -0x1.f1d892p-11f,
     -0x1.9a654ap-9f, -0x1.db1d02p-10f, 0x1.001dfcp-5f, 0x1.79b626p-8f,
     /* term 25 of the 8 mode amplitudes */
     0x1.dc6a32p-5f, -0x1.47a676p-8f, -0x1.441b1ep-10f, -0x1.5b66c2p-7f,
-    0x1.036e4ep-8f, -0x1.744474p-10f, -0x1.96f536p-9f, 0x1.7929aep-7f,
+    0x1.036e4ep-8f, -0x1.744476p-10f, -0x1.96f536p-9f, 0x1.7929aep-7f,
     /* term 26 of the 8 mode amplitudes */
     -0x1.8f5154p-9f, 0x1.04a06p-9f, 0x1.01bb3cp-9f, 0x1.0d6cdep-10f,
-    -0x1.0cfc08p-10f, 0x1.b10cbap-10f, 0x1.5285acp-11f, -0x1.2c5352p-13f,
+    -0x1.0cfc08p-10f, 0x1.b10cbap-10f, 0x1.5285acp-11f, -0x1.2c5354p-13f,
     /* term 27 of the 8 mode amplitudes */
     -0x1.48e5fp-4f, 0x1.082b0cp-9f, 0x1.3ad9cp-7f, 0x1.a2c62cp-7f,
-    -0x1.5e3e5cp-6f, 0x1.db85fep-6f, 0x1.91b468p-10f, -0x1.d6ed32p-8f,
+    -0x1.5e3e5cp-6f, 0x1.db85fep-6f, 0x1.91b466p-10f, -0x1.d6ed32p-8f,
     /* term 28 of the 8 mode amplitudes */
     -0x1.d0bbfep-3f, 0x1.1609dap-7f, 0x1.924aa2p-8f, 0x1.5ed48p-6f,
     -0x1.b51f0ap-5f, 0x1.02c65cp-7f, 0x1.3e8902p-7f, -0x1.6baa9ap-10f,
     /* term 29 of the 8 mode amplitudes */
     -0x1.2cb276p-9f, -0x1.647bp-6f, -0x1.f2d74p-9f, -0x1.06aca6p-7f,
-    0x1.48852cp-9f, -0x1.a9c7bap-5f, 0x1.bcdf4cp-10f, 0x1.334e32p-8f,
+    0x1.48852cp-9f, -0x1.a9c7bap-5f, 0x1.bcdf4ap-10f, 0x1.334e32p-8f,
     /* term 30 of the 8 mode amplitudes */
-    0x1.7133bcp-8f, -0x1.a44b82p-12f, 0x1.4dd1a2p-13f, -0x1.510dfcp-13f,
-    -0x1.088dap-13f, -0x1.45a47ep-13f, -0x1.4810f8p-12f, -0x1.756c8p-12f,
+    0x1.7133bcp-8f, -0x1.a44b82p-12f, 0x1.4dd1a4p-13f, -0x1.510dfcp-13f,
+    -0x1.088dap-13f, -0x1.45a47cp-13f, -0x1.4810f8p-12f, -0x1.756c8p-12f,
     /* term 31 of the 8 mode amplitudes */
     0x1.ad6ff4p-7f, 0x1.41db04p-9f, -0x1.7219ccp-6f, -0x1.1e3d32p-8f,
     0x1.cb1358p-8f, -0x1.d43f26p-11f, 0x1.cb9866p-7f, 0x1.f74e8cp-9f,
@@ -248,7 +248,7 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     0x1.55c05cp-5f, -0x1.dc04b4p-8f, 0x1.57365ap-6f, 0x1.150f92p-8f,
     -0x1.794a76p-11f, -0x1.2085dap-9f, -0x1.cab124p-5f, 0x1.aaed32p-10f,
     /* term 34 of the 8 mode amplitudes */
-    -0x1.ee0334p-4f, -0x1.00f7fap-13f, 0x1.05255ep-10f, -0x1.1f2162p-7f,
+    -0x1.ee0334p-4f, -0x1.00f7fcp-13f, 0x1.05255ep-10f, -0x1.1f2162p-7f,
     -0x1.bcbea6p-9f, 0x1.b900e4p-12f, -0x1.6af438p-11f, -0x1.9af0d4p-13f,
     /* Q15 amplitude scales v_k */
     0x1.5f6cdp+8f, 0x1.422972p+9f, 0x1.4295cp+9f, 0x1.2bf67ap+8f,
@@ -992,7 +992,7 @@ const tfit_model tfit_block48_nh_forward = {
      0xbfddb3d7u, 0xbfddb3d7u, 0xbfddb3d7u, 0xc15c7f29u, 0xc1a0c5b5u, 0x418bfdc6u,
      0xf18b272au, 0xf1caec55u, 0x71b0b1a1u, 0xc1a2702cu, 0x412dd783u, 0xc199d041u,
      0xd7f905aau, 0xb914c587u},
-    0xad10fab1u
+    0xd2280ba5u
 };
 
 static const uint32_t tfit_block48_nh_contact_dims[1] = {
@@ -1013,17 +1013,17 @@ static const float tfit_block48_nh_contact_coef[72] = {
     -0x1.5555eap-10f, 0x1.66da6p-9f, -0x1.0dd2e2p-1f, -0x1.f0aabap-11f,
     0x1.09342ap-8f, -0x1.f2b23cp-10f, -0x1.8907cp-6f, -0x1.1a9a14p-7f,
     -0x1.59348ep-9f, 0x1.60fe1ep-8f, 0x1.1d86c8p-6f, 0x1.9b96b6p-5f,
-    -0x1.a75a74p-12f, 0x1.0224bp-9f, 0x1.83d99p-10f, -0x1.022dd4p-10f,
+    -0x1.a75a72p-12f, 0x1.0224bp-9f, 0x1.83d99p-10f, -0x1.022dd4p-10f,
     /* node 61 y force */
     -0x1.5c7338p-11f, -0x1.448a3cp-6f, 0x1.854fd8p+1f, -0x1.246e4cp-7f,
-    -0x1.b1590ep-13f, -0x1.1c7d9cp-12f, -0x1.34c3e2p-13f, 0x1.a75032p-11f,
+    -0x1.b1590ep-13f, -0x1.1c7d9cp-12f, -0x1.34c3ep-13f, 0x1.a75032p-11f,
     -0x1.0fe082p-1f, 0x1.1ef22cp-10f, 0x1.6fab22p-12f, 0x1.ea568p-9f,
     0x1.47acbap-8f, -0x1.192e4ep-9f, -0x1.8f7706p-8f, 0x1.5f24ecp-8f,
     -0x1.86ef34p-6f, -0x1.a0a26ap-9f, 0x1.c03864p-5f, 0x1.6ad0b6p-12f,
     /* node 61 z force */
     0x1.5ca322p-4f, 0x1.73c5bp-7f, 0x1.56826ap-8f, 0x1.95f4a8p+1f,
     -0x1.8a7c7ap-5f, -0x1.b7d80cp-10f, 0x1.c9edecp-10f, -0x1.86350ep-5f,
-    0x1.9addbcp-10f, 0x1.d80b24p-3f, 0x1.18253p-15f, 0x1.850e88p-10f,
+    0x1.9addbcp-10f, 0x1.d80b24p-3f, 0x1.182532p-15f, 0x1.850e88p-10f,
     0x1.eb30d8p-7f, -0x1.ca568ep-11f, 0x1.27d5fep-6f, 0x1.1e6a94p-8f,
     0x1.c238aap-13f, 0x1.a2b816p-7f, 0x1.23da12p-10f, 0x1.91e8dp-4f,
 };
@@ -1037,7 +1037,7 @@ const tfit_model tfit_block48_nh_contact = {
      0xbfbf1e71u, 0xbfbdde2bu, 0xc07bef89u, 0xc13c69d5u, 0xc18adc79u, 0x42194f90u,
      0xf16dda67u, 0xf1af3feau, 0x72420aa4u, 0xc18dc5afu, 0x4119aa4au, 0xc22a5145u,
      0xf30c0431u, 0xcfbc57a0u},
-    0x0a3a3277u
+    0x6ff75b83u
 };
 static const int32_t tfit_block48_nh_contact_q31_coef[76] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */

@@ -26,9 +26,10 @@ PRONY_KELVIN_SOLVER := $(wildcard host/solvers/nonlinear/nonlinear.c)
 ifneq ($(PRONY_KELVIN_SOLVER),)
 PRONY_LONG += kelvin_small
 endif
-# the shipped viscoelastic header (coeffs/block48_ve.h): natively in make
-# check, under QEMU in prony-long-qemu (check-prony-ve below)
-PRONY_LONG += block48_ve
+# the shipped viscoelastic headers (coeffs/block48_ve.h, stomach_ve.h):
+# natively in make check, under QEMU in prony-long-qemu (check-prony-ve
+# below)
+PRONY_LONG += block48_ve stomach_ve
 PRONY_LONG_CORES := m4f m7
 
 # $(call prony_long,NAME): the host's expectation and the native runner
@@ -79,6 +80,7 @@ $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_lo
 # prony-long-qemu.  Each run steps the header's Q31 prony models too
 # (docs/q31-format.md §8).
 PRONY_QEMU_TIMEOUT_block48_ve := 1500
+PRONY_QEMU_TIMEOUT_stomach_ve := 1500
 PRONY_LONG_QEMU_CHECK := families
 PRONY_LONG_QEMU_RUNS := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=prony-long-$(c)-%))
 PRONY_LONG_QEMU_ALL := $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG:%=prony-long-$(c)-%))
@@ -90,12 +92,15 @@ endef
 $(foreach h,$(PRONY_LONG),$(foreach c,$(PRONY_LONG_CORES),$(eval $(call prony_long_qemu,$(h),$(c)))))
 
 CHECKS += check-prony-long
-check-prony-long: $(PRONY_LONG:%=$(T)/prony/long_run-%) \
+# make check leaves stomach_ve's 10^6 ticks to make check-full (its golden
+# vectors and instruction count run in check-prony-ve)
+PRONY_LONG_CHECKED = $(call check_len,$(PRONY_LONG),$(filter-out stomach_ve,$(PRONY_LONG)))
+check-prony-long: $(PRONY_LONG_CHECKED:%=$(T)/prony/long_run-%) \
     $(foreach c,$(PRONY_LONG_CORES),$(PRONY_LONG_QEMU_CHECK:%=$(FW)/$(c)/long-%.elf))
 	@echo "== prony models: 10^6 ticks of a haptic force history, native and QEMU (M4F, M7), against the host reference =="
-	@set -e; for h in $(PRONY_LONG); do $(T)/prony/long_run-$$h; done
+	@set -e; for h in $(PRONY_LONG_CHECKED); do $(T)/prony/long_run-$$h; done
 	@$(MAKE) --no-print-directory $(PRONY_LONG_QEMU_RUNS)
-	@echo "ok: every prony model bit-exact over 10^6 ticks natively ($(PRONY_LONG)) and under QEMU ($(PRONY_LONG_QEMU_CHECK))"
+	@echo "ok: every prony model bit-exact over 10^6 ticks natively ($(PRONY_LONG_CHECKED)) and under QEMU ($(PRONY_LONG_QEMU_CHECK))"
 
 prony-long-qemu: $(PRONY_LONG_QEMU_ALL)
 	@echo "== prony models: 10^6 ticks under QEMU, M4F and M7, every test header ($(PRONY_LONG)) =="
@@ -218,49 +223,42 @@ prony-ve-study: $(T)/prony/solve_every_study
 	@echo "== block48_ve: held-out histories, a solver step every 25 and 5 ticks against every tick =="
 	@$< coeffs/block48_ve.yaml 25,5 | tee docs/validation/prony_solve_every.txt
 
-# --- block48_ve: the shipped header, acceptance 2 of issue 14 -------------------
-# coeffs/block48_ve.h (make coeffs; check-coeffs regenerates it byte for
-# byte) copied beside the test headers so that the prony_long rules above
-# build its 10^6-tick runs; its golden vectors natively, one instruction
-# count for every tick of its golden sequence (callgrind), and its held-out
-# press-hold-release error against the time-stepped solve within 2 % of
-# the peak displacement, with the total error stated.
-$(T)/gen/block48_ve.h: coeffs/block48_ve.h coeffs/block48_ve_golden.h
-	@mkdir -p $(@D)
-	$(Q)cp coeffs/block48_ve.h coeffs/block48_ve_golden.h $(@D)/
+# --- the shipped viscoelastic headers ------------------------------------------
+# coeffs/block48_ve.h and coeffs/stomach_ve.h (make coeffs; check-coeffs
+# regenerates them byte for byte in make check-full) copied beside the
+# test headers so that the prony_long rules above build their 10^6-tick
+# runs; their golden vectors natively, one instruction count for every tick
+# of the golden sequence (callgrind), and the held-out press-hold-release
+# error against the time-stepped solve within 2 % of the peak displacement,
+# with the total error stated.
+PRONY_SHIPPED := block48_ve stomach_ve
 
-$(T)/prony/golden-block48_ve: tests/header/run_golden.c $(T)/gen/block48_ve.h $(B)/native/libtfit.a
-	@mkdir -p $(@D)
-	$(call say,BUILD)
-	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"block48_ve_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_BLOCK48_VE_GOLDEN_Q31_SETS \
-	  -DTFIT_BLOCK48_VE_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
+# $(call prony_shipped,NAME): the copy, the golden runner and the probe
+define prony_shipped
+$(T)/gen/$(1).h: coeffs/$(1).h coeffs/$(1)_golden.h
+	@mkdir -p $$(@D)
+	$(Q)cp coeffs/$(1).h coeffs/$(1)_golden.h $$(@D)/
 
-$(T)/prony/probe-block48_ve: tests/insncount/probe.c $(T)/gen/block48_ve.h $(B)/native/libtfit.a
-	@mkdir -p $(@D)
-	$(call say,BUILD)
-	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"block48_ve_golden.h"' \
-	  -DGOLDEN_SETS=TFIT_BLOCK48_VE_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_BLOCK48_VE_GOLDEN_Q31_SETS \
-	  -DTFIT_BLOCK48_VE_IMPLEMENTATION $< $(B)/native/libtfit.a -o $@
+$(T)/prony/golden-$(1): tests/header/run_golden.c $(T)/gen/$(1).h $(B)/native/libtfit.a
+	@mkdir -p $$(@D)
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call upper,$(1))_IMPLEMENTATION $$< $(B)/native/libtfit.a -o $$@
+
+$(T)/prony/probe-$(1): tests/insncount/probe.c $(T)/gen/$(1).h $(B)/native/libtfit.a
+	@mkdir -p $$(@D)
+	$$(call say,BUILD)
+	$(Q)$(CC) $(HOST_STRICT) -O1 -Itarget/include -I$(T)/gen -DGOLDEN_H='"$(1)_golden.h"' \
+	  -DGOLDEN_SETS=TFIT_$(call upper,$(1))_GOLDEN_SETS -DGOLDEN_Q31_SETS=TFIT_$(call upper,$(1))_GOLDEN_Q31_SETS \
+	  -DTFIT_$(call upper,$(1))_IMPLEMENTATION $$< $(B)/native/libtfit.a -o $$@
+endef
+$(foreach h,$(PRONY_SHIPPED),$(eval $(call prony_shipped,$(h))))
 
 .PHONY: check-prony-ve
 CHECKS += check-prony-ve
-check-prony-ve: $(T)/gen/block48_ve.h $(T)/prony/golden-block48_ve $(T)/prony/probe-block48_ve
-	@echo "== prony: the shipped block48_ve.h ([EFG-Kelvin]'s Kelvin law, 11 x 11 x 3, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
-	@sed -n 's/^ \*       \(stateful\|held-out cases are\|error against the physics\|Q31 form tfit_block48_ve_forward\)/  \1/p' $<
-	@grep -q '^#define TFIT_BLOCK48_VE_FORWARD_Q31_STATE_WORDS' $< || { echo "block48_ve.h has no Q31 form of its prony model"; exit 1; }
-	@q=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_Q31_HELDOUT_MAX_MM \([^ ]*\).*/\1/p' $<); \
-	  mx=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_MAX_MM //p' $<); \
-	  rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \
-	  awk -v q="$$q" -v m="$$mx" -v r="$$rel" -v b=$(PRONY_MAX_REL) 'BEGIN { \
-	    if (q == "" || m == "" || r == "") exit 1; peak = m / r; \
-	    printf "  Q31 form against the held-out solves: max %g mm, %.3g %% of the peak %.4g mm (bound %g %%)\n", q, 100 * q / peak, peak, 100 * b; \
-	    exit !(q / peak <= b) }' || { echo "block48_ve: the Q31 form's held-out error is missing or beyond $(PRONY_MAX_REL) of the peak"; exit 1; }
-	@$(T)/prony/golden-block48_ve block48_ve/native
-	@tests/insncount/run.sh $(T)/prony/probe-block48_ve $(T)/prony/insncount-block48_ve
-	@rel=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_HELDOUT_REL_MAX //p' $<); \
-	  tot=$$(sed -n 's/^#define TFIT_BLOCK48_VE_FORWARD_TOTAL_MAX_MM \([^ ]*\).*/\1/p' $<); \
-	  awk -v r="$$rel" -v b=$(PRONY_MAX_REL) 'BEGIN { exit !(r != "" && r + 0 <= b + 0) }' || \
-	  { echo "block48_ve: held-out error $$rel of the peak is beyond $(PRONY_MAX_REL)"; exit 1; }; \
-	  [ -n "$$tot" ] || { echo "block48_ve.h states no total error (fit + discretisation)"; exit 1; }; \
-	  echo "ok: block48_ve: held-out error $$rel of the peak displacement <= $(PRONY_MAX_REL) against the time-stepped solves; total stated $$tot mm; golden vectors (float and Q31) bit-exact natively, one instruction count per tick for each form"
+check-prony-ve: $(foreach h,$(PRONY_SHIPPED),$(T)/gen/$(h).h $(T)/prony/golden-$(h) $(T)/prony/probe-$(h))
+	@echo "== prony: the shipped viscoelastic headers ($(PRONY_SHIPPED): [EFG-Kelvin]'s Kelvin law, 1 ms tick): golden vectors, instruction count per tick, held-out error within 2 % of the peak =="
+	@set -e; for n in $(PRONY_SHIPPED); do \
+	  tests/prony/check_shipped.sh $$n $(T)/gen/$$n.h $(T)/prony $(PRONY_MAX_REL); done
+	@echo "ok: $(PRONY_SHIPPED): held-out errors within $(PRONY_MAX_REL) of the peak displacement against the time-stepped solves, totals stated, golden vectors (float and Q31) bit-exact natively, one instruction count per tick for each form"

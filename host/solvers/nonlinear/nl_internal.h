@@ -121,6 +121,7 @@ typedef struct nl_solver {
     int k_rest;         /* s->k was last assembled at rest: d = 0, zero histories, dt_relaxed */
     int chol_rest;      /* s->chol holds the Cholesky factor of that rest tangent */
     int rest_factor;    /* that factor is kept for the case's first iteration, as if just made */
+    int rest_guess;     /* BFGS from a guess on that factor, no other made since (nl_newton.c) */
     int use_ldl;        /* the usable factor is the LDL^T one */
     double shift;       /* the last positive definite shift (indefinite: shift), 0: none yet */
     int shifted;        /* the usable factor is of a shifted tangent */

@@ -211,6 +211,7 @@ int nl_factor(nl_solver *s)
     s->st.t_factor += t;
     s->chol_ok = rc == 0;
     s->chol_rest = rc == 0 && s->k_rest;
+    s->rest_guess = 0;
     s->use_ldl = 0;
     s->indef_kept = 0;
     s->shifted = 0;
@@ -283,6 +284,7 @@ int nl_factor_for_rest(nl_solver *s, int from_rest)
     }
     s->chol_ok = held;
     s->rest_factor = held;
+    s->rest_guess = held && !from_rest;
     return 0;
 }
 

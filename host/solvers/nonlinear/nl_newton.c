@@ -78,6 +78,7 @@ void nl_reset(nl_solver *s)
     memset(s->bhist, 0, s->bnd.n * s->nh * sizeof *s->bhist);
     s->at = (nl_target){0, -1, {0, 0, 0}};
     s->eager = 0;
+    s->rest_guess = 0;
     s->shift = 0; /* (a case depends on its own start alone: nonlinear.c, solve) */
 }
 
@@ -158,6 +159,12 @@ static int line_search(nl_solver *s, const double *d, const double *du, double s
  * point. */
 #define BFGS_PATIENCE 10
 #define BFGS_STALL 0.9
+/* From a guess on the rest tangent's factor (nl_factor_for_rest), a tangent
+ * at the iterate after this many iterations: the pairs there converge
+ * steadily but linearly (the liver with its nodule, 15,222 nodes: 30
+ * iterations to the energy tolerance, some cases beyond the 50 allowed,
+ * then solved again from rest: 60-90 s against 11-35 s). */
+#define BFGS_GUESS_PATIENCE 25
 
 /* Does this iteration assemble a tangent?  Full Newton and Krylov always.
  * Modified Newton and BFGS keep their factorisation while it pays: they
@@ -184,7 +191,8 @@ static int wants_tangent(const nl_solver *s, unsigned since, double ratio_e)
             all = !s->chol_ok || s->use_ldl || (since >= 4 && ratio_e > 0.5);
         } else {
             all = !s->chol_ok || s->use_ldl ||
-                  (since >= BFGS_PATIENCE && ratio_e > BFGS_STALL);
+                  (since >= BFGS_PATIENCE && ratio_e > BFGS_STALL) ||
+                  (s->rest_guess && since >= BFGS_GUESS_PATIENCE);
         }
         /* the patch tangent: the factor's block near the contact every
          * iteration that does not refactorise */
