@@ -4,7 +4,8 @@
 #                   and scene (vertex index, positions, CRC) and its servo
 #                   budget at 1 kHz on a Cortex-M4F (tests/organs/map_check.c)
 #   organ-pictures  the organs at rest and deformed (docs/organs/*.png) and
-#                   their VTK files for ParaView (build/organs/*.vtu)
+#                   their VTK files for ParaView (build/organs/*.vtu); at
+#                   rest, the surface over a material region green
 #   bench-organs    (make bench) the organ models' native speed; their
 #                   regeneration times are bench-regen's (coeffs.mk)
 #   organ-subsets   what the near-contact outputs leave out: the largest
@@ -50,6 +51,11 @@ ORGAN_FORCE_heart := -0.3,0,0
 ORGAN_MAGNIFY_liver := 1
 ORGAN_MAGNIFY_stomach := 5
 ORGAN_MAGNIFY_heart := 5
+# liver_tumour: pressed over its nodule along the inward normal (its
+# reference's direction), the nodule's footprint green at rest
+ORGAN_FORCE_liver_tumour := 0.1344,0.2595,-0.0675
+ORGAN_MAGNIFY_liver_tumour := 1
+ORGAN_PICTURES := $(ORGAN_NAMES) liver_tumour
 
 # $(call organ_picture,NAME)
 organ_picture = $(B)/bin/tissuefit -q solve coeffs/$(1).yaml --force $(ORGAN_FORCE_$(1)) \
@@ -59,7 +65,7 @@ organ_picture = $(B)/bin/tissuefit -q solve coeffs/$(1).yaml --force $(ORGAN_FOR
 organ-pictures: $(B)/bin/tissuefit | deps-demo
 	@echo "== organ pictures: docs/organs/*_{rest,deformed}.png, $(B)/organs/*.vtu =="
 	@mkdir -p docs/organs $(B)/organs
-	@set -e; $(foreach n,$(ORGAN_NAMES),$(call organ_picture,$(n)))
+	@set -e; $(foreach n,$(ORGAN_PICTURES),$(call organ_picture,$(n)))
 
 # Native speed and instruction counts of the organ models (tests/bench/run.sh).
 $(foreach h,$(ORGAN_HEADERS),$(eval $(call bench_binary,$(h))))

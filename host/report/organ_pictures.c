@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "problem/inclusions.h"
 #include "report/surface_render.h"
 
 /* Outward normal at surface node c: the area-weighted mean of its
@@ -28,6 +29,36 @@ static void vertex_normal(const tf_mesh_geometry *m, size_t c, double n[3])
         n[1] += u[2] * w[0] - u[0] * w[2];
         n[2] += u[0] * w[1] - u[1] * w[0];
     }
+}
+
+/* Whether surface triangle t lies over a material region: the line from
+ * its centroid along its inward normal meets an inclusion within
+ * OVER_DEPTH_MM (sampled every half millimetre): the surface a probe
+ * presses to feel it. */
+#define OVER_DEPTH_MM 50.0
+static int over_inclusion(const tf_problem *p, const tf_mesh_geometry *m, size_t t)
+{
+    const size_t *v = m->tm.tri + 3 * t;
+    const double *a = m->tm.xyz + 3 * v[0], *b = m->tm.xyz + 3 * v[1], *d = m->tm.xyz + 3 * v[2];
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0)) {
+        return 0;
+    }
+    for (double s = 0; s <= OVER_DEPTH_MM; s += 0.5) {
+        double x[3];
+        for (int k = 0; k < 3; ++k) {
+            x[k] = (a[k] + b[k] + d[k]) / 3 - s * n[k] / len;
+        }
+        for (size_t k = 0; k < p->n_inclusions; ++k) {
+            if (tf_inclusion_holds(&p->inclusions[k], x)) {
+                return 1;
+            }
+        }
+    }
+    return 0;
 }
 
 static void camera_for(const tf_problem *p, const tf_report_organ_view *v, tf_report_render *r)
@@ -72,11 +103,13 @@ int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
             fixed[p->fixed[k].nodes[q]] = 1;
         }
     }
-    /* A triangle is fixed when its three corners are, contact when it is
-     * one of a site's triangles (the same corners). */
+    /* A triangle is fixed when its three corners are, over a material
+     * region (3) when its inward normal meets one, contact when it is one
+     * of a site's triangles (the same corners). */
     for (size_t t = 0; t < m->tm.ntri; ++t) {
         const size_t *c = m->tm.tri + 3 * t;
         value[t] = fixed[c[0]] && fixed[c[1]] && fixed[c[2]];
+        value[t] = p->n_inclusions > 0 && over_inclusion(p, m, t) ? 3 : value[t];
         for (size_t k = 0; k < p->n_contacts; ++k) {
             const tf_patch *pt = &p->contacts[k].patch;
             for (size_t q = 0; q < pt->n_tri; ++q) {
@@ -90,14 +123,15 @@ int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
     free(fixed);
     base(p, v, &r);
     snprintf(title, sizeof title,
-             "%s at rest: %zu surface vertices; fixed region blue%s",
+             "%s at rest: %zu surface vertices; fixed region blue%s%s",
              v->title ? v->title : p->name, p->cloud.n_surface,
-             p->n_contacts == 0 ? "" : p->n_contacts > 1 ? ", contact sites red" : ", contact site red");
+             p->n_contacts == 0 ? "" : p->n_contacts > 1 ? ", contact sites red" : ", contact site red",
+             p->n_inclusions > 0 ? ", over a material region green" : "");
     r.tri_value = value;
     r.vmin = 0;
-    r.vmax = 2;
+    r.vmax = 3;
     r.palette = "defined (0 '#e0b890', 0.5 '#e0b890', 0.5 '#4070c8', 1.5 '#4070c8', "
-                "1.5 '#d83020', 2 '#d83020')";
+                "1.5 '#d83020', 2.5 '#d83020', 2.5 '#30a060', 3 '#30a060')";
     r.cblabel = NULL;
     r.title = title;
     int rc = tf_report_render_png(ctx, path, &r);
