@@ -74,8 +74,8 @@
 #define TFIT_BLOCK48_NH_FORWARD_HELDOUT_RMS_MM 0.00512724
 #define TFIT_BLOCK48_NH_FORWARD_DISCRETISATION_MAX_MM 0.392641 /* the solve against the physics */
 #define TFIT_BLOCK48_NH_FORWARD_TOTAL_MAX_MM 0.447402 /* held-out fit + discretisation */
-#define TFIT_BLOCK48_NH_FORWARD_CRC32 0x14eff0e4u
-#define tfit_block48_nh_forward tfit_block48_nh_forward_14eff0e4 /* this header's version of the model */
+#define TFIT_BLOCK48_NH_FORWARD_CRC32 0xd2280ba5u
+#define tfit_block48_nh_forward tfit_block48_nh_forward_d2280ba5 /* this header's version of the model */
 extern const tfit_model tfit_block48_nh_forward;
 
 /* tfit_block48_nh_contact */
@@ -177,10 +177,10 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.b02f0ap-7f, -0x1.5d5ea4p-6f, 0x1.9a3e7ap-6f, 0x1.12b5fcp-7f,
     /* term 10 of the 8 mode amplitudes */
     -0x1.650b54p-8f, -0x1.adde6ep-6f, -0x1.c81568p-8f, -0x1.13b0f6p-11f,
-    -0x1.eeab38p-14f, -0x1.a203fep-10f, 0x1.5ed276p-10f, 0x1.f7d4dcp-13f,
+    -0x1.eeab3ap-14f, -0x1.a203fep-10f, 0x1.5ed276p-10f, 0x1.f7d4dcp-13f,
     /* term 11 of the 8 mode amplitudes */
     -0x1.50f5bp-5f, -0x1.e00e62p-8f, 0x1.7ffc9ap-6f, 0x1.9f6ad6p-8f,
-    -0x1.b86aa8p-7f, -0x1.33d99cp-9f, -0x1.0acf08p-6f, -0x1.889fdep-10f,
+    -0x1.b86aa8p-7f, -0x1.33d99ap-9f, -0x1.0acf08p-6f, -0x1.889fep-10f,
     /* term 12 of the 8 mode amplitudes */
     -0x1.e0ab9cp-7f, 0x1.a5a01ap-10f, 0x1.45038p-12f, 0x1.41ea96p-6f,
     -0x1.7e626cp-5f, 0x1.651b0ap-8f, 0x1.ac7788p-7f, 0x1.f50f78p-6f,
@@ -188,7 +188,7 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.6cfcfap-7f, -0x1.5aa89p-6f, -0x1.7cc09ep-8f, -0x1.5b1c82p-10f,
     -0x1.cfae16p-10f, -0x1.10963ap-6f, 0x1.c289ep-9f, 0x1.58737p-9f,
     /* term 14 of the 8 mode amplitudes */
-    0x1.aecccep-4f, -0x1.075972p-9f, -0x1.4858cep-9f, -0x1.64142ep-7f,
+    0x1.aecccep-4f, -0x1.075974p-9f, -0x1.4858cep-9f, -0x1.64142ep-7f,
     0x1.17f87p-6f, -0x1.05f852p-11f, -0x1.6f5f32p-8f, 0x1.067974p-7f,
     /* term 15 of the 8 mode amplitudes */
     -0x1.35eeb6p-6f, 0x1.f3ae3p-4f, 0x1.e09db4p-6f, 0x1.d6bfdep-6f,
@@ -197,7 +197,7 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.94b494p-8f, -0x1.c5849ep-8f, 0x1.bc0412p-6f, 0x1.af5092p-11f,
     -0x1.310b9p-10f, 0x1.20675cp-10f, -0x1.14bd16p-9f, -0x1.fd83p-11f,
     /* term 17 of the 8 mode amplitudes */
-    -0x1.1cd244p-4f, 0x1.bd505cp-10f, -0x1.bb361cp-12f, 0x1.91808ep-6f,
+    -0x1.1cd244p-4f, 0x1.bd505cp-10f, -0x1.bb361ep-12f, 0x1.91808ep-6f,
     -0x1.8ed378p-5f, -0x1.6da9d4p-8f, 0x1.3ddef4p-6f, -0x1.4b4c04p-5f,
     /* term 18 of the 8 mode amplitudes */
     -0x1.846d32p-5f, 0x1.1007dp-5f, -0x1.e2077ap-4f, -0x1.5c733ep-6f,
@@ -206,7 +206,7 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     0x1.59d15ap-1f, -0x1.6f998cp-9f, -0x1.547502p-8f, -0x1.dc963p-6f,
     0x1.34b17p-4f, 0x1.16f34cp-8f, -0x1.5851f8p-6f, 0x1.2209eep-7f,
     /* term 20 of the 8 mode amplitudes */
-    -0x1.711b9cp-8f, -0x1.65ae04p-11f, -0x1.4f42bep-13f, 0x1.c7c32p-11f,
+    -0x1.711b9ap-8f, -0x1.65ae02p-11f, -0x1.4f42bep-13f, 0x1.c7c32p-11f,
     -0x1.519bacp-9f, -0x1.29ca94p-11f, 0x1.617dd2p-11f, 0x1.5903cap-12f,
     /* term 21 of the 8 mode amplitudes */
     0x1.1f601ap-5f, 0x1.32e4eap-10f, 0x1.377424p-10f, -0x1.9560a2p-9f,
@@ -215,8 +215,8 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.a94478p-8f, 0x1.6ddb46p-6f, 0x1.29d764p-7f, 0x1.959eaep-9f,
     -0x1.42fb62p-9f, 0x1.1a73c8p-6f, -0x1.e91318p-9f, -0x1.8aaeb8p-9f,
     /* term 23 of the 8 mode amplitudes */
-    -0x1.be8ce8p-9f, -0x1.0391fap-8f, -0x1.0ad66ep-10f, -0x1.38b16ep-8f,
-    0x1.e6cd5ap-9f, -0x1.984b32p-10f, -0x1.0a0c6ep-9f, -0x1.a0bb4ap-16f,
+    -0x1.be8ce6p-9f, -0x1.0391fap-8f, -0x1.0ad66ep-10f, -0x1.38b16ep-8f,
+    0x1.e6cd5cp-9f, -0x1.984b32p-10f, -0x1.0a0c6ep-9f, -0x1.a0bb58p-16f,
     /* term 24 of the 8 mode amplitudes */
     -0x1.aeb2f4p-5f, -0x1.57d1a4p-7f, -0x1.e77db8p-9f, -0x1.f1d892p-11f,
     -0x1.9a654ap-9f, -0x1.db1d02p-10f, 0x1.001dfcp-5f, 0x1.79b626p-8f,
@@ -228,13 +228,13 @@ static const float tfit_block48_nh_forward_coef[1753] = {
     -0x1.0cfc08p-10f, 0x1.b10cbap-10f, 0x1.5285acp-11f, -0x1.2c5354p-13f,
     /* term 27 of the 8 mode amplitudes */
     -0x1.48e5fp-4f, 0x1.082b0cp-9f, 0x1.3ad9cp-7f, 0x1.a2c62cp-7f,
-    -0x1.5e3e5cp-6f, 0x1.db85fep-6f, 0x1.91b468p-10f, -0x1.d6ed32p-8f,
+    -0x1.5e3e5cp-6f, 0x1.db85fep-6f, 0x1.91b466p-10f, -0x1.d6ed32p-8f,
     /* term 28 of the 8 mode amplitudes */
-    -0x1.d0bbfep-3f, 0x1.1609dap-7f, 0x1.924aa4p-8f, 0x1.5ed48p-6f,
+    -0x1.d0bbfep-3f, 0x1.1609dap-7f, 0x1.924aa2p-8f, 0x1.5ed48p-6f,
     -0x1.b51f0ap-5f, 0x1.02c65cp-7f, 0x1.3e8902p-7f, -0x1.6baa9ap-10f,
     /* term 29 of the 8 mode amplitudes */
     -0x1.2cb276p-9f, -0x1.647bp-6f, -0x1.f2d74p-9f, -0x1.06aca6p-7f,
-    0x1.48852cp-9f, -0x1.a9c7bap-5f, 0x1.bcdf4cp-10f, 0x1.334e32p-8f,
+    0x1.48852cp-9f, -0x1.a9c7bap-5f, 0x1.bcdf4ap-10f, 0x1.334e32p-8f,
     /* term 30 of the 8 mode amplitudes */
     0x1.7133bcp-8f, -0x1.a44b82p-12f, 0x1.4dd1a4p-13f, -0x1.510dfcp-13f,
     -0x1.088dap-13f, -0x1.45a47cp-13f, -0x1.4810f8p-12f, -0x1.756c8p-12f,
@@ -992,7 +992,7 @@ const tfit_model tfit_block48_nh_forward = {
      0xbfddb3d7u, 0xbfddb3d7u, 0xbfddb3d7u, 0xc15c7f29u, 0xc1a0c5b5u, 0x418bfdc6u,
      0xf18b272au, 0xf1caec55u, 0x71b0b1a1u, 0xc1a2702cu, 0x412dd783u, 0xc199d041u,
      0xd7f905aau, 0xb914c587u},
-    0x14eff0e4u
+    0xd2280ba5u
 };
 
 static const uint32_t tfit_block48_nh_contact_dims[1] = {

@@ -161,11 +161,13 @@ static int line_search(nl_solver *s, const double *d, const double *du, double s
 #define BFGS_STALL 0.9
 /* From a guess on the rest tangent's factor (nl_factor_for_rest), a tangent
  * at the iterate after this many iterations: the pairs there may converge
- * steadily but linearly (the liver with its nodule, 15,222 nodes: 30
+ * steadily but linearly (the liver with its nodule, 15,222 nodes: 14 to 30
  * iterations to the energy tolerance, some cases beyond the 50 allowed,
- * then solved again from rest; with 25 here a continued case cost 25
- * iterations and a tangent, more than the tangent at the guess had). */
-#define BFGS_GUESS_PATIENCE 10
+ * then solved again from rest).  A tangent and its factorisation cost
+ * there as much as about 18 iterations (46 s against 2.5 s; on the liver
+ * without the nodule 40), so a tangent at 10 iterations cost more than it
+ * saved. */
+#define BFGS_GUESS_PATIENCE 25
 
 /* Does this iteration assemble a tangent?  Full Newton and Krylov always.
  * Modified Newton and BFGS keep their factorisation while it pays: they
