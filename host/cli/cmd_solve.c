@@ -205,10 +205,10 @@ static int write_vtu(FILE *fp, const tf_problem *p, const double *u)
 {
     const tf_mesh_geometry *m = tf_problem_mesh(p);
     if (m != NULL) {
-        tf_report_vtu_displacements_tets(fp, &p->cloud, m->tm.tet, m->tm.ntet, u);
+        tf_report_vtu_displacements_tets(fp, p, m->tm.tet, m->tm.ntet, u);
         return 0;
     }
-    return tf_report_vtu_displacements(fp, &p->cloud, u, p->cuts, p->n_cuts);
+    return tf_report_vtu_displacements(fp, p, u);
 }
 
 /* The files go to temporaries first, so a failure leaves none of them. */

@@ -22,12 +22,18 @@ int tf_inclusion_holds(const tf_inclusion *c, const double x[3])
     return 1;
 }
 
-tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3])
+size_t tf_problem_region_at(const tf_problem *p, const double x[3])
 {
     for (size_t k = 0; k < p->n_inclusions; ++k) {
         if (tf_inclusion_holds(&p->inclusions[k], x)) {
-            return tf_material_lame(&p->inclusions[k].material);
+            return k + 1;
         }
     }
-    return tf_material_lame(&p->material);
+    return 0;
+}
+
+tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3])
+{
+    size_t r = tf_problem_region_at(p, x);
+    return tf_material_lame(r ? &p->inclusions[r - 1].material : &p->material);
 }

@@ -15,6 +15,10 @@
 /* Whether point x lies in inclusion c (boundary included). */
 int tf_inclusion_holds(const tf_inclusion *c, const double x[3]);
 
+/* The material region at x: k + 1 for the first inclusion k holding it,
+ * else 0 (the body). */
+size_t tf_problem_region_at(const tf_problem *p, const double x[3]);
+
 /* The small-strain Lame parameters at x (the linear solvers). */
 tf_lame tf_problem_lame_at(const tf_problem *p, const double x[3]);
 

@@ -5,6 +5,8 @@
 
 #include <stdlib.h>
 
+#include "problem/inclusions.h"
+
 void tf_report_csv_displacements(FILE *fp, const tf_cloud *c, const uint32_t *idx, size_t n,
                                  const double *u)
 {
@@ -40,9 +42,13 @@ static void hex(const tf_cloud *c, unsigned i, unsigned j, unsigned k, size_t v[
     }
 }
 
-/* Everything before the cells: header, point data, points. */
-static void vtu_points(FILE *fp, const tf_cloud *c, size_t nc, const double *u)
+/* Everything before the cells: header, point data, points.  A body with
+ * material regions gets "material" beside "displacement" and "node": 0 for
+ * the body, k for the k-th inclusion (the first holding the node, as the
+ * solvers take it: problem/inclusions.h), for ParaView's Threshold. */
+static void vtu_points(FILE *fp, const tf_problem *p, size_t nc, const double *u)
 {
+    const tf_cloud *c = &p->cloud;
     fprintf(fp,
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -57,6 +63,13 @@ static void vtu_points(FILE *fp, const tf_cloud *c, size_t nc, const double *u)
     fprintf(fp, "</DataArray>\n<DataArray type=\"UInt32\" Name=\"node\" format=\"ascii\">\n");
     for (size_t i = 0; i < c->n; ++i) {
         fprintf(fp, "%zu\n", i + 1);
+    }
+    if (p->n_inclusions > 0) {
+        fprintf(fp,
+                "</DataArray>\n<DataArray type=\"UInt32\" Name=\"material\" format=\"ascii\">\n");
+        for (size_t i = 0; i < c->n; ++i) {
+            fprintf(fp, "%zu\n", tf_problem_region_at(p, c->xyz + 3 * i));
+        }
     }
     fprintf(fp, "</DataArray>\n</PointData>\n<Points>\n"
                 "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
@@ -127,14 +140,13 @@ int tf_report_grid_cells(const tf_cloud *c, const tf_cut *cuts, size_t n_cuts, s
     return 0;
 }
 
-int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
-                                size_t n_cuts)
+int tf_report_vtu_displacements(FILE *fp, const tf_problem *p, const double *u)
 {
     size_t *conn, nc;
-    if (tf_report_grid_cells(c, cuts, n_cuts, &conn, &nc) != 0) {
+    if (tf_report_grid_cells(&p->cloud, p->cuts, p->n_cuts, &conn, &nc) != 0) {
         return -1;
     }
-    vtu_points(fp, c, nc, u);
+    vtu_points(fp, p, nc, u);
     for (size_t q = 0; q < nc; ++q) {
         const size_t *v = conn + 8 * q;
         fprintf(fp, "%zu %zu %zu %zu %zu %zu %zu %zu\n", v[0], v[1], v[2], v[3], v[4], v[5], v[6],
@@ -145,10 +157,10 @@ int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, co
     return 0;
 }
 
-void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet, size_t ntet,
-                               const double *u)
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_problem *p, const size_t *tet,
+                                      size_t ntet, const double *u)
 {
-    vtu_points(fp, c, ntet, u);
+    vtu_points(fp, p, ntet, u);
     for (size_t e = 0; e < ntet; ++e) {
         fprintf(fp, "%zu %zu %zu %zu\n", tet[4 * e], tet[4 * e + 1], tet[4 * e + 2],
                 tet[4 * e + 3]);

@@ -2,7 +2,9 @@
  * displacement_out.h — nodal displacements to files: CSV (the format the
  * project compares with CalculiX: header node,x,y,z,ux,uy,uz, mm, %.17g)
  * and VTK XML unstructured grids for ParaView (hexahedra of the node grid,
- * or an organ's tetrahedra; point data "displacement" and "node").  The
+ * or an organ's tetrahedra; point data "displacement" and "node", and
+ * "material" when the body has material regions: 0 the body, k the k-th
+ * inclusion).  The
  * grid cells a cut passes through are left out, so the cut's faces show as
  * a gap whose two lips are the faces of the cells beside it.
  */
@@ -32,13 +34,12 @@ void tf_report_csv_outputs(FILE *fp, const tf_problem *p, const double *v);
 int tf_report_grid_cells(const tf_cloud *c, const tf_cut *cuts, size_t n_cuts, size_t **conn,
                          size_t *nc);
 
-/* The whole cloud as a VTU file, without the cells the n cuts pass
+/* A box's whole cloud as a VTU file, without the cells its cuts pass
  * through.  Returns 0, or -1 (out of memory: nothing written). */
-int tf_report_vtu_displacements(FILE *fp, const tf_cloud *c, const double *u, const tf_cut *cuts,
-                                size_t n_cuts);
+int tf_report_vtu_displacements(FILE *fp, const tf_problem *p, const double *u);
 
 /* An organ's cloud as a VTU file: its tetrahedra (4 node indices each). */
-void tf_report_vtu_displacements_tets(FILE *fp, const tf_cloud *c, const size_t *tet,
+void tf_report_vtu_displacements_tets(FILE *fp, const tf_problem *p, const size_t *tet,
                                       size_t ntet, const double *u);
 
 #endif /* TF_DISPLACEMENT_OUT_H */

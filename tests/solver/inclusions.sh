@@ -51,6 +51,14 @@ within "$(end_mean "$tmp/u.csv")" 0.0396 0.0404 || bad "the bar inside an ellips
 ellipsoid_bar "30, 9, 4" >"$tmp/e2.yaml"
 expect 0 "an ellipsoid thinner than the bar" -- "$tool" -q solve "$tmp/e2.yaml" --out "$tmp/u2.csv"
 within "$(end_mean "$tmp/u2.csv")" 0.05 1 || bad "an ellipsoid 4 mm thick in z stiffens the whole bar"
+# ParaView's view: the VTU file's "material" is 1 exactly at the nodes of
+# the stiff half (x >= 20 on the 17-node grid: 9 of 17 columns of 5 x 5)
+expect 0 "the bar as VTU" -- "$tool" -q solve "$bar" --out "$tmp/u.csv" --vtk "$tmp/bar.vtu"
+m=$(awk '/Name="material"/ { on = 1; next } on && /<\/DataArray>/ { on = 0 }
+         on { n[$1]++ } END { printf "%d,%d", n[0], n[1] }' "$tmp/bar.vtu")
+[ "$m" = "200,225" ] || bad "the VTU file's material field: $m nodes of the body and the inclusion, not 200,225"
+expect 0 "block48 as VTU" -- "$tool" -q solve tests/solver/block48_seed.yaml --force 0,0,-1 --out "$tmp/u.csv" --vtk "$tmp/b.vtu"
+! grep -q 'Name="material"' "$tmp/b.vtu" || bad "a body without material regions has a material field"
 # the datasheet names it
 expect 0 "a header's datasheet lists the inclusion" -- "$tool" -q fit coeffs/block48.yaml -o "$tmp/b.h" \
     --no-discretisation --set 'inclusions.0.sphere.centre=24,24,3' --set inclusions.0.sphere.radius=2 \

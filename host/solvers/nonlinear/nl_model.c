@@ -307,12 +307,8 @@ static unsigned material_index(const nl_solver *s, size_t k)
  * inclusion holding it, else the body (0). */
 static unsigned material_at(const nl_solver *s, const tf_problem *p, const double x[3])
 {
-    for (size_t k = 0; k < p->n_inclusions; ++k) {
-        if (tf_inclusion_holds(&p->inclusions[k], x)) {
-            return material_index(s, k);
-        }
-    }
-    return 0;
+    size_t r = tf_problem_region_at(p, x);
+    return r ? material_index(s, r - 1) : 0;
 }
 
 static int material_points(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
