@@ -247,23 +247,26 @@ static void cell_correction(const nl_solver *s, size_t c, const double *w, doubl
     for (size_t k = 0; k < s->n_mats; ++k) {
         jbar[k] = vol[k] > 0 ? jbar[k] / vol[k] : 0;
     }
-    double decay = 1, phi1 = 1, phi2;
-    if (s->relaxes) {
-        tf_relax_factors(dt / s->tau, &decay, &phi1, &phi2);
+    /* each material's relaxation over the step (a law with history) */
+    double decay[1 + TF_INCLUSIONS_MAX], phi1[1 + TF_INCLUSIONS_MAX], phi2;
+    for (size_t k = 0; s->relaxes && k < s->n_mats; ++k) {
+        tf_relax_factors(dt / s->tau[k], &decay[k], &phi1[k], &phi2);
     }
     for (size_t p = 0; p < np; ++p) {
         double *pt = b->pt + p * PT_STRIDE;
-        double q = pt[PT_LAMBDA] * (jbar[(size_t)pt[PT_MAT]] - pt[PT_J]);
+        const size_t k = (size_t)pt[PT_MAT];
+        double q = pt[PT_LAMBDA] * (jbar[k] - pt[PT_J]);
         pt[PT_Q] = q;
         pt[PT_KAPPA] = 1;
-        if (s->relaxes && s->lambda_v != 0) {
+        if (s->relaxes && pt[PT_LAMBDA] != 0) {
             const double *hold = s->hist + (c * np + p) * s->hb + s->nh;
             double *hnew = s->hist_new + (c * np + p) * s->hb + s->nh;
-            double h = decay * hold[1] + phi1 * (q - hold[0]);
+            const double g = s->g_inf[k];
+            double h = decay[k] * hold[1] + phi1[k] * (q - hold[0]);
             hnew[0] = q;
             hnew[1] = h;
-            pt[PT_Q] = s->g_inf * q + (1 - s->g_inf) * h;
-            pt[PT_KAPPA] = s->g_inf + (1 - s->g_inf) * phi1;
+            pt[PT_Q] = g * q + (1 - g) * h;
+            pt[PT_KAPPA] = g + (1 - g) * phi1[k];
         }
     }
 }

@@ -82,7 +82,8 @@ typedef struct nl_solver {
     int trace_volume;   /* the correction's volume measure is tr E (TF_VOLUME_GREEN_TRACE),
                          * else J - 1 */
     int relaxes;        /* time-dependent law (TF_MATERIAL_HISTORY) */
-    double g_inf, tau;  /* its relaxation function g(t) = g_inf + (1 - g_inf) e^(-t/tau) */
+    /* each material's relaxation function g(t) = g_inf + (1 - g_inf) e^(-t/tau) */
+    double g_inf[1 + TF_INCLUSIONS_MAX], tau[1 + TF_INCLUSIONS_MAX];
     size_t nh, hb;      /* material history per point; history block per point */
     double dt_relaxed;  /* a time step after which a time-dependent law is relaxed */
     /* cells */

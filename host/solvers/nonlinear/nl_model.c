@@ -169,8 +169,6 @@ static void law_constants(nl_solver *s)
     const tf_material *m = &s->mats[0];
     unsigned caps = tf_material_caps(m);
     s->relaxes = (caps & TF_MATERIAL_HISTORY) != 0;
-    tf_material_relaxation(m, &s->g_inf, &s->tau);
-    s->dt_relaxed = s->relaxes && isfinite(s->tau) ? 1e15 * s->tau : 0;
     s->lin = tf_material_lame(m);
     s->lambda_v = s->bbar ? s->lin.lambda : 0;
     s->small = !(caps & TF_MATERIAL_FINITE);
@@ -256,7 +254,8 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
 
 /* Material regions: each inclusion's material, of the body's law (the
  * solver's constants, law_constants, are the law's: its capabilities,
- * history and volume measure), and each one's volumetric modulus. */
+ * history and volume measure), and each one's volumetric modulus and
+ * relaxation function. */
 static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     s->n_mats = 1 + p->n_inclusions;
@@ -272,18 +271,20 @@ static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
         }
         s->mats[1 + k] = inc->material;
     }
-    if (p->n_inclusions > 0 && s->relaxes) {
-        return tf_fail(ctx, "not yet: material regions in a law with history (%s): its "
-                            "volumetric relaxation is the body's",
-                       tf_material_name(&s->mats[0]));
-    }
     if (p->n_inclusions > 0 && s->vci) {
         return tf_fail(ctx, "not yet: material regions with VCI integration (solver.integration: "
                             "gauss integrates them point by point)");
     }
+    /* a law with history: each material relaxes with its own function;
+     * a step of dt_relaxed relaxes the slowest of them (a static solve) */
+    s->dt_relaxed = 0;
     for (size_t k = 0; k < s->n_mats; ++k) {
         s->lambda_m[k] = s->bbar ? tf_material_lame(&s->mats[k]).lambda : 0;
         s->vol_corr |= s->lambda_m[k] != 0;
+        tf_material_relaxation(&s->mats[k], &s->g_inf[k], &s->tau[k]);
+        if (s->relaxes && isfinite(s->tau[k])) {
+            s->dt_relaxed = fmax(s->dt_relaxed, 1e15 * s->tau[k]);
+        }
     }
     return 0;
 }
