@@ -60,6 +60,11 @@ size_t tf_api_scene_nodes(const tf_api_scene *s, const double **xyz);
  * `tissuefit solve --outputs`). */
 size_t tf_api_scene_outputs(const tf_api_scene *s, double *xyz, uint64_t *id);
 
+/* Material regions (the scene's inclusions): their count; when region is
+ * not NULL, the region of every node (0 the body, k the k-th inclusion, the
+ * first holding the node: the "material" of the tool's VTU files). */
+size_t tf_api_scene_regions(const tf_api_scene *s, uint32_t *region);
+
 /* Contact sites: their count, and the name of site k (NULL beyond). */
 size_t tf_api_scene_contacts(const tf_api_scene *s);
 const char *tf_api_scene_contact_name(const tf_api_scene *s, size_t k);

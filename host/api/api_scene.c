@@ -9,6 +9,7 @@
 
 #include "api/api_internal.h"
 #include "cli/cmd_args.h"
+#include "problem/inclusions.h"
 
 tf_api_scene *tf_api_scene_load(tf_ctx *ctx, const char *path, const char *const *sets,
                                 size_t n_sets)
@@ -76,6 +77,15 @@ size_t tf_api_scene_outputs(const tf_api_scene *s, double *xyz, uint64_t *id)
         }
     }
     return o->n_nodes;
+}
+
+size_t tf_api_scene_regions(const tf_api_scene *s, uint32_t *region)
+{
+    const tf_problem *p = &s->scene->problem;
+    for (size_t i = 0; region != NULL && i < p->cloud.n; ++i) {
+        region[i] = (uint32_t)tf_problem_region_at(p, p->cloud.xyz + 3 * i);
+    }
+    return p->n_inclusions;
 }
 
 size_t tf_api_scene_contacts(const tf_api_scene *s)

@@ -30,6 +30,7 @@ def _load():
         "tf_api_scene_free": (None, [c.c_void_p]),
         "tf_api_scene_nodes": (c.c_size_t, [c.c_void_p, c.POINTER(c.POINTER(c.c_double))]),
         "tf_api_scene_outputs": (c.c_size_t, [c.c_void_p, c.c_void_p, c.c_void_p]),
+        "tf_api_scene_regions": (c.c_size_t, [c.c_void_p, c.c_void_p]),
         "tf_api_scene_contacts": (c.c_size_t, [c.c_void_p]),
         "tf_api_scene_contact_name": (c.c_char_p, [c.c_void_p, c.c_size_t]),
         "tf_api_solve": (c.c_int, [c.c_void_p, c.c_void_p, c.c_char_p, c.c_void_p, c.c_double, c.c_void_p,

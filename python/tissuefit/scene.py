@@ -114,6 +114,16 @@ class Scene:
                                                  ptr(f), ptr(t), ptr(u), ptr(v)))
         return History(self, None if f is None else f.copy(), contact, t, u, v)
 
+    def regions(self):
+        """The material region of every node, (N,) uint32: 0 the body, k the
+        k-th of the scene's inclusions (the first holding the node), as the
+        tool's VTU files give it ("material"); None without inclusions."""
+        if lib.tf_api_scene_regions(self._handle(), None) == 0:
+            return None
+        r = np.empty(len(self.nodes), dtype=np.uint32)
+        lib.tf_api_scene_regions(self._handle(), ptr(r))
+        return r
+
     def cells(self):
         """The cells of the VTU file `tissuefit solve --vtk` writes:
         ("hexahedron", (C, 8)) for a box's grid (without the cells a cut

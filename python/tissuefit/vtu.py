@@ -1,6 +1,7 @@
 """Fields to VTK unstructured grids with meshio, named as the files
 `tissuefit solve --vtk` writes (report/displacement_out.c): point data
-"displacement" (3 components, mm) and "node" (node numbers from 1)."""
+"displacement" (3 components, mm), "node" (node numbers from 1) and, for a
+body with material regions, "material" (Scene.regions)."""
 
 import meshio
 import numpy as np
@@ -10,14 +11,14 @@ def mesh_of(solution):
     """The meshio.Mesh of a Solution: the scene's nodes and cells."""
     sc = solution.scene
     kind, conn = sc.cells()
-    return meshio.Mesh(
-        points=sc.nodes,
-        cells=[(kind, conn)],
-        point_data={
-            "displacement": np.asarray(solution.u, dtype=np.float64),
-            "node": np.arange(1, len(sc.nodes) + 1, dtype=np.uint32),
-        },
-    )
+    data = {
+        "displacement": np.asarray(solution.u, dtype=np.float64),
+        "node": np.arange(1, len(sc.nodes) + 1, dtype=np.uint32),
+    }
+    regions = sc.regions()
+    if regions is not None:
+        data["material"] = regions
+    return meshio.Mesh(points=sc.nodes, cells=[(kind, conn)], point_data=data)
 
 
 def write_vtu(path, solution):

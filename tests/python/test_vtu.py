@@ -41,3 +41,15 @@ def test_a_cut_leaves_its_cells_out(tmp_path):
     assert np.array_equal(meshio.read(sol.write_vtu(str(tmp_path / "cut.vtu"))).cells[0].data,
                           meshio.read(tmp_path / "tool.vtu").cells[0].data)
     assert whole < 10 * 10 * 2  # the 11 x 11 x 3 grid without the cells the incision crosses
+
+
+def test_material_regions(tmp_path):
+    bar = "tests/solver/inclusion_bar.yaml"
+    sc = tissuefit.Scene(bar)
+    r = sc.regions()
+    assert r.dtype == np.uint32 and r.shape == (len(sc.nodes),)
+    assert np.array_equal(r, (sc.nodes[:, 0] >= 20).astype(np.uint32))  # the stiff half, x >= 20
+    tool("-q", "solve", bar, "-o", tmp_path / "u.csv", "--vtk", tmp_path / "tool.vtu")
+    mine = meshio.read(sc.solve().write_vtu(str(tmp_path / "bar.vtu")))
+    assert np.array_equal(mine.point_data["material"], meshio.read(tmp_path / "tool.vtu").point_data["material"])
+    assert tissuefit.Scene("tests/solver/block48_seed.yaml").regions() is None
