@@ -73,6 +73,26 @@ int tf_material_linear_elastic(const tf_material *m)
     return (tf_material_caps(m) & (TF_MATERIAL_HOOKE | TF_MATERIAL_FINITE)) == TF_MATERIAL_HOOKE;
 }
 
+const char *tf_material_region_misfit(const tf_material *body, const tf_material *m)
+{
+    if (m->law == body->law) {
+        return NULL;
+    }
+    if (tf_material_linear_elastic(body)) {
+        return "a linear elastic body takes material regions of its own law";
+    }
+    if (tf_material_kinematics(m) != tf_material_kinematics(body)) {
+        return tf_material_kinematics(body) == TF_KIN_FINITE
+                   ? "the body's law is finite-strain and this law small-strain"
+                   : "the body's law is small-strain and this law finite-strain";
+    }
+    if (tf_material_volume(m) != tf_material_volume(body)) {
+        return "the two laws' volumetric energies take different volume measures (J - 1 and "
+               "tr E), which one volumetric correction cannot average";
+    }
+    return NULL;
+}
+
 tf_kinematics tf_material_kinematics(const tf_material *m)
 {
     return m->law->caps & TF_MATERIAL_FINITE ? TF_KIN_FINITE : TF_KIN_SMALL;

@@ -158,6 +158,13 @@ unsigned tf_material_caps(const tf_material *m);
  * solver factorises once; the Galerkin solvers hand any other material to
  * Newton's method). */
 int tf_material_linear_elastic(const tf_material *m);
+/* Whether m can be a material region (problem/inclusions.h) of a body of
+ * material body in one solve: NULL, or why not (a static string).  The
+ * body's law, or another of the same kinematics and volume measure (the
+ * Newton solvers' constants) when the body's law is not linear elastic
+ * (a linear elastic body is solved by the linear solvers, which take
+ * linear elastic regions only). */
+const char *tf_material_region_misfit(const tf_material *body, const tf_material *m);
 tf_kinematics tf_material_kinematics(const tf_material *m);
 tf_volume_measure tf_material_volume(const tf_material *m);
 size_t tf_material_history_size(const tf_material *m);

@@ -275,16 +275,18 @@ static int inclusions(const sd_scene *doc, tf_problem *s, sd_issue *is)
         }
         s->n_inclusions = k + 1;
     }
-    /* what the solvers take: each inclusion of the body's law, its own
-     * parameters (solvers/cell_stiffness.h for the linear law, the Newton
-     * solvers' per-point materials, solvers/nonlinear/nl_model.c) */
+    /* what the solvers take (tf_material_region_misfit): the body's law with
+     * its own parameters (solvers/cell_stiffness.h for the linear law), or
+     * another law of the same kinematics and volume measure in a body the
+     * Newton solvers take (their per-point materials, nl_model.c) */
     for (size_t k = 0; k < s->n_inclusions; ++k) {
         const tf_material *m = &s->inclusions[k].material;
-        if (strcmp(tf_material_name(m), tf_material_name(&s->material)) != 0) {
+        const char *why = tf_material_region_misfit(&s->material, m);
+        if (why != NULL) {
             return sd_fail(is, at(p, sizeof p, "inclusions", k, "material.law"),
-                           "not yet: a material region's law must be the body's (the body's "
-                           "law is %s, this inclusion's %s)",
-                           tf_material_name(&s->material), tf_material_name(m));
+                           "not yet: a region of the %s law in a body of the %s law: %s",
+                           tf_material_name(m),
+                           tf_material_name(&s->material), why);
         }
     }
     return 0;

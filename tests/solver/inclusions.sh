@@ -100,9 +100,39 @@ expect 0 "Newton, the stiff sphere at 1 N" -- "$tool" -q solve "$sphere" $nh --f
 a=$(centre_uz "$tmp/u0.csv") b=$(centre_uz "$tmp/u2.csv")
 echo "  neo-Hookean at 1 N: the top's centre moves $a mm without the sphere, $b mm with it"
 awk -v a="$a" -v b="$b" 'BEGIN { exit !(b < 0 && a < b) }' || bad "the sphere does not stiffen the contact at 1 N ($a, $b mm)"
-# refused, naming the key or the law
-expect 2 "an inclusion of another law" -- "$tool" -q solve "$bar" --set inclusions.0.material.law=neo-hookean
-says "an inclusion of another law" "inclusions.0.material.law: not yet: a material region's law must be the body's"
+# A region of another law of the same kinematics and volume measure: a
+# neo-Hookean body with a Kelvin neo-Hookean sphere (k1 3.2, k2 0.8 MPa,
+# tau 5 s) at 1 N is, relaxed, the neo-Hookean sphere of E = k1 (6.4e-12
+# measured) and, pressed within 1e-4 s, that of E = k1 + k2 (1.6e-7); a
+# Kelvin body with the linear sphere, relaxed, the linear solve with the
+# body's E = k1 (1.3e-12).
+sed 's/material: {E: 3.2, nu: 0.49}/material: {law: kelvin-neo-hookean, k1: 3.2, k2: 0.8, eta: 4, nu: 0.49}/
+     s/^  E: 0.32$/  law: neo-hookean\n  E: 0.32/' "$sphere" >"$tmp/nh_knh.yaml"
+nf=0.2,0.1,-1
+expect 0 "neo-Hookean with a Kelvin neo-Hookean sphere, relaxed" -- "$tool" -q solve "$tmp/nh_knh.yaml" \
+    --force $nf --out "$tmp/a.csv"
+expect 0 "neo-Hookean with a neo-Hookean sphere, E = k1" -- "$tool" -q solve "$sphere" $nh --force $nf --out "$tmp/b.csv"
+r=$(rel_diff "$tmp/a.csv" "$tmp/b.csv")
+echo "  a Kelvin neo-Hookean sphere in neo-Hookean tissue, relaxed: $r from the neo-Hookean sphere of E = k1"
+awk -v r="$r" 'BEGIN { exit !(r < 1e-9) }' || bad "relaxed: $r from the neo-Hookean sphere of E = k1"
+{ cat "$tmp/nh_knh.yaml"; printf 'history:\n  dt: 0.0001\n  duration: 0.0001\n  force: [%s]\n' "$nf"
+  printf '  segments:\n    - {kind: step, to: 1}\n'; } >"$tmp/nh_knh_step.yaml"
+expect 0 "the same, pressed in 1e-4 s" -- "$tool" -q solve "$tmp/nh_knh_step.yaml" -o "$tmp/s.csv"
+awk -F, 'NR == 1 { print "node,x,y,z,ux,uy,uz"; next } $1 == 2 { print $3 "," $4 "," $5 "," $6 "," $7 "," $8 "," $9 }' \
+    "$tmp/s.csv" >"$tmp/s2.csv"
+expect 0 "neo-Hookean with a neo-Hookean sphere, E = k1 + k2" -- "$tool" -q solve "$sphere" $nh \
+    --set inclusions.0.material.E=4 --force $nf --out "$tmp/c.csv"
+r=$(rel_diff "$tmp/s2.csv" "$tmp/c.csv")
+echo "  the same pressed in 1e-4 s: $r from the neo-Hookean sphere of E = k1 + k2"
+awk -v r="$r" 'BEGIN { exit !(r < 1e-5) }' || bad "pressed in 1e-4 s: $r from the neo-Hookean sphere of E = k1 + k2"
+# refused, naming the key and why
+expect 2 "a neo-Hookean region in a linear body" -- "$tool" -q solve "$bar" --set inclusions.0.material.law=neo-hookean
+says "a neo-Hookean region in a linear body" "inclusions.0.material.law: not yet: a region of the neo-hookean law in a body of the linear law: a linear elastic body takes material regions of its own law"
+expect 2 "a linear region in a neo-Hookean body" -- "$tool" -q solve "$sphere" --set material.law=neo-hookean --force 0,0,-1
+says "a linear region in a neo-Hookean body" "the body's law is finite-strain and this law small-strain"
+expect 2 "an svk region in a neo-Hookean body" -- "$tool" -q solve "$sphere" $nh --set inclusions.0.material.law=svk \
+    --force 0,0,-1
+says "an svk region in a neo-Hookean body" "volumetric energies take different volume measures"
 # The Kelvin law (k = 0: linear viscoelastic) with a Kelvin sphere of its
 # own relaxation (body: k1 0.32, k2 0.192, tau 1 s, g_inf 0.625; sphere:
 # k1 3.2, k2 0.8, tau 5 s, g_inf 0.8): relaxed (a static solve) it is the
@@ -128,6 +158,11 @@ expect 0 "linear, E = k1 + k2" -- "$tool" -q solve "$sphere" --set material.E=0.
 r=$(rel_diff "$tmp/k0.csv" "$tmp/k12.csv")
 echo "  Kelvin with a sphere, pressed in 1e-4 s: $r from the linear solve with E = k1 + k2"
 awk -v r="$r" 'BEGIN { exit !(r < 1e-4) }' || bad "Kelvin with a sphere at 1e-4 s: $r from the linear solve with E = k1 + k2"
+sed 's/^  E: 0.32$/  law: kelvin\n  k1: 0.32\n  k2: 0.192\n  eta: 0.192/' "$sphere" >"$tmp/kelvin_lin.yaml"
+expect 0 "Kelvin with a linear sphere, relaxed" -- "$tool" -q solve "$tmp/kelvin_lin.yaml" --force $kf --out "$tmp/d.csv"
+r=$(rel_diff "$tmp/d.csv" "$tmp/k1.csv")
+echo "  a linear sphere in Kelvin tissue, relaxed: $r from the linear solve with E = k1"
+awk -v r="$r" 'BEGIN { exit !(r < 1e-9) }' || bad "Kelvin with a linear sphere: $r from the linear solve with E = k1"
 expect 2 "an inclusion with two shapes" -- "$tool" -q solve "$bar" --set 'inclusions.0.sphere.centre=1,2,3' \
     --set inclusions.0.sphere.radius=1
 says "an inclusion with two shapes" "inclusions.0: give exactly one of sphere, ellipsoid or box"

@@ -162,19 +162,27 @@ static int build_boundary(nl_solver *s, tf_ctx *ctx)
     return rc;
 }
 
-/* What the solver needs to know of the material: its capabilities and the
- * quantities it provides (materials/material.h), never which law it is. */
+/* What the solver needs to know of the materials: their capabilities and
+ * the quantities they provide (materials/material.h), never which law each
+ * is.  Kinematics and volume measure are the body's (a region's law shares
+ * them: tf_material_region_misfit); history, its size and an unsymmetric
+ * tangent are any material's. */
 static void law_constants(nl_solver *s)
 {
     const tf_material *m = &s->mats[0];
-    unsigned caps = tf_material_caps(m);
+    unsigned caps = 0;
+    s->nh = 0;
+    for (size_t k = 0; k < s->n_mats; ++k) {
+        caps |= tf_material_caps(&s->mats[k]);
+        s->nh = s->nh > tf_material_history_size(&s->mats[k]) ? s->nh
+                                                               : tf_material_history_size(&s->mats[k]);
+    }
     s->relaxes = (caps & TF_MATERIAL_HISTORY) != 0;
     s->lin = tf_material_lame(m);
     s->lambda_v = s->bbar ? s->lin.lambda : 0;
-    s->small = !(caps & TF_MATERIAL_FINITE);
+    s->small = tf_material_kinematics(m) == TF_KIN_SMALL;
     s->trace_volume = !s->small && tf_material_volume(m) == TF_VOLUME_GREEN_TRACE;
     s->unsym = (caps & TF_MATERIAL_UNSYMMETRIC) != 0;
-    s->nh = tf_material_history_size(m);
     s->hb = s->nh + (s->relaxes && s->bbar ? 2 : 0);
 }
 
@@ -252,22 +260,17 @@ static int build_factored(nl_solver *s, tf_ctx *ctx)
     return 0;
 }
 
-/* Material regions: each inclusion's material, of the body's law (the
- * solver's constants, law_constants, are the law's: its capabilities,
- * history and volume measure), and each one's volumetric modulus and
- * relaxation function. */
+/* Material regions: each inclusion's material (the body's law or one of
+ * the same kinematics and volume measure: tf_material_region_misfit). */
 static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
 {
     s->n_mats = 1 + p->n_inclusions;
     for (size_t k = 0; k < p->n_inclusions; ++k) {
         const tf_inclusion *inc = &p->inclusions[k];
-        const char *law = tf_material_name(&inc->material);
-        const char *body = tf_material_name(&s->mats[0]);
-        if (strcmp(law, body) != 0) {
-            return tf_fail(ctx,
-                           "not yet: inclusion '%s' is %s in a %s body: the nonlinear solvers take "
-                           "material regions of the body's law, with their own parameters",
-                           inc->name, law, body);
+        const char *why = tf_material_region_misfit(&s->mats[0], &inc->material);
+        if (why != NULL) {
+            return tf_fail(ctx, "not yet: inclusion '%s' is %s in a %s body: %s", inc->name,
+                           tf_material_name(&inc->material), tf_material_name(&s->mats[0]), why);
         }
         s->mats[1 + k] = inc->material;
     }
@@ -275,6 +278,13 @@ static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
         return tf_fail(ctx, "not yet: material regions with VCI integration (solver.integration: "
                             "gauss integrates them point by point)");
     }
+    return 0;
+}
+
+/* Each material's volumetric modulus and relaxation function (law_constants
+ * first: bbar, relaxes). */
+static void material_constants(nl_solver *s)
+{
     /* a law with history: each material relaxes with its own function;
      * a step of dt_relaxed relaxes the slowest of them (a static solve) */
     s->dt_relaxed = 0;
@@ -286,7 +296,6 @@ static int region_materials(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
             s->dt_relaxed = fmax(s->dt_relaxed, 1e15 * s->tau[k]);
         }
     }
-    return 0;
 }
 
 /* The index into mats of inclusion k's material: the first of the body's
@@ -343,10 +352,11 @@ int nl_model_build(nl_solver *s, const tf_problem *p, tf_ctx *ctx)
     s->mats[0] = p->material;
     s->bbar = o->volumetric == TF_VOLUMETRIC_CELL;
     s->vci = o->integration == TF_INTEGRATION_VCI;
-    law_constants(s);
     if (region_materials(s, p, ctx) != 0) {
         return -1;
     }
+    law_constants(s);
+    material_constants(s);
     tf_problem_bounds(p, lo, hi);
     if (tf_shape_init(&s->sh, &p->cloud, lo, hi, o) != 0) {
         return tf_fail(ctx, "out of memory");
