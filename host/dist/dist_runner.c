@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "base/log.h"
+#include "base/progress.h"
 #include "dist/dist_internal.h"
 
 enum { WAITING, HANDED, SOLVED };
@@ -47,6 +48,7 @@ typedef struct sched {
     size_t failed_case;
     char why[TF_CTX_ERR_MAX];
     local me;
+    tf_progress pr; /* a line every few seconds as cases come back */
 } sched;
 
 static void *local_main(void *arg)
@@ -144,6 +146,8 @@ static void finished(sched *sc, int r, size_t i, const double time[2], int ok)
         sc->state[i] = SOLVED;
         ++sc->solved;
         ++sc->cases[r];
+        tf_progress_line(&sc->pr, "cases: %zu of %zu solved on %d ranks", sc->solved, sc->l->n,
+                         sc->d->size);
     } else if (!sc->failed) {
         sc->failed = 1;
         sc->failed_rank = r;
@@ -314,6 +318,7 @@ int dist_run(const tf_case_runner *r, tf_solver *s, const tf_case_list *l, doubl
     }
     pthread_t thread;
     double t0 = omp_get_wtime();
+    tf_progress_start(&sc.pr, s->ctx, TF_CASE_PROGRESS_S);
     if (pthread_create(&thread, NULL, local_main, &sc.me) != 0) {
         sched_free(&sc);
         return tf_fail(s->ctx, "cannot start rank 0's solver thread");

@@ -10,8 +10,6 @@
 
 #include "base/progress.h"
 
-/* Seconds between progress lines of the serial runner. */
-#define TF_CASE_PROGRESS_S 5.0
 
 static long start_of(const tf_case_list *l, size_t i)
 {

@@ -20,6 +20,9 @@
 
 #include <stddef.h>
 
+/* Seconds between the progress lines of a runner (serial or distributed). */
+#define TF_CASE_PROGRESS_S 5.0
+
 #include "base/context.h"
 #include "solvers/solver.h"
 
