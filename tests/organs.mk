@@ -1,4 +1,4 @@
-# organs.mk — the shipped organ scenes (issue 15): coeffs/{liver,stomach,heart}.
+# organs.mk — the shipped organ scenes: coeffs/{liver,stomach,heart,liver_tumour}.
 #
 #   check-organs    each organ header's output map against its mesh file
 #                   and scene (vertex index, positions, CRC) and its servo
@@ -14,7 +14,7 @@
 # the liver is compared with CalculiX by check-organ-calculix
 # (tests/calculix_organ.mk).
 
-ORGAN_SCENES := coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml
+ORGAN_SCENES := coeffs/liver.yaml coeffs/stomach.yaml coeffs/heart.yaml coeffs/liver_tumour.yaml
 ORGAN_NAMES := $(ORGAN_SCENES:coeffs/%.yaml=%)
 
 .PHONY: check-organs organ-pictures bench-organs organ-subsets
@@ -55,7 +55,7 @@ ORGAN_MAGNIFY_heart := 5
 # reference's direction), the nodule's footprint green at rest
 ORGAN_FORCE_liver_tumour := 0.1344,0.2595,-0.0675
 ORGAN_MAGNIFY_liver_tumour := 1
-ORGAN_PICTURES := $(ORGAN_NAMES) liver_tumour
+ORGAN_PICTURES := $(ORGAN_NAMES)
 
 # $(call organ_picture,NAME)
 organ_picture = $(B)/bin/tissuefit -q solve coeffs/$(1).yaml --force $(ORGAN_FORCE_$(1)) \
