@@ -173,9 +173,9 @@ static void law_constants(nl_solver *s)
     unsigned caps = 0;
     s->nh = 0;
     for (size_t k = 0; k < s->n_mats; ++k) {
+        size_t h = tf_material_history_size(&s->mats[k]);
         caps |= tf_material_caps(&s->mats[k]);
-        s->nh = s->nh > tf_material_history_size(&s->mats[k]) ? s->nh
-                                                               : tf_material_history_size(&s->mats[k]);
+        s->nh = h > s->nh ? h : s->nh;
     }
     s->relaxes = (caps & TF_MATERIAL_HISTORY) != 0;
     s->lin = tf_material_lame(m);
