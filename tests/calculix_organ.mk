@@ -124,11 +124,13 @@ LIVER_NH_FORCE_liver_nh := 0.138,0.266,0.0134
 LIVER_NH_FORCE_liver_nodule_nh := 0.1344,0.2595,-0.0675
 LIVER_NH_DECK_liver_nodule_nh := --inclusion-spacing 2
 # the meshless clouds: the liver's at 9, 6 and 4.5 mm; the nodule's scene's
-# 6 mm cloud refined within 30 mm of the probe to 6 (none), 4.5, 3 and 2 mm
-# (the scene's own), as in the linear table (calculix_nodule.mk)
+# 6 mm cloud refined within 30 mm of the probe to 6 (none), 4.5, 3 (the
+# shipped liver_tumour's), 2 (the scene's own) and 1.5 mm, as in the linear
+# table (calculix_nodule.mk)
 LIVER_NH_CLOUDS_liver_nh := geometry.spacing=9 geometry.spacing=6 geometry.spacing=4.5
 LIVER_NH_CLOUDS_liver_nodule_nh := geometry.refine.spacing=6 geometry.refine.spacing=4.5 \
-                                   geometry.refine.spacing=3 geometry.refine.spacing=2
+                                   geometry.refine.spacing=3 geometry.refine.spacing=2 \
+                                   geometry.refine.spacing=1.5
 LIVER_NH_STEPS := 3
 LIVER_NH_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
 LIVER_NH_FINEST := s20r1
