@@ -261,5 +261,5 @@ check-cli: $(B)/bin/tissuefit
 	@tests/cli/cli.sh $(B)/bin/tissuefit
 	@echo "== tissuefit eval: $(call check_len,every shipped header's,the shipped headers' (short: not the heart's, the stomach's and liver_tumour's)) golden vectors through a CSV, and the refusals =="
 	@EVAL_HEADERS="$(EVAL_HEADERS)" tests/cli/eval.sh $(B)/bin/tissuefit
-	@echo "== material regions: a two-material bar against its exact solution, Newton with a neo-Hookean sphere, the refusals =="
+	@echo "== material regions: a two-material bar against its exact solution, Newton with a neo-Hookean sphere, Kelvin and cross-law spheres against their relaxed and instantaneous limits, the VTU material field, the refusals =="
 	@tests/solver/inclusions.sh $(B)/bin/tissuefit
