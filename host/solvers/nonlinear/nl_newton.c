@@ -240,6 +240,8 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
     unsigned since = 0, flat = 0;
     int have_r = 0, rc = 0, conv = 0;
     unsigned it;
+    tf_progress pr; /* one load step of an organ's finest clouds can take minutes */
+    tf_progress_start(&pr, s->base.ctx, NL_PROGRESS_S);
     for (it = 0; it <= o->max_iter; ++it) {
         int tangent = it < o->max_iter ? wants_tangent(s, since, e_prev > 0 ? e / e_prev : 0)
                                        : NL_TANGENT_NONE;
@@ -258,6 +260,8 @@ static int newton(nl_solver *s, const nl_target *t, double dt, unsigned *iters, 
             break;
         }
         rn = norm(s->r, n3);
+        tf_progress_line(&pr, "newton: iteration %u, residual %.3g (tolerance %.3g)", it, rn,
+                         o->rtol * ref);
         int at_floor = it >= 2 && e <= ROUNDING_ENERGY * e0;
         flat = at_floor && rn >= least ? flat + 1 : 0;
         int stalled = at_floor && ((rn <= o->rtol * ref && rn > 0.5 * before) ||
