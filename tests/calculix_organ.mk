@@ -6,6 +6,8 @@
 #                           tests/calculix/data/liver_*.csv, then the table
 #   make calculix-organ-table  the convergence table from the committed data
 #                           and a fresh meshless solve (build/calculix/organ.md)
+#   make organ-convergence  the liver and the stomach under refinement, with
+#                           the file's skin and a refined one (below)
 #   check-organ-calculix    (make check) the shipped liver's meshless solve
 #                           within 3 % of the finest level, at the contact
 #                           vertex and over the output vertices; the deck
@@ -75,6 +77,21 @@ check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck $(B)/bin/tissuefit
 	$(call check_len,@BOUND=$(ORGAN_BOUND) tests/calculix/organ_nl_compare.sh $(B)/bin/tissuefit $(LIVER_NH) \
 	  $(LIVER_NH_FORCE_liver_nh) $(LIVER_NH_STEPS) $(CX_DATA)/liver_nh_$(LIVER_NH_FINEST).csv geometry.spacing=6,)
 	@echo "ok: the liver's NLGEOM deck$(call check_len, and its Newton solves within $(ORGAN_BOUND) of CalculiX,)"
+
+# The organs under refinement (docs/validation.md §14): the liver and the
+# stomach solved at each interior spacing below with the file's skin and
+# with a refined one (geometry.refine_skin), against their finest CalculiX
+# level (committed data); build/calculix/organ_convergence.{csv,md} and
+# docs/validation/organ_convergence.png.  About 15 minutes and 6 GB.
+ORGAN_CONVERGENCE := liver:10,8,6,5,4 stomach:12,8,6,4,3
+.PHONY: organ-convergence
+organ-convergence: $(CX)/organ_compare | deps-calculix-plot
+	@mkdir -p $(CX)
+	$(Q)tests/calculix/organ_convergence.sh $< $(CX_DATA) $(CX)/organ_convergence.csv \
+	  $(ORGAN_CONVERGENCE) | tee $(CX)/organ_convergence.md
+	$(Q)gnuplot -e "table='$(CX)/organ_convergence.csv'; out='docs/validation/organ_convergence.png'" \
+	  tests/calculix/organ_convergence.gp
+	@echo "wrote $(CX)/organ_convergence.md and docs/validation/organ_convergence.png"
 
 # The finest level in tissuefit fit --reference's form (docs/fitting.md,
 # "Error against the physics"): an index liver_physics.csv and one

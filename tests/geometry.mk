@@ -24,8 +24,8 @@ GEOMETRY_OUT := $(B)/geometry
 .PHONY: check-geometry geometry-demo
 CHECKS += check-geometry
 
-$(T)/unit/geometry/test_surface $(T)/unit/geometry/test_mesh \
-$(T)/asan/geometry/test_surface $(T)/asan/geometry/test_mesh: tests/geometry/shapes.h
+$(T)/unit/geometry/test_surface $(T)/unit/geometry/test_mesh $(T)/unit/geometry/test_surface_refine \
+$(T)/asan/geometry/test_surface $(T)/asan/geometry/test_mesh $(T)/asan/geometry/test_surface_refine: tests/geometry/shapes.h
 
 $(T)/geometry/mesh_demo: tests/geometry/mesh_demo.c $(B)/native/libtissuefit-host.a | deps-build
 	@mkdir -p $(@D)

@@ -34,6 +34,7 @@ void tf_surface_free(tf_surface *s)
     free(s->xyz);
     free(s->source);
     free(s->tri);
+    free(s->tri_parent);
     memset(s, 0, sizeof *s);
 }
 
@@ -137,6 +138,9 @@ int tf_surface_select(tf_surface *s, const unsigned char *keep)
         if (keep[t]) {
             for (int k = 0; k < 3; ++k) {
                 s->tri[3 * nt + k] = renum[s->tri[3 * t + k]];
+            }
+            if (s->tri_parent != NULL) {
+                s->tri_parent[nt] = s->tri_parent[t];
             }
             nt++;
         }

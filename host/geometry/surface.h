@@ -15,6 +15,8 @@ typedef struct tf_surface {
     size_t nt;      /* triangle count */
     size_t *tri;    /* 3 nt vertex indices; counter-clockwise seen from outside
                        once tf_surface_prepare() has run */
+    size_t *tri_parent; /* nt: the file's triangle each lies on, after
+                           tf_surface_refine(); NULL: the file's own triangles */
 } tf_surface;
 
 /* Allocates room for nv vertices and nt triangles (contents undefined;

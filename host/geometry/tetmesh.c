@@ -16,6 +16,7 @@ void tf_tetmesh_free(tf_tetmesh *t)
     free(t->tet);
     free(t->tet_volume);
     free(t->tri);
+    free(t->tri_parent);
     memset(t, 0, sizeof *t);
 }
 

@@ -23,6 +23,8 @@ typedef struct tf_tetmesh {
     double *tet_volume;/* ntet, mm^3 */
     size_t ntri;
     size_t *tri;       /* 3 ntri node indices: the surface triangles, outward */
+    size_t *tri_parent;/* ntri: the file's triangle each lies on when the skin
+                          was refined (surface_refine.h), else NULL */
     double enclosed_volume; /* of the surface, mm^3 (divergence theorem) */
     double cells_volume;    /* sum of tet_volume, mm^3 */
 } tf_tetmesh;

@@ -49,6 +49,24 @@ int tf_volume_mesh_check_options(const tf_surface *s, const tf_mesh_options *o, 
     return TF_GEOM_OK;
 }
 
+double tf_mesh_size_at(const tf_mesh_options *o, const double x[3])
+{
+    if (!o->graded) {
+        return o->spacing;
+    }
+    const double *p = o->grade_at;
+    double d = sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) +
+                    (x[2] - p[2]) * (x[2] - p[2]));
+    if (d <= o->grade_radius) {
+        return o->grade_spacing;
+    }
+    if (d >= o->grade_ramp) {
+        return o->spacing;
+    }
+    double f = (d - o->grade_radius) / (o->grade_ramp - o->grade_radius);
+    return o->grade_spacing + f * (o->spacing - o->grade_spacing);
+}
+
 /* The surface as gmsh's discrete surface `tag`: node tag = vertex index +
  * first + 1, triangle tag = triangle index + first_tri + 1 (the body's
  * surface is tag SURFACE_TAG with first = first_tri = 0; inner surfaces
@@ -291,6 +309,13 @@ static int fill(tf_tetmesh *t, const tf_surface *s, const gmsh_nodes *g, const s
     t->nsurf = s->nv;
     t->ntri = s->nt;
     memcpy(t->tri, s->tri, 3 * s->nt * sizeof *t->tri);
+    if (s->tri_parent != NULL) {
+        t->tri_parent = malloc((s->nt + 1) * sizeof *t->tri_parent);
+        if (t->tri_parent == NULL) {
+            return -1;
+        }
+        memcpy(t->tri_parent, s->tri_parent, s->nt * sizeof *t->tri_parent);
+    }
     t->enclosed_volume = tf_surface_volume(s);
     tf_tetmesh_volumes(t);
     return 0;

@@ -26,7 +26,19 @@ typedef struct tf_mesh_options {
     double grade_spacing; /* spacing within grade_radius of grade_at, mm */
     double grade_radius;  /* mm */
     double grade_ramp;    /* distance at which the spacing is back to `spacing`, mm */
+    int refine_skin;      /* split the surface's triangles to the spacing first
+                             (surface_refine.h; tf_problem_mesh_build does it) */
 } tf_mesh_options;
+
+/* The spacing the size field asks for at x, mm: `spacing`, or graded as
+ * gmsh's Threshold field grades it (grade_spacing up to grade_radius from
+ * grade_at, linear to spacing at grade_ramp). */
+double tf_mesh_size_at(const tf_mesh_options *o, const double x[3]);
+
+/* A refined skin's edges: split while longer than this times the size. */
+#define TF_MESH_SKIN_RATIO 1.4142135623730951
+/* ... into at most this many vertices. */
+#define TF_MESH_MAX_SKIN_VERTICES 2000000
 
 /* A closed surface inside the body that a mesh conforms to (a material
  * region's boundary, volume_mesh_tet10.h): it bounds a volume of its own

@@ -11,6 +11,7 @@
 #include "base/file_crc.h"
 #include "geometry/surface_prepare.h"
 #include "geometry/surface_read.h"
+#include "geometry/surface_refine.h"
 #include "geometry/tetmesh_check.h"
 
 /* Read, clean, keep the file-frame coordinates, place, check (the steps of
@@ -31,6 +32,31 @@ static int load_surface(tf_mesh_geometry *g, tf_surface *s, tf_geom_msg *m)
     rc = rc ? rc : tf_transform_apply(&g->place, s, m);
     rc = rc ? rc : tf_surface_check_placed(s, m);
     return rc;
+}
+
+static double skin_size(const double x[3], const void *arg)
+{
+    return tf_mesh_size_at(arg, x);
+}
+
+/* The file's triangles kept; with refine_skin, the skin split to the
+ * node spacing on the file's own planes (surface_refine.h). */
+static int skin(tf_mesh_geometry *g, tf_surface *s, tf_geom_msg *m)
+{
+    g->file_nv = s->nv;
+    g->file_nt = s->nt;
+    g->file_tri = malloc((3 * s->nt + 1) * sizeof *g->file_tri);
+    if (g->file_tri == NULL) {
+        return tf_geom_fail(m, TF_GEOM_FAILED, "out of memory");
+    }
+    memcpy(g->file_tri, s->tri, 3 * s->nt * sizeof *g->file_tri);
+    if (!g->mesh.refine_skin) {
+        return TF_GEOM_OK;
+    }
+    int rc = tf_volume_mesh_check_options(s, &g->mesh, m);
+    return rc ? rc
+              : tf_surface_refine(s, skin_size, &g->mesh, TF_MESH_SKIN_RATIO,
+                                  TF_MESH_MAX_SKIN_VERTICES, m);
 }
 
 /* Acceptance 2, on every build. */
@@ -64,11 +90,13 @@ int tf_problem_mesh_build(tf_mesh_geometry *g, tf_geom_msg *m)
     m->error[0] = m->notes[0] = '\0';
     memset(&g->tm, 0, sizeof g->tm);
     g->file_xyz = NULL;
+    g->file_tri = NULL;
     int rc = load_surface(g, &s, m);
     snprintf(g->notes, sizeof g->notes, "%s", m->notes);
     if (rc == TF_GEOM_OK && tf_file_crc32(g->path, &g->file_crc32) != 0) {
         rc = tf_geom_fail(m, TF_GEOM_BAD_INPUT, "cannot read it again for its checksum");
     }
+    rc = rc ? rc : skin(g, &s, m);
     rc = rc ? rc : tf_volume_mesh(&s, &g->mesh, &g->tm, m);
     rc = rc ? rc : verify(g, &s, m);
     tf_surface_free(&s);
@@ -113,7 +141,7 @@ uint32_t tf_problem_mesh_nearest_vertex(const tf_mesh_geometry *g, const double 
 {
     uint32_t best = 0;
     double d = INFINITY;
-    for (size_t i = 0; i < g->tm.nsurf; ++i) {
+    for (size_t i = 0; i < g->file_nv; ++i) {
         double e = dist2(g->tm.xyz + 3 * i, p);
         if (e < d) {
             d = e;
@@ -146,6 +174,19 @@ static double triangle_area(const double *a, const double *b, const double *c)
     return 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
+/* The centroid of the file's triangle that surface triangle k lies on (on
+ * a refined skin, a site is the same union of the file's triangles as on
+ * the file's own: the load does not change with the resolution). */
+static void file_centroid(const tf_mesh_geometry *g, size_t k, double m[3])
+{
+    const tf_tetmesh *t = &g->tm;
+    const size_t *v = t->tri_parent != NULL ? g->file_tri + 3 * t->tri_parent[k] : t->tri + 3 * k;
+    const double *a = t->xyz + 3 * v[0], *b = t->xyz + 3 * v[1], *c = t->xyz + 3 * v[2];
+    for (int q = 0; q < 3; ++q) {
+        m[q] = (a[q] + b[q] + c[q]) / 3;
+    }
+}
+
 int tf_problem_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p)
 {
     const tf_tetmesh *t = &g->tm;
@@ -162,8 +203,8 @@ int tf_problem_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radi
     for (size_t k = 0; k < t->ntri; ++k) {
         const size_t *v = t->tri + 3 * k;
         const double *a = t->xyz + 3 * v[0], *b = t->xyz + 3 * v[1], *c = t->xyz + 3 * v[2];
-        double m[3] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
-                       (a[2] + b[2] + c[2]) / 3};
+        double m[3];
+        file_centroid(g, k, m);
         if (dist2(m, o) <= radius * radius) {
             for (int q = 0; q < 3; ++q) {
                 p->tri[3 * p->n_tri + (size_t)q] = (uint32_t)v[q];

@@ -11,7 +11,9 @@ void tf_problem_mesh_free(tf_mesh_geometry *g)
 {
     tf_tetmesh_free(&g->tm);
     free(g->file_xyz);
+    free(g->file_tri);
     g->file_xyz = NULL;
+    g->file_tri = NULL;
 }
 
 void tf_patch_release(tf_patch *p)

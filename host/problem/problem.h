@@ -57,7 +57,11 @@ typedef struct tf_mesh_geometry {
     tf_transform place;     /* file units and frame -> scene mm */
     tf_mesh_options mesh;   /* interior spacing and grading */
     tf_tetmesh tm;
-    double *file_xyz;       /* 3 nsurf: the surface vertices in the file's frame and units */
+    double *file_xyz;       /* 3 file_nv: the file's vertices in its frame and units */
+    size_t file_nv;         /* the file's vertices: nodes 0 .. file_nv - 1 (the refined
+                               skin's midpoints, when mesh.refine_skin, follow them) */
+    size_t file_nt;         /* the file's triangles ... */
+    size_t *file_tri;       /* 3 file_nt: ... as node indices (tm.tri_parent indexes them) */
     double min_winding;     /* smallest winding number of an interior node (1 when none) */
     char notes[1024];       /* repairs made while reading, one per line */
 } tf_mesh_geometry;

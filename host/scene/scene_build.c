@@ -70,9 +70,9 @@ static int geometry(const sd_scene *doc, tf_problem *s, sd_issue *is)
     if (g->surface) {
         return sd_organ_geometry(doc, s, is);
     }
-    if (g->grid == NULL || g->spacing || g->refine) {
-        return sd_fail(is, "geometry", "a box takes grid (and grading, jitter, seed), not spacing "
-                                       "or refine");
+    if (g->grid == NULL || g->spacing || g->refine || g->refine_skin) {
+        return sd_fail(is, "geometry", "a box takes grid (and grading, jitter, seed), not spacing, "
+                                       "refine or refine_skin");
     }
     if (check_box(g->box, "geometry.box", is) != 0) {
         return -1;

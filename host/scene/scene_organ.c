@@ -63,6 +63,7 @@ static int mesh_options(const sd_scene *doc, tf_mesh_options *o, sd_issue *is)
     const sd_geometry *g = &doc->geometry;
     memset(o, 0, sizeof *o);
     o->spacing = *g->spacing;
+    o->refine_skin = g->refine_skin != NULL && *g->refine_skin;
     if (!(isfinite(o->spacing) && o->spacing > 0)) {
         return fail(is, "geometry.spacing", "must be a positive number of mm");
     }
@@ -94,6 +95,9 @@ static const char *field_of(int rc, const char *msg)
     }
     if (rc == TF_GEOM_BAD_INPUT && strncmp(msg, "grading", 7) == 0) {
         return "geometry.refine"; /* the geometry layer calls it grading */
+    }
+    if (rc == TF_GEOM_BAD_INPUT && strncmp(msg, "the refined skin", 16) == 0) {
+        return "geometry.refine_skin";
     }
     if (strncmp(msg, "absurd size", 11) == 0) {
         return "geometry.surface.scale";
@@ -175,6 +179,11 @@ int sd_organ_vertices(const uint32_t *v, size_t n, const tf_problem *s, const ch
     const tf_mesh_geometry *m = tf_problem_mesh(s);
     if (m == NULL) {
         return fail(is, path, "vertices name an organ's surface vertices (geometry.surface)");
+    }
+    if (m->mesh.refine_skin) {
+        return fail(is, path,
+                    "a list of the file's vertices leaves the refined skin's vertices between "
+                    "them out (geometry.refine_skin): give the region as a sphere, side or near");
     }
     for (size_t k = 0; k < n; ++k) {
         long i = tf_problem_mesh_vertex_node(m, (long)v[k]);

@@ -73,11 +73,11 @@ static int outputs_fail(char *msg, size_t msglen, const char *what)
     return -1;
 }
 
-/* The surface vertices within radius of any contact point, ascending. */
+/* The file's vertices within radius of any contact point, ascending. */
 static void near_contact(const tf_problem *s, double radius, tf_outputs *o)
 {
     const tf_cloud *c = &s->cloud;
-    for (size_t i = 0; i < c->n_surface; ++i) {
+    for (size_t i = 0; i < tf_problem_mesh(s)->file_nv; ++i) {
         const double *x = c->xyz + 3 * i;
         for (size_t k = 0; k < s->n_contacts; ++k) {
             const double *y = s->contacts[k].at;
@@ -91,8 +91,9 @@ static void near_contact(const tf_problem *s, double radius, tf_outputs *o)
     }
 }
 
-/* The selections of organs: every surface vertex, those near the contact
- * sites, or a list of vertices by their index in the mesh file. */
+/* The selections of organs: every vertex of the file, those near the
+ * contact sites, or a list of them by their index in the file (a refined
+ * skin's midpoints are not the renderer's). */
 static int organ_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, char *msg,
                          size_t msglen)
 {
@@ -103,7 +104,7 @@ static int organ_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o
                             "(geometry.surface)");
     }
     if (o->kind == TF_OUT_SURFACE) {
-        for (size_t i = 0; i < s->cloud.n_surface; ++i) {
+        for (size_t i = 0; i < m->file_nv; ++i) {
             o->nodes[o->n_nodes++] = (uint32_t)i;
         }
     } else if (o->kind == TF_OUT_NEAR_CONTACT) {
@@ -277,10 +278,10 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
     /* Points (select: points, contacts by position) are the field there,
      * wherever they lie; nodes of an organ must be surface vertices. */
     for (size_t k = 0; tf_problem_mesh(s) != NULL && o->points == NULL && k < o->n_nodes; ++k) {
-        if (o->nodes[k] >= s->cloud.n_surface) {
+        if (o->nodes[k] >= tf_problem_mesh(s)->file_nv) {
             snprintf(msg, msglen,
-                     "node %u lies inside the organ: outputs of an organ are surface vertices "
-                     "(the renderer has no vertex inside)",
+                     "node %u is not a vertex of the mesh file: outputs of an organ are the "
+                     "file's vertices (the renderer has no other)",
                      o->nodes[k] + 1);
             return -1;
         }

@@ -96,6 +96,7 @@ static const cyaml_schema_field_t geometry_fields[] = {
     CYAML_FIELD_MAPPING_PTR("surface", OPT, sd_geometry, surface, surface_fields),
     CYAML_FIELD_FLOAT_PTR("spacing", OPT, sd_geometry, spacing),
     CYAML_FIELD_MAPPING_PTR("refine", OPT, sd_geometry, refine, refine_fields),
+    CYAML_FIELD_BOOL_PTR("refine_skin", OPT, sd_geometry, refine_skin),
     CYAML_FIELD_END,
 };
 

@@ -52,6 +52,7 @@ typedef struct sd_geometry {
     sd_surface *surface; /* an organ's surface, its interior spacing and grading */
     double *spacing;
     sd_refine *refine;
+    bool *refine_skin; /* split the surface's triangles to the spacing */
 } sd_geometry;
 
 /* Parameter keys over the registered laws (materials/material.h), at

@@ -144,6 +144,10 @@ static int meshless(const char *scene, const char *const *sets, size_t n_sets, c
                 scene);
         rc = -1;
     }
+    if (rc == 0 && m != NULL) { /* the cloud, for a convergence table */
+        fprintf(stderr, "organ_compare: %s: %zu nodes, %zu on the surface (%zu the file's)\n",
+                scene, p->cloud.n, p->cloud.n_surface, m->file_nv);
+    }
     *cand = *ref;
     for (size_t k = 0; rc == 0 && k < ref->n; ++k) {
         /* an organ's vertex index in its file; a box's node at the row's

@@ -188,7 +188,7 @@ static void each_bad_organ_scene_has_its_own_message(void **state)
     assert_true(s->problem.cloud.n > s->problem.cloud.n_surface);
     snprintf(interior, sizeof interior, "outputs={select: nodes, nodes: [%zu]}", s->problem.cloud.n);
     tf_scene_free(s);
-    expect_error(SETS(interior), PARTS("outputs", "inside the organ"));
+    expect_error(SETS(interior), PARTS("outputs", "not a vertex of the mesh file"));
     expect_error(SETS("outputs={select: near-contact}"), PARTS("outputs", "radius"));
     expect_error(SETS("geometry.grid=2,2,2"), PARTS("geometry", "belong to a box"));
     expect_error(SETS("contact.0.node=1"), PARTS("contact.0", "site on an organ"));
@@ -390,6 +390,69 @@ static void a_contact_site_applies_the_whole_force(void **state)
     tf_scene_free(s);
 }
 
+/* geometry.refine_skin: the sphere's skin (edges of 3.1-3.9 mm) split to a
+ * 2 mm spacing on its own triangles.  The file's vertices stay the first
+ * nodes bit for bit; the contact vertex, the outputs and the loaded area
+ * are those of the file's skin (a site is the same union of the file's
+ * triangles, in smaller pieces); the hold takes the new vertices inside
+ * its ball; a midpoint is not an output, and a list of the file's
+ * vertices cannot hold a refined skin. */
+static void a_refined_skin_keeps_the_file_and_its_sites(void **state)
+{
+    (void)state;
+    tf_ctx ctx;
+    tf_ctx_init(&ctx);
+    ctx.level = TF_LOG_WARN;
+    const char *plain_sets[] = {"geometry.spacing=2"};
+    const char *fine_sets[] = {"geometry.spacing=2", "geometry.refine_skin=true"};
+    tf_scene *plain = load(&ctx, base, plain_sets, 1), *fine = load(&ctx, base, fine_sets, 2);
+    if (plain == NULL || fine == NULL) {
+        fail_msg("%s", ctx.err);
+    }
+    const tf_problem *p = &plain->problem, *q = &fine->problem;
+    const tf_mesh_geometry *m = tf_problem_mesh(q);
+    size_t nv = 2 + 9 * 16;
+    assert_int_equal(tf_problem_mesh(p)->file_nv, nv);
+    assert_int_equal(m->file_nv, nv);
+    assert_int_equal(p->cloud.n_surface, nv);
+    assert_true(q->cloud.n_surface > 3 * nv);
+    assert_memory_equal(q->cloud.xyz, p->cloud.xyz, 3 * nv * sizeof *q->cloud.xyz);
+    for (size_t i = nv; i < q->cloud.n_surface; ++i) {
+        assert_int_equal(m->tm.source[i], -1);
+    }
+    assert_true(fabs(m->tm.cells_volume - m->tm.enclosed_volume) <= 1e-12 * m->tm.enclosed_volume);
+    assert_true(fabs(m->tm.enclosed_volume - tf_problem_mesh(p)->tm.enclosed_volume) <=
+                1e-12 * m->tm.enclosed_volume);
+    const tf_patch *a = &p->contacts[0].patch, *b = &q->contacts[0].patch;
+    assert_int_equal(q->contacts[0].node, p->contacts[0].node);
+    assert_int_equal(a->n_tri, 16);
+    assert_true(b->n_tri > 2 * a->n_tri);
+    assert_true(fabs(a->area - b->area) <= 1e-12 * a->area);
+    assert_int_equal(q->outputs.n_nodes, p->outputs.n_nodes);
+    assert_memory_equal(q->outputs.nodes, p->outputs.nodes,
+                        p->outputs.n_nodes * sizeof *p->outputs.nodes);
+    size_t held_midpoints = 0;
+    for (size_t k = 0; k < q->fixed[0].n_nodes; ++k) {
+        uint32_t i = q->fixed[0].nodes[k];
+        held_midpoints += i >= nv && i < q->cloud.n_surface;
+    }
+    assert_true(held_midpoints > 0);
+    tf_scene_free(plain);
+    tf_scene_free(fine);
+    char midpoint[80];
+    snprintf(midpoint, sizeof midpoint, "outputs={select: nodes, nodes: [%zu]}", nv + 1);
+    expect_error(SETS("geometry.spacing=2", "geometry.refine_skin=true", midpoint),
+                 PARTS("outputs", "not a vertex of the mesh file"));
+    expect_error(SETS("geometry.refine_skin=true", "fixed.1.vertices=[3, 4]"),
+                 PARTS("fixed.1.vertices", "refined skin"));
+    expect_error(SETS("geometry.spacing=0.001", "geometry.refine_skin=true"),
+                 PARTS("geometry", "tetrahedra"));
+    expect_text_error("name: b\ngeometry: {box: {min: [0, 0, 0], max: [1, 1, 1]}, grid: [2, 2, 2], "
+                      "refine_skin: true}\nmaterial: {E: 1, nu: 0.3}\nfixed:\n  - face: z-\n"
+                      "outputs: {select: all}\n",
+                      PARTS("geometry", "refine_skin"));
+}
+
 /* An organ's multiquadric: the seed's absolute d_c = 2 mm by default (the
  * boxes' relative 8 h is singular on its supports of up to 60 nodes), and
  * a relative d_c when the scene asks for one, through the tetrahedra's
@@ -432,6 +495,7 @@ int main(void)
         cmocka_unit_test(a_linear_field_has_the_exact_energy),
         cmocka_unit_test(a_contact_site_applies_the_whole_force),
         cmocka_unit_test(an_organ_takes_an_absolute_d_c_by_default),
+        cmocka_unit_test(a_refined_skin_keeps_the_file_and_its_sites),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
