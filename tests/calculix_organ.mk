@@ -9,8 +9,8 @@
 #   make organ-convergence  the liver and the stomach under refinement, with
 #                           the file's skin and a refined one (below)
 #   check-organ-calculix    (make check) the shipped liver's meshless solve
-#                           within 3 % of the finest level, at the contact
-#                           vertex and over the output vertices; the deck
+#                           within 3 % of the finest level at the contact
+#                           vertex and 2 % (L2) over the output vertices; the deck
 #                           writer's patch and counts on a coarse level;
 #                           the liver's NLGEOM deck on the same level (make
 #                           check-full adds liver_nh's Newton solves at 6 mm
@@ -30,6 +30,8 @@ ORGAN_SCENE := coeffs/liver.yaml
 ORGAN_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
 ORGAN_FINEST := s20r1
 ORGAN_BOUND := 0.03
+# the shipped liver's outputs: L2 within 2 % (its contact vertex within 3 %)
+ORGAN_L2_BOUND := 0.02
 
 .PHONY: calculix-organ calculix-organ-table calculix-organ-physics check-organ-calculix
 CHECKS += check-organ-calculix
@@ -54,9 +56,9 @@ calculix-organ-table: $(CX)/organ_compare
 	  $< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) || true; } | tee $(CX)/organ.md
 
 check-organ-calculix: $(CX)/organ_compare $(CX)/organ_deck $(B)/bin/tissuefit
-	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND)) =="
-	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND)
-	@echo "ok: the liver's contact displacement and output vertices within $(ORGAN_BOUND) of CalculiX"
+	@echo "== the liver against CalculiX (finest level $(ORGAN_FINEST), bound $(ORGAN_BOUND) at the contact, $(ORGAN_L2_BOUND) L2) =="
+	@$< $(CX_DATA)/liver_$(ORGAN_FINEST).csv $(ORGAN_SCENE) $(ORGAN_BOUND),$(ORGAN_L2_BOUND)
+	@echo "ok: the liver's contact displacement within $(ORGAN_BOUND) and its output vertices within $(ORGAN_L2_BOUND) (L2) of CalculiX"
 	@echo "== the organ deck writer: s20r0 deck (its loaded faces' area = the patch's, checked) has the committed level's size =="
 	@mkdir -p $(CX)
 	@$(CX)/organ_deck $(ORGAN_SCENE) --spacing 20 --refine 0 > $(CX)/check_s20r0.inp
@@ -135,11 +137,13 @@ calculix-stomach calculix-heart: calculix-%: $(CX)/organ_deck | deps-calculix
 #   make calculix-liver-nh-table  the other levels and the meshless clouds
 #                                 against the finest level, at every load
 #                                 level; build/calculix/liver_nh.md
-LIVER_NH_SCENES := liver_nh liver_nodule_nh
+LIVER_NH_SCENES := liver_nh liver_nodule_nh liver_nodule_beside_nh
 LIVER_NH := tests/calculix/scenes/liver_nh.yaml
 LIVER_NH_FORCE_liver_nh := 0.138,0.266,0.0134
 LIVER_NH_FORCE_liver_nodule_nh := 0.1344,0.2595,-0.0675
+LIVER_NH_FORCE_liver_nodule_beside_nh := 0.2074,0.2158,-0.0204
 LIVER_NH_DECK_liver_nodule_nh := --inclusion-spacing 2
+LIVER_NH_DECK_liver_nodule_beside_nh := --inclusion-spacing 2
 # the meshless clouds: the liver's at 9, 6 and 4.5 mm; the nodule's scene's
 # 6 mm cloud refined within 30 mm of the probe to 6 (none), 4.5, 3 (the
 # shipped liver_tumour's), 2 (the scene's own) and 1.5 mm, as in the linear
@@ -148,6 +152,8 @@ LIVER_NH_CLOUDS_liver_nh := geometry.spacing=9 geometry.spacing=6 geometry.spaci
 LIVER_NH_CLOUDS_liver_nodule_nh := geometry.refine.spacing=6 geometry.refine.spacing=4.5 \
                                    geometry.refine.spacing=3 geometry.refine.spacing=2 \
                                    geometry.refine.spacing=1.5
+# beside the nodule: the scenes' 2 mm near the probe and the 3 mm of liver_tumour
+LIVER_NH_CLOUDS_liver_nodule_beside_nh := geometry.refine.spacing=3 geometry.refine.spacing=2
 LIVER_NH_STEPS := 3
 LIVER_NH_LEVELS := s20r0:20:0 s10r0:10:0 s20r1:20:1
 LIVER_NH_FINEST := s20r1
@@ -180,7 +186,8 @@ calculix-liver-nh-physics:
 	$(call organ_physics_nl,liver_tumour,liver_nodule_nh_$(LIVER_NH_FINEST),$(subst $(comma),;,$(LIVER_NH_FORCE_liver_nodule_nh)),$(LIVER_NH_STEPS))
 
 export LIVER_NH_FORCE_liver_nh LIVER_NH_FORCE_liver_nodule_nh LIVER_NH_DECK_liver_nodule_nh \
-  LIVER_NH_CLOUDS_liver_nh LIVER_NH_CLOUDS_liver_nodule_nh
+  LIVER_NH_CLOUDS_liver_nh LIVER_NH_CLOUDS_liver_nodule_nh LIVER_NH_FORCE_liver_nodule_beside_nh \
+  LIVER_NH_DECK_liver_nodule_beside_nh LIVER_NH_CLOUDS_liver_nodule_beside_nh
 calculix-liver-nh-table: $(B)/bin/tissuefit
 	@mkdir -p $(CX)
 	@set -e; for n in $(LIVER_NH_SCENES); do \

@@ -46,6 +46,10 @@ static void body(sheet *s, const tf_problem *p)
                 g->mesh.grade_radius, g->mesh.grade_at[0], g->mesh.grade_at[1],
                 g->mesh.grade_at[2]);
         }
+        if (g->mesh.refine_skin) {
+            put(s, "; the skin refined to the spacing (%zu of its vertices the file's)",
+                g->file_nv);
+        }
         return;
     }
     const tf_box_geometry *b = &p->geometry.as.box;

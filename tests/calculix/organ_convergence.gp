@@ -13,24 +13,26 @@ set logscale xy
 set xrange [13:2.5]
 set xtics (12, 10, 8, 6, 5, 4, 3)
 set xlabel "interior node spacing (mm)"
-set key top right
+set key bottom left opaque
 max3(a, b, c) = (a > b ? (a > c ? a : c) : (b > c ? b : c))
-sel(o, k) = (strcol(1) eq o && strcol(2) eq k)
+# the rows of one organ and skin, so that each series is drawn as a line
+sel(o, k) = sprintf("< awk -F, '$1 == \"%s\" && $2 == \"%s\"' %s", o, k, table)
 
 set title "outputs: relative L2 error"
 set ylabel "L2 error (%)"
 set yrange [1:15]
 set ytics (1, 1.5, 2, 3, 4, 6, 8, 10, 15)
-plot table using (sel("liver", "refined") ? $3 : 1/0):(max3($9, $10, $11)) with linespoints pt 7 lc 1 title "liver, refined skin", \
-     table using (sel("liver", "file") ? $3 : 1/0):(max3($9, $10, $11)) with linespoints pt 6 dt 2 lc 1 title "liver, the file's skin", \
-     table using (sel("stomach", "refined") ? $3 : 1/0):(max3($9, $10, $11)) with linespoints pt 5 lc 2 title "stomach, refined skin", \
-     table using (sel("stomach", "file") ? $3 : 1/0):(max3($9, $10, $11)) with linespoints pt 4 dt 2 lc 2 title "stomach, the file's skin", \
-     2 with lines lc rgb "gray" dt 3 title "2 %"
+plot sel("liver", "refined") using 3:(max3($9, $10, $11)) with linespoints pt 7 lc 1 title "liver, refined skin", \
+     sel("liver", "file") using 3:(max3($9, $10, $11)) with linespoints pt 6 dt 2 lc 1 title "liver, the file's skin", \
+     sel("stomach", "refined") using 3:(max3($9, $10, $11)) with linespoints pt 5 lc 2 title "stomach, refined skin", \
+     sel("stomach", "file") using 3:(max3($9, $10, $11)) with linespoints pt 4 dt 2 lc 2 title "stomach, the file's skin", \
+     2 with lines lc rgb "gray" dt 3 lw 2 title "2 %"
 
 set title "the contact vertex: relative error"
+set key top right opaque
 set ylabel "contact error (%)"
-plot table using (sel("liver", "refined") ? $3 : 1/0):(max3($6, $7, $8)) with linespoints pt 7 lc 1 title "liver, refined skin", \
-     table using (sel("liver", "file") ? $3 : 1/0):(max3($6, $7, $8)) with linespoints pt 6 dt 2 lc 1 title "liver, the file's skin", \
-     table using (sel("stomach", "refined") ? $3 : 1/0):(max3($6, $7, $8)) with linespoints pt 5 lc 2 title "stomach, refined skin", \
-     table using (sel("stomach", "file") ? $3 : 1/0):(max3($6, $7, $8)) with linespoints pt 4 dt 2 lc 2 title "stomach, the file's skin"
+plot sel("liver", "refined") using 3:(max3($6, $7, $8)) with linespoints pt 7 lc 1 title "liver, refined skin", \
+     sel("liver", "file") using 3:(max3($6, $7, $8)) with linespoints pt 6 dt 2 lc 1 title "liver, the file's skin", \
+     sel("stomach", "refined") using 3:(max3($6, $7, $8)) with linespoints pt 5 lc 2 title "stomach, refined skin", \
+     sel("stomach", "file") using 3:(max3($6, $7, $8)) with linespoints pt 4 dt 2 lc 2 title "stomach, the file's skin"
 unset multiplot

@@ -30,7 +30,7 @@ for arg in "$@"; do
                 > "$tmp/table" 2> "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
             t1=$(date +%s.%N)
             awk -v organ=$organ -v skin=$skin -v s=$s -v t0=$t0 -v t1=$t1 '
-                FILENAME ~ /err$/ && / nodes, / { n = $(NF - 8); surf = $(NF - 5) }
+                FILENAME ~ /err$/ && / nodes, / { n = $(NF - 8); surf = $(NF - 6) }
                 FILENAME ~ /table$/ && $2 ~ /^f[xyz]$/ { c[$2] = $6; l[$2] = $9 }
                 END { printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.1f\n", organ, skin, s, n, surf,
                              c["fx"], c["fy"], c["fz"], l["fx"], l["fy"], l["fz"], t1 - t0 }' \

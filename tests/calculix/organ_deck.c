@@ -160,15 +160,18 @@ static int parse(int argc, char **argv, options *o)
     return 0;
 }
 
-/* The organ's surface as the meshless solve placed it. */
+/* The organ's surface as the meshless solve placed it: the file's vertices
+ * and triangles (a refined skin, geometry.refine_skin, is the meshless
+ * solve's own resolution, not the reference's: the deck refines by
+ * --refine). */
 static int surface_of(const tf_mesh_geometry *m, tf_surface *s)
 {
-    if (tf_surface_alloc(s, m->tm.nsurf, m->tm.ntri) != 0) {
+    if (tf_surface_alloc(s, m->file_nv, m->file_nt) != 0) {
         return -1;
     }
-    memcpy(s->xyz, m->tm.xyz, 3 * m->tm.nsurf * sizeof *s->xyz);
-    memcpy(s->tri, m->tm.tri, 3 * m->tm.ntri * sizeof *s->tri);
-    for (size_t i = 0; i < m->tm.nsurf; ++i) {
+    memcpy(s->xyz, m->tm.xyz, 3 * m->file_nv * sizeof *s->xyz);
+    memcpy(s->tri, m->file_tri, 3 * m->file_nt * sizeof *s->tri);
+    for (size_t i = 0; i < m->file_nv; ++i) {
         s->source[i] = m->tm.source[i];
     }
     return 0;
