@@ -131,12 +131,14 @@ calculix-stomach calculix-heart: calculix-%: $(CX)/organ_deck | deps-calculix
 # printed at LIVER_NH_STEPS equal levels (organ_deck --nlgeom), against the
 # Newton solves of the meshless clouds below (organ_nl_compare.sh).
 #   make calculix-liver-nh        the CalculiX runs (liver_nh: s20r0 0.5 min,
-#                                 s10r0 1, s20r1 17 and 3.8 GB; liver_nodule_nh:
-#                                 1.6, 2.5 and about 30; one thread); rewrites
-#                                 tests/calculix/data/liver{,_nodule}_nh_*.csv
+#                                 s10r0 1, s20r1 17 and 3.8 GB; liver_nodule_nh
+#                                 and liver_nodule_beside_nh: 1.6, 2.5-3.3 and
+#                                 37-56, 6.1 GB; one thread); rewrites
+#                                 tests/calculix/data/liver{,_nodule,_nodule_beside}_nh_*.csv
 #   make calculix-liver-nh-table  the other levels and the meshless clouds
 #                                 against the finest level, at every load
-#                                 level; build/calculix/liver_nh.md
+#                                 level; build/calculix/liver_nh.md; then
+#                                 calculix-liver-nh-signal (below)
 LIVER_NH_SCENES := liver_nh liver_nodule_nh liver_nodule_beside_nh
 LIVER_NH := tests/calculix/scenes/liver_nh.yaml
 LIVER_NH_FORCE_liver_nh := 0.138,0.266,0.0134
@@ -200,3 +202,21 @@ calculix-liver-nh-table: $(B)/bin/tissuefit
 	    $$(eval echo \$${LIVER_NH_FORCE_$$n}) $(LIVER_NH_STEPS) $(CX_DATA)/$${n}_$(LIVER_NH_FINEST).csv \
 	    $$(eval echo \$${LIVER_NH_CLOUDS_$$n}); echo; \
 	done | tee $(CX)/liver_nh.md
+	@$(MAKE) --no-print-directory calculix-liver-nh-signal
+
+# What the hand feels of the nodule in neo-Hookean tissue: the secant
+# stiffness along the press over the nodule and beside it at each load
+# level, CalculiX's levels (finest first) and the Newton solves on
+# liver_tumour's cloud (3 mm within 30 mm of the probe); six Newton solves,
+# about 10 minutes; build/calculix/liver_nh_signal.md
+LIVER_NH_SIGNAL_CLOUD := geometry.refine.spacing=3
+.PHONY: calculix-liver-nh-signal
+calculix-liver-nh-signal: $(B)/bin/tissuefit
+	@mkdir -p $(CX)
+	@tests/calculix/organ_nl_compare.sh --signal $(B)/bin/tissuefit \
+	  tests/calculix/scenes/liver_nodule_nh.yaml tests/calculix/scenes/liver_nodule_beside_nh.yaml \
+	  $(LIVER_NH_FORCE_liver_nodule_nh) $(LIVER_NH_FORCE_liver_nodule_beside_nh) $(LIVER_NH_STEPS) \
+	  $(LIVER_NH_SIGNAL_CLOUD) $(foreach l,$(LIVER_NH_FINEST) $(filter-out $(LIVER_NH_FINEST),\
+	    $(foreach l,$(LIVER_NH_LEVELS),$(firstword $(subst :, ,$(l))))),\
+	    $(CX_DATA)/liver_nodule_nh_$(l).csv $(CX_DATA)/liver_nodule_beside_nh_$(l).csv) \
+	  | tee $(CX)/liver_nh_signal.md

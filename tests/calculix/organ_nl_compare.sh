@@ -16,6 +16,8 @@
 #
 #   organ_nl_compare.sh --csv LEVEL.csv REF.csv LABEL   another CalculiX level
 #                                                 against REF, the same rows
+#   organ_nl_compare.sh --signal ...                a stiff region's signal
+#                                                 (below)
 set -eu
 # errors LEVEL_CASE A.csv B.csv: "contact outputs" of A's case against B's
 # (A: organ_dat.awk rows, or a solve's node,x,y,z,ux,uy,uz with LEVEL_CASE "")
@@ -38,6 +40,80 @@ errors() {
         cur="$4" "$2" "$3"
 }
 pct() { awk -v x="$1" 'BEGIN { printf "%.2f %%", 100 * x }'; }
+# contact LEVEL_CASE A.csv REF.csv: the contact point's displacement "ux uy uz"
+# in A (organ_dat.awk rows at LEVEL_CASE, or a solve's rows with LEVEL_CASE
+# "" matched by position to REF's contact point at level CUR)
+contact() {
+    awk -F, -v lev="$1" -v cur="$4" '
+        function key(x, y, z) { return sprintf("%.4f,%.4f,%.4f", x, y, z) }
+        NR == FNR { if (FNR > 1 && $9 == 1 && $5 == cur) want = key($2, $3, $4); next }
+        FNR > 1 && (lev == "" || ($5 == lev && $9 == 1)) && key($2, $3, $4) == want {
+            print (lev == "" ? $5 " " $6 " " $7 : $6 " " $7 " " $8); found = 1; exit }
+        END { if (!found) exit 1 }' "$3" "$2"
+}
+# stiffness FX,FY,FZ "ux uy uz": |F| / (u . F / |F|), N/mm: the secant
+# stiffness along the press
+stiffness() {
+    echo "$1 $2" | awk '{ split($1, f, ","); n = sqrt(f[1]^2 + f[2]^2 + f[3]^2)
+                          d = ($2 * f[1] + $3 * f[2] + $4 * f[3]) / n; printf "%.6g", n / d }'
+}
+scaled() { echo "$1" | awk -F, -v k="$2" -v K="$3" '{ printf "%.17g,%.17g,%.17g", $1 * k / K, $2 * k / K, $3 * k / K }'; }
+if [ "${1:-}" = "--signal" ]; then
+    # --signal TISSUEFIT OVER BESIDE F_OVER F_BESIDE K CLOUD REF_OVER REF_BESIDE [REF_OVER REF_BESIDE]...
+    # What the hand feels of a stiff region under large deformation: at each
+    # load level k F / K, the secant stiffness along the press at each site
+    # (k = |F| / depth, the depth the contact point's displacement along F)
+    # and the difference dk = k_over - k_beside, for each CalculiX level
+    # (finest first) and the Newton solves of CLOUD; BOUND (a fraction):
+    # exit 1 when the meshless dk is off the finest level's by more.
+    # SIGNAL_KEEP=DIR keeps the Newton solves there and reuses them (the same
+    # scenes, forces and cloud only).
+    [ $# -ge 10 ] || { echo "usage: $0 --signal TISSUEFIT OVER BESIDE F_OVER F_BESIDE K CLOUD REF_OVER REF_BESIDE..." >&2; exit 2; }
+    tool=$2 over=$3 beside=$4 fo=$5 fb=$6 levels=$7 cloud=$8
+    shift 8
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    echo "| solve | load level | k over (N/mm) | k beside (N/mm) | dk (N/mm) | dk / k beside | dk against the finest |"
+    echo "|---|---|---:|---:|---:|---:|---:|"
+    row() { # LABEL k KO KB DK0
+        awk -v l="$1" -v k="$2" -v a="$3" -v b="$4" -v d0="$5" 'BEGIN { d = a - b
+            printf "| %s | l%d | %.5g | %.5g | %.5g | %.1f %% | %s |\n", l, k, a, b, d, 100 * d / b,
+                   d0 == "" ? "—" : sprintf("%+.1f %%", 100 * (d - d0) / d0) }'
+    }
+    k=1 fail=0
+    while [ "$k" -le "$levels" ]; do
+        Fo=$(scaled "$fo" "$k" "$levels") Fb=$(scaled "$fb" "$k" "$levels")
+        dk0= first=1
+        i=1
+        for ref in "$@"; do
+            if [ $((i % 2)) -eq 1 ]; then ro=$ref; i=$((i + 1)); continue; fi
+            rb=$ref i=$((i + 1))
+            uo=$(contact "l$k" "$ro" "$ro" "l$k") && ub=$(contact "l$k" "$rb" "$rb" "l$k") ||
+                { echo "organ_nl_compare: $ro, $rb: no contact row at l$k" >&2; exit 2; }
+            ko=$(stiffness "$Fo" "$uo") kb=$(stiffness "$Fb" "$ub")
+            row "CalculiX $(basename "$ro" .csv)" "$k" "$ko" "$kb" "$dk0"
+            if [ $first = 1 ]; then dk0=$(awk -v a="$ko" -v b="$kb" 'BEGIN { printf "%.9g", a - b }'); first=0; fo_ref=$ro fb_ref=$rb; fi
+        done
+        # SIGNAL_KEEP=DIR keeps the solves (and reuses those already there)
+        keep=${SIGNAL_KEEP:-$tmp}
+        mkdir -p "$keep"
+        [ -s "$keep/over_l$k.csv" ] ||
+            "$tool" -q solve "$over" --set "$cloud" --force "$Fo" --out "$keep/over_l$k.csv"
+        [ -s "$keep/beside_l$k.csv" ] ||
+            "$tool" -q solve "$beside" --set "$cloud" --force "$Fb" --out "$keep/beside_l$k.csv"
+        uo=$(contact "" "$keep/over_l$k.csv" "$fo_ref" "l$k") &&
+            ub=$(contact "" "$keep/beside_l$k.csv" "$fb_ref" "l$k") ||
+            { echo "organ_nl_compare: the solves hold no contact point at l$k" >&2; exit 2; }
+        ko=$(stiffness "$Fo" "$uo") kb=$(stiffness "$Fb" "$ub")
+        row "meshless, $cloud" "$k" "$ko" "$kb" "$dk0"
+        if [ -n "${BOUND:-}" ]; then
+            awk -v a="$ko" -v b="$kb" -v d0="$dk0" -v B="$BOUND" \
+                'BEGIN { d = a - b; exit !((d - d0) / d0 <= B && (d0 - d) / d0 <= B) }' || fail=1
+        fi
+        k=$((k + 1))
+    done
+    exit $fail
+fi
 if [ "${1:-}" = "--csv" ]; then
     [ $# -eq 4 ] || { echo "usage: $0 --csv LEVEL.csv REF.csv LABEL" >&2; exit 2; }
     echo "| level | load level | contact | outputs (L2) |"
