@@ -241,14 +241,13 @@ int tf_surface_refine(tf_surface *s, tf_size_at size, const void *arg, double ra
     for (size_t t = 0; t < w.nt; ++t) {
         while (too_long(&w, t, size, arg, ratio)) {
             if (w.nv >= max_nv) {
-                double h[3] = {0, 0, 0};
-                const double *x = w.xyz + 3 * w.tri[3 * t];
-                memcpy(h, x, sizeof h);
+                double at[3]; /* a vertex of the triangle still too coarse */
+                memcpy(at, w.xyz + 3 * w.tri[3 * t], sizeof at);
                 work_free(&w);
                 return tf_geom_fail(m, TF_GEOM_BAD_INPUT,
                                     "the refined skin would hold more than %zu vertices (%g mm "
                                     "wanted at (%g, %g, %g) mm): use a larger spacing",
-                                    max_nv, size(h, arg), h[0], h[1], h[2]);
+                                    max_nv, size(at, arg), at[0], at[1], at[2]);
             }
             if (reserve(&w) != 0) {
                 work_free(&w);

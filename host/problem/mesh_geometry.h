@@ -31,17 +31,18 @@ int tf_problem_mesh_build(tf_mesh_geometry *g, tf_geom_msg *m);
  * interior spacing on every axis).  Returns 0, or -1 when out of memory. */
 int tf_problem_mesh_cloud(const tf_mesh_geometry *g, tf_cloud *c);
 
-/* The surface vertex (node index) nearest p, ties to the lowest index. */
+/* The file's vertex (node index; not a refined skin's midpoint) nearest p,
+ * ties to the lowest index. */
 uint32_t tf_problem_mesh_nearest_vertex(const tf_mesh_geometry *g, const double p[3]);
 
 /* The node of the surface vertex whose index in the mesh file is `source`,
  * or -1 when the file has no such vertex (or it was dropped as a speck). */
 long tf_problem_mesh_vertex_node(const tf_mesh_geometry *g, long source);
 
-/* A contact site: the surface triangles whose centroid lies within radius
- * of the surface vertex `centre` (a triangle partly inside the ball counts
- * when its centroid does, so the loaded area is a union of whole
- * triangles), into p (shape TF_PATCH_SURFACE, its own triangle list, their
+/* A contact site: the surface triangles whose file triangle's centroid
+ * lies within radius of the surface vertex `centre` (a triangle partly
+ * inside the ball counts when its centroid does, so the loaded area is a
+ * union of whole file triangles, whatever the skin's refinement), into p (shape TF_PATCH_SURFACE, its own triangle list, their
  * total area).  Returns 0, 1 when no triangle qualifies, -1 when out of
  * memory. */
 int tf_problem_mesh_site(const tf_mesh_geometry *g, uint32_t centre, double radius, tf_patch *p);

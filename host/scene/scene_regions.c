@@ -276,7 +276,7 @@ int sd_resolve_outputs(const sd_outputs *d, const tf_problem *s, tf_outputs *o, 
         return -1;
     }
     /* Points (select: points, contacts by position) are the field there,
-     * wherever they lie; nodes of an organ must be surface vertices. */
+     * wherever they lie; nodes of an organ must be the file's vertices. */
     for (size_t k = 0; tf_problem_mesh(s) != NULL && o->points == NULL && k < o->n_nodes; ++k) {
         if (o->nodes[k] >= tf_problem_mesh(s)->file_nv) {
             snprintf(msg, msglen,
