@@ -122,9 +122,13 @@ int tf_report_organ_rest_png(tf_ctx *ctx, const char *path, const tf_problem *p,
     }
     free(fixed);
     base(p, v, &r);
+    char file[48] = ""; /* a refined skin's vertices beyond the file's */
+    if (m->file_nv < p->cloud.n_surface) {
+        snprintf(file, sizeof file, " (%zu of them the file's)", m->file_nv);
+    }
     snprintf(title, sizeof title,
-             "%s at rest: %zu surface vertices; fixed region blue%s%s",
-             v->title ? v->title : p->name, p->cloud.n_surface,
+             "%s at rest: %zu surface vertices%s; fixed region blue%s%s",
+             v->title ? v->title : p->name, p->cloud.n_surface, file,
              p->n_contacts == 0 ? "" : p->n_contacts > 1 ? ", contact sites red" : ", contact site red",
              p->n_inclusions > 0 ? ", over a material region green" : "");
     r.tri_value = value;
