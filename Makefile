@@ -49,7 +49,7 @@ RV64_FLAGS := -march=rv64imafdc -mabi=lp64d -mcmodel=medany
 # ---------------------------------------------------------------------------
 # Debian packages
 DEBS_BUILD := gcc make binutils pkg-config zlib1g-dev liblapacke-dev libopenblas-dev \
-              libsuitesparse-dev libcyaml-dev libyaml-dev libgmsh-dev libassimp-dev libgsl-dev
+              libsuitesparse-dev libcyaml-dev libyaml-dev libgmsh-dev libassimp-dev libgsl-dev lld
 DEBS_CHECK := $(DEBS_BUILD) libcmocka-dev clang valgrind gcc-arm-none-eabi \
               libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 DEBS_DEMO := $(DEBS_BUILD) gnuplot-nox
@@ -172,12 +172,17 @@ check: | deps-check
 check-full: | deps-check
 	@$(MAKE) --no-print-directory check CHECK_FULL=1
 
-# The edit-test loop: the unit tests, the layer rule, the freestanding
-# library and one bit-exact configuration (`make check` runs them all).
+# The edit-test loop: every unit test natively (UNIT_ALL=1, tests/tests.mk),
+# the layer rule, the freestanding library and one bit-exact configuration
+# (`make check` runs them all).
 QUICK_CHECKS := check-unit check-host-layers check-freestanding check-bitexact-quick
 check-quick: | deps-check
+ifeq ($(UNIT_ALL),)
+	@$(MAKE) --no-print-directory check-quick UNIT_ALL=1
+else
 	$(call run_checks,$(QUICK_CHECKS),check-quick,deps-check)
 	@echo "== make check-quick: all passed ($(words $(QUICK_CHECKS)) checks; make check runs $(words $(CHECKS))) =="
+endif
 
 bench: | deps-bench
 	@$(MAKE) --no-print-directory $(BENCHES)

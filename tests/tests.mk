@@ -1,8 +1,9 @@
 # tests.mk — everything `make check` runs.
 #
 #   check-unit         cmocka host unit tests (tests/unit/LAYER/test_*.c, one
-#                      folder per host/ layer)
-#   check-sanitize     the same tests under AddressSanitizer + UBSan
+#                      folder per host/ layer); make check: the 7 slowest
+#   check-sanitize     the same tests under AddressSanitizer + UBSan;
+#                      make check: all but the 7 slowest
 #   check-freestanding target library for Cortex-M4F and RV64: no undefined
 #                      symbols, no mutable statics, no recursion
 #   check-bitexact     1000 random models x 4 compiler configurations
@@ -61,21 +62,24 @@ CHECKS += check-unit check-sanitize check-freestanding check-bitexact check-gold
 # waits at the end for one long program (measured: `slowest:` in the log).
 UNIT_FIRST := solvers/test_conformance fitting/test_resonant_fit fitting/test_family_conformance \
               solvers/test_weak_bc solvers/test_homogeneous scene/test_sites solvers/test_nonlinear
-check-unit: $(UNIT_NAMES:%=$(T)/unit/%)
-	@echo "== host unit tests =="
+# make check runs every unit program once: the seven of UNIT_FIRST (every
+# solver re-solving block48, every family refitted: 120 s of CPU natively,
+# about 200 under the sanitizers) natively in check-unit, every other one
+# under ASan + UBSan in check-sanitize, a stricter run of the same program
+# and the same -O2 host library.  make check-full runs all of them both
+# ways; make check-quick (UNIT_ALL=1) all of them natively, the edit-test
+# loop having no sanitized build.
+UNIT_ALL ?=
+UNIT_NATIVE = $(if $(or $(filter-out 0,$(CHECK_FULL)),$(UNIT_ALL)),$(UNIT_NAMES),$(UNIT_FIRST))
+check-unit: $(UNIT_NATIVE:%=$(T)/unit/%)
+	@echo "== host unit tests$(if $(filter $(words $(UNIT_NAMES)),$(words $(UNIT_NATIVE))),, (short: the $(words $(UNIT_FIRST)) slowest; check-sanitize runs the others))) =="
 	@tests/run_tests.sh $(NPROC) $(T)/logs/unit $(foreach u,$(UNIT_FIRST),$(T)/unit/$(u)) \
 	  $(filter-out $(UNIT_FIRST:%=$(T)/unit/%),$^)
-	@echo "ok: $(words $^) unit test programs passed"
+	@echo "ok: $(words $^) of $(words $(UNIT_NAMES)) unit test programs passed"
 
-# Under the sanitizers, the short version leaves out UNIT_FIRST: the seven
-# programs that re-solve block48 with every solver or refit every family
-# (200 of the 290 CPU seconds the sanitized programs take).  The code they
-# reach is sanitized by the other programs and by check-fuzz's ubsan_solve
-# (every law through every solver under clang's ASan + UBSan); natively
-# check-unit runs them in full, and make check-full under the sanitizers too.
 SANITIZE_NAMES = $(call check_len,$(UNIT_NAMES),$(filter-out $(UNIT_FIRST),$(UNIT_NAMES)))
 check-sanitize: $(SANITIZE_NAMES:%=$(T)/asan/%)
-	@echo "== host unit tests under ASan + UBSan$(call check_len,, (short: not the $(words $(UNIT_FIRST)) slowest; make check-full runs them)) =="
+	@echo "== host unit tests under ASan + UBSan$(call check_len,, (short: not the $(words $(UNIT_FIRST)) slowest; check-unit runs them natively)) =="
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  tests/run_tests.sh $(NPROC) $(T)/logs/asan $(foreach u,$(filter $(UNIT_FIRST),$(SANITIZE_NAMES)),$(T)/asan/$(u)) \
 	  $(filter-out $(UNIT_FIRST:%=$(T)/asan/%),$^)
