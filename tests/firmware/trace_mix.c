@@ -50,14 +50,21 @@ static char funcs[4096][64];
 static unsigned long func_addr[4096];
 static int n_funcs;
 
-/* Translated blocks: start address -> instruction addresses. */
+/* Translated blocks: start address -> instruction addresses, and what the
+ * start address is (classified once, at its first execution: a trace of a
+ * golden image executes a few thousand blocks millions of times). */
 typedef struct tb {
     unsigned long start;
     int n;
+    int classified;
+    const char *fn;      /* the function it lies in */
+    unsigned char entry; /* an evaluation's entry point */
+    unsigned char check; /* a set's start: tfit_model_check*, trace_group_start */
     unsigned long addr[MAX_TB_INSNS];
 } tb;
 static tb *tbs;
 static int n_tbs, cap_tbs;
+static int *tb_at; /* by address / 2 as sites: index into tbs + 1, 0 none */
 
 static site *at(unsigned long addr)
 {
@@ -78,6 +85,11 @@ static void load_disassembly(const char *path)
         exit(2);
     }
     sites = calloc(WINDOW, sizeof *sites);
+    tb_at = calloc(WINDOW, sizeof *tb_at);
+    if (sites == NULL || tb_at == NULL) {
+        fprintf(stderr, "trace_mix: out of memory\n");
+        exit(2);
+    }
     for (unsigned long i = 0; i < WINDOW; ++i) {
         sites[i].cls = -1;
     }
@@ -116,8 +128,19 @@ static void load_disassembly(const char *path)
     fclose(f);
 }
 
+static int *tb_slot(unsigned long addr)
+{
+    site *s = at(addr);
+    return s == NULL ? NULL : &tb_at[s - sites];
+}
+
+/* Blocks outside the code windows (none in our images) by linear search. */
 static tb *find_tb(unsigned long start)
 {
+    const int *slot = tb_slot(start);
+    if (slot != NULL) {
+        return *slot == 0 ? NULL : &tbs[*slot - 1];
+    }
     for (int i = n_tbs - 1; i >= 0; --i) {
         if (tbs[i].start == start) {
             return &tbs[i];
@@ -126,6 +149,7 @@ static tb *find_tb(unsigned long start)
     return NULL;
 }
 
+/* A block translated again at the same start replaces the old one. */
 static tb *new_tb(unsigned long start)
 {
     tb *t = find_tb(start);
@@ -133,11 +157,20 @@ static tb *new_tb(unsigned long start)
         if (n_tbs == cap_tbs) {
             cap_tbs = cap_tbs ? 2 * cap_tbs : 1024;
             tbs = realloc(tbs, (size_t)cap_tbs * sizeof *tbs);
+            if (tbs == NULL) {
+                fprintf(stderr, "trace_mix: out of memory\n");
+                exit(2);
+            }
         }
         t = &tbs[n_tbs++];
+        int *slot = tb_slot(start);
+        if (slot != NULL) {
+            *slot = n_tbs;
+        }
     }
     t->start = start;
     t->n = 0;
+    t->classified = 0;
     return t;
 }
 
@@ -174,6 +207,22 @@ static int is_entry(unsigned long pc)
 static int starts_with(const char *s, const char *p)
 {
     return strncmp(s, p, strlen(p)) == 0;
+}
+
+/* What the block starting at pc is: its function, an evaluation's entry,
+ * a set's start. */
+static void classify(tb *t, unsigned long pc)
+{
+    t->fn = func_of(pc);
+    t->entry = (unsigned char)is_entry(pc);
+    t->check = 0;
+    for (int i = 0; i < n_funcs; ++i) {
+        if (func_addr[i] == pc && (starts_with(funcs[i], "tfit_model_check") ||
+                                   strcmp(funcs[i], "trace_group_start") == 0)) {
+            t->check = 1;
+        }
+    }
+    t->classified = 1;
 }
 
 typedef struct set_stats {
@@ -225,7 +274,8 @@ int main(int argc, char **argv)
             filling = NULL;
             continue;
         }
-        if (strncmp(line, "0x", 2) == 0 && sscanf(line, "0x%lx:", &a) == 1) {
+        char *end;
+        if (strncmp(line, "0x", 2) == 0 && (a = strtoul(line + 2, &end, 16), *end == ':')) {
             if (filling == NULL) {
                 filling = new_tb(a);
             }
@@ -235,22 +285,26 @@ int main(int argc, char **argv)
             continue;
         }
         filling = NULL;
-        if (sscanf(line, "Trace %*d: %*s [%*x/%lx/", &pc) != 1) {
+        /* "Trace N: HOST [FLAGS/PC/...": the block at PC executed */
+        const char *b = strncmp(line, "Trace ", 6) == 0 ? strchr(line, '[') : NULL;
+        b = b != NULL ? strchr(b, '/') : NULL;
+        if (b == NULL || (pc = strtoul(b + 1, &end, 16), *end != '/')) {
             continue;
         }
         if (fallthrough != 0) { /* the last block's conditional branch, now resolved */
             tf_insn_mix_add(&mix, pc == fallthrough ? TF_INSN_NBRANCH : TF_INSN_BRANCH, 0);
             fallthrough = 0;
         }
-        const char *fn = func_of(pc);
-        int entry_of_check = 0;
-        for (int i = 0; i < n_funcs; ++i) {
-            if (func_addr[i] == pc && (starts_with(funcs[i], "tfit_model_check") ||
-                                       strcmp(funcs[i], "trace_group_start") == 0)) {
-                entry_of_check = 1;
-            }
+        tb *t = find_tb(pc), unlisted;
+        if (t == NULL) {
+            unlisted.classified = 0;
+            t = &unlisted;
         }
-        if (entry_of_check) {
+        if (!t->classified) {
+            classify(t, pc);
+        }
+        const char *fn = t->fn;
+        if (t->check) {
             if (in_call) {
                 finish_call(&mix, entry);
                 in_call = 0;
@@ -258,7 +312,7 @@ int main(int argc, char **argv)
             ++n_sets;
             continue;
         }
-        if (is_entry(pc)) {
+        if (t->entry) {
             if (in_call) {
                 finish_call(&mix, entry);
             }
@@ -273,8 +327,7 @@ int main(int argc, char **argv)
         if (!in_call) {
             continue;
         }
-        tb *t = find_tb(pc);
-        if (t == NULL) {
+        if (t == &unlisted) {
             fprintf(stderr, "trace_mix: block at 0x%lx executed but never listed\n", pc);
             return 2;
         }
