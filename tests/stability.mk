@@ -59,7 +59,7 @@ $(STAB_T)/$(2)/$(or $(4),run_invariants)-$(call fw_name,$(1)): $(or $(5),tests/s
 endef
 $(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),native,-O2)))
 $(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),native,-O2,bench_inputs,tests/stability/bench_inputs.c)))
-$(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 -g $(SANITIZE))))
+$(foreach h,$(FW_POINT_HEADERS),$(eval $(call stab_runner,$(h),asan,-O1 $(TEST_G) $(SANITIZE))))
 
 .PHONY: check-stability check-stability-basis check-stability-extremes check-stability-random \
         check-stability-sanitize check-stability-models stability-plot \
