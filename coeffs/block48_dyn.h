@@ -24,13 +24,13 @@
  *       stateful: tick 1000000 ns, state 21 floats (tfit_resonant_reset, tfit_resonant_step); 3 damped modes: 84.38 Hz zeta 0.0375 w (-0.0127 -0.0178 0.958); 140.8 Hz zeta 0.0193 w (0.123 0.119 0.00068); 238.7 Hz zeta 0.0384 w (0.279 0.272 0.0054)
  *       held-out cases are force histories stepped from rest: largest error 29.5 % of the largest displacement
  *       held-out error over 6 cases: max 0.388 mm, rms 0.00611 mm
- *       error of the solve against the physics: not measured (the self-measurement covers linear solves (the solver mls-collocation is not linear); tissuefit fit --reference gives a finer solution)
+ *       error of the solve against the physics: not measured (the solver mls-collocation gives no displacement field between its nodes, which the comparison of clouds needs; tissuefit fit --reference gives a finer solution)
  *   tfit_block48_dyn_contact: contact p=1, 1 output point, contact displacement [mm] -> contact force [N]
  *       23 add, 42 mul, 0 div per evaluation; 104 table bytes
  *       156 instructions; Cortex-M4F <= 213 cycles (1.27 us at 168 MHz), Cortex-M7 ~166 (0.34 us at 480 MHz)
  *       Q31 form tfit_block48_dyn_contact_q31: input 2^3 mm, output 2^4 N full scale; adds 2e-08 N (float32 path: 6.97e-08)
  *       held-out error over 10 cases: max 5.96e-08 N, rms 1.25e-08 N
- *       error of the solve against the physics: not measured (the self-measurement covers linear solves (the solver mls-collocation is not linear); tissuefit fit --reference gives a finer solution)
+ *       error of the solve against the physics: not measured (the solver mls-collocation gives no displacement field between its nodes, which the comparison of clouds needs; tissuefit fit --reference gives a finer solution)
  *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.4 N/mm; largest stiffness 0.582 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c

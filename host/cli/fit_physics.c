@@ -64,12 +64,17 @@ static void self_note(const tf_discretisation *d, char *buf, size_t n)
     } else {
         snprintf(order, sizeof order, "observed order %.3g", d->self_order);
     }
+    const char *over = d->enveloped ? "bound over the envelope (linear)"
+                       : d->self_relaxed
+                           ? "largest over the 6 forces of the envelope's radius along +-x, +-y, "
+                             "+-z (the fully relaxed response)"
+                           : "largest over the 6 forces of the envelope's radius along +-x, +-y, +-z";
     snprintf(buf, n,
              "self-measured: Richardson extrapolation over clouds of spacing %.4g, %.4g (this "
-             "one), %.4g mm (%zu, %zu, %zu nodes), %s, at %zu points, bound over the envelope "
-             "(linear); the coarser pair gives %.3g mm",
+             "one), %.4g mm (%zu, %zu, %zu nodes), %s, at %zu points, %s; the coarser pair "
+             "gives %.3g mm",
              d->self_h[0], d->self_h[1], d->self_h[2], d->self_nodes[0], d->self_nodes[1],
-             d->self_nodes[2], order, d->points, d->self_other_mm);
+             d->self_nodes[2], order, d->points, over, d->self_other_mm);
 }
 
 void tf_fit_physics_state(const tf_discretisation *d, const tf_envelope *env, tf_model *fwd,

@@ -48,6 +48,7 @@ typedef struct tf_discretisation {
     double self_h[3];     /* the clouds' spacing, mm: coarser, the scene's, finer */
     size_t self_nodes[3];
     double self_seconds;  /* the two extra clouds' setup and solves */
+    int self_relaxed;     /* a time-dependent solver: its fully relaxed response measured */
 } tf_discretisation;
 
 /* Solves the reference's cases with solver s at contact site `contact` of
@@ -58,11 +59,14 @@ int tf_discretisation_measure(tf_ctx *ctx, tf_solver *s, const tf_problem *p, in
 
 /* The same comparison against references held in memory: n cases, the
  * forces (N) at contact site `contact`, the displacements u[k] (3 np, mm)
- * at the points x (3 np, mm).  Fills max_mm, site_rel, site_gap, points,
- * enveloped and reach of out, which the caller has cleared.  Returns 0, or
- * -1 with a message. */
+ * at the points x (3 np, mm).  solved[k], when not NULL, is solver s's own
+ * displacement at x under case k, already computed (a Newton solve is not
+ * repeated); NULL: s solves each case.  Fills max_mm, site_rel, site_gap,
+ * points, enveloped and reach of out, which the caller has cleared.
+ * Returns 0, or -1 with a message. */
 int tf_discretisation_compare(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                               const double (*force)[3], size_t n, const double *x, size_t np,
-                              const double *const *u, tf_discretisation *out);
+                              const double *const *u, const double *const *solved,
+                              tf_discretisation *out);
 
 #endif /* TF_DISCRETISATION_H */

@@ -54,18 +54,42 @@ static double spacing_of(const tf_problem *p)
     return exp(logsum / axes);
 }
 
-/* The three unit forces' displacements at the points x, from solver s
- * (u: 3 cases x 3 np). */
-static int unit_fields(tf_ctx *ctx, tf_solver *s, int contact, const double *x, size_t np,
-                       double *u)
+/* The load cases every cloud solves: a linear solve's three unit forces
+ * (its error is linear in the force, so they bound the whole envelope); any
+ * other solve's six forces of the envelope's radius along +-x, +-y, +-z
+ * from its centre, where a nonlinear solve's error is largest (the figure
+ * is then the largest over them). */
+typedef struct self_cases {
+    size_t n;
+    double force[TF_SELF_MAX_CASES][3];
+} self_cases;
+
+static void cases_of(const tf_solver *s, const tf_problem *p, self_cases *c)
+{
+    if (tf_solver_caps_of(s) & TF_SOLVER_LINEAR) {
+        c->n = 3;
+        memcpy(c->force, unit_forces, sizeof unit_forces);
+        return;
+    }
+    c->n = 6;
+    for (size_t k = 0; k < 6; ++k) {
+        memcpy(c->force[k], p->envelope.centre, sizeof c->force[k]);
+        c->force[k][k / 2] += (k % 2 ? -1 : 1) * p->envelope.radius;
+    }
+}
+
+/* The cases' displacements at the points x, from solver s (u: n cases x
+ * 3 np); a time-dependent solver's fully relaxed ones. */
+static int fields(tf_ctx *ctx, tf_solver *s, int contact, const self_cases *c, const double *x,
+                  size_t np, double *u)
 {
     const size_t dofs = 3 * tf_solver_node_count(s);
-    double *nodal = malloc(3 * dofs * sizeof *nodal), *grad = malloc(9 * np * sizeof *grad);
+    double *nodal = malloc(c->n * dofs * sizeof *nodal), *grad = malloc(9 * np * sizeof *grad);
     int rc = nodal && grad ? 0 : tf_fail(ctx, "out of memory");
-    if (rc == 0 && tf_solver_solve(s, contact, unit_forces, 3, NULL, nodal) != 0) {
+    if (rc == 0 && tf_solver_solve(s, contact, (const double(*)[3])c->force, c->n, NULL, nodal) != 0) {
         rc = -1;
     }
-    for (size_t k = 0; k < 3 && rc == 0; ++k) {
+    for (size_t k = 0; k < c->n && rc == 0; ++k) {
         rc = tf_solver_field(ctx, s, nodal + k * dofs, x, np, u + 3 * np * k, grad);
     }
     free(nodal);
@@ -89,8 +113,8 @@ static int same_site(const tf_problem *p, const tf_solver *s, const tf_problem *
 
 /* Level `which` (0 coarser, 2 finer) at spacing factor f: its fields at x. */
 static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *p,
-                 const tf_solver *s, int contact, const double *x, size_t np, double *u,
-                 tf_discretisation *out, int which)
+                 const tf_solver *s, int contact, const self_cases *c, const double *x, size_t np,
+                 double *u, tf_discretisation *out, int which)
 {
     const tf_problem *q = re->make(re->user, ctx, f);
     if (q == NULL) {
@@ -99,7 +123,9 @@ static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *
     tf_solver *t = tf_solver_create(q, NULL, ctx);
     int rc = t != NULL ? 0 : tf_fail(ctx, "the cloud at %.4g times the spacing: %s", f, ctx->err);
     if (rc == 0 && !same_site(p, s, q, t, contact)) {
-        tf_fail(ctx, "the contact site moves with the cloud (a site given by node number)");
+        tf_fail(ctx, "the contact site moves with the cloud (no node of the cloud at %.4g times "
+                     "the spacing lies at its point; a box two nodes thick scales its thickness "
+                     "with the spacing)", f);
         rc = 1;
     }
     if (rc == 0) {
@@ -107,7 +133,10 @@ static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *
         out->self_nodes[which] = tf_solver_node_count(t);
         tf_info(ctx, "fit: discretisation: the cloud of spacing %.4g mm (%zu nodes) solved",
                 out->self_h[which], out->self_nodes[which]);
-        rc = unit_fields(ctx, t, contact, x, np, u);
+        rc = fields(ctx, t, contact, c, x, np, u);
+        if (rc != 0) {
+            tf_fail(ctx, "the cloud of spacing %.4g mm: %s", out->self_h[which], ctx->err);
+        }
     }
     tf_solver_destroy(t);
     re->release(re->user, q);
@@ -145,10 +174,11 @@ static double observed_order(double rho, double rc, double rf)
 }
 
 /* The references u(h) - E for the two estimates, and the comparisons. */
-static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact, const double *x,
-                    size_t np, double *const u[3], tf_discretisation *out)
+static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
+                    const self_cases *c, const double *x, size_t np, double *const u[3],
+                    tf_discretisation *out)
 {
-    const size_t n = 9 * np;
+    const size_t n = 3 * np * c->n;
     const double rc = out->self_h[0] / out->self_h[1], rf = out->self_h[1] / out->self_h[2];
     const double dc = norm(u[0], u[1], n), df = norm(u[1], u[2], n);
     out->self_diff[0] = dc;
@@ -176,11 +206,16 @@ static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
         ref[n + i] = u[1][i] - (u[0][i] - u[1][i]) / (pow(rc, q) - 1); /* the coarser pair */
     }
     tf_discretisation other = {0};
-    const double *fine[3] = {ref, ref + 3 * np, ref + 6 * np};
-    const double *coarse[3] = {ref + n, ref + n + 3 * np, ref + n + 6 * np};
-    int rc2 = tf_discretisation_compare(ctx, s, p, contact, unit_forces, 3, x, np, coarse, &other);
+    const double *fine[TF_SELF_MAX_CASES], *coarse[TF_SELF_MAX_CASES], *own[TF_SELF_MAX_CASES];
+    for (size_t k = 0; k < c->n; ++k) {
+        fine[k] = ref + 3 * np * k;
+        coarse[k] = ref + n + 3 * np * k;
+        own[k] = u[1] + 3 * np * k;
+    }
+    const double(*f)[3] = (const double(*)[3])c->force;
+    int rc2 = tf_discretisation_compare(ctx, s, p, contact, f, c->n, x, np, coarse, own, &other);
     if (rc2 == 0) {
-        rc2 = tf_discretisation_compare(ctx, s, p, contact, unit_forces, 3, x, np, fine, out);
+        rc2 = tf_discretisation_compare(ctx, s, p, contact, f, c->n, x, np, fine, own, out);
     }
     out->self_other_mm = other.max_mm;
     free(ref);
@@ -194,41 +229,50 @@ int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, cons
     snprintf(out->source, sizeof out->source, "self-measured");
     out->self = 1;
     out->self_order = out->self_order_used = out->self_other_mm = NAN;
-    if (!(tf_solver_caps_of(s) & TF_SOLVER_LINEAR)) {
-        tf_fail(ctx, "the self-measurement covers linear solves (the solver %s is not linear)",
-                tf_solver_name(s));
-        return 1;
-    }
+    out->self_relaxed = (tf_solver_caps_of(s) & TF_SOLVER_TIME_DEPENDENT) != 0;
     if (contact < 0 || (size_t)contact >= p->n_contacts) {
         return tf_fail(ctx, "a discretisation measurement needs a contact site");
     }
-    /* a box's node number names another point on another cloud (an
-     * organ's site is a surface vertex, the same on every cloud) */
-    if (p->contacts[contact].by_node && tf_problem_mesh(p) == NULL) {
-        tf_fail(ctx, "the contact site moves with the cloud (a site given by node number)");
+    /* the clouds are compared at the scene's points, between the other
+     * clouds' nodes */
+    if (!tf_solver_has_field(s)) {
+        tf_fail(ctx, "the solver %s gives no displacement field between its nodes, which the "
+                     "comparison of clouds needs", tf_solver_name(s));
         return 1;
     }
     const double t0 = tf_seconds();
+    self_cases c;
+    cases_of(s, p, &c);
+    out->cases = c.n;
     size_t np = 0;
     double *x = points_of(s, p, contact, &np), *u[3] = {NULL, NULL, NULL};
     int rc = x != NULL ? 0 : tf_fail(ctx, "out of memory");
     for (int k = 0; k < 3 && rc == 0; ++k) {
-        u[k] = malloc(9 * np * sizeof *u[k]);
+        u[k] = malloc(3 * np * c.n * sizeof *u[k]);
         rc = u[k] != NULL ? 0 : tf_fail(ctx, "out of memory");
     }
     out->self_h[1] = spacing_of(p);
     out->self_nodes[1] = tf_solver_node_count(s);
     if (rc == 0) {
-        rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, x, np, u[0], out, 0);
+        rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, &c, x, np, u[0], out, 0);
     }
     if (rc == 0) {
-        rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, x, np, u[2], out, 2);
+        rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, &c, x, np, u[2], out, 2);
+    }
+    /* a box keeps an axis whose node sites would not stay nodes (and an
+     * axis of two intervals rounds back to two at 4/3) */
+    if (rc == 0 && !(out->self_h[0] > out->self_h[1] * (1 + 1e-9) &&
+                     out->self_h[2] < out->self_h[1] * (1 - 1e-9))) {
+        tf_fail(ctx, "the clouds of spacing %.4g, %.4g and %.4g mm are not coarser and finer (a "
+                     "contact node that no other grid keeps)",
+                out->self_h[0], out->self_h[1], out->self_h[2]);
+        rc = 1;
+    }
+    if (rc == 0 && fields(ctx, s, contact, &c, x, np, u[1]) != 0) {
+        rc = tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
     }
     if (rc == 0) {
-        rc = unit_fields(ctx, s, contact, x, np, u[1]);
-    }
-    if (rc == 0) {
-        rc = estimate(ctx, s, p, contact, x, np, u, out);
+        rc = estimate(ctx, s, p, contact, &c, x, np, u, out);
     }
     out->self_seconds = tf_seconds() - t0;
     free(x);

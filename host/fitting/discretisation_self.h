@@ -4,10 +4,14 @@
  *
  * The scene is solved on three clouds: a coarser one, its own and a finer
  * one, the nodal spacing h times r, 1 and 1/r (r = 4/3; a box: every axis's
- * intervals, rounded; an organ: the interior spacing, its surface vertices
- * staying the file's; an absolute RBF d_c with the spacing).  Each cloud
- * takes the three unit forces at the contact site, and its displacement field
- * is evaluated at the scene's outputs and the contact point.  With the
+ * intervals, rounded so that a contact site given by node number stays a
+ * node at the same point; an organ: the interior spacing, its surface
+ * vertices staying the file's; an absolute RBF d_c with the spacing).  Each
+ * cloud takes the same load cases at the contact site — a linear solve the
+ * three unit forces, any other the six forces of the envelope's radius along
+ * +-x, +-y, +-z from its centre, solved from rest (Newton's load steps; a
+ * time-dependent solver's fully relaxed equilibrium) — and its displacement
+ * field is evaluated at the scene's outputs and the contact point.  With the
  * differences D_c = u(rh) - u(h) and D_f = u(h) - u(h/r) over all of those,
  * the error u(h) - u is taken as C h^p (Richardson): the observed order p
  * solves
@@ -21,14 +25,15 @@
  * observed, or one below first order (the differences do not shrink: on an
  * organ, the scatter between unstructured clouds can outweigh the trend),
  * first order is taken, which makes it larger.  E then takes the place of a reference's difference
- * (discretisation.h): a bound over the force envelope, linear in the force,
+ * (discretisation.h): for a linear solve a bound over the force envelope,
+ * linear in the force; otherwise the largest component over the six cases;
  * and the contact site's relative error.  The coarser pair's estimate,
  * D_c / (r_c^p - 1), bounded the same way, is stated beside it: the two
  * agree where the levels are in the asymptotic range, and their spread is
  * the estimate's own uncertainty.
  *
- * It measures linear solves of a contact site given by position (or a
- * surface vertex, the same on every cloud of an organ).
+ * A cloud whose solve fails (Newton past a limit point on the finer cloud)
+ * ends the measurement with the reason, and the header says "not measured".
  */
 #ifndef TF_DISCRETISATION_SELF_H
 #define TF_DISCRETISATION_SELF_H
@@ -42,6 +47,7 @@
 #define TF_SELF_FACTOR (4.0 / 3.0)
 #define TF_SELF_ORDER_MIN 1.0
 #define TF_SELF_ORDER_MAX 4.0
+#define TF_SELF_MAX_CASES 6
 
 /* The scene's problem with its nodal spacing times f, from whoever read
  * the scene (scene/scene_levels.h says how a box and an organ scale): make
@@ -54,10 +60,10 @@ typedef struct tf_rescale {
 
 /* Solves the coarser and finer clouds (one at a time) and s (problem p's
  * solver, the scene's own cloud), and fills out (source "self-measured",
- * the self_* fields).  Returns 0; 1 when the scene cannot be measured this
- * way, the reason in ctx->err (a nonlinear solve, a contact site by node
- * number, clouds that do not converge); -1 with a message when a cloud
- * fails to build or solve. */
+ * the self_* fields, cases).  Returns 0; 1 when the scene cannot be
+ * measured this way, the reason in ctx->err (a contact site that moves with
+ * the cloud, clouds that give the same outputs); -1 with a message when a
+ * cloud fails to build or solve. */
 int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
                            int contact, tf_discretisation *out);
 

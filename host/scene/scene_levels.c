@@ -5,29 +5,84 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
 
-/* A box's overrides for its nodal spacing times f. */
-static size_t box_sets(const tf_problem *b, double f, char sets[4][160])
+#define MAX_SETS 12
+
+/* Greatest common divisor. */
+static unsigned gcd(unsigned a, unsigned b)
+{
+    while (b != 0) {
+        const unsigned r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+
+/* The grid index of node index `node` on axis a (problem.h's numbering:
+ * x, then y, then the layers from the top). */
+static unsigned grid_index(const unsigned grid[3], uint32_t node, int a)
+{
+    const unsigned i = node % grid[0], j = node / grid[0] % grid[1], layer = node / (grid[0] * grid[1]);
+    return a == 0 ? i : a == 1 ? j : grid[2] - 1 - layer;
+}
+
+/* The intervals of an axis of n intervals times 1/f, rounded to a multiple
+ * of `step` (so that the nodes of the contact sites given by number stay
+ * nodes; step 1: to the nearest whole number). */
+static unsigned intervals(unsigned n, double f, unsigned step)
+{
+    const long m = (long)step * lround(n / f / step);
+    return m >= (long)step ? (unsigned)m : step;
+}
+
+/* A box's overrides for its nodal spacing times f; a contact site given by
+ * node number is renumbered to the node at the same point of the new grid
+ * (the point stays a node: its axis's intervals are rounded to a multiple
+ * that keeps it one). */
+static size_t box_sets(const tf_problem *b, double f, char sets[MAX_SETS][160])
 {
     const tf_box_geometry *box = &b->geometry.as.box;
     double hi[3];
-    unsigned grid[3], cells[3];
+    unsigned grid[3], cells[3], step[3] = {1, 1, 1};
+    for (size_t c = 0; c < b->n_contacts; ++c) {
+        for (int a = 0; a < 3 && b->contacts[c].by_node; ++a) {
+            const unsigned n = box->grid[a] - 1, i = grid_index(box->grid, b->contacts[c].node, a);
+            const unsigned q = n / gcd(i, n); /* the node sits at i/n = (i/g)/q of the axis */
+            step[a] = step[a] / gcd(step[a], q) * q;
+        }
+    }
     for (int a = 0; a < 3; ++a) {
         int thin = box->grid[a] == 2;
-        grid[a] = thin ? 2 : (unsigned)lround((box->grid[a] - 1) / f) + 1;
+        grid[a] = thin ? 2 : intervals(box->grid[a] - 1, f, step[a]) + 1;
         cells[a] = thin ? b->solver.cells[a] : (unsigned)fmax(1, lround(b->solver.cells[a] / f));
         hi[a] = thin ? box->min[a] + (box->max[a] - box->min[a]) * f : box->max[a];
     }
-    snprintf(sets[0], sizeof sets[0], "geometry.grid=%u,%u,%u", grid[0], grid[1], grid[2]);
-    snprintf(sets[1], sizeof sets[1], "geometry.box.max=%.17g,%.17g,%.17g", hi[0], hi[1], hi[2]);
-    snprintf(sets[2], sizeof sets[2], "solver.cells=%u,%u,%u", cells[0], cells[1], cells[2]);
-    return 3;
+    size_t n = 0;
+    snprintf(sets[n++], sizeof sets[0], "geometry.grid=%u,%u,%u", grid[0], grid[1], grid[2]);
+    snprintf(sets[n++], sizeof sets[0], "geometry.box.max=%.17g,%.17g,%.17g", hi[0], hi[1], hi[2]);
+    snprintf(sets[n++], sizeof sets[0], "solver.cells=%u,%u,%u", cells[0], cells[1], cells[2]);
+    for (size_t c = 0; c < b->n_contacts && n < MAX_SETS - 1; ++c) {
+        if (!b->contacts[c].by_node) {
+            continue;
+        }
+        unsigned at[3];
+        for (int a = 0; a < 3; ++a) {
+            const unsigned i = grid_index(box->grid, b->contacts[c].node, a), was = box->grid[a] - 1;
+            at[a] = box->grid[a] == 2 ? i : i * (grid[a] - 1) / was; /* exact: a multiple of step */
+        }
+        const unsigned long number =
+            at[0] + (unsigned long)grid[0] * at[1] + (unsigned long)grid[0] * grid[1] * (grid[2] - 1 - at[2]) + 1;
+        snprintf(sets[n++], sizeof sets[0], "contact.%zu.node=%lu", c, number);
+    }
+    return n;
 }
 
 /* An organ's: its interior spacing (and a local refinement's) times f; the
  * surface's vertices stay (they are the file's). */
-static size_t organ_sets(const tf_problem *b, double f, char sets[4][160])
+static size_t organ_sets(const tf_problem *b, double f, char sets[MAX_SETS][160])
 {
     const tf_mesh_options *m = &b->geometry.as.mesh->mesh;
     snprintf(sets[0], sizeof sets[0], "geometry.spacing=%.17g", m->spacing * f);
@@ -40,7 +95,7 @@ static size_t organ_sets(const tf_problem *b, double f, char sets[4][160])
 
 /* The overrides that turn the base scene into level k (grid: the spacing
  * times f). */
-static void level_sets(const tf_problem *b, tf_vary vary, unsigned k, double f, char sets[4][160],
+static void level_sets(const tf_problem *b, tf_vary vary, unsigned k, double f, char sets[MAX_SETS][160],
                        size_t *n)
 {
     if (vary == TF_VARY_GAUSS) {
@@ -63,7 +118,7 @@ static tf_scene *scene_at(tf_ctx *ctx, const char *path, const char *const *sets
     if (base == NULL) {
         return NULL;
     }
-    char extra[4][160];
+    char extra[MAX_SETS][160];
     size_t n_extra;
     level_sets(&base->problem, vary, k, f, extra, &n_extra);
     tf_scene_free(base);

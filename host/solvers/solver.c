@@ -173,6 +173,11 @@ int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const doub
     return s->ops->field(ctx, s, u, x, np, uh, grad);
 }
 
+int tf_solver_has_field(const tf_solver *s)
+{
+    return s->ops->field != NULL;
+}
+
 int tf_solver_patch_loads(tf_ctx *ctx, const tf_solver *s, const tf_patch *p, double *f)
 {
     if (s->ops->patch_loads == NULL) {

@@ -171,6 +171,9 @@ int tf_solver_reactions(const tf_solver *s, int contact, const double force[3], 
 int tf_solver_field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
                     double *uh, double *grad);
 
+/* 1 when tf_solver_field can evaluate this solver's field between nodes. */
+int tf_solver_has_field(const tf_solver *s);
+
 /* A patch's unit-force load vectors (see tf_solver_ops.patch_loads;
  * thread-safe with a context per thread).  Returns 0, or -1 (not available
  * from this solver, a failed evaluation). */

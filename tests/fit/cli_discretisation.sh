@@ -3,8 +3,9 @@
 # measures the solve's error itself on a coarser and a finer cloud
 # (fitting/discretisation_self.h) and the header states fit +
 # discretisation = total; on block48 the measurement is within a factor of 2
-# of the one against CalculiX; --no-discretisation skips it, and a scene it
-# cannot measure says why in the header.
+# of the one against CalculiX; a contact site by node number and a nonlinear
+# law are measured too; --no-discretisation skips it, and a scene it cannot
+# measure says why in the header.
 set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
@@ -36,15 +37,26 @@ grep -q "error of the solve against the physics: not measured (--no-discretisati
     bad "--no-discretisation: the header does not say 'not measured'"
 [ -z "$(define "$tmp/w/no.h" FORWARD_DISCRETISATION_MAX_MM)" ] || bad "--no-discretisation: a figure stated"
 
-# what cannot be measured this way is stated, and the fit goes on
-expect 0 "a contact site by node number" -- "$tool" -q fit tests/solver/block48_seed.yaml -o "$tmp/w/node.h"
-grep -q "not measured (the contact site moves with the cloud (a site given by node number)" "$tmp/w/node.h" ||
-    bad "a site by node number: the header does not say why it was not measured"
-TINY="--set geometry.grid=5,5,2 --set contact.0.node=13 --set fit.train=12 --set fit.heldout=3 --set fit.max_degree=1"
+# a contact site by node number: the clouds' grids keep its point a node
+expect 0 "a contact site by node number" -- "$tool" fit tests/solver/block48_seed.yaml -o "$tmp/w/node.h"
+says "the node's clouds" "fit: discretisation: the cloud of spacing"
+grep -q "(discretisation: self-measured: Richardson extrapolation over clouds of spacing .* (243, 363, 900 nodes), .* bound over the envelope (linear)" "$tmp/w/node.h" ||
+    bad "a site by node number: the header does not state the self-measurement over 243, 363 and 900 nodes"
+# a nonlinear law: the envelope's six extreme forces, Newton on every cloud
+TINY="--set geometry.grid=9,9,3 --set contact.0.node=41 --set fit.train=12 --set fit.heldout=3 --set fit.max_degree=1"
 expect 0 "a nonlinear law" -- "$tool" -q fit tests/solver/block48_seed.yaml $TINY \
     --set material.law=neo-hookean -o "$tmp/w/nl.h"
-grep -q "not measured (the self-measurement covers linear solves" "$tmp/w/nl.h" ||
-    bad "a nonlinear law: the header does not say why it was not measured"
+grep -q "(discretisation: self-measured: .* largest over the 6 forces of the envelope's radius along +-x, +-y, +-z; the coarser pair gives" "$tmp/w/nl.h" ||
+    bad "a nonlinear law: the header does not state the self-measurement at the envelope's six forces"
+grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/nl.h" ||
+    bad "a nonlinear law: the header states no total"
+# what cannot be measured this way is stated, and the fit goes on: node
+# (3, 3) of 11 x 11 x 3 stays a node of no other grid in x and y, and the
+# two intervals through the thickness round back to two at 4/3
+expect 0 "a contact node no coarser grid keeps" -- "$tool" -q fit tests/solver/block48_seed.yaml \
+    --set contact.0.node=37 -o "$tmp/w/kept.h"
+grep -q "not measured (the clouds of spacing .* are not coarser and finer (a contact node that no other grid keeps)" "$tmp/w/kept.h" ||
+    bad "a contact node no coarser grid keeps: the header does not say why it was not measured"
 expect 2 "--no-discretisation on a region" -- "$tool" -q fit coeffs/block48_region.yaml --no-discretisation \
     -o "$tmp/w/rg.h"
 says "--no-discretisation on a region" "not yet: --no-discretisation"

@@ -3,8 +3,8 @@
  * (tf_scene_scaled, scene_levels.h): a box's grid rounded to whole
  * intervals on every axis of more than two nodes, its background cells
  * with it; an organ's interior spacing scaled and its surface vertices
- * kept; an absolute d_c scaled, a relative one left alone; the user's
- * overrides applied first.
+ * kept; a contact node kept at its point; an absolute d_c scaled, a
+ * relative one left alone; the user's overrides applied first.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -67,6 +67,37 @@ static void absolute_d_c_scales(void **state)
     tf_scene_free(s);
 }
 
+/* A contact site by node number: renumbered to the node at the same point
+ * of the new grid, whose axes are rounded to keep that point a node. */
+static void contact_node_stays(void **state)
+{
+    (void)state;
+    /* tests/solver/block48_seed.yaml: 11 x 11 x 3, node 61 the top centre */
+    tf_scene *fine = scaled("tests/solver/block48_seed.yaml", NULL, 0, 0.75);
+    const tf_box_geometry *b = &fine->problem.geometry.as.box;
+    assert_int_equal(b->grid[0], 15); /* 10 / 0.75 = 13.3 -> 14 intervals, even: 5 / 10 stays */
+    assert_int_equal(b->grid[2], 4);
+    assert_true(fine->problem.contacts[0].by_node);
+    assert_int_equal(fine->problem.contacts[0].node, 7 + 15 * 7); /* (7, 7) on the top layer */
+    const double *x = fine->problem.cloud.xyz + 3 * (size_t)fine->problem.contacts[0].node;
+    assert_true(fabs(x[0] - 24) < 1e-12 && fabs(x[1] - 24) < 1e-12 && fabs(x[2] - 6) < 1e-12);
+    tf_scene_free(fine);
+    tf_scene *coarse = scaled("tests/solver/block48_seed.yaml", NULL, 0, 4.0 / 3.0);
+    assert_int_equal(coarse->problem.geometry.as.box.grid[0], 9); /* 7.5 -> 8, even */
+    assert_int_equal(coarse->problem.contacts[0].node, 4 + 9 * 4);
+    tf_scene_free(coarse);
+    /* node (3, 5) on top: 3 / 10 stays a node only on multiples of 10
+     * intervals in x; y still refines */
+    const char *sets[] = {"contact.0.node=59"};
+    fine = scaled("tests/solver/block48_seed.yaml", sets, 1, 0.75);
+    assert_int_equal(fine->problem.geometry.as.box.grid[0], 11);
+    assert_int_equal(fine->problem.geometry.as.box.grid[1], 15);
+    assert_int_equal(fine->problem.contacts[0].node, 3 + 11 * 7);
+    x = fine->problem.cloud.xyz + 3 * (size_t)fine->problem.contacts[0].node;
+    assert_true(fabs(x[0] - 14.4) < 1e-12 && fabs(x[1] - 24) < 1e-12 && fabs(x[2] - 6) < 1e-12);
+    tf_scene_free(fine);
+}
+
 static void organ_interior_spacing(void **state)
 {
     (void)state;
@@ -106,6 +137,7 @@ int main(void)
         cmocka_unit_test(box_grid_and_cells),
         cmocka_unit_test(user_sets_first),
         cmocka_unit_test(absolute_d_c_scales),
+        cmocka_unit_test(contact_node_stays),
         cmocka_unit_test(organ_interior_spacing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
