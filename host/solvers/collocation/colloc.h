@@ -123,6 +123,15 @@ int tf_colloc_forces(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, doub
  * 9 per particle, row major dx_a/dX_b) at displacement u. */
 void tf_colloc_deformation(tf_colloc *c, const double *u, double *F);
 
+/* The displacement field of particle displacements u (3n) between the
+ * particles, at np points x: at each point the nearest particle's value
+ * carried by its MLS gradient, u_i + G_i (x - X_i) (eqs 6-9: it reproduces
+ * a linear field exactly, and is u_i at the particle), uh (3 np); grad (9 np,
+ * row major du_a/dx_b) is G_i, or NULL.  Thread-safe.  Returns 0, or -1
+ * with a message (out of memory). */
+int tf_colloc_field(tf_ctx *ctx, const tf_colloc *c, const double *u, const double *x, size_t np,
+                    double *uh, double *grad);
+
 /* ---- rigid sphere ------------------------------------------------------- */
 
 typedef enum tf_colloc_drive {

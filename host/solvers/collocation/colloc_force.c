@@ -47,6 +47,8 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "materials/kinematics.h"
 
@@ -342,4 +344,51 @@ int tf_colloc_forces(tf_ctx *ctx, tf_colloc *c, const double *u, double dt, doub
                      double *energy)
 {
     return tf_colloc_eval(ctx, c, u, dt, f, energy);
+}
+
+/* The nearest particle to x (the lowest index of equally near ones). */
+static size_t nearest(const tf_colloc *c, const double x[3])
+{
+    size_t best = 0;
+    double best_r2 = INFINITY;
+    for (size_t i = 0; i < c->n; ++i) {
+        const double *xi = c->X + 3 * i;
+        const double d0 = x[0] - xi[0], d1 = x[1] - xi[1], d2 = x[2] - xi[2];
+        const double r2 = d0 * d0 + d1 * d1 + d2 * d2;
+        if (r2 < best_r2) {
+            best_r2 = r2;
+            best = i;
+        }
+    }
+    return best;
+}
+
+int tf_colloc_field(tf_ctx *ctx, const tf_colloc *c, const double *u, const double *x, size_t np,
+                    double *uh, double *grad)
+{
+    double *ue = NULL;
+    if (c->na > c->n) { /* the images' displacements, in a buffer of this call's own */
+        ue = malloc(3 * c->na * sizeof *ue);
+        if (ue == NULL) {
+            return tf_fail(ctx, "out of memory for the collocation field");
+        }
+        tf_colloc_ghost_fill(c, u, ue);
+        u = ue;
+    }
+    for (size_t j = 0; j < np; ++j) {
+        const double *xj = x + 3 * j;
+        const size_t i = nearest(c, xj);
+        const double *xi = c->X + 3 * i, *ui = u + 3 * i;
+        const double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+        double G[9], q[3];
+        gradient(c, i, u, G, q);
+        for (int a = 0; a < 3; ++a) {
+            uh[3 * j + (size_t)a] = ui[a] + G[3 * a] * d[0] + G[3 * a + 1] * d[1] + G[3 * a + 2] * d[2];
+        }
+        if (grad != NULL) {
+            memcpy(grad + 9 * j, G, sizeof G);
+        }
+    }
+    free(ue);
+    return 0;
 }

@@ -253,6 +253,12 @@ static int reactions(const tf_solver *s, int contact, const double force[3], con
     return 0;
 }
 
+static int field(tf_ctx *ctx, const tf_solver *s, const double *u, const double *x, size_t np,
+                 double *uh, double *grad)
+{
+    return tf_colloc_field(ctx, of_const(s)->c, u, x, np, uh, grad);
+}
+
 static size_t node_count(const tf_solver *s) { return s->problem->cloud.n; }
 static const double *coords(const tf_solver *s) { return s->problem->cloud.xyz; }
 
@@ -276,7 +282,7 @@ const tf_solver_ops tf_colloc_ops = {
     .solve = solve,
     .history = history,
     .reactions = reactions,
-    .field = NULL,
+    .field = field,
     .node_count = node_count,
     .coords = coords,
     .report = report,

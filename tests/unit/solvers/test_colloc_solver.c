@@ -3,7 +3,7 @@
  * interface ("mls-collocation", solvers/collocation/colloc_solver.h) on
  * block48: equilibrium of reactions and load, a suddenly applied force's
  * overshoot and its damped end at the static answer, the same bits on 1
- * and 2 threads, the scene's collocation keys.
+ * and 2 threads, the field between particles, the scene's collocation keys.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -142,6 +142,44 @@ static void same_bits_on_one_and_two_threads(void **state)
 }
 
 /* solver.collocation keys: a bad one is refused, naming it. */
+/* The field between particles (the self-measured discretisation compares
+ * clouds through it): the particle's own value at a particle, and a linear
+ * displacement reproduced anywhere, gradient included (the MLS gradient's
+ * first-order consistency, seed 004 eq 9). */
+static void field_between_particles(void **state)
+{
+    (void)state;
+    run *r = open_block48(1, NULL);
+    const tf_cloud *cl = &r->scene->problem.cloud;
+    const double A[9] = {1e-3, -2e-3, 5e-4, 3e-3, 1e-3, -1e-3, -5e-4, 2e-3, 4e-3}, b[3] = {0.1, -0.2, 0.05};
+    double *u = malloc(r->n3 * sizeof *u);
+    for (size_t i = 0; i < cl->n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            const double *x = cl->xyz + 3 * i;
+            u[3 * i + (size_t)a] = b[a] + A[3 * a] * x[0] + A[3 * a + 1] * x[1] + A[3 * a + 2] * x[2];
+        }
+    }
+    /* two particles, then points between them (away from the clamped faces) */
+    const double x[5][3] = {{24, 24, 6}, {4.8, 9.6, 0}, {21.7, 25.9, 4.4}, {30.1, 14.2, 1.3},
+                            {9.9, 38.3, 5.2}};
+    double uh[15], grad[45];
+    assert_int_equal(tf_solver_field(&r->ctx, r->solver, u, &x[0][0], 5, uh, grad), 0);
+    for (int a = 0; a < 3; ++a) {
+        assert_true(uh[a] == u[3 * NODE61 + (size_t)a]); /* exactly the particle's */
+    }
+    for (size_t j = 0; j < 5; ++j) {
+        for (int a = 0; a < 3; ++a) {
+            const double want = b[a] + A[3 * a] * x[j][0] + A[3 * a + 1] * x[j][1] + A[3 * a + 2] * x[j][2];
+            assert_close(uh[3 * j + (size_t)a], want, 1e-12);
+            for (int c = 0; c < 3; ++c) {
+                assert_close(grad[9 * j + 3 * (size_t)a + (size_t)c], A[3 * a + c], 1e-12);
+            }
+        }
+    }
+    free(u);
+    done(r);
+}
+
 static void bad_keys_are_named(void **state)
 {
     (void)state;
@@ -165,6 +203,7 @@ int main(void)
         cmocka_unit_test(static_case_balances),
         cmocka_unit_test(history_overshoots_then_settles),
         cmocka_unit_test(same_bits_on_one_and_two_threads),
+        cmocka_unit_test(field_between_particles),
         cmocka_unit_test(bad_keys_are_named),
     };
     return cmocka_run_group_tests_name("colloc_solver", tests, NULL, NULL);
