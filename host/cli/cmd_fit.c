@@ -212,7 +212,6 @@ static int region_options(tf_ctx *ctx, const fit_args *a, const tf_scene *sc,
                       : !isnan(a->max_error_mm)      ? "--max-error-mm"
                       : a->reference != NULL         ? "--reference"
                       : !isnan(a->disc_rel[0])       ? "--discretisation-rel"
-                      : a->no_disc                   ? "--no-discretisation"
                       : a->report != NULL            ? "--report"
                       : p->servo_hz > 0              ? "fit.servo_hz"
                                                      : NULL;
@@ -373,12 +372,15 @@ static int emit(tf_ctx *ctx, const fit_args *a, const tf_problem *s, const tf_fi
     snprintf(con->name, sizeof con->name, "%s_%s", base, tf_family_suffix(tf_family_of(con->family)));
     if (a->measured) {
         tf_fit_physics_state(&a->phys, &s->envelope, fwd, con);
+        if (region) {
+            tf_fit_physics_at_centre(fwd, con);
+        }
     } else if (!isnan(a->disc_rel[0])) {
         if (tf_fit_physics_assume(ctx, a->disc_rel, &s->envelope, fwd, con) != 0) {
             return TF_EXIT_USAGE;
         }
     } else if (a->unmeasured[0] != '\0') {
-        tf_fit_physics_unmeasured(a->unmeasured, fwd, con);
+        tf_fit_physics_unmeasured(a->unmeasured, !region, fwd, con);
     }
     uint32_t crc = 0;
     if (tf_file_crc32(a->scene, &crc) != 0) {
@@ -552,7 +554,9 @@ static int fit(tf_ctx *ctx, fit_args *a, const tf_problem *p, tf_solver *solver,
         a->measured = 1;
     } else if (a->no_disc) {
         snprintf(a->unmeasured, sizeof a->unmeasured, "--no-discretisation");
-    } else if (isnan(a->disc_rel[0]) && plan->family->region == NULL) {
+    } else if (isnan(a->disc_rel[0])) {
+        /* a region's contact carries the probe's patch at the region's
+         * centre (scene_contact_region.c): measured at that site */
         if (tf_fit_physics_self(ctx, a->scene, &a->sets, solver, p, plan->contact, &a->phys) == 0) {
             a->measured = 1;
         } else {

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "base/log.h"
 #include "fitting/discretisation_self.h"
@@ -133,11 +134,21 @@ int tf_fit_physics_assume(tf_ctx *ctx, const double rel[2], const tf_envelope *e
     return 0;
 }
 
-void tf_fit_physics_unmeasured(const char *why, tf_model *fwd, tf_model *con)
+void tf_fit_physics_at_centre(tf_model *surface, tf_model *law)
+{
+    tf_model *m[2] = {surface, law};
+    for (int k = 0; k < 2; ++k) {
+        const size_t n = strlen(m[k]->discretisation_note);
+        snprintf(m[k]->discretisation_note + n, sizeof m[k]->discretisation_note - n,
+                 "; at one site of the region, its centre, under the probe's patch");
+    }
+}
+
+void tf_fit_physics_unmeasured(const char *why, int hint, tf_model *fwd, tf_model *con)
 {
     tf_model *m[2] = {fwd, con};
     for (int k = 0; k < 2; ++k) {
-        snprintf(m[k]->discretisation_note, sizeof m[k]->discretisation_note,
-                 "not measured (%s; tissuefit fit --reference gives a finer solution)", why);
+        snprintf(m[k]->discretisation_note, sizeof m[k]->discretisation_note, "not measured (%s%s)",
+                 why, hint ? "; tissuefit fit --reference gives a finer solution" : "");
     }
 }

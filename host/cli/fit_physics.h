@@ -32,7 +32,12 @@ void tf_fit_physics_state(const tf_discretisation *d, const tf_envelope *env, tf
 int tf_fit_physics_assume(tf_ctx *ctx, const double rel[2], const tf_envelope *env, tf_model *fwd,
                           tf_model *con);
 
-/* Not measured, and why (the header and report say so). */
-void tf_fit_physics_unmeasured(const char *why, tf_model *fwd, tf_model *con);
+/* A contact region's models measured at the probe's patch at the region's
+ * centre (the site its contact entry carries): their notes say so. */
+void tf_fit_physics_at_centre(tf_model *surface, tf_model *law);
+
+/* Not measured, and why (the header and report say so); hint: add that
+ * --reference gives a finer solution (a contact region takes none yet). */
+void tf_fit_physics_unmeasured(const char *why, int hint, tf_model *fwd, tf_model *con);
 
 #endif /* TF_FIT_PHYSICS_H */

@@ -112,11 +112,6 @@ static void notes(const tf_region_result *res, const tf_region_level *lv,
                                         : "the smallest surface error tried",
              tg->max_rank, lv->surface_model.n_near, lv->surface_model.near_radius, tg->near,
              100 * lv->coupling, lv->pairs);
-    /* the header says why the physics line is missing: --reference is
-     * refused for a region, so its usual hint would mislead */
-    static const char why[] = "not yet measured for a contact region";
-    snprintf(law->discretisation_note, sizeof law->discretisation_note, "%s", why);
-    snprintf(surf->discretisation_note, sizeof surf->discretisation_note, "%s", why);
 }
 
 int tf_region_models(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,

@@ -57,7 +57,12 @@ expect 0 "a contact node no coarser grid keeps" -- "$tool" -q fit tests/solver/b
     --set contact.0.node=37 -o "$tmp/w/kept.h"
 grep -q "not measured (the clouds of spacing .* are not coarser and finer (a contact node that no other grid keeps)" "$tmp/w/kept.h" ||
     bad "a contact node no coarser grid keeps: the header does not say why it was not measured"
-expect 2 "--no-discretisation on a region" -- "$tool" -q fit coeffs/block48_region.yaml --no-discretisation \
-    -o "$tmp/w/rg.h"
-says "--no-discretisation on a region" "not yet: --no-discretisation"
+# a contact region: measured at the probe's patch at the region's centre;
+# the shipped header (check-coeffs regenerates it byte for byte) states it
+for m in SURFACE LAW; do
+    grep -q "^#define TFIT_BLOCK48_REGION_${m}_TOTAL_MAX_" coeffs/block48_region.h ||
+        bad "block48_region.h: the region's $m states no total"
+done
+[ "$(grep -c "; at one site of the region, its centre, under the probe's patch)" coeffs/block48_region.h)" = 2 ] ||
+    bad "block48_region.h does not say where the region's discretisation was measured"
 finish discretisation
