@@ -56,10 +56,11 @@ nothing_written "refused fits"
 
 # A region's header: its law and surface, named so, with the datasheet lines.
 expect 0 "fit, a contact region" -- "$tool" -q fit coeffs/block48_region.yaml \
-    --set contact.0.region.rect=19.2,24,19.2,24 -o "$tmp/w/rg.h"
+    --set contact.0.region.rect=19.2,24,19.2,24 --no-discretisation -o "$tmp/w/rg.h"
 for want in "tfit_rg_law: region P=2" "tfit_rg_surface: region_surface p=1" \
     "held out at the 9 cell centres (sites never fitted)" "target met at spacing" \
-    "#define TFIT_RG_LAW_HELDOUT_MAX_N" "#define TFIT_RG_SURFACE_HELDOUT_MAX_MM"; do
+    "#define TFIT_RG_LAW_HELDOUT_MAX_N" "#define TFIT_RG_SURFACE_HELDOUT_MAX_MM" \
+    "error of the solve against the physics: not measured (--no-discretisation)"; do
     grep -qF "$want" "$tmp/w/rg.h" || bad "rg.h lacks '$want'"
 done
 grep -q "_forward\|_contact" "$tmp/w/rg.h" && bad "rg.h has a point model"
