@@ -118,13 +118,16 @@ static int read_index(tf_ctx *ctx, const char *index, ref_case *cases, size_t *n
 /* diff = solve - reference at the case's points (3 np). */
 static int case_error(tf_ctx *ctx, tf_solver *s, int contact, const ref_case *c, double *diff)
 {
+    if (c->solved != NULL) { /* solved already: no nodal buffers, no solve */
+        for (size_t i = 0; i < 3 * c->np; ++i) {
+            diff[i] = c->solved[i] - c->u[i];
+        }
+        return 0;
+    }
     const size_t dofs = 3 * tf_solver_node_count(s);
     double *u = malloc(dofs * sizeof *u), *grad = malloc(9 * c->np * sizeof *grad);
     int rc = -1;
-    if (c->solved != NULL) {
-        memcpy(diff, c->solved, 3 * c->np * sizeof *diff);
-        rc = 0;
-    } else if (u == NULL || grad == NULL) {
+    if (u == NULL || grad == NULL) {
         tf_fail(ctx, "out of memory for the reference comparison");
     } else if (tf_solver_solve(s, contact, (const double(*)[3])c->force, 1, NULL, u) != 0) {
         tf_fail(ctx, "the reference case (%g, %g, %g) N did not solve", c->force[0], c->force[1],
