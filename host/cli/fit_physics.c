@@ -44,9 +44,10 @@ int tf_fit_physics_self(tf_ctx *ctx, const char *path, const tf_sets *sets, tf_s
     if (rc == 0) {
         tf_info(ctx, "fit: discretisation (self-measured, observed order %.3g, taken as %.3g): "
                      "max %.3g mm over the envelope (the coarser pair: %.3g mm), contact site "
-                     "%.3g %%; %.1f s",
+                     "%.3g %%; %.1f s%s",
                 out->self_order, out->self_order_used, out->max_mm, out->self_other_mm, 100 * out->site_rel,
-                out->self_seconds);
+                out->self_seconds, out->self_shifted ? " (the scene's cloud, h/r and h/r^2: the "
+                                                       "coarser cloud failed)" : "");
     }
     return rc == 0 ? 0 : 1;
 }
@@ -70,6 +71,15 @@ static void self_note(const tf_discretisation *d, char *buf, size_t n)
                            ? "largest over the 6 forces of the envelope's radius along +-x, +-y, "
                              "+-z (the fully relaxed response)"
                            : "largest over the 6 forces of the envelope's radius along +-x, +-y, +-z";
+    if (d->self_shifted) { /* the scene's cloud is the coarsest of the three */
+        snprintf(buf, n,
+                 "self-measured: Richardson extrapolation over clouds of spacing %.4g (this "
+                 "one), %.4g, %.4g mm (%zu, %zu, %zu nodes; the coarser cloud: %s), "
+                 "%s, at %zu points, %s; this cloud's pair gives %.3g mm",
+                 d->self_h[0], d->self_h[1], d->self_h[2], d->self_nodes[0], d->self_nodes[1],
+                 d->self_nodes[2], d->self_shifted_why, order, d->points, over, d->self_other_mm);
+        return;
+    }
     snprintf(buf, n,
              "self-measured: Richardson extrapolation over clouds of spacing %.4g, %.4g (this "
              "one), %.4g mm (%zu, %zu, %zu nodes), %s, at %zu points, %s; the coarser pair "

@@ -49,6 +49,9 @@ typedef struct tf_discretisation {
     size_t self_nodes[3];
     double self_seconds;  /* the two extra clouds' setup and solves */
     int self_relaxed;     /* a time-dependent solver: its fully relaxed response measured */
+    int self_shifted;     /* the coarser cloud failed: the clouds are the scene's, h/r and
+                           * h/r^2, and self_h, self_nodes, self_diff follow that order */
+    char self_shifted_why[80]; /* why the coarser cloud failed, in short (the log has it all) */
 } tf_discretisation;
 
 /* Solves the reference's cases with solver s at contact site `contact` of

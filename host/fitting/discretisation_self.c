@@ -111,6 +111,15 @@ static int same_site(const tf_problem *p, const tf_solver *s, const tf_problem *
            hypot(hypot(xa[0] - xb[0], xa[1] - xb[1]), xa[2] - xb[2]) < 1e-9;
 }
 
+/* Why the coarser level failed, in short, for the header (the log has the
+ * whole message). */
+static void coarser_why(tf_discretisation *out, int which, const char *why)
+{
+    if (which == 0) {
+        snprintf(out->self_shifted_why, sizeof out->self_shifted_why, "%s", why);
+    }
+}
+
 /* Level `which` (0 coarser, 2 finer) at spacing factor f: its fields at x. */
 static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *p,
                  const tf_solver *s, int contact, const self_cases *c, const double *x, size_t np,
@@ -118,14 +127,19 @@ static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *
 {
     const tf_problem *q = re->make(re->user, ctx, f);
     if (q == NULL) {
+        coarser_why(out, which, "it could not be built");
         return tf_fail(ctx, "the cloud at %.4g times the spacing: %s", f, ctx->err);
     }
     tf_solver *t = tf_solver_create(q, NULL, ctx);
     int rc = t != NULL ? 0 : tf_fail(ctx, "the cloud at %.4g times the spacing: %s", f, ctx->err);
+    if (rc != 0) {
+        coarser_why(out, which, "its solver could not be set up");
+    }
     if (rc == 0 && !same_site(p, s, q, t, contact)) {
         tf_fail(ctx, "the contact site moves with the cloud (no node of the cloud at %.4g times "
                      "the spacing lies at its point; a box two nodes thick scales its thickness "
                      "with the spacing)", f);
+        coarser_why(out, which, "the contact site is not a node of it");
         rc = 1;
     }
     if (rc == 0) {
@@ -136,6 +150,9 @@ static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *
         rc = fields(ctx, t, contact, c, x, np, u);
         if (rc != 0) {
             tf_fail(ctx, "the cloud of spacing %.4g mm: %s", out->self_h[which], ctx->err);
+            char why[64];
+            snprintf(why, sizeof why, "its solve at spacing %.4g mm failed", out->self_h[which]);
+            coarser_why(out, which, why);
         }
     }
     tf_solver_destroy(t);
@@ -176,7 +193,7 @@ static double observed_order(double rho, double rc, double rf)
 /* The references u(h) - E for the two estimates, and the comparisons. */
 static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
                     const self_cases *c, const double *x, size_t np, double *const u[3],
-                    tf_discretisation *out)
+                    const double *own_u, tf_discretisation *out)
 {
     const size_t n = 3 * np * c->n;
     const double rc = out->self_h[0] / out->self_h[1], rf = out->self_h[1] / out->self_h[2];
@@ -210,7 +227,7 @@ static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
     for (size_t k = 0; k < c->n; ++k) {
         fine[k] = ref + 3 * np * k;
         coarse[k] = ref + n + 3 * np * k;
-        own[k] = u[1] + 3 * np * k;
+        own[k] = own_u + 3 * np * k;
     }
     const double(*f)[3] = (const double(*)[3])c->force;
     int rc2 = tf_discretisation_compare(ctx, s, p, contact, f, c->n, x, np, coarse, own, &other);
@@ -220,6 +237,35 @@ static int estimate(tf_ctx *ctx, tf_solver *s, const tf_problem *p, int contact,
     out->self_other_mm = other.max_mm;
     free(ref);
     return rc2;
+}
+
+/* Whether the three clouds' spacings fall strictly. */
+static int falling(const tf_discretisation *out)
+{
+    return out->self_h[0] > out->self_h[1] * (1 + 1e-9) &&
+           out->self_h[2] < out->self_h[1] * (1 - 1e-9);
+}
+
+/* The clouds h/r and h/r^2 after the coarser one failed: the scene's own
+ * cloud becomes the coarsest of the three (u[0]), solved by s. */
+static int finer_levels(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
+                        int contact, const self_cases *c, const double *x, size_t np,
+                        double *const u[3], tf_discretisation *out)
+{
+    out->self_h[0] = out->self_h[1];
+    out->self_nodes[0] = out->self_nodes[1];
+    tf_info(ctx, "fit: discretisation: the coarser cloud failed (%s); the scene's cloud, h/%.4g "
+                 "and h/%.4g instead", out->self_shifted_why, TF_SELF_FACTOR,
+            TF_SELF_FACTOR * TF_SELF_FACTOR);
+    if (fields(ctx, s, contact, c, x, np, u[0]) != 0) {
+        return tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
+    }
+    int rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, c, x, np, u[1], out, 1);
+    if (rc == 0) {
+        rc = level(ctx, re, 1 / (TF_SELF_FACTOR * TF_SELF_FACTOR), p, s, contact, c, x, np, u[2],
+                   out, 2);
+    }
+    return rc;
 }
 
 int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
@@ -255,24 +301,42 @@ int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, cons
     out->self_nodes[1] = tf_solver_node_count(s);
     if (rc == 0) {
         rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, &c, x, np, u[0], out, 0);
+        /* a box keeps an axis whose node sites would not stay nodes (and an
+         * axis of two intervals rounds back to two at 4/3) */
+        int same = rc == 0 && !(out->self_h[0] > out->self_h[1] * (1 + 1e-9));
+        if (same) {
+            rc = tf_fail(ctx, "the cloud of spacing %.4g mm is not coarser than the scene's "
+                              "%.4g mm", out->self_h[0], out->self_h[1]);
+        }
+        /* A coarse cloud may fail where the scene's solves (Newton past a
+         * limit point the coarser discretisation reaches first, a node site
+         * no coarser grid keeps): the scene's cloud, h/r and h/r^2.  The
+         * header gets the short reason, the log the whole message. */
+        if (rc != 0) {
+            out->self_shifted = 1;
+            if (same) {
+                coarser_why(out, 0, "no coarser grid keeps the contact node");
+            }
+            tf_info(ctx, "fit: discretisation: the coarser cloud: %s", ctx->err);
+            rc = finer_levels(ctx, re, s, p, contact, &c, x, np, u, out);
+        } else {
+            rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, &c, x, np, u[2], out, 2);
+        }
     }
-    if (rc == 0) {
-        rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, &c, x, np, u[2], out, 2);
-    }
-    /* a box keeps an axis whose node sites would not stay nodes (and an
-     * axis of two intervals rounds back to two at 4/3) */
-    if (rc == 0 && !(out->self_h[0] > out->self_h[1] * (1 + 1e-9) &&
-                     out->self_h[2] < out->self_h[1] * (1 - 1e-9))) {
+    if (rc == 0 && !falling(out)) {
         tf_fail(ctx, "the clouds of spacing %.4g, %.4g and %.4g mm are not coarser and finer (a "
                      "contact node that no other grid keeps)",
                 out->self_h[0], out->self_h[1], out->self_h[2]);
         rc = 1;
     }
-    if (rc == 0 && fields(ctx, s, contact, &c, x, np, u[1]) != 0) {
+    if (rc == 0 && !out->self_shifted && fields(ctx, s, contact, &c, x, np, u[1]) != 0) {
         rc = tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
     }
     if (rc == 0) {
-        rc = estimate(ctx, s, p, contact, &c, x, np, u, out);
+        rc = estimate(ctx, s, p, contact, &c, x, np, u, u[out->self_shifted ? 0 : 1], out);
+    }
+    if (rc != 0 && out->self_shifted) {
+        tf_fail(ctx, "%s (after the coarser cloud failed: %s)", ctx->err, out->self_shifted_why);
     }
     out->self_seconds = tf_seconds() - t0;
     free(x);

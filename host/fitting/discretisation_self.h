@@ -32,8 +32,13 @@
  * agree where the levels are in the asymptotic range, and their spread is
  * the estimate's own uncertainty.
  *
- * A cloud whose solve fails (Newton past a limit point on the finer cloud)
- * ends the measurement with the reason, and the header says "not measured".
+ * When the coarser cloud fails (its solve, a contact node no coarser grid
+ * keeps, its set-up), the scene's cloud, h/r and h/r^2 are solved instead:
+ * the same extrapolation gives the error of the h/r cloud, and the scene's
+ * is its difference from the extrapolated solution (self_shifted, and the
+ * short reason in self_shifted_why).  A finer cloud whose solve fails
+ * (Newton past a limit point) ends the measurement with the reason, and the
+ * header says "not measured".
  */
 #ifndef TF_DISCRETISATION_SELF_H
 #define TF_DISCRETISATION_SELF_H
@@ -63,7 +68,7 @@ typedef struct tf_rescale {
  * the self_* fields, cases).  Returns 0; 1 when the scene cannot be
  * measured this way, the reason in ctx->err (a contact site that moves with
  * the cloud, clouds that give the same outputs); -1 with a message when a
- * cloud fails to build or solve. */
+ * finer cloud fails to build or solve. */
 int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
                            int contact, tf_discretisation *out);
 

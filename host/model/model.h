@@ -39,7 +39,7 @@ typedef struct tf_model {
     /* The solve's own error against a reference of the physics
      * (fitting/discretisation.h), output units; NAN: not measured. */
     double discretisation_max;
-    char discretisation_note[512]; /* what it was measured against */
+    char discretisation_note[768]; /* what it was measured against */
     /* What else the fit states of the model, as lines of the header's banner
      * ("": nothing; a contact region's sites, spacing and why, rank, ...). */
     char fit_note[768];

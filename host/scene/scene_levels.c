@@ -57,7 +57,13 @@ static size_t box_sets(const tf_problem *b, double f, char sets[MAX_SETS][160])
     for (int a = 0; a < 3; ++a) {
         int thin = box->grid[a] == 2;
         grid[a] = thin ? 2 : intervals(box->grid[a] - 1, f, step[a]) + 1;
-        cells[a] = thin ? b->solver.cells[a] : (unsigned)fmax(1, lround(b->solver.cells[a] / f));
+        /* the cells keep their ratio to the node intervals (one per interval
+         * by default): B-bar's volumetric average is per cell, and a cloud
+         * with fewer cells than intervals is far softer (block48's 15 x 15 x 4
+         * grid with 13 x 13 x 3 cells: 34 % at the centre) */
+        cells[a] = thin ? b->solver.cells[a]
+                        : (unsigned)fmax(1, lround((double)b->solver.cells[a] * (grid[a] - 1) /
+                                                   (box->grid[a] - 1)));
         hi[a] = thin ? box->min[a] + (box->max[a] - box->min[a]) * f : box->max[a];
     }
     size_t n = 0;

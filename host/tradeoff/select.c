@@ -172,7 +172,7 @@ int tf_select(tf_ctx *ctx, const tf_sweep *sw, const tf_mcu *mcu, double budget_
     char physics[160] = "";
     if (!isnan(disc_mm) && !isnan(max_error_mm) && disc_mm >= max_error_mm) {
         snprintf(physics, sizeof physics,
-                 "; the solve itself is off by %.3g mm against the physics (--reference)",
+                 "; the solve itself is off by %.3g mm against the physics",
                  disc_mm);
     }
     return tf_fail(ctx,

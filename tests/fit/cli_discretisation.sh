@@ -50,13 +50,23 @@ grep -q "(discretisation: self-measured: .* largest over the 6 forces of the env
     bad "a nonlinear law: the header does not state the self-measurement at the envelope's six forces"
 grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/nl.h" ||
     bad "a nonlinear law: the header states no total"
-# what cannot be measured this way is stated, and the fit goes on: node
-# (3, 3) of 11 x 11 x 3 stays a node of no other grid in x and y, and the
-# two intervals through the thickness round back to two at 4/3
+# a coarser cloud that fails: the scene's cloud and two finer ones instead.
+# Node (3, 3) of 11 x 11 x 3 stays a node only on multiples of 10
+# intervals in x and y: no coarser grid keeps it, h/r refines the thickness
+# only, h/r^2 every axis (20 intervals)
 expect 0 "a contact node no coarser grid keeps" -- "$tool" -q fit tests/solver/block48_seed.yaml \
     --set contact.0.node=37 -o "$tmp/w/kept.h"
-grep -q "not measured (the clouds of spacing .* are not coarser and finer (a contact node that no other grid keeps)" "$tmp/w/kept.h" ||
-    bad "a contact node no coarser grid keeps: the header does not say why it was not measured"
+grep -q "(discretisation: self-measured: Richardson extrapolation over clouds of spacing 4.104 (this one), 3.585, 2.052 mm (363, 484, 2205 nodes; the coarser cloud: no coarser grid keeps the contact node)" "$tmp/w/kept.h" ||
+    bad "a contact node no coarser grid keeps: the header does not state the finer clouds it was measured on"
+grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/kept.h" ||
+    bad "a contact node no coarser grid keeps: the header states no total"
+# what cannot be measured this way is stated, and the fit goes on: two
+# nodes through the thickness scale the thickness with the spacing, so
+# that the contact node leaves the top of every other cloud
+expect 0 "a contact node no other cloud keeps" -- "$tool" -q fit tests/solver/block48_seed.yaml \
+    --set contact.0.node=37 --set geometry.grid=11,11,2 -o "$tmp/w/kept2.h"
+grep -q "not measured (the contact site moves with the cloud .* (after the coarser cloud failed: the contact site is not a node of it)" "$tmp/w/kept2.h" ||
+    bad "a contact node no other cloud keeps: the header does not say why it was not measured"
 # a contact region: measured at the probe's patch at the region's centre;
 # the shipped header (check-coeffs regenerates it byte for byte) states it
 for m in SURFACE LAW; do

@@ -77,6 +77,10 @@ static void contact_node_stays(void **state)
     const tf_box_geometry *b = &fine->problem.geometry.as.box;
     assert_int_equal(b->grid[0], 15); /* 10 / 0.75 = 13.3 -> 14 intervals, even: 5 / 10 stays */
     assert_int_equal(b->grid[2], 4);
+    /* the cells follow the rounded intervals, one per interval as in the
+     * scene (13.3 cells would have been 13: a softer cloud) */
+    assert_int_equal(fine->problem.solver.cells[0], 14);
+    assert_int_equal(fine->problem.solver.cells[2], 3);
     assert_true(fine->problem.contacts[0].by_node);
     assert_int_equal(fine->problem.contacts[0].node, 7 + 15 * 7); /* (7, 7) on the top layer */
     const double *x = fine->problem.cloud.xyz + 3 * (size_t)fine->problem.contacts[0].node;
@@ -92,6 +96,8 @@ static void contact_node_stays(void **state)
     fine = scaled("tests/solver/block48_seed.yaml", sets, 1, 0.75);
     assert_int_equal(fine->problem.geometry.as.box.grid[0], 11);
     assert_int_equal(fine->problem.geometry.as.box.grid[1], 15);
+    assert_int_equal(fine->problem.solver.cells[0], 10);
+    assert_int_equal(fine->problem.solver.cells[1], 14);
     assert_int_equal(fine->problem.contacts[0].node, 3 + 11 * 7);
     x = fine->problem.cloud.xyz + 3 * (size_t)fine->problem.contacts[0].node;
     assert_true(fabs(x[0] - 14.4) < 1e-12 && fabs(x[1] - 24) < 1e-12 && fabs(x[2] - 6) < 1e-12);
