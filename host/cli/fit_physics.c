@@ -66,11 +66,19 @@ static void self_note(const tf_discretisation *d, char *buf, size_t n)
     } else {
         snprintf(order, sizeof order, "observed order %.3g", d->self_order);
     }
-    const char *over = d->enveloped ? "bound over the envelope (linear)"
-                       : d->self_relaxed
-                           ? "largest over the 6 forces of the envelope's radius along +-x, +-y, "
-                             "+-z (the fully relaxed response)"
-                           : "largest over the 6 forces of the envelope's radius along +-x, +-y, +-z";
+    char over[192];
+    if (d->enveloped) {
+        snprintf(over, sizeof over, "bound over the envelope (linear)");
+    } else {
+        char of[64] = "the envelope's radius"; /* less when a cloud failed at the radius */
+        if (d->reach < 1 - 1e-9) {
+            snprintf(of, sizeof of, "%.3g %% of the envelope's radius", 100 * d->reach);
+        }
+        snprintf(over, sizeof over, "largest over the 6 forces of %s along +-x, +-y, +-z%s%s", of,
+                 d->self_relaxed ? " (the fully relaxed response)" : "",
+                 d->reach < 1 - 1e-9 ? " (a cloud's solve failed at the radius; not measured "
+                                       "beyond)" : "");
+    }
     if (d->self_shifted) { /* the scene's cloud is the coarsest of the three */
         snprintf(buf, n,
                  "self-measured: Richardson extrapolation over clouds of spacing %.4g (this "

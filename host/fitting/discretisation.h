@@ -52,6 +52,8 @@ typedef struct tf_discretisation {
     int self_shifted;     /* the coarser cloud failed: the clouds are the scene's, h/r and
                            * h/r^2, and self_h, self_nodes, self_diff follow that order */
     char self_shifted_why[80]; /* why the coarser cloud failed, in short (the log has it all) */
+    int self_solve_failed; /* the last attempt failed in a cloud's solve (Newton): the
+                            * measurement is tried again with smaller forces */
 } tf_discretisation;
 
 /* Solves the reference's cases with solver s at contact site `contact` of

@@ -64,7 +64,7 @@ typedef struct self_cases {
     double force[TF_SELF_MAX_CASES][3];
 } self_cases;
 
-static void cases_of(const tf_solver *s, const tf_problem *p, self_cases *c)
+static void cases_of(const tf_solver *s, const tf_problem *p, double reach, self_cases *c)
 {
     if (tf_solver_caps_of(s) & TF_SOLVER_LINEAR) {
         c->n = 3;
@@ -74,7 +74,7 @@ static void cases_of(const tf_solver *s, const tf_problem *p, self_cases *c)
     c->n = 6;
     for (size_t k = 0; k < 6; ++k) {
         memcpy(c->force[k], p->envelope.centre, sizeof c->force[k]);
-        c->force[k][k / 2] += (k % 2 ? -1 : 1) * p->envelope.radius;
+        c->force[k][k / 2] += (k % 2 ? -1 : 1) * reach * p->envelope.radius;
     }
 }
 
@@ -149,6 +149,7 @@ static int level(tf_ctx *ctx, const tf_rescale *re, double f, const tf_problem *
                 out->self_h[which], out->self_nodes[which]);
         rc = fields(ctx, t, contact, c, x, np, u);
         if (rc != 0) {
+            out->self_solve_failed = 1;
             tf_fail(ctx, "the cloud of spacing %.4g mm: %s", out->self_h[which], ctx->err);
             char why[64];
             snprintf(why, sizeof why, "its solve at spacing %.4g mm failed", out->self_h[which]);
@@ -258,6 +259,7 @@ static int finer_levels(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const t
                  "and h/%.4g instead", out->self_shifted_why, TF_SELF_FACTOR,
             TF_SELF_FACTOR * TF_SELF_FACTOR);
     if (fields(ctx, s, contact, c, x, np, u[0]) != 0) {
+        out->self_solve_failed = 1;
         return tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
     }
     int rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, c, x, np, u[1], out, 1);
@@ -267,6 +269,59 @@ static int finer_levels(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const t
     }
     return rc;
 }
+
+/* One measurement with the cases at `reach` of the envelope's radius: the
+ * coarser, the scene's and the finer cloud, or the scene's and two finer
+ * ones when the coarser fails. */
+static int measure(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
+                   int contact, const self_cases *c, const double *x, size_t np,
+                   double *const u[3], tf_discretisation *out)
+{
+    int rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, c, x, np, u[0], out, 0);
+    /* a box keeps an axis whose node sites would not stay nodes (and an
+     * axis of two intervals rounds back to two at 4/3) */
+    int same = rc == 0 && !(out->self_h[0] > out->self_h[1] * (1 + 1e-9));
+    if (same) {
+        rc = tf_fail(ctx, "the cloud of spacing %.4g mm is not coarser than the scene's %.4g mm",
+                     out->self_h[0], out->self_h[1]);
+    }
+    /* A coarse cloud may fail where the scene's solves (Newton past a
+     * limit point the coarser discretisation reaches first, a node site
+     * no coarser grid keeps): the scene's cloud, h/r and h/r^2.  The
+     * header gets the short reason, the log the whole message. */
+    if (rc != 0) {
+        out->self_shifted = 1; /* (a failed solve stays flagged: smaller forces may serve) */
+        if (same) {
+            coarser_why(out, 0, "no coarser grid keeps the contact node");
+        }
+        tf_info(ctx, "fit: discretisation: the coarser cloud: %s", ctx->err);
+        rc = finer_levels(ctx, re, s, p, contact, c, x, np, u, out);
+    } else {
+        rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, c, x, np, u[2], out, 2);
+    }
+    if (rc == 0 && !falling(out)) {
+        tf_fail(ctx, "the clouds of spacing %.4g, %.4g and %.4g mm are not coarser and finer (a "
+                     "contact node that no other grid keeps)",
+                out->self_h[0], out->self_h[1], out->self_h[2]);
+        rc = 1;
+    }
+    if (rc == 0 && !out->self_shifted && fields(ctx, s, contact, c, x, np, u[1]) != 0) {
+        out->self_solve_failed = 1;
+        rc = tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
+    }
+    if (rc == 0) {
+        rc = estimate(ctx, s, p, contact, c, x, np, u, u[out->self_shifted ? 0 : 1], out);
+    }
+    if (rc != 0 && out->self_shifted) {
+        tf_fail(ctx, "%s (after the coarser cloud failed: %s)", ctx->err, out->self_shifted_why);
+    }
+    return rc;
+}
+
+/* The fractions of the envelope's radius a nonlinear measurement tries, in
+ * turn, while a cloud's solve fails (a finer cloud can lose stability
+ * before the envelope where the scene's own does not). */
+static const double reaches[] = {1.0, 0.75, 0.5};
 
 int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
                            int contact, tf_discretisation *out)
@@ -287,56 +342,44 @@ int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, cons
         return 1;
     }
     const double t0 = tf_seconds();
-    self_cases c;
-    cases_of(s, p, &c);
-    out->cases = c.n;
+    const int linear = (tf_solver_caps_of(s) & TF_SOLVER_LINEAR) != 0;
+    const size_t n_cases = linear ? 3 : 6;
     size_t np = 0;
     double *x = points_of(s, p, contact, &np), *u[3] = {NULL, NULL, NULL};
     int rc = x != NULL ? 0 : tf_fail(ctx, "out of memory");
     for (int k = 0; k < 3 && rc == 0; ++k) {
-        u[k] = malloc(3 * np * c.n * sizeof *u[k]);
+        u[k] = malloc(3 * np * n_cases * sizeof *u[k]);
         rc = u[k] != NULL ? 0 : tf_fail(ctx, "out of memory");
     }
-    out->self_h[1] = spacing_of(p);
-    out->self_nodes[1] = tf_solver_node_count(s);
-    if (rc == 0) {
-        rc = level(ctx, re, TF_SELF_FACTOR, p, s, contact, &c, x, np, u[0], out, 0);
-        /* a box keeps an axis whose node sites would not stay nodes (and an
-         * axis of two intervals rounds back to two at 4/3) */
-        int same = rc == 0 && !(out->self_h[0] > out->self_h[1] * (1 + 1e-9));
-        if (same) {
-            rc = tf_fail(ctx, "the cloud of spacing %.4g mm is not coarser than the scene's "
-                              "%.4g mm", out->self_h[0], out->self_h[1]);
+    char first[TF_CTX_ERR_MAX] = "";
+    for (size_t k = 0; rc == 0 && k < sizeof reaches / sizeof reaches[0]; ++k) {
+        self_cases c;
+        cases_of(s, p, reaches[k], &c);
+        const int self_relaxed = out->self_relaxed;
+        memset(out->self_h, 0, sizeof out->self_h);
+        out->self_shifted = out->self_solve_failed = 0;
+        out->self_shifted_why[0] = '\0';
+        out->self_relaxed = self_relaxed;
+        out->cases = c.n;
+        out->self_h[1] = spacing_of(p);
+        out->self_nodes[1] = tf_solver_node_count(s);
+        if (k > 0) {
+            tf_info(ctx, "fit: discretisation: again with forces of %.3g of the envelope's radius",
+                    reaches[k]);
         }
-        /* A coarse cloud may fail where the scene's solves (Newton past a
-         * limit point the coarser discretisation reaches first, a node site
-         * no coarser grid keeps): the scene's cloud, h/r and h/r^2.  The
-         * header gets the short reason, the log the whole message. */
-        if (rc != 0) {
-            out->self_shifted = 1;
-            if (same) {
-                coarser_why(out, 0, "no coarser grid keeps the contact node");
-            }
-            tf_info(ctx, "fit: discretisation: the coarser cloud: %s", ctx->err);
-            rc = finer_levels(ctx, re, s, p, contact, &c, x, np, u, out);
-        } else {
-            rc = level(ctx, re, 1 / TF_SELF_FACTOR, p, s, contact, &c, x, np, u[2], out, 2);
+        rc = measure(ctx, re, s, p, contact, &c, x, np, u, out);
+        if (rc == 0 || linear || !out->self_solve_failed) {
+            break;
         }
-    }
-    if (rc == 0 && !falling(out)) {
-        tf_fail(ctx, "the clouds of spacing %.4g, %.4g and %.4g mm are not coarser and finer (a "
-                     "contact node that no other grid keeps)",
-                out->self_h[0], out->self_h[1], out->self_h[2]);
-        rc = 1;
-    }
-    if (rc == 0 && !out->self_shifted && fields(ctx, s, contact, &c, x, np, u[1]) != 0) {
-        rc = tf_fail(ctx, "the scene's own cloud: %s", ctx->err);
-    }
-    if (rc == 0) {
-        rc = estimate(ctx, s, p, contact, &c, x, np, u, u[out->self_shifted ? 0 : 1], out);
-    }
-    if (rc != 0 && out->self_shifted) {
-        tf_fail(ctx, "%s (after the coarser cloud failed: %s)", ctx->err, out->self_shifted_why);
+        if (k == 0) {
+            snprintf(first, sizeof first, "%s", ctx->err);
+        }
+        tf_info(ctx, "fit: discretisation: at %.3g of the envelope's radius: %s", reaches[k],
+                ctx->err);
+        rc = 0;
+        if (k + 1 == sizeof reaches / sizeof reaches[0]) {
+            rc = tf_fail(ctx, "%s (and at the envelope's radius: %.600s)", ctx->err, first);
+        }
     }
     out->self_seconds = tf_seconds() - t0;
     free(x);

@@ -36,9 +36,11 @@
  * keeps, its set-up), the scene's cloud, h/r and h/r^2 are solved instead:
  * the same extrapolation gives the error of the h/r cloud, and the scene's
  * is its difference from the extrapolated solution (self_shifted, and the
- * short reason in self_shifted_why).  A finer cloud whose solve fails
- * (Newton past a limit point) ends the measurement with the reason, and the
- * header says "not measured".
+ * short reason in self_shifted_why).  When a cloud's solve fails (Newton
+ * past a limit point, a body that inverts) with the six forces of a
+ * nonlinear solve at the envelope's radius, they are tried again at 0.75
+ * and 0.5 of it (the figure's reach, discretisation.h); failing there too,
+ * the measurement ends with the reason, and the header says "not measured".
  */
 #ifndef TF_DISCRETISATION_SELF_H
 #define TF_DISCRETISATION_SELF_H

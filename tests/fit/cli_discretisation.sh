@@ -4,8 +4,10 @@
 # (fitting/discretisation_self.h) and the header states fit +
 # discretisation = total; on block48 the measurement is within a factor of 2
 # of the one against CalculiX; a contact site by node number and a nonlinear
-# law are measured too; --no-discretisation skips it, and a scene it cannot
-# measure says why in the header.
+# law are measured too, a cloud that fails at the envelope's radius at a
+# smaller one, a coarser cloud that fails gives way to two finer ones;
+# --no-discretisation skips it, and a scene it cannot measure says why in
+# the header.
 set -u
 tool=$1
 . "$(dirname "$0")/../cli/expect.sh"
@@ -50,6 +52,15 @@ grep -q "(discretisation: self-measured: .* largest over the 6 forces of the env
     bad "a nonlinear law: the header does not state the self-measurement at the envelope's six forces"
 grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/nl.h" ||
     bad "a nonlinear law: the header states no total"
+# a cloud that cannot reach the envelope: St Venant-Kirchhoff's limit point
+# in compression comes at a smaller force on a finer (softer) cloud; the six
+# forces are tried again at 0.75 of the radius, and the header says so
+expect 0 "a cloud that fails at the envelope's radius" -- "$tool" -q fit tests/solver/block48_seed.yaml \
+    $TINY --set material.law=svk --set envelope.radius=2.5 --set solver.newton.cuts=2 -o "$tmp/w/reach.h"
+grep -q "largest over the 6 forces of 75 % of the envelope's radius along +-x, +-y, +-z (a cloud's solve failed at the radius; not measured beyond)" "$tmp/w/reach.h" ||
+    bad "a cloud that fails at the envelope's radius: the header does not state the smaller forces"
+grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/reach.h" ||
+    bad "a cloud that fails at the envelope's radius: the header states no total"
 # a coarser cloud that fails: the scene's cloud and two finer ones instead.
 # Node (3, 3) of 11 x 11 x 3 stays a node only on multiples of 10
 # intervals in x and y: no coarser grid keeps it, h/r refines the thickness
