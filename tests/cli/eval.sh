@@ -121,7 +121,7 @@ says "not a generated header" "tfit.h: declares no tfit_model: not a generated h
 expect 2 "eval, model not in the header" -- "$tool" eval coeffs/block48.h --model liver_forward \
     -i "$tmp/ok.csv" -o "$w/o.csv"
 says "model not in the header" "no model liver_forward (it has block48_forward, block48_contact"
-expect 2 "eval, a Q31 form the header lacks" -- "$tool" eval coeffs/block48_dyn.h --q31 \
+expect 2 "eval, a Q31 form the header lacks" -- "$tool" eval tests/resonant/block48_dyn.h --q31 \
     -i "$tmp/ok.csv" -o "$w/o.csv"
 says "Q31 form" "no Q31 model block48_dyn_forward_q31"
 printf 'fx,fy,fz\n0.1,0.2,-0.3\n\n0.1,2x,0\n' >"$tmp/cell.csv"
