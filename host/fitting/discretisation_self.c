@@ -323,14 +323,22 @@ static int measure(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_pro
  * before the envelope where the scene's own does not). */
 static const double reaches[] = {1.0, 0.75, 0.5};
 
-int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
-                           int contact, tf_discretisation *out)
+/* out as a measurement starts: nothing of an earlier attempt left. */
+static void start(tf_discretisation *out, const tf_solver *s, const tf_problem *p)
 {
     memset(out, 0, sizeof *out);
     snprintf(out->source, sizeof out->source, "self-measured");
     out->self = 1;
     out->self_order = out->self_order_used = out->self_other_mm = NAN;
     out->self_relaxed = (tf_solver_caps_of(s) & TF_SOLVER_TIME_DEPENDENT) != 0;
+    out->self_h[1] = spacing_of(p);
+    out->self_nodes[1] = tf_solver_node_count(s);
+}
+
+int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,
+                           int contact, tf_discretisation *out)
+{
+    start(out, s, p);
     if (contact < 0 || (size_t)contact >= p->n_contacts) {
         return tf_fail(ctx, "a discretisation measurement needs a contact site");
     }
@@ -355,14 +363,8 @@ int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, cons
     for (size_t k = 0; rc == 0 && k < sizeof reaches / sizeof reaches[0]; ++k) {
         self_cases c;
         cases_of(s, p, reaches[k], &c);
-        const int self_relaxed = out->self_relaxed;
-        memset(out->self_h, 0, sizeof out->self_h);
-        out->self_shifted = out->self_solve_failed = 0;
-        out->self_shifted_why[0] = '\0';
-        out->self_relaxed = self_relaxed;
+        start(out, s, p);
         out->cases = c.n;
-        out->self_h[1] = spacing_of(p);
-        out->self_nodes[1] = tf_solver_node_count(s);
         if (k > 0) {
             tf_info(ctx, "fit: discretisation: again with forces of %.3g of the envelope's radius",
                     reaches[k]);
