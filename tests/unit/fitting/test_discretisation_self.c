@@ -83,15 +83,15 @@ static void coarser_refused_finer_clouds_measure(void **state)
     assert_true(shifted.self_h[1] == own.self_h[2]); /* both h/r */
     assert_true(shifted.self_h[2] < shifted.self_h[1]);
     assert_true(shifted.self_nodes[2] > shifted.self_nodes[1]);
-    /* the same cloud's error measured from below and from around it:
-     * of the same size (3.29 and 2.77 mm; this grid is too coarse for an
-     * order to show, so both take first order), and the figure is the
-     * scene's cloud's, which differs from the next cloud's by the change
-     * between them */
+    /* the same cloud's error measured around it (h r, h, h/r) and from it
+     * and two finer clouds (h, h/r, h/r^2): of the same size (0.238 and
+     * 0.159 mm), and the change from the scene's cloud to h/r is the same
+     * two solves' in both */
     assert_true(isfinite(shifted.max_mm) && shifted.max_mm > 0);
     const double ratio = shifted.max_mm / own.max_mm;
-    printf("three clouds around the scene's: %.4g mm; the scene's and two finer: %.4g mm "
-           "(ratio %.3g)\n", own.max_mm, shifted.max_mm, ratio);
+    printf("three clouds around the scene's: %.4g mm (order %.3g); the scene's and two finer: "
+           "%.4g mm (order %.3g; ratio %.3g)\n",
+           own.max_mm, own.self_order, shifted.max_mm, shifted.self_order, ratio);
     assert_true(ratio >= 0.5 && ratio <= 2);
     assert_true(shifted.self_diff[0] == own.self_diff[1]); /* h -> h/r, solved twice */
 }
