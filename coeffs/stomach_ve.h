@@ -25,7 +25,7 @@
  *       held-out cases are force histories stepped from rest: largest error 0.0124 % of the largest displacement
  *       held-out error over 6 cases: max 0.000309 mm, rms 2.02e-05 mm
  *       error against the physics: fit 0.000309 + discretisation 0.281 = total <= 0.282 mm
- *         (discretisation: self-measured: Richardson extrapolation over clouds of spacing 16, 12 (this one), 9 mm (5040, 5170, 5422 nodes), observed order 1.55, at 137 points, largest over the 6 forces of the envelope's radius along +-x, +-y, +-z (the fully relaxed response); the coarser pair gives 0.236 mm)
+ *         (discretisation: self-measured: Richardson extrapolation over clouds of spacing 16, 12 (this one), 9 mm (5040, 5170, 5422 nodes), observed order 1.55, at 137 points, largest over the 6 forces of the envelope's radius along +-x, +-y, +-z (the fully relaxed response); the file's skin on every cloud: the surface's part of the error is not in this figure; the coarser pair gives 0.236 mm)
  *   tfit_stomach_ve_contact: contact p=2, 1 output point, contact displacement [mm] -> contact force [N]
  *       47 add, 66 mul, 0 div per evaluation; 176 table bytes
  *       593 instructions; Cortex-M4F <= 853 cycles (5.08 us at 168 MHz), Cortex-M7 ~636 (1.32 us at 480 MHz)

@@ -66,7 +66,7 @@ static void self_note(const tf_discretisation *d, char *buf, size_t n)
     } else {
         snprintf(order, sizeof order, "observed order %.3g", d->self_order);
     }
-    char over[192];
+    char over[320];
     if (d->enveloped) {
         snprintf(over, sizeof over, "bound over the envelope (linear)");
     } else {
@@ -78,6 +78,11 @@ static void self_note(const tf_discretisation *d, char *buf, size_t n)
                  d->self_relaxed ? " (the fully relaxed response)" : "",
                  d->reach < 1 - 1e-9 ? " (a cloud's solve failed at the radius; not measured "
                                        "beyond)" : "");
+    }
+    if (d->self_skin_kept) { /* the clouds refine the interior only */
+        const size_t len = strlen(over);
+        snprintf(over + len, sizeof over - len, "; the file's skin on every cloud: the surface's "
+                 "part of the error is not in this figure");
     }
     if (d->self_shifted) { /* the scene's cloud is the coarsest of the three */
         snprintf(buf, n,

@@ -54,6 +54,8 @@ typedef struct tf_discretisation {
     char self_shifted_why[80]; /* why the coarser cloud failed, in short (the log has it all) */
     int self_solve_failed; /* the last attempt failed in a cloud's solve (Newton): the
                             * measurement is tried again with smaller forces */
+    int self_skin_kept;   /* an organ whose skin is the file's on every cloud: the
+                           * surface's part of the error is not in the figure */
 } tf_discretisation;
 
 /* Solves the reference's cases with solver s at contact site `contact` of

@@ -333,6 +333,8 @@ static void start(tf_discretisation *out, const tf_solver *s, const tf_problem *
     out->self_relaxed = (tf_solver_caps_of(s) & TF_SOLVER_TIME_DEPENDENT) != 0;
     out->self_h[1] = spacing_of(p);
     out->self_nodes[1] = tf_solver_node_count(s);
+    const tf_mesh_geometry *m = tf_problem_mesh(p);
+    out->self_skin_kept = m != NULL && !m->mesh.refine_skin;
 }
 
 int tf_discretisation_self(tf_ctx *ctx, const tf_rescale *re, tf_solver *s, const tf_problem *p,

@@ -10,7 +10,8 @@
 #     replacing the one of the same name (as a user edits the file);
 #  6. the solve's command: the CSV, the VTK file and a complete PNG;
 #  7. the fit's command: a header that compiles, with its output map, and
-#     the report.
+#     the report; its self-measured discretisation says the file's skin
+#     was not refined.
 # Step 5b's spacing (6 mm) is not applied: it only refines the solve.
 set -eu
 tool=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -61,5 +62,9 @@ printf '#include "liver.h"\nconst void *v = tfit_liver_vertex;\n' |
     ${CC:-gcc} -std=c11 -Wall -Werror -I"$inc" -I"$w" -fsyntax-only -x c - ||
     { echo "step 7's liver.h does not compile with its output map"; exit 1; }
 [ -s "$w/reports/liver.md" ] || { echo "step 7 wrote no report"; exit 1; }
+# the skin is the file's (no refine_skin): the header says what the
+# self-measured discretisation leaves out
+grep -q "(discretisation: self-measured: .*; the file's skin on every cloud: the surface's part of the error is not in this figure" "$w/liver.h" ||
+    { echo "step 7's liver.h does not say that its discretisation leaves the file's skin out"; exit 1; }
 n=$(grep -c '^ *- sphere\|^ *- name\|^outputs' "$w/liver.yaml")
 echo "ok: the new-organ walkthrough's steps 1 to 7 as written (docs/scene-format.md): rest.png, the solve's CSV, VTK and PNG, liver.h with its output map and report ($n entries edited in)"
