@@ -48,6 +48,11 @@ int tf_fit_physics_self(tf_ctx *ctx, const char *path, const tf_sets *sets, tf_s
                 out->self_order, out->self_order_used, out->max_mm, out->self_other_mm, 100 * out->site_rel,
                 out->self_seconds, out->self_shifted ? " (the scene's cloud, h/r and h/r^2: the "
                                                        "coarser cloud failed)" : "");
+        if (!out->enveloped && out->reach < 1 - 1e-9) { /* shown under -q too */
+            tf_warn(ctx, "fit: the discretisation is measured up to %.3g %% of the envelope's "
+                         "radius only (a cloud's solve failed at the radius; the header says so)",
+                    100 * out->reach);
+        }
     }
     return rc == 0 ? 0 : 1;
 }

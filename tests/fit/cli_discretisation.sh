@@ -59,6 +59,7 @@ expect 0 "a cloud that fails at the envelope's radius" -- "$tool" -q fit tests/s
     $TINY --set material.law=svk --set envelope.radius=2.5 --set solver.newton.cuts=2 -o "$tmp/w/reach.h"
 grep -q "largest over the 6 forces of 75 % of the envelope's radius along +-x, +-y, +-z (a cloud's solve failed at the radius; not measured beyond)" "$tmp/w/reach.h" ||
     bad "a cloud that fails at the envelope's radius: the header does not state the smaller forces"
+says "a cloud that fails at the envelope's radius" "warning: fit: the discretisation is measured up to 75 % of the envelope's radius only"
 grep -q "^ \*       error against the physics: fit .* + discretisation .* = total <= .* mm" "$tmp/w/reach.h" ||
     bad "a cloud that fails at the envelope's radius: the header states no total"
 # a coarser cloud that fails: the scene's cloud and two finer ones instead.
