@@ -244,10 +244,11 @@ static void unpack(tf_cases *c, tf_fitdata *const *sets, const double *kept)
     }
 }
 
-/* The case list keeps nodal values only (kept_dofs), so a solver that is
- * not affine cannot yet give the field at an output point or a contact
- * point that lies between nodes (solvers/probe.h); refused rather than
- * silently read at the nearest node.  Returns 0 when every site is a node. */
+/* 1 when every output and the contact site is a node: a case then keeps
+ * those nodes' values (kept_dofs).  Else it keeps every DOF and the sites
+ * are read from the solver's field there (probe_kept), as the affine path
+ * reads them; a solver without a field between nodes is refused, naming
+ * the point, rather than read at the nearest node.  Returns 1, 0, or -1. */
 static int sites_on_nodes(const tf_cases *c)
 {
     const tf_problem *p = c->problem;
@@ -264,20 +265,47 @@ static int sites_on_nodes(const tf_cases *c)
         at = k->at;
     }
     if (at == NULL) {
+        return 1;
+    }
+    if (tf_solver_has_field(c->solver)) {
         return 0;
     }
     return tf_fail(c->solver->ctx,
-                   "fit: the %s solver's response is not affine, and its load cases keep nodal "
-                   "values only: the point (%g, %g, %g) mm lies between nodes; choose a grid "
-                   "with a node there",
+                   "fit: the %s solver's response is not affine and it has no displacement "
+                   "field between nodes: the point (%g, %g, %g) mm lies between nodes; choose "
+                   "a grid with a node there",
                    tf_solver_name(c->solver), at[0], at[1], at[2]);
+}
+
+/* Every case's whole solution (n_all values) in kept, compacted in place to
+ * the outputs' and the contact site's displacements (stride values). */
+static int probe_kept(tf_cases *c, size_t n, size_t n_all, double *kept)
+{
+    const size_t stride = 3 * c->problem->outputs.n_nodes + 3;
+    double *row = malloc(stride * sizeof *row);
+    if (row == NULL) {
+        return tf_fail(c->solver->ctx, "out of memory for %zu output points", stride / 3);
+    }
+    int rc = 0;
+    for (size_t i = 0; rc == 0 && i < n; ++i) {
+        const double *u = kept + i * n_all;
+        rc = tf_solver_probe_outputs(c->solver->ctx, c->solver, c->problem, u, row);
+        if (rc == 0) {
+            rc = tf_solver_probe_contact(c->solver->ctx, c->solver, c->problem, c->contact, u,
+                                         row + stride - 3);
+        }
+        memcpy(kept + i * stride, row, stride * sizeof *row);
+    }
+    free(row);
+    return rc;
 }
 
 /* A solver that is not affine: every case, one by one, as one list with
  * the anchored continuation graph, by the plan's runner. */
 static int solve_all(tf_cases *c, const tf_case_runner *runner)
 {
-    if (sites_on_nodes(c) != 0) {
+    const int on_nodes = sites_on_nodes(c);
+    if (on_nodes < 0) {
         return -1;
     }
     tf_fitdata *const sets[5] = {&c->train, &c->axis[0], &c->axis[1], &c->axis[2], &c->heldout};
@@ -299,10 +327,11 @@ static int solve_all(tf_cases *c, const tf_case_runner *runner)
         seg[s] = (tf_case_segment){names[s], n};
         n += s < 5 ? sets[s]->n_cases : TABLE_CASES;
     }
+    const size_t n_keep = on_nodes ? rows + 3 : 3 * tf_solver_node_count(c->solver);
     double (*forces)[3] = malloc(n * sizeof *forces);
     long *from = malloc(n * sizeof *from);
-    size_t *dofs = malloc((rows + 3) * sizeof *dofs);
-    double *kept = malloc(n * (rows + 3) * sizeof *kept);
+    size_t *dofs = malloc(n_keep * sizeof *dofs);
+    double *kept = malloc(n * n_keep * sizeof *kept);
     c->table = keep(c, malloc(TABLE_CASES * rows * sizeof *c->table));
     int rc = -1;
     if (forces && from && dofs && kept && c->table) {
@@ -318,16 +347,25 @@ static int solve_all(tf_cases *c, const tf_case_runner *runner)
         }
         size_t anchors = tf_case_graph_anchors(n);
         tf_case_graph_anchored((const double(*)[3])forces, n, anchors, from);
-        kept_dofs(c, dofs);
+        if (on_nodes) {
+            kept_dofs(c, dofs);
+        } else {
+            for (size_t j = 0; j < n_keep; ++j) {
+                dofs[j] = j;
+            }
+        }
         const tf_case_list list = {.contact = c->contact, .n = n,
                                    .force = (const double(*)[3])forces, .from = from,
-                                   .n_keep = rows + 3, .keep = dofs, .n_seg = 6, .seg = seg};
+                                   .n_keep = n_keep, .keep = dofs, .n_seg = 6, .seg = seg};
         tf_info(c->solver->ctx,
                 "fit: the %s solver's response is not affine in the contact force: solving all "
                 "%zu load cases one by one (%s), each from rest or from the nearest of %zu "
                 "anchor cases",
                 tf_solver_name(c->solver), n, runner != NULL ? runner->name : "here", anchors);
         rc = tf_case_run(runner, c->solver, &list, kept);
+        if (rc == 0 && !on_nodes) {
+            rc = probe_kept(c, n, n_keep, kept);
+        }
         if (rc == 0) {
             unpack(c, sets, kept);
             c->solves += n;

@@ -150,9 +150,11 @@ static void superposed_only_when_the_solver_is_affine(void **state)
 }
 
 /* Sites between nodes: the affine path evaluates the field there; the
- * case list of a solver that is not affine keeps nodal values only and must
- * refuse them, naming the point, rather than read the nearest node. */
-static void sites_between_nodes_need_an_affine_solver(void **state)
+ * case list of a solver that is not affine keeps every DOF and reads the
+ * same field, so the two agree to rounding at every point; a solver with no
+ * field between nodes must refuse them, naming the point, rather than read
+ * the nearest node. */
+static void sites_between_nodes_read_from_the_field(void **state)
 {
     (void)state;
     tf_ctx ctx;
@@ -163,24 +165,39 @@ static void sites_between_nodes_need_an_affine_solver(void **state)
     if (s == NULL) {
         fail_msg("%s", ctx.err);
     }
-    tf_solver_ops plain = tf_galerkin_ops;
+    tf_solver_ops plain = tf_galerkin_ops, blind;
     plain.name = "galerkin-without-caps";
     plain.caps = no_caps;
+    blind = plain;
+    blind.name = "galerkin-without-field";
+    blind.field = NULL;
     tf_solver *affine = tf_solver_create(&s->problem, NULL, &ctx);
     tf_solver *other = tf_solver_create_as(&plain, &s->problem, NULL, &ctx);
+    tf_solver *nofield = tf_solver_create_as(&blind, &s->problem, NULL, &ctx);
     assert_non_null(affine);
     assert_non_null(other);
+    assert_non_null(nofield);
     tf_fit_plan plan;
     tf_fit_plan_defaults(&plan);
     plan.n_train = N_TRAIN;
     plan.n_heldout = N_HELD;
-    tf_cases a, o;
+    tf_cases a, o, b;
     assert_int_equal(tf_cases_build(&s->problem, affine, &plan, &a), 0);
-    assert_int_equal(tf_cases_build(&s->problem, other, &plan, &o), -1);
+    assert_int_equal(tf_cases_build(&s->problem, other, &plan, &o), 0);
+    const size_t rows = 3 * s->problem.outputs.n_nodes;
+    const double scale = max_abs(a.train.u, N_TRAIN * rows);
+    assert_true(scale > 0);
+    assert_true(max_diff(a.train.u, o.train.u, N_TRAIN * rows) < 1e-13 * scale);
+    assert_true(max_diff(a.heldout.u, o.heldout.u, N_HELD * rows) < 1e-13 * scale);
+    assert_true(max_diff(&a.train.contact[0][0], &o.train.contact[0][0], 3 * N_TRAIN) <
+                1e-13 * scale);
+    assert_int_equal(tf_cases_build(&s->problem, nofield, &plan, &b), -1);
     assert_non_null(strstr(ctx.err, "lies between nodes"));
     tf_cases_free(&a);
+    tf_cases_free(&o);
     tf_solver_destroy(affine);
     tf_solver_destroy(other);
+    tf_solver_destroy(nofield);
     tf_scene_free(s);
 }
 
@@ -235,7 +252,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(superposed_only_when_the_solver_is_affine),
-        cmocka_unit_test(sites_between_nodes_need_an_affine_solver),
+        cmocka_unit_test(sites_between_nodes_read_from_the_field),
         cmocka_unit_test(contact_by_position_is_named_by_its_output),
     };
     return cmocka_run_group_tests_name("cases", tests, NULL, NULL);
