@@ -72,6 +72,35 @@ static int linear_compliance(tf_ctx *ctx, const tf_fitdata *d, const size_t *idx
     return rc;
 }
 
+/* The device projects a displacement outside its map's envelope onto it
+ * (tfit_input.c: |W (delta - x0)| <= 1).  For a tissue whose response is
+ * affine the training displacements fill that unit ball exactly (g is the
+ * normalised force).  A nonlinear tissue's reach beyond it where the tissue
+ * is softer than its linear fit (neo-Hookean block48 pressed down), and the
+ * device would clamp displacements that forces inside the envelope cause:
+ * the map is then widened so that the farthest training displacement sits
+ * at 1 / (1 + REACH_MARGIN) of the envelope's radius (the margin for
+ * displacements between the training cases'). */
+#define REACH_MARGIN 0.05
+static void widen_to_reach(tf_model *model, const tf_fitdata *d, const size_t *idx, size_t m,
+                             const double x0[3], double w[9])
+{
+    double reach = 0;
+    for (size_t i = 0; i < m; ++i) {
+        double g[3];
+        tf_family_normalise(model, d->contact[tf_family_case(idx, i)], g);
+        reach = fmax(reach, sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+    }
+    if (!(reach > 1 + 1e-3)) {
+        return;
+    }
+    const double widen = reach * (1 + REACH_MARGIN);
+    for (int i = 0; i < 9; ++i) {
+        w[i] /= widen;
+    }
+    tf_model_set_map(model, x0, w);
+}
+
 static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m,
                      const uint32_t *orders)
 {
@@ -115,6 +144,7 @@ static tf_model *fit(tf_ctx *ctx, const tf_cases *c, const size_t *idx, size_t m
         w[i] = k[i] / d->radius;
     }
     tf_model_set_map(model, x0, w);
+    widen_to_reach(model, d, idx, m, x0, w);
     model->node_ids[0] = c->contact_id; /* tf_cases.contact_id */
     if (tf_family_spans(ctx, model, d->contact, idx, m) != 0) {
         tf_model_free(model);
