@@ -21,17 +21,17 @@
  *       held-out error over 20 cases: max 0.0188 mm, rms 0.00111 mm
  *       error against the physics: fit 0.0188 + discretisation 0.138 = total <= 0.157 mm
  *         (discretisation: tests/calculix/data/liver_tumour_physics.csv, 3 load cases at 81 points, largest over the cases (forces up to 100 % of the envelope's radius 0.3 N; not measured beyond))
- *   tfit_liver_tumour_contact: contact p=2, 1 output point, contact displacement [mm] -> contact force [N]
- *       47 add, 66 mul, 0 div per evaluation; 176 table bytes
- *       593 instructions; Cortex-M4F <= 853 cycles (5.08 us at 168 MHz), Cortex-M7 ~636 (1.32 us at 480 MHz)
- *       Q31 form tfit_liver_tumour_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 7.21e-09 N (float32 path: 7.15e-08)
- *       held-out error over 20 cases: max 0.00386 N, rms 0.00111 N
- *       error against the physics: fit 0.00386 + discretisation 0.00675 = total <= 0.0106 N
+ *   tfit_liver_tumour_contact: contact p=3, 1 output point, contact displacement [mm] -> contact force [N]
+ *       80 add, 106 mul, 0 div per evaluation; 296 table bytes
+ *       857 instructions; Cortex-M4F <= 1257 cycles (7.48 us at 168 MHz), Cortex-M7 ~956 (1.99 us at 480 MHz)
+ *       Q31 form tfit_liver_tumour_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 8.18e-09 N (float32 path: 1.14e-07)
+ *       held-out error over 20 cases: max 0.00115 N, rms 0.000311 N
+ *       error against the physics: fit 0.00115 + discretisation 0.00675 = total <= 0.00789 N
  *         (discretisation: tests/calculix/data/liver_tumour_physics.csv: contact-site displacement off by 2.25 % (reference point 1.91e-14 mm from the site), times the largest force 0.3 N)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.04 N/mm; largest stiffness 0.0938 N/mm (the device must render it)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0384 N/mm; largest stiffness 0.0919 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
- * tfit_liver_tumour_forward + tfit_liver_tumour_contact take at most 35402 (21.07 % of it).
+ * tfit_liver_tumour_forward + tfit_liver_tumour_contact take at most 35806 (21.31 % of it).
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_LIVER_TUMOUR_IMPLEMENTATION before including it: that file holds
@@ -48,7 +48,7 @@
 #endif
 
 /* CRC-32 of liver_tumour_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_LIVER_TUMOUR_GOLDEN_CRC32 0xef007e98u
+#define TFIT_LIVER_TUMOUR_GOLDEN_CRC32 0xfa419034u
 
 /* tfit_liver_tumour_forward */
 #define TFIT_LIVER_TUMOUR_FORWARD_FAMILY "nodal"
@@ -88,38 +88,38 @@ extern const tfit_model tfit_liver_tumour_forward;
 /* tfit_liver_tumour_contact */
 #define TFIT_LIVER_TUMOUR_CONTACT_FAMILY "contact"
 #define TFIT_LIVER_TUMOUR_CONTACT_FAMILY_ID 4
-#define TFIT_LIVER_TUMOUR_CONTACT_ORDERS "p=2"
+#define TFIT_LIVER_TUMOUR_CONTACT_ORDERS "p=3"
 #define TFIT_LIVER_TUMOUR_CONTACT_N_OUT 1u
 #define TFIT_LIVER_TUMOUR_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_LIVER_TUMOUR_CONTACT_OUTPUT "contact force [N]"
 #define TFIT_LIVER_TUMOUR_CONTACT_ENVELOPE_CENTER {-0.0489425324, -0.11426679, 0.00104272214}
-#define TFIT_LIVER_TUMOUR_CONTACT_OPS_ADD 47
-#define TFIT_LIVER_TUMOUR_CONTACT_OPS_MUL 66
+#define TFIT_LIVER_TUMOUR_CONTACT_OPS_ADD 80
+#define TFIT_LIVER_TUMOUR_CONTACT_OPS_MUL 106
 #define TFIT_LIVER_TUMOUR_CONTACT_OPS_DIV 0
-#define TFIT_LIVER_TUMOUR_CONTACT_OPS 113
-#define TFIT_LIVER_TUMOUR_CONTACT_TABLE_BYTES 176
-#define TFIT_LIVER_TUMOUR_CONTACT_INSNS_ARMV7EM 593 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M4F 853u /* upper bound, zero-wait-state tables */
-#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M4F_MIN 755u
-#define TFIT_LIVER_TUMOUR_CONTACT_US_M4F_168MHZ 5.08
-#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M7 636u /* estimate, +-30 % */
-#define TFIT_LIVER_TUMOUR_CONTACT_US_M7_480MHZ 1.32
+#define TFIT_LIVER_TUMOUR_CONTACT_OPS 186
+#define TFIT_LIVER_TUMOUR_CONTACT_TABLE_BYTES 296
+#define TFIT_LIVER_TUMOUR_CONTACT_INSNS_ARMV7EM 857 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M4F 1257u /* upper bound, zero-wait-state tables */
+#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M4F_MIN 1117u
+#define TFIT_LIVER_TUMOUR_CONTACT_US_M4F_168MHZ 7.48
+#define TFIT_LIVER_TUMOUR_CONTACT_CYCLES_M7 956u /* estimate, +-30 % */
+#define TFIT_LIVER_TUMOUR_CONTACT_US_M7_480MHZ 1.99
 #define TFIT_LIVER_TUMOUR_CONTACT_Q31_IN_EXP 4 /* input word x = value * 2^(31 - 4), mm */
 #define TFIT_LIVER_TUMOUR_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
-#define TFIT_LIVER_TUMOUR_CONTACT_Q31_ADDED_ERROR_N 7.20502e-09 /* max |Q31 - exact| at 2000 envelope points; float32: 7.15212e-08 */
-#define TFIT_LIVER_TUMOUR_CONTACT_Q31_CRC32 0x527f0b2eu
-#define tfit_liver_tumour_contact_q31 tfit_liver_tumour_contact_q31_527f0b2e /* this header's version of the model */
+#define TFIT_LIVER_TUMOUR_CONTACT_Q31_ADDED_ERROR_N 8.18344e-09 /* max |Q31 - exact| at 2000 envelope points; float32: 1.13904e-07 */
+#define TFIT_LIVER_TUMOUR_CONTACT_Q31_CRC32 0xdc8d493eu
+#define tfit_liver_tumour_contact_q31 tfit_liver_tumour_contact_q31_dc8d493e /* this header's version of the model */
 extern const tfit_model_q31 tfit_liver_tumour_contact_q31;
 #define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_CASES 20
-#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_MAX_N 0.00385836
-#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_RMS_N 0.00110583
-#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_REL_MAX 0.0145523
+#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_MAX_N 0.00114708
+#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_RMS_N 0.000310634
+#define TFIT_LIVER_TUMOUR_CONTACT_HELDOUT_REL_MAX 0.00470804
 #define TFIT_LIVER_TUMOUR_CONTACT_DISCRETISATION_MAX_N 0.00674577 /* the solve against the physics */
-#define TFIT_LIVER_TUMOUR_CONTACT_TOTAL_MAX_N 0.0106041 /* held-out fit + discretisation */
-#define TFIT_LIVER_TUMOUR_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0399784 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_LIVER_TUMOUR_CONTACT_STIFFNESS_MAX_N_PER_MM 0.0937638 /* largest ||df/ddelta||_2 */
-#define TFIT_LIVER_TUMOUR_CONTACT_CRC32 0x46d36f15u
-#define tfit_liver_tumour_contact tfit_liver_tumour_contact_46d36f15 /* this header's version of the model */
+#define TFIT_LIVER_TUMOUR_CONTACT_TOTAL_MAX_N 0.00789284 /* held-out fit + discretisation */
+#define TFIT_LIVER_TUMOUR_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0383754 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_LIVER_TUMOUR_CONTACT_STIFFNESS_MAX_N_PER_MM 0.0918547 /* largest ||df/ddelta||_2 */
+#define TFIT_LIVER_TUMOUR_CONTACT_CRC32 0x435615f6u
+#define tfit_liver_tumour_contact tfit_liver_tumour_contact_435615f6 /* this header's version of the model */
 extern const tfit_model tfit_liver_tumour_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_liver_tumour_forward is
@@ -137,7 +137,7 @@ extern const float tfit_liver_tumour_rest_file[243];
 
 #define TFIT_LIVER_TUMOUR_SERVO_HZ 1000u /* the haptic loop's rate */
 #define TFIT_LIVER_TUMOUR_SERVO_CYCLES_M4F 168000u /* one tick at 168 MHz */
-#define TFIT_LIVER_TUMOUR_TICK_CYCLES_M4F 35402u /* forward + contact, upper bounds */
+#define TFIT_LIVER_TUMOUR_TICK_CYCLES_M4F 35806u /* forward + contact, upper bounds */
 
 #ifdef TFIT_LIVER_TUMOUR_IMPLEMENTATION
 
@@ -2866,65 +2866,77 @@ const tfit_model_q31 tfit_liver_tumour_forward_q31 = {
 };
 
 static const uint32_t tfit_liver_tumour_contact_dims[1] = {
-    2u,
+    3u,
 };
 static const uint32_t tfit_liver_tumour_contact_nodes[1] = {
     521u,
 };
-static const float tfit_liver_tumour_contact_coef[42] = {
+static const float tfit_liver_tumour_contact_coef[72] = {
     /* input map: envelope centre x0 */
     -0x1.90efeep-5f, -0x1.d4096ap-4f, 0x1.1157e6p-10f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.5acf5p-3f, 0x1.994bap-5f, 0x1.5b5d54p-10f, 0x1.a5ae6cp-5f,
-    0x1.13317ap-2f, 0x1.89d518p-9f, 0x1.71ec6ep-11f, 0x1.39d8a4p-9f,
-    0x1.1f01bp-3f,
+    0x1.3e3f8ap-3f, 0x1.779678p-5f, 0x1.3ec1dcp-10f, 0x1.82f422p-5f,
+    0x1.f90f2ep-3f, 0x1.6965f2p-9f, 0x1.537558p-11f, 0x1.1fffd6p-9f,
+    0x1.075ebcp-3f,
     /* node 521 x force */
-    0x1.8a2606p-8f, 0x1.3223fep-2f, -0x1.25bfd2p-14f, -0x1.53554ap-11f,
-    0x1.a5736ap-8f, 0x1.08f0cep-8f, 0x1.93f5bp-11f, 0x1.e76d72p-11f,
-    -0x1.f9680cp-15f, 0x1.666bcep-9f,
+    0x1.0079dap-7f, 0x1.44dc24p-2f, 0x1.782418p-12f, -0x1.6957c8p-11f,
+    0x1.e4fdbap-8f, 0x1.11ace8p-8f, 0x1.d35c2cp-11f, 0x1.3dd5dp-10f,
+    -0x1.2756f6p-11f, 0x1.b35e9cp-9f, -0x1.4fa162p-10f, 0x1.0fcad4p-11f,
+    0x1.a701d4p-10f, -0x1.5122f8p-8f, 0x1.e8cf84p-14f, -0x1.c68994p-9f,
+    -0x1.130b7ap-11f, -0x1.7b0b88p-10f, 0x1.f1f308p-12f, -0x1.83c528p-12f,
     /* node 521 y force */
-    0x1.bcdc32p-7f, -0x1.4cf296p-13f, 0x1.31f98ap-2f, -0x1.cd669p-10f,
-    0x1.b41ce6p-8f, -0x1.880d0ep-7f, -0x1.2fca54p-9f, 0x1.f75d8ap-8f,
-    -0x1.e42cd6p-14f, 0x1.2b146ep-7f,
+    0x1.21de48p-6f, -0x1.6683p-8f, 0x1.473248p-2f, -0x1.66a424p-9f,
+    0x1.f9b0cp-8f, -0x1.14f166p-6f, -0x1.0271cp-9f, 0x1.276bf8p-7f,
+    -0x1.3aa578p-11f, 0x1.5d1f9cp-7f, -0x1.4e062p-14f, -0x1.2d37ep-8f,
+    0x1.a571p-11f, -0x1.58eb92p-8f, -0x1.891daep-8f, -0x1.1b35d8p-10f,
+    -0x1.4f2c5ap-9f, -0x1.06cabap-10f, 0x1.acb758p-11f, -0x1.404902p-11f,
     /* node 521 z force */
-    -0x1.1bf1c8p-13f, 0x1.d1988p-11f, 0x1.20a116p-11f, 0x1.33b8f8p-2f,
-    0x1.b132e8p-11f, 0x1.bf988ap-10f, -0x1.b65986p-12f, 0x1.a4c458p-11f,
-    0x1.697dd8p-7f, -0x1.c8f24ap-10f,
+    0x1.2b4ba2p-14f, 0x1.9e2b06p-10f, 0x1.86483ap-10f, 0x1.4a8b66p-2f,
+    0x1.0714d6p-10f, 0x1.7f7d9ap-10f, -0x1.db42a8p-13f, 0x1.19ddbcp-10f,
+    0x1.98e0f6p-7f, -0x1.fe582ep-10f, 0x1.480d9p-12f, -0x1.2b3c7p-15f,
+    -0x1.52ade4p-9f, 0x1.af1d32p-17f, -0x1.35900cp-9f, 0x1.a6ffa2p-14f,
+    0x1.184ef6p-13f, -0x1.8357f2p-10f, 0x1.43c9f6p-10f, -0x1.6f2e9ep-10f,
 };
 const tfit_model tfit_liver_tumour_contact = {
-    4u, 4u, 1u, 1u, 42u,
+    4u, 4u, 1u, 1u, 72u,
     tfit_liver_tumour_contact_dims, tfit_liver_tumour_contact_coef, tfit_liver_tumour_contact_nodes,
-    tfit_liver_tumour_contact_dims + 1u, tfit_liver_tumour_contact_coef + 42u, tfit_liver_tumour_contact_nodes + 1u,
+    tfit_liver_tumour_contact_dims + 1u, tfit_liver_tumour_contact_coef + 72u, tfit_liver_tumour_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x40ae730eu, 0xc035baeeu, 0x3fb2f025u, 0xbfdec8dau, 0x4039fa69u, 0xc00df77eu,
-     0x40922617u, 0xbf65134fu, 0x40599fe5u, 0xc01ba4a6u, 0xbd89721au, 0xc0047376u,
-     0xc03e27aeu, 0xbfd421a5u, 0xc0827c76u, 0xc1a9a941u, 0xc1abab7eu, 0x42286104u,
-     0xf1d5a5f6u, 0xf1d78629u, 0x725484d5u, 0xc2399f13u, 0x41b608cau, 0xc2378dbdu,
-     0xddfbbae9u, 0x8d11bc7cu},
-    0x46d36f15u
+    {0x40be3f06u, 0xc045622cu, 0x3fc2fc32u, 0xbff23769u, 0x404b534au, 0xc01ab6b9u,
+     0x409f67d9u, 0xbf770242u, 0x406d264fu, 0xc0295499u, 0xbd80c758u, 0xc0105812u,
+     0xc04ef08au, 0xbfe5db58u, 0xc08e3329u, 0xc1b8da3cu, 0xc1bafe9eu, 0x42377d72u,
+     0xf1e8d28bu, 0xf1eaddd7u, 0x7267977au, 0xc24a433du, 0x41c6740bu, 0xc24806ffu,
+     0x266af338u, 0xf563818cu},
+    0x435615f6u
 };
-static const int32_t tfit_liver_tumour_contact_q31_coef[46] = {
+static const int32_t tfit_liver_tumour_contact_q31_coef[76] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     -3284478, -7668314, 69976,
     /* W (row-major), then the projection's headroom H */
-    363656448, 107294336, 2845610, 110541232, 577122112, 6452550,
-    1515207, 5142057, 300948224,
+    333707424, 98458080, 2611260, 101437576, 529593056, 5921148,
+    1390422, 4718582, 276163520,
     5,
-    /* node 521 x: shift, then 10 coefficients */
-    33, 12915459, 642023360, -150400, -1389909, 13810101,
-    8681575, 1654619, 1996503, -129384, 5872372,
-    /* node 521 y: shift, then 10 coefficients */
-    33, 29154354, -340938, 641675584, -3779794, 14290547,
-    -25693454, -4977301, 16494277, -247898, 19600494,
-    /* node 521 z: shift, then 10 coefficients */
-    33, -290759, 1907080, 1182225, 645340928, 1774382,
-    3666705, -897740, 1723462, 23690712, -3743305,
+    /* node 521 x: shift, then 20 coefficients */
+    33, 16808410, 681280640, 770337, -1480060, 15892189,
+    8967796, 1914307, 2603706, -1209711, 7133095, -2749484,
+    1113261, 3465274, -11047292, 250271, -7447141, -1126584,
+    -3105137, 1019800, -794153,
+    /* node 521 y: shift, then 20 coefficients */
+    33, 37993616, -11747712, 686180608, -5875977, 16570464,
+    -36299468, -4234352, 19360760, -1288792, 22880156, -171020,
+    -9870320, 1726224, -11302345, -12881623, -2320059, -5491478,
+    -2152791, 1756022, -1311888,
+    /* node 521 z: shift, then 20 coefficients */
+    33, 153239, 3392865, 3197191, 693202112, 2155163,
+    3141555, -486667, 2309048, 26796278, -4180742, 671852,
+    -76604, -5548921, 27591, -5071875, 216575, 287036,
+    -3173118, 2652479, -3007956,
 };
 const tfit_model_q31 tfit_liver_tumour_contact_q31 = {
-    3u, 4u, 1u, 2u, 46u,
+    3u, 4u, 1u, 3u, 76u,
     tfit_liver_tumour_contact_q31_coef, tfit_liver_tumour_contact_nodes,
-    tfit_liver_tumour_contact_q31_coef + 46u, tfit_liver_tumour_contact_nodes + 1u,
-    0x527f0b2eu
+    tfit_liver_tumour_contact_q31_coef + 76u, tfit_liver_tumour_contact_nodes + 1u,
+    0xdc8d493eu
 };
 
 const uint32_t tfit_liver_tumour_vertex[81] = {
