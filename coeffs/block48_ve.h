@@ -28,14 +28,14 @@
  *       held-out error over 6 cases: max 0.00447 mm, rms 0.000232 mm
  *       error against the physics: fit 0.00447 + discretisation 0.0969 = total <= 0.101 mm
  *         (discretisation: tests/physics/data/block48_ve_physics.csv, 1 load case at 121 points, largest over the cases (forces up to 100 % of the envelope's radius 1 N; not measured beyond))
- *   tfit_block48_ve_contact: contact p=3, 1 output point, contact displacement [mm] -> contact force [N]
- *       80 add, 106 mul, 0 div per evaluation; 296 table bytes
- *       857 instructions; Cortex-M4F <= 1257 cycles (7.48 us at 168 MHz), Cortex-M7 ~956 (1.99 us at 480 MHz)
- *       Q31 form tfit_block48_ve_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.24e-08 N (float32 path: 2.5e-07)
- *       held-out error over 15 cases: max 0.00435 N, rms 0.00121 N
- *       error against the physics: fit 0.00435 + discretisation 0.00395 = total <= 0.0083 N
+ *   tfit_block48_ve_contact: contact p=2, 1 output point, contact displacement [mm] -> contact force [N]
+ *       47 add, 66 mul, 0 div per evaluation; 176 table bytes
+ *       593 instructions; Cortex-M4F <= 853 cycles (5.08 us at 168 MHz), Cortex-M7 ~636 (1.32 us at 480 MHz)
+ *       Q31 form tfit_block48_ve_contact_q31: input 2^3 mm, output 2^5 N full scale; adds 4.45e-08 N (float32 path: 2.82e-07)
+ *       held-out error over 15 cases: max 0.00442 N, rms 0.00167 N
+ *       error against the physics: fit 0.00442 + discretisation 0.00395 = total <= 0.00837 N
  *         (discretisation: tests/physics/data/block48_ve_physics.csv: contact-site displacement off by 0.395 % (reference point 0 mm from the site), times the largest force 1 N)
- *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.402 N/mm; largest stiffness 1.35 N/mm (the device must render it)
+ *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.412 N/mm; largest stiffness 1.36 N/mm (the device must render it)
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_BLOCK48_VE_IMPLEMENTATION before including it: that file holds
@@ -52,7 +52,7 @@
 #endif
 
 /* CRC-32 of block48_ve_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_BLOCK48_VE_GOLDEN_CRC32 0x4569e61cu
+#define TFIT_BLOCK48_VE_GOLDEN_CRC32 0x0a2f1ec5u
 
 /* tfit_block48_ve_forward */
 #define TFIT_BLOCK48_VE_FORWARD_FAMILY "prony"
@@ -104,38 +104,38 @@ extern const tfit_model tfit_block48_ve_forward;
 /* tfit_block48_ve_contact */
 #define TFIT_BLOCK48_VE_CONTACT_FAMILY "contact"
 #define TFIT_BLOCK48_VE_CONTACT_FAMILY_ID 4
-#define TFIT_BLOCK48_VE_CONTACT_ORDERS "p=3"
+#define TFIT_BLOCK48_VE_CONTACT_ORDERS "p=2"
 #define TFIT_BLOCK48_VE_CONTACT_N_OUT 1u
 #define TFIT_BLOCK48_VE_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_BLOCK48_VE_CONTACT_OUTPUT "contact force [N]"
 #define TFIT_BLOCK48_VE_CONTACT_ENVELOPE_CENTER {0.0018478178, -0.00142568967, -0.0473929085}
-#define TFIT_BLOCK48_VE_CONTACT_OPS_ADD 80
-#define TFIT_BLOCK48_VE_CONTACT_OPS_MUL 106
+#define TFIT_BLOCK48_VE_CONTACT_OPS_ADD 47
+#define TFIT_BLOCK48_VE_CONTACT_OPS_MUL 66
 #define TFIT_BLOCK48_VE_CONTACT_OPS_DIV 0
-#define TFIT_BLOCK48_VE_CONTACT_OPS 186
-#define TFIT_BLOCK48_VE_CONTACT_TABLE_BYTES 296
-#define TFIT_BLOCK48_VE_CONTACT_INSNS_ARMV7EM 857 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F 1257u /* upper bound, zero-wait-state tables */
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F_MIN 1117u
-#define TFIT_BLOCK48_VE_CONTACT_US_M4F_168MHZ 7.48
-#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M7 956u /* estimate, +-30 % */
-#define TFIT_BLOCK48_VE_CONTACT_US_M7_480MHZ 1.99
+#define TFIT_BLOCK48_VE_CONTACT_OPS 113
+#define TFIT_BLOCK48_VE_CONTACT_TABLE_BYTES 176
+#define TFIT_BLOCK48_VE_CONTACT_INSNS_ARMV7EM 593 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F 853u /* upper bound, zero-wait-state tables */
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M4F_MIN 755u
+#define TFIT_BLOCK48_VE_CONTACT_US_M4F_168MHZ 5.08
+#define TFIT_BLOCK48_VE_CONTACT_CYCLES_M7 636u /* estimate, +-30 % */
+#define TFIT_BLOCK48_VE_CONTACT_US_M7_480MHZ 1.32
 #define TFIT_BLOCK48_VE_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
 #define TFIT_BLOCK48_VE_CONTACT_Q31_OUT_EXP 5 /* output value = word * 2^(5 - 31), N */
-#define TFIT_BLOCK48_VE_CONTACT_Q31_ADDED_ERROR_N 4.24357e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 2.49522e-07 */
-#define TFIT_BLOCK48_VE_CONTACT_Q31_CRC32 0x73fe7517u
-#define tfit_block48_ve_contact_q31 tfit_block48_ve_contact_q31_73fe7517 /* this header's version of the model */
+#define TFIT_BLOCK48_VE_CONTACT_Q31_ADDED_ERROR_N 4.45278e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 2.81815e-07 */
+#define TFIT_BLOCK48_VE_CONTACT_Q31_CRC32 0xed8637e1u
+#define tfit_block48_ve_contact_q31 tfit_block48_ve_contact_q31_ed8637e1 /* this header's version of the model */
 extern const tfit_model_q31 tfit_block48_ve_contact_q31;
 #define TFIT_BLOCK48_VE_CONTACT_HELDOUT_CASES 15
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_MAX_N 0.00434679
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_RMS_N 0.00120773
-#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_REL_MAX 0.00518094
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_MAX_N 0.00441605
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_RMS_N 0.00166585
+#define TFIT_BLOCK48_VE_CONTACT_HELDOUT_REL_MAX 0.00581383
 #define TFIT_BLOCK48_VE_CONTACT_DISCRETISATION_MAX_N 0.00395019 /* the solve against the physics */
-#define TFIT_BLOCK48_VE_CONTACT_TOTAL_MAX_N 0.00829698 /* held-out fit + discretisation */
-#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.40165 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 1.35344 /* largest ||df/ddelta||_2 */
-#define TFIT_BLOCK48_VE_CONTACT_CRC32 0xcff6cc1cu
-#define tfit_block48_ve_contact tfit_block48_ve_contact_cff6cc1c /* this header's version of the model */
+#define TFIT_BLOCK48_VE_CONTACT_TOTAL_MAX_N 0.00836624 /* held-out fit + discretisation */
+#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.412338 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_BLOCK48_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 1.35675 /* largest ||df/ddelta||_2 */
+#define TFIT_BLOCK48_VE_CONTACT_CRC32 0x73247ba6u
+#define tfit_block48_ve_contact tfit_block48_ve_contact_73247ba6 /* this header's version of the model */
 extern const tfit_model tfit_block48_ve_contact;
 
 #ifdef TFIT_BLOCK48_VE_IMPLEMENTATION
@@ -4195,77 +4195,65 @@ const tfit_model_q31 tfit_block48_ve_forward_q31 = {
 };
 
 static const uint32_t tfit_block48_ve_contact_dims[1] = {
-    3u,
+    2u,
 };
 static const uint32_t tfit_block48_ve_contact_nodes[1] = {
     61u,
 };
-static const float tfit_block48_ve_contact_coef[72] = {
+static const float tfit_block48_ve_contact_coef[42] = {
     /* input map: envelope centre x0 */
     0x1.e464f4p-10f, -0x1.75bc6ap-10f, -0x1.843e22p-5f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.2e267ep+0f, -0x1.981a58p-7f, 0x1.ce6302p-9f, -0x1.a23368p-7f,
-    0x1.295ab6p+0f, 0x1.27b77ep-10f, 0x1.344e9ap-9f, 0x1.c9e0b8p-9f,
-    0x1.b32cp-2f,
+    0x1.196b9p+0f, -0x1.7c1a7ap-7f, 0x1.aea9b6p-9f, -0x1.85823p-7f,
+    0x1.14f404p+0f, 0x1.136d9p-10f, 0x1.1f278ap-9f, 0x1.aa769ep-9f,
+    0x1.9550b4p-2f,
     /* node 61 x force */
-    0x1.64677cp-10f, 0x1.ff6798p-1f, 0x1.14a0acp-7f, -0x1.b97b2cp-8f,
-    -0x1.6142bcp-13f, -0x1.a9fe28p-11f, 0x1.1eb8f6p-3f, -0x1.0cf8c2p-12f,
-    0x1.563d6ap-9f, -0x1.55b5e8p-11f, 0x1.68b18p-11f, -0x1.07f4aep-9f,
-    0x1.691688p-10f, -0x1.4ddffp-9f, -0x1.70ede4p-15f, 0x1.af15c2p-8f,
-    -0x1.3e15fap-12f, 0x1.ddcea8p-13f, -0x1.d93dcp-12f, 0x1.4d2af2p-13f,
+    0x1.532f3ep-10f, 0x1.117abp+0f, 0x1.7dfc9ap-7f, -0x1.0b952p-7f,
+    -0x1.cef55ap-13f, 0x1.fb5308p-11f, 0x1.5285f6p-3f, -0x1.8cc094p-13f,
+    0x1.f304acp-12f, -0x1.e3fae2p-11f,
     /* node 61 y force */
-    -0x1.9803eap-10f, 0x1.a1d7cep-7f, 0x1.02dd16p+0f, 0x1.8b61dcp-9f,
-    0x1.706c8ep-13f, 0x1.3274dcp-9f, 0x1.94487cp-10f, 0x1.63148p-13f,
-    0x1.24d048p-3f, -0x1.a5376p-15f, 0x1.c944dcp-18f, -0x1.7d99dep-8f,
-    0x1.841dep-10f, 0x1.48dedap-9f, -0x1.25b8a8p-8f, -0x1.e2dd66p-12f,
-    0x1.2a0ae2p-11f, 0x1.448c56p-8f, 0x1.781aa2p-8f, 0x1.de4b38p-12f,
+    -0x1.105914p-9f, 0x1.82d56ep-7f, 0x1.1602ccp+0f, -0x1.5dcae6p-9f,
+    -0x1.29bf7cp-11f, 0x1.05c89p-9f, 0x1.ad4938p-19f, 0x1.59adbap-14f,
+    0x1.53321ap-3f, 0x1.da4316p-14f,
     /* node 61 z force */
-    0x1.021936p-5f, -0x1.007928p-8f, -0x1.c2a2fp-9f, 0x1.f656cep-1f,
-    0x1.9d06dp-6f, 0x1.882ea4p-12f, -0x1.16448ap-11f, 0x1.aceb1ep-6f,
-    -0x1.e36bccp-10f, 0x1.5f0796p-10f, 0x1.46a34p-13f, 0x1.04b936p-9f,
-    -0x1.0612d6p-6f, -0x1.d5fd28p-9f, 0x1.2e7ba6p-6f, 0x1.c709dap-10f,
-    -0x1.7fabbp-13f, -0x1.4ca69ap-7f, -0x1.147074p-9f, -0x1.80033cp-9f,
+    0x1.485b96p-5f, -0x1.1ab314p-9f, -0x1.d7d2ecp-9f, 0x1.14253p+0f,
+    0x1.eae2fap-6f, 0x1.01216cp-8f, -0x1.c25b4ap-9f, 0x1.f700dep-6f,
+    -0x1.ce34cap-11f, 0x1.2784eep-10f,
 };
 const tfit_model tfit_block48_ve_contact = {
-    4u, 4u, 1u, 1u, 72u,
+    4u, 4u, 1u, 1u, 42u,
     tfit_block48_ve_contact_dims, tfit_block48_ve_contact_coef, tfit_block48_ve_contact_nodes,
-    tfit_block48_ve_contact_dims + 1u, tfit_block48_ve_contact_coef + 72u, tfit_block48_ve_contact_nodes + 1u,
+    tfit_block48_ve_contact_dims + 1u, tfit_block48_ve_contact_coef + 42u, tfit_block48_ve_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x3f2c025cu, 0xbec15e1eu, 0x3ed015e0u, 0xbddac37eu, 0x3f1dbc01u, 0xbf44fd74u,
-     0x3f21c944u, 0x3d184300u, 0x3f895979u, 0xbeadc925u, 0xbdd62470u, 0xbf3b2c9du,
-     0xbefa2550u, 0xbf00a794u, 0xbfb3164eu, 0xc07f8b83u, 0xc0ba6dfau, 0x415bf84eu,
-     0xf0a1589fu, 0xf0eb3fe9u, 0x718b4c91u, 0xc0b4f729u, 0x40446bc2u, 0xc171f3ecu,
-     0xc6ab6ae9u, 0xd2adb97eu},
-    0xcff6cc1cu
+    {0x3f38a522u, 0xbecf8ed1u, 0x3ee13376u, 0xbdeb283au, 0x3f296164u, 0xbf529b6fu,
+     0x3f2dab42u, 0x3d23e86du, 0x3f93e9f5u, 0xbebaa82eu, 0xbde5b39bu, 0xbf48117eu,
+     0xbf065229u, 0xbf0a1ad3u, 0xbfbfd512u, 0xc089305du, 0xc0c828bfu, 0x416c3ab9u,
+     0xf0ad3b3cu, 0xf0fc942cu, 0x71958f6cu, 0xc0c24cddu, 0x4052e585u, 0xc181dc25u,
+     0xad4efa83u, 0xe77489d7u},
+    0x73247ba6u
 };
-static const int32_t tfit_block48_ve_contact_q31_coef[76] = {
+static const int32_t tfit_block48_ve_contact_q31_coef[46] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
     248010, -191353, -6360968,
     /* W (row-major), then the projection's headroom H */
-    633655232, -6686358, 1893936, -6851802, 623597248, 605628,
-    1262826, 1875468, 228155392,
+    590180864, -6227614, 1763995, -6381708, 580812928, 564076,
+    1176185, 1746794, 212501920,
     6,
-    /* node 61 x: shift, then 20 coefficients */
-    33, 729916, 536246656, 4532267, -3616614, -90435,
-    -436217, 75162584, -137714, 1401815, -349912, 369350,
-    -1081163, 739508, -1367551, -23611, 3531448, -162860,
-    122319, -242300, 85291,
-    /* node 61 y: shift, then 20 coefficients */
-    33, -835615, 6845940, 542876352, 1619486, 94317,
-    1255246, 827972, 90900, 76759328, -26958, 3658,
-    -3126076, 794863, 1347054, -2406165, -247227, 305196,
-    2658699, 3081044, 244886,
-    /* node 61 z: shift, then 20 coefficients */
-    33, 16914742, -2101029, -1845807, 526740704, 13534056,
-    200797, -284946, 14054799, -990046, 718909, 83619,
-    1067923, -8587627, -1925074, 9911763, 931919, -98220,
-    -5450150, -1132295, -1572916,
+    /* node 61 x: shift, then 10 coefficients */
+    33, 694650, 573527552, 6258470, -4384072, -118517,
+    519500, 88741848, -101569, 255497, -495596,
+    /* node 61 y: shift, then 10 coefficients */
+    33, -1115537, 6337884, 583031168, -1432750, -304894,
+    1072265, 1717, 44247, 88918120, 60706,
+    /* node 61 z: shift, then 10 coefficients */
+    33, 21519254, -1157937, -1932591, 579118592, 16085373,
+    2106414, -1844661, 16482415, -473299, 605223,
 };
 const tfit_model_q31 tfit_block48_ve_contact_q31 = {
-    3u, 4u, 1u, 3u, 76u,
+    3u, 4u, 1u, 2u, 46u,
     tfit_block48_ve_contact_q31_coef, tfit_block48_ve_contact_nodes,
-    tfit_block48_ve_contact_q31_coef + 76u, tfit_block48_ve_contact_nodes + 1u,
-    0x73fe7517u
+    tfit_block48_ve_contact_q31_coef + 46u, tfit_block48_ve_contact_nodes + 1u,
+    0xed8637e1u
 };
 
 #endif /* TFIT_BLOCK48_VE_IMPLEMENTATION */
