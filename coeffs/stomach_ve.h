@@ -26,17 +26,17 @@
  *       held-out error over 6 cases: max 0.000309 mm, rms 2.02e-05 mm
  *       error against the physics: fit 0.000309 + discretisation 0.281 = total <= 0.282 mm
  *         (discretisation: self-measured: Richardson extrapolation over clouds of spacing 16, 12 (this one), 9 mm (5040, 5170, 5422 nodes), observed order 1.55, at 137 points, largest over the 6 forces of the envelope's radius along +-x, +-y, +-z (the fully relaxed response); the file's skin on every cloud: the surface's part of the error is not in this figure; the coarser pair gives 0.236 mm)
- *   tfit_stomach_ve_contact: contact p=2, 1 output point, contact displacement [mm] -> contact force [N]
- *       47 add, 66 mul, 0 div per evaluation; 176 table bytes
- *       593 instructions; Cortex-M4F <= 853 cycles (5.08 us at 168 MHz), Cortex-M7 ~636 (1.32 us at 480 MHz)
- *       Q31 form tfit_stomach_ve_contact_q31: input 2^3 mm, output 2^3 N full scale; adds 1.1e-08 N (float32 path: 9.22e-08)
- *       held-out error over 15 cases: max 1.23e-05 N, rms 5.15e-06 N
- *       error against the physics: fit 1.23e-05 + discretisation 0.0229 = total <= 0.0229 N
+ *   tfit_stomach_ve_contact: contact p=3, 1 output point, contact displacement [mm] -> contact force [N]
+ *       80 add, 106 mul, 0 div per evaluation; 296 table bytes
+ *       857 instructions; Cortex-M4F <= 1257 cycles (7.48 us at 168 MHz), Cortex-M7 ~956 (1.99 us at 480 MHz)
+ *       Q31 form tfit_stomach_ve_contact_q31: input 2^4 mm, output 2^3 N full scale; adds 2.51e-08 N (float32 path: 1.24e-07)
+ *       held-out error over 15 cases: max 1.58e-06 N, rms 4.02e-07 N
+ *       error against the physics: fit 1.58e-06 + discretisation 0.0229 = total <= 0.0229 N
  *         (discretisation: self-measured: contact-site displacement off by 7.64 % (the extrapolation of the forward model's), times the largest force 0.3 N)
  *       passive over 5169 samples of its envelope: symmetric stiffness >= 0.0711 N/mm; largest stiffness 0.271 N/mm (the device must render it)
  *
  * Servo budget: 1000 Hz on a Cortex-M4F at 168 MHz is 168000 cycles a tick;
- * tfit_stomach_ve_forward + tfit_stomach_ve_contact take at most 58522 (34.83 % of it).
+ * tfit_stomach_ve_forward + tfit_stomach_ve_contact take at most 58926 (35.08 % of it).
  *
  * Include this header wherever the models are used.  In exactly one .c
  * file define TFIT_STOMACH_VE_IMPLEMENTATION before including it: that file holds
@@ -53,7 +53,7 @@
 #endif
 
 /* CRC-32 of stomach_ve_golden.h up to its pairing check: the two files of one run (header-format.md section 1) */
-#define TFIT_STOMACH_VE_GOLDEN_CRC32 0xae6a79fcu
+#define TFIT_STOMACH_VE_GOLDEN_CRC32 0xd21bd3c9u
 
 /* tfit_stomach_ve_forward */
 #define TFIT_STOMACH_VE_FORWARD_FAMILY "prony"
@@ -105,38 +105,38 @@ extern const tfit_model tfit_stomach_ve_forward;
 /* tfit_stomach_ve_contact */
 #define TFIT_STOMACH_VE_CONTACT_FAMILY "contact"
 #define TFIT_STOMACH_VE_CONTACT_FAMILY_ID 4
-#define TFIT_STOMACH_VE_CONTACT_ORDERS "p=2"
+#define TFIT_STOMACH_VE_CONTACT_ORDERS "p=3"
 #define TFIT_STOMACH_VE_CONTACT_N_OUT 1u
 #define TFIT_STOMACH_VE_CONTACT_INPUT "contact displacement [mm]"
 #define TFIT_STOMACH_VE_CONTACT_OUTPUT "contact force [N]"
 #define TFIT_STOMACH_VE_CONTACT_ENVELOPE_CENTER {-0.0012947917, 0.0103380596, 0.000918835809}
-#define TFIT_STOMACH_VE_CONTACT_OPS_ADD 47
-#define TFIT_STOMACH_VE_CONTACT_OPS_MUL 66
+#define TFIT_STOMACH_VE_CONTACT_OPS_ADD 80
+#define TFIT_STOMACH_VE_CONTACT_OPS_MUL 106
 #define TFIT_STOMACH_VE_CONTACT_OPS_DIV 0
-#define TFIT_STOMACH_VE_CONTACT_OPS 113
-#define TFIT_STOMACH_VE_CONTACT_TABLE_BYTES 176
-#define TFIT_STOMACH_VE_CONTACT_INSNS_ARMV7EM 593 /* per call, gcc -O2 (docs/firmware.md) */
-#define TFIT_STOMACH_VE_CONTACT_CYCLES_M4F 853u /* upper bound, zero-wait-state tables */
-#define TFIT_STOMACH_VE_CONTACT_CYCLES_M4F_MIN 755u
-#define TFIT_STOMACH_VE_CONTACT_US_M4F_168MHZ 5.08
-#define TFIT_STOMACH_VE_CONTACT_CYCLES_M7 636u /* estimate, +-30 % */
-#define TFIT_STOMACH_VE_CONTACT_US_M7_480MHZ 1.32
-#define TFIT_STOMACH_VE_CONTACT_Q31_IN_EXP 3 /* input word x = value * 2^(31 - 3), mm */
+#define TFIT_STOMACH_VE_CONTACT_OPS 186
+#define TFIT_STOMACH_VE_CONTACT_TABLE_BYTES 296
+#define TFIT_STOMACH_VE_CONTACT_INSNS_ARMV7EM 857 /* per call, gcc -O2 (docs/firmware.md) */
+#define TFIT_STOMACH_VE_CONTACT_CYCLES_M4F 1257u /* upper bound, zero-wait-state tables */
+#define TFIT_STOMACH_VE_CONTACT_CYCLES_M4F_MIN 1117u
+#define TFIT_STOMACH_VE_CONTACT_US_M4F_168MHZ 7.48
+#define TFIT_STOMACH_VE_CONTACT_CYCLES_M7 956u /* estimate, +-30 % */
+#define TFIT_STOMACH_VE_CONTACT_US_M7_480MHZ 1.99
+#define TFIT_STOMACH_VE_CONTACT_Q31_IN_EXP 4 /* input word x = value * 2^(31 - 4), mm */
 #define TFIT_STOMACH_VE_CONTACT_Q31_OUT_EXP 3 /* output value = word * 2^(3 - 31), N */
-#define TFIT_STOMACH_VE_CONTACT_Q31_ADDED_ERROR_N 1.10141e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 9.21647e-08 */
-#define TFIT_STOMACH_VE_CONTACT_Q31_CRC32 0x751c43b5u
-#define tfit_stomach_ve_contact_q31 tfit_stomach_ve_contact_q31_751c43b5 /* this header's version of the model */
+#define TFIT_STOMACH_VE_CONTACT_Q31_ADDED_ERROR_N 2.51391e-08 /* max |Q31 - exact| at 2000 envelope points; float32: 1.23862e-07 */
+#define TFIT_STOMACH_VE_CONTACT_Q31_CRC32 0x6c67c2c2u
+#define tfit_stomach_ve_contact_q31 tfit_stomach_ve_contact_q31_6c67c2c2 /* this header's version of the model */
 extern const tfit_model_q31 tfit_stomach_ve_contact_q31;
 #define TFIT_STOMACH_VE_CONTACT_HELDOUT_CASES 15
-#define TFIT_STOMACH_VE_CONTACT_HELDOUT_MAX_N 1.23493e-05
-#define TFIT_STOMACH_VE_CONTACT_HELDOUT_RMS_N 5.1478e-06
-#define TFIT_STOMACH_VE_CONTACT_HELDOUT_REL_MAX 7.68541e-05
+#define TFIT_STOMACH_VE_CONTACT_HELDOUT_MAX_N 1.57952e-06
+#define TFIT_STOMACH_VE_CONTACT_HELDOUT_RMS_N 4.02466e-07
+#define TFIT_STOMACH_VE_CONTACT_HELDOUT_REL_MAX 6.28233e-06
 #define TFIT_STOMACH_VE_CONTACT_DISCRETISATION_MAX_N 0.0229273 /* the solve against the physics */
-#define TFIT_STOMACH_VE_CONTACT_TOTAL_MAX_N 0.0229397 /* held-out fit + discretisation */
-#define TFIT_STOMACH_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0710777 /* sym(df/ddelta), smallest eigenvalue */
-#define TFIT_STOMACH_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 0.270587 /* largest ||df/ddelta||_2 */
-#define TFIT_STOMACH_VE_CONTACT_CRC32 0x80aaf497u
-#define tfit_stomach_ve_contact tfit_stomach_ve_contact_80aaf497 /* this header's version of the model */
+#define TFIT_STOMACH_VE_CONTACT_TOTAL_MAX_N 0.0229289 /* held-out fit + discretisation */
+#define TFIT_STOMACH_VE_CONTACT_STIFFNESS_MIN_N_PER_MM 0.0710631 /* sym(df/ddelta), smallest eigenvalue */
+#define TFIT_STOMACH_VE_CONTACT_STIFFNESS_MAX_N_PER_MM 0.270831 /* largest ||df/ddelta||_2 */
+#define TFIT_STOMACH_VE_CONTACT_CRC32 0xf6c20431u
+#define tfit_stomach_ve_contact tfit_stomach_ve_contact_f6c20431 /* this header's version of the model */
 extern const tfit_model tfit_stomach_ve_contact;
 
 /* Output map (docs/header-format.md section 10): output j of tfit_stomach_ve_forward is
@@ -154,7 +154,7 @@ extern const float tfit_stomach_ve_rest_file[408];
 
 #define TFIT_STOMACH_VE_SERVO_HZ 1000u /* the haptic loop's rate */
 #define TFIT_STOMACH_VE_SERVO_CYCLES_M4F 168000u /* one tick at 168 MHz */
-#define TFIT_STOMACH_VE_TICK_CYCLES_M4F 58522u /* forward + contact, upper bounds */
+#define TFIT_STOMACH_VE_TICK_CYCLES_M4F 58926u /* forward + contact, upper bounds */
 
 #ifdef TFIT_STOMACH_VE_IMPLEMENTATION
 
@@ -4709,65 +4709,77 @@ const tfit_model_q31 tfit_stomach_ve_forward_q31 = {
 };
 
 static const uint32_t tfit_stomach_ve_contact_dims[1] = {
-    2u,
+    3u,
 };
 static const uint32_t tfit_stomach_ve_contact_nodes[1] = {
     2451u,
 };
-static const float tfit_stomach_ve_contact_coef[42] = {
+static const float tfit_stomach_ve_contact_coef[72] = {
     /* input map: envelope centre x0 */
     -0x1.536cp-10f, 0x1.52c1eep-7f, 0x1.e1bc0ep-11f,
     /* input map: W (row-major), g = W (x - x0) */
-    0x1.e55978p-2f, 0x1.31f9fep-5f, 0x1.97f26p-4f, 0x1.3ae7d4p-5f,
-    0x1.b46d48p-1f, 0x1.aef7b8p-4f, 0x1.8fb41ap-4f, 0x1.b382c2p-4f,
-    0x1.2b5e0ep-2f,
+    0x1.cc67cep-2f, 0x1.22404ep-5f, 0x1.82fb16p-4f, 0x1.2ab8aap-5f,
+    0x1.9dff48p-1f, 0x1.98d18ap-4f, 0x1.7b2944p-4f, 0x1.9d20dp-4f,
+    0x1.1bfb54p-2f,
     /* node 2451 x force */
-    0x1.35206p-12f, 0x1.32e6fp-2f, 0x1.a6b148p-14f, -0x1.2753a2p-12f,
-    0x1.da45a6p-12f, -0x1.3e9e9cp-9f, 0x1.e4823cp-10f, -0x1.322bf8p-14f,
-    -0x1.5dcdc6p-11f, -0x1.75031ap-15f,
+    0x1.5bb2ecp-12f, 0x1.43794p-2f, 0x1.9a7804p-14f, -0x1.27f656p-12f,
+    0x1.07535cp-11f, -0x1.60c25ap-9f, 0x1.0d0a86p-9f, -0x1.536ab8p-14f,
+    -0x1.8533cap-11f, -0x1.a0493ep-15f, -0x1.9c1556p-17f, -0x1.af6b14p-18f,
+    0x1.12c4cp-16f, -0x1.164bc6p-16f, -0x1.c8662ep-18f, -0x1.347f48p-15f,
+    -0x1.c13366p-21f, -0x1.7321cp-19f, -0x1.198cd2p-18f, 0x1.8b462cp-21f,
     /* node 2451 y force */
-    -0x1.c74956p-9f, 0x1.683874p-16f, 0x1.338568p-2f, 0x1.5b95aep-12f,
-    -0x1.0f465ep-9f, -0x1.9563e2p-12f, 0x1.caf67ap-10f, -0x1.5f17c6p-10f,
-    -0x1.09b5b2p-9f, -0x1.657a5ep-9f,
+    -0x1.1074a2p-8f, 0x1.38dd06p-19f, 0x1.441ecap-2f, 0x1.7215d6p-12f,
+    -0x1.2d8dfp-9f, -0x1.bc7716p-12f, 0x1.f87926p-10f, -0x1.863e4ap-10f,
+    -0x1.25a206p-9f, -0x1.8d246p-9f, -0x1.1d741ap-18f, -0x1.069cc8p-15f,
+    0x1.7b13bep-16f, -0x1.36fec8p-17f, -0x1.8ec0d4p-19f, -0x1.18e60cp-16f,
+    -0x1.55b646p-18f, -0x1.66ea94p-16f, -0x1.34a342p-15f, 0x1.5fe9aep-20f,
     /* node 2451 z force */
-    -0x1.662998p-12f, -0x1.c4869p-13f, 0x1.7d2f8ap-16f, 0x1.333904p-2f,
-    0x1.3ed712p-15f, -0x1.d18e7p-12f, 0x1.df20d6p-11f, -0x1.6b55fap-13f,
-    -0x1.c84908p-10f, -0x1.2fa71cp-11f,
+    -0x1.b97332p-12f, -0x1.d71f4cp-13f, 0x1.ddef1ap-17f, 0x1.43d542p-2f,
+    0x1.580c62p-15f, -0x1.00d8dp-11f, 0x1.083db6p-10f, -0x1.9258ccp-13f,
+    -0x1.f94c68p-10f, -0x1.511a68p-11f, -0x1.87823ap-20f, -0x1.135d26p-18f,
+    -0x1.072b2ap-16f, -0x1.57841p-19f, -0x1.4fd732p-18f, 0x1.071a4p-18f,
+    -0x1.5d7ca2p-20f, -0x1.fe1964p-17f, -0x1.1a530ep-18f, -0x1.6ff482p-17f,
 };
 const tfit_model tfit_stomach_ve_contact = {
-    4u, 4u, 1u, 1u, 42u,
+    4u, 4u, 1u, 1u, 72u,
     tfit_stomach_ve_contact_dims, tfit_stomach_ve_contact_coef, tfit_stomach_ve_contact_nodes,
-    tfit_stomach_ve_contact_dims + 1u, tfit_stomach_ve_contact_coef + 42u, tfit_stomach_ve_contact_nodes + 1u,
+    tfit_stomach_ve_contact_dims + 1u, tfit_stomach_ve_contact_coef + 72u, tfit_stomach_ve_contact_nodes + 1u,
     /* self-test: 8 inputs, then the CRC of the status and outputs at each (header-format.md section 8) */
-    {0x3fd472f9u, 0xbf20e432u, 0x3eadc341u, 0xbda8c25au, 0x3f837e93u, 0xbfb148deu,
-     0x3fa9a01cu, 0xbe235cc3u, 0x3fa0889bu, 0xbf313707u, 0xba227df4u, 0xbf432b14u,
-     0xbf5d2549u, 0xbee1522bu, 0xbfc2d7b8u, 0xc16e7cabu, 0xc12bc545u, 0x41e6b00cu,
-     0xf1967e4eu, 0xf1590384u, 0x7211946bu, 0xc126c4cbu, 0x40eab4aau, 0xc1a8d946u,
-     0x9e0236e1u, 0xbdf87e2cu},
-    0x80aaf497u
+    {0x3fdff7deu, 0xbf29c069u, 0x3eb726c2u, 0xbdb1c235u, 0x3f8a8c01u, 0xbfbae55fu,
+     0x3fb2d30du, 0xbe2cc95du, 0x3fa93985u, 0xbf3acc57u, 0xba9f1004u, 0xbf4dc142u,
+     0xbf691be7u, 0xbeedd0b6u, 0xbfcd67c0u, 0xc17b681du, 0xc13515f6u, 0x41f32f81u,
+     0xf19ea598u, 0xf164c56cu, 0x7219778fu, 0xc12fcd87u, 0x40f7675cu, 0xc1b1ff3fu,
+     0x7d293436u, 0x8787010fu},
+    0xf6c20431u
 };
-static const int32_t tfit_stomach_ve_contact_q31_coef[46] = {
+static const int32_t tfit_stomach_ve_contact_q31_coef[76] = {
     /* Q31 input map: centre (Q30 of 2^IN_EXP) */
-    -173784, 1387551, 123324,
+    -86892, 693775, 61662,
     /* W (row-major), then the projection's headroom H */
-    254462912, 20052478, 53470400, 20637652, 457626752, 56487792,
-    52389940, 57083268, 156954736,
-    6,
-    /* node 2451 x: shift, then 10 coefficients */
-    33, 633091, 643620352, 216419, -604829, 971309,
-    -5220263, 3969096, -156760, -1432796, -95491,
-    /* node 2451 y: shift, then 10 coefficients */
-    33, -7459414, 46108, 644918528, 711853, -4444568,
-    -830239, 3759823, -2876153, -4353388, -5856920,
-    /* node 2451 z: shift, then 10 coefficients */
-    33, -733517, -463386, 48792, 644292736, 81623,
-    -953460, 1962509, -372056, -3737889, -1243762,
+    241385072, 19021902, 50722348, 19577002, 434107520, 53584660,
+    49697416, 54149536, 148888224,
+    7,
+    /* node 2451 x: shift, then 20 coefficients */
+    33, 712087, 678373376, 210160, -606131, 1078582,
+    -5779606, 4407970, -173781, -1594173, -106569, -26373,
+    -13805, 35170, -35622, -14605, -78975, -1797,
+    -5938, -9010, 1581,
+    /* node 2451 y: shift, then 20 coefficients */
+    33, -8927825, 5006, 679729472, 757935, -4940668,
+    -910265, 4132645, -3196873, -4810882, -6506776, -9135,
+    -67229, 48522, -19904, -6380, -35955, -10935,
+    -45941, -79011, 2815,
+    /* node 2451 z: shift, then 20 coefficients */
+    33, -904090, -482429, 30588, 679127104, 88076,
+    -1052045, 2164663, -412003, -4139405, -1380774, -3132,
+    -8812, -33686, -5496, -10747, 8419, -2796,
+    -32646, -9034, -23549,
 };
 const tfit_model_q31 tfit_stomach_ve_contact_q31 = {
-    3u, 4u, 1u, 2u, 46u,
+    3u, 4u, 1u, 3u, 76u,
     tfit_stomach_ve_contact_q31_coef, tfit_stomach_ve_contact_nodes,
-    tfit_stomach_ve_contact_q31_coef + 46u, tfit_stomach_ve_contact_nodes + 1u,
-    0x751c43b5u
+    tfit_stomach_ve_contact_q31_coef + 76u, tfit_stomach_ve_contact_nodes + 1u,
+    0x6c67c2c2u
 };
 
 const uint32_t tfit_stomach_ve_vertex[136] = {
