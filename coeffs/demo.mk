@@ -29,15 +29,15 @@ demo: $(B)/bin/tissuefit $(B)/lib/libtfit.a | deps-demo
 	  --png $(DEMO)/deformed.png
 	@echo "report: $(DEMO)/block48.md (plots beside it)"
 
-# demo-nh: the same loop on block48_nh (neo-Hookean, 3 N envelope, issue
-# 14): the shipped coeffs/block48_nh.h, the script's forces scaled by 3,
-# every tick against a true nonlinear solve: each distinct force once (837
+# demo-nh: the same loop on block48_nh (neo-Hookean, 2.1 N envelope): the
+# shipped coeffs/block48_nh.h, the script's forces scaled by 2.1,
+# every tick against a true nonlinear solve: each distinct force once (839
 # of the 1,000 ticks), continuing from the previous one (tissuefit replay;
-# about 30 s).  Results committed to docs/reports/block48_nh_demo.txt and
-# .png (docs/fitting.md §7.8).  check-demo-nh (make check): the same loop,
-# its first NH_CHECK_TICKS ticks replayed, held to check-fit's forward
-# bound for block48_nh (FORWARD_BOUND_block48_nh, coeffs/coeffs.mk); a
-# tenth of that bound must be refused.
+# about 20 minutes here on the 2,205-node cloud).  Results committed to
+# docs/reports/block48_nh_demo.txt and .png (docs/fitting.md §7.8).  check-demo-nh (make check): the same loop,
+# its first NH_CHECK_TICKS ticks replayed, held to NH_CHECK_BOUND, and the
+# deviation must exceed a tenth of that bound (one replay); a replay of 5
+# ticks at 1e-9 mm must be refused.
 DEMO_NH := $(DEMO)/nh
 # $(call demo_results,DIR,NAME): a demo's haptic-loop summary (without this
 # machine's timings) and replay, and the replay's picture, committed as
@@ -46,18 +46,22 @@ demo_results = mkdir -p $(REPORTS) && sed -n '1p' $(1)/haptic.txt | sed 's/; [0-
   cat - $(1)/replay.txt | sed 's|$(1)/deformed.png|$(REPORTS)/$(2).png|' > $(REPORTS)/$(2).txt && \
   cp $(1)/deformed.png $(REPORTS)/$(2).png && echo "results: $(REPORTS)/$(2).txt and .png"
 NH_CHECK_TICKS := 100
+# the first 100 ticks (the press to 0.56 N): measured 0.00516 mm of a peak
+# 1.33 mm; a regression bound, which a deviation under a tenth of it would
+# make too loose to fail
+NH_CHECK_BOUND := 0.01
 
 $(DEMO_NH)/haptic: coeffs/block48_nh.h $(B)/lib/libtfit.a $(DEMO_LOOP) | deps-demo
 	@mkdir -p $(@D)
 	$(call say,BUILD)
 	$(Q)tests/firmware/haptic_config.sh coeffs/block48_nh.h >$(@D)/haptic_config.h
-	$(Q)$(CC) $(HOST_STRICT) -O2 -DHAPTIC_FORCE_SCALE=3.0f -Itarget/include -Itarget/examples \
+	$(Q)$(CC) $(HOST_STRICT) -O2 -DHAPTIC_FORCE_SCALE=2.1f -Itarget/include -Itarget/examples \
 	  -Icoeffs -I$(@D) $(DEMO_LOOP) $(B)/lib/libtfit.a -o $@
 
 .PHONY: demo-nh check-demo-nh
 demo-nh: $(B)/bin/tissuefit $(DEMO_NH)/haptic | deps-demo
 	@echo "== 1. native haptic loop against coeffs/block48_nh.h (the shipped header) =="
-	@echo "== 2. 1,000 ticks: press 2.4 N, sweep, release, a push beyond the envelope, a NaN =="
+	@echo "== 2. 1,000 ticks: press 1.68 N, sweep, release, a push beyond the envelope, a NaN =="
 	$(Q)HAPTIC_CSV=$(DEMO_NH)/ticks.csv $(DEMO_NH)/haptic | tee $(DEMO_NH)/haptic.txt
 	@echo "== 3. every tick against a true nonlinear solve (continuation) =="
 	$(Q)$(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/ticks.csv \
@@ -68,10 +72,13 @@ CHECKS += check-demo-nh
 check-demo-nh: $(B)/bin/tissuefit $(DEMO_NH)/haptic
 	@echo "== block48_nh haptic loop: its first $(NH_CHECK_TICKS) ticks against true nonlinear solves =="
 	@HAPTIC_CSV=$(DEMO_NH)/check.csv $(DEMO_NH)/haptic > /dev/null
-	@$(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/check.csv \
-	  --first $(NH_CHECK_TICKS) --max-error-mm $(FORWARD_BOUND_block48_nh)
-	@tenth=$$(echo $(FORWARD_BOUND_block48_nh) | awk '{print $$1 / 10}'); \
-	if $(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/check.csv \
-	  --first $(NH_CHECK_TICKS) --max-error-mm $$tenth > /dev/null 2>&1; then \
-	  echo "replay accepted the ticks at a tenth of the bound ($$tenth mm)"; exit 1; fi
-	@echo "ok: block48_nh's firmware within $(FORWARD_BOUND_block48_nh) mm of $(NH_CHECK_TICKS) nonlinear solves (and a tenth of that bound is refused)"
+	@out=$$($(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/check.csv \
+	  --first $(NH_CHECK_TICKS) --max-error-mm $(NH_CHECK_BOUND) 2>&1) || { echo "$$out"; exit 1; }; \
+	dev=$$(echo "$$out" | sed -n 's/.*from the solve: \([0-9.e+-]*\) mm.*/\1/p'); \
+	awk -v d="$$dev" -v b=$(NH_CHECK_BOUND) 'BEGIN { exit !(d > b / 10) }' || \
+	  { echo "$$out"; echo "the largest deviation ($$dev mm) is under a tenth of the bound: the check could not fail"; exit 1; }; \
+	echo "ok: block48_nh's firmware within $(NH_CHECK_BOUND) mm of $(NH_CHECK_TICKS) nonlinear solves ($$dev mm, above a tenth of the bound)"
+	@if $(B)/bin/tissuefit -q replay coeffs/block48_nh.yaml --ticks $(DEMO_NH)/check.csv \
+	  --first 5 --max-error-mm 1e-9 > /dev/null 2>&1; then \
+	  echo "replay accepted 5 ticks at a bound of 1e-9 mm"; exit 1; fi
+	@echo "ok: replay refuses ticks beyond its bound (5 ticks at 1e-9 mm)"

@@ -48,10 +48,9 @@ check-physics: $(T)/physics/physics_check $(T)/physics/seed_map $(T)/solver/calc
 	  --max-err61 0.02) || { echo "$$out"; exit 1; }; \
 	echo "$$out" | awk -F, 'NR > 1 { printf "ok: block48 %s, %s: node 61 %.2f %% off CalculiX (u = %s, %s, %s mm; bound 2 %%)\n", $$2, $$4, 100 * $$11, $$5, $$6, $$7 }'
 
-# The nonlinear shipped headers (issue 14): block48_nh against CalculiX
-# NLGEOM (tests/calculix/data/block48_nh_physics.csv: the reference stops at
-# 0.7 of the 3 N along -z, so the figure covers forces to 70 % of the
-# envelope's radius, and says so), block48_ve against its refinement study
+# The nonlinear shipped headers: block48_nh against CalculiX NLGEOM
+# (tests/calculix/data/block48_nh_physics.csv: 2.1 N along -z, the
+# envelope's radius, and 1 N along +x), block48_ve against its refinement study
 # (tests/physics/data/block48_ve_physics.csv, make physics-ve-reference).
 # physics_check solves each case in load levels, another route than the
 # tool's one solve from rest; a copy of each header with its figure lowered

@@ -8,14 +8,14 @@
 #define RELEASE_END 900u
 #define BEYOND_END 950u
 #define GLITCH 950u
-/* The forces below are for block48's 1 N envelope; -DHAPTIC_FORCE_SCALE=3.0f
- * scales them to a 3 N one (block48_nh, coeffs/demo.mk). */
+/* The forces below are for block48's 1 N envelope; -DHAPTIC_FORCE_SCALE=2.1f
+ * scales them to a 2.1 N one (block48_nh, coeffs/demo.mk). */
 #ifndef HAPTIC_FORCE_SCALE
 #define HAPTIC_FORCE_SCALE 1.0f
 #endif
 #define DEPTH_N (0.8f * HAPTIC_FORCE_SCALE) /* normal force at full press */
 #define SWEEP_N (0.5f * HAPTIC_FORCE_SCALE) /* lateral force amplitude */
-/* ten times the envelope: beyond every shipped envelope (1 N, 3 N) even
+/* ten times the envelope: beyond every shipped envelope (1 N, 2.1 N) even
  * unscaled, and clamped onto the same point as any push along -z beyond it */
 #define BEYOND_N (10.0f * HAPTIC_FORCE_SCALE)
 #define MM_PER_N 10.0f      /* position script: a soft spring */

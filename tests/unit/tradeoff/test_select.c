@@ -3,7 +3,7 @@
  * `tissuefit fit --budget-us / --max-error-mm`, on made-up candidates:
  * the contact inverse within the tolerance when one is, else the most
  * accurate passive one (a nonlinear scene's contact law is far from a
- * tolerance made for linear scenes: block48_nh was refused outright), and
+ * tolerance made for linear scenes, which refused it outright), and
  * the budget counting the contact's time.
  */
 #include <math.h>
@@ -71,7 +71,7 @@ static void contact_within_the_tolerance_is_the_cheapest_there(void **state)
 static void no_contact_within_the_tolerance_takes_the_most_accurate_passive(void **state)
 {
     (void)state;
-    /* block48_nh's situation: the contact laws are 0.13-0.14 N off */
+    /* a nonlinear scene's situation: every passive contact law far off the tolerance */
     tf_candidate c[] = {cand("contact", 7.5, 0.138, 1), cand("contact", 10.9, 0.133, 1),
                         cand("contact", 3, 0.01, 0),    cand("modal", 35.3, 0.175, 1),
                         cand("modal", 40.2, 0.068, 1),  cand("nodal", 26, 0.41, 1)};
