@@ -54,7 +54,9 @@ check-physics: $(T)/physics/physics_check $(T)/physics/seed_map $(T)/solver/calc
 # (tests/physics/data/block48_ve_physics.csv, make physics-ve-reference).
 # physics_check solves each case in load levels, another route than the
 # tool's one solve from rest; a copy of each header with its figure lowered
-# by 1 % must be caught.
+# by 1 % must be caught.  block48_nh's stated totals (fit + discretisation)
+# must also stay within its design target, 3 % of its peak displacement and
+# of its envelope's force (docs/fitting.md §7.8; tests/physics/total_target.sh).
 PHYSICS_NONLINEAR := block48_nh:tests/calculix/data/block48_nh_physics.csv \
   block48_ve:tests/physics/data/block48_ve_physics.csv
 
@@ -71,6 +73,7 @@ check-physics-nonlinear: $(T)/physics/physics_check
 	    echo "physics_check accepted a $$n.h whose figure is 1 % too low"; exit 1; fi; \
 	  echo "ok: $$n.h states its discretisation error (recomputed; a 1 % understatement is caught)"; \
 	done
+	@tests/physics/total_target.sh coeffs/block48_nh.h 0.03
 
 # block48_ve's reference: the relaxed equilibrium (the largest displacement
 # a force reaches in the Kelvin law) under 1 N along -z on the finer cloud
