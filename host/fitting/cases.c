@@ -294,7 +294,9 @@ static int probe_kept(tf_cases *c, size_t n, size_t n_all, double *kept)
             rc = tf_solver_probe_contact(c->solver->ctx, c->solver, c->problem, c->contact, u,
                                          row + stride - 3);
         }
-        memcpy(kept + i * stride, row, stride * sizeof *row);
+        if (rc == 0) { /* row first: case i's values overlap its own compacted place */
+            memcpy(kept + i * stride, row, stride * sizeof *row);
+        }
     }
     free(row);
     return rc;
