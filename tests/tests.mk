@@ -1,9 +1,9 @@
 # tests.mk — everything `make check` runs.
 #
 #   check-unit         cmocka host unit tests (tests/unit/LAYER/test_*.c, one
-#                      folder per host/ layer); make check: the 7 slowest
+#                      folder per host/ layer); make check: the 10 slowest
 #   check-sanitize     the same tests under AddressSanitizer + UBSan;
-#                      make check: all but the 7 slowest
+#                      make check: all but those 10
 #   check-freestanding target library for Cortex-M4F and RV64: no undefined
 #                      symbols, no mutable statics, no recursion
 #   check-bitexact     1000 random models x 4 compiler configurations
@@ -61,14 +61,19 @@ CHECKS += check-unit check-sanitize check-freestanding check-bitexact check-gold
 # in order, then the slowest three), the slowest first so that no core
 # waits at the end for one long program (measured: `slowest:` in the log).
 UNIT_FIRST := solvers/test_conformance fitting/test_resonant_fit fitting/test_family_conformance \
-              solvers/test_weak_bc solvers/test_homogeneous scene/test_sites solvers/test_nonlinear
-# make check runs every unit program once: the seven of UNIT_FIRST (every
-# solver re-solving block48, every family refitted: 120 s of CPU natively,
-# about 200 under the sanitizers) natively in check-unit, every other one
-# under ASan + UBSan in check-sanitize, a stricter run of the same program
-# and the same -O2 host library.  make check-full runs all of them both
-# ways; make check-quick (UNIT_ALL=1) all of them natively, the edit-test
-# loop having no sanitized build.
+              scene/test_scene_scaled solvers/test_weak_bc solvers/test_homogeneous scene/test_sites \
+              solvers/test_nonlinear fitting/test_prony_pipeline meshfree/test_cut_shape
+# make check runs every unit program once: the ten of UNIT_FIRST natively in
+# check-unit, every other one under ASan + UBSan in check-sanitize, a
+# stricter run of the same program and the same -O2 host library.  They are
+# the seven slowest natively (every solver re-solving block48, every family
+# refitted: 120 s of CPU natively, about 200 under the sanitizers) and the
+# three the sanitizers slow most (the scaled scenes' organ fills 29 s under
+# them, 8 s natively; the cut shape functions 14 s and 1 s; the Prony
+# pipeline 11 s and 2.5 s).  The scene reader and the cut shape functions
+# stay under ASan + UBSan in make check through check-fuzz's targets.
+# make check-full runs all of them both ways; make check-quick (UNIT_ALL=1)
+# all of them natively, the edit-test loop having no sanitized build.
 UNIT_ALL ?=
 UNIT_NATIVE = $(if $(or $(filter-out 0,$(CHECK_FULL)),$(UNIT_ALL)),$(UNIT_NAMES),$(UNIT_FIRST))
 check-unit: $(UNIT_NATIVE:%=$(T)/unit/%)
