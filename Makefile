@@ -24,6 +24,10 @@ V ?= 0
 Q := $(if $(filter 1,$(V)),,@)
 # $(call say,WHAT) prints "  WHAT target" unless V=1.
 say = $(if $(filter 1,$(V)),,@printf '  %-6s %s\n' '$(1)' '$@')
+# $(Q)$(call made,WHAT)COMMAND: the target's folder and the same line in the
+# command's own shell, for the rules make check runs about 1,300 times (two
+# more shells per object cost about 7 s of its CPU).
+made = mkdir -p $(@D) && $(if $(filter 1,$(V)),,printf '  %-6s %s\n' '$(1)' '$@' && )
 
 CC := gcc
 CLANG := clang

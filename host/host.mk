@@ -29,9 +29,7 @@ HOST_LIBS := -fuse-ld=lld -fopenmp -lcholmod -lumfpack -lgsl -llapacke -lopenbla
 # $(call host_lib,NAME,FLAGS)  ->  $(B)/NAME/libtissuefit-host.a
 define host_lib
 $(B)/$(1)/host/%.o: host/%.c $(HOST_HDR) | deps-build
-	@mkdir -p $$(@D)
-	$$(call say,CC)
-	$(Q)$(CC) $(HOST_CFLAGS) $(2) -c $$< -o $$@
+	$(Q)$$(call made,CC)$(CC) $(HOST_CFLAGS) $(2) -c $$< -o $$@
 $(B)/$(1)/libtissuefit-host.a: $(HOST_SRC:host/%.c=$(B)/$(1)/host/%.o)
 	$$(call say,AR)
 	$(Q)rm -f $$@ && ar rcs $$@ $$^

@@ -16,9 +16,7 @@ TARGET_CFLAGS := $(TARGET_STRICT) -Itarget/include -ffunction-sections -fdata-se
 #   ->  $(B)/NAME/LIB.a (default libtfit.a from every source)
 define tfit_lib
 $(B)/$(1)/obj/%.o: target/src/%.c $(TARGET_HDR) | deps-$(5)
-	@mkdir -p $$(@D)
-	$$(call say,CC)
-	$(Q)$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
+	$(Q)$$(call made,CC)$(2) $(TARGET_CFLAGS) $(3) -c $$< -o $$@
 $(B)/$(1)/$(or $(6),libtfit).a: $(patsubst target/src/%.c,$(B)/$(1)/obj/%.o,$(or $(7),$(TARGET_SRC)))
 	$$(call say,AR)
 	$(Q)$(4)ld -r $$^ -o $(B)/$(1)/$(or $(6),libtfit).o

@@ -44,13 +44,9 @@ $(eval $(call test_support_lib,native,))
 $(eval $(call test_support_lib,asan,$(SANITIZE)))
 
 $(T)/unit/%: tests/unit/%.c $(B)/native/libtissuefit-host.a $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
-	@mkdir -p $(@D)
-	$(call say,BUILD)
-	$(Q)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
+	$(Q)$(call made,BUILD)$(CC) $(TEST_CFLAGS) $< $(call host_test_link,native) -o $@
 $(T)/asan/%: tests/unit/%.c $(B)/asan/libtissuefit-host.a $(B)/asan/libtest-support.a $(B)/asan/libtfit.a | deps-check
-	@mkdir -p $(@D)
-	$(call say,BUILD)
-	$(Q)$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
+	$(Q)$(call made,BUILD)$(CC) $(TEST_CFLAGS) $(SANITIZE) $< $(call host_test_link,asan) -o $@
 
 .PHONY: check-unit check-sanitize check-freestanding check-bitexact check-golden \
         check-header check-insncount check-cli
