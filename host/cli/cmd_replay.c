@@ -34,13 +34,33 @@
 
 typedef struct ticks {
     size_t n, cols;
-    double *v; /* n x cols, row-major */
+    double *v;    /* n x cols, row-major */
+    size_t every; /* row i is the log's tick i * every + every - 1 */
 } ticks;
+
+/* The log's number of kept row i (--every). */
+static size_t tick_of(const ticks *t, size_t i)
+{
+    return i * t->every + t->every - 1;
+}
+
+/* --every K: keep ticks K - 1, 2 K - 1, ... (the rows in place). */
+static void keep_every(ticks *t, size_t every)
+{
+    size_t n = t->n / every;
+    for (size_t i = 0; i < n; ++i) {
+        memmove(t->v + i * t->cols, t->v + (i * every + every - 1) * t->cols,
+                t->cols * sizeof *t->v);
+    }
+    t->n = n;
+    t->every = every;
+}
 
 static void help(FILE *out)
 {
     fprintf(out, "usage: tissuefit replay SCENE --ticks FILE.csv [--png FILE.png]\n"
-                 "                        [--first N] [--max-error-mm X] [--contact NAME] [--set KEY=VALUE]...\n\n"
+                 "                        [--first N] [--every K] [--max-error-mm X] [--contact NAME]\n"
+                 "                        [--set KEY=VALUE]...\n\n"
                  "Solves the force of every tick logged by the native haptic loop\n"
                  "(HAPTIC_CSV=FILE.csv) and prints the largest deviation of the logged\n"
                  "output displacements from the solve (mm).  Forces beyond the envelope\n"
@@ -49,6 +69,8 @@ static void help(FILE *out)
                  "  --ticks FILE.csv   the haptic loop's log\n"
                  "  --png FILE.png     the deformed output surface at the deepest tick\n"
                  "  --first N          only the first N ticks (a short check of a long run)\n"
+                 "  --every K          of those, only every K-th (ticks K-1, 2K-1, ...): fewer\n"
+                 "                     solves over the same path; not for a time-dependent solve\n"
                  "  --max-error-mm X   fail (exit 1) when the largest deviation exceeds X mm\n"
                  "  --contact NAME     contact site (default: the scene's fit.contact)\n"
                  "  --set KEY=VALUE    override a scene value (repeatable)\n");
@@ -363,13 +385,18 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         }
         rejected += row[4] < 0;
     }
+    if (t->every > 1) {
+        printf("replay: one tick in %zu of the log's first %zu (ticks %zu, %zu, ... %zu)\n",
+               t->every, t->n * t->every, tick_of(t, 0), tick_of(t, 1), tick_of(t, t->n - 1));
+    }
     if (timed) {
         printf("replay: the solver is time-dependent: the %zu ticks time-stepped from rest at "
                "%.6g s per tick; peak displacement %.4g mm\n", t->n, tick, peak);
     }
     printf("replay: %zu ticks solved (%zu rejected by the firmware, their outputs %s); largest "
            "deviation of the firmware's %zu output points from the solve: %.3g mm (tick %zu)\n",
-           t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst, worst_tick);
+           t->n, rejected, bad_zero ? "NOT all zero" : "all zero", n_out, worst,
+           tick_of(t, worst_tick));
     if (!affine && !timed) {
         printf("replay: the solver is nonlinear: %zu distinct forces solved, each continuing from "
                "the previous one; peak displacement %.4g mm\n", solves, peak);
@@ -383,20 +410,21 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
     if (not_finite > 0) {
         tf_error(ctx, "replay: %zu logged outputs of accepted ticks are NaN or Inf (the first at "
                  "tick %zu): the deviation above covers only the finite ones",
-                 not_finite, first_bad);
+                 not_finite, tick_of(t, first_bad));
     }
     if (worst > bound) {
         tf_error(ctx, "replay: the largest deviation %.3g mm (tick %zu) exceeds --max-error-mm %g",
-                 worst, worst_tick, bound);
+                 worst, tick_of(t, worst_tick), bound);
     }
     rc = bad_zero || not_finite || worst > bound ? TF_EXIT_FAIL : TF_EXIT_OK;
     if (png != NULL && rc == TF_EXIT_OK) {
-        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, v + deep_tick * 3 * n_out, deep_tick,
+        rc = draw(ctx, png, s, solver, u + deep_tick * dofs, v + deep_tick * 3 * n_out,
+                  tick_of(t, deep_tick),
                   forces + 3 * deep_tick, contact) == 0
                  ? TF_EXIT_OK
                  : TF_EXIT_FAIL;
         if (rc == TF_EXIT_OK) {
-            printf("replay: wrote %s (deformed surface at tick %zu)\n", png, deep_tick);
+            printf("replay: wrote %s (deformed surface at tick %zu)\n", png, tick_of(t, deep_tick));
         }
     }
     free(forces);
@@ -413,8 +441,8 @@ static int parse_bound(const char *arg, double *x)
     return end != arg && *end == '\0' && *x > 0 && isfinite(*x) ? 0 : -1;
 }
 
-/* --first N: a positive count, the whole argument. */
-static int parse_first(const char *arg, size_t *n)
+/* --first N, --every K: a positive count, the whole argument. */
+static int parse_count(const char *arg, size_t *n)
 {
     char *end;
     unsigned long v = strtoul(arg, &end, 10);
@@ -432,9 +460,10 @@ static int run(tf_ctx *ctx, int argc, char **argv)
                                          {"contact", required_argument, NULL, 'c'},
                                          {"set", required_argument, NULL, 's'},
                                          {"first", required_argument, NULL, 'n'},
+                                         {"every", required_argument, NULL, 'e'},
                                          {"max-error-mm", required_argument, NULL, 'm'},
                                          {0}};
-    size_t first = 0;
+    size_t first = 0, every = 1;
     double bound = INFINITY;
     const char *csv = NULL, *png = NULL, *contact_name = NULL;
     tf_sets sets = {0};
@@ -450,7 +479,9 @@ static int run(tf_ctx *ctx, int argc, char **argv)
             contact_name = optarg;
         } else if (c == 's' && tf_sets_add(&sets, optarg) == 0) {
             continue;
-        } else if (c == 'n' && parse_first(optarg, &first) == 0) {
+        } else if (c == 'n' && parse_count(optarg, &first) == 0) {
+            continue;
+        } else if (c == 'e' && parse_count(optarg, &every) == 0) {
             continue;
         } else if (c == 'm' && parse_bound(optarg, &bound) == 0) {
             continue;
@@ -470,7 +501,7 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         tf_sets_free(&sets);
         return TF_EXIT_USAGE;
     }
-    ticks t = {0};
+    ticks t = {.every = 1};
     tf_scene *s = tf_cmd_scene(ctx, argv[optind], &sets);
     const tf_problem *p = s ? &s->problem : NULL;
     tf_solver *solver = NULL;
@@ -484,10 +515,16 @@ static int run(tf_ctx *ctx, int argc, char **argv)
         int k = contact_name ? tf_problem_contact(p, contact_name) : s->fit.contact;
         if (k < 0) {
             tf_error(ctx, "replay: %s has no such contact site", argv[optind]);
+        } else if (every > t.n) {
+            tf_error(ctx, "replay: --every %zu keeps none of the %zu ticks", every, t.n);
         } else if ((solver = tf_solver_create(p, NULL, ctx)) == NULL) {
             tf_error(ctx, "replay: %s", ctx->err);
             rc = TF_EXIT_FAIL;
+        } else if (every > 1 && (tf_solver_caps_of(solver) & TF_SOLVER_TIME_DEPENDENT)) {
+            tf_error(ctx, "replay: --every: %s is solved in time, tick by tick; it needs every "
+                          "tick", argv[optind]);
         } else {
+            keep_every(&t, every);
             rc = compare(ctx, p, solver, k, &t, 1e-9 * s->fit.tick_ns, png, bound);
         }
     }

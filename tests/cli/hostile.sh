@@ -96,6 +96,14 @@ grep -q "deviation.*: [0-9.e-]* mm" "$tmp/out" || bad "replay prints no deviatio
 awk -F, 'NR == 3 { $20 = "nan" } { print }' OFS=, "$tmp/ticks.csv" >"$tmp/nan.csv"
 expect 1 "replay, a NaN in the logged outputs" -- "$tool" -q replay $B --ticks "$tmp/nan.csv"
 says "replay NaN" "1 logged outputs of accepted ticks are NaN or Inf (the first at tick 1)"
+# --every K: one tick in K, named by the log's tick numbers; refused when
+# it keeps no tick and for a solve in time (each tick is a time step)
+expect 1 "replay --every 2, the NaN tick kept" -- "$tool" -q replay $B --ticks "$tmp/nan.csv" --every 2
+says "replay --every NaN" "1 logged outputs of accepted ticks are NaN or Inf (the first at tick 1)"
+expect 2 "replay --every beyond the ticks" -- "$tool" -q replay $B --ticks "$tmp/ticks.csv" --every 4
+says "replay --every beyond" "--every 4 keeps none of the 3 ticks"
+expect 2 "replay --every, a solve in time" -- "$tool" -q replay coeffs/block48_ve.yaml --ticks "$tmp/ticks.csv" --every 2
+says "replay --every in time" "is solved in time, tick by tick; it needs every tick"
 
 # --- a report picture cut short: gnuplot exits 0 when cairo cannot write
 # (a full disk); a gnuplot on PATH that does just that
