@@ -143,21 +143,22 @@ all: $(B)/bin/tissuefit $(B)/lib/libtfit.a
 # checks measured slowest (CHECK_FIRST), so that no core waits at the end
 # for one long check.  A check's make builds what is left $(NPROC) jobs at
 # a time, unless make was given -j (then they share its jobserver).
-# Two lanes more than the cores: a check waiting on QEMU's output, MPI's
-# start or its own lines then leaves no core idle (with NPROC lanes the
-# checks used 92 % of the cores, 72 of 926 core-seconds idle; with NPROC + 1
-# 94 %).
-CHECK_LANES ?= $(shell echo $$(( $(NPROC) + 2 )))
-# The checks run two more at a time than there are cores (and
-# their builds $(NPROC) jobs at a time), so each program gets a core at
-# most: one OpenMP thread unless a check asks for more.  Two threads per program on two busy cores cost CPU (libgomp
-# spinning at every barrier: about 30 s of make check's, perf; block48_nh's
-# held-out solves 138 s of CPU instead of 100) and wall time (a sleeping
-# thread waits for a core at every barrier: a unit test of 1 s of CPU took
-# 12.5 s).  The bits do not depend on the thread count, and the checks that
-# say so run their two thread counts explicitly (test_conformance and
-# test_solver, the collocation's Hertz run, check-coeffs' regenerations with
-# two threads, the outputs' interrupted writes).
+# One lane more than the cores: a check waiting on QEMU's output, MPI's
+# start or its own lines then leaves a core idle less often (with NPROC
+# lanes the checks used 92 % of the cores, 72 of 926 core-seconds idle;
+# with NPROC + 1 94 %; NPROC + 2 gained nothing and cost more CPU).
+CHECK_LANES ?= $(shell echo $$(( $(NPROC) + 1 )))
+# The checks run one more at a time than there are cores, and their builds
+# $(NPROC) jobs at a time: each program gets one OpenMP thread unless a
+# check asks for more.  Two threads per program on two busy cores cost CPU
+# (libgomp spinning at every barrier: about 30 s of make check's, perf;
+# block48_nh's held-out solves 138 s of CPU instead of 100) and wall time
+# (a sleeping thread waits for a core at every barrier: a unit test of 1 s
+# of CPU took 12.5 s).  The bits do not depend on the thread count, and the
+# checks that say so run their two thread counts explicitly
+# (test_conformance and test_solver, the collocation's Hertz run,
+# check-coeffs' regenerations with two threads, the outputs' interrupted
+# writes).
 check check-full check-quick: export OMP_NUM_THREADS ?= 1
 check check-full check-quick: export OMP_WAIT_POLICY := passive
 CHECK_JOBS = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(NPROC))
