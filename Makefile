@@ -14,8 +14,9 @@ SHELL := /bin/bash
 
 VERSION := 0.1.0
 # Cores for the parallel parts of `make check` (the builds of each check,
-# the unit tests, the two fuzzers).
-NPROC := $(shell nproc 2>/dev/null || echo 1)
+# the unit tests, the two fuzzers).  nproc(1) would return OMP_NUM_THREADS,
+# which make check sets to 1 for the programs it runs (below).
+NPROC := $(shell env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc 2>/dev/null || echo 1)
 PREFIX ?= /usr/local
 B := build
 
