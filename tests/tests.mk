@@ -1,7 +1,7 @@
 # tests.mk — everything `make check` runs.
 #
 #   check-unit         cmocka host unit tests (tests/unit/LAYER/test_*.c, one
-#                      folder per host/ layer); make check: the 10 slowest
+#                      folder per host/ layer); make check: the 10 of UNIT_FIRST
 #   check-sanitize     the same tests under AddressSanitizer + UBSan;
 #                      make check: all but those 10
 #   check-freestanding target library for Cortex-M4F and RV64: no undefined

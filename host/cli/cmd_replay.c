@@ -386,8 +386,8 @@ static int compare(tf_ctx *ctx, const tf_problem *s, tf_solver *solver, int cont
         rejected += row[4] < 0;
     }
     if (t->every > 1) {
-        printf("replay: one tick in %zu of the log's first %zu (ticks %zu, %zu, ... %zu)\n",
-               t->every, t->n * t->every, tick_of(t, 0), tick_of(t, 1), tick_of(t, t->n - 1));
+        printf("replay: one tick in %zu of the log's first %zu: ticks %zu to %zu\n", t->every,
+               t->n * t->every, tick_of(t, 0), tick_of(t, t->n - 1));
     }
     if (timed) {
         printf("replay: the solver is time-dependent: the %zu ticks time-stepped from rest at "
