@@ -56,3 +56,68 @@ region-nonlinear: $(REGION_NONLINEAR)
 	@echo "== contact regions, neo-Hookean block48: 19.2 mm square of the top face, 4 x 4 sites =="
 	@$(REGION_NONLINEAR) tests/region/block48_nh_region.yaml --rect 14.4,33.6,14.4,33.6 \
 	  --grid 4 --centres 3 --train 24 --heldout 6
+
+# The liver's region law against CalculiX at three sites never fitted
+# (cell centres of the 4 mm grid tissuefit fit chooses: 2.8 mm from the
+# nearest site), loaded over the same probe patch (organ_deck --sites,
+# tests/calculix/region_dat.awk: the patch-averaged compliance;
+# docs/validation.md §14.2).
+#   calculix-liver-region  runs CalculiX on the sites (about 45 minutes with
+#                          two threads, 8 GB): the liver's levels as they are
+#                          (liver_region_*), the skin refined at the patches'
+#                          edges to 1 mm (liver_region_p1_*; s20r1 is the
+#                          finest) and, at s20r0, to 0.5 and 0.25 mm; rewrites
+#                          tests/calculix/data/liver_region*.csv, then
+#   region-calculix        the tables from the committed data: the scene's
+#                          6 mm cloud, the shipped liver's (5 mm, refined
+#                          skin) and 4 mm, each fitted by tissuefit fit's
+#                          rule (about 10 minutes)
+#   check-region-calculix  (make check) the deck writer at s20r0: each site's
+#                          loads sum to 1 N and its site point is the
+#                          committed data's
+REGION_CALCULIX := $(T)/region/region_calculix
+REGION_CX_SCENE := tests/region/liver_region.yaml
+REGION_CX_SITES := 18,62:42,38:66,18
+REGION_CX_FINEST := $(CX_DATA)/liver_region_p1_s20r1.csv
+REGION_CX_OTHERS := $(foreach l,s20r0 s10r0 s20r1 p1_s20r0 p0.5_s20r0 p0.25_s20r0,\
+  $(CX_DATA)/liver_region_$(l).csv)
+# the shipped liver's cloud (coeffs/liver.yaml)
+REGION_CX_LIVER := geometry.spacing=5 geometry.refine_skin=true
+
+$(REGION_CALCULIX): tests/region/region_calculix.c $(B)/native/libtissuefit-host.a \
+    $(B)/native/libtest-support.a $(B)/native/libtfit.a | deps-check
+	@mkdir -p $(@D)
+	$(call say,BUILD)
+	$(Q)$(CC) $(TEST_CFLAGS) -O2 $< $(call host_test_link,native) -o $@
+
+.PHONY: calculix-liver-region region-calculix check-region-calculix
+CHECKS += check-region-calculix
+
+# $(call region_ccx,NAME,PATCH_REFINE_ARGS,LEVELS)
+define region_ccx
+	$(Q)CCX_THREADS=$${CCX_THREADS:-2} DAT_AWK=region_dat.awk DECK_ARGS="--sites $(REGION_CX_SITES) $(2)" \
+	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(3)
+
+endef
+calculix-liver-region: $(CX)/organ_deck | deps-calculix
+	$(call region_ccx,liver_region,,s20r0:20:0 s10r0:10:0 s20r1:20:1)
+	$(call region_ccx,liver_region_p1,--patch-refine 1,s20r0:20:0 s20r1:20:1)
+	$(call region_ccx,liver_region_p0.5,--patch-refine 0.5,s20r0:20:0)
+	$(call region_ccx,liver_region_p0.25,--patch-refine 0.25,s20r0:20:0)
+	@$(MAKE) --no-print-directory region-calculix
+
+region-calculix: $(REGION_CALCULIX)
+	@echo "== the liver's region law against CalculiX at three sites never fitted: the scene's 6 mm cloud =="
+	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS)
+	@echo "== the same on the shipped liver's cloud ($(REGION_CX_LIVER)) =="
+	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS) $(REGION_CX_LIVER)
+	@echo "== the same at 4 mm (geometry.spacing=4 geometry.refine_skin=true) =="
+	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS) geometry.spacing=4 \
+	  geometry.refine_skin=true
+
+check-region-calculix: $(CX)/organ_deck
+	@echo "== the region deck writer (organ_deck --sites --patch-refine 1, s20r0): each site's loads sum to 1 N, its site point is the committed data's =="
+	@mkdir -p $(CX)
+	@$< $(REGION_CX_SCENE) --spacing 20 --refine 0 --sites $(REGION_CX_SITES) --patch-refine 1 \
+	  > $(CX)/check_region_s20r0.inp
+	@awk -f tests/calculix/check_region_deck.awk $(CX)/check_region_s20r0.inp $(REGION_CX_FINEST)

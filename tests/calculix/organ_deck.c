@@ -6,6 +6,7 @@
  *
  *   organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]
  *              [--inclusion-spacing HI] [--quantum Q] [--nlgeom FX,FY,FZ [--levels K]]
+ *              [--sites A,B[:A,B...] [--patch-refine E]]
  *
  * Mesh (geometry/volume_mesh_tet10.h): the scene's surface as it is (every
  * vertex a node), the interior at spacing H mm (--grade G: G mm within
@@ -45,6 +46,21 @@
  * triangles (refined faces subdivide them); the deck writer checks that
  * the faces' area equals the patch's to 1e-9.
  *
+ * A contact region (an organ's, --sites: at most 8 points (a, b) of its
+ * chart's domain, problem/region_chart.h): at each site the probe's patch
+ * as the meshless region fit loads it (the surface that projects into the
+ * tip's disc, as quadrature points on the file's triangles), each point's
+ * weight given to the 6-node boundary face that holds it as w N_i (the
+ * consistent loads of the uniform traction over exactly that patch), and
+ * three unit-force steps per site ("s<k>fx" .. "s<k>fz"); set OUT is the
+ * patches' nodes, so that the patch-averaged displacement, the
+ * work-conjugate of the probe's force, is sum_i w_i u_i (region_dat.awk).
+ * The traction jumps at the patch's edge, inside the file's triangles:
+ * --patch-refine E splits the skin's triangles on their own planes
+ * (surface_refine.h) until their edges are about E mm at the edge of every
+ * site's patch, growing by the distance from it, before the volume is
+ * meshed (docs/validation.md §14.2 measures what it changes).
+ *
  * Large deformation (--nlgeom, a neo-Hookean scene): one step instead,
  * NLGEOM, the force F ramped from zero and the outputs printed at K equal
  * load levels (*TIME POINTS; default 4), CalculiX's automatic increments at
@@ -61,6 +77,9 @@
  *   ** OUT vertex ccx_node x y z     (the scene's outputs, then the contact
  *                                    vertex if it is not one of them)
  *   ** CONTACT vertex ccx_node
+ *   ** SITE k a b x y z area          (--sites: site k, its surface point)
+ *   ** PATCH k ccx_node weight        (--sites: its loads per unit force)
+ *   ** PATCH-REFINE E: n skin vertices (the file's m)   (--patch-refine)
  *
  * Exit 0 ok, 1 meshing failed, 2 bad usage or scene (nothing written).
  */
@@ -71,14 +90,19 @@
 #include <string.h>
 
 #include "geometry/ellipsoid_surface.h"
+#include "geometry/surface_refine.h"
 #include "geometry/volume_mesh_tet10.h"
 #include "problem/mesh_geometry.h"
+#include "problem/region_chart.h"
 #include "problem/regions.h"
 #include "scene/scene.h"
 
 /* C3D10 faces: corners and the mid-edge nodes between them (deck order). */
 static const int face[4][6] = {
     {0, 1, 2, 4, 5, 6}, {0, 3, 1, 7, 8, 4}, {1, 3, 2, 8, 9, 5}, {2, 3, 0, 9, 7, 6}};
+
+/* Most sites of a region deck (--sites). */
+#define SITES_MAX 8
 
 typedef struct options {
     const char *scene, *solver;
@@ -87,14 +111,42 @@ typedef struct options {
     double force[3];
     unsigned refine;
     double grade; /* mm near the contact vertex, 0: none */
+    double sites[2 * SITES_MAX]; /* --sites: a region's sites (a, b), chart frame, mm */
+    int n_sites;
+    double patch_refine; /* --patch-refine: the skin's edges at the patches' edges, mm (0: none) */
 } options;
 
 static int usage(void)
 {
     fprintf(stderr, "usage: organ_deck SCENE --spacing H [--grade G] [--refine R] [--solver NAME]\n"
                     "                  [--inclusion-spacing HI] [--quantum Q]\n"
-                    "                  [--nlgeom FX,FY,FZ [--levels K]]\n");
+                    "                  [--nlgeom FX,FY,FZ [--levels K]]\n"
+                    "                  [--sites A,B[:A,B...] [--patch-refine E]]\n");
     return 2;
+}
+
+/* --sites A,B[:A,B...]: at most SITES_MAX points of the region's domain. */
+static int parse_sites(const char *arg, options *o)
+{
+    const char *p = arg;
+    char *end;
+    for (o->n_sites = 0; *p; ++o->n_sites) {
+        if (o->n_sites == SITES_MAX) {
+            return -1;
+        }
+        double *ab = o->sites + 2 * o->n_sites;
+        ab[0] = strtod(p, &end);
+        if (end == p || *end != ',') {
+            return -1;
+        }
+        p = end + 1;
+        ab[1] = strtod(p, &end);
+        if (end == p || (*end != ':' && *end != 0) || !isfinite(ab[0]) || !isfinite(ab[1])) {
+            return -1;
+        }
+        p = *end ? end + 1 : end;
+    }
+    return o->n_sites > 0 ? 0 : -1;
 }
 
 static int parse(int argc, char **argv, options *o)
@@ -107,6 +159,8 @@ static int parse(int argc, char **argv, options *o)
                                          {"quantum", required_argument, NULL, 'q'},
                                          {"nlgeom", required_argument, NULL, 'n'},
                                          {"levels", required_argument, NULL, 'l'},
+                                         {"sites", required_argument, NULL, 'a'},
+                                         {"patch-refine", required_argument, NULL, 'p'},
                                          {0}};
     int c;
     char *end;
@@ -143,6 +197,15 @@ static int parse(int argc, char **argv, options *o)
             if (!o->nlgeom) {
                 return -1;
             }
+        } else if (c == 'p') {
+            o->patch_refine = strtod(optarg, &end);
+            if (*end || !(o->patch_refine > 0)) {
+                return -1;
+            }
+        } else if (c == 'a') {
+            if (parse_sites(optarg, o) != 0) {
+                return -1;
+            }
         } else if (c == 'l') {
             o->levels = (int)strtol(optarg, &end, 10);
             if (*end || o->levels < 1 || o->levels > 100) {
@@ -152,12 +215,33 @@ static int parse(int argc, char **argv, options *o)
             return -1;
         }
     }
-    if (optind + 1 != argc || !(o->spacing > 0) || (o->levels && !o->nlgeom)) {
+    if (optind + 1 != argc || !(o->spacing > 0) || (o->levels && !o->nlgeom) ||
+        (o->n_sites && o->nlgeom) || (o->patch_refine > 0 && !o->n_sites)) {
         return -1;
     }
     o->levels = o->nlgeom && o->levels == 0 ? 4 : o->levels;
     o->scene = argv[optind];
     return 0;
+}
+
+/* --patch-refine: the skin's edge length wanted at x: E at the edge of a
+ * site's patch (the circle of the tip's radius about the site, in the
+ * chart plane), growing by the distance from it. */
+typedef struct patch_field {
+    const options *o;
+    const tf_contact_region *r;
+} patch_field;
+
+static double patch_size(const double x[3], const void *arg)
+{
+    const patch_field *f = arg;
+    double q[3], d = INFINITY;
+    tf_region_chart_coords(&f->r->chart, x, q);
+    for (int k = 0; k < f->o->n_sites; ++k) {
+        double rho = hypot(q[0] - f->o->sites[2 * k], q[1] - f->o->sites[2 * k + 1]);
+        d = fmin(d, fabs(rho - f->r->tip_radius));
+    }
+    return f->o->patch_refine + d;
 }
 
 /* The organ's surface as the meshless solve placed it: the file's vertices
@@ -336,14 +420,22 @@ static void sort3(size_t *c)
     }
 }
 
-/* Nodal loads per unit traction (load[3 node] += A/3 at each mid-edge node
- * of every boundary face in the patch); returns the loaded area, or -1. */
-static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_patch *pt,
-                          double *weight)
+/* A boundary face of the mesh: face f of tetrahedron tet (no other
+ * tetrahedron has it). */
+typedef struct bface {
+    size_t tet;
+    int f;
+} bface;
+
+/* The boundary faces of q (*n of them; NULL when out of memory). */
+static bface *boundary_faces(const tf_tet10_mesh *q, size_t *n)
 {
     face_key *k = malloc((4 * q->ntet + 1) * sizeof *k);
-    if (k == NULL) {
-        return -1;
+    bface *b = malloc((4 * q->ntet + 1) * sizeof *b);
+    if (k == NULL || b == NULL) {
+        free(k);
+        free(b);
+        return NULL;
     }
     for (size_t e = 0; e < q->ntet; ++e) {
         for (int f = 0; f < 4; ++f) {
@@ -357,28 +449,119 @@ static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_
         }
     }
     qsort(k, 4 * q->ntet, sizeof *k, cmp_face);
-    double area = 0;
+    *n = 0;
     for (size_t i = 0; i < 4 * q->ntet; ++i) {
         int shared = (i > 0 && cmp_face(&k[i], &k[i - 1]) == 0) ||
                      (i + 1 < 4 * q->ntet && cmp_face(&k[i], &k[i + 1]) == 0);
-        if (shared) {
-            continue;
-        }
-        const size_t *t = q->tet + 10 * k[i].tet;
-        const int *fc = face[k[i].f];
-        const double *a = q->xyz + 3 * t[fc[0]], *b = q->xyz + 3 * t[fc[1]],
-                     *c = q->xyz + 3 * t[fc[2]];
-        double g[3] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
-                       (a[2] + b[2] + c[2]) / 3};
-        if (in_patch(g, p, pt)) {
-            double n[3], fa = tri_area(a, b, c, n);
-            area += fa;
-            for (int m = 3; m < 6; ++m) {
-                weight[t[fc[m]]] += fa / 3;
-            }
+        if (!shared) {
+            b[(*n)++] = (bface){k[i].tet, k[i].f};
         }
     }
     free(k);
+    return b;
+}
+
+/* The corners of boundary face b. */
+static void face_corners(const tf_tet10_mesh *q, bface b, const double *c[3])
+{
+    const size_t *t = q->tet + 10 * b.tet;
+    for (int j = 0; j < 3; ++j) {
+        c[j] = q->xyz + 3 * t[face[b.f][j]];
+    }
+}
+
+/* Nodal loads per unit traction (load[3 node] += A/3 at each mid-edge node
+ * of every boundary face in the patch); returns the loaded area, or -1. */
+static double patch_loads(const tf_tet10_mesh *q, const tf_problem *p, const tf_patch *pt,
+                          double *weight)
+{
+    size_t nb;
+    bface *b = boundary_faces(q, &nb);
+    if (b == NULL) {
+        return -1;
+    }
+    double area = 0;
+    for (size_t i = 0; i < nb; ++i) {
+        const double *c[3];
+        face_corners(q, b[i], c);
+        double g[3] = {(c[0][0] + c[1][0] + c[2][0]) / 3, (c[0][1] + c[1][1] + c[2][1]) / 3,
+                       (c[0][2] + c[1][2] + c[2][2]) / 3};
+        if (in_patch(g, p, pt)) {
+            double n[3], fa = tri_area(c[0], c[1], c[2], n);
+            const size_t *t = q->tet + 10 * b[i].tet;
+            area += fa;
+            for (int m = 3; m < 6; ++m) {
+                weight[t[face[b[i].f][m]]] += fa / 3;
+            }
+        }
+    }
+    free(b);
+    return area;
+}
+
+/* How far x is from flat face abc: the larger of its distance from the
+ * face's plane (relative to the face's size) and how far outside the face
+ * its barycentric coordinates L (written) are. */
+static double face_miss(const double *x, const double *a, const double *b, const double *c,
+                        double L[3])
+{
+    double n[3], sub[3];
+    double area2 = 2 * tri_area(a, b, c, n), nn = area2 * area2;
+    const double *p[3] = {a, b, c};
+    double miss = fabs((x[0] - a[0]) * n[0] + (x[1] - a[1]) * n[1] + (x[2] - a[2]) * n[2]) /
+                  (area2 * sqrt(0.5 * area2));
+    for (int k = 0; k < 3; ++k) { /* the sub-triangle opposite corner k, signed */
+        tri_area(x, p[(k + 1) % 3], p[(k + 2) % 3], sub);
+        L[k] = (sub[0] * n[0] + sub[1] * n[1] + sub[2] * n[2]) / nn;
+        miss = fmax(miss, -L[k]);
+    }
+    return miss;
+}
+
+/* The consistent nodal loads of a uniform unit traction over a patch given
+ * by quadrature points (a region's probe patch at one site, TF_PATCH_POINTS:
+ * on an organ its points lie on the file's triangles, which the mesh's
+ * boundary faces subdivide on their own planes): each point's weight w,
+ * over the 6-node face that holds it, as w N_i (corners L (2 L - 1),
+ * mid-edge nodes 4 L_i L_j).  weight (nn) is added to; returns the weights'
+ * total (the patch's area), or -1 with a message when a point lies on no
+ * boundary face (to 1e-9 of a face's size). */
+static double point_loads(const tf_tet10_mesh *q, const bface *b, size_t nb, const tf_patch *pt,
+                          double *weight)
+{
+    double area = 0;
+    for (size_t i = 0; i < pt->n_pts; ++i) {
+        const double *x = pt->pts + 4 * i, w = pt->pts[4 * i + 3];
+        double best = INFINITY, L[3], Lb[3] = {0};
+        size_t at = 0;
+        for (size_t j = 0; j < nb && best > 0; ++j) {
+            const double *c[3];
+            face_corners(q, b[j], c);
+            int near = 1;
+            for (int a = 0; a < 3 && near; ++a) {
+                double lo = fmin(c[0][a], fmin(c[1][a], c[2][a])), hi = fmax(c[0][a], fmax(c[1][a], c[2][a]));
+                near = x[a] >= lo - 1e-6 && x[a] <= hi + 1e-6;
+            }
+            double miss = near ? face_miss(x, c[0], c[1], c[2], L) : INFINITY;
+            if (miss < best) {
+                best = miss;
+                at = j;
+                memcpy(Lb, L, sizeof Lb);
+            }
+        }
+        if (!(best <= 1e-9)) {
+            fprintf(stderr, "organ_deck: the patch's point (%g, %g, %g) lies on no boundary face "
+                            "(nearest %.3g of a face's size away)\n", x[0], x[1], x[2], best);
+            return -1;
+        }
+        const size_t *t = q->tet + 10 * b[at].tet;
+        const int *fc = face[b[at].f];
+        for (int k = 0; k < 3; ++k) {
+            weight[t[fc[k]]] += w * Lb[k] * (2 * Lb[k] - 1);
+            weight[t[fc[3 + k]]] += w * 4 * Lb[k] * Lb[(k + 1) % 3];
+        }
+        area += w;
+    }
     return area;
 }
 
@@ -602,6 +785,75 @@ static int inclusion_surfaces(const options *o, const tf_problem *p, tf_surface 
     return 0;
 }
 
+/* --sites: the unit-traction nodal loads of the region's probe patch at
+ * each site (w: n_sites x nn, per unit force: each row sums to 1), "** SITE
+ * k a b x y z" and "** PATCH k node weight" lines, and the patches' nodes
+ * in out (set OUT).  Returns 0, or 1 with a message. */
+static int site_loads(const options *o, const tf_problem *p, const tf_tet10_mesh *q, double *w,
+                      unsigned char *out)
+{
+    const tf_contact_region *r = &p->contacts[0].region;
+    size_t nb;
+    bface *b = boundary_faces(q, &nb);
+    if (b == NULL) {
+        fprintf(stderr, "organ_deck: out of memory\n");
+        return 1;
+    }
+    int rc = 0;
+    for (int k = 0; k < o->n_sites && rc == 0; ++k) {
+        const double a = o->sites[2 * k], bb = o->sites[2 * k + 1];
+        tf_patch patch = {0};
+        double x[3], *wk = w + (size_t)k * q->nn;
+        tf_ctx ctx;
+        tf_ctx_init(&ctx);
+        if (!(a >= 0 && a <= r->chart.len[0] && bb >= 0 && bb <= r->chart.len[1])) {
+            fprintf(stderr, "organ_deck: --sites: (%g, %g) is outside the region's domain "
+                            "[0, %g] x [0, %g]\n", a, bb, r->chart.len[0], r->chart.len[1]);
+            rc = 2;
+        } else if (tf_region_site_patch(&ctx, p, r, a, bb, &patch, x) != 0) {
+            fprintf(stderr, "organ_deck: --sites: (%g, %g): %s\n", a, bb, ctx.err);
+            rc = 2;
+        } else {
+            double area = point_loads(q, b, nb, &patch, wk);
+            rc = area > 0 ? 0 : 1;
+            printf("** SITE %d %.17g %.17g %.17g %.17g %.17g %.10g\n", k + 1, a, bb, x[0], x[1],
+                   x[2], area);
+            for (size_t i = 0; i < q->nn && rc == 0; ++i) {
+                if (wk[i] != 0) {
+                    wk[i] /= area;
+                    out[i] = 1;
+                    char v[32]; /* as the steps write it: CalculiX's fields hold 20 characters */
+                    printf("** PATCH %d %zu %s\n", k + 1, i + 1, coordinate(wk[i], v, sizeof v));
+                }
+            }
+        }
+        tf_patch_release(&patch);
+    }
+    free(b);
+    return rc;
+}
+
+/* --sites: three unit-force steps per site, "s<k>fx" .. "s<k>fz". */
+static void write_site_steps(const options *o, const double *w, size_t nn, const char *solver)
+{
+    static const char *const name[3] = {"fx", "fy", "fz"};
+    for (int k = 0; k < o->n_sites; ++k) {
+        for (int s = 0; s < 3; ++s) {
+            printf("** STEP %d s%d%s %d %d %d\n** site %d, load case %s: 1 N as a uniform "
+                   "traction over the probe's patch\n*STEP\n*STATIC%s%s\n*CLOAD, OP=NEW\n",
+                   3 * k + s + 1, k + 1, name[s], s == 0, s == 1, s == 2, k + 1, name[s],
+                   solver ? ", SOLVER=" : "", solver ? solver : "");
+            for (size_t i = 0; i < nn; ++i) {
+                if (w[(size_t)k * nn + i] != 0) {
+                    char v[32];
+                printf("%zu, %d, %s\n", i + 1, s + 1, coordinate(w[(size_t)k * nn + i], v, sizeof v));
+                }
+            }
+            printf("*NODE PRINT, NSET=OUT\nU\n*NODE PRINT, NSET=FIXED, TOTALS=ONLY\nRF\n*END STEP\n");
+        }
+    }
+}
+
 static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh *q)
 {
     double *weight = calloc(q->nn + 1, sizeof *weight);
@@ -613,8 +865,8 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
         return 2;
     }
     const tf_patch *pt = &p->contacts[0].patch;
-    double area = patch_loads(q, p, pt, weight);
-    double want = pt->shape == TF_PATCH_RECT ? pt->size[0] * pt->size[1] : pt->area;
+    double area = o->n_sites ? 1 : patch_loads(q, p, pt, weight);
+    double want = o->n_sites ? 1 : pt->shape == TF_PATCH_RECT ? pt->size[0] * pt->size[1] : pt->area;
     if (!(fabs(area - want) <= 1e-9 * want)) {
         fprintf(stderr, "organ_deck: the loaded faces' area %.12g differs from the patch's %.12g\n",
                 area, want);
@@ -631,11 +883,14 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
            "near the contact, refine %u)\n",
            o->scene, o->spacing, o->grade > 0 ? o->grade : o->spacing, o->refine);
     printf("** SIZE %zu %zu %zu\n", q->ntet, q->nn, 3 * (q->nn - nfixed));
-    if (write_outputs(q, p, out) != 0) {
+    double *sw = o->n_sites ? calloc((size_t)o->n_sites * q->nn, sizeof *sw) : NULL;
+    int rc = o->n_sites ? (sw ? site_loads(o, p, q, sw, out) : 1) : write_outputs(q, p, out) ? 2 : 0;
+    if (rc != 0) {
+        free(sw);
         free(weight);
         free(fixed);
         free(out);
-        return 2;
+        return rc;
     }
     write_mesh(q);
     write_set("FIXED", fixed, q->nn);
@@ -649,11 +904,14 @@ static int write_deck(const options *o, const tf_problem *p, const tf_tet10_mesh
         write_material(o, name, &p->inclusions[k].material);
         printf("*SOLID SECTION, ELSET=INC%zu, MATERIAL=INC%zu\n", k + 1, k + 1);
     }
-    if (o->nlgeom) {
+    if (o->n_sites) {
+        write_site_steps(o, sw, q->nn, o->solver);
+    } else if (o->nlgeom) {
         write_nlgeom_step(o, weight, q->nn, area);
     } else {
         write_steps(p, weight, q->nn, area, o->solver);
     }
+    free(sw);
     free(weight);
     free(fixed);
     free(out);
@@ -682,9 +940,12 @@ int main(int argc, char **argv)
         return 2;
     }
     int shape = p->n_contacts ? (int)p->contacts[0].patch.shape : -1;
-    if (m ? shape != TF_PATCH_SURFACE : shape != TF_PATCH_RECT || !(o.quantum > 0)) {
-        fprintf(stderr, "organ_deck: %s: needs an organ with a contact site, or a box with a "
-                        "rectangular patch and --quantum\n", o.scene);
+    int region = p->n_contacts && p->contacts[0].region.kind == TF_CONTACT_REGION_ORGAN;
+    if (m ? (o.n_sites ? !region : shape != TF_PATCH_SURFACE)
+          : shape != TF_PATCH_RECT || !(o.quantum > 0) || o.n_sites) {
+        fprintf(stderr, "organ_deck: %s: needs an organ with a contact site, an organ with a "
+                        "contact region and --sites, or a box with a rectangular patch and "
+                        "--quantum\n", o.scene);
         tf_scene_free(sc);
         return 2;
     }
@@ -717,9 +978,16 @@ int main(int argc, char **argv)
         tf_scene_free(sc);
         return 2;
     }
-    int rc = (m ? surface_of(m, &s) : box_surface(p, o.quantum, &s)) != 0
-                 ? 1
-                 : tf_volume_mesh_tet10(&s, &mo, inner, p->n_inclusions, o.refine, &q, &msg);
+    patch_field pf = {&o, &p->contacts[0].region};
+    int rc = (m ? surface_of(m, &s) : box_surface(p, o.quantum, &s)) != 0 ? 1 : 0;
+    if (rc == 0 && o.patch_refine > 0) { /* the file's triangles split on their own planes */
+        rc = tf_surface_refine(&s, patch_size, &pf, TF_MESH_SKIN_RATIO, TF_MESH_MAX_SKIN_VERTICES, &msg);
+        if (rc == 0) {
+            printf("** PATCH-REFINE %g: %zu skin vertices (the file's %zu)\n", o.patch_refine,
+                   s.nv, m->file_nv);
+        }
+    }
+    rc = rc != 0 ? rc : tf_volume_mesh_tet10(&s, &mo, inner, p->n_inclusions, o.refine, &q, &msg);
     if (rc != 0 && (m || s.xyz)) { /* box_surface says why it failed */
         fprintf(stderr, "organ_deck: %s\n", rc == 1 && s.xyz == NULL ? "out of memory" : msg.error);
     } else {

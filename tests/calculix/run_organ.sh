@@ -11,7 +11,8 @@
 # A run whose deck is unchanged and whose output is present is not repeated
 # (delete WORK to force it).  CCX_THREADS (default 1) threads per run;
 # DECK_ARGS: more options for every deck (a box's --quantum, an inclusion's
-# --inclusion-spacing).
+# --inclusion-spacing, a region's --sites); DAT_AWK: the extraction (default
+# organ_dat.awk; region_dat.awk for a region's sites).
 set -eu
 [ $# -ge 6 ] || { echo "usage: $0 DECK_TOOL SCENE WORK DATA NAME LEVEL..." >&2; exit 2; }
 deck_tool=$1 scene=$2 work=$3 data=$4 name=$5
@@ -33,7 +34,7 @@ for level in "$@"; do
             > "$work/$run.inp.new"
     fi
     ccx_cached "$work" "$run" "$threads" "%e %M" "spacing $spacing mm, $refine refinement(s)"
-    awk -f "$here/organ_dat.awk" "$work/$run.inp" "$work/$run.dat" > "$work/out/$run.csv"
+    awk -f "$here/${DAT_AWK:-organ_dat.awk}" "$work/$run.inp" "$work/$run.dat" > "$work/out/$run.csv"
     size=$(awk '$1 == "**" && $2 == "SIZE" { print $3 "," $4 "," $5; exit }' "$work/$run.inp")
     read -r seconds kb < "$work/$run.time"
     mb=$(awk -v kb="$kb" 'BEGIN { printf "%.0f", kb / 1024 }')
