@@ -70,9 +70,9 @@ region-nonlinear: $(REGION_NONLINEAR)
 #                          tests/calculix/data/liver_region*.csv, then
 #   region-calculix        the tables from the committed data: the scene's
 #                          6 mm cloud, the shipped liver's (5 mm, refined
-#                          skin), 4 mm, and 5 mm with 3 mm nodes near the
-#                          region, each fitted by tissuefit fit's rule
-#                          (about 13 minutes)
+#                          skin), 4 mm, and 5 mm with 3 and 2 mm nodes
+#                          near the region, each fitted by tissuefit fit's
+#                          rule (about 17 minutes)
 #   check-region-calculix  (make check) the deck writer at s20r0: each site's
 #                          loads sum to 1 N and its site point is the
 #                          committed data's
@@ -118,6 +118,9 @@ region-calculix: $(REGION_CALCULIX)
 	@echo "== the same at 5 mm with 3 mm nodes within 45 mm of the region's centre =="
 	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS) $(REGION_CX_LIVER) \
 	  'geometry.refine={at: [-50, -80, 25], spacing: 3, radius: 45, ramp: 65}'
+	@echo "== the same with 2 mm nodes there =="
+	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS) $(REGION_CX_LIVER) \
+	  'geometry.refine={at: [-50, -80, 25], spacing: 2, radius: 45, ramp: 65}'
 
 check-region-calculix: $(CX)/organ_deck
 	@echo "== the region deck writer (organ_deck --sites --patch-refine 1, s20r0): each site's loads sum to 1 N, its site point is the committed data's =="
