@@ -24,7 +24,11 @@
  *   levels    ||C_k^-1 C - I||_2 for each coarser CalculiX level k: how
  *             well the reference itself is resolved;
  *
- * and each site's distance from the nearest site of the fitted grid.
+ * and each site's distance from the nearest site of the fitted grid; then
+ * a second table of the compliances along the normal, the mean tangential
+ * one and the trace, of every CalculiX level (the coarser as given, the
+ * finest last), the meshless solve and the law.  The site points of the
+ * data and of the meshless fit must agree to 1e-6 mm (exit 1 otherwise).
  * --assert PCT fails (exit 1) unless the law is within PCT % at every site.
  * Exit 2 on bad usage or input.
  */
@@ -58,12 +62,13 @@ static int read_level(const char *path, ccx_level *lv)
     char line[1024];
     int seen[MAX_SITES] = {0}, row = 1;
     *lv = (ccx_level){.path = path};
-    if (f == NULL || fgets(line, sizeof line, f) == NULL ||
-        strcmp(line, "site,a,b,x,y,z,case,dx,dy,dz\n") != 0) {
-        fprintf(stderr, "%s: not a region_dat.awk table (site,a,b,x,y,z,case,dx,dy,dz)\n", path);
-        if (f) {
-            fclose(f);
-        }
+    if (f == NULL) {
+        fprintf(stderr, "%s: cannot be opened\n", path);
+        return -1;
+    }
+    if (fgets(line, sizeof line, f) == NULL || strcmp(line, "site,a,b,x,y,z,case,dx,dy,dz\n") != 0) {
+        fprintf(stderr, "%s:1: not a region_dat.awk table (site,a,b,x,y,z,case,dx,dy,dz)\n", path);
+        fclose(f);
         return -1;
     }
     while (fgets(line, sizeof line, f) != NULL) {
@@ -332,10 +337,14 @@ int main(int argc, char **argv)
     printf("\nforce errors: ||A C - I||_2 over the envelope's sphere, a fraction of its radius; "
            "CalculiX's compliances symmetric to %.1e (Maxwell-Betti), its site points %.1e mm "
            "from the meshless fit's\n", asym, gap);
-    int bad = gap > 1e-6 || (o.bound > 0 && !(100 * worst <= o.bound));
-    if (o.bound > 0 || gap > 1e-6) {
+    int bad = o.bound > 0 && !(100 * worst <= o.bound);
+    if (o.bound > 0) {
         printf("%s: the law within %.2f %% of CalculiX at every site (bound %g %%)\n",
                bad ? "FAILED" : "ok", 100 * worst, o.bound);
+    }
+    if (gap > 1e-6) {
+        printf("FAILED: the data's site points are %.3g mm from the meshless fit's (stale data?)\n", gap);
+        bad = 1;
     }
     tf_region_sites_free(&ms);
     tf_region_result_free(&res);
