@@ -128,3 +128,8 @@ check-region-calculix: $(CX)/organ_deck
 	@$< $(REGION_CX_SCENE) --spacing 20 --refine 0 --sites $(REGION_CX_SITES) --patch-refine 1 \
 	  > $(CX)/check_region_s20r0.inp
 	@awk -f tests/calculix/check_region_deck.awk $(CX)/check_region_s20r0.inp $(REGION_CX_FINEST)
+	@for bad in "--sites 18,62:" "--sites 18" "--patch-refine 1"; do \
+	  if $< $(REGION_CX_SCENE) --spacing 20 $$bad > $(CX)/check_region_bad.inp 2> /dev/null \
+	     || [ $$? -ne 2 ] || [ -s $(CX)/check_region_bad.inp ]; then \
+	    echo "FAILED: organ_deck $$bad: not refused with exit 2 and nothing written"; exit 1; fi; done
+	@echo "ok: a trailing ':', a site without b, --patch-refine without --sites refused (exit 2, nothing written)"

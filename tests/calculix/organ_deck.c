@@ -141,7 +141,8 @@ static int parse_sites(const char *arg, options *o)
         }
         p = end + 1;
         ab[1] = strtod(p, &end);
-        if (end == p || (*end != ':' && *end != 0) || !isfinite(ab[0]) || !isfinite(ab[1])) {
+        if (end == p || (*end != ':' && *end != 0) || (*end == ':' && end[1] == 0) ||
+            !isfinite(ab[0]) || !isfinite(ab[1])) {
             return -1;
         }
         p = *end ? end + 1 : end;
@@ -806,11 +807,7 @@ static int site_loads(const options *o, const tf_problem *p, const tf_tet10_mesh
         double x[3], *wk = w + (size_t)k * q->nn;
         tf_ctx ctx;
         tf_ctx_init(&ctx);
-        if (!(a >= 0 && a <= r->chart.len[0] && bb >= 0 && bb <= r->chart.len[1])) {
-            fprintf(stderr, "organ_deck: --sites: (%g, %g) is outside the region's domain "
-                            "[0, %g] x [0, %g]\n", a, bb, r->chart.len[0], r->chart.len[1]);
-            rc = 2;
-        } else if (tf_region_site_patch(&ctx, p, r, a, bb, &patch, x) != 0) {
+        if (tf_region_site_patch(&ctx, p, r, a, bb, &patch, x) != 0) {
             fprintf(stderr, "organ_deck: --sites: (%g, %g): %s\n", a, bb, ctx.err);
             rc = 2;
         } else {
@@ -948,6 +945,15 @@ int main(int argc, char **argv)
                         "--quantum\n", o.scene);
         tf_scene_free(sc);
         return 2;
+    }
+    for (int k = 0; k < o.n_sites; ++k) { /* before the mesh is made */
+        const double *ab = o.sites + 2 * k, *len = p->contacts[0].region.chart.len;
+        if (!(ab[0] >= 0 && ab[0] <= len[0] && ab[1] >= 0 && ab[1] <= len[1])) {
+            fprintf(stderr, "organ_deck: --sites: (%g, %g) is outside the region's domain "
+                            "[0, %g] x [0, %g]\n", ab[0], ab[1], len[0], len[1]);
+            tf_scene_free(sc);
+            return 2;
+        }
     }
     tf_surface s = {0};
     tf_tet10_mesh q;
