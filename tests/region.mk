@@ -66,7 +66,9 @@ region-nonlinear: $(REGION_NONLINEAR)
 #                          two threads, 8 GB): the liver's levels as they are
 #                          (liver_region_*), the skin refined at the patches'
 #                          edges to 1 mm (liver_region_p1_*; s20r1 is the
-#                          finest) and, at s20r0, to 0.5 and 0.25 mm; rewrites
+#                          finest) and, at s20r0, to 0.5 and 0.25 mm, and
+#                          site 3 alone graded towards it (2 and 1.5 mm
+#                          within 20 mm, liver_region_site3_*); rewrites
 #                          tests/calculix/data/liver_region*.csv, then
 #   region-calculix        the tables from the committed data: the scene's
 #                          6 mm cloud, the shipped liver's (5 mm, refined
@@ -100,14 +102,26 @@ define region_ccx
 	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(3)
 
 endef
+# $(call region_ccx_site3,NAME,ARGS,LEVEL): site 3 alone, graded towards it
+define region_ccx_site3
+	$(Q)CCX_THREADS=$${CCX_THREADS:-2} DAT_AWK=region_dat.awk DECK_ARGS="--sites 66,18 $(2)" \
+	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(3)
+
+endef
 calculix-liver-region: $(CX)/organ_deck | deps-calculix
 	$(call region_ccx,liver_region,,s20r0:20:0 s10r0:10:0 s20r1:20:1)
 	$(call region_ccx,liver_region_p1,--patch-refine 1,s20r0:20:0 s20r1:20:1)
 	$(call region_ccx,liver_region_p0.5,--patch-refine 0.5,s20r0:20:0)
 	$(call region_ccx,liver_region_p0.25,--patch-refine 0.25,s20r0:20:0)
+	$(call region_ccx_site3,liver_region_site3_g2,--patch-refine 0.5,s20r0:20:0:2)
+	$(call region_ccx_site3,liver_region_site3_g1.5,--patch-refine 0.25,s20r0:20:0:1.5)
 	@$(MAKE) --no-print-directory region-calculix
 
 region-calculix: $(REGION_CALCULIX)
+	@echo "== the trace of each CalculiX level's compliance (mm/N) per site =="
+	@for f in $(CX_DATA)/liver_region*_s[0-9]*r[0-9].csv; do awk -F, -v f=$$(basename $$f .csv) \
+	  'FNR > 1 { k = index("xyz", substr($$7, 2, 1)); t[$$1] += $$(7 + k); a[$$1] = $$2 "," $$3; n = $$1 > n ? $$1 : n } \
+	   END { printf "%s:", f; for (s = 1; s <= n; s++) if (s in t) printf " (%s) %.4g;", a[s], t[s]; print "" }' $$f; done
 	@echo "== the liver's region law against CalculiX at three sites never fitted: the scene's 6 mm cloud =="
 	@$< $(REGION_CX_SCENE) $(REGION_CX_FINEST) $(REGION_CX_OTHERS)
 	@echo "== the same on the shipped liver's cloud ($(REGION_CX_LIVER)) =="

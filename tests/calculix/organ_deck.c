@@ -59,7 +59,9 @@
  * --patch-refine E splits the skin's triangles on their own planes
  * (surface_refine.h) until their edges are about E mm at the edge of every
  * site's patch, growing by the distance from it, before the volume is
- * meshed (docs/validation.md §14.2 measures what it changes).
+ * meshed (docs/validation.md §14.2 measures what it changes).  With one
+ * site, --grade G grades the interior towards its surface point (G mm
+ * within 20 mm, rising to H at 60 mm); with more, --grade is refused.
  *
  * Large deformation (--nlgeom, a neo-Hookean scene): one step instead,
  * NLGEOM, the force F ramped from zero and the outputs printed at K equal
@@ -217,7 +219,8 @@ static int parse(int argc, char **argv, options *o)
         }
     }
     if (optind + 1 != argc || !(o->spacing > 0) || (o->levels && !o->nlgeom) ||
-        (o->n_sites && o->nlgeom) || (o->patch_refine > 0 && !o->n_sites)) {
+        (o->n_sites && o->nlgeom) || (o->patch_refine > 0 && !o->n_sites) ||
+        (o->grade > 0 && o->n_sites > 1)) {
         return -1;
     }
     o->levels = o->nlgeom && o->levels == 0 ? 4 : o->levels;
@@ -961,7 +964,16 @@ int main(int argc, char **argv)
     tf_mesh_options mo = m ? m->mesh : (tf_mesh_options){0};
     mo.spacing = o.spacing;
     mo.graded = o.grade > 0;
-    if (mo.graded && m) {
+    if (mo.graded && m && o.n_sites == 1) { /* a region's one site: its surface point */
+        const tf_region_chart *ch = &p->contacts[0].region.chart;
+        double qs[3] = {o.sites[0], o.sites[1], 0};
+        if (tf_region_chart_height(ch, qs[0], qs[1], &qs[2]) != 0) {
+            fprintf(stderr, "organ_deck: --sites: no surface over (%g, %g)\n", qs[0], qs[1]);
+            tf_scene_free(sc);
+            return 2;
+        }
+        tf_region_chart_point(ch, qs, mo.grade_at);
+    } else if (mo.graded && m) {
         memcpy(mo.grade_at, m->tm.xyz + 3 * (size_t)p->contacts[0].node, sizeof mo.grade_at);
     } else if (mo.graded) { /* the patch's centre */
         const tf_patch *pt = &p->contacts[0].patch;
