@@ -96,25 +96,20 @@ $(REGION_CALCULIX): tests/region/region_calculix.c $(B)/native/libtissuefit-host
 .PHONY: calculix-liver-region region-calculix check-region-calculix
 CHECKS += check-region-calculix
 
-# $(call region_ccx,NAME,PATCH_REFINE_ARGS,LEVELS)
+# $(call region_ccx,NAME,SITES,ARGS,LEVELS): organ_deck --sites SITES ARGS at
+# each level, extracted by region_dat.awk into CX_DATA/NAME_<level>.csv
 define region_ccx
-	$(Q)CCX_THREADS=$${CCX_THREADS:-2} DAT_AWK=region_dat.awk DECK_ARGS="--sites $(REGION_CX_SITES) $(2)" \
-	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(3)
-
-endef
-# $(call region_ccx_site3,NAME,ARGS,LEVEL): site 3 alone, graded towards it
-define region_ccx_site3
-	$(Q)CCX_THREADS=$${CCX_THREADS:-2} DAT_AWK=region_dat.awk DECK_ARGS="--sites 66,18 $(2)" \
-	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(3)
+	$(Q)CCX_THREADS=$${CCX_THREADS:-2} DAT_AWK=region_dat.awk DECK_ARGS="--sites $(2) $(3)" \
+	  tests/calculix/run_organ.sh $(CX)/organ_deck $(REGION_CX_SCENE) $(CX)/$(1) $(CX_DATA) $(1) $(4)
 
 endef
 calculix-liver-region: $(CX)/organ_deck | deps-calculix
-	$(call region_ccx,liver_region,,s20r0:20:0 s10r0:10:0 s20r1:20:1)
-	$(call region_ccx,liver_region_p1,--patch-refine 1,s20r0:20:0 s20r1:20:1)
-	$(call region_ccx,liver_region_p0.5,--patch-refine 0.5,s20r0:20:0)
-	$(call region_ccx,liver_region_p0.25,--patch-refine 0.25,s20r0:20:0)
-	$(call region_ccx_site3,liver_region_site3_g2,--patch-refine 0.5,s20r0:20:0:2)
-	$(call region_ccx_site3,liver_region_site3_g1.5,--patch-refine 0.25,s20r0:20:0:1.5)
+	$(call region_ccx,liver_region,$(REGION_CX_SITES),,s20r0:20:0 s10r0:10:0 s20r1:20:1)
+	$(call region_ccx,liver_region_p1,$(REGION_CX_SITES),--patch-refine 1,s20r0:20:0 s20r1:20:1)
+	$(call region_ccx,liver_region_p0.5,$(REGION_CX_SITES),--patch-refine 0.5,s20r0:20:0)
+	$(call region_ccx,liver_region_p0.25,$(REGION_CX_SITES),--patch-refine 0.25,s20r0:20:0)
+	$(call region_ccx,liver_region_site3_g2,66$(comma)18,--patch-refine 0.5,s20r0:20:0:2)
+	$(call region_ccx,liver_region_site3_g1.5,66$(comma)18,--patch-refine 0.25,s20r0:20:0:1.5)
 	@$(MAKE) --no-print-directory region-calculix
 
 region-calculix: $(REGION_CALCULIX)
